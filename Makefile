@@ -1,0 +1,122 @@
+# libelastica — the only entry point: deps, build, check, bench, demo, install.
+# `make check` on a fresh Debian 12 machine installs what is missing and runs every test.
+
+VERSION      := 0.1.0
+SOVERSION    := 0
+BUILD        ?= build
+PREFIX       ?= /usr/local
+PYTHON       ?= python3
+SYSPYTHON    ?= /usr/bin/python3
+CC           ?= cc
+
+CFLAGS_BASE  := -std=c99 -Wall -Wextra -Werror -O2 -fPIC -Iinclude
+DEPS_CFLAGS   = $(shell pkg-config --cflags gsl ipopt 2>/dev/null)
+DEPS_LIBS     = $(shell pkg-config --libs gsl ipopt 2>/dev/null) -lm
+CHECK_LIBS    = $(shell pkg-config --libs check 2>/dev/null)
+
+LIB_SRC      := $(wildcard libelastica/*.c)
+LIB_OBJ      := $(LIB_SRC:libelastica/%.c=$(BUILD)/obj/%.o)
+TEST_SRC     := $(wildcard tests/c/test_*.c)
+TEST_BIN     := $(TEST_SRC:tests/c/%.c=$(BUILD)/tests/%)
+BENCH_SRC    := $(wildcard bench/*.c)
+BENCH_BIN    := $(BENCH_SRC:bench/%.c=$(BUILD)/bench/%)
+SONAME       := libelastica.so.$(SOVERSION)
+
+# Debian packages (Debian 12 / Ubuntu) the project needs; `make deps` installs the missing ones.
+APT_PKGS := build-essential pkg-config libgsl-dev coinor-libipopt-dev check \
+            python3-cffi python3-numpy python3-pytest python3-scipy python3-mpmath \
+            python3-matplotlib python3-venv python3-pip freecad xvfb
+# Python packages for the python3 first on PATH (when it is not Debian's).
+PIP_PKGS := numpy cffi pytest scipy
+SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
+
+.PHONY: all deps lib check check-c check-asan check-python check-freecad bench demo install clean
+
+all: deps lib
+
+deps: $(BUILD)/.deps-ok
+$(BUILD)/.deps-ok: Makefile
+	@missing=$$(for p in $(APT_PKGS); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q 'install ok installed' || echo $$p; done); \
+	if [ -n "$$missing" ]; then \
+	  echo "make deps: installing $$missing"; \
+	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get update -qq && \
+	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
+	fi
+	@if [ "$$(command -v $(PYTHON))" != "$(SYSPYTHON)" ] && \
+	   ! $(PYTHON) -c "import numpy, cffi, pytest, scipy" 2>/dev/null; then \
+	  echo "make deps: pip install $(PIP_PKGS) into $$(command -v $(PYTHON))"; \
+	  $(PYTHON) -m pip install -q $(PIP_PKGS); \
+	fi
+	@mkdir -p $(BUILD) && touch $@
+
+lib: $(BUILD)/libelastica.so $(BUILD)/libelastica.a $(BUILD)/elastica.pc
+
+$(BUILD)/obj/%.o: libelastica/%.c include/elastica.h libelastica/internal.h | $(BUILD)/.deps-ok
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_BASE) $(DEPS_CFLAGS) $(EXTRA_CFLAGS) -c $< -o $@
+
+$(BUILD)/libelastica.so: $(LIB_OBJ)
+	$(CC) -shared -Wl,-soname,$(SONAME) $(EXTRA_CFLAGS) -o $(BUILD)/$(SONAME) $^ $(DEPS_LIBS)
+	ln -sf $(SONAME) $@
+
+$(BUILD)/libelastica.a: $(LIB_OBJ)
+	ar rcs $@ $^
+
+$(BUILD)/elastica.pc: Makefile
+	@mkdir -p $(BUILD)
+	printf 'prefix=%s\nlibdir=$${prefix}/lib\nincludedir=$${prefix}/include\n\nName: elastica\nDescription: Euler elastica for CAD: evaluation, fairing, Hermite, B-splines\nVersion: %s\nRequires.private: gsl ipopt\nLibs: -L$${libdir} -lelastica\nCflags: -I$${includedir}\n' '$(PREFIX)' '$(VERSION)' > $@
+
+# ------------------------------------------------------------------ tests
+
+$(BUILD)/tests/%: tests/c/%.c tests/c/testutil.h $(BUILD)/libelastica.a
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_BASE) $(DEPS_CFLAGS) $(EXTRA_CFLAGS) -Itests/c $< -o $@ $(BUILD)/libelastica.a $(CHECK_LIBS) $(DEPS_LIBS)
+
+check-c: lib $(TEST_BIN)
+	@set -e; for t in $(TEST_BIN); do echo "== $$t"; (cd tests/c && $(CURDIR)/$$t); done
+
+# The same C tests under AddressSanitizer + UBSan; any report fails the run.
+check-asan: deps
+	$(MAKE) --no-print-directory BUILD=build/asan \
+	  EXTRA_CFLAGS="-O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
+	  ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=halt_on_error=1 check-c
+
+check-python: lib
+	cd tests/python && LIBELASTICA_PATH=$(CURDIR)/$(BUILD)/libelastica.so PYTHONPATH=$(CURDIR)/python \
+	  $(SYSPYTHON) -m pytest -q -p no:cacheprovider .
+	@if [ "$$(command -v $(PYTHON))" != "$(SYSPYTHON)" ]; then \
+	  cd tests/python && LIBELASTICA_PATH=$(CURDIR)/$(BUILD)/libelastica.so PYTHONPATH=$(CURDIR)/python \
+	  $(PYTHON) -m pytest -q -p no:cacheprovider . ; fi
+
+check-freecad: lib
+	@if [ -d tests/freecad ] && ls tests/freecad/test_*.py >/dev/null 2>&1; then \
+	  $(MAKE) --no-print-directory -f tests/freecad/freecad.mk BUILD=$(BUILD); fi
+
+check: all check-c check-asan check-python check-freecad
+	@echo "make check: all tests passed"
+
+# ------------------------------------------------------------------ bench, demo, install
+
+$(BUILD)/bench/%: bench/%.c $(BUILD)/libelastica.a
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_BASE) $(DEPS_CFLAGS) $< -o $@ $(BUILD)/libelastica.a $(DEPS_LIBS)
+
+bench: all $(BENCH_BIN)
+	@for b in $(BENCH_BIN); do $$b; done
+	@for b in bench/bench_*.py; do [ -f "$$b" ] || continue; \
+	  LIBELASTICA_PATH=$(CURDIR)/$(BUILD)/libelastica.so PYTHONPATH=$(CURDIR)/python $(PYTHON) $$b; done
+
+demo: all
+	@LIBELASTICA_PATH=$(CURDIR)/$(BUILD)/libelastica.so PYTHONPATH=$(CURDIR)/python \
+	  $(SYSPYTHON) examples/demo.py
+
+install: lib
+	install -d $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include $(DESTDIR)$(PREFIX)/lib/pkgconfig
+	install -m 644 include/elastica.h $(DESTDIR)$(PREFIX)/include/
+	install -m 755 $(BUILD)/$(SONAME) $(DESTDIR)$(PREFIX)/lib/
+	ln -sf $(SONAME) $(DESTDIR)$(PREFIX)/lib/libelastica.so
+	install -m 644 $(BUILD)/libelastica.a $(DESTDIR)$(PREFIX)/lib/
+	install -m 644 $(BUILD)/elastica.pc $(DESTDIR)$(PREFIX)/lib/pkgconfig/
+
+clean:
+	rm -rf build build-* out

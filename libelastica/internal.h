@@ -1,0 +1,36 @@
+/* Internal helpers shared by the library's files (not installed). */
+#ifndef EL_INTERNAL_H
+#define EL_INTERNAL_H
+
+#include "elastica.h"
+#include <math.h>
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+/* Turn GSL's aborting error handler off for the calling code path.
+ * gsl_set_error_handler_off() sets a process-wide pointer; every entry point
+ * that calls GSL calls this first (idempotent, writes the same value, so two
+ * threads racing on it agree), and every GSL status is mapped to an EL_ code. */
+void el__gsl_quiet(void);
+
+/* EL_OK when all n values are finite. */
+int el__all_finite(const double *v, size_t n);
+
+/* What el_jacobi_eval precomputes for one modulus k (GSL sees kg = min(k, 1/k)):
+ * the quarter period K(kg) and the complete integrals D, J over [0, pi/2]. */
+typedef struct el__modulus {
+    double k, kg, K, Dc, Jc;
+} el__modulus;
+int el__modulus_init(double k, el__modulus *mod);
+/* el_jacobi_eval for a prepared modulus: the cheap path for many u at one k. */
+int el__jacobi_eval_mod(const el__modulus *mod, double u, el_jacobi *val, el_jacobi *d_du, el_jacobi *d_dk);
+
+/* Jacobi values and k-derivatives at u_n = z n + q for n = 0..count-1, by the
+ * addition theorems with a fresh el_jacobi_eval every few steps (jacobi.c).
+ * val[count] required; d_dk[count] optional (NULL). */
+int el__jacobi_progression(double q, double z, double k, size_t count,
+                           el_jacobi *val, el_jacobi *d_dk);
+
+#endif

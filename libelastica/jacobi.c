@@ -1,0 +1,267 @@
+/*
+ * Jacobi elliptic functions sn, cn, dn, am, E, D for every modulus k >= 0,
+ * with derivatives in u and k.
+ *
+ * GSL gives sn, cn, dn for m = k^2 <= 1 and Carlson's R_D; it has neither the
+ * Jacobi epsilon function nor derivatives in the modulus, so those are built
+ * here from the integrals (amplitude phi = am u, Delta = dn u):
+ *   D(phi) = int_0^phi sin^2/Delta   = (sin^3 phi / 3) R_D(cos^2, Delta^2, 1)   (DLMF 19.25.13)
+ *   J(phi) = int_0^phi sin^2/Delta^3 = (sin^3 phi / 3) R_D(cos^2, 1, Delta^2)
+ *   L(phi) = int_0^phi sin^4/Delta^3 = (J - D)/k^2   (series in k^2 for small k)
+ * and, at fixed u (u = F(phi, k)):
+ *   d am/dk = -k Delta J,   dD/dk = k (L - sn^2 J),   E = u - k^2 D.
+ * k > 1 goes through the reciprocal-modulus transformation (header comment).
+ */
+#include "internal.h"
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_math.h>
+#include <gsl/gsl_sf_elljac.h>
+#include <gsl/gsl_sf_ellint.h>
+
+/* Below this k, L = (J - D)/k^2 loses more than two digits: use its series. */
+#define SMALL_K 0.1
+/* Addition-theorem steps between two fresh evaluations in a progression. */
+#define RESEED 32
+
+/* Carlson R_D through GSL, status mapped. */
+static int carlson_rd(double x, double y, double z, double *out)
+{
+    gsl_sf_result r;
+    if (gsl_sf_ellint_RD_e(x, y, z, GSL_PREC_DOUBLE, &r) != GSL_SUCCESS) return EL_EDOM;
+    *out = r.val;
+    return EL_OK;
+}
+
+/* L(phi) = int_0^phi sin^4 t (1 - k^2 sin^2 t)^(-3/2) dt for k < SMALL_K, by the
+ * binomial series sum_j c_j k^(2j) int sin^(4+2j), c_j = (3/2)(5/2)...(j+1/2)/j!,
+ * with int_0^phi sin^(2p) = ((2p-1)/(2p)) I_{p-1} - sin^(2p-1) cos / (2p). */
+static double small_k_L(double phi, double k)
+{
+    const double s = sin(phi), c = cos(phi), m = k * k;
+    double I = phi, spow = s; /* I_0, sin^(2p-1) for p = 1 */
+    double sum = 0.0, coef = 1.0, mj = 1.0;
+    for (int p = 1; p <= 16; p++) {
+        I = ((2.0 * p - 1.0) / (2.0 * p)) * I - spow * c / (2.0 * p);
+        spow *= s * s;
+        if (p >= 2) {
+            int j = p - 2;
+            if (j > 0) { coef *= (j + 0.5) / j; mj *= m; }
+            sum += coef * mj * I;
+        }
+    }
+    return sum;
+}
+
+int el__modulus_init(double k, el__modulus *mod)
+{
+    if (!mod || !isfinite(k) || k < 0.0) return EL_EINVAL;
+    el__gsl_quiet();
+    const double kg = k <= 1.0 ? k : 1.0 / k; /* the modulus GSL sees */
+    mod->k = k;
+    mod->kg = kg;
+    mod->K = mod->Dc = mod->Jc = INFINITY;
+    if (kg < 1.0) {
+        /* k'^2 = (1-k)(1+k) keeps its relative accuracy as k -> 1, where 1 - k*k
+         * would not; K = R_F(0, k'^2, 1) (GSL's Kcomp forms 1 - k*k itself) */
+        const double kp2 = (1.0 - kg) * (1.0 + kg);
+        gsl_sf_result K;
+        int st;
+        if (gsl_sf_ellint_RF_e(0.0, kp2, 1.0, GSL_PREC_DOUBLE, &K) != GSL_SUCCESS) return EL_EINTERNAL;
+        mod->K = K.val;
+        /* D and J over the quarter period [0, pi/2] of the amplitude */
+        if ((st = carlson_rd(0.0, kp2, 1.0, &mod->Dc))) return st;
+        if ((st = carlson_rd(0.0, 1.0, kp2, &mod->Jc))) return st;
+        mod->Dc /= 3.0;
+        mod->Jc /= 3.0;
+    }
+    return EL_OK;
+}
+
+/*
+ * Core for 0 <= k = mod->kg <= 1. Fills val (all fields) and, if dk != NULL,
+ * the k-derivatives at fixed u of sn, cn, dn, am, D, E.
+ */
+static int jacobi_le1(const el__modulus *mod, double u, el_jacobi *val, el_jacobi *dk)
+{
+    const double k = mod->kg, m = k * k;
+    double sn, cn, dn, phi, D, nhalf = 0.0; /* nhalf: number of half periods 2K removed */
+    double sr, cr, dr;                      /* sn, cn, dn of the reduced argument */
+    int st;
+
+    if (k == 1.0) {
+        sn = tanh(u);
+        cn = dn = 1.0 / cosh(u);
+        phi = atan(sinh(u));
+        D = u - sn;
+        sr = sn; cr = cn; dr = dn;
+    } else {
+        nhalf = nearbyint(u / (2.0 * mod->K));
+        double r = u - nhalf * 2.0 * mod->K;
+        if (fabs(r) <= 0.5 * mod->K) {
+            if (gsl_sf_elljac_e(r, m, &sn, &cn, &dn) != GSL_SUCCESS) return EL_EINTERNAL;
+            if ((st = carlson_rd(cn * cn, dn * dn, 1.0, &D))) return st;
+            D *= sn * sn * sn / 3.0;
+        } else {
+            /* GSL and R_D lose digits near m = 1 for arguments close to K: use the
+             * quarter-period shift with the smaller x = K - |r|,
+             *   sn(K-x) = cd x, cn(K-x) = k' sd x, dn(K-x) = k' nd x,
+             *   D(K-x) = D(K) - D(x) - sn x cd x   (addition theorem for D). */
+            double s, c, d, Dx, kp = sqrt((1.0 - k) * (1.0 + k));
+            if (gsl_sf_elljac_e(mod->K - fabs(r), m, &s, &c, &d) != GSL_SUCCESS) return EL_EINTERNAL;
+            if ((st = carlson_rd(c * c, d * d, 1.0, &Dx))) return st;
+            Dx *= s * s * s / 3.0;
+            sn = copysign(c / d, r);
+            cn = kp * s / d;
+            dn = kp / d;
+            D = copysign(mod->Dc - Dx - s * c / d, r);
+        }
+        sr = sn; cr = cn; dr = dn;
+        phi = atan2(sn, cn); /* |r| <= K so cn >= 0: phi in [-pi/2, pi/2] */
+        if (nhalf != 0.0) {
+            D += nhalf * 2.0 * mod->Dc;
+            if (fmod(nhalf, 2.0) != 0.0) { sn = -sn; cn = -cn; }
+            phi += nhalf * M_PI;
+        }
+    }
+    if (dk) {
+        /* J over the reduced amplitude, plus whole half periods */
+        double J, L;
+        if ((st = carlson_rd(cr * cr, 1.0, dr * dr, &J))) return st;
+        J *= sr * sr * sr / 3.0;
+        if (nhalf != 0.0) J += nhalf * 2.0 * mod->Jc;
+        if (k < SMALL_K) L = small_k_L(phi, k);
+        else L = (J - D) / m;
+        double am_k = -k * dn * J;
+        dk->am = am_k;
+        dk->sn = cn * am_k;
+        dk->cn = -sn * am_k;
+        /* dn = sqrt(1 - k^2 sin^2 phi): -k sin^2/Delta + k^3 sin cos J */
+        dk->dn = (dn > 0.0 ? -k * sn * sn / dn : -INFINITY) + m * k * sn * cn * J;
+        if (k == 0.0) dk->dn = 0.0;
+        dk->D = k * (L - sn * sn * J);
+        dk->E = -2.0 * k * D - m * dk->D;
+    }
+    val->sn = sn; val->cn = cn; val->dn = dn; val->am = phi; val->D = D;
+    val->E = u - m * D;
+    return EL_OK;
+}
+
+int el__jacobi_eval_mod(const el__modulus *mod, double u, el_jacobi *val, el_jacobi *d_du, el_jacobi *d_dk)
+{
+    if (!val || !isfinite(u)) return EL_EINVAL;
+    const double k = mod->k;
+    el_jacobi v, dk;
+    int st;
+    if (k <= 1.0) {
+        if ((st = jacobi_le1(mod, u, &v, d_dk ? &dk : NULL))) return st;
+    } else {
+        /* reciprocal modulus: f(u, k) = g(ku, 1/k) */
+        const double kr = mod->kg, w = k * u;
+        el_jacobi g, gk;
+        if ((st = jacobi_le1(mod, w, &g, d_dk ? &gk : NULL))) return st;
+        v.sn = g.sn * kr;
+        v.cn = g.dn;
+        v.dn = g.cn;
+        v.D = g.D * kr * kr * kr;
+        v.E = u - g.D * kr;
+        v.am = atan2(v.sn, v.cn);
+        if (d_dk) {
+            /* d/dk g(ku, 1/k) = u g_w - g_kr / k^2, with g_w from the u-identities */
+            const double kr2 = kr * kr;
+            double gsn_w = g.cn * g.dn, gcn_w = -g.sn * g.dn, gdn_w = -kr2 * g.sn * g.cn;
+            double gD_w = g.sn * g.sn;
+            dk.sn = (u * gsn_w - gk.sn * kr2) * kr - g.sn * kr2;
+            dk.cn = u * gdn_w - gk.dn * kr2;
+            dk.dn = u * gcn_w - gk.cn * kr2;
+            dk.D = (u * gD_w - gk.D * kr2) * kr2 * kr - 3.0 * g.D * kr2 * kr2;
+            dk.E = -2.0 * k * v.D - k * k * dk.D;
+            dk.am = v.cn * dk.sn - v.sn * dk.cn;
+        }
+    }
+    if (d_du) {
+        d_du->sn = v.cn * v.dn;
+        d_du->cn = -v.sn * v.dn;
+        d_du->dn = -k * k * v.sn * v.cn;
+        d_du->am = v.dn;
+        d_du->E = v.dn * v.dn;
+        d_du->D = v.sn * v.sn;
+    }
+    if (d_dk) {
+        if (!isfinite(dk.sn) || !isfinite(dk.cn) || !isfinite(dk.dn) || !isfinite(dk.D))
+            return EL_EDOM; /* only at k = 1 with |u| so large that sech underflows */
+        *d_dk = dk;
+    }
+    *val = v;
+    return EL_OK;
+}
+
+int el_jacobi_eval(double u, double k, el_jacobi *val, el_jacobi *d_du, el_jacobi *d_dk)
+{
+    el__modulus mod;
+    if (!val || !isfinite(u)) return EL_EINVAL;
+    int st = el__modulus_init(k, &mod);
+    return st ? st : el__jacobi_eval_mod(&mod, u, val, d_du, d_dk);
+}
+
+/*
+ * One addition-theorem step (a = u, b = z):
+ *   sn(a+b) = (sa cb db + sb ca da)/den,  cn(a+b) = (ca cb - sa sb da db)/den,
+ *   dn(a+b) = (da db - k^2 sa sb ca cb)/den,  den = 1 - k^2 sa^2 sb^2,
+ *   D(a+b) = D(a) + D(b) + sa sb sn(a+b)   (from E(a+b) = E(a)+E(b) - k^2 sa sb sn(a+b)).
+ * They are algebraic identities, so they hold for k > 1 as well. With ak/bk
+ * non-NULL the k-derivatives are propagated by differentiating the same formulas.
+ */
+static void add_step(double k, const el_jacobi *a, const el_jacobi *ak,
+                     const el_jacobi *b, const el_jacobi *bk, el_jacobi *r, el_jacobi *rk)
+{
+    const double m = k * k, ss = a->sn * b->sn, den = 1.0 - m * ss * ss, id = 1.0 / den;
+    const double ns = a->sn * b->cn * b->dn + b->sn * a->cn * a->dn;
+    const double nc = a->cn * b->cn - ss * a->dn * b->dn;
+    const double nd = a->dn * b->dn - m * ss * a->cn * b->cn;
+    r->sn = ns * id;
+    r->cn = nc * id;
+    r->dn = nd * id;
+    r->D = a->D + b->D + ss * r->sn;
+    if (rk) {
+        const double ssk = ak->sn * b->sn + a->sn * bk->sn;
+        const double denk = -2.0 * k * ss * ss - 2.0 * m * ss * ssk;
+        const double nsk = ak->sn * b->cn * b->dn + a->sn * bk->cn * b->dn + a->sn * b->cn * bk->dn
+                         + bk->sn * a->cn * a->dn + b->sn * ak->cn * a->dn + b->sn * a->cn * ak->dn;
+        const double cc = a->cn * b->cn, cck = ak->cn * b->cn + a->cn * bk->cn;
+        const double dd = a->dn * b->dn, ddk = ak->dn * b->dn + a->dn * bk->dn;
+        const double nck = cck - ssk * dd - ss * ddk;
+        const double ndk = ddk - 2.0 * k * ss * cc - m * (ssk * cc + ss * cck);
+        rk->sn = (nsk - r->sn * denk) * id;
+        rk->cn = (nck - r->cn * denk) * id;
+        rk->dn = (ndk - r->dn * denk) * id;
+        rk->D = ak->D + bk->D + ssk * r->sn + ss * rk->sn;
+    }
+}
+
+int el__jacobi_progression(double q, double z, double k, size_t count,
+                           el_jacobi *val, el_jacobi *d_dk)
+{
+    el_jacobi step, stepk;
+    el__modulus mod;
+    int st;
+    if (count == 0) return EL_OK;
+    if ((st = el__modulus_init(k, &mod))) return st;
+    if ((st = el__jacobi_eval_mod(&mod, z, &step, NULL, d_dk ? &stepk : NULL))) return st;
+    for (size_t i = 0; i < count; i++) {
+        if (i % RESEED == 0) {
+            st = el__jacobi_eval_mod(&mod, q + z * (double)i, &val[i], NULL, d_dk ? &d_dk[i] : NULL);
+            if (st) return st;
+            continue;
+        }
+        add_step(k, &val[i - 1], d_dk ? &d_dk[i - 1] : NULL, &step, d_dk ? &stepk : NULL,
+                 &val[i], d_dk ? &d_dk[i] : NULL);
+        const double u = q + z * (double)i;
+        val[i].E = u - k * k * val[i].D;
+        val[i].am = atan2(val[i].sn, val[i].cn); /* principal value only */
+        if (d_dk) {
+            d_dk[i].E = -2.0 * k * val[i].D - k * k * d_dk[i].D;
+            d_dk[i].am = val[i].cn * d_dk[i].sn - val[i].sn * d_dk[i].cn;
+        }
+    }
+    return EL_OK;
+}

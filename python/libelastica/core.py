@@ -1,0 +1,155 @@
+"""Smooth and discrete elasticae (seed 000 (4.3)/(4.4)) over the C library."""
+from __future__ import annotations
+
+from dataclasses import dataclass, fields
+
+import numpy as np
+
+from ._ffi import as_vector, check, dptr, ffi, lib
+
+SMOOTH_PARAMS = ("x0", "y0", "phi", "mu", "k", "q", "length")
+DISCRETE_PARAMS = ("x0", "y0", "h", "phi", "z", "q", "k")
+
+
+def _finite_params(obj, names):
+    for n in names:
+        v = getattr(obj, n)
+        if not np.isfinite(v):
+            raise ValueError(f"{type(obj).__name__}: {n} must be finite, got {v}")
+
+
+@dataclass
+class SmoothElastica:
+    """A smooth elastica segment: u = sqrt(mu) s + q, sin((theta-phi)/2) = k sn(u;k),
+    cos((theta-phi)/2) = dn(u;k), curvature 2 k sqrt(mu) cn(u;k), start (x0, y0),
+    arc length s in [0, length]. k < 1 has inflections, k > 1 none, k = 0 is a line.
+
+    >>> c = SmoothElastica(x0=0, y0=0, phi=0, mu=1.0, k=0.8, q=0.0, length=5.0)
+    >>> c.points(np.linspace(0, c.length, 100)).shape
+    (100, 2)
+    """
+    x0: float = 0.0
+    y0: float = 0.0
+    phi: float = 0.0
+    mu: float = 1.0
+    k: float = 0.5
+    q: float = 0.0
+    length: float = 1.0
+
+    def __post_init__(self):
+        for f in fields(self):
+            setattr(self, f.name, float(getattr(self, f.name)))
+        check(lib.el_smooth_check(self._c()), "SmoothElastica")
+
+    def _c(self):
+        p = ffi.new("el_smooth_params *")
+        for n in SMOOTH_PARAMS:
+            setattr(p, n, getattr(self, n))
+        return p
+
+    @property
+    def params(self) -> np.ndarray:
+        """The parameter vector (x0, y0, phi, mu, k, q, length) of the Jacobian."""
+        return np.array([getattr(self, n) for n in SMOOTH_PARAMS])
+
+    def _s(self, s) -> np.ndarray:
+        if s is None:
+            return np.linspace(0.0, self.length, 101)
+        return as_vector(s, "s")
+
+    def _eval(self, s, what: str) -> np.ndarray:
+        s = self._s(s)
+        shape = (len(s), 2) if what == "xy" else (len(s),)
+        out = np.empty(shape)
+        args = {"xy": ffi.NULL, "theta": ffi.NULL, "kappa": ffi.NULL}
+        args[what] = dptr(out)
+        check(lib.el_smooth_eval(self._c(), len(s), dptr(s), args["xy"], args["theta"],
+                                 args["kappa"]), "SmoothElastica")
+        return out
+
+    def points(self, s=None) -> np.ndarray:
+        """Points gamma(s), shape (n, 2), at arc lengths s (default: 101 samples of [0, length])."""
+        return self._eval(s, "xy")
+
+    def angle(self, s=None) -> np.ndarray:
+        """Tangent angle theta(s) (radians, continuous in s)."""
+        return self._eval(s, "theta")
+
+    def curvature(self, s=None) -> np.ndarray:
+        """Signed curvature kappa(s) (positive = turning counter-clockwise)."""
+        return self._eval(s, "kappa")
+
+    def energy(self) -> float:
+        """Bending energy: the integral of kappa^2 over [0, length]."""
+        e = ffi.new("double *")
+        check(lib.el_smooth_energy(self._c(), e), "SmoothElastica.energy")
+        return float(e[0])
+
+    def jacobian(self, s=None) -> np.ndarray:
+        """d gamma(s_i) / d p, shape (n, 2, 7), p = (x0, y0, phi, mu, k, q, length); the length
+        column holds s/length fixed (d/dL gamma(t L) = t T)."""
+        s = self._s(s)
+        jac = np.empty((len(s), 2, 7))
+        check(lib.el_smooth_jacobian(self._c(), len(s), dptr(s), ffi.NULL, dptr(jac)),
+              "SmoothElastica.jacobian")
+        return jac
+
+
+@dataclass
+class DiscreteElastica:
+    """A Bobenko–Suris discrete elastica: n vertices, segments of length h, potential
+    sin((theta_n-phi)/2) = k sn(z n + q; k), cos((theta_n-phi)/2) = dn(z n + q; k),
+    segment angle (theta_n + theta_{n+1})/2, first vertex (x0, y0).
+
+    >>> d = DiscreteElastica(x0=0, y0=0, h=0.1, phi=0, z=0.1, q=0.0, k=0.8, n=50)
+    >>> d.points().shape
+    (50, 2)
+    """
+    x0: float = 0.0
+    y0: float = 0.0
+    h: float = 0.1
+    phi: float = 0.0
+    z: float = 0.1
+    q: float = 0.0
+    k: float = 0.5
+    n: int = 50
+
+    def __post_init__(self):
+        for name in DISCRETE_PARAMS:
+            setattr(self, name, float(getattr(self, name)))
+        if int(self.n) != self.n or self.n < 2:
+            raise ValueError(f"DiscreteElastica: n must be an integer >= 2, got {self.n}")
+        self.n = int(self.n)
+        check(lib.el_discrete_check(self._c()), "DiscreteElastica")
+
+    def _c(self):
+        p = ffi.new("el_discrete_params *")
+        for name in DISCRETE_PARAMS:
+            setattr(p, name, getattr(self, name))
+        return p
+
+    @property
+    def params(self) -> np.ndarray:
+        """The parameter vector (x0, y0, h, phi, z, q, k) of the Jacobian (seed 000 (4.5))."""
+        return np.array([getattr(self, name) for name in DISCRETE_PARAMS])
+
+    def points(self) -> np.ndarray:
+        """The n vertices, shape (n, 2)."""
+        out = np.empty((self.n, 2))
+        check(lib.el_discrete_eval(self._c(), self.n, dptr(out)), "DiscreteElastica")
+        return out
+
+    def curvature(self) -> np.ndarray:
+        """Discrete curvature (2/h) tan(K/2) at the n-2 interior vertices (seed 000 (3.4))."""
+        if self.n < 3:
+            raise ValueError("DiscreteElastica.curvature needs n >= 3")
+        out = np.empty(self.n - 2)
+        check(lib.el_discrete_curvature(self._c(), self.n, dptr(out)), "DiscreteElastica")
+        return out
+
+    def jacobian(self) -> np.ndarray:
+        """d gamma_i / d p, shape (n, 2, 7), p = (x0, y0, h, phi, z, q, k)."""
+        jac = np.empty((self.n, 2, 7))
+        check(lib.el_discrete_jacobian(self._c(), self.n, ffi.NULL, dptr(jac)),
+              "DiscreteElastica.jacobian")
+        return jac

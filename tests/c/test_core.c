@@ -1,0 +1,460 @@
+/* Core: Jacobi functions, smooth and discrete elastica — each formula checked by
+ * its defining identity, references from mpmath, gradients by finite differences. */
+#include "testutil.h"
+#include <stdio.h>
+#include <string.h>
+
+/* ------------------------------------------------------------ jacobi */
+
+START_TEST(jacobi_matches_mpmath_table)
+{
+    FILE *f = fopen("../data/jacobi_ref.csv", "r");
+    ck_assert_msg(f != NULL, "tests/data/jacobi_ref.csv missing");
+    char line[512];
+    ck_assert(fgets(line, sizeof line, f) != NULL); /* header */
+    int rows = 0;
+    double worst = 0.0;
+    while (fgets(line, sizeof line, f)) {
+        double k, u, ref[5];
+        ck_assert_int_eq(sscanf(line, "%lf,%lf,%lf,%lf,%lf,%lf,%lf", &k, &u,
+                                &ref[0], &ref[1], &ref[2], &ref[3], &ref[4]), 7);
+        el_jacobi v;
+        ck_assert_int_eq(el_jacobi_eval(u, k, &v, NULL, NULL), EL_OK);
+        const double got[5] = {v.sn, v.cn, v.dn, v.am, v.E};
+        for (int j = 0; j < 5; j++) {
+            double err = fabs(got[j] - ref[j]);
+            if (err > worst) worst = err;
+            ck_assert_msg(err <= 1e-13, "k=%g u=%g field %d: %.17g vs %.17g (err %.3g)",
+                          k, u, j, got[j], ref[j], err);
+        }
+        /* E = u - k^2 D by definition of D */
+        ck_assert_close(v.E, u - k * k * v.D, 1e-12 * (1.0 + fabs(u)));
+        rows++;
+    }
+    fclose(f);
+    ck_assert_int_ge(rows, 100);
+    printf("jacobi: %d reference rows, worst abs error %.2e\n", rows, worst);
+}
+END_TEST
+
+static double field(const el_jacobi *v, int j)
+{
+    const double a[6] = {v->sn, v->cn, v->dn, v->am, v->E, v->D};
+    return a[j];
+}
+
+START_TEST(jacobi_derivatives_match_finite_differences)
+{
+    const double ks[] = {0.0, 1e-8, 0.05, 0.3, 0.9, 0.99, 1.01, 1.5, 2.0, 50.0};
+    const double us[] = {-23.1, -3.3, -0.4, 0.0, 0.7, 2.9, 11.2, 37.0};
+    for (size_t a = 0; a < sizeof ks / sizeof *ks; a++)
+        for (size_t b = 0; b < sizeof us / sizeof *us; b++) {
+            const double k = ks[a], u = us[b];
+            el_jacobi v, du, dk, p, m;
+            ck_assert_int_eq(el_jacobi_eval(u, k, &v, &du, &dk), EL_OK);
+            const double hu = 1e-6;
+            el_jacobi_eval(u + hu, k, &p, NULL, NULL);
+            el_jacobi_eval(u - hu, k, &m, NULL, NULL);
+            for (int j = 0; j < 6; j++) {
+                double fd = (field(&p, j) - field(&m, j)) / (2 * hu);
+                double an = field(&du, j);
+                ck_assert_msg(fabs(fd - an) <= 1e-6 * fmax(1.0, fabs(an)),
+                              "d/du field %d at k=%g u=%g: %.12g vs fd %.12g", j, k, u, an, fd);
+            }
+            if (k < 1e-3) continue; /* the k-step would cross k = 0 */
+            const double hk = 1e-7 * k;
+            el_jacobi_eval(u, k + hk, &p, NULL, NULL);
+            el_jacobi_eval(u, k - hk, &m, NULL, NULL);
+            for (int j = 0; j < 6; j++) {
+                double fd = (field(&p, j) - field(&m, j)) / (2 * hk);
+                double an = field(&dk, j);
+                ck_assert_msg(fabs(fd - an) <= 2e-6 * fmax(1.0, fabs(an)),
+                              "d/dk field %d at k=%g u=%g: %.12g vs fd %.12g", j, k, u, an, fd);
+            }
+        }
+}
+END_TEST
+
+START_TEST(jacobi_small_k_derivative_is_analytic)
+{
+    /* at tiny k, d sn/dk -> 0 and dD/dk = O(k): compare with the O(k) series
+     * of sn(u,k) = sin u - (k^2/4)(u - sin u cos u) cos u + O(k^4) */
+    const double k = 1e-8, u = 2.0;
+    el_jacobi v, dk;
+    ck_assert_int_eq(el_jacobi_eval(u, k, &v, NULL, &dk), EL_OK);
+    double expect = -(k / 2.0) * (u - sin(u) * cos(u)) * cos(u);
+    ck_assert_close(dk.sn, expect, 1e-20);
+}
+END_TEST
+
+START_TEST(jacobi_rejects_bad_input)
+{
+    el_jacobi v = {1, 2, 3, 4, 5, 6};
+    ck_assert_int_eq(el_jacobi_eval(1.0, -0.1, &v, NULL, NULL), EL_EINVAL);
+    ck_assert_int_eq(el_jacobi_eval(NAN, 0.5, &v, NULL, NULL), EL_EINVAL);
+    ck_assert_int_eq(el_jacobi_eval(1.0, INFINITY, &v, NULL, NULL), EL_EINVAL);
+    ck_assert_int_eq(el_jacobi_eval(1.0, 0.5, NULL, NULL, NULL), EL_EINVAL);
+    ck_assert(v.sn == 1 && v.D == 6); /* untouched */
+    ck_assert_str_ne(el_strerror(EL_EINVAL), el_strerror(EL_OK));
+    ck_assert_ptr_nonnull(el_strerror(12345));
+}
+END_TEST
+
+/* ------------------------------------------------------------ smooth */
+
+static el_smooth_params smooth(double k)
+{
+    el_smooth_params p = {0.3, -1.2, 0.7, 1.9, k, 0.45, 6.0};
+    return p;
+}
+
+START_TEST(smooth_unit_speed_and_curvature)
+{
+    const double ks[] = {0.0, 0.4, 0.95, 1.0, 1.05, 2.5, 30.0};
+    for (size_t a = 0; a < sizeof ks / sizeof *ks; a++) {
+        el_smooth_params p = smooth(ks[a]);
+        enum { N = 200 };
+        const double h = 1e-4;
+        double s[3 * N], xy[6 * N], th[3 * N], ka[3 * N];
+        for (int i = 0; i < N; i++) {
+            double si = p.length * (i + 0.5) / N;
+            s[3 * i] = si - h; s[3 * i + 1] = si; s[3 * i + 2] = si + h;
+        }
+        ck_assert_int_eq(el_smooth_eval(&p, 3 * N, s, xy, th, ka), EL_OK);
+        for (int i = 0; i < N; i++) {
+            const double *a0 = xy + 6 * i, *a2 = a0 + 4;
+            double speed = hypot(a2[0] - a0[0], a2[1] - a0[1]) / (2 * h);
+            double kfd = (th[3 * i + 2] - th[3 * i]) / (2 * h), kap = ka[3 * i + 1];
+            ck_assert_msg(fabs(speed - 1.0) <= 1e-7 * (1 + kap * kap), "|gamma'| = %.12g at k=%g", speed, p.k);
+            ck_assert_msg(fabs(kfd - kap) <= 1e-6 * (1 + fabs(kap) * kap * kap), "theta' %.12g vs kappa %.12g at k=%g",
+                          kfd, kap, p.k);
+            /* the tangent of the points is (cos theta, sin theta) */
+            double ang = atan2(a2[1] - a0[1], a2[0] - a0[0]) - th[3 * i + 1];
+            ck_assert_msg(fabs(remainder(ang, 2 * M_PI)) <= 1e-6 * (1 + kap * kap), "tangent angle off by %g", ang);
+        }
+    }
+}
+END_TEST
+
+START_TEST(smooth_curvature_satisfies_elastica_equation)
+{
+    /* kappa'' + kappa^3/2 - lambda kappa = 0 with ONE lambda per curve, fitted by least squares */
+    const double ks[] = {0.3, 0.8, 1.0, 1.3, 4.0};
+    for (size_t a = 0; a < sizeof ks / sizeof *ks; a++) {
+        el_smooth_params p = smooth(ks[a]);
+        enum { N = 300 };
+        const double h = 1e-3;
+        double s[3 * N], ka[3 * N], r[N], kk[N];
+        for (int i = 0; i < N; i++) {
+            double si = 0.1 + 5.8 * i / (N - 1.0);
+            s[3 * i] = si - h; s[3 * i + 1] = si; s[3 * i + 2] = si + h;
+        }
+        ck_assert_int_eq(el_smooth_eval(&p, 3 * N, s, NULL, NULL, ka), EL_OK);
+        double num = 0, den = 0, scale = 0;
+        for (int i = 0; i < N; i++) {
+            double k0 = ka[3 * i + 1], kpp = (ka[3 * i + 2] - 2 * k0 + ka[3 * i]) / (h * h);
+            r[i] = kpp + 0.5 * k0 * k0 * k0; /* = lambda kappa */
+            kk[i] = k0;
+            num += r[i] * k0; den += k0 * k0;
+            scale = fmax(scale, fabs(k0 * k0 * k0));
+        }
+        double lambda = num / den;
+        for (int i = 0; i < N; i++)
+            ck_assert_msg(fabs(r[i] - lambda * kk[i]) <= 1e-5 * scale, "k=%g residual %.3g (scale %.3g)",
+                          p.k, r[i] - lambda * kk[i], scale);
+        /* and lambda is the closed form mu (2k^2 - 1) of seed 000 (2.23) */
+        ck_assert_close(lambda, p.mu * (2 * p.k * p.k - 1), 1e-5 * (1 + fabs(lambda)));
+    }
+}
+END_TEST
+
+START_TEST(smooth_points_continuous_across_k_equal_1)
+{
+    /* both one-sided differences shrink linearly with |k - 1|: continuity (with a finite
+     * derivative) across the separatrix, the two families meeting in one formula */
+    enum { N = 50 };
+    double s[N], one_xy[2 * N], xy[2 * N];
+    for (int i = 0; i < N; i++) s[i] = 6.0 * i / (N - 1.0);
+    el_smooth_params one = smooth(1.0);
+    ck_assert_int_eq(el_smooth_eval(&one, N, s, one_xy, NULL, NULL), EL_OK);
+    for (int side = -1; side <= 1; side += 2) {
+        double prev = 0;
+        for (int e = 6; e <= 12; e += 2) {
+            el_smooth_params p = smooth(1.0 + side * pow(10.0, -e));
+            ck_assert_int_eq(el_smooth_eval(&p, N, s, xy, NULL, NULL), EL_OK);
+            double d = 0;
+            for (int i = 0; i < 2 * N; i++) d = fmax(d, fabs(xy[i] - one_xy[i]));
+            if (e > 6) ck_assert_msg(d < prev / 30, "side %d 1e-%d: %.3g after %.3g", side, e, d, prev);
+            prev = d;
+        }
+        ck_assert_msg(prev < 1e-8, "difference at |k-1| = 1e-12 is %.3g", prev);
+    }
+}
+END_TEST
+
+START_TEST(smooth_energy_matches_quadrature)
+{
+    const double ks[] = {0.0, 0.5, 1.0, 1.7};
+    for (size_t a = 0; a < sizeof ks / sizeof *ks; a++) {
+        el_smooth_params p = smooth(ks[a]);
+        enum { N = 4001 };
+        static double s[N], ka[N];
+        for (int i = 0; i < N; i++) s[i] = p.length * i / (N - 1.0);
+        ck_assert_int_eq(el_smooth_eval(&p, N, s, NULL, NULL, ka), EL_OK);
+        double simpson = 0, h = p.length / (N - 1.0);
+        for (int i = 0; i < N; i++) simpson += (i == 0 || i == N - 1 ? 1 : (i % 2 ? 4 : 2)) * ka[i] * ka[i];
+        simpson *= h / 3;
+        double e;
+        ck_assert_int_eq(el_smooth_energy(&p, &e), EL_OK);
+        ck_assert_close(e, simpson, 1e-9 * (1 + simpson));
+    }
+}
+END_TEST
+
+/* central finite-difference check of a 7-column Jacobian */
+typedef int (*eval_fn)(const double *par, size_t n, const double *s, double *xy);
+
+static int smooth_eval_t(const double *par, size_t n, const double *t, double *xy)
+{
+    el_smooth_params p = {par[0], par[1], par[2], par[3], par[4], par[5], par[6]};
+    double s[64];
+    for (size_t i = 0; i < n; i++) s[i] = t[i] * p.length;
+    return el_smooth_eval(&p, n, s, xy, NULL, NULL);
+}
+
+static int discrete_eval_n(const double *par, size_t n, const double *unused, double *xy)
+{
+    (void)unused;
+    el_discrete_params p = {par[0], par[1], par[2], par[3], par[4], par[5], par[6]};
+    return el_discrete_eval(&p, n, xy);
+}
+
+static void check_jacobian_fd(eval_fn f, const double *par, size_t n, const double *t, const double *jac,
+                              const char *what)
+{
+    double xp[128], xm[128];
+    for (int j = 0; j < 7; j++) {
+        double pp[7], pm[7];
+        memcpy(pp, par, sizeof pp); memcpy(pm, par, sizeof pm);
+        double h = 1e-6 * fmax(1.0, fabs(par[j]));
+        pp[j] += h; pm[j] -= h;
+        ck_assert_int_eq(f(pp, n, t, xp), EL_OK);
+        ck_assert_int_eq(f(pm, n, t, xm), EL_OK);
+        double big = 1.0;
+        for (size_t i = 0; i < 2 * n; i++) big = fmax(big, fabs(jac[i * 7 + j]));
+        for (size_t i = 0; i < 2 * n; i++) {
+            double fd = (xp[i] - xm[i]) / (2 * h);
+            ck_assert_msg(fabs(fd - jac[i * 7 + j]) <= 1e-6 * big, "%s: column %d row %zu: %.12g vs fd %.12g",
+                          what, j, i, jac[i * 7 + j], fd);
+        }
+    }
+}
+
+START_TEST(smooth_jacobian_matches_finite_differences)
+{
+    unsigned long long rng = 0x5eed1234ULL;
+    for (int trial = 0; trial < 40; trial++) {
+        double k = trial % 2 ? test_uniform(&rng, 0.05, 0.97) : test_uniform(&rng, 1.03, 4.0);
+        double par[7] = {test_uniform(&rng, -2, 2), test_uniform(&rng, -2, 2), test_uniform(&rng, -3, 3),
+                         test_uniform(&rng, 0.2, 3), k, test_uniform(&rng, -2, 2), test_uniform(&rng, 0.5, 4)};
+        enum { N = 12 };
+        double t[N], s[N], jac[N * 2 * 7];
+        for (int i = 0; i < N; i++) { t[i] = test_uniform(&rng, 0, 1); s[i] = t[i] * par[6]; }
+        el_smooth_params p = {par[0], par[1], par[2], par[3], par[4], par[5], par[6]};
+        ck_assert_int_eq(el_smooth_jacobian(&p, N, s, NULL, jac), EL_OK);
+        check_jacobian_fd(smooth_eval_t, par, N, t, jac, "smooth");
+    }
+}
+END_TEST
+
+START_TEST(smooth_uniform_grid_agrees_with_pointwise)
+{
+    /* equally spaced s takes the addition-theorem path: compare with single evaluations */
+    const double ks[] = {0.3, 0.99, 1.0, 3.0};
+    for (size_t a = 0; a < sizeof ks / sizeof *ks; a++) {
+        el_smooth_params p = smooth(ks[a]);
+        enum { N = 500 };
+        static double s[N], xy[2 * N], jac[N * 14];
+        for (int i = 0; i < N; i++) s[i] = p.length * i / (N - 1.0);
+        ck_assert_int_eq(el_smooth_jacobian(&p, N, s, xy, jac), EL_OK);
+        for (int i = 0; i < N; i += 7) {
+            double one[2], j1[14];
+            ck_assert_int_eq(el_smooth_jacobian(&p, 1, &s[i], one, j1), EL_OK);
+            ck_assert_close(one[0], xy[2 * i], 1e-12);
+            ck_assert_close(one[1], xy[2 * i + 1], 1e-12);
+            for (int j = 0; j < 14; j++) ck_assert_close(j1[j], jac[i * 14 + j], 1e-9 * (1 + fabs(j1[j])));
+        }
+    }
+}
+END_TEST
+
+START_TEST(smooth_rejects_bad_input)
+{
+    double s[2] = {0, 1}, xy[4] = {7, 7, 7, 7}, jac[28], e = 7;
+    el_smooth_params good = smooth(0.5);
+    el_smooth_params bad[6];
+    for (int i = 0; i < 6; i++) bad[i] = good;
+    bad[0].mu = 0; bad[1].mu = -1; bad[2].k = -0.1; bad[3].length = -1; bad[4].q = NAN; bad[5].phi = INFINITY;
+    for (int i = 0; i < 6; i++) {
+        ck_assert_int_eq(el_smooth_eval(&bad[i], 2, s, xy, NULL, NULL), EL_EINVAL);
+        ck_assert_int_eq(el_smooth_jacobian(&bad[i], 2, s, xy, jac), EL_EINVAL);
+        ck_assert_int_eq(el_smooth_energy(&bad[i], &e), EL_EINVAL);
+    }
+    double sn[2] = {0, NAN};
+    ck_assert_int_eq(el_smooth_eval(&good, 2, sn, xy, NULL, NULL), EL_EINVAL);
+    ck_assert_int_eq(el_smooth_eval(NULL, 2, s, xy, NULL, NULL), EL_EINVAL);
+    ck_assert_int_eq(el_smooth_eval(&good, 2, NULL, xy, NULL, NULL), EL_EINVAL);
+    ck_assert_int_eq(el_smooth_jacobian(&good, 2, s, xy, NULL), EL_EINVAL);
+    ck_assert_int_eq(el_smooth_energy(&good, NULL), EL_EINVAL);
+    for (int i = 0; i < 4; i++) ck_assert(xy[i] == 7);
+    ck_assert(e == 7);
+}
+END_TEST
+
+/* ------------------------------------------------------------ discrete */
+
+static el_discrete_params discrete(double k)
+{
+    el_discrete_params p = {0.4, -0.3, 0.05, 0.6, 0.07, 0.35, k};
+    return p;
+}
+
+START_TEST(discrete_segments_mcmillan_and_conserved_quantity)
+{
+    const double ks[] = {0.2, 0.7, 0.99, 1.01, 1.6, 8.0};
+    enum { N = 400 };
+    static double xy[2 * N], ka[N];
+    for (size_t a = 0; a < sizeof ks / sizeof *ks; a++) {
+        el_discrete_params p = discrete(ks[a]);
+        ck_assert_int_eq(el_discrete_eval(&p, N, xy), EL_OK);
+        ck_assert_int_eq(el_discrete_curvature(&p, N, ka), EL_OK);
+        const double h = p.h;
+        for (int i = 0; i + 1 < N; i++)
+            ck_assert_close(hypot(xy[2 * i + 2] - xy[2 * i], xy[2 * i + 3] - xy[2 * i + 1]), h, 1e-12 * h);
+        /* curvature from the vertices themselves: (2/h) tan(K/2), K the turning angle (3.4) */
+        double kmax = 0;
+        for (int i = 1; i + 1 < N; i++) {
+            double ax = xy[2 * i] - xy[2 * i - 2], ay = xy[2 * i + 1] - xy[2 * i - 1];
+            double bx = xy[2 * i + 2] - xy[2 * i], by = xy[2 * i + 3] - xy[2 * i + 1];
+            double K = atan2(ax * by - ay * bx, ax * bx + ay * by);
+            ck_assert_close(ka[i - 1], 2.0 / h * tan(K / 2), 1e-9 * (1 + fabs(ka[i - 1])));
+            kmax = fmax(kmax, fabs(ka[i - 1]));
+        }
+        /* McMillan map (3.9): kappa_{n+1} + kappa_{n-1} = alpha kappa_n / (1 + h^2 kappa_n^2 / 4), one alpha */
+        double num = 0, den = 0;
+        for (int i = 1; i + 1 < N - 2; i++) {
+            double g = ka[i] / (1 + h * h * ka[i] * ka[i] / 4);
+            num += (ka[i + 1] + ka[i - 1]) * g; den += g * g;
+        }
+        double alpha = num / den;
+        for (int i = 1; i + 1 < N - 2; i++) {
+            double res = ka[i + 1] + ka[i - 1] - alpha * ka[i] / (1 + h * h * ka[i] * ka[i] / 4);
+            ck_assert_msg(fabs(res) <= 1e-10 * kmax, "k=%g McMillan residual %.3g (kmax %.3g)", p.k, res, kmax);
+        }
+        /* conserved quantity (3.18), one C */
+        double C0 = ka[1] * ka[1] + ka[0] * ka[0] - alpha * ka[1] * ka[0] + h * h / 4 * ka[1] * ka[1] * ka[0] * ka[0];
+        for (int i = 0; i + 1 < N - 2; i++) {
+            double C = ka[i + 1] * ka[i + 1] + ka[i] * ka[i] - alpha * ka[i + 1] * ka[i]
+                     + h * h / 4 * ka[i + 1] * ka[i + 1] * ka[i] * ka[i];
+            ck_assert_msg(fabs(C - C0) <= 1e-10 * kmax * kmax, "k=%g (3.18) drift %.3g", p.k, C - C0);
+        }
+    }
+}
+END_TEST
+
+START_TEST(discrete_continuum_limit_is_second_order)
+{
+    /* z = sqrt(mu) h: the vertices approach the smooth elastica at s = n h as O(h^2) */
+    const double ks[] = {0.6, 1.4};
+    for (size_t a = 0; a < sizeof ks / sizeof *ks; a++) {
+        el_smooth_params sp = {0.2, 0.1, 0.3, 1.5, ks[a], 0.2, 4.0};
+        double err[4];
+        for (int lev = 0; lev < 4; lev++) {
+            int n = 40 << lev;
+            double h = sp.length / n;
+            el_discrete_params dp = {sp.x0, sp.y0, h, sp.phi, sqrt(sp.mu) * h, sp.q, sp.k};
+            double *xy = malloc(2 * (n + 1) * sizeof *xy), *ref = malloc(2 * (n + 1) * sizeof *ref);
+            double *s = malloc((n + 1) * sizeof *s);
+            for (int i = 0; i <= n; i++) s[i] = i * h;
+            ck_assert_int_eq(el_discrete_eval(&dp, n + 1, xy), EL_OK);
+            ck_assert_int_eq(el_smooth_eval(&sp, n + 1, s, ref, NULL, NULL), EL_OK);
+            err[lev] = 0;
+            for (int i = 0; i < 2 * (n + 1); i++) err[lev] = fmax(err[lev], fabs(xy[i] - ref[i]));
+            free(xy); free(ref); free(s);
+        }
+        printf("continuum limit k=%g: max error", sp.k);
+        for (int lev = 0; lev < 4; lev++) printf(" %.3e", err[lev]);
+        printf("  rates");
+        for (int lev = 1; lev < 4; lev++) {
+            double rate = log2(err[lev - 1] / err[lev]);
+            printf(" %.3f", rate);
+            ck_assert_msg(rate > 1.9 && rate < 2.1, "rate %.3f is not 2", rate);
+        }
+        printf("\n");
+    }
+}
+END_TEST
+
+START_TEST(discrete_jacobian_matches_finite_differences)
+{
+    unsigned long long rng = 0xfeedULL;
+    for (int trial = 0; trial < 40; trial++) {
+        double k = trial % 2 ? test_uniform(&rng, 0.05, 0.97) : test_uniform(&rng, 1.03, 4.0);
+        double par[7] = {test_uniform(&rng, -2, 2), test_uniform(&rng, -2, 2), test_uniform(&rng, 0.01, 0.3),
+                         test_uniform(&rng, -3, 3), test_uniform(&rng, -0.3, 0.3), test_uniform(&rng, -2, 2), k};
+        enum { N = 60 };
+        double jac[N * 14], xy[2 * N];
+        el_discrete_params p = {par[0], par[1], par[2], par[3], par[4], par[5], par[6]};
+        ck_assert_int_eq(el_discrete_jacobian(&p, N, xy, jac), EL_OK);
+        check_jacobian_fd(discrete_eval_n, par, N, NULL, jac, "discrete");
+        double xy2[2 * N];
+        ck_assert_int_eq(el_discrete_eval(&p, N, xy2), EL_OK);
+        for (int i = 0; i < 2 * N; i++) ck_assert_close(xy[i], xy2[i], 1e-13);
+    }
+}
+END_TEST
+
+START_TEST(discrete_rejects_bad_input)
+{
+    double xy[6] = {7, 7, 7, 7, 7, 7}, jac[42], ka[1] = {7};
+    el_discrete_params good = discrete(0.5), bad[5];
+    for (int i = 0; i < 5; i++) bad[i] = good;
+    bad[0].h = 0; bad[1].h = -1; bad[2].k = -1; bad[3].z = NAN; bad[4].x0 = -INFINITY;
+    for (int i = 0; i < 5; i++) {
+        ck_assert_int_eq(el_discrete_eval(&bad[i], 3, xy), EL_EINVAL);
+        ck_assert_int_eq(el_discrete_jacobian(&bad[i], 3, xy, jac), EL_EINVAL);
+        ck_assert_int_eq(el_discrete_curvature(&bad[i], 3, ka), EL_EINVAL);
+    }
+    ck_assert_int_eq(el_discrete_eval(&good, 1, xy), EL_EINVAL);
+    ck_assert_int_eq(el_discrete_eval(&good, 3, NULL), EL_EINVAL);
+    ck_assert_int_eq(el_discrete_eval(NULL, 3, xy), EL_EINVAL);
+    ck_assert_int_eq(el_discrete_curvature(&good, 2, ka), EL_EINVAL);
+    ck_assert_int_eq(el_discrete_jacobian(&good, 3, xy, NULL), EL_EINVAL);
+    for (int i = 0; i < 6; i++) ck_assert(xy[i] == 7);
+    ck_assert(ka[0] == 7);
+}
+END_TEST
+
+int main(void)
+{
+    Suite *s = suite_create("core");
+    TCase *j = tcase_create("jacobi"), *sm = tcase_create("smooth"), *d = tcase_create("discrete");
+    tcase_set_timeout(j, 120); tcase_set_timeout(sm, 120); tcase_set_timeout(d, 120);
+    tcase_add_test(j, jacobi_matches_mpmath_table);
+    tcase_add_test(j, jacobi_derivatives_match_finite_differences);
+    tcase_add_test(j, jacobi_small_k_derivative_is_analytic);
+    tcase_add_test(j, jacobi_rejects_bad_input);
+    tcase_add_test(sm, smooth_unit_speed_and_curvature);
+    tcase_add_test(sm, smooth_curvature_satisfies_elastica_equation);
+    tcase_add_test(sm, smooth_points_continuous_across_k_equal_1);
+    tcase_add_test(sm, smooth_energy_matches_quadrature);
+    tcase_add_test(sm, smooth_jacobian_matches_finite_differences);
+    tcase_add_test(sm, smooth_uniform_grid_agrees_with_pointwise);
+    tcase_add_test(sm, smooth_rejects_bad_input);
+    tcase_add_test(d, discrete_segments_mcmillan_and_conserved_quantity);
+    tcase_add_test(d, discrete_continuum_limit_is_second_order);
+    tcase_add_test(d, discrete_jacobian_matches_finite_differences);
+    tcase_add_test(d, discrete_rejects_bad_input);
+    suite_add_tcase(s, j); suite_add_tcase(s, sm); suite_add_tcase(s, d);
+    return test_run_suite(s);
+}

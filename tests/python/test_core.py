@@ -1,0 +1,104 @@
+"""The Python binding of the core: SmoothElastica and DiscreteElastica as users call them."""
+import math
+
+import numpy as np
+import pytest
+
+import libelastica as el
+
+
+def fd_jacobian(make, params, names, evaluate, h=1e-6):
+    cols = []
+    for name in names:
+        step = h * max(1.0, abs(params[name]))
+        plus, minus = dict(params), dict(params)
+        plus[name] += step
+        minus[name] -= step
+        cols.append((evaluate(make(**plus)) - evaluate(make(**minus))) / (2 * step))
+    return np.stack(cols, axis=-1)
+
+
+@pytest.mark.parametrize("k", [0.3, 0.9, 1.2, 3.0])
+def test_smooth_jacobian_matches_finite_differences(k):
+    params = dict(x0=0.4, y0=-1.0, phi=0.8, mu=1.3, k=k, q=0.25, length=3.0)
+    t = np.array([0.0, 0.13, 0.5, 0.77, 1.0])
+    c = el.SmoothElastica(**params)
+    jac = c.jacobian(t * c.length)
+    assert jac.shape == (5, 2, 7)
+    fd = fd_jacobian(el.SmoothElastica, params, el.core.SMOOTH_PARAMS,
+                     lambda e: e.points(t * e.length))
+    assert np.allclose(jac, fd, rtol=1e-6, atol=1e-6 * np.abs(jac).max())
+
+
+@pytest.mark.parametrize("k", [0.5, 0.95, 1.05, 2.0])
+def test_discrete_jacobian_matches_finite_differences(k):
+    params = dict(x0=0.1, y0=0.2, h=0.08, phi=-0.4, z=0.09, q=0.3, k=k)
+    d = el.DiscreteElastica(n=40, **params)
+    jac = d.jacobian()
+    assert jac.shape == (40, 2, 7)
+    fd = fd_jacobian(lambda **p: el.DiscreteElastica(n=40, **p), params,
+                     el.core.DISCRETE_PARAMS, lambda e: e.points())
+    assert np.allclose(jac, fd, rtol=1e-6, atol=1e-6 * np.abs(jac).max())
+
+
+def test_smooth_geometry_from_python():
+    c = el.SmoothElastica(x0=1, y0=2, phi=0.3, mu=1.0, k=0.8, q=0.0, length=5.0)
+    s = np.linspace(0, c.length, 2001)
+    p = c.points(s)
+    assert np.allclose(p[0], [1, 2])
+    seg = np.hypot(*np.diff(p, axis=0).T)
+    assert abs(seg.sum() - c.length) < 1e-5          # arc length parametrisation
+    theta = c.angle(s)
+    kappa = c.curvature(s)
+    assert np.allclose(np.gradient(theta, s)[2:-2], kappa[2:-2], atol=1e-4)
+    assert abs(theta[0] - (c.phi + 2 * math.asin(c.k * 0.0))) < 1e-15
+    energy = np.sum((kappa[1:] ** 2 + kappa[:-1] ** 2) / 2 * np.diff(s))
+    assert abs(c.energy() - energy) < 1e-5 * energy
+    assert c.points(2.5).shape == (1, 2)              # scalars are accepted
+    assert c.points().shape == (101, 2)               # default sampling of [0, length]
+
+
+def test_discrete_geometry_from_python():
+    d = el.DiscreteElastica(x0=0, y0=0, h=0.1, phi=0, z=0.1, q=0.0, k=0.8, n=50)
+    p = d.points()
+    assert p.shape == (50, 2)
+    assert np.allclose(np.hypot(*np.diff(p, axis=0).T), 0.1, atol=1e-14)
+    kappa = d.curvature()
+    assert kappa.shape == (48,)
+    a, b = p[1:-1] - p[:-2], p[2:] - p[1:-1]
+    turn = np.arctan2(a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0], (a * b).sum(axis=1))
+    assert np.allclose(kappa, 2 / d.h * np.tan(turn / 2), atol=1e-10)
+
+
+@pytest.mark.parametrize("bad", [dict(mu=0.0), dict(mu=-1.0), dict(k=-0.5), dict(length=-1.0),
+                                 dict(q=float("nan")), dict(phi=float("inf"))])
+def test_smooth_bad_parameters_raise_value_error(bad):
+    params = dict(x0=0, y0=0, phi=0, mu=1.0, k=0.5, q=0.0, length=1.0)
+    params.update(bad)
+    with pytest.raises(ValueError, match="invalid argument"):
+        el.SmoothElastica(**params)
+
+
+@pytest.mark.parametrize("bad", [dict(h=0.0), dict(h=-0.1), dict(k=-1.0), dict(z=float("nan")),
+                                 dict(n=1), dict(n=2.5)])
+def test_discrete_bad_parameters_raise_value_error(bad):
+    params = dict(x0=0, y0=0, h=0.1, phi=0, z=0.1, q=0.0, k=0.8, n=50)
+    params.update(bad)
+    with pytest.raises(ValueError):
+        el.DiscreteElastica(**params)
+
+
+def test_bad_arc_lengths_raise_and_errors_carry_status():
+    c = el.SmoothElastica()
+    with pytest.raises(el.ElasticaError) as info:
+        c.points([0.0, float("nan")])
+    assert info.value.status == 1
+    with pytest.raises(ValueError):
+        c.points(np.zeros((2, 2)))
+
+
+def test_parameters_are_plain_and_editable():
+    c = el.SmoothElastica(k=0.5)
+    c.k = 1.5   # a dataclass: FreeCAD and users edit fields directly
+    assert c.curvature([0.0])[0] == pytest.approx(2 * 1.5 * math.sqrt(c.mu) * 1.0)
+    assert list(c.params) == [c.x0, c.y0, c.phi, c.mu, c.k, c.q, c.length]
