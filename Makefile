@@ -30,7 +30,7 @@ APT_PKGS := build-essential pkg-config libgsl-dev coinor-libipopt-dev check \
 PIP_PKGS := numpy cffi pytest scipy
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps lib check check-c check-asan check-python check-freecad bench demo install clean
+.PHONY: all deps lib check check-c check-asan check-install check-python check-freecad bench demo install clean
 
 all: deps lib
 
@@ -49,22 +49,20 @@ $(BUILD)/.deps-ok: Makefile
 	fi
 	@mkdir -p $(BUILD) && touch $@
 
-lib: $(BUILD)/libelastica.so $(BUILD)/libelastica.a $(BUILD)/elastica.pc
+lib: $(BUILD)/libelastica.so $(BUILD)/libelastica.a
 
 $(BUILD)/obj/%.o: libelastica/%.c include/elastica.h libelastica/internal.h | $(BUILD)/.deps-ok
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_BASE) $(DEPS_CFLAGS) $(EXTRA_CFLAGS) -c $< -o $@
 
+# libelastica.so -> libelastica.so.0 (the soname) -> libelastica.so.0.1.0 (the file)
 $(BUILD)/libelastica.so: $(LIB_OBJ)
-	$(CC) -shared -Wl,-soname,$(SONAME) $(EXTRA_CFLAGS) -o $(BUILD)/$(SONAME) $^ $(DEPS_LIBS)
+	$(CC) -shared -Wl,-soname,$(SONAME) $(EXTRA_CFLAGS) -o $(BUILD)/libelastica.so.$(VERSION) $^ $(DEPS_LIBS)
+	ln -sf libelastica.so.$(VERSION) $(BUILD)/$(SONAME)
 	ln -sf $(SONAME) $@
 
 $(BUILD)/libelastica.a: $(LIB_OBJ)
 	ar rcs $@ $^
-
-$(BUILD)/elastica.pc: Makefile
-	@mkdir -p $(BUILD)
-	printf 'prefix=%s\nlibdir=$${prefix}/lib\nincludedir=$${prefix}/include\n\nName: elastica\nDescription: Euler elastica for CAD: evaluation, fairing, Hermite, B-splines\nVersion: %s\nRequires.private: gsl ipopt\nLibs: -L$${libdir} -lelastica\nCflags: -I$${includedir}\n' '$(PREFIX)' '$(VERSION)' > $@
 
 # ------------------------------------------------------------------ tests
 
@@ -92,7 +90,7 @@ check-freecad: lib
 	@if [ -d tests/freecad ] && ls tests/freecad/test_*.py >/dev/null 2>&1; then \
 	  $(MAKE) --no-print-directory -f tests/freecad/freecad.mk BUILD=$(BUILD); fi
 
-check: all check-c check-asan check-python check-freecad
+check: all check-c check-asan check-install check-python check-freecad
 	@echo "make check: all tests passed"
 
 # ------------------------------------------------------------------ bench, demo, install
@@ -111,12 +109,24 @@ demo: all
 	  $(SYSPYTHON) examples/demo.py
 
 install: lib
-	install -d $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include $(DESTDIR)$(PREFIX)/lib/pkgconfig
+	install -d $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/include
 	install -m 644 include/elastica.h $(DESTDIR)$(PREFIX)/include/
-	install -m 755 $(BUILD)/$(SONAME) $(DESTDIR)$(PREFIX)/lib/
+	install -m 755 $(BUILD)/libelastica.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/
+	ln -sf libelastica.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/$(SONAME)
 	ln -sf $(SONAME) $(DESTDIR)$(PREFIX)/lib/libelastica.so
 	install -m 644 $(BUILD)/libelastica.a $(DESTDIR)$(PREFIX)/lib/
-	install -m 644 $(BUILD)/elastica.pc $(DESTDIR)$(PREFIX)/lib/pkgconfig/
+	printf 'prefix=%s\nlibdir=$${prefix}/lib\nincludedir=$${prefix}/include\n\nName: elastica\nDescription: %s\nVersion: %s\nRequires.private: gsl ipopt\nLibs: -L$${libdir} -lelastica\nCflags: -I$${includedir}\n' \
+	  '$(PREFIX)' 'Euler elastica for CAD: evaluation, fairing, Hermite, B-splines' '$(VERSION)' \
+	  > $(DESTDIR)$(PREFIX)/lib/pkgconfig/elastica.pc
+	@echo "installed into $(DESTDIR)$(PREFIX)"
+
+# install into a staging prefix and build the README's C example against it with pkg-config
+check-install: lib
+	rm -rf $(BUILD)/stage
+	$(MAKE) --no-print-directory install PREFIX=$(CURDIR)/$(BUILD)/stage
+	PKG_CONFIG_PATH=$(BUILD)/stage/lib/pkgconfig $(CC) -std=c99 -Wall -Werror examples/readme_example.c \
+	  $$(PKG_CONFIG_PATH=$(BUILD)/stage/lib/pkgconfig pkg-config --cflags --libs elastica) -o $(BUILD)/readme_example
+	LD_LIBRARY_PATH=$(BUILD)/stage/lib $(BUILD)/readme_example
 
 clean:
 	rm -rf build build-* out
