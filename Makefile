@@ -11,7 +11,7 @@ CC           ?= cc
 
 CFLAGS_BASE  := -std=c99 -Wall -Wextra -Werror -O2 -fPIC -Iinclude
 DEPS_CFLAGS   = $(shell pkg-config --cflags gsl ipopt 2>/dev/null)
-DEPS_LIBS     = $(shell pkg-config --libs gsl ipopt 2>/dev/null) -lm
+DEPS_LIBS     = $(shell pkg-config --libs gsl ipopt 2>/dev/null) -lm -pthread
 CHECK_LIBS    = $(shell pkg-config --libs check 2>/dev/null)
 
 LIB_SRC      := $(wildcard libelastica/*.c)

@@ -9,10 +9,8 @@
 #define M_PI 3.14159265358979323846
 #endif
 
-/* Turn GSL's aborting error handler off for the calling code path.
- * gsl_set_error_handler_off() sets a process-wide pointer; every entry point
- * that calls GSL calls this first (idempotent, writes the same value, so two
- * threads racing on it agree), and every GSL status is mapped to an EL_ code. */
+/* Turn GSL's aborting error handler off (once per process, thread-safe); every
+ * entry point that calls GSL calls this first and maps GSL statuses to EL_ codes. */
 void el__gsl_quiet(void);
 
 /* EL_OK when all n values are finite. */

@@ -1,6 +1,8 @@
 /* Status codes, messages, and the shared argument checks. */
+#define _POSIX_C_SOURCE 200112L /* pthread_once */
 #include "internal.h"
 #include <gsl/gsl_errno.h>
+#include <pthread.h>
 
 const char *el_strerror(int status)
 {
@@ -19,7 +21,14 @@ const char *el_strerror(int status)
 
 const char *el_version(void) { return "0.1.0"; }
 
-void el__gsl_quiet(void) { gsl_set_error_handler_off(); }
+static pthread_once_t gsl_quiet_once = PTHREAD_ONCE_INIT;
+
+static void gsl_handler_off(void) { gsl_set_error_handler_off(); }
+
+/* GSL's error handler is process-wide and aborts by default: switch it off once,
+ * race-free, before the library's first GSL call; every GSL status is then
+ * mapped to an EL_ code by the caller. */
+void el__gsl_quiet(void) { pthread_once(&gsl_quiet_once, gsl_handler_off); }
 
 int el__all_finite(const double *v, size_t n)
 {
