@@ -1,0 +1,297 @@
+"""Blending-function curves of seed 003 (Miura et al., "Curve modeling with Jacobi
+elliptic functions"), built the way Eck's MQ-curves are.
+
+A segment is ``phi(t) = sum_i q_i h_i(t)``, ``t in [0, 1]``, with control points
+``q_0..q_3`` and blending functions ``h_i`` in the span of
+``{1-t, f_1(t), f_2(t) = f_1(1-t), t}``:
+
+* :class:`EllipticBlend`: ``f_1 = sn((1-t)K, k)``, ``f_2 = sn(Kt, k)``, ``K = K(k)``;
+* :class:`MQBlend`: Eck's ``f_1 = sqrt(c^2 + (1-t)^2)``, ``f_2 = sqrt(c^2 + t^2)``.
+
+The blending functions satisfy ``h_0(0) = 1``, ``h_0(1) = h_0'(1) = 0``,
+``h_0'(0) = -d``, ``h_1(0) = h_1(1) = h_1'(1) = 0``, ``h_2(t) = h_1(1-t)``,
+``h_3(t) = h_0(1-t)`` and sum to one, so the curve starts at ``q_0`` with
+``phi'(0) = d (q_1 - q_0)`` and ends at ``q_3`` with ``phi'(1) = d (q_3 - q_2)``.
+
+**Convention for k.** ``k`` is the elliptic *modulus*, as everywhere in
+libelastica. The paper's numbers use the *parameter* ``m = k^2``: its rope
+example "(k, d) = (0.3, 2)" is ``EllipticBlend(m=0.3, d=2)`` (modulus
+``sqrt(0.3)``), with control points ``(0, 0), (0.5, K/2), (0.5, 1), (1, 1)``,
+``K/2 = 0.856945``.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Optional
+
+import numpy as np
+
+from ._ffi import as_points, as_vector, bspline_from_c, check, dptr, ffi, lib
+
+__all__ = ["EllipticBlend", "MQBlend", "BlendCurve", "blend_curve", "eck_d", "eck_omega"]
+
+_PICK = {"control": lib.EL_BLEND_PICK_CONTROL, "interpolate": lib.EL_BLEND_PICK_INTERPOLATE}
+
+
+def _t(t) -> np.ndarray:
+    return np.linspace(0.0, 1.0, 101) if t is None else as_vector(t, "t")
+
+
+def _four(q, name: str) -> np.ndarray:
+    q = as_points(q, name)
+    if q.shape != (4, 2):
+        raise ValueError(f"{name} must have shape (4, 2), got {q.shape}")
+    return q
+
+
+def _composite(q, name: str = "q") -> tuple[np.ndarray, int]:
+    q = as_points(q, name)
+    if len(q) < 4 or (len(q) - 1) % 3:
+        raise ValueError(f"{name} must hold 3*nseg + 1 points (nseg >= 1), got {len(q)}")
+    return q, (len(q) - 1) // 3
+
+
+class _Blend:
+    """Common part of the MQ and elliptic bases (one el_blend_basis)."""
+
+    _b = None
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}({self._args()})"
+
+    # -- basis ---------------------------------------------------------------
+    @property
+    def d(self) -> float:
+        """End-derivative parameter: ``h_0'(0) = -d``, ``phi'(0) = d (q_1 - q_0)``."""
+        return float(self._b.d)
+
+    @property
+    def matrix(self) -> np.ndarray:
+        """``M`` (4, 4): row i holds the coefficients of ``h_i`` on ``(f_0, f_1, f_2, f_3)``."""
+        return np.array(list(self._b.M)).reshape(4, 4)
+
+    @property
+    def condition(self) -> float:
+        """1-norm condition number of the 8x8 system (2.17) that defined the basis."""
+        return float(self._b.cond)
+
+    def span(self, t=None, derivative: int = 0) -> np.ndarray:
+        """The span functions ``f_j(t)`` (or their 1st/2nd t-derivative), shape (n, 4)."""
+        t = _t(t)
+        out = np.empty((len(t), 4))
+        args = [ffi.NULL] * 3
+        args[self._order(derivative)] = dptr(out)
+        check(lib.el_blend_span_eval(self._b, len(t), dptr(t), *args), type(self).__name__)
+        return out
+
+    def basis(self, t=None, derivative: int = 0) -> np.ndarray:
+        """Blending functions ``h_j(t)`` (or their 1st/2nd t-derivative), shape (n, 4)."""
+        t = _t(t)
+        out = np.empty((len(t), 4))
+        args = [ffi.NULL] * 3
+        args[self._order(derivative)] = dptr(out)
+        check(lib.el_blend_basis_eval(self._b, len(t), dptr(t), *args), type(self).__name__)
+        return out
+
+    @staticmethod
+    def _order(derivative: int) -> int:
+        if derivative not in (0, 1, 2):
+            raise ValueError(f"derivative must be 0, 1 or 2, got {derivative}")
+        return derivative
+
+    # -- control points ------------------------------------------------------
+    def control_points(self, coeffs) -> np.ndarray:
+        """Control points ``q = p M^-1`` (2.19), shape (4, 2), of the curve
+        ``sum_j p_j f_j(t)`` with coefficient points ``coeffs`` = ``p`` (4, 2)."""
+        p = _four(coeffs, "coeffs")
+        q = np.empty((4, 2))
+        check(lib.el_blend_control_points(self._b, dptr(p), dptr(q)), "control_points")
+        return q
+
+    def coefficients(self, q) -> np.ndarray:
+        """Coefficient points ``p = q M`` (2.18) of the curve with control points q."""
+        q = _four(q, "q")
+        p = np.empty((4, 2))
+        check(lib.el_blend_coefficients(self._b, dptr(q), dptr(p)), "coefficients")
+        return p
+
+    def from_points(self, points, mode: str = "interpolate") -> np.ndarray:
+        """Control points (4, 2) from four picked points.
+
+        ``mode="control"``: the points are the control points (a copy).
+        ``mode="interpolate"``: the curve passes through the four points, at the
+        chord-length parameters ``t = 0, t_1, t_2, 1``. Coincident consecutive
+        points raise :class:`SingularError`.
+        """
+        if mode not in _PICK:
+            raise ValueError(f"mode must be one of {sorted(_PICK)}, got {mode!r}")
+        pts = _four(points, "points")
+        q = np.empty((4, 2))
+        check(lib.el_blend_from_points(self._b, dptr(pts), _PICK[mode], dptr(q)), "from_points")
+        return q
+
+    # -- curves --------------------------------------------------------------
+    def evaluate(self, q, t=None, derivative: bool = False):
+        """Points ``phi(t) = sum q_i h_i(t)`` (n, 2) of the segment with control points
+        q (4, 2); with ``derivative=True`` also ``phi'(t)``: returns (points, tangents)."""
+        q = _four(q, "q")
+        return self._eval(q, 1, _t(t), derivative)
+
+    def evaluate_composite(self, q, t=None, derivative: bool = False):
+        """Points of a composite curve: q holds 3*nseg + 1 control points, segment s
+        uses q[3s:3s+4], global parameter t in [0, nseg] (default 101 samples per segment)."""
+        q, nseg = _composite(q)
+        t = np.linspace(0.0, nseg, 100 * nseg + 1) if t is None else as_vector(t, "t")
+        return self._eval(q, nseg, t, derivative)
+
+    def _eval(self, q, nseg, t, derivative):
+        xy = np.empty((len(t), 2))
+        dxy = np.empty((len(t), 2)) if derivative else None
+        check(lib.el_blend_composite_eval(self._b, nseg, dptr(q), len(t), dptr(t), dptr(xy),
+                                          dptr(dxy) if derivative else ffi.NULL), "evaluate")
+        return (xy, dxy) if derivative else xy
+
+    def composite_through(self, points) -> np.ndarray:
+        """Control points (3(n-1)+1, 2) of the C1 composite curve through n >= 2 points
+        (node i at t = i, Catmull-Rom tangents, one-sided quadratic ones at the ends)."""
+        pts = as_points(points, "points")
+        if len(pts) < 2:
+            raise ValueError("composite_through needs at least 2 points")
+        q = np.empty((3 * (len(pts) - 1) + 1, 2))
+        check(lib.el_blend_composite_through(self._b, len(pts), dptr(pts), dptr(q)),
+              "composite_through")
+        return q
+
+    def to_bspline(self, q, tol: float = 1e-6):
+        """A clamped cubic :class:`BSpline` within ``tol`` of the curve with control points
+        q (4 points, or 3*nseg + 1 for a composite), in the same parameter; its
+        ``max_deviation`` is the certified max_t |phi(t) - B(t)|. Raises
+        NotConvergedError when 256 spans per segment do not reach tol."""
+        q, nseg = _composite(q)
+        b = ffi.new("el_bspline *")
+        st = lib.el_blend_to_bspline(self._b, nseg, dptr(q), float(tol), b)
+        if st != lib.EL_OK:
+            lib.el_bspline_free(b)
+            check(st, "to_bspline")
+        return bspline_from_c(b)
+
+
+class EllipticBlend(_Blend):
+    """The elliptic basis of seed 003: span ``{1-t, sn((1-t)K, k), sn(Kt, k), t}``.
+
+    ``k`` is the elliptic modulus in [0, 1); pass ``m=`` (= k^2) instead to use the
+    paper's convention (its "k = 0.3" is ``m=0.3``). ``d > 0`` is the end-derivative
+    parameter. Raises DomainError for k >= 1 and SingularError where the system
+    (2.17) is singular (K(k) = 2, k ~ 0.80241).
+
+    >>> b = EllipticBlend(m=0.3, d=2.0)
+    >>> q = b.control_points([[0, 0], [0, 0], [0, 1], [1, 0]])   # C(t) = (t, sn(Kt))
+    """
+
+    def __init__(self, k: Optional[float] = None, d: float = 2.0, *, m: Optional[float] = None):
+        if (k is None) == (m is None):
+            raise ValueError("EllipticBlend: give exactly one of k (modulus) and m (= k^2)")
+        if m is not None:
+            m = float(m)
+            if not np.isfinite(m) or m < 0.0:
+                raise ValueError(f"EllipticBlend: m must be finite and >= 0, got {m}")
+            k = np.sqrt(m)
+        self._b = ffi.new("el_blend_basis *")
+        check(lib.el_blend_init_elliptic(self._b, float(k), float(d)), "EllipticBlend")
+
+    @property
+    def k(self) -> float:
+        """Elliptic modulus."""
+        return float(self._b.k)
+
+    @property
+    def m(self) -> float:
+        """Elliptic parameter m = k^2 (the paper's 'k')."""
+        return float(self._b.k) ** 2
+
+    @property
+    def K(self) -> float:
+        """Complete elliptic integral K(k)."""
+        return float(self._b.K)
+
+    def _args(self) -> str:
+        return f"k={self.k!r}, d={self.d!r}"
+
+
+class MQBlend(_Blend):
+    """Eck's MQ span ``{1-t, sqrt(c^2+(1-t)^2), sqrt(c^2+t^2), t}`` (2.1), c != 0, with
+    the generalised blending functions of end-derivative d (default: Eck's
+    ``d = 1/alpha(c)``, which gives Eck's Omega_i (2.4))."""
+
+    def __init__(self, c: float, d: Optional[float] = None):
+        if d is None:
+            d = eck_d(c)
+        self._b = ffi.new("el_blend_basis *")
+        check(lib.el_blend_init_mq(self._b, float(c), float(d)), "MQBlend")
+
+    @property
+    def c(self) -> float:
+        return float(self._b.c)
+
+    def _args(self) -> str:
+        return f"c={self.c!r}, d={self.d!r}"
+
+
+def eck_d(c: float) -> float:
+    """Eck's end-derivative ``d = 1/alpha(c)`` (2.5)."""
+    out = ffi.new("double *")
+    check(lib.el_blend_eck_d(float(c), out), "eck_d")
+    return float(out[0])
+
+
+def eck_omega(c: float, t=None) -> np.ndarray:
+    """Eck's MQ blending functions Omega_0..Omega_3 (2.4) in closed form, shape (n, 4)."""
+    t = _t(t)
+    out = np.empty((len(t), 4))
+    check(lib.el_blend_eck_omega(float(c), len(t), dptr(t), dptr(out)), "eck_omega")
+    return out
+
+
+@dataclass
+class BlendCurve:
+    """A (composite) blending-function curve: a basis and 3*nseg + 1 control points."""
+    basis: _Blend
+    q: np.ndarray
+
+    def __post_init__(self):
+        self.q, _ = _composite(self.q)
+
+    @property
+    def nseg(self) -> int:
+        return (len(self.q) - 1) // 3
+
+    def points(self, t=None) -> np.ndarray:
+        """Points (n, 2) at global parameters t in [0, nseg] (default 101 per segment)."""
+        return self.basis.evaluate_composite(self.q, t)
+
+    def to_bspline(self, tol: float = 1e-6):
+        """Clamped cubic BSpline within tol (see :meth:`EllipticBlend.to_bspline`)."""
+        return self.basis.to_bspline(self.q, tol)
+
+
+def blend_curve(points, k: Optional[float] = None, d: float = 2.0, mode: str = "interpolate",
+                *, m: Optional[float] = None) -> BlendCurve:
+    """An elliptic blending curve from picked points (the CLI / FreeCAD entry point).
+
+    Four points: ``mode="interpolate"`` (default) gives the segment through them at
+    chord-length parameters, ``mode="control"`` uses them as control points. More
+    than four points with ``mode="interpolate"``: the C1 composite through them
+    (:meth:`EllipticBlend.composite_through`); with ``mode="control"`` they must be
+    3*nseg + 1 control points. ``k`` is the modulus (default 0.5) or ``m = k^2``.
+    """
+    if k is None and m is None:
+        k = 0.5
+    basis = EllipticBlend(k, d, m=m)
+    pts = as_points(points, "points")
+    if mode not in _PICK:
+        raise ValueError(f"mode must be one of {sorted(_PICK)}, got {mode!r}")
+    if len(pts) == 4:
+        return BlendCurve(basis, basis.from_points(pts, mode))
+    if mode == "interpolate":
+        return BlendCurve(basis, basis.composite_through(pts))
+    return BlendCurve(basis, pts)

@@ -1,0 +1,191 @@
+"""Elliptic / MQ blending-function curves (seed 003) through the public Python API.
+
+References are independent of the C library: scipy's Jacobi functions and K(m),
+and Eck's control-point relation (2.6) inverted with numpy."""
+import numpy as np
+import pytest
+from scipy.optimize import brentq
+from scipy.special import ellipj, ellipk
+
+import libelastica as el
+
+T = np.linspace(0.0, 1.0, 201)
+ELLIPTIC = [(0.0, 2.0), (0.3, 0.5), (np.sqrt(0.3), 2.0), (0.7, 3.0), (0.95, 5.0)]
+
+
+@pytest.mark.parametrize("k,d", ELLIPTIC)
+def test_partition_of_unity_and_end_conditions(k, d):
+    b = el.EllipticBlend(k, d)
+    h, dh = b.basis(T), b.basis(T, derivative=1)
+    assert h.shape == (len(T), 4)
+    np.testing.assert_allclose(h.sum(axis=1), 1.0, rtol=0, atol=1e-14)
+    # (2.14) and the symmetry h_2(t) = h_1(1-t), h_3(t) = h_0(1-t)
+    np.testing.assert_allclose(h[0], [1, 0, 0, 0], rtol=0, atol=1e-14)
+    np.testing.assert_allclose(h[-1], [0, 0, 0, 1], rtol=0, atol=1e-14)
+    np.testing.assert_allclose(dh[0], [-d, d, 0, 0], rtol=0, atol=1e-14 * (1 + d))
+    np.testing.assert_allclose(dh[-1], [0, 0, -d, d], rtol=0, atol=1e-14 * (1 + d))
+    np.testing.assert_allclose(h[:, 2], h[::-1, 1], rtol=0, atol=1e-14)
+    np.testing.assert_allclose(h[:, 3], h[::-1, 0], rtol=0, atol=1e-14)
+    # the span itself, against scipy (parameter m = k^2)
+    K = ellipk(k * k)
+    assert b.K == pytest.approx(K, rel=1e-14)
+    f = b.span(T)
+    np.testing.assert_allclose(f[:, 2], ellipj(K * T, k * k)[0], rtol=0, atol=1e-14)
+    np.testing.assert_allclose(f[:, 1], ellipj(K * (1 - T), k * k)[0], rtol=0, atol=1e-14)
+
+
+def test_end_tangents_along_control_legs():
+    rng = np.random.default_rng(3)
+    for k, d in ELLIPTIC:
+        b = el.EllipticBlend(k, d)
+        q = rng.uniform(-2, 2, (4, 2))
+        xy, dxy = b.evaluate(q, [0.0, 1.0], derivative=True)
+        np.testing.assert_allclose(xy, q[[0, 3]], atol=1e-14)
+        np.testing.assert_allclose(dxy[0], d * (q[1] - q[0]), atol=1e-13 * (1 + d))
+        np.testing.assert_allclose(dxy[1], d * (q[3] - q[2]), atol=1e-13 * (1 + d))
+
+
+def _eck_from_26(c, t):
+    """Eck's Omega_i from the control-point relation (2.6): b = T a, so
+    phi = F^T a = F^T T^-1 b and Omega = T^-T F."""
+    s = np.hypot(c, 1.0)
+    al = c * s / (2 * c * c + 1 + c * s)
+    Tm = np.array([[1, s, c, 0], [1 - al, s - al / s, c, al],
+                   [al, c, s - al / s, 1 - al], [0, c, s, 1]])
+    F = np.array([1 - t, np.sqrt(c * c + (1 - t) ** 2), np.sqrt(c * c + t * t), t])
+    return np.linalg.solve(Tm.T, F).T, al
+
+
+@pytest.mark.parametrize("c", [0.5, 1.0, 2.0])
+def test_eck_omega_reproduced_by_generalised_construction(c):
+    ref, al = _eck_from_26(c, T)
+    assert el.eck_d(c) == pytest.approx(1 / al, rel=1e-14)
+    mq = el.MQBlend(c)              # d defaults to Eck's 1/alpha(c)
+    assert mq.d == pytest.approx(1 / al, rel=1e-14)
+    tol = 1e-14 * np.abs(mq.matrix).sum()   # Omega_i are differences of O(|M|) terms
+    np.testing.assert_allclose(mq.basis(T), ref, rtol=0, atol=tol)
+    np.testing.assert_allclose(el.eck_omega(c, T), ref, rtol=0, atol=tol)
+    # a different d is a different basis
+    assert np.abs(el.MQBlend(c, 0.5).basis(T) - ref).max() > 1e-2
+
+
+@pytest.mark.parametrize("d", [0.5, 3.0])
+def test_figure1_bases(d):
+    """Figure 1, (c, d) = (1, 1/2) and (1, 3): the defining conditions, and the
+    Bernstein-like shape (nonnegative, h_0 decreasing, one bump for h_1)."""
+    b = el.MQBlend(1.0, d)
+    h, dh = b.basis(T), b.basis(T, derivative=1)
+    np.testing.assert_allclose(h.sum(axis=1), 1.0, atol=1e-14)
+    np.testing.assert_allclose(h[0], [1, 0, 0, 0], atol=1e-14)
+    np.testing.assert_allclose(dh[0], [-d, d, 0, 0], atol=1e-13)
+    np.testing.assert_allclose(dh[-1], [0, 0, -d, d], atol=1e-13)
+    assert h.min() > -1e-14
+    assert np.all(np.diff(h[:, 0]) < 0)
+    assert np.count_nonzero(np.diff(np.sign(np.diff(h[:, 1])))) == 1
+
+
+def test_rope_example_paper_convention():
+    """(k, d) = (0.3, 2) with the paper's k = parameter m: printed control points,
+    and the curve is C(t) = (t, sn(Kt | m = 0.3)) to rounding."""
+    b = el.EllipticBlend(m=0.3, d=2.0)
+    assert b.k == pytest.approx(np.sqrt(0.3), rel=1e-15)
+    p = np.array([[0, 0], [0, 0], [0, 1], [1, 0]], float)
+    q = b.control_points(p)
+    np.testing.assert_allclose(q, [[0, 0], [0.5, 0.856945], [0.5, 1], [1, 1]], atol=5e-7)
+    assert q[1, 1] == pytest.approx(ellipk(0.3) / 2, rel=1e-14)
+    xy = b.evaluate(q, T)
+    np.testing.assert_allclose(xy[:, 0], T, atol=1e-14)
+    np.testing.assert_allclose(xy[:, 1], ellipj(ellipk(0.3) * T, 0.3)[0], atol=1e-14)
+    np.testing.assert_allclose(b.coefficients(q), p, atol=1e-14)
+    # the paper's printed system (2.17), solved with numpy, gives the same h_0, h_1
+    K = ellipk(0.3)
+    A = np.array([[1, 1, 0, 0, 0, 0, 0, 0], [0, 0, 1, 1, 0, 0, 0, 0], [-1, -K, 0, 1, 0, 0, 0, 0],
+                  [0, 0, 0, 0, 1, 1, 0, 0], [0, 0, 0, 0, 0, 0, 1, 1], [0, 0, 0, 0, -1, -K, 0, 1],
+                  [-1, 0, K, 1, 0, 0, 0, 0], [0, 1, 1, 0, 0, 1, 1, 0]])
+    x = np.linalg.solve(A, [1, 0, 0, 0, 0, 0, -2.0, 0])
+    np.testing.assert_allclose(b.matrix[:2].ravel(), x, atol=1e-13)
+    # modulus 0.3 does not give the printed numbers
+    q_mod = el.EllipticBlend(0.3, 2.0).control_points(p)
+    assert abs(q_mod[1, 1] - 0.856945) > 0.05
+
+
+def test_bad_input():
+    with pytest.raises(el.DomainError):
+        el.EllipticBlend(1.0, 2.0)
+    with pytest.raises(el.DomainError):
+        el.EllipticBlend(m=1.2, d=2.0)
+    for k, d in [(-0.1, 2.0), (0.5, 0.0), (0.5, -1.0), (np.nan, 2.0), (0.5, np.inf)]:
+        with pytest.raises(ValueError):
+            el.EllipticBlend(k, d)
+    with pytest.raises(ValueError):
+        el.EllipticBlend(0.5, 2.0, m=0.25)
+    with pytest.raises(el.DomainError):
+        el.MQBlend(0.0, 1.0)
+    with pytest.raises(ValueError):
+        el.MQBlend(1.0, -1.0)
+    # K(k) = 2: the end conditions do not determine h_0 (singular (2.17))
+    ks = np.sqrt(brentq(lambda m: ellipk(m) - 2.0, 0.1, 0.9, xtol=1e-16))
+    with pytest.raises(el.SingularError):
+        el.EllipticBlend(ks, 2.0)
+    b = el.EllipticBlend(0.5, 2.0)
+    with pytest.raises(ValueError):
+        b.evaluate(np.zeros((3, 2)), T)
+    with pytest.raises(ValueError):
+        b.basis([0.5, np.nan])
+    with pytest.raises(ValueError):
+        b.from_points(np.zeros((4, 2)), mode="bogus")
+    with pytest.raises(el.SingularError):
+        b.from_points([[0, 0], [1, 1], [1, 1], [2, 0]])
+
+
+def test_four_picked_points():
+    pts = np.array([[0, 0], [1, 2], [3, 2.5], [4, 0]], float)
+    b = el.EllipticBlend(0.6, 2.5)
+    q = b.from_points(pts, "interpolate")
+    chord = np.concatenate([[0], np.cumsum(np.hypot(*np.diff(pts, axis=0).T))])
+    np.testing.assert_allclose(b.evaluate(q, chord / chord[-1]), pts, atol=1e-12)
+    np.testing.assert_array_equal(b.from_points(pts, "control"), pts)
+    curve = el.blend_curve(pts, k=0.6, d=2.5)
+    assert curve.nseg == 1
+    np.testing.assert_allclose(curve.q, q, atol=1e-15)
+    np.testing.assert_allclose(el.blend_curve(pts, mode="control", m=0.3).points([0, 1]),
+                               pts[[0, 3]], atol=1e-14)
+
+
+def test_composite_c1_through_points():
+    pts = np.array([[0, 0], [1, 1], [2.5, 0.5], [3, -1], [4.5, 0]], float)
+    curve = el.blend_curve(pts, k=0.5, d=2.0)
+    assert curve.nseg == 4 and curve.q.shape == (13, 2)
+    np.testing.assert_allclose(curve.points(np.arange(5.0)), pts, atol=1e-13)
+    e = 1e-9
+    for i in range(1, 4):
+        xy, dxy = curve.basis.evaluate_composite(curve.q, [i - e, i + e], derivative=True)
+        np.testing.assert_allclose(xy[0], xy[1], atol=1e-8)
+        np.testing.assert_allclose(dxy[0], dxy[1], atol=1e-7)
+
+
+def _flat_knots(bs):
+    return np.repeat(np.asarray(bs.knots, float), np.asarray(bs.mults, int))
+
+
+@pytest.mark.parametrize("tol", [1e-3, 1e-7])
+def test_to_bspline_within_tolerance(tol):
+    pytest.importorskip("libelastica.bspline")
+    from scipy.interpolate import BSpline as SciBSpline
+    b = el.EllipticBlend(m=0.3, d=2.0)
+    q = b.control_points([[0, 0], [0, 0], [0, 1], [1, 0]])
+    bs = b.to_bspline(q, tol)
+    assert bs.degree == 3 and 0 <= bs.max_deviation <= tol
+    t = np.linspace(0, 1, 4001)
+    sp = SciBSpline(_flat_knots(bs), np.asarray(bs.poles), 3)
+    err = np.hypot(*(sp(t) - b.evaluate(q, t)).T).max()
+    assert err <= bs.max_deviation * (1 + 1e-6) + 1e-15
+    # composite: the parameter runs over [0, nseg]
+    curve = el.blend_curve([[0, 0], [1, 1], [2.5, 0.5], [3, -1]], k=0.5, d=2.0, mode="control")
+    pts = np.array([[0, 0], [1, 1], [2, 0], [3, 1], [4, 0]], float)
+    comp = el.blend_curve(pts, k=0.5)
+    bs2 = comp.to_bspline(tol)
+    t2 = np.linspace(0, comp.nseg, 4001)
+    sp2 = SciBSpline(_flat_knots(bs2), np.asarray(bs2.poles), 3)
+    assert np.hypot(*(sp2(t2) - comp.points(t2)).T).max() <= tol
+    assert curve.to_bspline(tol).max_deviation <= tol
