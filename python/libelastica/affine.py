@@ -1,0 +1,376 @@
+"""Affine arc-length polylines and curvature-continuous quadratic B-splines (seed 002).
+
+A polyline x_0..x_N with A_i = det(x_i - x_{i-1}, x_{i+1} - x_i) constant is an
+*affine arc-length polyline*; exactly then the uniform quadratic B-spline with
+that control polygon has continuous curvature (G2). This module wraps
+libelastica/affine.c: polyline coordinates, discrete affine curvature,
+osculating conics, Chaikin / Lane–Riesenfeld refinement, the R^n affine length,
+uniform B-splines of such polygons, and the approximation algorithm of §4
+(:func:`affine_polyline`) for a :class:`SmoothElastica` or point data.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Optional, Sequence, Union
+
+import numpy as np
+
+from ._ffi import as_points, bspline_from_c, check, dptr, ffi, lib
+
+__all__ = ["affine_coords", "affine_length", "affine_curvature", "osculating_conics",
+           "OsculatingConics", "chaikin", "lane_riesenfeld", "affine_elements",
+           "uniform_bspline", "quadratic_bspline", "parabolic_lengths", "AffinePolyline",
+           "affine_polyline", "affine_curvature_exact", "elastica_affine_curvature",
+           "elastica_inflections"]
+
+_KINDS = {"outer": 0, "inner": 1, "middle": 2}
+
+
+def _pts(points, minimum: int, dim: int = 2) -> np.ndarray:
+    arr = as_points(points, "polyline", dim)
+    if len(arr) < minimum:
+        raise ValueError(f"polyline needs at least {minimum} vertices, got {len(arr)}")
+    return arr
+
+
+def affine_coords(polyline) -> tuple[np.ndarray, np.ndarray]:
+    """Affine polyline coordinates (1): A_i = det(v_{i-1}, v_i) (i = 1..N-1) and
+    B_i = det(v_{i-1}, v_{i+1}) (i = 1..N-2), v_i = x_{i+1} - x_i."""
+    x = _pts(polyline, 3)
+    A = np.empty(len(x) - 2)
+    B = np.empty(max(len(x) - 3, 0))
+    check(lib.el_affine_coords(len(x), dptr(x), dptr(A), dptr(B) if len(B) else ffi.NULL),
+          "affine_coords")
+    return A, B
+
+
+def affine_length(polyline) -> float:
+    """Affine length L2 = sum cbrt(A_i) (3)."""
+    x = _pts(polyline, 3)
+    out = ffi.new("double *")
+    check(lib.el_affine_length(len(x), dptr(x), out), "affine_length")
+    return float(out[0])
+
+
+def affine_curvature(polyline) -> np.ndarray:
+    """Discrete affine curvatures k_i = det(n_i, n_{i+1}) / A (4), i = 1..N-2
+    (= 2 - B_i / A on an affine arc-length polyline; A = (A_i + A_{i+1})/2 otherwise)."""
+    x = _pts(polyline, 4)
+    k = np.empty(len(x) - 3)
+    check(lib.el_affine_curvature(len(x), dptr(x), dptr(k)), "affine_curvature")
+    return k
+
+
+@dataclass
+class OsculatingConics:
+    """Discrete osculating conics (Theorem 2) of the quadruples x_{i-1}..x_{i+2}.
+
+    coef[i] = (a, b, c, d, e, f) of a x^2 + b x y + c y^2 + d x + e y + f = 0;
+    type +1 ellipse / 0 parabola / -1 hyperbola; center = affine evolute point (5);
+    kappa = smooth affine curvature (7)."""
+    kind: str
+    type: np.ndarray
+    center: np.ndarray
+    coef: np.ndarray
+    kappa: np.ndarray
+
+
+def osculating_conics(polyline, kind: str = "middle") -> OsculatingConics:
+    """The outer, inner or middle osculating conics of an affine arc-length polyline."""
+    if kind not in _KINDS:
+        raise ValueError(f"kind must be one of {sorted(_KINDS)}, got {kind!r}")
+    x = _pts(polyline, 4)
+    m = len(x) - 3
+    out = ffi.new("el_affine_conic[]", m)
+    check(lib.el_affine_osculating_conics(len(x), dptr(x), _KINDS[kind], out), "osculating_conics")
+    return OsculatingConics(kind=kind,
+                            type=np.array([out[i].type for i in range(m)]),
+                            center=np.array([[out[i].center[0], out[i].center[1]] for i in range(m)]),
+                            coef=np.array([[out[i].coef[j] for j in range(6)] for i in range(m)]),
+                            kappa=np.array([out[i].kappa for i in range(m)]))
+
+
+def chaikin(polyline, iterations: int = 1) -> np.ndarray:
+    """Chaikin subdivision (§2.5), `iterations` times; keeps L2, maps A to A/8."""
+    x = _pts(polyline, 2)
+    for _ in range(int(iterations)):
+        y = np.empty((2 * (len(x) - 1), 2))
+        check(lib.el_affine_chaikin(len(x), dptr(x), dptr(y)), "chaikin")
+        x = y
+    return x
+
+
+def lane_riesenfeld(points, degree: int) -> np.ndarray:
+    """Degree-n Lane–Riesenfeld refinement mu^n(x0,x0,x1,x1,...) of points (N+1, dim)
+    (Theorem 5); returns 2(N+1) - degree points."""
+    x = np.ascontiguousarray(points, dtype=np.float64)
+    if x.ndim != 2 or x.shape[1] < 1:
+        raise ValueError("points must have shape (n, dim)")
+    dim = x.shape[1]
+    if degree < 1 or 2 * len(x) <= degree:
+        raise ValueError("need degree >= 1 and 2 * len(points) > degree")
+    y = np.empty((2 * len(x) - degree, dim))
+    check(lib.el_affine_lane_riesenfeld(dim, int(degree), len(x), dptr(x), dptr(y)), "lane_riesenfeld")
+    return y
+
+
+def affine_elements(points) -> tuple[np.ndarray, float]:
+    """Affine length elements in R^n (Definition 3): D_i = det(dx_i..dx_{i+n-1}) and the
+    total affine length L_n = sum sign(D_i)|D_i|^(2/(n(n+1))) (8). points: (N+1, n), n >= 2."""
+    x = np.ascontiguousarray(points, dtype=np.float64)
+    if x.ndim != 2 or x.shape[1] < 2 or len(x) < x.shape[1] + 1:
+        raise ValueError("points must have shape (N+1, n) with n >= 2 and N >= n")
+    n = x.shape[1]
+    D = np.empty(len(x) - n)
+    L = ffi.new("double *")
+    check(lib.el_affine_elements_nd(n, len(x), dptr(x), dptr(D), L), "affine_elements")
+    return D, float(L[0])
+
+
+def uniform_bspline(points, degree: Optional[int] = None, clamped: bool = True):
+    """The uniform B-spline of degree `degree` (default: the dimension, Theorem 4) with
+    control polygon `points` (N+1, dim). clamped=True: the same curve as clamped
+    B-spline (knots 0..N+1-degree, end multiplicities degree+1); clamped=False: poles
+    = points, knots 0..N+degree+1 (all simple). Returns a BSpline."""
+    x = np.ascontiguousarray(points, dtype=np.float64)
+    if x.ndim != 2:
+        raise ValueError("points must have shape (n, dim)")
+    deg = x.shape[1] if degree is None else int(degree)
+    b = ffi.new("el_bspline *")
+    check(lib.el_affine_uniform_bspline(x.shape[1], deg, len(x), dptr(x), int(bool(clamped)), b),
+          "uniform_bspline")
+    return bspline_from_c(b)
+
+
+def quadratic_bspline(polyline, clamped: bool = True):
+    """The uniform quadratic B-spline with control polygon `polyline` (seed 002 §2.5);
+    curvature continuous (G2) iff the polyline is an affine arc-length polyline.
+    clamped=True (default): the curve from (x0+x1)/2 to (x_{N-1}+x_N)/2 as a clamped
+    B-spline, poles (x0+x1)/2, x1, ..., x_{N-1}, (x_{N-1}+x_N)/2, knots 0..N-1;
+    clamped=False: poles = polyline, knots 0..N+3, all simple (range [2, N+1])."""
+    x = _pts(getattr(polyline, "points", polyline), 3)
+    b = ffi.new("el_bspline *")
+    check(lib.el_affine_quadratic_bspline(len(x), dptr(x), int(bool(clamped)), b), "quadratic_bspline")
+    return bspline_from_c(b)
+
+
+def parabolic_lengths(samples) -> np.ndarray:
+    """Signed affine lengths (15) of the parabolic arcs of the replacement curve (§4.2)."""
+    p = _pts(samples, 3)
+    S = np.empty(len(p) - 1)
+    check(lib.el_affine_parabolic_lengths(len(p), dptr(p), dptr(S)), "parabolic_lengths")
+    return S
+
+
+# ------------------------------------------------------------------ exact affine curvature
+
+def affine_curvature_exact(kappa, dkappa, ddkappa) -> np.ndarray:
+    """Smooth affine curvature of a planar curve from its Euclidean curvature and its
+    arc-length derivatives: k = kappa^(4/3) - (5/9) kappa^(-8/3) kappa'^2
+    + (1/3) kappa^(-5/3) kappa'' (real cube roots; needs kappa != 0)."""
+    kappa, dkappa, ddkappa = (np.asarray(a, dtype=np.float64) for a in (kappa, dkappa, ddkappa))
+    c = np.cbrt(kappa)
+    return c ** 4 - (5.0 / 9.0) * dkappa ** 2 / c ** 8 + ddkappa / (3.0 * c ** 5)
+
+
+def _jacobi(u: float, k: float):
+    val = ffi.new("el_jacobi *")
+    check(lib.el_jacobi_eval(float(u), float(k), val, ffi.NULL, ffi.NULL), "jacobi")
+    return val.sn, val.cn, val.dn
+
+
+def elastica_affine_curvature(curve, s) -> np.ndarray:
+    """Exact affine curvature of a SmoothElastica at arc lengths s, from
+    kappa = 2k sqrt(mu) cn u, kappa' = -2k mu sn dn, kappa'' = -2k mu^(3/2) cn (dn^2 - k^2 sn^2)."""
+    s = np.atleast_1d(np.asarray(s, dtype=np.float64))
+    k, mu = curve.k, curve.mu
+    rm = math.sqrt(mu)
+    out = np.empty((3, len(s)))
+    for i, si in enumerate(s):
+        sn, cn, dn = _jacobi(rm * si + curve.q, k)
+        out[:, i] = (2 * k * rm * cn, -2 * k * mu * sn * dn, -2 * k * mu * rm * cn * (dn * dn - k * k * sn * sn))
+    return affine_curvature_exact(*out)
+
+
+def _ellipk(k: float) -> float:
+    """Complete elliptic integral K(k) = pi / (2 AGM(1, sqrt(1-k^2))), 0 <= k < 1."""
+    a, b = 1.0, math.sqrt(1.0 - k * k)
+    for _ in range(60):
+        a, b = 0.5 * (a + b), math.sqrt(a * b)
+        if abs(a - b) <= 1e-16 * a:
+            break
+    return math.pi / (2.0 * a)
+
+
+def elastica_inflections(curve, margin: float = 1e-9) -> np.ndarray:
+    """Arc lengths of the inflections of a SmoothElastica in (0, length): cn(u;k) = 0,
+    u = sqrt(mu) s + q = (2j+1) K(k) for 0 < k < 1; none for k >= 1 or k = 0."""
+    k = curve.k
+    if not 0.0 < k < 1.0:
+        return np.empty(0)
+    K = _ellipk(k)
+    rm = math.sqrt(curve.mu)
+    u0, u1 = curve.q, rm * curve.length + curve.q
+    j0 = math.ceil((u0 / K - 1.0) / 2.0)
+    out = []
+    j = j0
+    while (2 * j + 1) * K < u1:
+        s = ((2 * j + 1) * K - curve.q) / rm
+        if margin * curve.length < s < (1 - margin) * curve.length:
+            out.append(s)
+        j += 1
+    return np.array(out)
+
+
+# ------------------------------------------------------------------ §4: approximation
+
+@dataclass
+class AffinePolyline:
+    """Result of :func:`affine_polyline`.
+
+    points (n+1, 2); t: parameters on the replacement curve f~ (f~(j) = sample j);
+    s: arc lengths of the vertices' foot points on the elastica (None for point data);
+    piece_start: first vertex of each inflection-free piece (+ the last vertex);
+    A: signed area constant per piece; psi: minimised sum (delta k)^2 per piece;
+    infl_param: inflections (f~ parameters); S_total: affine length of f~."""
+    points: np.ndarray
+    t: np.ndarray
+    s: Optional[np.ndarray]
+    piece_start: np.ndarray
+    A: np.ndarray
+    psi: np.ndarray
+    infl_param: np.ndarray
+    S_total: float
+
+    def quadruples(self) -> tuple[np.ndarray, np.ndarray]:
+        """Indices i of the quadruples x_{i-1}..x_{i+2} lying inside one piece, and their A."""
+        idx, areas = [], []
+        for p in range(len(self.A)):
+            a, b = self.piece_start[p], self.piece_start[p + 1]
+            for i in range(a + 1, b - 1):
+                idx.append(i)
+                areas.append(self.A[p])
+        return np.array(idx, dtype=int), np.array(areas)
+
+    def affine_curvature(self) -> tuple[np.ndarray, np.ndarray]:
+        """(i, k_i) for the quadruples inside a piece: k_i = 2 - B_i / A (4)."""
+        idx, areas = self.quadruples()
+        _, B = affine_coords(self.points)
+        return idx, 2.0 - B[idx - 1] / areas
+
+    def middle_curvature(self) -> tuple[np.ndarray, np.ndarray]:
+        """(i, k_i A^(-2/3)): the middle osculating conic's affine curvature (7), an
+        approximation of the curve's affine curvature near x_i..x_{i+1}."""
+        idx, areas = self.quadruples()
+        _, k = self.affine_curvature()
+        return idx, k / np.cbrt(areas) ** 2
+
+    def bspline(self, clamped: bool = True):
+        """The uniform quadratic B-spline of the polyline (G2 inside every piece)."""
+        return quadratic_bspline(self.points, clamped=clamped)
+
+
+def _run(samples: np.ndarray, tangents: Optional[np.ndarray], infl: Sequence[int], n: int,
+         split: bool, skip: int, max_iter: int, skip_frac: float = 0.0, fit_ends: bool = False,
+         optimise: bool = True):
+    opt = ffi.new("el_affine_options *")
+    lib.el_affine_options_defaults(opt)
+    opt.split_inflections = int(bool(split))
+    opt.skip = int(skip)
+    opt.skip_frac = float(skip_frac)
+    opt.fit_ends = int(bool(fit_ends))
+    opt.optimise = int(bool(optimise))
+    opt.max_iter = int(max_iter)
+    res = ffi.new("el_affine_result *")
+    infl_arr = ffi.new("size_t[]", [int(i) for i in infl]) if len(infl) else ffi.NULL
+    tan = dptr(tangents) if tangents is not None else ffi.NULL
+    check(lib.el_affine_polyline(len(samples), dptr(samples), tan, len(infl), infl_arr, int(n), opt,
+                                 res),
+          "affine_polyline")
+    try:
+        m = res.npts
+        pts = np.frombuffer(ffi.buffer(res.xy, 16 * m), dtype=np.float64).reshape(m, 2).copy()
+        t = np.frombuffer(ffi.buffer(res.t, 8 * m), dtype=np.float64).copy()
+        np_ = res.npieces
+        ps = np.array([res.piece_start[i] for i in range(np_ + 1)], dtype=int)
+        A = np.array([res.A[i] for i in range(np_)])
+        psi = np.array([res.psi[i] for i in range(np_)])
+        ip = np.array([res.infl_param[i] for i in range(np_ - 1)])
+        S = float(res.S_total)
+    finally:
+        lib.el_affine_result_free(res)
+    return pts, t, ps, A, psi, ip, S
+
+
+def affine_polyline(curve_or_points, n: int, samples_per_vertex: int = 20,
+                    split_inflections: bool = True, skip: int = 2, max_iter: int = 100,
+                    inflections: Optional[Sequence[int]] = None, exact_tangents: bool = True,
+                    tangents=None, skip_frac: float = 0.0, fit_ends: bool = False,
+                    optimise: bool = True) -> AffinePolyline:
+    """Approximate a curve by an affine arc-length polyline with n edges (n+1 vertices),
+    seed 002 §4: parabolic replacement curve, A = (S/n)^3 from (15), line intersections,
+    golden-section search on t1 minimising sum (delta k_i)^2, and (§4.4) one piece per
+    inflection-free part with its own A, skipping max(skip, ceil(skip_frac * piece edges))
+    vertices next to each inflection (skip_frac > 0 keeps k_i A^(-2/3) converging as n grows).
+    fit_ends=True adjusts each piece's A until its last vertex lands on the inflection / the
+    curve's end (§4.4 "redone with adjusted A"); by default A = (S/n)^3 as in the paper.
+    optimise=False keeps t1 at its start value (the simple construction, for comparison).
+
+    curve_or_points: a SmoothElastica (sampled with samples_per_vertex * n arcs, its
+    inflections taken exactly from the parameters and made sample points) or point data
+    (N+1, 2) (the samples themselves; about 20 per vertex wanted; `inflections` optionally
+    gives their sample indices, otherwise they are detected).
+    The replacement curve's tangents: the paper's p_{j+1} - p_{j-1}, or for an elastica with
+    exact_tangents=True (default) its exact tangents, or for points the given `tangents`
+    (N+1, 2): its deviation is then O(h^4) instead of O(h^3), which the k_i A^(-2/3) of
+    fine polylines need (their error grows like h^3/H^4 otherwise). Raises ValueError /
+    DomainError (inflection with split_inflections=False, n too small) on bad input."""
+    n = int(n)
+    if n < 3:
+        raise ValueError(f"n must be >= 3, got {n}")
+    if hasattr(curve_or_points, "curvature") and hasattr(curve_or_points, "length"):
+        c = curve_or_points
+        if not c.length > 0:
+            raise ValueError("the elastica has zero length")
+        infl_s = elastica_inflections(c)
+        if len(infl_s) and not split_inflections:
+            from ._ffi import DomainError
+            raise DomainError(lib.EL_EDOM, "affine_polyline: the elastica has an inflection")
+        bounds = np.concatenate([[0.0], infl_s, [c.length]])
+        total = max(int(samples_per_vertex) * n, 4 * (len(bounds) - 1))
+        lens = np.diff(bounds)
+        counts = np.maximum(3, np.round(total * lens / c.length).astype(int))
+        s_parts, idx = [], []
+        start = 0
+        for p in range(len(lens)):
+            seg = np.linspace(bounds[p], bounds[p + 1], counts[p] + 1)
+            s_parts.append(seg if p == 0 else seg[1:])
+            start += counts[p]
+            if p + 1 < len(lens):
+                idx.append(start)
+        s_samp = np.concatenate(s_parts)
+        samples = np.ascontiguousarray(c.points(s_samp))
+        tangents = None
+        if exact_tangents:
+            theta = c.angle(s_samp)
+            tangents = np.ascontiguousarray(np.c_[np.cos(theta), np.sin(theta)])
+        pts, t, ps, A, psi, ip, S = _run(samples, tangents, idx, n, split_inflections, skip,
+                                         max_iter, skip_frac, fit_ends, optimise)
+        j = np.clip(np.floor(t).astype(int), 0, len(s_samp) - 2)
+        s = s_samp[j] + (t - j) * (s_samp[j + 1] - s_samp[j])
+        for _ in range(3):   # project the vertices onto the elastica (Newton on the foot point)
+            th = c.angle(s)
+            s = s + np.einsum("ij,ij->i", pts - c.points(s), np.c_[np.cos(th), np.sin(th)])
+        return AffinePolyline(pts, t, s, ps, A, psi, ip, S)
+    samples = as_points(curve_or_points, "points")
+    if len(samples) < 4:
+        raise ValueError(f"need at least 4 points, got {len(samples)}")
+    tan = None
+    if tangents is not None:
+        tan = as_points(tangents, "tangents")
+        if len(tan) != len(samples):
+            raise ValueError("tangents must have one row per sample")
+    pts, t, ps, A, psi, ip, S = _run(samples, tan, list(inflections or []), n, split_inflections,
+                                     skip, max_iter, skip_frac, fit_ends, optimise)
+    return AffinePolyline(pts, t, None, ps, A, psi, ip, S)
