@@ -94,6 +94,13 @@ class SmoothElastica:
               "SmoothElastica.jacobian")
         return jac
 
+    def to_bspline(self, tol: float = 1e-6, degree: int = 3):
+        """Clamped non-rational B-spline of the given degree (3..7) within ``tol`` (absolute,
+        coordinate units) of this segment everywhere, parametrised by arc length on
+        [0, length]; the certified distance is its ``max_deviation`` (bspline.py)."""
+        from .bspline import smooth_to_bspline
+        return smooth_to_bspline(self, tol, degree)
+
 
 @dataclass
 class DiscreteElastica:

@@ -1,0 +1,876 @@
+/*
+ * B-splines: the el_bspline type (evaluation, derivatives, curvature), the
+ * natural C2 cubic interpolating a polyline, and the tolerance-certified
+ * B-spline approximation of a smooth elastica segment (issue 4).
+ *
+ * Why hand-written evaluation: GSL 2.7's gsl_bspline builds clamped knot
+ * vectors only from distinct breakpoints (no multiplicities) and evaluates
+ * scalar basis functions, not curves, so de Boor's algorithm (Piegl & Tiller,
+ * The NURBS Book, A2.1/A2.2/A3.2, derivative poles (3.8)) is written here.
+ * GSL does the linear algebra (banded Cholesky of the normal equations,
+ * tridiagonal solve) and the local maximisation (Brent).
+ *
+ * Approximation of an elastica (el_smooth_to_bspline):
+ *  - the B-spline is parametrised by the arc length s of the elastica on
+ *    [0, length], clamped, simple interior knots (C^{p-1});
+ *  - poles by linear least squares on a uniform grid of exact samples gamma(s_i)
+ *    (at least 3(p+1) in the smallest span), end poles fixed at the end points
+ *    (so both ends are interpolated);
+ *  - knots: a degree-p spline's error on a span h is about c h^{p+1}
+ *    |gamma^(p+1)|, so knots equidistribute the integral of
+ *    g = |gamma^(p+1)|^{1/(p+1)}, computed exactly from the pendulum equation
+ *    of the tangent angle (density()); the number of spans N is found by
+ *    scaling with the error ratio and bisection; then the knots of the
+ *    smallest failing N are moved by the measured span errors (correction()),
+ *    and N is lowered while that passes;
+ *  - the distance: for t in [0, L], the foot point on the elastica is
+ *    s1(t) = clamp(t + Delta), Delta = e.T / max(1 - kappa e.N, 1/2) (one
+ *    Newton step on (B(t) - gamma(s)).T(s) = 0 from s = t, e = B(t) - gamma(t)),
+ *    and d(t) = |B(t) - gamma(s1(t))|. As s1 is continuous with s1(0) = 0 and
+ *    s1(L) = L, every point of either curve is within max d of the other: max d
+ *    bounds the Hausdorff distance from above, and it is within rounding of it
+ *    because the Newton step leaves an O(|e|^2 kappa) foot-point error that
+ *    changes d only to second order; gamma(s1) comes from the Taylor expansion
+ *    at t plus a bound of its remainder (taylor_distance()), so d stays an
+ *    upper bound;
+ *  - certification (certify()): d at every grid point from the exact gamma,
+ *    theta, kappa there, then Brent (GSL) maximisation of d around the grid's
+ *    local maxima (exact evaluation at every step), largest predicted first;
+ *    reported as max_deviation (plus 16 eps (|x0| + |y0| + L) for the rounding
+ *    of the evaluations). If it exceeds tol, the search is redone with
+ *    a lower target for the sampled error, and knots are inserted as a last
+ *    resort.
+ */
+#include "internal.h"
+#include <float.h>
+#include <stdlib.h>
+#include <string.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_linalg.h>
+#include <gsl/gsl_matrix.h>
+#include <gsl/gsl_min.h>
+#include <gsl/gsl_vector.h>
+
+enum { MAXDEG_FIT = 7, MAXDEG_BASIS = 15 };
+
+/* ------------------------------------------------------------------ type */
+
+void el_bspline_free(el_bspline *b)
+{
+    if (!b) return;
+    free(b->poles);
+    free(b->knots);
+    free(b->mults);
+    memset(b, 0, sizeof *b);
+}
+
+int el_bspline_alloc(el_bspline *b, int degree, int dim, size_t npoles, size_t nknots)
+{
+    if (!b || degree < 1 || dim < 1 || nknots < 2 || npoles < (size_t)degree + 1)
+        return EL_EINVAL;
+    el_bspline t;
+    memset(&t, 0, sizeof t);
+    t.degree = degree;
+    t.dim = dim;
+    t.npoles = npoles;
+    t.nknots = nknots;
+    t.max_deviation = -1.0;
+    t.poles = calloc((size_t)dim * npoles, sizeof *t.poles);
+    t.knots = calloc(nknots, sizeof *t.knots);
+    t.mults = calloc(nknots, sizeof *t.mults);
+    if (!t.poles || !t.knots || !t.mults) {
+        el_bspline_free(&t);
+        return EL_ENOMEM;
+    }
+    *b = t;
+    return EL_OK;
+}
+
+int el_bspline_check(const el_bspline *b)
+{
+    if (!b || b->degree < 1 || b->dim < 1 || b->nknots < 2 || !b->poles || !b->knots ||
+        !b->mults || b->npoles < (size_t)b->degree + 1)
+        return EL_EINVAL;
+    size_t total = 0;
+    for (size_t i = 0; i < b->nknots; i++) {
+        const int m = b->mults[i];
+        const int mmax = (i == 0 || i + 1 == b->nknots) ? b->degree + 1 : b->degree;
+        if (m < 1 || m > mmax || !isfinite(b->knots[i])) return EL_EINVAL;
+        if (i > 0 && !(b->knots[i] > b->knots[i - 1])) return EL_EINVAL;
+        total += (size_t)m;
+    }
+    if (total != b->npoles + (size_t)b->degree + 1) return EL_EINVAL;
+    return el__all_finite(b->poles, (size_t)b->dim * b->npoles);
+}
+
+int el_bspline_flat_knots(const el_bspline *b, double *flat)
+{
+    int st = el_bspline_check(b);
+    if (st) return st;
+    if (!flat) return EL_EINVAL;
+    size_t j = 0;
+    for (size_t i = 0; i < b->nknots; i++)
+        for (int m = 0; m < b->mults[i]; m++) flat[j++] = b->knots[i];
+    return EL_OK;
+}
+
+/* ------------------------------------------------------------------ evaluation */
+
+/* Span index k with U[k] <= t < U[k+1], p <= k <= npoles-1 (t = U[npoles] gives
+ * the last span). Piegl & Tiller A2.1. */
+static size_t find_span(const double *U, size_t npoles, int p, double t)
+{
+    if (t >= U[npoles]) return npoles - 1;
+    size_t lo = (size_t)p, hi = npoles;
+    while (hi - lo > 1) {
+        size_t mid = (lo + hi) / 2;
+        if (t < U[mid]) hi = mid; else lo = mid;
+    }
+    return lo;
+}
+
+/* The p+1 non-zero basis functions N_{k-p..k}(t) on span k (A2.2), p <= 15. */
+static void basis_funs(const double *U, size_t k, int p, double t, double *N)
+{
+    double left[MAXDEG_BASIS + 1], right[MAXDEG_BASIS + 1];
+    N[0] = 1.0;
+    for (int j = 1; j <= p; j++) {
+        left[j] = t - U[k + 1 - (size_t)j];
+        right[j] = U[k + (size_t)j] - t;
+        double saved = 0.0;
+        for (int r = 0; r < j; r++) {
+            const double tmp = N[r] / (right[r + 1] + left[j - r]);
+            N[r] = saved + right[r + 1] * tmp;
+            saved = left[j - r] * tmp;
+        }
+        N[j] = saved;
+    }
+}
+
+/*
+ * Derivative of order r (0 <= r <= p) at t on span k: the level-r derivative
+ * poles P^(r)_i = (p-r+1)(P^(r-1)_{i+1} - P^(r-1)_i) / (U_{i+p+1} - U_{i+r}),
+ * i = k-p..k-r (Piegl & Tiller (3.8)/A3.3), then de Boor's algorithm of degree
+ * p-r on the knots U_{i+r}. w holds (p+1)*dim doubles.
+ */
+static void deboor_deriv(const double *U, const double *P, int p, int dim, size_t k,
+                         double t, int r, double *w, double *out)
+{
+    const size_t base = k - (size_t)p;
+    for (int j = 0; j <= p; j++)
+        memcpy(w + (size_t)j * (size_t)dim, P + (base + (size_t)j) * (size_t)dim,
+               (size_t)dim * sizeof *w);
+    for (int l = 1; l <= r; l++)           /* differencing: w[j] <- P^(l)_{base+j} */
+        for (int j = 0; j <= p - l; j++) {
+            const size_t i = base + (size_t)j;
+            const double f = (double)(p - l + 1) / (U[i + (size_t)p + 1] - U[i + (size_t)l]);
+            for (int c = 0; c < dim; c++)
+                w[(size_t)j * dim + c] = f * (w[(size_t)(j + 1) * dim + c] - w[(size_t)j * dim + c]);
+        }
+    const int d = p - r;                    /* de Boor, degree d, knots U'_i = U_{i+r} */
+    const double *V = U + r;
+    const size_t kk = k - (size_t)r, b2 = kk - (size_t)d;   /* b2 == base */
+    for (int l = 1; l <= d; l++)
+        for (int j = d; j >= l; j--) {
+            const double a0 = V[b2 + (size_t)j], a1 = V[b2 + (size_t)j + (size_t)(d - l) + 1];
+            const double alpha = (t - a0) / (a1 - a0);
+            for (int c = 0; c < dim; c++)
+                w[(size_t)j * dim + c] = (1.0 - alpha) * w[(size_t)(j - 1) * dim + c] +
+                                         alpha * w[(size_t)j * dim + c];
+        }
+    memcpy(out, w + (size_t)d * (size_t)dim, (size_t)dim * sizeof *out);
+}
+
+static size_t flat_count(const el_bspline *b) { return b->npoles + (size_t)b->degree + 1; }
+
+int el_bspline_derivative(const el_bspline *b, int order, size_t n, const double *t, double *out)
+{
+    int st = el_bspline_check(b);
+    if (st || order < 0 || (n > 0 && (!t || !out))) return EL_EINVAL;
+    if (n == 0) return EL_OK;
+    if ((st = el__all_finite(t, n))) return st;
+    const double a = b->knots[0], z = b->knots[b->nknots - 1];
+    const double slack = 1e-12 * (fabs(a) + fabs(z) + (z - a));   /* rounding of t, clamped */
+    for (size_t i = 0; i < n; i++)
+        if (t[i] < a - slack || t[i] > z + slack) return EL_EDOM;
+    const int p = b->degree, dim = b->dim;
+    if (order > p) {
+        memset(out, 0, n * (size_t)dim * sizeof *out);
+        return EL_OK;
+    }
+    double *U = malloc((flat_count(b) + (size_t)(p + 1) * (size_t)dim) * sizeof *U);
+    if (!U) return EL_ENOMEM;
+    double *w = U + flat_count(b);
+    el_bspline_flat_knots(b, U);
+    for (size_t i = 0; i < n; i++) {
+        const double ti = fmin(fmax(t[i], a), z);
+        const size_t k = find_span(U, b->npoles, p, ti);
+        deboor_deriv(U, b->poles, p, dim, k, ti, order, w, out + i * (size_t)dim);
+    }
+    free(U);
+    return EL_OK;
+}
+
+int el_bspline_eval(const el_bspline *b, size_t n, const double *t, double *pts)
+{
+    return el_bspline_derivative(b, 0, n, t, pts);
+}
+
+int el_bspline_curvature(const el_bspline *b, size_t n, const double *t, double *kappa)
+{
+    int st = el_bspline_check(b);
+    if (st || b->dim != 2 || b->degree < 2 || (n > 0 && (!t || !kappa))) return EL_EINVAL;
+    if (n == 0) return EL_OK;
+    double *d = malloc(4 * n * sizeof *d);
+    if (!d) return EL_ENOMEM;
+    if ((st = el_bspline_derivative(b, 1, n, t, d)) ||
+        (st = el_bspline_derivative(b, 2, n, t, d + 2 * n))) {
+        free(d);
+        return st;
+    }
+    for (size_t i = 0; i < n && !st; i++) {
+        const double x1 = d[2 * i], y1 = d[2 * i + 1];
+        const double x2 = d[2 * n + 2 * i], y2 = d[2 * n + 2 * i + 1];
+        const double v = hypot(x1, y1);
+        if (!(v > 0.0)) st = EL_ESINGULAR;
+        else kappa[i] = (x1 * y2 - y1 * x2) / (v * v * v);
+    }
+    free(d);
+    return st;
+}
+
+/* ------------------------------------------------------------------ C2 interpolation */
+
+/*
+ * Natural cubic (B'' = 0 at both ends) with chord-length parameters
+ * u_0 = 0, u_i = u_{i-1} + |D_i - D_{i-1}|; flat knots u_0 x4, u_1..u_{n-2},
+ * u_{n-1} x4, n+2 poles, P_0 = D_0, P_{n+1} = D_{n-1}. Unknowns P_1..P_n:
+ *   B''(u_0) = 0     <=> (P_2-P_1)/(U_5-U_2) = (P_1-P_0)/(U_4-U_1),
+ *   B(u_i) = D_i     (i = 1..n-2; three non-zero basis functions),
+ *   B''(u_{n-1}) = 0 <=> (P_{n+1}-P_n)/(U_{n+4}-U_{n+1}) = (P_n-P_{n-1})/(U_{n+3}-U_n)
+ * (second-derivative poles, Piegl & Tiller (3.8)): a tridiagonal system,
+ * totally positive in its interpolation rows, solved by GSL without pivoting.
+ */
+int el_bspline_interpolate_c2(const double *xy, size_t n, el_bspline *out)
+{
+    if (!xy || !out || n < 2) return EL_EINVAL;
+    if (el__all_finite(xy, 2 * n)) return EL_EINVAL;
+    el__gsl_quiet();
+    el_bspline b;
+    int st = el_bspline_alloc(&b, 3, 2, n + 2, n);
+    if (st) return st;
+    double *U = malloc((n + 6 + 6 * n) * sizeof *U);
+    if (!U) { el_bspline_free(&b); return EL_ENOMEM; }
+    double *diag = U + n + 6, *sup = diag + n, *sub = sup + n, *rx = sub + n, *ry = rx + n,
+           *sol = ry + n;
+    b.knots[0] = 0.0;
+    for (size_t i = 1; i < n; i++) {
+        const double h = hypot(xy[2 * i] - xy[2 * i - 2], xy[2 * i + 1] - xy[2 * i - 1]);
+        b.knots[i] = b.knots[i - 1] + h;
+        if (!(b.knots[i] > b.knots[i - 1])) { st = EL_ESINGULAR; goto done; }
+    }
+    for (size_t i = 0; i < n; i++) b.mults[i] = (i == 0 || i + 1 == n) ? 4 : 1;
+    el_bspline_flat_knots(&b, U);
+    const double P0x = xy[0], P0y = xy[1], Pnx = xy[2 * n - 2], Pny = xy[2 * n - 1];
+    {   /* start row */
+        const double a = U[4] - U[1], c = U[5] - U[2];
+        diag[0] = a + c; sup[0] = -a; rx[0] = c * P0x; ry[0] = c * P0y;
+    }
+    for (size_t i = 1; i + 1 < n; i++) {   /* interpolation rows: P_i, P_{i+1}, P_{i+2} */
+        double N[4];
+        basis_funs(U, 3 + i, 3, b.knots[i], N);   /* N_{i..i+3}; N_{i+3}(u_i) = 0 */
+        sub[i - 1] = N[0]; diag[i] = N[1]; sup[i] = N[2];
+        rx[i] = xy[2 * i]; ry[i] = xy[2 * i + 1];
+    }
+    {   /* end row, unknown index n-1 holds P_n */
+        const double c = U[n + 4] - U[n + 1], d = U[n + 3] - U[n];
+        sub[n - 2] = -c; diag[n - 1] = c + d; rx[n - 1] = d * Pnx; ry[n - 1] = d * Pny;
+    }
+    gsl_vector_view vd = gsl_vector_view_array(diag, n), ve = gsl_vector_view_array(sup, n - 1),
+                    vf = gsl_vector_view_array(sub, n - 1), vs = gsl_vector_view_array(sol, n);
+    double *rhs[2] = {rx, ry};
+    for (int c = 0; c < 2; c++) {
+        gsl_vector_view vb = gsl_vector_view_array(rhs[c], n);
+        if (gsl_linalg_solve_tridiag(&vd.vector, &ve.vector, &vf.vector, &vb.vector, &vs.vector)) {
+            st = EL_ESINGULAR;
+            goto done;
+        }
+        for (size_t j = 0; j < n; j++) b.poles[2 * (j + 1) + (size_t)c] = sol[j];
+    }
+    if (el__all_finite(b.poles, 2 * (n + 2))) { st = EL_ESINGULAR; goto done; }
+    b.poles[0] = P0x; b.poles[1] = P0y;
+    b.poles[2 * (n + 1)] = Pnx; b.poles[2 * (n + 1) + 1] = Pny;
+done:
+    free(U);
+    if (st) { el_bspline_free(&b); return st; }
+    b.max_deviation = -1.0;   /* interpolates the vertices; no distance to the polyline claimed */
+    *out = b;
+    return EL_OK;
+}
+
+/* ------------------------------------------------------------------ elastica -> B-spline */
+
+typedef struct fit_ws {
+    const el_smooth_params *par;
+    int p;               /* degree */
+    double L, tol;
+    size_t M;            /* grid: M+1 samples s_i = i L / M */
+    double *s, *xy, *th, *ka;
+    double *cs;          /* cos theta, sin theta of the grid, interleaved */
+    double *Bc;          /* basis functions of the grid for the current knots, (M+1)(p+1) */
+    size_t *kc;          /* their span indices */
+    size_t cap;          /* capacity in spans */
+    double *U;           /* flat knots, cap + 2p + 1 */
+    double *AB, *bx, *by;
+    double *err;         /* per-span sampled error */
+    double *dist;        /* per-grid-point distance (certification) */
+} fit_ws;
+
+static void ws_free(fit_ws *w)
+{
+    free(w->s); free(w->xy); free(w->th); free(w->ka); free(w->cs); free(w->Bc); free(w->kc);
+    free(w->U); free(w->AB); free(w->bx); free(w->by); free(w->err); free(w->dist);
+}
+
+/* (Re)sample the exact curve on a uniform grid of M+1 points (el_smooth_eval
+ * takes the addition-theorem path for equally spaced s). */
+static int ws_grid(fit_ws *w, size_t M)
+{
+    free(w->s); free(w->xy); free(w->th); free(w->ka); free(w->dist);
+    free(w->cs); free(w->Bc); free(w->kc);
+    w->cs = malloc(2 * (M + 1) * sizeof *w->cs);
+    w->Bc = malloc((M + 1) * (size_t)(w->p + 1) * sizeof *w->Bc);
+    w->kc = malloc((M + 1) * sizeof *w->kc);
+    w->s = malloc((M + 1) * sizeof *w->s);
+    w->xy = malloc(2 * (M + 1) * sizeof *w->xy);
+    w->th = malloc((M + 1) * sizeof *w->th);
+    w->ka = malloc((M + 1) * sizeof *w->ka);
+    w->dist = malloc((M + 1) * sizeof *w->dist);
+    w->M = M;
+    if (!w->s || !w->xy || !w->th || !w->ka || !w->dist || !w->cs || !w->Bc || !w->kc)
+        return EL_ENOMEM;
+    for (size_t i = 0; i <= M; i++) w->s[i] = w->L * (double)i / (double)M;
+    w->s[M] = w->L;
+    int st = el_smooth_eval(w->par, M + 1, w->s, w->xy, w->th, w->ka);
+    for (size_t i = 0; i <= M && !st; i++) {
+        w->cs[2 * i] = cos(w->th[i]);
+        w->cs[2 * i + 1] = sin(w->th[i]);
+    }
+    return st;
+}
+
+static int ws_reserve(fit_ws *w, size_t N)
+{
+    if (N <= w->cap) return EL_OK;
+    size_t cap = N + N / 2 + 8;
+    const size_t p = (size_t)w->p;
+    double *U = realloc(w->U, (cap + 2 * p + 1) * sizeof *U);
+    if (U) w->U = U;
+    double *AB = realloc(w->AB, (cap + p) * (p + 1) * sizeof *AB);
+    if (AB) w->AB = AB;
+    double *bx = realloc(w->bx, (cap + p) * sizeof *bx);
+    if (bx) w->bx = bx;
+    double *by = realloc(w->by, (cap + p) * sizeof *by);
+    if (by) w->by = by;
+    double *err = realloc(w->err, cap * sizeof *err);
+    if (err) w->err = err;
+    if (!U || !AB || !bx || !by || !err) return EL_ENOMEM;
+    w->cap = cap;
+    return EL_OK;
+}
+
+/* Flat clamped knots from breaks[0..N] (breaks[0] = 0, breaks[N] = L). */
+static void set_knots(fit_ws *w, size_t N, const double *breaks)
+{
+    const size_t p = (size_t)w->p;
+    for (size_t i = 0; i <= p; i++) { w->U[i] = 0.0; w->U[N + p + i] = w->L; }
+    for (size_t j = 1; j < N; j++) w->U[p + j] = breaks[j];
+}
+
+/* Enough grid points in the smallest span: at least 3(p+1). */
+static int ensure_grid(fit_ws *w, size_t N, const double *breaks)
+{
+    double hmin = w->L;
+    for (size_t j = 0; j < N; j++) hmin = fmin(hmin, breaks[j + 1] - breaks[j]);
+    const double need = 3.0 * (w->p + 1) * w->L / hmin;
+    if ((double)w->M >= need) return EL_OK;
+    if (need > 4e6) return EL_EMAXITER;   /* knots finer than the arithmetic can use */
+    return ws_grid(w, (size_t)ceil(fmax(1.25 * need, 1.5 * (double)w->M)));
+}
+
+/*
+ * Least squares for the poles P_1..P_{n-2} (n = N + p), the end poles fixed at
+ * gamma(0), gamma(L): normal equations sum_i N_a(s_i) N_c(s_i), banded with p
+ * sub-diagonals, by GSL's banded Cholesky. poles: 2n.
+ */
+static int fit_poles(fit_ws *w, size_t N, double *poles)
+{
+    const int p = w->p;
+    const size_t n = N + (size_t)p, nu = n - 2, nd = ((size_t)p < nu ? (size_t)p : nu - 1) + 1;
+    const double *U = w->U;
+    memset(w->AB, 0, nu * nd * sizeof *w->AB);
+    memset(w->bx, 0, nu * sizeof *w->bx);
+    memset(w->by, 0, nu * sizeof *w->by);
+    const double x0 = w->xy[0], y0 = w->xy[1], x1 = w->xy[2 * w->M], y1 = w->xy[2 * w->M + 1];
+    size_t k = (size_t)p;
+    for (size_t i = 0; i <= w->M; i++) {
+        const double t = w->s[i];
+        while (k + 1 < n && t >= U[k + 1]) k++;
+        double *B = w->Bc + i * (size_t)(p + 1);
+        basis_funs(U, k, p, t, B);
+        w->kc[i] = k;
+        double tx = w->xy[2 * i], ty = w->xy[2 * i + 1];
+        const size_t g0 = k - (size_t)p;
+        for (int a = 0; a <= p; a++) {
+            const size_t g = g0 + (size_t)a;
+            if (g == 0) { tx -= B[a] * x0; ty -= B[a] * y0; }
+            else if (g == n - 1) { tx -= B[a] * x1; ty -= B[a] * y1; }
+        }
+        for (int a = 0; a <= p; a++) {
+            const size_t ga = g0 + (size_t)a;
+            if (ga == 0 || ga == n - 1) continue;
+            w->bx[ga - 1] += B[a] * tx;
+            w->by[ga - 1] += B[a] * ty;
+            for (int c = a; c <= p; c++) {
+                const size_t gc = g0 + (size_t)c;
+                if (gc == n - 1) continue;
+                w->AB[(ga - 1) * nd + (gc - ga)] += B[a] * B[c];
+            }
+        }
+    }
+    gsl_matrix_view A = gsl_matrix_view_array(w->AB, nu, nd);
+    if (gsl_linalg_cholesky_band_decomp(&A.matrix)) return EL_ESINGULAR;
+    gsl_vector_view vx = gsl_vector_view_array(w->bx, nu), vy = gsl_vector_view_array(w->by, nu);
+    if (gsl_linalg_cholesky_band_svx(&A.matrix, &vx.vector) ||
+        gsl_linalg_cholesky_band_svx(&A.matrix, &vy.vector))
+        return EL_ESINGULAR;
+    poles[0] = x0; poles[1] = y0;
+    poles[2 * (n - 1)] = x1; poles[2 * (n - 1) + 1] = y1;
+    for (size_t j = 0; j < nu; j++) { poles[2 * (j + 1)] = w->bx[j]; poles[2 * (j + 1) + 1] = w->by[j]; }
+    return el__all_finite(poles, 2 * n) ? EL_ESINGULAR : EL_OK;
+}
+
+/* B(t) on span k of the fit's knots. */
+static void fit_point(const fit_ws *w, const double *poles, size_t k, double t, double *P)
+{
+    double B[MAXDEG_FIT + 1];
+    basis_funs(w->U, k, w->p, t, B);
+    P[0] = P[1] = 0.0;
+    for (int a = 0; a <= w->p; a++) {
+        const size_t g = k - (size_t)w->p + (size_t)a;
+        P[0] += B[a] * poles[2 * g];
+        P[1] += B[a] * poles[2 * g + 1];
+    }
+}
+
+/* Newton step of the foot point from s = t (file comment). */
+static double foot_step(double ex, double ey, double c, double sn, double kappa)
+{
+    const double eT = ex * c + ey * sn, eN = -ex * sn + ey * c;
+    return eT / fmax(1.0 - kappa * eN, 0.5);
+}
+
+/* B at grid point i from the cached basis functions of the last fit_poles. */
+static void grid_point(const fit_ws *w, const double *poles, size_t i, double *P)
+{
+    const double *B = w->Bc + i * (size_t)(w->p + 1);
+    const size_t g0 = w->kc[i] - (size_t)w->p;
+    P[0] = P[1] = 0.0;
+    for (int a = 0; a <= w->p; a++) {
+        P[0] += B[a] * poles[2 * (g0 + (size_t)a)];
+        P[1] += B[a] * poles[2 * (g0 + (size_t)a) + 1];
+    }
+}
+
+/*
+ * d(t) = |B(t) - gamma(s1)|. gamma(s1) by Taylor from t,
+ * gamma(t) + D T + D^2/2 kappa N, plus the remainder bound |D|^3/6 max|gamma^(3)|,
+ * |gamma^(3)| = |kappa' N - kappa^2 T| <= sqrt(kappa'_max^2 + kappa_max^4) = c3 with
+ * kappa_max = 2k sqrt(mu) and kappa'_max = 2 mu min(k, 1) (|cn|, |dn| <= 1 and
+ * |sn dn| <= min(1, 1/k) by the reciprocal-modulus transformation): an upper
+ * bound of |B(t) - gamma(s1)| from exact gamma, theta, kappa at t.
+ */
+static double taylor_distance(const fit_ws *w, const double *P, const double *g, double c,
+                              double sn, double ka, double t, double c3)
+{
+    const double s1 = t + foot_step(P[0] - g[0], P[1] - g[1], c, sn, ka);
+    const double D = fmin(fmax(s1, 0.0), w->L) - t, h = 0.5 * D * D * ka;
+    const double dx = P[0] - g[0] - D * c + h * sn, dy = P[1] - g[1] - D * sn - h * c;
+    return sqrt(dx * dx + dy * dy) + fabs(D * D * D) * c3 / 6.0;
+}
+
+/* Sampled distance per span, to steer the knots (w->err); returns the largest. */
+static double fit_errors(fit_ws *w, size_t N, const double *poles)
+{
+    memset(w->err, 0, N * sizeof *w->err);
+    double emax = 0.0;
+    for (size_t i = 0; i <= w->M; i++) {
+        double P[2];
+        grid_point(w, poles, i, P);
+        const double d = taylor_distance(w, P, w->xy + 2 * i, w->cs[2 * i], w->cs[2 * i + 1],
+                                         w->ka[i], w->s[i], 0.0);
+        const size_t k = w->kc[i], j = k - (size_t)w->p;
+        if (d > w->err[j]) w->err[j] = d;
+        if (j > 0 && w->s[i] == w->U[k] && d > w->err[j - 1]) w->err[j - 1] = d;
+        if (d > emax) emax = d;
+    }
+    return emax;
+}
+
+/*
+ * Knot density from the curve itself. With psi = theta - phi the elastica is
+ * the pendulum psi'' = -mu sin psi (kappa' = -2k mu sn dn = -mu sin(theta-phi),
+ * from k sn = sin a, dn = cos a, a = psi/2). Taylor coefficients at s0 by the
+ * recurrences of automatic differentiation (S = sin psi, C = cos psi):
+ *   S_j = (1/j) sum_{m=1..j} m psi_m C_{j-m},  C_j = -(1/j) sum m psi_m S_{j-m},
+ *   (j+2)(j+1) psi_{j+2} = -mu S_j,  psi_0 = theta - phi, psi_1 = kappa;
+ * gamma' = e^{i phi} (C + i S), so |gamma^(p+1)(s0)| = p! |C_p + i S_p|. A
+ * degree-p spline's error on a span h is about c h^{p+1} |gamma^(p+1)|, so
+ * knots equidistributing the integral of g = |gamma^(p+1)|^{1/(p+1)} (plus 5 %
+ * of its mean so that no span becomes huge where it vanishes) make the span
+ * errors about equal. g: M+1 values of the density, G: M+1 cumulative values
+ * (trapezoid rule).
+ */
+static void cumulate(const fit_ws *w, const double *g, const double *corr, double *G);
+
+static void density(const fit_ws *w, double *g, double *G)
+{
+    const int p = w->p;
+    double fact = 1.0;
+    for (int j = 2; j <= p; j++) fact *= j;
+    for (size_t i = 0; i <= w->M; i++) {
+        double psi[MAXDEG_FIT + 2], S[MAXDEG_FIT + 2], C[MAXDEG_FIT + 2];
+        psi[0] = w->th[i] - w->par->phi;
+        psi[1] = w->ka[i];
+        S[0] = sin(psi[0]);
+        C[0] = cos(psi[0]);
+        for (int j = 1; j <= p; j++) {
+            if (j + 1 <= p) psi[j + 1] = -w->par->mu * S[j - 1] / ((double)(j + 1) * j);
+            double sa = 0.0, ca = 0.0;
+            for (int m = 1; m <= j; m++) {
+                sa += m * psi[m] * C[j - m];
+                ca -= m * psi[m] * S[j - m];
+            }
+            S[j] = sa / j;
+            C[j] = ca / j;
+        }
+        const double d = fact * sqrt(C[p] * C[p] + S[p] * S[p]);
+        g[i] = p == 3 ? sqrt(sqrt(d)) : pow(d, 1.0 / (p + 1));
+    }
+    double mean = 0.0;
+    for (size_t i = 0; i <= w->M; i++) mean += g[i];
+    mean /= (double)(w->M + 1);
+    for (size_t i = 0; i <= w->M; i++) g[i] = mean > 0.0 ? g[i] + 0.05 * mean : 1.0;   /* 0: a line */
+    cumulate(w, g, NULL, G);
+}
+
+/* G = cumulative integral of g, times corr[span of grid point i] when corr is
+ * given (the spans of the last fit: w->kc). */
+static void cumulate(const fit_ws *w, const double *g, const double *corr, double *G)
+{
+    const double h = w->L / (double)w->M;
+    double acc = 0.0, prev = g[0] * (corr ? corr[w->kc[0] - (size_t)w->p] : 1.0);
+    G[0] = 0.0;
+    for (size_t i = 1; i <= w->M; i++) {
+        const double gi = g[i] * (corr ? corr[w->kc[i] - (size_t)w->p] : 1.0);
+        acc += 0.5 * (prev + gi) * h;
+        prev = gi;
+        G[i] = acc;
+    }
+}
+
+/*
+ * Correction of the density by the last fit's span errors: the density of span
+ * j is multiplied by (e_j / mean e)^{1/(p+1)}, clamped to [1/2, 2], so that
+ * equidistribution moves knots towards the spans with the larger errors.
+ */
+static void correction(const fit_ws *w, size_t N, double *corr)
+{
+    const double ex = 1.0 / (w->p + 1);
+    double mean = 0.0;
+    for (size_t j = 0; j < N; j++) mean += pow(w->err[j], ex);
+    mean /= (double)N;
+    for (size_t j = 0; j < N; j++)
+        corr[j] = mean > 0.0 ? fmin(fmax(pow(w->err[j], ex) / mean, 0.5), 2.0) : 1.0;
+}
+
+/* breaks[0..N] equidistributing G on the grid; EL_ESINGULAR if two coincide. */
+static int breaks_for(const fit_ws *w, const double *G, size_t N, double *breaks)
+{
+    const double tot = G[w->M];
+    breaks[0] = 0.0;
+    breaks[N] = w->L;
+    size_t i = 0;
+    for (size_t j = 1; j < N; j++) {
+        const double target = tot * (double)j / (double)N;
+        while (i + 1 < w->M && G[i + 1] < target) i++;
+        const double f = fmin(fmax((target - G[i]) / (G[i + 1] - G[i]), 0.0), 1.0);
+        breaks[j] = w->s[i] + f * (w->s[i + 1] - w->s[i]);
+        if (!(breaks[j] > breaks[j - 1])) return EL_ESINGULAR;
+    }
+    return breaks[N] > breaks[N - 1] ? EL_OK : EL_ESINGULAR;
+}
+
+typedef struct cert_ctx {
+    fit_ws *w;
+    const double *poles;
+    size_t n;
+    double c3;
+    int status;
+} cert_ctx;
+
+static double exact_distance(cert_ctx *c, double t)
+{
+    fit_ws *w = c->w;
+    double g[2], th, ka, P[2];
+    int st = el_smooth_eval(w->par, 1, &t, g, &th, &ka);
+    if (st) { c->status = st; return 0.0; }
+    fit_point(w, c->poles, find_span(w->U, c->n, w->p, t), t, P);
+    return taylor_distance(w, P, g, cos(th), sin(th), ka, t, c->c3);
+}
+
+static double neg_distance(double t, void *ctx) { return -exact_distance(ctx, t); }
+
+typedef struct peak { size_t i; double pred; } peak;
+
+static int peak_cmp(const void *a, const void *b)
+{
+    const double x = ((const peak *)a)->pred, y = ((const peak *)b)->pred;
+    return (x < y) - (x > y);   /* descending */
+}
+
+/*
+ * Certified max distance (file comment); *worst = the t where it occurs.
+ * Grid values first (exact gamma, theta, kappa of the grid); then Brent (GSL)
+ * around the grid's local maxima, in decreasing order of their parabolic
+ * peak prediction, until the next prediction is 1 % below the best value.
+ */
+static int certify(fit_ws *w, size_t N, const double *poles, double *dmax, double *worst)
+{
+    const size_t n = N + (size_t)w->p, M = w->M;
+    const double k = w->par->k, mu = w->par->mu, kmax = 2.0 * k * sqrt(mu),
+                 k1max = 2.0 * mu * fmin(k, 1.0);
+    const double c3 = sqrt(k1max * k1max + kmax * kmax * kmax * kmax);
+    double best = 0.0, tb = 0.0;
+    for (size_t i = 0; i <= M; i++) {
+        double P[2];
+        grid_point(w, poles, i, P);
+        w->dist[i] = taylor_distance(w, P, w->xy + 2 * i, w->cs[2 * i], w->cs[2 * i + 1],
+                                     w->ka[i], w->s[i], c3);
+        if (w->dist[i] > best) { best = w->dist[i]; tb = w->s[i]; }
+    }
+    size_t np = 0;
+    for (size_t i = 1; i < M; i++)
+        if (w->dist[i] > w->dist[i - 1] && w->dist[i] > w->dist[i + 1]) np++;
+    peak *pk = malloc((np ? np : 1) * sizeof *pk);
+    if (!pk) return EL_ENOMEM;
+    np = 0;
+    for (size_t i = 1; i < M; i++) {
+        const double a = w->dist[i - 1], d = w->dist[i], c = w->dist[i + 1];
+        if (!(d > a && d > c)) continue;
+        pk[np].i = i;
+        pk[np++].pred = d + (c - a) * (c - a) / (8.0 * (2.0 * d - a - c));
+    }
+    qsort(pk, np, sizeof *pk, peak_cmp);
+    cert_ctx ctx = {w, poles, n, c3, EL_OK};
+    gsl_min_fminimizer *mz = gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent);
+    if (!mz) { free(pk); return EL_ENOMEM; }
+    gsl_function F = {neg_distance, &ctx};
+    for (size_t j = 0; j < np; j++) {
+        if (1.01 * pk[j].pred < best) break;
+        const size_t i = pk[j].i;
+        if (gsl_min_fminimizer_set_with_values(mz, &F, w->s[i], -w->dist[i], w->s[i - 1],
+                                               -w->dist[i - 1], w->s[i + 1], -w->dist[i + 1]))
+            continue;
+        for (int it = 0; it < 40; it++) {
+            if (gsl_min_fminimizer_iterate(mz) || ctx.status) break;
+            const double a = gsl_min_fminimizer_x_lower(mz), b = gsl_min_fminimizer_x_upper(mz);
+            if (gsl_min_test_interval(a, b, 1e-3 * (w->s[i + 1] - w->s[i - 1]), 0.0) != GSL_CONTINUE)
+                break;
+        }
+        if (ctx.status) break;
+        const double dm = -gsl_min_fminimizer_f_minimum(mz);
+        if (dm > best) { best = dm; tb = gsl_min_fminimizer_x_minimum(mz); }
+    }
+    gsl_min_fminimizer_free(mz);
+    free(pk);
+    if (ctx.status) return ctx.status;
+    /* rounding of the evaluations (positions of size |x0| + |y0| + L) */
+    *dmax = best + 16.0 * DBL_EPSILON * (fabs(w->par->x0) + fabs(w->par->y0) + w->L);
+    *worst = tb;
+    return EL_OK;
+}
+
+static int emit(const fit_ws *w, size_t N, const double *breaks, const double *poles,
+                double dev, el_bspline *out)
+{
+    const size_t n = N + (size_t)w->p;
+    el_bspline b;
+    int st = el_bspline_alloc(&b, w->p, 2, n, N + 1);
+    if (st) return st;
+    memcpy(b.poles, poles, 2 * n * sizeof *poles);
+    for (size_t j = 0; j <= N; j++) { b.knots[j] = breaks[j]; b.mults[j] = 1; }
+    b.knots[N] = w->L;
+    b.mults[0] = b.mults[N] = w->p + 1;
+    b.max_deviation = dev;
+    *out = b;
+    return EL_OK;
+}
+
+int el_smooth_to_bspline(const el_smooth_params *par, double tol, int degree, el_bspline *out)
+{
+    if (!out || el_smooth_check(par) || !isfinite(tol) || !(tol > 0.0) || degree < 3 ||
+        degree > MAXDEG_FIT)
+        return EL_EINVAL;
+    el__gsl_quiet();
+    const int p = degree;
+    const double L = par->length;
+    if (L == 0.0) {   /* a point: every pole there, exact */
+        el_bspline b;
+        int st = el_bspline_alloc(&b, p, 2, (size_t)p + 1, 2);
+        if (st) return st;
+        for (int i = 0; i <= p; i++) { b.poles[2 * i] = par->x0; b.poles[2 * i + 1] = par->y0; }
+        b.knots[0] = 0.0; b.knots[1] = 1.0; b.mults[0] = b.mults[1] = p + 1;
+        b.max_deviation = 0.0;
+        *out = b;
+        return EL_OK;
+    }
+    if (tol < 1e-14 * (L + fabs(par->x0) + fabs(par->y0)))
+        return EL_EDOM;   /* below what double precision resolves */
+    fit_ws w;
+    memset(&w, 0, sizeof w);
+    w.par = par; w.p = p; w.L = L; w.tol = tol;
+    double *breaks = NULL, *nb = NULL, *poles = NULL, *G = NULL;
+    double *bestbr = NULL, *corr = NULL, *Gc = NULL;
+    double dev = INFINITY, tw = 0.0;
+    int st, status = EL_OK;
+#define GROW(ptr, cnt) do { double *q_ = realloc(ptr, (cnt) * sizeof *q_); \
+        if (!q_) { st = EL_ENOMEM; goto done; } ptr = q_; } while (0)
+
+    /* a first grid for the knot density: 16 points per radian of turning at
+     * least (bound 2k sqrt(mu) L); ensure_grid refines it for the knots */
+    {
+        const double turn = 2.0 * par->k * sqrt(par->mu) * L;
+        const double M0 = fmax(16.0 * (p + 1), fmin(16.0 * ceil(turn), 1e6));
+        if ((st = ws_grid(&w, (size_t)M0))) goto done;
+    }
+    size_t Mg = 0;   /* grid size G belongs to */
+    const double ex = 1.0 / (p + 1);
+    /* the sampled error a fit must reach; lowered when the certified value
+     * (which sees the peaks between grid points) exceeds tol */
+    double accept = tol;
+    size_t N = 0;
+    for (int round = 0; round < 3; round++) {
+        /* the number of spans: scale by the error ratio, then bisect between
+         * the largest failing and the smallest passing N */
+        size_t lo_fail = 0, hi_pass = 0;   /* hi_pass = 0: none yet */
+        size_t Nlast = 0;                  /* spans of the last fit (w.err, w.kc) */
+        size_t Nmoved = 0;                 /* bestbr holds passing moved knots for Nmoved */
+        double e = 0.0;
+        for (int it = 0; it < 40; it++) {
+            if (Mg != w.M) {
+                GROW(G, 2 * (w.M + 1));
+                density(&w, G + w.M + 1, G);
+                Mg = w.M;
+            }
+            if (N == 0) {
+                double x = ceil(0.19 * G[w.M] / pow(accept, ex));
+                N = x < 1.0 ? 1 : (x > 1e5 ? 100000 : (size_t)x);
+            }
+            if ((st = ws_reserve(&w, N))) goto done;
+            GROW(breaks, N + 1);
+            if ((st = breaks_for(&w, G, N, breaks))) goto done;
+            if ((st = ensure_grid(&w, N, breaks)) == EL_EMAXITER) { st = EL_OK; break; }
+            if (st) goto done;
+            if (Mg != w.M) { it--; continue; }   /* finer grid: recompute the density, same N */
+            set_knots(&w, N, breaks);
+            GROW(poles, 2 * (N + (size_t)p));
+            if ((st = fit_poles(&w, N, poles))) goto done;
+            e = fit_errors(&w, N, poles);
+            Nlast = N;
+            if (e <= accept) { if (!hi_pass || N < hi_pass) hi_pass = N; }
+            else if (N > lo_fail) lo_fail = N;
+            if (hi_pass && hi_pass == lo_fail + 1) break;
+            size_t Nn;
+            const double r = pow(e / (0.96 * accept), ex) * (double)N;   /* aim just below */
+            if (e > accept) Nn = r > 1e5 ? 100000 : (size_t)ceil(r);
+            else Nn = (size_t)floor(r);
+            if (e > accept && Nn <= N) Nn = N + 1;
+            if (e <= accept && Nn >= N) Nn = N - 1;
+            if (Nn <= lo_fail) Nn = lo_fail + 1;
+            if (hi_pass && Nn >= hi_pass) Nn = hi_pass - 1;
+            if (Nn < 1 || Nn == N) break;
+            N = Nn;
+        }
+
+        /* fewer spans by moving knots: the density corrected by the span errors
+         * of the last fit (any N) places the knots for N = lo_fail; on success
+         * one span fewer is tried, from the new fit's errors */
+        if (hi_pass && lo_fail && Mg == w.M) {
+            size_t Nc = lo_fail;
+            int fails = 0;
+            for (int tries = 0; tries < 6 && Nc >= 1 && fails < 2; tries++) {
+                GROW(corr, Nlast);
+                GROW(Gc, w.M + 1);
+                correction(&w, Nlast, corr);
+                cumulate(&w, G + w.M + 1, corr, Gc);
+                GROW(nb, Nc + 1);
+                if ((st = ws_reserve(&w, Nc))) goto done;
+                if (breaks_for(&w, Gc, Nc, nb)) break;
+                if ((st = ensure_grid(&w, Nc, nb)) == EL_EMAXITER || Mg != w.M) { st = EL_OK; break; }
+                if (st) goto done;
+                set_knots(&w, Nc, nb);
+                GROW(poles, 2 * (Nc + (size_t)p));
+                if ((st = fit_poles(&w, Nc, poles))) goto done;
+                e = fit_errors(&w, Nc, poles);
+                Nlast = Nc;
+                if (e <= accept) {
+                    GROW(bestbr, Nc + 1);
+                    memcpy(bestbr, nb, (Nc + 1) * sizeof *nb);
+                    hi_pass = Nmoved = Nc--;
+                    fails = 1;   /* after a success, the first failure ends the search */
+                } else {
+                    fails++;
+                }
+            }
+        }
+        if (hi_pass) N = hi_pass;
+        else status = EL_EMAXITER;   /* best effort: the last N tried, certified honestly */
+        if (Mg != w.M) { GROW(G, 2 * (w.M + 1)); density(&w, G + w.M + 1, G); Mg = w.M; }
+        GROW(breaks, N + 1);
+        if ((st = ws_reserve(&w, N))) goto done;
+        if (Nmoved && Nmoved == N) memcpy(breaks, bestbr, (N + 1) * sizeof *breaks);
+        else if ((st = breaks_for(&w, G, N, breaks))) goto done;
+        if ((st = ensure_grid(&w, N, breaks))) goto done;
+        set_knots(&w, N, breaks);
+        GROW(poles, 2 * (N + (size_t)p));
+        if ((st = fit_poles(&w, N, poles))) goto done;
+        if ((st = certify(&w, N, poles, &dev, &tw))) goto done;
+        if (dev <= tol || status) break;
+        accept *= 0.995 * tol / dev;
+    }
+
+    /* last resort: split the span holding the worst point until certified */
+    for (int it = 0; dev > tol && !status; it++) {
+        if (it == 30) { status = EL_EMAXITER; break; }
+        size_t j = 0;
+        while (j + 1 < N && tw >= breaks[j + 1]) j++;
+        GROW(nb, N + 2);
+        memcpy(nb, breaks, (j + 1) * sizeof *nb);
+        nb[j + 1] = 0.5 * (breaks[j] + breaks[j + 1]);
+        memcpy(nb + j + 2, breaks + j + 1, (N - j) * sizeof *nb);
+        double *tmp = breaks; breaks = nb; nb = tmp;
+        N++;
+        if ((st = ws_reserve(&w, N)) || (st = ensure_grid(&w, N, breaks))) goto done;
+        set_knots(&w, N, breaks);
+        GROW(poles, 2 * (N + (size_t)p));
+        if ((st = fit_poles(&w, N, poles))) goto done;
+        if ((st = certify(&w, N, poles, &dev, &tw))) goto done;
+    }
+    st = emit(&w, N, breaks, poles, dev, out);
+#undef GROW
+done:
+    free(breaks); free(nb); free(poles); free(G); free(bestbr); free(corr); free(Gc);
+    ws_free(&w);
+    return st ? st : status;
+}

@@ -1,0 +1,151 @@
+"""B-splines over the C library: the BSpline type, the natural C2 cubic through
+a polyline, and the tolerance-certified B-spline of a smooth elastica."""
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from ._ffi import as_points, as_vector, bspline_from_c, check, dptr, ffi, lib
+
+
+class BSpline:
+    """A non-rational B-spline curve: degree, poles (n, dim), distinct knots with
+    multiplicities (FreeCAD/OpenCASCADE convention), and ``max_deviation``, the
+    certified distance to the curve it approximates (0 exact, -1 unknown).
+
+    The flat knot vector has n + degree + 1 entries (:meth:`flat_knots`).
+    Evaluation runs in C (de Boor); parameters outside [knots[0], knots[-1]]
+    raise :class:`libelastica.DomainError`.
+
+    >>> b = BSpline(degree=1, poles=[[0, 0], [1, 1]], knots=[0, 1], mults=[2, 2])
+    >>> b.evaluate([0.5]).tolist()
+    [[0.5, 0.5]]
+    """
+
+    def __init__(self, degree: int, poles, knots, mults, max_deviation: float = -1.0):
+        if int(degree) != degree:
+            raise ValueError(f"BSpline: degree must be an integer, got {degree}")
+        self.degree = int(degree)
+        poles = np.ascontiguousarray(poles, dtype=np.float64)
+        if poles.ndim != 2 or poles.shape[0] < 1 or poles.shape[1] < 1:
+            raise ValueError(f"BSpline: poles must have shape (n, dim), got {poles.shape}")
+        self.poles = poles
+        self.knots = as_vector(knots, "knots").copy()
+        m = np.atleast_1d(np.asarray(mults))
+        if m.ndim != 1 or m.shape != self.knots.shape or np.any(m != np.round(m)):
+            raise ValueError("BSpline: mults must be integers, one per knot")
+        self.mults = m.astype(np.int64)
+        self.max_deviation = float(max_deviation)
+        self._c()  # validates (EL_EINVAL -> ElasticaError)
+
+    # -- C view -------------------------------------------------------------
+    def _c(self):
+        """An el_bspline pointing into this object's arrays (valid while self lives)."""
+        b = ffi.new("el_bspline *")
+        self._cmults = ffi.new("int[]", [int(x) for x in self.mults])
+        b.degree = self.degree
+        b.dim = self.poles.shape[1]
+        b.npoles = self.poles.shape[0]
+        b.poles = dptr(self.poles)
+        b.nknots = len(self.knots)
+        b.knots = dptr(self.knots)
+        b.mults = self._cmults
+        b.max_deviation = self.max_deviation
+        check(lib.el_bspline_check(b), "BSpline")
+        return b
+
+    @property
+    def dim(self) -> int:
+        """Coordinates per pole."""
+        return int(self.poles.shape[1])
+
+    @property
+    def npoles(self) -> int:
+        """Number of poles."""
+        return int(self.poles.shape[0])
+
+    @property
+    def domain(self) -> tuple[float, float]:
+        """The parameter interval (first knot, last knot)."""
+        return float(self.knots[0]), float(self.knots[-1])
+
+    def flat_knots(self) -> np.ndarray:
+        """The flat knot vector, npoles + degree + 1 values (as scipy.interpolate.BSpline's t)."""
+        return np.repeat(self.knots, self.mults)
+
+    # -- evaluation -----------------------------------------------------------
+    def derivative(self, t, order: int = 1) -> np.ndarray:
+        """Derivative of the given order (0 = points) at parameters t, shape (len(t), dim)."""
+        if int(order) != order or order < 0:
+            raise ValueError(f"BSpline.derivative: order must be an integer >= 0, got {order}")
+        t = as_vector(t, "t")
+        out = np.empty((len(t), self.dim))
+        check(lib.el_bspline_derivative(self._c(), int(order), len(t), dptr(t), dptr(out)),
+              "BSpline.derivative")
+        return out
+
+    def evaluate(self, t) -> np.ndarray:
+        """Points B(t), shape (len(t), dim)."""
+        return self.derivative(t, 0)
+
+    def __call__(self, t) -> np.ndarray:
+        return self.evaluate(t)
+
+    def curvature(self, t) -> np.ndarray:
+        """Signed curvature det(B', B'')/|B'|^3 of a planar B-spline at t."""
+        t = as_vector(t, "t")
+        out = np.empty(len(t))
+        check(lib.el_bspline_curvature(self._c(), len(t), dptr(t), dptr(out)), "BSpline.curvature")
+        return out
+
+    # -- serialisation ------------------------------------------------------
+    def to_dict(self) -> dict[str, Any]:
+        """A JSON-ready dict (lists and numbers)."""
+        return {"type": "bspline", "degree": self.degree, "poles": self.poles.tolist(),
+                "knots": self.knots.tolist(), "mults": [int(m) for m in self.mults],
+                "max_deviation": self.max_deviation}
+
+    @classmethod
+    def from_dict(cls, d: dict[str, Any]) -> "BSpline":
+        """Inverse of :meth:`to_dict`."""
+        try:
+            return cls(degree=d["degree"], poles=d["poles"], knots=d["knots"], mults=d["mults"],
+                       max_deviation=d.get("max_deviation", -1.0))
+        except KeyError as exc:
+            raise ValueError(f"BSpline.from_dict: missing key {exc}") from None
+
+    def __repr__(self) -> str:
+        return (f"BSpline(degree={self.degree}, npoles={self.npoles}, dim={self.dim}, "
+                f"domain={self.domain}, max_deviation={self.max_deviation:.3g})")
+
+    def __eq__(self, other) -> bool:
+        if not isinstance(other, BSpline):
+            return NotImplemented
+        return (self.degree == other.degree and np.array_equal(self.poles, other.poles)
+                and np.array_equal(self.knots, other.knots)
+                and np.array_equal(self.mults, other.mults)
+                and self.max_deviation == other.max_deviation)
+
+
+def interpolate_c2(points) -> BSpline:
+    """The natural C2 cubic B-spline through the vertices of a polyline (n >= 2),
+    chord-length parametrised (knots at the cumulative chord lengths)."""
+    xy = as_points(points, "points")
+    b = ffi.new("el_bspline *")
+    check(lib.el_bspline_interpolate_c2(dptr(xy), len(xy), b), "interpolate_c2")
+    return bspline_from_c(b)
+
+
+def smooth_to_bspline(curve, tol: float = 1e-6, degree: int = 3) -> BSpline:
+    """Clamped degree-3..7 B-spline within ``tol`` (absolute, coordinate units) of a
+    SmoothElastica everywhere, parametrised by its arc length; the certified
+    distance is ``max_deviation``."""
+    if int(degree) != degree:
+        raise ValueError(f"to_bspline: degree must be an integer, got {degree}")
+    p = ffi.new("el_smooth_params *")
+    for name in ("x0", "y0", "phi", "mu", "k", "q", "length"):
+        setattr(p, name, float(getattr(curve, name)))
+    b = ffi.new("el_bspline *")
+    check(lib.el_smooth_to_bspline(p, float(tol), int(degree), b), "to_bspline")
+    return bspline_from_c(b)

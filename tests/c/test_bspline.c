@@ -1,0 +1,348 @@
+/* B-splines: evaluation against the Cox-de Boor recursion, derivatives,
+ * curvature, natural C2 interpolation, certified elastica approximation. */
+#include "testutil.h"
+#include <string.h>
+
+/* ---------------------------------------------------------------- helpers */
+
+/* Cox-de Boor recursion for N_{i,p}(t) on the flat knots U (0/0 = 0); the
+ * half-open convention, with the last span closed at the end of the domain. */
+static double cox_de_boor(const double *U, size_t m, int i, int p, double t)
+{
+    if (p == 0) {
+        if (U[i] <= t && t < U[i + 1]) return 1.0;
+        /* t = last knot: the last non-empty span counts */
+        if (t == U[m - 1] && U[i] < U[i + 1] && U[i + 1] == U[m - 1]) return 1.0;
+        return 0.0;
+    }
+    double v = 0.0;
+    if (U[i + p] > U[i]) v += (t - U[i]) / (U[i + p] - U[i]) * cox_de_boor(U, m, i, p - 1, t);
+    if (U[i + p + 1] > U[i + 1])
+        v += (U[i + p + 1] - t) / (U[i + p + 1] - U[i + 1]) * cox_de_boor(U, m, i + 1, p - 1, t);
+    return v;
+}
+
+/* A random valid B-spline (random knots, interior multiplicities 1..degree). */
+static void random_bspline(unsigned long long *rs, int degree, int dim, el_bspline *b)
+{
+    size_t nk = 2 + (size_t)test_uniform(rs, 0.0, 5.0);
+    int mults[8];
+    size_t total = 0;
+    for (size_t i = 0; i < nk; i++) {
+        mults[i] = (i == 0 || i + 1 == nk) ? degree + 1 : 1 + (int)test_uniform(rs, 0.0, degree);
+        total += (size_t)mults[i];
+    }
+    ck_assert_int_eq(el_bspline_alloc(b, degree, dim, total - (size_t)degree - 1, nk), EL_OK);
+    double x = test_uniform(rs, -2.0, 0.0);
+    for (size_t i = 0; i < nk; i++) {
+        b->knots[i] = x;
+        b->mults[i] = mults[i];
+        x += test_uniform(rs, 0.1, 1.5);
+    }
+    for (size_t i = 0; i < (size_t)dim * b->npoles; i++) b->poles[i] = test_uniform(rs, -3.0, 3.0);
+    ck_assert_int_eq(el_bspline_check(b), EL_OK);
+}
+
+/* ---------------------------------------------------------------- evaluation */
+
+START_TEST(test_eval_matches_cox_de_boor)
+{
+    unsigned long long rs = 0x9e3779b97f4a7c15ULL;
+    for (int degree = 1; degree <= 7; degree++)
+        for (int trial = 0; trial < 4; trial++) {
+            el_bspline b;
+            const int dim = 1 + trial % 3;
+            random_bspline(&rs, degree, dim, &b);
+            const size_t m = b.npoles + (size_t)degree + 1;
+            double U[64];
+            ck_assert_int_eq(el_bspline_flat_knots(&b, U), EL_OK);
+            const double a = b.knots[0], z = b.knots[b.nknots - 1];
+            for (int j = 0; j <= 40; j++) {
+                double t = j == 40 ? z : a + (z - a) * j / 40.0, pt[3];
+                if (j % 7 == 3) t = b.knots[j % b.nknots];   /* exactly at knots too */
+                ck_assert_int_eq(el_bspline_eval(&b, 1, &t, pt), EL_OK);
+                for (int c = 0; c < dim; c++) {
+                    double ref = 0.0;
+                    for (size_t i = 0; i < b.npoles; i++)
+                        ref += cox_de_boor(U, m, (int)i, degree, t) * b.poles[i * (size_t)dim + (size_t)c];
+                    ck_assert_close(pt[c], ref, 1e-12);
+                }
+            }
+            el_bspline_free(&b);
+            ck_assert_ptr_null(b.poles);
+        }
+}
+END_TEST
+
+START_TEST(test_derivatives_by_finite_differences)
+{
+    unsigned long long rs = 12345;
+    for (int degree = 2; degree <= 7; degree++) {
+        el_bspline b;
+        random_bspline(&rs, degree, 2, &b);
+        for (int j = 1; j < 30; j++) {
+            /* stay away from knots: derivatives jump there when mults are high */
+            double t = b.knots[0] + (b.knots[b.nknots - 1] - b.knots[0]) * (j + 0.37) / 30.5;
+            int nearknot = 0;
+            for (size_t i = 0; i < b.nknots; i++) nearknot |= fabs(t - b.knots[i]) < 1e-3;
+            if (nearknot) continue;
+            const double h = 1e-5;
+            double tt[3] = {t - h, t, t + h}, p[6], d1[2], d2[2], d3[2];
+            ck_assert_int_eq(el_bspline_eval(&b, 3, tt, p), EL_OK);
+            ck_assert_int_eq(el_bspline_derivative(&b, 1, 1, &t, d1), EL_OK);
+            ck_assert_int_eq(el_bspline_derivative(&b, 2, 1, &t, d2), EL_OK);
+            for (int c = 0; c < 2; c++) {
+                const double scale = 1.0 + fabs(d1[c]) + fabs(d2[c]);
+                ck_assert_close(d1[c], (p[4 + c] - p[c]) / (2 * h), 1e-6 * scale);
+                ck_assert_close(d2[c], (p[4 + c] - 2 * p[2 + c] + p[c]) / (h * h), 1e-3 * scale);
+            }
+            ck_assert_int_eq(el_bspline_derivative(&b, degree + 1, 1, &t, d3), EL_OK);
+            ck_assert(d3[0] == 0.0 && d3[1] == 0.0);
+        }
+        el_bspline_free(&b);
+    }
+}
+END_TEST
+
+START_TEST(test_curvature_parabola)
+{
+    /* y = x^2 as a quadratic Bezier: poles (-1,1), (0,-1), (1,1) */
+    el_bspline b;
+    ck_assert_int_eq(el_bspline_alloc(&b, 2, 2, 3, 2), EL_OK);
+    const double P[6] = {-1, 1, 0, -1, 1, 1};
+    memcpy(b.poles, P, sizeof P);
+    b.knots[0] = 0; b.knots[1] = 1; b.mults[0] = b.mults[1] = 3;
+    for (int j = 0; j <= 10; j++) {
+        double t = j / 10.0, pt[2], kappa;
+        ck_assert_int_eq(el_bspline_eval(&b, 1, &t, pt), EL_OK);
+        ck_assert_close(pt[1], pt[0] * pt[0], 1e-14);
+        ck_assert_int_eq(el_bspline_curvature(&b, 1, &t, &kappa), EL_OK);
+        ck_assert_close(kappa, 2.0 / pow(1 + 4 * pt[0] * pt[0], 1.5), 1e-12);
+    }
+    el_bspline_free(&b);
+}
+END_TEST
+
+START_TEST(test_bad_bsplines)
+{
+    el_bspline b;
+    ck_assert_int_eq(el_bspline_alloc(&b, 3, 2, 3, 2), EL_EINVAL);   /* npoles < degree+1 */
+    ck_assert_int_eq(el_bspline_alloc(NULL, 3, 2, 4, 2), EL_EINVAL);
+    ck_assert_int_eq(el_bspline_alloc(&b, 3, 2, 4, 2), EL_OK);
+    b.knots[0] = 0; b.knots[1] = 1;
+    b.mults[0] = 4; b.mults[1] = 3;                                  /* sum of mults wrong */
+    ck_assert_int_eq(el_bspline_check(&b), EL_EINVAL);
+    b.mults[1] = 4;
+    ck_assert_int_eq(el_bspline_check(&b), EL_OK);
+    double t = 1.5, pt[2] = {7, 7};
+    ck_assert_int_eq(el_bspline_eval(&b, 1, &t, pt), EL_EDOM);       /* outside the domain */
+    t = NAN;
+    ck_assert_int_eq(el_bspline_eval(&b, 1, &t, pt), EL_EINVAL);
+    ck_assert(pt[0] == 7 && pt[1] == 7);
+    t = 0.5;
+    double kappa;
+    ck_assert_int_eq(el_bspline_curvature(&b, 1, &t, &kappa), EL_ESINGULAR);  /* all poles 0 */
+    b.knots[1] = 0;                                                  /* not increasing */
+    ck_assert_int_eq(el_bspline_eval(&b, 1, &t, pt), EL_EINVAL);
+    b.knots[1] = 1;
+    b.poles[3] = INFINITY;
+    ck_assert_int_eq(el_bspline_check(&b), EL_EINVAL);
+    el_bspline_free(&b);
+    el_bspline_free(NULL);
+}
+END_TEST
+
+/* ---------------------------------------------------------------- C2 interpolation */
+
+START_TEST(test_interpolate_c2_discrete_elastica)
+{
+    el_discrete_params dp = {0.0, 0.0, 0.3, 0.2, 0.25, 0.1, 0.8};
+    enum { NV = 25 };
+    double xy[2 * NV];
+    ck_assert_int_eq(el_discrete_eval(&dp, NV, xy), EL_OK);
+    el_bspline b;
+    ck_assert_int_eq(el_bspline_interpolate_c2(xy, NV, &b), EL_OK);
+    ck_assert_int_eq((int)b.npoles, NV + 2);
+    ck_assert_int_eq((int)b.nknots, NV);
+    ck_assert_int_eq(b.degree, 3);
+    for (int i = 0; i < NV; i++) {
+        double pt[2];
+        ck_assert_int_eq(el_bspline_eval(&b, 1, &b.knots[i], pt), EL_OK);
+        ck_assert_close(pt[0], xy[2 * i], 1e-12);
+        ck_assert_close(pt[1], xy[2 * i + 1], 1e-12);
+        if (i > 0) ck_assert_close(b.knots[i] - b.knots[i - 1], 0.3, 1e-12);   /* chord length */
+    }
+    double max_jump3 = 0.0;
+    for (int i = 1; i + 1 < NV; i++) {   /* continuity of B', B'' at interior knots */
+        const double eps = 1e-7, t[2] = {b.knots[i] - eps, b.knots[i] + eps};
+        for (int order = 1; order <= 3; order++) {
+            double d[4];
+            ck_assert_int_eq(el_bspline_derivative(&b, order, 2, t, d), EL_OK);
+            const double jump = hypot(d[2] - d[0], d[3] - d[1]);
+            if (order < 3) ck_assert_msg(jump < 1e-5, "order %d jump %g at knot %d", order, jump, i);
+            else if (jump > max_jump3) max_jump3 = jump;
+        }
+    }
+    ck_assert(max_jump3 > 1e-3);   /* only C2: the third derivative jumps */
+    const double ends[2] = {b.knots[0], b.knots[NV - 1]};
+    double d2[4];
+    ck_assert_int_eq(el_bspline_derivative(&b, 2, 2, ends, d2), EL_OK);
+    for (int c = 0; c < 4; c++) ck_assert_close(d2[c], 0.0, 1e-10);   /* natural ends */
+    el_bspline_free(&b);
+}
+END_TEST
+
+START_TEST(test_interpolate_c2_bad_input)
+{
+    el_bspline b;
+    memset(&b, 0x5a, sizeof b);
+    const el_bspline untouched = b;
+    double xy[8] = {0, 0, 1, 0, 1, 0, 2, 1};
+    ck_assert_int_eq(el_bspline_interpolate_c2(xy, 1, &b), EL_EINVAL);
+    ck_assert_int_eq(el_bspline_interpolate_c2(NULL, 4, &b), EL_EINVAL);
+    ck_assert_int_eq(el_bspline_interpolate_c2(xy, 4, &b), EL_ESINGULAR);  /* repeated vertex */
+    xy[3] = NAN;
+    ck_assert_int_eq(el_bspline_interpolate_c2(xy, 4, &b), EL_EINVAL);
+    ck_assert(memcmp(&b, &untouched, sizeof b) == 0);
+    /* two vertices: the straight segment */
+    double two[4] = {0, 0, 3, 4};
+    ck_assert_int_eq(el_bspline_interpolate_c2(two, 2, &b), EL_OK);
+    double t = 2.5, pt[2];
+    ck_assert_int_eq(el_bspline_eval(&b, 1, &t, pt), EL_OK);
+    ck_assert_close(pt[0], 1.5, 1e-14);
+    ck_assert_close(pt[1], 2.0, 1e-14);
+    el_bspline_free(&b);
+}
+END_TEST
+
+/* ---------------------------------------------------------------- elastica -> B-spline */
+
+/* Independent dense measurement of the distance B-spline -> elastica: 40
+ * samples per span, foot points by Newton to convergence with exact
+ * el_smooth_eval at every step. */
+static double measure(const el_smooth_params *p, const el_bspline *b)
+{
+    const size_t n = 40 * (b->nknots - 1) + 1;
+    double *t = malloc(n * sizeof *t), *P = malloc(2 * n * sizeof *P), *s = malloc(n * sizeof *s),
+           *g = malloc(2 * n * sizeof *g), *th = malloc(n * sizeof *th), *ka = malloc(n * sizeof *ka);
+    ck_assert(t && P && s && g && th && ka);
+    for (size_t j = 0; j + 1 < b->nknots; j++)
+        for (int k = 0; k < 40; k++)
+            t[40 * j + (size_t)k] = b->knots[j] + (b->knots[j + 1] - b->knots[j]) * k / 40.0;
+    t[n - 1] = b->knots[b->nknots - 1];
+    ck_assert_int_eq(el_bspline_eval(b, n, t, P), EL_OK);
+    memcpy(s, t, n * sizeof *s);
+    for (int it = 0; it < 6; it++) {
+        ck_assert_int_eq(el_smooth_eval(p, n, s, g, th, ka), EL_OK);
+        for (size_t i = 0; i < n; i++) {
+            const double rx = P[2 * i] - g[2 * i], ry = P[2 * i + 1] - g[2 * i + 1];
+            const double f = rx * cos(th[i]) + ry * sin(th[i]);
+            const double fp = 1.0 - ka[i] * (-rx * sin(th[i]) + ry * cos(th[i]));
+            s[i] = fmin(fmax(s[i] + f / fp, 0.0), p->length);
+        }
+    }
+    ck_assert_int_eq(el_smooth_eval(p, n, s, g, NULL, NULL), EL_OK);
+    double dmax = 0.0;
+    for (size_t i = 0; i < n; i++) dmax = fmax(dmax, hypot(P[2 * i] - g[2 * i], P[2 * i + 1] - g[2 * i + 1]));
+    free(t); free(P); free(s); free(g); free(th); free(ka);
+    return dmax;
+}
+
+static const el_smooth_params CURVES[3] = {
+    {0.3, -0.2, 0.4, 1.0, 0.8, 0.3, 8.0},       /* inflectional, k < 1 */
+    {1.0, 2.0, -1.0, 2.0, 1.5, 0.2, 5.0},       /* loops, k > 1 */
+    {0.0, 0.0, 0.0, 0.7, 0.99999, -2.0, 7.0},   /* near the separatrix k = 1 */
+};
+
+START_TEST(test_smooth_to_bspline_certified)
+{
+    const el_smooth_params *p = &CURVES[_i / 3];
+    const double rel[3] = {1e-3, 1e-6, 1e-9}, tol = rel[_i % 3] * p->length;
+    el_bspline b;
+    ck_assert_int_eq(el_smooth_to_bspline(p, tol, 3, &b), EL_OK);
+    ck_assert_int_eq(el_bspline_check(&b), EL_OK);
+    ck_assert_int_eq(b.degree, 3);
+    ck_assert(b.max_deviation > 0.0 && b.max_deviation <= tol);
+    ck_assert_double_eq(b.knots[0], 0.0);
+    ck_assert_double_eq(b.knots[b.nknots - 1], p->length);
+    const double m = measure(p, &b);
+    ck_assert_msg(m <= b.max_deviation * (1 + 1e-6) + 1e-14 * p->length,
+                  "measured %g > certified %g", m, b.max_deviation);
+    ck_assert_msg(b.max_deviation <= 1.1 * m, "certified %g not within 10%% of measured %g",
+                  b.max_deviation, m);
+    el_bspline_free(&b);
+}
+END_TEST
+
+START_TEST(test_smooth_to_bspline_degrees)
+{
+    const el_smooth_params *p = &CURVES[0];
+    const double tol = 1e-6 * p->length;
+    size_t prev = (size_t)-1;
+    for (int degree = 3; degree <= 7; degree++) {
+        el_bspline b;
+        ck_assert_int_eq(el_smooth_to_bspline(p, tol, degree, &b), EL_OK);
+        ck_assert_int_eq(b.degree, degree);
+        ck_assert(b.max_deviation <= tol);
+        const double m = measure(p, &b);
+        ck_assert(m <= b.max_deviation * (1 + 1e-6) && b.max_deviation <= 1.1 * m);
+        if (degree <= 5) ck_assert_uint_lt(b.npoles, prev);   /* higher degree, fewer poles */
+        prev = b.npoles;
+        el_bspline_free(&b);
+    }
+}
+END_TEST
+
+START_TEST(test_smooth_to_bspline_bad_input)
+{
+    el_smooth_params p = CURVES[1];
+    el_bspline b;
+    memset(&b, 0x5a, sizeof b);
+    const el_bspline untouched = b;
+    ck_assert_int_eq(el_smooth_to_bspline(&p, 0.0, 3, &b), EL_EINVAL);
+    ck_assert_int_eq(el_smooth_to_bspline(&p, -1e-3, 3, &b), EL_EINVAL);
+    ck_assert_int_eq(el_smooth_to_bspline(&p, NAN, 3, &b), EL_EINVAL);
+    ck_assert_int_eq(el_smooth_to_bspline(&p, INFINITY, 3, &b), EL_EINVAL);
+    ck_assert_int_eq(el_smooth_to_bspline(&p, 1e-3, 2, &b), EL_EINVAL);
+    ck_assert_int_eq(el_smooth_to_bspline(&p, 1e-3, 8, &b), EL_EINVAL);
+    ck_assert_int_eq(el_smooth_to_bspline(NULL, 1e-3, 3, &b), EL_EINVAL);
+    ck_assert_int_eq(el_smooth_to_bspline(&p, 1e-3, 3, NULL), EL_EINVAL);
+    ck_assert_int_eq(el_smooth_to_bspline(&p, 1e-16 * p.length, 3, &b), EL_EDOM);  /* below rounding */
+    p.mu = -1.0;
+    ck_assert_int_eq(el_smooth_to_bspline(&p, 1e-3, 3, &b), EL_EINVAL);
+    ck_assert(memcmp(&b, &untouched, sizeof b) == 0);
+    /* k = 0 is a straight line: one span */
+    p = CURVES[1];
+    p.k = 0.0;
+    ck_assert_int_eq(el_smooth_to_bspline(&p, 1e-9, 3, &b), EL_OK);
+    ck_assert_int_eq((int)b.npoles, 4);
+    ck_assert(b.max_deviation <= 1e-9);
+    el_bspline_free(&b);
+    /* a zero-length segment is a point */
+    p = CURVES[1];
+    p.length = 0.0;
+    ck_assert_int_eq(el_smooth_to_bspline(&p, 1e-3, 4, &b), EL_OK);
+    ck_assert_int_eq((int)b.npoles, 5);
+    ck_assert_double_eq(b.max_deviation, 0.0);
+    ck_assert_double_eq(b.poles[8], p.x0);
+    el_bspline_free(&b);
+}
+END_TEST
+
+int main(void)
+{
+    Suite *s = suite_create("bspline");
+    TCase *tc = tcase_create("bspline");
+    tcase_set_timeout(tc, 120);
+    tcase_add_test(tc, test_eval_matches_cox_de_boor);
+    tcase_add_test(tc, test_derivatives_by_finite_differences);
+    tcase_add_test(tc, test_curvature_parabola);
+    tcase_add_test(tc, test_bad_bsplines);
+    tcase_add_test(tc, test_interpolate_c2_discrete_elastica);
+    tcase_add_test(tc, test_interpolate_c2_bad_input);
+    tcase_add_loop_test(tc, test_smooth_to_bspline_certified, 0, 9);
+    tcase_add_test(tc, test_smooth_to_bspline_degrees);
+    tcase_add_test(tc, test_smooth_to_bspline_bad_input);
+    suite_add_tcase(s, tc);
+    return test_run_suite(s);
+}

@@ -1,0 +1,218 @@
+"""B-splines: evaluation against scipy, C2 interpolation, certified elastica approximation."""
+import json
+
+import numpy as np
+import pytest
+from scipy.interpolate import BSpline as SciBSpline
+
+import libelastica as el
+from libelastica.bspline import BSpline, interpolate_c2, smooth_to_bspline
+
+CURVES = {
+    "inflectional k<1": dict(x0=0.3, y0=-0.2, phi=0.4, mu=1.0, k=0.8, q=0.3, length=8.0),
+    "loops k>1": dict(x0=1.0, y0=2.0, phi=-1.0, mu=2.0, k=1.5, q=0.2, length=5.0),
+    "near k=1": dict(x0=0.0, y0=0.0, phi=0.0, mu=0.7, k=0.99999, q=-2.0, length=7.0),
+}
+
+
+def scipy_of(b: BSpline) -> SciBSpline:
+    return SciBSpline(b.flat_knots(), b.poles, b.degree)
+
+
+def random_bspline(rng, degree, dim=2):
+    """Random knots with multiplicities (interior up to degree), random poles."""
+    nk = rng.integers(2, 7)
+    knots = np.sort(rng.uniform(-1.0, 3.0, nk))
+    mults = [degree + 1] + list(rng.integers(1, degree + 1, nk - 2)) + [degree + 1]
+    npoles = sum(mults) - degree - 1
+    return BSpline(degree, rng.normal(size=(npoles, dim)), knots, mults)
+
+
+# ---------------------------------------------------------------- evaluation
+
+@pytest.mark.parametrize("degree", [1, 2, 3, 5, 7])
+def test_eval_and_derivatives_match_scipy(degree):
+    rng = np.random.default_rng(degree)
+    for trial in range(6):
+        b = random_bspline(rng, degree, dim=int(rng.integers(1, 4)))
+        if trial % 2:   # simple interior knots: scipy differentiates every order
+            b = BSpline(degree, rng.normal(size=(len(b.knots) - 1 + degree, b.dim)), b.knots,
+                        [degree + 1] + [1] * (len(b.knots) - 2) + [degree + 1])
+        ref = scipy_of(b)
+        t = np.concatenate([rng.uniform(*b.domain, 200), b.knots])
+        scale = 1.0 + np.abs(b.poles).max()
+        assert np.allclose(b.evaluate(t), ref(t), atol=1e-12 * scale, rtol=0)
+        for order in range(1, degree + 2):
+            # interior points only: at a knot scipy and we may take different one-sided limits
+            ti = rng.uniform(*b.domain, 100)
+            d = b.derivative(ti, order)
+            if order > degree:
+                assert np.all(d == 0.0)
+                continue
+            try:
+                dr = ref.derivative(order)(ti)
+            except ValueError:  # scipy refuses orders beyond the continuity at repeated knots
+                assert trial % 2 == 0
+                continue
+            assert np.allclose(d, dr, atol=1e-9 * scale * 10.0 ** order, rtol=1e-9)
+
+
+def test_curvature_of_a_parabola():
+    # y = x^2 on [-1, 1] as a quadratic Bezier: poles (-1,1), (0,-1), (1,1)
+    b = BSpline(2, [[-1, 1], [0, -1], [1, 1]], [0.0, 1.0], [3, 3])
+    t = np.linspace(0, 1, 11)
+    x = b.evaluate(t)[:, 0]
+    assert np.allclose(b.evaluate(t)[:, 1], x ** 2, atol=1e-14)
+    assert np.allclose(b.curvature(t), 2.0 / (1 + 4 * x ** 2) ** 1.5, rtol=1e-12)
+
+
+def test_bad_bsplines_and_parameters():
+    with pytest.raises(ValueError):
+        BSpline(3, np.zeros((3, 2)), [0, 1], [4, 4])          # too few poles for the knots
+    with pytest.raises(ValueError):
+        BSpline(2, np.zeros((4, 2)), [0, 0.5, 0.5, 1], [3, 1, 1, 3])  # knots not increasing
+    with pytest.raises(ValueError):
+        BSpline(2, np.zeros((4, 2)), [0, 1], [3, 3]).evaluate(0.5)    # sum of mults
+    b = BSpline(2, np.eye(3, 2), [0, 1], [3, 3])
+    with pytest.raises(el.DomainError):
+        b.evaluate([1.5])
+    with pytest.raises(ValueError):
+        b.evaluate([np.nan])
+    with pytest.raises(ValueError):
+        BSpline(2, np.zeros((3, 3)), [0, 1], [3, 3]).curvature([0.5])  # not planar
+
+
+def test_json_round_trip():
+    b = random_bspline(np.random.default_rng(3), 3)
+    b.max_deviation = 1.5e-7
+    b2 = BSpline.from_dict(json.loads(json.dumps(b.to_dict())))
+    assert b2 == b
+    with pytest.raises(ValueError):
+        BSpline.from_dict({"degree": 3})
+
+
+# ---------------------------------------------------------------- C2 interpolation
+
+def test_c2_interpolation_of_a_discrete_elastica():
+    pts = el.DiscreteElastica(x0=0, y0=0, h=0.3, phi=0.2, z=0.25, q=0.1, k=0.8, n=25).points()
+    b = interpolate_c2(pts)
+    chord = np.concatenate([[0], np.cumsum(np.hypot(*np.diff(pts, axis=0).T))])
+    assert np.allclose(b.knots, chord, rtol=0, atol=1e-12)
+    assert np.allclose(b.evaluate(b.knots), pts, atol=1e-12)
+    eps = 1e-7
+    inner = b.knots[1:-1]
+    for order, tol in ((1, 1e-5), (2, 1e-5)):
+        left, right = b.derivative(inner - eps, order), b.derivative(inner + eps, order)
+        assert np.abs(left - right).max() < tol
+    # the third derivative does jump (a cubic spline is only C2): the test can fail
+    jump3 = np.abs(b.derivative(inner - eps, 3) - b.derivative(inner + eps, 3)).max()
+    assert jump3 > 1e-3
+    # natural end conditions
+    assert np.abs(b.derivative(b.domain, 2)).max() < 1e-10
+    assert b.max_deviation == -1.0
+    ref = scipy_of(b)
+    t = np.linspace(*b.domain, 301)
+    assert np.allclose(ref(t), b.evaluate(t), atol=1e-12)
+
+
+def test_c2_interpolation_bad_input():
+    with pytest.raises(ValueError):
+        interpolate_c2([[0, 0]])
+    with pytest.raises(el.SingularError):
+        interpolate_c2([[0, 0], [1, 0], [1, 0], [2, 1]])
+    with pytest.raises(ValueError):
+        interpolate_c2([[0, 0], [1, np.inf], [2, 1]])
+
+
+# ---------------------------------------------------------------- certified approximation
+
+def measured_distance(curve, b: BSpline) -> float:
+    """Independent Hausdorff distance: scipy evaluates the B-spline; Newton
+    projections with the exact elastica (both directions), on dense samples."""
+    spl = scipy_of(b)
+    d1, d2 = spl.derivative(1), spl.derivative(2)
+    L = curve.length
+    # B-spline -> elastica: 48 samples per span, foot points by full Newton
+    t = np.unique(np.concatenate([np.linspace(a, c, 48) for a, c in zip(b.knots[:-1], b.knots[1:])]))
+    P = spl(t)
+    s = t.copy()
+    for _ in range(4):
+        g, th, ka = curve.points(s), curve.angle(s), curve.curvature(s)
+        T = np.stack([np.cos(th), np.sin(th)], 1)
+        N = np.stack([-np.sin(th), np.cos(th)], 1)
+        r = P - g
+        s = np.clip(s + (r * T).sum(1) / (1.0 - ka * (r * N).sum(1)), 0.0, L)
+    dist_b = np.hypot(*(P - curve.points(s)).T).max()
+    # elastica -> B-spline
+    s = np.linspace(0.0, L, len(t))
+    Q = curve.points(s)
+    u = s.copy()
+    for _ in range(4):
+        r = spl(u) - Q
+        B1, B2 = d1(u), d2(u)
+        u = np.clip(u - (r * B1).sum(1) / ((B1 * B1).sum(1) + (r * B2).sum(1)), 0.0, L)
+    dist_g = np.hypot(*(spl(u) - Q).T).max()
+    return max(dist_b, dist_g)
+
+
+@pytest.mark.parametrize("name", list(CURVES))
+@pytest.mark.parametrize("rel", [1e-3, 1e-6, 1e-9])
+def test_certified_error(name, rel):
+    c = el.SmoothElastica(**CURVES[name])
+    tol = rel * c.length
+    b = c.to_bspline(tol=tol) if hasattr(c, "to_bspline") else smooth_to_bspline(c, tol)
+    assert b.degree == 3
+    assert 0 < b.max_deviation <= tol
+    m = measured_distance(c, b)
+    assert m <= b.max_deviation * (1 + 1e-6) + 1e-14 * c.length   # an upper bound ...
+    assert b.max_deviation <= 1.10 * m                              # ... within 10 %
+    # clamped, parametrised by arc length, ends interpolated
+    assert b.domain == (0.0, c.length)
+    assert np.allclose(b.evaluate([0.0, c.length]), c.points([0.0, c.length]), atol=1e-12 * c.length)
+
+
+@pytest.mark.parametrize("degree", [4, 5, 7])
+def test_higher_degrees_need_fewer_poles(degree):
+    c = el.SmoothElastica(**CURVES["inflectional k<1"])
+    tol = 1e-6 * c.length
+    b3 = smooth_to_bspline(c, tol, 3)
+    b = smooth_to_bspline(c, tol, degree)
+    assert b.degree == degree and b.max_deviation <= tol
+    assert b.npoles < b3.npoles
+    m = measured_distance(c, b)
+    assert m <= b.max_deviation * (1 + 1e-6) and b.max_deviation <= 1.1 * m
+
+
+def test_to_bspline_bad_input():
+    c = el.SmoothElastica(**CURVES["loops k>1"])
+    for tol in (0.0, -1e-3, np.nan, np.inf):
+        with pytest.raises(ValueError):
+            smooth_to_bspline(c, tol)
+    for degree in (2, 8, 0):
+        with pytest.raises(ValueError):
+            smooth_to_bspline(c, 1e-3, degree)
+
+
+# ---------------------------------------------------------------- identities the approximation relies on
+
+@pytest.mark.parametrize("k", [0.3, 0.8, 0.99999, 1.0, 1.5, 4.0])
+def test_pendulum_identity_and_third_derivative_bound(k):
+    """bspline.c uses kappa' = -mu sin(theta - phi) (knot density by Taylor series) and
+    |gamma'''| = sqrt(kappa'^2 + kappa^4) <= sqrt((2 mu min(k,1))^2 + (2k sqrt(mu))^4)
+    (remainder bound of the certified distance): check both on dense samples."""
+    mu, phi = 1.7, 0.3
+    c = el.SmoothElastica(x0=0, y0=0, phi=phi, mu=mu, k=k, q=0.4, length=12.0)
+    s = np.linspace(0, c.length, 24001)
+    ka, th = c.curvature(s), c.angle(s)
+    dka = np.gradient(ka, s, edge_order=2)
+    assert np.allclose(dka, -mu * np.sin(th - phi), atol=1e-5 * (1 + np.abs(dka).max()))
+    g3 = np.sqrt(dka ** 2 + ka ** 4)
+    bound = np.hypot(2 * mu * min(k, 1.0), (2 * k * np.sqrt(mu)) ** 2)
+    assert g3.max() <= bound * (1 + 1e-6)
+    assert g3.max() >= 0.5 * bound      # the bound is not wildly loose
+    # |gamma'''| itself by finite differences of the points
+    xy = c.points(s)
+    d3 = np.gradient(np.gradient(np.gradient(xy, s, axis=0, edge_order=2), s, axis=0,
+                                 edge_order=2), s, axis=0, edge_order=2)
+    inner = slice(10, -10)
+    assert np.allclose(np.hypot(*d3[inner].T), g3[inner], atol=1e-3 * bound)
