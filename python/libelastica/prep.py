@@ -1,0 +1,279 @@
+"""Keyline preparation (seed 000 §5.3) over the C library: PCA plane fit of a 3D
+polyline, equilateral open-polygon resampling, PCA re-normalisation of the 2D
+polygon and the RDP-style inflection estimate.
+
+Typical pipeline::
+
+    xy, frame = plane_fit(xyz)                 # 3D keyline -> x'y' plane coordinates
+    poly = resample_equilateral(xy, r)          # equilateral open polygon, segment r
+    poly2, frame2 = pca_normalize(poly)         # x''y'' coordinates
+    i = find_inflection(poly2)                  # vertex index of the inflection estimate
+    p3d = frame.to_3d(frame2.to_parent(poly2[i]))
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Tuple
+
+import numpy as np
+
+from ._ffi import DomainError, as_points, check, dptr, ffi, lib
+
+__all__ = ["Frame", "Frame2D", "Inflection", "PreparedKeyline", "plane_fit",
+           "resample_equilateral", "pca_normalize", "find_inflection", "find_inflection_info",
+           "prepare_keyline"]
+
+
+def _points(a, name: str, dim: int) -> np.ndarray:
+    """(n, dim) float64 C-contiguous; a single point (dim,) is accepted as (1, dim)."""
+    arr = np.asarray(a, dtype=np.float64)
+    if arr.ndim == 1 and arr.shape[0] == dim:
+        arr = arr[None, :]
+    return as_points(arr, name, dim)
+
+
+@dataclass(frozen=True)
+class Frame:
+    """Orthonormal frame of a PCA plane fit (seed 000 §5.3).
+
+    ``origin`` is the centroid, ``e1`` the first principal axis (x', pointing
+    from the first to the last input point), ``e3`` the plane normal (z'), with
+    ``e2 = e3 x e1``; ``eigenvalues`` of the covariance matrix, decreasing;
+    ``rms`` the root-mean-square distance of the fitted points from the plane.
+    """
+    origin: np.ndarray
+    e1: np.ndarray
+    e2: np.ndarray
+    e3: np.ndarray
+    eigenvalues: np.ndarray
+    rms: float
+
+    @property
+    def matrix(self) -> np.ndarray:
+        """(3, 3) orthogonal matrix with columns e1, e2, e3."""
+        return np.column_stack([self.e1, self.e2, self.e3])
+
+    def _c(self):
+        f = ffi.new("el_frame *")
+        for name in ("origin", "e1", "e2", "e3"):
+            v = getattr(self, name)
+            for j in range(3):
+                getattr(f, name)[j] = float(v[j])
+        return f
+
+    def to_3d(self, xy) -> np.ndarray:
+        """Map plane coordinates (n, 2) (or one point (2,)) to 3D: origin + x' e1 + y' e2."""
+        single = np.ndim(xy) == 1
+        pts = _points(xy, "xy", 2)
+        out = np.empty((pts.shape[0], 3))
+        check(lib.el_frame_to_3d(self._c(), pts.shape[0], dptr(pts), dptr(out)), "Frame.to_3d")
+        return out[0] if single else out
+
+    def project(self, xyz, return_z: bool = False):
+        """Plane coordinates (n, 2) of 3D points (n, 3); with ``return_z`` also the
+        signed distances z' (n,) from the plane."""
+        single = np.ndim(xyz) == 1
+        pts = _points(xyz, "xyz", 3)
+        xy = np.empty((pts.shape[0], 2))
+        z = np.empty(pts.shape[0])
+        check(lib.el_frame_project(self._c(), pts.shape[0], dptr(pts), dptr(xy), dptr(z)),
+              "Frame.project")
+        if single:
+            xy, z = xy[0], z[0]
+        return (xy, z) if return_z else xy
+
+
+@dataclass(frozen=True)
+class Frame2D:
+    """2D PCA frame (seed 000 §5.3, x''y''): ``origin`` the centroid, ``f1`` the
+    first principal axis with f1.x > 0, ``f2`` = f1 turned by +90 degrees
+    (so f2.y > 0), ``eigenvalues`` decreasing."""
+    origin: np.ndarray
+    f1: np.ndarray
+    f2: np.ndarray
+    eigenvalues: np.ndarray
+
+    def _c(self):
+        f = ffi.new("el_frame2d *")
+        for name in ("origin", "f1", "f2"):
+            v = getattr(self, name)
+            for j in range(2):
+                getattr(f, name)[j] = float(v[j])
+        return f
+
+    def to_local(self, xy) -> np.ndarray:
+        """Parent (x'y') coordinates -> this frame's x''y'' coordinates."""
+        single = np.ndim(xy) == 1
+        pts = _points(xy, "xy", 2)
+        out = np.empty_like(pts)
+        check(lib.el_frame2d_to_local(self._c(), pts.shape[0], dptr(pts), dptr(out)),
+              "Frame2D.to_local")
+        return out[0] if single else out
+
+    def to_parent(self, xy) -> np.ndarray:
+        """This frame's x''y'' coordinates -> parent (x'y') coordinates."""
+        single = np.ndim(xy) == 1
+        pts = _points(xy, "xy", 2)
+        out = np.empty_like(pts)
+        check(lib.el_frame2d_to_parent(self._c(), pts.shape[0], dptr(pts), dptr(out)),
+              "Frame2D.to_parent")
+        return out[0] if single else out
+
+
+def plane_fit(xyz) -> Tuple[np.ndarray, Frame]:
+    """PCA plane fit of a 3D polyline (n >= 3 points, shape (n, 3)).
+
+    Returns ``(xy, frame)``: the (n, 2) coordinates x', y' of the points
+    projected on the fitted plane, and the :class:`Frame` (``frame.to_3d(xy)``
+    maps back). Raises ValueError for bad input, SingularError if all points
+    are equal.
+    """
+    pts = as_points(xyz, "xyz", 3)
+    n = pts.shape[0]
+    f = ffi.new("el_frame *")
+    xy = np.empty((n, 2))
+    rms = ffi.new("double *")
+    check(lib.el_plane_fit(dptr(pts), n, f, dptr(xy), rms), "plane_fit")
+    frame = Frame(origin=np.array(list(f.origin)), e1=np.array(list(f.e1)),
+                  e2=np.array(list(f.e2)), e3=np.array(list(f.e3)),
+                  eigenvalues=np.array(list(getattr(f, "lambda"))),
+                  rms=float(rms[0]))
+    return xy, frame
+
+
+@dataclass(frozen=True)
+class Resampled:
+    """Details of an equilateral resampling: ``s`` the arc-length position of each
+    vertex along the input (from the start end), ``reversed`` True when the walk
+    started at the input's last point, ``remainder`` the input length left after
+    the stop point."""
+    s: np.ndarray
+    reversed: bool
+    remainder: float
+
+
+def resample_equilateral(xy, r: float, return_info: bool = False):
+    """Equilateral open polygon of segment ``r`` approximating the polyline
+    ``xy`` (n, 2), seed 000 §5.3: start at the left end (smaller x), each next
+    vertex the point of the polyline at distance r further along it (the one
+    nearest the far end when several), stop when there is none.
+
+    Returns the (m, 2) vertices; with ``return_info`` also a :class:`Resampled`.
+    Raises ValueError for r <= 0, r larger than the curve, NaN/inf, fewer than
+    2 points; SingularError if all points are equal.
+    """
+    pts = as_points(xy, "xy", 2)
+    r = float(r)
+    res = ffi.new("el_resample_result *")
+    check(lib.el_resample_equilateral(dptr(pts), pts.shape[0], r, res), "resample_equilateral")
+    try:
+        m = int(res.n)
+        out = np.frombuffer(ffi.buffer(res.xy, 16 * m), dtype=np.float64).reshape(m, 2).copy()
+        info = Resampled(s=np.frombuffer(ffi.buffer(res.s, 8 * m), dtype=np.float64).copy(),
+                         reversed=bool(res.reversed), remainder=float(res.remainder))
+    finally:
+        lib.el_resample_free(res)
+    return (out, info) if return_info else out
+
+
+def pca_normalize(xy) -> Tuple[np.ndarray, Frame2D]:
+    """PCA re-normalisation of 2D points (n >= 2, shape (n, 2)), seed 000 §5.3:
+    returns the coordinates in the frame of their centroid and first principal
+    axis (x''), and the :class:`Frame2D` (``frame.to_parent`` maps back)."""
+    pts = as_points(xy, "xy", 2)
+    f = ffi.new("el_frame2d *")
+    out = np.empty_like(pts)
+    check(lib.el_pca_normalize(dptr(pts), pts.shape[0], f, dptr(out)), "pca_normalize")
+    return out, Frame2D(origin=np.array(list(f.origin)), f1=np.array(list(f.f1)),
+                        f2=np.array(list(f.f2)), eigenvalues=np.array(list(f.mu)))
+
+
+@dataclass(frozen=True)
+class Inflection:
+    """RDP-style inflection estimate (seed 000 §5.3 steps (1)-(4)): ``index`` the
+    estimated vertex (point P+2 of step (4)), ``neighbor`` the adjacent vertex
+    (the curvature changes sign on the edge between them), ``apex`` point 3,
+    ``end`` point 2, ``iterations`` of step (3)."""
+    index: int
+    neighbor: int
+    apex: int
+    end: int
+    iterations: int
+
+
+def find_inflection_info(xy, side: int = 0) -> Inflection:
+    """Like :func:`find_inflection`, returning the full :class:`Inflection`."""
+    pts = as_points(xy, "xy", 2)
+    if side not in (-1, 0, 1):
+        raise ValueError(f"find_inflection: side must be -1, 0 or 1, got {side!r}")
+    info = ffi.new("el_inflection *")
+    check(lib.el_find_inflection(dptr(pts), pts.shape[0], int(side), info), "find_inflection")
+    return Inflection(index=int(info.index), neighbor=int(info.neighbor), apex=int(info.apex),
+                      end=int(info.end), iterations=int(info.iterations))
+
+
+def find_inflection(xy, side: int = 0) -> int:
+    """Index of the vertex estimated as the one global inflection of the open
+    polygon ``xy`` (n >= 4, best on the resampled and re-normalised polygon),
+    by the RDP-style method of seed 000 §5.3 steps (1)-(4).
+
+    ``side`` picks point 2 of step (1): +1 the last vertex, -1 the first, 0
+    automatic. Raises DomainError when the polygon shows no inflection
+    (convex, collinear, closed), ValueError for bad input.
+    """
+    return find_inflection_info(xy, side).index
+
+
+@dataclass(frozen=True)
+class PreparedKeyline:
+    """The §5.3 pipeline's result (see :func:`prepare_keyline`).
+
+    ``polygon`` (m, 2): the equilateral polygon in x''y'' coordinates (segment
+    ``r``); ``inflection``: index of the estimated inflection vertex in it, or
+    None when the polygon shows none; ``frame``: the plane fit's :class:`Frame`
+    (None for 2D input); ``frame2d``: the re-normalisation :class:`Frame2D`
+    (x'y' -> x''y''); ``rms_out_of_plane`` (0 for 2D input).
+    """
+    polygon: np.ndarray
+    inflection: "int | None"
+    r: float
+    frame: "Frame | None"
+    frame2d: Frame2D
+    rms_out_of_plane: float
+
+    def to_input(self, xy) -> np.ndarray:
+        """Map x''y'' points (n, 2) (or one point) back to the input's coordinates:
+        3D (n, 3) for 3D input, 2D (n, 2) otherwise."""
+        parent = self.frame2d.to_parent(xy)
+        return self.frame.to_3d(parent) if self.frame is not None else parent
+
+    def sides(self) -> "Tuple[np.ndarray, np.ndarray]":
+        """The two sides of the polygon, both starting at the inflection vertex:
+        (inflection -> first vertex, inflection -> last vertex). Raises
+        DomainError when there is no inflection."""
+        if self.inflection is None:
+            raise DomainError(lib.EL_EDOM, "prepare_keyline: no inflection found")
+        i = self.inflection
+        return self.polygon[i::-1].copy(), self.polygon[i:].copy()
+
+
+def prepare_keyline(points, r: float, side: int = 0) -> PreparedKeyline:
+    """Seed 000 §5.3 in one call: PCA plane fit (3D input (n, 3) only),
+    equilateral resampling with segment ``r``, PCA re-normalisation and the
+    RDP-style inflection estimate (``side`` as in :func:`find_inflection`;
+    ``inflection`` is None when the polygon shows none, e.g. a convex arc)."""
+    pts = np.asarray(points, dtype=np.float64)
+    frame, rms = None, 0.0
+    if pts.ndim == 2 and pts.shape[1] == 3:
+        xy, frame = plane_fit(pts)
+        rms = frame.rms
+    else:
+        xy = as_points(pts, "points", 2)
+    poly = resample_equilateral(xy, r)
+    poly2, f2 = pca_normalize(poly)
+    try:
+        infl = find_inflection(poly2, side) if len(poly2) >= 4 else None
+    except DomainError:
+        infl = None
+    return PreparedKeyline(polygon=poly2, inflection=infl, r=float(r), frame=frame, frame2d=f2,
+                           rms_out_of_plane=float(rms))
