@@ -154,6 +154,12 @@ class DiscreteElastica:
         check(lib.el_discrete_curvature(self._c(), self.n, dptr(out)), "DiscreteElastica")
         return out
 
+    def to_bspline(self):
+        """The C2 cubic B-spline interpolating the vertices (natural ends, chord-length
+        parameter); it passes through every vertex exactly (bspline.py)."""
+        from .bspline import interpolate_c2
+        return interpolate_c2(self.points())
+
     def jacobian(self) -> np.ndarray:
         """d gamma_i / d p, shape (n, 2, 7), p = (x0, y0, h, phi, z, q, k)."""
         jac = np.empty((self.n, 2, 7))

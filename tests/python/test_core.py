@@ -102,3 +102,11 @@ def test_parameters_are_plain_and_editable():
     c.k = 1.5   # a dataclass: FreeCAD and users edit fields directly
     assert c.curvature([0.0])[0] == pytest.approx(2 * 1.5 * math.sqrt(c.mu) * 1.0)
     assert list(c.params) == [c.x0, c.y0, c.phi, c.mu, c.k, c.q, c.length]
+
+
+def test_discrete_to_bspline_interpolates_vertices():
+    d = el.DiscreteElastica(x0=0, y0=0, h=0.1, phi=0.2, z=0.1, q=0.3, k=0.8, n=30)
+    b = d.to_bspline()
+    chord = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(d.points(), axis=0).T))])
+    assert b.degree == 3
+    assert np.allclose(b.evaluate(chord), d.points(), atol=1e-12)
