@@ -104,9 +104,14 @@ bench: all $(BENCH_BIN)
 	@for b in bench/bench_*.py; do [ -f "$$b" ] || continue; \
 	  LIBELASTICA_PATH=$(CURDIR)/$(BUILD)/libelastica.so PYTHONPATH=$(CURDIR)/python $(PYTHON) $$b; done
 
+# headless FreeCAD (freecadcmd) with a throw-away HOME; the report is printed, the full log kept
 demo: all
-	@LIBELASTICA_PATH=$(CURDIR)/$(BUILD)/libelastica.so PYTHONPATH=$(CURDIR)/python \
-	  $(SYSPYTHON) examples/demo.py
+	@rm -rf $(BUILD)/demo-home && mkdir -p $(BUILD)/demo-home out
+	@rc=0; HOME=$(CURDIR)/$(BUILD)/demo-home LIBELASTICA_PATH=$(CURDIR)/$(BUILD)/libelastica.so \
+	  PYTHONPATH=$(CURDIR)/python ELASTICA_DEMO_OUT=$(CURDIR)/out \
+	  freecadcmd $(CURDIR)/examples/demo.py > $(BUILD)/demo.log 2>&1 || rc=$$?; \
+	sed -n '/^libelastica demo/,$$p' $(BUILD)/demo.log; \
+	if [ $$rc -ne 0 ]; then cat $(BUILD)/demo.log; echo "make demo: FAILED (log $(BUILD)/demo.log)"; exit 1; fi
 
 install: lib
 	install -d $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/include

@@ -1,0 +1,47 @@
+"""Elastica workbench for FreeCAD: fit sketches and scanned keylines with Euler's
+elastica, elastic Hermite blends between edges, curvature combs, B-splines back
+into sketches. All numerics come from the libelastica Python binding.
+
+Namespace package ``freecad.elastica`` (no ``freecad/__init__.py`` here): FreeCAD
+finds it through a Mod folder holding ``freecad_wb`` (a symlink is enough).
+"""
+import os
+import sys
+
+__version__ = "0.1.0"
+
+_HERE = os.path.dirname(os.path.realpath(__file__))
+ICONPATH = os.path.join(_HERE, "resources", "icons")
+# freecad_wb/freecad/elastica -> the source tree root
+_SRC_ROOT = os.path.realpath(os.path.join(_HERE, "..", "..", ".."))
+PREF_PATH = "User parameter:BaseApp/Preferences/Mod/Elastica"
+
+
+def icon(name):
+    """Absolute path of one of the workbench's SVG icons."""
+    return os.path.join(ICONPATH, name + ".svg")
+
+
+def ensure_binding():
+    """Import libelastica: installed, or from the source tree this workbench lives in
+    (``python/`` beside ``freecad_wb/``; the binding then finds ``build/libelastica.so``
+    itself, or LIBELASTICA_PATH)."""
+    try:
+        import libelastica  # noqa: F401
+    except ImportError:
+        src = os.path.join(_SRC_ROOT, "python")
+        if os.path.isdir(os.path.join(src, "libelastica")) and src not in sys.path:
+            sys.path.append(src)
+        import libelastica  # noqa: F401,F811
+    return sys.modules["libelastica"]
+
+
+def defaults():
+    """The workbench's defaults: (tolerance mm, B-spline degree, model)."""
+    import FreeCAD as App
+    p = App.ParamGet(PREF_PATH)
+    tol = p.GetFloat("Tolerance", 0.001)
+    deg = p.GetInt("Degree", 3)
+    model = p.GetString("Model", "discrete")
+    return (tol if tol > 0 else 0.001, deg if 3 <= deg <= 7 else 3,
+            model if model in ("discrete", "smooth") else "discrete")

@@ -1,0 +1,126 @@
+"""Sample documents for the workbench tests (freecadcmd -t and the GUI smoke test).
+
+The data are elastica arcs evaluated by the library itself (an S-shaped keyline
+with one inflection), placed in a tilted sketch plane, so a correct fit must
+reproduce them closely; a few helpers build sketches, Points objects and 3D
+polylines from them.
+"""
+import math
+import os
+import sys
+
+import FreeCAD as App
+import Part
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+for p in (os.path.join(ROOT, "python"), os.path.join(ROOT, "freecad_wb")):
+    if p not in sys.path:
+        sys.path.append(p)
+
+import numpy as np  # noqa: E402
+
+import libelastica as el  # noqa: E402
+
+KEYLINE = dict(x0=0.0, y0=0.0, phi=-1.028, mu=(1.0 / 105.0) ** 2, k=0.65, q=0.25, length=330.0)
+SKETCH_PLACEMENT = App.Placement(App.Vector(40, -25, 12), App.Rotation(App.Vector(1, 0.4, 0.2), 35))
+
+
+def keyline_xy(n=40, length=None):
+    """n points on the sample S-shaped elastica (plane coordinates, mm)."""
+    p = dict(KEYLINE)
+    if length is not None:
+        p["length"] = length
+    c = el.SmoothElastica(**p)
+    return c.points(np.linspace(0.0, c.length, n)), c
+
+
+def new_doc(name):
+    for d in list(App.listDocuments().values()):
+        if d.Name == name:
+            App.closeDocument(name)
+    return App.newDocument(name)
+
+
+def bspline_sketch(doc, xy, name="KeylineSketch", placement=SKETCH_PLACEMENT):
+    """A sketch holding one interpolating B-spline through the points ``xy``."""
+    sk = doc.addObject("Sketcher::SketchObject", name)
+    sk.Placement = placement
+    c = Part.BSplineCurve()
+    c.interpolate([App.Vector(x, y, 0) for x, y in xy])
+    sk.addGeometry(c, False)
+    doc.recompute()
+    return sk
+
+
+def points_sketch(doc, xy, name="PointSketch", placement=SKETCH_PLACEMENT):
+    """A sketch holding the points ``xy`` as sketch points (vertices)."""
+    sk = doc.addObject("Sketcher::SketchObject", name)
+    sk.Placement = placement
+    for x, y in xy:
+        sk.addGeometry(Part.Point(App.Vector(x, y, 0)), False)
+    doc.recompute()
+    return sk
+
+
+def polyline_3d(doc, xy, placement=SKETCH_PLACEMENT, name="Polyline"):
+    """A Part feature holding the 3D polyline of ``xy`` in ``placement``'s plane."""
+    obj = doc.addObject("Part::Feature", name)
+    obj.Shape = Part.makePolygon([placement.multVec(App.Vector(x, y, 0)) for x, y in xy])
+    doc.recompute()
+    return obj
+
+
+def points_object(doc, xy, placement=SKETCH_PLACEMENT, name="Cloud"):
+    """A Points::Feature of ``xy`` in ``placement``'s plane (unordered: reversed halves)."""
+    import Points
+    pts = [placement.multVec(App.Vector(x, y, 0)) for x, y in xy]
+    half = len(pts) // 2
+    pts = pts[half:][::-1] + pts[:half]
+    obj = doc.addObject("Points::Feature", name)
+    obj.Points = Points.Points(pts)
+    doc.recompute()
+    return obj
+
+
+def two_lines_sketch(doc, name="Lines", placement=SKETCH_PLACEMENT):
+    """Two line segments with a gap between them: end of Edge1 -> start of Edge2."""
+    sk = doc.addObject("Sketcher::SketchObject", name)
+    sk.Placement = placement
+    sk.addGeometry(Part.LineSegment(App.Vector(0, 0, 0), App.Vector(40, 0, 0)), False)
+    sk.addGeometry(Part.LineSegment(App.Vector(80, 25, 0), App.Vector(120, 35, 0)), False)
+    doc.recompute()
+    return sk
+
+
+def arc_sketch(doc, radius=20.0, name="Arc", placement=SKETCH_PLACEMENT):
+    """A sketch with one circular arc of the given radius (a quarter turn)."""
+    sk = doc.addObject("Sketcher::SketchObject", name)
+    sk.Placement = placement
+    circ = Part.Circle(App.Vector(0, 0, 0), App.Vector(0, 0, 1), radius)
+    sk.addGeometry(Part.ArcOfCircle(circ, 0.0, math.pi / 2), False)
+    doc.recompute()
+    return sk
+
+
+def circle_sketch(doc, radius=20.0, name="Circle"):
+    """A sketch with one full circle (a closed curve)."""
+    sk = doc.addObject("Sketcher::SketchObject", name)
+    sk.addGeometry(Part.Circle(App.Vector(0, 0, 0), App.Vector(0, 0, 1), radius), False)
+    doc.recompute()
+    return sk
+
+
+def distance_to_shape(points, shape):
+    """Largest distance of 3D points from a shape."""
+    return max(shape.distToShape(Part.Vertex(App.Vector(*p)))[0] for p in points)
+
+
+def doc_state(doc):
+    """What 'the document is unchanged' compares: names, types and shapes' sizes."""
+    out = []
+    for o in doc.Objects:
+        sh = getattr(o, "Shape", None)
+        size = (len(sh.Edges), round(sh.Length, 9)) if sh is not None and not sh.isNull() else None
+        out.append((o.Name, o.TypeId, size))
+    return out

@@ -1,0 +1,44 @@
+# FreeCAD workbench tests, run by the top-level `make check-freecad`:
+#   make -f tests/freecad/freecad.mk BUILD=build
+# - every tests/freecad/test_*.py through `freecadcmd -t <module>` (its exit code and
+#   its unittest summary are both checked: freecadcmd alone exits 0 on a failing script);
+# - the GUI smoke test (tests/freecad/gui_smoke.py) in `freecad` under `xvfb-run -a`,
+#   which writes $(BUILD)/freecad/gui_smoke.png and a result file checked here.
+# FreeCAD runs with HOME=$(BUILD)/freecad/home, whose Mod folder links to freecad_wb/,
+# so the user's real ~/.local and ~/.config are never touched.
+BUILD     ?= build
+FCDIR     := $(BUILD)/freecad
+FCHOME    := $(CURDIR)/$(FCDIR)/home
+FCMOD     := $(FCHOME)/.local/share/FreeCAD/Mod
+FC_TESTS  := $(basename $(notdir $(wildcard tests/freecad/test_*.py)))
+FC_ENV     = HOME=$(FCHOME) LIBELASTICA_PATH=$(CURDIR)/$(BUILD)/libelastica.so \
+             PYTHONPATH=$(CURDIR)/python:$(CURDIR)/tests/freecad \
+             QTWEBENGINE_DISABLE_SANDBOX=1 ELASTICA_TEST_OUT=$(CURDIR)/$(FCDIR)
+TIMEOUT   ?= 150
+
+.PHONY: all fc-home fc-tests fc-gui
+all: fc-tests fc-gui
+
+fc-home:
+	@rm -rf $(FCHOME) && mkdir -p $(FCMOD)
+	@ln -sfn $(CURDIR)/freecad_wb $(FCMOD)/elastica
+
+fc-tests: fc-home
+	@set -e; for m in $(FC_TESTS); do \
+	  echo "== freecadcmd -t $$m"; \
+	  rc=0; env $(FC_ENV) timeout $(TIMEOUT) freecadcmd -t $$m > $(FCDIR)/$$m.log 2>&1 || rc=$$?; \
+	  if [ $$rc -ne 0 ] || ! grep -q '^OK' $(FCDIR)/$$m.log || ! grep -Eq '^Ran [1-9][0-9]* test' $(FCDIR)/$$m.log; then \
+	    sed -n '/^=\{10,\}/,$$p' $(FCDIR)/$$m.log | tail -n 80; \
+	    echo "FAILED: freecadcmd -t $$m (exit $$rc, log $(FCDIR)/$$m.log)"; exit 1; fi; \
+	  grep -E '^Ran [0-9]+ test' $(FCDIR)/$$m.log; \
+	done
+
+fc-gui: fc-home
+	@echo "== freecad (GUI, xvfb-run -a) tests/freecad/gui_smoke.py"
+	@rm -f $(FCDIR)/gui_smoke.result $(FCDIR)/gui_smoke.png
+	@rc=0; env $(FC_ENV) timeout $(TIMEOUT) xvfb-run -a -s "-screen 0 1280x1024x24" \
+	  freecad $(CURDIR)/tests/freecad/gui_smoke.py > $(FCDIR)/gui_smoke.log 2>&1 || rc=$$?; \
+	if [ $$rc -ne 0 ] || [ "$$(head -n 1 $(FCDIR)/gui_smoke.result 2>/dev/null)" != "PASS" ]; then \
+	  tail -n 40 $(FCDIR)/gui_smoke.log; cat $(FCDIR)/gui_smoke.result 2>/dev/null; \
+	  echo "FAILED: GUI smoke test (exit $$rc, log $(FCDIR)/gui_smoke.log)"; exit 1; fi
+	@tail -n +2 $(FCDIR)/gui_smoke.result

@@ -1,0 +1,280 @@
+"""freecadcmd -t tests of the Elastic blend and Curvature comb cores, parametric
+updates, save / reopen, and bad input (the document must stay unchanged)."""
+import math
+import os
+import tempfile
+import unittest
+
+import FreeCAD as App
+
+import elastica_samples as S
+from freecad.elastica import commands as C
+from freecad.elastica import features as F
+
+
+def _edge(obj, name):
+    return obj.Shape.getElement(name)
+
+
+class BlendTest(unittest.TestCase):
+    def setUp(self):
+        self.doc = S.new_doc("ElasticaBlendTest")
+        self.sk = S.two_lines_sketch(self.doc)
+
+    def tearDown(self):
+        App.closeDocument(self.doc.Name)
+
+    def _check_g1(self, blend):
+        """The blend starts at Edge1's end leaving along it and ends at Edge2's start
+        entering along it: the exact elastica (from the library) to rounding error,
+        its B-spline (the shape) within the tolerance at the ends."""
+        import numpy as np
+        a, b = _edge(self.sk, "Edge1"), _edge(self.sk, "Edge2")
+        pa, da = a.valueAt(a.LastParameter), a.tangentAt(a.LastParameter)
+        pb, db = b.valueAt(b.FirstParameter), b.tangentAt(b.FirstParameter)
+        curves, plc = blend.Proxy.plane_curves(blend)
+        c = curves[0]
+        xy = c.points([0.0, c.length])
+        th = c.angle([0.0, c.length])
+        ends = [(plc.multVec(App.Vector(x, y, 0)),
+                 plc.Rotation.multVec(App.Vector(math.cos(t), math.sin(t), 0)))
+                for (x, y), t in zip(xy, th)]
+        if (ends[0][0] - pa).Length > (ends[1][0] - pa).Length:   # stored p1 -> p0
+            ends = [(ends[1][0], -ends[1][1]), (ends[0][0], -ends[0][1])]
+        (q0, t0), (q1, t1) = ends
+        self.assertLess((q0 - pa).Length, 1e-7)
+        self.assertLess((q1 - pb).Length, 1e-7)
+        self.assertGreater(t0.dot(da), 0.999999)
+        self.assertGreater(t1.dot(db), 0.999999)
+        self.assertTrue(np.isfinite(c.energy()))
+        # the B-spline shape: ends on the edges' ends, tangent within the tolerance
+        e = blend.Shape.Edges[0]
+        f = [e.valueAt(e.FirstParameter), e.valueAt(e.LastParameter)]
+        tf = [e.tangentAt(e.FirstParameter), e.tangentAt(e.LastParameter)]
+        if (f[0] - pa).Length > (f[1] - pa).Length:
+            f, tf = f[::-1], [-tf[1], -tf[0]]
+        self.assertLess((f[0] - pa).Length, blend.Tolerance)
+        self.assertLess((f[1] - pb).Length, blend.Tolerance)
+        self.assertGreater(tf[0].normalize().dot(da), 1 - 1e-5)
+        self.assertGreater(tf[1].normalize().dot(db), 1 - 1e-5)
+
+    def test_blend_joins_ends_tangentially(self):
+        b = F.make_blend(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"))
+        self.doc.recompute()
+        self.assertFalse(b.Status.startswith("error"), b.Status)
+        self.assertTrue(b.AtEnd1)
+        self.assertFalse(b.AtEnd2)
+        self.assertGreaterEqual(len(b.Lengths), 1)
+        self.assertEqual(len(b.Lengths), len(b.Energies))
+        self._check_g1(b)
+
+    def test_blend_by_length_has_that_length(self):
+        b = F.make_blend(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"), Length=60.0)
+        self.doc.recompute()
+        self.assertFalse(b.Status.startswith("error"), b.Status)
+        for L in b.Lengths:
+            self.assertAlmostEqual(L, 60.0, places=6)
+        self.assertAlmostEqual(b.Shape.Length, 60.0, delta=1e-3)
+        self._check_g1(b)
+
+    def test_every_solution_is_a_valid_blend(self):
+        b = F.make_blend(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"), Length=75.0)
+        self.doc.recompute()
+        n = len(b.Lengths)
+        self.assertGreaterEqual(n, 1)
+        self.assertEqual(b.Energies, sorted(b.Energies))   # sorted by bending energy
+        for i in range(n):
+            b.Solution = i
+            self.doc.recompute()
+            self.assertEqual(b.Status, f"solution {i + 1} of {n}")
+            self._check_g1(b)
+
+    def test_blend_follows_moved_sketch(self):
+        b = F.make_blend(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"))
+        self.doc.recompute()
+        before = b.Shape.copy()
+        self.sk.movePoint(1, 1, App.Vector(85, 40, 0))     # Edge2's start point
+        self.doc.recompute()
+        self.assertGreater(abs(b.Shape.Length - before.Length), 1e-3)
+        self._check_g1(b)
+
+    def test_blend_in_3d_between_two_objects(self):
+        import Part
+        a = self.doc.addObject("Part::Feature", "A")
+        a.Shape = Part.makeLine(App.Vector(0, 0, 0), App.Vector(0, 0, 10))
+        c = self.doc.addObject("Part::Feature", "B")
+        c.Shape = Part.makeLine(App.Vector(30, 0, 20), App.Vector(40, 0, 20))
+        self.doc.recompute()
+        b = F.make_blend(self.doc, (a, "Edge1"), (c, "Edge1"))
+        self.doc.recompute()
+        self.assertFalse(b.Status.startswith("error"), b.Status)
+        e = b.Shape.Edges[0]
+        ends = {tuple(round(v, 6) for v in e.valueAt(p)) for p in (e.FirstParameter, e.LastParameter)}
+        self.assertEqual(ends, {(0.0, 0.0, 10.0), (30.0, 0.0, 20.0)})
+        self.assertLess(max(abs(v.Point.y) for v in e.Vertexes), 1e-9)
+        self.assertLess(abs(e.valueAt(0.5 * (e.FirstParameter + e.LastParameter)).y), 1e-6)
+
+    def test_write_into_sketch_with_tangency(self):
+        b = F.make_blend(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"))
+        self.doc.recompute()
+        ng, nc = len(self.sk.Geometry), self.sk.ConstraintCount
+        other = F.make_blend(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"), Length=70.0)
+        self.doc.recompute()
+        self.assertEqual((other.SketchGeometry1, other.SketchGeometry2), (0, 1))
+        ids = F.write_to_sketch(b, self.sk, [(0, 2), (1, 1)])
+        self.doc.removeObject(b.Name)
+        self.doc.recompute()
+        # a blend between the same sketch edges still finds them (geometry indices)
+        self.assertFalse(other.Status.startswith("error"), other.Status)
+        self.assertAlmostEqual(other.Shape.Length, 70.0, delta=1e-3)
+        self.assertEqual(len(self.sk.Geometry), ng + 1)
+        self.assertEqual(self.sk.ConstraintCount, nc + 2)
+        self.assertEqual(self.sk.solve(), 0)
+        self.assertEqual([c.Type for c in self.sk.Constraints][-2:], ["Tangent", "Tangent"])
+        g = self.sk.Geometry[ids[0]]
+        self.assertEqual(g.TypeId, "Part::GeomBSplineCurve")
+        # the solver needs to move nothing much: the blend was already G1
+        self.assertLess((self.sk.Geometry[0].EndPoint - App.Vector(40, 0, 0)).Length, 0.05)
+        self.assertLess((self.sk.Geometry[1].StartPoint - App.Vector(80, 25, 0)).Length, 0.05)
+
+    def test_save_reopen_recompute_same_result(self):
+        b = F.make_blend(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"), Length=70.0)
+        comb = F.make_comb(self.doc, b)
+        self.doc.recompute()
+        import json
+        params = json.loads(b.Curves)[0]
+        samples = [tuple(p) for p in b.Shape.Edges[0].discretize(50)]
+        lengths, nteeth = list(b.Lengths), len(comb.Shape.Edges)
+        bname, cname = b.Name, comb.Name
+        path = os.path.join(tempfile.mkdtemp(), "blend.FCStd")
+        self.doc.saveAs(path)
+        name = self.doc.Name
+        App.closeDocument(name)
+        self.doc = App.openDocument(path)
+        b2 = self.doc.getObject(bname)
+        self.assertEqual(b2.Proxy.kind, "Blend")
+        self.assertEqual(self.doc.getObject(cname).Proxy.kind, "Comb")
+        b2.touch()
+        self.doc.getObject("Lines").touch()
+        self.doc.recompute()
+        # the same elastica (to rounding), the same B-spline shape (within its tolerance)
+        params2 = json.loads(b2.Curves)[0]
+        self.assertEqual(params["type"], params2["type"])
+        for key in ("x0", "y0", "phi", "mu", "k", "q", "length"):
+            self.assertAlmostEqual(params[key], params2[key], delta=1e-9 * (1 + abs(params[key])))
+        self.assertLess(S.distance_to_shape(samples, b2.Shape), 2 * b2.Tolerance)
+        self.assertEqual(len(b2.Lengths), len(lengths))
+        for L, L2 in zip(lengths, b2.Lengths):
+            self.assertAlmostEqual(L, L2, delta=1e-9)
+        self.assertEqual(len(self.doc.getObject(cname).Shape.Edges), nteeth)
+        self.assertEqual(b2.getGroupOfProperty("Length"), "Blend")
+        self.assertTrue(b2.getDocumentationOfProperty("Length"))
+
+    def test_bad_input_leaves_document_unchanged(self):
+        before = S.doc_state(self.doc)
+        cases = [
+            [],                                                    # empty selection
+            [(self.sk, ["Edge1"])],                                # one edge
+            [(self.sk, ["Edge1", "Vertex3"])],                     # an edge and a vertex
+        ]
+        for sources in cases:
+            del C.MESSAGES[:]
+            self.assertIsNone(C.blend_sources(sources, open_panel=False))
+            self.assertTrue(C.MESSAGES, sources)
+            self.assertEqual(S.doc_state(self.doc), before)
+
+    def test_touching_and_noncoplanar_ends_are_rejected(self):
+        import Part
+        a = self.doc.addObject("Part::Feature", "A")
+        a.Shape = Part.makeLine(App.Vector(0, 0, 0), App.Vector(10, 0, 0))
+        t = self.doc.addObject("Part::Feature", "T")            # touches A's end
+        t.Shape = Part.makeLine(App.Vector(10, 0, 0), App.Vector(20, 5, 0))
+        s = self.doc.addObject("Part::Feature", "Skew")          # skew to A
+        s.Shape = Part.makeLine(App.Vector(20, 5, 3), App.Vector(20, 15, 8))
+        self.doc.recompute()
+        before = S.doc_state(self.doc)
+        for other in (t, s):
+            del C.MESSAGES[:]
+            self.assertIsNone(C.blend_sources([(a, ["Edge1"]), (other, ["Edge1"])],
+                                              open_panel=False))
+            self.assertTrue(C.MESSAGES)
+            self.assertEqual(S.doc_state(self.doc), before)
+
+    def test_command_core_records_a_feature(self):
+        b = C.blend_sources([(self.sk, ["Edge1", "Edge2"])], open_panel=False)
+        self.assertIsNotNone(b)
+        self.assertEqual(b.Proxy.kind, "Blend")
+        self._check_g1(b)
+
+
+class CombTest(unittest.TestCase):
+    def setUp(self):
+        self.doc = S.new_doc("ElasticaCombTest")
+
+    def tearDown(self):
+        App.closeDocument(self.doc.Name)
+
+    def test_comb_of_an_arc_has_equal_radial_teeth(self):
+        r = 20.0
+        sk = S.arc_sketch(self.doc, r)
+        comb = F.make_comb(self.doc, sk, ["Edge1"], Samples=9, Scale=100.0)
+        self.doc.recompute()
+        self.assertEqual(comb.Status, "ok")
+        centre = S.SKETCH_PLACEMENT.multVec(App.Vector(0, 0, 0))
+        teeth = [e for e in comb.Shape.Edges
+                 if min(abs((v.Point - centre).Length - r) for v in e.Vertexes) < 1e-6]
+        self.assertEqual(len(teeth), 9)
+        for e in teeth:
+            d = [(v.Point - centre).Length for v in e.Vertexes]
+            # radial, foot on the arc, tip outside it at r + scale * kappa
+            self.assertAlmostEqual(min(d), r, places=6)
+            self.assertAlmostEqual(max(d), r + 100.0 / r, places=6)
+
+    def test_comb_of_an_elastica_blend_uses_its_curvature(self):
+        sk = S.two_lines_sketch(self.doc)
+        b = F.make_blend(self.doc, (sk, "Edge1"), (sk, "Edge2"), Length=60.0)
+        comb = F.make_comb(self.doc, b, Samples=25, Scale=50.0)
+        self.doc.recompute()
+        self.assertEqual(comb.Status, "ok")
+        curve = b.Proxy.plane_curves(b)[0][0]
+        import numpy as np
+        s = np.linspace(0.0, curve.length, 25)
+        kappa = curve.curvature(s)
+        xy = curve.points(s)
+        tips = {}
+        for e in comb.Shape.Edges[:-1]:
+            tips[tuple(round(c, 6) for c in e.Vertexes[0].Point)] = e.Length
+        self.assertGreaterEqual(len(tips), 20)
+        for (x, y), k in zip(xy, kappa):
+            foot = b.Plane.multVec(App.Vector(x, y, 0))
+            # each tooth's foot lies on the blend shape
+            self.assertLess(b.Shape.distToShape(__import__("Part").Vertex(foot))[0], 1e-3)
+        lengths = sorted(tips.values())
+        self.assertAlmostEqual(lengths[-1], 50.0 * float(np.max(np.abs(kappa))), delta=1e-6)
+
+    def test_comb_follows_its_source(self):
+        sk = S.arc_sketch(self.doc, 20.0)
+        comb = F.make_comb(self.doc, sk, ["Edge1"], Samples=9, Scale=100.0)
+        self.doc.recompute()
+        n0 = max(e.Length for e in comb.Shape.Edges if len(e.Vertexes) == 2)
+        g = sk.Geometry[0]
+        sk.delGeometry(0)
+        sk.addGeometry(__import__("Part").ArcOfCircle(
+            __import__("Part").Circle(App.Vector(0, 0, 0), App.Vector(0, 0, 1), 10.0),
+            0.0, math.pi / 2), False)
+        self.doc.recompute()
+        centre = S.SKETCH_PLACEMENT.multVec(App.Vector(0, 0, 0))
+        teeth = [e.Length for e in comb.Shape.Edges
+                 if min(abs((v.Point - centre).Length - 10.0) for v in e.Vertexes) < 1e-6]
+        self.assertEqual(len(teeth), 9)
+        for t in teeth:
+            self.assertAlmostEqual(t, 10.0, places=6)
+        self.assertAlmostEqual(n0, 5.0, places=6)
+        del g
+
+    def test_comb_bad_input(self):
+        before = S.doc_state(self.doc)
+        del C.MESSAGES[:]
+        self.assertEqual(C.comb_sources([]), [])
+        self.assertTrue(C.MESSAGES)
+        self.assertEqual(S.doc_state(self.doc), before)
