@@ -1,0 +1,376 @@
+/* Hermite interpolation by elastic curves (seed 004): every returned curve is
+ * checked with the evaluator of smooth.c (ends, energy, inflections), the
+ * paper's case-1 example of §5, the polynomial (40) by its defining property,
+ * and the degenerate data of the issue. */
+#include "testutil.h"
+#include <stdio.h>
+#include <string.h>
+
+static double wrap(double a)
+{
+    a = fmod(a, 2.0 * M_PI);
+    if (a > M_PI) a -= 2.0 * M_PI;
+    if (a < -M_PI) a += 2.0 * M_PI;
+    return a;
+}
+
+/* Both ends met (position / |p1 - p0| and tangent angle to tol), energy by
+ * el_smooth_energy, has_inflection by sampled curvature, length = curve.length. */
+static void check_solution(const double p0[2], const double t0[2], const double p1[2],
+                           const double t1[2], const el_hermite_solution *s, double tol)
+{
+    const double d = hypot(p1[0] - p0[0], p1[1] - p0[1]);
+    const double *a = s->reversed ? p1 : p0, *b = s->reversed ? p0 : p1;
+    const double sg = s->reversed ? -1.0 : 1.0;
+    const double ta = atan2(sg * (s->reversed ? t1 : t0)[1], sg * (s->reversed ? t1 : t0)[0]);
+    const double tb = atan2(sg * (s->reversed ? t0 : t1)[1], sg * (s->reversed ? t0 : t1)[0]);
+    ck_assert_int_eq(el_smooth_check(&s->curve), EL_OK);
+    ck_assert_close(s->curve.length, s->length, 0.0);
+    const double sv[2] = {0.0, s->length};
+    double xy[4], th[2], kap[2];
+    ck_assert_int_eq(el_smooth_eval(&s->curve, 2, sv, xy, th, kap), EL_OK);
+    ck_assert_msg(hypot(xy[0] - a[0], xy[1] - a[1]) <= tol * d, "start point off by %g",
+                  hypot(xy[0] - a[0], xy[1] - a[1]));
+    ck_assert_msg(hypot(xy[2] - b[0], xy[3] - b[1]) <= tol * d, "end point off by %g",
+                  hypot(xy[2] - b[0], xy[3] - b[1]));
+    ck_assert_msg(fabs(wrap(th[0] - ta)) <= tol, "start tangent off by %g", wrap(th[0] - ta));
+    ck_assert_msg(fabs(wrap(th[1] - tb)) <= tol, "end tangent off by %g", wrap(th[1] - tb));
+    /* curvature at the ends along p0 -> p1 (reversal flips the sign) */
+    const double k0 = s->reversed ? -kap[1] : kap[0], k1 = s->reversed ? -kap[0] : kap[1];
+    ck_assert_close(k0, s->kappa0, 1e-8 * (1.0 + fabs(k0)));
+    ck_assert_close(k1, s->kappa1, 1e-8 * (1.0 + fabs(k1)));
+    double E;
+    ck_assert_int_eq(el_smooth_energy(&s->curve, &E), EL_OK);
+    ck_assert_close(E, s->energy, 1e-8 * (1.0 + E));
+    /* inflection: sign change of kappa on a fine grid */
+    enum { NS = 2001 };
+    static double ss[NS], kk[NS];
+    for (int i = 0; i < NS; i++) ss[i] = s->length * i / (NS - 1);
+    ck_assert_int_eq(el_smooth_eval(&s->curve, NS, ss, NULL, NULL, kk), EL_OK);
+    int change = 0;
+    double kmax = 0.0;
+    for (int i = 0; i < NS; i++) kmax = fmax(kmax, fabs(kk[i]));
+    double last = 0.0; /* sign changes among the samples that are not ~0 (ends may be zeros) */
+    for (int i = 0; i < NS; i++) {
+        if (fabs(kk[i]) <= 1e-7 * kmax) continue;
+        if (last * kk[i] < 0.0) change = 1;
+        last = kk[i];
+    }
+    ck_assert_msg(change == s->has_inflection, "has_inflection %d, sampled %d (k %g, L %g, kappa0 %g, kappa1 %g)",
+                  s->has_inflection, change, s->curve.k, s->length, s->kappa0, s->kappa1);
+}
+
+static void check_result(const double p0[2], const double t0[2], const double p1[2],
+                         const double t1[2], const el_hermite_result *r, double tol)
+{
+    for (size_t i = 0; i < r->count; i++) {
+        check_solution(p0, t0, p1, t1, &r->solutions[i], tol);
+        if (i > 0) ck_assert(r->solutions[i - 1].energy <= r->solutions[i].energy);
+    }
+}
+
+/* ------------------------------------------------------------ seed 004 §5, figure 1 */
+
+START_TEST(paper_case1_example)
+{
+    double P[2] = {0.868, -0.497}, V[2] = {-0.917, -0.398};
+    double n = hypot(P[0], P[1]);
+    P[0] /= n; P[1] /= n;   /* the printed data are rounded to 3 digits */
+    n = hypot(V[0], V[1]);
+    V[0] /= n; V[1] /= n;
+    el_hermite_analysis a;
+    ck_assert_int_eq(el_hermite_analyse(P, V, 10.99, &a), EL_OK);
+    ck_assert_int_eq(a.hcase, 1);
+    /* the paper's table gives |kappa_m| < 11.5 for this sigma; the exact bound is inside */
+    ck_assert(a.kappa_bound <= 11.5 && a.kappa_bound > 4.852);
+    /* I~ = [-11.5, -2.71] U [-0.356, 11.5] */
+    ck_assert_uint_eq(a.ninterval, 2);
+    ck_assert_close(a.interval[1], -2.71, 0.005);
+    ck_assert_close(a.interval[2], -0.356, 0.005);
+    ck_assert_close(a.interval[0], -a.kappa_bound, 1e-12);
+    ck_assert_close(a.interval[3], a.kappa_bound, 1e-12);
+    /* R1 = {-4.006, 0.478, 1.079} (f1), R2 = {-4.375, -3.777, -2.718, 2.299, 4.076} (f2) */
+    const double R[8] = {-4.375, -4.006, -3.777, -2.718, 0.478, 1.079, 2.299, 4.076};
+    const int grp[8] = {2, 1, 2, 2, 1, 1, 2, 2};
+    ck_assert_uint_eq(a.nroot, 8);
+    for (int i = 0; i < 8; i++) {
+        ck_assert_close(a.root[i], R[i], 0.005);
+        /* roots of one group belong to one objective function */
+        for (int j = 0; j < 8; j++)
+            ck_assert_int_eq(grp[i] == grp[j], a.root_branch[i] == a.root_branch[j]);
+    }
+    /* special values (45): -5.283, -3.315, 0.675, 3.315 */
+    const double S[4] = {-5.283, -3.315, 0.675, 3.315};
+    ck_assert_uint_eq(a.nspecial, 4);
+    for (int i = 0; i < 4; i++) ck_assert_close(a.special[i], S[i], 0.002);
+
+    /* the solution kappa0 = -4.852 is among all solutions */
+    const double p0[2] = {0, 0}, t0[2] = {0, 1};
+    el_hermite_options o;
+    el_hermite_options_defaults(&o);
+    o.sigma = 10.99;
+    el_hermite_result r;
+    ck_assert_int_eq(el_hermite_solve(p0, t0, P, V, &o, &r), EL_OK);
+    int found = 0;
+    for (size_t i = 0; i < r.count; i++) found |= fabs(r.solutions[i].kappa0 + 4.852) < 0.002;
+    ck_assert_msg(found, "kappa0 = -4.852 not among %zu solutions", r.count);
+    check_result(p0, t0, P, V, &r, 1e-10);
+    el_hermite_result_free(&r);
+}
+END_TEST
+
+/* The roots of (40) are where kappa_m^2 = 2 sigma: check with (8), (15), (16)
+ * and (17) (kappa0' from the first integral must be real and consistent). */
+START_TEST(polynomial_40_roots_are_class_boundaries)
+{
+    unsigned long long st = 99;
+    int checked = 0;
+    for (int t = 0; t < 200; t++) {
+        const double a = test_uniform(&st, -M_PI, M_PI), b = test_uniform(&st, -M_PI, M_PI);
+        const double P[2] = {cos(a), sin(a)}, V[2] = {cos(b), sin(b)};
+        const double sigma = test_uniform(&st, 0.5, 40.0);
+        el_hermite_analysis an;
+        ck_assert_int_eq(el_hermite_analyse(P, V, sigma, &an), EL_OK);
+        for (size_t i = 0; i < an.nroot; i++) {
+            const double k0 = an.root[i];
+            /* branch of (17): P2 k1^2 + 2 V1 k1 - 2 V1 C - A P2 = 0 */
+            const double w = k0 * k0 - sigma, C = 0.5 * w * P[0] + k0, A = w * V[1] + sigma;
+            const double disc = V[0] * V[0] + P[1] * (2.0 * V[0] * C + A * P[1]);
+            const double sq = sqrt(fmax(disc, 0.0));
+            /* roots of (17) without cancellation: product of the roots = -c0 / P2 */
+            const double c0 = 2.0 * V[0] * C + A * P[1];
+            double k1;
+            if (an.root_branch[i] == 0) k1 = V[0] > 0.0 ? c0 / (V[0] + sq) : (-V[0] + sq) / P[1];
+            else k1 = V[0] < 0.0 ? c0 / (V[0] - sq) : (-V[0] - sq) / P[1];
+            /* kappa0' by (16), or by (15) when P2 is small */
+            const double k0p = fabs(V[0]) > fabs(P[1]) ? (A - k1 * k1) / (2.0 * V[0]) : (k1 - C) / P[1];
+            /* (8) with kappa_m^2 = 2 sigma: 4 k0'^2 = sigma^2 - (k0^2 - sigma)^2 */
+            const double lhs = 4.0 * k0p * k0p, rhs = sigma * sigma - w * w;
+            ck_assert_msg(fabs(lhs - rhs) <= 1e-6 * (sigma * sigma + lhs),
+                          "root %g: 4k0'^2 = %g, sigma^2 - (k0^2-sigma)^2 = %g", k0, lhs, rhs);
+            checked++;
+        }
+    }
+    ck_assert_int_gt(checked, 50);
+}
+END_TEST
+
+/* ------------------------------------------------------------ random problems */
+
+START_TEST(random_tension_problems_meet_the_ends)
+{
+    unsigned long long st = 12345;
+    size_t total = 0;
+    for (int t = 0; t < 150; t++) {
+        const double p0[2] = {test_uniform(&st, -3, 3), test_uniform(&st, -3, 3)};
+        const double p1[2] = {test_uniform(&st, -3, 3), test_uniform(&st, -3, 3)};
+        const double a = test_uniform(&st, -M_PI, M_PI), b = test_uniform(&st, -M_PI, M_PI);
+        const double t0[2] = {2.0 * cos(a), 2.0 * sin(a)}, t1[2] = {0.5 * cos(b), 0.5 * sin(b)};
+        const double d = hypot(p1[0] - p0[0], p1[1] - p0[1]);
+        el_hermite_options o;
+        el_hermite_options_defaults(&o);
+        o.sigma = test_uniform(&st, -20.0, 60.0) / (d * d);
+        el_hermite_result r;
+        ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_OK);
+        for (size_t i = 0; i < r.count; i++) ck_assert_close(r.solutions[i].sigma, o.sigma, 1e-15 * fabs(o.sigma));
+        check_result(p0, t0, p1, t1, &r, 1e-10);
+        total += r.count;
+        el_hermite_result_free(&r);
+    }
+    ck_assert_uint_gt(total, 150);
+}
+END_TEST
+
+START_TEST(random_length_problems_meet_the_ends)
+{
+    unsigned long long st = 777;
+    size_t total = 0;
+    for (int t = 0; t < 12; t++) {
+        const double p0[2] = {0.3, -0.2};
+        const double p1[2] = {test_uniform(&st, -2, 2), test_uniform(&st, -2, 2)};
+        const double a = test_uniform(&st, -M_PI, M_PI), b = test_uniform(&st, -M_PI, M_PI);
+        const double t0[2] = {cos(a), sin(a)}, t1[2] = {cos(b), sin(b)};
+        const double d = hypot(p1[0] - p0[0], p1[1] - p0[1]);
+        el_hermite_options o;
+        el_hermite_options_defaults(&o);
+        o.mode = EL_HERMITE_LENGTH;
+        o.length = d * test_uniform(&st, 1.1, 3.0);
+        el_hermite_result r;
+        ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_OK);
+        for (size_t i = 0; i < r.count; i++)
+            ck_assert_close(r.solutions[i].length, o.length, 1e-9 * o.length);
+        check_result(p0, t0, p1, t1, &r, 1e-10);
+        total += r.count;
+        el_hermite_result_free(&r);
+    }
+    ck_assert_uint_gt(total, 12);
+}
+END_TEST
+
+/* A solution found in tension mode is found again in length mode with its
+ * length, with the same sigma (the two modes are inverse problems). */
+START_TEST(length_mode_inverts_tension_mode)
+{
+    const double p0[2] = {0, 0}, t0[2] = {1, 0.2}, p1[2] = {1.5, 0.7}, t1[2] = {-0.3, 1};
+    el_hermite_options o;
+    el_hermite_options_defaults(&o);
+    o.sigma = 7.0;
+    el_hermite_result r;
+    ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_OK);
+    ck_assert_uint_gt(r.count, 0);
+    for (size_t i = 0; i < r.count && i < 3; i++) {
+        el_hermite_options ol;
+        el_hermite_options_defaults(&ol);
+        ol.mode = EL_HERMITE_LENGTH;
+        ol.length = r.solutions[i].length;
+        el_hermite_result rl;
+        ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &ol, &rl), EL_OK);
+        int found = 0;
+        for (size_t j = 0; j < rl.count; j++)
+            found |= fabs(rl.solutions[j].sigma - 7.0) < 1e-7 &&
+                     fabs(rl.solutions[j].kappa0 - r.solutions[i].kappa0) < 1e-6;
+        ck_assert_msg(found, "tension solution %zu (L = %g) not found by length", i, ol.length);
+        check_result(p0, t0, p1, t1, &rl, 1e-10);
+        el_hermite_result_free(&rl);
+    }
+    el_hermite_result_free(&r);
+}
+END_TEST
+
+/* ------------------------------------------------------------ degenerate data */
+
+START_TEST(collinear_data_give_the_straight_segment)
+{
+    const double p0[2] = {1, 1}, t0[2] = {3, 4}, p1[2] = {4, 5}, t1[2] = {0.6, 0.8};
+    const double sig[3] = {-3.0, 0.0, 5.0};
+    for (int i = 0; i < 3; i++) {
+        el_hermite_options o;
+        el_hermite_options_defaults(&o);
+        o.sigma = sig[i];
+        el_hermite_result r;
+        ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_OK);
+        ck_assert_uint_gt(r.count, 0);
+        /* the lowest energy is the segment: k = 0, length 5, energy 0 */
+        ck_assert_close(r.solutions[0].energy, 0.0, 1e-12);
+        ck_assert_close(r.solutions[0].length, 5.0, 1e-12);
+        ck_assert_int_eq(r.solutions[0].has_inflection, 0);
+        check_result(p0, t0, p1, t1, &r, 1e-10);
+        el_hermite_result_free(&r);
+    }
+    /* length mode with L = |p1 - p0|: only the segment */
+    el_hermite_options o;
+    el_hermite_options_defaults(&o);
+    o.mode = EL_HERMITE_LENGTH;
+    o.length = 5.0;
+    el_hermite_result r;
+    ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_OK);
+    ck_assert_uint_eq(r.count, 1);
+    ck_assert_close(r.solutions[0].curve.k, 0.0, 0.0);
+    el_hermite_result_free(&r);
+    /* buckled strip: L > |p1 - p0| with collinear data gives curved solutions (sigma < 0 among them) */
+    o.length = 6.0;
+    ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_OK);
+    ck_assert_uint_gt(r.count, 0);
+    int compressed = 0;
+    for (size_t i = 0; i < r.count; i++) compressed |= r.solutions[i].sigma < 0.0;
+    ck_assert(compressed);
+    check_result(p0, t0, p1, t1, &r, 1e-10);
+    el_hermite_result_free(&r);
+}
+END_TEST
+
+START_TEST(reversed_and_perpendicular_tangents)
+{
+    /* t1 = -t0 with p1 across (case 3 of Theorem 6) and t1 = t0 (case 2-like) */
+    const double p0[2] = {0, 0}, t0[2] = {1, 0}, p1[2] = {0, 1}, m0[2] = {-1, 0};
+    const double q1[2] = {1, 1};
+    const double sig[4] = {-2.0, 0.0, 1.0, 9.0};
+    size_t total = 0;
+    for (int i = 0; i < 4; i++) {
+        el_hermite_options o;
+        el_hermite_options_defaults(&o);
+        o.sigma = sig[i];
+        el_hermite_result r;
+        ck_assert_int_eq(el_hermite_solve(p0, t0, p1, m0, &o, &r), EL_OK);
+        check_result(p0, t0, p1, m0, &r, 1e-10);
+        total += r.count;
+        el_hermite_result_free(&r);
+        ck_assert_int_eq(el_hermite_solve(p0, t0, q1, t0, &o, &r), EL_OK);
+        check_result(p0, t0, q1, t0, &r, 1e-10);
+        total += r.count;
+        el_hermite_result_free(&r);
+    }
+    ck_assert_uint_gt(total, 4);
+}
+END_TEST
+
+START_TEST(circle_is_found_to_its_accuracy)
+{
+    /* the half circle of radius 1/2 is an elastica for sigma = kappa^2 = 4 */
+    const double p0[2] = {0, 0}, t0[2] = {1, 0}, p1[2] = {0, 1}, t1[2] = {-1, 0};
+    el_hermite_options o;
+    el_hermite_options_defaults(&o);
+    o.sigma = 4.0;
+    o.tol = 1e-6;
+    el_hermite_result r;
+    ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_OK);
+    int found = 0;
+    for (size_t i = 0; i < r.count; i++)
+        found |= fabs(r.solutions[i].length - M_PI / 2) < 1e-12 && fabs(r.solutions[i].kappa0 - 2.0) < 1e-12;
+    ck_assert(found);
+    check_result(p0, t0, p1, t1, &r, 1e-6);
+    el_hermite_result_free(&r);
+}
+END_TEST
+
+START_TEST(bad_input_and_clear_statuses)
+{
+    const double p0[2] = {0, 0}, t0[2] = {1, 0}, p1[2] = {1, 0.5}, t1[2] = {0, 1}, z[2] = {0, 0};
+    const double nanv[2] = {NAN, 0};
+    el_hermite_options o;
+    el_hermite_options_defaults(&o);
+    el_hermite_result r = {7, NULL};
+    ck_assert_int_eq(el_hermite_solve(NULL, t0, p1, t1, &o, &r), EL_EINVAL);
+    ck_assert_int_eq(el_hermite_solve(p0, z, p1, t1, &o, &r), EL_EINVAL);
+    ck_assert_int_eq(el_hermite_solve(p0, t0, nanv, t1, &o, &r), EL_EINVAL);
+    ck_assert_uint_eq(r.count, 7); /* untouched on EL_EINVAL */
+    /* p0 = p1: the normalisation |P| = 1 of seed 004 is impossible */
+    ck_assert_int_eq(el_hermite_solve(p0, t0, p0, t1, &o, &r), EL_EDOM);
+    /* length shorter than the chord */
+    o.mode = EL_HERMITE_LENGTH;
+    o.length = 0.5;
+    ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_EDOM);
+    o.length = -1.0;
+    ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_EINVAL);
+    o.mode = 7;
+    ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_EINVAL);
+    /* strong compression: the period 4 sqrt2 K(1/sqrt2)/sqrt(-sigma) < |p1 - p0|, no curve */
+    el_hermite_options_defaults(&o);
+    o.sigma = -500.0;
+    ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_OK);
+    ck_assert_uint_eq(r.count, 0);
+    el_hermite_result_free(&r);
+    el_hermite_result_free(NULL);
+    el_hermite_analysis a;
+    const double P[2] = {2, 0}, V[2] = {0, 1};
+    ck_assert_int_eq(el_hermite_analyse(P, V, 1.0, &a), EL_EINVAL);
+}
+END_TEST
+
+int main(void)
+{
+    Suite *s = suite_create("hermite");
+    TCase *tc = tcase_create("hermite");
+    tcase_set_timeout(tc, 120);
+    tcase_add_test(tc, paper_case1_example);
+    tcase_add_test(tc, polynomial_40_roots_are_class_boundaries);
+    tcase_add_test(tc, random_tension_problems_meet_the_ends);
+    tcase_add_test(tc, random_length_problems_meet_the_ends);
+    tcase_add_test(tc, length_mode_inverts_tension_mode);
+    tcase_add_test(tc, collinear_data_give_the_straight_segment);
+    tcase_add_test(tc, reversed_and_perpendicular_tangents);
+    tcase_add_test(tc, circle_is_found_to_its_accuracy);
+    tcase_add_test(tc, bad_input_and_clear_statuses);
+    suite_add_tcase(s, tc);
+    return test_run_suite(s);
+}

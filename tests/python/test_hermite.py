@@ -1,0 +1,306 @@
+"""libelastica.hermite: all elastic curves through two points with two tangents
+(seed 004), checked against an independent brute-force shooting search."""
+import warnings
+
+import numpy as np
+import pytest
+from scipy.special import ellipk
+
+import libelastica as el
+
+# ---------------------------------------------------------------- brute force (independent)
+# Shooting on the ODE 2 k'' + k^3 - sigma k = 0 with theta' = k, z' = exp(i theta),
+# from p0 = 0, t0 = (1, 0); vectorised RK4 over all starts of all problems, damped
+# Newton with a finite-difference Jacobian. Nothing here uses the library's formulas.
+
+
+def _rk4(k0, dk0, sig, L, nsteps):
+    h = L / nsteps
+    z = np.zeros(k0.shape, complex)
+    w = np.ones(k0.shape, complex)
+    k = k0.astype(float).copy()
+    dk = dk0.astype(float).copy()
+    h2, h6 = 0.5 * h, h / 6
+    for _ in range(nsteps):
+        a_w = 1j * k * w; a_d = 0.5 * k * (sig - k * k)
+        w2 = w + h2 * a_w; k2 = k + h2 * dk; d2 = dk + h2 * a_d
+        b_w = 1j * k2 * w2; b_d = 0.5 * k2 * (sig - k2 * k2)
+        w3 = w + h2 * b_w; k3 = k + h2 * d2; d3 = dk + h2 * b_d
+        c_w = 1j * k3 * w3; c_d = 0.5 * k3 * (sig - k3 * k3)
+        w4 = w + h * c_w; k4 = k + h * d3; d4 = dk + h * c_d
+        d_w = 1j * k4 * w4; d_d = 0.5 * k4 * (sig - k4 * k4)
+        z = z + h6 * (w + 2 * w2 + 2 * w3 + w4)
+        w = w + h6 * (a_w + 2 * b_w + 2 * c_w + d_w)
+        k, dk = k + h6 * (dk + 2 * d2 + 2 * d3 + d4), dk + h6 * (a_d + 2 * b_d + 2 * c_d + d_d)
+    return z, w
+
+
+def _residual(u, mode, P, phi1, fixed, nsteps):
+    k0, dk0 = u[..., 0], u[..., 1]
+    sig, L = (fixed, u[..., 2]) if mode == "tension" else (u[..., 2], fixed)
+    z, w = _rk4(k0, dk0, sig, L, nsteps)
+    return np.stack([z.real - P[..., 0], z.imag - P[..., 1], np.angle(w * np.exp(-1j * phi1))], -1)
+
+
+def _newton(u, mode, P, phi1, fixed, nsteps, iters):
+    for _ in range(iters):
+        r = _residual(u, mode, P, phi1, fixed, nsteps)
+        h = 1e-6 * (1 + np.abs(u))
+        up = u[:, None, :] + h[:, None, :] * np.eye(3)[None]
+        rp = _residual(up, mode, P[:, None], phi1[:, None], fixed[:, None], nsteps)
+        J = np.swapaxes((rp - r[:, None, :]) / h[:, :, None], 1, 2)
+        ok = np.isfinite(J).all(axis=(1, 2)) & np.isfinite(r).all(axis=1)
+        ok[ok] &= np.abs(np.linalg.det(J[ok])) > 1e-300
+        step = np.zeros_like(u)
+        step[ok] = np.linalg.solve(J[ok], -r[ok][..., None])[..., 0]
+        sc = np.minimum(1.0, 2.0 / (np.linalg.norm(step / (1 + np.abs(u)), axis=1) + 1e-300))
+        u = u + sc[:, None] * step
+        u[~np.isfinite(u)] = 0.0
+    return u, np.linalg.norm(_residual(u, mode, P, phi1, fixed, nsteps), axis=1)
+
+
+def _scan_starts(problems, nk=20, S=8.0, nsteps=128, keep=40):
+    """Tension: integrate a (k0, k0') grid once to arc length S; the lowest local
+    minima in s of |x(s) - P|^2 + angle error^2 are the starts (k0, k0', s)."""
+    n2 = nk * nk
+    cols = []
+    for P, phi1, sig in problems:
+        B = 10.5 + np.sqrt(2 * max(sig, 0.0))
+        Q = 8 + 0.5 * (B * B + abs(sig)) ** 0.75
+        g0, g1 = np.meshgrid(np.linspace(-B, B, nk), np.linspace(-Q, Q, nk))
+        cols.append((g0.ravel(), g1.ravel(), np.full(n2, sig), np.full(n2, P[0] + 1j * P[1]),
+                     np.full(n2, np.exp(-1j * phi1))))
+    k0, dk0, sig, Pc, e1 = (np.concatenate(c) for c in zip(*cols))
+    h = S / nsteps
+    z = np.zeros(k0.shape, complex); w = np.ones(k0.shape, complex); k = k0.copy(); dk = dk0.copy()
+    res = np.empty((nsteps, k0.size))
+    for i in range(nsteps):
+        # one RK4 step: w' = i kappa w is linear in w, so the step from (z, w) is
+        # (z + w zz, w ww) with (zz, ww) the step from (0, 1)
+        zz, ww = _rk4(k, dk, sig, h, 1)
+        z, w = z + w * zz, w * ww
+        k, dk = _kstep(k, dk, sig, h)
+        res[i] = np.abs(z - Pc) ** 2 + np.angle(w * e1) ** 2
+    res[~np.isfinite(res)] = np.inf
+    starts = []
+    for j in range(len(problems)):
+        r = res[:, j * n2:(j + 1) * n2]
+        si, ti = np.nonzero((r[1:-1] < r[:-2]) & (r[1:-1] <= r[2:]))
+        order = np.argsort(r[1:-1][si, ti])[:keep]
+        starts.append(np.column_stack([k0[j * n2 + ti[order]], dk0[j * n2 + ti[order]],
+                                       (si[order] + 2) * h]))
+    return starts
+
+
+def _kstep(k, dk, sig, h):
+    """One RK4 step of kappa'' = (sig kappa - kappa^3) / 2."""
+    f = lambda k: 0.5 * k * (sig - k * k)
+    a1, b1 = dk, f(k)
+    a2, b2 = dk + 0.5 * h * b1, f(k + 0.5 * h * a1)
+    a3, b3 = dk + 0.5 * h * b2, f(k + 0.5 * h * a2)
+    a4, b4 = dk + h * b3, f(k + h * a3)
+    return k + h / 6 * (a1 + 2 * a2 + 2 * a3 + a4), dk + h / 6 * (b1 + 2 * b2 + 2 * b3 + b4)
+
+
+def _period(k0, dk0, sig):
+    """Period of kappa from the first integral (kappa')^2 + kappa^4/4 - sigma kappa^2/2 = C:
+    with |F| = sqrt((k0^2 - sig)^2 + 4 k0'^2), kappa_m^2 = |F| + sig, m = kappa_m^2/(2|F|)."""
+    Fn = np.hypot(k0 ** 2 - sig, 2 * dk0)
+    m = (Fn + sig) / (2 * Fn)
+    if m < 1:
+        return 4 * ellipk(m) / np.sqrt(Fn / 2), m
+    return 2 * ellipk(1 / m) / (np.sqrt(m) * np.sqrt(Fn / 2)), m
+
+
+def brute_force(problems, mode, starts=48, coarse=48, fine=400, seed=0):
+    """problems: (P with |P| = 1, end tangent angle phi1, sigma or L) with p0 = 0,
+    t0 = (1, 0). Returns per problem the (k0, k0', L, sigma) found."""
+    rng = np.random.default_rng(seed)
+    P = np.array([p[0] for p in problems]); phi1 = np.array([p[1] for p in problems])
+    fx = np.array([p[2] for p in problems], dtype=float)
+    scanned = _scan_starts(problems) if mode == "tension" else None
+    us, idx = [], []
+    for i in range(len(problems)):
+        if mode == "tension":
+            u = scanned[i]
+        else:
+            L = fx[i]
+            B = 10.5 / L + 6.0
+            u = np.column_stack([rng.uniform(-B, B, starts), rng.uniform(-0.3, 0.3, starts) * B * B,
+                                 rng.uniform(-(10.5 / L) ** 2, 60.0, starts)])
+        us.append(u); idx += [i] * len(u)
+    u, idx = np.concatenate(us), np.array(idx)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        u, r = _newton(u, mode, P[idx], phi1[idx], fx[idx], coarse, 14)
+        good = np.isfinite(r) & (r < 3e-2)
+        if mode == "tension":
+            good &= u[:, 2] > 0
+        u, idx = u[good], idx[good]
+        key = np.round(np.column_stack([idx, u / (1 + np.abs(u))]), 3)
+        _, first = np.unique(key, axis=0, return_index=True)
+        u, idx = u[first], idx[first]
+        u, r = _newton(u, mode, P[idx], phi1[idx], fx[idx], fine, 4)
+    out = [[] for _ in problems]
+    for j in np.nonzero(np.isfinite(r) & (r < 1e-8))[0]:
+        i = idx[j]
+        if mode == "tension":
+            k0, dk0, L, sig = u[j, 0], u[j, 1], u[j, 2], fx[i]
+        else:
+            k0, dk0, sig, L = u[j, 0], u[j, 1], u[j, 2], fx[i]
+        T, m = _period(k0, dk0, sig)
+        if L <= 0 or not L <= T * (1 - 1e-6) or abs(m - 1) < 1e-6:
+            continue  # not of length <= one period (or on the separatrix)
+        if not any(abs(k0 - a[0]) < 1e-6 * (1 + abs(k0)) and abs(L - a[2]) < 1e-6 * L for a in out[i]):
+            out[i].append((k0, dk0, L, sig))
+    return out
+
+
+def _problems(n, mode, seed):
+    rng = np.random.default_rng(seed)
+    out = []
+    for _ in range(n):
+        a, b = rng.uniform(-np.pi, np.pi, 2)
+        fixed = rng.uniform(-15, 40) if mode == "tension" else rng.uniform(1.05, 3.0)
+        out.append((np.array([np.cos(a), np.sin(a)]), b, fixed))
+    return out
+
+
+def _solve(P, phi1, fixed, mode):
+    kw = {"tension": fixed} if mode == "tension" else {"length": fixed}
+    return el.hermite([0, 0], [1, 0], P, [np.cos(phi1), np.sin(phi1)], **kw)
+
+
+# ---------------------------------------------------------------- checks of one solution
+
+def _wrap(a):
+    return (a + np.pi) % (2 * np.pi) - np.pi
+
+
+def _check_ends(c, p0, t0, p1, t1, tol=1e-10):
+    p0, t0, p1, t1 = (np.asarray(v, float) for v in (p0, t0, p1, t1))
+    d = np.hypot(*(p1 - p0))
+    a, b = (p1, p0) if c.reversed else (p0, p1)
+    ta, tb = (-t1, -t0) if c.reversed else (t0, t1)
+    xy = c.points([0.0, c.length])
+    th = c.angle([0.0, c.length])
+    assert np.hypot(*(xy[0] - a)) <= tol * d
+    assert np.hypot(*(xy[1] - b)) <= tol * d
+    assert abs(_wrap(th[0] - np.arctan2(ta[1], ta[0]))) <= tol
+    assert abs(_wrap(th[1] - np.arctan2(tb[1], tb[0]))) <= tol
+
+
+def _period_of_curve(c):
+    """Period of the curvature of a returned curve, from kappa and kappa' at s = 0
+    (finite differences of the evaluated curvature) and its sigma."""
+    h = 1e-5 / max(1.0, abs(c.kappa0))
+    k = c.curvature([-h, 0.0, h])
+    return _period(k[1], (k[2] - k[0]) / (2 * h), c.sigma)[0]
+
+
+# ---------------------------------------------------------------- tests
+
+def test_paper_case1_example():
+    P = np.array([0.868, -0.497]); V = np.array([-0.917, -0.398])
+    P, V = P / np.linalg.norm(P), V / np.linalg.norm(V)   # printed data are rounded
+    a = el.hermite_analyse(P, V, 10.99)
+    assert a["case"] == 1
+    assert 4.852 < a["kappa_bound"] <= 11.5                  # paper's table: < 11.5
+    (lo1, hi1), (lo2, hi2) = a["intervals"]
+    assert hi1 == pytest.approx(-2.71, abs=5e-3) and lo2 == pytest.approx(-0.356, abs=5e-3)
+    R1, R2 = [-4.006, 0.478, 1.079], [-4.375, -3.777, -2.718, 2.299, 4.076]
+    roots = np.array(a["roots"]); br = np.array(a["root_branch"])
+    assert np.allclose(np.sort(roots), np.sort(R1 + R2), atol=5e-3)
+    g1 = {br[np.argmin(abs(roots - r))] for r in R1}
+    g2 = {br[np.argmin(abs(roots - r))] for r in R2}
+    assert len(g1) == 1 and len(g2) == 1 and g1 != g2
+    assert np.allclose(a["special"], [-5.283, -3.315, 0.675, 3.315], atol=2e-3)
+    sols = el.hermite([0, 0], [0, 1], P, V, tension=10.99)
+    assert any(abs(s.kappa0 + 4.852) < 2e-3 for s in sols)
+    for s in sols:
+        _check_ends(s, [0, 0], [0, 1], P, V)
+
+
+def test_solutions_meet_ends_sorted_and_within_one_period():
+    rng = np.random.default_rng(3)
+    n = 0
+    for _ in range(40):
+        p0, p1 = rng.uniform(-2, 2, 2), rng.uniform(-2, 2, 2)
+        a, b = rng.uniform(-np.pi, np.pi, 2)
+        t0, t1 = [np.cos(a), np.sin(a)], [np.cos(b), np.sin(b)]
+        d = np.hypot(*(p1 - p0))
+        sols = el.hermite(p0, t0, p1, t1, tension=rng.uniform(-10, 40) / d ** 2)
+        assert [s.energy_value for s in sols] == sorted(s.energy_value for s in sols)
+        for s in sols:
+            _check_ends(s, p0, t0, p1, t1)
+            assert s.energy_value == pytest.approx(s.energy(), rel=1e-8, abs=1e-12)
+            assert s.length <= _period_of_curve(s) * (1 + 1e-6)
+            kap = s.curvature(np.linspace(0, s.length, 801))
+            big = np.abs(kap) > 1e-6 * np.abs(kap).max()
+            assert s.has_inflection == bool(np.any(np.diff(np.sign(kap[big])) != 0))
+            n += 1
+    assert n > 40
+
+
+@pytest.mark.parametrize("mode", ["tension", "length"])
+def test_completeness_against_brute_force(mode):
+    problems = _problems(100, mode, seed=5 if mode == "tension" else 6)
+    found = brute_force(problems, mode)
+    nbrute = 0
+    for (P, phi1, fixed), bl in zip(problems, found):
+        sols = _solve(P, phi1, fixed, mode)
+        for s in sols:
+            _check_ends(s, [0, 0], [1, 0], P, [np.cos(phi1), np.sin(phi1)])
+        for k0, dk0, L, sig in bl:
+            nbrute += 1
+            assert any(abs(s.kappa0 - k0) < 1e-4 * (1 + abs(k0)) and abs(s.length - L) < 1e-4 * L
+                       and abs(s.sigma - sig) < 1e-4 * (1 + abs(sig)) for s in sols), \
+                f"solver missed k0={k0}, L={L}, sigma={sig} for P={P}, phi1={phi1}, {mode}={fixed}"
+    assert nbrute >= 50   # the search must actually find solutions to compare
+
+
+def test_length_mode_sigma_and_length():
+    p0, t0, p1, t1 = [0, 0], [1, 0.3], [2, 0.5], [0.2, -1]
+    for L in (2.5, 4.0):
+        sols = el.hermite(p0, t0, p1, t1, length=L)
+        assert sols
+        for s in sols:
+            assert s.length == pytest.approx(L, rel=1e-9)
+            _check_ends(s, p0, t0, p1, t1)
+            # the returned sigma is the curve's: tension mode with it returns the same curve
+            again = el.hermite(p0, t0, p1, t1, tension=s.sigma)
+            assert any(abs(a.kappa0 - s.kappa0) < 1e-6 * (1 + abs(s.kappa0)) and
+                       abs(a.length - L) < 1e-7 * L for a in again)
+
+
+def test_degenerate_data():
+    # collinear: the straight segment is the lowest-energy solution
+    for sig in (-3.0, 0.0, 5.0):
+        sols = el.hermite([1, 1], [3, 4], [4, 5], [0.6, 0.8], tension=sig)
+        assert sols[0].k == 0 and sols[0].energy_value == 0 and sols[0].length == pytest.approx(5)
+    sols = el.hermite([1, 1], [3, 4], [4, 5], [0.6, 0.8], length=5.0)
+    assert len(sols) == 1 and sols[0].k == 0
+    # buckled strip (Euler): collinear data, L > |p1 - p0|, compressed solutions
+    sols = el.hermite([0, 0], [1, 0], [1, 0], [1, 0], length=1.3)
+    assert any(s.sigma < 0 for s in sols)
+    for s in sols:
+        _check_ends(s, [0, 0], [1, 0], [1, 0], [1, 0])
+    # t1 = -t0 (case 3) and t1 = t0 offset
+    for sig in (-2.0, 0.0, 3.0):
+        for p1, t1 in (([0, 1], [-1, 0]), ([1, 1], [1, 0])):
+            for s in el.hermite([0, 0], [1, 0], p1, t1, tension=sig):
+                _check_ends(s, [0, 0], [1, 0], p1, t1)
+    # sigma < 0 so strong that no period is as long as the chord: no curve
+    assert el.hermite([0, 0], [1, 0], [1, 0.5], [0, 1], tension=-500.0) == []
+    with pytest.raises(el.DomainError):
+        el.hermite([0, 0], [1, 0], [0, 0], [0, 1], tension=1.0)
+    with pytest.raises(el.DomainError):
+        el.hermite([0, 0], [1, 0], [1, 1], [0, 1], length=1.0)
+    with pytest.raises(ValueError):
+        el.hermite([0, 0], [0, 0], [1, 1], [0, 1], tension=1.0)
+    with pytest.raises(ValueError):
+        el.hermite([0, 0], [1, 0], [1, 1], [0, 1])
+    with pytest.raises(ValueError):
+        el.hermite([0, 0], [1, 0], [1, 1], [0, 1], tension=1.0, length=2.0)
+    with pytest.raises(ValueError):
+        el.hermite([0, np.nan], [1, 0], [1, 1], [0, 1], tension=1.0)
