@@ -99,7 +99,10 @@ $(BUILD)/bench/%: bench/%.c $(BUILD)/libelastica.a
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_BASE) $(DEPS_CFLAGS) $< -o $@ $(BUILD)/libelastica.a $(DEPS_LIBS)
 
+# comparison packages for the benchmarks only (PyPI), into the python3 on PATH
+BENCH_PIP := clothoids scipy
 bench: all $(BENCH_BIN)
+	@$(PYTHON) -c "import Clothoids, scipy" 2>/dev/null || $(PYTHON) -m pip install -q $(BENCH_PIP)
 	@for b in $(BENCH_BIN); do $$b; done
 	@for b in bench/bench_*.py; do [ -f "$$b" ] || continue; \
 	  LIBELASTICA_PATH=$(CURDIR)/$(BUILD)/libelastica.so PYTHONPATH=$(CURDIR)/python $(PYTHON) $$b; done
