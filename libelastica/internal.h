@@ -16,10 +16,11 @@ void el__gsl_quiet(void);
 /* EL_OK when all n values are finite. */
 int el__all_finite(const double *v, size_t n);
 
-/* What el_jacobi_eval precomputes for one modulus k (GSL sees kg = min(k, 1/k)):
- * the quarter period K(kg) and the complete integrals D, J over [0, pi/2]. */
+/* What el_jacobi_eval precomputes for one modulus k: kg = min(k, 1/k), its
+ * complementary modulus kp = sqrt(1 - kg^2) formed without cancellation, the
+ * quarter period K(kg) and the complete integrals D, J over [0, pi/2]. */
 typedef struct el__modulus {
-    double k, kg, K, Dc, Jc;
+    double k, kg, kp, K, Dc, Jc;
 } el__modulus;
 int el__modulus_init(double k, el__modulus *mod);
 /* el_jacobi_eval for a prepared modulus: the cheap path for many u at one k. */
