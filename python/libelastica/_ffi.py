@@ -38,9 +38,9 @@ def _header_text() -> str:
 
 def _load(ffi: FFI):
     env = os.environ.get("LIBELASTICA_PATH")
-    path = _find([env, _HERE / "libelastica.so", _SRC_ROOT / "build" / "libelastica.so"])
-    if env and path is None:
+    if env and not Path(env).is_file():
         raise ImportError(f"libelastica: LIBELASTICA_PATH={env} is not a file")
+    path = env or _find([_HERE / "libelastica.so", _SRC_ROOT / "build" / "libelastica.so"])
     try:
         return ffi.dlopen(path or "libelastica.so.0")
     except OSError as exc:
