@@ -1,0 +1,244 @@
+"""Reading measured points and writing results: CSV / whitespace text / .npy
+point files, JSON curve files, and DXF (a SPLINE entity, through the optional
+``ezdxf`` package).
+
+Every reader raises :class:`InputError` (a ``ValueError``) with one short,
+user-facing line for anything wrong with the input, so the command line can
+print it and exit with status 2.
+"""
+from __future__ import annotations
+
+import csv
+import io as _io
+import json
+import math
+from pathlib import Path
+from typing import Any, Dict, Optional, Union
+
+import numpy as np
+
+__all__ = ["InputError", "read_points", "curve_to_dict", "curve_from_dict", "bspline_to_dict",
+           "bspline_from_dict", "write_json", "read_json", "write_dxf_spline", "have_ezdxf"]
+
+PathLike = Union[str, Path]
+
+
+class InputError(ValueError):
+    """Bad user input (a file that is missing, malformed, or holds unusable points)."""
+
+
+def _parse_text(text: str, name: str) -> np.ndarray:
+    """Rows of 2 or 3 numbers separated by commas, semicolons, tabs or spaces.
+    Blank lines and lines starting with '#' are skipped; one header line of
+    non-numbers (e.g. ``x,y,z``) is allowed as the first data line."""
+    rows = []
+    first = True
+    data_lines = [ln for ln in text.splitlines() if ln.strip() and not ln.lstrip().startswith("#")]
+    sample = "\n".join(data_lines[:20])
+    delim = None
+    if "," in sample:
+        delim = ","
+    elif ";" in sample:
+        delim = ";"
+    reader = (csv.reader(_io.StringIO(text), delimiter=delim) if delim
+              else (line.split() for line in text.splitlines()))
+    for lineno, fields in enumerate(reader, start=1):
+        fields = [f.strip() for f in fields if f.strip() != ""]
+        if not fields or fields[0].startswith("#"):
+            continue
+        try:
+            row = [float(f) for f in fields]
+        except ValueError:
+            if first and not any(_is_number(f) for f in fields):
+                first = False          # a header line
+                continue
+            raise InputError(f"{name}: line {lineno}: not a number in {','.join(fields)!r}")
+        first = False
+        rows.append(row)
+    if not rows:
+        raise InputError(f"{name}: no data rows")
+    widths = {len(r) for r in rows}
+    if len(widths) != 1:
+        raise InputError(f"{name}: rows have different numbers of columns {sorted(widths)}")
+    return np.array(rows, dtype=np.float64)
+
+
+def _is_number(s: str) -> bool:
+    try:
+        float(s)
+        return True
+    except ValueError:
+        return False
+
+
+def read_points(path: PathLike, min_points: int = 3) -> np.ndarray:
+    """Read an (n, 2) or (n, 3) float64 array of points from ``path``.
+
+    Formats: ``.npy`` (a numeric array of shape (n, 2) or (n, 3)), otherwise text
+    with comma, semicolon or whitespace separated columns, ``#`` comments and an
+    optional header line. Raises :class:`InputError` for a missing or unreadable
+    file, malformed rows, a column count other than 2 or 3, NaN/inf values,
+    fewer than ``min_points`` points, or all points equal.
+    """
+    p = Path(path)
+    name = str(path)
+    if not p.is_file():
+        raise InputError(f"{name}: no such file")
+    if p.suffix.lower() == ".npy":
+        try:
+            arr = np.load(p, allow_pickle=False)
+        except Exception as exc:   # numpy raises several types for corrupt files
+            raise InputError(f"{name}: not a readable .npy file ({exc})") from None
+        if not np.issubdtype(arr.dtype, np.number):
+            raise InputError(f"{name}: .npy array is not numeric (dtype {arr.dtype})")
+        arr = np.asarray(arr, dtype=np.float64)
+    else:
+        try:
+            text = p.read_text(encoding="utf-8-sig")
+        except (OSError, UnicodeDecodeError) as exc:
+            raise InputError(f"{name}: cannot read as text ({exc.__class__.__name__})") from None
+        arr = _parse_text(text, name)
+    if arr.ndim != 2 or arr.shape[1] not in (2, 3):
+        raise InputError(f"{name}: need 2 or 3 columns (x,y or x,y,z), got shape {arr.shape}")
+    if not np.all(np.isfinite(arr)):
+        bad = int(np.argwhere(~np.isfinite(arr))[0][0])
+        raise InputError(f"{name}: point {bad} is not finite (NaN or inf)")
+    if arr.shape[0] < min_points:
+        raise InputError(f"{name}: need at least {min_points} points, got {arr.shape[0]}")
+    if np.all(arr == arr[0]):
+        raise InputError(f"{name}: all points are equal")
+    return np.ascontiguousarray(arr)
+
+
+# ---------------------------------------------------------------- JSON
+
+def _floats(a) -> list:
+    return np.asarray(a, dtype=np.float64).tolist()
+
+
+def curve_to_dict(curve) -> Dict[str, Any]:
+    """A JSON-ready dict of a SmoothElastica or DiscreteElastica (its type and parameters)."""
+    from .core import DISCRETE_PARAMS, SMOOTH_PARAMS, DiscreteElastica, SmoothElastica
+    if isinstance(curve, SmoothElastica):
+        return {"type": "smooth", **{n: float(getattr(curve, n)) for n in SMOOTH_PARAMS}}
+    if isinstance(curve, DiscreteElastica):
+        return {"type": "discrete", **{n: float(getattr(curve, n)) for n in DISCRETE_PARAMS},
+                "n": int(curve.n)}
+    raise TypeError(f"not an elastica: {type(curve).__name__}")
+
+
+def curve_from_dict(d: Dict[str, Any], name: str = "curve"):
+    """Rebuild a SmoothElastica / DiscreteElastica from :func:`curve_to_dict`'s dict
+    (or a fit JSON holding one under ``"curve"``). Raises InputError when it is not one."""
+    from .core import DISCRETE_PARAMS, SMOOTH_PARAMS, DiscreteElastica, SmoothElastica
+    if isinstance(d, dict) and "curve" in d and isinstance(d["curve"], dict):
+        d = d["curve"]
+    if not isinstance(d, dict) or d.get("type") not in ("smooth", "discrete"):
+        raise InputError(f"{name}: no elastica curve (a 'type' of 'smooth' or 'discrete')")
+    names = SMOOTH_PARAMS if d["type"] == "smooth" else DISCRETE_PARAMS + ("n",)
+    missing = [n for n in names if n not in d]
+    if missing:
+        raise InputError(f"{name}: {d['type']} curve lacks {', '.join(missing)}")
+    try:
+        kw = {n: float(d[n]) for n in names}
+        if d["type"] == "smooth":
+            return SmoothElastica(**kw)
+        kw["n"] = int(kw["n"])
+        return DiscreteElastica(**kw)
+    except (TypeError, ValueError) as exc:
+        raise InputError(f"{name}: invalid {d['type']} curve: {exc}") from None
+
+
+def bspline_to_dict(b) -> Dict[str, Any]:
+    """A JSON-ready dict of a BSpline (degree, poles, knots, mults, max_deviation)."""
+    return b.to_dict()
+
+
+def bspline_from_dict(d: Dict[str, Any], name: str = "bspline"):
+    """The BSpline of :func:`bspline_to_dict`'s dict (or a dict holding one under
+    'bspline'); InputError when it is not one."""
+    from .bspline import BSpline
+    if isinstance(d, dict) and isinstance(d.get("bspline"), dict):
+        d = d["bspline"]
+    try:
+        return BSpline.from_dict(d)
+    except (TypeError, ValueError) as exc:
+        raise InputError(f"{name}: not a B-spline ({exc})") from None
+
+
+def _clean(obj):
+    """Replace NaN/inf (not JSON) by None, numpy scalars/arrays by Python ones."""
+    if isinstance(obj, dict):
+        return {str(k): _clean(v) for k, v in obj.items()}
+    if isinstance(obj, (list, tuple)):
+        return [_clean(v) for v in obj]
+    if isinstance(obj, np.ndarray):
+        return _clean(obj.tolist())
+    if isinstance(obj, (np.integer,)):
+        return int(obj)
+    if isinstance(obj, (float, np.floating)):
+        v = float(obj)
+        return v if math.isfinite(v) else None
+    return obj
+
+
+def write_json(obj: Any, path: PathLike) -> None:
+    """Write ``obj`` as indented JSON to ``path`` ('-' = standard output)."""
+    text = json.dumps(_clean(obj), indent=2) + "\n"
+    if str(path) == "-":
+        import sys
+        sys.stdout.write(text)
+    else:
+        Path(path).write_text(text)
+
+
+def read_json(path: PathLike) -> Any:
+    """Read a JSON file; InputError when missing or malformed."""
+    p = Path(path)
+    if not p.is_file():
+        raise InputError(f"{path}: no such file")
+    try:
+        return json.loads(p.read_text())
+    except (ValueError, UnicodeDecodeError) as exc:
+        raise InputError(f"{path}: not valid JSON ({exc})") from None
+
+
+# ---------------------------------------------------------------- DXF
+
+def have_ezdxf() -> bool:
+    """True when the optional DXF library ``ezdxf`` is importable."""
+    try:
+        import ezdxf  # noqa: F401
+    except ImportError:
+        return False
+    return True
+
+
+def _xyz(p) -> list:
+    """A 2D or 3D point as three floats (z = 0 for 2D)."""
+    v = [float(c) for c in p[:3]]
+    return v + [0.0] * (3 - len(v))
+
+
+def write_dxf_spline(splines, path: PathLike, points: Optional[np.ndarray] = None) -> None:
+    """Write one BSpline (or a list of them; 2D or 3D poles) as DXF SPLINE entities on
+    layer 'elastica' (control points, the full knot vector, degree) with ezdxf;
+    ``points`` (n, 2) or (n, 3), if given, go on layer 'data' as POINT entities. Raises InputError when
+    ezdxf is not installed."""
+    try:
+        import ezdxf
+    except ImportError:
+        raise InputError("DXF output needs the optional package ezdxf (pip install ezdxf)") from None
+    if not isinstance(splines, (list, tuple)):
+        splines = [splines]
+    doc = ezdxf.new("R2010")
+    msp = doc.modelspace()
+    for b in splines:
+        knots = np.repeat(np.asarray(b.knots, dtype=np.float64), np.asarray(b.mults, dtype=np.int64))
+        ctrl = [tuple(_xyz(p)) for p in np.asarray(b.poles, dtype=np.float64)]
+        msp.add_open_spline(ctrl, degree=int(b.degree), knots=knots.tolist(),
+                            dxfattribs={"layer": "elastica"})
+    if points is not None:
+        for p in np.asarray(points, dtype=np.float64):
+            msp.add_point(tuple(_xyz(p)), dxfattribs={"layer": "data"})
+    doc.saveas(str(path))

@@ -1,0 +1,410 @@
+"""The `elastica` command (python -m libelastica) through subprocess, the way users
+run it: exit statuses (0 ok, 1 no convergence, 2 bad input with one line on stderr
+and no traceback), JSON that reproduces the geometry, pictures that are written."""
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import libelastica as el
+from libelastica.io import InputError, read_points
+from libelastica.report import have_matplotlib
+
+ROOT = Path(__file__).resolve().parents[2]
+EX = ROOT / "examples"
+SAMPLE_2D = EX / "sample_2d.csv"
+SAMPLE_3D = EX / "sample_3d.txt"
+SAMPLE_S = EX / "sample_s_curve.csv"
+
+
+def run(*args, cwd=None, env_extra=None):
+    env = dict(os.environ)
+    env.update(env_extra or {})
+    return subprocess.run([sys.executable, "-m", "libelastica", *map(str, args)], cwd=cwd,
+                          env=env, capture_output=True, text=True, timeout=120)
+
+
+class Result:
+    def __init__(self, returncode, stdout, stderr):
+        self.returncode, self.stdout, self.stderr = returncode, stdout, stderr
+
+
+def cli(capsys, *args):
+    """The same command in-process (libelastica.cli.main), for the many small cases."""
+    from libelastica.cli import main
+    capsys.readouterr()
+    try:
+        code = main([str(a) for a in args])
+    except SystemExit as exc:       # argparse: --help, usage errors
+        code = exc.code
+    out, err = capsys.readouterr()
+    return Result(code, out, err)
+
+
+def assert_one_line_error(r, code=2):
+    assert r.returncode == code, (r.returncode, r.stdout, r.stderr)
+    lines = [ln for ln in r.stderr.splitlines() if ln.strip()]
+    assert len(lines) == 1, r.stderr
+    assert "Traceback" not in r.stderr and "Traceback" not in r.stdout
+    return lines[0]
+
+
+def svg_ok(path: Path):
+    assert path.is_file() and path.stat().st_size > 1000
+    root = ET.parse(path).getroot()          # well-formed XML
+    assert root.tag.endswith("svg")
+    return root
+
+
+# ------------------------------------------------------------------ help, usage errors
+
+def test_help_lists_commands_with_examples(capsys):
+    r = run("--help")
+    assert r.returncode == 0
+    for cmd in ("fit", "hermite", "bspline", "blend"):
+        assert cmd in r.stdout
+        rc = cli(capsys, cmd, "--help")
+        assert rc.returncode == 0 and "examples:" in rc.stdout, cmd
+
+
+def test_usage_error_is_one_line():
+    assert "error" in assert_one_line_error(run("fit", "x.csv", "--model", "cubic"))
+
+
+@pytest.mark.parametrize("args", [["fit"], ["hermite", "0", "0", "1"], ["nosuchcommand"],
+                                  ["hermite", "0", "0", "1", "0", "1", "0", "1", "0"],
+                                  ["fit", "x.csv", "--step", "abc"]])
+def test_usage_errors_are_one_line(capsys, args):
+    line = assert_one_line_error(cli(capsys, *args))
+    assert "error" in line
+
+
+# ------------------------------------------------------------------ bad input files
+
+BAD = {
+    "missing": None,
+    "malformed.csv": "x,y\n0,0\n1,abc\n2,1\n",
+    "two_points.csv": "0,0\n1,1\n",
+    "nan.csv": "0,0\n1,nan\n2,1\n3,0\n",
+    "inf.txt": "0 0\n1 inf\n2 1\n3 0\n",
+    "four_columns.csv": "0,0,0,0\n1,1,1,1\n2,2,2,2\n",
+    "ragged.csv": "0,0\n1,1,1\n2,2\n",
+    "empty.csv": "# nothing\n",
+    "same_point.csv": "1,1\n1,1\n1,1\n",
+}
+
+
+@pytest.mark.parametrize("name", ["missing", "malformed.csv"])
+def test_bad_input_exit_2_one_line_subprocess(tmp_path, name):
+    path = tmp_path / name
+    if BAD[name] is not None:
+        path.write_text(BAD[name])
+    line = assert_one_line_error(run("fit", path, "--svg", tmp_path / "out.svg"))
+    assert name in line                      # the message names the file
+    assert not (tmp_path / "out.svg").exists()
+
+
+@pytest.mark.parametrize("name", sorted(BAD))
+def test_bad_input_exit_2_one_line(capsys, tmp_path, name):
+    path = tmp_path / name
+    if BAD[name] is not None:
+        path.write_text(BAD[name])
+    line = assert_one_line_error(cli(capsys, "fit", path, "--svg", tmp_path / "out.svg"))
+    assert name in line
+    assert not (tmp_path / "out.svg").exists()
+
+
+def test_bad_npy_exit_2(capsys, tmp_path):
+    np.save(tmp_path / "flat.npy", np.arange(10.0))
+    assert_one_line_error(cli(capsys, "fit", tmp_path / "flat.npy"))
+    (tmp_path / "junk.npy").write_bytes(b"not numpy")
+    assert_one_line_error(cli(capsys, "fit", tmp_path / "junk.npy"))
+
+
+def test_bad_numbers_on_command_line(capsys):
+    assert_one_line_error(cli(capsys, "hermite", "0", "0", "1", "0", "nan", "0", "1", "0",
+                              "--tension", "1"))
+    assert_one_line_error(cli(capsys, "hermite", "0", "0", "1", "0", "0", "0", "1", "0",
+                              "--tension", "1"))         # p0 == p1: DomainError -> 2
+    assert_one_line_error(cli(capsys, "blend", "0", "0", "0", "0", "0", "0", "1", "1"))
+
+
+# ------------------------------------------------------------------ readers
+
+def test_read_points_formats(tmp_path):
+    pts = np.array([[0.0, 0.0], [1.0, 0.5], [2.0, 0.7], [3.0, 0.6]])
+    (tmp_path / "a.csv").write_text("# comment\nx,y\n" + "".join(f"{x},{y}\n" for x, y in pts))
+    (tmp_path / "b.txt").write_text("".join(f"  {x}\t{y}  \n" for x, y in pts) + "\n")
+    (tmp_path / "c.csv").write_text("".join(f"{x};{y}\n" for x, y in pts))
+    np.save(tmp_path / "d.npy", pts)
+    for name in ("a.csv", "b.txt", "c.csv", "d.npy"):
+        got = read_points(tmp_path / name)
+        assert got.dtype == np.float64 and got.flags.c_contiguous
+        np.testing.assert_array_equal(got, pts)
+    assert read_points(SAMPLE_3D).shape[1] == 3
+    with pytest.raises(InputError):
+        read_points(tmp_path / "a.csv", min_points=5)
+
+
+# ------------------------------------------------------------------ hermite
+
+def test_hermite_table_json_and_svg(capsys, tmp_path):
+    args = ["0", "0", "0", "1", "2", "0", "0", "-1", "--length", "4"]
+    sols = el.hermite((0, 0), (0, 1), (2, 0), (0, -1), length=4.0)
+    assert sols
+    r = run("hermite", *args, "--svg", tmp_path / "h.svg",
+            env_extra={"LIBELASTICA_NO_MATPLOTLIB": "1"})       # the built-in writer's polylines
+    assert r.returncode == 0, r.stderr
+    table = [ln for ln in r.stdout.splitlines()[2:] if ln.strip()]
+    assert len(table) == len(sols)
+    root = svg_ok(tmp_path / "h.svg")
+    assert sum(1 for e in root.iter() if e.tag.endswith("polyline")) >= len(sols)
+    doc = json.loads(cli(capsys, "hermite", *args, "--json", "-").stdout)
+    assert len(doc["solutions"]) == len(sols)
+    for s in doc["solutions"]:
+        c = el.SmoothElastica(**{k: v for k, v in s["curve"].items() if k != "type"})
+        ends = c.points([0.0, c.length])
+        if s["reversed"]:
+            ends = ends[::-1]
+        np.testing.assert_allclose(ends, [[0, 0], [2, 0]], atol=1e-7)
+        assert c.length == pytest.approx(4.0)
+
+
+def test_png_or_clear_error(tmp_path):
+    out = tmp_path / "h.png"
+    r = run("hermite", "0", "0", "1", "0", "1", "0", "1", "0", "--tension", "10", "--png", out)
+    if have_matplotlib():
+        assert r.returncode == 0, r.stderr
+        assert out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    else:
+        assert "matplotlib" in assert_one_line_error(r)
+
+
+def test_svg_without_matplotlib(capsys, monkeypatch, tmp_path):
+    """The built-in SVG writer (forced) draws the same picture without matplotlib."""
+    out = tmp_path / "b.svg"
+    r = run("blend", "0", "0", "0.3", "0.8", "0.7", "0.9", "1", "0", "--svg", out,
+            env_extra={"LIBELASTICA_NO_MATPLOTLIB": "1"})
+    assert r.returncode == 0, r.stderr
+    root = svg_ok(out)
+    texts = " ".join(e.text or "" for e in root.iter() if e.tag.endswith("text"))
+    assert "curvature" in texts and "k = 0.5" in texts
+    monkeypatch.setenv("LIBELASTICA_NO_MATPLOTLIB", "1")
+    r = cli(capsys, "blend", "0", "0", "0.3", "0.8", "0.7", "0.9", "1", "0", "--png",
+            tmp_path / "b.png")
+    assert "matplotlib" in assert_one_line_error(r)
+
+
+# ------------------------------------------------------------------ blend
+
+def test_blend_interpolates_the_four_points(capsys):
+    pts = np.array([[0, 0], [0.3, 0.8], [0.7, 0.9], [1, 0]], dtype=float)
+    r = cli(capsys, "blend", *pts.ravel(), "--m", "0.3", "--d", "2", "--tol", "1e-7", "--json", "-")
+    assert r.returncode == 0, r.stderr
+    doc = json.loads(r.stdout)
+    assert doc["m"] == pytest.approx(0.3) and doc["d"] == pytest.approx(2.0)
+    q = np.array(doc["control_points"])
+    curve = el.blend_curve(pts, m=0.3, d=2.0)
+    np.testing.assert_allclose(q, curve.q, atol=1e-12)
+    xy = el.EllipticBlend(m=0.3, d=2.0).evaluate(q, np.linspace(0, 1, 2001))
+    for p in pts:                              # interpolate mode passes through every point
+        assert np.min(np.linalg.norm(xy - p, axis=1)) < 2e-3
+    b = doc["bspline"]
+    assert 0 <= b["max_deviation"] <= 1e-7
+    assert len(b["knots"]) == len(b["mults"])
+
+
+def test_dxf_or_clear_error(capsys, tmp_path):
+    from libelastica.io import have_ezdxf
+    out = tmp_path / "b.dxf"
+    r = cli(capsys, "blend", "0", "0", "0.3", "0.8", "0.7", "0.9", "1", "0", "--dxf", out)
+    if have_ezdxf():
+        assert r.returncode == 0, r.stderr
+        import ezdxf
+        splines = ezdxf.readfile(str(out)).modelspace().query("SPLINE")
+        assert len(splines) == 1
+    else:
+        assert "ezdxf" in assert_one_line_error(r)
+        assert not out.exists()
+
+
+# ------------------------------------------------------------------ fit
+
+def _dist_to_curve(data, curve_dict):
+    from libelastica.io import curve_from_dict
+    from libelastica.report import closest_points
+    c = curve_from_dict(curve_dict)
+    xy = c.points(np.linspace(0, c.length, 2000)) if curve_dict["type"] == "smooth" else c.points()
+    return np.linalg.norm(closest_points(data, xy) - data, axis=1)
+
+
+@pytest.mark.parametrize("model", ["discrete", "smooth"])
+def test_fit_2d_json_svg(tmp_path, model):
+    data = read_points(SAMPLE_2D)
+    # discrete: matplotlib's SVG where installed; smooth: the built-in writer
+    env = {"LIBELASTICA_NO_MATPLOTLIB": "1"} if model == "smooth" else {}
+    r = run("fit", SAMPLE_2D, "--model", model, "--json", tmp_path / "f.json",
+            "--svg", tmp_path / "f.svg", env_extra=env)
+    assert r.returncode == 0, r.stderr
+    assert "rms" in r.stdout
+    doc = json.loads((tmp_path / "f.json").read_text())
+    assert doc["converged"] and doc["curve"]["type"] == model
+    assert doc["max_error"] >= doc["rms"] > 0
+    d = _dist_to_curve(data, doc["curve"])       # sample noise: sigma 0.2 per coordinate
+    assert d.max() < 1.5 and np.sqrt(np.mean(d ** 2)) < 0.5
+    svg_ok(tmp_path / "f.svg")
+
+
+def test_fit_3d_reports_the_plane(capsys, tmp_path):
+    r = cli(capsys, "fit", SAMPLE_3D, "--json", tmp_path / "f.json")
+    assert r.returncode == 0, r.stderr
+    assert "plane fit" in r.stdout
+    doc = json.loads((tmp_path / "f.json").read_text())
+    n = np.array(doc["plane"]["normal"])
+    # sample_3d.txt is sample_2d.csv rotated so that the plane normal is (0.6, 0, 0.8)
+    assert abs(abs(n @ [0.6, 0.0, 0.8]) - 1.0) < 1e-3
+    assert doc["plane"]["rms"] < 0.1
+    assert doc["converged"] and doc["rms"] < 0.5
+
+
+def test_fit_fix_start(capsys, tmp_path):
+    data = read_points(SAMPLE_2D)
+    r = cli(capsys, "fit", SAMPLE_2D, "--fix", "x0,y0", "--json", "-")
+    assert r.returncode == 0, r.stderr
+    c = json.loads(r.stdout)["curve"]
+    assert (c["x0"], c["y0"]) == pytest.approx(tuple(data[0]), abs=1e-12)
+
+
+def test_fit_keyline_two_sides(capsys, tmp_path):
+    r = cli(capsys, "fit", SAMPLE_S, "--keyline", "--json", tmp_path / "k.json",
+            "--svg", tmp_path / "k.svg")
+    assert r.returncode == 0, r.stderr
+    doc = json.loads((tmp_path / "k.json").read_text())
+    assert len(doc["sides"]) == 2
+    for side in doc["sides"]:
+        assert side["converged"] and side["rms"] < 0.3      # sample noise sigma 0.1
+        assert side["curve"]["h"] == pytest.approx(side["step"])   # h pinned to r
+    a, b = (s["curve"] for s in doc["sides"])
+    assert (a["x0"], a["y0"]) == pytest.approx((b["x0"], b["y0"]))  # both start at the inflection
+    # the generating elastica (see the file's header) inflects where u = K(0.9)
+    c = el.SmoothElastica(x0=0, y0=0, phi=0, mu=1.265625e-4, k=0.9, q=1.2, length=240)
+    from scipy.special import ellipk
+    true = c.points([(ellipk(0.81) - 1.2) / np.sqrt(c.mu)])[0]
+    assert np.linalg.norm(np.array(doc["sides"][0]["inflection_point"]) - true) < 25.0
+    svg_ok(tmp_path / "k.svg")
+
+
+def test_fit_keyline_3d(capsys, tmp_path):
+    r = cli(capsys, "fit", EX / "keyline_3d.csv", "--keyline", "--step", "3", "--json", "-")
+    assert r.returncode == 0, r.stderr
+    doc = json.loads(r.stdout)
+    assert doc["sides"][0]["plane"]["rms"] < 1.0
+    assert len(doc["sides"][0]["inflection_point"]) == 3       # mapped back to 3D
+
+
+def test_fit_not_converged_exit_1(capsys):
+    r = cli(capsys, "fit", SAMPLE_S, "--model", "smooth", "--max-iter", "1")
+    assert r.returncode == 1, (r.stdout, r.stderr)
+    assert "status" in r.stdout and "ok" not in r.stdout.split("status")[-1]
+
+
+def test_fit_npy_and_bspline_roundtrip(capsys, tmp_path):
+    np.save(tmp_path / "p.npy", read_points(SAMPLE_2D))
+    r = cli(capsys, "fit", tmp_path / "p.npy", "--model", "smooth", "--json", tmp_path / "f.json")
+    assert r.returncode == 0, r.stderr
+    r = cli(capsys, "bspline", tmp_path / "f.json", "--tol", "1e-6", "--json", "-")
+    assert r.returncode == 0, r.stderr
+    doc = json.loads(r.stdout)
+    from libelastica.io import bspline_from_dict, curve_from_dict
+    b, c = bspline_from_dict(doc), curve_from_dict(doc)
+    assert 0 <= b.max_deviation <= 1e-6
+    t = np.linspace(*b.domain, 301)
+    np.testing.assert_allclose(b.evaluate(t), c.points(np.linspace(0, c.length, 301)), atol=1e-5)
+
+
+def test_fit_batch_summary_and_progress(tmp_path):
+    files = [SAMPLE_2D, SAMPLE_3D, SAMPLE_S]
+    r = run("fit", *files, "--progress", "--json", tmp_path / "out" / "{stem}.json",
+            "--svg", tmp_path / "pics")
+    assert r.returncode == 0, r.stderr
+    assert "3/3" in r.stderr
+    lines = r.stdout.strip().splitlines()
+    assert lines[0].split()[:3] == ["file", "model", "k"] and len(lines) == 2 + len(files)
+    for f in files:
+        assert json.loads((tmp_path / "out" / f"{f.stem}.json").read_text())["converged"]
+        svg_ok(tmp_path / "pics" / f"{f.stem}.svg")
+
+def test_fit_batch_with_bad_file_exit_2(capsys, tmp_path):
+    bad = tmp_path / "bad.csv"
+    bad.write_text("0,0\n1,1\n")
+    r = cli(capsys, "fit", SAMPLE_2D, bad, "--json", "-")
+    assert r.returncode == 2
+    recs = json.loads(r.stdout)
+    assert recs[0]["converged"] and recs[1]["status"].startswith("bad input")
+
+
+@pytest.fixture
+def fake_ezdxf(monkeypatch):
+    """A stand-in for ezdxf following its documented API (new(), modelspace(),
+    add_open_spline(control_points, degree, knots, dxfattribs), add_point, saveas) that
+    records the calls, so the DXF writer is checked where ezdxf is not installed."""
+    import types
+    calls = []
+
+    class Msp:
+        def add_open_spline(self, control_points, degree=3, knots=None, dxfattribs=None):
+            calls.append(("spline", list(control_points), degree, list(knots), dxfattribs))
+
+        def add_point(self, p, dxfattribs=None):
+            calls.append(("point", p, dxfattribs))
+
+    class Doc:
+        def modelspace(self):
+            return Msp()
+
+        def saveas(self, path):
+            Path(path).write_text("dxf")
+
+    fake = types.ModuleType("ezdxf")
+    fake.new = lambda version="R2010": Doc()
+    monkeypatch.setitem(sys.modules, "ezdxf", fake)
+    return calls
+
+
+def test_dxf_writer_passes_the_full_knot_vector(fake_ezdxf, tmp_path):
+    """Distinct knots + multiplicities become DXF's flat, clamped knot vector."""
+    from libelastica.io import write_dxf_spline
+    c = el.SmoothElastica(x0=0, y0=0, phi=0, mu=1.0, k=0.8, q=0.0, length=3.0)
+    b = c.to_bspline(tol=1e-6, degree=3)
+    write_dxf_spline(b, tmp_path / "c.dxf", points=np.zeros((2, 2)))
+    (_, ctrl, degree, knots, attribs), = [c for c in fake_ezdxf if c[0] == "spline"]
+    assert degree == 3 and attribs == {"layer": "elastica"}
+    assert len(knots) == len(ctrl) + degree + 1
+    assert np.all(np.diff(knots) >= 0)
+    assert knots[:4] == [b.knots[0]] * 4 and knots[-4:] == [b.knots[-1]] * 4   # clamped
+    np.testing.assert_allclose(np.array(ctrl)[:, :2], b.poles)
+    assert np.all(np.array(ctrl)[:, 2] == 0.0)
+    assert sum(1 for c in fake_ezdxf if c[0] == "point") == 2
+
+
+def test_fit_3d_dxf_in_input_coordinates(capsys, fake_ezdxf, tmp_path):
+    """For 3D input the DXF spline is the fitted curve mapped back into 3D: its poles lie
+    in the fitted plane and it starts next to the first measured point."""
+    pts = read_points(SAMPLE_3D)
+    r = cli(capsys, "fit", SAMPLE_3D, "--model", "smooth", "--dxf", tmp_path / "f.dxf",
+            "--json", "-")
+    assert r.returncode == 0, r.stderr
+    doc = json.loads(r.stdout)
+    (_, ctrl, _, _, _), = [c for c in fake_ezdxf if c[0] == "spline"]
+    ctrl = np.array(ctrl)
+    origin, normal = np.array(doc["plane"]["origin"]), np.array(doc["plane"]["normal"])
+    assert np.abs((ctrl - origin) @ normal).max() < 1e-9
+    assert np.linalg.norm(ctrl[0] - pts[0]) < 1.0            # noise sigma 0.2
+    assert len([c for c in fake_ezdxf if c[0] == "point"]) == len(pts)
