@@ -14,15 +14,18 @@
  *  - the B-spline is parametrised by the arc length s of the elastica on
  *    [0, length], clamped, simple interior knots (C^{p-1});
  *  - poles by linear least squares on a uniform grid of exact samples gamma(s_i)
- *    (at least 3(p+1) in the smallest span), end poles fixed at the end points
- *    (so both ends are interpolated);
+ *    (at least 3(p+1) in the smallest span), the first two and last two poles
+ *    fixed so that B(0) = gamma(0), B(L) = gamma(L) and B'(0), B'(L) are the
+ *    exact unit tangents (fit_poles()): both ends are interpolated with the
+ *    elastica's tangent (G1 joins to other geometry stay exact);
  *  - knots: a degree-p spline's error on a span h is about c h^{p+1}
  *    |gamma^(p+1)|, so knots equidistribute the integral of
  *    g = |gamma^(p+1)|^{1/(p+1)}, computed exactly from the pendulum equation
  *    of the tangent angle (density()); the number of spans N is found by
- *    scaling with the error ratio and bisection; then the knots of the
- *    smallest failing N are moved by the measured span errors (correction()),
- *    and N is lowered while that passes;
+ *    scaling with the error ratio and bisection; then the knots are moved by
+ *    the measured span errors (correction(), accumulated over the tries, which
+ *    also gives the end spans the extra density their fixed end poles need),
+ *    from the smallest failing N downwards by the error ratio and bisection;
  *  - the distance: for t in [0, L], the foot point on the elastica is
  *    s1(t) = clamp(t + Delta), Delta = e.T / max(1 - kappa e.N, 1/2) (one
  *    Newton step on (B(t) - gamma(s)).T(s) = 0 from s = t, e = B(t) - gamma(t)),
@@ -352,6 +355,11 @@ static int ws_grid(fit_ws *w, size_t M)
     for (size_t i = 0; i <= M; i++) w->s[i] = w->L * (double)i / (double)M;
     w->s[M] = w->L;
     int st = el_smooth_eval(w->par, M + 1, w->s, w->xy, w->th, w->ka);
+    /* the ends exactly as a single-point el_smooth_eval gives them (they become
+     * the fixed end poles and tangents, fit_poles), not with the rounding of
+     * the progression */
+    if (!st) st = el_smooth_eval(w->par, 1, &w->s[0], w->xy, w->th, w->ka);
+    if (!st) st = el_smooth_eval(w->par, 1, &w->s[M], w->xy + 2 * M, w->th + M, w->ka + M);
     for (size_t i = 0; i <= M && !st; i++) {
         w->cs[2 * i] = cos(w->th[i]);
         w->cs[2 * i + 1] = sin(w->th[i]);
@@ -399,19 +407,42 @@ static int ensure_grid(fit_ws *w, size_t N, const double *breaks)
 }
 
 /*
- * Least squares for the poles P_1..P_{n-2} (n = N + p), the end poles fixed at
- * gamma(0), gamma(L): normal equations sum_i N_a(s_i) N_c(s_i), banded with p
- * sub-diagonals, by GSL's banded Cholesky. poles: 2n.
+ * Least squares for the poles with both end points and both end tangents
+ * imposed (n = N + p poles, flat clamped knots U_0 = .. = U_p = 0,
+ * U_{n} = .. = U_{n+p} = L). The first derivative poles (Piegl & Tiller (3.8))
+ * give at the ends
+ *   B'(0) = p (P_1 - P_0) / (U_{p+1} - U_1),
+ *   B'(L) = p (P_{n-1} - P_{n-2}) / (U_{n+p-1} - U_{n-1}),
+ * with U_1 = 0 and U_{n+p-1} = L, so with the exact unit tangents
+ * T_0 = (cos theta(0), sin theta(0)), T_L = (cos theta(L), sin theta(L)) (the
+ * spline's parameter is the arc length, speed 1):
+ *   P_0 = gamma(0),  P_1 = P_0 + U_{p+1} / p T_0,
+ *   P_{n-1} = gamma(L),  P_{n-2} = P_{n-1} - (L - U_{n-1}) / p T_L.
+ * (N = 1: U_{p+1} = L and U_{n-1} = U_p = 0, the same formulas; p >= 3 makes
+ * the four indices distinct.) The unknowns P_2..P_{n-3} (nu = n - 4 of them,
+ * possibly none) by linear least squares on the grid: normal equations
+ * sum_i N_a(s_i) N_c(s_i), banded with p sub-diagonals, by GSL's banded
+ * Cholesky, the fixed poles' contributions moved to the right-hand side.
+ * poles: 2n.
  */
 static int fit_poles(fit_ws *w, size_t N, double *poles)
 {
     const int p = w->p;
-    const size_t n = N + (size_t)p, nu = n - 2, nd = ((size_t)p < nu ? (size_t)p : nu - 1) + 1;
+    const size_t n = N + (size_t)p, nu = n - 4;
+    const size_t nd = nu ? ((size_t)p < nu ? (size_t)p : nu - 1) + 1 : 1;
     const double *U = w->U;
-    memset(w->AB, 0, nu * nd * sizeof *w->AB);
-    memset(w->bx, 0, nu * sizeof *w->bx);
-    memset(w->by, 0, nu * sizeof *w->by);
-    const double x0 = w->xy[0], y0 = w->xy[1], x1 = w->xy[2 * w->M], y1 = w->xy[2 * w->M + 1];
+    /* fixed poles: 0, 1, n-2, n-1 (the grid's end samples are the exact ends) */
+    const double a0 = U[p + 1] / p, a1 = (w->L - U[n - 1]) / p;
+    const double *e0 = w->xy, *e1 = w->xy + 2 * w->M, *T0 = w->cs, *T1 = w->cs + 2 * w->M;
+    poles[0] = e0[0]; poles[1] = e0[1];
+    poles[2] = e0[0] + a0 * T0[0]; poles[3] = e0[1] + a0 * T0[1];
+    poles[2 * (n - 1)] = e1[0]; poles[2 * (n - 1) + 1] = e1[1];
+    poles[2 * (n - 2)] = e1[0] - a1 * T1[0]; poles[2 * (n - 2) + 1] = e1[1] - a1 * T1[1];
+    if (nu) {
+        memset(w->AB, 0, nu * nd * sizeof *w->AB);
+        memset(w->bx, 0, nu * sizeof *w->bx);
+        memset(w->by, 0, nu * sizeof *w->by);
+    }
     size_t k = (size_t)p;
     for (size_t i = 0; i <= w->M; i++) {
         const double t = w->s[i];
@@ -419,34 +450,37 @@ static int fit_poles(fit_ws *w, size_t N, double *poles)
         double *B = w->Bc + i * (size_t)(p + 1);
         basis_funs(U, k, p, t, B);
         w->kc[i] = k;
+        if (!nu) continue;
         double tx = w->xy[2 * i], ty = w->xy[2 * i + 1];
         const size_t g0 = k - (size_t)p;
         for (int a = 0; a <= p; a++) {
             const size_t g = g0 + (size_t)a;
-            if (g == 0) { tx -= B[a] * x0; ty -= B[a] * y0; }
-            else if (g == n - 1) { tx -= B[a] * x1; ty -= B[a] * y1; }
+            if (g < 2 || g + 2 >= n) { tx -= B[a] * poles[2 * g]; ty -= B[a] * poles[2 * g + 1]; }
         }
         for (int a = 0; a <= p; a++) {
             const size_t ga = g0 + (size_t)a;
-            if (ga == 0 || ga == n - 1) continue;
-            w->bx[ga - 1] += B[a] * tx;
-            w->by[ga - 1] += B[a] * ty;
+            if (ga < 2 || ga + 2 >= n) continue;
+            w->bx[ga - 2] += B[a] * tx;
+            w->by[ga - 2] += B[a] * ty;
             for (int c = a; c <= p; c++) {
                 const size_t gc = g0 + (size_t)c;
-                if (gc == n - 1) continue;
-                w->AB[(ga - 1) * nd + (gc - ga)] += B[a] * B[c];
+                if (gc + 2 >= n) continue;
+                w->AB[(ga - 2) * nd + (gc - ga)] += B[a] * B[c];
             }
         }
     }
-    gsl_matrix_view A = gsl_matrix_view_array(w->AB, nu, nd);
-    if (gsl_linalg_cholesky_band_decomp(&A.matrix)) return EL_ESINGULAR;
-    gsl_vector_view vx = gsl_vector_view_array(w->bx, nu), vy = gsl_vector_view_array(w->by, nu);
-    if (gsl_linalg_cholesky_band_svx(&A.matrix, &vx.vector) ||
-        gsl_linalg_cholesky_band_svx(&A.matrix, &vy.vector))
-        return EL_ESINGULAR;
-    poles[0] = x0; poles[1] = y0;
-    poles[2 * (n - 1)] = x1; poles[2 * (n - 1) + 1] = y1;
-    for (size_t j = 0; j < nu; j++) { poles[2 * (j + 1)] = w->bx[j]; poles[2 * (j + 1) + 1] = w->by[j]; }
+    if (nu) {
+        gsl_matrix_view A = gsl_matrix_view_array(w->AB, nu, nd);
+        if (gsl_linalg_cholesky_band_decomp(&A.matrix)) return EL_ESINGULAR;
+        gsl_vector_view vx = gsl_vector_view_array(w->bx, nu), vy = gsl_vector_view_array(w->by, nu);
+        if (gsl_linalg_cholesky_band_svx(&A.matrix, &vx.vector) ||
+            gsl_linalg_cholesky_band_svx(&A.matrix, &vy.vector))
+            return EL_ESINGULAR;
+        for (size_t j = 0; j < nu; j++) {
+            poles[2 * (j + 2)] = w->bx[j];
+            poles[2 * (j + 2) + 1] = w->by[j];
+        }
+    }
     return el__all_finite(poles, 2 * n) ? EL_ESINGULAR : EL_OK;
 }
 
@@ -564,15 +598,15 @@ static void density(const fit_ws *w, double *g, double *G)
     cumulate(w, g, NULL, G);
 }
 
-/* G = cumulative integral of g, times corr[span of grid point i] when corr is
- * given (the spans of the last fit: w->kc). */
-static void cumulate(const fit_ws *w, const double *g, const double *corr, double *G)
+/* G = cumulative integral of g, times the per-grid-point factor cm[i] when cm
+ * is given (the accumulated corrections of the knot moving). */
+static void cumulate(const fit_ws *w, const double *g, const double *cm, double *G)
 {
     const double h = w->L / (double)w->M;
-    double acc = 0.0, prev = g[0] * (corr ? corr[w->kc[0] - (size_t)w->p] : 1.0);
+    double acc = 0.0, prev = g[0] * (cm ? cm[0] : 1.0);
     G[0] = 0.0;
     for (size_t i = 1; i <= w->M; i++) {
-        const double gi = g[i] * (corr ? corr[w->kc[i] - (size_t)w->p] : 1.0);
+        const double gi = g[i] * (cm ? cm[i] : 1.0);
         acc += 0.5 * (prev + gi) * h;
         prev = gi;
         G[i] = acc;
@@ -741,7 +775,7 @@ int el_smooth_to_bspline(const el_smooth_params *par, double tol, int degree, el
     memset(&w, 0, sizeof w);
     w.par = par; w.p = p; w.L = L; w.tol = tol;
     double *breaks = NULL, *nb = NULL, *poles = NULL, *G = NULL;
-    double *bestbr = NULL, *corr = NULL, *Gc = NULL;
+    double *bestbr = NULL, *corr = NULL, *Gc = NULL, *cm = NULL;
     double dev = INFINITY, tw = 0.0;
     int st, status = EL_OK;
 #define GROW(ptr, cnt) do { double *q_ = realloc(ptr, (cnt) * sizeof *q_); \
@@ -804,34 +838,68 @@ int el_smooth_to_bspline(const el_smooth_params *par, double tol, int degree, el
         }
 
         /* fewer spans by moving knots: the density corrected by the span errors
-         * of the last fit (any N) places the knots for N = lo_fail; on success
-         * one span fewer is tried, from the new fit's errors */
+         * of the last fit (any N) places the knots, first for N = lo_fail;
+         * then N is lowered by the error ratio after a success (as above) and
+         * bisected between the smallest moved success and the largest moved
+         * failure. The corrections accumulate (cm, per grid point): the end
+         * spans, whose first and last two poles are fixed by the end tangents
+         * (fit_poles), need a lasting extra density that the curve's own
+         * density() does not predict. */
         if (hi_pass && lo_fail && Mg == w.M) {
-            size_t Nc = lo_fail;
-            int fails = 0;
-            for (int tries = 0; tries < 6 && Nc >= 1 && fails < 2; tries++) {
+            size_t Nc = lo_fail, mfail = 0;   /* largest failing N with moved knots */
+            int retried = 0;                  /* Nc is being retried */
+            GROW(cm, w.M + 1);
+            for (size_t i = 0; i <= w.M; i++) cm[i] = 1.0;
+            for (int tries = 0; tries < 10 && Nc >= 1; tries++) {
                 GROW(corr, Nlast);
-                GROW(Gc, w.M + 1);
                 correction(&w, Nlast, corr);
-                cumulate(&w, G + w.M + 1, corr, Gc);
+                for (size_t i = 0; i <= w.M; i++) cm[i] *= corr[w.kc[i] - (size_t)p];
                 GROW(nb, Nc + 1);
                 if ((st = ws_reserve(&w, Nc))) goto done;
-                if (breaks_for(&w, Gc, Nc, nb)) break;
-                if ((st = ensure_grid(&w, Nc, nb)) == EL_EMAXITER || Mg != w.M) { st = EL_OK; break; }
-                if (st) goto done;
+                int regrid = 0;
+                for (;;) {   /* knots; a finer grid if they need one (cm carried over) */
+                    GROW(Gc, w.M + 1);
+                    cumulate(&w, G + w.M + 1, cm, Gc);
+                    if (breaks_for(&w, Gc, Nc, nb)) { regrid = -1; break; }
+                    const size_t M0 = w.M;
+                    if ((st = ensure_grid(&w, Nc, nb)) == EL_EMAXITER) { st = EL_OK; regrid = -1; break; }
+                    if (st) goto done;
+                    if (w.M == M0) break;
+                    if (++regrid > 2) { regrid = -1; break; }   /* G is redone after the loop */
+                    GROW(G, 2 * (w.M + 1));
+                    density(&w, G + w.M + 1, G);
+                    Mg = w.M;
+                    double *c2 = malloc((w.M + 1) * sizeof *c2);
+                    if (!c2) { st = EL_ENOMEM; goto done; }
+                    for (size_t i = 0; i <= w.M; i++)   /* nearest old grid point */
+                        c2[i] = cm[(size_t)floor((double)i * (double)M0 / (double)w.M + 0.5)];
+                    free(cm);
+                    cm = c2;
+                }
+                if (regrid < 0) break;
                 set_knots(&w, Nc, nb);
                 GROW(poles, 2 * (Nc + (size_t)p));
                 if ((st = fit_poles(&w, Nc, poles))) goto done;
                 e = fit_errors(&w, Nc, poles);
                 Nlast = Nc;
+                size_t Nn;
                 if (e <= accept) {
                     GROW(bestbr, Nc + 1);
                     memcpy(bestbr, nb, (Nc + 1) * sizeof *nb);
-                    hi_pass = Nmoved = Nc--;
-                    fails = 1;   /* after a success, the first failure ends the search */
+                    hi_pass = Nmoved = Nc;
+                    if (mfail >= Nc) mfail = 0;
+                    const double r = floor(pow(e / (0.96 * accept), ex) * (double)Nc);
+                    Nn = r < (double)Nc ? (size_t)r : Nc - 1;
+                    if (Nn <= mfail) Nn = mfail + (Nc - mfail) / 2;
+                    if (Nn <= mfail) break;
                 } else {
-                    fails++;
+                    mfail = Nc;
+                    if (!retried && !Nmoved) Nn = Nc;   /* once more, with the further correction */
+                    else if (!Nmoved || (Nn = Nc + (Nmoved - Nc) / 2) == Nc) break;
                 }
+                if (Nn < 1 || (Nmoved && Nn >= Nmoved)) break;
+                retried = Nn == Nc;
+                Nc = Nn;
             }
         }
         if (hi_pass) N = hi_pass;
@@ -870,7 +938,7 @@ int el_smooth_to_bspline(const el_smooth_params *par, double tol, int degree, el
     st = emit(&w, N, breaks, poles, dev, out);
 #undef GROW
 done:
-    free(breaks); free(nb); free(poles); free(G); free(bestbr); free(corr); free(Gc);
+    free(breaks); free(nb); free(poles); free(G); free(bestbr); free(corr); free(Gc); free(cm);
     ws_free(&w);
     return st ? st : status;
 }

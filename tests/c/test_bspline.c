@@ -293,6 +293,41 @@ START_TEST(test_smooth_to_bspline_degrees)
 }
 END_TEST
 
+/* The end conditions a CAD user relies on for tangent (G1) joins: B(0), B(L)
+ * are exactly the elastica's end points (as el_smooth_eval gives them), and
+ * B'(0), B'(L) are the exact unit tangents (cos theta, sin theta): direction to
+ * 1e-12 rad, and speed 1 (arc-length parameter), for k below, near, at and
+ * above 1 and tolerances 1e-3 .. 1e-9. */
+START_TEST(test_smooth_to_bspline_end_tangents)
+{
+    static const double ks[7] = {0.3, 0.8, 0.99999, 1.0, 1.00001, 1.5, 3.0};
+    static const double rels[4] = {1e-3, 1e-5, 1e-7, 1e-9};
+    const double k = ks[_i / 4], rel = rels[_i % 4];
+    const el_smooth_params p = {0.7, -1.3, 2.1 - 0.5 * _i, 1.3, k, -0.9 + 0.37 * _i, 6.0};
+    const int degree = 3 + _i % 3 * 2;   /* 3, 5, 7 */
+    const double tol = rel * p.length;
+    el_bspline b;
+    ck_assert_int_eq(el_smooth_to_bspline(&p, tol, degree, &b), EL_OK);
+    ck_assert(b.max_deviation > 0.0 && b.max_deviation <= tol);
+    const double ends[2] = {0.0, p.length};
+    double P[4], D[4];
+    ck_assert_int_eq(el_bspline_eval(&b, 2, ends, P), EL_OK);
+    ck_assert_int_eq(el_bspline_derivative(&b, 1, 2, ends, D), EL_OK);
+    for (int e = 0; e < 2; e++) {
+        double g[2], th;
+        ck_assert_int_eq(el_smooth_eval(&p, 1, &ends[e], g, &th, NULL), EL_OK);
+        ck_assert_double_eq(P[2 * e], g[0]);
+        ck_assert_double_eq(P[2 * e + 1], g[1]);
+        const double c = cos(th), sn = sin(th), dx = D[2 * e], dy = D[2 * e + 1];
+        const double ang = atan2(c * dy - sn * dx, c * dx + sn * dy);   /* B' vs T, in (-pi, pi] */
+        ck_assert_msg(fabs(ang) <= 1e-12, "k=%g rel=%g end %d: tangent off by %g rad", k, rel, e, ang);
+        ck_assert_msg(fabs(hypot(dx, dy) - 1.0) <= 1e-12, "k=%g rel=%g end %d: speed %.17g", k, rel,
+                      e, hypot(dx, dy));
+    }
+    el_bspline_free(&b);
+}
+END_TEST
+
 START_TEST(test_smooth_to_bspline_bad_input)
 {
     el_smooth_params p = CURVES[1];
@@ -342,6 +377,7 @@ int main(void)
     tcase_add_test(tc, test_interpolate_c2_bad_input);
     tcase_add_loop_test(tc, test_smooth_to_bspline_certified, 0, 9);
     tcase_add_test(tc, test_smooth_to_bspline_degrees);
+    tcase_add_loop_test(tc, test_smooth_to_bspline_end_tangents, 0, 28);
     tcase_add_test(tc, test_smooth_to_bspline_bad_input);
     suite_add_tcase(s, tc);
     return test_run_suite(s);

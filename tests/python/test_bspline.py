@@ -171,6 +171,26 @@ def test_certified_error(name, rel):
     assert np.allclose(b.evaluate([0.0, c.length]), c.points([0.0, c.length]), atol=1e-12 * c.length)
 
 
+@pytest.mark.parametrize("k", [0.5, 0.99999, 1.0, 1.00001, 2.5])
+@pytest.mark.parametrize("rel", [1e-3, 1e-6, 1e-9])
+@pytest.mark.parametrize("degree", [3, 6])
+def test_end_points_and_tangents_are_exact(k, rel, degree):
+    """For tangent (G1) joins in CAD: B(0), B(L) are exactly the elastica's end points
+    and B'(0), B'(L) its unit tangents (cos theta, sin theta): direction to 1e-12 rad,
+    speed 1 (the parameter is the arc length)."""
+    c = el.SmoothElastica(x0=-0.4, y0=1.1, phi=1.9, mu=0.8, k=k, q=0.6 - k, length=7.0)
+    tol = rel * c.length
+    b = smooth_to_bspline(c, tol, degree)
+    assert 0 < b.max_deviation <= tol
+    for s in (0.0, c.length):
+        assert np.array_equal(b.evaluate([s]), c.points([s]))
+        T = np.array([np.cos(c.angle([s])[0]), np.sin(c.angle([s])[0])])
+        d = b.derivative([s], 1)[0]
+        angle = np.arctan2(T[0] * d[1] - T[1] * d[0], T @ d)
+        assert abs(angle) <= 1e-12, (s, angle)
+        assert abs(np.hypot(*d) - 1.0) <= 1e-12
+
+
 @pytest.mark.parametrize("degree", [4, 5, 7])
 def test_higher_degrees_need_fewer_poles(degree):
     c = el.SmoothElastica(**CURVES["inflectional k<1"])
