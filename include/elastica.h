@@ -167,7 +167,142 @@ int el_discrete_jacobian(const el_discrete_params *p, size_t n, double *xy, doub
 
 /* ------------------------------------------------------------------- guess */
 
+/*
+ * Which arc length the smooth model assigns to data point i (the discrete
+ * model always pairs data point i with vertex i):
+ *   EL_PARAM_UNIFORM  s_i = i r, r = length/(n-1): equilateral data (point i
+ *                     at arc length i r of the fitted curve);
+ *   EL_PARAM_CHORD    s_i = t_i length, t_i = (chord length from point 0 to
+ *                     point i) / (total chord length): the chord-length parameter;
+ *   EL_PARAM_AUTO     UNIFORM when the data are equilateral in the large: the
+ *                     sides of the polygon of the means of 32 blocks of
+ *                     consecutive points (of the points themselves when n <= 40)
+ *                     have lengths with a coefficient of variation <= 0.5 (so
+ *                     noisy, uniformly sampled data count as equilateral);
+ *                     CHORD otherwise.
+ */
+enum el_param_mode { EL_PARAM_AUTO = 0, EL_PARAM_UNIFORM = 1, EL_PARAM_CHORD = 2 };
+
+/*
+ * The fractions t_i = s_i/length (t_0 = 0, t_{n-1} = 1, non-decreasing) the
+ * smooth fit uses for n >= 2 points xy (2n) under mode; *mode_used (may be
+ * NULL) receives UNIFORM or CHORD. Errors: EL_EINVAL (NULL, n < 2, NaN/inf,
+ * bad mode), EL_ESINGULAR (all points equal). Outputs untouched on error.
+ */
+int el_fit_fractions(const double *xy, size_t n, int mode, double *t, int *mode_used);
+
+/*
+ * Automatic initial parameters (seed 000 §4.3) for the discrete model from
+ * n >= 4 points xy (2n), vertex i <-> point i. Up to cap candidates are
+ * written to cand, best first (by the rms distance of their vertices to the
+ * points, x0 and y0 by least squares (4.55)); *count receives their number
+ * (>= 1). Method: curvature is affine in the position, (4.25); the version
+ * integrated once, theta(s) = theta_0 + mu2 X(s) - mu1 Y(s) + A s with
+ * X = int x ds, Y = int y ds, is solved by gsl_multifit_linear on the polygon
+ * of block means (tangent angles instead of second differences, so noise is
+ * not amplified); phi and mu from (mu1, mu2) (4.34); B by (4.35); k by (4.37)
+ * (one formula for every k > 0: (4.36) is (4.37) for the reciprocal modulus);
+ * q and z by inverting the Jacobi functions with gsl_sf_ellint_F along the
+ * whole curve (the amplitude atan2(sn, cn), with sn from the tangent and cn
+ * from the curvature, unwrapped, which counts the monotone pieces m of (4.38)
+ * from the data) and a straight-line fit of u_n = z n + q (4.54). Candidates
+ * (at most 6): this guess, the same with one monotone piece less and more
+ * (m -/+ 1), the guess on the other side of k = 1 when k is near 1, and a
+ * circular-arc / straight-line guess.
+ * Errors: EL_EINVAL (NULL, cap = 0, n < 4, NaN/inf), EL_ESINGULAR (all points
+ * equal), EL_ENOMEM, EL_EINTERNAL.
+ */
+int el_guess_discrete(const double *xy, size_t n, el_discrete_params *cand, size_t cap,
+                      size_t *count);
+
+/*
+ * The same for the smooth model (Brander et al.: curvature affine in the
+ * position), data point i at s_i = t_i length with t from el_fit_fractions(mode).
+ * Errors as el_guess_discrete, plus EL_EINVAL for a bad mode.
+ */
+int el_guess_smooth(const double *xy, size_t n, int mode, el_smooth_params *cand, size_t cap,
+                    size_t *count);
+
 /* ------------------------------------------------------------------- fit */
+
+/*
+ * Options of el_fit_discrete / el_fit_smooth; initialise with
+ * el_fit_options_defaults. Parameter indices j follow the model's Jacobian
+ * order: discrete p = (x0, y0, h, phi, z, q, k), smooth p = (x0, y0, phi, mu,
+ * k, q, length).
+ */
+typedef struct el_fit_options {
+    int fixed[7];        /* 1: hold p_j at value[j] (x0, y0 pinned to a point, seed 000 §5.4; h fixed) */
+    double value[7];     /* values of the fixed parameters (input units) */
+    double lower[7];     /* bounds on p_j in input units; -HUGE_VAL / HUGE_VAL: none. Defaults: */
+    double upper[7];     /*   none, except the model's own (h, mu, length > 0, k >= 0) */
+    double tol;          /* Ipopt's tol on the normalised problem (default 1e-12) */
+    int max_iter;        /* Ipopt iterations per candidate (default 200) */
+    int limited_memory;  /* 1: Ipopt's L-BFGS Hessian (the paper's setting) instead of J^T J */
+    int max_candidates;  /* initial guesses fitted at most (default 3; 1 = the best guess only) */
+    int param_mode;      /* smooth model: enum el_param_mode (default EL_PARAM_AUTO) */
+    int use_initial;     /* 1: start from the caller's initial parameters instead of the guess */
+} el_fit_options;
+
+/* Fill *opt with the defaults above. */
+void el_fit_options_defaults(el_fit_options *opt);
+
+/*
+ * Result of a fit. params are finite even when status is not EL_OK: on
+ * EL_ENOCONV / EL_EMAXITER they are the best parameters seen.
+ */
+typedef struct el_fit_discrete_result {
+    el_discrete_params params;    /* fitted */
+    el_discrete_params initial;   /* the initial guess the kept fit started from */
+    double rms;                   /* sqrt(mean |gamma_i - P_i|^2), input units */
+    double max_error;             /* max |gamma_i - P_i|, input units */
+    int iterations;               /* Ipopt iterations, all candidates */
+    int candidates;               /* initial guesses fitted */
+    int ipopt_status;             /* Ipopt's ApplicationReturnStatus of the kept fit */
+    int status;                   /* library status, as returned */
+} el_fit_discrete_result;
+
+typedef struct el_fit_smooth_result {
+    el_smooth_params params;
+    el_smooth_params initial;
+    double rms, max_error;
+    int iterations, candidates, ipopt_status, status;
+    int param_mode;               /* EL_PARAM_UNIFORM or EL_PARAM_CHORD: how s_i was assigned */
+} el_fit_smooth_result;
+
+/*
+ * Least-squares fairing (4.6)-(4.8): the discrete elastica whose vertex i is
+ * nearest the point P_i (n >= 4 points xy, 2n), over every k > 0 (the
+ * optimiser crosses k = 1), solved by Ipopt with the analytic gradient
+ * (4.9)-(4.12) and the Gauss-Newton Hessian J^T J (or L-BFGS, option).
+ * Coordinates are normalised internally (centroid, rms radius), so the fit
+ * is invariant under similarity transforms. initial is read only when
+ * opt->use_initial (else it may be NULL); opt NULL = defaults. Up to
+ * opt->max_candidates initial guesses (el_guess_discrete) are fitted and the
+ * best kept. Noisy data: the iteration stops when the objective stalls
+ * (Ipopt's acceptable level), which is reported as EL_OK. Thread safety:
+ * concurrent fits are safe, but their Ipopt solves are serialised by a
+ * process-wide lock (Debian's MUMPS, Ipopt's linear solver, is not
+ * reentrant).
+ * Returns (and stores in res->status) EL_OK; EL_ENOCONV / EL_EMAXITER with
+ * the best parameters seen; EL_EINVAL (NULL, n < 4, NaN/inf, bad options,
+ * inconsistent bounds), EL_ESINGULAR (all points equal), EL_ENOMEM,
+ * EL_EINTERNAL (Ipopt could not start). On EL_EINVAL/EL_ESINGULAR *res is untouched.
+ */
+int el_fit_discrete(const double *xy, size_t n, const el_fit_options *opt,
+                    const el_discrete_params *initial, el_fit_discrete_result *res);
+
+/*
+ * The same for the smooth elastica: point i at arc length s_i = t_i length
+ * (el_fit_fractions with opt->param_mode: i length/(n-1) for equilateral
+ * data, the chord-length parameter otherwise). Statuses as el_fit_discrete.
+ * Limitation of the parametrisation (4.3) with s increasing: a
+ * non-inflectional (k > 1) smooth elastica always turns counter-clockwise, so
+ * data turning clockwise all along are fitted by the best k < 1 curve (the
+ * discrete model covers both senses through z < 0).
+ */
+int el_fit_smooth(const double *xy, size_t n, const el_fit_options *opt,
+                  const el_smooth_params *initial, el_fit_smooth_result *res);
 
 /* ------------------------------------------------------------------- prep */
 
@@ -302,14 +437,20 @@ typedef struct el_inflection {
  * Estimate the one global inflection of an open polygon xy (2n, n >= 4),
  * seed 000 §5.3 steps (1)-(4), on the resampled, re-normalised polygon.
  * side chooses point 2 of step (1), which the paper picks by eye: +1 the
- * last vertex, -1 the first, 0 automatic (the end whose sub-polygon from point 3
- * strays farther to the side of its chord opposite to point 3, i.e. the one
- * that is not a convex arc). "Upper side" of steps (3) is taken relative to
- * each chord oriented by increasing vertex index (the same as the paper's for
- * x-monotone polygons, and rotation invariant); the switch rule of step (3)
- * is also applied to point 4 of step (2) with the side of point 3 relative to
- * chord 1-2 (no change when point 4 lies beyond the inflection, the paper's
- * case; it keeps an inflection near end 2 inside the search interval).
+ * last vertex, -1 the first, 0 automatic: the end whose sub-polygon from point 3
+ * is not a convex arc, i.e. has vertices on the side of its chord opposite to
+ * point 3 (looked for by descending from point 3 to the farthest vertex on
+ * point 3's side; the shallower, then the larger, evidence wins).
+ * "Upper side" in step (3) is taken relative to each chord oriented by
+ * increasing vertex index (the same as the paper's for x-monotone polygons,
+ * and rotation invariant). The switch rule of step (3) is also applied to
+ * point 4 of step (2), using the side of point 3 relative to chord 1-2. This
+ * changes nothing when point 4 lies beyond the inflection (the paper's case),
+ * and it keeps an inflection near end 2 inside the search interval (without
+ * it, 5% of noise-free cubics were missed by up to 80 r).
+ * Noise moves the estimate (the curve is nearly straight there): on
+ * generated curves the error grows about like sqrt(noise), ~1.5 r at noise
+ * 1e-5 of the length and ~5 r at 1e-4 (r = length/200).
  * Errors: EL_EINVAL (NULL, n < 4, NaN/inf, side not in {-1,0,1}),
  * EL_ESINGULAR (all points equal), EL_EDOM (no inflection: collinear or
  * convex polygon, or coincident end points). *out untouched on error.
@@ -319,7 +460,332 @@ int el_find_inflection(const double *xy, size_t n, int side, el_inflection *out)
 
 /* ------------------------------------------------------------------- hermite */
 
+/*
+ * Hermite interpolation by elastic curves (seed 004): every curve x(s) of
+ * length L at most one period of its curvature with x(0) = p0, x'(0) = t0,
+ * x(L) = p1, x'(L) = t1 whose curvature solves 2 kappa'' + kappa^3 - sigma kappa = 0
+ * (critical points of integral kappa^2 + sigma ds; lambda = sigma/2 in seed 000 (2.6)).
+ *   EL_HERMITE_TENSION: sigma given (any real; sigma < 0 is compression), L is an output;
+ *   EL_HERMITE_LENGTH:  L given (Euler's strip clamped at both ends), sigma is an output.
+ * Units: positions in length units, sigma in 1/length^2.
+ */
+enum el_hermite_mode { EL_HERMITE_TENSION = 0, EL_HERMITE_LENGTH = 1 };
+
+typedef struct el_hermite_options {
+    int mode;              /* EL_HERMITE_TENSION (default) or EL_HERMITE_LENGTH */
+    double sigma;          /* tension, 1/length^2 (tension mode); default 0 (pure bending) */
+    double length;         /* prescribed arc length > 0 (length mode); default 0 (unset) */
+    double tol;            /* accepted end residual: position / |p1-p0| and tangent angle (rad); default 1e-10 */
+    int samples;           /* bracketing samples over the whole search interval (each subinterval gets its share + 2), 4..1000; default 16 */
+    int grid;              /* length mode: number of sigma lines of the search, 8..2000; default 72 */
+    size_t max_solutions;  /* at most this many solutions are kept (lowest energy); default 64 */
+} el_hermite_options;
+
+/*
+ * One solution. curve is a valid el_smooth_params (el_smooth_eval works on it)
+ * with curve.length = length. The parametrisation has kappa = 2k sqrt(mu) cn >= 0
+ * for k > 1, so a loop turning clockwise (non-inflectional, kappa < 0) is stored
+ * traversed backwards: reversed = 1 means curve(0) = p1 with tangent -t1 and
+ * curve(length) = p0 with tangent -t0, i.e. x(s) = curve(length - s).
+ * A straight segment is k = 0. kappa0, kappa1 are the curvatures at p0 and p1
+ * along the p0 -> p1 orientation. residual = max(position error / |p1-p0|,
+ * tangent angle error) measured with el_smooth_eval at both ends.
+ */
+typedef struct el_hermite_solution {
+    el_smooth_params curve;
+    int reversed;          /* 1: curve runs from p1 to p0 (see above) */
+    double length;         /* arc length L */
+    double sigma;          /* tension (given or, in length mode, computed; 0 for a straight segment there) */
+    double energy;         /* bending energy integral kappa^2 ds */
+    int has_inflection;    /* 1 if kappa changes sign inside (0, L) */
+    double kappa0, kappa1; /* curvature at p0 and at p1 */
+    double residual;       /* end-condition error, see above */
+} el_hermite_solution;
+
+/* Solutions sorted by increasing energy; released by el_hermite_result_free. */
+typedef struct el_hermite_result {
+    size_t count;
+    el_hermite_solution *solutions; /* count entries, library-owned */
+} el_hermite_result;
+
+/* Defaults: tension mode, sigma = 0, tol 1e-10, samples 16, grid 72, max_solutions 64. */
+void el_hermite_options_defaults(el_hermite_options *opt);
+
+/*
+ * All elastic curves from (p0, t0) to (p1, t1) (t0, t1: nonzero tangent
+ * directions, normalised inside), length <= one curvature period.
+ * Tension mode follows seed 004 §4: normalisation (p0 = 0, t0 = (0,1),
+ * |p1 - p0| = 1), the three cases of Theorem 6, the kappa_m bound of Theorem 9
+ * (computed for every sigma), subintervals split at the real roots of (40),
+ * at the special values (45) and at the ends of (18) and (44), bracketing and
+ * Brent's method on each. Length mode follows the tension solutions along
+ * sigma (all tension solutions on grid lines sigma_j, then Newton on (kappa0, sigma)). A count of 0 with EL_OK
+ * means no such curve exists (e.g. sigma very negative).
+ * Completeness: the bracketing samples each subinterval, so two zeros of an
+ * objective closer than the sample spacing can be missed unless a parabola
+ * through the samples predicts them (in 10 000 random problems, 2 of 25 000
+ * solutions found with 300 samples were missed with the default 16).
+ * Every solution is verified with el_smooth_eval and kept only if its residual
+ * is <= opt->tol (after a Newton polish on the parameters when it misses by a
+ * little). Very close to the separatrix (|k - 1| < ~1e-6, which happens for
+ * sigma |p1-p0|^2 > ~100) the evaluation itself is only good to ~1e-9, so such
+ * solutions are dropped at tol = 1e-10 and returned with a larger tol.
+ * Length mode costs about 70 tension solves (tens of ms); it also finds fewer
+ * of the solutions with sigma |p1-p0|^2 > ~80 (~2% missed against a 300-line search).
+ * A circular arc (sigma = kappa^2, where the parametrisation needs k = inf) is
+ * returned with k = 1e4, accurate to ~1e-8 only: it appears when opt->tol allows.
+ * res is overwritten (not freed first). EL_EINVAL leaves res untouched; other
+ * errors leave it empty (count 0).
+ * Errors: EL_EINVAL (NULL, non-finite, zero tangent, bad options), EL_EDOM
+ * (p0 = p1, or length < |p1 - p0| in length mode), EL_ENOMEM, EL_EINTERNAL.
+ */
+int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
+                     const double t1[2], const el_hermite_options *opt,
+                     el_hermite_result *res);
+
+/* Release res->solutions and zero res; NULL is a no-op. */
+void el_hermite_result_free(el_hermite_result *res);
+
+/*
+ * Diagnostics of the normalised tension problem (seed 004 §4-5): data
+ * P = x(L), V = x'(L) after the normalisation x(0) = 0, x'(0) = (0,1), |P| = 1.
+ * hcase: 1, 2 or 3 (Theorem 6); kappa_bound: |kappa_m| <= kappa_bound for all
+ * solutions (Theorem 9 with the exact period, any sigma; -1 if no solution can
+ * exist); interval: the search set I~ = [-bound, bound] intersected with (18),
+ * ninterval <= 2 pairs [lo, hi] (case 2: one pair; case 3, where the unknown is
+ * kappa0' for each of the four kappa0 of (24): ninterval = 0); root: real roots of the
+ * polynomial (40) (case 1, 2) inside I~ sorted, root_branch: which root of
+ * (17) reaches kappa_m^2 = 2 sigma there (0: kappa1 = (-V1 + sqrt)/P2,
+ * 1: (-V1 - sqrt)/P2); special: the values (45), kappa0^2 = sigma and
+ * kappa0' = 0, sorted. Errors: EL_EINVAL (NULL, non-finite, |P| != 1, |V| != 1
+ * to 1e-9), EL_EINTERNAL.
+ */
+typedef struct el_hermite_analysis {
+    int hcase;
+    double kappa_bound;
+    size_t ninterval;
+    double interval[4];
+    size_t nroot;
+    double root[8];
+    int root_branch[8];
+    size_t nspecial;
+    double special[4];
+} el_hermite_analysis;
+
+int el_hermite_analyse(const double P[2], const double V[2], double sigma,
+                       el_hermite_analysis *a);
+
 /* ------------------------------------------------------------------- affine */
+
+/*
+ * Affine arc-length polylines, seed 002 (Kaeferboeck). A polyline x_0..x_N
+ * (npts = N+1 points, interleaved x,y) has edges v_i = x_{i+1} - x_i and the
+ * affine polyline coordinates (1)
+ *   A_i = det(v_{i-1}, v_i)  (i = 1..N-1),   B_i = det(v_{i-1}, v_{i+1})  (i = 1..N-2).
+ * It is an affine arc-length polyline when A_i = A != 0 for all i; then (and only
+ * then) the uniform quadratic B-spline with that control polygon is curvature
+ * continuous (seed 002 §2.5). Units: A, B are areas (length^2).
+ */
+
+/* el_bspline is defined in the bspline section below. */
+struct el_bspline;
+
+/* A[i-1] = A_i (npts-2 values) and B[i-1] = B_i (npts-3 values; B may be NULL,
+ * and is not written when npts = 3). npts >= 3. Errors: EL_EINVAL. */
+int el_affine_coords(size_t npts, const double *xy, double *A, double *B);
+
+/* Affine length (3) L2 = sum_{i=1}^{N-1} cbrt(A_i) (real cube root, so a
+ * clockwise polyline has negative length). npts >= 3. Errors: EL_EINVAL. */
+int el_affine_length(size_t npts, const double *xy, double *L2);
+
+/*
+ * Discrete affine curvature (4) k_i = det(n_i, n_{i+1}) / A with the affine
+ * normals n_i = x_{i-1} - 2 x_i + x_{i+1}; for an affine arc-length polyline
+ * this is k_i = 2 - B_i / A. For a general polyline A is replaced by
+ * (A_i + A_{i+1}) / 2. k[i-1] = k_i for i = 1..N-2 (npts-3 values, dimensionless;
+ * invariant under every affine map). npts >= 4.
+ * Errors: EL_EINVAL (bad input), EL_ESINGULAR (A_i + A_{i+1} = 0).
+ */
+int el_affine_curvature(size_t npts, const double *xy, double *k);
+
+/* The three discrete osculating conics of Theorem 2. */
+enum el_affine_conic_kind {
+    EL_CONIC_OUTER = 0,   /* centre xi_i, through x_{i-1}, x_i, x_{i+1}, x_{i+2} */
+    EL_CONIC_INNER = 1,   /* centre xi_i, tangent to the three edges at their midpoints */
+    EL_CONIC_MIDDLE = 2   /* centre xi_i, geometric mean of inner and outer */
+};
+
+/*
+ * One osculating conic of the quadruple x_{i-1}..x_{i+2}:
+ *   coef[0] x^2 + coef[1] x y + coef[2] y^2 + coef[3] x + coef[4] y + coef[5] = 0
+ * (world coordinates, scale arbitrary); type = +1 ellipse (k_i > 0), 0 parabola
+ * (k_i = 0), -1 hyperbola (k_i < 0), (6); center = affine evolute point (5)
+ * xi_i = x_i + n_i / k_i (set to (0,0) for a parabola); kappa = its smooth affine
+ * curvature (7): outer A^(-2/3) k (1-k/4)^(1/3), inner A^(-2/3) k (1-k/4)^(-1/3),
+ * middle A^(-2/3) k (units length^(-4/3)).
+ */
+typedef struct el_affine_conic {
+    int type;
+    double center[2];
+    double coef[6];
+    double kappa;
+} el_affine_conic;
+
+/*
+ * The npts-3 osculating conics of kind `kind` (enum el_affine_conic_kind) of an
+ * affine arc-length polyline, out[i-1] for the quadruple x_{i-1}..x_{i+2}.
+ * npts >= 4. Each quadruple must be equal-area, |A_i - A_{i+1}| <= 1e-6 |A_i|
+ * (else EL_EDOM: the conics need x_{i+1}-x_i || x_{i+2}-x_{i-1}), and k_i < 4 for
+ * the inner and middle conics (else EL_EDOM). Errors: EL_EINVAL, EL_EDOM,
+ * EL_ESINGULAR (A = 0).
+ */
+int el_affine_osculating_conics(size_t npts, const double *xy, int kind, el_affine_conic *out);
+
+/*
+ * Chaikin subdivision (§2.5): each edge x_i x_{i+1} gives 3/4 x_i + 1/4 x_{i+1}
+ * and 1/4 x_i + 3/4 x_{i+1}; out has 2(npts-1) points. Keeps L2 and maps an
+ * affine arc-length polyline with constant A to one with A/8. npts >= 2.
+ */
+int el_affine_chaikin(size_t npts, const double *xy, double *out);
+
+/*
+ * Degree-n Lane–Riesenfeld refinement (Theorem 5) of npts points in R^dim:
+ * x' = mu^degree (x_0, x_0, x_1, x_1, ..., x_N, x_N), mu the averaging operator;
+ * out has 2 npts - degree points of dim coordinates. degree = 2 is Chaikin.
+ * Every affine length element det(dx_i..dx_{i+n-1}) of x (n = dim = degree) gives
+ * two elements of x' with 2^(-n(n+1)/2) of its value, so L_n halves per element (10).
+ * 1 <= degree, dim >= 1, npts >= 1 and 2 npts > degree. Errors: EL_EINVAL.
+ */
+int el_affine_lane_riesenfeld(int dim, int degree, size_t npts, const double *x, double *out);
+
+/*
+ * Affine length elements in R^n, Definition 3 (8): D[i] = det(dx_i, ..., dx_{i+n-1})
+ * for i = 0..npts-1-n (npts-n values), n = dim >= 2, points with dim coordinates.
+ * The polyline is an affine arc-length polyline when all D[i] are equal (9).
+ * Ln (may be NULL) = sum_i sign(D_i) |D_i|^(2/(n(n+1))). npts >= dim + 1.
+ * D may be NULL. Errors: EL_EINVAL; EL_EINTERNAL (GSL LU failed).
+ */
+int el_affine_elements_nd(int dim, size_t npts, const double *x, double *D, double *Ln);
+
+/*
+ * The uniform B-spline of degree `degree` in R^dim with control polygon x
+ * (npts points, npts >= degree + 1), Theorem 4: its Frenet curvatures are all
+ * continuous iff x is an affine arc-length polyline (dim = degree).
+ * clamped = 0: poles = x, knots 0, 1, ..., npts+degree, all multiplicity 1
+ *   (usable parameter range [degree, npts]);
+ * clamped != 0: the SAME curve (the part over [degree, npts], which starts at
+ *   (x_0+x_1)/2 and ends at (x_{N-1}+x_N)/2 for degree 2) as a clamped B-spline:
+ *   knots 0, 1, ..., npts-degree, end multiplicities degree+1, npts poles; the
+ *   first and last degree-1 poles are the blossoms of the end segments, the
+ *   others are x. Interior knots stay uniform, so every joint is a joint of
+ *   the uniform spline.
+ * The library allocates out's arrays (free with el_bspline_free);
+ * out->max_deviation = 0 (exact). Errors: EL_EINVAL, EL_ENOMEM.
+ */
+int el_affine_uniform_bspline(int dim, int degree, size_t npts, const double *x,
+                              int clamped, struct el_bspline *out);
+
+/* el_affine_uniform_bspline with dim = degree = 2 (seed 002 §2.5): G2 iff xy is an
+ * affine arc-length polyline. npts >= 3. */
+int el_affine_quadratic_bspline(size_t npts, const double *xy, int clamped, struct el_bspline *out);
+
+/*
+ * Length of the parabolic arcs of the replacement curve f~ (§4.2) through
+ * samples p_0..p_N: arc j (p_j to p_{j+1}) is the parabola with tangent
+ * p_{j+1}-p_{j-1} at p_j and p_{j+2}-p_j at p_{j+1} (ghost end points
+ * p_{-1} = 3p_0-3p_1+p_2, p_{N+1} = 3p_N-3p_{N-1}+p_{N-2}, the end tangents of the
+ * interpolating parabola). S[j] (N values) is its signed affine length (15)
+ *   S_j = cbrt(4 A*_j A*_{j+1} / (A*_j + B*_j + A*_{j+1})),
+ * sign = turning sense; S_j = 0 when no such convex parabola exists (the
+ * tangents don't meet ahead: an inflection inside the arc; the arc is then a
+ * straight segment). nsamples >= 3. Errors: EL_EINVAL.
+ */
+int el_affine_parabolic_lengths(size_t nsamples, const double *samples, double *S);
+
+/* Options of el_affine_polyline; el_affine_options_defaults fills them. */
+typedef struct el_affine_options {
+    int split_inflections; /* 1: split at inflections (§4.4); 0: an inflection -> EL_EDOM */
+    int skip;              /* l of §4.4: k_i of the l vertices next to an inflection are
+                              left out of psi (default 2) */
+    double skip_frac;      /* l = max(skip, ceil(skip_frac * piece edges)), in [0, 0.5)
+                              (default 0, the paper). Near an inflection k_i ~ 1/j^2 at the
+                              j-th vertex whatever n is, so a fixed l lets those terms
+                              dominate psi; a fraction (e.g. 0.2) keeps k_i A^(-2/3)
+                              converging away from the inflections. */
+    int fit_ends;          /* 1: adjust each piece's A (secant on log|A|, t1 re-optimised
+                              each time) until its last vertex lands on the piece end
+                              (inflection or curve end), as §4.4 allows; 0 (default): the
+                              paper's A = (S/n)^3, the last vertex lands near the end */
+    int optimise;          /* 1 (default): t1 minimises psi; 0: t1 stays at its start value
+                              (affine length cbrt|A| along f~), the simple construction of
+                              Craizer et al. the paper improves on (for comparison) */
+    int max_iter;          /* golden-section iterations (default 100) */
+    double t1_tol;         /* stop when the t1 bracket is shorter (sample units, 1e-10) */
+} el_affine_options;
+
+void el_affine_options_defaults(el_affine_options *opt);
+
+/*
+ * Result of el_affine_polyline. Vertex j is xy[2j..2j+1], at parameter t[j] of
+ * the replacement curve f~ (f~(j) = p_j; t beyond a piece's end means the
+ * vertex is on the extrapolated last parabola of that piece). Pieces
+ * p = 0..npieces-1 span vertices piece_start[p]..piece_start[p+1]
+ * (piece_start has npieces+1 entries, piece_start[0] = 0, last = npts-1); in
+ * piece p every det(x_j - x_{j-1}, x_{j+1} - x_j) = A[p] (signed: + counter-
+ * clockwise); psi[p] = the minimised sum (delta k_i)^2; S_total = affine length
+ * of f~ (sum |S_j|); infl_param: the npieces-1 inflection parameters of f~.
+ */
+typedef struct el_affine_result {
+    size_t npts;
+    double *xy;
+    double *t;
+    size_t npieces;
+    size_t *piece_start;
+    double *A;
+    double *psi;
+    double *infl_param;
+    double S_total;
+} el_affine_result;
+
+/*
+ * Seed 002 §4: approximate the curve through samples p_0..p_N (nsamples >= 4;
+ * about 20 samples per vertex wanted) by a polyline x_0..x_n (n edges, n+1
+ * vertices, n >= 3) that is an affine arc-length polyline on each inflection-
+ * free piece: x_0 = p_0; per piece A = sign * (S_piece / n_piece)^3 with S from
+ * (15); x_{i+1} = the next intersection of f~ with {z: det(x_i - x_{i-1}, z - x_i) = A};
+ * t1 (the first free vertex of the piece; start value where the affine length
+ * of f~ reaches cbrt|A|) minimising psi(t1) = sum (k_{i+1} - k_i)^2: a 24-point
+ * grid over (start, start + 2 (t1 - start)] brackets the minimum, GSL's
+ * gsl_min_fminimizer_goldensection refines it. Inflections: the caller's sample indices
+ * infl[0..ninfl-1] (strictly increasing, in 1..N-1; the sample there is the
+ * inflection point, e.g. known exactly from an elastica's parameters), or, when
+ * ninfl = 0, where the turning sense of the arcs of f~ changes (§4.4); vertex
+ * counts per piece proportional to the affine lengths, >= 3 each.
+ * tangents: NULL for the paper's f~ (tangent p_{j+1} - p_{j-1} at p_j, ghost
+ * points at the ends, as el_affine_parabolic_lengths), or nsamples forward
+ * tangent vectors of the curve at the samples (interleaved; only directions
+ * matter), e.g. exact ones of an elastica: each arc is then the parabola with
+ * those end tangents (deviation O(h^4) instead of O(h^3), which keeps the
+ * k_i A^(-2/3) of fine polylines accurate; an arc whose tangents don't meet
+ * ahead is straight).
+ * Errors: EL_EINVAL (bad input, n < 3, nsamples < 4); EL_EDOM (an inflection
+ * while opt->split_inflections = 0, or inside a piece the caller gave as
+ * inflection-free; n too small for the pieces; a straight piece;
+ * the construction left the curve: n too small for the curve, e.g. fewer than
+ * about 3 vertices per turn of the tangent); EL_ENOMEM; EL_EINTERNAL (GSL).
+ * An end piece worth less than 1.5 edges of affine length (an inflection next
+ * to an end) is left out: the polyline then starts / ends at that inflection
+ * (t[0] > 0 / t[n] near it), and infl_param lists only the inner inflections.
+ * opt may be NULL (defaults). res is filled only on success; free it with
+ * el_affine_result_free.
+ */
+int el_affine_polyline(size_t nsamples, const double *samples, const double *tangents,
+                       size_t ninfl, const size_t *infl, size_t n,
+                       const el_affine_options *opt, el_affine_result *res);
+
+/* Release what el_affine_polyline allocated and zero *res; NULL is a no-op. */
+void el_affine_result_free(el_affine_result *res);
+
 
 /* ------------------------------------------------------------------- bspline */
 
@@ -344,6 +810,90 @@ typedef struct el_bspline {
 
 /* Release what the library allocated in b and zero it; NULL is a no-op. */
 void el_bspline_free(el_bspline *b);
+
+/*
+ * Fill b with zeroed, malloc'ed arrays: poles (dim*npoles), knots and mults
+ * (nknots each); max_deviation = -1. For code that builds B-splines (release
+ * with el_bspline_free). Errors: EL_EINVAL (NULL b, degree < 1, dim < 1,
+ * nknots < 2, npoles < degree+1; b untouched), EL_ENOMEM.
+ */
+int el_bspline_alloc(el_bspline *b, int degree, int dim, size_t npoles, size_t nknots);
+
+/*
+ * EL_OK when b is a valid B-spline: degree >= 1, dim >= 1, knots finite and
+ * strictly increasing, end multiplicities in 1..degree+1, interior ones in
+ * 1..degree, sum of mults = npoles + degree + 1, finite poles; else EL_EINVAL.
+ */
+int el_bspline_check(const el_bspline *b);
+
+/* The flat knot vector (npoles + degree + 1 values) into flat. EL_EINVAL. */
+int el_bspline_flat_knots(const el_bspline *b, double *flat);
+
+/*
+ * Points B(t_i) (de Boor's algorithm), pts: dim*n interleaved. t must lie in
+ * [knots[0], knots[nknots-1]] (values outside by less than 1e-12 of the
+ * knot range are clamped to it; beyond that EL_EDOM: no extrapolation).
+ * Errors: EL_EINVAL (invalid b, NULL arrays with n > 0, non-finite t), EL_EDOM, EL_ENOMEM.
+ */
+int el_bspline_eval(const el_bspline *b, size_t n, const double *t, double *pts);
+
+/*
+ * Derivative of order `order` >= 0 (0 = the points; orders above the degree
+ * give 0) with respect to the B-spline parameter at the n values t,
+ * out: dim*n interleaved. At a knot the right-hand derivative is returned
+ * (the left-hand one at the last knot). Errors as el_bspline_eval.
+ */
+int el_bspline_derivative(const el_bspline *b, int order, size_t n, const double *t, double *out);
+
+/*
+ * Signed curvature det(B', B'') / |B'|^3 (positive = turning counter-clockwise)
+ * of a planar (dim = 2) B-spline of degree >= 2, kappa: n values.
+ * Errors: EL_EINVAL (dim != 2, degree < 2, ...), EL_EDOM (t outside),
+ * EL_ESINGULAR (B' = 0 at some t; the values before it are written).
+ */
+int el_bspline_curvature(const el_bspline *b, size_t n, const double *t, double *kappa);
+
+/*
+ * The natural C2 cubic (B'' = 0 at both ends) through the n >= 2 vertices xy
+ * (2n, interleaved) of a polyline or discrete elastica, chord-length
+ * parametrised: the knots are u_0 = 0, u_i = u_{i-1} + |xy_i - xy_{i-1}|
+ * (multiplicity 4 at both ends, 1 inside), B(u_i) = xy_i, n + 2 poles.
+ * out->max_deviation = -1 (no distance to the polyline is claimed).
+ * Errors: EL_EINVAL (NULL, n < 2, non-finite), EL_ESINGULAR (two consecutive
+ * vertices coincide), EL_ENOMEM. out is untouched on error.
+ */
+int el_bspline_interpolate_c2(const double *xy, size_t n, el_bspline *out);
+
+/*
+ * A clamped non-rational planar B-spline of degree 3..7 (simple interior
+ * knots, so C^{degree-1}) whose distance to the smooth elastica segment p is
+ * at most tol (same units as the coordinates) everywhere; its parameter is the
+ * elastica's arc length s in [0, length]. End conditions (for tangent joins to
+ * other geometry): B(0) and B(length) are the end points exactly as
+ * el_smooth_eval gives them, and B'(0), B'(length) are the exact unit tangents
+ * (cos theta, sin theta) of el_smooth_eval (speed 1, as the parameter is the
+ * arc length), to the rounding of the first and last two poles, which they
+ * fix: P_1 = P_0 + (u_1 / degree) T(0), P_{n-2} = P_{n-1} - ((length -
+ * u_{N-1}) / degree) T(length), 0 = u_0 < u_1 < .. < u_N = length the
+ * distinct knots (about 1e-14 rad when |x0|, |y0| are of the order of length). The
+ * other poles by linear least squares on exact samples, knots by error
+ * equidistribution with as few spans as the method finds. The distance is
+ * certified: the upper bound max_t |B(t) - gamma(s1(t))| of the Hausdorff
+ * distance (s1 = Newton foot point, a continuous map onto [0, length]),
+ * computed on a dense grid and maximised locally with Brent's method, plus
+ * 16 eps (|x0| + |y0| + length) for rounding; it is stored in
+ * out->max_deviation (<= tol on success). Near a self-crossing of a looping
+ * (k > 1) segment it is the distance to the corresponding branch, which can
+ * exceed the distance to the point set. length = 0 gives p+1
+ * coincident poles on [0, 1] with max_deviation 0 (B' = 0: no tangent).
+ * Errors: EL_EINVAL (bad params, tol <= 0 or non-finite, degree outside 3..7,
+ * NULL out), EL_EDOM (tol < 1e-14 (length + |x0| + |y0|): below what double
+ * precision resolves), EL_EMAXITER (tol not reached: the best B-spline found
+ * is returned in out with its certified distance), EL_ENOMEM, EL_ESINGULAR
+ * (a least-squares system failed). out is untouched on errors other than
+ * EL_EMAXITER.
+ */
+int el_smooth_to_bspline(const el_smooth_params *p, double tol, int degree, el_bspline *out);
 
 /* ------------------------------------------------------------------- blend */
 
@@ -384,7 +934,9 @@ typedef struct el_blend_basis {
     double d;          /* > 0: end-derivative parameter, h_0'(0) = -d */
     double M[16];      /* row-major: M[4*i + j] = coefficient of f_j in h_i */
     double Minv[16];   /* row-major inverse of M */
-    double cond;       /* 1-norm condition number of the 8x8 system (2.17) */
+    double G[16];      /* the same h_i on (f_0, B_1, B_2, f_3), B_1 = f_1 - f_1(0) f_0 - f_1(1) f_3,
+                          B_2(t) = B_1(1-t): the cancellation-free form used for evaluation */
+    double cond;       /* 1-norm condition number of the 8x8 system (2.17), solved for G */
 } el_blend_basis;
 
 /*
@@ -481,14 +1033,16 @@ int el_blend_composite_through(const el_blend_basis *b, size_t npts, const doubl
 /*
  * Clamped cubic B-spline approximating the composite curve (nseg >= 1, q as in
  * el_blend_composite_eval; nseg = 1 is one segment) in the same parameter
- * t in [0, nseg]: uniform knots inside each segment, double knots at the joins,
- * end points and end derivatives interpolated, inner poles by GSL linear least
- * squares on dense samples; the number of spans doubles until the certified
- * deviation max_t |phi(t) - B(t)| (dense sampling, then Brent maximisation
- * around every sampled local maximum) is <= tol. out->max_deviation is that
- * figure. The caller frees out with el_bspline_free.
+ * t in [0, nseg]. Each segment is fitted on its own: uniform knots inside it,
+ * its end points and end derivatives interpolated (so the spline is G1/C1
+ * wherever the curve is), inner poles by GSL linear least squares on dense
+ * samples; its number of spans grows (1, 2, 3, 4, 6, 8, ... 256) until the
+ * certified deviation max_t |phi(t) - B(t)| (dense sampling, then Brent
+ * maximisation around every sampled local maximum) is <= tol. Segments are
+ * joined with triple knots. out->max_deviation is the largest segment figure.
+ * The caller frees out with el_bspline_free (also after EL_ENOCONV).
  * Errors: EL_EINVAL (NULL, NaN/inf, tol <= 0), EL_ENOMEM, EL_ENOCONV (tol not
- * reached with 256 spans per segment: the best spline is returned in out).
+ * reached with 256 spans in some segment: the best spline is returned in out).
  */
 int el_blend_to_bspline(const el_blend_basis *b, size_t nseg, const double *q, double tol,
                         el_bspline *out);

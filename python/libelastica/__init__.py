@@ -2,5 +2,15 @@
 interpolation, B-splines (Python binding of the C library)."""
 from ._ffi import DomainError, ElasticaError, NotConvergedError, SingularError
 from .core import DiscreteElastica, SmoothElastica
+from .fit import FitResult, KeylineFit, fit, fit_keyline
+from .prep import (Frame, Frame2D, find_inflection, pca_normalize, plane_fit, prepare_keyline,
+                   resample_equilateral)
+from .blend import BlendCurve, EllipticBlend, MQBlend, blend_curve, eck_d, eck_omega
+from .hermite import hermite, hermite_analyse
+from .bspline import BSpline, interpolate_c2, smooth_to_bspline
+from .affine import (AffinePolyline, OsculatingConics, affine_coords, affine_curvature,
+                     affine_curvature_exact, affine_elements, affine_length, affine_polyline,
+                     chaikin, elastica_affine_curvature, elastica_inflections, lane_riesenfeld,
+                     osculating_conics, parabolic_lengths, quadratic_bspline, uniform_bspline)
 
 __version__ = "0.1.0"

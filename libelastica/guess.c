@@ -1,0 +1,428 @@
+/*
+ * Initial parameters for the fit, seed 000 §4.3 (discrete) and its smooth
+ * analogue (Brander et al.), in the one-formula parametrisation of the header
+ * (every k > 0, k > 1 = the paper's case (i) with modulus 1/k).
+ *
+ * Derivation used here (smooth, then applied to both models). With
+ * a = (theta - phi)/2, sin a = k sn u, cos a = dn u, u = w s + q (w = sqrt(mu)):
+ *   kappa = 2k w cn u,  d kappa/ds = -2k mu sn dn = -mu Y_local',
+ * so kappa = mu2 x - mu1 y + A with (mu1, mu2) = mu (cos phi, sin phi)   (4.25);
+ *   sin Psi = cos 2a = 1 - 2k^2 sn^2 = mu U^2/2 + A U + B,  U = <I, gamma>  (4.26)
+ * with B = 1 - 2k^2 + A^2/(2 mu), i.e. k = (1/2) sqrt(A^2/mu - 2(B - 1))  (4.37),
+ * for every k > 0 ((4.36) is the same relation for the reciprocal modulus).
+ *
+ * Differences from the paper, and why:
+ *  - (4.34) is solved once integrated, theta(s) = theta_0 + mu2 X(s) - mu1 Y(s) + A s,
+ *    X = int x ds, Y = int y ds: tangent angles instead of second differences,
+ *    so noise of 1 % of the length does not swamp the estimate. Dense data are
+ *    first reduced to the polygon of ~32 block means (same reason, and speed).
+ *  - q and z: instead of inverting only at both ends and counting m by (4.38),
+ *    the amplitude psi = atan2(sn u, cn u) is taken at every segment (sn u from
+ *    the tangent, sin a / k; cn u from the fitted curvature, kappa / (2 k w)),
+ *    unwrapped along the curve (this counts the monotone pieces from the data),
+ *    u = F(psi; k) by gsl_sf_ellint_F, and u = w s + q is a straight-line fit
+ *    (4.54). For k > 1, psi = a and u = F(a; 1/k)/k.
+ *  - Ambiguity (k near 1, a wrong unwrap) is handled by candidates: the guess on
+ *    the other side of k = 1 and a circular-arc / straight-line guess; the fit
+ *    tries them in order of their initial rms.
+ */
+#include "internal.h"
+#include <stdlib.h>
+#include <string.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_multifit.h>
+#include <gsl/gsl_sf_ellint.h>
+
+enum { BLOCKS = 32, RAW_MAX = 40, NCAND_MAX = 6 };
+
+/* A model-independent guess in normalised coordinates: u(s) = w s + q, s = t L. */
+typedef struct cguess {
+    double phi, w, k, q, L;
+} cguess;
+
+/* Centroid and rms radius of the points; EL_ESINGULAR if they all coincide. */
+static int normalisation(const double *xy, size_t n, double *cx, double *cy, double *sc)
+{
+    double mx = 0.0, my = 0.0;
+    for (size_t i = 0; i < n; i++) { mx += xy[2 * i]; my += xy[2 * i + 1]; }
+    mx /= (double)n; my /= (double)n;
+    /* scale first by the max deviation so that 1e±200 inputs cannot overflow */
+    double amax = 0.0;
+    for (size_t i = 0; i < n; i++) {
+        amax = fmax(amax, fabs(xy[2 * i] - mx));
+        amax = fmax(amax, fabs(xy[2 * i + 1] - my));
+    }
+    if (!(amax > 0.0) || !isfinite(amax)) return EL_ESINGULAR;
+    double r2 = 0.0;
+    for (size_t i = 0; i < n; i++) {
+        double dx = (xy[2 * i] - mx) / amax, dy = (xy[2 * i + 1] - my) / amax;
+        r2 += dx * dx + dy * dy;
+    }
+    double sc0 = amax * sqrt(r2 / (double)n);
+    if (!(sc0 > 0.0) || !isfinite(sc0)) return EL_ESINGULAR;
+    *cx = mx; *cy = my; *sc = sc0;
+    return EL_OK;
+}
+
+static int check_points(const double *xy, size_t n, size_t nmin)
+{
+    if (!xy || n < nmin) return EL_EINVAL;
+    return el__all_finite(xy, 2 * n) ? EL_EINVAL : EL_OK;
+}
+
+/* Sides of the polygon of block means (or of the points, for few points):
+ * the coefficient of variation of their lengths. */
+static double block_side_cv(const double *xy, size_t n)
+{
+    size_t m = n <= RAW_MAX ? n : BLOCKS;
+    double px = 0, py = 0, sum = 0, sum2 = 0;
+    for (size_t b = 0; b < m; b++) {
+        size_t lo = b * n / m, hi = (b + 1) * n / m;
+        double x = 0, y = 0;
+        for (size_t i = lo; i < hi; i++) { x += xy[2 * i]; y += xy[2 * i + 1]; }
+        x /= (double)(hi - lo); y /= (double)(hi - lo);
+        if (b > 0) {
+            double d = hypot(x - px, y - py);
+            sum += d; sum2 += d * d;
+        }
+        px = x; py = y;
+    }
+    double mean = sum / (double)(m - 1), var = sum2 / (double)(m - 1) - mean * mean;
+    return mean > 0 ? sqrt(fmax(var, 0.0)) / mean : HUGE_VAL;
+}
+
+int el_fit_fractions(const double *xy, size_t n, int mode, double *t, int *mode_used)
+{
+    if (check_points(xy, n, 2) || !t || mode < EL_PARAM_AUTO || mode > EL_PARAM_CHORD)
+        return EL_EINVAL;
+    double total = 0.0;
+    for (size_t i = 1; i < n; i++)
+        total += hypot(xy[2 * i] - xy[2 * i - 2], xy[2 * i + 1] - xy[2 * i - 1]);
+    if (!(total > 0.0)) return EL_ESINGULAR;
+    if (mode == EL_PARAM_AUTO) mode = block_side_cv(xy, n) <= 0.5 ? EL_PARAM_UNIFORM : EL_PARAM_CHORD;
+    if (mode == EL_PARAM_UNIFORM || !isfinite(total)) {
+        for (size_t i = 0; i < n; i++) t[i] = (double)i / (double)(n - 1);
+    } else {
+        double c = 0.0;
+        t[0] = 0.0;
+        for (size_t i = 1; i < n; i++) {
+            c += hypot(xy[2 * i] - xy[2 * i - 2], xy[2 * i + 1] - xy[2 * i - 1]);
+            t[i] = c / total;
+        }
+        t[n - 1] = 1.0;
+    }
+    if (mode_used) *mode_used = mode;
+    return EL_OK;
+}
+
+/* F(psi; k) for any real psi and 0 <= k < 1 (GSL >= 2 reduces psi itself). */
+static double ellF(double psi, double k)
+{
+    gsl_sf_result r;
+    if (gsl_sf_ellint_F_e(psi, k, GSL_PREC_DOUBLE, &r)) return NAN;
+    return r.val;
+}
+
+static double ellK(double k)
+{
+    gsl_sf_result r;
+    if (gsl_sf_ellint_Kcomp_e(k, GSL_PREC_DOUBLE, &r)) return NAN;
+    return r.val;
+}
+
+/* Linear least squares y = X c (n rows, p columns, row-major X) by gsl_multifit_linear. */
+static int linfit(size_t n, size_t p, const double *X, const double *y, double *c)
+{
+    if (n < p) return EL_ESINGULAR;
+    gsl_matrix *A = gsl_matrix_alloc(n, p), *cov = gsl_matrix_alloc(p, p);
+    gsl_vector *b = gsl_vector_alloc(n), *cv = gsl_vector_alloc(p);
+    gsl_multifit_linear_workspace *ws = gsl_multifit_linear_alloc(n, p);
+    int st = EL_ENOMEM;
+    if (A && cov && b && cv && ws) {
+        for (size_t i = 0; i < n; i++) {
+            for (size_t j = 0; j < p; j++) gsl_matrix_set(A, i, j, X[i * p + j]);
+            gsl_vector_set(b, i, y[i]);
+        }
+        double chisq;
+        st = gsl_multifit_linear(A, b, cv, cov, &chisq, ws) ? EL_EINTERNAL : EL_OK;
+        for (size_t j = 0; j < p && !st; j++) {
+            c[j] = gsl_vector_get(cv, j);
+            if (!isfinite(c[j])) st = EL_ESINGULAR;
+        }
+    }
+    if (ws) gsl_multifit_linear_free(ws);
+    if (A) gsl_matrix_free(A);
+    if (cov) gsl_matrix_free(cov);
+    if (b) gsl_vector_free(b);
+    if (cv) gsl_vector_free(cv);
+    return st;
+}
+
+/* The reduced polygon: block means Q (m points) at fractions tau; consecutive
+ * duplicates dropped. Returns m. */
+static size_t reduce(const double *P, const double *t, size_t n, double *Q, double *tau)
+{
+    size_t m = n <= RAW_MAX ? n : BLOCKS, out = 0;
+    for (size_t b = 0; b < m; b++) {
+        size_t lo = b * n / m, hi = (b + 1) * n / m;
+        double x = 0, y = 0, tt = 0;
+        for (size_t i = lo; i < hi; i++) { x += P[2 * i]; y += P[2 * i + 1]; tt += t[i]; }
+        x /= (double)(hi - lo); y /= (double)(hi - lo); tt /= (double)(hi - lo);
+        if (out > 0 && x == Q[2 * out - 2] && y == Q[2 * out - 1]) continue;
+        Q[2 * out] = x; Q[2 * out + 1] = y; tau[out] = tt;
+        out++;
+    }
+    return out;
+}
+
+/* Segment data of the reduced polygon. */
+typedef struct segs {
+    size_t m;                 /* segments */
+    double theta[BLOCKS + RAW_MAX];   /* unwrapped tangent angle */
+    double sigma[BLOCKS + RAW_MAX];   /* arc parameter of the midpoint */
+    double mx[BLOCKS + RAW_MAX], my[BLOCKS + RAW_MAX];
+    double X[BLOCKS + RAW_MAX], Y[BLOCKS + RAW_MAX];  /* int x ds, int y ds at midpoints */
+    double L;                 /* model length estimate */
+} segs;
+
+static int segments(const double *Q, const double *tau, size_t m, segs *S)
+{
+    if (m < 2) return EL_ESINGULAR;
+    double len = 0.0;
+    for (size_t b = 0; b + 1 < m; b++)
+        len += hypot(Q[2 * b + 2] - Q[2 * b], Q[2 * b + 3] - Q[2 * b + 1]);
+    double span = tau[m - 1] - tau[0];
+    if (!(len > 0.0) || !(span > 0.0)) return EL_ESINGULAR;
+    S->L = len / span;
+    S->m = m - 1;
+    double X = 0.0, Y = 0.0, prev = 0.0;
+    for (size_t b = 0; b + 1 < m; b++) {
+        const double *A = Q + 2 * b, *B = A + 2;
+        double s0 = tau[b] * S->L, s1 = tau[b + 1] * S->L, sm = 0.5 * (s0 + s1);
+        double mx = 0.5 * (A[0] + B[0]), my = 0.5 * (A[1] + B[1]);
+        double th = atan2(B[1] - A[1], B[0] - A[0]);
+        if (b > 0) th += 2.0 * M_PI * nearbyint((prev - th) / (2.0 * M_PI));
+        prev = th;
+        S->theta[b] = th;
+        S->sigma[b] = sm;
+        S->mx[b] = mx; S->my[b] = my;
+        S->X[b] = X + 0.5 * (A[0] + mx) * (sm - s0);
+        S->Y[b] = Y + 0.5 * (A[1] + my) * (sm - s0);
+        X += 0.5 * (A[0] + B[0]) * (s1 - s0);
+        Y += 0.5 * (A[1] + B[1]) * (s1 - s0);
+    }
+    return EL_OK;
+}
+
+/* u at the segment midpoints for modulus k, then u = w s + q by least squares. */
+static int phase_fit(const segs *S, double phi, double mu, double A, double k, cguess *g)
+{
+    const size_t m = S->m;
+    double X[2 * (BLOCKS + RAW_MAX)], u[BLOCKS + RAW_MAX];
+    const double sp = sin(phi), cp = cos(phi), kmax = 2.0 * k * sqrt(mu);
+    double prev = 0.0;
+    for (size_t b = 0; b < m; b++) {
+        double psi;
+        if (k < 1.0) {
+            double a = 0.5 * remainder(S->theta[b] - phi, 2.0 * M_PI);
+            double U = sp * S->mx[b] - cp * S->my[b];
+            psi = atan2(sin(a) / k, (mu * U + A) / kmax);
+            if (b > 0) psi += 2.0 * M_PI * nearbyint((prev - psi) / (2.0 * M_PI));
+        } else {
+            double d = S->theta[b] - phi;
+            if (b == 0) d = remainder(d, 2.0 * M_PI);
+            else d += 2.0 * M_PI * nearbyint((2.0 * prev - d) / (2.0 * M_PI));
+            psi = 0.5 * d;
+        }
+        prev = psi;
+        u[b] = k < 1.0 ? ellF(psi, k) : ellF(psi, 1.0 / k) / k;
+        if (!isfinite(u[b])) return EL_EINTERNAL;
+        X[2 * b] = S->sigma[b];
+        X[2 * b + 1] = 1.0;
+    }
+    double c[2];
+    int st = linfit(m, 2, X, u, c);
+    if (st) return st;
+    g->phi = phi; g->k = k; g->w = c[0]; g->q = c[1]; g->L = S->L;
+    return EL_OK;
+}
+
+/* Guesses in normalised coordinates; returns how many (<= NCAND_MAX). */
+static size_t guesses(const double *P, const double *t, size_t n, cguess *out)
+{
+    double Q[2 * (RAW_MAX + 1)], tau[RAW_MAX + 1];
+    size_t m = reduce(P, t, n, Q, tau), cnt = 0;
+    segs S;
+    if (segments(Q, tau, m, &S)) return 0;
+    /* (4.34) integrated: theta = theta_0 + mu2 X - mu1 Y + A s */
+    if (S.m >= 5) {
+        double X[4 * (BLOCKS + RAW_MAX)], c[4];
+        for (size_t b = 0; b < S.m; b++) {
+            X[4 * b] = 1.0; X[4 * b + 1] = S.X[b]; X[4 * b + 2] = -S.Y[b]; X[4 * b + 3] = S.sigma[b];
+        }
+        if (!linfit(S.m, 4, X, S.theta, c)) {
+            double mu2 = c[1], mu1 = c[2], A = c[3], mu = hypot(mu1, mu2);
+            if (mu > 1e-9) {
+                double phi = atan2(mu2, mu1), sp = sin(phi), cp = cos(phi), B = 0.0;
+                for (size_t b = 0; b < S.m; b++) {        /* (4.35) */
+                    double U = sp * S.mx[b] - cp * S.my[b];
+                    B += cos(S.theta[b] - phi) - 0.5 * mu * U * U - A * U;
+                }
+                B /= (double)S.m;
+                double k2 = 0.5 * (A * A / (2.0 * mu) + 1.0 - B); /* (4.37), every k */
+                double k = sqrt(fmax(k2, 1e-8));
+                if (fabs(k - 1.0) < 1e-6) k = 1.0 - 1e-6;
+                if (!phase_fit(&S, phi, mu, A, k, &out[cnt])) {
+                    /* m - 1 and m + 1 monotone pieces (4.38): the u-span one half
+                     * period shorter / longer, same u at mid-length */
+                    const cguess g0 = out[cnt++];
+                    const double half = k < 1.0 ? 2.0 * ellK(k) : 2.0 * ellK(1.0 / k) / k;
+                    const double span = g0.w * g0.L, umid = g0.q + 0.5 * span;
+                    for (int sgn = -1; sgn <= 1; sgn += 2) {
+                        double sp2 = span + sgn * (span >= 0 ? half : -half);
+                        if (sp2 * span <= 0.0 || !isfinite(sp2)) continue;
+                        cguess g1 = g0;
+                        g1.w = sp2 / g0.L;
+                        g1.q = umid - 0.5 * sp2;
+                        out[cnt++] = g1;
+                    }
+                }
+                if (k > 0.5 && k < 2.0) {    /* the other side of k = 1 */
+                    double k2b = fabs(k - 1.0) < 0.1 ? (k < 1.0 ? 1.1 : 0.9) : 1.0 / k;
+                    if (!phase_fit(&S, phi, mu, A, k2b, &out[cnt])) cnt++;
+                }
+            }
+        }
+    }
+    /* circular arc / straight line: theta = theta_0 + A s */
+    {
+        double X[2 * (BLOCKS + RAW_MAX)], c[2];
+        for (size_t b = 0; b < S.m; b++) { X[2 * b] = 1.0; X[2 * b + 1] = S.sigma[b]; }
+        if (!linfit(S.m, 2, X, S.theta, c)) {
+            double A = c[1], L = S.L;
+            cguess *g = &out[cnt];
+            g->L = L;
+            if (fabs(A) * L < 1e-3) {        /* nearly straight: tiny k */
+                g->k = 1e-3; g->w = 1.0 / L; g->q = 0.0; g->phi = c[0] + 0.5 * A * L;
+            } else {                          /* near circle: kappa ~ 2 k w for k > 1 */
+                g->k = 10.0; g->w = A / (2.0 * g->k); g->q = 0.0; g->phi = c[0];
+            }
+            cnt++;
+        }
+    }
+    return cnt;
+}
+
+/* Smooth parameters from a continuous guess (x0 = y0 = 0). u(s) = w s + q with
+ * w < 0 and k < 1 is the same curve as u' = -w s - q - 2K (sn, dn unchanged). */
+static void to_smooth(const cguess *g, el_smooth_params *p)
+{
+    double w = g->w, q = g->q;
+    if (w < 0.0) {
+        if (g->k < 1.0) q = -q - 2.0 * ellK(g->k);
+        w = -w;                 /* k > 1 turning clockwise: not representable, best effort */
+    }
+    if (!(w > 1e-9)) w = 1e-9;
+    p->x0 = 0.0; p->y0 = 0.0; p->phi = g->phi; p->mu = w * w; p->k = g->k; p->q = q;
+    p->length = g->L;
+}
+
+static void to_discrete(const cguess *g, size_t n, el_discrete_params *p)
+{
+    double h = g->L / (double)(n - 1);
+    p->x0 = 0.0; p->y0 = 0.0; p->h = h; p->phi = g->phi; p->z = g->w * h; p->q = g->q; p->k = g->k;
+}
+
+/* x0, y0 by (4.55) for a curve evaluated with x0 = y0 = 0; returns the rms. */
+static double place(const double *P, const double *G, size_t n, double *x0, double *y0)
+{
+    double sx = 0.0, sy = 0.0;
+    for (size_t i = 0; i < n; i++) { sx += P[2 * i] - G[2 * i]; sy += P[2 * i + 1] - G[2 * i + 1]; }
+    sx /= (double)n; sy /= (double)n;
+    double r = 0.0;
+    for (size_t i = 0; i < n; i++) {
+        double dx = G[2 * i] + sx - P[2 * i], dy = G[2 * i + 1] + sy - P[2 * i + 1];
+        r += dx * dx + dy * dy;
+    }
+    *x0 = sx; *y0 = sy;
+    r = sqrt(r / (double)n);
+    return isfinite(r) ? r : HUGE_VAL;
+}
+
+/* Common driver: model 0 discrete, 1 smooth. */
+static int guess_run(int model, const double *xy, size_t n, int mode, void *cand, size_t cap,
+                     size_t *count)
+{
+    if (check_points(xy, n, 4) || !cand || cap == 0 || !count) return EL_EINVAL;
+    if (mode < EL_PARAM_AUTO || mode > EL_PARAM_CHORD) return EL_EINVAL;
+    el__gsl_quiet();
+    double cx, cy, sc;
+    int st = normalisation(xy, n, &cx, &cy, &sc);
+    if (st) return st;
+    double *P = malloc(sizeof(double) * (6 * n));
+    if (!P) return EL_ENOMEM;
+    double *t = P + 2 * n, *G = t + n;
+    for (size_t i = 0; i < n; i++) {
+        P[2 * i] = (xy[2 * i] - cx) / sc;
+        P[2 * i + 1] = (xy[2 * i + 1] - cy) / sc;
+    }
+    if (model == 0) {
+        for (size_t i = 0; i < n; i++) t[i] = (double)i / (double)(n - 1);
+    } else if ((st = el_fit_fractions(P, n, mode, t, NULL))) {
+        free(P);
+        return st;
+    }
+    cguess g[NCAND_MAX];
+    size_t ng = guesses(P, t, n, g);
+    el_discrete_params dp[NCAND_MAX];
+    el_smooth_params spp[NCAND_MAX];
+    double rms[NCAND_MAX];
+    size_t order[NCAND_MAX], nok = 0;
+    for (size_t c = 0; c < ng; c++) {
+        int e;
+        if (model == 0) {
+            to_discrete(&g[c], n, &dp[c]);
+            e = el_discrete_eval(&dp[c], n, G);
+            if (!e) rms[c] = place(P, G, n, &dp[c].x0, &dp[c].y0);
+        } else {
+            to_smooth(&g[c], &spp[c]);
+            for (size_t i = 0; i < n; i++) G[2 * n + i] = t[i] * spp[c].length;
+            e = el_smooth_eval(&spp[c], n, G + 2 * n, G, NULL, NULL);
+            if (!e) rms[c] = place(P, G, n, &spp[c].x0, &spp[c].y0);
+        }
+        if (e) continue;
+        /* insertion by rms */
+        size_t j = nok++;
+        while (j > 0 && rms[order[j - 1]] > rms[c]) { order[j] = order[j - 1]; j--; }
+        order[j] = c;
+    }
+    free(P);
+    if (nok == 0) return EL_ESINGULAR;
+    size_t m = nok < cap ? nok : cap;
+    for (size_t j = 0; j < m; j++) {
+        size_t c = order[j];
+        if (model == 0) {
+            el_discrete_params p = dp[c];
+            p.x0 = cx + sc * p.x0; p.y0 = cy + sc * p.y0; p.h *= sc;
+            ((el_discrete_params *)cand)[j] = p;
+        } else {
+            el_smooth_params p = spp[c];
+            p.x0 = cx + sc * p.x0; p.y0 = cy + sc * p.y0; p.length *= sc; p.mu /= sc * sc;
+            ((el_smooth_params *)cand)[j] = p;
+        }
+    }
+    *count = m;
+    return EL_OK;
+}
+
+int el_guess_discrete(const double *xy, size_t n, el_discrete_params *cand, size_t cap,
+                      size_t *count)
+{
+    return guess_run(0, xy, n, EL_PARAM_AUTO, cand, cap, count);
+}
+
+int el_guess_smooth(const double *xy, size_t n, int mode, el_smooth_params *cand, size_t cap,
+                    size_t *count)
+{
+    return guess_run(1, xy, n, mode, cand, cap, count);
+}

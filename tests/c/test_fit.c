@@ -1,0 +1,366 @@
+/* Fairing (fit.c) and initial guess (guess.c): exact recovery, pinning,
+ * scale invariance, bad input. */
+#include "testutil.h"
+#include <gsl/gsl_sf_ellint.h>
+#include <pthread.h>
+#include <string.h>
+
+/* Complete K(k) for k < 1; for k > 1 the period of sn(.;k) in u is 4K(1/k)/k. */
+static double half_period(double k)
+{
+    return k < 1.0 ? 2.0 * gsl_sf_ellint_Kcomp(k, GSL_PREC_DOUBLE)
+                   : 2.0 * gsl_sf_ellint_Kcomp(1.0 / k, GSL_PREC_DOUBLE) / k;
+}
+
+static double polyline_length(const double *xy, size_t n)
+{
+    double L = 0.0;
+    for (size_t i = 1; i < n; i++) L += hypot(xy[2 * i] - xy[2 * i - 2], xy[2 * i + 1] - xy[2 * i - 1]);
+    return L;
+}
+
+/* A discrete elastica with the given k over `pieces` half periods. */
+static el_discrete_params make_discrete(double k, size_t n, double pieces, double sign,
+                                        unsigned long long *rng)
+{
+    el_discrete_params p;
+    p.x0 = test_uniform(rng, -2, 2); p.y0 = test_uniform(rng, -2, 2);
+    p.h = test_uniform(rng, 0.5, 2.0) / (double)n;
+    p.phi = test_uniform(rng, -3, 3);
+    p.z = sign * pieces * half_period(k) / (double)(n - 1) * test_uniform(rng, 0.7, 1.0);
+    p.q = test_uniform(rng, -2, 2);
+    p.k = k;
+    return p;
+}
+
+static el_smooth_params make_smooth(double k, double pieces, unsigned long long *rng)
+{
+    el_smooth_params p;
+    p.x0 = test_uniform(rng, -2, 2); p.y0 = test_uniform(rng, -2, 2);
+    p.phi = test_uniform(rng, -3, 3);
+    p.mu = test_uniform(rng, 0.5, 2.0);
+    p.k = k;
+    p.q = test_uniform(rng, -2, 2);
+    p.length = pieces * half_period(k) * test_uniform(rng, 0.7, 1.0) / sqrt(p.mu);
+    return p;
+}
+
+static void smooth_points(const el_smooth_params *p, size_t n, double *xy)
+{
+    double *s = malloc(n * sizeof *s);
+    for (size_t i = 0; i < n; i++) s[i] = p->length * (double)i / (double)(n - 1);
+    ck_assert_int_eq(el_smooth_eval(p, n, s, xy, NULL, NULL), EL_OK);
+    free(s);
+}
+
+static const double KS[] = {0.05, 0.3, 0.7, 0.95, 1.05, 2.0, 8.0, 30.0};
+
+/* Exact recovery, rms <= 1e-8 length, for every kind of discrete elastica. */
+START_TEST(test_discrete_exact_recovery)
+{
+    unsigned long long rng = 0x1234567ULL + (unsigned long long)_i;
+    const size_t n = 150;
+    double xy[2 * 150];
+    for (size_t a = 0; a < sizeof KS / sizeof KS[0]; a++) {
+        double k = KS[a], pieces = 1.0 + (double)(a % 3), sign = (a % 2) ? -1.0 : 1.0;
+        el_discrete_params p = make_discrete(k, n, pieces, sign, &rng);
+        ck_assert_int_eq(el_discrete_eval(&p, n, xy), EL_OK);
+        el_fit_discrete_result r;
+        int st = el_fit_discrete(xy, n, NULL, NULL, &r);
+        double L = polyline_length(xy, n);
+        ck_assert_msg(st == EL_OK, "k=%g: status %d (%s), rms %g", k, st, el_strerror(st), r.rms);
+        ck_assert_int_eq(r.status, st);
+        ck_assert_msg(r.rms <= 1e-8 * L, "k=%g: rms/L = %g", k, r.rms / L);
+        ck_assert(r.max_error >= r.rms);
+        /* the shape parameters are identifiable: h and k (up to the same curve) */
+        ck_assert_close(r.params.h, p.h, 1e-6 * p.h);
+        ck_assert_close(r.params.k, p.k, 1e-5 * (1.0 + p.k * p.k));
+    }
+}
+END_TEST
+
+START_TEST(test_discrete_nearly_straight)
+{
+    unsigned long long rng = 99;
+    const size_t n = 60;
+    double xy[2 * 60];
+    el_discrete_params p = make_discrete(1e-3, n, 1.0, 1.0, &rng);
+    ck_assert_int_eq(el_discrete_eval(&p, n, xy), EL_OK);
+    el_fit_discrete_result r;
+    ck_assert_int_eq(el_fit_discrete(xy, n, NULL, NULL, &r), EL_OK);
+    ck_assert(r.rms <= 1e-8 * polyline_length(xy, n));
+}
+END_TEST
+
+START_TEST(test_smooth_exact_recovery)
+{
+    unsigned long long rng = 0xabcdefULL;
+    const size_t n = 120;
+    double xy[2 * 120];
+    for (size_t a = 0; a < sizeof KS / sizeof KS[0]; a++) {
+        double k = KS[a], pieces = 1.0 + (double)(a % 3);
+        el_smooth_params p = make_smooth(k, pieces, &rng);
+        smooth_points(&p, n, xy);
+        el_fit_smooth_result r;
+        int st = el_fit_smooth(xy, n, NULL, NULL, &r);
+        ck_assert_msg(st == EL_OK, "k=%g: status %d, rms %g", k, st, r.rms);
+        ck_assert_int_eq(r.param_mode, EL_PARAM_UNIFORM);
+        ck_assert_msg(r.rms <= 1e-8 * p.length, "k=%g: rms/L = %g", k, r.rms / p.length);
+        ck_assert_close(r.params.length, p.length, 1e-6 * p.length);
+    }
+}
+END_TEST
+
+/* x0, y0 pinned (seed §5.4) and h fixed: held exactly, the rest still fitted. */
+START_TEST(test_pinning)
+{
+    unsigned long long rng = 7;
+    const size_t n = 80;
+    double xy[2 * 80];
+    el_discrete_params p = make_discrete(0.6, n, 1.5, 1.0, &rng);
+    ck_assert_int_eq(el_discrete_eval(&p, n, xy), EL_OK);
+    el_fit_options o;
+    el_fit_options_defaults(&o);
+    o.fixed[0] = o.fixed[1] = o.fixed[2] = 1;
+    o.value[0] = p.x0; o.value[1] = p.y0; o.value[2] = p.h;
+    el_fit_discrete_result r;
+    ck_assert_int_eq(el_fit_discrete(xy, n, &o, NULL, &r), EL_OK);
+    ck_assert(r.params.x0 == p.x0 && r.params.y0 == p.y0 && r.params.h == p.h);
+    ck_assert(r.rms <= 1e-8 * polyline_length(xy, n));
+    /* pinned elsewhere: still exactly there, the fit is worse but finite */
+    o.value[0] = p.x0 + 0.01; o.fixed[2] = 0;
+    ck_assert_int_eq(el_fit_discrete(xy, n, &o, NULL, &r), EL_OK);
+    ck_assert(r.params.x0 == p.x0 + 0.01 && r.params.y0 == p.y0);
+    ck_assert(isfinite(r.rms) && r.rms > 1e-4 && r.rms < 0.02);
+    /* smooth: pinned start */
+    el_smooth_params sp = make_smooth(0.8, 1.0, &rng);
+    smooth_points(&sp, n, xy);
+    el_fit_options_defaults(&o);
+    o.fixed[0] = o.fixed[1] = 1; o.value[0] = sp.x0; o.value[1] = sp.y0;
+    el_fit_smooth_result sr;
+    ck_assert_int_eq(el_fit_smooth(xy, n, &o, NULL, &sr), EL_OK);
+    ck_assert(sr.params.x0 == sp.x0 && sr.params.y0 == sp.y0);
+    ck_assert(sr.rms <= 1e-8 * sp.length);
+}
+END_TEST
+
+/* Coordinates of 1e-9 and 1e9 magnitude fit like unit ones. */
+START_TEST(test_scale_invariance)
+{
+    unsigned long long rng = 11;
+    const size_t n = 100;
+    double xy[2 * 100], big[2 * 100];
+    el_discrete_params p = make_discrete(0.8, n, 2.0, 1.0, &rng);
+    ck_assert_int_eq(el_discrete_eval(&p, n, xy), EL_OK);
+    const double scales[] = {1e-9, 1e9};
+    for (int a = 0; a < 2; a++) {
+        double sc = scales[a];
+        for (size_t i = 0; i < 2 * n; i++) big[i] = sc * xy[i] + 3.0 * sc;
+        el_fit_discrete_result r;
+        ck_assert_int_eq(el_fit_discrete(big, n, NULL, NULL, &r), EL_OK);
+        ck_assert_msg(r.rms <= 1e-8 * polyline_length(big, n), "scale %g: rms %g", sc, r.rms);
+        ck_assert_close(r.params.h, sc * p.h, 1e-6 * sc * p.h);
+        ck_assert_close(r.params.k, p.k, 1e-6);
+    }
+}
+END_TEST
+
+START_TEST(test_bad_input)
+{
+    double xy[2 * 50];
+    el_fit_discrete_result r, r0;
+    el_fit_smooth_result sr;
+    memset(&r0, 0x5a, sizeof r0);
+    r = r0;
+    for (int i = 0; i < 50; i++) { xy[2 * i] = i; xy[2 * i + 1] = sin(0.1 * i); }
+    /* fewer than 4 points, NULL, NaN, inf: EL_EINVAL, result untouched */
+    ck_assert_int_eq(el_fit_discrete(xy, 3, NULL, NULL, &r), EL_EINVAL);
+    ck_assert_int_eq(el_fit_smooth(xy, 3, NULL, NULL, &sr), EL_EINVAL);
+    ck_assert_int_eq(el_fit_discrete(NULL, 50, NULL, NULL, &r), EL_EINVAL);
+    ck_assert_int_eq(el_fit_discrete(xy, 50, NULL, NULL, NULL), EL_EINVAL);
+    xy[17] = NAN;
+    ck_assert_int_eq(el_fit_discrete(xy, 50, NULL, NULL, &r), EL_EINVAL);
+    xy[17] = INFINITY;
+    ck_assert_int_eq(el_fit_smooth(xy, 50, NULL, NULL, &sr), EL_EINVAL);
+    ck_assert(memcmp(&r, &r0, sizeof r) == 0);
+    /* bad options */
+    el_fit_options o;
+    el_fit_options_defaults(&o);
+    xy[17] = sin(0.1 * 8);
+    o.tol = -1.0;
+    ck_assert_int_eq(el_fit_discrete(xy, 50, &o, NULL, &r), EL_EINVAL);
+    el_fit_options_defaults(&o);
+    o.lower[6] = 2.0; o.upper[6] = 1.0;
+    ck_assert_int_eq(el_fit_discrete(xy, 50, &o, NULL, &r), EL_EINVAL);
+    /* all points equal */
+    for (int i = 0; i < 50; i++) { xy[2 * i] = 1.5; xy[2 * i + 1] = -2.0; }
+    ck_assert_int_eq(el_fit_discrete(xy, 50, NULL, NULL, &r), EL_ESINGULAR);
+    ck_assert_int_eq(el_fit_smooth(xy, 50, NULL, NULL, &sr), EL_ESINGULAR);
+    el_discrete_params g[4];
+    size_t cnt = 0;
+    ck_assert_int_eq(el_guess_discrete(xy, 50, g, 4, &cnt), EL_ESINGULAR);
+}
+END_TEST
+
+static int finite_discrete(const el_discrete_params *p)
+{
+    return isfinite(p->x0) && isfinite(p->y0) && isfinite(p->h) && isfinite(p->phi) &&
+           isfinite(p->z) && isfinite(p->q) && isfinite(p->k);
+}
+
+/* Collinear points: the straight line (k -> 0), exactly. */
+START_TEST(test_collinear)
+{
+    double xy[2 * 30];
+    for (int i = 0; i < 30; i++) { xy[2 * i] = 1.0 + 0.3 * i; xy[2 * i + 1] = 2.0 - 0.4 * i; }
+    el_fit_discrete_result r;
+    int st = el_fit_discrete(xy, 30, NULL, NULL, &r);
+    ck_assert_int_eq(st, EL_OK);
+    ck_assert(finite_discrete(&r.params));
+    ck_assert_msg(r.rms <= 1e-8 * 0.5 * 29, "rms %g", r.rms);
+    el_fit_smooth_result sr;
+    ck_assert_int_eq(el_fit_smooth(xy, 30, NULL, NULL, &sr), EL_OK);
+    ck_assert_msg(sr.rms <= 1e-8 * 0.5 * 29, "smooth rms %g", sr.rms);
+}
+END_TEST
+
+/* Repeated consecutive points and a closed loop: a status and finite
+ * parameters, and for the loop (a circle) a close fit (k large). */
+START_TEST(test_degenerate_shapes)
+{
+    double xy[2 * 41];
+    for (int i = 0; i < 40; i++) { xy[2 * i] = 0.1 * i; xy[2 * i + 1] = sin(0.1 * i); }
+    memcpy(xy + 20, xy + 18, 2 * sizeof(double));   /* point 10 = point 9 */
+    el_fit_discrete_result r;
+    int st = el_fit_discrete(xy, 40, NULL, NULL, &r);
+    ck_assert(st == EL_OK || st == EL_ENOCONV || st == EL_EMAXITER);
+    ck_assert(finite_discrete(&r.params) && isfinite(r.rms));
+    el_fit_smooth_result sr;
+    st = el_fit_smooth(xy, 40, NULL, NULL, &sr);
+    ck_assert(st == EL_OK || st == EL_ENOCONV || st == EL_EMAXITER);
+    ck_assert(isfinite(sr.params.k) && isfinite(sr.params.mu) && isfinite(sr.rms) && sr.rms < 0.1);
+    /* closed loop: 41 points on a circle of radius 2, first = last */
+    for (int i = 0; i <= 40; i++) {
+        xy[2 * i] = 2.0 * cos(2.0 * M_PI * i / 40.0);
+        xy[2 * i + 1] = 2.0 * sin(2.0 * M_PI * i / 40.0);
+    }
+    xy[80] = xy[0]; xy[81] = xy[1];
+    st = el_fit_discrete(xy, 41, NULL, NULL, &r);
+    ck_assert(st == EL_OK || st == EL_ENOCONV || st == EL_EMAXITER);
+    ck_assert(finite_discrete(&r.params));
+    ck_assert_msg(r.rms < 1e-3 * 2.0, "circle rms %g (k %g)", r.rms, r.params.k);
+}
+END_TEST
+
+/* Iteration limit: the best parameters seen, finite, no worse than the guess. */
+START_TEST(test_maxiter_best_seen)
+{
+    unsigned long long rng = 5;
+    const size_t n = 100;
+    double xy[2 * 100], g[2 * 100];
+    el_discrete_params p = make_discrete(0.9, n, 2.0, 1.0, &rng);
+    ck_assert_int_eq(el_discrete_eval(&p, n, xy), EL_OK);
+    for (size_t i = 0; i < 2 * n; i++) xy[i] += 1e-3 * test_uniform(&rng, -1, 1);
+    el_fit_options o;
+    el_fit_options_defaults(&o);
+    o.max_iter = 1; o.max_candidates = 1;
+    el_fit_discrete_result r;
+    int st = el_fit_discrete(xy, n, &o, NULL, &r);
+    ck_assert(st == EL_OK || st == EL_EMAXITER);
+    ck_assert(finite_discrete(&r.params));
+    ck_assert_int_eq(el_discrete_eval(&r.initial, n, g), EL_OK);
+    double r0 = 0.0;
+    for (size_t i = 0; i < 2 * n; i++) r0 += (g[i] - xy[i]) * (g[i] - xy[i]);
+    ck_assert(r.rms <= sqrt(r0 / (double)n) * (1.0 + 1e-12));
+}
+END_TEST
+
+/* The automatic guess alone lands near the curve, and the Ipopt L-BFGS
+ * option (the paper's setting) gets close (it converges slowly, and stops at
+ * Ipopt's default acceptable level). */
+START_TEST(test_guess_and_lbfgs)
+{
+    unsigned long long rng = 21;
+    const size_t n = 200;
+    double xy[2 * 200], g[2 * 200];
+    el_discrete_params p = make_discrete(0.5, n, 2.0, 1.0, &rng);
+    ck_assert_int_eq(el_discrete_eval(&p, n, xy), EL_OK);
+    el_discrete_params c[4];
+    size_t cnt = 0;
+    ck_assert_int_eq(el_guess_discrete(xy, n, c, 4, &cnt), EL_OK);
+    ck_assert(cnt >= 1 && cnt <= 4);
+    ck_assert_int_eq(el_discrete_eval(&c[0], n, g), EL_OK);
+    double L = polyline_length(xy, n), e = 0.0;
+    for (size_t i = 0; i < 2 * n; i++) e += (g[i] - xy[i]) * (g[i] - xy[i]);
+    ck_assert_msg(sqrt(e / (double)n) < 0.05 * L, "guess rms/L %g", sqrt(e / (double)n) / L);
+    ck_assert_close(c[0].k, p.k, 0.1);
+    el_fit_options o;
+    el_fit_options_defaults(&o);
+    o.limited_memory = 1; o.max_iter = 3000; o.tol = 1e-10;
+    el_fit_discrete_result r;
+    int st = el_fit_discrete(xy, n, &o, NULL, &r);
+    ck_assert(st == EL_OK || st == EL_EMAXITER || st == EL_ENOCONV);
+    ck_assert_msg(r.rms <= 1e-4 * L, "L-BFGS rms/L %g", r.rms / L);
+    /* fractions */
+    double t[200];
+    int mode = -1;
+    ck_assert_int_eq(el_fit_fractions(xy, n, EL_PARAM_CHORD, t, &mode), EL_OK);
+    ck_assert_int_eq(mode, EL_PARAM_CHORD);
+    ck_assert(t[0] == 0.0 && t[n - 1] == 1.0);
+    ck_assert_close(t[50], 50.0 / 199.0, 1e-12);   /* equilateral: chord = uniform */
+}
+END_TEST
+
+/* Concurrent fits from several threads (Debian's MUMPS is not reentrant:
+ * without the library's lock this aborts). */
+static void *fit_thread(void *arg)
+{
+    long id = (long)arg, bad = 0;
+    const size_t n = 120;
+    double xy[2 * 120];
+    for (int r = 0; r < 12; r++) {
+        el_discrete_params p = {0.1 * (double)id, 0.2, 0.01, 0.3 + 0.01 * r, 0.02 * (1.0 + (double)id),
+                                0.1 * r, 0.3 + 0.05 * r};
+        el_fit_discrete_result res;
+        if (el_discrete_eval(&p, n, xy) || el_fit_discrete(xy, n, NULL, NULL, &res) ||
+            !(res.rms <= 1e-8 * p.h * (double)(n - 1)))
+            bad++;
+    }
+    return (void *)bad;
+}
+
+START_TEST(test_threads)
+{
+    pthread_t t[4];
+    for (long i = 0; i < 4; i++) ck_assert_int_eq(pthread_create(&t[i], NULL, fit_thread, (void *)i), 0);
+    long bad = 0;
+    for (int i = 0; i < 4; i++) {
+        void *r;
+        ck_assert_int_eq(pthread_join(t[i], &r), 0);
+        bad += (long)r;
+    }
+    ck_assert_int_eq(bad, 0);
+}
+END_TEST
+
+static Suite *suite(void)
+{
+    Suite *s = suite_create("fit");
+    TCase *tc = tcase_create("core");
+    tcase_set_timeout(tc, 120);
+    tcase_add_loop_test(tc, test_discrete_exact_recovery, 0, 2);
+    tcase_add_test(tc, test_discrete_nearly_straight);
+    tcase_add_test(tc, test_smooth_exact_recovery);
+    tcase_add_test(tc, test_pinning);
+    tcase_add_test(tc, test_scale_invariance);
+    tcase_add_test(tc, test_bad_input);
+    tcase_add_test(tc, test_collinear);
+    tcase_add_test(tc, test_degenerate_shapes);
+    tcase_add_test(tc, test_maxiter_best_seen);
+    tcase_add_test(tc, test_guess_and_lbfgs);
+    tcase_add_test(tc, test_threads);
+    suite_add_tcase(s, tc);
+    return s;
+}
+
+int main(void) { return test_run_suite(suite()); }

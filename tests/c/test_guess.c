@@ -1,0 +1,118 @@
+/* Initial guess (guess.c), seed 000 §4.3: the modulus k from (4.34)-(4.37)
+ * and the phase fit land close to the truth on noise-free data; invariance. */
+#include "testutil.h"
+#include <gsl/gsl_sf_ellint.h>
+
+static double half_period(double k)
+{
+    return k < 1.0 ? 2.0 * gsl_sf_ellint_Kcomp(k, GSL_PREC_DOUBLE)
+                   : 2.0 * gsl_sf_ellint_Kcomp(1.0 / k, GSL_PREC_DOUBLE) / k;
+}
+
+static const double KS[] = {0.1, 0.3, 0.6, 0.9, 1.2, 2.0, 5.0};
+
+/* (4.37) in the one-formula parametrisation gives k for both cases. */
+START_TEST(test_guess_k_discrete)
+{
+    const size_t sizes[] = {20, 200};
+    double xy[2 * 200];
+    for (size_t a = 0; a < sizeof KS / sizeof KS[0]; a++)
+        for (int si = 0; si < 2; si++)
+            for (int pieces = 1; pieces <= 3; pieces++) {
+                size_t n = sizes[si];
+                double sign = pieces == 2 ? -1.0 : 1.0;   /* z < 0: turning the other way */
+                el_discrete_params p = {0.2, -0.4, 1.0 / (double)n, 0.4,
+                                        sign * 0.9 * pieces * half_period(KS[a]) / (double)(n - 1),
+                                        0.3, KS[a]};
+                ck_assert_int_eq(el_discrete_eval(&p, n, xy), EL_OK);
+                el_discrete_params c[4];
+                size_t cnt = 0;
+                ck_assert_int_eq(el_guess_discrete(xy, n, c, 4, &cnt), EL_OK);
+                ck_assert(cnt >= 1);
+                ck_assert_msg(fabs(c[0].k - p.k) <= 0.05 * p.k, "k %g n %zu pieces %d: guess %g",
+                              p.k, n, pieces, c[0].k);
+                ck_assert_close(c[0].h, p.h, 0.05 * p.h);
+                /* for k > 1 the sense of turning is the sign of z (for k < 1 the
+                 * reflection u -> -u - 2K gives the same curve with -z) */
+                if (p.k > 1.0) ck_assert_msg(c[0].z * p.z > 0.0, "sense of z, k %g", p.k);
+            }
+}
+END_TEST
+
+START_TEST(test_guess_k_smooth)
+{
+    double xy[2 * 200], s[200];
+    for (size_t a = 0; a < sizeof KS / sizeof KS[0]; a++)
+        for (int pieces = 1; pieces <= 3; pieces++) {
+            const size_t n = 200;
+            el_smooth_params p = {1.0, 2.0, -0.7, 2.0, KS[a], 0.3, 0.9 * pieces * half_period(KS[a]) / sqrt(2.0)};
+            for (size_t i = 0; i < n; i++) s[i] = p.length * (double)i / (double)(n - 1);
+            ck_assert_int_eq(el_smooth_eval(&p, n, s, xy, NULL, NULL), EL_OK);
+            el_smooth_params c[4];
+            size_t cnt = 0;
+            ck_assert_int_eq(el_guess_smooth(xy, n, EL_PARAM_AUTO, c, 4, &cnt), EL_OK);
+            ck_assert_msg(fabs(c[0].k - p.k) <= 0.05 * p.k, "k %g pieces %d: guess %g", p.k, pieces, c[0].k);
+            ck_assert_close(c[0].length, p.length, 0.05 * p.length);   /* polygon length */
+            ck_assert_close(c[0].mu, p.mu, 0.1 * p.mu);
+            ck_assert(el_smooth_check(&c[0]) == EL_OK);
+        }
+}
+END_TEST
+
+/* A similarity transform of the data transforms the guess (h, x0, y0 scale;
+ * k, z, q do not). */
+START_TEST(test_guess_similarity)
+{
+    const size_t n = 100;
+    double xy[2 * 100], big[2 * 100];
+    el_discrete_params p = {0.0, 0.0, 0.01, 0.5, 0.03, -0.2, 0.7};
+    ck_assert_int_eq(el_discrete_eval(&p, n, xy), EL_OK);
+    el_discrete_params a[4], b[4];
+    size_t na = 0, nb = 0;
+    ck_assert_int_eq(el_guess_discrete(xy, n, a, 4, &na), EL_OK);
+    const double sc = 1e7;
+    for (size_t i = 0; i < 2 * n; i++) big[i] = sc * xy[i] - 3e7;
+    ck_assert_int_eq(el_guess_discrete(big, n, b, 4, &nb), EL_OK);
+    ck_assert_int_eq(na, nb);
+    ck_assert_close(b[0].h, sc * a[0].h, 1e-9 * sc * a[0].h);
+    ck_assert_close(b[0].k, a[0].k, 1e-9);
+    ck_assert_close(b[0].z, a[0].z, 1e-9);
+    ck_assert_close(b[0].x0, sc * a[0].x0 - 3e7, 1e-6 * sc);
+}
+END_TEST
+
+START_TEST(test_guess_bad_input)
+{
+    double xy[8] = {0, 0, 1, 0, 2, 1, 3, 3};
+    el_discrete_params c[2];
+    el_smooth_params sc[2];
+    size_t cnt = 99;
+    ck_assert_int_eq(el_guess_discrete(xy, 3, c, 2, &cnt), EL_EINVAL);
+    ck_assert_int_eq(el_guess_discrete(xy, 4, c, 0, &cnt), EL_EINVAL);
+    ck_assert_int_eq(el_guess_discrete(NULL, 4, c, 2, &cnt), EL_EINVAL);
+    ck_assert_int_eq(el_guess_smooth(xy, 4, 7, sc, 2, &cnt), EL_EINVAL);
+    ck_assert_int_eq(cnt, 99);
+    xy[3] = NAN;
+    ck_assert_int_eq(el_guess_smooth(xy, 4, EL_PARAM_AUTO, sc, 2, &cnt), EL_EINVAL);
+    xy[3] = 0;
+    ck_assert_int_eq(el_guess_discrete(xy, 4, c, 2, &cnt), EL_OK);   /* 4 points suffice */
+    ck_assert(cnt >= 1 && cnt <= 2 && el_discrete_check(&c[0]) == EL_OK);
+    double t[4];
+    ck_assert_int_eq(el_fit_fractions(xy, 4, 3, t, NULL), EL_EINVAL);
+}
+END_TEST
+
+static Suite *suite(void)
+{
+    Suite *s = suite_create("guess");
+    TCase *tc = tcase_create("core");
+    tcase_set_timeout(tc, 60);
+    tcase_add_test(tc, test_guess_k_discrete);
+    tcase_add_test(tc, test_guess_k_smooth);
+    tcase_add_test(tc, test_guess_similarity);
+    tcase_add_test(tc, test_guess_bad_input);
+    suite_add_tcase(s, tc);
+    return s;
+}
+
+int main(void) { return test_run_suite(suite()); }
