@@ -72,11 +72,15 @@ int el_jacobi_eval(double u, double k, el_jacobi *val, el_jacobi *d_du, el_jacob
 /* ------------------------------------------------------------------ smooth */
 
 /*
- * Smooth elastica segment, seed 000 (4.3) with one formula for every k > 0:
- *   u(s) = sqrt(mu) s + q,  sin((theta-phi)/2) = k sn(u;k),  cos((theta-phi)/2) = dn(u;k),
- *   kappa = theta' = 2 k sqrt(mu) cn(u;k),  gamma(0) = (x0, y0),  s in [0, length].
- * k < 1: inflectional (wave-like); k = 1: the separatrix; k > 1: non-inflectional
- * (loops). k = 0 is the straight line. Positions in closed form:
+ * Smooth elastica segment, seed 000 (4.3) with one formula for every real k:
+ *   u(s) = sqrt(mu) s + q,  sin((theta-phi)/2) = k sn(u;|k|),  cos((theta-phi)/2) = dn(u;|k|),
+ *   kappa = theta' = 2 k sqrt(mu) cn(u;|k|),  gamma(0) = (x0, y0),  s in [0, length].
+ * |k| < 1: inflectional (wave-like); |k| = 1: the separatrix; |k| > 1:
+ * non-inflectional (loops), turning counter-clockwise for k > 1 and clockwise
+ * for k < -1. k = 0 is the straight line. Changing the sign of k mirrors the
+ * curve in the line through (x0, y0) at angle phi; for |k| < 1 that is the same
+ * curve as q + 2K(|k|), so only loops need negative k (with k >= 0 alone a
+ * clockwise loop has no parameters). Positions in closed form:
  *   gamma(s) = (x0,y0) + R(phi) ( (2(E(u)-E(q)) - (u-q)) / sqrt(mu),
  *                                 -2k (cn(u) - cn(q)) / sqrt(mu) ).
  * The parameter vector order, used by every Jacobian, is
@@ -86,14 +90,14 @@ typedef struct el_smooth_params {
     double x0, y0;   /* start point gamma(0) */
     double phi;      /* rotation (rad) */
     double mu;       /* > 0: scale, mu = lambda/(2k^2-1) of seed 000 (2.23) */
-    double k;        /* >= 0: elliptic modulus, shape */
+    double k;        /* elliptic modulus |k| (shape) with the orientation as its sign */
     double q;        /* phase: u(0) = q */
     double length;   /* >= 0: arc length of the segment */
 } el_smooth_params;
 
 enum { EL_SMOOTH_NPARAMS = 7 };
 
-/* EL_OK when every field is finite, mu > 0, k >= 0, length >= 0; else EL_EINVAL. */
+/* EL_OK when every field is finite, mu > 0, length >= 0; else EL_EINVAL. */
 int el_smooth_check(const el_smooth_params *p);
 
 /*

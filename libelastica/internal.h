@@ -28,6 +28,7 @@ int el__jacobi_eval_mod(const el__modulus *mod, double u, el_jacobi *val, el_jac
 
 /* Jacobi values and k-derivatives at u_n = z n + q for n = 0..count-1, by the
  * addition theorems with a fresh el_jacobi_eval every few steps (jacobi.c).
+ * The amplitude am is not propagated (set to 0); every other field is.
  * val[count] required; d_dk[count] optional (NULL). */
 int el__jacobi_progression(double q, double z, double k, size_t count,
                            el_jacobi *val, el_jacobi *d_dk);

@@ -287,10 +287,10 @@ int el__jacobi_progression(double q, double z, double k, size_t count,
                  &val[i], d_dk ? &d_dk[i] : NULL);
         const double u = q + z * (double)i;
         val[i].E = u - k * k * val[i].D;
-        val[i].am = atan2(val[i].sn, val[i].cn); /* principal value only */
+        val[i].am = 0.0; /* not propagated: no caller needs it (internal.h) */
         if (d_dk) {
             d_dk[i].E = -2.0 * k * val[i].D - k * k * d_dk[i].D;
-            d_dk[i].am = val[i].cn * d_dk[i].sn - val[i].sn * d_dk[i].cn;
+            d_dk[i].am = 0.0;
         }
     }
     return EL_OK;

@@ -1,6 +1,8 @@
 /*
  * Smooth elastica segment in closed form, seed 000 (4.3) with the continuous
- * parameter u = sqrt(mu) s + q; one formula for every k >= 0 (header).
+ * parameter u = sqrt(mu) s + q; one formula for every real k (header): the
+ * Jacobi functions take |k|, and the sign of k is the orientation (k -> -k is
+ * the mirror image in the line through (x0, y0) at angle phi).
  *
  * With a = (theta - phi)/2, sin a = k sn u, cos a = dn u, the unit tangent in
  * the frame rotated by phi is (cos 2a, sin 2a) = (1 - 2k^2 sn^2, 2k sn dn), and
@@ -16,7 +18,7 @@ int el_smooth_check(const el_smooth_params *p)
 {
     if (!p) return EL_EINVAL;
     const double v[7] = {p->x0, p->y0, p->phi, p->mu, p->k, p->q, p->length};
-    if (el__all_finite(v, 7) || !(p->mu > 0.0) || p->k < 0.0 || p->length < 0.0) return EL_EINVAL;
+    if (el__all_finite(v, 7) || !(p->mu > 0.0) || p->length < 0.0) return EL_EINVAL;
     return EL_OK;
 }
 
@@ -31,34 +33,35 @@ static int equally_spaced(size_t n, const double *s)
     return 1;
 }
 
-/* Jacobi values (and k-derivatives) at u_i = sqrt(mu) s_i + q, plus the base point u = q. */
+/* Jacobi values (and derivatives in |k|) at u_i = sqrt(mu) s_i + q, plus the base point u = q. */
 static int jacobi_at(const el_smooth_params *p, size_t n, const double *s,
                      el_jacobi *val, el_jacobi *dk, el_jacobi *base, el_jacobi *base_dk)
 {
     const double w = sqrt(p->mu);
     el__modulus mod;
-    int st = el__modulus_init(p->k, &mod);
+    int st = el__modulus_init(fabs(p->k), &mod);
     if (st || (st = el__jacobi_eval_mod(&mod, p->q, base, NULL, base_dk))) return st;
     if (equally_spaced(n, s)) {
         const double ds = (s[n - 1] - s[0]) / (double)(n - 1);
-        return el__jacobi_progression(w * s[0] + p->q, w * ds, p->k, n, val, dk);
+        return el__jacobi_progression(w * s[0] + p->q, w * ds, fabs(p->k), n, val, dk);
     }
     for (size_t i = 0; i < n; i++)
         if ((st = el__jacobi_eval_mod(&mod, w * s[i] + p->q, &val[i], NULL, dk ? &dk[i] : NULL))) return st;
     return EL_OK;
 }
 
-/* theta - phi = 2a with a continuous in s. For k <= 1, |a| <= pi/2 (dn >= 0);
- * for k > 1, a = am(k u; 1/k) grows without bound: the branch of
- * atan2(k sn, dn) nearest n pi, n = the number of half periods 2K(1/k) in k u. */
+/* theta - phi = 2a with a continuous in s, a odd in k. For |k| <= 1, |a| <= pi/2
+ * (dn >= 0); for |k| > 1, a = am(|k| u; 1/|k|) grows without bound: the branch of
+ * atan2(|k| sn, dn) nearest n pi, n = the number of half periods 2K(1/|k|) in |k| u. */
 static double half_angle(double u, double k, double K_reciprocal, const el_jacobi *v)
 {
-    double a = atan2(k * v->sn, v->dn);
-    if (k > 1.0) {
-        double npi = M_PI * nearbyint(k * u / (2.0 * K_reciprocal));
+    const double ka = fabs(k);
+    double a = atan2(ka * v->sn, v->dn);
+    if (ka > 1.0) {
+        double npi = M_PI * nearbyint(ka * u / (2.0 * K_reciprocal));
         a += 2.0 * M_PI * nearbyint((npi - a) / (2.0 * M_PI));
     }
-    return a;
+    return copysign(1.0, k) * a;
 }
 
 static int check_eval_args(const el_smooth_params *p, size_t n, const double *s)
@@ -78,7 +81,7 @@ int el_smooth_eval(const el_smooth_params *p, size_t n, const double *s,
     if ((st = jacobi_at(p, n, s, v, NULL, &b, NULL))) { free(v); return st; }
     const double w = sqrt(p->mu), k = p->k, c = cos(p->phi), sp = sin(p->phi);
     el__modulus mod;
-    if ((st = el__modulus_init(k, &mod))) { free(v); return st; }
+    if ((st = el__modulus_init(fabs(k), &mod))) { free(v); return st; }
     for (size_t i = 0; i < n; i++) {
         const double u = w * s[i] + p->q;
         if (xy) {
@@ -105,7 +108,7 @@ int el_smooth_jacobian(const el_smooth_params *p, size_t n, const double *s,
     el_jacobi *vk = v + n;
     if ((st = jacobi_at(p, n, s, v, vk, &b, &bk))) { free(v); return st; }
     const double w = sqrt(p->mu), k = p->k, c = cos(p->phi), sp = sin(p->phi);
-    const double m = k * k;
+    const double m = k * k, sgn = copysign(1.0, k);
     for (size_t i = 0; i < n; i++) {
         const double si = s[i], u = w * si + p->q;
         const double P = (u - p->q) - 2.0 * m * (v[i].D - b.D), X = P / w;
@@ -114,8 +117,9 @@ int el_smooth_jacobian(const el_smooth_params *p, size_t n, const double *s,
         const double tx = 1.0 - 2.0 * m * v[i].sn * v[i].sn, ty = 2.0 * k * v[i].sn * v[i].dn;
         /* d/dw with u = w s + q: dP/dw = s tx, dQy/dw = s ty */
         const double Xw = (si * tx - X) / w, Yw = (si * ty - Y) / w;
-        const double Xk = (-4.0 * k * (v[i].D - b.D) - 2.0 * m * (vk[i].D - bk.D)) / w;
-        const double Yk = (-2.0 * (v[i].cn - b.cn) - 2.0 * k * (vk[i].cn - bk.cn)) / w;
+        /* vk holds derivatives in |k|: d/dk = sign(k) d/d|k| */
+        const double Xk = (-4.0 * k * (v[i].D - b.D) - 2.0 * m * sgn * (vk[i].D - bk.D)) / w;
+        const double Yk = (-2.0 * (v[i].cn - b.cn) - 2.0 * k * sgn * (vk[i].cn - bk.cn)) / w;
         const double Xq = -2.0 * m * (v[i].sn * v[i].sn - b.sn * b.sn) / w;
         const double Yq = 2.0 * k * (v[i].sn * v[i].dn - b.sn * b.dn) / w;
         const double t = p->length > 0.0 ? si / p->length : 0.0;
@@ -145,8 +149,8 @@ int el_smooth_energy(const el_smooth_params *p, double *energy)
     const double w = sqrt(p->mu), u1 = w * p->length + p->q;
     el_jacobi a, b;
     int st;
-    if ((st = el_jacobi_eval(p->q, p->k, &a, NULL, NULL))) return st;
-    if ((st = el_jacobi_eval(u1, p->k, &b, NULL, NULL))) return st;
+    if ((st = el_jacobi_eval(p->q, fabs(p->k), &a, NULL, NULL))) return st;
+    if ((st = el_jacobi_eval(u1, fabs(p->k), &b, NULL, NULL))) return st;
     *energy = 4.0 * p->k * p->k * w * ((u1 - p->q) - (b.D - a.D));
     return EL_OK;
 }

@@ -257,6 +257,7 @@ START_TEST(smooth_jacobian_matches_finite_differences)
     unsigned long long rng = 0x5eed1234ULL;
     for (int trial = 0; trial < 40; trial++) {
         double k = trial % 2 ? test_uniform(&rng, 0.05, 0.97) : test_uniform(&rng, 1.03, 4.0);
+        if (trial % 4 >= 2) k = -k; /* the mirror images */
         double par[7] = {test_uniform(&rng, -2, 2), test_uniform(&rng, -2, 2), test_uniform(&rng, -3, 3),
                          test_uniform(&rng, 0.2, 3), k, test_uniform(&rng, -2, 2), test_uniform(&rng, 0.5, 4)};
         enum { N = 12 };
@@ -290,13 +291,45 @@ START_TEST(smooth_uniform_grid_agrees_with_pointwise)
 }
 END_TEST
 
+START_TEST(smooth_negative_k_is_the_mirror_image)
+{
+    /* k -> -k reflects the curve in the line through (x0, y0) at angle phi; for
+     * |k| > 1 that turns a counter-clockwise loop into a clockwise one */
+    const double ks[] = {0.4, 1.0, 2.5};
+    for (size_t a = 0; a < sizeof ks / sizeof *ks; a++) {
+        el_smooth_params p = smooth(ks[a]), m = p;
+        m.k = -p.k;
+        enum { N = 40 };
+        double s[N], xy[2 * N], xm[2 * N], th[N], thm[N], ka[N], kam[N];
+        for (int i = 0; i < N; i++) s[i] = p.length * i / (N - 1.0);
+        ck_assert_int_eq(el_smooth_eval(&p, N, s, xy, th, ka), EL_OK);
+        ck_assert_int_eq(el_smooth_eval(&m, N, s, xm, thm, kam), EL_OK);
+        const double c = cos(p.phi), sn = sin(p.phi);
+        for (int i = 0; i < N; i++) {
+            /* coordinates along / across the mirror line */
+            double dx = xy[2 * i] - p.x0, dy = xy[2 * i + 1] - p.y0;
+            double mx = xm[2 * i] - p.x0, my = xm[2 * i + 1] - p.y0;
+            ck_assert_close(c * dx + sn * dy, c * mx + sn * my, 1e-12);
+            ck_assert_close(-sn * dx + c * dy, -(-sn * mx + c * my), 1e-12);
+            ck_assert_close(thm[i] - p.phi, -(th[i] - p.phi), 1e-12);
+            ck_assert_close(kam[i], -ka[i], 1e-12);
+        }
+        double e, em;
+        ck_assert_int_eq(el_smooth_energy(&p, &e), EL_OK);
+        ck_assert_int_eq(el_smooth_energy(&m, &em), EL_OK);
+        ck_assert_close(e, em, 1e-12 * e);
+        if (p.k > 1.0) ck_assert(kam[0] < 0 && kam[N / 2] < 0); /* clockwise */
+    }
+}
+END_TEST
+
 START_TEST(smooth_rejects_bad_input)
 {
     double s[2] = {0, 1}, xy[4] = {7, 7, 7, 7}, jac[28], e = 7;
     el_smooth_params good = smooth(0.5);
     el_smooth_params bad[6];
     for (int i = 0; i < 6; i++) bad[i] = good;
-    bad[0].mu = 0; bad[1].mu = -1; bad[2].k = -0.1; bad[3].length = -1; bad[4].q = NAN; bad[5].phi = INFINITY;
+    bad[0].mu = 0; bad[1].mu = -1; bad[2].k = NAN; bad[3].length = -1; bad[4].q = NAN; bad[5].phi = INFINITY;
     for (int i = 0; i < 6; i++) {
         ck_assert_int_eq(el_smooth_eval(&bad[i], 2, s, xy, NULL, NULL), EL_EINVAL);
         ck_assert_int_eq(el_smooth_jacobian(&bad[i], 2, s, xy, jac), EL_EINVAL);
@@ -487,6 +520,7 @@ int main(void)
     tcase_add_test(sm, smooth_energy_matches_quadrature);
     tcase_add_test(sm, smooth_jacobian_matches_finite_differences);
     tcase_add_test(sm, smooth_uniform_grid_agrees_with_pointwise);
+    tcase_add_test(sm, smooth_negative_k_is_the_mirror_image);
     tcase_add_test(sm, smooth_rejects_bad_input);
     tcase_add_test(d, discrete_segments_mcmillan_and_conserved_quantity);
     tcase_add_test(d, discrete_continuum_limit_is_second_order);

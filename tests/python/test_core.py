@@ -18,7 +18,7 @@ def fd_jacobian(make, params, names, evaluate, h=1e-6):
     return np.stack(cols, axis=-1)
 
 
-@pytest.mark.parametrize("k", [0.3, 0.9, 1.2, 3.0])
+@pytest.mark.parametrize("k", [0.3, 0.9, 1.2, 3.0, -2.0])
 def test_smooth_jacobian_matches_finite_differences(k):
     params = dict(x0=0.4, y0=-1.0, phi=0.8, mu=1.3, k=k, q=0.25, length=3.0)
     t = np.array([0.0, 0.13, 0.5, 0.77, 1.0])
@@ -70,7 +70,7 @@ def test_discrete_geometry_from_python():
     assert np.allclose(kappa, 2 / d.h * np.tan(turn / 2), atol=1e-10)
 
 
-@pytest.mark.parametrize("bad", [dict(mu=0.0), dict(mu=-1.0), dict(k=-0.5), dict(length=-1.0),
+@pytest.mark.parametrize("bad", [dict(mu=0.0), dict(mu=-1.0), dict(k=float("nan")), dict(length=-1.0),
                                  dict(q=float("nan")), dict(phi=float("inf"))])
 def test_smooth_bad_parameters_raise_value_error(bad):
     params = dict(x0=0, y0=0, phi=0, mu=1.0, k=0.5, q=0.0, length=1.0)
@@ -110,3 +110,10 @@ def test_discrete_to_bspline_interpolates_vertices():
     chord = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(d.points(), axis=0).T))])
     assert b.degree == 3
     assert np.allclose(b.evaluate(chord), d.points(), atol=1e-12)
+
+
+def test_negative_k_gives_clockwise_loops():
+    ccw = el.SmoothElastica(k=2.0, length=4.0)
+    cw = el.SmoothElastica(k=-2.0, length=4.0)
+    assert (ccw.curvature() > 0).all() and (cw.curvature() < 0).all()
+    assert np.allclose(cw.points() * [1, -1], ccw.points(), atol=1e-12)   # phi = 0: mirror in the x axis
