@@ -451,9 +451,27 @@ def _report(obj, msg):
 
 class _Proxy:
     """Common state handling: nothing but a version number is pickled; the
-    properties hold the rest (so files stay readable without this code)."""
+    properties hold the rest (so files stay readable without this code).
+    Subclasses define setup (properties), compute (raises InputProblem) and
+    apply (writes the result); execute reports every failure and keeps the shape."""
 
     kind = ""
+
+    def __init__(self, obj):
+        self._restoring = False
+        obj.Proxy = self
+        self.setup(obj)
+
+    def execute(self, obj):
+        try:
+            r = self.compute(obj)
+        except InputProblem as exc:
+            _report(obj, str(exc))
+            return
+        except Exception as exc:  # a bug or a kernel error: report it, keep the shape
+            _report(obj, f"{type(exc).__name__}: {exc}")
+            return
+        self.apply(obj, r)
 
     def __getstate__(self):
         return {"kind": self.kind, "version": VERSION}
@@ -488,11 +506,6 @@ class FitProxy(_Proxy):
     """Elastica fitted to sketch edges / vertices, a Points object, a wire or a CSV file."""
 
     kind = "Fit"
-
-    def __init__(self, obj):
-        self._restoring = False
-        obj.Proxy = self
-        self.setup(obj)
 
     def setup(self, obj):
         tol, deg, model = defaults()
@@ -550,15 +563,7 @@ class FitProxy(_Proxy):
                         split=obj.SplitAtInflection, pin_ends=obj.PinEnds,
                         step=obj.ResampleStep, tol=obj.Tolerance, degree=obj.Degree)
 
-    def execute(self, obj):
-        try:
-            r = self.compute(obj)
-        except InputProblem as exc:
-            _report(obj, str(exc))
-            return
-        except Exception as exc:  # a bug or a kernel error: report it, keep the shape
-            _report(obj, f"{type(exc).__name__}: {exc}")
-            return
+    def apply(self, obj, r):
         edges = [part_bspline(b, r["placement"]).toShape() for b in r["bsplines"]]
         obj.Shape = Part.Wire(edges) if len(edges) > 1 else edges[0]
         obj.Rms = r["rms"]
@@ -589,11 +594,6 @@ class BlendProxy(_Proxy):
     """Elastic Hermite curve between an end of one edge and an end of another."""
 
     kind = "Blend"
-
-    def __init__(self, obj):
-        self._restoring = False
-        obj.Proxy = self
-        self.setup(obj)
 
     def setup(self, obj):
         _add(obj, "App::PropertyLinkSub", "Edge1", "Input", "First edge (the blend leaves it)")
@@ -651,15 +651,7 @@ class BlendProxy(_Proxy):
         value = obj.Length if obj.Mode == "length" else obj.Tension
         return blend_core(ends[0], obj.AtEnd1, ends[1], obj.AtEnd2, plane, obj.Mode, value)
 
-    def execute(self, obj):
-        try:
-            r = self.compute(obj)
-        except InputProblem as exc:
-            _report(obj, str(exc))
-            return
-        except Exception as exc:  # a bug or a kernel error: report it, keep the shape
-            _report(obj, f"{type(exc).__name__}: {exc}")
-            return
+    def apply(self, obj, r):
         curves = r["curves"]
         i = min(max(obj.Solution, 0), len(curves) - 1)
         try:
@@ -684,11 +676,6 @@ class CombProxy(_Proxy):
 
     kind = "Comb"
 
-    def __init__(self, obj):
-        self._restoring = False
-        obj.Proxy = self
-        self.setup(obj)
-
     def setup(self, obj):
         _add(obj, "App::PropertyLinkSub", "Source", "Comb",
              "An Elastica result, or an object (and optionally its edges)")
@@ -701,18 +688,14 @@ class CombProxy(_Proxy):
         obj.setEditorMode("UsedScale", 1)
         obj.setEditorMode("Status", 1)
 
-    def execute(self, obj):
+    def compute(self, obj):
+        """comb_core's (teeth, tips, scale); raises InputProblem."""
         if not obj.Source:
-            _report(obj, "no source")
-            return
-        try:
-            teeth, tips, scale = comb_core(obj.Source[0], obj.Source[1], obj.Samples, obj.Scale)
-        except InputProblem as exc:
-            _report(obj, str(exc))
-            return
-        except Exception as exc:  # a bug or a kernel error: report it, keep the shape
-            _report(obj, f"{type(exc).__name__}: {exc}")
-            return
+            raise InputProblem("no source")
+        return comb_core(obj.Source[0], obj.Source[1], obj.Samples, obj.Scale)
+
+    def apply(self, obj, r):
+        teeth, tips, scale = r
         shapes = [Part.makeLine(a, b) for a, b in teeth if (a - b).Length > 1e-12]
         env = _dedup(tips)
         if len(env) > 1:
