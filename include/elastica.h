@@ -222,6 +222,8 @@ int el_guess_discrete(const double *xy, size_t n, el_discrete_params *cand, size
 /*
  * The same for the smooth model (Brander et al.: curvature affine in the
  * position), data point i at s_i = t_i length with t from el_fit_fractions(mode).
+ * Loops (|k| > 1) get the sign of k from the data's sense of turning (k < -1:
+ * clockwise); inflectional guesses have k > 0.
  * Errors as el_guess_discrete, plus EL_EINVAL for a bad mode.
  */
 int el_guess_smooth(const double *xy, size_t n, int mode, el_smooth_params *cand, size_t cap,
@@ -239,7 +241,7 @@ typedef struct el_fit_options {
     int fixed[7];        /* 1: hold p_j at value[j] (x0, y0 pinned to a point, seed 000 §5.4; h fixed) */
     double value[7];     /* values of the fixed parameters (input units) */
     double lower[7];     /* bounds on p_j in input units; -HUGE_VAL / HUGE_VAL: none. Defaults: */
-    double upper[7];     /*   none, except the model's own (h, mu, length > 0, k >= 0) */
+    double upper[7];     /*   none (the model's domain, h, mu, length > 0, discrete k >= 0, is kept internally) */
     double tol;          /* Ipopt's tol on the normalised problem (default 1e-12) */
     int max_iter;        /* Ipopt iterations per candidate (default 200) */
     int limited_memory;  /* 1: Ipopt's L-BFGS Hessian (the paper's setting) instead of J^T J */
@@ -300,10 +302,12 @@ int el_fit_discrete(const double *xy, size_t n, const el_fit_options *opt,
  * The same for the smooth elastica: point i at arc length s_i = t_i length
  * (el_fit_fractions with opt->param_mode: i length/(n-1) for equilateral
  * data, the chord-length parameter otherwise). Statuses as el_fit_discrete.
- * Limitation of the parametrisation (4.3) with s increasing: a
- * non-inflectional (k > 1) smooth elastica always turns counter-clockwise, so
- * data turning clockwise all along are fitted by the best k < 1 curve (the
- * discrete model covers both senses through z < 0).
+ * The optimiser works over every real k (the sign of k is the orientation,
+ * smooth section): loops turning clockwise are fitted with k < -1 and keep
+ * that sign; inflectional results (|k| < 1) are handed out with k >= 0 (the
+ * same curve as -k with q + 2K(|k|)) unless k or q is fixed, or the caller's
+ * bounds exclude that form. (The discrete model covers both senses with
+ * k >= 0 through the sign of z.)
  */
 int el_fit_smooth(const double *xy, size_t n, const el_fit_options *opt,
                   const el_smooth_params *initial, el_fit_smooth_result *res);
@@ -487,17 +491,16 @@ typedef struct el_hermite_options {
 
 /*
  * One solution. curve is a valid el_smooth_params (el_smooth_eval works on it)
- * with curve.length = length. The parametrisation has kappa = 2k sqrt(mu) cn >= 0
- * for k > 1, so a loop turning clockwise (non-inflectional, kappa < 0) is stored
- * traversed backwards: reversed = 1 means curve(0) = p1 with tangent -t1 and
- * curve(length) = p0 with tangent -t0, i.e. x(s) = curve(length - s).
+ * with curve.length = length, running from p0 (curve(0) = p0, tangent t0) to p1
+ * (curve(length) = p1, tangent t1). Inflectional curves have 0 < k < 1; a
+ * non-inflectional loop has k > 1 when it turns counter-clockwise and k < -1
+ * when it turns clockwise (kappa < 0); a circular arc (below) has k = +-1e4.
  * A straight segment is k = 0. kappa0, kappa1 are the curvatures at p0 and p1
- * along the p0 -> p1 orientation. residual = max(position error / |p1-p0|,
+ * (= curve's kappa at 0 and length). residual = max(position error / |p1-p0|,
  * tangent angle error) measured with el_smooth_eval at both ends.
  */
 typedef struct el_hermite_solution {
     el_smooth_params curve;
-    int reversed;          /* 1: curve runs from p1 to p0 (see above) */
     double length;         /* arc length L */
     double sigma;          /* tension (given or, in length mode, computed; 0 for a straight segment there) */
     double energy;         /* bending energy integral kappa^2 ds */
@@ -531,13 +534,19 @@ void el_hermite_options_defaults(el_hermite_options *opt);
  * solutions found with 300 samples were missed with the default 16).
  * Every solution is verified with el_smooth_eval and kept only if its residual
  * is <= opt->tol (after a Newton polish on the parameters when it misses by a
- * little). Very close to the separatrix (|k - 1| < ~1e-6, which happens for
- * sigma |p1-p0|^2 > ~100) the evaluation itself is only good to ~1e-9, so such
- * solutions are dropped at tol = 1e-10 and returned with a larger tol.
+ * little, then a second one with k held at each of its nearest doubles).
+ * Conditioning limit: very close to the separatrix (||k| - 1| < ~1e-7, common
+ * for sigma |p1-p0|^2 > ~100) |d curve(L) / dk| is 1e6..1e8, so one ulp of the
+ * stored k moves the end by 1e-10..1e-8 (el_smooth_eval itself is good to
+ * ~1e-13 there); the other parameters compensate down to ~1e-11..5e-10 with the
+ * curve's tension 2 mu (2k^2 - 1) kept exact. At tol = 1e-10, for sigma |p1-p0|^2
+ * in [60, 600] about 8% of the solutions (those whose floor exceeds 1e-10) are
+ * dropped; a larger tol returns them.
  * Length mode costs about 70 tension solves (tens of ms); it also finds fewer
  * of the solutions with sigma |p1-p0|^2 > ~80 (~2% missed against a 300-line search).
- * A circular arc (sigma = kappa^2, where the parametrisation needs k = inf) is
- * returned with k = 1e4, accurate to ~1e-8 only: it appears when opt->tol allows.
+ * A circular arc (sigma = kappa^2, where the parametrisation needs |k| = inf) is
+ * returned with k = 1e4 (counter-clockwise) or -1e4 (clockwise), accurate to ~1e-8
+ * only: it appears when opt->tol allows.
  * res is overwritten (not freed first). EL_EINVAL leaves res untouched; other
  * errors leave it empty (count 0).
  * Errors: EL_EINVAL (NULL, non-finite, zero tangent, bad options), EL_EDOM

@@ -896,8 +896,14 @@ static int solve_length_normalised(hprob *pr, double Lt, int ng, int ns, hrootli
 
 /* el_smooth_params of the elastica starting at (x0, y0) with tangent angle theta,
  * curvature kappa, kappa' = dkappa, tension sigma, length L (the inverse of the
- * header's parametrisation, see the top of this file). kappa must be > 0 when
- * the curve is non-inflectional. */
+ * header's parametrisation, see the top of this file). A non-inflectional curve
+ * (kappa != 0 throughout) gets the sign of kappa as the sign of k: k < -1 is the
+ * clockwise loop, the mirror image of the k > 1 loop in the line through (x0, y0)
+ * along F. The mirror R maps T -> R T, N -> -R N, kappa -> -kappa, kappa' -> -kappa',
+ * so F = (kappa^2 - sigma) T + 2 kappa' N -> R F = F: phi and mu are those of the
+ * mirrored curve, and with a = theta - phi over 2, sin a = k sn(u;|k|) =
+ * sign(k) sn(|k| u; 1/|k|), cos a = dn(u;|k|) = cn(|k| u; 1/|k|), so
+ * am(|k| q; 1/|k|) = sign(k) a. */
 static int params_from_state(double x0, double y0, double theta, double kappa, double dkappa,
                              double sigma, double L, el_smooth_params *p)
 {
@@ -923,11 +929,11 @@ static int params_from_state(double x0, double y0, double theta, double kappa, d
         p->k = k;
         p->q = Fq;
     } else {
-        const double k = sqrt(k2), m = 1.0 / k;
-        if (!(kappa > 0.0)) return EL_EDOM;
+        const double k = sqrt(k2), m = 1.0 / k, eps = kappa > 0.0 ? 1.0 : -1.0;
+        if (!(kappa != 0.0)) return EL_EDOM;
         if ((rc = ell_complete(m, &Kc, &Dc))) return rc;
-        if ((rc = ell_fd(h, sin(h), cos(h), m, Kc, Dc, &Fq, &Dq))) return rc;
-        p->k = k;
+        if ((rc = ell_fd(eps * h, eps * sin(h), cos(h), m, Kc, Dc, &Fq, &Dq))) return rc;
+        p->k = eps * k;
         p->q = Fq / k;
     }
     return EL_OK;
@@ -946,29 +952,26 @@ static int residual(const frame *fr, const el_hermite_solution *s, double *res)
     double xy[4], th[2];
     int rc = el_smooth_eval(&s->curve, 2, sv, xy, th, NULL);
     if (rc) return rc;
-    const double *a = s->reversed ? fr->p1 : fr->p0, *b = s->reversed ? fr->p0 : fr->p1;
-    const double ta = s->reversed ? fr->psi1 + M_PI : fr->psi0, tb = s->reversed ? fr->psi0 + M_PI : fr->psi1;
+    const double *a = fr->p0, *b = fr->p1;
     double e = fmax(hypot(xy[0] - a[0], xy[1] - a[1]), hypot(xy[2] - b[0], xy[3] - b[1])) / fr->d;
-    e = fmax(e, fmax(angle_err(th[0], ta), angle_err(th[1], tb)));
+    e = fmax(e, fmax(angle_err(th[0], fr->psi0), angle_err(th[1], fr->psi1)));
     *res = e;
     return EL_OK;
 }
 
 /* Residual vector of a solution for the polish: end point (2, / d), tangent
  * angles at both ends (2), and the mode's scalar condition (sigma or length). */
-static int polish_res(const frame *fr, const el_smooth_params *p, int reversed, int mode,
-                      double target, double *r)
+static int polish_res(const frame *fr, const el_smooth_params *p, int mode, double target,
+                      double *r)
 {
     const double sv[2] = {0.0, p->length};
     double xy[4], th[2];
     int rc = el_smooth_eval(p, 2, sv, xy, th, NULL);
     if (rc) return rc;
-    const double *b = reversed ? fr->p0 : fr->p1;
-    const double ta = reversed ? fr->psi1 + M_PI : fr->psi0, tb = reversed ? fr->psi0 + M_PI : fr->psi1;
-    r[0] = (xy[2] - b[0]) / fr->d;
-    r[1] = (xy[3] - b[1]) / fr->d;
-    r[2] = wrap_pi(th[0] - ta);
-    r[3] = wrap_pi(th[1] - tb);
+    r[0] = (xy[2] - fr->p1[0]) / fr->d;
+    r[1] = (xy[3] - fr->p1[1]) / fr->d;
+    r[2] = wrap_pi(th[0] - fr->psi0);
+    r[3] = wrap_pi(th[1] - fr->psi1);
     r[4] = mode == EL_HERMITE_TENSION
                ? (2.0 * p->mu * (2.0 * p->k * p->k - 1.0) - target) * fr->d * fr->d / (1.0 + fabs(target) * fr->d * fr->d)
                : (p->length - target) / fr->d;
@@ -983,16 +986,20 @@ static void polish(const frame *fr, int mode, double target, el_hermite_solution
 {
     el_smooth_params p = s->curve;
     double r[5];
-    if (polish_res(fr, &p, s->reversed, mode, target, r)) return;
+    if (polish_res(fr, &p, mode, target, r)) return;
     for (int it = 0; it < 4; it++) {
         double J[25], *v[5] = {&p.phi, &p.mu, &p.k, &p.q, &p.length};
         for (int j = 0; j < 5; j++) {
-            const double v0 = *v[j], h = 1e-7 * (fabs(v0) + (j == 1 ? p.mu : 1e-3));
+            /* k: a step relative to the distance from the separatrix, where gamma
+             * varies on the scale |k| - 1 (the period grows like log 1/||k| - 1|) */
+            const double v0 = *v[j];
+            const double h = j == 2 ? 1e-7 * fmin(fabs(v0) + 1e-3, fmax(fabs(fabs(v0) - 1.0), 1e-9))
+                                    : 1e-7 * (fabs(v0) + (j == 1 ? p.mu : 1e-3));
             double rp[5], rm[5];
             *v[j] = v0 + h;
-            int e1 = polish_res(fr, &p, s->reversed, mode, target, rp);
+            int e1 = polish_res(fr, &p, mode, target, rp);
             *v[j] = v0 - h;
-            int e2 = polish_res(fr, &p, s->reversed, mode, target, rm);
+            int e2 = polish_res(fr, &p, mode, target, rm);
             *v[j] = v0;
             if (e1 || e2) return;
             for (int i = 0; i < 5; i++) J[i * 5 + j] = (rp[i] - rm[i]) / (2.0 * h);
@@ -1014,7 +1021,7 @@ static void polish(const frame *fr, int mode, double target, el_hermite_solution
         el_smooth_params q = p;
         q.phi += dv[0]; q.mu += dv[1]; q.k += dv[2]; q.q += dv[3]; q.length += dv[4];
         double rq[5];
-        if (el_smooth_check(&q) || polish_res(fr, &q, s->reversed, mode, target, rq)) return;
+        if (el_smooth_check(&q) || polish_res(fr, &q, mode, target, rq)) return;
         double n0 = 0.0, n1 = 0.0;
         for (int i = 0; i < 4; i++) { n0 = fmax(n0, fabs(r[i])); n1 = fmax(n1, fabs(rq[i])); }
         if (!(n1 < n0)) break;
@@ -1029,6 +1036,77 @@ static void polish(const frame *fr, int mode, double target, el_hermite_solution
     t.residual = res;
     if (mode == EL_HERMITE_LENGTH) t.sigma = 2.0 * p.mu * (2.0 * p.k * p.k - 1.0);
     if (el_smooth_energy(&p, &t.energy)) return;
+    *s = t;
+}
+
+/* Second polish for the solutions the first one leaves above tol: near the
+ * separatrix |dgamma(L)/dk| is 1e6..1e8 at fixed (phi, mu, q, L) (sigma
+ * |p1-p0|^2 > ~100), so the ulp of the stored k alone moves the end by 1e-10..1e-8,
+ * whatever the accuracy of el_smooth_eval (~1e-13 there, checked against a
+ * 40-digit evaluation). The rounding of k is compensated by the other
+ * parameters: for each k among the nearest few doubles, with the mode's
+ * condition kept exact (tension: mu = sigma / (2 (2k^2 - 1)); length: L fixed),
+ * Gauss-Newton on the remaining three parameters (tension: phi, q, L; length:
+ * phi, mu, q) fits the four end conditions in least squares (GSL QR); the best
+ * curve is kept if it improves the residual. */
+static void polish_fixed_k(const frame *fr, int mode, double target, el_hermite_solution *s)
+{
+    el_smooth_params best = s->curve;
+    double best_res = s->residual;
+    for (int j = -4; j <= 4; j++) {
+        el_smooth_params p = s->curve;
+        for (int i = 0; i < abs(j); i++) p.k = nextafter(p.k, j > 0 ? INFINITY : -INFINITY);
+        if (mode == EL_HERMITE_TENSION) p.mu = target / (2.0 * (2.0 * p.k * p.k - 1.0));
+        if (el_smooth_check(&p)) continue;
+        double *v[3] = {&p.phi, &p.q, mode == EL_HERMITE_TENSION ? &p.length : &p.mu};
+        double r[5];
+        if (polish_res(fr, &p, mode, target, r)) continue;
+        for (int it = 0; it < 4; it++) {
+            double J[12], rhs[4], dv[3], tau[3], lsr[4];
+            int bad = 0;
+            for (int c = 0; c < 3 && !bad; c++) {
+                const double v0 = *v[c], h = 1e-7 * (fabs(v0) + (c == 2 ? fabs(v0) : 1e-3));
+                double rp[5], rm[5];
+                *v[c] = v0 + h;
+                bad |= el_smooth_check(&p) || polish_res(fr, &p, mode, target, rp);
+                *v[c] = v0 - h;
+                bad |= el_smooth_check(&p) || polish_res(fr, &p, mode, target, rm);
+                *v[c] = v0;
+                for (int i = 0; i < 4; i++) J[i * 3 + c] = (rp[i] - rm[i]) / (2.0 * h);
+            }
+            if (bad) break;
+            for (int i = 0; i < 4; i++) rhs[i] = -r[i];
+            gsl_matrix_view Jm = gsl_matrix_view_array(J, 4, 3);
+            gsl_vector_view bv = gsl_vector_view_array(rhs, 4), xv = gsl_vector_view_array(dv, 3);
+            gsl_vector_view tv = gsl_vector_view_array(tau, 3), rv = gsl_vector_view_array(lsr, 4);
+            if (gsl_linalg_QR_decomp(&Jm.matrix, &tv.vector) != GSL_SUCCESS ||
+                gsl_linalg_QR_lssolve(&Jm.matrix, &tv.vector, &bv.vector, &xv.vector, &rv.vector) != GSL_SUCCESS)
+                break;
+            el_smooth_params q = p;
+            double *w[3] = {&q.phi, &q.q, mode == EL_HERMITE_TENSION ? &q.length : &q.mu};
+            for (int c = 0; c < 3; c++) *w[c] += isfinite(dv[c]) ? dv[c] : NAN;
+            double rq[5];
+            if (el_smooth_check(&q) || polish_res(fr, &q, mode, target, rq)) break;
+            double n0 = 0.0, n1 = 0.0;
+            for (int i = 0; i < 4; i++) { n0 = fmax(n0, fabs(r[i])); n1 = fmax(n1, fabs(rq[i])); }
+            if (!(n1 < n0)) break;
+            p = q;
+            memcpy(r, rq, sizeof r);
+        }
+        el_hermite_solution t = *s;
+        t.curve = p;
+        double res;
+        if (residual(fr, &t, &res) || !(res < best_res)) continue;
+        best = p;
+        best_res = res;
+    }
+    if (!(best_res < s->residual)) return;
+    el_hermite_solution t = *s;
+    t.curve = best;
+    t.length = best.length;
+    t.residual = best_res;
+    if (mode == EL_HERMITE_LENGTH) t.sigma = 2.0 * best.mu * (2.0 * best.k * best.k - 1.0);
+    if (el_smooth_energy(&best, &t.energy)) return;
     *s = t;
 }
 
@@ -1052,11 +1130,6 @@ static int make_solution(const frame *fr, const hroot *r, el_hermite_solution *s
         /* zeros of cn strictly inside: integers n with a < n < b (a zero at an end is no inflection) */
         const double a = (al0 - M_PI_2) / M_PI + 1e-9, b = (al1 - M_PI_2) / M_PI - 1e-9;
         s->has_inflection = ceil(b) - floor(a) - 1.0 > 0.5;
-    }
-    if (!st->infl && st->k0 < 0.0) {
-        s->reversed = 1;
-        return params_from_state(fr->p1[0], fr->p1[1], fr->psi1 + M_PI, -st->k1 / d,
-                                 st->k1p / (d * d), s->sigma, s->length, &s->curve);
     }
     return params_from_state(fr->p0[0], fr->p0[1], fr->psi0, st->k0 / d, st->k0p / (d * d),
                              s->sigma, s->length, &s->curve);
@@ -1100,11 +1173,10 @@ static int circle_solution(const frame *fr, double c, double L, el_hermite_solut
 {
     const double k = 1e4;
     memset(s, 0, sizeof *s);
-    s->reversed = c < 0.0;
-    s->curve.x0 = s->reversed ? fr->p1[0] : fr->p0[0];
-    s->curve.y0 = s->reversed ? fr->p1[1] : fr->p0[1];
-    s->curve.phi = s->reversed ? fr->psi1 + M_PI : fr->psi0;
-    s->curve.k = k;
+    s->curve.x0 = fr->p0[0];
+    s->curve.y0 = fr->p0[1];
+    s->curve.phi = fr->psi0;
+    s->curve.k = c < 0.0 ? -k : k;              /* clockwise: kappa = 2 k sqrt(mu) dn < 0 */
     s->curve.mu = c * c / (4.0 * k * k);
     s->curve.q = 0.0;
     s->curve.length = s->length = L;
@@ -1231,8 +1303,11 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
         if (make_solution(&fr, &roots.v[i], &s)) continue;
         if (opt->mode == EL_HERMITE_TENSION) s.sigma = opt->sigma;
         if (residual(&fr, &s, &s.residual)) continue;
-        if (s.residual > opt->tol && s.residual < 1e-5)
-            polish(&fr, opt->mode, opt->mode == EL_HERMITE_TENSION ? opt->sigma : opt->length, &s);
+        if (s.residual > opt->tol && s.residual < 1e-5) {
+            const double target = opt->mode == EL_HERMITE_TENSION ? opt->sigma : opt->length;
+            polish(&fr, opt->mode, target, &s);
+            if (s.residual > opt->tol) polish_fixed_k(&fr, opt->mode, target, &s);
+        }
         if (!(s.residual <= opt->tol)) continue;
         int dup = 0;
         for (size_t j = 0; j < n && !dup; j++) {

@@ -422,7 +422,7 @@ def cmd_hermite(args) -> int:
                "energy": e if e is not None else c.energy(),
                "has_inflection": getattr(c, "has_inflection", None),
                "kappa0": getattr(c, "kappa0", None), "kappa1": getattr(c, "kappa1", None),
-               "residual": getattr(c, "residual", None), "reversed": getattr(c, "reversed", False)}
+               "residual": getattr(c, "residual", None)}
         recs.append(rec)
         rows.append([i, rec["sigma"], c.length, c.k, rec["energy"],
                      "yes" if rec["has_inflection"] else "no", rec["kappa0"], rec["kappa1"],
@@ -441,12 +441,9 @@ def cmd_hermite(args) -> int:
             what = f"tension {args.tension:g}" if args.tension is not None else \
                 f"length {args.length:g}"
             drawn = []
-            for c in sols:             # reversed solutions are stored p1 -> p0: draw p0 -> p1
+            for c in sols:             # every solution runs p0 -> p1 (k < -1: clockwise loop)
                 s = np.linspace(0.0, c.length, 400)
-                xy, kap = c.points(s), c.curvature(s)
-                if getattr(c, "reversed", False):
-                    xy, kap = xy[::-1], -kap[::-1]
-                drawn.append((xy, s, kap))
+                drawn.append((c.points(s), s, c.curvature(s)))
             pic = curves_picture(drawn, [f"solution {i} (E = {r['energy']:.4g})"
                                         for i, r in enumerate(recs)],
                                  points=np.array([p0, p1]),

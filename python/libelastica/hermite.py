@@ -33,10 +33,11 @@ def hermite(p0, t0, p1, t1, tension: Optional[float] = None,
 
     - ``sigma``: the tension; ``energy_value``: integral of kappa^2 ds;
     - ``has_inflection``: whether the curvature changes sign;
-    - ``kappa0``, ``kappa1``: curvature at p0 and p1; ``residual``: end error;
-    - ``reversed``: the parametrisation cannot store a clockwise loop, so such a
-      curve is stored running from p1 to p0 (``points(length - s)`` follows
-      p0 -> p1); ``reversed`` is then True.
+    - ``kappa0``, ``kappa1``: curvature at p0 and p1; ``residual``: end error.
+
+    Every curve runs from ``p0`` (s = 0, tangent ``t0``) to ``p1`` (s = length,
+    tangent ``t1``). The sign of ``k`` is the orientation: a loop (``|k| > 1``)
+    turns counter-clockwise for ``k > 1`` and clockwise for ``k < -1``.
 
     Raises ``ValueError`` (an :class:`ElasticaError`) for bad input, and
     :class:`DomainError` when ``p0 == p1`` or ``length < |p1 - p0|``.
@@ -71,7 +72,6 @@ def hermite(p0, t0, p1, t1, tension: Optional[float] = None,
             e.kappa0 = float(s.kappa0)
             e.kappa1 = float(s.kappa1)
             e.residual = float(s.residual)
-            e.reversed = bool(s.reversed)
             out.append(e)
     finally:
         lib.el_hermite_result_free(res)

@@ -14,31 +14,34 @@ static double wrap(double a)
     return a;
 }
 
-/* Both ends met (position / |p1 - p0| and tangent angle to tol), energy by
- * el_smooth_energy, has_inflection by sampled curvature, length = curve.length. */
+/* Both ends met in the direction p0 -> p1 (position / |p1 - p0| and tangent
+ * angle to tol), the orientation in the sign of k (a loop, |k| > 1, turns with
+ * the sign of k), energy by el_smooth_energy, has_inflection by sampled
+ * curvature, length = curve.length. */
 static void check_solution(const double p0[2], const double t0[2], const double p1[2],
                            const double t1[2], const el_hermite_solution *s, double tol)
 {
     const double d = hypot(p1[0] - p0[0], p1[1] - p0[1]);
-    const double *a = s->reversed ? p1 : p0, *b = s->reversed ? p0 : p1;
-    const double sg = s->reversed ? -1.0 : 1.0;
-    const double ta = atan2(sg * (s->reversed ? t1 : t0)[1], sg * (s->reversed ? t1 : t0)[0]);
-    const double tb = atan2(sg * (s->reversed ? t0 : t1)[1], sg * (s->reversed ? t0 : t1)[0]);
+    const double ta = atan2(t0[1], t0[0]), tb = atan2(t1[1], t1[0]);
     ck_assert_int_eq(el_smooth_check(&s->curve), EL_OK);
     ck_assert_close(s->curve.length, s->length, 0.0);
     const double sv[2] = {0.0, s->length};
     double xy[4], th[2], kap[2];
     ck_assert_int_eq(el_smooth_eval(&s->curve, 2, sv, xy, th, kap), EL_OK);
-    ck_assert_msg(hypot(xy[0] - a[0], xy[1] - a[1]) <= tol * d, "start point off by %g",
-                  hypot(xy[0] - a[0], xy[1] - a[1]));
-    ck_assert_msg(hypot(xy[2] - b[0], xy[3] - b[1]) <= tol * d, "end point off by %g",
-                  hypot(xy[2] - b[0], xy[3] - b[1]));
+    ck_assert_msg(hypot(xy[0] - p0[0], xy[1] - p0[1]) <= tol * d, "start point off by %g",
+                  hypot(xy[0] - p0[0], xy[1] - p0[1]));
+    ck_assert_msg(hypot(xy[2] - p1[0], xy[3] - p1[1]) <= tol * d, "end point off by %g (k %g)",
+                  hypot(xy[2] - p1[0], xy[3] - p1[1]), s->curve.k);
     ck_assert_msg(fabs(wrap(th[0] - ta)) <= tol, "start tangent off by %g", wrap(th[0] - ta));
     ck_assert_msg(fabs(wrap(th[1] - tb)) <= tol, "end tangent off by %g", wrap(th[1] - tb));
-    /* curvature at the ends along p0 -> p1 (reversal flips the sign) */
-    const double k0 = s->reversed ? -kap[1] : kap[0], k1 = s->reversed ? -kap[0] : kap[1];
-    ck_assert_close(k0, s->kappa0, 1e-8 * (1.0 + fabs(k0)));
-    ck_assert_close(k1, s->kappa1, 1e-8 * (1.0 + fabs(k1)));
+    ck_assert_close(kap[0], s->kappa0, 1e-8 * (1.0 + fabs(kap[0])));
+    ck_assert_close(kap[1], s->kappa1, 1e-8 * (1.0 + fabs(kap[1])));
+    /* a loop's curvature has the sign of k everywhere */
+    if (fabs(s->curve.k) > 1.0) {
+        ck_assert_msg(s->curve.k * kap[0] > 0.0 && s->curve.k * kap[1] > 0.0,
+                      "loop k %g with kappa0 %g, kappa1 %g", s->curve.k, kap[0], kap[1]);
+        ck_assert_int_eq(s->has_inflection, 0);
+    }
     double E;
     ck_assert_int_eq(el_smooth_energy(&s->curve, &E), EL_OK);
     ck_assert_close(E, s->energy, 1e-8 * (1.0 + E));
@@ -237,6 +240,89 @@ START_TEST(length_mode_inverts_tension_mode)
 }
 END_TEST
 
+/* Mirroring the data in the x axis mirrors every solution: same length, energy,
+ * sigma, opposite curvatures; a loop keeps |k| and flips the sign of k (k < -1 is
+ * the clockwise loop, returned running from p0 to p1 like every solution). */
+START_TEST(mirrored_data_give_mirrored_solutions)
+{
+    unsigned long long st = 4242;
+    int ccw = 0, cw = 0;
+    for (int t = 0; t < 60; t++) {
+        const double p0[2] = {test_uniform(&st, -2, 2), test_uniform(&st, -2, 2)};
+        const double p1[2] = {test_uniform(&st, -2, 2), test_uniform(&st, -2, 2)};
+        const double a = test_uniform(&st, -M_PI, M_PI), b = test_uniform(&st, -M_PI, M_PI);
+        const double t0[2] = {cos(a), sin(a)}, t1[2] = {cos(b), sin(b)};
+        const double m0[2] = {p0[0], -p0[1]}, m1[2] = {p1[0], -p1[1]};
+        const double u0[2] = {t0[0], -t0[1]}, u1[2] = {t1[0], -t1[1]};
+        const double d = hypot(p1[0] - p0[0], p1[1] - p0[1]);
+        el_hermite_options o;
+        el_hermite_options_defaults(&o);
+        o.sigma = test_uniform(&st, -10.0, 60.0) / (d * d);
+        el_hermite_result r, m;
+        ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_OK);
+        ck_assert_int_eq(el_hermite_solve(m0, u0, m1, u1, &o, &m), EL_OK);
+        check_result(p0, t0, p1, t1, &r, 1e-10);
+        check_result(m0, u0, m1, u1, &m, 1e-10);
+        ck_assert_uint_eq(r.count, m.count);
+        for (size_t i = 0; i < r.count; i++) {
+            const el_hermite_solution *x = &r.solutions[i];
+            int found = 0;
+            for (size_t j = 0; j < m.count && !found; j++) {
+                const el_hermite_solution *y = &m.solutions[j];
+                found = fabs(x->length - y->length) <= 1e-8 * x->length &&
+                        fabs(x->energy - y->energy) <= 1e-8 * (1.0 + x->energy) &&
+                        fabs(x->kappa0 + y->kappa0) <= 1e-7 * (1.0 + fabs(x->kappa0)) &&
+                        fabs(x->kappa1 + y->kappa1) <= 1e-7 * (1.0 + fabs(x->kappa1));
+                if (found && fabs(x->curve.k) > 1.0 + 1e-6)
+                    ck_assert_msg(fabs(x->curve.k + y->curve.k) <= 1e-7 * fabs(x->curve.k),
+                                  "loop k %g mirrored to k %g", x->curve.k, y->curve.k);
+            }
+            ck_assert_msg(found, "solution %zu (L %g, kappa0 %g) has no mirror image", i,
+                          x->length, x->kappa0);
+            cw += x->curve.k < -1.0;
+            ccw += x->curve.k > 1.0;
+        }
+        el_hermite_result_free(&r);
+        el_hermite_result_free(&m);
+    }
+    /* both orientations of loops occurred */
+    ck_assert_int_gt(cw, 3);
+    ck_assert_int_gt(ccw, 3);
+}
+END_TEST
+
+/* Large tension (sigma |p1-p0|^2 in [100, 600]): many solutions lie within 1e-7
+ * of the separatrix |k| = 1, where one ulp of k moves the end by 1e-10..1e-8.
+ * They must still meet the ends to 1e-10 (checked with el_smooth_eval), and most
+ * of the solutions found with a loose tol must survive tol = 1e-10 (before the
+ * fixed-k polish about 70% did; the rest is the conditioning limit, header). */
+START_TEST(near_separatrix_solutions_meet_tol)
+{
+    unsigned long long st = 31337;
+    size_t loose = 0, strict = 0, near = 0;
+    for (int t = 0; t < 40; t++) {
+        const double p0[2] = {0, 0}, t0[2] = {1, 0};
+        const double a = test_uniform(&st, -M_PI, M_PI), b = test_uniform(&st, -M_PI, M_PI);
+        const double p1[2] = {cos(a), sin(a)}, t1[2] = {cos(b), sin(b)};
+        el_hermite_options o;
+        el_hermite_options_defaults(&o);
+        o.sigma = test_uniform(&st, 100.0, 600.0);
+        el_hermite_result r;
+        ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_OK);
+        check_result(p0, t0, p1, t1, &r, 1e-10);
+        strict += r.count;
+        for (size_t i = 0; i < r.count; i++) near += fabs(fabs(r.solutions[i].curve.k) - 1.0) < 1e-7;
+        el_hermite_result_free(&r);
+        o.tol = 1e-6;
+        ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_OK);
+        loose += r.count;
+        el_hermite_result_free(&r);
+    }
+    ck_assert_uint_gt(near, 20);
+    ck_assert_msg(strict >= 0.85 * loose, "%zu of %zu solutions meet tol 1e-10", strict, loose);
+}
+END_TEST
+
 /* ------------------------------------------------------------ degenerate data */
 
 START_TEST(collinear_data_give_the_straight_segment)
@@ -279,7 +365,7 @@ START_TEST(collinear_data_give_the_straight_segment)
 }
 END_TEST
 
-START_TEST(reversed_and_perpendicular_tangents)
+START_TEST(opposite_and_parallel_tangents)
 {
     /* t1 = -t0 with p1 across (case 3 of Theorem 6) and t1 = t0 (case 2-like) */
     const double p0[2] = {0, 0}, t0[2] = {1, 0}, p1[2] = {0, 1}, m0[2] = {-1, 0};
@@ -367,8 +453,10 @@ int main(void)
     tcase_add_test(tc, random_tension_problems_meet_the_ends);
     tcase_add_test(tc, random_length_problems_meet_the_ends);
     tcase_add_test(tc, length_mode_inverts_tension_mode);
+    tcase_add_test(tc, mirrored_data_give_mirrored_solutions);
+    tcase_add_test(tc, near_separatrix_solutions_meet_tol);
     tcase_add_test(tc, collinear_data_give_the_straight_segment);
-    tcase_add_test(tc, reversed_and_perpendicular_tangents);
+    tcase_add_test(tc, opposite_and_parallel_tangents);
     tcase_add_test(tc, circle_is_found_to_its_accuracy);
     tcase_add_test(tc, bad_input_and_clear_statuses);
     suite_add_tcase(s, tc);

@@ -180,14 +180,17 @@ def _wrap(a):
 def _check_ends(c, p0, t0, p1, t1, tol=1e-10):
     p0, t0, p1, t1 = (np.asarray(v, float) for v in (p0, t0, p1, t1))
     d = np.hypot(*(p1 - p0))
-    a, b = (p1, p0) if c.reversed else (p0, p1)
-    ta, tb = (-t1, -t0) if c.reversed else (t0, t1)
     xy = c.points([0.0, c.length])
     th = c.angle([0.0, c.length])
-    assert np.hypot(*(xy[0] - a)) <= tol * d
-    assert np.hypot(*(xy[1] - b)) <= tol * d
-    assert abs(_wrap(th[0] - np.arctan2(ta[1], ta[0]))) <= tol
-    assert abs(_wrap(th[1] - np.arctan2(tb[1], tb[0]))) <= tol
+    assert np.hypot(*(xy[0] - p0)) <= tol * d
+    assert np.hypot(*(xy[1] - p1)) <= tol * d
+    assert abs(_wrap(th[0] - np.arctan2(t0[1], t0[0]))) <= tol
+    assert abs(_wrap(th[1] - np.arctan2(t1[1], t1[0]))) <= tol
+    # curvature at the ends along p0 -> p1; a loop (|k| > 1) turns with the sign of k
+    kap = c.curvature([0.0, c.length])
+    assert kap == pytest.approx([c.kappa0, c.kappa1], rel=1e-8, abs=1e-8)
+    if abs(c.k) > 1:
+        assert np.all(np.sign(kap) == np.sign(c.k)) and not c.has_inflection
 
 
 def _period_of_curve(c):
@@ -240,6 +243,31 @@ def test_solutions_meet_ends_sorted_and_within_one_period():
             assert s.has_inflection == bool(np.any(np.diff(np.sign(kap[big])) != 0))
             n += 1
     assert n > 40
+
+
+def test_clockwise_loops_have_negative_k_and_run_p0_to_p1():
+    """Mirroring the data in the x axis mirrors every solution: a loop keeps |k|
+    and flips the sign of k; both run from p0 to p1 (checked by _check_ends)."""
+    rng = np.random.default_rng(11)
+    signs = set()
+    for _ in range(25):
+        p1 = rng.uniform(-2, 2, 2)
+        a, b = rng.uniform(-np.pi, np.pi, 2)
+        t0, t1 = np.array([np.cos(a), np.sin(a)]), np.array([np.cos(b), np.sin(b)])
+        m = np.array([1.0, -1.0])
+        sig = rng.uniform(0, 40) / (p1 @ p1)
+        sols = el.hermite([0, 0], t0, p1, t1, tension=sig)
+        mirr = el.hermite([0, 0], t0 * m, p1 * m, t1 * m, tension=sig)
+        assert len(sols) == len(mirr)
+        for s, r in zip(sols, mirr):          # same energies, so the same order
+            _check_ends(s, [0, 0], t0, p1, t1)
+            _check_ends(r, [0, 0], t0 * m, p1 * m, t1 * m)
+            assert r.energy_value == pytest.approx(s.energy_value, rel=1e-8, abs=1e-12)
+            assert r.kappa0 == pytest.approx(-s.kappa0, rel=1e-7, abs=1e-9)
+            if abs(s.k) > 1 + 1e-6:
+                assert r.k == pytest.approx(-s.k, rel=1e-7)
+                signs.add(np.sign(s.k))
+    assert signs == {-1.0, 1.0}
 
 
 @pytest.mark.parametrize("mode", ["tension", "length"])
