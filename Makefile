@@ -25,12 +25,12 @@ SONAME       := libelastica.so.$(SOVERSION)
 # Debian packages (Debian 12 / Ubuntu) the project needs; `make deps` installs the missing ones.
 APT_PKGS := build-essential pkg-config libgsl-dev coinor-libipopt-dev check \
             python3-cffi python3-numpy python3-pytest python3-scipy python3-mpmath \
-            python3-matplotlib python3-venv python3-pip freecad xvfb
+            python3-matplotlib python3-ezdxf python3-venv python3-pip freecad xvfb
 # Python packages for the python3 first on PATH (when it is not Debian's).
-PIP_PKGS := numpy cffi pytest scipy
+PIP_PKGS := numpy cffi pytest scipy ezdxf matplotlib
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps lib check check-c check-asan check-install check-python check-freecad bench demo install clean
+.PHONY: all deps lib check check-c check-asan check-install check-python check-freecad bench demo gallery install clean
 
 all: deps lib
 
@@ -43,7 +43,7 @@ $(BUILD)/.deps-ok: Makefile
 	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
 	fi
 	@if [ "$$(command -v $(PYTHON))" != "$(SYSPYTHON)" ] && \
-	   ! $(PYTHON) -c "import numpy, cffi, pytest, scipy" 2>/dev/null; then \
+	   ! $(PYTHON) -c "import numpy, cffi, pytest, scipy, ezdxf, matplotlib" 2>/dev/null; then \
 	  echo "make deps: pip install $(PIP_PKGS) into $$(command -v $(PYTHON))"; \
 	  $(PYTHON) -m pip install -q $(PIP_PKGS); \
 	fi
@@ -115,6 +115,15 @@ demo: all
 	  freecadcmd $(CURDIR)/examples/demo.py > $(BUILD)/demo.log 2>&1 || rc=$$?; \
 	sed -n '/^libelastica demo/,$$p' $(BUILD)/demo.log; \
 	if [ $$rc -ne 0 ]; then cat $(BUILD)/demo.log; echo "make demo: FAILED (log $(BUILD)/demo.log)"; exit 1; fi
+
+# the README's pictures, made by the command line on the bundled examples
+GALLERY_CLI = LIBELASTICA_PATH=$(CURDIR)/$(BUILD)/libelastica.so PYTHONPATH=$(CURDIR)/python $(SYSPYTHON) -m libelastica
+gallery: all
+	@mkdir -p docs/gallery
+	$(GALLERY_CLI) fit examples/keyline_3d.csv --keyline --model smooth --png docs/gallery/keyline_3d.png
+	$(GALLERY_CLI) fit examples/sample_2d.csv --png docs/gallery/fit_2d.png
+	$(GALLERY_CLI) hermite 0 0 0 1 2 0 0 -1 --length 4 --png docs/gallery/hermite.png
+	$(GALLERY_CLI) blend 0 0 0.3 0.8 0.7 0.9 1 0 --m 0.3 --png docs/gallery/blend.png
 
 install: lib
 	install -d $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/include
