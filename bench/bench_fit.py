@@ -2,7 +2,8 @@
 elasticae, k from 0.1 to 30 (log-uniform), 1-3 monotone pieces, 20-5000 points,
 random similarity transforms, noise 0, 0.1 % and 1 % of the length.
 
-Prints one JSON line per figure:
+Prints one JSON line per figure (fit_breakdown: where the time of a
+1000-point fit goes -- guess, one Jacobian, iterations):
   success rates (noise-free: rms <= 1e-8 length; noisy: rms <= 1.2 x the rms of
   the noise actually added), median / p95 wall and process-CPU time per size
   and model (the C call through cffi, Ipopt with the Gauss-Newton Hessian J^T J);
@@ -162,6 +163,42 @@ def main():
                       "median_ms": round(1e3 * float(np.median([r["t"] for r in sel])), 3),
                       "median_cpu_ms": round(1e3 * float(np.median([r["cpu"] for r in sel])), 3),
                       "target_ms": 3.0}))
+
+    # where the time goes (1000 points): the automatic guess, one model
+    # Jacobian (one Gauss-Newton step costs about that plus J^T J), and the
+    # rest of the fit (Ipopt's setup, MUMPS, iterations)
+    for model in ("discrete", "smooth"):
+        sel = [r for r in rows if r["model"] == model and r["n"] == 1000]
+        tg, tj, its = [], [], []
+        for r in sel:
+            pts = r["pts"]
+            n = len(pts)
+            cnt = ffi.new("size_t *")
+            if model == "discrete":
+                cand = ffi.new("el_discrete_params[6]")
+                t0 = time.perf_counter()
+                lib.el_guess_discrete(dptr(pts), n, cand, 6, cnt)
+                t1 = time.perf_counter()
+                jac = np.empty((n, 2, 7))
+                lib.el_discrete_jacobian(ffi.addressof(cand[0]), n, ffi.NULL, dptr(jac))
+            else:
+                cand = ffi.new("el_smooth_params[6]")
+                t0 = time.perf_counter()
+                lib.el_guess_smooth(dptr(pts), n, 0, cand, 6, cnt)
+                t1 = time.perf_counter()
+                jac = np.empty((n, 2, 7))
+                s = np.linspace(0.0, cand[0].length, n)
+                lib.el_smooth_jacobian(ffi.addressof(cand[0]), n, dptr(s), ffi.NULL, dptr(jac))
+            t2 = time.perf_counter()
+            tg.append(t1 - t0)
+            tj.append(t2 - t1)
+            _, res, _ = c_fit(model, pts)
+            its.append(res.iterations)
+        print(json.dumps({"bench": "fit_breakdown", "model": model, "n": 1000,
+                          "median_fit_ms": round(1e3 * float(np.median([r["t"] for r in sel])), 3),
+                          "median_guess_ms": round(1e3 * float(np.median(tg)), 3),
+                          "median_jacobian_ms": round(1e3 * float(np.median(tj)), 3),
+                          "median_iterations": float(np.median(its))}))
 
     # the same curves (the 1000-point discrete ones, every noise level)
     sub = [r for r in rows if r["model"] == "discrete" and r["n"] == 1000]

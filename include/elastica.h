@@ -262,7 +262,7 @@ typedef struct el_fit_discrete_result {
     el_discrete_params initial;   /* the initial guess the kept fit started from */
     double rms;                   /* sqrt(mean |gamma_i - P_i|^2), input units */
     double max_error;             /* max |gamma_i - P_i|, input units */
-    int iterations;               /* Ipopt iterations, all candidates */
+    int iterations;               /* Gauss-Newton pre-steps + Ipopt iterations, all candidates */
     int candidates;               /* initial guesses fitted */
     int ipopt_status;             /* Ipopt's ApplicationReturnStatus of the kept fit */
     int status;                   /* library status, as returned */

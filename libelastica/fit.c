@@ -13,6 +13,9 @@
  * The discrete h and z are O(1/N): the optimiser sees (N-1) h and (N-1) z.
  * Further variable changes (shape variables near circles, k and sqrt(mu)
  * continued through 0) are described at v_to_p() and canonical().
+ * Each solve starts with plain Gauss-Newton steps (gauss_newton(), same
+ * objective, no bounds), so Ipopt mostly just certifies the solution: its
+ * per-iteration cost (a MUMPS factorisation) dominates small fits.
  * Several initial guesses (guess.c) may be fitted, in the order of their
  * initial rms; the next is tried only while the best rms is above both the
  * exact level and 1.5 x the noise level estimated from second differences.
@@ -28,6 +31,7 @@
 #include <IpStdCInterface.h>
 #include <gsl/gsl_sf_ellint.h>
 #include <gsl/gsl_statistics_double.h>
+#include <gsl/gsl_linalg.h>
 
 enum { NP = 7, MAXCAND = 6 };
 
@@ -65,28 +69,38 @@ typedef struct fitctx {
     double dk, dz, dq, dmu, gi, gi2;  /* derivatives of the transform at v */
     double best_f, best_p[NP];
     int iters;
+    int f_no_grad;             /* the last objective point has not had its gradient asked for */
+    int have_gh;               /* g, H below valid for the Jacobian at jkey */
+    double g[NP], H[NP][NP];   /* gradient J^T r / N and J^T J / N in the optimiser's x */
 } fitctx;
 
 /*
- * Shape variables. Near a circle (k >> 1) the curve depends on k only through
+ * Shape variables. Near a circle (|k| >> 1) the curve depends on k only through
  * 1/k^2 and on z, q (mu) through k z, k q (k^2 mu): the argument of
  * am(k u; 1/k). In (k, z, q) the valley of the objective is curved and
  * Gauss-Newton steps overshoot, so the optimiser sees instead
- *   f with k = f / sqrt(2 - f)   (f in [0, 2): f ~ k near 0, 2 - f ~ 4/k^2 near oo,
- *                                 f = 1 at k = 1, smooth across it),
+ *   f with k = f / sqrt(2 - |f|)   (f in (-2, 2): f ~ k near 0, 2 - |f| ~ 4/k^2
+ *                                   near |k| = oo, |f| = 1 at |k| = 1; odd, C^1
+ *                                   at 0, smooth elsewhere),
  *   z g, q g, mu g^2 with g = sqrt(1 + k^2).
- * Used when k, q and z (mu) are all free and unbounded.
+ * Used when k, q and z (mu) are all free and unbounded. The smooth model
+ * takes every real k (the sign is the orientation), the discrete model
+ * k > -1 (below, model_eval).
  */
-static double k_of_f(double f) { return f / sqrt(2.0 - f); }
-static double f_of_k(double k) { return 0.5 * (k * sqrt(k * k + 8.0) - k * k); }
+static double k_of_f(double f) { return f / sqrt(2.0 - fabs(f)); }
+static double f_of_k(double k)
+{
+    const double a = fabs(k);
+    return copysign(0.5 * (a * sqrt(a * a + 8.0) - a * a), k);
+}
 
 static void v_to_p(fitctx *c, const double *v, double *p)
 {
     memcpy(p, v, sizeof(double) * NP);
     if (!c->transform) return;
-    const double f = v[c->ik];
+    const double f = v[c->ik], af = fabs(f);
     const double k = k_of_f(f), g2 = 1.0 + k * k, g = sqrt(g2);
-    const double dk = (4.0 - f) / (2.0 * (2.0 - f) * sqrt(2.0 - f));
+    const double dk = (4.0 - af) / (2.0 * (2.0 - af) * sqrt(2.0 - af));   /* even in f */
     p[c->ik] = k;
     p[c->iq] = v[c->iq] / g;
     c->dk = dk;
@@ -162,52 +176,59 @@ static int twoK(double k, double *K2, double *dK2)
 
 /*
  * Internal parameters (normalised): the model's, except that the smooth
- * model carries w = sqrt(mu) in slot 3, and both k and w may be negative:
- *  (A) k < 0: sin a = k sn(u; |k|), cos a = dn(u; |k|), the analytic
- *      continuation through the straight line k = 0; for -1 < k < 0 it is
- *      the curve with |k| and q + 2K(|k|) (sn(u + 2K) = -sn u, dn(u + 2K) = dn u);
- *  (B) smooth, w < 0 (u decreasing), 0 <= k < 1: u' = -u - 2K = |w| s - q - 2K
- *      has sn u' = sn u, dn u' = dn u: the same curve with |w| and -q - 2K.
+ * model carries w = sqrt(mu) in slot 3, and k (and w) may be negative:
+ *  smooth: every real k is the model's own (the sign of k is the orientation:
+ *      clockwise loops are k < -1); w < 0 (u decreasing) is the same curve as
+ *      (|w|, -k, -q): sn(-u) = -sn u, dn(-u) = dn u, so k sn u is unchanged
+ *      ((S) below);
+ *  discrete: k >= 0 is the model's (z < 0 covers both senses of turning);
+ *      -1 < k < 0 is the analytic continuation through the straight line
+ *      k = 0, sin a = k sn(u; |k|), cos a = dn(u; |k|), which is the curve with
+ *      |k| and q + 2K(|k|) (sn(u + 2K) = -sn u, dn(u + 2K) = dn u) ((A) below);
+ *      k <= -1 is outside the domain.
  * So a Gauss-Newton step may cross k = 0 or mu = 0 (nearly straight data)
  * instead of stalling at a bound; results are mapped back by canonical().
- * k <= -1, and w < 0 with k >= 1 (a clockwise non-inflectional smooth
- * elastica, which (4.3) cannot represent), are outside the domain.
  */
-static int canonical(int model, double *v)
+
+/* (S): w < 0 -> (|w|, -k, -q), smooth only. */
+static void flip_w(double *v)
+{
+    v[3] = -v[3]; v[4] = -v[4]; v[5] = -v[5];
+}
+
+/*
+ * The parameters handed out: smooth w < 0 flipped by (S); then, when allowed
+ * (may_shift: k and q free and the shifted values within the caller's bounds,
+ * see fit_run), -1 < k < 0 as the same curve with |k| and q + 2K(|k|) (A), so
+ * inflectional results have k >= 0 as before; |k| > 1 keeps its sign.
+ */
+static int canonical(int model, double *v, int may_shift)
 {
     const int ik = model == 0 ? 6 : 4;
     double K2, dK2;
-    if (v[ik] < 0.0) {                                  /* (A) */
+    if (model == 1 && v[3] < 0.0) flip_w(v);
+    if (v[ik] < 0.0 && v[ik] > -1.0 && (may_shift || model == 0)) {      /* (A) */
         if (twoK(-v[ik], &K2, &dK2)) return EL_EDOM;
         v[ik] = -v[ik];
         v[5] += K2;
     }
-    if (model == 1 && v[3] < 0.0) {                     /* (B) */
-        if (twoK(v[ik], &K2, &dK2)) return EL_EDOM;
-        v[3] = -v[3];
-        v[5] = -v[5] - K2;
-    }
-    return EL_OK;
+    return model == 0 && v[ik] < 0.0 ? EL_EDOM : EL_OK;
 }
 
 /* Points (and Jacobian when jac) at the internal parameter vector v0. */
 static int model_eval(fitctx *c, const double *v0, int want_jac)
 {
-    double v[NP], KA = 0.0, dKA = 0.0, KB = 0.0, dKB = 0.0;
+    double v[NP], KA = 0.0, dKA = 0.0;
     memcpy(v, v0, sizeof v);
     const int ik = c->model == 0 ? 6 : 4;
-    const int negk = v[ik] < 0.0, negw = c->model == 1 && v[3] < 0.0;
+    const int negk = c->model == 0 && v[ik] < 0.0, negw = c->model == 1 && v[3] < 0.0;
     int st;
     if (negk) {
         if ((st = twoK(-v[ik], &KA, &dKA))) return st;
         v[ik] = -v[ik];
         v[5] += KA;
     }
-    if (negw) {
-        if ((st = twoK(v[ik], &KB, &dKB))) return st;
-        v[3] = -v[3];
-        v[5] = -v[5] - KB;
-    }
+    if (negw) flip_w(v);
     if (c->model == 0) {
         el_discrete_params p;
         as_discrete(v, &p);
@@ -225,11 +246,9 @@ static int model_eval(fitctx *c, const double *v0, int want_jac)
     if (st || !want_jac) return st;
     for (size_t i = 0; i < 2 * c->n; i++) {
         double *r = c->jac + i * NP;
-        if (c->model == 1) r[3] *= 2.0 * v[3];          /* d/dw = 2 w d/dmu */
-        if (negw) {                                     /* undo (B) */
-            r[3] = -r[3];
-            r[ik] -= dKB * r[5];
-            r[5] = -r[5];
+        if (c->model == 1) {
+            r[3] *= 2.0 * v[3];                         /* d/dw = 2 w d/dmu */
+            if (negw) { r[3] = -r[3]; r[4] = -r[4]; r[5] = -r[5]; }   /* undo (S) */
         }
         if (negk) r[ik] = -(r[ik] + dKA * r[5]);        /* undo (A) */
     }
@@ -245,7 +264,7 @@ static int ensure(fitctx *c, const double *x, int want_jac)
     } else if ((c->have_xy && !memcmp(c->xkey, x, sz)) || (c->have_jac && !memcmp(c->jkey, x, sz))) {
         return EL_OK;
     }
-    c->have_xy = c->have_jac = 0;
+    c->have_xy = c->have_jac = c->have_gh = 0;
     int st = model_eval(c, c->full, want_jac);
     if (st || el__all_finite(c->xy, 2 * c->n)) return st ? st : EL_EDOM;
     if (want_jac) {
@@ -269,13 +288,41 @@ static double objective(const fitctx *c)
     return 0.5 * f / (double)c->n;
 }
 
+/* Gradient J^T r / N and Gauss-Newton matrix J^T J / N (lower triangle) in
+ * the optimiser's variables x_j = v_idx[j] vs[idx[j]], one pass over the
+ * Jacobian that ensure(c, x, 1) left; cached until the next evaluation. */
+static void normal_eq(fitctx *c)
+{
+    if (c->have_gh) return;
+    const int nf = c->nfree;
+    double g[NP] = {0}, H[NP][NP] = {{0}}, row[NP];
+    for (size_t i = 0; i < 2 * c->n; i++) {
+        const double *r = c->jac + i * NP, res = c->xy[i] - c->P[i];
+        for (int a = 0; a < nf; a++) row[a] = r[c->idx[a]];
+        for (int a = 0; a < nf; a++) {
+            g[a] += res * row[a];
+            for (int b = 0; b <= a; b++) H[a][b] += row[a] * row[b];
+        }
+    }
+    for (int a = 0; a < nf; a++) {
+        const double sa = 1.0 / c->vs[c->idx[a]];
+        c->g[a] = g[a] * sa / (double)c->n;
+        for (int b = 0; b <= a; b++) c->H[a][b] = H[a][b] * sa / (c->vs[c->idx[b]] * (double)c->n);
+    }
+    c->have_gh = 1;
+}
+
 static Bool cb_f(Index n, Number *x, Bool new_x, Number *obj, UserDataPtr ud)
 {
     (void)n; (void)new_x;
     fitctx *c = ud;
-    /* the Jacobian costs about one evaluation more and Ipopt nearly always
-     * asks for the gradient at the same point next (full Gauss-Newton steps) */
-    if (ensure(c, x, 1)) return FALSE;
+    /* the Jacobian costs about one evaluation more and Ipopt asks for the
+     * gradient at the same point next when it accepts the point (full
+     * Gauss-Newton steps, the rule); after a rejected trial point (the line
+     * search backtracks) the next trial is likely rejected too: values only */
+    const int want_jac = !c->f_no_grad;
+    c->f_no_grad = 1;
+    if (ensure(c, x, want_jac)) return FALSE;
     double f = objective(c);
     if (!isfinite(f)) return FALSE;
     if (f < c->best_f) { c->best_f = f; memcpy(c->best_p, c->full, sizeof c->best_p); }
@@ -287,13 +334,10 @@ static Bool cb_grad(Index n, Number *x, Bool new_x, Number *g, UserDataPtr ud)
 {
     (void)n; (void)new_x;
     fitctx *c = ud;
+    c->f_no_grad = 0;
     if (ensure(c, x, 1)) return FALSE;
-    for (int j = 0; j < c->nfree; j++) {
-        int col = c->idx[j];
-        double sum = 0.0;
-        for (size_t i = 0; i < 2 * c->n; i++) sum += (c->xy[i] - c->P[i]) * c->jac[i * NP + col];
-        g[j] = sum / ((double)c->n * c->vs[col]);
-    }
+    normal_eq(c);
+    memcpy(g, c->g, sizeof(double) * (size_t)c->nfree);
     return TRUE;
 }
 
@@ -310,7 +354,9 @@ static Bool cb_jac_g(Index n, Number *x, Bool new_x, Index m, Index nele, Index 
     return TRUE;
 }
 
-/* Gauss-Newton Hessian J^T J / N, lower triangle row by row. */
+/* Gauss-Newton Hessian J^T J / N, lower triangle row by row. (An adaptive
+ * Levenberg-Marquardt damping driven from cb_iter was tried: it led noisy,
+ * nearly straight fits into regions where they stalled, 2-3x more iterations.) */
 static Bool cb_h(Index n, Number *x, Bool new_x, Number obj_factor, Index m, Number *lambda,
                  Bool new_lambda, Index nele, Index *iRow, Index *jCol, Number *values,
                  UserDataPtr ud)
@@ -324,18 +370,10 @@ static Bool cb_h(Index n, Number *x, Bool new_x, Number obj_factor, Index m, Num
         return TRUE;
     }
     if (ensure(c, x, 1)) return FALSE;
-    double H[NP][NP] = {{0}};
-    for (size_t i = 0; i < 2 * c->n; i++) {
-        const double *row = c->jac + i * NP;
-        for (int a = 0; a < c->nfree; a++) {
-            double ja = row[c->idx[a]];
-            for (int b = 0; b <= a; b++) H[a][b] += ja * row[c->idx[b]];
-        }
-    }
+    normal_eq(c);
     Index e = 0;
     for (int a = 0; a < c->nfree; a++)
-        for (int b = 0; b <= a; b++)
-            values[e++] = obj_factor * H[a][b] / ((double)c->n * c->vs[c->idx[a]] * c->vs[c->idx[b]]);
+        for (int b = 0; b <= a; b++) values[e++] = obj_factor * c->H[a][b];
     return TRUE;
 }
 
@@ -345,7 +383,8 @@ static Bool cb_iter(Index alg_mod, Index iter, Number obj, Number inf_pr, Number
 {
     (void)alg_mod; (void)obj; (void)inf_pr; (void)inf_du; (void)mu; (void)d_norm; (void)reg;
     (void)alpha_du; (void)alpha_pr; (void)ls;
-    ((fitctx *)ud)->iters = iter;
+    fitctx *c = ud;
+    c->iters = iter;
     return TRUE;
 }
 
@@ -363,6 +402,69 @@ typedef struct solve_out {
     double f;
     int iters, ipopt_status;
 } solve_out;
+
+/*
+ * Gauss-Newton steps before Ipopt, on the same objective and variables:
+ * H d = -g (H = J^T J / N, g = J^T r / N) by GSL's Cholesky decomposition
+ * (a tiny ridge when H is singular), then a backtracking line search along d
+ * (halving, Armijo), as Ipopt's own iteration does without bounds. Why by
+ * hand: each Ipopt iteration costs a MUMPS factorisation whose fixed cost
+ * (~0.1-0.3 ms) is far above this <= 7 x 7 solve; from a good guess a
+ * zero-residual fit converges here in a few steps and Ipopt then only
+ * certifies the point (its convergence test, usually at iteration 0), noisy
+ * fits arrive near the stall Ipopt detects. Unbounded problems only (bounds
+ * are Ipopt's business). Returns the steps taken; x is updated in place.
+ */
+static int gauss_newton(fitctx *c, double *x, int max_steps)
+{
+    const int nf = c->nfree;
+    if (ensure(c, x, 1)) return 0;
+    double f = objective(c);
+    if (!isfinite(f)) return 0;
+    if (f < c->best_f) { c->best_f = f; memcpy(c->best_p, c->full, sizeof c->best_p); }
+    int steps = 0;
+    while (steps < max_steps && f > 0.0) {
+        normal_eq(c);
+        double A[NP * NP], d[NP], xt[NP], ridge = 1e-14, slope = 0.0;
+        int ok = 0;
+        for (int attempt = 0; attempt < 6 && !ok; attempt++, ridge *= 1e3) {
+            for (int a = 0; a < nf; a++) {
+                for (int q = 0; q <= a; q++) A[a * nf + q] = A[q * nf + a] = c->H[a][q];
+                A[a * nf + a] += ridge * (c->H[a][a] + 1e-300);
+                d[a] = -c->g[a];
+            }
+            gsl_matrix_view Am = gsl_matrix_view_array(A, (size_t)nf, (size_t)nf);
+            gsl_vector_view dv = gsl_vector_view_array(d, (size_t)nf);
+            ok = !gsl_linalg_cholesky_decomp1(&Am.matrix) &&
+                 !gsl_linalg_cholesky_svx(&Am.matrix, &dv.vector);
+        }
+        if (!ok) break;
+        double dmax = 0.0, xmax = 0.0;
+        for (int a = 0; a < nf; a++) {
+            slope += c->g[a] * d[a];
+            dmax = fmax(dmax, fabs(d[a]));
+            xmax = fmax(xmax, fabs(x[a]));
+        }
+        if (!isfinite(dmax) || !(slope < 0.0)) break;
+        steps++;
+        double alpha = 1.0, ft = HUGE_VAL;
+        for (int ls = 0; ls < 30; ls++, alpha *= 0.5) {
+            for (int a = 0; a < nf; a++) xt[a] = x[a] + alpha * d[a];
+            /* the full step is usually taken: evaluate its Jacobian at once */
+            ft = ensure(c, xt, ls == 0) == EL_OK ? objective(c) : HUGE_VAL;
+            if (ft <= f + 1e-4 * alpha * slope) break;       /* Armijo */
+        }
+        if (!(ft < f)) { ensure(c, x, 1); break; }        /* no progress: Ipopt's turn */
+        memcpy(x, xt, sizeof(double) * (size_t)nf);
+        if (ensure(c, x, 1)) break;
+        if (ft < c->best_f) { c->best_f = ft; memcpy(c->best_p, c->full, sizeof c->best_p); }
+        const double rel = (f - ft) / f;
+        f = ft;
+        /* converged (a full step at rounding level) or stalling on noisy data */
+        if ((alpha == 1.0 && dmax <= 1e-12 * (1.0 + xmax)) || rel < 1e-12) break;
+    }
+    return steps;
+}
 
 /* lo/hi: normalised bounds of all 7 parameters; p0 the normalised start. */
 static int solve(fitctx *c, const el_fit_options *o, const double *lo, const double *hi,
@@ -382,7 +484,10 @@ static int solve(fitctx *c, const el_fit_options *o, const double *lo, const dou
     c->have_xy = c->have_jac = 0;
     c->best_f = HUGE_VAL;
     c->iters = 0;
-    int nf = c->nfree;
+    c->f_no_grad = 0;
+    int nf = c->nfree, bounded = 0;
+    for (int j = 0; j < nf; j++) bounded |= xL[j] > -1e20 || xU[j] < 1e20;
+    const int pre = bounded || o->limited_memory ? 0 : gauss_newton(c, x, o->max_iter < 20 ? o->max_iter : 20);
     if (pthread_mutex_lock(&ipopt_lock)) return EL_EINTERNAL;
     IpoptProblem pr = CreateIpoptProblem(nf, xL, xU, 0, NULL, NULL, 0, nf * (nf + 1) / 2, 0,
                                          cb_f, cb_g, cb_grad, cb_jac_g, cb_h);
@@ -390,10 +495,15 @@ static int solve(fitctx *c, const el_fit_options *o, const double *lo, const dou
     int ok = AddIpoptIntOption(pr, "print_level", 0)
           && AddIpoptStrOption(pr, "sb", "yes")
           && AddIpoptNumOption(pr, "tol", o->tol)
-          && AddIpoptIntOption(pr, "max_iter", o->max_iter)
+          && AddIpoptIntOption(pr, "max_iter", o->max_iter - pre)
           && AddIpoptNumOption(pr, "bound_relax_factor", 0.0)
           && AddIpoptStrOption(pr, "mu_strategy", "monotone")
           && AddIpoptNumOption(pr, "mu_init", 1e-9)
+          /* each MUMPS call has a fixed cost far above the solve of this tiny
+           * system: no second-order corrections (there are no constraints to
+           * correct) and iterative refinement only when the residual asks */
+          && AddIpoptIntOption(pr, "max_soc", 0)
+          && AddIpoptIntOption(pr, "min_refinement_steps", 0)
           /* noisy data: Gauss-Newton converges linearly on a non-zero residual;
            * stop once the objective stalls (relative change < 1e-10 twice).
            * Zero-residual fits converge quadratically and never stall first. */
@@ -411,7 +521,7 @@ static int solve(fitctx *c, const el_fit_options *o, const double *lo, const dou
     pthread_mutex_unlock(&ipopt_lock);
     if (!ok) return EL_EINTERNAL;
     out->ipopt_status = (int)rs;
-    out->iters = c->iters;
+    out->iters = c->iters + pre;
     /* the final point, unless a better one was seen */
     double fin[NP], vf[NP];
     memcpy(vf, v0, sizeof vf);
@@ -543,11 +653,13 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
         if (lo[j] > hi[j]) return EL_EINVAL;
     }
 
-    /* k < 0 is used internally (canonical()) by shifting q: not when q is fixed */
-    if (o.fixed[5] && !o.fixed[model == 0 ? 6 : 4]) {
-        const int ik = model == 0 ? 6 : 4;
-        lo[ik] = fmax(lo[ik], 0.0);
-    }
+    /* discrete k < 0 is used internally by shifting q (canonical()): not when
+     * q is fixed; smooth w < 0 flips k and q: not when either is fixed or bounded */
+    const int ik = model == 0 ? 6 : 4;
+    if (model == 0 && o.fixed[5] && !o.fixed[ik]) lo[ik] = fmax(lo[ik], 0.0);
+    if (model == 1 && (o.fixed[ik] || o.fixed[5] || isfinite(lo[ik]) || isfinite(hi[ik]) ||
+                       isfinite(lo[5]) || isfinite(hi[5])))
+        lo[3] = fmax(lo[3], 0.0);
 
     int st = EL_ENOMEM;
     double *buf = malloc(sizeof(double) * (n * (2 + 1 + 1 + 2 + 2 * NP)));
@@ -635,9 +747,17 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
         rms = sc * sqrt(s2 / (double)n);
         emax = sc * sqrt(m2);
     }
-    if (canonical(model, best.p)) {     /* cannot happen for points the model evaluated */
-        memcpy(best.p, best_init, sizeof best.p);
-        best.ipopt_status = Internal_Error;
+    {   /* smooth -1 < k < 0 as k >= 0 with q + 2K when k, q are free and may move so */
+        double shifted[NP];
+        memcpy(shifted, best.p, sizeof shifted);
+        int may_shift = model == 1 && !o.fixed[ik] && !o.fixed[5] &&
+                        canonical(model, shifted, 1) == EL_OK &&
+                        shifted[ik] >= lo[ik] && shifted[ik] <= hi[ik] &&
+                        shifted[5] >= lo[5] && shifted[5] <= hi[5];
+        if (canonical(model, best.p, may_shift)) {  /* cannot happen for points the model evaluated */
+            memcpy(best.p, best_init, sizeof best.p);
+            best.ipopt_status = Internal_Error;
+        }
     }
     for (int j = 0; j < NP; j++) {
         res->params[j] = o.fixed[j] ? o.value[j] : denorm_param(model, j, best.p[j], cx, cy, sc);

@@ -22,6 +22,9 @@
  *    unwrapped along the curve (this counts the monotone pieces from the data),
  *    u = F(psi; k) by gsl_sf_ellint_F, and u = w s + q is a straight-line fit
  *    (4.54). For k > 1, psi = a and u = F(a; 1/k)/k.
+ *  - Orientation: the phase fit gives w < 0 when u decreases along the data;
+ *    for the smooth model that is the curve (|w|, -k, -q), so clockwise loops
+ *    get k < -1 (to_smooth); the discrete model keeps k > 0 and z < 0.
  *  - Ambiguity (k near 1, a wrong unwrap) is handled by candidates: the guess on
  *    the other side of k = 1 and a circular-arc / straight-line guess; the fit
  *    tries them in order of their initial rms.
@@ -314,16 +317,19 @@ static size_t guesses(const double *P, const double *t, size_t n, cguess *out)
 }
 
 /* Smooth parameters from a continuous guess (x0 = y0 = 0). u(s) = w s + q with
- * w < 0 and k < 1 is the same curve as u' = -w s - q - 2K (sn, dn unchanged). */
+ * w < 0 is the same curve as (|w|, -k, -q) (sn(-u) = -sn u, dn(-u) = dn u, so
+ * k sn u is unchanged): for k > 1 the clockwise loop, k < -1. For k < 1 the
+ * same curve also has k >= 0: u' = -w s - q - 2K (sn, dn unchanged), used there. */
 static void to_smooth(const cguess *g, el_smooth_params *p)
 {
-    double w = g->w, q = g->q;
+    double w = g->w, q = g->q, k = g->k;
     if (w < 0.0) {
-        if (g->k < 1.0) q = -q - 2.0 * ellK(g->k);
-        w = -w;                 /* k > 1 turning clockwise: not representable, best effort */
+        if (k < 1.0) q = -q - 2.0 * ellK(k);
+        else { k = -k; q = -q; }
+        w = -w;
     }
     if (!(w > 1e-9)) w = 1e-9;
-    p->x0 = 0.0; p->y0 = 0.0; p->phi = g->phi; p->mu = w * w; p->k = g->k; p->q = q;
+    p->x0 = 0.0; p->y0 = 0.0; p->phi = g->phi; p->mu = w * w; p->k = k; p->q = q;
     p->length = g->L;
 }
 

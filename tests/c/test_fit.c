@@ -8,6 +8,7 @@
 /* Complete K(k) for k < 1; for k > 1 the period of sn(.;k) in u is 4K(1/k)/k. */
 static double half_period(double k)
 {
+    k = fabs(k);     /* the sign of the smooth k is the orientation */
     return k < 1.0 ? 2.0 * gsl_sf_ellint_Kcomp(k, GSL_PREC_DOUBLE)
                    : 2.0 * gsl_sf_ellint_Kcomp(1.0 / k, GSL_PREC_DOUBLE) / k;
 }
@@ -108,6 +109,74 @@ START_TEST(test_smooth_exact_recovery)
         ck_assert_msg(r.rms <= 1e-8 * p.length, "k=%g: rms/L = %g", k, r.rms / p.length);
         ck_assert_close(r.params.length, p.length, 1e-6 * p.length);
     }
+}
+END_TEST
+
+/* Total turning of a polyline (sum of the exterior angles): > 0 counter-clockwise. */
+static double turning(const double *xy, size_t n)
+{
+    double tot = 0.0;
+    for (size_t i = 1; i + 1 < n; i++) {
+        double ax = xy[2 * i] - xy[2 * i - 2], ay = xy[2 * i + 1] - xy[2 * i - 1];
+        double bx = xy[2 * i + 2] - xy[2 * i], by = xy[2 * i + 3] - xy[2 * i + 1];
+        tot += atan2(ax * by - ay * bx, ax * bx + ay * by);
+    }
+    return tot;
+}
+
+/* Signed k (header, smooth): clockwise (k < -1) and counter-clockwise (k > 1)
+ * loops and inflectional curves of both signs are recovered exactly; for
+ * |k| > 1 the fitted k has the data's sign (the orientation), for |k| < 1
+ * the result is the same curve with k >= 0. */
+START_TEST(test_smooth_signed_k)
+{
+    unsigned long long rng = 0x5151ULL;
+    const double ks[] = {3.0, -3.0, 1.5, -1.5, 0.6, -0.6};
+    const size_t n = 150;
+    double xy[2 * 150], g[2 * 150], s[150];
+    for (size_t a = 0; a < sizeof ks / sizeof ks[0]; a++) {
+        el_smooth_params p = make_smooth(ks[a], 2.0, &rng);
+        smooth_points(&p, n, xy);
+        const double turn = turning(xy, n);
+        if (fabs(ks[a]) > 1.0) ck_assert(turn * ks[a] > 0.0);   /* the data's sense */
+        el_fit_smooth_result r;
+        int st = el_fit_smooth(xy, n, NULL, NULL, &r);
+        ck_assert_msg(st == EL_OK, "k=%g: status %d, rms %g", ks[a], st, r.rms);
+        ck_assert_msg(r.rms <= 1e-8 * p.length, "k=%g: rms/L = %g (k fitted %g)", ks[a],
+                      r.rms / p.length, r.params.k);
+        if (fabs(ks[a]) > 1.0) ck_assert_close(r.params.k, ks[a], 1e-6 * fabs(ks[a]));
+        else ck_assert_close(r.params.k, fabs(ks[a]), 1e-6);
+        ck_assert_close(r.params.length, p.length, 1e-6 * p.length);
+        /* the fitted parameters reproduce the points themselves */
+        for (size_t i = 0; i < n; i++) s[i] = r.params.length * (double)i / (double)(n - 1);
+        ck_assert_int_eq(el_smooth_eval(&r.params, n, s, g, NULL, NULL), EL_OK);
+        double e = 0.0;
+        for (size_t i = 0; i < 2 * n; i++) e = fmax(e, fabs(g[i] - xy[i]));
+        ck_assert_msg(e <= 1e-7 * p.length, "k=%g: eval of fitted params off by %g", ks[a], e);
+        /* the automatic guess already has the sign of a loop */
+        el_smooth_params c[4];
+        size_t cnt = 0;
+        ck_assert_int_eq(el_guess_smooth(xy, n, EL_PARAM_AUTO, c, 4, &cnt), EL_OK);
+        if (fabs(ks[a]) > 1.0) ck_assert_msg(c[0].k * ks[a] > 0.0, "guess k %g for %g", c[0].k, ks[a]);
+    }
+}
+END_TEST
+
+/* Discrete model: z < 0 turns the other way, so a clockwise loop (k > 1) has
+ * parameters with k > 0 and is recovered exactly. */
+START_TEST(test_discrete_clockwise_loop)
+{
+    unsigned long long rng = 0x77ULL;
+    const size_t n = 150;
+    double xy[2 * 150];
+    el_discrete_params p = make_discrete(3.0, n, 2.0, -1.0, &rng);
+    ck_assert_int_eq(el_discrete_eval(&p, n, xy), EL_OK);
+    ck_assert(turning(xy, n) < -M_PI);            /* a clockwise loop */
+    el_fit_discrete_result r;
+    ck_assert_int_eq(el_fit_discrete(xy, n, NULL, NULL, &r), EL_OK);
+    ck_assert_msg(r.rms <= 1e-8 * polyline_length(xy, n), "rms/L %g", r.rms / polyline_length(xy, n));
+    ck_assert_close(r.params.k, 3.0, 1e-6 * 3.0);
+    ck_assert(r.params.z < 0.0);
 }
 END_TEST
 
@@ -351,6 +420,8 @@ static Suite *suite(void)
     tcase_add_loop_test(tc, test_discrete_exact_recovery, 0, 2);
     tcase_add_test(tc, test_discrete_nearly_straight);
     tcase_add_test(tc, test_smooth_exact_recovery);
+    tcase_add_test(tc, test_smooth_signed_k);
+    tcase_add_test(tc, test_discrete_clockwise_loop);
     tcase_add_test(tc, test_pinning);
     tcase_add_test(tc, test_scale_invariance);
     tcase_add_test(tc, test_bad_input);

@@ -8,6 +8,7 @@ from keyline_data import keyline_3d
 
 
 def half_period(k):
+    k = abs(k)          # the sign of the smooth k is the orientation
     return 2 * ellipk(k * k) if k < 1 else 2 * ellipk(1 / k ** 2) / k
 
 
@@ -60,6 +61,44 @@ def test_smooth_exact_recovery(k):
         assert r.rms <= 1e-8 * c.length, (k, n, r.rms / c.length)
         assert r.curve.length == pytest.approx(c.length, rel=1e-6)
         np.testing.assert_allclose(r.s, np.linspace(0, r.curve.length, n), rtol=1e-12, atol=1e-14)
+
+
+def turning(p):
+    """Total turning of a polyline: > 0 counter-clockwise."""
+    d = np.diff(p, axis=0)
+    a, b = d[:-1], d[1:]
+    return float(np.sum(np.arctan2(a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0], np.sum(a * b, axis=1))))
+
+
+@pytest.mark.parametrize("k", [3.0, -3.0, 1.5, -1.5, 0.6, -0.6])
+def test_smooth_signed_k(k):
+    """Clockwise (k < -1) and counter-clockwise loops and inflectional curves of
+    either sign: exact; loops keep the sign of k (their orientation)."""
+    rng = np.random.default_rng(int(abs(k) * 100) + (k < 0))
+    for pieces, n in [(1.5, 40), (2.5, 300)]:
+        c = smooth_curve(k, pieces, rng)
+        pts = c.points(np.linspace(0, c.length, n))
+        if abs(k) > 1:
+            assert turning(pts) * k > 0
+        r = el.fit(pts, model="smooth")
+        assert r.status == 0
+        assert r.rms <= 1e-8 * c.length, (k, n, r.rms / c.length, r.curve.k)
+        assert np.max(np.abs(r.model_points() - pts)) <= 1e-7 * c.length
+        if abs(k) > 1:
+            assert r.curve.k == pytest.approx(k, rel=1e-6)
+        else:
+            assert r.curve.k == pytest.approx(abs(k), rel=1e-6)
+
+
+def test_discrete_clockwise_loop():
+    """The discrete model covers both senses of turning through z < 0, k > 0."""
+    rng = np.random.default_rng(31)
+    d = discrete_curve(3.0, 200, 2, rng, sign=-1.0)
+    pts = d.points()
+    assert turning(pts) < -np.pi
+    r = el.fit(pts, model="discrete")
+    assert r.status == 0 and r.rms <= 1e-8 * polyline_length(pts)
+    assert r.curve.k == pytest.approx(3.0, rel=1e-6) and r.curve.z < 0
 
 
 def test_smooth_chord_parameter():
@@ -169,6 +208,66 @@ def test_keyline_pipeline_3d_noisy(model, seed):
     k1 = np.mean(np.sign(np.diff(np.unwrap(np.arctan2(*np.diff(kf.first.model_points(), axis=0).T[::-1])))))
     k2 = np.mean(np.sign(np.diff(np.unwrap(np.arctan2(*np.diff(kf.second.model_points(), axis=0).T[::-1])))))
     assert k1 * k2 > 0   # walked away from the inflection both turn the same way relative to travel
+
+
+@pytest.mark.parametrize("model", ["discrete", "smooth"])
+def test_keyline_split_refined(model):
+    """At 0.1 % noise the RDP-style estimate misses the inflection by up to ~7
+    segments; the refined split (zero of the fitted curvature) lands closer to
+    the true inflection, and both sides still fit within the noise."""
+    err_prep, err_ref = [], []
+    for seed in (1, 2, 3, 9):
+        kl = keyline_3d(seed=seed, noise=1e-3)
+        kf = el.fit_keyline(kl.xyz, model=model)
+        poly3 = kf.prepared.to_input(kf.prepared.polygon)
+        dist = np.linalg.norm(poly3 - kl.inflection_xyz, axis=1)
+        assert kf.inflection_estimate == kf.prepared.inflection
+        e0, e1 = dist[kf.inflection_estimate], dist[kf.inflection]
+        err_prep.append(e0)
+        err_ref.append(e1)
+        assert e1 < e0, (seed, e0, e1)
+        assert e1 <= 2.0 * kf.prepared.r, (seed, e1 / kf.prepared.r)
+        for side in ("first", "second"):
+            r = getattr(kf, side)
+            assert r.status == 0
+            # in-plane noise has two components of sigma each (rms sqrt(2) sigma),
+            # the pin sits on a noisy vertex, and the discrete model pairs the
+            # resampled vertices one to one: within 2 sigma of the data, and
+            # within sigma of the noise-free curve
+            assert r.rms <= 2.0 * kl.noise, (seed, side, r.rms / kl.noise)
+            d = _seg_dist(kf.side_points(side), kl.xyz_clean)
+            assert np.sqrt(np.mean(d ** 2)) <= kl.noise
+    assert np.mean(err_ref) < 0.3 * np.mean(err_prep)
+    # without refinement the split is the estimate
+    kf0 = el.fit_keyline(kl.xyz, model=model, refine=False)
+    assert kf0.inflection == kf0.prepared.inflection
+
+
+def test_keyline_bundled_sample_split():
+    """examples/keyline_3d.csv (examples/make_keyline.py: one elastica, k = 0.65,
+    noise 0.15 mm): the refined split is within two segments of the true
+    inflection (the RDP-style estimate is ~20 mm off)."""
+    import math
+    from pathlib import Path
+    from scipy.special import ellipk as K
+    ex = Path(__file__).resolve().parents[2] / "examples"
+    xyz = np.loadtxt(ex / "keyline_3d.csv", delimiter=",", skiprows=2)
+    # the true inflection as make_keyline.py places it: u = sqrt(mu) s + q = K(0.65)
+    mu, k, q, phi, L = (1.0 / 105.0) ** 2, 0.65, 0.25, -1.028, 330.0
+    s = (K(k * k) - q) / math.sqrt(mu)
+    c = el.SmoothElastica(x0=0.0, y0=0.0, phi=phi, mu=mu, k=k, q=q, length=L)
+    assert abs(c.curvature(np.array([s]))[0]) < 1e-12
+    xy = c.points(np.array([s]))[0]
+    def rot(axis, a):
+        a_ = np.asarray(axis, float)
+        Kx = np.array([[0, -a_[2], a_[1]], [a_[2], 0, -a_[0]], [-a_[1], a_[0], 0]])
+        return np.eye(3) + math.sin(a) * Kx + (1 - math.cos(a)) * Kx @ Kx
+    R = rot([0, 0, 1], math.radians(17.0)) @ rot([1, 0, 0], math.radians(32.0))
+    truth = R @ np.r_[xy, 0.3 * math.sin(math.pi * s / L)] + np.array([412.0, -138.5, 96.25])
+    kf = el.fit_keyline(xyz, model="smooth")
+    poly3 = kf.prepared.to_input(kf.prepared.polygon)
+    dist = np.linalg.norm(poly3 - truth, axis=1)
+    assert dist[kf.inflection] <= 2.0 * kf.prepared.r < dist[kf.inflection_estimate]
 
 
 @pytest.mark.parametrize("model", ["discrete", "smooth"])
