@@ -289,7 +289,9 @@ typedef struct el_fit_smooth_result {
  * (Ipopt's acceptable level), which is reported as EL_OK. Thread safety:
  * concurrent fits are safe, but their Ipopt solves are serialised by a
  * process-wide lock (Debian's MUMPS, Ipopt's linear solver, is not
- * reentrant).
+ * reentrant). Like every Ipopt program, a file ipopt.opt in the working
+ * directory adds Ipopt options (Ipopt 3.11 cannot switch that off without
+ * printing a line, so it is left as Ipopt documents it).
  * Returns (and stores in res->status) EL_OK; EL_ENOCONV / EL_EMAXITER with
  * the best parameters seen; EL_EINVAL (NULL, n < 4, NaN/inf, bad options,
  * inconsistent bounds), EL_ESINGULAR (all points equal), EL_ENOMEM,
