@@ -60,7 +60,8 @@ def run():
     pump()
     check(Gui.activeWorkbench().name() == "ElasticaWorkbench", "workbench activates")
     cmds = Gui.listCommands()
-    for c in ("Elastica_Fit", "Elastica_FitCsv", "Elastica_Blend", "Elastica_Comb"):
+    for c in ("Elastica_Fit", "Elastica_FitCsv", "Elastica_Blend", "Elastica_EllipticBlend",
+              "Elastica_Comb"):
         check(c in cmds, f"command {c} registered")
     from freecad.elastica import commands as C, taskpanels as T, preferences as P
 
@@ -161,6 +162,37 @@ def run():
     check(any(o.Name.startswith("ElasticaSketch") for o in doc.Objects),
           "fit B-spline written into a new sketch")
 
+    # Elliptic blend curve: a sketch of four points, panel options, B-spline into a new sketch
+    psk = S.points_sketch(doc, [(0, -60), (20, -25), (55, -20), (80, -55)], "FourPoints")
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(doc.Name, psk.Name)
+    n0 = len(doc.Objects)
+    Gui.runCommand("Elastica_EllipticBlend")
+    pump()
+    check(len(doc.Objects) == n0 + 1 and T.CURRENT,
+          "Elliptic blend curve creates a feature and opens its panel")
+    ell = T.CURRENT[0].obj
+    panel = T.CURRENT[0]
+    check(ell.Status == "ok" and "deviation" in panel.result.text(),
+          f"elliptic blend panel shows the B-spline deviation ({ell.Status})")
+    l0 = ell.Shape.Length
+    panel.k.setValue(0.9)
+    panel.k.editingFinished.emit()
+    check(ell.K == 0.9 and ell.Status == "ok" and abs(ell.Shape.Length - l0) > 1e-3,
+          "elliptic blend panel previews another k")
+    panel.mode.setCurrentIndex(1)
+    check(ell.Mode == "control" and ell.Status == "ok", "elliptic blend panel: control points")
+    panel.conv.setCurrentIndex(1)
+    panel.k.setValue(0.3)
+    panel.k.editingFinished.emit()
+    check(ell.KConvention == "parameter" and ell.Status == "ok", "elliptic blend panel: m = k^2")
+    panel.sketch.setCurrentIndex(panel.sketch.count() - 1)   # new sketch
+    n0 = len(doc.Objects)
+    check(panel.accept(), "elliptic blend panel accepts")
+    pump()
+    check(len(doc.Objects) == n0 + 1 and doc.Objects[-1].isDerivedFrom("Sketcher::SketchObject")
+          and len(doc.Objects[-1].Geometry) == 1, "elliptic blend B-spline written into a new sketch")
+
     # bad input through a command: empty selection, document unchanged
     Gui.Selection.clearSelection()
     before = S.doc_state(doc)
@@ -168,8 +200,9 @@ def run():
     Gui.runCommand("Elastica_Fit")
     Gui.runCommand("Elastica_Blend")
     Gui.runCommand("Elastica_Comb")
+    Gui.runCommand("Elastica_EllipticBlend")
     pump()
-    check(S.doc_state(doc) == before and len(C.MESSAGES) == 3,
+    check(S.doc_state(doc) == before and len(C.MESSAGES) == 4,
           "empty selection: messages, document unchanged")
 
     # Cancel removes a fresh feature

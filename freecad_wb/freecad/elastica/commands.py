@@ -207,6 +207,58 @@ class BlendCommand:
         _guarded(blend_sources)
 
 
+# ------------------------------------------------------------------ elliptic blend
+
+def ellblend_sources(sources, open_panel=True, **options):
+    """Check four picked points, create the elliptic blend curve (recorded), open its
+    task panel. ``options`` set Mode (interpolate / control), K, KConvention (modulus /
+    parameter), D, Tolerance. Returns the new feature or None (message printed,
+    document unchanged)."""
+    from . import features as F
+    doc = App.ActiveDocument
+    if doc is None:
+        message("no active document")
+        return None
+    opts = {"Mode": "interpolate", "K": 0.5, "KConvention": "modulus", "D": 2.0,
+            "Tolerance": defaults()[0]}
+    opts.update(options)
+    try:
+        pts, plane = F.gather_vertices(sources)
+        F.ellblend_core(pts, plane, opts["Mode"], opts["K"], opts["D"], opts["Tolerance"],
+                        opts["KConvention"])
+    except F.InputProblem as exc:
+        message(str(exc))
+        return None
+    except Exception as exc:
+        message(f"elliptic blend failed: {type(exc).__name__}: {exc}")
+        return None
+    src = ", ".join(f"({_ref(o)}, {list(s)!r})" for o, s in sources)
+    obj = _create(doc, "Elliptic blend curve", "from freecad.elastica import features\n"
+                  f"_ellblend = features.make_ellblend({_ref_doc(doc)}, [{src}], "
+                  + ", ".join(f"{k}={v!r}" for k, v in opts.items()) + ")\n"
+                  f"{_ref_doc(doc)}.recompute()")
+    if open_panel and App.GuiUp and obj is not None:
+        obj.Proxy.fresh = True
+        Gui.ActiveDocument.setEdit(obj.Name, 0)
+    return obj
+
+
+class EllipticBlendCommand:
+    """Elliptic blending-function curve (seed 003) from four picked points."""
+
+    def GetResources(self):
+        return {"Pixmap": icon("ellblend"), "MenuText": "Elliptic blend curve",
+                "ToolTip": "A curve with Jacobi elliptic blending functions through four "
+                           "picked coplanar points (or with them as control points); select "
+                           "four vertices in order, or a sketch of four points"}
+
+    def IsActive(self):
+        return App.ActiveDocument is not None
+
+    def Activated(self):
+        _guarded(ellblend_sources)
+
+
 # ------------------------------------------------------------------ comb
 
 def comb_sources(sources):
@@ -251,7 +303,8 @@ class CombCommand:
 
 
 COMMANDS = {"Elastica_Fit": FitCommand, "Elastica_FitCsv": FitCsvCommand,
-            "Elastica_Blend": BlendCommand, "Elastica_Comb": CombCommand}
+            "Elastica_Blend": BlendCommand, "Elastica_EllipticBlend": EllipticBlendCommand,
+            "Elastica_Comb": CombCommand}
 
 
 def register():

@@ -5,6 +5,8 @@
   of the fitted curve(s), within ``Tolerance``.
 - ``Blend``: an elastic Hermite curve between two edge ends (all solutions are
   computed; ``Solution`` picks one).
+- ``EllipticBlend``: an elliptic blending-function curve (seed 003) through, or
+  controlled by, four picked points.
 - ``Comb``: a curvature comb of a Fit / Blend result (exact curvature from the
   library) or of any edge (OpenCASCADE's curvature).
 
@@ -434,6 +436,110 @@ def _curve_samples(curve, n):
     return np.arange(1, len(xy) - 1) * curve.h, xy[1:-1], theta, kap
 
 
+# ----------------------------------------------------------- the elliptic blend core
+
+ELLBLEND_MODES = ["interpolate", "control"]
+K_CONVENTIONS = ["modulus", "parameter"]
+
+
+def gather_vertices(sources):
+    """The picked points of an elliptic blend, in selection order, without merging
+    coincident ones: sketch vertices or vertices of any shape ('VertexN'), a whole
+    sketch (its sketch points), a whole Points object, or a whole shape (its
+    vertices). Returns (points: list[App.Vector], plane: the sketch placement when
+    all come from one sketch, else None). Raises InputProblem."""
+    if not sources:
+        raise InputProblem("nothing selected: select four vertices, or a sketch of four points")
+    pts, sketches = [], set()
+    for obj, subs in sources:
+        subs = [s for s in (subs or ()) if s]
+        if _is_sketch(obj):
+            sketches.add(obj.Name)
+            if not subs:
+                plc = obj.getGlobalPlacement()
+                pts.extend(plc.multVec(g.toShape().Point) for g in obj.Geometry
+                           if g.TypeId == "Part::GeomPoint")
+                continue
+        if obj.isDerivedFrom("Points::Feature") and not subs:
+            pts.extend(obj.Placement.multVec(App.Vector(*p)) for p in obj.Points.Points)
+            continue
+        shape = getattr(obj, "Shape", None)
+        if shape is None or shape.isNull():
+            raise InputProblem(f"{obj.Label} has no geometry")
+        if not subs:
+            pts.extend(v.Point for v in shape.Vertexes)
+            continue
+        for s in subs:
+            if not s.startswith("Vertex"):
+                raise InputProblem(f"{obj.Label}.{s}: select vertices (points), not {s}")
+            try:
+                pts.append(shape.getElement(s).Point)
+            except (Part.OCCError, ValueError, IndexError):
+                raise InputProblem(f"{obj.Label} has no {s}") from None
+    plane = None
+    if len(sketches) == 1 and all(o.Name in sketches for o, _ in sources):
+        plane = next(o for o, _ in sources).getGlobalPlacement()
+    return pts, plane
+
+
+def ellblend_core(points, plane=None, mode="interpolate", k=0.5, d=2.0, tol=1e-3,
+                  convention="modulus"):
+    """The elliptic blending-function curve (seed 003) of four coplanar 3D points.
+
+    ``mode`` 'interpolate' (the curve passes through the points) or 'control' (they
+    are its control points); ``k`` the elliptic modulus, or with ``convention``
+    'parameter' m = k^2 (the paper's 'k'); ``d`` the end-derivative parameter.
+    Returns a dict with 'curve' (libelastica BlendCurve, plane coordinates),
+    'bspline' (certified within ``tol``), 'placement', 'control' (3D control
+    points). Raises InputProblem."""
+    el = _el()
+    np = _np()
+    if len(points) != 4:
+        raise InputProblem(f"{len(points)} points: an elliptic blend needs exactly four")
+    if mode not in ELLBLEND_MODES:
+        raise InputProblem(f"unknown mode {mode!r} (interpolate or control)")
+    if convention not in K_CONVENTIONS:
+        raise InputProblem(f"unknown k convention {convention!r} (modulus or parameter)")
+    extent = max((a - b).Length for a in points for b in points)
+    for i in range(4):
+        for j in range(i + 1, 4):
+            if (points[i] - points[j]).Length <= 1e-9 * (1.0 + extent):
+                raise InputProblem(f"points {i + 1} and {j + 1} coincide")
+    name = "k" if convention == "modulus" else "m"
+    if not (math.isfinite(k) and (0.0 <= k < 1.0)):
+        raise InputProblem(f"{name} = {k:g}: the elliptic basis needs 0 <= {name} < 1")
+    if not (math.isfinite(d) and d > 0):
+        raise InputProblem(f"d = {d:g}: the end-derivative parameter must be > 0")
+    if not (math.isfinite(tol) and tol > 0):
+        raise InputProblem(f"tolerance {tol:g} must be > 0")
+    try:
+        if plane is not None:
+            loc = to_plane(plane, points)
+            if np.max(np.abs(loc[:, 2])) > 1e-9 * (1.0 + extent):
+                plane = None              # not in the sketch's plane: fit one
+        if plane is None:
+            xyz = np.array([tuple(p) for p in points], dtype=float)
+            _, frame = el.plane_fit(xyz)
+            if frame.rms > 1e-6 * (1.0 + extent):
+                raise InputProblem(f"the four points are not coplanar (rms distance "
+                                   f"{frame.rms:.3g} mm from their best plane)")
+            plane = placement_from_frame(frame)
+        xy = np.ascontiguousarray(to_plane(plane, points)[:, :2])
+        kw = {"k": float(k)} if convention == "modulus" else {"m": float(k)}
+        curve = el.blend_curve(xy, d=float(d), mode=mode, **kw)
+        bs = curve.to_bspline(float(tol))
+    except InputProblem:
+        raise
+    except (ValueError, ArithmeticError, RuntimeError) as exc:
+        hint = ""
+        if "singular" in str(exc).lower():
+            hint = (" (the basis is singular near k = 0.80241, m = 0.64386; in interpolate "
+                    "mode the points may be degenerate)")
+        raise InputProblem(f"elliptic blend failed: {exc}{hint}") from None
+    return {"curve": curve, "bspline": bs, "placement": plane,
+            "control": to_3d(plane, curve.q)}
+
+
 # ----------------------------------------------------------- proxies
 
 def _add(obj, kind, name, group, tip, value=None):
@@ -708,6 +814,59 @@ class CombProxy(_Proxy):
         obj.Status = "ok"
 
 
+class EllipticBlendProxy(_Proxy):
+    """Elliptic blending-function curve (seed 003) through / controlled by four points."""
+
+    kind = "EllipticBlend"
+
+    def setup(self, obj):
+        _add(obj, "App::PropertyLinkSubList", "Points", "Input",
+             "Four coplanar points, in order: vertices of sketches or shapes, or a sketch "
+             "holding four sketch points")
+        _add(obj, "App::PropertyEnumeration", "Mode", "Blend",
+             "interpolate: the curve passes through the four points (chord-length "
+             "parameters); control: the points are its control points")
+        if not obj.getEnumerationsOfProperty("Mode"):
+            obj.Mode = list(ELLBLEND_MODES)
+        _add(obj, "App::PropertyFloat", "K", "Blend",
+             "Elliptic modulus k in [0, 1) of the basis {1-t, sn((1-t)K), sn(Kt), t} "
+             "(or m = k^2, see KConvention); k = 0 gives sines", 0.5)
+        _add(obj, "App::PropertyEnumeration", "KConvention", "Blend",
+             "modulus: K is the modulus k; parameter: K is m = k^2 (the paper's "
+             "convention: its rope example 'k = 0.3' is m = 0.3)")
+        if not obj.getEnumerationsOfProperty("KConvention"):
+            obj.KConvention = list(K_CONVENTIONS)
+        _add(obj, "App::PropertyFloat", "D", "Blend",
+             "End-derivative parameter d > 0: the curve leaves q0 with velocity "
+             "d (q1 - q0) and ends with d (q3 - q2)", 2.0)
+        _add(obj, "App::PropertyFloat", "Tolerance", "BSpline",
+             "Largest distance (mm) of the B-spline from the blending curve", defaults()[0])
+        _add(obj, "App::PropertyFloat", "BSplineDeviation", "Result",
+             "Certified distance of the B-spline from the blending curve (mm)")
+        _add(obj, "App::PropertyVectorList", "ControlPoints", "Result",
+             "The curve's four control points q0..q3 (global coordinates)")
+        _add(obj, "App::PropertyString", "Status", "Result", "Outcome of the last update")
+        _add(obj, "App::PropertyPlacement", "Plane", "Result", "The plane of the curve")
+        for name in ("BSplineDeviation", "ControlPoints", "Status", "Plane"):
+            obj.setEditorMode(name, 1)
+
+    def validate(self, obj, prop):
+        if prop == "Tolerance" and obj.Tolerance <= 0:
+            obj.Tolerance = defaults()[0]
+
+    def compute(self, obj):
+        """ellblend_core's dict for the linked points; raises InputProblem."""
+        pts, plane = gather_vertices(obj.Points)
+        return ellblend_core(pts, plane, obj.Mode, obj.K, obj.D, obj.Tolerance, obj.KConvention)
+
+    def apply(self, obj, r):
+        obj.Shape = part_bspline(r["bspline"], r["placement"]).toShape()
+        obj.BSplineDeviation = float(r["bspline"].max_deviation)
+        obj.ControlPoints = r["control"]
+        obj.Plane = r["placement"]
+        obj.Status = "ok"
+
+
 # ----------------------------------------------------------- view providers
 
 class ViewProvider:
@@ -821,6 +980,18 @@ def make_comb(doc, source, subs=(), **props):
     for k, v in props.items():
         setattr(obj, k, v)
     _view(obj, "comb", (0.17, 0.63, 0.17), 1.0)
+    return obj
+
+
+def make_ellblend(doc, sources=(), **props):
+    """A new elliptic blend curve of four points; ``sources`` [(obj, [subnames])];
+    props set Mode, K, KConvention, D, Tolerance."""
+    obj = doc.addObject("Part::FeaturePython", "ElasticaEllipticBlend")
+    EllipticBlendProxy(obj)
+    obj.Points = [(o, tuple(s) or ("",)) for o, s in sources]
+    for k, v in props.items():
+        setattr(obj, k, v)
+    _view(obj, "ellblend", (0.58, 0.40, 0.74), 3.0)
     return obj
 
 

@@ -6,10 +6,10 @@ from . import icon
 
 class ElasticaWorkbench(Gui.Workbench):
     """Fit sketches and scanned keylines with Euler's elastica, elastic blends,
-    curvature combs, B-splines back into sketches."""
+    elliptic blending-function curves, curvature combs, B-splines back into sketches."""
 
     MenuText = "Elastica"
-    ToolTip = "Euler's elastica: fairing fits, elastic blends, curvature combs"
+    ToolTip = "Euler's elastica: fairing fits, elastic blends, elliptic blend curves, curvature combs"
     Icon = icon("elastica")
 
     def GetClassName(self):

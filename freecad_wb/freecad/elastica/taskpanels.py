@@ -243,11 +243,77 @@ class BlendPanel(_Panel):
         return True
 
 
+class EllipticBlendPanel(_Panel):
+    """Mode (through / control points), k or m, d, B-spline tolerance, output;
+    shows the certified B-spline deviation; on OK optionally writes the B-spline
+    into a sketch."""
+
+    title = "Elliptic blend curve"
+
+    def __init__(self, obj, created=True):
+        super().__init__(obj, created)
+        L = self.layout
+        self.mode = QtGui.QComboBox()
+        self.mode.addItems(["through the points", "points are control points"])
+        self.mode.setCurrentIndex(F.ELLBLEND_MODES.index(obj.Mode))
+        self.mode.currentIndexChanged.connect(lambda i: self._set("Mode", F.ELLBLEND_MODES[i]))
+        L.addRow("Curve", self.mode)
+        self.conv = QtGui.QComboBox()
+        self.conv.addItems(["modulus k", "parameter m = k\u00b2"])
+        self.conv.setCurrentIndex(F.K_CONVENTIONS.index(obj.KConvention))
+        self.conv.currentIndexChanged.connect(
+            lambda i: self._set("KConvention", F.K_CONVENTIONS[i]))
+        L.addRow("Elliptic", self.conv)
+        self.k = QtGui.QDoubleSpinBox()
+        self.k.setRange(0.0, 0.999999)
+        self.k.setDecimals(6)
+        self.k.setSingleStep(0.05)
+        self.k.setValue(obj.K)
+        self.k.editingFinished.connect(lambda: self._set("K", self.k.value()))
+        L.addRow("k (or m)", self.k)
+        self.d = QtGui.QDoubleSpinBox()
+        self.d.setRange(1e-6, 1e3)
+        self.d.setDecimals(6)
+        self.d.setSingleStep(0.1)
+        self.d.setValue(obj.D)
+        self.d.editingFinished.connect(lambda: self._set("D", self.d.value()))
+        L.addRow("End derivative d", self.d)
+        self.tol = QtGui.QDoubleSpinBox()
+        self.tol.setRange(1e-7, 100.0)
+        self.tol.setDecimals(7)
+        self.tol.setSuffix(" mm")
+        self.tol.setValue(obj.Tolerance)
+        self.tol.editingFinished.connect(lambda: self._set("Tolerance", self.tol.value()))
+        L.addRow("B-spline tolerance", self.tol)
+        self.keep = QtGui.QCheckBox("Keep the parametric feature")
+        self.keep.setChecked(True)
+        L.addRow(self.keep)
+        self.sketch = QtGui.QComboBox()
+        self.sketch.addItem("(none)", "")
+        for sk in _sketches(self.doc):
+            self.sketch.addItem(sk.Label, sk.Name)
+        self.sketch.addItem("(new sketch in the curve's plane)", "*new*")
+        L.addRow("Write B-spline into", self.sketch)
+        L.addRow(self.result)
+        self.show_result()
+
+    def show_result(self):
+        o = self.obj
+        if o.Status.startswith("error"):
+            self.result.setText(f"<b style='color:#b00'>{o.Status}</b>")
+        else:
+            self.result.setText(f"B-spline deviation {o.BSplineDeviation:.3g} mm "
+                                f"(tolerance {o.Tolerance:.3g} mm)<br>status: {o.Status}")
+
+    accept = FitPanel.accept      # the same output step: B-spline into a sketch, keep or not
+
+
 def open_for(obj):
     """Show the task panel of an Elastica feature (from its view provider). A feature
     a command has just made (``Proxy.fresh``) is removed again by Cancel."""
     proxy = getattr(obj, "Proxy", None)
-    panel = {"Fit": FitPanel, "Blend": BlendPanel}.get(getattr(proxy, "kind", ""))
+    panel = {"Fit": FitPanel, "Blend": BlendPanel,
+             "EllipticBlend": EllipticBlendPanel}.get(getattr(proxy, "kind", ""))
     if panel is None:
         return False
     created = bool(getattr(proxy, "fresh", False))

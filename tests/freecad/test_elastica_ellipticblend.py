@@ -1,0 +1,216 @@
+"""freecadcmd -t tests of the Elliptic blend curve (seed 003): creation from a sketch
+of four points and from 3D vertices, parametric update when a point moves, save /
+reopen / recompute, B-spline into a sketch, and bad input (document unchanged).
+
+The shape is checked against the library's own blending curve: through the four
+points in interpolate mode, from q0 to q3 with the picked control points otherwise."""
+import os
+import tempfile
+import unittest
+
+import FreeCAD as App
+import Part
+
+import elastica_samples as S
+from freecad.elastica import commands as C
+from freecad.elastica import features as F
+
+XY = [(0.0, 0.0), (20.0, 35.0), (55.0, 40.0), (80.0, 5.0)]
+
+
+def _vertices(doc, pts3d, prefix="P"):
+    """Part::Vertex objects at the given global points."""
+    out = []
+    for i, p in enumerate(pts3d):
+        v = doc.addObject("Part::Vertex", f"{prefix}{i}")
+        v.X, v.Y, v.Z = p.x, p.y, p.z
+        out.append(v)
+    doc.recompute()
+    return out
+
+
+class EllipticBlendTest(unittest.TestCase):
+    def setUp(self):
+        self.doc = S.new_doc("ElasticaEllBlendTest")
+        self.sk = S.points_sketch(self.doc, XY)
+        self.pts = [S.SKETCH_PLACEMENT.multVec(App.Vector(x, y, 0)) for x, y in XY]
+
+    def tearDown(self):
+        App.closeDocument(self.doc.Name)
+
+    def _ok(self, obj):
+        self.assertEqual(obj.Status, "ok")
+        self.assertEqual(len(obj.Shape.Edges), 1)
+        self.assertIsInstance(obj.Shape.Edges[0].Curve, Part.BSplineCurve)
+        self.assertTrue(0 < obj.BSplineDeviation <= obj.Tolerance)
+        self.assertEqual(len(obj.ControlPoints), 4)
+
+    def _through(self, obj, pts):
+        """The shape passes through the points (within the B-spline tolerance), in order
+        along the curve, and ends on the first and last one."""
+        e = obj.Shape.Edges[0]
+        params = []
+        for p in pts:
+            dist = e.distToShape(Part.Vertex(p))[0]
+            self.assertLess(dist, obj.Tolerance + 1e-9)
+            params.append(e.Curve.parameter(p))
+        self.assertEqual(params, sorted(params))
+        self.assertLess((e.valueAt(e.FirstParameter) - pts[0]).Length, 1e-7)
+        self.assertLess((e.valueAt(e.LastParameter) - pts[-1]).Length, 1e-7)
+
+    def test_from_sketch_points_interpolates(self):
+        f = F.make_ellblend(self.doc, [(self.sk, [])])
+        self.doc.recompute()
+        self._ok(f)
+        self._through(f, self.pts)
+        # the curve lies in the sketch plane, which is its plane
+        n = S.SKETCH_PLACEMENT.Rotation.multVec(App.Vector(0, 0, 1))
+        for p in f.Shape.Edges[0].discretize(20):
+            self.assertLess(abs((p - self.pts[0]).dot(n)), 1e-9)
+        self.assertLess((f.Plane.Base - S.SKETCH_PLACEMENT.Base).Length, 1e-12)
+
+    def test_shape_is_the_librarys_curve(self):
+        import numpy as np
+        import libelastica as el
+        f = F.make_ellblend(self.doc, [(self.sk, [])], K=0.3, KConvention="parameter", D=1.5)
+        self.doc.recompute()
+        self._ok(f)
+        curve = el.blend_curve(np.array(XY), m=0.3, d=1.5)
+        on = F.to_3d(S.SKETCH_PLACEMENT, curve.points(np.linspace(0, 1, 41)))
+        self.assertLess(S.distance_to_shape([tuple(p) for p in on], f.Shape),
+                        f.BSplineDeviation + 1e-9)
+        for q, q3 in zip(F.to_3d(S.SKETCH_PLACEMENT, curve.q), f.ControlPoints):
+            self.assertLess((q - q3).Length, 1e-9)
+        # interpolate mode: the inner control points are not the picked points
+        self.assertGreater((f.ControlPoints[1] - self.pts[1]).Length, 1.0)
+
+    def test_control_mode_uses_the_points(self):
+        f = F.make_ellblend(self.doc, [(self.sk, [])], Mode="control")
+        self.doc.recompute()
+        self._ok(f)
+        for q, p in zip(f.ControlPoints, self.pts):
+            self.assertLess((q - p).Length, 1e-9)
+        e = f.Shape.Edges[0]
+        self.assertLess((e.valueAt(e.FirstParameter) - self.pts[0]).Length, 1e-7)
+        self.assertLess((e.valueAt(e.LastParameter) - self.pts[3]).Length, 1e-7)
+        # end tangents along q1 - q0 and q3 - q2
+        t0 = e.tangentAt(e.FirstParameter).normalize()
+        t1 = e.tangentAt(e.LastParameter).normalize()
+        self.assertGreater(t0.dot((self.pts[1] - self.pts[0]).normalize()), 1 - 1e-6)
+        self.assertGreater(t1.dot((self.pts[3] - self.pts[2]).normalize()), 1 - 1e-6)
+        # the inner points are not on the curve
+        self.assertGreater(e.distToShape(Part.Vertex(self.pts[1]))[0], 1.0)
+
+    def test_from_3d_vertices_follows_a_moved_point(self):
+        plc = App.Placement(App.Vector(5, 7, -3), App.Rotation(App.Vector(0.3, -1, 0.5), 70))
+        pts = [plc.multVec(App.Vector(x, y, 0)) for x, y in XY]
+        verts = _vertices(self.doc, pts)
+        f = C.ellblend_sources([(v, ["Vertex1"]) for v in verts], open_panel=False)
+        self.assertIsNotNone(f)
+        self.assertEqual(f.Proxy.kind, "EllipticBlend")
+        self._ok(f)
+        self._through(f, pts)
+        before = f.Shape.copy()
+        moved = plc.multVec(App.Vector(30, 50, 0))        # stays in the plane
+        verts[1].X, verts[1].Y, verts[1].Z = moved.x, moved.y, moved.z
+        self.doc.recompute()
+        self._ok(f)
+        self.assertGreater(abs(f.Shape.Length - before.Length), 1e-3)
+        self._through(f, [pts[0], moved, pts[2], pts[3]])
+
+    def test_vertices_of_a_shape_and_sketch_vertices(self):
+        wire = S.polyline_3d(self.doc, XY)
+        f = F.make_ellblend(self.doc, [(wire, ["Vertex1", "Vertex2", "Vertex3", "Vertex4"])])
+        lines = S.two_lines_sketch(self.doc)
+        g = F.make_ellblend(self.doc, [(lines, ["Vertex1", "Vertex2", "Vertex3", "Vertex4"])])
+        self.doc.recompute()
+        self._ok(f)
+        self._through(f, self.pts)
+        self._ok(g)
+        self._through(g, [v.Point for v in lines.Shape.Vertexes[:4]])
+
+    def test_sketch_point_moved_recomputes(self):
+        f = F.make_ellblend(self.doc, [(self.sk, [])])
+        self.doc.recompute()
+        before = f.Shape.copy()
+        self.sk.movePoint(2, 1, App.Vector(50, 60, 0))
+        self.doc.recompute()
+        self._ok(f)
+        self.assertGreater(abs(f.Shape.Length - before.Length), 1e-3)
+        self._through(f, [self.pts[0], self.pts[1],
+                          S.SKETCH_PLACEMENT.multVec(App.Vector(50, 60, 0)), self.pts[3]])
+
+    def test_write_into_sketch(self):
+        f = F.make_ellblend(self.doc, [(self.sk, [])])
+        self.doc.recompute()
+        out = self.doc.addObject("Sketcher::SketchObject", "Out")
+        out.Placement = f.Plane
+        ids = F.write_to_sketch(f, out)
+        self.doc.recompute()
+        self.assertEqual(len(ids), 1)
+        self.assertEqual(out.Geometry[ids[0]].TypeId, "Part::GeomBSplineCurve")
+        samples = [tuple(p) for p in f.Shape.Edges[0].discretize(30)]
+        self.assertLess(S.distance_to_shape(samples, out.Shape), 1e-9)
+
+    def test_save_reopen_recompute_same_result(self):
+        f = F.make_ellblend(self.doc, [(self.sk, [])], K=0.7, D=3.0, Tolerance=1e-5)
+        self.doc.recompute()
+        self._ok(f)
+        q = [App.Vector(v) for v in f.ControlPoints]
+        samples = [tuple(p) for p in f.Shape.Edges[0].discretize(50)]
+        name = f.Name
+        path = os.path.join(tempfile.mkdtemp(), "ellblend.FCStd")
+        self.doc.saveAs(path)
+        App.closeDocument(self.doc.Name)
+        self.doc = App.openDocument(path)
+        f2 = self.doc.getObject(name)
+        self.assertEqual(f2.Proxy.kind, "EllipticBlend")
+        self.assertEqual((f2.Mode, f2.K, f2.D, f2.KConvention), ("interpolate", 0.7, 3.0, "modulus"))
+        f2.Shape = Part.Shape()               # the recompute must rebuild it
+        f2.touch()
+        self.doc.recompute()
+        self._ok(f2)
+        for a, b in zip(q, f2.ControlPoints):
+            self.assertLess((a - b).Length, 1e-9)
+        self.assertLess(S.distance_to_shape(samples, f2.Shape), 1e-9)
+        self.assertEqual(f2.getGroupOfProperty("K"), "Blend")
+        self.assertTrue(f2.getDocumentationOfProperty("K"))
+
+    def test_bad_input_leaves_document_unchanged(self):
+        three = S.points_sketch(self.doc, XY[:3], "Three")
+        five = S.points_sketch(self.doc, XY + [(90.0, -10.0)], "Five")
+        same = S.points_sketch(self.doc, [XY[0], XY[1], XY[1], XY[3]], "Same")
+        flat = [App.Vector(x, y, 0) for x, y in XY]
+        skew = _vertices(self.doc, flat[:3] + [App.Vector(80, 5, 10)], "Skew")
+        lines = S.two_lines_sketch(self.doc)
+        before = S.doc_state(self.doc)
+        cases = [
+            ([], {}, "nothing selected"),
+            ([(three, [])], {}, "3 points"),
+            ([(five, [])], {}, "5 points"),
+            ([(same, [])], {}, "coincide"),
+            ([(same, [])], {"Mode": "control"}, "coincide"),
+            ([(v, ["Vertex1"]) for v in skew], {}, "not coplanar"),
+            ([(lines, ["Edge1", "Edge2"])], {}, "select vertices"),
+            ([(self.sk, [])], {"K": 1.0}, "0 <= k < 1"),
+            ([(self.sk, [])], {"K": -0.2}, "0 <= k < 1"),
+            ([(self.sk, [])], {"K": 1.5, "KConvention": "parameter"}, "0 <= m < 1"),
+            ([(self.sk, [])], {"D": 0.0}, "d = 0"),
+        ]
+        for sources, opts, text in cases:
+            del C.MESSAGES[:]
+            self.assertIsNone(C.ellblend_sources(sources, open_panel=False, **opts), text)
+            self.assertTrue(C.MESSAGES and text in C.MESSAGES[-1], (text, C.MESSAGES))
+            self.assertEqual(S.doc_state(self.doc), before, text)
+
+    def test_bad_property_keeps_shape_and_reports(self):
+        f = F.make_ellblend(self.doc, [(self.sk, [])])
+        self.doc.recompute()
+        length = f.Shape.Length
+        f.K = 1.2
+        self.doc.recompute()
+        self.assertTrue(f.Status.startswith("error") and "k < 1" in f.Status, f.Status)
+        self.assertAlmostEqual(f.Shape.Length, length, delta=1e-12)
+        f.K = 0.5
+        self.doc.recompute()
+        self.assertEqual(f.Status, "ok")
