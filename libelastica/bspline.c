@@ -43,6 +43,13 @@
  *    of the evaluations). If it exceeds tol, the search is redone with
  *    a lower target for the sampled error, and knots are inserted as a last
  *    resort.
+ * Cost (issue 4 asks <= 1 ms at 1e-6 L, degree 3): about seven least-squares
+ * fits on ~1000 samples dominate, so the fit's loops avoid divisions (the knot
+ * differences of a span are inverted once, span_recips()), are unrolled for
+ * p = 3 (FIT_INLINE/FIT_UNROLL), sum a span's normal equations in registers,
+ * compare squared distances while steering, and the final certified fit reuses
+ * the poles of the search's last passing fit when knots and grid are the same
+ * (no refit). These change only the rounding, not the algorithm.
  */
 #include "internal.h"
 #include <float.h>
@@ -55,6 +62,22 @@
 #include <gsl/gsl_vector.h>
 
 enum { MAXDEG_FIT = 7, MAXDEG_BASIS = 15 };
+
+/* The fit's inner loops are written once with the degree p as a parameter and
+ * inlined with p = 3 (the default degree) as a constant, which lets the
+ * compiler unroll them; other degrees take the generic copy. */
+#ifdef __GNUC__
+#define FIT_INLINE static inline __attribute__((always_inline))
+#else
+#define FIT_INLINE static inline
+#endif
+#if defined(__clang__)
+#define FIT_UNROLL _Pragma("unroll")
+#elif defined(__GNUC__) && __GNUC__ >= 8
+#define FIT_UNROLL _Pragma("GCC unroll 8")
+#else
+#define FIT_UNROLL
+#endif
 
 /* ------------------------------------------------------------------ type */
 
@@ -143,6 +166,39 @@ static void basis_funs(const double *U, size_t k, int p, double t, double *N)
         double saved = 0.0;
         for (int r = 0; r < j; r++) {
             const double tmp = N[r] / (right[r + 1] + left[j - r]);
+            N[r] = saved + right[r + 1] * tmp;
+            saved = left[j - r] * tmp;
+        }
+        N[j] = saved;
+    }
+}
+
+/*
+ * basis_funs with the reciprocals of its knot differences precomputed for the
+ * span (span_recips): the denominators right[r+1] + left[j-r] of A2.2 are
+ * U[k+r+1] - U[k+1-j+r], independent of t, so a fit that evaluates the basis
+ * at many samples of one span divides only once per span. inv: p(p+1)/2.
+ */
+static void span_recips(const double *U, size_t k, int p, double *inv)
+{
+    int m = 0;
+    for (int j = 1; j <= p; j++)
+        for (int r = 0; r < j; r++)
+            inv[m++] = 1.0 / (U[k + (size_t)r + 1] - U[k + 1 + (size_t)r - (size_t)j]);
+}
+
+FIT_INLINE void basis_funs_inv(const double *U, size_t k, int p, double t, const double *inv,
+                           double *N)
+{
+    double left[MAXDEG_BASIS + 1], right[MAXDEG_BASIS + 1];
+    N[0] = 1.0;
+    int m = 0;
+    FIT_UNROLL for (int j = 1; j <= p; j++) {
+        left[j] = t - U[k + 1 - (size_t)j];
+        right[j] = U[k + (size_t)j] - t;
+        double saved = 0.0;
+        FIT_UNROLL for (int r = 0; r < j; r++) {
+            const double tmp = N[r] * inv[m++];
             N[r] = saved + right[r + 1] * tmp;
             saved = left[j - r] * tmp;
         }
@@ -425,6 +481,94 @@ static int ensure_grid(fit_ws *w, size_t N, const double *breaks)
  * Cholesky, the fixed poles' contributions moved to the right-hand side.
  * poles: 2n.
  */
+/* The basis functions of the grid for the current knots (w->Bc, w->kc). */
+FIT_INLINE void fit_basis_p(fit_ws *w, size_t N, const int p)
+{
+    const size_t n = N + (size_t)p;
+    const double *U = w->U;
+    size_t k = (size_t)p;
+    double inv[(MAXDEG_FIT * (MAXDEG_FIT + 1)) / 2];
+    span_recips(U, k, p, inv);
+    for (size_t i = 0; i <= w->M; i++) {
+        const double t = w->s[i];
+        if (k + 1 < n && t >= U[k + 1]) {
+            while (k + 1 < n && t >= U[k + 1]) k++;
+            span_recips(U, k, p, inv);
+        }
+        basis_funs_inv(U, k, p, t, inv, w->Bc + i * (size_t)(p + 1));
+        w->kc[i] = k;
+    }
+}
+
+static void fit_basis(fit_ws *w, size_t N)
+{
+    if (w->p == 3) fit_basis_p(w, N, 3);
+    else fit_basis_p(w, N, w->p);
+}
+
+/* Normal equations of the free poles (fit_poles), from the grid's basis. */
+FIT_INLINE void normal_equations(fit_ws *w, size_t n, size_t nd, const double *poles, const int p)
+{
+    for (size_t i = 0; i <= w->M; i++) {
+        const double *B = w->Bc + i * (size_t)(p + 1);
+        const size_t k = w->kc[i];
+        double tx = w->xy[2 * i], ty = w->xy[2 * i + 1];
+        const size_t g0 = k - (size_t)p;
+        if (p == 3 && g0 >= 2 && k + 2 < n) {
+            /* cubic, no fixed pole in this span: the whole span summed in
+             * registers first (p = 3 spelled out so that it is unrolled) */
+            double A00 = 0, A01 = 0, A02 = 0, A03 = 0, A11 = 0, A12 = 0, A13 = 0, A22 = 0,
+                   A23 = 0, A33 = 0, x0 = 0, x1 = 0, x2 = 0, x3 = 0, y0 = 0, y1 = 0, y2 = 0,
+                   y3 = 0;
+            for (;;) {
+                const double b0 = B[0], b1 = B[1], b2 = B[2], b3 = B[3];
+                A00 += b0 * b0; A01 += b0 * b1; A02 += b0 * b2; A03 += b0 * b3;
+                A11 += b1 * b1; A12 += b1 * b2; A13 += b1 * b3;
+                A22 += b2 * b2; A23 += b2 * b3; A33 += b3 * b3;
+                x0 += b0 * tx; x1 += b1 * tx; x2 += b2 * tx; x3 += b3 * tx;
+                y0 += b0 * ty; y1 += b1 * ty; y2 += b2 * ty; y3 += b3 * ty;
+                if (i == w->M || w->kc[i + 1] != k) break;
+                i++;
+                B += 4;
+                tx = w->xy[2 * i];
+                ty = w->xy[2 * i + 1];
+            }
+            double *Ar = w->AB + (g0 - 2) * nd, *bx = w->bx + (g0 - 2), *by = w->by + (g0 - 2);
+            Ar[0] += A00; Ar[1] += A01; Ar[2] += A02; Ar[3] += A03;
+            Ar[nd] += A11; Ar[nd + 1] += A12; Ar[nd + 2] += A13;
+            Ar[2 * nd] += A22; Ar[2 * nd + 1] += A23;
+            Ar[3 * nd] += A33;
+            bx[0] += x0; bx[1] += x1; bx[2] += x2; bx[3] += x3;
+            by[0] += y0; by[1] += y1; by[2] += y2; by[3] += y3;
+            continue;
+        }
+        if (g0 >= 2 && k + 2 < n) {   /* no fixed pole in this span */
+            double *Ar = w->AB + (g0 - 2) * nd;
+            FIT_UNROLL for (int a = 0; a <= p; a++, Ar += nd) {
+                w->bx[g0 - 2 + (size_t)a] += B[a] * tx;
+                w->by[g0 - 2 + (size_t)a] += B[a] * ty;
+                FIT_UNROLL for (int c = a; c <= p; c++) Ar[c - a] += B[a] * B[c];
+            }
+            continue;
+        }
+        FIT_UNROLL for (int a = 0; a <= p; a++) {
+            const size_t g = g0 + (size_t)a;
+            if (g < 2 || g + 2 >= n) { tx -= B[a] * poles[2 * g]; ty -= B[a] * poles[2 * g + 1]; }
+        }
+        FIT_UNROLL for (int a = 0; a <= p; a++) {
+            const size_t ga = g0 + (size_t)a;
+            if (ga < 2 || ga + 2 >= n) continue;
+            w->bx[ga - 2] += B[a] * tx;
+            w->by[ga - 2] += B[a] * ty;
+            FIT_UNROLL for (int c = a; c <= p; c++) {
+                const size_t gc = g0 + (size_t)c;
+                if (gc + 2 >= n) continue;
+                w->AB[(ga - 2) * nd + (gc - ga)] += B[a] * B[c];
+            }
+        }
+    }
+}
+
 static int fit_poles(fit_ws *w, size_t N, double *poles)
 {
     const int p = w->p;
@@ -443,31 +587,10 @@ static int fit_poles(fit_ws *w, size_t N, double *poles)
         memset(w->bx, 0, nu * sizeof *w->bx);
         memset(w->by, 0, nu * sizeof *w->by);
     }
-    size_t k = (size_t)p;
-    for (size_t i = 0; i <= w->M; i++) {
-        const double t = w->s[i];
-        while (k + 1 < n && t >= U[k + 1]) k++;
-        double *B = w->Bc + i * (size_t)(p + 1);
-        basis_funs(U, k, p, t, B);
-        w->kc[i] = k;
-        if (!nu) continue;
-        double tx = w->xy[2 * i], ty = w->xy[2 * i + 1];
-        const size_t g0 = k - (size_t)p;
-        for (int a = 0; a <= p; a++) {
-            const size_t g = g0 + (size_t)a;
-            if (g < 2 || g + 2 >= n) { tx -= B[a] * poles[2 * g]; ty -= B[a] * poles[2 * g + 1]; }
-        }
-        for (int a = 0; a <= p; a++) {
-            const size_t ga = g0 + (size_t)a;
-            if (ga < 2 || ga + 2 >= n) continue;
-            w->bx[ga - 2] += B[a] * tx;
-            w->by[ga - 2] += B[a] * ty;
-            for (int c = a; c <= p; c++) {
-                const size_t gc = g0 + (size_t)c;
-                if (gc + 2 >= n) continue;
-                w->AB[(ga - 2) * nd + (gc - ga)] += B[a] * B[c];
-            }
-        }
+    fit_basis(w, N);
+    if (nu) {
+        if (p == 3) normal_equations(w, n, nd, poles, 3);
+        else normal_equations(w, n, nd, poles, p);
     }
     if (nu) {
         gsl_matrix_view A = gsl_matrix_view_array(w->AB, nu, nd);
@@ -498,22 +621,35 @@ static void fit_point(const fit_ws *w, const double *poles, size_t k, double t, 
 }
 
 /* Newton step of the foot point from s = t (file comment). */
-static double foot_step(double ex, double ey, double c, double sn, double kappa)
+FIT_INLINE double foot_step(double ex, double ey, double c, double sn, double kappa)
 {
     const double eT = ex * c + ey * sn, eN = -ex * sn + ey * c;
-    return eT / fmax(1.0 - kappa * eN, 0.5);
+    const double den = 1.0 - kappa * eN;   /* (ternaries: fmax is a call at -O2) */
+    return eT / (den > 0.5 ? den : 0.5);
 }
 
 /* B at grid point i from the cached basis functions of the last fit_poles. */
-static void grid_point(const fit_ws *w, const double *poles, size_t i, double *P)
+FIT_INLINE void grid_point_p(const fit_ws *w, const double *poles, size_t i, double *P, const int p)
 {
-    const double *B = w->Bc + i * (size_t)(w->p + 1);
-    const size_t g0 = w->kc[i] - (size_t)w->p;
+    const double *B = w->Bc + i * (size_t)(p + 1);
+    const size_t g0 = w->kc[i] - (size_t)p;
     P[0] = P[1] = 0.0;
-    for (int a = 0; a <= w->p; a++) {
+    FIT_UNROLL for (int a = 0; a <= p; a++) {
         P[0] += B[a] * poles[2 * (g0 + (size_t)a)];
         P[1] += B[a] * poles[2 * (g0 + (size_t)a) + 1];
     }
+}
+
+/* |B(t) - (gamma(t) + D T + D^2/2 kappa N)|^2 and the step D = s1 - t. */
+FIT_INLINE double taylor_sq(const fit_ws *w, const double *P, const double *g, double c,
+                            double sn, double ka, double t, double *Dout)
+{
+    double s1 = t + foot_step(P[0] - g[0], P[1] - g[1], c, sn, ka);
+    s1 = s1 < 0.0 ? 0.0 : (s1 > w->L ? w->L : s1);
+    const double D = s1 - t, h = 0.5 * D * D * ka;
+    const double dx = P[0] - g[0] - D * c + h * sn, dy = P[1] - g[1] - D * sn - h * c;
+    *Dout = D;
+    return dx * dx + dy * dy;
 }
 
 /*
@@ -524,31 +660,37 @@ static void grid_point(const fit_ws *w, const double *poles, size_t i, double *P
  * |sn dn| <= min(1, 1/k) by the reciprocal-modulus transformation): an upper
  * bound of |B(t) - gamma(s1)| from exact gamma, theta, kappa at t.
  */
-static double taylor_distance(const fit_ws *w, const double *P, const double *g, double c,
+
+FIT_INLINE double taylor_distance(const fit_ws *w, const double *P, const double *g, double c,
                               double sn, double ka, double t, double c3)
 {
-    const double s1 = t + foot_step(P[0] - g[0], P[1] - g[1], c, sn, ka);
-    const double D = fmin(fmax(s1, 0.0), w->L) - t, h = 0.5 * D * D * ka;
-    const double dx = P[0] - g[0] - D * c + h * sn, dy = P[1] - g[1] - D * sn - h * c;
-    return sqrt(dx * dx + dy * dy) + fabs(D * D * D) * c3 / 6.0;
+    double D, d2 = taylor_sq(w, P, g, c, sn, ka, t, &D);
+    return sqrt(d2) + fabs(D * D * D) * c3 / 6.0;
 }
 
 /* Sampled distance per span, to steer the knots (w->err); returns the largest. */
-static double fit_errors(fit_ws *w, size_t N, const double *poles)
+FIT_INLINE double fit_errors_p(fit_ws *w, size_t N, const double *poles, const int p)
 {
     memset(w->err, 0, N * sizeof *w->err);
     double emax = 0.0;
     for (size_t i = 0; i <= w->M; i++) {
         double P[2];
-        grid_point(w, poles, i, P);
-        const double d = taylor_distance(w, P, w->xy + 2 * i, w->cs[2 * i], w->cs[2 * i + 1],
-                                         w->ka[i], w->s[i], 0.0);
-        const size_t k = w->kc[i], j = k - (size_t)w->p;
+        grid_point_p(w, poles, i, P, p);
+        double D;   /* squared distances here (no remainder term), roots below */
+        const double d = taylor_sq(w, P, w->xy + 2 * i, w->cs[2 * i], w->cs[2 * i + 1],
+                                   w->ka[i], w->s[i], &D);
+        const size_t k = w->kc[i], j = k - (size_t)p;
         if (d > w->err[j]) w->err[j] = d;
         if (j > 0 && w->s[i] == w->U[k] && d > w->err[j - 1]) w->err[j - 1] = d;
         if (d > emax) emax = d;
     }
-    return emax;
+    for (size_t j = 0; j < N; j++) w->err[j] = sqrt(w->err[j]);
+    return sqrt(emax);
+}
+
+static double fit_errors(fit_ws *w, size_t N, const double *poles)
+{
+    return w->p == 3 ? fit_errors_p(w, N, poles, 3) : fit_errors_p(w, N, poles, w->p);
 }
 
 /*
@@ -567,21 +709,21 @@ static double fit_errors(fit_ws *w, size_t N, const double *poles)
  */
 static void cumulate(const fit_ws *w, const double *g, const double *corr, double *G);
 
-static void density(const fit_ws *w, double *g, double *G)
+FIT_INLINE void density_p(const fit_ws *w, double *g, const int p)
 {
-    const int p = w->p;
     double fact = 1.0;
     for (int j = 2; j <= p; j++) fact *= j;
+    const double cphi = cos(w->par->phi), sphi = sin(w->par->phi);
     for (size_t i = 0; i <= w->M; i++) {
-        double psi[MAXDEG_FIT + 2], S[MAXDEG_FIT + 2], C[MAXDEG_FIT + 2];
-        psi[0] = w->th[i] - w->par->phi;
+        double psi[MAXDEG_FIT + 3], S[MAXDEG_FIT + 3], C[MAXDEG_FIT + 3];   /* +1: unrolling */
         psi[1] = w->ka[i];
-        S[0] = sin(psi[0]);
-        C[0] = cos(psi[0]);
-        for (int j = 1; j <= p; j++) {
+        /* sin, cos of psi_0 = theta - phi from the grid's cos, sin theta */
+        S[0] = w->cs[2 * i + 1] * cphi - w->cs[2 * i] * sphi;
+        C[0] = w->cs[2 * i] * cphi + w->cs[2 * i + 1] * sphi;
+        FIT_UNROLL for (int j = 1; j <= p; j++) {
             if (j + 1 <= p) psi[j + 1] = -w->par->mu * S[j - 1] / ((double)(j + 1) * j);
             double sa = 0.0, ca = 0.0;
-            for (int m = 1; m <= j; m++) {
+            FIT_UNROLL for (int m = 1; m <= j; m++) {
                 sa += m * psi[m] * C[j - m];
                 ca -= m * psi[m] * S[j - m];
             }
@@ -591,6 +733,12 @@ static void density(const fit_ws *w, double *g, double *G)
         const double d = fact * sqrt(C[p] * C[p] + S[p] * S[p]);
         g[i] = p == 3 ? sqrt(sqrt(d)) : pow(d, 1.0 / (p + 1));
     }
+}
+
+static void density(const fit_ws *w, double *g, double *G)
+{
+    if (w->p == 3) density_p(w, g, 3);
+    else density_p(w, g, w->p);
     double mean = 0.0;
     for (size_t i = 0; i <= w->M; i++) mean += g[i];
     mean /= (double)(w->M + 1);
@@ -673,6 +821,19 @@ static int peak_cmp(const void *a, const void *b)
     return (x < y) - (x > y);   /* descending */
 }
 
+/* d at every grid point (w->dist), the largest and where. */
+FIT_INLINE void certify_grid(fit_ws *w, const double *poles, double c3, double *best, double *tb,
+                             const int p)
+{
+    for (size_t i = 0; i <= w->M; i++) {
+        double P[2];
+        grid_point_p(w, poles, i, P, p);
+        w->dist[i] = taylor_distance(w, P, w->xy + 2 * i, w->cs[2 * i], w->cs[2 * i + 1],
+                                     w->ka[i], w->s[i], c3);
+        if (w->dist[i] > *best) { *best = w->dist[i]; *tb = w->s[i]; }
+    }
+}
+
 /*
  * Certified max distance (file comment); *worst = the t where it occurs.
  * Grid values first (exact gamma, theta, kappa of the grid); then Brent (GSL)
@@ -682,17 +843,12 @@ static int peak_cmp(const void *a, const void *b)
 static int certify(fit_ws *w, size_t N, const double *poles, double *dmax, double *worst)
 {
     const size_t n = N + (size_t)w->p, M = w->M;
-    const double k = w->par->k, mu = w->par->mu, kmax = 2.0 * k * sqrt(mu),
+    const double k = fabs(w->par->k), mu = w->par->mu, kmax = 2.0 * k * sqrt(mu), /* sign of k: orientation */
                  k1max = 2.0 * mu * fmin(k, 1.0);
     const double c3 = sqrt(k1max * k1max + kmax * kmax * kmax * kmax);
     double best = 0.0, tb = 0.0;
-    for (size_t i = 0; i <= M; i++) {
-        double P[2];
-        grid_point(w, poles, i, P);
-        w->dist[i] = taylor_distance(w, P, w->xy + 2 * i, w->cs[2 * i], w->cs[2 * i + 1],
-                                     w->ka[i], w->s[i], c3);
-        if (w->dist[i] > best) { best = w->dist[i]; tb = w->s[i]; }
-    }
+    if (w->p == 3) certify_grid(w, poles, c3, &best, &tb, 3);
+    else certify_grid(w, poles, c3, &best, &tb, w->p);
     size_t np = 0;
     for (size_t i = 1; i < M; i++)
         if (w->dist[i] > w->dist[i - 1] && w->dist[i] > w->dist[i + 1]) np++;
@@ -776,6 +932,8 @@ int el_smooth_to_bspline(const el_smooth_params *par, double tol, int degree, el
     w.par = par; w.p = p; w.L = L; w.tol = tol;
     double *breaks = NULL, *nb = NULL, *poles = NULL, *G = NULL;
     double *bestbr = NULL, *corr = NULL, *Gc = NULL, *cm = NULL;
+    double *svp = NULL, *svb = NULL;   /* poles and breaks of the last passing fit */
+    size_t svN = 0, svM = 0;           /* its spans and grid */
     double dev = INFINITY, tw = 0.0;
     int st, status = EL_OK;
 #define GROW(ptr, cnt) do { double *q_ = realloc(ptr, (cnt) * sizeof *q_); \
@@ -822,6 +980,13 @@ int el_smooth_to_bspline(const el_smooth_params *par, double tol, int degree, el
             if ((st = fit_poles(&w, N, poles))) goto done;
             e = fit_errors(&w, N, poles);
             Nlast = N;
+            if (e <= accept) {   /* kept: the final fit below reuses it when it is this one */
+                GROW(svp, 2 * (N + (size_t)p));
+                GROW(svb, N + 1);
+                memcpy(svp, poles, 2 * (N + (size_t)p) * sizeof *poles);
+                memcpy(svb, breaks, (N + 1) * sizeof *breaks);
+                svN = N; svM = w.M;
+            }
             if (e <= accept) { if (!hi_pass || N < hi_pass) hi_pass = N; }
             else if (N > lo_fail) lo_fail = N;
             if (hi_pass && hi_pass == lo_fail + 1) break;
@@ -882,6 +1047,13 @@ int el_smooth_to_bspline(const el_smooth_params *par, double tol, int degree, el
                 if ((st = fit_poles(&w, Nc, poles))) goto done;
                 e = fit_errors(&w, Nc, poles);
                 Nlast = Nc;
+                if (e <= accept) {
+                    GROW(svp, 2 * (Nc + (size_t)p));
+                    GROW(svb, Nc + 1);
+                    memcpy(svp, poles, 2 * (Nc + (size_t)p) * sizeof *poles);
+                    memcpy(svb, nb, (Nc + 1) * sizeof *nb);
+                    svN = Nc; svM = w.M;
+                }
                 size_t Nn;
                 if (e <= accept) {
                     GROW(bestbr, Nc + 1);
@@ -912,7 +1084,10 @@ int el_smooth_to_bspline(const el_smooth_params *par, double tol, int degree, el
         if ((st = ensure_grid(&w, N, breaks))) goto done;
         set_knots(&w, N, breaks);
         GROW(poles, 2 * (N + (size_t)p));
-        if ((st = fit_poles(&w, N, poles))) goto done;
+        if (svN == N && svM == w.M && !memcmp(svb, breaks, (N + 1) * sizeof *breaks)) {
+            fit_basis(&w, N);   /* the same fit as the saved one: no refit */
+            memcpy(poles, svp, 2 * (N + (size_t)p) * sizeof *poles);
+        } else if ((st = fit_poles(&w, N, poles))) goto done;
         if ((st = certify(&w, N, poles, &dev, &tw))) goto done;
         if (dev <= tol || status) break;
         accept *= 0.995 * tol / dev;
@@ -939,6 +1114,7 @@ int el_smooth_to_bspline(const el_smooth_params *par, double tol, int degree, el
 #undef GROW
 done:
     free(breaks); free(nb); free(poles); free(G); free(bestbr); free(corr); free(Gc); free(cm);
+    free(svp); free(svb);
     ws_free(&w);
     return st ? st : status;
 }
