@@ -99,13 +99,15 @@ $(BUILD)/bench/%: bench/%.c $(BUILD)/libelastica.a
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_BASE) $(DEPS_CFLAGS) $< -o $@ $(BUILD)/libelastica.a $(DEPS_LIBS)
 
-# comparison packages for the benchmarks only (PyPI), into the python3 on PATH
+# comparison packages for the benchmarks only (PyPI), into the python3 on PATH.
+# OPENBLAS_NUM_THREADS=1: Ipopt's BLAS would otherwise spin idle worker threads on
+# problems this small (~9 % of a Hermite profile), charging every figure for them.
 BENCH_PIP := clothoids scipy
 bench: all $(BENCH_BIN)
 	@$(PYTHON) -c "import Clothoids, scipy" 2>/dev/null || $(PYTHON) -m pip install -q $(BENCH_PIP)
-	@for b in $(BENCH_BIN); do $$b; done
+	@for b in $(BENCH_BIN); do OPENBLAS_NUM_THREADS=1 $$b; done
 	@for b in bench/bench_*.py; do [ -f "$$b" ] || continue; \
-	  LIBELASTICA_PATH=$(CURDIR)/$(BUILD)/libelastica.so PYTHONPATH=$(CURDIR)/python $(PYTHON) $$b; done
+	  OPENBLAS_NUM_THREADS=1 LIBELASTICA_PATH=$(CURDIR)/$(BUILD)/libelastica.so PYTHONPATH=$(CURDIR)/python $(PYTHON) $$b; done
 
 # headless FreeCAD (freecadcmd) with a throw-away HOME; the report is printed, the full log kept
 demo: all
