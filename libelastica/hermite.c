@@ -1104,7 +1104,8 @@ static void polish(const frame *fr, int mode, double target, el_hermite_solution
             return;
         for (int i = 0; i < 5; i++) if (!isfinite(dv[i])) return;
         el_smooth_params q = p;
-        q.phi += dv[0]; q.mu += dv[1]; q.k += dv[2]; q.q += dv[3]; q.length += dv[4];
+        q.phi += dv[0]; q.mu += dv[1]; q.k += dv[2]; q.q += dv[3];
+        if (mode == EL_HERMITE_TENSION) q.length += dv[4]; /* length mode: L stays exact */
         double rq[5];
         if (el_smooth_check(&q) || polish_res(fr, &q, mode, target, rq)) return;
         double n0 = 0.0, n1 = 0.0;
@@ -1390,7 +1391,9 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
     for (size_t i = 0; i < roots.n; i++) {
         el_hermite_solution s;
         if (make_solution(&fr, &roots.v[i], &s)) continue;
+        /* the mode's given value is exact, not the root finder's approximation of it */
         if (opt->mode == EL_HERMITE_TENSION) s.sigma = opt->sigma;
+        else s.length = s.curve.length = opt->length;
         if (residual(&fr, &s, &s.residual)) continue;
         if (s.residual > opt->tol && s.residual < 1e-5) {
             const double target = opt->mode == EL_HERMITE_TENSION ? opt->sigma : opt->length;
