@@ -71,6 +71,41 @@ def _create(doc, title, code):
     return obj
 
 
+def _check_and_create(title, what, check, code, open_panel):
+    """Run ``check()`` (the feature's core on the input; InputProblem = bad input),
+    then create the feature by the recorded ``code`` and open its task panel.
+    Returns the new feature or None (message printed, document unchanged)."""
+    from . import features as F
+    try:
+        check()
+    except F.InputProblem as exc:
+        message(str(exc))
+        return None
+    except Exception as exc:  # anything unexpected: report, never escape
+        message(f"{what} failed: {type(exc).__name__}: {exc}")
+        return None
+    obj = _create(App.ActiveDocument, title, code)
+    if open_panel and App.GuiUp and obj is not None:
+        obj.Proxy.fresh = True
+        Gui.ActiveDocument.setEdit(obj.Name, 0)
+    return obj
+
+
+class _Command:
+    """A toolbar command: ``run(selection)``, guarded; active with a document."""
+
+    pixmap = menu = tip = ""
+
+    def GetResources(self):
+        return {"Pixmap": icon(self.pixmap), "MenuText": self.menu, "ToolTip": self.tip}
+
+    def IsActive(self):
+        return App.ActiveDocument is not None
+
+    def Activated(self):
+        _guarded(type(self).run)
+
+
 # ------------------------------------------------------------------ fit
 
 def fit_sources(sources, csv_file="", open_panel=True, **options):
@@ -86,58 +121,39 @@ def fit_sources(sources, csv_file="", open_panel=True, **options):
     tol, deg, model = defaults()
     opts = {"Model": model, "Tolerance": tol, "Degree": deg}
     opts.update(options)
-    try:
+    def check():
         pts, plane, ordered, closed = F.gather_points(sources, csv_file)
         F.fit_core(pts, plane, ordered, closed, model=opts["Model"],
                    split=opts.get("SplitAtInflection", False), pin_ends=opts.get("PinEnds", False),
                    step=opts.get("ResampleStep", 0.0), tol=opts["Tolerance"], degree=opts["Degree"])
-    except F.InputProblem as exc:
-        message(str(exc))
-        return None
-    except Exception as exc:  # anything unexpected: report, never escape
-        message(f"fit failed: {type(exc).__name__}: {exc}")
-        return None
+
     src = ", ".join(f"({_ref(o)}, {list(s)!r})" for o, s in sources)
-    obj = _create(doc, "Fit elastica", "from freecad.elastica import features\n"
-               f"_fit = features.make_fit({_ref_doc(doc)}, [{src}], csv_file={csv_file!r}, "
-               + ", ".join(f"{k}={v!r}" for k, v in opts.items()) + ")\n"
-               f"{_ref_doc(doc)}.recompute()")
-    if open_panel and App.GuiUp and obj is not None:
-        obj.Proxy.fresh = True
-        Gui.ActiveDocument.setEdit(obj.Name, 0)
-    return obj
+    return _check_and_create("Fit elastica", "fit", check, "from freecad.elastica import features\n"
+                             f"_fit = features.make_fit({_ref_doc(doc)}, [{src}], csv_file={csv_file!r}, "
+                             + ", ".join(f"{k}={v!r}" for k, v in opts.items()) + ")\n"
+                             f"{_ref_doc(doc)}.recompute()", open_panel)
 
 
 def _ref_doc(doc):
     return f"App.getDocument({doc.Name!r})"
 
 
-class FitCommand:
+class FitCommand(_Command):
     """Fit an elastica to the selected sketch edges / vertices, Points object or wire."""
 
-    def GetResources(self):
-        return {"Pixmap": icon("fit"), "MenuText": "Fit elastica",
-                "ToolTip": "Fit an elastica (discrete or smooth) to the selected sketch edges or "
-                           "vertices, a Points object or a 3D polyline; output a parametric "
-                           "feature and/or a B-spline in a sketch"}
-
-    def IsActive(self):
-        return App.ActiveDocument is not None
-
-    def Activated(self):
-        _guarded(fit_sources)
+    pixmap, menu = "fit", "Fit elastica"
+    tip = ("Fit an elastica (discrete or smooth) to the selected sketch edges or "
+           "vertices, a Points object or a 3D polyline; output a parametric feature "
+           "and/or a B-spline in a sketch")
+    run = staticmethod(fit_sources)
 
 
-class FitCsvCommand:
+class FitCsvCommand(_Command):
     """Fit an elastica to the points of a CSV file."""
 
-    def GetResources(self):
-        return {"Pixmap": icon("fit_csv"), "MenuText": "Fit elastica to CSV file...",
-                "ToolTip": "Fit an elastica to x,y[,z] points read from a CSV / text file "
-                           "(3D points are plane-fitted)"}
-
-    def IsActive(self):
-        return App.ActiveDocument is not None
+    pixmap, menu = "fit_csv", "Fit elastica to CSV file..."
+    tip = ("Fit an elastica to x,y[,z] points read from a CSV / text file "
+           "(3D points are plane-fitted)")
 
     def Activated(self):
         from PySide import QtGui
@@ -167,7 +183,7 @@ def blend_sources(sources, open_panel=True):
     if edges is None:
         message("select exactly two edges (their nearest ends are joined)")
         return None
-    try:
+    def check():
         e1 = edges[0][0].Shape.getElement(edges[0][1])
         e2 = edges[1][0].Shape.getElement(edges[1][1])
         a, b = F.nearest_ends(e1, e2)
@@ -175,36 +191,21 @@ def blend_sources(sources, open_panel=True):
         if edges[0][0] == edges[1][0] and F._is_sketch(edges[0][0]):
             plane = edges[0][0].getGlobalPlacement()
         F.blend_core(e1, a, e2, b, plane)
-    except F.InputProblem as exc:
-        message(str(exc))
-        return None
-    except Exception as exc:
-        message(f"blend failed: {type(exc).__name__}: {exc}")
-        return None
-    obj = _create(doc, "Elastic blend", "from freecad.elastica import features\n"
-               f"_blend = features.make_blend({_ref_doc(doc)}, ({_ref(edges[0][0])}, "
-               f"{edges[0][1]!r}), ({_ref(edges[1][0])}, {edges[1][1]!r}))\n"
-               f"{_ref_doc(doc)}.recompute()")
-    if open_panel and App.GuiUp and obj is not None:
-        obj.Proxy.fresh = True
-        Gui.ActiveDocument.setEdit(obj.Name, 0)
-    return obj
+
+    return _check_and_create("Elastic blend", "blend", check, "from freecad.elastica import features\n"
+                             f"_blend = features.make_blend({_ref_doc(doc)}, ({_ref(edges[0][0])}, "
+                             f"{edges[0][1]!r}), ({_ref(edges[1][0])}, {edges[1][1]!r}))\n"
+                             f"{_ref_doc(doc)}.recompute()", open_panel)
 
 
-class BlendCommand:
+class BlendCommand(_Command):
     """Elastic Hermite blend between the nearest ends of two selected edges."""
 
-    def GetResources(self):
-        return {"Pixmap": icon("blend"), "MenuText": "Elastic blend",
-                "ToolTip": "Join the nearest ends of two selected coplanar edges by an elastica "
-                           "(all Hermite solutions, by length or tension); in a sketch, a "
-                           "B-spline tangent to both edges"}
-
-    def IsActive(self):
-        return App.ActiveDocument is not None
-
-    def Activated(self):
-        _guarded(blend_sources)
+    pixmap, menu = "blend", "Elastic blend"
+    tip = ("Join the nearest ends of two selected coplanar edges by an elastica (all "
+           "Hermite solutions, by length or tension); in a sketch, a B-spline "
+           "tangent to both edges")
+    run = staticmethod(blend_sources)
 
 
 # ------------------------------------------------------------------ elliptic blend
@@ -222,41 +223,27 @@ def ellblend_sources(sources, open_panel=True, **options):
     opts = {"Mode": "interpolate", "K": 0.5, "KConvention": "modulus", "D": 2.0,
             "Tolerance": defaults()[0]}
     opts.update(options)
-    try:
+    def check():
         pts, plane = F.gather_vertices(sources)
         F.ellblend_core(pts, plane, opts["Mode"], opts["K"], opts["D"], opts["Tolerance"],
                         opts["KConvention"])
-    except F.InputProblem as exc:
-        message(str(exc))
-        return None
-    except Exception as exc:
-        message(f"elliptic blend failed: {type(exc).__name__}: {exc}")
-        return None
+
     src = ", ".join(f"({_ref(o)}, {list(s)!r})" for o, s in sources)
-    obj = _create(doc, "Elliptic blend curve", "from freecad.elastica import features\n"
-                  f"_ellblend = features.make_ellblend({_ref_doc(doc)}, [{src}], "
-                  + ", ".join(f"{k}={v!r}" for k, v in opts.items()) + ")\n"
-                  f"{_ref_doc(doc)}.recompute()")
-    if open_panel and App.GuiUp and obj is not None:
-        obj.Proxy.fresh = True
-        Gui.ActiveDocument.setEdit(obj.Name, 0)
-    return obj
+    return _check_and_create("Elliptic blend curve", "elliptic blend", check,
+                             "from freecad.elastica import features\n"
+                             f"_ellblend = features.make_ellblend({_ref_doc(doc)}, [{src}], "
+                             + ", ".join(f"{k}={v!r}" for k, v in opts.items()) + ")\n"
+                             f"{_ref_doc(doc)}.recompute()", open_panel)
 
 
-class EllipticBlendCommand:
+class EllipticBlendCommand(_Command):
     """Elliptic blending-function curve (seed 003) from four picked points."""
 
-    def GetResources(self):
-        return {"Pixmap": icon("ellblend"), "MenuText": "Elliptic blend curve",
-                "ToolTip": "A curve with Jacobi elliptic blending functions through four "
-                           "picked coplanar points (or with them as control points); select "
-                           "four vertices in order, or a sketch of four points"}
-
-    def IsActive(self):
-        return App.ActiveDocument is not None
-
-    def Activated(self):
-        _guarded(ellblend_sources)
+    pixmap, menu = "ellblend", "Elliptic blend curve"
+    tip = ("A curve with Jacobi elliptic blending functions through four picked "
+           "coplanar points (or with them as control points); select four vertices "
+           "in order, or a sketch of four points")
+    run = staticmethod(ellblend_sources)
 
 
 # ------------------------------------------------------------------ comb
@@ -287,19 +274,12 @@ def comb_sources(sources):
     return made
 
 
-class CombCommand:
+class CombCommand(_Command):
     """Curvature comb of the selected Elastica results or edges."""
 
-    def GetResources(self):
-        return {"Pixmap": icon("comb"), "MenuText": "Curvature comb",
-                "ToolTip": "A parametric curvature comb along the selected Elastica results "
-                           "or edges"}
-
-    def IsActive(self):
-        return App.ActiveDocument is not None
-
-    def Activated(self):
-        _guarded(comb_sources)
+    pixmap, menu = "comb", "Curvature comb"
+    tip = ("A parametric curvature comb along the selected Elastica results or edges")
+    run = staticmethod(comb_sources)
 
 
 COMMANDS = {"Elastica_Fit": FitCommand, "Elastica_FitCsv": FitCsvCommand,
