@@ -32,6 +32,28 @@ class _Panel:
         self.result.setWordWrap(True)
         self.result.setTextInteractionFlags(QtCore.Qt.TextSelectableByMouse)
 
+    def _tolerance_row(self, L):
+        """The B-spline tolerance, edited live."""
+        self.tol = QtGui.QDoubleSpinBox()
+        self.tol.setRange(1e-7, 100.0)
+        self.tol.setDecimals(7)
+        self.tol.setSuffix(" mm")
+        self.tol.setValue(self.obj.Tolerance)
+        self.tol.editingFinished.connect(lambda: self._set("Tolerance", self.tol.value()))
+        L.addRow("B-spline tolerance", self.tol)
+
+    def _output_rows(self, L, exclude, new_label):
+        """Keep the feature or not; write its B-spline into a sketch (not those in exclude)."""
+        self.keep = QtGui.QCheckBox("Keep the parametric feature")
+        self.keep.setChecked(True)
+        L.addRow(self.keep)
+        self.sketch = QtGui.QComboBox()
+        self.sketch.addItem("(none)", "")
+        for sk in _sketches(self.doc, exclude):
+            self.sketch.addItem(sk.Label, sk.Name)
+        self.sketch.addItem(new_label, "*new*")
+        L.addRow("Write B-spline into", self.sketch)
+
     def getStandardButtons(self):
         return int(QtGui.QDialogButtonBox.Ok | QtGui.QDialogButtonBox.Cancel)
 
@@ -83,7 +105,7 @@ class FitPanel(_Panel):
         self.split.setChecked(obj.SplitAtInflection)
         self.split.toggled.connect(lambda v: self._set("SplitAtInflection", bool(v)))
         L.addRow(self.split)
-        self.pin = QtGui.QCheckBox("Pin the ends to the first and last points")
+        self.pin = QtGui.QCheckBox("Pin the start to the first point")
         self.pin.setChecked(obj.PinEnds)
         self.pin.toggled.connect(lambda v: self._set("PinEnds", bool(v)))
         L.addRow(self.pin)
@@ -95,28 +117,14 @@ class FitPanel(_Panel):
         self.step.setValue(obj.ResampleStep)
         self.step.editingFinished.connect(lambda: self._set("ResampleStep", self.step.value()))
         L.addRow("Resampling step", self.step)
-        self.tol = QtGui.QDoubleSpinBox()
-        self.tol.setRange(1e-7, 100.0)
-        self.tol.setDecimals(7)
-        self.tol.setSuffix(" mm")
-        self.tol.setValue(obj.Tolerance)
-        self.tol.editingFinished.connect(lambda: self._set("Tolerance", self.tol.value()))
-        L.addRow("B-spline tolerance", self.tol)
+        self._tolerance_row(L)
         self.degree = QtGui.QSpinBox()
         self.degree.setRange(3, 7)
         self.degree.setValue(obj.Degree)
         self.degree.valueChanged.connect(lambda v: self._set("Degree", int(v)))
         L.addRow("B-spline degree", self.degree)
-        self.keep = QtGui.QCheckBox("Keep the parametric feature")
-        self.keep.setChecked(True)
-        L.addRow(self.keep)
-        self.sketch = QtGui.QComboBox()
-        self.sketch.addItem("(none)", "")
-        sources = [o.Name for o, _ in obj.Source]   # writing there would feed the fit itself
-        for s in _sketches(self.doc, sources):
-            self.sketch.addItem(s.Label, s.Name)
-        self.sketch.addItem("(new sketch in the fit plane)", "*new*")
-        L.addRow("Write B-spline into", self.sketch)
+        # not into a source sketch: writing there would feed the fit its own output
+        self._output_rows(L, [o.Name for o, _ in obj.Source], "(new sketch in the fit plane)")
         L.addRow(self.result)
         self.show_result()
 
@@ -278,22 +286,8 @@ class EllipticBlendPanel(_Panel):
         self.d.setValue(obj.D)
         self.d.editingFinished.connect(lambda: self._set("D", self.d.value()))
         L.addRow("End derivative d", self.d)
-        self.tol = QtGui.QDoubleSpinBox()
-        self.tol.setRange(1e-7, 100.0)
-        self.tol.setDecimals(7)
-        self.tol.setSuffix(" mm")
-        self.tol.setValue(obj.Tolerance)
-        self.tol.editingFinished.connect(lambda: self._set("Tolerance", self.tol.value()))
-        L.addRow("B-spline tolerance", self.tol)
-        self.keep = QtGui.QCheckBox("Keep the parametric feature")
-        self.keep.setChecked(True)
-        L.addRow(self.keep)
-        self.sketch = QtGui.QComboBox()
-        self.sketch.addItem("(none)", "")
-        for sk in _sketches(self.doc):
-            self.sketch.addItem(sk.Label, sk.Name)
-        self.sketch.addItem("(new sketch in the curve's plane)", "*new*")
-        L.addRow("Write B-spline into", self.sketch)
+        self._tolerance_row(L)
+        self._output_rows(L, (), "(new sketch in the curve's plane)")
         L.addRow(self.result)
         self.show_result()
 
