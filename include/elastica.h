@@ -48,7 +48,7 @@ const char *el_version(void);
  * Jacobi elliptic functions of argument u and modulus k, for every k >= 0.
  * k > 1 uses the reciprocal-modulus transformation
  *   sn(u,k) = sn(ku,1/k)/k,  cn(u,k) = dn(ku,1/k),  dn(u,k) = cn(ku,1/k);
- * k = 1 gives sn = tanh, cn = dn = sech. GSL (parameter m = k^2 <= 1) inside.
+ * k = 1 gives sn = tanh, cn = dn = sech. The AGM and GSL's Carlson integrals inside.
  *   am  amplitude: for k <= 1 the continuous angle with sn = sin am, cn = cos am
  *       (increasing, am(u+2K) = am(u)+pi); for k > 1, atan2(sn, cn), in (-pi/2, pi/2);
  *   E   Jacobi epsilon E(u) = integral_0^u dn^2(t,k) dt (= E(am u, k) for k <= 1);

@@ -2,9 +2,11 @@
  * Jacobi elliptic functions sn, cn, dn, am, E, D for every modulus k >= 0,
  * with derivatives in u and k.
  *
- * GSL gives sn, cn, dn for m = k^2 <= 1 and Carlson's R_D; it has neither the
- * Jacobi epsilon function nor derivatives in the modulus, so those are built
- * here from the integrals (amplitude phi = am u, Delta = dn u):
+ * sn, cn, dn come from the AGM with the complementary modulus passed exactly
+ * (jacobi_agm: GSL's elljac takes only m = k^2, which loses digits near k = 1);
+ * GSL gives Carlson's R_F and R_D. GSL has neither the Jacobi epsilon function
+ * nor derivatives in the modulus, so those are built here from the integrals
+ * (amplitude phi = am u, Delta = dn u):
  *   D(phi) = int_0^phi sin^2/Delta   = (sin^3 phi / 3) R_D(cos^2, Delta^2, 1)   (DLMF 19.25.13)
  *   J(phi) = int_0^phi sin^2/Delta^3 = (sin^3 phi / 3) R_D(cos^2, 1, Delta^2)
  *   L(phi) = int_0^phi sin^4/Delta^3 = (J - D)/k^2   (series in k^2 for small k)
@@ -15,7 +17,6 @@
 #include "internal.h"
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_math.h>
-#include <gsl/gsl_sf_elljac.h>
 #include <gsl/gsl_sf_ellint.h>
 
 /* Below this k, L = (J - D)/k^2 loses more than two digits: use its series. */
