@@ -32,6 +32,14 @@ class _Panel:
         self.result.setWordWrap(True)
         self.result.setTextInteractionFlags(QtCore.Qt.TextSelectableByMouse)
 
+    def _check_row(self, L, text, prop):
+        """A check box bound live to the boolean property prop."""
+        box = QtGui.QCheckBox(text)
+        box.setChecked(getattr(self.obj, prop))
+        box.toggled.connect(lambda v: self._set(prop, bool(v)))
+        L.addRow(box)
+        return box
+
     def _tolerance_row(self, L):
         """The B-spline tolerance, edited live."""
         self.tol = QtGui.QDoubleSpinBox()
@@ -101,14 +109,8 @@ class FitPanel(_Panel):
         self.model.currentIndexChanged.connect(
             lambda i: self._set("Model", ["discrete", "smooth"][i]))
         L.addRow("Model", self.model)
-        self.split = QtGui.QCheckBox("Split the keyline at its inflection")
-        self.split.setChecked(obj.SplitAtInflection)
-        self.split.toggled.connect(lambda v: self._set("SplitAtInflection", bool(v)))
-        L.addRow(self.split)
-        self.pin = QtGui.QCheckBox("Pin the start to the first point")
-        self.pin.setChecked(obj.PinEnds)
-        self.pin.toggled.connect(lambda v: self._set("PinEnds", bool(v)))
-        L.addRow(self.pin)
+        self.split = self._check_row(L, "Split the keyline at its inflection", "SplitAtInflection")
+        self.pin = self._check_row(L, "Pin the start to the first point", "PinEnds")
         self.step = QtGui.QDoubleSpinBox()
         self.step.setRange(0.0, 1e6)
         self.step.setDecimals(4)
@@ -183,14 +185,10 @@ class BlendPanel(_Panel):
         self.value.setValue(obj.Length if obj.Mode == "length" else obj.Tension)
         self.value.editingFinished.connect(self._value)
         L.addRow("Length (0 = auto) / tension", self.value)
-        self.end1 = QtGui.QCheckBox("Leave the first edge at its end vertex (else its start)")
-        self.end1.setChecked(obj.AtEnd1)
-        self.end1.toggled.connect(lambda v: self._set("AtEnd1", bool(v)))
-        L.addRow(self.end1)
-        self.end2 = QtGui.QCheckBox("Enter the second edge at its end vertex (else its start)")
-        self.end2.setChecked(obj.AtEnd2)
-        self.end2.toggled.connect(lambda v: self._set("AtEnd2", bool(v)))
-        L.addRow(self.end2)
+        self.end1 = self._check_row(
+            L, "Leave the first edge at its end vertex (else its start)", "AtEnd1")
+        self.end2 = self._check_row(
+            L, "Enter the second edge at its end vertex (else its start)", "AtEnd2")
         self.list = QtGui.QListWidget()
         self.list.setToolTip("All elastic curves for these ends, by bending energy; pick one "
                              "to preview it")
