@@ -68,7 +68,7 @@ $(BUILD)/libelastica.a: $(LIB_OBJ)
 
 $(BUILD)/tests/%: tests/c/%.c tests/c/testutil.h $(BUILD)/libelastica.a
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS_BASE) $(DEPS_CFLAGS) $(EXTRA_CFLAGS) -Itests/c $< -o $@ $(BUILD)/libelastica.a $(CHECK_LIBS) $(DEPS_LIBS)
+	$(CC) $(CFLAGS_BASE) $(DEPS_CFLAGS) $(EXTRA_CFLAGS) -Itests/c -Ilibelastica $< -o $@ $(BUILD)/libelastica.a $(CHECK_LIBS) $(DEPS_LIBS)
 
 check-c: lib $(TEST_BIN)
 	@set -e; for t in $(TEST_BIN); do echo "== $$t"; (cd tests/c && $(CURDIR)/$$t); done

@@ -486,7 +486,7 @@ typedef struct el_hermite_options {
     double sigma;          /* tension, 1/length^2 (tension mode); default 0 (pure bending) */
     double length;         /* prescribed arc length > 0 (length mode); default 0 (unset) */
     double tol;            /* accepted end residual: position / |p1-p0| and tangent angle (rad); default 1e-10 */
-    int samples;           /* bracketing samples over the whole search interval (each subinterval gets its share + 2), 4..1000; default 16 */
+    int samples;           /* bracketing samples over the whole search interval (each subinterval gets its share + 2, then refinement), 4..1000; default 12 */
     int grid;              /* length mode: number of sigma lines of the search, 8..2000; default 72 */
     size_t max_solutions;  /* at most this many solutions are kept (lowest energy); default 64 */
 } el_hermite_options;
@@ -517,7 +517,7 @@ typedef struct el_hermite_result {
     el_hermite_solution *solutions; /* count entries, library-owned */
 } el_hermite_result;
 
-/* Defaults: tension mode, sigma = 0, tol 1e-10, samples 16, grid 72, max_solutions 64. */
+/* Defaults: tension mode, sigma = 0, tol 1e-10, samples 12, grid 72, max_solutions 64. */
 void el_hermite_options_defaults(el_hermite_options *opt);
 
 /*
@@ -530,13 +530,13 @@ void el_hermite_options_defaults(el_hermite_options *opt);
  * Brent's method on each. Length mode follows the tension solutions along
  * sigma (all tension solutions on grid lines sigma_j, then Newton on (kappa0, sigma)). A count of 0 with EL_OK
  * means no such curve exists (e.g. sigma very negative).
- * Completeness: the bracketing samples each subinterval, so two zeros of an
- * objective closer than the sample spacing can be missed unless a parabola
- * through the samples predicts them or the middle sample's |f| is below half its
- * neighbours' (measured on the 10 000 bench problems, sigma |p1-p0|^2 uniform in
- * [-10, 40]: 12 of the 25 256 solutions found with 300 samples are missed with
- * the default 16; with sigma |p1-p0|^2 in [0, 5]: 82 of 27 000. Raise
- * opt->samples where completeness matters more than time).
+ * Completeness: the bracketing samples each subinterval, then bisects where the
+ * samples leave room for two zeros of a convex objective (seed 004 §5 observes
+ * convexity between two zeros), and checks local minima of |f| by minimisation;
+ * two zeros closer than that can still be missed (measured on the 10 000 bench
+ * problems, sigma |p1-p0|^2 uniform in [-10, 40]: 1 of the 25 264 solutions found
+ * with 300 samples is missed with the default 12; with sigma |p1-p0|^2 in [0, 5]:
+ * 38 of 26 810. Raise opt->samples where completeness matters more than time).
  * Every solution is verified with el_smooth_eval and kept only if its residual
  * is <= opt->tol (after a Newton polish on the parameters when it misses by a
  * little, then a second one with k held at each of its nearest doubles).

@@ -42,119 +42,95 @@
 /* 4 sqrt(2) K(1/sqrt 2): the period times kappa_m of the sigma = 0 elastica. */
 #define C0_PERIOD 10.4882572784299
 #define MAXPTS 64
+/* el__carlson_fd's precision for the bracketing samples: ~1e-8 relative (ellint.c) */
+#define COARSE_QS 0.1
 
 /* ------------------------------------------------------------ elliptic helpers */
 
-/* Carlson's R_F(x, y, z) and R_D(x, y, z) together by the duplication theorem
- * (Carlson 1995, DLMF 19.36.1-2): both integrals share the duplicated arguments.
- * Written by hand because this is the inner loop of every objective evaluation
- * and GSL's gsl_sf_ellint_RF_e/RD_e (error estimates, argument checks, one
- * duplication loop each) cost about five times as much; agrees with GSL to 1e-15
- * relative (checked on 2e5 random arguments while writing; the end-condition
- * tests check it indirectly, every solution being verified by smooth.c).
- * x, y, z >= 0, at most one of x, y zero, z > 0. */
-static void carlson_fd(double x, double y, double z, double qs, double *rf, double *rd)
+/* F(mu, k) and D(mu, k) = int_0^mu sin^2 t / sqrt(1 - k^2 sin^2 t) dt for an amplitude
+ * mu in [0, 2 pi] given by S = sin mu, C = cos mu and big = (mu > pi) (which S and C
+ * leave open at S = 0), k^2 and kc2 = 1 - k^2 formed without cancellation by the
+ * caller (k < 1, or k = 1 with mu < pi/2). The argument U = F(mu) is halved, at most
+ * twice, until its amplitude is at most pi/2, by the half-argument formulas
+ * (DLMF 22.6.19)
+ *   sn^2(U/2) = (1 - cn U) / (1 + dn U),  cn^2(U/2) = (dn U + cn U) / (1 + dn U),
+ * in the forms without cancellation 1 - cn = sn^2 / (1 + cn) and
+ * dn + cn = k'^2 sn^2 / (dn - cn), with dn^2 = k'^2 + k^2 cn^2, and the doubling
+ * D(2v) = 2 D(v) + sn^2 v sn 2v (the addition theorem for D, jacobi.c). Then
+ * F = S R_F(C^2, dn^2, 1), D = S^3 R_D(C^2, dn^2, 1) / 3 (DLMF 19.25.5, 19.25.13): no
+ * complete integral is needed. */
+typedef struct {
+    double S, x, y;       /* sine of the reduced amplitude; Carlson's x = cos^2, y = dn^2 */
+    double mult, acc;     /* F = mult S R_F(x, y, 1), D = mult S^3 R_D(x, y, 1) / 3 + acc */
+} reduced_amp;
+
+static void amp_reduce(double S, double C, int big, double k2, double kc2, reduced_amp *r)
 {
-    const double AF0 = (x + y + z) / 3.0, AD0 = (x + y + 3.0 * z) / 5.0;
-    const double x0 = x, y0 = y;
-    /* Q = (3r)^(-1/6) max|A0 - .| for R_F and (r/4)^(-1/6) max|A0 - .| for R_D, r = 1e-16;
-     * qs = 1, or qs = 0.1 for r = 1e-10 (the coarse samples, see fobj_coarse) */
-    const double QF = qs * 2.4e2 * fmax(fabs(AF0 - x), fmax(fabs(AF0 - y), fabs(AF0 - z)));
-    const double QD = qs * 5.2e2 * fmax(fabs(AD0 - x), fmax(fabs(AD0 - y), fabs(AD0 - z)));
-    double AF = AF0, AD = AD0, f4 = 1.0, sum = 0.0;
-    while (f4 * QF >= fabs(AF) || f4 * QD >= fabs(AD)) {
-        const double sx = sqrt(x), sy = sqrt(y), sz = sqrt(z);
-        const double lam = sx * sy + sx * sz + sy * sz;
-        sum += f4 / (sz * (z + lam));
-        AF = 0.25 * (AF + lam);
-        AD = 0.25 * (AD + lam);
-        x = 0.25 * (x + lam);
-        y = 0.25 * (y + lam);
-        z = 0.25 * (z + lam);
-        f4 *= 0.25;
+    double mult = 1.0, acc = 0.0;
+    for (int h = 0; h < 2 && (big || C < 0.0 || S < 0.0); h++) {
+        /* one division: inv = 1 / ((1 + dn) q), q = 1 + C or dn - C */
+        const double dn = sqrt(kc2 + k2 * C * C), q = C > 0.0 ? 1.0 + C : dn - C;
+        const double inv = 1.0 / ((1.0 + dn) * q);
+        const double s2 = C > 0.0 ? S * S * inv : (1.0 - C) * q * inv;
+        const double c2 = C < 0.0 ? kc2 * S * S * inv : (dn + C) * q * inv;
+        acc += mult * s2 * S;
+        mult *= 2.0;
+        S = sqrt(s2);                          /* sn(U/2) >= 0: U/2 in (0, 2K] */
+        C = big ? -sqrt(c2) : sqrt(c2);        /* cn(U/2) < 0 iff U/2 > K */
+        big = 0;
     }
-    {
-        const double X = f4 * (AF0 - x0) / AF, Y = f4 * (AF0 - y0) / AF, Z = -X - Y;
-        const double E2 = X * Y - Z * Z, E3 = X * Y * Z;
-        *rf = (1.0 - E2 / 10.0 + E3 / 14.0 + E2 * E2 / 24.0 - 3.0 * E2 * E3 / 44.0) / sqrt(AF);
-    }
-    {
-        const double X = f4 * (AD0 - x0) / AD, Y = f4 * (AD0 - y0) / AD, Z = -(X + Y) / 3.0;
-        const double XY = X * Y, Z2 = Z * Z;
-        const double E2 = XY - 6.0 * Z2, E3 = (3.0 * XY - 8.0 * Z2) * Z;
-        const double E4 = 3.0 * (XY - Z2) * Z2, E5 = XY * Z2 * Z;
-        *rd = f4 / (AD * sqrt(AD)) *
-                  (1.0 - 3.0 * E2 / 14.0 + E3 / 6.0 + 9.0 * E2 * E2 / 88.0 - 3.0 * E4 / 22.0 -
-                   9.0 * E2 * E3 / 52.0 + 3.0 * E5 / 26.0) + 3.0 * sum;
-    }
+    r->S = S;
+    r->x = C * C;
+    r->y = kc2 + k2 * C * C;
+    r->mult = mult;
+    r->acc = acc;
 }
 
-/* F(alpha, k) and D(alpha, k) = int_0^alpha sin^2 t / sqrt(1 - k^2 sin^2 t) dt for
- * every real alpha (k < 1, or k = 1 with |alpha| < pi/2):
- * F = s R_F(c^2, 1 - k^2 s^2, 1), D = s^3 R_D(c^2, 1 - k^2 s^2, 1) / 3 on
- * |alpha| <= pi/2, and the quasi-periods 2 Kc, 2 Dc. */
-static int ell_fd(double alpha, double sa, double ca, double k, double Kc, double Dc, double qs,
-                  double *F, double *D)
+static int amp_fd(const reduced_amp *r, double rf, double rd, double *F, double *D)
 {
-    /* alpha = n pi + b, |b| <= pi/2: sin b = (-1)^n sin alpha, cos^2 b = cos^2 alpha */
-    const double n = nearbyint(alpha / M_PI);
-    const double s = fmod(n, 2.0) != 0.0 ? -sa : sa, c2 = ca * ca, s2 = s * s;
-    const double y = 1.0 - k * k * s2;
-    double rf, rd;
-    if (!(y > 0.0) && !(c2 > 0.0)) return EL_EDOM;
-    carlson_fd(c2, y, 1.0, qs, &rf, &rd);
-    *F = s * rf + 2.0 * n * Kc;
-    *D = s * s2 * rd / 3.0 + 2.0 * n * Dc;
+    *F = r->mult * r->S * rf;
+    *D = r->mult * r->S * r->S * r->S * rd / 3.0 + r->acc;
     return (isfinite(*F) && isfinite(*D)) ? EL_OK : EL_EDOM;
 }
 
-/* sin and cos of h = atan2(S, C) / 2 in (-pi/2, pi/2], R = hypot(S, C) > 0, by the
- * half-angle formulas (no atan2, sin, cos in the objective's inner loop). */
-static void half_angle(double S, double C, double R, double *sh, double *ch)
+static int ell_fd_amp(double S, double C, int big, double k2, double kc2, double qs,
+                      double *F, double *D)
+{
+    reduced_amp r;
+    double rf, rd;
+    amp_reduce(S, C, big, k2, kc2, &r);
+    const int rc = el__carlson_fd(r.x, r.y, 1.0, qs, &rf, &rd);
+    return rc ? rc : amp_fd(&r, rf, rd, F, D);
+}
+
+/* The amplitude mu = am(u1 - u0) of a difference of arguments by the addition
+ * theorems (DLMF 22.8.1-3), from the amplitudes a0, a1 of u0, u1 (sines s, cosines c,
+ * delta amplitudes d = sqrt(1 - k^2 s^2)), den = 1 - k^2 s0^2 s1^2 = d0^2 + k^2 s0^2 c1^2
+ * (the sum has no cancellation):
+ *   sin mu = (s1 c0 d0 - s0 c1 d1) / den,  cos mu = (c1 c0 + s1 s0 d1 d0) / den.
+ * Then F(a1) - F(a0) = F(mu) and, by the addition theorem for E (DLMF 19.11.2)
+ * with D = (F - E)/k^2, D(a1) - D(a0) = D(mu) + s1 s0 sin mu: one incomplete
+ * integral per difference instead of two, and no cancellation between them. */
+static void amplitude_difference(double k2, double s0, double c0, double d0, double s1,
+                                 double c1, double d1, double *smu, double *cmu)
+{
+    const double iden = 1.0 / (d0 * d0 + k2 * s0 * s0 * c1 * c1);
+    *smu = (s1 * c0 * d0 - s0 * c1 * d1) * iden;
+    *cmu = (c1 * c0 + s1 * s0 * d1 * d0) * iden;
+}
+
+/* sin and cos of h = atan2(S, C) / 2 in (-pi/2, pi/2], iR = 1 / hypot(S, C), by the
+ * half-angle formulas (no atan2, sin, cos in the objective's inner loop; sqrt and
+ * division are what it costs, so each is used once). */
+static void half_angle(double S, double C, double iR, double *sh, double *ch)
 {
     if (C >= 0.0) {
-        *ch = sqrt(0.5 * (1.0 + C / R));
-        *sh = S / (2.0 * R * *ch);
+        *ch = sqrt(0.5 * (1.0 + C * iR));
+        *sh = 0.5 * S * iR / *ch;
     } else {
-        *sh = (S >= 0.0 ? 1.0 : -1.0) * sqrt(0.5 * (1.0 - C / R));
-        *ch = S / (2.0 * R * *sh);
+        *sh = (S >= 0.0 ? 1.0 : -1.0) * sqrt(0.5 * (1.0 - C * iR));
+        *ch = 0.5 * S * iR / *sh;
     }
-}
-
-/* Complete integrals Kc = F(pi/2, k), Dc = D(pi/2, k), k < 1, by the AGM (quadratic
- * convergence, one sqrt per step; three times cheaper than R_F and R_D here):
- * a0 = 1, b0 = k', c0 = k, c_{n+1} = c_n^2 / (4 a_{n+1}), K = pi / (2 a_N), and
- * K - E = K sum 2^(n-1) c_n^2, so Dc = (K - E)/k^2 = K sum 2^(n-1) (c_n/k)^2 with
- * c_n / k carried along (no cancellation as k -> 0). */
-static int ell_complete(double k, double *Kc, double *Dc)
-{
-    const double kp2 = 1.0 - k * k;
-    if (!(kp2 > 0.0) || !(k >= 0.0)) return EL_EDOM;
-    double a = 1.0, b = sqrt(kp2), c = k, ct = 1.0, w = 0.5, sum = 0.5; /* ct = c_n / k */
-    /* stop at |a - b| <= 1e-9 a: one more step is then exact to rounding (quadratic
-     * convergence); it is taken without the sqrt, b being irrelevant after it */
-    for (int n = 0; n < 40; n++) {
-        const double an = 0.5 * (a + b);
-        ct = c * ct / (4.0 * an);   /* c_{n+1}/k = c_n (c_n/k) / (4 a_{n+1}) */
-        c = c * c / (4.0 * an);
-        w *= 2.0;
-        sum += w * ct * ct;
-        const int last = fabs(a - b) <= 1e-9 * a;
-        b = sqrt(a * b);
-        a = an;
-        if (last) break;
-    }
-    *Kc = M_PI / (2.0 * a);
-    *Dc = *Kc * sum;
-    return EL_OK;
-}
-
-/* x reduced into (0, period]. */
-static double wrap_pos(double x, double period)
-{
-    double r = fmod(x, period);
-    if (r <= 0.0) r += period;
-    return r;
 }
 
 static double wrap_pi(double a) /* into (-pi, pi] */
@@ -179,7 +155,9 @@ typedef struct hstate {
     double k0, k0p, k1, k1p;   /* kappa0, kappa0', kappa1, kappa1' */
     double Fn, km2;            /* |F|, kappa_m^2 */
     int infl;                  /* inflectional (k < 1) */
-    double L, T, E;            /* length, period, energy */
+    double s0, c0, s1, c1;     /* inflectional: sn, cn of u at both ends */
+    int big;                   /* inflectional: u(L) - u(0) exceeds half a period (2 Kc) */
+    double L, E;               /* length, energy */
     double f;                  /* objective */
 } hstate;
 
@@ -230,10 +208,18 @@ static int curvdata(const hprob *pr, double x, int b, hstate *st)
     return isfinite(k1) && isfinite(k0p) ? EL_OK : EL_EDOM;
 }
 
+/* What shape_finish needs besides the two Carlson integrals of the reduced amplitude:
+ * L = Lscale F, E = Escale (F - Dfac (D + prod)), f = (E - sigma L - FP) iFn. */
+typedef struct {
+    reduced_amp ra;
+    double Lscale, Escale, Dfac, prod, FP, iFn;
+} shapework;
+
 /* Theorem 7 and its supplement: the curvature function through (kappa0, kappa0')
- * reaches (kappa1, kappa1') at a unique L in (0, T]; then length, energy and
- * the objective f. */
-static int shape_eval(const hprob *pr, double qs, hstate *st)
+ * reaches (kappa1, kappa1') at a unique L in (0, T]; then length, energy and the
+ * objective f, in two halves around the one Carlson R_F/R_D evaluation of the
+ * reduced amplitude (shape_eval). */
+static int shape_prepare(const hprob *pr, hstate *st, shapework *w)
 {
     const double s = pr->sigma;
     const double F1 = -2.0 * st->k0p, F2 = st->k0 * st->k0 - s;
@@ -242,56 +228,83 @@ static int shape_eval(const hprob *pr, double qs, hstate *st)
     if (!(Fn > 1e-13 * (1.0 + fabs(s)))) return EL_EDOM; /* circle (kappa_m^2 = sigma), (45) */
     const double km2 = Fn + s;
     if (!(km2 > 0.0)) return EL_EDOM;                    /* kappa = 0: straight, handled apart */
-    const double k2 = km2 / (2.0 * Fn), rmu = sqrt(0.5 * Fn);
+    /* k^2 = kappa_m^2 / (2 |F|) and its complement, exact up to the one difference
+     * |F| - sigma, which is the separatrix distance itself */
+    const double i2F = 0.5 / Fn, k2 = km2 * i2F, kc2 = (Fn - s) * i2F, rmu = sqrt(0.5 * Fn);
     /* h = (theta - phi)/2 at both ends: theta - phi = atan2(-2 kappa', kappa^2 - sigma) */
     const double S1 = -2.0 * st->k1p, C1 = st->k1 * st->k1 - s;
-    double sh0, ch0, sh1, ch1;
-    half_angle(F1, F2, Fn, &sh0, &ch0);
-    half_angle(S1, C1, sqrt(S1 * S1 + C1 * C1), &sh1, &ch1);
-    double L, T, E;
-    int rc;
-    if (k2 < 1.0) {
-        /* amplitude of u: sin = sin h / k = sqrt(2|F|) sin h / kappa_m, cos = kappa / kappa_m */
-        const double k = sqrt(k2), sF = sqrt(2.0 * Fn), km = sqrt(km2);
-        double Kc, Dc, Fa, Da, Fb, Db;
-        if ((rc = ell_complete(k, &Kc, &Dc))) return rc;
-        const double s0 = sF * sh0 / km, c0 = st->k0 / km, s1 = sF * sh1 / km, c1 = st->k1 / km;
-        const double al0 = atan2(s0, c0);
-        const double al1 = al0 + wrap_pos(atan2(s1, c1) - al0, 2.0 * M_PI);
-        if ((rc = ell_fd(al0, s0, c0, k, Kc, Dc, qs, &Fa, &Da)) ||
-            (rc = ell_fd(al1, s1, c1, k, Kc, Dc, qs, &Fb, &Db)))
-            return rc;
-        const double du = Fb - Fa;                       /* u(L) - u(0) */
-        L = du / rmu;
-        T = 4.0 * Kc / rmu;
-        E = km2 / rmu * (du - (Db - Da));                /* int cn^2 du = u - int sn^2 du */
+    double sh0, ch0, sh1, ch1, smu, cmu;
+    half_angle(F1, F2, 2.0 * i2F, &sh0, &ch0);
+    half_angle(S1, C1, 1.0 / sqrt(S1 * S1 + C1 * C1), &sh1, &ch1);
+    if (kc2 > 0.0) {
+        /* amplitude a of u: sin a = sn u = sin h / k, cos a = cn u = kappa / kappa_m,
+         * delta amplitude dn u = cos h. L in (0, T] is u1 - u0 in (0, 4 Kc], whose
+         * amplitude mu is in (0, 2 pi]; sin mu = 0 with cos mu > 0 is a whole period
+         * (the end state repeats the start) */
+        const double ikm = 1.0 / sqrt(km2), ik = 2.0 * rmu * ikm;   /* 1/k = sqrt(2 |F|) / kappa_m */
+        const double s0 = sh0 * ik, c0 = st->k0 * ikm, s1 = sh1 * ik, c1 = st->k1 * ikm;
+        amplitude_difference(k2, s0, c0, ch0, s1, c1, ch1, &smu, &cmu);
+        const int big = smu < 0.0 || (smu == 0.0 && cmu > 0.0);
+        amp_reduce(smu, cmu, big, k2, kc2, &w->ra);
+        st->s0 = s0;        /* for make_solution's inflection count */
+        st->c0 = c0;
+        st->s1 = s1;
+        st->c1 = c1;
+        st->big = big;
+        /* F = u(L) - u(0), D + prod = int_u0^u1 sn^2, int cn^2 du = u - int sn^2 du */
+        const double irmu = 1.0 / rmu;
+        w->Lscale = irmu;
+        w->Escale = km2 * irmu;
+        w->Dfac = 1.0;
+        w->prod = s1 * s0 * smu;
     } else {
         /* non-inflectional: kappa keeps its sign, Theorem 7 (ii) needs kappa0 kappa1 > 0 (44);
-         * am(k u; 1/k) = h (the sign eps of kappa mirrors the curve) */
+         * amplitude b of v = k u for the modulus m = 1/k: sin b = eps sin h, cos b = cos h,
+         * delta amplitude |kappa| / kappa_m (eps = sign of kappa mirrors the curve). L in
+         * (0, T] is v1 - v0 in (0, 2 Kc], amplitude mu in (0, pi]: (sin, cos) of mu are
+         * known up to a common sign (b is defined mod pi), fixed by sin mu >= 0; sin mu = 0
+         * is a whole period (the end state repeats the start) */
         if (!(st->k0 * st->k1 > 0.0)) return EL_EDOM;
-        const double eps = st->k0 > 0.0 ? 1.0 : -1.0, m = sqrt(1.0 / k2), kk = sqrt(k2);
-        double Kc, Dc, Fa, Da, Fb, Db;
-        if ((rc = ell_complete(m, &Kc, &Dc))) return rc;
-        const double b0 = eps * atan2(sh0, ch0), e1 = eps * atan2(sh1, ch1);
-        const double b1 = b0 + wrap_pos(e1 - b0, M_PI);
-        /* b1 = e1 + j pi: sin b1 = (-1)^j sin e1 (the sign is fixed inside ell_fd) */
-        const double j = nearbyint((b1 - e1) / M_PI), sg = fmod(j, 2.0) != 0.0 ? -1.0 : 1.0;
-        if ((rc = ell_fd(b0, eps * sh0, ch0, m, Kc, Dc, qs, &Fa, &Da)) ||
-            (rc = ell_fd(b1, sg * eps * sh1, ch1, m, Kc, Dc, qs, &Fb, &Db)))
-            return rc;
-        const double dv = Fb - Fa, w = kk * rmu;         /* v = k u, dv/ds = k sqrt(mu) */
-        L = dv / w;
-        T = 2.0 * Kc / w;
-        E = km2 / w * (dv - m * m * (Db - Da));          /* int dn^2 dv = F - m^2 D */
+        const double eps = st->k0 > 0.0 ? 1.0 : -1.0, km = sqrt(km2);
+        const double m2 = 2.0 * Fn / km2, mc2 = (s - Fn) / km2;
+        const double b0 = eps * sh0, b1 = eps * sh1;
+        amplitude_difference(m2, b0, ch0, fabs(st->k0) / km, b1, ch1, fabs(st->k1) / km, &smu, &cmu);
+        /* the product b1 b0 sin mu is the same for either sign choice */
+        w->prod = b1 * b0 * smu;
+        if (smu < 0.0 || (smu == 0.0 && cmu > 0.0)) { smu = -smu; cmu = -cmu; }
+        amp_reduce(smu, cmu, 0, m2, mc2, &w->ra);
+        /* F = v(L) - v(0), dv/ds = k sqrt(mu); int dn^2 dv = F - m^2 D */
+        const double iw = 1.0 / (sqrt(k2) * rmu);
+        w->Lscale = iw;
+        w->Escale = km2 * iw;
+        w->Dfac = m2;
     }
     st->Fn = Fn;
     st->km2 = km2;
-    st->infl = k2 < 1.0;
-    st->L = L;
-    st->T = T;
-    st->E = E;
-    st->f = (E - s * L - (F1 * pr->P1 + F2 * pr->P2)) / Fn;   /* (12) along F */
-    return isfinite(st->f) && L > 0.0 ? EL_OK : EL_EDOM;
+    st->infl = kc2 > 0.0;
+    w->FP = F1 * pr->P1 + F2 * pr->P2;
+    w->iFn = 2.0 * i2F;
+    return EL_OK;
+}
+
+static int shape_finish(const hprob *pr, const shapework *w, double rf, double rd, hstate *st)
+{
+    double F, D;
+    const int rc = amp_fd(&w->ra, rf, rd, &F, &D);
+    if (rc) return rc;
+    st->L = w->Lscale * F;
+    st->E = w->Escale * (F - w->Dfac * (D + w->prod));
+    st->f = (st->E - pr->sigma * st->L - w->FP) * w->iFn;   /* (12) along F */
+    return isfinite(st->f) && st->L > 0.0 ? EL_OK : EL_EDOM;
+}
+
+static int shape_eval(const hprob *pr, double qs, hstate *st)
+{
+    shapework w;
+    double rf, rd;
+    int rc = shape_prepare(pr, st, &w);
+    if (!rc) rc = el__carlson_fd(w.ra.x, w.ra.y, 1.0, qs, &rf, &rd);
+    return rc ? rc : shape_finish(pr, &w, rf, rd, st);
 }
 
 static int full_eval(const hprob *pr, double x, int b, hstate *st)
@@ -307,7 +320,7 @@ static double period_infl(double km, double sigma)
 {
     const double Fn = km * km - sigma, k = sqrt(km * km / (2.0 * Fn));
     double K, D;
-    if (ell_complete(k, &K, &D)) return NAN;   /* the AGM: cheaper than gsl_sf_ellint_Kcomp_e */
+    if (el__ellint_complete(k, (Fn - sigma) / (2.0 * Fn), &K, &D)) return NAN;   /* the AGM: cheaper than GSL's Kcomp */
     return 4.0 * K / sqrt(0.5 * Fn);
 }
 
@@ -344,8 +357,9 @@ static int kappa_bound(double sigma, double Lmin, double *B)
     for (int it = 0; it < 200; it++) {
         if (gsl_root_fsolver_iterate(s) != GSL_SUCCESS) break;
         double a = gsl_root_fsolver_x_lower(s), b = gsl_root_fsolver_x_upper(s);
-        if (gsl_root_test_interval(a, b, 0.0, 1e-12) == GSL_SUCCESS) break;
+        if (gsl_root_test_interval(a, b, 0.0, 1e-3) == GSL_SUCCESS) break;
     }
+    /* the bracket's upper end has T < Lmin: a bound whatever the bracket's width */
     *B = gsl_root_fsolver_x_upper(s) * (1.0 + 1e-9);
     gsl_root_fsolver_free(s);
     return EL_OK;
@@ -353,11 +367,30 @@ static int kappa_bound(double sigma, double Lmin, double *B)
 
 /* ------------------------------------------------------------ split points */
 
-typedef struct { double v[MAXPTS]; int n; } ptlist;
+/* A split point; soft: kappa0 = 0 or kappa1 = 0, which bound the pieces where (44)
+ * fails but leave the objective smooth on the inflectional side (seed 004 §4
+ * intersects only the non-inflectional pieces with (44)). */
+typedef struct { double x; int soft; } splitpt;
+typedef struct { splitpt v[MAXPTS]; int n; } ptlist;
 
-static void pt_add(ptlist *l, double x)
+static void pt_add(ptlist *l, double x, int soft)
 {
-    if (isfinite(x) && l->n < MAXPTS) l->v[l->n++] = x;
+    if (isfinite(x) && l->n < MAXPTS) {
+        l->v[l->n].x = x;
+        l->v[l->n++].soft = soft;
+    }
+}
+
+/* Sort by x: insertion sort, the lists being a dozen points long (qsort's
+ * indirect comparisons and merge buffer cost more than the sort itself here). */
+static void sort_splitpts(splitpt *v, int n)
+{
+    for (int i = 1; i < n; i++) {
+        const splitpt t = v[i];
+        int j = i;
+        for (; j > 0 && v[j - 1].x > t.x; j--) v[j] = v[j - 1];
+        v[j] = t;
+    }
 }
 
 static int cmp_double(const void *a, const void *b)
@@ -485,7 +518,7 @@ static int root_branch(const hprob *pr, double x)
         hstate st;
         if (curvdata(pr, x, b, &st)) continue;
         const double F1 = -2.0 * st.k0p, F2 = st.k0 * st.k0 - pr->sigma;
-        const double dd = fabs(hypot(F1, F2) - pr->sigma);   /* kappa_m^2 - 2 sigma */
+        const double dd = fabs(sqrt(F1 * F1 + F2 * F2) - pr->sigma);   /* kappa_m^2 - 2 sigma */
         if (dd < bd) { bd = dd; best = b; }
     }
     return best;
@@ -502,33 +535,35 @@ static int split_points(const hprob *pr, int b, const double *r40, const int *b4
     l->n = 0;
     if (pr->hcase == 3) {
         const double k0 = case3_kappa0(pr, b), c = k0 * k0 - s, q = s * s - c * c;
-        pt_add(l, 0.0);
-        if (q >= 0.0) { pt_add(l, 0.5 * sqrt(q)); pt_add(l, -0.5 * sqrt(q)); } /* (41) */
+        pt_add(l, 0.0, 0);
+        if (q >= 0.0) { pt_add(l, 0.5 * sqrt(q), 0); pt_add(l, -0.5 * sqrt(q), 0); } /* (41) */
         return EL_OK;
     }
     if (pr->hcase == 1) {
         double a[3];
         disc_coeffs(pr, a);
         if ((rc = poly_real_roots(a, 2, r, &nr))) return rc;
-        for (int i = 0; i < nr; i++) pt_add(l, r[i]);
+        for (int i = 0; i < nr; i++) pt_add(l, r[i], 0);
         /* kappa1 = 0 in (17): 2 V1 C + A P2 = 0 */
         const double q[3] = {V1 * P1 * s + P2 * V2 * s - P2 * s, -2.0 * V1, -V1 * P1 - P2 * V2};
         if ((rc = poly_real_roots(q, 2, r, &nr))) return rc;
-        for (int i = 0; i < nr; i++) pt_add(l, r[i]);
+        for (int i = 0; i < nr; i++) pt_add(l, r[i], 1);
     } else {
         const double q[3] = {-0.5 * P1 * s, 1.0, 0.5 * P1}; /* C = 0 */
         if ((rc = poly_real_roots(q, 2, r, &nr))) return rc;
-        for (int i = 0; i < nr; i++) pt_add(l, r[i]);
+        for (int i = 0; i < nr; i++) pt_add(l, r[i], 1);
     }
-    pt_add(l, 0.0);
+    pt_add(l, 0.0, 1);
     for (int i = 0; i < n40; i++)
-        if (b40[i] == b) pt_add(l, r40[i]);
+        if (b40[i] == b) pt_add(l, r40[i], 0);
     /* (45): seed 004 §4 evaluates the objective there and keeps the value as a split
-     * point only where the objective vanishes (an unwanted zero) or is singular */
+     * point only where the objective vanishes (an unwanted zero) or is singular; the
+     * coarse objective (elliptic integrals to 1e-10) decides that */
     if ((rc = special_values(pr, r, &nr))) return rc;
     for (int i = 0; i < nr; i++) {
         hstate st;
-        if (full_eval(pr, r[i], b, &st) || fabs(st.f) < 1e-6) pt_add(l, r[i]);
+        if (curvdata(pr, r[i], b, &st) || shape_eval(pr, COARSE_QS, &st) || fabs(st.f) < 1e-6)
+            pt_add(l, r[i], 0);
     }
     return EL_OK;
 }
@@ -586,13 +621,13 @@ static void cache_seed(fctx *c, double x, double f)
 }
 
 /* The objective for the samples that look for sign changes: elliptic integrals to
- * 1e-10 instead of 1e-16 (two duplication steps fewer); only its sign is used, and
- * Brent and every accepted root use full_eval. */
+ * about 1e-8 instead of 1e-16 (COARSE_QS, one or two duplication steps fewer); its
+ * sign and rough size are used, and Brent and every accepted root use full_eval. */
 static double fobj_coarse(fctx *c, double x)
 {
     hstate st;
     int rc = curvdata(c->pr, x, c->b, &st);
-    if (!rc) rc = shape_eval(c->pr, 0.1, &st);
+    if (!rc) rc = shape_eval(c->pr, COARSE_QS, &st);
     if (rc) { c->nfail++; return GSL_NAN; }
     return st.f;
 }
@@ -667,8 +702,9 @@ static int brent_root(fctx *c, double a, double fa, double b, double fb, hrootli
     return roots_push(out, &r);
 }
 
-static double negf(double x, void *p) { return -fobj(x, p); }
-static double posf(double x, void *p) { return fobj(x, p); }
+/* The coarse objective, signed for a minimiser (only its sign at the minimum matters). */
+static double negf(double x, void *p) { return -fobj_coarse(p, x); }
+static double posf(double x, void *p) { return fobj_coarse(p, x); }
 
 /* Two zeros closer than the sampling step (seed 004 §5 (a), (b): at most two per
  * piece, the objective convex between them): minimise sign * f on the bracket;
@@ -688,7 +724,7 @@ static int touch_check(fctx *c, double a, double fa, double m, double fm, double
             const double xm = gsl_min_fminimizer_x_minimum(s), v = gsl_min_fminimizer_f_minimum(s);
             if (v < 0.0) {
                 gsl_min_fminimizer_free(s);
-                const double fxm = fobj(xm, c);
+                const double fxm = fobj_coarse(c, xm);
                 if ((rc = brent_root(c, a, fa, xm, fxm, out))) return rc;
                 return brent_root(c, xm, fxm, b, fb, out);
             }
@@ -716,27 +752,93 @@ static double parabola_min(const double *x, const double *f)
     return sg * (f[1] - d * d / (4.0 * a));
 }
 
+/* The lowest value a convex function g = sign * f can take on [xs[j], xs[j+1]] given
+ * the samples: the secant of a neighbouring interval where g > 0 at both ends,
+ * extended, lies below a convex function (+inf when no neighbour qualifies). */
+static double convex_lower_bound(const double *xs, const double *fs, int n, int j, double sign)
+{
+    double lb = -INFINITY;
+    int any = 0;
+    for (int side = -1; side <= 1; side += 2) {
+        const int p = side < 0 ? j - 1 : j + 1, q = p + 1;   /* the neighbour [xs[p], xs[q]] */
+        if (p < 0 || q >= n || !(sign * fs[p] > 0.0) || !(sign * fs[q] > 0.0)) continue;
+        const double slope = sign * (fs[q] - fs[p]) / (xs[q] - xs[p]);
+        const double g0 = sign * fs[p] + slope * (xs[j] - xs[p]);
+        const double g1 = sign * fs[p] + slope * (xs[j + 1] - xs[p]);
+        lb = fmax(lb, fmin(g0, g1));
+        any = 1;
+    }
+    return any ? lb : INFINITY;
+}
+
+/* The interval to sample next, or -1. Seed 004 §5 observes that the objective
+ * is convex between two zeros close together; so two zeros can only hide in an
+ * interval without a sign change where the convex lower bound from its
+ * neighbours reaches zero, and the lowest such interval is bisected. An interval
+ * with one failed evaluation (no curve there) is bounded the same way from its
+ * finite end's side: a zero may lie just before the region without curves.
+ * Intervals narrower than minw are left. */
+static int interval_to_refine(const double *xs, const double *fs, int n, double minw)
+{
+    int best = -1;
+    double blb = 0.0;
+    for (int j = 0; j + 1 < n; j++) {
+        const double fa = fs[j], fb = fs[j + 1];
+        double sign;
+        if (isfinite(fa) && isfinite(fb)) {
+            if (!(fa * fb > 0.0)) continue;                 /* a sign change: Brent's */
+            sign = fa > 0.0 ? 1.0 : -1.0;
+        } else if (isfinite(fa) || isfinite(fb)) {
+            const double f = isfinite(fa) ? fa : fb;
+            if (f == 0.0) continue;
+            sign = f > 0.0 ? 1.0 : -1.0;
+        } else {
+            continue;
+        }
+        if (!(xs[j + 1] - xs[j] > minw)) continue;
+        const double lb = convex_lower_bound(xs, fs, n, j, sign);
+        if (lb <= blb) { blb = lb; best = j; }
+    }
+    return best;
+}
+
 /* Sample one piece (Chebyshev spacing, ends nudged inside: the split points are
- * where the objective is singular or not differentiable), Brent on sign changes. */
+ * where the objective is singular or not differentiable), refine where two zeros
+ * may hide (interval_to_refine, at most REFINE_MAX more samples), Brent on sign
+ * changes. */
 /* A sample whose |f| is below TOUCH_RATIO times both neighbours' (same sign) gets the
  * touch check even when the parabola through the three does not reach zero: the
  * objective is often far from a parabola on a sample interval (steep near a split
- * point). On 10 000 bench problems this halves the solutions missed against 300
- * samples (24 -> 12 of 25 256; sigma |p1-p0|^2 in [0, 5]: 170 -> 82 of 27 000), at
- * no measurable cost; it only adds checks, so it finds a superset. */
+ * point). It only adds checks, so it finds a superset; without these checks 9 of
+ * the 25 264 solutions of the bench problems (300 samples) are missed, with them 1. */
 #define TOUCH_RATIO 0.5
+#define REFINE_MAX 12
 static int solve_piece(fctx *c, double a, double b, int ns, hrootlist *out)
 {
-    double xs[1002], fs[1002];
+    double xs[1002 + REFINE_MAX], fs[1002 + REFINE_MAX];
     const double eps = 1e-10 * (b - a) + 1e-14 * (fabs(a) + fabs(b));
     int rc;
     if (!(b - a > 4.0 * eps)) return EL_OK;
+    /* cos(pi j / ns) by the Chebyshev recurrence c_{j+1} = 2 c_1 c_j - c_{j-1} */
+    const double c1 = cos(M_PI / ns);
+    double cprev = c1, cj = 1.0;
     for (int j = 0; j <= ns; j++) {
-        double t = 0.5 * (1.0 - cos(M_PI * j / ns));
-        xs[j] = a + (b - a) * t;
+        xs[j] = a + (b - a) * 0.5 * (1.0 - cj);
         if (j == 0) xs[j] = a + eps;
         if (j == ns) xs[j] = b - eps;
         fs[j] = fobj_coarse(c, xs[j]);
+        const double cnext = 2.0 * c1 * cj - cprev;
+        cprev = cj;
+        cj = cnext;
+    }
+    for (int r = 0; r < REFINE_MAX; r++) {
+        const int j = interval_to_refine(xs, fs, ns + 1, 1e-6 * (b - a));
+        if (j < 0) break;
+        memmove(xs + j + 2, xs + j + 1, (size_t)(ns - j) * sizeof *xs);
+        memmove(fs + j + 2, fs + j + 1, (size_t)(ns - j) * sizeof *fs);
+        xs[j + 1] = 0.5 * (xs[j] + xs[j + 2]);
+        fs[j + 1] = fobj_coarse(c, xs[j + 1]);
+        ns++;
     }
     for (int j = 0; j < ns; j++) {
         if (!isfinite(fs[j]) || !isfinite(fs[j + 1])) continue;
@@ -754,6 +856,32 @@ static int solve_piece(fctx *c, double a, double b, int ns, hrootlist *out)
         }
     }
     return EL_OK;
+}
+
+/* The kind of curve on a piece between split points, from its midpoint (cheap: the
+ * curvature data only). CLASS_NONE: no curve (outside (18), or non-inflectional
+ * with kappa0 kappa1 <= 0 against (44)), confirmed at the quarter points;
+ * CLASS_MIXED: they disagree (a split point missed by rounding), the piece is
+ * searched as it is. */
+enum { CLASS_NONE, CLASS_INFL, CLASS_NONINFL, CLASS_MIXED };
+
+static int point_class(const hprob *pr, int b, double x)
+{
+    hstate st;
+    if (curvdata(pr, x, b, &st)) return CLASS_NONE;
+    const double F1 = -2.0 * st.k0p, F2 = st.k0 * st.k0 - pr->sigma, Fn = sqrt(F1 * F1 + F2 * F2);
+    if (!(Fn + pr->sigma > 0.0)) return CLASS_NONE;
+    if (Fn > pr->sigma) return CLASS_INFL;               /* kc2 > 0 in shape_eval */
+    return st.k0 * st.k1 > 0.0 ? CLASS_NONINFL : CLASS_NONE;
+}
+
+static int piece_class(const hprob *pr, int b, double a, double c)
+{
+    const int mid = point_class(pr, b, 0.5 * (a + c));
+    if (mid != CLASS_NONE) return mid;
+    /* a piece is skipped only when the quarter points agree */
+    const int c1 = point_class(pr, b, a + 0.25 * (c - a)), c3 = point_class(pr, b, a + 0.75 * (c - a));
+    return c1 == CLASS_NONE && c3 == CLASS_NONE ? CLASS_NONE : CLASS_MIXED;
 }
 
 static int nbranches(const hprob *pr) { return pr->hcase == 1 ? 2 : pr->hcase == 2 ? 1 : 4; }
@@ -794,19 +922,23 @@ static int solve_tension_normalised(hprob *pr, int ns, hrootlist *out)
         if (!(X > 0.0)) continue;
         ptlist l;
         if ((rc = split_points(pr, b, r40, b40, n40, &l))) return rc;
-        double pts[MAXPTS + 2];
-        int n = 0;
-        pts[n++] = -X;
-        pts[n++] = X;
+        splitpt pts[MAXPTS + 2] = {{-X, 0}, {X, 0}};
+        int n = 2, cls[MAXPTS + 1];
         for (int i = 0; i < l.n; i++)
-            if (l.v[i] > -X && l.v[i] < X) pts[n++] = l.v[i];
-        qsort(pts, (size_t)n, sizeof *pts, cmp_double);
+            if (l.v[i].x > -X && l.v[i].x < X) pts[n++] = l.v[i];
+        sort_splitpts(pts, n);
+        for (int i = 0; i + 1 < n; i++) cls[i] = piece_class(pr, b, pts[i].x, pts[i + 1].x);
         fctx c;
         fctx_init(&c, pr, b);
         for (int i = 0; i + 1 < n; i++) {
+            if (cls[i] == CLASS_NONE) continue;            /* no curve anywhere on the piece */
+            /* inflectional neighbours across a soft split point form one piece */
+            const double a = pts[i].x;
+            while (cls[i] == CLASS_INFL && i + 2 < n && pts[i + 1].soft && cls[i + 1] == CLASS_INFL) i++;
+            const double bb = pts[i + 1].x;
             /* samples in proportion to the piece's share of the domain, at least 2 */
-            const int m = 1 + (int)ceil(ns * (pts[i + 1] - pts[i]) / (2.0 * X));
-            if ((rc = solve_piece(&c, pts[i], pts[i + 1], m > 1000 ? 1000 : m, out))) return rc;
+            const int m = 1 + (int)ceil(ns * (bb - a) / (2.0 * X));
+            if ((rc = solve_piece(&c, a, bb, m > 1000 ? 1000 : m, out))) return rc;
         }
     }
     return EL_OK;
@@ -1001,25 +1133,25 @@ static int params_from_state(double x0, double y0, double theta, double kappa, d
     p->length = L;
     const double km2 = Fn + sigma;
     if (!(Fn > 0.0) || !(km2 > 0.0)) return EL_EDOM;
-    const double k2 = km2 / (2.0 * Fn), h = 0.5 * wrap_pi(theta - atan2(F[1], F[0]));
+    const double k2 = km2 / (2.0 * Fn), kc2 = (Fn - sigma) / (2.0 * Fn);
+    const double h = 0.5 * wrap_pi(theta - atan2(F[1], F[0]));
     p->mu = 0.5 * Fn;
     p->phi = atan2(F[1], F[0]);
-    double Kc, Dc, Fq, Dq;
+    double Fq, Dq;
     int rc;
-    if (k2 < 1.0) {
-        const double k = sqrt(k2);
-        if ((rc = ell_complete(k, &Kc, &Dc))) return rc;
+    /* q = F(amplitude): F is odd in the amplitude, which lies in (-pi, pi] */
+    if (kc2 > 0.0) {
         const double y = sqrt(2.0 * Fn) * sin(h), r = hypot(y, kappa);
-        if ((rc = ell_fd(atan2(y, kappa), y / r, kappa / r, k, Kc, Dc, 1.0, &Fq, &Dq))) return rc;
-        p->k = k;
-        p->q = Fq;
+        if ((rc = ell_fd_amp(fabs(y) / r, kappa / r, 0, k2, kc2, 1.0, &Fq, &Dq))) return rc;
+        p->k = sqrt(k2);
+        p->q = copysign(Fq, y);
     } else {
-        const double k = sqrt(k2), m = 1.0 / k, eps = kappa > 0.0 ? 1.0 : -1.0;
+        const double k = sqrt(k2), m2 = 2.0 * Fn / km2, mc2 = (sigma - Fn) / km2;
+        const double eps = kappa > 0.0 ? 1.0 : -1.0;
         if (!(kappa != 0.0)) return EL_EDOM;
-        if ((rc = ell_complete(m, &Kc, &Dc))) return rc;
-        if ((rc = ell_fd(eps * h, eps * sin(h), cos(h), m, Kc, Dc, 1.0, &Fq, &Dq))) return rc;
+        if ((rc = ell_fd_amp(fabs(sin(h)), cos(h), 0, m2, mc2, 1.0, &Fq, &Dq))) return rc;
         p->k = eps * k;
-        p->q = Fq / k;
+        p->q = copysign(Fq, eps * h) / k;
     }
     return EL_OK;
 }
@@ -1208,18 +1340,18 @@ static int make_solution(const frame *fr, const hroot *r, el_hermite_solution *s
     s->kappa1 = st->k1 / d;
     s->has_inflection = 0;
     if (st->infl) {
-        /* kappa = kappa_m cn(u): a zero inside iff the amplitude passes an odd multiple of pi/2 */
-        const double sF = sqrt(2.0 * st->Fn), s0 = r->sigma;
-        const double al0 = atan2(sF * sin(0.5 * atan2(-2.0 * st->k0p, st->k0 * st->k0 - s0)), st->k0);
-        const double al1 = al0 + wrap_pos(atan2(sF * sin(0.5 * atan2(-2.0 * st->k1p, st->k1 * st->k1 - s0)),
-                                                st->k1) - al0, 2.0 * M_PI);
+        /* kappa = kappa_m cn(u): a zero inside iff the amplitude am u passes an odd
+         * multiple of pi/2 between its values a0, a0 + d at the ends, d in (0, 2 pi]
+         * (am(u + 2 Kc) = am u + pi): d > pi iff u(L) - u(0) > 2 Kc, which decides d
+         * where rounding leaves it open (a whole period, d = 2 pi, has two zeros) */
+        const double a0 = atan2(st->s0, st->c0);
+        double d = atan2(st->s1, st->c1) - a0;
+        d -= 2.0 * M_PI * floor(d / (2.0 * M_PI));
+        if (st->big && d <= M_PI) d += 2.0 * M_PI;
+        if (!st->big && d > 1.5 * M_PI) d -= 2.0 * M_PI;
+        const double a = (a0 - M_PI_2) / M_PI + 1e-9, b = (a0 + d - M_PI_2) / M_PI - 1e-9;
         /* zeros of cn strictly inside: integers n with a < n < b (a zero at an end is no inflection) */
-        const double a = (al0 - M_PI_2) / M_PI + 1e-9, b = (al1 - M_PI_2) / M_PI - 1e-9;
         s->has_inflection = ceil(b) - floor(a) - 1.0 > 0.5;
-        /* a whole period (end state = start state: the amplitudes above tie, and their
-         * rounding may disagree with the one in shape_eval that gave L = T) has two
-         * zeros of kappa, at least one of them strictly inside */
-        if (st->L >= st->T * (1.0 - 1e-9)) s->has_inflection = 1;
     }
     return params_from_state(fr->p0[0], fr->p0[1], fr->psi0, st->k0 / d, st->k0p / (d * d),
                              s->sigma, s->length, &s->curve);
@@ -1298,7 +1430,7 @@ void el_hermite_options_defaults(el_hermite_options *opt)
     opt->sigma = 0.0;
     opt->length = 0.0;
     opt->tol = 1e-10;
-    opt->samples = 16;
+    opt->samples = 12;
     opt->grid = 72;
     opt->max_solutions = 64;
 }

@@ -4,7 +4,8 @@
  *
  * sn, cn, dn come from the AGM with the complementary modulus passed exactly
  * (jacobi_agm: GSL's elljac takes only m = k^2, which loses digits near k = 1);
- * GSL gives Carlson's R_F and R_D. GSL has neither the Jacobi epsilon function
+ * Carlson's R_D and the complete integrals from ellint.c (GSL's are slower). GSL has
+ * neither the Jacobi epsilon function
  * nor derivatives in the modulus, so those are built here from the integrals
  * (amplitude phi = am u, Delta = dn u):
  *   D(phi) = int_0^phi sin^2/Delta   = (sin^3 phi / 3) R_D(cos^2, Delta^2, 1)   (DLMF 19.25.13)
@@ -15,22 +16,16 @@
  * k > 1 goes through the reciprocal-modulus transformation (header comment).
  */
 #include "internal.h"
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_math.h>
-#include <gsl/gsl_sf_ellint.h>
 
 /* Below this k, L = (J - D)/k^2 loses more than two digits: use its series. */
 #define SMALL_K 0.1
 /* Addition-theorem steps between two fresh evaluations in a progression. */
 #define RESEED 32
 
-/* Carlson R_D through GSL, status mapped. */
+/* Carlson R_D to double precision. */
 static int carlson_rd(double x, double y, double z, double *out)
 {
-    gsl_sf_result r;
-    if (gsl_sf_ellint_RD_e(x, y, z, GSL_PREC_DOUBLE, &r) != GSL_SUCCESS) return EL_EDOM;
-    *out = r.val;
-    return EL_OK;
+    return el__carlson_fd(x, y, z, 1.0, NULL, out);
 }
 
 /* L(phi) = int_0^phi sin^4 t (1 - k^2 sin^2 t)^(-3/2) dt for k < SMALL_K, by the
@@ -53,28 +48,24 @@ static double small_k_L(double phi, double k)
     return sum;
 }
 
-int el__modulus_init(double k, el__modulus *mod)
+int el__modulus_init(double k, int with_dk, el__modulus *mod)
 {
     if (!mod || !isfinite(k) || k < 0.0) return EL_EINVAL;
-    el__gsl_quiet();
     const double kg = k <= 1.0 ? k : 1.0 / k; /* the modulus the core sees */
     mod->k = k;
     mod->kg = kg;
     mod->kp = k <= 1.0 ? sqrt((1.0 - k) * (1.0 + k)) : sqrt((k - 1.0) * (k + 1.0)) / k;
     mod->K = mod->Dc = mod->Jc = INFINITY;
+    if (!with_dk) mod->Jc = NAN;
     if (kg < 1.0) {
-        /* k'^2 from kp keeps its relative accuracy as k -> 1, where 1 - k*k
-         * would not; K = R_F(0, k'^2, 1) (GSL's Kcomp forms 1 - k*k itself) */
+        /* k'^2 from kp keeps its relative accuracy as k -> 1, where 1 - k*k would
+         * not (GSL's Kcomp forms 1 - k*k itself); K and D over the quarter period
+         * [0, pi/2] of the amplitude by the AGM, J = R_D(0, 1, k'^2) / 3 */
         const double kp2 = mod->kp * mod->kp;
-        gsl_sf_result K;
-        int st;
-        if (gsl_sf_ellint_RF_e(0.0, kp2, 1.0, GSL_PREC_DOUBLE, &K) != GSL_SUCCESS) return EL_EINTERNAL;
-        mod->K = K.val;
-        /* D and J over the quarter period [0, pi/2] of the amplitude */
-        if ((st = carlson_rd(0.0, kp2, 1.0, &mod->Dc))) return st;
-        if ((st = carlson_rd(0.0, 1.0, kp2, &mod->Jc))) return st;
-        mod->Dc /= 3.0;
-        mod->Jc /= 3.0;
+        if (el__ellint_complete(kg, kp2, &mod->K, &mod->Dc) ||
+            (with_dk && carlson_rd(0.0, 1.0, kp2, &mod->Jc)))
+            return EL_EINTERNAL;
+        if (with_dk) mod->Jc /= 3.0;
     }
     return EL_OK;
 }
@@ -230,7 +221,7 @@ int el_jacobi_eval(double u, double k, el_jacobi *val, el_jacobi *d_du, el_jacob
 {
     el__modulus mod;
     if (!val || !isfinite(u)) return EL_EINVAL;
-    int st = el__modulus_init(k, &mod);
+    int st = el__modulus_init(k, d_dk != NULL, &mod);
     return st ? st : el__jacobi_eval_mod(&mod, u, val, d_du, d_dk);
 }
 
@@ -276,7 +267,7 @@ int el__jacobi_progression(double q, double z, double k, size_t count,
     el__modulus mod;
     int st;
     if (count == 0) return EL_OK;
-    if ((st = el__modulus_init(k, &mod))) return st;
+    if ((st = el__modulus_init(k, d_dk != NULL, &mod))) return st;
     if ((st = el__jacobi_eval_mod(&mod, z, &step, NULL, d_dk ? &stepk : NULL))) return st;
     for (size_t i = 0; i < count; i++) {
         if (i % RESEED == 0) {

@@ -33,20 +33,26 @@ static int equally_spaced(size_t n, const double *s)
     return 1;
 }
 
-/* Jacobi values (and derivatives in |k|) at u_i = sqrt(mu) s_i + q, plus the base point u = q. */
-static int jacobi_at(const el_smooth_params *p, size_t n, const double *s,
+/* Jacobi values (and derivatives in |k|, with a modulus prepared with_dk) at
+ * u_i = sqrt(mu) s_i + q, plus the base point u = q. */
+static int jacobi_at(const el_smooth_params *p, const el__modulus *mod, size_t n, const double *s,
                      el_jacobi *val, el_jacobi *dk, el_jacobi *base, el_jacobi *base_dk)
 {
     const double w = sqrt(p->mu);
-    el__modulus mod;
-    int st = el__modulus_init(fabs(p->k), &mod);
-    if (st || (st = el__jacobi_eval_mod(&mod, p->q, base, NULL, base_dk))) return st;
+    int st = el__jacobi_eval_mod(mod, p->q, base, NULL, base_dk);
+    if (st) return st;
     if (equally_spaced(n, s)) {
         const double ds = (s[n - 1] - s[0]) / (double)(n - 1);
         return el__jacobi_progression(w * s[0] + p->q, w * ds, fabs(p->k), n, val, dk);
     }
-    for (size_t i = 0; i < n; i++)
-        if ((st = el__jacobi_eval_mod(&mod, w * s[i] + p->q, &val[i], NULL, dk ? &dk[i] : NULL))) return st;
+    for (size_t i = 0; i < n; i++) {
+        if (s[i] == 0.0 && (!dk || base_dk)) {          /* u = q: the base point itself */
+            val[i] = *base;
+            if (dk) dk[i] = *base_dk;
+        } else if ((st = el__jacobi_eval_mod(mod, w * s[i] + p->q, &val[i], NULL, dk ? &dk[i] : NULL))) {
+            return st;
+        }
+    }
     return EL_OK;
 }
 
@@ -76,12 +82,12 @@ int el_smooth_eval(const el_smooth_params *p, size_t n, const double *s,
 {
     int st = check_eval_args(p, n, s);
     if (st || n == 0) return st;
+    el__modulus mod;
+    if ((st = el__modulus_init(fabs(p->k), 0, &mod))) return st;
     el_jacobi *v = malloc(n * sizeof *v), b;
     if (!v) return EL_ENOMEM;
-    if ((st = jacobi_at(p, n, s, v, NULL, &b, NULL))) { free(v); return st; }
+    if ((st = jacobi_at(p, &mod, n, s, v, NULL, &b, NULL))) { free(v); return st; }
     const double w = sqrt(p->mu), k = p->k, c = cos(p->phi), sp = sin(p->phi);
-    el__modulus mod;
-    if ((st = el__modulus_init(fabs(k), &mod))) { free(v); return st; }
     for (size_t i = 0; i < n; i++) {
         const double u = w * s[i] + p->q;
         if (xy) {
@@ -103,10 +109,12 @@ int el_smooth_jacobian(const el_smooth_params *p, size_t n, const double *s,
     int st = check_eval_args(p, n, s);
     if (st || n == 0) return st;
     if (!jac) return EL_EINVAL;
+    el__modulus mod;
+    if ((st = el__modulus_init(fabs(p->k), 1, &mod))) return st;
     el_jacobi *v = malloc(2 * n * sizeof *v), b, bk;
     if (!v) return EL_ENOMEM;
     el_jacobi *vk = v + n;
-    if ((st = jacobi_at(p, n, s, v, vk, &b, &bk))) { free(v); return st; }
+    if ((st = jacobi_at(p, &mod, n, s, v, vk, &b, &bk))) { free(v); return st; }
     const double w = sqrt(p->mu), k = p->k, c = cos(p->phi), sp = sin(p->phi);
     const double m = k * k, sgn = copysign(1.0, k);
     for (size_t i = 0; i < n; i++) {

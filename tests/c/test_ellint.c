@@ -1,0 +1,105 @@
+/* The library's own elliptic integrals (libelastica/ellint.c, written for speed):
+ * Carlson's R_F / R_D and the complete K, D against GSL's R_F / R_D, over the
+ * argument ranges the library uses and beyond. */
+#include "testutil.h"
+#include "internal.h"
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_sf_ellint.h>
+#include <stdio.h>
+
+/* Relative error of both integrals at (x, y, z) against GSL; fails above tol. */
+static double check_point(double x, double y, double z, double qs, double tol)
+{
+    gsl_sf_result gf, gd;
+    ck_assert_msg(gsl_sf_ellint_RF_e(x, y, z, GSL_PREC_DOUBLE, &gf) == GSL_SUCCESS &&
+                  gsl_sf_ellint_RD_e(x, y, z, GSL_PREC_DOUBLE, &gd) == GSL_SUCCESS,
+                  "GSL fails at (%g, %g, %g)", x, y, z);
+    double rf, rd, rd_only;
+    ck_assert_int_eq(el__carlson_fd(x, y, z, qs, &rf, &rd), EL_OK);
+    ck_assert_int_eq(el__carlson_fd(x, y, z, qs, NULL, &rd_only), EL_OK);
+    const double ef = fabs(rf - gf.val) / gf.val, ed = fabs(rd - gd.val) / gd.val;
+    const double eo = fabs(rd_only - gd.val) / gd.val;
+    ck_assert_msg(ef <= tol && ed <= tol && eo <= tol,
+                  "(%.17g, %.17g, %.17g) qs %g: R_F err %.3g, R_D err %.3g / %.3g", x, y, z, qs,
+                  ef, ed, eo);
+    return fmax(ef, fmax(ed, eo));
+}
+
+START_TEST(carlson_matches_gsl)
+{
+    gsl_set_error_handler_off();
+    unsigned long long st = 77;
+    double worst = 0.0, worst_coarse = 0.0;
+    for (int i = 0; i < 20000; i++) {
+        /* the library's arguments: (cos^2, 1 - k^2 sin^2, 1) and (cos^2, 1, dn^2), with
+         * values down to 1e-12 (near the separatrix) and ordinary magnitudes */
+        const double a = test_uniform(&st, 0.0, 1.0), b = pow(10.0, test_uniform(&st, -12.0, 0.0));
+        const double c = test_uniform(&st, 0.0, 4.0), w = pow(10.0, test_uniform(&st, -3.0, 3.0));
+        worst = fmax(worst, check_point(a, b, 1.0, 1.0, 2e-15));
+        worst = fmax(worst, check_point(a, 1.0, b, 1.0, 2e-15));
+        worst = fmax(worst, check_point(c * w, a * w, b * w, 1.0, 2e-15));
+        worst_coarse = fmax(worst_coarse, check_point(a, b, 1.0, 0.2, 1e-10));
+    }
+    /* complete integrals: x = 0 */
+    worst = fmax(worst, check_point(0.0, 0.5, 1.0, 1.0, 2e-15));
+    worst = fmax(worst, check_point(0.0, 1e-200, 1.0, 1.0, 2e-15));
+    printf("ellint: R_F, R_D worst relative error against GSL %.2e (double), %.2e (coarse)\n", worst,
+           worst_coarse);
+}
+END_TEST
+
+/* K = R_F(0, k'^2, 1), D = R_D(0, k'^2, 1) / 3 (DLMF 19.25.1), k from 0 to 1 - 1e-15. */
+START_TEST(complete_integrals_match_gsl)
+{
+    gsl_set_error_handler_off();
+    double worst = 0.0;
+    for (int i = 0; i <= 400; i++) {
+        /* k'^2 from 1 down to 1e-30 (k -> 1), then k from 1e-6 down to 1e-16 (k -> 0) */
+        double k, kc2;
+        if (i <= 300) {
+            kc2 = pow(10.0, -i / 10.0);
+            k = sqrt(1.0 - kc2);
+        } else {
+            k = pow(10.0, -6.0 - (i - 300) / 10.0);
+            kc2 = 1.0 - k * k;
+        }
+        gsl_sf_result gf, gd;
+        ck_assert_int_eq(gsl_sf_ellint_RF_e(0.0, kc2, 1.0, GSL_PREC_DOUBLE, &gf), GSL_SUCCESS);
+        ck_assert_int_eq(gsl_sf_ellint_RD_e(0.0, kc2, 1.0, GSL_PREC_DOUBLE, &gd), GSL_SUCCESS);
+        double K, D;
+        ck_assert_int_eq(el__ellint_complete(k, kc2, &K, &D), EL_OK);
+        const double eK = fabs(K - gf.val) / gf.val, eD = fabs(D - gd.val / 3.0) / (gd.val / 3.0);
+        ck_assert_msg(eK <= 2e-15 && eD <= 4e-15, "k'^2 = %.17g: K err %.3g, D err %.3g", kc2, eK, eD);
+        worst = fmax(worst, fmax(eK, eD));
+    }
+    double K, D;
+    ck_assert_int_eq(el__ellint_complete(0.0, 1.0, &K, &D), EL_OK);
+    ck_assert_close(K, M_PI / 2.0, 1e-16);
+    ck_assert_close(D, M_PI / 4.0, 1e-16);                /* int_0^(pi/2) sin^2 */
+    ck_assert_int_eq(el__ellint_complete(1.0, 0.0, &K, &D), EL_EDOM);
+    ck_assert_int_eq(el__ellint_complete(0.5, NAN, &K, &D), EL_EDOM);
+    printf("ellint: complete K, D worst relative error against GSL %.2e\n", worst);
+}
+END_TEST
+
+START_TEST(carlson_rejects_bad_arguments)
+{
+    double rf, rd;
+    const double bad[][3] = {{-1e-300, 1, 1}, {1, -1, 1}, {1, 1, 0}, {0, 0, 1}, {NAN, 1, 1},
+                             {1, INFINITY, 1}, {1, 1, -2}};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++)
+        ck_assert_int_eq(el__carlson_fd(bad[i][0], bad[i][1], bad[i][2], 1.0, &rf, &rd), EL_EDOM);
+}
+END_TEST
+
+int main(void)
+{
+    Suite *s = suite_create("ellint");
+    TCase *tc = tcase_create("ellint");
+    tcase_set_timeout(tc, 60);
+    tcase_add_test(tc, carlson_matches_gsl);
+    tcase_add_test(tc, complete_integrals_match_gsl);
+    tcase_add_test(tc, carlson_rejects_bad_arguments);
+    suite_add_tcase(s, tc);
+    return test_run_suite(s);
+}
