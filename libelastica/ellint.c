@@ -68,7 +68,8 @@ int el__carlson_fd(double x, double y, double z, double qs, double *rf, double *
      * denominators are O(1) and there are a handful: no overflow) */
     double AF = AF0, AD = AD0, f4 = 1.0, num = 0.0, den = 1.0;
     while (f4 * QF >= fabs(AF) || f4 * QD >= fabs(AD)) {
-        const double sx = sqrt(x), sy = sqrt(y), sz = sqrt(z);
+        /* sqrt is what this loop costs: z = 1 (every caller's first step) is free */
+        const double sx = sqrt(x), sy = sqrt(y), sz = z == 1.0 ? 1.0 : sqrt(z);
         const double lam = sx * sy + sx * sz + sy * sz, d = sz * (z + lam);
         num = num * d + f4 * den;
         den *= d;

@@ -524,10 +524,26 @@ static int root_branch(const hprob *pr, double x)
     return best;
 }
 
+/* The kind of curve at x, from the curvature data only (cheap). CLASS_NONE: no
+ * curve (outside (18), non-inflectional with kappa0 kappa1 <= 0 against (44), or
+ * the objective singular: F = 0); CLASS_MIXED: see piece_class. */
+enum { CLASS_NONE, CLASS_INFL, CLASS_NONINFL, CLASS_MIXED };
+
+static int point_class(const hprob *pr, int b, double x)
+{
+    hstate st;
+    if (curvdata(pr, x, b, &st)) return CLASS_NONE;
+    const double F1 = -2.0 * st.k0p, F2 = st.k0 * st.k0 - pr->sigma, Fn = sqrt(F1 * F1 + F2 * F2);
+    /* shape_prepare's conditions: F = 0 (circle), kappa_m = 0 (straight) */
+    if (!(Fn > 1e-13 * (1.0 + fabs(pr->sigma))) || !(Fn + pr->sigma > 0.0)) return CLASS_NONE;
+    if (Fn > pr->sigma) return CLASS_INFL;               /* kc2 > 0 in shape_eval */
+    return st.k0 * st.k1 > 0.0 ? CLASS_NONINFL : CLASS_NONE;
+}
+
 /* Split points of branch b: (18) ends, (40) roots, (44) kappa0 = 0 and kappa1 = 0,
  * (45) special values; case 3: (41), kappa0' = 0. */
-static int split_points(const hprob *pr, int b, const double *r40, const int *b40, int n40,
-                        ptlist *l)
+static int split_points(const hprob *pr, int b, double X, const double *r40, const int *b40,
+                        int n40, ptlist *l)
 {
     const double s = pr->sigma, P1 = pr->P1, P2 = pr->P2, V1 = pr->V1, V2 = pr->V2;
     double r[16];
@@ -556,15 +572,15 @@ static int split_points(const hprob *pr, int b, const double *r40, const int *b4
     pt_add(l, 0.0, 1);
     for (int i = 0; i < n40; i++)
         if (b40[i] == b) pt_add(l, r40[i], 0);
-    /* (45): seed 004 §4 evaluates the objective there and keeps the value as a split
-     * point only where the objective vanishes (an unwanted zero) or is singular; the
-     * coarse objective (elliptic integrals to 1e-10) decides that */
+    /* (45): seed 004 §4 evaluates its objective (35), x1(L) - P1, there and keeps the
+     * value as a split point where it vanishes (an unwanted zero) or is singular. The
+     * objective here is the error along F, regular where F is parallel to x1; it
+     * vanished at none of the special values of the 10 000 bench problems (31 000
+     * evaluated). So only the singular ones split: F = 0 (the circle kappa0^2 = sigma,
+     * kappa0' = 0 on this branch) and those without a curve (point_class) */
     if ((rc = special_values(pr, r, &nr))) return rc;
-    for (int i = 0; i < nr; i++) {
-        hstate st;
-        if (curvdata(pr, r[i], b, &st) || shape_eval(pr, COARSE_QS, &st) || fabs(st.f) < 1e-6)
-            pt_add(l, r[i], 0);
-    }
+    for (int i = 0; i < nr; i++)
+        if (fabs(r[i]) < X && point_class(pr, b, r[i]) == CLASS_NONE) pt_add(l, r[i], 0);
     return EL_OK;
 }
 
@@ -858,23 +874,9 @@ static int solve_piece(fctx *c, double a, double b, int ns, hrootlist *out)
     return EL_OK;
 }
 
-/* The kind of curve on a piece between split points, from its midpoint (cheap: the
- * curvature data only). CLASS_NONE: no curve (outside (18), or non-inflectional
- * with kappa0 kappa1 <= 0 against (44)), confirmed at the quarter points;
- * CLASS_MIXED: they disagree (a split point missed by rounding), the piece is
- * searched as it is. */
-enum { CLASS_NONE, CLASS_INFL, CLASS_NONINFL, CLASS_MIXED };
-
-static int point_class(const hprob *pr, int b, double x)
-{
-    hstate st;
-    if (curvdata(pr, x, b, &st)) return CLASS_NONE;
-    const double F1 = -2.0 * st.k0p, F2 = st.k0 * st.k0 - pr->sigma, Fn = sqrt(F1 * F1 + F2 * F2);
-    if (!(Fn + pr->sigma > 0.0)) return CLASS_NONE;
-    if (Fn > pr->sigma) return CLASS_INFL;               /* kc2 > 0 in shape_eval */
-    return st.k0 * st.k1 > 0.0 ? CLASS_NONINFL : CLASS_NONE;
-}
-
+/* The kind of curve on a piece between split points, from its midpoint;
+ * CLASS_NONE is confirmed at the quarter points, and CLASS_MIXED (they disagree:
+ * a split point missed by rounding) has the piece searched as it is. */
 static int piece_class(const hprob *pr, int b, double a, double c)
 {
     const int mid = point_class(pr, b, 0.5 * (a + c));
@@ -921,7 +923,7 @@ static int solve_tension_normalised(hprob *pr, int ns, hrootlist *out)
         const double X = domain_half(pr, b);
         if (!(X > 0.0)) continue;
         ptlist l;
-        if ((rc = split_points(pr, b, r40, b40, n40, &l))) return rc;
+        if ((rc = split_points(pr, b, X, r40, b40, n40, &l))) return rc;
         splitpt pts[MAXPTS + 2] = {{-X, 0}, {X, 0}};
         int n = 2, cls[MAXPTS + 1];
         for (int i = 0; i < l.n; i++)
