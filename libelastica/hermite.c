@@ -66,22 +66,24 @@ typedef struct {
 
 static void amp_reduce(double S, double C, int big, double k2, double kc2, reduced_amp *r)
 {
-    double mult = 1.0, acc = 0.0;
-    for (int h = 0; h < 2 && (big || C < 0.0 || S < 0.0); h++) {
+    double mult = 1.0, acc = 0.0, x = C * C;
+    while (big || C < 0.0 || S < 0.0) {
         /* one division: inv = 1 / ((1 + dn) q), q = 1 + C or dn - C */
-        const double dn = sqrt(kc2 + k2 * C * C), q = C > 0.0 ? 1.0 + C : dn - C;
+        const double dn = sqrt(kc2 + k2 * x), q = C > 0.0 ? 1.0 + C : dn - C;
         const double inv = 1.0 / ((1.0 + dn) * q);
         const double s2 = C > 0.0 ? S * S * inv : (1.0 - C) * q * inv;
         const double c2 = C < 0.0 ? kc2 * S * S * inv : (dn + C) * q * inv;
         acc += mult * s2 * S;
         mult *= 2.0;
         S = sqrt(s2);                          /* sn(U/2) >= 0: U/2 in (0, 2K] */
-        C = big ? -sqrt(c2) : sqrt(c2);        /* cn(U/2) < 0 iff U/2 > K */
+        x = c2;
+        if (!big) break;                       /* U/2 <= K: amplitude at most pi/2 */
+        C = -sqrt(c2);                         /* U/2 in (K, 2K]: halve once more */
         big = 0;
     }
     r->S = S;
-    r->x = C * C;
-    r->y = kc2 + k2 * C * C;
+    r->x = x;
+    r->y = kc2 + k2 * x;
     r->mult = mult;
     r->acc = acc;
 }
