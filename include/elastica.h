@@ -526,8 +526,8 @@ void el_hermite_options_defaults(el_hermite_options *opt);
  * Tension mode follows seed 004 §4: normalisation (p0 = 0, t0 = (0,1),
  * |p1 - p0| = 1), the three cases of Theorem 6, the kappa_m bound of Theorem 9
  * (computed for every sigma), subintervals split at the real roots of (40),
- * at the special values (45) and at the ends of (18) and (44), bracketing and
- * Brent's method on each. Length mode follows the tension solutions along
+ * at the special values (45) where the objective is singular and at the ends of
+ * (18) and (44), bracketing and Brent's method on each. Length mode follows the tension solutions along
  * sigma (all tension solutions on grid lines sigma_j, then Newton on (kappa0, sigma)). A count of 0 with EL_OK
  * means no such curve exists (e.g. sigma very negative).
  * Completeness: the bracketing samples each subinterval, then bisects where the
