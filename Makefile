@@ -20,6 +20,8 @@ TEST_SRC     := $(wildcard tests/c/test_*.c)
 TEST_BIN     := $(TEST_SRC:tests/c/%.c=$(BUILD)/tests/%)
 BENCH_SRC    := $(wildcard bench/*.c)
 BENCH_BIN    := $(BENCH_SRC:bench/%.c=$(BUILD)/bench/%)
+BENCH_CXX    := $(wildcard bench/*.cc)
+BENCH_CXX_BIN := $(BENCH_CXX:bench/%.cc=$(BUILD)/bench/%)
 SONAME       := libelastica.so.$(SOVERSION)
 
 # Debian packages (Debian 12 / Ubuntu) the project needs; `make deps` installs the missing ones.
@@ -30,7 +32,7 @@ APT_PKGS := build-essential pkg-config libgsl-dev coinor-libipopt-dev check \
 PIP_PKGS := numpy cffi pytest scipy ezdxf matplotlib
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps lib check check-c check-asan check-install check-python check-freecad bench demo gallery install clean
+.PHONY: all deps lib check check-c check-asan check-install check-python check-freecad bench occt-dev demo gallery install clean
 
 all: deps lib
 
@@ -99,13 +101,30 @@ $(BUILD)/bench/%: bench/%.c $(BUILD)/libelastica.a
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_BASE) $(DEPS_CFLAGS) $< -o $@ $(BUILD)/libelastica.a $(DEPS_LIBS)
 
+# OpenCASCADE's FairCurve_Batten, the comparison of bench_hermite_occt.cc (C++), from
+# Debian's development packages: installed by `make bench` only.
+OCCT_PKGS := libocct-modeling-algorithms-dev libocct-modeling-data-dev
+OCCT_LIBS := -lTKGeomAlgo -lTKGeomBase -lTKG2d -lTKMath -lTKernel
+occt-dev:
+	@missing=$$(for p in $(OCCT_PKGS); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q 'install ok installed' || echo $$p; done); \
+	if [ -n "$$missing" ]; then \
+	  echo "make bench: installing $$missing"; \
+	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get update -qq && \
+	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
+	fi
+
+$(BUILD)/bench/%: bench/%.cc $(BUILD)/libelastica.a | occt-dev
+	@mkdir -p $(dir $@)
+	$(CXX) -O2 -Wall -Iinclude -I/usr/include/opencascade -Wno-deprecated-declarations $< -o $@ \
+	  $(BUILD)/libelastica.a $(DEPS_LIBS) $(OCCT_LIBS)
+
 # comparison packages for the benchmarks only (PyPI), into the python3 on PATH.
 # OPENBLAS_NUM_THREADS=1: Ipopt's BLAS would otherwise spin idle worker threads on
 # problems this small (~9 % of a Hermite profile), charging every figure for them.
 BENCH_PIP := clothoids scipy
-bench: all $(BENCH_BIN)
+bench: all $(BENCH_BIN) $(BENCH_CXX_BIN)
 	@$(PYTHON) -c "import Clothoids, scipy" 2>/dev/null || $(PYTHON) -m pip install -q $(BENCH_PIP)
-	@for b in $(BENCH_BIN); do OPENBLAS_NUM_THREADS=1 $$b; done
+	@for b in $(BENCH_BIN) $(BENCH_CXX_BIN); do OPENBLAS_NUM_THREADS=1 $$b; done
 	@for b in bench/bench_*.py; do [ -f "$$b" ] || continue; \
 	  OPENBLAS_NUM_THREADS=1 LIBELASTICA_PATH=$(CURDIR)/$(BUILD)/libelastica.so PYTHONPATH=$(CURDIR)/python $(PYTHON) $$b; done
 
