@@ -794,10 +794,11 @@ static double convex_lower_bound(const double *xs, const double *fs, int n, int 
  * is convex between two zeros close together; so two zeros can only hide in an
  * interval without a sign change where the convex lower bound from its
  * neighbours reaches zero, and the lowest such interval is bisected. An interval
- * with one failed evaluation (no curve there) is bounded the same way from its
- * finite end's side: a zero may lie just before the region without curves.
+ * with one failed evaluation (no curve there, or a singular point) is bisected
+ * first while wider than nanw: the objective is steep next to such a region and
+ * zeros crowd there; then it is bounded like the others from its finite side.
  * Intervals narrower than minw are left. */
-static int interval_to_refine(const double *xs, const double *fs, int n, double minw)
+static int interval_to_refine(const double *xs, const double *fs, int n, double minw, double nanw)
 {
     int best = -1;
     double blb = 0.0;
@@ -811,6 +812,7 @@ static int interval_to_refine(const double *xs, const double *fs, int n, double 
             const double f = isfinite(fa) ? fa : fb;
             if (f == 0.0) continue;
             sign = f > 0.0 ? 1.0 : -1.0;
+            if (xs[j + 1] - xs[j] > nanw) return j;
         } else {
             continue;
         }
@@ -851,7 +853,7 @@ static int solve_piece(fctx *c, double a, double b, int ns, hrootlist *out)
         cj = cnext;
     }
     for (int r = 0; r < REFINE_MAX; r++) {
-        const int j = interval_to_refine(xs, fs, ns + 1, 1e-6 * (b - a));
+        const int j = interval_to_refine(xs, fs, ns + 1, 1e-6 * (b - a), 1e-3 * (b - a));
         if (j < 0) break;
         memmove(xs + j + 2, xs + j + 1, (size_t)(ns - j) * sizeof *xs);
         memmove(fs + j + 2, fs + j + 1, (size_t)(ns - j) * sizeof *fs);
