@@ -536,8 +536,8 @@ void el_hermite_options_defaults(el_hermite_options *opt);
  * two zeros closer than that can still be missed, mostly next to a piece end
  * where the objective is steep (against 300 samples, sigma |p1-p0|^2 uniform in
  * [-10, 40]: none of the 25 265 solutions of the 10 000 bench problems the
- * defaults were tuned on, 4 of 25 245 on another 10 000; with sigma |p1-p0|^2 in
- * [0, 5]: 38 of 26 810 and 36 of 26 770. Raise opt->samples where completeness
+ * defaults were tuned on, 2 of 25 250 on another 10 000; with sigma |p1-p0|^2 in
+ * [0, 5]: 18 of 26 810 and 22 of 26 770. Raise opt->samples where completeness
  * matters more than time).
  * Every solution is verified with el_smooth_eval and kept only if its residual
  * is <= opt->tol (after a Newton polish on the parameters when it misses by a

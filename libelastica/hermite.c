@@ -817,7 +817,10 @@ static int interval_to_refine(const double *xs, const double *fs, int n, double 
             continue;
         }
         if (!(xs[j + 1] - xs[j] > minw)) continue;
-        const double lb = convex_lower_bound(xs, fs, n, j, sign);
+        double lb = convex_lower_bound(xs, fs, n, j, sign);
+        /* no same-sign neighbour says anything (next to a sign change, say):
+         * one bisection gives the interval a neighbour of its own */
+        if (lb == INFINITY && xs[j + 1] - xs[j] > 10.0 * nanw) lb = 0.0;
         if (lb <= blb) { blb = lb; best = j; }
     }
     return best;
