@@ -1205,6 +1205,18 @@ static int polish_res(const frame *fr, const el_smooth_params *p, int mode, doub
     return EL_OK;
 }
 
+/* The polish's step test: -1 if q is invalid, else 1 if its end residual (the
+ * first four entries of polish_res, max norm) is below that of r, else 0; rq gets
+ * q's residual vector. */
+static int step_improves(const frame *fr, int mode, double target, const el_smooth_params *q,
+                         const double *r, double *rq)
+{
+    if (el_smooth_check(q) || polish_res(fr, q, mode, target, rq)) return -1;
+    double n0 = 0.0, n1 = 0.0;
+    for (int i = 0; i < 4; i++) { n0 = fmax(n0, fabs(r[i])); n1 = fmax(n1, fabs(rq[i])); }
+    return n1 < n0;
+}
+
 /* Newton on (phi, mu, k, q, length) with a finite-difference Jacobian, for the
  * solutions whose end residual, measured with el_smooth_eval, misses tol by a
  * little (near the separatrix k = 1 the map from kappa0 to the parameters is
@@ -1249,10 +1261,9 @@ static void polish(const frame *fr, int mode, double target, el_hermite_solution
         q.phi += dv[0]; q.mu += dv[1]; q.k += dv[2]; q.q += dv[3];
         if (mode == EL_HERMITE_TENSION) q.length += dv[4]; /* length mode: L stays exact */
         double rq[5];
-        if (el_smooth_check(&q) || polish_res(fr, &q, mode, target, rq)) return;
-        double n0 = 0.0, n1 = 0.0;
-        for (int i = 0; i < 4; i++) { n0 = fmax(n0, fabs(r[i])); n1 = fmax(n1, fabs(rq[i])); }
-        if (!(n1 < n0)) break;
+        const int better = step_improves(fr, mode, target, &q, r, rq);
+        if (better < 0) return;
+        if (!better) break;
         p = q;
         memcpy(r, rq, sizeof r);
     }
@@ -1314,10 +1325,7 @@ static void polish_fixed_k(const frame *fr, int mode, double target, el_hermite_
             double *w[3] = {&q.phi, &q.q, mode == EL_HERMITE_TENSION ? &q.length : &q.mu};
             for (int c = 0; c < 3; c++) *w[c] += isfinite(dv[c]) ? dv[c] : NAN;
             double rq[5];
-            if (el_smooth_check(&q) || polish_res(fr, &q, mode, target, rq)) break;
-            double n0 = 0.0, n1 = 0.0;
-            for (int i = 0; i < 4; i++) { n0 = fmax(n0, fabs(r[i])); n1 = fmax(n1, fabs(rq[i])); }
-            if (!(n1 < n0)) break;
+            if (step_improves(fr, mode, target, &q, r, rq) != 1) break;
             p = q;
             memcpy(r, rq, sizeof r);
         }
