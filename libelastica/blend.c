@@ -292,17 +292,27 @@ int el_blend_eck_omega(double c, size_t n, const double *t, double *omega)
     return EL_OK;
 }
 
-int el_blend_span_eval(const el_blend_basis *b, size_t n, const double *t,
-                       double *f, double *df, double *d2f)
+/* One of the per-point functions below (span_at, basis_at): four values and
+ * (where the pointers are not NULL) their first and second derivatives at t. */
+typedef int (*point_fn)(const el_blend_basis *b, double t, double v[4], double dv[4], double d2v[4]);
+
+/* f(t_i) for n parameter values into rows of 4, after the shared argument checks. */
+static int eval_points(point_fn f, const el_blend_basis *b, size_t n, const double *t,
+                       double *v, double *dv, double *d2v)
 {
     if (!basis_ok(b) || (n > 0 && !t) || el__all_finite(t, n)) return EL_EINVAL;
     el__gsl_quiet();
     for (size_t i = 0; i < n; i++) {
-        int st = span_at(b, t[i], f ? f + 4 * i : NULL, df ? df + 4 * i : NULL,
-                         d2f ? d2f + 4 * i : NULL);
+        int st = f(b, t[i], v ? v + 4 * i : NULL, dv ? dv + 4 * i : NULL, d2v ? d2v + 4 * i : NULL);
         if (st != EL_OK) return st;
     }
     return EL_OK;
+}
+
+int el_blend_span_eval(const el_blend_basis *b, size_t n, const double *t,
+                       double *f, double *df, double *d2f)
+{
+    return eval_points(span_at, b, n, t, f, df, d2f);
 }
 
 /* h_i = sum_j G_ij g_j (= sum_j M_ij f_j) for one parameter value (and derivatives). */
@@ -326,14 +336,7 @@ static int basis_at(const el_blend_basis *b, double t, double h[4], double dh[4]
 int el_blend_basis_eval(const el_blend_basis *b, size_t n, const double *t,
                         double *h, double *dh, double *d2h)
 {
-    if (!basis_ok(b) || (n > 0 && !t) || el__all_finite(t, n)) return EL_EINVAL;
-    el__gsl_quiet();
-    for (size_t i = 0; i < n; i++) {
-        int st = basis_at(b, t[i], h ? h + 4 * i : NULL, dh ? dh + 4 * i : NULL,
-                          d2h ? d2h + 4 * i : NULL);
-        if (st != EL_OK) return st;
-    }
-    return EL_OK;
+    return eval_points(basis_at, b, n, t, h, dh, d2h);
 }
 
 /* out_j = sum_i in_i A[4i + j] for 4 points (row vector of points times A). */
