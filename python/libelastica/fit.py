@@ -118,29 +118,23 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
         raise ValueError("fit: points must be finite (no NaN/inf)")
     o = _options(model, fixed, bounds, tol, max_iter, limited_memory, max_candidates, param,
                  initial)
-    if model == "discrete":
-        res = ffi.new("el_fit_discrete_result *")
-        init = initial._c() if initial is not None else ffi.NULL
-        st = lib.el_fit_discrete(dptr(pts), n, o, init, res)
-        if st not in (lib.EL_OK, lib.EL_ENOCONV, lib.EL_EMAXITER):
-            check(st, "fit")
-
-        def mk(p):
-            return DiscreteElastica(**{k: getattr(p, k) for k in DISCRETE_PARAMS}, n=n)
-        s, mode = None, None
-    else:
-        res = ffi.new("el_fit_smooth_result *")
-        init = initial._c() if initial is not None else ffi.NULL
-        st = lib.el_fit_smooth(dptr(pts), n, o, init, res)
-        if st not in (lib.EL_OK, lib.EL_ENOCONV, lib.EL_EMAXITER):
-            check(st, "fit")
-
+    smooth = model == "smooth"
+    res = ffi.new(f"el_fit_{model}_result *")
+    init = initial._c() if initial is not None else ffi.NULL
+    st = (lib.el_fit_smooth if smooth else lib.el_fit_discrete)(dptr(pts), n, o, init, res)
+    if st not in (lib.EL_OK, lib.EL_ENOCONV, lib.EL_EMAXITER):
+        check(st, "fit")
+    if smooth:
         def mk(p):
             return SmoothElastica(**{k: getattr(p, k) for k in SMOOTH_PARAMS})
         t = np.empty(n)
         check(lib.el_fit_fractions(dptr(pts), n, res.param_mode, dptr(t), ffi.NULL), "fit")
         s = t * res.params.length
         mode = _MODE_NAMES[res.param_mode]
+    else:
+        def mk(p):
+            return DiscreteElastica(**{k: getattr(p, k) for k in DISCRETE_PARAMS}, n=n)
+        s, mode = None, None
     if strict and st != lib.EL_OK:
         check(st, "fit")
     return FitResult(curve=mk(res.params), initial=mk(res.initial), rms=float(res.rms),
