@@ -24,6 +24,16 @@ __all__ = ["Frame", "Frame2D", "Inflection", "PreparedKeyline", "plane_fit",
            "prepare_keyline"]
 
 
+def _c_struct(ctype: str, obj, names) -> object:
+    """A new C struct of ``ctype`` whose vector fields ``names`` are copied from ``obj``."""
+    f = ffi.new(ctype)
+    for name in names:
+        field, v = getattr(f, name), getattr(obj, name)
+        for j in range(len(field)):
+            field[j] = float(v[j])
+    return f
+
+
 def _points(a, name: str, dim: int) -> np.ndarray:
     """(n, dim) float64 C-contiguous; a single point (dim,) is accepted as (1, dim)."""
     arr = np.asarray(a, dtype=np.float64)
@@ -54,12 +64,7 @@ class Frame:
         return np.column_stack([self.e1, self.e2, self.e3])
 
     def _c(self):
-        f = ffi.new("el_frame *")
-        for name in ("origin", "e1", "e2", "e3"):
-            v = getattr(self, name)
-            for j in range(3):
-                getattr(f, name)[j] = float(v[j])
-        return f
+        return _c_struct("el_frame *", self, ("origin", "e1", "e2", "e3"))
 
     def to_3d(self, xy) -> np.ndarray:
         """Map plane coordinates (n, 2) (or one point (2,)) to 3D: origin + x' e1 + y' e2."""
@@ -94,12 +99,7 @@ class Frame2D:
     eigenvalues: np.ndarray
 
     def _c(self):
-        f = ffi.new("el_frame2d *")
-        for name in ("origin", "f1", "f2"):
-            v = getattr(self, name)
-            for j in range(2):
-                getattr(f, name)[j] = float(v[j])
-        return f
+        return _c_struct("el_frame2d *", self, ("origin", "f1", "f2"))
 
     def to_local(self, xy) -> np.ndarray:
         """Parent (x'y') coordinates -> this frame's x''y'' coordinates."""
