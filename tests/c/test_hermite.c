@@ -72,6 +72,18 @@ static void check_result(const double p0[2], const double t0[2], const double p1
     }
 }
 
+/* Solve, check every solution, free; the number of solutions. */
+static size_t solve_and_check(const double p0[2], const double t0[2], const double p1[2],
+                              const double t1[2], const el_hermite_options *o, double tol)
+{
+    el_hermite_result r;
+    ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, o, &r), EL_OK);
+    check_result(p0, t0, p1, t1, &r, tol);
+    const size_t n = r.count;
+    el_hermite_result_free(&r);
+    return n;
+}
+
 /* ------------------------------------------------------------ seed 004 §5, figure 1 */
 
 START_TEST(paper_case1_example)
@@ -376,15 +388,8 @@ START_TEST(opposite_and_parallel_tangents)
         el_hermite_options o;
         el_hermite_options_defaults(&o);
         o.sigma = sig[i];
-        el_hermite_result r;
-        ck_assert_int_eq(el_hermite_solve(p0, t0, p1, m0, &o, &r), EL_OK);
-        check_result(p0, t0, p1, m0, &r, 1e-10);
-        total += r.count;
-        el_hermite_result_free(&r);
-        ck_assert_int_eq(el_hermite_solve(p0, t0, q1, t0, &o, &r), EL_OK);
-        check_result(p0, t0, q1, t0, &r, 1e-10);
-        total += r.count;
-        el_hermite_result_free(&r);
+        total += solve_and_check(p0, t0, p1, m0, &o, 1e-10);
+        total += solve_and_check(p0, t0, q1, t0, &o, 1e-10);
     }
     ck_assert_uint_gt(total, 4);
 }
