@@ -111,6 +111,20 @@ def circle_sketch(doc, radius=20.0, name="Circle"):
     return sk
 
 
+def write_into_new_sketch(test, feature):
+    """Write ``feature``'s curve into a new sketch in its plane (features.write_to_sketch),
+    check that it became one B-spline geometry, return the sketch."""
+    from freecad.elastica import features as F
+    doc = feature.Document
+    out = doc.addObject("Sketcher::SketchObject", "Out")
+    out.Placement = feature.Plane
+    ids = F.write_to_sketch(feature, out)
+    doc.recompute()
+    test.assertEqual(len(ids), 1)
+    test.assertEqual(out.Geometry[ids[0]].TypeId, "Part::GeomBSplineCurve")
+    return out
+
+
 def distance_to_shape(points, shape):
     """Largest distance of 3D points from a shape."""
     return max(shape.distToShape(Part.Vertex(App.Vector(*p)))[0] for p in points)

@@ -143,12 +143,7 @@ class EllipticBlendTest(unittest.TestCase):
     def test_write_into_sketch(self):
         f = F.make_ellblend(self.doc, [(self.sk, [])])
         self.doc.recompute()
-        out = self.doc.addObject("Sketcher::SketchObject", "Out")
-        out.Placement = f.Plane
-        ids = F.write_to_sketch(f, out)
-        self.doc.recompute()
-        self.assertEqual(len(ids), 1)
-        self.assertEqual(out.Geometry[ids[0]].TypeId, "Part::GeomBSplineCurve")
+        out = S.write_into_new_sketch(self, f)
         samples = [tuple(p) for p in f.Shape.Edges[0].discretize(30)]
         self.assertLess(S.distance_to_shape(samples, out.Shape), 1e-9)
 

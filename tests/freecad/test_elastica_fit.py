@@ -118,12 +118,7 @@ class FitInputsTest(unittest.TestCase):
         sk = S.points_sketch(self.doc, self.xy)
         f = F.make_fit(self.doc, [(sk, [])], Model="smooth")
         self.doc.recompute()
-        out = self.doc.addObject("Sketcher::SketchObject", "Out")
-        out.Placement = f.Plane
-        ids = F.write_to_sketch(f, out)
-        self.doc.recompute()
-        self.assertEqual(len(ids), 1)
-        self.assertEqual(out.Geometry[ids[0]].TypeId, "Part::GeomBSplineCurve")
+        out = S.write_into_new_sketch(self, f)
         pts = [tuple(p) for p in out.Shape.Edges[0].discretize(40)]
         self.assertLess(S.distance_to_shape(pts, f.Shape), 1e-7)
 

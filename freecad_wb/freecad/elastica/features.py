@@ -602,7 +602,10 @@ class _Proxy:
         self.validate(obj, prop)
 
     def validate(self, obj, prop):
-        pass
+        """Put a property edited out of range back (the B-spline Tolerance of the
+        features that have one; subclasses add theirs)."""
+        if prop == "Tolerance" and obj.Tolerance <= 0:
+            obj.Tolerance = defaults()[0]
 
     def setup(self, obj):
         pass
@@ -657,9 +660,8 @@ class FitProxy(_Proxy):
             obj.setEditorMode(name, 1)
 
     def validate(self, obj, prop):
-        if prop == "Tolerance" and obj.Tolerance <= 0:
-            obj.Tolerance = defaults()[0]
-        elif prop == "ResampleStep" and obj.ResampleStep < 0:
+        super().validate(obj, prop)
+        if prop == "ResampleStep" and obj.ResampleStep < 0:
             obj.ResampleStep = 0.0
 
     def compute(self, obj):
@@ -739,9 +741,8 @@ class BlendProxy(_Proxy):
             obj.setEditorMode(name, 1)
 
     def validate(self, obj, prop):
-        if prop == "Tolerance" and obj.Tolerance <= 0:
-            obj.Tolerance = defaults()[0]
-        elif prop == "Solution" and obj.Solution < 0:
+        super().validate(obj, prop)
+        if prop == "Solution" and obj.Solution < 0:
             obj.Solution = 0
 
     def compute(self, obj):
@@ -849,10 +850,6 @@ class EllipticBlendProxy(_Proxy):
         _add(obj, "App::PropertyPlacement", "Plane", "Result", "The plane of the curve")
         for name in ("BSplineDeviation", "ControlPoints", "Status", "Plane"):
             obj.setEditorMode(name, 1)
-
-    def validate(self, obj, prop):
-        if prop == "Tolerance" and obj.Tolerance <= 0:
-            obj.Tolerance = defaults()[0]
 
     def compute(self, obj):
         """ellblend_core's dict for the linked points; raises InputProblem."""
