@@ -40,6 +40,16 @@ class _Panel:
         L.addRow(box)
         return box
 
+    def _choice_row(self, L, label, prop, values, texts=None):
+        """A combo box bound live to the string property prop, one entry per allowed
+        value (shown as texts, if given)."""
+        box = QtGui.QComboBox()
+        box.addItems(list(texts or values))
+        box.setCurrentIndex(list(values).index(getattr(self.obj, prop)))
+        box.currentIndexChanged.connect(lambda i: self._set(prop, values[i]))
+        L.addRow(label, box)
+        return box
+
     def _tolerance_row(self, L):
         """The B-spline tolerance, edited live."""
         self.tol = QtGui.QDoubleSpinBox()
@@ -103,12 +113,7 @@ class FitPanel(_Panel):
     def __init__(self, obj, created=True):
         super().__init__(obj, created)
         L = self.layout
-        self.model = QtGui.QComboBox()
-        self.model.addItems(["discrete", "smooth"])
-        self.model.setCurrentIndex(["discrete", "smooth"].index(obj.Model))
-        self.model.currentIndexChanged.connect(
-            lambda i: self._set("Model", ["discrete", "smooth"][i]))
-        L.addRow("Model", self.model)
+        self.model = self._choice_row(L, "Model", "Model", ["discrete", "smooth"])
         self.split = self._check_row(L, "Split the keyline at its inflection", "SplitAtInflection")
         self.pin = self._check_row(L, "Pin the start to the first point", "PinEnds")
         self.step = QtGui.QDoubleSpinBox()
@@ -174,11 +179,7 @@ class BlendPanel(_Panel):
     def __init__(self, obj, created=True):
         super().__init__(obj, created)
         L = self.layout
-        self.mode = QtGui.QComboBox()
-        self.mode.addItems(["length", "tension"])
-        self.mode.setCurrentIndex(["length", "tension"].index(obj.Mode))
-        self.mode.currentIndexChanged.connect(self._mode)
-        L.addRow("Solve by", self.mode)
+        self.mode = self._choice_row(L, "Solve by", "Mode", ["length", "tension"])
         self.value = QtGui.QDoubleSpinBox()
         self.value.setRange(-1e6, 1e6)
         self.value.setDecimals(6)
@@ -202,9 +203,6 @@ class BlendPanel(_Panel):
         L.addRow(self.into_sketch)
         L.addRow(self.result)
         self.show_result()
-
-    def _mode(self, i):
-        self._set("Mode", ["length", "tension"][i])
 
     def _value(self):
         self._set("Length" if self.obj.Mode == "length" else "Tension", self.value.value())
@@ -259,17 +257,10 @@ class EllipticBlendPanel(_Panel):
     def __init__(self, obj, created=True):
         super().__init__(obj, created)
         L = self.layout
-        self.mode = QtGui.QComboBox()
-        self.mode.addItems(["through the points", "points are control points"])
-        self.mode.setCurrentIndex(F.ELLBLEND_MODES.index(obj.Mode))
-        self.mode.currentIndexChanged.connect(lambda i: self._set("Mode", F.ELLBLEND_MODES[i]))
-        L.addRow("Curve", self.mode)
-        self.conv = QtGui.QComboBox()
-        self.conv.addItems(["modulus k", "parameter m = k\u00b2"])
-        self.conv.setCurrentIndex(F.K_CONVENTIONS.index(obj.KConvention))
-        self.conv.currentIndexChanged.connect(
-            lambda i: self._set("KConvention", F.K_CONVENTIONS[i]))
-        L.addRow("Elliptic", self.conv)
+        self.mode = self._choice_row(L, "Curve", "Mode", F.ELLBLEND_MODES,
+                                     ["through the points", "points are control points"])
+        self.conv = self._choice_row(L, "Elliptic", "KConvention", F.K_CONVENTIONS,
+                                     ["modulus k", "parameter m = k\u00b2"])
         self.k = QtGui.QDoubleSpinBox()
         self.k.setRange(0.0, 0.999999)
         self.k.setDecimals(6)
