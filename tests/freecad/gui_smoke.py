@@ -54,6 +54,29 @@ def nonblank(path):
     return drawn / total, len(colours)
 
 
+def run_on(doc, command, picks):
+    """Select picks ([(object, subelement or "")]) and run command; the number of
+    document objects before."""
+    Gui.Selection.clearSelection()
+    for obj, sub in picks:
+        if sub:
+            Gui.Selection.addSelection(doc.Name, obj.Name, sub)
+        else:
+            Gui.Selection.addSelection(doc.Name, obj.Name)
+    n0 = len(doc.Objects)
+    Gui.runCommand(command)
+    pump()
+    return n0
+
+
+def open_panel(doc, command, picks, what):
+    """run_on, then check that one feature was made and its panel opened; the panel."""
+    from freecad.elastica import taskpanels as T
+    n0 = run_on(doc, command, picks)
+    check(len(doc.Objects) == n0 + 1 and T.CURRENT, f"{what} creates a feature and opens its panel")
+    return T.CURRENT[0]
+
+
 def run():
     import elastica_samples as S
     Gui.activateWorkbench("ElasticaWorkbench")
@@ -71,17 +94,10 @@ def run():
     Gui.SendMsgToActiveView("ViewFit")
 
     # Elastic blend: select two edges, run, accept the panel
-    Gui.Selection.clearSelection()
-    Gui.Selection.addSelection(doc.Name, lines_sk.Name, "Edge1")
-    Gui.Selection.addSelection(doc.Name, lines_sk.Name, "Edge2")
-    n0 = len(doc.Objects)
-    Gui.runCommand("Elastica_Blend")
-    pump()
-    check(len(doc.Objects) == n0 + 1 and T.CURRENT,
-          "Elastic blend creates a feature and opens its panel")
-    blend = T.CURRENT[0].obj
-    check(T.CURRENT[0].list.count() == len(blend.Lengths) >= 1, "blend panel lists the solutions")
-    panel = T.CURRENT[0]
+    panel = open_panel(doc, "Elastica_Blend", [(lines_sk, "Edge1"), (lines_sk, "Edge2")],
+                       "Elastic blend")
+    blend = panel.obj
+    check(panel.list.count() == len(blend.Lengths) >= 1, "blend panel lists the solutions")
     # preview: switching to the other end of the second edge recomputes the blend
     l0 = blend.Shape.Length
     panel.end2.setChecked(not blend.AtEnd2)
@@ -104,21 +120,13 @@ def run():
     check(blend.SketchGeometry1 == 0 and blend.SketchGeometry2 == 1, "blend keeps geometry indices")
 
     # Curvature comb of the blend
-    Gui.Selection.clearSelection()
-    Gui.Selection.addSelection(doc.Name, blend.Name)
-    n0 = len(doc.Objects)
-    Gui.runCommand("Elastica_Comb")
-    pump()
+    n0 = run_on(doc, "Elastica_Comb", [(blend, "")])
     comb = doc.Objects[-1]
     check(len(doc.Objects) == n0 + 1 and comb.Status == "ok", "Curvature comb creates a comb")
 
     # a second blend written into the sketch with tangency (the feature is then removed)
-    Gui.Selection.clearSelection()
-    Gui.Selection.addSelection(doc.Name, lines_sk.Name, "Edge1")
-    Gui.Selection.addSelection(doc.Name, lines_sk.Name, "Edge2")
     ng, nc = len(lines_sk.Geometry), lines_sk.ConstraintCount
-    Gui.runCommand("Elastica_Blend")
-    pump()
+    run_on(doc, "Elastica_Blend", [(lines_sk, "Edge1"), (lines_sk, "Edge2")])
     T.CURRENT[0].into_sketch.setChecked(True)
     check(T.CURRENT[0].accept(), "blend into sketch accepts")
     doc.recompute()
@@ -129,15 +137,8 @@ def run():
     # Fit elastica: a sketch B-spline through a keyline, panel options, B-spline into a new sketch
     xy, _ = S.keyline_xy(30)
     ksk = S.bspline_sketch(doc, xy)
-    Gui.Selection.clearSelection()
-    Gui.Selection.addSelection(doc.Name, ksk.Name, "Edge1")
-    n0 = len(doc.Objects)
-    Gui.runCommand("Elastica_Fit")
-    pump()
-    check(len(doc.Objects) == n0 + 1 and T.CURRENT,
-          "Fit elastica creates a feature and opens its panel")
-    fit = T.CURRENT[0].obj
-    panel = T.CURRENT[0]
+    panel = open_panel(doc, "Elastica_Fit", [(ksk, "Edge1")], "Fit elastica")
+    fit = panel.obj
     check("rms" in panel.result.text() and "k =" in panel.result.text(),
           "fit panel shows rms, max error, k, status")
     panel.model.setCurrentIndex(1)
@@ -164,15 +165,8 @@ def run():
 
     # Elliptic blend curve: a sketch of four points, panel options, B-spline into a new sketch
     psk = S.points_sketch(doc, [(0, -60), (20, -25), (55, -20), (80, -55)], "FourPoints")
-    Gui.Selection.clearSelection()
-    Gui.Selection.addSelection(doc.Name, psk.Name)
-    n0 = len(doc.Objects)
-    Gui.runCommand("Elastica_EllipticBlend")
-    pump()
-    check(len(doc.Objects) == n0 + 1 and T.CURRENT,
-          "Elliptic blend curve creates a feature and opens its panel")
-    ell = T.CURRENT[0].obj
-    panel = T.CURRENT[0]
+    panel = open_panel(doc, "Elastica_EllipticBlend", [(psk, "")], "Elliptic blend curve")
+    ell = panel.obj
     check(ell.Status == "ok" and "deviation" in panel.result.text(),
           f"elliptic blend panel shows the B-spline deviation ({ell.Status})")
     l0 = ell.Shape.Length
