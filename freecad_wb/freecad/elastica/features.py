@@ -549,6 +549,16 @@ def _add(obj, kind, name, group, tip, value=None):
             setattr(obj, name, value)
 
 
+def _add_enum(obj, name, group, tip, values, value=None):
+    """An enumeration property; when it has no values yet (new object) they are
+    set, and the current one to value (default: the first)."""
+    _add(obj, "App::PropertyEnumeration", name, group, tip)
+    if not obj.getEnumerationsOfProperty(name):
+        setattr(obj, name, list(values))
+        if value is not None:
+            setattr(obj, name, value)
+
+
 def _report(obj, msg):
     App.Console.PrintError(f"Elastica {obj.Label}: {msg}\n")
     if "Status" in obj.PropertiesList:
@@ -624,12 +634,9 @@ class FitProxy(_Proxy):
              "A CSV / text file of x,y[,z] points, used instead of Source when set")
         _add(obj, "App::PropertyIntegerConstraint", "SamplesPerEdge", "Input",
              "Points sampled on each curved source edge", (60, 4, 10000, 1))
-        _add(obj, "App::PropertyEnumeration", "Model", "Fit",
-             "discrete: Bobenko-Suris discrete elastica through the (resampled) points; "
-             "smooth: the smooth elastica")
-        if not obj.getEnumerationsOfProperty("Model"):
-            obj.Model = ["discrete", "smooth"]
-            obj.Model = model
+        _add_enum(obj, "Model", "Fit",
+                  "discrete: Bobenko-Suris discrete elastica through the (resampled) points; "
+                  "smooth: the smooth elastica", ["discrete", "smooth"], model)
         _add(obj, "App::PropertyBool", "SplitAtInflection", "Fit",
              "Fit a keyline as two elasticae, one each side of its inflection (seed 000 §5)",
              False)
@@ -714,10 +721,9 @@ class BlendProxy(_Proxy):
             _add(obj, "App::PropertyInteger", f"SketchGeometry{i}", "Input",
                  f"Index of Edge{i}'s geometry in its sketch (-1: use the edge name); sketch "
                  "edge names change when geometry is added, geometry indices do not", -1)
-        _add(obj, "App::PropertyEnumeration", "Mode", "Blend",
-             "Solve the Hermite problem for a given arc length or a given tension")
-        if not obj.getEnumerationsOfProperty("Mode"):
-            obj.Mode = ["length", "tension"]
+        _add_enum(obj, "Mode", "Blend",
+                  "Solve the Hermite problem for a given arc length or a given tension",
+                  ["length", "tension"])
         _add(obj, "App::PropertyFloat", "Length", "Blend",
              "Arc length of the blend (mm); 0 = 1.25 x the distance of the ends", 0.0)
         _add(obj, "App::PropertyFloat", "Tension", "Blend",
@@ -824,19 +830,15 @@ class EllipticBlendProxy(_Proxy):
         _add(obj, "App::PropertyLinkSubList", "Points", "Input",
              "Four coplanar points, in order: vertices of sketches or shapes, or a sketch "
              "holding four sketch points")
-        _add(obj, "App::PropertyEnumeration", "Mode", "Blend",
-             "interpolate: the curve passes through the four points (chord-length "
-             "parameters); control: the points are its control points")
-        if not obj.getEnumerationsOfProperty("Mode"):
-            obj.Mode = list(ELLBLEND_MODES)
+        _add_enum(obj, "Mode", "Blend",
+                  "interpolate: the curve passes through the four points (chord-length "
+                  "parameters); control: the points are its control points", ELLBLEND_MODES)
         _add(obj, "App::PropertyFloat", "K", "Blend",
              "Elliptic modulus k in [0, 1) of the basis {1-t, sn((1-t)K), sn(Kt), t} "
              "(or m = k^2, see KConvention); k = 0 gives sines", 0.5)
-        _add(obj, "App::PropertyEnumeration", "KConvention", "Blend",
-             "modulus: K is the modulus k; parameter: K is m = k^2 (the paper's "
-             "convention: its rope example 'k = 0.3' is m = 0.3)")
-        if not obj.getEnumerationsOfProperty("KConvention"):
-            obj.KConvention = list(K_CONVENTIONS)
+        _add_enum(obj, "KConvention", "Blend",
+                  "modulus: K is the modulus k; parameter: K is m = k^2 (the paper's "
+                  "convention: its rope example 'k = 0.3' is m = 0.3)", K_CONVENTIONS)
         _add(obj, "App::PropertyFloat", "D", "Blend",
              "End-derivative parameter d > 0: the curve leaves q0 with velocity "
              "d (q1 - q0) and ends with d (q3 - q2)", 2.0)
