@@ -88,7 +88,15 @@ class _Panel:
         self.show_result()
 
     def show_result(self):
-        pass
+        """The feature's status in red when it is an error, else result_text()."""
+        o = self.obj
+        if o.Status.startswith("error"):
+            self.result.setText(f"<b style='color:#b00'>{o.Status}</b>")
+        else:
+            self.result.setText(self.result_text())
+
+    def result_text(self):
+        return f"status: {self.obj.Status}"
 
     def _close(self):
         CURRENT[:] = []
@@ -135,15 +143,11 @@ class FitPanel(_Panel):
         L.addRow(self.result)
         self.show_result()
 
-    def show_result(self):
+    def result_text(self):
         o = self.obj
-        if o.Status.startswith("error"):
-            self.result.setText(f"<b style='color:#b00'>{o.Status}</b>")
-        else:
-            ks = ", ".join(f"{k:.4g}" for k in o.K)
-            self.result.setText(f"rms {o.Rms:.4g} mm, max error {o.MaxError:.4g} mm<br>"
-                                f"k = {ks}<br>B-spline deviation {o.BSplineDeviation:.3g} mm"
-                                f"<br>status: {o.Status}")
+        ks = ", ".join(f"{k:.4g}" for k in o.K)
+        return (f"rms {o.Rms:.4g} mm, max error {o.MaxError:.4g} mm<br>"
+                f"k = {ks}<br>B-spline deviation {o.BSplineDeviation:.3g} mm<br>status: {o.Status}")
 
     def accept(self):
         if self.obj.Status.startswith("error"):
@@ -280,13 +284,10 @@ class EllipticBlendPanel(_Panel):
         L.addRow(self.result)
         self.show_result()
 
-    def show_result(self):
+    def result_text(self):
         o = self.obj
-        if o.Status.startswith("error"):
-            self.result.setText(f"<b style='color:#b00'>{o.Status}</b>")
-        else:
-            self.result.setText(f"B-spline deviation {o.BSplineDeviation:.3g} mm "
-                                f"(tolerance {o.Tolerance:.3g} mm)<br>status: {o.Status}")
+        return (f"B-spline deviation {o.BSplineDeviation:.3g} mm "
+                f"(tolerance {o.Tolerance:.3g} mm)<br>status: {o.Status}")
 
     accept = FitPanel.accept      # the same output step: B-spline into a sketch, keep or not
 
