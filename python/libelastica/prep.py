@@ -34,6 +34,15 @@ def _c_struct(ctype: str, obj, names) -> object:
     return f
 
 
+def _map_points(fn, frame, a, din: int, dout: int, what: str) -> np.ndarray:
+    """fn(frame, n, in, out) on the points a (n, din) or one point (din,): (n, dout) or (dout,)."""
+    single = np.ndim(a) == 1
+    pts = _points(a, "xyz"[:din], din)
+    out = np.empty((pts.shape[0], dout))
+    check(fn(frame._c(), pts.shape[0], dptr(pts), dptr(out)), what)
+    return out[0] if single else out
+
+
 def _points(a, name: str, dim: int) -> np.ndarray:
     """(n, dim) float64 C-contiguous; a single point (dim,) is accepted as (1, dim)."""
     arr = np.asarray(a, dtype=np.float64)
@@ -68,11 +77,7 @@ class Frame:
 
     def to_3d(self, xy) -> np.ndarray:
         """Map plane coordinates (n, 2) (or one point (2,)) to 3D: origin + x' e1 + y' e2."""
-        single = np.ndim(xy) == 1
-        pts = _points(xy, "xy", 2)
-        out = np.empty((pts.shape[0], 3))
-        check(lib.el_frame_to_3d(self._c(), pts.shape[0], dptr(pts), dptr(out)), "Frame.to_3d")
-        return out[0] if single else out
+        return _map_points(lib.el_frame_to_3d, self, xy, 2, 3, "Frame.to_3d")
 
     def project(self, xyz, return_z: bool = False):
         """Plane coordinates (n, 2) of 3D points (n, 3); with ``return_z`` also the
@@ -103,21 +108,11 @@ class Frame2D:
 
     def to_local(self, xy) -> np.ndarray:
         """Parent (x'y') coordinates -> this frame's x''y'' coordinates."""
-        single = np.ndim(xy) == 1
-        pts = _points(xy, "xy", 2)
-        out = np.empty_like(pts)
-        check(lib.el_frame2d_to_local(self._c(), pts.shape[0], dptr(pts), dptr(out)),
-              "Frame2D.to_local")
-        return out[0] if single else out
+        return _map_points(lib.el_frame2d_to_local, self, xy, 2, 2, "Frame2D.to_local")
 
     def to_parent(self, xy) -> np.ndarray:
         """This frame's x''y'' coordinates -> parent (x'y') coordinates."""
-        single = np.ndim(xy) == 1
-        pts = _points(xy, "xy", 2)
-        out = np.empty_like(pts)
-        check(lib.el_frame2d_to_parent(self._c(), pts.shape[0], dptr(pts), dptr(out)),
-              "Frame2D.to_parent")
-        return out[0] if single else out
+        return _map_points(lib.el_frame2d_to_parent, self, xy, 2, 2, "Frame2D.to_parent")
 
 
 def plane_fit(xyz) -> Tuple[np.ndarray, Frame]:
