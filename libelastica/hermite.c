@@ -155,7 +155,6 @@ typedef struct hprob {
 /* Curvature data at both ends and the values derived from it. */
 typedef struct hstate {
     double k0, k0p, k1, k1p;   /* kappa0, kappa0', kappa1, kappa1' */
-    double Fn, km2;            /* |F|, kappa_m^2 */
     int infl;                  /* inflectional (k < 1) */
     double s0, c0, s1, c1;     /* inflectional: sn, cn of u at both ends */
     int big;                   /* inflectional: u(L) - u(0) exceeds half a period (2 Kc) */
@@ -281,8 +280,6 @@ static int shape_prepare(const hprob *pr, hstate *st, shapework *w)
         w->Escale = km2 * iw;
         w->Dfac = m2;
     }
-    st->Fn = Fn;
-    st->km2 = km2;
     st->infl = kc2 > 0.0;
     w->FP = F1 * pr->P1 + F2 * pr->P2;
     w->iFn = 2.0 * i2F;
@@ -595,7 +592,7 @@ static int split_points(const hprob *pr, int b, double X, const double *r40, con
 #define NCACHE 4
 typedef struct {
     const hprob *pr;
-    int b, nfail;
+    int b;
     int ci;                      /* next slot */
     double cx[NCACHE];           /* cached abscissae (NaN: empty) */
     int crc[NCACHE], cfull[NCACHE];
@@ -647,7 +644,7 @@ static double fobj_coarse(fctx *c, double x)
     hstate st;
     int rc = curvdata(c->pr, x, c->b, &st);
     if (!rc) rc = shape_eval(c->pr, COARSE_QS, &st);
-    if (rc) { c->nfail++; return GSL_NAN; }
+    if (rc) return GSL_NAN;
     return st.f;
 }
 
@@ -655,7 +652,7 @@ static double fobj(double x, void *p)
 {
     fctx *c = p;
     hstate st;
-    if (cached_eval(c, x, 0, &st)) { c->nfail++; return GSL_NAN; }
+    if (cached_eval(c, x, 0, &st)) return GSL_NAN;
     return st.f;
 }
 
