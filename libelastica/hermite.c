@@ -209,6 +209,22 @@ static int curvdata(const hprob *pr, double x, int b, hstate *st)
     return isfinite(k1) && isfinite(k0p) ? EL_OK : EL_EDOM;
 }
 
+/* The kind of curve a curvature state starts (Theorem 7), |F| into *Fn.
+ * CLASS_NONE: none the objective covers: F = 0 (the circle kappa_m^2 = sigma,
+ * singular, (45)), kappa_m = 0 (straight, handled apart), or non-inflectional with
+ * kappa0 kappa1 <= 0 against (44); CLASS_MIXED: see piece_class. */
+enum { CLASS_NONE, CLASS_INFL, CLASS_NONINFL, CLASS_MIXED };
+
+static int state_class(const hprob *pr, const hstate *st, double *Fn)
+{
+    const double s = pr->sigma, F1 = -2.0 * st->k0p, F2 = st->k0 * st->k0 - s;
+    /* sqrt rather than hypot (inner loop; the values are far from overflow) */
+    *Fn = sqrt(F1 * F1 + F2 * F2);
+    if (!(*Fn > 1e-13 * (1.0 + fabs(s))) || !(*Fn + s > 0.0)) return CLASS_NONE;
+    if (*Fn > s) return CLASS_INFL;            /* k < 1: k'^2 = (|F| - sigma) / (2 |F|) > 0 */
+    return st->k0 * st->k1 > 0.0 ? CLASS_NONINFL : CLASS_NONE;
+}
+
 /* What shape_finish needs besides the two Carlson integrals of the reduced amplitude:
  * L = Lscale F, E = Escale (F - Dfac (D + prod)), f = (E - sigma L - FP) iFn. */
 typedef struct {
@@ -222,13 +238,10 @@ typedef struct {
  * reduced amplitude (shape_eval). */
 static int shape_prepare(const hprob *pr, hstate *st, shapework *w)
 {
-    const double s = pr->sigma;
-    const double F1 = -2.0 * st->k0p, F2 = st->k0 * st->k0 - s;
-    /* sqrt rather than hypot (inner loop; the values are far from overflow) */
-    const double Fn = sqrt(F1 * F1 + F2 * F2);
-    if (!(Fn > 1e-13 * (1.0 + fabs(s)))) return EL_EDOM; /* circle (kappa_m^2 = sigma), (45) */
-    const double km2 = Fn + s;
-    if (!(km2 > 0.0)) return EL_EDOM;                    /* kappa = 0: straight, handled apart */
+    double Fn;
+    const int cls = state_class(pr, st, &Fn);
+    if (cls == CLASS_NONE) return EL_EDOM;
+    const double s = pr->sigma, F1 = -2.0 * st->k0p, F2 = st->k0 * st->k0 - s, km2 = Fn + s;
     /* k^2 = kappa_m^2 / (2 |F|) and its complement, exact up to the one difference
      * |F| - sigma, which is the separatrix distance itself */
     const double i2F = 0.5 / Fn, k2 = km2 * i2F, kc2 = (Fn - s) * i2F, rmu = sqrt(0.5 * Fn);
@@ -237,7 +250,7 @@ static int shape_prepare(const hprob *pr, hstate *st, shapework *w)
     double sh0, ch0, sh1, ch1, smu, cmu;
     half_angle(F1, F2, 2.0 * i2F, &sh0, &ch0);
     half_angle(S1, C1, 1.0 / sqrt(S1 * S1 + C1 * C1), &sh1, &ch1);
-    if (kc2 > 0.0) {
+    if (cls == CLASS_INFL) {
         /* amplitude a of u: sin a = sn u = sin h / k, cos a = cn u = kappa / kappa_m,
          * delta amplitude dn u = cos h. L in (0, T] is u1 - u0 in (0, 4 Kc], whose
          * amplitude mu is in (0, 2 pi]; sin mu = 0 with cos mu > 0 is a whole period
@@ -265,7 +278,6 @@ static int shape_prepare(const hprob *pr, hstate *st, shapework *w)
          * (0, T] is v1 - v0 in (0, 2 Kc], amplitude mu in (0, pi]: (sin, cos) of mu are
          * known up to a common sign (b is defined mod pi), fixed by sin mu >= 0; sin mu = 0
          * is a whole period (the end state repeats the start) */
-        if (!(st->k0 * st->k1 > 0.0)) return EL_EDOM;
         const double eps = st->k0 > 0.0 ? 1.0 : -1.0, km = sqrt(km2);
         const double m2 = 2.0 * Fn / km2, mc2 = (s - Fn) / km2;
         const double b0 = eps * sh0, b1 = eps * sh1;
@@ -280,7 +292,7 @@ static int shape_prepare(const hprob *pr, hstate *st, shapework *w)
         w->Escale = km2 * iw;
         w->Dfac = m2;
     }
-    st->infl = kc2 > 0.0;
+    st->infl = cls == CLASS_INFL;
     w->FP = F1 * pr->P1 + F2 * pr->P2;
     w->iFn = 2.0 * i2F;
     return EL_OK;
@@ -524,20 +536,14 @@ static int root_branch(const hprob *pr, double x)
     return best;
 }
 
-/* The kind of curve at x, from the curvature data only (cheap). CLASS_NONE: no
- * curve (outside (18), non-inflectional with kappa0 kappa1 <= 0 against (44), or
- * the objective singular: F = 0); CLASS_MIXED: see piece_class. */
-enum { CLASS_NONE, CLASS_INFL, CLASS_NONINFL, CLASS_MIXED };
 
+/* The kind of curve at x (state_class; cheap, the curvature data only); CLASS_NONE
+ * also outside (18). */
 static int point_class(const hprob *pr, int b, double x)
 {
     hstate st;
-    if (curvdata(pr, x, b, &st)) return CLASS_NONE;
-    const double F1 = -2.0 * st.k0p, F2 = st.k0 * st.k0 - pr->sigma, Fn = sqrt(F1 * F1 + F2 * F2);
-    /* shape_prepare's conditions: F = 0 (circle), kappa_m = 0 (straight) */
-    if (!(Fn > 1e-13 * (1.0 + fabs(pr->sigma))) || !(Fn + pr->sigma > 0.0)) return CLASS_NONE;
-    if (Fn > pr->sigma) return CLASS_INFL;               /* kc2 > 0 in shape_eval */
-    return st.k0 * st.k1 > 0.0 ? CLASS_NONINFL : CLASS_NONE;
+    double Fn;
+    return curvdata(pr, x, b, &st) ? CLASS_NONE : state_class(pr, &st, &Fn);
 }
 
 /* Split points of branch b: (18) ends, (40) roots, (44) kappa0 = 0 and kappa1 = 0,
