@@ -35,7 +35,6 @@
 #include <gsl/gsl_min.h>
 #include <gsl/gsl_poly.h>
 #include <gsl/gsl_roots.h>
-#include <gsl/gsl_sf_ellint.h>
 #include <stdlib.h>
 #include <string.h>
 
