@@ -8,7 +8,7 @@
  * may be called from several threads at once.
  *
  * Sections follow the files in libelastica/: status, jacobi, smooth,
- * discrete, guess, fit, prep, hermite, affine, bspline, blend.
+ * discrete, guess, fit, prep, hermite, spline, affine, bspline, blend.
  *
  * This header is parsed by the Python binding (cffi cdef) after the
  * preprocessor lines are removed: no macros inside declarations.
@@ -594,6 +594,147 @@ typedef struct el_hermite_analysis {
 
 int el_hermite_analyse(const double P[2], const double V[2], double sigma,
                        el_hermite_analysis *a);
+
+/* ------------------------------------------------------------------- spline */
+
+/*
+ * Elastic splines (issue 14): the shape of a thin batten through N ducks. A
+ * chain of smooth elasticae, piece i from point i to point i+1, each of the one
+ * tension sigma (curvature 2 kappa'' + kappa^3 - sigma kappa = 0, seed 004),
+ * with position, tangent and curvature continuous at every point; kappa' jumps
+ * there (the duck's force). It is a critical point of
+ * integral kappa^2 + sigma ds among the curves through the points, the pieces
+ * chosen on the branch of least energy (no loops where the points are a gentle
+ * curve).
+ *   EL_SPLINE_TENSION: sigma >= 0 given (1/length^2); sigma = 0 is the
+ *       free-sliding batten, which need not exist (EL_EDOM);
+ *   EL_SPLINE_LENGTH: the total length given; sigma (any sign: < 0 is a
+ *       batten pushed together) is computed.
+ * Forces: with the bending energy written (EI/2) integral kappa^2 ds, each piece
+ * carries the constant force (seed 004 (9)-(10); derived in spline.c)
+ *   F = (sigma - kappa^2) T - 2 kappa' N     (T, N: unit tangent and normal),
+ * in units of EI/2: the force the batten after a section exerts on the batten
+ * before it (tension positive along T). The duck at an interior point i holds
+ * F_{i-1} - F_i (normal to the batten, as for a frictionless duck, because the
+ * tension is common).
+ */
+enum el_spline_mode { EL_SPLINE_TENSION = 0, EL_SPLINE_LENGTH = 1 };
+
+/* End conditions of an open spline. */
+enum el_spline_end_kind {
+    EL_SPLINE_NATURAL = 0,   /* a free end: kappa = 0 there */
+    EL_SPLINE_TANGENT = 1,   /* a clamped end: the tangent direction is given */
+    EL_SPLINE_G2 = 2         /* tangent and curvature given (meets other geometry G2); see below */
+};
+
+typedef struct el_spline_end {
+    int kind;              /* el_spline_end_kind; default EL_SPLINE_NATURAL */
+    double tangent[2];     /* TANGENT, G2: the direction of travel there (at the last point: the
+                              direction the curve arrives in); nonzero, normalised inside */
+    double curvature;      /* G2: the signed curvature there (+ = counter-clockwise), 1/length */
+} el_spline_end;
+
+typedef struct el_spline_options {
+    int mode;              /* EL_SPLINE_TENSION (default) or EL_SPLINE_LENGTH */
+    double sigma;          /* tension mode: sigma >= 0 (1/length^2); default 0 */
+    double length;         /* length mode: total length > the polygon's; default 0 (unset) */
+    int closed;            /* 1: a closed curve through the points (start/end ignored); default 0 */
+    el_spline_end start;   /* end condition at the first point; default natural */
+    el_spline_end end;     /* end condition at the last point; default natural */
+    double tol;            /* accepted residual: position / chord, tangent (rad), curvature jump
+                              times the local chord, length / length; 1e-14..1e-3, default 1e-10 */
+    int max_iter;          /* Newton iterations per solve, 1..1000; default 60 */
+    int max_steps;         /* continuation steps (in sigma, then in length), 1..1000; default 60 */
+} el_spline_options;
+
+/*
+ * The spline. Open: npieces = npoints - 1; closed: npieces = npoints (the
+ * last piece runs from the last point back to the first; a last point equal
+ * to the first is dropped first). pieces[i] starts exactly at point i
+ * (x0, y0 are the given coordinates) and ends at point i+1 within the
+ * residual. Straight pieces (collinear data) have k = 0: kappa = 0 solves the
+ * curvature equation for every sigma.
+ */
+typedef struct el_spline_result {
+    size_t npoints;        /* points used (closed: without a repeated first point) */
+    size_t npieces;
+    el_smooth_params *pieces;  /* npieces, library-owned */
+    double *sigmas;        /* npieces: each piece's tension (sigma except a G2 end's span) */
+    double *forces;        /* 2 npieces: each piece's constant force F (see above) */
+    double *angles;        /* npoints: tangent angle at each point (rad, continuous along the curve) */
+    double *curvatures;    /* npoints: curvature at each point */
+    double sigma;          /* the tension (given or computed) */
+    double length;         /* total arc length */
+    double energy;         /* bending energy integral kappa^2 ds of the whole curve */
+    double max_curvature;  /* max |kappa| over the whole curve */
+    double residual;       /* largest of the accepted residuals (see tol), measured at the end */
+    int iterations;        /* Newton iterations spent, over all continuation steps */
+} el_spline_result;
+
+/* Defaults: tension mode, sigma 0, open, natural ends, tol 1e-10, max_iter 60, max_steps 60. */
+void el_spline_options_defaults(el_spline_options *opt);
+
+/*
+ * The elastic spline through the n points xy (2n, interleaved).
+ * Method (spline.c): Newton on the tangent angles at the points (and sigma in
+ * length mode) with the curvature jumps as equations; each piece is the
+ * Hermite elastica from (point i, angle i) to (point i+1, angle i+1) at its
+ * tension, continued from the previous iterate by Newton on its own
+ * parameters, and the derivatives of its end curvatures by the implicit
+ * function theorem: the Jacobian is tridiagonal (cyclic when closed, bordered
+ * in length mode), solved by GSL in O(n) per iteration. Start: tangents of the
+ * circles through three consecutive points, pieces from the linearised batten
+ * (el_hermite_solve where that fails); if Newton fails there, continuation
+ * from a high tension down to sigma, and in length mode from the length of a
+ * tension solution to the one asked for. Work is bounded: at most
+ * max_steps continuation steps of at most max_iter Newton iterations, each
+ * with at most 12 step halvings, each O(n).
+ * End conditions (open curves): natural or tangent at either end: a batten
+ * with given tension has exactly one degree of freedom per end. A G2 end
+ * (tangent and curvature) asks one more: the span next to it takes its own
+ * tension (sigmas[0] or sigmas[npieces-1]), as if the duck at the other end of
+ * that span also held the batten lengthwise. A span can serve one G2 end only,
+ * and in length mode some span must keep the common sigma: two points with a G2
+ * end in length mode, or with two G2 ends, are EL_EDOM.
+ * Degenerate data: collinear points in order along the line with natural (or
+ * along-the-line tangent) ends give the straight line (k = 0 pieces; in length
+ * mode only when the length is the polygon's); two points with natural ends are
+ * the straight segment, with a tangent they are the Hermite problem at that
+ * tension. Two consecutive points that coincide are EL_EINVAL (the batten
+ * cannot pass a duck twice in no length); a closed curve needs 3 distinct points.
+ * res is overwritten (not freed first): on EL_OK it holds the spline; on every
+ * error it is left empty (npieces = 0, NULL arrays).
+ * Errors: EL_EINVAL (NULL, n < 2, non-finite or coincident consecutive points,
+ * bad options: sigma < 0 or non-finite in tension mode, zero tangent, closed with
+ * fewer than 3 points), EL_EDOM (length mode with length <= the polygon's length
+ * (unless the points are collinear and it is equal); tension 0 when the
+ * free-sliding batten does not exist: continuation from a high tension cannot
+ * reach sigma = 0, the batten slides off its ducks; G2 ends without a span of
+ * their own, see above), EL_ENOCONV (Newton and continuation did not reach tol),
+ * EL_ENOMEM, EL_EINTERNAL.
+ */
+int el_spline_solve(const double *xy, size_t n, const el_spline_options *opt,
+                    el_spline_result *res);
+
+/* Release the arrays of res and zero it; NULL is a no-op. */
+void el_spline_result_free(el_spline_result *res);
+
+/*
+ * One B-spline for the whole spline (planar, degree 3..7, clamped) within tol
+ * of it: each piece by el_smooth_to_bspline_g2 (end point, unit tangent and
+ * curvature exact, arc-length parameter), joined with knot multiplicity
+ * degree - 2 at the points, so the B-spline is C2 in its parameter, which is
+ * the arc length of the spline from point 0 (closed: the joint at point 0 stays
+ * a clamped end, G2 by the same end conditions). out->max_deviation is the
+ * largest certified distance of the pieces (plus the rounding of the joins).
+ * Errors: EL_EINVAL (NULL, res empty, tol <= 0, degree outside 3..7), EL_EDOM
+ * (tol below what double precision resolves, see el_smooth_to_bspline),
+ * EL_EMAXITER (some piece did not reach tol: the B-spline is returned with its
+ * honest certified distance), EL_ENOMEM, EL_ESINGULAR. out untouched on errors
+ * other than EL_EMAXITER.
+ */
+struct el_bspline;   /* defined in the bspline section below */
+int el_spline_to_bspline(const el_spline_result *res, double tol, int degree, struct el_bspline *out);
 
 /* ------------------------------------------------------------------- affine */
 
