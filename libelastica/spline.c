@@ -77,7 +77,6 @@
 #include <string.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_linalg.h>
-#include <gsl/gsl_permutation.h>
 #include <gsl/gsl_sf_ellint.h>
 
 enum { NV = 5 };                      /* piece unknowns: phi, nu, k, q, L */
@@ -135,6 +134,48 @@ typedef struct spline_ws {
     double tol, aim;         /* accepted and aimed-at residual */
     int near;                /* the state is a solution to what the parametrisation resolves */
 } spline_ws;
+
+/* ------------------------------------------------------------------ small dense systems */
+
+/*
+ * LU with partial pivoting of the n x n row-major a (n <= NV), in place, and
+ * its solve. Written out because GSL's LU sends every triangular solve through
+ * BLAS (dtrsv with OpenBLAS's locking), about ten times the arithmetic of a
+ * 5 x 5 system, and the spline factors one per piece per Newton iteration.
+ * EL_ESINGULAR on a zero (or non-finite) pivot.
+ */
+static int lu_factor(double *a, int n, int *perm)
+{
+    for (int c = 0; c < n; c++) {
+        int p = c;
+        for (int r = c + 1; r < n; r++)
+            if (fabs(a[r * n + c]) > fabs(a[p * n + c])) p = r;
+        perm[c] = p;
+        if (!(fabs(a[p * n + c]) > 1e-300) || !isfinite(a[p * n + c])) return EL_ESINGULAR;
+        if (p != c)
+            for (int j = 0; j < n; j++) { const double t = a[c * n + j]; a[c * n + j] = a[p * n + j]; a[p * n + j] = t; }
+        const double inv = 1.0 / a[c * n + c];
+        for (int r = c + 1; r < n; r++) {
+            const double f = a[r * n + c] *= inv;
+            for (int j = c + 1; j < n; j++) a[r * n + j] -= f * a[c * n + j];
+        }
+    }
+    return EL_OK;
+}
+
+static void lu_solve(const double *a, int n, const int *perm, double *b)
+{
+    for (int c = 0; c < n; c++) {   /* the row exchanges, in order */
+        const double t = b[perm[c]]; b[perm[c]] = b[c]; b[c] = t;
+    }
+    for (int r = 1; r < n; r++)
+        for (int c = 0; c < r; c++) b[r] -= a[r * n + c] * b[c];
+    for (int r = n - 1; r >= 0; r--) {
+        double sum = b[r];
+        for (int j = r + 1; j < n; j++) sum -= a[r * n + j] * b[j];
+        b[r] = sum / a[r * n + r];
+    }
+}
 
 /* ------------------------------------------------------------------ one piece */
 
@@ -234,19 +275,13 @@ static int piece_eval(piece *pc, const targets *t, int jac)
     memcpy(J + 3 * NV, th1, sizeof th1);
     memcpy(J + 4 * NV, ten, sizeof ten);
 
-    gsl_matrix_view A = gsl_matrix_view_array(J, NV, NV);
-    size_t pdata[NV];
-    gsl_permutation perm = {NV, pdata};
-    int sgn;
-    if (gsl_linalg_LU_decomp(&A.matrix, &perm, &sgn)) return EL_ESINGULAR;
-    for (int i = 0; i < NV; i++)
-        if (!(fabs(J[i * NV + i]) > 1e-300)) return EL_ESINGULAR;
+    int perm[NV];
+    if (lu_factor(J, NV, perm)) return EL_ESINGULAR;
     for (int r = 0; r < 4; r++) {
         double rhs[NV] = {0};
         if (r == 0) memcpy(rhs, pc->R, sizeof rhs);
         else rhs[r + 1] = r == 3 ? h2 : 1.0;
-        gsl_vector_view bv = gsl_vector_view_array(rhs, NV);
-        if (gsl_linalg_LU_svx(&A.matrix, &perm, &bv.vector)) return EL_ESINGULAR;
+        lu_solve(J, NV, perm, rhs);
         memcpy(pc->D[r], rhs, sizeof rhs);
         double s0 = 0.0, s1 = 0.0;
         for (int i = 0; i < NV; i++) { s0 += g0[i] * rhs[i]; s1 += g1[i] * rhs[i]; }
@@ -265,9 +300,11 @@ static double max_abs(const double *v, size_t n)
     return m;
 }
 
-/* Incomplete elliptic integral of the first kind F(psi | k), any real psi, k <= 1. */
+/* Incomplete elliptic integral of the first kind F(psi | k), any real psi, k <= 1
+ * (k = 1: |psi| < pi/2, F = atanh(sin psi) = asinh(tan psi), where GSL stops). */
 static double ellint_F(double psi, double k)
 {
+    if (k >= 1.0) return fabs(psi) < 0.5 * M_PI ? asinh(tan(psi)) : NAN;
     gsl_sf_result r;
     if (gsl_sf_ellint_F_e(psi, k, GSL_PREC_DOUBLE, &r)) return NAN;
     return r.val;
@@ -408,13 +445,9 @@ static int piece_start(piece *pc, const targets *t)
         M[(0 + e) * 4 + 0] = 1.0; M[(0 + e) * 4 + 1] = s; M[(0 + e) * 4 + 2] = b1[0]; M[(0 + e) * 4 + 3] = b2[0];
         M[(2 + e) * 4 + 0] = 0.0; M[(2 + e) * 4 + 1] = 1.0; M[(2 + e) * 4 + 2] = b1[1]; M[(2 + e) * 4 + 3] = b2[1];
     }
-    gsl_matrix_view A = gsl_matrix_view_array(M, 4, 4);
-    size_t pdata[4];
-    gsl_permutation perm = {4, pdata};
-    int sgn;
-    gsl_vector_view bv = gsl_vector_view_array(rhs, 4);
-    if (gsl_linalg_LU_decomp(&A.matrix, &perm, &sgn) || gsl_linalg_LU_svx(&A.matrix, &perm, &bv.vector))
-        return EL_ESINGULAR;
+    int perm[4];
+    if (lu_factor(M, 4, perm)) return EL_ESINGULAR;
+    lu_solve(M, 4, perm, rhs);
     /* state at the midpoint */
     const double sm = 0.5 * h;
     double wd[4];
@@ -660,7 +693,9 @@ static int chain_newton(spline_ws *w, int cap, double aim, double accept)
         const double sigma0 = w->sigma;
         int ok = 0;
         double mnew = INFINITY;
-        for (int hv = 0; hv <= MAX_HALVINGS; hv++, al *= 0.5) {
+        /* already accepted: a step that does not help is rounding, not worth halving */
+        const int halvings = w->resid <= accept ? 0 : MAX_HALVINGS;
+        for (int hv = 0; hv <= halvings; hv++, al *= 0.5) {
             for (size_t i = 0; i < n; i++) w->x[i] = w->xs[i] + al * w->y[i];
             w->sigma = sigma0 + al * ds;
             int bad = 0;
@@ -733,7 +768,10 @@ static int start_pieces(spline_ws *w)
         piece *pc = &w->pc[j];
         targets t;
         piece_targets(w, j, &t);
-        if (!piece_start(pc, &t) && !piece_newton(pc, &t, 1e-12)) continue;
+        /* a start only: near enough is good (nearly straight pieces under tension
+         * stop short of 1e-12, see NEAR_RESID) */
+        if (!piece_start(pc, &t) && (!piece_newton(pc, &t, 1e-8) || max_abs(pc->R, NV) <= 1e-6))
+            continue;
         int st = piece_hermite(pc, &t);
         if (st == EL_ENOMEM) return st;
         if (st) return EL_ENOCONV;
@@ -830,6 +868,14 @@ static void set_sigma(spline_ws *w, double t, const double *par)
 {
     const double a = par[0] + par[2], b = par[1] + par[2];
     w->sigma = t >= 1.0 ? par[1] : a * pow(b / a, t) - par[2];
+}
+
+/* L(t) from par[0] (t = 0) to par[1], geometrically in L - par[2] (the polygon's
+ * length, near which the bow is small). */
+static void set_length(spline_ws *w, double t, const double *par)
+{
+    const double a = par[0] - par[2], b = par[1] - par[2];
+    w->Lt = t >= 1.0 ? par[1] : par[2] + a * pow(b / a, t);
 }
 
 /* sigma(t) linear from par[0] to par[1]. */
@@ -1180,7 +1226,7 @@ int el_spline_solve(const double *xy, size_t n, const el_spline_options *opt,
     const double S = Lp / (double)m;   /* the unit: mean chord */
     w.n = n; w.m = m; w.closed = closed; w.lmode = lmode;
     w.tol = opt->tol; w.max_iter = opt->max_iter;
-    w.aim = fmax(1e-14, 1e-3 * opt->tol);
+    w.aim = fmax(1e-14, 1e-2 * opt->tol);
     w.sigma = lmode ? 1.0 : opt->sigma * S * S;
     w.Lt = lmode ? opt->length / S : 0.0;
     for (size_t j = 0; j < m; j++) {
@@ -1227,6 +1273,30 @@ int el_spline_solve(const double *xy, size_t n, const el_spline_options *opt,
 
     if (!lmode) {
         st = solve_tension(&w, sv, opt->max_steps, 1);
+    } else if (straight_line(xy, n, opt, &dir)) {
+        /* longer than the line: Euler's buckled strip (first mode, bowed to the
+         * left), theta = dir + Theta cos(pi s / D), L / D - 1 ~ Theta^2 / 4,
+         * sigma = -2 (pi / D)^2 (the linearised 2 kappa'' = sigma kappa), solved
+         * with a small bow (where that is accurate), then followed in length */
+        const double L1 = fmin(opt->length, Lp * (1.0 + 1e-3));
+        const double D = Lp / S, Th = 2.0 * sqrt(L1 / Lp - 1.0);
+        double sx = 0.0;
+        for (size_t i = 0; i < n; i++) {
+            if (w.slot[i] == SLOT_ANGLE) w.x[i] = dir + Th * cos(M_PI * sx / D);
+            if (i < m) sx += w.pc[i].h;
+        }
+        w.sigma = -2.0 * M_PI * M_PI / (D * D);
+        if (w.slot[0] == SLOT_TENSION) w.x[0] = w.sigma;
+        if (w.slot[n - 1] == SLOT_TENSION) w.x[n - 1] = w.sigma;
+        st = start_pieces(&w);
+        w.lmode = BORDER_LENGTH;
+        w.Lt = L1 / S;
+        if (!st) st = chain_newton(&w, DIRECT_ITER, 1e-3 * NEAR_RESID, NEAR_RESID);
+        if (!st && opt->length > L1) {
+            const double par[3] = {L1 / S, opt->length / S, Lp / S};
+            st = continuation(&w, sv, opt->max_steps, 0.25, set_length, par, w.aim, w.tol);
+        }
+        if (st == EL_ENOCONV && w.resid <= NEAR_RESID) w.near = 1;
     } else {
         /* a tension solution, then sigma free with the length as its equation,
          * directly or by continuation in the length */
