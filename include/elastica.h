@@ -1056,6 +1056,17 @@ int el_bspline_interpolate_c2(const double *xy, size_t n, el_bspline *out);
  */
 int el_smooth_to_bspline(const el_smooth_params *p, double tol, int degree, el_bspline *out);
 
+/*
+ * el_smooth_to_bspline with G2 ends: also B''(0) and B''(length) are the exact
+ * curvature vectors kappa N of el_smooth_eval (the third pole from each end
+ * fixed by them: P_2 = P_1 + u_2 (T/p + u_1 kappa N / (p (p-1))), u_1 < u_2 the
+ * first distinct knots, and its mirror image at the end), so with the
+ * arc-length parameter the ends carry position, unit tangent and curvature:
+ * pieces that meet G2 join C2 (el_spline_to_bspline). At least 2 * 3 - degree
+ * spans. Same certification, statuses and outputs as el_smooth_to_bspline.
+ */
+int el_smooth_to_bspline_g2(const el_smooth_params *p, double tol, int degree, el_bspline *out);
+
 /* ------------------------------------------------------------------- blend */
 
 /*

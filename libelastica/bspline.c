@@ -383,6 +383,8 @@ typedef struct fit_ws {
     double *AB, *bx, *by;
     double *err;         /* per-span sampled error */
     double *dist;        /* per-grid-point distance (certification) */
+    int nfix;            /* poles fixed at each end: 2 (point, tangent) or 3 (and curvature) */
+    size_t nmin;         /* fewest spans that leave them distinct */
 } fit_ws;
 
 static void ws_free(fit_ws *w)
@@ -509,12 +511,13 @@ static void fit_basis(fit_ws *w, size_t N)
 /* Normal equations of the free poles (fit_poles), from the grid's basis. */
 FIT_INLINE void normal_equations(fit_ws *w, size_t n, size_t nd, const double *poles, const int p)
 {
+    const size_t f = (size_t)w->nfix;   /* fixed poles 0..f-1 and n-f..n-1 */
     for (size_t i = 0; i <= w->M; i++) {
         const double *B = w->Bc + i * (size_t)(p + 1);
         const size_t k = w->kc[i];
         double tx = w->xy[2 * i], ty = w->xy[2 * i + 1];
         const size_t g0 = k - (size_t)p;
-        if (p == 3 && g0 >= 2 && k + 2 < n) {
+        if (p == 3 && g0 >= f && k + f < n) {
             /* cubic, no fixed pole in this span: the whole span summed in
              * registers first (p = 3 spelled out so that it is unrolled) */
             double A00 = 0, A01 = 0, A02 = 0, A03 = 0, A11 = 0, A12 = 0, A13 = 0, A22 = 0,
@@ -533,7 +536,7 @@ FIT_INLINE void normal_equations(fit_ws *w, size_t n, size_t nd, const double *p
                 tx = w->xy[2 * i];
                 ty = w->xy[2 * i + 1];
             }
-            double *Ar = w->AB + (g0 - 2) * nd, *bx = w->bx + (g0 - 2), *by = w->by + (g0 - 2);
+            double *Ar = w->AB + (g0 - f) * nd, *bx = w->bx + (g0 - f), *by = w->by + (g0 - f);
             Ar[0] += A00; Ar[1] += A01; Ar[2] += A02; Ar[3] += A03;
             Ar[nd] += A11; Ar[nd + 1] += A12; Ar[nd + 2] += A13;
             Ar[2 * nd] += A22; Ar[2 * nd + 1] += A23;
@@ -542,28 +545,28 @@ FIT_INLINE void normal_equations(fit_ws *w, size_t n, size_t nd, const double *p
             by[0] += y0; by[1] += y1; by[2] += y2; by[3] += y3;
             continue;
         }
-        if (g0 >= 2 && k + 2 < n) {   /* no fixed pole in this span */
-            double *Ar = w->AB + (g0 - 2) * nd;
+        if (g0 >= f && k + f < n) {   /* no fixed pole in this span */
+            double *Ar = w->AB + (g0 - f) * nd;
             FIT_UNROLL for (int a = 0; a <= p; a++, Ar += nd) {
-                w->bx[g0 - 2 + (size_t)a] += B[a] * tx;
-                w->by[g0 - 2 + (size_t)a] += B[a] * ty;
+                w->bx[g0 - f + (size_t)a] += B[a] * tx;
+                w->by[g0 - f + (size_t)a] += B[a] * ty;
                 FIT_UNROLL for (int c = a; c <= p; c++) Ar[c - a] += B[a] * B[c];
             }
             continue;
         }
         FIT_UNROLL for (int a = 0; a <= p; a++) {
             const size_t g = g0 + (size_t)a;
-            if (g < 2 || g + 2 >= n) { tx -= B[a] * poles[2 * g]; ty -= B[a] * poles[2 * g + 1]; }
+            if (g < f || g + f >= n) { tx -= B[a] * poles[2 * g]; ty -= B[a] * poles[2 * g + 1]; }
         }
         FIT_UNROLL for (int a = 0; a <= p; a++) {
             const size_t ga = g0 + (size_t)a;
-            if (ga < 2 || ga + 2 >= n) continue;
-            w->bx[ga - 2] += B[a] * tx;
-            w->by[ga - 2] += B[a] * ty;
+            if (ga < f || ga + f >= n) continue;
+            w->bx[ga - f] += B[a] * tx;
+            w->by[ga - f] += B[a] * ty;
             FIT_UNROLL for (int c = a; c <= p; c++) {
                 const size_t gc = g0 + (size_t)c;
-                if (gc + 2 >= n) continue;
-                w->AB[(ga - 2) * nd + (gc - ga)] += B[a] * B[c];
+                if (gc + f >= n) continue;
+                w->AB[(ga - f) * nd + (gc - ga)] += B[a] * B[c];
             }
         }
     }
@@ -572,16 +575,24 @@ FIT_INLINE void normal_equations(fit_ws *w, size_t n, size_t nd, const double *p
 static int fit_poles(fit_ws *w, size_t N, double *poles)
 {
     const int p = w->p;
-    const size_t n = N + (size_t)p, nu = n - 4;
+    const size_t f = (size_t)w->nfix, n = N + (size_t)p, nu = n - 2 * f;
     const size_t nd = nu ? ((size_t)p < nu ? (size_t)p : nu - 1) + 1 : 1;
     const double *U = w->U;
-    /* fixed poles: 0, 1, n-2, n-1 (the grid's end samples are the exact ends) */
+    /* fixed poles: 0, 1, n-2, n-1 (the grid's end samples are the exact ends), and 2, n-3 for G2 */
     const double a0 = U[p + 1] / p, a1 = (w->L - U[n - 1]) / p;
     const double *e0 = w->xy, *e1 = w->xy + 2 * w->M, *T0 = w->cs, *T1 = w->cs + 2 * w->M;
     poles[0] = e0[0]; poles[1] = e0[1];
     poles[2] = e0[0] + a0 * T0[0]; poles[3] = e0[1] + a0 * T0[1];
     poles[2 * (n - 1)] = e1[0]; poles[2 * (n - 1) + 1] = e1[1];
     poles[2 * (n - 2)] = e1[0] - a1 * T1[0]; poles[2 * (n - 2) + 1] = e1[1] - a1 * T1[1];
+    if (f == 3) {   /* and B''(0), B''(L) = kappa N (el_smooth_to_bspline_g2) */
+        const double b0 = U[p + 2], b1 = w->L - U[n - 2], c = 1.0 / (p * (p - 1.0));
+        const double k0 = w->ka[0] * U[p + 1] * c, k1 = w->ka[w->M] * (w->L - U[n - 1]) * c;
+        poles[4] = poles[2] + b0 * (T0[0] / p - k0 * T0[1]);
+        poles[5] = poles[3] + b0 * (T0[1] / p + k0 * T0[0]);
+        poles[2 * (n - 3)] = poles[2 * (n - 2)] + b1 * (-T1[0] / p - k1 * T1[1]);
+        poles[2 * (n - 3) + 1] = poles[2 * (n - 2) + 1] + b1 * (-T1[1] / p + k1 * T1[0]);
+    }
     if (nu) {
         memset(w->AB, 0, nu * nd * sizeof *w->AB);
         memset(w->bx, 0, nu * sizeof *w->bx);
@@ -600,8 +611,8 @@ static int fit_poles(fit_ws *w, size_t N, double *poles)
             gsl_linalg_cholesky_band_svx(&A.matrix, &vy.vector))
             return EL_ESINGULAR;
         for (size_t j = 0; j < nu; j++) {
-            poles[2 * (j + 2)] = w->bx[j];
-            poles[2 * (j + 2) + 1] = w->by[j];
+            poles[2 * (j + f)] = w->bx[j];
+            poles[2 * (j + f) + 1] = w->by[j];
         }
     }
     return el__all_finite(poles, 2 * n) ? EL_ESINGULAR : EL_OK;
@@ -907,7 +918,9 @@ static int emit(const fit_ws *w, size_t N, const double *breaks, const double *p
     return EL_OK;
 }
 
-int el_smooth_to_bspline(const el_smooth_params *par, double tol, int degree, el_bspline *out)
+/* el_smooth_to_bspline with nfix poles fixed at each end (2: G1 ends, 3: G2 ends). */
+static int smooth_to_bspline(const el_smooth_params *par, double tol, int degree, int nfix,
+                             el_bspline *out)
 {
     if (!out || el_smooth_check(par) || !isfinite(tol) || !(tol > 0.0) || degree < 3 ||
         degree > MAXDEG_FIT)
@@ -930,6 +943,8 @@ int el_smooth_to_bspline(const el_smooth_params *par, double tol, int degree, el
     fit_ws w;
     memset(&w, 0, sizeof w);
     w.par = par; w.p = p; w.L = L; w.tol = tol;
+    w.nfix = nfix;
+    w.nmin = 2 * nfix > p + 1 ? (size_t)(2 * nfix - p) : 1;
     double *breaks = NULL, *nb = NULL, *poles = NULL, *G = NULL;
     double *bestbr = NULL, *corr = NULL, *Gc = NULL, *cm = NULL;
     double *svp = NULL, *svb = NULL;   /* poles and breaks of the last passing fit */
@@ -967,7 +982,7 @@ int el_smooth_to_bspline(const el_smooth_params *par, double tol, int degree, el
             }
             if (N == 0) {
                 double x = ceil(0.19 * G[w.M] / pow(accept, ex));
-                N = x < 1.0 ? 1 : (x > 1e5 ? 100000 : (size_t)x);
+                N = x < (double)w.nmin ? w.nmin : (x > 1e5 ? 100000 : (size_t)x);
             }
             if ((st = ws_reserve(&w, N))) goto done;
             GROW(breaks, N + 1);
@@ -998,7 +1013,7 @@ int el_smooth_to_bspline(const el_smooth_params *par, double tol, int degree, el
             if (e <= accept && Nn >= N) Nn = N - 1;
             if (Nn <= lo_fail) Nn = lo_fail + 1;
             if (hi_pass && Nn >= hi_pass) Nn = hi_pass - 1;
-            if (Nn < 1 || Nn == N) break;
+            if (Nn < w.nmin || Nn == N) break;
             N = Nn;
         }
 
@@ -1069,7 +1084,7 @@ int el_smooth_to_bspline(const el_smooth_params *par, double tol, int degree, el
                     if (!retried && !Nmoved) Nn = Nc;   /* once more, with the further correction */
                     else if (!Nmoved || (Nn = Nc + (Nmoved - Nc) / 2) == Nc) break;
                 }
-                if (Nn < 1 || (Nmoved && Nn >= Nmoved)) break;
+                if (Nn < w.nmin || (Nmoved && Nn >= Nmoved)) break;
                 retried = Nn == Nc;
                 Nc = Nn;
             }
@@ -1117,4 +1132,142 @@ done:
     free(svp); free(svb);
     ws_free(&w);
     return st ? st : status;
+}
+
+int el_smooth_to_bspline(const el_smooth_params *par, double tol, int degree, el_bspline *out)
+{
+    return smooth_to_bspline(par, tol, degree, 2, out);
+}
+
+int el_smooth_to_bspline_g2(const el_smooth_params *par, double tol, int degree, el_bspline *out)
+{
+    return smooth_to_bspline(par, tol, degree, 3, out);
+}
+
+/* ------------------------------------------------------------------ C2 joins */
+
+/*
+ * Remove the knot U[r] (multiplicity s, r its last index) num times from the
+ * planar curve (poles P, *np of them, flat knots U), Piegl & Tiller, The NURBS
+ * Book, A5.8, always: returns the largest of its removability distances (0 to
+ * rounding when the curve is C^{p-s+num} there).
+ */
+static double remove_knot(double *U, double *P, size_t *np, int p, size_t r, int s, int num)
+{
+    const long n = (long)*np - 1, m = n + p + 1, ord = p + 1;
+    const double u = U[r];
+    long first = (long)r - p, last = (long)r - s;
+    const long fout = (2 * (long)r - s - p) / 2;
+    double temp[2 * (2 * MAXDEG_FIT + 4)], emax = 0.0;
+    for (int t = 0; t < num; t++) {
+        const long off = first - 1;
+        temp[0] = P[2 * off]; temp[1] = P[2 * off + 1];
+        temp[2 * (last + 1 - off)] = P[2 * (last + 1)];
+        temp[2 * (last + 1 - off) + 1] = P[2 * (last + 1) + 1];
+        long i = first, j = last, ii = 1, jj = last - off;
+        while (j - i > t) {
+            const double ai = (u - U[i]) / (U[i + ord + t] - U[i]);
+            const double aj = (u - U[j - t]) / (U[j + ord] - U[j - t]);
+            for (int c = 0; c < 2; c++) {
+                temp[2 * ii + c] = (P[2 * i + c] - (1.0 - ai) * temp[2 * (ii - 1) + c]) / ai;
+                temp[2 * jj + c] = (P[2 * j + c] - aj * temp[2 * (jj + 1) + c]) / (1.0 - aj);
+            }
+            i++; ii++; j--; jj--;
+        }
+        double d;
+        if (j - i < t) {
+            d = hypot(temp[2 * (ii - 1)] - temp[2 * (jj + 1)], temp[2 * (ii - 1) + 1] - temp[2 * (jj + 1) + 1]);
+        } else {
+            const double ai = (u - U[i]) / (U[i + ord + t] - U[i]);
+            d = hypot(P[2 * i] - (ai * temp[2 * (ii + t + 1)] + (1.0 - ai) * temp[2 * (ii - 1)]),
+                      P[2 * i + 1] - (ai * temp[2 * (ii + t + 1) + 1] + (1.0 - ai) * temp[2 * (ii - 1) + 1]));
+        }
+        emax = fmax(emax, d);
+        i = first; j = last;
+        while (j - i > t) {
+            P[2 * i] = temp[2 * (i - off)]; P[2 * i + 1] = temp[2 * (i - off) + 1];
+            P[2 * j] = temp[2 * (j - off)]; P[2 * j + 1] = temp[2 * (j - off) + 1];
+            i++; j--;
+        }
+        first--; last++;
+    }
+    for (long k = (long)r + 1; k <= m; k++) U[k - num] = U[k];
+    long j = fout, i = fout;
+    for (int k = 1; k < num; k++) { if (k % 2 == 1) i++; else j--; }
+    for (long k = i + 1; k <= n; k++, j++) { P[2 * j] = P[2 * k]; P[2 * j + 1] = P[2 * k + 1]; }
+    *np -= (size_t)num;
+    return emax;
+}
+
+int el__bspline_join_c2(const el_bspline *parts, size_t count, el_bspline *out, double *err)
+{
+    if (!parts || !count || !out || !err) return EL_EINVAL;
+    const int p = parts[0].degree;
+    if (p < 3 || p > MAXDEG_FIT) return EL_EINVAL;
+    size_t np = 0, nu = 0;
+    for (size_t j = 0; j < count; j++) {
+        const el_bspline *b = &parts[j];
+        if (el_bspline_check(b) || b->degree != p || b->dim != 2 || b->mults[0] != p + 1 ||
+            b->mults[b->nknots - 1] != p + 1)
+            return EL_EINVAL;
+        np += b->npoles;
+        nu += b->npoles + (size_t)p + 1;
+    }
+    double *U = malloc(nu * sizeof *U), *P = malloc(2 * np * sizeof *P);
+    if (!U || !P) { free(U); free(P); return EL_ENOMEM; }
+    /* the C0 chain: joint knots of multiplicity p, one pole per joint (the next
+     * part's first), then two removals per joint */
+    size_t ku = 0, kp = 0;
+    double s0 = 0.0, gap = 0.0;
+    for (size_t j = 0; j < count; j++) {
+        const el_bspline *b = &parts[j];
+        const size_t fl = b->npoles + (size_t)p + 1;
+        double *flat = malloc(fl * sizeof *flat);
+        if (!flat) { free(U); free(P); return EL_ENOMEM; }
+        el_bspline_flat_knots(b, flat);
+        const double a = flat[0];
+        const size_t k0 = j ? (size_t)p + 1 : 0, k1 = j + 1 < count ? fl - 1 : fl;
+        for (size_t k = k0; k < k1; k++) U[ku++] = s0 + (flat[k] - a);
+        if (j) {
+            gap = fmax(gap, hypot(P[2 * kp - 2] - b->poles[0], P[2 * kp - 1] - b->poles[1]));
+            kp--;
+        }
+        memcpy(P + 2 * kp, b->poles, 2 * b->npoles * sizeof *P);
+        kp += b->npoles;
+        s0 += flat[fl - 1] - a;
+        free(flat);
+    }
+    /* each joint: its value is the last of its run of p equal knots */
+    double e = gap;
+    for (size_t r = (size_t)p + 1; r + (size_t)p + 1 < kp + (size_t)p + 1;) {
+        size_t q = r;
+        while (U[q + 1] == U[r]) q++;
+        if (q - r + 1 == (size_t)p) {
+            e = fmax(e, remove_knot(U, P, &kp, p, q, p, 2));
+            r = q - 1;   /* the knot now has p - 2 copies ending at q - 2 */
+        } else {
+            r = q + 1;
+        }
+    }
+    if (kp < (size_t)p + 1 || kp > np) { free(U); free(P); return EL_EINVAL; }
+    /* distinct knots */
+    const size_t nflat = kp + (size_t)p + 1;
+    size_t nk = 1;
+    for (size_t i = 1; i < nflat; i++) nk += U[i] != U[i - 1];
+    el_bspline b;
+    int st = el_bspline_alloc(&b, p, 2, kp, nk);
+    if (!st) {
+        for (size_t i = 0; i < 2 * kp; i++) b.poles[i] = P[i];
+        size_t d = 0;
+        b.knots[0] = U[0]; b.mults[0] = 1;
+        for (size_t i = 1; i < nflat; i++) {
+            if (U[i] == U[i - 1]) b.mults[d]++;
+            else { b.knots[++d] = U[i]; b.mults[d] = 1; }
+        }
+        b.max_deviation = -1.0;
+        *out = b;
+        *err = e;
+    }
+    free(U); free(P);
+    return st;
 }

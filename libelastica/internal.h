@@ -7,6 +7,16 @@
 
 #ifndef M_PI
 #define M_PI 3.14159265358979323846
+/* Join count clamped planar B-splines of one degree p in 3..7, each on its own
+ * parameter interval, end to end into *out (parameters shifted to follow each
+ * other), C2 at the joints (knot multiplicity p - 2): each joint pole is the
+ * next part's first, then the joint knot is removed twice (Piegl & Tiller A5.8),
+ * which is exact when the parts meet with equal point, first and second
+ * derivatives. *err: the largest gap between the parts' joint poles and removal
+ * distance (a bound on how far *out is from the parts); out->max_deviation = -1.
+ * bspline.c. Errors: EL_EINVAL, EL_ENOMEM. */
+int el__bspline_join_c2(const el_bspline *parts, size_t count, el_bspline *out, double *err);
+
 #endif
 
 /* Turn GSL's aborting error handler off (once per process, thread-safe); every
@@ -44,5 +54,15 @@ int el__jacobi_eval_mod(const el__modulus *mod, double u, el_jacobi *val, el_jac
  * val[count] required; d_dk[count] optional (NULL). */
 int el__jacobi_progression(double q, double z, double k, size_t count,
                            el_jacobi *val, el_jacobi *d_dk);
+
+/* Join count clamped planar B-splines of one degree p in 3..7, each on its own
+ * parameter interval, end to end into *out (parameters shifted to follow each
+ * other), C2 at the joints (knot multiplicity p - 2): each joint pole is the
+ * next part's first, then the joint knot is removed twice (Piegl & Tiller A5.8),
+ * which is exact when the parts meet with equal point, first and second
+ * derivatives. *err: the largest gap between the parts' joint poles and removal
+ * distance (a bound on how far *out is from the parts); out->max_deviation = -1.
+ * bspline.c. Errors: EL_EINVAL, EL_ENOMEM. */
+int el__bspline_join_c2(const el_bspline *parts, size_t count, el_bspline *out, double *err);
 
 #endif
