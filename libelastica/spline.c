@@ -925,49 +925,62 @@ static double arc_dist(const spline_ws *w, const snapshot *a, const snapshot *b,
 static int solve_length(spline_ws *w, snapshot sv[3], int max_steps, double Lt)
 {
     int steps = max_steps;
-    snapshot *prev = &sv[2], *cur = &sv[0];
-    double gp, gc = total_length(w) - Lt;
+    snapshot *B = &sv[2], *C = &sv[0];   /* the base point and the next one */
     const double rho = 1.0 + fabs(w->sigma);
-    snap_save(w, prev);
-    gp = gc;
-    if (fabs(gc) > 1e-9 * Lt) {
+    double gb = total_length(w) - Lt, gc;
+    snap_save(w, B);
+    if (fabs(gb) > 1e-9 * Lt) {
         /* a second point: sigma moved towards the length */
-        const double s1 = w->sigma + (gc < 0.0 ? -0.05 : 0.05) * rho;
+        const double s1 = w->sigma + (gb < 0.0 ? -0.05 : 0.05) * rho;
         if (move_sigma(w, sv, &steps, s1)) return EL_ENOCONV;
-        snap_save(w, cur);
+        snap_save(w, C);
         gc = total_length(w) - Lt;
-        double h = 2.0 * arc_dist(w, prev, cur, rho);
-        while (gc * gp > 0.0) {
-            if (steps-- <= 0 || !(h > 1e-9)) return EL_ENOCONV;
-            const double N = arc_dist(w, prev, cur, rho);
-            if (!(N > 0.0)) return EL_ENOCONV;
-            /* tangent (secant) and the constraint a.(x - x_cur) + b (sigma - sigma_cur) = h */
+        double N = arc_dist(w, B, C, rho), h = 2.0 * N;
+        while (gc * gb > 0.0 || !(N > 0.0)) {
+            if (steps-- <= 0 || !(N > 0.0) || !(h > 1e-9)) return EL_ENOCONV;
+            /* the secant B -> C is the tangent; C is the base of the next step */
             for (size_t i = 0; i < w->n; i++) {
-                w->arc_a[i] = (cur->x[i] - prev->x[i]) / N;
-                w->arc_x0[i] = cur->x[i];
+                w->arc_a[i] = (C->x[i] - B->x[i]) / N;
+                w->arc_x0[i] = C->x[i];
             }
-            w->arc_b = (cur->sigma - prev->sigma) / (N * rho * rho);
-            w->arc_s0 = cur->sigma;
+            w->arc_b = (C->sigma - B->sigma) / (N * rho * rho);
+            w->arc_s0 = C->sigma;
             w->arc_h = h;
-            predict(w, prev, cur, h / N);
+            predict(w, B, C, h / N);
             w->lmode = BORDER_ARC;
             const int it0 = w->iterations;
             const int st = chain_newton(w, STEP_ITER, 1e-3 * NEAR_RESID, NEAR_RESID);
             w->lmode = 0;
-            if (st) {
-                snap_load(w, cur);
-                h *= 0.5;
+            if (st) { snap_load(w, C); h *= 0.5; continue; }
+            const double gn = total_length(w) - Lt;
+            if (gn * gc <= 0.0) {
+                /* bracketed between C and the new point D: Newton on the length from
+                 * the interpolated state; if that fails, a shorter step from C */
+                snapshot *D = B;
+                snap_save(w, D);
+                predict(w, C, D, gn / (gc - gn));
+                w->lmode = BORDER_LENGTH;
+                w->Lt = Lt;
+                if (chain_newton(w, DIRECT_ITER, w->aim, w->tol) == EL_OK) return EL_OK;
+                w->lmode = 0;
+                if (steps-- <= 0) return EL_ENOCONV;
+                /* B (overwritten by D) must again be the point before C: C - (D - C) scaled */
+                const double back = -1.0;
+                for (size_t i = 0; i < w->n; i++) D->x[i] = C->x[i] + back * (D->x[i] - C->x[i]);
+                D->sigma = C->sigma + back * (D->sigma - C->sigma);
+                for (size_t i = 0; i < NV * w->m; i++) D->st[i] = C->st[i] + back * (D->st[i] - C->st[i]);
+                N = arc_dist(w, B, C, rho);
+                snap_load(w, C);
+                h *= 0.25;
                 continue;
             }
-            snapshot *tmp = prev; prev = cur; cur = tmp;
-            snap_save(w, cur);
-            gp = gc;
-            gc = total_length(w) - Lt;
+            snapshot *tmp = B; B = C; C = tmp;
+            snap_save(w, C);
+            gb = gc;
+            gc = gn;
+            N = arc_dist(w, B, C, rho);
             if (w->iterations - it0 <= 3) h *= 2.0;
         }
-        /* the length between prev and cur: start from the interpolated state */
-        const double f = gc / (gp - gc);
-        predict(w, prev, cur, f);
     }
     w->lmode = BORDER_LENGTH;
     w->Lt = Lt;

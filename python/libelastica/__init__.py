@@ -8,6 +8,7 @@ from .prep import (Frame, Frame2D, find_inflection, pca_normalize, plane_fit, pr
                    resample_equilateral)
 from .blend import BlendCurve, EllipticBlend, MQBlend, blend_curve, eck_d, eck_omega
 from .hermite import hermite, hermite_analyse
+from .spline import ElasticSpline, elastic_spline
 from .bspline import BSpline, interpolate_c2, smooth_to_bspline
 from .affine import (AffinePolyline, OsculatingConics, affine_coords, affine_curvature,
                      affine_curvature_exact, affine_elements, affine_length, affine_polyline,

@@ -1,0 +1,218 @@
+"""Elastic splines: the shape of a thin batten through N ducks (issue 14).
+
+A chain of smooth elasticae of one tension through the points, G2 at every
+point (the C library's el_spline_solve); one certified G2 B-spline for the
+whole chain (el_spline_to_bspline).
+"""
+from __future__ import annotations
+
+from typing import List, Optional
+
+import numpy as np
+
+from ._ffi import (DomainError, NotConvergedError, as_points, bspline_from_c, check, dptr,
+                   ffi, lib)
+from .core import SmoothElastica, SMOOTH_PARAMS
+
+__all__ = ["ElasticSpline", "elastic_spline"]
+
+
+class ElasticSpline:
+    """An elastic spline: ``pieces`` (SmoothElastica, piece i from point i to
+    point i+1; closed: the last from the last point back to the first),
+    ``tension`` (sigma, 1/length^2), ``length``, ``energy`` (integral of kappa^2 ds),
+    ``forces`` ((npieces, 2): each piece's constant force F = (sigma - kappa^2) T
+    - 2 kappa' N in units of EI/2, the batten after a section pulling on the
+    batten before it; the duck at an inner point i holds forces[i-1] - forces[i]),
+    ``tensions`` (each piece's own; differs from ``tension`` only on the span next
+    to a G2 end), ``angles`` and ``curvatures`` at the points, ``max_curvature``,
+    ``residual`` (largest end-condition error reached) and ``closed``.
+    """
+
+    def __init__(self, res, points: np.ndarray, closed: bool):
+        m, n = int(res.npieces), int(res.npoints)
+        self.pieces: List[SmoothElastica] = [
+            SmoothElastica(**{k: getattr(res.pieces[i], k) for k in SMOOTH_PARAMS})
+            for i in range(m)]
+        self.data = points[:n].copy()
+        self.closed = bool(closed)
+        self.tension = float(res.sigma)
+        self.length = float(res.length)
+        self.energy = float(res.energy)
+        self.max_curvature = float(res.max_curvature)
+        self.residual = float(res.residual)
+        self.iterations = int(res.iterations)
+        self.tensions = np.frombuffer(ffi.buffer(res.sigmas, 8 * m), dtype=np.float64).copy()
+        self.forces = np.frombuffer(ffi.buffer(res.forces, 16 * m),
+                                    dtype=np.float64).reshape(m, 2).copy()
+        self.angles = np.frombuffer(ffi.buffer(res.angles, 8 * n), dtype=np.float64).copy()
+        self.curvatures = np.frombuffer(ffi.buffer(res.curvatures, 8 * n),
+                                        dtype=np.float64).copy()
+        self._starts = np.concatenate([[0.0], np.cumsum([p.length for p in self.pieces])])
+
+    def __repr__(self) -> str:
+        return (f"ElasticSpline({len(self.pieces)} pieces, tension={self.tension:.6g}, "
+                f"length={self.length:.6g}, energy={self.energy:.6g}, "
+                f"max_curvature={self.max_curvature:.6g}{', closed' if self.closed else ''})")
+
+    def arclengths(self, n: int = 200) -> np.ndarray:
+        """n arc lengths equally spaced over the whole spline, from point 0."""
+        if int(n) < 2:
+            raise ValueError(f"ElasticSpline: n must be >= 2, got {n}")
+        return np.linspace(0.0, self.length, int(n))
+
+    def _eval(self, s: np.ndarray, what: str) -> np.ndarray:
+        j = np.clip(np.searchsorted(self._starts, s, side="right") - 1, 0, len(self.pieces) - 1)
+        out = np.empty((len(s), 2) if what == "points" else len(s))
+        for i in np.unique(j):
+            sel = j == i
+            local = np.clip(s[sel] - self._starts[i], 0.0, self.pieces[i].length)
+            out[sel] = getattr(self.pieces[i], what)(local)
+        return out
+
+    def points(self, n: int = 200) -> np.ndarray:
+        """(n, 2) points at n arc lengths equally spaced over the whole spline."""
+        return self._eval(self.arclengths(n), "points")
+
+    def curvature(self, n: int = 200) -> np.ndarray:
+        """Signed curvature at the same n arc lengths as :meth:`points`."""
+        return self._eval(self.arclengths(n), "curvature")
+
+    def to_bspline(self, tol: float = 1e-6, degree: int = 3):
+        """ONE clamped B-spline (degree 3..7) for the whole spline within ``tol``
+        (coordinate units) of it, parametrised by arc length from point 0: each
+        piece with exact end point, unit tangent and curvature
+        (el_smooth_to_bspline_g2), joined with knot multiplicity degree - 2 at the
+        points, so it is C2 (G2) there. ``max_deviation`` is the certified distance."""
+        if int(degree) != degree:
+            raise ValueError(f"to_bspline: degree must be an integer, got {degree}")
+        res = ffi.new("el_spline_result *")
+        res.npieces = len(self.pieces)
+        arr = ffi.new("el_smooth_params[]", len(self.pieces))
+        for i, p in enumerate(self.pieces):
+            for k in SMOOTH_PARAMS:
+                setattr(arr[i], k, getattr(p, k))
+        res.pieces = arr
+        b = ffi.new("el_bspline *")
+        st = lib.el_spline_to_bspline(res, float(tol), int(degree), b)
+        if st == lib.EL_EMAXITER:
+            dev = float(b.max_deviation)
+            lib.el_bspline_free(b)
+            raise NotConvergedError(st, f"to_bspline: tolerance {tol:g} not reached "
+                                        f"(certified {dev:.3g}); raise tol")
+        check(st, "to_bspline")
+        return bspline_from_c(b)
+
+
+def _end(spec, name: str, opt_end) -> None:
+    """Fill an el_spline_end from None (natural), a tangent 2-vector or
+    {"tangent": (tx, ty), "curvature": kappa} (G2)."""
+    if spec is None:
+        opt_end.kind = lib.EL_SPLINE_NATURAL
+        return
+    curvature = None
+    if isinstance(spec, dict):
+        unknown = set(spec) - {"tangent", "curvature"}
+        if unknown or "tangent" not in spec:
+            raise ValueError(f"elastic_spline: {name} must be None, a tangent (tx, ty) or "
+                             f"{{'tangent': (tx, ty), 'curvature': k}}, got {spec!r}")
+        tangent, curvature = spec["tangent"], spec.get("curvature")
+    else:
+        tangent = spec
+    t = np.asarray(tangent, dtype=np.float64)
+    if t.shape != (2,) or not np.all(np.isfinite(t)) or not np.hypot(*t) > 0.0:
+        raise ValueError(f"elastic_spline: {name} tangent must be a nonzero finite 2-vector, "
+                         f"got {tangent!r}")
+    opt_end.tangent = [float(t[0]), float(t[1])]
+    if curvature is None:
+        opt_end.kind = lib.EL_SPLINE_TANGENT
+        return
+    if not np.isfinite(float(curvature)):
+        raise ValueError(f"elastic_spline: {name} curvature must be finite, got {curvature!r}")
+    opt_end.kind = lib.EL_SPLINE_G2
+    opt_end.curvature = float(curvature)
+
+
+def elastic_spline(points, tension: Optional[float] = None, length: Optional[float] = None,
+                   start=None, end=None, closed: bool = False, *, tol: float = 1e-10,
+                   max_iter: int = 60, max_steps: int = 60) -> ElasticSpline:
+    """The elastic spline (a batten) through ``points`` ((n, 2), n >= 2; closed:
+    n >= 3, a repeated first point is dropped).
+
+    Give ``tension`` (sigma >= 0, 1/length^2; 0 = the free-sliding batten, the
+    default when neither is given) or ``length`` (the total length, longer than
+    the polygon; sigma is then computed and may be negative: pushed together).
+    ``start`` / ``end`` (open curves): None = natural (curvature 0), a tangent
+    (tx, ty) = clamped, or {"tangent": (tx, ty), "curvature": k} = G2 to other
+    geometry (the span next to it then takes its own tension, ``tensions``).
+
+    Raises ``ValueError`` for bad input (coincident consecutive points, NaN, ...),
+    :class:`DomainError` when no such spline exists (a length not longer than
+    the polygon; tension 0 when the free batten would slide off its ducks) and
+    :class:`NotConvergedError` when the solver stops short of ``tol`` (its
+    ``spline`` attribute holds the spline reached, if any: very high tension
+    sigma h^2 > ~100 or an arc of a circle resolve only to ~1e-9..1e-7).
+    """
+    pts = as_points(points, "points")
+    if not np.all(np.isfinite(pts)):
+        raise ValueError("elastic_spline: points must be finite")
+    n = len(pts)
+    if closed and n >= 2 and np.array_equal(pts[0], pts[-1]):
+        pts, n = pts[:-1], n - 1
+    if n < (3 if closed else 2):
+        raise ValueError(f"elastic_spline: needs at least {3 if closed else 2} distinct points "
+                         f"{'for a closed curve ' if closed else ''}(got {n})")
+    chords = np.hypot(*np.diff(np.vstack([pts, pts[:1]]) if closed else pts, axis=0).T)
+    scale = np.abs(pts).max()
+    bad = np.flatnonzero(~(chords > 4.0 * np.finfo(float).eps * scale))
+    if len(bad):
+        i = int(bad[0])
+        raise ValueError(f"elastic_spline: points {i} and {(i + 1) % n} coincide "
+                         "(a batten cannot pass one duck twice)")
+    if tension is not None and length is not None:
+        raise ValueError("elastic_spline: give tension= or length=, not both")
+    opt = ffi.new("el_spline_options *")
+    lib.el_spline_options_defaults(opt)
+    if length is None:
+        sigma = 0.0 if tension is None else float(tension)
+        if not np.isfinite(sigma) or sigma < 0.0:
+            raise ValueError(f"elastic_spline: tension must be finite and >= 0, got {tension!r}")
+        opt.mode, opt.sigma = lib.EL_SPLINE_TENSION, sigma
+    else:
+        L = float(length)
+        polygon = float(chords.sum())
+        if not np.isfinite(L) or not L > 0.0:
+            raise ValueError(f"elastic_spline: length must be finite and > 0, got {length!r}")
+        if L < polygon * (1.0 - 1e-14):
+            raise DomainError(lib.EL_EDOM, f"elastic_spline: length {L:.12g} is shorter than "
+                                           f"the polygon through the points ({polygon:.12g})")
+        opt.mode, opt.length = lib.EL_SPLINE_LENGTH, L
+    opt.closed = 1 if closed else 0
+    if not closed:
+        _end(start, "start", opt.start)
+        _end(end, "end", opt.end)
+        g2 = (opt.start.kind == lib.EL_SPLINE_G2) + (opt.end.kind == lib.EL_SPLINE_G2)
+        if g2 > n - 1 or (length is not None and g2 >= n - 1):
+            raise DomainError(lib.EL_EDOM, "elastic_spline: a G2 end needs a span of its own "
+                              "(and in length mode one more span keeps the common tension): "
+                              f"too few points ({n})")
+    opt.tol, opt.max_iter, opt.max_steps = float(tol), int(max_iter), int(max_steps)
+    res = ffi.new("el_spline_result *")
+    st = lib.el_spline_solve(dptr(pts), n, opt, res)
+    try:
+        if st == lib.EL_OK:
+            return ElasticSpline(res, pts, closed)
+        msg = ffi.string(lib.el_strerror(st)).decode()
+        if st == lib.EL_EDOM:   # the cases above are checked: the free batten
+            raise DomainError(st, "elastic_spline: no free-sliding batten (tension 0) passes "
+                                  "these points: it slides off its ducks; give a tension > 0 "
+                                  "or a length")
+        if st == lib.EL_ENOCONV:
+            err = NotConvergedError(st, f"elastic_spline: {msg}" + (
+                f" (residual {res.residual:.3g} > tol {tol:g})" if res.npieces else ""))
+            err.spline = ElasticSpline(res, pts, closed) if res.npieces else None
+            raise err
+        check(st, "elastic_spline")   # raises: st is an error
+        raise AssertionError(st)
+    finally:
+        lib.el_spline_result_free(res)
