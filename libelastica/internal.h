@@ -17,6 +17,14 @@
  * bspline.c. Errors: EL_EINVAL, EL_ENOMEM. */
 int el__bspline_join_c2(const el_bspline *parts, size_t count, el_bspline *out, double *err);
 
+/* For the tests of spline.c: the piece p as the Hermite elastica of its own ends
+ * (h = |gamma(L) - gamma(0)|), v = (phi, ln mu, k, q, L): J[25] = dR/dv with
+ * R = ((gamma(L) - end)/h, theta(0) - ta, theta(L) - tb, (2 mu (2k^2-1) - sigma) h^2),
+ * g0[5], g1[5] = d kappa(0)/dv, d kappa(L)/dv, M[25] = d(theta0, kappa0, kappa0', sigma, L)/dv,
+ * d[9] = d(kappa(0), kappa(L), L)/d(ta, tb, sigma) by the implicit function theorem. */
+int el__spline_piece_jacobians(const el_smooth_params *p, double *J, double *g0, double *g1,
+                               double *M, double *d);
+
 #endif
 
 /* Turn GSL's aborting error handler off (once per process, thread-safe); every
@@ -64,5 +72,13 @@ int el__jacobi_progression(double q, double z, double k, size_t count,
  * distance (a bound on how far *out is from the parts); out->max_deviation = -1.
  * bspline.c. Errors: EL_EINVAL, EL_ENOMEM. */
 int el__bspline_join_c2(const el_bspline *parts, size_t count, el_bspline *out, double *err);
+
+/* For the tests of spline.c: the piece p as the Hermite elastica of its own ends
+ * (h = |gamma(L) - gamma(0)|), v = (phi, ln mu, k, q, L): J[25] = dR/dv with
+ * R = ((gamma(L) - end)/h, theta(0) - ta, theta(L) - tb, (2 mu (2k^2-1) - sigma) h^2),
+ * g0[5], g1[5] = d kappa(0)/dv, d kappa(L)/dv, M[25] = d(theta0, kappa0, kappa0', sigma, L)/dv,
+ * d[9] = d(kappa(0), kappa(L), L)/d(ta, tb, sigma) by the implicit function theorem. */
+int el__spline_piece_jacobians(const el_smooth_params *p, double *J, double *g0, double *g1,
+                               double *M, double *d);
 
 #endif

@@ -70,9 +70,6 @@
 #include "internal.h"
 #include <float.h>
 #include <stdint.h>
-#ifdef SPLINE_DEBUG
-#include <stdio.h>
-#endif
 #include <stdlib.h>
 #include <string.h>
 #include <gsl/gsl_errno.h>
@@ -119,6 +116,7 @@ typedef struct spline_ws {
     double th_end[2], kg[2]; /* clamped angles, G2 curvatures (internal units) */
     double wind;             /* closed: 2 pi times the turning number */
     double sigma, Lt;        /* common tension, target length (internal) */
+    double sigma_user;       /* tension mode: the sigma asked for (user units) */
     double *x, *ell;         /* slot values, local chord per knot */
     int *slot;
     piece *pc;
@@ -200,7 +198,16 @@ static double half_angle_dk(double k, const el_jacobi *v, const el_jacobi *vk)
 
 /* Residuals, end angles and curvatures of piece pc for the targets t; with jac,
  * also J, its LU and the eliminated columns D and coefficients c0, c1, cL. */
+static int piece_eval_raw(piece *pc, const targets *t, int jac, double *raw);
+
 static int piece_eval(piece *pc, const targets *t, int jac)
+{
+    return piece_eval_raw(pc, t, jac, NULL);
+}
+
+/* piece_eval; raw (when not NULL, with jac): J before its factorisation, then
+ * g0, g1 (35 values), for el__spline_piece_jacobians. */
+static int piece_eval_raw(piece *pc, const targets *t, int jac, double *raw)
 {
     const double phi = pc->v[V_PHI], nu = pc->v[V_NU], k = pc->v[V_K], q = pc->v[V_Q],
                  L = pc->v[V_L];
@@ -275,6 +282,11 @@ static int piece_eval(piece *pc, const targets *t, int jac)
     memcpy(J + 3 * NV, th1, sizeof th1);
     memcpy(J + 4 * NV, ten, sizeof ten);
 
+    if (raw) {
+        memcpy(raw, J, sizeof J);
+        memcpy(raw + NV * NV, g0, sizeof g0);
+        memcpy(raw + NV * NV + NV, g1, sizeof g1);
+    }
     int perm[NV];
     if (lu_factor(J, NV, perm)) return EL_ESINGULAR;
     for (int r = 0; r < 4; r++) {
@@ -658,9 +670,6 @@ static int chain_newton(spline_ws *w, int cap, double aim, double accept)
     const size_t n = w->n, m = w->m;
     double merit = chain_eval(w, 1);
     if (!isfinite(merit)) return EL_ENOCONV;
-#ifdef SPLINE_DEBUG
-    fprintf(stderr, "newton start merit %g resid %g sigma %g\n", merit, w->resid, w->sigma);
-#endif
     const int limit = cap < w->max_iter ? cap : w->max_iter;
     for (int it = 0; it < limit; it++) {
         if (w->resid <= aim) return EL_OK;
@@ -704,10 +713,6 @@ static int chain_newton(spline_ws *w, int cap, double aim, double accept)
             if (mnew <= (1.0 - 2e-4 * al) * merit) { ok = 1; break; }
         }
         if (!ok) {   /* restore the last accepted state */
-#ifdef SPLINE_DEBUG
-            fprintf(stderr, "line search failed at merit %g resid %g\n", merit, w->resid);
-            for (size_t j = 0; j < m; j++) fprintf(stderr, "  piece %zu R %.1e %.1e %.1e %.1e %.1e k-1 %.3e q %g F %.1e\n", j, w->pc[j].R[0], w->pc[j].R[1], w->pc[j].R[2], w->pc[j].R[3], w->pc[j].R[4], w->pc[j].v[V_K] - 1, w->pc[j].v[V_Q], w->F[j]);
-#endif
             memcpy(w->x, w->xs, n * sizeof *w->x);
             w->sigma = sigma0;
             for (size_t j = 0; j < m; j++) memcpy(w->pc[j].v, w->ps[j].v0, sizeof w->pc[j].v);
@@ -715,9 +720,6 @@ static int chain_newton(spline_ws *w, int cap, double aim, double accept)
             break;
         }
         merit = mnew;
-#ifdef SPLINE_DEBUG
-        fprintf(stderr, "it %d al %g merit %g resid %g sigma %g\n", it, al, merit, w->resid, w->sigma);
-#endif
     }
     return w->resid <= accept ? EL_OK : EL_ENOCONV;
 }
@@ -1134,7 +1136,8 @@ static int make_result(const spline_ws *w, const double *xy, double S, el_spline
         return EL_ENOMEM;
     }
     double resid = 0.0;
-    r.sigma = w->sigma / (S * S);
+    /* tension mode: the given sigma exactly (not through the unit S) */
+    r.sigma = w->lmode ? w->sigma / (S * S) : w->sigma_user;
     for (size_t j = 0; j < m; j++) {
         const piece *pc = &w->pc[j];
         targets t;
@@ -1147,7 +1150,7 @@ static int make_result(const spline_ws *w, const double *xy, double S, el_spline
         p->k = pc->v[V_K];
         p->q = pc->v[V_Q];
         p->length = pc->v[V_L] * S;
-        r.sigmas[j] = t.s / (S * S);
+        r.sigmas[j] = t.is == -1 ? r.sigma : t.s / (S * S);
         const double s2[2] = {0.0, p->length};
         double pt[4], th[2], ka[2];
         int st = el_smooth_eval(p, 2, s2, pt, th, ka);
@@ -1241,6 +1244,7 @@ int el_spline_solve(const double *xy, size_t n, const el_spline_options *opt,
     w.tol = opt->tol; w.max_iter = opt->max_iter;
     w.aim = fmax(1e-14, 1e-2 * opt->tol);
     w.sigma = lmode ? 1.0 : opt->sigma * S * S;
+    w.sigma_user = opt->sigma;
     w.Lt = lmode ? opt->length / S : 0.0;
     for (size_t j = 0; j < m; j++) {
         const size_t e = (j + 1) % n;
@@ -1331,6 +1335,39 @@ int el_spline_solve(const double *xy, size_t n, const el_spline_options *opt,
 done:
     ws_free(&w);
     return st;
+}
+
+/* internal.h: the piece's Jacobians and implicit derivatives, for the tests. */
+int el__spline_piece_jacobians(const el_smooth_params *p, double *J, double *g0, double *g1,
+                               double *M, double *d)
+{
+    if (el_smooth_check(p) || !(p->length > 0.0) || !J || !g0 || !g1 || !M || !d) return EL_EINVAL;
+    el__gsl_quiet();
+    const double s[2] = {0.0, p->length};
+    double xy[4], th[2];
+    int st = el_smooth_eval(p, 2, s, xy, th, NULL);
+    if (st) return st;
+    piece pc;
+    memset(&pc, 0, sizeof pc);
+    pc.v[V_PHI] = p->phi; pc.v[V_NU] = log(p->mu); pc.v[V_K] = p->k; pc.v[V_Q] = p->q;
+    pc.v[V_L] = p->length;
+    pc.dx = xy[2] - xy[0];
+    pc.dy = xy[3] - xy[1];
+    pc.h = hypot(pc.dx, pc.dy);
+    if (!(pc.h > 0.0)) return EL_EDOM;
+    const targets t = {th[0], th[1], 2.0 * p->mu * (2.0 * p->k * p->k - 1.0), -1, -1, -1};
+    double raw[NV * NV + 2 * NV];
+    if ((st = piece_eval_raw(&pc, &t, 1, raw))) return st;
+    memcpy(J, raw, NV * NV * sizeof *J);
+    memcpy(g0, raw + NV * NV, NV * sizeof *g0);
+    memcpy(g1, raw + NV * NV + NV, NV * sizeof *g1);
+    memcpy(M, pc.M, sizeof pc.M);
+    for (int r = 0; r < 3; r++) {
+        d[r] = pc.c0[r + 1];
+        d[3 + r] = pc.c1[r + 1];
+        d[6 + r] = pc.cL[r + 1];
+    }
+    return EL_OK;
 }
 
 /* ------------------------------------------------------------------ B-spline */
