@@ -74,7 +74,6 @@
 #include <string.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_linalg.h>
-#include <gsl/gsl_sf_ellint.h>
 
 enum { NV = 5 };                      /* piece unknowns: phi, nu, k, q, L */
 enum { V_PHI, V_NU, V_K, V_Q, V_L };
@@ -89,6 +88,7 @@ typedef struct piece {
     double dx, dy, h;        /* chord (internal units) */
     double R[NV];            /* residuals at v */
     double th0, th1, kap0, kap1, dkap0;
+    double energy, Kq;       /* integral kappa^2 ds; K of the modulus min(|k|, 1/|k|) */
     double st[NV];           /* its start state (theta0, kappa0, kappa0', sigma, L) */
     double M[NV * NV];       /* d st / d v */
     double D[4][NV];         /* J^{-1} R, J^{-1} e2, J^{-1} e3, h^2 J^{-1} e4 */
@@ -230,6 +230,8 @@ static int piece_eval_raw(piece *pc, const targets *t, int jac, double *raw)
     pc->kap0 = 2.0 * k * w * a0.cn;
     pc->kap1 = 2.0 * k * w * a1.cn;
     pc->dkap0 = -2.0 * k * mu * a0.sn * a0.dn;
+    pc->energy = 4.0 * k2 * w * ((u1 - q) - (a1.D - a0.D));   /* el_smooth_energy */
+    pc->Kq = mod.K;
     pc->st[0] = pc->th0;
     pc->st[1] = pc->kap0;
     pc->st[2] = pc->dkap0;
@@ -312,14 +314,21 @@ static double max_abs(const double *v, size_t n)
     return m;
 }
 
-/* Incomplete elliptic integral of the first kind F(psi | k), any real psi, k <= 1
- * (k = 1: |psi| < pi/2, F = atanh(sin psi) = asinh(tan psi), where GSL stops). */
-static double ellint_F(double psi, double k)
+/* Incomplete elliptic integral of the first kind F(psi | k) for |psi| <= pi,
+ * 0 <= k <= 1 with kc2 = 1 - k^2 given without cancellation: Carlson,
+ * F = sin psi R_F(cos^2 psi, 1 - k^2 sin^2 psi, 1) on |psi| <= pi/2 and
+ * F(psi) = 2K - F(pi - psi) beyond (ellint.c; GSL's gsl_sf_ellint_F costs
+ * about twice as much). k = 1: |psi| < pi/2 only, F = asinh(tan psi). NaN outside. */
+static double ellint_F(double psi, double k, double kc2)
 {
-    if (k >= 1.0) return fabs(psi) < 0.5 * M_PI ? asinh(tan(psi)) : NAN;
-    gsl_sf_result r;
-    if (gsl_sf_ellint_F_e(psi, k, GSL_PREC_DOUBLE, &r)) return NAN;
-    return r.val;
+    if (!(fabs(psi) <= M_PI)) return NAN;
+    if (!(kc2 > 0.0)) return fabs(psi) < 0.5 * M_PI ? asinh(tan(psi)) : NAN;
+    const double a = fabs(psi), r = a > 0.5 * M_PI ? M_PI - a : a, sn = sin(r), cs = cos(r);
+    double rf, rd, K = 0.0, D;
+    if (el__carlson_fd(cs * cs, kc2 + k * k * cs * cs, 1.0, 1.0, &rf, &rd)) return NAN;
+    if (a > 0.5 * M_PI && el__ellint_complete(k, kc2, &K, &D)) return NAN;
+    const double F = a > 0.5 * M_PI ? 2.0 * K - sn * rf : sn * rf;
+    return copysign(F, psi);
 }
 
 /* Parameters of the elastica of tension s through a state (theta, kappa,
@@ -331,28 +340,36 @@ static int piece_from_state(piece *pc, double theta, double kappa, double dkappa
     const double wv = kappa * kappa - s;
     double Fx = wv * T[0] + 2.0 * dkappa * N[0], Fy = wv * T[1] + 2.0 * dkappa * N[1];
     double Fn = hypot(Fx, Fy);
+    /* 1 - k^2 = (Fn - s) / (2 Fn) = (kappa^2 (kappa^2 - 2 s) + 4 kappa'^2) / (2 Fn (Fn + s)),
+     * the second form without the cancellation of Fn - s when s > 0 */
+    double kc2 = s > 0.0 ? (kappa * kappa * (kappa * kappa - 2.0 * s) + 4.0 * dkappa * dkappa) /
+                               (2.0 * Fn * (Fn + s))
+                         : (Fn - s) / (2.0 * Fn);
     if (!(Fn > 1e-12 * (fabs(s) + kappa * kappa + 1e-300))) {   /* a circle or a line: a small force along T */
         Fn = 1e-6 * (fabs(s) + kappa * kappa) + 1e-12;
         Fx = -Fn * T[0];
         Fy = -Fn * T[1];
+        kc2 = (Fn - s) / (2.0 * Fn);
     }
     if (!(Fn + s > 0.0)) return EL_EDOM;
-    const double mu = 0.5 * Fn, k2 = (Fn + s) / (2.0 * Fn), phi0 = atan2(Fy, Fx);
+    const double mu = 0.5 * Fn, phi0 = atan2(Fy, Fx);
+    const double k2 = kc2 > 0.0 ? fmin((Fn + s) / (2.0 * Fn), 1.0) : fmax((Fn + s) / (2.0 * Fn), 1.0);
     double d = theta - phi0;
     d -= 2.0 * M_PI * nearbyint(d / (2.0 * M_PI));
     const double a = 0.5 * d, phi = theta - 2.0 * a;   /* theta = phi + 2a exactly */
     double k, u;
-    if (k2 < 1.0) {
+    if (kc2 > 0.0) {
         k = sqrt(k2);
         const double psi = atan2(sin(a) / k, kappa / (2.0 * k * sqrt(mu)));
-        u = ellint_F(psi, k);
+        u = ellint_F(psi, k, kc2);
     } else {
         const double ka = sqrt(k2);
         k = kappa < 0.0 ? -ka : ka;
         /* k = 1 exactly: the separatrix, a = +-pi/2 is at u = infinity (a straight
          * state under tension); start a little inside, on its tail */
         const double am = ka < 1.0 + 1e-12 ? copysign(fmin(fabs(a), 0.5 * M_PI - 1e-8), a) : a;
-        u = ellint_F(k < 0.0 ? -am : am, 1.0 / ka) / ka;
+        /* modulus 1/|k|: its complement 1 - 1/k^2 = -kc2 / k^2 */
+        u = ellint_F(k < 0.0 ? -am : am, 1.0 / ka, -kc2 / k2) / ka;
     }
     if (!isfinite(u)) return EL_EDOM;
     pc->v[V_PHI] = phi;
@@ -712,6 +729,7 @@ static int chain_newton(spline_ws *w, int cap, double aim, double accept)
             mnew = bad ? INFINITY : chain_eval(w, 1);
             if (mnew <= (1.0 - 2e-4 * al) * merit) { ok = 1; break; }
         }
+        if (!ok && halvings == 0 && w->resid <= accept) break;   /* rounding: the trial is as good */
         if (!ok) {   /* restore the last accepted state */
             memcpy(w->x, w->xs, n * sizeof *w->x);
             w->sigma = sigma0;
@@ -770,8 +788,10 @@ static int start_pieces(spline_ws *w)
         piece *pc = &w->pc[j];
         targets t;
         piece_targets(w, j, &t);
-        /* a start only: near enough is good (nearly straight pieces under tension
-         * stop short of 1e-12, see NEAR_RESID) */
+        /* a start only: the spline's Newton corrects a close one (R small), a far
+         * one is solved alone first (nearly straight pieces under tension stop
+         * short of 1e-8: near enough is good, see NEAR_RESID) */
+        if (!piece_start(pc, &t) && !piece_eval(pc, &t, 0) && max_abs(pc->R, NV) <= 1e-2) continue;
         if (!piece_start(pc, &t) && (!piece_newton(pc, &t, 1e-8) || max_abs(pc->R, NV) <= 1e-6))
             continue;
         int st = piece_hermite(pc, &t);
@@ -1103,16 +1123,14 @@ static int straight_line(const double *xy, size_t n, const el_spline_options *o,
     return 1;
 }
 
-/* max |kappa| on a piece: the ends, or 2|k| sqrt(mu) if u passes a maximum of |cn|. */
-static double piece_max_curvature(const el_smooth_params *p, double k0, double k1)
+/* max |kappa| on a piece: the ends, or 2|k| sqrt(mu) if u passes a maximum of
+ * |cn|: u = 2 j K(k) (|k| < 1), |k| u = 2 j K(1/|k|) (|k| > 1); Kq = K(min(|k|, 1/|k|)). */
+static double piece_max_curvature(const el_smooth_params *p, double Kq, double k0, double k1)
 {
     double m = fmax(fabs(k0), fabs(k1));
     const double ka = fabs(p->k), w = sqrt(p->mu);
     if (ka == 0.0) return m;
-    el__modulus mod;
-    if (el__modulus_init(ka, 0, &mod)) return m;
-    /* |cn| = 1 at u = 2 j K(k) (k < 1), at |k| u = 2 j K(1/k) (k > 1) */
-    const double per = ka < 1.0 ? 2.0 * mod.K : 2.0 * mod.K / ka;
+    const double per = ka < 1.0 ? 2.0 * Kq : 2.0 * Kq / ka;
     const double u0 = p->q, u1 = p->q + w * p->length;
     if (floor(u1 / per) > floor(u0 / per) || fmod(u0, per) == 0.0) m = fmax(m, 2.0 * ka * w);
     return m;
@@ -1131,8 +1149,10 @@ static int make_result(const spline_ws *w, const double *xy, double S, el_spline
     r.forces = malloc(2 * m * sizeof *r.forces);
     r.angles = malloc(n * sizeof *r.angles);
     r.curvatures = malloc(n * sizeof *r.curvatures);
-    if (!r.pieces || !r.sigmas || !r.forces || !r.angles || !r.curvatures) {
+    double *ends = malloc(2 * m * sizeof *ends);   /* theta, kappa at each piece's end */
+    if (!r.pieces || !r.sigmas || !r.forces || !r.angles || !r.curvatures || !ends) {
         el_spline_result_free(&r);
+        free(ends);
         return EL_ENOMEM;
     }
     double resid = 0.0;
@@ -1151,28 +1171,29 @@ static int make_result(const spline_ws *w, const double *xy, double S, el_spline
         p->q = pc->v[V_Q];
         p->length = pc->v[V_L] * S;
         r.sigmas[j] = t.is == -1 ? r.sigma : t.s / (S * S);
+        /* the residual is measured on the output, with el_smooth_eval */
         const double s2[2] = {0.0, p->length};
         double pt[4], th[2], ka[2];
-        int st = el_smooth_eval(p, 2, s2, pt, th, ka);
-        if (st) { el_spline_result_free(&r); return st; }
+        const int st = el_smooth_eval(p, 2, s2, pt, th, ka);
+        if (st) { el_spline_result_free(&r); free(ends); return st; }
         const size_t e = (j + 1) % n;
         const double h = hypot(xy[2 * e] - xy[2 * j], xy[2 * e + 1] - xy[2 * j + 1]);
         resid = fmax(resid, hypot(pt[2] - xy[2 * e], pt[3] - xy[2 * e + 1]) / h);
         r.angles[j] = th[0];
         r.curvatures[j] = ka[0];
+        ends[2 * j] = th[1];
+        ends[2 * j + 1] = ka[1];
         if (!w->closed && j == m - 1) { r.angles[n - 1] = th[1]; r.curvatures[n - 1] = ka[1]; }
         /* F = (sigma - kappa^2) T - 2 kappa' N at s = 0 */
         const double dk = pc->dkap0 / (S * S), T[2] = {cos(th[0]), sin(th[0])};
         const double a = r.sigmas[j] - ka[0] * ka[0];
         r.forces[2 * j] = a * T[0] + 2.0 * dk * T[1];
         r.forces[2 * j + 1] = a * T[1] - 2.0 * dk * T[0];
-        double en;
-        if ((st = el_smooth_energy(p, &en))) { el_spline_result_free(&r); return st; }
-        r.energy += en;
+        r.energy += pc->energy / S;
         r.length += p->length;
-        r.max_curvature = fmax(r.max_curvature, piece_max_curvature(p, ka[0], ka[1]));
+        r.max_curvature = fmax(r.max_curvature, piece_max_curvature(p, pc->Kq, ka[0], ka[1]));
     }
-    /* residuals at the joints (after all pieces are known) */
+    /* the joints and the end conditions */
     for (size_t i = 0; i < n; i++) {
         const double lr = w->ell[i] * S;
         if (!w->closed && (i == 0 || i == n - 1)) {
@@ -1185,13 +1206,10 @@ static int make_result(const spline_ws *w, const double *xy, double S, el_spline
             continue;
         }
         const size_t jm = (i + m - 1) % m;
-        const double s1 = r.pieces[jm].length;
-        double th, ka;
-        int st = el_smooth_eval(&r.pieces[jm], 1, &s1, NULL, &th, &ka);
-        if (st) { el_spline_result_free(&r); return st; }
-        resid = fmax(resid, fabs(wrap_pi(th - r.angles[i])));
-        resid = fmax(resid, fabs(ka - r.curvatures[i]) * lr);
+        resid = fmax(resid, fabs(wrap_pi(ends[2 * jm] - r.angles[i])));
+        resid = fmax(resid, fabs(ends[2 * jm + 1] - r.curvatures[i]) * lr);
     }
+    free(ends);
     if (w->lmode == BORDER_LENGTH) resid = fmax(resid, fabs(r.length - w->Lt * S) / (w->Lt * S));
     r.residual = resid;
     r.iterations = w->iterations;
@@ -1242,7 +1260,7 @@ int el_spline_solve(const double *xy, size_t n, const el_spline_options *opt,
     const double S = Lp / (double)m;   /* the unit: mean chord */
     w.n = n; w.m = m; w.closed = closed; w.lmode = lmode;
     w.tol = opt->tol; w.max_iter = opt->max_iter;
-    w.aim = fmax(1e-14, 1e-2 * opt->tol);
+    w.aim = fmax(1e-14, 0.1 * opt->tol);
     w.sigma = lmode ? 1.0 : opt->sigma * S * S;
     w.sigma_user = opt->sigma;
     w.Lt = lmode ? opt->length / S : 0.0;
@@ -1315,11 +1333,13 @@ int el_spline_solve(const double *xy, size_t n, const el_spline_options *opt,
         }
         if (st == EL_ENOCONV && w.resid <= NEAR_RESID) w.near = 1;
     } else {
-        /* a tension solution, then sigma free with the length as its equation,
-         * directly or by continuation in the length */
+        /* a tension solution, then sigma free with the length as its equation
+         * (solve_length): the free batten, or where the continuation towards it
+         * stopped (it need not exist) */
         w.lmode = 0;
-        w.sigma = 1.0;
+        w.sigma = 0.0;
         st = solve_tension(&w, sv, opt->max_steps, 0);
+        if (st == EL_ENOCONV && isfinite(chain_eval(&w, 1)) && w.resid <= NEAR_RESID) st = EL_OK;
         if (!st) st = solve_length(&w, sv, opt->max_steps, opt->length / S);
         if (st == EL_ENOCONV && w.lmode && w.resid <= NEAR_RESID) w.near = 1;
     }

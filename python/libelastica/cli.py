@@ -525,6 +525,66 @@ def cmd_blend(args) -> int:
     return EXIT_OK
 
 
+# ------------------------------------------------------------------ spline
+
+def cmd_spline(args) -> int:
+    import libelastica as el
+    from .io import bspline_to_dict
+    from .report import curves_picture, save_picture
+    pts = read_points(args.file, min_points=2)
+    if pts.shape[1] != 2:
+        raise InputError(f"{args.file}: an elastic spline needs 2 columns (x, y), got 3")
+    kw = {"tension": args.tension} if args.length is None else {"length": args.length}
+    _finite(next(iter(kw.values())), "--tension/--length")
+    ends = {}
+    for name in ("start", "end"):
+        t, k = getattr(args, f"{name}_tangent"), getattr(args, f"{name}_curvature")
+        if k is not None and t is None:
+            raise InputError(f"--{name}-curvature needs --{name}-tangent (a G2 end)")
+        if t is not None and args.closed:
+            raise InputError(f"--{name}-tangent: a closed curve has no ends")
+        ends[name] = None if t is None else (
+            t if k is None else {"tangent": t, "curvature": _finite(k, f"--{name}-curvature")})
+    sp = el.elastic_spline(pts, **kw, start=ends["start"], end=ends["end"], closed=args.closed)
+    need_b = args.dxf or args.bspline_tol is not None
+    b = sp.to_bspline(_finite(args.bspline_tol or 1e-6, "--bspline-tol"), args.degree) \
+        if need_b else None
+    rec = {"file": args.file, "points": sp.data.tolist(), "closed": sp.closed, **kw,
+           "tension": sp.tension, "length": sp.length, "energy": sp.energy,
+           "max_curvature": sp.max_curvature, "residual": sp.residual,
+           "pieces": [curve_to_dict(c) for c in sp.pieces], "tensions": sp.tensions.tolist(),
+           "forces": sp.forces.tolist(), "angles": sp.angles.tolist(),
+           "curvatures": sp.curvatures.tolist(),
+           "bspline": bspline_to_dict(b) if b is not None else None}
+    if args.json:
+        write_json(rec, args.json)
+    if args.json != "-":
+        print(_table(["points", "pieces", "tension", "length", "energy", "max curvature",
+                      "residual"], [[len(sp.data), len(sp.pieces), sp.tension, sp.length,
+                                     sp.energy, sp.max_curvature, sp.residual]]))
+        if b is not None:
+            print(f"B-spline: degree {b.degree}, {len(b.poles)} poles, certified within "
+                  f"{b.max_deviation:.3g}")
+    if args.dxf:
+        write_dxf_spline(b, args.dxf, points=sp.data)
+    for spec in (args.svg, args.png):
+        if spec:
+            n = max(400, 40 * len(sp.pieces))
+            s = sp.arclengths(n)
+            xy, comb = sp.points(n), sp.comb(n)
+            what = f"tension {sp.tension:.6g}" + (f" (length {args.length:g})"
+                                                  if args.length is not None else "")
+            pic = curves_picture([(xy, s, sp.curvature(n)), (comb, s, None)],
+                                 ["elastic spline", "curvature comb"], points=sp.data,
+                                 title=f"Elastic spline through {len(sp.data)} points, {what}",
+                                 params=[f"pieces {len(sp.pieces)}", f"tension {sp.tension:.6g}",
+                                         f"length {sp.length:.6g}", f"energy {sp.energy:.6g}",
+                                         f"max curvature {sp.max_curvature:.6g}",
+                                         f"residual {sp.residual:.2g}"])
+            save_picture(pic, spec)
+    return EXIT_OK
+
+
 # ------------------------------------------------------------------ parser
 
 def build_parser() -> argparse.ArgumentParser:
@@ -595,6 +655,37 @@ def build_parser() -> argparse.ArgumentParser:
     b.add_argument("--json", metavar="PATH", help="write the B-spline as JSON ('-' = stdout)")
     b.add_argument("--dxf", metavar="PATH", help="write a DXF SPLINE (needs ezdxf)")
     b.set_defaults(func=cmd_bspline)
+
+    sp = sub.add_parser(
+        "spline", help="elastic spline (a batten) through points",
+        description="The elastic spline through the points: a chain of elasticae of one "
+                    "tension, G2 at every point (a batten through its ducks), with its "
+                    "curvature comb, forces and one certified G2 B-spline.",
+        epilog="examples:\n  elastica spline ducks.csv --tension 0.5 --svg spline.svg\n"
+               "  elastica spline ducks.csv --length 12.5 --json - \n"
+               "  elastica spline ring.csv --closed --tension 1 --dxf ring.dxf\n"
+               "  elastica spline ducks.csv --start-tangent 1 0 --start-curvature 0.2\n\n"
+               "input: CSV, whitespace separated text or .npy, 2 columns (x, y)",
+        formatter_class=raw)
+    sp.add_argument("file", metavar="FILE", help="the points (2 columns)")
+    g = sp.add_mutually_exclusive_group()
+    g.add_argument("--tension", type=float, default=0.0, metavar="SIGMA",
+                   help="tension sigma >= 0, 1/length^2 (default 0: the free-sliding batten)")
+    g.add_argument("--length", type=float, metavar="L", help="total length (sigma computed)")
+    sp.add_argument("--closed", action="store_true", help="a closed curve through the points")
+    for name in ("start", "end"):
+        sp.add_argument(f"--{name}-tangent", type=float, nargs=2, metavar=("TX", "TY"),
+                        help=f"clamp the {name} tangent (default: natural, curvature 0)")
+        sp.add_argument(f"--{name}-curvature", type=float, metavar="K",
+                        help=f"and its curvature: G2 to other geometry (needs --{name}-tangent)")
+    sp.add_argument("--bspline-tol", type=float, metavar="TOL",
+                    help="add the B-spline within TOL to the JSON (default 1e-6 with --dxf)")
+    sp.add_argument("--degree", type=int, default=3, help="B-spline degree 3..7 (default 3)")
+    sp.add_argument("--json", metavar="PATH", help="write the spline as JSON ('-' = stdout)")
+    sp.add_argument("--svg", metavar="PATH", help="picture with the curvature comb (SVG)")
+    sp.add_argument("--png", metavar="PATH", help="picture with the curvature comb (PNG)")
+    sp.add_argument("--dxf", metavar="PATH", help="write the B-spline as a DXF SPLINE (ezdxf)")
+    sp.set_defaults(func=cmd_spline)
 
     e = sub.add_parser("blend", help="elliptic blending curve from four points (seed 003)",
                        description="An elliptic blending curve (basis {1-t, sn((1-t)K), sn(Kt), "

@@ -78,6 +78,21 @@ class ElasticSpline:
         """Signed curvature at the same n arc lengths as :meth:`points`."""
         return self._eval(self.arclengths(n), "curvature")
 
+    def angle(self, n: int = 200) -> np.ndarray:
+        """Tangent angle (rad, continuous) at the same n arc lengths as :meth:`points`."""
+        return self._eval(self.arclengths(n), "angle")
+
+    def comb(self, n: int = 200, scale: Optional[float] = None) -> np.ndarray:
+        """The curvature comb: (n, 2) tips p - scale kappa N at the arc lengths of
+        :meth:`points` (teeth outside the bend, as CAD combs are drawn); ``scale``
+        defaults to 15 % of the extent over the largest curvature."""
+        xy, k, th = self.points(n), self.curvature(n), self.angle(n)
+        if scale is None:
+            ext = float(np.ptp(xy, axis=0).max())
+            scale = 0.15 * ext / self.max_curvature if self.max_curvature > 0 else 0.0
+        normal = np.column_stack([-np.sin(th), np.cos(th)])
+        return xy - scale * k[:, None] * normal
+
     def to_bspline(self, tol: float = 1e-6, degree: int = 3):
         """ONE clamped B-spline (degree 3..7) for the whole spline within ``tol``
         (coordinate units) of it, parametrised by arc length from point 0: each
