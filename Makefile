@@ -32,7 +32,7 @@ APT_PKGS := build-essential pkg-config libgsl-dev coinor-libipopt-dev check \
 PIP_PKGS := numpy cffi pytest scipy ezdxf matplotlib
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps lib check check-c check-asan check-install check-python check-freecad bench occt-dev demo gallery install clean
+.PHONY: all deps lib check check-c check-asan check-install check-python check-freecad bench occt-dev spiro-dev demo gallery install clean
 
 all: deps lib
 
@@ -112,6 +112,20 @@ occt-dev:
 	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get update -qq && \
 	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
 	fi
+
+# libspiro, the comparison of bench_spline.c (Debian's libspiro-dev): installed by `make bench` only.
+SPIRO_PKGS := libspiro-dev
+spiro-dev:
+	@missing=$$(for p in $(SPIRO_PKGS); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q 'install ok installed' || echo $$p; done); \
+	if [ -n "$$missing" ]; then \
+	  echo "make bench: installing $$missing"; \
+	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get update -qq && \
+	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
+	fi
+
+$(BUILD)/bench/bench_spline: bench/bench_spline.c $(BUILD)/libelastica.a | spiro-dev
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_BASE) $(DEPS_CFLAGS) $< -o $@ $(BUILD)/libelastica.a $(DEPS_LIBS) -lspiro
 
 $(BUILD)/bench/%: bench/%.cc $(BUILD)/libelastica.a | occt-dev
 	@mkdir -p $(dir $@)

@@ -17,6 +17,7 @@
  * mode, beside spiro's, medians of alternated runs.
  * One JSON line per figure; "readme"/"value" mark the README's figures.
  */
+#define _POSIX_C_SOURCE 199309L
 #include "elastica.h"
 #include <math.h>
 #include <bezctx.h>   /* spiro.h needs it first */

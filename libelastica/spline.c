@@ -781,21 +781,37 @@ static void start_angles(spline_ws *w)
     if (w->slot[n - 1] == SLOT_TENSION) w->x[n - 1] = w->sigma;
 }
 
-/* Every piece from the linearised batten, solved alone, el_hermite_solve where that fails. */
+/* The angles (rad) between the chord and the target tangents of a piece. */
+static double chord_angle(const piece *pc, const targets *t)
+{
+    const double c = atan2(pc->dy, pc->dx);
+    return fmax(fabs(wrap_pi(t->ta - c)), fabs(wrap_pi(t->tb - c)));
+}
+
+/*
+ * Every piece: where its tangents are within 0.75 rad of its chord, from the
+ * linearised batten (kept if close, R <= 1e-2: the spline's Newton corrects it;
+ * else solved alone, to 1e-8, or 1e-6 where nearly straight pieces under tension
+ * stop, see NEAR_RESID); where they are not, or that fails, the least-energy
+ * Hermite elastica with that turning (el_hermite_solve): the branch a batten
+ * takes, where the linearisation can lead Newton to a loop.
+ */
 static int start_pieces(spline_ws *w)
 {
     for (size_t j = 0; j < w->m; j++) {
         piece *pc = &w->pc[j];
         targets t;
         piece_targets(w, j, &t);
-        /* a start only: the spline's Newton corrects a close one (R small), a far
-         * one is solved alone first (nearly straight pieces under tension stop
-         * short of 1e-8: near enough is good, see NEAR_RESID) */
-        if (!piece_start(pc, &t) && !piece_eval(pc, &t, 0) && max_abs(pc->R, NV) <= 1e-2) continue;
-        if (!piece_start(pc, &t) && (!piece_newton(pc, &t, 1e-8) || max_abs(pc->R, NV) <= 1e-6))
-            continue;
+        if (chord_angle(pc, &t) <= 0.75) {
+            if (!piece_start(pc, &t) && !piece_eval(pc, &t, 0) && max_abs(pc->R, NV) <= 1e-2) continue;
+            if (!piece_start(pc, &t) && (!piece_newton(pc, &t, 1e-8) || max_abs(pc->R, NV) <= 1e-6))
+                continue;
+        }
         int st = piece_hermite(pc, &t);
         if (st == EL_ENOMEM) return st;
+        if (st && chord_angle(pc, &t) > 0.75 && !piece_start(pc, &t) &&
+            (!piece_newton(pc, &t, 1e-8) || max_abs(pc->R, NV) <= 1e-6))
+            st = EL_OK;
         if (st) return EL_ENOCONV;
     }
     return EL_OK;

@@ -1,0 +1,222 @@
+"""libelastica.elastic_spline: the batten through its ducks (issue 14), checked
+with one-point evaluations of the pieces, an independent integration of the
+curvature equation (scipy), the B-spline measured on itself, and the command line."""
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+
+import numpy as np
+import pytest
+from scipy.integrate import solve_ivp
+
+import libelastica as el
+from libelastica.io import curve_from_dict
+
+SKETCH = np.array([[0.0, 0.0], [0.7, 0.45], [1.1, 0.62], [2.6, 0.9], [3.0, 0.85], [4.8, 0.2],
+                   [5.5, -0.3], [7.9, -0.6], [8.2, -0.55]])
+
+
+def one_point(piece, s):
+    """Point, angle and curvature of a piece at one arc length (no sampling fast path)."""
+    s = np.array([float(s)])
+    return piece.points(s)[0], piece.angle(s)[0], piece.curvature(s)[0]
+
+
+def check(sp, pts, tol=1e-9, closed=False):
+    """Through the points, G1 and G2 at them, one tension (k = 0: straight, exempt)."""
+    n = len(sp.data)
+    assert len(sp.pieces) == (n if closed else n - 1)
+    ext = np.abs(pts).max() + 1.0
+    kmax = sp.max_curvature
+    for j, p in enumerate(sp.pieces):
+        e = (j + 1) % n
+        a, tha, ka = one_point(p, 0.0)
+        b, thb, kb = one_point(p, p.length)
+        assert np.allclose(a, pts[j], atol=0, rtol=0)
+        assert np.hypot(*(b - pts[e])) <= tol * ext
+        if p.k != 0.0:
+            assert 2 * p.mu * (2 * p.k ** 2 - 1) == pytest.approx(sp.tensions[j], rel=1e-8,
+                                                                  abs=1e-8 * p.mu)
+        if closed or j + 1 < len(sp.pieces):
+            _, thc, kc = one_point(sp.pieces[e % len(sp.pieces)], 0.0)
+            d = (thb - thc + np.pi) % (2 * np.pi) - np.pi
+            assert abs(d) <= tol
+            assert abs(kb - kc) <= 1e-7 * kmax
+    assert sp.length == pytest.approx(sum(p.length for p in sp.pieces), rel=1e-12)
+    assert sp.energy == pytest.approx(sum(p.energy() for p in sp.pieces), rel=1e-10)
+
+
+@pytest.mark.parametrize("tension", [0.0, 0.3, 2.0, 20.0])
+def test_through_the_points_g2_one_tension(tension):
+    sp = el.elastic_spline(SKETCH, tension=tension)
+    check(sp, SKETCH)
+    assert sp.tension == tension and np.all(sp.tensions == tension)
+    assert abs(sp.curvatures[0]) <= 1e-9 and abs(sp.curvatures[-1]) <= 1e-9   # natural ends
+    assert all(abs(p.k) < 1.5 for p in sp.pieces)   # a gentle curve: no loops
+
+
+def test_pieces_are_elasticae_of_the_tension_by_integration():
+    """Independent of the library's formulas: integrate theta' = kappa,
+    2 kappa'' = sigma kappa - kappa^3, x' = cos theta, y' = sin theta from each
+    piece's start state (kappa' by a difference) and land on the next point."""
+    sigma = 0.8
+    sp = el.elastic_spline(SKETCH, tension=sigma)
+    for j, p in enumerate(sp.pieces):
+        h = 1e-6
+        _, th0, k0 = one_point(p, 0.0)
+        dk0 = (one_point(p, h)[2] - one_point(p, 0.0)[2]) / h
+        dk0 += h / 2 * 0.5 * (sigma * k0 - k0 ** 3)   # second-order correction of the difference
+
+        def rhs(_, y):
+            x, yy, th, k, dk = y
+            return [np.cos(th), np.sin(th), k, dk, 0.5 * (sigma * k - k ** 3)]
+
+        sol = solve_ivp(rhs, (0.0, p.length), [*SKETCH[j], th0, k0, dk0], rtol=1e-11, atol=1e-12)
+        assert np.hypot(*(sol.y[:2, -1] - SKETCH[j + 1])) < 1e-6
+        assert sol.y[3, -1] == pytest.approx(sp.curvatures[j + 1], abs=1e-5)
+
+
+def test_sampling_matches_one_point_evaluation():
+    sp = el.elastic_spline(SKETCH, tension=0.5)
+    s = sp.arclengths(157)
+    xy, k, th = sp.points(157), sp.curvature(157), sp.angle(157)
+    starts = np.concatenate([[0.0], np.cumsum([p.length for p in sp.pieces])])
+    for i in range(0, 157, 7):
+        j = min(np.searchsorted(starts, s[i], side="right") - 1, len(sp.pieces) - 1)
+        a, t, kk = one_point(sp.pieces[j], min(s[i] - starts[j], sp.pieces[j].length))
+        assert np.allclose(xy[i], a, atol=1e-12) and abs(k[i] - kk) < 1e-12
+        assert abs(th[i] - t) < 1e-12
+    assert np.allclose(xy[0], SKETCH[0]) and np.hypot(*(xy[-1] - SKETCH[-1])) < 1e-9
+    comb = sp.comb(157)
+    assert comb.shape == (157, 2) and np.all(np.isfinite(comb))
+
+
+def test_forces_constant_and_ducks_push_normal():
+    sigma = 1.5
+    sp = el.elastic_spline(SKETCH, tension=sigma)
+    F = sp.forces
+    for j, p in enumerate(sp.pieces):
+        for s in (0.3 * p.length, p.length):
+            h = 1e-6
+            _, th, k = one_point(p, s)
+            dk = (one_point(p, s)[2] - one_point(p, s - h)[2]) / h
+            T, N = np.array([np.cos(th), np.sin(th)]), np.array([-np.sin(th), np.cos(th)])
+            assert np.allclose((sigma - k * k) * T - 2 * dk * N, F[j], atol=1e-4)
+    for i in range(1, len(SKETCH) - 1):   # frictionless ducks: the load is normal
+        T = np.array([np.cos(sp.angles[i]), np.sin(sp.angles[i])])
+        assert abs((F[i - 1] - F[i]) @ T) < 1e-8 * (1 + np.abs(F).max())
+
+
+def test_length_mode_closed_and_ends():
+    free = el.elastic_spline(SKETCH)
+    sp = el.elastic_spline(SKETCH, length=free.length * 0.999)
+    check(sp, SKETCH)
+    assert sp.length == pytest.approx(free.length * 0.999, rel=1e-10) and sp.tension > 0
+    t = np.linspace(0, 2 * np.pi, 13)[:-1]
+    ring = np.c_[2 * np.cos(t), np.sin(t)]
+    sp = el.elastic_spline(np.vstack([ring, ring[:1]]), tension=0.5, closed=True)
+    check(sp, ring, closed=True)
+    sp = el.elastic_spline(SKETCH, tension=1.0, start=(1, 1), end={"tangent": (1, 0.1),
+                                                                   "curvature": -0.2})
+    check(sp, SKETCH)
+    assert sp.angles[0] == pytest.approx(np.pi / 4, abs=1e-9)
+    assert sp.curvatures[-1] == pytest.approx(-0.2, abs=1e-9)
+    assert sp.tensions[-1] != pytest.approx(1.0) and np.all(sp.tensions[:-1] == 1.0)
+
+
+def test_degenerate_inputs():
+    line = np.array([[0, 0], [1, 2], [1.5, 3], [4, 8]], float)
+    sp = el.elastic_spline(line, tension=3.0)
+    assert sp.energy == 0.0 and all(p.k == 0.0 for p in sp.pieces)
+    sp = el.elastic_spline(line[:2], tension=1.0)
+    assert len(sp.pieces) == 1 and sp.length == pytest.approx(np.hypot(1, 2))
+    sp = el.elastic_spline([[0, 0], [1, 0]], tension=1.0, start=(0, 1), end=(0, -1))
+    best = el.hermite((0, 0), (0, 1), (1, 0), (0, -1), tension=1.0)[0]
+    assert sp.energy == pytest.approx(best.energy_value, rel=1e-8)
+
+
+@pytest.mark.parametrize("kwargs,exc,text", [
+    (dict(points=[[0, 0], [0, 0], [1, 1]]), ValueError, "coincide"),
+    (dict(points=[[0, 0], [1, np.nan], [2, 0]]), ValueError, "finite"),
+    (dict(points=[[0, 0]]), ValueError, "at least 2"),
+    (dict(points=[[0, 0], [1, 1], [2, 0]], closed=True, tension=2.0), None, None),
+    (dict(points=[[0, 0], [1, 1]], length=1.0), el.DomainError, "shorter than the polygon"),
+    (dict(points=[[0, 0], [1, 1]], tension=-1.0), ValueError, "tension"),
+    (dict(points=[[0, 0], [1, 1]], tension=1.0, length=3.0), ValueError, "not both"),
+    (dict(points=[[0, 0], [1, 1]], start={"tangent": (1, 0), "curvature": 1},
+          end={"tangent": (1, 0), "curvature": 1}), el.DomainError, "span of its own"),
+    (dict(points=[[0, 0], [1, 1]], start=(0, 0)), ValueError, "nonzero"),
+    (dict(points=[[0, 0], [1, 1]], start={"curvature": 1}), ValueError, "tangent"),
+    (dict(points=[[i, i % 2] for i in range(10)], tension=0.0), el.DomainError, "slides off"),
+])
+def test_bad_input_clear_errors(kwargs, exc, text):
+    if exc is None:
+        el.elastic_spline(**kwargs)
+        return
+    with pytest.raises(exc, match=text):
+        el.elastic_spline(**kwargs)
+
+
+def test_circle_resolves_only_to_its_accuracy():
+    """Points on a circle of radius 1 with tension 1: the circle itself (kappa^2 =
+    sigma, no force) has |k| = infinity; the spline reached is returned on the
+    error, accurate to what the parametrisation resolves."""
+    with pytest.raises(el.NotConvergedError) as info:
+        el.elastic_spline([[0, 0], [1, 1], [2, 0]], closed=True, tension=1.0)
+    sp = info.value.spline
+    assert sp is not None and sp.residual < 1e-7
+    assert np.allclose(sp.curvatures, -1.0, atol=1e-6)
+
+
+@pytest.mark.parametrize("degree", [3, 5])
+@pytest.mark.parametrize("closed", [False, True])
+def test_one_bspline_g2_at_the_points(degree, closed):
+    sp = el.elastic_spline(SKETCH, tension=0.5, closed=closed)
+    b = sp.to_bspline(tol=1e-6, degree=degree)
+    assert 0 < b.max_deviation <= 1e-6
+    joints = np.cumsum([p.length for p in sp.pieces])[:-1]
+    flat = np.repeat(b.knots, b.mults)
+    for i, s in enumerate(joints):
+        assert np.count_nonzero(np.abs(flat - s) < 1e-12 * sp.length) == degree - 2
+        e = 1e-9 * sp.length
+        k = b.curvature([s - e, s + e])
+        assert abs(k[0] - k[1]) <= 1e-6 * sp.max_curvature
+        assert k[1] == pytest.approx(sp.curvatures[i + 1], abs=1e-6 * (1 + sp.max_curvature))
+    # the points are on it, at the arc lengths of the spline
+    at = b.evaluate(np.concatenate([[0.0], joints]))
+    assert np.allclose(at, SKETCH[:len(at)], atol=1e-9)
+
+
+def run(*args):
+    env = dict(os.environ)
+    return subprocess.run([sys.executable, "-m", "libelastica", *map(str, args)], env=env,
+                          capture_output=True, text=True, timeout=120)
+
+
+def test_cli_spline(tmp_path):
+    f = tmp_path / "ducks.csv"
+    np.savetxt(f, SKETCH, delimiter=",", header="x,y", comments="")
+    svg, js = tmp_path / "s.svg", tmp_path / "s.json"
+    r = run("spline", f, "--tension", "0.5", "--svg", svg, "--json", js, "--bspline-tol", "1e-6")
+    assert r.returncode == 0, r.stderr
+    assert "tension" in r.stdout and "B-spline" in r.stdout
+    ET.parse(svg)
+    d = json.loads(js.read_text())
+    assert d["tension"] == 0.5 and len(d["pieces"]) == len(SKETCH) - 1
+    assert d["bspline"]["max_deviation"] <= 1e-6
+    c = curve_from_dict(d["pieces"][2])
+    assert np.allclose(c.points([c.length])[0], SKETCH[3], atol=1e-9)
+    r = run("spline", f, "--length", "9.0", "--start-tangent", "1", "1", "--json", "-")
+    assert r.returncode == 0, r.stderr
+    assert json.loads(r.stdout)["length"] == pytest.approx(9.0)
+    r = run("spline", f, "--length", "3")   # shorter than the polygon: bad input, one line
+    assert r.returncode == 2 and "shorter than the polygon" in r.stderr
+    assert len(r.stderr.strip().splitlines()) == 1
+    r = run("spline", f, "--start-curvature", "1")
+    assert r.returncode == 2 and "--start-tangent" in r.stderr
+    r = run("spline", f, "--closed", "--tension", "1", "--json", "-")
+    assert r.returncode == 0 and len(json.loads(r.stdout)["pieces"]) == len(SKETCH)
