@@ -643,8 +643,8 @@ typedef struct el_spline_options {
     el_spline_end end;     /* end condition at the last point; default natural */
     double tol;            /* accepted residual: position / chord, tangent (rad), curvature jump
                               times the local chord, length / length; 1e-14..1e-3, default 1e-10 */
-    int max_iter;          /* Newton iterations per solve, 1..1000; default 60 */
-    int max_steps;         /* continuation steps (in sigma, then in length), 1..1000; default 60 */
+    int max_iter;          /* Newton iterations per solve (at most), 1..1000; default 60 */
+    int max_steps;         /* continuation steps (each family), 1..1000; default 60 */
 } el_spline_options;
 
 /*
@@ -676,19 +676,23 @@ void el_spline_options_defaults(el_spline_options *opt);
 
 /*
  * The elastic spline through the n points xy (2n, interleaved).
- * Method (spline.c): Newton on the tangent angles at the points (and sigma in
- * length mode) with the curvature jumps as equations; each piece is the
- * Hermite elastica from (point i, angle i) to (point i+1, angle i+1) at its
- * tension, continued from the previous iterate by Newton on its own
- * parameters, and the derivatives of its end curvatures by the implicit
- * function theorem: the Jacobian is tridiagonal (cyclic when closed, bordered
- * in length mode), solved by GSL in O(n) per iteration. Start: tangents of the
- * circles through three consecutive points, pieces from the linearised batten
- * (el_hermite_solve where that fails); if Newton fails there, continuation
- * from a high tension down to sigma, and in length mode from the length of a
- * tension solution to the one asked for. Work is bounded: at most
- * max_steps continuation steps of at most max_iter Newton iterations, each
- * with at most 12 step halvings, each O(n).
+ * Method (spline.c, with the derivations): Newton on the tangent angles at the
+ * points (and sigma in length mode) with the curvature jumps as equations; each
+ * piece is the Hermite elastica from (point i, angle i) to (point i+1, angle
+ * i+1) at its tension, its own five parameters eliminated in the same Newton
+ * step (implicit function theorem), so it continues the previous iterate's
+ * branch; the knot system is tridiagonal (cyclic when closed, bordered in
+ * length mode), solved by GSL in O(n) per iteration; steps halved until the
+ * residual decreases. Start: tangents of the circles through three consecutive
+ * points, pieces from the linearised batten or, where the tangents are far from
+ * the chord, the least-energy Hermite elastica (el_hermite_solve). If Newton
+ * fails there: continuation from a high tension (sigma h^2 = 40) down to sigma.
+ * Length mode: from the free batten (or as near sigma = 0 as continuation gets),
+ * pseudo-arclength continuation in (angles, sigma) until the length is
+ * bracketed, then Newton with the length as the border equation.
+ * Work is bounded: at most max_steps continuation steps of at most max_iter
+ * Newton iterations (20 for a first attempt, 12 for a step), each with at most 12
+ * step halvings, each O(n); 100 points take about 1 ms, 1000 about 15 ms (bench/).
  * End conditions (open curves): natural or tangent at either end: a batten
  * with given tension has exactly one degree of freedom per end. A G2 end
  * (tangent and curvature) asks one more: the span next to it takes its own
@@ -698,20 +702,29 @@ void el_spline_options_defaults(el_spline_options *opt);
  * end in length mode, or with two G2 ends, are EL_EDOM.
  * Degenerate data: collinear points in order along the line with natural (or
  * along-the-line tangent) ends give the straight line (k = 0 pieces; in length
- * mode only when the length is the polygon's); two points with natural ends are
- * the straight segment, with a tangent they are the Hermite problem at that
- * tension. Two consecutive points that coincide are EL_EINVAL (the batten
- * cannot pass a duck twice in no length); a closed curve needs 3 distinct points.
- * res is overwritten (not freed first): on EL_OK it holds the spline; on every
- * error it is left empty (npieces = 0, NULL arrays).
+ * mode when the length is the polygon's; longer, a buckled batten, one of its
+ * modes); two points with natural ends are the straight segment, with both
+ * tangents the least-energy Hermite elastica of that tension. Two consecutive
+ * points that coincide are EL_EINVAL (the batten cannot pass a duck twice in no
+ * length); a closed curve needs 3 distinct points.
+ * Accuracy: the residual (see tol) reaches ~1e-14 for moderate tensions. Two
+ * configurations are resolved only as far as el_smooth_params can: a piece that
+ * is (nearly) a circular arc with kappa^2 = sigma and no force (|k| -> infinity;
+ * e.g. points on a circle of radius 1/sqrt(sigma)), and pieces deep in the
+ * separatrix tail at high tension (sigma h^2 > ~100, a natural end there:
+ * 1 - k^2 below ~1e-8 is what a double resolves), ~1e-9..1e-7: EL_ENOCONV with
+ * that spline in res (raise tol to accept it).
+ * res is overwritten (not freed first): on EL_OK it holds the spline (residual
+ * <= tol); on EL_ENOCONV the spline reached when it is one to within 1e-6 (see
+ * Accuracy), else it is empty; on every other error it is empty (npieces = 0,
+ * NULL arrays).
  * Errors: EL_EINVAL (NULL, n < 2, non-finite or coincident consecutive points,
  * bad options: sigma < 0 or non-finite in tension mode, zero tangent, closed with
- * fewer than 3 points), EL_EDOM (length mode with length <= the polygon's length
- * (unless the points are collinear and it is equal); tension 0 when the
- * free-sliding batten does not exist: continuation from a high tension cannot
- * reach sigma = 0, the batten slides off its ducks; G2 ends without a span of
- * their own, see above), EL_ENOCONV (Newton and continuation did not reach tol),
- * EL_ENOMEM, EL_EINTERNAL.
+ * fewer than 3 points), EL_EDOM (length mode with length < the polygon's length;
+ * tension 0 when no free-sliding batten is found: continuation from a high
+ * tension cannot reach sigma = 0, the family folds back, the batten slides off
+ * its ducks; G2 ends without a span of their own, see above), EL_ENOCONV (Newton
+ * and continuation did not reach tol), EL_ENOMEM, EL_EINTERNAL.
  */
 int el_spline_solve(const double *xy, size_t n, const el_spline_options *opt,
                     el_spline_result *res);
