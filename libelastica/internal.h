@@ -7,24 +7,6 @@
 
 #ifndef M_PI
 #define M_PI 3.14159265358979323846
-/* Join count clamped planar B-splines of one degree p in 3..7, each on its own
- * parameter interval, end to end into *out (parameters shifted to follow each
- * other), C2 at the joints (knot multiplicity p - 2): each joint pole is the
- * next part's first, then the joint knot is removed twice (Piegl & Tiller A5.8),
- * which is exact when the parts meet with equal point, first and second
- * derivatives. *err: the largest gap between the parts' joint poles and removal
- * distance (a bound on how far *out is from the parts); out->max_deviation = -1.
- * bspline.c. Errors: EL_EINVAL, EL_ENOMEM. */
-int el__bspline_join_c2(const el_bspline *parts, size_t count, el_bspline *out, double *err);
-
-/* For the tests of spline.c: the piece p as the Hermite elastica of its own ends
- * (h = |gamma(L) - gamma(0)|), v = (phi, ln mu, k, q, L): J[25] = dR/dv with
- * R = ((gamma(L) - end)/h, theta(0) - ta, theta(L) - tb, (2 mu (2k^2-1) - sigma) h^2),
- * g0[5], g1[5] = d kappa(0)/dv, d kappa(L)/dv, M[25] = d(theta0, kappa0, kappa0', sigma, L)/dv,
- * d[9] = d(kappa(0), kappa(L), L)/d(ta, tb, sigma) by the implicit function theorem. */
-int el__spline_piece_jacobians(const el_smooth_params *p, double *J, double *g0, double *g1,
-                               double *M, double *d);
-
 #endif
 
 /* Turn GSL's aborting error handler off (once per process, thread-safe); every
@@ -72,6 +54,53 @@ int el__jacobi_progression(double q, double z, double k, size_t count,
  * distance (a bound on how far *out is from the parts); out->max_deviation = -1.
  * bspline.c. Errors: EL_EINVAL, EL_ENOMEM. */
 int el__bspline_join_c2(const el_bspline *parts, size_t count, el_bspline *out, double *err);
+
+/* ---- elastic spline pieces (spline_piece.c, for spline.c) */
+
+enum { EL__NV = 5 };                          /* piece unknowns v: phi, ln mu, k, q, L */
+enum { EL__SP_PHI, EL__SP_NU, EL__SP_K, EL__SP_Q, EL__SP_L };
+enum { EL__SP_HALVINGS = 12 };                /* step halvings of a Newton step */
+
+/* One piece from (0, 0) to the chord (dx, dy) (spline_piece.c's comment). */
+typedef struct el__spiece {
+    double v[EL__NV];
+    double dx, dy, h;            /* chord (spline.c's units) */
+    double R[EL__NV];            /* residuals at v */
+    double th0, th1, kap0, kap1, dkap0;
+    double energy, Kq;           /* integral kappa^2 ds; K of the modulus min(|k|, 1/|k|) */
+    double st[EL__NV];           /* its start state (theta0, kappa0, kappa0', sigma, L) */
+    double M[EL__NV * EL__NV];   /* d st / d v */
+    double D[4][EL__NV];         /* J^{-1} R, J^{-1} e2, J^{-1} e3, h^2 J^{-1} e4 */
+    double c0[4], c1[4], cL[4];  /* g0 . D[r], g1 . D[r], D[r][L] */
+} el__spiece;
+
+/* A piece's Newton step (el__spiece_step_prepare). */
+typedef struct el__spstep {
+    double v0[EL__NV], s0[EL__NV], ds[EL__NV];   /* parameters and state before, state step */
+} el__spstep;
+
+/* A piece's targets: end angles ta, tb and tension s, and which of the spline's
+ * unknowns they are (slot index, -1: none, -2: the common sigma). */
+typedef struct el__sptargets {
+    double ta, tb, s;
+    long ia, ib, is;
+} el__sptargets;
+
+/* Residuals, end angles and curvatures, state, energy; with jac also M, the LU
+ * of J and the eliminated columns D with c0, c1, cL. EL_EDOM, EL_ESINGULAR. */
+int el__spiece_eval(el__spiece *pc, const el__sptargets *t, int jac);
+/* v from a state (theta0, kappa0, kappa0', sigma, L). EL_EDOM. */
+int el__spiece_set_state(el__spiece *pc, const double *st);
+/* A step dv taken in the state: prepare (returns the admissible fraction <= al), apply. */
+double el__spiece_step_prepare(const el__spiece *pc, const double *dv, el__spstep *ps, double al);
+int el__spiece_step_apply(el__spiece *pc, const el__spstep *ps, double al);
+/* The piece alone (fixed targets) to max |R| <= tol: EL_OK or EL_ENOCONV. */
+int el__spiece_newton(el__spiece *pc, const el__sptargets *t, double tol);
+/* Start from the linearised batten; or from the least-energy Hermite elastica of that turning. */
+int el__spiece_start(el__spiece *pc, const el__sptargets *t);
+int el__spiece_hermite(el__spiece *pc, const el__sptargets *t);
+/* max |v_i|. */
+double el__max_abs(const double *v, size_t n);
 
 /* For the tests of spline.c: the piece p as the Hermite elastica of its own ends
  * (h = |gamma(L) - gamma(0)|), v = (phi, ln mu, k, q, L): J[25] = dR/dv with

@@ -23,28 +23,18 @@
  * dR/dta = -e2, dR/dtb = -e3, dR/ds = -h^2 e4,
  *   dv = -J^{-1} R + J^{-1} e2 dta + J^{-1} e3 dtb + h^2 J^{-1} e4 ds,
  * so d kappa(0) = g0 . dv and d kappa(L) = g1 . dv (g = gradients of the end
- * curvatures in v, below) are linear in the x and sigma of the two knots the
- * piece joins: the knot system is tridiagonal (cyclic when closed, bordered by
- * the sigma column and the length row in length mode), solved by GSL in O(n).
- * At R = 0 the coefficients are exactly d kappa / d(angle) of the Hermite
- * piece (implicit function theorem); with R != 0 this is Newton on the whole
- * system, so pieces follow the previous iterate's branch with no inner loop.
- * Globalisation: steps limited in nu, L, k and the angles, then halved until
- * the merit |F|^2 + |R|^2 + G^2 decreases (Armijo), at most 12 halvings.
+ * curvatures in v, spline_piece.c) are linear in the x and sigma of the two
+ * knots the piece joins: the knot system is tridiagonal (cyclic when closed,
+ * bordered by the sigma column and the length row in length mode), solved by GSL
+ * in O(n). At R = 0 the coefficients are exactly d kappa / d(angle) of the
+ * Hermite piece (implicit function theorem); with R != 0 this is Newton on the
+ * whole system, so pieces follow the previous iterate's branch with no inner
+ * loop. Each piece's step dv is taken in its state (theta0, kappa0, kappa0',
+ * sigma, L) (spline_piece.c: regular where phi, mu are polar coordinates of a
+ * vanishing force). Globalisation: steps limited to a fraction of the state and
+ * 0.5 rad in the angles, then halved until the merit |F|^2 + |R|^2 + G^2
+ * decreases (Armijo), at most 12 halvings.
  *
- * Derivatives (u = sqrt(mu) s + q, w = sqrt(mu), the Jacobi functions at
- * modulus |k|, d/d|k| from el_jacobi_eval, identities d sn/du = cn dn,
- * d cn/du = -sn dn, dn^2 + k^2 sn^2 = 1 for every real k):
- *   a = (theta - phi)/2 = atan2(k sn, dn):  da/du = k cn,
- *       da/dk = dn (sn + |k| sn_|k|) - |k| sn dn_|k|;
- *   kappa = 2 k w cn:  d/dnu = kappa/2 - k w^2 s sn dn, d/dk = 2 w (cn + |k| cn_|k|),
- *       d/dq = -2 k w sn dn, d/ds = -2 k w^2 sn dn;
- *   theta(L) = phi + 2 a(u1): d/dnu = k cn w L, d/dq = 2 k cn, d/dL = kappa(L);
- *   gamma(L) = P + R(phi)(X, Y), X = (u1 - q - 2k^2 (D(u1) - D(q)))/w,
- *       Y = -2k (cn u1 - cn q)/w: d/dphi = R(phi)(-Y, X), d/dnu = R(phi)(L T - (X,Y))/2
- *       with T = (1 - 2k^2 sn^2, 2k sn dn)(u1) (the unit tangent in the frame), as
- *       el_smooth_jacobian (the tests compare every column with it and with
- *       finite differences).
  * Forces (seed 004 (9)-(10)): for the Lagrangian integral kappa^2 + sigma ds
  * with the constraint gamma' = T, the multiplier F_EL satisfies
  * 2 kappa' = F_EL . N and kappa^2 - F_EL . T = sigma (its derivative is
@@ -52,16 +42,18 @@
  * equation), so F_EL = (kappa^2 - sigma) T + 2 kappa' N is constant, |F_EL| = 2 mu
  * = kappa_m^2 - sigma, along phi. The batten's internal force (Kirchhoff:
  * EI kappa' = -n . N, the part after a section on the part before, EI = 2 in
- * these units) is n = -F_EL: the header's F.
+ * these units) is n = -F_EL: the header's F. The first variation of the
+ * energy in the angle at a point is 2 (kappa^- - kappa^+): the equations F_i = 0
+ * make the spline a critical point of it (tested by finite differences).
  *
  * Start: angles of the circles through three consecutive points (natural ends:
- * the cubic's alpha = -beta/2), each piece from the linearised batten at its
- * tension (w'''' = (sigma/2) w'' with the end slopes; the elastica through its
- * midpoint state, as in seed 004 (13)), solved alone by the same Newton, and
- * by el_hermite_solve (least energy, same turning) where that fails. If the
- * spline Newton fails there: continuation in sigma from a high tension (the
- * pieces are then short arcs near the polygon) down to sigma; length mode
- * continues from a tension solution in sigma (bordered Newton), then in length.
+ * the cubic's alpha = -beta/2), each piece from the linearised batten or the
+ * least-energy Hermite elastica (start_pieces). If the spline's Newton fails
+ * there: continuation in sigma from a high tension (the pieces are then short
+ * and near the polygon) down to sigma. Length mode: pseudo-arclength
+ * continuation of the tension solutions in (angles, sigma) from the free batten
+ * (solve_length), since neither sigma nor the length parametrises the family
+ * (flat in sigma for moderate tension, folding back when buckled).
  *
  * Internal units: lengths divided by the mean chord (S), so sigma h^2 and the
  * residuals are scale-free; pieces are rescaled on output with x0, y0 the
@@ -75,36 +67,10 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_linalg.h>
 
-enum { NV = 5 };                      /* piece unknowns: phi, nu, k, q, L */
-enum { V_PHI, V_NU, V_K, V_Q, V_L };
 enum { SLOT_ANGLE, SLOT_FIXED, SLOT_TENSION };
-enum { MAX_HALVINGS = 12, PIECE_ITER = 40 };
 /* Newton iterations of a first attempt and of a continuation step (a solve that
  * needs more is better served by smaller steps) */
 enum { DIRECT_ITER = 20, STEP_ITER = 12 };
-
-typedef struct piece {
-    double v[NV];
-    double dx, dy, h;        /* chord (internal units) */
-    double R[NV];            /* residuals at v */
-    double th0, th1, kap0, kap1, dkap0;
-    double energy, Kq;       /* integral kappa^2 ds; K of the modulus min(|k|, 1/|k|) */
-    double st[NV];           /* its start state (theta0, kappa0, kappa0', sigma, L) */
-    double M[NV * NV];       /* d st / d v */
-    double D[4][NV];         /* J^{-1} R, J^{-1} e2, J^{-1} e3, h^2 J^{-1} e4 */
-    double c0[4], c1[4], cL[4];  /* g0 . D[r], g1 . D[r], D[r][L] */
-} piece;
-
-/* A piece's Newton step (pstep_prepare). */
-typedef struct pstep {
-    double v0[NV], s0[NV], ds[NV];   /* parameters and state before, state step */
-} pstep;
-
-/* Which unknowns a piece's targets ta, tb, s depend on (slot index, -1: none, -2: sigma). */
-typedef struct targets {
-    double ta, tb, s;
-    long ia, ib, is;
-} targets;
 
 typedef struct spline_ws {
     size_t n, m;             /* points, pieces */
@@ -119,10 +85,10 @@ typedef struct spline_ws {
     double sigma_user;       /* tension mode: the sigma asked for (user units) */
     double *x, *ell;         /* slot values, local chord per knot */
     int *slot;
-    piece *pc;
+    el__spiece *pc;
     double *F, *dg, *up, *lo, *b, *y, *z, *col, *row;   /* Newton work, n each */
     double *xs;              /* backup of x */
-    pstep *ps;               /* the pieces' Newton steps */
+    el__spstep *ps;               /* the pieces' Newton steps */
     double Gres;             /* length residual */
     double *snapbuf;         /* the two snapshots' arrays */
     double *arc_a, *arc_x0;  /* BORDER_ARC: arc_a . (x - arc_x0) + arc_b (sigma - arc_s0) = arc_h */
@@ -133,405 +99,9 @@ typedef struct spline_ws {
     int near;                /* the state is a solution to what the parametrisation resolves */
 } spline_ws;
 
-/* ------------------------------------------------------------------ small dense systems */
-
-/*
- * LU with partial pivoting of the n x n row-major a (n <= NV), in place, and
- * its solve. Written out because GSL's LU sends every triangular solve through
- * BLAS (dtrsv with OpenBLAS's locking), about ten times the arithmetic of a
- * 5 x 5 system, and the spline factors one per piece per Newton iteration.
- * EL_ESINGULAR on a zero (or non-finite) pivot.
- */
-static int lu_factor(double *a, int n, int *perm)
-{
-    for (int c = 0; c < n; c++) {
-        int p = c;
-        for (int r = c + 1; r < n; r++)
-            if (fabs(a[r * n + c]) > fabs(a[p * n + c])) p = r;
-        perm[c] = p;
-        if (!(fabs(a[p * n + c]) > 1e-300) || !isfinite(a[p * n + c])) return EL_ESINGULAR;
-        if (p != c)
-            for (int j = 0; j < n; j++) { const double t = a[c * n + j]; a[c * n + j] = a[p * n + j]; a[p * n + j] = t; }
-        const double inv = 1.0 / a[c * n + c];
-        for (int r = c + 1; r < n; r++) {
-            const double f = a[r * n + c] *= inv;
-            for (int j = c + 1; j < n; j++) a[r * n + j] -= f * a[c * n + j];
-        }
-    }
-    return EL_OK;
-}
-
-static void lu_solve(const double *a, int n, const int *perm, double *b)
-{
-    for (int c = 0; c < n; c++) {   /* the row exchanges, in order */
-        const double t = b[perm[c]]; b[perm[c]] = b[c]; b[c] = t;
-    }
-    for (int r = 1; r < n; r++)
-        for (int c = 0; c < r; c++) b[r] -= a[r * n + c] * b[c];
-    for (int r = n - 1; r >= 0; r--) {
-        double sum = b[r];
-        for (int j = r + 1; j < n; j++) sum -= a[r * n + j] * b[j];
-        b[r] = sum / a[r * n + r];
-    }
-}
-
-/* ------------------------------------------------------------------ one piece */
-
-/* theta - phi = 2a, continuous in u (smooth.c's branch for |k| > 1). */
-static double half_angle(double u, double k, double K_reciprocal, const el_jacobi *v)
-{
-    const double ka = fabs(k);
-    double a = atan2(ka * v->sn, v->dn);
-    if (ka > 1.0) {
-        double npi = M_PI * nearbyint(ka * u / (2.0 * K_reciprocal));
-        a += 2.0 * M_PI * nearbyint((npi - a) / (2.0 * M_PI));
-    }
-    return copysign(1.0, k) * a;
-}
-
-/* da/dk of a = atan2(k sn(u;|k|), dn(u;|k|)) (file comment). */
-static double half_angle_dk(double k, const el_jacobi *v, const el_jacobi *vk)
-{
-    const double ka = fabs(k);
-    return v->dn * (v->sn + ka * vk->sn) - ka * v->sn * vk->dn;
-}
-
-/* Residuals, end angles and curvatures of piece pc for the targets t; with jac,
- * also J, its LU and the eliminated columns D and coefficients c0, c1, cL. */
-static int piece_eval_raw(piece *pc, const targets *t, int jac, double *raw);
-
-static int piece_eval(piece *pc, const targets *t, int jac)
-{
-    return piece_eval_raw(pc, t, jac, NULL);
-}
-
-/* piece_eval; raw (when not NULL, with jac): J before its factorisation, then
- * g0, g1 (35 values), for el__spline_piece_jacobians. */
-static int piece_eval_raw(piece *pc, const targets *t, int jac, double *raw)
-{
-    const double phi = pc->v[V_PHI], nu = pc->v[V_NU], k = pc->v[V_K], q = pc->v[V_Q],
-                 L = pc->v[V_L];
-    if (!isfinite(phi) || !isfinite(nu) || !isfinite(k) || !isfinite(q) || !isfinite(L) ||
-        !(L > 0.0) || nu > 700.0 || nu < -700.0)
-        return EL_EDOM;
-    const double mu = exp(nu), w = sqrt(mu), ka = fabs(k), u1 = w * L + q;
-    el__modulus mod;
-    el_jacobi a0, a1, k0, k1;
-    int st;
-    if ((st = el__modulus_init(ka, jac, &mod))) return st;
-    if ((st = el__jacobi_eval_mod(&mod, q, &a0, NULL, jac ? &k0 : NULL))) return st;
-    if ((st = el__jacobi_eval_mod(&mod, u1, &a1, NULL, jac ? &k1 : NULL))) return st;
-    const double c = cos(phi), sp = sin(phi), k2 = k * k;
-    const double X = ((u1 - q) - 2.0 * k2 * (a1.D - a0.D)) / w, Y = -2.0 * k * (a1.cn - a0.cn) / w;
-    const double gx = c * X - sp * Y - pc->dx, gy = sp * X + c * Y - pc->dy;
-    const double h = pc->h, h2 = h * h;
-    pc->th0 = phi + 2.0 * half_angle(q, k, mod.K, &a0);
-    pc->th1 = phi + 2.0 * half_angle(u1, k, mod.K, &a1);
-    pc->kap0 = 2.0 * k * w * a0.cn;
-    pc->kap1 = 2.0 * k * w * a1.cn;
-    pc->dkap0 = -2.0 * k * mu * a0.sn * a0.dn;
-    pc->energy = 4.0 * k2 * w * ((u1 - q) - (a1.D - a0.D));   /* el_smooth_energy */
-    pc->Kq = mod.K;
-    pc->st[0] = pc->th0;
-    pc->st[1] = pc->kap0;
-    pc->st[2] = pc->dkap0;
-    pc->st[3] = 2.0 * mu * (2.0 * k2 - 1.0);
-    pc->st[4] = L;
-    pc->R[0] = gx / h;
-    pc->R[1] = gy / h;
-    pc->R[2] = pc->th0 - t->ta;
-    pc->R[3] = pc->th1 - t->tb;
-    pc->R[4] = (2.0 * mu * (2.0 * k2 - 1.0) - t->s) * h2;
-    for (int i = 0; i < NV; i++)
-        if (!isfinite(pc->R[i])) return EL_EDOM;
-    if (!jac) return EL_OK;
-
-    const double tx = 1.0 - 2.0 * k2 * a1.sn * a1.sn, ty = 2.0 * k * a1.sn * a1.dn;
-    double lx[NV], ly[NV];   /* d(X, Y)/dv in the frame; phi column apart */
-    lx[V_PHI] = -Y; ly[V_PHI] = X;
-    lx[V_NU] = 0.5 * (L * tx - X); ly[V_NU] = 0.5 * (L * ty - Y);
-    lx[V_K] = (-4.0 * k * (a1.D - a0.D) - 2.0 * k * ka * (k1.D - k0.D)) / w;
-    ly[V_K] = (-2.0 * (a1.cn - a0.cn) - 2.0 * ka * (k1.cn - k0.cn)) / w;
-    lx[V_Q] = -2.0 * k2 * (a1.sn * a1.sn - a0.sn * a0.sn) / w;
-    ly[V_Q] = 2.0 * k * (a1.sn * a1.dn - a0.sn * a0.dn) / w;
-    lx[V_L] = tx; ly[V_L] = ty;
-    double J[NV * NV];
-    for (int j = 0; j < NV; j++) {
-        J[0 * NV + j] = (c * lx[j] - sp * ly[j]) / h;
-        J[1 * NV + j] = (sp * lx[j] + c * ly[j]) / h;
-    }
-    const double sd0 = a0.sn * a0.dn, sd1 = a1.sn * a1.dn;
-    const double th0[NV] = {1.0, 0.0, 2.0 * half_angle_dk(k, &a0, &k0), 2.0 * k * a0.cn, 0.0};
-    const double th1[NV] = {1.0, k * a1.cn * w * L, 2.0 * half_angle_dk(k, &a1, &k1),
-                            2.0 * k * a1.cn, pc->kap1};
-    const double g0[NV] = {0.0, 0.5 * pc->kap0, 2.0 * w * (a0.cn + ka * k0.cn),
-                           -2.0 * k * w * sd0, 0.0};
-    const double g1[NV] = {0.0, 0.5 * pc->kap1 - k * mu * L * sd1, 2.0 * w * (a1.cn + ka * k1.cn),
-                           -2.0 * k * w * sd1, -2.0 * k * mu * sd1};
-    const double ten[NV] = {0.0, 2.0 * mu * (2.0 * k2 - 1.0) * h2, 8.0 * mu * k * h2, 0.0, 0.0};
-    /* kappa0' = -2 k mu sn dn (q): d/dk = -2 mu (sn dn + |k| (sn dn)_|k|), d/dq = -2 k mu cn (dn^2 - k^2 sn^2) */
-    const double dk0[NV] = {0.0, pc->dkap0,
-                            -2.0 * mu * (sd0 + ka * (k0.sn * a0.dn + a0.sn * k0.dn)),
-                            -2.0 * k * mu * a0.cn * (a0.dn * a0.dn - k2 * a0.sn * a0.sn), 0.0};
-    for (int j = 0; j < NV; j++) {
-        pc->M[0 * NV + j] = th0[j];
-        pc->M[1 * NV + j] = g0[j];
-        pc->M[2 * NV + j] = dk0[j];
-        pc->M[3 * NV + j] = ten[j] / h2;
-        pc->M[4 * NV + j] = j == V_L;
-    }
-    memcpy(J + 2 * NV, th0, sizeof th0);
-    memcpy(J + 3 * NV, th1, sizeof th1);
-    memcpy(J + 4 * NV, ten, sizeof ten);
-
-    if (raw) {
-        memcpy(raw, J, sizeof J);
-        memcpy(raw + NV * NV, g0, sizeof g0);
-        memcpy(raw + NV * NV + NV, g1, sizeof g1);
-    }
-    int perm[NV];
-    if (lu_factor(J, NV, perm)) return EL_ESINGULAR;
-    for (int r = 0; r < 4; r++) {
-        double rhs[NV] = {0};
-        if (r == 0) memcpy(rhs, pc->R, sizeof rhs);
-        else rhs[r + 1] = r == 3 ? h2 : 1.0;
-        lu_solve(J, NV, perm, rhs);
-        memcpy(pc->D[r], rhs, sizeof rhs);
-        double s0 = 0.0, s1 = 0.0;
-        for (int i = 0; i < NV; i++) { s0 += g0[i] * rhs[i]; s1 += g1[i] * rhs[i]; }
-        pc->c0[r] = s0;
-        pc->c1[r] = s1;
-        pc->cL[r] = rhs[V_L];
-        if (!isfinite(s0) || !isfinite(s1) || !isfinite(rhs[V_L])) return EL_ESINGULAR;
-    }
-    return EL_OK;
-}
-
-static double max_abs(const double *v, size_t n)
-{
-    double m = 0.0;
-    for (size_t i = 0; i < n; i++) m = fmax(m, fabs(v[i]));
-    return m;
-}
-
-/* Incomplete elliptic integral of the first kind F(psi | k) for |psi| <= pi,
- * 0 <= k <= 1 with kc2 = 1 - k^2 given without cancellation: Carlson,
- * F = sin psi R_F(cos^2 psi, 1 - k^2 sin^2 psi, 1) on |psi| <= pi/2 and
- * F(psi) = 2K - F(pi - psi) beyond (ellint.c; GSL's gsl_sf_ellint_F costs
- * about twice as much). k = 1: |psi| < pi/2 only, F = asinh(tan psi). NaN outside. */
-static double ellint_F(double psi, double k, double kc2)
-{
-    if (!(fabs(psi) <= M_PI)) return NAN;
-    if (!(kc2 > 0.0)) return fabs(psi) < 0.5 * M_PI ? asinh(tan(psi)) : NAN;
-    const double a = fabs(psi), r = a > 0.5 * M_PI ? M_PI - a : a, sn = sin(r), cs = cos(r);
-    double rf, rd, K = 0.0, D;
-    if (el__carlson_fd(cs * cs, kc2 + k * k * cs * cs, 1.0, 1.0, &rf, &rd)) return NAN;
-    if (a > 0.5 * M_PI && el__ellint_complete(k, kc2, &K, &D)) return NAN;
-    const double F = a > 0.5 * M_PI ? 2.0 * K - sn * rf : sn * rf;
-    return copysign(F, psi);
-}
-
-/* Parameters of the elastica of tension s through a state (theta, kappa,
- * kappa') at arc length sm from the piece's start, the start at u = q. */
-static int piece_from_state(piece *pc, double theta, double kappa, double dkappa, double s,
-                            double sm, double L)
-{
-    const double T[2] = {cos(theta), sin(theta)}, N[2] = {-T[1], T[0]};
-    const double wv = kappa * kappa - s;
-    double Fx = wv * T[0] + 2.0 * dkappa * N[0], Fy = wv * T[1] + 2.0 * dkappa * N[1];
-    double Fn = hypot(Fx, Fy);
-    /* 1 - k^2 = (Fn - s) / (2 Fn) = (kappa^2 (kappa^2 - 2 s) + 4 kappa'^2) / (2 Fn (Fn + s)),
-     * the second form without the cancellation of Fn - s when s > 0 */
-    double kc2 = s > 0.0 ? (kappa * kappa * (kappa * kappa - 2.0 * s) + 4.0 * dkappa * dkappa) /
-                               (2.0 * Fn * (Fn + s))
-                         : (Fn - s) / (2.0 * Fn);
-    if (!(Fn > 1e-12 * (fabs(s) + kappa * kappa + 1e-300))) {   /* a circle or a line: a small force along T */
-        Fn = 1e-6 * (fabs(s) + kappa * kappa) + 1e-12;
-        Fx = -Fn * T[0];
-        Fy = -Fn * T[1];
-        kc2 = (Fn - s) / (2.0 * Fn);
-    }
-    if (!(Fn + s > 0.0)) return EL_EDOM;
-    const double mu = 0.5 * Fn, phi0 = atan2(Fy, Fx);
-    const double k2 = kc2 > 0.0 ? fmin((Fn + s) / (2.0 * Fn), 1.0) : fmax((Fn + s) / (2.0 * Fn), 1.0);
-    double d = theta - phi0;
-    d -= 2.0 * M_PI * nearbyint(d / (2.0 * M_PI));
-    const double a = 0.5 * d, phi = theta - 2.0 * a;   /* theta = phi + 2a exactly */
-    double k, u;
-    if (kc2 > 0.0) {
-        k = sqrt(k2);
-        const double psi = atan2(sin(a) / k, kappa / (2.0 * k * sqrt(mu)));
-        u = ellint_F(psi, k, kc2);
-    } else {
-        const double ka = sqrt(k2);
-        k = kappa < 0.0 ? -ka : ka;
-        /* k = 1 exactly: the separatrix, a = +-pi/2 is at u = infinity (a straight
-         * state under tension); start a little inside, on its tail */
-        const double am = ka < 1.0 + 1e-12 ? copysign(fmin(fabs(a), 0.5 * M_PI - 1e-8), a) : a;
-        /* modulus 1/|k|: its complement 1 - 1/k^2 = -kc2 / k^2 */
-        u = ellint_F(k < 0.0 ? -am : am, 1.0 / ka, -kc2 / k2) / ka;
-    }
-    if (!isfinite(u)) return EL_EDOM;
-    pc->v[V_PHI] = phi;
-    pc->v[V_NU] = log(mu);
-    pc->v[V_K] = k;
-    pc->v[V_Q] = u - sqrt(mu) * sm;
-    pc->v[V_L] = L;
-    return EL_OK;
-}
-
-static int piece_set_state(piece *pc, const double *st)
-{
-    return piece_from_state(pc, st[0], st[1], st[2], st[3], 0.0, st[4]);
-}
-
-/*
- * One Newton step of a piece, taken from (v0, st0) along the parameter step dv
- * in its state: st0 + al M dv, converted back in closed form (piece_from_state).
- * The state is a regular coordinate of the pieces, where phi and mu are the
- * polar coordinates of the force, singular at a circle (F = 0, |k| -> infinity):
- * a straight step in (phi, ln mu, k, q, L) crosses it badly. Prepare ps from the
- * piece and dv; return the largest fraction al of the step that keeps the length
- * positive and the state within a factor of its size (in units of the chord).
- */
-static double pstep_prepare(const piece *pc, const double *dv, pstep *ps, double al)
-{
-    memcpy(ps->v0, pc->v, sizeof ps->v0);
-    memcpy(ps->s0, pc->st, sizeof ps->s0);
-    for (int i = 0; i < NV; i++) {
-        double sum = 0.0;
-        for (int j = 0; j < NV; j++) sum += pc->M[i * NV + j] * dv[j];
-        ps->ds[i] = sum;
-    }
-    const double h = pc->h, *st = pc->st, *dst = ps->ds;
-    const double lim[4] = {0.5, fmax(1.0, 2.0 * fabs(st[1]) * h) / h,
-                           fmax(2.0, 2.0 * fabs(st[2]) * h * h) / (h * h),
-                           fmax(4.0, 2.0 * fabs(st[3]) * h * h) / (h * h)};
-    for (int i = 0; i < 4; i++)
-        if (fabs(dst[i]) * al > lim[i]) al = lim[i] / fabs(dst[i]);
-    if (dst[4] < 0.0 && -dst[4] * al > 0.75 * st[4]) al = 0.75 * st[4] / -dst[4];
-    return al;
-}
-
-static int pstep_apply(piece *pc, const pstep *ps, double al)
-{
-    double sn[NV];
-    for (int i = 0; i < NV; i++) sn[i] = ps->s0[i] + al * ps->ds[i];
-    return piece_set_state(pc, sn);
-}
-
-/* The piece alone (fixed targets): Newton on R, stepping in the state. */
-static int piece_newton(piece *pc, const targets *t, double tol)
-{
-    int st = piece_eval(pc, t, 1);
-    if (st) return st;
-    double r = max_abs(pc->R, NV);
-    for (int it = 0; it < PIECE_ITER && r > tol; it++) {
-        double dv[NV];
-        pstep ps;
-        for (int i = 0; i < NV; i++) dv[i] = -pc->D[0][i];
-        double al = pstep_prepare(pc, dv, &ps, 1.0);
-        int ok = 0;
-        for (int hv = 0; hv <= MAX_HALVINGS; hv++, al *= 0.5) {
-            if (pstep_apply(pc, &ps, al) || piece_eval(pc, t, 1)) continue;
-            const double rn = max_abs(pc->R, NV);
-            if (rn < (1.0 - 1e-4 * al) * r) { r = rn; ok = 1; break; }
-        }
-        if (!ok) {
-            memcpy(pc->v, ps.v0, sizeof ps.v0);
-            piece_eval(pc, t, 1);
-            break;
-        }
-    }
-    return r <= tol ? EL_OK : EL_ENOCONV;
-}
-
-/* The linearised batten on the chord: w'''' = (s/2) w'' with w = 0 at both ends
- * and slopes tan(alpha), tan(beta); its midpoint state starts the piece. */
-static int piece_start(piece *pc, const targets *t)
-{
-    const double h = pc->h, c0 = atan2(pc->dy, pc->dx);
-    const double c = c0 + 2.0 * M_PI * nearbyint((0.5 * (t->ta + t->tb) - c0) / (2.0 * M_PI));
-    const double al = t->ta - c, be = t->tb - c;
-    const double sa = tan(fmax(fmin(al, 1.3), -1.3)), sb = tan(fmax(fmin(be, 1.3), -1.3));
-    const double om = t->s > 0.0 ? sqrt(0.5 * t->s) : 0.0;
-    /* w = A + B s + C f1 + D f2: f = (e^{-om s}, e^{-om (h-s)}) or (s^2, s^3) */
-    const int ex = om * h > 0.1;
-    double M[16], rhs[4] = {0.0, 0.0, sa, sb};
-    for (int e = 0; e < 2; e++) {
-        const double s = e ? h : 0.0;
-        double b1[4], b2[4];
-        if (ex) {
-            const double e1 = exp(-om * s), e2 = exp(-om * (h - s));
-            for (int d = 0; d < 4; d++) {
-                b1[d] = e1 * pow(-om, d);
-                b2[d] = e2 * pow(om, d);
-            }
-        } else {
-            b1[0] = s * s; b1[1] = 2.0 * s; b1[2] = 2.0; b1[3] = 0.0;
-            b2[0] = s * s * s; b2[1] = 3.0 * s * s; b2[2] = 6.0 * s; b2[3] = 6.0;
-        }
-        M[(0 + e) * 4 + 0] = 1.0; M[(0 + e) * 4 + 1] = s; M[(0 + e) * 4 + 2] = b1[0]; M[(0 + e) * 4 + 3] = b2[0];
-        M[(2 + e) * 4 + 0] = 0.0; M[(2 + e) * 4 + 1] = 1.0; M[(2 + e) * 4 + 2] = b1[1]; M[(2 + e) * 4 + 3] = b2[1];
-    }
-    int perm[4];
-    if (lu_factor(M, 4, perm)) return EL_ESINGULAR;
-    lu_solve(M, 4, perm, rhs);
-    /* state at the midpoint */
-    const double sm = 0.5 * h;
-    double wd[4];
-    if (ex) {
-        const double e1 = exp(-om * sm), e2 = exp(-om * (h - sm));
-        for (int d = 0; d < 4; d++)
-            wd[d] = rhs[2] * e1 * pow(-om, d) + rhs[3] * e2 * pow(om, d);
-    } else {
-        wd[0] = rhs[2] * sm * sm + rhs[3] * sm * sm * sm;
-        wd[1] = 2.0 * rhs[2] * sm + 3.0 * rhs[3] * sm * sm;
-        wd[2] = 2.0 * rhs[2] + 6.0 * rhs[3] * sm;
-        wd[3] = 6.0 * rhs[3];
-    }
-    wd[1] += rhs[1];
-    /* arc length ~ h + 1/2 int w'^2 (Simpson on the slopes) */
-    const double L = h + h / 12.0 * (sa * sa + 4.0 * wd[1] * wd[1] + sb * sb);
-    const double g = 1.0 + wd[1] * wd[1];
-    const double theta = c + atan(wd[1]), kappa = wd[2] / pow(g, 1.5);
-    const double dkappa = wd[3] / (g * g) - 3.0 * wd[1] * wd[2] * wd[2] / (g * g * g);
-    return piece_from_state(pc, theta, kappa, dkappa, t->s, 0.5 * L, L);
-}
-
-/* The piece by el_hermite_solve: the least-energy solution with the turning tb - ta. */
-static int piece_hermite(piece *pc, const targets *t)
-{
-    const double p0[2] = {0.0, 0.0}, p1[2] = {pc->dx, pc->dy};
-    const double t0[2] = {cos(t->ta), sin(t->ta)}, t1[2] = {cos(t->tb), sin(t->tb)};
-    el_hermite_options o;
-    el_hermite_options_defaults(&o);
-    o.sigma = t->s;
-    el_hermite_result r;
-    int st = el_hermite_solve(p0, t0, p1, t1, &o, &r);
-    if (st) return st;
-    st = EL_ENOCONV;
-    for (size_t i = 0; i < r.count; i++) {   /* sorted by energy */
-        const el_smooth_params *p = &r.solutions[i].curve;
-        double s2[2] = {0.0, p->length}, th[2];
-        if (el_smooth_eval(p, 2, s2, NULL, th, NULL)) continue;
-        const double shift = t->ta - th[0];
-        if (fabs((th[1] - th[0]) - (t->tb - t->ta)) > 1e-6 || fabs(p->k) >= 1e3) continue;
-        pc->v[V_PHI] = p->phi + shift;
-        pc->v[V_NU] = log(p->mu);
-        pc->v[V_K] = p->k;
-        pc->v[V_Q] = p->q;
-        pc->v[V_L] = p->length;
-        st = EL_OK;
-        break;
-    }
-    el_hermite_result_free(&r);
-    return st;
-}
-
 /* ------------------------------------------------------------------ the chain */
 
-static void piece_targets(const spline_ws *w, size_t j, targets *t)
+static void piece_targets(const spline_ws *w, size_t j, el__sptargets *t)
 {
     const size_t n = w->n;
     t->s = w->sigma;
@@ -554,12 +124,12 @@ static double chain_eval(spline_ws *w, int jac)
     const size_t n = w->n, m = w->m;
     double merit = 0.0, rmax = 0.0, Lsum = 0.0;
     for (size_t j = 0; j < m; j++) {
-        targets t;
+        el__sptargets t;
         piece_targets(w, j, &t);
-        if (piece_eval(&w->pc[j], &t, jac)) return INFINITY;
-        for (int i = 0; i < NV; i++) merit += w->pc[j].R[i] * w->pc[j].R[i];
-        rmax = fmax(rmax, max_abs(w->pc[j].R, NV));
-        Lsum += w->pc[j].v[V_L];
+        if (el__spiece_eval(&w->pc[j], &t, jac)) return INFINITY;
+        for (int i = 0; i < EL__NV; i++) merit += w->pc[j].R[i] * w->pc[j].R[i];
+        rmax = fmax(rmax, el__max_abs(w->pc[j].R, EL__NV));
+        Lsum += w->pc[j].v[EL__SP_L];
     }
     for (size_t i = 0; i < n; i++) {
         if (w->slot[i] == SLOT_FIXED) { w->F[i] = 0.0; continue; }
@@ -634,8 +204,8 @@ static int chain_direction(spline_ws *w, double *ds)
     for (size_t i = 0; i < n; i++)
         if (w->slot[i] == SLOT_FIXED) w->dg[i] = 1.0;
     for (size_t j = 0; j < m; j++) {
-        const piece *pc = &w->pc[j];
-        targets t;
+        const el__spiece *pc = &w->pc[j];
+        el__sptargets t;
         piece_targets(w, j, &t);
         const long rows[2] = {(long)j, (long)((j + 1) % n)};
         const double *cc[2] = {pc->c0, pc->c1};
@@ -706,26 +276,26 @@ static int chain_newton(spline_ws *w, int cap, double aim, double accept)
         /* piece steps dv = -D0 + D1 dta + D2 dtb + D3 ds, taken in the state */
         memcpy(w->xs, w->x, n * sizeof *w->x);
         for (size_t j = 0; j < m; j++) {
-            piece *pc = &w->pc[j];
-            targets t;
+            el__spiece *pc = &w->pc[j];
+            el__sptargets t;
             piece_targets(w, j, &t);
             const double dta = t.ia >= 0 ? w->y[t.ia] : 0.0, dtb = t.ib >= 0 ? w->y[t.ib] : 0.0;
             const double dsj = t.is >= 0 ? w->y[t.is] : t.is == -2 ? ds : 0.0;
-            double dv[NV];
-            for (int i = 0; i < NV; i++)
+            double dv[EL__NV];
+            for (int i = 0; i < EL__NV; i++)
                 dv[i] = -pc->D[0][i] + pc->D[1][i] * dta + pc->D[2][i] * dtb + pc->D[3][i] * dsj;
-            al = pstep_prepare(pc, dv, &w->ps[j], al);
+            al = el__spiece_step_prepare(pc, dv, &w->ps[j], al);
         }
         const double sigma0 = w->sigma;
         int ok = 0;
         double mnew = INFINITY;
         /* already accepted: a step that does not help is rounding, not worth halving */
-        const int halvings = w->resid <= accept ? 0 : MAX_HALVINGS;
+        const int halvings = w->resid <= accept ? 0 : EL__SP_HALVINGS;
         for (int hv = 0; hv <= halvings; hv++, al *= 0.5) {
             for (size_t i = 0; i < n; i++) w->x[i] = w->xs[i] + al * w->y[i];
             w->sigma = sigma0 + al * ds;
             int bad = 0;
-            for (size_t j = 0; j < m && !bad; j++) bad = pstep_apply(&w->pc[j], &w->ps[j], al);
+            for (size_t j = 0; j < m && !bad; j++) bad = el__spiece_step_apply(&w->pc[j], &w->ps[j], al);
             mnew = bad ? INFINITY : chain_eval(w, 1);
             if (mnew <= (1.0 - 2e-4 * al) * merit) { ok = 1; break; }
         }
@@ -757,7 +327,7 @@ static void start_angles(spline_ws *w)
     }
     for (size_t i = 0; i < n; i++) {
         if (!w->closed && (i == 0 || i == n - 1)) continue;
-        const piece *a = &w->pc[(i + m - 1) % m], *b = &w->pc[i];
+        const el__spiece *a = &w->pc[(i + m - 1) % m], *b = &w->pc[i];
         const double A = a->h * a->h, B = b->h * b->h;
         double tx = B * a->dx + A * b->dx, ty = B * a->dy + A * b->dy;
         if (!(hypot(tx, ty) > 1e-12 * A * B)) { tx = -a->dy; ty = a->dx; }   /* a reversal */
@@ -782,7 +352,7 @@ static void start_angles(spline_ws *w)
 }
 
 /* The angles (rad) between the chord and the target tangents of a piece. */
-static double chord_angle(const piece *pc, const targets *t)
+static double chord_angle(const el__spiece *pc, const el__sptargets *t)
 {
     const double c = atan2(pc->dy, pc->dx);
     return fmax(fabs(wrap_pi(t->ta - c)), fabs(wrap_pi(t->tb - c)));
@@ -799,18 +369,18 @@ static double chord_angle(const piece *pc, const targets *t)
 static int start_pieces(spline_ws *w)
 {
     for (size_t j = 0; j < w->m; j++) {
-        piece *pc = &w->pc[j];
-        targets t;
+        el__spiece *pc = &w->pc[j];
+        el__sptargets t;
         piece_targets(w, j, &t);
         if (chord_angle(pc, &t) <= 0.75) {
-            if (!piece_start(pc, &t) && !piece_eval(pc, &t, 0) && max_abs(pc->R, NV) <= 1e-2) continue;
-            if (!piece_start(pc, &t) && (!piece_newton(pc, &t, 1e-8) || max_abs(pc->R, NV) <= 1e-6))
+            if (!el__spiece_start(pc, &t) && !el__spiece_eval(pc, &t, 0) && el__max_abs(pc->R, EL__NV) <= 1e-2) continue;
+            if (!el__spiece_start(pc, &t) && (!el__spiece_newton(pc, &t, 1e-8) || el__max_abs(pc->R, EL__NV) <= 1e-6))
                 continue;
         }
-        int st = piece_hermite(pc, &t);
+        int st = el__spiece_hermite(pc, &t);
         if (st == EL_ENOMEM) return st;
-        if (st && chord_angle(pc, &t) > 0.75 && !piece_start(pc, &t) &&
-            (!piece_newton(pc, &t, 1e-8) || max_abs(pc->R, NV) <= 1e-6))
+        if (st && chord_angle(pc, &t) > 0.75 && !el__spiece_start(pc, &t) &&
+            (!el__spiece_newton(pc, &t, 1e-8) || el__max_abs(pc->R, EL__NV) <= 1e-6))
             st = EL_OK;
         if (st) return EL_ENOCONV;
     }
@@ -829,8 +399,8 @@ static void snap_save(const spline_ws *w, snapshot *s)
 {
     memcpy(s->x, w->x, w->n * sizeof *w->x);
     for (size_t j = 0; j < w->m; j++) {
-        memcpy(s->v + j * NV, w->pc[j].v, sizeof w->pc[j].v);
-        memcpy(s->st + j * NV, w->pc[j].st, sizeof w->pc[j].st);
+        memcpy(s->v + j * EL__NV, w->pc[j].v, sizeof w->pc[j].v);
+        memcpy(s->st + j * EL__NV, w->pc[j].st, sizeof w->pc[j].st);
     }
     s->sigma = w->sigma;
 }
@@ -838,20 +408,20 @@ static void snap_save(const spline_ws *w, snapshot *s)
 static void snap_load(spline_ws *w, const snapshot *s)
 {
     memcpy(w->x, s->x, w->n * sizeof *w->x);
-    for (size_t j = 0; j < w->m; j++) memcpy(w->pc[j].v, s->v + j * NV, sizeof w->pc[j].v);
+    for (size_t j = 0; j < w->m; j++) memcpy(w->pc[j].v, s->v + j * EL__NV, sizeof w->pc[j].v);
     w->sigma = s->sigma;
 }
 
 /* The state at f = (t - tb)/(tb - ta) beyond b on the line through a and b
- * (knot values, sigma, piece states); b itself if a piece state is invalid. */
+ * (knot values, sigma, el__spiece states); b itself if a piece state is invalid. */
 static void predict(spline_ws *w, const snapshot *a, const snapshot *b, double f)
 {
     for (size_t i = 0; i < w->n; i++) w->x[i] = b->x[i] + f * (b->x[i] - a->x[i]);
     w->sigma = b->sigma + f * (b->sigma - a->sigma);
     for (size_t j = 0; j < w->m; j++) {
-        double st[NV];
-        for (int i = 0; i < NV; i++) st[i] = b->st[j * NV + i] + f * (b->st[j * NV + i] - a->st[j * NV + i]);
-        if (piece_set_state(&w->pc[j], st)) { snap_load(w, b); return; }
+        double st[EL__NV];
+        for (int i = 0; i < EL__NV; i++) st[i] = b->st[j * EL__NV + i] + f * (b->st[j * EL__NV + i] - a->st[j * EL__NV + i]);
+        if (el__spiece_set_state(&w->pc[j], st)) { snap_load(w, b); return; }
     }
 }
 
@@ -925,7 +495,7 @@ static void set_sigma_linear(spline_ws *w, double t, const double *par)
 static double total_length(const spline_ws *w)
 {
     double L = 0.0;
-    for (size_t j = 0; j < w->m; j++) L += w->pc[j].v[V_L];
+    for (size_t j = 0; j < w->m; j++) L += w->pc[j].v[EL__SP_L];
     return L;
 }
 
@@ -1006,7 +576,7 @@ static int solve_length(spline_ws *w, snapshot sv[3], int max_steps, double Lt)
                 const double back = -1.0;
                 for (size_t i = 0; i < w->n; i++) D->x[i] = C->x[i] + back * (D->x[i] - C->x[i]);
                 D->sigma = C->sigma + back * (D->sigma - C->sigma);
-                for (size_t i = 0; i < NV * w->m; i++) D->st[i] = C->st[i] + back * (D->st[i] - C->st[i]);
+                for (size_t i = 0; i < EL__NV * w->m; i++) D->st[i] = C->st[i] + back * (D->st[i] - C->st[i]);
                 N = arc_dist(w, B, C, rho);
                 snap_load(w, C);
                 h *= 0.25;
@@ -1104,7 +674,7 @@ static void ws_free(spline_ws *w)
 
 static int ws_alloc(spline_ws *w, size_t n, size_t m)
 {
-    if (n > SIZE_MAX / (NV * sizeof(double)) || m > SIZE_MAX / sizeof(piece)) return EL_ENOMEM;
+    if (n > SIZE_MAX / (EL__NV * sizeof(double)) || m > SIZE_MAX / sizeof(el__spiece)) return EL_ENOMEM;
     double **arr[] = {&w->x, &w->ell, &w->F, &w->dg, &w->up, &w->lo, &w->b, &w->y, &w->z,
                       &w->col, &w->row, &w->xs, &w->arc_a, &w->arc_x0};
     for (size_t i = 0; i < sizeof arr / sizeof arr[0]; i++)
@@ -1175,17 +745,17 @@ static int make_result(const spline_ws *w, const double *xy, double S, el_spline
     /* tension mode: the given sigma exactly (not through the unit S) */
     r.sigma = w->lmode ? w->sigma / (S * S) : w->sigma_user;
     for (size_t j = 0; j < m; j++) {
-        const piece *pc = &w->pc[j];
-        targets t;
+        const el__spiece *pc = &w->pc[j];
+        el__sptargets t;
         piece_targets(w, j, &t);
         el_smooth_params *p = &r.pieces[j];
         p->x0 = xy[2 * j];
         p->y0 = xy[2 * j + 1];
-        p->phi = pc->v[V_PHI];
-        p->mu = exp(pc->v[V_NU]) / (S * S);
-        p->k = pc->v[V_K];
-        p->q = pc->v[V_Q];
-        p->length = pc->v[V_L] * S;
+        p->phi = pc->v[EL__SP_PHI];
+        p->mu = exp(pc->v[EL__SP_NU]) / (S * S);
+        p->k = pc->v[EL__SP_K];
+        p->q = pc->v[EL__SP_Q];
+        p->length = pc->v[EL__SP_L] * S;
         r.sigmas[j] = t.is == -1 ? r.sigma : t.s / (S * S);
         /* the residual is measured on the output, with el_smooth_eval */
         const double s2[2] = {0.0, p->length};
@@ -1265,13 +835,13 @@ int el_spline_solve(const double *xy, size_t n, const el_spline_options *opt,
     memset(&w, 0, sizeof w);
     int st = ws_alloc(&w, n, m);
     snapshot sv[3];
-    const size_t ns = n + 2 * NV * m;   /* doubles per snapshot */
+    const size_t ns = n + 2 * EL__NV * m;   /* doubles per snapshot */
     if (!st && !(w.snapbuf = malloc(3 * ns * sizeof *w.snapbuf))) st = EL_ENOMEM;
     if (st) goto done;
     for (int i = 0; i < 3; i++) {
         sv[i].x = w.snapbuf + i * ns;
         sv[i].v = sv[i].x + n;
-        sv[i].st = sv[i].v + NV * m;
+        sv[i].st = sv[i].v + EL__NV * m;
     }
     const double S = Lp / (double)m;   /* the unit: mean chord */
     w.n = n; w.m = m; w.closed = closed; w.lmode = lmode;
@@ -1282,7 +852,7 @@ int el_spline_solve(const double *xy, size_t n, const el_spline_options *opt,
     w.Lt = lmode ? opt->length / S : 0.0;
     for (size_t j = 0; j < m; j++) {
         const size_t e = (j + 1) % n;
-        piece *pc = &w.pc[j];
+        el__spiece *pc = &w.pc[j];
         pc->dx = (xy[2 * e] - xy[2 * j]) / S;
         pc->dy = (xy[2 * e + 1] - xy[2 * j + 1]) / S;
         pc->h = hypot(pc->dx, pc->dy);
@@ -1309,9 +879,9 @@ int el_spline_solve(const double *xy, size_t n, const el_spline_options *opt,
     if (straight_line(xy, n, opt, &dir) && (!lmode || opt->length <= Lp * (1.0 + 1e-14))) {
         for (size_t i = 0; i < n; i++) if (w.slot[i] == SLOT_ANGLE) w.x[i] = dir;
         for (size_t j = 0; j < m; j++) {
-            piece *pc = &w.pc[j];
-            pc->v[V_PHI] = dir; pc->v[V_NU] = log(1.0 / (pc->h * pc->h));
-            pc->v[V_K] = 0.0; pc->v[V_Q] = 0.0; pc->v[V_L] = pc->h;
+            el__spiece *pc = &w.pc[j];
+            pc->v[EL__SP_PHI] = dir; pc->v[EL__SP_NU] = log(1.0 / (pc->h * pc->h));
+            pc->v[EL__SP_K] = 0.0; pc->v[EL__SP_Q] = 0.0; pc->v[EL__SP_L] = pc->h;
         }
         if (w.slot[0] == SLOT_TENSION) w.x[0] = w.sigma;
         if (w.slot[n - 1] == SLOT_TENSION) w.x[n - 1] = w.sigma;
@@ -1371,39 +941,6 @@ int el_spline_solve(const double *xy, size_t n, const el_spline_options *opt,
 done:
     ws_free(&w);
     return st;
-}
-
-/* internal.h: the piece's Jacobians and implicit derivatives, for the tests. */
-int el__spline_piece_jacobians(const el_smooth_params *p, double *J, double *g0, double *g1,
-                               double *M, double *d)
-{
-    if (el_smooth_check(p) || !(p->length > 0.0) || !J || !g0 || !g1 || !M || !d) return EL_EINVAL;
-    el__gsl_quiet();
-    const double s[2] = {0.0, p->length};
-    double xy[4], th[2];
-    int st = el_smooth_eval(p, 2, s, xy, th, NULL);
-    if (st) return st;
-    piece pc;
-    memset(&pc, 0, sizeof pc);
-    pc.v[V_PHI] = p->phi; pc.v[V_NU] = log(p->mu); pc.v[V_K] = p->k; pc.v[V_Q] = p->q;
-    pc.v[V_L] = p->length;
-    pc.dx = xy[2] - xy[0];
-    pc.dy = xy[3] - xy[1];
-    pc.h = hypot(pc.dx, pc.dy);
-    if (!(pc.h > 0.0)) return EL_EDOM;
-    const targets t = {th[0], th[1], 2.0 * p->mu * (2.0 * p->k * p->k - 1.0), -1, -1, -1};
-    double raw[NV * NV + 2 * NV];
-    if ((st = piece_eval_raw(&pc, &t, 1, raw))) return st;
-    memcpy(J, raw, NV * NV * sizeof *J);
-    memcpy(g0, raw + NV * NV, NV * sizeof *g0);
-    memcpy(g1, raw + NV * NV + NV, NV * sizeof *g1);
-    memcpy(M, pc.M, sizeof pc.M);
-    for (int r = 0; r < 3; r++) {
-        d[r] = pc.c0[r + 1];
-        d[3 + r] = pc.c1[r + 1];
-        d[6 + r] = pc.cL[r + 1];
-    }
-    return EL_OK;
 }
 
 /* ------------------------------------------------------------------ B-spline */
