@@ -603,9 +603,10 @@ int el_hermite_analyse(const double P[2], const double V[2], double sigma,
  * tension sigma (curvature 2 kappa'' + kappa^3 - sigma kappa = 0, seed 004),
  * with position, tangent and curvature continuous at every point; kappa' jumps
  * there (the duck's force). It is a critical point of
- * integral kappa^2 + sigma ds among the curves through the points, the pieces
- * chosen on the branch of least energy (no loops where the points are a gentle
- * curve).
+ * integral kappa^2 + sigma ds among the curves through the points, its pieces
+ * started on the branch of least energy and followed from there (no loops where
+ * the points are a gentle curve; on coarse or strange data another equilibrium
+ * can be found, the solution need not be unique).
  *   EL_SPLINE_TENSION: sigma >= 0 given (1/length^2); sigma = 0 is the
  *       free-sliding batten, which need not exist (EL_EDOM);
  *   EL_SPLINE_LENGTH: the total length given; sigma (any sign: < 0 is a
