@@ -693,7 +693,7 @@ void el_spline_options_defaults(el_spline_options *opt);
  * bracketed, then Newton with the length as the border equation.
  * Work is bounded: at most max_steps continuation steps of at most max_iter
  * Newton iterations (20 for a first attempt, 12 for a step), each with at most 12
- * step halvings, each O(n); 100 points take about 1 ms, 1000 about 15 ms (bench/).
+ * step halvings, each O(n); 100 points take about 1 ms of CPU, 1000 about 10 ms (bench/).
  * End conditions (open curves): natural or tangent at either end: a batten
  * with given tension has exactly one degree of freedom per end. A G2 end
  * (tangent and curvature) asks one more: the span next to it takes its own
