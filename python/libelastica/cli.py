@@ -548,7 +548,8 @@ def cmd_g2quad(args) -> int:
             raise InputError(f"{args.file}: {len(items)} curves; give one (e.g. one side's JSON)")
         curve = curve_from_dict(items[0], name=args.file)
         src = curve if isinstance(curve, SmoothElastica) else curve.points()
-        data = curve.points(np.linspace(0.0, curve.length, 400)) if src is curve else src
+        curve_source = src is curve
+        data = curve.points(np.linspace(0.0, curve.length, 400)) if curve_source else src
         n = args.edges or 40
     else:
         pts = read_points(args.file, min_points=4)
@@ -557,7 +558,7 @@ def cmd_g2quad(args) -> int:
             plane = _plane_record(frame)
         else:
             src = pts
-        data = src
+        data, curve_source = src, False
         n = args.edges or max(6, (len(src) - 1) // 20)    # seed 002 §4.2: ~20 samples per vertex
     g = el.g2_quadratic(src, n)
     jumps = f"{g.curvature_jump:.2g}"
@@ -593,13 +594,15 @@ def cmd_g2quad(args) -> int:
                 s = np.r_[0.0, np.cumsum(np.linalg.norm(np.diff(xy, axis=0), axis=1))]
                 curves.append((xy, s + (curves[-1][1][-1] if curves else 0.0), kappa))
             pic = curves_picture(curves, [f"G2 piece {i + 1}" for i in range(len(curves))],
-                                 points=data[::max(1, len(data) // 100)], point_label="source",
                                  title="G2 quadratic B-spline (seed 002)",
                                  params=[f"{n} edges, {g.npoles} poles",
                                          f"deviation {g.deviation:.3g}",
                                          f"curvature jump {jumps}"])
-            pic.layers.insert(1, Layer(g.polyline.points, "affine arc-length polyline", "#7f7f7f",
-                                       marker="o", line=True, size=3.0))
+            pic.layers[:0] = [
+                Layer(data, "source", "#000000", line=True) if curve_source else
+                Layer(data[::max(1, len(data) // 100)], "source", "#000000", marker="s", size=3.0),
+                Layer(g.polyline.points, "affine arc-length polyline", "#7f7f7f", marker="o",
+                      line=True, size=3.0)]
             save_picture(pic, spec)
     if args.dxf:
         splines = g.bsplines if frame is None else [
