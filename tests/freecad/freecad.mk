@@ -3,7 +3,8 @@
 # - every tests/freecad/test_*.py through `freecadcmd -t <module>` (its exit code and
 #   its unittest summary are both checked: freecadcmd alone exits 0 on a failing script);
 # - the GUI smoke test (tests/freecad/gui_smoke.py) in `freecad` under `xvfb-run -a`,
-#   which writes $(BUILD)/freecad/gui_smoke.png and a result file checked here.
+#   on the demo document examples/demo.py makes headless first ($(BUILD)/freecad/demo/);
+#   it keeps its screenshots ($(BUILD)/freecad/gui_*.png) and a result file checked here.
 # FreeCAD runs with HOME=$(BUILD)/freecad/home, whose Mod folder links to freecad_wb/,
 # so the user's real ~/.local and ~/.config are never touched.
 BUILD     ?= build
@@ -16,7 +17,7 @@ FC_ENV     = HOME=$(FCHOME) LIBELASTICA_PATH=$(CURDIR)/$(BUILD)/libelastica.so \
              QTWEBENGINE_DISABLE_SANDBOX=1 ELASTICA_TEST_OUT=$(CURDIR)/$(FCDIR)
 TIMEOUT   ?= 150
 
-.PHONY: all fc-home fc-tests fc-gui
+.PHONY: all fc-home fc-tests fc-gui fc-demo
 all: fc-tests fc-gui
 
 fc-home:
@@ -33,9 +34,14 @@ fc-tests: fc-home
 	  grep -E '^Ran [0-9]+ test' $(FCDIR)/$$m.log; \
 	done
 
-fc-gui: fc-home
+fc-demo: fc-home
+	@rc=0; env $(FC_ENV) ELASTICA_DEMO_OUT=$(CURDIR)/$(FCDIR)/demo timeout $(TIMEOUT) \
+	  freecadcmd $(CURDIR)/examples/demo.py > $(FCDIR)/demo.log 2>&1 || rc=$$?; \
+	if [ $$rc -ne 0 ]; then tail -n 30 $(FCDIR)/demo.log; echo "FAILED: the demo document"; exit 1; fi
+
+fc-gui: fc-home fc-demo
 	@echo "== freecad (GUI, xvfb-run -a) tests/freecad/gui_smoke.py"
-	@rm -f $(FCDIR)/gui_smoke.result $(FCDIR)/gui_smoke.png
+	@rm -f $(FCDIR)/gui_smoke.result $(FCDIR)/gui_*.png
 	@rc=0; env $(FC_ENV) timeout $(TIMEOUT) xvfb-run -a -s "-screen 0 1280x1024x24" \
 	  freecad $(CURDIR)/tests/freecad/gui_smoke.py > $(FCDIR)/gui_smoke.log 2>&1 || rc=$$?; \
 	if [ $$rc -ne 0 ] || [ "$$(head -n 1 $(FCDIR)/gui_smoke.result 2>/dev/null)" != "PASS" ]; then \

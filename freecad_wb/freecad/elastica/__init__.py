@@ -36,6 +36,19 @@ def ensure_binding():
     return sys.modules["libelastica"]
 
 
+def library_problem():
+    """'' when the libelastica binding loads, else a message naming the exact
+    command that builds the C library (for this source tree)."""
+    try:
+        ensure_binding()
+        return ""
+    except (ImportError, OSError) as exc:
+        src = _SRC_ROOT if os.path.isfile(os.path.join(_SRC_ROOT, "Makefile")) else ""
+        how = (f"run  make -C {src} freecad-install  (or  make -C {src} lib)" if src else
+               "install the libelastica Python package and its C library")
+        return f"the libelastica library is missing ({exc}); {how}, then restart FreeCAD"
+
+
 def defaults():
     """The workbench's defaults: (tolerance mm, B-spline degree, model)."""
     import FreeCAD as App
@@ -43,5 +56,5 @@ def defaults():
     tol = p.GetFloat("Tolerance", 0.001)
     deg = p.GetInt("Degree", 3)
     model = p.GetString("Model", "discrete")
-    return (tol if tol > 0 else 0.001, deg if 3 <= deg <= 7 else 3,
+    return (tol if 1e-9 <= tol <= 1e3 else 0.001, deg if 3 <= deg <= 7 else 3,
             model if model in ("discrete", "smooth") else "discrete")
