@@ -101,7 +101,7 @@ def run(src, out):
     if len(ids) != 2 or dev > 1e-6:
         raise RuntimeError(f"sketch B-splines: {len(ids)} curves, {dev:.3g} mm from the fit")
     g2 = g2quad.make(doc, [(sketch, [])], Edges=40)
-    g2.Label = f"G2 quadratic B-spline of the keyline (seed 002) - {PALETTE[3][0]}"
+    g2.Label = f"G2 quadratic B-spline (seed 002) - {PALETTE[3][0]}"
     doc.recompute()
     if g2.Status != "ok":
         raise RuntimeError(f"G2 quadratic B-spline: {g2.Status}")

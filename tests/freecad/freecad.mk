@@ -17,12 +17,15 @@ FC_ENV     = HOME=$(FCHOME) LIBELASTICA_PATH=$(CURDIR)/$(BUILD)/libelastica.so \
              QTWEBENGINE_DISABLE_SANDBOX=1 ELASTICA_TEST_OUT=$(CURDIR)/$(FCDIR)
 TIMEOUT   ?= 150
 
-.PHONY: all fc-home fc-tests fc-gui fc-demo
-all: fc-tests fc-gui
+.PHONY: all fc-home fc-tests fc-gui fc-demo fc-gallery fc-addon
+all: fc-tests fc-addon fc-gui
 
+# a fresh HOME without a Mod folder: `make freecad-install` must make it and link the workbench
 fc-home:
-	@rm -rf $(FCHOME) && mkdir -p $(FCMOD)
-	@ln -sfn $(CURDIR)/freecad_wb $(FCMOD)/elastica
+	@rm -rf $(FCHOME) && mkdir -p $(FCHOME)
+	@$(MAKE) --no-print-directory -f Makefile freecad-install FREECAD_MOD=$(FCMOD) BUILD=$(BUILD) > /dev/null
+	@test "$$(readlink $(FCMOD)/elastica)" = "$(CURDIR)/freecad_wb" || \
+	  { echo "FAILED: make freecad-install did not link $(FCMOD)/elastica"; exit 1; }
 
 fc-tests: fc-home
 	@set -e; for m in $(FC_TESTS); do \
@@ -33,6 +36,19 @@ fc-tests: fc-home
 	    echo "FAILED: freecadcmd -t $$m (exit $$rc, log $(FCDIR)/$$m.log)"; exit 1; fi; \
 	  grep -E '^Ran [0-9]+ test' $(FCDIR)/$$m.log; \
 	done
+
+# an Addon Manager install: the repository itself in Mod/ (its package.xml puts freecad_wb/
+# on sys.path, the C sources' libelastica/ folder must not pass for the Python package)
+ADDON_HOME := $(CURDIR)/$(FCDIR)/addon-home
+fc-addon:
+	@echo "== freecadcmd: the workbench installed as an addon (repository in Mod/)"
+	@rm -rf $(ADDON_HOME) && mkdir -p $(ADDON_HOME)/.local/share/FreeCAD/Mod
+	@ln -s $(CURDIR) $(ADDON_HOME)/.local/share/FreeCAD/Mod/Elastica
+	@out=$$(HOME=$(ADDON_HOME) LIBELASTICA_PATH=$(CURDIR)/$(BUILD)/libelastica.so timeout $(TIMEOUT) \
+	  freecadcmd -c "import freecad.elastica as e; p = e.library_problem(); import libelastica as el; \
+	print('ADDON', p or 'OK', el.__file__)" 2>&1 | grep '^ADDON'); \
+	case "$$out" in "ADDON OK $(CURDIR)/python/libelastica/__init__.py") echo "$$out";; \
+	  *) echo "FAILED: addon install: $$out"; exit 1;; esac
 
 fc-demo: fc-home
 	@rc=0; env $(FC_ENV) ELASTICA_DEMO_OUT=$(CURDIR)/$(FCDIR)/demo timeout $(TIMEOUT) \
@@ -48,3 +64,11 @@ fc-gui: fc-home fc-demo
 	  tail -n 40 $(FCDIR)/gui_smoke.log; cat $(FCDIR)/gui_smoke.result 2>/dev/null; \
 	  echo "FAILED: GUI smoke test (exit $$rc, log $(FCDIR)/gui_smoke.log)"; exit 1; fi
 	@tail -n +2 $(FCDIR)/gui_smoke.result
+
+# the README's screenshot of the workbench (make gallery): the demo document in FreeCAD
+fc-gallery: fc-home fc-demo
+	@rc=0; env $(FC_ENV) ELASTICA_GALLERY=$(CURDIR)/docs/gallery timeout $(TIMEOUT) \
+	  xvfb-run -a -s "-screen 0 1280x1024x24" freecad $(CURDIR)/tests/freecad/gallery.py \
+	  > $(FCDIR)/gallery.log 2>&1 || rc=$$?; \
+	if [ $$rc -ne 0 ]; then tail -n 30 $(FCDIR)/gallery.log; echo "FAILED: the FreeCAD screenshot"; exit 1; fi
+	@echo "docs/gallery/freecad_workbench.png"

@@ -56,15 +56,21 @@ class PackageTest(unittest.TestCase):
         self.assertEqual(library_problem(), "")
 
     def test_package_xml(self):
-        root = ET.parse(os.path.join(WB, "package.xml")).getroot()
+        """The Addon Manager reads the repository root's package.xml; its workbench's
+        subdirectory is the folder FreeCAD must put on sys.path (freecad_wb)."""
+        root = ET.parse(os.path.join(S.ROOT, "package.xml")).getroot()
         self.assertEqual(root.tag, "{%s}package" % NS["p"])
         for tag in ("name", "description", "version", "maintainer", "license", "url"):
             self.assertTrue(root.find(f"p:{tag}", NS).text.strip(), tag)
+        self.assertNotIn("example.org", ET.tostring(root, encoding="unicode"))
         wb = root.find("p:content/p:workbench", NS)
         self.assertEqual(wb.find("p:classname", NS).text, "ElasticaWorkbench")
+        sub = os.path.join(S.ROOT, wb.find("p:subdirectory", NS).text)
+        self.assertEqual(os.path.realpath(sub), os.path.realpath(WB))
+        self.assertTrue(os.path.isdir(os.path.join(sub, "freecad", "elastica")))
         with open(os.path.join(PKG, "init_gui.py")) as fh:
             self.assertIn("class ElasticaWorkbench(", fh.read())
-        icon = os.path.join(WB, wb.find("p:icon", NS).text)
+        icon = os.path.join(S.ROOT, wb.find("p:icon", NS).text)
         self.assertTrue(os.path.isfile(icon), icon)
         from freecad import elastica
         self.assertEqual(root.find("p:version", NS).text, elastica.__version__)

@@ -8,7 +8,7 @@ finds it through a Mod folder holding ``freecad_wb`` (a symlink is enough).
 import os
 import sys
 
-__version__ = "0.1.0"
+__version__ = "0.2.0"
 
 _HERE = os.path.dirname(os.path.realpath(__file__))
 ICONPATH = os.path.join(_HERE, "resources", "icons")
@@ -23,16 +23,23 @@ def icon(name):
 
 
 def ensure_binding():
-    """Import libelastica: installed, or from the source tree this workbench lives in
-    (``python/`` beside ``freecad_wb/``; the binding then finds ``build/libelastica.so``
-    itself, or LIBELASTICA_PATH)."""
-    try:
-        import libelastica  # noqa: F401
-    except ImportError:
-        src = os.path.join(_SRC_ROOT, "python")
-        if os.path.isdir(os.path.join(src, "libelastica")) and src not in sys.path:
-            sys.path.append(src)
-        import libelastica  # noqa: F401,F811
+    """Import libelastica: the source tree's binding when the workbench lives in one
+    (``python/`` beside ``freecad_wb/``, tried first: the same version as the
+    workbench; it finds ``build/libelastica.so`` itself, or LIBELASTICA_PATH), else
+    an installed package. The C sources' folder ``libelastica/`` must not pass for
+    the package when FreeCAD has put the tree's root on sys.path (an Addon Manager
+    install): a package without ``__file__`` is such a namespace and is dropped."""
+    src = os.path.join(_SRC_ROOT, "python")
+    if os.path.isdir(os.path.join(src, "libelastica")) and src not in sys.path:
+        sys.path.insert(0, src)
+    mod = sys.modules.get("libelastica")
+    if mod is not None and getattr(mod, "__file__", None) is None:
+        del sys.modules["libelastica"]
+    import libelastica  # noqa: F401
+    if getattr(sys.modules["libelastica"], "__file__", None) is None:
+        del sys.modules["libelastica"]
+        raise ImportError("libelastica: found only a folder of that name, not the Python "
+                          "package")
     return sys.modules["libelastica"]
 
 
