@@ -454,16 +454,22 @@ START_TEST(test_polyline_ellipse)
 }
 END_TEST
 
-/* An S curve: split at the inflection; without splitting or with a wrong split -> EL_EDOM. */
-START_TEST(test_polyline_inflection)
+/* E samples of y = sin x over [0.4, 2 pi - 0.4]: an S curve, inflection x = pi at E/2. */
+static void sine_samples(int E, double *q)
 {
-    enum { E = 801 };
-    static double q[2 * E];
     for (int j = 0; j < E; j++) {
         double x = 0.4 + (2.0 * M_PI - 0.8) * j / (E - 1);
         q[2 * j] = x;
         q[2 * j + 1] = sin(x);
     }
+}
+
+/* An S curve: split at the inflection; without splitting or with a wrong split -> EL_EDOM. */
+START_TEST(test_polyline_inflection)
+{
+    enum { E = 801 };
+    static double q[2 * E];
+    sine_samples(E, q);
     el_affine_result r;
     ck_assert_int_eq(el_affine_polyline(E, q, NULL, 0, NULL, 30, NULL, &r), EL_OK);
     ck_assert_uint_eq(r.npieces, 2);
@@ -588,11 +594,7 @@ START_TEST(test_g2_bspline_pieces_of_a_curve)
 {
     enum { E = 801 };
     static double q[2 * E];
-    for (int j = 0; j < E; j++) {
-        double x = 0.4 + (2.0 * M_PI - 0.8) * j / (E - 1);
-        q[2 * j] = x;
-        q[2 * j + 1] = sin(x);
-    }
+    sine_samples(E, q);
     el_affine_options o;
     el_affine_options_defaults(&o);
     o.fit_ends = 1;

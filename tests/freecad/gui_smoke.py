@@ -364,6 +364,7 @@ def ellblend_panel(doc, S):
     fits_combo_view(panel, "elliptic blend")
     check(e.Status == "ok" and "within" in panel.result.text(),
           f"elliptic blend panel shows the B-spline deviation ({e.Status})")
+    check(not panel.d.isEnabled(), "elliptic blend through the points: d disabled")
     l0 = e.Shape.Length
     click_arrow(panel.k, up=True)
     wait()
@@ -371,7 +372,8 @@ def ellblend_panel(doc, S):
           "elliptic blend: an arrow click on k previews k = 0.55")
     panel.mode.setCurrentIndex(1)
     wait()
-    check(e.Mode == "control" and e.Status == "ok", "elliptic blend panel: control points")
+    check(e.Mode == "control" and e.Status == "ok" and panel.d.isEnabled(),
+          "elliptic blend panel: control points, d enabled")
     screenshot("gui_ellblend_panel.png")
     panel.sketch.setCurrentIndex(panel.sketch.count() - 1)
     n0 = len(doc.Objects)

@@ -5,6 +5,7 @@ into sketches. All numerics come from the libelastica Python binding.
 Namespace package ``freecad.elastica`` (no ``freecad/__init__.py`` here): FreeCAD
 finds it through a Mod folder holding ``freecad_wb`` (a symlink is enough).
 """
+import importlib
 import os
 import sys
 
@@ -35,7 +36,7 @@ def ensure_binding():
     mod = sys.modules.get("libelastica")
     if mod is not None and getattr(mod, "__file__", None) is None:
         del sys.modules["libelastica"]
-    import libelastica  # noqa: F401
+    importlib.import_module("libelastica")
     if getattr(sys.modules["libelastica"], "__file__", None) is None:
         del sys.modules["libelastica"]
         raise ImportError("libelastica: found only a folder of that name, not the Python "

@@ -11,7 +11,7 @@ import FreeCAD as App
 import Part
 
 from .geometry import dedup, el, np
-from .proxy import FeatureProxy, InputProblem, add_property, attach_view, read_only, report
+from .proxy import FeatureProxy, InputProblem, add_property, new_feature, read_only, report
 
 SCALE_SHARE = 0.12    # automatic scale: the longest tooth is this share of the extent
 
@@ -116,13 +116,7 @@ class CombProxy(FeatureProxy):
 
 def make(doc, source, subs=(), **props):
     """A new curvature comb of ``source`` (optionally of its edges ``subs``)."""
-    obj = doc.addObject("Part::FeaturePython", "ElasticaComb")
-    CombProxy(obj)
-    obj.Source = (source, list(subs))
-    for k, v in props.items():
-        setattr(obj, k, v)
-    attach_view(obj)
-    return obj
+    return new_feature(doc, "ElasticaComb", CombProxy, Source=(source, list(subs)), **props)
 
 
 __all__ = ["CombProxy", "comb_core", "make"]

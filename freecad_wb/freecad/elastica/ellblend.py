@@ -7,8 +7,8 @@ import math
 
 from . import defaults
 from .geometry import el, np, part_bspline, plane_coordinates, to_3d
-from .proxy import (FeatureProxy, InputProblem, add_enum, add_property, attach_view,
-                    check_number, check_tolerance, read_only)
+from .proxy import (FeatureProxy, InputProblem, add_enum, add_property, check_number,
+                    check_tolerance, new_feature, read_only)
 from .sources import gather_vertices
 
 MODES = ["interpolate", "control"]
@@ -105,13 +105,8 @@ class EllipticBlendProxy(FeatureProxy):
 def make(doc, sources=(), **props):
     """A new elliptic blend curve of four points; ``sources`` [(obj, [subnames])];
     props set Mode, K, KConvention, D, Tolerance."""
-    obj = doc.addObject("Part::FeaturePython", "ElasticaEllipticBlend")
-    EllipticBlendProxy(obj)
-    obj.Points = [(o, tuple(s) or ("",)) for o, s in sources]
-    for k, v in props.items():
-        setattr(obj, k, v)
-    attach_view(obj)
-    return obj
+    return new_feature(doc, "ElasticaEllipticBlend", EllipticBlendProxy,
+                       Points=[(o, tuple(s) or ("",)) for o, s in sources], **props)
 
 
 __all__ = ["EllipticBlendProxy", "ellblend_core", "make", "MODES", "K_CONVENTIONS"]

@@ -3,13 +3,19 @@ by it refer to ``freecad.elastica.features.<Class>`` for their proxies and view
 providers, and recorded macros call ``features.make_fit(...)`` etc.: those names
 stay here as aliases of the modules that now hold them (one module per feature,
 sources.py, geometry.py, viewproviders.py). New code imports those modules."""
-from .blend import BlendProxy, blend_core, make as make_blend, nearest_ends  # noqa: F401
-from .comb import CombProxy, comb_core, make as make_comb  # noqa: F401
-from .ellblend import (EllipticBlendProxy, K_CONVENTIONS, MODES as ELLBLEND_MODES,  # noqa: F401
+from .blend import BlendProxy, blend_core, make as make_blend, nearest_ends
+from .comb import CombProxy, comb_core, make as make_comb
+from .ellblend import (EllipticBlendProxy, K_CONVENTIONS, MODES as ELLBLEND_MODES,
                        ellblend_core, make as make_ellblend)
-from .fit import FitProxy, fit_core, make as make_fit  # noqa: F401
-from .geometry import (curve_bspline, link_edge, part_bspline, placement_from_frame,  # noqa: F401
+from .fit import FitProxy, fit_core, make as make_fit
+from .geometry import (curve_bspline, link_edge, part_bspline, placement_from_frame,
                        sketch_geo_of_edge, to_3d, to_plane, write_to_sketch)
-from .proxy import InputProblem  # noqa: F401
-from .sources import gather_points, gather_vertices  # noqa: F401
-from .viewproviders import ViewProvider  # noqa: F401
+from .proxy import InputProblem
+from .sources import gather_points, gather_vertices
+from .viewproviders import ViewProvider
+
+__all__ = ["BlendProxy", "blend_core", "make_blend", "nearest_ends", "CombProxy", "comb_core",
+           "make_comb", "EllipticBlendProxy", "K_CONVENTIONS", "ELLBLEND_MODES", "ellblend_core",
+           "make_ellblend", "FitProxy", "fit_core", "make_fit", "curve_bspline", "link_edge",
+           "part_bspline", "placement_from_frame", "sketch_geo_of_edge", "to_3d", "to_plane",
+           "write_to_sketch", "InputProblem", "gather_points", "gather_vertices", "ViewProvider"]

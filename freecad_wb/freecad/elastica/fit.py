@@ -14,9 +14,9 @@ import FreeCAD as App
 import Part
 
 from . import defaults
-from .geometry import (curve_bspline, el, np, part_bspline, plane_coordinates, to_3d, to_plane)
-from .proxy import (FeatureProxy, InputProblem, add_enum, add_property, attach_view,
-                    check_degree, check_number, check_tolerance, read_only, report)
+from .geometry import curve_bspline, el, link_edge, np, part_bspline, plane_coordinates, to_3d
+from .proxy import (FeatureProxy, InputProblem, add_enum, add_property, check_degree,
+                    check_number, check_tolerance, new_feature, read_only)
 from .sources import gather_points
 
 MIN_POINTS = 6          # fewer points cannot determine the 7 (5 shape) parameters of a fit
@@ -244,7 +244,6 @@ class FitProxy(FeatureProxy):
         for link in (obj.StartTangent, obj.EndTangent):
             ends.append(None)
             if link and link[1] and link[1][0]:
-                from .geometry import link_edge
                 ends[-1] = link_edge(link[0], link[1][0])
         one_piece_only = obj.PinEnd or obj.PinStart or any(e is not None for e in ends)
         if obj.SplitAtInflection and one_piece_only:
@@ -291,17 +290,12 @@ def stored_curves(obj):
 def make(doc, sources=(), csv_file="", **props):
     """A new Fit feature in ``doc``; ``sources`` [(obj, [subnames])]; props set Model,
     SplitAtInflection, PinStart, PinEnd, ResampleStep, Tolerance, Degree, ..."""
-    obj = doc.addObject("Part::FeaturePython", "ElasticaFit")
-    FitProxy(obj)
-    obj.Source = [(o, tuple(s) or ("",)) for o, s in sources]
-    obj.CsvFile = csv_file or ""
     if "PinEnds" in props:                       # the version-1 name (recorded macros)
         props["PinStart"] = props.pop("PinEnds")
-    for k, v in props.items():
-        setattr(obj, k, v)
-    attach_view(obj)
-    return obj
+    return new_feature(doc, "ElasticaFit", FitProxy,
+                       Source=[(o, tuple(s) or ("",)) for o, s in sources],
+                       CsvFile=csv_file or "", **props)
 
 
-__all__ = ["FitProxy", "fit_core", "make", "stored_curves", "MODELS", "MODEL_NAMES",
-           "InputProblem", "report", "to_plane"]
+__all__ = ["FitProxy", "fit_core", "make", "stored_curves", "has_constraints", "MODELS",
+           "MODEL_NAMES"]

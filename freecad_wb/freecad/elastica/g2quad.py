@@ -11,7 +11,7 @@ import FreeCAD as App
 import Part
 
 from .geometry import bspline_edges, el, np, plane_coordinates, to_3d
-from .proxy import (FeatureProxy, InputProblem, add_property, attach_view, read_only)
+from .proxy import FeatureProxy, InputProblem, add_property, new_feature, read_only
 from .sources import gather_edges, sample_chain
 
 SAMPLES_PER_VERTEX = 20     # seed 002 §4.2: |p| ~ 20 |x|
@@ -92,13 +92,8 @@ class G2QuadProxy(FeatureProxy):
 
 def make(doc, sources=(), **props):
     """A new G2 quadratic B-spline of the picked edges ``sources`` [(obj, [subnames])]."""
-    obj = doc.addObject("Part::FeaturePython", "ElasticaG2Quad")
-    G2QuadProxy(obj)
-    obj.Source = [(o, tuple(s) or ("",)) for o, s in sources]
-    for k, v in props.items():
-        setattr(obj, k, v)
-    attach_view(obj)
-    return obj
+    return new_feature(doc, "ElasticaG2Quad", G2QuadProxy,
+                       Source=[(o, tuple(s) or ("",)) for o, s in sources], **props)
 
 
 __all__ = ["G2QuadProxy", "g2quad_core", "make"]

@@ -86,6 +86,17 @@ def report(obj, msg, error=True):
         obj.Status = f"error: {msg}" if error else msg
 
 
+def new_feature(doc, name, proxy_class, **props):
+    """A Part::FeaturePython ``name`` in ``doc`` with a ``proxy_class`` proxy, its
+    properties set in the order given, and its view provider (GUI)."""
+    obj = doc.addObject("Part::FeaturePython", name)
+    proxy_class(obj)
+    for k, v in props.items():
+        setattr(obj, k, v)
+    attach_view(obj)
+    return obj
+
+
 def attach_view(obj, restored=False):
     """The feature's view provider, when the GUI has installed VIEW_HOOK."""
     if VIEW_HOOK:

@@ -15,7 +15,6 @@ from PySide import QtCore, QtGui
 from . import blend as B
 from . import ellblend as E
 from . import fit as F
-from . import g2quad as Q
 from . import icon
 from .geometry import is_sketch
 
@@ -541,7 +540,9 @@ class EllipticBlendPanel(_Panel):
                              "singular near k = 0.80241 (m = 0.64386)")
         self.d = self.number(g, "End factor d", "D", 1e-6, 1e3, 0.1, "",
                              "End-derivative parameter d > 0: the curve leaves the first point "
-                             "with velocity d (q1 - q0)")
+                             "with velocity d (q1 - q0). Control points only: through the "
+                             "points the curve does not depend on d",
+                             when=lambda: self.obj.Mode == "control")
         self.tol = self.number(g, "Tolerance", "Tolerance", 1e-9, 1e3, 1e-3, "mm",
                                "Largest distance of the B-spline from the blending curve (mm); "
                                "arrows step by a factor of 10", decade=True)
