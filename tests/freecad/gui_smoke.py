@@ -329,8 +329,14 @@ def fit_panel(doc, S):
           not panel.pin_start.isEnabled(), "fit panel: keyline split into two elasticae, "
                                            "pinning disabled")
     check(len(f.DataPoints) == len(f.FootPoints) > 20, "fit: fitted points and their feet kept")
+    vp = f.ViewObject.Proxy
+    check(vp.overlay_counts() == (len(f.DataPoints), 0), f"fit: markers drawn {vp.overlay_counts()}")
     panel.show_res.setChecked(True)
-    check(f.ViewObject.ShowResiduals, "fit: residual segments shown")
+    check(f.ViewObject.ShowResiduals and vp.overlay_counts() == (len(f.DataPoints),) * 2,
+          "fit: residual segments drawn")
+    panel.show_data.setChecked(False)
+    check(vp.overlay_counts()[0] == 0, "fit: markers hidden on request")
+    panel.show_data.setChecked(True)
     type_into(panel.step, "5000")               # longer than the curve: bad input
     wait()
     check("error" in panel.result.text() and not panel.accept() and T.CURRENT,
@@ -393,6 +399,7 @@ def g2quad_panel(doc, ksk):
     click_arrow(panel.edges, up=True)
     wait()
     check(q.Edges == 25 and q.Poles != p0 and q.Status == "ok", "G2 quadratic: Edges arrow")
+    check(q.ViewObject.Proxy.overlay_counts() == (26, 25), "G2 quadratic: its polyline drawn")
     e = ksk.Shape.Edges[0]
     ends = [e.valueAt(e.FirstParameter), e.valueAt(e.LastParameter)]
     mine = [v.Point for v in q.Shape.Vertexes]

@@ -407,6 +407,20 @@ class CombTest(unittest.TestCase):
             longest = max(e.Length for w in envelopes for e in w.Edges)
             self.assertLess(longest, 0.2 * f.Shape.BoundBox.DiagonalLength, model)
 
+    def test_comb_absurd_values_give_a_message(self):
+        sk = S.arc_sketch(self.doc, 20.0)
+        comb = Co.make(self.doc, sk, ["Edge1"], Samples=9)
+        self.doc.recompute()
+        for prop, value in (("Samples", 1), ("Samples", 10 ** 6), ("Scale", float("nan"))):
+            old = getattr(comb, prop)
+            setattr(comb, prop, value)
+            self.doc.recompute()
+            self.assertTrue(comb.Status.startswith("error"), (prop, value))
+            self.assertIn(prop, comb.Status)
+            setattr(comb, prop, old)
+        self.doc.recompute()
+        self.assertEqual(comb.Status, "ok")
+
     def test_comb_bad_input(self):
         before = S.doc_state(self.doc)
         del C.MESSAGES[:]

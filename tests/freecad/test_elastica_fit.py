@@ -286,7 +286,8 @@ class FitResultTest(unittest.TestCase):
         good = f.Shape.copy()
         for prop, value, words in (("Tolerance", 1e-300, "1e-300"), ("Tolerance", math.nan, "nan"),
                                    ("Degree", 0, "Degree = 0"), ("Degree", 30, "Degree = 30"),
-                                   ("ResampleStep", -1.0, "-1")):
+                                   ("ResampleStep", -1.0, "-1"),
+                                   ("SamplesPerEdge", 0, "SamplesPerEdge = 0")):
             old = getattr(f, prop)
             setattr(f, prop, value)
             self.doc.recompute()

@@ -48,8 +48,8 @@ def comb_core(source, subs=(), samples=60, scale=0.0):
     """Teeth of a curvature comb: a list per curve of (foot, tip) vector pairs, and
     the scale used. ``samples`` teeth per curve; ``scale`` 0 = automatic (the longest
     tooth 12 % of the source's extent)."""
-    if samples < 2:
-        raise InputProblem(f"Samples = {samples}: a comb needs at least 2 teeth per curve")
+    if not 2 <= samples <= 5000:
+        raise InputProblem(f"Samples = {samples} is not usable: 2 to 5000 teeth per curve")
     if not math.isfinite(scale):
         raise InputProblem(f"Scale = {scale}: must be a finite number (0 = automatic)")
     shape = getattr(source, "Shape", None)
@@ -84,8 +84,8 @@ class CombProxy(FeatureProxy):
     def setup(self, obj):
         add_property(obj, "App::PropertyLinkSub", "Source", "Comb",
                      "An Elastica result, or an object (and optionally its edges)")
-        add_property(obj, "App::PropertyIntegerConstraint", "Samples", "Comb",
-                     "Teeth per curve", (60, 2, 5000, 1))
+        add_property(obj, "App::PropertyInteger", "Samples", "Comb",
+                     "Teeth per curve (2 to 5000)", 60)
         add_property(obj, "App::PropertyFloat", "Scale", "Comb",
                      "Tooth length per unit curvature (mm^2); 0 = automatic", 0.0)
         add_property(obj, "App::PropertyFloat", "UsedScale", "Result", "The scale actually used (mm^2)")

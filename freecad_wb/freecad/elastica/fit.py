@@ -187,8 +187,8 @@ class FitProxy(FeatureProxy):
                      "Sketch edges or vertices, a Points object, or a wire / 3D polyline to fit")
         add_property(obj, "App::PropertyFile", "CsvFile", "Input",
                      "A CSV / text file of x,y[,z] points (mm), used instead of Source when set")
-        add_property(obj, "App::PropertyIntegerConstraint", "SamplesPerEdge", "Input",
-                     "Points sampled on each curved source edge", (60, 4, 10000, 1))
+        add_property(obj, "App::PropertyInteger", "SamplesPerEdge", "Input",
+                     "Points sampled on each curved source edge (4 to 10000)", 60)
         add_enum(obj, "Model", "Fit",
                  "discrete: Bobenko-Suris discrete elastica through the (resampled) points; "
                  "smooth: the smooth elastica", MODELS, model)
@@ -239,6 +239,8 @@ class FitProxy(FeatureProxy):
 
     def compute(self, obj):
         """The fit as a dict (see fit_core); raises InputProblem."""
+        if not 4 <= obj.SamplesPerEdge <= 10000:
+            raise InputProblem(f"SamplesPerEdge = {obj.SamplesPerEdge} is not usable: 4 to 10000")
         pts, plane, ordered, closed = gather_points(obj.Source, obj.CsvFile, obj.SamplesPerEdge)
         ends = []
         for link in (obj.StartTangent, obj.EndTangent):

@@ -182,12 +182,22 @@ class ViewProvider:
         for node in (self._line_coords, self._lines):
             lines.addChild(node)
         root.addChild(lines)
-        self._overlay = root
-        # inside every display mode, so hiding the feature hides its markers
-        sw = vobj.SwitchNode
-        for i in range(sw.getNumChildren()):
-            sw.getChild(i).addChild(root)
+        # beside the display modes, shown with the feature (onChanged: Visibility)
+        self._overlay = coin.SoSwitch()
+        self._overlay.addChild(root)
+        vobj.RootNode.addChild(self._overlay)
+        self._show(vobj)
         self._refresh(vobj)
+
+    def _show(self, vobj):
+        if getattr(self, "_overlay", None) is not None:
+            self._overlay.whichChild = 0 if vobj.Visibility else -1
+
+    def overlay_counts(self):
+        """(markers, segments) drawn now (tests)."""
+        if getattr(self, "_overlay", None) is None:
+            return 0, 0
+        return self._points.numPoints.getValue(), self._lines.numVertices.getNum()
 
     def _refresh(self, vobj):
         if getattr(self, "_overlay", None) is None:
@@ -203,11 +213,9 @@ class ViewProvider:
                 for a, b in zip(obj.DataPoints, obj.FootPoints):
                     res += [a, b]
         else:
-            self._colour.rgb.setValue(0.45, 0.45, 0.45)
-            data = []
-            res = list(obj.Polyline) if getattr(vobj, "ShowPolyline", True) else []
-            if _kind(obj) == "G2Quad" and res:       # a polyline, not segment pairs
-                res = [p for a, b in zip(res, res[1:]) for p in (a, b)]
+            self._colour.rgb.setValue(0.35, 0.35, 0.35)
+            data = list(obj.Polyline) if getattr(vobj, "ShowPolyline", True) else []
+            res = [p for a, b in zip(data, data[1:]) for p in (a, b)]   # its edges
         self._coords.point.setNum(0)
         self._coords.point.setValues(0, len(data), [tuple(p) for p in data])
         self._points.numPoints = len(data)
@@ -227,6 +235,8 @@ class ViewProvider:
     def onChanged(self, vobj, prop):
         if prop in ("ShowData", "ShowResiduals", "ShowPolyline", "LineColor"):
             self._refresh(vobj)
+        elif prop == "Visibility":
+            self._show(vobj)
 
     # ---------------------------------------------------------------- tree, editing
 
