@@ -507,6 +507,7 @@ class BlendPanel(_Panel):
                 box.blockSignals(True)
                 box.setValue(values[i])
                 box.blockSignals(False)
+                box.lineEdit().deselect()
         super().refresh()
 
     def result_text(self):
