@@ -32,7 +32,7 @@ APT_PKGS := build-essential pkg-config libgsl-dev coinor-libipopt-dev check \
 PIP_PKGS := numpy cffi pytest scipy ezdxf matplotlib
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps lib check check-c check-asan check-install check-python check-freecad bench occt-dev spiro-dev demo gallery install clean
+.PHONY: all deps lib check check-c check-asan check-install check-python check-freecad bench occt-dev spiro-dev demo gallery install freecad-install clean
 
 all: deps lib
 
@@ -159,6 +159,20 @@ gallery: all
 	$(GALLERY_CLI) fit examples/sample_2d.csv --png docs/gallery/fit_2d.png
 	$(GALLERY_CLI) hermite 0 0 0 1 2 0 0 -1 --length 4 --png docs/gallery/hermite.png
 	$(GALLERY_CLI) blend 0 0 0.3 0.8 0.7 0.9 1 0 --m 0.3 --png docs/gallery/blend.png
+	$(GALLERY_CLI) fit examples/sample_s_curve.csv --model smooth --json $(BUILD)/s_curve_fit.json > /dev/null
+	$(GALLERY_CLI) g2quad $(BUILD)/s_curve_fit.json --edges 24 --png docs/gallery/g2quad.png
+	@$(MAKE) --no-print-directory -f tests/freecad/freecad.mk BUILD=$(BUILD) fc-gallery
+
+# the workbench into FreeCAD's user Mod folder (made if missing) as a link to this tree
+FREECAD_MOD ?= $(HOME)/.local/share/FreeCAD/Mod
+freecad-install: lib
+	@mkdir -p "$(FREECAD_MOD)"
+	@if [ -e "$(FREECAD_MOD)/elastica" ] && [ ! -L "$(FREECAD_MOD)/elastica" ]; then \
+	  echo "make freecad-install: $(FREECAD_MOD)/elastica exists and is not a link; remove it first"; \
+	  exit 1; fi
+	@ln -sfn "$(CURDIR)/freecad_wb" "$(FREECAD_MOD)/elastica"
+	@echo "Elastica workbench: $(FREECAD_MOD)/elastica -> $(CURDIR)/freecad_wb (library $(BUILD)/libelastica.so);"
+	@echo "restart FreeCAD and pick the Elastica workbench"
 
 install: lib
 	install -d $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/include

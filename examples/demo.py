@@ -1,10 +1,14 @@
 """`make demo`: fit the bundled scanned roof-tile keyline with elasticae in FreeCAD,
 headless, and write
 
-  out/demo.FCStd  the scan (a 3D polyline), the parametric Elastica features (the
-                  keyline fitted as two elasticae meeting at its inflection, seed 000
-                  §5; a one-piece fit for comparison; a curvature comb) and a sketch
-                  "Keyline" in the fitted plane holding the B-splines;
+  out/demo.FCStd  the scan (its points, and the 3D polyline the fits read), the
+                  parametric Elastica features (the keyline fitted as two elasticae
+                  meeting at its inflection, seed 000 §5; a one-piece fit and a
+                  discrete fit for comparison; a curvature comb; the G2 quadratic
+                  B-spline of seed 002), each in its own colour named in its label,
+                  and a sketch "Keyline" in the fitted plane holding the B-splines.
+                  Opened in FreeCAD, the features get their icons, colours and task
+                  panels (double-click);
   out/demo.svg    the data and the fitted curves in the keyline's plane, with curvature;
   out/demo.json   the fitted parameters, errors, B-spline sizes and the plane;
 
@@ -45,6 +49,8 @@ def run(src, out):
     from libelastica.io import curve_to_dict, read_points, write_json
     from libelastica.report import curves_picture, save_picture
     from freecad.elastica import features as F
+    from freecad.elastica import g2quad
+    from freecad.elastica.viewproviders import PALETTE
 
     t0 = time.time()
     xyz = read_points(src)
@@ -52,9 +58,14 @@ def run(src, out):
         raise SystemExit(f"{src}: expected x,y,z columns")
     doc = App.newDocument("ElasticaDemo")
 
+    scan_points = doc.addObject("Points::Feature", "ScanPoints")
+    scan_points.Label = "Scanned keyline (points)"
+    import Points
+    scan_points.Points = Points.Points([App.Vector(*map(float, p)) for p in xyz])
     scan = doc.addObject("Part::Feature", "Scan")
-    scan.Label = "Scanned keyline"
+    scan.Label = "Scanned keyline (polyline the fits read)"
     scan.Shape = Part.makePolygon([App.Vector(*map(float, p)) for p in xyz])
+    scan.Visibility = False
 
     keyline = F.make_fit(doc, [(scan, [])], Model="smooth", SplitAtInflection=True,
                          ResampleStep=STEP, Tolerance=TOL, Degree=5)
@@ -65,8 +76,14 @@ def run(src, out):
     discrete = F.make_fit(doc, [(scan, [])], Model="discrete", SplitAtInflection=True,
                           ResampleStep=STEP, Tolerance=TOL)
     discrete.Label = "Keyline fit (discrete elasticae)"
-    comb = F.make_comb(doc, keyline, Samples=80)
-    comb.Label = "Curvature comb"
+    comb = F.make_comb(doc, keyline, Samples=40)
+    comb.Label = "Curvature comb of the keyline fit"
+    # the GUI gives the fits the palette's colours in document order (viewproviders):
+    # the labels name them, a legend in the tree
+    for f, (colour, _) in zip((keyline, whole, discrete), PALETTE):
+        f.Label = f"{f.Label} - {colour}"
+    comb.Label += f" - light {PALETTE[0][0]}"
+    whole.Visibility = discrete.Visibility = False    # the same curve again: shown on demand
     doc.recompute()
     for f in (keyline, whole, discrete):
         if f.Status.startswith("error") or not f.Shape.Edges:
@@ -83,6 +100,11 @@ def run(src, out):
               for e in sketch.Shape.Edges for p in e.discretize(50))
     if len(ids) != 2 or dev > 1e-6:
         raise RuntimeError(f"sketch B-splines: {len(ids)} curves, {dev:.3g} mm from the fit")
+    g2 = g2quad.make(doc, [(sketch, [])], Edges=40)
+    g2.Label = f"G2 quadratic B-spline (seed 002) - {PALETTE[3][0]}"
+    doc.recompute()
+    if g2.Status != "ok":
+        raise RuntimeError(f"G2 quadratic B-spline: {g2.Status}")
 
     os.makedirs(out, exist_ok=True)
     fcstd = os.path.join(out, "demo.FCStd")
@@ -132,6 +154,8 @@ def run(src, out):
         "one_piece": fit_json(whole),
         "keyline_discrete": fit_json(discrete),
         "sketch": {"name": sketch.Name, "bsplines": len(ids)},
+        "g2_quadratic": {"pieces": g2.Pieces, "poles": g2.Poles, "deviation_mm": g2.Deviation,
+                         "curvature_jump": g2.CurvatureJump},
         "files": {k: (os.path.relpath(v, ROOT) if v.startswith(ROOT + os.sep) else v) for k, v in
                   (("fcstd", fcstd), ("svg", svg), ("json", os.path.join(out, "demo.json")))},
         "seconds": round(time.time() - t0, 2),
@@ -168,6 +192,9 @@ def run(src, out):
           f"{sum(c['bspline']['poles'] for c in report['keyline']['curves'])} poles, "
           f"within {report['keyline']['bspline_deviation_mm']:.2g} mm of the elasticae")
     files = report["files"]
+    g = report["g2_quadratic"]
+    print(f"  G2 quadratic      {g['pieces']} pieces, {g['poles']} poles, within "
+          f"{g['deviation_mm']:.2g} mm of the keyline, curvature jumps {g['curvature_jump']:.1g}")
     print(f"  wrote             {files['fcstd']}, {files['svg']} ({backend}), {files['json']}")
     print(f"  reopened          {files['fcstd']}: recomputed from the scan, same result")
     print(f"  time              {report['seconds']} s")

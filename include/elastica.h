@@ -865,6 +865,28 @@ int el_affine_uniform_bspline(int dim, int degree, size_t npts, const double *x,
 int el_affine_quadratic_bspline(size_t npts, const double *xy, int clamped, struct el_bspline *out);
 
 /*
+ * The curvature-continuous quadratic B-spline of an affine arc-length polyline
+ * x_0..x_m (npts = m+1 >= 4) that starts exactly at `start` and ends exactly at
+ * `end` (e.g. the source curve's end points; NULL: the uniform spline's own end
+ * (x_0+x_1)/2, resp. (x_{m-1}+x_m)/2). The uniform spline's first segment is
+ * replaced by the parabola from `start` to m_2 = (x_1+x_2)/2 with the uniform
+ * spline's tangent (x_2 - x_1) and curvature A_2/|x_2 - x_1|^3 there, so the joint
+ * stays G2; the last segment likewise. Every other joint is the uniform spline's
+ * (G2 iff A_{i-1} = A_i). Clamped, npts poles: start, c_0, x_2, ..., x_{m-2}, c_1,
+ * end; knots 0, lambda, lambda+1, ..., lambda+m-3, lambda+m-3+mu (multiplicity 3
+ * at the ends), c_0 = m_2 - (lambda/2)(x_2 - x_1) with
+ * lambda^2 = 2 det(m_2 - start, x_2 - x_1) / A_2 (sqrt 2 when start = x_0),
+ * mirrored at the end with A_{m-2}. The end tangents follow (the end parabola
+ * has no freedom left); out->max_deviation = -1 (the caller measures it against
+ * its source). Errors: EL_EINVAL (NULL xy/out, npts < 4, non-finite input),
+ * EL_ESINGULAR (A_2 or A_{m-2} = 0), EL_EDOM (an end point not on the turning
+ * side of its joint's tangent line: no such parabola), EL_ENOMEM; out untouched
+ * on error.
+ */
+int el_affine_g2_bspline(size_t npts, const double *xy, const double *start, const double *end,
+                         struct el_bspline *out);
+
+/*
  * Length of the parabolic arcs of the replacement curve f~ (§4.2) through
  * samples p_0..p_N: arc j (p_j to p_{j+1}) is the parabola with tangent
  * p_{j+1}-p_{j-1} at p_j and p_{j+2}-p_j at p_{j+1} (ghost end points

@@ -310,6 +310,89 @@ int el_affine_quadratic_bspline(size_t npts, const double *xy, int clamped, stru
     return el_affine_uniform_bspline(2, 2, npts, xy, clamped, out);
 }
 
+/* ------------------------------------------ exact end points, every joint kept G2 */
+
+/*
+ * Derivation (ours; the paper leaves the ends open). The uniform quadratic B-spline
+ * of x_0..x_m is the chain of parabolas (m_i, x_i, m_{i+1}), m_i = (x_{i-1} + x_i)/2,
+ * i = 1..m-1; a quadratic Bezier (b0, b1, b2) has curvature det(b1-b0, b2-b1) /
+ * (2 |b1-b0|^3) at b0 and det(b1-b0, b2-b1) / (2 |b2-b1|^3) at b2, so segment i
+ * starts with curvature A_i / |v_{i-1}|^3 and ends with A_i / |v_i|^3 (G2 at m_i iff
+ * A_{i-1} = A_i, §2.5). The first segment is replaced by the parabola
+ * (P, c, m_2) with c = m_2 - (lambda/2) v_1 on the joint's tangent line: it ends
+ * with curvature 2 det(m_2 - P, v_1) / (lambda^2 |v_1|^3), which equals the next
+ * segment's A_2 / |v_1|^3 iff lambda^2 = 2 det(m_2 - P, v_1) / A_2. As a B-spline,
+ * c and x_2 are consecutive poles with knot intervals lambda and 1 (the joint
+ * (c + lambda x_2) / (1 + lambda) is m_2). For P = x_0 on an affine arc-length
+ * polyline lambda = sqrt 2. The last segment mirrors this.
+ */
+/* The end parabola (P, c, m) [sgn = +1] or (m, c, P) [sgn = -1] meeting the joint m with
+ * tangent v and curvature A / |v|^3: its knot interval lambda and control point c. */
+static int g2_end(const double *P, const double *m, const double *v, double A, double sgn,
+                  double *lambda, double c[2])
+{
+    if (A == 0.0) return EL_ESINGULAR;
+    /* start: 2 det(m_2 - P, v_1) / A_2; end: 2 det(v_{m-2}, P - m_{m-1}) / A_{m-2}, the same */
+    double l2 = 2.0 * det2(m[0] - P[0], m[1] - P[1], v[0], v[1]) / A;
+    if (!(l2 > 0.0) || !isfinite(l2)) return EL_EDOM;   /* P not ahead of the joint's tangent */
+    *lambda = sqrt(l2);
+    c[0] = m[0] - sgn * 0.5 * *lambda * v[0];
+    c[1] = m[1] - sgn * 0.5 * *lambda * v[1];
+    return EL_OK;
+}
+
+int el_affine_g2_bspline(size_t npts, const double *xy, const double *start, const double *end,
+                         struct el_bspline *out)
+{
+    if (points_ok(npts, xy, 4) || !out) return EL_EINVAL;
+    if ((start && el__all_finite(start, 2)) || (end && el__all_finite(end, 2))) return EL_EINVAL;
+    size_t m = npts - 1;
+    double v1[2], vl[2], m2[2], ml[2], a[4];
+    edge(xy, 1, v1);
+    edge(xy, m - 2, vl);
+    /* A_2 = det(v_1, v_2) and A_{m-2} = det(v_{m-3}, v_{m-2}) (A_1, A_2 when m = 3) */
+    {
+        double va[2], vb[2];
+        edge(xy, 1, va);
+        edge(xy, 2, vb);
+        a[0] = det2(va[0], va[1], vb[0], vb[1]);
+        edge(xy, m - 3, va);
+        edge(xy, m - 2, vb);
+        a[1] = det2(va[0], va[1], vb[0], vb[1]);
+    }
+    m2[0] = 0.5 * (xy[2] + xy[4]);
+    m2[1] = 0.5 * (xy[3] + xy[5]);
+    ml[0] = 0.5 * (xy[2 * (m - 2)] + xy[2 * (m - 1)]);
+    ml[1] = 0.5 * (xy[2 * (m - 2) + 1] + xy[2 * (m - 1) + 1]);
+    double lam = 1.0, mu = 1.0, c0[2] = {xy[2], xy[3]}, c1[2] = {xy[2 * (m - 1)], xy[2 * (m - 1) + 1]};
+    double p0[2] = {0.5 * (xy[0] + xy[2]), 0.5 * (xy[1] + xy[3])};
+    double p1[2] = {0.5 * (xy[2 * (m - 1)] + xy[2 * m]), 0.5 * (xy[2 * (m - 1) + 1] + xy[2 * m + 1])};
+    int st;
+    if (start) {
+        if ((st = g2_end(start, m2, v1, a[0], 1.0, &lam, c0))) return st;
+        memcpy(p0, start, sizeof p0);
+    }
+    if (end) {   /* mirrored: c_1 = m_{m-1} + (mu/2) v_{m-2} */
+        if ((st = g2_end(end, ml, vl, a[1], -1.0, &mu, c1))) return st;
+        memcpy(p1, end, sizeof p1);
+    }
+    el_bspline b;
+    if ((st = el_bspline_alloc(&b, 2, 2, npts, m))) return st;
+    memcpy(b.poles, p0, sizeof p0);
+    memcpy(b.poles + 2, c0, sizeof c0);
+    memcpy(b.poles + 4, xy + 4, 2 * (m - 3) * sizeof *xy);     /* x_2 .. x_{m-2} */
+    memcpy(b.poles + 2 * (m - 1), c1, sizeof c1);
+    memcpy(b.poles + 2 * m, p1, sizeof p1);
+    b.knots[0] = 0.0;
+    for (size_t j = 1; j + 1 < m; j++) b.knots[j] = lam + (double)(j - 1);
+    b.knots[m - 1] = lam + (double)(m - 3) + mu;
+    for (size_t j = 0; j < m; j++) b.mults[j] = 1;
+    b.mults[0] = b.mults[m - 1] = 3;
+    b.max_deviation = -1.0;
+    *out = b;
+    return EL_OK;
+}
+
 /* ------------------------------------------- §4.2: the parabolic replacement f~ */
 
 /* Arc j of f~ as a quadratic Bezier b0, b1, b2 (f~(j + tau), tau in [0,1]). */

@@ -6,7 +6,9 @@ that control polygon has continuous curvature (G2). This module wraps
 libelastica/affine.c: polyline coordinates, discrete affine curvature,
 osculating conics, Chaikin / Lane–Riesenfeld refinement, the R^n affine length,
 uniform B-splines of such polygons, and the approximation algorithm of §4
-(:func:`affine_polyline`) for a :class:`SmoothElastica` or point data.
+(:func:`affine_polyline`) for a :class:`SmoothElastica` or point data, and
+:func:`g2_quadratic`: a curve -> one G2 quadratic B-spline per inflection-free
+piece, ending exactly on the curve's ends and inflections.
 """
 from __future__ import annotations
 
@@ -22,7 +24,8 @@ __all__ = ["affine_coords", "affine_length", "affine_curvature", "osculating_con
            "OsculatingConics", "chaikin", "lane_riesenfeld", "affine_elements",
            "uniform_bspline", "quadratic_bspline", "parabolic_lengths", "AffinePolyline",
            "affine_polyline", "affine_curvature_exact", "elastica_affine_curvature",
-           "elastica_inflections"]
+           "elastica_inflections", "g2_bspline", "quadratic_joint_curvatures", "G2Quadratic",
+           "g2_quadratic"]
 
 _KINDS = {"outer": 0, "inner": 1, "middle": 2}
 
@@ -374,3 +377,156 @@ def affine_polyline(curve_or_points, n: int, samples_per_vertex: int = 20,
     pts, t, ps, A, psi, ip, S = _run(samples, tan, list(inflections or []), n, split_inflections,
                                      skip, max_iter, skip_frac, fit_ends, optimise)
     return AffinePolyline(pts, t, None, ps, A, psi, ip, S)
+
+
+# ------------------------------------------------------------------ G2 quadratic B-splines
+
+def g2_bspline(polyline, start=None, end=None):
+    """The curvature-continuous quadratic B-spline of an affine arc-length polyline
+    (m+1 >= 4 vertices) that starts exactly at ``start`` and ends exactly at ``end``
+    (None: the uniform spline's own ends (x0+x1)/2, (x_{m-1}+x_m)/2): the end
+    segments are replaced by the parabolas through those points that meet the next
+    joint G2 (el_affine_g2_bspline). Raises DomainError when an end point lies on
+    the wrong side of its joint's tangent line."""
+    x = _pts(getattr(polyline, "points", polyline), 4)
+    ends = []
+    for name, v in (("start", start), ("end", end)):
+        if v is None:
+            ends.append(ffi.NULL)
+            continue
+        a = np.asarray(v, dtype=np.float64).reshape(-1)
+        if a.shape != (2,) or not np.all(np.isfinite(a)):
+            raise ValueError(f"{name} must be two finite numbers, got {v!r}")
+        ends.append(ffi.new("double[2]", list(a)))
+    b = ffi.new("el_bspline *")
+    check(lib.el_affine_g2_bspline(len(x), dptr(x), ends[0], ends[1], b), "g2_bspline")
+    return bspline_from_c(b)
+
+
+def _quadratic_beziers(bs) -> np.ndarray:
+    """The Bezier control points (nseg, 3, 2) of a clamped quadratic B-spline with
+    simple interior knots (the joint between poles i, i+1 divides them in the ratio
+    of the knot intervals either side)."""
+    P, K = np.asarray(bs.poles), np.asarray(bs.knots)
+    if bs.degree != 2 or len(K) < 2 or bs.mults[0] != 3 or bs.mults[-1] != 3 \
+            or np.any(np.asarray(bs.mults[1:-1]) != 1):
+        raise ValueError("a clamped quadratic B-spline with simple interior knots is needed")
+    dk = np.diff(K)                                  # knot intervals, one per segment
+    joints = (dk[1:, None] * P[1:-2] + dk[:-1, None] * P[2:-1]) / (dk[:-1] + dk[1:])[:, None]
+    starts = np.vstack([P[:1], joints])
+    ends = np.vstack([joints, P[-1:]])
+    return np.stack([starts, P[1:-1], ends], axis=1)
+
+
+def quadratic_joint_curvatures(bs) -> tuple[np.ndarray, np.ndarray]:
+    """Curvature just before and just after every interior joint of a clamped
+    quadratic B-spline, (left, right), from its Bezier segments: a segment (b0, b1,
+    b2) has curvature det(b1-b0, b2-b1) / (2|b1-b0|^3) at b0 and / (2|b2-b1|^3) at b2.
+    G2 means left == right."""
+    B = _quadratic_beziers(bs)
+    d0, d1 = B[:, 1] - B[:, 0], B[:, 2] - B[:, 1]
+    area = d0[:, 0] * d1[:, 1] - d0[:, 1] * d1[:, 0]
+    k_start = area / (2.0 * np.linalg.norm(d0, axis=1) ** 3)
+    k_end = area / (2.0 * np.linalg.norm(d1, axis=1) ** 3)
+    return k_end[:-1], k_start[1:]
+
+
+@dataclass
+class G2Quadratic:
+    """Result of :func:`g2_quadratic`.
+
+    bsplines: one curvature-continuous quadratic B-spline per inflection-free piece,
+    piece p running exactly from ends[p] to ends[p+1] (the source's ends and its
+    inflection points); polyline: the affine arc-length polyline (seed 002 §4) they
+    come from; deviation: the largest distance of the splines from the source (its
+    sample polyline); curvature_jump: the largest relative curvature jump at any
+    joint inside a piece (0 up to rounding: G2); end_tangent_error: the largest angle
+    (radians) between a piece's end tangent and the source's there (None when the
+    source's tangents are unknown; a quadratic end segment that meets its joint G2
+    has no freedom left for the tangent, the error is O(edge)); covers_source: False
+    when an end piece next to an inflection was too short to keep, so the splines
+    start / stop at that inflection (§4.4)."""
+    bsplines: list
+    polyline: AffinePolyline
+    ends: np.ndarray
+    deviation: float
+    curvature_jump: float
+    end_tangent_error: Optional[float]
+    covers_source: bool
+
+    @property
+    def npoles(self) -> int:
+        return int(sum(b.npoles for b in self.bsplines))
+
+
+def _spline_deviation(bs, samples: np.ndarray, lo: float, hi: float) -> float:
+    """Largest distance of one piece's spline from the source polyline ``samples``,
+    sample range [lo, hi] (f~ parameters; 16 points per knot span)."""
+    from .report import closest_points
+    K = np.asarray(bs.knots)
+    u = np.concatenate([np.linspace(a, b, 16, endpoint=False) for a, b in zip(K[:-1], K[1:])]
+                       + [K[-1:]])
+    xy = bs(u)
+    a, b = max(0, int(math.floor(lo)) - 1), min(len(samples), int(math.ceil(hi)) + 2)
+    src = samples[a:b]
+    worst = 0.0
+    for chunk in range(0, len(xy), 256):    # bounded memory: 256 points x the piece's samples
+        p = xy[chunk:chunk + 256]
+        worst = max(worst, float(np.max(np.linalg.norm(closest_points(p, src) - p, axis=1))))
+    return worst
+
+
+def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents=None,
+                 **options) -> G2Quadratic:
+    """Seed 002 end to end: approximate a SmoothElastica or a sampled curve (N+1, 2)
+    by an affine arc-length polyline with n edges (:func:`affine_polyline`, each
+    piece's A adjusted so its last vertex lands on the piece end), then build one
+    curvature-continuous uniform quadratic B-spline per inflection-free piece that
+    ends exactly on the source: at its end points and at its inflections
+    (:func:`g2_bspline`; only the two end segments of a piece are not uniform).
+    ``tangents`` (N+1, 2) of point data sharpen the replacement curve and give the
+    end tangent error; ``options`` go to :func:`affine_polyline`.
+    Raises ValueError / DomainError (straight source, n too small, ...)."""
+    options.setdefault("fit_ends", True)
+    is_curve = hasattr(curve_or_points, "curvature") and hasattr(curve_or_points, "length")
+    ap = affine_polyline(curve_or_points, n, samples_per_vertex=samples_per_vertex,
+                         tangents=None if is_curve else tangents, **options)
+    npieces = len(ap.A)
+    if is_curve:
+        c = curve_or_points
+        bounds = np.concatenate([[0.0], elastica_inflections(c), [c.length]])
+        first = int(np.argmin(np.abs(bounds - ap.s[0])))
+        s_ends = bounds[first:first + npieces + 1]
+        ends = c.points(s_ends)
+        theta = c.angle(s_ends)
+        ends_dir = np.c_[np.cos(theta), np.sin(theta)]
+        total = max(int(samples_per_vertex) * int(n), 4 * (len(bounds) - 1))
+        samples = c.points(np.linspace(0.0, c.length, total + 1))
+        t_ends = s_ends / c.length * total
+        covers = first == 0 and first + npieces == len(bounds) - 1
+    else:
+        samples = as_points(curve_or_points, "points")
+        t_ends = np.concatenate([[ap.t[0]], ap.infl_param, [round(float(ap.t[-1]))]])
+        idx = t_ends.astype(int)
+        ends = samples[idx]
+        ends_dir = None
+        if tangents is not None:
+            tan = as_points(tangents, "tangents")
+            ends_dir = tan[idx] / np.linalg.norm(tan[idx], axis=1)[:, None]
+        covers = idx[0] == 0 and idx[-1] == len(samples) - 1
+    splines, jump, dev, terr = [], 0.0, 0.0, 0.0
+    for p in range(npieces):
+        a, b = ap.piece_start[p], ap.piece_start[p + 1]
+        bs = g2_bspline(ap.points[a:b + 1], ends[p], ends[p + 1])
+        kl, kr = quadratic_joint_curvatures(bs)
+        if len(kl):
+            jump = max(jump, float(np.max(np.abs(kl - kr) / np.maximum(np.abs(kl), np.abs(kr)))))
+        dev = max(dev, _spline_deviation(bs, samples, t_ends[p], t_ends[p + 1]))
+        if ends_dir is not None:
+            d = bs.derivative(np.array([bs.knots[0], bs.knots[-1]]))
+            for vec, ref in ((d[0], ends_dir[p]), (d[1], ends_dir[p + 1])):
+                terr = max(terr, abs(math.atan2(vec[0] * ref[1] - vec[1] * ref[0],
+                                                vec[0] * ref[0] + vec[1] * ref[1])))
+        splines.append(bs)
+    return G2Quadratic(splines, ap, np.asarray(ends), dev, jump,
+                       terr if ends_dir is not None else None, bool(covers))

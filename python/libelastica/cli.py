@@ -46,6 +46,10 @@ BLEND_EXAMPLES = """examples:
   elastica blend 0 0  0.3 0.8  0.7 0.9  1 0 --m 0.3 --d 2 --svg blend.svg
   elastica blend 0 0 0.5 0.857 0.5 1 1 1 --mode control --m 0.3 --json -"""
 
+G2QUAD_EXAMPLES = """examples:
+  elastica g2quad curve.csv --edges 30 --svg g2.svg --dxf g2.dxf
+  elastica fit points.csv --model smooth --json fit.json && elastica g2quad fit.json --json -"""
+
 
 class _Parser(argparse.ArgumentParser):
     """argparse with usage errors as ONE line on stderr (exit 2)."""
@@ -585,6 +589,88 @@ def cmd_spline(args) -> int:
     return EXIT_OK
 
 
+# ------------------------------------------------------------------ g2quad
+
+def cmd_g2quad(args) -> int:
+    """Seed 002: a curve (points, or a smooth elastica from 'fit --json') -> one G2
+    quadratic B-spline per inflection-free piece, ending exactly on the curve."""
+    import libelastica as el
+    from .bspline import BSpline
+    from .core import SmoothElastica
+    from .report import Layer, curves_picture, save_picture
+    source, frame, plane = args.file, None, None
+    if args.edges is not None and args.edges < 3:
+        raise InputError(f"--edges must be at least 3, got {args.edges}")
+    if args.file.lower().endswith(".json"):
+        doc = read_json(args.file)
+        items = doc.get("sides") if isinstance(doc, dict) and "sides" in doc else [doc]
+        if len(items) != 1:
+            raise InputError(f"{args.file}: {len(items)} curves; give one (e.g. one side's JSON)")
+        curve = curve_from_dict(items[0], name=args.file)
+        src = curve if isinstance(curve, SmoothElastica) else curve.points()
+        curve_source = src is curve
+        data = curve.points(np.linspace(0.0, curve.length, 400)) if curve_source else src
+        n = args.edges or 40
+    else:
+        pts = read_points(args.file, min_points=4)
+        if pts.shape[1] == 3:
+            src, frame = el.plane_fit(pts)
+            plane = _plane_record(frame)
+        else:
+            src = pts
+        data, curve_source = src, False
+        n = args.edges or max(6, (len(src) - 1) // 20)    # seed 002 §4.2: ~20 samples per vertex
+    g = el.g2_quadratic(src, n)
+    jumps = f"{g.curvature_jump:.2g}"
+    rec = {"file": str(source), "edges": int(n), "pieces": len(g.bsplines), "plane": plane,
+           "ends": g.ends, "covers_source": g.covers_source, "deviation": g.deviation,
+           "curvature_jump": g.curvature_jump, "end_tangent_error_rad": g.end_tangent_error,
+           "polyline": g.polyline.points, "A": g.polyline.A,
+           "bsplines": [b.to_dict() for b in g.bsplines]}
+    if args.json:
+        write_json(rec, args.json)
+    if args.json != "-":
+        pieces = len(g.bsplines)
+        split = f"{pieces} pieces split at {pieces - 1} inflection(s)" if pieces > 1 else \
+            "1 inflection-free piece"
+        print(f"G2 quadratic B-spline: {split}, {n} edges, {g.npoles} poles (degree 2, "
+              "uniform inside)")
+        print(f"  starts at ({g.ends[0][0]:.6g}, {g.ends[0][1]:.6g}), ends at "
+              f"({g.ends[-1][0]:.6g}, {g.ends[-1][1]:.6g}), exactly on the source")
+        if not g.covers_source:
+            print("  warning: an end of the source next to an inflection is left out (too short "
+                  "for 3 edges); noisy points: fit first (elastica fit --model smooth --json) "
+                  "and pass the JSON", file=sys.stderr)
+        print(f"  largest relative curvature jump at a joint: {jumps} (G2)")
+        print(f"  largest distance from the source: {g.deviation:.3g}")
+        if g.end_tangent_error is not None:
+            print(f"  end tangents off the source's by at most {np.degrees(g.end_tangent_error):.3g} deg")
+    for spec in (args.svg, args.png):
+        if spec:
+            curves = []
+            for b in g.bsplines:
+                u = np.linspace(b.knots[0], b.knots[-1], 200 * (len(b.knots) - 1) + 1)
+                xy, kappa = b(u), b.curvature(u)
+                s = np.r_[0.0, np.cumsum(np.linalg.norm(np.diff(xy, axis=0), axis=1))]
+                curves.append((xy, s + (curves[-1][1][-1] if curves else 0.0), kappa))
+            pic = curves_picture(curves, [f"G2 piece {i + 1}" for i in range(len(curves))],
+                                 title="G2 quadratic B-spline (seed 002)",
+                                 params=[f"{n} edges, {g.npoles} poles",
+                                         f"deviation {g.deviation:.3g}",
+                                         f"curvature jump {jumps}"])
+            pic.layers[:0] = [
+                Layer(data, "source", "#000000", line=True) if curve_source else
+                Layer(data[::max(1, len(data) // 100)], "source", "#000000", marker="s", size=3.0),
+                Layer(g.polyline.points, "affine arc-length polyline", "#7f7f7f", marker="o",
+                      line=True, size=3.0)]
+            save_picture(pic, spec)
+    if args.dxf:
+        splines = g.bsplines if frame is None else [
+            BSpline(b.degree, frame.to_3d(b.poles), b.knots, b.mults) for b in g.bsplines]
+        write_dxf_spline(splines, args.dxf)
+    return EXIT_OK
+
+
 # ------------------------------------------------------------------ parser
 
 def build_parser() -> argparse.ArgumentParser:
@@ -704,6 +790,22 @@ def build_parser() -> argparse.ArgumentParser:
     e.add_argument("--png", metavar="PATH", help="picture (PNG, matplotlib)")
     e.add_argument("--dxf", metavar="PATH", help="write the B-spline as a DXF SPLINE (ezdxf)")
     e.set_defaults(func=cmd_blend)
+
+    q = sub.add_parser("g2quad", help="curvature-continuous quadratic B-spline of a curve (seed 002)",
+                       description="Approximate a curve (points: CSV / text / .npy, 2 or 3 "
+                                   "columns; or a smooth elastica from 'fit --json') by an affine "
+                                   "arc-length polyline and build one G2 uniform quadratic "
+                                   "B-spline per inflection-free piece, ending exactly on the "
+                                   "curve's ends and inflections.",
+                       epilog=G2QUAD_EXAMPLES, formatter_class=raw)
+    q.add_argument("file", metavar="FILE", help="points (a dense sampling: ~20 per edge) or FIT.json")
+    q.add_argument("--edges", type=int, metavar="N",
+                   help="polyline edges (default: points/20, at least 6; 40 for a fit)")
+    q.add_argument("--json", metavar="PATH", help="write the result as JSON ('-' = stdout)")
+    q.add_argument("--svg", metavar="PATH", help="picture (SVG)")
+    q.add_argument("--png", metavar="PATH", help="picture (PNG, matplotlib)")
+    q.add_argument("--dxf", metavar="PATH", help="write the B-splines as DXF SPLINEs (ezdxf)")
+    q.set_defaults(func=cmd_g2quad)
     return p
 
 

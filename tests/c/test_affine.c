@@ -454,16 +454,22 @@ START_TEST(test_polyline_ellipse)
 }
 END_TEST
 
-/* An S curve: split at the inflection; without splitting or with a wrong split -> EL_EDOM. */
-START_TEST(test_polyline_inflection)
+/* E samples of y = sin x over [0.4, 2 pi - 0.4]: an S curve, inflection x = pi at E/2. */
+static void sine_samples(int E, double *q)
 {
-    enum { E = 801 };
-    static double q[2 * E];
     for (int j = 0; j < E; j++) {
         double x = 0.4 + (2.0 * M_PI - 0.8) * j / (E - 1);
         q[2 * j] = x;
         q[2 * j + 1] = sin(x);
     }
+}
+
+/* An S curve: split at the inflection; without splitting or with a wrong split -> EL_EDOM. */
+START_TEST(test_polyline_inflection)
+{
+    enum { E = 801 };
+    static double q[2 * E];
+    sine_samples(E, q);
     el_affine_result r;
     ck_assert_int_eq(el_affine_polyline(E, q, NULL, 0, NULL, 30, NULL, &r), EL_OK);
     ck_assert_uint_eq(r.npieces, 2);
@@ -502,6 +508,127 @@ START_TEST(test_polyline_inflection)
 }
 END_TEST
 
+/* Largest relative curvature jump over the interior joints of a clamped quadratic
+ * B-spline (knots K_1..K_{nknots-2}; flat spans j+1 | j+2 meet at K_j). */
+static double max_joint_jump(const el_bspline *b)
+{
+    double worst = 0.0;
+    for (size_t j = 1; j + 1 < b->nknots; j++) {
+        double kl = kappa_at(b, j + 1, b->knots[j]), kr = kappa_at(b, j + 2, b->knots[j]);
+        worst = fmax(worst, fabs(kl - kr) / fmax(fabs(kl), fabs(kr)));
+    }
+    return worst;
+}
+
+static void end_points(const el_bspline *b, double p0[2], double p1[2])
+{
+    test_deriv(b, 2, b->knots[0], 0, p0);
+    test_deriv(b, b->npoles - 1, b->knots[b->nknots - 1], 0, p1);
+}
+
+/* el_affine_g2_bspline: exact ends, G2 at every joint (curvature measured from both
+ * sides), lambda = sqrt 2 for ends at x_0 / x_m, NULL ends = the clamped uniform spline. */
+START_TEST(test_g2_bspline_exact_ends)
+{
+    unsigned long long st = 11;
+    enum { N = 14 };
+    double kk[N], p[2 * N], v0[2] = {1, 0.1}, v1[2] = {0.6, 0.7};
+    for (int i = 0; i < N; i++) kk[i] = test_uniform(&st, 0.2, 1.2);
+    make_aal(N, kk, v0, v1, p);
+    el_bspline b, u;
+    double q0[2], q1[2];
+    /* ends on the polyline's first / last vertex */
+    ck_assert_int_eq(el_affine_g2_bspline(N, p, p, p + 2 * (N - 1), &b), EL_OK);
+    ck_assert_int_eq(b.degree, 2);
+    ck_assert_uint_eq(b.npoles, N);
+    ck_assert_int_eq(el_bspline_check(&b), EL_OK);
+    end_points(&b, q0, q1);
+    ck_assert_close(q0[0], p[0], 1e-15);
+    ck_assert_close(q0[1], p[1], 1e-15);
+    ck_assert_close(q1[0], p[2 * N - 2], 1e-14);
+    ck_assert_close(q1[1], p[2 * N - 1], 1e-14);
+    ck_assert_close(b.knots[1], sqrt(2.0), 1e-12);
+    ck_assert_close(b.knots[b.nknots - 1] - b.knots[b.nknots - 2], sqrt(2.0), 1e-12);
+    ck_assert_msg(max_joint_jump(&b) <= 1e-9, "G2 jump %g", max_joint_jump(&b));
+    /* every pole but the two next to each end is a polyline vertex */
+    for (size_t i = 2; i + 2 < N; i++) {
+        ck_assert_close(b.poles[2 * i], p[2 * i], 0.0);
+        ck_assert_close(b.poles[2 * i + 1], p[2 * i + 1], 0.0);
+    }
+    el_bspline_free(&b);
+    /* ends elsewhere on the turning side: still exact and G2 */
+    double s0[2] = {p[0] + 0.1 * (p[2] - p[0]), p[1] + 0.1 * (p[3] - p[1])};
+    double s1[2] = {0.5 * (p[2 * N - 4] + p[2 * N - 2]), 0.5 * (p[2 * N - 3] + p[2 * N - 1])};
+    ck_assert_int_eq(el_affine_g2_bspline(N, p, s0, s1, &b), EL_OK);
+    end_points(&b, q0, q1);
+    ck_assert_close(q0[0], s0[0], 1e-15);
+    ck_assert_close(q1[1], s1[1], 1e-14);
+    ck_assert_msg(max_joint_jump(&b) <= 1e-9, "G2 jump %g", max_joint_jump(&b));
+    el_bspline_free(&b);
+    /* NULL ends: the clamped uniform spline (x0+x1)/2 .. (x_{N-2}+x_{N-1})/2 */
+    ck_assert_int_eq(el_affine_g2_bspline(N, p, NULL, NULL, &b), EL_OK);
+    ck_assert_int_eq(el_affine_quadratic_bspline(N, p, 1, &u), EL_OK);
+    ck_assert_uint_eq(b.nknots, u.nknots);
+    for (size_t i = 0; i < 2 * N; i++) ck_assert_close(b.poles[i], u.poles[i], 1e-15);
+    for (size_t i = 0; i < b.nknots; i++) ck_assert_close(b.knots[i], u.knots[i], 1e-15);
+    el_bspline_free(&b);
+    el_bspline_free(&u);
+    /* the smallest polyline, 4 vertices: both end segments meet at m_2 */
+    ck_assert_int_eq(el_affine_g2_bspline(4, p, p, p + 6, &b), EL_OK);
+    ck_assert_uint_eq(b.nknots, 3);
+    ck_assert_msg(max_joint_jump(&b) <= 1e-9, "G2 jump %g", max_joint_jump(&b));
+    end_points(&b, q0, q1);
+    ck_assert_close(q1[0], p[6], 1e-15);
+    el_bspline_free(&b);
+    /* a perturbed (not affine arc-length) polyline is not G2: the check can fail */
+    p[2 * 7 + 1] += 0.05;
+    ck_assert_int_eq(el_affine_g2_bspline(N, p, p, p + 2 * (N - 1), &b), EL_OK);
+    ck_assert_msg(max_joint_jump(&b) > 1e-3, "perturbed polyline judged G2 (%g)", max_joint_jump(&b));
+    el_bspline_free(&b);
+}
+END_TEST
+
+/* §4 + el_affine_g2_bspline on an S curve: one G2 spline per inflection-free piece,
+ * starting and ending exactly on the curve's ends and its inflection, within O(h^2). */
+START_TEST(test_g2_bspline_pieces_of_a_curve)
+{
+    enum { E = 801 };
+    static double q[2 * E];
+    sine_samples(E, q);
+    el_affine_options o;
+    el_affine_options_defaults(&o);
+    o.fit_ends = 1;
+    el_affine_result r;
+    ck_assert_int_eq(el_affine_polyline(E, q, NULL, 0, NULL, 40, &o, &r), EL_OK);
+    ck_assert_uint_eq(r.npieces, 2);
+    size_t ends[3] = {0, (size_t)r.infl_param[0], E - 1};
+    for (size_t p = 0; p < 2; p++) {
+        size_t a = r.piece_start[p], n = r.piece_start[p + 1] - a + 1;
+        el_bspline b;
+        ck_assert_int_eq(el_affine_g2_bspline(n, r.xy + 2 * a, q + 2 * ends[p], q + 2 * ends[p + 1], &b),
+                         EL_OK);
+        double q0[2], q1[2];
+        end_points(&b, q0, q1);
+        ck_assert_close(q0[0], q[2 * ends[p]], 1e-15);
+        ck_assert_close(q0[1], q[2 * ends[p] + 1], 1e-15);
+        ck_assert_close(q1[0], q[2 * ends[p + 1]], 1e-14);
+        ck_assert_close(q1[1], q[2 * ends[p + 1] + 1], 1e-14);
+        ck_assert_msg(max_joint_jump(&b) <= 1e-8, "piece %zu G2 jump %g", p, max_joint_jump(&b));
+        /* close to y = sin x everywhere (20 edges per piece: |sin x - y| ~ 1e-3) */
+        double worst = 0.0;
+        for (size_t s = 2; s < b.npoles; s++)
+            for (int i = 0; i <= 8; i++) {
+                double t = b.knots[s - 2] + (b.knots[s - 1] - b.knots[s - 2]) * i / 8.0, xy[2];
+                test_deriv(&b, s, t, 0, xy);
+                worst = fmax(worst, fabs(sin(xy[0]) - xy[1]));
+            }
+        ck_assert_msg(worst < 5e-3, "piece %zu off the curve by %g", p, worst);
+        el_bspline_free(&b);
+    }
+    el_affine_result_free(&r);
+}
+END_TEST
+
 START_TEST(test_bad_input)
 {
     double xy[8] = {0, 0, 1, 0, 1, 1, 0, 2}, A[4], k[4], L, out[16];
@@ -527,6 +654,14 @@ START_TEST(test_bad_input)
     ck_assert_int_eq(el_affine_curvature(4, line, k), EL_ESINGULAR);
     ck_assert_int_eq(el_affine_polyline(4, line, NULL, 0, NULL, 3, NULL, &r), EL_EDOM);
     el_affine_result_free(NULL);
+    /* el_affine_g2_bspline: too short, NaN, a straight polyline, an end behind its joint */
+    double aal[8] = {0, 0, 1, 0, 1.5, 1, 1.5, 2.5}, bad_end[2] = {5, -3}, nan_end[2] = {NAN, 0};
+    ck_assert_int_eq(el_affine_g2_bspline(3, aal, NULL, NULL, &b), EL_EINVAL);
+    ck_assert_int_eq(el_affine_g2_bspline(4, aal, nan_end, NULL, &b), EL_EINVAL);
+    ck_assert_int_eq(el_affine_g2_bspline(4, aal, NULL, NULL, NULL), EL_EINVAL);
+    ck_assert_int_eq(el_affine_g2_bspline(4, line, line, NULL, &b), EL_ESINGULAR);
+    ck_assert_int_eq(el_affine_g2_bspline(4, aal, bad_end, NULL, &b), EL_EDOM);
+    ck_assert_int_eq(el_affine_g2_bspline(4, aal, NULL, bad_end, &b), EL_EDOM);
 }
 END_TEST
 
@@ -544,6 +679,8 @@ int main(void)
     tcase_add_test(tc, test_parabolic_lengths);
     tcase_add_test(tc, test_polyline_ellipse);
     tcase_add_test(tc, test_polyline_inflection);
+    tcase_add_test(tc, test_g2_bspline_exact_ends);
+    tcase_add_test(tc, test_g2_bspline_pieces_of_a_curve);
     tcase_add_test(tc, test_bad_input);
     suite_add_tcase(s, tc);
     return test_run_suite(s);

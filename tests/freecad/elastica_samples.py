@@ -114,11 +114,11 @@ def circle_sketch(doc, radius=20.0, name="Circle"):
 def write_into_new_sketch(test, feature):
     """Write ``feature``'s curve into a new sketch in its plane (features.write_to_sketch),
     check that it became one B-spline geometry, return the sketch."""
-    from freecad.elastica import features as F
+    from freecad.elastica import geometry as G
     doc = feature.Document
     out = doc.addObject("Sketcher::SketchObject", "Out")
     out.Placement = feature.Plane
-    ids = F.write_to_sketch(feature, out)
+    ids = G.write_to_sketch(feature, out)
     doc.recompute()
     test.assertEqual(len(ids), 1)
     test.assertEqual(out.Geometry[ids[0]].TypeId, "Part::GeomBSplineCurve")

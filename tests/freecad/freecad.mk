@@ -3,7 +3,8 @@
 # - every tests/freecad/test_*.py through `freecadcmd -t <module>` (its exit code and
 #   its unittest summary are both checked: freecadcmd alone exits 0 on a failing script);
 # - the GUI smoke test (tests/freecad/gui_smoke.py) in `freecad` under `xvfb-run -a`,
-#   which writes $(BUILD)/freecad/gui_smoke.png and a result file checked here.
+#   on the demo document examples/demo.py makes headless first ($(BUILD)/freecad/demo/);
+#   it keeps its screenshots ($(BUILD)/freecad/gui_*.png) and a result file checked here.
 # FreeCAD runs with HOME=$(BUILD)/freecad/home, whose Mod folder links to freecad_wb/,
 # so the user's real ~/.local and ~/.config are never touched.
 BUILD     ?= build
@@ -16,12 +17,15 @@ FC_ENV     = HOME=$(FCHOME) LIBELASTICA_PATH=$(CURDIR)/$(BUILD)/libelastica.so \
              QTWEBENGINE_DISABLE_SANDBOX=1 ELASTICA_TEST_OUT=$(CURDIR)/$(FCDIR)
 TIMEOUT   ?= 150
 
-.PHONY: all fc-home fc-tests fc-gui
-all: fc-tests fc-gui
+.PHONY: all fc-home fc-tests fc-gui fc-demo fc-gallery fc-addon
+all: fc-tests fc-addon fc-gui
 
+# a fresh HOME without a Mod folder: `make freecad-install` must make it and link the workbench
 fc-home:
-	@rm -rf $(FCHOME) && mkdir -p $(FCMOD)
-	@ln -sfn $(CURDIR)/freecad_wb $(FCMOD)/elastica
+	@rm -rf $(FCHOME) && mkdir -p $(FCHOME)
+	@$(MAKE) --no-print-directory -f Makefile freecad-install FREECAD_MOD=$(FCMOD) BUILD=$(BUILD) > /dev/null
+	@test "$$(readlink $(FCMOD)/elastica)" = "$(CURDIR)/freecad_wb" || \
+	  { echo "FAILED: make freecad-install did not link $(FCMOD)/elastica"; exit 1; }
 
 fc-tests: fc-home
 	@set -e; for m in $(FC_TESTS); do \
@@ -33,12 +37,38 @@ fc-tests: fc-home
 	  grep -E '^Ran [0-9]+ test' $(FCDIR)/$$m.log; \
 	done
 
-fc-gui: fc-home
+# an Addon Manager install: the repository itself in Mod/ (its package.xml puts freecad_wb/
+# on sys.path, the C sources' libelastica/ folder must not pass for the Python package)
+ADDON_HOME := $(CURDIR)/$(FCDIR)/addon-home
+fc-addon:
+	@echo "== freecadcmd: the workbench installed as an addon (repository in Mod/)"
+	@rm -rf $(ADDON_HOME) && mkdir -p $(ADDON_HOME)/.local/share/FreeCAD/Mod
+	@ln -s $(CURDIR) $(ADDON_HOME)/.local/share/FreeCAD/Mod/Elastica
+	@out=$$(HOME=$(ADDON_HOME) LIBELASTICA_PATH=$(CURDIR)/$(BUILD)/libelastica.so timeout $(TIMEOUT) \
+	  freecadcmd -c "import freecad.elastica as e; p = e.library_problem(); import libelastica as el; \
+	print('ADDON', p or 'OK', el.__file__)" 2>&1 | grep '^ADDON'); \
+	case "$$out" in "ADDON OK $(CURDIR)/python/libelastica/__init__.py") echo "$$out";; \
+	  *) echo "FAILED: addon install: $$out"; exit 1;; esac
+
+fc-demo: fc-home
+	@rc=0; env $(FC_ENV) ELASTICA_DEMO_OUT=$(CURDIR)/$(FCDIR)/demo timeout $(TIMEOUT) \
+	  freecadcmd $(CURDIR)/examples/demo.py > $(FCDIR)/demo.log 2>&1 || rc=$$?; \
+	if [ $$rc -ne 0 ]; then tail -n 30 $(FCDIR)/demo.log; echo "FAILED: the demo document"; exit 1; fi
+
+fc-gui: fc-home fc-demo
 	@echo "== freecad (GUI, xvfb-run -a) tests/freecad/gui_smoke.py"
-	@rm -f $(FCDIR)/gui_smoke.result $(FCDIR)/gui_smoke.png
+	@rm -f $(FCDIR)/gui_smoke.result $(FCDIR)/gui_*.png
 	@rc=0; env $(FC_ENV) timeout $(TIMEOUT) xvfb-run -a -s "-screen 0 1280x1024x24" \
 	  freecad $(CURDIR)/tests/freecad/gui_smoke.py > $(FCDIR)/gui_smoke.log 2>&1 || rc=$$?; \
 	if [ $$rc -ne 0 ] || [ "$$(head -n 1 $(FCDIR)/gui_smoke.result 2>/dev/null)" != "PASS" ]; then \
 	  tail -n 40 $(FCDIR)/gui_smoke.log; cat $(FCDIR)/gui_smoke.result 2>/dev/null; \
 	  echo "FAILED: GUI smoke test (exit $$rc, log $(FCDIR)/gui_smoke.log)"; exit 1; fi
 	@tail -n +2 $(FCDIR)/gui_smoke.result
+
+# the README's screenshot of the workbench (make gallery): the demo document in FreeCAD
+fc-gallery: fc-home fc-demo
+	@rc=0; env $(FC_ENV) ELASTICA_GALLERY=$(CURDIR)/docs/gallery timeout $(TIMEOUT) \
+	  xvfb-run -a -s "-screen 0 1280x1024x24" freecad $(CURDIR)/tests/freecad/gallery.py \
+	  > $(FCDIR)/gallery.log 2>&1 || rc=$$?; \
+	if [ $$rc -ne 0 ]; then tail -n 30 $(FCDIR)/gallery.log; echo "FAILED: the FreeCAD screenshot"; exit 1; fi
+	@echo "docs/gallery/freecad_workbench.png"

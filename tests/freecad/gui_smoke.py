@@ -1,18 +1,31 @@
 """GUI smoke test, run as `xvfb-run -a freecad tests/freecad/gui_smoke.py` by
-tests/freecad/freecad.mk: the Elastica workbench activates, each command runs
-from the selection on a sample document (task panels opened and accepted), the
-preference page loads and saves, and a screenshot of the 3D view is saved under
-$ELASTICA_TEST_OUT (build/freecad/) and checked to be non-blank. The outcome goes
+tests/freecad/freecad.mk: the Elastica workbench used as a user would.
+
+- the demo document (made headless by examples/demo.py) opens with the features'
+  view providers, icons and colours named in their labels; double-click opens a panel;
+- each command runs from a selection and its task panel is driven like a user does
+  it: mouse clicks on spin-box arrows, typing, mode switches, picking a solution,
+  OK, and Cancel (which must revert an edited feature and remove a new one);
+- panels fit the 264 px Combo View, every field has a tooltip, fields that do not
+  apply are disabled;
+- the preference page loads, saves and has its icon; commands are recorded.
+
+Screenshots (whole window, 3D view included) stay in $ELASTICA_TEST_OUT
+(build/freecad/): gui_demo.png, gui_blend_panel.png, gui_fit_panel.png,
+gui_ellblend_panel.png, gui_g2quad_panel.png, gui_comb_panel.png. The outcome goes
 to gui_smoke.result (first line PASS or FAIL); FreeCAD is then ended with os._exit
-because its exit status says nothing about a script."""
+because its exit status says nothing about a script. Only APIs present in FreeCAD
+0.20 and 1.0 are used (PySide through FreeCAD's shim)."""
 import os
 import sys
+import time
 import traceback
 
 import FreeCAD as App
 import FreeCADGui as Gui
 
 OUT = os.environ.get("ELASTICA_TEST_OUT", os.getcwd())
+DEMO = os.environ.get("ELASTICA_TEST_DEMO", os.path.join(OUT, "demo", "demo.FCStd"))
 HERE = os.path.dirname(os.path.abspath(__file__)) if "__file__" in globals() else \
     os.path.join(os.getcwd(), "tests", "freecad")
 sys.path.insert(0, HERE)
@@ -31,27 +44,94 @@ def pump(n=5):
         QtGui.QApplication.processEvents()
 
 
-def nonblank(path):
-    """(fraction of pixels that are drawn geometry, number of distinct drawn colours):
-    a pixel is drawn when it differs clearly from its row's most common colour (the
-    background is a vertical gradient)."""
+def wait(ms=400):
+    """Let time pass with the event loop running (the panels' delayed recompute)."""
+    from PySide import QtGui
+    end = time.time() + ms / 1000.0
+    while time.time() < end:
+        QtGui.QApplication.processEvents()
+        time.sleep(0.01)
+
+
+def screenshot(name):
+    """The whole main window as the screen shows it (3D view included)."""
+    from PySide import QtGui
+    pump(20)
+    path = os.path.join(OUT, name)
+    mw = Gui.getMainWindow()
+    QtGui.QApplication.primaryScreen().grabWindow(mw.winId()).save(path)
+    return path
+
+
+def drawn(path, region=None):
+    """(fraction of pixels that are drawn geometry, number of distinct drawn colours)
+    in the image (or its region (x0, y0, x1, y1)): a pixel is drawn when it differs
+    clearly from its row's most common colour (the background is a vertical gradient)."""
     from collections import Counter
     from PySide import QtGui
     img = QtGui.QImage(path)
     if img.isNull():
         return 0.0, 0
-    drawn, total, colours = 0, 0, set()
-    for y in range(0, img.height(), 2):
-        row = [img.pixel(x, y) for x in range(0, img.width(), 2)]
+    x0, y0, x1, y1 = region or (0, 0, img.width(), img.height())
+    n, total, colours = 0, 0, Counter()
+    for y in range(y0, y1, 2):
+        row = [img.pixel(x, y) for x in range(x0, x1, 2)]
         bg = Counter(row).most_common(1)[0][0]
         br, bgc, bb = (bg >> 16) & 255, (bg >> 8) & 255, bg & 255
         for p in row:
             total += 1
             d = abs(((p >> 16) & 255) - br) + abs(((p >> 8) & 255) - bgc) + abs((p & 255) - bb)
             if d > 60:
-                drawn += 1
-                colours.add(p & 0xF0F0F0)
-    return drawn / total, len(colours)
+                n += 1
+                colours[p & 0xE0E0E0] += 1
+    # colours covering a few pixels at least (not antialiasing mixtures)
+    return n / max(total, 1), sum(1 for c in colours.values() if c >= 8)
+
+
+def view_region():
+    """The 3D view's rectangle in window coordinates."""
+    from PySide import QtGui
+    mw = Gui.getMainWindow()
+    mdi = mw.findChild(QtGui.QMdiArea)
+    top_left = mdi.mapTo(mw, mdi.rect().topLeft())
+    return (top_left.x(), top_left.y(), top_left.x() + mdi.width(), top_left.y() + mdi.height())
+
+
+def click_arrow(box, up=True):
+    """A mouse click on a spin box's up or down arrow (where the style draws it)."""
+    from PySide import QtCore, QtGui
+    opt = QtGui.QStyleOptionSpinBox()
+    box.initStyleOption(opt)
+    sub = QtGui.QStyle.SC_SpinBoxUp if up else QtGui.QStyle.SC_SpinBoxDown
+    pos = box.style().subControlRect(QtGui.QStyle.CC_SpinBox, opt, sub, box).center()
+    for kind in (QtCore.QEvent.MouseButtonPress, QtCore.QEvent.MouseButtonRelease):
+        ev = QtGui.QMouseEvent(kind, QtCore.QPointF(pos), QtCore.Qt.LeftButton,
+                               QtCore.Qt.LeftButton, QtCore.Qt.NoModifier)
+        QtGui.QApplication.sendEvent(box, ev)
+    pump()
+
+
+def type_into(box, text):
+    """Select a spin box's text and type ``text`` key by key."""
+    from PySide import QtCore, QtGui
+    box.setFocus()
+    box.selectAll()
+    for ch in text:
+        for kind in (QtCore.QEvent.KeyPress, QtCore.QEvent.KeyRelease):
+            QtGui.QApplication.sendEvent(box, QtGui.QKeyEvent(kind, 0, QtCore.Qt.NoModifier, ch))
+    pump()
+
+
+def fits_combo_view(panel, what):
+    """Every task box fits a 264 px Combo View; every input has a tooltip."""
+    from PySide import QtGui
+    widest = max(f.minimumSizeHint().width() for f in panel.form)
+    check(widest <= 240, f"{what} panel fits the Combo View (widest box {widest} px)")
+    kinds = (QtGui.QAbstractSpinBox, QtGui.QComboBox, QtGui.QCheckBox, QtGui.QPushButton,
+             QtGui.QListWidget)
+    bare = [type(w).__name__ for f in panel.form for w in f.findChildren(QtGui.QWidget)
+            if isinstance(w, kinds) and not w.toolTip()]
+    check(not bare, f"{what} panel: every field has a tooltip (missing: {bare})")
 
 
 def run_on(doc, command, picks):
@@ -71,147 +151,315 @@ def run_on(doc, command, picks):
 
 def open_panel(doc, command, picks, what):
     """run_on, then check that one feature was made and its panel opened; the panel."""
-    from freecad.elastica import taskpanels as T
+    from freecad.elastica import commands as C, taskpanels as T
+    del C.MESSAGES[:]
     n0 = run_on(doc, command, picks)
-    check(len(doc.Objects) == n0 + 1 and T.CURRENT, f"{what} creates a feature and opens its panel")
+    check(len(doc.Objects) == n0 + 1 and T.CURRENT,
+          f"{what} creates a feature and opens its panel {C.MESSAGES}")
     return T.CURRENT[0]
+
+
+def double_click(obj):
+    """What a double-click in the tree does; the panel that opened."""
+    from freecad.elastica import taskpanels as T
+    obj.ViewObject.Proxy.doubleClicked(obj.ViewObject)
+    pump()
+    return T.CURRENT[0] if T.CURRENT else None
+
+
+# ------------------------------------------------------------------ the demo
+
+def demo_document():
+    from freecad.elastica import viewproviders as V
+    check(os.path.isfile(DEMO), f"demo document {DEMO} exists (made headless)")
+    doc = App.openDocument(DEMO)
+    pump(20)
+    feats = [o for o in doc.Objects if getattr(getattr(o, "Proxy", None), "kind", "")]
+    check(len(feats) >= 5 and all(isinstance(o.ViewObject.Proxy, V.ViewProvider) for o in feats),
+          f"demo: all {len(feats)} Elastica features got their view providers")
+    names = [V.colour_name(o) for o in feats if o.Proxy.kind != "Comb"]
+    check(all(names) and len(set(names)) == len(names),
+          f"demo: each fit / curve has a colour of its own ({names})")
+    check(all(V.colour_name(o) in o.Label for o in feats if o.Proxy.kind != "Comb"),
+          "demo: the labels name the colours (legend in the tree)")
+    comb = next(o for o in feats if o.Proxy.kind == "Comb")
+    check(comb.ViewObject.LineColor[1] > comb.Source[0].ViewObject.LineColor[1],
+          "demo: the comb is a lighter shade of its fit's colour")
+    pts = next(o for o in doc.Objects if o.isDerivedFrom("Points::Feature"))
+    sketch = next(o for o in doc.Objects if o.isDerivedFrom("Sketcher::SketchObject"))
+    check(pts.ViewObject.Visibility and pts.ViewObject.PointSize >= 4,
+          "demo: the scan points are visible as points")
+    check(sketch.ViewObject.Visibility, "demo: the keyline B-spline sketch is visible")
+    fit = next(o for o in feats if o.Proxy.kind == "Fit" and o.ViewObject.Visibility)
+    check(len(fit.DataPoints) > 50 and fit.ViewObject.ShowData,
+          f"demo: the fit shows its {len(fit.DataPoints)} fitted points")
+    view = Gui.ActiveDocument.ActiveView
+    view.setCameraOrientation(fit.Plane.Rotation)
+    view.fitAll()
+    path = screenshot("gui_demo.png")
+    frac, ncol = drawn(path, view_region())
+    check(frac > 0.005 and ncol >= 4, f"demo screenshot {path}: {100 * frac:.2f}% drawn, "
+                                      f"{ncol} colours")
+    panel = double_click(fit)
+    check(panel is not None and panel.obj is fit, "demo: double-click opens the fit's panel")
+    rms = fit.Rms
+    panel.reject()
+    pump()
+    check(fit.Rms == rms and fit.Name in [o.Name for o in doc.Objects],
+          "demo: Cancel leaves the fit as it was")
+    App.closeDocument(doc.Name)
+
+
+# ------------------------------------------------------------------ blend
+
+def blend_panel(doc, S):
+    from freecad.elastica import taskpanels as T
+    sk = S.two_lines_sketch(doc)
+    doc.recompute()
+    Gui.SendMsgToActiveView("ViewFit")
+    panel = open_panel(doc, "Elastica_Blend", [(sk, "Edge1"), (sk, "Edge2")], "Elastic blend")
+    b = panel.obj
+    fits_combo_view(panel, "blend")
+    check(b.Mode == "tension" and b.Tension == 0.0 and b.Solution == 0 and not
+          b.Status.startswith("error"), "blend default: the free batten (tension 0)")
+    check(list(b.Energies) == sorted(b.Energies) and panel.list.count() == len(b.Lengths) >= 1,
+          f"blend panel lists {panel.list.count()} solutions, lowest energy first")
+    check(all("inflection" in d and "loop" in d and "curvature" in d and "mm" in d
+              for d in b.Descriptions), "blend solutions described (length, energy, "
+                                        "inflections, loops, max curvature)")
+    check(not panel.length.isEnabled() and panel.tension.isEnabled() and
+          abs(panel.length.value() - b.Lengths[0]) < 1e-3 * b.Lengths[0],
+          "blend, tension mode: length disabled, showing the solution's length")
+    check(b.Poles <= 12, f"blend B-spline has few poles ({b.Poles})")
+    click_arrow(panel.tension, up=True)
+    wait()
+    check(b.Tension > 0 and b.Solution == 0 and panel.list.count() == len(b.Lengths),
+          f"blend: an arrow click raises the tension to {b.Tension:g} and re-solves")
+    if panel.list.count() > 1:
+        panel.list.setCurrentRow(1)            # the user picks the second solution
+        pump()
+        check(b.Solution == 1, "blend: picking a solution uses it")
+        click_arrow(panel.tension, up=True)
+        wait()
+        check(b.Solution == 1 or len(b.Lengths) < 2, "blend: the user's pick survives an edit")
+    panel.picked = None
+    panel.mode.setCurrentIndex(0)               # solve for a length
+    wait()
+    check(b.Mode == "length" and panel.length.isEnabled() and not panel.tension.isEnabled(),
+          "blend mode switch: length enabled, tension disabled")
+    type_into(panel.length, "20")
+    wait()
+    check(b.Status.startswith("error") and "above" in b.Status and "error" in panel.result.text()
+          and b.ViewObject.DrawStyle == "Dashed" and panel.list.count() == 0,
+          f"blend: a too short length says which are possible ({b.Status})")
+    check(not panel.accept() and T.CURRENT, "blend panel stays open on an error")
+    type_into(panel.length, "70")
+    wait()
+    check(abs(b.Shape.Length - 70.0) < 1e-2 and b.ViewObject.DrawStyle == "Solid",
+          f"blend typed length 70 -> {b.Shape.Length:.4f}")
+    screenshot("gui_blend_panel.png")
+    panel.into_sketch.setChecked(True)
+    ng = len(sk.Geometry)
+    check(panel.accept(), "blend panel accepts")
+    pump()
+    check(b.Name in [o.Name for o in doc.Objects] and len(sk.Geometry) == ng + 1,
+          "blend OK: the feature stays, a copy goes into the sketch")
+    # Cancel reverts an edit of an existing feature
+    before = (b.Mode, b.Length, b.Tension, round(b.Shape.Length, 9))
+    panel = double_click(b)
+    panel.mode.setCurrentIndex(1)
+    click_arrow(panel.tension, up=True)
+    wait()
+    check(round(b.Shape.Length, 9) != before[3], "blend edit previews")
+    panel.reject()
+    pump()
+    check((b.Mode, b.Length, b.Tension, round(b.Shape.Length, 9)) == before,
+          "blend Cancel reverts the edits")
+    # the feature stays parametric: moving an edge re-solves it
+    sk.movePoint(1, 1, App.Vector(85, 40, 0))
+    doc.recompute()
+    check(not b.Status.startswith("error") and abs(b.Shape.Length - 70.0) < 1e-2,
+          "blend re-solves when its edge moves")
+    # a new blend cancelled: gone
+    sk2 = S.two_lines_sketch(doc, "Lines2", App.Placement(App.Vector(0, 0, -30), App.Rotation()))
+    doc.recompute()
+    names = [o.Name for o in doc.Objects]
+    open_panel(doc, "Elastica_Blend", [(sk2, "Edge1"), (sk2, "Edge2")], "Second blend")
+    T.CURRENT[0].reject()
+    pump()
+    check([o.Name for o in doc.Objects] == names, "Cancel removes a new feature")
+    return b
+
+
+# ------------------------------------------------------------------ fit
+
+def fit_panel(doc, S):
+    from freecad.elastica import fit as Fi
+    from freecad.elastica import taskpanels as T
+    xy, _ = S.keyline_xy(30)
+    ksk = S.bspline_sketch(doc, xy)
+    panel = open_panel(doc, "Elastica_Fit", [(ksk, "Edge1")], "Fit elastica")
+    f = panel.obj
+    fits_combo_view(panel, "fit")
+    check("rms" in panel.result.text() and "k =" in panel.result.text() and "-1" not in
+          panel.result.text(), "fit panel shows rms, max error, k, the B-spline (no '-1 mm')")
+    check(panel.model.currentText().startswith("Discrete elastica"), "fit: human model names")
+    check(not panel.degree.isEnabled() and not panel.tol.isEnabled(),
+          "fit, discrete model: B-spline degree and tolerance disabled")
+    check(panel.pin_start.isEnabled() and panel.pin_end.isEnabled() == Fi.has_constraints(),
+          "fit: pin end needs the library's constraints")
+    panel.model.setCurrentIndex(1)
+    wait()
+    check(f.Model == "smooth" and panel.degree.isEnabled() and "converged" in f.Status,
+          f"fit panel: smooth model ({f.Status})")
+    t0 = f.Tolerance
+    click_arrow(panel.tol, up=True)
+    check(abs(f.Tolerance - 10 * t0) < 1e-12 * t0 and panel.tol.text().startswith(f"{10 * t0:g}"),
+          f"fit: tolerance arrow steps a decade ({t0:g} -> {panel.tol.text()})")
+    click_arrow(panel.tol, up=False)
+    click_arrow(panel.tol, up=False)
+    wait()
+    check(abs(f.Tolerance - t0 / 10) < 1e-12 * t0 and "error" not in f.Status,
+          f"fit: tolerance {f.Tolerance:g} applied")
+    type_into(panel.step, "2")
+    wait()
+    panel.split.setChecked(True)
+    wait()
+    check(f.ResampleStep == 2.0 and len(f.Shape.Edges) == 2 and len(f.K) == 2 and
+          not panel.pin_start.isEnabled(), "fit panel: keyline split into two elasticae, "
+                                           "pinning disabled")
+    check(len(f.DataPoints) == len(f.FootPoints) > 20, "fit: fitted points and their feet kept")
+    vp = f.ViewObject.Proxy
+    check(vp.overlay_counts() == (len(f.DataPoints), 0), f"fit: markers drawn {vp.overlay_counts()}")
+    panel.show_res.setChecked(True)
+    check(f.ViewObject.ShowResiduals and vp.overlay_counts() == (len(f.DataPoints),) * 2,
+          "fit: residual segments drawn")
+    panel.show_data.setChecked(False)
+    check(vp.overlay_counts()[0] == 0, "fit: markers hidden on request")
+    panel.show_data.setChecked(True)
+    type_into(panel.step, "5000")               # longer than the curve: bad input
+    wait()
+    check("error" in panel.result.text() and not panel.accept() and T.CURRENT,
+          "fit panel shows the error and stays open")
+    type_into(panel.step, "2")
+    wait()
+    check("error" not in panel.result.text(), "fit panel recovers")
+    screenshot("gui_fit_panel.png")
+    panel.sketch.setCurrentIndex(panel.sketch.count() - 1)   # new sketch
+    check(panel.accept(), "fit panel accepts")
+    pump()
+    check(any(o.Name.startswith("ElasticaSketch") for o in doc.Objects),
+          "fit B-spline copied into a new sketch")
+    before = (f.Model, f.SplitAtInflection, round(f.Rms, 12))
+    panel = double_click(f)
+    panel.model.setCurrentIndex(0)
+    panel.split.setChecked(False)
+    wait()
+    panel.reject()
+    pump()
+    check((f.Model, f.SplitAtInflection, round(f.Rms, 12)) == before, "fit Cancel reverts")
+    return ksk
+
+
+# ------------------------------------------------------------------ the others
+
+def ellblend_panel(doc, S):
+    psk = S.points_sketch(doc, [(0, -60), (20, -25), (55, -20), (80, -55)], "FourPoints")
+    panel = open_panel(doc, "Elastica_EllipticBlend", [(psk, "")], "Elliptic blend curve")
+    e = panel.obj
+    fits_combo_view(panel, "elliptic blend")
+    check(e.Status == "ok" and "within" in panel.result.text(),
+          f"elliptic blend panel shows the B-spline deviation ({e.Status})")
+    check(not panel.d.isEnabled(), "elliptic blend through the points: d disabled")
+    l0 = e.Shape.Length
+    click_arrow(panel.k, up=True)
+    wait()
+    check(abs(e.K - 0.55) < 1e-12 and e.Status == "ok" and abs(e.Shape.Length - l0) > 1e-3,
+          "elliptic blend: an arrow click on k previews k = 0.55")
+    panel.mode.setCurrentIndex(1)
+    wait()
+    check(e.Mode == "control" and e.Status == "ok" and panel.d.isEnabled(),
+          "elliptic blend panel: control points, d enabled")
+    screenshot("gui_ellblend_panel.png")
+    panel.sketch.setCurrentIndex(panel.sketch.count() - 1)
+    n0 = len(doc.Objects)
+    check(panel.accept(), "elliptic blend panel accepts")
+    pump()
+    check(len(doc.Objects) == n0 + 1 and len(doc.Objects[-1].Geometry) == 1,
+          "elliptic blend B-spline copied into a new sketch")
+
+
+def g2quad_panel(doc, ksk):
+    panel = open_panel(doc, "Elastica_G2Quad", [(ksk, "Edge1")], "G2 quadratic B-spline")
+    q = panel.obj
+    fits_combo_view(panel, "G2 quadratic")
+    check(q.Status == "ok" and q.Pieces == 2 and q.CurvatureJump < 1e-9 and "G2" in
+          panel.result.text(), f"G2 quadratic: {q.Pieces} pieces, jump {q.CurvatureJump:.1g}")
+    p0 = q.Poles
+    click_arrow(panel.edges, up=True)
+    wait()
+    check(q.Edges == 25 and q.Poles != p0 and q.Status == "ok", "G2 quadratic: Edges arrow")
+    check(q.ViewObject.Proxy.overlay_counts() == (26, 25), "G2 quadratic: its polyline drawn")
+    e = ksk.Shape.Edges[0]
+    ends = [e.valueAt(e.FirstParameter), e.valueAt(e.LastParameter)]
+    mine = [v.Point for v in q.Shape.Vertexes]
+    check(all(min((a - b).Length for b in mine) < 1e-9 for a in ends),
+          "G2 quadratic ends exactly on the source's ends")
+    screenshot("gui_g2quad_panel.png")
+    check(panel.accept(), "G2 quadratic panel accepts")
+
+
+def comb_panel(doc, blend):
+    n0 = run_on(doc, "Elastica_Comb", [(blend, "")])
+    comb = doc.Objects[-1]
+    check(len(doc.Objects) == n0 + 1 and comb.Status == "ok", "Curvature comb creates a comb")
+    panel = double_click(comb)
+    fits_combo_view(panel, "comb")
+    s0, e0 = comb.Samples, len(comb.Shape.Edges)
+    click_arrow(panel.samples, up=True)
+    wait()
+    check(comb.Samples == s0 + 1 and len(comb.Shape.Edges) > e0, "comb: Teeth arrow adds a tooth")
+    screenshot("gui_comb_panel.png")
+    panel.reject()
+    pump()
+    check(comb.Samples == s0 and len(comb.Shape.Edges) == e0, "comb Cancel reverts")
 
 
 def run():
     import elastica_samples as S
+    Gui.getMainWindow().showMaximized()
     Gui.activateWorkbench("ElasticaWorkbench")
     pump()
     check(Gui.activeWorkbench().name() == "ElasticaWorkbench", "workbench activates")
     cmds = Gui.listCommands()
     for c in ("Elastica_Fit", "Elastica_FitCsv", "Elastica_Blend", "Elastica_EllipticBlend",
-              "Elastica_Comb"):
+              "Elastica_G2Quad", "Elastica_Comb"):
         check(c in cmds, f"command {c} registered")
-    from freecad.elastica import commands as C, taskpanels as T, preferences as P
+    from freecad.elastica import commands as C, preferences as P
+    demo_document()
 
     doc = S.new_doc("ElasticaSmoke")
-    lines_sk = S.two_lines_sketch(doc)
-    doc.recompute()
-    Gui.SendMsgToActiveView("ViewFit")
-
-    # Elastic blend: select two edges, run, accept the panel
-    panel = open_panel(doc, "Elastica_Blend", [(lines_sk, "Edge1"), (lines_sk, "Edge2")],
-                       "Elastic blend")
-    blend = panel.obj
-    check(panel.list.count() == len(blend.Lengths) >= 1, "blend panel lists the solutions")
-    # preview: switching to the other end of the second edge recomputes the blend
-    l0 = blend.Shape.Length
-    panel.end2.setChecked(not blend.AtEnd2)
-    check(abs(blend.Shape.Length - l0) > 1.0 and panel.list.count() == len(blend.Lengths),
-          "blend panel previews another end")
-    panel.end2.setChecked(not panel.end2.isChecked())
-    panel.value.setValue(70.0)
-    panel.value.editingFinished.emit()
-    check(abs(blend.Shape.Length - 70.0) < 1e-3, f"blend panel length 70 -> {blend.Shape.Length:.4f}")
-    for row in range(panel.list.count()):
-        panel.list.setCurrentRow(row)
-        check(blend.Solution == row
-              and blend.Status == f"solution {row + 1} of {panel.list.count()}",
-              f"blend panel previews solution {row + 1}")
-    panel.list.setCurrentRow(0)
-    panel.into_sketch.setChecked(False)
-    check(panel.accept(), "blend panel accepts")
-    pump()
-    check(not blend.Status.startswith("error"), f"blend status {blend.Status}")
-    check(blend.SketchGeometry1 == 0 and blend.SketchGeometry2 == 1, "blend keeps geometry indices")
-
-    # Curvature comb of the blend
-    n0 = run_on(doc, "Elastica_Comb", [(blend, "")])
-    comb = doc.Objects[-1]
-    check(len(doc.Objects) == n0 + 1 and comb.Status == "ok", "Curvature comb creates a comb")
-
-    # a second blend written into the sketch with tangency (the feature is then removed)
-    ng, nc = len(lines_sk.Geometry), lines_sk.ConstraintCount
-    run_on(doc, "Elastica_Blend", [(lines_sk, "Edge1"), (lines_sk, "Edge2")])
-    T.CURRENT[0].into_sketch.setChecked(True)
-    check(T.CURRENT[0].accept(), "blend into sketch accepts")
-    doc.recompute()
-    check(len(lines_sk.Geometry) == ng + 1 and lines_sk.ConstraintCount == nc + 2,
-          "blend written into the sketch with two tangency constraints")
-    check(not blend.Status.startswith("error"), f"first blend unaffected: {blend.Status}")
-
-    # Fit elastica: a sketch B-spline through a keyline, panel options, B-spline into a new sketch
-    xy, _ = S.keyline_xy(30)
-    ksk = S.bspline_sketch(doc, xy)
-    panel = open_panel(doc, "Elastica_Fit", [(ksk, "Edge1")], "Fit elastica")
-    fit = panel.obj
-    check("rms" in panel.result.text() and "k =" in panel.result.text(),
-          "fit panel shows rms, max error, k, status")
-    panel.model.setCurrentIndex(1)
-    check(fit.Model == "smooth" and fit.Status == "converged",
-          f"fit panel: smooth model {fit.Status}")
-    panel.step.setValue(2.0)
-    panel.step.editingFinished.emit()
-    panel.split.setChecked(True)
-    check(fit.ResampleStep == 2.0 and len(fit.Shape.Edges) == 2 and len(fit.K) == 2,
-          "fit panel: keyline split into two elasticae")
-    panel.step.setValue(5000.0)                 # longer than the curve: bad input
-    panel.step.editingFinished.emit()
-    check("error:" in panel.result.text() and not panel.accept() and T.CURRENT,
-          "fit panel shows the error and stays open")
-    panel.step.setValue(2.0)
-    panel.step.editingFinished.emit()
-    check("error:" not in panel.result.text(), "fit panel recovers")
-    panel.sketch.setCurrentIndex(panel.sketch.count() - 1)   # new sketch
-    check(panel.accept(), "fit panel accepts")
-    pump()
-    check(not fit.Status.startswith("error"), f"fit status {fit.Status}")
-    check(any(o.Name.startswith("ElasticaSketch") for o in doc.Objects),
-          "fit B-spline written into a new sketch")
-
-    # Elliptic blend curve: a sketch of four points, panel options, B-spline into a new sketch
-    psk = S.points_sketch(doc, [(0, -60), (20, -25), (55, -20), (80, -55)], "FourPoints")
-    panel = open_panel(doc, "Elastica_EllipticBlend", [(psk, "")], "Elliptic blend curve")
-    ell = panel.obj
-    check(ell.Status == "ok" and "deviation" in panel.result.text(),
-          f"elliptic blend panel shows the B-spline deviation ({ell.Status})")
-    l0 = ell.Shape.Length
-    panel.k.setValue(0.9)
-    panel.k.editingFinished.emit()
-    check(ell.K == 0.9 and ell.Status == "ok" and abs(ell.Shape.Length - l0) > 1e-3,
-          "elliptic blend panel previews another k")
-    panel.mode.setCurrentIndex(1)
-    check(ell.Mode == "control" and ell.Status == "ok", "elliptic blend panel: control points")
-    panel.conv.setCurrentIndex(1)
-    panel.k.setValue(0.3)
-    panel.k.editingFinished.emit()
-    check(ell.KConvention == "parameter" and ell.Status == "ok", "elliptic blend panel: m = k^2")
-    panel.sketch.setCurrentIndex(panel.sketch.count() - 1)   # new sketch
-    n0 = len(doc.Objects)
-    check(panel.accept(), "elliptic blend panel accepts")
-    pump()
-    check(len(doc.Objects) == n0 + 1 and doc.Objects[-1].isDerivedFrom("Sketcher::SketchObject")
-          and len(doc.Objects[-1].Geometry) == 1, "elliptic blend B-spline written into a new sketch")
+    blend = blend_panel(doc, S)
+    ksk = fit_panel(doc, S)
+    ellblend_panel(doc, S)
+    g2quad_panel(doc, ksk)
+    comb_panel(doc, blend)
 
     # bad input through a command: empty selection, document unchanged
     Gui.Selection.clearSelection()
     before = S.doc_state(doc)
     del C.MESSAGES[:]
-    Gui.runCommand("Elastica_Fit")
-    Gui.runCommand("Elastica_Blend")
-    Gui.runCommand("Elastica_Comb")
-    Gui.runCommand("Elastica_EllipticBlend")
+    for c in ("Elastica_Fit", "Elastica_Blend", "Elastica_Comb", "Elastica_EllipticBlend",
+              "Elastica_G2Quad"):
+        Gui.runCommand(c)
     pump()
-    check(S.doc_state(doc) == before and len(C.MESSAGES) == 4,
+    check(S.doc_state(doc) == before and len(C.MESSAGES) == 5,
           "empty selection: messages, document unchanged")
 
-    # Cancel removes a fresh feature
-    sk2 = S.two_lines_sketch(doc, "Lines2", App.Placement(App.Vector(0, 0, -30), App.Rotation()))
-    Gui.Selection.addSelection(doc.Name, sk2.Name, "Edge1")
-    Gui.Selection.addSelection(doc.Name, sk2.Name, "Edge2")
-    before = [o.Name for o in doc.Objects]
-    Gui.runCommand("Elastica_Blend")
-    pump()
-    T.CURRENT[0].reject()
-    pump()
-    check([o.Name for o in doc.Objects] == before, "Cancel removes the new feature")
-
-    # the preference page
+    # the preference page, and its icon
     from freecad.elastica import defaults
+    icon = Gui.getIcon("preferences-elastica")
+    check(icon is not None and not icon.isNull(), "preference page icon found")
     page = P.PreferencePage()
     page.loadSettings()
     old = defaults()
@@ -229,28 +477,28 @@ def run():
     # the commands were recorded (Gui.doCommandGui): they show in the Python console
     from PySide import QtGui
     consoles = [w for w in Gui.getMainWindow().findChildren(QtGui.QPlainTextEdit)
-                if "make_blend" in w.toPlainText()]
+                if "elastica_blend.make" in w.toPlainText()]
     check(bool(consoles), "commands recorded in the Python console")
 
-    # screenshot of the 3D view
+    # the whole session's 3D view is drawn
     Gui.Selection.clearSelection()
     view = Gui.ActiveDocument.ActiveView
     view.viewIsometric()
     view.fitAll()
+    screenshot("gui_smoke.png")
     pump(20)
-    path = os.path.join(OUT, "gui_smoke.png")
+    path = os.path.join(OUT, "gui_view.png")            # the 3D view alone
     view.saveImage(path, 800, 600, "Current")
-    frac, ncol = nonblank(path)
-    # control: the same check calls an empty document's view blank
+    frac, ncol = drawn(path)
     empty = App.newDocument("ElasticaEmpty")
     pump(10)
-    blank = os.path.join(OUT, "gui_smoke_empty.png")
+    blank = os.path.join(OUT, "gui_view_empty.png")
     Gui.getDocument(empty.Name).ActiveView.saveImage(blank, 800, 600, "Current")
-    efrac, _ = nonblank(blank)
-    check(efrac < 0.0002, f"an empty view is judged blank ({100 * efrac:.3f}% drawn)")
+    efrac, _ = drawn(blank)
+    check(efrac < 0.002, f"an empty view is judged blank ({100 * efrac:.3f}% drawn)")
     App.closeDocument(empty.Name)
-    check(os.path.isfile(path) and frac > 0.001 and ncol >= 2,
-          f"screenshot {path} non-blank ({100 * frac:.2f}% drawn, {ncol} colours)")
+    check(frac > 0.003 and ncol >= 3, f"screenshot {path}: {100 * frac:.2f}% drawn, "
+                                      f"{ncol} colours")
 
 
 def main():

@@ -9,7 +9,9 @@ import FreeCAD as App
 
 import elastica_samples as S
 from freecad.elastica import commands as C
-from freecad.elastica import features as F
+from freecad.elastica import blend as Bl
+from freecad.elastica import comb as Co
+from freecad.elastica import geometry as G
 
 
 def _edge(obj, name):
@@ -29,7 +31,7 @@ class BlendTest(unittest.TestCase):
         entering along it: the exact elastica (from the library) to rounding error,
         its B-spline (the shape) within the tolerance at the ends."""
         import numpy as np
-        a, b = _edge(self.sk, "Edge1"), _edge(self.sk, "Edge2")
+        a, b = G.link_edge(self.sk, "", 0), G.link_edge(self.sk, "", 1)   # the two lines
         pa, da = a.valueAt(a.LastParameter), a.tangentAt(a.LastParameter)
         pb, db = b.valueAt(b.FirstParameter), b.tangentAt(b.FirstParameter)
         curves, plc = blend.Proxy.plane_curves(blend)
@@ -59,7 +61,7 @@ class BlendTest(unittest.TestCase):
         self.assertGreater(tf[1].normalize().dot(db), 1 - 1e-5)
 
     def test_blend_joins_ends_tangentially(self):
-        b = F.make_blend(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"))
+        b = Bl.make(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"))
         self.doc.recompute()
         self.assertFalse(b.Status.startswith("error"), b.Status)
         self.assertTrue(b.AtEnd1)
@@ -69,7 +71,7 @@ class BlendTest(unittest.TestCase):
         self._check_g1(b)
 
     def test_blend_by_length_has_that_length(self):
-        b = F.make_blend(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"), Length=60.0)
+        b = Bl.make(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"), Mode="length", Length=60.0)
         self.doc.recompute()
         self.assertFalse(b.Status.startswith("error"), b.Status)
         for L in b.Lengths:
@@ -78,7 +80,7 @@ class BlendTest(unittest.TestCase):
         self._check_g1(b)
 
     def test_every_solution_is_a_valid_blend(self):
-        b = F.make_blend(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"), Length=75.0)
+        b = Bl.make(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"), Mode="length", Length=75.0)
         self.doc.recompute()
         n = len(b.Lengths)
         self.assertGreaterEqual(n, 1)
@@ -90,7 +92,7 @@ class BlendTest(unittest.TestCase):
             self._check_g1(b)
 
     def test_blend_follows_moved_sketch(self):
-        b = F.make_blend(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"))
+        b = Bl.make(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"))
         self.doc.recompute()
         before = b.Shape.copy()
         self.sk.movePoint(1, 1, App.Vector(85, 40, 0))     # Edge2's start point
@@ -105,7 +107,7 @@ class BlendTest(unittest.TestCase):
         c = self.doc.addObject("Part::Feature", "B")
         c.Shape = Part.makeLine(App.Vector(30, 0, 20), App.Vector(40, 0, 20))
         self.doc.recompute()
-        b = F.make_blend(self.doc, (a, "Edge1"), (c, "Edge1"))
+        b = Bl.make(self.doc, (a, "Edge1"), (c, "Edge1"))
         self.doc.recompute()
         self.assertFalse(b.Status.startswith("error"), b.Status)
         e = b.Shape.Edges[0]
@@ -115,13 +117,13 @@ class BlendTest(unittest.TestCase):
         self.assertLess(abs(e.valueAt(0.5 * (e.FirstParameter + e.LastParameter)).y), 1e-6)
 
     def test_write_into_sketch_with_tangency(self):
-        b = F.make_blend(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"))
+        b = Bl.make(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"))
         self.doc.recompute()
         ng, nc = len(self.sk.Geometry), self.sk.ConstraintCount
-        other = F.make_blend(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"), Length=70.0)
+        other = Bl.make(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"), Mode="length", Length=70.0)
         self.doc.recompute()
         self.assertEqual((other.SketchGeometry1, other.SketchGeometry2), (0, 1))
-        ids = F.write_to_sketch(b, self.sk, [(0, 2), (1, 1)])
+        ids = G.write_to_sketch(b, self.sk, [(0, 2), (1, 1)])
         self.doc.removeObject(b.Name)
         self.doc.recompute()
         # a blend between the same sketch edges still finds them (geometry indices)
@@ -137,9 +139,122 @@ class BlendTest(unittest.TestCase):
         self.assertLess((self.sk.Geometry[0].EndPoint - App.Vector(40, 0, 0)).Length, 0.05)
         self.assertLess((self.sk.Geometry[1].StartPoint - App.Vector(80, 25, 0)).Length, 0.05)
 
+    def test_default_is_the_lowest_energy_free_batten(self):
+        import libelastica as el
+        import numpy as np
+        b = Bl.make(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"))
+        self.doc.recompute()
+        self.assertEqual((b.Mode, b.Tension, b.Solution), ("tension", 0.0, 0))
+        self.assertEqual(list(b.Energies), sorted(b.Energies))
+        curves, _ = b.Proxy.plane_curves(b)
+        # every free batten of these ends (the library directly): none has less energy
+        c = curves[0]
+        a0, a1 = c.points([0.0, c.length])
+        th = c.angle([0.0, c.length])
+        t = [np.array([np.cos(x), np.sin(x)]) for x in th]
+        free = el.hermite(a0, t[0], a1, t[1], tension=0.0)
+        self.assertAlmostEqual(min(s.energy() for s in free), c.energy(), delta=1e-9)
+        self.assertAlmostEqual(b.Energies[0], c.energy(), delta=1e-9)
+        self._check_g1(b)
+
+    def test_tension_mode_orders_by_bending_plus_tension_energy(self):
+        b = Bl.make(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"), Tension=4e-5)
+        self.doc.recompute()
+        self.assertGreater(len(b.Lengths), 1)
+        self.assertEqual(list(b.Energies), sorted(b.Energies))
+        curves, _ = b.Proxy.plane_curves(b)
+        self.assertAlmostEqual(b.Energies[0], curves[0].energy() + 4e-5 * curves[0].length,
+                               delta=1e-9)
+        self.assertLess(b.Lengths[0], 100.0)        # not the huge gentle loop
+
+    def test_length_zero_is_the_free_battens_length(self):
+        free = Bl.make(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"))
+        b = Bl.make(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"), Mode="length", Length=0.0)
+        self.doc.recompute()
+        self.assertAlmostEqual(b.Lengths[0], free.Lengths[0], delta=1e-6)
+
+    def test_too_short_length_says_which_lengths_are_possible(self):
+        b = Bl.make(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"), Mode="length", Length=70.0)
+        self.doc.recompute()
+        good = b.Shape.Length
+        b.Length = 20.0
+        self.doc.recompute()
+        self.assertTrue(b.Status.startswith("error"))
+        self.assertIn("any length above 47.1699 mm", b.Status)
+        self.assertEqual(b.Length, 20.0)                       # as typed
+        self.assertEqual((list(b.Lengths), list(b.Descriptions)), ([], []))
+        self.assertAlmostEqual(b.Shape.Length, good, delta=1e-9)  # the last good curve kept
+
+    def test_solutions_are_described(self):
+        import libelastica as el
+        import numpy as np
+        b = Bl.make(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"), Mode="length", Length=70.0)
+        self.doc.recompute()
+        n = len(b.Lengths)
+        self.assertGreaterEqual(n, 2)
+        for name in ("Energies", "Tensions", "Inflections", "Loops", "MaxCurvatures",
+                     "Descriptions"):
+            self.assertEqual(len(getattr(b, name)), n, name)
+        for i in range(n):
+            b.Solution = i
+            self.doc.recompute()
+            c = b.Proxy.plane_curves(b)[0][0]
+            s = np.linspace(0, c.length, 2001)
+            kappa = c.curvature(s)
+            self.assertAlmostEqual(b.MaxCurvatures[i], float(np.abs(kappa).max()),
+                                   delta=2e-3 * b.MaxCurvatures[i])
+            self.assertEqual(b.Inflections[i], int(np.sum(kappa[1:] * kappa[:-1] < 0)))
+            self.assertEqual(b.Inflections[i], len(el.elastica_inflections(c)))
+            self.assertIn(f"{b.Inflections[i]} inflection", b.Descriptions[i])
+        self.assertIn(1, list(b.Loops))        # at 70 mm one solution loops once
+        # a loop is a self-crossing: the curve turns by more than a full turn there
+        i = list(b.Loops).index(1)
+        b.Solution = i
+        self.doc.recompute()
+        c = b.Proxy.plane_curves(b)[0][0]
+        self.assertGreater(abs(c.angle([c.length])[0] - c.angle([0.0])[0]), 2 * math.pi * 0.5)
+
+    def test_bspline_has_few_poles_within_the_tolerance(self):
+        import numpy as np
+        b = Bl.make(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"))
+        self.doc.recompute()
+        self.assertEqual((b.Degree, b.Tolerance), (5, 1e-3))
+        self.assertLessEqual(b.Poles, 12)
+        c, plc = b.Proxy.plane_curves(b)
+        pts = [tuple(plc.multVec(App.Vector(x, y, 0)))
+               for x, y in c[0].points(np.linspace(0, c[0].length, 200))]
+        self.assertLess(S.distance_to_shape(pts, b.Shape), b.Tolerance)
+
+    def test_editing_selects_the_lowest_energy_again(self):
+        b = Bl.make(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"), Mode="length", Length=70.0)
+        self.doc.recompute()
+        b.Solution = 1
+        self.doc.recompute()
+        b.Length = 72.0
+        self.assertEqual(b.Solution, 0)
+        b.Solution = 7
+        self.doc.recompute()
+        self.assertTrue(b.Status.startswith("error"))
+        self.assertIn("Solution = 7", b.Status)
+        self.assertEqual(b.Solution, 7)
+
+    def test_copy_into_sketch_is_a_plain_copy_and_the_feature_follows(self):
+        b = Bl.make(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"))
+        self.doc.recompute()
+        ng, nc = len(self.sk.Geometry), self.sk.ConstraintCount
+        gi = Bl.copy_into_sketch(b)
+        self.doc.recompute()
+        self.assertEqual((len(self.sk.Geometry), self.sk.ConstraintCount), (ng + 1, nc))
+        copy = self.sk.Geometry[gi].toShape()
+        self.sk.movePoint(1, 1, App.Vector(85, 40, 0))
+        self.doc.recompute()
+        self.assertFalse(b.Status.startswith("error"), b.Status)
+        self._check_g1(b)                                      # re-solved to the moved edge
+        self.assertLess(abs(self.sk.Geometry[gi].toShape().Length - copy.Length), 1e-12)
+
     def test_save_reopen_recompute_same_result(self):
-        b = F.make_blend(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"), Length=70.0)
-        comb = F.make_comb(self.doc, b)
+        b = Bl.make(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"), Mode="length", Length=70.0)
+        comb = Co.make(self.doc, b)
         self.doc.recompute()
         import json
         params = json.loads(b.Curves)[0]
@@ -217,7 +332,7 @@ class CombTest(unittest.TestCase):
     def test_comb_of_an_arc_has_equal_radial_teeth(self):
         r = 20.0
         sk = S.arc_sketch(self.doc, r)
-        comb = F.make_comb(self.doc, sk, ["Edge1"], Samples=9, Scale=100.0)
+        comb = Co.make(self.doc, sk, ["Edge1"], Samples=9, Scale=100.0)
         self.doc.recompute()
         self.assertEqual(comb.Status, "ok")
         centre = S.SKETCH_PLACEMENT.multVec(App.Vector(0, 0, 0))
@@ -232,8 +347,8 @@ class CombTest(unittest.TestCase):
 
     def test_comb_of_an_elastica_blend_uses_its_curvature(self):
         sk = S.two_lines_sketch(self.doc)
-        b = F.make_blend(self.doc, (sk, "Edge1"), (sk, "Edge2"), Length=60.0)
-        comb = F.make_comb(self.doc, b, Samples=25, Scale=50.0)
+        b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Mode="length", Length=60.0)
+        comb = Co.make(self.doc, b, Samples=25, Scale=50.0)
         self.doc.recompute()
         self.assertEqual(comb.Status, "ok")
         curve = b.Proxy.plane_curves(b)[0][0]
@@ -254,7 +369,7 @@ class CombTest(unittest.TestCase):
 
     def test_comb_follows_its_source(self):
         sk = S.arc_sketch(self.doc, 20.0)
-        comb = F.make_comb(self.doc, sk, ["Edge1"], Samples=9, Scale=100.0)
+        comb = Co.make(self.doc, sk, ["Edge1"], Samples=9, Scale=100.0)
         self.doc.recompute()
         n0 = max(e.Length for e in comb.Shape.Edges if len(e.Vertexes) == 2)
         g = sk.Geometry[0]
@@ -271,6 +386,40 @@ class CombTest(unittest.TestCase):
             self.assertAlmostEqual(t, 10.0, places=6)
         self.assertAlmostEqual(n0, 5.0, places=6)
         del g
+
+    def test_comb_of_a_split_fit_has_one_envelope_per_curve(self):
+        from freecad.elastica import fit as Fi
+        xy, _ = S.keyline_xy(40)
+        sk = S.points_sketch(self.doc, xy)
+        for model in ("smooth", "discrete"):
+            f = Fi.make(self.doc, [(sk, [])], Model=model, SplitAtInflection=True)
+            comb = Co.make(self.doc, f, Samples=50)
+            self.doc.recompute()
+            self.assertEqual(comb.Status, "ok", model)
+            teeth = [e for e in comb.Shape.Edges if e.Length > 1e-9]
+            # 50 teeth per curve (a discrete fit too), and 2 x 49 envelope segments: no
+            # segment joins the two curves' envelopes
+            envelopes = comb.Shape.Wires
+            self.assertEqual(len(envelopes), 2, model)
+            # (a discrete fit's natural cubic has zero curvature, no tooth, at its ends)
+            n = len(teeth) - sum(len(w.Edges) for w in envelopes)
+            self.assertTrue(2 * 50 - (4 if model == "discrete" else 0) <= n <= 2 * 50, (model, n))
+            longest = max(e.Length for w in envelopes for e in w.Edges)
+            self.assertLess(longest, 0.2 * f.Shape.BoundBox.DiagonalLength, model)
+
+    def test_comb_absurd_values_give_a_message(self):
+        sk = S.arc_sketch(self.doc, 20.0)
+        comb = Co.make(self.doc, sk, ["Edge1"], Samples=9)
+        self.doc.recompute()
+        for prop, value in (("Samples", 1), ("Samples", 10 ** 6), ("Scale", float("nan"))):
+            old = getattr(comb, prop)
+            setattr(comb, prop, value)
+            self.doc.recompute()
+            self.assertTrue(comb.Status.startswith("error"), (prop, value))
+            self.assertIn(prop, comb.Status)
+            setattr(comb, prop, old)
+        self.doc.recompute()
+        self.assertEqual(comb.Status, "ok")
 
     def test_comb_bad_input(self):
         before = S.doc_state(self.doc)

@@ -13,7 +13,8 @@ import Part
 
 import elastica_samples as S
 from freecad.elastica import commands as C
-from freecad.elastica import features as F
+from freecad.elastica import ellblend as El
+from freecad.elastica import geometry as G
 
 XY = [(0.0, 0.0), (20.0, 35.0), (55.0, 40.0), (80.0, 5.0)]
 
@@ -59,7 +60,7 @@ class EllipticBlendTest(unittest.TestCase):
         self.assertLess((e.valueAt(e.LastParameter) - pts[-1]).Length, 1e-7)
 
     def test_from_sketch_points_interpolates(self):
-        f = F.make_ellblend(self.doc, [(self.sk, [])])
+        f = El.make(self.doc, [(self.sk, [])])
         self.doc.recompute()
         self._ok(f)
         self._through(f, self.pts)
@@ -72,20 +73,20 @@ class EllipticBlendTest(unittest.TestCase):
     def test_shape_is_the_librarys_curve(self):
         import numpy as np
         import libelastica as el
-        f = F.make_ellblend(self.doc, [(self.sk, [])], K=0.3, KConvention="parameter", D=1.5)
+        f = El.make(self.doc, [(self.sk, [])], K=0.3, KConvention="parameter", D=1.5)
         self.doc.recompute()
         self._ok(f)
         curve = el.blend_curve(np.array(XY), m=0.3, d=1.5)
-        on = F.to_3d(S.SKETCH_PLACEMENT, curve.points(np.linspace(0, 1, 41)))
+        on = G.to_3d(S.SKETCH_PLACEMENT, curve.points(np.linspace(0, 1, 41)))
         self.assertLess(S.distance_to_shape([tuple(p) for p in on], f.Shape),
                         f.BSplineDeviation + 1e-9)
-        for q, q3 in zip(F.to_3d(S.SKETCH_PLACEMENT, curve.q), f.ControlPoints):
+        for q, q3 in zip(G.to_3d(S.SKETCH_PLACEMENT, curve.q), f.ControlPoints):
             self.assertLess((q - q3).Length, 1e-9)
         # interpolate mode: the inner control points are not the picked points
         self.assertGreater((f.ControlPoints[1] - self.pts[1]).Length, 1.0)
 
     def test_control_mode_uses_the_points(self):
-        f = F.make_ellblend(self.doc, [(self.sk, [])], Mode="control")
+        f = El.make(self.doc, [(self.sk, [])], Mode="control")
         self.doc.recompute()
         self._ok(f)
         for q, p in zip(f.ControlPoints, self.pts):
@@ -120,9 +121,9 @@ class EllipticBlendTest(unittest.TestCase):
 
     def test_vertices_of_a_shape_and_sketch_vertices(self):
         wire = S.polyline_3d(self.doc, XY)
-        f = F.make_ellblend(self.doc, [(wire, ["Vertex1", "Vertex2", "Vertex3", "Vertex4"])])
+        f = El.make(self.doc, [(wire, ["Vertex1", "Vertex2", "Vertex3", "Vertex4"])])
         lines = S.two_lines_sketch(self.doc)
-        g = F.make_ellblend(self.doc, [(lines, ["Vertex1", "Vertex2", "Vertex3", "Vertex4"])])
+        g = El.make(self.doc, [(lines, ["Vertex1", "Vertex2", "Vertex3", "Vertex4"])])
         self.doc.recompute()
         self._ok(f)
         self._through(f, self.pts)
@@ -130,7 +131,7 @@ class EllipticBlendTest(unittest.TestCase):
         self._through(g, [v.Point for v in lines.Shape.Vertexes[:4]])
 
     def test_sketch_point_moved_recomputes(self):
-        f = F.make_ellblend(self.doc, [(self.sk, [])])
+        f = El.make(self.doc, [(self.sk, [])])
         self.doc.recompute()
         before = f.Shape.copy()
         self.sk.movePoint(2, 1, App.Vector(50, 60, 0))
@@ -141,14 +142,14 @@ class EllipticBlendTest(unittest.TestCase):
                           S.SKETCH_PLACEMENT.multVec(App.Vector(50, 60, 0)), self.pts[3]])
 
     def test_write_into_sketch(self):
-        f = F.make_ellblend(self.doc, [(self.sk, [])])
+        f = El.make(self.doc, [(self.sk, [])])
         self.doc.recompute()
         out = S.write_into_new_sketch(self, f)
         samples = [tuple(p) for p in f.Shape.Edges[0].discretize(30)]
         self.assertLess(S.distance_to_shape(samples, out.Shape), 1e-9)
 
     def test_save_reopen_recompute_same_result(self):
-        f = F.make_ellblend(self.doc, [(self.sk, [])], K=0.7, D=3.0, Tolerance=1e-5)
+        f = El.make(self.doc, [(self.sk, [])], K=0.7, D=3.0, Tolerance=1e-5)
         self.doc.recompute()
         self._ok(f)
         q = [App.Vector(v) for v in f.ControlPoints]
@@ -199,7 +200,7 @@ class EllipticBlendTest(unittest.TestCase):
             self.assertEqual(S.doc_state(self.doc), before, text)
 
     def test_bad_property_keeps_shape_and_reports(self):
-        f = F.make_ellblend(self.doc, [(self.sk, [])])
+        f = El.make(self.doc, [(self.sk, [])])
         self.doc.recompute()
         length = f.Shape.Length
         f.K = 1.2

@@ -17,32 +17,75 @@ class PackageTest(unittest.TestCase):
     def test_namespace_layout(self):
         self.assertFalse(os.path.exists(os.path.join(WB, "freecad", "__init__.py")))
         for f in ("__init__.py", "init_gui.py", "commands.py", "features.py", "taskpanels.py",
-                  "preferences.py"):
+                  "preferences.py", "sources.py", "viewproviders.py", "geometry.py", "proxy.py",
+                  "fit.py", "blend.py", "comb.py", "ellblend.py", "g2quad.py"):
             self.assertTrue(os.path.isfile(os.path.join(PKG, f)), f)
 
+    def test_features_never_import_gui_code(self):
+        """One module per feature, no features <-> task panels circle: the feature
+        modules (and what they share) import neither GUI modules nor Qt; the GUI
+        reaches them, never the other way (view providers come through a hook)."""
+        import ast
+        gui = {"taskpanels", "viewproviders", "commands", "init_gui", "preferences",
+               "FreeCADGui", "PySide", "pivy"}
+        for f in ("proxy", "geometry", "sources", "fit", "blend", "comb", "ellblend", "g2quad"):
+            with open(os.path.join(PKG, f + ".py")) as fh:
+                tree = ast.parse(fh.read())
+            names = set()
+            for node in ast.walk(tree):
+                if isinstance(node, ast.Import):
+                    names |= {a.name.split(".")[0] for a in node.names}
+                elif isinstance(node, ast.ImportFrom):
+                    names.add((node.module or "").split(".")[0])
+                    if node.level and not node.module:
+                        names |= {a.name for a in node.names}
+            self.assertFalse(names & gui, (f, names & gui))
+
+    def test_missing_library_names_the_command(self):
+        import subprocess
+        import sys as _sys
+        env = dict(os.environ, LIBELASTICA_PATH="/nonexistent/libelastica.so",
+                   PYTHONPATH=os.pathsep.join([WB, os.path.join(S.ROOT, "python")]))
+        py = "/usr/bin/python3" if os.path.exists("/usr/bin/python3") else _sys.executable
+        out = subprocess.run([py, "-c", "from freecad.elastica import library_problem; "
+                              "print(library_problem())"], env=env, capture_output=True,
+                             text=True, timeout=60)
+        self.assertEqual(out.returncode, 0, out.stderr)
+        self.assertIn(f"make -C {S.ROOT} freecad-install", out.stdout)
+        from freecad.elastica import library_problem
+        self.assertEqual(library_problem(), "")
+
     def test_package_xml(self):
-        root = ET.parse(os.path.join(WB, "package.xml")).getroot()
+        """The Addon Manager reads the repository root's package.xml; its workbench's
+        subdirectory is the folder FreeCAD must put on sys.path (freecad_wb)."""
+        root = ET.parse(os.path.join(S.ROOT, "package.xml")).getroot()
         self.assertEqual(root.tag, "{%s}package" % NS["p"])
         for tag in ("name", "description", "version", "maintainer", "license", "url"):
             self.assertTrue(root.find(f"p:{tag}", NS).text.strip(), tag)
+        self.assertNotIn("example.org", ET.tostring(root, encoding="unicode"))
         wb = root.find("p:content/p:workbench", NS)
         self.assertEqual(wb.find("p:classname", NS).text, "ElasticaWorkbench")
+        sub = os.path.join(S.ROOT, wb.find("p:subdirectory", NS).text)
+        self.assertEqual(os.path.realpath(sub), os.path.realpath(WB))
+        self.assertTrue(os.path.isdir(os.path.join(sub, "freecad", "elastica")))
         with open(os.path.join(PKG, "init_gui.py")) as fh:
             self.assertIn("class ElasticaWorkbench(", fh.read())
-        icon = os.path.join(WB, wb.find("p:icon", NS).text)
+        icon = os.path.join(S.ROOT, wb.find("p:icon", NS).text)
         self.assertTrue(os.path.isfile(icon), icon)
         from freecad import elastica
         self.assertEqual(root.find("p:version", NS).text, elastica.__version__)
 
     def test_icons_are_svg(self):
         from freecad.elastica import icon
-        for name in ("elastica", "fit", "fit_csv", "blend", "comb"):
+        for name in ("elastica", "fit", "fit_csv", "blend", "comb", "ellblend", "g2quad",
+                     "preferences-elastica"):
             root = ET.parse(icon(name)).getroot()
             self.assertEqual(root.tag, "{http://www.w3.org/2000/svg}svg", name)
 
     def test_proxies_keep_state_both_ways(self):
-        from freecad.elastica import features as F
-        for cls in (F.FitProxy, F.BlendProxy, F.CombProxy, F.ViewProvider):
+        from freecad.elastica import features as F, g2quad
+        for cls in (F.FitProxy, F.BlendProxy, F.CombProxy, F.EllipticBlendProxy,
+                    g2quad.G2QuadProxy, F.ViewProvider):
             for m in ("__getstate__", "__setstate__", "dumps", "loads"):
                 self.assertTrue(callable(getattr(cls, m, None)), (cls, m))
         p = F.FitProxy.__new__(F.FitProxy)

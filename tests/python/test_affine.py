@@ -328,3 +328,140 @@ def test_golden_section_on_t1_removes_the_oscillation():
         res[opt] = (r.psi[0], np.abs(km - el.elastica_affine_curvature(c, smid)).max())
     assert res[True][0] < 0.01 * res[False][0]
     assert res[True][1] < 0.1 * res[False][1]
+
+
+# ------------------------------------------------------------------ G2 quadratic B-splines
+
+def _ends(b):
+    return b(np.array([b.knots[0], b.knots[-1]]))
+
+
+def test_g2_quadratic_ends_exactly_on_the_curve_and_its_inflections():
+    c = el.SmoothElastica(0, 0, 0.5, 1.0, 0.7, 0.3, 6.0)
+    s_ends = np.r_[0.0, el.elastica_inflections(c), c.length]
+    g = el.g2_quadratic(c, 40)
+    assert len(g.bsplines) == len(s_ends) - 1 == 3 and g.covers_source
+    for p, b in enumerate(g.bsplines):
+        assert np.allclose(_ends(b), c.points(s_ends[p:p + 2]), rtol=0, atol=1e-12)
+        assert joint_curvature_jumps(b).max() <= 1e-9          # scipy's independent check
+    assert g.curvature_jump <= 1e-12
+    # the uniform spline of the same polyline starts half an edge inside the curve
+    old = g.polyline.bspline()
+    gap = np.linalg.norm(_ends(old)[0] - c.points([0.0])[0])
+    assert gap == pytest.approx(0.5 * np.linalg.norm(g.polyline.points[1] - g.polyline.points[0]))
+    assert g.deviation < 0.02 and g.end_tangent_error < 0.1
+
+
+def test_g2_quadratic_deviation_is_second_order():
+    c = el.SmoothElastica(0, 0, 0.3, 1.0, 1.4, 0.2, 3.0)      # a loop, no inflection
+    devs = [el.g2_quadratic(c, n).deviation for n in (12, 24, 48)]
+    assert all(3.0 < a / b < 5.0 for a, b in zip(devs, devs[1:])), devs
+    errs = [el.g2_quadratic(c, n).end_tangent_error for n in (12, 24, 48)]
+    assert all(1.6 < a / b < 2.6 for a, b in zip(errs, errs[1:])), errs   # O(edge) at the ends
+
+
+@pytest.mark.parametrize("scale", [1e-4, 1.0, 1e5])
+def test_g2_quadratic_of_sampled_points_at_any_scale(scale):
+    x = np.linspace(0.4, 2 * np.pi - 0.4, 801)
+    wave = scale * np.c_[x, np.sin(x)]
+    tangents = np.c_[np.ones_like(x), np.cos(x)]
+    g = el.g2_quadratic(wave, 30, tangents=tangents)
+    assert len(g.bsplines) == 2 and g.covers_source
+    assert np.allclose(g.ends[[0, -1]], wave[[0, -1]], rtol=0, atol=1e-14 * scale)
+    assert abs(g.ends[1, 0] / scale - np.pi) < 0.02            # the inflection's sample
+    for p, b in enumerate(g.bsplines):
+        assert np.allclose(_ends(b), g.ends[p:p + 2], rtol=0, atol=1e-13 * scale)
+        assert joint_curvature_jumps(b).max() <= 1e-9
+    assert g.curvature_jump <= 1e-12
+    assert g.deviation < 5e-3 * scale and g.end_tangent_error < 0.2
+    assert el.g2_quadratic(wave, 30).end_tangent_error is None
+
+
+def test_g2_quadratic_inflection_next_to_the_end_is_reported():
+    L = 3.0
+    K = el.affine._ellipk(0.7)
+    c = el.SmoothElastica(0, 0, 0, 1.0, 0.7, K - (L - 0.004), L)   # inflection at s = L - 0.004
+    g = el.g2_quadratic(c, 30)
+    assert not g.covers_source and len(g.bsplines) == 1
+    assert np.allclose(_ends(g.bsplines[0])[1], c.points([L - 0.004])[0], atol=1e-12)
+
+
+def test_joint_curvatures_measure_what_scipy_measures():
+    x = aal_polyline([0.3, 0.9, 1.1, 0.6, 0.8, 1.2, 0.5, 0.7])
+    b = el.g2_bspline(x, x[0], x[-1])
+    kl, kr = el.quadratic_joint_curvatures(b)
+    assert np.allclose(kl, kr, rtol=1e-12) and len(kl) == len(x) - 3
+    y = x.copy()
+    y[4, 1] += 0.05                                             # not equal-area any more
+    jb = el.g2_bspline(y, y[0], y[-1])
+    kl, kr = el.quadratic_joint_curvatures(jb)
+    mine = np.abs(kl - kr) / np.maximum(np.abs(kl), np.abs(kr))
+    assert np.allclose(mine, joint_curvature_jumps(jb), atol=1e-6) and mine.max() > 1e-3
+    assert np.allclose(_ends(jb), y[[0, -1]], atol=1e-14)
+
+
+def test_g2_bspline_bad_input():
+    x = aal_polyline([0.5, 0.8, 0.6])
+    with pytest.raises(el.DomainError):
+        v1 = x[2] - x[1]                                        # outside the joint's tangent line
+        el.g2_bspline(x, 0.5 * (x[1] + x[2]) + 3 * np.array([v1[1], -v1[0]]))
+    with pytest.raises(ValueError):
+        el.g2_bspline(x[:3], x[0], x[2])
+    with pytest.raises(ValueError):
+        el.g2_bspline(x, [np.nan, 0.0])
+    with pytest.raises(ValueError):
+        el.g2_bspline(x, [1.0, 2.0, 3.0])
+    with pytest.raises(ValueError):
+        el.quadratic_joint_curvatures(el.uniform_bspline(x, clamped=False))
+
+
+# ------------------------------------------------------------------ the g2quad command
+
+def _g2quad(capsys, *args):
+    from libelastica.cli import main
+    capsys.readouterr()
+    try:
+        code = main(["g2quad", *map(str, args)])
+    except SystemExit as exc:        # argparse usage errors
+        code = exc.code
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def test_g2quad_command_writes_exact_g2_splines(tmp_path, capsys):
+    x = np.linspace(0.4, 2 * np.pi - 0.4, 601)
+    src = tmp_path / "wave.csv"
+    np.savetxt(src, np.c_[10 * x, 10 * np.sin(x)], delimiter=",")
+    out = tmp_path / "g2.json"
+    code, text, err = _g2quad(capsys, src, "--edges", 30, "--json", out, "--svg", tmp_path / "g2.svg")
+    assert code == 0, err
+    assert "2 pieces split at 1 inflection" in text and "(G2)" in text
+    rec = json.loads(out.read_text())
+    assert rec["pieces"] == 2 and rec["covers_source"] and rec["curvature_jump"] < 1e-12
+    bs = [el.BSpline.from_dict(d) for d in rec["bsplines"]]
+    assert np.allclose(_ends(bs[0])[0], [10 * x[0], 10 * np.sin(x[0])], atol=1e-12)
+    assert np.allclose(_ends(bs[-1])[1], [10 * x[-1], 10 * np.sin(x[-1])], atol=1e-12)
+    assert np.allclose(_ends(bs[0])[1], _ends(bs[1])[0], atol=1e-12)      # meet at the inflection
+    assert all(joint_curvature_jumps(b).max() <= 1e-9 for b in bs)
+    assert (tmp_path / "g2.svg").stat().st_size > 1000
+
+
+def test_g2quad_command_from_a_fitted_elastica(tmp_path, capsys):
+    c = el.SmoothElastica(0, 0, 0.5, 1.0, 0.7, 0.3, 6.0)
+    fit = tmp_path / "fit.json"
+    from libelastica.io import curve_to_dict, write_json
+    write_json(curve_to_dict(c), fit)
+    code, text, err = _g2quad(capsys, fit, "--edges", 40, "--json", "-")
+    assert code == 0, err
+    rec = json.loads(text)
+    assert rec["pieces"] == 3 and rec["end_tangent_error_rad"] < 0.1
+    s = np.r_[0.0, el.elastica_inflections(c), c.length]
+    assert np.allclose(rec["ends"], c.points(s), atol=1e-12)
+
+
+def test_g2quad_command_bad_input(tmp_path, capsys):
+    line = tmp_path / "line.csv"
+    np.savetxt(line, np.c_[np.arange(50.0), 2 * np.arange(50.0)], delimiter=",")
+    for args in ((line,), (line, "--edges", "2"), (tmp_path / "missing.csv",)):
+        code, text, err = _g2quad(capsys, *args)
+        assert code == 2 and len(err.strip().splitlines()) == 1 and "Traceback" not in err, err

@@ -1,16 +1,15 @@
 """GUI commands of the Elastica workbench. Thin: read the selection, check it with
 the feature's core (so bad input leaves the document untouched and only prints a
 message), create the feature through ``Gui.doCommandGui`` (recorded in the Python
-console and macros), open its task panel."""
+console and macros) inside an undo transaction, and open its task panel, whose
+OK commits the transaction and Cancel aborts it."""
 from __future__ import annotations
 
 import FreeCAD as App
 import FreeCADGui as Gui
 
-from . import defaults, icon
-
-translate = App.Qt.translate if hasattr(App, "Qt") else (lambda ctx, txt: txt)
-
+from . import defaults, icon, library_problem
+from .proxy import InputProblem
 
 MESSAGES = []   # the last messages shown (tests read them); at most 50 kept
 
@@ -28,6 +27,10 @@ def message(text, error=True):
 
 def _guarded(command):
     """Run ``command(selection)``; whatever goes wrong becomes a message."""
+    problem = library_problem()
+    if problem:
+        message(problem)
+        return None
     try:
         return command(selection_sources())
     except Exception as exc:
@@ -37,6 +40,18 @@ def _guarded(command):
 
 def _ref(obj):
     return f"App.getDocument({obj.Document.Name!r}).getObject({obj.Name!r})"
+
+
+def _ref_doc(doc):
+    return f"App.getDocument({doc.Name!r})"
+
+
+def _src(sources):
+    return "[" + ", ".join(f"({_ref(o)}, {list(s)!r})" for o, s in sources) + "]"
+
+
+def _kw(opts):
+    return ", ".join(f"{k}={v!r}" for k, v in opts.items())
 
 
 def selection_sources():
@@ -54,8 +69,9 @@ def _run(code):
     return getattr(App.ActiveDocument, "ActiveObject", None)
 
 
-def _create(doc, title, code):
-    """``_run(code)`` in one undo transaction; on failure the transaction is undone."""
+def _create(doc, title, code, keep_open=False):
+    """``_run(code)`` in an undo transaction (left open for a task panel when
+    ``keep_open``); on failure the transaction is undone and nothing is left."""
     doc.openTransaction(title)
     names = {o.Name for o in doc.Objects}
     try:
@@ -67,7 +83,8 @@ def _create(doc, title, code):
                 doc.removeObject(o.Name)
         message(f"{title} failed: {type(exc).__name__}: {exc}")
         return None
-    doc.commitTransaction()
+    if not keep_open:
+        doc.commitTransaction()
     return obj
 
 
@@ -75,20 +92,28 @@ def _check_and_create(title, what, check, code, open_panel):
     """Run ``check()`` (the feature's core on the input; InputProblem = bad input),
     then create the feature by the recorded ``code`` and open its task panel.
     Returns the new feature or None (message printed, document unchanged)."""
-    from . import features as F
     try:
         check()
-    except F.InputProblem as exc:
+    except InputProblem as exc:
         message(str(exc))
         return None
     except Exception as exc:  # anything unexpected: report, never escape
         message(f"{what} failed: {type(exc).__name__}: {exc}")
         return None
-    obj = _create(App.ActiveDocument, title, code)
-    if open_panel and App.GuiUp and obj is not None:
-        obj.Proxy.fresh = True
-        Gui.ActiveDocument.setEdit(obj.Name, 0)
+    doc = App.ActiveDocument
+    panel = open_panel and App.GuiUp
+    obj = _create(doc, title, code, keep_open=panel)
+    if panel and obj is not None:
+        from . import taskpanels
+        taskpanels.open_for(obj, created=True)
     return obj
+
+
+def _doc():
+    doc = App.ActiveDocument
+    if doc is None:
+        message("no active document")
+    return doc
 
 
 class _Command:
@@ -110,37 +135,33 @@ class _Command:
 
 def fit_sources(sources, csv_file="", open_panel=True, **options):
     """Check the fit input, create the Fit feature (recorded), open its task panel.
-    ``options`` override the preferences: Model, SplitAtInflection, PinEnds,
+    ``options`` override the preferences: Model, SplitAtInflection, PinStart, PinEnd,
     ResampleStep, Tolerance, Degree. Returns the new feature or None (message
     printed, document unchanged)."""
-    from . import features as F
-    doc = App.ActiveDocument
+    from . import fit, sources as src_mod
+    doc = _doc()
     if doc is None:
-        message("no active document")
         return None
     tol, deg, model = defaults()
     opts = {"Model": model, "Tolerance": tol, "Degree": deg}
     opts.update(options)
+
     def check():
-        pts, plane, ordered, closed = F.gather_points(sources, csv_file)
-        F.fit_core(pts, plane, ordered, closed, model=opts["Model"],
-                   split=opts.get("SplitAtInflection", False), pin_ends=opts.get("PinEnds", False),
-                   step=opts.get("ResampleStep", 0.0), tol=opts["Tolerance"], degree=opts["Degree"])
+        pts, plane, ordered, closed = src_mod.gather_points(sources, csv_file)
+        fit.fit_core(pts, plane, ordered, closed, model=opts["Model"],
+                     split=opts.get("SplitAtInflection", False),
+                     pin_start=opts.get("PinStart", False), pin_end=opts.get("PinEnd", False),
+                     step=opts.get("ResampleStep", 0.0), tol=opts["Tolerance"],
+                     degree=opts["Degree"])
 
-    src = ", ".join(f"({_ref(o)}, {list(s)!r})" for o, s in sources)
-    return _check_and_create("Fit elastica", "fit", check, "from freecad.elastica import features\n"
-                             f"_fit = features.make_fit({_ref_doc(doc)}, [{src}], csv_file={csv_file!r}, "
-                             + ", ".join(f"{k}={v!r}" for k, v in opts.items()) + ")\n"
-                             f"{_ref_doc(doc)}.recompute()", open_panel)
-
-
-def _ref_doc(doc):
-    return f"App.getDocument({doc.Name!r})"
+    return _check_and_create(
+        "Fit elastica", "fit", check,
+        "from freecad.elastica import fit as elastica_fit\n"
+        f"_fit = elastica_fit.make({_ref_doc(doc)}, {_src(sources)}, csv_file={csv_file!r}, "
+        f"{_kw(opts)})\n{_ref_doc(doc)}.recompute()", open_panel)
 
 
 class FitCommand(_Command):
-    """Fit an elastica to the selected sketch edges / vertices, Points object or wire."""
-
     pixmap, menu = "fit", "Fit elastica"
     tip = ("Fit an elastica (discrete or smooth) to the selected sketch edges or "
            "vertices, a Points object or a 3D polyline; output a parametric feature "
@@ -149,8 +170,6 @@ class FitCommand(_Command):
 
 
 class FitCsvCommand(_Command):
-    """Fit an elastica to the points of a CSV file."""
-
     pixmap, menu = "fit_csv", "Fit elastica to CSV file..."
     tip = ("Fit an elastica to x,y[,z] points read from a CSV / text file "
            "(3D points are plane-fitted)")
@@ -167,44 +186,41 @@ class FitCsvCommand(_Command):
 
 def _two_edges(sources):
     edges = [(o, s) for o, subs in sources for s in subs if s.startswith("Edge")]
-    if len(edges) != 2:
-        return None
-    return edges
+    return edges if len(edges) == 2 else None
 
 
 def blend_sources(sources, open_panel=True):
     """Check two selected edges, create the Blend feature (recorded), open its panel."""
-    from . import features as F
-    doc = App.ActiveDocument
+    from . import blend
+    from .geometry import is_sketch
+    doc = _doc()
     if doc is None:
-        message("no active document")
         return None
     edges = _two_edges(sources)
     if edges is None:
         message("select exactly two edges (their nearest ends are joined)")
         return None
+
     def check():
         e1 = edges[0][0].Shape.getElement(edges[0][1])
         e2 = edges[1][0].Shape.getElement(edges[1][1])
-        a, b = F.nearest_ends(e1, e2)
+        a, b = blend.nearest_ends(e1, e2)
         plane = None
-        if edges[0][0] == edges[1][0] and F._is_sketch(edges[0][0]):
+        if edges[0][0] == edges[1][0] and is_sketch(edges[0][0]):
             plane = edges[0][0].getGlobalPlacement()
-        F.blend_core(e1, a, e2, b, plane)
+        blend.blend_core(e1, a, e2, b, plane)
 
-    return _check_and_create("Elastic blend", "blend", check, "from freecad.elastica import features\n"
-                             f"_blend = features.make_blend({_ref_doc(doc)}, ({_ref(edges[0][0])}, "
-                             f"{edges[0][1]!r}), ({_ref(edges[1][0])}, {edges[1][1]!r}))\n"
-                             f"{_ref_doc(doc)}.recompute()", open_panel)
+    return _check_and_create(
+        "Elastic blend", "blend", check,
+        "from freecad.elastica import blend as elastica_blend\n"
+        f"_blend = elastica_blend.make({_ref_doc(doc)}, ({_ref(edges[0][0])}, {edges[0][1]!r}), "
+        f"({_ref(edges[1][0])}, {edges[1][1]!r}))\n{_ref_doc(doc)}.recompute()", open_panel)
 
 
 class BlendCommand(_Command):
-    """Elastic Hermite blend between the nearest ends of two selected edges."""
-
     pixmap, menu = "blend", "Elastic blend"
-    tip = ("Join the nearest ends of two selected coplanar edges by an elastica (all "
-           "Hermite solutions, by length or tension); in a sketch, a B-spline "
-           "tangent to both edges")
+    tip = ("Join the nearest ends of two selected coplanar edges by an elastica: the free "
+           "batten, or every Hermite solution for a tension or a length")
     run = staticmethod(blend_sources)
 
 
@@ -213,32 +229,28 @@ class BlendCommand(_Command):
 def ellblend_sources(sources, open_panel=True, **options):
     """Check four picked points, create the elliptic blend curve (recorded), open its
     task panel. ``options`` set Mode (interpolate / control), K, KConvention (modulus /
-    parameter), D, Tolerance. Returns the new feature or None (message printed,
-    document unchanged)."""
-    from . import features as F
-    doc = App.ActiveDocument
+    parameter), D, Tolerance."""
+    from . import ellblend, sources as src_mod
+    doc = _doc()
     if doc is None:
-        message("no active document")
         return None
     opts = {"Mode": "interpolate", "K": 0.5, "KConvention": "modulus", "D": 2.0,
             "Tolerance": defaults()[0]}
     opts.update(options)
-    def check():
-        pts, plane = F.gather_vertices(sources)
-        F.ellblend_core(pts, plane, opts["Mode"], opts["K"], opts["D"], opts["Tolerance"],
-                        opts["KConvention"])
 
-    src = ", ".join(f"({_ref(o)}, {list(s)!r})" for o, s in sources)
-    return _check_and_create("Elliptic blend curve", "elliptic blend", check,
-                             "from freecad.elastica import features\n"
-                             f"_ellblend = features.make_ellblend({_ref_doc(doc)}, [{src}], "
-                             + ", ".join(f"{k}={v!r}" for k, v in opts.items()) + ")\n"
-                             f"{_ref_doc(doc)}.recompute()", open_panel)
+    def check():
+        pts, plane = src_mod.gather_vertices(sources)
+        ellblend.ellblend_core(pts, plane, opts["Mode"], opts["K"], opts["D"], opts["Tolerance"],
+                               opts["KConvention"])
+
+    return _check_and_create(
+        "Elliptic blend curve", "elliptic blend", check,
+        "from freecad.elastica import ellblend as elastica_ellblend\n"
+        f"_ellblend = elastica_ellblend.make({_ref_doc(doc)}, {_src(sources)}, {_kw(opts)})\n"
+        f"{_ref_doc(doc)}.recompute()", open_panel)
 
 
 class EllipticBlendCommand(_Command):
-    """Elliptic blending-function curve (seed 003) from four picked points."""
-
     pixmap, menu = "ellblend", "Elliptic blend curve"
     tip = ("A curve with Jacobi elliptic blending functions through four picked "
            "coplanar points (or with them as control points); select four vertices "
@@ -246,11 +258,40 @@ class EllipticBlendCommand(_Command):
     run = staticmethod(ellblend_sources)
 
 
+# ------------------------------------------------------------------ G2 quadratic
+
+def g2quad_sources(sources, open_panel=True, **options):
+    """Check the picked curve, create the G2 quadratic B-spline (recorded), open its panel."""
+    from . import g2quad, sources as src_mod
+    doc = _doc()
+    if doc is None:
+        return None
+    opts = {"Edges": 24}
+    opts.update(options)
+
+    def check():
+        edges, plane = src_mod.gather_edges(sources)
+        g2quad.g2quad_core(edges, plane, opts["Edges"])
+
+    return _check_and_create(
+        "G2 quadratic B-spline", "G2 quadratic B-spline", check,
+        "from freecad.elastica import g2quad as elastica_g2quad\n"
+        f"_g2 = elastica_g2quad.make({_ref_doc(doc)}, {_src(sources)}, {_kw(opts)})\n"
+        f"{_ref_doc(doc)}.recompute()", open_panel)
+
+
+class G2QuadCommand(_Command):
+    pixmap, menu = "g2quad", "G2 quadratic B-spline"
+    tip = ("A curvature-continuous uniform quadratic B-spline (seed 002) of the selected "
+           "edge or sketch curve, ending exactly on it, split at its inflections")
+    run = staticmethod(g2quad_sources)
+
+
 # ------------------------------------------------------------------ comb
 
 def comb_sources(sources):
     """Curvature combs of the selected results / edges (recorded)."""
-    from . import features as F
+    from . import comb
     doc = App.ActiveDocument
     if doc is None or not sources:
         message("select an Elastica result or some edges")
@@ -259,15 +300,15 @@ def comb_sources(sources):
     for obj, subs in sources:
         subs = [s for s in subs if s.startswith("Edge")]
         try:
-            F.comb_core(obj, subs, 8)
-        except F.InputProblem as exc:
+            comb.comb_core(obj, subs, 8)
+        except InputProblem as exc:
             message(f"{obj.Label}: {exc}")
             continue
         except Exception as exc:
             message(f"{obj.Label}: comb failed: {type(exc).__name__}: {exc}")
             continue
-        c = _create(doc, "Curvature comb", "from freecad.elastica import features\n"
-                    f"_comb = features.make_comb({_ref_doc(doc)}, {_ref(obj)}, {subs!r})\n"
+        c = _create(doc, "Curvature comb", "from freecad.elastica import comb as elastica_comb\n"
+                    f"_comb = elastica_comb.make({_ref_doc(doc)}, {_ref(obj)}, {subs!r})\n"
                     f"{_ref_doc(doc)}.recompute()")
         if c is not None:
             made.append(c)
@@ -275,16 +316,14 @@ def comb_sources(sources):
 
 
 class CombCommand(_Command):
-    """Curvature comb of the selected Elastica results or edges."""
-
     pixmap, menu = "comb", "Curvature comb"
-    tip = ("A parametric curvature comb along the selected Elastica results or edges")
+    tip = "A parametric curvature comb along the selected Elastica results or edges"
     run = staticmethod(comb_sources)
 
 
 COMMANDS = {"Elastica_Fit": FitCommand, "Elastica_FitCsv": FitCsvCommand,
             "Elastica_Blend": BlendCommand, "Elastica_EllipticBlend": EllipticBlendCommand,
-            "Elastica_Comb": CombCommand}
+            "Elastica_G2Quad": G2QuadCommand, "Elastica_Comb": CombCommand}
 
 
 def register():

@@ -1,15 +1,18 @@
-"""The Elastica workbench: the Workbench class and command registration only."""
+"""The Elastica workbench: the Workbench class, command registration, and the GUI
+side of the features (their view providers, also for documents made without the
+GUI, through proxy.VIEW_HOOK)."""
 import FreeCADGui as Gui
 
-from . import icon
+from . import ICONPATH, icon, library_problem, proxy, viewproviders
 
 
 class ElasticaWorkbench(Gui.Workbench):
     """Fit sketches and scanned keylines with Euler's elastica, elastic blends,
-    elliptic blending-function curves, curvature combs, B-splines back into sketches."""
+    elliptic blending-function curves, G2 quadratic B-splines, curvature combs."""
 
     MenuText = "Elastica"
-    ToolTip = "Euler's elastica: fairing fits, elastic blends, elliptic blend curves, curvature combs"
+    ToolTip = ("Euler's elastica: fairing fits, elastic blends, elliptic blend curves, "
+               "G2 quadratic B-splines, curvature combs")
     Icon = icon("elastica")
 
     def GetClassName(self):
@@ -21,6 +24,9 @@ class ElasticaWorkbench(Gui.Workbench):
         self.appendToolbar("Elastica", names)
         self.appendMenu("Elastica", names)
         preferences.register()
+        problem = library_problem()
+        if problem:
+            commands.message(problem)
 
     def Activated(self):
         pass
@@ -29,4 +35,6 @@ class ElasticaWorkbench(Gui.Workbench):
         pass
 
 
+proxy.VIEW_HOOK[:] = [viewproviders.attach, viewproviders.restored]
+Gui.addIconPath(ICONPATH)
 Gui.addWorkbench(ElasticaWorkbench())

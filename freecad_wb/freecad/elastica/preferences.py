@@ -5,41 +5,42 @@ import FreeCAD as App
 
 from . import PREF_PATH, defaults
 
+MODELS = [("discrete", "Discrete elastica (Bobenko-Suris)"), ("smooth", "Smooth elastica")]
+
 
 class PreferencePage:
     """A Python preference page: ``form`` plus loadSettings / saveSettings."""
 
     def __init__(self, parent=None):
         from PySide import QtGui
+        from .taskpanels import DecadeBox
         self.form = QtGui.QWidget(parent)
         self.form.setWindowTitle("Elastica")
         layout = QtGui.QFormLayout(self.form)
-        self.tol = QtGui.QDoubleSpinBox()
-        self.tol.setRange(1e-7, 100.0)
-        self.tol.setDecimals(7)
-        self.tol.setSuffix(" mm")
-        self.tol.setToolTip("Largest distance of a B-spline from its elastica")
+        self.tol = DecadeBox(1e-9, 1e3, 1e-3, "mm",
+                             "Largest distance of a B-spline from its curve (mm); arrows step "
+                             "by a factor of 10")
         layout.addRow("Default B-spline tolerance", self.tol)
         self.degree = QtGui.QSpinBox()
         self.degree.setRange(3, 7)
-        self.degree.setToolTip("Degree of the B-splines written into sketches")
+        self.degree.setToolTip("Degree of the B-splines of smooth fits (3 to 7)")
         layout.addRow("Default B-spline degree", self.degree)
         self.model = QtGui.QComboBox()
-        self.model.addItems(["discrete", "smooth"])
-        self.model.setToolTip("discrete: Bobenko-Suris discrete elastica; smooth: smooth elastica")
+        self.model.addItems([text for _, text in MODELS])
+        self.model.setToolTip("The model new fits start with")
         layout.addRow("Default fit model", self.model)
 
     def loadSettings(self):
         tol, deg, model = defaults()
         self.tol.setValue(tol)
         self.degree.setValue(deg)
-        self.model.setCurrentIndex(["discrete", "smooth"].index(model))
+        self.model.setCurrentIndex([m for m, _ in MODELS].index(model))
 
     def saveSettings(self):
         p = App.ParamGet(PREF_PATH)
         p.SetFloat("Tolerance", float(self.tol.value()))
         p.SetInt("Degree", int(self.degree.value()))
-        p.SetString("Model", self.model.currentText())
+        p.SetString("Model", MODELS[self.model.currentIndex()][0])
 
 
 def register():

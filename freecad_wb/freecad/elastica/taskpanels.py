@@ -1,83 +1,231 @@
-"""Task panels: edit a feature's properties with a live preview (the feature
-itself recomputes), show the fit's rms / max error / k / status or the list of
-Hermite solutions, and on OK optionally write the B-spline into a sketch.
-Cancel on a freshly created feature removes it, leaving the document as it was."""
+"""Task panels, modelled on FreeCAD's own Part and Sketcher panels: every change
+(arrow, wheel, typing) updates the feature at once (the recompute follows a short
+pause, so typing "12.5" solves once); Cancel reverts everything through the
+document's undo transaction (a feature a command has just made disappears); every
+field has a tooltip with its unit; fields that do not apply are disabled; the
+layout fits a 260 px Combo View. The panels edit the features' properties only:
+what a value means and whether it is usable is the feature's business (its
+Status, shown here in red when it is an error)."""
 from __future__ import annotations
 
 import FreeCAD as App
 import FreeCADGui as Gui
 from PySide import QtCore, QtGui
 
-from . import features as F
+from . import blend as B
+from . import ellblend as E
+from . import fit as F
+from . import icon
+from .geometry import is_sketch
 
-
-CURRENT = []    # the open panel, if any (scripts and the GUI smoke test drive it)
+CURRENT = []        # the open panel, if any (scripts and the GUI smoke test drive it)
+DELAY_MS = 150      # recompute after this pause in editing
 
 
 def _sketches(doc, exclude=()):
-    return [o for o in doc.Objects if F._is_sketch(o) and o.Name not in exclude]
+    return [o for o in doc.Objects if is_sketch(o) and o.Name not in exclude]
+
+
+def _narrow(box):
+    """A combo box that may be narrower than its longest entry (the 260 px Combo View)."""
+    box.setSizeAdjustPolicy(QtGui.QComboBox.AdjustToMinimumContentsLengthWithIcon)
+    box.setMinimumContentsLength(8)
+    return box
+
+
+def _buttons(*names):
+    flags = QtGui.QDialogButtonBox.NoButton
+    for n in names:
+        flags |= getattr(QtGui.QDialogButtonBox, n)
+    try:
+        return int(flags)
+    except TypeError:          # PySide6 enums: the flag value
+        return flags.value
+
+
+class NumberBox(QtGui.QDoubleSpinBox):
+    """A spin box that shows its value as typed ('0.001', '2.5e-07', not '0.00'),
+    accepts scientific notation and steps by ``singleStep``."""
+
+    unit = ""                            # Qt calls validate() while __init__ runs
+
+    def __init__(self, lo, hi, step, unit="", tip=""):
+        super().__init__()
+        self.setDecimals(30)             # the box must not round 1e-7 to 0
+        self.setRange(lo, hi)
+        self.setSingleStep(step)
+        self.setKeyboardTracking(True)
+        self.unit = f" {unit}" if unit else ""
+        self.setSuffix(self.unit)
+        self.setToolTip(tip)
+
+    def textFromValue(self, value):
+        return f"{value:.6g}"
+
+    def _number(self, text):
+        t = text.strip()
+        if self.unit and t.endswith(self.unit.strip()):
+            t = t[:-len(self.unit.strip())].strip()
+        return float(t)
+
+    def valueFromText(self, text):
+        try:
+            return self._number(text)
+        except ValueError:
+            return self.value()
+
+    def validate(self, text, pos):
+        try:
+            v = self._number(text)
+            ok = self.minimum() <= v <= self.maximum()
+            state = QtGui.QValidator.Acceptable if ok else QtGui.QValidator.Intermediate
+        except ValueError:
+            state = QtGui.QValidator.Intermediate
+        return state, text, pos
+
+    def fixup(self, text):
+        return self.textFromValue(self.value()) + self.unit
+
+
+class DecadeBox(NumberBox):
+    """A tolerance: each arrow step (or wheel notch) multiplies or divides by 10."""
+
+    def stepBy(self, steps):
+        self.setValue(self.value() * 10.0 ** steps)
 
 
 class _Panel:
+    """Shared machinery: bound fields, the delayed recompute, result text, the undo
+    transaction. Subclasses build their boxes in ``build`` and return the result
+    text of a successful recompute from ``result_text``."""
+
     title = ""
+    icon_name = "elastica"
 
     def __init__(self, obj, created=True):
         self.obj = obj
         self.doc = obj.Document
-        self.created = created
-        self.form = QtGui.QWidget()
-        self.form.setWindowTitle(self.title)
-        self.layout = QtGui.QFormLayout(self.form)
+        self.created = created          # a command made it: its transaction is still open
+        self.enablers = []              # (widget, callable -> bool)
+        self.timer = QtCore.QTimer()
+        self.timer.setSingleShot(True)
+        self.timer.setInterval(DELAY_MS)
+        self.timer.timeout.connect(self.update)
+        if not created:
+            self.doc.openTransaction(f"Edit {obj.Label}")
         self.result = QtGui.QLabel()
         self.result.setWordWrap(True)
         self.result.setTextInteractionFlags(QtCore.Qt.TextSelectableByMouse)
+        self.form = []
+        self.build()
+        self.refresh()
 
-    def _check_row(self, L, text, prop):
-        """A check box bound live to the boolean property prop."""
+    # ---------------------------------------------------------------- building
+
+    def box(self, title):
+        """A new task box (a QWidget with a two-column grid) appended to the form."""
+        w = QtGui.QWidget()
+        w.setWindowTitle(title)
+        w.setWindowIcon(QtGui.QIcon(icon(self.icon_name)))
+        grid = QtGui.QGridLayout(w)
+        grid.setColumnStretch(1, 1)
+        self.form.append(w)
+        return grid
+
+    @staticmethod
+    def row(grid, label, widget, tip=""):
+        r = grid.rowCount()
+        if label:
+            lab = QtGui.QLabel(label)
+            lab.setToolTip(tip or widget.toolTip())
+            grid.addWidget(lab, r, 0)
+            grid.addWidget(widget, r, 1)
+        else:
+            grid.addWidget(widget, r, 0, 1, 2)
+        if tip:
+            widget.setToolTip(tip)
+        return widget
+
+    def number(self, grid, label, prop, lo, hi, step, unit, tip, decade=False, when=None):
+        """A spin box bound live to the float property prop."""
+        box = (DecadeBox if decade else NumberBox)(lo, hi, step, unit, tip)
+        box.blockSignals(True)
+        box.setValue(getattr(self.obj, prop))
+        box.blockSignals(False)
+        box.valueChanged.connect(lambda v: self.set(prop, float(v)))
+        self.row(grid, label, box, tip)
+        if when:
+            self.enablers.append((box, when))
+        return box
+
+    def integer(self, grid, label, prop, lo, hi, tip, when=None):
+        box = QtGui.QSpinBox()
+        box.setRange(lo, hi)
+        box.blockSignals(True)
+        box.setValue(max(lo, min(hi, int(getattr(self.obj, prop)))))
+        box.blockSignals(False)
+        box.setKeyboardTracking(True)
+        box.valueChanged.connect(lambda v: self.set(prop, int(v)))
+        self.row(grid, label, box, tip)
+        if when:
+            self.enablers.append((box, when))
+        return box
+
+    def check(self, grid, text, prop, tip, when=None, target=None):
+        """A check box bound live to the boolean property prop (of ``target``, default
+        the feature; a view property when target is the ViewObject)."""
+        target = target if target is not None else self.obj
         box = QtGui.QCheckBox(text)
-        box.setChecked(getattr(self.obj, prop))
-        box.toggled.connect(lambda v: self._set(prop, bool(v)))
-        L.addRow(box)
+        box.setChecked(bool(getattr(target, prop)))
+        box.toggled.connect(lambda v: self.set(prop, bool(v), target))
+        self.row(grid, "", box, tip)
+        if when:
+            self.enablers.append((box, when))
         return box
 
-    def _choice_row(self, L, label, prop, values, texts=None):
-        """A combo box bound live to the string property prop, one entry per allowed
-        value (shown as texts, if given)."""
-        box = QtGui.QComboBox()
-        box.addItems(list(texts or values))
+    def choice(self, grid, label, prop, values, texts, tip):
+        """A combo box bound live to the enumeration property prop."""
+        box = _narrow(QtGui.QComboBox())
+        box.addItems(list(texts))
         box.setCurrentIndex(list(values).index(getattr(self.obj, prop)))
-        box.currentIndexChanged.connect(lambda i: self._set(prop, values[i]))
-        L.addRow(label, box)
+        box.currentIndexChanged.connect(lambda i: self.set(prop, values[i]))
+        self.row(grid, label, box, tip)
         return box
 
-    def _tolerance_row(self, L):
-        """The B-spline tolerance, edited live."""
-        self.tol = QtGui.QDoubleSpinBox()
-        self.tol.setRange(1e-7, 100.0)
-        self.tol.setDecimals(7)
-        self.tol.setSuffix(" mm")
-        self.tol.setValue(self.obj.Tolerance)
-        self.tol.editingFinished.connect(lambda: self._set("Tolerance", self.tol.value()))
-        L.addRow("B-spline tolerance", self.tol)
-
-    def _output_rows(self, L, exclude, new_label):
-        """Keep the feature or not; write its B-spline into a sketch (not those in exclude)."""
-        self.keep = QtGui.QCheckBox("Keep the parametric feature")
-        self.keep.setChecked(True)
-        L.addRow(self.keep)
-        self.sketch = QtGui.QComboBox()
-        self.sketch.addItem("(none)", "")
+    def output_rows(self, grid, exclude, new_label):
+        """Keep the feature or not; copy its B-spline into a sketch (not those in exclude)."""
+        self.keep = self.check(grid, "Keep the parametric feature", "_keep",
+                               "Unchecked: OK removes the feature (keep only the sketch copy)",
+                               target=self)
+        self.sketch = _narrow(QtGui.QComboBox())
+        self.sketch.addItem("(no copy)", "")
         for sk in _sketches(self.doc, exclude):
             self.sketch.addItem(sk.Label, sk.Name)
         self.sketch.addItem(new_label, "*new*")
-        L.addRow("Write B-spline into", self.sketch)
+        self.row(grid, "Copy into", self.sketch,
+                 "OK copies the B-spline into this sketch: a copy, which does not follow later "
+                 "edits (the feature does)")
 
-    def getStandardButtons(self):
-        return int(QtGui.QDialogButtonBox.Ok | QtGui.QDialogButtonBox.Cancel)
+    _keep = True
 
-    def _set(self, prop, value):
-        if getattr(self.obj, prop) != value:
-            setattr(self.obj, prop, value)
+    # ---------------------------------------------------------------- live update
+
+    def set(self, prop, value, target=None):
+        target = target if target is not None else self.obj
+        if getattr(target, prop) != value:
+            setattr(target, prop, value)
+            self.changed(prop)
+            if target is self.obj:
+                self.timer.start()
+        self.refresh_enabled()
+
+    def changed(self, prop):
+        """A property was edited (before the recompute)."""
+
+    def flush(self):
+        """Run a pending recompute now (OK, tests)."""
+        if self.timer.isActive():
+            self.timer.stop()
             self.update()
 
     def update(self):
@@ -85,18 +233,69 @@ class _Panel:
             self.doc.recompute()
         except Exception as exc:  # never let a preview escape
             App.Console.PrintError(f"Elastica: {exc}\n")
-        self.show_result()
+        self.refresh()
 
-    def show_result(self):
-        """The feature's status in red when it is an error, else result_text()."""
+    def refresh(self):
+        """Result text (the error in red) and which fields apply."""
         o = self.obj
         if o.Status.startswith("error"):
             self.result.setText(f"<b style='color:#b00'>{o.Status}</b>")
         else:
             self.result.setText(self.result_text())
+        self.refresh_enabled()
+
+    def refresh_enabled(self):
+        for w, when in self.enablers:
+            w.setEnabled(bool(when()))
 
     def result_text(self):
         return f"status: {self.obj.Status}"
+
+    # ---------------------------------------------------------------- OK / Cancel
+
+    def getStandardButtons(self):
+        return _buttons("Ok", "Cancel")
+
+    def copy_code(self):
+        """Python of OK's copy into a sketch (recorded), or ''."""
+        target = self.sketch.itemData(self.sketch.currentIndex()) if hasattr(self, "sketch") else ""
+        if not target:
+            return ""
+        doc = f"App.getDocument({self.doc.Name!r})"
+        code = "from freecad.elastica import geometry as elastica_geometry\n"
+        if target == "*new*":
+            code += (f"_sk = {doc}.addObject('Sketcher::SketchObject', 'ElasticaSketch')\n"
+                     f"_sk.Placement = {doc}.getObject({self.obj.Name!r}).Plane\n")
+        else:
+            code += f"_sk = {doc}.getObject({target!r})\n"
+        return code + (f"elastica_geometry.write_to_sketch({doc}.getObject({self.obj.Name!r}), "
+                       "_sk)\n")
+
+    def accept(self):
+        self.flush()
+        if self.obj.Status.startswith("error"):
+            App.Console.PrintError(f"Elastica: {self.obj.Status}\n")
+            return False          # stay open: the user fixes the input or cancels
+        code = self.copy_code()
+        if code:
+            Gui.doCommandGui(code)
+        if not self._keep:
+            Gui.doCommandGui(f"App.getDocument({self.doc.Name!r}).removeObject({self.obj.Name!r})")
+        self.doc.recompute()
+        self.doc.commitTransaction()
+        self._close()
+        return True
+
+    def reject(self):
+        self.timer.stop()
+        name = self.obj.Name
+        self.doc.abortTransaction()
+        # without undo (UndoMode 0) the abort keeps a fresh feature: remove it
+        if self.created and name in [o.Name for o in self.doc.Objects]:
+            self.doc.removeObject(name)
+        self.doc.recompute()
+        self._close()
+        return True
 
     def _close(self):
         CURRENT[:] = []
@@ -104,205 +303,319 @@ class _Panel:
         if Gui.ActiveDocument is not None:
             Gui.ActiveDocument.resetEdit()
 
-    def reject(self):
-        if self.created and self.obj.Name in [o.Name for o in self.doc.Objects]:
-            self.doc.removeObject(self.obj.Name)
-            self.doc.recompute()
-        self._close()
-        return True
+
+def _fmt(v, unit="mm"):
+    return f"{v:.3g} {unit}".strip()
 
 
 class FitPanel(_Panel):
-    """Model, keyline split, pinned ends, resampling step, B-spline tolerance and
-    degree, output; shows rms / max error / k / status."""
-
     title = "Fit elastica"
+    icon_name = "fit"
 
-    def __init__(self, obj, created=True):
-        super().__init__(obj, created)
-        L = self.layout
-        self.model = self._choice_row(L, "Model", "Model", ["discrete", "smooth"])
-        self.split = self._check_row(L, "Split the keyline at its inflection", "SplitAtInflection")
-        self.pin = self._check_row(L, "Pin the start to the first point", "PinEnds")
-        self.step = QtGui.QDoubleSpinBox()
-        self.step.setRange(0.0, 1e6)
-        self.step.setDecimals(4)
-        self.step.setSuffix(" mm")
-        self.step.setSpecialValueText("no resampling")
-        self.step.setValue(obj.ResampleStep)
-        self.step.editingFinished.connect(lambda: self._set("ResampleStep", self.step.value()))
-        L.addRow("Resampling step", self.step)
-        self._tolerance_row(L)
-        self.degree = QtGui.QSpinBox()
-        self.degree.setRange(3, 7)
-        self.degree.setValue(obj.Degree)
-        self.degree.valueChanged.connect(lambda v: self._set("Degree", int(v)))
-        L.addRow("B-spline degree", self.degree)
+    def build(self):
+        o = self.obj
+        g = self.box("Fit elastica")
+        self.model = self.choice(g, "Model", "Model", F.MODELS,
+                                 [F.MODEL_NAMES[m] for m in F.MODELS],
+                                 "Discrete: the Bobenko-Suris discrete elastica, one vertex per "
+                                 "(resampled) point; smooth: the smooth elastica")
+        self.step = self.number(g, "Resample", "ResampleStep", 0.0, 1e6, 0.5, "mm",
+                                "Equilateral resampling step before fitting (mm); 0 keeps the "
+                                "points (a split keyline then uses 1/100 of its length)")
+        self.split = self.check(g, "Split at the inflection", "SplitAtInflection",
+                                "Fit a keyline as two elasticae meeting at its inflection "
+                                "(seed 000 §5)")
+        one_piece = lambda: not o.SplitAtInflection  # noqa: E731
+        constrained = lambda: one_piece() and F.has_constraints()  # noqa: E731
+        self.pin_start = self.check(g, "Pin the start", "PinStart",
+                                    "The curve starts exactly at the first point (one-piece "
+                                    "fits)", when=one_piece)
+        self.pin_end = self.check(g, "Pin the end", "PinEnd",
+                                  "The curve ends exactly at the last point (one-piece fits; "
+                                  "needs the fit library's constraints)", when=constrained)
+        self.tangents = []
+        for prop, text in (("StartTangent", "Start"), ("EndTangent", "End")):
+            btn = QtGui.QPushButton()
+            btn.clicked.connect(lambda _=False, p=prop: self.pick_tangent(p))
+            self.row(g, f"{text} tangent", btn,
+                     f"{text} tangent: click with an edge selected to follow its tangent there, "
+                     "click again to free it (one-piece fits; needs the fit library's "
+                     "constraints)")
+            self.enablers.append((btn, constrained))
+            self.tangents.append((prop, btn))
+        b = self.box("B-spline")
+        self.tol = self.number(b, "Tolerance", "Tolerance", 1e-9, 1e3, 1e-3, "mm",
+                               "Largest distance of the B-spline from the smooth elastica (mm); "
+                               "arrows step by a factor of 10", decade=True,
+                               when=lambda: o.Model == "smooth")
+        self.degree = self.integer(b, "Degree", "Degree", 3, 7,
+                                   "Degree of the smooth fit's B-spline (3 to 7); a discrete fit's "
+                                   "vertices are joined by the C2 cubic through them",
+                                   when=lambda: o.Model == "smooth")
+        r = self.box("Result")
+        self.row(r, "", self.result)
+        vo = o.ViewObject
+        self.show_data = self.check(r, "Show the fitted points", "ShowData",
+                                    "Markers at the points the fit used", target=vo)
+        self.show_res = self.check(r, "Show residual segments", "ShowResiduals",
+                                   "A segment from each point to the curve point it was measured to",
+                                   target=vo)
+        out = self.box("Output")
         # not into a source sketch: writing there would feed the fit its own output
-        self._output_rows(L, [o.Name for o, _ in obj.Source], "(new sketch in the fit plane)")
-        L.addRow(self.result)
-        self.show_result()
+        self.output_rows(out, [s.Name for s, _ in o.Source], "(new sketch in the fit plane)")
+        self.show_tangents()
+
+    def show_tangents(self):
+        for prop, btn in self.tangents:
+            link = getattr(self.obj, prop)
+            btn.setText(f"{link[0].Label}.{link[1][0]}" if link and link[1] else "free")
+
+    def pick_tangent(self, prop):
+        if getattr(self.obj, prop):
+            self.set(prop, None)
+        else:
+            sel = [(s.Object, n) for s in Gui.Selection.getSelectionEx()
+                   for n in s.SubElementNames if n.startswith("Edge")]
+            if not sel:
+                self.result.setText("<b style='color:#b00'>select an edge first</b>")
+                return
+            self.set(prop, (sel[0][0], [sel[0][1]]))
+        self.show_tangents()
 
     def result_text(self):
         o = self.obj
         ks = ", ".join(f"{k:.4g}" for k in o.K)
-        return (f"rms {o.Rms:.4g} mm, max error {o.MaxError:.4g} mm<br>"
-                f"k = {ks}<br>B-spline deviation {o.BSplineDeviation:.3g} mm<br>status: {o.Status}")
-
-    def accept(self):
-        if self.obj.Status.startswith("error"):
-            App.Console.PrintError(f"Elastica: {self.obj.Status}\n")
-            return False          # stay open: the user fixes the input or cancels
-        target = self.sketch.itemData(self.sketch.currentIndex())
-        if target:
-            code = "from freecad.elastica import features\n"
-            if target == "*new*":
-                code += (f"_sk = App.getDocument({self.doc.Name!r}).addObject("
-                         "'Sketcher::SketchObject', 'ElasticaSketch')\n"
-                         f"_sk.Placement = App.getDocument({self.doc.Name!r})."
-                         f"getObject({self.obj.Name!r}).Plane\n")
-            else:
-                code += f"_sk = App.getDocument({self.doc.Name!r}).getObject({target!r})\n"
-            code += (f"features.write_to_sketch(App.getDocument({self.doc.Name!r})."
-                     f"getObject({self.obj.Name!r}), _sk)\n")
-            Gui.doCommandGui(code)
-        if not self.keep.isChecked():
-            Gui.doCommandGui(f"App.getDocument({self.doc.Name!r}).removeObject({self.obj.Name!r})")
-        self.doc.recompute()
-        self._close()
-        return True
+        n = len(o.DataPoints)
+        if o.Model == "smooth":
+            bs = f"B-spline within {_fmt(o.BSplineDeviation)} (degree {o.Degree})"
+        else:
+            bs = "B-spline: the C2 cubic through the vertices"
+        return (f"{n} points, rms {_fmt(o.Rms)}, max {_fmt(o.MaxError)} "
+                f"({o.ErrorMeasure})<br>k = {ks}<br>{bs}<br>{o.Status}")
 
 
 class BlendPanel(_Panel):
-    """Length or tension, the list of all Hermite solutions (length, energy),
-    previewed one by one; OK writes it into the sketch (with tangency) when both
-    edges are in one sketch."""
-
     title = "Elastic blend"
+    icon_name = "blend"
 
-    def __init__(self, obj, created=True):
-        super().__init__(obj, created)
-        L = self.layout
-        self.mode = self._choice_row(L, "Solve by", "Mode", ["length", "tension"])
-        self.value = QtGui.QDoubleSpinBox()
-        self.value.setRange(-1e6, 1e6)
-        self.value.setDecimals(6)
-        self.value.setValue(obj.Length if obj.Mode == "length" else obj.Tension)
-        self.value.editingFinished.connect(self._value)
-        L.addRow("Length (0 = auto) / tension", self.value)
-        self.end1 = self._check_row(
-            L, "Leave the first edge at its end vertex (else its start)", "AtEnd1")
-        self.end2 = self._check_row(
-            L, "Enter the second edge at its end vertex (else its start)", "AtEnd2")
+    def build(self):
+        o = self.obj
+        self.picked = None              # the user's choice of solution, kept across edits
+        self.view_box = None
+        g = self.box("Elastic blend")
+        self.mode = self.choice(g, "Solve for", "Mode", B.MODES, ["a length", "a tension"],
+                                "A tension (0: the free batten, the fairest curve) or a given "
+                                "arc length")
+        self.length = self.number(g, "Length", "Length", 0.0, 1e7, 1.0, "mm",
+                                  "Arc length of the blend (mm); 0 = the free batten's length. In "
+                                  "tension mode: the chosen solution's length",
+                                  when=lambda: o.Mode == "length")
+        self.tension = self.number(g, "Tension", "Tension", -1e6, 1e6, self.tension_step(),
+                                   "1/mm\u00b2", "Tension sigma (1/mm\u00b2): 0 = free batten, > 0 "
+                                   "pulls the curve straighter, < 0 compresses it. In length mode: "
+                                   "the chosen solution's tension", when=lambda: o.Mode == "tension")
+        self.end1 = self.check(g, "Leave edge 1 at its end vertex", "AtEnd1",
+                               "Checked: from the first edge's end vertex; else its start")
+        self.end2 = self.check(g, "Enter edge 2 at its end vertex", "AtEnd2",
+                               "Checked: into the second edge's end vertex; else its start")
+        s = self.box("Solutions")
         self.list = QtGui.QListWidget()
-        self.list.setToolTip("All elastic curves for these ends, by bending energy; pick one "
-                             "to preview it")
-        self.list.currentRowChanged.connect(self._pick)
-        L.addRow(self.list)
-        self.into_sketch = QtGui.QCheckBox("Write into the edges' sketch with tangency")
-        sk = obj.Edge1[0] if obj.Edge1 else None
-        same = bool(obj.Edge2) and sk is obj.Edge2[0] and F._is_sketch(sk)
-        self.into_sketch.setEnabled(same)
-        self.into_sketch.setChecked(same)
-        L.addRow(self.into_sketch)
-        L.addRow(self.result)
-        self.show_result()
+        self.list.setWordWrap(True)
+        self.list.setMinimumHeight(90)
+        self.list.setToolTip("Every elastic curve for these ends, by bending energy: length, "
+                             "energy, inflections, loops, largest curvature; pick one to use it")
+        self.list.currentRowChanged.connect(self.pick)
+        self.row(s, "", self.list)
+        self.row(s, "", self.result)
+        b = self.box("B-spline")
+        self.tol = self.number(b, "Tolerance", "Tolerance", 1e-9, 1e3, 1e-3, "mm",
+                               "Largest distance of the B-spline from the elastica (mm); arrows "
+                               "step by a factor of 10", decade=True)
+        self.degree = self.integer(b, "Degree", "Degree", 3, 7,
+                                   "Degree of the B-spline (3 to 7): 5 to 7 need few poles")
+        out = self.box("Output")
+        same = bool(o.Edge1) and bool(o.Edge2) and o.Edge1[0] == o.Edge2[0] and is_sketch(o.Edge1[0])
+        self.into_sketch = self.check(out, "Copy into the edges' sketch", "_copy",
+                                      "OK adds a copy of the B-spline to the edges' sketch, "
+                                      "tangent to both as drawn but not constrained: it does not "
+                                      "follow later edits (the blend feature does)",
+                                      target=self, when=lambda: same)
 
-    def _value(self):
-        self._set("Length" if self.obj.Mode == "length" else "Tension", self.value.value())
+    _copy = False
 
-    def _pick(self, row):
+    def tension_step(self):
+        """An arrow step of about a tenth of the tension scale 1/distance^2."""
+        try:
+            e1, e2 = self.obj.Proxy.ends(self.obj)
+            a = B.edge_end(e1, self.obj.AtEnd1)[0]
+            d = (B.edge_end(e2, self.obj.AtEnd2)[0] - a).Length
+            return float(f"{0.1 / d ** 2:.0e}") if d > 0 else 1e-4
+        except Exception:
+            return 1e-4
+
+    def changed(self, prop):
+        if prop == "Mode" and self.obj.Mode == "length" and self.obj.Lengths:
+            # length mode starts from the length of the curve on screen
+            self.obj.Length = self.obj.Lengths[self.obj.Solution] \
+                if self.obj.Solution < len(self.obj.Lengths) else 0.0
+
+    def update(self):
+        super().update()
+        o = self.obj
+        if self.picked and not o.Status.startswith("error") and o.Solution != self.picked \
+                and self.picked < len(o.Lengths):
+            o.Solution = self.picked            # the user's pick survives the edit
+            super().update()
+        self.refit()
+
+    def refit(self):
+        """Fit the view when the blend leaves what was in view at the last fit, or
+        shrinks to a small part of it."""
+        if self.obj.Shape.isNull():
+            return
+        bb = self.obj.Shape.BoundBox
+        if self.view_box is None or not self.view_box.isInside(bb) or \
+                bb.DiagonalLength < 0.25 * self.view_box.DiagonalLength:
+            box = App.BoundBox(bb)
+            for link in (self.obj.Edge1, self.obj.Edge2):
+                if link and link[0].Shape and not link[0].Shape.isNull():
+                    box.add(link[0].Shape.BoundBox)
+            self.view_box = box
+            if Gui.ActiveDocument is not None:
+                Gui.SendMsgToActiveView("ViewFit")
+
+    def pick(self, row):
         if row >= 0 and row != self.obj.Solution:
+            self.picked = row
             self.obj.Solution = row
-            self.doc.recompute()
-            self.result.setText(f"status: {self.obj.Status}")
+            self.update()
 
-    def show_result(self):
+    def refresh(self):
         o = self.obj
         self.list.blockSignals(True)
         self.list.clear()
-        for i, (L, E) in enumerate(zip(o.Lengths, o.Energies)):
-            self.list.addItem(f"{i + 1}: length {L:.5g} mm, energy {E:.5g}")
-        if o.Lengths:
-            self.list.setCurrentRow(min(o.Solution, len(o.Lengths) - 1))
+        for text in o.Descriptions:
+            self.list.addItem(text)
+        if o.Descriptions:
+            self.list.setCurrentRow(min(o.Solution, len(o.Descriptions) - 1))
         self.list.blockSignals(False)
-        self.result.setText(f"status: {o.Status}")
-
-    def accept(self):
-        o = self.obj
-        if o.Status.startswith("error"):
-            App.Console.PrintError(f"Elastica: {o.Status}\n")
-            return False
-        if self.into_sketch.isEnabled() and self.into_sketch.isChecked():
-            sk = o.Edge1[0]
-            g1 = o.SketchGeometry1 if o.SketchGeometry1 >= 0 else F.sketch_geo_of_edge(sk, o.Edge1[1][0])
-            g2 = o.SketchGeometry2 if o.SketchGeometry2 >= 0 else F.sketch_geo_of_edge(sk, o.Edge2[1][0])
-            if g1 is not None and g2 is not None:
-                doc = f"App.getDocument({self.doc.Name!r})"
-                Gui.doCommandGui(
-                    "from freecad.elastica import features\n"
-                    f"features.write_to_sketch({doc}.getObject({o.Name!r}), "
-                    f"{doc}.getObject({sk.Name!r}), [({g1}, {2 if o.AtEnd1 else 1}), "
-                    f"({g2}, {2 if o.AtEnd2 else 1})])\n"
-                    # the sketch now holds the blend; the feature would depend on its own output
-                    f"{doc}.removeObject({o.Name!r})")
-        self.doc.recompute()
-        self._close()
-        return True
-
-
-class EllipticBlendPanel(_Panel):
-    """Mode (through / control points), k or m, d, B-spline tolerance, output;
-    shows the certified B-spline deviation; on OK optionally writes the B-spline
-    into a sketch."""
-
-    title = "Elliptic blend curve"
-
-    def __init__(self, obj, created=True):
-        super().__init__(obj, created)
-        L = self.layout
-        self.mode = self._choice_row(L, "Curve", "Mode", F.ELLBLEND_MODES,
-                                     ["through the points", "points are control points"])
-        self.conv = self._choice_row(L, "Elliptic", "KConvention", F.K_CONVENTIONS,
-                                     ["modulus k", "parameter m = k\u00b2"])
-        self.k = QtGui.QDoubleSpinBox()
-        self.k.setRange(0.0, 0.999999)
-        self.k.setDecimals(6)
-        self.k.setSingleStep(0.05)
-        self.k.setValue(obj.K)
-        self.k.editingFinished.connect(lambda: self._set("K", self.k.value()))
-        L.addRow("k (or m)", self.k)
-        self.d = QtGui.QDoubleSpinBox()
-        self.d.setRange(1e-6, 1e3)
-        self.d.setDecimals(6)
-        self.d.setSingleStep(0.1)
-        self.d.setValue(obj.D)
-        self.d.editingFinished.connect(lambda: self._set("D", self.d.value()))
-        L.addRow("End derivative d", self.d)
-        self._tolerance_row(L)
-        self._output_rows(L, (), "(new sketch in the curve's plane)")
-        L.addRow(self.result)
-        self.show_result()
+        # the field not being solved for shows the chosen solution's value
+        i = o.Solution
+        for box, values, active in ((self.length, o.Lengths, o.Mode == "length"),
+                                    (self.tension, o.Tensions, o.Mode == "tension")):
+            if not active and i < len(values):
+                box.blockSignals(True)
+                box.setValue(values[i])
+                box.blockSignals(False)
+                box.lineEdit().deselect()
+        super().refresh()
 
     def result_text(self):
         o = self.obj
-        return (f"B-spline deviation {o.BSplineDeviation:.3g} mm "
-                f"(tolerance {o.Tolerance:.3g} mm)<br>status: {o.Status}")
+        return f"{o.Status}; B-spline: {o.Poles} poles, degree {o.Degree}"
 
-    accept = FitPanel.accept      # the same output step: B-spline into a sketch, keep or not
+    def copy_code(self):
+        if not (self.into_sketch.isEnabled() and self.into_sketch.isChecked()):
+            return ""
+        doc = f"App.getDocument({self.doc.Name!r})"
+        return ("from freecad.elastica import blend as elastica_blend\n"
+                f"elastica_blend.copy_into_sketch({doc}.getObject({self.obj.Name!r}))\n")
 
 
-def open_for(obj):
-    """Show the task panel of an Elastica feature (from its view provider). A feature
-    a command has just made (``Proxy.fresh``) is removed again by Cancel."""
-    proxy = getattr(obj, "Proxy", None)
-    panel = {"Fit": FitPanel, "Blend": BlendPanel,
-             "EllipticBlend": EllipticBlendPanel}.get(getattr(proxy, "kind", ""))
+class EllipticBlendPanel(_Panel):
+    title = "Elliptic blend curve"
+    icon_name = "ellblend"
+
+    def build(self):
+        g = self.box("Elliptic blend curve")
+        self.mode = self.choice(g, "Points", "Mode", E.MODES,
+                                ["on the curve", "control points"],
+                                "On the curve: the curve passes through the four points; control "
+                                "points: they shape it like a Bezier polygon")
+        self.conv = self.choice(g, "Elliptic", "KConvention", E.K_CONVENTIONS,
+                                ["modulus k", "parameter m = k\u00b2"],
+                                "How K is read: the modulus k, or the parameter m = k\u00b2 (the "
+                                "paper's 'k')")
+        self.k = self.number(g, "k or m", "K", 0.0, 0.999999, 0.05, "",
+                             "Elliptic modulus k (or m) in [0, 1); 0 gives sines, the basis is "
+                             "singular near k = 0.80241 (m = 0.64386)")
+        self.d = self.number(g, "End factor d", "D", 1e-6, 1e3, 0.1, "",
+                             "End-derivative parameter d > 0: the curve leaves the first point "
+                             "with velocity d (q1 - q0). Control points only: through the "
+                             "points the curve does not depend on d",
+                             when=lambda: self.obj.Mode == "control")
+        self.tol = self.number(g, "Tolerance", "Tolerance", 1e-9, 1e3, 1e-3, "mm",
+                               "Largest distance of the B-spline from the blending curve (mm); "
+                               "arrows step by a factor of 10", decade=True)
+        r = self.box("Result")
+        self.row(r, "", self.result)
+        out = self.box("Output")
+        self.output_rows(out, (), "(new sketch in the curve's plane)")
+
+    def result_text(self):
+        o = self.obj
+        return (f"B-spline within {_fmt(o.BSplineDeviation)} of the curve (tolerance "
+                f"{_fmt(o.Tolerance)})<br>{o.Status}")
+
+
+class G2QuadPanel(_Panel):
+    title = "G2 quadratic B-spline"
+    icon_name = "g2quad"
+
+    def build(self):
+        g = self.box("G2 quadratic B-spline")
+        self.edges = self.integer(g, "Edges", "Edges", 3, 5000,
+                                  "Edges of the affine arc-length polyline: about as many poles; "
+                                  "the distance from the source falls like 1/Edges\u00b2")
+        self.polyline = self.check(g, "Show the polyline", "ShowPolyline",
+                                   "The affine arc-length polyline: the control polygon inside "
+                                   "each piece", target=self.obj.ViewObject)
+        r = self.box("Result")
+        self.row(r, "", self.result)
+        out = self.box("Output")
+        self.output_rows(out, [s.Name for s, _ in self.obj.Source],
+                         "(new sketch in the curve's plane)")
+
+    def result_text(self):
+        o = self.obj
+        return (f"{o.Pieces} piece{'s' if o.Pieces != 1 else ''} (split at inflections), "
+                f"{o.Poles} poles, degree 2<br>distance from the source: {_fmt(o.Deviation)}<br>"
+                f"curvature jump at joints: {o.CurvatureJump:.1g} (G2)<br>end tangents off by "
+                f"{o.EndTangentError:.2g}\u00b0<br>{o.Status}")
+
+
+class CombPanel(_Panel):
+    title = "Curvature comb"
+    icon_name = "comb"
+
+    def build(self):
+        g = self.box("Curvature comb")
+        self.samples = self.integer(g, "Teeth", "Samples", 2, 5000, "Teeth per curve")
+        self.scale = self.number(g, "Scale", "Scale", 0.0, 1e12, 0.0, "mm\u00b2",
+                                 "Tooth length per unit curvature (mm\u00b2); 0 = automatic (the "
+                                 "longest tooth 12 % of the curve's size); arrows step by 10 %")
+        self.scale.stepBy = lambda steps: self.scale.setValue(
+            (self.obj.Scale or self.obj.UsedScale) * 1.1 ** steps)
+        self.row(g, "", self.result)
+
+    def result_text(self):
+        return f"scale {self.obj.UsedScale:.4g} mm\u00b2; {self.obj.Status}"
+
+
+PANELS = {"Fit": FitPanel, "Blend": BlendPanel, "EllipticBlend": EllipticBlendPanel,
+          "G2Quad": G2QuadPanel, "Comb": CombPanel}
+
+
+def open_for(obj, created=False):
+    """Show the task panel of an Elastica feature. ``created``: a command has just
+    made it inside a still open transaction (OK commits it, Cancel removes it)."""
+    panel = PANELS.get(getattr(getattr(obj, "Proxy", None), "kind", ""))
     if panel is None:
         return False
-    created = bool(getattr(proxy, "fresh", False))
-    proxy.fresh = False
-    p = panel(obj, created)
+    if Gui.Control.activeDialog():
+        Gui.Control.closeDialog()
+    p = panel(obj, created or bool(getattr(obj.Proxy, "fresh", False)))
+    obj.Proxy.fresh = False
     CURRENT[:] = [p]
     Gui.Control.showDialog(p)
     return True

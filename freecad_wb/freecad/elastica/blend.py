@@ -1,0 +1,293 @@
+"""Elastic blend: every elastic Hermite curve (seed 004) from an end of one edge to
+an end of another, by tension (default: tension 0, the free batten) or by length;
+each solution described (length, energy, inflections, loops, largest curvature);
+the chosen one (lowest energy unless the user picked another) as a B-spline of
+few poles. The feature follows its edges; writing it into a sketch is a copy."""
+from __future__ import annotations
+
+import json
+
+import FreeCAD as App
+
+from . import defaults
+from .geometry import (curve_bspline, el, is_sketch, link_edge, np, part_bspline,
+                       plane_coordinates, sketch_geo_of_edge)
+from .proxy import (FeatureProxy, InputProblem, add_enum, add_property, attach_view,
+                    check_degree, check_number, check_tolerance, read_only)
+
+MODES = ["length", "tension"]
+BSPLINE_DEGREE = 5          # a blend's B-spline: few poles at the preference tolerance
+RESULT_LISTS = ("Lengths", "Energies", "Tensions", "Inflections", "Loops", "MaxCurvatures",
+                "Descriptions")
+
+
+def edge_end(edge, at_end):
+    """(point, direction leaving the edge) at its start or end vertex."""
+    if at_end:
+        u = edge.LastParameter
+        t = edge.tangentAt(u)
+    else:
+        u = edge.FirstParameter
+        t = -edge.tangentAt(u)
+    return edge.valueAt(u), App.Vector(t).normalize()
+
+
+def nearest_ends(e0, e1):
+    """(at_end0, at_end1): the pair of ends of two edges closest to each other."""
+    best = None
+    for a in (False, True):
+        for b in (False, True):
+            d = (edge_end(e0, a)[0] - edge_end(e1, b)[0]).Length
+            if best is None or d < best[0]:
+                best = (d, a, b)
+    return best[1], best[2]
+
+
+def self_intersections(xy):
+    """Crossings of a polyline with itself (neighbouring segments excluded): the
+    number of loops a user sees."""
+    n = np()
+    a, b = xy[:-1], xy[1:]
+    # segments i < j - 1 cross when each one's end points lie on both sides of the other
+    def side(p, q, r):
+        return (q[..., 0] - p[..., 0]) * (r[..., 1] - p[..., 1]) - \
+               (q[..., 1] - p[..., 1]) * (r[..., 0] - p[..., 0])
+    A, B = a[:, None], b[:, None]
+    C, D = a[None, :], b[None, :]
+    s1, s2 = side(A, B, C), side(A, B, D)
+    s3, s4 = side(C, D, A), side(C, D, B)
+    cross = (s1 * s2 < 0) & (s3 * s4 < 0)
+    i, j = n.indices(cross.shape)
+    return int(n.count_nonzero(cross & (j > i + 1)))
+
+
+def describe(curve):
+    """(inflections, loops, largest |curvature|) of a SmoothElastica."""
+    n = np()
+    s = n.linspace(0.0, curve.length, 400)
+    kappa = curve.curvature(s)
+    infl = len(el().elastica_inflections(curve))
+    return infl, self_intersections(curve.points(s)), float(n.max(n.abs(kappa)))
+
+
+def blend_core(e0, at_end0, e1, at_end1, plane=None, mode="tension", value=0.0):
+    """All elastic Hermite curves from the chosen end of e0 to the chosen end of e1.
+
+    The blend leaves e0 in its tangent direction and enters e1 along it. ``mode``
+    'tension' (value = sigma, 1/mm^2) or 'length' (value = arc length in mm; 0 = the
+    length of the lowest-energy free batten). Returns a dict with 'curves' (sorted
+    by energy, plane coordinates), 'placement', 'distance'. Raises InputProblem."""
+    p0, d0 = edge_end(e0, at_end0)
+    p1, d1 = edge_end(e1, at_end1)
+    d1 = -d1                       # arriving at e1: pointing into it
+    dist = (p1 - p0).Length
+    if dist < 1e-9:
+        raise InputProblem("the two edge ends coincide: nothing to blend")
+    if mode not in MODES:
+        raise InputProblem(f"unknown mode {mode!r} (length or tension)")
+    value = check_number("Tension" if mode == "tension" else "Length", value, unit="1/mm^2"
+                         if mode == "tension" else "mm")
+    try:
+        loc, plane = plane_coordinates([p0, p0 + d0 * dist, p1, p1 - d1 * dist], plane,
+                                       flat=1e-6, what="two edge ends (with their tangents)")
+        a0, a1 = loc[0], loc[2]
+        t0, t1 = (loc[1] - a0) / dist, (a1 - loc[3]) / dist
+        e = el()
+        if mode == "tension":
+            sols = e.hermite(a0, t0, a1, t1, tension=value)
+        else:
+            if value == 0.0:                      # the free batten's own length
+                free = e.hermite(a0, t0, a1, t1, tension=0.0)
+                if not free:
+                    raise InputProblem("no free batten joins these ends: give a length")
+                value = float(free[0].length)
+            if value <= dist:
+                raise InputProblem(f"length {value:.6g} mm is not longer than the {dist:.6g} mm "
+                                   f"between the ends: any length above {dist:.6g} mm is possible")
+            sols = e.hermite(a0, t0, a1, t1, length=value)
+    except InputProblem:
+        raise
+    except (ValueError, ArithmeticError, RuntimeError) as exc:
+        raise InputProblem(f"Hermite problem failed: {exc}") from None
+    if not sols:
+        raise InputProblem("no elastic curve joins these ends with this "
+                           + ("length" if mode == "length" else "tension"))
+    if mode == "tension":
+        # under tension the curve minimises the bending energy plus sigma times its length:
+        # order by that (at sigma > 0 a huge gentle loop has the least bending energy alone)
+        sols = sorted(sols, key=lambda c: total_energy(c, value))
+    return {"curves": sols, "placement": plane, "distance": dist}
+
+
+def bending_energy(curve):
+    """The integral of kappa^2 ds (1/mm)."""
+    return float(getattr(curve, "energy_value", None) or curve.energy())
+
+
+def total_energy(curve, sigma):
+    """Bending energy plus sigma times the length: what a blend under tension minimises."""
+    return bending_energy(curve) + float(sigma) * float(curve.length)
+
+
+def solution_text(i, length, energy, infl, loops, kmax):
+    return (f"{i + 1}: {length:.4g} mm, energy {energy:.3g}/mm, {infl} inflection"
+            f"{'' if infl == 1 else 's'}, {loops} loop{'' if loops == 1 else 's'}, "
+            f"max curvature {kmax:.3g}/mm")
+
+
+class BlendProxy(FeatureProxy):
+    """Elastic Hermite curve between an end of one edge and an end of another."""
+
+    kind = "Blend"
+
+    def setup(self, obj):
+        tol, _, _ = defaults()
+        add_property(obj, "App::PropertyLinkSub", "Edge1", "Input",
+                     "First edge (the blend leaves it)")
+        add_property(obj, "App::PropertyLinkSub", "Edge2", "Input",
+                     "Second edge (the blend enters it)")
+        add_property(obj, "App::PropertyBool", "AtEnd1", "Input",
+                     "Leave the first edge at its end vertex (else at its start)", True)
+        add_property(obj, "App::PropertyBool", "AtEnd2", "Input",
+                     "Enter the second edge at its end vertex (else at its start)", False)
+        for i in (1, 2):
+            add_property(obj, "App::PropertyInteger", f"SketchGeometry{i}", "Input",
+                         f"Index of Edge{i}'s geometry in its sketch (-1: use the edge name); "
+                         "sketch edge names change when geometry is added, geometry indices "
+                         "do not", -1)
+        add_enum(obj, "Mode", "Blend", "Solve for a given tension (default: 0, the free "
+                 "batten) or a given arc length", MODES, "tension")
+        add_property(obj, "App::PropertyFloat", "Length", "Blend",
+                     "Arc length of the blend in length mode (mm); 0 = the length of the "
+                     "lowest-energy free batten", 0.0)
+        add_property(obj, "App::PropertyFloat", "Tension", "Blend",
+                     "Tension sigma in tension mode (1/mm^2; 0 = free batten, negative = "
+                     "compression)", 0.0)
+        add_property(obj, "App::PropertyInteger", "Solution", "Blend",
+                     "Which solution, by bending energy (0 = the lowest); reset to 0 by every "
+                     "edit of the blend's parameters", 0)
+        add_property(obj, "App::PropertyFloat", "Tolerance", "BSpline",
+                     "Largest distance (mm) of the B-spline from the elastica", tol)
+        add_property(obj, "App::PropertyInteger", "Degree", "BSpline",
+                     "Degree of the B-spline (3 to 7; high degrees need few poles)",
+                     BSPLINE_DEGREE)
+        add_property(obj, "App::PropertyFloatList", "Lengths", "Result",
+                     "Arc length of every solution (mm)")
+        add_property(obj, "App::PropertyFloatList", "Energies", "Result",
+                     "Energy of every solution (1/mm): the bending energy (integral of kappa^2 "
+                     "ds) plus, in tension mode, sigma times the length; the solutions are "
+                     "ordered by it")
+        add_property(obj, "App::PropertyFloatList", "Tensions", "Result",
+                     "Tension sigma of every solution (1/mm^2)")
+        add_property(obj, "App::PropertyIntegerList", "Inflections", "Result",
+                     "Inflections of every solution")
+        add_property(obj, "App::PropertyIntegerList", "Loops", "Result",
+                     "Self-crossings (loops) of every solution")
+        add_property(obj, "App::PropertyFloatList", "MaxCurvatures", "Result",
+                     "Largest |curvature| of every solution (1/mm)")
+        add_property(obj, "App::PropertyStringList", "Descriptions", "Result",
+                     "Every solution in words")
+        add_property(obj, "App::PropertyInteger", "Poles", "Result", "Poles of the B-spline")
+        add_property(obj, "App::PropertyString", "Status", "Result", "Outcome of the last solve")
+        add_property(obj, "App::PropertyString", "Curves", "Result",
+                     "The chosen curve's parameters (JSON, plane coordinates)")
+        add_property(obj, "App::PropertyPlacement", "Plane", "Result", "The plane of the blend")
+        read_only(obj, *RESULT_LISTS, "Poles", "Status", "Curves", "Plane")
+
+    def onChanged(self, obj, prop):
+        # a new problem: its lowest-energy solution (the panel re-applies a user's pick)
+        if prop in ("Mode", "Length", "Tension", "AtEnd1", "AtEnd2", "Edge1", "Edge2") \
+                and "Restore" not in obj.State and getattr(obj, "Solution", 0) != 0:
+            obj.Solution = 0
+
+    def ends(self, obj):
+        """The two linked edges (global), or InputProblem."""
+        out = []
+        for link, gi in ((obj.Edge1, obj.SketchGeometry1), (obj.Edge2, obj.SketchGeometry2)):
+            if not link or not link[1] or not link[1][0].startswith("Edge"):
+                raise InputProblem("a blend needs two edges")
+            out.append(link_edge(link[0], link[1][0], gi))
+        return out
+
+    def compute(self, obj):
+        """blend_core's dict for the linked edges, plus the chosen solution's B-spline."""
+        e1, e2 = self.ends(obj)
+        plane = None
+        if obj.Edge1[0] == obj.Edge2[0] and is_sketch(obj.Edge1[0]):
+            plane = obj.Edge1[0].getGlobalPlacement()
+        value = obj.Length if obj.Mode == "length" else obj.Tension
+        r = blend_core(e1, obj.AtEnd1, e2, obj.AtEnd2, plane, obj.Mode, value)
+        curves = r["curves"]
+        if not 0 <= obj.Solution < len(curves):
+            raise InputProblem(f"Solution = {obj.Solution}: there are {len(curves)} solutions "
+                               f"(0 to {len(curves) - 1})")
+        tol, degree = check_tolerance(obj.Tolerance), check_degree(obj.Degree)
+        try:
+            r["bspline"] = curve_bspline(curves[obj.Solution], tol, degree)
+        except ValueError as exc:
+            raise InputProblem(f"B-spline failed: {exc}") from None
+        return r
+
+    def apply(self, obj, r):
+        curves, i = r["curves"], obj.Solution
+        obj.Shape = part_bspline(r["bspline"], r["placement"]).toShape()
+        described = [describe(c) for c in curves]
+        obj.Lengths = [float(c.length) for c in curves]
+        sigma = obj.Tension if obj.Mode == "tension" else 0.0
+        obj.Energies = [total_energy(c, sigma) for c in curves]
+        obj.Tensions = [float(getattr(c, "sigma", 0.0)) for c in curves]
+        obj.Inflections = [d[0] for d in described]
+        obj.Loops = [d[1] for d in described]
+        obj.MaxCurvatures = [d[2] for d in described]
+        obj.Descriptions = [solution_text(j, L, E, *d) for j, (L, E, d) in
+                            enumerate(zip(obj.Lengths, obj.Energies, described))]
+        obj.Poles = int(r["bspline"].npoles)
+        obj.Plane = r["placement"]
+        from libelastica.io import curve_to_dict
+        obj.Curves = json.dumps([curve_to_dict(curves[i])])
+        obj.Status = f"solution {i + 1} of {len(curves)}"
+
+    def on_error(self, obj):
+        """A failed solve lists no solutions (the old curve stays, drawn dashed)."""
+        for name in RESULT_LISTS:
+            setattr(obj, name, [])
+
+    def plane_curves(self, obj):
+        from .fit import stored_curves
+        return stored_curves(obj)
+
+
+def make(doc, edge1, edge2, at_end1=None, at_end2=None, **props):
+    """A new Blend feature; edge1/edge2 are (obj, 'EdgeN'); ends default to the
+    nearest pair."""
+    obj = doc.addObject("Part::FeaturePython", "ElasticaBlend")
+    BlendProxy(obj)
+    obj.Edge1 = (edge1[0], [edge1[1]])
+    obj.Edge2 = (edge2[0], [edge2[1]])
+    for i, (o, name) in ((1, edge1), (2, edge2)):
+        if is_sketch(o):
+            gi = sketch_geo_of_edge(o, name)
+            setattr(obj, f"SketchGeometry{i}", -1 if gi is None else gi)
+    if at_end1 is None or at_end2 is None:
+        a, b = nearest_ends(edge1[0].Shape.getElement(edge1[1]),
+                            edge2[0].Shape.getElement(edge2[1]))
+        at_end1 = a if at_end1 is None else at_end1
+        at_end2 = b if at_end2 is None else at_end2
+    obj.AtEnd1, obj.AtEnd2 = bool(at_end1), bool(at_end2)
+    for k, v in props.items():
+        setattr(obj, k, v)
+    attach_view(obj)
+    return obj
+
+
+def copy_into_sketch(blend, sketch=None):
+    """Copy the blend's B-spline into the sketch of its edges (or ``sketch``): a copy,
+    tangent to both edges as drawn but not constrained to them, so moving an edge
+    later neither deforms it nor over-constrains the sketch (the feature re-solves).
+    Returns the new geometry index."""
+    from .geometry import write_to_sketch
+    return write_to_sketch(blend, sketch or blend.Edge1[0])[0]
+
+
+__all__ = ["BlendProxy", "blend_core", "make", "copy_into_sketch", "nearest_ends", "edge_end",
+           "MODES"]

@@ -1,0 +1,122 @@
+"""Curvature comb: teeth along a curve, each as long as the curvature there (times a
+scale), on the convex side, with the envelope of their tips, one envelope per
+curve (a split keyline's two halves are not joined). Smooth elasticae (fits,
+blends) use the library's exact curvature; anything else, including a discrete
+fit's B-spline, OpenCASCADE's curvature of the edges."""
+from __future__ import annotations
+
+import math
+
+import FreeCAD as App
+import Part
+
+from .geometry import dedup, el, np
+from .proxy import FeatureProxy, InputProblem, add_property, new_feature, read_only, report
+
+SCALE_SHARE = 0.12    # automatic scale: the longest tooth is this share of the extent
+
+
+def _elastica_teeth(curve, plc, samples):
+    """(feet, left unit normals, signed curvatures) of a smooth elastica from the
+    library; a tooth is foot - normal * kappa * scale (outside the turn)."""
+    n = np()
+    s = n.linspace(0.0, curve.length, samples)
+    xy, theta, kappa = curve.points(s), curve.angle(s), curve.curvature(s)
+    feet = [plc.multVec(App.Vector(x, y, 0)) for x, y in xy]
+    # the left normal of the tangent (cos th, sin th) in the plane
+    normals = [plc.Rotation.multVec(App.Vector(-math.sin(t), math.cos(t), 0)) for t in theta]
+    return feet, normals, [float(k) for k in kappa]
+
+
+def _edge_teeth(edge, samples):
+    """The same from OpenCASCADE: normalAt points to the centre of curvature and
+    curvatureAt is >= 0, so the tooth foot - normal * kappa * scale is outside too."""
+    n = np()
+    feet, normals, kappas = [], [], []
+    for u in n.linspace(edge.FirstParameter, edge.LastParameter, samples):
+        feet.append(edge.valueAt(u))
+        try:
+            normals.append(edge.normalAt(u))
+            kappas.append(float(edge.curvatureAt(u)))
+        except Part.OCCError:               # a straight piece: no normal, no tooth
+            normals.append(App.Vector(0, 0, 0))
+            kappas.append(0.0)
+    return feet, normals, kappas
+
+
+def comb_core(source, subs=(), samples=60, scale=0.0):
+    """Teeth of a curvature comb: a list per curve of (foot, tip) vector pairs, and
+    the scale used. ``samples`` teeth per curve; ``scale`` 0 = automatic (the longest
+    tooth 12 % of the source's extent)."""
+    if not 2 <= samples <= 5000:
+        raise InputProblem(f"Samples = {samples} is not usable: 2 to 5000 teeth per curve")
+    if not math.isfinite(scale):
+        raise InputProblem(f"Scale = {scale}: must be a finite number (0 = automatic)")
+    shape = getattr(source, "Shape", None)
+    if shape is None or shape.isNull():
+        raise InputProblem("the comb's source has no geometry")
+    per_curve = []
+    proxy = getattr(source, "Proxy", None)
+    stored = proxy.plane_curves(source) if hasattr(proxy, "plane_curves") else None
+    if stored and all(isinstance(c, el().SmoothElastica) for c in stored[0]):
+        per_curve = [_elastica_teeth(c, stored[1], samples) for c in stored[0]]
+    else:
+        try:
+            edges = [shape.getElement(s) for s in subs if s.startswith("Edge")] if subs \
+                else shape.Edges
+        except (Part.OCCError, ValueError, IndexError):
+            raise InputProblem(f"{source.Label} has no {', '.join(subs)}") from None
+        if not edges:
+            raise InputProblem("the comb's source has no edges")
+        per_curve = [_edge_teeth(e, samples) for e in edges]
+    kmax = max((abs(k) for _, _, ks in per_curve for k in ks), default=0.0)
+    if scale <= 0:
+        scale = SCALE_SHARE * shape.BoundBox.DiagonalLength / kmax if kmax > 0 else 1.0
+    teeth = [[(f, f - nv * (k * scale)) for f, nv, k in zip(*c)] for c in per_curve]
+    return teeth, scale
+
+
+class CombProxy(FeatureProxy):
+    """Curvature comb along a Fit / Blend result or any edges."""
+
+    kind = "Comb"
+
+    def setup(self, obj):
+        add_property(obj, "App::PropertyLinkSub", "Source", "Comb",
+                     "An Elastica result, or an object (and optionally its edges)")
+        add_property(obj, "App::PropertyInteger", "Samples", "Comb",
+                     "Teeth per curve (2 to 5000)", 60)
+        add_property(obj, "App::PropertyFloat", "Scale", "Comb",
+                     "Tooth length per unit curvature (mm^2); 0 = automatic", 0.0)
+        add_property(obj, "App::PropertyFloat", "UsedScale", "Result", "The scale actually used (mm^2)")
+        add_property(obj, "App::PropertyString", "Status", "Result", "Outcome of the last update")
+        read_only(obj, "UsedScale", "Status")
+
+    def compute(self, obj):
+        """comb_core's (teeth per curve, scale); raises InputProblem."""
+        if not obj.Source:
+            raise InputProblem("no source")
+        return comb_core(obj.Source[0], obj.Source[1], obj.Samples, obj.Scale)
+
+    def apply(self, obj, r):
+        teeth, scale = r
+        shapes = []
+        for curve in teeth:
+            shapes += [Part.makeLine(a, b) for a, b in curve if (a - b).Length > 1e-12]
+            env = dedup([b for _, b in curve])
+            if len(env) > 1:
+                shapes.append(Part.makePolygon(env))
+        if not shapes:
+            report(obj, "the source is straight: zero curvature everywhere")
+            return
+        obj.Shape = Part.makeCompound(shapes)
+        obj.UsedScale = scale
+        obj.Status = "ok"
+
+
+def make(doc, source, subs=(), **props):
+    """A new curvature comb of ``source`` (optionally of its edges ``subs``)."""
+    return new_feature(doc, "ElasticaComb", CombProxy, Source=(source, list(subs)), **props)
+
+
+__all__ = ["CombProxy", "comb_core", "make"]

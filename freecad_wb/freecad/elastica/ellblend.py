@@ -1,0 +1,112 @@
+"""Elliptic blend curve (seed 003): the curve with Jacobi elliptic blending functions
+{1-t, sn((1-t)K), sn(Kt), t} through four picked coplanar points (or with them as
+control points), as a certified B-spline."""
+from __future__ import annotations
+
+import math
+
+from . import defaults
+from .geometry import el, np, part_bspline, plane_coordinates, to_3d
+from .proxy import (FeatureProxy, InputProblem, add_enum, add_property, check_number,
+                    check_tolerance, new_feature, read_only)
+from .sources import gather_vertices
+
+MODES = ["interpolate", "control"]
+K_CONVENTIONS = ["modulus", "parameter"]
+
+
+def ellblend_core(points, plane=None, mode="interpolate", k=0.5, d=2.0, tol=1e-3,
+                  convention="modulus"):
+    """The elliptic blending-function curve of four coplanar 3D points.
+
+    ``mode`` 'interpolate' (the curve passes through the points) or 'control' (they
+    are its control points); ``k`` the elliptic modulus, or with ``convention``
+    'parameter' m = k^2 (the paper's 'k'); ``d`` the end-derivative parameter.
+    Returns a dict with 'curve' (libelastica BlendCurve, plane coordinates),
+    'bspline' (certified within ``tol``), 'placement', 'control' (3D control
+    points). Raises InputProblem."""
+    if len(points) != 4:
+        raise InputProblem(f"{len(points)} points: an elliptic blend needs exactly four")
+    if mode not in MODES:
+        raise InputProblem(f"unknown mode {mode!r} (interpolate or control)")
+    if convention not in K_CONVENTIONS:
+        raise InputProblem(f"unknown k convention {convention!r} (modulus or parameter)")
+    extent = max((a - b).Length for a in points for b in points)
+    for i in range(4):
+        for j in range(i + 1, 4):
+            if (points[i] - points[j]).Length <= 1e-9 * (1.0 + extent):
+                raise InputProblem(f"points {i + 1} and {j + 1} coincide")
+    name = "k" if convention == "modulus" else "m"
+    if not (math.isfinite(k) and (0.0 <= k < 1.0)):
+        raise InputProblem(f"{name} = {k:g}: the elliptic basis needs 0 <= {name} < 1")
+    d = check_number("d", d, 0.0, None, lo_open=True, why="the end-derivative parameter")
+    tol = check_tolerance(tol)
+    try:
+        xy, plane = plane_coordinates(points, plane, flat=1e-6, what="four points")
+        kw = {"k": float(k)} if convention == "modulus" else {"m": float(k)}
+        curve = el().blend_curve(np().ascontiguousarray(xy), d=float(d), mode=mode, **kw)
+        bs = curve.to_bspline(float(tol))
+    except InputProblem:
+        raise
+    except (ValueError, ArithmeticError, RuntimeError) as exc:
+        hint = ""
+        if "singular" in str(exc).lower():
+            hint = (" (the basis is singular near k = 0.80241, m = 0.64386; in interpolate "
+                    "mode the points may be degenerate)")
+        raise InputProblem(f"elliptic blend failed: {exc}{hint}") from None
+    return {"curve": curve, "bspline": bs, "placement": plane,
+            "control": to_3d(plane, curve.q)}
+
+
+class EllipticBlendProxy(FeatureProxy):
+    """Elliptic blending-function curve (seed 003) through / controlled by four points."""
+
+    kind = "EllipticBlend"
+
+    def setup(self, obj):
+        add_property(obj, "App::PropertyLinkSubList", "Points", "Input",
+                     "Four coplanar points, in order: vertices of sketches or shapes, or a sketch "
+                     "holding four sketch points")
+        add_enum(obj, "Mode", "Blend",
+                 "interpolate: the curve passes through the four points (chord-length "
+                 "parameters); control: the points are its control points", MODES)
+        add_property(obj, "App::PropertyFloat", "K", "Blend",
+                     "Elliptic modulus k in [0, 1) of the basis {1-t, sn((1-t)K), sn(Kt), t} "
+                     "(or m = k^2, see KConvention); k = 0 gives sines", 0.5)
+        add_enum(obj, "KConvention", "Blend",
+                 "modulus: K is the modulus k; parameter: K is m = k^2 (the paper's "
+                 "convention: its rope example 'k = 0.3' is m = 0.3)", K_CONVENTIONS)
+        add_property(obj, "App::PropertyFloat", "D", "Blend",
+                     "End-derivative parameter d > 0: the curve leaves q0 with velocity "
+                     "d (q1 - q0) and ends with d (q3 - q2)", 2.0)
+        add_property(obj, "App::PropertyFloat", "Tolerance", "BSpline",
+                     "Largest distance (mm) of the B-spline from the blending curve", defaults()[0])
+        add_property(obj, "App::PropertyFloat", "BSplineDeviation", "Result",
+                     "Certified distance of the B-spline from the blending curve (mm)")
+        add_property(obj, "App::PropertyVectorList", "ControlPoints", "Result",
+                     "The curve's four control points q0..q3 (global coordinates)")
+        add_property(obj, "App::PropertyString", "Status", "Result", "Outcome of the last update")
+        add_property(obj, "App::PropertyPlacement", "Plane", "Result", "The plane of the curve")
+        read_only(obj, "BSplineDeviation", "ControlPoints", "Status", "Plane")
+
+    def compute(self, obj):
+        """ellblend_core's dict for the linked points; raises InputProblem."""
+        pts, plane = gather_vertices(obj.Points)
+        return ellblend_core(pts, plane, obj.Mode, obj.K, obj.D, obj.Tolerance, obj.KConvention)
+
+    def apply(self, obj, r):
+        obj.Shape = part_bspline(r["bspline"], r["placement"]).toShape()
+        obj.BSplineDeviation = float(r["bspline"].max_deviation)
+        obj.ControlPoints = r["control"]
+        obj.Plane = r["placement"]
+        obj.Status = "ok"
+
+
+def make(doc, sources=(), **props):
+    """A new elliptic blend curve of four points; ``sources`` [(obj, [subnames])];
+    props set Mode, K, KConvention, D, Tolerance."""
+    return new_feature(doc, "ElasticaEllipticBlend", EllipticBlendProxy,
+                       Points=[(o, tuple(s) or ("",)) for o, s in sources], **props)
+
+
+__all__ = ["EllipticBlendProxy", "ellblend_core", "make", "MODES", "K_CONVENTIONS"]

@@ -1,0 +1,99 @@
+"""G2 quadratic B-spline (seed 002): a picked edge or sketch curve -> an affine
+arc-length polyline -> one curvature-continuous uniform quadratic B-spline per
+inflection-free piece, ending exactly on the source's ends and inflections; its
+distance from the source, the largest curvature jump at a joint and the end
+tangent error are shown."""
+from __future__ import annotations
+
+import math
+
+import FreeCAD as App
+import Part
+
+from .geometry import bspline_edges, el, np, plane_coordinates, to_3d
+from .proxy import FeatureProxy, InputProblem, add_property, new_feature, read_only
+from .sources import gather_edges, sample_chain
+
+SAMPLES_PER_VERTEX = 20     # seed 002 §4.2: |p| ~ 20 |x|
+
+
+def g2quad_core(edges, plane=None, nedges=24):
+    """The G2 quadratic B-splines of a chain of edges: a dict with 'result'
+    (libelastica G2Quadratic, plane coordinates), 'placement'. Raises InputProblem."""
+    n = int(nedges)
+    if n < 3:
+        raise InputProblem(f"Edges = {n}: the polyline needs at least 3 edges")
+    if n > 5000:
+        raise InputProblem(f"Edges = {n}: at most 5000 (the B-spline has as many poles)")
+    if Part.Wire(edges).isClosed():
+        raise InputProblem("the source is a closed curve: pick an open one (split it first)")
+    pts, tangents = sample_chain(edges, SAMPLES_PER_VERTEX * n)
+    try:
+        xy, plane = plane_coordinates(pts, plane, flat=1e-6, what="source edges")
+        rot = plane.Rotation.inverted()
+        tan = np().array([tuple(rot.multVec(App.Vector(*t)))[:2] for t in tangents])
+        g = el().g2_quadratic(xy, n, tangents=tan)
+    except InputProblem:
+        raise
+    except (ValueError, ArithmeticError, RuntimeError) as exc:
+        hint = ""
+        if "domain" in str(exc).lower():
+            hint = " (a straight source, or too few edges for its turns: give more edges)"
+        raise InputProblem(f"G2 quadratic B-spline failed: {exc}{hint}") from None
+    return {"result": g, "placement": plane}
+
+
+class G2QuadProxy(FeatureProxy):
+    """Curvature-continuous quadratic B-spline of a picked curve (seed 002)."""
+
+    kind = "G2Quad"
+
+    def setup(self, obj):
+        add_property(obj, "App::PropertyLinkSubList", "Source", "Input",
+                     "The curve: edges of a sketch or any object (one open chain, in a plane)")
+        add_property(obj, "App::PropertyInteger", "Edges", "G2 quadratic",
+                     "Edges of the affine arc-length polyline (3 to 5000): the B-splines have "
+                     "about as many poles; the distance from the source falls like 1/Edges^2", 24)
+        add_property(obj, "App::PropertyFloat", "Deviation", "Result",
+                     "Largest distance of the B-splines from the source (mm)")
+        add_property(obj, "App::PropertyFloat", "CurvatureJump", "Result",
+                     "Largest relative curvature jump at a joint (0 up to rounding: G2)")
+        add_property(obj, "App::PropertyFloat", "EndTangentError", "Result",
+                     "Largest angle between a piece's end tangent and the source's (degrees)")
+        add_property(obj, "App::PropertyInteger", "Pieces", "Result",
+                     "Inflection-free pieces (one B-spline each)")
+        add_property(obj, "App::PropertyInteger", "Poles", "Result", "Poles of all B-splines")
+        add_property(obj, "App::PropertyVectorList", "Polyline", "Result",
+                     "The affine arc-length polyline (global coordinates)")
+        add_property(obj, "App::PropertyString", "Status", "Result", "Outcome of the last update")
+        add_property(obj, "App::PropertyPlacement", "Plane", "Result", "The plane of the curve")
+        read_only(obj, "Deviation", "CurvatureJump", "EndTangentError", "Pieces", "Poles",
+                  "Polyline", "Status", "Plane")
+
+    def compute(self, obj):
+        edges, plane = gather_edges(obj.Source)
+        return g2quad_core(edges, plane, obj.Edges)
+
+    def apply(self, obj, r):
+        g, plc = r["result"], r["placement"]
+        edges = bspline_edges(g.bsplines, plc)
+        obj.Shape = Part.Wire(edges) if len(edges) > 1 else edges[0]
+        obj.Deviation = float(g.deviation)
+        obj.CurvatureJump = float(g.curvature_jump)
+        obj.EndTangentError = math.degrees(g.end_tangent_error or 0.0)
+        obj.Pieces = len(g.bsplines)
+        obj.Poles = g.npoles
+        obj.Polyline = to_3d(plc, g.polyline.points)
+        obj.Plane = plc
+        obj.Status = "ok" if g.covers_source else (
+            "ok, but an end of the source next to an inflection is left out (too short for "
+            "3 edges): more edges cover it")
+
+
+def make(doc, sources=(), **props):
+    """A new G2 quadratic B-spline of the picked edges ``sources`` [(obj, [subnames])]."""
+    return new_feature(doc, "ElasticaG2Quad", G2QuadProxy,
+                       Source=[(o, tuple(s) or ("",)) for o, s in sources], **props)
+
+
+__all__ = ["G2QuadProxy", "g2quad_core", "make"]

@@ -1,0 +1,154 @@
+"""FreeCAD geometry <-> the library's plane coordinates: placements of planes,
+plane coordinates of 3D points (the sketch's plane or a fitted one), Part
+B-splines of library B-splines, and writing results into sketches."""
+from __future__ import annotations
+
+import FreeCAD as App
+import Part
+
+from . import ensure_binding
+from .proxy import InputProblem
+
+
+def el():
+    """The libelastica binding (imported on first use)."""
+    return ensure_binding()
+
+
+def np():
+    import numpy
+    return numpy
+
+
+def is_sketch(obj):
+    return obj is not None and obj.isDerivedFrom("Sketcher::SketchObject")
+
+
+def dedup(vecs, tol=1e-9):
+    """The vectors without consecutive repeats."""
+    out = []
+    for v in vecs:
+        if not out or (v - out[-1]).Length > tol:
+            out.append(v)
+    return out
+
+
+# ----------------------------------------------------------- placements <-> frames
+
+def placement_from_frame(frame):
+    """App.Placement of a libelastica prep.Frame (origin, e1, e2, e3 = normal)."""
+    e1, e2, e3 = (App.Vector(*map(float, v)) for v in (frame.e1, frame.e2, frame.e3))
+    m = App.Matrix(e1.x, e2.x, e3.x, 0, e1.y, e2.y, e3.y, 0, e1.z, e2.z, e3.z, 0)
+    return App.Placement(App.Vector(*map(float, frame.origin)), App.Rotation(m))
+
+
+def to_3d(plc, xy):
+    """Global 3D vectors of plane points (n, 2) in the frame ``plc``."""
+    return [plc.multVec(App.Vector(float(x), float(y), 0.0)) for x, y in xy]
+
+
+def to_plane(plc, vectors):
+    """(n, 3) local coordinates of global vectors in the frame ``plc``."""
+    inv = plc.inverse()
+    return np().array([tuple(inv.multVec(App.Vector(v))) for v in vectors], dtype=float)
+
+
+def plane_coordinates(points, plane=None, flat=1e-9, what="points"):
+    """(xy (n, 2), placement) of 3D points: in ``plane`` (a sketch's placement) when
+    they all lie in it, else in their best-fitting plane. ``flat``: relative
+    distance from the fitted plane allowed (None: any, a plane fit of scan data)."""
+    n = np()
+    extent = max(((a - points[0]).Length for a in points), default=0.0)
+    if plane is not None:
+        local = to_plane(plane, points)
+        if n.max(n.abs(local[:, 2])) <= 1e-9 * (1.0 + extent):
+            return n.ascontiguousarray(local[:, :2]), plane
+    xyz = n.array([tuple(p) for p in points], dtype=float)
+    xy, frame = el().plane_fit(xyz)
+    if flat is not None and frame.rms > flat * (1.0 + extent):
+        raise InputProblem(f"the {what} are not coplanar (rms distance {frame.rms:.3g} mm from "
+                           "their best plane)")
+    return n.ascontiguousarray(xy), placement_from_frame(frame)
+
+
+# ----------------------------------------------------------- B-splines
+
+def curve_bspline(curve, tol, degree):
+    """libelastica BSpline (plane coordinates) of a fitted / Hermite curve: a smooth
+    elastica within ``tol``; a discrete one as the C2 cubic through its vertices."""
+    e = el()
+    if isinstance(curve, e.SmoothElastica):
+        return curve.to_bspline(tol=tol, degree=degree)
+    from libelastica.bspline import interpolate_c2
+    return interpolate_c2(curve.points())
+
+
+def part_bspline(bs, plc):
+    """Part.BSplineCurve in 3D of a libelastica BSpline in the plane of ``plc``."""
+    poles = to_3d(plc, bs.poles[:, :2])
+    c = Part.BSplineCurve()
+    c.buildFromPolesMultsKnots(poles, [int(m) for m in bs.mults], [float(k) for k in bs.knots],
+                               False, int(bs.degree))
+    return c
+
+
+def bspline_edges(bsplines, plc):
+    """The Part edges of library B-splines in the plane ``plc``."""
+    return [part_bspline(b, plc).toShape() for b in bsplines]
+
+
+# ----------------------------------------------------------- sketches
+
+def link_edge(obj, name, geo_index=-1):
+    """The global edge of a link: a sketch's geometry ``geo_index`` when >= 0 (stable
+    when the sketch changes), else ``obj.Shape``'s sub-element ``name``."""
+    if is_sketch(obj) and 0 <= geo_index < len(obj.Geometry):
+        e = obj.Geometry[geo_index].toShape()
+        e.transformShape(obj.getGlobalPlacement().toMatrix())
+        return e
+    try:
+        return obj.Shape.getElement(name)
+    except (Part.OCCError, ValueError, IndexError):
+        raise InputProblem(f"{obj.Label} has no {name}") from None
+
+
+def sketch_geo_of_edge(sketch, edge_name):
+    """The index of the sketch geometry whose shape is the sketch edge 'EdgeN', or None."""
+    edge = sketch.Shape.getElement(edge_name)
+    inv = sketch.getGlobalPlacement().inverse()
+    mid = inv.multVec(edge.valueAt(0.5 * (edge.FirstParameter + edge.LastParameter)))
+    for i, g in enumerate(sketch.Geometry):
+        if sketch.getConstruction(i):
+            continue
+        try:
+            if g.toShape().distToShape(Part.Vertex(mid))[0] < 1e-7:
+                return i
+        except Part.OCCError:
+            continue
+    return None
+
+
+def write_to_sketch(feature, sketch, constrain_to=None):
+    """Add the feature's B-spline edge(s) to ``sketch``, mapped into its plane: a copy,
+    which no longer follows the feature. ``constrain_to`` [(geo index, pos), (geo index,
+    pos)] adds endpoint tangency of the new curve's start and end to those sketch
+    geometries (what version-1 blends recorded). Returns the new geometry indices."""
+    inv = sketch.getGlobalPlacement().inverse()
+    ids = []
+    for e in feature.Shape.Edges:
+        c = e.Curve.copy()
+        if not isinstance(c, Part.BSplineCurve):
+            c = e.toNurbs().Edges[0].Curve
+        c.transform(inv.toMatrix())
+        ids.append(sketch.addGeometry(c, False))
+    if constrain_to and ids:
+        import Sketcher
+        (g0, pos0), (g1, pos1) = constrain_to
+        first, last = ids[0], ids[-1]
+        for g, pos, mine, mypos in ((g0, pos0, first, 1), (g1, pos1, last, 2)):
+            try:
+                sketch.addConstraint(Sketcher.Constraint("Tangent", g, pos, mine, mypos))
+            except Exception as exc:  # the solver may refuse; keep the curve
+                App.Console.PrintWarning(f"Elastica: tangency not added ({exc})\n")
+                sketch.addConstraint(Sketcher.Constraint("Coincident", g, pos, mine, mypos))
+    return ids

@@ -1,0 +1,184 @@
+"""What every Elastica feature shares: ``InputProblem`` (a message for the user), typed
+properties with tooltips, checks of typed values that explain instead of clamping,
+and ``FeatureProxy``, the base of the Part::FeaturePython proxies.
+
+A proxy's ``execute`` calls its ``compute`` (gathers geometry, calls the library,
+raises InputProblem for bad input) and then ``apply`` (writes shape and results).
+Every failure becomes a message in the report view and in the ``Status``
+property; the previous shape is kept (objects built on it keep working) and the
+view provider draws it dashed. Nothing here imports GUI code: view providers are
+attached through ``VIEW_HOOK``, which the GUI (init_gui) sets.
+"""
+from __future__ import annotations
+
+import math
+
+import FreeCAD as App
+
+VERSION = 2             # of the proxies' saved state
+VIEW_HOOK = []          # [attach(obj), restored(obj)] set by init_gui: view providers
+
+
+class InputProblem(ValueError):
+    """Unusable input for a feature (a message for the user, not a bug)."""
+
+
+def add_property(obj, kind, name, group, tip, value=None):
+    """Add a property (with its tooltip) unless the object has it already."""
+    if name not in obj.PropertiesList:
+        obj.addProperty(kind, name, group, tip)
+        if value is not None:
+            setattr(obj, name, value)
+
+
+def add_enum(obj, name, group, tip, values, value=None):
+    """An enumeration property; when it has no values yet (new object) they are
+    set, and the current one to value (default: the first)."""
+    add_property(obj, "App::PropertyEnumeration", name, group, tip)
+    if not obj.getEnumerationsOfProperty(name):
+        setattr(obj, name, list(values))
+        if value is not None:
+            setattr(obj, name, value)
+
+
+def read_only(obj, *names):
+    for name in names:
+        obj.setEditorMode(name, 1)
+
+
+def check_number(name, value, lo=None, hi=None, unit="", lo_open=False, why=""):
+    """``value`` as a float, or InputProblem saying what was typed and what is
+    possible (NaN, infinities and out-of-range values are never clamped)."""
+    v = float(value)
+    rng = ""
+    if lo is not None and hi is not None:
+        rng = f"{'(' if lo_open else '['}{lo:g}, {hi:g}]"
+    elif lo is not None:
+        rng = f"{'>' if lo_open else '>='} {lo:g}"
+    ok = math.isfinite(v) and (lo is None or (v > lo if lo_open else v >= lo)) \
+        and (hi is None or v <= hi)
+    if not ok:
+        raise InputProblem(f"{name} = {v:g}{' ' + unit if unit else ''} is not usable: it must "
+                           f"be {rng or 'finite'}{' ' + unit if unit and rng else ''}"
+                           + (f" ({why})" if why else ""))
+    return v
+
+
+def check_tolerance(value, name="Tolerance"):
+    """A B-spline tolerance in mm: finite, at least 1e-9 mm (below that nothing is
+    measured, and a FreeCAD file stores 16 decimals)."""
+    return check_number(name, value, 1e-9, None, "mm",
+                        why="a B-spline closer than a nanometre is not measurable")
+
+
+def check_degree(value, lo=3, hi=7, name="Degree"):
+    v = int(value)
+    if not lo <= v <= hi:
+        raise InputProblem(f"{name} = {v} is not usable: B-splines here have degree {lo} to {hi}")
+    return v
+
+
+def report(obj, msg, error=True):
+    """The message in the report view and, as 'error: ...', in obj.Status."""
+    (App.Console.PrintError if error else App.Console.PrintWarning)(
+        f"Elastica {obj.Label}: {msg}\n")
+    if "Status" in obj.PropertiesList:
+        obj.Status = f"error: {msg}" if error else msg
+
+
+def new_feature(doc, name, proxy_class, **props):
+    """A Part::FeaturePython ``name`` in ``doc`` with a ``proxy_class`` proxy, its
+    properties set in the order given, and its view provider (GUI)."""
+    obj = doc.addObject("Part::FeaturePython", name)
+    proxy_class(obj)
+    for k, v in props.items():
+        setattr(obj, k, v)
+    attach_view(obj)
+    return obj
+
+
+def attach_view(obj, restored=False):
+    """The feature's view provider, when the GUI has installed VIEW_HOOK."""
+    if VIEW_HOOK:
+        VIEW_HOOK[1 if restored else 0](obj)
+
+
+class FeatureProxy:
+    """Common state handling. Pickled state: kind, version and the exact values of
+    the float properties (a FreeCAD file keeps 16 decimals of a float property:
+    1e-300 would come back as 0); the properties hold the rest, so files stay
+    readable without this code. Subclasses define setup (properties), compute
+    (raises InputProblem) and apply (writes the result)."""
+
+    kind = ""
+
+    def __init__(self, obj):
+        self.Object = obj
+        self._exact = {}
+        obj.Proxy = self
+        self.setup(obj)
+
+    # ---------------------------------------------------------------- recompute
+
+    def execute(self, obj):
+        try:
+            r = self.compute(obj)
+        except InputProblem as exc:
+            report(obj, str(exc))
+            self.on_error(obj)
+            return
+        except Exception as exc:  # a bug or a kernel error: report it, keep the shape
+            report(obj, f"{type(exc).__name__}: {exc}")
+            self.on_error(obj)
+            return
+        self.apply(obj, r)
+
+    def setup(self, obj):
+        pass
+
+    def on_error(self, obj):
+        """Called after a failed recompute (the message is in Status already)."""
+
+    def onChanged(self, obj, prop):
+        pass
+
+    # ---------------------------------------------------------------- save / restore
+
+    def _float_props(self, obj):
+        return [p for p in obj.PropertiesList if obj.getTypeIdOfProperty(p) == "App::PropertyFloat"]
+
+    def __getstate__(self):
+        state = {"kind": self.kind, "version": VERSION}
+        obj = getattr(self, "Object", None)
+        try:
+            state["exact"] = {p: repr(float(getattr(obj, p))) for p in self._float_props(obj)}
+        except Exception:  # no object (yet) / being deleted: nothing exact to keep
+            pass
+        return state
+
+    def __setstate__(self, state):
+        self._exact = dict((state or {}).get("exact") or {})
+        return None
+
+    def dumps(self):
+        return self.__getstate__()
+
+    def loads(self, state):
+        return self.__setstate__(state)
+
+    def onDocumentRestored(self, obj):
+        self.Object = obj
+        self.setup(obj)               # properties added by newer versions
+        changed = False
+        for p, text in getattr(self, "_exact", {}).items():
+            if p not in obj.PropertiesList:
+                continue
+            v, stored = float(text), float(getattr(obj, p))
+            # the file's rounding of the exact value: put the exact one back
+            if v != stored and (f"{v:.16f}" == f"{stored:.16f}" or math.isnan(v)):
+                setattr(obj, p, v)
+                changed = True
+        if changed:
+            obj.purgeTouched()
+        self._exact = {}
+        attach_view(obj, restored=True)   # a document made without the GUI, opened in it

@@ -1,0 +1,210 @@
+"""Points, vertices and edges from what the user picked (a PropertyLinkSub(List)
+value: [(obj, (subname, ...)), ...]): sketch edges and vertices, sketches of points,
+Points objects, wires and 3D polylines, CSV files. Raises InputProblem with a
+message for anything unusable."""
+from __future__ import annotations
+
+import FreeCAD as App
+import Part
+
+from .geometry import dedup, el, is_sketch
+from .proxy import InputProblem
+
+
+def _subs(subs):
+    return [s for s in (subs or ()) if s]
+
+
+def sketch_points(sketch):
+    """The global positions of a sketch's point geometries (0.20 reports every
+    sketch point as construction geometry, so all are taken)."""
+    plc = sketch.getGlobalPlacement()
+    return [plc.multVec(g.toShape().Point) for g in sketch.Geometry
+            if g.TypeId == "Part::GeomPoint"]
+
+
+def _element(obj, name):
+    try:
+        return obj.Shape.getElement(name)
+    except (Part.OCCError, ValueError, IndexError):
+        raise InputProblem(f"{obj.Label} has no {name}") from None
+
+
+def chain(edges):
+    """The edges sorted head to tail into one chain; InputProblem if they form several."""
+    groups = Part.sortEdges(edges) if len(edges) > 1 else [edges]
+    if len(groups) != 1:
+        raise InputProblem(f"the selected edges form {len(groups)} separate chains, not one curve")
+    return groups[0]
+
+
+def sample_edges(edges, samples_per_edge):
+    """Ordered points along a chain of edges (sorted and oriented head to tail);
+    lines give their two end points. Returns (points, closed)."""
+    ch = chain(edges)
+    pts = []
+    for e in ch:
+        if isinstance(e.Curve, Part.Line) or e.Curve.TypeId == "Part::GeomLine":
+            seg = [e.Vertexes[0].Point, e.Vertexes[-1].Point]
+        else:
+            seg = e.discretize(Number=samples_per_edge)
+        if pts:
+            if (seg[0] - pts[-1]).Length > (seg[-1] - pts[-1]).Length:
+                seg = list(reversed(seg))
+        elif len(ch) > 1:
+            nxt = ch[1]
+            ends = [nxt.Vertexes[0].Point, nxt.Vertexes[-1].Point]
+            if min((seg[0] - p).Length for p in ends) < min((seg[-1] - p).Length for p in ends):
+                seg = list(reversed(seg))
+        pts.extend(seg)
+    return dedup(pts), Part.Wire(ch).isClosed()
+
+
+def gather_points(sources, csv_file="", samples_per_edge=60):
+    """Points of a fit's input, in 3D, with what is known about them.
+
+    Returns (points: list[App.Vector], plane: App.Placement or None (a sketch's),
+    ordered: bool, closed: bool)."""
+    el()
+    if csv_file:
+        from libelastica.io import read_points
+        try:
+            arr = read_points(csv_file, min_points=1)
+        except ValueError as exc:
+            raise InputProblem(str(exc)) from None
+        pts = [App.Vector(*(list(map(float, r)) + [0.0] * (3 - len(r)))) for r in arr]
+        closed = len(pts) > 2 and (pts[0] - pts[-1]).Length < 1e-9
+        return pts, None, True, closed
+    if not sources:
+        raise InputProblem("nothing selected: select sketch edges or vertices, a Points "
+                           "object, a wire, or give a CSV file")
+    edges, vertices, points = [], [], []
+    plane = None
+    sketches = set()
+    for obj, subs in sources:
+        subs = _subs(subs)
+        if is_sketch(obj):
+            sketches.add(obj.Name)
+            plane = obj.getGlobalPlacement()
+            if not subs and (obj.Shape.isNull() or not obj.Shape.Edges):
+                pts = sketch_points(obj)          # a sketch of points only
+                if not pts:
+                    raise InputProblem(f"{obj.Label} holds no edges and no points")
+                vertices.extend(pts)
+                continue
+        if obj.isDerivedFrom("Points::Feature"):
+            points.extend(obj.Placement.multVec(App.Vector(*p)) for p in obj.Points.Points)
+            continue
+        shape = getattr(obj, "Shape", None)
+        if shape is None or shape.isNull():
+            raise InputProblem(f"{obj.Label} has no geometry")
+        if not subs:
+            if shape.Edges:
+                edges.extend(shape.Edges)
+            else:
+                vertices.extend(v.Point for v in shape.Vertexes)
+            continue
+        for s in subs:
+            e = _element(obj, s)
+            if s.startswith("Edge"):
+                edges.append(e)
+            elif s.startswith("Vertex"):
+                vertices.append(e.Point)
+            else:
+                raise InputProblem(f"{obj.Label}.{s}: select edges or vertices")
+    if len(sketches) > 1:
+        plane = None
+    if sum(bool(x) for x in (edges, vertices, points)) > 1:
+        raise InputProblem("select either edges, or vertices, or a Points object, not a mix")
+    if edges:
+        pts, closed = sample_edges(edges, samples_per_edge)
+        return pts, plane, True, closed
+    return dedup(vertices or points), plane, False, False
+
+
+def gather_vertices(sources):
+    """The picked points of an elliptic blend, in selection order, without merging
+    coincident ones: sketch vertices or vertices of any shape ('VertexN'), a whole
+    sketch (its sketch points), a whole Points object, or a whole shape (its
+    vertices). Returns (points, plane: the sketch placement when all come from one
+    sketch, else None)."""
+    if not sources:
+        raise InputProblem("nothing selected: select four vertices, or a sketch of four points")
+    pts, sketches = [], set()
+    for obj, subs in sources:
+        subs = _subs(subs)
+        if is_sketch(obj):
+            sketches.add(obj.Name)
+            if not subs:
+                pts.extend(sketch_points(obj))
+                continue
+        if obj.isDerivedFrom("Points::Feature") and not subs:
+            pts.extend(obj.Placement.multVec(App.Vector(*p)) for p in obj.Points.Points)
+            continue
+        shape = getattr(obj, "Shape", None)
+        if shape is None or shape.isNull():
+            raise InputProblem(f"{obj.Label} has no geometry")
+        if not subs:
+            pts.extend(v.Point for v in shape.Vertexes)
+            continue
+        for s in subs:
+            if not s.startswith("Vertex"):
+                raise InputProblem(f"{obj.Label}.{s}: select vertices (points), not {s}")
+            pts.append(_element(obj, s).Point)
+    plane = None
+    if len(sketches) == 1 and all(o.Name in sketches for o, _ in sources):
+        plane = next(o for o, _ in sources).getGlobalPlacement()
+    return pts, plane
+
+
+def gather_edges(sources):
+    """The picked edges (a chain, sorted head to tail) and the sketch plane when they
+    all come from one sketch: (edges, plane or None). A whole object gives all its
+    edges."""
+    if not sources:
+        raise InputProblem("nothing selected: select an edge or a sketch curve")
+    edges, sketches, plane = [], set(), None
+    for obj, subs in sources:
+        subs = _subs(subs)
+        shape = getattr(obj, "Shape", None)
+        if shape is None or shape.isNull() or not shape.Edges:
+            raise InputProblem(f"{obj.Label} has no edges")
+        if is_sketch(obj):
+            sketches.add(obj.Name)
+            plane = obj.getGlobalPlacement()
+        for s in subs or [f"Edge{i + 1}" for i in range(len(shape.Edges))]:
+            if not s.startswith("Edge"):
+                raise InputProblem(f"{obj.Label}.{s}: select edges, not {s}")
+            edges.append(_element(obj, s))
+    if len(sketches) != 1 or any(not is_sketch(o) for o, _ in sources):
+        plane = None
+    return chain(edges), plane
+
+
+def sample_chain(edges, n):
+    """n + 1 points and unit tangents along a chain of edges, evenly spaced in arc
+    length (each edge's share by its length), oriented head to tail."""
+    import numpy as np
+    total = sum(e.Length for e in edges)
+    pts, tans = [], []
+    prev = None
+    for i, e in enumerate(edges):
+        k = max(2, int(round(n * e.Length / total)) + 1)
+        seg = e.discretize(Number=k)                     # even in arc length (OCC)
+        tan = [App.Vector(e.tangentAt(e.Curve.parameter(p))).normalize() for p in seg]
+        forward = True
+        if prev is not None:
+            forward = (seg[0] - prev).Length <= (seg[-1] - prev).Length
+        elif len(edges) > 1:
+            nxt = edges[1]
+            ends = [nxt.Vertexes[0].Point, nxt.Vertexes[-1].Point]
+            forward = min((seg[-1] - p).Length for p in ends) <= min((seg[0] - p).Length
+                                                                      for p in ends)
+        if not forward:
+            seg, tan = seg[::-1], [-t for t in tan[::-1]]
+        if pts:
+            seg, tan = seg[1:], tan[1:]
+        pts.extend(seg)
+        tans.extend(tan)
+        prev = pts[-1]
+    return pts, np.array([tuple(t) for t in tans])

@@ -1,0 +1,281 @@
+"""View providers of the Elastica features (GUI only; this module imports no GUI
+code at load time, so old documents naming ``features.ViewProvider`` load
+headless too).
+
+Each feature gets its icon, a colour of its own (fits cycle through a palette, a
+comb takes its source's colour), double-click opens its task panel, and a
+feature whose last recompute failed is drawn dashed (it shows the last good
+shape). A fit also draws the points it fitted (markers) and, optionally, the
+residual segments to their points on the curve; a G2 quadratic B-spline its
+affine arc-length polyline (optionally)."""
+from __future__ import annotations
+
+import FreeCAD as App
+
+from . import icon
+
+PALETTE = [("red", (0.84, 0.15, 0.16)), ("blue", (0.12, 0.47, 0.71)),
+           ("green", (0.17, 0.63, 0.17)), ("purple", (0.58, 0.40, 0.74)),
+           ("orange", (1.0, 0.50, 0.05)), ("brown", (0.55, 0.34, 0.29)),
+           ("teal", (0.09, 0.75, 0.81))]
+ICONS = {"Fit": "fit", "Blend": "blend", "Comb": "comb", "EllipticBlend": "ellblend",
+         "G2Quad": "g2quad"}
+WIDTHS = {"Fit": 3.0, "Blend": 3.0, "Comb": 1.0, "EllipticBlend": 3.0, "G2Quad": 3.0}
+
+
+def _kind(obj):
+    return getattr(getattr(obj, "Proxy", None), "kind", "")
+
+
+def _rgb(c):
+    return tuple(float(x) for x in tuple(c)[:3])
+
+
+def colour_name(obj):
+    """The palette name of a feature's line colour ('' when not from the palette)."""
+    vobj = getattr(obj, "ViewObject", None)
+    if vobj is None:
+        return ""
+    rgb = _rgb(vobj.LineColor)
+    return next((name for name, c in PALETTE if max(abs(a - b) for a, b in zip(c, rgb)) < 0.01),
+                "")
+
+
+def _next_colour(obj):
+    """The first palette colour no other Elastica feature of the document uses."""
+    used = {colour_name(o) for o in obj.Document.Objects if o is not obj and _kind(o)}
+    return next((c for name, c in PALETTE if name not in used), PALETTE[0][1])
+
+
+def _lighter(c, amount=0.45):
+    return tuple(x + (1.0 - x) * amount for x in c)
+
+
+def attach(obj):
+    """Give an Elastica feature its view provider (once) and its default look."""
+    vobj = getattr(obj, "ViewObject", None)
+    if vobj is None or isinstance(getattr(vobj, "Proxy", None), ViewProvider):
+        return
+    kind = _kind(obj)
+    ViewProvider(vobj, ICONS.get(kind, "elastica"))
+    if kind == "Comb":
+        src = obj.Source[0] if getattr(obj, "Source", None) else None
+        base = _rgb(src.ViewObject.LineColor) if src is not None and _kind(src) and \
+            getattr(src, "ViewObject", None) is not None else (0.17, 0.63, 0.17)
+        colour = _lighter(base)
+    else:
+        colour = _next_colour(obj)
+    vobj.LineColor = colour
+    vobj.PointColor = colour
+    vobj.LineWidth = WIDTHS.get(kind, 2.0)
+    vobj.PointSize = 1.0
+
+
+def attach_missing(doc):
+    """View providers for the Elastica features of a document made without the GUI."""
+    for o in doc.Objects:
+        if _kind(o):
+            attach(o)
+
+
+def saved_visibility(path):
+    """{object name: visibility} as saved in an .FCStd without GUI data (a document
+    made by freecadcmd), or None when the file has its GuiDocument.xml."""
+    import zipfile
+    import xml.etree.ElementTree as ET
+    try:
+        with zipfile.ZipFile(path) as z:
+            if "GuiDocument.xml" in z.namelist():
+                return None
+            root = ET.fromstring(z.read("Document.xml"))
+    except (OSError, KeyError, zipfile.BadZipFile, ET.ParseError):
+        return None
+    out = {}
+    for o in root.iter("Object"):
+        for p in o.iter("Property"):
+            if p.get("name") == "Visibility":
+                b = p.find("Bool")
+                if b is not None and o.get("name"):
+                    out[o.get("name")] = b.get("value") == "true"
+    return out
+
+
+_OPENING = set()
+
+
+def finish_opening(doc):
+    """After FreeCAD has opened a document made without the GUI (which shows only
+    some objects): the view providers of its Elastica features and the visibility
+    its objects were saved with."""
+    _OPENING.discard(doc.Name)
+    attach_missing(doc)
+    vis = saved_visibility(doc.FileName) if doc.FileName else None
+    for name, shown in (vis or {}).items():
+        o = doc.getObject(name)
+        if o is not None and getattr(o, "ViewObject", None) is not None:
+            o.ViewObject.Visibility = shown
+            if o.isDerivedFrom("Points::Feature"):     # data points: seen, not specks
+                o.ViewObject.PointSize = 4.0
+                o.ViewObject.ShapeColor = (0.1, 0.1, 0.1)
+
+
+def restored(obj):
+    """An Elastica feature was restored: its view provider now, the rest of the
+    document once FreeCAD has finished opening it."""
+    attach(obj)
+    doc = obj.Document
+    if doc.Name not in _OPENING:
+        _OPENING.add(doc.Name)
+        from PySide import QtCore
+        name = doc.Name
+        QtCore.QTimer.singleShot(0, lambda: name in App.listDocuments() and
+                                 finish_opening(App.getDocument(name)))
+
+
+class ViewProvider:
+    """Icon, colours, overlays, the task panel on double-click."""
+
+    def __init__(self, vobj, icon_name):
+        self.icon_name = icon_name
+        vobj.Proxy = self
+        self._add_properties(vobj)
+
+    # ---------------------------------------------------------------- properties
+
+    def _add_properties(self, vobj):
+        kind = _kind(vobj.Object)
+        props = []
+        if kind == "Fit":
+            props = [("ShowData", "Fitted points: markers at the points the fit used", True),
+                     ("ShowResiduals", "Fitted points: a segment from each point to the curve "
+                                       "point it was measured to", False)]
+        elif kind == "G2Quad":
+            props = [("ShowPolyline", "The affine arc-length polyline (the B-spline's "
+                                      "control polygon inside each piece)", True)]
+        for name, tip, value in props:
+            if name not in vobj.PropertiesList:
+                vobj.addProperty("App::PropertyBool", name, "Elastica", tip)
+                setattr(vobj, name, value)
+
+    # ---------------------------------------------------------------- scene
+
+    def attach(self, vobj):
+        self.Object = vobj.Object
+        self._overlay = None
+        if _kind(vobj.Object) not in ("Fit", "G2Quad"):
+            return
+        from pivy import coin
+        root = coin.SoSeparator()
+        self._colour = coin.SoBaseColor()
+        self._coords = coin.SoCoordinate3()
+        style = coin.SoDrawStyle()
+        style.pointSize = 6.0
+        style.lineWidth = 1.0
+        self._points = coin.SoPointSet()
+        self._lines = coin.SoLineSet()
+        self._line_coords = coin.SoCoordinate3()
+        pick = coin.SoPickStyle()
+        pick.style = coin.SoPickStyle.UNPICKABLE
+        for node in (pick, self._colour, style, self._coords, self._points):
+            root.addChild(node)
+        lines = coin.SoSeparator()
+        for node in (self._line_coords, self._lines):
+            lines.addChild(node)
+        root.addChild(lines)
+        # beside the display modes, shown with the feature (onChanged: Visibility)
+        self._overlay = coin.SoSwitch()
+        self._overlay.addChild(root)
+        vobj.RootNode.addChild(self._overlay)
+        self._show(vobj)
+        self._refresh(vobj)
+
+    def _show(self, vobj):
+        if getattr(self, "_overlay", None) is not None:
+            self._overlay.whichChild = 0 if vobj.Visibility else -1
+
+    def overlay_counts(self):
+        """(markers, segments) drawn now (tests)."""
+        if getattr(self, "_overlay", None) is None:
+            return 0, 0
+        return self._points.numPoints.getValue(), self._lines.numVertices.getNum()
+
+    def _refresh(self, vobj):
+        if getattr(self, "_overlay", None) is None:
+            return
+        obj = vobj.Object
+        rgb = _rgb(vobj.LineColor)
+        if _kind(obj) == "Fit":
+            dark = tuple(0.55 * x for x in rgb)
+            self._colour.rgb.setValue(*dark)
+            data = list(obj.DataPoints) if getattr(vobj, "ShowData", True) else []
+            res = []
+            if getattr(vobj, "ShowResiduals", False) and len(obj.FootPoints) == len(obj.DataPoints):
+                for a, b in zip(obj.DataPoints, obj.FootPoints):
+                    res += [a, b]
+        else:
+            self._colour.rgb.setValue(0.35, 0.35, 0.35)
+            data = list(obj.Polyline) if getattr(vobj, "ShowPolyline", True) else []
+            res = [p for a, b in zip(data, data[1:]) for p in (a, b)]   # its edges
+        self._coords.point.setNum(0)
+        self._coords.point.setValues(0, len(data), [tuple(p) for p in data])
+        self._points.numPoints = len(data)
+        self._line_coords.point.setNum(0)
+        self._line_coords.point.setValues(0, len(res), [tuple(p) for p in res])
+        self._lines.numVertices.setNum(0)
+        self._lines.numVertices.setValues(0, len(res) // 2, [2] * (len(res) // 2))
+
+    def updateData(self, obj, prop):
+        if prop in ("DataPoints", "FootPoints", "Polyline"):
+            self._refresh(obj.ViewObject)
+        elif prop == "Status":
+            vobj = obj.ViewObject
+            if "DrawStyle" in vobj.PropertiesList:
+                vobj.DrawStyle = "Dashed" if obj.Status.startswith("error") else "Solid"
+
+    def onChanged(self, vobj, prop):
+        if prop in ("ShowData", "ShowResiduals", "ShowPolyline", "LineColor"):
+            self._refresh(vobj)
+        elif prop == "Visibility":
+            self._show(vobj)
+
+    # ---------------------------------------------------------------- tree, editing
+
+    def getIcon(self):
+        return icon(getattr(self, "icon_name", "elastica"))
+
+    def claimChildren(self):
+        return []
+
+    def setEdit(self, vobj, mode=0):
+        if mode != 0:
+            return None
+        from . import taskpanels
+        return taskpanels.open_for(vobj.Object)
+
+    def unsetEdit(self, vobj, mode=0):
+        import FreeCADGui as Gui
+        Gui.Control.closeDialog()
+        return True
+
+    def doubleClicked(self, vobj):
+        import FreeCADGui as Gui
+        Gui.ActiveDocument.setEdit(vobj.Object.Name, 0)
+        return True
+
+    # ---------------------------------------------------------------- state
+
+    def __getstate__(self):
+        return {"icon": getattr(self, "icon_name", "elastica")}
+
+    def __setstate__(self, state):
+        self.icon_name = (state or {}).get("icon", "elastica")
+        return None
+
+    def dumps(self):
+        return self.__getstate__()
+
+    def loads(self, state):
+        return self.__setstate__(state)
+
+
+__all__ = ["ViewProvider", "attach", "attach_missing", "colour_name", "PALETTE"]

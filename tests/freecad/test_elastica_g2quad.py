@@ -1,0 +1,144 @@
+"""freecadcmd -t tests of the G2 quadratic B-spline (seed 002) feature: from a sketch
+curve with an inflection, one curvature-continuous quadratic B-spline per piece,
+ending exactly on the source; its reported deviation; parametric updates;
+save / reopen; bad input (a message, the document unchanged)."""
+import os
+import tempfile
+import unittest
+
+import FreeCAD as App
+import Part
+
+import elastica_samples as S
+from freecad.elastica import commands as C
+from freecad.elastica import g2quad as Q
+
+
+def plane_bspline(edge, plane):
+    """The edge's quadratic B-spline in the plane's coordinates (a library BSpline)."""
+    import libelastica as el
+    import numpy as np
+    c = edge.Curve
+    inv = plane.inverse()
+    poles = np.array([tuple(inv.multVec(p))[:2] for p in c.getPoles()])
+    return el.BSpline(c.Degree, poles, c.getKnots(), c.getMultiplicities())
+
+
+class G2QuadTest(unittest.TestCase):
+    def setUp(self):
+        self.doc = S.new_doc("ElasticaG2Quad")
+        self.xy, self.curve = S.keyline_xy(40)
+        self.sk = S.bspline_sketch(self.doc, self.xy)
+
+    def tearDown(self):
+        App.closeDocument(self.doc.Name)
+
+    def test_pieces_are_g2_and_end_exactly_on_the_source(self):
+        import libelastica as el
+        import numpy as np
+        q = Q.make(self.doc, [(self.sk, ["Edge1"])], Edges=30)
+        self.doc.recompute()
+        self.assertEqual(q.Status, "ok")
+        self.assertEqual(q.Pieces, 2)                  # the keyline's one inflection
+        src = self.sk.Shape.Edges[0]
+        ends = [src.valueAt(src.FirstParameter), src.valueAt(src.LastParameter)]
+        edges = q.Shape.Edges
+        self.assertEqual(len(edges), 2)
+        firsts = [e.valueAt(e.FirstParameter) for e in edges]
+        lasts = [e.valueAt(e.LastParameter) for e in edges]
+        self.assertLess((firsts[0] - ends[0]).Length, 1e-9)
+        self.assertLess((lasts[1] - ends[1]).Length, 1e-9)
+        self.assertLess((lasts[0] - firsts[1]).Length, 1e-9)      # meet at the inflection
+        self.assertLess(src.distToShape(Part.Vertex(lasts[0]))[0], 1e-3)
+        for e in edges:
+            self.assertEqual(e.Curve.Degree, 2)
+            kl, kr = el.quadratic_joint_curvatures(plane_bspline(e, q.Plane))
+            jump = np.abs(kl - kr) / np.maximum(np.abs(kl), np.abs(kr))
+            self.assertLess(jump.max(), 1e-9)
+        self.assertLess(q.CurvatureJump, 1e-9)
+        # the reported deviation is what one measures (the source is a B-spline through
+        # 40 points of the elastica: at most a few hundredths of a mm off)
+        measured = max(src.distToShape(Part.Vertex(p))[0] for e in edges for p in e.discretize(200))
+        self.assertLess(abs(measured - q.Deviation), 0.05 * q.Deviation + 1e-4)
+        self.assertLess(q.Deviation, 0.5)
+        self.assertGreater(q.EndTangentError, 0.0)
+        self.assertLess(q.EndTangentError, 5.0)
+        self.assertEqual(len(q.Polyline), 31)
+
+    def test_more_edges_come_closer(self):
+        q = Q.make(self.doc, [(self.sk, [])], Edges=20)
+        self.doc.recompute()
+        d20, p20 = q.Deviation, q.Poles
+        q.Edges = 40
+        self.doc.recompute()
+        self.assertGreater(q.Poles, p20)
+        self.assertLess(q.Deviation, 0.4 * d20)         # second order: about a quarter
+
+    def test_follows_its_source(self):
+        q = Q.make(self.doc, [(self.sk, ["Edge1"])])
+        self.doc.recompute()
+        before = q.Shape.Length
+        xy = self.xy.copy()
+        xy[:, 1] *= 1.2
+        self.sk.delGeometry(0)
+        c = Part.BSplineCurve()
+        c.interpolate([App.Vector(x, y, 0) for x, y in xy])
+        self.sk.addGeometry(c, False)
+        self.doc.recompute()
+        self.assertEqual(q.Status, "ok")
+        self.assertGreater(abs(q.Shape.Length - before), 1.0)
+
+    def test_save_reopen_recompute_same_result(self):
+        q = Q.make(self.doc, [(self.sk, ["Edge1"])], Edges=25)
+        self.doc.recompute()
+        pts = [tuple(p) for e in q.Shape.Edges for p in e.discretize(30)]
+        name, qname = self.doc.Name, q.Name
+        path = os.path.join(tempfile.mkdtemp(), "g2.FCStd")
+        self.doc.saveAs(path)
+        App.closeDocument(name)
+        self.doc = App.openDocument(path)
+        q = self.doc.getObject(qname)
+        self.assertEqual(q.Proxy.kind, "G2Quad")
+        q.touch()
+        self.doc.recompute()
+        self.assertEqual(q.Status, "ok")
+        self.assertLess(S.distance_to_shape(pts, q.Shape), 1e-9)
+
+    def test_bad_values_give_a_message_and_stay_as_typed(self):
+        q = Q.make(self.doc, [(self.sk, ["Edge1"])])
+        self.doc.recompute()
+        length = q.Shape.Length
+        q.Edges = 2
+        self.doc.recompute()
+        self.assertTrue(q.Status.startswith("error"))
+        self.assertIn("Edges = 2", q.Status)
+        self.assertEqual(q.Edges, 2)
+        self.assertAlmostEqual(q.Shape.Length, length, delta=1e-12)
+
+    def _rejected(self, sources):
+        before = S.doc_state(self.doc)
+        del C.MESSAGES[:]
+        self.assertIsNone(C.g2quad_sources(sources, open_panel=False))
+        self.assertEqual(len(C.MESSAGES), 1)
+        self.assertEqual(S.doc_state(self.doc), before)
+        return C.MESSAGES[0]
+
+    def test_bad_input_leaves_the_document_unchanged(self):
+        self.assertIn("nothing selected", self._rejected([]))
+        self.assertIn("closed", self._rejected([(S.circle_sketch(self.doc), ["Edge1"])]))
+        before = S.doc_state(self.doc)
+        line = self.doc.addObject("Part::Feature", "Line")
+        line.Shape = Part.makeLine(App.Vector(0, 0, 0), App.Vector(50, 10, 0))
+        self.doc.recompute()
+        self.assertIn("failed", self._rejected([(line, ["Edge1"])]))
+        helix = self.doc.addObject("Part::Feature", "Helix")
+        helix.Shape = Part.makeHelix(10, 30, 5)
+        self.doc.recompute()
+        self.assertIn("not coplanar", self._rejected([(helix, [])]))
+        self.assertIn("Vertex1", self._rejected([(self.sk, ["Vertex1"])]))
+        del before
+
+    def test_command_core_records_a_feature(self):
+        q = C.g2quad_sources([(self.sk, ["Edge1"])], open_panel=False, Edges=12)
+        self.assertIsNotNone(q)
+        self.assertEqual((q.Proxy.kind, q.Edges, q.Status), ("G2Quad", 12, "ok"))
