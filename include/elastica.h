@@ -48,7 +48,7 @@ const char *el_version(void);
  * Jacobi elliptic functions of argument u and modulus k, for every k >= 0.
  * k > 1 uses the reciprocal-modulus transformation
  *   sn(u,k) = sn(ku,1/k)/k,  cn(u,k) = dn(ku,1/k),  dn(u,k) = cn(ku,1/k);
- * k = 1 gives sn = tanh, cn = dn = sech. The AGM and GSL's Carlson integrals inside.
+ * k = 1 gives sn = tanh, cn = dn = sech. The AGM and Carlson's R_D inside (jacobi.c).
  *   am  amplitude: for k <= 1 the continuous angle with sn = sin am, cn = cos am
  *       (increasing, am(u+2K) = am(u)+pi); for k > 1, atan2(sn, cn), in (-pi/2, pi/2);
  *   E   Jacobi epsilon E(u) = integral_0^u dn^2(t,k) dt (= E(am u, k) for k <= 1);
@@ -64,8 +64,11 @@ typedef struct el_jacobi {
  * derivatives of every field with respect to u and to k (analytic: Carlson's
  * R_D for the k-derivative of the amplitude, no finite differences).
  * At k = 1 exactly, the k-derivatives are the limits k -> 1.
- * Errors: EL_EINVAL for NULL val, NaN/inf u or k, k < 0; EL_EINTERNAL if GSL fails.
- * Outputs are untouched on error.
+ * Errors: EL_EINVAL for NULL val, NaN/inf u or k, k < 0; EL_EDOM when double
+ * precision has no digits of the result: max(1, k)|u| > 2^50 (k != 1; the period
+ * 4K is known to a rounding, so reducing u loses |u| 2^-53 of the phase), or a
+ * k-derivative overflows (k = 1 and |u| > ~710, where d cn/dk ~ e^|u|/4; k > ~1e154).
+ * Outputs are untouched on error. Work is O(1) for every u and k.
  */
 int el_jacobi_eval(double u, double k, el_jacobi *val, el_jacobi *d_du, el_jacobi *d_dk);
 

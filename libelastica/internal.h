@@ -7,6 +7,10 @@
 
 #ifndef M_PI
 #define M_PI 3.14159265358979323846
+/* The largest max(1, k)|u| whose Jacobi functions keep digits: 2K is known to a
+ * rounding, so reducing u costs |u| 2^-53 of the phase (a quarter at this bound). */
+#define EL__PHASE_MAX 0x1p50
+
 #endif
 
 /* Turn GSL's aborting error handler off (once per process, thread-safe); every
@@ -44,5 +48,9 @@ int el__jacobi_eval_mod(const el__modulus *mod, double u, el_jacobi *val, el_jac
  * val[count] required; d_dk[count] optional (NULL). */
 int el__jacobi_progression(double q, double z, double k, size_t count,
                            el_jacobi *val, el_jacobi *d_dk);
+
+/* The largest max(1, k)|u| whose Jacobi functions keep digits: 2K is known to a
+ * rounding, so reducing u costs |u| 2^-53 of the phase (a quarter at this bound). */
+#define EL__PHASE_MAX 0x1p50
 
 #endif

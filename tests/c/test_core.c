@@ -2,6 +2,8 @@
  * its defining identity, references from mpmath, gradients by finite differences. */
 #define _POSIX_C_SOURCE 200112L /* pthreads */
 #include "testutil.h"
+#include "internal.h"
+#include <float.h>
 #include <pthread.h>
 #include <stdio.h>
 #include <string.h>
@@ -47,7 +49,7 @@ static double field(const el_jacobi *v, int j)
 
 START_TEST(jacobi_derivatives_match_finite_differences)
 {
-    const double ks[] = {0.0, 1e-8, 0.05, 0.3, 0.9, 0.99, 1.01, 1.5, 2.0, 50.0};
+    const double ks[] = {0.0, 1e-8, 0.05, 0.3, 0.9, 0.99, 1.0, 1.01, 1.5, 2.0, 50.0};
     const double us[] = {-23.1, -3.3, -0.4, 0.0, 0.7, 2.9, 11.2, 37.0};
     for (size_t a = 0; a < sizeof ks / sizeof *ks; a++)
         for (size_t b = 0; b < sizeof us / sizeof *us; b++) {
@@ -64,6 +66,9 @@ START_TEST(jacobi_derivatives_match_finite_differences)
                               "d/du field %d at k=%g u=%g: %.12g vs fd %.12g", j, k, u, an, fd);
             }
             if (k < 1e-3) continue; /* the k-step would cross k = 0 */
+            /* at k = 1, d^2/dk^2 ~ e^(2|u|): central differences only hold for small |u|
+             * (larger u: jacobi_near_k_equal_1_keeps_relative_digits, against mpmath) */
+            if (k == 1.0 && fabs(u) > 4.0) continue;
             const double hk = 1e-7 * k;
             el_jacobi_eval(u, k + hk, &p, NULL, NULL);
             el_jacobi_eval(u, k - hk, &m, NULL, NULL);
@@ -99,6 +104,91 @@ START_TEST(jacobi_rejects_bad_input)
     ck_assert(v.sn == 1 && v.D == 6); /* untouched */
     ck_assert_str_ne(el_strerror(EL_EINVAL), el_strerror(EL_OK));
     ck_assert_ptr_nonnull(el_strerror(12345));
+}
+END_TEST
+
+START_TEST(jacobi_near_k_equal_1_keeps_relative_digits)
+{
+    /* |k| within 1e-4 .. 1e-15 of 1, u across the plateau sn ~ 1 where cn, dn ~ 2 e^-u are
+     * tiny: cn and dn to relative accuracy (the AGM alone lost 4e-10 there, and
+     * rounding 1/k for k > 1 another 2e-13 of cn: issue 12's 7e-10 L differences), D
+     * and the k-derivatives of cn and D (dD/dk by L - sn^2 J cancelled to 1e-3 at k = 1,
+     * u = 15) against mpmath (tests/data/gen_jacobi_near1_ref.py) */
+    FILE *f = fopen("../data/jacobi_near1_ref.csv", "r");
+    ck_assert_msg(f != NULL, "tests/data/jacobi_near1_ref.csv missing");
+    char line[1024];
+    ck_assert(fgets(line, sizeof line, f) != NULL);
+    int rows = 0;
+    double worst = 0.0;
+    while (fgets(line, sizeof line, f)) {
+        double k, u, ref[6];
+        ck_assert_int_eq(sscanf(line, "%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf", &k, &u, &ref[0], &ref[1], &ref[2], &ref[3],
+                                &ref[4], &ref[5]), 8);
+        el_jacobi v, dk;
+        ck_assert_int_eq(el_jacobi_eval(u, k, &v, NULL, &dk), EL_OK);
+        const double got[6] = {v.sn, v.cn, v.dn, v.D, dk.cn, dk.D};
+        /* relative to the value plus what the phase's own rounding, a few |u| eps, moves
+         * it by (the slopes d/du from the reference: cn dn, -sn dn, -k^2 sn cn, sn^2;
+         * for the derivatives, their size: near the turning point K they grow like the
+         * period's sensitivity u dK/dk) */
+        const double sn = ref[0], cn = ref[1], dn = ref[2];
+        const double slope[6] = {fabs(cn * dn), fabs(sn * dn), k * k * fabs(sn * cn), sn * sn,
+                                 fabs(ref[4]) + fabs(ref[5]), fabs(ref[4]) + fabs(ref[5])};
+        for (int j = 0; j < 6; j++) {
+            const double err = fabs(got[j] - ref[j]) / (fabs(ref[j]) + fabs(u) * slope[j] + 1e-300);
+            worst = fmax(worst, err);
+            ck_assert_msg(err <= 64.0 * DBL_EPSILON, "k=%.17g u=%g field %d: %.17g vs %.17g (relative %.3g)", k, u, j,
+                          got[j], ref[j], err);
+        }
+        rows++;
+    }
+    fclose(f);
+    ck_assert_int_ge(rows, 50);
+    printf("jacobi near k = 1: %d rows x 6 fields, worst relative error %.2e\n", rows, worst);
+}
+END_TEST
+
+START_TEST(jacobi_k_equal_1_derivatives_are_finite_until_they_overflow)
+{
+    /* at k = 1 the k-derivatives have closed forms (A&S 16.15 to first order in k'^2);
+     * they grow like e^u / 4 and overflow only past u ~ 710 (J underflowed at 350 before) */
+    const double us[] = {0.5, 20.0, 100.0, 400.0, 700.0, -650.0};
+    for (size_t i = 0; i < sizeof us / sizeof *us; i++) {
+        const double u = us[i], th = tanh(u);
+        el_jacobi v, dk;
+        ck_assert_int_eq(el_jacobi_eval(u, 1.0, &v, NULL, &dk), EL_OK);
+        ck_assert_close(dk.sn, -0.5 * (th - u / (cosh(u) * cosh(u))), 1e-15);
+        ck_assert_close(dk.D, -1.5 * (u - th) + 0.5 * u * th * th, 1e-14 * fabs(u));
+        ck_assert(isfinite(dk.cn) && isfinite(dk.dn) && isfinite(dk.am) && isfinite(dk.E));
+        ck_assert_close(v.E, th, 1e-16); /* E = tanh u, not u - D with its cancellation */
+    }
+    el_jacobi v = {1, 2, 3, 4, 5, 6}, dk = v;
+    ck_assert_int_eq(el_jacobi_eval(720.0, 1.0, &v, NULL, &dk), EL_EDOM);
+    ck_assert(v.sn == 1 && dk.D == 6); /* untouched */
+    ck_assert_int_eq(el_jacobi_eval(1e300, 1.0, &v, NULL, NULL), EL_OK); /* no period at k = 1 */
+    ck_assert(v.sn == 1.0 && v.cn == 0.0 && v.E == 1.0);
+}
+END_TEST
+
+START_TEST(jacobi_reports_lost_phase_and_overflow_as_edom)
+{
+    /* max(1, k)|u| > 2^50: the period is known to a rounding, the phase to nothing */
+    el_jacobi v = {1, 2, 3, 4, 5, 6}, d = v;
+    ck_assert_int_eq(el_jacobi_eval(1e16, 0.5, &v, NULL, NULL), EL_EDOM);
+    ck_assert_int_eq(el_jacobi_eval(4e14, 3.0, &v, &d, NULL), EL_EDOM);
+    ck_assert_int_eq(el_jacobi_eval(1.0, 1e200, &v, NULL, &d), EL_EDOM);
+    ck_assert(v.sn == 1 && d.D == 6);
+    ck_assert_int_eq(el_jacobi_eval(1e15, 0.5, &v, NULL, NULL), EL_OK); /* 2^50 > 1e15 */
+    /* huge k with a small enough u: values finite, no EL_EINTERNAL (k'^2 = (k-1)(k+1)/k^2
+     * overflowed past k = 1e154); the k-derivatives need k^2 and report EL_EDOM */
+    ck_assert_int_eq(el_jacobi_eval(1e-300, 1e300, &v, NULL, NULL), EL_OK);
+    ck_assert(isfinite(v.sn) && isfinite(v.D) && fabs(v.sn - sin(1.0) * 1e-300) <= 1e-315);
+    ck_assert_int_eq(el_jacobi_eval(1e-300, 1e300, &v, NULL, &d), EL_EDOM);
+    /* denormal arguments and moduli */
+    ck_assert_int_eq(el_jacobi_eval(4.9e-324, 0.5, &v, &d, &d), EL_OK);
+    ck_assert(v.sn == 4.9e-324 && v.cn == 1.0);
+    ck_assert_int_eq(el_jacobi_eval(1.0, 4.9e-324, &v, NULL, &d), EL_OK);
+    ck_assert_close(v.sn, sin(1.0), 2e-16);
 }
 END_TEST
 
@@ -514,6 +604,9 @@ int main(void)
     tcase_add_test(j, jacobi_derivatives_match_finite_differences);
     tcase_add_test(j, jacobi_small_k_derivative_is_analytic);
     tcase_add_test(j, jacobi_rejects_bad_input);
+    tcase_add_test(j, jacobi_near_k_equal_1_keeps_relative_digits);
+    tcase_add_test(j, jacobi_k_equal_1_derivatives_are_finite_until_they_overflow);
+    tcase_add_test(j, jacobi_reports_lost_phase_and_overflow_as_edom);
     tcase_add_test(sm, smooth_unit_speed_and_curvature);
     tcase_add_test(sm, smooth_curvature_satisfies_elastica_equation);
     tcase_add_test(sm, smooth_points_continuous_across_k_equal_1);
