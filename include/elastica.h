@@ -104,12 +104,24 @@ enum { EL_SMOOTH_NPARAMS = 7 };
 int el_smooth_check(const el_smooth_params *p);
 
 /*
- * Evaluate at n arc lengths s[i] (any real values; [0, length] is the segment).
- * Any output pointer may be NULL. xy: 2n (interleaved), theta: n (tangent
+ * Evaluate at n arc lengths s[i] (any real values in any order; [0, length] is the
+ * segment). Any output pointer may be NULL. xy: 2n (interleaved), theta: n (tangent
  * angle, continuous in s), kappa: n (signed curvature, + = counter-clockwise).
- * Equally spaced s (as in sampling) is detected and evaluated with the
- * addition theorems, about 5x faster; results agree to ~1e-14.
- * Errors: EL_EINVAL (bad params, NULL s with n > 0, non-finite s).
+ * Equally spaced s (sampling grids) and sorted s (chord parameters, foot points)
+ * take the addition theorems from a few fresh evaluations: ~40 and ~50 ns per point
+ * where unsorted s costs ~400 (bench/bench_core.c). Every path agrees with one-point
+ * evaluation to ~64 eps (1 + max|u|)(1 + |k|)/sqrt(mu), u = sqrt(mu) s + q (about
+ * 1e-14 length on ordinary curves). Work is O(n) whatever the values; no allocation.
+ * Errors (nothing is returned that is not finite and valid):
+ *   EL_EINVAL  bad params (el_smooth_check), NULL s with n > 0, a non-finite s[i],
+ *              n > SIZE_MAX / 112 (no 14 n-double Jacobian fits in memory);
+ *              the outputs are untouched;
+ *   EL_EDOM    double precision cannot resolve the samples: max(1, |k|)|u| > 2^50 for
+ *              u = q or some sqrt(mu) s_i + q (|k| != 1: the phase has no digits), or
+ *              fewer than three digits left, 2^-52 (1 + max|u|)(1 + |k|) / sqrt(mu) >
+ *              1e-3 max(length, max|s_i|) (the closed form divides differences of
+ *              rounded values by sqrt(mu)), or a result overflows; every element of
+ *              every non-NULL output is then NaN.
  */
 int el_smooth_eval(const el_smooth_params *p, size_t n, const double *s,
                    double *xy, double *theta, double *kappa);
@@ -119,12 +131,15 @@ int el_smooth_eval(const el_smooth_params *p, size_t n, const double *s,
  * p = (x0, y0, phi, mu, k, q, length). The length column is the derivative
  * with the sample held at the same fraction t = s/length of the curve
  * (d/dL gamma(t L) = t T(s)); it is 0 when length = 0. xy may be NULL.
- * Errors as el_smooth_eval.
+ * Paths, accuracy, work and errors as el_smooth_eval (EL_EINVAL also for NULL jac;
+ * EL_EDOM also when the k column overflows: |k| = 1 and |u| > ~710).
  */
 int el_smooth_jacobian(const el_smooth_params *p, size_t n, const double *s,
                        double *xy, double *jac);
 
-/* Bending energy integral_0^length kappa^2 ds, in closed form. */
+/* Bending energy integral_0^length kappa^2 ds, in closed form. Errors: EL_EINVAL (bad
+ * params, NULL energy; *energy untouched), EL_EDOM (as el_smooth_eval with the one
+ * sample s = length, or the energy overflows; *energy = NaN). */
 int el_smooth_energy(const el_smooth_params *p, double *energy);
 
 /* ---------------------------------------------------------------- discrete */
@@ -155,20 +170,30 @@ enum { EL_DISCRETE_NPARAMS = 7 };
 int el_discrete_check(const el_discrete_params *p);
 
 /*
- * The n >= 2 vertices (xy: 2n, interleaved). Errors: EL_EINVAL.
+ * The n >= 2 vertices (xy: 2n, interleaved), from the addition theorems at a few
+ * flops per vertex (a fresh evaluation every 32 vertices; for max(1, k)|z| > 0.1
+ * the anchored walk of el_smooth_eval, a fresh evaluation per vertex once |z| is
+ * past a period); they agree with the recursion from one-point evaluations of every
+ * u_n to ~64 roundings. Work O(n), no allocation. Errors:
+ *   EL_EINVAL  bad params, n < 2, NULL xy, n > SIZE_MAX / 112; xy untouched;
+ *   EL_EDOM    max(1, k)|z i + q| > 2^50 for some vertex i (k != 1: no digits of
+ *              the phase), or a result overflows; every element of xy is NaN.
  */
 int el_discrete_eval(const el_discrete_params *p, size_t n, double *xy);
 
 /*
  * Discrete curvature at the n-2 interior vertices,
  * kappa[i] = (2/h) tan(K_{i+1}/2), seed 000 (3.4). n >= 3.
+ * Errors as el_discrete_eval (EL_EINVAL for n < 3; EL_EDOM also for a turning angle
+ * K = pi, where the curvature is infinite; kappa is then all NaN).
  */
 int el_discrete_curvature(const el_discrete_params *p, size_t n, double *kappa);
 
 /*
  * Vertices (xy may be NULL) and their Jacobian,
  * jac[(i*2 + c)*7 + j] = d gamma_{i,c} / d p_j, p = (x0, y0, h, phi, z, q, k),
- * by the recursion (4.10). n >= 2. Errors: EL_EINVAL.
+ * by the recursion (4.10). n >= 2. Errors as el_discrete_eval (EL_EINVAL also for
+ * NULL jac; on EL_EDOM every element of jac and of a non-NULL xy is NaN).
  */
 int el_discrete_jacobian(const el_discrete_params *p, size_t n, double *xy, double *jac);
 

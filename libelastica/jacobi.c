@@ -19,8 +19,6 @@
 
 /* Below this k, L = (J - D)/k^2 loses more than two digits: use its series. */
 #define SMALL_K 0.1
-/* Addition-theorem steps between two fresh evaluations in a progression. */
-#define RESEED 32
 
 /* Carlson R_D to double precision. */
 static int carlson_rd(double x, double y, double z, double *out)
@@ -275,67 +273,4 @@ int el_jacobi_eval(double u, double k, el_jacobi *val, el_jacobi *d_du, el_jacob
     if (!val || !isfinite(u)) return EL_EINVAL;
     int st = el__modulus_init(k, d_dk != NULL, &mod);
     return st ? st : el__jacobi_eval_mod(&mod, u, val, d_du, d_dk);
-}
-
-/*
- * One addition-theorem step (a = u, b = z):
- *   sn(a+b) = (sa cb db + sb ca da)/den,  cn(a+b) = (ca cb - sa sb da db)/den,
- *   dn(a+b) = (da db - k^2 sa sb ca cb)/den,  den = 1 - k^2 sa^2 sb^2,
- *   D(a+b) = D(a) + D(b) + sa sb sn(a+b)   (from E(a+b) = E(a)+E(b) - k^2 sa sb sn(a+b)).
- * They are algebraic identities, so they hold for k > 1 as well. With ak/bk
- * non-NULL the k-derivatives are propagated by differentiating the same formulas.
- */
-static void add_step(double k, const el_jacobi *a, const el_jacobi *ak,
-                     const el_jacobi *b, const el_jacobi *bk, el_jacobi *r, el_jacobi *rk)
-{
-    const double m = k * k, ss = a->sn * b->sn, den = 1.0 - m * ss * ss, id = 1.0 / den;
-    const double ns = a->sn * b->cn * b->dn + b->sn * a->cn * a->dn;
-    const double nc = a->cn * b->cn - ss * a->dn * b->dn;
-    const double nd = a->dn * b->dn - m * ss * a->cn * b->cn;
-    r->sn = ns * id;
-    r->cn = nc * id;
-    r->dn = nd * id;
-    r->D = a->D + b->D + ss * r->sn;
-    if (rk) {
-        const double ssk = ak->sn * b->sn + a->sn * bk->sn;
-        const double denk = -2.0 * k * ss * ss - 2.0 * m * ss * ssk;
-        const double nsk = ak->sn * b->cn * b->dn + a->sn * bk->cn * b->dn + a->sn * b->cn * bk->dn
-                         + bk->sn * a->cn * a->dn + b->sn * ak->cn * a->dn + b->sn * a->cn * ak->dn;
-        const double cc = a->cn * b->cn, cck = ak->cn * b->cn + a->cn * bk->cn;
-        const double dd = a->dn * b->dn, ddk = ak->dn * b->dn + a->dn * bk->dn;
-        const double nck = cck - ssk * dd - ss * ddk;
-        const double ndk = ddk - 2.0 * k * ss * cc - m * (ssk * cc + ss * cck);
-        rk->sn = (nsk - r->sn * denk) * id;
-        rk->cn = (nck - r->cn * denk) * id;
-        rk->dn = (ndk - r->dn * denk) * id;
-        rk->D = ak->D + bk->D + ssk * r->sn + ss * rk->sn;
-    }
-}
-
-int el__jacobi_progression(double q, double z, double k, size_t count,
-                           el_jacobi *val, el_jacobi *d_dk)
-{
-    el_jacobi step, stepk;
-    el__modulus mod;
-    int st;
-    if (count == 0) return EL_OK;
-    if ((st = el__modulus_init(k, d_dk != NULL, &mod))) return st;
-    if ((st = el__jacobi_eval_mod(&mod, z, &step, NULL, d_dk ? &stepk : NULL))) return st;
-    for (size_t i = 0; i < count; i++) {
-        if (i % RESEED == 0) {
-            st = el__jacobi_eval_mod(&mod, q + z * (double)i, &val[i], NULL, d_dk ? &d_dk[i] : NULL);
-            if (st) return st;
-            continue;
-        }
-        add_step(k, &val[i - 1], d_dk ? &d_dk[i - 1] : NULL, &step, d_dk ? &stepk : NULL,
-                 &val[i], d_dk ? &d_dk[i] : NULL);
-        const double u = q + z * (double)i;
-        val[i].E = u - k * k * val[i].D;
-        val[i].am = 0.0; /* not propagated: no caller needs it (internal.h) */
-        if (d_dk) {
-            d_dk[i].E = -2.0 * k * val[i].D - k * k * d_dk[i].D;
-            d_dk[i].am = 0.0;
-        }
-    }
-    return EL_OK;
 }
