@@ -131,9 +131,16 @@ static double special_k(int i, unsigned long long *rng)
     return i % 2 ? ks[(i / 2) % nk] : test_uniform(rng, -5.0, 5.0);
 }
 
-/* ordinary curves as the issue drew them (|k| <= 5, mu in [0.01, 100], length <= 60),
- * with n samples drawn by draw_n */
-static void random_curves(layout how, int count, size_t nmin, size_t nmax, unsigned long long seed)
+static void report(const char *what)
+{
+    printf("%s: worst |fast - plain| = %.3g of the allowed, %.3g of the length\n", what, worst_ratio,
+           worst_rel_length);
+    worst_ratio = worst_rel_length = 0.0;
+}
+
+/* count ordinary curves as the issue drew them (|k| <= 5, mu in [0.01, 100], length
+ * <= 60; every other k from special_k), nmin..nmax samples laid out as how */
+static void random_curves(const char *what, layout how, int count, size_t nmin, size_t nmax, unsigned long long seed)
 {
     static double s[NMAX];
     unsigned long long rng = seed;
@@ -145,49 +152,19 @@ static void random_curves(layout how, int count, size_t nmin, size_t nmax, unsig
         fill_samples(how, n, p.length, &rng, s);
         smooth_matches_pointwise(&p, n, s);
     }
+    report(what);
 }
 
-static void report(const char *what)
-{
-    printf("%s: worst |fast - plain| = %.3g of the allowed, %.3g of the length\n", what, worst_ratio,
-           worst_rel_length);
-    worst_ratio = worst_rel_length = 0.0;
-}
-
-START_TEST(equally_spaced_matches_pointwise_sparse)
-{
-    /* 2-80 samples over up to ~100 periods: steps in u of 0.01 .. 50 */
-    random_curves(GRID, 600, 2, 80, 0x5ca77e1ULL);
-    report("grid, sparse");
-}
+/* sparse: 2-80 samples over up to ~100 periods, steps in u of 0.01 .. 50 */
+START_TEST(equally_spaced_matches_pointwise_sparse) { random_curves("grid, sparse", GRID, 600, 2, 80, 0x5ca77e1ULL); }
 END_TEST
-
-START_TEST(equally_spaced_matches_pointwise_dense)
-{
-    random_curves(GRID, 40, 500, NMAX, 0xde75eULL);
-    report("grid, dense");
-}
+START_TEST(equally_spaced_matches_pointwise_dense) { random_curves("grid, dense", GRID, 40, 500, NMAX, 0xde75eULL); }
 END_TEST
-
-START_TEST(sorted_scattered_matches_pointwise_sparse)
-{
-    random_curves(SORTED, 600, 2, 80, 0x50f7edULL);
-    report("sorted, sparse");
-}
+START_TEST(sorted_scattered_matches_pointwise_sparse) { random_curves("sorted, sparse", SORTED, 600, 2, 80, 0x50f7edULL); }
 END_TEST
-
-START_TEST(sorted_scattered_matches_pointwise_dense)
-{
-    random_curves(SORTED, 40, 500, NMAX, 0xd0dULL);
-    report("sorted, dense");
-}
+START_TEST(sorted_scattered_matches_pointwise_dense) { random_curves("sorted, dense", SORTED, 40, 500, NMAX, 0xd0dULL); }
 END_TEST
-
-START_TEST(unsorted_matches_pointwise)
-{
-    random_curves(UNSORTED, 200, 2, 600, 0xa11ULL);
-    report("unsorted");
-}
+START_TEST(unsorted_matches_pointwise) { random_curves("unsorted", UNSORTED, 200, 2, 600, 0xa11ULL); }
 END_TEST
 
 START_TEST(walks_match_pointwise_across_k_equal_1_at_every_step)
