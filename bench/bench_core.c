@@ -1,7 +1,9 @@
 #define _POSIX_C_SOURCE 199309L /* clock_gettime */
 /* Core evaluation cost: ns per point for discrete / smooth elasticae with and
- * without Jacobian, against one bare gsl_sf_elljac_e call in the same run.
- * Prints one JSON line per figure (median of repeats). */
+ * without Jacobian, at uniform, sorted scattered (chord parameters, foot points)
+ * and unsorted s, against one bare gsl_sf_elljac_e call in the same run.
+ * Prints one JSON line per figure (median of repeats, the cases interleaved so
+ * that machine noise hits them alike); lines with "readme" feed the README table. */
 #include "elastica.h"
 #include <gsl/gsl_sf_elljac.h>
 #include <stdio.h>
@@ -21,7 +23,7 @@ static int cmp(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-enum { REPS = 15 };
+enum { REPS = 21, NCASE = 9 };
 static volatile double sink;
 
 /* what one timed run does */
@@ -49,47 +51,60 @@ static void run(const job *j)
     }
 }
 
-/* median ns per point over REPS runs */
-static double median_ns(const job *j)
+static double ns_per_point(const job *j)
 {
-    double t[REPS];
-    for (int r = 0; r < REPS; r++) {
-        double a = now();
-        run(j);
-        t[r] = (now() - a) * 1e9 / (double)j->n;
-    }
-    qsort(t, REPS, sizeof *t, cmp);
-    return t[REPS / 2];
+    double a = now();
+    run(j);
+    return (now() - a) * 1e9 / (double)j->n;
 }
 
 int main(void)
 {
     const size_t sizes[2] = {1000, 100000};
+    const char *names[NCASE] = {"gsl_sf_elljac_e", "discrete_vertices", "discrete_jacobian",
+                                "smooth_points_uniform_s", "smooth_jacobian_uniform_s",
+                                "smooth_points_sorted_scattered_s", "smooth_jacobian_sorted_scattered_s",
+                                "smooth_points_unsorted_s", "smooth_jacobian_unsorted_s"};
+    const int what[NCASE] = {0, 1, 2, 3, 4, 3, 4, 3, 4};
     for (int z = 0; z < 2; z++) {
         const size_t n = sizes[z];
         double *xy = malloc(2 * n * sizeof *xy), *jac = malloc(14 * n * sizeof *jac);
-        double *s = malloc(n * sizeof *s), *sr = malloc(n * sizeof *sr);
+        double *s = malloc(n * sizeof *s), *ss = malloc(n * sizeof *ss), *sr = malloc(n * sizeof *sr);
         el_discrete_params dp = {0, 0, 10.0 / n, 0.3, 20.0 / n, 0.2, 0.8};
         el_smooth_params sp = {0, 0, 0.3, 1.0, 0.8, 0.2, 10.0};
+        srand(12345);
         for (size_t i = 0; i < n; i++) {
             s[i] = sp.length * i / (n - 1.0);
-            sr[i] = sp.length * rand() / (double)RAND_MAX;
+            sr[i] = ss[i] = sp.length * rand() / (double)RAND_MAX;
         }
-        job j = {0, n, dp, sp, s, xy, jac};
-        double v[7];
-        const int what[7] = {0, 1, 2, 3, 4, 3, 4};
-        for (int i = 0; i < 7; i++) {
-            j.what = what[i];
-            j.s = i >= 5 ? sr : s;
-            v[i] = median_ns(&j);
+        qsort(ss, n, sizeof *ss, cmp); /* sorted scattered: chord parameters, foot points */
+        const double *grid[NCASE] = {s, s, s, s, s, ss, ss, sr, sr};
+        static double t[NCASE][REPS];
+        for (int r = 0; r < REPS; r++)
+            for (int i = 0; i < NCASE; i++) {
+                job j = {what[i], n, dp, sp, grid[i], xy, jac};
+                t[i][r] = ns_per_point(&j);
+            }
+        double v[NCASE];
+        for (int i = 0; i < NCASE; i++) {
+            qsort(t[i], REPS, sizeof t[i][0], cmp);
+            v[i] = t[i][REPS / 2];
         }
-        const double elljac = v[0];
-        const char *names[7] = {"gsl_sf_elljac_e", "discrete_vertices", "discrete_jacobian", "smooth_points_uniform_s",
-                                "smooth_jacobian_uniform_s", "smooth_points_scattered_s", "smooth_jacobian_scattered_s"};
-        for (int i = 0; i < 7; i++)
-            printf("{\"bench\": \"core\", \"what\": \"%s\", \"n\": %zu, \"median_ns_per_point\": %.1f, \"ratio_to_elljac\": %.2f}\n",
-                   names[i], n, v[i], v[i] / elljac);
-        free(xy); free(jac); free(s); free(sr);
+        for (int i = 0; i < NCASE; i++)
+            printf("{\"bench\": \"core\", \"what\": \"%s\", \"n\": %zu, \"median_ns_per_point\": %.1f, "
+                   "\"ratio_to_elljac\": %.2f}\n", names[i], n, v[i], v[i] / v[0]);
+        printf("{\"bench\": \"core\", \"what\": \"sorted_scattered_over_uniform\", \"n\": %zu, "
+               "\"points_ratio\": %.2f, \"jacobian_ratio\": %.2f}\n", n, v[5] / v[3], v[6] / v[4]);
+        if (n == 1000) {
+            printf("{\"bench\": \"core\", \"what\": \"readme_discrete\", \"n\": %zu, "
+                   "\"readme\": \"discrete vertices + full 7-parameter Jacobian\", "
+                   "\"value\": \"%.0f ns/point (bare `gsl_sf_elljac_e`: %.0f ns)\"}\n", n, v[2], v[0]);
+            printf("{\"bench\": \"core\", \"what\": \"readme_smooth\", \"n\": %zu, "
+                   "\"readme\": \"smooth points + Jacobian, uniform / scattered s\", "
+                   "\"value\": \"%.0f / %.0f ns/point (scattered sorted, %.1fx uniform; unsorted: %.0f)\"}\n",
+                   n, v[4], v[6], v[6] / v[4], v[8]);
+        }
+        free(xy); free(jac); free(s); free(ss); free(sr);
     }
     return 0;
 }

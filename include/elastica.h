@@ -48,7 +48,7 @@ const char *el_version(void);
  * Jacobi elliptic functions of argument u and modulus k, for every k >= 0.
  * k > 1 uses the reciprocal-modulus transformation
  *   sn(u,k) = sn(ku,1/k)/k,  cn(u,k) = dn(ku,1/k),  dn(u,k) = cn(ku,1/k);
- * k = 1 gives sn = tanh, cn = dn = sech. The AGM and GSL's Carlson integrals inside.
+ * k = 1 gives sn = tanh, cn = dn = sech. The AGM and Carlson's R_D inside (jacobi.c).
  *   am  amplitude: for k <= 1 the continuous angle with sn = sin am, cn = cos am
  *       (increasing, am(u+2K) = am(u)+pi); for k > 1, atan2(sn, cn), in (-pi/2, pi/2);
  *   E   Jacobi epsilon E(u) = integral_0^u dn^2(t,k) dt (= E(am u, k) for k <= 1);
@@ -64,8 +64,11 @@ typedef struct el_jacobi {
  * derivatives of every field with respect to u and to k (analytic: Carlson's
  * R_D for the k-derivative of the amplitude, no finite differences).
  * At k = 1 exactly, the k-derivatives are the limits k -> 1.
- * Errors: EL_EINVAL for NULL val, NaN/inf u or k, k < 0; EL_EINTERNAL if GSL fails.
- * Outputs are untouched on error.
+ * Errors: EL_EINVAL for NULL val, NaN/inf u or k, k < 0; EL_EDOM when double
+ * precision has no digits of the result: max(1, k)|u| > 2^50 (k != 1; the period
+ * 4K is known to a rounding, so reducing u loses |u| 2^-53 of the phase), or a
+ * k-derivative overflows (k = 1 and |u| > ~710, where d cn/dk ~ e^|u|/4; k > ~1e154).
+ * Outputs are untouched on error. Work is O(1) for every u and k.
  */
 int el_jacobi_eval(double u, double k, el_jacobi *val, el_jacobi *d_du, el_jacobi *d_dk);
 
@@ -101,12 +104,24 @@ enum { EL_SMOOTH_NPARAMS = 7 };
 int el_smooth_check(const el_smooth_params *p);
 
 /*
- * Evaluate at n arc lengths s[i] (any real values; [0, length] is the segment).
- * Any output pointer may be NULL. xy: 2n (interleaved), theta: n (tangent
+ * Evaluate at n arc lengths s[i] (any real values in any order; [0, length] is the
+ * segment). Any output pointer may be NULL. xy: 2n (interleaved), theta: n (tangent
  * angle, continuous in s), kappa: n (signed curvature, + = counter-clockwise).
- * Equally spaced s (as in sampling) is detected and evaluated with the
- * addition theorems, about 5x faster; results agree to ~1e-14.
- * Errors: EL_EINVAL (bad params, NULL s with n > 0, non-finite s).
+ * Equally spaced s (sampling grids) and sorted s (chord parameters, foot points)
+ * take the addition theorems from a few fresh evaluations: ~40 and ~50 ns per point
+ * where unsorted s costs ~400 (bench/bench_core.c). Every path agrees with one-point
+ * evaluation to ~64 eps (1 + max|u|)(1 + |k|)/sqrt(mu), u = sqrt(mu) s + q (about
+ * 1e-14 length on ordinary curves). Work is O(n) whatever the values; no allocation.
+ * Errors (nothing is returned that is not finite and valid):
+ *   EL_EINVAL  bad params (el_smooth_check), NULL s with n > 0, a non-finite s[i],
+ *              n > SIZE_MAX / 112 (no 14 n-double Jacobian fits in memory);
+ *              the outputs are untouched;
+ *   EL_EDOM    double precision cannot resolve the samples: max(1, |k|)|u| > 2^50 for
+ *              u = q or some sqrt(mu) s_i + q (|k| != 1: the phase has no digits), or
+ *              fewer than three digits left, 2^-52 (1 + max|u|)(1 + |k|) / sqrt(mu) >
+ *              1e-3 max(length, max|s_i|) (the closed form divides differences of
+ *              rounded values by sqrt(mu)), or a result overflows; every element of
+ *              every non-NULL output is then NaN.
  */
 int el_smooth_eval(const el_smooth_params *p, size_t n, const double *s,
                    double *xy, double *theta, double *kappa);
@@ -116,12 +131,15 @@ int el_smooth_eval(const el_smooth_params *p, size_t n, const double *s,
  * p = (x0, y0, phi, mu, k, q, length). The length column is the derivative
  * with the sample held at the same fraction t = s/length of the curve
  * (d/dL gamma(t L) = t T(s)); it is 0 when length = 0. xy may be NULL.
- * Errors as el_smooth_eval.
+ * Paths, accuracy, work and errors as el_smooth_eval (EL_EINVAL also for NULL jac;
+ * EL_EDOM also when the k column overflows: |k| = 1 and |u| > ~710).
  */
 int el_smooth_jacobian(const el_smooth_params *p, size_t n, const double *s,
                        double *xy, double *jac);
 
-/* Bending energy integral_0^length kappa^2 ds, in closed form. */
+/* Bending energy integral_0^length kappa^2 ds, in closed form. Errors: EL_EINVAL (bad
+ * params, NULL energy; *energy untouched), EL_EDOM (as el_smooth_eval with the one
+ * sample s = length, or the energy overflows; *energy = NaN). */
 int el_smooth_energy(const el_smooth_params *p, double *energy);
 
 /* ---------------------------------------------------------------- discrete */
@@ -152,20 +170,30 @@ enum { EL_DISCRETE_NPARAMS = 7 };
 int el_discrete_check(const el_discrete_params *p);
 
 /*
- * The n >= 2 vertices (xy: 2n, interleaved). Errors: EL_EINVAL.
+ * The n >= 2 vertices (xy: 2n, interleaved), from the addition theorems at a few
+ * flops per vertex (a fresh evaluation every 32 vertices; for max(1, k)|z| > 0.1
+ * the anchored walk of el_smooth_eval, a fresh evaluation per vertex once |z| is
+ * past a period); they agree with the recursion from one-point evaluations of every
+ * u_n to ~64 roundings. Work O(n), no allocation. Errors:
+ *   EL_EINVAL  bad params, n < 2, NULL xy, n > SIZE_MAX / 112; xy untouched;
+ *   EL_EDOM    max(1, k)|z i + q| > 2^50 for some vertex i (k != 1: no digits of
+ *              the phase), or a result overflows; every element of xy is NaN.
  */
 int el_discrete_eval(const el_discrete_params *p, size_t n, double *xy);
 
 /*
  * Discrete curvature at the n-2 interior vertices,
  * kappa[i] = (2/h) tan(K_{i+1}/2), seed 000 (3.4). n >= 3.
+ * Errors as el_discrete_eval (EL_EINVAL for n < 3; EL_EDOM also for a turning angle
+ * K = pi, where the curvature is infinite; kappa is then all NaN).
  */
 int el_discrete_curvature(const el_discrete_params *p, size_t n, double *kappa);
 
 /*
  * Vertices (xy may be NULL) and their Jacobian,
  * jac[(i*2 + c)*7 + j] = d gamma_{i,c} / d p_j, p = (x0, y0, h, phi, z, q, k),
- * by the recursion (4.10). n >= 2. Errors: EL_EINVAL.
+ * by the recursion (4.10). n >= 2. Errors as el_discrete_eval (EL_EINVAL also for
+ * NULL jac; on EL_EDOM every element of jac and of a non-NULL xy is NaN).
  */
 int el_discrete_jacobian(const el_discrete_params *p, size_t n, double *xy, double *jac);
 

@@ -4,10 +4,15 @@
  * a_n = (theta_n - phi)/2, sin a_n = k sn(u_n;k), cos a_n = dn(u_n;k),
  * u_n = z n + q, and gamma_{n+1} = gamma_n + h (cos Theta_n, sin Theta_n).
  * The u_n are an arithmetic progression, so the Jacobi values come from the
- * addition theorems (el__jacobi_progression) at a few flops per vertex.
+ * addition theorems (el__walk_grid, jacobi_walk.c) at a few flops per vertex,
+ * a block of vertices at a time (no memory that grows with n).
  */
 #include "internal.h"
-#include <stdlib.h>
+#include <stdint.h>
+
+/* No caller can pass more vertices: jac would hold 14 n doubles, past SIZE_MAX bytes. */
+#define MAX_VERTICES (SIZE_MAX / (14 * sizeof(double)))
+enum { BLOCK = 64 };
 
 int el_discrete_check(const el_discrete_params *p)
 {
@@ -17,16 +22,32 @@ int el_discrete_check(const el_discrete_params *p)
     return EL_OK;
 }
 
-/* Jacobi values (and k-derivatives if dk) at the n vertices. */
-static int vertex_jacobi(const el_discrete_params *p, size_t n, el_jacobi **val, el_jacobi **dk)
+/* EL_EINVAL for bad arguments, EL_EDOM when the phase u_n = z n + q of some vertex
+ * leaves double precision's range (max(1, k)|u_n| > EL__PHASE_MAX, k != 1). */
+static int check_args(const el_discrete_params *p, size_t n, size_t nmin, const void *out)
 {
-    el_jacobi *v = malloc((dk ? 2 : 1) * n * sizeof *v);
-    if (!v) return EL_ENOMEM;
-    int st = el__jacobi_progression(p->q, p->z, p->k, n, v, dk ? v + n : NULL);
-    if (st) { free(v); return st; }
-    *val = v;
-    if (dk) *dk = v + n;
+    if (el_discrete_check(p) || n < nmin || n > MAX_VERTICES || !out) return EL_EINVAL;
+    const double ulast = fabs(p->q + p->z * (double)(n - 1)), u0 = fabs(p->q);
+    const double umax = ulast > u0 ? ulast : u0;
+    if (!isfinite(umax) || (p->k != 1.0 && (p->k > 1.0 ? p->k : 1.0) * umax > EL__PHASE_MAX))
+        return EL_EDOM;
     return EL_OK;
+}
+
+/* The walk over the vertices' u_n = z n + q. */
+static int walk_start(const el_discrete_params *p, size_t n, int with_dk, el__walk *wk)
+{
+    int st = el__walk_init(wk, p->k, with_dk, n);
+    if (!st) st = el__walk_grid(wk, p->q, p->z);
+    return st ? EL_EDOM : EL_OK;
+}
+
+/* Every output element NaN (the contract of EL_EDOM). */
+static int domain_error(double *a, size_t count, double *b, size_t bcount)
+{
+    for (size_t i = 0; a && i < count; i++) a[i] = NAN;
+    for (size_t i = 0; b && i < bcount; i++) b[i] = NAN;
+    return EL_EDOM;
 }
 
 /* Tangent of segment i in the frame rotated by phi: angle a_i + a_{i+1}. */
@@ -38,39 +59,59 @@ static void segment_tangent(double k, const el_jacobi *a, const el_jacobi *b, do
 
 int el_discrete_eval(const el_discrete_params *p, size_t n, double *xy)
 {
-    if (el_discrete_check(p) || n < 2 || !xy) return EL_EINVAL;
-    el_jacobi *v;
-    int st = vertex_jacobi(p, n, &v, NULL);
-    if (st) return st;
+    int st = check_args(p, n, 2, xy);
+    el__walk wk;
+    if (st == EL_EINVAL) return st;
+    if (st || walk_start(p, n, 0, &wk)) return domain_error(xy, 2 * n, NULL, 0);
     const double c = p->h * cos(p->phi), s = p->h * sin(p->phi);
     double x = p->x0, y = p->y0;
-    xy[0] = x; xy[1] = y;
-    for (size_t i = 0; i + 1 < n; i++) {
-        double tx, ty;
-        segment_tangent(p->k, &v[i], &v[i + 1], &tx, &ty);
-        x += c * tx - s * ty;
-        y += s * tx + c * ty;
-        xy[2 * i + 2] = x; xy[2 * i + 3] = y;
+    el_jacobi prev, v[BLOCK];
+    for (size_t i0 = 0; i0 < n; i0 += BLOCK) {
+        const size_t nb = n - i0 < BLOCK ? n - i0 : BLOCK;
+        if (el__walk_values(&wk, nb, NULL, v, NULL)) return domain_error(xy, 2 * n, NULL, 0);
+        for (size_t j = 0; j < nb; j++) {
+            const size_t i = i0 + j;
+            if (i > 0) {
+                double tx, ty;
+                segment_tangent(p->k, &prev, &v[j], &tx, &ty);
+                x += c * tx - s * ty;
+                y += s * tx + c * ty;
+            }
+            xy[2 * i] = x; xy[2 * i + 1] = y;
+            prev = v[j];
+        }
     }
-    free(v);
+    if (!isfinite(x) || !isfinite(y)) return domain_error(xy, 2 * n, NULL, 0);
     return EL_OK;
 }
 
 /* kappa_i = (2/h) tan(K_i/2), K_i = Theta_i - Theta_{i-1} = a_{i+1} - a_{i-1} (3.4). */
 int el_discrete_curvature(const el_discrete_params *p, size_t n, double *kappa)
 {
-    if (el_discrete_check(p) || n < 3 || !kappa) return EL_EINVAL;
-    el_jacobi *v;
-    int st = vertex_jacobi(p, n, &v, NULL);
-    if (st) return st;
+    int st = check_args(p, n, 3, kappa);
+    el__walk wk;
+    if (st == EL_EINVAL) return st;
+    if (st || walk_start(p, n, 0, &wk)) return domain_error(kappa, n - 2, NULL, 0);
     const double k = p->k;
-    for (size_t i = 1; i + 1 < n; i++) {
-        const el_jacobi *a = &v[i - 1], *b = &v[i + 1];
-        const double sinK = k * (b->sn * a->dn - b->dn * a->sn);
-        const double cosK = b->dn * a->dn + k * k * b->sn * a->sn;
-        kappa[i - 1] = 2.0 / p->h * sinK / (1.0 + cosK);
+    double bad = 0.0; /* x * 0 is NaN for inf and NaN */
+    el_jacobi before[2] = {{0, 0, 0, 0, 0, 0}, {0, 0, 0, 0, 0, 0}}, v[BLOCK]; /* vertices i-2, i-1 */
+    for (size_t i0 = 0; i0 < n; i0 += BLOCK) {
+        const size_t nb = n - i0 < BLOCK ? n - i0 : BLOCK;
+        if (el__walk_values(&wk, nb, NULL, v, NULL)) return domain_error(kappa, n - 2, NULL, 0);
+        for (size_t j = 0; j < nb; j++) {
+            const size_t i = i0 + j; /* vertex i + 1 ahead of the interior vertex i - 1 */
+            if (i >= 2) {
+                const el_jacobi *a = &before[0], *b = &v[j];
+                const double sinK = k * (b->sn * a->dn - b->dn * a->sn);
+                const double cosK = b->dn * a->dn + k * k * b->sn * a->sn;
+                kappa[i - 2] = 2.0 / p->h * sinK / (1.0 + cosK);
+                bad += kappa[i - 2] * 0.0;
+            }
+            before[0] = before[1];
+            before[1] = v[j];
+        }
     }
-    free(v);
+    if (bad != 0.0) return domain_error(kappa, n - 2, NULL, 0);
     return EL_OK;
 }
 
@@ -78,35 +119,44 @@ int el_discrete_curvature(const el_discrete_params *p, size_t n, double *kappa)
  * with d a/du = k cn and d a/dk = dn (sn + k sn_k) - k sn dn_k (from dn^2 + k^2 sn^2 = 1). */
 int el_discrete_jacobian(const el_discrete_params *p, size_t n, double *xy, double *jac)
 {
-    if (el_discrete_check(p) || n < 2 || !jac) return EL_EINVAL;
-    el_jacobi *v, *vk;
-    int st = vertex_jacobi(p, n, &v, &vk);
-    if (st) return st;
+    int st = check_args(p, n, 2, jac);
+    el__walk wk;
+    if (st == EL_EINVAL) return st;
+    if (st || walk_start(p, n, 1, &wk)) return domain_error(xy, 2 * n, jac, 14 * n);
     const double k = p->k, h = p->h, c = cos(p->phi), s = sin(p->phi);
-    double x = p->x0, y = p->y0;
+    double x = p->x0, y = p->y0, bad = 0.0;
     double dz[2] = {0, 0}, dq[2] = {0, 0}, dk[2] = {0, 0};
-    double az0 = 0.0, aq0 = k * v[0].cn, ak0 = v[0].dn * (v[0].sn + k * vk[0].sn) - k * v[0].sn * vk[0].dn;
-    for (size_t i = 0; i < n; i++) {
-        double *rx = jac + 2 * i * 7, *ry = rx + 7;
-        rx[0] = 1.0; rx[1] = 0.0; rx[2] = (x - p->x0) / h; rx[3] = -(y - p->y0);
-        ry[0] = 0.0; ry[1] = 1.0; ry[2] = (y - p->y0) / h; ry[3] = x - p->x0;
-        rx[4] = dz[0]; rx[5] = dq[0]; rx[6] = dk[0];
-        ry[4] = dz[1]; ry[5] = dq[1]; ry[6] = dk[1];
-        if (xy) { xy[2 * i] = x; xy[2 * i + 1] = y; }
-        if (i + 1 == n) break;
-        const el_jacobi *b = &v[i + 1], *bk = &vk[i + 1];
-        const double az1 = (double)(i + 1) * k * b->cn, aq1 = k * b->cn;
-        const double ak1 = b->dn * (b->sn + k * bk->sn) - k * b->sn * bk->dn;
-        double tx, ty;
-        segment_tangent(k, &v[i], b, &tx, &ty);
-        const double Tx = c * tx - s * ty, Ty = s * tx + c * ty; /* global tangent */
-        const double Nx = -h * Ty, Ny = h * Tx;                  /* h times global normal */
-        x += h * Tx; y += h * Ty;
-        dz[0] += Nx * (az0 + az1); dz[1] += Ny * (az0 + az1);
-        dq[0] += Nx * (aq0 + aq1); dq[1] += Ny * (aq0 + aq1);
-        dk[0] += Nx * (ak0 + ak1); dk[1] += Ny * (ak0 + ak1);
-        az0 = az1; aq0 = aq1; ak0 = ak1;
+    double az0 = 0.0, aq0 = 0.0, ak0 = 0.0; /* derivatives of a_(i-1) */
+    el_jacobi prev, v[BLOCK], vk[BLOCK];
+    for (size_t i0 = 0; i0 < n; i0 += BLOCK) {
+        const size_t nb = n - i0 < BLOCK ? n - i0 : BLOCK;
+        if (el__walk_values(&wk, nb, NULL, v, vk)) return domain_error(xy, 2 * n, jac, 14 * n);
+        for (size_t j = 0; j < nb; j++) {
+            const size_t i = i0 + j;
+            const el_jacobi *b = &v[j], *bk = &vk[j];
+            const double az1 = (double)i * k * b->cn, aq1 = k * b->cn;
+            const double ak1 = b->dn * (b->sn + k * bk->sn) - k * b->sn * bk->dn;
+            if (i > 0) { /* segment i - 1 -> i */
+                double tx, ty;
+                segment_tangent(k, &prev, b, &tx, &ty);
+                const double Tx = c * tx - s * ty, Ty = s * tx + c * ty; /* global tangent */
+                const double Nx = -h * Ty, Ny = h * Tx;                  /* h times global normal */
+                x += h * Tx; y += h * Ty;
+                dz[0] += Nx * (az0 + az1); dz[1] += Ny * (az0 + az1);
+                dq[0] += Nx * (aq0 + aq1); dq[1] += Ny * (aq0 + aq1);
+                dk[0] += Nx * (ak0 + ak1); dk[1] += Ny * (ak0 + ak1);
+            }
+            double *rx = jac + 2 * i * 7, *ry = rx + 7;
+            rx[0] = 1.0; rx[1] = 0.0; rx[2] = (x - p->x0) / h; rx[3] = -(y - p->y0);
+            ry[0] = 0.0; ry[1] = 1.0; ry[2] = (y - p->y0) / h; ry[3] = x - p->x0;
+            rx[4] = dz[0]; rx[5] = dq[0]; rx[6] = dk[0];
+            ry[4] = dz[1]; ry[5] = dq[1]; ry[6] = dk[1];
+            if (xy) { xy[2 * i] = x; xy[2 * i + 1] = y; }
+            az0 = az1; aq0 = aq1; ak0 = ak1;
+            prev = *b;
+        }
+        bad += (x + dz[0] + dz[1] + dq[0] + dq[1] + dk[0] + dk[1]) * 0.0;
     }
-    free(v);
+    if (bad != 0.0 || !isfinite(y)) return domain_error(xy, 2 * n, jac, 14 * n);
     return EL_OK;
 }

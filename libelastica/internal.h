@@ -38,12 +38,35 @@ int el__modulus_init(double k, int with_dk, el__modulus *mod);
  * (d_dk only if the modulus was prepared with_dk). */
 int el__jacobi_eval_mod(const el__modulus *mod, double u, el_jacobi *val, el_jacobi *d_du, el_jacobi *d_dk);
 
-/* Jacobi values and k-derivatives at u_n = z n + q for n = 0..count-1, by the
- * addition theorems with a fresh el_jacobi_eval every few steps (jacobi.c).
- * The amplitude am is not propagated (set to 0); every other field is.
- * val[count] required; d_dk[count] optional (NULL). */
-int el__jacobi_progression(double q, double z, double k, size_t count,
-                           el_jacobi *val, el_jacobi *d_dk);
+/* Jacobi sn, cn, dn, D (and k-derivatives) at many u_i at a few flops per point
+ * (jacobi_walk.c; am and E are not filled). The caller keeps max(1, k)|u_i| <= EL__PHASE_MAX.
+ *   el__walk wk;
+ *   el__walk_init(&wk, k, with_dk, n);         any u_i (fast when sorted), or
+ *   el__walk_grid(&wk, u0, z);                 after init: u_i = u0 + z i, u ignored;
+ *   el__walk_values(&wk, count, u, val, dk);   the next count points (call repeatedly);
+ * with n < WALK_MIN_POINTS every point gets a fresh el__jacobi_eval_mod (setup would
+ * cost more). dk[count] only when with_dk. Statuses: those of el__jacobi_eval_mod. */
+enum { WALK_PLAIN, WALK_GRID, WALK_ANCHORED, WALK_MIN_POINTS = 8 };
+typedef struct el__walk {
+    el__modulus mod;
+    double k, kappa;           /* k >= 0 and max(1, k) */
+    int with_dk, mode, from_grid;
+    double u0, z;              /* the grid u0 + z i, next = the index of the next point */
+    size_t next;
+    el_jacobi zstep, zstepk, cur, curk;
+    double H, ua;              /* anchor spacing; where the anchors' fresh evaluation is */
+    int ja, steps;             /* current anchor (index from ua), steps since fresh; -1: none */
+    int have_hstep, have_series;
+    el_jacobi hstep[2], hstepk[2], anc, anck;
+    double ser[8][6];          /* Maclaurin coefficients of sn cn dn D and their k-derivatives */
+} el__walk;
+int el__walk_init(el__walk *wk, double k, int with_dk, size_t n);
+int el__walk_grid(el__walk *wk, double u0, double z);
+int el__walk_values(el__walk *wk, size_t count, const double *u, el_jacobi *val, el_jacobi *dk);
+
+/* The largest max(1, k)|u| whose Jacobi functions keep digits: 2K is known to a
+ * rounding, so reducing u costs |u| 2^-53 of the phase (a quarter at this bound). */
+#define EL__PHASE_MAX 0x1p50
 
 /* Join count clamped planar B-splines of one degree p in 3..7, each on its own
  * parameter interval, end to end into *out (parameters shifted to follow each

@@ -19,8 +19,6 @@
 
 /* Below this k, L = (J - D)/k^2 loses more than two digits: use its series. */
 #define SMALL_K 0.1
-/* Addition-theorem steps between two fresh evaluations in a progression. */
-#define RESEED 32
 
 /* Carlson R_D to double precision. */
 static int carlson_rd(double x, double y, double z, double *out)
@@ -54,7 +52,8 @@ int el__modulus_init(double k, int with_dk, el__modulus *mod)
     const double kg = k <= 1.0 ? k : 1.0 / k; /* the modulus the core sees */
     mod->k = k;
     mod->kg = kg;
-    mod->kp = k <= 1.0 ? sqrt((1.0 - k) * (1.0 + k)) : sqrt((k - 1.0) * (k + 1.0)) / k;
+    /* (k - 1)(k + 1) would overflow for k > 1e154 */
+    mod->kp = k <= 1.0 ? sqrt((1.0 - k) * (1.0 + k)) : sqrt(k - 1.0) * sqrt(k + 1.0) / k;
     mod->K = mod->Dc = mod->Jc = INFINITY;
     if (!with_dk) mod->Jc = NAN;
     if (kg < 1.0) {
@@ -64,7 +63,7 @@ int el__modulus_init(double k, int with_dk, el__modulus *mod)
         const double kp2 = mod->kp * mod->kp;
         if (el__ellint_complete(kg, kp2, &mod->K, &mod->Dc) ||
             (with_dk && carlson_rd(0.0, 1.0, kp2, &mod->Jc)))
-            return EL_EINTERNAL;
+            return EL_EDOM; /* not reached: 0 < kp2 <= 1 */
         if (with_dk) mod->Jc /= 3.0;
     }
     return EL_OK;
@@ -76,7 +75,11 @@ int el__modulus_init(double k, int with_dk, el__modulus *mod)
  * algorithm but takes only m = k^2 and forms 1 - m itself, which near k = 1
  * loses half the digits of k'^2 (1e-13 errors at |u| ~ 10, k = 1 - 1e-6); here
  * the complementary modulus kp comes in exactly, and c_{n+1} = c_n^2/(4 a_{n+1})
- * avoids the cancellation of (a_n - b_n)/2 as k -> 0.
+ * avoids the cancellation of (a_n - b_n)/2 as k -> 0. Near k = 1 the first
+ * c_1 = (1 - kp)/2 comes from kp alone: for k > 1 the caller's k = 1/|k| is rounded,
+ * and sn, cn, dn at k ~ 1 are so sensitive to k (d cn/dk ~ sinh(u)/2 on the
+ * plateau sn ~ 1) that its rounding, not kp's, set the error (2e-13 in cn, 1e-9
+ * in D at |k| = 1 + 1e-15, u = 9).
  */
 static void jacobi_agm(double u, double k, double kp, double *sn, double *cn, double *dn)
 {
@@ -87,7 +90,7 @@ static void jacobi_agm(double u, double k, double kp, double *sn, double *cn, do
     c[0] = k;
     while (n < NMAX && c[n] > 1e-17 * a[n]) {
         a[n + 1] = 0.5 * (a[n] + b);
-        c[n + 1] = c[n] * c[n] / (4.0 * a[n + 1]);
+        c[n + 1] = n == 0 && kp < 0.5 ? 0.5 * (1.0 - kp) : c[n] * c[n] / (4.0 * a[n + 1]);
         b = sqrt(a[n] * b);
         n++;
     }
@@ -97,6 +100,40 @@ static void jacobi_agm(double u, double k, double kp, double *sn, double *cn, do
     *sn = sin(phi);
     *cn = cos(phi);
     *dn = sqrt(*cn * *cn + kp * kp * *sn * *sn); /* 1 - k^2 sn^2 as a sum of squares */
+}
+
+/*
+ * sn, cn, dn and D at |x| <= K/2 (0 <= k < 1). Near k = 1 that interval holds a
+ * plateau where sn ~ 1 and cn ~ dn ~ 2 e^-|x| are tiny; there the AGM's last
+ * asin(c/a sin phi) sits next to 1 and loses cn's relative digits (4e-10 at
+ * |k| = 1 +- 1e-15, x = 9), and R_D(cn^2, dn^2, 1) with them D's (4e-10). So the AGM
+ * and R_D run at x / 2^j <= 1, and j duplications, in forms whose terms share a sign
+ * while |2v| <= K/2 (cn^2 - k' sn^2 >= 0 up to 2v = K), carry the values up:
+ *   den = cn^2 (1 + sn^2) + k'^2 sn^4 (= 1 - k^2 sn^4),  sn(2v) = 2 sn cn dn / den,
+ *   cn(2v) = (cn^2 - k' sn^2)(cn^2 + k' sn^2) / den,  dn(2v) = (cn^2 dn^2 + k'^2 sn^2) / den,
+ *   D(2v) = 2 D(v) + sn^2 sn(2v)   (the addition theorems at a = b = v).
+ * Each doubles the relative error, as a phase error would: ~|x| eps in all.
+ * For k <= 0.8, K/2 < 1 and nothing is doubled.
+ */
+static int jacobi_reduced(const el__modulus *mod, double x, double *sn, double *cn, double *dn, double *D)
+{
+    const double kp = mod->kp, kp2 = kp * kp;
+    double s, c, d, Dv, v = x;
+    int j = 0, st;
+    while (fabs(v) > 1.0) { v *= 0.5; j++; } /* exact */
+    jacobi_agm(v, mod->kg, kp, &s, &c, &d);
+    if ((st = carlson_rd(c * c, d * d, 1.0, &Dv))) return st;
+    Dv *= s * s * s / 3.0;
+    for (; j > 0; j--) {
+        const double s2 = s * s, c2 = c * c, den = c2 * (1.0 + s2) + kp2 * s2 * s2;
+        const double ns = 2.0 * s * c * d / den;
+        c = (c2 - kp * s2) * (c2 + kp * s2) / den;
+        d = (c2 * d * d + kp2 * s2) / den;
+        Dv = 2.0 * Dv + s2 * ns;
+        s = ns;
+    }
+    *sn = s; *cn = c; *dn = d; *D = Dv;
+    return EL_OK;
 }
 
 /*
@@ -120,18 +157,14 @@ static int jacobi_le1(const el__modulus *mod, double u, el_jacobi *val, el_jacob
         nhalf = nearbyint(u / (2.0 * mod->K));
         double r = fma(-nhalf, 2.0 * mod->K, u); /* one rounding */
         if (fabs(r) <= 0.5 * mod->K) {
-            jacobi_agm(r, k, mod->kp, &sn, &cn, &dn);
-            if ((st = carlson_rd(cn * cn, dn * dn, 1.0, &D))) return st;
-            D *= sn * sn * sn / 3.0;
+            if ((st = jacobi_reduced(mod, r, &sn, &cn, &dn, &D))) return st;
         } else {
             /* GSL and R_D lose digits near m = 1 for arguments close to K: use the
              * quarter-period shift with the smaller x = K - |r|,
              *   sn(K-x) = cd x, cn(K-x) = k' sd x, dn(K-x) = k' nd x,
              *   D(K-x) = D(K) - D(x) - sn x cd x   (addition theorem for D). */
             double s, c, d, Dx, kp = mod->kp;
-            jacobi_agm(mod->K - fabs(r), k, kp, &s, &c, &d);
-            if ((st = carlson_rd(c * c, d * d, 1.0, &Dx))) return st;
-            Dx *= s * s * s / 3.0;
+            if ((st = jacobi_reduced(mod, mod->K - fabs(r), &s, &c, &d, &Dx))) return st;
             sn = copysign(c / d, r);
             cn = kp * s / d;
             dn = kp / d;
@@ -145,14 +178,22 @@ static int jacobi_le1(const el__modulus *mod, double u, el_jacobi *val, el_jacob
             phi += nhalf * M_PI;
         }
     }
-    if (dk) {
+    if (dk && k == 1.0) {
+        /* the first order in k'^2 of A&S 16.15.1-4 with d(k'^2)/dk = -2, and its
+         * integral for D: closed forms where J below would underflow (|u| > 350) */
+        const double th = sn, sh = sinh(u), usech = u * cn;
+        dk->am = -0.5 * (sh - usech);
+        dk->sn = -0.5 * (th - usech * cn);
+        dk->cn = 0.5 * th * (sh - usech);
+        dk->dn = -0.5 * th * (sh + usech);
+        dk->D = -1.5 * D + 0.5 * u * th * th;
+        dk->E = -2.0 * D - dk->D;
+    } else if (dk) {
         /* J over the reduced amplitude, plus whole half periods */
-        double J, L;
+        double J;
         if ((st = carlson_rd(cr * cr, 1.0, dr * dr, &J))) return st;
         J *= sr * sr * sr / 3.0;
         if (nhalf != 0.0) J += nhalf * 2.0 * mod->Jc;
-        if (k < SMALL_K) L = small_k_L(phi, k);
-        else L = (J - D) / m;
         double am_k = -k * dn * J;
         dk->am = am_k;
         dk->sn = cn * am_k;
@@ -160,11 +201,15 @@ static int jacobi_le1(const el__modulus *mod, double u, el_jacobi *val, el_jacob
         /* dn = sqrt(1 - k^2 sin^2 phi): -k sin^2/Delta + k^3 sin cos J */
         dk->dn = (dn > 0.0 ? -k * sn * sn / dn : -INFINITY) + m * k * sn * cn * J;
         if (k == 0.0) dk->dn = 0.0;
-        dk->D = k * (L - sn * sn * J);
+        /* dD/dk = k (L - sn^2 J) = (J dn^2 - D) / k: the first form with the series of
+         * L for small k (where the second cancels to k^2), the second elsewhere (on
+         * the plateau sn ~ 1 near k = 1, J ~ 1/(2 dn^2) is huge and L - sn^2 J
+         * would cancel to eps J: 1e-3 at k = 1, u = 15) */
+        dk->D = k < SMALL_K ? k * (small_k_L(phi, k) - sn * sn * J) : (J * dn * dn - D) / k;
         dk->E = -2.0 * k * D - m * dk->D;
     }
     val->sn = sn; val->cn = cn; val->dn = dn; val->am = phi; val->D = D;
-    val->E = u - m * D;
+    val->E = k == 1.0 ? sn : u - m * D; /* at k = 1, E = tanh u without cancellation */
     return EL_OK;
 }
 
@@ -174,6 +219,7 @@ int el__jacobi_eval_mod(const el__modulus *mod, double u, el_jacobi *val, el_jac
     const double k = mod->k;
     el_jacobi v, dk;
     int st;
+    if (k != 1.0 && (k > 1.0 ? k : 1.0) * fabs(u) > EL__PHASE_MAX) return EL_EDOM;
     if (k <= 1.0) {
         if ((st = jacobi_le1(mod, u, &v, d_dk ? &dk : NULL))) return st;
     } else {
@@ -200,18 +246,22 @@ int el__jacobi_eval_mod(const el__modulus *mod, double u, el_jacobi *val, el_jac
             dk.am = v.cn * dk.sn - v.sn * dk.cn;
         }
     }
+    /* k-derivatives overflow at k = 1 beyond |u| ~ 700 (d cn/dk ~ e^|u| / 4 there) and
+     * for k > 1e154 (k^2 D); values never, but check them too */
+    const double all[6] = {v.sn, v.cn, v.dn, v.am, v.D, v.E};
+    if (el__all_finite(all, 6)) return EL_EDOM;
+    if (d_dk) {
+        const double der[6] = {dk.sn, dk.cn, dk.dn, dk.am, dk.D, dk.E};
+        if (el__all_finite(der, 6)) return EL_EDOM;
+        *d_dk = dk;
+    }
     if (d_du) {
         d_du->sn = v.cn * v.dn;
         d_du->cn = -v.sn * v.dn;
-        d_du->dn = -k * k * v.sn * v.cn;
+        d_du->dn = -k * (k * v.sn) * v.cn; /* k sn is bounded by 1: no overflow */
         d_du->am = v.dn;
         d_du->E = v.dn * v.dn;
         d_du->D = v.sn * v.sn;
-    }
-    if (d_dk) {
-        if (!isfinite(dk.sn) || !isfinite(dk.cn) || !isfinite(dk.dn) || !isfinite(dk.D))
-            return EL_EDOM; /* only at k = 1 with |u| so large that sech underflows */
-        *d_dk = dk;
     }
     *val = v;
     return EL_OK;
@@ -223,67 +273,4 @@ int el_jacobi_eval(double u, double k, el_jacobi *val, el_jacobi *d_du, el_jacob
     if (!val || !isfinite(u)) return EL_EINVAL;
     int st = el__modulus_init(k, d_dk != NULL, &mod);
     return st ? st : el__jacobi_eval_mod(&mod, u, val, d_du, d_dk);
-}
-
-/*
- * One addition-theorem step (a = u, b = z):
- *   sn(a+b) = (sa cb db + sb ca da)/den,  cn(a+b) = (ca cb - sa sb da db)/den,
- *   dn(a+b) = (da db - k^2 sa sb ca cb)/den,  den = 1 - k^2 sa^2 sb^2,
- *   D(a+b) = D(a) + D(b) + sa sb sn(a+b)   (from E(a+b) = E(a)+E(b) - k^2 sa sb sn(a+b)).
- * They are algebraic identities, so they hold for k > 1 as well. With ak/bk
- * non-NULL the k-derivatives are propagated by differentiating the same formulas.
- */
-static void add_step(double k, const el_jacobi *a, const el_jacobi *ak,
-                     const el_jacobi *b, const el_jacobi *bk, el_jacobi *r, el_jacobi *rk)
-{
-    const double m = k * k, ss = a->sn * b->sn, den = 1.0 - m * ss * ss, id = 1.0 / den;
-    const double ns = a->sn * b->cn * b->dn + b->sn * a->cn * a->dn;
-    const double nc = a->cn * b->cn - ss * a->dn * b->dn;
-    const double nd = a->dn * b->dn - m * ss * a->cn * b->cn;
-    r->sn = ns * id;
-    r->cn = nc * id;
-    r->dn = nd * id;
-    r->D = a->D + b->D + ss * r->sn;
-    if (rk) {
-        const double ssk = ak->sn * b->sn + a->sn * bk->sn;
-        const double denk = -2.0 * k * ss * ss - 2.0 * m * ss * ssk;
-        const double nsk = ak->sn * b->cn * b->dn + a->sn * bk->cn * b->dn + a->sn * b->cn * bk->dn
-                         + bk->sn * a->cn * a->dn + b->sn * ak->cn * a->dn + b->sn * a->cn * ak->dn;
-        const double cc = a->cn * b->cn, cck = ak->cn * b->cn + a->cn * bk->cn;
-        const double dd = a->dn * b->dn, ddk = ak->dn * b->dn + a->dn * bk->dn;
-        const double nck = cck - ssk * dd - ss * ddk;
-        const double ndk = ddk - 2.0 * k * ss * cc - m * (ssk * cc + ss * cck);
-        rk->sn = (nsk - r->sn * denk) * id;
-        rk->cn = (nck - r->cn * denk) * id;
-        rk->dn = (ndk - r->dn * denk) * id;
-        rk->D = ak->D + bk->D + ssk * r->sn + ss * rk->sn;
-    }
-}
-
-int el__jacobi_progression(double q, double z, double k, size_t count,
-                           el_jacobi *val, el_jacobi *d_dk)
-{
-    el_jacobi step, stepk;
-    el__modulus mod;
-    int st;
-    if (count == 0) return EL_OK;
-    if ((st = el__modulus_init(k, d_dk != NULL, &mod))) return st;
-    if ((st = el__jacobi_eval_mod(&mod, z, &step, NULL, d_dk ? &stepk : NULL))) return st;
-    for (size_t i = 0; i < count; i++) {
-        if (i % RESEED == 0) {
-            st = el__jacobi_eval_mod(&mod, q + z * (double)i, &val[i], NULL, d_dk ? &d_dk[i] : NULL);
-            if (st) return st;
-            continue;
-        }
-        add_step(k, &val[i - 1], d_dk ? &d_dk[i - 1] : NULL, &step, d_dk ? &stepk : NULL,
-                 &val[i], d_dk ? &d_dk[i] : NULL);
-        const double u = q + z * (double)i;
-        val[i].E = u - k * k * val[i].D;
-        val[i].am = 0.0; /* not propagated: no caller needs it (internal.h) */
-        if (d_dk) {
-            d_dk[i].E = -2.0 * k * val[i].D - k * k * d_dk[i].D;
-            d_dk[i].am = 0.0;
-        }
-    }
-    return EL_OK;
 }

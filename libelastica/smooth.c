@@ -12,7 +12,11 @@
  *   gamma(s) = (x0, y0) + R(phi) (X, Y),   kappa = 2 a' = 2k sqrt(mu) cn u.
  */
 #include "internal.h"
-#include <stdlib.h>
+#include <float.h>
+#include <stdint.h>
+
+/* No caller can pass more points: jac would hold 14 n doubles, past SIZE_MAX bytes. */
+#define MAX_POINTS (SIZE_MAX / (14 * sizeof(double)))
 
 int el_smooth_check(const el_smooth_params *p)
 {
@@ -22,39 +26,9 @@ int el_smooth_check(const el_smooth_params *p)
     return EL_OK;
 }
 
-/* True when s is an arithmetic progression to rounding (sampling grids). */
-static int equally_spaced(size_t n, const double *s)
-{
-    if (n < 8) return 0;
-    const double ds = (s[n - 1] - s[0]) / (double)(n - 1);
-    const double tol = 1e-13 * (fabs(s[0]) + fabs(s[n - 1]) + fabs(ds) * (double)n);
-    for (size_t i = 0; i < n; i++)
-        if (fabs(s[i] - (s[0] + ds * (double)i)) > tol) return 0;
-    return 1;
-}
-
-/* Jacobi values (and derivatives in |k|, with a modulus prepared with_dk) at
- * u_i = sqrt(mu) s_i + q, plus the base point u = q. */
-static int jacobi_at(const el_smooth_params *p, const el__modulus *mod, size_t n, const double *s,
-                     el_jacobi *val, el_jacobi *dk, el_jacobi *base, el_jacobi *base_dk)
-{
-    const double w = sqrt(p->mu);
-    int st = el__jacobi_eval_mod(mod, p->q, base, NULL, base_dk);
-    if (st) return st;
-    if (equally_spaced(n, s)) {
-        const double ds = (s[n - 1] - s[0]) / (double)(n - 1);
-        return el__jacobi_progression(w * s[0] + p->q, w * ds, fabs(p->k), n, val, dk);
-    }
-    for (size_t i = 0; i < n; i++) {
-        if (s[i] == 0.0 && (!dk || base_dk)) {          /* u = q: the base point itself */
-            val[i] = *base;
-            if (dk) dk[i] = *base_dk;
-        } else if ((st = el__jacobi_eval_mod(mod, w * s[i] + p->q, &val[i], NULL, dk ? &dk[i] : NULL))) {
-            return st;
-        }
-    }
-    return EL_OK;
-}
+/* Points per block: the Jacobi values of one block live on the stack, so evaluation
+ * needs no memory that grows with n. */
+enum { BLOCK = 64 };
 
 /* theta - phi = 2a with a continuous in s, a odd in k. For |k| <= 1, |a| <= pi/2
  * (dn >= 0); for |k| > 1, a = am(|k| u; 1/|k|) grows without bound: the branch of
@@ -70,95 +44,195 @@ static double half_angle(double u, double k, double K_reciprocal, const el_jacob
     return copysign(1.0, k) * a;
 }
 
-static int check_eval_args(const el_smooth_params *p, size_t n, const double *s)
+/* What one pass over the samples finds (EL_EINVAL for a non-finite s): the largest
+ * |u| = |sqrt(mu) s + q| (with the base point u = q) and |s|, and whether s is an
+ * arithmetic progression to a few roundings (sampling grids such as linspace; the
+ * grid walk evaluates at s0 + ds i, at most 8 eps (|s0| + |s_(n-1)|) from s_i). */
+typedef struct samples {
+    double umax, smax;
+    int uniform;
+} samples;
+
+static int scan_samples(const el_smooth_params *p, size_t n, const double *s, samples *sc)
 {
-    if (el_smooth_check(p)) return EL_EINVAL;
-    if (n > 0 && !s) return EL_EINVAL;
-    return n > 0 ? el__all_finite(s, n) : EL_OK;
+    if (el_smooth_check(p) || (n > 0 && !s) || n > MAX_POINTS) return EL_EINVAL;
+    const double w = sqrt(p->mu), ds = n > 1 ? (s[n - 1] - s[0]) / (double)(n - 1) : 0.0;
+    double umax = fabs(p->q), smax = 0.0, dev = 0.0;
+    int finite = 1;
+    for (size_t i = 0; i < n; i++) {
+        const double u = fabs(w * s[i] + p->q), a = fabs(s[i]), e = fabs(s[i] - (s[0] + ds * (double)i));
+        finite &= a <= DBL_MAX; /* false for NaN too */
+        umax = u > umax ? u : umax;
+        smax = a > smax ? a : smax;
+        dev = e > dev ? e : dev;
+    }
+    if (!finite) return EL_EINVAL;
+    sc->umax = umax;
+    sc->smax = smax;
+    sc->uniform = n >= WALK_MIN_POINTS && dev <= 8.0 * DBL_EPSILON * (fabs(s[0]) + fabs(s[n - 1]));
+    return EL_OK;
+}
+
+/*
+ * EL_EDOM when double precision cannot resolve the samples (header): the phase
+ * max(1, |k|)|u| past EL__PHASE_MAX (|k| != 1), or the closed form's rounding,
+ * eps (1 + |u|)(1 + |k|) / sqrt(mu) (u = sqrt(mu) s + q is rounded, then D(u) - D(q)
+ * and cn u - cn q are divided by sqrt(mu)), above 1e-3 of the extent
+ * max(length, |s_i|): fewer than three digits left.
+ */
+static int smooth_domain(const el_smooth_params *p, const samples *sc)
+{
+    const double w = sqrt(p->mu), ka = fabs(p->k), umax = sc->umax;
+    if (!isfinite(umax) || (ka != 1.0 && (ka > 1.0 ? ka : 1.0) * umax > EL__PHASE_MAX))
+        return EL_EDOM;
+    const double extent = sc->smax > p->length ? sc->smax : p->length;
+    if (DBL_EPSILON * (1.0 + umax) * (1.0 + ka) > 1e-3 * w * extent && extent > 0.0) return EL_EDOM;
+    return EL_OK;
+}
+
+/* Every output element NaN (the contract of EL_EDOM): nothing half-written looks valid. */
+static void fill_nan(double *a, size_t count)
+{
+    if (a)
+        for (size_t i = 0; i < count; i++) a[i] = NAN;
+}
+
+/* The walk over u_i = sqrt(mu) s_i + q (the grid walk for equally spaced s) and the
+ * Jacobi values at the base point u = q. */
+static int walk_start(const el_smooth_params *p, size_t n, const double *s, const samples *sc,
+                      int with_dk, el__walk *wk, el_jacobi *base, el_jacobi *base_dk)
+{
+    const double w = sqrt(p->mu);
+    int st = smooth_domain(p, sc);
+    if (!st) st = el__walk_init(wk, fabs(p->k), with_dk, n);
+    if (!st && sc->uniform)
+        st = el__walk_grid(wk, w * s[0] + p->q, w * ((s[n - 1] - s[0]) / (double)(n - 1)));
+    if (!st) st = el__jacobi_eval_mod(&wk->mod, p->q, base, NULL, base_dk);
+    return st ? EL_EDOM : EL_OK; /* inputs are checked: only overflow fails here */
 }
 
 int el_smooth_eval(const el_smooth_params *p, size_t n, const double *s,
                    double *xy, double *theta, double *kappa)
 {
-    int st = check_eval_args(p, n, s);
+    samples sc;
+    int st = scan_samples(p, n, s, &sc);
     if (st || n == 0) return st;
-    el__modulus mod;
-    if ((st = el__modulus_init(fabs(p->k), 0, &mod))) return st;
-    el_jacobi *v = malloc(n * sizeof *v), b;
-    if (!v) return EL_ENOMEM;
-    if ((st = jacobi_at(p, &mod, n, s, v, NULL, &b, NULL))) { free(v); return st; }
-    const double w = sqrt(p->mu), k = p->k, c = cos(p->phi), sp = sin(p->phi);
-    for (size_t i = 0; i < n; i++) {
-        const double u = w * s[i] + p->q;
-        if (xy) {
-            const double X = ((u - p->q) - 2.0 * k * k * (v[i].D - b.D)) / w;
-            const double Y = -2.0 * k * (v[i].cn - b.cn) / w;
-            xy[2 * i] = p->x0 + c * X - sp * Y;
-            xy[2 * i + 1] = p->y0 + sp * X + c * Y;
+    el__walk wk;
+    el_jacobi b;
+    st = walk_start(p, n, s, &sc, 0, &wk, &b, NULL);
+    const double w = sqrt(p->mu), iw = 1.0 / w, k = p->k, c = cos(p->phi), sp = sin(p->phi);
+    double finite = 0.0; /* x - x is 0 for finite x, NaN otherwise: stays 0 while no output overflows */
+    for (size_t i0 = 0; i0 < n && !st; i0 += BLOCK) {
+        const size_t nb = n - i0 < BLOCK ? n - i0 : BLOCK;
+        double u[BLOCK];
+        el_jacobi v[BLOCK];
+        for (size_t j = 0; j < nb; j++) u[j] = w * s[i0 + j] + p->q;
+        if ((st = el__walk_values(&wk, nb, u, v, NULL))) break;
+        for (size_t j = 0; j < nb; j++) {
+            const size_t i = i0 + j;
+            if (xy) {
+                const double X = ((u[j] - p->q) - 2.0 * k * k * (v[j].D - b.D)) * iw;
+                const double Y = -2.0 * k * (v[j].cn - b.cn) * iw;
+                xy[2 * i] = p->x0 + c * X - sp * Y;
+                xy[2 * i + 1] = p->y0 + sp * X + c * Y;
+                finite += (xy[2 * i] - xy[2 * i]) + (xy[2 * i + 1] - xy[2 * i + 1]);
+            }
+            if (theta) {
+                theta[i] = p->phi + 2.0 * half_angle(u[j], k, wk.mod.K, &v[j]);
+                finite += theta[i] - theta[i];
+            }
+            if (kappa) {
+                kappa[i] = 2.0 * k * w * v[j].cn;
+                finite += kappa[i] - kappa[i];
+            }
         }
-        if (theta) theta[i] = p->phi + 2.0 * half_angle(u, k, mod.K, &v[i]);
-        if (kappa) kappa[i] = 2.0 * k * w * v[i].cn;
     }
-    free(v);
+    if (st || finite != 0.0) {
+        fill_nan(xy, 2 * n);
+        fill_nan(theta, n);
+        fill_nan(kappa, n);
+        return EL_EDOM;
+    }
     return EL_OK;
 }
 
 int el_smooth_jacobian(const el_smooth_params *p, size_t n, const double *s,
                        double *xy, double *jac)
 {
-    int st = check_eval_args(p, n, s);
+    samples sc;
+    int st = scan_samples(p, n, s, &sc);
     if (st || n == 0) return st;
     if (!jac) return EL_EINVAL;
-    el__modulus mod;
-    if ((st = el__modulus_init(fabs(p->k), 1, &mod))) return st;
-    el_jacobi *v = malloc(2 * n * sizeof *v), b, bk;
-    if (!v) return EL_ENOMEM;
-    el_jacobi *vk = v + n;
-    if ((st = jacobi_at(p, &mod, n, s, v, vk, &b, &bk))) { free(v); return st; }
-    const double w = sqrt(p->mu), k = p->k, c = cos(p->phi), sp = sin(p->phi);
+    el__walk wk;
+    el_jacobi b, bk;
+    st = walk_start(p, n, s, &sc, 1, &wk, &b, &bk);
+    const double w = sqrt(p->mu), iw = 1.0 / w, k = p->k, c = cos(p->phi), sp = sin(p->phi);
     const double m = k * k, sgn = copysign(1.0, k);
-    for (size_t i = 0; i < n; i++) {
-        const double si = s[i], u = w * si + p->q;
-        const double P = (u - p->q) - 2.0 * m * (v[i].D - b.D), X = P / w;
-        const double Qy = -2.0 * k * (v[i].cn - b.cn), Y = Qy / w;
-        /* tangent in the rotated frame */
-        const double tx = 1.0 - 2.0 * m * v[i].sn * v[i].sn, ty = 2.0 * k * v[i].sn * v[i].dn;
-        /* d/dw with u = w s + q: dP/dw = s tx, dQy/dw = s ty */
-        const double Xw = (si * tx - X) / w, Yw = (si * ty - Y) / w;
-        /* vk holds derivatives in |k|: d/dk = sign(k) d/d|k| */
-        const double Xk = (-4.0 * k * (v[i].D - b.D) - 2.0 * m * sgn * (vk[i].D - bk.D)) / w;
-        const double Yk = (-2.0 * (v[i].cn - b.cn) - 2.0 * k * sgn * (vk[i].cn - bk.cn)) / w;
-        const double Xq = -2.0 * m * (v[i].sn * v[i].sn - b.sn * b.sn) / w;
-        const double Yq = 2.0 * k * (v[i].sn * v[i].dn - b.sn * b.dn) / w;
-        const double t = p->length > 0.0 ? si / p->length : 0.0;
-        /* local derivative vectors (X,Y)_p for phi, mu, k, q, length */
-        const double lx[5] = {-Y, Xw / (2.0 * w), Xk, Xq, t * tx};
-        const double ly[5] = {X, Yw / (2.0 * w), Yk, Yq, t * ty};
-        double *rx = jac + (2 * i) * 7, *ry = rx + 7;
-        rx[0] = 1.0; rx[1] = 0.0;
-        ry[0] = 0.0; ry[1] = 1.0;
-        for (int j = 0; j < 5; j++) {
-            rx[2 + j] = c * lx[j] - sp * ly[j];
-            ry[2 + j] = sp * lx[j] + c * ly[j];
-        }
-        if (xy) {
-            xy[2 * i] = p->x0 + c * X - sp * Y;
-            xy[2 * i + 1] = p->y0 + sp * X + c * Y;
+    double finite = 0.0; /* as in el_smooth_eval */
+    for (size_t i0 = 0; i0 < n && !st; i0 += BLOCK) {
+        const size_t nb = n - i0 < BLOCK ? n - i0 : BLOCK;
+        double u[BLOCK];
+        el_jacobi v[BLOCK], vk[BLOCK];
+        for (size_t j = 0; j < nb; j++) u[j] = w * s[i0 + j] + p->q;
+        if ((st = el__walk_values(&wk, nb, u, v, vk))) break;
+        for (size_t j = 0; j < nb; j++) {
+            const size_t i = i0 + j;
+            const double si = s[i];
+            const double X = ((u[j] - p->q) - 2.0 * m * (v[j].D - b.D)) * iw;
+            const double Y = -2.0 * k * (v[j].cn - b.cn) * iw;
+            /* tangent in the rotated frame */
+            const double tx = 1.0 - 2.0 * m * v[j].sn * v[j].sn, ty = 2.0 * k * v[j].sn * v[j].dn;
+            /* d/dw with u = w s + q: dP/dw = s tx, dQy/dw = s ty */
+            const double Xw = (si * tx - X) * iw, Yw = (si * ty - Y) * iw;
+            /* vk holds derivatives in |k|: d/dk = sign(k) d/d|k| */
+            const double Xk = (-4.0 * k * (v[j].D - b.D) - 2.0 * m * sgn * (vk[j].D - bk.D)) * iw;
+            const double Yk = (-2.0 * (v[j].cn - b.cn) - 2.0 * k * sgn * (vk[j].cn - bk.cn)) * iw;
+            const double Xq = -2.0 * m * (v[j].sn * v[j].sn - b.sn * b.sn) * iw;
+            const double Yq = 2.0 * k * (v[j].sn * v[j].dn - b.sn * b.dn) * iw;
+            const double t = p->length > 0.0 ? si / p->length : 0.0;
+            /* local derivative vectors (X,Y)_p for phi, mu, k, q, length */
+            const double lx[5] = {-Y, 0.5 * Xw * iw, Xk, Xq, t * tx};
+            const double ly[5] = {X, 0.5 * Yw * iw, Yk, Yq, t * ty};
+            double *rx = jac + (2 * i) * 7, *ry = rx + 7;
+            rx[0] = 1.0; rx[1] = 0.0;
+            ry[0] = 0.0; ry[1] = 1.0;
+            double zero = 0.0; /* as in el_smooth_eval */
+            for (int col = 0; col < 5; col++) {
+                rx[2 + col] = c * lx[col] - sp * ly[col];
+                ry[2 + col] = sp * lx[col] + c * ly[col];
+                zero += (rx[2 + col] - rx[2 + col]) + (ry[2 + col] - ry[2 + col]);
+            }
+            if (xy) {
+                xy[2 * i] = p->x0 + c * X - sp * Y;
+                xy[2 * i + 1] = p->y0 + sp * X + c * Y;
+                zero += (xy[2 * i] - xy[2 * i]) + (xy[2 * i + 1] - xy[2 * i + 1]);
+            }
+            finite += zero;
         }
     }
-    free(v);
+    if (st || finite != 0.0) {
+        fill_nan(xy, 2 * n);
+        fill_nan(jac, 14 * n);
+        return EL_EDOM;
+    }
     return EL_OK;
 }
 
-/* int kappa^2 ds = 4 k^2 mu int cn^2 ds = 4 k^2 sqrt(mu) [(u - D(u))]_q^{u1}. */
+/* int kappa^2 ds = 4 k^2 mu int cn^2 ds = 4 k^2 sqrt(mu) [u - D(u)]_q^{u1}; at |k| = 1,
+ * 4 sqrt(mu) [E(u)]_q^{u1} with E = tanh (no cancellation of u - D for long curves). */
 int el_smooth_energy(const el_smooth_params *p, double *energy)
 {
-    if (el_smooth_check(p) || !energy) return EL_EINVAL;
-    const double w = sqrt(p->mu), u1 = w * p->length + p->q;
+    samples sc;
+    if (!energy || scan_samples(p, 1, &p->length, &sc)) return EL_EINVAL;
+    const double w = sqrt(p->mu), u1 = w * p->length + p->q, ka = fabs(p->k);
+    el__modulus mod;
     el_jacobi a, b;
-    int st;
-    if ((st = el_jacobi_eval(p->q, fabs(p->k), &a, NULL, NULL))) return st;
-    if ((st = el_jacobi_eval(u1, fabs(p->k), &b, NULL, NULL))) return st;
-    *energy = 4.0 * p->k * p->k * w * ((u1 - p->q) - (b.D - a.D));
-    return EL_OK;
+    if (smooth_domain(p, &sc) || el__modulus_init(ka, 0, &mod) ||
+        el__jacobi_eval_mod(&mod, p->q, &a, NULL, NULL) || el__jacobi_eval_mod(&mod, u1, &b, NULL, NULL)) {
+        *energy = NAN;
+        return EL_EDOM;
+    }
+    const double e = ka == 1.0 ? 4.0 * w * (b.E - a.E) : 4.0 * ka * ka * w * ((u1 - p->q) - (b.D - a.D));
+    *energy = isfinite(e) ? e : NAN;
+    return isfinite(e) ? EL_OK : EL_EDOM;
 }

@@ -2,6 +2,9 @@
  * its defining identity, references from mpmath, gradients by finite differences. */
 #define _POSIX_C_SOURCE 200112L /* pthreads */
 #include "testutil.h"
+#include "internal.h"
+#include <float.h>
+#include <stdint.h>
 #include <pthread.h>
 #include <stdio.h>
 #include <string.h>
@@ -47,7 +50,7 @@ static double field(const el_jacobi *v, int j)
 
 START_TEST(jacobi_derivatives_match_finite_differences)
 {
-    const double ks[] = {0.0, 1e-8, 0.05, 0.3, 0.9, 0.99, 1.01, 1.5, 2.0, 50.0};
+    const double ks[] = {0.0, 1e-8, 0.05, 0.3, 0.9, 0.99, 1.0, 1.01, 1.5, 2.0, 50.0};
     const double us[] = {-23.1, -3.3, -0.4, 0.0, 0.7, 2.9, 11.2, 37.0};
     for (size_t a = 0; a < sizeof ks / sizeof *ks; a++)
         for (size_t b = 0; b < sizeof us / sizeof *us; b++) {
@@ -64,6 +67,9 @@ START_TEST(jacobi_derivatives_match_finite_differences)
                               "d/du field %d at k=%g u=%g: %.12g vs fd %.12g", j, k, u, an, fd);
             }
             if (k < 1e-3) continue; /* the k-step would cross k = 0 */
+            /* at k = 1, d^2/dk^2 ~ e^(2|u|): central differences only hold for small |u|
+             * (larger u: jacobi_near_k_equal_1_keeps_relative_digits, against mpmath) */
+            if (k == 1.0 && fabs(u) > 4.0) continue;
             const double hk = 1e-7 * k;
             el_jacobi_eval(u, k + hk, &p, NULL, NULL);
             el_jacobi_eval(u, k - hk, &m, NULL, NULL);
@@ -99,6 +105,137 @@ START_TEST(jacobi_rejects_bad_input)
     ck_assert(v.sn == 1 && v.D == 6); /* untouched */
     ck_assert_str_ne(el_strerror(EL_EINVAL), el_strerror(EL_OK));
     ck_assert_ptr_nonnull(el_strerror(12345));
+}
+END_TEST
+
+START_TEST(jacobi_near_k_equal_1_keeps_relative_digits)
+{
+    /* |k| within 1e-4 .. 1e-15 of 1, u across the plateau sn ~ 1 where cn, dn ~ 2 e^-u are
+     * tiny: cn and dn to relative accuracy (the AGM alone lost 4e-10 there, and
+     * rounding 1/k for k > 1 another 2e-13 of cn: issue 12's 7e-10 L differences), D
+     * and the k-derivatives of cn and D (dD/dk by L - sn^2 J cancelled to 1e-3 at k = 1,
+     * u = 15) against mpmath (tests/data/gen_jacobi_near1_ref.py) */
+    FILE *f = fopen("../data/jacobi_near1_ref.csv", "r");
+    ck_assert_msg(f != NULL, "tests/data/jacobi_near1_ref.csv missing");
+    char line[1024];
+    ck_assert(fgets(line, sizeof line, f) != NULL);
+    int rows = 0;
+    double worst = 0.0;
+    while (fgets(line, sizeof line, f)) {
+        double k, u, ref[6];
+        ck_assert_int_eq(sscanf(line, "%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf", &k, &u, &ref[0], &ref[1], &ref[2], &ref[3],
+                                &ref[4], &ref[5]), 8);
+        el_jacobi v, dk;
+        ck_assert_int_eq(el_jacobi_eval(u, k, &v, NULL, &dk), EL_OK);
+        const double got[6] = {v.sn, v.cn, v.dn, v.D, dk.cn, dk.D};
+        /* relative to the value plus what the phase's own rounding, a few |u| eps, moves
+         * it by (the slopes d/du from the reference: cn dn, -sn dn, -k^2 sn cn, sn^2;
+         * for the derivatives, their size: near the turning point K they grow like the
+         * period's sensitivity u dK/dk) */
+        const double sn = ref[0], cn = ref[1], dn = ref[2];
+        const double slope[6] = {fabs(cn * dn), fabs(sn * dn), k * k * fabs(sn * cn), sn * sn,
+                                 fabs(ref[4]) + fabs(ref[5]), fabs(ref[4]) + fabs(ref[5])};
+        for (int j = 0; j < 6; j++) {
+            const double err = fabs(got[j] - ref[j]) / (fabs(ref[j]) + fabs(u) * slope[j] + 1e-300);
+            worst = fmax(worst, err);
+            ck_assert_msg(err <= 64.0 * DBL_EPSILON, "k=%.17g u=%g field %d: %.17g vs %.17g (relative %.3g)", k, u, j,
+                          got[j], ref[j], err);
+        }
+        rows++;
+    }
+    fclose(f);
+    ck_assert_int_ge(rows, 50);
+    printf("jacobi near k = 1: %d rows x 6 fields, worst relative error %.2e\n", rows, worst);
+}
+END_TEST
+
+START_TEST(jacobi_k_equal_1_derivatives_are_finite_until_they_overflow)
+{
+    /* at k = 1 the k-derivatives have closed forms (A&S 16.15 to first order in k'^2);
+     * they grow like e^u / 4 and overflow only past u ~ 710 (J underflowed at 350 before) */
+    const double us[] = {0.5, 20.0, 100.0, 400.0, 700.0, -650.0};
+    for (size_t i = 0; i < sizeof us / sizeof *us; i++) {
+        const double u = us[i], th = tanh(u);
+        el_jacobi v, dk;
+        ck_assert_int_eq(el_jacobi_eval(u, 1.0, &v, NULL, &dk), EL_OK);
+        ck_assert_close(dk.sn, -0.5 * (th - u / (cosh(u) * cosh(u))), 1e-15);
+        ck_assert_close(dk.D, -1.5 * (u - th) + 0.5 * u * th * th, 1e-14 * fabs(u));
+        ck_assert(isfinite(dk.cn) && isfinite(dk.dn) && isfinite(dk.am) && isfinite(dk.E));
+        ck_assert_close(v.E, th, 1e-16); /* E = tanh u, not u - D with its cancellation */
+    }
+    el_jacobi v = {1, 2, 3, 4, 5, 6}, dk = v;
+    ck_assert_int_eq(el_jacobi_eval(720.0, 1.0, &v, NULL, &dk), EL_EDOM);
+    ck_assert(v.sn == 1 && dk.D == 6); /* untouched */
+    ck_assert_int_eq(el_jacobi_eval(1e300, 1.0, &v, NULL, NULL), EL_OK); /* no period at k = 1 */
+    ck_assert(v.sn == 1.0 && v.cn == 0.0 && v.E == 1.0);
+}
+END_TEST
+
+START_TEST(jacobi_reports_lost_phase_and_overflow_as_edom)
+{
+    /* max(1, k)|u| > 2^50: the period is known to a rounding, the phase to nothing */
+    el_jacobi v = {1, 2, 3, 4, 5, 6}, d = v;
+    ck_assert_int_eq(el_jacobi_eval(1e16, 0.5, &v, NULL, NULL), EL_EDOM);
+    ck_assert_int_eq(el_jacobi_eval(4e14, 3.0, &v, &d, NULL), EL_EDOM);
+    ck_assert_int_eq(el_jacobi_eval(1.0, 1e200, &v, NULL, &d), EL_EDOM);
+    ck_assert(v.sn == 1 && d.D == 6);
+    ck_assert_int_eq(el_jacobi_eval(1e15, 0.5, &v, NULL, NULL), EL_OK); /* 2^50 > 1e15 */
+    /* huge k with a small enough u: values finite, no EL_EINTERNAL (k'^2 = (k-1)(k+1)/k^2
+     * overflowed past k = 1e154); the k-derivatives need k^2 and report EL_EDOM */
+    ck_assert_int_eq(el_jacobi_eval(1e-300, 1e300, &v, NULL, NULL), EL_OK);
+    ck_assert(isfinite(v.sn) && isfinite(v.D) && fabs(v.sn - sin(1.0) * 1e-300) <= 1e-315);
+    ck_assert_int_eq(el_jacobi_eval(1e-300, 1e300, &v, NULL, &d), EL_EDOM);
+    /* denormal arguments and moduli */
+    ck_assert_int_eq(el_jacobi_eval(4.9e-324, 0.5, &v, &d, &d), EL_OK);
+    ck_assert(v.sn == 4.9e-324 && v.cn == 1.0);
+    ck_assert_int_eq(el_jacobi_eval(1.0, 4.9e-324, &v, NULL, &d), EL_OK);
+    ck_assert_close(v.sn, sin(1.0), 2e-16);
+}
+END_TEST
+
+START_TEST(walk_offset_series_are_the_maclaurin_series)
+{
+    /* the coefficients from the differential equations' recurrence (jacobi_walk.c)
+     * against the known polynomials in m = k^2 (DLMF 22.10.1-3), and D = int sn^2 */
+    const double ks[] = {0.0, 0.6, 1.0, 3.0};
+    for (size_t a = 0; a < sizeof ks / sizeof *ks; a++) {
+        const double k = ks[a], m = k * k;
+        el__walk wk;
+        ck_assert_int_eq(el__walk_init(&wk, k, 1, 100), EL_OK);
+        double u[3] = {0.0, 1e-3 / wk.kappa, 0.0};
+        el_jacobi val[3], dk[3];
+        ck_assert_int_eq(el__walk_values(&wk, 3, u, val, dk), EL_OK); /* an offset from an anchor */
+        ck_assert(wk.have_series);
+        const double sn[5] = {1, -(1 + m) / 6, (1 + 14 * m + m * m) / 120, -(1 + 135 * m + 135 * m * m + m * m * m) / 5040,
+                              (1 + 1228 * m + 5478 * m * m + 1228 * m * m * m + m * m * m * m) / 362880};
+        const double cn[4] = {1, -0.5, (1 + 4 * m) / 24, -(1 + 44 * m + 16 * m * m) / 720};
+        const double dn[4] = {1, -m / 2, m * (4 + m) / 24, -m * (16 + 44 * m + m * m) / 720};
+        const double D[2] = {1.0 / 3.0, -(1 + m) / 15};
+        for (int j = 0; j < 5; j++) ck_assert_close(wk.ser[0][j], sn[j], 1e-15 * fabs(sn[j]) + 1e-300);
+        for (int j = 0; j < 4; j++) {
+            ck_assert_close(wk.ser[1][j], cn[j], 1e-15 * fabs(cn[j]));
+            ck_assert_close(wk.ser[2][j], dn[j], 1e-15 * fabs(dn[j]));
+        }
+        for (int j = 0; j < 2; j++) ck_assert_close(wk.ser[3][j], D[j], 1e-15 * fabs(D[j]));
+        /* k-derivatives: d/dk of the same polynomials */
+        ck_assert_close(wk.ser[4][1], -k / 3.0, 1e-16);
+        ck_assert_close(wk.ser[5][2], k / 3.0, 1e-16);
+        ck_assert_close(wk.ser[6][1], -k, 1e-16);
+        ck_assert_close(wk.ser[7][1], -2.0 * k / 15.0, 1e-16);
+    }
+    /* the truncation bound: at k = 1 the coefficients are those of tanh, sech and
+     * u - tanh, whose absolute values (tan, sec, tan - u) bound every |k| <= 1 and, in
+     * x = max(1, k)|u|, every k > 1; the k-derivative of a degree-d polynomial in k^2 adds
+     * a factor 2d <= 12. Their tails at x = 1/32 past u^9 (sn, D) and u^10 (cn, dn),
+     * from the next three Maclaurin coefficients of tan and sec (the rest is a geometric
+     * series of ratio (2x/pi)^2), are far below a rounding of the O(1) sums they enter */
+    const double x = 1.0 / 32.0, geo = 1.0 / (1.0 - 4.0 * x * x / (M_PI * M_PI));
+    const double tan_tail = (1382.0 / 155925.0 * pow(x, 11) + 21844.0 / 6081075.0 * pow(x, 13) +
+                             929569.0 / 638512875.0 * pow(x, 15)) * geo;
+    const double sec_tail = (2702765.0 / 479001600.0 * pow(x, 12) + 199360981.0 / 87178291200.0 * pow(x, 14) +
+                             19391512145.0 / 20922789888000.0 * pow(x, 16)) * geo;
+    ck_assert(tan_tail < 0x1p-61 && sec_tail < 0x1p-66);
+    ck_assert(12.0 * tan_tail < 0x1p-58 && 12.0 * sec_tail < 0x1p-63);
 }
 END_TEST
 
@@ -270,27 +407,6 @@ START_TEST(smooth_jacobian_matches_finite_differences)
 }
 END_TEST
 
-START_TEST(smooth_uniform_grid_agrees_with_pointwise)
-{
-    /* equally spaced s takes the addition-theorem path: compare with single evaluations */
-    const double ks[] = {0.3, 0.99, 1.0, 3.0};
-    for (size_t a = 0; a < sizeof ks / sizeof *ks; a++) {
-        el_smooth_params p = smooth(ks[a]);
-        enum { N = 500 };
-        static double s[N], xy[2 * N], jac[N * 14];
-        for (int i = 0; i < N; i++) s[i] = p.length * i / (N - 1.0);
-        ck_assert_int_eq(el_smooth_jacobian(&p, N, s, xy, jac), EL_OK);
-        for (int i = 0; i < N; i += 7) {
-            double one[2], j1[14];
-            ck_assert_int_eq(el_smooth_jacobian(&p, 1, &s[i], one, j1), EL_OK);
-            ck_assert_close(one[0], xy[2 * i], 1e-12);
-            ck_assert_close(one[1], xy[2 * i + 1], 1e-12);
-            for (int j = 0; j < 14; j++) ck_assert_close(j1[j], jac[i * 14 + j], 1e-9 * (1 + fabs(j1[j])));
-        }
-    }
-}
-END_TEST
-
 START_TEST(smooth_negative_k_is_the_mirror_image)
 {
     /* k -> -k reflects the curve in the line through (x0, y0) at angle phi; for
@@ -343,6 +459,77 @@ START_TEST(smooth_rejects_bad_input)
     ck_assert_int_eq(el_smooth_energy(&good, NULL), EL_EINVAL);
     for (int i = 0; i < 4; i++) ck_assert(xy[i] == 7);
     ck_assert(e == 7);
+}
+END_TEST
+
+START_TEST(smooth_unresolvable_samples_are_edom_with_nan_outputs)
+{
+    /* no digits left: a result is finite and valid, or EL_EDOM says why and every
+     * output is NaN (never half-written) */
+    const double s2[2] = {0.0, 1e6};
+    double xy[4] = {7, 7, 7, 7}, th[2], ka[2], jac[28], e = 7;
+    el_smooth_params phase = {0, 0, 0, 1e20, 0.5, 0, 1e6}; /* |u| = 1e16 > 2^50 */
+    ck_assert_int_eq(el_smooth_eval(&phase, 2, s2, xy, th, ka), EL_EDOM);
+    for (int i = 0; i < 4; i++) ck_assert(isnan(xy[i]));
+    ck_assert(isnan(th[0]) && isnan(th[1]) && isnan(ka[0]) && isnan(ka[1]));
+    ck_assert_int_eq(el_smooth_jacobian(&phase, 2, s2, xy, jac), EL_EDOM);
+    for (int i = 0; i < 28; i++) ck_assert(isnan(jac[i]));
+    ck_assert_int_eq(el_smooth_energy(&phase, &e), EL_EDOM);
+    ck_assert(isnan(e));
+    /* sqrt(mu) s far below the rounding of q: u = q + sqrt(mu) s has no digits of s */
+    const double s1[2] = {0.0, 1.0};
+    el_smooth_params flat = {0, 0, 0, 1e-300, 0.5, 1.0, 1.0};
+    ck_assert_int_eq(el_smooth_eval(&flat, 2, s1, xy, NULL, NULL), EL_EDOM);
+    ck_assert(isnan(xy[0]) && isnan(xy[3]));
+    ck_assert_int_eq(el_smooth_energy(&flat, &e), EL_EDOM);
+    el_smooth_params denormal = flat;
+    denormal.mu = 4.9e-324;
+    ck_assert_int_eq(el_smooth_eval(&denormal, 2, s1, xy, NULL, NULL), EL_EDOM);
+    /* overflow of a result: |k| = 1 has no period, the position passes DBL_MAX */
+    el_smooth_params far = {DBL_MAX, 0, M_PI, 1.0, 1.0, 0.0, 1e300};
+    const double s3[2] = {0.0, 1e300};
+    ck_assert_int_eq(el_smooth_eval(&far, 2, s3, xy, NULL, NULL), EL_EDOM);
+    ck_assert(isnan(xy[0]) && isnan(xy[2]));
+    /* the k column at |k| = 1 past u ~ 710 (d cn/dk ~ e^u / 4) */
+    el_smooth_params sep = {0, 0, 0, 1.0, -1.0, 0.0, 800.0};
+    const double s4[2] = {0.0, 800.0};
+    ck_assert_int_eq(el_smooth_jacobian(&sep, 2, s4, NULL, jac), EL_EDOM);
+    ck_assert_int_eq(el_smooth_eval(&sep, 2, s4, xy, NULL, NULL), EL_OK); /* the points are fine */
+    ck_assert(isfinite(xy[2]) && fabs(xy[2] + 798.0) < 1e-9); /* back along the axis: -800 + 2 tanh */
+    /* extreme but valid: still EL_OK and finite */
+    el_smooth_params big = {1e6, -1e6, 0.3, 1e8, 0.7, 0.4, 1e6};
+    ck_assert_int_eq(el_smooth_eval(&big, 2, s2, xy, th, ka), EL_OK);
+    ck_assert(isfinite(xy[2]) && isfinite(th[1]) && isfinite(ka[1]));
+    el_smooth_params tiny_k = {0, 0, 0, 1.0, 4.9e-324, 0.3, 2.0};
+    ck_assert_int_eq(el_smooth_eval(&tiny_k, 2, s1, xy, NULL, NULL), EL_OK);
+    ck_assert_close(xy[2], 1.0, 1e-15);
+}
+END_TEST
+
+START_TEST(smooth_huge_n_is_einval_before_any_write)
+{
+    /* n * 14 * sizeof(double) would wrap: no caller can own such arrays, and nothing
+     * may be read or written (the arrays here hold two points) */
+    el_smooth_params p = smooth(0.5);
+    double s[2] = {0, 1}, xy[4] = {7, 7, 7, 7}, jac[28] = {7};
+    const size_t huge[3] = {SIZE_MAX, SIZE_MAX / 112 + 1, (SIZE_MAX >> 3) + 1};
+    for (int i = 0; i < 3; i++) {
+        ck_assert_int_eq(el_smooth_eval(&p, huge[i], s, xy, NULL, NULL), EL_EINVAL);
+        ck_assert_int_eq(el_smooth_jacobian(&p, huge[i], s, xy, jac), EL_EINVAL);
+    }
+    for (int i = 0; i < 4; i++) ck_assert(xy[i] == 7);
+    ck_assert(jac[0] == 7);
+}
+END_TEST
+
+START_TEST(smooth_energy_at_separatrix_has_no_cancellation)
+{
+    /* at |k| = 1 the energy 4 sqrt(mu) (tanh u1 - tanh q) comes from E = tanh, not from
+     * u - D(u) with D ~ u: exact to rounding even for a 1e6-long curve */
+    el_smooth_params p = {0, 0, 0, 4.0, 1.0, -0.5, 1e6};
+    double e;
+    ck_assert_int_eq(el_smooth_energy(&p, &e), EL_OK);
+    ck_assert_close(e, 4.0 * 2.0 * (1.0 - tanh(-0.5)), 1e-15 * e);
 }
 END_TEST
 
@@ -470,6 +657,35 @@ START_TEST(discrete_rejects_bad_input)
 }
 END_TEST
 
+START_TEST(discrete_out_of_range_is_edom_or_einval_before_any_write)
+{
+    double xy[6] = {7, 7, 7, 7, 7, 7}, jac[42], ka[1] = {7};
+    el_discrete_params good = discrete(0.5);
+    ck_assert_int_eq(el_discrete_eval(&good, SIZE_MAX, xy), EL_EINVAL);
+    ck_assert_int_eq(el_discrete_jacobian(&good, SIZE_MAX / 112 + 1, xy, jac), EL_EINVAL);
+    ck_assert_int_eq(el_discrete_curvature(&good, SIZE_MAX, ka), EL_EINVAL);
+    for (int i = 0; i < 6; i++) ck_assert(xy[i] == 7);
+    ck_assert(ka[0] == 7);
+    /* the last vertex's phase z (n - 1) + q past 2^50: EL_EDOM, outputs NaN */
+    el_discrete_params phase = good;
+    phase.z = 1e15;
+    ck_assert_int_eq(el_discrete_eval(&phase, 3, xy), EL_EDOM);
+    for (int i = 0; i < 6; i++) ck_assert(isnan(xy[i]));
+    ck_assert_int_eq(el_discrete_curvature(&phase, 3, ka), EL_EDOM);
+    ck_assert(isnan(ka[0]));
+    ck_assert_int_eq(el_discrete_jacobian(&phase, 3, NULL, jac), EL_EDOM);
+    for (int i = 0; i < 42; i++) ck_assert(isnan(jac[i]));
+    /* vertices past DBL_MAX */
+    el_discrete_params far = {DBL_MAX, 0, 1e300, 0, 0.1, 0, 0.5};
+    ck_assert_int_eq(el_discrete_eval(&far, 3, xy), EL_EDOM);
+    ck_assert(isnan(xy[0]));
+    /* a sparse curve with |z| large and k = 1 exactly: EL_OK, finite (0/0 before) */
+    el_discrete_params sep = {0, 0, 1.0, 0, 30.0, -45.0, 1.0};
+    ck_assert_int_eq(el_discrete_eval(&sep, 3, xy), EL_OK);
+    for (int i = 0; i < 6; i++) ck_assert(isfinite(xy[i]));
+}
+END_TEST
+
 /* ------------------------------------------------------------ threads */
 
 typedef struct { el_smooth_params p; double jac[300 * 14]; int status; } thread_job;
@@ -514,18 +730,25 @@ int main(void)
     tcase_add_test(j, jacobi_derivatives_match_finite_differences);
     tcase_add_test(j, jacobi_small_k_derivative_is_analytic);
     tcase_add_test(j, jacobi_rejects_bad_input);
+    tcase_add_test(j, jacobi_near_k_equal_1_keeps_relative_digits);
+    tcase_add_test(j, jacobi_k_equal_1_derivatives_are_finite_until_they_overflow);
+    tcase_add_test(j, jacobi_reports_lost_phase_and_overflow_as_edom);
+    tcase_add_test(j, walk_offset_series_are_the_maclaurin_series);
     tcase_add_test(sm, smooth_unit_speed_and_curvature);
     tcase_add_test(sm, smooth_curvature_satisfies_elastica_equation);
     tcase_add_test(sm, smooth_points_continuous_across_k_equal_1);
     tcase_add_test(sm, smooth_energy_matches_quadrature);
     tcase_add_test(sm, smooth_jacobian_matches_finite_differences);
-    tcase_add_test(sm, smooth_uniform_grid_agrees_with_pointwise);
     tcase_add_test(sm, smooth_negative_k_is_the_mirror_image);
     tcase_add_test(sm, smooth_rejects_bad_input);
+    tcase_add_test(sm, smooth_unresolvable_samples_are_edom_with_nan_outputs);
+    tcase_add_test(sm, smooth_huge_n_is_einval_before_any_write);
+    tcase_add_test(sm, smooth_energy_at_separatrix_has_no_cancellation);
     tcase_add_test(d, discrete_segments_mcmillan_and_conserved_quantity);
     tcase_add_test(d, discrete_continuum_limit_is_second_order);
     tcase_add_test(d, discrete_jacobian_matches_finite_differences);
     tcase_add_test(d, discrete_rejects_bad_input);
+    tcase_add_test(d, discrete_out_of_range_is_edom_or_einval_before_any_write);
     tcase_add_test(sm, two_threads_evaluate_at_once);
     suite_add_tcase(s, j); suite_add_tcase(s, sm); suite_add_tcase(s, d);
     return test_run_suite(s);
