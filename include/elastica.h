@@ -487,7 +487,7 @@ typedef struct el_hermite_options {
     double length;         /* prescribed arc length > 0 (length mode); default 0 (unset) */
     double tol;            /* accepted end residual: position / |p1-p0| and tangent angle (rad); default 1e-10 */
     int samples;           /* bracketing samples over the whole search interval (each subinterval gets its share + 2, then refinement), 4..1000; default 12 */
-    int grid;              /* length mode: number of sigma lines of the search, 8..2000; default 72 */
+    int grid;              /* length mode: sigma lines whose tension solutions start the tracing, 1..256; default 6 */
     size_t max_solutions;  /* at most this many solutions are kept (lowest energy); default 64 */
 } el_hermite_options;
 
@@ -517,7 +517,7 @@ typedef struct el_hermite_result {
     el_hermite_solution *solutions; /* count entries, library-owned */
 } el_hermite_result;
 
-/* Defaults: tension mode, sigma = 0, tol 1e-10, samples 12, grid 72, max_solutions 64. */
+/* Defaults: tension mode, sigma = 0, tol 1e-10, samples 12, grid 6, max_solutions 64. */
 void el_hermite_options_defaults(el_hermite_options *opt);
 
 /*
@@ -527,9 +527,11 @@ void el_hermite_options_defaults(el_hermite_options *opt);
  * |p1 - p0| = 1), the three cases of Theorem 6, the kappa_m bound of Theorem 9
  * (computed for every sigma), subintervals split at the real roots of (40),
  * at the special values (45) where the objective is singular and at the ends of
- * (18) and (44), bracketing and Brent's method on each. Length mode follows the tension solutions along
- * sigma (all tension solutions on grid lines sigma_j, then Newton on (kappa0, sigma)). A count of 0 with EL_OK
- * means no such curve exists (e.g. sigma very negative).
+ * (18) and (44), bracketing and Brent's method on each. Length mode: the tension
+ * solutions form curves in the plane of the unknown and sigma; they are found on
+ * opt->grid sigma lines and followed by continuation with the analytic gradient, and
+ * the points of length L are solved for where the length crosses L (hermite_length.c).
+ * A count of 0 with EL_OK means no such curve exists (e.g. sigma very negative).
  * Completeness: the bracketing samples each subinterval, then bisects where the
  * samples leave room for two zeros of a convex objective (seed 004 §5 observes
  * convexity between two zeros), and checks local minima of |f| by minimisation;
@@ -549,8 +551,8 @@ void el_hermite_options_defaults(el_hermite_options *opt);
  * curve's tension 2 mu (2k^2 - 1) kept exact. At tol = 1e-10, for sigma |p1-p0|^2
  * in [60, 600] about 8% of the solutions (those whose floor exceeds 1e-10) are
  * dropped; a larger tol returns them.
- * Length mode costs about 70 tension solves (tens of ms); it also finds fewer
- * of the solutions with sigma |p1-p0|^2 > ~80 (~2% missed against a 300-line search).
+ * Length mode can miss a curve of solutions that crosses none of the grid lines
+ * (a pair born and ending between two lines).
  * A circular arc (sigma = kappa^2, where the parametrisation needs |k| = inf) is
  * returned with k = 1e4 (counter-clockwise) or -1e4 (clockwise), accurate to ~1e-8
  * only: it appears when opt->tol allows.

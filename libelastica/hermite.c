@@ -364,7 +364,7 @@ void el_hermite_options_defaults(el_hermite_options *opt)
     opt->length = 0.0;
     opt->tol = 1e-10;
     opt->samples = 12;
-    opt->grid = 72;
+    opt->grid = 6;
     opt->max_solutions = 64;
 }
 
@@ -395,7 +395,7 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
     if (el__all_finite(all, 8) || unit(t0, u0) || unit(t1, u1)) return EL_EINVAL;
     if (opt->mode != EL_HERMITE_TENSION && opt->mode != EL_HERMITE_LENGTH) return EL_EINVAL;
     if (!isfinite(opt->sigma) || !isfinite(opt->length) || !(opt->tol > 0.0) ||
-        opt->samples < 4 || opt->samples > 1000 || opt->grid < 8 || opt->grid > 2000 ||
+        opt->samples < 4 || opt->samples > 1000 || opt->grid < 1 || opt->grid > 256 ||
         opt->max_solutions == 0)
         return EL_EINVAL;
     if (opt->mode == EL_HERMITE_LENGTH && !(opt->length > 0.0)) return EL_EINVAL;

@@ -31,6 +31,8 @@ typedef struct hstate {
     int big;                   /* inflectional: u(L) - u(0) exceeds half a period (2 Kc) */
     double L, E;               /* length, energy */
     double f;                  /* objective */
+    int has_sep;               /* sep = |F| - sigma given exactly (the separatrix chart) */
+    double sep;
 } hstate;
 
 /* The kind of curve a curvature state starts (Theorem 7), |F| into *Fn.
@@ -47,6 +49,27 @@ int el__hermite_state_class(const hprob *pr, const hstate *st, double *Fn);
 int el__hermite_shape_eval(const hprob *pr, double qs, hstate *st);
 int el__hermite_full_eval(const hprob *pr, double x, int b, hstate *st);
 void el__hermite_set_case(hprob *pr);
+/* el__hermite_full_eval with the gradient of L, E and f (and sigma, and |F| - sigma)
+ * with respect to the unknown x and sigma on branch b: [0] = d/dx, [1] = d/dsigma;
+ * w: the separatrix chart's replaced coordinate (el__hermite_sep_eval). */
+typedef struct { double L[2], E[2], f[2], s[2], sep[2], w[2]; } hgrad;
+int el__hermite_eval_grad(const hprob *pr, double x, int b, hstate *st, hgrad *g);
+/* The same in a chart (u, v; b) of the curvature data (hermite_objective.c): HCHART_X is
+ * (x, sigma), HCHART_K1 (kappa1, sigma) in case 1, HCHART_C3 (kappa0, kappa0') in case 3;
+ * the gradient is in (u, v); *sigma (may be NULL) gets the state's tension. */
+enum { HCHART_X, HCHART_K1, HCHART_C3 };
+int el__hermite_chart_eval(const hprob *pr, int chart, double u, double v, int b, hstate *st,
+                           hgrad *g, double *sigma);
+/* The separatrix chart of a base chart near a state with |F| = sigma (k = 1): the base
+ * coordinate number fi (0: u, 1: v) is replaced by y = ln(side (|F| - sigma)), side = +1
+ * (inflectional) or -1 (not); other is the base's other coordinate, *w the replaced one
+ * (a starting guess in, the state's value out, by Newton on |F| - sigma = side e^y along
+ * it). The state carries |F| - sigma exactly (hstate.sep), so k'^2 = (|F| - sigma) / (2 |F|)
+ * keeps its relative precision however small: the length depends on ln k', which the base
+ * coordinates alone cannot carry. The gradient is in the base chart's order with y in
+ * place of the replaced coordinate. */
+int el__hermite_sep_eval(const hprob *pr, int base, int fi, int b, int side, double y,
+                         double other, double *w, hstate *st, hgrad *g, double *sigma);
 /* F(mu, k) and D(mu, k) for the amplitude given by its sine S, cosine C and big = (mu > pi) */
 int el__hermite_ell_fd(double S, double C, int big, double k2, double kc2, double qs,
                        double *F, double *D);

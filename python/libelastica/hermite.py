@@ -21,7 +21,7 @@ def _vec2(v, name: str) -> np.ndarray:
 
 def hermite(p0, t0, p1, t1, tension: Optional[float] = None,
             length: Optional[float] = None, *, tol: float = 1e-10,
-            samples: int = 12, grid: int = 72, max_solutions: int = 64) -> List[SmoothElastica]:
+            samples: int = 12, grid: int = 6, max_solutions: int = 64) -> List[SmoothElastica]:
     """All elastic curves (2 kappa'' + kappa^3 - sigma kappa = 0) from ``p0`` with
     tangent direction ``t0`` to ``p1`` with tangent direction ``t1`` whose length is
     at most one period of the curvature, sorted by bending energy.
