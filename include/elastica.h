@@ -511,10 +511,16 @@ typedef struct el_hermite_solution {
     double residual;       /* end-condition error, see above */
 } el_hermite_solution;
 
-/* Solutions sorted by increasing energy; released by el_hermite_result_free. */
+/* Solutions sorted by increasing energy; released by el_hermite_result_free.
+ * unrepresentable: curves that exist (found and exact in the solver's variables) but
+ * that no el_smooth_params meets to opt->tol, so they are not in solutions: they lie so
+ * close to the separatrix (|k| within ~1e-6 of 1, common for sigma |p1-p0|^2 above
+ * ~200) that one ulp of the double k moves the end by more than tol (see
+ * el_hermite_solve). A larger tol returns them, with their residual. */
 typedef struct el_hermite_result {
     size_t count;
     el_hermite_solution *solutions; /* count entries, library-owned */
+    size_t unrepresentable;
 } el_hermite_result;
 
 /* Defaults: tension mode, sigma = 0, tol 1e-10, samples 12, grid 6, max_solutions 64. */

@@ -47,18 +47,20 @@
  * sign(k) sn(|k| u; 1/|k|), cos a = dn(u;|k|) = cn(|k| u; 1/|k|), so
  * am(|k| q; 1/|k|) = sign(k) a. */
 static int params_from_state(double x0, double y0, double theta, double kappa, double dkappa,
-                             double sigma, double L, el_smooth_params *p)
+                             double sigma, double L, const double *sep, el_smooth_params *p)
 {
     const double T[2] = {cos(theta), sin(theta)}, N[2] = {-T[1], T[0]};
     const double w = kappa * kappa - sigma;
     const double F[2] = {w * T[0] + 2.0 * dkappa * N[0], w * T[1] + 2.0 * dkappa * N[1]};
-    const double Fn = hypot(F[0], F[1]);
+    /* |F| - sigma exactly when the separatrix chart gave it (its relative precision is
+     * what the modulus complement needs) */
+    const double Fn = sep ? sigma + *sep : hypot(F[0], F[1]), dsep = sep ? *sep : Fn - sigma;
     p->x0 = x0;
     p->y0 = y0;
     p->length = L;
     const double km2 = Fn + sigma;
     if (!(Fn > 0.0) || !(km2 > 0.0)) return EL_EDOM;
-    const double k2 = km2 / (2.0 * Fn), kc2 = (Fn - sigma) / (2.0 * Fn);
+    const double k2 = km2 / (2.0 * Fn), kc2 = dsep / (2.0 * Fn);
     const double h = 0.5 * el__hermite_wrap_pi(theta - atan2(F[1], F[0]));
     p->mu = 0.5 * Fn;
     p->phi = atan2(F[1], F[0]);
@@ -71,7 +73,7 @@ static int params_from_state(double x0, double y0, double theta, double kappa, d
         p->k = sqrt(k2);
         p->q = copysign(Fq, y);
     } else {
-        const double k = sqrt(k2), m2 = 2.0 * Fn / km2, mc2 = (sigma - Fn) / km2;
+        const double k = sqrt(k2), m2 = 2.0 * Fn / km2, mc2 = -dsep / km2;
         const double eps = kappa > 0.0 ? 1.0 : -1.0;
         if (!(kappa != 0.0)) return EL_EDOM;
         if ((rc = el__hermite_ell_fd(fabs(sin(h)), cos(h), 0, m2, mc2, 1.0, &Fq, &Dq))) return rc;
@@ -261,6 +263,18 @@ static void polish_fixed_k(const frame *fr, int mode, double target, el_hermite_
     *s = t;
 }
 
+/* A root whose curve the smooth parameters cannot carry to tol: exact in the solver's
+ * variables (|f| at rounding level) and so close to the separatrix (|F| - sigma below
+ * 1e-6 of |F| + sigma) that the double k (whose complement k'^2 = 1 - k^2 sets the
+ * length near the saddle) moves the end by more than tol. */
+static int representation_limited(const hroot *r)
+{
+    const hstate *st = &r->st;
+    const double F1 = -2.0 * st->k0p, F2 = st->k0 * st->k0 - r->sigma, Fn = hypot(F1, F2);
+    const double sep = st->has_sep ? st->sep : Fn - r->sigma;
+    return fabs(st->f) <= 1e-11 && fabs(sep) <= 1e-6 * (Fn + fabs(r->sigma));
+}
+
 static int make_solution(const frame *fr, const hroot *r, el_hermite_solution *s)
 {
     const hstate *st = &r->st;
@@ -286,8 +300,9 @@ static int make_solution(const frame *fr, const hroot *r, el_hermite_solution *s
         /* zeros of cn strictly inside: integers n with a < n < b (a zero at an end is no inflection) */
         s->has_inflection = ceil(b) - floor(a) - 1.0 > 0.5;
     }
+    const double sep = st->sep / (d * d);
     return params_from_state(fr->p0[0], fr->p0[1], fr->psi0, st->k0 / d, st->k0p / (d * d),
-                             s->sigma, s->length, &s->curve);
+                             s->sigma, s->length, st->has_sep ? &sep : NULL, &s->curve);
 }
 
 static int straight_solution(const frame *fr, double sigma, el_hermite_solution *s)
@@ -374,6 +389,7 @@ void el_hermite_result_free(el_hermite_result *res)
     free(res->solutions);
     res->solutions = NULL;
     res->count = 0;
+    res->unrepresentable = 0;
 }
 
 static int unit(const double t[2], double u[2])
@@ -402,6 +418,7 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
     el__gsl_quiet();
     res->count = 0;
     res->solutions = NULL;
+    res->unrepresentable = 0;
 
     /* normalisation (seed 004 §4): p0 = 0, t0 = (0, 1), |p1 - p0| = 1, sigma d^2 */
     frame fr;
@@ -453,6 +470,10 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
         circle_solution(&fr, cc, cL, &sol[n]);
         if (!residual(&fr, &sol[n], &sol[n].residual) && sol[n].residual <= opt->tol) n++;
     }
+    /* found, exact in the solver's variables, but not representable to tol (below) */
+    el_hermite_solution *unrep = malloc(roots.n * sizeof *unrep + 1);
+    size_t nunrep = 0;
+    if (!unrep) { free(sol); free(roots.v); return EL_ENOMEM; }
     for (size_t i = 0; i < roots.n; i++) {
         el_hermite_solution s;
         if (make_solution(&fr, &roots.v[i], &s)) continue;
@@ -465,7 +486,10 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
             polish(&fr, opt->mode, target, &s);
             if (s.residual > opt->tol) polish_fixed_k(&fr, opt->mode, target, &s);
         }
-        if (!(s.residual <= opt->tol)) continue;
+        if (!(s.residual <= opt->tol)) {
+            if (representation_limited(&roots.v[i])) unrep[nunrep++] = s;
+            continue;
+        }
         int dup = 0;
         for (size_t j = 0; j < n && !dup; j++) {
             if (same_solution(&s, &sol[j], fr.d)) {
@@ -476,11 +500,21 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
         if (!dup) sol[n++] = s;
     }
     free(roots.v);
+    /* each unrepresentable curve once, and not when another root of it was representable */
+    size_t nu = 0;
+    for (size_t i = 0; i < nunrep; i++) {
+        int dup = 0;
+        for (size_t j = 0; j < n && !dup; j++) dup = same_solution(&unrep[i], &sol[j], fr.d);
+        for (size_t j = 0; j < i && !dup; j++) dup = same_solution(&unrep[i], &unrep[j], fr.d);
+        nu += !dup;
+    }
+    free(unrep);
     qsort(sol, n, sizeof *sol, cmp_energy);
     if (n > opt->max_solutions) n = opt->max_solutions;
     if (n == 0) { free(sol); sol = NULL; }
     res->count = n;
     res->solutions = sol;
+    res->unrepresentable = nu;
     return EL_OK;
 }
 

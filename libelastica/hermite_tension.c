@@ -73,7 +73,9 @@ static int kappa_bound(double sigma, double Lmin, double *B)
 
 /* A split point; soft: kappa0 = 0 or kappa1 = 0, which bound the pieces where (44)
  * fails but leave the objective smooth on the inflectional side (seed 004 §4
- * intersects only the non-inflectional pieces with (44)). */
+ * intersects only the non-inflectional pieces with (44)); SPLIT_SEP: a root of (40)
+ * (or (41) in case 3), where the curve is the separatrix (kappa_m^2 = 2 sigma, k = 1). */
+enum { SPLIT_HARD, SPLIT_SOFT, SPLIT_SEP };
 typedef struct { double x; int soft; } splitpt;
 typedef struct { splitpt v[MAXPTS]; int n; } ptlist;
 
@@ -103,32 +105,99 @@ static int cmp_double(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-/* Real roots of sum c[i] x^i (degree <= 8) by gsl_poly_complex_solve. */
+/* Real roots of sum c[i] x^i (degree <= 2) by gsl_poly_solve_quadratic. */
 static int poly_real_roots(const double *c_in, int deg, double *roots, int *nroots)
 {
-    double c[9];
+    double c[3];
     double cmax = 0.0;
     for (int i = 0; i <= deg; i++) { c[i] = c_in[i]; cmax = fmax(cmax, fabs(c[i])); }
     *nroots = 0;
     while (deg > 0 && fabs(c[deg]) <= 1e-14 * cmax) deg--;
     if (deg <= 0) return EL_OK;
-    if (deg <= 2) {
-        double r0, r1;
-        int n = deg == 2 ? gsl_poly_solve_quadratic(c[2], c[1], c[0], &r0, &r1)
-                         : (r0 = -c[0] / c[1], 1);
-        if (n > 0) roots[(*nroots)++] = r0;
-        if (n > 1) roots[(*nroots)++] = r1;
-        return EL_OK;
-    }
-    double z[16];
-    gsl_poly_complex_workspace *w = gsl_poly_complex_workspace_alloc((size_t)deg + 1);
-    if (!w) return EL_ENOMEM;
-    int rc = gsl_poly_complex_solve(c, (size_t)deg + 1, w, z);
-    gsl_poly_complex_workspace_free(w);
-    if (rc != GSL_SUCCESS) return EL_EINTERNAL;
-    for (int i = 0; i < deg; i++)
-        if (fabs(z[2 * i + 1]) <= 1e-7 * (1.0 + fabs(z[2 * i]))) roots[(*nroots)++] = z[2 * i];
+    double r0, r1;
+    const int n = deg == 2 ? gsl_poly_solve_quadratic(c[2], c[1], c[0], &r0, &r1) : (r0 = -c[0] / c[1], 1);
+    if (n > 0) roots[(*nroots)++] = r0;
+    if (n > 1) roots[(*nroots)++] = r1;
     return EL_OK;
+}
+
+/* p(x) and p'(x) by Horner's scheme */
+static double horner(const double *c, int deg, double x, double *dp)
+{
+    double v = c[deg], d = 0.0;
+    for (int i = deg - 1; i >= 0; i--) { d = d * x + v; v = v * x + c[i]; }
+    *dp = d;
+    return v;
+}
+
+/* The real roots of sum c[i] x^i (degree <= 8) in [lo, hi], ascending: between
+ * consecutive real roots of the derivative (found the same way, down to degree 2, to
+ * the relative precision tol) the polynomial is monotone, so every sign change there
+ * holds exactly one root, found by Newton's method kept inside the bracket (bisection
+ * when a step leaves it or does not shrink it by half). Written here because GSL's
+ * gsl_poly_complex_solve (the eigenvalues of the companion matrix) returns close
+ * real roots of (40) as complex pairs once sigma is large (its coefficients then span
+ * thirty orders of magnitude: none found at sigma |p1-p0|^2 = 4000 on test problems),
+ * and computes the complex roots that are not needed. A root of even multiplicity
+ * (no sign change) is not found. */
+static void poly_roots_in(const double *c_in, int deg, double lo, double hi, double tol,
+                          double *roots, int *nroots)
+{
+    /* the terms' sizes on the interval, |c_i| R^i: a leading coefficient negligible there
+     * (a degenerate problem) lowers the degree */
+    const double R = fmax(1.0, fmax(fabs(lo), fabs(hi)));
+    double c[9], tmax = 0.0, Ri = 1.0, Rdeg[9];
+    for (int i = 0; i <= deg; i++, Ri *= R) { c[i] = c_in[i]; Rdeg[i] = Ri; tmax = fmax(tmax, fabs(c[i]) * Ri); }
+    *nroots = 0;
+    while (deg > 0 && fabs(c[deg]) * Rdeg[deg] <= 1e-14 * tmax) deg--;
+    if (deg <= 0 || !(hi > lo)) return;
+    if (deg <= 2) {
+        double r[2];
+        int n;
+        poly_real_roots(c, deg, r, &n);
+        for (int i = 0; i < n; i++)
+            if (r[i] >= lo && r[i] <= hi) roots[(*nroots)++] = r[i];
+        if (*nroots == 2 && roots[0] > roots[1]) { const double t = roots[0]; roots[0] = roots[1]; roots[1] = t; }
+        return;
+    }
+    double d[8], crit[8], pts[10], dp;
+    int nc;
+    for (int i = 1; i <= deg; i++) d[i - 1] = i * c[i];
+    poly_roots_in(d, deg - 1, lo, hi, 1e-10, crit, &nc);
+    int np = 0;
+    pts[np++] = lo;
+    for (int i = 0; i < nc; i++) pts[np++] = crit[i];
+    pts[np++] = hi;
+    double fb = horner(c, deg, lo, &dp);
+    for (int i = 0; i + 1 < np; i++) {
+        double a = pts[i], b = pts[i + 1], fa = fb;
+        fb = horner(c, deg, b, &dp);
+        if (fa == 0.0) {
+            if (*nroots == 0 || roots[*nroots - 1] != a) roots[(*nroots)++] = a;
+            continue;
+        }
+        if (fb == 0.0 || fa * fb > 0.0) continue;
+        /* [a, b] with p(a) p(b) < 0: Newton, bisection when the step leaves the bracket
+         * or the previous step did not halve (rtsafe of Numerical Recipes) */
+        double x = 0.5 * (a + b), dxold = b - a, dx = dxold, ga = fa;
+        double fx = horner(c, deg, x, &dp);
+        for (int it = 0; it < 100; it++) {
+            if (((x - b) * dp - fx) * ((x - a) * dp - fx) > 0.0 || fabs(2.0 * fx) > fabs(dxold * dp)) {
+                dxold = dx;
+                dx = 0.5 * (b - a);
+                x = a + dx;
+            } else {
+                dxold = dx;
+                dx = fx / dp;
+                x -= dx;
+            }
+            if (fabs(dx) <= tol * fabs(x) + 1e-300) break;
+            fx = horner(c, deg, x, &dp);
+            if (fx == 0.0) break;
+            if (fx * ga > 0.0) { a = x; ga = fx; } else b = x;
+        }
+        roots[(*nroots)++] = x;
+    }
 }
 
 /* Small polynomial arithmetic (coefficients low to high, degree <= 8). */
@@ -250,7 +319,7 @@ static int split_points(const hprob *pr, int b, double X, const double *r40, con
     if (pr->hcase == 3) {
         const double k0 = el__hermite_case3_kappa0(pr, b), c = k0 * k0 - s, q = s * s - c * c;
         pt_add(l, 0.0, 0);
-        if (q >= 0.0) { pt_add(l, 0.5 * sqrt(q), 0); pt_add(l, -0.5 * sqrt(q), 0); } /* (41) */
+        if (q >= 0.0) { pt_add(l, 0.5 * sqrt(q), SPLIT_SEP); pt_add(l, -0.5 * sqrt(q), SPLIT_SEP); } /* (41) */
         return EL_OK;
     }
     if (pr->hcase == 1) {
@@ -269,7 +338,7 @@ static int split_points(const hprob *pr, int b, double X, const double *r40, con
     }
     pt_add(l, 0.0, 1);
     for (int i = 0; i < n40; i++)
-        if (b40[i] == b) pt_add(l, r40[i], 0);
+        if (b40[i] == b) pt_add(l, r40[i], SPLIT_SEP);
     /* (45): seed 004 §4 evaluates its objective (35), x1(L) - P1, there and keeps the
      * value as a split point where it vanishes (an unwanted zero) or is singular. The
      * objective here is the error along F, regular where F is parallel to x1; it
@@ -291,10 +360,16 @@ static int split_points(const hprob *pr, int b, double X, const double *r40, con
 typedef struct {
     const hprob *pr;
     int b;
+    /* sep: the abscissa is y = ln(side (|F| - sigma)) of the separatrix chart over the
+     * base chart (x, or case 3's (kappa0, kappa0') at the family's kappa0), w0 the
+     * starting guess of its Newton (hermite_objective.c) */
+    int sep, side;
+    double w0;
     int ci;                      /* next slot */
     double cx[NCACHE];           /* cached abscissae (NaN: empty) */
     int crc[NCACHE], cfull[NCACHE];
     hstate cst[NCACHE];          /* cfull: full state, else only cst.f */
+    double cw[NCACHE];           /* the unknown x of the cached state */
 } fctx;
 
 static void fctx_init(fctx *c, const hprob *pr, int b)
@@ -305,7 +380,7 @@ static void fctx_init(fctx *c, const hprob *pr, int b)
     for (int i = 0; i < NCACHE; i++) c->cx[i] = NAN;
 }
 
-static void cache_put(fctx *c, double x, int rc, const hstate *st, int full)
+static void cache_put(fctx *c, double x, int rc, const hstate *st, int full, double w)
 {
     const int i = c->ci;
     c->ci = (i + 1) % NCACHE;
@@ -313,15 +388,42 @@ static void cache_put(fctx *c, double x, int rc, const hstate *st, int full)
     c->crc[i] = rc;
     c->cfull[i] = full;
     c->cst[i] = *st;
+    c->cw[i] = w;
 }
 
-/* el__hermite_full_eval through the cache; need_full: the whole state is wanted, not only f. */
-static int cached_eval(fctx *c, double x, int need_full, hstate *st)
+/* The objective at abscissa u (x, or y in the separatrix chart) with Carlson's
+ * precision qs; *x gets the unknown x of the state. */
+static int piece_eval(fctx *c, double u, double qs, hstate *st, double *x)
 {
+    if (!c->sep) {
+        *x = u;
+        const int rc = el__hermite_curvdata(c->pr, u, c->b, st);
+        return rc ? rc : el__hermite_shape_eval(c->pr, qs, st);
+    }
+    const hprob *pr = c->pr;
+    hgrad g;
+    double w = c->w0;
+    const int rc = pr->hcase == 3
+        ? el__hermite_sep_eval(pr, HCHART_C3, 1, c->b >= 2, c->side, u, el__hermite_case3_kappa0(pr, c->b), &w, st, &g, NULL)
+        : el__hermite_sep_eval(pr, HCHART_X, 0, c->b, c->side, u, pr->sigma, &w, st, &g, NULL);
+    *x = w;
+    return rc;
+}
+
+/* piece_eval (full precision) through the cache; need_full: the whole state is wanted,
+ * not only f; *x (may be NULL) the unknown x. */
+static int cached_eval(fctx *c, double u, int need_full, hstate *st, double *x)
+{
+    double w;
     for (int i = 0; i < NCACHE; i++)
-        if (c->cx[i] == x && (c->cfull[i] || !need_full)) { *st = c->cst[i]; return c->crc[i]; }
-    const int rc = el__hermite_full_eval(c->pr, x, c->b, st);
-    cache_put(c, x, rc, st, 1);
+        if (c->cx[i] == u && (c->cfull[i] || !need_full)) {
+            *st = c->cst[i];
+            if (x) *x = c->cw[i];
+            return c->crc[i];
+        }
+    const int rc = piece_eval(c, u, 1.0, st, &w);
+    cache_put(c, u, rc, st, 1, w);
+    if (x) *x = w;
     return rc;
 }
 
@@ -331,7 +433,7 @@ static void cache_seed(fctx *c, double x, double f)
     hstate st;
     memset(&st, 0, sizeof st);
     st.f = f;
-    cache_put(c, x, isfinite(f) ? EL_OK : EL_EDOM, &st, 0);
+    cache_put(c, x, isfinite(f) ? EL_OK : EL_EDOM, &st, 0, NAN);
 }
 
 /* The objective for the samples that look for sign changes: elliptic integrals to
@@ -340,17 +442,15 @@ static void cache_seed(fctx *c, double x, double f)
 static double fobj_coarse(fctx *c, double x)
 {
     hstate st;
-    int rc = el__hermite_curvdata(c->pr, x, c->b, &st);
-    if (!rc) rc = el__hermite_shape_eval(c->pr, COARSE_QS, &st);
-    if (rc) return GSL_NAN;
-    return st.f;
+    double w;
+    return piece_eval(c, x, COARSE_QS, &st, &w) ? GSL_NAN : st.f;
 }
 
 static double fobj(double x, void *p)
 {
     fctx *c = p;
     hstate st;
-    if (cached_eval(c, x, 0, &st)) return GSL_NAN;
+    if (cached_eval(c, x, 0, &st, NULL)) return GSL_NAN;
     return st.f;
 }
 
@@ -399,7 +499,7 @@ static int brent_root(fctx *c, double a, double fa, double b, double fb, hrootli
          * last evaluation: the cache answers) */
         {
             hstate st;
-            if (!cached_eval(c, x, 0, &st) && fabs(st.f) <= 1e-14) break;
+            if (!cached_eval(c, x, 0, &st, NULL) && fabs(st.f) <= 1e-14) break;
         }
         /* a sign change across a jump of f (L wrapping at a period): |f| stays large
          * while the bracket shrinks; a root would need a slope above 1e5 */
@@ -408,7 +508,7 @@ static int brent_root(fctx *c, double a, double fa, double b, double fb, hrootli
     gsl_root_fsolver_free(s);
     if (!ok) return EL_OK;
     hroot r = el__hermite_mkroot(x, c->b, c->pr->sigma);
-    if (cached_eval(c, x, 1, &r.st)) return EL_OK;
+    if (cached_eval(c, x, 1, &r.st, &r.x)) return EL_OK;
     if (!(fabs(r.st.f) <= 1e-8)) return EL_OK;
     return el__hermite_roots_push(out, &r);
 }
@@ -445,7 +545,7 @@ static int touch_check(fctx *c, double a, double fa, double m, double fm, double
         /* a double zero (tangency): accept it when f vanishes there */
         const double xm = gsl_min_fminimizer_x_minimum(s);
         hroot r = el__hermite_mkroot(xm, c->b, c->pr->sigma);
-        if (!cached_eval(c, xm, 1, &r.st) && fabs(r.st.f) <= 1e-11) rc = el__hermite_roots_push(out, &r);
+        if (!cached_eval(c, xm, 1, &r.st, &r.x) && fabs(r.st.f) <= 1e-11) rc = el__hermite_roots_push(out, &r);
     }
     gsl_min_fminimizer_free(s);
     return rc;
@@ -529,24 +629,12 @@ static int interval_to_refine(const double *xs, const double *fs, int n, double 
  * the 25 264 solutions of the bench problems (300 samples) are missed, with them 1. */
 #define TOUCH_RATIO 0.5
 #define REFINE_MAX 12
-static int solve_piece(fctx *c, double a, double b, int ns, hrootlist *out)
+/* Refinement and root extraction on the ns + 1 samples xs (ascending), fs of a piece
+ * of width w (arrays with room for REFINE_MAX more). */
+static int solve_samples(fctx *c, double *xs, double *fs, int ns, double w, hrootlist *out)
 {
-    double xs[1002 + REFINE_MAX], fs[1002 + REFINE_MAX];
-    const double eps = 1e-10 * (b - a) + 1e-14 * (fabs(a) + fabs(b));
     int rc;
-    if (!(b - a > 4.0 * eps)) return EL_OK;
-    /* cos(pi j / ns) by the Chebyshev recurrence c_{j+1} = 2 c_1 c_j - c_{j-1} */
-    const double c1 = cos(M_PI / ns);
-    double cprev = c1, cj = 1.0;
-    for (int j = 0; j <= ns; j++) {
-        xs[j] = a + (b - a) * 0.5 * (1.0 - cj);
-        if (j == 0) xs[j] = a + eps;
-        if (j == ns) xs[j] = b - eps;
-        fs[j] = fobj_coarse(c, xs[j]);
-        const double cnext = 2.0 * c1 * cj - cprev;
-        cprev = cj;
-        cj = cnext;
-    }
+    const double a = xs[0], b = a + w;
     for (int r = 0; r < REFINE_MAX; r++) {
         const int j = interval_to_refine(xs, fs, ns + 1, 1e-6 * (b - a), 1e-3 * (b - a));
         if (j < 0) break;
@@ -560,7 +648,7 @@ static int solve_piece(fctx *c, double a, double b, int ns, hrootlist *out)
         if (!isfinite(fs[j]) || !isfinite(fs[j + 1])) continue;
         if (fs[j] == 0.0) {
             hroot r = el__hermite_mkroot(xs[j], c->b, c->pr->sigma);
-            if (!el__hermite_full_eval(c->pr, xs[j], c->b, &r.st) && (rc = el__hermite_roots_push(out, &r))) return rc;
+            if (!piece_eval(c, xs[j], 1.0, &r.st, &r.x) && (rc = el__hermite_roots_push(out, &r))) return rc;
         } else if (fs[j] * fs[j + 1] < 0.0) {
             if ((rc = brent_root(c, xs[j], fs[j], xs[j + 1], fs[j + 1], out))) return rc;
         } else if (j > 0 && isfinite(fs[j - 1]) && fs[j - 1] * fs[j] > 0.0 &&
@@ -572,6 +660,75 @@ static int solve_piece(fctx *c, double a, double b, int ns, hrootlist *out)
         }
     }
     return EL_OK;
+}
+
+static int solve_piece(fctx *c, double a, double b, int ns, hrootlist *out)
+{
+    double xs[1002 + REFINE_MAX], fs[1002 + REFINE_MAX];
+    const double eps = 1e-10 * (b - a) + 1e-14 * (fabs(a) + fabs(b));
+    if (!(b - a > 4.0 * eps)) return EL_OK;
+    /* cos(pi j / ns) by the Chebyshev recurrence c_{j+1} = 2 c_1 c_j - c_{j-1} */
+    const double c1 = cos(M_PI / ns);
+    double cprev = c1, cj = 1.0;
+    for (int j = 0; j <= ns; j++) {
+        xs[j] = a + (b - a) * 0.5 * (1.0 - cj);
+        if (j == 0) xs[j] = a + eps;
+        if (j == ns) xs[j] = b - eps;
+        fs[j] = fobj_coarse(c, xs[j]);
+        const double cnext = 2.0 * c1 * cj - cprev;
+        cprev = cj;
+        cj = cnext;
+    }
+    return solve_samples(c, xs, fs, ns, b - a, out);
+}
+
+/* Near a separatrix crossing (a root of (40), (41)) for sigma above SEP_SIGMA the
+ * solutions lie exponentially close to it (ln(1/(|F| - sigma)) grows like
+ * sqrt(2 sigma) times the length passed near the saddle): there the piece is searched
+ * in y = ln|(|F| - sigma)| (the separatrix chart, hermite_objective.c), where the
+ * objective is smooth and, for small |F| - sigma, linear in y. Samples from y_c
+ * (|F| - sigma = 1e-3 sigma, where the x chart takes over) at growing distances down to
+ * |F| - sigma = 1e-300 sigma. */
+#define SEP_SIGMA 100.0
+static const double sep_steps[] = {0.0, 1.0, 2.5, 5.0, 10.0, 20.0, 40.0, 80.0, 160.0, 320.0, 690.0};
+enum { NSEP = sizeof sep_steps / sizeof sep_steps[0] };
+
+static int solve_sep_piece(fctx *c, double yc, hrootlist *out)
+{
+    double xs[NSEP + REFINE_MAX], fs[NSEP + REFINE_MAX];
+    for (int j = 0; j < NSEP; j++) {
+        xs[j] = yc - sep_steps[NSEP - 1 - j];
+        fs[j] = fobj_coarse(c, xs[j]);
+    }
+    return solve_samples(c, xs, fs, NSEP - 1, sep_steps[NSEP - 1], out);
+}
+
+/* The end x_end of a piece is a separatrix crossing and the piece runs towards
+ * x_end + dir: the separatrix piece next to it, and into *xc the x where the x chart
+ * takes over (x_end when there is none). */
+static int separatrix_end(const hprob *pr, int b, double x_end, double dir, double width,
+                          hrootlist *out, double *xc)
+{
+    *xc = x_end;
+    if (!(pr->sigma > SEP_SIGMA)) return EL_OK;
+    /* the side of the separatrix the piece lies on: the sign of |F| - sigma inside */
+    hstate st;
+    const double xin = x_end + dir * 1e-6 * width;
+    if (el__hermite_curvdata(pr, xin, b, &st)) return EL_OK;
+    const double F1 = -2.0 * st.k0p, F2 = st.k0 * st.k0 - pr->sigma, d = sqrt(F1 * F1 + F2 * F2) - pr->sigma;
+    if (d == 0.0) return EL_OK;
+    fctx c;
+    fctx_init(&c, pr, b);
+    c.sep = 1;
+    c.side = d > 0.0 ? 1 : -1;
+    c.w0 = pr->hcase == 3 ? xin : xin;
+    const double yc = log(1e-3 * pr->sigma);
+    double x;
+    if (piece_eval(&c, yc, COARSE_QS, &st, &x) || !((x - x_end) * dir > 0.0) || !(fabs(x - x_end) < width))
+        return EL_OK;                                  /* the x chart covers the piece */
+    *xc = x;
+    c.w0 = x;
+    return solve_sep_piece(&c, yc, out);
 }
 
 /* The kind of curve on a piece between split points, from its midpoint;
@@ -601,7 +758,7 @@ int el__hermite_solve_tension(hprob *pr, int ns, hrootlist *out)
         double r[8];
         int nr;
         const poly p = poly40(pr);
-        if ((rc = poly_real_roots(p.c, p.d, r, &nr))) return rc;
+        poly_roots_in(p.c, p.d, -pr->B, pr->B, 4e-16, r, &nr);
         for (int i = 0; i < nr; i++)
             if (fabs(r[i]) < pr->B) { r40[n40] = r[i]; b40[n40++] = root_branch(pr, r[i]); }
     }
@@ -622,11 +779,16 @@ int el__hermite_solve_tension(hprob *pr, int ns, hrootlist *out)
             if (cls[i] == CLASS_NONE) continue;            /* no curve anywhere on the piece */
             /* inflectional neighbours across a soft split point form one piece */
             const double a = pts[i].x;
-            while (cls[i] == CLASS_INFL && i + 2 < n && pts[i + 1].soft && cls[i + 1] == CLASS_INFL) i++;
+            const int a_sep = pts[i].soft == SPLIT_SEP;
+            while (cls[i] == CLASS_INFL && i + 2 < n && pts[i + 1].soft == SPLIT_SOFT && cls[i + 1] == CLASS_INFL) i++;
             const double bb = pts[i + 1].x;
+            /* separatrix crossings at the ends: the pieces next to them in y (above) */
+            double xa = a, xb = bb;
+            if (a_sep && (rc = separatrix_end(pr, b, a, 1.0, bb - a, out, &xa))) return rc;
+            if (pts[i + 1].soft == SPLIT_SEP && (rc = separatrix_end(pr, b, bb, -1.0, bb - xa, out, &xb))) return rc;
             /* samples in proportion to the piece's share of the domain, at least 2 */
             const int m = 1 + (int)ceil(ns * (bb - a) / (2.0 * X));
-            if ((rc = solve_piece(&c, a, bb, m > 1000 ? 1000 : m, out))) return rc;
+            if ((rc = solve_piece(&c, xa, xb, m > 1000 ? 1000 : m, out))) return rc;
         }
     }
     return EL_OK;
@@ -682,8 +844,7 @@ int el_hermite_analyse(const double P[2], const double V[2], double sigma,
         double r[8];
         int nr;
         const poly p = poly40(&pr);
-        if ((rc = poly_real_roots(p.c, p.d, r, &nr))) return rc;
-        qsort(r, (size_t)nr, sizeof *r, cmp_double);
+        poly_roots_in(p.c, p.d, -pr.B, pr.B, 4e-16, r, &nr);
         for (int i = 0; i < nr && out.nroot < 8; i++) {
             int inside = 0;
             for (size_t j = 0; j < out.ninterval; j++)
