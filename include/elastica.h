@@ -547,18 +547,19 @@ void el_hermite_options_defaults(el_hermite_options *opt);
  * defaults were tuned on, 2 of 25 250 on another 10 000; with sigma |p1-p0|^2 in
  * [0, 5]: 18 of 26 810 and 22 of 26 770. Raise opt->samples where completeness
  * matters more than time).
- * Every solution is verified with el_smooth_eval and kept only if its residual
+ * Every solution is verified with el_smooth_eval and returned only if its residual
  * is <= opt->tol (after a Newton polish on the parameters when it misses by a
  * little, then a second one with k held at each of its nearest doubles).
- * Conditioning limit: very close to the separatrix (||k| - 1| < ~1e-7, common
- * for sigma |p1-p0|^2 > ~100) |d curve(L) / dk| is 1e6..1e8, so one ulp of the
- * stored k moves the end by 1e-10..1e-8 (el_smooth_eval itself is good to
- * ~1e-13 there); the other parameters compensate down to ~1e-11..5e-10 with the
- * curve's tension 2 mu (2k^2 - 1) kept exact. At tol = 1e-10, for sigma |p1-p0|^2
- * in [60, 600] about 8% of the solutions (those whose floor exceeds 1e-10) are
- * dropped; a larger tol returns them.
- * Length mode can miss a curve of solutions that crosses none of the grid lines
- * (a pair born and ending between two lines).
+ * High tension: near the separatrix (|F| = sigma, |k| = 1) the solutions lie
+ * exponentially close to it (1 - |k| ~ exp(-sqrt(2 sigma) L') for the length L'
+ * spent near the saddle): the solver searches there in ln(|F| - sigma), where they
+ * are well conditioned, and finds them all (tested against a dense scan for
+ * sigma |p1-p0|^2 up to 1e4). But el_smooth_params stores the modulus as k, and one
+ * ulp of k moves the end by about 1e-16 |d curve(L)/dk|, which grows like
+ * 1 / (1 - |k|): beyond what the polish can compensate (from sigma |p1-p0|^2 ~ 200:
+ * ~60% of the solutions at 600, all above ~3000, where 1 - |k| is below 1e-16) such
+ * a curve is not returned but counted in res->unrepresentable. A larger tol returns
+ * those it can hold to that tol, with their residual.
  * A circular arc (sigma = kappa^2, where the parametrisation needs |k| = inf) is
  * returned with k = 1e4 (counter-clockwise) or -1e4 (clockwise), accurate to ~1e-8
  * only: it appears when opt->tol allows.

@@ -722,7 +722,14 @@ static int separatrix_end(const hprob *pr, int b, double x_end, double dir, doub
     c.sep = 1;
     c.side = d > 0.0 ? 1 : -1;
     c.w0 = pr->hcase == 3 ? xin : xin;
-    const double yc = log(1e-3 * pr->sigma);
+    /* y_c: |F| - sigma = 1e-3 sigma, or half its value mid-piece where the piece does
+     * not reach that far from the separatrix */
+    double dc = 1e-3 * pr->sigma;
+    if (!el__hermite_curvdata(pr, x_end + 0.5 * dir * width, b, &st)) {
+        const double G1 = -2.0 * st.k0p, G2 = st.k0 * st.k0 - pr->sigma, dm = sqrt(G1 * G1 + G2 * G2) - pr->sigma;
+        if (dm * d > 0.0) dc = fmin(dc, 0.5 * fabs(dm));
+    }
+    const double yc = log(dc);
     double x;
     if (piece_eval(&c, yc, COARSE_QS, &st, &x) || !((x - x_end) * dir > 0.0) || !(fabs(x - x_end) < width))
         return EL_OK;                                  /* the x chart covers the piece */
