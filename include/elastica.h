@@ -485,10 +485,10 @@ typedef struct el_hermite_options {
     int mode;              /* EL_HERMITE_TENSION (default) or EL_HERMITE_LENGTH */
     double sigma;          /* tension, 1/length^2 (tension mode); default 0 (pure bending) */
     double length;         /* prescribed arc length > 0 (length mode); default 0 (unset) */
-    double tol;            /* accepted end residual: position / |p1-p0| and tangent angle (rad); default 1e-10 */
+    double tol;            /* accepted end residual: position / |p1-p0| and tangent angle (rad), > 0; default 1e-10 */
     int samples;           /* bracketing samples over the whole search interval (each subinterval gets its share + 2, then refinement), 4..1000; default 12 */
     int grid;              /* length mode: sigma lines whose tension solutions start the tracing, 1..256; default 6 */
-    size_t max_solutions;  /* at most this many solutions are kept (lowest energy); default 64 */
+    size_t max_solutions;  /* at most this many solutions are kept (lowest energy), >= 1; default 64 */
 } el_hermite_options;
 
 /*
@@ -563,10 +563,24 @@ void el_hermite_options_defaults(el_hermite_options *opt);
  * A circular arc (sigma = kappa^2, where the parametrisation needs |k| = inf) is
  * returned with k = 1e4 (counter-clockwise) or -1e4 (clockwise), accurate to ~1e-8
  * only: it appears when opt->tol allows.
- * res is overwritten (not freed first). EL_EINVAL leaves res untouched; other
- * errors leave it empty (count 0).
- * Errors: EL_EINVAL (NULL, non-finite, zero tangent, bad options), EL_EDOM
- * (p0 = p1, or length < |p1 - p0| in length mode), EL_ENOMEM, EL_EINTERNAL.
+ * Range: coordinates and |p1 - p0| at most 1e100, |p1 - p0| at least 1e-100 (the
+ * curvature scales as 1/|p1 - p0|, mu as its square); sigma |p1 - p0|^2 at most 1e5
+ * (above, every solution lies closer to the separatrix than the search reaches;
+ * none would be representable, see above); any sigma below (very negative: no curve,
+ * count 0). Length mode searches the same range of tension: its solutions of higher
+ * tension (possible only for length < ~1.06 |p1 - p0|) are not found.
+ * Work, bounded by the options: tension mode evaluates the objective about
+ * samples + 14 times per piece between split points (at most 65 pieces per branch,
+ * two separatrix pieces of 11 samples at most per piece), plus Brent's iterations
+ * (at most 200) per sign change; length mode solves grid tension problems and at
+ * most 1e5 evaluations for the tracing (EL_EMAXITER beyond).
+ * res is overwritten (not freed first). EL_EINVAL leaves res untouched; EL_EMAXITER
+ * returns the solutions found; other errors leave it empty (count 0).
+ * Errors: EL_EINVAL (NULL, non-finite, zero tangent, mode not one of the two, tol not
+ * > 0, samples outside 4..1000, grid outside 1..256, max_solutions 0, length not > 0
+ * in length mode), EL_EDOM (p0 = p1, outside the range above, or length < |p1 - p0|
+ * in length mode), EL_EMAXITER (length mode: the tracing's work limit reached),
+ * EL_ENOMEM, EL_EINTERNAL (a bracket of the kappa_m bound that should not fail did).
  */
 int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
                      const double t1[2], const el_hermite_options *opt,
@@ -587,7 +601,7 @@ void el_hermite_result_free(el_hermite_result *res);
  * (17) reaches kappa_m^2 = 2 sigma there (0: kappa1 = (-V1 + sqrt)/P2,
  * 1: (-V1 - sqrt)/P2); special: the values (45), kappa0^2 = sigma and
  * kappa0' = 0, sorted. Errors: EL_EINVAL (NULL, non-finite, |P| != 1, |V| != 1
- * to 1e-9), EL_EINTERNAL.
+ * to 1e-9), EL_EDOM (sigma > 1e5, the range of el_hermite_solve), EL_ENOMEM, EL_EINTERNAL.
  */
 typedef struct el_hermite_analysis {
     int hcase;

@@ -401,6 +401,13 @@ static int unit(const double t[2], double u[2])
     return EL_OK;
 }
 
+/* The range the solver covers (header): coordinates and |p1 - p0| up to 1e100 and
+ * |p1 - p0| down to 1e-100 (the curvature ~ 1/d, mu = |F|/2 ~ 1/d^2 and the energy stay
+ * in double range); sigma |p1 - p0|^2 up to 1e5 (the separatrix search reaches
+ * |F| - sigma = 1e-300 sigma, and the solutions lie within exp(-sqrt(2 sigma) L') of it). */
+#define SCALE_MAX 1e100
+#define SIGMA_D2_MAX 1e5
+
 int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
                      const double t1[2], const el_hermite_options *opt,
                      el_hermite_result *res)
@@ -428,7 +435,9 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
     fr.psi1 = atan2(u1[1], u1[0]);
     fr.d = hypot(p1[0] - p0[0], p1[1] - p0[1]);
     fr.rot = fr.psi0 - M_PI_2;
-    if (!(fr.d > 1e-300)) return EL_EDOM;
+    if (!(fr.d >= 1.0 / SCALE_MAX && fr.d <= SCALE_MAX) || fabs(p0[0]) > SCALE_MAX ||
+        fabs(p0[1]) > SCALE_MAX || fabs(p1[0]) > SCALE_MAX || fabs(p1[1]) > SCALE_MAX)
+        return EL_EDOM;
     const double cr = cos(fr.rot), sr = sin(fr.rot);
     const double dx = (p1[0] - p0[0]) / fr.d, dy = (p1[1] - p0[1]) / fr.d;
     hprob pr;
@@ -445,15 +454,18 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
     if (opt->mode == EL_HERMITE_TENSION) {
         pr.sigma = opt->sigma * fr.d * fr.d;
         pr.Lmin = 1.0;
+        if (pr.sigma > SIGMA_D2_MAX) return EL_EDOM;
         rc = el__hermite_solve_tension(&pr, opt->samples, &roots);
     } else {
         Ln = opt->length / fr.d;
-        if (Ln < 1.0 - 1e-12) return EL_EDOM;
+        if (Ln < 1.0 - 1e-12 || !isfinite(Ln)) return EL_EDOM;
         pr.sigma = 0.0;
         pr.Lmin = Ln;
         rc = Ln > 1.0 + 1e-12 ? el__hermite_solve_length(&pr, Ln, opt->grid, opt->samples, &roots) : EL_OK;
     }
-    if (rc) { free(roots.v); return rc; }
+    /* the length mode's work limit: the solutions found so far, with EL_EMAXITER */
+    if (rc && rc != EL_EMAXITER) { free(roots.v); return rc; }
+    const int status = rc;
 
     size_t cap = roots.n + 2;
     el_hermite_solution *sol = malloc(cap * sizeof *sol);
@@ -515,6 +527,6 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
     res->count = n;
     res->solutions = sol;
     res->unrepresentable = nu;
-    return EL_OK;
+    return status;
 }
 

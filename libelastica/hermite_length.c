@@ -37,6 +37,13 @@ static void sigma_range(double Lt, double *lo, double *hi)
     *hi = fmax(32.0 * M_PI * M_PI / (e * e), 64.0 / (e * e));
 }
 
+/* The tension the search reaches (header: the same as tension mode's range; beyond it
+ * the solutions lie closer to the separatrix than the separatrix chart reaches). */
+#define SIGMA_MAX 1e5
+/* the work limit: objective evaluations of the tracing (the bench problems need at
+ * most ~5000; beyond it the solutions found so far are returned with EL_EMAXITER) */
+#define MAX_EVALS 100000
+
 /* A point of C in a chart (u, v; b): tracer coordinates (U, V) = (asinh u, asinh v),
  * t = asinh(sigma), the state, and the gradients of f, L and t in (U, V). In the
  * separatrix chart (chart = CHART_SEP over the chart base, on the side side of k = 1)
@@ -492,9 +499,9 @@ int el__hermite_solve_length(hprob *pr, double Lt, int nl, int ns, hrootlist *ou
     T.pr = pr;
     T.Lt = Lt;
     T.tlo = asinh(slo);
-    T.thi = asinh(shi);
+    T.thi = asinh(fmin(shi, SIGMA_MAX));
     T.out = out;
-    T.max_evals = 200000;
+    T.max_evals = MAX_EVALS;
     int rc = seeds(&T, nl, ns);
     for (int i = 0; i < T.nseed && !rc; i++) {
         if (T.visited[i]) continue;

@@ -624,6 +624,85 @@ START_TEST(bad_input_and_clear_statuses)
 }
 END_TEST
 
+/* Every status of el_hermite_solve / el_hermite_analyse the header lists, each from
+ * the input that causes it; EL_EINVAL leaves res untouched, EL_EDOM empties it. */
+START_TEST(each_status_from_its_cause)
+{
+    const double p0[2] = {0, 0}, t0[2] = {1, 0}, p1[2] = {1, 0.5}, t1[2] = {0, 1};
+    el_hermite_options o;
+    el_hermite_result r = {5, NULL, 3};
+    /* bad options: EL_EINVAL, res untouched */
+    struct { int which; double v; } bad[] = {
+        {0, 2.0}, {1, NAN}, {1, INFINITY}, {2, 0.0}, {2, -1e-10}, {2, NAN}, {3, 3}, {3, 1001},
+        {4, 0}, {4, 257}, {5, 0}, {6, 0.0}, {6, -2.0}, {6, NAN}};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        el_hermite_options_defaults(&o);
+        switch (bad[i].which) {
+        case 0: o.mode = (int)bad[i].v; break;
+        case 1: o.sigma = bad[i].v; break;
+        case 2: o.tol = bad[i].v; break;
+        case 3: o.samples = (int)bad[i].v; break;
+        case 4: o.grid = (int)bad[i].v; break;
+        case 5: o.max_solutions = (size_t)bad[i].v; break;
+        default: o.mode = EL_HERMITE_LENGTH; o.length = bad[i].v; break;
+        }
+        ck_assert_msg(el_hermite_solve(p0, t0, p1, t1, &o, &r) == EL_EINVAL, "bad option %zu accepted", i);
+        ck_assert_uint_eq(r.count, 5);
+        ck_assert_uint_eq(r.unrepresentable, 3);
+    }
+    /* the limits themselves are accepted */
+    el_hermite_options_defaults(&o);
+    o.samples = 4; o.grid = 1; o.max_solutions = 1;
+    ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_OK);
+    ck_assert_uint_le(r.count, 1);
+    el_hermite_result_free(&r);
+    o.samples = 1000; o.grid = 256;
+    ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_OK);
+    el_hermite_result_free(&r);
+    /* outside the range: EL_EDOM, res empty */
+    el_hermite_options_defaults(&o);
+    const double far[2] = {2e100, 0}, near[2] = {1e-101, 0}, big1[2] = {6e99, 0}, big2[2] = {-6e99, 1e99};
+    r.count = 5;
+    ck_assert_int_eq(el_hermite_solve(p0, t0, far, t1, &o, &r), EL_EDOM);      /* coordinate > 1e100 */
+    ck_assert_uint_eq(r.count, 0);
+    ck_assert_int_eq(el_hermite_solve(p0, t0, near, t1, &o, &r), EL_EDOM);     /* |p1 - p0| < 1e-100 */
+    ck_assert_int_eq(el_hermite_solve(big1, t0, big2, t1, &o, &r), EL_EDOM);   /* |p1 - p0| > 1e100 */
+    o.sigma = 1.01e5 / 1.25;                                                    /* sigma |p1 - p0|^2 > 1e5 */
+    ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_EDOM);
+    o.sigma = 0.99e5 / 1.25;                                                    /* just inside: solved */
+    ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_OK);
+    el_hermite_result_free(&r);
+    o.sigma = -1e300;                                                           /* no curve, not an error */
+    ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_OK);
+    ck_assert_uint_eq(r.count, 0);
+    el_hermite_result_free(&r);
+    el_hermite_options_defaults(&o);
+    o.mode = EL_HERMITE_LENGTH;
+    const double tiny[2] = {1e-90, 0};
+    o.length = 1e300;                                                           /* length / |p1 - p0| overflows */
+    ck_assert_int_eq(el_hermite_solve(p0, t0, tiny, t1, &o, &r), EL_EDOM);
+    /* the tiny and huge scales inside the range are solved like the unit one */
+    el_hermite_options_defaults(&o);
+    o.sigma = 7.0;
+    const double q1[2] = {1.5, 0.7}, q0[2] = {0, 0}, u0[2] = {1, 0.2}, u1[2] = {-0.3, 1};
+    size_t n1 = solve_and_check(q0, u0, q1, u1, &o, 1e-10);
+    for (int e = -90; e <= 90; e += 60) {
+        const double sc = pow(10.0, e), s1[2] = {1.5 * sc, 0.7 * sc};
+        o.sigma = 7.0 / (sc * sc);
+        ck_assert_uint_eq(solve_and_check(q0, u0, s1, u1, &o, 1e-10), n1);
+    }
+    /* analyse: EL_EINVAL, EL_EDOM */
+    el_hermite_analysis a;
+    const double P[2] = {0.6, 0.8}, V[2] = {0, 1}, P2[2] = {0.6, 0.81};
+    ck_assert_int_eq(el_hermite_analyse(NULL, V, 1.0, &a), EL_EINVAL);
+    ck_assert_int_eq(el_hermite_analyse(P2, V, 1.0, &a), EL_EINVAL);
+    ck_assert_int_eq(el_hermite_analyse(P, V, NAN, &a), EL_EINVAL);
+    ck_assert_int_eq(el_hermite_analyse(P, V, 2e5, &a), EL_EDOM);
+    ck_assert_int_eq(el_hermite_analyse(P, V, -1e300, &a), EL_OK);
+    ck_assert(a.kappa_bound < 0.0);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("hermite");
@@ -641,6 +720,7 @@ int main(void)
     tcase_add_test(tc, opposite_and_parallel_tangents);
     tcase_add_test(tc, circle_is_found_to_its_accuracy);
     tcase_add_test(tc, bad_input_and_clear_statuses);
+    tcase_add_test(tc, each_status_from_its_cause);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }
