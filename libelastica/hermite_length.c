@@ -78,6 +78,7 @@ static int cpt_eval(tracer *T, const cpt *like, double U, double V, cpt *p)
     double sigma, w = like->w, c[2];
     if (++T->evals > T->max_evals) return EL_EMAXITER;
     int rc;
+    /* cosh from sinh (d asinh(u)/du = 1 / sqrt(1 + u^2)) */
     if (like->chart == CHART_SEP) {
         const int fi = like->fi;
         /* the replaced coordinate extrapolated from like's as the starting guess */
@@ -86,11 +87,12 @@ static int cpt_eval(tracer *T, const cpt *like, double U, double V, cpt *p)
         const double y = SEP_SCALE * (fi ? V : U), other = sinh(fi ? U : V);
         rc = el__hermite_sep_eval(T->pr, like->base, fi, like->b, like->side, y, other, &w, &st, &g, &sigma);
         c[fi] = SEP_SCALE;
-        c[1 - fi] = cosh(fi ? U : V);
+        c[1 - fi] = sqrt(1.0 + other * other);
     } else {
-        rc = el__hermite_chart_eval(T->pr, like->chart, sinh(U), sinh(V), like->b, &st, &g, &sigma);
-        c[0] = cosh(U);
-        c[1] = cosh(V);
+        const double u = sinh(U), v = sinh(V);
+        rc = el__hermite_chart_eval(T->pr, like->chart, u, v, like->b, &st, &g, &sigma);
+        c[0] = sqrt(1.0 + u * u);
+        c[1] = sqrt(1.0 + v * v);
     }
     if (rc) return rc;
     const double it = 1.0 / sqrt(1.0 + sigma * sigma);
@@ -107,7 +109,9 @@ static int cpt_eval(tracer *T, const cpt *like, double U, double V, cpt *p)
     p->V = V;
     p->w = w;
     p->sigma = sigma;
-    p->t = asinh(sigma);
+    /* the charts X and K1 have t = asinh(sigma) as their coordinate V */
+    p->t = (like->chart == HCHART_X || like->chart == HCHART_K1) ? V
+           : like->chart == CHART_SEP && like->fi == 0 && like->base != HCHART_C3 ? V : asinh(sigma);
     p->st = st;
     for (int i = 0; i < 2; i++) {
         p->fg[i] = g.f[i] * c[i];
@@ -180,6 +184,16 @@ static void tangent(const cpt *p, double d0, double d1, double tau[2])
  * - in case 1, K1 near the fold of X where the branches of (17) meet
  *   (|d asinh kappa1 / d asinh x| along a sigma line above 4; back to X below 1/4):
  *   (18) = a2 x^2 + a1 x + a0 = W^2, W = P2 kappa1 + V1, so dkappa1/dx = (2 a2 x + a1) / (2 P2 W). */
+/* *p re-expressed in the chart of spec at (U, V) if that works (else unchanged) */
+static int switch_to(tracer *T, const cpt *spec, double U, double V, cpt *p)
+{
+    cpt q;
+    const int rc = cpt_eval(T, spec, U, V, &q);
+    if (rc == EL_EMAXITER) return rc;
+    if (!rc) *p = q;
+    return EL_OK;
+}
+
 static int rechart(tracer *T, cpt *p)
 {
     const hprob *pr = T->pr;
@@ -191,7 +205,7 @@ static int rechart(tracer *T, cpt *p)
         cpt base = chart_spec(p->base, p->b);
         double c[2];
         for (int i = 0; i < 2; i++) c[i] = asinh(base_coord(pr, p->base, i, &p->st, p->sigma));
-        if (!(fabs(d) <= 1e-2 * scale && fabs(fy) >= 1e-7)) return cpt_eval(T, &base, c[0], c[1], p);
+        if (!(fabs(d) <= 1e-2 * scale && fabs(fy) >= 1e-7)) return switch_to(T, &base, c[0], c[1], p);
         /* the replaced coordinate: the one |F| - sigma varies more along (the separatrix
          * curve is a graph over the other there), checked in the base chart's gradient */
         cpt b2;
@@ -229,11 +243,11 @@ static int rechart(tracer *T, cpt *p)
     const double r = fabs(dd / (2.0 * pr->P2 * W)) * sqrt((1.0 + x * x) / (1.0 + k1 * k1));
     if (p->chart == HCHART_X && r > 4.0) {
         const cpt c = chart_spec(HCHART_K1, dd >= 0.0 ? 0 : 1);
-        return cpt_eval(T, &c, asinh(k1), p->V, p);
+        return switch_to(T, &c, asinh(k1), p->V, p);
     }
     if (p->chart == HCHART_K1 && r < 0.25) {
         const cpt c = chart_spec(HCHART_X, W >= 0.0 ? 0 : 1);
-        return cpt_eval(T, &c, asinh(x), p->V, p);
+        return switch_to(T, &c, asinh(x), p->V, p);
     }
     return EL_OK;
 }
@@ -251,16 +265,10 @@ static void coords_in(const hprob *pr, const cpt *p, const cpt *q, double *U, do
     *V = c[1];
 }
 
-/* Newton on (f, G - target) from the point of the step p -> q where G (L, or t when
- * which = 1) interpolates linearly to target; the point into *r. */
-static int cross(tracer *T, const cpt *p, const cpt *q, int which, double target, cpt *r)
+/* Newton on (f, G - target) (G: L, or t when which = 1) from the evaluated point *r,
+ * steps at most span long and damped to decrease |f| + |G - target|. */
+static int newton2(tracer *T, int which, double target, double span, cpt *r)
 {
-    const double gp = which ? p->t : p->st.L, gq = which ? q->t : q->st.L;
-    const double w = gp == gq ? 0.5 : (gp - target) / (gp - gq);
-    const double dU = q->U - p->U, dV = q->V - p->V, span = hypot(dU, dV) + 1e-12;
-    const int same = p->chart == q->chart && p->base == q->base && p->fi == q->fi && p->b == q->b && p->side == q->side;
-    int rc = cpt_eval(T, q, same ? p->U + w * dU : q->U, same ? p->V + w * dV : q->V, r);
-    if (rc) return rc;
     const double scale = fmax(1.0, fabs(target));
     for (int it = 0; it < 12; it++) {
         const double *G = which ? r->tg : r->Lg;
@@ -274,7 +282,9 @@ static int cross(tracer *T, const cpt *p, const cpt *q, int which, double target
         cpt s;
         int ok = 0;
         for (int h = 0; h < 6 && !ok; h++, d0 *= 0.5, d1 *= 0.5) {
-            if (cpt_eval(T, r, r->U + d0, r->V + d1, &s)) continue;
+            const int rc = cpt_eval(T, r, r->U + d0, r->V + d1, &s);
+            if (rc == EL_EMAXITER) return rc;
+            if (rc) continue;
             const double r0 = s.st.f, r1 = (which ? s.t : s.st.L) - target;
             ok = fabs(r0) + fabs(r1) / scale < fabs(res0) + fabs(res1) / scale;
         }
@@ -283,6 +293,27 @@ static int cross(tracer *T, const cpt *p, const cpt *q, int which, double target
     }
     return fabs(r->st.f) <= 1e-11 && fabs((which ? r->t : r->st.L) - target) <= 1e-11 * scale
                ? EL_OK : EL_ENOCONV;
+}
+
+/* The point of the step p -> q of C where G (L, or t when which = 1) is target: Newton
+ * (newton2) from the linear interpolate, or, when p and q lie in different charts or
+ * branches (C passed the fold of (17) within the step), from each end in its own. */
+static int cross(tracer *T, const cpt *p, const cpt *q, int which, double target, cpt *r)
+{
+    const double gp = which ? p->t : p->st.L, gq = which ? q->t : q->st.L;
+    const double w = gp == gq ? 0.5 : (gp - target) / (gp - gq);
+    const double dU = q->U - p->U, dV = q->V - p->V, span = hypot(dU, dV) + 1e-12;
+    const int same = p->chart == q->chart && p->base == q->base && p->fi == q->fi && p->b == q->b && p->side == q->side;
+    if (same) {
+        const int rc = cpt_eval(T, q, p->U + w * dU, p->V + w * dV, r);
+        return rc ? rc : newton2(T, which, target, span, r);
+    }
+    int rc = EL_ENOCONV;
+    for (int e = 0; e < 2 && rc && rc != EL_EMAXITER; e++) {
+        *r = (w < 0.5) == (e == 0) ? *p : *q;
+        rc = newton2(T, which, target, span, r);
+    }
+    return rc;
 }
 
 /* Same point of the curvature-data surface (same tension, kappa0, kappa0'). */
@@ -318,7 +349,28 @@ static int length_crossings(tracer *T, const cpt *p, const double tp[2], const c
     const double a = p->st.L - T->Lt, b = q->st.L - T->Lt;
     if (a * b <= 0.0) {
         rc = cross(T, p, q, 0, T->Lt, &r);
-        return rc == EL_EMAXITER ? rc : rc == EL_OK ? push_solution(T, &r) : EL_OK;
+        if (rc == EL_EMAXITER) return rc;
+        /* accepted if it lies on the step (Newton can reach the neighbour of a close pair) */
+        const int same = p->chart == q->chart && p->base == q->base && p->fi == q->fi;
+        const double dU = q->U - p->U, dV = q->V - p->V;
+        const double lam = same && r.chart == p->chart && r.base == p->base && r.fi == p->fi
+                               ? ((r.U - p->U) * dU + (r.V - p->V) * dV) / (dU * dU + dV * dV) : 0.5;
+        if (rc == EL_OK && lam >= -0.05 && lam <= 1.05) return push_solution(T, &r);
+        /* Newton from the step's interpolate failed (a long step, one across the
+         * branches of (17), or one that holds a close pair): the point of C in the
+         * middle halves the bracket */
+        if (depth == 0 || p->chart != q->chart || p->base != q->base || p->fi != q->fi) return EL_OK;
+        cpt m;
+        int its;
+        const cpt *like = p->b == q->b ? p : q;
+        if ((rc = cpt_eval(T, like, 0.5 * (p->U + q->U), 0.5 * (p->V + q->V), &m)) == EL_EMAXITER) return rc;
+        if (!rc) rc = correct(T, &m, 1e-9, 6, &its);
+        if (rc == EL_EMAXITER) return rc;
+        if (rc) return EL_OK;
+        double tm[2];
+        tangent(&m, q->U - p->U, q->V - p->V, tm);
+        if ((m.st.L - T->Lt) * a <= 0.0) return length_crossings(T, p, tp, &m, tm, depth - 1);
+        return length_crossings(T, &m, tm, q, tq, depth - 1);
     }
     if (depth == 0) return EL_OK;
     const double dU = q->U - p->U, dV = q->V - p->V, ds = hypot(dU, dV);
@@ -366,7 +418,7 @@ static int step_events(tracer *T, int origin, const cpt *p, const double tp[2], 
 {
     int rc;
     cpt r;
-    if ((rc = length_crossings(T, p, tp, q, tq, 4))) return rc;
+    if ((rc = length_crossings(T, p, tp, q, tq, 6))) return rc;
     for (int i = 0; i < T->nseed; i++) {
         const cpt *s = &T->seed[i];
         /* strictly crossed (the trace starts on its own seed's line) */
