@@ -537,6 +537,9 @@ void el_hermite_options_defaults(el_hermite_options *opt);
  * solutions form curves in the plane of the unknown and sigma; they are found on
  * opt->grid sigma lines and followed by continuation with the analytic gradient, and
  * the points of length L are solved for where the length crosses L (hermite_length.c).
+ * It can miss a curve of solutions that crosses none of the grid lines (a pair born
+ * and ending between two lines); on 2 x 1000 random problems (L between 1.05 and 3
+ * |p1 - p0|) it found every solution the former 72-line search found, and 636 more.
  * A count of 0 with EL_OK means no such curve exists (e.g. sigma very negative).
  * Completeness: the bracketing samples each subinterval, then bisects where the
  * samples leave room for two zeros of a convex objective (seed 004 §5 observes
