@@ -1,7 +1,9 @@
 /* Hermite interpolation (seed 004): median time for all solutions of one
  * problem, over 10 000 random problems (tension mode, sigma |p1-p0|^2 uniform in
- * [-10, 40], random points and tangents), and the length mode on 200 problems.
- * One JSON line per figure. */
+ * [-10, 40], random points and tangents), and the length mode (L / |p1-p0| uniform
+ * in [1.05, 3]) against the tension mode on the same 1000 problems, the two solved
+ * alternately problem by problem. One JSON line per figure; "readme"/"value" mark
+ * the README's figures. */
 #define _POSIX_C_SOURCE 199309L
 #include "elastica.h"
 #include <math.h>
@@ -30,42 +32,76 @@ static int cmp(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-static void run(int mode, int n, const char *name)
+typedef struct { double p1[2], t0[2], t1[2], sigma, length; } problem;
+
+static problem draw(unsigned long long *s)
 {
-    double *t = malloc(sizeof(double) * (size_t)n);
-    if (!t) return;
-    unsigned long long s = 2024;
     const double pi = 3.14159265358979324;
-    size_t nsol = 0;
-    int fail = 0;
-    for (int i = 0; i < n; i++) {
-        const double p0[2] = {0, 0}, p1[2] = {uni(&s, -1, 1), uni(&s, -1, 1)};
-        const double a = uni(&s, -pi, pi), b = uni(&s, -pi, pi);
-        const double t0[2] = {cos(a), sin(a)}, t1[2] = {cos(b), sin(b)};
-        const double d = hypot(p1[0], p1[1]);
-        el_hermite_options o;
-        el_hermite_options_defaults(&o);
-        o.mode = mode;
-        if (mode == EL_HERMITE_TENSION) o.sigma = uni(&s, -10, 40) / (d * d);
-        else o.length = d * uni(&s, 1.05, 3.0);
-        el_hermite_result r;
-        const double t_start = now_us();
-        const int rc = el_hermite_solve(p0, t0, p1, t1, &o, &r);
-        t[i] = now_us() - t_start;
-        if (rc) { fail++; continue; }
-        nsol += r.count;
-        el_hermite_result_free(&r);
-    }
-    qsort(t, (size_t)n, sizeof *t, cmp);
-    printf("{\"bench\": \"%s\", \"problems\": %d, \"median_us\": %.1f, \"p90_us\": %.1f, "
-           "\"mean_solutions\": %.2f, \"failures\": %d}\n",
-           name, n, t[n / 2], t[(n * 9) / 10], (double)nsol / n, fail);
-    free(t);
+    problem q;
+    q.p1[0] = uni(s, -1, 1);
+    q.p1[1] = uni(s, -1, 1);
+    const double a = uni(s, -pi, pi), b = uni(s, -pi, pi), d = hypot(q.p1[0], q.p1[1]);
+    q.t0[0] = cos(a); q.t0[1] = sin(a);
+    q.t1[0] = cos(b); q.t1[1] = sin(b);
+    q.sigma = uni(s, -10, 40) / (d * d);
+    q.length = d * uni(s, 1.05, 3.0);
+    return q;
+}
+
+/* time of all solutions of q in the mode; *count += their number */
+static double solve(const problem *q, int mode, size_t *count, int *fail)
+{
+    const double p0[2] = {0, 0};
+    el_hermite_options o;
+    el_hermite_options_defaults(&o);
+    o.mode = mode;
+    o.sigma = q->sigma;
+    o.length = q->length;
+    el_hermite_result r;
+    const double t0 = now_us();
+    const int rc = el_hermite_solve(p0, q->t0, q->p1, q->t1, &o, &r);
+    const double t = now_us() - t0;
+    if (rc) { ++*fail; return t; }
+    *count += r.count;
+    el_hermite_result_free(&r);
+    return t;
 }
 
 int main(void)
 {
-    run(EL_HERMITE_TENSION, 10000, "hermite_tension_c");
-    run(EL_HERMITE_LENGTH, 200, "hermite_length_c");
+    enum { NT = 10000, NL = 1000 };
+    double *t = malloc(sizeof(double) * NT), *tl = malloc(sizeof(double) * NL);
+    if (!t || !tl) return 1;
+    unsigned long long s = 2024;
+    size_t nsol = 0, nsl = 0, nst = 0;
+    int fail = 0;
+    for (int i = 0; i < NT; i++) {
+        const problem q = draw(&s);
+        t[i] = solve(&q, EL_HERMITE_TENSION, &nsol, &fail);
+    }
+    qsort(t, NT, sizeof *t, cmp);
+    printf("{\"bench\": \"hermite_tension_c\", \"problems\": %d, \"median_us\": %.1f, \"p90_us\": %.1f, "
+           "\"mean_solutions\": %.2f, \"failures\": %d, \"readme\": \"all Hermite solutions of one problem, by tension\", "
+           "\"value\": \"%.0f us (%.1f solutions on average)\"}\n",
+           NT, t[NT / 2], t[(NT * 9) / 10], (double)nsol / NT, fail, t[NT / 2], (double)nsol / NT);
+    /* length against tension on the same problems, alternately */
+    s = 7;
+    fail = 0;
+    for (int i = 0; i < NL; i++) {
+        const problem q = draw(&s);
+        t[i] = solve(&q, EL_HERMITE_TENSION, &nst, &fail);
+        tl[i] = solve(&q, EL_HERMITE_LENGTH, &nsl, &fail);
+    }
+    qsort(t, NL, sizeof *t, cmp);
+    qsort(tl, NL, sizeof *tl, cmp);
+    const double ratio = tl[NL / 2] / t[NL / 2];
+    printf("{\"bench\": \"hermite_length_c\", \"problems\": %d, \"median_us\": %.1f, \"p90_us\": %.1f, "
+           "\"mean_solutions\": %.2f, \"tension_median_us\": %.1f, \"ratio_to_tension\": %.2f, \"target\": 4, "
+           "\"failures\": %d, \"readme\": \"all Hermite solutions by length (the same problems by tension)\", "
+           "\"value\": \"%.0f us (%.1f solutions); %.1fx the by-tension solve\"}\n",
+           NL, tl[NL / 2], tl[(NL * 9) / 10], (double)nsl / NL, t[NL / 2], ratio, fail, tl[NL / 2],
+           (double)nsl / NL, ratio);
+    free(t);
+    free(tl);
     return 0;
 }

@@ -513,10 +513,10 @@ typedef struct el_hermite_options {
     int mode;              /* EL_HERMITE_TENSION (default) or EL_HERMITE_LENGTH */
     double sigma;          /* tension, 1/length^2 (tension mode); default 0 (pure bending) */
     double length;         /* prescribed arc length > 0 (length mode); default 0 (unset) */
-    double tol;            /* accepted end residual: position / |p1-p0| and tangent angle (rad); default 1e-10 */
+    double tol;            /* accepted end residual: position / |p1-p0| and tangent angle (rad), > 0; default 1e-10 */
     int samples;           /* bracketing samples over the whole search interval (each subinterval gets its share + 2, then refinement), 4..1000; default 12 */
-    int grid;              /* length mode: number of sigma lines of the search, 8..2000; default 72 */
-    size_t max_solutions;  /* at most this many solutions are kept (lowest energy); default 64 */
+    int grid;              /* length mode: sigma lines whose tension solutions start the tracing, 1..256; default 6 */
+    size_t max_solutions;  /* at most this many solutions are kept (lowest energy), >= 1; default 64 */
 } el_hermite_options;
 
 /*
@@ -539,13 +539,19 @@ typedef struct el_hermite_solution {
     double residual;       /* end-condition error, see above */
 } el_hermite_solution;
 
-/* Solutions sorted by increasing energy; released by el_hermite_result_free. */
+/* Solutions sorted by increasing energy; released by el_hermite_result_free.
+ * unrepresentable: curves that exist (found and exact in the solver's variables) but
+ * that no el_smooth_params meets to opt->tol, so they are not in solutions: they lie so
+ * close to the separatrix (|k| within ~1e-6 of 1, common for sigma |p1-p0|^2 above
+ * ~200) that one ulp of the double k moves the end by more than tol (see
+ * el_hermite_solve). A larger tol returns them, with their residual. */
 typedef struct el_hermite_result {
     size_t count;
     el_hermite_solution *solutions; /* count entries, library-owned */
+    size_t unrepresentable;
 } el_hermite_result;
 
-/* Defaults: tension mode, sigma = 0, tol 1e-10, samples 12, grid 72, max_solutions 64. */
+/* Defaults: tension mode, sigma = 0, tol 1e-10, samples 12, grid 6, max_solutions 64. */
 void el_hermite_options_defaults(el_hermite_options *opt);
 
 /*
@@ -555,9 +561,14 @@ void el_hermite_options_defaults(el_hermite_options *opt);
  * |p1 - p0| = 1), the three cases of Theorem 6, the kappa_m bound of Theorem 9
  * (computed for every sigma), subintervals split at the real roots of (40),
  * at the special values (45) where the objective is singular and at the ends of
- * (18) and (44), bracketing and Brent's method on each. Length mode follows the tension solutions along
- * sigma (all tension solutions on grid lines sigma_j, then Newton on (kappa0, sigma)). A count of 0 with EL_OK
- * means no such curve exists (e.g. sigma very negative).
+ * (18) and (44), bracketing and Brent's method on each. Length mode: the tension
+ * solutions form curves in the plane of the unknown and sigma; they are found on
+ * opt->grid sigma lines and followed by continuation with the analytic gradient, and
+ * the points of length L are solved for where the length crosses L (hermite_length.c).
+ * It can miss a curve of solutions that crosses none of the grid lines (a pair born
+ * and ending between two lines); on 2 x 1000 random problems (L between 1.05 and 3
+ * |p1 - p0|) it found every solution the former 72-line search found, and 636 more.
+ * A count of 0 with EL_OK means no such curve exists (e.g. sigma very negative).
  * Completeness: the bracketing samples each subinterval, then bisects where the
  * samples leave room for two zeros of a convex objective (seed 004 §5 observes
  * convexity between two zeros), and checks local minima of |f| by minimisation;
@@ -567,25 +578,40 @@ void el_hermite_options_defaults(el_hermite_options *opt);
  * defaults were tuned on, 2 of 25 250 on another 10 000; with sigma |p1-p0|^2 in
  * [0, 5]: 18 of 26 810 and 22 of 26 770. Raise opt->samples where completeness
  * matters more than time).
- * Every solution is verified with el_smooth_eval and kept only if its residual
+ * Every solution is verified with el_smooth_eval and returned only if its residual
  * is <= opt->tol (after a Newton polish on the parameters when it misses by a
  * little, then a second one with k held at each of its nearest doubles).
- * Conditioning limit: very close to the separatrix (||k| - 1| < ~1e-7, common
- * for sigma |p1-p0|^2 > ~100) |d curve(L) / dk| is 1e6..1e8, so one ulp of the
- * stored k moves the end by 1e-10..1e-8 (el_smooth_eval itself is good to
- * ~1e-13 there); the other parameters compensate down to ~1e-11..5e-10 with the
- * curve's tension 2 mu (2k^2 - 1) kept exact. At tol = 1e-10, for sigma |p1-p0|^2
- * in [60, 600] about 8% of the solutions (those whose floor exceeds 1e-10) are
- * dropped; a larger tol returns them.
- * Length mode costs about 70 tension solves (tens of ms); it also finds fewer
- * of the solutions with sigma |p1-p0|^2 > ~80 (~2% missed against a 300-line search).
+ * High tension: near the separatrix (|F| = sigma, |k| = 1) the solutions lie
+ * exponentially close to it (1 - |k| ~ exp(-sqrt(2 sigma) L') for the length L'
+ * spent near the saddle): the solver searches there in ln(|F| - sigma), where they
+ * are well conditioned, and finds them all (tested against a dense scan for
+ * sigma |p1-p0|^2 up to 1e4). But el_smooth_params stores the modulus as k, and one
+ * ulp of k moves the end by about 1e-16 |d curve(L)/dk|, which grows like
+ * 1 / (1 - |k|): beyond what the polish can compensate (from sigma |p1-p0|^2 ~ 200:
+ * ~60% of the solutions at 600, all above ~3000, where 1 - |k| is below 1e-16) such
+ * a curve is not returned but counted in res->unrepresentable. A larger tol returns
+ * those it can hold to that tol, with their residual.
  * A circular arc (sigma = kappa^2, where the parametrisation needs |k| = inf) is
  * returned with k = 1e4 (counter-clockwise) or -1e4 (clockwise), accurate to ~1e-8
  * only: it appears when opt->tol allows.
- * res is overwritten (not freed first). EL_EINVAL leaves res untouched; other
- * errors leave it empty (count 0).
- * Errors: EL_EINVAL (NULL, non-finite, zero tangent, bad options), EL_EDOM
- * (p0 = p1, or length < |p1 - p0| in length mode), EL_ENOMEM, EL_EINTERNAL.
+ * Range: coordinates and |p1 - p0| at most 1e100, |p1 - p0| at least 1e-100 (the
+ * curvature scales as 1/|p1 - p0|, mu as its square); sigma |p1 - p0|^2 at most 1e5
+ * (above, every solution lies closer to the separatrix than the search reaches;
+ * none would be representable, see above); any sigma below (very negative: no curve,
+ * count 0). Length mode searches the same range of tension: its solutions of higher
+ * tension (possible only for length < ~1.06 |p1 - p0|) are not found.
+ * Work, bounded by the options: tension mode evaluates the objective about
+ * samples + 14 times per piece between split points (at most 65 pieces per branch,
+ * two separatrix pieces of 11 samples at most per piece), plus Brent's iterations
+ * (at most 200) per sign change; length mode solves grid tension problems and at
+ * most 1e5 evaluations for the tracing (EL_EMAXITER beyond).
+ * res is overwritten (not freed first). EL_EINVAL leaves res untouched; EL_EMAXITER
+ * returns the solutions found; other errors leave it empty (count 0).
+ * Errors: EL_EINVAL (NULL, non-finite, zero tangent, mode not one of the two, tol not
+ * > 0, samples outside 4..1000, grid outside 1..256, max_solutions 0, length not > 0
+ * in length mode), EL_EDOM (p0 = p1, outside the range above, or length < |p1 - p0|
+ * in length mode), EL_EMAXITER (length mode: the tracing's work limit reached),
+ * EL_ENOMEM, EL_EINTERNAL (a bracket of the kappa_m bound that should not fail did).
  */
 int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
                      const double t1[2], const el_hermite_options *opt,
@@ -606,7 +632,7 @@ void el_hermite_result_free(el_hermite_result *res);
  * (17) reaches kappa_m^2 = 2 sigma there (0: kappa1 = (-V1 + sqrt)/P2,
  * 1: (-V1 - sqrt)/P2); special: the values (45), kappa0^2 = sigma and
  * kappa0' = 0, sorted. Errors: EL_EINVAL (NULL, non-finite, |P| != 1, |V| != 1
- * to 1e-9), EL_EINTERNAL.
+ * to 1e-9), EL_EDOM (sigma > 1e5, the range of el_hermite_solve), EL_ENOMEM, EL_EINTERNAL.
  */
 typedef struct el_hermite_analysis {
     int hcase;

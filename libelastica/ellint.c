@@ -8,7 +8,7 @@
  *
  * Written by hand, not taken from GSL, for speed and accuracy: they are the inner
  * loop of every Jacobi evaluation (jacobi.c) and of every Hermite objective
- * evaluation (hermite.c); gsl_sf_ellint_RF_e / _RD_e (argument checks, error
+ * evaluation (hermite_objective.c); gsl_sf_ellint_RF_e / _RD_e (argument checks, error
  * estimates, one duplication loop each) cost about five times as much, and GSL's
  * Kcomp / Ecomp take only k and form 1 - k^2 themselves, which loses digits near
  * k = 1 (here k'^2 comes in exactly). tests/c/test_ellint.c checks them against GSL.

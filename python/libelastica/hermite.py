@@ -2,26 +2,84 @@
 point with a tangent to a point with a tangent, by tension or by length."""
 from __future__ import annotations
 
+import struct
+import threading
+import warnings
 from typing import List, Optional
 
 import numpy as np
 
 from ._ffi import as_vector, check, ffi, lib
-from .core import SmoothElastica
+from .core import SMOOTH_PARAMS, SmoothElastica
 
-__all__ = ["hermite", "hermite_analyse"]
+__all__ = ["hermite", "hermite_analyse", "HermiteSolutions"]
 
 
-def _vec2(v, name: str) -> np.ndarray:
+class HermiteSolutions(list):
+    """The solutions of :func:`hermite` (a list of :class:`SmoothElastica`), with
+    ``unrepresentable``: the number of curves that exist but that no set of smooth
+    parameters meets to ``tol`` (they lie too close to the separatrix, |k| = 1, for a
+    double k: see the header's el_hermite_solve); a larger ``tol`` returns them."""
+    unrepresentable: int = 0
+
+
+def _vec2(v, name: str):
+    """Two finite floats: plain Python floats directly, anything else through
+    as_vector (the binding's one validation path)."""
+    if type(v) in (tuple, list) and len(v) == 2 and type(v[0]) is float and type(v[1]) is float:
+        x, y = v
+        if x - x == 0.0 and y - y == 0.0:            # finite (inf - inf and NaN are NaN)
+            return x, y
     a = as_vector(v, name)
     if a.shape != (2,) or not np.all(np.isfinite(a)):
         raise ValueError(f"{name} must be two finite numbers, got {v!r}")
-    return a
+    return float(a[0]), float(a[1])
+
+
+# Per-thread C buffers, allocated once (two threads may solve at once).
+_local = threading.local()
+
+
+def _buffers():
+    b = getattr(_local, "buffers", None)
+    if b is None:
+        opt = ffi.new("el_hermite_options *")
+        lib.el_hermite_options_defaults(opt)
+        b = _local.buffers = (opt, ffi.new("el_hermite_result *"), ffi.new("double[8]"))
+    return b
+
+
+# el_hermite_solution unpacked in one go by a struct format built from cffi's layout
+def _solution_struct():
+    curve = ffi.offsetof("el_hermite_solution", "curve")
+    fields = [(curve + ffi.offsetof("el_smooth_params", n), "d") for n in SMOOTH_PARAMS]
+    fields += [(ffi.offsetof("el_hermite_solution", n), "i" if n == "has_inflection" else "d")
+               for n in ("length", "sigma", "energy", "has_inflection", "kappa0", "kappa1", "residual")]
+    fmt, pos = "=", 0
+    for off, code in sorted(fields):
+        fmt += f"{off - pos}x{code}" if off > pos else code
+        pos = off + struct.calcsize("=" + code)
+    size = ffi.sizeof("el_hermite_solution")
+    return struct.Struct(fmt + (f"{size - pos}x" if size > pos else "")), size
+
+
+_SOL_STRUCT, _SOL_SIZE = _solution_struct()
+
+
+def _solution(row) -> SmoothElastica:
+    """A SmoothElastica from one unpacked el_hermite_solution; the library returns
+    valid parameters, so the constructor's checks are skipped."""
+    x0, y0, phi, mu, k, q, length, _, sigma, energy, infl, kappa0, kappa1, residual = row
+    e = SmoothElastica.__new__(SmoothElastica)
+    e.__dict__.update(x0=x0, y0=y0, phi=phi, mu=mu, k=k, q=q, length=length, sigma=sigma,
+                      energy_value=energy, has_inflection=bool(infl), kappa0=kappa0,
+                      kappa1=kappa1, residual=residual)
+    return e
 
 
 def hermite(p0, t0, p1, t1, tension: Optional[float] = None,
             length: Optional[float] = None, *, tol: float = 1e-10,
-            samples: int = 12, grid: int = 72, max_solutions: int = 64) -> List[SmoothElastica]:
+            samples: int = 12, grid: int = 6, max_solutions: int = 64) -> List[SmoothElastica]:
     """All elastic curves (2 kappa'' + kappa^3 - sigma kappa = 0) from ``p0`` with
     tangent direction ``t0`` to ``p1`` with tangent direction ``t1`` whose length is
     at most one period of the curvature, sorted by bending energy.
@@ -29,7 +87,8 @@ def hermite(p0, t0, p1, t1, tension: Optional[float] = None,
     Give exactly one of ``tension`` (sigma, 1/length^2; any real, negative is
     compression) or ``length`` (the arc length; sigma is then computed).
 
-    Returns a list of :class:`SmoothElastica`; each carries extra attributes:
+    Returns a :class:`HermiteSolutions` list of :class:`SmoothElastica`; each carries
+    extra attributes:
 
     - ``sigma``: the tension; ``energy_value``: integral of kappa^2 ds;
     - ``has_inflection``: whether the curvature changes sign;
@@ -37,44 +96,42 @@ def hermite(p0, t0, p1, t1, tension: Optional[float] = None,
 
     Every curve runs from ``p0`` (s = 0, tangent ``t0``) to ``p1`` (s = length,
     tangent ``t1``). The sign of ``k`` is the orientation: a loop (``|k| > 1``)
-    turns counter-clockwise for ``k > 1`` and clockwise for ``k < -1``.
+    turns counter-clockwise for ``k > 1`` and clockwise for ``k < -1``. Curves that
+    exist but cannot be represented to ``tol`` (high tension, next to the
+    separatrix) are counted in the list's ``unrepresentable``, with a RuntimeWarning.
 
     Raises ``ValueError`` (an :class:`ElasticaError`) for bad input, and
     :class:`DomainError` when ``p0 == p1`` or ``length < |p1 - p0|``.
     """
-    a0, d0, a1, d1 = (_vec2(p0, "p0"), _vec2(t0, "t0"), _vec2(p1, "p1"), _vec2(t1, "t1"))
     if (tension is None) == (length is None):
         raise ValueError("hermite: give exactly one of tension= or length=")
-    opt = ffi.new("el_hermite_options *")
-    lib.el_hermite_options_defaults(opt)
+    opt, res, buf = _buffers()
+    buf[0:8] = _vec2(p0, "p0") + _vec2(t0, "t0") + _vec2(p1, "p1") + _vec2(t1, "t1")
     if tension is not None:
         opt.mode = lib.EL_HERMITE_TENSION
         opt.sigma = float(tension)
     else:
         opt.mode = lib.EL_HERMITE_LENGTH
         opt.length = float(length)
-    opt.tol = float(tol)
-    opt.samples = int(samples)
-    opt.grid = int(grid)
-    opt.max_solutions = int(max_solutions)
-    res = ffi.new("el_hermite_result *")
-    buf = [ffi.new("double[2]", list(v)) for v in (a0, d0, a1, d1)]
-    check(lib.el_hermite_solve(buf[0], buf[1], buf[2], buf[3], opt, res), "hermite")
-    out = []
+    # the options that rarely change are set only when they do
+    rest = (float(tol), int(samples), int(grid), int(max_solutions))
+    if rest != getattr(_local, "rest", None):
+        opt.tol, opt.samples, opt.grid, opt.max_solutions = rest
+        _local.rest = rest
+    check(lib.el_hermite_solve(buf, buf + 2, buf + 4, buf + 6, opt, res), "hermite")
+    out = HermiteSolutions()
     try:
-        for i in range(res.count):
-            s = res.solutions[i]
-            c = s.curve
-            e = SmoothElastica(x0=c.x0, y0=c.y0, phi=c.phi, mu=c.mu, k=c.k, q=c.q, length=c.length)
-            e.sigma = float(s.sigma)
-            e.energy_value = float(s.energy)
-            e.has_inflection = bool(s.has_inflection)
-            e.kappa0 = float(s.kappa0)
-            e.kappa1 = float(s.kappa1)
-            e.residual = float(s.residual)
-            out.append(e)
+        n = res.count
+        if n:
+            raw = ffi.buffer(res.solutions, n * _SOL_SIZE)
+            out.extend(_solution(r) for r in _SOL_STRUCT.iter_unpack(raw))
+        out.unrepresentable = int(res.unrepresentable)
     finally:
         lib.el_hermite_result_free(res)
+    if out.unrepresentable:
+        warnings.warn(f"hermite: {out.unrepresentable} more curve(s) exist that no smooth "
+                      f"parameters meet to tol={tol:g} (too close to the separatrix |k| = 1); "
+                      "a larger tol returns them", RuntimeWarning, stacklevel=2)
     return out
 
 

@@ -1,0 +1,89 @@
+/*
+ * Internal declarations shared by the Hermite solver's files (seed 004):
+ *   hermite_objective.c  the normalised problem: curvature data (Theorem 6), the
+ *                        curve through two curvature states (Theorem 7) and the objective;
+ *   hermite_tension.c    all solutions for a given tension (seed 004 §4) and the analysis;
+ *   hermite_length.c     all solutions for a given length;
+ *   hermite.c            the public entry points: normalisation, world-frame solutions.
+ */
+#ifndef EL_HERMITE_INTERNAL_H
+#define EL_HERMITE_INTERNAL_H
+
+#include "internal.h"
+#include <stddef.h>
+
+/* 4 sqrt(2) K(1/sqrt 2): the period times kappa_m of the sigma = 0 elastica. */
+#define C0_PERIOD 10.4882572784299
+
+/* The normalised problem: x(0) = 0, x'(0) = (0, 1), end point P (|P| = 1), end tangent V. */
+typedef struct hprob {
+    double P1, P2, V1, V2, sigma;
+    int hcase;        /* 1, 2, 3 (Theorem 6) */
+    double Lmin;      /* lower bound of the length: 1 (tension mode) or L (length mode) */
+    double B;         /* kappa_m bound (Theorem 9); < 0: no solution */
+} hprob;
+
+/* Curvature data at both ends and the values derived from it. */
+typedef struct hstate {
+    double k0, k0p, k1, k1p;   /* kappa0, kappa0', kappa1, kappa1' */
+    int infl;                  /* inflectional (k < 1) */
+    double s0, c0, s1, c1;     /* inflectional: sn, cn of u at both ends */
+    int big;                   /* inflectional: u(L) - u(0) exceeds half a period (2 Kc) */
+    double L, E;               /* length, energy */
+    double f;                  /* objective */
+    int has_sep;               /* sep = |F| - sigma given exactly (the separatrix chart) */
+    double sep;
+} hstate;
+
+/* The kind of curve a curvature state starts (Theorem 7), |F| into *Fn.
+ * CLASS_NONE: none the objective covers: F = 0 (the circle kappa_m^2 = sigma,
+ * singular, (45)), kappa_m = 0 (straight, handled apart), or non-inflectional with
+ * kappa0 kappa1 <= 0 against (44); CLASS_MIXED: see piece_class. */
+enum { CLASS_NONE, CLASS_INFL, CLASS_NONINFL, CLASS_MIXED };
+
+/* Theorem 6, 7: the curvature data for the unknown x on branch b, the curve they
+ * start, its length, energy and objective (hermite_objective.c). */
+double el__hermite_case3_kappa0(const hprob *pr, int fam);
+int el__hermite_curvdata(const hprob *pr, double x, int b, hstate *st);
+int el__hermite_state_class(const hprob *pr, const hstate *st, double *Fn);
+int el__hermite_shape_eval(const hprob *pr, double qs, hstate *st);
+int el__hermite_full_eval(const hprob *pr, double x, int b, hstate *st);
+void el__hermite_set_case(hprob *pr);
+/* el__hermite_full_eval with the gradient of L, E and f (and sigma, and |F| - sigma)
+ * with respect to the unknown x and sigma on branch b: [0] = d/dx, [1] = d/dsigma;
+ * w: the separatrix chart's replaced coordinate (el__hermite_sep_eval). */
+typedef struct { double L[2], E[2], f[2], s[2], sep[2], w[2]; } hgrad;
+int el__hermite_eval_grad(const hprob *pr, double x, int b, hstate *st, hgrad *g);
+/* The same in a chart (u, v; b) of the curvature data (hermite_objective.c): HCHART_X is
+ * (x, sigma), HCHART_K1 (kappa1, sigma) in case 1, HCHART_C3 (kappa0, kappa0') in case 3;
+ * the gradient is in (u, v); *sigma (may be NULL) gets the state's tension. */
+enum { HCHART_X, HCHART_K1, HCHART_C3 };
+int el__hermite_chart_eval(const hprob *pr, int chart, double u, double v, int b, hstate *st,
+                           hgrad *g, double *sigma);
+/* The separatrix chart of a base chart near a state with |F| = sigma (k = 1): the base
+ * coordinate number fi (0: u, 1: v) is replaced by y = ln(side (|F| - sigma)), side = +1
+ * (inflectional) or -1 (not); other is the base's other coordinate, *w the replaced one
+ * (a starting guess in, the state's value out, by Newton on |F| - sigma = side e^y along
+ * it). The state carries |F| - sigma exactly (hstate.sep), so k'^2 = (|F| - sigma) / (2 |F|)
+ * keeps its relative precision however small: the length depends on ln k', which the base
+ * coordinates alone cannot carry. The gradient is in the base chart's order with y in
+ * place of the replaced coordinate. */
+int el__hermite_sep_eval(const hprob *pr, int base, int fi, int b, int side, double y,
+                         double other, double *w, hstate *st, hgrad *g, double *sigma);
+/* F(mu, k) and D(mu, k) for the amplitude given by its sine S, cosine C and big = (mu > pi) */
+int el__hermite_ell_fd(double S, double C, int big, double k2, double kc2, double qs,
+                       double *F, double *D);
+double el__hermite_wrap_pi(double a);
+
+/* Raw solutions of the normalised problem. */
+typedef struct { double x; int b; double sigma; hstate st; } hroot;
+typedef struct { hroot *v; size_t n, cap; } hrootlist;
+hroot el__hermite_mkroot(double x, int b, double sigma);
+int el__hermite_roots_push(hrootlist *l, const hroot *r);
+
+/* All roots for the tension pr->sigma (hermite_tension.c), for the length Lt
+ * (hermite_length.c): samples per search interval ns, sigma lines ng. */
+int el__hermite_solve_tension(hprob *pr, int ns, hrootlist *out);
+int el__hermite_solve_length(hprob *pr, double Lt, int ng, int ns, hrootlist *out);
+
+#endif

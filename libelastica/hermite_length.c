@@ -1,0 +1,567 @@
+/*
+ * Hermite interpolation for a given length Lt (Euler's strip clamped at both ends).
+ *
+ * For a given tension the solutions are the zeros of the objective f(x; sigma) of
+ * hermite_tension.c on each branch; as sigma varies they form curves C, the zero
+ * set of one function of two unknowns (x, sigma), along which the length L varies.
+ * The length-mode solutions are the points of C with L = Lt. C is found on a few
+ * sigma lines (every tension solution there: the seeds) and followed from each seed
+ * in both directions by pseudo-arclength continuation with the analytic gradient of
+ * f and L (hermite_objective.c): a predictor along the tangent of C, a corrector of
+ * Newton steps along the gradient of f. Where L - Lt changes sign between two points
+ * of the trace, Newton on (f, L - Lt) gives the solution. A trace ends outside the
+ * sigma range of the solutions (sigma_range), where C ends (a state without a curve,
+ * a singular one) or where it closes on itself; a seed a trace passes is not traced
+ * again. The coordinates are asinh of the chart's (hermite_objective.c): (x, sigma),
+ * in case 1 (kappa1, sigma) where the two branches of (17) meet (the x chart folds
+ * there), and in case 3 (kappa0, kappa0').
+ *
+ * What this misses: a piece of C that crosses no seed line (a closed curve, or one
+ * whose both ends are singular states, between two lines), and a solution where C
+ * touches L = Lt without crossing it.
+ */
+#include "hermite_internal.h"
+#include <stdlib.h>
+#include <string.h>
+
+/* sigma range of length-mode solutions (normalised |P| = 1, length Lt > 1):
+ * sigma >= -(C0/Lt)^2 (Theorem 9 bound, sigma <= 0 case); and since
+ * |P| >= <P, -F/|F|> = L - 2 int dn^2(u) ds >= L - 2 I / sqrt(mu) with I <= 2 pi the
+ * integral of dn^2 over one period, mu <= (4 pi / (Lt - 1))^2 and
+ * sigma = 2 mu (2k^2 - 1) <= 2 mu for k <= 1; for k > 1 likewise with
+ * nu = k^2 mu <= (4 / (Lt - 1))^2 and sigma <= 4 nu. */
+static void sigma_range(double Lt, double *lo, double *hi)
+{
+    const double c = C0_PERIOD / Lt, e = Lt - 1.0;
+    *lo = -c * c;
+    *hi = fmax(32.0 * M_PI * M_PI / (e * e), 64.0 / (e * e));
+}
+
+/* The tension the search reaches (header: the same as tension mode's range; beyond it
+ * the solutions lie closer to the separatrix than the separatrix chart reaches). */
+#define SIGMA_MAX 1e5
+/* the work limit: objective evaluations of the tracing (the bench problems need at
+ * most ~5000; beyond it the solutions found so far are returned with EL_EMAXITER) */
+#define MAX_EVALS 100000
+
+/* A point of C in a chart (u, v; b): tracer coordinates (U, V) = (asinh u, asinh v),
+ * t = asinh(sigma), the state, and the gradients of f, L and t in (U, V). In the
+ * separatrix chart (chart = CHART_SEP over the chart base, on the side side of k = 1)
+ * the base coordinate number fi is replaced by y / SEP_SCALE, y = ln|(|F| - sigma)|,
+ * and w holds its value. */
+#define CHART_SEP 3
+#define SEP_SCALE 8.0
+typedef struct {
+    int chart, base, fi, side, b;
+    double U, V, w, sigma, t;
+    hstate st;
+    double fg[2], Lg[2], tg[2], sg[2];   /* sg: gradient of |F| - sigma */
+    double wg[2];                        /* separatrix chart: gradient of w */
+} cpt;
+
+typedef struct {
+    const hprob *pr;
+    double Lt, tlo, thi;
+    cpt *seed;
+    int nseed;
+    char *visited;
+    long evals, max_evals;
+    hrootlist *out;
+} tracer;
+
+/* Evaluate the chart of `like` (chart, base, side, b; w as the separatrix chart's
+ * starting guess) at (U, V) into *p. */
+static int cpt_eval(tracer *T, const cpt *like, double U, double V, cpt *p)
+{
+    hgrad g;
+    hstate st;
+    double sigma, w = like->w, c[2];
+    if (++T->evals > T->max_evals) return EL_EMAXITER;
+    int rc;
+    /* cosh from sinh (d asinh(u)/du = 1 / sqrt(1 + u^2)) */
+    if (like->chart == CHART_SEP) {
+        const int fi = like->fi;
+        /* the replaced coordinate extrapolated from like's as the starting guess */
+        if (isfinite(like->wg[0] + like->wg[1]))
+            w += like->wg[0] * (U - like->U) + like->wg[1] * (V - like->V);
+        const double y = SEP_SCALE * (fi ? V : U), other = sinh(fi ? U : V);
+        rc = el__hermite_sep_eval(T->pr, like->base, fi, like->b, like->side, y, other, &w, &st, &g, &sigma);
+        c[fi] = SEP_SCALE;
+        c[1 - fi] = sqrt(1.0 + other * other);
+    } else {
+        const double u = sinh(U), v = sinh(V);
+        rc = el__hermite_chart_eval(T->pr, like->chart, u, v, like->b, &st, &g, &sigma);
+        c[0] = sqrt(1.0 + u * u);
+        c[1] = sqrt(1.0 + v * v);
+    }
+    if (rc) return rc;
+    const double it = 1.0 / sqrt(1.0 + sigma * sigma);
+    p->chart = like->chart;
+    p->base = like->base;
+    p->fi = like->fi;
+    p->side = like->side;
+    p->sg[0] = g.sep[0] * c[0];
+    p->sg[1] = g.sep[1] * c[1];
+    p->wg[0] = like->chart == CHART_SEP ? g.w[0] * c[0] : NAN;
+    p->wg[1] = like->chart == CHART_SEP ? g.w[1] * c[1] : NAN;
+    p->b = like->b;
+    p->U = U;
+    p->V = V;
+    p->w = w;
+    p->sigma = sigma;
+    /* the charts X and K1 have t = asinh(sigma) as their coordinate V */
+    p->t = (like->chart == HCHART_X || like->chart == HCHART_K1) ? V
+           : like->chart == CHART_SEP && like->fi == 0 && like->base != HCHART_C3 ? V : asinh(sigma);
+    p->st = st;
+    for (int i = 0; i < 2; i++) {
+        p->fg[i] = g.f[i] * c[i];
+        p->Lg[i] = g.L[i] * c[i];
+        p->tg[i] = g.s[i] * c[i] * it;
+    }
+    return isfinite(p->fg[0] + p->fg[1] + p->Lg[0] + p->Lg[1]) ? EL_OK : EL_EDOM;
+}
+
+/* A chart without the separatrix replacement */
+static cpt chart_spec(int chart, int b)
+{
+    cpt c;
+    memset(&c, 0, sizeof c);
+    c.chart = c.base = chart;
+    c.b = b;
+    c.wg[0] = c.wg[1] = NAN;
+    return c;
+}
+
+/* |F| - sigma of a point, and |F| + sigma (its scale) */
+static double sep_dist(const cpt *p, double *scale)
+{
+    const double F1 = -2.0 * p->st.k0p, F2 = p->st.k0 * p->st.k0 - p->sigma, Fn = hypot(F1, F2);
+    *scale = Fn + fabs(p->sigma);
+    return p->st.has_sep ? p->st.sep : Fn - p->sigma;
+}
+
+/* Coordinate number i of a state in the chart `base` (raw, not asinh) */
+static double base_coord(const hprob *pr, int base, int i, const hstate *st, double sigma)
+{
+    if (base == HCHART_C3) return i ? st->k0p : st->k0;
+    if (i) return sigma;
+    return base == HCHART_K1 ? st->k1 : pr->hcase == 3 ? st->k0p : st->k0;
+}
+
+/* Newton steps along the gradient of f to the curve f = 0 (|f| below tol, or at a
+ * distance |f| / |grad f| below 1e-13 where f is steep); at most maxit evaluations,
+ * the count into *its. */
+static int correct(tracer *T, cpt *q, double tol, int maxit, int *its)
+{
+    for (*its = 0;; ++*its) {
+        const double g2 = q->fg[0] * q->fg[0] + q->fg[1] * q->fg[1], af = fabs(q->st.f);
+        if (!(g2 > 0.0)) return EL_EDOM;
+        if (af <= tol || af <= 1e-13 * sqrt(g2)) return EL_OK;
+        if (*its >= maxit) return EL_ENOCONV;
+        const double c = q->st.f / g2;
+        cpt n;
+        const int rc = cpt_eval(T, q, q->U - c * q->fg[0], q->V - c * q->fg[1], &n);
+        if (rc) return rc;
+        *q = n;
+    }
+}
+
+/* The unit tangent of C at p, oriented along (d0, d1). */
+static void tangent(const cpt *p, double d0, double d1, double tau[2])
+{
+    const double n = hypot(p->fg[0], p->fg[1]);
+    tau[0] = -p->fg[1] / n;
+    tau[1] = p->fg[0] / n;
+    if (tau[0] * d0 + tau[1] * d1 < 0.0) { tau[0] = -tau[0]; tau[1] = -tau[1]; }
+}
+
+/* The point re-expressed in the better conditioned chart (same state; EL_OK with *p
+ * unchanged when it is already):
+ * - near the separatrix (|F| - sigma below 1e-3 of |F| + sigma) where the objective
+ *   depends on ln(|F| - sigma) (the curve passes near the saddle; |df/dy| >= 1e-6),
+ *   the separatrix chart, there C follows the separatrix exponentially closely; back
+ *   to the base chart above 1e-2, or where that dependence fades (C crosses k = 1);
+ * - in case 1, K1 near the fold of X where the branches of (17) meet
+ *   (|d asinh kappa1 / d asinh x| along a sigma line above 4; back to X below 1/4):
+ *   (18) = a2 x^2 + a1 x + a0 = W^2, W = P2 kappa1 + V1, so dkappa1/dx = (2 a2 x + a1) / (2 P2 W). */
+/* *p re-expressed in the chart of spec at (U, V) if that works (else unchanged) */
+static int switch_to(tracer *T, const cpt *spec, double U, double V, cpt *p)
+{
+    cpt q;
+    const int rc = cpt_eval(T, spec, U, V, &q);
+    if (rc == EL_EMAXITER) return rc;
+    if (!rc) *p = q;
+    return EL_OK;
+}
+
+static int rechart(tracer *T, cpt *p)
+{
+    const hprob *pr = T->pr;
+    double scale;
+    const double d = sep_dist(p, &scale);
+    if (p->chart == CHART_SEP) {
+        const int fi = p->fi;
+        const double fy = p->fg[fi] / SEP_SCALE;
+        cpt base = chart_spec(p->base, p->b);
+        double c[2];
+        for (int i = 0; i < 2; i++) c[i] = asinh(base_coord(pr, p->base, i, &p->st, p->sigma));
+        if (!(fabs(d) <= 1e-2 * scale && fabs(fy) >= 1e-7)) return switch_to(T, &base, c[0], c[1], p);
+        /* the replaced coordinate: the one |F| - sigma varies more along (the separatrix
+         * curve is a graph over the other there), checked in the base chart's gradient */
+        cpt b2;
+        int rc = cpt_eval(T, &base, c[0], c[1], &b2);
+        if (rc) return rc == EL_EMAXITER ? rc : EL_OK;
+        const int nfi = fabs(b2.sg[1]) > 2.0 * fabs(b2.sg[0]) ? 1 : fabs(b2.sg[0]) > 2.0 * fabs(b2.sg[1]) ? 0 : fi;
+        if (nfi == fi) return EL_OK;
+        cpt sep = *p;
+        sep.fi = nfi;
+        sep.w = base_coord(pr, p->base, nfi, &p->st, p->sigma);
+        sep.wg[0] = sep.wg[1] = NAN;
+        const double Y = log(fabs(d)) / SEP_SCALE;
+        rc = cpt_eval(T, &sep, nfi ? c[0] : Y, nfi ? Y : c[1], &b2);
+        if (rc == EL_EMAXITER) return rc;
+        if (!rc) *p = b2;
+        return EL_OK;
+    }
+    if (p->sigma > 0.0 && fabs(d) < 1e-3 * scale && d != 0.0) {
+        cpt sep = *p, q;
+        const int fi = fabs(p->sg[1]) > fabs(p->sg[0]);
+        sep.chart = CHART_SEP;
+        sep.base = p->chart;
+        sep.fi = fi;
+        sep.side = d > 0.0 ? 1 : -1;
+        sep.w = base_coord(pr, p->chart, fi, &p->st, p->sigma);
+        sep.wg[0] = sep.wg[1] = NAN;
+        const double Y = log(fabs(d)) / SEP_SCALE;
+        int rc = cpt_eval(T, &sep, fi ? p->U : Y, fi ? Y : p->V, &q);
+        if (rc == EL_EMAXITER) return rc;
+        if (!rc && fabs(q.fg[fi] / SEP_SCALE) >= 1e-6) { *p = q; return EL_OK; }
+    }
+    if (pr->hcase != 1) return EL_OK;
+    const double x = p->st.k0, k1 = p->st.k1, W = pr->P2 * k1 + pr->V1;
+    const double dd = 2.0 * (pr->P2 * pr->V1 * pr->P1 + pr->P2 * pr->P2 * pr->V2) * x + 2.0 * pr->P2 * pr->V1;
+    const double r = fabs(dd / (2.0 * pr->P2 * W)) * sqrt((1.0 + x * x) / (1.0 + k1 * k1));
+    if (p->chart == HCHART_X && r > 4.0) {
+        const cpt c = chart_spec(HCHART_K1, dd >= 0.0 ? 0 : 1);
+        return switch_to(T, &c, asinh(k1), p->V, p);
+    }
+    if (p->chart == HCHART_K1 && r < 0.25) {
+        const cpt c = chart_spec(HCHART_X, W >= 0.0 ? 0 : 1);
+        return switch_to(T, &c, asinh(x), p->V, p);
+    }
+    return EL_OK;
+}
+
+/* The point's coordinates in the chart of q (for orienting q's tangent). */
+static void coords_in(const hprob *pr, const cpt *p, const cpt *q, double *U, double *V)
+{
+    *U = p->U;
+    *V = p->V;
+    if (p->chart == q->chart && p->base == q->base && p->fi == q->fi) return;
+    double scale, c[2];
+    for (int i = 0; i < 2; i++) c[i] = asinh(base_coord(pr, q->base, i, &p->st, p->sigma));
+    if (q->chart == CHART_SEP) c[q->fi] = log(fabs(sep_dist(p, &scale)) + 1e-300) / SEP_SCALE;
+    *U = c[0];
+    *V = c[1];
+}
+
+/* Newton on (f, G - target) (G: L, or t when which = 1) from the evaluated point *r,
+ * steps at most span long and damped to decrease |f| + |G - target|. */
+static int newton2(tracer *T, int which, double target, double span, cpt *r)
+{
+    const double scale = fmax(1.0, fabs(target));
+    for (int it = 0; it < 12; it++) {
+        const double *G = which ? r->tg : r->Lg;
+        const double res0 = r->st.f, res1 = (which ? r->t : r->st.L) - target;
+        if (fabs(res0) <= 1e-14 && fabs(res1) <= 1e-14 * scale) return EL_OK;
+        const double det = r->fg[0] * G[1] - r->fg[1] * G[0];
+        if (!(fabs(det) > 0.0)) return EL_EDOM;
+        double d0 = -(G[1] * res0 - r->fg[1] * res1) / det, d1 = -(-G[0] * res0 + r->fg[0] * res1) / det;
+        const double n = hypot(d0, d1);
+        if (n > span) { d0 *= span / n; d1 *= span / n; }
+        cpt s;
+        int ok = 0;
+        for (int h = 0; h < 6 && !ok; h++, d0 *= 0.5, d1 *= 0.5) {
+            const int rc = cpt_eval(T, r, r->U + d0, r->V + d1, &s);
+            if (rc == EL_EMAXITER) return rc;
+            if (rc) continue;
+            const double r0 = s.st.f, r1 = (which ? s.t : s.st.L) - target;
+            ok = fabs(r0) + fabs(r1) / scale < fabs(res0) + fabs(res1) / scale;
+        }
+        if (!ok) break;
+        *r = s;
+    }
+    return fabs(r->st.f) <= 1e-11 && fabs((which ? r->t : r->st.L) - target) <= 1e-11 * scale
+               ? EL_OK : EL_ENOCONV;
+}
+
+/* The point of the step p -> q of C where G (L, or t when which = 1) is target: Newton
+ * (newton2) from the linear interpolate, or, when p and q lie in different charts or
+ * branches (C passed the fold of (17) within the step), from each end in its own. */
+static int cross(tracer *T, const cpt *p, const cpt *q, int which, double target, cpt *r)
+{
+    const double gp = which ? p->t : p->st.L, gq = which ? q->t : q->st.L;
+    const double w = gp == gq ? 0.5 : (gp - target) / (gp - gq);
+    const double dU = q->U - p->U, dV = q->V - p->V, span = hypot(dU, dV) + 1e-12;
+    const int same = p->chart == q->chart && p->base == q->base && p->fi == q->fi && p->b == q->b && p->side == q->side;
+    if (same) {
+        const int rc = cpt_eval(T, q, p->U + w * dU, p->V + w * dV, r);
+        return rc ? rc : newton2(T, which, target, span, r);
+    }
+    int rc = EL_ENOCONV;
+    for (int e = 0; e < 2 && rc && rc != EL_EMAXITER; e++) {
+        *r = (w < 0.5) == (e == 0) ? *p : *q;
+        rc = newton2(T, which, target, span, r);
+    }
+    return rc;
+}
+
+/* Same point of the curvature-data surface (same tension, kappa0, kappa0'). */
+static int same_hstate(double s1, const hstate *a, double s2, const hstate *b)
+{
+    if (a->has_sep && b->has_sep && !(fabs(a->sep - b->sep) <= 1e-6 * fabs(a->sep))) return 0;
+    return fabs(s1 - s2) <= 1e-9 * (1.0 + fabs(s1)) &&
+           fabs(a->k0 - b->k0) <= 1e-8 * (1.0 + fabs(a->k0)) &&
+           fabs(a->k0p - b->k0p) <= 1e-8 * (1.0 + fabs(a->k0p));
+}
+
+static int same_state(const cpt *a, const cpt *b) { return same_hstate(a->sigma, &a->st, b->sigma, &b->st); }
+
+static int push_solution(tracer *T, const cpt *r)
+{
+    for (size_t i = 0; i < T->out->n; i++)
+        if (same_hstate(T->out->v[i].sigma, &T->out->v[i].st, r->sigma, &r->st)) return EL_OK;
+    hroot h = el__hermite_mkroot(T->pr->hcase == 3 ? r->st.k0p : r->st.k0, r->b, r->sigma);
+    h.st = r->st;
+    return el__hermite_roots_push(T->out, &h);
+}
+
+/* The solutions L = Lt on the step p -> q of C (both in one chart; tp, tq the unit
+ * tangents along it): a sign change of L - Lt, or two crossings that the cubic Hermite
+ * interpolant of L along the step reveals (an extremum of L beyond Lt between two
+ * points on one side): the point of C near that extremum splits the step, at most
+ * depth times. */
+static int length_crossings(tracer *T, const cpt *p, const double tp[2], const cpt *q,
+                            const double tq[2], int depth)
+{
+    int rc;
+    cpt r;
+    const double a = p->st.L - T->Lt, b = q->st.L - T->Lt;
+    if (a * b <= 0.0) {
+        rc = cross(T, p, q, 0, T->Lt, &r);
+        if (rc == EL_EMAXITER) return rc;
+        /* accepted if it lies on the step (Newton can reach the neighbour of a close pair) */
+        const int same = p->chart == q->chart && p->base == q->base && p->fi == q->fi;
+        const double dU = q->U - p->U, dV = q->V - p->V;
+        const double lam = same && r.chart == p->chart && r.base == p->base && r.fi == p->fi
+                               ? ((r.U - p->U) * dU + (r.V - p->V) * dV) / (dU * dU + dV * dV) : 0.5;
+        if (rc == EL_OK && lam >= -0.05 && lam <= 1.05) return push_solution(T, &r);
+        /* Newton from the step's interpolate failed (a long step, one across the
+         * branches of (17), or one that holds a close pair): the point of C in the
+         * middle halves the bracket */
+        if (depth == 0 || p->chart != q->chart || p->base != q->base || p->fi != q->fi) return EL_OK;
+        cpt m;
+        int its;
+        const cpt *like = p->b == q->b ? p : q;
+        if ((rc = cpt_eval(T, like, 0.5 * (p->U + q->U), 0.5 * (p->V + q->V), &m)) == EL_EMAXITER) return rc;
+        if (!rc) rc = correct(T, &m, 1e-9, 6, &its);
+        if (rc == EL_EMAXITER) return rc;
+        if (rc) return EL_OK;
+        double tm[2];
+        tangent(&m, q->U - p->U, q->V - p->V, tm);
+        if ((m.st.L - T->Lt) * a <= 0.0) return length_crossings(T, p, tp, &m, tm, depth - 1);
+        return length_crossings(T, &m, tm, q, tq, depth - 1);
+    }
+    if (depth == 0) return EL_OK;
+    const double dU = q->U - p->U, dV = q->V - p->V, ds = hypot(dU, dV);
+    const double m0 = (p->Lg[0] * tp[0] + p->Lg[1] * tp[1]) * ds;
+    const double m1 = (q->Lg[0] * tq[0] + q->Lg[1] * tq[1]) * ds;
+    /* H(x) = a h00 + m0 h10 + b h01 + m1 h11 on [0, 1]; H'(x) = c2 x^2 + c1 x + m0 */
+    const double c2 = 6.0 * a + 3.0 * m0 - 6.0 * b + 3.0 * m1, c1 = -6.0 * a - 4.0 * m0 + 6.0 * b - 2.0 * m1;
+    double xs[2];
+    int n = 0;
+    if (fabs(c2) > 1e-300) {
+        const double disc = c1 * c1 - 4.0 * c2 * m0;
+        if (disc >= 0.0) {
+            const double sq = copysign(sqrt(disc), c1), qq = -0.5 * (c1 + sq);
+            if (qq != 0.0) { xs[n++] = qq / c2; xs[n++] = m0 / qq; }
+        }
+    } else if (c1 != 0.0) {
+        xs[n++] = -m0 / c1;
+    }
+    for (int i = 0; i < n; i++) {
+        const double x = xs[i];
+        if (!(x > 0.0 && x < 1.0)) continue;
+        const double H = (2 * x * x * x - 3 * x * x + 1) * a + (x * x * x - 2 * x * x + x) * m0 +
+                         (-2 * x * x * x + 3 * x * x) * b + (x * x * x - x * x) * m1;
+        if (H * a > 0.0) continue;
+        /* two crossings likely: the point of C there splits the step */
+        cpt m;
+        int its;
+        if ((rc = cpt_eval(T, p, p->U + x * dU, p->V + x * dV, &m)) == EL_EMAXITER) return rc;
+        if (!rc) rc = correct(T, &m, 1e-9, 6, &its);
+        if (rc == EL_EMAXITER) return rc;
+        if (rc) return EL_OK;
+        double tm[2];
+        tangent(&m, dU, dV, tm);
+        if ((rc = length_crossings(T, p, tp, &m, tm, depth - 1))) return rc;
+        return length_crossings(T, &m, tm, q, tq, depth - 1);
+    }
+    return EL_OK;
+}
+
+/* The events of an accepted step p -> q (unit tangents tp, tq): solutions (L = Lt),
+ * seed lines crossed (seeds on C are marked visited; the trace's own seed means C
+ * closed: *closed = 1). */
+static int step_events(tracer *T, int origin, const cpt *p, const double tp[2], const cpt *q,
+                       const double tq[2], int *closed)
+{
+    int rc;
+    cpt r;
+    if ((rc = length_crossings(T, p, tp, q, tq, 6))) return rc;
+    for (int i = 0; i < T->nseed; i++) {
+        const cpt *s = &T->seed[i];
+        /* strictly crossed (the trace starts on its own seed's line) */
+        if ((T->visited[i] && i != origin) || !((p->t - s->t) * (q->t - s->t) < 0.0 || q->t == s->t))
+            continue;
+        /* the state interpolated to the line: far from the seed, no need for the exact crossing */
+        const double w = (s->t - p->t) / (q->t - p->t);
+        const double k0 = p->st.k0 + w * (q->st.k0 - p->st.k0), k0p = p->st.k0p + w * (q->st.k0p - p->st.k0p);
+        if (fabs(k0 - s->st.k0) > 0.1 * (1.0 + fabs(s->st.k0) + fabs(q->st.k0 - p->st.k0)) ||
+            fabs(k0p - s->st.k0p) > 0.1 * (1.0 + fabs(s->st.k0p) + fabs(q->st.k0p - p->st.k0p)))
+            continue;
+        rc = cross(T, p, q, 1, s->t, &r);
+        if (rc == EL_EMAXITER) return rc;
+        if (rc || !same_state(&r, s)) continue;
+        if (i == origin) *closed = 1;
+        T->visited[i] = 1;
+    }
+    return EL_OK;
+}
+
+#define TRACE_STEPS 400
+/* how closely the trace follows C (|f|, a position error relative to |P|): the
+ * solutions themselves are found to rounding by cross() */
+#define TRACE_TOL 1e-7
+#define LONG_CURVES 10.0
+/* Follow C from seed number origin in the direction dir (+-1 along its tangent). */
+static int trace(tracer *T, int origin, double dir)
+{
+    const double hmin = 1e-7, hmax = 1.5;
+    cpt p = T->seed[origin];
+    double tau[2], h = 0.05;
+    tangent(&p, -dir * p.fg[1], dir * p.fg[0], tau);
+    for (int step = 0; step < TRACE_STEPS;) {
+        const double pU = p.U + h * tau[0], pV = p.V + h * tau[1];   /* predictor */
+        cpt q;
+        int its = 0, rc = cpt_eval(T, &p, pU, pV, &q);
+        if (rc == EL_EMAXITER) return rc;
+        if (!rc) rc = correct(T, &q, TRACE_TOL, 4, &its);
+        if (rc && rc != EL_EMAXITER && T->pr->hcase == 1 && p.chart == HCHART_X) {
+            /* where C passes from one branch of (17) to the other in the x chart */
+            cpt other = p;
+            other.b = 1 - p.b;
+            rc = cpt_eval(T, &other, pU, pV, &q);
+            if (!rc) rc = correct(T, &q, TRACE_TOL, 4, &its);
+        }
+        if (rc == EL_EMAXITER) return rc;
+        double tq[2], cosang = 0.0, err = INFINITY;
+        int ok = !rc;
+        if (ok) {
+            const double dU = q.U - p.U, dV = q.V - p.V;
+            tangent(&q, tau[0], tau[1], tq);
+            cosang = tau[0] * tq[0] + tau[1] * tq[1];
+            err = hypot(q.U - pU, q.V - pV);
+            ok = err <= 0.3 * h && cosang >= 0.9 && fabs(log(q.st.L / p.st.L)) <= 0.7 &&
+                 dU * tau[0] + dV * tau[1] > 0.0;
+        }
+        if (!ok) {
+            h *= 0.5;
+            if (h < hmin) return EL_OK;                 /* C ends (or is not smooth) here */
+            continue;
+        }
+        step++;
+        int closed = 0;
+        if ((rc = step_events(T, origin, &p, tau, &q, tq, &closed))) return rc;
+        /* C leaves the sigma range of the solutions, closes, or runs to the curves of
+         * unbounded length near sigma = 0 (F -> 0, a straight line's limit) */
+        if (closed || q.t < T->tlo || q.t > T->thi || (q.st.L > LONG_CURVES * T->Lt && q.st.L > p.st.L))
+            return EL_OK;
+        const cpt prev = p;
+        p = q;
+        if ((rc = rechart(T, &p))) return rc == EL_EMAXITER ? rc : EL_OK;
+        double pu, pv;
+        coords_in(T->pr, &prev, &p, &pu, &pv);
+        tangent(&p, p.U - pu, p.V - pv, tau);
+        if (cosang > 0.98 && its <= 2) h = fmin(1.5 * h, hmax);
+    }
+    return EL_OK;
+}
+
+/* The seed lines: every tension solution on nl lines spread over the sigma range in
+ * t = asinh(sigma) (hermite_tension.c), ns samples each. */
+static int seeds(tracer *T, int nl, int ns)
+{
+    const hprob *pr = T->pr;
+    hrootlist l = {NULL, 0, 0};
+    int rc = EL_OK, cap = 0;
+    for (int j = 0; j < nl && !rc; j++) {
+        hprob q = *pr;
+        q.sigma = sinh(T->tlo + (T->thi - T->tlo) * (j + 0.5) / nl);
+        q.Lmin = 1.0;
+        l.n = 0;
+        if ((rc = el__hermite_solve_tension(&q, ns, &l))) break;
+        for (size_t i = 0; i < l.n && !rc; i++) {
+            if (T->nseed == cap) {
+                cap = cap ? 2 * cap : 16;
+                cpt *v = realloc(T->seed, (size_t)cap * sizeof *v);
+                char *w = realloc(T->visited, (size_t)cap);
+                if (v) T->seed = v;
+                if (w) T->visited = w;
+                if (!v || !w) { rc = EL_ENOMEM; break; }
+            }
+            const hroot *r = &l.v[i];
+            cpt *s = &T->seed[T->nseed];
+            const cpt c = chart_spec(pr->hcase == 3 ? HCHART_C3 : HCHART_X, pr->hcase == 3 ? r->b >= 2 : r->b);
+            if (pr->hcase == 3)
+                rc = cpt_eval(T, &c, asinh(r->st.k0), asinh(r->st.k0p), s);
+            else
+                rc = cpt_eval(T, &c, asinh(r->x), asinh(q.sigma), s);
+            if (!rc) rc = rechart(T, s);
+            if (rc == EL_EMAXITER) break;
+            if (rc) { rc = EL_OK; continue; }
+            /* a seed found twice (the tension solver's duplicates) is traced once */
+            int dup = 0;
+            for (int k = 0; k < T->nseed && !dup; k++) dup = same_state(&T->seed[k], s);
+            if (!dup) T->visited[T->nseed++] = 0;
+        }
+    }
+    free(l.v);
+    return rc;
+}
+
+/* Length mode, normalised: every point of C (above) with L = Lt; nl seed lines with
+ * ns bracketing samples each. */
+int el__hermite_solve_length(hprob *pr, double Lt, int nl, int ns, hrootlist *out)
+{
+    double slo, shi;
+    sigma_range(Lt, &slo, &shi);
+    tracer T;
+    memset(&T, 0, sizeof T);
+    T.pr = pr;
+    T.Lt = Lt;
+    T.tlo = asinh(slo);
+    T.thi = asinh(fmin(shi, SIGMA_MAX));
+    T.out = out;
+    T.max_evals = MAX_EVALS;
+    int rc = seeds(&T, nl, ns);
+    for (int i = 0; i < T.nseed && !rc; i++) {
+        if (T.visited[i]) continue;
+        T.visited[i] = 1;
+        rc = trace(&T, i, 1.0);
+        if (!rc) rc = trace(&T, i, -1.0);
+    }
+    free(T.seed);
+    free(T.visited);
+    return rc;
+}

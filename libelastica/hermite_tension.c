@@ -1,0 +1,873 @@
+/*
+ * Hermite interpolation for a given tension, seed 004 §4: the kappa_m bound of
+ * Theorem 9, the pieces between the split points ((18), (40), (44), (45)), and
+ * bracketing with Brent's method on each; el_hermite_analyse reports the same analysis.
+ */
+#include "hermite_internal.h"
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_math.h>
+#include <gsl/gsl_min.h>
+#include <gsl/gsl_poly.h>
+#include <gsl/gsl_roots.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define MAXPTS 64
+/* el__carlson_fd's precision for the bracketing samples: ~1e-8 relative (ellint.c) */
+#define COARSE_QS 0.1
+
+/* ------------------------------------------------------------ Theorem 9: the kappa_m bound */
+
+/* Period of the inflectional elastica with kappa_m, sigma (kappa_m^2 > 2 sigma). */
+static double period_infl(double km, double sigma)
+{
+    const double Fn = km * km - sigma, k = sqrt(km * km / (2.0 * Fn));
+    double K, D;
+    /* the AGM with k'^2 = (|F| - sigma) / (2 |F|): cheaper than GSL's Kcomp */
+    if (el__ellint_complete(k, (Fn - sigma) / (2.0 * Fn), &K, &D)) return NAN;
+    return 4.0 * K / sqrt(0.5 * Fn);
+}
+
+typedef struct { double sigma, Lmin; } tparam;
+static double period_gap(double km, void *p)
+{
+    const tparam *t = p;
+    return period_infl(km, t->sigma) - t->Lmin;
+}
+
+/* Every solution has T >= L >= Lmin. sigma <= 0: k^2 <= 1/2, so
+ * T <= 4 K(1/sqrt2) sqrt2 / sqrt(kappa_m^2 - sigma) and kappa_m^2 <= (C0/Lmin)^2 + sigma;
+ * sigma > 0: the non-inflectional curves have kappa_m^2 <= 2 sigma, and T decreases
+ * with kappa_m on the inflectional side (proof of Theorem 9): solve T(kappa_m) = Lmin
+ * (Brent). This is (37) without the epsilon: exact for every sigma. */
+static int kappa_bound(double sigma, double Lmin, double *B)
+{
+    const double c = C0_PERIOD / Lmin;
+    if (sigma <= 0.0) {
+        const double b2 = c * c + sigma;
+        *B = b2 > 0.0 ? sqrt(b2) * (1.0 + 1e-9) : -1.0;
+        return EL_OK;
+    }
+    const double lo = sqrt(2.0 * sigma) * (1.0 + 1e-12);
+    double hi = sqrt(2.0 * sigma) + c;
+    for (int i = 0; i < 200 && !(period_infl(hi, sigma) < Lmin); i++) hi *= 2.0;
+    if (!(period_infl(hi, sigma) < Lmin)) return EL_EINTERNAL;
+    if (!(period_infl(lo, sigma) > Lmin)) { *B = lo; return EL_OK; }
+    tparam tp = {sigma, Lmin};
+    gsl_function fn = {period_gap, &tp};
+    gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+    if (!s) return EL_ENOMEM;
+    if (gsl_root_fsolver_set(s, &fn, lo, hi) != GSL_SUCCESS) { gsl_root_fsolver_free(s); return EL_EINTERNAL; }
+    for (int it = 0; it < 200; it++) {
+        if (gsl_root_fsolver_iterate(s) != GSL_SUCCESS) break;
+        double a = gsl_root_fsolver_x_lower(s), b = gsl_root_fsolver_x_upper(s);
+        if (gsl_root_test_interval(a, b, 0.0, 1e-3) == GSL_SUCCESS) break;
+    }
+    /* the bracket's upper end has T < Lmin: a bound whatever the bracket's width */
+    *B = gsl_root_fsolver_x_upper(s) * (1.0 + 1e-9);
+    gsl_root_fsolver_free(s);
+    return EL_OK;
+}
+
+/* ------------------------------------------------------------ split points */
+
+/* A split point; soft: kappa0 = 0 or kappa1 = 0, which bound the pieces where (44)
+ * fails but leave the objective smooth on the inflectional side (seed 004 §4
+ * intersects only the non-inflectional pieces with (44)); SPLIT_SEP: a root of (40)
+ * (or (41) in case 3), where the curve is the separatrix (kappa_m^2 = 2 sigma, k = 1). */
+enum { SPLIT_HARD, SPLIT_SOFT, SPLIT_SEP };
+typedef struct { double x; int soft; } splitpt;
+typedef struct { splitpt v[MAXPTS]; int n; } ptlist;
+
+static void pt_add(ptlist *l, double x, int soft)
+{
+    if (isfinite(x) && l->n < MAXPTS) {
+        l->v[l->n].x = x;
+        l->v[l->n++].soft = soft;
+    }
+}
+
+/* Sort by x: insertion sort, the lists being a dozen points long (qsort's
+ * indirect comparisons and merge buffer cost more than the sort itself here). */
+static void sort_splitpts(splitpt *v, int n)
+{
+    for (int i = 1; i < n; i++) {
+        const splitpt t = v[i];
+        int j = i;
+        for (; j > 0 && v[j - 1].x > t.x; j--) v[j] = v[j - 1];
+        v[j] = t;
+    }
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Real roots of sum c[i] x^i (degree <= 2) by gsl_poly_solve_quadratic. */
+static int poly_real_roots(const double *c_in, int deg, double *roots, int *nroots)
+{
+    double c[3];
+    double cmax = 0.0;
+    for (int i = 0; i <= deg; i++) { c[i] = c_in[i]; cmax = fmax(cmax, fabs(c[i])); }
+    *nroots = 0;
+    while (deg > 0 && fabs(c[deg]) <= 1e-14 * cmax) deg--;
+    if (deg <= 0) return EL_OK;
+    double r0, r1;
+    const int n = deg == 2 ? gsl_poly_solve_quadratic(c[2], c[1], c[0], &r0, &r1) : (r0 = -c[0] / c[1], 1);
+    if (n > 0) roots[(*nroots)++] = r0;
+    if (n > 1) roots[(*nroots)++] = r1;
+    return EL_OK;
+}
+
+/* p(x) and p'(x) by Horner's scheme */
+static double horner(const double *c, int deg, double x, double *dp)
+{
+    double v = c[deg], d = 0.0;
+    for (int i = deg - 1; i >= 0; i--) { d = d * x + v; v = v * x + c[i]; }
+    *dp = d;
+    return v;
+}
+
+/* The real roots of sum c[i] x^i (degree <= 8) in [lo, hi], ascending: between
+ * consecutive real roots of the derivative (found the same way, down to degree 2, to
+ * the relative precision tol) the polynomial is monotone, so every sign change there
+ * holds exactly one root, found by Newton's method kept inside the bracket (bisection
+ * when a step leaves it or does not shrink it by half). Written here because GSL's
+ * gsl_poly_complex_solve (the eigenvalues of the companion matrix) returns close
+ * real roots of (40) as complex pairs once sigma is large (its coefficients then span
+ * thirty orders of magnitude: none found at sigma |p1-p0|^2 = 4000 on test problems),
+ * and computes the complex roots that are not needed. A root of even multiplicity
+ * (no sign change) is not found. */
+static void poly_roots_in(const double *c_in, int deg, double lo, double hi, double tol,
+                          double *roots, int *nroots)
+{
+    /* the terms' sizes on the interval, |c_i| R^i: a leading coefficient negligible there
+     * (a degenerate problem) lowers the degree */
+    const double R = fmax(1.0, fmax(fabs(lo), fabs(hi)));
+    double c[9], tmax = 0.0, Ri = 1.0, Rdeg[9];
+    for (int i = 0; i <= deg; i++, Ri *= R) { c[i] = c_in[i]; Rdeg[i] = Ri; tmax = fmax(tmax, fabs(c[i]) * Ri); }
+    *nroots = 0;
+    while (deg > 0 && fabs(c[deg]) * Rdeg[deg] <= 1e-14 * tmax) deg--;
+    if (deg <= 0 || !(hi > lo)) return;
+    if (deg <= 2) {
+        double r[2];
+        int n;
+        poly_real_roots(c, deg, r, &n);
+        for (int i = 0; i < n; i++)
+            if (r[i] >= lo && r[i] <= hi) roots[(*nroots)++] = r[i];
+        if (*nroots == 2 && roots[0] > roots[1]) { const double t = roots[0]; roots[0] = roots[1]; roots[1] = t; }
+        return;
+    }
+    double d[8], crit[8], pts[10], dp;
+    int nc;
+    for (int i = 1; i <= deg; i++) d[i - 1] = i * c[i];
+    poly_roots_in(d, deg - 1, lo, hi, 1e-10, crit, &nc);
+    int np = 0;
+    pts[np++] = lo;
+    for (int i = 0; i < nc; i++) pts[np++] = crit[i];
+    pts[np++] = hi;
+    double fb = horner(c, deg, lo, &dp);
+    for (int i = 0; i + 1 < np; i++) {
+        double a = pts[i], b = pts[i + 1], fa = fb;
+        fb = horner(c, deg, b, &dp);
+        if (fa == 0.0) {
+            if (*nroots == 0 || roots[*nroots - 1] != a) roots[(*nroots)++] = a;
+            continue;
+        }
+        if (fb == 0.0 || fa * fb > 0.0) continue;
+        /* [a, b] with p(a) p(b) < 0: Newton, bisection when the step leaves the bracket
+         * or the previous step did not halve (rtsafe of Numerical Recipes) */
+        double x = 0.5 * (a + b), dxold = b - a, dx = dxold, ga = fa;
+        double fx = horner(c, deg, x, &dp);
+        for (int it = 0; it < 100; it++) {
+            if (((x - b) * dp - fx) * ((x - a) * dp - fx) > 0.0 || fabs(2.0 * fx) > fabs(dxold * dp)) {
+                dxold = dx;
+                dx = 0.5 * (b - a);
+                x = a + dx;
+            } else {
+                dxold = dx;
+                dx = fx / dp;
+                x -= dx;
+            }
+            if (fabs(dx) <= tol * fabs(x) + 1e-300) break;
+            fx = horner(c, deg, x, &dp);
+            if (fx == 0.0) break;
+            if (fx * ga > 0.0) { a = x; ga = fx; } else b = x;
+        }
+        roots[(*nroots)++] = x;
+    }
+}
+
+/* Small polynomial arithmetic (coefficients low to high, degree <= 8). */
+typedef struct { double c[9]; int d; } poly;
+static poly pmul(poly a, poly b)
+{
+    poly r = {{0}, a.d + b.d};
+    for (int i = 0; i <= a.d; i++)
+        for (int j = 0; j <= b.d; j++) r.c[i + j] += a.c[i] * b.c[j];
+    return r;
+}
+static poly padd(poly a, double sa, poly b, double sb)
+{
+    poly r = {{0}, a.d > b.d ? a.d : b.d};
+    for (int i = 0; i <= a.d; i++) r.c[i] += sa * a.c[i];
+    for (int i = 0; i <= b.d; i++) r.c[i] += sb * b.c[i];
+    return r;
+}
+
+/* Polynomial (40) (Theorem 11): its roots are the kappa0 with kappa_m^2 = 2 sigma.
+ * kappa_m^2 = 2 sigma in (8) gives 4 kappa0'^2 = -D, D = (kappa0^2 - sigma)^2 - sigma^2 (42).
+ * Case 1: with (16) 4 (kappa1 - C)^2 + P2^2 D = 0 (43); subtracting 4/P2 (17) leaves
+ * kappa1 = N / M, N = 4 P2 C^2 + P2^3 D + 8 V1 C + 4 A P2, M = 8 (P2 C + V1); so
+ * 4 (N - C M)^2 + P2^2 D M^2 = 0, degree 8, leading 4 P2^2 (P1^2 + P2^2)^2 as printed.
+ * Case 2: kappa0' = (A - C^2)/(2 V1) gives (A - C^2)^2 + V1^2 D = 0. */
+static poly poly40(const hprob *pr)
+{
+    const double s = pr->sigma, P1 = pr->P1, P2 = pr->P2, V1 = pr->V1, V2 = pr->V2;
+    const poly w = {{-s, 0, 1}, 2};
+    const poly C = {{-0.5 * s * P1, 1.0, 0.5 * P1}, 2};
+    const poly A = {{s - s * V2, 0, V2}, 2};
+    const poly one = {{1}, 0};
+    const poly D = padd(pmul(w, w), 1.0, one, -s * s);
+    if (pr->hcase == 2) {
+        const poly AC = padd(A, 1.0, pmul(C, C), -1.0);
+        return padd(pmul(AC, AC), 1.0, D, V1 * V1);
+    }
+    poly N = padd(pmul(C, C), 4.0 * P2, D, P2 * P2 * P2);
+    N = padd(N, 1.0, C, 8.0 * V1);
+    N = padd(N, 1.0, A, 4.0 * P2);
+    const poly M = padd(C, 8.0 * P2, one, 8.0 * V1);
+    const poly NC = padd(N, 1.0, pmul(C, M), -1.0);
+    return padd(pmul(NC, NC), 4.0, pmul(D, pmul(M, M)), P2 * P2);
+}
+
+/* (45): kappa0^2 = sigma, and kappa0' = 0, which by (15), (16) is C^2 = A. With
+ * w = kappa0^2 - sigma, C^2 - A = w (w P1^2/4 + P1 kappa0 + 1 - V2): the quartic
+ * splits into kappa0^2 = sigma and a quadratic, so at most four values. */
+static int special_values(const hprob *pr, double *out, int *n)
+{
+    *n = 0;
+    const double s = pr->sigma, P1 = pr->P1, V2 = pr->V2;
+    if (s >= 0.0) { out[(*n)++] = -sqrt(s); out[(*n)++] = sqrt(s); }
+    if (pr->hcase == 3) return EL_OK;
+    const double q[3] = {1.0 - V2 - 0.25 * s * P1 * P1, P1, 0.25 * P1 * P1};
+    double r[2];
+    int nr, rc = poly_real_roots(q, 2, r, &nr);
+    if (rc) return rc;
+    for (int i = 0; i < nr; i++) out[(*n)++] = r[i];
+    return EL_OK;
+}
+
+/* The ends of (18) (case 1): disc(kappa0) = a2 kappa0^2 + a1 kappa0 + a0 >= 0. */
+static void disc_coeffs(const hprob *pr, double a[3])
+{
+    const double s = pr->sigma, P1 = pr->P1, P2 = pr->P2, V1 = pr->V1, V2 = pr->V2;
+    a[2] = P2 * V1 * P1 + P2 * P2 * V2;
+    a[1] = 2.0 * P2 * V1;
+    a[0] = V1 * V1 - P2 * V1 * P1 * s + P2 * P2 * s * (1.0 - V2);
+}
+
+/* Domain of the unknown on branch b: [-X, X]. */
+static double domain_half(const hprob *pr, int b)
+{
+    if (pr->B < 0.0) return -1.0;
+    if (pr->hcase != 3) return pr->B;
+    const double k0 = el__hermite_case3_kappa0(pr, b), s = pr->sigma;
+    if (!isfinite(k0) || k0 * k0 > pr->B * pr->B) return -1.0;
+    const double a = pr->B * pr->B - s, c = k0 * k0 - s, r = a * a - c * c; /* (8) */
+    return r > 0.0 ? 0.5 * sqrt(r) : -1.0;
+}
+
+/* Which root of (17) has kappa_m^2 = 2 sigma at a root of (40) (seed 004 §4:
+ * the roots are divided in two groups, one per objective function). */
+static int root_branch(const hprob *pr, double x)
+{
+    if (pr->hcase != 1) return 0;
+    int best = 0;
+    double bd = INFINITY;
+    for (int b = 0; b < 2; b++) {
+        hstate st;
+        if (el__hermite_curvdata(pr, x, b, &st)) continue;
+        const double F1 = -2.0 * st.k0p, F2 = st.k0 * st.k0 - pr->sigma;
+        const double dd = fabs(sqrt(F1 * F1 + F2 * F2) - pr->sigma);   /* kappa_m^2 - 2 sigma */
+        if (dd < bd) { bd = dd; best = b; }
+    }
+    return best;
+}
+
+
+/* The kind of curve at x (el__hermite_state_class; cheap, the curvature data only); CLASS_NONE
+ * also outside (18). */
+static int point_class(const hprob *pr, int b, double x)
+{
+    hstate st;
+    double Fn;
+    return el__hermite_curvdata(pr, x, b, &st) ? CLASS_NONE : el__hermite_state_class(pr, &st, &Fn);
+}
+
+/* Split points of branch b: (18) ends, (40) roots, (44) kappa0 = 0 and kappa1 = 0,
+ * (45) special values; case 3: (41), kappa0' = 0. */
+static int split_points(const hprob *pr, int b, double X, const double *r40, const int *b40,
+                        int n40, ptlist *l)
+{
+    const double s = pr->sigma, P1 = pr->P1, P2 = pr->P2, V1 = pr->V1, V2 = pr->V2;
+    double r[16];
+    int nr, rc;
+    l->n = 0;
+    if (pr->hcase == 3) {
+        const double k0 = el__hermite_case3_kappa0(pr, b), c = k0 * k0 - s, q = s * s - c * c;
+        pt_add(l, 0.0, 0);
+        if (q >= 0.0) { pt_add(l, 0.5 * sqrt(q), SPLIT_SEP); pt_add(l, -0.5 * sqrt(q), SPLIT_SEP); } /* (41) */
+        return EL_OK;
+    }
+    if (pr->hcase == 1) {
+        double a[3];
+        disc_coeffs(pr, a);
+        if ((rc = poly_real_roots(a, 2, r, &nr))) return rc;
+        for (int i = 0; i < nr; i++) pt_add(l, r[i], 0);
+        /* kappa1 = 0 in (17): 2 V1 C + A P2 = 0 */
+        const double q[3] = {V1 * P1 * s + P2 * V2 * s - P2 * s, -2.0 * V1, -V1 * P1 - P2 * V2};
+        if ((rc = poly_real_roots(q, 2, r, &nr))) return rc;
+        for (int i = 0; i < nr; i++) pt_add(l, r[i], 1);
+    } else {
+        const double q[3] = {-0.5 * P1 * s, 1.0, 0.5 * P1}; /* C = 0 */
+        if ((rc = poly_real_roots(q, 2, r, &nr))) return rc;
+        for (int i = 0; i < nr; i++) pt_add(l, r[i], 1);
+    }
+    pt_add(l, 0.0, 1);
+    for (int i = 0; i < n40; i++)
+        if (b40[i] == b) pt_add(l, r40[i], SPLIT_SEP);
+    /* (45): seed 004 §4 evaluates its objective (35), x1(L) - P1, there and keeps the
+     * value as a split point where it vanishes (an unwanted zero) or is singular. The
+     * objective here is the error along F, regular where F is parallel to x1; it
+     * vanished at none of the special values of the 10 000 bench problems (31 000
+     * evaluated). So only the singular ones split: F = 0 (the circle kappa0^2 = sigma,
+     * kappa0' = 0 on this branch) and those without a curve (point_class) */
+    if ((rc = special_values(pr, r, &nr))) return rc;
+    for (int i = 0; i < nr; i++)
+        if (fabs(r[i]) < X && point_class(pr, b, r[i]) == CLASS_NONE) pt_add(l, r[i], 0);
+    return EL_OK;
+}
+
+/* ------------------------------------------------------------ root finding on the pieces */
+
+/* The objective of one branch with a small cache of the last evaluations: GSL's
+ * Brent re-evaluates the bracket ends (already sampled) in gsl_root_fsolver_set,
+ * and the root it returns is its last evaluation, whose state the solution needs. */
+#define NCACHE 4
+typedef struct {
+    const hprob *pr;
+    int b;
+    /* sep: the abscissa is y = ln(side (|F| - sigma)) of the separatrix chart over the
+     * base chart (x, or case 3's (kappa0, kappa0') at the family's kappa0), w0 the
+     * starting guess of its Newton (hermite_objective.c) */
+    int sep, side;
+    double w0;
+    int ci;                      /* next slot */
+    double cx[NCACHE];           /* cached abscissae (NaN: empty) */
+    int crc[NCACHE], cfull[NCACHE];
+    hstate cst[NCACHE];          /* cfull: full state, else only cst.f */
+    double cw[NCACHE];           /* the unknown x of the cached state */
+} fctx;
+
+static void fctx_init(fctx *c, const hprob *pr, int b)
+{
+    memset(c, 0, sizeof *c);
+    c->pr = pr;
+    c->b = b;
+    for (int i = 0; i < NCACHE; i++) c->cx[i] = NAN;
+}
+
+static void cache_put(fctx *c, double x, int rc, const hstate *st, int full, double w)
+{
+    const int i = c->ci;
+    c->ci = (i + 1) % NCACHE;
+    c->cx[i] = x;
+    c->crc[i] = rc;
+    c->cfull[i] = full;
+    c->cst[i] = *st;
+    c->cw[i] = w;
+}
+
+/* The objective at abscissa u (x, or y in the separatrix chart) with Carlson's
+ * precision qs; *x gets the unknown x of the state. */
+static int piece_eval(fctx *c, double u, double qs, hstate *st, double *x)
+{
+    if (!c->sep) {
+        *x = u;
+        const int rc = el__hermite_curvdata(c->pr, u, c->b, st);
+        return rc ? rc : el__hermite_shape_eval(c->pr, qs, st);
+    }
+    const hprob *pr = c->pr;
+    hgrad g;
+    double w = c->w0;
+    const int rc = pr->hcase == 3
+        ? el__hermite_sep_eval(pr, HCHART_C3, 1, c->b >= 2, c->side, u, el__hermite_case3_kappa0(pr, c->b), &w, st, &g, NULL)
+        : el__hermite_sep_eval(pr, HCHART_X, 0, c->b, c->side, u, pr->sigma, &w, st, &g, NULL);
+    *x = w;
+    return rc;
+}
+
+/* piece_eval (full precision) through the cache; need_full: the whole state is wanted,
+ * not only f; *x (may be NULL) the unknown x. */
+static int cached_eval(fctx *c, double u, int need_full, hstate *st, double *x)
+{
+    double w;
+    for (int i = 0; i < NCACHE; i++)
+        if (c->cx[i] == u && (c->cfull[i] || !need_full)) {
+            *st = c->cst[i];
+            if (x) *x = c->cw[i];
+            return c->crc[i];
+        }
+    const int rc = piece_eval(c, u, 1.0, st, &w);
+    cache_put(c, u, rc, st, 1, w);
+    if (x) *x = w;
+    return rc;
+}
+
+/* Seed the cache with a known objective value (a sample). */
+static void cache_seed(fctx *c, double x, double f)
+{
+    hstate st;
+    memset(&st, 0, sizeof st);
+    st.f = f;
+    cache_put(c, x, isfinite(f) ? EL_OK : EL_EDOM, &st, 0, NAN);
+}
+
+/* The objective for the samples that look for sign changes: elliptic integrals to
+ * about 1e-8 instead of 1e-16 (COARSE_QS, one or two duplication steps fewer); its
+ * sign and rough size are used, and Brent and every accepted root use el__hermite_full_eval. */
+static double fobj_coarse(fctx *c, double x)
+{
+    hstate st;
+    double w;
+    return piece_eval(c, x, COARSE_QS, &st, &w) ? GSL_NAN : st.f;
+}
+
+static double fobj(double x, void *p)
+{
+    fctx *c = p;
+    hstate st;
+    if (cached_eval(c, x, 0, &st, NULL)) return GSL_NAN;
+    return st.f;
+}
+
+
+hroot el__hermite_mkroot(double x, int b, double sigma)
+{
+    hroot r;
+    memset(&r, 0, sizeof r);
+    r.x = x;
+    r.b = b;
+    r.sigma = sigma;
+    return r;
+}
+
+int el__hermite_roots_push(hrootlist *l, const hroot *r)
+{
+    if (l->n == l->cap) {
+        size_t cap = l->cap ? 2 * l->cap : 16;
+        hroot *v = realloc(l->v, cap * sizeof *v);
+        if (!v) return EL_ENOMEM;
+        l->v = v;
+        l->cap = cap;
+    }
+    l->v[l->n++] = *r;
+    return EL_OK;
+}
+
+/* Brent (gsl_root_fsolver_brent) on [a, b] with f(a) f(b) < 0; accept a root where
+ * |f| is small (a sign change across a jump of f is not a root). */
+static int brent_root(fctx *c, double a, double fa, double b, double fb, hrootlist *out)
+{
+    cache_seed(c, a, fa);
+    cache_seed(c, b, fb);
+    gsl_function fn = {fobj, c};
+    gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+    if (!s) return EL_ENOMEM;
+    int ok = gsl_root_fsolver_set(s, &fn, a, b) == GSL_SUCCESS;
+    double x = 0.5 * (a + b);
+    for (int it = 0; ok && it < 200; it++) {
+        if (gsl_root_fsolver_iterate(s) != GSL_SUCCESS) { ok = 0; break; }
+        x = gsl_root_fsolver_root(s);
+        const double lo = gsl_root_fsolver_x_lower(s), hi = gsl_root_fsolver_x_upper(s);
+        if (gsl_root_test_interval(lo, hi, 1e-300, 4e-16) == GSL_SUCCESS) break;
+        /* |f| (the end position error along F, |P| = 1) at rounding level: done, without
+         * the last steps that only shrink the bracket from the other side (x was GSL's
+         * last evaluation: the cache answers) */
+        {
+            hstate st;
+            if (!cached_eval(c, x, 0, &st, NULL) && fabs(st.f) <= 1e-14) break;
+        }
+        /* a sign change across a jump of f (L wrapping at a period): |f| stays large
+         * while the bracket shrinks; a root would need a slope above 1e5 */
+        if (hi - lo < 1e-9 * (1.0 + fabs(x)) && !(fabs(fobj(x, c)) < 1e-4)) { ok = 0; break; }
+    }
+    gsl_root_fsolver_free(s);
+    if (!ok) return EL_OK;
+    hroot r = el__hermite_mkroot(x, c->b, c->pr->sigma);
+    if (cached_eval(c, x, 1, &r.st, &r.x)) return EL_OK;
+    if (!(fabs(r.st.f) <= 1e-8)) return EL_OK;
+    return el__hermite_roots_push(out, &r);
+}
+
+/* The coarse objective, signed for a minimiser (only its sign at the minimum matters). */
+static double negf(double x, void *p) { return -fobj_coarse(p, x); }
+static double posf(double x, void *p) { return fobj_coarse(p, x); }
+
+/* Two zeros closer than the sampling step (seed 004 §5 (a), (b): at most two per
+ * piece, the objective convex between them): minimise sign * f on the bracket;
+ * if the minimum changes sign, both zeros are bracketed. */
+static int touch_check(fctx *c, double a, double fa, double m, double fm, double b, double fb,
+                       hrootlist *out)
+{
+    const double sg = fm > 0.0 ? 1.0 : -1.0;
+    gsl_function fn = {fm > 0.0 ? posf : negf, c};
+    gsl_min_fminimizer *s = gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent);
+    if (!s) return EL_ENOMEM;
+    int rc = EL_OK;
+    /* the three samples are known: no re-evaluation */
+    if (gsl_min_fminimizer_set_with_values(s, &fn, m, sg * fm, a, sg * fa, b, sg * fb) == GSL_SUCCESS) {
+        for (int it = 0; it < 40; it++) {
+            if (gsl_min_fminimizer_iterate(s) != GSL_SUCCESS) break;
+            const double xm = gsl_min_fminimizer_x_minimum(s), v = gsl_min_fminimizer_f_minimum(s);
+            if (v < 0.0) {
+                gsl_min_fminimizer_free(s);
+                const double fxm = fobj_coarse(c, xm);
+                if ((rc = brent_root(c, a, fa, xm, fxm, out))) return rc;
+                return brent_root(c, xm, fxm, b, fb, out);
+            }
+            if (gsl_min_test_interval(gsl_min_fminimizer_x_lower(s), gsl_min_fminimizer_x_upper(s),
+                                      1e-11, 1e-9) == GSL_SUCCESS) break;
+        }
+        /* a double zero (tangency): accept it when f vanishes there */
+        const double xm = gsl_min_fminimizer_x_minimum(s);
+        hroot r = el__hermite_mkroot(xm, c->b, c->pr->sigma);
+        if (!cached_eval(c, xm, 1, &r.st, &r.x) && fabs(r.st.f) <= 1e-11) rc = el__hermite_roots_push(out, &r);
+    }
+    gsl_min_fminimizer_free(s);
+    return rc;
+}
+
+/* |f| at the vertex of the parabola through three samples around a local minimum
+ * of |f| (same sign): small when two zeros may hide between the samples. */
+static double parabola_min(const double *x, const double *f)
+{
+    const double sg = f[1] > 0.0 ? 1.0 : -1.0;
+    const double d1 = (f[1] - f[0]) / (x[1] - x[0]), d2 = (f[2] - f[1]) / (x[2] - x[1]);
+    const double a = (d2 - d1) / (x[2] - x[0]);          /* f = f1 + d (x - x1) + a (x - x1)^2 */
+    const double d = d1 + a * (x[1] - x[0]);
+    if (!(sg * a > 0.0)) return 0.0;                     /* not convex towards zero: check anyway */
+    return sg * (f[1] - d * d / (4.0 * a));
+}
+
+/* The lowest value a convex function g = sign * f can take on [xs[j], xs[j+1]] given
+ * the samples: the secant of a neighbouring interval where g > 0 at both ends,
+ * extended, lies below a convex function (+inf when no neighbour qualifies). */
+static double convex_lower_bound(const double *xs, const double *fs, int n, int j, double sign)
+{
+    double lb = -INFINITY;
+    int any = 0;
+    for (int side = -1; side <= 1; side += 2) {
+        const int p = side < 0 ? j - 1 : j + 1, q = p + 1;   /* the neighbour [xs[p], xs[q]] */
+        if (p < 0 || q >= n || !(sign * fs[p] > 0.0) || !(sign * fs[q] > 0.0)) continue;
+        const double slope = sign * (fs[q] - fs[p]) / (xs[q] - xs[p]);
+        const double g0 = sign * fs[p] + slope * (xs[j] - xs[p]);
+        const double g1 = sign * fs[p] + slope * (xs[j + 1] - xs[p]);
+        lb = fmax(lb, fmin(g0, g1));
+        any = 1;
+    }
+    return any ? lb : INFINITY;
+}
+
+/* The interval to sample next, or -1. Seed 004 §5 observes that the objective
+ * is convex between two zeros close together; so two zeros can only hide in an
+ * interval without a sign change where the convex lower bound from its
+ * neighbours reaches zero, and the lowest such interval is bisected. An interval
+ * with one failed evaluation (no curve there, or a singular point) is bisected
+ * first while wider than nanw: the objective is steep next to such a region and
+ * zeros crowd there; then it is bounded like the others from its finite side.
+ * Intervals narrower than minw are left. */
+static int interval_to_refine(const double *xs, const double *fs, int n, double minw, double nanw)
+{
+    int best = -1;
+    double blb = 0.0;
+    for (int j = 0; j + 1 < n; j++) {
+        const double fa = fs[j], fb = fs[j + 1];
+        double sign;
+        if (isfinite(fa) && isfinite(fb)) {
+            if (!(fa * fb > 0.0)) continue;                 /* a sign change: Brent's */
+            sign = fa > 0.0 ? 1.0 : -1.0;
+        } else if (isfinite(fa) || isfinite(fb)) {
+            const double f = isfinite(fa) ? fa : fb;
+            if (f == 0.0) continue;
+            sign = f > 0.0 ? 1.0 : -1.0;
+            if (xs[j + 1] - xs[j] > nanw) return j;
+        } else {
+            continue;
+        }
+        if (!(xs[j + 1] - xs[j] > minw)) continue;
+        double lb = convex_lower_bound(xs, fs, n, j, sign);
+        /* no same-sign neighbour says anything (next to a sign change, say):
+         * one bisection gives the interval a neighbour of its own */
+        if (lb == INFINITY && xs[j + 1] - xs[j] > 10.0 * nanw) lb = 0.0;
+        if (lb <= blb) { blb = lb; best = j; }
+    }
+    return best;
+}
+
+/* Sample one piece (Chebyshev spacing, ends nudged inside: the split points are
+ * where the objective is singular or not differentiable), refine where two zeros
+ * may hide (interval_to_refine, at most REFINE_MAX more samples), Brent on sign
+ * changes. */
+/* A sample whose |f| is below TOUCH_RATIO times both neighbours' (same sign) gets the
+ * touch check even when the parabola through the three does not reach zero: the
+ * objective is often far from a parabola on a sample interval (steep near a split
+ * point). It only adds checks, so it finds a superset; without these checks 9 of
+ * the 25 264 solutions of the bench problems (300 samples) are missed, with them 1. */
+#define TOUCH_RATIO 0.5
+#define REFINE_MAX 12
+/* Refinement and root extraction on the ns + 1 samples xs (ascending), fs of a piece
+ * of width w (arrays with room for REFINE_MAX more). */
+static int solve_samples(fctx *c, double *xs, double *fs, int ns, double w, hrootlist *out)
+{
+    int rc;
+    const double a = xs[0], b = a + w;
+    for (int r = 0; r < REFINE_MAX; r++) {
+        const int j = interval_to_refine(xs, fs, ns + 1, 1e-6 * (b - a), 1e-3 * (b - a));
+        if (j < 0) break;
+        memmove(xs + j + 2, xs + j + 1, (size_t)(ns - j) * sizeof *xs);
+        memmove(fs + j + 2, fs + j + 1, (size_t)(ns - j) * sizeof *fs);
+        xs[j + 1] = 0.5 * (xs[j] + xs[j + 2]);
+        fs[j + 1] = fobj_coarse(c, xs[j + 1]);
+        ns++;
+    }
+    for (int j = 0; j < ns; j++) {
+        if (!isfinite(fs[j]) || !isfinite(fs[j + 1])) continue;
+        if (fs[j] == 0.0) {
+            hroot r = el__hermite_mkroot(xs[j], c->b, c->pr->sigma);
+            if (!piece_eval(c, xs[j], 1.0, &r.st, &r.x) && (rc = el__hermite_roots_push(out, &r))) return rc;
+        } else if (fs[j] * fs[j + 1] < 0.0) {
+            if ((rc = brent_root(c, xs[j], fs[j], xs[j + 1], fs[j + 1], out))) return rc;
+        } else if (j > 0 && isfinite(fs[j - 1]) && fs[j - 1] * fs[j] > 0.0 &&
+                   fabs(fs[j]) < fabs(fs[j - 1]) && fabs(fs[j]) < fabs(fs[j + 1]) &&
+                   (parabola_min(xs + j - 1, fs + j - 1) < 0.5 * fabs(fs[j]) ||
+                    fabs(fs[j]) < TOUCH_RATIO * fmin(fabs(fs[j - 1]), fabs(fs[j + 1])))) {
+            if ((rc = touch_check(c, xs[j - 1], fs[j - 1], xs[j], fs[j], xs[j + 1], fs[j + 1], out)))
+                return rc;
+        }
+    }
+    return EL_OK;
+}
+
+static int solve_piece(fctx *c, double a, double b, int ns, hrootlist *out)
+{
+    double xs[1002 + REFINE_MAX], fs[1002 + REFINE_MAX];
+    const double eps = 1e-10 * (b - a) + 1e-14 * (fabs(a) + fabs(b));
+    if (!(b - a > 4.0 * eps)) return EL_OK;
+    /* cos(pi j / ns) by the Chebyshev recurrence c_{j+1} = 2 c_1 c_j - c_{j-1} */
+    const double c1 = cos(M_PI / ns);
+    double cprev = c1, cj = 1.0;
+    for (int j = 0; j <= ns; j++) {
+        xs[j] = a + (b - a) * 0.5 * (1.0 - cj);
+        if (j == 0) xs[j] = a + eps;
+        if (j == ns) xs[j] = b - eps;
+        fs[j] = fobj_coarse(c, xs[j]);
+        const double cnext = 2.0 * c1 * cj - cprev;
+        cprev = cj;
+        cj = cnext;
+    }
+    return solve_samples(c, xs, fs, ns, b - a, out);
+}
+
+/* Near a separatrix crossing (a root of (40), (41)) for sigma above SEP_SIGMA the
+ * solutions lie exponentially close to it (ln(1/(|F| - sigma)) grows like
+ * sqrt(2 sigma) times the length passed near the saddle): there the piece is searched
+ * in y = ln|(|F| - sigma)| (the separatrix chart, hermite_objective.c), where the
+ * objective is smooth and, for small |F| - sigma, linear in y. Samples from y_c
+ * (|F| - sigma = 1e-3 sigma, where the x chart takes over) at growing distances down to
+ * |F| - sigma = 1e-300 sigma. */
+#define SEP_SIGMA 100.0
+static const double sep_steps[] = {0.0, 1.0, 2.5, 5.0, 10.0, 20.0, 40.0, 80.0, 160.0, 320.0, 690.0};
+enum { NSEP = sizeof sep_steps / sizeof sep_steps[0] };
+
+static int solve_sep_piece(fctx *c, double yc, hrootlist *out)
+{
+    double xs[NSEP + REFINE_MAX], fs[NSEP + REFINE_MAX];
+    for (int j = 0; j < NSEP; j++) {
+        xs[j] = yc - sep_steps[NSEP - 1 - j];
+        fs[j] = fobj_coarse(c, xs[j]);
+    }
+    return solve_samples(c, xs, fs, NSEP - 1, sep_steps[NSEP - 1], out);
+}
+
+/* The end x_end of a piece is a separatrix crossing and the piece runs towards
+ * x_end + dir: the separatrix piece next to it, and into *xc the x where the x chart
+ * takes over (x_end when there is none). */
+static int separatrix_end(const hprob *pr, int b, double x_end, double dir, double width,
+                          hrootlist *out, double *xc)
+{
+    *xc = x_end;
+    if (!(pr->sigma > SEP_SIGMA)) return EL_OK;
+    /* the side of the separatrix the piece lies on: the sign of |F| - sigma inside */
+    hstate st;
+    const double xin = x_end + dir * 1e-6 * width;
+    if (el__hermite_curvdata(pr, xin, b, &st)) return EL_OK;
+    const double F1 = -2.0 * st.k0p, F2 = st.k0 * st.k0 - pr->sigma, d = sqrt(F1 * F1 + F2 * F2) - pr->sigma;
+    if (d == 0.0) return EL_OK;
+    fctx c;
+    fctx_init(&c, pr, b);
+    c.sep = 1;
+    c.side = d > 0.0 ? 1 : -1;
+    c.w0 = pr->hcase == 3 ? xin : xin;
+    /* y_c: |F| - sigma = 1e-3 sigma, or half its value mid-piece where the piece does
+     * not reach that far from the separatrix */
+    double dc = 1e-3 * pr->sigma;
+    if (!el__hermite_curvdata(pr, x_end + 0.5 * dir * width, b, &st)) {
+        const double G1 = -2.0 * st.k0p, G2 = st.k0 * st.k0 - pr->sigma, dm = sqrt(G1 * G1 + G2 * G2) - pr->sigma;
+        if (dm * d > 0.0) dc = fmin(dc, 0.5 * fabs(dm));
+    }
+    const double yc = log(dc);
+    double x;
+    if (piece_eval(&c, yc, COARSE_QS, &st, &x) || !((x - x_end) * dir > 0.0) || !(fabs(x - x_end) < width))
+        return EL_OK;                                  /* the x chart covers the piece */
+    *xc = x;
+    c.w0 = x;
+    return solve_sep_piece(&c, yc, out);
+}
+
+/* The kind of curve on a piece between split points, from its midpoint;
+ * CLASS_NONE is confirmed at the quarter points, and CLASS_MIXED (they disagree:
+ * a split point missed by rounding) has the piece searched as it is. */
+static int piece_class(const hprob *pr, int b, double a, double c)
+{
+    const int mid = point_class(pr, b, 0.5 * (a + c));
+    if (mid != CLASS_NONE) return mid;
+    /* a piece is skipped only when the quarter points agree */
+    const int c1 = point_class(pr, b, a + 0.25 * (c - a)), c3 = point_class(pr, b, a + 0.75 * (c - a));
+    return c1 == CLASS_NONE && c3 == CLASS_NONE ? CLASS_NONE : CLASS_MIXED;
+}
+
+static int nbranches(const hprob *pr) { return pr->hcase == 1 ? 2 : pr->hcase == 2 ? 1 : 4; }
+
+/* All roots of the objectives for fixed sigma (seed 004 §4). */
+int el__hermite_solve_tension(hprob *pr, int ns, hrootlist *out)
+{
+    int rc = kappa_bound(pr->sigma, pr->Lmin, &pr->B);
+    if (rc || pr->B < 0.0) return rc;
+    /* roots of (40) in [-B, B], each assigned to its objective; for sigma <= 0
+     * kappa_m^2 = 2 sigma cannot happen (apart from kappa = 0, a split point anyway) */
+    double r40[8];
+    int b40[8], n40 = 0;
+    if (pr->hcase != 3 && pr->sigma > 0.0) {
+        double r[8];
+        int nr;
+        const poly p = poly40(pr);
+        poly_roots_in(p.c, p.d, -pr->B, pr->B, 4e-16, r, &nr);
+        for (int i = 0; i < nr; i++)
+            if (fabs(r[i]) < pr->B) { r40[n40] = r[i]; b40[n40++] = root_branch(pr, r[i]); }
+    }
+    for (int b = 0; b < nbranches(pr); b++) {
+        const double X = domain_half(pr, b);
+        if (!(X > 0.0)) continue;
+        ptlist l;
+        if ((rc = split_points(pr, b, X, r40, b40, n40, &l))) return rc;
+        splitpt pts[MAXPTS + 2] = {{-X, 0}, {X, 0}};
+        int n = 2, cls[MAXPTS + 1];
+        for (int i = 0; i < l.n; i++)
+            if (l.v[i].x > -X && l.v[i].x < X) pts[n++] = l.v[i];
+        sort_splitpts(pts, n);
+        for (int i = 0; i + 1 < n; i++) cls[i] = piece_class(pr, b, pts[i].x, pts[i + 1].x);
+        fctx c;
+        fctx_init(&c, pr, b);
+        for (int i = 0; i + 1 < n; i++) {
+            if (cls[i] == CLASS_NONE) continue;            /* no curve anywhere on the piece */
+            /* inflectional neighbours across a soft split point form one piece */
+            const double a = pts[i].x;
+            const int a_sep = pts[i].soft == SPLIT_SEP;
+            while (cls[i] == CLASS_INFL && i + 2 < n && pts[i + 1].soft == SPLIT_SOFT && cls[i + 1] == CLASS_INFL) i++;
+            const double bb = pts[i + 1].x;
+            /* separatrix crossings at the ends: the pieces next to them in y (above) */
+            double xa = a, xb = bb;
+            if (a_sep && (rc = separatrix_end(pr, b, a, 1.0, bb - a, out, &xa))) return rc;
+            if (pts[i + 1].soft == SPLIT_SEP && (rc = separatrix_end(pr, b, bb, -1.0, bb - xa, out, &xb))) return rc;
+            /* samples in proportion to the piece's share of the domain, at least 2 */
+            const int m = 1 + (int)ceil(ns * (bb - a) / (2.0 * X));
+            if ((rc = solve_piece(&c, xa, xb, m > 1000 ? 1000 : m, out))) return rc;
+        }
+    }
+    return EL_OK;
+}
+
+
+int el_hermite_analyse(const double P[2], const double V[2], double sigma,
+                       el_hermite_analysis *a)
+{
+    if (!P || !V || !a) return EL_EINVAL;
+    const double v[5] = {P[0], P[1], V[0], V[1], sigma};
+    if (el__all_finite(v, 5) || fabs(hypot(P[0], P[1]) - 1.0) > 1e-9 ||
+        fabs(hypot(V[0], V[1]) - 1.0) > 1e-9)
+        return EL_EINVAL;
+    if (sigma > 1e5) return EL_EDOM;           /* the range of el_hermite_solve */
+    el__gsl_quiet();
+    hprob pr = {P[0], P[1], V[0], V[1], sigma, 0, 1.0, 0.0};
+    el__hermite_set_case(&pr);
+    int rc = kappa_bound(sigma, 1.0, &pr.B);
+    if (rc) return rc;
+    el_hermite_analysis out;
+    memset(&out, 0, sizeof out);
+    out.hcase = pr.hcase;
+    out.kappa_bound = pr.B;
+    if (pr.B < 0.0) { *a = out; return EL_OK; }
+    double lo = -pr.B, hi = pr.B;
+    if (pr.hcase == 1) {
+        double c[3], r[2];
+        int nr;
+        disc_coeffs(&pr, c);
+        if ((rc = poly_real_roots(c, 2, r, &nr))) return rc;
+        /* pieces of [lo, hi] where disc >= 0 */
+        double pts[4] = {lo, hi, 0, 0};
+        int np = 2;
+        for (int i = 0; i < nr; i++) if (r[i] > lo && r[i] < hi) pts[np++] = r[i];
+        qsort(pts, (size_t)np, sizeof *pts, cmp_double);
+        for (int i = 0; i + 1 < np; i++) {
+            const double m = 0.5 * (pts[i] + pts[i + 1]);
+            if (c[2] * m * m + c[1] * m + c[0] < 0.0) continue;
+            if (out.ninterval > 0 && out.interval[2 * out.ninterval - 1] == pts[i])
+                out.interval[2 * out.ninterval - 1] = pts[i + 1];
+            else if (out.ninterval < 2) {
+                out.interval[2 * out.ninterval] = pts[i];
+                out.interval[2 * out.ninterval + 1] = pts[i + 1];
+                out.ninterval++;
+            }
+        }
+    } else if (pr.hcase == 2) {
+        out.ninterval = 1;
+        out.interval[0] = lo;
+        out.interval[1] = hi;
+    }
+    if (pr.hcase != 3) {
+        double r[8];
+        int nr;
+        const poly p = poly40(&pr);
+        poly_roots_in(p.c, p.d, -pr.B, pr.B, 4e-16, r, &nr);
+        for (int i = 0; i < nr && out.nroot < 8; i++) {
+            int inside = 0;
+            for (size_t j = 0; j < out.ninterval; j++)
+                inside |= r[i] >= out.interval[2 * j] && r[i] <= out.interval[2 * j + 1];
+            if (!inside) continue;
+            const int best = root_branch(&pr, r[i]);
+            out.root[out.nroot] = r[i];
+            out.root_branch[out.nroot++] = best;
+        }
+        int ns;
+        if ((rc = special_values(&pr, out.special, &ns))) return rc;
+        out.nspecial = (size_t)ns;
+        qsort(out.special, out.nspecial, sizeof(double), cmp_double);
+    }
+    *a = out;
+    return EL_OK;
+}
+
