@@ -16,6 +16,7 @@ from . import blend as B
 from . import ellblend as E
 from . import fit as F
 from . import icon
+from . import spline as Sp
 from .geometry import is_sketch
 
 CURRENT = []        # the open panel, if any (scripts and the GUI smoke test drive it)
@@ -107,6 +108,7 @@ class _Panel:
         self.doc = obj.Document
         self.created = created          # a command made it: its transaction is still open
         self.enablers = []              # (widget, callable -> bool)
+        self.edge_buttons = []          # (edge link property, button, text when empty)
         self.timer = QtCore.QTimer()
         self.timer.setSingleShot(True)
         self.timer.setInterval(DELAY_MS)
@@ -183,14 +185,55 @@ class _Panel:
             self.enablers.append((box, when))
         return box
 
-    def choice(self, grid, label, prop, values, texts, tip):
+    def choice(self, grid, label, prop, values, texts, tip, when=None):
         """A combo box bound live to the enumeration property prop."""
         box = _narrow(QtGui.QComboBox())
         box.addItems(list(texts))
         box.setCurrentIndex(list(values).index(getattr(self.obj, prop)))
         box.currentIndexChanged.connect(lambda i: self.set(prop, values[i]))
         self.row(grid, label, box, tip)
+        if when:
+            self.enablers.append((box, when))
         return box
+
+    def edge_button(self, grid, label, prop, tip, empty="free", when=None, picked=None):
+        """A button bound to the edge link prop: a click with an edge selected links it,
+        a click on a linked one frees it; ``picked()`` runs after a pick."""
+        btn = QtGui.QPushButton()
+        btn.clicked.connect(lambda _=False: self.pick_edge(prop, picked))
+        self.row(grid, label, btn, tip)
+        if when:
+            self.enablers.append((btn, when))
+        self.edge_buttons.append((prop, btn, empty))
+        self.show_edges()
+        return btn
+
+    def pick_edge(self, prop, picked=None):
+        if getattr(self.obj, prop):
+            self.set(prop, None)
+        else:
+            sel = [(s.Object, n) for s in Gui.Selection.getSelectionEx()
+                   for n in s.SubElementNames if n.startswith("Edge")]
+            if not sel:
+                self.result.setText("<b style='color:#b00'>select an edge first</b>")
+                return
+            self.set(prop, (sel[0][0], [sel[0][1]]))
+            if picked:
+                picked()
+        self.show_edges()
+
+    def show_edges(self):
+        for prop, btn, empty in self.edge_buttons:
+            link = getattr(self.obj, prop)
+            btn.setText(f"{link[0].Label}.{link[1][0]}" if link and link[1] else empty)
+
+    @staticmethod
+    def show_value(box, value):
+        """Show a result in a box the user does not edit now (no signal, no selection)."""
+        box.blockSignals(True)
+        box.setValue(value)
+        box.blockSignals(False)
+        box.lineEdit().deselect()
 
     def output_rows(self, grid, exclude, new_label):
         """Keep the feature or not; copy its B-spline into a sketch (not those in exclude)."""
@@ -333,16 +376,11 @@ class FitPanel(_Panel):
         self.pin_end = self.check(g, "Pin the end", "PinEnd",
                                   "The curve ends exactly at the last point (one-piece fits; "
                                   "needs the fit library's constraints)", when=constrained)
-        self.tangents = []
         for prop, text in (("StartTangent", "Start"), ("EndTangent", "End")):
-            btn = QtGui.QPushButton()
-            btn.clicked.connect(lambda _=False, p=prop: self.pick_tangent(p))
-            self.row(g, f"{text} tangent", btn,
-                     f"{text} tangent: click with an edge selected to follow its tangent there, "
-                     "click again to free it (one-piece fits; needs the fit library's "
-                     "constraints)")
-            self.enablers.append((btn, constrained))
-            self.tangents.append((prop, btn))
+            self.edge_button(g, f"{text} tangent", prop,
+                             f"{text} tangent: click with an edge selected to follow its tangent "
+                             "there, click again to free it (one-piece fits; needs the fit "
+                             "library's constraints)", when=constrained)
         b = self.box("B-spline")
         self.tol = self.number(b, "Tolerance", "Tolerance", 1e-9, 1e3, 1e-3, "mm",
                                "Largest distance of the B-spline from the smooth elastica (mm); "
@@ -363,24 +401,6 @@ class FitPanel(_Panel):
         out = self.box("Output")
         # not into a source sketch: writing there would feed the fit its own output
         self.output_rows(out, [s.Name for s, _ in o.Source], "(new sketch in the fit plane)")
-        self.show_tangents()
-
-    def show_tangents(self):
-        for prop, btn in self.tangents:
-            link = getattr(self.obj, prop)
-            btn.setText(f"{link[0].Label}.{link[1][0]}" if link and link[1] else "free")
-
-    def pick_tangent(self, prop):
-        if getattr(self.obj, prop):
-            self.set(prop, None)
-        else:
-            sel = [(s.Object, n) for s in Gui.Selection.getSelectionEx()
-                   for n in s.SubElementNames if n.startswith("Edge")]
-            if not sel:
-                self.result.setText("<b style='color:#b00'>select an edge first</b>")
-                return
-            self.set(prop, (sel[0][0], [sel[0][1]]))
-        self.show_tangents()
 
     def result_text(self):
         o = self.obj
@@ -418,6 +438,8 @@ class BlendPanel(_Panel):
                                "Checked: from the first edge's end vertex; else its start")
         self.end2 = self.check(g, "Enter edge 2 at its end vertex", "AtEnd2",
                                "Checked: into the second edge's end vertex; else its start")
+        self.continuity = self.choice(g, "Continuity", "Continuity", B.CONTINUITIES,
+                                      ["G1 (tangent)", "G2 (curvature)"], B.G2_TIP)
         s = self.box("Solutions")
         self.list = QtGui.QListWidget()
         self.list.setWordWrap(True)
@@ -504,10 +526,7 @@ class BlendPanel(_Panel):
         for box, values, active in ((self.length, o.Lengths, o.Mode == "length"),
                                     (self.tension, o.Tensions, o.Mode == "tension")):
             if not active and i < len(values):
-                box.blockSignals(True)
-                box.setValue(values[i])
-                box.blockSignals(False)
-                box.lineEdit().deselect()
+                self.show_value(box, values[i])
         super().refresh()
 
     def result_text(self):
@@ -520,6 +539,131 @@ class BlendPanel(_Panel):
         doc = f"App.getDocument({self.doc.Name!r})"
         return ("from freecad.elastica import blend as elastica_blend\n"
                 f"elastica_blend.copy_into_sketch({doc}.getObject({self.obj.Name!r}))\n")
+
+
+class SplinePanel(_Panel):
+    title = "Elastic spline"
+    icon_name = "spline"
+    MAX_DUCK_LINES = 8          # the duck forces listed in the panel (all are in DuckForces)
+
+    def build(self):
+        o = self.obj
+        g = self.box("Elastic spline")
+        self.mode = self.choice(g, "Solve for", "Mode", Sp.MODES, ["a tension", "a length"],
+                                "A tension (0: the free batten, the fairest curve through the "
+                                "points) or a total length (the tension follows)")
+        self.tension = self.number(g, "Tension", "Tension", -1e6, 1e6, self.tension_step(),
+                                   "1/mm\u00b2", "Tension sigma (1/mm\u00b2, >= 0): 0 = the free "
+                                   "batten, larger pulls it straighter between the points. In "
+                                   "length mode: the tension the length needs",
+                                   when=lambda: o.Mode == "tension")
+        self.length = self.number(g, "Length", "Length", 0.0, 1e7, 1.0, "mm",
+                                  "Total length (mm), longer than the polygon through the "
+                                  "points; 0 = the free batten's. In tension mode: the "
+                                  "spline's length", when=lambda: o.Mode == "length")
+        self.closed = self.check(g, "Closed", "Closed",
+                                 "A closed batten through the points (no ends)")
+        ends = self.box("Ends")
+        is_open = lambda: not o.Closed  # noqa: E731
+        self.ends = []
+        for end, which in (("Start", "first"), ("End", "last")):
+            combo = self.choice(ends, end, f"{end}Condition", Sp.END_CONDITIONS,
+                                ["natural", "tangent to edge", "G2 to edge"],
+                                f"At the {which} point: natural (curvature 0), tangent to the "
+                                f"{end.lower()} edge, or G2 to it (tangent and curvature: that "
+                                "end's span then takes a tension of its own)", when=is_open)
+            btn = self.edge_button(ends, f"{end} edge", f"{end}Edge",
+                                   f"Select an edge, then click: the {which} point follows it "
+                                   "(at its end nearest the point); click again to free it",
+                                   empty="pick an edge", when=is_open,
+                                   picked=lambda e=end: self.edge_picked(e))
+            self.ends.append((combo, btn))
+        r = self.box("Result")
+        self.row(r, "", self.result)
+        vo = o.ViewObject
+        self.show_comb = self.check(r, "Show the curvature comb", "ShowComb",
+                                    "Teeth outside the bend, as long as the curvature", target=vo)
+        self.show_forces = self.check(r, "Show the duck forces", "ShowForces",
+                                      "An arrow at each point: the force its duck exerts on the "
+                                      "batten", target=vo)
+        self.stiffness = self.number(r, "Stiffness EI", "Stiffness", 0.0, 1e15, 1e4,
+                                     "N\u00b7mm\u00b2", "Bending stiffness EI of the batten "
+                                     "(N\u00b7mm\u00b2): the duck forces in newtons; 0 = in "
+                                     "units of EI/2")
+        b = self.box("B-spline")
+        self.tol = self.number(b, "Tolerance", "Tolerance", 1e-9, 1e3, 1e-3, "mm",
+                               "Largest distance of the B-spline from the spline (mm); arrows "
+                               "step by a factor of 10", decade=True)
+        self.degree = self.integer(b, "Degree", "Degree", 3, 7,
+                                   "Degree of the one B-spline (3 to 7), G2 at the points")
+        out = self.box("Output")
+        self.output_rows(out, [s.Name for s, _ in o.Points], "(new sketch in the spline's plane)")
+
+    def tension_step(self):
+        """An arrow step of about a tenth of the tension scale 1/h^2 (h: the mean
+        distance between the points)."""
+        ducks = list(self.obj.Ducks)
+        h = sum((a - b).Length for a, b in zip(ducks, ducks[1:])) / max(len(ducks) - 1, 1)
+        return float(f"{0.1 / h ** 2:.0e}") if h > 0 else 1e-4
+
+    def edge_picked(self, end):
+        """A picked edge for a natural end makes it tangent (the user may ask for G2)."""
+        prop = f"{end}Condition"
+        if getattr(self.obj, prop) == "natural":
+            self.set(prop, "tangent")
+            combo = self.ends[0 if end == "Start" else 1][0]
+            combo.blockSignals(True)
+            combo.setCurrentIndex(Sp.END_CONDITIONS.index("tangent"))
+            combo.blockSignals(False)
+
+    def changed(self, prop):
+        o = self.obj
+        if prop == "Mode" and o.Ducks and not o.Status.startswith("error"):
+            # the new mode starts from the spline on screen
+            if o.Mode == "length":
+                o.Length = o.SplineLength
+            elif o.SplineTension >= 0:
+                o.Tension = o.SplineTension
+
+    def refresh(self):
+        o = self.obj
+        tension_mode = o.Mode == "tension"
+        # a tension given must be >= 0; a length's tension may be negative (pushed)
+        self.tension.blockSignals(True)
+        self.tension.setMinimum(0.0 if tension_mode else -1e6)
+        self.tension.blockSignals(False)
+        given, shown = (self.tension, self.length) if tension_mode else (self.length, self.tension)
+        if given.value() != getattr(o, "Tension" if tension_mode else "Length"):
+            self.show_value(given, getattr(o, "Tension" if tension_mode else "Length"))
+        if o.Ducks and not o.Status.startswith("error"):
+            self.show_value(shown, o.SplineLength if tension_mode else o.SplineTension)
+        super().refresh()
+
+    def forces_text(self):
+        o = self.obj
+        forces = [v.Length for v in o.DuckForces]
+        if not forces:
+            return ""
+        ei = o.Stiffness
+        unit, scale = ("N", 0.5 * ei) if ei > 0 else ("EI/2\u00b7/mm\u00b2", 1.0)
+        order = sorted(range(len(forces)), key=lambda i: -forces[i])[:self.MAX_DUCK_LINES]
+        more = len(forces) - len(order)
+        items = ", ".join(f"{i + 1}: {forces[i] * scale:.3g}" for i in sorted(order))
+        return (f"duck forces ({unit}): {items}"
+                + (f" (the {len(order)} largest of {len(forces)})" if more else ""))
+
+    def result_text(self):
+        o = self.obj
+        radius = f" (radius {1 / o.MaxCurvature:.3g} mm)" if o.MaxCurvature > 0 else ""
+        notes = o.Status.split("; ")[1:]
+        lines = [f"length {_fmt(o.SplineLength)}, tension {o.SplineTension:.4g}/mm\u00b2"
+                 + (" (free batten)" if o.SplineTension == 0 else ""),
+                 f"energy \u222b\u03ba\u00b2 {o.Energy:.4g}/mm, max curvature "
+                 f"{o.MaxCurvature:.3g}/mm{radius}",
+                 self.forces_text(),
+                 f"B-spline: {o.Poles} poles, degree {o.Degree}, within "
+                 f"{_fmt(o.BSplineDeviation)}"] + notes
+        return "<br>".join(line for line in lines if line)
 
 
 class EllipticBlendPanel(_Panel):
@@ -602,8 +746,8 @@ class CombPanel(_Panel):
         return f"scale {self.obj.UsedScale:.4g} mm\u00b2; {self.obj.Status}"
 
 
-PANELS = {"Fit": FitPanel, "Blend": BlendPanel, "EllipticBlend": EllipticBlendPanel,
-          "G2Quad": G2QuadPanel, "Comb": CombPanel}
+PANELS = {"Fit": FitPanel, "Blend": BlendPanel, "Spline": SplinePanel,
+          "EllipticBlend": EllipticBlendPanel, "G2Quad": G2QuadPanel, "Comb": CombPanel}
 
 
 def open_for(obj, created=False):
