@@ -17,14 +17,16 @@ from .proxy import (FeatureProxy, InputProblem, add_enum, add_property, attach_v
 
 MODES = ["length", "tension"]
 CONTINUITIES = ["G1", "G2"]
+G2_DUCKS = (1, 2, 3, 4, 6, 8)     # points of the G1 curve a G2 blend may pass (g2_blend)
 BSPLINE_DEGREE = 5          # a blend's B-spline: few poles at the preference tolerance
 RESULT_LISTS = ("Lengths", "Energies", "Tensions", "Inflections", "Loops", "MaxCurvatures",
                 "Descriptions", "SpanTensions")
 G2_TIP = ("G1: one elastica, tangent to both edges. G2: tangent and curvature continuous at "
           "both joins; one elastica cannot match both curvatures, so the G2 blend is an elastic "
-          "spline through the points at 1/3 and 2/3 of the chosen G1 solution (by arc length): "
-          "its middle third keeps that solution's tension, the end thirds take tensions of "
-          "their own; close to the G1 curve, its length follows")
+          "spline through 1 to 8 evenly spaced points of the chosen G1 solution (the fairest: "
+          "fewest inflections, then least energy); its inner spans keep that solution's "
+          "tension, the two end spans take tensions of their own. It stays close to the G1 "
+          "curve; its length follows")
 
 
 def nearest_ends(e0, e1):
@@ -115,37 +117,51 @@ def blend_core(e0, at_end0, e1, at_end1, plane=None, mode="tension", value=0.0):
     return {"curves": sols, "placement": plane, "distance": dist, "ends": ends}
 
 
+def inflections(pieces):
+    """Inflections of a chain of elasticae (curvature continuous at the joins)."""
+    return sum(len(el().elastica_inflections(p)) for p in pieces)
+
+
 def g2_blend(r, i, tol, degree):
-    """The G2 blend around solution ``i`` of blend_core's result ``r``: the elastic
-    spline from the first edge's end through the points at 1/3 and 2/3 (by arc
-    length) of that solution to the second edge's end, with both edges' tangent
-    AND curvature at the joins. One elastica cannot do it (8 conditions, 7
-    parameters); the library's G2 ends give each end span a tension of its own, so
-    the batten needs two ducks: its middle span keeps the solution's tension (0
-    when that is negative: the library's tension mode), and the ducks keep it close
-    to the G1 curve the user previewed. (One duck, both spans on their own
-    tensions, fails far more often in the library's solver.) Returns
-    (el.ElasticSpline, its B-spline). Raises InputProblem."""
+    """The G2 blend along solution ``i`` of blend_core's result ``r``: an elastic
+    spline from the first edge's end to the second's through m points evenly spaced
+    (by arc length) on that solution, with both edges' tangent AND curvature at the
+    joins. One elastica cannot do it (8 conditions, 7 parameters); the library's G2
+    ends give each end span a tension of its own, so the batten needs ducks: its
+    inner spans keep the solution's tension (0 when that is negative: the library's
+    tension mode), and the ducks keep it close to the G1 curve the user previewed.
+    Of m = 1, 2, 3, 4, 6, 8 the fairest batten is taken: the fewest inflections,
+    then the least energy (one duck often has no solution, and more ducks trade
+    energy for wiggles near the ends). Returns (el.ElasticSpline, m, its B-spline).
+    Raises InputProblem."""
     (e0, at0, a0, t0), (e1, at1, a1, t1) = r["ends"]
     plane = r["placement"]
     k0 = plane_curvature(e0, at0, t0, plane, "the first edge")
     k1 = plane_curvature(e1, at1, t1, plane, "the second edge")
     c = r["curves"][i]
-    ducks = c.points([c.length / 3.0, 2.0 * c.length / 3.0])
-    if np().hypot(*(ducks[0] - a0)) > np().hypot(*(ducks[1] - a0)):   # stored a1 -> a0
-        ducks = ducks[::-1]
-    e = el()
-    try:
-        sp = e.elastic_spline(np().vstack([a0, ducks, a1]),
-                              tension=max(float(getattr(c, "sigma", 0.0)), 0.0),
-                              start={"tangent": tuple(t0), "curvature": k0},
-                              end={"tangent": tuple(t1), "curvature": k1})
-    except (ValueError, ArithmeticError, RuntimeError):
+    n, e = np(), el()
+    best = None
+    for m in G2_DUCKS:
+        ducks = c.points(c.length * n.arange(1, m + 1) / (m + 1))
+        if n.hypot(*(ducks[0] - a0)) > n.hypot(*(ducks[-1] - a0)):   # stored a1 -> a0
+            ducks = ducks[::-1]
+        try:
+            sp = e.elastic_spline(n.vstack([a0, ducks, a1]),
+                                  tension=max(float(getattr(c, "sigma", 0.0)), 0.0),
+                                  start={"tangent": tuple(t0), "curvature": k0},
+                                  end={"tangent": tuple(t1), "curvature": k1})
+        except (ValueError, ArithmeticError, RuntimeError):
+            continue
+        key = (inflections(sp.pieces), sp.energy)
+        if best is None or key < best[0]:
+            best = (key, sp, m)
+    if best is None:
         raise InputProblem(f"no G2 blend along solution {i + 1}: the edges' curvatures "
                            f"({k0:.3g}, {k1:.3g}/mm) ask more than a batten there can give; "
-                           "pick another solution, tension or length, or G1") from None
+                           "pick another solution, tension or length, or G1")
+    _, sp, m = best
     try:
-        return sp, sp.to_bspline(tol, degree)
+        return sp, m, sp.to_bspline(tol, degree)
     except (ValueError, ArithmeticError, RuntimeError) as exc:
         raise InputProblem(f"B-spline failed: {exc}") from None
 
@@ -220,13 +236,13 @@ class BlendProxy(FeatureProxy):
         add_property(obj, "App::PropertyStringList", "Descriptions", "Result",
                      "Every solution in words")
         add_property(obj, "App::PropertyFloatList", "SpanTensions", "Result",
-                     "G2: the tension of each third of the blend (1/mm^2; the middle one is the "
+                     "G2: the tension of each span of the blend (1/mm^2; the inner ones are the "
                      "G1 solution's); empty for G1")
         add_property(obj, "App::PropertyInteger", "Poles", "Result", "Poles of the B-spline")
         add_property(obj, "App::PropertyString", "Status", "Result", "Outcome of the last solve")
         add_property(obj, "App::PropertyString", "Curves", "Result",
                      "The blend's elastica(e) (JSON, plane coordinates): the chosen solution, "
-                     "or the G2 blend's three pieces")
+                     "or the G2 blend's pieces")
         add_property(obj, "App::PropertyPlacement", "Plane", "Result", "The plane of the blend")
         read_only(obj, *RESULT_LISTS, "Poles", "Status", "Curves", "Plane")
 
@@ -259,7 +275,7 @@ class BlendProxy(FeatureProxy):
                                f"(0 to {len(curves) - 1})")
         tol, degree = check_tolerance(obj.Tolerance), check_degree(obj.Degree)
         if obj.Continuity == "G2":
-            r["g2"], r["bspline"] = g2_blend(r, obj.Solution, tol, degree)
+            r["g2"], r["g2_ducks"], r["bspline"] = g2_blend(r, obj.Solution, tol, degree)
             return r
         try:
             r["bspline"] = curve_bspline(curves[obj.Solution], tol, degree)
@@ -287,9 +303,10 @@ class BlendProxy(FeatureProxy):
         obj.Curves = json.dumps([curve_to_dict(c) for c in (sp.pieces if sp else [curves[i]])])
         obj.SpanTensions = [float(t) for t in sp.tensions] if sp else []
         obj.Status = f"solution {i + 1} of {len(curves)}" + (
-            f"; G2 along it: {sp.length:.4g} mm, energy {sp.energy:.3g}/mm, max curvature "
-            f"{sp.max_curvature:.3g}/mm, the thirds' tensions "
-            f"{', '.join(f'{t:.3g}' for t in sp.tensions)}/mm\u00b2" if sp else "")
+            f"; G2 along it (through {r['g2_ducks']} of its points): {sp.length:.4g} mm, energy "
+            f"{sp.energy:.3g}/mm, max curvature {sp.max_curvature:.3g}/mm, "
+            f"{inflections(sp.pieces)} inflections, end spans' tensions {sp.tensions[0]:.3g}, "
+            f"{sp.tensions[-1]:.3g}/mm\u00b2" if sp else "")
 
     def on_error(self, obj):
         """A failed solve lists no solutions (the old curve stays, drawn dashed)."""

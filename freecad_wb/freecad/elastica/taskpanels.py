@@ -121,6 +121,7 @@ class _Panel:
         self.form = []
         self.build()
         self.refresh()
+        self.refit()
 
     # ---------------------------------------------------------------- building
 
@@ -277,6 +278,32 @@ class _Panel:
         except Exception as exc:  # never let a preview escape
             App.Console.PrintError(f"Elastica: {exc}\n")
         self.refresh()
+        self.refit()
+
+    view_box = None
+
+    def view_objects(self):
+        """The objects besides the feature the view keeps in sight; None: the panel
+        leaves the view alone."""
+        return None
+
+    def refit(self):
+        """Fit the view to the feature and its view_objects when it leaves what was in
+        view at the last fit, or shrinks to a small part of it."""
+        others = self.view_objects()
+        if others is None or self.obj.Shape.isNull() or Gui.ActiveDocument is None:
+            return
+        bb = self.obj.Shape.BoundBox
+        if self.view_box is not None and self.view_box.isInside(bb) and \
+                bb.DiagonalLength >= 0.25 * self.view_box.DiagonalLength:
+            return
+        box = App.BoundBox(bb)
+        for o in others:
+            shape = getattr(o, "Shape", None)
+            if shape is not None and not shape.isNull():
+                box.add(shape.BoundBox)
+        self.view_box = box
+        show_box(box)
 
     def refresh(self):
         """Result text (the error in red) and which fields apply."""
@@ -345,6 +372,20 @@ class _Panel:
         Gui.Control.closeDialog()
         if Gui.ActiveDocument is not None:
             Gui.ActiveDocument.resetEdit()
+
+
+def show_box(box):
+    """Fit the active 3D view to a bounding box (with a margin for combs and arrows)."""
+    view = Gui.ActiveDocument.ActiveView
+    try:
+        from pivy import coin
+        w, h = view.getSize()
+        d = 0.15 * box.DiagonalLength
+        view.getCameraNode().viewBoundingBox(
+            coin.SbBox3f(box.XMin - d, box.YMin - d, box.ZMin - d,
+                         box.XMax + d, box.YMax + d, box.ZMax + d), w / max(h, 1), 1.0)
+    except Exception:  # a view without a Coin camera: fit everything
+        Gui.SendMsgToActiveView("ViewFit")
 
 
 def _fmt(v, unit="mm"):
@@ -421,7 +462,6 @@ class BlendPanel(_Panel):
     def build(self):
         o = self.obj
         self.picked = None              # the user's choice of solution, kept across edits
-        self.view_box = None
         g = self.box("Elastic blend")
         self.mode = self.choice(g, "Solve for", "Mode", B.MODES, ["a length", "a tension"],
                                 "A tension (0: the free batten, the fairest curve) or a given "
@@ -488,23 +528,9 @@ class BlendPanel(_Panel):
                 and self.picked < len(o.Lengths):
             o.Solution = self.picked            # the user's pick survives the edit
             super().update()
-        self.refit()
 
-    def refit(self):
-        """Fit the view when the blend leaves what was in view at the last fit, or
-        shrinks to a small part of it."""
-        if self.obj.Shape.isNull():
-            return
-        bb = self.obj.Shape.BoundBox
-        if self.view_box is None or not self.view_box.isInside(bb) or \
-                bb.DiagonalLength < 0.25 * self.view_box.DiagonalLength:
-            box = App.BoundBox(bb)
-            for link in (self.obj.Edge1, self.obj.Edge2):
-                if link and link[0].Shape and not link[0].Shape.isNull():
-                    box.add(link[0].Shape.BoundBox)
-            self.view_box = box
-            if Gui.ActiveDocument is not None:
-                Gui.SendMsgToActiveView("ViewFit")
+    def view_objects(self):
+        return [link[0] for link in (self.obj.Edge1, self.obj.Edge2) if link]
 
     def pick(self, row):
         if row >= 0 and row != self.obj.Solution:
@@ -600,11 +626,16 @@ class SplinePanel(_Panel):
         self.output_rows(out, [s.Name for s, _ in o.Points], "(new sketch in the spline's plane)")
 
     def tension_step(self):
-        """An arrow step of about a tenth of the tension scale 1/h^2 (h: the mean
-        distance between the points)."""
+        """An arrow step of the tension scale 1/h^2 (h: the mean distance between
+        the points: sigma h^2 = 1 bends a span visibly less)."""
         ducks = list(self.obj.Ducks)
         h = sum((a - b).Length for a, b in zip(ducks, ducks[1:])) / max(len(ducks) - 1, 1)
-        return float(f"{0.1 / h ** 2:.0e}") if h > 0 else 1e-4
+        return float(f"{1.0 / h ** 2:.0e}") if h > 0 else 1e-4
+
+    def view_objects(self):
+        o = self.obj
+        return [src for src, _ in o.Points] + [link[0] for link in (o.StartEdge, o.EndEdge)
+                                               if link]
 
     def edge_picked(self, end):
         """A picked edge for a natural end makes it tangent (the user may ask for G2)."""

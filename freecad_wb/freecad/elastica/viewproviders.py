@@ -22,8 +22,9 @@ ICONS = {"Fit": "fit", "Blend": "blend", "Comb": "comb", "EllipticBlend": "ellbl
          "G2Quad": "g2quad", "Spline": "spline"}
 WIDTHS = {"Fit": 3.0, "Blend": 3.0, "Comb": 1.0, "EllipticBlend": 3.0, "G2Quad": 3.0,
           "Spline": 3.0}
-# overlays drawn beside a feature's shape: groups of (colour, markers, segments)
-OVERLAY_GROUPS = {"Fit": 1, "G2Quad": 1, "Spline": 3}
+# overlays drawn beside a feature's shape: groups of (colour, markers, segments), each
+# drawn with its line width
+OVERLAY_GROUPS = {"Fit": (1.0,), "G2Quad": (1.0,), "Spline": (1.0, 1.0, 2.5)}
 SPLINE_COMB_TEETH = 150     # teeth along a whole spline
 ARROW_SHARE = 0.1           # the longest duck-force arrow: this share of the spline's size
 
@@ -137,20 +138,22 @@ def restored(obj):
                                  finish_opening(App.getDocument(name)))
 
 
-def _arrows(feet, vectors, length):
-    """Segment pairs of arrows from ``feet`` along ``vectors``, the longest ``length``
-    long, each with a two-stroke head."""
+def _arrows(tips, vectors, length):
+    """Segment pairs of arrows along ``vectors`` ending at ``tips`` (a force drawn
+    pushing on its point), the longest ``length`` long, each with a two-stroke head;
+    plane coordinates (z = 0)."""
     big = max((v.Length for v in vectors), default=0.0)
     out = []
     if big <= 0:
         return out
-    for p, v in zip(feet, vectors):
+    for tip, v in zip(tips, vectors):
         if v.Length <= 1e-9 * big:
             continue
-        tip = p + v * (length / big)
-        back = (p - tip) * 0.25
-        side = App.Vector(-back.y, back.x, back.z)      # in the plane seen from above
-        out += [p, tip, tip, tip + back + side * 0.5, tip, tip + back - side * 0.5]
+        tail = tip - v * (length / big)
+        shaft = (tail - tip).Length
+        back = (tail - tip) * (min(0.25 * length, 0.5 * shaft) / shaft)   # heads alike
+        side = App.Vector(-back.y, back.x, 0.0)
+        out += [tail, tip, tip, tip + back + side * 0.5, tip, tip + back - side * 0.5]
     return out
 
 
@@ -173,11 +176,11 @@ def _spline_overlay(vobj, rgb):
         rot = obj.Plane.Rotation
         inv = rot.inverted()
         local = [inv.multVec(v) for v in obj.DuckForces]
-        feet = [inv.multVec(p - obj.Plane.Base) for p in obj.Ducks]
+        tips = [inv.multVec(p - obj.Plane.Base) for p in obj.Ducks]
         arrows = [rot.multVec(p) + obj.Plane.Base
-                  for p in _arrows(feet, local, ARROW_SHARE * size)]
+                  for p in _arrows(tips, local, ARROW_SHARE * size)]
     return [((0.15, 0.15, 0.15), ducks, []), (_lighter(rgb), [], comb),
-            ((0.75, 0.1, 0.1), [], arrows)]
+            ((0.8, 0.05, 0.05), [], arrows)]
 
 
 def overlay_content(vobj):
@@ -235,15 +238,15 @@ class ViewProvider:
     def attach(self, vobj):
         self.Object = vobj.Object
         self._overlay, self._groups = None, []
-        count = OVERLAY_GROUPS.get(_kind(vobj.Object), 0)
-        if not count:
+        widths = OVERLAY_GROUPS.get(_kind(vobj.Object), ())
+        if not widths:
             return
         from pivy import coin
         root = coin.SoSeparator()
         pick = coin.SoPickStyle()
         pick.style = coin.SoPickStyle.UNPICKABLE
         root.addChild(pick)
-        for _ in range(count):
+        for width in widths:
             # one group: a colour, markers and line segments
             sep = coin.SoSeparator()
             g = {"colour": coin.SoBaseColor(), "coords": coin.SoCoordinate3(),
@@ -251,7 +254,7 @@ class ViewProvider:
                  "lines": coin.SoLineSet()}
             style = coin.SoDrawStyle()
             style.pointSize = 6.0
-            style.lineWidth = 1.0
+            style.lineWidth = width
             for node in (g["colour"], style, g["coords"], g["points"]):
                 sep.addChild(node)
             lines = coin.SoSeparator()
