@@ -75,7 +75,7 @@ def run():
     view.fitAll()
     Gui.Selection.clearSelection()
     grab("freecad_workbench.png")
-    from freecad.elastica import taskpanels
+    from freecad.elastica import panelbase, taskpanels
     batten = next(o for o in doc.Objects
                   if getattr(getattr(o, "Proxy", None), "kind", "") == "Spline")
     batten.ViewObject.Visibility = False            # the keyline alone, centred
@@ -90,7 +90,7 @@ def run():
     pump()
     taskpanels.CURRENT[0].stiffness.setValue(6.7e4)     # a 2 x 10 mm pine strip: newtons
     pump()
-    taskpanels.show_box(batten.Shape.BoundBox)
+    panelbase.show_box(batten.Shape.BoundBox)
     grab("freecad_spline.png")
     taskpanels.CURRENT[0].reject()
 

@@ -304,7 +304,7 @@ def blend_panel(doc, S):
 
 def spline_panel(doc, S):
     import Part
-    from freecad.elastica import taskpanels as T
+    from freecad.elastica import panelbase, taskpanels as T
     ducks = [(0, -100), (30, -90), (60, -95), (90, -80), (120, -100)]
     sk = S.points_sketch(doc, ducks, "Ducks")
     line = doc.addObject("Sketcher::SketchObject", "Lead")      # a line into the first duck
@@ -392,7 +392,7 @@ def spline_panel(doc, S):
     check("duck forces (N)" in panel.result.text(), "spline: forces in newtons given EI")
     Gui.Selection.clearSelection()
     Gui.ActiveDocument.ActiveView.setCameraOrientation(s.Plane.Rotation)
-    T.show_box(s.Shape.BoundBox)
+    panelbase.show_box(s.Shape.BoundBox)
     screenshot("gui_spline_panel.png")
     check(panel.accept(), "spline panel accepts")
     pump()
