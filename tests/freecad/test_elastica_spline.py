@@ -309,6 +309,15 @@ class SplineTest(unittest.TestCase):
         s.Length = 150.0
         self.doc.recompute()
         self.assertTrue(s.Status.startswith("ok"), s.Status)
+        for prop, value in (("Stiffness", -1.0), ("Degree", 9), ("Tolerance", 0.0)):
+            old = getattr(s, prop)
+            setattr(s, prop, value)
+            self.doc.recompute()
+            self.assertTrue(s.Status.startswith("error") and prop in s.Status, (prop, s.Status))
+            self.assertEqual(getattr(s, prop), value)
+            setattr(s, prop, old)
+        self.doc.recompute()
+        self.assertTrue(s.Status.startswith("ok"), s.Status)
 
     def test_command_records_a_feature(self):
         s = C.spline_sources([(self.sk, [])], open_panel=False, Tension=1e-4)
