@@ -5,8 +5,10 @@ headless, and write
                   parametric Elastica features (the keyline fitted as two elasticae
                   meeting at its inflection, seed 000 §5; a one-piece fit and a
                   discrete fit for comparison; a curvature comb; the G2 quadratic
-                  B-spline of seed 002), each in its own colour named in its label,
-                  and a sketch "Keyline" in the fitted plane holding the B-splines.
+                  B-spline of seed 002; an elastic spline, the batten through six
+                  ducks set beside the keyline as for the next line of a lines plan),
+                  each in its own colour named in its label, and a sketch "Keyline"
+                  in the fitted plane holding the B-splines.
                   Opened in FreeCAD, the features get their icons, colours and task
                   panels (double-click);
   out/demo.svg    the data and the fitted curves in the keyline's plane, with curvature;
@@ -38,6 +40,8 @@ except ImportError:
 
 STEP = 3.0          # mm, equilateral resampling of the scan (seed 000 §5.3)
 TOL = 1e-3          # mm, B-spline tolerance
+NDUCKS = 6          # the elastic spline's ducks, on the keyline fit ...
+DUCK_OFFSET = 60.0  # mm, ... moved this far across its chord
 
 
 def run(src, out):
@@ -50,6 +54,7 @@ def run(src, out):
     from libelastica.report import curves_picture, save_picture
     from freecad.elastica import features as F
     from freecad.elastica import g2quad
+    from freecad.elastica import spline as elastica_spline
     from freecad.elastica.viewproviders import PALETTE
 
     t0 = time.time()
@@ -105,6 +110,21 @@ def run(src, out):
     doc.recompute()
     if g2.Status != "ok":
         raise RuntimeError(f"G2 quadratic B-spline: {g2.Status}")
+    # a batten through six ducks beside the keyline (DUCK_OFFSET mm across its chord, in
+    # its plane): the ducks are sketch points, moving one re-solves the batten
+    on_keyline = F.to_plane(keyline.Plane, keyline.Shape.discretize(Number=NDUCKS))[:, :2]
+    chord = on_keyline[-1] - on_keyline[0]
+    across = np.array([-chord[1], chord[0]]) / np.hypot(*chord)
+    ducks = doc.addObject("Sketcher::SketchObject", "Ducks")
+    ducks.Label = f"Ducks ({NDUCKS} sketch points)"
+    ducks.Placement = keyline.Plane
+    for x, y in on_keyline + DUCK_OFFSET * across:
+        ducks.addGeometry(Part.Point(App.Vector(float(x), float(y), 0.0)), False)
+    batten = elastica_spline.make(doc, [(ducks, [])], Tolerance=TOL)
+    batten.Label = f"Elastic spline through {NDUCKS} ducks - {PALETTE[4][0]}"
+    doc.recompute()
+    if batten.Status != "ok":
+        raise RuntimeError(f"elastic spline: {batten.Status}")
 
     os.makedirs(out, exist_ok=True)
     fcstd = os.path.join(out, "demo.FCStd")
@@ -156,6 +176,12 @@ def run(src, out):
         "sketch": {"name": sketch.Name, "bsplines": len(ids)},
         "g2_quadratic": {"pieces": g2.Pieces, "poles": g2.Poles, "deviation_mm": g2.Deviation,
                          "curvature_jump": g2.CurvatureJump},
+        "elastic_spline": {"ducks": NDUCKS, "tension_per_mm2": batten.SplineTension,
+                           "length_mm": batten.SplineLength, "energy_per_mm": batten.Energy,
+                           "max_curvature_per_mm": batten.MaxCurvature,
+                           "duck_forces_ei_half_per_mm2": [v.Length for v in batten.DuckForces],
+                           "bspline_poles": batten.Poles,
+                           "bspline_deviation_mm": batten.BSplineDeviation},
         "files": {k: (os.path.relpath(v, ROOT) if v.startswith(ROOT + os.sep) else v) for k, v in
                   (("fcstd", fcstd), ("svg", svg), ("json", os.path.join(out, "demo.json")))},
         "seconds": round(time.time() - t0, 2),
@@ -195,6 +221,10 @@ def run(src, out):
     g = report["g2_quadratic"]
     print(f"  G2 quadratic      {g['pieces']} pieces, {g['poles']} poles, within "
           f"{g['deviation_mm']:.2g} mm of the keyline, curvature jumps {g['curvature_jump']:.1g}")
+    b = report["elastic_spline"]
+    print(f"  elastic spline    free batten through {b['ducks']} ducks, {b['length_mm']:.1f} mm, "
+          f"energy {b['energy_per_mm']:.3g}/mm, largest duck force "
+          f"{max(b['duck_forces_ei_half_per_mm2']):.3g} EI/2/mm^2, {b['bspline_poles']} poles")
     print(f"  wrote             {files['fcstd']}, {files['svg']} ({backend}), {files['json']}")
     print(f"  reopened          {files['fcstd']}: recomputed from the scan, same result")
     print(f"  time              {report['seconds']} s")

@@ -125,6 +125,23 @@ def write_into_new_sketch(test, feature):
     return out
 
 
+def curvature_vector(curve, u):
+    """kappa N of a Part curve at u (zero where it is straight)."""
+    k = curve.curvature(u)
+    return curve.normal(u) * k if k > 1e-12 else App.Vector(0, 0, 0)
+
+
+def sides(bspline, u, span):
+    """(unit tangent, curvature vector) just before and just after the knot u of a
+    Part B-spline, each from the segment on its side (one-sided derivatives)."""
+    out = []
+    for a, b in ((u - span, u), (u, u + span)):
+        c = bspline.copy()
+        c.segment(a, b)
+        out.append((App.Vector(c.tangent(u)[0]).normalize(), curvature_vector(c, u)))
+    return out
+
+
 def distance_to_shape(points, shape):
     """Largest distance of 3D points from a shape."""
     return max(shape.distToShape(Part.Vertex(App.Vector(*p)))[0] for p in points)

@@ -4,9 +4,11 @@ examples/demo.py) opened in FreeCAD, seen along its plane,
 
   docs/gallery/freecad_workbench.png  the tree (colours named in the labels) and the
                                       keyline with its fit, comb, scan points and the
-                                      G2 quadratic B-spline;
+                                      G2 quadratic B-spline, the elastic spline;
   docs/gallery/freecad_fit_panel.png  the fit's task panel (double-click), zoomed in at
-                                      the inflection: fitted points, the comb.
+                                      the inflection: fitted points, the comb;
+  docs/gallery/freecad_spline.png     the elastic spline's task panel: the batten through
+                                      its ducks, its comb and the duck forces.
 
 FreeCAD is ended with os._exit (its exit status says nothing about a script)."""
 import os
@@ -73,10 +75,24 @@ def run():
     view.fitAll()
     Gui.Selection.clearSelection()
     grab("freecad_workbench.png")
+    from freecad.elastica import panelbase, taskpanels
+    batten = next(o for o in doc.Objects
+                  if getattr(getattr(o, "Proxy", None), "kind", "") == "Spline")
+    batten.ViewObject.Visibility = False            # the keyline alone, centred
+    view.fitAll()
     fit.ViewObject.Proxy.doubleClicked(fit.ViewObject)
     for _ in range(3):
         view.zoomIn()
     grab("freecad_fit_panel.png")
+    taskpanels.CURRENT[0].reject()
+    batten.ViewObject.Visibility = True
+    batten.ViewObject.Proxy.doubleClicked(batten.ViewObject)
+    pump()
+    taskpanels.CURRENT[0].stiffness.setValue(6.7e4)     # a 2 x 10 mm pine strip: newtons
+    pump()
+    panelbase.show_box(batten.Shape.BoundBox)
+    grab("freecad_spline.png")
+    taskpanels.CURRENT[0].reject()
 
 
 def main():

@@ -12,10 +12,12 @@ tests/freecad/freecad.mk: the Elastica workbench used as a user would.
 
 Screenshots (whole window, 3D view included) stay in $ELASTICA_TEST_OUT
 (build/freecad/): gui_demo.png, gui_blend_panel.png, gui_fit_panel.png,
-gui_ellblend_panel.png, gui_g2quad_panel.png, gui_comb_panel.png. The outcome goes
+gui_spline_panel.png, gui_ellblend_panel.png, gui_g2quad_panel.png,
+gui_comb_panel.png. The outcome goes
 to gui_smoke.result (first line PASS or FAIL); FreeCAD is then ended with os._exit
 because its exit status says nothing about a script. Only APIs present in FreeCAD
 0.20 and 1.0 are used (PySide through FreeCAD's shim)."""
+import math
 import os
 import sys
 import time
@@ -257,7 +259,14 @@ def blend_panel(doc, S):
     wait()
     check(abs(b.Shape.Length - 70.0) < 1e-2 and b.ViewObject.DrawStyle == "Solid",
           f"blend typed length 70 -> {b.Shape.Length:.4f}")
+    panel.continuity.setCurrentIndex(1)         # G2
+    wait()
+    check(b.Continuity == "G2" and len(b.SpanTensions) >= 2 and "G2 along it" in
+          panel.result.text() and abs(b.Shape.Length - 70.0) < 0.05 * 70,
+          f"blend: G2 continuity re-solves along the chosen curve ({b.Status})")
     screenshot("gui_blend_panel.png")
+    panel.continuity.setCurrentIndex(0)
+    wait()
     panel.into_sketch.setChecked(True)
     ng = len(sk.Geometry)
     check(panel.accept(), "blend panel accepts")
@@ -289,6 +298,123 @@ def blend_panel(doc, S):
     pump()
     check([o.Name for o in doc.Objects] == names, "Cancel removes a new feature")
     return b
+
+
+# ------------------------------------------------------------------ elastic spline
+
+def spline_panel(doc, S):
+    import Part
+    from freecad.elastica import panelbase, taskpanels as T
+    ducks = [(0, -100), (30, -90), (60, -95), (90, -80), (120, -100)]
+    sk = S.points_sketch(doc, ducks, "Ducks")
+    line = doc.addObject("Sketcher::SketchObject", "Lead")      # a line into the first duck
+    line.Placement = S.SKETCH_PLACEMENT
+    line.addGeometry(Part.LineSegment(App.Vector(-40, -112, 0), App.Vector(0, -100, 0)), False)
+    doc.recompute()
+    panel = open_panel(doc, "Elastica_Spline", [(sk, "")], "Elastic spline")
+    s = panel.obj
+    fits_combo_view(panel, "spline")
+    text = panel.result.text()
+    check(s.Status == "ok" and "free batten" in text and "energy" in text and "max curvature"
+          in text and "duck forces" in text, f"spline panel: the free batten described ({text})")
+    vp = s.ViewObject.Proxy
+    check(vp.overlay_counts(0) == (5, 0) and vp.overlay_counts(1)[1] > 200 and
+          vp.overlay_counts(2)[1] == 5 * 3, f"spline: ducks, comb and force arrows drawn "
+                                            f"{[vp.overlay_counts(i) for i in range(3)]}")
+    check(panel.tension.isEnabled() and not panel.length.isEnabled() and
+          abs(panel.length.value() - s.SplineLength) < 1e-6,
+          "spline, tension mode: length disabled, showing the spline's length")
+    l0 = s.SplineLength
+    click_arrow(panel.tension, up=True)
+    wait()
+    check(s.Tension > 0 and s.Status == "ok" and s.SplineLength < l0 and
+          abs(panel.length.value() - s.SplineLength) < 1e-6,
+          f"spline: an arrow click pulls the batten (tension {s.Tension:g}, length "
+          f"{l0:.4f} -> {s.SplineLength:.4f})")
+    panel.mode.setCurrentIndex(1)               # solve for a length
+    wait()
+    check(s.Mode == "length" and panel.length.isEnabled() and not panel.tension.isEnabled()
+          and abs(s.Length - s.SplineLength) < 1e-6 and s.Status == "ok",
+          "spline mode switch: length mode starts from the length on screen")
+    click_arrow(panel.length, up=True)
+    wait()
+    check(abs(s.SplineLength - (s.Length)) < 1e-6 and s.SplineTension < s.Tension and
+          abs(panel.tension.value() - s.SplineTension) < 1e-12,
+          f"spline: a longer batten is pushed (tension {s.SplineTension:.3g} shown)")
+    type_into(panel.length, "100")
+    wait()
+    check(s.Status.startswith("error") and "any length above" in panel.result.text() and
+          s.ViewObject.DrawStyle == "Dashed" and not panel.accept() and T.CURRENT,
+          f"spline: a too short length says which are possible ({s.Status})")
+    type_into(panel.length, "140")
+    wait()
+    check(s.Status == "ok" and abs(s.Shape.Length - 140) < 1e-3, "spline: typed length 140")
+    panel.mode.setCurrentIndex(0)
+    wait()
+    check(s.Mode == "tension" and s.Status == "ok" and panel.tension.minimum() == 0.0,
+          "spline: back to tension mode")
+    # a G2 start to the line: pick the edge, then the condition
+    start_combo, start_btn = panel.ends[0]
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(doc.Name, line.Name, "Edge1")
+    start_btn.click()
+    wait()
+    check(s.StartEdge and s.StartCondition == "tangent" and start_combo.currentIndex() == 1
+          and s.Status == "ok" and "Lead.Edge1" in start_btn.text(),
+          f"spline: a picked edge makes the start tangent ({s.Status})")
+    start_combo.setCurrentIndex(2)
+    wait()
+    check(s.StartCondition == "G2" and s.Status.startswith("error") and "tangent end" in
+          panel.result.text(), f"spline: a G2 start to a line, far from the batten's "
+                               f"curvature there, says what to do ({s.Status})")
+    # the user draws an arc into the first duck instead, bending a little more than the
+    # tangent batten starts: G2 to it
+    k = 1.2 * s.Proxy.plane_curves(s)[0][0].curvature([0.0])[0]
+    p, d = App.Vector(0, -100, 0), App.Vector(40, 12, 0).normalize()
+    centre = p + App.Vector(-d.y, d.x, 0) * (1.0 / k)
+    a = math.atan2(p.y - centre.y, p.x - centre.x)
+    line.delGeometry(0)
+    line.addGeometry(Part.ArcOfCircle(Part.Circle(centre, App.Vector(0, 0, 1), abs(1 / k)),
+                                      *((a - 0.8, a) if k > 0 else (a, a + 0.8))), False)
+    doc.recompute()
+    panel.refresh()
+    check(s.Status.startswith("ok") and "own tension" in panel.result.text(),
+          f"spline: G2 to an arc says its span takes its own tension ({s.Status})")
+    panel.closed.setChecked(True)
+    wait()
+    check(s.Closed and not start_combo.isEnabled() and not start_btn.isEnabled() and
+          s.Status == "ok", "spline: closed, the ends disabled")
+    panel.closed.setChecked(False)
+    start_combo.setCurrentIndex(1)
+    wait()
+    panel.stiffness.setValue(2e6)
+    wait()
+    check("duck forces (N)" in panel.result.text(), "spline: forces in newtons given EI")
+    Gui.Selection.clearSelection()
+    Gui.ActiveDocument.ActiveView.setCameraOrientation(s.Plane.Rotation)
+    panelbase.show_box(s.Shape.BoundBox)
+    screenshot("gui_spline_panel.png")
+    check(panel.accept(), "spline panel accepts")
+    pump()
+    # Cancel reverts an edit of an existing feature
+    before = (s.Mode, s.Tension, s.StartCondition, s.Closed, round(s.Shape.Length, 9))
+    panel = double_click(s)
+    check(panel is not None and panel.obj is s, "spline: double-click opens its panel")
+    panel.mode.setCurrentIndex(1)
+    click_arrow(panel.length, up=True)
+    wait()
+    check(round(s.Shape.Length, 9) != before[4], "spline edit previews")
+    panel.reject()
+    pump()
+    check((s.Mode, s.Tension, s.StartCondition, s.Closed, round(s.Shape.Length, 9)) == before,
+          "spline Cancel reverts the edits")
+    # moving a duck re-solves
+    sk.movePoint(2, 1, App.Vector(60, -70, 0))
+    doc.recompute()
+    check(s.Status == "ok" and s.Shape.distToShape(Part.Vertex(
+        S.SKETCH_PLACEMENT.multVec(App.Vector(60, -70, 0))))[0] < s.Tolerance,
+        "spline re-solves when a duck moves")
+    return s
 
 
 # ------------------------------------------------------------------ fit
@@ -432,14 +558,15 @@ def run():
     pump()
     check(Gui.activeWorkbench().name() == "ElasticaWorkbench", "workbench activates")
     cmds = Gui.listCommands()
-    for c in ("Elastica_Fit", "Elastica_FitCsv", "Elastica_Blend", "Elastica_EllipticBlend",
-              "Elastica_G2Quad", "Elastica_Comb"):
+    for c in ("Elastica_Fit", "Elastica_FitCsv", "Elastica_Blend", "Elastica_Spline",
+              "Elastica_EllipticBlend", "Elastica_G2Quad", "Elastica_Comb"):
         check(c in cmds, f"command {c} registered")
     from freecad.elastica import commands as C, preferences as P
     demo_document()
 
     doc = S.new_doc("ElasticaSmoke")
     blend = blend_panel(doc, S)
+    spline_panel(doc, S)
     ksk = fit_panel(doc, S)
     ellblend_panel(doc, S)
     g2quad_panel(doc, ksk)
@@ -450,10 +577,10 @@ def run():
     before = S.doc_state(doc)
     del C.MESSAGES[:]
     for c in ("Elastica_Fit", "Elastica_Blend", "Elastica_Comb", "Elastica_EllipticBlend",
-              "Elastica_G2Quad"):
+              "Elastica_G2Quad", "Elastica_Spline"):
         Gui.runCommand(c)
     pump()
-    check(S.doc_state(doc) == before and len(C.MESSAGES) == 5,
+    check(S.doc_state(doc) == before and len(C.MESSAGES) == 6,
           "empty selection: messages, document unchanged")
 
     # the preference page, and its icon

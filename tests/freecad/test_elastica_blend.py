@@ -6,6 +6,8 @@ import tempfile
 import unittest
 
 import FreeCAD as App
+import Part
+import numpy as np
 
 import elastica_samples as S
 from freecad.elastica import commands as C
@@ -320,6 +322,143 @@ class BlendTest(unittest.TestCase):
         self.assertIsNotNone(b)
         self.assertEqual(b.Proxy.kind, "Blend")
         self._check_g1(b)
+
+
+def two_arcs_sketch(doc, r1=30.0, r2=40.0, name="Arcs"):
+    """Arc 1 (radius |r1|, bending left for r1 > 0, right for r1 < 0) ends at (0, 0)
+    heading +x; arc 2 (radius r2, bending left) starts at (60, 15) heading 17 degrees
+    up: a gap to blend G2."""
+    sk = doc.addObject("Sketcher::SketchObject", name)
+    sk.Placement = S.SKETCH_PLACEMENT
+    z = App.Vector(0, 0, 1)
+    if r1 > 0:     # counter-clockwise, ending at the bottom of its circle
+        sk.addGeometry(Part.ArcOfCircle(Part.Circle(App.Vector(0, r1, 0), z, r1),
+                                        -math.pi / 2 - 1.0, -math.pi / 2), False)
+    else:          # clockwise travel: the arc starts at the top of its circle (reversed)
+        sk.addGeometry(Part.ArcOfCircle(Part.Circle(App.Vector(0, r1, 0), z, -r1),
+                                        math.pi / 2, math.pi / 2 + 1.0), False)
+    sk.addGeometry(second_arc(r2), False)
+    doc.recompute()
+    return sk
+
+
+def second_arc(r2):
+    """two_arcs_sketch's arc 2: from (60, 15) heading 17 degrees up, bending left."""
+    a = -math.pi / 2 + 0.3
+    centre = App.Vector(60, 15, 0) - App.Vector(math.cos(a), math.sin(a), 0) * r2
+    return Part.ArcOfCircle(Part.Circle(centre, App.Vector(0, 0, 1), r2), a, a + 1.0)
+
+
+class BlendG2Test(unittest.TestCase):
+    """Continuity G2: the blend meets both edges with their tangent and curvature."""
+
+    def setUp(self):
+        self.doc = S.new_doc("ElasticaBlendG2Test")
+
+    def tearDown(self):
+        App.closeDocument(self.doc.Name)
+
+    def check_g2(self, b, sk):
+        """The blend's ends: on the edges' ends, with their tangent and curvature
+        vector (measured on the shape with Part's curve API; 1e-6 relative); G2 at
+        its inner points (the ducks) too."""
+        self.assertFalse(b.Status.startswith("error"), b.Status)
+        pieces = b.Proxy.plane_curves(b)[0]
+        self.assertIn(len(pieces) - 1, Bl.G2_DUCKS)
+        self.assertEqual(len(b.SpanTensions), len(pieces))
+        self.assertIn(f"through {len(pieces) - 1} of its points", b.Status)
+        c = b.Shape.Edges[0].Curve
+        ends = []      # (point, direction of travel of the blend there, curvature vector)
+        for link, at_end, sign in ((b.Edge1, b.AtEnd1, 1), (b.Edge2, b.AtEnd2, -1)):
+            e = G.link_edge(link[0], link[1][0])
+            u = e.LastParameter if at_end else e.FirstParameter
+            p, leaving = G.edge_end(e, at_end)
+            ends.append((p, leaving * sign, e.normalAt(u) * e.curvatureAt(u)
+                         if e.curvatureAt(u) > 0 else App.Vector()))
+        mine = [(c.value(u), App.Vector(c.tangent(u)[0]).normalize(), S.curvature_vector(c, u))
+                for u in (c.FirstParameter, c.LastParameter)]
+        if (mine[0][0] - ends[0][0]).Length > (mine[1][0] - ends[0][0]).Length:
+            mine = [(p, -t, k) for p, t, k in mine[::-1]]      # the shape runs edge 2 -> 1
+        kmax = max(c.curvature(u) for u in
+                   [c.FirstParameter + (c.LastParameter - c.FirstParameter) * i / 200
+                    for i in range(201)])
+        for (p, t, k), (q, s, m) in zip(ends, mine):
+            self.assertLess((p - q).Length, 1e-9)
+            self.assertGreater(t.dot(s), 1.0 - 1e-12)
+            self.assertLess((k - m).Length, 1e-6 * kmax, (k, m))
+        knots = c.getKnots()
+        joins = [sum(p.length for p in pieces[:j]) for j in range(1, len(pieces))]
+        for u in (knots[0] + s for s in joins):          # the ducks: knots (arc length)
+            i = min(range(len(knots)), key=lambda j: abs(knots[j] - u))
+            self.assertLess(abs(knots[i] - u), 1e-9 * b.Shape.Length)
+            span = 0.5 * min(knots[i] - knots[i - 1], knots[i + 1] - knots[i])
+            (t0, k0), (t1, k1) = S.sides(c, knots[i], span)
+            self.assertLess((t0 - t1).Length, 1e-9)
+            self.assertLess((k0 - k1).Length, 1e-6 * kmax)
+        return c
+
+    def test_g2_blend_matches_both_arcs_curvature(self):
+        for r1, r2 in ((30.0, 40.0), (60.0, 80.0), (-30.0, 80.0)):
+            sk = two_arcs_sketch(self.doc, r1, r2, f"Arcs{len(self.doc.Objects)}")
+            b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Continuity="G2")
+            self.doc.recompute()
+            self.check_g2(b, sk)
+            self.assertIn("G2 along it", b.Status)
+
+    def test_g2_blend_passes_points_of_the_g1_solution(self):
+        sk = two_arcs_sketch(self.doc)
+        b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"))
+        self.doc.recompute()
+        g1 = b.Proxy.plane_curves(b)[0][0]
+        b.Continuity = "G2"
+        self.doc.recompute()
+        self.check_g2(b, sk)
+        m = len(b.SpanTensions) - 1
+        for x, y in g1.points(g1.length * np.arange(1, m + 1) / (m + 1)):
+            p = b.Plane.multVec(App.Vector(x, y, 0))
+            self.assertLess(b.Shape.distToShape(Part.Vertex(p))[0], 1e-9 + b.Tolerance)
+        self.assertEqual(list(b.SpanTensions[1:-1]), [0.0] * (m - 1))   # the free batten's
+        self.assertLess(abs(b.Shape.Length - g1.length), 0.01 * g1.length)   # close to G1
+        b.Continuity = "G1"
+        self.doc.recompute()
+        self.assertEqual(list(b.SpanTensions), [])
+        self.assertAlmostEqual(b.Shape.Length, g1.length, delta=1e-3)
+
+    def test_g2_blend_between_lines_ends_straight(self):
+        sk = S.two_lines_sketch(self.doc)
+        b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Continuity="G2", Tension=1e-4)
+        self.doc.recompute()
+        c = self.check_g2(b, sk)
+        for u in (c.FirstParameter, c.LastParameter):
+            self.assertLess(c.curvature(u), 1e-9)
+        for t in b.SpanTensions[1:-1]:
+            self.assertAlmostEqual(t, 1e-4, delta=1e-15)                 # the given tension
+
+    def test_g2_blend_re_solves_when_an_edge_moves(self):
+        sk = two_arcs_sketch(self.doc)
+        b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Continuity="G2")
+        self.doc.recompute()
+        before = b.Shape.Length
+        sk.movePoint(1, 3, sk.Geometry[1].Center + App.Vector(5, 10, 0))    # arc 2's centre
+        self.doc.recompute()
+        self.check_g2(b, sk)
+        self.assertGreater(abs(b.Shape.Length - before), 1e-3)
+
+    def test_g2_that_cannot_be_met_says_so_and_keeps_the_curve(self):
+        sk = two_arcs_sketch(self.doc, 30.0, 40.0)
+        b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Continuity="G2")
+        self.doc.recompute()
+        good = b.Shape.Length
+        # arc 2 as tight as 1 mm: no batten along the G1 curve bends that much at its end
+        sk.delGeometry(1)
+        sk.addGeometry(second_arc(1.0), False)
+        self.doc.recompute()
+        self.assertTrue(b.Status.startswith("error"), b.Status)
+        self.assertIn("pick another solution", b.Status)
+        self.assertAlmostEqual(b.Shape.Length, good, delta=1e-12)
+        b.Continuity = "G1"                 # G1 still joins them
+        self.doc.recompute()
+        self.assertFalse(b.Status.startswith("error"), b.Status)
 
 
 class CombTest(unittest.TestCase):

@@ -17,8 +17,9 @@ class PackageTest(unittest.TestCase):
     def test_namespace_layout(self):
         self.assertFalse(os.path.exists(os.path.join(WB, "freecad", "__init__.py")))
         for f in ("__init__.py", "init_gui.py", "commands.py", "features.py", "taskpanels.py",
-                  "preferences.py", "sources.py", "viewproviders.py", "geometry.py", "proxy.py",
-                  "fit.py", "blend.py", "comb.py", "ellblend.py", "g2quad.py"):
+                  "panelbase.py", "preferences.py", "sources.py", "viewproviders.py",
+                  "geometry.py", "proxy.py", "fit.py", "blend.py", "spline.py", "comb.py",
+                  "ellblend.py", "g2quad.py"):
             self.assertTrue(os.path.isfile(os.path.join(PKG, f)), f)
 
     def test_features_never_import_gui_code(self):
@@ -26,9 +27,10 @@ class PackageTest(unittest.TestCase):
         modules (and what they share) import neither GUI modules nor Qt; the GUI
         reaches them, never the other way (view providers come through a hook)."""
         import ast
-        gui = {"taskpanels", "viewproviders", "commands", "init_gui", "preferences",
+        gui = {"taskpanels", "panelbase", "viewproviders", "commands", "init_gui", "preferences",
                "FreeCADGui", "PySide", "pivy"}
-        for f in ("proxy", "geometry", "sources", "fit", "blend", "comb", "ellblend", "g2quad"):
+        for f in ("proxy", "geometry", "sources", "fit", "blend", "spline", "comb", "ellblend",
+                  "g2quad"):
             with open(os.path.join(PKG, f + ".py")) as fh:
                 tree = ast.parse(fh.read())
             names = set()
@@ -77,15 +79,15 @@ class PackageTest(unittest.TestCase):
 
     def test_icons_are_svg(self):
         from freecad.elastica import icon
-        for name in ("elastica", "fit", "fit_csv", "blend", "comb", "ellblend", "g2quad",
-                     "preferences-elastica"):
+        for name in ("elastica", "fit", "fit_csv", "blend", "spline", "comb", "ellblend",
+                     "g2quad", "preferences-elastica"):
             root = ET.parse(icon(name)).getroot()
             self.assertEqual(root.tag, "{http://www.w3.org/2000/svg}svg", name)
 
     def test_proxies_keep_state_both_ways(self):
-        from freecad.elastica import features as F, g2quad
+        from freecad.elastica import features as F, g2quad, spline
         for cls in (F.FitProxy, F.BlendProxy, F.CombProxy, F.EllipticBlendProxy,
-                    g2quad.G2QuadProxy, F.ViewProvider):
+                    g2quad.G2QuadProxy, spline.SplineProxy, F.ViewProvider):
             for m in ("__getstate__", "__setstate__", "dumps", "loads"):
                 self.assertTrue(callable(getattr(cls, m, None)), (cls, m))
         p = F.FitProxy.__new__(F.FitProxy)

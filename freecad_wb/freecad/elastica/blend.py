@@ -2,34 +2,31 @@
 an end of another, by tension (default: tension 0, the free batten) or by length;
 each solution described (length, energy, inflections, loops, largest curvature);
 the chosen one (lowest energy unless the user picked another) as a B-spline of
-few poles. The feature follows its edges; writing it into a sketch is a copy."""
+few poles; or, Continuity G2, an elastic spline along it that also meets both
+edges' curvature. The feature follows its edges; writing it into a sketch is a
+copy."""
 from __future__ import annotations
 
 import json
 
-import FreeCAD as App
-
 from . import defaults
-from .geometry import (curve_bspline, el, is_sketch, link_edge, np, part_bspline,
-                       plane_coordinates, sketch_geo_of_edge)
+from .geometry import (curve_bspline, edge_end, el, is_sketch, link_edge, np, part_bspline,
+                       plane_coordinates, plane_curvature, sketch_geo_of_edge)
 from .proxy import (FeatureProxy, InputProblem, add_enum, add_property, attach_view,
                     check_degree, check_number, check_tolerance, read_only)
 
 MODES = ["length", "tension"]
+CONTINUITIES = ["G1", "G2"]
+G2_DUCKS = (1, 2, 3, 4, 6, 8)     # points of the G1 curve a G2 blend may pass (g2_blend)
 BSPLINE_DEGREE = 5          # a blend's B-spline: few poles at the preference tolerance
 RESULT_LISTS = ("Lengths", "Energies", "Tensions", "Inflections", "Loops", "MaxCurvatures",
-                "Descriptions")
-
-
-def edge_end(edge, at_end):
-    """(point, direction leaving the edge) at its start or end vertex."""
-    if at_end:
-        u = edge.LastParameter
-        t = edge.tangentAt(u)
-    else:
-        u = edge.FirstParameter
-        t = -edge.tangentAt(u)
-    return edge.valueAt(u), App.Vector(t).normalize()
+                "Descriptions", "SpanTensions")
+G2_TIP = ("G1: one elastica, tangent to both edges. G2: tangent and curvature continuous at "
+          "both joins; one elastica cannot match both curvatures, so the G2 blend is an elastic "
+          "spline through 1 to 8 evenly spaced points of the chosen G1 solution (the fairest: "
+          "fewest inflections, then least energy); its inner spans keep that solution's "
+          "tension, the two end spans take tensions of their own. It stays close to the G1 "
+          "curve; its length follows")
 
 
 def nearest_ends(e0, e1):
@@ -116,7 +113,57 @@ def blend_core(e0, at_end0, e1, at_end1, plane=None, mode="tension", value=0.0):
         # under tension the curve minimises the bending energy plus sigma times its length:
         # order by that (at sigma > 0 a huge gentle loop has the least bending energy alone)
         sols = sorted(sols, key=lambda c: total_energy(c, value))
-    return {"curves": sols, "placement": plane, "distance": dist}
+    ends = ((e0, at_end0, a0, t0), (e1, at_end1, a1, t1))
+    return {"curves": sols, "placement": plane, "distance": dist, "ends": ends}
+
+
+def inflections(pieces):
+    """Inflections of a chain of elasticae (curvature continuous at the joins)."""
+    return sum(len(el().elastica_inflections(p)) for p in pieces)
+
+
+def g2_blend(r, i, tol, degree):
+    """The G2 blend along solution ``i`` of blend_core's result ``r``: an elastic
+    spline from the first edge's end to the second's through m points evenly spaced
+    (by arc length) on that solution, with both edges' tangent AND curvature at the
+    joins. One elastica cannot do it (8 conditions, 7 parameters); the library's G2
+    ends give each end span a tension of its own, so the batten needs ducks: its
+    inner spans keep the solution's tension (0 when that is negative: the library's
+    tension mode), and the ducks keep it close to the G1 curve the user previewed.
+    Of m = 1, 2, 3, 4, 6, 8 the fairest batten is taken: the fewest inflections,
+    then the least energy (one duck often has no solution, and more ducks trade
+    energy for wiggles near the ends). Returns (el.ElasticSpline, m, its B-spline).
+    Raises InputProblem."""
+    (e0, at0, a0, t0), (e1, at1, a1, t1) = r["ends"]
+    plane = r["placement"]
+    k0 = plane_curvature(e0, at0, t0, plane, "the first edge")
+    k1 = plane_curvature(e1, at1, t1, plane, "the second edge")
+    c = r["curves"][i]
+    n, e = np(), el()
+    best = None
+    for m in G2_DUCKS:
+        ducks = c.points(c.length * n.arange(1, m + 1) / (m + 1))
+        if n.hypot(*(ducks[0] - a0)) > n.hypot(*(ducks[-1] - a0)):   # stored a1 -> a0
+            ducks = ducks[::-1]
+        try:
+            sp = e.elastic_spline(n.vstack([a0, ducks, a1]),
+                                  tension=max(float(getattr(c, "sigma", 0.0)), 0.0),
+                                  start={"tangent": tuple(t0), "curvature": k0},
+                                  end={"tangent": tuple(t1), "curvature": k1})
+        except (ValueError, ArithmeticError, RuntimeError):
+            continue
+        key = (inflections(sp.pieces), sp.energy)
+        if best is None or key < best[0]:
+            best = (key, sp, m)
+    if best is None:
+        raise InputProblem(f"no G2 blend along solution {i + 1}: the edges' curvatures "
+                           f"({k0:.3g}, {k1:.3g}/mm) ask more than a batten there can give; "
+                           "pick another solution, tension or length, or G1")
+    _, sp, m = best
+    try:
+        return sp, m, sp.to_bspline(tol, degree)
+    except (ValueError, ArithmeticError, RuntimeError) as exc:
+        raise InputProblem(f"B-spline failed: {exc}") from None
 
 
 def bending_energy(curve):
@@ -163,6 +210,7 @@ class BlendProxy(FeatureProxy):
         add_property(obj, "App::PropertyFloat", "Tension", "Blend",
                      "Tension sigma in tension mode (1/mm^2; 0 = free batten, negative = "
                      "compression)", 0.0)
+        add_enum(obj, "Continuity", "Blend", G2_TIP, CONTINUITIES, "G1")
         add_property(obj, "App::PropertyInteger", "Solution", "Blend",
                      "Which solution, by bending energy (0 = the lowest); reset to 0 by every "
                      "edit of the blend's parameters", 0)
@@ -187,10 +235,14 @@ class BlendProxy(FeatureProxy):
                      "Largest |curvature| of every solution (1/mm)")
         add_property(obj, "App::PropertyStringList", "Descriptions", "Result",
                      "Every solution in words")
+        add_property(obj, "App::PropertyFloatList", "SpanTensions", "Result",
+                     "G2: the tension of each span of the blend (1/mm^2; the inner ones are the "
+                     "G1 solution's); empty for G1")
         add_property(obj, "App::PropertyInteger", "Poles", "Result", "Poles of the B-spline")
         add_property(obj, "App::PropertyString", "Status", "Result", "Outcome of the last solve")
         add_property(obj, "App::PropertyString", "Curves", "Result",
-                     "The chosen curve's parameters (JSON, plane coordinates)")
+                     "The blend's elastica(e) (JSON, plane coordinates): the chosen solution, "
+                     "or the G2 blend's pieces")
         add_property(obj, "App::PropertyPlacement", "Plane", "Result", "The plane of the blend")
         read_only(obj, *RESULT_LISTS, "Poles", "Status", "Curves", "Plane")
 
@@ -222,6 +274,9 @@ class BlendProxy(FeatureProxy):
             raise InputProblem(f"Solution = {obj.Solution}: there are {len(curves)} solutions "
                                f"(0 to {len(curves) - 1})")
         tol, degree = check_tolerance(obj.Tolerance), check_degree(obj.Degree)
+        if obj.Continuity == "G2":
+            r["g2"], r["g2_ducks"], r["bspline"] = g2_blend(r, obj.Solution, tol, degree)
+            return r
         try:
             r["bspline"] = curve_bspline(curves[obj.Solution], tol, degree)
         except ValueError as exc:
@@ -244,8 +299,14 @@ class BlendProxy(FeatureProxy):
         obj.Poles = int(r["bspline"].npoles)
         obj.Plane = r["placement"]
         from libelastica.io import curve_to_dict
-        obj.Curves = json.dumps([curve_to_dict(curves[i])])
-        obj.Status = f"solution {i + 1} of {len(curves)}"
+        sp = r.get("g2")
+        obj.Curves = json.dumps([curve_to_dict(c) for c in (sp.pieces if sp else [curves[i]])])
+        obj.SpanTensions = [float(t) for t in sp.tensions] if sp else []
+        obj.Status = f"solution {i + 1} of {len(curves)}" + (
+            f"; G2 along it (through {r['g2_ducks']} of its points): {sp.length:.4g} mm, energy "
+            f"{sp.energy:.3g}/mm, max curvature {sp.max_curvature:.3g}/mm, "
+            f"{inflections(sp.pieces)} inflections, end spans' tensions {sp.tensions[0]:.3g}, "
+            f"{sp.tensions[-1]:.3g}/mm\u00b2" if sp else "")
 
     def on_error(self, obj):
         """A failed solve lists no solutions (the old curve stays, drawn dashed)."""
@@ -289,5 +350,5 @@ def copy_into_sketch(blend, sketch=None):
     return write_to_sketch(blend, sketch or blend.Edge1[0])[0]
 
 
-__all__ = ["BlendProxy", "blend_core", "make", "copy_into_sketch", "nearest_ends", "edge_end",
-           "MODES"]
+__all__ = ["BlendProxy", "blend_core", "g2_blend", "make", "copy_into_sketch", "nearest_ends",
+           "edge_end", "MODES", "CONTINUITIES"]

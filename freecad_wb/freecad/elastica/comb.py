@@ -69,11 +69,27 @@ def comb_core(source, subs=(), samples=60, scale=0.0):
         if not edges:
             raise InputProblem("the comb's source has no edges")
         per_curve = [_edge_teeth(e, samples) for e in edges]
+    return scaled_teeth(per_curve, shape.BoundBox.DiagonalLength, scale)
+
+
+def scaled_teeth(per_curve, extent, scale=0.0):
+    """([[(foot, tip), ...] per curve], scale) of (feet, normals, curvatures) per
+    curve; ``scale`` 0 = automatic: the longest tooth SCALE_SHARE of ``extent``."""
     kmax = max((abs(k) for _, _, ks in per_curve for k in ks), default=0.0)
     if scale <= 0:
-        scale = SCALE_SHARE * shape.BoundBox.DiagonalLength / kmax if kmax > 0 else 1.0
+        scale = SCALE_SHARE * extent / kmax if kmax > 0 else 1.0
     teeth = [[(f, f - nv * (k * scale)) for f, nv, k in zip(*c)] for c in per_curve]
     return teeth, scale
+
+
+def chain_teeth(curves, plc, total, extent):
+    """Comb teeth along a chain of smooth elasticae (an elastic spline's pieces):
+    about ``total`` teeth in all, each piece's share by its length (at least 2),
+    automatic scale; a list per piece of (foot, tip) pairs."""
+    whole = sum(c.length for c in curves) or 1.0
+    per_curve = [_elastica_teeth(c, plc, max(2, int(round(total * c.length / whole))))
+                 for c in curves]
+    return scaled_teeth(per_curve, extent)[0]
 
 
 class CombProxy(FeatureProxy):

@@ -90,8 +90,9 @@ def _create(doc, title, code, keep_open=False):
 
 def _check_and_create(title, what, check, code, open_panel):
     """Run ``check()`` (the feature's core on the input; InputProblem = bad input),
-    then create the feature by the recorded ``code`` and open its task panel.
-    Returns the new feature or None (message printed, document unchanged)."""
+    then create the feature by the recorded ``code`` (a string, or a function giving
+    it after the check) and open its task panel. Returns the new feature or None
+    (message printed, document unchanged)."""
     try:
         check()
     except InputProblem as exc:
@@ -102,7 +103,7 @@ def _check_and_create(title, what, check, code, open_panel):
         return None
     doc = App.ActiveDocument
     panel = open_panel and App.GuiUp
-    obj = _create(doc, title, code, keep_open=panel)
+    obj = _create(doc, title, code() if callable(code) else code, keep_open=panel)
     if panel and obj is not None:
         from . import taskpanels
         taskpanels.open_for(obj, created=True)
@@ -224,6 +225,42 @@ class BlendCommand(_Command):
     run = staticmethod(blend_sources)
 
 
+# ------------------------------------------------------------------ elastic spline
+
+def spline_sources(sources, open_panel=True, **options):
+    """Check the picked points, create the Elastic spline (recorded), open its task
+    panel. ``options`` set Mode, Tension, Length, Closed (default: closed when the
+    points are a closed wire's), Tolerance, Degree, ..."""
+    from . import spline, sources as src_mod
+    doc = _doc()
+    if doc is None:
+        return None
+    opts = {"Tolerance": defaults()[0]}
+    opts.update(options)
+
+    def check():
+        pts, plane = src_mod.gather_vertices(sources, spline.DUCKS_NEED, edge_means_object=True)
+        if "Closed" not in opts:
+            opts["Closed"] = len(pts) > 3 and (pts[0] - pts[-1]).Length < 1e-9
+        spline.spline_core(pts, plane, opts.get("Mode", "tension"), opts.get("Tension", 0.0),
+                           opts.get("Length", 0.0), opts["Closed"], tol=opts["Tolerance"],
+                           degree=opts.get("Degree", spline.BSPLINE_DEGREE))
+
+    return _check_and_create(
+        "Elastic spline", "elastic spline", check,
+        lambda: "from freecad.elastica import spline as elastica_spline\n"
+        f"_spline = elastica_spline.make({_ref_doc(doc)}, {_src(sources)}, {_kw(opts)})\n"
+        f"{_ref_doc(doc)}.recompute()", open_panel)
+
+
+class SplineCommand(_Command):
+    pixmap, menu = "spline", "Elastic spline"
+    tip = ("The batten through the selected points (sketch points or vertices, a Points "
+           "object, a Draft wire): elasticae of one tension, curvature continuous at every "
+           "point; natural, tangent or G2 ends; closed; by tension or length")
+    run = staticmethod(spline_sources)
+
+
 # ------------------------------------------------------------------ elliptic blend
 
 def ellblend_sources(sources, open_panel=True, **options):
@@ -322,7 +359,8 @@ class CombCommand(_Command):
 
 
 COMMANDS = {"Elastica_Fit": FitCommand, "Elastica_FitCsv": FitCsvCommand,
-            "Elastica_Blend": BlendCommand, "Elastica_EllipticBlend": EllipticBlendCommand,
+            "Elastica_Blend": BlendCommand, "Elastica_Spline": SplineCommand,
+            "Elastica_EllipticBlend": EllipticBlendCommand,
             "Elastica_G2Quad": G2QuadCommand, "Elastica_Comb": CombCommand}
 
 

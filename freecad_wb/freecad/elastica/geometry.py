@@ -71,6 +71,41 @@ def plane_coordinates(points, plane=None, flat=1e-9, what="points"):
     return n.ascontiguousarray(xy), placement_from_frame(frame)
 
 
+# ----------------------------------------------------------- edge ends
+
+def edge_end(edge, at_end):
+    """(point, direction leaving the edge) at its start or end vertex."""
+    if at_end:
+        u = edge.LastParameter
+        t = edge.tangentAt(u)
+    else:
+        u = edge.FirstParameter
+        t = -edge.tangentAt(u)
+    return edge.valueAt(u), App.Vector(t).normalize()
+
+
+def curvature_vector(edge, u):
+    """kappa N of an edge at parameter u (N towards the centre of curvature; the zero
+    vector where the edge is straight)."""
+    try:
+        return App.Vector(edge.normalAt(u)) * float(edge.curvatureAt(u))
+    except Part.OCCError:           # a line, or an inflection: OCC has no normal there
+        return App.Vector(0, 0, 0)
+
+
+def plane_curvature(edge, at_end, direction, plane, what="the edge"):
+    """The signed curvature, in ``plane``, of ``edge`` at its start or end travelled
+    along the unit plane vector ``direction`` (tx, ty): positive when the curve turns
+    left (counter-clockwise seen from the plane's normal), as the library counts it.
+    InputProblem when the edge curves out of the plane there (no G2 join in it)."""
+    u = edge.LastParameter if at_end else edge.FirstParameter
+    k = plane.Rotation.inverted().multVec(curvature_vector(edge, u))
+    if abs(k.z) > 1e-6 * k.Length + 1e-12:
+        raise InputProblem(f"{what} curves out of the plane there: no curvature-continuous "
+                           "join in the plane")
+    return float(direction[0] * k.y - direction[1] * k.x)
+
+
 # ----------------------------------------------------------- B-splines
 
 def curve_bspline(curve, tol, degree):

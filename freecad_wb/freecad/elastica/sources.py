@@ -122,30 +122,54 @@ def gather_points(sources, csv_file="", samples_per_edge=60):
     return dedup(vertices or points), plane, False, False
 
 
-def gather_vertices(sources):
-    """The picked points of an elliptic blend, in selection order, without merging
-    coincident ones: sketch vertices or vertices of any shape ('VertexN'), a whole
-    sketch (its sketch points), a whole Points object, or a whole shape (its
-    vertices). Returns (points, plane: the sketch placement when all come from one
-    sketch, else None)."""
+def wire_points(shape):
+    """The vertices of a shape that is one wire (a polyline, a Draft wire, a sketch
+    of connected lines), in order along it; a closed wire repeats its first vertex
+    at the end. None when the shape is not one wire."""
+    wires = shape.Wires
+    if len(wires) != 1 or len(wires[0].Edges) != len(shape.Edges):
+        return None
+    pts = [v.Point for v in wires[0].OrderedVertexes]
+    if wires[0].isClosed() and len(pts) > 2:
+        pts.append(pts[0])
+    return pts
+
+
+def object_points(obj):
+    """The points of a whole object, in order: a sketch's sketch points (else the
+    vertices of its one wire), a Points object's points, the vertices of a wire
+    along it, else a shape's vertices."""
+    if is_sketch(obj):
+        pts = sketch_points(obj)
+        if pts or obj.Shape.isNull():
+            return pts
+    if obj.isDerivedFrom("Points::Feature"):
+        return [obj.Placement.multVec(App.Vector(*p)) for p in obj.Points.Points]
+    shape = getattr(obj, "Shape", None)
+    if shape is None or shape.isNull():
+        raise InputProblem(f"{obj.Label} has no geometry")
+    return wire_points(shape) or [v.Point for v in shape.Vertexes]
+
+
+def gather_vertices(sources, need="four vertices, or a sketch of four points",
+                    edge_means_object=False):
+    """Picked points in selection order, without merging coincident ones: vertices
+    of sketches or shapes ('VertexN'), or whole objects (``object_points``: a
+    sketch's points, a Points object, a wire's vertices in order). ``need`` says
+    what to select when nothing is; ``edge_means_object``: a picked edge stands for
+    its whole object (a click on a Draft wire picks one of its edges). Returns
+    (points, plane: the sketch placement when all come from one sketch, else None)."""
     if not sources:
-        raise InputProblem("nothing selected: select four vertices, or a sketch of four points")
+        raise InputProblem(f"nothing selected: select {need}")
     pts, sketches = [], set()
     for obj, subs in sources:
         subs = _subs(subs)
         if is_sketch(obj):
             sketches.add(obj.Name)
-            if not subs:
-                pts.extend(sketch_points(obj))
-                continue
-        if obj.isDerivedFrom("Points::Feature") and not subs:
-            pts.extend(obj.Placement.multVec(App.Vector(*p)) for p in obj.Points.Points)
-            continue
-        shape = getattr(obj, "Shape", None)
-        if shape is None or shape.isNull():
-            raise InputProblem(f"{obj.Label} has no geometry")
+        if edge_means_object and any(s.startswith("Edge") for s in subs):
+            subs = []
         if not subs:
-            pts.extend(v.Point for v in shape.Vertexes)
+            pts.extend(object_points(obj))
             continue
         for s in subs:
             if not s.startswith("Vertex"):

@@ -1,314 +1,26 @@
-"""Task panels, modelled on FreeCAD's own Part and Sketcher panels: every change
-(arrow, wheel, typing) updates the feature at once (the recompute follows a short
-pause, so typing "12.5" solves once); Cancel reverts everything through the
-document's undo transaction (a feature a command has just made disappears); every
-field has a tooltip with its unit; fields that do not apply are disabled; the
-layout fits a 260 px Combo View. The panels edit the features' properties only:
-what a value means and whether it is usable is the feature's business (its
-Status, shown here in red when it is an error)."""
+"""The task panels of the Elastica features (their machinery, ``Panel``, is in
+panelbase.py): like FreeCAD's own Part and Sketcher panels, every change (arrow,
+wheel, typing) updates the feature after a short pause; Cancel reverts everything
+through the document's undo transaction (a feature a command has just made
+disappears); every field has a tooltip with its unit; fields that do not apply are
+disabled; the layout fits a 260 px Combo View. The panels edit the features'
+properties only: what a value means and whether it is usable is the feature's
+business (its Status, shown in red when it is an error)."""
 from __future__ import annotations
 
-import FreeCAD as App
 import FreeCADGui as Gui
-from PySide import QtCore, QtGui
+from PySide import QtGui
 
 from . import blend as B
 from . import ellblend as E
 from . import fit as F
-from . import icon
+from . import spline as Sp
 from .geometry import is_sketch
-
-CURRENT = []        # the open panel, if any (scripts and the GUI smoke test drive it)
-DELAY_MS = 150      # recompute after this pause in editing
+from .panelbase import CURRENT, Panel, _fmt
 
 
-def _sketches(doc, exclude=()):
-    return [o for o in doc.Objects if is_sketch(o) and o.Name not in exclude]
 
-
-def _narrow(box):
-    """A combo box that may be narrower than its longest entry (the 260 px Combo View)."""
-    box.setSizeAdjustPolicy(QtGui.QComboBox.AdjustToMinimumContentsLengthWithIcon)
-    box.setMinimumContentsLength(8)
-    return box
-
-
-def _buttons(*names):
-    flags = QtGui.QDialogButtonBox.NoButton
-    for n in names:
-        flags |= getattr(QtGui.QDialogButtonBox, n)
-    try:
-        return int(flags)
-    except TypeError:          # PySide6 enums: the flag value
-        return flags.value
-
-
-class NumberBox(QtGui.QDoubleSpinBox):
-    """A spin box that shows its value as typed ('0.001', '2.5e-07', not '0.00'),
-    accepts scientific notation and steps by ``singleStep``."""
-
-    unit = ""                            # Qt calls validate() while __init__ runs
-
-    def __init__(self, lo, hi, step, unit="", tip=""):
-        super().__init__()
-        self.setDecimals(30)             # the box must not round 1e-7 to 0
-        self.setRange(lo, hi)
-        self.setSingleStep(step)
-        self.setKeyboardTracking(True)
-        self.unit = f" {unit}" if unit else ""
-        self.setSuffix(self.unit)
-        self.setToolTip(tip)
-
-    def textFromValue(self, value):
-        return f"{value:.6g}"
-
-    def _number(self, text):
-        t = text.strip()
-        if self.unit and t.endswith(self.unit.strip()):
-            t = t[:-len(self.unit.strip())].strip()
-        return float(t)
-
-    def valueFromText(self, text):
-        try:
-            return self._number(text)
-        except ValueError:
-            return self.value()
-
-    def validate(self, text, pos):
-        try:
-            v = self._number(text)
-            ok = self.minimum() <= v <= self.maximum()
-            state = QtGui.QValidator.Acceptable if ok else QtGui.QValidator.Intermediate
-        except ValueError:
-            state = QtGui.QValidator.Intermediate
-        return state, text, pos
-
-    def fixup(self, text):
-        return self.textFromValue(self.value()) + self.unit
-
-
-class DecadeBox(NumberBox):
-    """A tolerance: each arrow step (or wheel notch) multiplies or divides by 10."""
-
-    def stepBy(self, steps):
-        self.setValue(self.value() * 10.0 ** steps)
-
-
-class _Panel:
-    """Shared machinery: bound fields, the delayed recompute, result text, the undo
-    transaction. Subclasses build their boxes in ``build`` and return the result
-    text of a successful recompute from ``result_text``."""
-
-    title = ""
-    icon_name = "elastica"
-
-    def __init__(self, obj, created=True):
-        self.obj = obj
-        self.doc = obj.Document
-        self.created = created          # a command made it: its transaction is still open
-        self.enablers = []              # (widget, callable -> bool)
-        self.timer = QtCore.QTimer()
-        self.timer.setSingleShot(True)
-        self.timer.setInterval(DELAY_MS)
-        self.timer.timeout.connect(self.update)
-        if not created:
-            self.doc.openTransaction(f"Edit {obj.Label}")
-        self.result = QtGui.QLabel()
-        self.result.setWordWrap(True)
-        self.result.setTextInteractionFlags(QtCore.Qt.TextSelectableByMouse)
-        self.form = []
-        self.build()
-        self.refresh()
-
-    # ---------------------------------------------------------------- building
-
-    def box(self, title):
-        """A new task box (a QWidget with a two-column grid) appended to the form."""
-        w = QtGui.QWidget()
-        w.setWindowTitle(title)
-        w.setWindowIcon(QtGui.QIcon(icon(self.icon_name)))
-        grid = QtGui.QGridLayout(w)
-        grid.setColumnStretch(1, 1)
-        self.form.append(w)
-        return grid
-
-    @staticmethod
-    def row(grid, label, widget, tip=""):
-        r = grid.rowCount()
-        if label:
-            lab = QtGui.QLabel(label)
-            lab.setToolTip(tip or widget.toolTip())
-            grid.addWidget(lab, r, 0)
-            grid.addWidget(widget, r, 1)
-        else:
-            grid.addWidget(widget, r, 0, 1, 2)
-        if tip:
-            widget.setToolTip(tip)
-        return widget
-
-    def number(self, grid, label, prop, lo, hi, step, unit, tip, decade=False, when=None):
-        """A spin box bound live to the float property prop."""
-        box = (DecadeBox if decade else NumberBox)(lo, hi, step, unit, tip)
-        box.blockSignals(True)
-        box.setValue(getattr(self.obj, prop))
-        box.blockSignals(False)
-        box.valueChanged.connect(lambda v: self.set(prop, float(v)))
-        self.row(grid, label, box, tip)
-        if when:
-            self.enablers.append((box, when))
-        return box
-
-    def integer(self, grid, label, prop, lo, hi, tip, when=None):
-        box = QtGui.QSpinBox()
-        box.setRange(lo, hi)
-        box.blockSignals(True)
-        box.setValue(max(lo, min(hi, int(getattr(self.obj, prop)))))
-        box.blockSignals(False)
-        box.setKeyboardTracking(True)
-        box.valueChanged.connect(lambda v: self.set(prop, int(v)))
-        self.row(grid, label, box, tip)
-        if when:
-            self.enablers.append((box, when))
-        return box
-
-    def check(self, grid, text, prop, tip, when=None, target=None):
-        """A check box bound live to the boolean property prop (of ``target``, default
-        the feature; a view property when target is the ViewObject)."""
-        target = target if target is not None else self.obj
-        box = QtGui.QCheckBox(text)
-        box.setChecked(bool(getattr(target, prop)))
-        box.toggled.connect(lambda v: self.set(prop, bool(v), target))
-        self.row(grid, "", box, tip)
-        if when:
-            self.enablers.append((box, when))
-        return box
-
-    def choice(self, grid, label, prop, values, texts, tip):
-        """A combo box bound live to the enumeration property prop."""
-        box = _narrow(QtGui.QComboBox())
-        box.addItems(list(texts))
-        box.setCurrentIndex(list(values).index(getattr(self.obj, prop)))
-        box.currentIndexChanged.connect(lambda i: self.set(prop, values[i]))
-        self.row(grid, label, box, tip)
-        return box
-
-    def output_rows(self, grid, exclude, new_label):
-        """Keep the feature or not; copy its B-spline into a sketch (not those in exclude)."""
-        self.keep = self.check(grid, "Keep the parametric feature", "_keep",
-                               "Unchecked: OK removes the feature (keep only the sketch copy)",
-                               target=self)
-        self.sketch = _narrow(QtGui.QComboBox())
-        self.sketch.addItem("(no copy)", "")
-        for sk in _sketches(self.doc, exclude):
-            self.sketch.addItem(sk.Label, sk.Name)
-        self.sketch.addItem(new_label, "*new*")
-        self.row(grid, "Copy into", self.sketch,
-                 "OK copies the B-spline into this sketch: a copy, which does not follow later "
-                 "edits (the feature does)")
-
-    _keep = True
-
-    # ---------------------------------------------------------------- live update
-
-    def set(self, prop, value, target=None):
-        target = target if target is not None else self.obj
-        if getattr(target, prop) != value:
-            setattr(target, prop, value)
-            self.changed(prop)
-            if target is self.obj:
-                self.timer.start()
-        self.refresh_enabled()
-
-    def changed(self, prop):
-        """A property was edited (before the recompute)."""
-
-    def flush(self):
-        """Run a pending recompute now (OK, tests)."""
-        if self.timer.isActive():
-            self.timer.stop()
-            self.update()
-
-    def update(self):
-        try:
-            self.doc.recompute()
-        except Exception as exc:  # never let a preview escape
-            App.Console.PrintError(f"Elastica: {exc}\n")
-        self.refresh()
-
-    def refresh(self):
-        """Result text (the error in red) and which fields apply."""
-        o = self.obj
-        if o.Status.startswith("error"):
-            self.result.setText(f"<b style='color:#b00'>{o.Status}</b>")
-        else:
-            self.result.setText(self.result_text())
-        self.refresh_enabled()
-
-    def refresh_enabled(self):
-        for w, when in self.enablers:
-            w.setEnabled(bool(when()))
-
-    def result_text(self):
-        return f"status: {self.obj.Status}"
-
-    # ---------------------------------------------------------------- OK / Cancel
-
-    def getStandardButtons(self):
-        return _buttons("Ok", "Cancel")
-
-    def copy_code(self):
-        """Python of OK's copy into a sketch (recorded), or ''."""
-        target = self.sketch.itemData(self.sketch.currentIndex()) if hasattr(self, "sketch") else ""
-        if not target:
-            return ""
-        doc = f"App.getDocument({self.doc.Name!r})"
-        code = "from freecad.elastica import geometry as elastica_geometry\n"
-        if target == "*new*":
-            code += (f"_sk = {doc}.addObject('Sketcher::SketchObject', 'ElasticaSketch')\n"
-                     f"_sk.Placement = {doc}.getObject({self.obj.Name!r}).Plane\n")
-        else:
-            code += f"_sk = {doc}.getObject({target!r})\n"
-        return code + (f"elastica_geometry.write_to_sketch({doc}.getObject({self.obj.Name!r}), "
-                       "_sk)\n")
-
-    def accept(self):
-        self.flush()
-        if self.obj.Status.startswith("error"):
-            App.Console.PrintError(f"Elastica: {self.obj.Status}\n")
-            return False          # stay open: the user fixes the input or cancels
-        code = self.copy_code()
-        if code:
-            Gui.doCommandGui(code)
-        if not self._keep:
-            Gui.doCommandGui(f"App.getDocument({self.doc.Name!r}).removeObject({self.obj.Name!r})")
-        self.doc.recompute()
-        self.doc.commitTransaction()
-        self._close()
-        return True
-
-    def reject(self):
-        self.timer.stop()
-        name = self.obj.Name
-        self.doc.abortTransaction()
-        # without undo (UndoMode 0) the abort keeps a fresh feature: remove it
-        if self.created and name in [o.Name for o in self.doc.Objects]:
-            self.doc.removeObject(name)
-        self.doc.recompute()
-        self._close()
-        return True
-
-    def _close(self):
-        CURRENT[:] = []
-        Gui.Control.closeDialog()
-        if Gui.ActiveDocument is not None:
-            Gui.ActiveDocument.resetEdit()
-
-
-def _fmt(v, unit="mm"):
-    return f"{v:.3g} {unit}".strip()
-
-
-class FitPanel(_Panel):
+class FitPanel(Panel):
     title = "Fit elastica"
     icon_name = "fit"
 
@@ -333,25 +45,14 @@ class FitPanel(_Panel):
         self.pin_end = self.check(g, "Pin the end", "PinEnd",
                                   "The curve ends exactly at the last point (one-piece fits; "
                                   "needs the fit library's constraints)", when=constrained)
-        self.tangents = []
         for prop, text in (("StartTangent", "Start"), ("EndTangent", "End")):
-            btn = QtGui.QPushButton()
-            btn.clicked.connect(lambda _=False, p=prop: self.pick_tangent(p))
-            self.row(g, f"{text} tangent", btn,
-                     f"{text} tangent: click with an edge selected to follow its tangent there, "
-                     "click again to free it (one-piece fits; needs the fit library's "
-                     "constraints)")
-            self.enablers.append((btn, constrained))
-            self.tangents.append((prop, btn))
-        b = self.box("B-spline")
-        self.tol = self.number(b, "Tolerance", "Tolerance", 1e-9, 1e3, 1e-3, "mm",
-                               "Largest distance of the B-spline from the smooth elastica (mm); "
-                               "arrows step by a factor of 10", decade=True,
-                               when=lambda: o.Model == "smooth")
-        self.degree = self.integer(b, "Degree", "Degree", 3, 7,
-                                   "Degree of the smooth fit's B-spline (3 to 7); a discrete fit's "
-                                   "vertices are joined by the C2 cubic through them",
-                                   when=lambda: o.Model == "smooth")
+            self.edge_button(g, f"{text} tangent", prop,
+                             f"{text} tangent: click with an edge selected to follow its tangent "
+                             "there, click again to free it (one-piece fits; needs the fit "
+                             "library's constraints)", when=constrained)
+        self.bspline_box("the smooth elastica", "Degree of the smooth fit's B-spline (3 to 7); a "
+                         "discrete fit's vertices are joined by the C2 cubic through them",
+                         when=lambda: o.Model == "smooth")
         r = self.box("Result")
         self.row(r, "", self.result)
         vo = o.ViewObject
@@ -363,24 +64,6 @@ class FitPanel(_Panel):
         out = self.box("Output")
         # not into a source sketch: writing there would feed the fit its own output
         self.output_rows(out, [s.Name for s, _ in o.Source], "(new sketch in the fit plane)")
-        self.show_tangents()
-
-    def show_tangents(self):
-        for prop, btn in self.tangents:
-            link = getattr(self.obj, prop)
-            btn.setText(f"{link[0].Label}.{link[1][0]}" if link and link[1] else "free")
-
-    def pick_tangent(self, prop):
-        if getattr(self.obj, prop):
-            self.set(prop, None)
-        else:
-            sel = [(s.Object, n) for s in Gui.Selection.getSelectionEx()
-                   for n in s.SubElementNames if n.startswith("Edge")]
-            if not sel:
-                self.result.setText("<b style='color:#b00'>select an edge first</b>")
-                return
-            self.set(prop, (sel[0][0], [sel[0][1]]))
-        self.show_tangents()
 
     def result_text(self):
         o = self.obj
@@ -394,14 +77,13 @@ class FitPanel(_Panel):
                 f"({o.ErrorMeasure})<br>k = {ks}<br>{bs}<br>{o.Status}")
 
 
-class BlendPanel(_Panel):
+class BlendPanel(Panel):
     title = "Elastic blend"
     icon_name = "blend"
 
     def build(self):
         o = self.obj
         self.picked = None              # the user's choice of solution, kept across edits
-        self.view_box = None
         g = self.box("Elastic blend")
         self.mode = self.choice(g, "Solve for", "Mode", B.MODES, ["a length", "a tension"],
                                 "A tension (0: the free batten, the fairest curve) or a given "
@@ -418,6 +100,8 @@ class BlendPanel(_Panel):
                                "Checked: from the first edge's end vertex; else its start")
         self.end2 = self.check(g, "Enter edge 2 at its end vertex", "AtEnd2",
                                "Checked: into the second edge's end vertex; else its start")
+        self.continuity = self.choice(g, "Continuity", "Continuity", B.CONTINUITIES,
+                                      ["G1 (tangent)", "G2 (curvature)"], B.G2_TIP)
         s = self.box("Solutions")
         self.list = QtGui.QListWidget()
         self.list.setWordWrap(True)
@@ -427,12 +111,8 @@ class BlendPanel(_Panel):
         self.list.currentRowChanged.connect(self.pick)
         self.row(s, "", self.list)
         self.row(s, "", self.result)
-        b = self.box("B-spline")
-        self.tol = self.number(b, "Tolerance", "Tolerance", 1e-9, 1e3, 1e-3, "mm",
-                               "Largest distance of the B-spline from the elastica (mm); arrows "
-                               "step by a factor of 10", decade=True)
-        self.degree = self.integer(b, "Degree", "Degree", 3, 7,
-                                   "Degree of the B-spline (3 to 7): 5 to 7 need few poles")
+        self.bspline_box("the elastica", "Degree of the B-spline (3 to 7): 5 to 7 need few "
+                         "poles")
         out = self.box("Output")
         same = bool(o.Edge1) and bool(o.Edge2) and o.Edge1[0] == o.Edge2[0] and is_sketch(o.Edge1[0])
         self.into_sketch = self.check(out, "Copy into the edges' sketch", "_copy",
@@ -466,23 +146,9 @@ class BlendPanel(_Panel):
                 and self.picked < len(o.Lengths):
             o.Solution = self.picked            # the user's pick survives the edit
             super().update()
-        self.refit()
 
-    def refit(self):
-        """Fit the view when the blend leaves what was in view at the last fit, or
-        shrinks to a small part of it."""
-        if self.obj.Shape.isNull():
-            return
-        bb = self.obj.Shape.BoundBox
-        if self.view_box is None or not self.view_box.isInside(bb) or \
-                bb.DiagonalLength < 0.25 * self.view_box.DiagonalLength:
-            box = App.BoundBox(bb)
-            for link in (self.obj.Edge1, self.obj.Edge2):
-                if link and link[0].Shape and not link[0].Shape.isNull():
-                    box.add(link[0].Shape.BoundBox)
-            self.view_box = box
-            if Gui.ActiveDocument is not None:
-                Gui.SendMsgToActiveView("ViewFit")
+    def view_objects(self):
+        return [link[0] for link in (self.obj.Edge1, self.obj.Edge2) if link]
 
     def pick(self, row):
         if row >= 0 and row != self.obj.Solution:
@@ -504,10 +170,7 @@ class BlendPanel(_Panel):
         for box, values, active in ((self.length, o.Lengths, o.Mode == "length"),
                                     (self.tension, o.Tensions, o.Mode == "tension")):
             if not active and i < len(values):
-                box.blockSignals(True)
-                box.setValue(values[i])
-                box.blockSignals(False)
-                box.lineEdit().deselect()
+                self.show_value(box, values[i])
         super().refresh()
 
     def result_text(self):
@@ -522,7 +185,132 @@ class BlendPanel(_Panel):
                 f"elastica_blend.copy_into_sketch({doc}.getObject({self.obj.Name!r}))\n")
 
 
-class EllipticBlendPanel(_Panel):
+class SplinePanel(Panel):
+    title = "Elastic spline"
+    icon_name = "spline"
+    MAX_DUCK_LINES = 8          # the duck forces listed in the panel (all are in DuckForces)
+
+    def build(self):
+        o = self.obj
+        g = self.box("Elastic spline")
+        self.mode = self.choice(g, "Solve for", "Mode", Sp.MODES, ["a tension", "a length"],
+                                "A tension (0: the free batten, the fairest curve through the "
+                                "points) or a total length (the tension follows)")
+        self.tension = self.number(g, "Tension", "Tension", -1e6, 1e6, self.tension_step(),
+                                   "1/mm\u00b2", "Tension sigma (1/mm\u00b2, >= 0): 0 = the free "
+                                   "batten, larger pulls it straighter between the points. In "
+                                   "length mode: the tension the length needs",
+                                   when=lambda: o.Mode == "tension")
+        self.length = self.number(g, "Length", "Length", 0.0, 1e7, 1.0, "mm",
+                                  "Total length (mm), longer than the polygon through the "
+                                  "points; 0 = the free batten's. In tension mode: the "
+                                  "spline's length", when=lambda: o.Mode == "length")
+        self.closed = self.check(g, "Closed", "Closed",
+                                 "A closed batten through the points (no ends)")
+        ends = self.box("Ends")
+        is_open = lambda: not o.Closed  # noqa: E731
+        self.ends = []
+        for end, which in (("Start", "first"), ("End", "last")):
+            combo = self.choice(ends, end, f"{end}Condition", Sp.END_CONDITIONS,
+                                ["natural", "tangent to edge", "G2 to edge"],
+                                f"At the {which} point: natural (curvature 0), tangent to the "
+                                f"{end.lower()} edge, or G2 to it (tangent and curvature: that "
+                                "end's span then takes a tension of its own)", when=is_open)
+            btn = self.edge_button(ends, f"{end} edge", f"{end}Edge",
+                                   f"Select an edge, then click: the {which} point follows it "
+                                   "(at its end nearest the point); click again to free it",
+                                   empty="pick an edge", when=is_open,
+                                   picked=lambda e=end: self.edge_picked(e))
+            self.ends.append((combo, btn))
+        r = self.box("Result")
+        self.row(r, "", self.result)
+        vo = o.ViewObject
+        self.show_comb = self.check(r, "Show the curvature comb", "ShowComb",
+                                    "Teeth outside the bend, as long as the curvature", target=vo)
+        self.show_forces = self.check(r, "Show the duck forces", "ShowForces",
+                                      "An arrow at each point: the force its duck exerts on the "
+                                      "batten", target=vo)
+        self.stiffness = self.number(r, "Stiffness EI", "Stiffness", 0.0, 1e15, 1e4,
+                                     "N\u00b7mm\u00b2", "Bending stiffness EI of the batten "
+                                     "(N\u00b7mm\u00b2): the duck forces in newtons; 0 = in "
+                                     "units of EI/2")
+        self.bspline_box("the spline", "Degree of the one B-spline (3 to 7), G2 at the points")
+        out = self.box("Output")
+        self.output_rows(out, [s.Name for s, _ in o.Points], "(new sketch in the spline's plane)")
+
+    def tension_step(self):
+        """An arrow step of the tension scale 1/h^2 (h: the mean distance between
+        the points: sigma h^2 = 1 bends a span visibly less)."""
+        ducks = list(self.obj.Ducks)
+        h = sum((a - b).Length for a, b in zip(ducks, ducks[1:])) / max(len(ducks) - 1, 1)
+        return float(f"{1.0 / h ** 2:.0e}") if h > 0 else 1e-4
+
+    def view_objects(self):
+        o = self.obj
+        return [src for src, _ in o.Points] + [link[0] for link in (o.StartEdge, o.EndEdge)
+                                               if link]
+
+    def edge_picked(self, end):
+        """A picked edge for a natural end makes it tangent (the user may ask for G2)."""
+        prop = f"{end}Condition"
+        if getattr(self.obj, prop) == "natural":
+            self.set(prop, "tangent")
+            combo = self.ends[0 if end == "Start" else 1][0]
+            combo.blockSignals(True)
+            combo.setCurrentIndex(Sp.END_CONDITIONS.index("tangent"))
+            combo.blockSignals(False)
+
+    def changed(self, prop):
+        o = self.obj
+        if prop == "Mode" and o.Ducks and not o.Status.startswith("error"):
+            # the new mode starts from the spline on screen
+            if o.Mode == "length":
+                o.Length = o.SplineLength
+            elif o.SplineTension >= 0:
+                o.Tension = o.SplineTension
+
+    def refresh(self):
+        o = self.obj
+        tension_mode = o.Mode == "tension"
+        # a tension given must be >= 0; a length's tension may be negative (pushed)
+        self.tension.blockSignals(True)
+        self.tension.setMinimum(0.0 if tension_mode else -1e6)
+        self.tension.blockSignals(False)
+        given, shown = (self.tension, self.length) if tension_mode else (self.length, self.tension)
+        if given.value() != getattr(o, "Tension" if tension_mode else "Length"):
+            self.show_value(given, getattr(o, "Tension" if tension_mode else "Length"))
+        if o.Ducks and not o.Status.startswith("error"):
+            self.show_value(shown, o.SplineLength if tension_mode else o.SplineTension)
+        super().refresh()
+
+    def forces_text(self):
+        o = self.obj
+        forces = [v.Length for v in o.DuckForces]
+        if not forces:
+            return ""
+        ei = o.Stiffness
+        unit, scale = ("N", 0.5 * ei) if ei > 0 else ("EI/2\u00b7/mm\u00b2", 1.0)
+        order = sorted(range(len(forces)), key=lambda i: -forces[i])[:self.MAX_DUCK_LINES]
+        more = len(forces) - len(order)
+        items = ", ".join(f"{i + 1}: {forces[i] * scale:.3g}" for i in sorted(order))
+        return (f"duck forces ({unit}): {items}"
+                + (f" (the {len(order)} largest of {len(forces)})" if more else ""))
+
+    def result_text(self):
+        o = self.obj
+        radius = f" (radius {1 / o.MaxCurvature:.3g} mm)" if o.MaxCurvature > 0 else ""
+        notes = o.Status.split("; ")[1:]
+        lines = [f"length {_fmt(o.SplineLength)}, tension {o.SplineTension:.4g}/mm\u00b2"
+                 + (" (free batten)" if o.SplineTension == 0 else ""),
+                 f"energy \u222b\u03ba\u00b2 {o.Energy:.4g}/mm, max curvature "
+                 f"{o.MaxCurvature:.3g}/mm{radius}",
+                 self.forces_text(),
+                 f"B-spline: {o.Poles} poles, degree {o.Degree}, within "
+                 f"{_fmt(o.BSplineDeviation)}"] + notes
+        return "<br>".join(line for line in lines if line)
+
+
+class EllipticBlendPanel(Panel):
     title = "Elliptic blend curve"
     icon_name = "ellblend"
 
@@ -558,7 +346,7 @@ class EllipticBlendPanel(_Panel):
                 f"{_fmt(o.Tolerance)})<br>{o.Status}")
 
 
-class G2QuadPanel(_Panel):
+class G2QuadPanel(Panel):
     title = "G2 quadratic B-spline"
     icon_name = "g2quad"
 
@@ -584,7 +372,7 @@ class G2QuadPanel(_Panel):
                 f"{o.EndTangentError:.2g}\u00b0<br>{o.Status}")
 
 
-class CombPanel(_Panel):
+class CombPanel(Panel):
     title = "Curvature comb"
     icon_name = "comb"
 
@@ -602,8 +390,8 @@ class CombPanel(_Panel):
         return f"scale {self.obj.UsedScale:.4g} mm\u00b2; {self.obj.Status}"
 
 
-PANELS = {"Fit": FitPanel, "Blend": BlendPanel, "EllipticBlend": EllipticBlendPanel,
-          "G2Quad": G2QuadPanel, "Comb": CombPanel}
+PANELS = {"Fit": FitPanel, "Blend": BlendPanel, "Spline": SplinePanel,
+          "EllipticBlend": EllipticBlendPanel, "G2Quad": G2QuadPanel, "Comb": CombPanel}
 
 
 def open_for(obj, created=False):

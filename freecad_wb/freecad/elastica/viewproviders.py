@@ -19,8 +19,14 @@ PALETTE = [("red", (0.84, 0.15, 0.16)), ("blue", (0.12, 0.47, 0.71)),
            ("orange", (1.0, 0.50, 0.05)), ("brown", (0.55, 0.34, 0.29)),
            ("teal", (0.09, 0.75, 0.81))]
 ICONS = {"Fit": "fit", "Blend": "blend", "Comb": "comb", "EllipticBlend": "ellblend",
-         "G2Quad": "g2quad"}
-WIDTHS = {"Fit": 3.0, "Blend": 3.0, "Comb": 1.0, "EllipticBlend": 3.0, "G2Quad": 3.0}
+         "G2Quad": "g2quad", "Spline": "spline"}
+WIDTHS = {"Fit": 3.0, "Blend": 3.0, "Comb": 1.0, "EllipticBlend": 3.0, "G2Quad": 3.0,
+          "Spline": 3.0}
+# overlays drawn beside a feature's shape: groups of (colour, markers, segments), each
+# drawn with its line width
+OVERLAY_GROUPS = {"Fit": (1.0,), "G2Quad": (1.0,), "Spline": (1.0, 1.0, 2.5)}
+SPLINE_COMB_TEETH = 150     # teeth along a whole spline
+ARROW_SHARE = 0.1           # the longest duck-force arrow: this share of the spline's size
 
 
 def _kind(obj):
@@ -132,6 +138,71 @@ def restored(obj):
                                  finish_opening(App.getDocument(name)))
 
 
+def _arrows(tips, vectors, length):
+    """Segment pairs of arrows along ``vectors`` ending at ``tips`` (a force drawn
+    pushing on its point), the longest ``length`` long, each with a two-stroke head;
+    plane coordinates (z = 0)."""
+    big = max((v.Length for v in vectors), default=0.0)
+    out = []
+    if big <= 0:
+        return out
+    for tip, v in zip(tips, vectors):
+        if v.Length <= 1e-9 * big:
+            continue
+        tail = tip - v * (length / big)
+        shaft = (tail - tip).Length
+        back = (tail - tip) * (min(0.25 * length, 0.5 * shaft) / shaft)   # heads alike
+        side = App.Vector(-back.y, back.x, 0.0)
+        out += [tail, tip, tip, tip + back + side * 0.5, tip, tip + back - side * 0.5]
+    return out
+
+
+def _spline_overlay(vobj, rgb):
+    """Ducks (markers), the curvature comb (teeth and envelope) and the duck forces
+    (arrows) of an elastic spline."""
+    obj = vobj.Object
+    ducks = list(obj.Ducks) if getattr(vobj, "ShowDucks", True) else []
+    comb, arrows = [], []
+    size = obj.Shape.BoundBox.DiagonalLength if not obj.Shape.isNull() else 0.0
+    stored = obj.Proxy.plane_curves(obj) if getattr(vobj, "ShowComb", True) else None
+    if stored and size > 0:
+        from .comb import chain_teeth
+        for teeth in chain_teeth(stored[0], stored[1], SPLINE_COMB_TEETH, size):
+            comb += [p for pair in teeth for p in pair]
+            tips = [b for _, b in teeth]
+            comb += [p for a, b in zip(tips, tips[1:]) for p in (a, b)]
+    if getattr(vobj, "ShowForces", True) and len(obj.DuckForces) == len(obj.Ducks):
+        # the plane's in-plane perpendicular for the arrow heads
+        rot = obj.Plane.Rotation
+        inv = rot.inverted()
+        local = [inv.multVec(v) for v in obj.DuckForces]
+        tips = [inv.multVec(p - obj.Plane.Base) for p in obj.Ducks]
+        arrows = [rot.multVec(p) + obj.Plane.Base
+                  for p in _arrows(tips, local, ARROW_SHARE * size)]
+    return [((0.15, 0.15, 0.15), ducks, []), (_lighter(rgb), [], comb),
+            ((0.8, 0.05, 0.05), [], arrows)]
+
+
+def overlay_content(vobj):
+    """[(rgb, markers, segments)] per overlay group of a feature's view."""
+    obj = vobj.Object
+    rgb = _rgb(vobj.LineColor)
+    kind = _kind(obj)
+    if kind == "Fit":
+        data = list(obj.DataPoints) if getattr(vobj, "ShowData", True) else []
+        res = []
+        if getattr(vobj, "ShowResiduals", False) and len(obj.FootPoints) == len(obj.DataPoints):
+            for a, b in zip(obj.DataPoints, obj.FootPoints):
+                res += [a, b]
+        return [(tuple(0.55 * x for x in rgb), data, res)]
+    if kind == "G2Quad":
+        data = list(obj.Polyline) if getattr(vobj, "ShowPolyline", True) else []
+        return [((0.35, 0.35, 0.35), data, [p for a, b in zip(data, data[1:]) for p in (a, b)])]
+    if kind == "Spline":
+        return _spline_overlay(vobj, rgb)
+    return []
+
+
 class ViewProvider:
     """Icon, colours, overlays, the task panel on double-click."""
 
@@ -152,6 +223,11 @@ class ViewProvider:
         elif kind == "G2Quad":
             props = [("ShowPolyline", "The affine arc-length polyline (the B-spline's "
                                       "control polygon inside each piece)", True)]
+        elif kind == "Spline":
+            props = [("ShowDucks", "Markers at the points the spline passes through", True),
+                     ("ShowComb", "The curvature comb (teeth outside the bend)", True),
+                     ("ShowForces", "An arrow at each duck: the force it exerts on the "
+                                    "batten (the longest a tenth of the spline's size)", True)]
         for name, tip, value in props:
             if name not in vobj.PropertiesList:
                 vobj.addProperty("App::PropertyBool", name, "Elastica", tip)
@@ -161,27 +237,32 @@ class ViewProvider:
 
     def attach(self, vobj):
         self.Object = vobj.Object
-        self._overlay = None
-        if _kind(vobj.Object) not in ("Fit", "G2Quad"):
+        self._overlay, self._groups = None, []
+        widths = OVERLAY_GROUPS.get(_kind(vobj.Object), ())
+        if not widths:
             return
         from pivy import coin
         root = coin.SoSeparator()
-        self._colour = coin.SoBaseColor()
-        self._coords = coin.SoCoordinate3()
-        style = coin.SoDrawStyle()
-        style.pointSize = 6.0
-        style.lineWidth = 1.0
-        self._points = coin.SoPointSet()
-        self._lines = coin.SoLineSet()
-        self._line_coords = coin.SoCoordinate3()
         pick = coin.SoPickStyle()
         pick.style = coin.SoPickStyle.UNPICKABLE
-        for node in (pick, self._colour, style, self._coords, self._points):
-            root.addChild(node)
-        lines = coin.SoSeparator()
-        for node in (self._line_coords, self._lines):
-            lines.addChild(node)
-        root.addChild(lines)
+        root.addChild(pick)
+        for width in widths:
+            # one group: a colour, markers and line segments
+            sep = coin.SoSeparator()
+            g = {"colour": coin.SoBaseColor(), "coords": coin.SoCoordinate3(),
+                 "points": coin.SoPointSet(), "line_coords": coin.SoCoordinate3(),
+                 "lines": coin.SoLineSet()}
+            style = coin.SoDrawStyle()
+            style.pointSize = 6.0
+            style.lineWidth = width
+            for node in (g["colour"], style, g["coords"], g["points"]):
+                sep.addChild(node)
+            lines = coin.SoSeparator()
+            for node in (g["line_coords"], g["lines"]):
+                lines.addChild(node)
+            sep.addChild(lines)
+            root.addChild(sep)
+            self._groups.append(g)
         # beside the display modes, shown with the feature (onChanged: Visibility)
         self._overlay = coin.SoSwitch()
         self._overlay.addChild(root)
@@ -193,39 +274,29 @@ class ViewProvider:
         if getattr(self, "_overlay", None) is not None:
             self._overlay.whichChild = 0 if vobj.Visibility else -1
 
-    def overlay_counts(self):
-        """(markers, segments) drawn now (tests)."""
-        if getattr(self, "_overlay", None) is None:
-            return 0, 0
-        return self._points.numPoints.getValue(), self._lines.numVertices.getNum()
+    def overlay_counts(self, group=None):
+        """(markers, segments) drawn now, in all groups or in one (tests)."""
+        groups = getattr(self, "_groups", [])
+        if group is not None:
+            groups = groups[group:group + 1]
+        return (sum(g["points"].numPoints.getValue() for g in groups),
+                sum(g["lines"].numVertices.getNum() for g in groups))
 
     def _refresh(self, vobj):
         if getattr(self, "_overlay", None) is None:
             return
-        obj = vobj.Object
-        rgb = _rgb(vobj.LineColor)
-        if _kind(obj) == "Fit":
-            dark = tuple(0.55 * x for x in rgb)
-            self._colour.rgb.setValue(*dark)
-            data = list(obj.DataPoints) if getattr(vobj, "ShowData", True) else []
-            res = []
-            if getattr(vobj, "ShowResiduals", False) and len(obj.FootPoints) == len(obj.DataPoints):
-                for a, b in zip(obj.DataPoints, obj.FootPoints):
-                    res += [a, b]
-        else:
-            self._colour.rgb.setValue(0.35, 0.35, 0.35)
-            data = list(obj.Polyline) if getattr(vobj, "ShowPolyline", True) else []
-            res = [p for a, b in zip(data, data[1:]) for p in (a, b)]   # its edges
-        self._coords.point.setNum(0)
-        self._coords.point.setValues(0, len(data), [tuple(p) for p in data])
-        self._points.numPoints = len(data)
-        self._line_coords.point.setNum(0)
-        self._line_coords.point.setValues(0, len(res), [tuple(p) for p in res])
-        self._lines.numVertices.setNum(0)
-        self._lines.numVertices.setValues(0, len(res) // 2, [2] * (len(res) // 2))
+        for g, (rgb, markers, segments) in zip(self._groups, overlay_content(vobj)):
+            g["colour"].rgb.setValue(*rgb)
+            g["coords"].point.setNum(0)
+            g["coords"].point.setValues(0, len(markers), [tuple(p) for p in markers])
+            g["points"].numPoints = len(markers)
+            g["line_coords"].point.setNum(0)
+            g["line_coords"].point.setValues(0, len(segments), [tuple(p) for p in segments])
+            g["lines"].numVertices.setNum(0)
+            g["lines"].numVertices.setValues(0, len(segments) // 2, [2] * (len(segments) // 2))
 
     def updateData(self, obj, prop):
-        if prop in ("DataPoints", "FootPoints", "Polyline"):
+        if prop in ("DataPoints", "FootPoints", "Polyline", "Curves", "DuckForces"):
             self._refresh(obj.ViewObject)
         elif prop == "Status":
             vobj = obj.ViewObject
@@ -233,7 +304,8 @@ class ViewProvider:
                 vobj.DrawStyle = "Dashed" if obj.Status.startswith("error") else "Solid"
 
     def onChanged(self, vobj, prop):
-        if prop in ("ShowData", "ShowResiduals", "ShowPolyline", "LineColor"):
+        if prop in ("ShowData", "ShowResiduals", "ShowPolyline", "ShowDucks", "ShowComb",
+                    "ShowForces", "LineColor"):
             self._refresh(vobj)
         elif prop == "Visibility":
             self._show(vobj)

@@ -1,0 +1,394 @@
+"""The machinery of the Elastica task panels, modelled on FreeCAD's own Part and
+Sketcher panels: ``Panel`` (fields bound live to a feature's properties, the
+delayed recompute, enabled fields, result text, the view kept on the feature, OK
+and Cancel through the document's undo transaction) and its spin boxes
+(``NumberBox`` shows values as typed, ``DecadeBox`` steps by factors of 10). The
+panels of the features are in taskpanels.py."""
+from __future__ import annotations
+
+import FreeCAD as App
+import FreeCADGui as Gui
+from PySide import QtCore, QtGui
+
+from . import icon
+from .geometry import is_sketch
+
+CURRENT = []        # the open panel, if any (scripts and the GUI smoke test drive it)
+DELAY_MS = 150      # recompute after this pause in editing
+
+
+def _sketches(doc, exclude=()):
+    return [o for o in doc.Objects if is_sketch(o) and o.Name not in exclude]
+
+
+def _narrow(box):
+    """A combo box that may be narrower than its longest entry (the 260 px Combo View)."""
+    box.setSizeAdjustPolicy(QtGui.QComboBox.AdjustToMinimumContentsLengthWithIcon)
+    box.setMinimumContentsLength(8)
+    return box
+
+
+def _buttons(*names):
+    flags = QtGui.QDialogButtonBox.NoButton
+    for n in names:
+        flags |= getattr(QtGui.QDialogButtonBox, n)
+    try:
+        return int(flags)
+    except TypeError:          # PySide6 enums: the flag value
+        return flags.value
+
+
+class NumberBox(QtGui.QDoubleSpinBox):
+    """A spin box that shows its value as typed ('0.001', '2.5e-07', not '0.00'),
+    accepts scientific notation and steps by ``singleStep``."""
+
+    unit = ""                            # Qt calls validate() while __init__ runs
+
+    def __init__(self, lo, hi, step, unit="", tip=""):
+        super().__init__()
+        self.setDecimals(30)             # the box must not round 1e-7 to 0
+        self.setRange(lo, hi)
+        self.setSingleStep(step)
+        self.setKeyboardTracking(True)
+        self.unit = f" {unit}" if unit else ""
+        self.setSuffix(self.unit)
+        self.setToolTip(tip)
+
+    def textFromValue(self, value):
+        return f"{value:.6g}"
+
+    def _number(self, text):
+        t = text.strip()
+        if self.unit and t.endswith(self.unit.strip()):
+            t = t[:-len(self.unit.strip())].strip()
+        return float(t)
+
+    def valueFromText(self, text):
+        try:
+            return self._number(text)
+        except ValueError:
+            return self.value()
+
+    def validate(self, text, pos):
+        try:
+            v = self._number(text)
+            ok = self.minimum() <= v <= self.maximum()
+            state = QtGui.QValidator.Acceptable if ok else QtGui.QValidator.Intermediate
+        except ValueError:
+            state = QtGui.QValidator.Intermediate
+        return state, text, pos
+
+    def fixup(self, text):
+        return self.textFromValue(self.value()) + self.unit
+
+
+class DecadeBox(NumberBox):
+    """A tolerance: each arrow step (or wheel notch) multiplies or divides by 10."""
+
+    def stepBy(self, steps):
+        self.setValue(self.value() * 10.0 ** steps)
+
+
+class Panel:
+    """Shared machinery: bound fields, the delayed recompute, result text, the undo
+    transaction. Subclasses build their boxes in ``build`` and return the result
+    text of a successful recompute from ``result_text``."""
+
+    title = ""
+    icon_name = "elastica"
+
+    def __init__(self, obj, created=True):
+        self.obj = obj
+        self.doc = obj.Document
+        self.created = created          # a command made it: its transaction is still open
+        self.enablers = []              # (widget, callable -> bool)
+        self.edge_buttons = []          # (edge link property, button, text when empty)
+        self.timer = QtCore.QTimer()
+        self.timer.setSingleShot(True)
+        self.timer.setInterval(DELAY_MS)
+        self.timer.timeout.connect(self.update)
+        if not created:
+            self.doc.openTransaction(f"Edit {obj.Label}")
+        self.result = QtGui.QLabel()
+        self.result.setWordWrap(True)
+        self.result.setTextInteractionFlags(QtCore.Qt.TextSelectableByMouse)
+        self.form = []
+        self.build()
+        self.refresh()
+        self.refit()
+
+    # ---------------------------------------------------------------- building
+
+    def box(self, title):
+        """A new task box (a QWidget with a two-column grid) appended to the form."""
+        w = QtGui.QWidget()
+        w.setWindowTitle(title)
+        w.setWindowIcon(QtGui.QIcon(icon(self.icon_name)))
+        grid = QtGui.QGridLayout(w)
+        grid.setColumnStretch(1, 1)
+        self.form.append(w)
+        return grid
+
+    @staticmethod
+    def row(grid, label, widget, tip=""):
+        r = grid.rowCount()
+        if label:
+            lab = QtGui.QLabel(label)
+            lab.setToolTip(tip or widget.toolTip())
+            grid.addWidget(lab, r, 0)
+            grid.addWidget(widget, r, 1)
+        else:
+            grid.addWidget(widget, r, 0, 1, 2)
+        if tip:
+            widget.setToolTip(tip)
+        return widget
+
+    def number(self, grid, label, prop, lo, hi, step, unit, tip, decade=False, when=None):
+        """A spin box bound live to the float property prop."""
+        box = (DecadeBox if decade else NumberBox)(lo, hi, step, unit, tip)
+        box.blockSignals(True)
+        box.setValue(getattr(self.obj, prop))
+        box.blockSignals(False)
+        box.valueChanged.connect(lambda v: self.set(prop, float(v)))
+        self.row(grid, label, box, tip)
+        if when:
+            self.enablers.append((box, when))
+        return box
+
+    def integer(self, grid, label, prop, lo, hi, tip, when=None):
+        box = QtGui.QSpinBox()
+        box.setRange(lo, hi)
+        box.blockSignals(True)
+        box.setValue(max(lo, min(hi, int(getattr(self.obj, prop)))))
+        box.blockSignals(False)
+        box.setKeyboardTracking(True)
+        box.valueChanged.connect(lambda v: self.set(prop, int(v)))
+        self.row(grid, label, box, tip)
+        if when:
+            self.enablers.append((box, when))
+        return box
+
+    def check(self, grid, text, prop, tip, when=None, target=None):
+        """A check box bound live to the boolean property prop (of ``target``, default
+        the feature; a view property when target is the ViewObject)."""
+        target = target if target is not None else self.obj
+        box = QtGui.QCheckBox(text)
+        box.setChecked(bool(getattr(target, prop)))
+        box.toggled.connect(lambda v: self.set(prop, bool(v), target))
+        self.row(grid, "", box, tip)
+        if when:
+            self.enablers.append((box, when))
+        return box
+
+    def choice(self, grid, label, prop, values, texts, tip, when=None):
+        """A combo box bound live to the enumeration property prop."""
+        box = _narrow(QtGui.QComboBox())
+        box.addItems(list(texts))
+        box.setCurrentIndex(list(values).index(getattr(self.obj, prop)))
+        box.currentIndexChanged.connect(lambda i: self.set(prop, values[i]))
+        self.row(grid, label, box, tip)
+        if when:
+            self.enablers.append((box, when))
+        return box
+
+    def edge_button(self, grid, label, prop, tip, empty="free", when=None, picked=None):
+        """A button bound to the edge link prop: a click with an edge selected links it,
+        a click on a linked one frees it; ``picked()`` runs after a pick."""
+        btn = QtGui.QPushButton()
+        btn.clicked.connect(lambda _=False: self.pick_edge(prop, picked))
+        self.row(grid, label, btn, tip)
+        if when:
+            self.enablers.append((btn, when))
+        self.edge_buttons.append((prop, btn, empty))
+        self.show_edges()
+        return btn
+
+    def pick_edge(self, prop, picked=None):
+        if getattr(self.obj, prop):
+            self.set(prop, None)
+        else:
+            sel = [(s.Object, n) for s in Gui.Selection.getSelectionEx()
+                   for n in s.SubElementNames if n.startswith("Edge")]
+            if not sel:
+                self.result.setText("<b style='color:#b00'>select an edge first</b>")
+                return
+            self.set(prop, (sel[0][0], [sel[0][1]]))
+            if picked:
+                picked()
+        self.show_edges()
+
+    def show_edges(self):
+        for prop, btn, empty in self.edge_buttons:
+            link = getattr(self.obj, prop)
+            btn.setText(f"{link[0].Label}.{link[1][0]}" if link and link[1] else empty)
+
+    @staticmethod
+    def show_value(box, value):
+        """Show a result in a box the user does not edit now (no signal, no selection)."""
+        box.blockSignals(True)
+        box.setValue(value)
+        box.blockSignals(False)
+        box.lineEdit().deselect()
+
+    def bspline_box(self, of, degree_tip, when=None):
+        """The B-spline box: Tolerance (decades) and Degree fields (self.tol, self.degree)."""
+        b = self.box("B-spline")
+        self.tol = self.number(b, "Tolerance", "Tolerance", 1e-9, 1e3, 1e-3, "mm",
+                               f"Largest distance of the B-spline from {of} (mm); arrows step by "
+                               "a factor of 10", decade=True, when=when)
+        self.degree = self.integer(b, "Degree", "Degree", 3, 7, degree_tip, when=when)
+
+    def output_rows(self, grid, exclude, new_label):
+        """Keep the feature or not; copy its B-spline into a sketch (not those in exclude)."""
+        self.keep = self.check(grid, "Keep the parametric feature", "_keep",
+                               "Unchecked: OK removes the feature (keep only the sketch copy)",
+                               target=self)
+        self.sketch = _narrow(QtGui.QComboBox())
+        self.sketch.addItem("(no copy)", "")
+        for sk in _sketches(self.doc, exclude):
+            self.sketch.addItem(sk.Label, sk.Name)
+        self.sketch.addItem(new_label, "*new*")
+        self.row(grid, "Copy into", self.sketch,
+                 "OK copies the B-spline into this sketch: a copy, which does not follow later "
+                 "edits (the feature does)")
+
+    _keep = True
+
+    # ---------------------------------------------------------------- live update
+
+    def set(self, prop, value, target=None):
+        target = target if target is not None else self.obj
+        if getattr(target, prop) != value:
+            setattr(target, prop, value)
+            self.changed(prop)
+            if target is self.obj:
+                self.timer.start()
+        self.refresh_enabled()
+
+    def changed(self, prop):
+        """A property was edited (before the recompute)."""
+
+    def flush(self):
+        """Run a pending recompute now (OK, tests)."""
+        if self.timer.isActive():
+            self.timer.stop()
+            self.update()
+
+    def update(self):
+        try:
+            self.doc.recompute()
+        except Exception as exc:  # never let a preview escape
+            App.Console.PrintError(f"Elastica: {exc}\n")
+        self.refresh()
+        self.refit()
+
+    view_box = None
+
+    def view_objects(self):
+        """The objects besides the feature the view keeps in sight; None: the panel
+        leaves the view alone."""
+        return None
+
+    def refit(self):
+        """Fit the view to the feature and its view_objects when it leaves what was in
+        view at the last fit, or shrinks to a small part of it."""
+        others = self.view_objects()
+        if others is None or self.obj.Shape.isNull() or Gui.ActiveDocument is None:
+            return
+        bb = self.obj.Shape.BoundBox
+        if self.view_box is not None and self.view_box.isInside(bb) and \
+                bb.DiagonalLength >= 0.25 * self.view_box.DiagonalLength:
+            return
+        box = App.BoundBox(bb)
+        for o in others:
+            shape = getattr(o, "Shape", None)
+            if shape is not None and not shape.isNull():
+                box.add(shape.BoundBox)
+        self.view_box = box
+        show_box(box)
+
+    def refresh(self):
+        """Result text (the error in red) and which fields apply."""
+        o = self.obj
+        if o.Status.startswith("error"):
+            self.result.setText(f"<b style='color:#b00'>{o.Status}</b>")
+        else:
+            self.result.setText(self.result_text())
+        self.refresh_enabled()
+
+    def refresh_enabled(self):
+        for w, when in self.enablers:
+            w.setEnabled(bool(when()))
+
+    def result_text(self):
+        return f"status: {self.obj.Status}"
+
+    # ---------------------------------------------------------------- OK / Cancel
+
+    def getStandardButtons(self):
+        return _buttons("Ok", "Cancel")
+
+    def copy_code(self):
+        """Python of OK's copy into a sketch (recorded), or ''."""
+        target = self.sketch.itemData(self.sketch.currentIndex()) if hasattr(self, "sketch") else ""
+        if not target:
+            return ""
+        doc = f"App.getDocument({self.doc.Name!r})"
+        code = "from freecad.elastica import geometry as elastica_geometry\n"
+        if target == "*new*":
+            code += (f"_sk = {doc}.addObject('Sketcher::SketchObject', 'ElasticaSketch')\n"
+                     f"_sk.Placement = {doc}.getObject({self.obj.Name!r}).Plane\n")
+        else:
+            code += f"_sk = {doc}.getObject({target!r})\n"
+        return code + (f"elastica_geometry.write_to_sketch({doc}.getObject({self.obj.Name!r}), "
+                       "_sk)\n")
+
+    def accept(self):
+        self.flush()
+        if self.obj.Status.startswith("error"):
+            App.Console.PrintError(f"Elastica: {self.obj.Status}\n")
+            return False          # stay open: the user fixes the input or cancels
+        code = self.copy_code()
+        if code:
+            Gui.doCommandGui(code)
+        if not self._keep:
+            Gui.doCommandGui(f"App.getDocument({self.doc.Name!r}).removeObject({self.obj.Name!r})")
+        self.doc.recompute()
+        self.doc.commitTransaction()
+        self._close()
+        return True
+
+    def reject(self):
+        self.timer.stop()
+        name = self.obj.Name
+        self.doc.abortTransaction()
+        # without undo (UndoMode 0) the abort keeps a fresh feature: remove it
+        if self.created and name in [o.Name for o in self.doc.Objects]:
+            self.doc.removeObject(name)
+        self.doc.recompute()
+        self._close()
+        return True
+
+    def _close(self):
+        CURRENT[:] = []
+        Gui.Control.closeDialog()
+        if Gui.ActiveDocument is not None:
+            Gui.ActiveDocument.resetEdit()
+
+
+def show_box(box):
+    """Fit the active 3D view to a bounding box (with a margin for combs and arrows)."""
+    view = Gui.ActiveDocument.ActiveView
+    try:
+        from pivy import coin
+        w, h = view.getSize()
+        d = 0.15 * box.DiagonalLength
+        view.getCameraNode().viewBoundingBox(
+            coin.SbBox3f(box.XMin - d, box.YMin - d, box.ZMin - d,
+                         box.XMax + d, box.YMax + d, box.ZMax + d), w / max(h, 1), 1.0)
+    except Exception:  # a view without a Coin camera: fit everything
+        Gui.SendMsgToActiveView("ViewFit")
+
+
+def _fmt(v, unit="mm"):
+    return f"{v:.3g} {unit}".strip()

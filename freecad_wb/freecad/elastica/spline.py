@@ -1,0 +1,296 @@
+"""Elastic spline (issue 14): the batten through N ducks. A chain of elasticae of one
+tension through picked points (sketch points or vertices, a Points object, a Draft
+wire or polyline), curvature continuous at every duck; each open end natural
+(curvature 0), tangent or G2 to a picked edge; or closed; by tension or by total
+length. The feature keeps the energy, tension, length, largest curvature and the
+force each duck holds; its shape is ONE G2 B-spline (ElasticSpline.to_bspline).
+It follows its points; writing it into a sketch is a copy."""
+from __future__ import annotations
+
+import json
+import math
+
+import FreeCAD as App
+
+from . import defaults
+from .geometry import edge_end, el, link_edge, np, part_bspline, plane_coordinates, \
+    plane_curvature, to_3d
+from .proxy import (FeatureProxy, InputProblem, add_enum, add_property, check_degree,
+                    check_number, check_tolerance, new_feature, read_only)
+from .sources import gather_vertices
+
+MODES = ["tension", "length"]
+END_CONDITIONS = ["natural", "tangent", "G2"]
+BSPLINE_DEGREE = 5          # one B-spline of few poles at the preference tolerance
+ACCEPTED_RESIDUAL = 1e-6    # a spline the solver resolves only to this is still shown (noted)
+DUCKS_NEED = ("points: sketch points or vertices, a sketch of points, a Points object, or a "
+              "Draft wire / polyline")
+
+
+def _library_message(exc):
+    return str(exc).replace("elastic_spline: ", "")
+
+
+def end_condition(edge, condition, point, neighbour, arriving):
+    """What an end of the spline at ``point`` (3D; ``neighbour`` the next duck
+    inwards) takes from ``edge`` at the edge's end nearest the point: (edge, at_end,
+    3D unit direction of travel, gap). The spline leaves a start edge continuing it
+    and arrives at an end edge running into it; an edge that does not touch the
+    point only lends its direction, turned to run along the spline."""
+    at_end = (edge_end(edge, True)[0] - point).Length < (edge_end(edge, False)[0] - point).Length
+    p, leaving = edge_end(edge, at_end)
+    direction = -leaving if arriving else leaving
+    gap = (p - point).Length
+    if gap > 1e-7 * (1.0 + (neighbour - point).Length):
+        inward = (point - neighbour) if arriving else (neighbour - point)
+        if direction.dot(inward) < 0:
+            direction = -direction
+    return {"edge": edge, "at_end": at_end, "direction": direction, "gap": gap,
+            "condition": condition}
+
+
+def duck_forces(sp):
+    """(n, 2) force each duck exerts on the batten (units of EI/2, 1/mm^2): with F_i
+    the constant force of piece i (the batten after a section pulling on the batten
+    before it), duck i holds F_{i-1} - F_i; an open end's duck holds -F_0 or
+    F_{m-1} (the library's convention, header section spline). They sum to zero."""
+    n = np()
+    f = n.asarray(sp.forces, dtype=float)
+    if sp.closed:
+        return n.roll(f, 1, axis=0) - f
+    return n.vstack([-f[:1], f[:-1] - f[1:], f[-1:]])
+
+
+def _tangent_only(spec):
+    return spec["tangent"] if isinstance(spec, dict) else spec
+
+
+def _solve(xy, mode, value, closed, start, end):
+    """el.elastic_spline with the accepted-residual rule; InputProblem for the rest.
+    When a spline with G2 ends fails, the same with tangent ends is tried: if that
+    one exists, the message blames the G2 end (its span found no tension)."""
+    e = el()
+    kw = {"tension": value} if mode == "tension" else {"length": value}
+    try:
+        return e.elastic_spline(xy, start=start, end=end, closed=closed, **kw), ""
+    except e.NotConvergedError as exc:
+        sp = getattr(exc, "spline", None)
+        if sp is not None and sp.residual <= ACCEPTED_RESIDUAL:
+            return sp, (f"resolved to {sp.residual:.1g} only (a piece close to a circular arc, "
+                        "or a very high tension)")
+        failure = "no equilibrium found: the solver did not converge; try another tension or length"
+    except e.DomainError as exc:
+        failure = _library_message(exc)
+    except (ValueError, ArithmeticError, RuntimeError) as exc:
+        raise InputProblem(f"elastic spline failed: {_library_message(exc)}") from None
+    if any(isinstance(s, dict) for s in (start, end)):
+        try:
+            e.elastic_spline(xy, start=_tangent_only(start), end=_tangent_only(end),
+                             closed=closed, **kw)
+            failure = ("no equilibrium with this G2 end: its span finds no tension of its own "
+                       "that gives the edge's curvature (the batten would have to buckle); "
+                       "use a tangent end, or move the point next to it")
+        except ValueError:
+            pass
+    raise InputProblem(failure)
+
+
+def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, closed=False,
+                start=None, end=None, tol=1e-3, degree=BSPLINE_DEGREE):
+    """The elastic spline through 3D ``points`` (in ``plane``, a sketch's placement,
+    when they lie in it, else their best plane). ``start`` / ``end``: None (natural)
+    or (condition 'tangent' / 'G2', Part edge). Tension mode: ``tension`` >= 0
+    (1/mm^2; 0 = the free batten); length mode: ``length`` mm (0 = the free
+    batten's length). Returns a dict: 'spline' (el.ElasticSpline, plane
+    coordinates), 'bspline', 'placement', 'forces' (duck_forces), 'notes'.
+    Raises InputProblem with a user message."""
+    n = np()
+    if mode not in MODES:
+        raise InputProblem(f"unknown mode {mode!r} (tension or length)")
+    for i, p in enumerate(points):
+        if not all(math.isfinite(c) for c in p):
+            raise InputProblem(f"point {i + 1} is not finite ({p.x:g}, {p.y:g}, {p.z:g})")
+    pts = list(points)
+    extent = max(((a - pts[0]).Length for a in pts), default=0.0)
+    if closed and len(pts) > 3 and (pts[0] - pts[-1]).Length <= 1e-9 * (1.0 + extent):
+        pts = pts[:-1]                     # a closed wire's first vertex, repeated
+    need = 3 if closed else 2
+    if len(pts) < need:
+        raise InputProblem(f"{len(pts)} point{'s' if len(pts) != 1 else ''}: an elastic spline "
+                           f"needs at least {need}{' (closed)' if closed else ''}")
+    value = check_number("Tension", tension, 0.0, None, "1/mm^2", why="0 is the free batten; to "
+                         "push the batten together give a length") if mode == "tension" \
+        else check_number("Length", length, 0.0, None, "mm", why="0 is the free batten's length")
+    tol, degree = check_tolerance(tol), check_degree(degree)
+    ends = [None, None]
+    if not closed:
+        for j, spec in enumerate((start, end)):
+            if spec is not None:
+                i, inner = (0, 1) if j == 0 else (-1, -2)
+                ends[j] = end_condition(spec[1], spec[0], pts[i], pts[inner], arriving=j == 1)
+    # the plane holds the points and the end tangents
+    h = extent / max(len(pts) - 1, 1) or 1.0
+    probes = [pts[0 if j == 0 else -1] + c["direction"] * h for j, c in enumerate(ends) if c]
+    try:
+        loc, plane = plane_coordinates(pts + probes, plane, flat=1e-6,
+                                       what="points (with the end edges' tangents)")
+    except (ValueError, ArithmeticError) as exc:
+        raise InputProblem(f"no plane through the points: {exc}") from None
+    xy = n.ascontiguousarray(loc[:len(pts)])
+    specs, notes, k = [None, None], [], len(pts)
+    for j, c in enumerate(ends):
+        if c is None:
+            continue
+        t = (loc[k] - xy[0 if j == 0 else -1]) / h
+        k += 1
+        t = t / n.hypot(*t)
+        what = "the start edge" if j == 0 else "the end edge"
+        if c["condition"] == "G2":
+            specs[j] = {"tangent": (float(t[0]), float(t[1])),
+                        "curvature": plane_curvature(c["edge"], c["at_end"], t, plane, what)}
+        else:
+            specs[j] = (float(t[0]), float(t[1]))
+        if c["gap"] > 1e-7 * (1.0 + extent):
+            notes.append(f"{what}'s end is {c['gap']:.3g} mm from the "
+                         f"{'first' if j == 0 else 'last'} point (its direction is used)")
+    if mode == "length":
+        polygon = float(n.sum(n.hypot(*n.diff(n.vstack([xy, xy[:1]]) if closed else xy,
+                                               axis=0).T)))
+        if value == 0.0:
+            free, _ = _solve(xy, "tension", 0.0, closed, *specs)
+            value = free.length
+        elif value <= polygon:
+            raise InputProblem(f"Length = {value:.6g} mm is not longer than the polygon through "
+                               f"the points ({polygon:.6g} mm): any length above it is possible")
+    sp, note = _solve(xy, mode, value, closed, *specs)
+    if note:
+        notes.append(note)
+    for j, name in ((0, "first"), (-1, "last")):
+        if isinstance(specs[j], dict):
+            notes.append(f"G2 {'start' if j == 0 else 'end'}: the {name} span takes its own "
+                         f"tension {sp.tensions[j]:.4g}/mm\u00b2")
+    try:
+        bs = sp.to_bspline(tol, degree)
+    except (ValueError, ArithmeticError, RuntimeError) as exc:
+        raise InputProblem(f"B-spline: {_library_message(exc)}") from None
+    return {"spline": sp, "bspline": bs, "placement": plane, "forces": duck_forces(sp),
+            "notes": notes}
+
+
+class SplineProxy(FeatureProxy):
+    """The elastic spline through the linked points."""
+
+    kind = "Spline"
+
+    def setup(self, obj):
+        tol, _, _ = defaults()
+        add_property(obj, "App::PropertyLinkSubList", "Points", "Input",
+                     "The ducks, in order: " + DUCKS_NEED)
+        add_enum(obj, "Mode", "Spline", "Solve for a given tension (default 0: the free "
+                 "batten) or a given total length (the tension follows)", MODES, "tension")
+        add_property(obj, "App::PropertyFloat", "Tension", "Spline",
+                     "Tension sigma in tension mode (1/mm^2, >= 0): 0 = the free batten, "
+                     "larger pulls the batten straighter between the ducks", 0.0)
+        add_property(obj, "App::PropertyFloat", "Length", "Spline",
+                     "Total length in length mode (mm), longer than the polygon through the "
+                     "points; 0 = the free batten's length", 0.0)
+        add_property(obj, "App::PropertyBool", "Closed", "Spline",
+                     "A closed batten through the points (the end conditions do not apply)",
+                     False)
+        for end, which in (("Start", "first"), ("End", "last")):
+            add_enum(obj, f"{end}Condition", "Spline",
+                     f"At the {which} point: natural (curvature 0, a free end), tangent to "
+                     f"{end}Edge, or G2 to it (tangent and curvature; that end's span then "
+                     "takes a tension of its own)", END_CONDITIONS, "natural")
+            add_property(obj, "App::PropertyLinkSub", f"{end}Edge", "Spline",
+                         f"The edge the {which} point follows (tangent or G2) at its end "
+                         f"nearest that point")
+        add_property(obj, "App::PropertyFloat", "Stiffness", "Spline",
+                     "Bending stiffness EI of the batten (N mm^2): the duck forces in newtons; "
+                     "0 = in units of EI/2 (1/mm^2)", 0.0)
+        add_property(obj, "App::PropertyFloat", "Tolerance", "BSpline",
+                     "Largest distance (mm) of the B-spline from the elastic spline", tol)
+        add_property(obj, "App::PropertyInteger", "Degree", "BSpline",
+                     "Degree of the B-spline (3 to 7): one B-spline, G2 at the points",
+                     BSPLINE_DEGREE)
+        for name, tip in (
+                ("SplineLength", "Length of the spline (mm)"),
+                ("SplineTension", "Tension sigma of the spline (1/mm^2): the given one, or the "
+                                  "one the length needs (< 0: pushed together)"),
+                ("Energy", "Bending energy: the integral of kappa^2 ds (1/mm)"),
+                ("MaxCurvature", "Largest |curvature| (1/mm)"),
+                ("BSplineDeviation", "Certified distance of the B-spline from the spline (mm)")):
+            add_property(obj, "App::PropertyFloat", name, "Result", tip)
+        add_property(obj, "App::PropertyFloatList", "SpanTensions", "Result",
+                     "Each span's tension (1/mm^2): the common one, except a G2 end's span")
+        add_property(obj, "App::PropertyVectorList", "Ducks", "Result",
+                     "The points the spline passes through (global coordinates)")
+        add_property(obj, "App::PropertyVectorList", "DuckForces", "Result",
+                     "The force each duck exerts on the batten (global directions, units of "
+                     "EI/2: 1/mm^2; times EI/2 in N mm^2 gives newtons); they sum to zero")
+        add_property(obj, "App::PropertyInteger", "Poles", "Result", "Poles of the B-spline")
+        add_property(obj, "App::PropertyString", "Status", "Result", "Outcome of the last solve")
+        add_property(obj, "App::PropertyString", "Curves", "Result",
+                     "The spline's pieces (JSON, plane coordinates)")
+        add_property(obj, "App::PropertyPlacement", "Plane", "Result", "The plane of the spline")
+        read_only(obj, "SplineLength", "SplineTension", "Energy", "MaxCurvature",
+                  "BSplineDeviation", "SpanTensions", "Ducks", "DuckForces", "Poles", "Status",
+                  "Curves", "Plane")
+
+    def end_specs(self, obj):
+        """(start, end): None or (condition, Part edge) from the end properties."""
+        out = []
+        for end in ("Start", "End"):
+            cond, link = getattr(obj, f"{end}Condition"), getattr(obj, f"{end}Edge")
+            if cond == "natural" or obj.Closed:
+                out.append(None)
+                continue
+            if not link or not link[1] or not link[1][0].startswith("Edge"):
+                raise InputProblem(f"{end}Condition = {cond} needs an edge: pick one "
+                                   f"({end.lower()} edge)")
+            out.append((cond, link_edge(link[0], link[1][0])))
+        return out
+
+    def compute(self, obj):
+        check_number("Stiffness", obj.Stiffness, 0.0, None, "N mm^2", why="0 shows the duck "
+                     "forces in units of EI/2")
+        pts, plane = gather_vertices(obj.Points, DUCKS_NEED, edge_means_object=True)
+        return spline_core(pts, plane, obj.Mode, obj.Tension, obj.Length, obj.Closed,
+                           *self.end_specs(obj), tol=obj.Tolerance, degree=obj.Degree)
+
+    def apply(self, obj, r):
+        sp, plc, bs = r["spline"], r["placement"], r["bspline"]
+        obj.Shape = part_bspline(bs, plc).toShape()
+        obj.SplineLength = sp.length
+        obj.SplineTension = sp.tension
+        obj.Energy = sp.energy
+        obj.MaxCurvature = sp.max_curvature
+        obj.BSplineDeviation = float(bs.max_deviation)
+        obj.SpanTensions = [float(t) for t in sp.tensions]
+        obj.Ducks = to_3d(plc, sp.data)
+        obj.DuckForces = [plc.Rotation.multVec(App.Vector(float(x), float(y), 0.0))
+                          for x, y in r["forces"]]
+        obj.Poles = int(bs.npoles)
+        obj.Plane = plc
+        from libelastica.io import curve_to_dict
+        obj.Curves = json.dumps([curve_to_dict(c) for c in sp.pieces])
+        obj.Status = "; ".join(["ok"] + r["notes"])
+
+    def plane_curves(self, obj):
+        from .fit import stored_curves
+        return stored_curves(obj)
+
+
+def make(doc, sources=(), **props):
+    """A new elastic spline through the picked points ``sources`` [(obj, [subnames])];
+    props set Mode, Tension, Length, Closed, StartCondition, StartEdge (obj, ['EdgeN']),
+    EndCondition, EndEdge, Stiffness, Tolerance, Degree."""
+    for end in ("StartEdge", "EndEdge"):
+        if end in props and props[end] is not None:
+            o, sub = props[end]
+            props[end] = (o, [sub] if isinstance(sub, str) else list(sub))
+    return new_feature(doc, "ElasticaSpline", SplineProxy,
+                       Points=[(o, tuple(s) or ("",)) for o, s in sources], **props)
+
+
+__all__ = ["SplineProxy", "spline_core", "make", "duck_forces", "MODES", "END_CONDITIONS"]

@@ -1,0 +1,330 @@
+"""freecadcmd -t tests of the Elastic spline feature (issue 14): through its points,
+G2 at them measured on the shape with Part's curve API, natural / tangent / G2 /
+closed ends, tension and length modes, the duck forces, re-solving when a sketch
+point moves, save / reopen, every kind of source, and bad input (a message, the
+document unchanged)."""
+import math
+import os
+import tempfile
+import unittest
+
+import FreeCAD as App
+import Part
+
+import elastica_samples as S
+from elastica_samples import curvature_vector, sides
+from freecad.elastica import commands as C
+from freecad.elastica import spline as Sp
+
+DUCKS = [(0, 0), (30, 10), (60, 5), (90, 20), (120, 0)]     # a hand-placed batten (mm)
+
+
+def duck_parameters(curve, ducks):
+    """The knots of a spline's B-spline at its ducks (each duck is a knot: the pieces
+    are joined there)."""
+    knots = curve.getKnots()
+    out = []
+    for p in ducks:
+        u = curve.parameter(p)
+        out.append(min(knots, key=lambda k: abs(k - u)))
+        assert abs(out[-1] - u) < 1e-6 * (knots[-1] - knots[0]), (p, u, out[-1])
+    return out
+
+
+def library_spline(feature, **kw):
+    """The library's spline for the feature's points in its plane (the reference)."""
+    import libelastica as el
+    import numpy as np
+    inv = feature.Plane.inverse()
+    xy = np.array([tuple(inv.multVec(p))[:2] for p in feature.Ducks])
+    return el.elastic_spline(xy, **kw)
+
+
+class SplineTest(unittest.TestCase):
+    def setUp(self):
+        self.doc = S.new_doc("ElasticaSplineTest")
+        self.sk = S.points_sketch(self.doc, DUCKS, "Ducks")
+
+    def tearDown(self):
+        App.closeDocument(self.doc.Name)
+
+    def spline(self, sources=None, **props):
+        s = Sp.make(self.doc, sources or [(self.sk, [])], **props)
+        self.doc.recompute()
+        self.assertTrue(s.Status.startswith("ok"), s.Status)
+        return s
+
+    def global_ducks(self, xy=DUCKS):
+        return [S.SKETCH_PLACEMENT.multVec(App.Vector(x, y, 0)) for x, y in xy]
+
+    def check_through_and_g2(self, s, ducks):
+        """One B-spline edge through the ducks, tangent and curvature vector equal on
+        both sides of every interior duck (measured on the shape), equal to the
+        library's curvature there."""
+        self.assertEqual(len(s.Shape.Edges), 1)
+        edge = s.Shape.Edges[0]
+        c = edge.Curve
+        self.assertIsInstance(c, Part.BSplineCurve)
+        for p in ducks:
+            self.assertLess(edge.distToShape(Part.Vertex(p))[0], s.Tolerance, p)
+        kmax = s.MaxCurvature
+        knots = c.getKnots()
+        for j, u in enumerate(duck_parameters(c, ducks)[1:-1], start=1):
+            i = knots.index(u)
+            span = 0.5 * min(u - knots[i - 1], knots[i + 1] - u)
+            (t0, k0), (t1, k1) = sides(c, u, span)
+            self.assertLess((c.value(u) - ducks[j]).Length, 1e-9 * (1 + kmax), j)
+            self.assertLess((t0 - t1).Length, 1e-9, f"tangent jump at duck {j}")
+            self.assertLess((k0 - k1).Length, 1e-6 * kmax, f"curvature jump at duck {j}")
+            self.assertGreater(k0.Length, 0.0)
+        return c
+
+    # ------------------------------------------------------------------ shape
+
+    def test_through_the_points_g2_at_every_duck(self):
+        s = self.spline()
+        ducks = self.global_ducks()
+        c = self.check_through_and_g2(s, ducks)
+        ref = library_spline(s, tension=0.0)
+        for j, u in enumerate(duck_parameters(c, ducks)):
+            self.assertAlmostEqual(c.curvature(u), abs(ref.curvatures[j]),
+                                   delta=1e-6 * ref.max_curvature, msg=j)
+        # natural ends: no curvature; the free batten's numbers
+        self.assertLess(c.curvature(c.FirstParameter), 1e-7 * s.MaxCurvature)
+        self.assertLess(c.curvature(c.LastParameter), 1e-7 * s.MaxCurvature)
+        self.assertEqual((s.Mode, s.Tension, s.SplineTension), ("tension", 0.0, 0.0))
+        self.assertAlmostEqual(s.Energy, ref.energy, delta=1e-12 * ref.energy)
+        self.assertAlmostEqual(s.SplineLength, ref.length, delta=1e-9 * ref.length)
+        self.assertAlmostEqual(s.Shape.Length, s.SplineLength, delta=1e-3)
+        self.assertLessEqual(s.BSplineDeviation, s.Tolerance)
+        self.assertEqual(list(s.SpanTensions), [0.0] * 4)
+
+    def test_duck_forces_balance_and_are_normal_to_the_batten(self):
+        s = self.spline(Tension=2e-4)
+        f = list(s.DuckForces)
+        self.assertEqual(len(f), len(DUCKS))
+        total = sum(f, App.Vector())
+        biggest = max(v.Length for v in f)
+        self.assertLess(total.Length, 1e-12 * biggest)
+        normal = S.SKETCH_PLACEMENT.Rotation.multVec(App.Vector(0, 0, 1))
+        c = s.Shape.Edges[0].Curve
+        for j, u in enumerate(duck_parameters(c, self.global_ducks())):
+            self.assertLess(abs(f[j].dot(normal)), 1e-12 * biggest, j)   # in the plane
+            if 0 < j < len(f) - 1:                  # frictionless ducks: normal forces
+                t = App.Vector(c.tangent(u)[0]).normalize()
+                self.assertLess(abs(f[j].dot(t)), 1e-9 * biggest, j)
+        # an open natural end's duck holds the tension along the batten, -F_0
+        t0 = App.Vector(c.tangent(c.FirstParameter)[0]).normalize()
+        self.assertAlmostEqual(f[0].dot(t0), -2e-4, delta=1e-9)
+
+    def test_length_mode_has_that_length(self):
+        s = self.spline(Mode="length", Length=140.0)
+        self.assertAlmostEqual(s.SplineLength, 140.0, delta=1e-8)
+        self.assertAlmostEqual(s.Shape.Length, 140.0, delta=1e-3)
+        self.assertLess(s.SplineTension, 0.0)            # longer than the free batten: pushed
+        self.check_through_and_g2(s, self.global_ducks())
+        free = self.spline()
+        s.Length = 0.0                                   # 0 = the free batten's length
+        self.doc.recompute()
+        self.assertAlmostEqual(s.SplineLength, free.SplineLength, delta=1e-8)
+
+    def test_tension_pulls_the_batten_shorter(self):
+        lengths = [self.spline(Tension=t).SplineLength for t in (0.0, 1e-4, 1e-3, 1e-2)]
+        self.assertEqual(lengths, sorted(lengths, reverse=True))
+
+    def test_tangent_and_g2_ends_follow_picked_edges(self):
+        # a line ending at the first duck; an arc of radius 50 mm starting at the last,
+        # heading down-right and bending left (a clamped end there bends left, 1/63 mm)
+        sk = self.doc.addObject("Sketcher::SketchObject", "Ends")
+        sk.Placement = S.SKETCH_PLACEMENT
+        sk.addGeometry(Part.LineSegment(App.Vector(-40, -12, 0), App.Vector(0, 0, 0)), False)
+        r = 50.0
+        centre = App.Vector(120, 0, 0) + App.Vector(1, 1, 0).normalize() * r
+        a0 = -0.75 * math.pi
+        sk.addGeometry(Part.ArcOfCircle(Part.Circle(centre, App.Vector(0, 0, 1), r),
+                                        a0, a0 + 1.0), False)
+        self.doc.recompute()
+        s = self.spline(StartCondition="tangent", StartEdge=(sk, "Edge1"), EndCondition="G2",
+                        EndEdge=(sk, "Edge2"), Tension=1e-4)
+        ducks = self.global_ducks()
+        c = self.check_through_and_g2(s, ducks)
+        line, arc = sk.Shape.Edges
+        d = line.tangentAt(line.LastParameter).normalize()
+        self.assertGreater(App.Vector(c.tangent(c.FirstParameter)[0]).normalize().dot(d),
+                           1 - 1e-12)
+        # the end: tangent and curvature vector equal to the arc's at the join
+        u = arc.Curve.parameter(ducks[-1])
+        t_arc = arc.tangentAt(u).normalize()
+        t_end = App.Vector(c.tangent(c.LastParameter)[0]).normalize()
+        self.assertLess((t_end - t_arc).Length, 1e-9)    # the arc continues the batten
+        k_arc = arc.normalAt(u) * arc.curvatureAt(u)
+        k_end = curvature_vector(c, c.LastParameter)
+        self.assertLess((k_end - k_arc).Length, 1e-6 / r)
+        self.assertIn("G2 end: the last span takes its own tension", s.Status)
+        self.assertNotAlmostEqual(s.SpanTensions[-1], 1e-4, delta=1e-8)
+        self.assertEqual(list(s.SpanTensions[:-1]), [1e-4] * 3)
+
+    def test_g2_end_that_cannot_be_met_says_so(self):
+        sk = self.doc.addObject("Sketcher::SketchObject", "Ends")
+        sk.Placement = S.SKETCH_PLACEMENT
+        sk.addGeometry(Part.LineSegment(App.Vector(-40, 0, 0), App.Vector(0, 0, 0)), False)
+        self.doc.recompute()
+        s = self.spline(StartCondition="tangent", StartEdge=(sk, "Edge1"))
+        good = s.Shape.copy()
+        s.StartCondition = "G2"          # zero curvature after a tangent curvature of 0.055/mm
+        self.doc.recompute()
+        self.assertTrue(s.Status.startswith("error"), s.Status)
+        self.assertIn("tangent end", s.Status)
+        self.assertTrue(s.Shape.isSame(good) or abs(s.Shape.Length - good.Length) < 1e-12)
+        s.StartEdge = None               # a condition without an edge
+        self.doc.recompute()
+        self.assertIn("needs an edge", s.Status)
+
+    def test_closed_wire_gives_a_closed_g2_batten(self):
+        ring = [(40 * math.cos(a), 25 * math.sin(a)) for a in
+                [2 * math.pi * i / 7 for i in range(7)]]
+        import Draft
+        wire = Draft.make_wire(self.global_ducks(ring), closed=True)   # a face, one wire
+        self.doc.recompute()
+        s = C.spline_sources([(wire, ["Edge3"])], open_panel=False)   # a click on the wire
+        self.doc.recompute()
+        self.assertTrue(s.Closed and s.Status.startswith("ok"), s.Status)
+        self.assertEqual(len(s.Ducks), 7)
+        c = self.check_through_and_g2(s, self.global_ducks(ring + ring[:1]))
+        # the seam: the same point, tangent and curvature vector at both ends
+        a, b = c.FirstParameter, c.LastParameter
+        self.assertLess((c.value(a) - c.value(b)).Length, 1e-9)
+        self.assertLess((App.Vector(c.tangent(a)[0]).normalize() -
+                         App.Vector(c.tangent(b)[0]).normalize()).Length, 1e-9)
+        self.assertLess((curvature_vector(c, a) - curvature_vector(c, b)).Length,
+                        1e-6 * s.MaxCurvature)
+        self.assertAlmostEqual(sum(s.DuckForces, App.Vector()).Length, 0.0, delta=1e-15)
+
+    # ------------------------------------------------------------------ sources
+
+    def test_every_kind_of_source(self):
+        ducks = self.global_ducks()
+        ref = self.spline()
+        wire = S.polyline_3d(self.doc, DUCKS, name="Wire")
+        cloud = self.doc.addObject("Points::Feature", "Cloud")
+        import Points
+        cloud.Points = Points.Points(ducks)
+        lines = S.polyline_3d(self.doc, DUCKS, name="Picked")
+        self.doc.recompute()
+        picked = [(lines, [f"Vertex{i}" for i in (1, 2, 3, 4, 5)])]
+        # (a Points object keeps single precision floats)
+        for sources, rel in (([(wire, [])], 1e-12), ([(cloud, [])], 1e-6), (picked, 1e-12)):
+            s = self.spline(sources)
+            self.assertEqual(len(s.Ducks), 5, sources)
+            self.assertAlmostEqual(s.Energy, ref.Energy, delta=rel * ref.Energy)
+            self.assertLess(max((a - b).Length for a, b in zip(s.Ducks, ducks)), 1e4 * rel)
+            self.check_through_and_g2(s, list(s.Ducks))
+        import Draft
+        dw = Draft.make_wire(ducks)
+        self.doc.recompute()
+        self.assertAlmostEqual(self.spline([(dw, [])]).Energy, ref.Energy,
+                               delta=1e-9 * ref.Energy)
+
+    def test_two_points_and_collinear_points_give_the_straight_batten(self):
+        s = self.spline([(S.points_sketch(self.doc, [(0, 0), (50, 20)], "Two"), [])])
+        self.assertAlmostEqual(s.SplineLength, math.hypot(50, 20), delta=1e-9)
+        s = self.spline([(S.points_sketch(self.doc, [(0, 0), (10, 4), (50, 20)], "Line"), [])])
+        self.assertAlmostEqual(s.SplineLength, math.hypot(50, 20), delta=1e-9)
+        self.assertEqual(s.MaxCurvature, 0.0)
+
+    # ------------------------------------------------------------------ parametric
+
+    def test_moving_a_sketch_point_re_solves(self):
+        s = self.spline()
+        before = s.Energy
+        self.sk.movePoint(2, 1, App.Vector(60, 25, 0))       # the middle duck, up 20 mm
+        self.doc.recompute()
+        self.assertTrue(s.Status.startswith("ok"), s.Status)
+        moved = list(DUCKS)
+        moved[2] = (60, 25)
+        self.check_through_and_g2(s, self.global_ducks(moved))
+        self.assertGreater(abs(s.Energy - before), 1e-3 * before)
+
+    def test_save_reopen_recompute_same_result(self):
+        s = self.spline(Tension=1.2345678901234567e-4, Stiffness=3.6e6)
+        energy, name = s.Energy, s.Name
+        samples = [tuple(p) for p in s.Shape.Edges[0].discretize(50)]
+        path = os.path.join(tempfile.mkdtemp(), "spline.FCStd")
+        self.doc.saveAs(path)
+        App.closeDocument(self.doc.Name)
+        self.doc = App.openDocument(path)
+        s2 = self.doc.getObject(name)
+        self.assertEqual(s2.Proxy.kind, "Spline")
+        self.assertEqual(s2.Tension, 1.2345678901234567e-4)            # exact
+        s2.touch()
+        self.doc.getObject("Ducks").touch()
+        self.doc.recompute()
+        self.assertTrue(s2.Status.startswith("ok"), s2.Status)
+        self.assertAlmostEqual(s2.Energy, energy, delta=1e-12 * energy)
+        self.assertLess(S.distance_to_shape(samples, s2.Shape), 2 * s2.Tolerance)
+        self.assertEqual(s2.getGroupOfProperty("Tension"), "Spline")
+        self.assertTrue(s2.getDocumentationOfProperty("StartCondition"))
+
+    def test_write_into_sketch_is_one_bspline(self):
+        s = self.spline()
+        out = S.write_into_new_sketch(self, s)
+        self.assertLess(S.distance_to_shape([tuple(p) for p in self.global_ducks()], out.Shape),
+                        s.Tolerance)
+
+    # ------------------------------------------------------------------ bad input
+
+    def test_bad_input_leaves_document_unchanged(self):
+        import Points
+        nan = self.doc.addObject("Points::Feature", "NaN")
+        nan.Points = Points.Points([App.Vector(0, 0, 0), App.Vector(float("nan"), 1, 0),
+                                    App.Vector(5, 2, 0)])
+        one = S.points_sketch(self.doc, [(0, 0)], "One")
+        # the free batten slides off a tight zigzag of ducks
+        zigzag = S.points_sketch(self.doc, [(10 * i, 10 * (i % 2)) for i in range(10)], "Zigzag")
+        self.doc.recompute()
+        before = S.doc_state(self.doc)
+        cases = [([], {}, "nothing selected"),
+                 ([(one, [])], {}, "at least 2"),
+                 ([(nan, [])], {}, "not finite"),
+                 ([(self.sk, [])], {"Mode": "length", "Length": 100.0}, "any length above"),
+                 ([(self.sk, [])], {"Tension": -1e-3}, "Tension = -0.001"),
+                 ([(self.sk, [])], {"Tension": float("nan")}, "Tension = nan"),
+                 ([(zigzag, [])], {}, "slides off"),
+                 ([(self.sk, ["Vertex9"])], {}, "has no")]
+        for sources, opts, words in cases:
+            del C.MESSAGES[:]
+            self.assertIsNone(C.spline_sources(sources, open_panel=False, **opts), words)
+            self.assertTrue(C.MESSAGES and words in C.MESSAGES[-1], (words, C.MESSAGES))
+            self.assertEqual(S.doc_state(self.doc), before, words)
+
+    def test_bad_edit_keeps_the_last_good_shape(self):
+        s = self.spline(Mode="length", Length=140.0)
+        good = s.Shape.Length
+        s.Length = 50.0
+        self.doc.recompute()
+        self.assertTrue(s.Status.startswith("error"))
+        self.assertIn("131.633 mm", s.Status)           # the polygon's length: the limit
+        self.assertEqual(s.Length, 50.0)                 # as typed
+        self.assertAlmostEqual(s.Shape.Length, good, delta=1e-12)
+        s.Length = 150.0
+        self.doc.recompute()
+        self.assertTrue(s.Status.startswith("ok"), s.Status)
+        for prop, value in (("Stiffness", -1.0), ("Degree", 9), ("Tolerance", 0.0)):
+            old = getattr(s, prop)
+            setattr(s, prop, value)
+            self.doc.recompute()
+            self.assertTrue(s.Status.startswith("error") and prop in s.Status, (prop, s.Status))
+            self.assertEqual(getattr(s, prop), value)
+            setattr(s, prop, old)
+        self.doc.recompute()
+        self.assertTrue(s.Status.startswith("ok"), s.Status)
+
+    def test_command_records_a_feature(self):
+        s = C.spline_sources([(self.sk, [])], open_panel=False, Tension=1e-4)
+        self.assertIsNotNone(s)
+        self.assertEqual((s.Proxy.kind, s.Tension, s.Closed), ("Spline", 1e-4, False))
+        self.check_through_and_g2(s, self.global_ducks())
+
+
+if __name__ == "__main__":
+    unittest.main()
