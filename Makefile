@@ -53,7 +53,7 @@ $(BUILD)/.deps-ok: Makefile
 
 lib: $(BUILD)/libelastica.so $(BUILD)/libelastica.a
 
-$(BUILD)/obj/%.o: libelastica/%.c include/elastica.h libelastica/internal.h | $(BUILD)/.deps-ok
+$(BUILD)/obj/%.o: libelastica/%.c include/elastica.h $(wildcard libelastica/*.h) | $(BUILD)/.deps-ok
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_BASE) $(DEPS_CFLAGS) $(EXTRA_CFLAGS) -c $< -o $@
 

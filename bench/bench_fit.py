@@ -69,11 +69,11 @@ def c_fit(model, pts, limited_memory=False, max_iter=200):
     if model == "discrete":
         res = ffi.new("el_fit_discrete_result *")
         c0, t0 = time.process_time(), time.perf_counter()
-        st = lib.el_fit_discrete(ptr, n, opt, ffi.NULL, res)
+        st = lib.el_fit_discrete(ptr, n, opt, ffi.NULL, res, ffi.NULL, ffi.NULL)
     else:
         res = ffi.new("el_fit_smooth_result *")
         c0, t0 = time.process_time(), time.perf_counter()
-        st = lib.el_fit_smooth(ptr, n, opt, ffi.NULL, res)
+        st = lib.el_fit_smooth(ptr, n, opt, ffi.NULL, res, ffi.NULL, ffi.NULL)
     dt, dc = time.perf_counter() - t0, time.process_time() - c0
     return st, res, (dt, dc)
 
