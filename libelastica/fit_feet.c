@@ -161,47 +161,75 @@ int fit_feet_distances(fit_objective *o, const double *x, double *dist, double *
     return EL_OK;
 }
 
-/* Distance of P to segment A-B (direction of B - A): signed, and the fraction t. */
-static double segment_distance(const double *A, const double *B, const double *P, double *t)
+/* Squared distance of P to segment A-B, and the fraction t of its nearest point. */
+static double segment_distance2(const double *A, const double *B, const double *P, double *t)
 {
     const double ux = B[0] - A[0], uy = B[1] - A[1], l2 = ux * ux + uy * uy;
-    double tt = l2 > 0.0 ? ((P[0] - A[0]) * ux + (P[1] - A[1]) * uy) / l2 : 0.0;
+    const double px = P[0] - A[0], py = P[1] - A[1];
+    double tt = l2 > 0.0 ? (px * ux + py * uy) / l2 : 0.0;
     tt = fmin(fmax(tt, 0.0), 1.0);
-    const double fx = A[0] + tt * ux, fy = A[1] + tt * uy;
-    const double d = hypot(P[0] - fx, P[1] - fy);
+    const double dx = px - tt * ux, dy = py - tt * uy;
     *t = tt;
-    return ux * (P[1] - fy) - uy * (P[0] - fx) < 0.0 ? -d : d;
+    return dx * dx + dy * dy;
+}
+
+/* The signed distance (+ = left of A -> B) of P to the point of segment A-B at t. */
+static double segment_signed(const double *A, const double *B, const double *P, double t)
+{
+    const double ux = B[0] - A[0], uy = B[1] - A[1];
+    const double dx = P[0] - A[0] - t * ux, dy = P[1] - A[1] - t * uy;
+    const double d = sqrt(dx * dx + dy * dy);
+    return ux * dy - uy * dx < 0.0 ? -d : d;
 }
 
 /*
  * The polygon of nv vertices V (normalised), data point first + step j <-> vertex j:
- * each point's distance to the nearest segment, searched outwards from the segments at
- * its own vertex while the distance decreases (at least two segments each way), its
- * foot as arc length h (segment + t) from vertex 0.
+ * each point's distance to the polygon near its own vertex, its foot as arc length
+ * h (segment + t) from vertex 0. A walk from the two segments at the vertex, on while
+ * the nearest point of the last segment is its far end, finds a local minimum d; the
+ * polygon has kinks, so every segment within arc length 2 sqrt 2 d + h of it is then
+ * searched too (one segment each way where d kappa <= 0.1): where the polygon's
+ * direction varies within pi/2 (fit_nearest_everywhere checks) no point farther along it
+ * can be nearer than d (|V(s) - V(s')| >= cos(pi/4) |s - s'|), so this is the nearest
+ * point; elsewhere that search goes on.
  */
 void fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, double h,
                            size_t first, long step, double *dist, double *foot)
 {
     const long last = (long)nv - 2;
+    /* the polygon's largest curvature, sin(turning) / h at its vertices: a point with
+     * d kappa <= 0.1 has its distance growing away from the walk's foot, so one more
+     * segment each way is enough (as for the smooth curve) */
+    double kmax = 0.0;
+    for (size_t j = 1; j + 1 < nv; j++) {
+        const double ax = V[2 * j] - V[2 * j - 2], ay = V[2 * j + 1] - V[2 * j - 1];
+        const double bx = V[2 * j + 2] - V[2 * j], by = V[2 * j + 3] - V[2 * j + 1];
+        kmax = fmax(kmax, fabs(ax * by - ay * bx) / (h * h * h));
+    }
     for (size_t j = 0; j < nv; j++) {
         const size_t g = (size_t)((long)first + step * (long)j);
         double P[2];
         point(o, g, P);
         long best = -1;
-        double bd = HUGE_VAL, bs = 0.0, bt = 0.0;
+        double bd = HUGE_VAL, bt = 0.0;
         for (int dir = -1; dir <= 1; dir += 2) {
-            double prev = HUGE_VAL;
             for (long seg = dir < 0 ? (long)j - 1 : (long)j; seg >= 0 && seg <= last; seg += dir) {
                 double t;
-                const double d = segment_distance(V + 2 * seg, V + 2 * seg + 2, P, &t);
-                if (fabs(d) < fabs(bd)) { bd = d; best = seg; bt = t; bs = d; }
-                const long away = dir < 0 ? (long)j - 1 - seg : seg - (long)j;
-                if (away >= 1 && fabs(d) >= prev) break;
-                prev = fabs(d);
+                const double d2 = segment_distance2(V + 2 * seg, V + 2 * seg + 2, P, &t);
+                if (d2 < bd) { bd = d2; best = seg; bt = t; }
+                if (dir < 0 ? t > 0.0 : t < 1.0) break;     /* not at the far end: stop */
             }
         }
         if (best < 0) { dist[g] = 0.0; foot[g] = 0.0; continue; }
-        dist[g] = bs;
+        const double d = sqrt(bd);
+        const long reach = kmax * d <= 0.1 ? 1 : (long)ceil(2.0 * 1.4142135623730951 * d / h) + 1;
+        const long lo = best - reach < 0 ? 0 : best - reach, hi = best + reach > last ? last : best + reach;
+        for (long seg = lo; seg <= hi; seg++) {
+            double t;
+            const double d2 = segment_distance2(V + 2 * seg, V + 2 * seg + 2, P, &t);
+            if (d2 < bd) { bd = d2; best = seg; bt = t; }
+        }
+        dist[g] = segment_signed(V + 2 * best, V + 2 * best + 2, P, bt);
         foot[g] = h * ((double)best + bt);
     }
 }
@@ -213,14 +241,14 @@ void fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, d
  * fit's own foot, or its vertex). A curve that passes close to itself (a loop) can come
  * nearer to a point somewhere else; the distance to the curve is the nearest of all.
  * The curves are cut into pieces of arc length l (about twice the median distance, at
- * least 1/512 of the length); every point of a piece lies within l/2 of the midpoint of
+ * least 1/128 of the length); every point of a piece lies within l/2 of the midpoint of
  * its end points (triangle inequality), so a piece can hold a nearer point only if that
  * disk comes within the point's distance. The disks go into a hash grid of cells of at
  * least their diameter; each point visits the cells its distance reaches, and only the
  * pieces away from its own foot whose disk is near enough are searched (Newton's method
  * from the piece's middle; the polygon's segments). O(n) work for ordinary data.
  */
-enum { MAX_PIECES = 512, HASH_BITS = 13 };
+enum { MAX_PIECES = 128, HASH_BITS = 11 };
 
 typedef struct piece {
     double cx, cy, r, s0, s1;   /* disk, arc range on its curve */
@@ -279,13 +307,16 @@ static int piece_nearest(const fit_objective *o, const double *v, const double *
     if (o->map.model == FIT_DISCRETE) {
         const double h = v[2];
         const long j0 = (long)floor(p->s0 / h), j1 = (long)ceil(p->s1 / h);
-        double best = HUGE_VAL;
+        double best = HUGE_VAL, bt = 0.0;
+        long bj = -1;
         for (long j = j0 < 0 ? 0 : j0; j < j1 && j <= (long)nv - 2; j++) {
             double t;
-            const double dd = segment_distance(V + 2 * j, V + 2 * j + 2, P, &t);
-            if (fabs(dd) < fabs(best)) { best = dd; *s = h * ((double)j + t); }
+            const double d2 = segment_distance2(V + 2 * j, V + 2 * j + 2, P, &t);
+            if (d2 < best) { best = d2; bj = j; bt = t; }
         }
-        *d = best;
+        if (bj < 0) { *d = HUGE_VAL; return EL_OK; }
+        *d = segment_signed(V + 2 * bj, V + 2 * bj + 2, P, bt);
+        *s = h * ((double)bj + bt);
         return EL_OK;
     }
     el_smooth_params sp;
@@ -311,15 +342,21 @@ static int piece_nearest(const fit_objective *o, const double *v, const double *
  * and it is away from the point's own foot (whose neighbourhood was searched). */
 typedef struct own_foot {
     int curve;
-    double s;
+    double s, d;
 } own_foot;
 
 static int consider(const fit_objective *o, double v[2][FIT_NP], const double *V[2], const size_t nv[2],
                     const piece *p, const double *P, const own_foot *f0, size_t i, double *dist,
                     double *foot, int *side)
 {
-    if (hypot(P[0] - p->cx, P[1] - p->cy) - p->r >= fabs(dist[i])) return EL_OK;
-    if (p->curve == f0->curve && p->s1 >= f0->s - 2.0 * p->r && p->s0 <= f0->s + 2.0 * p->r) return EL_OK;
+    const double dx = P[0] - p->cx, dy = P[1] - p->cy, reach = fabs(dist[i]) + p->r;
+    if (dx * dx + dy * dy >= reach * reach) return EL_OK;      /* the disk is farther than dist */
+    /* pieces already searched: smooth, those at the foot (the distance is convex there);
+     * the polygon, those inside the stretch fit_polygon_distances searched */
+    const double near = o->map.model == FIT_SMOOTH ? 2.0 * p->r : 2.0 * 1.4142135623730951 * f0->d;
+    if (p->curve == f0->curve && (o->map.model == FIT_SMOOTH
+                                  ? p->s1 >= f0->s - near && p->s0 <= f0->s + near
+                                  : p->s0 >= f0->s - near && p->s1 <= f0->s + near)) return EL_OK;
     double d = HUGE_VAL, s = 0.0;
     int st = piece_nearest(o, v[p->curve], V[p->curve], nv[p->curve], p, P, &d, &s);
     if (!st && fabs(d) < fabs(dist[i])) {
@@ -329,11 +366,52 @@ static int consider(const fit_objective *o, double v[2][FIT_NP], const double *V
     return st;
 }
 
+/*
+ * When the search can be left out: a single curve whose tangent turns by at most pi/2
+ * (so |gamma(s) - gamma(s')| >= cos(pi/4) |s - s'|: a point nearer than d to P lies
+ * within arc length 2 sqrt 2 d of the foot found) and, smooth, whose curvature is at
+ * most 0.1 / d for the largest distance d (the distance is convex along the curve over
+ * that stretch: the foot found is the nearest point); the polygon's feet were searched
+ * over that stretch (fit_polygon_distances).
+ */
+static int feet_are_nearest(const fit_objective *o, const double *v, const double *V, size_t nv,
+                            const double *dist)
+{
+    if (o->map.ncurves != 1) return 0;
+    double dmax = 0.0, tmin = HUGE_VAL, tmax = -HUGE_VAL, kmax = 0.0, prev = 0.0;
+    for (size_t i = 0; i < o->n; i++) dmax = fmax(dmax, fabs(dist[i]));
+    if (o->map.model == FIT_SMOOTH) {
+        enum { M = 129 };
+        double s[M], th[M], ka[M];
+        el_smooth_params p;
+        for (int j = 0; j < M; j++) s[j] = v[6] * j / (M - 1);
+        if (fit_to_smooth(v, &p) || el_smooth_eval(&p, M, s, NULL, th, ka)) return 0;
+        for (int j = 0; j < M; j++) {
+            tmin = fmin(tmin, th[j]); tmax = fmax(tmax, th[j]);
+            kmax = fmax(kmax, fabs(ka[j]));
+        }
+        /* between samples |kappa| may exceed its sampled maximum by one step's worth */
+        kmax *= 1.5;
+    } else {
+        for (size_t j = 0; j + 1 < nv; j++) {
+            double t = atan2(V[2 * j + 3] - V[2 * j + 1], V[2 * j + 2] - V[2 * j]);
+            if (j > 0) {
+                t += 2.0 * M_PI * nearbyint((prev - t) / (2.0 * M_PI));
+                kmax = fmax(kmax, 2.0 / v[2] * fabs(tan(0.5 * (t - prev))));
+            }
+            prev = t;
+            tmin = fmin(tmin, t); tmax = fmax(tmax, t);
+        }
+    }
+    return tmax - tmin <= 0.5 * M_PI && (o->map.model == FIT_DISCRETE || kmax * dmax <= 0.1);
+}
+
 int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const double *V[2],
                            const size_t nv[2], double *dist, double *foot, int *side)
 {
     const int nc = o->map.ncurves;
     const size_t n = o->n;
+    if (feet_are_nearest(o, v[0], V[0], nv[0], dist)) return EL_OK;
     double len[2] = {0.0, 0.0}, dmed = 0.0;
     for (int c = 0; c < nc; c++)
         len[c] = o->map.model == FIT_SMOOTH ? v[c][6] : v[c][2] * (double)(nv[c] - 1);
@@ -343,13 +421,17 @@ int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const do
         for (size_t i = 0; i < n; i += step, cnt++) dmed += fabs(dist[i]);
         dmed /= (double)cnt;
     }
+    double dmax = 0.0;
+    for (size_t i = 0; i < n; i++) dmax = fmax(dmax, fabs(dist[i]));
     piece *pc = malloc(sizeof(piece) * 2 * MAX_PIECES);
     grid *g = malloc(sizeof(grid));
     unsigned *stamp = malloc(sizeof(unsigned) * 2 * MAX_PIECES);
-    if (!pc || !g || !stamp) { free(pc); free(g); free(stamp); return EL_ENOMEM; }
-    int np = 0, st = EL_OK;
+    unsigned char *near = malloc(2 * MAX_PIECES);
+    if (!pc || !g || !stamp || !near) { free(pc); free(g); free(stamp); free(near); return EL_ENOMEM; }
+    int np = 0, st = EL_OK, first[2] = {0, 0}, count[2] = {0, 0};
     double rmax = 0.0;
     for (int c = 0; c < nc && !st; c++) {
+        first[c] = np;
         if (!(len[c] > 0.0)) continue;
         const int m = (int)fmin(fmax(ceil(len[c] / (2.0 * dmed + 1e-300)), 8.0), (double)MAX_PIECES);
         double a[2], b[2];
@@ -363,21 +445,58 @@ int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const do
             rmax = fmax(rmax, p->r);
             a[0] = b[0]; a[1] = b[1];
         }
+        count[c] = np - first[c];
     }
     if (!st && np > 0) {
         memset(g->head, -1, sizeof g->head);
         g->used = 0;
-        g->cell = fmax(2.0 * rmax, 2.0 * dmed);
-        for (int j = 0; j < np; j++) { grid_add(g, &pc[j], j); stamp[j] = 0; }
+        /* cells of the reach of the pair test below: a piece then looks at 3 x 3 cells */
+        g->cell = fmax(fmax(2.0 * rmax, 2.0 * dmed), 2.0 * dmax + 2.0 * rmax);
+        for (int j = 0; j < np; j++) { grid_add(g, &pc[j], j); stamp[j] = 0; near[j] = 0; }
+        /* pieces that another part of the curve, beyond the stretch each foot's own search
+         * covered, comes within 2 dmax of: only points whose foot is there can have a
+         * nearer point elsewhere */
+        const unsigned ptag = 0x80000000u;
+        for (int j = 0; j < np; j++) {
+            const piece *p = &pc[j];
+            const double R = 2.0 * dmax + p->r + rmax;
+            const long x0 = (long)floor((p->cx - R) / g->cell), x1 = (long)floor((p->cx + R) / g->cell);
+            const long y0 = (long)floor((p->cy - R) / g->cell), y1 = (long)floor((p->cy + R) / g->cell);
+            const int all = (double)(x1 - x0 + 1) * (double)(y1 - y0 + 1) > 4.0 * np;
+            for (long ix = x0; ix <= x1 && !near[j]; ix++)
+                for (long iy = y0; iy <= y1 && !near[j]; iy++)
+                    for (int e = all ? 0 : g->head[cell_hash(ix, iy)]; all ? e < np : e >= 0; e = all ? e + 1 : g->next[e]) {
+                        const int q = all ? e : g->item[e];
+                        const piece *pq = &pc[q];
+                        if (stamp[q] == (ptag | (unsigned)j)) continue;
+                        stamp[q] = ptag | (unsigned)j;
+                        /* a part of the curve within the stretch a foot's own search covers */
+                        if (pq->curve == p->curve &&
+                            fabs(0.5 * (pq->s0 + pq->s1 - p->s0 - p->s1)) <= 2.0 * 1.4142135623730951 * dmax + 4.0 * rmax)
+                            continue;
+                        const double dx = pq->cx - p->cx, dy = pq->cy - p->cy, reach = 2.0 * dmax + p->r + pq->r;
+                        if (dx * dx + dy * dy < reach * reach) { near[j] = near[q] = 1; break; }
+                    }
+        }
+        for (int j = 0; j < np; j++) stamp[j] = 0;
         for (size_t i = 0; i < n && !st; i++) {
             double P[2];
             point(o, i, P);
             const double d0 = fabs(dist[i]);
             if (!(d0 > 0.0)) continue;
+            {   /* the foot's piece and its neighbours: near another part? */
+                const int c = side ? side[i] : 0;
+                if (count[c] == 0) continue;
+                const int jf = first[c] + (int)fmin(fmax(floor(foot[i] / (2.0 * pc[first[c]].r)), 0.0), count[c] - 1.0);
+                const int lo = jf > first[c] ? jf - 1 : jf, hi = jf + 1 < first[c] + count[c] ? jf + 1 : jf;
+                int any = 0;
+                for (int j = lo; j <= hi; j++) any |= near[j];
+                if (!any) continue;
+            }
             const long x0 = (long)floor((P[0] - d0) / g->cell), x1 = (long)floor((P[0] + d0) / g->cell);
             const long y0 = (long)floor((P[1] - d0) / g->cell), y1 = (long)floor((P[1] + d0) / g->cell);
             const unsigned tag = (unsigned)i + 1u;
-            const own_foot f0 = {side ? side[i] : 0, foot[i]};
+            const own_foot f0 = {side ? side[i] : 0, foot[i], d0};
             if ((double)(x1 - x0 + 1) * (double)(y1 - y0 + 1) > 4.0 * np) {   /* far: every piece */
                 for (int j = 0; j < np && !st; j++) st = consider(o, v, V, nv, &pc[j], P, &f0, i, dist, foot, side);
                 continue;
@@ -392,6 +511,7 @@ int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const do
                     }
         }
     }
+    free(near);
     free(pc); free(g); free(stamp);
     return st;
 }

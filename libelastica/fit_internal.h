@@ -31,6 +31,10 @@ enum {
 
 enum fit_model { FIT_DISCRETE = 0, FIT_SMOOTH = 1 };
 
+/* |(x, y)| for normalised coordinates (O(1): no overflow to guard against, unlike
+ * hypot, which costs several times as much in the per-point loops). */
+static inline double fit_norm(double x, double y) { return sqrt(x * x + y * y); }
+
 /*
  * Internal parameters of one curve (normalised coordinates):
  *   discrete v = (x0, y0, h, phi, z, q, k) with -1 < k < 0 allowed: the curve of

@@ -77,9 +77,31 @@ typedef struct sums {
 
 /*
  * Fold `rows` residual rows, stored by column (col[j * stride + r]), into s. Each
- * entry of A is a dot product of two columns; four partial sums per product keep the
- * multiply-add units busy (a reduction the compiler may not reorder by itself).
+ * entry of A is a dot product of two columns. The dot product runs on pairs of doubles
+ * (GCC/Clang vector extension, SSE2 on x86-64) with four partial sums: a reduction the
+ * compiler does not reorder by itself (measured at -O2 and -O3 alike, bench/bench_fit.c
+ * fit_normal_equations: about twice the speed of the scalar loop; -O3 for the whole file
+ * gained nothing).
  */
+#if defined(__GNUC__)
+typedef double pair __attribute__((vector_size(16)));
+
+static double dot(const double *a, const double *b, int m)
+{
+    pair s0 = {0.0, 0.0}, s1 = s0, s2 = s0, s3 = s0;
+    int r = 0;
+    for (; r + 8 <= m; r += 8) {
+        pair a0, a1, a2, a3, b0, b1, b2, b3;
+        memcpy(&a0, a + r, 16); memcpy(&a1, a + r + 2, 16); memcpy(&a2, a + r + 4, 16); memcpy(&a3, a + r + 6, 16);
+        memcpy(&b0, b + r, 16); memcpy(&b1, b + r + 2, 16); memcpy(&b2, b + r + 4, 16); memcpy(&b3, b + r + 6, 16);
+        s0 += a0 * b0; s1 += a1 * b1; s2 += a2 * b2; s3 += a3 * b3;
+    }
+    const pair t = (s0 + s1) + (s2 + s3);
+    double sum = t[0] + t[1];
+    for (; r < m; r++) sum += a[r] * b[r];
+    return sum;
+}
+#else
 static double dot(const double *a, const double *b, int m)
 {
     double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
@@ -91,6 +113,7 @@ static double dot(const double *a, const double *b, int m)
     for (; r < m; r++) s0 += a[r] * b[r];
     return (s0 + s1) + (s2 + s3);
 }
+#endif
 
 static void fold(sums *s, const double *col, int stride, const double *res, int rows)
 {
@@ -235,14 +258,14 @@ static int ortho_rows(fit_objective *o, const ortho_block *b, int want, double *
             continue;
         }
         double Tx = wv * jx[5] + T0[0], Ty = wv * jy[5] + T0[1];
-        const double tn = hypot(Tx, Ty);
+        const double tn = fit_norm(Tx, Ty);
         Tx /= tn; Ty /= tn;
         const double t = Tx * dx + Ty * dy, e = Ty * -dx + Tx * dy;   /* e = N . (gamma - P) */
         double ex = -Ty, ey = Tx, r = e, d2;
         if ((b->s[i] <= b->lo && t > 0.0) || (b->s[i] >= b->hi && t < 0.0)) {
             /* the foot held at an end of the extended curve, the point beyond it: the
              * distance to that end point */
-            const double d = hypot(dx, dy);
+            const double d = fit_norm(dx, dy);
             if (d > 0.0) { ex = dx / d; ey = dy / d; r = d; }
             d2 = dx * dx + dy * dy;
         } else {
@@ -257,7 +280,7 @@ static int ortho_rows(fit_objective *o, const ortho_block *b, int want, double *
             r = c;
             ex = -Ty - kappa * u * Tx;
             ey = Tx - kappa * u * Ty;
-            const double en = hypot(ex, ey);
+            const double en = fit_norm(ex, ey);
             ex /= en; ey /= en;
         }
         *f += d2;
@@ -289,7 +312,7 @@ static int base_knots(fit_objective *o, int c, const double *v)
     for (int j = 0; j < FIT_KNOTS; j++) {
         const double *jx = jac + 2 * j * FIT_NP, *jy = jx + FIT_NP;
         double Tx = v[3] * jx[5] + T0[0], Ty = v[3] * jy[5] + T0[1];
-        const double tn = hypot(Tx, Ty);
+        const double tn = fit_norm(Tx, Ty);
         Tx /= tn; Ty /= tn;
         for (int a = 0; a < FIT_NP; a++) o->knot_b[c][j][a] = a == 6 ? 0.0 : Tx * jx[a] + Ty * jy[a];
     }

@@ -128,7 +128,7 @@ static int fractions_start(fractions *f, const points *p, int mode, int *mode_us
     point_at(p, 0, Q);
     for (size_t i = 1; i < p->n; i++) {
         point_at(p, i, P);
-        f->total += hypot(P[0] - Q[0], P[1] - Q[1]);
+        f->total += fit_norm(P[0] - Q[0], P[1] - Q[1]);
         Q[0] = P[0]; Q[1] = P[1];
     }
     if (!(f->total > 0.0)) return EL_ESINGULAR;
@@ -144,7 +144,7 @@ static double fractions_next(fractions *f)
     if (!f->chord) return (double)i / (double)(n - 1);
     double P[2];
     point_at(f->p, i, P);
-    if (i > 0) f->run += hypot(P[0] - f->prev[0], P[1] - f->prev[1]);
+    if (i > 0) f->run += fit_norm(P[0] - f->prev[0], P[1] - f->prev[1]);
     f->prev[0] = P[0]; f->prev[1] = P[1];
     return i + 1 == n ? 1.0 : f->run / f->total;
 }
@@ -385,40 +385,55 @@ static void to_discrete(const cguess *g, size_t n, el_discrete_params *p)
 
 /*
  * x0, y0 by (4.55) for a candidate with x0 = y0 = 0: the mean of P_i - G_i, and the rms
- * of the placed curve, its standard deviation; one pass over the points in blocks
- * (Welford's update), the model evaluated block by block.
+ * of the placed curve, its standard deviation (Welford's update), over at most
+ * PLACE_POINTS of the points (every stride-th): a guess only ranks the candidates and
+ * starts the fit, and evaluating six candidates at every point of a dense scan cost
+ * as much as the fit itself. For the discrete model with more points than that the
+ * candidate is evaluated as its continuum limit (vertex i ~ the smooth elastica with
+ * u = (z/h) s + q at s = i h, the same phi, k, q; the difference is O(h^2)).
  */
+enum { PLACE_POINTS = 128 };
+
 static double place(int model, const points *p, const double *v, double *x0, double *y0,
                     const fractions *f0, double *tmp)
 {
-    double G[2 * FIT_BLOCK], s[FIT_BLOCK], mean[2] = {0.0, 0.0}, m2 = 0.0;
-    fractions f = *f0;
-    fit_walk w;
-    fit_walk_start(v, &w);
-    for (size_t a = 0; a < p->n; a += FIT_BLOCK) {
-        const size_t m = p->n - a < FIT_BLOCK ? p->n - a : FIT_BLOCK;
-        int st;
-        if (model == FIT_DISCRETE) {
-            st = fit_discrete_rows(v, &w, m, G, NULL, tmp);
-        } else {
-            for (size_t i = 0; i < m; i++) s[i] = fractions_next(&f) * v[6];
-            st = fit_smooth_rows(v, m, s, G, NULL);
+    /* every stride-th point: arc lengths in arithmetic progression where the data's are,
+     * which el_smooth_eval evaluates by the addition theorems */
+    const size_t n = p->n, stride = (n + PLACE_POINTS - 1) / PLACE_POINTS, m = (n - 1) / stride + 1;
+    double G[2 * PLACE_POINTS], s[PLACE_POINTS], mean[2] = {0.0, 0.0}, m2 = 0.0;
+    size_t idx[PLACE_POINTS];
+    for (size_t j = 0; j < m; j++) idx[j] = j * stride;
+    int st;
+    if (model == FIT_DISCRETE && m == n) {
+        fit_walk w;
+        fit_walk_start(v, &w);
+        st = fit_discrete_rows(v, &w, n, G, NULL, tmp);
+    } else if (model == FIT_DISCRETE) {
+        const double vs[FIT_NP] = {0.0, 0.0, v[3], v[4] / v[2], v[6], v[5], v[2] * (double)(n - 1)};
+        for (size_t j = 0; j < m; j++) s[j] = v[2] * (double)idx[j];
+        st = fit_smooth_rows(vs, m, s, G, NULL);
+    } else {
+        fractions f = *f0;
+        for (size_t i = 0, j = 0; i < n && j < m; i++) {
+            const double t = fractions_next(&f);
+            if (i == idx[j]) s[j++] = t * v[6];
         }
-        if (st) return HUGE_VAL;
-        for (size_t i = 0; i < m; i++) {
-            double P[2], d[2], delta[2];
-            point_at(p, a + i, P);
-            const double cnt = (double)(a + i + 1);
-            for (int c = 0; c < 2; c++) {
-                d[c] = P[c] - G[2 * i + c];
-                delta[c] = d[c] - mean[c];
-                mean[c] += delta[c] / cnt;
-            }
-            m2 += delta[0] * (d[0] - mean[0]) + delta[1] * (d[1] - mean[1]);
+        st = fit_smooth_rows(v, m, s, G, NULL);
+    }
+    if (st) return HUGE_VAL;
+    for (size_t j = 0; j < m; j++) {
+        double P[2], d[2], delta[2];
+        point_at(p, idx[j], P);
+        const double cnt = (double)(j + 1);
+        for (int c = 0; c < 2; c++) {
+            d[c] = P[c] - G[2 * j + c];
+            delta[c] = d[c] - mean[c];
+            mean[c] += delta[c] / cnt;
         }
+        m2 += delta[0] * (d[0] - mean[0]) + delta[1] * (d[1] - mean[1]);
     }
     *x0 = mean[0]; *y0 = mean[1];
-    const double r = sqrt(fmax(m2, 0.0) / (double)p->n);
+    const double r = sqrt(fmax(m2, 0.0) / (double)m);
     return isfinite(r) ? r : HUGE_VAL;
 }
 
