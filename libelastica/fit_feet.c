@@ -212,8 +212,21 @@ void fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, d
         point(o, g, P);
         long best = -1;
         double bd = HUGE_VAL, bt = 0.0;
+        /* start where the point projects along the polygon's direction at its vertex:
+         * on dense polygons (spacing far below the noise) the foot lies many segments
+         * from the point's own vertex */
+        long j0 = (long)j;
+        {
+            const long a = (long)j < last ? (long)j : last;
+            const double ux = V[2 * a + 2] - V[2 * a], uy = V[2 * a + 3] - V[2 * a + 1];
+            const double along = ((P[0] - V[2 * j]) * ux + (P[1] - V[2 * j + 1]) * uy) / (h * h);
+            if (fabs(along) > 1.0 && isfinite(along)) {
+                const double jj = (double)j + along;
+                j0 = jj < 0.0 ? 0 : jj > (double)(last + 1) ? last + 1 : (long)floor(jj);
+            }
+        }
         for (int dir = -1; dir <= 1; dir += 2) {
-            for (long seg = dir < 0 ? (long)j - 1 : (long)j; seg >= 0 && seg <= last; seg += dir) {
+            for (long seg = dir < 0 ? j0 - 1 : j0; seg >= 0 && seg <= last; seg += dir) {
                 double t;
                 const double d2 = segment_distance2(V + 2 * seg, V + 2 * seg + 2, P, &t);
                 if (d2 < bd) { bd = d2; best = seg; bt = t; }
