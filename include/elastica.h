@@ -191,7 +191,9 @@ enum el_param_mode { EL_PARAM_AUTO = 0, EL_PARAM_UNIFORM = 1, EL_PARAM_CHORD = 2
  * The fractions t_i = s_i/length (t_0 = 0, t_{n-1} = 1, non-decreasing) the
  * smooth fit uses for n >= 2 points xy (2n) under mode; *mode_used (may be
  * NULL) receives UNIFORM or CHORD. Errors: EL_EINVAL (NULL, n < 2, NaN/inf,
- * bad mode), EL_ESINGULAR (all points equal). Outputs untouched on error.
+ * bad mode), EL_ESINGULAR (all points equal), EL_EDOM (the data's scale outside what
+ * double precision represents: differences below ~1e-292 or beyond ~1e308).
+ * Outputs untouched on error.
  */
 int el_fit_fractions(const double *xy, size_t n, int mode, double *t, int *mode_used);
 
@@ -213,8 +215,12 @@ int el_fit_fractions(const double *xy, size_t n, int mode, double *t, int *mode_
  * (at most 6): this guess, the same with one monotone piece less and more
  * (m -/+ 1), the guess on the other side of k = 1 when k is near 1, and a
  * circular-arc / straight-line guess.
+ * With more than 128 points, x0, y0 and the ranking use every stride-th point (at most
+ * 128; the discrete candidate evaluated there as its continuum limit, O(h^2) apart).
  * Errors: EL_EINVAL (NULL, cap = 0, n < 4, NaN/inf), EL_ESINGULAR (all points
- * equal), EL_ENOMEM, EL_EINTERNAL.
+ * equal), EL_EDOM (the data's scale as el_fit_fractions, or parameters that double
+ * cannot hold: the smooth mu ~ 1/size^2 needs sizes within ~1e-154 .. 1e154),
+ * EL_ENOMEM, EL_EINTERNAL. cand and *count are untouched on error.
  */
 int el_guess_discrete(const double *xy, size_t n, el_discrete_params *cand, size_t cap,
                       size_t *count);
@@ -400,8 +406,9 @@ int el_fit_smooth(const double *xy, size_t n, const el_fit_options *opt,
  * constraints or use_initial: EL_EINVAL. Each side's result has the rms / max error of
  * its own points; iterations, status alike.
  * distances, foot_s, side (caller-sized, n each, may be NULL): signed distance of each
- * point to its side's curve (+ = left of that curve, which runs away from J), the foot
- * (arc length from J) and the side (0 first, 1 second).
+ * point to its side's curve (+ = left of the keyline run from point 0 to point n-1, so
+ * right of `first`, which runs the other way), the foot (arc length from J along its
+ * side) and the side (0 first, 1 second).
  * Statuses as el_fit_discrete, plus EL_EDOM when a side is not inflectional.
  */
 int el_fit_keyline_smooth(const double *xy, size_t n, size_t split, const el_fit_options *opt,

@@ -240,68 +240,6 @@ static int bounded_start(fit_objective *ob, const double *xl, const double *xu, 
     return sol.iters;
 }
 
-/* One initial guess: Levenberg-Marquardt, then Ipopt when something needs it. */
-static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit_constraints *con,
-                           const double *xl, const double *xu, int need_ipopt, const double *x0,
-                           cand_result *r, double *tmp)
-{
-    const int nx = ob->map.nx;
-    memset(r, 0, sizeof *r);
-    memcpy(r->x, x0, sizeof(double) * (size_t)nx);
-    r->f = HUGE_VAL;
-    r->status = EL_ENOCONV;
-    fit_solution sol;
-    int lm_ok = 0, inside = 1;
-    double xs[FIT_MAXX];
-    memcpy(xs, x0, sizeof(double) * (size_t)nx);
-    if (ob->kind == FIT_ORTHOGONAL && !o->limited_memory) {
-        /* the paired fit first: its pairing with the data's order keeps loops and sparse
-         * points on their branch, and on equilateral data it is close and cheap (points
-         * equally spaced in s); then the feet from its places */
-        ob->kind = FIT_PAIRED;
-        if (fit_lm(ob, x0, o->max_iter, &sol) == EL_OK) {
-            memcpy(xs, sol.x, sizeof(double) * (size_t)nx);
-            r->iters += sol.iters;
-        }
-        ob->kind = FIT_ORTHOGONAL;
-        double v[2][FIT_NP];
-        if (fit_map_eval(&ob->map, xs, v, NULL) == EL_OK)
-            for (size_t i = 0; i < ob->n; i++) ob->s[i] = ob->t[i] * v[0][6];
-        else
-            memcpy(xs, x0, sizeof(double) * (size_t)nx);
-        ob->have_base = 0;
-    }
-    x0 = xs;
-    if (!o->limited_memory && fit_lm(ob, x0, o->max_iter, &sol) == EL_OK) {
-        memcpy(r->x, sol.x, sizeof(double) * (size_t)nx);
-        r->f = sol.val.f;
-        r->iters += sol.iters;
-        lm_ok = 1;
-        for (int j = 0; j < nx; j++) inside &= sol.x[j] >= xl[j] && sol.x[j] <= xu[j];
-        if (sol.certified && inside && !need_ipopt) { r->status = EL_OK; return EL_OK; }
-        if (!sol.certified && sol.iters >= o->max_iter && !need_ipopt && inside) r->status = EL_EMAXITER;
-    }
-    fit_ipopt_out io;
-    double x[FIT_MAXX];
-    memcpy(x, lm_ok ? r->x : x0, sizeof(double) * (size_t)nx);
-    if (lm_ok && !inside) r->iters += bounded_start(ob, xl, xu, o->max_iter, x);
-    int st = fit_ipopt(ob, xl, xu, need_ipopt ? con : NULL, o, x, &io, tmp);
-    if (st == EL_EINTERNAL) return st;
-    r->used_ipopt = 1;
-    r->ipopt_status = io.ipopt_status;
-    r->iters += io.iters;
-    /* Ipopt's point when it had to run (constraints, the LM point outside the bounds)
-     * or when it improved on an uncertified one */
-    if (st == EL_OK && (io.f <= r->f || need_ipopt || !lm_ok || !inside)) {
-        memcpy(r->x, x, sizeof(double) * (size_t)nx);
-        r->f = io.f;
-        r->status = ipopt_to_status(io.ipopt_status);
-    }
-    /* a zero-residual fit that Ipopt could not certify (its step became tiny) is a fit */
-    if (r->status == EL_ENOCONV && r->f <= FIT_EXACT_F) r->status = EL_OK;
-    return EL_OK;
-}
-
 /* Distances and feet (normalised) of every point to the kept curve: near each point's
  * own place, then wherever the curve comes nearer. */
 static int curve_distances(fit_objective *ob, const double *x, double v[2][FIT_NP], double *d, double *fs,
@@ -332,7 +270,82 @@ static int curve_distances(fit_objective *ob, const double *x, double v[2][FIT_N
     return st;
 }
 
-static int fit_run(int model, const double *xy, size_t n, const el_fit_options *opt,
+/* One initial guess: Levenberg-Marquardt, then Ipopt when something needs it. */
+static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit_constraints *con,
+                           const double *xl, const double *xu, int need_ipopt, int lm_only,
+                           const double *x0, cand_result *r, double *tmp)
+{
+    const int nx = ob->map.nx;
+    memset(r, 0, sizeof *r);
+    memcpy(r->x, x0, sizeof(double) * (size_t)nx);
+    r->f = HUGE_VAL;
+    r->status = EL_ENOCONV;
+    fit_solution sol;
+    int lm_ok = 0, inside = 1;
+    double xs[FIT_MAXX];
+    memcpy(xs, x0, sizeof(double) * (size_t)nx);
+    if (ob->kind == FIT_ORTHOGONAL && !o->limited_memory) {
+        /* the paired fit first: its pairing with the data's order keeps loops and sparse
+         * points on their branch, and on equilateral data it is close and cheap (points
+         * equally spaced in s); then the feet from its places */
+        ob->kind = FIT_PAIRED;
+        if (fit_lm(ob, x0, o->max_iter, &sol) == EL_OK) {
+            memcpy(xs, sol.x, sizeof(double) * (size_t)nx);
+            r->iters += sol.iters;
+        }
+        ob->kind = FIT_ORTHOGONAL;
+        double v[2][FIT_NP];
+        if (fit_map_eval(&ob->map, xs, v, NULL) == EL_OK) {
+            for (size_t i = 0; i < ob->n; i++) ob->s[i] = ob->t[i] * v[0][6];
+            /* each foot where the paired curve comes nearest (loops, sparse points: not
+             * always near the point's place), so the orthogonal fit starts from the
+             * paired curve's own point-to-curve distances and only improves on them */
+            double *buf = malloc(sizeof(double) * 2 * ob->n);
+            if (!buf) return EL_ENOMEM;
+            if (curve_distances(ob, xs, v, buf, buf + ob->n, tmp) == EL_OK) {
+                memcpy(ob->s + 1, buf + ob->n + 1, sizeof(double) * (ob->n - 2));
+                ob->s[0] = 0.0;
+                ob->s[ob->n - 1] = v[0][6];
+            }
+            free(buf);
+        } else {
+            memcpy(xs, x0, sizeof(double) * (size_t)nx);
+        }
+        ob->have_base = 0;
+    }
+    x0 = xs;
+    if (!o->limited_memory && fit_lm(ob, x0, o->max_iter, &sol) == EL_OK) {
+        memcpy(r->x, sol.x, sizeof(double) * (size_t)nx);
+        r->f = sol.val.f;
+        r->iters += sol.iters;
+        lm_ok = 1;
+        for (int j = 0; j < nx; j++) inside &= sol.x[j] >= xl[j] && sol.x[j] <= xu[j];
+        if (sol.certified && inside && !need_ipopt) { r->status = EL_OK; return EL_OK; }
+        if (!sol.certified && sol.iters >= o->max_iter && !need_ipopt && inside) r->status = EL_EMAXITER;
+        if (lm_only && inside && !need_ipopt) return EL_OK;
+    }
+    fit_ipopt_out io;
+    double x[FIT_MAXX];
+    memcpy(x, lm_ok ? r->x : x0, sizeof(double) * (size_t)nx);
+    if (lm_ok && !inside) r->iters += bounded_start(ob, xl, xu, o->max_iter, x);
+    int st = fit_ipopt(ob, xl, xu, need_ipopt ? con : NULL, o, x, &io, tmp);
+    if (st == EL_EINTERNAL) return st;
+    r->used_ipopt = 1;
+    r->ipopt_status = io.ipopt_status;
+    r->iters += io.iters;
+    /* Ipopt's point when it had to run (constraints, the LM point outside the bounds)
+     * or when it improved on an uncertified one */
+    if (st == EL_OK && (io.f <= r->f || need_ipopt || !lm_ok || !inside)) {
+        memcpy(r->x, x, sizeof(double) * (size_t)nx);
+        r->f = io.f;
+        r->status = ipopt_to_status(io.ipopt_status);
+    }
+    /* a zero-residual fit that Ipopt could not certify (its step became tiny) is a fit */
+    if (r->status == EL_ENOCONV && r->f <= FIT_EXACT_F) r->status = EL_OK;
+    return EL_OK;
+}
+
+static int fit_run(int model, const double *xy, size_t n, const el_fit_options *opt, int lm_only,
                    const double *init, fit_out *res, double *dist, double *foot)
 {
     el_fit_options o;
@@ -480,7 +493,7 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
             memset(&r, 0, sizeof r);
             r.f = fv.f;
             r.status = EL_OK;
-        } else if ((st = solve_candidate(&ob, &o, &con, xl, xu, need_ipopt, x0, &r, tmp))) {
+        } else if ((st = solve_candidate(&ob, &o, &con, xl, xu, need_ipopt, lm_only, x0, &r, tmp))) {
             goto done;
         }
         tried++;
@@ -599,7 +612,7 @@ int el_fit_discrete(const double *xy, size_t n, const el_fit_options *opt,
     fit_out fo;
     memset(&fo, 0, sizeof fo);
     fo.status = -1;
-    int st = fit_run(FIT_DISCRETE, xy, n, opt, initial ? init : NULL, &fo, distances, foot_s);
+    int st = fit_run(FIT_DISCRETE, xy, n, opt, 0, initial ? init : NULL, &fo, distances, foot_s);
     if (fo.status == -1) {        /* failed before a result existed */
         if (fo.constraint) res->constraint = fo.constraint;
         return st;
@@ -624,7 +637,7 @@ int el_fit_smooth(const double *xy, size_t n, const el_fit_options *opt,
     fit_out fo;
     memset(&fo, 0, sizeof fo);
     fo.status = -1;
-    int st = fit_run(FIT_SMOOTH, xy, n, opt, initial ? init : NULL, &fo, distances, foot_s);
+    int st = fit_run(FIT_SMOOTH, xy, n, opt, 0, initial ? init : NULL, &fo, distances, foot_s);
     if (fo.status == -1) {
         if (fo.constraint) res->constraint = fo.constraint;
         return st;
@@ -633,5 +646,19 @@ int el_fit_smooth(const double *xy, size_t n, const el_fit_options *opt,
     to_smooth_params(fo.initial, &res->initial);
     FIT_PUBLISH(res, fo);
     res->param_mode = fo.mode;
+    return fo.status;
+}
+
+int fit_start(int model, const double *xy, size_t n, const el_fit_options *opt, double *v, int *mode,
+              int *iters, double *foot)
+{
+    fit_out fo;
+    memset(&fo, 0, sizeof fo);
+    fo.status = -1;
+    int st = fit_run(model, xy, n, opt, 1, NULL, &fo, NULL, foot);
+    if (fo.status == -1) return st;
+    memcpy(v, fo.params, sizeof fo.params);
+    if (mode) *mode = fo.mode;
+    *iters += fo.iterations;
     return fo.status;
 }

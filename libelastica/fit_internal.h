@@ -200,6 +200,13 @@ typedef struct fit_ipopt_out {
     int ipopt_status, iters;
     double f;
 } fit_ipopt_out;
+/* A fit that only starts another (the keyline's side fits): el_fit_discrete /
+ * el_fit_smooth by Levenberg-Marquardt alone, no Ipopt fallback (an uncertified result
+ * is EL_EMAXITER / EL_ENOCONV with its parameters). v: the parameters in input units
+ * (the model's Jacobian order); *iters += the iterations; foot: as el_fit_smooth's. */
+int fit_start(int model, const double *xy, size_t n, const el_fit_options *opt, double *v, int *mode,
+              int *iters, double *foot);
+
 /* Ipopt from x (in place; the best point seen on return) with bounds xl, xu (+-HUGE_VAL:
  * none) and constraints con (NULL: none). */
 int fit_ipopt(fit_objective *o, const double *xl, const double *xu, const fit_constraints *con,

@@ -201,25 +201,14 @@ static int fit_side(int model, const double *xy, size_t n, size_t split, int dir
         const size_t g = dir < 0 ? split - j : split + j;
         pts[2 * j] = xy[2 * g]; pts[2 * j + 1] = xy[2 * g + 1];
     }
+    /* a start for the joint fit: 40 iterations of Levenberg-Marquardt at most, no Ipopt
+     * (a side alone is part of a period, its parameters a flat valley that took up to
+     * 200 iterations and then Ipopt; measured on 14 generated scans, both models: the
+     * same joint fit to 1e-8 in k, 3x faster on the slowest) */
     el_fit_options so = *o;
-    int st;
+    so.max_iter = so.max_iter < 40 ? so.max_iter : 40;
     double p[FIT_NP];
-    if (model == FIT_SMOOTH) {
-        el_fit_smooth_result r;
-        st = el_fit_smooth(pts, m, &so, NULL, &r, NULL, foot);
-        const double q[FIT_NP] = {r.params.x0, r.params.y0, r.params.phi, r.params.mu, r.params.k,
-                                  r.params.q, r.params.length};
-        memcpy(p, q, sizeof p);
-        *mode = r.param_mode;
-        *iters += r.iterations;
-    } else {
-        el_fit_discrete_result r;
-        st = el_fit_discrete(pts, m, &so, NULL, &r, NULL, NULL);
-        const double q[FIT_NP] = {r.params.x0, r.params.y0, r.params.h, r.params.phi, r.params.z,
-                                  r.params.q, r.params.k};
-        memcpy(p, q, sizeof p);
-        *iters += r.iterations;
-    }
+    int st = fit_start(model, pts, m, &so, p, mode, iters, foot);
     free(pts);
     if (st != EL_OK && st != EL_ENOCONV && st != EL_EMAXITER) return st;
     for (int j = 0; j < FIT_NP; j++) sf->v[j] = fit_norm_param(model, j, p[j], cx, cy, sc);

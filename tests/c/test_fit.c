@@ -522,7 +522,7 @@ START_TEST(test_fixed_h_nonpositive_rejected)
 END_TEST
 
 /* Data at 1e-300 .. 1e300 and denormal spreads: a correct fit or EL_EDOM, never EL_OK
- * with NaN, inf, mu = 0 or h = 0; the guesses likewise. */
+ * with NaN, inf, mu = 0 or h = 0; the guesses and the fractions likewise. */
 START_TEST(test_extreme_magnitudes_edom_or_correct)
 {
     const size_t n = 50;
@@ -560,6 +560,12 @@ START_TEST(test_extreme_magnitudes_edom_or_correct)
             ck_assert(st == EL_EDOM || st == EL_ESINGULAR || (st == EL_OK && g[0].mu >= DBL_MIN && el_smooth_check(&g[0]) == EL_OK));
             st = el_guess_discrete(xy, n, gd, 4, &cnt);
             ck_assert(st == EL_EDOM || st == EL_ESINGULAR || (st == EL_OK && el_discrete_check(&gd[0]) == EL_OK));
+            double t[50];
+            st = el_fit_fractions(xy, n, EL_PARAM_CHORD, t, NULL);
+            if (st == EL_OK)
+                for (size_t i = 1; i < n; i++) ck_assert(t[i] >= t[i - 1] && t[i] <= 1.0);
+            else
+                ck_assert(st == EL_EDOM || st == EL_ESINGULAR);
         }
     /* a spread in the denormals: EL_EDOM, not a fit of rounding noise */
     for (size_t i = 0; i < 2 * n; i++) xy[i] = base[i] * 1e-320;

@@ -206,7 +206,8 @@ def test_points_sketched_along_an_s(seed):
     assert r.status == 0
     assert_distances_measured(r, truth.length)
     assert r.max_error <= 0.5 * math.sqrt(2)
-    assert r.foot_s[0] == pytest.approx(0.0, abs=1e-9) and r.foot_s[-1] == pytest.approx(r.curve.length)
+    assert r.foot_s[0] <= 1e-9 * truth.length
+    assert r.foot_s[-1] == pytest.approx(r.curve.length, abs=1e-9 * truth.length)
     p = el.fit(pts, model="smooth", distance="paired")
     assert r.rms <= p.rms
 
@@ -529,3 +530,21 @@ def test_bad_input(model):
         assert np.all(np.isfinite(r.distances))
         assert r.status in (0, el._ffi.lib.EL_ENOCONV, el._ffi.lib.EL_EMAXITER)
     assert el.fit(loop, model="discrete").rms < 1e-3
+
+
+@pytest.mark.parametrize("seed", [0, 5, 8, 17, 24, 34, 38])
+def test_orthogonal_fit_of_loops_no_worse_than_paired(seed):
+    """Loops (k 5-30, three pieces, 100 points, 1 % noise): the orthogonal fit starts
+    from the paired fit with each foot where that curve comes nearest, so its
+    point-to-curve rms is never above the paired fit's (with feet near the points'
+    places along the data it ended up to 10 % above it on six of these seeds)."""
+    rng = np.random.default_rng(seed)
+    k, mu = rng.uniform(5, 30), rng.uniform(0.5, 2)
+    c = el.SmoothElastica(x0=0, y0=0, phi=rng.uniform(-3, 3), mu=mu, k=k, q=rng.uniform(-2, 2),
+                          length=3 * 0.9 * 2 * ellipk(1 / k ** 2) / k / np.sqrt(mu))
+    pts = c.points(np.linspace(0, c.length, 100))
+    pts = pts + rng.normal(0, 0.01 * c.length / np.sqrt(2), pts.shape)
+    o = el.fit(pts, model="smooth")
+    p = el.fit(pts, model="smooth", distance="paired")
+    assert o.status == 0 and o.distance == "orthogonal"
+    assert o.rms <= p.rms * (1 + 1e-9)
