@@ -121,6 +121,10 @@ typedef struct fit_objective {
     double knot_b[2][FIT_KNOTS][FIT_NP];
     size_t split;                /* discrete keyline: the data index of the joint */
     double *work;                /* block buffers */
+    /* a quadratic penalty (rho/2) |c(x)|^2 of constraint rows added to f (fit.c's start
+     * of a constrained fit); pen NULL: none. pen_tmp: FIT_WORK doubles */
+    const struct fit_constraints *pen;
+    double pen_rho, *pen_tmp;
 } fit_objective;
 
 /* f = (1/2n) sum r^2; when want_normal also g = J^T r / n and H = J^T J / n (lower

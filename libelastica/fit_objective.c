@@ -438,6 +438,13 @@ int fit_objective_eval(fit_objective *o, const double *x, int want_normal, fit_v
     if (st) return st;
     const double inv = 1.0 / (double)o->n;
     out->f = 0.5 * f * inv;
+    double pc[FIT_NCON], pJ[FIT_NCON * FIT_MAXX];
+    int prows = 0;
+    if (o->pen) {
+        prows = fit_constraint_rows(o, o->pen, x, pc, want_normal ? pJ : NULL, NULL, o->pen_tmp);
+        if (prows < 0) return EL_EDOM;
+        for (int r = 0; r < prows; r++) out->f += 0.5 * o->pen_rho * pc[r] * pc[r];
+    }
     if (!isfinite(out->f)) return EL_EDOM;
     if (!want_normal) return EL_OK;
     /* H = sum_c M_c^T A_c M_c, g = sum_c M_c^T b_c (A_c symmetric from its lower triangle) */
@@ -465,6 +472,11 @@ int fit_objective_eval(fit_objective *o, const double *x, int want_normal, fit_v
             }
         }
     }
+    for (int r = 0; r < prows; r++)
+        for (int i = 0; i < nx; i++) {
+            out->g[i] += o->pen_rho * pJ[r * nx + i] * pc[r];
+            for (int j = 0; j <= i; j++) out->H[i * nx + j] += o->pen_rho * pJ[r * nx + i] * pJ[r * nx + j];
+        }
     for (int i = 0; i < nx; i++)
         for (int j = 0; j < i; j++) out->H[j * nx + i] = out->H[i * nx + j];
     if (el__all_finite(out->g, (size_t)nx) || el__all_finite(out->H, (size_t)(nx * nx))) return EL_EDOM;
