@@ -346,6 +346,22 @@ def test_every_constraint_honoured_to_1e_9(model):
         assert_distances_measured(r, size)
 
 
+@pytest.mark.parametrize("model,con", [("discrete", {"end_curvature": 0.0}),
+                                       ("smooth", {"start_curvature": 0.01}),
+                                       ("discrete", {"start_curvature": 0.01})])
+def test_constraint_far_from_the_free_fit_is_met_near_the_data(model, con):
+    """examples/sample_2d.csv, curvature 0.009 at the free fit's end and 0.03 at its
+    start: a constraint far from those values. Ipopt started at the free optimum slid to
+    a straight line (rms 7.7, discrete end curvature 0) or gave up ("no elastica meets
+    start_curvature", smooth); from the penalty path it meets the constraint with the
+    curve still along the points."""
+    pts = el.io.read_points(str(Path(__file__).resolve().parents[2] / "examples/sample_2d.csv"))
+    r = el.fit(pts, model=model, constraints=con)
+    size = polyline_length(pts)
+    _check_constraints(r, con, model, size)
+    assert r.status == 0 and r.rms < 0.5, (r.status, r.rms)
+
+
 def test_constraint_errors_name_the_constraint():
     pts, truth = sketched_s(seed=8, n=20)
     with pytest.raises(el.ConstraintError) as e:        # contradicts a fixed parameter
