@@ -2,8 +2,8 @@
 headless, and write
 
   out/demo.FCStd  the scan (its points, and the 3D polyline the fits read), the
-                  parametric Elastica features (the keyline fitted as two elasticae
-                  meeting at its inflection, seed 000 §5; a one-piece fit and a
+                  parametric Elastica features (the keyline fitted as one G2 curve
+                  of two elasticae meeting at its inflection, seed 000 §5; a one-piece fit and a
                   discrete fit for comparison; a curvature comb; the G2 quadratic
                   B-spline of seed 002; an elastic spline, the batten through six
                   ducks set beside the keyline as for the next line of a lines plan),
@@ -152,6 +152,20 @@ def run(src, out):
 
     infl = plc.multVec(App.Vector(halves[0].x0, halves[0].y0, 0))
 
+    # the keyline is one G2 curve: both halves start at the joint with opposite tangents
+    # and zero curvature, the elasticae exactly, their B-splines within the tolerance
+    z = np.array([0.0])
+    brk = abs(np.remainder(halves[0].angle(z)[0] - halves[1].angle(z)[0], 2 * np.pi) - np.pi)
+    edges = keyline.Shape.Edges
+    t0_, t1_ = (e.tangentAt(e.FirstParameter) for e in edges)
+    brk_bs = t0_.getAngle(-t1_)
+    joint = {"tangent_break_deg": float(np.degrees(brk)), "curvature_1_per_mm": [
+        float(c.curvature(z)[0]) for c in halves],
+        "bspline_tangent_break_deg": float(np.degrees(brk_bs)),
+        "bspline_curvature_1_per_mm": [float(e.curvatureAt(e.FirstParameter)) for e in edges]}
+    if joint["tangent_break_deg"] > 1e-9 or max(abs(v) for v in joint["curvature_1_per_mm"]) > 1e-12:
+        raise RuntimeError(f"keyline joint is not G2: {joint}")
+
     def fit_json(f):
         res = []
         for c, b in zip(f.Proxy.plane_curves(f)[0], f.Shape.Edges):
@@ -170,6 +184,7 @@ def run(src, out):
         "plane": {"origin": list(plc.Base), "normal": list(plc.Rotation.multVec(App.Vector(0, 0, 1))),
                   "x_axis": list(plc.Rotation.multVec(App.Vector(1, 0, 0)))},
         "inflection_3d": list(infl),
+        "joint": joint,
         "keyline": fit_json(keyline),
         "one_piece": fit_json(whole),
         "keyline_discrete": fit_json(discrete),
@@ -208,7 +223,10 @@ def run(src, out):
     print(f"  input             {report['input']} ({len(xyz)} points, 3D)")
     print(f"  plane fit         normal ({', '.join(f'{v:.3f}' for v in report['plane']['normal'])}), "
           f"points {lines[3].split(': ')[1]} off it")
-    print(f"  inflection        ({', '.join(f'{v:.2f}' for v in infl)}) mm")
+    print(f"  inflection        ({', '.join(f'{v:.2f}' for v in infl)}) mm, the joint of the two halves")
+    print(f"  joint             G2: tangent break {joint['tangent_break_deg']:.1e} deg, curvature "
+          f"{joint['curvature_1_per_mm'][0]:.1e} / {joint['curvature_1_per_mm'][1]:.1e} 1/mm "
+          f"(B-splines: {joint['bspline_tangent_break_deg']:.1e} deg)")
     for key, title in (("keyline", "keyline, smooth"), ("keyline_discrete", "keyline, discrete"),
                        ("one_piece", "one piece, smooth")):
         r = report[key]

@@ -219,7 +219,9 @@ enum el_param_mode { EL_PARAM_AUTO = 0, EL_PARAM_UNIFORM = 1, EL_PARAM_CHORD = 2
  * The fractions t_i = s_i/length (t_0 = 0, t_{n-1} = 1, non-decreasing) the
  * smooth fit uses for n >= 2 points xy (2n) under mode; *mode_used (may be
  * NULL) receives UNIFORM or CHORD. Errors: EL_EINVAL (NULL, n < 2, NaN/inf,
- * bad mode), EL_ESINGULAR (all points equal). Outputs untouched on error.
+ * bad mode), EL_ESINGULAR (all points equal), EL_EDOM (the data's scale outside what
+ * double precision represents: differences below ~1e-292 or beyond ~1e308).
+ * Outputs untouched on error.
  */
 int el_fit_fractions(const double *xy, size_t n, int mode, double *t, int *mode_used);
 
@@ -241,8 +243,12 @@ int el_fit_fractions(const double *xy, size_t n, int mode, double *t, int *mode_
  * (at most 6): this guess, the same with one monotone piece less and more
  * (m -/+ 1), the guess on the other side of k = 1 when k is near 1, and a
  * circular-arc / straight-line guess.
+ * With more than 128 points, x0, y0 and the ranking use every stride-th point (at most
+ * 128; the discrete candidate evaluated there as its continuum limit, O(h^2) apart).
  * Errors: EL_EINVAL (NULL, cap = 0, n < 4, NaN/inf), EL_ESINGULAR (all points
- * equal), EL_ENOMEM, EL_EINTERNAL.
+ * equal), EL_EDOM (the data's scale as el_fit_fractions, or parameters that double
+ * cannot hold: the smooth mu ~ 1/size^2 needs sizes within ~1e-154 .. 1e154),
+ * EL_ENOMEM, EL_EINTERNAL. cand and *count are untouched on error.
  */
 int el_guess_discrete(const double *xy, size_t n, el_discrete_params *cand, size_t cap,
                       size_t *count);
@@ -260,6 +266,39 @@ int el_guess_smooth(const double *xy, size_t n, int mode, el_smooth_params *cand
 /* ------------------------------------------------------------------- fit */
 
 /*
+ * How a fit measures the distance of a point to the model (el_fit_options.distance):
+ *   EL_DISTANCE_AUTO        orthogonal for the smooth model, paired for the discrete one;
+ *   EL_DISTANCE_ORTHOGONAL  smooth: the distance of each point to the curve, its foot
+ *                           free on the curve; the curve starts and ends at the feet of
+ *                           the first and last points;
+ *   EL_DISTANCE_PAIRED      point i <-> vertex i (the discrete model's definition, seed
+ *                           000 (4.6)) or <-> gamma(t_i L), t_i from el_fit_fractions
+ *                           (smooth; right for equilateral data).
+ */
+enum el_fit_distance { EL_DISTANCE_AUTO = 0, EL_DISTANCE_ORTHOGONAL = 1, EL_DISTANCE_PAIRED = 2 };
+
+/*
+ * Constraints of a fit: bits of el_fit_options.constraints, each with its value in the
+ * options. Tangents are directions (angle of the unit tangent, rad, the direction of
+ * travel from the first point to the last); curvatures signed (+ = turning
+ * counter-clockwise, 0 = an inflection or a free end), in 1/input units. For the discrete
+ * model the start/end point is vertex 0 / n-1, the tangent that of the first / last
+ * segment, the curvature (2/h) tan(K/2) at the end vertex of the curve extended by one
+ * vertex (seed 000 (3.4)), the length (n-1) h. Met to 1e-10 of the data's size (1e-10
+ * rad for angles), or the fit fails with EL_EDOM naming the constraint.
+ */
+enum el_fit_constraint {
+    EL_CONSTRAIN_START_POINT = 1,
+    EL_CONSTRAIN_END_POINT = 2,
+    EL_CONSTRAIN_START_TANGENT = 4,
+    EL_CONSTRAIN_END_TANGENT = 8,
+    EL_CONSTRAIN_START_CURVATURE = 16,
+    EL_CONSTRAIN_END_CURVATURE = 32,
+    EL_CONSTRAIN_LENGTH = 64,    /* length_range[0] <= length <= length_range[1] */
+    EL_CONSTRAIN_K = 128         /* k_range[0] <= k <= k_range[1] */
+};
+
+/*
  * Options of el_fit_discrete / el_fit_smooth; initialise with
  * el_fit_options_defaults. Parameter indices j follow the model's Jacobian
  * order: discrete p = (x0, y0, h, phi, z, q, k), smooth p = (x0, y0, phi, mu,
@@ -267,15 +306,22 @@ int el_guess_smooth(const double *xy, size_t n, int mode, el_smooth_params *cand
  */
 typedef struct el_fit_options {
     int fixed[7];        /* 1: hold p_j at value[j] (x0, y0 pinned to a point, seed 000 §5.4; h fixed) */
-    double value[7];     /* values of the fixed parameters (input units) */
+    double value[7];     /* values of the fixed parameters (input units); h, mu > 0, length >= 0 */
     double lower[7];     /* bounds on p_j in input units; -HUGE_VAL / HUGE_VAL: none. Defaults: */
     double upper[7];     /*   none (the model's domain, h, mu, length > 0, discrete k >= 0, is kept internally) */
     double tol;          /* Ipopt's tol on the normalised problem (default 1e-12) */
-    int max_iter;        /* Ipopt iterations per candidate (default 200) */
-    int limited_memory;  /* 1: Ipopt's L-BFGS Hessian (the paper's setting) instead of J^T J */
+    int max_iter;        /* iterations per initial guess (default 200) */
+    int limited_memory;  /* 1: Ipopt with its L-BFGS Hessian (the paper's setting, for comparison) */
     int max_candidates;  /* initial guesses fitted at most (default 3; 1 = the best guess only) */
     int param_mode;      /* smooth model: enum el_param_mode (default EL_PARAM_AUTO) */
     int use_initial;     /* 1: start from the caller's initial parameters instead of the guess */
+    int distance;        /* enum el_fit_distance (default EL_DISTANCE_AUTO) */
+    int constraints;     /* bits of enum el_fit_constraint (default 0: none) */
+    double start_point[2], end_point[2];     /* input units */
+    double start_tangent, end_tangent;       /* rad */
+    double start_curvature, end_curvature;   /* 1/input units */
+    double length_range[2];                  /* [lo, hi], 0 <= lo <= hi (hi may be HUGE_VAL) */
+    double k_range[2];                       /* [lo, hi]; the smooth k is signed (orientation) */
 } el_fit_options;
 
 /* Fill *opt with the defaults above. */
@@ -284,63 +330,121 @@ void el_fit_options_defaults(el_fit_options *opt);
 /*
  * Result of a fit. params are finite even when status is not EL_OK: on
  * EL_ENOCONV / EL_EMAXITER they are the best parameters seen.
+ * rms and max_error are point-to-curve distances (whatever distance was minimised):
+ * smooth, to the curve over [0, length]; discrete, to the polygon of its vertices.
  */
 typedef struct el_fit_discrete_result {
     el_discrete_params params;    /* fitted */
     el_discrete_params initial;   /* the initial guess the kept fit started from */
-    double rms;                   /* sqrt(mean |gamma_i - P_i|^2), input units */
-    double max_error;             /* max |gamma_i - P_i|, input units */
-    int iterations;               /* Gauss-Newton pre-steps + Ipopt iterations, all candidates */
+    double rms;                   /* sqrt(mean distance^2), input units */
+    double max_error;             /* max |distance|, input units */
+    int iterations;               /* iterations, all initial guesses */
     int candidates;               /* initial guesses fitted */
-    int ipopt_status;             /* Ipopt's ApplicationReturnStatus of the kept fit */
+    int ipopt_status;             /* Ipopt's ApplicationReturnStatus of the kept fit when used_ipopt */
     int status;                   /* library status, as returned */
+    int used_ipopt;               /* 1: Ipopt ran for the kept fit (bounds, constraints, fallback) */
+    int distance;                 /* the enum el_fit_distance used */
+    int constraint;               /* the enum el_fit_constraint bit not met or contradictory, else 0 */
 } el_fit_discrete_result;
 
 typedef struct el_fit_smooth_result {
     el_smooth_params params;
     el_smooth_params initial;
     double rms, max_error;
-    int iterations, candidates, ipopt_status, status;
-    int param_mode;               /* EL_PARAM_UNIFORM or EL_PARAM_CHORD: how s_i was assigned */
+    int iterations, candidates, ipopt_status, status, used_ipopt, distance, constraint;
+    int param_mode;               /* EL_PARAM_UNIFORM or EL_PARAM_CHORD: paired s_i / first feet */
 } el_fit_smooth_result;
 
 /*
  * Least-squares fairing (4.6)-(4.8): the discrete elastica whose vertex i is
  * nearest the point P_i (n >= 4 points xy, 2n), over every k > 0 (the
- * optimiser crosses k = 1), solved by Ipopt with the analytic gradient
- * (4.9)-(4.12) and the Gauss-Newton Hessian J^T J (or L-BFGS, option).
- * Coordinates are normalised internally (centroid, rms radius), so the fit
- * is invariant under similarity transforms. initial is read only when
- * opt->use_initial (else it may be NULL); opt NULL = defaults. Up to
- * opt->max_candidates initial guesses (el_guess_discrete) are fitted and the
- * best kept. Noisy data: the iteration stops when the objective stalls
- * (Ipopt's acceptable level), which is reported as EL_OK. Thread safety:
- * concurrent fits are safe, but their Ipopt solves are serialised by a
- * process-wide lock (Debian's MUMPS, Ipopt's linear solver, is not
- * reentrant). Like every Ipopt program, a file ipopt.opt in the working
- * directory adds Ipopt options (Ipopt 3.11 cannot switch that off without
- * printing a line, so it is left as Ipopt documents it).
- * Returns (and stores in res->status) EL_OK; EL_ENOCONV / EL_EMAXITER with
- * the best parameters seen; EL_EINVAL (NULL, n < 4, NaN/inf, bad options,
- * inconsistent bounds), EL_ESINGULAR (all points equal), EL_ENOMEM,
- * EL_EINTERNAL (Ipopt could not start). On EL_EINVAL/EL_ESINGULAR *res is untouched.
+ * optimiser crosses k = 1), with the analytic gradient (4.9)-(4.12) and the
+ * Gauss-Newton Hessian J^T J. Coordinates are normalised internally (centroid,
+ * rms radius), so the fit is invariant under similarity transforms.
+ * initial is read only when opt->use_initial (else it may be NULL); opt NULL =
+ * defaults. Up to opt->max_candidates initial guesses (el_guess_discrete) are
+ * fitted and the best kept.
+ * Solver: Levenberg-Marquardt, its result certified by the first-order condition
+ * (the residual vector orthogonal to every column of the Jacobian to 1e-8, or zero to
+ * rounding); Ipopt runs only for bounds that are active, constraints, an uncertified
+ * result (noisy data whose decrease stalls, reported as EL_OK once Ipopt's acceptable
+ * level is reached), or opt->limited_memory. Memory: O(n) for the result's distances,
+ * the Jacobian is never stored. Thread safety: concurrent fits run at once; only
+ * their Ipopt solves are serialised by a process-wide lock (Debian's MUMPS, Ipopt's
+ * linear solver, is not reentrant). Ipopt reads no options file (an ipopt.opt in the
+ * working directory is ignored) and prints nothing.
+ * distances, foot_s (caller-sized, n each, may be NULL): each point's signed distance
+ * to the polygon of the vertices (+ = left of it) and its foot as arc length along it
+ * from vertex 0, input units; rms and max_error are computed from them.
+ * Returns (and stores in res->status):
+ *   EL_OK;
+ *   EL_ENOCONV / EL_EMAXITER with the best parameters seen;
+ *   EL_EDOM: a constraint cannot be met (res->constraint names it; the best parameters
+ *     seen are returned), or the data's scale is outside what double precision
+ *     represents (differences below ~1e-292, or beyond ~1e308; res untouched) or the
+ *     fitted parameters are (res written, params the best finite ones seen);
+ *   EL_EINVAL: NULL, n < 4, NaN/inf, bad options (a fixed h <= 0, mu <= 0 or length < 0,
+ *     a value outside its bounds, inconsistent bounds, an unknown constraint bit, a
+ *     non-finite constraint value, a constraint contradicting a fixed parameter: then
+ *     res->constraint names it and nothing else of res is written);
+ *   EL_ESINGULAR (all points equal), EL_ENOMEM, EL_EINTERNAL (Ipopt could not start).
+ * On EL_EINVAL, EL_ESINGULAR, EL_ENOMEM and the scale EL_EDOM, *res (but for
+ * res->constraint as said) and the arrays are untouched; on every other status they
+ * are written in full.
  */
 int el_fit_discrete(const double *xy, size_t n, const el_fit_options *opt,
-                    const el_discrete_params *initial, el_fit_discrete_result *res);
+                    const el_discrete_params *initial, el_fit_discrete_result *res,
+                    double *distances, double *foot_s);
 
 /*
- * The same for the smooth elastica: point i at arc length s_i = t_i length
- * (el_fit_fractions with opt->param_mode: i length/(n-1) for equilateral
- * data, the chord-length parameter otherwise). Statuses as el_fit_discrete.
- * The optimiser works over every real k (the sign of k is the orientation,
- * smooth section): loops turning clockwise are fitted with k < -1 and keep
- * that sign; inflectional results (|k| < 1) are handed out with k >= 0 (the
- * same curve as -k with q + 2K(|k|)) unless k or q is fixed, or the caller's
- * bounds exclude that form. (The discrete model covers both senses with
- * k >= 0 through the sign of z.)
+ * The same for the smooth elastica, by default by orthogonal distance
+ * (opt->distance): minimise the sum of squared distances of the points to the curve
+ * over the curve's parameters and each point's foot on it; the first and last points
+ * are tied to gamma(0) and gamma(length) by full residual vectors, and since the start
+ * and the length are free the curve begins and ends at their feet. Paired
+ * (EL_DISTANCE_PAIRED): point i at arc length t_i length (el_fit_fractions with
+ * opt->param_mode); the reported distances are point-to-curve distances either way.
+ * The optimiser works over every real k (the sign of k is the orientation, smooth
+ * section): loops turning clockwise are fitted with k < -1 and keep that sign;
+ * inflectional results (|k| < 1) are handed out with k >= 0 (the same curve as -k with
+ * q + 2K(|k|)) unless k or q is fixed, or the caller's bounds exclude that form.
+ * distances, foot_s: signed distance to the curve over [0, length] (+ = left) and the
+ * foot's arc length s; the foot is the nearest point near the point's place along the
+ * data (Newton's method from the fit's own foot). Statuses and outputs as
+ * el_fit_discrete.
  */
 int el_fit_smooth(const double *xy, size_t n, const el_fit_options *opt,
-                  const el_smooth_params *initial, el_fit_smooth_result *res);
+                  const el_smooth_params *initial, el_fit_smooth_result *res,
+                  double *distances, double *foot_s);
+
+/*
+ * A keyline as one problem (seed 000 §5.4, one G2 curve): two elasticae that start at
+ * a common joint J with opposite tangents and zero curvature there, `first` running
+ * from J towards point 0, `second` towards point n-1. Both are inflectional (|k| < 1)
+ * with u(0) = K(|k|) at J. The joint moves along the data: split (0 < split < n-1,
+ * >= 3 points each side) is its initial place, the index of the point nearest the
+ * estimated inflection; it is refined first (each side fitted alone, the zeros of their
+ * curvature) and then, smooth: each point's foot lies on either curve and J is free;
+ * discrete: the data are an equilateral polygon (seed 000 §5.3), vertex j of `first`
+ * <-> point split - j, vertex j of `second` <-> point split + j, and the split index is
+ * moved while the joint fit improves; *joint (may be NULL) receives the final index
+ * (first has joint + 1 vertices, second n - joint). The discrete h of each side is
+ * free (§5.4 Table 1), or held at opt->value[2] for both with opt->fixed[2].
+ * opt: max_iter, tol and (discrete) fixed h are read; other fixed parameters, bounds,
+ * constraints or use_initial: EL_EINVAL. Each side's result has the rms / max error of
+ * its own points; iterations, status alike.
+ * distances, foot_s, side (caller-sized, n each, may be NULL): signed distance of each
+ * point to its side's curve (+ = left of the keyline run from point 0 to point n-1, so
+ * right of `first`, which runs the other way), the foot (arc length from J along its
+ * side) and the side (0 first, 1 second).
+ * Statuses as el_fit_discrete, plus EL_EDOM when a side is not inflectional.
+ */
+int el_fit_keyline_smooth(const double *xy, size_t n, size_t split, const el_fit_options *opt,
+                          el_fit_smooth_result *first, el_fit_smooth_result *second,
+                          double *distances, double *foot_s, int *side);
+int el_fit_keyline_discrete(const double *xy, size_t n, size_t split, const el_fit_options *opt,
+                            el_fit_discrete_result *first, el_fit_discrete_result *second,
+                            size_t *joint, double *distances, double *foot_s, int *side);
 
 /* ------------------------------------------------------------------- prep */
 

@@ -29,9 +29,10 @@
  *    the other side of k = 1 and a circular-arc / straight-line guess; the fit
  *    tries them in order of their initial rms.
  */
-#include "internal.h"
+#include "fit_internal.h"
 #include <stdlib.h>
 #include <string.h>
+#include <float.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_multifit.h>
 #include <gsl/gsl_sf_ellint.h>
@@ -43,26 +44,30 @@ typedef struct cguess {
     double phi, w, k, q, L;
 } cguess;
 
-/* Centroid and rms radius of the points; EL_ESINGULAR if they all coincide. */
-static int normalisation(const double *xy, size_t n, double *cx, double *cy, double *sc)
+/*
+ * Centroid and rms radius of the points: the normalisation of the guess and the fit.
+ * The spread is measured first as the largest deviation, so that 1e+-300 inputs cannot
+ * overflow; a spread below DBL_MIN / DBL_EPSILON (~1e-292: differences of the points
+ * would be denormal, losing their digits) or beyond double's range is EL_EDOM.
+ */
+int fit_normalisation(const double *xy, size_t n, double *cx, double *cy, double *sc)
 {
     double mx = 0.0, my = 0.0;
-    for (size_t i = 0; i < n; i++) { mx += xy[2 * i]; my += xy[2 * i + 1]; }
-    mx /= (double)n; my /= (double)n;
-    /* scale first by the max deviation so that 1e±200 inputs cannot overflow */
+    for (size_t i = 0; i < n; i++) { mx += xy[2 * i] / (double)n; my += xy[2 * i + 1] / (double)n; }
     double amax = 0.0;
     for (size_t i = 0; i < n; i++) {
         amax = fmax(amax, fabs(xy[2 * i] - mx));
         amax = fmax(amax, fabs(xy[2 * i + 1] - my));
     }
-    if (!(amax > 0.0) || !isfinite(amax)) return EL_ESINGULAR;
+    if (amax == 0.0) return EL_ESINGULAR;
+    if (!isfinite(amax) || amax < DBL_MIN / DBL_EPSILON || !isfinite(mx) || !isfinite(my)) return EL_EDOM;
     double r2 = 0.0;
     for (size_t i = 0; i < n; i++) {
         double dx = (xy[2 * i] - mx) / amax, dy = (xy[2 * i + 1] - my) / amax;
         r2 += dx * dx + dy * dy;
     }
-    double sc0 = amax * sqrt(r2 / (double)n);
-    if (!(sc0 > 0.0) || !isfinite(sc0)) return EL_ESINGULAR;
+    const double sc0 = amax * sqrt(r2 / (double)n);
+    if (!(sc0 > 0.0) || !isfinite(sc0)) return EL_EDOM;
     *cx = mx; *cy = my; *sc = sc0;
     return EL_OK;
 }
@@ -73,16 +78,29 @@ static int check_points(const double *xy, size_t n, size_t nmin)
     return el__all_finite(xy, 2 * n) ? EL_EINVAL : EL_OK;
 }
 
+/* The points, normalised on the fly. */
+typedef struct points {
+    const double *xy;
+    size_t n;
+    double cx, cy, sc;
+} points;
+
+static void point_at(const points *p, size_t i, double *P)
+{
+    P[0] = (p->xy[2 * i] - p->cx) / p->sc;
+    P[1] = (p->xy[2 * i + 1] - p->cy) / p->sc;
+}
+
 /* Sides of the polygon of block means (or of the points, for few points):
  * the coefficient of variation of their lengths. */
-static double block_side_cv(const double *xy, size_t n)
+static double block_side_cv(const points *p)
 {
-    size_t m = n <= RAW_MAX ? n : BLOCKS;
+    const size_t n = p->n, m = n <= RAW_MAX ? n : BLOCKS;
     double px = 0, py = 0, sum = 0, sum2 = 0;
     for (size_t b = 0; b < m; b++) {
         size_t lo = b * n / m, hi = (b + 1) * n / m;
-        double x = 0, y = 0;
-        for (size_t i = lo; i < hi; i++) { x += xy[2 * i]; y += xy[2 * i + 1]; }
+        double x = 0, y = 0, P[2];
+        for (size_t i = lo; i < hi; i++) { point_at(p, i, P); x += P[0]; y += P[1]; }
         x /= (double)(hi - lo); y /= (double)(hi - lo);
         if (b > 0) {
             double d = hypot(x - px, y - py);
@@ -94,27 +112,52 @@ static double block_side_cv(const double *xy, size_t n)
     return mean > 0 ? sqrt(fmax(var, 0.0)) / mean : HUGE_VAL;
 }
 
+/* The fractions t_i one by one (uniform, or the chord-length parameter). */
+typedef struct fractions {
+    const points *p;
+    int chord;
+    size_t i;
+    double total, run, prev[2];
+} fractions;
+
+static int fractions_start(fractions *f, const points *p, int mode, int *mode_used)
+{
+    memset(f, 0, sizeof *f);
+    f->p = p;
+    double P[2], Q[2];
+    point_at(p, 0, Q);
+    for (size_t i = 1; i < p->n; i++) {
+        point_at(p, i, P);
+        f->total += fit_norm(P[0] - Q[0], P[1] - Q[1]);
+        Q[0] = P[0]; Q[1] = P[1];
+    }
+    if (!(f->total > 0.0)) return EL_ESINGULAR;
+    if (mode == EL_PARAM_AUTO) mode = block_side_cv(p) <= 0.5 ? EL_PARAM_UNIFORM : EL_PARAM_CHORD;
+    f->chord = mode == EL_PARAM_CHORD;
+    if (mode_used) *mode_used = mode;
+    return EL_OK;
+}
+
+static double fractions_next(fractions *f)
+{
+    const size_t i = f->i++, n = f->p->n;
+    if (!f->chord) return (double)i / (double)(n - 1);
+    double P[2];
+    point_at(f->p, i, P);
+    if (i > 0) f->run += fit_norm(P[0] - f->prev[0], P[1] - f->prev[1]);
+    f->prev[0] = P[0]; f->prev[1] = P[1];
+    return i + 1 == n ? 1.0 : f->run / f->total;
+}
+
 int el_fit_fractions(const double *xy, size_t n, int mode, double *t, int *mode_used)
 {
     if (check_points(xy, n, 2) || !t || mode < EL_PARAM_AUTO || mode > EL_PARAM_CHORD)
         return EL_EINVAL;
-    double total = 0.0;
-    for (size_t i = 1; i < n; i++)
-        total += hypot(xy[2 * i] - xy[2 * i - 2], xy[2 * i + 1] - xy[2 * i - 1]);
-    if (!(total > 0.0)) return EL_ESINGULAR;
-    if (mode == EL_PARAM_AUTO) mode = block_side_cv(xy, n) <= 0.5 ? EL_PARAM_UNIFORM : EL_PARAM_CHORD;
-    if (mode == EL_PARAM_UNIFORM || !isfinite(total)) {
-        for (size_t i = 0; i < n; i++) t[i] = (double)i / (double)(n - 1);
-    } else {
-        double c = 0.0;
-        t[0] = 0.0;
-        for (size_t i = 1; i < n; i++) {
-            c += hypot(xy[2 * i] - xy[2 * i - 2], xy[2 * i + 1] - xy[2 * i - 1]);
-            t[i] = c / total;
-        }
-        t[n - 1] = 1.0;
-    }
-    if (mode_used) *mode_used = mode;
+    points p = {xy, n, 0.0, 0.0, 1.0};
+    int st = fit_normalisation(xy, n, &p.cx, &p.cy, &p.sc);
+    fractions f;
+    if (st || (st = fractions_start(&f, &p, mode, mode_used))) return st;
+    for (size_t i = 0; i < n; i++) t[i] = fractions_next(&f);
     return EL_OK;
 }
 
@@ -163,13 +206,14 @@ static int linfit(size_t n, size_t p, const double *X, const double *y, double *
 
 /* The reduced polygon: block means Q (m points) at fractions tau; consecutive
  * duplicates dropped. Returns m. */
-static size_t reduce(const double *P, const double *t, size_t n, double *Q, double *tau)
+static size_t reduce(const points *p, fractions *f, double *Q, double *tau)
 {
-    size_t m = n <= RAW_MAX ? n : BLOCKS, out = 0;
+    const size_t n = p->n, m = n <= RAW_MAX ? n : BLOCKS;
+    size_t out = 0;
     for (size_t b = 0; b < m; b++) {
         size_t lo = b * n / m, hi = (b + 1) * n / m;
-        double x = 0, y = 0, tt = 0;
-        for (size_t i = lo; i < hi; i++) { x += P[2 * i]; y += P[2 * i + 1]; tt += t[i]; }
+        double x = 0, y = 0, tt = 0, P[2];
+        for (size_t i = lo; i < hi; i++) { point_at(p, i, P); x += P[0]; y += P[1]; tt += fractions_next(f); }
         x /= (double)(hi - lo); y /= (double)(hi - lo); tt /= (double)(hi - lo);
         if (out > 0 && x == Q[2 * out - 2] && y == Q[2 * out - 1]) continue;
         Q[2 * out] = x; Q[2 * out + 1] = y; tau[out] = tt;
@@ -251,10 +295,10 @@ static int phase_fit(const segs *S, double phi, double mu, double A, double k, c
 }
 
 /* Guesses in normalised coordinates; returns how many (<= NCAND_MAX). */
-static size_t guesses(const double *P, const double *t, size_t n, cguess *out)
+static size_t guesses(const points *p, fractions *f, cguess *out)
 {
     double Q[2 * (RAW_MAX + 1)], tau[RAW_MAX + 1];
-    size_t m = reduce(P, t, n, Q, tau), cnt = 0;
+    size_t m = reduce(p, f, Q, tau), cnt = 0;
     segs S;
     if (segments(Q, tau, m, &S)) return 0;
     /* (4.34) integrated: theta = theta_0 + mu2 X - mu1 Y + A s */
@@ -339,20 +383,75 @@ static void to_discrete(const cguess *g, size_t n, el_discrete_params *p)
     p->x0 = 0.0; p->y0 = 0.0; p->h = h; p->phi = g->phi; p->z = g->w * h; p->q = g->q; p->k = g->k;
 }
 
-/* x0, y0 by (4.55) for a curve evaluated with x0 = y0 = 0; returns the rms. */
-static double place(const double *P, const double *G, size_t n, double *x0, double *y0)
+/*
+ * x0, y0 by (4.55) for a candidate with x0 = y0 = 0: the mean of P_i - G_i, and the rms
+ * of the placed curve, its standard deviation (Welford's update), over at most
+ * PLACE_POINTS of the points (every stride-th): a guess only ranks the candidates and
+ * starts the fit, and evaluating six candidates at every point of a dense scan cost
+ * as much as the fit itself. For the discrete model with more points than that the
+ * candidate is evaluated as its continuum limit (vertex i ~ the smooth elastica with
+ * u = (z/h) s + q at s = i h, the same phi, k, q; the difference is O(h^2)).
+ */
+enum { PLACE_POINTS = 128 };
+
+static double place(int model, const points *p, const double *v, double *x0, double *y0,
+                    const fractions *f0, double *tmp)
 {
-    double sx = 0.0, sy = 0.0;
-    for (size_t i = 0; i < n; i++) { sx += P[2 * i] - G[2 * i]; sy += P[2 * i + 1] - G[2 * i + 1]; }
-    sx /= (double)n; sy /= (double)n;
-    double r = 0.0;
-    for (size_t i = 0; i < n; i++) {
-        double dx = G[2 * i] + sx - P[2 * i], dy = G[2 * i + 1] + sy - P[2 * i + 1];
-        r += dx * dx + dy * dy;
+    /* every stride-th point: arc lengths in arithmetic progression where the data's are,
+     * which el_smooth_eval evaluates by the addition theorems */
+    const size_t n = p->n, stride = (n + PLACE_POINTS - 1) / PLACE_POINTS, m = (n - 1) / stride + 1;
+    double G[2 * PLACE_POINTS], s[PLACE_POINTS], mean[2] = {0.0, 0.0}, m2 = 0.0;
+    size_t idx[PLACE_POINTS];
+    for (size_t j = 0; j < m; j++) idx[j] = j * stride;
+    int st;
+    if (model == FIT_DISCRETE && m == n) {
+        fit_walk w;
+        fit_walk_start(v, &w);
+        st = fit_discrete_rows(v, &w, n, G, NULL, tmp);
+    } else if (model == FIT_DISCRETE) {
+        const double vs[FIT_NP] = {0.0, 0.0, v[3], v[4] / v[2], v[6], v[5], v[2] * (double)(n - 1)};
+        for (size_t j = 0; j < m; j++) s[j] = v[2] * (double)idx[j];
+        st = fit_smooth_rows(vs, m, s, G, NULL);
+    } else {
+        fractions f = *f0;
+        for (size_t i = 0, j = 0; i < n && j < m; i++) {
+            const double t = fractions_next(&f);
+            if (i == idx[j]) s[j++] = t * v[6];
+        }
+        st = fit_smooth_rows(v, m, s, G, NULL);
     }
-    *x0 = sx; *y0 = sy;
-    r = sqrt(r / (double)n);
+    if (st) return HUGE_VAL;
+    for (size_t j = 0; j < m; j++) {
+        double P[2], d[2], delta[2];
+        point_at(p, idx[j], P);
+        const double cnt = (double)(j + 1);
+        for (int c = 0; c < 2; c++) {
+            d[c] = P[c] - G[2 * j + c];
+            delta[c] = d[c] - mean[c];
+            mean[c] += delta[c] / cnt;
+        }
+        m2 += delta[0] * (d[0] - mean[0]) + delta[1] * (d[1] - mean[1]);
+    }
+    *x0 = mean[0]; *y0 = mean[1];
+    const double r = sqrt(fmax(m2, 0.0) / (double)m);
     return isfinite(r) ? r : HUGE_VAL;
+}
+
+/* Smooth parameters from a continuous guess (x0 = y0 = 0): internal form (w). */
+static void to_internal(int model, const cguess *g, size_t n, double *v)
+{
+    memset(v, 0, sizeof(double) * FIT_NP);
+    if (model == FIT_DISCRETE) {
+        el_discrete_params p;
+        to_discrete(g, n, &p);
+        const double d[FIT_NP] = {0.0, 0.0, p.h, p.phi, p.z, p.q, p.k};
+        memcpy(v, d, sizeof d);
+    } else {
+        el_smooth_params p;
+        to_smooth(g, &p);
+        const double d[FIT_NP] = {0.0, 0.0, p.phi, sqrt(p.mu), p.k, p.q, p.length};
+        memcpy(v, d, sizeof d);
+    }
 }
 
 /* Common driver: model 0 discrete, 1 smooth. */
@@ -362,59 +461,44 @@ static int guess_run(int model, const double *xy, size_t n, int mode, void *cand
     if (check_points(xy, n, 4) || !cand || cap == 0 || !count) return EL_EINVAL;
     if (mode < EL_PARAM_AUTO || mode > EL_PARAM_CHORD) return EL_EINVAL;
     el__gsl_quiet();
-    double cx, cy, sc;
-    int st = normalisation(xy, n, &cx, &cy, &sc);
+    points p = {xy, n, 0.0, 0.0, 1.0};
+    int st = fit_normalisation(xy, n, &p.cx, &p.cy, &p.sc);
     if (st) return st;
-    double *P = malloc(sizeof(double) * (6 * n));
-    if (!P) return EL_ENOMEM;
-    double *t = P + 2 * n, *G = t + n;
-    for (size_t i = 0; i < n; i++) {
-        P[2 * i] = (xy[2 * i] - cx) / sc;
-        P[2 * i + 1] = (xy[2 * i + 1] - cy) / sc;
-    }
-    if (model == 0) {
-        for (size_t i = 0; i < n; i++) t[i] = (double)i / (double)(n - 1);
-    } else if ((st = el_fit_fractions(P, n, mode, t, NULL))) {
-        free(P);
-        return st;
-    }
+    fractions f0, f;
+    if ((st = fractions_start(&f0, &p, model == FIT_DISCRETE ? EL_PARAM_UNIFORM : mode, NULL))) return st;
+    f = f0;
+    double *tmp = malloc(sizeof(double) * FIT_WORK);
+    if (!tmp) return EL_ENOMEM;
     cguess g[NCAND_MAX];
-    size_t ng = guesses(P, t, n, g);
-    el_discrete_params dp[NCAND_MAX];
-    el_smooth_params spp[NCAND_MAX];
-    double rms[NCAND_MAX];
+    size_t ng = guesses(&p, &f, g);
+    double v[NCAND_MAX][FIT_NP], rms[NCAND_MAX];
     size_t order[NCAND_MAX], nok = 0;
     for (size_t c = 0; c < ng; c++) {
-        int e;
-        if (model == 0) {
-            to_discrete(&g[c], n, &dp[c]);
-            e = el_discrete_eval(&dp[c], n, G);
-            if (!e) rms[c] = place(P, G, n, &dp[c].x0, &dp[c].y0);
-        } else {
-            to_smooth(&g[c], &spp[c]);
-            for (size_t i = 0; i < n; i++) G[2 * n + i] = t[i] * spp[c].length;
-            e = el_smooth_eval(&spp[c], n, G + 2 * n, G, NULL, NULL);
-            if (!e) rms[c] = place(P, G, n, &spp[c].x0, &spp[c].y0);
-        }
-        if (e) continue;
+        to_internal(model, &g[c], n, v[c]);
+        rms[c] = place(model, &p, v[c], &v[c][0], &v[c][1], &f0, tmp);
+        if (!isfinite(rms[c])) continue;
         /* insertion by rms */
         size_t j = nok++;
         while (j > 0 && rms[order[j - 1]] > rms[c]) { order[j] = order[j - 1]; j--; }
         order[j] = c;
     }
-    free(P);
+    free(tmp);
     if (nok == 0) return EL_ESINGULAR;
     size_t m = nok < cap ? nok : cap;
+    double out[NCAND_MAX][FIT_NP];
     for (size_t j = 0; j < m; j++) {
-        size_t c = order[j];
-        if (model == 0) {
-            el_discrete_params p = dp[c];
-            p.x0 = cx + sc * p.x0; p.y0 = cy + sc * p.y0; p.h *= sc;
-            ((el_discrete_params *)cand)[j] = p;
+        for (int i = 0; i < FIT_NP; i++) out[j][i] = fit_denorm_param(model, i, v[order[j]][i], p.cx, p.cy, p.sc);
+        /* parameters outside double's range (mu of a 1e300-sized curve underflows) */
+        if (el__all_finite(out[j], FIT_NP) || !(out[j][model == FIT_DISCRETE ? 2 : 3] >= DBL_MIN)) return EL_EDOM;
+    }
+    for (size_t j = 0; j < m; j++) {
+        const double *o = out[j];
+        if (model == FIT_DISCRETE) {
+            el_discrete_params *d = (el_discrete_params *)cand + j;
+            d->x0 = o[0]; d->y0 = o[1]; d->h = o[2]; d->phi = o[3]; d->z = o[4]; d->q = o[5]; d->k = o[6];
         } else {
-            el_smooth_params p = spp[c];
-            p.x0 = cx + sc * p.x0; p.y0 = cy + sc * p.y0; p.length *= sc; p.mu /= sc * sc;
-            ((el_smooth_params *)cand)[j] = p;
+            el_smooth_params *sp = (el_smooth_params *)cand + j;
+            sp->x0 = o[0]; sp->y0 = o[1]; sp->phi = o[2]; sp->mu = o[3]; sp->k = o[4]; sp->q = o[5]; sp->length = o[6];
         }
     }
     *count = m;

@@ -30,6 +30,8 @@ FIT_EXAMPLES = """examples:
   elastica fit a.csv b.csv c.npy --json 'out/{stem}.json' --svg out/   (batch + summary)
   elastica fit points.csv --fix x0,y0          (start pinned to the first data point)
   elastica fit points.csv --fix x0=0,y0=0,phi=0
+  elastica fit sketch.csv --model smooth --start-point first --end-point last --start-tangent 90
+  elastica fit scan.csv --model smooth --distance paired   (point i at arc length i L/(n-1))
 
 input: CSV, whitespace separated text or .npy, 2 columns (x, y) or 3 (x, y, z);
 '#' comments and one header line are allowed."""
@@ -191,22 +193,57 @@ def _bspline_of(curve, tol: float, degree: int):
     return interpolate_c2(curve.points())
 
 
-def _fit_kwargs(args, fixed: Dict[str, float]) -> Dict[str, Any]:
+def _fit_kwargs(args, fixed: Dict[str, float], constraints: Optional[Dict[str, Any]] = None
+                ) -> Dict[str, Any]:
     kw: Dict[str, Any] = {"model": args.model}
     if fixed:
         kw["fixed"] = fixed
     if args.max_iter is not None:
         kw["max_iter"] = args.max_iter
+    if constraints:
+        kw["constraints"] = constraints
+    if getattr(args, "distance", None):
+        kw["distance"] = args.distance
     return kw
 
 
 def _side_record(res, data: np.ndarray, model: str) -> Dict[str, Any]:
-    return {"model": model, "n_points": int(len(data)),
-            "curve": curve_to_dict(res.curve),
-            "initial": curve_to_dict(res.initial) if res.initial is not None else None,
-            "rms": float(res.rms), "max_error": float(res.max_error),
-            "iterations": int(res.iterations), "status": _status_text(res.status),
-            "converged": _converged(res)}
+    rec = {"model": model, "n_points": int(len(data)),
+           "curve": curve_to_dict(res.curve),
+           "initial": curve_to_dict(res.initial) if res.initial is not None else None,
+           "rms": float(res.rms), "max_error": float(res.max_error),
+           "iterations": int(res.iterations), "status": _status_text(res.status),
+           "converged": _converged(res)}
+    if getattr(res, "distances", None) is not None:
+        # point-to-curve distances (+ = left of the curve) and each foot's arc length
+        rec.update(distance=res.distance, distances=[float(v) for v in res.distances],
+                   foot_s=[float(v) for v in res.foot_s])
+    return rec
+
+
+def _constraints(args, data: np.ndarray) -> Dict[str, Any]:
+    """el.fit's constraints from the command line (angles in degrees there)."""
+    con: Dict[str, Any] = {}
+    for end, idx, word in (("start", 0, "first"), ("end", -1, "last")):
+        spec = getattr(args, f"{end}_point")
+        if spec is not None:
+            con[f"{end}_point"] = (tuple(float(v) for v in data[idx, :2]) if spec.strip() == word
+                                   else tuple(_float_list(spec, 2, f"--{end}-point")))
+        ang = getattr(args, f"{end}_tangent")
+        if ang is not None:
+            con[f"{end}_tangent"] = np.radians(_finite(ang, f"--{end}-tangent"))
+        kap = getattr(args, f"{end}_curvature")
+        if kap is not None:
+            con[f"{end}_curvature"] = _finite(kap, f"--{end}-curvature")
+    for name in ("length", "k"):
+        spec = getattr(args, name if name == "length" else "k_range")
+        if spec is not None:
+            lo, _, hi = spec.partition(",")
+            try:
+                con[name] = (float(lo) if lo.strip() else None, float(hi) if hi.strip() else None)
+            except ValueError:
+                raise InputError(f"--{name}: expected LO,HI (either may be empty), got {spec!r}") from None
+    return con
 
 
 def _plane_record(frame) -> Optional[Dict[str, Any]]:
@@ -227,23 +264,26 @@ def fit_file(path: str, args, batch: bool) -> List[Dict[str, Any]]:
     pictures = []                       # (data (n,2), FitResult) per record
     extra_info: Dict[str, Any] = {}
     if args.keyline:
-        # seed 000 §5: plane fit, resampling (segment --step), re-normalisation,
-        # inflection, one fit per side with (x0, y0) pinned at the inflection
+        # seed 000 §5 as one G2 curve: plane fit, resampling (segment --step),
+        # re-normalisation, inflection, two elasticae sharing the joint
+        if _constraints(args, pts) or getattr(args, "distance", None):
+            raise InputError("--keyline: the joint is the keyline's constraint; end constraints "
+                             "and --distance apply to one-piece fits")
         fixed = _parse_fix(args.fix, pts[:, :2], keyline=True)
         kres = el.fit_keyline(pts, r=args.step, **_fit_kwargs(args, fixed))
         prep = kres.prepared
         plane = _plane_record(prep.frame)
         to_input = prep.to_input
         extra_info = {"inflection_index": int(kres.inflection),
-                      "inflection_point": prep.to_input(prep.polygon[kres.inflection]),
+                      "inflection_point": prep.to_input(kres.joint),
                       "step": prep.r, "coordinates": "x''y'' (PCA frame of the resampled polygon)",
                       "frame2d": {"origin": prep.frame2d.origin, "f1": prep.frame2d.f1,
                                   "f2": prep.frame2d.f2}}
-        for i, (res, sdata) in enumerate(zip((kres.first, kres.second), prep.sides())):
-            rec = _side_record(res, sdata, args.model)
+        for i, res in enumerate((kres.first, kres.second)):
+            rec = _side_record(res, res.points, args.model)
             rec["side"] = i
             records.append(rec)
-            pictures.append((sdata, res))
+            pictures.append((res.points, res))
         data = prep.polygon
     else:
         plane, to_input = None, None
@@ -262,7 +302,7 @@ def fit_file(path: str, args, batch: bool) -> List[Dict[str, Any]]:
             data = el.resample_equilateral(xy, args.step)
             if len(data) < 4:
                 raise InputError(f"{path}: --step {args.step} leaves only {len(data)} points")
-        res = el.fit(data, **_fit_kwargs(args, _parse_fix(args.fix, data)))
+        res = el.fit(data, **_fit_kwargs(args, _parse_fix(args.fix, data), _constraints(args, data)))
         records.append(_side_record(res, data, args.model))
         pictures.append((data, res))
     for rec in records:
@@ -303,7 +343,7 @@ def _write_fit_outputs(path, args, batch, records, pictures, splines, points) ->
                      f"iterations = {rec['iterations']}, status = {rec['status']}"]
             if rec.get("plane"):
                 extra.append(f"plane fit rms = {rec['plane']['rms']:.4g}")
-            p = fit_picture(d, res.curve, res.initial, model_points=res.model_points(),
+            p = fit_picture(d, res.curve, res.initial, model_points=res.foot_points(),
                             title=f"{Path(path).name}: {args.model} elastica fit"
                                   + (" (keyline, x''y'' frame)" if args.keyline else ""),
                             extra=extra)
@@ -344,7 +384,9 @@ def _print_fit(rec: Dict[str, Any]) -> None:
     if rec.get("curve"):
         print("parameters  " + ", ".join(f"{k}={_fmt(v)}" for k, v in rec["curve"].items()
                                          if k != "type"))
-        print(f"rms         {_fmt(rec['rms'])}")
+        how = {"orthogonal": "point-to-curve", "paired": "point-to-curve; fitted paired"}.get(
+            rec.get("distance"), "")
+        print(f"rms         {_fmt(rec['rms'])}" + (f"   ({how} distances)" if how else ""))
         print(f"max error   {_fmt(rec['max_error'])}")
         print(f"iterations  {rec['iterations']}")
     if rec.get("bspline"):
@@ -702,6 +744,21 @@ def build_parser() -> argparse.ArgumentParser:
     f.add_argument("--fix", metavar="NAMES",
                    help="parameters held fixed: 'x0,y0' (start at the first point) or "
                         "'x0=0,y0=0,phi=0'")
+    f.add_argument("--distance", choices=("orthogonal", "paired"),
+                   help="smooth model: what is minimised, the points' distances to the curve "
+                        "(default) or point i <-> arc length i L/(n-1) (the discrete model pairs)")
+    c = f.add_argument_group("constraints (met to 1e-10 of the data's size, or exit 2 naming "
+                             "the one that cannot be met)")
+    c.add_argument("--start-point", metavar="X,Y|first", help="the curve starts here")
+    c.add_argument("--end-point", metavar="X,Y|last", help="the curve ends here")
+    c.add_argument("--start-tangent", type=float, metavar="DEG",
+                   help="tangent direction at the start (degrees, the direction of travel)")
+    c.add_argument("--end-tangent", type=float, metavar="DEG", help="tangent direction at the end")
+    c.add_argument("--start-curvature", type=float, metavar="K",
+                   help="curvature at the start (1/units, + turning left; 0: a free end)")
+    c.add_argument("--end-curvature", type=float, metavar="K", help="curvature at the end")
+    c.add_argument("--length", metavar="LO,HI", help="range of the curve's length (either may be empty)")
+    c.add_argument("--k", dest="k_range", metavar="LO,HI", help="range of the modulus k")
     f.add_argument("--step", type=float, metavar="R",
                    help="resample into an equilateral polygon of segment R first")
     f.add_argument("--json", metavar="PATH", help="write the result as JSON ('-' = stdout)")

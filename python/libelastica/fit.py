@@ -1,5 +1,10 @@
 """Least-squares fairing by elasticae (seed 000 §4) and the keyline pipeline (§5).
 
+The smooth model is fitted by orthogonal distance (each point's distance to the
+curve) by default; the discrete model pairs vertex i with point i (seed 000 (4.6)).
+Every result reports point-to-curve distances: ``distances`` (signed, + = left of the
+curve), ``foot_s`` (arc length of each point's foot), ``rms`` and ``max_error``.
+
 >>> import numpy as np, libelastica as el
 >>> d = el.DiscreteElastica(x0=1, y0=2, h=0.1, phi=0.3, z=0.08, q=0.2, k=0.7, n=40)
 >>> r = el.fit(d.points(), model="discrete")
@@ -8,18 +13,38 @@ True
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
-from typing import Mapping, Optional, Union
+from typing import Mapping, Optional, Tuple, Union
 
 import numpy as np
 
-from ._ffi import NotConvergedError, as_points, check, dptr, ffi, lib
+from ._ffi import DomainError, ElasticaError, NotConvergedError, as_points, check, dptr, ffi, lib
 from .core import DISCRETE_PARAMS, SMOOTH_PARAMS, DiscreteElastica, SmoothElastica
 
 _MODES = {"auto": 0, "uniform": 1, "chord": 2}
 _MODE_NAMES = {v: k for k, v in _MODES.items()}
+_DISTANCES = {"orthogonal": 1, "paired": 2}
+_DISTANCE_NAMES = {v: k for k, v in _DISTANCES.items()}
+# constraint name -> (C bit, value kind)
+_CONSTRAINTS = {
+    "start_point": (1, "point"), "end_point": (2, "point"),
+    "start_tangent": (4, "angle"), "end_tangent": (8, "angle"),
+    "start_curvature": (16, "number"), "end_curvature": (32, "number"),
+    "length": (64, "range"), "k": (128, "range"),
+}
+_CONSTRAINT_NAMES = {bit: name for name, (bit, _) in _CONSTRAINTS.items()}
 
 Curve = Union[DiscreteElastica, SmoothElastica]
+
+
+class ConstraintError(DomainError):
+    """A fit's constraint contradicts the options or another constraint, or the model
+    cannot meet it; ``constraint`` names it (a key of ``fit(constraints=...)``)."""
+
+    def __init__(self, status: int, message: str, constraint: Optional[str]):
+        super().__init__(status, message)
+        self.constraint = constraint
 
 
 @dataclass(frozen=True)
@@ -27,13 +52,19 @@ class FitResult:
     """Result of :func:`fit`.
 
     ``curve``: the fitted elastica (a DiscreteElastica with ``n`` = the number of
-    points, or a SmoothElastica); ``initial``: the automatic initial guess the
-    kept fit started from; ``rms`` / ``max_error``: distances of the points to
-    their model points (input units); ``iterations``: Ipopt iterations (all
-    candidates); ``status``: 0 when converged, else the C status (EL_ENOCONV /
-    EL_EMAXITER: ``curve`` is the best seen); ``ipopt_status``: Ipopt's return
-    code; ``s``: for the smooth model, the arc length of each point on
-    ``curve`` (None for discrete); ``param_mode``: "uniform" or "chord".
+    points, or a SmoothElastica); ``initial``: the initial guess the kept fit started
+    from; ``distances`` (n,): each point's signed distance to the curve (+ = left of
+    it; smooth: the curve over [0, length]; discrete: the polygon of its vertices);
+    ``foot_s`` (n,): arc length along the curve of each point's nearest point;
+    ``rms`` / ``max_error``: from ``distances`` (input units); ``distance``:
+    "orthogonal" (what the smooth fit minimised by default) or "paired" (point i <->
+    vertex i, the discrete model's definition); ``iterations``; ``status``: 0 when
+    converged, else the C status (EL_ENOCONV / EL_EMAXITER: ``curve`` is the best
+    seen); ``ipopt_status`` / ``used_ipopt``: whether Ipopt ran (bounds, constraints,
+    fallback) and its return code; ``s``: for the smooth model the curve parameter
+    each point was fitted at (its foot, or for a paired fit its paired arc length;
+    None for discrete); ``param_mode``: "uniform" or "chord" (smooth: the paired arc
+    lengths, or the first feet); ``points``: the fitted points.
     """
     curve: Curve
     initial: Curve
@@ -45,20 +76,78 @@ class FitResult:
     candidates: int
     s: Optional[np.ndarray] = None
     param_mode: Optional[str] = None
+    distances: Optional[np.ndarray] = None
+    foot_s: Optional[np.ndarray] = None
+    distance: str = "paired"
+    used_ipopt: bool = False
+    points: Optional[np.ndarray] = None
 
     @property
     def converged(self) -> bool:
         return self.status == lib.EL_OK
 
     def model_points(self) -> np.ndarray:
-        """The model points paired with the data points, shape (n, 2)."""
+        """The model points the fit used for the data points, shape (n, 2): the feet
+        (orthogonal), the paired curve points or the vertices (paired)."""
         if isinstance(self.curve, DiscreteElastica):
             return self.curve.points()
         return self.curve.points(self.s)
 
+    def foot_points(self) -> np.ndarray:
+        """Each data point's nearest point on the curve (the other end of its
+        distance), shape (n, 2)."""
+        c = self.curve
+        if isinstance(c, SmoothElastica):
+            return c.points(self.foot_s)
+        V = c.points()
+        j = np.clip(np.floor(self.foot_s / c.h).astype(int), 0, len(V) - 2)
+        t = (self.foot_s / c.h - j)[:, None]
+        return V[j] + t * (V[j + 1] - V[j])
 
-def _options(model: str, fixed: Optional[Mapping[str, float]], bounds, tol, max_iter,
-             limited_memory, max_candidates, param, initial):
+
+def _pair(value, name: str):
+    try:
+        a, b = (float(v) if v is not None else None for v in value)
+    except (TypeError, ValueError):
+        raise ValueError(f"fit: constraint {name!r} must be a pair, got {value!r}") from None
+    return a, b
+
+
+def _set_constraints(o, model: str, n: int, constraints: Optional[Mapping[str, object]]):
+    """Fill the constraint fields of the C options from the dict."""
+    for name, value in (constraints or {}).items():
+        if name not in _CONSTRAINTS:
+            raise ValueError(f"fit: unknown constraint {name!r}; one of {tuple(_CONSTRAINTS)}")
+        bit, kind = _CONSTRAINTS[name]
+        where = name.split("_")[0]
+        if kind == "point":
+            x, y = _pair(value, name)
+            if x is None or y is None or not (math.isfinite(x) and math.isfinite(y)):
+                raise ValueError(f"fit: constraint {name!r} must be a finite point, got {value!r}")
+            getattr(o, f"{where}_point")[0] = x
+            getattr(o, f"{where}_point")[1] = y
+        elif kind in ("angle", "number"):
+            try:
+                v = float(value)
+            except (TypeError, ValueError):
+                raise ValueError(f"fit: constraint {name!r} must be a number, got {value!r}") from None
+            if not math.isfinite(v):
+                raise ValueError(f"fit: constraint {name!r} must be finite, got {value!r}")
+            setattr(o, f"{where}_{'tangent' if kind == 'angle' else 'curvature'}", v)
+        else:
+            lo, hi = _pair(value, name)
+            lo = (0.0 if name == "length" else -math.inf) if lo is None else lo
+            hi = math.inf if hi is None else hi
+            if math.isnan(lo) or math.isnan(hi) or lo > hi or (name == "length" and lo < 0):
+                raise ValueError(f"fit: constraint {name!r} must be a range (lo, hi) with "
+                                 f"{'0 <= ' if name == 'length' else ''}lo <= hi, got {value!r}")
+            rng = o.length_range if name == "length" else o.k_range
+            rng[0], rng[1] = lo, hi
+        o.constraints |= bit
+
+
+def _options(model: str, n: int, fixed: Optional[Mapping[str, float]], bounds, tol, max_iter,
+             limited_memory, max_candidates, param, initial, distance, constraints):
     names = DISCRETE_PARAMS if model == "discrete" else SMOOTH_PARAMS
     o = ffi.new("el_fit_options *")
     lib.el_fit_options_defaults(o)
@@ -87,26 +176,69 @@ def _options(model: str, fixed: Optional[Mapping[str, float]], bounds, tol, max_
     if param not in _MODES:
         raise ValueError(f"fit: param must be one of {tuple(_MODES)}, got {param!r}")
     o.param_mode = _MODES[param]
+    if distance is not None:
+        if distance not in _DISTANCES:
+            raise ValueError(f"fit: distance must be one of {tuple(_DISTANCES)}, got {distance!r}")
+        if model == "discrete" and distance == "orthogonal":
+            raise ValueError("fit: the discrete model pairs vertex i with point i (seed 000 "
+                             "(4.6)); distance='orthogonal' is for the smooth model")
+        o.distance = _DISTANCES[distance]
     o.use_initial = 1 if initial is not None else 0
+    _set_constraints(o, model, n, constraints)
     return o
 
 
+def _raise_constraint(status: int, constraint: int) -> None:
+    name = _CONSTRAINT_NAMES.get(constraint)
+    if status == lib.EL_EINVAL:
+        msg = f"fit: constraint {name!r} contradicts the options or another constraint"
+    else:
+        msg = f"fit: no elastica of the model meets constraint {name!r} (to 1e-10 of the data's size)"
+    raise ConstraintError(status, msg, name)
+
+
+def _make_curve(model: str, p, n: int) -> Curve:
+    if model == "smooth":
+        return SmoothElastica(**{k: getattr(p, k) for k in SMOOTH_PARAMS})
+    return DiscreteElastica(**{k: getattr(p, k) for k in DISCRETE_PARAMS}, n=n)
+
+
+def _result(model: str, res, st: int, pts: np.ndarray, dist: np.ndarray, foot: np.ndarray,
+            s: Optional[np.ndarray] = None) -> FitResult:
+    n = len(pts)
+    return FitResult(curve=_make_curve(model, res.params, n), initial=_make_curve(model, res.initial, n),
+                     rms=float(res.rms), max_error=float(res.max_error),
+                     iterations=int(res.iterations), status=int(st),
+                     ipopt_status=int(res.ipopt_status), candidates=int(res.candidates), s=s,
+                     param_mode=_MODE_NAMES.get(int(res.param_mode)) if model == "smooth" else None,
+                     distances=dist, foot_s=foot, distance=_DISTANCE_NAMES[int(res.distance)],
+                     used_ipopt=bool(res.used_ipopt), points=pts)
+
+
 def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = None, *,
+        constraints: Optional[Mapping[str, object]] = None, distance: Optional[str] = None,
         bounds: Optional[Mapping[str, tuple]] = None, tol: Optional[float] = None,
         max_iter: Optional[int] = None, limited_memory: bool = False,
         max_candidates: Optional[int] = None, param: str = "auto",
         initial: Optional[Curve] = None, strict: bool = False) -> FitResult:
-    """Fit an elastica to the points (n, 2), n >= 4, by least squares (seed 000 (4.6)).
+    """Fit an elastica to the points (n, 2), n >= 4.
 
-    model: "discrete" (vertex i <-> point i) or "smooth" (point i at arc length
-    i*length/(n-1) for equilateral data, the chord-length parameter otherwise;
-    ``param`` = "auto" | "uniform" | "chord"). fixed: parameters held at given
-    values, e.g. ``{"x0": 0, "y0": 0}`` (pinned start, §5.4) or ``{"h": r}``.
-    bounds: ``{name: (lo, hi)}`` (None = unbounded). initial: start from this
-    curve instead of the automatic guess. A fit that does not converge returns
-    the best curve seen with ``status`` != 0 (raises NotConvergedError if
-    ``strict``). Bad input (NaN, too few points, all points equal) raises
-    ValueError / ElasticaError subclasses.
+    model: "discrete" (vertex i <-> point i, seed 000 (4.6)) or "smooth". distance
+    (smooth): "orthogonal" (default: the distances of the points to the curve, each
+    point's foot free; the curve starts and ends at the feet of the first and last
+    points) or "paired" (point i at arc length i*length/(n-1) for equilateral data, the
+    chord-length parameter otherwise; ``param`` = "auto" | "uniform" | "chord").
+    constraints: any of ``{"start_point": (x, y), "end_point": (x, y),
+    "start_tangent": angle, "end_tangent": angle, "start_curvature": kappa,
+    "end_curvature": kappa, "length": (lo, hi), "k": (lo, hi)}`` (angles in radians,
+    the direction of travel from the first point to the last; curvature signed, +
+    turning left, 0 an inflection; ranges with None for no limit), met to 1e-10 of the
+    data's size or ConstraintError naming the one that cannot be met.
+    fixed: parameters held at given values, e.g. ``{"x0": 0, "y0": 0}`` or ``{"h": r}``.
+    bounds: ``{name: (lo, hi)}`` (None = unbounded). initial: start from this curve
+    instead of the automatic guess. A fit that does not converge returns the best curve
+    seen with ``status`` != 0 (raises NotConvergedError if ``strict``). Bad input (NaN,
+    too few points, all points equal) raises ValueError / ElasticaError subclasses.
     """
     if model not in ("discrete", "smooth"):
         raise ValueError(f"fit: model must be 'discrete' or 'smooth', got {model!r}")
@@ -116,155 +248,157 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
         raise ValueError(f"fit: need at least 4 points, got {n}")
     if not np.all(np.isfinite(pts)):
         raise ValueError("fit: points must be finite (no NaN/inf)")
-    o = _options(model, fixed, bounds, tol, max_iter, limited_memory, max_candidates, param,
-                 initial)
+    o = _options(model, n, fixed, bounds, tol, max_iter, limited_memory, max_candidates, param,
+                 initial, distance, constraints)
     smooth = model == "smooth"
     res = ffi.new(f"el_fit_{model}_result *")
     init = initial._c() if initial is not None else ffi.NULL
-    st = (lib.el_fit_smooth if smooth else lib.el_fit_discrete)(dptr(pts), n, o, init, res)
+    dist, foot = np.empty(n), np.empty(n)
+    st = (lib.el_fit_smooth if smooth else lib.el_fit_discrete)(dptr(pts), n, o, init, res,
+                                                               dptr(dist), dptr(foot))
+    if res.constraint and st in (lib.EL_EINVAL, lib.EL_EDOM):
+        _raise_constraint(st, res.constraint)
     if st not in (lib.EL_OK, lib.EL_ENOCONV, lib.EL_EMAXITER):
         check(st, "fit")
+    s = None
     if smooth:
-        def mk(p):
-            return SmoothElastica(**{k: getattr(p, k) for k in SMOOTH_PARAMS})
-        t = np.empty(n)
-        check(lib.el_fit_fractions(dptr(pts), n, res.param_mode, dptr(t), ffi.NULL), "fit")
-        s = t * res.params.length
-        mode = _MODE_NAMES[res.param_mode]
-    else:
-        def mk(p):
-            return DiscreteElastica(**{k: getattr(p, k) for k in DISCRETE_PARAMS}, n=n)
-        s, mode = None, None
+        if res.distance == _DISTANCES["paired"]:
+            t = np.empty(n)
+            check(lib.el_fit_fractions(dptr(pts), n, res.param_mode, dptr(t), ffi.NULL), "fit")
+            s = t * res.params.length
+        else:
+            s = foot.copy()
     if strict and st != lib.EL_OK:
         check(st, "fit")
-    return FitResult(curve=mk(res.params), initial=mk(res.initial), rms=float(res.rms),
-                     max_error=float(res.max_error), iterations=int(res.iterations),
-                     status=int(st), ipopt_status=int(res.ipopt_status),
-                     candidates=int(res.candidates), s=s, param_mode=mode)
+    return _result(model, res, st, pts.copy(), dist, foot, s)
 
+
+# ------------------------------------------------------------------ keyline
 
 @dataclass(frozen=True)
 class KeylineFit:
     """Result of :func:`fit_keyline`: the prepared keyline (``prepared``, a
-    PreparedKeyline: polygon in x''y'' coordinates, frames), the inflection
-    vertex ``inflection`` (index into ``prepared.polygon``; refined, see
-    :func:`fit_keyline`) and the fits of the two sides, each starting at the
-    inflection: ``first`` (inflection -> first vertex) and ``second``
-    (inflection -> last vertex), in x''y'' coordinates. ``inflection_estimate``:
-    the RDP-style estimate of the preparation (``prepared.inflection``) the
-    refinement started from."""
+    PreparedKeyline: polygon in x''y'' coordinates, frames), and the keyline as one
+    G2 curve of two elasticae that start at the joint (the inflection) with opposite
+    tangents and zero curvature: ``first`` (joint -> first point) and ``second``
+    (joint -> last point), FitResults in x''y'' coordinates whose ``points`` are the
+    points of that side (from the joint outwards). ``joint``: the joint (x''y'');
+    ``inflection``: the polygon vertex nearest it; ``inflection_estimate``: the
+    RDP-style estimate of the preparation (``prepared.inflection``) the fit started from.
+    """
     prepared: object
     inflection: int
     first: FitResult
     second: FitResult
     inflection_estimate: Optional[int] = None
+    joint: Optional[np.ndarray] = None
 
     def side_points(self, which: str = "second", input_coords: bool = True) -> np.ndarray:
-        """The fitted model points of one side, in the input's coordinates (3D for
-        3D input) or in x''y''."""
+        """The fitted model points of one side (paired vertices or feet), in the
+        input's coordinates (3D for 3D input) or in x''y''."""
         r = self.first if which == "first" else self.second
         pts = r.model_points()
         return self.prepared.to_input(pts) if input_coords else pts
 
 
-def _curvature_zero(res: FitResult, m: int) -> Optional[float]:
-    """The zero of the fitted curve's curvature nearest its start, in units of
-    the point spacing (vertex offsets from the start, negative = before it: the
-    curve extended), searched within +-m; None when there is none there."""
-    c = res.curve
-    if isinstance(c, DiscreteElastica):
-        # kappa_n depends on (h, z, q, k) only: vertex j of the curve extended by
-        # m + 1 vertices at each end is vertex j - (m + 1) of c
-        ext = DiscreteElastica(x0=0.0, y0=0.0, h=c.h, phi=c.phi, z=c.z, q=c.q - (m + 1) * c.z,
-                               k=c.k, n=c.n + 2 * m + 2)
-        kap = ext.curvature()                     # interior vertices 1 .. n' - 2
-        j = np.arange(1, ext.n - 1, dtype=float) - (m + 1)
-        sel = np.abs(j) <= m
-        j, kap = j[sel], kap[sel]
-    else:
-        ds = c.length / (len(res.s) - 1)
-        j = np.linspace(-m, m, 8 * m + 1)
-        kap = c.curvature(j * ds)
-    idx = np.nonzero(kap[1:] * kap[:-1] <= 0.0)[0]
-    if len(idx) == 0:
-        return None
-    zs = [j[a] if kap[a + 1] == kap[a] else j[a] - kap[a] * (j[a + 1] - j[a]) / (kap[a + 1] - kap[a])
-          for a in idx]
-    return float(min(zs, key=abs))
-
-
-def _refine_inflection(poly: np.ndarray, i0: int, model: str, r: float, fixed: dict,
-                       kwargs: dict, iterations: int = 4) -> int:
-    """Move the split vertex to where the fitted elasticae have their inflection.
-
-    The RDP-style estimate (prep.c) is noisy (tens of segments at 0.1 % noise),
-    and the total residual of the two pinned fits is nearly flat in the split
-    (an inflectional elastica fits either side of its own inflection; for data
-    that are one elastica it is exactly flat), so it cannot locate the
-    inflection. The fitted curvature can: each side is fitted without the pin
-    (the noise of the pinned vertex would tilt the curvature near it), the
-    zeros of both curves' curvature nearest the split (the curves extended
-    beyond it) estimate the inflection, and their mean, rounded to a vertex,
-    is the next split; repeated until it stays (at most ``iterations`` times).
-    The split moves at most a quarter of the polygon and keeps >= 4 vertices a side.
-    """
-    n = len(poly)
-    m = max(4, n // 4)
-    free = {k: v for k, v in fixed.items() if k not in ("x0", "y0")}
-    i = i0
-    for _ in range(iterations):
-        est = []
-        for sgn, side in ((-1, poly[i::-1]), (1, poly[i:])):
-            res = fit(side, model=model, fixed=free, **kwargs)
-            d = _curvature_zero(res, m)
-            if d is not None:
-                est.append(i + sgn * d)
-        if not est:
-            break
-        inew = int(np.clip(round(float(np.mean(est))), max(3, i0 - m), min(n - 4, i0 + m)))
-        if inew == i:
-            break
-        i = inew
-    return i
+def _keyline_options(model: str, kwargs: dict):
+    fixed = dict(kwargs.pop("fixed", None) or {})
+    max_iter, tol = kwargs.pop("max_iter", None), kwargs.pop("tol", None)
+    if kwargs:
+        raise ValueError(f"fit_keyline: unknown arguments {sorted(kwargs)} (the keyline is one "
+                         "G2 curve: fixed={'h': ...} (discrete), max_iter and tol apply)")
+    o = ffi.new("el_fit_options *")
+    lib.el_fit_options_defaults(o)
+    for name, value in fixed.items():
+        if model != "discrete" or name != "h":
+            raise ValueError(f"fit_keyline: only the discrete h can be fixed (both sides), "
+                             f"got {name!r}: the joint's G2 conditions tie the other parameters")
+        v = float(value)
+        if not (np.isfinite(v) and v > 0):
+            raise ValueError(f"fit_keyline: fixed h must be > 0, got {value!r}")
+        o.fixed[2] = 1
+        o.value[2] = v
+    if max_iter is not None:
+        o.max_iter = int(max_iter)
+    if tol is not None:
+        o.tol = float(tol)
+    return o
 
 
 def fit_keyline(points, r: Optional[float] = None, model: str = "discrete", side: int = 0,
-                refine: bool = True, **kwargs) -> KeylineFit:
-    """Seed 000 §5.3–5.4: plane fit (3D input), equilateral resampling with
-    segment ``r`` (default: 1/100 of the polyline's length), PCA
-    re-normalisation, the inflection estimate, then one elastica per side with
-    (x0, y0) pinned at the inflection vertex (and h = r for the discrete model).
-    ``refine`` (default): the split vertex is first moved to where the fitted
-    elasticae of both sides have zero curvature (see ``_refine_inflection``;
-    a few more fits), which is much closer to the true inflection than the
-    RDP-style estimate on noisy data. Raises DomainError when no inflection is
-    found. Extra keyword arguments go to :func:`fit` (``fixed`` to both sides;
-    its values win over the pinning)."""
+                **kwargs) -> KeylineFit:
+    """Seed 000 §5 as one problem: plane fit (3D input), equilateral resampling with
+    segment ``r`` (default: 1/100 of the polyline's length), PCA re-normalisation, the
+    inflection estimate, then one G2 curve of two elasticae sharing the joint, its
+    tangent and zero curvature there. The joint starts at the refined inflection
+    estimate (each side fitted alone, the zeros of their curvature) and moves along the
+    data: smooth, the points themselves (in x''y'') are fitted by orthogonal distance,
+    each point on either side; discrete, the polygon's vertex i pairs with vertex i of
+    its side and the split vertex moves while the fit improves; h is free on both sides
+    (§5.4, Table 1) or held with ``fixed={"h": r}``. ``max_iter``, ``tol`` apply.
+    Raises DomainError when no inflection is found."""
     from .prep import prepare_keyline
+    if model not in ("discrete", "smooth"):
+        raise ValueError(f"fit_keyline: model must be 'discrete' or 'smooth', got {model!r}")
     pts = np.asarray(points, dtype=np.float64)
     if pts.ndim != 2 or pts.shape[1] not in (2, 3) or len(pts) < 4:
         raise ValueError("fit_keyline: points must have shape (n, 2) or (n, 3), n >= 4")
     if not np.all(np.isfinite(pts)):
         raise ValueError("fit_keyline: points must be finite (no NaN/inf)")
+    o = _keyline_options(model, dict(kwargs))
     if r is None:
         r = float(np.sum(np.linalg.norm(np.diff(pts, axis=0), axis=1))) / 100.0
     prep = prepare_keyline(pts, r, side)
-    a, b = prep.sides()
+    a, b = prep.sides()                    # DomainError when there is no inflection
     if len(a) < 4 or len(b) < 4:
         raise ValueError("fit_keyline: a side of the inflection has fewer than 4 vertices")
-    user_fixed = dict(kwargs.pop("fixed", None) or {})     # once, for both sides
-    base = {"h": float(r)} if model == "discrete" else {}
-    base.update(user_fixed)
-    poly = prep.polygon
     i0 = int(prep.inflection)
-    i = _refine_inflection(poly, i0, model, float(r), base, kwargs) if refine else i0
+    if model == "discrete":
+        data = np.ascontiguousarray(prep.polygon)
+        split = i0
+    else:
+        xy = prep.frame.project(pts) if prep.frame is not None else pts[:, :2]
+        data = np.ascontiguousarray(prep.frame2d.to_local(xy))
+        split = int(np.argmin(np.linalg.norm(data - prep.polygon[i0], axis=1)))
+        split = min(max(split, 3), len(data) - 4)
+    n = len(data)
+    if n < 7:
+        raise ValueError("fit_keyline: fewer than 7 points")
+    dist, foot, sides = np.empty(n), np.empty(n), np.empty(n, dtype=np.intc)
+    res = [ffi.new(f"el_fit_{model}_result *") for _ in range(2)]
+    if model == "discrete":
+        joint = ffi.new("size_t *")
+        st = lib.el_fit_keyline_discrete(dptr(data), n, split, o, res[0], res[1], joint, dptr(dist),
+                                         dptr(foot), ffi.cast("int *", ffi.from_buffer(sides)))
+    else:
+        st = lib.el_fit_keyline_smooth(dptr(data), n, split, o, res[0], res[1], dptr(dist),
+                                       dptr(foot), ffi.cast("int *", ffi.from_buffer(sides)))
+    if st not in (lib.EL_OK, lib.EL_ENOCONV, lib.EL_EMAXITER):
+        check(st, "fit_keyline")
     fits = []
-    for side_poly in (poly[i::-1], poly[i:]):
-        fixed = {"x0": side_poly[0, 0], "y0": side_poly[0, 1]}
-        fixed.update(base)                # the caller's values win
-        fits.append(fit(side_poly, model=model, fixed=fixed, **kwargs))
-    return KeylineFit(prepared=prep, inflection=i, first=fits[0], second=fits[1],
-                      inflection_estimate=i0)
+    for c in range(2):
+        if model == "discrete":
+            js = int(joint[0])
+            idx = np.arange(js, -1, -1) if c == 0 else np.arange(js, n)
+        else:
+            idx = np.nonzero(sides == c)[0]
+            idx = idx[np.argsort(foot[idx], kind="stable")]      # from the joint outwards
+        sp = data[idx]
+        s = foot[idx].copy() if model == "smooth" else None
+        fits.append(FitResult(
+            curve=_make_curve(model, res[c].params, len(idx)),
+            initial=_make_curve(model, res[c].initial, len(idx)),
+            rms=float(res[c].rms), max_error=float(res[c].max_error),
+            iterations=int(res[c].iterations), status=int(st), ipopt_status=int(res[c].ipopt_status),
+            candidates=1, s=s, param_mode=_MODE_NAMES.get(int(res[c].param_mode)) if model == "smooth" else None,
+            # per side: + = left of that side's curve, which runs away from the joint
+            distances=dist[idx] * (-1.0 if c == 0 else 1.0), foot_s=foot[idx].copy(),
+            distance="orthogonal" if model == "smooth" else "paired",
+            used_ipopt=bool(res[c].used_ipopt), points=sp))
+    J = np.array([fits[1].curve.x0, fits[1].curve.y0])
+    infl = int(np.argmin(np.linalg.norm(prep.polygon - J, axis=1)))
+    return KeylineFit(prepared=prep, inflection=infl, first=fits[0], second=fits[1],
+                      inflection_estimate=i0, joint=J)
 
 
-__all__ = ["FitResult", "KeylineFit", "fit", "fit_keyline", "NotConvergedError"]
+__all__ = ["ConstraintError", "FitResult", "KeylineFit", "fit", "fit_keyline", "NotConvergedError"]

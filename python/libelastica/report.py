@@ -122,8 +122,9 @@ def fit_picture(data: np.ndarray, curve, initial=None, title: str = "",
     initial guess (green triangles), the fitted elastica (red), residual vectors
     from each data point to the curve, the curvature of the data polygon and of
     the fit, the fitted parameters and the ``extra`` lines (rms, status ...).
-    ``model_points`` (n, 2): the curve points paired with the data (FitResult.model_points());
-    without them each residual goes to the nearest point of the curve."""
+    ``model_points`` (n, 2): the curve point each data point's distance is measured to
+    (FitResult.foot_points()); without them each residual goes to the nearest point of
+    the curve's samples."""
     from .core import DiscreteElastica
     data = np.asarray(data, dtype=np.float64)[:, :2]
     pic = Picture(title=title)
@@ -136,7 +137,7 @@ def fit_picture(data: np.ndarray, curve, initial=None, title: str = "",
     pic.layers.append(Layer(xy, "elastica", "#d62728", marker="o" if verts is not None else "",
                             line=True, size=3.0))
     if model_points is not None and len(model_points) == len(data):
-        foot = np.asarray(model_points)   # the fit's own pairing of data and model points
+        foot = np.asarray(model_points)   # the fit's own feet: the residual segments it reports
     elif verts is not None and len(verts) == len(data):
         foot = verts                      # the discrete fit pairs data point i with vertex i
     else:

@@ -1,9 +1,16 @@
 /* Fairing (fit.c) and initial guess (guess.c): exact recovery, pinning,
  * scale invariance, bad input. */
+#define _POSIX_C_SOURCE 200809L
 #include "testutil.h"
+#include "internal.h"
 #include <gsl/gsl_sf_ellint.h>
 #include <pthread.h>
 #include <string.h>
+#include <stdio.h>
+#include <float.h>
+#include <fcntl.h>
+#include <unistd.h>
+#include <sys/stat.h>
 
 /* Complete K(k) for k < 1; for k > 1 the period of sn(.;k) in u is 4K(1/k)/k. */
 static double half_period(double k)
@@ -67,7 +74,7 @@ START_TEST(test_discrete_exact_recovery)
         el_discrete_params p = make_discrete(k, n, pieces, sign, &rng);
         ck_assert_int_eq(el_discrete_eval(&p, n, xy), EL_OK);
         el_fit_discrete_result r;
-        int st = el_fit_discrete(xy, n, NULL, NULL, &r);
+        int st = el_fit_discrete(xy, n, NULL, NULL, &r, NULL, NULL);
         double L = polyline_length(xy, n);
         ck_assert_msg(st == EL_OK, "k=%g: status %d (%s), rms %g", k, st, el_strerror(st), r.rms);
         ck_assert_int_eq(r.status, st);
@@ -88,7 +95,7 @@ START_TEST(test_discrete_nearly_straight)
     el_discrete_params p = make_discrete(1e-3, n, 1.0, 1.0, &rng);
     ck_assert_int_eq(el_discrete_eval(&p, n, xy), EL_OK);
     el_fit_discrete_result r;
-    ck_assert_int_eq(el_fit_discrete(xy, n, NULL, NULL, &r), EL_OK);
+    ck_assert_int_eq(el_fit_discrete(xy, n, NULL, NULL, &r, NULL, NULL), EL_OK);
     ck_assert(r.rms <= 1e-8 * polyline_length(xy, n));
 }
 END_TEST
@@ -103,7 +110,7 @@ START_TEST(test_smooth_exact_recovery)
         el_smooth_params p = make_smooth(k, pieces, &rng);
         smooth_points(&p, n, xy);
         el_fit_smooth_result r;
-        int st = el_fit_smooth(xy, n, NULL, NULL, &r);
+        int st = el_fit_smooth(xy, n, NULL, NULL, &r, NULL, NULL);
         ck_assert_msg(st == EL_OK, "k=%g: status %d, rms %g", k, st, r.rms);
         ck_assert_int_eq(r.param_mode, EL_PARAM_UNIFORM);
         ck_assert_msg(r.rms <= 1e-8 * p.length, "k=%g: rms/L = %g", k, r.rms / p.length);
@@ -140,7 +147,7 @@ START_TEST(test_smooth_signed_k)
         const double turn = turning(xy, n);
         if (fabs(ks[a]) > 1.0) ck_assert(turn * ks[a] > 0.0);   /* the data's sense */
         el_fit_smooth_result r;
-        int st = el_fit_smooth(xy, n, NULL, NULL, &r);
+        int st = el_fit_smooth(xy, n, NULL, NULL, &r, NULL, NULL);
         ck_assert_msg(st == EL_OK, "k=%g: status %d, rms %g", ks[a], st, r.rms);
         ck_assert_msg(r.rms <= 1e-8 * p.length, "k=%g: rms/L = %g (k fitted %g)", ks[a],
                       r.rms / p.length, r.params.k);
@@ -173,7 +180,7 @@ START_TEST(test_discrete_clockwise_loop)
     ck_assert_int_eq(el_discrete_eval(&p, n, xy), EL_OK);
     ck_assert(turning(xy, n) < -M_PI);            /* a clockwise loop */
     el_fit_discrete_result r;
-    ck_assert_int_eq(el_fit_discrete(xy, n, NULL, NULL, &r), EL_OK);
+    ck_assert_int_eq(el_fit_discrete(xy, n, NULL, NULL, &r, NULL, NULL), EL_OK);
     ck_assert_msg(r.rms <= 1e-8 * polyline_length(xy, n), "rms/L %g", r.rms / polyline_length(xy, n));
     ck_assert_close(r.params.k, 3.0, 1e-6 * 3.0);
     ck_assert(r.params.z < 0.0);
@@ -193,12 +200,12 @@ START_TEST(test_pinning)
     o.fixed[0] = o.fixed[1] = o.fixed[2] = 1;
     o.value[0] = p.x0; o.value[1] = p.y0; o.value[2] = p.h;
     el_fit_discrete_result r;
-    ck_assert_int_eq(el_fit_discrete(xy, n, &o, NULL, &r), EL_OK);
+    ck_assert_int_eq(el_fit_discrete(xy, n, &o, NULL, &r, NULL, NULL), EL_OK);
     ck_assert(r.params.x0 == p.x0 && r.params.y0 == p.y0 && r.params.h == p.h);
     ck_assert(r.rms <= 1e-8 * polyline_length(xy, n));
     /* pinned elsewhere: still exactly there, the fit is worse but finite */
     o.value[0] = p.x0 + 0.01; o.fixed[2] = 0;
-    ck_assert_int_eq(el_fit_discrete(xy, n, &o, NULL, &r), EL_OK);
+    ck_assert_int_eq(el_fit_discrete(xy, n, &o, NULL, &r, NULL, NULL), EL_OK);
     ck_assert(r.params.x0 == p.x0 + 0.01 && r.params.y0 == p.y0);
     ck_assert(isfinite(r.rms) && r.rms > 1e-4 && r.rms < 0.02);
     /* smooth: pinned start */
@@ -207,7 +214,7 @@ START_TEST(test_pinning)
     el_fit_options_defaults(&o);
     o.fixed[0] = o.fixed[1] = 1; o.value[0] = sp.x0; o.value[1] = sp.y0;
     el_fit_smooth_result sr;
-    ck_assert_int_eq(el_fit_smooth(xy, n, &o, NULL, &sr), EL_OK);
+    ck_assert_int_eq(el_fit_smooth(xy, n, &o, NULL, &sr, NULL, NULL), EL_OK);
     ck_assert(sr.params.x0 == sp.x0 && sr.params.y0 == sp.y0);
     ck_assert(sr.rms <= 1e-8 * sp.length);
 }
@@ -226,7 +233,7 @@ START_TEST(test_scale_invariance)
         double sc = scales[a];
         for (size_t i = 0; i < 2 * n; i++) big[i] = sc * xy[i] + 3.0 * sc;
         el_fit_discrete_result r;
-        ck_assert_int_eq(el_fit_discrete(big, n, NULL, NULL, &r), EL_OK);
+        ck_assert_int_eq(el_fit_discrete(big, n, NULL, NULL, &r, NULL, NULL), EL_OK);
         ck_assert_msg(r.rms <= 1e-8 * polyline_length(big, n), "scale %g: rms %g", sc, r.rms);
         ck_assert_close(r.params.h, sc * p.h, 1e-6 * sc * p.h);
         ck_assert_close(r.params.k, p.k, 1e-6);
@@ -243,28 +250,28 @@ START_TEST(test_bad_input)
     r = r0;
     for (int i = 0; i < 50; i++) { xy[2 * i] = i; xy[2 * i + 1] = sin(0.1 * i); }
     /* fewer than 4 points, NULL, NaN, inf: EL_EINVAL, result untouched */
-    ck_assert_int_eq(el_fit_discrete(xy, 3, NULL, NULL, &r), EL_EINVAL);
-    ck_assert_int_eq(el_fit_smooth(xy, 3, NULL, NULL, &sr), EL_EINVAL);
-    ck_assert_int_eq(el_fit_discrete(NULL, 50, NULL, NULL, &r), EL_EINVAL);
-    ck_assert_int_eq(el_fit_discrete(xy, 50, NULL, NULL, NULL), EL_EINVAL);
+    ck_assert_int_eq(el_fit_discrete(xy, 3, NULL, NULL, &r, NULL, NULL), EL_EINVAL);
+    ck_assert_int_eq(el_fit_smooth(xy, 3, NULL, NULL, &sr, NULL, NULL), EL_EINVAL);
+    ck_assert_int_eq(el_fit_discrete(NULL, 50, NULL, NULL, &r, NULL, NULL), EL_EINVAL);
+    ck_assert_int_eq(el_fit_discrete(xy, 50, NULL, NULL, NULL, NULL, NULL), EL_EINVAL);
     xy[17] = NAN;
-    ck_assert_int_eq(el_fit_discrete(xy, 50, NULL, NULL, &r), EL_EINVAL);
+    ck_assert_int_eq(el_fit_discrete(xy, 50, NULL, NULL, &r, NULL, NULL), EL_EINVAL);
     xy[17] = INFINITY;
-    ck_assert_int_eq(el_fit_smooth(xy, 50, NULL, NULL, &sr), EL_EINVAL);
+    ck_assert_int_eq(el_fit_smooth(xy, 50, NULL, NULL, &sr, NULL, NULL), EL_EINVAL);
     ck_assert(memcmp(&r, &r0, sizeof r) == 0);
     /* bad options */
     el_fit_options o;
     el_fit_options_defaults(&o);
     xy[17] = sin(0.1 * 8);
     o.tol = -1.0;
-    ck_assert_int_eq(el_fit_discrete(xy, 50, &o, NULL, &r), EL_EINVAL);
+    ck_assert_int_eq(el_fit_discrete(xy, 50, &o, NULL, &r, NULL, NULL), EL_EINVAL);
     el_fit_options_defaults(&o);
     o.lower[6] = 2.0; o.upper[6] = 1.0;
-    ck_assert_int_eq(el_fit_discrete(xy, 50, &o, NULL, &r), EL_EINVAL);
+    ck_assert_int_eq(el_fit_discrete(xy, 50, &o, NULL, &r, NULL, NULL), EL_EINVAL);
     /* all points equal */
     for (int i = 0; i < 50; i++) { xy[2 * i] = 1.5; xy[2 * i + 1] = -2.0; }
-    ck_assert_int_eq(el_fit_discrete(xy, 50, NULL, NULL, &r), EL_ESINGULAR);
-    ck_assert_int_eq(el_fit_smooth(xy, 50, NULL, NULL, &sr), EL_ESINGULAR);
+    ck_assert_int_eq(el_fit_discrete(xy, 50, NULL, NULL, &r, NULL, NULL), EL_ESINGULAR);
+    ck_assert_int_eq(el_fit_smooth(xy, 50, NULL, NULL, &sr, NULL, NULL), EL_ESINGULAR);
     el_discrete_params g[4];
     size_t cnt = 0;
     ck_assert_int_eq(el_guess_discrete(xy, 50, g, 4, &cnt), EL_ESINGULAR);
@@ -283,12 +290,12 @@ START_TEST(test_collinear)
     double xy[2 * 30];
     for (int i = 0; i < 30; i++) { xy[2 * i] = 1.0 + 0.3 * i; xy[2 * i + 1] = 2.0 - 0.4 * i; }
     el_fit_discrete_result r;
-    int st = el_fit_discrete(xy, 30, NULL, NULL, &r);
+    int st = el_fit_discrete(xy, 30, NULL, NULL, &r, NULL, NULL);
     ck_assert_int_eq(st, EL_OK);
     ck_assert(finite_discrete(&r.params));
     ck_assert_msg(r.rms <= 1e-8 * 0.5 * 29, "rms %g", r.rms);
     el_fit_smooth_result sr;
-    ck_assert_int_eq(el_fit_smooth(xy, 30, NULL, NULL, &sr), EL_OK);
+    ck_assert_int_eq(el_fit_smooth(xy, 30, NULL, NULL, &sr, NULL, NULL), EL_OK);
     ck_assert_msg(sr.rms <= 1e-8 * 0.5 * 29, "smooth rms %g", sr.rms);
 }
 END_TEST
@@ -301,11 +308,11 @@ START_TEST(test_degenerate_shapes)
     for (int i = 0; i < 40; i++) { xy[2 * i] = 0.1 * i; xy[2 * i + 1] = sin(0.1 * i); }
     memcpy(xy + 20, xy + 18, 2 * sizeof(double));   /* point 10 = point 9 */
     el_fit_discrete_result r;
-    int st = el_fit_discrete(xy, 40, NULL, NULL, &r);
+    int st = el_fit_discrete(xy, 40, NULL, NULL, &r, NULL, NULL);
     ck_assert(st == EL_OK || st == EL_ENOCONV || st == EL_EMAXITER);
     ck_assert(finite_discrete(&r.params) && isfinite(r.rms));
     el_fit_smooth_result sr;
-    st = el_fit_smooth(xy, 40, NULL, NULL, &sr);
+    st = el_fit_smooth(xy, 40, NULL, NULL, &sr, NULL, NULL);
     ck_assert(st == EL_OK || st == EL_ENOCONV || st == EL_EMAXITER);
     ck_assert(isfinite(sr.params.k) && isfinite(sr.params.mu) && isfinite(sr.rms) && sr.rms < 0.1);
     /* closed loop: 41 points on a circle of radius 2, first = last */
@@ -314,7 +321,7 @@ START_TEST(test_degenerate_shapes)
         xy[2 * i + 1] = 2.0 * sin(2.0 * M_PI * i / 40.0);
     }
     xy[80] = xy[0]; xy[81] = xy[1];
-    st = el_fit_discrete(xy, 41, NULL, NULL, &r);
+    st = el_fit_discrete(xy, 41, NULL, NULL, &r, NULL, NULL);
     ck_assert(st == EL_OK || st == EL_ENOCONV || st == EL_EMAXITER);
     ck_assert(finite_discrete(&r.params));
     ck_assert_msg(r.rms < 1e-3 * 2.0, "circle rms %g (k %g)", r.rms, r.params.k);
@@ -334,7 +341,7 @@ START_TEST(test_maxiter_best_seen)
     el_fit_options_defaults(&o);
     o.max_iter = 1; o.max_candidates = 1;
     el_fit_discrete_result r;
-    int st = el_fit_discrete(xy, n, &o, NULL, &r);
+    int st = el_fit_discrete(xy, n, &o, NULL, &r, NULL, NULL);
     ck_assert(st == EL_OK || st == EL_EMAXITER);
     ck_assert(finite_discrete(&r.params));
     ck_assert_int_eq(el_discrete_eval(&r.initial, n, g), EL_OK);
@@ -367,7 +374,7 @@ START_TEST(test_guess_and_lbfgs)
     el_fit_options_defaults(&o);
     o.limited_memory = 1; o.max_iter = 3000; o.tol = 1e-10;
     el_fit_discrete_result r;
-    int st = el_fit_discrete(xy, n, &o, NULL, &r);
+    int st = el_fit_discrete(xy, n, &o, NULL, &r, NULL, NULL);
     ck_assert(st == EL_OK || st == EL_EMAXITER || st == EL_ENOCONV);
     ck_assert_msg(r.rms <= 1e-4 * L, "L-BFGS rms/L %g", r.rms / L);
     /* fractions */
@@ -380,35 +387,262 @@ START_TEST(test_guess_and_lbfgs)
 }
 END_TEST
 
-/* Concurrent fits from several threads (Debian's MUMPS is not reentrant:
- * without the library's lock this aborts). */
-static void *fit_thread(void *arg)
+/* Concurrent fits from several threads: the common path (Levenberg-Marquardt) takes no
+ * lock, and the results are bit-identical to the same fits run one after another; the
+ * Ipopt path (bounds) still runs (Debian's MUMPS is not reentrant: without the library's
+ * lock this aborts). */
+typedef struct thread_job {
+    int id, bounded;
+    el_fit_discrete_result res[6];
+    double dist[6][120];
+} thread_job;
+
+static void run_job(thread_job *j)
 {
-    long id = (long)arg, bad = 0;
     const size_t n = 120;
-    double xy[2 * 120];
-    for (int r = 0; r < 12; r++) {
-        el_discrete_params p = {0.1 * (double)id, 0.2, 0.01, 0.3 + 0.01 * r, 0.02 * (1.0 + (double)id),
-                                0.1 * r, 0.3 + 0.05 * r};
-        el_fit_discrete_result res;
-        if (el_discrete_eval(&p, n, xy) || el_fit_discrete(xy, n, NULL, NULL, &res) ||
-            !(res.rms <= 1e-8 * p.h * (double)(n - 1)))
-            bad++;
+    double xy[2 * 120], foot[120];
+    unsigned long long rng = 1000 + (unsigned long long)j->id;
+    for (int r = 0; r < 6; r++) {
+        el_discrete_params p = {0.1 * j->id, 0.2, 0.01, 0.3 + 0.01 * r, 0.02 * (1.0 + j->id), 0.1 * r, 0.3 + 0.05 * r};
+        el_discrete_eval(&p, n, xy);
+        for (size_t i = 0; i < 2 * n; i++) xy[i] += 1e-3 * test_uniform(&rng, -1, 1);
+        el_fit_options o;
+        el_fit_options_defaults(&o);
+        if (j->bounded) { o.lower[6] = 0.9; o.upper[6] = 1.0; }    /* excludes the truth */
+        el_fit_discrete(xy, n, &o, NULL, &j->res[r], j->dist[r], foot);
     }
-    return (void *)bad;
 }
 
-START_TEST(test_threads)
+static void *job_thread(void *arg)
 {
-    pthread_t t[4];
-    for (long i = 0; i < 4; i++) ck_assert_int_eq(pthread_create(&t[i], NULL, fit_thread, (void *)i), 0);
-    long bad = 0;
-    for (int i = 0; i < 4; i++) {
-        void *r;
-        ck_assert_int_eq(pthread_join(t[i], &r), 0);
-        bad += (long)r;
+    run_job(arg);
+    return NULL;
+}
+
+START_TEST(test_threads_run_at_once_bit_identical)
+{
+    for (int bounded = 0; bounded < 2; bounded++) {
+        thread_job par[4], ser[4];
+        pthread_t t[4];
+        memset(par, 0, sizeof par);
+        memset(ser, 0, sizeof ser);
+        for (int i = 0; i < 4; i++) { par[i].id = ser[i].id = i; par[i].bounded = ser[i].bounded = bounded; }
+        for (int i = 0; i < 4; i++) ck_assert_int_eq(pthread_create(&t[i], NULL, job_thread, &par[i]), 0);
+        for (int i = 0; i < 4; i++) ck_assert_int_eq(pthread_join(t[i], NULL), 0);
+        for (int i = 0; i < 4; i++) run_job(&ser[i]);
+        for (int i = 0; i < 4; i++) {
+            for (int r = 0; r < 6; r++) {
+                ck_assert_int_eq(par[i].res[r].status, EL_OK);
+                ck_assert_int_eq(par[i].res[r].used_ipopt, bounded);
+                if (bounded) ck_assert(par[i].res[r].params.k >= 0.9 && par[i].res[r].params.k <= 1.0);
+            }
+            ck_assert_msg(memcmp(&par[i], &ser[i], sizeof par[i]) == 0, "thread %d differs from serial", i);
+        }
     }
-    ck_assert_int_eq(bad, 0);
+}
+END_TEST
+
+/* An ipopt.opt in the working directory (print_level 12, an unavailable linear solver)
+ * is not read: nothing is printed, constrained fits (Ipopt) still succeed. */
+START_TEST(test_ipopt_opt_in_working_directory_ignored)
+{
+    char dir[] = "/tmp/el_ipopt_optXXXXXX";
+    ck_assert(mkdtemp(dir) != NULL);
+    char path[256], out[256];
+    snprintf(path, sizeof path, "%s/ipopt.opt", dir);
+    snprintf(out, sizeof out, "%s/stdout.txt", dir);
+    FILE *f = fopen(path, "w");
+    ck_assert(f != NULL);
+    fputs("print_level 12\nlinear_solver ma57\nmax_iter 0\n", f);
+    fclose(f);
+    char cwd[1024];
+    ck_assert(getcwd(cwd, sizeof cwd) != NULL);
+    ck_assert_int_eq(chdir(dir), 0);
+    fflush(stdout);
+    const int saved = dup(1), fd = open(out, O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    ck_assert(saved >= 0 && fd >= 0);
+    dup2(fd, 1);
+    const size_t n = 60;
+    double xy[120];
+    el_discrete_params p = {0.0, 0.0, 0.05, 0.2, 0.03, 0.1, 0.6};
+    el_discrete_eval(&p, n, xy);
+    el_fit_options o;
+    el_fit_options_defaults(&o);
+    o.constraints = EL_CONSTRAIN_END_TANGENT;
+    o.end_tangent = atan2(xy[2 * n - 1] - xy[2 * n - 3], xy[2 * n - 2] - xy[2 * n - 4]);
+    el_fit_discrete_result r;
+    const int st = el_fit_discrete(xy, n, &o, NULL, &r, NULL, NULL);
+    fflush(stdout);
+    dup2(saved, 1);
+    close(saved);
+    close(fd);
+    ck_assert_int_eq(chdir(cwd), 0);
+    struct stat sb;
+    ck_assert_int_eq(stat(out, &sb), 0);
+    ck_assert_msg(sb.st_size == 0, "the library printed %ld bytes", (long)sb.st_size);
+    ck_assert_int_eq(st, EL_OK);
+    ck_assert(r.used_ipopt && r.rms <= 1e-8);
+    unlink(path);
+    unlink(out);
+    rmdir(dir);
+}
+END_TEST
+
+/* Fixed h, mu <= 0 or length < 0 are refused (EL_EINVAL), result untouched. */
+START_TEST(test_fixed_h_nonpositive_rejected)
+{
+    const size_t n = 40;
+    double xy[80], dist[40], foot[40];
+    el_discrete_params p = {0.0, 0.0, 0.05, 0.2, 0.03, 0.1, 0.6};
+    el_discrete_eval(&p, n, xy);
+    el_fit_options o;
+    el_fit_discrete_result r, r0;
+    el_fit_smooth_result sr;
+    memset(&r0, 0x5a, sizeof r0);
+    for (int i = 0; i < 40; i++) dist[i] = foot[i] = 7.0;
+    const double bad[] = {0.0, -1.0, -0.05};
+    for (size_t a = 0; a < 3; a++) {
+        el_fit_options_defaults(&o);
+        o.fixed[2] = 1; o.value[2] = bad[a];
+        r = r0;
+        ck_assert_int_eq(el_fit_discrete(xy, n, &o, NULL, &r, dist, foot), EL_EINVAL);
+        ck_assert(memcmp(&r, &r0, sizeof r) == 0);
+        ck_assert(dist[0] == 7.0 && foot[n - 1] == 7.0);
+        el_fit_options_defaults(&o);
+        o.fixed[3] = 1; o.value[3] = bad[a];           /* smooth mu */
+        ck_assert_int_eq(el_fit_smooth(xy, n, &o, NULL, &sr, NULL, NULL), EL_EINVAL);
+    }
+    el_fit_options_defaults(&o);
+    o.fixed[6] = 1; o.value[6] = -1.0;                 /* smooth length */
+    ck_assert_int_eq(el_fit_smooth(xy, n, &o, NULL, &sr, NULL, NULL), EL_EINVAL);
+    el_fit_options_defaults(&o);
+    o.distance = EL_DISTANCE_ORTHOGONAL;                /* the discrete model pairs */
+    ck_assert_int_eq(el_fit_discrete(xy, n, &o, NULL, &r, NULL, NULL), EL_EINVAL);
+}
+END_TEST
+
+/* Data at 1e-300 .. 1e300 and denormal spreads: a correct fit or EL_EDOM, never EL_OK
+ * with NaN, inf, mu = 0 or h = 0; the guesses and the fractions likewise. */
+START_TEST(test_extreme_magnitudes_edom_or_correct)
+{
+    const size_t n = 50;
+    double base[100], xy[100];
+    el_discrete_params p = {0.0, 0.0, 0.02, 0.2, 0.03, 0.1, 0.6};
+    el_discrete_eval(&p, n, base);
+    const double scales[] = {1e-300, 1e-200, 1e-30, 1e30, 1e200, 1e300, 4.9e-324 * 1e10, 1e-310};
+    const double offsets[] = {0.0, 1.0, 1e300};
+    for (size_t a = 0; a < sizeof scales / sizeof scales[0]; a++)
+        for (size_t b = 0; b < sizeof offsets / sizeof offsets[0]; b++) {
+            const double sc = scales[a], off = offsets[b];
+            for (size_t i = 0; i < 2 * n; i++) xy[i] = base[i] * sc + off;
+            if (el__all_finite(xy, 2 * n)) continue;
+            el_fit_discrete_result r;
+            el_fit_smooth_result sr;
+            int st = el_fit_discrete(xy, n, NULL, NULL, &r, NULL, NULL);
+            if (st == EL_OK) {
+                ck_assert_msg(el_discrete_check(&r.params) == EL_OK && r.params.h >= DBL_MIN && isfinite(r.rms),
+                              "scale %g offset %g: EL_OK with h %g rms %g", sc, off, r.params.h, r.rms);
+                ck_assert_msg(r.rms <= 1e-6 * sc * 1.0 + 1e-12 * fabs(off), "scale %g: rms %g", sc, r.rms);
+            } else {
+                ck_assert_msg(st == EL_EDOM || st == EL_ESINGULAR, "scale %g offset %g: status %d", sc, off, st);
+            }
+            st = el_fit_smooth(xy, n, NULL, NULL, &sr, NULL, NULL);
+            if (st == EL_OK)
+                ck_assert_msg(el_smooth_check(&sr.params) == EL_OK && sr.params.mu >= DBL_MIN && isfinite(sr.rms),
+                              "scale %g offset %g: EL_OK with mu %g", sc, off, sr.params.mu);
+            else
+                ck_assert_msg(st == EL_EDOM || st == EL_ESINGULAR || st == EL_ENOCONV,
+                              "scale %g offset %g: smooth status %d", sc, off, st);
+            el_smooth_params g[4];
+            el_discrete_params gd[4];
+            size_t cnt = 0;
+            st = el_guess_smooth(xy, n, EL_PARAM_AUTO, g, 4, &cnt);
+            ck_assert(st == EL_EDOM || st == EL_ESINGULAR || (st == EL_OK && g[0].mu >= DBL_MIN && el_smooth_check(&g[0]) == EL_OK));
+            st = el_guess_discrete(xy, n, gd, 4, &cnt);
+            ck_assert(st == EL_EDOM || st == EL_ESINGULAR || (st == EL_OK && el_discrete_check(&gd[0]) == EL_OK));
+            double t[50];
+            st = el_fit_fractions(xy, n, EL_PARAM_CHORD, t, NULL);
+            if (st == EL_OK)
+                for (size_t i = 1; i < n; i++) ck_assert(t[i] >= t[i - 1] && t[i] <= 1.0);
+            else
+                ck_assert(st == EL_EDOM || st == EL_ESINGULAR);
+        }
+    /* a spread in the denormals: EL_EDOM, not a fit of rounding noise */
+    for (size_t i = 0; i < 2 * n; i++) xy[i] = base[i] * 1e-320;
+    el_fit_discrete_result r;
+    ck_assert_int_eq(el_fit_discrete(xy, n, NULL, NULL, &r, NULL, NULL), EL_EDOM);
+}
+END_TEST
+
+/* Orthogonal distance: exact data give zero distances and the sampling's arc lengths as
+ * feet; rms and max are those of the distances written. */
+START_TEST(test_orthogonal_distances_and_feet)
+{
+    const size_t n = 80;
+    double xy[160], s[80], dist[80], foot[80];
+    el_smooth_params p = {1.0, -2.0, 0.4, 0.9, 0.8, 0.3, 6.0};
+    for (size_t i = 0; i < n; i++) s[i] = p.length * pow((double)i / (double)(n - 1), 1.7);  /* uneven */
+    ck_assert_int_eq(el_smooth_eval(&p, n, s, xy, NULL, NULL), EL_OK);
+    el_fit_smooth_result r;
+    ck_assert_int_eq(el_fit_smooth(xy, n, NULL, NULL, &r, dist, foot), EL_OK);
+    ck_assert_int_eq(r.distance, EL_DISTANCE_ORTHOGONAL);
+    ck_assert(!r.used_ipopt);
+    double s2 = 0.0, mx = 0.0;
+    for (size_t i = 0; i < n; i++) {
+        ck_assert_msg(fabs(foot[i] - s[i]) <= 1e-9 * p.length, "foot %zu: %g vs %g", i, foot[i], s[i]);
+        s2 += dist[i] * dist[i];
+        mx = fmax(mx, fabs(dist[i]));
+    }
+    ck_assert(mx <= 1e-10 * p.length);
+    ck_assert_close(r.rms, sqrt(s2 / (double)n), 1e-15);
+    ck_assert_close(r.max_error, mx, 1e-15);
+    ck_assert_close(r.params.length, p.length, 1e-9 * p.length);
+}
+END_TEST
+
+/* The keyline: one G2 curve from the C API; split out of range and options it does not
+ * take are refused. */
+START_TEST(test_keyline_joint)
+{
+    /* an S: two elasticae meeting at an inflection with opposite tangents */
+    const size_t n1 = 60, n2 = 80, n = n1 + n2 - 1;
+    double xy[2 * 139], a[2 * 60], b[2 * 80], s[80];
+    const double k1 = 0.4, k2 = 0.55, w = 0.5;
+    el_smooth_params A = {0, 0, M_PI - 2 * asin(k1), w * w, k1, 0, 3.0}, B = {0, 0, -2 * asin(k2), w * w, k2, 0, 4.0};
+    A.q = gsl_sf_ellint_Kcomp(k1, GSL_PREC_DOUBLE);
+    B.q = gsl_sf_ellint_Kcomp(k2, GSL_PREC_DOUBLE);
+    for (size_t i = 0; i < n1; i++) s[i] = A.length * (double)i / (double)(n1 - 1);
+    el_smooth_eval(&A, n1, s, a, NULL, NULL);
+    for (size_t i = 0; i < n2; i++) s[i] = B.length * (double)i / (double)(n2 - 1);
+    el_smooth_eval(&B, n2, s, b, NULL, NULL);
+    for (size_t i = 0; i < n1; i++) { xy[2 * i] = a[2 * (n1 - 1 - i)]; xy[2 * i + 1] = a[2 * (n1 - 1 - i) + 1]; }
+    for (size_t i = 1; i < n2; i++) { xy[2 * (n1 - 1 + i)] = b[2 * i]; xy[2 * (n1 - 1 + i) + 1] = b[2 * i + 1]; }
+    el_fit_smooth_result f, g;
+    double dist[139], foot[139];
+    int side[139];
+    ck_assert_int_eq(el_fit_keyline_smooth(xy, n, n1 - 10, NULL, &f, &g, dist, foot, side), EL_OK);
+    ck_assert(f.rms <= 1e-9 && g.rms <= 1e-9);
+    ck_assert_close(f.params.k, k1, 1e-7);
+    ck_assert_close(g.params.k, k2, 1e-7);
+    ck_assert(fabs(f.params.x0) <= 1e-9 && fabs(g.params.y0) <= 1e-9);
+    for (size_t i = 0; i < n; i++) ck_assert_int_eq(side[i], i < n1 - 1 ? 0 : 1 - (i == n1 - 1) * (side[i] == 0));
+    /* refused: a split leaving fewer than 4 points a side, bounds, other fixed parameters */
+    ck_assert_int_eq(el_fit_keyline_smooth(xy, n, 2, NULL, &f, &g, NULL, NULL, NULL), EL_EINVAL);
+    ck_assert_int_eq(el_fit_keyline_smooth(xy, n, n - 3, NULL, &f, &g, NULL, NULL, NULL), EL_EINVAL);
+    el_fit_options o;
+    el_fit_options_defaults(&o);
+    o.lower[4] = 0.0;
+    ck_assert_int_eq(el_fit_keyline_smooth(xy, n, 60, &o, &f, &g, NULL, NULL, NULL), EL_EINVAL);
+    el_fit_options_defaults(&o);
+    o.fixed[2] = 1; o.value[2] = 0.1;
+    ck_assert_int_eq(el_fit_keyline_smooth(xy, n, 60, &o, &f, &g, NULL, NULL, NULL), EL_EINVAL);
+    el_fit_discrete_result fd, gd;
+    size_t joint = 0;
+    const int st = el_fit_keyline_discrete(xy, n, 60, &o, &fd, &gd, &joint, NULL, NULL, NULL);  /* h held: taken */
+    ck_assert(st == EL_OK || st == EL_ENOCONV || st == EL_EMAXITER);
+    ck_assert(fd.params.h == 0.1 && gd.params.h == 0.1 && joint >= 3 && joint + 4 <= n);
+    o.value[2] = -1.0;
+    ck_assert_int_eq(el_fit_keyline_discrete(xy, n, 60, &o, &fd, &gd, NULL, NULL, NULL, NULL), EL_EINVAL);
 }
 END_TEST
 
@@ -429,7 +663,12 @@ static Suite *suite(void)
     tcase_add_test(tc, test_degenerate_shapes);
     tcase_add_test(tc, test_maxiter_best_seen);
     tcase_add_test(tc, test_guess_and_lbfgs);
-    tcase_add_test(tc, test_threads);
+    tcase_add_test(tc, test_threads_run_at_once_bit_identical);
+    tcase_add_test(tc, test_ipopt_opt_in_working_directory_ignored);
+    tcase_add_test(tc, test_fixed_h_nonpositive_rejected);
+    tcase_add_test(tc, test_extreme_magnitudes_edom_or_correct);
+    tcase_add_test(tc, test_orthogonal_distances_and_feet);
+    tcase_add_test(tc, test_keyline_joint);
     suite_add_tcase(s, tc);
     return s;
 }

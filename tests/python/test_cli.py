@@ -289,15 +289,43 @@ def test_fit_keyline_two_sides(capsys, tmp_path):
     assert len(doc["sides"]) == 2
     for side in doc["sides"]:
         assert side["converged"] and side["rms"] < 0.3      # sample noise sigma 0.1
-        assert side["curve"]["h"] == pytest.approx(side["step"])   # h pinned to r
+        assert 0.9 * side["step"] < side["curve"]["h"] <= 1.01 * side["step"]   # h free (§5.4)
+        assert len(side["distances"]) == side["n_points"] == len(side["foot_s"])
+        assert np.sqrt(np.mean(np.square(side["distances"]))) == pytest.approx(side["rms"], rel=1e-12)
     a, b = (s["curve"] for s in doc["sides"])
-    assert (a["x0"], a["y0"]) == pytest.approx((b["x0"], b["y0"]))  # both start at the inflection
+    assert (a["x0"], a["y0"]) == pytest.approx((b["x0"], b["y0"]), abs=1e-12)  # one joint
     # the generating elastica (see the file's header) inflects where u = K(0.9)
     c = el.SmoothElastica(x0=0, y0=0, phi=0, mu=1.265625e-4, k=0.9, q=1.2, length=240)
     from scipy.special import ellipk
     true = c.points([(ellipk(0.81) - 1.2) / np.sqrt(c.mu)])[0]
     assert np.linalg.norm(np.array(doc["sides"][0]["inflection_point"]) - true) < 25.0
     svg_ok(tmp_path / "k.svg")
+
+
+def test_fit_orthogonal_distances_and_constraints(capsys, tmp_path):
+    """The smooth fit reports point-to-curve distances; end constraints from the command
+    line are met (the first/last points, a tangent in degrees); one that cannot be met
+    exits 2 naming it."""
+    r = cli(capsys, "fit", SAMPLE_S, "--model", "smooth", "--json", tmp_path / "o.json")
+    assert r.returncode == 0, r.stderr
+    doc = json.loads((tmp_path / "o.json").read_text())
+    assert doc["distance"] == "orthogonal" and len(doc["distances"]) == doc["n_points"]
+    assert np.sqrt(np.mean(np.square(doc["distances"]))) == pytest.approx(doc["rms"], rel=1e-12)
+    pts = np.loadtxt(SAMPLE_S, delimiter=",", skiprows=2)
+    r = cli(capsys, "fit", SAMPLE_S, "--model", "smooth", "--start-point", "first", "--end-point", "last",
+            "--start-tangent", "100", "--json", tmp_path / "c.json")
+    assert r.returncode == 0, r.stderr
+    c = el.io.curve_from_dict(json.loads((tmp_path / "c.json").read_text()))
+    ends = c.points(np.array([0.0, c.length]))
+    assert np.max(np.abs(ends - pts[[0, -1]])) <= 1e-9 * c.length
+    assert abs(np.remainder(c.angle([0.0])[0] - np.radians(100) + np.pi, 2 * np.pi) - np.pi) <= 1e-9
+    r = cli(capsys, "fit", SAMPLE_S, "--model", "smooth", "--start-point", "0,0", "--end-point", "1000,0",
+            "--length", ",300")
+    assert r.returncode == 2 and "length" in r.stderr
+    r = cli(capsys, "fit", SAMPLE_S, "--distance", "orthogonal")       # the discrete model pairs
+    assert r.returncode == 2
+    r = cli(capsys, "fit", SAMPLE_S, "--model", "smooth", "--distance", "paired", "--json", "-")
+    assert r.returncode == 0 and json.loads(r.stdout)["distance"] == "paired"
 
 
 def test_fit_keyline_3d(capsys, tmp_path):

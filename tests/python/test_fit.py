@@ -1,10 +1,17 @@
-"""libelastica.fit / fit_keyline: exact recovery, pinning, keyline pipeline, bad input."""
+"""libelastica.fit / fit_keyline (issue 13): exact recovery, point-to-curve distances
+measured independently, uneven and sketched data, constraints, the G2 keyline, bad input."""
+import math
+from pathlib import Path
+
 import numpy as np
 import pytest
 from scipy.special import ellipk
 
 import libelastica as el
+from fit_data import curve_distances, sketched_s, uneven_scan
 from keyline_data import keyline_3d
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
 def half_period(k):
@@ -30,6 +37,27 @@ def smooth_curve(k, pieces, rng):
                              length=pieces * half_period(k) * rng.uniform(0.7, 1) / np.sqrt(mu))
 
 
+def assert_distances_measured(r, scale, rel=1e-9):
+    """The fit's distances and rms equal an independent point-to-curve measurement
+    (dense samples + bounded minimisation; the polygon for the discrete model)."""
+    d, foot = curve_distances(r.curve, r.points)
+    np.testing.assert_allclose(np.abs(r.distances), d, rtol=0, atol=rel * scale)
+    assert r.rms == pytest.approx(float(np.sqrt(np.mean(d ** 2))), rel=1e-7, abs=rel * scale)
+    assert r.max_error == pytest.approx(float(d.max()), rel=1e-7, abs=rel * scale)
+    # the sign: + left of the curve's direction of travel at the foot
+    c = r.curve
+    if isinstance(c, el.SmoothElastica):
+        th = c.angle(r.foot_s)
+    else:
+        V = c.points()
+        j = np.clip((r.foot_s / c.h).astype(int), 0, c.n - 2)
+        th = np.arctan2(V[j + 1, 1] - V[j, 1], V[j + 1, 0] - V[j, 0])
+    w = r.points - r.foot_points()
+    side = np.sign(np.cos(th) * w[:, 1] - np.sin(th) * w[:, 0])
+    far = d > 1e-6 * scale
+    assert np.all(side[far] == np.sign(r.distances[far]))
+
+
 KS = [1e-3, 0.2, 0.6, 0.9, 0.99, 1.02, 1.5, 4.0, 12.0, 30.0]
 
 
@@ -41,26 +69,29 @@ def test_discrete_exact_recovery(k):
         pts = d.points()
         r = el.fit(pts, model="discrete")
         L = polyline_length(pts)
-        assert r.status == 0 and r.converged
+        assert r.status == 0 and r.converged and r.distance == "paired"
         assert r.rms <= 1e-8 * L, (k, n, r.rms / L)
-        assert np.max(np.linalg.norm(r.model_points() - pts, axis=1)) == pytest.approx(
-            r.max_error, rel=1e-6, abs=1e-12 * L)
         assert r.curve.n == n
         assert r.curve.h == pytest.approx(d.h, rel=1e-6)
+        np.testing.assert_allclose(r.foot_s, r.curve.h * np.arange(n), atol=1e-8 * L)
 
 
 @pytest.mark.parametrize("k", KS)
-def test_smooth_exact_recovery(k):
+def test_smooth_exact_recovery_orthogonal_and_paired(k):
     rng = np.random.default_rng(int(k * 1000) + 1)
     for pieces, n in [(1, 30), (2.5, 300)]:
         c = smooth_curve(k, pieces, rng)
-        pts = c.points(np.linspace(0, c.length, n))
+        s = np.linspace(0, c.length, n)
+        pts = c.points(s)
         r = el.fit(pts, model="smooth")
-        assert r.status == 0
-        assert r.param_mode == "uniform"
+        assert r.status == 0 and r.distance == "orthogonal"
         assert r.rms <= 1e-8 * c.length, (k, n, r.rms / c.length)
         assert r.curve.length == pytest.approx(c.length, rel=1e-6)
-        np.testing.assert_allclose(r.s, np.linspace(0, r.curve.length, n), rtol=1e-12, atol=1e-14)
+        np.testing.assert_allclose(r.foot_s, s, atol=1e-7 * c.length)
+        p = el.fit(pts, model="smooth", distance="paired")
+        assert p.status == 0 and p.distance == "paired" and p.param_mode == "uniform"
+        assert p.rms <= 1e-8 * c.length
+        np.testing.assert_allclose(p.s, np.linspace(0, p.curve.length, n), rtol=1e-12, atol=1e-14)
 
 
 def turning(p):
@@ -83,7 +114,7 @@ def test_smooth_signed_k(k):
         r = el.fit(pts, model="smooth")
         assert r.status == 0
         assert r.rms <= 1e-8 * c.length, (k, n, r.rms / c.length, r.curve.k)
-        assert np.max(np.abs(r.model_points() - pts)) <= 1e-7 * c.length
+        assert np.max(np.abs(r.foot_points() - pts)) <= 1e-7 * c.length
         if abs(k) > 1:
             assert r.curve.k == pytest.approx(k, rel=1e-6)
         else:
@@ -101,16 +132,115 @@ def test_discrete_clockwise_loop():
     assert r.curve.k == pytest.approx(3.0, rel=1e-6) and r.curve.z < 0
 
 
-def test_smooth_chord_parameter():
-    """Irregular sampling: the chord-length parameter, a close (not exact) fit."""
-    rng = np.random.default_rng(3)
-    c = smooth_curve(0.7, 1.5, rng)
-    s = np.sort(np.r_[0, rng.uniform(0, c.length, 200) ** 1.0, c.length])
-    s = c.length * (s / c.length) ** 2          # strongly non-uniform
-    pts = c.points(s)
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_uneven_sampling_with_gaps(seed):
+    """Spacing 1:6 along the curve, two gaps, noise 0.15: the orthogonal fit reaches
+    the noise (the distance along the normal has the noise's sigma) and lies close to
+    the true curve; the paired fit on the chord parameter does not. The curve starts
+    and ends at the feet of the first and last points."""
+    pts, truth = uneven_scan(seed=seed, noise=0.15)
     r = el.fit(pts, model="smooth")
-    assert r.param_mode == "chord"
-    assert r.rms < 1e-3 * c.length
+    assert r.status == 0 and r.distance == "orthogonal"
+    assert r.rms <= 1.15 * 0.15, r.rms
+    assert_distances_measured(r, truth.length)
+    off, _ = curve_distances(truth, r.curve.points(np.linspace(0, r.curve.length, 300)))
+    assert off.max() <= 0.3, off.max()
+    assert r.foot_s[0] == pytest.approx(0.0, abs=1e-9 * truth.length)
+    assert r.foot_s[-1] == pytest.approx(r.curve.length, abs=1e-9 * truth.length)
+    p = el.fit(pts, model="smooth", distance="paired")
+    assert p.rms >= 2.0 * r.rms          # what the paired fit cannot reach on such data
+    assert_distances_measured(p, truth.length)
+
+
+@pytest.mark.parametrize("model", ["discrete", "smooth"])
+@pytest.mark.parametrize("noise", [0.0, 1e-3, 1e-2])
+def test_noise_levels(model, noise):
+    """0 / 0.1 % / 1 % noise: exact, then within the noise, the reported rms the
+    measured one, and the fitted curve closer to the truth than the data."""
+    rng = np.random.default_rng(int(noise * 1e4) + (model == "smooth"))
+    for k in (0.4, 3.0):
+        if model == "discrete":
+            c = discrete_curve(k, 400, 2, rng)
+            clean = c.points()
+        else:
+            c = smooth_curve(k, 2, rng)
+            clean = c.points(np.linspace(0, c.length, 400))
+        L = polyline_length(clean)
+        pts = clean + rng.normal(0, noise * L / np.sqrt(2), clean.shape)
+        r = el.fit(pts, model=model)
+        assert r.status == 0
+        rms_noise = np.sqrt(np.mean(np.sum((pts - clean) ** 2, axis=1)))
+        if noise == 0:
+            assert r.rms <= 1e-8 * L
+            continue
+        # the true curve is a candidate: the optimum is at least as close as the noise
+        assert r.rms <= rms_noise * (1 + 1e-9), (model, k, r.rms / rms_noise)
+        assert_distances_measured(r, L)
+        off, _ = curve_distances(r.curve, clean)
+        assert np.sqrt(np.mean(off ** 2)) < 0.5 * rms_noise
+
+
+def test_orthogonal_ends_at_the_feet_of_first_and_last_points():
+    """The start slides: gamma(0) - P_0 and gamma(L) - P_n-1 are normal to the curve
+    at the optimum, so the curve ends where the end points' feet are."""
+    pts, truth = uneven_scan(seed=5, noise=0.15)
+    r = el.fit(pts, model="smooth")
+    c = r.curve
+    for s, P in ((0.0, pts[0]), (c.length, pts[-1])):
+        g = c.points(np.array([s]))[0]
+        th = c.angle(np.array([s]))[0]
+        tangential = np.dot(np.array([math.cos(th), math.sin(th)]), P - g)
+        assert abs(tangential) <= 1e-9 * truth.length, tangential
+    assert r.foot_s[0] == pytest.approx(0.0, abs=1e-9) and r.foot_s[-1] == pytest.approx(c.length)
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2, 3])
+def test_points_sketched_along_an_s(seed):
+    """10-20 uneven points placed by hand along an S (issue 13: the paired fit
+    reported 3 mm for points 0.5 mm off and overshot the ends by 3.5 mm): the
+    orthogonal fit's distances are those measured, the curve ends at the end points'
+    feet and passes within the points' wobble of the S."""
+    n = (15, 10, 20, 12)[seed]
+    pts, truth = sketched_s(seed=seed, n=n, wobble=0.5)
+    r = el.fit(pts, model="smooth")
+    assert r.status == 0
+    assert_distances_measured(r, truth.length)
+    assert r.max_error <= 0.5 * math.sqrt(2)
+    assert r.foot_s[0] <= 1e-9 * truth.length
+    assert r.foot_s[-1] == pytest.approx(r.curve.length, abs=1e-9 * truth.length)
+    p = el.fit(pts, model="smooth", distance="paired")
+    assert r.rms <= p.rms
+
+
+def test_bundled_keyline_in_one_piece():
+    """examples/keyline_3d.csv (one elastica, k = 0.65, noise 0.15 mm) fitted in one
+    piece: within the noise (main: 1.98 mm rms, k = 0.716)."""
+    xyz = np.loadtxt(EXAMPLES / "keyline_3d.csv", delimiter=",", skiprows=2)
+    xy, _ = el.plane_fit(xyz)
+    r = el.fit(xy, model="smooth")
+    assert r.status == 0
+    assert r.rms <= 0.15
+    assert r.curve.k == pytest.approx(0.65, abs=0.02)
+    assert_distances_measured(r, 330.0)
+
+
+def test_options_initial_bounds_strict():
+    c = el.SmoothElastica(x0=0, y0=0, phi=0.3, mu=1.5, k=0.7, q=0.2, length=3.0)
+    pts = c.points(np.linspace(0, 3, 100))
+    r = el.fit(pts, model="smooth", initial=c)          # start at the solution
+    assert r.rms < 1e-12 and r.initial == c
+    r = el.fit(pts, model="smooth", bounds={"k": (0.8, 0.9)})   # active bound: held
+    assert 0.8 <= r.curve.k <= 0.9 and r.rms > 1e-4 and r.used_ipopt
+    r = el.fit(pts, model="smooth", fixed={"k": 0.7, "q": 0.2})
+    assert (r.curve.k, r.curve.q) == (0.7, 0.2) and r.rms < 1e-12
+    d = el.DiscreteElastica(x0=0, y0=0, h=0.01, phi=0.3, z=0.03, q=0.2, k=0.9, n=100)
+    noisy = d.points() + np.random.default_rng(0).normal(0, 1e-4, (100, 2))
+    r = el.fit(noisy, max_iter=1, max_candidates=1)
+    assert r.status == el._ffi.lib.EL_EMAXITER and np.all(np.isfinite(r.curve.params))
+    with pytest.raises(el.NotConvergedError):
+        el.fit(noisy, max_iter=1, max_candidates=1, strict=True)
+    r = el.fit(d.points(), limited_memory=True, max_iter=3000)
+    assert r.rms < 1e-4 * polyline_length(d.points())
 
 
 def test_pinning_exact():
@@ -125,47 +255,6 @@ def test_pinning_exact():
     assert np.isfinite(r2.rms)
 
 
-def test_options_initial_bounds_strict():
-    c = el.SmoothElastica(x0=0, y0=0, phi=0.3, mu=1.5, k=0.7, q=0.2, length=3.0)
-    pts = c.points(np.linspace(0, 3, 100))
-    r = el.fit(pts, model="smooth", initial=c)          # start at the solution
-    assert r.rms < 1e-12 and r.initial == c
-    r = el.fit(pts, model="smooth", bounds={"k": (0.8, 0.9)})   # active bound: held
-    assert 0.8 <= r.curve.k <= 0.9 and r.rms > 1e-4
-    r = el.fit(pts, model="smooth", fixed={"k": 0.7, "q": 0.2})
-    assert (r.curve.k, r.curve.q) == (0.7, 0.2) and r.rms < 1e-12
-    d = el.DiscreteElastica(x0=0, y0=0, h=0.01, phi=0.3, z=0.03, q=0.2, k=0.9, n=100)
-    noisy = d.points() + np.random.default_rng(0).normal(0, 1e-4, (100, 2))
-    r = el.fit(noisy, max_iter=1, max_candidates=1)
-    assert r.status == el._ffi.lib.EL_EMAXITER and np.all(np.isfinite(r.curve.params))
-    with pytest.raises(el.NotConvergedError):
-        el.fit(noisy, max_iter=1, max_candidates=1, strict=True)
-    r = el.fit(d.points(), limited_memory=True, max_iter=3000)
-    assert r.rms < 1e-4 * polyline_length(d.points())
-
-
-def test_noisy_fit_within_noise():
-    rng = np.random.default_rng(8)
-    for model in ("discrete", "smooth"):
-        for k in (0.4, 3.0):
-            if model == "discrete":
-                c = discrete_curve(k, 400, 2, rng)
-                clean = c.points()
-            else:
-                c = smooth_curve(k, 2, rng)
-                clean = c.points(np.linspace(0, c.length, 400))
-            L = polyline_length(clean)
-            sigma = 1e-3 * L
-            noisy = clean + rng.normal(0, sigma, clean.shape)
-            r = el.fit(noisy, model=model)
-            # the true curve is a candidate of the least-squares problem: the optimum
-            # is at least as close to the data as the realised noise
-            rms_noise = np.sqrt(np.mean(np.sum((noisy - clean) ** 2, axis=1)))
-            assert r.rms <= rms_noise * (1 + 1e-9), (model, k, r.rms / rms_noise)
-            # and the fitted curve lies closer to the truth than the data
-            assert np.sqrt(np.mean(np.sum((r.model_points() - clean) ** 2, axis=1))) < 0.5 * rms_noise
-
-
 def test_scale_invariance():
     rng = np.random.default_rng(9)
     d = discrete_curve(2.0, 80, 2, rng)
@@ -176,99 +265,246 @@ def test_scale_invariance():
         assert r.curve.k == pytest.approx(d.k, rel=1e-6)
 
 
-def _seg_dist(P, Q):
-    """Distance of each point of P to the polyline Q."""
-    A, B = Q[:-1], Q[1:]
-    AB = B - A
-    t = np.clip(np.einsum("pij,ij->pi", P[:, None, :] - A[None], AB) / np.sum(AB * AB, 1), 0, 1)
-    C = A[None] + t[..., None] * AB[None]
-    return np.min(np.linalg.norm(P[:, None, :] - C, axis=2), axis=1)
+# ------------------------------------------------------------------ constraints
+
+def _ends(c):
+    """Start/end point, tangent angle, curvature of a fitted curve."""
+    if isinstance(c, el.SmoothElastica):
+        s = np.array([0.0, c.length])
+        return c.points(s), c.angle(s), c.curvature(s)
+    V = c.points()
+    th = [math.atan2(*(V[1] - V[0])[::-1]), math.atan2(*(V[-1] - V[-2])[::-1])]
+    # curvature at the end vertices of the curve extended by one vertex
+    ext = el.DiscreteElastica(x0=0, y0=0, h=c.h, phi=c.phi, z=c.z, q=c.q - c.z, k=c.k, n=c.n + 2)
+    kap = ext.curvature()
+    return V[[0, -1]], np.array(th), np.array([kap[0], kap[-1]])
+
+
+def _angle_diff(a, b):
+    return abs(math.remainder(a - b, 2 * math.pi))
+
+
+def _check_constraints(r, con, model, size):
+    xy, th, kap = _ends(r.curve)
+    if "start_point" in con:
+        assert np.max(np.abs(xy[0] - con["start_point"])) <= 1e-9 * size, con
+    if "end_point" in con:
+        assert np.max(np.abs(xy[1] - con["end_point"])) <= 1e-9 * size, con
+    if "start_tangent" in con:
+        assert _angle_diff(th[0], con["start_tangent"]) <= 1e-9, con
+    if "end_tangent" in con:
+        assert _angle_diff(th[1], con["end_tangent"]) <= 1e-9, con
+    if "start_curvature" in con:
+        assert abs(kap[0] - con["start_curvature"]) <= 1e-9 / size, (con, kap)
+    if "end_curvature" in con:
+        assert abs(kap[1] - con["end_curvature"]) <= 1e-9 / size, (con, kap)
+    if "length" in con:
+        length = r.curve.length if model == "smooth" else r.curve.h * (r.curve.n - 1)
+        assert con["length"][0] * (1 - 1e-12) <= length <= con["length"][1] * (1 + 1e-12), con
+    if "k" in con:
+        assert con["k"][0] - 1e-12 <= r.curve.k <= con["k"][1] + 1e-12, (con, r.curve.k)
+
+
+@pytest.mark.parametrize("model", ["smooth", "discrete"])
+def test_every_constraint_honoured_to_1e_9(model):
+    """Every constraint, alone and combined, is met to 1e-9 (of the data's size; rad)
+    with the distances still measured. The data: points sketched along an S, and for
+    the curvatures a scan from one inflection to the next (the designer's free ends);
+    the discrete model on the equilateral polygon of the same points."""
+    rng = np.random.default_rng(11)
+    pts, truth = sketched_s(seed=7, n=40, wobble=0.3)
+    k = 0.7
+    K = ellipk(k * k)
+    wave = el.SmoothElastica(x0=0, y0=0, phi=0.2, mu=(1 / 30.0) ** 2, k=k, q=K, length=2 * K * 30.0 * 0.999)
+    s = np.sort(rng.uniform(0, wave.length, 60))
+    s[0], s[-1] = 0.0, wave.length
+    scan = wave.points(s) + rng.normal(0, 0.2, (60, 2))
+    if model == "discrete":
+        pts = el.resample_equilateral(pts, truth.length / 40)
+        scan = el.resample_equilateral(scan, wave.length / 60)
+    P0, P1 = pts[0] + (0.3, -0.2), pts[-1] + (-0.4, 0.1)
+    d0 = math.atan2(*(pts[1] - pts[0])[::-1]) + 0.1
+    d1 = math.atan2(*(pts[-1] - pts[-2])[::-1]) - 0.1
+    cases = [
+        (pts, {"start_point": P0}), (pts, {"end_point": P1}), (pts, {"start_point": P0, "end_point": P1}),
+        (pts, {"start_tangent": d0}), (pts, {"end_tangent": d1}),
+        (pts, {"start_tangent": d0, "end_tangent": d1}),
+        (pts, {"start_point": P0, "start_tangent": d0, "end_point": P1, "end_tangent": d1}),
+        (pts, {"length": (0, 0.95 * polyline_length(pts))}), (pts, {"k": (0.2, 0.5)}),
+        (scan, {"start_curvature": 0.0}), (scan, {"end_curvature": 0.0}),
+        (scan, {"start_curvature": 0.0, "end_curvature": 0.0}),
+        (scan, {"start_point": tuple(scan[0]), "start_tangent": float(wave.angle([0.0])[0]),
+                "start_curvature": 0.0}),
+        (scan, {"start_curvature": 0.002, "end_curvature": -0.002}),
+    ]
+    for data, con in cases:
+        r = el.fit(data, model=model, constraints=con)
+        size = polyline_length(data)
+        _check_constraints(r, con, model, size)
+        assert r.status == 0, (con, r.status)
+        assert r.used_ipopt or set(con) <= {"start_point"}
+        assert_distances_measured(r, size)
+
+
+@pytest.mark.parametrize("model,con", [("discrete", {"end_curvature": 0.0}),
+                                       ("smooth", {"start_curvature": 0.01}),
+                                       ("discrete", {"start_curvature": 0.01})])
+def test_constraint_far_from_the_free_fit_is_met_near_the_data(model, con):
+    """examples/sample_2d.csv, curvature 0.009 at the free fit's end and 0.03 at its
+    start: a constraint far from those values. Ipopt started at the free optimum slid to
+    a straight line (rms 7.7, discrete end curvature 0) or gave up ("no elastica meets
+    start_curvature", smooth); from the penalty path it meets the constraint with the
+    curve still along the points."""
+    pts = el.io.read_points(str(Path(__file__).resolve().parents[2] / "examples/sample_2d.csv"))
+    r = el.fit(pts, model=model, constraints=con)
+    size = polyline_length(pts)
+    _check_constraints(r, con, model, size)
+    assert r.status == 0 and r.rms < 0.5, (r.status, r.rms)
+
+
+def test_constraint_errors_name_the_constraint():
+    pts, truth = sketched_s(seed=8, n=20)
+    with pytest.raises(el.ConstraintError) as e:        # contradicts a fixed parameter
+        el.fit(pts, model="smooth", fixed={"x0": 0.0}, constraints={"start_point": (1.0, 2.0)})
+    assert e.value.constraint == "start_point" and "start_point" in str(e.value)
+    with pytest.raises(el.ConstraintError) as e:        # out of reach of the longest curve
+        el.fit(pts, model="smooth", constraints={"start_point": (0, 0), "end_point": (50, 0),
+                                                  "length": (0, 20)})
+    assert e.value.constraint == "length"
+    with pytest.raises(el.ConstraintError) as e:        # k of a loop, curvature 0 at the end
+        el.fit(pts, model="smooth", constraints={"k": (2.0, 3.0), "end_curvature": 0.0})
+    assert e.value.constraint in ("end_curvature", "k")
+    for bad in ({"start_pointt": (0, 0)}, {"length": (2, 1)}, {"start_tangent": float("nan")},
+                {"end_point": (1,)}, {"k": "x"}):
+        with pytest.raises(ValueError):
+            el.fit(pts, model="smooth", constraints=bad)
+
+
+# ------------------------------------------------------------------ keyline
+
+def _g2(kf):
+    """The joint: gap between the sides' starts, tangent break (rad), curvatures."""
+    a, b = kf.first.curve, kf.second.curve
+    if isinstance(a, el.SmoothElastica):
+        z = np.array([0.0])
+        gap = np.linalg.norm(a.points(z)[0] - b.points(z)[0])
+        brk = _angle_diff(a.angle(z)[0] + math.pi, b.angle(z)[0])
+        return gap, brk, a.curvature(z)[0], b.curvature(z)[0]
+    pa, pb = a.points()[:2], b.points()[:2]
+    brk = _angle_diff(math.atan2(*(pa[1] - pa[0])[::-1]) + math.pi, math.atan2(*(pb[1] - pb[0])[::-1]))
+    ka, kb = (_ends(c)[2][0] for c in (a, b))
+    return np.linalg.norm(pa[0] - pb[0]), brk, ka, kb
+
+
+def _off_truth(kf, kl):
+    """rms distance of the fitted curves (3D, input coordinates) to the clean keyline."""
+    out = []
+    for r in (kf.first, kf.second):
+        c = r.curve
+        P = c.points(np.linspace(0, c.length, 200)) if isinstance(c, el.SmoothElastica) else c.points()
+        P3 = kf.prepared.to_input(P)
+        A, B = kl.xyz_clean[:-1], kl.xyz_clean[1:]
+        AB = B - A
+        t = np.clip(np.einsum("pij,ij->pi", P3[:, None, :] - A[None], AB) / np.sum(AB * AB, 1), 0, 1)
+        out.append(np.min(np.linalg.norm(P3[:, None, :] - (A[None] + t[..., None] * AB[None]), axis=2), axis=1))
+    return float(np.sqrt(np.mean(np.concatenate(out) ** 2)))
 
 
 @pytest.mark.parametrize("model", ["discrete", "smooth"])
 @pytest.mark.parametrize("seed", [0, 1, 2])
-def test_keyline_pipeline_3d_noisy(model, seed):
-    """Tilted, noisy 3D keyline with one inflection: both sides fit within the noise,
-    pinned at the estimated inflection (seed 000 §5.4)."""
-    kl = keyline_3d(seed=seed, noise=1e-4)
+def test_keyline_one_g2_curve(model, seed):
+    """Both sides start at one joint with opposite tangents and zero curvature there
+    (G2, to rounding), fit within the noise, and the joint lies near the true inflection
+    (the RDP-style estimate is up to ~7 segments off)."""
+    kl = keyline_3d(seed=seed, noise=1e-3)
     kf = el.fit_keyline(kl.xyz, model=model)
+    gap, brk, ka, kb = _g2(kf)
+    assert gap <= 1e-12 * kl.length and brk <= 1e-12
+    assert abs(ka) <= 1e-12 / kl.length * 100 and abs(kb) <= 1e-12 / kl.length * 100
     for side in ("first", "second"):
         r = getattr(kf, side)
-        poly = kf.prepared.polygon
-        start = poly[kf.inflection]
-        assert (r.curve.x0, r.curve.y0) == (start[0], start[1])
-        if model == "discrete":
-            assert r.curve.h == kf.prepared.r
         assert r.status == 0
+        assert np.allclose(r.curve.params[:2], kf.joint)
         assert r.rms <= 1.5 * kl.noise, (side, r.rms / kl.noise)
-        d = _seg_dist(kf.side_points(side), kl.xyz_clean)      # 3D, input coordinates
-        assert np.sqrt(np.mean(d ** 2)) <= kl.noise
-        assert d.max() <= 3 * kl.noise
-    # the two sides are on opposite sides of the inflection: curvatures of opposite sign
-    k1 = np.mean(np.sign(np.diff(np.unwrap(np.arctan2(*np.diff(kf.first.model_points(), axis=0).T[::-1])))))
-    k2 = np.mean(np.sign(np.diff(np.unwrap(np.arctan2(*np.diff(kf.second.model_points(), axis=0).T[::-1])))))
-    assert k1 * k2 > 0   # walked away from the inflection both turn the same way relative to travel
+        # each point's distance is its distance to the keyline (the nearer side)
+        d = np.minimum(*(curve_distances(c, r.points)[0] for c in (kf.first.curve, kf.second.curve)))
+        np.testing.assert_allclose(np.abs(r.distances), d, rtol=0, atol=1e-9 * kl.length)
+    assert _off_truth(kf, kl) <= 0.5 * kl.noise
+    J3 = kf.prepared.to_input(kf.joint)
+    assert np.linalg.norm(J3 - kl.inflection_xyz) <= 1.0 * kf.prepared.r
 
 
-@pytest.mark.parametrize("model", ["discrete", "smooth"])
-def test_keyline_split_refined(model):
-    """At 0.1 % noise the RDP-style estimate misses the inflection by up to ~7
-    segments; the refined split (zero of the fitted curvature) lands closer to
-    the true inflection, and both sides still fit within the noise."""
-    err_prep, err_ref = [], []
-    for seed in (1, 2, 3, 9):
-        kl = keyline_3d(seed=seed, noise=1e-3)
-        kf = el.fit_keyline(kl.xyz, model=model)
-        poly3 = kf.prepared.to_input(kf.prepared.polygon)
-        dist = np.linalg.norm(poly3 - kl.inflection_xyz, axis=1)
-        assert kf.inflection_estimate == kf.prepared.inflection
-        e0, e1 = dist[kf.inflection_estimate], dist[kf.inflection]
-        err_prep.append(e0)
-        err_ref.append(e1)
-        assert e1 < e0, (seed, e0, e1)
-        assert e1 <= 2.0 * kf.prepared.r, (seed, e1 / kf.prepared.r)
-        for side in ("first", "second"):
-            r = getattr(kf, side)
-            assert r.status == 0
-            # in-plane noise has two components of sigma each (rms sqrt(2) sigma),
-            # the pin sits on a noisy vertex, and the discrete model pairs the
-            # resampled vertices one to one: within 2 sigma of the data, and
-            # within sigma of the noise-free curve
-            assert r.rms <= 2.0 * kl.noise, (seed, side, r.rms / kl.noise)
-            d = _seg_dist(kf.side_points(side), kl.xyz_clean)
-            assert np.sqrt(np.mean(d ** 2)) <= kl.noise
-    assert np.mean(err_ref) < 0.3 * np.mean(err_prep)
-    # without refinement the split is the estimate
-    kf0 = el.fit_keyline(kl.xyz, model=model, refine=False)
-    assert kf0.inflection == kf0.prepared.inflection
+@pytest.mark.parametrize("noise_mm", [0.1, 0.2, 0.3])
+def test_keyline_seed000_conditions_h_free(noise_mm):
+    """Seed 000 §5: r = 1 mm, scanner noise 0.1-0.3 mm, valley radius ~150 mm,
+    k ~ 0.35. The discrete h is free (Table 1 reports h = 0.964 mm for r = 1 mm): the
+    keyline lands much nearer the true curve than with h held at r."""
+    kl = keyline_3d(n=1200, length=300.0, noise=noise_mm / 300.0, seed=int(noise_mm * 10),
+                    k_left=0.35, k_right=0.35)
+    free = el.fit_keyline(kl.xyz, r=1.0, model="discrete")
+    held = el.fit_keyline(kl.xyz, r=1.0, model="discrete", fixed={"h": 1.0})
+    smooth = el.fit_keyline(kl.xyz, r=1.0, model="smooth")
+    assert held.first.curve.h == held.second.curve.h == 1.0
+    assert 0.9 < free.first.curve.h < 1.0 and 0.9 < free.second.curve.h < 1.0
+    e_free, e_held, e_smooth = (_off_truth(kf, kl) for kf in (free, held, smooth))
+    assert e_free <= 0.5 * noise_mm and e_smooth <= 0.5 * noise_mm
+    assert e_held >= 4 * e_free, (e_free, e_held)
+    for kf in (free, smooth):
+        assert _g2(kf)[1] <= 1e-12
+        for r in (kf.first, kf.second):
+            assert r.curve.k == pytest.approx(0.35, abs=0.03)
 
 
-def test_keyline_bundled_sample_split():
-    """examples/keyline_3d.csv (examples/make_keyline.py: one elastica, k = 0.65,
-    noise 0.15 mm): the refined split is within two segments of the true
-    inflection (the RDP-style estimate is ~20 mm off)."""
-    import math
-    from pathlib import Path
-    from scipy.special import ellipk as K
-    ex = Path(__file__).resolve().parents[2] / "examples"
-    xyz = np.loadtxt(ex / "keyline_3d.csv", delimiter=",", skiprows=2)
-    # the true inflection as make_keyline.py places it: u = sqrt(mu) s + q = K(0.65)
+def test_keyline_bundled_sample():
+    """examples/keyline_3d.csv (one elastica, k = 0.65, noise 0.15 mm): both models give
+    one G2 curve whose joint is within two segments of the true inflection (the
+    RDP-style estimate is ~20 mm off)."""
+    xyz = np.loadtxt(EXAMPLES / "keyline_3d.csv", delimiter=",", skiprows=2)
     mu, k, q, phi, L = (1.0 / 105.0) ** 2, 0.65, 0.25, -1.028, 330.0
-    s = (K(k * k) - q) / math.sqrt(mu)
+    s = (ellipk(k * k) - q) / math.sqrt(mu)
     c = el.SmoothElastica(x0=0.0, y0=0.0, phi=phi, mu=mu, k=k, q=q, length=L)
-    assert abs(c.curvature(np.array([s]))[0]) < 1e-12
     xy = c.points(np.array([s]))[0]
+
     def rot(axis, a):
         a_ = np.asarray(axis, float)
         Kx = np.array([[0, -a_[2], a_[1]], [a_[2], 0, -a_[0]], [-a_[1], a_[0], 0]])
         return np.eye(3) + math.sin(a) * Kx + (1 - math.cos(a)) * Kx @ Kx
     R = rot([0, 0, 1], math.radians(17.0)) @ rot([1, 0, 0], math.radians(32.0))
     truth = R @ np.r_[xy, 0.3 * math.sin(math.pi * s / L)] + np.array([412.0, -138.5, 96.25])
-    kf = el.fit_keyline(xyz, model="smooth")
-    poly3 = kf.prepared.to_input(kf.prepared.polygon)
-    dist = np.linalg.norm(poly3 - truth, axis=1)
-    assert dist[kf.inflection] <= 2.0 * kf.prepared.r < dist[kf.inflection_estimate]
+    for model in ("discrete", "smooth"):
+        kf = el.fit_keyline(xyz, model=model)
+        assert _g2(kf)[1] <= 1e-12
+        poly3 = kf.prepared.to_input(kf.prepared.polygon)
+        J3 = kf.prepared.to_input(kf.joint)
+        assert np.linalg.norm(J3 - truth) <= 2.0 * kf.prepared.r
+        assert np.linalg.norm(poly3[kf.inflection_estimate] - truth) > 2.0 * kf.prepared.r
+        for r in (kf.first, kf.second):
+            assert r.rms <= 0.2 and r.status == 0
 
+
+def test_fit_keyline_options():
+    kl = keyline_3d(seed=3, noise=1e-4)
+    kf = el.fit_keyline(kl.xyz, model="discrete", fixed={"h": 2.5}, max_iter=50)
+    assert kf.first.curve.h == kf.second.curve.h == 2.5
+    with pytest.raises(ValueError):
+        el.fit_keyline(kl.xyz, model="smooth", fixed={"phi": 0.25})   # the joint ties phi
+    with pytest.raises(ValueError):
+        el.fit_keyline(kl.xyz, model="discrete", fixed={"h": -1.0})
+    with pytest.raises(ValueError):
+        el.fit_keyline(kl.xyz, bounds={"k": (0, 1)})
+
+
+def test_fit_keyline_bad_input():
+    with pytest.raises(ValueError):
+        el.fit_keyline(np.zeros((3, 3)))
+    with pytest.raises(ValueError):
+        el.fit_keyline(np.full((10, 3), np.nan))
+    a = np.linspace(0, 2, 100)
+    with pytest.raises(el.DomainError):       # a convex arc has no inflection
+        el.fit_keyline(np.c_[np.cos(a), np.sin(a)], r=0.02)
+
+
+# ------------------------------------------------------------------ bad input
 
 @pytest.mark.parametrize("model", ["discrete", "smooth"])
 def test_bad_input(model):
@@ -288,6 +524,13 @@ def test_bad_input(model):
         el.fit(np.zeros((10, 3)), model=model)
     with pytest.raises(ValueError):
         el.fit(good, model="spline")
+    with pytest.raises(ValueError):
+        el.fit(good, model=model, distance="nearest")
+    if model == "discrete":
+        with pytest.raises(ValueError):
+            el.fit(good, model=model, distance="orthogonal")
+        with pytest.raises(ValueError):                # fixed h <= 0
+            el.fit(good, model=model, fixed={"h": 0.0})
     # collinear: the straight line, exactly
     line = np.c_[np.linspace(-1, 2, 25), 0.5 * np.linspace(-1, 2, 25) + 1]
     r = el.fit(line, model=model)
@@ -300,21 +543,24 @@ def test_bad_input(model):
     for pts in (rep, loop):
         r = el.fit(pts, model=model)
         assert np.all(np.isfinite(r.curve.params)) and np.isfinite(r.rms)
+        assert np.all(np.isfinite(r.distances))
         assert r.status in (0, el._ffi.lib.EL_ENOCONV, el._ffi.lib.EL_EMAXITER)
     assert el.fit(loop, model="discrete").rms < 1e-3
 
 
-def test_fit_keyline_fixed_applies_to_both_sides():
-    kl = keyline_3d(seed=3, noise=1e-4)
-    kf = el.fit_keyline(kl.xyz, model="smooth", fixed={"phi": 0.25})
-    assert kf.first.curve.phi == 0.25 and kf.second.curve.phi == 0.25
-
-
-def test_fit_keyline_bad_input():
-    with pytest.raises(ValueError):
-        el.fit_keyline(np.zeros((3, 3)))
-    with pytest.raises(ValueError):
-        el.fit_keyline(np.full((10, 3), np.nan))
-    a = np.linspace(0, 2, 100)
-    with pytest.raises(el.DomainError):       # a convex arc has no inflection
-        el.fit_keyline(np.c_[np.cos(a), np.sin(a)], r=0.02)
+@pytest.mark.parametrize("seed", [0, 5, 8, 17, 24, 34, 38])
+def test_orthogonal_fit_of_loops_no_worse_than_paired(seed):
+    """Loops (k 5-30, three pieces, 100 points, 1 % noise): the orthogonal fit starts
+    from the paired fit with each foot where that curve comes nearest, so its
+    point-to-curve rms is never above the paired fit's (with feet near the points'
+    places along the data it ended up to 10 % above it on six of these seeds)."""
+    rng = np.random.default_rng(seed)
+    k, mu = rng.uniform(5, 30), rng.uniform(0.5, 2)
+    c = el.SmoothElastica(x0=0, y0=0, phi=rng.uniform(-3, 3), mu=mu, k=k, q=rng.uniform(-2, 2),
+                          length=3 * 0.9 * 2 * ellipk(1 / k ** 2) / k / np.sqrt(mu))
+    pts = c.points(np.linspace(0, c.length, 100))
+    pts = pts + rng.normal(0, 0.01 * c.length / np.sqrt(2), pts.shape)
+    o = el.fit(pts, model="smooth")
+    p = el.fit(pts, model="smooth", distance="paired")
+    assert o.status == 0 and o.distance == "orthogonal"
+    assert o.rms <= p.rms * (1 + 1e-9)

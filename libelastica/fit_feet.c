@@ -1,0 +1,530 @@
+/*
+ * Foot points and point-to-curve distances (fit_internal.h).
+ *
+ * Smooth: the foot of P on the curve is where T(s) . (gamma(s) - P) = 0; Newton's method
+ * from the current foot, with derivative 1 + kappa N . (gamma - P) (bounded below, so a
+ * point beyond the centre of curvature still moves the right way), the foot held in the
+ * curve's range. For the keyline, sigma < 0 is the first curve at -sigma and sigma >= 0
+ * the second: d gamma / d sigma = -T on the first, the second derivative kappa N on both,
+ * so one Newton iteration serves the joined curve and a foot crosses the joint freely.
+ * Discrete: the nearest point of the polygon of the vertices, searched from the segments
+ * at the point's own vertex outwards while the distance decreases.
+ * Signed distances: positive when the point lies left of the curve (its direction of
+ * increasing s; for a keyline side, away from the joint).
+ */
+#include "fit_internal.h"
+#include <stdlib.h>
+#include <string.h>
+
+enum { NEWTON_MAX = 40 };
+
+/* Newton's step for the foot, -t / (1 + kappa e) (gamma - P = t T + e N), with its
+ * derivative bounded below (a point beyond the centre of curvature still moves the right
+ * way) and the step to half the radius of curvature (or of the range): a foot stays on
+ * its branch of a tight loop instead of jumping to another. */
+double fit_foot_step(double t, double e, double kappa, double range)
+{
+    const double u = -t / fmax(1.0 + kappa * e, 0.25), lim = 0.5 / fmax(fabs(kappa), 1.0 / range);
+    return fmin(fmax(u, -lim), lim);
+}
+
+/* gamma, d gamma / d sigma and the curvature term at m feet sig (one block). */
+typedef struct feet_block {
+    double xy[2 * FIT_BLOCK], T[2 * FIT_BLOCK], kappa[FIT_BLOCK], dirs[FIT_BLOCK];
+} feet_block;
+
+static int feet_eval(const fit_objective *o, double v[2][FIT_NP], const double *sig, size_t m,
+                     feet_block *b)
+{
+    double s[FIT_BLOCK], xy[2 * FIT_BLOCK], th[FIT_BLOCK], ka[FIT_BLOCK];
+    size_t pos[FIT_BLOCK];
+    const int nc = o->map.ncurves;
+    for (int c = 0; c < nc; c++) {
+        size_t cnt = 0;
+        for (size_t i = 0; i < m; i++) {
+            const int on_first = nc == 1 || sig[i] < 0.0;
+            if (on_first != (c == 0)) continue;
+            pos[cnt] = i;
+            s[cnt++] = nc == 1 ? sig[i] : fabs(sig[i]);
+        }
+        if (cnt == 0) continue;
+        el_smooth_params p;
+        int st = fit_to_smooth(v[c], &p);
+        if (st || (st = el_smooth_eval(&p, cnt, s, xy, th, ka))) return st ? st : EL_EDOM;
+        const double dir = nc == 2 && c == 0 ? -1.0 : 1.0;
+        for (size_t j = 0; j < cnt; j++) {
+            const size_t i = pos[j];
+            b->xy[2 * i] = xy[2 * j];
+            b->xy[2 * i + 1] = xy[2 * j + 1];
+            b->T[2 * i] = cos(th[j]);
+            b->T[2 * i + 1] = sin(th[j]);
+            b->kappa[i] = ka[j];
+            b->dirs[i] = dir;
+        }
+    }
+    return EL_OK;
+}
+
+static void point(const fit_objective *o, size_t i, double *P)
+{
+    P[0] = (o->xy[2 * i] - o->cx) / o->sc;
+    P[1] = (o->xy[2 * i + 1] - o->cy) / o->sc;
+}
+
+/*
+ * The feet sig[g] (g = the points a .. a+m-1) to the nearest points in [lo, hi], and
+ * when dist != NULL the signed distances (+ = left of the curve's own direction). Newton's method; once a step u is below 1e-7 of the range the foot is
+ * sigma + u and, with gamma - P = t T + e N at sigma, the distance follows from
+ *   gamma(sigma + u) - P = (t + u) T + (e + kappa u^2 / 2) N + O(u^3)
+ * (exact for u = 0, a foot held at an end of the range), so the converged feet cost no
+ * further evaluation.
+ */
+static int project_block(const fit_objective *o, double v[2][FIT_NP], size_t a, size_t m,
+                         double *sig, double lo, double hi, double *dist)
+{
+    double cur[FIT_BLOCK];
+    size_t act[FIT_BLOCK], na = m;
+    for (size_t i = 0; i < m; i++) act[i] = a + i;
+    const double tol = 1e-7 * (hi - lo + 1e-300);
+    feet_block b;
+    for (int it = 0; it < NEWTON_MAX && na > 0; it++) {
+        for (size_t i = 0; i < na; i++) cur[i] = sig[act[i]];
+        int st = feet_eval(o, v, cur, na, &b);
+        if (st) return st;
+        const int last = it + 1 == NEWTON_MAX;
+        size_t keep = 0;
+        for (size_t i = 0; i < na; i++) {
+            double P[2];
+            point(o, act[i], P);
+            const double dx = b.xy[2 * i] - P[0], dy = b.xy[2 * i + 1] - P[1];
+            const double Tx = b.T[2 * i], Ty = b.T[2 * i + 1];
+            const double t = b.dirs[i] * (Tx * dx + Ty * dy);     /* d/dsigma of |gamma - P|^2 / 2 */
+            const double e = Tx * dy - Ty * dx;                    /* N . (gamma - P) */
+            const double u = (last ? 0.0 : fmin(fmax(cur[i] + fit_foot_step(t, e, b.kappa[i], hi - lo), lo), hi)) - cur[i];
+            sig[act[i]] = cur[i] + u;
+            if (fabs(u) > tol) { act[keep++] = act[i]; continue; }
+            if (dist) {
+                const double p = t + u, q = e + 0.5 * b.kappa[i] * u * u;
+                const double d = sqrt(p * p + q * q);
+                dist[act[i]] = q > 0.0 ? -d : d;     /* N . (P - gamma) = -q: left of the curve's own direction */
+            }
+        }
+        na = keep;
+    }
+    return EL_OK;
+}
+
+/* The feet's range: the curve over [0, L] (keyline: sigma in [-L1, L2]) for distances;
+ * for the objective the curve extended by 5 % of its length at its ends, so that a
+ * point a little beyond an end (noise around the first and last points) has a smooth
+ * normal distance instead of a kink where its foot reaches the end (fit_objective.c). */
+void fit_feet_range(const fit_objective *o, double v[2][FIT_NP], int extended, double *lo, double *hi)
+{
+    const double e = extended ? 1.05 : 1.0;
+    *lo = o->map.ncurves == 2 ? -e * v[0][6] : (extended ? -0.05 * v[0][6] : 0.0);
+    *hi = e * v[o->map.ncurves == 2 ? 1 : 0][6];
+}
+
+int fit_objective_project(fit_objective *o, const double *x)
+{
+    double v[2][FIT_NP], lo, hi;
+    int st = fit_map_eval(&o->map, x, v, NULL);
+    if (st) return st;
+    fit_feet_range(o, v, 1, &lo, &hi);
+    /* the ends keep their places (their residuals are full vectors) */
+    for (size_t a = 1; a + 1 < o->n; a += FIT_BLOCK) {
+        const size_t m = o->n - 1 - a < FIT_BLOCK ? o->n - 1 - a : FIT_BLOCK;
+        if ((st = project_block(o, v, a, m, o->s, lo, hi, NULL))) return st;
+    }
+    fit_feet_range(o, v, 0, &lo, &hi);
+    o->s[0] = lo;
+    o->s[o->n - 1] = hi;
+    return EL_OK;
+}
+
+int fit_feet_distances(fit_objective *o, const double *x, double *dist, double *foot, int *side)
+{
+    double v[2][FIT_NP], lo, hi;
+    int st = fit_map_eval(&o->map, x, v, NULL);
+    if (st) return st;
+    fit_feet_range(o, v, 0, &lo, &hi);
+    double *sig = o->s_next;
+    for (size_t i = 0; i < o->n; i++) sig[i] = fmin(fmax(o->s[i], lo), hi);
+    for (size_t a = 0; a < o->n; a += FIT_BLOCK) {
+        const size_t m = o->n - a < FIT_BLOCK ? o->n - a : FIT_BLOCK;
+        if ((st = project_block(o, v, a, m, sig, lo, hi, dist))) return st;
+    }
+    for (size_t i = 0; i < o->n; i++) {
+        foot[i] = fabs(sig[i]);
+        if (side) side[i] = o->map.ncurves == 2 && sig[i] >= 0.0;
+    }
+    return EL_OK;
+}
+
+/* Squared distance of P to segment A-B, and the fraction t of its nearest point. */
+static double segment_distance2(const double *A, const double *B, const double *P, double *t)
+{
+    const double ux = B[0] - A[0], uy = B[1] - A[1], l2 = ux * ux + uy * uy;
+    const double px = P[0] - A[0], py = P[1] - A[1];
+    double tt = l2 > 0.0 ? (px * ux + py * uy) / l2 : 0.0;
+    tt = fmin(fmax(tt, 0.0), 1.0);
+    const double dx = px - tt * ux, dy = py - tt * uy;
+    *t = tt;
+    return dx * dx + dy * dy;
+}
+
+/* The signed distance (+ = left of A -> B) of P to the point of segment A-B at t. */
+static double segment_signed(const double *A, const double *B, const double *P, double t)
+{
+    const double ux = B[0] - A[0], uy = B[1] - A[1];
+    const double dx = P[0] - A[0] - t * ux, dy = P[1] - A[1] - t * uy;
+    const double d = sqrt(dx * dx + dy * dy);
+    return ux * dy - uy * dx < 0.0 ? -d : d;
+}
+
+/*
+ * The polygon of nv vertices V (normalised), data point first + step j <-> vertex j:
+ * each point's distance to the polygon near its own vertex, its foot as arc length
+ * h (segment + t) from vertex 0. A walk from the two segments at the vertex, on while
+ * the nearest point of the last segment is its far end, finds a local minimum d; the
+ * polygon has kinks, so every segment within arc length 2 sqrt 2 d + h of it is then
+ * searched too (one segment each way where d kappa <= 0.1): where the polygon's
+ * direction varies within pi/2 (fit_nearest_everywhere checks) no point farther along it
+ * can be nearer than d (|V(s) - V(s')| >= cos(pi/4) |s - s'|), so this is the nearest
+ * point; elsewhere that search goes on.
+ */
+void fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, double h,
+                           size_t first, long step, double *dist, double *foot)
+{
+    const long last = (long)nv - 2;
+    /* the polygon's largest curvature, sin(turning) / h at its vertices: a point with
+     * d kappa <= 0.1 has its distance growing away from the walk's foot, so one more
+     * segment each way is enough (as for the smooth curve) */
+    double kmax = 0.0;
+    for (size_t j = 1; j + 1 < nv; j++) {
+        const double ax = V[2 * j] - V[2 * j - 2], ay = V[2 * j + 1] - V[2 * j - 1];
+        const double bx = V[2 * j + 2] - V[2 * j], by = V[2 * j + 3] - V[2 * j + 1];
+        kmax = fmax(kmax, fabs(ax * by - ay * bx) / (h * h * h));
+    }
+    for (size_t j = 0; j < nv; j++) {
+        const size_t g = (size_t)((long)first + step * (long)j);
+        double P[2];
+        point(o, g, P);
+        long best = -1;
+        double bd = HUGE_VAL, bt = 0.0;
+        /* start where the point projects along the polygon's direction at its vertex:
+         * on dense polygons (spacing far below the noise) the foot lies many segments
+         * from the point's own vertex */
+        long j0 = (long)j;
+        {
+            const long a = (long)j < last ? (long)j : last;
+            const double ux = V[2 * a + 2] - V[2 * a], uy = V[2 * a + 3] - V[2 * a + 1];
+            const double along = ((P[0] - V[2 * j]) * ux + (P[1] - V[2 * j + 1]) * uy) / (h * h);
+            if (fabs(along) > 1.0 && isfinite(along)) {
+                const double jj = (double)j + along;
+                j0 = jj < 0.0 ? 0 : jj > (double)(last + 1) ? last + 1 : (long)floor(jj);
+            }
+        }
+        for (int dir = -1; dir <= 1; dir += 2) {
+            for (long seg = dir < 0 ? j0 - 1 : j0; seg >= 0 && seg <= last; seg += dir) {
+                double t;
+                const double d2 = segment_distance2(V + 2 * seg, V + 2 * seg + 2, P, &t);
+                if (d2 < bd) { bd = d2; best = seg; bt = t; }
+                if (dir < 0 ? t > 0.0 : t < 1.0) break;     /* not at the far end: stop */
+            }
+        }
+        if (best < 0) { dist[g] = 0.0; foot[g] = 0.0; continue; }
+        const double d = sqrt(bd);
+        const long reach = kmax * d <= 0.1 ? 1 : (long)ceil(2.0 * 1.4142135623730951 * d / h) + 1;
+        const long lo = best - reach < 0 ? 0 : best - reach, hi = best + reach > last ? last : best + reach;
+        for (long seg = lo; seg <= hi; seg++) {
+            double t;
+            const double d2 = segment_distance2(V + 2 * seg, V + 2 * seg + 2, P, &t);
+            if (d2 < bd) { bd = d2; best = seg; bt = t; }
+        }
+        dist[g] = segment_signed(V + 2 * best, V + 2 * best + 2, P, bt);
+        foot[g] = h * ((double)best + bt);
+    }
+}
+
+/* ------------------------------------------------------------ the nearest point */
+
+/*
+ * The feet above are the nearest points near each point's place along the data (the
+ * fit's own foot, or its vertex). A curve that passes close to itself (a loop) can come
+ * nearer to a point somewhere else; the distance to the curve is the nearest of all.
+ * The curves are cut into pieces of arc length l (about twice the median distance, at
+ * least 1/128 of the length); every point of a piece lies within l/2 of the midpoint of
+ * its end points (triangle inequality), so a piece can hold a nearer point only if that
+ * disk comes within the point's distance. The disks go into a hash grid of cells of at
+ * least their diameter; each point visits the cells its distance reaches, and only the
+ * pieces away from its own foot whose disk is near enough are searched (Newton's method
+ * from the piece's middle; the polygon's segments). O(n) work for ordinary data.
+ */
+enum { MAX_PIECES = 128, HASH_BITS = 11 };
+
+typedef struct piece {
+    double cx, cy, r, s0, s1;   /* disk, arc range on its curve */
+    int curve;
+} piece;
+
+typedef struct grid {
+    double cell;
+    int head[1 << HASH_BITS];
+    int next[8 * MAX_PIECES], item[8 * MAX_PIECES];
+    int used;
+} grid;
+
+static unsigned cell_hash(long ix, long iy)
+{
+    const unsigned long h = (unsigned long)ix * 73856093UL ^ (unsigned long)iy * 19349663UL;
+    return (unsigned)(h & ((1UL << HASH_BITS) - 1));
+}
+
+static void grid_add(grid *g, const piece *p, int id)
+{
+    const long x0 = (long)floor((p->cx - p->r) / g->cell), x1 = (long)floor((p->cx + p->r) / g->cell);
+    const long y0 = (long)floor((p->cy - p->r) / g->cell), y1 = (long)floor((p->cy + p->r) / g->cell);
+    for (long ix = x0; ix <= x1; ix++)
+        for (long iy = y0; iy <= y1; iy++) {
+            if (g->used >= 8 * MAX_PIECES) return;
+            const unsigned h = cell_hash(ix, iy);
+            g->item[g->used] = id;
+            g->next[g->used] = g->head[h];
+            g->head[h] = g->used++;
+        }
+}
+
+/* A point of a curve at arc length s (smooth; discrete: along the polygon V). */
+static int curve_point(const fit_objective *o, const double *v, const double *V, size_t nv, double s,
+                       double *xy)
+{
+    if (o->map.model == FIT_SMOOTH) {
+        el_smooth_params p;
+        int st = fit_to_smooth(v, &p);
+        return st ? st : el_smooth_eval(&p, 1, &s, xy, NULL, NULL);
+    }
+    const double h = v[2];
+    size_t j = (size_t)fmin(fmax(floor(s / h), 0.0), (double)nv - 2.0);
+    const double t = fmin(fmax(s / h - (double)j, 0.0), 1.0);
+    xy[0] = V[2 * j] + t * (V[2 * j + 2] - V[2 * j]);
+    xy[1] = V[2 * j + 1] + t * (V[2 * j + 3] - V[2 * j + 1]);
+    return EL_OK;
+}
+
+/* The nearest point of piece p to P: signed distance (+ left of the curve's own
+ * direction) and arc length. */
+static int piece_nearest(const fit_objective *o, const double *v, const double *V, size_t nv,
+                         const piece *p, const double *P, double *d, double *s)
+{
+    if (o->map.model == FIT_DISCRETE) {
+        const double h = v[2];
+        const long j0 = (long)floor(p->s0 / h), j1 = (long)ceil(p->s1 / h);
+        double best = HUGE_VAL, bt = 0.0;
+        long bj = -1;
+        for (long j = j0 < 0 ? 0 : j0; j < j1 && j <= (long)nv - 2; j++) {
+            double t;
+            const double d2 = segment_distance2(V + 2 * j, V + 2 * j + 2, P, &t);
+            if (d2 < best) { best = d2; bj = j; bt = t; }
+        }
+        if (bj < 0) { *d = HUGE_VAL; return EL_OK; }
+        *d = segment_signed(V + 2 * bj, V + 2 * bj + 2, P, bt);
+        *s = h * ((double)bj + bt);
+        return EL_OK;
+    }
+    el_smooth_params sp;
+    int st = fit_to_smooth(v, &sp);
+    if (st) return st;
+    double u = 0.5 * (p->s0 + p->s1), xy[2], th = 0.0, ka = 0.0;
+    for (int it = 0; it < NEWTON_MAX; it++) {
+        if ((st = el_smooth_eval(&sp, 1, &u, xy, &th, &ka))) return st;
+        const double dx = xy[0] - P[0], dy = xy[1] - P[1], c = cos(th), sn = sin(th);
+        const double step = fit_foot_step(c * dx + sn * dy, c * dy - sn * dx, ka, v[6]);
+        const double un = fmin(fmax(u + step, 0.0), v[6]);
+        if (fabs(un - u) <= 1e-14 * (v[6] + 1e-300)) { u = un; break; }
+        u = un;
+    }
+    if ((st = el_smooth_eval(&sp, 1, &u, xy, &th, NULL))) return st;
+    const double dx = P[0] - xy[0], dy = P[1] - xy[1];
+    *d = cos(th) * dy - sin(th) * dx < 0.0 ? -hypot(dx, dy) : hypot(dx, dy);
+    *s = u;
+    return EL_OK;
+}
+
+/* Point i against piece p: searched when its disk comes nearer than the distance so far
+ * and it is away from the point's own foot (whose neighbourhood was searched). */
+typedef struct own_foot {
+    int curve;
+    double s, d;
+} own_foot;
+
+static int consider(const fit_objective *o, double v[2][FIT_NP], const double *V[2], const size_t nv[2],
+                    const piece *p, const double *P, const own_foot *f0, size_t i, double *dist,
+                    double *foot, int *side)
+{
+    const double dx = P[0] - p->cx, dy = P[1] - p->cy, reach = fabs(dist[i]) + p->r;
+    if (dx * dx + dy * dy >= reach * reach) return EL_OK;      /* the disk is farther than dist */
+    /* pieces already searched: smooth, those at the foot (the distance is convex there);
+     * the polygon, those inside the stretch fit_polygon_distances searched */
+    const double near = o->map.model == FIT_SMOOTH ? 2.0 * p->r : 2.0 * 1.4142135623730951 * f0->d;
+    if (p->curve == f0->curve && (o->map.model == FIT_SMOOTH
+                                  ? p->s1 >= f0->s - near && p->s0 <= f0->s + near
+                                  : p->s0 >= f0->s - near && p->s1 <= f0->s + near)) return EL_OK;
+    double d = HUGE_VAL, s = 0.0;
+    int st = piece_nearest(o, v[p->curve], V[p->curve], nv[p->curve], p, P, &d, &s);
+    if (!st && fabs(d) < fabs(dist[i])) {
+        dist[i] = d; foot[i] = s;
+        if (side) side[i] = p->curve;
+    }
+    return st;
+}
+
+/*
+ * When the search can be left out: a single curve whose tangent turns by at most pi/2
+ * (so |gamma(s) - gamma(s')| >= cos(pi/4) |s - s'|: a point nearer than d to P lies
+ * within arc length 2 sqrt 2 d of the foot found) and, smooth, whose curvature is at
+ * most 0.1 / d for the largest distance d (the distance is convex along the curve over
+ * that stretch: the foot found is the nearest point); the polygon's feet were searched
+ * over that stretch (fit_polygon_distances).
+ */
+static int feet_are_nearest(const fit_objective *o, const double *v, const double *V, size_t nv,
+                            const double *dist)
+{
+    if (o->map.ncurves != 1) return 0;
+    double dmax = 0.0, tmin = HUGE_VAL, tmax = -HUGE_VAL, kmax = 0.0, prev = 0.0;
+    for (size_t i = 0; i < o->n; i++) dmax = fmax(dmax, fabs(dist[i]));
+    if (o->map.model == FIT_SMOOTH) {
+        enum { M = 129 };
+        double s[M], th[M], ka[M];
+        el_smooth_params p;
+        for (int j = 0; j < M; j++) s[j] = v[6] * j / (M - 1);
+        if (fit_to_smooth(v, &p) || el_smooth_eval(&p, M, s, NULL, th, ka)) return 0;
+        for (int j = 0; j < M; j++) {
+            tmin = fmin(tmin, th[j]); tmax = fmax(tmax, th[j]);
+            kmax = fmax(kmax, fabs(ka[j]));
+        }
+        /* between samples |kappa| may exceed its sampled maximum by one step's worth */
+        kmax *= 1.5;
+    } else {
+        for (size_t j = 0; j + 1 < nv; j++) {
+            double t = atan2(V[2 * j + 3] - V[2 * j + 1], V[2 * j + 2] - V[2 * j]);
+            if (j > 0) {
+                t += 2.0 * M_PI * nearbyint((prev - t) / (2.0 * M_PI));
+                kmax = fmax(kmax, 2.0 / v[2] * fabs(tan(0.5 * (t - prev))));
+            }
+            prev = t;
+            tmin = fmin(tmin, t); tmax = fmax(tmax, t);
+        }
+    }
+    return tmax - tmin <= 0.5 * M_PI && (o->map.model == FIT_DISCRETE || kmax * dmax <= 0.1);
+}
+
+int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const double *V[2],
+                           const size_t nv[2], double *dist, double *foot, int *side)
+{
+    const int nc = o->map.ncurves;
+    const size_t n = o->n;
+    if (feet_are_nearest(o, v[0], V[0], nv[0], dist)) return EL_OK;
+    double len[2] = {0.0, 0.0}, dmed = 0.0;
+    for (int c = 0; c < nc; c++)
+        len[c] = o->map.model == FIT_SMOOTH ? v[c][6] : v[c][2] * (double)(nv[c] - 1);
+    {   /* a typical distance: the mean |d| of a spread sample */
+        const size_t step = n > 1024 ? n / 1024 : 1;
+        size_t cnt = 0;
+        for (size_t i = 0; i < n; i += step, cnt++) dmed += fabs(dist[i]);
+        dmed /= (double)cnt;
+    }
+    double dmax = 0.0;
+    for (size_t i = 0; i < n; i++) dmax = fmax(dmax, fabs(dist[i]));
+    piece *pc = malloc(sizeof(piece) * 2 * MAX_PIECES);
+    grid *g = malloc(sizeof(grid));
+    unsigned *stamp = malloc(sizeof(unsigned) * 2 * MAX_PIECES);
+    unsigned char *near = malloc(2 * MAX_PIECES);
+    if (!pc || !g || !stamp || !near) { free(pc); free(g); free(stamp); free(near); return EL_ENOMEM; }
+    int np = 0, st = EL_OK, first[2] = {0, 0}, count[2] = {0, 0};
+    double rmax = 0.0;
+    for (int c = 0; c < nc && !st; c++) {
+        first[c] = np;
+        if (!(len[c] > 0.0)) continue;
+        const int m = (int)fmin(fmax(ceil(len[c] / (2.0 * dmed + 1e-300)), 8.0), (double)MAX_PIECES);
+        double a[2], b[2];
+        if ((st = curve_point(o, v[c], V[c], nv[c], 0.0, a))) break;
+        for (int j = 0; j < m; j++) {
+            const double s0 = len[c] * j / m, s1 = len[c] * (j + 1) / m;
+            if ((st = curve_point(o, v[c], V[c], nv[c], s1, b))) break;
+            piece *p = &pc[np++];
+            p->cx = 0.5 * (a[0] + b[0]); p->cy = 0.5 * (a[1] + b[1]);
+            p->r = 0.5 * (s1 - s0); p->s0 = s0; p->s1 = s1; p->curve = c;
+            rmax = fmax(rmax, p->r);
+            a[0] = b[0]; a[1] = b[1];
+        }
+        count[c] = np - first[c];
+    }
+    if (!st && np > 0) {
+        memset(g->head, -1, sizeof g->head);
+        g->used = 0;
+        /* cells of the reach of the pair test below: a piece then looks at 3 x 3 cells */
+        g->cell = fmax(fmax(2.0 * rmax, 2.0 * dmed), 2.0 * dmax + 2.0 * rmax);
+        for (int j = 0; j < np; j++) { grid_add(g, &pc[j], j); stamp[j] = 0; near[j] = 0; }
+        /* pieces that another part of the curve, beyond the stretch each foot's own search
+         * covered, comes within 2 dmax of: only points whose foot is there can have a
+         * nearer point elsewhere */
+        const unsigned ptag = 0x80000000u;
+        for (int j = 0; j < np; j++) {
+            const piece *p = &pc[j];
+            const double R = 2.0 * dmax + p->r + rmax;
+            const long x0 = (long)floor((p->cx - R) / g->cell), x1 = (long)floor((p->cx + R) / g->cell);
+            const long y0 = (long)floor((p->cy - R) / g->cell), y1 = (long)floor((p->cy + R) / g->cell);
+            const int all = (double)(x1 - x0 + 1) * (double)(y1 - y0 + 1) > 4.0 * np;
+            for (long ix = x0; ix <= x1 && !near[j]; ix++)
+                for (long iy = y0; iy <= y1 && !near[j]; iy++)
+                    for (int e = all ? 0 : g->head[cell_hash(ix, iy)]; all ? e < np : e >= 0; e = all ? e + 1 : g->next[e]) {
+                        const int q = all ? e : g->item[e];
+                        const piece *pq = &pc[q];
+                        if (stamp[q] == (ptag | (unsigned)j)) continue;
+                        stamp[q] = ptag | (unsigned)j;
+                        /* a part of the curve within the stretch a foot's own search covers */
+                        if (pq->curve == p->curve &&
+                            fabs(0.5 * (pq->s0 + pq->s1 - p->s0 - p->s1)) <= 2.0 * 1.4142135623730951 * dmax + 4.0 * rmax)
+                            continue;
+                        const double dx = pq->cx - p->cx, dy = pq->cy - p->cy, reach = 2.0 * dmax + p->r + pq->r;
+                        if (dx * dx + dy * dy < reach * reach) { near[j] = near[q] = 1; break; }
+                    }
+        }
+        for (int j = 0; j < np; j++) stamp[j] = 0;
+        for (size_t i = 0; i < n && !st; i++) {
+            double P[2];
+            point(o, i, P);
+            const double d0 = fabs(dist[i]);
+            if (!(d0 > 0.0)) continue;
+            {   /* the foot's piece and its neighbours: near another part? */
+                const int c = side ? side[i] : 0;
+                if (count[c] == 0) continue;
+                const int jf = first[c] + (int)fmin(fmax(floor(foot[i] / (2.0 * pc[first[c]].r)), 0.0), count[c] - 1.0);
+                const int lo = jf > first[c] ? jf - 1 : jf, hi = jf + 1 < first[c] + count[c] ? jf + 1 : jf;
+                int any = 0;
+                for (int j = lo; j <= hi; j++) any |= near[j];
+                if (!any) continue;
+            }
+            const long x0 = (long)floor((P[0] - d0) / g->cell), x1 = (long)floor((P[0] + d0) / g->cell);
+            const long y0 = (long)floor((P[1] - d0) / g->cell), y1 = (long)floor((P[1] + d0) / g->cell);
+            const unsigned tag = (unsigned)i + 1u;
+            const own_foot f0 = {side ? side[i] : 0, foot[i], d0};
+            if ((double)(x1 - x0 + 1) * (double)(y1 - y0 + 1) > 4.0 * np) {   /* far: every piece */
+                for (int j = 0; j < np && !st; j++) st = consider(o, v, V, nv, &pc[j], P, &f0, i, dist, foot, side);
+                continue;
+            }
+            for (long ix = x0; ix <= x1 && !st; ix++)
+                for (long iy = y0; iy <= y1 && !st; iy++)
+                    for (int e = g->head[cell_hash(ix, iy)]; e >= 0 && !st; e = g->next[e]) {
+                        const int j = g->item[e];
+                        if (stamp[j] == tag) continue;
+                        stamp[j] = tag;
+                        st = consider(o, v, V, nv, &pc[j], P, &f0, i, dist, foot, side);
+                    }
+        }
+    }
+    free(near);
+    free(pc); free(g); free(stamp);
+    return st;
+}

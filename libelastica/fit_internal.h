@@ -1,0 +1,225 @@
+/*
+ * How the fitting code's files meet (not installed):
+ *   fit.c            the public entry points: options, normalisation, initial guesses,
+ *                    which solver runs, results and distances in input units;
+ *   fit_model.c      the optimiser's parameters: internal parameter vectors, the maps
+ *                    variables -> parameters with their derivatives, model points and
+ *                    Jacobians block by block, the curve's end states (point, tangent,
+ *                    curvature) with derivatives;
+ *   fit_objective.c  residuals and the normal equations J^T J, J^T r (streamed in blocks,
+ *                    never storing J), foot points and point-to-curve distances;
+ *   fit_lm.c         Levenberg-Marquardt and its first-order certificate;
+ *   fit_ipopt.c      bounds and constraints through Ipopt (and the fallback);
+ *   fit_keyline.c    the keyline as one problem: two curves sharing a G2 joint.
+ * Everything is in normalised coordinates: points P = (xy - c) / sc.
+ */
+#ifndef EL_FIT_INTERNAL_H
+#define EL_FIT_INTERNAL_H
+
+#include "internal.h"
+
+enum {
+    FIT_NP = 7,        /* parameters of one curve */
+    FIT_MAXX = 9,      /* optimiser variables at most (the keyline's joint problem) */
+    FIT_BLOCK = 256,   /* samples per block of the streamed Jacobian */
+    FIT_NCON = 6,      /* constraint rows at most */
+    FIT_KNOTS = 65,    /* samples of the tangential motion of a curve (fit_objective.c) */
+    /* scratch for a walk over a discrete curve: a block's points, Jacobian rows and the
+     * walk's own buffer (fit_discrete_rows: 2 (m + 1) (FIT_NP + 1) doubles) */
+    FIT_WORK = 2 * FIT_BLOCK * (FIT_NP + 1) + 2 * (FIT_BLOCK + 1) * (FIT_NP + 1)
+};
+
+enum fit_model { FIT_DISCRETE = 0, FIT_SMOOTH = 1 };
+
+/* |(x, y)| for normalised coordinates (O(1): no overflow to guard against, unlike
+ * hypot, which costs several times as much in the per-point loops). */
+static inline double fit_norm(double x, double y) { return sqrt(x * x + y * y); }
+
+/*
+ * Internal parameters of one curve (normalised coordinates):
+ *   discrete v = (x0, y0, h, phi, z, q, k) with -1 < k < 0 allowed: the curve of
+ *     |k| and q + 2K(|k|) (sn(u + 2K) = -sn u, dn(u + 2K) = dn u);
+ *   smooth   v = (x0, y0, phi, w, k, q, L) with w = sqrt(mu) of either sign: w < 0 is
+ *     the curve (|w|, -k, -q) (sn odd, dn even), so k sn u is unchanged.
+ * Both continuations let a Gauss-Newton step cross k = 0 or w = 0 instead of
+ * stalling at a bound; fit_canonical() maps results back to the model's form.
+ */
+int fit_to_discrete(const double *v, el_discrete_params *p, double *dq_dk);
+int fit_to_smooth(const double *v, el_smooth_params *p);
+int fit_canonical(int model, double *v, int may_shift);
+
+/* Points (xy, 2m) and, when jac != NULL, d gamma / d v (jac[(2i+c)*7 + j]) of the
+ * smooth model at m arc lengths s. */
+int fit_smooth_rows(const double *v, size_t m, const double *s, double *xy, double *jac);
+
+/* The discrete vertices walked in blocks: the walk carries the next vertex and its
+ * derivative, so vertex i of a block has the same d gamma_i / d v as one call over
+ * the whole curve (tested). */
+typedef struct fit_walk {
+    size_t next;                 /* index of the next vertex */
+    double xy[2], d[2][FIT_NP];  /* that vertex and its derivative */
+} fit_walk;
+void fit_walk_start(const double *v, fit_walk *w);
+int fit_discrete_rows(const double *v, fit_walk *w, size_t m, double *xy, double *jac,
+                      double *tmp /* 2 (m+1) (7+1) */);
+
+/* State of a curve at arc length s (smooth; s = 0 or L) or at a vertex end
+ * (discrete, at_end = 0: vertex 0, 1: vertex n-1 of n): point, tangent angle, curvature
+ * and their derivatives with respect to v. The discrete curvature at an end is that of
+ * the curve extended by one vertex, kappa_0 = (2/h) tan((Theta_0 - Theta_{-1})/2). */
+typedef struct fit_end {
+    double xy[2], theta, kappa;
+    double dxy[2][FIT_NP], dtheta[FIT_NP], dkappa[FIT_NP];
+} fit_end;
+int fit_end_state(int model, const double *v, size_t n, int at_end, fit_end *e,
+                  double *tmp /* discrete end: fit_walk block buffers, FIT_WORK doubles */);
+
+/* The map from the optimiser's variables x to the curves' internal parameters. */
+typedef struct fit_map {
+    int model, ncurves, nx;
+    /* one curve: x_j = v[idx[j]] * scale[idx[j]] for the free parameters, the others at
+     * fixed[]; with shape, (k, q, z or w) go through the shape variables (fit_model.c) */
+    int idx[FIT_NP], shape;
+    double scale[FIT_NP], fixed[FIT_NP];
+    /* keyline (ncurves = 2): x = (xJ, yJ, psi, a1, b1, c1, a2, b2, c2), fit_keyline.c;
+     * discrete: scale[c] = (vertices of side c) - 1 */
+    double fixed_h;              /* discrete keyline: h of both sides held (> 0), else 0 */
+} fit_map;
+
+/* v[c] (c < ncurves) and M = d v / d x (may be NULL): curve c's 7 x nx block, row-major,
+ * at M + c * FIT_NP * FIT_MAXX. */
+int fit_map_eval(const fit_map *m, const double *x, double v[2][FIT_NP], double *M);
+/* The largest step fraction alpha <= 1 that keeps x + alpha d in the model's domain. */
+double fit_map_step_limit(const fit_map *m, const double *x, const double *d);
+/* x for the parameters v[0] (one curve). */
+void fit_map_inverse(const fit_map *m, const double *v, double *x);
+int fit_keyline_map(const fit_map *m, const double *x, double v[2][FIT_NP], double *M);
+
+/* ------------------------------------------------------------------ objective */
+
+enum fit_kind {
+    FIT_PAIRED,        /* point i <-> vertex i (discrete) or gamma(t_i L) (smooth) */
+    FIT_ORTHOGONAL,    /* smooth: distance to the curve; ends: gamma(0) - P_0, gamma(L) - P_n-1 */
+    FIT_KEYLINE        /* two curves sharing the joint: paired (discrete), orthogonal (smooth) */
+};
+
+typedef struct fit_objective {
+    int kind;
+    fit_map map;
+    size_t n;
+    const double *xy;            /* the caller's points, input units */
+    double cx, cy, sc;           /* normalisation P = (xy - c) / sc */
+    const double *t;             /* FIT_PAIRED smooth: fractions t_i */
+    double *s, *s_next;          /* orthogonal: foot parameters (n each); keyline smooth:
+                                    sigma < 0 on the first curve at -sigma, >= 0 the second */
+    int exact_feet;              /* project the feet at every evaluation (Ipopt) */
+    /* the feet's motion under a parameter step, from the last accepted point (base):
+     * b(s) = (d gamma(s) / d v)^T T(s) sampled at FIT_KNOTS arc lengths of each curve */
+    double last_move;            /* the largest foot move of the last evaluation */
+    int have_base;
+    double base_v[2][FIT_NP], last_v[2][FIT_NP];
+    double knot_b[2][FIT_KNOTS][FIT_NP];
+    size_t split;                /* discrete keyline: the data index of the joint */
+    double *work;                /* block buffers */
+    /* a quadratic penalty (rho/2) |c(x)|^2 of constraint rows added to f (fit.c's start
+     * of a constrained fit); pen NULL: none. pen_tmp: FIT_WORK doubles */
+    const struct fit_constraints *pen;
+    double pen_rho, *pen_tmp;
+} fit_objective;
+
+/* f = (1/2n) sum r^2; when want_normal also g = J^T r / n and H = J^T J / n (lower
+ * triangle filled, row-major nx x nx) in the variables x. */
+typedef struct fit_value {
+    double f;
+    double g[FIT_MAXX], H[FIT_MAXX * FIT_MAXX];
+} fit_value;
+
+int fit_objective_init(fit_objective *o, int kind, const fit_map *map, const double *xy, size_t n,
+                       double cx, double cy, double sc, const double *t);
+/* The smooth feet are variables of the objective (orthogonal, keyline); a paired smooth
+ * objective keeps the arrays for the distances only. */
+static inline int fit_has_feet(const fit_objective *o) { return o->s && o->kind != FIT_PAIRED; }
+void fit_objective_free(fit_objective *o);
+int fit_objective_eval(fit_objective *o, const double *x, int want_normal, fit_value *out);
+/* After an accepted step of a lazy-foot evaluation (want_normal at the accepted x): the
+ * feet move to the updated ones computed there. */
+void fit_objective_accept(fit_objective *o);
+/* Feet to the nearest points (Newton, from the current feet) at x. */
+int fit_objective_project(fit_objective *o, const double *x);
+
+/* Newton's step of a foot, bounded (fit_feet.c): t, e the tangential and normal parts
+ * of gamma - P, kappa the curvature, range the curve's extent. */
+double fit_foot_step(double t, double e, double kappa, double range);
+/* The feet's range [lo, hi]: the curve itself, or extended (the objective's). */
+void fit_feet_range(const fit_objective *o, double v[2][FIT_NP], int extended, double *lo, double *hi);
+/* Signed distances (left of the curve positive), feet (arc length; for the keyline from
+ * the joint) and sides (keyline; may be NULL) of every point at x, normalised units:
+ * the feet projected from o->s (which keeps the objective's feet). */
+int fit_feet_distances(fit_objective *o, const double *x, double *dist, double *foot, int *side);
+/* The same for the polygon of nv vertices V (normalised) of one discrete curve of
+ * segment h, vertex j <-> point first + step j. */
+void fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, double h,
+                           size_t first, long step, double *dist, double *foot);
+
+/* The distances above, corrected where the curve comes nearer elsewhere (a loop
+ * passing close to itself): dist, foot, side (may be NULL) in and out; for the discrete
+ * model V[c] are the vertices (nv[c]) of curve c. The signs are each curve's own. */
+int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const double *V[2],
+                           const size_t nv[2], double *dist, double *foot, int *side);
+
+/* Normalisation shared with guess.c: centroid and rms radius of the points;
+ * EL_ESINGULAR (all equal), EL_EDOM (a spread below ~1e-292 or beyond double's range). */
+int fit_normalisation(const double *xy, size_t n, double *cx, double *cy, double *sc);
+/* A parameter j of a model in input units <-> normalised (the smooth mu <-> w). */
+double fit_norm_param(int model, int j, double v, double cx, double cy, double sc);
+double fit_denorm_param(int model, int j, double v, double cx, double cy, double sc);
+/* The rms noise of the points from second differences, in normalised units. */
+double fit_noise_rms(const double *xy, size_t n, double sc);
+
+/* ------------------------------------------------------------------ solvers */
+
+typedef struct fit_solution {
+    double x[FIT_MAXX];
+    fit_value val;               /* at x, with normal equations */
+    int iters;
+    int certified;               /* the first-order condition holds */
+} fit_solution;
+
+/* f at which a fit is exact to rounding: rms residual 1e-11 of the rms radius. */
+#define FIT_EXACT_F 5e-23
+
+/* Levenberg-Marquardt from x; fills sol (best point seen). EL_OK, or an error of the
+ * objective at the start point. */
+int fit_lm(fit_objective *o, const double *x, int max_iter, fit_solution *sol);
+/* The first-order condition: g^T H^-1 g <= tol 2f (fit_lm.c), or f at rounding level. */
+int fit_first_order(const fit_value *v, int nx, double tol);
+
+/* Constraints (normalised units), the bits of enum el_fit_constraint. */
+typedef struct fit_constraints {
+    int mask;
+    double start_xy[2], end_xy[2], start_theta, end_theta, start_kappa, end_kappa;
+} fit_constraints;
+
+typedef struct fit_ipopt_out {
+    int ipopt_status, iters;
+    double f;
+} fit_ipopt_out;
+/* A fit that only starts another (the keyline's side fits): el_fit_discrete /
+ * el_fit_smooth by Levenberg-Marquardt alone, no Ipopt fallback (an uncertified result
+ * is EL_EMAXITER / EL_ENOCONV with its parameters). v: the parameters in input units
+ * (the model's Jacobian order); *iters += the iterations; foot: as el_fit_smooth's. */
+int fit_start(int model, const double *xy, size_t n, const el_fit_options *opt, double *v, int *mode,
+              int *iters, double *foot);
+
+/* Ipopt from x (in place; the best point seen on return) with bounds xl, xu (+-HUGE_VAL:
+ * none) and constraints con (NULL: none). */
+int fit_ipopt(fit_objective *o, const double *xl, const double *xu, const fit_constraints *con,
+              const el_fit_options *opt, double *x, fit_ipopt_out *out, double *tmp);
+/* Constraint values c (rows in the order of the mask bits; the start point is held
+ * parameters, the length and k ranges bounds, so neither has rows), their kinds which[]
+ * and, when J != NULL, their derivative in x (rows x nx); returns the row count, -1
+ * when the curve cannot be evaluated. tmp: FIT_WORK doubles. */
+int fit_constraint_rows(const fit_objective *o, const fit_constraints *con, const double *x,
+                        double *c, double *J, int *which, double *tmp);
+
+#endif

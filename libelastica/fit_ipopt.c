@@ -1,0 +1,295 @@
+/*
+ * Bounds and constraints through Ipopt's C interface (fit_internal.h): what the
+ * Levenberg-Marquardt path cannot do, and its fallback when a result is not certified.
+ *
+ *   minimise f(x) = (1/2n) sum r^2   subject to  xl <= x <= xu,  c(x) = 0,
+ *
+ * f and its gradient J^T r / n from fit_objective_eval (exact feet at every evaluation,
+ * so f is a function of x alone); the constraints (end point, tangent directions,
+ * curvatures at the ends) with their analytic Jacobians from fit_end_state; the Hessian
+ * of the Lagrangian by differences of its analytic gradient (cb_h). A tangent direction alpha is the constraint
+ * sin(theta - alpha) = 0, smooth everywhere; the reversed direction (cos < 0) is caught
+ * by the caller's check of the result.
+ *
+ * Options: no output, and no ipopt.opt: option_file_name "" makes Ipopt 3.11 read no
+ * options file (checked: a file in the working directory with print_level 12 and
+ * linear_solver ma57 changes nothing, tests/c/test_fit.c). Constraints are met to 1e-12
+ * (normalised coordinates) at every accepted stop: constr_viol_tol and its acceptable twin.
+ */
+#include "fit_internal.h"
+#include <string.h>
+#include <pthread.h>
+#include <IpStdCInterface.h>
+
+/* Debian's MUMPS (dmumps_seq, Ipopt's only linear solver here) keeps Fortran module
+ * state and crashes when two solves run at once (checked: 4 threads abort in
+ * DMUMPS_LOAD_INIT). The one piece of process-wide state in the library is therefore
+ * this lock: concurrent fits are safe, their Ipopt solves run one at a time (the common
+ * path, fit_lm.c, takes no lock). */
+static pthread_mutex_t ipopt_lock = PTHREAD_MUTEX_INITIALIZER;
+
+typedef struct ipctx {
+    fit_objective *o;
+    const fit_constraints *con;
+    int nx, m, limited_memory;
+    double xkey[FIT_MAXX];
+    int have;
+    fit_value val;
+    double best_f, best_x[FIT_MAXX];
+    int iters;
+    double *tmp;
+} ipctx;
+
+static int ensure(ipctx *c, const double *x)
+{
+    if (c->have && !memcmp(c->xkey, x, sizeof(double) * (size_t)c->nx)) return EL_OK;
+    c->have = 0;
+    int st = fit_objective_eval(c->o, x, 1, &c->val);
+    if (st) return st;
+    memcpy(c->xkey, x, sizeof(double) * (size_t)c->nx);
+    c->have = 1;
+    if (c->val.f < c->best_f) {
+        c->best_f = c->val.f;
+        memcpy(c->best_x, x, sizeof(double) * (size_t)c->nx);
+    }
+    return EL_OK;
+}
+
+/* Constraint rows at x: values (and d/dx when J). */
+int fit_constraint_rows(const fit_objective *o, const fit_constraints *con, const double *x,
+                        double *c, double *J, int *which, double *tmp)
+{
+    const int nx = o->map.nx;
+    double v[2][FIT_NP], M[FIT_NP * FIT_MAXX];
+    if (fit_map_eval(&o->map, x, v, M)) return -1;
+    fit_end e[2];
+    int have[2] = {0, 0}, rows = 0;
+    for (int bit = 0; bit < 6; bit++) {
+        const int flag = 1 << bit;
+        if (!(con->mask & flag) || flag == EL_CONSTRAIN_START_POINT) continue;
+        const int at_end = flag == EL_CONSTRAIN_END_POINT || flag == EL_CONSTRAIN_END_TANGENT ||
+                           flag == EL_CONSTRAIN_END_CURVATURE;
+        if (!have[at_end]) {
+            if (fit_end_state(o->map.model, v[0], o->n, at_end, &e[at_end], tmp)) return -1;
+            have[at_end] = 1;
+        }
+        const fit_end *E = &e[at_end];
+        double dc[2][FIT_NP];
+        int nr = 1;
+        if (flag == EL_CONSTRAIN_END_POINT) {
+            nr = 2;
+            c[rows] = E->xy[0] - con->end_xy[0];
+            c[rows + 1] = E->xy[1] - con->end_xy[1];
+            memcpy(dc, E->dxy, sizeof dc);
+        } else if (flag == EL_CONSTRAIN_START_TANGENT || flag == EL_CONSTRAIN_END_TANGENT) {
+            const double alpha = at_end ? con->end_theta : con->start_theta;
+            c[rows] = sin(E->theta - alpha);
+            for (int j = 0; j < FIT_NP; j++) dc[0][j] = cos(E->theta - alpha) * E->dtheta[j];
+        } else {
+            /* kappa - kappa* divided by what makes kappa vanish on the straight line,
+             * 2 |k w| (smooth, kappa = 2 k w cn u) or 2 |k z| / h (discrete, kappa =
+             * (2/h) tan(D/2) with the turning D ~ 2 k z cn u): the same zeros, but kappa = 0
+             * at an end is then cn u = 0 (an inflection) with a gradient that stays away
+             * from zero, instead of k, w or z -> 0, where the constraint's gradient vanishes
+             * and Ipopt slid to a straight line (measured: examples/sample_2d.csv, discrete,
+             * end curvature 0: rms 7.7 on the line, 0.27 at the inflection) */
+            const double ks = at_end ? con->end_kappa : con->start_kappa;
+            const int smooth = o->map.model == FIT_SMOOTH;
+            const int ik = smooth ? 4 : 6, iw = smooth ? 3 : 4;
+            const double ka = fmax(fabs(v[0][ik]), 1e-12), wa = fmax(fabs(v[0][iw]), 1e-12);
+            const double den = 2.0 * ka * wa / (smooth ? 1.0 : v[0][2]);
+            c[rows] = (E->kappa - ks) / den;
+            for (int j = 0; j < FIT_NP; j++) dc[0][j] = E->dkappa[j] / den;
+            dc[0][ik] -= c[rows] * copysign(1.0, v[0][ik]) / ka;
+            dc[0][iw] -= c[rows] * copysign(1.0, v[0][iw]) / wa;
+            if (!smooth) dc[0][2] += c[rows] / v[0][2];
+        }
+        for (int r = 0; r < nr; r++) {
+            if (which) which[rows + r] = flag;
+            if (J)
+                for (int j = 0; j < nx; j++) {
+                    double t = 0.0;
+                    for (int a = 0; a < FIT_NP; a++) t += dc[r][a] * M[a * nx + j];
+                    J[(rows + r) * nx + j] = t;
+                }
+        }
+        rows += nr;
+    }
+    return rows;
+}
+
+static Bool cb_f(Index n, Number *x, Bool new_x, Number *obj, UserDataPtr ud)
+{
+    (void)n; (void)new_x;
+    ipctx *c = ud;
+    if (ensure(c, x)) return FALSE;
+    *obj = c->val.f;
+    return TRUE;
+}
+
+static Bool cb_grad(Index n, Number *x, Bool new_x, Number *g, UserDataPtr ud)
+{
+    (void)n; (void)new_x;
+    ipctx *c = ud;
+    if (ensure(c, x)) return FALSE;
+    memcpy(g, c->val.g, sizeof(double) * (size_t)c->nx);
+    return TRUE;
+}
+
+static Bool cb_g(Index n, Number *x, Bool new_x, Index m, Number *g, UserDataPtr ud)
+{
+    (void)n; (void)new_x;
+    ipctx *c = ud;
+    if (m == 0) return TRUE;
+    return fit_constraint_rows(c->o, c->con, x, g, NULL, NULL, c->tmp) == m;
+}
+
+static Bool cb_jac_g(Index n, Number *x, Bool new_x, Index m, Index nele, Index *iRow, Index *jCol,
+                     Number *values, UserDataPtr ud)
+{
+    (void)new_x; (void)nele;
+    ipctx *c = ud;
+    if (!values) {
+        Index e = 0;
+        for (Index r = 0; r < m; r++)
+            for (Index j = 0; j < n; j++) { iRow[e] = r; jCol[e] = j; e++; }
+        return TRUE;
+    }
+    double cv[FIT_NCON];
+    return fit_constraint_rows(c->o, c->con, x, cv, values, NULL, c->tmp) == m;
+}
+
+/*
+ * Hessian of the Lagrangian, lower triangle. With constraints, or for orthogonal
+ * distance: forward differences of its analytic gradient obj_factor J^T r / n +
+ * sum lambda_r grad c_r (nx more evaluations). The Gauss-Newton matrix J^T J leaves
+ * out the residuals' curvature (for orthogonal distance the feet's coupling), and
+ * constrained solves then crept along the constraints for hundreds of iterations
+ * (measured: a sketched S with a start tangent, 200+ iterations without reaching 1e-12;
+ * with this Hessian 28). Bounds alone on paired residuals: J^T J / n (positive
+ * semidefinite; the start is the best point of the active bounds, fit.c).
+ */
+static int lagrangian_gradient(ipctx *c, const double *x, double of, const double *lambda, int m,
+                               double *gl)
+{
+    fit_value v;
+    if (fit_objective_eval(c->o, x, 1, &v)) return 0;
+    for (int i = 0; i < c->nx; i++) gl[i] = of * v.g[i];
+    if (m > 0) {
+        double cv[FIT_NCON], J[FIT_NCON * FIT_MAXX];
+        if (fit_constraint_rows(c->o, c->con, x, cv, J, NULL, c->tmp) != m) return 0;
+        for (int r = 0; r < m; r++)
+            for (int i = 0; i < c->nx; i++) gl[i] += lambda[r] * J[r * c->nx + i];
+    }
+    return 1;
+}
+
+static Bool cb_h(Index n, Number *x, Bool new_x, Number obj_factor, Index m, Number *lambda,
+                 Bool new_lambda, Index nele, Index *iRow, Index *jCol, Number *values,
+                 UserDataPtr ud)
+{
+    (void)new_x; (void)new_lambda; (void)nele;
+    ipctx *c = ud;
+    if (!values) {
+        Index e = 0;
+        for (Index r = 0; r < n; r++)
+            for (Index q = 0; q <= r; q++) { iRow[e] = r; jCol[e] = q; e++; }
+        return TRUE;
+    }
+    const int exact = fit_has_feet(c->o) || m > 0;
+    double g0[FIT_MAXX], g1[FIT_MAXX], xp[FIT_MAXX], H[FIT_MAXX * FIT_MAXX] = {0};
+    if (exact) {
+        if (!lagrangian_gradient(c, x, obj_factor, lambda, m, g0)) return FALSE;
+        for (Index j = 0; j < n; j++) {
+            const double h = 1e-7 * (1.0 + fabs(x[j]));
+            memcpy(xp, x, sizeof(double) * (size_t)n);
+            xp[j] = x[j] + h;
+            if (!lagrangian_gradient(c, xp, obj_factor, lambda, m, g1)) return FALSE;
+            for (Index i = 0; i < n; i++) H[j * n + i] = (g1[i] - g0[i]) / h;
+        }
+        c->have = 0;        /* the objective's cache was overwritten */
+    }
+    if (!exact) {
+        if (ensure(c, x)) return FALSE;
+        for (Index i = 0; i < n * n; i++) H[i] += obj_factor * c->val.H[i];
+    }
+    Index e = 0;
+    for (Index r = 0; r < n; r++)
+        for (Index q = 0; q <= r; q++) values[e++] = 0.5 * (H[r * n + q] + H[q * n + r]);
+    return TRUE;
+}
+
+static Bool cb_iter(Index alg_mod, Index iter, Number obj, Number inf_pr, Number inf_du, Number mu,
+                    Number d_norm, Number reg, Number alpha_du, Number alpha_pr, Index ls,
+                    UserDataPtr ud)
+{
+    (void)alg_mod; (void)obj; (void)inf_pr; (void)inf_du; (void)mu; (void)d_norm; (void)reg;
+    (void)alpha_du; (void)alpha_pr; (void)ls;
+    ((ipctx *)ud)->iters = iter;
+    return TRUE;
+}
+
+int fit_ipopt(fit_objective *o, const double *xl, const double *xu, const fit_constraints *con,
+              const el_fit_options *opt, double *x, fit_ipopt_out *out, double *tmp)
+{
+    const int nx = o->map.nx;
+    ipctx c;
+    memset(&c, 0, sizeof c);
+    c.o = o; c.con = con; c.nx = nx; c.tmp = tmp;
+    c.best_f = HUGE_VAL;
+    double cv[FIT_NCON];
+    c.m = con ? fit_constraint_rows(o, con, x, cv, NULL, NULL, tmp) : 0;
+    if (c.m < 0) return EL_EDOM;
+    const int saved = o->exact_feet;
+    o->exact_feet = 1;
+    double L[FIT_MAXX], U[FIT_MAXX], gl[FIT_NCON] = {0}, gu[FIT_NCON] = {0};
+    for (int j = 0; j < nx; j++) {
+        L[j] = isfinite(xl[j]) ? xl[j] : -1e20;
+        U[j] = isfinite(xu[j]) ? xu[j] : 1e20;
+        x[j] = fmin(fmax(x[j], xl[j]), xu[j]);
+    }
+    if (pthread_mutex_lock(&ipopt_lock)) { o->exact_feet = saved; return EL_EINTERNAL; }
+    IpoptProblem pr = CreateIpoptProblem(nx, L, U, c.m, gl, gu, c.m * nx, nx * (nx + 1) / 2, 0,
+                                         cb_f, cb_g, cb_grad, cb_jac_g, cb_h);
+    int ok = pr != NULL;
+    ok = ok && AddIpoptStrOption(pr, "option_file_name", "")
+            && AddIpoptIntOption(pr, "print_level", 0)
+            && AddIpoptStrOption(pr, "sb", "yes")
+            && AddIpoptNumOption(pr, "tol", opt->tol)
+            && AddIpoptIntOption(pr, "max_iter", opt->max_iter)
+            && AddIpoptNumOption(pr, "bound_relax_factor", 0.0)
+            && AddIpoptNumOption(pr, "constr_viol_tol", 1e-12)
+            && AddIpoptNumOption(pr, "acceptable_constr_viol_tol", 1e-12)
+            && AddIpoptStrOption(pr, "mu_strategy", "monotone")
+            && AddIpoptNumOption(pr, "mu_init", 1e-9)
+            /* noisy data: Gauss-Newton converges linearly on a non-zero residual; stop
+             * once the objective stalls (relative change < 1e-10 twice) */
+            && (opt->limited_memory
+                || (AddIpoptNumOption(pr, "acceptable_tol", 1e-3)
+                    && AddIpoptNumOption(pr, "acceptable_obj_change_tol", 1e-10)
+                    && AddIpoptIntOption(pr, "acceptable_iter", 2)))
+            && AddIpoptStrOption(pr, "hessian_approximation",
+                                 opt->limited_memory ? "limited-memory" : "exact")
+            && SetIntermediateCallback(pr, cb_iter);
+    enum ApplicationReturnStatus rs = Internal_Error;
+    double obj = HUGE_VAL;
+    if (ok) rs = IpoptSolve(pr, x, NULL, &obj, NULL, NULL, NULL, &c);
+    if (pr) FreeIpoptProblem(pr);
+    pthread_mutex_unlock(&ipopt_lock);
+    out->ipopt_status = (int)rs;
+    out->iters = c.iters;
+    /* the final point when feasible and no worse than the best seen, which is only
+     * guaranteed feasible without constraints */
+    fit_value fin;
+    const int fin_ok = el__all_finite(x, (size_t)nx) == EL_OK && fit_objective_eval(o, x, 0, &fin) == EL_OK;
+    if (!fin_ok || (c.m == 0 && c.best_f < fin.f)) {
+        if (!isfinite(c.best_f)) { o->exact_feet = saved; return ok ? EL_ENOCONV : EL_EINTERNAL; }
+        memcpy(x, c.best_x, sizeof(double) * (size_t)nx);
+        out->f = c.best_f;
+    } else {
+        out->f = fin.f;
+    }
+    if (fit_has_feet(o)) fit_objective_project(o, x);
+    o->exact_feet = saved;
+    return ok ? EL_OK : EL_EINTERNAL;
+}

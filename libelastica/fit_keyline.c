@@ -1,0 +1,503 @@
+/*
+ * A keyline as one problem (seed 000 §5.4; header el_fit_keyline_smooth): two
+ * inflectional elasticae that start at a common joint J, `first` towards point 0 and
+ * `second` towards point n-1, with opposite tangents and zero curvature there (G2).
+ *
+ * The joint conditions are built into the variables instead of being constraints:
+ * zero curvature at the start is u(0) = K(|k|) (kappa = 2 k w cn u; discrete: the
+ * potential symmetric about vertex 0, a_1 = a_{-1}, so the turning angle there is 0),
+ * and then the start tangent is known in closed form, theta(0) = phi + 2 asin k
+ * (discrete: Theta_0 = phi + a_0 + a_1, a_0 = asin k). So with psi the tangent of
+ * `second` at J (the first one's is psi + pi) the variables are
+ *   smooth   x = (xJ, yJ, psi, w1, k1, L1, w2, k2, L2),   phi_c = psi_c - 2 asin k_c,
+ *   discrete x = (xJ, yJ, psi, (m1-1) h1, (m1-1) z1, k1, (m2-1) h2, (m2-1) z2, k2),
+ *            phi_c = psi_c - a_0 - a_1,
+ * q_c = K(|k_c|) for both, and every point of the solution space is a G2 keyline: the
+ * joint conditions hold to rounding, and Levenberg-Marquardt (fit_lm.c) solves the
+ * problem without Ipopt. Smooth: each point's foot lies on either curve (fit_objective.c)
+ * so J moves freely along the data; discrete: the split index moves while the joint fit
+ * improves.
+ *
+ * The start: each side fitted alone from the caller's split, the zeros of their
+ * curvature nearest the split (the curves extended past it) estimate the inflection,
+ * and the joint curve starts there with each side's shape (k clipped to |k| <= 0.95,
+ * its sign from the side's sense of turning after the zero).
+ */
+#include "fit_internal.h"
+#include <stdlib.h>
+#include <string.h>
+#include <float.h>
+#include <gsl/gsl_sf_ellint.h>
+
+/* K(|k|) and dK(|k|)/dk (odd in k) for |k| < 1. */
+static int quarter_period(double k, double *K, double *dK)
+{
+    const double a = fabs(k);
+    if (!(a < 1.0)) return EL_EDOM;
+    gsl_sf_result Kr, Er;
+    if (gsl_sf_ellint_Kcomp_e(a, GSL_PREC_DOUBLE, &Kr) || gsl_sf_ellint_Ecomp_e(a, GSL_PREC_DOUBLE, &Er))
+        return EL_EDOM;
+    *K = Kr.val;
+    const double d = a < 1e-4 ? M_PI * a / 4.0 : (Er.val - (1.0 - a * a) * Kr.val) / (a * (1.0 - a * a));
+    *dK = copysign(d, k);
+    return EL_OK;
+}
+
+/* The full 9 joint variables from x (the free ones) and the fixed h. */
+static void full_vars(const fit_map *m, const double *x, double *f)
+{
+    if (m->nx == 9) { memcpy(f, x, sizeof(double) * 9); return; }
+    /* discrete with both h held: x = (xJ, yJ, psi, Z1, k1, Z2, k2) */
+    f[0] = x[0]; f[1] = x[1]; f[2] = x[2];
+    f[3] = m->fixed_h * m->scale[0]; f[4] = x[3]; f[5] = x[4];
+    f[6] = m->fixed_h * m->scale[1]; f[7] = x[5]; f[8] = x[6];
+}
+
+int fit_keyline_map(const fit_map *m, const double *x, double v[2][FIT_NP], double *M)
+{
+    double f[9], Mf[2][FIT_NP][9];
+    full_vars(m, x, f);
+    memset(Mf, 0, sizeof Mf);
+    for (int c = 0; c < 2; c++) {
+        const double *y = f + 3 + 3 * c, psi = f[2] + (c == 0 ? M_PI : 0.0);
+        double K, dK;
+        int st;
+        v[c][0] = f[0]; v[c][1] = f[1];
+        Mf[c][0][0] = 1.0; Mf[c][1][1] = 1.0;
+        if (m->model == FIT_SMOOTH) {
+            const double w = y[0], k = y[1];
+            if ((st = quarter_period(k, &K, &dK))) return st;
+            /* v = (x0, y0, phi, w, k, q, L) */
+            v[c][2] = psi - 2.0 * asin(k);
+            v[c][3] = w; v[c][4] = k; v[c][5] = K; v[c][6] = y[2];
+            Mf[c][2][2] = 1.0; Mf[c][2][4 + 3 * c] = -2.0 / sqrt(1.0 - k * k);
+            Mf[c][3][3 + 3 * c] = 1.0;
+            Mf[c][4][4 + 3 * c] = 1.0;
+            Mf[c][5][4 + 3 * c] = dK;
+            Mf[c][6][5 + 3 * c] = 1.0;
+        } else {
+            const double s = m->scale[c], h = y[0] / s, z = y[1] / s, k = y[2];
+            if ((st = quarter_period(k, &K, &dK))) return st;
+            el_jacobi J, Jk;
+            if (el_jacobi_eval(K + z, fabs(k), &J, NULL, &Jk)) return EL_EDOM;
+            /* a_1 = atan2(k sn, dn) at u_1 = K + z: da/du = k cn, da/dk|u = dn sn + |k| (dn sn_k - sn dn_k) */
+            const double a1 = atan2(k * J.sn, J.dn), a_u = k * J.cn;
+            const double a_k = J.dn * J.sn + fabs(k) * (J.dn * Jk.sn - J.sn * Jk.dn);
+            /* v = (x0, y0, h, phi, z, q, k) */
+            v[c][2] = h;
+            v[c][3] = psi - asin(k) - a1;
+            v[c][4] = z; v[c][5] = K; v[c][6] = k;
+            Mf[c][2][3 + 3 * c] = 1.0 / s;
+            Mf[c][3][2] = 1.0;
+            Mf[c][3][4 + 3 * c] = -a_u / s;
+            Mf[c][3][5 + 3 * c] = -1.0 / sqrt(1.0 - k * k) - a_k - a_u * dK;
+            Mf[c][4][4 + 3 * c] = 1.0 / s;
+            Mf[c][5][5 + 3 * c] = dK;
+            Mf[c][6][5 + 3 * c] = 1.0;
+        }
+        if (el__all_finite(v[c], FIT_NP)) return EL_EDOM;
+    }
+    if (M) {
+        /* the free columns: all 9, or without the two h */
+        static const int cols9[9] = {0, 1, 2, 3, 4, 5, 6, 7, 8}, cols7[7] = {0, 1, 2, 4, 5, 7, 8};
+        const int *cols = m->nx == 9 ? cols9 : cols7;
+        for (int c = 0; c < 2; c++)
+            for (int r = 0; r < FIT_NP; r++)
+                for (int j = 0; j < m->nx; j++) M[c * FIT_NP * FIT_MAXX + r * m->nx + j] = Mf[c][r][cols[j]];
+    }
+    return EL_OK;
+}
+
+/* ------------------------------------------------------------ the start */
+
+/* One side fitted alone (normalised, internal parameters), and the zero of its
+ * curvature nearest its start: arc length (smooth) or vertex position (discrete) `at`,
+ * the point and tangent there, and the sign of the curvature just beyond it (away from
+ * the split). */
+typedef struct side_fit {
+    double v[FIT_NP];
+    double at, xy[2], theta, after;
+    int has_zero;
+} side_fit;
+
+static int side_zero(int model, side_fit *sf, size_t nv)
+{
+    const double *v = sf->v;
+    const int ik = model == FIT_DISCRETE ? 6 : 4;
+    const double k = v[ik], step = model == FIT_DISCRETE ? v[4] : v[3], q = v[5];
+    double K, dK;
+    sf->has_zero = 0;
+    if (quarter_period(k, &K, &dK) || step == 0.0) return EL_OK;
+    /* u(at) = K (2m + 1), the m that brings `at` nearest 0 */
+    const double m = nearbyint((q - K) / (2.0 * K) + 0.0);
+    double best = HUGE_VAL, mm = 0.0;
+    for (int d = -1; d <= 1; d++) {
+        const double a = (K * (2.0 * (m + d) + 1.0) - q) / step;
+        if (fabs(a) < fabs(best)) { best = a; mm = m + d; }
+    }
+    /* beyond the zero kappa ~ -k (-1)^m w^2 (s - at) (cn(u* + d) = -sn dn d, sn(u*) =
+     * (-1)^m); the same for the discrete turning angle a_{j+1} - a_{j-1} = 2 z k cn u_j */
+    const double parity = fmod(fabs(mm), 2.0) == 0.0 ? 1.0 : -1.0;
+    sf->after = -copysign(1.0, k) * parity;
+    sf->at = best;
+    if (model == FIT_SMOOTH) {
+        el_smooth_params p;
+        double th;
+        if (fit_to_smooth(v, &p) || el_smooth_eval(&p, 1, &best, sf->xy, &th, NULL)) return EL_OK;
+        sf->theta = th;
+    } else {
+        /* the vertex nearest the zero, inside the side, and its segment's direction */
+        const double j = fmin(fmax(nearbyint(best), 0.0), (double)nv - 2.0);
+        el_discrete_params p;
+        if (fit_to_discrete(v, &p, NULL)) return EL_OK;
+        const size_t m2 = (size_t)j + 2;
+        double *xy = malloc(sizeof(double) * 2 * m2);
+        if (!xy) return EL_ENOMEM;
+        if (el_discrete_eval(&p, m2, xy)) { free(xy); return EL_OK; }
+        sf->xy[0] = xy[2 * (m2 - 2)]; sf->xy[1] = xy[2 * (m2 - 2) + 1];
+        sf->theta = atan2(xy[2 * m2 - 1] - sf->xy[1], xy[2 * m2 - 2] - sf->xy[0]);
+        free(xy);
+    }
+    sf->has_zero = 1;
+    return EL_OK;
+}
+
+/* ------------------------------------------------------------ the driver */
+
+typedef struct side_out {
+    double params[FIT_NP], initial[FIT_NP], rms, max_error;
+} side_out;
+
+typedef struct keyline_out {
+    side_out side[2];
+    int iterations, ipopt_status, used_ipopt, status, mode;
+    size_t joint;
+} keyline_out;
+
+static int keyline_options(const el_fit_options *o, int model)
+{
+    if (!(o->tol > 0.0) || !isfinite(o->tol) || o->max_iter < 1 || o->max_candidates < 1) return EL_EINVAL;
+    if (o->use_initial || o->constraints || o->limited_memory) return EL_EINVAL;
+    if (o->param_mode < EL_PARAM_AUTO || o->param_mode > EL_PARAM_CHORD) return EL_EINVAL;
+    if (o->distance != EL_DISTANCE_AUTO &&
+        o->distance != (model == FIT_SMOOTH ? EL_DISTANCE_ORTHOGONAL : EL_DISTANCE_PAIRED)) return EL_EINVAL;
+    for (int j = 0; j < FIT_NP; j++) {
+        if (isfinite(o->lower[j]) || isfinite(o->upper[j]) || isnan(o->lower[j]) || isnan(o->upper[j]))
+            return EL_EINVAL;
+        if (o->fixed[j] && !(model == FIT_DISCRETE && j == 2 && o->value[j] > 0.0 && isfinite(o->value[j])))
+            return EL_EINVAL;
+    }
+    return EL_OK;
+}
+
+/* Fit one side alone: the points split, split -/+ 1, ..., in input units. */
+static int fit_side(int model, const double *xy, size_t n, size_t split, int dir, const el_fit_options *o,
+                    double cx, double cy, double sc, side_fit *sf, double *foot, int *mode, int *iters)
+{
+    const size_t m = dir < 0 ? split + 1 : n - split;
+    double *pts = malloc(sizeof(double) * 2 * m);
+    if (!pts) return EL_ENOMEM;
+    for (size_t j = 0; j < m; j++) {
+        const size_t g = dir < 0 ? split - j : split + j;
+        pts[2 * j] = xy[2 * g]; pts[2 * j + 1] = xy[2 * g + 1];
+    }
+    /* a start for the joint fit: 40 iterations of Levenberg-Marquardt at most, no Ipopt
+     * (a side alone is part of a period, its parameters a flat valley that took up to
+     * 200 iterations and then Ipopt; measured on 14 generated scans, both models: the
+     * same joint fit to 1e-8 in k, 3x faster on the slowest) */
+    el_fit_options so = *o;
+    so.max_iter = so.max_iter < 40 ? so.max_iter : 40;
+    double p[FIT_NP];
+    int st = fit_start(model, pts, m, &so, p, mode, iters, foot);
+    free(pts);
+    if (st != EL_OK && st != EL_ENOCONV && st != EL_EMAXITER) return st;
+    for (int j = 0; j < FIT_NP; j++) sf->v[j] = fit_norm_param(model, j, p[j], cx, cy, sc);
+    if (foot)
+        for (size_t j = 0; j < m; j++) foot[j] /= sc;
+    return side_zero(model, sf, m);
+}
+
+/* The joint variables from the two side fits. */
+static void joint_start(int model, const side_fit sf[2], const fit_map *map, const double *P_split,
+                        double *x, double *L)
+{
+    double jx = 0.0, jy = 0.0, tx = 0.0, ty = 0.0;
+    int cnt = 0;
+    for (int c = 0; c < 2; c++) {
+        if (!sf[c].has_zero) continue;
+        jx += sf[c].xy[0]; jy += sf[c].xy[1];
+        /* the second curve's direction at J; the first one's is opposite */
+        const double th = sf[c].theta + (c == 0 ? M_PI : 0.0);
+        tx += cos(th); ty += sin(th);
+        cnt++;
+    }
+    if (cnt == 0) {
+        jx = P_split[0]; jy = P_split[1];
+        tx = cos(sf[1].v[model == FIT_DISCRETE ? 3 : 2]); ty = sin(sf[1].v[model == FIT_DISCRETE ? 3 : 2]);
+        cnt = 1;
+    }
+    x[0] = jx / cnt; x[1] = jy / cnt; x[2] = atan2(ty, tx);
+    for (int c = 0; c < 2; c++) {
+        const double *v = sf[c].v;
+        const double after = sf[c].has_zero ? sf[c].after : 1.0;
+        const int ik = model == FIT_DISCRETE ? 6 : 4;
+        const double k = -after * fmin(fabs(v[ik]), 0.95);
+        double *y = x + 3 + 3 * c;
+        if (model == FIT_SMOOTH) {
+            const double Lc = v[6] - (sf[c].has_zero ? sf[c].at : 0.0);
+            y[0] = fabs(v[3]); y[1] = k; y[2] = Lc > 0.1 * v[6] ? Lc : v[6];
+            L[c] = y[2];
+        } else {
+            y[0] = v[2] * map->scale[c]; y[1] = fabs(v[4]) * map->scale[c]; y[2] = k;
+        }
+    }
+}
+
+static int keyline_run(int model, const double *xy, size_t n, size_t split, const el_fit_options *opt,
+                       keyline_out *out, double *dist, double *foot, int *side)
+{
+    el_fit_options o;
+    if (opt) o = *opt; else el_fit_options_defaults(&o);
+    if (!xy || n < 7 || split < 3 || split + 4 > n || el__all_finite(xy, 2 * n)) return EL_EINVAL;
+    int st = keyline_options(&o, model);
+    if (st) return st;
+    el__gsl_quiet();
+    double cx, cy, sc;
+    if ((st = fit_normalisation(xy, n, &cx, &cy, &sc))) return st;
+    const double fixed_h = model == FIT_DISCRETE && o.fixed[2] ? o.value[2] / sc : 0.0;
+
+    double *feetA = NULL, *feetB = NULL, *tmp = NULL;
+    fit_objective ob;
+    memset(&ob, 0, sizeof ob);
+    st = EL_ENOMEM;
+    if (!(tmp = malloc(sizeof(double) * FIT_WORK))) goto done;
+    if (model == FIT_SMOOTH &&
+        (!(feetA = malloc(sizeof(double) * (split + 1))) || !(feetB = malloc(sizeof(double) * (n - split)))))
+        goto done;
+    side_fit sf[2];
+    int iters = 0, mode = EL_PARAM_UNIFORM;
+    if ((st = fit_side(model, xy, n, split, -1, &o, cx, cy, sc, &sf[0], feetA, &mode, &iters)) ||
+        (st = fit_side(model, xy, n, split, 1, &o, cx, cy, sc, &sf[1], feetB, &mode, &iters)))
+        goto done;
+
+    /* the discrete split: the mean of the two sides' zeros, as a data index */
+    size_t i0 = split;
+    if (model == FIT_DISCRETE) {
+        double e = 0.0;
+        int cnt = 0;
+        if (sf[0].has_zero) { e += (double)split - sf[0].at; cnt++; }
+        if (sf[1].has_zero) { e += (double)split + sf[1].at; cnt++; }
+        if (cnt) i0 = (size_t)fmin(fmax(nearbyint(e / cnt), 3.0), (double)(n - 4));
+    }
+    fit_map map;
+    memset(&map, 0, sizeof map);
+    map.model = model; map.ncurves = 2;
+    map.nx = fixed_h > 0.0 ? 7 : 9;
+    map.fixed_h = fixed_h;
+    map.scale[0] = model == FIT_DISCRETE ? (double)i0 : 1.0;
+    map.scale[1] = model == FIT_DISCRETE ? (double)(n - 1 - i0) : 1.0;
+    if ((st = fit_objective_init(&ob, FIT_KEYLINE, &map, xy, n, cx, cy, sc, NULL))) goto done;
+    ob.split = i0;
+
+    double xf[9], x[FIT_MAXX], L[2] = {0.0, 0.0}, P_split[2];
+    P_split[0] = (xy[2 * split] - cx) / sc; P_split[1] = (xy[2 * split + 1] - cy) / sc;
+    joint_start(model, sf, &map, P_split, xf, L);
+    if (map.nx == 9) memcpy(x, xf, sizeof xf);
+    else { x[0] = xf[0]; x[1] = xf[1]; x[2] = xf[2]; x[3] = xf[4]; x[4] = xf[5]; x[5] = xf[7]; x[6] = xf[8]; }
+    double v0[2][FIT_NP];
+    if ((st = fit_map_eval(&map, x, v0, NULL))) goto done;
+    if (model == FIT_SMOOTH) {   /* the first feet: each side fit's, from its zero */
+        for (size_t j = 0; j <= split; j++) ob.s[split - j] = -(feetA[j] - (sf[0].has_zero ? sf[0].at : 0.0));
+        for (size_t j = 1; j < n - split; j++) ob.s[split + j] = feetB[j] - (sf[1].has_zero ? sf[1].at : 0.0);
+        ob.s[0] = -L[0];
+        ob.s[n - 1] = L[1];
+    }
+
+    fit_solution sol;
+    if ((st = fit_lm(&ob, x, o.max_iter, &sol))) goto done;
+    int certified = sol.certified, used_ipopt = 0, ipopt_status = 0;
+    iters += sol.iters;
+    if (model == FIT_DISCRETE) {
+        /* move the split while the joint fit improves */
+        for (int dir = -1; dir <= 1; dir += 2) {
+            for (;;) {
+                const size_t trial = ob.split + (size_t)dir;   /* wraps for dir = -1 at 0: caught below */
+                if (dir < 0 ? ob.split <= 3 : ob.split + 5 > n) break;
+                const size_t keep = ob.split;
+                ob.split = trial;
+                fit_solution s2;
+                if (fit_lm(&ob, sol.x, o.max_iter, &s2) != EL_OK || !(s2.val.f < sol.val.f)) {
+                    ob.split = keep;
+                    break;
+                }
+                iters += s2.iters;
+                sol = s2;
+                certified = s2.certified;
+            }
+        }
+    }
+    if (!certified) {
+        fit_ipopt_out io;
+        double xl[FIT_MAXX], xu[FIT_MAXX], xi[FIT_MAXX];
+        for (int j = 0; j < FIT_MAXX; j++) { xl[j] = -HUGE_VAL; xu[j] = HUGE_VAL; }
+        memcpy(xi, sol.x, sizeof xi);
+        if (fit_ipopt(&ob, xl, xu, NULL, &o, xi, &io, tmp) == EL_OK) {
+            used_ipopt = 1;
+            ipopt_status = io.ipopt_status;
+            iters += io.iters;
+            if (io.f <= sol.val.f) memcpy(sol.x, xi, sizeof xi);
+            certified = io.ipopt_status == 0 || io.ipopt_status == 1;
+        }
+    }
+    out->status = certified ? EL_OK : sol.iters >= o.max_iter ? EL_EMAXITER : EL_ENOCONV;
+
+    /* results: distances (+ = left of the keyline from point 0 to point n-1), sides */
+    double v[2][FIT_NP];
+    if ((st = fit_map_eval(&map, sol.x, v, NULL))) goto done;
+    double *d = dist, *fs = foot, *buf = NULL;
+    int *sd = side, *ibuf = NULL;
+    if (!d || !fs || !sd) {
+        buf = malloc(sizeof(double) * 2 * n);
+        ibuf = malloc(sizeof(int) * n);
+        if (!buf || !ibuf) { free(buf); free(ibuf); st = EL_ENOMEM; goto done; }
+        if (!d) d = buf;
+        if (!fs) fs = buf + n;
+        if (!sd) sd = ibuf;
+    }
+    const size_t js = ob.split;
+    const size_t nv[2] = {js + 1, n - js};
+    double *V[2] = {NULL, NULL};
+    if (model == FIT_SMOOTH) {
+        st = fit_feet_distances(&ob, sol.x, d, fs, sd);
+    } else {
+        for (int c = 0; c < 2 && !st; c++) {
+            if (!(V[c] = malloc(sizeof(double) * 2 * nv[c]))) { st = EL_ENOMEM; break; }
+            fit_walk w;
+            fit_walk_start(v[c], &w);
+            for (size_t a = 0; a < nv[c] && !st; a += FIT_BLOCK) {
+                const size_t m = nv[c] - a < FIT_BLOCK ? nv[c] - a : FIT_BLOCK;
+                st = fit_discrete_rows(v[c], &w, m, V[c] + 2 * a, NULL, tmp);
+            }
+        }
+        if (!st) {
+            fit_polygon_distances(&ob, V[0], nv[0], v[0][2], js, -1, d, fs);
+            for (size_t i = 0; i <= js; i++) sd[i] = 0;
+            /* the joint's point: its distance to the nearer side */
+            const double d0 = d[js], f0 = fs[js];
+            fit_polygon_distances(&ob, V[1], nv[1], v[1][2], js, 1, d, fs);
+            for (size_t i = js; i < n; i++) sd[i] = 1;
+            if (fabs(d0) <= fabs(d[js])) { d[js] = d0; fs[js] = f0; sd[js] = 0; }
+        }
+    }
+    if (!st) {
+        const double *Vc[2] = {V[0], V[1]};
+        st = fit_nearest_everywhere(&ob, v, Vc, nv, d, fs, sd);
+    }
+    free(V[0]);
+    free(V[1]);
+    /* signs: + left of the keyline run from point 0 to point n-1 (the first curve runs
+     * the other way) */
+    for (size_t i = 0; i < n && !st; i++)
+        if (sd[i] == 0) d[i] = -d[i];
+    if (!st) {
+        double s2[2] = {0.0, 0.0}, mx[2] = {0.0, 0.0};
+        size_t cnt[2] = {0, 0};
+        for (size_t i = 0; i < n; i++) {
+            const int c = sd[i];
+            s2[c] += d[i] * d[i];
+            mx[c] = fmax(mx[c], fabs(d[i]));
+            cnt[c]++;
+            if (model == FIT_DISCRETE && i == js) {     /* the joint belongs to both sides */
+                s2[1] += d[i] * d[i]; mx[1] = fmax(mx[1], fabs(d[i])); cnt[1]++;
+            }
+            d[i] *= sc;
+            fs[i] *= sc;
+        }
+        for (int c = 0; c < 2; c++) {
+            side_out *so = &out->side[c];
+            so->rms = cnt[c] ? sc * sqrt(s2[c] / (double)cnt[c]) : 0.0;
+            so->max_error = sc * mx[c];
+            double vc[FIT_NP], vi[FIT_NP];
+            memcpy(vc, v[c], sizeof vc);
+            memcpy(vi, v0[c], sizeof vi);
+            fit_canonical(model, vc, 1);
+            fit_canonical(model, vi, 1);
+            for (int j = 0; j < FIT_NP; j++) {
+                so->params[j] = fit_denorm_param(model, j, vc[j], cx, cy, sc);
+                so->initial[j] = fit_denorm_param(model, j, vi[j], cx, cy, sc);
+            }
+            if (model == FIT_DISCRETE && fixed_h > 0.0) so->params[2] = o.value[2];
+            int valid = !el__all_finite(so->params, FIT_NP) && !el__all_finite(so->initial, FIT_NP);
+            valid = valid && so->params[model == FIT_DISCRETE ? 2 : 3] >= DBL_MIN;
+            if (!valid) out->status = EL_EDOM;
+        }
+    }
+    free(buf);
+    free(ibuf);
+    if (st) goto done;
+    out->iterations = iters;
+    out->ipopt_status = ipopt_status;
+    out->used_ipopt = used_ipopt;
+    out->mode = mode;
+    out->joint = js;
+    st = out->status;
+done:
+    fit_objective_free(&ob);
+    free(feetA);
+    free(feetB);
+    free(tmp);
+    return st;
+}
+
+static void publish_smooth(const side_out *s, const keyline_out *k, el_fit_smooth_result *r)
+{
+    const double *p = s->params, *q = s->initial;
+    r->params = (el_smooth_params){p[0], p[1], p[2], p[3], p[4], p[5], p[6]};
+    r->initial = (el_smooth_params){q[0], q[1], q[2], q[3], q[4], q[5], q[6]};
+    r->rms = s->rms; r->max_error = s->max_error;
+    r->iterations = k->iterations; r->candidates = 1;
+    r->ipopt_status = k->ipopt_status; r->status = k->status; r->used_ipopt = k->used_ipopt;
+    r->distance = EL_DISTANCE_ORTHOGONAL; r->constraint = 0; r->param_mode = k->mode;
+}
+
+static void publish_discrete(const side_out *s, const keyline_out *k, el_fit_discrete_result *r)
+{
+    const double *p = s->params, *q = s->initial;
+    r->params = (el_discrete_params){p[0], p[1], p[2], p[3], p[4], p[5], p[6]};
+    r->initial = (el_discrete_params){q[0], q[1], q[2], q[3], q[4], q[5], q[6]};
+    r->rms = s->rms; r->max_error = s->max_error;
+    r->iterations = k->iterations; r->candidates = 1;
+    r->ipopt_status = k->ipopt_status; r->status = k->status; r->used_ipopt = k->used_ipopt;
+    r->distance = EL_DISTANCE_PAIRED; r->constraint = 0;
+}
+
+int el_fit_keyline_smooth(const double *xy, size_t n, size_t split, const el_fit_options *opt,
+                          el_fit_smooth_result *first, el_fit_smooth_result *second,
+                          double *distances, double *foot_s, int *side)
+{
+    if (!first || !second) return EL_EINVAL;
+    keyline_out k;
+    memset(&k, 0, sizeof k);
+    k.status = -1;
+    int st = keyline_run(FIT_SMOOTH, xy, n, split, opt, &k, distances, foot_s, side);
+    if (k.status == -1 || (st != k.status)) return st;
+    publish_smooth(&k.side[0], &k, first);
+    publish_smooth(&k.side[1], &k, second);
+    return k.status;
+}
+
+int el_fit_keyline_discrete(const double *xy, size_t n, size_t split, const el_fit_options *opt,
+                            el_fit_discrete_result *first, el_fit_discrete_result *second,
+                            size_t *joint, double *distances, double *foot_s, int *side)
+{
+    if (!first || !second) return EL_EINVAL;
+    keyline_out k;
+    memset(&k, 0, sizeof k);
+    k.status = -1;
+    int st = keyline_run(FIT_DISCRETE, xy, n, split, opt, &k, distances, foot_s, side);
+    if (k.status == -1 || (st != k.status)) return st;
+    publish_discrete(&k.side[0], &k, first);
+    publish_discrete(&k.side[1], &k, second);
+    if (joint) *joint = k.joint;
+    return k.status;
+}

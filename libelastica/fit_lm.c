@@ -1,0 +1,143 @@
+/*
+ * Levenberg-Marquardt on the fit's objective (fit_internal.h), the common path of every
+ * fit: no bounds, no constraints, a handful of variables, n of 10^1..10^6 residuals.
+ *
+ * Why by hand and not GSL's gsl_multifit_nlinear / gsl_multilarge_nlinear: the first
+ * stores the n x p Jacobian, the second (which takes J^T J from a callback, as here)
+ * keeps five residual-length vectors (f, f_trial, two work vectors and the unused
+ * geodesic-acceleration vector): 80 bytes per point for the paired fit, which alone
+ * exceeds the memory budget of a 10^6-point fit (80 MiB). This solver needs only f, the
+ * gradient and the p x p normal equations, which fit_objective_eval computes block by
+ * block in the same pass as the residuals; and a trial point's normal equations come
+ * with its objective (a step is usually accepted), so an accepted iteration costs one
+ * evaluation. The iteration itself is the textbook one (Nielsen's damping update, as in
+ * GSL; More's scaling by the largest diagonal of J^T J seen), with GSL's Cholesky for
+ * the p x p solve.
+ *
+ * Certificate (the first-order condition): a point is a minimum to working precision when
+ * its gradient, measured in the norm of the Gauss-Newton matrix, is at the rounding
+ * level of the objective: g^T (J^T J)^-1 g <= 1e-13 |r|^2 (a full Gauss-Newton step
+ * would lower f by less than 1e-13 of itself; the parameters are then within ~1e-6 of
+ * their statistical error of their optimum), or when the rms residual is at the
+ * rounding level of the model's evaluation, 1e-11 of the data's rms radius (FIT_EXACT_F).
+ * With lazy feet (orthogonal fits) the condition is checked again after the feet have
+ * been projected exactly.
+ */
+#include "fit_internal.h"
+#include <string.h>
+#include <gsl/gsl_linalg.h>
+
+enum { LM_ROUNDS = 4 };
+
+/* (H + lambda diag(D)) d = -g by Cholesky. J^T J of nearly dependent columns can be
+ * indefinite in rounding; then a ridge of 1e-12 .. 1e-4 diag(D) is tried for this solve
+ * only (the damping itself is the trust region's business). EL_ESINGULAR if none works. */
+static int lm_step(const fit_value *v, const double *D, double lambda, int nx, double *d)
+{
+    double A[FIT_MAXX * FIT_MAXX];
+    for (double ridge = 0.0; ridge <= 1e-4; ridge = ridge == 0.0 ? 1e-12 : ridge * 1e4) {
+        const double lam = fmax(lambda, ridge);
+        memcpy(A, v->H, sizeof(double) * (size_t)(nx * nx));
+        for (int j = 0; j < nx; j++) {
+            A[j * nx + j] += lam * D[j];
+            d[j] = -v->g[j];
+        }
+        gsl_matrix_view Am = gsl_matrix_view_array(A, (size_t)nx, (size_t)nx);
+        gsl_vector_view dv = gsl_vector_view_array(d, (size_t)nx);
+        if (!gsl_linalg_cholesky_decomp1(&Am.matrix) && !gsl_linalg_cholesky_svx(&Am.matrix, &dv.vector) &&
+            !el__all_finite(d, (size_t)nx))
+            return EL_OK;
+    }
+    return EL_ESINGULAR;
+}
+
+int fit_first_order(const fit_value *v, int nx, double tol)
+{
+    if (!(v->f > FIT_EXACT_F)) return 1;
+    /* the gradient in the norm of the Gauss-Newton matrix: g^T H^-1 g, twice the
+     * decrease a full Gauss-Newton step would still bring */
+    double d[FIT_MAXX], D[FIT_MAXX] = {0};
+    for (int j = 0; j < nx; j++) D[j] = fmax(v->H[j * nx + j], 1e-300);
+    if (lm_step(v, D, 0.0, nx, d)) return 0;
+    double dec = 0.0;
+    for (int j = 0; j < nx; j++) dec -= v->g[j] * d[j];
+    return dec <= tol * 2.0 * v->f;
+}
+
+static void scaling(const fit_value *v, int nx, double *D)
+{
+    double mx = 0.0;
+    for (int j = 0; j < nx; j++) mx = fmax(mx, v->H[j * nx + j]);
+    for (int j = 0; j < nx; j++) D[j] = fmax(D[j], fmax(v->H[j * nx + j], 1e-30 * mx + 1e-300));
+}
+
+int fit_lm(fit_objective *o, const double *x0, int max_iter, fit_solution *sol)
+{
+    const int nx = o->map.nx;
+    const int lazy = fit_has_feet(o) && !o->exact_feet;
+    fit_value val, trial;
+    double x[FIT_MAXX], xt[FIT_MAXX], d[FIT_MAXX], D[FIT_MAXX] = {0};
+    memcpy(x, x0, sizeof(double) * (size_t)nx);
+    int st = fit_objective_eval(o, x, 1, &val);
+    if (st) return st;
+    fit_objective_accept(o);
+    scaling(&val, nx, D);
+    double lambda = 1e-9, nu = 2.0;
+    int iters = 0, rounds = 0, certified = 0;
+    while (iters < max_iter) {
+        if (fit_first_order(&val, nx, 1e-13) || !(val.f > FIT_EXACT_F)) {
+            /* with lazy feet the certificate needs feet at rest: moved by < 1e-8 in the
+             * evaluation, they are the nearest points to second order */
+            if (!lazy || o->last_move <= 1e-8) { certified = 1; break; }
+            if (rounds++ >= LM_ROUNDS) break;
+            fit_objective_accept(o);
+            if ((st = fit_objective_eval(o, x, 1, &val))) break;
+            continue;
+        }
+        if (lm_step(&val, D, lambda, nx, d)) {
+            lambda *= nu; nu *= 2.0;
+            if (lambda > 1e20) break;
+            continue;
+        }
+        /* a step leaving the model's domain stops short of its boundary */
+        const double alpha = fit_map_step_limit(&o->map, x, d);
+        for (int i = 0; i < nx; i++) d[i] *= alpha;
+        double pred = 0.0, dHd = 0.0;
+        for (int i = 0; i < nx; i++) {
+            double t = 0.0;
+            for (int j = 0; j < nx; j++) t += val.H[i * nx + j] * d[j];
+            dHd += d[i] * t;
+            pred -= val.g[i] * d[i];
+            xt[i] = x[i] + d[i];
+        }
+        pred -= 0.5 * dHd;
+        iters++;
+        const int ok = fit_objective_eval(o, xt, 1, &trial) == EL_OK;
+        const double rho = ok && pred > 0.0 ? (val.f - trial.f) / pred : -1.0;
+        if (ok && trial.f < val.f && rho > 1e-4) {
+            const double rel = (val.f - trial.f) / val.f;
+            memcpy(x, xt, sizeof(double) * (size_t)nx);
+            val = trial;
+            fit_objective_accept(o);
+            scaling(&val, nx, D);
+            const double c = 2.0 * rho - 1.0;
+            lambda *= fmax(1.0 / 3.0, 1.0 - c * c * c);
+            nu = 2.0;
+            /* the decrease is at rounding level: no later step can be told from noise */
+            if (rel < 1e-15 && !lazy) break;
+        } else {
+            lambda *= nu; nu *= 2.0;
+            if (lambda > 1e20) break;
+        }
+    }
+    if (lazy && !certified) {
+        /* what is returned is measured at exact feet */
+        if (fit_objective_project(o, x) == EL_OK && fit_objective_eval(o, x, 1, &val) == EL_OK)
+            certified = fit_first_order(&val, nx, 1e-13) || !(val.f > FIT_EXACT_F);
+    }
+    memcpy(sol->x, x, sizeof(double) * (size_t)nx);
+    sol->val = val;
+    sol->iters = iters;
+    sol->certified = certified || fit_first_order(&val, nx, 1e-13);
+    return EL_OK;
+}

@@ -1,0 +1,496 @@
+/*
+ * The fit's objective (fit_internal.h), f = (1/2n) sum r^2, and its normal equations
+ * g = J^T r / n, H = J^T J / n, computed block by block: a block of FIT_BLOCK samples is
+ * evaluated (points and d gamma / d v), its residual rows are formed and folded into
+ * 7 x 7 sums per curve, and H = sum_c M_c^T A_c M_c with M_c = d v_c / d x. J is never
+ * stored, so memory does not grow with n beyond the foot parameters.
+ *
+ * Residuals:
+ *  paired      r_i = gamma_i - P_i (two rows), seed 000 (4.6);
+ *  orthogonal  (smooth) interior points: r_i = N_i . (gamma(s_i) - P_i), the signed
+ *              distance along the normal at the foot s_i; the ends: gamma(0) - P_0 and
+ *              gamma(L) - P_{n-1} in full (two rows each). The start and the length are
+ *              free, so the start slides along the curve until its residual is normal
+ *              too: at the optimum the curve begins and ends at the feet of the first
+ *              and last points (the tangential part of an end residual is the
+ *              derivative of f along that slide).
+ * Why variable projection with feet carried along, and not the feet as Ipopt variables
+ * (the arrow-shaped problem of n + 7 variables): measured on 1000 noisy points
+ * (bench/bench_fit.c, fit_orthogonal_formulation: same data, start and objective), the
+ * arrow problem in Ipopt took 41-67 ms in 4 iterations, this 5-9 ms in 8 (7-8x): each
+ * Ipopt iteration factorises an (n + 7)-square KKT matrix with MUMPS and evaluates the
+ * curve, its Jacobian and the Hessian's arrow at the feet; here an iteration is one
+ * evaluation of points and Jacobian at the feet and a 7 x 7 solve. The row
+ * r_i = N_i . J_i is exact at the foot (N . T = 0 and (gamma - P) || N, so d/ds_i and
+ * the change of N drop out): the Gauss-Newton matrix of the reduced problem
+ * (Kaufman's variable projection), which is also the arrow matrix with the feet
+ * eliminated. The feet are not re-projected at each trial point: they are predicted
+ * from the last accepted point (foot_shift: the tangential motion of the curve under the
+ * step), then moved by one Newton step whose residual error is of third order, and the
+ * objective counts the distances at the moved feet (ortho_rows). Results are certified
+ * with feet at rest (fit_lm.c), and the reported distances come from an exact projection
+ * (fit_feet.c).
+ */
+#include "fit_internal.h"
+#include <stdlib.h>
+#include <string.h>
+
+/* Work buffer: points, Jacobian rows, the walk's block, samples, residual rows by column. */
+enum {
+    W_XY = 0,
+    W_JAC = W_XY + 2 * (FIT_BLOCK + 1),
+    W_TMP = W_JAC + 2 * (FIT_BLOCK + 1) * FIT_NP,
+    W_S = W_TMP + 2 * (FIT_BLOCK + 2) * (FIT_NP + 1),
+    W_COL = W_S + FIT_BLOCK,
+    W_RES = W_COL + FIT_NP * 2 * FIT_BLOCK,
+    W_SIZE = W_RES + 2 * FIT_BLOCK
+};
+
+int fit_objective_init(fit_objective *o, int kind, const fit_map *map, const double *xy, size_t n,
+                       double cx, double cy, double sc, const double *t)
+{
+    memset(o, 0, sizeof *o);
+    o->kind = kind; o->map = *map; o->n = n; o->xy = xy;
+    o->cx = cx; o->cy = cy; o->sc = sc; o->t = t;
+    const int feet = map->model == FIT_SMOOTH;
+    o->work = malloc(sizeof(double) * (W_SIZE + (feet ? 2 * n : 0)));
+    if (!o->work) return EL_ENOMEM;
+    if (feet) { o->s = o->work + W_SIZE; o->s_next = o->s + n; }
+    return EL_OK;
+}
+
+void fit_objective_free(fit_objective *o)
+{
+    free(o->work);
+    o->work = NULL;
+}
+
+static void point(const fit_objective *o, size_t i, double *P)
+{
+    P[0] = (o->xy[2 * i] - o->cx) / o->sc;
+    P[1] = (o->xy[2 * i + 1] - o->cy) / o->sc;
+}
+
+/* Sums of one curve: A = sum row row^T (lower triangle), b = sum row r. */
+typedef struct sums {
+    double A[FIT_NP][FIT_NP], b[FIT_NP];
+} sums;
+
+/*
+ * Fold `rows` residual rows, stored by column (col[j * stride + r]), into s. Each
+ * entry of A is a dot product of two columns. The dot product runs on pairs of doubles
+ * (GCC/Clang vector extension, SSE2 on x86-64) with four partial sums: a reduction the
+ * compiler does not reorder by itself. Measured on a 512-row block (the fold compiled
+ * alone, CPU time, the shared two-core test machine): a plain loop 33 ns a row, four
+ * scalar partial sums (the fallback below; -DFIT_SCALAR_DOT selects it) 9-14 ns, pairs
+ * 7-9 ns; -O3 instead of -O2 changed none of them, so no special flags.
+ */
+#if defined(__GNUC__) && !defined(FIT_SCALAR_DOT)
+typedef double pair __attribute__((vector_size(16)));
+
+static double dot(const double *a, const double *b, int m)
+{
+    pair s0 = {0.0, 0.0}, s1 = s0, s2 = s0, s3 = s0;
+    int r = 0;
+    for (; r + 8 <= m; r += 8) {
+        pair a0, a1, a2, a3, b0, b1, b2, b3;
+        memcpy(&a0, a + r, 16); memcpy(&a1, a + r + 2, 16); memcpy(&a2, a + r + 4, 16); memcpy(&a3, a + r + 6, 16);
+        memcpy(&b0, b + r, 16); memcpy(&b1, b + r + 2, 16); memcpy(&b2, b + r + 4, 16); memcpy(&b3, b + r + 6, 16);
+        s0 += a0 * b0; s1 += a1 * b1; s2 += a2 * b2; s3 += a3 * b3;
+    }
+    const pair t = (s0 + s1) + (s2 + s3);
+    double sum = t[0] + t[1];
+    for (; r < m; r++) sum += a[r] * b[r];
+    return sum;
+}
+#else
+static double dot(const double *a, const double *b, int m)
+{
+    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+    int r = 0;
+    for (; r + 4 <= m; r += 4) {
+        s0 += a[r] * b[r]; s1 += a[r + 1] * b[r + 1];
+        s2 += a[r + 2] * b[r + 2]; s3 += a[r + 3] * b[r + 3];
+    }
+    for (; r < m; r++) s0 += a[r] * b[r];
+    return (s0 + s1) + (s2 + s3);
+}
+#endif
+
+static void fold(sums *s, const double *col, int stride, const double *res, int rows)
+{
+    for (int a = 0; a < FIT_NP; a++) {
+        const double *ca = col + a * stride;
+        s->b[a] += dot(ca, res, rows);
+        for (int b = 0; b <= a; b++) s->A[a][b] += dot(ca, col + b * stride, rows);
+    }
+}
+
+/* Residual rows of paired points: gamma_i - P_g for the m samples, g = first + step i. */
+static double paired_rows(const fit_objective *o, const double *xy, const double *jac, size_t m,
+                          size_t first, long step, double *col, double *res)
+{
+    double f = 0.0;
+    const int stride = 2 * FIT_BLOCK;
+    for (size_t i = 0; i < m; i++) {
+        double P[2];
+        point(o, (size_t)((long)first + step * (long)i), P);
+        for (int c = 0; c < 2; c++) {
+            const size_t r = 2 * i + c;
+            const double d = xy[r] - P[c];
+            res[r] = d;
+            f += d * d;
+            for (int j = 0; j < FIT_NP; j++) col[j * stride + r] = jac[r * FIT_NP + j];
+        }
+    }
+    return f;
+}
+
+/* The discrete curve's vertices j < nv paired with data points first + step j; the
+ * rows of vertex 0 left out when skip0 (the keyline's joint, paired once). */
+static int discrete_paired(fit_objective *o, const double *v, size_t nv, size_t first, long step,
+                           int skip0, int want, sums *S, double *f)
+{
+    double *w = o->work, *xy = w + W_XY, *jac = w + W_JAC, *col = w + W_COL, *res = w + W_RES;
+    fit_walk walk;
+    fit_walk_start(v, &walk);
+    size_t done = 0;
+    int st;
+    while (done < nv) {
+        const size_t m = nv - done < FIT_BLOCK ? nv - done : FIT_BLOCK;
+        if ((st = fit_discrete_rows(v, &walk, m, xy, want ? jac : NULL, w + W_TMP))) return st;
+        const size_t k0 = done == 0 && skip0 ? 1 : 0;
+        const size_t g0 = (size_t)((long)first + step * (long)(done + k0));
+        if (want) {
+            *f += paired_rows(o, xy + 2 * k0, jac + 2 * k0 * FIT_NP, m - k0, g0, step, col, res);
+            fold(S, col, 2 * FIT_BLOCK, res, (int)(2 * (m - k0)));
+        } else {
+            for (size_t i = k0; i < m; i++) {
+                double P[2];
+                point(o, (size_t)((long)first + step * (long)(done + i)), P);
+                const double dx = xy[2 * i] - P[0], dy = xy[2 * i + 1] - P[1];
+                *f += dx * dx + dy * dy;
+            }
+        }
+        done += m;
+    }
+    return EL_OK;
+}
+
+static int smooth_paired(fit_objective *o, const double *v, int want, sums *S, double *f)
+{
+    double *w = o->work, *xy = w + W_XY, *jac = w + W_JAC, *s = w + W_S, *col = w + W_COL,
+           *res = w + W_RES;
+    int st;
+    for (size_t a = 0; a < o->n; a += FIT_BLOCK) {
+        const size_t m = o->n - a < FIT_BLOCK ? o->n - a : FIT_BLOCK;
+        for (size_t i = 0; i < m; i++) s[i] = o->t[a + i] * v[6];
+        if ((st = fit_smooth_rows(v, m, s, xy, want ? jac : NULL))) return st;
+        if (want) {
+            *f += paired_rows(o, xy, jac, m, a, 1, col, res);
+            fold(S, col, 2 * FIT_BLOCK, res, (int)(2 * m));
+        } else {
+            for (size_t i = 0; i < m; i++) {
+                double P[2];
+                point(o, a + i, P);
+                const double dx = xy[2 * i] - P[0], dy = xy[2 * i + 1] - P[1];
+                *f += dx * dx + dy * dy;
+            }
+        }
+    }
+    return EL_OK;
+}
+
+/* The start of a smooth curve: unit tangent R(phi) (1 - 2k^2 sn^2, 2k sn dn) at u = q
+ * (smooth.c) and curvature 2 k w cn q, for any signs of w and k. */
+static int start_state(const double *v, double *T0, double *kappa0)
+{
+    el_jacobi J;
+    if (el_jacobi_eval(v[5], fabs(v[4]), &J, NULL, NULL)) return EL_EDOM;
+    const double k = v[4], tx = 1.0 - 2.0 * k * k * J.sn * J.sn, ty = 2.0 * k * J.sn * J.dn;
+    const double c = cos(v[2]), sp = sin(v[2]);
+    T0[0] = c * tx - sp * ty;
+    T0[1] = sp * tx + c * ty;
+    *kappa0 = 2.0 * k * v[3] * J.cn;
+    return EL_OK;
+}
+
+/*
+ * Orthogonal residual rows of the m samples of one smooth curve at s[i] (the block's
+ * points idx[i]; end[i]: 0 interior, 1 an end point with its full residual), appended
+ * at *rows; the objective at the feet after one Newton step, and those feet s_new[i].
+ * Everything comes from the one evaluation of points and Jacobian at s:
+ *   T(s) = w d gamma/dq + T(0)                (u = w s + q; smooth.c's closed form),
+ *   kappa(s) = kappa(0) - w^2 Y(s)            (curvature affine in the position, seed 000
+ *                                              (4.25); Y = the rotated frame's y of gamma - gamma0),
+ * and with gamma - P = t T + e N the foot moves by u = -t / (1 + kappa e) (Newton), after
+ * which |gamma(s + u) - P|^2 = (t + u)^2 + (e + kappa u^2 / 2)^2 + O(u^3): the value
+ * counted, so a step's gain is measured at the moved feet; the row is that foot's too.
+ */
+typedef struct ortho_block {
+    const double *v;
+    size_t m;
+    const double *s;
+    const size_t *idx;
+    const unsigned char *end;
+    double lo, hi;           /* the foot's range on this curve */
+} ortho_block;
+
+static int ortho_rows(fit_objective *o, const ortho_block *b, int want, double *col, double *res,
+                      int *rows, double *f, double *s_new)
+{
+    double *w = o->work, *xy = w + W_XY, *jac = w + W_JAC, T0[2], kappa0;
+    int st = fit_smooth_rows(b->v, b->m, b->s, xy, jac);
+    if (st || (st = start_state(b->v, T0, &kappa0))) return st;
+    const double wv = b->v[3], w2 = wv * wv, cp = cos(b->v[2]), sp = sin(b->v[2]);
+    const int stride = 2 * FIT_BLOCK;
+    for (size_t i = 0; i < b->m; i++) {
+        const double *jx = jac + 2 * i * FIT_NP, *jy = jx + FIT_NP;
+        double P[2];
+        point(o, b->idx[i], P);
+        const double gx = xy[2 * i], gy = xy[2 * i + 1], dx = gx - P[0], dy = gy - P[1];
+        s_new[i] = b->s[i];
+        if (b->end[i]) {
+            *f += dx * dx + dy * dy;
+            if (want) {
+                const int r = (*rows)++, r2 = (*rows)++;
+                res[r] = dx; res[r2] = dy;
+                for (int j = 0; j < FIT_NP; j++) { col[j * stride + r] = jx[j]; col[j * stride + r2] = jy[j]; }
+            }
+            continue;
+        }
+        double Tx = wv * jx[5] + T0[0], Ty = wv * jy[5] + T0[1];
+        const double tn = fit_norm(Tx, Ty);
+        Tx /= tn; Ty /= tn;
+        const double t = Tx * dx + Ty * dy, e = Ty * -dx + Tx * dy;   /* e = N . (gamma - P) */
+        double ex = -Ty, ey = Tx, r = e, d2;
+        if ((b->s[i] <= b->lo && t > 0.0) || (b->s[i] >= b->hi && t < 0.0)) {
+            /* the foot held at an end of the extended curve, the point beyond it: the
+             * distance to that end point */
+            const double d = fit_norm(dx, dy);
+            if (d > 0.0) { ex = dx / d; ey = dy / d; r = d; }
+            d2 = dx * dx + dy * dy;
+        } else {
+            const double kappa = kappa0 - w2 * (-sp * (gx - b->v[0]) + cp * (gy - b->v[1]));
+            const double u = fmin(fmax(b->s[i] + fit_foot_step(t, e, kappa, b->v[6]), b->lo), b->hi) - b->s[i];
+            const double a = t + u, c = e + 0.5 * kappa * u * u;
+            d2 = a * a + c * c;
+            s_new[i] = b->s[i] + u;
+            o->last_move = fmax(o->last_move, fabs(u));
+            /* the row of the moved foot: its residual c, its normal N turned by kappa u
+             * (to first order N - kappa u T), so that f, g and H describe the same point */
+            r = c;
+            ex = -Ty - kappa * u * Tx;
+            ey = Tx - kappa * u * Ty;
+            const double en = fit_norm(ex, ey);
+            ex /= en; ey /= en;
+        }
+        *f += d2;
+        if (want) {
+            const int q = (*rows)++;
+            res[q] = r;
+            for (int j = 0; j < FIT_NP; j++) col[j * stride + q] = ex * jx[j] + ey * jy[j];
+        }
+    }
+    return EL_OK;
+}
+
+/*
+ * Where a foot goes when the parameters change by dv: the point gamma(s) moves by
+ * (d gamma/dv) dv, its foot by minus the tangential part, ds = -b(s) . dv with
+ * b = (d gamma / dv)^T T. b is smooth in s and is sampled at FIT_KNOTS arc lengths of
+ * the base curve (the last accepted point) and interpolated linearly; the feet of a
+ * trial point then start within second order of their place, as if the feet were
+ * variables of the step (the arrow-shaped Gauss-Newton step, eliminated). The length
+ * column is dropped: a foot at fixed s does not move with L (smooth.c's column is at
+ * fixed s / L).
+ */
+static int base_knots(fit_objective *o, int c, const double *v)
+{
+    double s[FIT_KNOTS], *xy = o->work + W_XY, *jac = o->work + W_JAC, T0[2], kappa0;
+    int st = start_state(v, T0, &kappa0);
+    for (int j = 0; j < FIT_KNOTS; j++) s[j] = v[6] * (double)j / (double)(FIT_KNOTS - 1);
+    if (st || (st = fit_smooth_rows(v, FIT_KNOTS, s, xy, jac))) return st;
+    for (int j = 0; j < FIT_KNOTS; j++) {
+        const double *jx = jac + 2 * j * FIT_NP, *jy = jx + FIT_NP;
+        double Tx = v[3] * jx[5] + T0[0], Ty = v[3] * jy[5] + T0[1];
+        const double tn = fit_norm(Tx, Ty);
+        Tx /= tn; Ty /= tn;
+        for (int a = 0; a < FIT_NP; a++) o->knot_b[c][j][a] = a == 6 ? 0.0 : Tx * jx[a] + Ty * jy[a];
+    }
+    return EL_OK;
+}
+
+static double foot_shift(const fit_objective *o, int c, const double *v, double s)
+{
+    if (!o->have_base || o->exact_feet) return 0.0;
+    const double *vb = o->base_v[c], L = vb[6];
+    double dv[FIT_NP];
+    for (int a = 0; a < FIT_NP; a++) dv[a] = v[a] - vb[a];
+    const double pos = L > 0.0 ? fmin(fmax(s / L, 0.0), 1.0) * (FIT_KNOTS - 1) : 0.0;
+    const int j = pos >= FIT_KNOTS - 1 ? FIT_KNOTS - 2 : (int)pos;
+    const double f = pos - j;
+    double ds = 0.0;
+    for (int a = 0; a < FIT_NP; a++)
+        ds -= ((1.0 - f) * o->knot_b[c][j][a] + f * o->knot_b[c][j + 1][a]) * dv[a];
+    return ds;
+}
+
+/* Orthogonal objective of one smooth curve. */
+static int smooth_orthogonal(fit_objective *o, const double *v, int want, sums *S, double *f)
+{
+    double *w = o->work, *s = w + W_S, *col = w + W_COL, *res = w + W_RES;
+    size_t idx[FIT_BLOCK];
+    unsigned char end[FIT_BLOCK];
+    const double L = v[6];
+    double vv[2][FIT_NP], lo, hi;
+    memcpy(vv[0], v, sizeof vv[0]);
+    fit_feet_range(o, vv, 1, &lo, &hi);
+    int st;
+    for (size_t a = 0; a < o->n; a += FIT_BLOCK) {
+        const size_t m = o->n - a < FIT_BLOCK ? o->n - a : FIT_BLOCK;
+        for (size_t i = 0; i < m; i++) {
+            const size_t g = a + i;
+            idx[i] = g;
+            end[i] = g == 0 || g == o->n - 1;
+            s[i] = g == 0 ? 0.0 : g == o->n - 1 ? L
+                 : fmin(fmax(o->s[g] + foot_shift(o, 0, v, o->s[g]), lo), hi);
+        }
+        ortho_block b = {v, m, s, idx, end, lo, hi};
+        int rows = 0;
+        if ((st = ortho_rows(o, &b, want, col, res, &rows, f, o->s_next + a))) return st;
+        if (want) fold(S, col, 2 * FIT_BLOCK, res, rows);
+    }
+    return EL_OK;
+}
+
+/*
+ * The keyline, smooth: sigma_i < 0 lies on the first curve at s = -sigma, sigma >= 0 on
+ * the second at s = sigma; both start at the joint. Point 0 is the first curve's end,
+ * point n-1 the second's.
+ */
+static int keyline_smooth(fit_objective *o, double v[2][FIT_NP], int want, sums S[2], double *f)
+{
+    double *w = o->work, *s = w + W_S, *col = w + W_COL, *res = w + W_RES;
+    size_t idx[FIT_BLOCK];
+    unsigned char end[FIT_BLOCK];
+    double snew[FIT_BLOCK];
+    int st;
+    for (size_t a = 0; a < o->n; a += FIT_BLOCK) {
+        const size_t m = o->n - a < FIT_BLOCK ? o->n - a : FIT_BLOCK;
+        for (int c = 0; c < 2; c++) {
+            const double L = v[c][6];
+            double lo, hi;
+            fit_feet_range(o, v, 1, &lo, &hi);
+            const double far = c == 0 ? -lo : hi;
+            size_t cnt = 0;
+            for (size_t i = 0; i < m; i++) {
+                const size_t g = a + i;
+                double sig = o->s[g];
+                if (g != 0 && g != o->n - 1)          /* sigma < 0 runs against s */
+                    sig += sig < 0.0 ? -foot_shift(o, 0, v[0], -sig) : foot_shift(o, 1, v[1], sig);
+                const int on_first = g == 0 || (g != o->n - 1 && sig < 0.0);
+                if (on_first != (c == 0)) continue;
+                idx[cnt] = g;
+                end[cnt] = g == 0 || g == o->n - 1;
+                s[cnt] = end[cnt] ? L : fmin(fabs(sig), far);
+                cnt++;
+            }
+            if (cnt == 0) continue;
+            /* no lower clamp: a foot passing the joint continues on the other curve */
+            ortho_block b = {v[c], cnt, s, idx, end, -HUGE_VAL, far};
+            int rows = 0;
+            if ((st = ortho_rows(o, &b, want, col, res, &rows, f, snew))) return st;
+            if (want) fold(&S[c], col, 2 * FIT_BLOCK, res, rows);
+            for (size_t i = 0; i < cnt; i++) o->s_next[idx[i]] = c == 0 ? -snew[i] : snew[i];
+        }
+    }
+    return EL_OK;
+}
+
+int fit_objective_eval(fit_objective *o, const double *x, int want_normal, fit_value *out)
+{
+    const fit_map *m = &o->map;
+    const int nx = m->nx, nc = m->ncurves;
+    double v[2][FIT_NP], M[2][FIT_NP * FIT_MAXX];
+    int st = fit_map_eval(m, x, v, want_normal ? M[0] : NULL);
+    if (st) return st;
+    memcpy(o->last_v, v, sizeof o->last_v);
+    o->last_move = 0.0;
+    if (o->exact_feet && fit_has_feet(o) && (st = fit_objective_project(o, x))) return st;
+    sums S[2];
+    memset(S, 0, sizeof S);
+    double f = 0.0;
+    if (o->kind == FIT_KEYLINE && m->model == FIT_SMOOTH) {
+        st = keyline_smooth(o, v, want_normal, S, &f);
+    } else if (o->kind == FIT_KEYLINE) {
+        /* first curve: vertices 0..split <-> points split..0; second: vertices 1.. <->
+         * points split+1.. (its vertex 0 is the shared joint, paired once) */
+        st = discrete_paired(o, v[0], o->split + 1, o->split, -1, 0, want_normal, &S[0], &f);
+        if (!st) st = discrete_paired(o, v[1], o->n - o->split, o->split, 1, 1, want_normal, &S[1], &f);
+    } else if (m->model == FIT_DISCRETE) {
+        st = discrete_paired(o, v[0], o->n, 0, 1, 0, want_normal, &S[0], &f);
+    } else if (o->kind == FIT_PAIRED) {
+        st = smooth_paired(o, v[0], want_normal, &S[0], &f);
+    } else {
+        st = smooth_orthogonal(o, v[0], want_normal, &S[0], &f);
+    }
+    if (st) return st;
+    const double inv = 1.0 / (double)o->n;
+    out->f = 0.5 * f * inv;
+    double pc[FIT_NCON], pJ[FIT_NCON * FIT_MAXX];
+    int prows = 0;
+    if (o->pen) {
+        prows = fit_constraint_rows(o, o->pen, x, pc, want_normal ? pJ : NULL, NULL, o->pen_tmp);
+        if (prows < 0) return EL_EDOM;
+        for (int r = 0; r < prows; r++) out->f += 0.5 * o->pen_rho * pc[r] * pc[r];
+    }
+    if (!isfinite(out->f)) return EL_EDOM;
+    if (!want_normal) return EL_OK;
+    /* H = sum_c M_c^T A_c M_c, g = sum_c M_c^T b_c (A_c symmetric from its lower triangle) */
+    memset(out->g, 0, sizeof out->g);
+    memset(out->H, 0, sizeof out->H);
+    for (int c = 0; c < nc; c++) {
+        double A[FIT_NP][FIT_NP], AM[FIT_NP][FIT_MAXX];
+        for (int a = 0; a < FIT_NP; a++)
+            for (int b = 0; b <= a; b++) A[a][b] = A[b][a] = S[c].A[a][b];
+        const double *Mc = M[c];
+        for (int a = 0; a < FIT_NP; a++)
+            for (int j = 0; j < nx; j++) {
+                double t = 0.0;
+                for (int b = 0; b < FIT_NP; b++) t += A[a][b] * Mc[b * nx + j];
+                AM[a][j] = t;
+            }
+        for (int i = 0; i < nx; i++) {
+            double gi = 0.0;
+            for (int a = 0; a < FIT_NP; a++) gi += Mc[a * nx + i] * S[c].b[a];
+            out->g[i] += gi * inv;
+            for (int j = 0; j <= i; j++) {
+                double t = 0.0;
+                for (int a = 0; a < FIT_NP; a++) t += Mc[a * nx + i] * AM[a][j];
+                out->H[i * nx + j] += t * inv;
+            }
+        }
+    }
+    for (int r = 0; r < prows; r++)
+        for (int i = 0; i < nx; i++) {
+            out->g[i] += o->pen_rho * pJ[r * nx + i] * pc[r];
+            for (int j = 0; j <= i; j++) out->H[i * nx + j] += o->pen_rho * pJ[r * nx + i] * pJ[r * nx + j];
+        }
+    for (int i = 0; i < nx; i++)
+        for (int j = 0; j < i; j++) out->H[j * nx + i] = out->H[i * nx + j];
+    if (el__all_finite(out->g, (size_t)nx) || el__all_finite(out->H, (size_t)(nx * nx))) return EL_EDOM;
+    return EL_OK;
+}
+
+void fit_objective_accept(fit_objective *o)
+{
+    if (!fit_has_feet(o) || o->exact_feet) return;
+    double *t = o->s;
+    o->s = o->s_next;
+    o->s_next = t;
+    memcpy(o->base_v, o->last_v, sizeof o->base_v);
+    o->have_base = 1;
+    for (int c = 0; c < o->map.ncurves; c++)
+        if (base_knots(o, c, o->base_v[c])) o->have_base = 0;
+}

@@ -1,0 +1,155 @@
+/* The pieces of the fit (libelastica/fit_internal.h) against their plain counterparts:
+ * the blocked walk over a discrete curve against one Jacobian call, the end states'
+ * derivatives and the keyline map's against finite differences. */
+#include "testutil.h"
+#include "fit_internal.h"
+#include <string.h>
+
+/* Vertices and d gamma / d v walked in blocks of every size equal one call over the
+ * whole curve, for k across 1 and the continuation -1 < k < 0. */
+START_TEST(test_blocked_discrete_walk_equals_one_call)
+{
+    const size_t sizes[] = {2, 3, 17, 255, 256, 257, 600};
+    const double ks[] = {0.3, 0.999, 1.0, 1.7, 25.0, -0.4};
+    double tmp[FIT_WORK];
+    for (size_t a = 0; a < sizeof sizes / sizeof sizes[0]; a++)
+        for (size_t b = 0; b < sizeof ks / sizeof ks[0]; b++) {
+            const size_t n = sizes[a];
+            const double v[7] = {0.3, -0.7, 2.0 / (double)n, 0.4, 3.0 / (double)n, 0.25, ks[b]};
+            el_discrete_params p;
+            double dq;
+            ck_assert_int_eq(fit_to_discrete(v, &p, &dq), EL_OK);
+            double *xy = malloc(sizeof(double) * 2 * n), *jac = malloc(sizeof(double) * 14 * n);
+            double *wxy = malloc(sizeof(double) * 2 * n), *wjac = malloc(sizeof(double) * 14 * n);
+            ck_assert_int_eq(el_discrete_jacobian(&p, n, xy, jac), EL_OK);
+            if (v[6] < 0.0)        /* the continuation's k column: d/dk of (|k|, q + 2K(|k|)) */
+                for (size_t i = 0; i < 2 * n; i++) jac[i * 7 + 6] = -(jac[i * 7 + 6] + dq * jac[i * 7 + 5]);
+            for (size_t blk = 1; blk <= 300; blk = blk * 3 + 1) {
+                fit_walk w;
+                fit_walk_start(v, &w);
+                for (size_t s = 0; s < n; s += blk) {
+                    const size_t m = n - s < blk ? n - s : blk;
+                    ck_assert_int_eq(fit_discrete_rows(v, &w, m, wxy + 2 * s, wjac + 14 * s, tmp), EL_OK);
+                }
+                double scale = 1.0, e = 0.0;
+                for (size_t i = 0; i < 14 * n; i++) {
+                    scale = fmax(scale, fabs(jac[i]));
+                    e = fmax(e, fabs(wjac[i] - jac[i]));
+                }
+                for (size_t i = 0; i < 2 * n; i++) e = fmax(e, fabs(wxy[i] - xy[i]));
+                ck_assert_msg(e <= 1e-12 * scale, "n %zu k %g block %zu: %g", n, ks[b], blk, e / scale);
+            }
+            free(xy); free(jac); free(wxy); free(wjac);
+        }
+}
+END_TEST
+
+/* Point, tangent angle and curvature at both ends, and their derivatives in v, against
+ * central differences, both models, inflectional and looping, w < 0 and k < 0. */
+START_TEST(test_end_state_derivatives)
+{
+    double tmp[FIT_WORK];
+    const double smooth[][7] = {{0.3, -0.2, 0.4, 1.3, 0.7, 0.2, 2.5}, {0.3, -0.2, 0.4, -1.3, -0.4, 0.2, 2.5},
+                                {0.1, 0.5, -1.0, 0.8, 2.5, -0.3, 4.0}, {0.1, 0.5, -1.0, 0.8, -1.7, 0.9, 3.0}};
+    const double discrete[][7] = {{0.3, -0.2, 0.01, 0.4, 0.02, 0.3, 0.6}, {0.3, -0.2, 0.01, 0.4, -0.03, 0.3, -0.4},
+                                  {0.0, 0.0, 0.05, 1.0, 0.05, -0.2, 2.0}};
+    for (int model = 0; model < 2; model++) {
+        const size_t cnt = model == FIT_SMOOTH ? 4 : 3;
+        for (size_t a = 0; a < cnt; a++)
+            for (int at_end = 0; at_end < 2; at_end++) {
+                const double *v = model == FIT_SMOOTH ? smooth[a] : discrete[a];
+                const size_t n = 60;
+                fit_end e, ep, em;
+                ck_assert_int_eq(fit_end_state(model, v, n, at_end, &e, tmp), EL_OK);
+                for (int j = 0; j < 7; j++) {
+                    const double h = 1e-6 * (1.0 + fabs(v[j]));
+                    double vp[7], vm[7];
+                    memcpy(vp, v, sizeof vp); memcpy(vm, v, sizeof vm);
+                    vp[j] += h; vm[j] -= h;
+                    ck_assert_int_eq(fit_end_state(model, vp, n, at_end, &ep, tmp), EL_OK);
+                    ck_assert_int_eq(fit_end_state(model, vm, n, at_end, &em, tmp), EL_OK);
+                    const double fd[4] = {(ep.xy[0] - em.xy[0]) / (2 * h), (ep.xy[1] - em.xy[1]) / (2 * h),
+                                          remainder(ep.theta - em.theta, 2 * M_PI) / (2 * h),
+                                          (ep.kappa - em.kappa) / (2 * h)};
+                    const double an[4] = {e.dxy[0][j], e.dxy[1][j], e.dtheta[j], e.dkappa[j]};
+                    for (int q = 0; q < 4; q++)
+                        ck_assert_msg(fabs(fd[q] - an[q]) <= 1e-6 * (1.0 + fabs(fd[q])),
+                                      "model %d case %zu end %d v%d quantity %d: %g vs %g", model, a,
+                                      at_end, j, q, an[q], fd[q]);
+                }
+            }
+    }
+    /* the states themselves: the smooth curve's own evaluation */
+    el_smooth_params p;
+    ck_assert_int_eq(fit_to_smooth(smooth[2], &p), EL_OK);
+    double s[2] = {0.0, p.length}, xy[4], th[2], ka[2];
+    ck_assert_int_eq(el_smooth_eval(&p, 2, s, xy, th, ka), EL_OK);
+    for (int at_end = 0; at_end < 2; at_end++) {
+        fit_end e;
+        ck_assert_int_eq(fit_end_state(FIT_SMOOTH, smooth[2], 0, at_end, &e, tmp), EL_OK);
+        ck_assert_close(e.xy[0], xy[2 * at_end], 1e-13);
+        ck_assert_close(e.kappa, ka[at_end], 1e-13);
+        ck_assert(fabs(remainder(e.theta - th[at_end], 2 * M_PI)) <= 1e-13);
+    }
+}
+END_TEST
+
+/* The keyline's joint variables: every point of them is a G2 joint (zero curvature on
+ * both sides, opposite tangents), and d v / d x matches central differences. */
+START_TEST(test_keyline_map_is_g2_with_its_derivative)
+{
+    double tmp[FIT_WORK];
+    for (int model = 0; model < 2; model++)
+        for (int held = 0; held < 1 + (model == FIT_DISCRETE); held++) {
+            fit_map m;
+            memset(&m, 0, sizeof m);
+            m.model = model; m.ncurves = 2;
+            m.nx = held ? 7 : 9;
+            m.fixed_h = held ? 0.02 : 0.0;
+            m.scale[0] = 40.0; m.scale[1] = 60.0;
+            const double xs[9] = {0.2, -0.1, 0.7, model ? 1.3 : 0.8, model ? 0.45 : 1.2, model ? 2.0 : -0.35,
+                                  model ? 0.9 : 1.0, model ? -0.3 : 0.9, model ? 3.0 : 0.5};
+            double x[FIT_MAXX];
+            if (held) { const int cols[7] = {0, 1, 2, 4, 5, 7, 8}; for (int j = 0; j < 7; j++) x[j] = xs[cols[j]]; }
+            else memcpy(x, xs, sizeof xs);
+            double v[2][FIT_NP], M[2 * FIT_NP * FIT_MAXX];
+            ck_assert_int_eq(fit_map_eval(&m, x, v, M), EL_OK);
+            fit_end e[2];
+            for (int c = 0; c < 2; c++) {
+                ck_assert_int_eq(fit_end_state(model, v[c], 50, 0, &e[c], tmp), EL_OK);
+                ck_assert_msg(fabs(e[c].kappa) <= 1e-12, "model %d side %d kappa %g", model, c, e[c].kappa);
+            }
+            ck_assert(fabs(e[0].xy[0] - e[1].xy[0]) == 0.0 && fabs(e[0].xy[1] - e[1].xy[1]) == 0.0);
+            ck_assert_msg(fabs(remainder(e[0].theta - e[1].theta - M_PI, 2 * M_PI)) <= 1e-13,
+                          "model %d tangents %g %g", model, e[0].theta, e[1].theta);
+            for (int j = 0; j < m.nx; j++) {
+                const double h = 1e-6 * (1.0 + fabs(x[j]));
+                double xp[FIT_MAXX], xm[FIT_MAXX], vp[2][FIT_NP], vm[2][FIT_NP];
+                memcpy(xp, x, sizeof xp); memcpy(xm, x, sizeof xm);
+                xp[j] += h; xm[j] -= h;
+                ck_assert_int_eq(fit_map_eval(&m, xp, vp, NULL), EL_OK);
+                ck_assert_int_eq(fit_map_eval(&m, xm, vm, NULL), EL_OK);
+                for (int c = 0; c < 2; c++)
+                    for (int r = 0; r < FIT_NP; r++) {
+                        const double fd = (vp[c][r] - vm[c][r]) / (2 * h), an = M[c * FIT_NP * FIT_MAXX + r * m.nx + j];
+                        ck_assert_msg(fabs(fd - an) <= 1e-6 * (1.0 + fabs(fd)), "model %d x%d v%d%d: %g vs %g",
+                                      model, j, c, r, an, fd);
+                    }
+            }
+        }
+}
+END_TEST
+
+static Suite *suite(void)
+{
+    Suite *s = suite_create("fit parts");
+    TCase *tc = tcase_create("core");
+    tcase_set_timeout(tc, 60);
+    tcase_add_test(tc, test_blocked_discrete_walk_equals_one_call);
+    tcase_add_test(tc, test_end_state_derivatives);
+    tcase_add_test(tc, test_keyline_map_is_g2_with_its_derivative);
+    suite_add_tcase(s, tc);
+    return s;
+}
+
+int main(void) { return test_run_suite(suite()); }

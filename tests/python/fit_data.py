@@ -1,0 +1,86 @@
+"""Data a designer fits (issue 13), shared by the fit tests and bench/bench_fit.py:
+unevenly spaced scans with gaps, a few points sketched along an S, and an
+independent point-to-curve distance to check the fit's own numbers against.
+
+The curves are made with libelastica's evaluation (tested on its own against
+mpmath and ODE integration); the distances use dense sampling and a bounded
+scalar minimisation (scipy), nothing of the fit's projection.
+
+    >>> pts, truth = uneven_scan(seed=0)
+    >>> pts.shape
+    (175, 2)
+"""
+from __future__ import annotations
+
+import numpy as np
+from scipy.optimize import minimize_scalar
+
+import libelastica as el
+
+
+def uneven_scan(seed: int = 0, noise: float = 0.15, n: int = 175, k: float = 0.8,
+                length: float = 120.0):
+    """n points along an S-shaped smooth elastica (one inflection, length
+    ``length``), spacing varying smoothly over a ratio of 1:6 along the curve,
+    two gaps (10 and 6 mean spacings), isotropic Gaussian noise of sigma
+    ``noise`` per coordinate. Returns (points (n, 2), the true SmoothElastica
+    over the span of the samples)."""
+    rng = np.random.default_rng(seed)
+    mu = (1.6 * 2.0 * np.pi / length) ** 2 / 4.0     # ~1.6 quarter periods of cn: one inflection
+    truth = el.SmoothElastica(x0=3.0, y0=-2.0, phi=0.4, mu=mu, k=k, q=0.6, length=length)
+    # density 1 .. 6 (spacing ratio 1:6) varying along the curve, two gaps
+    t = np.linspace(0.0, 1.0, 4000)
+    dens = 1.0 + 5.0 * (0.5 + 0.5 * np.sin(2.0 * np.pi * (t + 0.1 * rng.uniform())))
+    dens[(t > 0.30) & (t < 0.30 + 10.0 / n)] = 0.0
+    dens[(t > 0.70) & (t < 0.70 + 6.0 / n)] = 0.0
+    cdf = np.concatenate([[0.0], np.cumsum(0.5 * (dens[1:] + dens[:-1]) * np.diff(t))])
+    cdf /= cdf[-1]
+    s = np.interp(np.linspace(0.0, 1.0, n), cdf, t) * length
+    pts = truth.points(s) + rng.normal(0.0, noise, (n, 2))
+    return np.ascontiguousarray(pts), truth
+
+
+def sketched_s(seed: int = 0, n: int = 15, wobble: float = 0.5):
+    """n points placed by hand along an S about 100 mm long: uneven spacing
+    (0.5 to 1.5 of the mean), each off the curve by up to ``wobble`` mm.
+    Returns (points (n, 2), the SmoothElastica they were placed along)."""
+    rng = np.random.default_rng(seed)
+    truth = el.SmoothElastica(x0=0.0, y0=0.0, phi=-0.9, mu=(1.0 / 30.0) ** 2, k=0.85, q=0.4,
+                              length=100.0)
+    gaps = rng.uniform(0.5, 1.5, n - 1)
+    s = np.concatenate([[0.0], np.cumsum(gaps)])
+    s *= truth.length / s[-1]
+    pts = truth.points(s) + rng.uniform(-wobble, wobble, (n, 2))
+    return np.ascontiguousarray(pts), truth
+
+
+def curve_distances(curve, pts, samples: int = 20000):
+    """Distance of every point to the curve (a SmoothElastica over [0, length]
+    or the polygon of a DiscreteElastica), measured independently of the fit:
+    nearest of ``samples`` dense samples, then a bounded scalar minimisation
+    between its neighbours. Returns (distances (n,), arc length of the nearest
+    point (n,))."""
+    pts = np.asarray(pts, dtype=float)
+    if isinstance(curve, el.DiscreteElastica):
+        V = curve.points()
+        A, B = V[:-1], V[1:]
+        AB = B - A
+        t = np.clip(np.einsum("pij,ij->pi", pts[:, None, :] - A[None], AB) / np.sum(AB * AB, 1),
+                    0.0, 1.0)
+        C = A[None] + t[..., None] * AB[None]
+        d = np.linalg.norm(pts[:, None, :] - C, axis=2)
+        j = np.argmin(d, axis=1)
+        return d[np.arange(len(pts)), j], (j + t[np.arange(len(pts)), j]) * curve.h
+    s = np.linspace(0.0, curve.length, samples)
+    xy = curve.points(s)
+    ds = s[1] - s[0]
+    dist, foot = np.empty(len(pts)), np.empty(len(pts))
+    for i, p in enumerate(pts):
+        j = int(np.argmin(np.sum((xy - p) ** 2, axis=1)))
+        lo, hi = max(s[j] - ds, 0.0), min(s[j] + ds, curve.length)
+        r = minimize_scalar(lambda v: float(np.sum((curve.points(np.array([v]))[0] - p) ** 2)),
+                            bounds=(lo, hi), method="bounded", options={"xatol": 1e-12 * curve.length})
+        cand = [(r.fun, r.x), (float(np.sum((xy[j] - p) ** 2)), s[j])]
+        f, x = min(cand)
+        dist[i], foot[i] = np.sqrt(f), x
+    return dist, foot
