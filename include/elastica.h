@@ -705,23 +705,24 @@ void el_spline_options_defaults(el_spline_options *opt);
 
 /*
  * The elastic spline through the n points xy (2n, interleaved).
- * Method (spline.c, with the derivations): Newton on the tangent angles at the
- * points (and sigma in length mode) with the curvature jumps as equations; each
- * piece is the Hermite elastica from (point i, angle i) to (point i+1, angle
- * i+1) at its tension, its own five parameters eliminated in the same Newton
- * step (implicit function theorem), so it continues the previous iterate's
- * branch; the knot system is tridiagonal (cyclic when closed, bordered in
- * length mode), solved by GSL in O(n) per iteration; steps halved until the
- * residual decreases. Start: tangents of the circles through three consecutive
- * points, pieces from the linearised batten or, where the tangents are far from
- * the chord, the least-energy Hermite elastica (el_hermite_solve). If Newton
- * fails there: continuation from a high tension (sigma h^2 = 40) down to sigma.
- * Length mode: from the free batten (or as near sigma = 0 as continuation gets),
- * pseudo-arclength continuation in (angles, sigma) until the length is
- * bracketed, then Newton with the length as the border equation.
- * Work is bounded: at most max_steps continuation steps of at most max_iter
- * Newton iterations (20 for a first attempt, 12 for a step), each with at most 12
- * step halvings, each O(n); 100 points take about 1 ms of CPU, 1000 about 10 ms (bench/).
+ * Method (spline_chain.c, spline_path.c, with the derivations): Newton on the
+ * tangent angles at the points (and sigma in length mode) with the curvature
+ * jumps as equations; each piece is the Hermite elastica from (point i, angle
+ * i) to (point i+1, angle i+1) at its tension, its own five parameters
+ * eliminated in the same Newton step (implicit function theorem), so it
+ * continues the previous iterate's branch; the knot system is tridiagonal
+ * (cyclic when closed, bordered in length mode), solved by GSL in O(n) per
+ * iteration; steps halved until the residual decreases. Start: tangents of the
+ * circles through three consecutive points, pieces from the linearised batten
+ * or, where the tangents are far from the chord, the least-energy Hermite
+ * elastica (el_hermite_solve). If Newton fails there: continuation from a high
+ * tension (sigma h^2 = 40) down to sigma. Length mode: from the free batten (or
+ * as near sigma = 0 as continuation gets), pseudo-arclength continuation in
+ * (angles, sigma) until the length is bracketed, then Newton with the length as
+ * the border equation. Work is bounded: at most max_steps continuation steps of
+ * at most max_iter Newton iterations (20 for a first attempt, 12 for a step),
+ * each with at most 12 step halvings, each O(n); 100 points take about 1 ms of
+ * CPU, 1000 about 10 ms (bench/).
  * End conditions (open curves): natural or tangent at either end: a batten
  * with given tension has exactly one degree of freedom per end. A G2 end
  * (tangent and curvature) asks one more: the span next to it takes its own

@@ -2,7 +2,7 @@
  * One piece of an elastic spline (spline.c): the Hermite elastica of tension s
  * from (0, ta) to (dx, dy, tb) as the five parameters v = (phi, ln mu, k, q, L)
  * of a smooth elastica, with its residuals R, Jacobian J = dR/dv, the end
- * curvatures' gradients g0, g1 and the eliminated columns spline.c's Newton
+ * curvatures' gradients g0, g1 and the eliminated columns spline_chain.c's Newton
  * needs; the state (theta0, kappa0, kappa0', sigma, L) the steps are taken in;
  * the start of a piece (the linearised batten, or el_hermite_solve).
  *

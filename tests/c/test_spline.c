@@ -1,6 +1,6 @@
 /* Elastic splines (issue 14): every spline is checked with the evaluator of
  * smooth.c (through the points, G1 and G2 at them, one tension, the end
- * conditions, energy and length), the derivatives of spline.c by finite
+ * conditions, energy and length), the derivatives of spline_piece.c by finite
  * differences and by Hermite solutions (el_hermite_solve), the spline as a
  * critical point of integral kappa^2 + sigma ds, the forces by their defining
  * identities, the B-spline by its joins, and the degenerate and bad inputs. */
@@ -151,7 +151,7 @@ static const el_smooth_params test_pieces[] = {
     {0.0, 0.0, 0.0, 0.01, 6.0, 0.4, 2.0},     /* near a circle */
 };
 
-/* J, g0, g1, M of spline.c against central differences of el_smooth_eval in
+/* J, g0, g1, M of spline_piece.c against central differences of el_smooth_eval in
  * v = (phi, ln mu, k, q, L), and J's position rows against el_smooth_jacobian. */
 START_TEST(piece_jacobians_match_finite_differences)
 {

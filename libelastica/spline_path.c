@@ -1,0 +1,287 @@
+/*
+ * The paths of an elastic spline's solve (spline.c): from the start to the
+ * tension solution, and along the family of tension solutions to a length.
+ *
+ * Tension mode: Newton on the chain (spline_chain.c) from its start; if that
+ * fails, continuation in sigma from a high tension (sigma h^2 = 40: the pieces
+ * are then short and near the polygon) down to sigma.
+ * Length mode: pseudo-arclength continuation of the tension solutions in
+ * (angles, sigma) from the free batten (follow_length), since neither sigma
+ * nor the length parametrises the family (flat in sigma for moderate tension,
+ * folding back when buckled). Collinear points: the buckled strip, followed
+ * in length (el__spline_solve_buckled).
+ */
+#include "internal.h"
+#include <string.h>
+
+/* ------------------------------------------------------------------ continuation */
+
+/* Snapshots: to restore after a failed step, and the two last ones for the
+ * secant predictor. */
+static void snap_save(const el__spchain *w, el__spsnap *s)
+{
+    memcpy(s->x, w->x, w->n * sizeof *w->x);
+    for (size_t j = 0; j < w->m; j++) {
+        memcpy(s->v + j * EL__NV, w->pc[j].v, sizeof w->pc[j].v);
+        memcpy(s->st + j * EL__NV, w->pc[j].st, sizeof w->pc[j].st);
+    }
+    s->sigma = w->sigma;
+}
+
+static void snap_load(el__spchain *w, const el__spsnap *s)
+{
+    memcpy(w->x, s->x, w->n * sizeof *w->x);
+    for (size_t j = 0; j < w->m; j++) memcpy(w->pc[j].v, s->v + j * EL__NV, sizeof w->pc[j].v);
+    w->sigma = s->sigma;
+}
+
+/* The state at f = (t - tb)/(tb - ta) beyond b on the line through a and b
+ * (knot values, sigma, el__spiece states); b itself if a piece state is invalid. */
+static void predict(el__spchain *w, const el__spsnap *a, const el__spsnap *b, double f)
+{
+    for (size_t i = 0; i < w->n; i++) w->x[i] = b->x[i] + f * (b->x[i] - a->x[i]);
+    w->sigma = b->sigma + f * (b->sigma - a->sigma);
+    for (size_t j = 0; j < w->m; j++) {
+        double st[EL__NV];
+        for (int i = 0; i < EL__NV; i++) st[i] = b->st[j * EL__NV + i] + f * (b->st[j * EL__NV + i] - a->st[j * EL__NV + i]);
+        if (el__spiece_set_state(&w->pc[j], st)) { snap_load(w, b); return; }
+    }
+}
+
+/*
+ * Follow a one-parameter family from t = 0 (solved, in w) to t = 1: set(w, t)
+ * moves the target (sigma or length); each step starts from the secant
+ * predictor of the last two solutions and is corrected by Newton to EL__SP_NEAR
+ * (the last one to aim, accepted at accept). The first step is dt; it doubles
+ * after an easy success, grows by 1.3 after a slow one and halves after a
+ * failure (state restored); at most max_steps steps, giving up below 1e-6.
+ */
+static int continuation(el__spchain *w, el__spsnap sv[2], int max_steps, double dt,
+                        void (*set)(el__spchain *, double, const double *), const double *par,
+                        double aim, double accept)
+{
+    double t = 0.0, tp = -1.0;
+    el__spsnap *cur = &sv[0], *prev = &sv[1];
+    snap_save(w, cur);
+    for (int step = 0; step < max_steps; step++) {
+        const double tn = fmin(1.0, t + dt);
+        const int last = tn >= 1.0;
+        if (tp >= 0.0) predict(w, prev, cur, (tn - t) / (t - tp));
+        set(w, tn, par);
+        const int it0 = w->iterations;
+        const int st = last ? el__chain_newton(w, EL__SP_STEP_ITER, aim, accept)
+                            : el__chain_newton(w, EL__SP_STEP_ITER, 1e-3 * EL__SP_NEAR, EL__SP_NEAR);
+        if (st == EL_OK) {
+            if (last) return EL_OK;
+            el__spsnap *tmp = prev; prev = cur; cur = tmp;
+            snap_save(w, cur);
+            tp = t;
+            t = tn;
+            dt *= w->iterations - it0 <= 3 ? 2.0 : 1.3;
+            continue;
+        }
+        if (last && w->resid <= EL__SP_NEAR) { w->near = 1; return EL_ENOCONV; }
+        snap_load(w, cur);
+        set(w, t, par);
+        dt *= 0.5;
+        if (dt < 1e-6) break;
+    }
+    snap_load(w, cur);
+    return EL_ENOCONV;
+}
+
+/* sigma(t) between par[0] (t = 0) and par[1] geometrically in sigma + par[2]. */
+static void set_sigma(el__spchain *w, double t, const double *par)
+{
+    const double a = par[0] + par[2], b = par[1] + par[2];
+    w->sigma = t >= 1.0 ? par[1] : a * pow(b / a, t) - par[2];
+}
+
+/* L(t) from par[0] (t = 0) to par[1], geometrically in L - par[2] (the polygon's
+ * length, near which the bow is small). */
+static void set_length(el__spchain *w, double t, const double *par)
+{
+    const double a = par[0] - par[2], b = par[1] - par[2];
+    w->Lt = t >= 1.0 ? par[1] : par[2] + a * pow(b / a, t);
+}
+
+/* sigma(t) linear from par[0] to par[1]. */
+static void set_sigma_linear(el__spchain *w, double t, const double *par)
+{
+    w->sigma = t >= 1.0 ? par[1] : par[0] + t * (par[1] - par[0]);
+}
+
+static double total_length(const el__spchain *w)
+{
+    double L = 0.0;
+    for (size_t j = 0; j < w->m; j++) L += w->pc[j].v[EL__SP_L];
+    return L;
+}
+
+/* From the tension solution in w to the one at sigma (to EL__SP_NEAR); EL_OK or EL_ENOCONV. */
+static int move_sigma(el__spchain *w, el__spsnap sv[2], int *steps, double sigma)
+{
+    const double par[2] = {w->sigma, sigma};
+    const int st = continuation(w, sv, *steps, 1.0, set_sigma_linear, par,
+                                1e-3 * EL__SP_NEAR, EL__SP_NEAR);
+    (*steps)--;
+    return st;
+}
+
+/* Points of the pseudo-arclength path: knot values and sigma, the norm
+ * weighting sigma by 1/rho. */
+static double arc_dist(const el__spchain *w, const el__spsnap *a, const el__spsnap *b, double rho)
+{
+    double s2 = (b->sigma - a->sigma) * (b->sigma - a->sigma) / (rho * rho);
+    for (size_t i = 0; i < w->n; i++) s2 += (b->x[i] - a->x[i]) * (b->x[i] - a->x[i]);
+    return sqrt(s2);
+}
+
+/*
+ * Length mode from a tension solution (w, at w->sigma). The length L(sigma) of
+ * the tension solutions is nearly flat for moderate sigma and turns back at
+ * folds (a buckled batten, sigma < 0): neither sigma nor the length is a good
+ * parameter of the family, so it is followed by pseudo-arclength continuation
+ * in (knot values, sigma): each step fixes the projection on the secant of
+ * the last two solutions (the border row of the Newton system, instead of the
+ * length), towards the target length, until the length brackets it; then
+ * Newton with the length as the border equation from the interpolated state.
+ * Step: doubled after an easy success, halved after a failure, at most
+ * max_steps steps.
+ */
+static int follow_length(el__spchain *w, int max_steps, double Lt)
+{
+    el__spsnap *sv = w->snap;
+    int steps = max_steps;
+    el__spsnap *B = &sv[2], *C = &sv[0];   /* the base point and the next one */
+    const double rho = 1.0 + fabs(w->sigma);
+    double gb = total_length(w) - Lt, gc;
+    snap_save(w, B);
+    if (fabs(gb) > 1e-9 * Lt) {
+        /* a second point: sigma moved towards the length */
+        const double s1 = w->sigma + (gb < 0.0 ? -0.05 : 0.05) * rho;
+        if (move_sigma(w, sv, &steps, s1)) return EL_ENOCONV;
+        snap_save(w, C);
+        gc = total_length(w) - Lt;
+        double N = arc_dist(w, B, C, rho), h = 2.0 * N;
+        while (gc * gb > 0.0 || !(N > 0.0)) {
+            if (steps-- <= 0 || !(N > 0.0) || !(h > 1e-9)) return EL_ENOCONV;
+            /* the secant B -> C is the tangent; C is the base of the next step */
+            for (size_t i = 0; i < w->n; i++) {
+                w->arc_a[i] = (C->x[i] - B->x[i]) / N;
+                w->arc_x0[i] = C->x[i];
+            }
+            w->arc_b = (C->sigma - B->sigma) / (N * rho * rho);
+            w->arc_s0 = C->sigma;
+            w->arc_h = h;
+            predict(w, B, C, h / N);
+            w->lmode = EL__BORDER_ARC;
+            const int it0 = w->iterations;
+            const int st = el__chain_newton(w, EL__SP_STEP_ITER, 1e-3 * EL__SP_NEAR, EL__SP_NEAR);
+            w->lmode = 0;
+            if (st) { snap_load(w, C); h *= 0.5; continue; }
+            const double gn = total_length(w) - Lt;
+            if (gn * gc <= 0.0) {
+                /* bracketed between C and the new point D: Newton on the length from
+                 * the interpolated state; if that fails, a shorter step from C */
+                el__spsnap *D = B;
+                snap_save(w, D);
+                predict(w, C, D, gn / (gc - gn));
+                w->lmode = EL__BORDER_LENGTH;
+                w->Lt = Lt;
+                if (el__chain_newton(w, EL__SP_DIRECT_ITER, w->aim, w->tol) == EL_OK) return EL_OK;
+                w->lmode = 0;
+                if (steps-- <= 0) return EL_ENOCONV;
+                /* B (overwritten by D) must again be the point before C: C - (D - C) scaled */
+                const double back = -1.0;
+                for (size_t i = 0; i < w->n; i++) D->x[i] = C->x[i] + back * (D->x[i] - C->x[i]);
+                D->sigma = C->sigma + back * (D->sigma - C->sigma);
+                for (size_t i = 0; i < EL__NV * w->m; i++) D->st[i] = C->st[i] + back * (D->st[i] - C->st[i]);
+                N = arc_dist(w, B, C, rho);
+                snap_load(w, C);
+                h *= 0.25;
+                continue;
+            }
+            el__spsnap *tmp = B; B = C; C = tmp;
+            snap_save(w, C);
+            gb = gc;
+            gc = gn;
+            N = arc_dist(w, B, C, rho);
+            if (w->iterations - it0 <= 3) h *= 2.0;
+        }
+    }
+    w->lmode = EL__BORDER_LENGTH;
+    w->Lt = Lt;
+    return el__chain_newton(w, EL__SP_DIRECT_ITER, w->aim, w->tol);
+}
+
+/* The tension solution at w->sigma: directly, else by continuation from a high
+ * tension. final: to tol (else to EL__SP_NEAR, as a start for the length mode). */
+int el__spline_solve_tension(el__spchain *w, int max_steps, int final)
+{
+    const double target = w->sigma;
+    const double aim = final ? w->aim : 1e-3 * EL__SP_NEAR, accept = final ? w->tol : EL__SP_NEAR;
+    el__chain_start_angles(w);
+    int st = el__chain_start_pieces(w);
+    if (st == EL_ENOMEM) return st;
+    if (!st) {
+        if (el__chain_newton(w, EL__SP_DIRECT_ITER, aim, accept) == EL_OK) return EL_OK;
+        if (final && w->resid <= EL__SP_NEAR) { w->near = 1; return EL_ENOCONV; }
+    }
+    /* from a high tension: sigma h^2 = 40 on the mean chord (the unit here) */
+    const double hi = fmax(40.0, 4.0 * target);
+    w->sigma = hi;
+    el__chain_start_angles(w);
+    if ((st = el__chain_start_pieces(w))) return st == EL_ENOMEM ? st : EL_ENOCONV;
+    if (el__chain_newton(w, EL__SP_DIRECT_ITER, 1e-3 * EL__SP_NEAR, EL__SP_NEAR) != EL_OK) return EL_ENOCONV;
+    const double par[3] = {hi, target, 1.0};
+    return continuation(w, w->snap, max_steps, 0.25, set_sigma, par, aim, accept);
+}
+
+/*
+ * Length mode: a tension solution, then sigma free with the length as its
+ * equation (follow_length): from the free batten, or where the continuation
+ * towards it stopped (it need not exist).
+ */
+int el__spline_solve_length(el__spchain *w, int max_steps, double Lt)
+{
+    w->lmode = 0;
+    w->sigma = 0.0;
+    int st = el__spline_solve_tension(w, max_steps, 0);
+    if (st == EL_ENOCONV && isfinite(el__chain_eval(w, 1)) && w->resid <= EL__SP_NEAR) st = EL_OK;
+    if (!st) st = follow_length(w, max_steps, Lt);
+    if (st == EL_ENOCONV && w->lmode && w->resid <= EL__SP_NEAR) w->near = 1;
+    return st;
+}
+
+/*
+ * Collinear points, a length Lt longer than the line (Lp): Euler's buckled
+ * strip (first mode, bowed to the left), theta = dir + Theta cos(pi s / D),
+ * L / D - 1 ~ Theta^2 / 4, sigma = -2 (pi / D)^2 (the linearised
+ * 2 kappa'' = sigma kappa), solved with a small bow (where that is accurate),
+ * then followed in length.
+ */
+int el__spline_solve_buckled(el__spchain *w, int max_steps, double dir, double Lp, double Lt)
+{
+    const size_t n = w->n, m = w->m;
+    const double L1 = fmin(Lt, Lp * (1.0 + 1e-3));
+    const double D = Lp, Th = 2.0 * sqrt(L1 / Lp - 1.0);
+    double sx = 0.0;
+    for (size_t i = 0; i < n; i++) {
+        if (w->slot[i] == EL__SLOT_ANGLE) w->x[i] = dir + Th * cos(M_PI * sx / D);
+        if (i < m) sx += w->pc[i].h;
+    }
+    w->sigma = -2.0 * M_PI * M_PI / (D * D);
+    if (w->slot[0] == EL__SLOT_TENSION) w->x[0] = w->sigma;
+    if (w->slot[n - 1] == EL__SLOT_TENSION) w->x[n - 1] = w->sigma;
+    int st = el__chain_start_pieces(w);
+    w->lmode = EL__BORDER_LENGTH;
+    w->Lt = L1;
+    if (!st) st = el__chain_newton(w, EL__SP_DIRECT_ITER, 1e-3 * EL__SP_NEAR, EL__SP_NEAR);
+    if (!st && Lt > L1) {
+        const double par[3] = {L1, Lt, Lp};
+        st = continuation(w, w->snap, max_steps, 0.25, set_length, par, w->aim, w->tol);
+    }
+    if (st == EL_ENOCONV && w->resid <= EL__SP_NEAR) w->near = 1;
+    return st;
+}
