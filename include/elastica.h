@@ -716,13 +716,18 @@ void el_spline_options_defaults(el_spline_options *opt);
  * circles through three consecutive points, pieces from the linearised batten
  * or, where the tangents are far from the chord, the least-energy Hermite
  * elastica (el_hermite_solve). If Newton fails there: continuation from a high
- * tension (sigma h^2 = 40) down to sigma. Length mode: from the free batten (or
- * as near sigma = 0 as continuation gets), pseudo-arclength continuation in
- * (angles, sigma) until the length is bracketed, then Newton with the length as
- * the border equation. Work is bounded: at most max_steps continuation steps of
- * at most max_iter Newton iterations (20 for a first attempt, 12 for a step),
- * each with at most 12 step halvings, each O(n); 100 points take about 1 ms of
- * CPU, 1000 about 10 ms (bench/).
+ * tension (sigma h^2 = 40) down to sigma. Length mode: the tension solution of
+ * that length on the family through the free batten (or as near sigma = 0 as
+ * continuation gets), the first one met following it: Newton with the length as
+ * an equation from the start, then from the free batten, each trusted only
+ * while it contracts (no fold crossed); else pseudo-arclength continuation in
+ * (angles, sigma) until the length is bracketed, then that Newton. Work is
+ * bounded: at most max_steps continuation steps of at most max_iter Newton
+ * iterations (20 for a first attempt, 12 for a step), each with at most 12 step
+ * halvings, each O(n); 100 points take about 1.5 ms of CPU, 1000 about 12 ms,
+ * in either mode when the length is near the free batten's (bench/); lengths
+ * far from it (a batten pushed into waves between its ducks, or pulled nearly
+ * straight) take tens of continuation steps.
  * End conditions (open curves): natural or tangent at either end: a batten
  * with given tension has exactly one degree of freedom per end. A G2 end
  * (tangent and curvature) asks one more: the span next to it takes its own

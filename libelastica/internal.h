@@ -161,6 +161,10 @@ typedef struct el__spchain {
     double *xs;              /* backup of x */
     el__spstep *ps;          /* the pieces' Newton steps */
     double Gres;             /* border residual */
+    double gscale;           /* its weight in the merit (el__chain_newton) */
+    double den;              /* d(border residual)/d sigma along the solutions, last iterate */
+    int contract;            /* el__chain_newton: only while it contracts */
+    int newton_first;        /* length mode: try Newton before the continuation */
     double *snapbuf;         /* the snapshots' arrays */
     el__spsnap snap[3];
     double *arc_a, *arc_x0;  /* BORDER_ARC: arc_a . (x - arc_x0) + arc_b (sigma - arc_s0) = arc_h */
@@ -194,6 +198,11 @@ int el__spline_solve_length(el__spchain *w, int max_steps, double Lt);
 /* Length mode on collinear points: the buckled batten of length Lt (> the
  * polygon's Lp), the line's direction dir. */
 int el__spline_solve_buckled(el__spchain *w, int max_steps, double dir, double Lp, double Lt);
+
+/* el_spline_solve; newton_first = 0: length mode by the continuation alone
+ * (follow_length, the plain counterpart of the Newton attempts), for the tests. */
+int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *opt,
+                           int newton_first, el_spline_result *res);
 
 /* For the tests of spline.c: the piece p as the Hermite elastica of its own ends
  * (h = |gamma(L) - gamma(0)|), v = (phi, ln mu, k, q, L): J[25] = dR/dv with

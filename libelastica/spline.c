@@ -197,6 +197,12 @@ static int make_result(const el__spchain *w, const double *xy, double S, el_spli
 int el_spline_solve(const double *xy, size_t n, const el_spline_options *opt,
                     el_spline_result *res)
 {
+    return el__spline_solve_paths(xy, n, opt, 1, res);
+}
+
+int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *opt,
+                           int newton_first, el_spline_result *res)
+{
     if (!res) return EL_EINVAL;
     memset(res, 0, sizeof *res);
     if (!xy || !opt || n < 2 || check_options(opt)) return EL_EINVAL;
@@ -226,7 +232,7 @@ int el_spline_solve(const double *xy, size_t n, const el_spline_options *opt,
     int st = el__chain_alloc(&w, n, m);
     if (st) goto done;
     const double S = Lp / (double)m;   /* the unit: mean chord */
-    w.closed = closed; w.lmode = lmode;
+    w.closed = closed; w.lmode = lmode; w.newton_first = newton_first;
     w.tol = opt->tol; w.max_iter = opt->max_iter;
     w.aim = fmax(1e-14, 0.1 * opt->tol);
     w.sigma = lmode ? 1.0 : opt->sigma * S * S;

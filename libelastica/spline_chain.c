@@ -103,7 +103,7 @@ double el__chain_eval(el__spchain *w, int jac)
         rmax = fmax(rmax, fabs(a));
     } else if (w->lmode) {
         w->Gres = (Lsum - w->Lt) / w->Lt;
-        merit += w->Gres * w->Gres;
+        merit += w->Gres * w->Gres * w->gscale * w->gscale;
         rmax = fmax(rmax, fabs(w->Gres));
     }
     w->resid = rmax;
@@ -194,26 +194,64 @@ static int chain_direction(el__spchain *w, double *ds)
         const double den = d - rz;
         if (!(fabs(den) > 1e-300)) return EL_ESINGULAR;
         *ds = (gr - ry) / den;
+        w->den = den;
         for (size_t i = 0; i < n; i++) w->y[i] -= w->z[i] * *ds;
         if (!isfinite(*ds) || el__all_finite(w->y, n)) return EL_ESINGULAR;
     }
     return EL_OK;
 }
 
-/* Newton on the whole chain from the current state until the residual is at
+/* The size of a Newton correction: the largest change of an angle (rad), of a
+ * G2 span's tension and of sigma, these relative to 1 + their value. */
+static double correction_size(const el__spchain *w, double ds)
+{
+    double th = fabs(ds) / (1.0 + fabs(w->sigma));
+    for (size_t i = 0; i < w->n; i++)
+        th = fmax(th, w->slot[i] == EL__SLOT_TENSION ? fabs(w->y[i]) / (1.0 + fabs(w->x[i]))
+                                                     : fabs(w->y[i]));
+    return th;
+}
+
+/*
+ * Newton on the whole chain from the current state until the residual is at
  * most aim (or stalls), at most cap iterations (and the options' max_iter);
- * EL_OK when it ends at most accept. */
+ * EL_OK when it ends at most accept.
+ * w->contract: Newton trusted only while it contracts (Deuflhard's restricted
+ * monotonicity): each correction at most (1 - al/2) times the one before (al:
+ * the fraction of it taken), no step halved for the merit, and the derivative
+ * of the border equation in sigma along the solutions (the Schur complement
+ * den) of one sign (no fold crossed); else EL_ENOCONV at once. In length mode
+ * the length residual then enters the merit divided by |den| at the start (at
+ * least 1): in units of sigma, the unknown it moves. A length nearly flat in
+ * sigma (many points) otherwise weighs a change of sigma h^2 ~ 1 as 1e-10 and
+ * Armijo refuses the step it needs.
+ */
 int el__chain_newton(el__spchain *w, int cap, double aim, double accept)
 {
     const size_t n = w->n, m = w->m;
+    w->gscale = 1.0;
     double merit = el__chain_eval(w, 1);
     if (!isfinite(merit)) return EL_ENOCONV;
     const int limit = cap < w->max_iter ? cap : w->max_iter;
+    double bound = INFINITY, den0 = 0.0;
     for (int it = 0; it < limit; it++) {
         if (w->resid <= aim) return EL_OK;
         double ds;
         if (chain_direction(w, &ds)) break;
         w->iterations++;
+        double size = 0.0;
+        if (w->contract) {
+            size = correction_size(w, ds);
+            if (it == 0) {
+                den0 = w->den;
+                if (w->lmode == EL__BORDER_LENGTH) {
+                    merit -= w->Gres * w->Gres;
+                    w->gscale = fmin(fmax(1.0, 1.0 / fabs(den0)), 1e8);
+                    merit += w->Gres * w->Gres * w->gscale * w->gscale;
+                }
+            }
+            if (size > bound || (w->lmode && !(w->den * den0 > 0.0))) break;
+        }
         /* step limits */
         double al = 1.0, dxm = 0.0;
         for (size_t i = 0; i < n; i++)
@@ -241,7 +279,7 @@ int el__chain_newton(el__spchain *w, int cap, double aim, double accept)
         int ok = 0;
         double mnew = INFINITY;
         /* already accepted: a step that does not help is rounding, not worth halving */
-        const int halvings = w->resid <= accept ? 0 : EL__SP_HALVINGS;
+        const int halvings = w->resid <= accept || w->contract ? 0 : EL__SP_HALVINGS;
         for (int hv = 0; hv <= halvings; hv++, al *= 0.5) {
             for (size_t i = 0; i < n; i++) w->x[i] = w->xs[i] + al * w->y[i];
             w->sigma = sigma0 + al * ds;
@@ -259,6 +297,7 @@ int el__chain_newton(el__spchain *w, int cap, double aim, double accept)
             break;
         }
         merit = mnew;
+        bound = (1.0 - 0.5 * al) * size;
     }
     return w->resid <= accept ? EL_OK : EL_ENOCONV;
 }

@@ -5,11 +5,12 @@
  * Tension mode: Newton on the chain (spline_chain.c) from its start; if that
  * fails, continuation in sigma from a high tension (sigma h^2 = 40: the pieces
  * are then short and near the polygon) down to sigma.
- * Length mode: pseudo-arclength continuation of the tension solutions in
- * (angles, sigma) from the free batten (follow_length), since neither sigma
- * nor the length parametrises the family (flat in sigma for moderate tension,
- * folding back when buckled). Collinear points: the buckled strip, followed
- * in length (el__spline_solve_buckled).
+ * Length mode: Newton with the length as an equation where it contracts, else
+ * pseudo-arclength continuation of the tension solutions in (angles, sigma)
+ * from the free batten (follow_length), since neither sigma nor the length
+ * parametrises the family (flat in sigma for moderate tension, folding back
+ * when buckled) (el__spline_solve_length). Collinear points: the buckled
+ * strip, followed in length (el__spline_solve_buckled).
  */
 #include "internal.h"
 #include <string.h>
@@ -238,18 +239,59 @@ int el__spline_solve_tension(el__spchain *w, int max_steps, int final)
     return continuation(w, w->snap, max_steps, 0.25, set_sigma, par, aim, accept);
 }
 
+/* Newton in length mode (the length as the border equation, sigma unknown),
+ * trusted only while it contracts (el__chain_newton). */
+static int length_newton(el__spchain *w, double Lt)
+{
+    w->lmode = EL__BORDER_LENGTH;
+    w->Lt = Lt;
+    w->contract = 1;
+    const int st = el__chain_newton(w, EL__SP_DIRECT_ITER, w->aim, w->tol);
+    w->contract = 0;
+    return st;
+}
+
 /*
- * Length mode: a tension solution, then sigma free with the length as its
- * equation (follow_length): from the free batten, or where the continuation
- * towards it stopped (it need not exist).
+ * Length mode. The solution is the tension solution of the family through the
+ * free batten (sigma = 0) whose length is Lt, the first one met following the
+ * family from the free batten (follow_length). Cheaper, in this order:
+ *  1. Newton on (angles, sigma) with the length equation from the start
+ *     (el__chain_start_angles at sigma = 0);
+ *  2. the free batten (or as near sigma = 0 as continuation gets: it need not
+ *     exist), then the same Newton from it: its first step is the tangent
+ *     predictor of the family, sigma moved by (Lt - L) / (dL/dsigma);
+ *  3. follow_length from the free batten.
+ * 1 and 2 are accepted only if Newton contracts all the way, without crossing
+ * a fold (el__chain_newton's w->contract): the solution is then the one
+ * nearest the start, the one the continuation reaches (checked against it on
+ * random data); a target far along the family, past a fold or where the
+ * length is far from linear in sigma, falls through to 3.
  */
 int el__spline_solve_length(el__spchain *w, int max_steps, double Lt)
 {
+    el__spsnap *free_batten = &w->snap[2];
     w->lmode = 0;
     w->sigma = 0.0;
-    int st = el__spline_solve_tension(w, max_steps, 0);
+    int st;
+    if (w->newton_first) {
+        el__chain_start_angles(w);
+        st = el__chain_start_pieces(w);
+        if (st == EL_ENOMEM) return st;
+        if (!st && length_newton(w, Lt) == EL_OK) return EL_OK;
+        w->lmode = 0;
+        w->sigma = 0.0;
+    }
+    st = el__spline_solve_tension(w, max_steps, 0);
     if (st == EL_ENOCONV && isfinite(el__chain_eval(w, 1)) && w->resid <= EL__SP_NEAR) st = EL_OK;
-    if (!st) st = follow_length(w, max_steps, Lt);
+    if (st) return st;
+    if (w->newton_first) {
+        snap_save(w, free_batten);
+        if (length_newton(w, Lt) == EL_OK) return EL_OK;
+        w->lmode = 0;
+        snap_load(w, free_batten);
+        el__chain_eval(w, 1);   /* the pieces' states, which follow_length's snapshots keep */
+    }
+    st = follow_length(w, max_steps, Lt);
     if (st == EL_ENOCONV && w->lmode && w->resid <= EL__SP_NEAR) w->near = 1;
     return st;
 }

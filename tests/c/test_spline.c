@@ -397,6 +397,85 @@ START_TEST(length_mode_meets_the_length_and_the_tension_mode)
 }
 END_TEST
 
+/*
+ * Length mode tries Newton with the length as an equation first (from the
+ * start, then from the free batten), trusted only while it contracts; its
+ * plain counterpart is the continuation along the tension solutions from the
+ * free batten (el__spline_solve_paths with newton_first = 0). Over smooth,
+ * unevenly sampled curves (open with natural, clamped and G2 ends, closed),
+ * lengths from near the polygon to well past the free batten: the same
+ * status and the same spline (angles, curvatures, energy; sigma to its
+ * conditioning), and Newton is what solved the near targets (fewer iterations).
+ */
+START_TEST(length_mode_newton_equals_the_continuation)
+{
+    unsigned long long seed = 20240611ULL;
+    int solved = 0, by_newton = 0;
+    for (int trial = 0; trial < 48; trial++) {
+        const size_t n = 4 + (size_t)test_uniform(&seed, 0, 30);
+        const double a1 = test_uniform(&seed, 0.2, 1.2), w1 = test_uniform(&seed, 0.3, 1.5);
+        const double a2 = test_uniform(&seed, 0.0, 0.4), w2 = test_uniform(&seed, 1.0, 3.0);
+        const double X = test_uniform(&seed, 4.0, 12.0), ph = test_uniform(&seed, 0.0, 3.0);
+        const double un = test_uniform(&seed, 0.2, 1.0);
+        el_spline_options o = opts(EL_SPLINE_TENSION, 0.0);
+        o.closed = trial % 8 == 7;
+        double xy[2 * 40];
+        for (size_t i = 0; i < n; i++) {
+            double t = (double)i / (double)(n - 1);
+            t += 0.4 * un * t * (1.0 - t) * sin(ph + 5.0 * t);   /* uneven spacing */
+            if (o.closed) {
+                const double u = 2.0 * M_PI * t * (double)(n - 1) / (double)n;
+                xy[2 * i] = 0.3 * X * cos(u) * (1.0 + a2 * cos(3.0 * u));
+                xy[2 * i + 1] = 0.2 * X * sin(u);
+            } else {
+                xy[2 * i] = X * t;
+                xy[2 * i + 1] = a1 * sin(w1 * X * t) + a2 * cos(w2 * X * t);
+            }
+        }
+        if (trial % 4 == 1) {
+            o.start.kind = EL_SPLINE_TANGENT;
+            o.start.tangent[0] = 1.0; o.start.tangent[1] = test_uniform(&seed, -1.0, 1.0);
+        }
+        if (trial % 6 == 2 && n > 4) {
+            o.end.kind = EL_SPLINE_G2;
+            o.end.tangent[0] = 1.0; o.end.tangent[1] = test_uniform(&seed, -1.0, 1.0);
+            o.end.curvature = test_uniform(&seed, -0.5, 0.5);
+        }
+        el_spline_result r, rc;
+        if (solve(xy, n, &o, &r) != EL_OK) { el_spline_result_free(&r); continue; }
+        const double Lfree = r.length;
+        el_spline_result_free(&r);
+        double Lp = 0.0;
+        for (size_t j = 0; j < (o.closed ? n : n - 1); j++) {
+            const size_t e = (j + 1) % n;
+            Lp += hypot(xy[2 * e] - xy[2 * j], xy[2 * e + 1] - xy[2 * j + 1]);
+        }
+        const double f = test_uniform(&seed, -1.0, 1.0);
+        o.mode = EL_SPLINE_LENGTH;
+        o.length = f < 0.0 ? Lfree + 0.5 * f * (Lfree - Lp) : Lfree * (1.0 + 0.06 * f * f);
+        const int st = solve(xy, n, &o, &r), stc = el__spline_solve_paths(xy, n, &o, 0, &rc);
+        ck_assert_msg(st == stc, "trial %d: status %d, by continuation %d", trial, st, stc);
+        if (st == EL_OK) {
+            check_spline(xy, n, &o, &r, 1e-9);
+            check_spline(xy, n, &o, &rc, 1e-9);
+            for (size_t i = 0; i < r.npoints; i++) {
+                ck_assert_msg(fabs(r.angles[i] - rc.angles[i]) <= 1e-9, "trial %d angle %zu: %.17g %.17g",
+                              trial, i, r.angles[i], rc.angles[i]);
+                ck_assert_close(r.curvatures[i], rc.curvatures[i], 1e-8 * (1.0 + r.max_curvature));
+            }
+            ck_assert_close(r.energy, rc.energy, 1e-9 * r.energy);
+            ck_assert_close(r.sigma, rc.sigma, 1e-6 * (1.0 + fabs(r.sigma)));
+            solved++;
+            by_newton += r.iterations < rc.iterations;
+        }
+        el_spline_result_free(&r);
+        el_spline_result_free(&rc);
+    }
+    ck_assert_int_ge(solved, 30);
+    ck_assert_int_ge(by_newton, solved / 3);
+}
+END_TEST
+
 START_TEST(closed_curves)
 {
     /* an ellipse sampled unevenly, and a rounded square */
@@ -770,6 +849,7 @@ int main(void)
     tcase_add_test(tc, random_points_and_tensions);
     tcase_add_test(tc, spline_is_a_critical_point_of_the_energy);
     tcase_add_test(tc, length_mode_meets_the_length_and_the_tension_mode);
+    tcase_add_test(tc, length_mode_newton_equals_the_continuation);
     tcase_add_test(tc, closed_curves);
     tcase_add_test(tc, clamped_and_g2_ends);
     tcase_add_test(tc, degenerate_inputs);
