@@ -139,6 +139,9 @@ enum { EL__SP_DIRECT_ITER = 20, EL__SP_STEP_ITER = 12 };
 /* Residual of a state that is a solution up to what the parametrisation resolves
  * (header: near the separatrix, near a circle), accepted on the way. */
 #define EL__SP_NEAR 1e-6
+/* The residual a spline whose pieces are circular arcs (kappa^2 = sigma, no
+ * force: |k| = infinity) reaches in el_smooth_params (|k| ~ 1e4: ~1e-8). */
+#define EL__SP_CIRCLE_RESID 1e-7
 
 /* A solved state of the chain: knot values, every piece's v and state, sigma. */
 typedef struct el__spsnap {

@@ -113,8 +113,14 @@ static double piece_max_curvature(const el_smooth_params *p, double Kq, double k
     return m;
 }
 
-/* Fill res from the solved chain (original units), measuring the residual. */
-static int make_result(const el__spchain *w, const double *xy, double S, el_spline_result *res)
+/* A piece that is a circular arc to what el_smooth_params resolves: |k| this
+ * large (piece_from_state keeps |k| <~ 1e4 there, as el_hermite_solve). */
+static int circle_piece(const el_smooth_params *p) { return fabs(p->k) >= 1e3; }
+
+/* Fill res from the solved chain (original units), measuring the residual;
+ * *other: the part of it from joints and ends without a circle piece. */
+static int make_result(const el__spchain *w, const double *xy, double S, el_spline_result *res,
+                       double *other)
 {
     const size_t n = w->n, m = w->m;
     el_spline_result r;
@@ -132,7 +138,7 @@ static int make_result(const el__spchain *w, const double *xy, double S, el_spli
         free(ends);
         return EL_ENOMEM;
     }
-    double resid = 0.0;
+    double resid = 0.0, rest = 0.0;
     /* tension mode: the given sigma exactly (not through the unit S) */
     r.sigma = w->lmode ? w->sigma / (S * S) : w->sigma_user;
     for (size_t j = 0; j < m; j++) {
@@ -155,7 +161,9 @@ static int make_result(const el__spchain *w, const double *xy, double S, el_spli
         if (st) { el_spline_result_free(&r); free(ends); return st; }
         const size_t e = (j + 1) % n;
         const double h = hypot(xy[2 * e] - xy[2 * j], xy[2 * e + 1] - xy[2 * j + 1]);
-        resid = fmax(resid, hypot(pt[2] - xy[2 * e], pt[3] - xy[2 * e + 1]) / h);
+        const double rp = hypot(pt[2] - xy[2 * e], pt[3] - xy[2 * e + 1]) / h;
+        resid = fmax(resid, rp);
+        if (!circle_piece(p)) rest = fmax(rest, rp);
         r.angles[j] = th[0];
         r.curvatures[j] = ka[0];
         ends[2 * j] = th[1];
@@ -173,22 +181,32 @@ static int make_result(const el__spchain *w, const double *xy, double S, el_spli
     /* the joints and the end conditions */
     for (size_t i = 0; i < n; i++) {
         const double lr = w->ell[i] * S;
+        double ri = 0.0;
+        int circle;
         if (!w->closed && (i == 0 || i == n - 1)) {
             const int e = i == 0 ? 0 : 1;
             const double kap = r.curvatures[i];
-            if (w->kind[e] == EL_SPLINE_NATURAL) resid = fmax(resid, fabs(kap) * lr);
-            if (w->kind[e] == EL_SPLINE_G2) resid = fmax(resid, fabs(kap - w->kg[e] / S) * lr);
+            if (w->kind[e] == EL_SPLINE_NATURAL) ri = fabs(kap) * lr;
+            if (w->kind[e] == EL_SPLINE_G2) ri = fabs(kap - w->kg[e] / S) * lr;
             if (w->kind[e] != EL_SPLINE_NATURAL)
-                resid = fmax(resid, fabs(el__wrap_pi(r.angles[i] - w->th_end[e])));
-            continue;
+                ri = fmax(ri, fabs(el__wrap_pi(r.angles[i] - w->th_end[e])));
+            circle = circle_piece(&r.pieces[i == 0 ? 0 : m - 1]);
+        } else {
+            const size_t jm = (i + m - 1) % m;
+            ri = fmax(fabs(el__wrap_pi(ends[2 * jm] - r.angles[i])), fabs(ends[2 * jm + 1] - r.curvatures[i]) * lr);
+            circle = circle_piece(&r.pieces[jm]) || circle_piece(&r.pieces[i % m]);
         }
-        const size_t jm = (i + m - 1) % m;
-        resid = fmax(resid, fabs(el__wrap_pi(ends[2 * jm] - r.angles[i])));
-        resid = fmax(resid, fabs(ends[2 * jm + 1] - r.curvatures[i]) * lr);
+        resid = fmax(resid, ri);
+        if (!circle) rest = fmax(rest, ri);
     }
     free(ends);
-    if (w->lmode == EL__BORDER_LENGTH) resid = fmax(resid, fabs(r.length - w->Lt * S) / (w->Lt * S));
+    if (w->lmode == EL__BORDER_LENGTH) {
+        const double rl = fabs(r.length - w->Lt * S) / (w->Lt * S);
+        resid = fmax(resid, rl);
+        rest = fmax(rest, rl);
+    }
     r.residual = resid;
+    *other = rest;
     r.iterations = w->iterations;
     *res = r;
     return EL_OK;
@@ -252,11 +270,17 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
         w.slot[i] = EL__SLOT_ANGLE;
     }
     if (!closed) {
+        /* the chord angles at both ends, the last one unwrapped along the chain
+         * (as the knot angles are): a clamped end is within pi of its chord */
+        double chord[2] = {atan2(w.pc[0].dy, w.pc[0].dx), 0.0};
+        chord[1] = chord[0];
+        for (size_t j = 1; j < m; j++)
+            chord[1] += el__wrap_pi(atan2(w.pc[j].dy, w.pc[j].dx) - atan2(w.pc[j - 1].dy, w.pc[j - 1].dx));
         const el_spline_end *e[2] = {&opt->start, &opt->end};
         for (int i = 0; i < 2; i++) {
             w.kind[i] = e[i]->kind;
             if (e[i]->kind == EL_SPLINE_NATURAL) continue;
-            const double c = atan2(w.pc[i ? m - 1 : 0].dy, w.pc[i ? m - 1 : 0].dx);
+            const double c = chord[i];
             w.th_end[i] = c + el__wrap_pi(atan2(e[i]->tangent[1], e[i]->tangent[0]) - c);
             w.kg[i] = e[i]->kind == EL_SPLINE_G2 ? e[i]->curvature * S : 0.0;
             w.slot[i ? n - 1 : 0] = e[i]->kind == EL_SPLINE_G2 ? EL__SLOT_TENSION : EL__SLOT_FIXED;
@@ -275,7 +299,8 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
         if (w.slot[n - 1] == EL__SLOT_TENSION) w.x[n - 1] = w.sigma;
         if (lmode) { w.sigma = 0.0; w.Lt = Lp / S; }
         el__chain_eval(&w, 0);
-        st = make_result(&w, xy, S, res);
+        double other;
+        st = make_result(&w, xy, S, res, &other);
         if (!st && lmode) res->sigma = 0.0;
         goto done;
     }
@@ -288,9 +313,12 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
         st = el__spline_solve_length(&w, opt->max_steps, opt->length / S);
     if (st == EL_ENOMEM) goto done;
     if (!st || w.near) {   /* a solution, or one to what the parametrisation resolves */
-        const int st2 = make_result(&w, xy, S, res);
+        double other;
+        const int st2 = make_result(&w, xy, S, res, &other);
         if (st2) { st = st2; goto done; }
-        if (!(res->residual <= opt->tol)) st = EL_ENOCONV;
+        /* circle pieces are accepted at what el_smooth_params resolves (header) */
+        st = res->residual <= opt->tol || (other <= opt->tol && res->residual <= EL__SP_CIRCLE_RESID)
+                 ? EL_OK : EL_ENOCONV;
         goto done;
     }
     /* no solution found: for sigma = 0 the free-sliding batten slides off its ducks */

@@ -406,5 +406,6 @@ int el__chain_alloc(el__spchain *w, size_t n, size_t m)
     }
     w->n = n;
     w->m = m;
+    w->resid = INFINITY;   /* not evaluated yet: no state is a solution */
     return EL_OK;
 }

@@ -8,7 +8,10 @@
 #include "internal.h"
 #include <float.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <gsl/gsl_eigen.h>
+#include <gsl/gsl_sort_vector.h>
 
 static double wrap(double a) { return a - 2.0 * M_PI * nearbyint(a / (2.0 * M_PI)); }
 
@@ -601,6 +604,169 @@ START_TEST(degenerate_inputs)
 }
 END_TEST
 
+/* ------------------------------------------------------------------ buckling */
+
+/* The least two eigenvalues lambda of the batten on the line, linearised
+ * (integral w''^2 = lambda integral w'^2 at a critical point, w = 0 at the
+ * ducks xs[0..n-1], slope free at the ends or zero where clamped), by cubic
+ * Hermite finite elements, 8 per span, and GSL's dense generalised symmetric
+ * eigensolver: independent of spline_path.c's stability functions. */
+static void fe_buckling(const double *xs, int n, int clamp0, int clamp1, double lam[2])
+{
+    enum { SUB = 8 };
+    const int ne = SUB * (n - 1), nd = 2 * (ne + 1);
+    int *map = malloc(nd * sizeof *map), nf = 0;
+    for (int d = 0; d < nd; d++) {
+        const int node = d / 2, slope = d % 2;
+        const int duck = node % SUB == 0;
+        const int fixed = (!slope && duck) || (slope && ((node == 0 && clamp0) || (node == ne && clamp1)));
+        map[d] = fixed ? -1 : nf++;
+    }
+    gsl_matrix *K = gsl_matrix_calloc(nf, nf), *G = gsl_matrix_calloc(nf, nf);
+    for (int e = 0; e < ne; e++) {
+        const int span = e / SUB;
+        const double h = (xs[span + 1] - xs[span]) / SUB;
+        const double k[4][4] = {{12, 6 * h, -12, 6 * h}, {6 * h, 4 * h * h, -6 * h, 2 * h * h},
+                                {-12, -6 * h, 12, -6 * h}, {6 * h, 2 * h * h, -6 * h, 4 * h * h}};
+        const double g[4][4] = {{36, 3 * h, -36, 3 * h}, {3 * h, 4 * h * h, -3 * h, -h * h},
+                                {-36, -3 * h, 36, -3 * h}, {3 * h, -h * h, -3 * h, 4 * h * h}};
+        for (int a = 0; a < 4; a++)
+            for (int b = 0; b < 4; b++) {
+                const int ia = map[2 * e + a], ib = map[2 * e + b];
+                if (ia < 0 || ib < 0) continue;
+                *gsl_matrix_ptr(K, ia, ib) += k[a][b] / (h * h * h);
+                *gsl_matrix_ptr(G, ia, ib) += g[a][b] / (30.0 * h);
+            }
+    }
+    gsl_vector *ev = gsl_vector_alloc(nf);
+    gsl_eigen_gensymm_workspace *ws = gsl_eigen_gensymm_alloc(nf);
+    ck_assert_int_eq(gsl_eigen_gensymm(K, G, ev, ws), 0);
+    gsl_sort_vector(ev);
+    lam[0] = gsl_vector_get(ev, 0);
+    lam[1] = gsl_vector_get(ev, 1);
+    gsl_eigen_gensymm_free(ws);
+    gsl_vector_free(ev);
+    gsl_matrix_free(K);
+    gsl_matrix_free(G);
+    free(map);
+}
+
+/* Side of the line y = 0 a piece bows to: the sign of y at its middle. */
+static double bow(const el_smooth_params *p)
+{
+    double xy[2], s = 0.5 * p->length;
+    ck_assert_int_eq(el_smooth_eval(p, 1, &s, xy, NULL, NULL), EL_OK);
+    return xy[1];
+}
+
+/*
+ * Collinear points and a length longer than the line: the batten buckles in
+ * its first mode, the one of least energy, its largest bow to the left.
+ * Equal spans: the pinned Euler strip of one span repeated with alternating
+ * sides (kappa = 0 at every duck), so each span is the two-point spline of a
+ * third of the length. Uneven spans: at a small excess, -sigma / 2 is the
+ * least eigenvalue of the linearised batten (finite elements, well apart
+ * from the second) and the energy 2 lambda (L - Lp). Two points clamped along
+ * the line: the least-energy Hermite elastica of that length.
+ */
+START_TEST(buckled_collinear_batten_takes_its_first_mode)
+{
+    const double eq[] = {0, 0, 1, 0, 2, 0, 3, 0};
+    el_spline_options o = opts(EL_SPLINE_LENGTH, 3.5);
+    el_spline_result r, r1;
+    ck_assert_int_eq(solve(eq, 4, &o, &r), EL_OK);
+    check_spline(eq, 4, &o, &r, 1e-9);
+    o.length = 3.5 / 3.0;
+    ck_assert_int_eq(solve(eq, 2, &o, &r1), EL_OK);
+    ck_assert_close(r.sigma, r1.sigma, 1e-8 * fabs(r1.sigma));
+    ck_assert_close(r.energy, 3.0 * r1.energy, 1e-8 * r.energy);
+    for (size_t i = 0; i < 4; i++) ck_assert_msg(fabs(r.curvatures[i]) <= 1e-8 * r.max_curvature, "kappa %g at duck %zu", r.curvatures[i], i);
+    for (size_t j = 0; j < 3; j++) {
+        ck_assert_close(r.pieces[j].length, 3.5 / 3.0, 1e-9);
+        ck_assert_close(bow(&r.pieces[j]), (j % 2 ? -1.0 : 1.0) * bow(&r1.pieces[0]), 1e-8);
+    }
+    ck_assert_double_gt(bow(&r.pieces[0]), 0.0);
+    el_spline_result_free(&r);
+    el_spline_result_free(&r1);
+
+    /* uneven spans, natural or clamped ends */
+    const double xs[] = {0.0, 0.5, 2.0, 2.3, 4.0};
+    double un[10];
+    for (int i = 0; i < 5; i++) { un[2 * i] = xs[i]; un[2 * i + 1] = 0.0; }
+    for (int clamp = 0; clamp < 3; clamp++) {
+        double lam[2];
+        fe_buckling(xs, 5, clamp == 2, clamp >= 1, lam);
+        ck_assert_msg(lam[1] > 1.05 * lam[0], "modes too close %g %g", lam[0], lam[1]);
+        o = opts(EL_SPLINE_LENGTH, 4.0 * (1.0 + 1e-4));
+        if (clamp >= 1) { o.end.kind = EL_SPLINE_TANGENT; o.end.tangent[0] = 1.0; }
+        if (clamp == 2) { o.start.kind = EL_SPLINE_TANGENT; o.start.tangent[0] = 1.0; }
+        ck_assert_int_eq(solve(un, 5, &o, &r), EL_OK);
+        check_spline(un, 5, &o, &r, 1e-9);
+        ck_assert_msg(fabs(-0.5 * r.sigma - lam[0]) <= 2e-3 * lam[0], "clamp %d: -sigma/2 %g, first mode %g, second %g",
+                      clamp, -0.5 * r.sigma, lam[0], lam[1]);
+        ck_assert_close(r.energy, 2.0 * lam[0] * 4e-4, 2e-3 * r.energy);
+        double big = 0.0;
+        for (size_t j = 0; j < 4; j++) if (fabs(bow(&r.pieces[j])) > fabs(big)) big = bow(&r.pieces[j]);
+        ck_assert_double_gt(big, 0.0);
+        el_spline_result_free(&r);
+    }
+
+    /* many uneven spans: the first mode is localised in the longest span, the
+     * slopes far from it exponentially small (none may start exactly straight) */
+    {
+        unsigned long long seed = 7ULL;
+        double many[2 * 50], x = 0.0;
+        for (int i = 0; i < 50; i++) {
+            many[2 * i] = x; many[2 * i + 1] = 0.0;
+            x += test_uniform(&seed, 0.005, 0.8);
+        }
+        o = opts(EL_SPLINE_LENGTH, 1.001 * many[98]);
+        ck_assert_int_eq(solve(many, 50, &o, &r), EL_OK);
+        check_spline(many, 50, &o, &r, 1e-9);
+        ck_assert_double_lt(r.sigma, 0.0);
+        el_spline_result_free(&r);
+    }
+
+    /* one long span between many short ones, which clamp it: its clamped
+     * bump, lambda just below (2 pi / 1)^2, a bow with small end slopes */
+    {
+        double x = 0.0, lng[2 * 122];
+        for (int i = 0; i < 122; i++) {
+            lng[2 * i] = x; lng[2 * i + 1] = 0.0;
+            x += i == 60 ? 1.0 : 0.01;
+        }
+        const double Lp = lng[2 * 121];
+        o = opts(EL_SPLINE_LENGTH, Lp + 1e-4);
+        ck_assert_int_eq(solve(lng, 122, &o, &r), EL_OK);
+        check_spline(lng, 122, &o, &r, 1e-9);
+        const double lam = -0.5 * r.sigma;
+        ck_assert_msg(lam < 4.0 * M_PI * M_PI && lam > 0.95 * 4.0 * M_PI * M_PI, "lambda %g", lam);
+        ck_assert_close(r.energy, 2.0 * lam * 1e-4, 1e-2 * r.energy);
+        ck_assert_double_gt(bow(&r.pieces[60]), 0.9 * 2.0 * sqrt(1e-4) / M_PI);   /* 2 A, L - Lp = (pi A)^2 */
+        el_spline_result_free(&r);
+    }
+
+    /* two points clamped along the line: the least-energy Hermite elastica */
+    o = opts(EL_SPLINE_LENGTH, 3.5);
+    o.start.kind = o.end.kind = EL_SPLINE_TANGENT;
+    o.start.tangent[0] = o.end.tangent[0] = 1.0;
+    const double two[] = {0, 0, 3, 0};
+    ck_assert_int_eq(solve(two, 2, &o, &r), EL_OK);
+    check_spline(two, 2, &o, &r, 1e-9);
+    el_hermite_options ho;
+    el_hermite_options_defaults(&ho);
+    ho.mode = EL_HERMITE_LENGTH;
+    ho.length = 3.5;
+    el_hermite_result hr;
+    ck_assert_int_eq(el_hermite_solve(two, o.start.tangent, two + 2, o.end.tangent, &ho, &hr), EL_OK);
+    ck_assert_uint_gt(hr.count, 0);
+    ck_assert_close(r.energy, hr.solutions[0].energy, 1e-8 * r.energy);
+    ck_assert_double_gt(bow(&r.pieces[0]), 0.0);
+    el_hermite_result_free(&hr);
+    el_spline_result_free(&r);
+}
+END_TEST
+
 START_TEST(extreme_scales)
 {
     const double scales[] = {1e-6, 1e-3, 1e3, 1e6};
@@ -622,6 +788,37 @@ START_TEST(extreme_scales)
         el_spline_result_free(&r);
     }
     el_spline_result_free(&r0);
+}
+END_TEST
+
+/*
+ * A tight batten with natural ends (sigma h^2 = 40..70 on the mean chord of
+ * 33 scanned-like points): the end pieces run from an inflection at the free
+ * end into the boundary layer at the next duck, with 1 - k^2 down to 1e-8.
+ * Each piece's u is put with its larger-curvature end near u = 0, where its
+ * curvature does not hang on K(k), which k's last bit moves by 1e-16 / (1 - k^2):
+ * the residual stays below tol (it was 2e-10..4e-9 with u near 2K).
+ */
+static const double scan33[] = {
+    0, 0.142, 0.315, 0.182, 0.604, 0.152, 0.866, 0.208, 1.101, 0.364, 1.309, 0.541, 1.494, 0.673,
+    1.659, 0.737, 1.809, 0.743, 1.949, 0.71, 2.086, 0.66, 2.225, 0.61, 2.373, 0.579, 2.534, 0.587,
+    2.713, 0.648, 2.914, 0.748, 3.139, 0.83, 3.389, 0.806, 3.663, 0.64, 3.96, 0.429, 4.277, 0.345,
+    4.611, 0.393, 4.955, 0.347, 5.306, 0.075, 5.655, -0.22, 5.999, -0.304, 6.329, -0.263, 6.643,
+    -0.326, 6.934, -0.529, 7.2, -0.725, 7.438, -0.802, 7.648, -0.769, 7.831, -0.692};
+
+START_TEST(natural_ends_under_high_tension_reach_tol)
+{
+    double Lp = 0.0;
+    for (int i = 0; i + 1 < 33; i++) Lp += hypot(scan33[2 * i + 2] - scan33[2 * i], scan33[2 * i + 3] - scan33[2 * i + 1]);
+    const double hm = Lp / 32.0, sh2[] = {40.0, 55.0, 70.0};
+    for (size_t c = 0; c < 3; c++) {
+        el_spline_options o = opts(EL_SPLINE_TENSION, sh2[c] / (hm * hm));
+        el_spline_result r;
+        ck_assert_int_eq(solve(scan33, 33, &o, &r), EL_OK);
+        check_spline(scan33, 33, &o, &r, 1e-9);
+        ck_assert_double_lt(1.0 - r.pieces[0].k * r.pieces[0].k, 1e-6);   /* near the separatrix */
+        el_spline_result_free(&r);
+    }
 }
 END_TEST
 
@@ -853,8 +1050,10 @@ int main(void)
     tcase_add_test(tc, closed_curves);
     tcase_add_test(tc, clamped_and_g2_ends);
     tcase_add_test(tc, degenerate_inputs);
+    tcase_add_test(tc, buckled_collinear_batten_takes_its_first_mode);
     tcase_add_test(tc, extreme_scales);
     tcase_add_test(tc, many_points);
+    tcase_add_test(tc, natural_ends_under_high_tension_reach_tol);
     tcase_add_test(tc, free_batten_that_does_not_exist);
     tcase_add_test(tc, bad_input_and_clear_statuses);
     tcase_add_test(tc, bspline_is_one_g2_curve_within_tol);

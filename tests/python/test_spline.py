@@ -161,15 +161,24 @@ def test_bad_input_clear_errors(kwargs, exc, text):
         el.elastic_spline(**kwargs)
 
 
-def test_circle_resolves_only_to_its_accuracy():
-    """Points on a circle of radius 1 with tension 1: the circle itself (kappa^2 =
-    sigma, no force) has |k| = infinity; the spline reached is returned on the
-    error, accurate to what the parametrisation resolves."""
-    with pytest.raises(el.NotConvergedError) as info:
-        el.elastic_spline([[0, 0], [1, 1], [2, 0]], closed=True, tension=1.0)
-    sp = info.value.spline
-    assert sp is not None and sp.residual < 1e-7
-    assert np.allclose(sp.curvatures, -1.0, atol=1e-6)
+def test_circle_is_an_elastica_to_its_accuracy():
+    """Ducks on a circle of radius R with tension 1/R^2: the circle itself
+    (kappa^2 = sigma, no force, |k| = infinity) is the spline, resolved in
+    el_smooth_params with |k| ~ 1e4 to ~1e-8 and accepted there (header); an
+    arc with tangent or G2 ends on the circle likewise."""
+    u = np.linspace(0.0, 2.0 * np.pi, 7, endpoint=False) + 0.15 * np.sin(np.arange(7))   # unevenly
+    sp = el.elastic_spline(np.c_[np.cos(u), -np.sin(u)], closed=True, tension=1.0)     # clockwise
+    assert sp.residual < 1e-7 and sp.length == pytest.approx(2.0 * np.pi, rel=1e-7)
+    assert np.allclose(sp.curvatures, -1.0, atol=1e-7)
+    assert all(abs(p.k) > 1e3 for p in sp.pieces)
+    R, a = 2.0, np.linspace(0.0, 2.0, 6)   # an arc turning 2 rad: its end tangent wraps past pi
+    pts = np.c_[R * np.cos(a), R * np.sin(a)]
+    t0, t1 = [-np.sin(a[0]), np.cos(a[0])], [-np.sin(a[-1]), np.cos(a[-1])]
+    for ends in ({"start": t0, "end": t1},
+                 {"start": {"tangent": t0, "curvature": 1 / R}, "end": {"tangent": t1, "curvature": 1 / R}}):
+        sp = el.elastic_spline(pts, tension=1 / R**2, **ends)
+        assert sp.residual < 1e-7 and sp.length == pytest.approx(2.0 * R, rel=1e-7)
+        assert np.allclose(sp.curvatures, 1 / R, atol=1e-7)
 
 
 @pytest.mark.parametrize("degree", [3, 5])
