@@ -229,3 +229,33 @@ def test_cli_spline(tmp_path):
     assert r.returncode == 2 and "--start-tangent" in r.stderr
     r = run("spline", f, "--closed", "--tension", "1", "--json", "-")
     assert r.returncode == 0 and len(json.loads(r.stdout)["pieces"]) == len(SKETCH)
+
+
+def test_cli_length_mode_on_the_example_ducks(tmp_path):
+    """`elastica spline examples/ducks.csv --length L` end to end: the example file
+    as shipped, a length a little longer than the free batten (pushed: sigma < 0)
+    and one between the polygon and it (pulled: sigma > 0); the JSON pieces pass
+    through the ducks, G2, with the length asked for, and the SVG parses."""
+    ducks = os.path.join(os.path.dirname(__file__), "..", "..", "examples", "ducks.csv")
+    pts = np.loadtxt(ducks, delimiter=",", skiprows=2)
+    polygon = np.hypot(*np.diff(pts, axis=0).T).sum()
+    free = el.elastic_spline(pts, tension=0.0).length
+    for length, sign in ((free * 1.002, -1), (polygon + 0.5 * (free - polygon), 1)):
+        svg = tmp_path / "ducks.svg"
+        r = run("spline", ducks, "--length", repr(float(length)), "--json", "-", "--svg", svg)
+        assert r.returncode == 0, r.stderr
+        d = json.loads(r.stdout)
+        assert d["length"] == pytest.approx(length, rel=1e-9)
+        assert np.sign(d["tension"]) == sign
+        assert len(d["pieces"]) == len(pts) - 1
+        ends = []
+        for j, p in enumerate(d["pieces"]):
+            c = curve_from_dict(p)
+            assert np.allclose(c.points([0.0, c.length]), pts[j:j + 2], atol=1e-9)
+            ends.append((c.angle([0.0, c.length]), c.curvature([0.0, c.length])))
+        for (th0, k0), (th1, k1) in zip(ends, ends[1:]):
+            assert abs((th0[1] - th1[0] + np.pi) % (2 * np.pi) - np.pi) <= 1e-9
+            assert abs(k0[1] - k1[0]) <= 1e-7 * (1 + max(abs(k) for _, ks in ends for k in ks))
+        assert sum(curve_from_dict(p).length for p in d["pieces"]) == pytest.approx(length, rel=1e-9)
+        assert abs(ends[0][1][0]) <= 1e-9 and abs(ends[-1][1][1]) <= 1e-9   # natural ends
+        ET.parse(svg)
