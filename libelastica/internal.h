@@ -136,6 +136,8 @@ enum { EL__BORDER_NONE, EL__BORDER_LENGTH, EL__BORDER_ARC };
 /* Newton iterations of a first attempt and of a continuation step (a solve that
  * needs more is better served by smaller steps). */
 enum { EL__SP_DIRECT_ITER = 20, EL__SP_STEP_ITER = 12 };
+/* Step halvings of a continuation step's Newton (EL__SP_HALVINGS elsewhere). */
+enum { EL__SP_STEP_HALVINGS = 4 };
 /* Residual of a state that is a solution up to what the parametrisation resolves
  * (header: near the separatrix, near a circle), accepted on the way. */
 #define EL__SP_NEAR 1e-6
@@ -167,6 +169,7 @@ typedef struct el__spchain {
     double gscale;           /* its weight in the merit (el__chain_newton) */
     double den;              /* d(border residual)/d sigma along the solutions, last iterate */
     int contract;            /* el__chain_newton: only while it contracts */
+    int halvings;            /* el__chain_newton: step halvings at most */
     int newton_first;        /* length mode: try Newton before the continuation */
     double *snapbuf;         /* the snapshots' arrays */
     el__spsnap snap[3];

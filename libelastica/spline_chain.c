@@ -279,7 +279,7 @@ int el__chain_newton(el__spchain *w, int cap, double aim, double accept)
         int ok = 0;
         double mnew = INFINITY;
         /* already accepted: a step that does not help is rounding, not worth halving */
-        const int halvings = w->resid <= accept || w->contract ? 0 : EL__SP_HALVINGS;
+        const int halvings = w->resid <= accept || w->contract ? 0 : w->halvings;
         for (int hv = 0; hv <= halvings; hv++, al *= 0.5) {
             for (size_t i = 0; i < n; i++) w->x[i] = w->xs[i] + al * w->y[i];
             w->sigma = sigma0 + al * ds;
@@ -407,5 +407,6 @@ int el__chain_alloc(el__spchain *w, size_t n, size_t m)
     w->n = n;
     w->m = m;
     w->resid = INFINITY;   /* not evaluated yet: no state is a solution */
+    w->halvings = EL__SP_HALVINGS;
     return EL_OK;
 }
