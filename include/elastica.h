@@ -724,10 +724,11 @@ void el_spline_options_defaults(el_spline_options *opt);
  * continuation in (angles, sigma) until the length is bracketed, then that
  * Newton. Work is bounded: at most max_steps continuation steps of at most
  * max_iter Newton iterations (20 for a first attempt, 12 for a step), each with
- * at most 12 step halvings, each O(n); 100 points take about 1.5 ms of CPU,
- * 1000 about 12 ms, in either mode when the length is near the free batten's
- * (bench/); lengths far from it (a batten pushed into waves between its ducks,
- * or pulled nearly straight) take tens of continuation steps.
+ * at most 12 step halvings (4 in a continuation step), each O(n); 100 points
+ * take about 1.5 ms of CPU, 1000 about 12 ms, in either mode when the length is
+ * near the free batten's (bench/); lengths far from it (a batten pushed into
+ * waves between its ducks, or pulled nearly straight) take tens of continuation
+ * steps.
  * End conditions (open curves): natural or tangent at either end: a batten
  * with given tension has exactly one degree of freedom per end. A G2 end
  * (tangent and curvature) asks one more: the span next to it takes its own
