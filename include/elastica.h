@@ -835,23 +835,30 @@ void el_spline_options_defaults(el_spline_options *opt);
 
 /*
  * The elastic spline through the n points xy (2n, interleaved).
- * Method (spline.c, with the derivations): Newton on the tangent angles at the
- * points (and sigma in length mode) with the curvature jumps as equations; each
- * piece is the Hermite elastica from (point i, angle i) to (point i+1, angle
- * i+1) at its tension, its own five parameters eliminated in the same Newton
- * step (implicit function theorem), so it continues the previous iterate's
- * branch; the knot system is tridiagonal (cyclic when closed, bordered in
- * length mode), solved by GSL in O(n) per iteration; steps halved until the
- * residual decreases. Start: tangents of the circles through three consecutive
- * points, pieces from the linearised batten or, where the tangents are far from
- * the chord, the least-energy Hermite elastica (el_hermite_solve). If Newton
- * fails there: continuation from a high tension (sigma h^2 = 40) down to sigma.
- * Length mode: from the free batten (or as near sigma = 0 as continuation gets),
- * pseudo-arclength continuation in (angles, sigma) until the length is
- * bracketed, then Newton with the length as the border equation.
- * Work is bounded: at most max_steps continuation steps of at most max_iter
- * Newton iterations (20 for a first attempt, 12 for a step), each with at most 12
- * step halvings, each O(n); 100 points take about 1 ms of CPU, 1000 about 10 ms (bench/).
+ * Method (spline_chain.c, spline_path.c, with the derivations): Newton on the
+ * tangent angles at the points (and sigma in length mode) with the curvature
+ * jumps as equations; each piece is the Hermite elastica from (point i, angle
+ * i) to (point i+1, angle i+1) at its tension, its own five parameters
+ * eliminated in the same Newton step (implicit function theorem), so it
+ * continues the previous iterate's branch; the knot system is tridiagonal
+ * (cyclic when closed, bordered in length mode), solved by GSL in O(n) per
+ * iteration; steps halved until the residual decreases. Start: tangents of the
+ * circles through three consecutive points, pieces from the linearised batten
+ * or, where the tangents are far from the chord, the least-energy Hermite
+ * elastica (el_hermite_solve). If Newton fails there: continuation in sigma
+ * from sigma h^2 = 40 (solved directly) to sigma. Length mode: the tension
+ * solution of that length on the family through the free batten (or as near
+ * sigma = 0 as continuation gets), the first one met following it: Newton with
+ * the length as an equation from the start, then from the free batten, each
+ * trusted only while it contracts (no fold crossed); else pseudo-arclength
+ * continuation in (angles, sigma) until the length is bracketed, then that
+ * Newton. Work is bounded: at most max_steps continuation steps of at most
+ * max_iter Newton iterations (20 for a first attempt, 12 for a step), each with
+ * at most 12 step halvings (4 in a continuation step), each O(n); 100 points
+ * take about 1.5 ms of CPU, 1000 about 12 ms, in either mode when the length is
+ * near the free batten's (bench/); lengths far from it (a batten pushed into
+ * waves between its ducks, or pulled nearly straight) take tens of continuation
+ * steps.
  * End conditions (open curves): natural or tangent at either end: a batten
  * with given tension has exactly one degree of freedom per end. A G2 end
  * (tangent and curvature) asks one more: the span next to it takes its own
@@ -861,22 +868,37 @@ void el_spline_options_defaults(el_spline_options *opt);
  * end in length mode, or with two G2 ends, are EL_EDOM.
  * Degenerate data: collinear points in order along the line with natural (or
  * along-the-line tangent) ends give the straight line (k = 0 pieces; in length
- * mode when the length is the polygon's; longer, a buckled batten, one of its
- * modes); two points with natural ends are the straight segment, with both
+ * mode when the length is the polygon's; longer, the batten buckled in its
+ * first mode, the least energy at a small excess, with its largest bow to the
+ * left of the line's direction, then followed in length: equal spans bow
+ * alternately, uneven ones mostly in the longest span); two points with
+ * natural ends are the straight segment, with both
  * tangents the least-energy Hermite elastica of that tension. Two consecutive
  * points that coincide are EL_EINVAL (the batten cannot pass a duck twice in no
  * length); a closed curve needs 3 distinct points.
  * Accuracy: the residual (see tol) reaches ~1e-14 for moderate tensions. Two
- * configurations are resolved only as far as el_smooth_params can: a piece that
- * is (nearly) a circular arc with kappa^2 = sigma and no force (|k| -> infinity;
- * e.g. points on a circle of radius 1/sqrt(sigma)), and pieces deep in the
- * separatrix tail at high tension (sigma h^2 > ~100, a natural end there:
- * 1 - k^2 below ~1e-8 is what a double resolves), ~1e-9..1e-7: EL_ENOCONV with
- * that spline in res (raise tol to accept it).
+ * configurations are resolved only as far as el_smooth_params can:
+ *   - circular arcs: a piece with kappa^2 = sigma and no force (|k| = infinity),
+ *     e.g. ducks on a circle of radius R with sigma = 1/R^2, closed or with
+ *     tangent or G2 ends on the circle. It is the arc with |k| ~ 1e4 (as
+ *     el_hermite_solve's circles), ~1e-8 from the circle; a spline is accepted
+ *     (EL_OK) when what does not touch such a piece is within tol and its
+ *     residual is at most 1e-7.
+ *   - high tension, pieces near the separatrix (1 - k^2 -> 0: a nearly straight
+ *     run between two ducks' boundary layers, the batten pulled tight): the
+ *     curvature at the piece's far end hangs on K(k), which the last bit of k
+ *     moves by ~1e-16 / (1 - k^2). The residual is ~1e-10 at sigma h^2 ~ 150 on
+ *     the longest span, ~1e-9 at ~300: EL_ENOCONV with that spline in res (raise
+ *     tol to 1e-8 to accept it). Natural ends keep their accuracy (each piece's u
+ *     is placed with its larger curvature near u = 0). Beyond sigma h^2 ~ 100 on
+ *     the mean chord no spline is found (EL_ENOCONV, res empty): a piece's tail
+ *     multiplies a change at its start by ~exp(sqrt(sigma / 2) h). In length mode
+ *     these are lengths within ~1/5 of the free batten's excess over the
+ *     polygon's length (0.1 - 0.2 % of it on hand-placed points).
  * res is overwritten (not freed first): on EL_OK it holds the spline (residual
- * <= tol); on EL_ENOCONV the spline reached when it is one to within 1e-6 (see
- * Accuracy), else it is empty; on every other error it is empty (npieces = 0,
- * NULL arrays).
+ * <= tol, or <= 1e-7 from circle pieces); on EL_ENOCONV the spline reached when
+ * it is one to within 1e-6 (see Accuracy), else it is empty; on every other
+ * error it is empty (npieces = 0, NULL arrays).
  * Errors: EL_EINVAL (NULL, n < 2, non-finite or coincident consecutive points,
  * bad options: sigma < 0 or non-finite in tension mode, zero tangent, closed with
  * fewer than 3 points), EL_EDOM (length mode with length < the polygon's length;

@@ -78,7 +78,7 @@ int el__walk_values(el__walk *wk, size_t count, const double *u, el_jacobi *val,
  * bspline.c. Errors: EL_EINVAL, EL_ENOMEM. */
 int el__bspline_join_c2(const el_bspline *parts, size_t count, el_bspline *out, double *err);
 
-/* ---- elastic spline pieces (spline_piece.c, for spline.c) */
+/* ---- elastic spline pieces (spline_piece.c, for spline_chain.c) */
 
 enum { EL__NV = 5 };                          /* piece unknowns v: phi, ln mu, k, q, L */
 enum { EL__SP_PHI, EL__SP_NU, EL__SP_K, EL__SP_Q, EL__SP_L };
@@ -124,6 +124,91 @@ int el__spiece_start(el__spiece *pc, const el__sptargets *t);
 int el__spiece_hermite(el__spiece *pc, const el__sptargets *t);
 /* max |v_i|. */
 double el__max_abs(const double *v, size_t n);
+
+/* ---- the elastic spline's chain (spline_chain.c), its paths (spline_path.c) */
+
+/* A knot's unknown x_i: its tangent angle, none (a clamped end) or the tension
+ * of the end span (a G2 end). */
+enum { EL__SLOT_ANGLE, EL__SLOT_FIXED, EL__SLOT_TENSION };
+/* With sigma unknown, the border equation: the total length, or the
+ * pseudo-arclength step of spline_path.c. */
+enum { EL__BORDER_NONE, EL__BORDER_LENGTH, EL__BORDER_ARC };
+/* Newton iterations of a first attempt and of a continuation step (a solve that
+ * needs more is better served by smaller steps). */
+enum { EL__SP_DIRECT_ITER = 20, EL__SP_STEP_ITER = 12 };
+/* Step halvings of a continuation step's Newton (EL__SP_HALVINGS elsewhere). */
+enum { EL__SP_STEP_HALVINGS = 4 };
+/* Residual of a state that is a solution up to what the parametrisation resolves
+ * (header: near the separatrix, near a circle), accepted on the way. */
+#define EL__SP_NEAR 1e-6
+/* The residual a spline whose pieces are circular arcs (kappa^2 = sigma, no
+ * force: |k| = infinity) reaches in el_smooth_params (|k| ~ 1e4: ~1e-8). */
+#define EL__SP_CIRCLE_RESID 1e-7
+
+/* A solved state of the chain: knot values, every piece's v and state, sigma. */
+typedef struct el__spsnap {
+    double *x, *v, *st, sigma;
+} el__spsnap;
+
+typedef struct el__spchain {
+    size_t n, m;             /* points, pieces */
+    int closed;
+    int lmode;               /* sigma unknown: the EL__BORDER_ equation; 0: sigma given */
+    int kind[2];             /* open: end kinds */
+    double th_end[2], kg[2]; /* clamped angles, G2 curvatures (internal units) */
+    double wind;             /* closed: 2 pi times the turning number */
+    double sigma, Lt;        /* common tension, target length (internal) */
+    double sigma_user;       /* tension mode: the sigma asked for (user units) */
+    double *x, *ell;         /* slot values, local chord per knot */
+    int *slot;
+    el__spiece *pc;
+    double *F, *dg, *up, *lo, *b, *y, *z, *col, *row;   /* Newton work, n each */
+    double *xs;              /* backup of x */
+    el__spstep *ps;          /* the pieces' Newton steps */
+    double Gres;             /* border residual */
+    double gscale;           /* its weight in the merit (el__chain_newton) */
+    double den;              /* d(border residual)/d sigma along the solutions, last iterate */
+    int contract;            /* el__chain_newton: only while it contracts */
+    int halvings;            /* el__chain_newton: step halvings at most */
+    int newton_first;        /* length mode: try Newton before the continuation */
+    double *snapbuf;         /* the snapshots' arrays */
+    el__spsnap snap[3];
+    double *arc_a, *arc_x0;  /* BORDER_ARC: arc_a . (x - arc_x0) + arc_b (sigma - arc_s0) = arc_h */
+    double arc_b, arc_s0, arc_h;
+    double resid;            /* max residual of the last evaluation */
+    int iterations, max_iter;
+    double tol, aim;         /* accepted and aimed-at residual */
+    int near;                /* the state is a solution to what the parametrisation resolves */
+} el__spchain;
+
+/* The workspace for n knots and m pieces (zeroed, n, m set); free it also on failure. */
+int el__chain_alloc(el__spchain *w, size_t n, size_t m);
+void el__chain_free(el__spchain *w);
+/* Piece j's targets from the knot values. */
+void el__chain_targets(const el__spchain *w, size_t j, el__sptargets *t);
+/* Every piece and the knot (and border) residuals; returns the merit, or INFINITY. */
+double el__chain_eval(el__spchain *w, int jac);
+/* Newton on the chain until max residual <= aim (or it stalls), at most cap
+ * iterations; EL_OK when it ends <= accept, else EL_ENOCONV. */
+int el__chain_newton(el__spchain *w, int cap, double aim, double accept);
+/* The start: knot angles, then every piece (EL_OK, EL_ENOCONV, EL_ENOMEM). */
+void el__chain_start_angles(el__spchain *w);
+int el__chain_start_pieces(el__spchain *w);
+/* a - 2 pi j in [-pi, pi]. */
+double el__wrap_pi(double a);
+
+/* The tension solution at w->sigma (final: to w->tol, else to EL__SP_NEAR). */
+int el__spline_solve_tension(el__spchain *w, int max_steps, int final);
+/* Length mode: the solution of total length Lt (internal units). */
+int el__spline_solve_length(el__spchain *w, int max_steps, double Lt);
+/* Length mode on collinear points: the buckled batten of length Lt (> the
+ * polygon's Lp), the line's direction dir. */
+int el__spline_solve_buckled(el__spchain *w, int max_steps, double dir, double Lp, double Lt);
+
+/* el_spline_solve; newton_first = 0: length mode by the continuation alone
+ * (follow_length, the plain counterpart of the Newton attempts), for the tests. */
+int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *opt,
+                           int newton_first, el_spline_result *res);
 
 /* For the tests of spline.c: the piece p as the Hermite elastica of its own ends
  * (h = |gamma(L) - gamma(0)|), v = (phi, ln mu, k, q, L): J[25] = dR/dv with

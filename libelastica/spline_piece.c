@@ -2,7 +2,7 @@
  * One piece of an elastic spline (spline.c): the Hermite elastica of tension s
  * from (0, ta) to (dx, dy, tb) as the five parameters v = (phi, ln mu, k, q, L)
  * of a smooth elastica, with its residuals R, Jacobian J = dR/dv, the end
- * curvatures' gradients g0, g1 and the eliminated columns spline.c's Newton
+ * curvatures' gradients g0, g1 and the eliminated columns spline_chain.c's Newton
  * needs; the state (theta0, kappa0, kappa0', sigma, L) the steps are taken in;
  * the start of a piece (the linearised batten, or el_hermite_solve).
  *
@@ -241,20 +241,27 @@ static int piece_from_state(el__spiece *pc, double theta, double kappa, double d
     const double wv = kappa * kappa - s;
     double Fx = wv * T[0] + 2.0 * dkappa * N[0], Fy = wv * T[1] + 2.0 * dkappa * N[1];
     double Fn = hypot(Fx, Fy);
-    /* 1 - k^2 = (Fn - s) / (2 Fn) = (kappa^2 (kappa^2 - 2 s) + 4 kappa'^2) / (2 Fn (Fn + s)),
-     * the second form without the cancellation of Fn - s when s > 0 */
-    double kc2 = s > 0.0 ? (kappa * kappa * (kappa * kappa - 2.0 * s) + 4.0 * dkappa * dkappa) /
-                               (2.0 * Fn * (Fn + s))
-                         : (Fn - s) / (2.0 * Fn);
-    if (!(Fn > 1e-12 * (fabs(s) + kappa * kappa + 1e-300))) {   /* a circle or a line: a small force along T */
-        Fn = 1e-6 * (fabs(s) + kappa * kappa) + 1e-12;
+    /* Fn^2 - s^2 = P = kappa^2 (kappa^2 - 2 s) + 4 kappa'^2, so
+     * 1 - k^2 = (Fn - s) / (2 Fn) = P / (2 Fn (Fn + s)) and k^2 = (Fn + s) / (2 Fn) =
+     * P / (2 Fn (Fn - s)): the second forms without the cancellation of Fn - s
+     * when s > 0 (under tension, near the separatrix) and of Fn + s when s < 0
+     * (a nearly straight piece under compression, k -> 0) */
+    const double P = kappa * kappa * (kappa * kappa - 2.0 * s) + 4.0 * dkappa * dkappa;
+    double kc2 = s > 0.0 ? P / (2.0 * Fn * (Fn + s)) : (Fn - s) / (2.0 * Fn);
+    double k2 = s < 0.0 ? P / (2.0 * Fn * (Fn - s)) : (Fn + s) / (2.0 * Fn);
+    /* a circle or a line: a small force along -T. Its least size keeps |k| <~ 1e4,
+     * where a circle is resolved best (the arc differs from it by ~1 / k^2, and
+     * the position's cancellation grows as k^2 eps; el_hermite_solve's 1e4) */
+    if (!(Fn > 1e-8 * (fabs(s) + kappa * kappa + 1e-300))) {
+        Fn = 1e-8 * (fabs(s) + kappa * kappa) + 1e-12;
         Fx = -Fn * T[0];
         Fy = -Fn * T[1];
         kc2 = (Fn - s) / (2.0 * Fn);
+        k2 = (Fn + s) / (2.0 * Fn);
     }
-    if (!(Fn + s > 0.0)) return EL_EDOM;
+    if (!(k2 > 0.0) || !isfinite(k2)) return EL_EDOM;   /* k = 0: a straight piece, no q */
     const double mu = 0.5 * Fn, phi0 = atan2(Fy, Fx);
-    const double k2 = kc2 > 0.0 ? fmin((Fn + s) / (2.0 * Fn), 1.0) : fmax((Fn + s) / (2.0 * Fn), 1.0);
+    k2 = kc2 > 0.0 ? fmin(k2, 1.0) : fmax(k2, 1.0);
     double d = theta - phi0;
     d -= 2.0 * M_PI * nearbyint(d / (2.0 * M_PI));
     const double a = 0.5 * d, phi = theta - 2.0 * a;   /* theta = phi + 2a exactly */
@@ -263,6 +270,19 @@ static int piece_from_state(el__spiece *pc, double theta, double kappa, double d
         k = sqrt(k2);
         const double psi = atan2(sin(a) / k, kappa / (2.0 * k * sqrt(mu)));
         u = ellint_F(psi, k, kc2);
+        /* The same curve with u - 2K j and k -> (-1)^j k (sn, cn change sign over
+         * 2K, dn does not: theta, kappa and gamma are unchanged): put the end
+         * nearer a peak of |cn| (u = 0 mod 2K: the larger curvature) at u near 0.
+         * There its curvature does not depend on K(k), which near the separatrix
+         * a double's k resolves only to ~1e-16 / (1 - k^2) (so only there). */
+        double K, Dk;
+        if (kc2 < 1e-4 && el__ellint_complete(k, kc2, &K, &Dk) == EL_OK) {
+            const double u0 = u - sqrt(mu) * sm, u1 = u0 + sqrt(mu) * L;
+            const double j0 = nearbyint(u0 / (2.0 * K)), j1 = nearbyint(u1 / (2.0 * K));
+            const double j = fabs(u0 - 2.0 * K * j0) <= fabs(u1 - 2.0 * K * j1) ? j0 : j1;
+            u -= 2.0 * K * j;
+            if (fmod(j, 2.0) != 0.0) k = -k;
+        }
     } else {
         const double ka = sqrt(k2);
         k = kappa < 0.0 ? -ka : ka;
@@ -347,31 +367,46 @@ int el__spiece_newton(el__spiece *pc, const el__sptargets *t, double tol)
     return r <= tol ? EL_OK : EL_ENOCONV;
 }
 
+/* The two non-affine solutions f1, f2 of w'''' = (s/2) w'' and their
+ * derivatives 0..3 at s: e^{-om s}, e^{-om (h - s)} under tension (om^2 = s/2),
+ * cos, sin(om s) under compression (om^2 = -s/2), s^2, s^3 where om h is small. */
+enum { BASIS_POLY, BASIS_EXP, BASIS_TRIG };
+static void start_basis(int kind, double om, double h, double s, double b1[4], double b2[4])
+{
+    if (kind == BASIS_EXP) {
+        const double e1 = exp(-om * s), e2 = exp(-om * (h - s));
+        for (int d = 0; d < 4; d++) {
+            b1[d] = e1 * pow(-om, d);
+            b2[d] = e2 * pow(om, d);
+        }
+    } else if (kind == BASIS_TRIG) {
+        const double c = cos(om * s), sn = sin(om * s), o2 = om * om;
+        b1[0] = c; b1[1] = -om * sn; b1[2] = -o2 * c; b1[3] = o2 * om * sn;
+        b2[0] = sn; b2[1] = om * c; b2[2] = -o2 * sn; b2[3] = -o2 * om * c;
+    } else {
+        b1[0] = s * s; b1[1] = 2.0 * s; b1[2] = 2.0; b1[3] = 0.0;
+        b2[0] = s * s * s; b2[1] = 3.0 * s * s; b2[2] = 6.0 * s; b2[3] = 6.0;
+    }
+}
+
 /* The linearised batten on the chord: w'''' = (s/2) w'' with w = 0 at both ends
- * and slopes tan(alpha), tan(beta); its midpoint state starts the piece. */
+ * and slopes tan(alpha), tan(beta); its midpoint state starts the piece. Under
+ * compression near a span's clamped load (om h -> 2 pi) the bow it gives is
+ * large for small end slopes, as the batten's. */
 int el__spiece_start(el__spiece *pc, const el__sptargets *t)
 {
     const double h = pc->h, c0 = atan2(pc->dy, pc->dx);
     const double c = c0 + 2.0 * M_PI * nearbyint((0.5 * (t->ta + t->tb) - c0) / (2.0 * M_PI));
     const double al = t->ta - c, be = t->tb - c;
     const double sa = tan(fmax(fmin(al, 1.3), -1.3)), sb = tan(fmax(fmin(be, 1.3), -1.3));
-    const double om = t->s > 0.0 ? sqrt(0.5 * t->s) : 0.0;
-    /* w = A + B s + C f1 + D f2: f = (e^{-om s}, e^{-om (h-s)}) or (s^2, s^3) */
-    const int ex = om * h > 0.1;
+    const double om = sqrt(0.5 * fabs(t->s));
+    /* w = A + B s + C f1 + D f2 */
+    const int kind = !(om * h > 0.1) ? BASIS_POLY : t->s > 0.0 ? BASIS_EXP : BASIS_TRIG;
     double M[16], rhs[4] = {0.0, 0.0, sa, sb};
     for (int e = 0; e < 2; e++) {
         const double s = e ? h : 0.0;
         double b1[4], b2[4];
-        if (ex) {
-            const double e1 = exp(-om * s), e2 = exp(-om * (h - s));
-            for (int d = 0; d < 4; d++) {
-                b1[d] = e1 * pow(-om, d);
-                b2[d] = e2 * pow(om, d);
-            }
-        } else {
-            b1[0] = s * s; b1[1] = 2.0 * s; b1[2] = 2.0; b1[3] = 0.0;
-            b2[0] = s * s * s; b2[1] = 3.0 * s * s; b2[2] = 6.0 * s; b2[3] = 6.0;
-        }
+        start_basis(kind, om, h, s, b1, b2);
         M[(0 + e) * 4 + 0] = 1.0; M[(0 + e) * 4 + 1] = s; M[(0 + e) * 4 + 2] = b1[0]; M[(0 + e) * 4 + 3] = b2[0];
         M[(2 + e) * 4 + 0] = 0.0; M[(2 + e) * 4 + 1] = 1.0; M[(2 + e) * 4 + 2] = b1[1]; M[(2 + e) * 4 + 3] = b2[1];
     }
@@ -380,17 +415,9 @@ int el__spiece_start(el__spiece *pc, const el__sptargets *t)
     lu_solve(M, 4, perm, rhs);
     /* state at the midpoint */
     const double sm = 0.5 * h;
-    double wd[4];
-    if (ex) {
-        const double e1 = exp(-om * sm), e2 = exp(-om * (h - sm));
-        for (int d = 0; d < 4; d++)
-            wd[d] = rhs[2] * e1 * pow(-om, d) + rhs[3] * e2 * pow(om, d);
-    } else {
-        wd[0] = rhs[2] * sm * sm + rhs[3] * sm * sm * sm;
-        wd[1] = 2.0 * rhs[2] * sm + 3.0 * rhs[3] * sm * sm;
-        wd[2] = 2.0 * rhs[2] + 6.0 * rhs[3] * sm;
-        wd[3] = 6.0 * rhs[3];
-    }
+    double wd[4], b1[4], b2[4];
+    start_basis(kind, om, h, sm, b1, b2);
+    for (int d = 0; d < 4; d++) wd[d] = rhs[2] * b1[d] + rhs[3] * b2[d];
     wd[1] += rhs[1];
     /* arc length ~ h + 1/2 int w'^2 (Simpson on the slopes) */
     const double L = h + h / 12.0 * (sa * sa + 4.0 * wd[1] * wd[1] + sb * sb);
@@ -417,7 +444,7 @@ int el__spiece_hermite(el__spiece *pc, const el__sptargets *t)
         double s2[2] = {0.0, p->length}, th[2];
         if (el_smooth_eval(p, 2, s2, NULL, th, NULL)) continue;
         const double shift = t->ta - th[0];
-        if (fabs((th[1] - th[0]) - (t->tb - t->ta)) > 1e-6 || fabs(p->k) >= 1e3) continue;
+        if (fabs((th[1] - th[0]) - (t->tb - t->ta)) > 1e-6) continue;
         pc->v[EL__SP_PHI] = p->phi + shift;
         pc->v[EL__SP_NU] = log(p->mu);
         pc->v[EL__SP_K] = p->k;

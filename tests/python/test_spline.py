@@ -161,15 +161,24 @@ def test_bad_input_clear_errors(kwargs, exc, text):
         el.elastic_spline(**kwargs)
 
 
-def test_circle_resolves_only_to_its_accuracy():
-    """Points on a circle of radius 1 with tension 1: the circle itself (kappa^2 =
-    sigma, no force) has |k| = infinity; the spline reached is returned on the
-    error, accurate to what the parametrisation resolves."""
-    with pytest.raises(el.NotConvergedError) as info:
-        el.elastic_spline([[0, 0], [1, 1], [2, 0]], closed=True, tension=1.0)
-    sp = info.value.spline
-    assert sp is not None and sp.residual < 1e-7
-    assert np.allclose(sp.curvatures, -1.0, atol=1e-6)
+def test_circle_is_an_elastica_to_its_accuracy():
+    """Ducks on a circle of radius R with tension 1/R^2: the circle itself
+    (kappa^2 = sigma, no force, |k| = infinity) is the spline, resolved in
+    el_smooth_params with |k| ~ 1e4 to ~1e-8 and accepted there (header); an
+    arc with tangent or G2 ends on the circle likewise."""
+    u = np.linspace(0.0, 2.0 * np.pi, 7, endpoint=False) + 0.15 * np.sin(np.arange(7))   # unevenly
+    sp = el.elastic_spline(np.c_[np.cos(u), -np.sin(u)], closed=True, tension=1.0)     # clockwise
+    assert sp.residual < 1e-7 and sp.length == pytest.approx(2.0 * np.pi, rel=1e-7)
+    assert np.allclose(sp.curvatures, -1.0, atol=1e-7)
+    assert all(abs(p.k) > 1e3 for p in sp.pieces)
+    R, a = 2.0, np.linspace(0.0, 2.0, 6)   # an arc turning 2 rad: its end tangent wraps past pi
+    pts = np.c_[R * np.cos(a), R * np.sin(a)]
+    t0, t1 = [-np.sin(a[0]), np.cos(a[0])], [-np.sin(a[-1]), np.cos(a[-1])]
+    for ends in ({"start": t0, "end": t1},
+                 {"start": {"tangent": t0, "curvature": 1 / R}, "end": {"tangent": t1, "curvature": 1 / R}}):
+        sp = el.elastic_spline(pts, tension=1 / R**2, **ends)
+        assert sp.residual < 1e-7 and sp.length == pytest.approx(2.0 * R, rel=1e-7)
+        assert np.allclose(sp.curvatures, 1 / R, atol=1e-7)
 
 
 @pytest.mark.parametrize("degree", [3, 5])
@@ -220,3 +229,33 @@ def test_cli_spline(tmp_path):
     assert r.returncode == 2 and "--start-tangent" in r.stderr
     r = run("spline", f, "--closed", "--tension", "1", "--json", "-")
     assert r.returncode == 0 and len(json.loads(r.stdout)["pieces"]) == len(SKETCH)
+
+
+def test_cli_length_mode_on_the_example_ducks(tmp_path):
+    """`elastica spline examples/ducks.csv --length L` end to end: the example file
+    as shipped, a length a little longer than the free batten (pushed: sigma < 0)
+    and one between the polygon and it (pulled: sigma > 0); the JSON pieces pass
+    through the ducks, G2, with the length asked for, and the SVG parses."""
+    ducks = os.path.join(os.path.dirname(__file__), "..", "..", "examples", "ducks.csv")
+    pts = np.loadtxt(ducks, delimiter=",", skiprows=2)
+    polygon = np.hypot(*np.diff(pts, axis=0).T).sum()
+    free = el.elastic_spline(pts, tension=0.0).length
+    for length, sign in ((free * 1.002, -1), (polygon + 0.5 * (free - polygon), 1)):
+        svg = tmp_path / "ducks.svg"
+        r = run("spline", ducks, "--length", repr(float(length)), "--json", "-", "--svg", svg)
+        assert r.returncode == 0, r.stderr
+        d = json.loads(r.stdout)
+        assert d["length"] == pytest.approx(length, rel=1e-9)
+        assert np.sign(d["tension"]) == sign
+        assert len(d["pieces"]) == len(pts) - 1
+        ends = []
+        for j, p in enumerate(d["pieces"]):
+            c = curve_from_dict(p)
+            assert np.allclose(c.points([0.0, c.length]), pts[j:j + 2], atol=1e-9)
+            ends.append((c.angle([0.0, c.length]), c.curvature([0.0, c.length])))
+        for (th0, k0), (th1, k1) in zip(ends, ends[1:]):
+            assert abs((th0[1] - th1[0] + np.pi) % (2 * np.pi) - np.pi) <= 1e-9
+            assert abs(k0[1] - k1[0]) <= 1e-7 * (1 + max(abs(k) for _, ks in ends for k in ks))
+        assert sum(curve_from_dict(p).length for p in d["pieces"]) == pytest.approx(length, rel=1e-9)
+        assert abs(ends[0][1][0]) <= 1e-9 and abs(ends[-1][1][1]) <= 1e-9   # natural ends
+        ET.parse(svg)

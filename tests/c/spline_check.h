@@ -1,0 +1,175 @@
+/* Shared by the elastic-spline tests (test_spline.c, test_spline_length.c): the
+ * properties issue 14 lists, checked on a result (check_spline), a designer's
+ * sketch, and the energy of the Hermite pieces through given knot angles. */
+#ifndef SPLINE_CHECK_H
+#define SPLINE_CHECK_H
+#include "testutil.h"
+#include "internal.h"
+#include <string.h>
+
+static inline double wrap(double a) { return a - 2.0 * M_PI * nearbyint(a / (2.0 * M_PI)); }
+
+/* Point, tangent angle, curvature and kappa' (central difference) of a piece at s. */
+static inline void state_at(const el_smooth_params *p, double s, double xy[2], double *th,
+                            double *ka, double *dka)
+{
+    ck_assert_int_eq(el_smooth_eval(p, 1, &s, xy, th, ka), EL_OK);
+    if (dka) {
+        const double h = 1e-5 * (p->length + 1e-300), sv[2] = {s - h, s + h};
+        double kk[2];
+        ck_assert_int_eq(el_smooth_eval(p, 2, sv, NULL, NULL, kk), EL_OK);
+        *dka = (kk[1] - kk[0]) / (2.0 * h);
+    }
+}
+
+/*
+ * The properties issue 14 lists, measured with el_smooth_eval at the piece
+ * ends: through the points (tol times the extent), tangent continuity (tol rad),
+ * curvature jump <= 1e-7 max |kappa|, each piece's tension 2 mu (2k^2 - 1) equal
+ * to res->sigmas (and to res->sigma away from G2 spans, k = 0 straight pieces
+ * exempt: kappa = 0 solves every tension), the end conditions, energy and length
+ * as sums over the pieces, the force constant along each piece.
+ */
+static inline void check_spline(const double *xy, size_t n, const el_spline_options *o,
+                                const el_spline_result *r, double tol)
+{
+    const size_t m = r->npieces;
+    ck_assert_uint_eq(m, o->closed ? r->npoints : r->npoints - 1);
+    double ext = 0.0;
+    for (size_t i = 0; i < r->npoints; i++) ext = fmax(ext, fmax(fabs(xy[2 * i]), fabs(xy[2 * i + 1])));
+    for (size_t j = 0; j + 1 < n; j++) ext = fmax(ext, hypot(xy[2 * j + 2] - xy[2 * j], xy[2 * j + 3] - xy[2 * j + 1]));
+    const double kmax = r->max_curvature;
+    double E = 0.0, L = 0.0, kseen = 0.0;
+    for (size_t j = 0; j < m; j++) {
+        const el_smooth_params *p = &r->pieces[j];
+        const size_t e = (j + 1) % r->npoints;
+        ck_assert_int_eq(el_smooth_check(p), EL_OK);
+        ck_assert_msg(p->x0 == xy[2 * j] && p->y0 == xy[2 * j + 1], "piece %zu does not start at its point", j);
+        double a[2], b[2], tha, thb, ka, kb, dka, dkb;
+        state_at(p, 0.0, a, &tha, &ka, &dka);
+        state_at(p, p->length, b, &thb, &kb, &dkb);
+        ck_assert_msg(hypot(b[0] - xy[2 * e], b[1] - xy[2 * e + 1]) <= tol * ext,
+                      "piece %zu misses point %zu by %g", j, e, hypot(b[0] - xy[2 * e], b[1] - xy[2 * e + 1]));
+        ck_assert_close(tha, r->angles[j], 1e-12 * (1.0 + fabs(tha)));
+        ck_assert_close(ka, r->curvatures[j], 1e-9 * (1.0 + kmax));
+        kseen = fmax(kseen, fmax(fabs(ka), fabs(kb)));
+        /* one tension: sigma = 2 mu (2k^2 - 1) (seed 004 / smooth section) */
+        if (p->k != 0.0) {
+            const double sg = 2.0 * p->mu * (2.0 * p->k * p->k - 1.0);
+            ck_assert_msg(fabs(sg - r->sigmas[j]) <= 1e-8 * (fabs(r->sigmas[j]) + 4.0 * p->mu),
+                          "piece %zu tension %.17g, spline %.17g", j, sg, r->sigmas[j]);
+        }
+        const int g2span = !o->closed && ((j == 0 && o->start.kind == EL_SPLINE_G2) ||
+                                          (j == m - 1 && o->end.kind == EL_SPLINE_G2));
+        if (!g2span) ck_assert_close(r->sigmas[j], r->sigma, 1e-12 * (1.0 + fabs(r->sigma)));
+        /* the force F = (sigma - kappa^2) T - 2 kappa' N, constant along the piece */
+        const double s = r->sigmas[j], Fs = 1.0 + fabs(s) + kmax * kmax;
+        const double Fb[2] = {(s - kb * kb) * cos(thb) + 2.0 * dkb * sin(thb),
+                              (s - kb * kb) * sin(thb) - 2.0 * dkb * cos(thb)};
+        const double Fa[2] = {(s - ka * ka) * cos(tha) + 2.0 * dka * sin(tha),
+                              (s - ka * ka) * sin(tha) - 2.0 * dka * cos(tha)};
+        ck_assert_msg(hypot(Fa[0] - r->forces[2 * j], Fa[1] - r->forces[2 * j + 1]) <= 1e-6 * Fs,
+                      "piece %zu force at 0 %g %g vs %g %g", j, Fa[0], Fa[1], r->forces[2 * j], r->forces[2 * j + 1]);
+        ck_assert_msg(hypot(Fb[0] - r->forces[2 * j], Fb[1] - r->forces[2 * j + 1]) <= 1e-6 * Fs,
+                      "piece %zu force not constant: %g %g vs %g %g", j, Fb[0], Fb[1], r->forces[2 * j], r->forces[2 * j + 1]);
+        /* G1 and G2 at the next point */
+        if (o->closed || j + 1 < m) {
+            const el_smooth_params *q = &r->pieces[e % m];
+            double c[2], thc, kc;
+            state_at(q, 0.0, c, &thc, &kc, NULL);
+            ck_assert_msg(fabs(wrap(thb - thc)) <= tol, "tangent jump %g at point %zu", wrap(thb - thc), e);
+            ck_assert_msg(fabs(kb - kc) <= 1e-7 * kmax + 1e-300, "curvature jump %g at point %zu (max %g)",
+                          fabs(kb - kc), e, kmax);
+            /* a frictionless duck: its load F_j - F_{j+1} is normal to the batten
+             * (the tension is common) */
+            if (!g2span && !(e == m - 1 && !o->closed && o->end.kind == EL_SPLINE_G2) &&
+                !(o->closed ? 0 : (e == 1 && o->start.kind == EL_SPLINE_G2))) {
+                const double D[2] = {r->forces[2 * j] - r->forces[2 * (e % m)],
+                                     r->forces[2 * j + 1] - r->forces[2 * (e % m) + 1]};
+                ck_assert_msg(fabs(D[0] * cos(thc) + D[1] * sin(thc)) <= 1e-6 * Fs,
+                              "duck %zu pushes along the batten: %g", e, D[0] * cos(thc) + D[1] * sin(thc));
+            }
+        } else {
+            ck_assert_close(thb, r->angles[r->npoints - 1], 1e-12 * (1.0 + fabs(thb)));
+            ck_assert_close(kb, r->curvatures[r->npoints - 1], 1e-9 * (1.0 + kmax));
+        }
+        double En;
+        ck_assert_int_eq(el_smooth_energy(p, &En), EL_OK);
+        E += En;
+        L += p->length;
+    }
+    ck_assert_close(r->energy, E, 1e-12 * (1.0 + E));
+    ck_assert_close(r->length, L, 1e-12 * L);
+    ck_assert_msg(kseen <= kmax * (1.0 + 1e-12), "curvature %g above max_curvature %g", kseen, kmax);
+    ck_assert_msg(r->residual <= o->tol, "residual %g", r->residual);
+    if (o->mode == EL_SPLINE_LENGTH) ck_assert_close(L, o->length, 1e-9 * o->length);
+    if (!o->closed) {
+        const el_spline_end *ends[2] = {&o->start, &o->end};
+        const size_t at[2] = {0, r->npoints - 1};
+        for (int i = 0; i < 2; i++) {
+            const double k = r->curvatures[at[i]];
+            if (ends[i]->kind == EL_SPLINE_NATURAL)
+                ck_assert_msg(fabs(k) <= 1e-9 * (1.0 + kmax), "natural end %d has kappa %g", i, k);
+            if (ends[i]->kind != EL_SPLINE_NATURAL) {
+                const double ta = atan2(ends[i]->tangent[1], ends[i]->tangent[0]);
+                ck_assert_msg(fabs(wrap(r->angles[at[i]] - ta)) <= tol, "end %d tangent off by %g", i,
+                              wrap(r->angles[at[i]] - ta));
+            }
+            if (ends[i]->kind == EL_SPLINE_G2)
+                ck_assert_close(k, ends[i]->curvature, 1e-9 * (1.0 + kmax));
+        }
+    }
+}
+
+static inline int solve(const double *xy, size_t n, const el_spline_options *o, el_spline_result *r)
+{
+    return el_spline_solve(xy, n, o, r);
+}
+
+static inline el_spline_options opts(int mode, double v)
+{
+    el_spline_options o;
+    el_spline_options_defaults(&o);
+    o.mode = mode;
+    if (mode == EL_SPLINE_TENSION) o.sigma = v;
+    else o.length = v;
+    return o;
+}
+
+/* hand-placed, unevenly spaced points of a fair curve (a designer's sketch) */
+static const double sketch[] = {0.0, 0.0, 0.7, 0.45, 1.1, 0.62, 2.6, 0.9, 3.0, 0.85,
+                                4.8, 0.2, 5.5, -0.3, 7.9, -0.6, 8.2, -0.55};
+enum { NSKETCH = 9 };
+
+/* E(angles) = sum of integral kappa^2 + sigma ds over the Hermite pieces through
+ * the points with those tangent angles; its derivative in the angle at point i
+ * is 2 (kappa_i^- - kappa_i^+) (the first variation's boundary terms), zero at
+ * the spline: checked by finite differences of E (pieces by el_hermite_solve)
+ * at the spline and, as a control, away from it. */
+static inline double hermite_energy(const double *xy, size_t n, const double *th, double sigma,
+                                    const el_spline_result *near, double *kjump, size_t at)
+{
+    double E = 0.0, k_end = 0.0;
+    for (size_t j = 0; j + 1 < n; j++) {
+        const double t0[2] = {cos(th[j]), sin(th[j])}, t1[2] = {cos(th[j + 1]), sin(th[j + 1])};
+        el_hermite_options ho;
+        el_hermite_options_defaults(&ho);
+        ho.sigma = sigma;
+        ho.samples = 60;
+        el_hermite_result hr;
+        ck_assert_int_eq(el_hermite_solve(xy + 2 * j, t0, xy + 2 * j + 2, t1, &ho, &hr), EL_OK);
+        size_t best = hr.count;
+        for (size_t i = 0; i < hr.count; i++)   /* the one continuing the spline's piece */
+            if (best == hr.count || fabs(hr.solutions[i].length - near->pieces[j].length) <
+                                    fabs(hr.solutions[best].length - near->pieces[j].length))
+                best = i;
+        ck_assert_uint_lt(best, hr.count);
+        E += hr.solutions[best].energy + sigma * hr.solutions[best].length;
+        if (j + 1 == at) k_end = hr.solutions[best].kappa1;
+        if (j == at && kjump) *kjump = k_end - hr.solutions[best].kappa0;
+        el_hermite_result_free(&hr);
+    }
+    return E;
+}
+
+#endif
