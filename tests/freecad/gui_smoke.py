@@ -420,24 +420,37 @@ def spline_panel(doc, S):
 # ------------------------------------------------------------------ fit
 
 def fit_panel(doc, S):
-    from freecad.elastica import fit as Fi
+    import Part
     from freecad.elastica import taskpanels as T
     xy, _ = S.keyline_xy(30)
     ksk = S.bspline_sketch(doc, xy)
+    # a line beside the data's start, for the start tangent (issue 13 point 3)
+    lines = doc.addObject("Sketcher::SketchObject", "TangentLine")
+    lines.Placement = S.SKETCH_PLACEMENT
+    d = xy[0] - xy[2]
+    a = math.atan2(d[1], d[0]) + 0.1
+    p = App.Vector(*xy[0], 0) + App.Vector(math.cos(a), math.sin(a), 0) * 8.0
+    lines.addGeometry(Part.LineSegment(p, p + App.Vector(math.cos(a), math.sin(a), 0) * 40.0),
+                      False)
+    doc.recompute()
     panel = open_panel(doc, "Elastica_Fit", [(ksk, "Edge1")], "Fit elastica")
     f = panel.obj
     fits_combo_view(panel, "fit")
-    check("rms" in panel.result.text() and "k =" in panel.result.text() and "-1" not in
-          panel.result.text(), "fit panel shows rms, max error, k, the B-spline (no '-1 mm')")
+    check("rms" in panel.result.text() and "point to curve" in panel.result.text() and "k =" in
+          panel.result.text() and "-1" not in panel.result.text(),
+          "fit panel shows point-to-curve rms, max error, k, the B-spline (no '-1 mm')")
     check(panel.model.currentText().startswith("Discrete elastica"), "fit: human model names")
-    check(not panel.degree.isEnabled() and not panel.tol.isEnabled(),
-          "fit, discrete model: B-spline degree and tolerance disabled")
-    check(panel.pin_start.isEnabled() and panel.pin_end.isEnabled() == Fi.has_constraints(),
-          "fit: pin end needs the library's constraints")
+    check(not panel.degree.isEnabled() and not panel.tol.isEnabled() and
+          not panel.distance.isEnabled(),
+          "fit, discrete model: B-spline degree, tolerance and distance disabled")
+    check(panel.pin_start.isEnabled() and panel.pin_end.isEnabled() and
+          all(b.isEnabled() for b in panel.tangent_buttons) and
+          panel.start_curvature[0].isEnabled() and not panel.start_curvature[1].isEnabled(),
+          "fit: pins, tangents and curvature boxes enabled; a curvature value only when checked")
     panel.model.setCurrentIndex(1)
     wait()
-    check(f.Model == "smooth" and panel.degree.isEnabled() and "converged" in f.Status,
-          f"fit panel: smooth model ({f.Status})")
+    check(f.Model == "smooth" and panel.degree.isEnabled() and panel.distance.isEnabled() and
+          "converged" in f.Status, f"fit panel: smooth model ({f.Status})")
     t0 = f.Tolerance
     click_arrow(panel.tol, up=True)
     check(abs(f.Tolerance - 10 * t0) < 1e-12 * t0 and panel.tol.text().startswith(f"{10 * t0:g}"),
@@ -447,13 +460,20 @@ def fit_panel(doc, S):
     wait()
     check(abs(f.Tolerance - t0 / 10) < 1e-12 * t0 and "error" not in f.Status,
           f"fit: tolerance {f.Tolerance:g} applied")
+    panel.pin_end.click()                   # a mouse click on the check box
+    wait()
+    e = f.Shape.Edges[0]
+    check(f.PinEnd and (e.valueAt(e.LastParameter) - f.DataPoints[-1]).Length < 1e-9,
+          "fit: pin end puts the curve's end on the last point")
+    panel.pin_end.click()
+    wait()
     type_into(panel.step, "2")
     wait()
     panel.split.setChecked(True)
     wait()
-    check(f.ResampleStep == 2.0 and len(f.Shape.Edges) == 2 and len(f.K) == 2 and
-          not panel.pin_start.isEnabled(), "fit panel: keyline split into two elasticae, "
-                                           "pinning disabled")
+    check(f.ResampleStep == 2.0 and len(f.Shape.Edges) == 1 and len(f.K) == 2 and
+          not panel.pin_start.isEnabled() and not panel.distance.isEnabled() and
+          "G2" in panel.result.text(), "fit panel: keyline as one G2 curve, ends disabled")
     check(len(f.DataPoints) == len(f.FootPoints) > 20, "fit: fitted points and their feet kept")
     vp = f.ViewObject.Proxy
     check(vp.overlay_counts() == (len(f.DataPoints), 0), f"fit: markers drawn {vp.overlay_counts()}")
@@ -474,17 +494,60 @@ def fit_panel(doc, S):
     panel.sketch.setCurrentIndex(panel.sketch.count() - 1)   # new sketch
     check(panel.accept(), "fit panel accepts")
     pump()
-    check(any(o.Name.startswith("ElasticaSketch") for o in doc.Objects),
-          "fit B-spline copied into a new sketch")
-    before = (f.Model, f.SplitAtInflection, round(f.Rms, 12))
+    out = [o for o in doc.Objects if o.Name.startswith("ElasticaSketch")]
+    check(len(out) == 1 and len(out[0].Geometry) == 1,
+          "fit: the keyline copied into a new sketch as ONE B-spline")
+    fit_panel_ends(doc, f, lines)
+    return ksk
+
+
+def fit_panel_ends(doc, f, lines):
+    """Editing a fit's ends in its panel (double-click): pin end, a start tangent
+    picked from an edge, a start curvature the model cannot meet (its message names
+    the field, the shape stays), and Cancel reverting all of it."""
+    before = (f.Model, f.SplitAtInflection, f.PinEnd, f.StartTangent, round(f.Rms, 12),
+              round(f.Shape.Length, 9))
     panel = double_click(f)
-    panel.model.setCurrentIndex(0)
     panel.split.setChecked(False)
     wait()
+    panel.pin_end.click()
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(doc.Name, f.Name, "Edge1")         # its own edge: refused
+    panel.tangent_buttons[0].click()
+    check(not f.StartTangent and "another object" in panel.result.text(),
+          "fit: a tangent from the fit's own edge is refused")
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(doc.Name, lines.Name, "Edge1")
+    panel.tangent_buttons[0].click()                              # the user's pick
+    wait()
+    e = f.Shape.Edges[0]
+    line = lines.Shape.Edges[0]
+    t = App.Vector(e.tangentAt(e.FirstParameter)).normalize()
+    check(f.StartTangent and f.StartTangent[0] is lines and panel.tangent_buttons[0].text() ==
+          f"{lines.Label}.Edge1" and t.cross(line.tangentAt(0)).Length < 1e-9 and
+          (e.valueAt(e.LastParameter) - f.DataPoints[-1]).Length < 1e-9,
+          f"fit: start tangent from a picked edge, end pinned ({f.Status})")
+    f.ViewObject.ShowResiduals = True
+    view = Gui.ActiveDocument.ActiveView
+    view.setCameraOrientation(f.Plane.Rotation)
+    from freecad.elastica.panelbase import show_box
+    box = App.BoundBox(lines.Shape.BoundBox)         # the start: the tangent line, residuals
+    for p in f.DataPoints[:len(f.DataPoints) // 4]:
+        box.add(p)
+    show_box(box)
+    screenshot("gui_fit_ends.png")
+    shape = f.Shape.copy()
+    panel.start_curvature[0].click()
+    type_into(panel.start_curvature[1], "1000")
+    wait()
+    check("Start curvature cannot be met" in panel.result.text() and
+          abs(f.Shape.Length - shape.Length) < 1e-12,
+          "fit: a start curvature the model cannot meet: the panel names it, the shape stays")
     panel.reject()
     pump()
-    check((f.Model, f.SplitAtInflection, round(f.Rms, 12)) == before, "fit Cancel reverts")
-    return ksk
+    after = (f.Model, f.SplitAtInflection, f.PinEnd, f.StartTangent, round(f.Rms, 12),
+             round(f.Shape.Length, 9))
+    check(after == before and panel.tangent_buttons, f"fit Cancel reverts ({after} vs {before})")
 
 
 # ------------------------------------------------------------------ the others

@@ -526,24 +526,27 @@ class CombTest(unittest.TestCase):
         self.assertAlmostEqual(n0, 5.0, places=6)
         del g
 
-    def test_comb_of_a_split_fit_has_one_envelope_per_curve(self):
+    def test_comb_of_a_keyline_fit_is_one_envelope(self):
+        """A split keyline is one G2 curve: one comb envelope through the joint, without
+        the straight segment between the halves' far ends that joining them head to
+        head drew (issue 15)."""
         from freecad.elastica import fit as Fi
         xy, _ = S.keyline_xy(40)
         sk = S.points_sketch(self.doc, xy)
-        for model in ("smooth", "discrete"):
+        for model, samples in (("smooth", 2 * 50 - 1), ("discrete", 50)):
             f = Fi.make(self.doc, [(sk, [])], Model=model, SplitAtInflection=True)
             comb = Co.make(self.doc, f, Samples=50)
             self.doc.recompute()
             self.assertEqual(comb.Status, "ok", model)
             teeth = [e for e in comb.Shape.Edges if e.Length > 1e-9]
-            # 50 teeth per curve (a discrete fit too), and 2 x 49 envelope segments: no
-            # segment joins the two curves' envelopes
             envelopes = comb.Shape.Wires
-            self.assertEqual(len(envelopes), 2, model)
-            # (a discrete fit's natural cubic has zero curvature, no tooth, at its ends)
-            n = len(teeth) - sum(len(w.Edges) for w in envelopes)
-            self.assertTrue(2 * 50 - (4 if model == "discrete" else 0) <= n <= 2 * 50, (model, n))
-            longest = max(e.Length for w in envelopes for e in w.Edges)
+            self.assertEqual(len(envelopes), 1, model)
+            self.assertEqual(len(envelopes[0].Edges), samples - 1, model)
+            # every sample has a tooth but where the curvature is zero: the smooth
+            # keyline's joint (an inflection), a discrete fit's natural cubic's two ends
+            n = len(teeth) - len(envelopes[0].Edges)
+            self.assertEqual(n, samples - (1 if model == "smooth" else 2), model)
+            longest = max(e.Length for e in envelopes[0].Edges)
             self.assertLess(longest, 0.2 * f.Shape.BoundBox.DiagonalLength, model)
 
     def test_comb_absurd_values_give_a_message(self):

@@ -5,6 +5,7 @@ keyline split, B-spline into a sketch, and bad input (document unchanged).
 The sample data lie on a known elastica (k = 0.65, the keyline of
 elastica_samples.KEYLINE), so a correct fit has a tiny error and finds that k."""
 import json
+import math
 import os
 import tempfile
 import unittest
@@ -13,6 +14,7 @@ import FreeCAD as App
 import Part
 
 import elastica_samples as S
+from elastica_samples import el
 from freecad.elastica import commands as C
 from freecad.elastica import comb as Co
 from freecad.elastica import fit as Fi
@@ -95,26 +97,42 @@ class FitInputsTest(unittest.TestCase):
         f = Fi.make(self.doc, [], csv_file=path, Model="smooth")
         self._fit_ok(f)
 
-    def test_keyline_split_at_inflection(self):
+    def test_keyline_split_at_inflection_is_one_g2_bspline(self):
+        """Issue 13 point 4: the keyline is ONE curve in the sketch, G2 at the joint,
+        measured on the shape from both sides of the joint's knot."""
+        import numpy as np
         xy, _ = S.keyline_xy(200)
         sk = S.points_sketch(self.doc, xy)
-        f = Fi.make(self.doc, [(sk, [])], Model="smooth", SplitAtInflection=True,
-                       ResampleStep=2.0)
-        self.doc.recompute()
-        self.assertFalse(f.Status.startswith("error"), f.Status)
-        self.assertEqual(len(f.Shape.Edges), 2)
-        self.assertEqual(len(f.K), 2)
-        for k in f.K:
-            self.assertAlmostEqual(k, K_TRUE, delta=0.01)
-        # both halves start at the inflection vertex: they share one end point
-        a, b = f.Shape.Edges
-        self.assertLess((a.valueAt(a.FirstParameter) - b.valueAt(b.FirstParameter)).Length, 1e-6)
-        # ... which lies near the true inflection, where cn(u) = 0: kappa = 0
-        curves, plc = f.Proxy.plane_curves(f)
-        self.assertEqual(len(curves), 2)
-        for c in curves:
-            self.assertLess(abs(c.curvature([0.0])[0]), 2e-3)
-        self.assertLess(f.Rms, 0.05)
+        for model in ("smooth", "discrete"):
+            f = Fi.make(self.doc, [(sk, [])], Model=model, SplitAtInflection=True,
+                        ResampleStep=2.0, Tolerance=1e-6, Degree=5)
+            self.doc.recompute()
+            self.assertFalse(f.Status.startswith("error"), f.Status)
+            self.assertEqual(len(f.Shape.Edges), 1, model)
+            self.assertEqual(len(f.K), 2)
+            for k in f.K:
+                self.assertAlmostEqual(k, K_TRUE, delta=0.01)
+            # both halves start at the joint, the true inflection (cn = 0: kappa = 0)
+            halves, plc = Fi.stored_curves(f)
+            self.assertEqual(len(halves), 2)
+            a, b = halves[0].points()[0], halves[1].points()[0]
+            self.assertLess(float(np.hypot(*(a - b))), 1e-9)
+            if model == "smooth":            # along the shape: the first half reversed
+                along, _ = f.Proxy.plane_curves(f)
+                end = along[0].points(np.array([along[0].length]))[0]
+                self.assertLess(float(np.hypot(*(end - b))), 1e-9)
+            joint = plc.multVec(App.Vector(float(a[0]), float(a[1]), 0))
+            c = f.Shape.Edges[0].Curve
+            u = min(c.getKnots(), key=lambda t: (c.value(t) - joint).Length)
+            self.assertLess((c.value(u) - joint).Length, 1e-7, model)
+            (t0, k0), (t1, k1) = S.sides(c, u, 1e-3 * (c.LastParameter - c.FirstParameter))
+            self.assertLess(t0.getAngle(t1), 1e-9, model)              # G1 ...
+            self.assertLess((k0 - k1).Length, 1e-9, model)              # ... and G2
+            if model == "smooth":            # the joint is the inflection: zero curvature
+                self.assertLess(k0.Length, 1e-9)
+                self.assertLess(S.distance_to_shape([tuple(p) for p in f.FootPoints], f.Shape),
+                                f.BSplineDeviation + 1e-9)
+            self.assertLess(f.Rms, 0.05)
 
     def test_write_fit_into_new_sketch(self):
         sk = S.points_sketch(self.doc, self.xy)
@@ -227,54 +245,39 @@ class FitResultTest(unittest.TestCase):
         self.assertLess(S.distance_to_shape([tuple(p) for p in f.FootPoints], f.Shape),
                         2 * f.Tolerance)
 
-    def test_split_fit_keeps_both_sides_points(self):
-        f = Fi.make(self.doc, [(self.sk, [])], Model="smooth", SplitAtInflection=True)
-        self.doc.recompute()
-        self.assertFalse(f.Status.startswith("error"), f.Status)
-        self.assertEqual(len(f.DataPoints), len(f.FootPoints))
-        self.assertGreater(len(f.DataPoints), 40)           # resampled, inflection twice
-        self.assertLess(S.distance_to_shape([tuple(p) for p in f.FootPoints], f.Shape),
-                        10 * f.Tolerance)
-
-    def test_pin_start_starts_at_the_first_point(self):
-        xy = self.xy + __import__("numpy").random.default_rng(3).normal(0, 0.3, self.xy.shape)
-        sk = S.points_sketch(self.doc, xy, "Noisy")
-        f = Fi.make(self.doc, [(sk, [])], Model="smooth", PinStart=True)
-        self.doc.recompute()
-        self.assertFalse(f.Status.startswith("error"), f.Status)
-        e = f.Shape.Edges[0]
-        start = min((e.valueAt(e.FirstParameter), e.valueAt(e.LastParameter)),
-                    key=lambda p: (p - f.DataPoints[0]).Length)
-        self.assertLess((start - f.DataPoints[0]).Length, 2 * f.Tolerance)
-        free = Fi.make(self.doc, [(sk, [])], Model="smooth")
-        self.doc.recompute()
-        e = free.Shape.Edges[0]
-        self.assertGreater(min((e.valueAt(u) - free.DataPoints[0]).Length
-                               for u in (e.FirstParameter, e.LastParameter)), 10 * f.Tolerance)
-
-    def test_pin_end_and_tangents_need_the_fit_constraints(self):
-        f = Fi.make(self.doc, [(self.sk, [])], Model="smooth", PinEnd=True)
-        self.doc.recompute()
-        if not Fi.has_constraints():
-            # WIRING(fit API): until el.fit takes constraints= the feature says so
-            self.assertTrue(f.Status.startswith("error"), f.Status)
-            self.assertIn("constraints", f.Status)
-        else:
+    def test_split_fit_keeps_every_point_once_in_order(self):
+        import numpy as np
+        for model, n in (("smooth", 40), ("discrete", None)):
+            f = Fi.make(self.doc, [(self.sk, [])], Model=model, SplitAtInflection=True)
+            self.doc.recompute()
             self.assertFalse(f.Status.startswith("error"), f.Status)
-            e = f.Shape.Edges[0]
-            self.assertLess(min((e.valueAt(u) - f.DataPoints[-1]).Length
-                                for u in (e.FirstParameter, e.LastParameter)), 2 * f.Tolerance)
+            self.assertEqual(len(f.DataPoints), len(f.FootPoints))
+            self.assertEqual(len(f.DataPoints), len(f.Distances))
+            if n:                  # the smooth keyline fits the points themselves
+                self.assertEqual(len(f.DataPoints), n)
+                self.assertLess(max((a - self.sk.getGlobalPlacement().multVec(App.Vector(x, y, 0)))
+                                    .Length for a, (x, y) in zip(f.DataPoints, self.xy)), 1e-9)
+            # in the order of travel: the distance from the first point grows
+            d0 = np.array([(p - f.DataPoints[0]).Length for p in f.DataPoints])
+            self.assertTrue(np.all(np.diff(d0) > 0), model)
+            self.assertLess(S.distance_to_shape([tuple(p) for p in f.FootPoints], f.Shape),
+                            10 * f.Tolerance if model == "smooth" else 0.1)
 
-    def test_pinning_a_split_keyline_is_refused(self):
-        f = Fi.make(self.doc, [(self.sk, [])], SplitAtInflection=True, PinStart=True)
-        self.doc.recompute()
-        self.assertTrue(f.Status.startswith("error"))
-        self.assertIn("one-piece", f.Status)
+    def test_pinning_a_split_keyline_is_refused_naming_the_field(self):
+        for prop, value, field in (("PinStart", True, "Pin start"), ("PinEnd", True, "Pin end"),
+                                   ("UseEndCurvature", True, "End curvature")):
+            f = Fi.make(self.doc, [(self.sk, [])], SplitAtInflection=True, **{prop: value})
+            self.doc.recompute()
+            self.assertTrue(f.Status.startswith("error"))
+            self.assertIn(field, f.Status)
+            self.assertIn("one piece", f.Status)
+            self.assertTrue(f.Shape.isNull())
 
     def test_discrete_fit_bspline_passes_through_its_vertices(self):
         f = Fi.make(self.doc, [(self.sk, [])], Model="discrete")
         self.doc.recompute()
         self.assertEqual(f.BSplineDeviation, -1.0)
+        self.assertEqual(len(f.Shape.Edges), 1)
         curves, plc = f.Proxy.plane_curves(f)
         verts = [tuple(plc.multVec(App.Vector(x, y, 0))) for x, y in curves[0].points()]
         self.assertLess(S.distance_to_shape(verts, f.Shape), 1e-9)
@@ -350,6 +353,238 @@ class FitResultTest(unittest.TestCase):
         self.assertIs(features.make_fit, Fi.make)          # recorded macros of version 1
 
 
+def travel_ends(f):
+    """[(point, unit tangent, signed curvature)] at the start and the end of a fit's
+    one B-spline, in the direction of travel (first point -> last), from Part's curve
+    API: curvature() and normal() (towards the centre), signed + when the curve
+    turns left seen from the fit plane's normal."""
+    c = f.Shape.Edges[0].Curve
+    up = f.Plane.Rotation.multVec(App.Vector(0, 0, 1))
+    out = []
+    for u in (c.FirstParameter, c.LastParameter):
+        t = App.Vector(c.tangent(u)[0]).normalize()
+        k = c.curvature(u)
+        if k > 1e-13:
+            k *= 1.0 if t.cross(App.Vector(c.normal(u))).dot(up) > 0 else -1.0
+        out.append((c.value(u), t, k))
+    return out
+
+
+def plane_angle(f, v):
+    """The angle of a 3D direction in the fit's plane (as the library counts it)."""
+    import math
+    w = f.Plane.Rotation.inverted().multVec(v)
+    return math.atan2(w.y, w.x)
+
+
+def inflection_start_xy(n=40, noise=0.0, seed=1):
+    """Points along the sample elastica from an inflection (curvature 0 at the first
+    point) to past the next one, with optional noise."""
+    import numpy as np
+    from scipy.special import ellipk
+    p = dict(S.KEYLINE, q=float(ellipk(S.KEYLINE["k"] ** 2)), length=300.0)
+    c = el.SmoothElastica(**p)
+    xy = c.points(np.linspace(0.0, c.length, n))
+    return xy + np.random.default_rng(seed).normal(0.0, noise, xy.shape), c
+
+
+class FitConstraintTest(unittest.TestCase):
+    """Issue 13 point 3 in FreeCAD: each end condition, set alone by its property,
+    holds on the feature's B-spline to 1e-9 (positions in mm, angles in rad,
+    curvatures in 1/mm), for noisy points on which the free fit misses it."""
+
+    def setUp(self):
+        import numpy as np
+        self.doc = S.new_doc("ElasticaFitConstraints")
+        xy, _ = S.keyline_xy(40)
+        self.xy = xy + np.random.default_rng(3).normal(0.0, 0.3, xy.shape)
+        self.sk = S.points_sketch(self.doc, self.xy, "Noisy")
+        # lines near the data's ends, 0.05 rad off the data's own directions there
+        self.lines = self.doc.addObject("Sketcher::SketchObject", "Tangents")
+        self.lines.Placement = S.SKETCH_PLACEMENT
+        for i, j, turn in ((0, 3, 0.05), (-1, -4, -0.05)):
+            d = self.xy[i] - self.xy[j]
+            a = math.atan2(d[1], d[0]) + turn
+            p = App.Vector(*self.xy[i], 0) + App.Vector(math.cos(a), math.sin(a), 0) * 5.0
+            self.lines.addGeometry(Part.LineSegment(p, p + App.Vector(math.cos(a), math.sin(a),
+                                                                      0) * 30.0), False)
+        self.doc.recompute()
+
+    def tearDown(self):
+        App.closeDocument(self.doc.Name)
+
+    def _fit(self, model, **props):
+        f = Fi.make(self.doc, [(self.sk, [])], Model=model, Tolerance=1e-6, **props)
+        self.doc.recompute()
+        self.assertFalse(f.Status.startswith("error"), (model, props, f.Status))
+        self.assertIn("converged", f.Status)
+        return f
+
+    def test_pinned_ends_on_the_shape(self):
+        for model in ("smooth", "discrete"):
+            free = travel_ends(self._fit(model))
+            for prop, i in (("PinStart", 0), ("PinEnd", 1)):
+                f = self._fit(model, **{prop: True})
+                point = (f.DataPoints[0], f.DataPoints[-1])[i]
+                self.assertLess((travel_ends(f)[i][0] - point).Length, 1e-9, (model, prop))
+                self.assertGreater((free[i][0] - point).Length, 0.05, (model, prop))
+
+    def test_end_tangents_from_picked_edges_on_the_shape(self):
+        for model in ("smooth", "discrete"):
+            for prop, i, edge in (("StartTangent", 0, "Edge1"), ("EndTangent", 1, "Edge2")):
+                f = self._fit(model, **{prop: (self.lines, [edge])})
+                line = self.lines.Shape.getElement(edge)
+                want = App.Vector(line.tangentAt(line.FirstParameter)).normalize()
+                got = travel_ends(f)[i][1]
+                self.assertLess(got.cross(want).Length, 1e-9, (model, prop))
+                # the curve runs on along the data: the tangent points forward
+                ahead = f.DataPoints[len(f.DataPoints) // 2] - travel_ends(f)[i][0]
+                self.assertGreater(got.dot(ahead) * (1 if i == 0 else -1), 0, (model, prop))
+
+    def test_end_curvatures_on_the_shape(self):
+        """Values near the data's own end curvatures (0.012 and -0.0124 1/mm): the
+        smooth B-spline carries them exactly; a discrete fit's cubic carries its
+        polygon's tangents exactly and a curvature of 0 (a natural end)."""
+        f = self._fit("smooth", UseStartCurvature=True, StartCurvature=0.0105)
+        self.assertAlmostEqual(travel_ends(f)[0][2], 0.0105, delta=1e-9)
+        f = self._fit("smooth", UseEndCurvature=True, EndCurvature=-0.011)
+        self.assertAlmostEqual(travel_ends(f)[1][2], -0.011, delta=1e-9)
+        free = self._fit("smooth")
+        self.assertGreater(abs(travel_ends(free)[1][2] + 0.011), 1e-4)
+        # a discrete fit's cubic: its second derivative is kappa N at a speed near 1
+        f = self._fit("discrete", UseStartCurvature=True, StartCurvature=0.0105)
+        self.assertAlmostEqual(travel_ends(f)[0][2], 0.0105, delta=0.02 * 0.0105)
+
+    def test_zero_curvature_start_on_the_shape(self):
+        """An inflection at the first point (0 = a free end or an inflection)."""
+        xy, _ = inflection_start_xy(40, noise=0.3)
+        sk = S.points_sketch(self.doc, xy, "FromInflection")
+        for model in ("smooth", "discrete"):
+            f = Fi.make(self.doc, [(sk, [])], Model=model, Tolerance=1e-6, UseStartCurvature=True)
+            self.doc.recompute()
+            self.assertFalse(f.Status.startswith("error"), f.Status)
+            self.assertLess(abs(travel_ends(f)[0][2]), 1e-9, model)
+            self.assertLess(f.Rms, 0.4, model)
+            curve = f.Proxy.plane_curves(f)[0][0]
+            if model == "smooth":           # the elastica itself, not only its B-spline
+                self.assertLess(abs(curve.curvature([0.0])[0]), 1e-9)
+
+    def test_all_end_conditions_at_once(self):
+        f = self._fit("smooth", PinStart=True, PinEnd=True, StartTangent=(self.lines, ["Edge1"]),
+                      EndTangent=(self.lines, ["Edge2"]))
+        (p0, t0, _), (p1, t1, _) = travel_ends(f)
+        self.assertLess((p0 - f.DataPoints[0]).Length, 1e-9)
+        self.assertLess((p1 - f.DataPoints[-1]).Length, 1e-9)
+        for t, e in ((t0, "Edge1"), (t1, "Edge2")):
+            line = self.lines.Shape.getElement(e)
+            self.assertLess(t.cross(App.Vector(line.tangentAt(0)).normalize()).Length, 1e-9)
+
+    def test_a_constraint_that_cannot_be_met_leaves_the_feature_unchanged(self):
+        f = self._fit("discrete")
+        before = (f.Shape.copy(), f.Rms, f.MaxError, f.Curves, list(f.DataPoints),
+                  list(f.Distances), list(f.K))
+        f.UseStartCurvature, f.StartCurvature = True, 1e3     # radius 1 um, 8 mm segments
+        self.doc.recompute()
+        self.assertTrue(f.Status.startswith("error"), f.Status)
+        self.assertIn("Start curvature cannot be met", f.Status)
+        shape, rms, mx, curves, data, dist, k = before
+        self.assertTrue(f.Shape.isSame(shape) or abs(f.Shape.Length - shape.Length) < 1e-12)
+        self.assertEqual((f.Rms, f.MaxError, f.Curves, list(f.DataPoints), list(f.Distances),
+                          list(f.K)), (rms, mx, curves, data, dist, k))
+        f.StartCurvature = float("nan")
+        self.doc.recompute()
+        self.assertIn("Start curvature = nan", f.Status)
+        f.UseStartCurvature = False
+        self.doc.recompute()
+        self.assertFalse(f.Status.startswith("error"), f.Status)
+
+    def test_a_command_with_a_bad_constraint_creates_nothing(self):
+        before = S.doc_state(self.doc)
+        del C.MESSAGES[:]
+        self.assertIsNone(C.fit_sources([(self.sk, [])], open_panel=False, Model="discrete",
+                                        UseEndCurvature=True, EndCurvature=-1e3))
+        self.assertEqual(len(C.MESSAGES), 1)
+        self.assertIn("End curvature cannot be met", C.MESSAGES[0])
+        self.assertEqual(S.doc_state(self.doc), before)
+        self.assertIsNone(C.fit_sources([(self.sk, [])], open_panel=False, PinEnd=True,
+                                        SplitAtInflection=True))
+        self.assertIn("Pin end", C.MESSAGES[-1])
+        self.assertEqual(S.doc_state(self.doc), before)
+
+    def test_reversed_elastica_is_the_same_curve_backwards(self):
+        import numpy as np
+        for k in (0.65, -0.3, 1.4, -1.7, 0.0):
+            c = el.SmoothElastica(x0=1, y0=2, phi=0.4, mu=0.7, k=k, q=0.3, length=5.0)
+            r = Fi.reversed_elastica(c)
+            s = np.linspace(0.0, c.length, 9)
+            self.assertLess(np.abs(r.points(s) - c.points(c.length - s)).max(), 1e-12)
+            self.assertLess(np.abs(r.curvature(s) + c.curvature(c.length - s)).max(), 1e-12)
+            turn = np.remainder(r.angle(s) - c.angle(c.length - s), 2 * np.pi)
+            self.assertLess(np.abs(turn - np.pi).max(), 1e-12)
+
+
+class FitDistanceTest(unittest.TestCase):
+    """Issue 13 point 2 in FreeCAD: Rms, MaxError and Distances are the library's
+    point-to-curve figures, and equal Part's own distance of each point to the shape."""
+
+    def setUp(self):
+        import numpy as np
+        self.doc = S.new_doc("ElasticaFitDistances")
+        # unevenly spaced (1:6) noisy points with a gap, as a scan gives them
+        _, c = S.keyline_xy(2)
+        t = np.concatenate([np.linspace(0, 0.3, 30) ** 1.0, np.linspace(0.45, 1.0, 12)])
+        self.xy = c.points(t * c.length) + np.random.default_rng(5).normal(0, 0.2, (42, 2))
+        self.sk = S.points_sketch(self.doc, self.xy, "Uneven")
+
+    def tearDown(self):
+        App.closeDocument(self.doc.Name)
+
+    def _check_distances(self, f, shape, tol):
+        import numpy as np
+        d = np.array(f.Distances)
+        part = np.array([shape.distToShape(Part.Vertex(p))[0] for p in f.DataPoints])
+        self.assertLess(np.abs(np.abs(d) - part).max(), tol)
+        self.assertAlmostEqual(f.Rms, float(np.sqrt(np.mean(d ** 2))), delta=1e-12)
+        self.assertAlmostEqual(f.MaxError, float(np.abs(d).max()), delta=1e-12)
+        feet = np.array([(a - b).Length for a, b in zip(f.DataPoints, f.FootPoints)])
+        self.assertLess(np.abs(feet - np.abs(d)).max(), 1e-9)
+        self.assertIn("point to curve", f.ErrorMeasure)
+
+    def test_smooth_distances_are_point_to_shape(self):
+        for distance in ("orthogonal", "paired"):
+            f = Fi.make(self.doc, [(self.sk, [])], Model="smooth", Distance=distance,
+                        Tolerance=1e-7)
+            self.doc.recompute()
+            self.assertFalse(f.Status.startswith("error"), f.Status)
+            self._check_distances(f, f.Shape, 2e-7)
+            # the numbers are the library's for the same plane points
+            r = el.fit(G.to_plane(f.Plane, f.DataPoints)[:, :2], model="smooth",
+                       distance=distance)
+            self.assertAlmostEqual(f.Rms, r.rms, delta=1e-9)
+            self.assertAlmostEqual(f.MaxError, r.max_error, delta=1e-9)
+        # the orthogonal fit minimises what both report
+        orth, paired = self.doc.Objects[-2], self.doc.Objects[-1]
+        self.assertLessEqual(orth.Rms, paired.Rms)
+
+    def test_discrete_distances_are_point_to_polygon(self):
+        # the discrete model pairs point i with vertex i: equilateral (resampled) data
+        f = Fi.make(self.doc, [(self.sk, [])], Model="discrete", ResampleStep=6.0)
+        self.doc.recompute()
+        curves, plc = f.Proxy.plane_curves(f)
+        polygon = Part.makePolygon(G.to_3d(plc, curves[0].points()))
+        self._check_distances(f, polygon, 1e-9)
+        self.assertIn("polygon", f.ErrorMeasure)
+
+    def test_keyline_distances_are_point_to_shape(self):
+        f = Fi.make(self.doc, [(self.sk, [])], Model="smooth", SplitAtInflection=True,
+                    Tolerance=1e-7)
+        self.doc.recompute()
+        self.assertFalse(f.Status.startswith("error"), f.Status)
+        self._check_distances(f, f.Shape, 2e-7)
+        self.assertEqual(len(f.DataPoints), len(self.xy))
+
+
+
 class FitBadInputTest(unittest.TestCase):
     def setUp(self):
         self.doc = S.new_doc("ElasticaFitBad")
@@ -408,5 +643,3 @@ class FitBadInputTest(unittest.TestCase):
         self.assertEqual(f.Model, "smooth")
         self.assertLess(f.Rms, 1e-3)
 
-
-del Part

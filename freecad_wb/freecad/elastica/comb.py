@@ -1,6 +1,7 @@
 """Curvature comb: teeth along a curve, each as long as the curvature there (times a
 scale), on the convex side, with the envelope of their tips, one envelope per
-curve (a split keyline's two halves are not joined). Smooth elasticae (fits,
+chain of curves that continue each other (a keyline's halves, a spline's pieces;
+separate edges are not joined). Smooth elasticae (fits,
 blends) use the library's exact curvature; anything else, including a discrete
 fit's B-spline, OpenCASCADE's curvature of the edges."""
 from __future__ import annotations
@@ -69,7 +70,22 @@ def comb_core(source, subs=(), samples=60, scale=0.0):
         if not edges:
             raise InputProblem("the comb's source has no edges")
         per_curve = [_edge_teeth(e, samples) for e in edges]
-    return scaled_teeth(per_curve, shape.BoundBox.DiagonalLength, scale)
+    return scaled_teeth(chained(per_curve, 1e-9 * shape.BoundBox.DiagonalLength),
+                        shape.BoundBox.DiagonalLength, scale)
+
+
+def chained(per_curve, gap):
+    """The (feet, normals, curvatures) of curves that continue each other (a curve's
+    last foot within ``gap`` of the next one's first) joined into one: one envelope
+    along a G2 chain such as a keyline fit or an elastic spline."""
+    out = [per_curve[0]]
+    for feet, normals, kappas in per_curve[1:]:
+        f0, n0, k0 = out[-1]
+        if (f0[-1] - feet[0]).Length <= gap:
+            out[-1] = (f0 + feet[1:], n0 + normals[1:], k0 + kappas[1:])
+        else:
+            out.append((feet, normals, kappas))
+    return out
 
 
 def scaled_teeth(per_curve, extent, scale=0.0):

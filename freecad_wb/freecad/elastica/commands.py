@@ -136,7 +136,8 @@ class _Command:
 
 def fit_sources(sources, csv_file="", open_panel=True, **options):
     """Check the fit input, create the Fit feature (recorded), open its task panel.
-    ``options`` override the preferences: Model, SplitAtInflection, PinStart, PinEnd,
+    ``options`` override the preferences: Model, Distance, SplitAtInflection, PinStart,
+    PinEnd, UseStartCurvature, StartCurvature, UseEndCurvature, EndCurvature,
     ResampleStep, Tolerance, Degree. Returns the new feature or None (message
     printed, document unchanged)."""
     from . import fit, sources as src_mod
@@ -149,11 +150,7 @@ def fit_sources(sources, csv_file="", open_panel=True, **options):
 
     def check():
         pts, plane, ordered, closed = src_mod.gather_points(sources, csv_file)
-        fit.fit_core(pts, plane, ordered, closed, model=opts["Model"],
-                     split=opts.get("SplitAtInflection", False),
-                     pin_start=opts.get("PinStart", False), pin_end=opts.get("PinEnd", False),
-                     step=opts.get("ResampleStep", 0.0), tol=opts["Tolerance"],
-                     degree=opts["Degree"])
+        fit.fit_core(pts, plane, ordered, closed, **fit.core_options(opts))
 
     return _check_and_create(
         "Fit elastica", "fit", check,

@@ -1,12 +1,12 @@
-"""Fit elastica: an elastica (or a keyline split at its inflection into two) fitted
-to sketch edges / vertices, a Points object, a wire or 3D polyline (plane fit) or a
-CSV file. Its shape is the B-spline of the fitted curve(s); it keeps the fitted
-points and their foot points on the curve, which the view provider draws as
-markers and residual segments."""
+"""Fit elastica: an elastica, or a keyline as one G2 curve of two elasticae meeting at
+its inflection, fitted to sketch edges / vertices, a Points object, a wire or 3D
+polyline (plane fit) or a CSV file, with optional end conditions (pinned ends, end
+tangents from picked edges, end curvatures). Its shape is ONE B-spline of the fitted
+curve; it keeps the fitted points, their point-to-curve distances and their feet on
+the curve, which the view provider draws as markers and residual segments."""
 from __future__ import annotations
 
 import dataclasses
-import inspect
 import json
 import math
 
@@ -14,7 +14,8 @@ import FreeCAD as App
 import Part
 
 from . import defaults
-from .geometry import curve_bspline, el, link_edge, np, part_bspline, plane_coordinates, to_3d
+from .geometry import (chain_bspline, cubic_through, el, link_edge, np, part_bspline,
+                       plane_coordinates, to_3d)
 from .proxy import (FeatureProxy, InputProblem, add_enum, add_property, check_degree,
                     check_number, check_tolerance, new_feature, read_only)
 from .sources import gather_points
@@ -22,27 +23,12 @@ from .sources import gather_points
 MIN_POINTS = 6          # fewer points cannot determine the 7 (5 shape) parameters of a fit
 MODELS = ["discrete", "smooth"]
 MODEL_NAMES = {"discrete": "Discrete elastica (Bobenko-Suris)", "smooth": "Smooth elastica"}
-
-
-def _fit_module():
-    """libelastica's fit module (el.fit / el.fit_keyline)."""
-    import importlib
-    el()
-    return importlib.import_module("libelastica.fit")   # the package's `fit` is the function
-
-
-def has_constraints():
-    """True when the library's fit() takes ``constraints=`` (pin end, end tangents)."""
-    return "constraints" in inspect.signature(_fit_module().fit).parameters
-
-
-def _moved(curve, frame2d):
-    """The same elastica in the parent coordinates of a (proper, rotation-only)
-    Frame2D: the start point mapped, the tangent angle phi turned by the frame's
-    angle; nothing else changes under a rigid motion."""
-    x0, y0 = frame2d.to_parent(np().array([curve.x0, curve.y0]))
-    turn = math.atan2(frame2d.f1[1], frame2d.f1[0])
-    return dataclasses.replace(curve, x0=float(x0), y0=float(y0), phi=float(curve.phi + turn))
+DISTANCES = ["orthogonal", "paired"]
+DISTANCE_NAMES = {"orthogonal": "Point to curve", "paired": "Paired (equilateral data)"}
+# the library's constraint names -> the fields that set them (messages name the field)
+CONSTRAINT_FIELDS = {"start_point": "Pin start", "end_point": "Pin end",
+                     "start_tangent": "Start tangent", "end_tangent": "End tangent",
+                     "start_curvature": "Start curvature", "end_curvature": "End curvature"}
 
 
 def _status_text(r):
@@ -53,27 +39,19 @@ def _status_text(r):
     return "not converged (best curve kept): " + ffi.string(lib.el_strerror(st)).decode()
 
 
-def _distances(r, xy):
-    """(distances of the points from the curve, their foot points (n, 2), what they
-    measure). WIRING(fit API): FitResult.distances / foot_s (point-to-curve, issue 13)
-    are used as soon as the library has them; until then the paired model points."""
-    n = np()
-    d = getattr(r, "distances", None)
-    foot_s = getattr(r, "foot_s", None)
-    if d is not None and foot_s is not None and isinstance(r.curve, el().SmoothElastica):
-        return n.asarray(d, dtype=float), r.curve.points(n.asarray(foot_s)), "point to curve"
-    feet = r.model_points()
-    if len(feet) != len(xy):       # a fit that pairs other points than these
-        from libelastica.report import closest_points
-        c = r.curve
-        feet = closest_points(xy, c.points(n.linspace(0, c.length, 2000))
-                              if isinstance(c, el().SmoothElastica) else c.points())
-    return n.linalg.norm(xy - feet, axis=1), feet, "to the paired model points"
+def reversed_elastica(c):
+    """The smooth elastica c run backwards: it starts at c's end, its tangent turned by
+    pi, curvature negated. With u' = sqrt(mu) s' + q' and q' = -(sqrt(mu) L + q),
+    u(L - s') = -u', and sn odd, cn, dn even give k' = -k, phi' = phi + pi (checked
+    against c at every point in the tests)."""
+    x1, y1 = c.points(np().array([c.length]))[0]
+    return el().SmoothElastica(x0=float(x1), y0=float(y1), phi=c.phi + math.pi, mu=c.mu,
+                               k=-c.k, q=-(math.sqrt(c.mu) * c.length + c.q), length=c.length)
 
 
 def tangent_angle(edge, at, forward, plane):
-    """The angle in ``plane`` of ``edge``'s tangent at its end nearest to ``at``,
-    signed so it points along ``forward`` (a plane vector)."""
+    """The angle in ``plane`` of ``edge``'s tangent at its end nearest to ``at``
+    (projected into the plane), signed so it points along ``forward`` (a plane vector)."""
     n = np()
     a, b = edge.FirstParameter, edge.LastParameter
     u = a if (edge.valueAt(a) - at).Length <= (edge.valueAt(b) - at).Length else b
@@ -85,17 +63,117 @@ def tangent_angle(edge, at, forward, plane):
     return float(n.arctan2(t.y, t.x))
 
 
+def end_constraints(xy, plane, pin_start=False, pin_end=False, start_edge=None, end_edge=None,
+                    start_curvature=None, end_curvature=None):
+    """el.fit's constraints for plane points xy (in their order): pinned ends at the
+    first / last point, tangents of Part edges at their ends nearest those points
+    (the direction of travel), curvatures (1/mm, + turning left seen from the plane's
+    normal, 0 = a free end or an inflection)."""
+    c = {}
+    if pin_start:
+        c["start_point"] = (float(xy[0][0]), float(xy[0][1]))
+    if pin_end:
+        c["end_point"] = (float(xy[-1][0]), float(xy[-1][1]))
+    # the direction of travel near each end: over an eighth of the points (noise-proof)
+    m = max(1, len(xy) // 8)
+    for name, edge, i, forward in (("start_tangent", start_edge, 0, xy[m] - xy[0]),
+                                   ("end_tangent", end_edge, -1, xy[-1] - xy[-1 - m])):
+        if edge is not None:
+            at = plane.multVec(App.Vector(float(xy[i][0]), float(xy[i][1]), 0.0))
+            c[name] = tangent_angle(edge, at, forward, plane)
+    for name, value in (("start_curvature", start_curvature), ("end_curvature", end_curvature)):
+        if value is not None:
+            c[name] = check_number(CONSTRAINT_FIELDS[name], value, unit="1/mm")
+    return c
+
+
+def _constraint_problem(exc):
+    """InputProblem naming the field of a constraint the library could not meet."""
+    field = CONSTRAINT_FIELDS.get(exc.constraint, exc.constraint or "a constraint")
+    why = str(exc).replace("fit: ", "", 1)
+    return InputProblem(f"{field} cannot be met: {why}; free it or change it")
+
+
+def _one_piece(xy, model, distance, fixed, constraints):
+    """The fit of points xy in one piece: (curves, results, data, feet, signed distances,
+    rms, max error) as the library reports them."""
+    try:
+        r = el().fit(xy, model=model, fixed=fixed or None, constraints=constraints or None,
+                     distance=distance if model == "smooth" else None)
+    except el().ConstraintError as exc:
+        raise _constraint_problem(exc) from None
+    return [r.curve], [r], xy, r.foot_points(), r.distances, r.rms, r.max_error
+
+
+def _keyline(xy, model, step):
+    """The keyline of points xy as one G2 curve (el.fit_keyline): its two halves as
+    the library gives them (plane coordinates, each from the joint outwards, with
+    opposite tangents and zero curvature there), the results, and the fitted points,
+    feet and signed distances (+ = left of the travel) in the order of travel from
+    the first point, each point once (the discrete joint vertex belongs to both)."""
+    n = np()
+    kf = el().fit_keyline(xy, r=step if step > 0 else None, model=model)
+    first, second = kf.first, kf.second
+    to_plane = kf.prepared.frame2d.to_parent         # the halves live in x''y''
+    skip = 1 if model == "discrete" else 0
+    data = to_plane(n.vstack([first.points[::-1], second.points[skip:]]))
+    feet = to_plane(n.vstack([first.foot_points()[::-1], second.foot_points()[skip:]]))
+    dist = n.concatenate([-first.distances[::-1], second.distances[skip:]])
+    halves = [_moved(r.curve, kf.prepared.frame2d) for r in (first, second)]
+    rms = float(n.sqrt(n.mean(dist ** 2)))
+    return halves, [first, second], data, feet, dist, rms, float(n.abs(dist).max())
+
+
+def _moved(curve, frame2d):
+    """The same elastica in the parent coordinates of a (proper, rotation-only)
+    Frame2D: the start point mapped, the tangent angle phi turned by the frame's
+    angle; nothing else changes under a rigid motion."""
+    x0, y0 = frame2d.to_parent(np().array([curve.x0, curve.y0]))
+    turn = math.atan2(frame2d.f1[1], frame2d.f1[0])
+    return dataclasses.replace(curve, x0=float(x0), y0=float(y0), phi=float(curve.phi + turn))
+
+
+def _shape_bspline(model, curves, split, constraints, tol, degree):
+    """ONE B-spline of the fit, run from the first point to the last: smooth, the
+    G2 B-spline of the elastica (a keyline: its first half reversed, then the second;
+    end points, tangents and curvatures exact, so the constraints hold on it and the
+    joint is G2); discrete, the C2 cubic through the vertices (a keyline's both
+    halves), natural at free ends, the constrained tangent or curvature at others."""
+    if model == "smooth":
+        return chain_bspline([reversed_elastica(curves[0]), curves[1]] if split else curves,
+                             tol, degree)
+    if split:
+        a, b = curves[0].points(), curves[1].points()
+        return cubic_through(np().vstack([a[::-1], b[1:]]))
+    ends = []
+    for where in ("start", "end"):
+        if f"{where}_tangent" in constraints:
+            ends.append(("tangent", constraints[f"{where}_tangent"]))
+        elif f"{where}_curvature" in constraints:
+            ends.append(("curvature", constraints[f"{where}_curvature"]))
+        else:
+            ends.append(None)
+    return cubic_through(curves[0].points(), *ends)
+
+
 def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", split=False,
-             pin_start=False, pin_end=False, start_edge=None, end_edge=None, step=0.0,
-             tol=1e-3, degree=3):
-    """Fit elastica(e) to 3D points. ``start_edge`` / ``end_edge``: Part edges whose
-    tangents the curve's ends follow. Returns a dict: 'curves' (plane coordinates),
-    'results', 'bsplines', 'placement', 'data' (the fitted points, plane
-    coordinates), 'feet' (their points on the curve), 'distances', 'measure',
-    'rms', 'max_error', 'k', 'status'. Raises InputProblem with a user message."""
+             distance="orthogonal", pin_start=False, pin_end=False, start_edge=None,
+             end_edge=None, start_curvature=None, end_curvature=None, step=0.0, tol=1e-3,
+             degree=3):
+    """Fit elastica(e) to 3D points. ``distance``: what the smooth one-piece fit
+    minimises ("orthogonal": point to curve; "paired": point i at arc length
+    i L/(n-1), for equilateral data). ``start_edge`` / ``end_edge``: Part edges whose
+    tangents the curve's ends follow; ``start_curvature`` / ``end_curvature``: 1/mm
+    or None (free). Returns a dict: 'curves' (plane coordinates; a keyline's two
+    halves, each from the joint), 'results', 'bspline', 'placement', 'data' (the
+    fitted points, plane coordinates), 'feet' (their nearest points on the curve),
+    'distances' (signed, + = left), 'measure', 'rms', 'max_error' (the library's
+    point-to-curve figures), 'k', 'status'. Raises InputProblem with a user message."""
     n = np()
     if model not in MODELS:
         raise InputProblem(f"unknown model {model!r} (discrete or smooth)")
+    if distance not in DISTANCES:
+        raise InputProblem(f"unknown distance {distance!r} (orthogonal or paired)")
     if closed:
         raise InputProblem("the input is a closed curve: an elastica fit needs an open one")
     if len(points) < MIN_POINTS:
@@ -104,24 +182,27 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
     tol = check_tolerance(tol)
     if model == "smooth":
         degree = check_degree(degree)
-    fm = _fit_module()
+    ends = dict(pin_start=pin_start, pin_end=pin_end, start_edge=start_edge, end_edge=end_edge,
+                start_curvature=start_curvature, end_curvature=end_curvature)
+    if split:
+        chosen = [CONSTRAINT_FIELDS[k] for k, v in zip(
+            ("start_point", "end_point", "start_tangent", "end_tangent", "start_curvature",
+             "end_curvature"), ends.values()) if v is not None and v is not False]
+        if chosen:
+            raise InputProblem(f"{', '.join(chosen)}: a split keyline is one G2 curve fitted "
+                               "with free ends (the library's keyline fit takes no end "
+                               "conditions); clear them or fit in one piece")
+        if model == "smooth" and distance == "paired":
+            raise InputProblem("a smooth keyline is fitted by point-to-curve distance: set "
+                               "Distance to point to curve, or fit in one piece")
     try:
         xy, plane = plane_coordinates(points, plane, flat=None)
         if not ordered:
             xn, _ = el().pca_normalize(xy)
             xy = n.ascontiguousarray(xy[n.argsort(xn[:, 0], kind="stable")])
+        constraints = {}
         if split:
-            kf = fm.fit_keyline(xy, r=step if step > 0 else None, model=model)
-            results = [kf.first, kf.second]
-            # the sides are fitted in the re-normalised x''y'' frame: back to the plane
-            to_plane_xy = kf.prepared.frame2d.to_parent
-            curves = [_moved(r.curve, kf.prepared.frame2d) for r in results]
-            poly, i = kf.prepared.polygon, kf.inflection
-            measured = [_distances(r, side) for r, side in zip(results, (poly[i::-1], poly[i:]))]
-            datas = [to_plane_xy(poly[i::-1]), to_plane_xy(poly[i:])]
-            feet = [to_plane_xy(m[1]) for m in measured]
-            dists = [m[0] for m in measured]
-            measure = measured[0][2]
+            fitted = _keyline(xy, model, step)
         else:
             fixed = {}
             if step > 0:
@@ -131,30 +212,10 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
             if len(xy) < MIN_POINTS:
                 raise InputProblem(f"resampling leaves {len(xy)} points; a fit needs "
                                    f"{MIN_POINTS}: use a smaller step")
-            if pin_start:
-                fixed.update(x0=float(xy[0][0]), y0=float(xy[0][1]))
-            constraints = {}
-            if pin_end:
-                constraints["end_point"] = (float(xy[-1][0]), float(xy[-1][1]))
-            if start_edge is not None:
-                constraints["start_tangent"] = tangent_angle(start_edge, points[0],
-                                                             xy[1] - xy[0], plane)
-            if end_edge is not None:
-                constraints["end_tangent"] = tangent_angle(end_edge, points[-1],
-                                                           xy[-1] - xy[-2], plane)
-            kw = {}
-            if constraints:
-                # WIRING(fit API): el.fit(..., constraints={...}) of issue 13; this build
-                # gets it as soon as the library's fit() takes the argument
-                if not has_constraints():
-                    raise InputProblem("pinning the end and end tangents need the fit "
-                                       "library's constraints, which this libelastica lacks")
-                kw["constraints"] = constraints
-            results = [fm.fit(xy, model=model, fixed=fixed or None, **kw)]
-            curves = [r.curve for r in results]
-            d, f, measure = _distances(results[0], xy)
-            datas, feet, dists = [xy], [f], [d]
-        bsplines = [curve_bspline(c, tol, degree) for c in curves]
+            constraints = end_constraints(xy, plane, **ends)
+            fitted = _one_piece(xy, model, distance, fixed, constraints)
+        curves, results, data, feet, dist, rms, max_error = fitted
+        bspline = _shape_bspline(model, curves, split, constraints, tol, degree)
     except InputProblem:
         raise
     except (ValueError, ArithmeticError, RuntimeError) as exc:
@@ -164,14 +225,14 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         elif step and "resample" in str(exc):
             hint = f" (is the resampling step {step} longer than the curve?)"
         raise InputProblem(f"fit failed: {exc}{hint}") from None
-    dist = n.concatenate(dists)
-    if not n.all(n.isfinite(dist)):
+    if not (n.all(n.isfinite(dist)) and math.isfinite(rms)):
         raise InputProblem("fit failed: non-finite error")
+    measure = "point to curve" if model == "smooth" else "point to curve (its polygon)"
     return {
-        "curves": curves, "results": results, "bsplines": bsplines, "placement": plane,
-        "data": n.vstack(datas), "feet": n.vstack(feet), "distances": dist, "measure": measure,
-        "rms": float(n.sqrt(n.mean(dist ** 2))), "max_error": float(dist.max()),
-        "k": [float(c.k) for c in curves],
+        "curves": curves, "results": results, "bspline": bspline, "placement": plane,
+        "data": data, "feet": feet, "distances": n.asarray(dist, dtype=float),
+        "measure": measure, "rms": float(rms), "max_error": float(max_error),
+        "k": [float(r.curve.k) for r in results],
         "status": "; ".join(_status_text(r) for r in results),
     }
 
@@ -192,32 +253,49 @@ class FitProxy(FeatureProxy):
         add_enum(obj, "Model", "Fit",
                  "discrete: Bobenko-Suris discrete elastica through the (resampled) points; "
                  "smooth: the smooth elastica", MODELS, model)
+        add_enum(obj, "Distance", "Fit",
+                 "What a smooth one-piece fit minimises: orthogonal = each point's distance "
+                 "to the curve (any spacing); paired = point i against arc length i L/(n-1), "
+                 "for equilateral data (e.g. resampled). A discrete fit pairs point i with "
+                 "vertex i; rms and max error are point-to-curve distances either way",
+                 DISTANCES, "orthogonal")
         add_property(obj, "App::PropertyBool", "SplitAtInflection", "Fit",
-                     "Fit a keyline as two elasticae, one each side of its inflection (seed 000 "
-                     "§5); both halves start at the inflection", False)
+                     "Fit a keyline as one G2 curve of two elasticae meeting at its inflection "
+                     "(seed 000 §5: same point, tangent and zero curvature there); free ends",
+                     False)
         add_property(obj, "App::PropertyBool", "PinStart", "Fit",
                      "The curve starts exactly at the first data point (one-piece fits)",
                      bool(getattr(obj, "PinEnds", False)))
         add_property(obj, "App::PropertyBool", "PinEnd", "Fit",
                      "The curve ends exactly at the last data point (one-piece fits)", False)
         add_property(obj, "App::PropertyLinkSub", "StartTangent", "Fit",
-                     "An edge whose tangent at its end nearest the data's start the curve "
-                     "follows there (one-piece fits; empty: free)")
+                     "An edge whose tangent (at its end nearest the data's start, projected "
+                     "into the fit plane) the curve follows there (one-piece fits; empty: free)")
         add_property(obj, "App::PropertyLinkSub", "EndTangent", "Fit",
-                     "An edge whose tangent at its end nearest the data's end the curve "
-                     "follows there (one-piece fits; empty: free)")
+                     "An edge whose tangent (at its end nearest the data's end, projected into "
+                     "the fit plane) the curve follows there (one-piece fits; empty: free)")
+        for where in ("Start", "End"):
+            add_property(obj, "App::PropertyBool", f"Use{where}Curvature", "Fit",
+                         f"Hold the curve's curvature at its {where.lower()} at "
+                         f"{where}Curvature (one-piece fits)", False)
+            add_property(obj, "App::PropertyFloat", f"{where}Curvature", "Fit",
+                         f"Curvature (1/mm) at the curve's {where.lower()} when "
+                         f"Use{where}Curvature: 0 = a free end or an inflection; + turns left "
+                         "seen from the fit plane's normal (a sketch's normal)", 0.0)
         if "PinEnds" in obj.PropertiesList:            # documents of version 1
             obj.removeProperty("PinEnds")
         add_property(obj, "App::PropertyFloat", "ResampleStep", "Fit",
-                     "Equilateral resampling step (mm) before fitting; 0 keeps the points "
-                     "(a split keyline is always resampled: 0 = 1/100 of its length)", 0.0)
+                     "Equilateral resampling step (mm) before fitting; 0 keeps the points. A "
+                     "split keyline: the step of its preparation (0 = 1/100 of its length); the "
+                     "discrete one fits that polygon, the smooth one the points themselves", 0.0)
         add_property(obj, "App::PropertyFloat", "Tolerance", "BSpline",
                      "Largest distance (mm) of the B-spline from the fitted smooth elastica", tol)
         add_property(obj, "App::PropertyInteger", "Degree", "BSpline",
                      "Degree of the B-spline (3 to 7) of a smooth fit; a discrete fit's vertices "
-                     "are joined by the natural C2 cubic through them", deg)
-        for name, tip in (("Rms", "Root mean square distance of the data from the fit (mm)"),
-                          ("MaxError", "Largest distance of the data from the fit (mm)"),
+                     "are joined by the C2 cubic through them (natural at free ends)", deg)
+        for name, tip in (("Rms", "Root mean square distance of the fitted points from the "
+                                  "curve (mm; see ErrorMeasure)"),
+                          ("MaxError", "Largest distance of a fitted point from the curve (mm)"),
                           ("BSplineDeviation", "Certified distance of the B-spline from the "
                                                "smooth elastica (mm; -1 for a discrete fit, "
                                                "whose B-spline passes through its vertices)")):
@@ -226,56 +304,58 @@ class FitProxy(FeatureProxy):
         add_property(obj, "App::PropertyString", "Status", "Result", "Outcome of the last fit")
         add_property(obj, "App::PropertyString", "ErrorMeasure", "Result",
                      "What Rms and MaxError measure")
+        add_property(obj, "App::PropertyFloatList", "Distances", "Result",
+                     "Signed distance (mm) of each fitted point from the curve, + = left of it "
+                     "seen from the fit plane's normal, in the order of DataPoints")
         add_property(obj, "App::PropertyString", "Curves", "Result",
-                     "The fitted curves' parameters (JSON, plane coordinates)")
+                     "The fitted curves' parameters (JSON, plane coordinates); a split "
+                     "keyline's two halves each run from the joint")
         add_property(obj, "App::PropertyPlacement", "Plane", "Result",
                      "The plane of the fit (sketch placement or PCA plane)")
         add_property(obj, "App::PropertyVectorList", "DataPoints", "Result",
                      "The fitted points (after resampling), global coordinates")
         add_property(obj, "App::PropertyVectorList", "FootPoints", "Result",
-                     "The curve point each data point was measured to, global coordinates")
+                     "Each data point's nearest point on the curve (its polygon for a discrete "
+                     "fit), global coordinates")
         read_only(obj, "Rms", "MaxError", "BSplineDeviation", "K", "Status", "ErrorMeasure",
-                  "Curves", "Plane", "DataPoints", "FootPoints")
+                  "Distances", "Curves", "Plane", "DataPoints", "FootPoints")
 
     def compute(self, obj):
         """The fit as a dict (see fit_core); raises InputProblem."""
         if not 4 <= obj.SamplesPerEdge <= 10000:
             raise InputProblem(f"SamplesPerEdge = {obj.SamplesPerEdge} is not usable: 4 to 10000")
         pts, plane, ordered, closed = gather_points(obj.Source, obj.CsvFile, obj.SamplesPerEdge)
-        ends = []
-        for link in (obj.StartTangent, obj.EndTangent):
-            ends.append(None)
+        edges = {}
+        for key, link in (("start_edge", obj.StartTangent), ("end_edge", obj.EndTangent)):
             if link and link[1] and link[1][0]:
-                ends[-1] = link_edge(link[0], link[1][0])
-        one_piece_only = obj.PinEnd or obj.PinStart or any(e is not None for e in ends)
-        if obj.SplitAtInflection and one_piece_only:
-            raise InputProblem("pin start / pin end / end tangents apply to one-piece fits; a "
-                               "split keyline's halves both start at the inflection")
-        return fit_core(pts, plane, ordered, closed, model=obj.Model,
-                        split=obj.SplitAtInflection, pin_start=obj.PinStart, pin_end=obj.PinEnd,
-                        start_edge=ends[0], end_edge=ends[1], step=obj.ResampleStep,
-                        tol=obj.Tolerance, degree=obj.Degree)
+                edges[key] = link_edge(link[0], link[1][0])
+        return fit_core(pts, plane, ordered, closed, **core_options(obj), **edges)
 
     def apply(self, obj, r):
         plc = r["placement"]
-        edges = [part_bspline(b, plc).toShape() for b in r["bsplines"]]
-        obj.Shape = Part.Wire(edges) if len(edges) > 1 else edges[0]
+        obj.Shape = part_bspline(r["bspline"], plc).toShape()
         obj.Rms = r["rms"]
         obj.MaxError = r["max_error"]
         obj.ErrorMeasure = r["measure"]
         obj.K = r["k"]
-        devs = [b.max_deviation for b in r["bsplines"]]
-        obj.BSplineDeviation = max(devs) if min(devs) >= 0 else -1.0
+        obj.BSplineDeviation = r["bspline"].max_deviation
         obj.Plane = plc
         obj.DataPoints = to_3d(plc, r["data"])
         obj.FootPoints = to_3d(plc, r["feet"])
+        obj.Distances = [float(d) for d in r["distances"]]
         from libelastica.io import curve_to_dict
         obj.Curves = json.dumps([curve_to_dict(c) for c in r["curves"]])
         obj.Status = r["status"] or "ok"
 
     def plane_curves(self, obj):
-        """(curves, placement) of the last successful fit, or None."""
-        return stored_curves(obj)
+        """(curves, placement) of the last successful fit, or None: the curves along
+        its shape from the first point to the last (a smooth keyline's first half
+        reversed; Curves keeps the library's halves, each from the joint)."""
+        stored = stored_curves(obj)
+        if stored and len(stored[0]) == 2 and isinstance(stored[0][0], el().SmoothElastica):
+            first, second = stored[0]
+            return [reversed_elastica(first), second], stored[1]
+        return stored
 
 
 def stored_curves(obj):
@@ -289,9 +369,28 @@ def stored_curves(obj):
         return None
 
 
+def core_options(props):
+    """fit_core's keyword arguments (but the tangent edges) from Fit property values:
+    a feature, or a dict of them (a command's options; missing ones take the
+    defaults of a new feature)."""
+    if isinstance(props, dict):
+        get = props.get
+    else:
+        def get(name, default=None):
+            return getattr(props, name, default)
+    return dict(model=get("Model", "discrete"), split=get("SplitAtInflection", False),
+                distance=get("Distance", "orthogonal"), pin_start=get("PinStart", False),
+                pin_end=get("PinEnd", False),
+                start_curvature=get("StartCurvature", 0.0) if get("UseStartCurvature") else None,
+                end_curvature=get("EndCurvature", 0.0) if get("UseEndCurvature") else None,
+                step=get("ResampleStep", 0.0), tol=get("Tolerance", 1e-3),
+                degree=get("Degree", 3))
+
+
 def make(doc, sources=(), csv_file="", **props):
     """A new Fit feature in ``doc``; ``sources`` [(obj, [subnames])]; props set Model,
-    SplitAtInflection, PinStart, PinEnd, ResampleStep, Tolerance, Degree, ..."""
+    Distance, SplitAtInflection, PinStart, PinEnd, UseStartCurvature, StartCurvature,
+    ResampleStep, Tolerance, Degree, ..."""
     if "PinEnds" in props:                       # the version-1 name (recorded macros)
         props["PinStart"] = props.pop("PinEnds")
     return new_feature(doc, "ElasticaFit", FitProxy,
@@ -299,5 +398,5 @@ def make(doc, sources=(), csv_file="", **props):
                        CsvFile=csv_file or "", **props)
 
 
-__all__ = ["FitProxy", "fit_core", "make", "stored_curves", "has_constraints", "MODELS",
-           "MODEL_NAMES"]
+__all__ = ["FitProxy", "fit_core", "core_options", "make", "stored_curves", "reversed_elastica",
+           "MODELS", "MODEL_NAMES", "DISTANCES", "DISTANCE_NAMES", "CONSTRAINT_FIELDS"]

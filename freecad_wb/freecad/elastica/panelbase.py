@@ -155,6 +155,26 @@ class Panel:
             self.enablers.append((box, when))
         return box
 
+    def checked_number(self, grid, text, check_prop, prop, lo, hi, step, unit, tip, when=None):
+        """A check box (the boolean check_prop) beside a spin box (the float prop), which
+        applies only while the box is checked: an optional value."""
+        box = QtGui.QCheckBox(text)
+        box.setChecked(bool(getattr(self.obj, check_prop)))
+        box.setToolTip(tip)
+        box.toggled.connect(lambda v: self.set(check_prop, bool(v)))
+        value = NumberBox(lo, hi, step, unit, tip)
+        value.blockSignals(True)
+        value.setValue(getattr(self.obj, prop))
+        value.blockSignals(False)
+        value.valueChanged.connect(lambda v: self.set(prop, float(v)))
+        r = grid.rowCount()
+        grid.addWidget(box, r, 0)
+        grid.addWidget(value, r, 1)
+        self.enablers.append((box, when or (lambda: True)))
+        self.enablers.append((value, lambda: bool(getattr(self.obj, check_prop))
+                              and (when is None or when())))
+        return box, value
+
     def integer(self, grid, label, prop, lo, hi, tip, when=None):
         box = QtGui.QSpinBox()
         box.setRange(lo, hi)
@@ -168,14 +188,19 @@ class Panel:
             self.enablers.append((box, when))
         return box
 
-    def check(self, grid, text, prop, tip, when=None, target=None):
+    def check(self, grid, text, prop, tip, when=None, target=None, at=None):
         """A check box bound live to the boolean property prop (of ``target``, default
-        the feature; a view property when target is the ViewObject)."""
+        the feature; a view property when target is the ViewObject), on a row of its
+        own or in the grid cell ``at`` = (row, column)."""
         target = target if target is not None else self.obj
         box = QtGui.QCheckBox(text)
         box.setChecked(bool(getattr(target, prop)))
         box.toggled.connect(lambda v: self.set(prop, bool(v), target))
-        self.row(grid, "", box, tip)
+        if at is None:
+            self.row(grid, "", box, tip)
+        else:
+            box.setToolTip(tip)
+            grid.addWidget(box, *at)
         if when:
             self.enablers.append((box, when))
         return box
@@ -211,6 +236,11 @@ class Panel:
                    for n in s.SubElementNames if n.startswith("Edge")]
             if not sel:
                 self.result.setText("<b style='color:#b00'>select an edge first</b>")
+                return
+            if sel[0][0] is self.obj or self.obj in sel[0][0].OutListRecursive:
+                # a link to the feature's own result would be a dependency loop
+                self.result.setText("<b style='color:#b00'>pick an edge of another object "
+                                    f"({sel[0][0].Label} depends on this feature)</b>")
                 return
             self.set(prop, (sel[0][0], [sel[0][1]]))
             if picked:

@@ -31,39 +31,71 @@ class FitPanel(Panel):
                                  [F.MODEL_NAMES[m] for m in F.MODELS],
                                  "Discrete: the Bobenko-Suris discrete elastica, one vertex per "
                                  "(resampled) point; smooth: the smooth elastica")
+        self.distance = self.choice(g, "Distance", "Distance", F.DISTANCES,
+                                    [F.DISTANCE_NAMES[d] for d in F.DISTANCES],
+                                    "What the smooth fit minimises: each point's distance to "
+                                    "the curve (any spacing), or point i against arc length "
+                                    "i L/(n-1) (equilateral data). A discrete fit pairs point i "
+                                    "with vertex i", when=lambda: o.Model == "smooth"
+                                    and not o.SplitAtInflection)
         self.step = self.number(g, "Resample", "ResampleStep", 0.0, 1e6, 0.5, "mm",
                                 "Equilateral resampling step before fitting (mm); 0 keeps the "
                                 "points (a split keyline then uses 1/100 of its length)")
         self.split = self.check(g, "Split at the inflection", "SplitAtInflection",
-                                "Fit a keyline as two elasticae meeting at its inflection "
-                                "(seed 000 §5)")
-        one_piece = lambda: not o.SplitAtInflection  # noqa: E731
-        constrained = lambda: one_piece() and F.has_constraints()  # noqa: E731
-        self.pin_start = self.check(g, "Pin the start", "PinStart",
-                                    "The curve starts exactly at the first point (one-piece "
-                                    "fits)", when=one_piece)
-        self.pin_end = self.check(g, "Pin the end", "PinEnd",
-                                  "The curve ends exactly at the last point (one-piece fits; "
-                                  "needs the fit library's constraints)", when=constrained)
-        for prop, text in (("StartTangent", "Start"), ("EndTangent", "End")):
-            self.edge_button(g, f"{text} tangent", prop,
-                             f"{text} tangent: click with an edge selected to follow its tangent "
-                             "there, click again to free it (one-piece fits; needs the fit "
-                             "library's constraints)", when=constrained)
-        self.bspline_box("the smooth elastica", "Degree of the smooth fit's B-spline (3 to 7); a "
-                         "discrete fit's vertices are joined by the C2 cubic through them",
-                         when=lambda: o.Model == "smooth")
+                                "Fit a keyline as one G2 curve of two elasticae meeting at its "
+                                "inflection (seed 000 §5); its ends stay free")
         r = self.box("Result")
         self.row(r, "", self.result)
         vo = o.ViewObject
         self.show_data = self.check(r, "Show the fitted points", "ShowData",
                                     "Markers at the points the fit used", target=vo)
         self.show_res = self.check(r, "Show residual segments", "ShowResiduals",
-                                   "A segment from each point to the curve point it was measured to",
+                                   "A segment from each point to its nearest point on the curve",
                                    target=vo)
+        e = self.box("Ends")
+        # the end conditions apply to one-piece fits; a set one stays editable after a
+        # split so that the user can clear what the split refuses
+        row = e.rowCount()
+        self.pin_start = self.check(e, "Pin the start", "PinStart",
+                                    "The curve starts exactly at the first point (one-piece "
+                                    "fits)", when=lambda: self.one_piece() or o.PinStart,
+                                    at=(row, 0))
+        self.pin_end = self.check(e, "Pin the end", "PinEnd",
+                                  "The curve ends exactly at the last point (one-piece fits)",
+                                  when=lambda: self.one_piece() or o.PinEnd, at=(row, 1))
+        self.tangent_buttons = [
+            self.edge_button(e, f"{text} tangent", prop,
+                             f"{text} tangent: select an edge and click to follow its tangent "
+                             "(at its end nearest the data's "
+                             f"{text.lower()}, projected into the fit plane); click again to "
+                             "free it (one-piece fits)",
+                             when=lambda prop=prop: self.one_piece() or bool(getattr(o, prop)))
+            for prop, text in (("StartTangent", "Start"), ("EndTangent", "End"))]
+        self.start_curvature, self.end_curvature = (
+            # "curvature" in full does not fit the 260 px Combo View beside its value
+            self.checked_number(e, f"{text} \u03ba", f"Use{text}Curvature", f"{text}Curvature",
+                                -1e6, 1e6, 1e-3, "1/mm",
+                                f"{text} curvature \u03ba (1/mm), held when checked: 0 = a "
+                                "free end or an inflection; + turns left seen from the fit "
+                                "plane's normal (one-piece fits)",
+                                when=lambda text=text: self.one_piece()
+                                or getattr(o, f"Use{text}Curvature"))
+            for text in ("Start", "End"))
+        self.bspline_box("the smooth elastica", "Degree of the smooth fit's B-spline (3 to 7); a "
+                         "discrete fit's vertices are joined by the C2 cubic through them",
+                         when=lambda: o.Model == "smooth")
         out = self.box("Output")
         # not into a source sketch: writing there would feed the fit its own output
         self.output_rows(out, [s.Name for s, _ in o.Source], "(new sketch in the fit plane)")
+
+    def one_piece(self):
+        return not self.obj.SplitAtInflection
+
+    def view_objects(self):
+        """The data and the tangent edges stay in view with the fit."""
+        o = self.obj
+        return [s for s, _ in o.Source] + [link[0] for link in (o.StartTangent, o.EndTangent)
+                                           if link]
 
     def result_text(self):
         o = self.obj
@@ -73,8 +105,9 @@ class FitPanel(Panel):
             bs = f"B-spline within {_fmt(o.BSplineDeviation)} (degree {o.Degree})"
         else:
             bs = "B-spline: the C2 cubic through the vertices"
-        return (f"{n} points, rms {_fmt(o.Rms)}, max {_fmt(o.MaxError)} "
-                f"({o.ErrorMeasure})<br>k = {ks}<br>{bs}<br>{o.Status}")
+        curve = "one G2 curve of two elasticae, " if len(o.K) == 2 else ""
+        return (f"{n} points, {o.ErrorMeasure}:<br>rms {_fmt(o.Rms)}, max {_fmt(o.MaxError)}"
+                f"<br>{curve}k = {ks}<br>{bs}<br>{o.Status}")
 
 
 class BlendPanel(Panel):
