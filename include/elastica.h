@@ -1161,8 +1161,9 @@ int el_blend_composite_through(const el_blend_basis *b, size_t npts, const doubl
  * Bounded work: nseg <= 100000 (more: EL_EINVAL), at most 15 fits of <= 256
  * spans per segment.
  * Errors: EL_EINVAL (NULL, NaN/inf, tol <= 0, nseg outside 1..100000),
- * EL_ENOMEM, EL_EDOM (control points near DBL_MAX: a deviation or a pole beyond
- * double's range), EL_EINTERNAL (GSL), EL_ENOCONV (tol not reached with 256
+ * EL_ENOMEM, EL_EDOM (tol < 64 eps lebesgue max|q|, below what the coordinates
+ * resolve, refused at once; control points near DBL_MAX: a deviation or a pole
+ * beyond double's range), EL_EINTERNAL (GSL), EL_ENOCONV (tol not reached with 256
  * spans in some segment: the best spline is returned in out). out is untouched
  * on the errors other than EL_ENOCONV.
  */

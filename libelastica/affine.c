@@ -227,9 +227,9 @@ int el_affine_lane_riesenfeld(int dim, int degree, size_t npts, const double *x,
     if (!w) return EL_ENOMEM;
     for (size_t i = 0; i < npts; i++)
         for (size_t c = 0; c < d; c++) w[2 * i * d + c] = w[(2 * i + 1) * d + c] = x[i * d + c];
-    for (int r = 0; r < degree; r++, len--)      /* mu^degree */
+    for (int r = 0; r < degree; r++, len--)      /* mu^degree (halves first: no overflow) */
         for (size_t i = 0; i + 1 < len; i++)
-            for (size_t c = 0; c < d; c++) w[i * d + c] = 0.5 * (w[i * d + c] + w[(i + 1) * d + c]);
+            for (size_t c = 0; c < d; c++) w[i * d + c] = 0.5 * w[i * d + c] + 0.5 * w[(i + 1) * d + c];
     memcpy(out, w, len * d * sizeof *w);
     free(w);
     return EL_OK;

@@ -25,6 +25,7 @@
  * c != 1), the form that does is (s+c)^2 beta/alpha (t + c f_1 - s f_2).
  */
 #include "internal.h"
+#include <float.h>
 #include <stdlib.h>
 #include <string.h>
 #include <gsl/gsl_bspline.h>
@@ -106,6 +107,9 @@ static int invert(size_t n, const double *a, double *ainv, double *cond)
     for (size_t i = 0; i < n; i++)
         if (gsl_matrix_get(A, i, i) == 0.0) { st = EL_ESINGULAR; goto done; }
     if (gsl_linalg_LU_invert(A, perm, Ai) != GSL_SUCCESS) { st = EL_ESINGULAR; goto done; }
+    for (size_t i = 0; i < n; i++)   /* (an inverse beyond double's range is singular too) */
+        for (size_t j = 0; j < n; j++)
+            if (!isfinite(gsl_matrix_get(Ai, i, j))) { st = EL_ESINGULAR; goto done; }
     const double c = anorm * norm1(Ai);
     if (!(c <= COND_MAX)) { st = EL_ESINGULAR; goto done; }
     for (size_t i = 0; i < n; i++)
@@ -667,6 +671,11 @@ static int max_deviation(fit_ctx *c, size_t nspan, double *dev)
     gsl_function F = {neg_dev, c};
     for (size_t i = 1; i < g; i++) {
         if (!(e[i] > e[i - 1] && e[i] > e[i + 1])) continue;
+        /* refine only a peak whose parabola through the samples could beat the best
+         * seen (by 1 %): the many small peaks of a good fit cost nothing */
+        const double pred = e[i] + (e[i + 1] - e[i - 1]) * (e[i + 1] - e[i - 1]) /
+                                       (8.0 * (2.0 * e[i] - e[i - 1] - e[i + 1]));
+        if (1.01 * pred < best) continue;
         const double lo = (double)(i - 1) / (double)g, mid = (double)i / (double)g,
                      hi = (double)(i + 1) / (double)g;
         if (gsl_min_fminimizer_set_with_values(m, &F, mid, -e[i], lo, -e[i - 1], hi, -e[i + 1]) !=
@@ -838,6 +847,11 @@ int el_blend_to_bspline(const el_blend_basis *b, size_t nseg, const double *q, d
         !(tol > 0.0) || el__all_finite(q, 6 * nseg + 2))
         return EL_EINVAL;
     el__gsl_quiet();
+    /* below what the coordinates resolve (their rounding, amplified by the
+     * basis at most lebesgue times) no fit can be certified: refused at once */
+    double qmax = 0.0;
+    for (size_t i = 0; i < 6 * nseg + 2; i++) qmax = fmax(qmax, fabs(q[i]));
+    if (tol < 64.0 * DBL_EPSILON * fmax(b->lebesgue, 1.0) * qmax) return EL_EDOM;
     spline *segs = calloc(nseg, sizeof *segs);
     if (!segs) return EL_ENOMEM;
     double dev = 0.0;

@@ -72,7 +72,7 @@ enum { MAXDEG_FIT = 7, MAXDEG_BASIS = 15 };
 #define FIT_INLINE static inline
 #endif
 #if defined(__clang__)
-#define FIT_UNROLL _Pragma("unroll")
+#define FIT_UNROLL _Pragma("unroll 8")   /* (a full unroll of the generic copy fails) */
 #elif defined(__GNUC__) && __GNUC__ >= 8
 #define FIT_UNROLL _Pragma("GCC unroll 8")
 #else
