@@ -13,7 +13,8 @@ from typing import Mapping, Optional, Union
 
 import numpy as np
 
-from ._ffi import NotConvergedError, as_points, check, dptr, ffi, lib
+from ._ffi import (NotConvergedError, as_int, as_points, as_real, as_real_array, check, dptr, ffi,
+                   lib)
 from .core import DISCRETE_PARAMS, SMOOTH_PARAMS, DiscreteElastica, SmoothElastica
 
 _MODES = {"auto": 0, "uniform": 1, "chord": 2}
@@ -65,9 +66,7 @@ def _options(model: str, fixed: Optional[Mapping[str, float]], bounds, tol, max_
     for name, value in (fixed or {}).items():
         if name not in names:
             raise ValueError(f"fit: unknown parameter {name!r} for model {model!r}; one of {names}")
-        v = float(value)
-        if not np.isfinite(v):
-            raise ValueError(f"fit: fixed {name} must be finite")
+        v = as_real(value, f"fit: fixed {name}")
         j = names.index(name)
         o.fixed[j] = 1
         o.value[j] = v
@@ -75,15 +74,15 @@ def _options(model: str, fixed: Optional[Mapping[str, float]], bounds, tol, max_
         if name not in names:
             raise ValueError(f"fit: unknown parameter {name!r} in bounds")
         j = names.index(name)
-        o.lower[j] = -np.inf if lo is None else float(lo)
-        o.upper[j] = np.inf if hi is None else float(hi)
+        o.lower[j] = -np.inf if lo is None else as_real(lo, f"fit: lower bound of {name}", finite=False)
+        o.upper[j] = np.inf if hi is None else as_real(hi, f"fit: upper bound of {name}", finite=False)
     if tol is not None:
-        o.tol = float(tol)
+        o.tol = as_real(tol, "fit: tol")
     if max_iter is not None:
-        o.max_iter = int(max_iter)
+        o.max_iter = as_int(max_iter, "fit: max_iter")
     o.limited_memory = 1 if limited_memory else 0
     if max_candidates is not None:
-        o.max_candidates = int(max_candidates)
+        o.max_candidates = as_int(max_candidates, "fit: max_candidates")
     if param not in _MODES:
         raise ValueError(f"fit: param must be one of {tuple(_MODES)}, got {param!r}")
     o.param_mode = _MODES[param]
@@ -108,7 +107,7 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     ``strict``). Bad input (NaN, too few points, all points equal) raises
     ValueError / ElasticaError subclasses.
     """
-    if model not in ("discrete", "smooth"):
+    if not isinstance(model, str) or model not in ("discrete", "smooth"):
         raise ValueError(f"fit: model must be 'discrete' or 'smooth', got {model!r}")
     pts = as_points(points, "points", 2)
     n = pts.shape[0]
@@ -116,11 +115,14 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
         raise ValueError(f"fit: need at least 4 points, got {n}")
     if not np.all(np.isfinite(pts)):
         raise ValueError("fit: points must be finite (no NaN/inf)")
-    o = _options(model, fixed, bounds, tol, max_iter, limited_memory, max_candidates, param,
-                 initial)
+    try:   # options of the wrong shape (not a mapping, bounds not pairs, ...): ValueError
+        o = _options(model, fixed, bounds, tol, max_iter, limited_memory, max_candidates, param,
+                     initial)
+        init = initial._c() if initial is not None else ffi.NULL
+    except (TypeError, AttributeError) as exc:
+        raise ValueError(f"fit: invalid option ({exc})") from None
     smooth = model == "smooth"
     res = ffi.new(f"el_fit_{model}_result *")
-    init = initial._c() if initial is not None else ffi.NULL
     st = (lib.el_fit_smooth if smooth else lib.el_fit_discrete)(dptr(pts), n, o, init, res)
     if st not in (lib.EL_OK, lib.EL_ENOCONV, lib.EL_EMAXITER):
         check(st, "fit")
@@ -241,7 +243,7 @@ def fit_keyline(points, r: Optional[float] = None, model: str = "discrete", side
     found. Extra keyword arguments go to :func:`fit` (``fixed`` to both sides;
     its values win over the pinning)."""
     from .prep import prepare_keyline
-    pts = np.asarray(points, dtype=np.float64)
+    pts = as_real_array(points, "fit_keyline: points")
     if pts.ndim != 2 or pts.shape[1] not in (2, 3) or len(pts) < 4:
         raise ValueError("fit_keyline: points must have shape (n, 2) or (n, 3), n >= 4")
     if not np.all(np.isfinite(pts)):

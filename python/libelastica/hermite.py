@@ -6,7 +6,7 @@ from typing import List, Optional
 
 import numpy as np
 
-from ._ffi import as_vector, check, ffi, lib
+from ._ffi import as_int, as_real, as_size, as_vector, check, ffi, lib
 from .core import SmoothElastica
 
 __all__ = ["hermite", "hermite_analyse"]
@@ -49,14 +49,14 @@ def hermite(p0, t0, p1, t1, tension: Optional[float] = None,
     lib.el_hermite_options_defaults(opt)
     if tension is not None:
         opt.mode = lib.EL_HERMITE_TENSION
-        opt.sigma = float(tension)
+        opt.sigma = as_real(tension, "hermite: tension")
     else:
         opt.mode = lib.EL_HERMITE_LENGTH
-        opt.length = float(length)
-    opt.tol = float(tol)
-    opt.samples = int(samples)
-    opt.grid = int(grid)
-    opt.max_solutions = int(max_solutions)
+        opt.length = as_real(length, "hermite: length")
+    opt.tol = as_real(tol, "hermite: tol")
+    opt.samples = as_int(samples, "hermite: samples")
+    opt.grid = as_int(grid, "hermite: grid")
+    opt.max_solutions = as_size(max_solutions, "hermite: max_solutions")
     res = ffi.new("el_hermite_result *")
     buf = [ffi.new("double[2]", list(v)) for v in (a0, d0, a1, d1)]
     check(lib.el_hermite_solve(buf[0], buf[1], buf[2], buf[3], opt, res), "hermite")
@@ -86,7 +86,7 @@ def hermite_analyse(P, V, sigma: float) -> dict:
     P, V = _vec2(P, "P"), _vec2(V, "V")
     a = ffi.new("el_hermite_analysis *")
     check(lib.el_hermite_analyse(ffi.new("double[2]", list(P)), ffi.new("double[2]", list(V)),
-                                 float(sigma), a), "hermite_analyse")
+                                 as_real(sigma, "hermite_analyse: sigma"), a), "hermite_analyse")
     return {
         "case": int(a.hcase),
         "kappa_bound": float(a.kappa_bound),
