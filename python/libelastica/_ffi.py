@@ -8,6 +8,7 @@ or the system loader (pkg-config install).
 """
 from __future__ import annotations
 
+import decimal
 import math
 import numbers
 import os
@@ -99,6 +100,11 @@ INT_MIN, INT_MAX = -2 ** 31, 2 ** 31 - 1
 SIZE_MAX = 2 ** 64 - 1
 
 
+def _is_real(v) -> bool:
+    """A real number (Fraction and Decimal included), not a bool."""
+    return isinstance(v, (numbers.Real, decimal.Decimal)) and not isinstance(v, (bool, np.bool_))
+
+
 def as_real_array(a, name: str = "values") -> np.ndarray:
     """A C-contiguous float64 array of ``a`` (no copy when it already is one).
 
@@ -122,7 +128,9 @@ def as_real_array(a, name: str = "values") -> np.ndarray:
         raise ValueError(f"{name} must be real numbers, not datetime/timedelta values")
     if kind == "f" and arr.dtype.itemsize < 4:
         raise ValueError(f"{name}: float16 keeps about 3 digits; convert to float64 first")
-    if kind == "O":
+    if kind == "O":   # (astype would turn None into NaN and complex into an error)
+        if not all(_is_real(v) for v in arr.flat):
+            raise ValueError(f"{name} must hold real numbers only")
         try:
             arr = arr.astype(np.float64)
         except (TypeError, ValueError, OverflowError):

@@ -344,7 +344,6 @@ def affine_polyline(curve_or_points, n: int, samples_per_vertex: int = 20,
             raise ValueError("the elastica has zero length")
         infl_s = elastica_inflections(c)
         if len(infl_s) and not split_inflections:
-            from ._ffi import DomainError
             raise DomainError(lib.EL_EDOM, "affine_polyline: the elastica has an inflection")
         bounds = np.concatenate([[0.0], infl_s, [c.length]])
         total = max(samples_per_vertex * n, 4 * (len(bounds) - 1))
