@@ -491,7 +491,8 @@ typedef struct el_inflection {
  * generated curves the error grows about like sqrt(noise), ~1.5 r at noise
  * 1e-5 of the length and ~5 r at 1e-4 (r = length/200).
  * Scale invariant (a polygon of extent outside [1e-150, 1e150] is handled as a
- * copy scaled by a power of two).
+ * copy scaled by a power of two). Cost: O(n^2) in the worst case (each step of
+ * (3) scans its interval).
  * Errors: EL_EINVAL (NULL, n < 4, NaN/inf, side not in {-1,0,1}),
  * EL_ESINGULAR (all points equal), EL_EDOM (no inflection: collinear or
  * convex polygon, or coincident end points; an extent beyond double's range),
