@@ -32,6 +32,17 @@ APT_PKGS := build-essential pkg-config libgsl-dev coinor-libipopt-dev check \
 PIP_PKGS := numpy cffi pytest scipy ezdxf matplotlib
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
+# $(call apt-install,PACKAGES): install those of PACKAGES that are missing (targets that
+# need more than `make deps`: the OCCT comparison of `make bench`, clang for fuzzing)
+define apt-install
+	@missing=$$(for p in $(1); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q 'install ok installed' || echo $$p; done); \
+	if [ -n "$$missing" ]; then \
+	  echo "make $@: installing $$missing"; \
+	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get update -qq && \
+	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
+	fi
+endef
+
 .PHONY: all deps lib check check-c check-asan check-install check-python check-freecad check-fuzz \
         check-tsan fuzz fuzz-deps fuzz-coverage bench occt-dev demo gallery install clean
 
@@ -111,17 +122,12 @@ FUZZ_ENV   := ASAN_OPTIONS=allocator_may_return_null=1:detect_leaks=1 \
 # clang 14 takes minutes over bspline.c's unrolled loops with pointer-overflow checks:
 # the libFuzzer build leaves those to the driver's gcc build
 CLANG_SAN  := -fno-sanitize=pointer-overflow
-FUZZ_SLICE ?= 0.04
+FUZZ_SLICE ?= 0.1
 FUZZ_SCALE ?= 1
 FUZZ_SECONDS ?= 600
 
 fuzz-deps:
-	@missing=$$(for p in $(FUZZ_PKGS); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q 'install ok installed' || echo $$p; done); \
-	if [ -n "$$missing" ]; then \
-	  echo "make: installing $$missing"; \
-	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get update -qq && \
-	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
-	fi
+	$(call apt-install,$(FUZZ_PKGS))
 
 build/fuzz/driver: fuzz/driver.c $(FUZZ_DEPS) $(LIB_SRC) include/elastica.h libelastica/internal.h | deps
 	@$(MAKE) --no-print-directory BUILD=build/asan EXTRA_CFLAGS="$(SAN_FLAGS)" build/asan/libelastica.a
@@ -192,12 +198,7 @@ $(BUILD)/bench/%: bench/%.c $(BUILD)/libelastica.a
 OCCT_PKGS := libocct-modeling-algorithms-dev libocct-modeling-data-dev
 OCCT_LIBS := -lTKGeomAlgo -lTKGeomBase -lTKG2d -lTKMath -lTKernel
 occt-dev:
-	@missing=$$(for p in $(OCCT_PKGS); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q 'install ok installed' || echo $$p; done); \
-	if [ -n "$$missing" ]; then \
-	  echo "make bench: installing $$missing"; \
-	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get update -qq && \
-	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
-	fi
+	$(call apt-install,$(OCCT_PKGS))
 
 $(BUILD)/bench/%: bench/%.cc $(BUILD)/libelastica.a | occt-dev
 	@mkdir -p $(dir $@)
