@@ -7,8 +7,8 @@
  * vectors only from distinct breakpoints (no multiplicities) and evaluates
  * scalar basis functions, not curves, so de Boor's algorithm (Piegl & Tiller,
  * The NURBS Book, A2.1/A2.2/A3.2, derivative poles (3.8)) is written here.
- * GSL does the linear algebra (banded Cholesky of the normal equations,
- * tridiagonal solve) and the local maximisation (Brent).
+ * GSL does the linear algebra (banded Cholesky of the normal equations) and
+ * the local maximisation (Brent).
  *
  * Approximation of an elastica (el_smooth_to_bspline):
  *  - the B-spline is parametrised by the arc length s of the elastica on
@@ -328,7 +328,7 @@ int el_bspline_curvature(const el_bspline *b, size_t n, const double *t, double 
  *   B(u_i) = D_i     (i = 1..n-2; three non-zero basis functions),
  *   B''(u_{n-1}) = 0 <=> (P_{n+1}-P_n)/(U_{n+4}-U_{n+1}) = (P_n-P_{n-1})/(U_{n+3}-U_n)
  * (second-derivative poles, Piegl & Tiller (3.8)): a tridiagonal system,
- * totally positive in its interpolation rows, solved by GSL without pivoting.
+ * totally positive in its interpolation rows, solved without pivoting.
  */
 int el_bspline_interpolate_c2(const double *xy, size_t n, el_bspline *out)
 {
@@ -351,6 +351,10 @@ int el_bspline_interpolate_c2(const double *xy, size_t n, el_bspline *out)
     }
     for (size_t i = 0; i < n; i++) b.mults[i] = (i == 0 || i + 1 == n) ? 4 : 1;
     el_bspline_flat_knots(&b, U);
+    /* the system in the parameter u / length (the same curve; no underflow of the
+     * knot differences' products for tiny coordinates, no overflow for huge ones) */
+    const double len = b.knots[n - 1];
+    for (size_t i = 0; i < n + 6; i++) U[i] /= len;
     const double P0x = xy[0], P0y = xy[1], Pnx = xy[2 * n - 2], Pny = xy[2 * n - 1];
     {   /* start row */
         const double a = U[4] - U[1], c = U[5] - U[2];
@@ -358,7 +362,7 @@ int el_bspline_interpolate_c2(const double *xy, size_t n, el_bspline *out)
     }
     for (size_t i = 1; i + 1 < n; i++) {   /* interpolation rows: P_i, P_{i+1}, P_{i+2} */
         double N[4];
-        basis_funs(U, 3 + i, 3, b.knots[i], N);   /* N_{i..i+3}; N_{i+3}(u_i) = 0 */
+        basis_funs(U, 3 + i, 3, U[3 + i], N);   /* N_{i..i+3}; N_{i+3}(u_i) = 0 */
         sub[i - 1] = N[0]; diag[i] = N[1]; sup[i] = N[2];
         rx[i] = xy[2 * i]; ry[i] = xy[2 * i + 1];
     }
@@ -366,16 +370,24 @@ int el_bspline_interpolate_c2(const double *xy, size_t n, el_bspline *out)
         const double c = U[n + 4] - U[n + 1], d = U[n + 3] - U[n];
         sub[n - 2] = -c; diag[n - 1] = c + d; rx[n - 1] = d * Pnx; ry[n - 1] = d * Pny;
     }
-    gsl_vector_view vd = gsl_vector_view_array(diag, n), ve = gsl_vector_view_array(sup, n - 1),
-                    vf = gsl_vector_view_array(sub, n - 1), vs = gsl_vector_view_array(sol, n);
-    double *rhs[2] = {rx, ry};
-    for (int c = 0; c < 2; c++) {
-        gsl_vector_view vb = gsl_vector_view_array(rhs[c], n);
-        if (gsl_linalg_solve_tridiag(&vd.vector, &ve.vector, &vf.vector, &vb.vector, &vs.vector)) {
-            st = EL_ESINGULAR;
-            goto done;
-        }
-        for (size_t j = 0; j < n; j++) b.poles[2 * (j + 1) + (size_t)c] = sol[j];
+    /* Gaussian elimination without pivoting (the Thomas algorithm), both right-hand
+     * sides at once. By hand: GSL's gsl_linalg_solve_tridiag is the same
+     * elimination, but reports a zero pivot to the process-wide error handler,
+     * which a caller may have set to abort. sol holds the eliminated sup. */
+    for (size_t i = 0; i < n; i++) {
+        const double m = i ? diag[i] - sub[i - 1] * sol[i - 1] : diag[0];
+        if (!(fabs(m) > 0.0) || !isfinite(m)) { st = EL_ESINGULAR; goto done; }
+        sol[i] = i + 1 < n ? sup[i] / m : 0.0;
+        rx[i] = (rx[i] - (i ? sub[i - 1] * rx[i - 1] : 0.0)) / m;
+        ry[i] = (ry[i] - (i ? sub[i - 1] * ry[i - 1] : 0.0)) / m;
+    }
+    for (size_t i = n - 1; i-- > 0;) {
+        rx[i] -= sol[i] * rx[i + 1];
+        ry[i] -= sol[i] * ry[i + 1];
+    }
+    for (size_t j = 0; j < n; j++) {
+        b.poles[2 * (j + 1)] = rx[j];
+        b.poles[2 * (j + 1) + 1] = ry[j];
     }
     if (el__all_finite(b.poles, 2 * (n + 2))) { st = EL_EDOM; goto done; }   /* overflow */
     b.poles[0] = P0x; b.poles[1] = P0y;

@@ -222,6 +222,27 @@ START_TEST(smooth_to_bspline_emaxiter_returns_the_best_spline)
 }
 END_TEST
 
+/* the interpolant is scale invariant: at 1e-300 (GSL's tridiagonal solver met a
+ * zero pivot there and called the error handler) and 1e300 it is the unit one scaled */
+START_TEST(interpolate_c2_tiny_and_huge_scales)
+{
+    double xy[2 * 40];
+    for (int i = 0; i < 40; i++) { xy[2 * i] = i / 39.0; xy[2 * i + 1] = (i % 2) ? 0.1 : -0.1; }
+    el_bspline b0, b;
+    ck_assert_int_eq(el_bspline_interpolate_c2(xy, 40, &b0), EL_OK);
+    const double sc[] = {0x1p-1000, 0x1p1000};
+    for (int s = 0; s < 2; s++) {
+        double p[80];
+        for (int i = 0; i < 80; i++) p[i] = xy[i] * sc[s];
+        ck_assert_int_eq(el_bspline_interpolate_c2(p, 40, &b), EL_OK);
+        for (size_t i = 0; i < 2 * b.npoles; i++)
+            ck_assert_close(b.poles[i] / sc[s], b0.poles[i], 1e-12);
+        el_bspline_free(&b);
+    }
+    el_bspline_free(&b0);
+}
+END_TEST
+
 START_TEST(interpolate_c2_huge_coordinates_edom)
 {
     double xy[6] = {-1e308, 0, 0, 1e308, 1e308, 0};
@@ -444,6 +465,7 @@ int main(void)
     tcase_add_test(tc, bspline_curvature_large_derivatives_stay_finite);
     tcase_add_test(tc, smooth_to_bspline_bounded_work_refused_at_once);
     tcase_add_test(tc, smooth_to_bspline_emaxiter_returns_the_best_spline);
+    tcase_add_test(tc, interpolate_c2_tiny_and_huge_scales);
     tcase_add_test(tc, interpolate_c2_huge_coordinates_edom);
     tcase_add_test(tc, elliptic_blend_refuses_the_k2_neighbourhood);
     tcase_add_test(tc, blend_basis_min_and_convex_hull_reported);
