@@ -40,13 +40,17 @@ class SmoothElastica:
 
     def __post_init__(self):
         for f in fields(self):
-            setattr(self, f.name, as_real(getattr(self, f.name), f"SmoothElastica: {f.name}"))
+            v = getattr(self, f.name)
+            if type(v) is not float:   # (floats are checked by el_smooth_check)
+                setattr(self, f.name, as_real(v, f"SmoothElastica: {f.name}"))
         check(lib.el_smooth_check(self._c()), "SmoothElastica")
 
     def _c(self):
         p = ffi.new("el_smooth_params *")
         for n in SMOOTH_PARAMS:   # (checked again: an attribute may have been reassigned)
-            setattr(p, n, as_real(getattr(self, n), f"SmoothElastica: {n}", finite=False))
+            v = getattr(self, n)
+            setattr(p, n, v if type(v) is float else
+                    as_real(v, f"SmoothElastica: {n}", finite=False))
         return p
 
     @property
@@ -125,7 +129,9 @@ class DiscreteElastica:
 
     def __post_init__(self):
         for name in DISCRETE_PARAMS:
-            setattr(self, name, as_real(getattr(self, name), f"DiscreteElastica: {name}"))
+            v = getattr(self, name)
+            if type(v) is not float:   # (floats are checked by el_discrete_check)
+                setattr(self, name, as_real(v, f"DiscreteElastica: {name}"))
         # n vertices of 2 doubles each must fit in memory
         self.n = as_size(self.n, "DiscreteElastica: n", lo=2, hi=2 ** 59)
         check(lib.el_discrete_check(self._c()), "DiscreteElastica")
@@ -133,7 +139,9 @@ class DiscreteElastica:
     def _c(self):
         p = ffi.new("el_discrete_params *")
         for name in DISCRETE_PARAMS:   # (checked again: an attribute may have been reassigned)
-            setattr(p, name, as_real(getattr(self, name), f"DiscreteElastica: {name}", finite=False))
+            v = getattr(self, name)
+            setattr(p, name, v if type(v) is float else
+                    as_real(v, f"DiscreteElastica: {name}", finite=False))
         self.n = as_size(self.n, "DiscreteElastica: n", lo=2, hi=2 ** 59)
         return p
 
