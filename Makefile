@@ -32,7 +32,20 @@ APT_PKGS := build-essential pkg-config libgsl-dev coinor-libipopt-dev check \
 PIP_PKGS := numpy cffi pytest scipy ezdxf matplotlib
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps lib check check-c check-asan check-install check-python check-freecad bench occt-dev spiro-dev demo gallery install freecad-install clean
+# $(call apt-install,PACKAGES): install those of PACKAGES that are missing (targets that
+# need more than `make deps`: the OCCT comparison of `make bench`, clang for fuzzing)
+define apt-install
+	@missing=$$(for p in $(1); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q 'install ok installed' || echo $$p; done); \
+	if [ -n "$$missing" ]; then \
+	  echo "make $@: installing $$missing"; \
+	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get update -qq && \
+	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
+	fi
+endef
+
+.PHONY: all deps lib check check-c check-asan check-install check-python check-freecad check-fuzz \
+        check-tsan fuzz fuzz-deps fuzz-coverage bench occt-dev spiro-dev demo gallery install \
+        freecad-install clean
 
 all: deps lib
 
@@ -92,8 +105,90 @@ check-freecad: lib
 	@if [ -d tests/freecad ] && ls tests/freecad/test_*.py >/dev/null 2>&1; then \
 	  $(MAKE) --no-print-directory -f tests/freecad/freecad.mk BUILD=$(BUILD); fi
 
-check: all check-c check-asan check-install check-python check-freecad
+check: all check-c check-asan check-fuzz check-tsan check-install check-python check-freecad
 	@echo "make check: all tests passed"
+
+# ------------------------------------------------------------------ fuzzing, ThreadSanitizer
+
+# fuzz/: the harness (fuzz.c, one ENTRY per public function in entries.def), the
+# adversarial driver (cc, ASan + UBSan) and the libFuzzer target (clang). clang
+# and its runtime (libFuzzer) are installed by the targets that need them.
+FUZZ_PKGS  := clang libclang-rt-14-dev
+SAN_FLAGS  := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+FUZZ_SRC   := fuzz/fuzz.c fuzz/entries.c
+FUZZ_DEPS  := $(FUZZ_SRC) fuzz/fuzz.h fuzz/entries.def
+FUZZ_ENV   := ASAN_OPTIONS=allocator_may_return_null=1:detect_leaks=1 \
+              LSAN_OPTIONS=suppressions=$(CURDIR)/fuzz/lsan-suppressions \
+              UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
+# clang 14 takes minutes over bspline.c's unrolled loops with pointer-overflow checks:
+# the libFuzzer build leaves those to the driver's gcc build
+CLANG_SAN  := -fno-sanitize=pointer-overflow
+FUZZ_SLICE ?= 0.1
+FUZZ_SCALE ?= 1
+FUZZ_SECONDS ?= 600
+
+fuzz-deps:
+	$(call apt-install,$(FUZZ_PKGS))
+
+build/fuzz/driver: fuzz/driver.c $(FUZZ_DEPS) $(LIB_SRC) include/elastica.h libelastica/internal.h | deps
+	@$(MAKE) --no-print-directory BUILD=build/asan EXTRA_CFLAGS="$(SAN_FLAGS)" build/asan/libelastica.a
+	@mkdir -p build/fuzz
+	$(CC) $(CFLAGS_BASE) $(SAN_FLAGS) $(DEPS_CFLAGS) fuzz/driver.c $(FUZZ_SRC) -o $@ \
+	  build/asan/libelastica.a $(DEPS_LIBS)
+
+build/fuzz/libfuzzer: fuzz/libfuzzer.c $(FUZZ_DEPS) $(LIB_SRC) include/elastica.h libelastica/internal.h | deps fuzz-deps
+	@$(MAKE) --no-print-directory BUILD=build/libfuzzer CC=clang \
+	  EXTRA_CFLAGS="$(SAN_FLAGS) $(CLANG_SAN) -fsanitize=fuzzer-no-link" build/libfuzzer/libelastica.a
+	@mkdir -p build/fuzz
+	clang $(CFLAGS_BASE) $(SAN_FLAGS) $(CLANG_SAN) -fsanitize=fuzzer $(DEPS_CFLAGS) fuzz/libfuzzer.c $(FUZZ_SRC) -o $@ \
+	  build/libfuzzer/libelastica.a $(DEPS_LIBS)
+
+# every function of the header must have its ENTRY (README, Architecture: how to add one)
+fuzz-coverage:
+	@hdr=$$(sed -n 's/^[a-z][a-z_ ]*[ *]\(el_[a-z0-9_]*\)(.*/\1/p' include/elastica.h | sort -u); \
+	ent=$$(sed -n 's/^ENTRY(\(el_[a-z0-9_]*\),.*/\1/p' fuzz/entries.def | sort -u); \
+	missing=$$(for f in $$hdr; do echo "$$ent" | grep -qx "$$f" || echo "$$f"; done); \
+	if [ -n "$$missing" ]; then \
+	  echo "fuzz: public functions without an ENTRY in fuzz/entries.def:" $$missing; exit 1; fi
+
+# make check: a deterministic slice (<= 60 s) and the corpus of past findings,
+# tolerating only fuzz/known-findings (other owners' open issues)
+check-fuzz: build/fuzz/driver fuzz-coverage
+	@rm -rf build/fuzz/findings && mkdir -p build/fuzz/findings
+	$(FUZZ_ENV) build/fuzz/driver --known fuzz/known-findings --scale $(FUZZ_SLICE)
+	$(FUZZ_ENV) build/fuzz/driver --known fuzz/known-findings --replay fuzz/corpus
+
+# the whole driver, then libFuzzer for FUZZ_SECONDS; the last line sums both. Findings
+# of fuzz/known-findings (other owners' open issues) are counted apart, as "known".
+# Slow calls are the driver's to judge (CPU time, known list): libFuzzer's wall-clock
+# "slow units" on a shared machine are not findings; its timeouts (20 s) are.
+fuzz: build/fuzz/driver build/fuzz/libfuzzer fuzz-coverage
+	@rm -rf build/fuzz/findings build/fuzz/work && mkdir -p build/fuzz/findings build/fuzz/work
+	@build/fuzz/driver --write-seeds build/fuzz/work
+	@set +e; $(FUZZ_ENV) build/fuzz/driver --known fuzz/known-findings --scale $(FUZZ_SCALE) \
+	  | tee build/fuzz/driver.log; \
+	$(FUZZ_ENV) build/fuzz/driver --known fuzz/known-findings --replay fuzz/corpus | tee -a build/fuzz/driver.log; \
+	$(FUZZ_ENV) FUZZ_KNOWN=fuzz/known-findings build/fuzz/libfuzzer -max_total_time=$(FUZZ_SECONDS) \
+	  -timeout=20 -report_slow_units=60 -rss_limit_mb=4096 -max_len=65536 -print_final_stats=1 \
+	  -artifact_prefix=build/fuzz/findings/ build/fuzz/work fuzz/corpus > build/fuzz/libfuzzer.log 2>&1; \
+	grep -E "^FINDING|ERROR|^libfuzzer:|Done [0-9]+ runs" build/fuzz/libfuzzer.log; \
+	sum() { sed -n "s/$$1/\1/p" $$2 | awk '{s+=$$1} END {print s+0}'; }; \
+	d=$$(sum '^fuzz driver: \([0-9]*\) inputs.*' build/fuzz/driver.log); \
+	df=$$(sum '^fuzz driver: .*findings: \([0-9]*\)$$' build/fuzz/driver.log); \
+	dk=$$(sum '^fuzz driver: \([0-9]*\) findings of.*' build/fuzz/driver.log); \
+	l=$$(sum '^stat::number_of_executed_units: *\([0-9]*\)' build/fuzz/libfuzzer.log); \
+	lk=$$(sum '^libfuzzer: \([0-9]*\) findings of.*' build/fuzz/libfuzzer.log); \
+	lf=$$(ls build/fuzz/findings | grep -cE '^(crash|leak|timeout|oom)-'); \
+	echo "make fuzz: $$((d + l)) inputs (driver $$d, libFuzzer $$l in $(FUZZ_SECONDS) s), findings: $$((df + lf))" \
+	  "(known, fuzz/known-findings: $$((dk + lk)))"; \
+	[ $$((df + lf)) -eq 0 ]
+
+# evaluation, Hermite, B-splines, blends and resampling called from 4 threads at once
+check-tsan: | deps
+	@$(MAKE) --no-print-directory BUILD=build/tsan EXTRA_CFLAGS="-O1 -g -fsanitize=thread" build/tsan/libelastica.a
+	$(CC) $(CFLAGS_BASE) -O1 -g -fsanitize=thread $(DEPS_CFLAGS) tests/tsan/test_concurrent.c \
+	  -o build/tsan/test_concurrent build/tsan/libelastica.a $(DEPS_LIBS)
+	TSAN_OPTIONS=halt_on_error=1:exitcode=66 build/tsan/test_concurrent
 
 # ------------------------------------------------------------------ bench, demo, install
 
@@ -106,22 +201,12 @@ $(BUILD)/bench/%: bench/%.c $(BUILD)/libelastica.a
 OCCT_PKGS := libocct-modeling-algorithms-dev libocct-modeling-data-dev
 OCCT_LIBS := -lTKGeomAlgo -lTKGeomBase -lTKG2d -lTKMath -lTKernel
 occt-dev:
-	@missing=$$(for p in $(OCCT_PKGS); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q 'install ok installed' || echo $$p; done); \
-	if [ -n "$$missing" ]; then \
-	  echo "make bench: installing $$missing"; \
-	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get update -qq && \
-	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
-	fi
+	$(call apt-install,$(OCCT_PKGS))
 
 # libspiro, the comparison of bench_spline.c (Debian's libspiro-dev): installed by `make bench` only.
 SPIRO_PKGS := libspiro-dev
 spiro-dev:
-	@missing=$$(for p in $(SPIRO_PKGS); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q 'install ok installed' || echo $$p; done); \
-	if [ -n "$$missing" ]; then \
-	  echo "make bench: installing $$missing"; \
-	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get update -qq && \
-	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
-	fi
+	$(call apt-install,$(SPIRO_PKGS))
 
 $(BUILD)/bench/bench_spline: bench/bench_spline.c $(BUILD)/libelastica.a | spiro-dev
 	@mkdir -p $(dir $@)
@@ -136,11 +221,15 @@ $(BUILD)/bench/%: bench/%.cc $(BUILD)/libelastica.a | occt-dev
 # OPENBLAS_NUM_THREADS=1: Ipopt's BLAS would otherwise spin idle worker threads on
 # problems this small (~9 % of a Hermite profile), charging every figure for them.
 BENCH_PIP := clothoids scipy
+# Every line is kept in $(BUILD)/bench.jsonl; the lines with "readme" and "value" keys
+# become the README's figures table (bench/readme_figures.py): one source of truth.
 bench: all $(BENCH_BIN) $(BENCH_CXX_BIN)
 	@$(PYTHON) -c "import Clothoids, scipy" 2>/dev/null || $(PYTHON) -m pip install -q $(BENCH_PIP)
-	@for b in $(BENCH_BIN) $(BENCH_CXX_BIN); do OPENBLAS_NUM_THREADS=1 $$b; done
-	@for b in bench/bench_*.py; do [ -f "$$b" ] || continue; \
-	  OPENBLAS_NUM_THREADS=1 LIBELASTICA_PATH=$(CURDIR)/$(BUILD)/libelastica.so PYTHONPATH=$(CURDIR)/python $(PYTHON) $$b; done
+	@{ for b in $(BENCH_BIN) $(BENCH_CXX_BIN); do OPENBLAS_NUM_THREADS=1 $$b; done; \
+	  for b in bench/bench_*.py; do [ -f "$$b" ] || continue; \
+	    OPENBLAS_NUM_THREADS=1 LIBELASTICA_PATH=$(CURDIR)/$(BUILD)/libelastica.so \
+	    PYTHONPATH=$(CURDIR)/python $(PYTHON) $$b; done; } | tee $(BUILD)/bench.jsonl
+	@$(PYTHON) bench/readme_figures.py $(BUILD)/bench.jsonl README.md
 
 # headless FreeCAD (freecadcmd) with a throw-away HOME; the report is printed, the full log kept
 demo: all

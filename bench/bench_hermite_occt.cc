@@ -92,6 +92,9 @@ int main()
     std::printf("{\"bench\": \"occt_fair_curve_batten\", \"problems\": %d, \"converged\": %d, "
                 "\"length_matches_a_libelastica_solution\": %d, \"median_us\": %.1f}\n",
                 n, converged, agree, mt);
-    std::printf("{\"bench\": \"hermite_vs_occt_batten_ratio\", \"ratio\": %.3f}\n", mo / mt);
+    std::printf("{\"bench\": \"hermite_vs_occt_batten_ratio\", \"ratio\": %.3f, "
+                "\"readme\": \"one free-sliding OpenCASCADE `FairCurve_Batten` (sigma = 0)\", "
+                "\"value\": \"%.1f ms; all sigma = 0 solutions of the same problem: %.0f us, the "
+                "batten among them (%d of %d)\"}\n", mo / mt, mt / 1000.0, mo, agree, converged);
     return 0;
 }

@@ -7,6 +7,16 @@
  * Nothing here aborts, prints or keeps global mutable state: every function
  * may be called from several threads at once.
  *
+ * GSL's error handler: GSL reports errors through one process-wide handler
+ * that aborts by default. The library turns it off (gsl_set_error_handler_off)
+ * once, at its first GSL call, and checks the status of every GSL call itself,
+ * mapping failures to EL_ codes; it validates arguments before GSL sees them,
+ * so GSL has no error to report on any input (the fuzzer installs a handler
+ * and counts every call of it as a finding). A program that installs its own
+ * handler afterwards keeps it: it would be called only for an allocation
+ * failure inside GSL (the function then returns EL_ENOMEM if the handler
+ * returns). `make fuzz` checks this on every entry point.
+ *
  * Sections follow the files in libelastica/: status, jacobi, smooth,
  * discrete, guess, fit, prep, hermite, spline, affine, bspline, blend.
  *
@@ -479,9 +489,13 @@ typedef struct el_frame {
  * frame; xy_out (2n) the plane coordinates x'_k = e1.(p_k - p_bar),
  * y'_k = e2.(p_k - p_bar); rms_out_of_plane = sqrt(mean (e3.(p_k - p_bar))^2).
  * Collinear points are accepted (y' = 0; e2, e3 then any orthonormal
- * completion, still deterministic).
+ * completion, still deterministic). Any scale works: the sums are formed in
+ * units of a power of two near the largest coordinate, the covariance in units
+ * of the largest deviation (rms likewise), so 1e-300 and 1e300 data are alike.
  * Errors: EL_EINVAL (NULL xyz, n < 3, NaN/inf), EL_ESINGULAR (all points
- * equal), EL_ENOMEM, EL_EINTERNAL (GSL). Outputs untouched on error.
+ * equal to rounding: spread <= 32 eps |largest coordinate|), EL_EDOM (a spread
+ * beyond ~1e154: the eigenvalues, units^2, overflow), EL_ENOMEM, EL_EINTERNAL
+ * (GSL). Outputs untouched on error.
  */
 int el_plane_fit(const double *xyz, size_t n, el_frame *frame, double *xy_out,
                  double *rms_out_of_plane);
@@ -489,14 +503,16 @@ int el_plane_fit(const double *xyz, size_t n, el_frame *frame, double *xy_out,
 /*
  * Local coordinates of n points xyz (3n) in frame: xy (2n) = (x', y') and,
  * when z is not NULL, z (n) = z' (signed distance from the plane).
- * Errors: EL_EINVAL (NULL frame/xyz/xy with n > 0, NaN/inf).
+ * Errors: EL_EINVAL (NULL frame/xyz/xy with n > 0, NaN/inf), EL_EDOM (a
+ * coordinate beyond double's range; the points before it are written).
  */
 int el_frame_project(const el_frame *frame, size_t n, const double *xyz, double *xy,
                      double *z);
 
 /*
  * Inverse map of the plane coordinates: xyz (3n) = p_bar + x' e1 + y' e2 for
- * the n points xy (2n). Errors: EL_EINVAL (NULL, NaN/inf).
+ * the n points xy (2n). Errors: EL_EINVAL (NULL, NaN/inf), EL_EDOM (a
+ * coordinate beyond double's range; the points before it are written).
  */
 int el_frame_to_3d(const el_frame *frame, size_t n, const double *xy, double *xyz);
 
@@ -521,13 +537,21 @@ typedef struct el_resample_result {
     double remainder;   /* length of the input left after the stop point A_n */
 } el_resample_result;
 
+/* The most vertices el_resample_equilateral builds (bounded work). */
+enum { EL_RESAMPLE_MAX_VERTICES = 1000000 };
+
 /*
  * Resample the polyline xy (2n, n >= 2) with segment r > 0 into *out (which
  * the caller then frees with el_resample_free). Consecutive repeated points
- * are allowed (zero-length pieces are skipped).
+ * are allowed (zero-length pieces are skipped). Every scale works (the walk
+ * runs in units of a power of two near the length); the stop point is never a
+ * truncation: the input's far end is within r of it.
+ * Bounded work: r < length / (EL_RESAMPLE_MAX_VERTICES - 1) (length = the
+ * polyline's) is refused at once with EL_EDOM; else O(m log n) for m vertices.
  * Errors: EL_EINVAL (NULL, n < 2, NaN/inf, r <= 0 or not finite, r larger than
  * the distance from A_1 to every point of the polyline), EL_ESINGULAR (all
- * points equal), EL_ENOMEM. *out is untouched on error.
+ * points equal), EL_EDOM (the limit above; a length beyond double's range),
+ * EL_ENOMEM. *out is untouched on error.
  */
 int el_resample_equilateral(const double *xy, size_t n, double r, el_resample_result *out);
 
@@ -550,16 +574,21 @@ typedef struct el_frame2d {
 
 /*
  * PCA re-normalisation of n >= 2 points xy (2n): frame (may be NULL) and
- * xy_out (2n, may be NULL; may equal xy) the coordinates q''_k.
+ * xy_out (2n, may be NULL; may equal xy) the coordinates q''_k. Any scale, as
+ * el_plane_fit.
  * Errors: EL_EINVAL (NULL xy, n < 2, NaN/inf), EL_ESINGULAR (all points equal),
- * EL_ENOMEM, EL_EINTERNAL (GSL). Outputs untouched on error.
+ * EL_EDOM (a spread beyond ~1e154), EL_ENOMEM, EL_EINTERNAL (GSL). Outputs
+ * untouched on error.
  */
 int el_pca_normalize(const double *xy, size_t n, el_frame2d *frame, double *xy_out);
 
-/* Map n points from the parent (x'y') coordinates to the frame's x''y'' (2n each; in-place allowed). */
+/* Map n points from the parent (x'y') coordinates to the frame's x''y'' (2n each;
+ * in-place allowed). Errors: EL_EINVAL (NULL with n > 0, NaN/inf), EL_EDOM (a
+ * coordinate beyond double's range; the points before it are written). */
 int el_frame2d_to_local(const el_frame2d *frame, size_t n, const double *xy, double *xy_local);
 
-/* Inverse: parent coordinates q = q_bar + x'' f1 + y'' f2 (2n each; in-place allowed). */
+/* Inverse: parent coordinates q = q_bar + x'' f1 + y'' f2 (2n each; in-place
+ * allowed). Errors as el_frame2d_to_local. */
 int el_frame2d_to_parent(const el_frame2d *frame, size_t n, const double *xy_local,
                          double *xy);
 
@@ -593,9 +622,13 @@ typedef struct el_inflection {
  * Noise moves the estimate (the curve is nearly straight there): on
  * generated curves the error grows about like sqrt(noise), ~1.5 r at noise
  * 1e-5 of the length and ~5 r at 1e-4 (r = length/200).
+ * Scale invariant (a polygon of extent outside [1e-150, 1e150] is handled as a
+ * copy scaled by a power of two). Cost: O(n^2) in the worst case (each step of
+ * (3) scans its interval).
  * Errors: EL_EINVAL (NULL, n < 4, NaN/inf, side not in {-1,0,1}),
  * EL_ESINGULAR (all points equal), EL_EDOM (no inflection: collinear or
- * convex polygon, or coincident end points). *out untouched on error.
+ * convex polygon, or coincident end points; an extent beyond double's range),
+ * EL_ENOMEM. *out untouched on error.
  */
 int el_find_inflection(const double *xy, size_t n, int side, el_inflection *out);
 
@@ -940,17 +973,21 @@ int el_spline_to_bspline(const el_spline_result *res, double tol, int degree, st
  * It is an affine arc-length polyline when A_i = A != 0 for all i; then (and only
  * then) the uniform quadratic B-spline with that control polygon is curvature
  * continuous (seed 002 §2.5). Units: A, B are areas (length^2).
+ * Range: the planar functions below multiply edge vectors, so they need the
+ * largest edge component m in [1e-150, 1e150] (or all points equal): EL_EDOM
+ * otherwise (products beyond double's range); no output is written then.
  */
 
 /* el_bspline is defined in the bspline section below. */
 struct el_bspline;
 
 /* A[i-1] = A_i (npts-2 values) and B[i-1] = B_i (npts-3 values; B may be NULL,
- * and is not written when npts = 3). npts >= 3. Errors: EL_EINVAL. */
+ * and is not written when npts = 3). npts >= 3. Errors: EL_EINVAL, EL_EDOM (range). */
 int el_affine_coords(size_t npts, const double *xy, double *A, double *B);
 
 /* Affine length (3) L2 = sum_{i=1}^{N-1} cbrt(A_i) (real cube root, so a
- * clockwise polyline has negative length). npts >= 3. Errors: EL_EINVAL. */
+ * clockwise polyline has negative length). npts >= 3. Errors: EL_EINVAL,
+ * EL_EDOM (range). */
 int el_affine_length(size_t npts, const double *xy, double *L2);
 
 /*
@@ -959,7 +996,8 @@ int el_affine_length(size_t npts, const double *xy, double *L2);
  * this is k_i = 2 - B_i / A. For a general polyline A is replaced by
  * (A_i + A_{i+1}) / 2. k[i-1] = k_i for i = 1..N-2 (npts-3 values, dimensionless;
  * invariant under every affine map). npts >= 4.
- * Errors: EL_EINVAL (bad input), EL_ESINGULAR (A_i + A_{i+1} = 0).
+ * Errors: EL_EINVAL (bad input), EL_EDOM (range), EL_ESINGULAR (A_i + A_{i+1} = 0;
+ * the values before it are written).
  */
 int el_affine_curvature(size_t npts, const double *xy, double *k);
 
@@ -991,8 +1029,9 @@ typedef struct el_affine_conic {
  * affine arc-length polyline, out[i-1] for the quadruple x_{i-1}..x_{i+2}.
  * npts >= 4. Each quadruple must be equal-area, |A_i - A_{i+1}| <= 1e-6 |A_i|
  * (else EL_EDOM: the conics need x_{i+1}-x_i || x_{i+2}-x_{i-1}), and k_i < 4 for
- * the inner and middle conics (else EL_EDOM). Errors: EL_EINVAL, EL_EDOM,
- * EL_ESINGULAR (A = 0).
+ * the inner and middle conics (else EL_EDOM). Errors: EL_EINVAL, EL_EDOM (also
+ * range, or a conic coefficient beyond double's range), EL_ESINGULAR (A = 0).
+ * Everything is checked before out is written: out untouched on error.
  */
 int el_affine_osculating_conics(size_t npts, const double *xy, int kind, el_affine_conic *out);
 
@@ -1000,6 +1039,7 @@ int el_affine_osculating_conics(size_t npts, const double *xy, int kind, el_affi
  * Chaikin subdivision (§2.5): each edge x_i x_{i+1} gives 3/4 x_i + 1/4 x_{i+1}
  * and 1/4 x_i + 3/4 x_{i+1}; out has 2(npts-1) points. Keeps L2 and maps an
  * affine arc-length polyline with constant A to one with A/8. npts >= 2.
+ * Errors: EL_EINVAL.
  */
 int el_affine_chaikin(size_t npts, const double *xy, double *out);
 
@@ -1009,7 +1049,8 @@ int el_affine_chaikin(size_t npts, const double *xy, double *out);
  * out has 2 npts - degree points of dim coordinates. degree = 2 is Chaikin.
  * Every affine length element det(dx_i..dx_{i+n-1}) of x (n = dim = degree) gives
  * two elements of x' with 2^(-n(n+1)/2) of its value, so L_n halves per element (10).
- * 1 <= degree, dim >= 1, npts >= 1 and 2 npts > degree. Errors: EL_EINVAL.
+ * 1 <= degree, dim >= 1, npts >= 1 and 2 npts > degree. Errors: EL_EINVAL
+ * (also when 2 dim npts doubles exceed the address space), EL_ENOMEM.
  */
 int el_affine_lane_riesenfeld(int dim, int degree, size_t npts, const double *x, double *out);
 
@@ -1018,7 +1059,14 @@ int el_affine_lane_riesenfeld(int dim, int degree, size_t npts, const double *x,
  * for i = 0..npts-1-n (npts-n values), n = dim >= 2, points with dim coordinates.
  * The polyline is an affine arc-length polyline when all D[i] are equal (9).
  * Ln (may be NULL) = sum_i sign(D_i) |D_i|^(2/(n(n+1))). npts >= dim + 1.
- * D may be NULL. Errors: EL_EINVAL; EL_EINTERNAL (GSL LU failed).
+ * D may be NULL. Each determinant is formed by GSL's LU on columns scaled by
+ * powers of two, so entries near 1e+-300 neither overflow nor underflow inside
+ * it; a determinant that is exactly singular (a repeated point, collinear
+ * edges in R^2) is 0; one below double's range underflows to 0 (Ln is formed
+ * from its logarithm, so it keeps such elements).
+ * Errors: EL_EINVAL; EL_EDOM (a D_i beyond double's range, or an edge that
+ * overflows; checked before anything is written); EL_ENOMEM; EL_EINTERNAL
+ * (GSL LU failed).
  */
 int el_affine_elements_nd(int dim, size_t npts, const double *x, double *D, double *Ln);
 
@@ -1035,13 +1083,15 @@ int el_affine_elements_nd(int dim, size_t npts, const double *x, double *D, doub
  *   others are x. Interior knots stay uniform, so every joint is a joint of
  *   the uniform spline.
  * The library allocates out's arrays (free with el_bspline_free);
- * out->max_deviation = 0 (exact). Errors: EL_EINVAL, EL_ENOMEM.
+ * out->max_deviation = 0 (exact). Errors: EL_EINVAL, EL_EDOM (clamped: an end
+ * pole, a blossom extrapolated from x, beyond double's range), EL_ENOMEM; out
+ * untouched on error.
  */
 int el_affine_uniform_bspline(int dim, int degree, size_t npts, const double *x,
                               int clamped, struct el_bspline *out);
 
 /* el_affine_uniform_bspline with dim = degree = 2 (seed 002 §2.5): G2 iff xy is an
- * affine arc-length polyline. npts >= 3. */
+ * affine arc-length polyline. npts >= 3. Errors as el_affine_uniform_bspline. */
 int el_affine_quadratic_bspline(size_t npts, const double *xy, int clamped, struct el_bspline *out);
 
 /*
@@ -1075,9 +1125,12 @@ int el_affine_g2_bspline(size_t npts, const double *xy, const double *start, con
  *   S_j = cbrt(4 A*_j A*_{j+1} / (A*_j + B*_j + A*_{j+1})),
  * sign = turning sense; S_j = 0 when no such convex parabola exists (the
  * tangents don't meet ahead: an inflection inside the arc; the arc is then a
- * straight segment). nsamples >= 3. Errors: EL_EINVAL.
+ * straight segment). nsamples >= 3. Errors: EL_EINVAL, EL_EDOM (range), EL_ENOMEM.
  */
 int el_affine_parabolic_lengths(size_t nsamples, const double *samples, double *S);
+
+/* The most edges el_affine_polyline builds (bounded work; more: EL_EDOM at once). */
+enum { EL_AFFINE_MAX_EDGES = 1000000 };
 
 /* Options of el_affine_polyline; el_affine_options_defaults fills them. */
 typedef struct el_affine_options {
@@ -1149,7 +1202,10 @@ typedef struct el_affine_result {
  * while opt->split_inflections = 0, or inside a piece the caller gave as
  * inflection-free; n too small for the pieces; a straight piece;
  * the construction left the curve: n too small for the curve, e.g. fewer than
- * about 3 vertices per turn of the tangent); EL_ENOMEM; EL_EINTERNAL (GSL).
+ * about 3 vertices per turn of the tangent; n > EL_AFFINE_MAX_EDGES, refused
+ * at once; samples out of range (above), or a tangent whose largest component
+ * is outside [1e-150, 1e150] and not 0); EL_ENOMEM; EL_EINTERNAL (GSL).
+ * Cost: about (opt->max_iter + 25) (n + nsamples) steps (x 30 with fit_ends).
  * An end piece worth less than 1.5 edges of affine length (an inflection next
  * to an end) is left out: the polyline then starts / ends at that inflection
  * (t[0] > 0 / t[n] near it), and infl_param lists only the inner inflections.
@@ -1185,6 +1241,13 @@ typedef struct el_bspline {
     double max_deviation;  /* certified distance to the source curve (0 if exact, -1 if unknown) */
 } el_bspline;
 
+/*
+ * The most poles el_smooth_to_bspline builds (bounded work: a curve or a
+ * tolerance that needs more is refused or answered with the best spline at the
+ * limit, see there).
+ */
+enum { EL_BSPLINE_MAX_POLES = 10000 };
+
 /* Release what the library allocated in b and zero it; NULL is a no-op. */
 void el_bspline_free(el_bspline *b);
 
@@ -1192,25 +1255,31 @@ void el_bspline_free(el_bspline *b);
  * Fill b with zeroed, malloc'ed arrays: poles (dim*npoles), knots and mults
  * (nknots each); max_deviation = -1. For code that builds B-splines (release
  * with el_bspline_free). Errors: EL_EINVAL (NULL b, degree < 1, dim < 1,
- * nknots < 2, npoles < degree+1; b untouched), EL_ENOMEM.
+ * nknots < 2, npoles < degree+1), EL_ENOMEM (also when dim*npoles doubles
+ * exceed the address space); b untouched on error.
  */
 int el_bspline_alloc(el_bspline *b, int degree, int dim, size_t npoles, size_t nknots);
 
 /*
  * EL_OK when b is a valid B-spline: degree >= 1, dim >= 1, knots finite and
- * strictly increasing, end multiplicities in 1..degree+1, interior ones in
- * 1..degree, sum of mults = npoles + degree + 1, finite poles; else EL_EINVAL.
+ * strictly increasing with a finite range knots[nknots-1] - knots[0], end
+ * multiplicities in 1..degree+1, interior ones in 1..degree, sum of mults =
+ * npoles + degree + 1, finite poles, array sizes (npoles + degree + 1 knots,
+ * dim*npoles poles) that fit in memory; else EL_EINVAL.
  */
 int el_bspline_check(const el_bspline *b);
 
-/* The flat knot vector (npoles + degree + 1 values) into flat. EL_EINVAL. */
+/* The flat knot vector (npoles + degree + 1 values) into flat. Errors: EL_EINVAL
+ * (invalid b, NULL flat). */
 int el_bspline_flat_knots(const el_bspline *b, double *flat);
 
 /*
  * Points B(t_i) (de Boor's algorithm), pts: dim*n interleaved. t must lie in
  * [knots[0], knots[nknots-1]] (values outside by less than 1e-12 of the
  * knot range are clamped to it; beyond that EL_EDOM: no extrapolation).
- * Errors: EL_EINVAL (invalid b, NULL arrays with n > 0, non-finite t), EL_EDOM, EL_ENOMEM.
+ * Errors: EL_EINVAL (invalid b, NULL arrays with n > 0, non-finite t), EL_EDOM
+ * (a t outside, checked before anything is written; or a value beyond double's
+ * range, which only derivatives can reach, the values before it written), EL_ENOMEM.
  */
 int el_bspline_eval(const el_bspline *b, size_t n, const double *t, double *pts);
 
@@ -1225,8 +1294,9 @@ int el_bspline_derivative(const el_bspline *b, int order, size_t n, const double
 /*
  * Signed curvature det(B', B'') / |B'|^3 (positive = turning counter-clockwise)
  * of a planar (dim = 2) B-spline of degree >= 2, kappa: n values.
- * Errors: EL_EINVAL (dim != 2, degree < 2, ...), EL_EDOM (t outside),
- * EL_ESINGULAR (B' = 0 at some t; the values before it are written).
+ * Errors: EL_EINVAL (dim != 2, degree < 2, ...), EL_EDOM (t outside: nothing
+ * written; a curvature beyond double's range: the values before it written),
+ * EL_ESINGULAR (B' = 0 at some t; the values before it are written), EL_ENOMEM.
  */
 int el_bspline_curvature(const el_bspline *b, size_t n, const double *t, double *kappa);
 
@@ -1237,7 +1307,8 @@ int el_bspline_curvature(const el_bspline *b, size_t n, const double *t, double 
  * (multiplicity 4 at both ends, 1 inside), B(u_i) = xy_i, n + 2 poles.
  * out->max_deviation = -1 (no distance to the polyline is claimed).
  * Errors: EL_EINVAL (NULL, n < 2, non-finite), EL_ESINGULAR (two consecutive
- * vertices coincide), EL_ENOMEM. out is untouched on error.
+ * vertices coincide), EL_EDOM (the polyline's length or a pole beyond double's
+ * range), EL_ENOMEM. out is untouched on error.
  */
 int el_bspline_interpolate_c2(const double *xy, size_t n, el_bspline *out);
 
@@ -1263,12 +1334,19 @@ int el_bspline_interpolate_c2(const double *xy, size_t n, el_bspline *out);
  * (k > 1) segment it is the distance to the corresponding branch, which can
  * exceed the distance to the point set. length = 0 gives p+1
  * coincident poles on [0, 1] with max_deviation 0 (B' = 0: no tangent).
+ * Bounded work: at most EL_BSPLINE_MAX_POLES poles, and refused at once
+ * (EL_EDOM, nothing computed) when tol < 1e-14 (length + |x0| + |y0| +
+ * |q|/sqrt(mu)) (below what double precision resolves: the phase q carries an
+ * absolute rounding of 1e-16 |q| into u), when the curve turns through more than
+ * EL_BSPLINE_MAX_POLES radians (bound 2 |k| sqrt(mu) length), or when the first
+ * estimate of the spans needed (from the knot density) exceeds twice the limit.
+ * Cost: about linear in the poles built (~1 ms for 50 poles at 1e-6 length).
  * Errors: EL_EINVAL (bad params, tol <= 0 or non-finite, degree outside 3..7,
- * NULL out), EL_EDOM (tol < 1e-14 (length + |x0| + |y0|): below what double
- * precision resolves), EL_EMAXITER (tol not reached: the best B-spline found
- * is returned in out with its certified distance), EL_ENOMEM, EL_ESINGULAR
- * (a least-squares system failed). out is untouched on errors other than
- * EL_EMAXITER.
+ * NULL out), EL_EDOM (the limits above), EL_EMAXITER (tol not reached within
+ * the pole or iteration limits: the best B-spline found is returned in out with
+ * its certified distance, max_deviation > tol; release it with el_bspline_free),
+ * EL_ENOMEM, EL_ESINGULAR (a least-squares system failed). out is untouched on
+ * errors other than EL_EMAXITER.
  */
 int el_smooth_to_bspline(const el_smooth_params *p, double tol, int degree, el_bspline *out);
 
@@ -1325,13 +1403,32 @@ typedef struct el_blend_basis {
     double G[16];      /* the same h_i on (f_0, B_1, B_2, f_3), B_1 = f_1 - f_1(0) f_0 - f_1(1) f_3,
                           B_2(t) = B_1(1-t): the cancellation-free form used for evaluation */
     double cond;       /* 1-norm condition number of the 8x8 system (2.17), solved for G */
+    /* How the basis behaves on [0, 1] (64 samples, then Brent; to ~1e-10):   */
+    double basis_min;  /* min over t and i of h_i(t) (<= 0: h_i(0) = 0 for i > 0) */
+    int convex_hull;   /* 1 when basis_min >= -1e-12 (rounding): every h_i >= 0, so a
+                          segment stays in the convex hull of its control points
+                          (elliptic: up to m = k^2 ~ 0.6, with d = 2) */
+    double lebesgue;   /* max over t of sum_i |h_i(t)| (>= 1; 1 with the convex hull):
+                          a curve point moves by at most this times the largest move
+                          of a control point */
 } el_blend_basis;
+
+/*
+ * Elliptic bases whose system (2.17) has cond > EL_BLEND_COND_MAX are refused
+ * (EL_ESINGULAR). The matrix of (2.17) does not depend on d; cond ~ 6/|2 - K(k)|,
+ * so the refused neighbourhood is |K(k) - 2| < ~0.006: k in (0.79932, 0.80544),
+ * m = k^2 in (0.63891, 0.64874). There the basis is not
+ * determined to any use: it grows like |K - d| / |2 - K| (at m = 0.6438, d = 2:
+ * basis_min = -221, lebesgue = 443; at the threshold, d = 2: about -2.5 and 6).
+ */
+enum { EL_BLEND_COND_MAX = 1000 };
 
 /*
  * Fill b for the MQ span with parameter c and end-derivative d (d = 1/alpha(c)
  * gives Eck's Omega_i). Errors: EL_EINVAL (NULL b, NaN/inf, d <= 0),
  * EL_EDOM (c = 0: the span degenerates), EL_ESINGULAR (the system (2.17) is
- * singular to working precision, condition > 1e13). b untouched on error.
+ * singular to working precision, condition > 1e13: |c| beyond ~1e3, where the
+ * span tends to the quadratics), EL_ENOMEM, EL_EINTERNAL. b untouched on error.
  */
 int el_blend_init_mq(el_blend_basis *b, double c, double d);
 
@@ -1339,14 +1436,16 @@ int el_blend_init_mq(el_blend_basis *b, double c, double d);
  * Fill b for the elliptic span {1-t, sn((1-t)K,k), sn(Kt,k), t} with modulus
  * k (see the convention above) and end-derivative d > 0.
  * Errors: EL_EINVAL (NULL, NaN/inf, k < 0, d <= 0), EL_EDOM (k >= 1: K is
- * infinite, the basis does not exist), EL_ESINGULAR (K(k) = 2, near k = 0.80241:
- * there the end conditions (2.14) do not determine h_0; detected as
- * condition > 1e13), EL_EINTERNAL (GSL). b untouched on error.
+ * infinite, the basis does not exist), EL_ESINGULAR (the neighbourhood of
+ * K(k) = 2, k = 0.80241, where the end conditions (2.14) do not determine h_0:
+ * cond > EL_BLEND_COND_MAX, above), EL_ENOMEM, EL_EINTERNAL (GSL). b untouched
+ * on error.
  */
 int el_blend_init_elliptic(el_blend_basis *b, double k, double d);
 
 /* Eck's d = 1/alpha(c) = (2c^2 + 1 + c s)/(c s), s = sqrt(c^2+1) (2.5), for |c|.
- * Errors: EL_EINVAL (NULL, NaN/inf), EL_EDOM (c = 0). */
+ * Errors: EL_EINVAL (NULL, NaN/inf), EL_EDOM (c = 0, or |c| so small that d
+ * overflows). */
 int el_blend_eck_d(double c, double *d);
 
 /*
@@ -1355,29 +1454,36 @@ int el_blend_eck_d(double c, double *d);
  *   Omega_2(t) = Omega_1(1-t),  Omega_3 = t - alpha Omega_1 + (alpha-1) Omega_2,
  *   Omega_0(t) = Omega_3(1-t)   (for |c|; the printed Omega_1 swaps the roots).
  * omega[4*i + j] = Omega_j(t_i). Independent of el_blend_init_mq (a check of it).
- * Errors: EL_EINVAL (NULL, NaN/inf), EL_EDOM (c = 0).
+ * Errors: EL_EINVAL (NULL, NaN/inf), EL_EDOM (c = 0; a value beyond double's
+ * range, for tiny |c| or t far outside [0, 1]: the rows before it are written).
  */
 int el_blend_eck_omega(double c, size_t n, const double *t, double *omega);
 
 /* The span functions f_j(t_i) and their t-derivatives: f[4*i + j]; any of
- * f, df, d2f may be NULL. Any finite t (the segment is [0, 1]). Errors: EL_EINVAL. */
+ * f, df, d2f may be NULL. Any finite t (the segment is [0, 1]). Errors: EL_EINVAL,
+ * EL_EDOM (a value beyond double's range, t far outside [0, 1]: the rows before
+ * it are written), EL_EINTERNAL (GSL). */
 int el_blend_span_eval(const el_blend_basis *b, size_t n, const double *t,
                        double *f, double *df, double *d2f);
 
 /* The blending functions h_j(t_i) (2.13) and t-derivatives: h[4*i + j]; any of
- * h, dh, d2h may be NULL. Errors: EL_EINVAL. */
+ * h, dh, d2h may be NULL. Errors as el_blend_span_eval. */
 int el_blend_basis_eval(const el_blend_basis *b, size_t n, const double *t,
                         double *h, double *dh, double *d2h);
 
 /* Control points q (4 points, 8 doubles) of the curve sum_j p_j f_j with
- * coefficient points p (8 doubles): q = p M^-1 (2.19). Errors: EL_EINVAL. */
+ * coefficient points p (8 doubles): q = p M^-1 (2.19). Errors: EL_EINVAL, EL_EDOM
+ * (a result beyond double's range; q untouched). */
 int el_blend_control_points(const el_blend_basis *b, const double *p, double *q);
 
-/* The inverse: coefficient points p = q M (2.18). Errors: EL_EINVAL. */
+/* The inverse: coefficient points p = q M (2.18). Errors: EL_EINVAL, EL_EDOM
+ * (as above; p untouched). */
 int el_blend_coefficients(const el_blend_basis *b, const double *q, double *p);
 
 /* Curve points phi(t_i) = sum_j q_j h_j(t_i) (xy: 2n) and derivatives
- * dxy: 2n (may be NULL). Errors: EL_EINVAL (NULL, NaN/inf). */
+ * dxy: 2n (may be NULL). Errors: EL_EINVAL (NULL, NaN/inf), EL_EDOM (a point
+ * beyond double's range: control points near DBL_MAX or t far outside [0, 1];
+ * the points before it are written), EL_EINTERNAL (GSL). */
 int el_blend_eval(const el_blend_basis *b, const double *q, size_t n, const double *t,
                   double *xy, double *dxy);
 
@@ -1393,7 +1499,8 @@ enum el_blend_pick {
  * EL_BLEND_PICK_INTERPOLATE solves sum_j q_j h_j(t_i) = pts_i, with
  * t_i = (chord length from pts_0 to pts_i) / (total chord length).
  * Errors: EL_EINVAL (NULL, NaN/inf, unknown mode), EL_ESINGULAR (coincident
- * consecutive points, or the 4x4 collocation system is singular).
+ * consecutive points, or the 4x4 collocation system is singular), EL_EDOM (a
+ * control point beyond double's range; q untouched), EL_ENOMEM, EL_EINTERNAL.
  */
 int el_blend_from_points(const el_blend_basis *b, const double *pts, int mode, double *q);
 
@@ -1403,7 +1510,7 @@ int el_blend_from_points(const el_blend_basis *b, const double *pts, int mode, d
  * the joins when q_{3s-1}, q_{3s}, q_{3s+1} are collinear in this order, and
  * C1 (in the global parameter) when q_{3s} is their midpoint. Global parameter
  * t in [0, nseg]: segment s = floor(t) (clamped to [0, nseg-1]), local t - s.
- * xy: 2n, dxy: 2n or NULL. Errors: EL_EINVAL.
+ * xy: 2n, dxy: 2n or NULL. Errors as el_blend_eval.
  */
 int el_blend_composite_eval(const el_blend_basis *b, size_t nseg, const double *q,
                             size_t n, const double *t, double *xy, double *dxy);
@@ -1413,7 +1520,8 @@ int el_blend_composite_eval(const el_blend_basis *b, size_t nseg, const double *
  * tangents T_i = (P_{i+1} - P_{i-1})/2 inside, (-3P_0 + 4P_1 - P_2)/2 and its
  * mirror at the ends (P_1 - P_0 when npts = 2), inner control points
  * q_{3i+-1} = P_i +- T_i/d. q: 3*(npts-1) + 1 points (6*npts - 4 doubles).
- * Errors: EL_EINVAL.
+ * Errors: EL_EINVAL, EL_EDOM (a coordinate beyond 1e300, checked first; or a
+ * control point beyond double's range for a tiny d, q then written).
  */
 int el_blend_composite_through(const el_blend_basis *b, size_t npts, const double *pts,
                                double *q);
@@ -1429,8 +1537,14 @@ int el_blend_composite_through(const el_blend_basis *b, size_t npts, const doubl
  * maximisation around every sampled local maximum) is <= tol. Segments are
  * joined with triple knots. out->max_deviation is the largest segment figure.
  * The caller frees out with el_bspline_free (also after EL_ENOCONV).
- * Errors: EL_EINVAL (NULL, NaN/inf, tol <= 0), EL_ENOMEM, EL_ENOCONV (tol not
- * reached with 256 spans in some segment: the best spline is returned in out).
+ * Bounded work: nseg <= 100000 (more: EL_EINVAL), at most 15 fits of <= 256
+ * spans per segment.
+ * Errors: EL_EINVAL (NULL, NaN/inf, tol <= 0, nseg outside 1..100000),
+ * EL_ENOMEM, EL_EDOM (tol < 64 eps lebesgue max|q|, below what the coordinates
+ * resolve, refused at once; control points near DBL_MAX: a deviation or a pole
+ * beyond double's range), EL_EINTERNAL (GSL), EL_ENOCONV (tol not reached with 256
+ * spans in some segment: the best spline is returned in out). out is untouched
+ * on the errors other than EL_ENOCONV.
  */
 int el_blend_to_bspline(const el_blend_basis *b, size_t nseg, const double *q, double tol,
                         el_bspline *out);

@@ -16,6 +16,7 @@
 #include <gsl/gsl_linalg.h>
 #include <gsl/gsl_min.h>
 #include <gsl/gsl_poly.h>
+#include <float.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -30,8 +31,25 @@ static void edge(const double *xy, size_t j, double v[2])
 
 static int points_ok(size_t npts, const double *xy, size_t min)
 {
-    if (!xy || npts < min) return EL_EINVAL;
+    if (!xy || npts < min || el__too_many(npts, 2, sizeof(double))) return EL_EINVAL;
     return el__all_finite(xy, 2 * npts);
+}
+
+/*
+ * The functions below multiply two or three edge vectors (areas, and the
+ * ratios of areas the curvatures are). Their products stay inside double's
+ * range, and keep their precision, only when the largest edge component m is
+ * in [1e-150, 1e150] (or 0: all points equal, which each function treats as
+ * degenerate input): EL_EDOM otherwise (an edge may also overflow, e.g.
+ * between -1e308 and 1e308).
+ */
+static int edges_in_range(size_t npts, const double *xy)
+{
+    double m = 0.0;
+    for (size_t j = 0; j + 1 < npts; j++)
+        for (int c = 0; c < 2; c++) m = fmax(m, fabs(xy[2 * (j + 1) + c] - xy[2 * j + c]));
+    if (!isfinite(m) || m > 1e150 || (m > 0.0 && m < 1e-150)) return EL_EDOM;
+    return EL_OK;
 }
 
 /* ------------------------------------------------------------ §2.1, (1), (3) */
@@ -39,6 +57,7 @@ static int points_ok(size_t npts, const double *xy, size_t min)
 int el_affine_coords(size_t npts, const double *xy, double *A, double *B)
 {
     if (points_ok(npts, xy, 3) || !A) return EL_EINVAL;
+    if (edges_in_range(npts, xy)) return EL_EDOM;
     for (size_t i = 1; i + 1 < npts; i++) {
         double vm[2], v0[2];
         edge(xy, i - 1, vm);
@@ -56,6 +75,7 @@ int el_affine_coords(size_t npts, const double *xy, double *A, double *B)
 int el_affine_length(size_t npts, const double *xy, double *L2)
 {
     if (points_ok(npts, xy, 3) || !L2) return EL_EINVAL;
+    if (edges_in_range(npts, xy)) return EL_EDOM;
     double sum = 0.0;
     for (size_t i = 1; i + 1 < npts; i++) {
         double vm[2], v0[2];
@@ -89,6 +109,7 @@ static int quad_k(const double *xy, size_t i, double *k, double *Ai, double *Ai1
 int el_affine_curvature(size_t npts, const double *xy, double *k)
 {
     if (points_ok(npts, xy, 4) || !k) return EL_EINVAL;
+    if (edges_in_range(npts, xy)) return EL_EDOM;
     for (size_t i = 1; i + 2 < npts; i++) {
         int st = quad_k(xy, i, &k[i - 1], NULL, NULL);
         if (st) return st;
@@ -109,65 +130,75 @@ int el_affine_curvature(size_t npts, const double *xy, double *k)
  *   middle (scaled (1-k/4)^(1/4), the geometric mean)  delta = -sqrt(4-k)/(2+sqrt(4-k)).
  * det(e1, e2) = (A_i + A_{i+1})/4 = A/2.
  */
+/* The conic of `kind` of the quadruple x_{i-1}..x_{i+2} into *cn: EL_ESINGULAR
+ * (A = 0), EL_EDOM (not equal-area, k_i >= 4 for inner / middle, or a value
+ * beyond double's range: coordinates far from the points' scale). */
+static int conic_of(const double *xy, size_t i, int kind, el_affine_conic *cn)
+{
+    double k, a0, a1;
+    int st = quad_k(xy, i, &k, &a0, &a1);
+    if (st) return st;
+    if (fabs(a0 - a1) > 1e-6 * fmax(fabs(a0), fabs(a1))) return EL_EDOM;
+    if (kind != EL_CONIC_OUTER && !(k < 4.0)) return EL_EDOM;
+    double A = 0.5 * (a0 + a1);
+    const double *xm = xy + 2 * (i - 1), *x0 = xy + 2 * i, *x1 = xy + 2 * (i + 1),
+                 *x2 = xy + 2 * (i + 2);
+    double o[2] = {0.5 * (x0[0] + x1[0]), 0.5 * (x0[1] + x1[1])};
+    double e1[2] = {0.5 * (x1[0] - x0[0]), 0.5 * (x1[1] - x0[1])};
+    double e2[2] = {0.5 * (xm[0] + x2[0]) - o[0], 0.5 * (xm[1] + x2[1]) - o[1]};
+    double de = det2(e1[0], e1[1], e2[0], e2[1]);
+    /* rows of E^{-1}, E = [e1 e2]: (u, w) = E^{-1} (X - o) */
+    double r1[2] = {e2[1] / de, -e2[0] / de};
+    double r2[2] = {-e1[1] / de, e1[0] / de};
+    double beta = k * (4.0 - k), gamma = -2.0 * (4.0 - k), delta;
+    double fac; /* (1-k/4)^p of (7) */
+    if (kind == EL_CONIC_OUTER) {
+        delta = -1.0;
+        fac = cbrt(1.0 - 0.25 * k);
+    } else if (kind == EL_CONIC_INNER) {
+        delta = 0.0;
+        fac = 1.0 / cbrt(1.0 - 0.25 * k);
+    } else {
+        double r = sqrt(4.0 - k);
+        delta = -r / (2.0 + r);
+        fac = 1.0;
+    }
+    double P11 = r1[0] * r1[0] + beta * r2[0] * r2[0];
+    double P12 = r1[0] * r1[1] + beta * r2[0] * r2[1];
+    double P22 = r1[1] * r1[1] + beta * r2[1] * r2[1];
+    double L[2] = {gamma * r2[0], gamma * r2[1]};
+    double Po[2] = {P11 * o[0] + P12 * o[1], P12 * o[0] + P22 * o[1]};
+    double c[6] = {P11, 2.0 * P12, P22, -2.0 * Po[0] + L[0], -2.0 * Po[1] + L[1],
+                   o[0] * Po[0] + o[1] * Po[1] - L[0] * o[0] - L[1] * o[1] + delta};
+    double sc = fmax(fabs(c[0]), fmax(fabs(c[1]), fabs(c[2])));
+    for (int j = 0; j < 6; j++) cn->coef[j] = c[j] / sc;
+    cn->type = k > 0.0 ? 1 : (k < 0.0 ? -1 : 0);
+    if (k != 0.0) { /* (5): xi_i = x_i + n_i / k_i */
+        cn->center[0] = x0[0] + (xm[0] - 2.0 * x0[0] + x1[0]) / k;
+        cn->center[1] = x0[1] + (xm[1] - 2.0 * x0[1] + x1[1]) / k;
+    } else {
+        cn->center[0] = cn->center[1] = 0.0;
+    }
+    double Am23 = 1.0 / (cbrt(A) * cbrt(A)); /* A^(-2/3), real cube root */
+    cn->kappa = Am23 * k * fac;               /* (7) */
+    if (el__all_finite(cn->coef, 6) || el__all_finite(cn->center, 2) || !isfinite(cn->kappa))
+        return EL_EDOM;
+    return EL_OK;
+}
+
 int el_affine_osculating_conics(size_t npts, const double *xy, int kind, el_affine_conic *out)
 {
     if (points_ok(npts, xy, 4) || !out) return EL_EINVAL;
     if (kind != EL_CONIC_OUTER && kind != EL_CONIC_INNER && kind != EL_CONIC_MIDDLE) return EL_EINVAL;
+    if (edges_in_range(npts, xy)) return EL_EDOM;
     size_t m = npts - 3;
     /* validate everything first: outputs untouched on error */
     for (size_t i = 1; i <= m; i++) {
-        double k, a0, a1;
-        int st = quad_k(xy, i, &k, &a0, &a1);
+        el_affine_conic cn;
+        int st = conic_of(xy, i, kind, &cn);
         if (st) return st;
-        if (fabs(a0 - a1) > 1e-6 * fmax(fabs(a0), fabs(a1))) return EL_EDOM;
-        if (kind != EL_CONIC_OUTER && !(k < 4.0)) return EL_EDOM;
     }
-    for (size_t i = 1; i <= m; i++) {
-        double k, a0, a1;
-        quad_k(xy, i, &k, &a0, &a1);
-        double A = 0.5 * (a0 + a1);
-        const double *xm = xy + 2 * (i - 1), *x0 = xy + 2 * i, *x1 = xy + 2 * (i + 1),
-                     *x2 = xy + 2 * (i + 2);
-        double o[2] = {0.5 * (x0[0] + x1[0]), 0.5 * (x0[1] + x1[1])};
-        double e1[2] = {0.5 * (x1[0] - x0[0]), 0.5 * (x1[1] - x0[1])};
-        double e2[2] = {0.5 * (xm[0] + x2[0]) - o[0], 0.5 * (xm[1] + x2[1]) - o[1]};
-        double de = det2(e1[0], e1[1], e2[0], e2[1]);
-        /* rows of E^{-1}, E = [e1 e2]: (u, w) = E^{-1} (X - o) */
-        double r1[2] = {e2[1] / de, -e2[0] / de};
-        double r2[2] = {-e1[1] / de, e1[0] / de};
-        double beta = k * (4.0 - k), gamma = -2.0 * (4.0 - k), delta;
-        double fac; /* (1-k/4)^p of (7) */
-        if (kind == EL_CONIC_OUTER) {
-            delta = -1.0;
-            fac = cbrt(1.0 - 0.25 * k);
-        } else if (kind == EL_CONIC_INNER) {
-            delta = 0.0;
-            fac = 1.0 / cbrt(1.0 - 0.25 * k);
-        } else {
-            double r = sqrt(4.0 - k);
-            delta = -r / (2.0 + r);
-            fac = 1.0;
-        }
-        double P11 = r1[0] * r1[0] + beta * r2[0] * r2[0];
-        double P12 = r1[0] * r1[1] + beta * r2[0] * r2[1];
-        double P22 = r1[1] * r1[1] + beta * r2[1] * r2[1];
-        double L[2] = {gamma * r2[0], gamma * r2[1]};
-        double Po[2] = {P11 * o[0] + P12 * o[1], P12 * o[0] + P22 * o[1]};
-        double c[6] = {P11, 2.0 * P12, P22, -2.0 * Po[0] + L[0], -2.0 * Po[1] + L[1],
-                       o[0] * Po[0] + o[1] * Po[1] - L[0] * o[0] - L[1] * o[1] + delta};
-        double sc = fmax(fabs(c[0]), fmax(fabs(c[1]), fabs(c[2])));
-        el_affine_conic *cn = &out[i - 1];
-        for (int j = 0; j < 6; j++) cn->coef[j] = c[j] / sc;
-        cn->type = k > 0.0 ? 1 : (k < 0.0 ? -1 : 0);
-        if (k != 0.0) { /* (5): xi_i = x_i + n_i / k_i */
-            cn->center[0] = x0[0] + (xm[0] - 2.0 * x0[0] + x1[0]) / k;
-            cn->center[1] = x0[1] + (xm[1] - 2.0 * x0[1] + x1[1]) / k;
-        } else {
-            cn->center[0] = cn->center[1] = 0.0;
-        }
-        double Am23 = 1.0 / (cbrt(A) * cbrt(A)); /* A^(-2/3), real cube root */
-        cn->kappa = Am23 * k * fac;               /* (7) */
-    }
+    for (size_t i = 1; i <= m; i++) conic_of(xy, i, kind, &out[i - 1]);
     return EL_OK;
 }
 
@@ -187,18 +218,18 @@ int el_affine_chaikin(size_t npts, const double *xy, double *out)
 
 int el_affine_lane_riesenfeld(int dim, int degree, size_t npts, const double *x, double *out)
 {
-    if (dim < 1 || degree < 1 || !x || !out || npts < 1 || 2 * npts <= (size_t)degree)
-        return EL_EINVAL;
-    size_t d = (size_t)dim;
+    if (dim < 1 || degree < 1 || !x || !out || npts < 1) return EL_EINVAL;
+    size_t d = (size_t)dim, len = 2 * npts;
+    /* x holds d npts doubles, the workspace twice as many */
+    if (el__too_many(npts, 2 * d, sizeof(double)) || len <= (size_t)degree) return EL_EINVAL;
     if (el__all_finite(x, d * npts)) return EL_EINVAL;
-    size_t len = 2 * npts;
-    double *w = malloc(len * d * sizeof *w);
+    double *w = el__alloc(len, d, sizeof *w);
     if (!w) return EL_ENOMEM;
     for (size_t i = 0; i < npts; i++)
         for (size_t c = 0; c < d; c++) w[2 * i * d + c] = w[(2 * i + 1) * d + c] = x[i * d + c];
-    for (int r = 0; r < degree; r++, len--)      /* mu^degree */
+    for (int r = 0; r < degree; r++, len--)      /* mu^degree (halves first: no overflow) */
         for (size_t i = 0; i + 1 < len; i++)
-            for (size_t c = 0; c < d; c++) w[i * d + c] = 0.5 * (w[i * d + c] + w[(i + 1) * d + c]);
+            for (size_t c = 0; c < d; c++) w[i * d + c] = 0.5 * w[i * d + c] + 0.5 * w[(i + 1) * d + c];
     memcpy(out, w, len * d * sizeof *w);
     free(w);
     return EL_OK;
@@ -206,11 +237,52 @@ int el_affine_lane_riesenfeld(int dim, int degree, size_t npts, const double *x,
 
 /* ------------------------------------------------------------ §3, (8), (9) */
 
+/*
+ * det(dx_i..dx_{i+n-1}) by GSL's LU on the columns scaled by powers of two (exact),
+ * so that entries near 1e+-300 neither overflow nor underflow inside the
+ * elimination: *mant * 2^*expo is the determinant, |mant| in [1/2, 1) (mant = 0
+ * for a zero column, or a zero pivot, which partial pivoting meets only on a
+ * singular matrix).
+ */
+static int scaled_det(size_t n, const double *x, size_t i, gsl_matrix *M, gsl_permutation *perm,
+                      double *mant, long *expo)
+{
+    long e = 0;
+    *mant = 0.0;
+    *expo = 0;
+    for (size_t c = 0; c < n; c++) {       /* column c = dx_{i+c} */
+        double big = 0.0;
+        for (size_t r = 0; r < n; r++) {
+            const double v = x[(i + c + 1) * n + r] - x[(i + c) * n + r];
+            gsl_matrix_set(M, r, c, v);
+            big = fmax(big, fabs(v));
+        }
+        if (!isfinite(big)) return EL_EDOM;   /* an edge overflows */
+        if (big == 0.0) return EL_OK;          /* repeated point: det = 0 */
+        const int ec = ilogb(big);
+        for (size_t r = 0; r < n; r++) gsl_matrix_set(M, r, c, ldexp(gsl_matrix_get(M, r, c), -ec));
+        e += ec;
+    }
+    int signum;
+    if (gsl_linalg_LU_decomp(M, perm, &signum)) return EL_EINTERNAL;
+    double m = signum;
+    for (size_t r = 0; r < n; r++) {   /* the pivots' product, renormalised as it goes */
+        int k;
+        m = frexp(m * gsl_matrix_get(M, r, r), &k);
+        e += k;
+        if (m == 0.0) return EL_OK;    /* a zero pivot: singular */
+    }
+    if (!isfinite(m)) return EL_EINTERNAL;
+    *mant = m;
+    *expo = e;
+    return EL_OK;
+}
+
 int el_affine_elements_nd(int dim, size_t npts, const double *x, double *D, double *Ln)
 {
     if (dim < 2 || !x || npts < (size_t)dim + 1) return EL_EINVAL;
     size_t n = (size_t)dim;
-    if (el__all_finite(x, n * npts)) return EL_EINVAL;
+    if (el__too_many(npts, n, sizeof(double)) || el__all_finite(x, n * npts)) return EL_EINVAL;
     el__gsl_quiet();
     gsl_matrix *M = gsl_matrix_alloc(n, n);
     gsl_permutation *perm = gsl_permutation_alloc(n);
@@ -220,16 +292,21 @@ int el_affine_elements_nd(int dim, size_t npts, const double *x, double *D, doub
         return EL_ENOMEM;
     }
     int st = EL_OK;
-    double sum = 0.0, ex = 2.0 / (double)(n * (n + 1));
-    for (size_t i = 0; i + n < npts; i++) {
-        for (size_t c = 0; c < n; c++)       /* column c = dx_{i+c} */
-            for (size_t r = 0; r < n; r++)
-                gsl_matrix_set(M, r, c, x[(i + c + 1) * n + r] - x[(i + c) * n + r]);
-        int signum;
-        if (gsl_linalg_LU_decomp(M, perm, &signum)) { st = EL_EINTERNAL; break; }
-        double det = gsl_linalg_LU_det(M, signum);
-        if (D) D[i] = det;
-        sum += (det < 0 ? -1.0 : 1.0) * pow(fabs(det), ex);   /* (8) */
+    double sum = 0.0, ex = 2.0 / ((double)n * (double)(n + 1));
+    /* validate first (every element in double's range), then write */
+    for (int pass = 0; pass < 2 && st == EL_OK; pass++) {
+        for (size_t i = 0; i + n < npts && st == EL_OK; i++) {
+            double mant;
+            long e;
+            if ((st = scaled_det(n, x, i, M, perm, &mant, &e))) break;
+            /* |mant| in [1/2, 1): D = mant 2^e must be a double */
+            if (mant != 0.0 && e > DBL_MAX_EXP) { st = EL_EDOM; break; }
+            if (pass == 0) continue;
+            if (D) D[i] = mant == 0.0 ? 0.0 : ldexp(mant, (int)fmax((double)e, -2100.0));
+            /* (8) from the logarithm, which does not underflow with D */
+            if (mant != 0.0)
+                sum += (mant < 0 ? -1.0 : 1.0) * exp2(ex * (log2(fabs(mant)) + (double)e));
+        }
     }
     gsl_matrix_free(M);
     gsl_permutation_free(perm);
@@ -260,13 +337,13 @@ int el_affine_uniform_bspline(int dim, int degree, size_t npts, const double *x,
 {
     if (dim < 1 || degree < 1 || !x || !out || npts < (size_t)degree + 1) return EL_EINVAL;
     size_t d = (size_t)dim, n = (size_t)degree, N = npts - 1;
-    if (el__all_finite(x, d * npts)) return EL_EINVAL;
+    if (el__too_many(npts, d, 2 * sizeof(double)) || el__all_finite(x, d * npts)) return EL_EINVAL;
     size_t nk = clamped ? N - n + 2 : npts + n + 1;
-    double *poles = malloc(d * npts * sizeof *poles);
-    double *knots = malloc(nk * sizeof *knots);
-    int *mults = malloc(nk * sizeof *mults);
-    double *work = malloc((n + 1) * d * sizeof *work);
-    double *u = malloc(n * sizeof *u);
+    double *poles = el__alloc(npts, d, sizeof *poles);
+    double *knots = el__alloc(nk, 1, sizeof *knots);
+    int *mults = el__alloc(nk, 1, sizeof *mults);
+    double *work = el__alloc(n + 1, d, sizeof *work);
+    double *u = el__alloc(n, 1, sizeof *u);
     if (!poles || !knots || !mults || !work || !u) {
         free(poles); free(knots); free(mults); free(work); free(u);
         return EL_ENOMEM;
@@ -293,6 +370,10 @@ int el_affine_uniform_bspline(int dim, int degree, size_t npts, const double *x,
     }
     free(work);
     free(u);
+    if (clamped && el__all_finite(poles, d * npts)) {   /* the blossoms extrapolate: may overflow */
+        free(poles); free(knots); free(mults);
+        return EL_EDOM;
+    }
     out->degree = degree;
     out->dim = dim;
     out->npoles = npts;
@@ -404,11 +485,11 @@ typedef struct arc {
 
 static void sample_pt(size_t N, const double *p, long j, double out[2])
 {
-    if (j < 0) {        /* ghost p_{-1} = 3p_0 - 3p_1 + p_2 */
-        for (int c = 0; c < 2; c++) out[c] = 3.0 * p[c] - 3.0 * p[2 + c] + p[4 + c];
+    if (j < 0) {        /* ghost p_{-1} = 3p_0 - 3p_1 + p_2 (from edges: no overflow) */
+        for (int c = 0; c < 2; c++) out[c] = p[4 + c] + 3.0 * (p[c] - p[2 + c]);
     } else if ((size_t)j > N) {
         for (int c = 0; c < 2; c++)
-            out[c] = 3.0 * p[2 * N + c] - 3.0 * p[2 * (N - 1) + c] + p[2 * (N - 2) + c];
+            out[c] = p[2 * (N - 2) + c] + 3.0 * (p[2 * N + c] - p[2 * (N - 1) + c]);
     } else {
         out[0] = p[2 * j];
         out[1] = p[2 * j + 1];
@@ -489,8 +570,9 @@ static void build_arcs(size_t N, const double *p, arc *arcs)
 int el_affine_parabolic_lengths(size_t nsamples, const double *samples, double *S)
 {
     if (points_ok(nsamples, samples, 3) || !S) return EL_EINVAL;
+    if (edges_in_range(nsamples, samples)) return EL_EDOM;
     size_t N = nsamples - 1;
-    arc *arcs = malloc(N * sizeof *arcs);
+    arc *arcs = el__alloc(N, 1, sizeof *arcs);
     if (!arcs) return EL_ENOMEM;
     build_arcs(N, samples, arcs);
     for (size_t j = 0; j < N; j++) S[j] = arcs[j].sgn * arcs[j].S;
@@ -705,10 +787,16 @@ int el_affine_polyline(size_t nsamples, const double *samples, const double *tan
     for (size_t i = 0; i < ninfl; i++)
         if (infl[i] < 1 || infl[i] >= N || (i > 0 && infl[i] <= infl[i - 1])) return EL_EINVAL;
     if (ninfl > 0 && !o.split_inflections) return EL_EDOM;
+    /* bounded work: the vertex count, the products of edges and of tangents */
+    if (n > EL_AFFINE_MAX_EDGES || edges_in_range(nsamples, samples)) return EL_EDOM;
+    for (size_t j = 0; tangents && j < nsamples; j++) {
+        const double m = fmax(fabs(tangents[2 * j]), fabs(tangents[2 * j + 1]));
+        if (m > 1e150 || (m > 0.0 && m < 1e-150)) return EL_EDOM;
+    }
 
     int st = EL_OK;
-    arc *arcs = malloc(N * sizeof *arcs);
-    size_t *bnd = malloc((N + 2) * sizeof *bnd);        /* piece boundaries in f~ */
+    arc *arcs = el__alloc(N, 1, sizeof *arcs);
+    size_t *bnd = el__alloc(N + 2, 1, sizeof *bnd);     /* piece boundaries in f~ */
     size_t *cnt = NULL;
     double *work_xy = NULL, *work_t = NULL;
     el_affine_result r;
@@ -878,7 +966,9 @@ int el_affine_polyline(size_t nsamples, const double *samples, const double *tan
     }
     free(Sp);
     free(sig);
-    if (!st && el__all_finite(r.xy, 2 * (n + 1))) st = EL_EDOM;
+    if (!st && (el__all_finite(r.xy, 2 * (n + 1)) || el__all_finite(r.t, n + 1) ||
+                el__all_finite(r.A, np) || el__all_finite(r.psi, np) || !isfinite(r.S_total)))
+        st = EL_EDOM;
 
 done:
     free(arcs);

@@ -25,6 +25,7 @@
  * c != 1), the form that does is (s+c)^2 beta/alpha (t + c f_1 - s f_2).
  */
 #include "internal.h"
+#include <float.h>
 #include <stdlib.h>
 #include <string.h>
 #include <gsl/gsl_bspline.h>
@@ -38,6 +39,11 @@
 
 /* Condition number above which the 8x8 (2.17) or a 4x4 collocation system is singular. */
 static const double COND_MAX = 1e13;
+
+/* basis_min below this is rounding, not a negative basis function. */
+static const double HULL_TOL = 1e-12;
+
+static int basis_stats(el_blend_basis *b);
 
 static int basis_ok(const el_blend_basis *b)
 {
@@ -101,6 +107,9 @@ static int invert(size_t n, const double *a, double *ainv, double *cond)
     for (size_t i = 0; i < n; i++)
         if (gsl_matrix_get(A, i, i) == 0.0) { st = EL_ESINGULAR; goto done; }
     if (gsl_linalg_LU_invert(A, perm, Ai) != GSL_SUCCESS) { st = EL_ESINGULAR; goto done; }
+    for (size_t i = 0; i < n; i++)   /* (an inverse beyond double's range is singular too) */
+        for (size_t j = 0; j < n; j++)
+            if (!isfinite(gsl_matrix_get(Ai, i, j))) { st = EL_ESINGULAR; goto done; }
     const double c = anorm * norm1(Ai);
     if (!(c <= COND_MAX)) { st = EL_ESINGULAR; goto done; }
     for (size_t i = 0; i < n; i++)
@@ -228,6 +237,7 @@ int el_blend_init_mq(el_blend_basis *b, double c, double d)
     t.c = c;
     t.d = d;
     int st = solve_system(&t);
+    if (st == EL_OK) st = basis_stats(&t);
     if (st == EL_OK) *b = t;
     return st;
 }
@@ -247,6 +257,10 @@ int el_blend_init_elliptic(el_blend_basis *b, double k, double d)
     t.K = K.val;
     t.d = d;
     int st = solve_system(&t);
+    /* the neighbourhood of K = 2 (header): the basis is not determined well
+     * enough there to be of use (it grows like 1/|2 - K|) */
+    if (st == EL_OK && t.cond > EL_BLEND_COND_MAX) st = EL_ESINGULAR;
+    if (st == EL_OK) st = basis_stats(&t);
     if (st == EL_OK) *b = t;
     return st;
 }
@@ -265,13 +279,16 @@ int el_blend_eck_d(double c, double *d)
     if (c == 0.0) return EL_EDOM;
     double s, beta, alpha;
     eck_aux(fabs(c), &s, &beta, &alpha);
+    if (!isfinite(1.0 / alpha)) return EL_EDOM;   /* |c| < ~1e-308: d ~ 1/|c| overflows */
     *d = 1.0 / alpha;
     return EL_OK;
 }
 
 int el_blend_eck_omega(double c, size_t n, const double *t, double *omega)
 {
-    if (!isfinite(c) || (n > 0 && (!t || !omega)) || el__all_finite(t, n)) return EL_EINVAL;
+    if (!isfinite(c) || (n > 0 && (!t || !omega)) || el__too_many(n, 4, sizeof(double)) ||
+        el__all_finite(t, n))
+        return EL_EINVAL;
     if (c == 0.0) return EL_EDOM;
     c = fabs(c);
     double s, beta, alpha;
@@ -288,6 +305,7 @@ int el_blend_eck_omega(double c, size_t n, const double *t, double *omega)
         omega[4 * i + 1] = o1;
         omega[4 * i + 2] = o2;
         omega[4 * i + 3] = o3;
+        if (el__all_finite(omega + 4 * i, 4)) return EL_EDOM;   /* tiny |c|, or t far outside */
     }
     return EL_OK;
 }
@@ -300,11 +318,16 @@ typedef int (*point_fn)(const el_blend_basis *b, double t, double v[4], double d
 static int eval_points(point_fn f, const el_blend_basis *b, size_t n, const double *t,
                        double *v, double *dv, double *d2v)
 {
-    if (!basis_ok(b) || (n > 0 && !t) || el__all_finite(t, n)) return EL_EINVAL;
+    if (!basis_ok(b) || (n > 0 && !t) || el__too_many(n, 4, sizeof(double)) ||
+        el__all_finite(t, n))
+        return EL_EINVAL;
     el__gsl_quiet();
     for (size_t i = 0; i < n; i++) {
-        int st = f(b, t[i], v ? v + 4 * i : NULL, dv ? dv + 4 * i : NULL, d2v ? d2v + 4 * i : NULL);
+        double *out[3] = {v ? v + 4 * i : NULL, dv ? dv + 4 * i : NULL, d2v ? d2v + 4 * i : NULL};
+        int st = f(b, t[i], out[0], out[1], out[2]);
         if (st != EL_OK) return st;
+        for (int o = 0; o < 3; o++)   /* t far outside [0, 1] can leave double's range */
+            if (out[o] && el__all_finite(out[o], 4)) return EL_EDOM;
     }
     return EL_OK;
 }
@@ -339,6 +362,75 @@ int el_blend_basis_eval(const el_blend_basis *b, size_t n, const double *t,
     return eval_points(basis_at, b, n, t, h, dh, d2h);
 }
 
+/* ------------------------------------------------------------- basis_min, lebesgue */
+
+/* What basis_stats() extremises: sign * min_i h_i(t) or sign * sum_i |h_i(t)|. */
+typedef struct stat_ctx {
+    const el_blend_basis *b;
+    int lebesgue;     /* 0: min_i h_i; 1: sum_i |h_i| */
+    double sign;      /* +1: minimise; -1: maximise */
+    int status;
+} stat_ctx;
+
+static double stat_fn(double t, void *p)
+{
+    stat_ctx *c = p;
+    double h[4];
+    int st = basis_at(c->b, t, h, NULL, NULL);
+    if (st != EL_OK) { c->status = st; return 0.0; }
+    double v = c->lebesgue ? 0.0 : h[0];
+    for (int i = 0; i < 4; i++) v = c->lebesgue ? v + fabs(h[i]) : fmin(v, h[i]);
+    return c->sign * v;
+}
+
+/*
+ * The smallest value of sign * f over [0, 1]: the least of 65 samples, then GSL's
+ * Brent around it (the basis functions have few extrema; f is smooth but at
+ * the crossings of two h_i, which Brent's golden-section steps tolerate).
+ */
+static int extremum(stat_ctx *c, double *best)
+{
+    enum { S = 64 };
+    double f[S + 1];
+    size_t j = 0;
+    for (size_t i = 0; i <= S; i++) {
+        f[i] = stat_fn((double)i / S, c);
+        if (f[i] < f[j]) j = i;
+    }
+    if (c->status != EL_OK) return c->status;
+    *best = f[j];
+    if (j == 0 || j == S || !(f[j] < f[j - 1] && f[j] < f[j + 1])) return EL_OK;
+    gsl_min_fminimizer *m = gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent);
+    if (!m) return EL_ENOMEM;
+    gsl_function F = {stat_fn, c};
+    if (gsl_min_fminimizer_set_with_values(m, &F, (double)j / S, f[j], (double)(j - 1) / S,
+                                           f[j - 1], (double)(j + 1) / S, f[j + 1]) == GSL_SUCCESS) {
+        for (int it = 0; it < 60 && c->status == EL_OK; it++) {
+            if (gsl_min_fminimizer_iterate(m) != GSL_SUCCESS) break;
+            if (gsl_min_test_interval(gsl_min_fminimizer_x_lower(m), gsl_min_fminimizer_x_upper(m),
+                                      1e-10, 0.0) == GSL_SUCCESS)
+                break;
+        }
+        *best = fmin(*best, gsl_min_fminimizer_f_minimum(m));
+    }
+    gsl_min_fminimizer_free(m);
+    return c->status;
+}
+
+/* b->basis_min, b->convex_hull, b->lebesgue (b->G set). */
+static int basis_stats(el_blend_basis *b)
+{
+    stat_ctx lo = {b, 0, 1.0, EL_OK}, hi = {b, 1, -1.0, EL_OK};
+    double vmin, vmax;
+    int st = extremum(&lo, &vmin);
+    if (st == EL_OK) st = extremum(&hi, &vmax);
+    if (st != EL_OK) return st;
+    b->basis_min = vmin;
+    b->convex_hull = vmin >= -HULL_TOL;
+    b->lebesgue = fmax(-vmax, 1.0);   /* sum |h_i| >= sum h_i = 1 */
+    return EL_OK;
+}
+
 /* out_j = sum_i in_i A[4i + j] for 4 points (row vector of points times A). */
 static void points_times(const double *in, const double *A, double *out)
 {
@@ -353,18 +445,26 @@ static void points_times(const double *in, const double *A, double *out)
     memcpy(out, r, sizeof r);
 }
 
+/* out = in A for 4 points unless a value leaves double's range (EL_EDOM, out untouched). */
+static int points_times_checked(const double *in, const double *A, double *out)
+{
+    double r[8];
+    points_times(in, A, r);
+    if (el__all_finite(r, 8)) return EL_EDOM;
+    memcpy(out, r, sizeof r);
+    return EL_OK;
+}
+
 int el_blend_control_points(const el_blend_basis *b, const double *p, double *q)
 {
     if (!basis_ok(b) || !p || !q || el__all_finite(p, 8)) return EL_EINVAL;
-    points_times(p, b->Minv, q); /* (2.19) q = p M^-1 */
-    return EL_OK;
+    return points_times_checked(p, b->Minv, q); /* (2.19) q = p M^-1 */
 }
 
 int el_blend_coefficients(const el_blend_basis *b, const double *q, double *p)
 {
     if (!basis_ok(b) || !p || !q || el__all_finite(q, 8)) return EL_EINVAL;
-    points_times(q, b->M, p); /* (2.18) p = q M */
-    return EL_OK;
+    return points_times_checked(q, b->M, p); /* (2.18) p = q M */
 }
 
 /* phi(t) and phi'(t) of one segment with control points q (8 doubles). */
@@ -412,12 +512,15 @@ int el_blend_composite_eval(const el_blend_basis *b, size_t nseg, const double *
                             size_t n, const double *t, double *xy, double *dxy)
 {
     if (!basis_ok(b) || nseg < 1 || !q || (n > 0 && (!t || !xy)) ||
+        el__too_many(nseg + 1, 6, sizeof(double)) || el__too_many(n, 2, sizeof(double)) ||
         el__all_finite(q, 6 * nseg + 2) || el__all_finite(t, n))
         return EL_EINVAL;
     el__gsl_quiet();
     for (size_t i = 0; i < n; i++) {
         int st = composite_at(b, nseg, q, t[i], xy + 2 * i, dxy ? dxy + 2 * i : NULL);
         if (st != EL_OK) return st;
+        if (el__all_finite(xy + 2 * i, 2) || (dxy && el__all_finite(dxy + 2 * i, 2)))
+            return EL_EDOM;   /* control points near DBL_MAX, or t far outside */
     }
     return EL_OK;
 }
@@ -455,6 +558,7 @@ int el_blend_from_points(const el_blend_basis *b, const double *pts, int mode, d
             r[2 * i + 1] += Hinv[4 * i + j] * pts[2 * j + 1];
         }
     }
+    if (el__all_finite(r, 8)) return EL_EDOM;
     memcpy(q, r, sizeof r);
     return EL_OK;
 }
@@ -462,7 +566,12 @@ int el_blend_from_points(const el_blend_basis *b, const double *pts, int mode, d
 int el_blend_composite_through(const el_blend_basis *b, size_t npts, const double *pts,
                                double *q)
 {
-    if (!basis_ok(b) || npts < 2 || !pts || !q || el__all_finite(pts, 2 * npts)) return EL_EINVAL;
+    if (!basis_ok(b) || npts < 2 || !pts || !q || el__too_many(npts, 6, sizeof(double)) ||
+        el__all_finite(pts, 2 * npts))
+        return EL_EINVAL;
+    /* the tangents are differences of points: in range when the coordinates are */
+    for (size_t i = 0; i < 2 * npts; i++)
+        if (fabs(pts[i]) > 1e300) return EL_EDOM;
     const double *P = pts;
     const size_t last = npts - 1;
     for (size_t i = 0; i < npts; i++) {
@@ -484,7 +593,7 @@ int el_blend_composite_through(const el_blend_basis *b, size_t npts, const doubl
             if (i > 0) q[6 * i - 2 + c] = P[2 * i + c] - T[c] / b->d;
         }
     }
-    return EL_OK;
+    return el__all_finite(q, 6 * npts - 4) ? EL_EDOM : EL_OK;   /* T/d beyond range: tiny d */
 }
 
 /* ------------------------------------------------------------- to_bspline */
@@ -541,7 +650,10 @@ static double neg_dev(double t, void *p)
         x += N4[r] * c->s->P[2 * (i0 + (size_t)r)];
         y += N4[r] * c->s->P[2 * (i0 + (size_t)r) + 1];
     }
-    return -hypot(a[0] - x, a[1] - y);
+    const double dev = hypot(a[0] - x, a[1] - y);
+    /* (GSL's minimiser must see finite values: its error handler is the caller's) */
+    if (!isfinite(dev)) { c->status = EL_EDOM; return 0.0; }
+    return -dev;
 }
 
 /* Certified deviation: dense samples (32 per span), then Brent around every local maximum. */
@@ -559,6 +671,11 @@ static int max_deviation(fit_ctx *c, size_t nspan, double *dev)
     gsl_function F = {neg_dev, c};
     for (size_t i = 1; i < g; i++) {
         if (!(e[i] > e[i - 1] && e[i] > e[i + 1])) continue;
+        /* refine only a peak whose parabola through the samples could beat the best
+         * seen (by 1 %): the many small peaks of a good fit cost nothing */
+        const double pred = e[i] + (e[i + 1] - e[i - 1]) * (e[i + 1] - e[i - 1]) /
+                                       (8.0 * (2.0 * e[i] - e[i - 1] - e[i + 1]));
+        if (1.01 * pred < best) continue;
         const double lo = (double)(i - 1) / (double)g, mid = (double)i / (double)g,
                      hi = (double)(i + 1) / (double)g;
         if (gsl_min_fminimizer_set_with_values(m, &F, mid, -e[i], lo, -e[i - 1], hi, -e[i + 1]) !=
@@ -730,6 +847,11 @@ int el_blend_to_bspline(const el_blend_basis *b, size_t nseg, const double *q, d
         !(tol > 0.0) || el__all_finite(q, 6 * nseg + 2))
         return EL_EINVAL;
     el__gsl_quiet();
+    /* below what the coordinates resolve (their rounding, amplified by the
+     * basis at most lebesgue times) no fit can be certified: refused at once */
+    double qmax = 0.0;
+    for (size_t i = 0; i < 6 * nseg + 2; i++) qmax = fmax(qmax, fabs(q[i]));
+    if (tol < 64.0 * DBL_EPSILON * fmax(b->lebesgue, 1.0) * qmax) return EL_EDOM;
     spline *segs = calloc(nseg, sizeof *segs);
     if (!segs) return EL_ENOMEM;
     double dev = 0.0;
@@ -739,6 +861,8 @@ int el_blend_to_bspline(const el_blend_basis *b, size_t nseg, const double *q, d
         st = fit_segment(b, q + 6 * g, tol, &segs[g], &dg);
         if (dg > dev) dev = dg;
     }
+    for (size_t g = 0; g < nseg && st == EL_OK; g++)
+        if (el__all_finite(segs[g].P, 2 * segs[g].np)) st = EL_EDOM;   /* control points near DBL_MAX */
     if (st == EL_OK) st = spline_export(segs, nseg, dev, out);
     for (size_t g = 0; g < nseg; g++) spline_free(&segs[g]);
     free(segs);

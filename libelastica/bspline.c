@@ -7,8 +7,8 @@
  * vectors only from distinct breakpoints (no multiplicities) and evaluates
  * scalar basis functions, not curves, so de Boor's algorithm (Piegl & Tiller,
  * The NURBS Book, A2.1/A2.2/A3.2, derivative poles (3.8)) is written here.
- * GSL does the linear algebra (banded Cholesky of the normal equations,
- * tridiagonal solve) and the local maximisation (Brent).
+ * GSL does the linear algebra (banded Cholesky of the normal equations) and
+ * the local maximisation (Brent).
  *
  * Approximation of an elastica (el_smooth_to_bspline):
  *  - the B-spline is parametrised by the arc length s of the elastica on
@@ -72,7 +72,7 @@ enum { MAXDEG_FIT = 7, MAXDEG_BASIS = 15 };
 #define FIT_INLINE static inline
 #endif
 #if defined(__clang__)
-#define FIT_UNROLL _Pragma("unroll")
+#define FIT_UNROLL _Pragma("unroll 8")   /* (a full unroll of the generic copy fails) */
 #elif defined(__GNUC__) && __GNUC__ >= 8
 #define FIT_UNROLL _Pragma("GCC unroll 8")
 #else
@@ -94,6 +94,8 @@ int el_bspline_alloc(el_bspline *b, int degree, int dim, size_t npoles, size_t n
 {
     if (!b || degree < 1 || dim < 1 || nknots < 2 || npoles < (size_t)degree + 1)
         return EL_EINVAL;
+    if (el__too_many(npoles, (size_t)dim, sizeof(double)) || el__too_many(nknots, 1, sizeof(double)))
+        return EL_ENOMEM;   /* no such array fits in memory */
     el_bspline t;
     memset(&t, 0, sizeof t);
     t.degree = degree;
@@ -117,15 +119,26 @@ int el_bspline_check(const el_bspline *b)
     if (!b || b->degree < 1 || b->dim < 1 || b->nknots < 2 || !b->poles || !b->knots ||
         !b->mults || b->npoles < (size_t)b->degree + 1)
         return EL_EINVAL;
+    /* sizes the caller claims to hold: the flat knot vector and the poles must fit
+     * in memory (and the evaluation's workspace, flat knots + (degree+1) dim) */
+    size_t flat, work;
+    if (el__size_add(b->npoles, (size_t)b->degree + 1, &flat) ||
+        el__too_many(flat, 1, sizeof(double)) ||
+        el__too_many(b->npoles, (size_t)b->dim, sizeof(double)) ||
+        el__size_mul((size_t)b->degree + 1, (size_t)b->dim, &work) ||
+        el__size_add(flat, work, &work) || el__too_many(work, 1, sizeof(double)))
+        return EL_EINVAL;
     size_t total = 0;
     for (size_t i = 0; i < b->nknots; i++) {
-        const int m = b->mults[i];
-        const int mmax = (i == 0 || i + 1 == b->nknots) ? b->degree + 1 : b->degree;
+        const long m = b->mults[i];
+        const long mmax = (i == 0 || i + 1 == b->nknots) ? (long)b->degree + 1 : b->degree;
         if (m < 1 || m > mmax || !isfinite(b->knots[i])) return EL_EINVAL;
         if (i > 0 && !(b->knots[i] > b->knots[i - 1])) return EL_EINVAL;
-        total += (size_t)m;
+        if (el__size_add(total, (size_t)m, &total)) return EL_EINVAL;
     }
-    if (total != b->npoles + (size_t)b->degree + 1) return EL_EINVAL;
+    if (total != flat) return EL_EINVAL;
+    /* knot differences (the evaluation divides by them) must be doubles */
+    if (!isfinite(b->knots[b->nknots - 1] - b->knots[0])) return EL_EINVAL;
     return el__all_finite(b->poles, (size_t)b->dim * b->npoles);
 }
 
@@ -245,7 +258,8 @@ static size_t flat_count(const el_bspline *b) { return b->npoles + (size_t)b->de
 int el_bspline_derivative(const el_bspline *b, int order, size_t n, const double *t, double *out)
 {
     int st = el_bspline_check(b);
-    if (st || order < 0 || (n > 0 && (!t || !out))) return EL_EINVAL;
+    if (st || order < 0 || (n > 0 && (!t || !out)) || el__too_many(n, (size_t)b->dim, sizeof *out))
+        return EL_EINVAL;
     if (n == 0) return EL_OK;
     if ((st = el__all_finite(t, n))) return st;
     const double a = b->knots[0], z = b->knots[b->nknots - 1];
@@ -257,17 +271,21 @@ int el_bspline_derivative(const el_bspline *b, int order, size_t n, const double
         memset(out, 0, n * (size_t)dim * sizeof *out);
         return EL_OK;
     }
+    /* sizes checked by el_bspline_check */
     double *U = malloc((flat_count(b) + (size_t)(p + 1) * (size_t)dim) * sizeof *U);
     if (!U) return EL_ENOMEM;
     double *w = U + flat_count(b);
     el_bspline_flat_knots(b, U);
-    for (size_t i = 0; i < n; i++) {
+    for (size_t i = 0; i < n && !st; i++) {
         const double ti = fmin(fmax(t[i], a), z);
         const size_t k = find_span(U, b->npoles, p, ti);
         deboor_deriv(U, b->poles, p, dim, k, ti, order, w, out + i * (size_t)dim);
+        /* differences of poles far apart, over knots close together, can leave
+         * double's range (derivatives; de Boor's convex combinations cannot) */
+        if (el__all_finite(out + i * (size_t)dim, (size_t)dim)) st = EL_EDOM;
     }
     free(U);
-    return EL_OK;
+    return st;
 }
 
 int el_bspline_eval(const el_bspline *b, size_t n, const double *t, double *pts)
@@ -280,7 +298,7 @@ int el_bspline_curvature(const el_bspline *b, size_t n, const double *t, double 
     int st = el_bspline_check(b);
     if (st || b->dim != 2 || b->degree < 2 || (n > 0 && (!t || !kappa))) return EL_EINVAL;
     if (n == 0) return EL_OK;
-    double *d = malloc(4 * n * sizeof *d);
+    double *d = el__alloc(n, 4, sizeof *d);
     if (!d) return EL_ENOMEM;
     if ((st = el_bspline_derivative(b, 1, n, t, d)) ||
         (st = el_bspline_derivative(b, 2, n, t, d + 2 * n))) {
@@ -291,8 +309,10 @@ int el_bspline_curvature(const el_bspline *b, size_t n, const double *t, double 
         const double x1 = d[2 * i], y1 = d[2 * i + 1];
         const double x2 = d[2 * n + 2 * i], y2 = d[2 * n + 2 * i + 1];
         const double v = hypot(x1, y1);
-        if (!(v > 0.0)) st = EL_ESINGULAR;
-        else kappa[i] = (x1 * y2 - y1 * x2) / (v * v * v);
+        if (!(v > 0.0)) { st = EL_ESINGULAR; break; }
+        /* det(B', B'') / |B'|^3 with B' normalised first (no overflow of |B'|^3) */
+        kappa[i] = ((x1 / v) * y2 - (y1 / v) * x2) / v / v;
+        if (!isfinite(kappa[i])) st = EL_EDOM;
     }
     free(d);
     return st;
@@ -308,17 +328,17 @@ int el_bspline_curvature(const el_bspline *b, size_t n, const double *t, double 
  *   B(u_i) = D_i     (i = 1..n-2; three non-zero basis functions),
  *   B''(u_{n-1}) = 0 <=> (P_{n+1}-P_n)/(U_{n+4}-U_{n+1}) = (P_n-P_{n-1})/(U_{n+3}-U_n)
  * (second-derivative poles, Piegl & Tiller (3.8)): a tridiagonal system,
- * totally positive in its interpolation rows, solved by GSL without pivoting.
+ * totally positive in its interpolation rows, solved without pivoting.
  */
 int el_bspline_interpolate_c2(const double *xy, size_t n, el_bspline *out)
 {
-    if (!xy || !out || n < 2) return EL_EINVAL;
+    if (!xy || !out || n < 2 || el__too_many(n, 2, sizeof(double))) return EL_EINVAL;
     if (el__all_finite(xy, 2 * n)) return EL_EINVAL;
     el__gsl_quiet();
     el_bspline b;
     int st = el_bspline_alloc(&b, 3, 2, n + 2, n);
     if (st) return st;
-    double *U = malloc((n + 6 + 6 * n) * sizeof *U);
+    double *U = el__alloc(n + 1, 7, sizeof *U);   /* n + 6 flat knots, 6 n for the solve */
     if (!U) { el_bspline_free(&b); return EL_ENOMEM; }
     double *diag = U + n + 6, *sup = diag + n, *sub = sup + n, *rx = sub + n, *ry = rx + n,
            *sol = ry + n;
@@ -326,10 +346,15 @@ int el_bspline_interpolate_c2(const double *xy, size_t n, el_bspline *out)
     for (size_t i = 1; i < n; i++) {
         const double h = hypot(xy[2 * i] - xy[2 * i - 2], xy[2 * i + 1] - xy[2 * i - 1]);
         b.knots[i] = b.knots[i - 1] + h;
+        if (!isfinite(b.knots[i])) { st = EL_EDOM; goto done; }   /* length beyond double's range */
         if (!(b.knots[i] > b.knots[i - 1])) { st = EL_ESINGULAR; goto done; }
     }
     for (size_t i = 0; i < n; i++) b.mults[i] = (i == 0 || i + 1 == n) ? 4 : 1;
     el_bspline_flat_knots(&b, U);
+    /* the system in the parameter u / length (the same curve; no underflow of the
+     * knot differences' products for tiny coordinates, no overflow for huge ones) */
+    const double len = b.knots[n - 1];
+    for (size_t i = 0; i < n + 6; i++) U[i] /= len;
     const double P0x = xy[0], P0y = xy[1], Pnx = xy[2 * n - 2], Pny = xy[2 * n - 1];
     {   /* start row */
         const double a = U[4] - U[1], c = U[5] - U[2];
@@ -337,7 +362,7 @@ int el_bspline_interpolate_c2(const double *xy, size_t n, el_bspline *out)
     }
     for (size_t i = 1; i + 1 < n; i++) {   /* interpolation rows: P_i, P_{i+1}, P_{i+2} */
         double N[4];
-        basis_funs(U, 3 + i, 3, b.knots[i], N);   /* N_{i..i+3}; N_{i+3}(u_i) = 0 */
+        basis_funs(U, 3 + i, 3, U[3 + i], N);   /* N_{i..i+3}; N_{i+3}(u_i) = 0 */
         sub[i - 1] = N[0]; diag[i] = N[1]; sup[i] = N[2];
         rx[i] = xy[2 * i]; ry[i] = xy[2 * i + 1];
     }
@@ -345,18 +370,26 @@ int el_bspline_interpolate_c2(const double *xy, size_t n, el_bspline *out)
         const double c = U[n + 4] - U[n + 1], d = U[n + 3] - U[n];
         sub[n - 2] = -c; diag[n - 1] = c + d; rx[n - 1] = d * Pnx; ry[n - 1] = d * Pny;
     }
-    gsl_vector_view vd = gsl_vector_view_array(diag, n), ve = gsl_vector_view_array(sup, n - 1),
-                    vf = gsl_vector_view_array(sub, n - 1), vs = gsl_vector_view_array(sol, n);
-    double *rhs[2] = {rx, ry};
-    for (int c = 0; c < 2; c++) {
-        gsl_vector_view vb = gsl_vector_view_array(rhs[c], n);
-        if (gsl_linalg_solve_tridiag(&vd.vector, &ve.vector, &vf.vector, &vb.vector, &vs.vector)) {
-            st = EL_ESINGULAR;
-            goto done;
-        }
-        for (size_t j = 0; j < n; j++) b.poles[2 * (j + 1) + (size_t)c] = sol[j];
+    /* Gaussian elimination without pivoting (the Thomas algorithm), both right-hand
+     * sides at once. By hand: GSL's gsl_linalg_solve_tridiag is the same
+     * elimination, but reports a zero pivot to the process-wide error handler,
+     * which a caller may have set to abort. sol holds the eliminated sup. */
+    for (size_t i = 0; i < n; i++) {
+        const double m = i ? diag[i] - sub[i - 1] * sol[i - 1] : diag[0];
+        if (!(fabs(m) > 0.0) || !isfinite(m)) { st = EL_ESINGULAR; goto done; }
+        sol[i] = i + 1 < n ? sup[i] / m : 0.0;
+        rx[i] = (rx[i] - (i ? sub[i - 1] * rx[i - 1] : 0.0)) / m;
+        ry[i] = (ry[i] - (i ? sub[i - 1] * ry[i - 1] : 0.0)) / m;
     }
-    if (el__all_finite(b.poles, 2 * (n + 2))) { st = EL_ESINGULAR; goto done; }
+    for (size_t i = n - 1; i-- > 0;) {
+        rx[i] -= sol[i] * rx[i + 1];
+        ry[i] -= sol[i] * ry[i + 1];
+    }
+    for (size_t j = 0; j < n; j++) {
+        b.poles[2 * (j + 1)] = rx[j];
+        b.poles[2 * (j + 1) + 1] = ry[j];
+    }
+    if (el__all_finite(b.poles, 2 * (n + 2))) { st = EL_EDOM; goto done; }   /* overflow */
     b.poles[0] = P0x; b.poles[1] = P0y;
     b.poles[2 * (n + 1)] = Pnx; b.poles[2 * (n + 1) + 1] = Pny;
 done:
@@ -819,7 +852,10 @@ static double exact_distance(cert_ctx *c, double t)
     int st = el_smooth_eval(w->par, 1, &t, g, &th, &ka);
     if (st) { c->status = st; return 0.0; }
     fit_point(w, c->poles, find_span(w->U, c->n, w->p, t), t, P);
-    return taylor_distance(w, P, g, cos(th), sin(th), ka, t, c->c3);
+    const double d = taylor_distance(w, P, g, cos(th), sin(th), ka, t, c->c3);
+    /* (GSL's minimiser must see finite values: its error handler is the caller's) */
+    if (!isfinite(d)) { c->status = EL_EDOM; return 0.0; }
+    return d;
 }
 
 static double neg_distance(double t, void *ctx) { return -exact_distance(ctx, t); }
@@ -938,8 +974,14 @@ static int smooth_to_bspline(const el_smooth_params *par, double tol, int degree
         *out = b;
         return EL_OK;
     }
-    if (tol < 1e-14 * (L + fabs(par->x0) + fabs(par->y0)))
-        return EL_EDOM;   /* below what double precision resolves */
+    /* bounded work (header): below what double precision resolves (the phase q
+     * carries an absolute rounding of eps |q| into u), or more turning than the
+     * pole limit can follow, is refused at once */
+    if (tol < 1e-14 * (L + fabs(par->x0) + fabs(par->y0) + fabs(par->q) / sqrt(par->mu)))
+        return EL_EDOM;
+    const double turn = 2.0 * fabs(par->k) * sqrt(par->mu) * L;   /* >= integral |kappa| */
+    if (!(turn <= (double)EL_BSPLINE_MAX_POLES)) return EL_EDOM;
+    const size_t Nmax = EL_BSPLINE_MAX_POLES - (size_t)p;   /* spans */
     fit_ws w;
     memset(&w, 0, sizeof w);
     w.par = par; w.p = p; w.L = L; w.tol = tol;
@@ -957,8 +999,7 @@ static int smooth_to_bspline(const el_smooth_params *par, double tol, int degree
     /* a first grid for the knot density: 16 points per radian of turning at
      * least (bound 2k sqrt(mu) L); ensure_grid refines it for the knots */
     {
-        const double turn = 2.0 * par->k * sqrt(par->mu) * L;
-        const double M0 = fmax(16.0 * (p + 1), fmin(16.0 * ceil(turn), 1e6));
+        const double M0 = fmax(16.0 * (p + 1), 16.0 * ceil(turn));
         if ((st = ws_grid(&w, (size_t)M0))) goto done;
     }
     size_t Mg = 0;   /* grid size G belongs to */
@@ -982,7 +1023,9 @@ static int smooth_to_bspline(const el_smooth_params *par, double tol, int degree
             }
             if (N == 0) {
                 double x = ceil(0.19 * G[w.M] / pow(accept, ex));
-                N = x < (double)w.nmin ? w.nmin : (x > 1e5 ? 100000 : (size_t)x);
+                /* the estimate is good to a factor ~1.5: twice the limit is out of reach */
+                if (!(x <= 2.0 * (double)Nmax)) { st = EL_EDOM; goto done; }
+                N = x < (double)w.nmin ? w.nmin : (x > (double)Nmax ? Nmax : (size_t)x);
             }
             if ((st = ws_reserve(&w, N))) goto done;
             GROW(breaks, N + 1);
@@ -1007,8 +1050,9 @@ static int smooth_to_bspline(const el_smooth_params *par, double tol, int degree
             if (hi_pass && hi_pass == lo_fail + 1) break;
             size_t Nn;
             const double r = pow(e / (0.96 * accept), ex) * (double)N;   /* aim just below */
-            if (e > accept) Nn = r > 1e5 ? 100000 : (size_t)ceil(r);
-            else Nn = (size_t)floor(r);
+            if (e > accept) Nn = !(r <= (double)Nmax) ? Nmax : (size_t)ceil(r);
+            else Nn = r >= 0.0 ? (size_t)floor(r) : 0;   /* (r <= N here) */
+            if (e > accept && N >= Nmax) break;   /* the pole limit: best effort below */
             if (e > accept && Nn <= N) Nn = N + 1;
             if (e <= accept && Nn >= N) Nn = N - 1;
             if (Nn <= lo_fail) Nn = lo_fail + 1;
@@ -1096,7 +1140,13 @@ static int smooth_to_bspline(const el_smooth_params *par, double tol, int degree
         if ((st = ws_reserve(&w, N))) goto done;
         if (Nmoved && Nmoved == N) memcpy(breaks, bestbr, (N + 1) * sizeof *breaks);
         else if ((st = breaks_for(&w, G, N, breaks))) goto done;
-        if ((st = ensure_grid(&w, N, breaks))) goto done;
+        /* knots finer than the grid limit: fewer spans (N = 1 always fits), best effort */
+        while ((st = ensure_grid(&w, N, breaks)) == EL_EMAXITER && N > 1) {
+            status = EL_EMAXITER;
+            N /= 2;
+            if ((st = breaks_for(&w, G, N, breaks))) goto done;
+        }
+        if (st) goto done;
         set_knots(&w, N, breaks);
         GROW(poles, 2 * (N + (size_t)p));
         if (svN == N && svM == w.M && !memcmp(svb, breaks, (N + 1) * sizeof *breaks)) {
@@ -1108,18 +1158,25 @@ static int smooth_to_bspline(const el_smooth_params *par, double tol, int degree
         accept *= 0.995 * tol / dev;
     }
 
-    /* last resort: split the span holding the worst point until certified */
+    /* last resort: split the span holding the worst point until certified; at a
+     * limit (iterations, poles, grid) the last certified spline is the answer */
     for (int it = 0; dev > tol && !status; it++) {
-        if (it == 30) { status = EL_EMAXITER; break; }
+        if (it == 30 || N >= Nmax) { status = EL_EMAXITER; break; }
         size_t j = 0;
         while (j + 1 < N && tw >= breaks[j + 1]) j++;
         GROW(nb, N + 2);
         memcpy(nb, breaks, (j + 1) * sizeof *nb);
         nb[j + 1] = 0.5 * (breaks[j] + breaks[j + 1]);
         memcpy(nb + j + 2, breaks + j + 1, (N - j) * sizeof *nb);
+        if ((st = ws_reserve(&w, N + 1))) goto done;
+        if ((st = ensure_grid(&w, N + 1, nb)) == EL_EMAXITER) {
+            st = EL_OK;
+            status = EL_EMAXITER;
+            break;
+        }
+        if (st) goto done;
         double *tmp = breaks; breaks = nb; nb = tmp;
         N++;
-        if ((st = ws_reserve(&w, N)) || (st = ensure_grid(&w, N, breaks))) goto done;
         set_knots(&w, N, breaks);
         GROW(poles, 2 * (N + (size_t)p));
         if ((st = fit_poles(&w, N, poles))) goto done;

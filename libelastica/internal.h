@@ -16,6 +16,38 @@ void el__gsl_quiet(void);
 /* EL_OK when all n values are finite. */
 int el__all_finite(const double *v, size_t n);
 
+/* Checked size arithmetic: every array size the library computes goes through
+ * these, so none can wrap around. Return 0 and store the result, or 1 when it
+ * would exceed SIZE_MAX (no such array can exist; callers answer EL_ENOMEM for
+ * what they allocate, EL_EINVAL for a count the caller claims to hold). */
+static inline int el__size_mul(size_t a, size_t b, size_t *out)
+{
+    if (b != 0 && a > (size_t)-1 / b) return 1;
+    *out = a * b;
+    return 0;
+}
+
+static inline int el__size_add(size_t a, size_t b, size_t *out)
+{
+    if (a > (size_t)-1 - b) return 1;
+    *out = a + b;
+    return 0;
+}
+
+/* 1 when count elements of per * elem bytes each do not fit in memory (the
+ * product wraps around SIZE_MAX), e.g. el__too_many(n, 2, sizeof(double)) for n
+ * interleaved points; 0 otherwise. */
+static inline int el__too_many(size_t count, size_t per, size_t elem)
+{
+    size_t t;
+    return el__size_mul(count, per, &t) || el__size_mul(t, elem, &t);
+}
+
+/* malloc of count * per elements of elem bytes; NULL when that wraps or fails. */
+void *el__alloc(size_t count, size_t per, size_t elem);
+/* realloc likewise; p is left untouched (still owned by the caller) on NULL. */
+void *el__realloc(void *p, size_t count, size_t per, size_t elem);
+
 /* Carlson's R_F(x, y, z) (when rf != NULL) and R_D(x, y, z) in one duplication loop
  * (ellint.c); x, y >= 0, not both 0, z > 0. qs = 1: double precision; qs < 1:
  * relative accuracy ~1e-16 qs^-8 (qs = 0.2: 4e-11), fewer duplication steps.

@@ -31,20 +31,24 @@ static int pca(const double *p, size_t n, int dim, double *centroid, double *axe
 {
     double c[3] = {0, 0, 0}, corr[3] = {0, 0, 0}, big = 0.0, scale = 0.0;
     for (size_t k = 0; k < n; k++)
-        for (int j = 0; j < dim; j++) {
-            c[j] += p[k * dim + j];
+        for (int j = 0; j < dim; j++)
             if (fabs(p[k * dim + j]) > big) big = fabs(p[k * dim + j]);
-        }
+    /* sums of p / 2^e (2^e ~ big, exact): no overflow near DBL_MAX, no precision
+     * lost to denormals */
+    const int e = big > 0.0 ? ilogb(big) : 0;
+    for (size_t k = 0; k < n; k++)
+        for (int j = 0; j < dim; j++) c[j] += ldexp(p[k * dim + j], -e);
     for (int j = 0; j < dim; j++) c[j] /= (double)n;
     /* second pass: corrected mean (the centroid of data far from the origin) */
     for (size_t k = 0; k < n; k++)
-        for (int j = 0; j < dim; j++) corr[j] += p[k * dim + j] - c[j];
-    for (int j = 0; j < dim; j++) c[j] += corr[j] / (double)n;
+        for (int j = 0; j < dim; j++) corr[j] += ldexp(p[k * dim + j], -e) - c[j];
+    for (int j = 0; j < dim; j++) c[j] = ldexp(c[j] + corr[j] / (double)n, e);
     for (size_t k = 0; k < n; k++)
         for (int j = 0; j < dim; j++) {
             double d = fabs(p[k * dim + j] - c[j]);
             if (d > scale) scale = d;
         }
+    if (!isfinite(scale)) return EL_EDOM;   /* a spread beyond double's range */
     if (!(scale > 32.0 * DBL_EPSILON * big) || scale == 0.0) return EL_ESINGULAR;
 
     double a[9] = {0}, vec[9], val[3];
@@ -72,8 +76,12 @@ static int pca(const double *p, size_t n, int dim, double *centroid, double *axe
     if (gs != GSL_SUCCESS) return EL_EINTERNAL;
 
     for (int i = 0; i < dim; i++) {
+        /* C is positive semi-definite; its eigenvalues (units^2) must be doubles */
+        if (!isfinite(fmax(val[i], 0.0) * scale * scale)) return EL_EDOM;
+    }
+    for (int i = 0; i < dim; i++) {
         centroid[i] = c[i];
-        evals[i] = fmax(val[i], 0.0) * scale * scale;   /* C is positive semi-definite */
+        evals[i] = fmax(val[i], 0.0) * scale * scale;
         double nrm = 0.0;
         for (int j = 0; j < dim; j++) nrm += vec[j * dim + i] * vec[j * dim + i];
         nrm = sqrt(nrm);
@@ -121,17 +129,23 @@ int el_plane_fit(const double *xyz, size_t n, el_frame *frame, double *xy_out,
         for (int j = 0; j < 3; j++) f.e3[j] = -f.e3[j];
     cross3(f.e3, f.e1, f.e2);   /* right-handed: e1 x e2 = e3 */
 
-    double ss = 0.0;
+    /* rms = zmax sqrt(mean (z/zmax)^2): no overflow of z^2 */
+    double ss = 0.0, zmax = 0.0;
     for (size_t k = 0; k < n; k++) {
         double d[3] = {xyz[3 * k] - c[0], xyz[3 * k + 1] - c[1], xyz[3 * k + 2] - c[2]};
-        double z = dot3(f.e3, d);
-        ss += z * z;
-        if (xy_out) {
-            xy_out[2 * k] = dot3(f.e1, d);
-            xy_out[2 * k + 1] = dot3(f.e2, d);
-        }
+        zmax = fmax(zmax, fabs(dot3(f.e3, d)));
     }
-    if (rms_out_of_plane) *rms_out_of_plane = sqrt(ss / (double)n);
+    for (size_t k = 0; k < n && zmax > 0.0; k++) {
+        double d[3] = {xyz[3 * k] - c[0], xyz[3 * k + 1] - c[1], xyz[3 * k + 2] - c[2]};
+        double z = dot3(f.e3, d) / zmax;
+        ss += z * z;
+    }
+    for (size_t k = 0; k < n && xy_out; k++) {
+        double d[3] = {xyz[3 * k] - c[0], xyz[3 * k + 1] - c[1], xyz[3 * k + 2] - c[2]};
+        xy_out[2 * k] = dot3(f.e1, d);
+        xy_out[2 * k + 1] = dot3(f.e2, d);
+    }
+    if (rms_out_of_plane) *rms_out_of_plane = zmax * sqrt(ss / (double)n);
     if (frame) *frame = f;
     return EL_OK;
 }
@@ -154,6 +168,7 @@ int el_frame_project(const el_frame *frame, size_t n, const double *xyz, double 
         if (z) z[k] = dot3(frame->e3, d);
         xy[2 * k] = x;
         xy[2 * k + 1] = y;
+        if (!isfinite(x) || !isfinite(y) || (z && !isfinite(z[k]))) return EL_EDOM;
     }
     return EL_OK;
 }
@@ -166,6 +181,7 @@ int el_frame_to_3d(const el_frame *frame, size_t n, const double *xy, double *xy
         double x = xy[2 * k], y = xy[2 * k + 1];
         for (int j = 0; j < 3; j++)
             xyz[3 * k + j] = frame->origin[j] + x * frame->e1[j] + y * frame->e2[j];
+        if (el__all_finite(xyz + 3 * k, 3)) return EL_EDOM;
     }
     return EL_OK;
 }
@@ -215,6 +231,7 @@ int el_frame2d_to_local(const el_frame2d *frame, size_t n, const double *xy, dou
         double dx = xy[2 * k] - frame->origin[0], dy = xy[2 * k + 1] - frame->origin[1];
         xy_local[2 * k] = frame->f1[0] * dx + frame->f1[1] * dy;
         xy_local[2 * k + 1] = frame->f2[0] * dx + frame->f2[1] * dy;
+        if (el__all_finite(xy_local + 2 * k, 2)) return EL_EDOM;
     }
     return EL_OK;
 }
@@ -228,6 +245,7 @@ int el_frame2d_to_parent(const el_frame2d *frame, size_t n, const double *xy_loc
         double u = xy_local[2 * k], v = xy_local[2 * k + 1];
         xy[2 * k] = frame->origin[0] + u * frame->f1[0] + v * frame->f2[0];
         xy[2 * k + 1] = frame->origin[1] + u * frame->f1[1] + v * frame->f2[1];
+        if (el__all_finite(xy + 2 * k, 2)) return EL_EDOM;
     }
     return EL_OK;
 }
@@ -269,24 +287,25 @@ static void tree_build(seg_tree *t, size_t node, size_t lo, size_t hi)
     b[3] = fmax(l[3], r[3]);
 }
 
-/* Largest root t in [0, 1] of |P + t (Q - P) - A| = r with t > tmin; -1 if none. */
+/*
+ * Largest root t in [0, 1] of |P + t (Q - P) - A| = r with t > tmin; -1 if none.
+ * With d = Q - P, f = P - A: the foot t0 = -(f.d)/|d|^2 and the roots
+ * t0 +- sqrt(r^2 - (f x d)^2/|d|^2)/|d|. This form loses no precision when
+ * |f| >> r (a long segment, a small r); |f|^2 - r^2 would lose all of r^2 once
+ * |f| is ~1e8 r.
+ */
 static double seg_circle(const double *P, const double *Q, const double *A, double r, double tmin)
 {
     double dx = Q[0] - P[0], dy = Q[1] - P[1];
     double fx = P[0] - A[0], fy = P[1] - A[1];
     double a = dx * dx + dy * dy;
     if (a == 0.0) return -1.0;                     /* repeated point: no segment */
-    double b = fx * dx + fy * dy;
-    double c = (fx * fx + fy * fy) - r * r;
-    double disc = b * b - a * c;
+    double t0 = -(fx * dx + fy * dy) / a;
+    double cr = fx * dy - fy * dx;                 /* |f x d| = distance(A, line) |d| */
+    double disc = r * r - cr * (cr / a);
     if (disc < 0.0) return -1.0;
-    /* stable roots of a t^2 + 2 b t + c = 0 */
-    double qq = -(b + copysign(sqrt(disc), b));
-    double t1, t2;
-    if (qq == 0.0) { t1 = t2 = 0.0; }
-    else { t1 = qq / a; t2 = c / qq; }
-    double hi = fmax(t1, t2), lo = fmin(t1, t2);
-    double cand[2] = {hi, lo};
+    double del = sqrt(disc / a);
+    double cand[2] = {t0 + del, t0 - del};
     for (int i = 0; i < 2; i++) {
         double t = cand[i];
         /* one Newton step on g(t) = |f + t d|^2 - r^2 so |X - A| = r to rounding */
@@ -344,35 +363,46 @@ void el_resample_free(el_resample_result *res)
 int el_resample_equilateral(const double *xy, size_t n, double r, el_resample_result *out)
 {
     if (!xy || !out || n < 2 || !isfinite(r) || !(r > 0.0)) return EL_EINVAL;
-    if (n > SIZE_MAX / (64 * sizeof(double))) return EL_ENOMEM;
+    if (el__too_many(n, 16, sizeof(double))) return EL_EINVAL;   /* the segment tree: 16 n */
     if (el__all_finite(xy, 2 * n) != EL_OK) return EL_EINVAL;
 
     size_t nseg = n - 1;
-    double *p = malloc(2 * n * sizeof *p);
-    double *cum = malloc(n * sizeof *cum);
-    double *box = malloc(4 * 4 * nseg * sizeof *box);
+    double *p = el__alloc(n, 2, sizeof *p);
+    double *cum = el__alloc(n, 1, sizeof *cum);
+    double *box = el__alloc(nseg, 16, sizeof *box);
     double *vxy = NULL, *vs = NULL;
     int st = EL_OK;
     if (!p || !cum || !box) { st = EL_ENOMEM; goto done; }
 
     /* A_1 is the left end: the end point with the smaller x' (seed 000 §5.3) */
     int reversed = xy[2 * (n - 1)] < xy[0];
+    cum[0] = 0.0;
+    for (size_t k = 1; k < n; k++) {
+        size_t a = reversed ? n - k : k - 1, b = reversed ? n - 1 - k : k;
+        cum[k] = cum[k - 1] + hypot(xy[2 * b] - xy[2 * a], xy[2 * b + 1] - xy[2 * a + 1]);
+    }
+    const double length = cum[n - 1];
+    if (!isfinite(length)) { st = EL_EDOM; goto done; }      /* beyond double's range */
+    if (!(length > 0.0)) { st = EL_ESINGULAR; goto done; }   /* all points equal */
+    /* bounded work: |A_{k+1} - A_k| = r and the positions increase by >= r */
+    if (length / r > (double)(EL_RESAMPLE_MAX_VERTICES - 1)) { st = EL_EDOM; goto done; }
+    /* the walk in units of 2^e ~ the length (exact scaling): r^2 and the squared
+     * distances neither overflow nor underflow for any input scale */
+    const int e = ilogb(length);
+    const double rs = ldexp(r, -e);
     for (size_t k = 0; k < n; k++) {
         size_t src = reversed ? n - 1 - k : k;
-        p[2 * k] = xy[2 * src];
-        p[2 * k + 1] = xy[2 * src + 1];
+        p[2 * k] = ldexp(xy[2 * src], -e);
+        p[2 * k + 1] = ldexp(xy[2 * src + 1], -e);
+        cum[k] = ldexp(cum[k], -e);
     }
-    cum[0] = 0.0;
-    for (size_t k = 1; k < n; k++)
-        cum[k] = cum[k - 1] + hypot(p[2 * k] - p[2 * k - 2], p[2 * k + 1] - p[2 * k - 1]);
-    if (!(cum[n - 1] > 0.0)) { st = EL_ESINGULAR; goto done; }   /* all points equal */
 
     seg_tree tr = {p, nseg, box};
     tree_build(&tr, 0, 0, nseg);
 
     size_t cap = 64, m = 0;
-    vxy = malloc(2 * cap * sizeof *vxy);
-    vs = malloc(cap * sizeof *vs);
+    vxy = el__alloc(cap, 2, sizeof *vxy);
+    vs = el__alloc(cap, 1, sizeof *vs);
     if (!vxy || !vs) { st = EL_ENOMEM; goto done; }
     vxy[0] = p[0];
     vxy[1] = p[1];
@@ -385,13 +415,13 @@ int el_resample_equilateral(const double *xy, size_t n, double r, el_resample_re
         double tn;
         const double A[2] = {vxy[2 * (m - 1)], vxy[2 * (m - 1) + 1]};
         /* A_{k+1}: at distance r, ahead of A_k, nearest the far end; none -> A_k is the stop point */
-        if (!tree_query(&tr, 0, 0, nseg, A, r, j, t, &jn, &tn)) break;
+        if (!tree_query(&tr, 0, 0, nseg, A, rs, j, t, &jn, &tn)) break;
+        if (m == EL_RESAMPLE_MAX_VERTICES) { st = EL_EDOM; goto done; }   /* (rounding only) */
         if (m == cap) {
-            if (cap > SIZE_MAX / (4 * sizeof(double))) { st = EL_ENOMEM; goto done; }
-            double *nx = realloc(vxy, 4 * cap * sizeof *vxy);
+            double *nx = el__realloc(vxy, 2 * cap, 2, sizeof *vxy);
             if (!nx) { st = EL_ENOMEM; goto done; }
             vxy = nx;
-            double *ns = realloc(vs, 2 * cap * sizeof *vs);
+            double *ns = el__realloc(vs, 2 * cap, 1, sizeof *vs);
             if (!ns) { st = EL_ENOMEM; goto done; }
             vs = ns;
             cap *= 2;
@@ -405,12 +435,24 @@ int el_resample_equilateral(const double *xy, size_t n, double r, el_resample_re
         t = tn;
     }
     if (m < 2) { st = EL_EINVAL; goto done; }   /* r larger than the curve */
+    /* never a silent truncation: the walk stops only where every point further
+     * along is within r of the stop point (else some would be at distance r), so
+     * the far end is (checked to 1e-6 r) */
+    {
+        const double *E = p + 2 * nseg, *S = vxy + 2 * (m - 1);
+        if (hypot(E[0] - S[0], E[1] - S[1]) > rs * (1.0 + 1e-6)) { st = EL_EDOM; goto done; }
+    }
+    for (size_t k = 0; k < m; k++) {   /* back to input units */
+        vxy[2 * k] = ldexp(vxy[2 * k], e);
+        vxy[2 * k + 1] = ldexp(vxy[2 * k + 1], e);
+        vs[k] = ldexp(vs[k], e);
+    }
 
     out->n = m;
     out->xy = vxy;
     out->s = vs;
     out->reversed = reversed;
-    out->remainder = fmax(cum[n - 1] - vs[m - 1], 0.0);
+    out->remainder = fmax(length - vs[m - 1], 0.0);
     vxy = vs = NULL;
 done:
     free(vxy);
@@ -497,7 +539,19 @@ int el_find_inflection(const double *xy, size_t n, int side, el_inflection *out)
             ext = fmax(ext, fabs(xy[2 * k + c] - xy[c]));
             big = fmax(big, fabs(xy[2 * k + c]));
         }
+    if (!isfinite(ext)) return EL_EDOM;   /* a spread beyond double's range */
     if (!(ext > 32.0 * DBL_EPSILON * big) || ext == 0.0) return EL_ESINGULAR;
+    if (ext > 1e150 || ext < 1e-150) {
+        /* the estimate is scale invariant: run it on a copy scaled by 2^-e (exact),
+         * where the squared distances it compares neither overflow nor underflow */
+        double *c = el__alloc(n, 2, sizeof *c);
+        if (!c) return EL_ENOMEM;
+        const int e = ilogb(ext);
+        for (size_t k = 0; k < 2 * n; k++) c[k] = ldexp(xy[k], -e);
+        int st = el_find_inflection(c, n, side, out);
+        free(c);
+        return st;
+    }
     const double tol = 64.0 * DBL_EPSILON * (big + ext);
     size_t last = n - 1;
     if (hypot(xy[2 * last] - xy[0], xy[2 * last + 1] - xy[1]) <= tol) return EL_EDOM;

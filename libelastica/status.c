@@ -3,6 +3,7 @@
 #include "internal.h"
 #include <gsl/gsl_errno.h>
 #include <pthread.h>
+#include <stdlib.h>
 
 const char *el_strerror(int status)
 {
@@ -35,4 +36,18 @@ int el__all_finite(const double *v, size_t n)
     for (size_t i = 0; i < n; i++)
         if (!isfinite(v[i])) return EL_EINVAL;
     return EL_OK;
+}
+
+void *el__alloc(size_t count, size_t per, size_t elem)
+{
+    size_t bytes;
+    if (el__size_mul(count, per, &bytes) || el__size_mul(bytes, elem, &bytes)) return NULL;
+    return malloc(bytes ? bytes : 1);
+}
+
+void *el__realloc(void *p, size_t count, size_t per, size_t elem)
+{
+    size_t bytes;
+    if (el__size_mul(count, per, &bytes) || el__size_mul(bytes, elem, &bytes)) return NULL;
+    return realloc(p, bytes ? bytes : 1);
 }

@@ -8,9 +8,13 @@ or the system loader (pkg-config install).
 """
 from __future__ import annotations
 
+import decimal
+import math
+import numbers
 import os
 import re
 from pathlib import Path
+from typing import Optional
 
 import numpy as np
 from cffi import FFI
@@ -85,20 +89,128 @@ def check(status: int, what: str = "") -> None:
         raise _ERRORS.get(status, ElasticaError)(status, f"{what}: {msg}" if what else msg)
 
 
-def as_points(a, name: str = "points", dim: int = 2) -> np.ndarray:
-    """A C-contiguous float64 (n, dim) array (no copy when it already is one)."""
-    arr = np.ascontiguousarray(a, dtype=np.float64)
-    if arr.ndim != 2 or arr.shape[1] != dim:
-        raise ValueError(f"{name} must have shape (n, {dim}), got {arr.shape}")
+# ------------------------------------------------------------------ input validation
+#
+# Every public entry converts its arguments with these helpers, so that wrong
+# types and out-of-range values raise ValueError (never TypeError, OverflowError
+# or AttributeError from deep inside, never a silent truncation of complex
+# numbers or a C integer that wraps).
+
+INT_MIN, INT_MAX = -2 ** 31, 2 ** 31 - 1
+SIZE_MAX = 2 ** 64 - 1
+
+
+def _is_real(v) -> bool:
+    """A real number (Fraction and Decimal included), not a bool."""
+    return isinstance(v, (numbers.Real, decimal.Decimal)) and not isinstance(v, (bool, np.bool_))
+
+
+def as_real_array(a, name: str = "values") -> np.ndarray:
+    """A C-contiguous float64 array of ``a`` (no copy when it already is one).
+
+    Accepted: real numbers (float32/64, longdouble, signed and unsigned ints),
+    nested lists of them, and object arrays of real numbers (Fraction, Decimal).
+    Refused with ValueError: complex (the imaginary part would be dropped),
+    datetime/timedelta, float16 (3 significant digits), booleans, strings,
+    None and other objects."""
+    if isinstance(a, np.ndarray):
+        arr = a
+    else:
+        try:
+            arr = np.asarray(a)
+        except (TypeError, ValueError) as exc:   # ragged nesting
+            raise ValueError(f"{name} must be an array of real numbers ({exc})") from None
+    kind = arr.dtype.kind
+    if kind == "c":
+        raise ValueError(f"{name} must be real; complex values are refused (the imaginary "
+                         "part would be dropped)")
+    if kind in "mM":
+        raise ValueError(f"{name} must be real numbers, not datetime/timedelta values")
+    if kind == "f" and arr.dtype.itemsize < 4:
+        raise ValueError(f"{name}: float16 keeps about 3 digits; convert to float64 first")
+    if kind == "O":   # (astype would turn None into NaN and complex into an error)
+        if not all(_is_real(v) for v in arr.flat):
+            raise ValueError(f"{name} must hold real numbers only")
+        try:
+            arr = arr.astype(np.float64)
+        except (TypeError, ValueError, OverflowError):
+            raise ValueError(f"{name} must hold real numbers only") from None
+    elif kind not in "fiu":
+        raise ValueError(f"{name} must be real numbers, got dtype {arr.dtype}")
+    return np.ascontiguousarray(arr, dtype=np.float64)
+
+
+def as_points(a, name: str = "points", dim: Optional[int] = 2) -> np.ndarray:
+    """A C-contiguous float64 (n, dim) array (no copy when it already is one);
+    dim None: any number of columns >= 1."""
+    arr = as_real_array(a, name)
+    if arr.ndim != 2 or (dim is not None and arr.shape[1] != dim) or arr.shape[1] < 1:
+        want = f"(n, {dim})" if dim is not None else "(n, dim)"
+        raise ValueError(f"{name} must have shape {want}, got {arr.shape}")
     return arr
 
 
 def as_vector(a, name: str = "values") -> np.ndarray:
     """A C-contiguous float64 1-D array (a scalar becomes length 1)."""
-    arr = np.ascontiguousarray(np.atleast_1d(a), dtype=np.float64)
+    arr = as_real_array(a, name)
+    if arr.ndim == 0:
+        arr = arr.reshape(1)
     if arr.ndim != 1:
         raise ValueError(f"{name} must be one-dimensional, got shape {arr.shape}")
     return arr
+
+
+def as_real(x, name: str, *, finite: bool = True) -> float:
+    """A Python float from a real scalar (int, float, numpy real, Fraction, Decimal,
+    a 0-d array); ValueError for complex, bool, strings, None, arrays of size > 1,
+    and (finite=True) NaN/inf or an int too large for a double."""
+    if type(x) is float:   # the common case, fast
+        if finite and not math.isfinite(x):
+            raise ValueError(f"{name}: invalid argument: must be finite, got {x!r}")
+        return x
+    if isinstance(x, np.ndarray):
+        if x.ndim != 0:
+            raise ValueError(f"{name} must be a number, got an array of shape {x.shape}")
+        x = x[()]
+    if isinstance(x, (bool, np.bool_, str, bytes)) or x is None:
+        raise ValueError(f"{name} must be a real number, got {x!r}")
+    if isinstance(x, numbers.Complex) and not isinstance(x, numbers.Real):
+        raise ValueError(f"{name} must be real, got the complex {x!r}")
+    try:
+        v = float(x)
+    except (TypeError, ValueError, OverflowError):
+        raise ValueError(f"{name} must be a real number, got {x!r}") from None
+    if finite and not math.isfinite(v):
+        raise ValueError(f"{name}: invalid argument: must be finite, got {x!r}")
+    return v
+
+
+def as_int(x, name: str, lo: Optional[int] = INT_MIN, hi: Optional[int] = INT_MAX) -> int:
+    """A Python int from an integral number (int, numpy integer, or a float with
+    an integral value) in [lo, hi] (default: C int's range; None: unbounded);
+    ValueError otherwise (bool, fractions, strings, out of range)."""
+    if isinstance(x, np.ndarray) and x.ndim == 0:
+        x = x[()]
+    if isinstance(x, (bool, np.bool_)):
+        raise ValueError(f"{name} must be an integer, got {x!r}")
+    if type(x) is int and (lo is None or x >= lo) and (hi is None or x <= hi):
+        return x   # the common case, fast
+    if isinstance(x, (int, np.integer)):
+        v = int(x)
+    elif isinstance(x, (float, np.floating)) and math.isfinite(x) and float(x).is_integer():
+        v = int(x)
+    else:
+        raise ValueError(f"{name} must be an integer, got {x!r}")
+    if (lo is not None and v < lo) or (hi is not None and v > hi):
+        lo_s = "-inf" if lo is None else str(lo)
+        hi_s = "inf" if hi is None else str(hi)
+        raise ValueError(f"{name} must be in [{lo_s}, {hi_s}], got {v}")
+    return v
+
+
+def as_size(x, name: str, lo: int = 0, hi: int = SIZE_MAX) -> int:
+    """as_int for a C size_t (a count): in [lo, hi]."""
+    return as_int(x, name, lo, hi)
 
 
 def dptr(arr: np.ndarray):

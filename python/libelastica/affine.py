@@ -18,7 +18,8 @@ from typing import Optional, Sequence, Union
 
 import numpy as np
 
-from ._ffi import as_points, bspline_from_c, check, dptr, ffi, lib
+from ._ffi import (DomainError, as_int, as_points, as_real, as_real_array, as_size, as_vector,
+                   bspline_from_c, check, dptr, ffi, lib)
 
 __all__ = ["affine_coords", "affine_length", "affine_curvature", "osculating_conics",
            "OsculatingConics", "chaikin", "lane_riesenfeld", "affine_elements",
@@ -81,7 +82,7 @@ class OsculatingConics:
 
 def osculating_conics(polyline, kind: str = "middle") -> OsculatingConics:
     """The outer, inner or middle osculating conics of an affine arc-length polyline."""
-    if kind not in _KINDS:
+    if not isinstance(kind, str) or kind not in _KINDS:
         raise ValueError(f"kind must be one of {sorted(_KINDS)}, got {kind!r}")
     x = _pts(polyline, 4)
     m = len(x) - 3
@@ -97,7 +98,11 @@ def osculating_conics(polyline, kind: str = "middle") -> OsculatingConics:
 def chaikin(polyline, iterations: int = 1) -> np.ndarray:
     """Chaikin subdivision (§2.5), `iterations` times; keeps L2, maps A to A/8."""
     x = _pts(polyline, 2)
-    for _ in range(int(iterations)):
+    iterations = as_int(iterations, "chaikin: iterations", 0)
+    if (len(x) - 1) * 2.0 ** iterations > 1e8:
+        raise ValueError(f"chaikin: {iterations} iterations of {len(x)} points would make more "
+                         "than 1e8 points")
+    for _ in range(iterations):
         y = np.empty((2 * (len(x) - 1), 2))
         check(lib.el_affine_chaikin(len(x), dptr(x), dptr(y)), "chaikin")
         x = y
@@ -107,11 +112,10 @@ def chaikin(polyline, iterations: int = 1) -> np.ndarray:
 def lane_riesenfeld(points, degree: int) -> np.ndarray:
     """Degree-n Lane–Riesenfeld refinement mu^n(x0,x0,x1,x1,...) of points (N+1, dim)
     (Theorem 5); returns 2(N+1) - degree points."""
-    x = np.ascontiguousarray(points, dtype=np.float64)
-    if x.ndim != 2 or x.shape[1] < 1:
-        raise ValueError("points must have shape (n, dim)")
+    x = as_points(points, "points", None)
     dim = x.shape[1]
-    if degree < 1 or 2 * len(x) <= degree:
+    degree = as_int(degree, "lane_riesenfeld: degree", 1)
+    if 2 * len(x) <= degree:
         raise ValueError("need degree >= 1 and 2 * len(points) > degree")
     y = np.empty((2 * len(x) - degree, dim))
     check(lib.el_affine_lane_riesenfeld(dim, int(degree), len(x), dptr(x), dptr(y)), "lane_riesenfeld")
@@ -121,8 +125,8 @@ def lane_riesenfeld(points, degree: int) -> np.ndarray:
 def affine_elements(points) -> tuple[np.ndarray, float]:
     """Affine length elements in R^n (Definition 3): D_i = det(dx_i..dx_{i+n-1}) and the
     total affine length L_n = sum sign(D_i)|D_i|^(2/(n(n+1))) (8). points: (N+1, n), n >= 2."""
-    x = np.ascontiguousarray(points, dtype=np.float64)
-    if x.ndim != 2 or x.shape[1] < 2 or len(x) < x.shape[1] + 1:
+    x = as_points(points, "points", None)
+    if x.shape[1] < 2 or len(x) < x.shape[1] + 1:
         raise ValueError("points must have shape (N+1, n) with n >= 2 and N >= n")
     n = x.shape[1]
     D = np.empty(len(x) - n)
@@ -136,10 +140,8 @@ def uniform_bspline(points, degree: Optional[int] = None, clamped: bool = True):
     control polygon `points` (N+1, dim). clamped=True: the same curve as clamped
     B-spline (knots 0..N+1-degree, end multiplicities degree+1); clamped=False: poles
     = points, knots 0..N+degree+1 (all simple). Returns a BSpline."""
-    x = np.ascontiguousarray(points, dtype=np.float64)
-    if x.ndim != 2:
-        raise ValueError("points must have shape (n, dim)")
-    deg = x.shape[1] if degree is None else int(degree)
+    x = as_points(points, "points", None)
+    deg = x.shape[1] if degree is None else as_int(degree, "uniform_bspline: degree", 1)
     b = ffi.new("el_bspline *")
     check(lib.el_affine_uniform_bspline(x.shape[1], deg, len(x), dptr(x), int(bool(clamped)), b),
           "uniform_bspline")
@@ -172,22 +174,23 @@ def affine_curvature_exact(kappa, dkappa, ddkappa) -> np.ndarray:
     """Smooth affine curvature of a planar curve from its Euclidean curvature and its
     arc-length derivatives: k = kappa^(4/3) - (5/9) kappa^(-8/3) kappa'^2
     + (1/3) kappa^(-5/3) kappa'' (real cube roots; needs kappa != 0)."""
-    kappa, dkappa, ddkappa = (np.asarray(a, dtype=np.float64) for a in (kappa, dkappa, ddkappa))
+    kappa, dkappa, ddkappa = (as_real_array(a, n) for a, n in
+                              ((kappa, "kappa"), (dkappa, "dkappa"), (ddkappa, "ddkappa")))
     c = np.cbrt(kappa)
     return c ** 4 - (5.0 / 9.0) * dkappa ** 2 / c ** 8 + ddkappa / (3.0 * c ** 5)
 
 
 def _jacobi(u: float, k: float):
     val = ffi.new("el_jacobi *")
-    check(lib.el_jacobi_eval(float(u), float(k), val, ffi.NULL, ffi.NULL), "jacobi")
+    check(lib.el_jacobi_eval(as_real(u, "u"), as_real(k, "k"), val, ffi.NULL, ffi.NULL), "jacobi")
     return val.sn, val.cn, val.dn
 
 
 def elastica_affine_curvature(curve, s) -> np.ndarray:
     """Exact affine curvature of a SmoothElastica at arc lengths s, from
     kappa = 2k sqrt(mu) cn u, kappa' = -2k mu sn dn, kappa'' = -2k mu^(3/2) cn (dn^2 - k^2 sn^2)."""
-    s = np.atleast_1d(np.asarray(s, dtype=np.float64))
-    k, mu = curve.k, curve.mu
+    s = as_vector(s, "s")
+    k, mu = as_real(curve.k, "curve.k"), as_real(curve.mu, "curve.mu")
     rm = math.sqrt(mu)
     out = np.empty((3, len(s)))
     for i, si in enumerate(s):
@@ -209,7 +212,7 @@ def _ellipk(k: float) -> float:
 def elastica_inflections(curve, margin: float = 1e-9) -> np.ndarray:
     """Arc lengths of the inflections of a SmoothElastica in (0, length): cn(u;k) = 0,
     u = sqrt(mu) s + q = (2j+1) K(k) for 0 < k < 1; none for k >= 1 or k = 0."""
-    k = curve.k
+    k = as_real(getattr(curve, "k", None), "elastica_inflections: curve.k")
     if not 0.0 < k < 1.0:
         return np.empty(0)
     K = _ellipk(k)
@@ -280,13 +283,14 @@ def _run(samples: np.ndarray, tangents: Optional[np.ndarray], infl: Sequence[int
     opt = ffi.new("el_affine_options *")
     lib.el_affine_options_defaults(opt)
     opt.split_inflections = int(bool(split))
-    opt.skip = int(skip)
-    opt.skip_frac = float(skip_frac)
+    opt.skip = as_int(skip, "affine_polyline: skip", 0)
+    opt.skip_frac = as_real(skip_frac, "affine_polyline: skip_frac")
     opt.fit_ends = int(bool(fit_ends))
     opt.optimise = int(bool(optimise))
-    opt.max_iter = int(max_iter)
+    opt.max_iter = as_int(max_iter, "affine_polyline: max_iter", 0)
     res = ffi.new("el_affine_result *")
-    infl_arr = ffi.new("size_t[]", [int(i) for i in infl]) if len(infl) else ffi.NULL
+    infl_arr = (ffi.new("size_t[]", [as_size(i, "affine_polyline: inflections") for i in infl])
+                if len(infl) else ffi.NULL)
     tan = dptr(tangents) if tangents is not None else ffi.NULL
     check(lib.el_affine_polyline(len(samples), dptr(samples), tan, len(infl), infl_arr, int(n), opt,
                                  res),
@@ -329,19 +333,23 @@ def affine_polyline(curve_or_points, n: int, samples_per_vertex: int = 20,
     (N+1, 2): its deviation is then O(h^4) instead of O(h^3), which the k_i A^(-2/3) of
     fine polylines need (their error grows like h^3/H^4 otherwise). Raises ValueError /
     DomainError (inflection with split_inflections=False, n too small) on bad input."""
-    n = int(n)
-    if n < 3:
-        raise ValueError(f"n must be >= 3, got {n}")
+    n = as_size(n, "affine_polyline: n", 3)
+    if n > lib.EL_AFFINE_MAX_EDGES:   # bounded work, and before sampling n points
+        raise DomainError(lib.EL_EDOM, f"affine_polyline: n = {n} edges asked; at most "
+                          f"{lib.EL_AFFINE_MAX_EDGES} (EL_AFFINE_MAX_EDGES) are built")
+    samples_per_vertex = as_int(samples_per_vertex, "affine_polyline: samples_per_vertex", 1)
+    if samples_per_vertex * n > 10 ** 8:
+        raise ValueError(f"affine_polyline: {samples_per_vertex} samples per vertex for {n} "
+                         "vertices are more than 1e8 samples")
     if hasattr(curve_or_points, "curvature") and hasattr(curve_or_points, "length"):
         c = curve_or_points
         if not c.length > 0:
             raise ValueError("the elastica has zero length")
         infl_s = elastica_inflections(c)
         if len(infl_s) and not split_inflections:
-            from ._ffi import DomainError
             raise DomainError(lib.EL_EDOM, "affine_polyline: the elastica has an inflection")
         bounds = np.concatenate([[0.0], infl_s, [c.length]])
-        total = max(int(samples_per_vertex) * n, 4 * (len(bounds) - 1))
+        total = max(samples_per_vertex * n, 4 * (len(bounds) - 1))
         lens = np.diff(bounds)
         counts = np.maximum(3, np.round(total * lens / c.length).astype(int))
         s_parts, idx = [], []
@@ -374,7 +382,8 @@ def affine_polyline(curve_or_points, n: int, samples_per_vertex: int = 20,
         tan = as_points(tangents, "tangents")
         if len(tan) != len(samples):
             raise ValueError("tangents must have one row per sample")
-    pts, t, ps, A, psi, ip, S = _run(samples, tan, list(inflections or []), n, split_inflections,
+    infl = [] if inflections is None else list(as_vector(inflections, "inflections"))
+    pts, t, ps, A, psi, ip, S = _run(samples, tan, infl, n, split_inflections,
                                      skip, max_iter, skip_frac, fit_ends, optimise)
     return AffinePolyline(pts, t, None, ps, A, psi, ip, S)
 

@@ -26,7 +26,8 @@ from typing import Optional
 
 import numpy as np
 
-from ._ffi import as_points, as_vector, bspline_from_c, check, dptr, ffi, lib
+from ._ffi import (SingularError, as_points, as_real, as_vector, bspline_from_c, check, dptr, ffi,
+                   lib)
 
 __all__ = ["EllipticBlend", "MQBlend", "BlendCurve", "blend_curve", "eck_d", "eck_omega"]
 
@@ -72,8 +73,35 @@ class _Blend:
 
     @property
     def condition(self) -> float:
-        """1-norm condition number of the 8x8 system (2.17) that defined the basis."""
+        """1-norm condition number of the 8x8 system (2.17) that defined the basis
+        (elliptic bases above ``EL_BLEND_COND_MAX`` = 1000 are refused: K(k) near 2)."""
         return float(self._b.cond)
+
+    @property
+    def basis_min(self) -> float:
+        """The smallest value of any blending function on [0, 1] (<= 0; negative: the
+        curve can leave the convex hull of its control points)."""
+        return float(self._b.basis_min)
+
+    @property
+    def convex_hull(self) -> bool:
+        """Whether every blending function is >= 0 on [0, 1], so that each segment stays
+        inside the convex hull of its control points."""
+        return bool(self._b.convex_hull)
+
+    @property
+    def lebesgue(self) -> float:
+        """max over t of sum_i |h_i(t)| (1 with the convex hull): a curve point moves by
+        at most this times the largest move of a control point."""
+        return float(self._b.lebesgue)
+
+    def warnings(self) -> list:
+        """Plain-language warnings about this basis (empty when the convex hull holds)."""
+        if self.convex_hull:
+            return []
+        return [f"the basis is negative (down to {self.basis_min:.3g}): the curve can leave "
+                f"the convex hull of its control points, moving up to {self.lebesgue:.3g} "
+                f"times as far as a control point moves (condition {self.condition:.3g})"]
 
     def span(self, t=None, derivative: int = 0) -> np.ndarray:
         """The span functions ``f_j(t)`` (or their 1st/2nd t-derivative), shape (n, 4)."""
@@ -95,7 +123,8 @@ class _Blend:
 
     @staticmethod
     def _order(derivative: int) -> int:
-        if derivative not in (0, 1, 2):
+        if isinstance(derivative, (bool, np.bool_)) or not isinstance(derivative, (int, np.integer)) \
+                or derivative not in (0, 1, 2):
             raise ValueError(f"derivative must be 0, 1 or 2, got {derivative}")
         return derivative
 
@@ -123,7 +152,7 @@ class _Blend:
         chord-length parameters ``t = 0, t_1, t_2, 1``. Coincident consecutive
         points raise :class:`SingularError`.
         """
-        if mode not in _PICK:
+        if not isinstance(mode, str) or mode not in _PICK:
             raise ValueError(f"mode must be one of {sorted(_PICK)}, got {mode!r}")
         pts = _four(points, "points")
         q = np.empty((4, 2))
@@ -169,7 +198,7 @@ class _Blend:
         NotConvergedError when 256 spans per segment do not reach tol."""
         q, nseg = _composite(q)
         b = ffi.new("el_bspline *")
-        st = lib.el_blend_to_bspline(self._b, nseg, dptr(q), float(tol), b)
+        st = lib.el_blend_to_bspline(self._b, nseg, dptr(q), as_real(tol, "to_bspline: tol"), b)
         if st != lib.EL_OK:
             lib.el_bspline_free(b)
             check(st, "to_bspline")
@@ -192,12 +221,19 @@ class EllipticBlend(_Blend):
         if (k is None) == (m is None):
             raise ValueError("EllipticBlend: give exactly one of k (modulus) and m (= k^2)")
         if m is not None:
-            m = float(m)
-            if not np.isfinite(m) or m < 0.0:
-                raise ValueError(f"EllipticBlend: m must be finite and >= 0, got {m}")
+            m = as_real(m, "EllipticBlend: m")
+            if m < 0.0:
+                raise ValueError(f"EllipticBlend: m must be >= 0, got {m}")
             k = np.sqrt(m)
+        k = as_real(k, "EllipticBlend: k")
         self._b = ffi.new("el_blend_basis *")
-        check(lib.el_blend_init_elliptic(self._b, float(k), float(d)), "EllipticBlend")
+        st = lib.el_blend_init_elliptic(self._b, k, as_real(d, "EllipticBlend: d"))
+        if st == lib.EL_ESINGULAR:
+            raise SingularError(st, f"EllipticBlend: k = {k:.6g} (m = {k * k:.6g}) lies in the "
+                                f"singular neighbourhood of K(k) = 2, where the basis is not "
+                                f"determined (condition > {lib.EL_BLEND_COND_MAX}): choose k "
+                                "outside (0.79932, 0.80544), m outside (0.63891, 0.64874)")
+        check(st, "EllipticBlend")
 
     @property
     def k(self) -> float:
@@ -227,7 +263,8 @@ class MQBlend(_Blend):
         if d is None:
             d = eck_d(c)
         self._b = ffi.new("el_blend_basis *")
-        check(lib.el_blend_init_mq(self._b, float(c), float(d)), "MQBlend")
+        check(lib.el_blend_init_mq(self._b, as_real(c, "MQBlend: c"), as_real(d, "MQBlend: d")),
+              "MQBlend")
 
     @property
     def c(self) -> float:
@@ -240,7 +277,7 @@ class MQBlend(_Blend):
 def eck_d(c: float) -> float:
     """Eck's end-derivative ``d = 1/alpha(c)`` (2.5)."""
     out = ffi.new("double *")
-    check(lib.el_blend_eck_d(float(c), out), "eck_d")
+    check(lib.el_blend_eck_d(as_real(c, "eck_d: c"), out), "eck_d")
     return float(out[0])
 
 
@@ -248,7 +285,8 @@ def eck_omega(c: float, t=None) -> np.ndarray:
     """Eck's MQ blending functions Omega_0..Omega_3 (2.4) in closed form, shape (n, 4)."""
     t = _t(t)
     out = np.empty((len(t), 4))
-    check(lib.el_blend_eck_omega(float(c), len(t), dptr(t), dptr(out)), "eck_omega")
+    check(lib.el_blend_eck_omega(as_real(c, "eck_omega: c"), len(t), dptr(t), dptr(out)),
+          "eck_omega")
     return out
 
 
@@ -259,6 +297,9 @@ class BlendCurve:
     q: np.ndarray
 
     def __post_init__(self):
+        if not isinstance(self.basis, _Blend):
+            raise ValueError(f"BlendCurve: basis must be an EllipticBlend or MQBlend, got "
+                             f"{type(self.basis).__name__}")
         self.q, _ = _composite(self.q)
 
     @property
@@ -288,7 +329,7 @@ def blend_curve(points, k: Optional[float] = None, d: float = 2.0, mode: str = "
         k = 0.5
     basis = EllipticBlend(k, d, m=m)
     pts = as_points(points, "points")
-    if mode not in _PICK:
+    if not isinstance(mode, str) or mode not in _PICK:
         raise ValueError(f"mode must be one of {sorted(_PICK)}, got {mode!r}")
     if len(pts) == 4:
         return BlendCurve(basis, basis.from_points(pts, mode))

@@ -6,7 +6,8 @@ from typing import Any
 
 import numpy as np
 
-from ._ffi import as_points, as_vector, bspline_from_c, check, dptr, ffi, lib
+from ._ffi import (INT_MAX, DomainError, as_int, as_points, as_real, as_vector, bspline_from_c,
+                   check, dptr, ffi, lib)
 
 
 class BSpline:
@@ -24,19 +25,16 @@ class BSpline:
     """
 
     def __init__(self, degree: int, poles, knots, mults, max_deviation: float = -1.0):
-        if int(degree) != degree:
-            raise ValueError(f"BSpline: degree must be an integer, got {degree}")
-        self.degree = int(degree)
-        poles = np.ascontiguousarray(poles, dtype=np.float64)
-        if poles.ndim != 2 or poles.shape[0] < 1 or poles.shape[1] < 1:
-            raise ValueError(f"BSpline: poles must have shape (n, dim), got {poles.shape}")
-        self.poles = poles
-        self.knots = as_vector(knots, "knots").copy()
-        m = np.atleast_1d(np.asarray(mults))
-        if m.ndim != 1 or m.shape != self.knots.shape or np.any(m != np.round(m)):
+        self.degree = as_int(degree, "BSpline: degree", 1)
+        self.poles = as_points(poles, "BSpline: poles", None)
+        if self.poles.shape[1] > INT_MAX:
+            raise ValueError("BSpline: too many coordinates per pole")
+        self.knots = as_vector(knots, "BSpline: knots").copy()
+        m = as_vector(mults, "BSpline: mults")
+        if m.shape != self.knots.shape or np.any(m != np.round(m)) or np.any(np.abs(m) > INT_MAX):
             raise ValueError("BSpline: mults must be integers, one per knot")
         self.mults = m.astype(np.int64)
-        self.max_deviation = float(max_deviation)
+        self.max_deviation = as_real(max_deviation, "BSpline: max_deviation", finite=False)
         self._c()  # validates (EL_EINVAL -> ElasticaError)
 
     # -- C view -------------------------------------------------------------
@@ -77,8 +75,7 @@ class BSpline:
     # -- evaluation -----------------------------------------------------------
     def derivative(self, t, order: int = 1) -> np.ndarray:
         """Derivative of the given order (0 = points) at parameters t, shape (len(t), dim)."""
-        if int(order) != order or order < 0:
-            raise ValueError(f"BSpline.derivative: order must be an integer >= 0, got {order}")
+        order = as_int(order, "BSpline.derivative: order", 0)
         t = as_vector(t, "t")
         out = np.empty((len(t), self.dim))
         check(lib.el_bspline_derivative(self._c(), int(order), len(t), dptr(t), dptr(out)),
@@ -141,11 +138,36 @@ def smooth_to_bspline(curve, tol: float = 1e-6, degree: int = 3) -> BSpline:
     """Clamped degree-3..7 B-spline within ``tol`` (absolute, coordinate units) of a
     SmoothElastica everywhere, parametrised by its arc length; the certified
     distance is ``max_deviation``."""
-    if int(degree) != degree:
-        raise ValueError(f"to_bspline: degree must be an integer, got {degree}")
+    degree = as_int(degree, "to_bspline: degree")
+    tol = as_real(tol, "to_bspline: tol")
     p = ffi.new("el_smooth_params *")
     for name in ("x0", "y0", "phi", "mu", "k", "q", "length"):
-        setattr(p, name, float(getattr(curve, name)))
+        if not hasattr(curve, name):
+            raise ValueError(f"to_bspline: a SmoothElastica is needed, got {type(curve).__name__}")
+        setattr(p, name, as_real(getattr(curve, name), f"to_bspline: {name}", finite=False))
     b = ffi.new("el_bspline *")
-    check(lib.el_smooth_to_bspline(p, float(tol), int(degree), b), "to_bspline")
+    st = lib.el_smooth_to_bspline(p, tol, degree, b)
+    if st == lib.EL_EDOM:
+        raise DomainError(st, "to_bspline: " + _beyond_limits(p, tol))
+    if st == lib.EL_EMAXITER:   # the best spline is in b: free it before raising
+        lib.el_bspline_free(b)
+    check(st, "to_bspline")
     return bspline_from_c(b)
+
+
+def _beyond_limits(p, tol: float) -> str:
+    """What el_smooth_to_bspline's EL_EDOM means for this curve (its header's rules):
+    what was asked and what is possible."""
+    floor = 1e-14 * (p.length + abs(p.x0) + abs(p.y0) + abs(p.q) / np.sqrt(p.mu))
+    turn = 2.0 * abs(p.k) * np.sqrt(p.mu) * p.length
+    limit = lib.EL_BSPLINE_MAX_POLES
+    if tol < floor:
+        return (f"tol = {tol:.3g} is below what double precision resolves for this curve; "
+                f"the smallest possible is 1e-14 (length + |x0| + |y0| + |q|/sqrt(mu)) = "
+                f"{floor:.3g}")
+    if turn > limit:
+        return (f"the curve turns through up to {turn:.3g} rad (2 |k| sqrt(mu) length); "
+                f"at most {limit} rad can be followed with {limit} poles: split it into "
+                f"pieces of at most {limit / (2 * abs(p.k) * np.sqrt(p.mu)):.4g} in length")
+    return (f"tol = {tol:.3g} needs more than {limit} poles for this curve (the limit, "
+            f"EL_BSPLINE_MAX_POLES): raise tol or split the curve")

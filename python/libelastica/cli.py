@@ -10,6 +10,7 @@ from __future__ import annotations
 import argparse
 import os
 import sys
+import tempfile
 from pathlib import Path
 from typing import Any, Dict, List, Optional, Sequence
 
@@ -123,18 +124,106 @@ def _converged(res: Any) -> bool:
 
 def _out_path(spec: Optional[str], source: str, ext: str, batch: bool) -> Optional[Path]:
     """Output path for one input: spec itself, spec with {stem} filled in, or (batch,
-    no {stem}) a directory spec/ holding <stem><ext>."""
+    no {stem}) a directory spec/ holding <stem><ext>. Nothing is created here:
+    :class:`_Outputs` makes the directories when the file is written."""
     if not spec:
         return None
     stem = Path(source).stem
     if "{stem}" in spec:
-        path = Path(spec.replace("{stem}", stem))
-    elif batch:
-        path = Path(spec) / f"{stem}{ext}"
-    else:
-        path = Path(spec)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    return path
+        return Path(spec.replace("{stem}", stem))
+    if batch:
+        return Path(spec) / f"{stem}{ext}"
+    return Path(spec)
+
+
+class _Outputs:
+    """The one place the command writes files (every subcommand goes through it).
+
+    - An output that is one of the command's inputs (the same file: by os.path.samefile,
+      so ``./a.csv``, links and ``{stem}`` patterns are caught) is refused before
+      anything is written (InputError: exit 2); so is a path given twice.
+    - Each output is written to a temporary next to it (same suffix, so the writers
+      still choose the format by it); :meth:`commit` renames them all into place
+      only when every one was written, :meth:`abort` removes them (and the
+      directories made for them): a failing output leaves nothing behind.
+
+    A subcommand names its input files ``file`` / ``files`` (or sets ``args.inputs``)
+    and writes with ``path = args.outputs.path(target)`` then ``write_x(..., path)``.
+    """
+
+    def __init__(self, inputs: Sequence[str]):
+        self._inputs = [Path(p) for p in inputs if p and p != "-" and Path(p).exists()]
+        self._staged: List[tuple] = []      # (temporary, final)
+        self._finals: set = set()
+        self._made: List[Path] = []         # directories created, deepest last
+
+    def check(self, target) -> Path:
+        """Refuse target when it is an input or already an output of this command."""
+        final = Path(target)
+        if final.exists():
+            for inp in self._inputs:
+                try:
+                    same = os.path.samefile(final, inp)
+                except OSError:
+                    same = False
+                if same:
+                    raise InputError(f"{final}: refusing to overwrite the input file {inp}")
+        key = os.path.abspath(final)
+        if key in self._finals:
+            raise InputError(f"{final}: the same output path is given twice")
+        return final
+
+    def path(self, target) -> Path:
+        """A temporary to write ``target``'s content to (renamed at commit)."""
+        final = self.check(target)
+        self._finals.add(os.path.abspath(final))
+        missing = []
+        parent = final.parent
+        while not parent.exists():
+            missing.append(parent)
+            parent = parent.parent
+        for d in reversed(missing):
+            d.mkdir()
+            self._made.append(d)
+        try:
+            fd, tmp = tempfile.mkstemp(prefix=f".{final.name}.", suffix=final.suffix or ".tmp",
+                                       dir=str(final.parent))
+        except OSError as exc:
+            raise InputError(f"{final}: cannot write there ({exc.strerror})") from None
+        os.close(fd)
+        self._staged.append((Path(tmp), final))
+        return Path(tmp)
+
+    def mark(self) -> int:
+        """A point to :meth:`rollback` to (a batch drops the outputs of a failed file)."""
+        return len(self._staged)
+
+    def rollback(self, mark: int) -> None:
+        for tmp, final in self._staged[mark:]:
+            self._finals.discard(os.path.abspath(final))
+            try:
+                tmp.unlink()
+            except OSError:
+                pass
+        del self._staged[mark:]
+
+    def commit(self) -> None:
+        for tmp, final in self._staged:
+            os.replace(tmp, final)
+        self._staged = []
+
+    def abort(self) -> None:
+        for tmp, _ in self._staged:
+            try:
+                tmp.unlink()
+            except OSError:
+                pass
+        for d in reversed(self._made):
+            try:
+                d.rmdir()
+            except OSError:
+                pass
+        self._staged, self._made = [], []
 
 
 class _Progress:
@@ -332,7 +421,7 @@ def _write_fit_outputs(path, args, batch, records, pictures, splines, points) ->
         batch and args.json.endswith(".json") and "{stem}" not in args.json) else None
     if jpath is not None:
         write_json(records[0] if len(records) == 1 else {"file": str(path), "sides": records},
-                   jpath)
+                   args.outputs.path(jpath))
     for spec, ext in ((args.svg, ".svg"), (args.png, ".png")):
         out = _out_path(spec, path, ext, batch)
         if out is None or not pictures:
@@ -367,9 +456,10 @@ def _write_fit_outputs(path, args, batch, records, pictures, splines, points) ->
                         g.color = "#9467bd"
                 pic.graphs += p.graphs
                 pic.params += [f"--- side {i + 1}"] + p.params
-        save_picture(pic, out)
+        save_picture(pic, args.outputs.path(out))
     if args.dxf and splines:
-        write_dxf_spline(splines, _out_path(args.dxf, path, ".dxf", batch), points=points)
+        write_dxf_spline(splines, args.outputs.path(_out_path(args.dxf, path, ".dxf", batch)),
+                         points=points)
 
 
 def _print_fit(rec: Dict[str, Any]) -> None:
@@ -397,8 +487,20 @@ def _print_fit(rec: Dict[str, Any]) -> None:
     print(f"status      {rec['status']}")
 
 
+OUTPUT_OPTIONS = (("json", ".json"), ("svg", ".svg"), ("png", ".png"), ("dxf", ".dxf"))
+
+
 def _check_outputs(args) -> None:
-    """Fail early (before any work) on outputs this installation cannot write."""
+    """Fail early (before any work) on outputs this installation cannot write, and on
+    an output that would replace an input (the same check again at writing)."""
+    files = list(getattr(args, "files", None) or [])
+    batch = len(files) > 1
+    for opt, ext in OUTPUT_OPTIONS:
+        spec = getattr(args, opt, None)
+        if not spec or spec == "-":
+            continue
+        for source in files or [spec]:
+            args.outputs.check(_out_path(spec, source, ext, batch))
     if getattr(args, "png", None):
         from .report import have_matplotlib
         if not have_matplotlib():
@@ -425,12 +527,15 @@ def cmd_fit(args) -> int:
     progress = _Progress(len(files), args.progress or sys.stderr.isatty())
     rows, all_recs, bad = [], [], 0
     for f in files:
+        mark = args.outputs.mark()
         try:
             recs = fit_file(f, args, batch=True)
         except NotConvergedError as exc:
+            args.outputs.rollback(mark)
             recs = [{"file": f, "model": args.model, "curve": None, "rms": None,
                      "max_error": None, "status": f"not converged: {exc}", "converged": False}]
         except (InputError, ValueError) as exc:
+            args.outputs.rollback(mark)
             bad += 1
             recs = [{"file": f, "model": args.model, "curve": None, "rms": None,
                      "max_error": None, "status": f"bad input: {exc}", "converged": False}]
@@ -441,7 +546,7 @@ def cmd_fit(args) -> int:
         all_recs += recs
         progress.step(Path(f).name)
     if args.json and "{stem}" not in args.json and (args.json == "-" or args.json.endswith(".json")):
-        write_json(all_recs, args.json)
+        write_json(all_recs, "-" if args.json == "-" else args.outputs.path(args.json))
     if args.json != "-":
         print(_table(["file", "model", "k", "rms", "max error", "status"], rows))
     n_noconv = sum(1 for r in all_recs if not r["converged"]) - bad
@@ -475,7 +580,7 @@ def cmd_hermite(args) -> int:
                      rec["residual"]])
     out = {"p0": p0, "t0": t0, "p1": p1, "t1": t1, **kw, "solutions": recs}
     if args.json:
-        write_json(out, args.json)
+        write_json(out, "-" if args.json == "-" else args.outputs.path(args.json))
     if args.json != "-":
         if rows:
             print(_table(["#", "sigma", "length", "k", "energy", "inflection", "kappa0",
@@ -498,7 +603,7 @@ def cmd_hermite(args) -> int:
                                          f"p1 = ({p1[0]:g}, {p1[1]:g}), t1 = ({t1[0]:g}, {t1[1]:g})"]
                                  + [f"#{i}: k={c.k:.4g} L={c.length:.4g}" for i, c in
                                     enumerate(sols[:12])])
-            save_picture(pic, spec)
+            save_picture(pic, args.outputs.path(spec))
     if not sols:
         print(f"{PROG} hermite: no solution", file=sys.stderr)
         return EXIT_NOCONV
@@ -517,7 +622,7 @@ def cmd_bspline(args) -> int:
     out = [{"curve": curve_to_dict(c), "bspline": b.to_dict()} for c, b in zip(curves, splines)]
     result = out[0] if len(out) == 1 else {"sides": out}
     if args.json:
-        write_json(result, args.json)
+        write_json(result, "-" if args.json == "-" else args.outputs.path(args.json))
     if args.json != "-":
         for c, b in zip(curves, splines):
             dev = (f"max deviation {b.max_deviation:.3g}" if b.max_deviation >= 0 else
@@ -525,7 +630,7 @@ def cmd_bspline(args) -> int:
             print(f"{type(c).__name__}: B-spline degree {b.degree}, {b.npoles} poles, "
                   f"{len(b.knots)} knots, {dev}")
     if args.dxf:
-        write_dxf_spline(splines, args.dxf)
+        write_dxf_spline(splines, args.outputs.path(args.dxf))
     return EXIT_OK
 
 
@@ -541,13 +646,17 @@ def cmd_blend(args) -> int:
     xy = curve.points(np.linspace(0.0, curve.nseg, 401))
     s, kappa = polygon_curvature(xy)
     rec = {"k": curve.basis.k, "m": curve.basis.m, "d": curve.basis.d, "mode": args.mode,
-           "points": pts, "control_points": curve.q}
+           "points": pts, "control_points": curve.q, "basis_min": curve.basis.basis_min,
+           "convex_hull": curve.basis.convex_hull, "lebesgue": curve.basis.lebesgue,
+           "condition": curve.basis.condition}
+    for w in curve.basis.warnings():
+        print(f"{PROG} blend: warning: {w}", file=sys.stderr)
     b = None
     if args.tol is not None or args.dxf:
         b = curve.to_bspline(_finite(args.tol if args.tol is not None else 1e-6, "--tol"))
         rec["bspline"] = b.to_dict()
     if args.json:
-        write_json(rec, args.json)
+        write_json(rec, "-" if args.json == "-" else args.outputs.path(args.json))
     if args.json != "-":
         print(f"elliptic blend: k = {curve.basis.k:.6g} (m = {curve.basis.m:.6g}), "
               f"d = {curve.basis.d:.6g}, K = {curve.basis.K:.6g}")
@@ -565,9 +674,9 @@ def cmd_blend(args) -> int:
             from .report import Layer
             pic.layers.insert(1, Layer(np.asarray(curve.q), "control polygon", "#1f77b4",
                                        marker="o", line=True, size=4.0))
-            save_picture(pic, spec)
+            save_picture(pic, args.outputs.path(spec))
     if args.dxf:
-        write_dxf_spline(b, args.dxf, points=pts)
+        write_dxf_spline(b, args.outputs.path(args.dxf), points=pts)
     return EXIT_OK
 
 
@@ -870,14 +979,22 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     """Run the ``elastica`` command; returns the exit status (0, 1 or 2)."""
     parser = build_parser()
     args = parser.parse_args(argv)
+    args.outputs = _Outputs(list(getattr(args, "files", None) or []) + [getattr(args, "file", None)]
+                            + list(getattr(args, "inputs", None) or []))
     try:
         try:
             _check_outputs(args)
-            return args.func(args)
+            status = args.func(args)
+            args.outputs.commit()
+            return status
         except NotConvergedError as exc:
+            args.outputs.abort()
             print(f"{PROG} {args.command}: did not converge: {exc}", file=sys.stderr)
             return EXIT_NOCONV
-    except (InputError, ValueError, OSError) as exc:
+        except BaseException:
+            args.outputs.abort()
+            raise
+    except (InputError, ValueError, OSError, OverflowError) as exc:
         msg = " ".join(str(exc).split()) or type(exc).__name__
         print(f"{PROG} {args.command}: {msg}", file=sys.stderr)
         return EXIT_BADINPUT

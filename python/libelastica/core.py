@@ -5,7 +5,7 @@ from dataclasses import dataclass, fields
 
 import numpy as np
 
-from ._ffi import as_vector, check, dptr, ffi, lib
+from ._ffi import as_real, as_size, as_vector, check, dptr, ffi, lib
 
 SMOOTH_PARAMS = ("x0", "y0", "phi", "mu", "k", "q", "length")
 DISCRETE_PARAMS = ("x0", "y0", "h", "phi", "z", "q", "k")
@@ -40,13 +40,17 @@ class SmoothElastica:
 
     def __post_init__(self):
         for f in fields(self):
-            setattr(self, f.name, float(getattr(self, f.name)))
+            v = getattr(self, f.name)
+            if type(v) is not float:   # (floats are checked by el_smooth_check)
+                setattr(self, f.name, as_real(v, f"SmoothElastica: {f.name}"))
         check(lib.el_smooth_check(self._c()), "SmoothElastica")
 
     def _c(self):
         p = ffi.new("el_smooth_params *")
-        for n in SMOOTH_PARAMS:
-            setattr(p, n, getattr(self, n))
+        for n in SMOOTH_PARAMS:   # (checked again: an attribute may have been reassigned)
+            v = getattr(self, n)
+            setattr(p, n, v if type(v) is float else
+                    as_real(v, f"SmoothElastica: {n}", finite=False))
         return p
 
     @property
@@ -125,16 +129,20 @@ class DiscreteElastica:
 
     def __post_init__(self):
         for name in DISCRETE_PARAMS:
-            setattr(self, name, float(getattr(self, name)))
-        if int(self.n) != self.n or self.n < 2:
-            raise ValueError(f"DiscreteElastica: n must be an integer >= 2, got {self.n}")
-        self.n = int(self.n)
+            v = getattr(self, name)
+            if type(v) is not float:   # (floats are checked by el_discrete_check)
+                setattr(self, name, as_real(v, f"DiscreteElastica: {name}"))
+        # n vertices of 2 doubles each must fit in memory
+        self.n = as_size(self.n, "DiscreteElastica: n", lo=2, hi=2 ** 59)
         check(lib.el_discrete_check(self._c()), "DiscreteElastica")
 
     def _c(self):
         p = ffi.new("el_discrete_params *")
-        for name in DISCRETE_PARAMS:
-            setattr(p, name, getattr(self, name))
+        for name in DISCRETE_PARAMS:   # (checked again: an attribute may have been reassigned)
+            v = getattr(self, name)
+            setattr(p, name, v if type(v) is float else
+                    as_real(v, f"DiscreteElastica: {name}", finite=False))
+        self.n = as_size(self.n, "DiscreteElastica: n", lo=2, hi=2 ** 59)
         return p
 
     @property
@@ -144,16 +152,18 @@ class DiscreteElastica:
 
     def points(self) -> np.ndarray:
         """The n vertices, shape (n, 2)."""
+        p = self._c()
         out = np.empty((self.n, 2))
-        check(lib.el_discrete_eval(self._c(), self.n, dptr(out)), "DiscreteElastica")
+        check(lib.el_discrete_eval(p, self.n, dptr(out)), "DiscreteElastica")
         return out
 
     def curvature(self) -> np.ndarray:
         """Discrete curvature (2/h) tan(K/2) at the n-2 interior vertices (seed 000 (3.4))."""
+        p = self._c()
         if self.n < 3:
             raise ValueError("DiscreteElastica.curvature needs n >= 3")
         out = np.empty(self.n - 2)
-        check(lib.el_discrete_curvature(self._c(), self.n, dptr(out)), "DiscreteElastica")
+        check(lib.el_discrete_curvature(p, self.n, dptr(out)), "DiscreteElastica")
         return out
 
     def to_bspline(self):
@@ -164,7 +174,8 @@ class DiscreteElastica:
 
     def jacobian(self) -> np.ndarray:
         """d gamma_i / d p, shape (n, 2, 7), p = (x0, y0, h, phi, z, q, k)."""
+        p = self._c()
         jac = np.empty((self.n, 2, 7))
-        check(lib.el_discrete_jacobian(self._c(), self.n, ffi.NULL, dptr(jac)),
+        check(lib.el_discrete_jacobian(p, self.n, ffi.NULL, dptr(jac)),
               "DiscreteElastica.jacobian")
         return jac

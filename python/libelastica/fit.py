@@ -19,7 +19,8 @@ from typing import Mapping, Optional, Tuple, Union
 
 import numpy as np
 
-from ._ffi import DomainError, ElasticaError, NotConvergedError, as_points, check, dptr, ffi, lib
+from ._ffi import (DomainError, ElasticaError, NotConvergedError, as_int, as_points, as_real,
+                   as_real_array, check, dptr, ffi, lib)
 from .core import DISCRETE_PARAMS, SMOOTH_PARAMS, DiscreteElastica, SmoothElastica
 
 _MODES = {"auto": 0, "uniform": 1, "chord": 2}
@@ -107,7 +108,7 @@ class FitResult:
 
 def _pair(value, name: str):
     try:
-        a, b = (float(v) if v is not None else None for v in value)
+        a, b = (as_real(v, name, finite=False) if v is not None else None for v in value)
     except (TypeError, ValueError):
         raise ValueError(f"fit: constraint {name!r} must be a pair, got {value!r}") from None
     return a, b
@@ -127,12 +128,7 @@ def _set_constraints(o, model: str, n: int, constraints: Optional[Mapping[str, o
             getattr(o, f"{where}_point")[0] = x
             getattr(o, f"{where}_point")[1] = y
         elif kind in ("angle", "number"):
-            try:
-                v = float(value)
-            except (TypeError, ValueError):
-                raise ValueError(f"fit: constraint {name!r} must be a number, got {value!r}") from None
-            if not math.isfinite(v):
-                raise ValueError(f"fit: constraint {name!r} must be finite, got {value!r}")
+            v = as_real(value, f"fit: constraint {name!r}")
             setattr(o, f"{where}_{'tangent' if kind == 'angle' else 'curvature'}", v)
         else:
             lo, hi = _pair(value, name)
@@ -154,9 +150,7 @@ def _options(model: str, n: int, fixed: Optional[Mapping[str, float]], bounds, t
     for name, value in (fixed or {}).items():
         if name not in names:
             raise ValueError(f"fit: unknown parameter {name!r} for model {model!r}; one of {names}")
-        v = float(value)
-        if not np.isfinite(v):
-            raise ValueError(f"fit: fixed {name} must be finite")
+        v = as_real(value, f"fit: fixed {name}")
         j = names.index(name)
         o.fixed[j] = 1
         o.value[j] = v
@@ -164,15 +158,15 @@ def _options(model: str, n: int, fixed: Optional[Mapping[str, float]], bounds, t
         if name not in names:
             raise ValueError(f"fit: unknown parameter {name!r} in bounds")
         j = names.index(name)
-        o.lower[j] = -np.inf if lo is None else float(lo)
-        o.upper[j] = np.inf if hi is None else float(hi)
+        o.lower[j] = -np.inf if lo is None else as_real(lo, f"fit: lower bound of {name}", finite=False)
+        o.upper[j] = np.inf if hi is None else as_real(hi, f"fit: upper bound of {name}", finite=False)
     if tol is not None:
-        o.tol = float(tol)
+        o.tol = as_real(tol, "fit: tol")
     if max_iter is not None:
-        o.max_iter = int(max_iter)
+        o.max_iter = as_int(max_iter, "fit: max_iter")
     o.limited_memory = 1 if limited_memory else 0
     if max_candidates is not None:
-        o.max_candidates = int(max_candidates)
+        o.max_candidates = as_int(max_candidates, "fit: max_candidates")
     if param not in _MODES:
         raise ValueError(f"fit: param must be one of {tuple(_MODES)}, got {param!r}")
     o.param_mode = _MODES[param]
@@ -240,7 +234,7 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     seen with ``status`` != 0 (raises NotConvergedError if ``strict``). Bad input (NaN,
     too few points, all points equal) raises ValueError / ElasticaError subclasses.
     """
-    if model not in ("discrete", "smooth"):
+    if not isinstance(model, str) or model not in ("discrete", "smooth"):
         raise ValueError(f"fit: model must be 'discrete' or 'smooth', got {model!r}")
     pts = as_points(points, "points", 2)
     n = pts.shape[0]
@@ -248,11 +242,14 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
         raise ValueError(f"fit: need at least 4 points, got {n}")
     if not np.all(np.isfinite(pts)):
         raise ValueError("fit: points must be finite (no NaN/inf)")
-    o = _options(model, n, fixed, bounds, tol, max_iter, limited_memory, max_candidates, param,
-                 initial, distance, constraints)
+    try:   # options of the wrong shape (not a mapping, bounds not pairs, ...): ValueError
+        o = _options(model, n, fixed, bounds, tol, max_iter, limited_memory, max_candidates, param,
+                     initial, distance, constraints)
+        init = initial._c() if initial is not None else ffi.NULL
+    except (TypeError, AttributeError) as exc:
+        raise ValueError(f"fit: invalid option ({exc})") from None
     smooth = model == "smooth"
     res = ffi.new(f"el_fit_{model}_result *")
-    init = initial._c() if initial is not None else ffi.NULL
     dist, foot = np.empty(n), np.empty(n)
     st = (lib.el_fit_smooth if smooth else lib.el_fit_discrete)(dptr(pts), n, o, init, res,
                                                                dptr(dist), dptr(foot))
@@ -313,15 +310,15 @@ def _keyline_options(model: str, kwargs: dict):
         if model != "discrete" or name != "h":
             raise ValueError(f"fit_keyline: only the discrete h can be fixed (both sides), "
                              f"got {name!r}: the joint's G2 conditions tie the other parameters")
-        v = float(value)
-        if not (np.isfinite(v) and v > 0):
+        v = as_real(value, "fit_keyline: fixed h")
+        if not v > 0:
             raise ValueError(f"fit_keyline: fixed h must be > 0, got {value!r}")
         o.fixed[2] = 1
         o.value[2] = v
     if max_iter is not None:
-        o.max_iter = int(max_iter)
+        o.max_iter = as_int(max_iter, "fit_keyline: max_iter")
     if tol is not None:
-        o.tol = float(tol)
+        o.tol = as_real(tol, "fit_keyline: tol")
     return o
 
 
@@ -340,7 +337,7 @@ def fit_keyline(points, r: Optional[float] = None, model: str = "discrete", side
     from .prep import prepare_keyline
     if model not in ("discrete", "smooth"):
         raise ValueError(f"fit_keyline: model must be 'discrete' or 'smooth', got {model!r}")
-    pts = np.asarray(points, dtype=np.float64)
+    pts = as_real_array(points, "fit_keyline: points")
     if pts.ndim != 2 or pts.shape[1] not in (2, 3) or len(pts) < 4:
         raise ValueError("fit_keyline: points must have shape (n, 2) or (n, 3), n >= 4")
     if not np.all(np.isfinite(pts)):

@@ -9,7 +9,7 @@ from typing import List, Optional
 
 import numpy as np
 
-from ._ffi import as_vector, check, ffi, lib
+from ._ffi import as_int, as_real, as_size, as_vector, check, ffi, lib
 from .core import SMOOTH_PARAMS, SmoothElastica
 
 __all__ = ["hermite", "hermite_analyse", "HermiteSolutions"]
@@ -109,12 +109,13 @@ def hermite(p0, t0, p1, t1, tension: Optional[float] = None,
     buf[0:8] = _vec2(p0, "p0") + _vec2(t0, "t0") + _vec2(p1, "p1") + _vec2(t1, "t1")
     if tension is not None:
         opt.mode = lib.EL_HERMITE_TENSION
-        opt.sigma = float(tension)
+        opt.sigma = as_real(tension, "hermite: tension")
     else:
         opt.mode = lib.EL_HERMITE_LENGTH
-        opt.length = float(length)
+        opt.length = as_real(length, "hermite: length")
     # the options that rarely change are set only when they do
-    rest = (float(tol), int(samples), int(grid), int(max_solutions))
+    rest = (as_real(tol, "hermite: tol"), as_int(samples, "hermite: samples"),
+            as_int(grid, "hermite: grid"), as_size(max_solutions, "hermite: max_solutions"))
     if rest != getattr(_local, "rest", None):
         opt.tol, opt.samples, opt.grid, opt.max_solutions = rest
         _local.rest = rest
@@ -143,7 +144,7 @@ def hermite_analyse(P, V, sigma: float) -> dict:
     P, V = _vec2(P, "P"), _vec2(V, "V")
     a = ffi.new("el_hermite_analysis *")
     check(lib.el_hermite_analyse(ffi.new("double[2]", list(P)), ffi.new("double[2]", list(V)),
-                                 float(sigma), a), "hermite_analyse")
+                                 as_real(sigma, "hermite_analyse: sigma"), a), "hermite_analyse")
     return {
         "case": int(a.hcase),
         "kappa_bound": float(a.kappa_bound),

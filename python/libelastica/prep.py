@@ -17,7 +17,7 @@ from typing import Tuple
 
 import numpy as np
 
-from ._ffi import DomainError, as_points, check, dptr, ffi, lib
+from ._ffi import DomainError, as_int, as_points, as_real, as_real_array, check, dptr, ffi, lib
 
 __all__ = ["Frame", "Frame2D", "Inflection", "PreparedKeyline", "plane_fit",
            "resample_equilateral", "pca_normalize", "find_inflection", "find_inflection_info",
@@ -45,7 +45,7 @@ def _map_points(fn, frame, a, din: int, dout: int, what: str) -> np.ndarray:
 
 def _points(a, name: str, dim: int) -> np.ndarray:
     """(n, dim) float64 C-contiguous; a single point (dim,) is accepted as (1, dim)."""
-    arr = np.asarray(a, dtype=np.float64)
+    arr = as_real_array(a, name)
     if arr.ndim == 1 and arr.shape[0] == dim:
         arr = arr[None, :]
     return as_points(arr, name, dim)
@@ -158,9 +158,20 @@ def resample_equilateral(xy, r: float, return_info: bool = False):
     2 points; SingularError if all points are equal.
     """
     pts = as_points(xy, "xy", 2)
-    r = float(r)
+    r = as_real(r, "resample_equilateral: r")
     res = ffi.new("el_resample_result *")
-    check(lib.el_resample_equilateral(dptr(pts), pts.shape[0], r, res), "resample_equilateral")
+    st = lib.el_resample_equilateral(dptr(pts), pts.shape[0], r, res)
+    if st == lib.EL_EDOM:
+        length = float(np.sum(np.hypot(*np.diff(pts, axis=0).T)))
+        limit = lib.EL_RESAMPLE_MAX_VERTICES
+        if np.isfinite(length) and length / r > limit - 1:
+            raise DomainError(st, f"resample_equilateral: r = {r:.3g} would make up to "
+                              f"{length / r:.3g} vertices on this {length:.6g}-long polyline; "
+                              f"at most {limit} (EL_RESAMPLE_MAX_VERTICES): r >= "
+                              f"{length / (limit - 1):.3g}")
+        raise DomainError(st, "resample_equilateral: the polyline's coordinates or length are "
+                          "beyond double's range")
+    check(st, "resample_equilateral")
     try:
         m = int(res.n)
         out = np.frombuffer(ffi.buffer(res.xy, 16 * m), dtype=np.float64).reshape(m, 2).copy()
@@ -199,8 +210,7 @@ class Inflection:
 def find_inflection_info(xy, side: int = 0) -> Inflection:
     """Like :func:`find_inflection`, returning the full :class:`Inflection`."""
     pts = as_points(xy, "xy", 2)
-    if side not in (-1, 0, 1):
-        raise ValueError(f"find_inflection: side must be -1, 0 or 1, got {side!r}")
+    side = as_int(side, "find_inflection: side", -1, 1)
     info = ffi.new("el_inflection *")
     check(lib.el_find_inflection(dptr(pts), pts.shape[0], int(side), info), "find_inflection")
     return Inflection(index=int(info.index), neighbor=int(info.neighbor), apex=int(info.apex),
@@ -257,7 +267,8 @@ def prepare_keyline(points, r: float, side: int = 0) -> PreparedKeyline:
     equilateral resampling with segment ``r``, PCA re-normalisation and the
     RDP-style inflection estimate (``side`` as in :func:`find_inflection`;
     ``inflection`` is None when the polygon shows none, e.g. a convex arc)."""
-    pts = np.asarray(points, dtype=np.float64)
+    pts = as_real_array(points, "points")
+    r = as_real(r, "prepare_keyline: r")
     frame, rms = None, 0.0
     if pts.ndim == 2 and pts.shape[1] == 3:
         xy, frame = plane_fit(pts)

@@ -440,9 +440,14 @@ START_TEST(composite_to_bspline_and_noconv)
     }
     free(u);
     el_bspline_free(&s);
-    /* an unreachable tolerance: EL_ENOCONV with the best spline returned */
-    ck_assert_int_eq(el_blend_to_bspline(&b, 1, q, 1e-300, &s), EL_ENOCONV);
-    ck_assert(s.npoles > 4 && s.max_deviation > 0 && s.max_deviation < 1e-10);
+    /* below what the coordinates resolve: EL_EDOM at once, out untouched */
+    memset(&s, 0x5a, sizeof s);
+    ck_assert_int_eq(el_blend_to_bspline(&b, 1, q, 1e-300, &s), EL_EDOM);
+    ck_assert_int_eq(el_blend_to_bspline(&b, 1, q, 1e-14, &s), EL_EDOM);
+    ck_assert_int_eq(((unsigned char *)&s)[0], 0x5a);
+    /* resolvable but not reached with 256 spans: EL_ENOCONV with the best spline */
+    ck_assert_int_eq(el_blend_to_bspline(&b, 1, q, 1e-12, &s), EL_ENOCONV);
+    ck_assert(s.npoles > 4 && s.max_deviation > 1e-12 && s.max_deviation < 1e-10);
     el_bspline_free(&s);
 }
 END_TEST

@@ -1,0 +1,358 @@
+/*
+ * The adversarial driver: deterministic inputs for every entry point of
+ * entries.def (built with ASan + UBSan), each entry's cases run in a forked
+ * child so that a crash, a hang or a leak is pinned to the input that caused
+ * it and the run goes on. Findings: crash, hang (a call over HANG_S seconds of
+ * CPU: killed), slow (a call over SLOW_S of CPU with n <= 1e4), non-finite
+ * (EL_OK with NaN/inf outputs), status (one the header does not list),
+ * untouched (an output written on an error that documents it untouched),
+ * output (other promises: counts, indices, certified deviations),
+ * gsl-error (GSL's error handler called from inside the library), leak.
+ *
+ *   driver [--scale S] [--seed N] [--only NAME] [--findings DIR] [--known FILE]
+ *                                                                  generated cases
+ *   driver [--trace] --replay FILE|DIR ...                         given inputs (--trace:
+ *                                                                  print the arguments)
+ *   driver --write-seeds DIR                                       a libFuzzer seed corpus
+ *
+ * The last line: "fuzz driver: N inputs (M entry points), findings: F".
+ * Exit status 1 when there are findings.
+ */
+#define _DEFAULT_SOURCE /* MAP_ANONYMOUS, scandir */
+#include "fuzz.h"
+
+#include <dirent.h>
+#include <errno.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <sys/time.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+/* The sanitizers slow calls down ~3x: the CPU limits are for the sanitized build. */
+static const double SLOW_S = 3.0;   /* "a call over 1 s CPU" at full speed */
+static const int HANG_S = 20;       /* killed: reported as a hang */
+enum { MAXLEN = 65536, BATCH = 256, EXIT_HANG = 99, SHOWN = 3 };
+
+/* Memory shared with the child: the input being run, so a crash names it. */
+typedef struct shared {
+    size_t index;          /* case index being run */
+    size_t len;
+    uint8_t data[MAXLEN];
+    size_t ran;            /* cases completed by the child */
+    int leaked;            /* the child's leak check found something */
+} shared;
+
+/* Counts over the whole run, kept in shared memory (children report findings). */
+typedef struct stats {
+    unsigned long long findings, known, kind_count[16];
+    char seen[256][160];    /* (entry/kind) keys shown so far */
+    int nseen[256];
+    size_t nkeys;
+} stats;
+
+static shared *shm;
+static stats *tally;
+static const char *findings_dir = "build/fuzz/findings";
+static unsigned long long total_inputs;
+static const char *KINDS[] = {"crash", "hang", "slow", "non-finite", "status", "untouched",
+                              "output", "gsl-error", "leak", "null", NULL};
+
+/* LeakSanitizer's API when it is linked in (ASan build), else absent. */
+int __lsan_do_recoverable_leak_check(void) __attribute__((weak));
+
+/* ---------------------------------------------------------------- inputs */
+
+static uint64_t splitmix(uint64_t *s)
+{
+    uint64_t z = (*s += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+
+/* Case i of entry e: its id, then 16..600 bytes from a seeded generator. */
+static size_t make_case(const fz_entry *e, uint64_t seed, size_t i, uint8_t *buf)
+{
+    uint64_t s = seed ^ ((uint64_t)e->id << 40) ^ (i * 0x100000001B3ull);
+    size_t len = 16 + splitmix(&s) % 585;
+    buf[0] = (uint8_t)(e->id >> 8);
+    buf[1] = (uint8_t)e->id;
+    for (size_t j = 2; j < len; j++) buf[j] = (uint8_t)splitmix(&s);
+    return len;
+}
+
+/* ---------------------------------------------------------------- findings */
+
+static int kind_index(const char *kind)
+{
+    for (int i = 0; KINDS[i]; i++)
+        if (!strcmp(KINDS[i], kind)) return i;
+    return 6;
+}
+
+static void save_input(const uint8_t *data, size_t len, const char *name, const char *kind,
+                       char *path, size_t cap)
+{
+    uint32_t h = 2166136261u;
+    for (size_t i = 0; i < len; i++) h = (h ^ data[i]) * 16777619u;
+    snprintf(path, cap, "%s/%s-%s-%08x.bin", findings_dir, name, kind, h);
+    FILE *f = fopen(path, "wb");
+    if (f) { fwrite(data, 1, len, f); fclose(f); }
+}
+
+/* One finding: a line naming kind, entry and message, the saved reproducer and
+ * the input's first bytes. Shown for the first SHOWN of each (entry, kind). */
+static void report(const char *entry, const char *kind, const char *msg, const uint8_t *data,
+                   size_t len)
+{
+    char key[160];
+    snprintf(key, sizeof key, "%s %s", entry, kind);
+    const int is_known = fz_is_known(entry, kind);
+    size_t k = 0;
+    while (k < tally->nkeys && strcmp(tally->seen[k], key)) k++;
+    if (k == tally->nkeys && tally->nkeys < 256) strcpy(tally->seen[tally->nkeys++], key);
+    if (is_known) tally->known++;
+    else {
+        tally->kind_count[kind_index(kind)]++;
+        tally->findings++;
+    }
+    if (k < 256 && tally->nseen[k]++ >= (is_known ? 1 : SHOWN)) return;
+    char path[512];
+    save_input(data, len, entry, kind, path, sizeof path);
+    printf("%s %s %s: %s\n  reproduce: build/fuzz/driver --trace --replay %s\n  input (%zu bytes):",
+           is_known ? "KNOWN (fuzz/known-findings)" : "FINDING", kind, entry, msg, path, len);
+    for (size_t i = 0; i < len && i < 48; i++) printf(" %02x", data[i]);
+    printf(len > 48 ? " ...\n" : "\n");
+    fflush(stdout);
+}
+
+/* The sink of fz_run inside the child: the input is in shm. */
+static void child_sink(const fz_entry *e, const char *kind, const char *msg)
+{
+    report(e->name, kind, msg, shm->data, shm->len);
+}
+
+/* ---------------------------------------------------------------- the child */
+
+static void on_hang(int sig)
+{
+    (void)sig;
+    _exit(EXIT_HANG);
+}
+
+static double cpu_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* Run one input with the CPU limits. */
+static void run_one(const uint8_t *data, size_t len)
+{
+    shm->len = len;
+    memcpy(shm->data, data, len);
+    struct itimerval it = {{0, 0}, {HANG_S, 0}}, off = {{0, 0}, {0, 0}};
+    setitimer(ITIMER_PROF, &it, NULL);
+    const double t0 = cpu_now();
+    fz_run(data, len, child_sink);
+    const double dt = cpu_now() - t0;
+    setitimer(ITIMER_PROF, &off, NULL);
+    if (dt > SLOW_S && fz_large <= 10000) {
+        char msg[128];
+        snprintf(msg, sizeof msg, "one call took %.1f s of CPU (limit %.0f s, sanitized build)", dt, SLOW_S);
+        report(fz_select(data, len)->name, "slow", msg, data, len);
+    }
+}
+
+/* Cases [from, to) of entry e in this (child) process; a leak check after each
+ * batch (after every case when pinpoint). Counters go to the parent through
+ * stdout order (single process) and shm. */
+static void child_cases(const fz_entry *e, uint64_t seed, size_t from, size_t to, int pinpoint)
+{
+    static uint8_t buf[MAXLEN];
+    signal(SIGPROF, on_hang);
+    for (size_t i = from; i < to; i++) {
+        shm->index = i;
+        size_t len = make_case(e, seed, i, buf);
+        run_one(buf, len);
+        shm->ran = i + 1 - from;
+        const int check = pinpoint || (i + 1 - from) % BATCH == 0 || i + 1 == to;
+        if (check && __lsan_do_recoverable_leak_check && __lsan_do_recoverable_leak_check()) {
+            shm->leaked = 1;
+            _exit(0);
+        }
+    }
+}
+
+/* ---------------------------------------------------------------- the parent */
+
+/* Run cases [from, to) of e in a child; returns the number run (a crash or a
+ * hang stops the child at shm->index, which is reported and skipped). */
+static void run_entry(const fz_entry *e, uint64_t seed, size_t ncases)
+{
+    size_t next = 0;
+    while (next < ncases) {
+        memset(shm, 0, sizeof *shm);
+        fflush(stdout);
+        pid_t pid = fork();
+        if (pid < 0) { perror("fork"); exit(2); }
+        if (pid == 0) {
+            child_cases(e, seed, next, ncases, 0);
+            fflush(stdout);
+            _exit(0);
+        }
+        int ws;
+        waitpid(pid, &ws, 0);
+        const size_t ran = shm->ran;
+        total_inputs += ran;
+        if (WIFEXITED(ws) && WEXITSTATUS(ws) == 0 && !shm->leaked) break;
+        if (shm->leaked) {   /* pinpoint: the batch again, a leak check after every case */
+            const size_t lo = next + ran - (ran % BATCH ? ran % BATCH : BATCH);
+            memset(shm, 0, sizeof *shm);
+            pid = fork();
+            if (pid == 0) {
+                child_cases(e, seed, lo, next + ran, 1);
+                _exit(0);
+            }
+            waitpid(pid, &ws, 0);
+            report(e->name, "leak", shm->leaked ? "memory leaked (LeakSanitizer's report above)"
+                                                : "leak seen in a batch, not reproduced alone",
+                   shm->data, shm->len);
+            next += ran;
+            continue;
+        }
+        /* crash or hang at shm->index: report it, go on after it */
+        char msg[160];
+        if (WIFEXITED(ws) && WEXITSTATUS(ws) == EXIT_HANG)
+            snprintf(msg, sizeof msg, "no return within %d s of CPU (killed)", HANG_S);
+        else if (WIFSIGNALED(ws))
+            snprintf(msg, sizeof msg, "killed by signal %d", WTERMSIG(ws));
+        else
+            snprintf(msg, sizeof msg, "exit status %d (a sanitizer's report above)", WEXITSTATUS(ws));
+        report(e->name, WIFEXITED(ws) && WEXITSTATUS(ws) == EXIT_HANG ? "hang" : "crash", msg,
+               shm->data, shm->len);
+        total_inputs++;
+        next = shm->index + 1;
+    }
+}
+
+/* Replay one file in a child (a crash must not end the replay). */
+static void replay_file(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) { fprintf(stderr, "driver: cannot read %s\n", path); tally->findings++; return; }
+    static uint8_t buf[MAXLEN];
+    size_t len = fread(buf, 1, sizeof buf, f);
+    const int longer = fgetc(f) != EOF;
+    fclose(f);
+    if (longer) { fprintf(stderr, "driver: %s is longer than %d bytes\n", path, MAXLEN); tally->findings++; return; }
+    memset(shm, 0, sizeof *shm);
+    fflush(stdout);
+    pid_t pid = fork();
+    if (pid == 0) {
+        signal(SIGPROF, on_hang);
+        run_one(buf, len);
+        if (__lsan_do_recoverable_leak_check && __lsan_do_recoverable_leak_check()) shm->leaked = 1;
+        fflush(stdout);
+        _exit(0);
+    }
+    int ws;
+    waitpid(pid, &ws, 0);
+    total_inputs++;
+    const char *name = fz_select(buf, len)->name;
+    if (shm->leaked) report(name, "leak", "memory leaked (LeakSanitizer's report above)", buf, len);
+    else if (!WIFEXITED(ws) || WEXITSTATUS(ws) != 0)
+        report(name, WIFEXITED(ws) && WEXITSTATUS(ws) == EXIT_HANG ? "hang" : "crash",
+               "the replayed input crashed or hung", buf, len);
+}
+
+static void replay(const char *path)
+{
+    struct stat st;
+    if (stat(path, &st) != 0) { fprintf(stderr, "driver: no %s\n", path); tally->findings++; return; }
+    if (!S_ISDIR(st.st_mode)) { replay_file(path); return; }
+    struct dirent **list;
+    int n = scandir(path, &list, NULL, alphasort);
+    for (int i = 0; i < n; i++) {
+        if (list[i]->d_name[0] != '.') {
+            char p[1024];
+            snprintf(p, sizeof p, "%s/%s", path, list[i]->d_name);
+            replay_file(p);
+        }
+        free(list[i]);
+    }
+    free(list);
+}
+
+static void write_seeds(const char *dir, uint64_t seed)
+{
+    size_t n;
+    const fz_entry *t = fz_entries(&n);
+    static uint8_t buf[MAXLEN];
+    mkdir(dir, 0755);
+    for (size_t i = 0; i < n; i++)
+        for (size_t c = 0; c < 8; c++) {
+            char p[1024];
+            size_t len = make_case(&t[i], seed, c, buf);
+            snprintf(p, sizeof p, "%s/%s-%zu", dir, t[i].name, c);
+            FILE *f = fopen(p, "wb");
+            if (f) { fwrite(buf, 1, len, f); fclose(f); }
+        }
+}
+
+int main(int argc, char **argv)
+{
+    double scale = 1.0;
+    uint64_t seed = 12;
+    const char *only = NULL;
+    int nreplay = 0;
+    shm = mmap(NULL, sizeof *shm, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
+    tally = mmap(NULL, sizeof *tally, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
+    if (shm == MAP_FAILED || tally == MAP_FAILED) { perror("mmap"); return 2; }
+    fz_init();
+    setvbuf(stdout, NULL, _IOLBF, 0);
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--scale") && i + 1 < argc) scale = atof(argv[++i]);
+        else if (!strcmp(argv[i], "--seed") && i + 1 < argc) seed = strtoull(argv[++i], NULL, 10);
+        else if (!strcmp(argv[i], "--only") && i + 1 < argc) only = argv[++i];
+        else if (!strcmp(argv[i], "--findings") && i + 1 < argc) findings_dir = argv[++i];
+        else if (!strcmp(argv[i], "--trace")) fz_trace = 1;
+        else if (!strcmp(argv[i], "--known") && i + 1 < argc) fz_read_known(argv[++i]);
+        else if (!strcmp(argv[i], "--write-seeds") && i + 1 < argc) {
+            write_seeds(argv[++i], seed);
+            return 0;
+        } else if (!strcmp(argv[i], "--replay")) {
+            for (i++; i < argc; i++, nreplay++) replay(argv[i]);
+        } else {
+            fprintf(stderr, "usage: driver [--scale S] [--seed N] [--only NAME] [--findings DIR] "
+                            "[--known FILE] | [--trace] --replay FILE|DIR... | --write-seeds DIR\n");
+            return 2;
+        }
+    }
+    mkdir(findings_dir, 0755);   /* (its parent is made by the Makefile) */
+    size_t n;
+    const fz_entry *t = fz_entries(&n);
+    if (!nreplay)
+        for (size_t i = 0; i < n; i++) {
+            if (only && strcmp(only, t[i].name)) continue;
+            /* cheap entries get more cases: 20000 scale / cost */
+            size_t cases = (size_t)(20000.0 * scale / t[i].cost);
+            run_entry(&t[i], seed, cases ? cases : 1);
+        }
+    printf("fuzz driver: findings by kind:");
+    for (int k = 0; KINDS[k]; k++)
+        if (tally->kind_count[k]) printf(" %s %llu", KINDS[k], tally->kind_count[k]);
+    printf(tally->findings ? "\n" : " none\n");
+    if (tally->known) printf("fuzz driver: %llu findings of fuzz/known-findings (other owners' "
+                             "open issues) tolerated\n", tally->known);
+    printf("fuzz driver: %llu inputs (%zu entry points), findings: %llu\n", total_inputs,
+           only ? (size_t)1 : n, tally->findings);
+    return tally->findings ? 1 : 0;
+}

@@ -1,0 +1,138 @@
+"""Issue 12, the command line never damages input: an output that is an input is
+refused (exit 2) before anything is written, outputs are written all or nothing,
+overflowing arguments are bad input (exit 2), and `blend` warns when the basis
+leaves the convex hull."""
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import shutil
+from pathlib import Path
+
+import pytest
+
+from libelastica.cli import main
+
+ROOT = Path(__file__).resolve().parents[2]
+SAMPLE = ROOT / "examples" / "sample_2d.csv"
+
+
+def cli(capsys, *args):
+    capsys.readouterr()
+    try:
+        code = main([str(a) for a in args])
+    except SystemExit as exc:
+        code = exc.code
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def digest(p: Path) -> str:
+    return hashlib.sha256(p.read_bytes()).hexdigest()
+
+
+@pytest.fixture
+def work(tmp_path, monkeypatch):
+    shutil.copy(SAMPLE, tmp_path / "a.csv")
+    monkeypatch.chdir(tmp_path)
+    return tmp_path
+
+
+@pytest.mark.parametrize("args", [
+    ["fit", "a.csv", "--json", "a.csv"],
+    ["fit", "a.csv", "--json", "./a.csv"],
+    ["fit", "a.csv", "--json", "{stem}.csv"],
+    ["fit", "a.csv", "--svg", "a.csv"],
+    ["fit", "a.csv", "--dxf", "a.csv"],
+    ["fit", "a.csv", "--keyline", "--json", "a.csv"],
+    ["fit", "a.csv", "--json", "ok.json", "--svg", "a.csv"],   # the first output neither
+], ids=lambda a: " ".join(a))
+def test_output_that_is_an_input_is_refused(work, capsys, args):
+    before = digest(work / "a.csv")
+    code, _, err = cli(capsys, *args)
+    assert code == 2 and "refusing to overwrite the input file" in err
+    assert digest(work / "a.csv") == before
+    assert sorted(p.name for p in work.iterdir()) == ["a.csv"]   # nothing else written
+
+
+def test_output_that_is_an_input_through_a_link_is_refused(work, capsys):
+    os.link(work / "a.csv", work / "hard.csv")
+    os.symlink(work / "a.csv", work / "soft.csv")
+    before = digest(work / "a.csv")
+    for target in ("hard.csv", "soft.csv"):
+        code, _, err = cli(capsys, "fit", "a.csv", "--json", target)
+        assert code == 2 and "refusing" in err
+    assert digest(work / "a.csv") == before
+
+
+def test_bspline_json_onto_its_input_is_refused(work, capsys):
+    assert cli(capsys, "fit", "a.csv", "--model", "smooth", "--json", "f.json")[0] == 0
+    before = digest(work / "f.json")
+    code, _, err = cli(capsys, "bspline", "f.json", "--json", "f.json")
+    assert code == 2 and "refusing" in err
+    assert digest(work / "f.json") == before
+
+
+def test_batch_stem_pattern_onto_an_input_is_refused(work, capsys):
+    shutil.copy(work / "a.csv", work / "b.csv")
+    before = digest(work / "b.csv")
+    code, _, err = cli(capsys, "fit", "a.csv", "b.csv", "--json", "{stem}.csv")
+    assert code == 2 and "refusing" in err
+    assert digest(work / "b.csv") == before
+
+
+def test_a_failing_output_leaves_nothing(work, capsys):
+    code, _, err = cli(capsys, "fit", "a.csv", "--json", "ok.json", "--svg", "/proc/x.svg")
+    assert code == 2 and "/proc/x.svg" in err
+    assert sorted(p.name for p in work.iterdir()) == ["a.csv"]   # no ok.json, no temporaries
+    code, _, _ = cli(capsys, "fit", "a.csv", "--json", "new/dir/ok.json", "--svg", "/proc/x.svg")
+    assert code == 2 and not (work / "new").exists()            # nor the directories made
+
+
+def test_outputs_are_complete_when_all_succeed(work, capsys):
+    code, _, _ = cli(capsys, "fit", "a.csv", "--json", "out/a.json", "--svg", "out/a.svg")
+    assert code == 0
+    assert json.loads((work / "out" / "a.json").read_text())["model"] == "discrete"
+    assert (work / "out" / "a.svg").read_text().lstrip().startswith("<")
+    assert sorted(p.name for p in (work / "out").iterdir()) == ["a.json", "a.svg"]
+
+
+def test_same_output_twice_is_refused(work, capsys):
+    code, _, err = cli(capsys, "fit", "a.csv", "--json", "x.svg", "--svg", "./x.svg")
+    assert code == 2 and "twice" in err
+    assert not (work / "x.svg").exists()
+
+
+@pytest.mark.parametrize("args", [
+    ["fit", "a.csv", "--model", "smooth", "--bspline-tol", "1e-6", "--degree", "99999999999999"],
+    ["fit", "a.csv", "--max-iter", "99999999999999999999"],
+    ["fit", "a.csv", "--step", "1e-9"],
+    ["fit", "a.csv", "--step", "1e-320"],
+    ["hermite", "0", "0", "0", "1", "2", "0", "0", "-1", "--tension", "1e400"],
+    ["bspline", "f.json", "--degree", "4294967296"],
+], ids=lambda a: " ".join(a))
+def test_overflowing_arguments_exit_2(work, capsys, args):
+    cli(capsys, "fit", "a.csv", "--model", "smooth", "--json", "f.json")
+    code, _, err = cli(capsys, *args)
+    assert code == 2, err
+    assert "internal error" not in err and len(err.strip().splitlines()) == 1
+
+
+def test_step_past_the_vertex_limit_says_what_is_possible(work, capsys):
+    code, _, err = cli(capsys, "fit", "a.csv", "--step", "1e-9")
+    assert code == 2 and "EL_RESAMPLE_MAX_VERTICES" in err and "r >= " in err
+
+
+def test_blend_warns_when_the_convex_hull_is_lost(work, capsys):
+    code, out, err = cli(capsys, "blend", "0", "0", "0.3", "0.8", "0.7", "0.9", "1", "0",
+                         "--m", "0.62", "--json", "-")
+    rec = json.loads(out)
+    assert code == 0 and "warning" in err and "convex hull" in err
+    assert rec["convex_hull"] is False and rec["basis_min"] < 0 and rec["lebesgue"] > 1
+    code, out, err = cli(capsys, "blend", "0", "0", "0.3", "0.8", "0.7", "0.9", "1", "0",
+                         "--m", "0.3", "--json", "-")
+    assert code == 0 and "warning" not in err and json.loads(out)["convex_hull"] is True
+    code, _, err = cli(capsys, "blend", "0", "0", "0.3", "0.8", "0.7", "0.9", "1", "0",
+                       "--m", "0.6438")
+    assert code == 2 and "singular neighbourhood" in err

@@ -1,0 +1,187 @@
+"""Issue 12, Python: wrong types and out-of-range values raise ValueError (or an
+ElasticaError subclass) at every public entry, never TypeError, OverflowError,
+AttributeError or a silent conversion; complex, datetime and float16 input is
+refused; requests past the C library's limits say what is possible."""
+import datetime
+from decimal import Decimal
+from fractions import Fraction
+
+import numpy as np
+import pytest
+
+import libelastica as el
+
+ARC = np.c_[np.cos(np.linspace(0, 2.5, 60)), np.sin(np.linspace(0, 2.5, 60))]
+CURVE = el.SmoothElastica(x0=0, y0=0, phi=0, mu=1.0, k=0.8, q=0.0, length=5.0)
+
+BAD_ARRAYS = {
+    "complex": ARC + 1e-3j,
+    "datetime": np.array(["2024-01-01", "2024-01-02"] * 30, dtype="datetime64[D]").reshape(60, 1)
+    .repeat(2, axis=1),
+    "timedelta": np.ones((60, 2), dtype="timedelta64[s]"),
+    "float16": ARC.astype(np.float16),
+    "bool": np.ones((60, 2), dtype=bool),
+    "strings": np.array([["1", "2"]] * 60),
+    "objects": np.array([[None, 1.0]] * 60, dtype=object),
+    "ragged": [[0.0, 1.0], [2.0]],
+}
+
+POINT_ENTRIES = {
+    "fit": lambda a: el.fit(a),
+    "fit_keyline": lambda a: el.fit_keyline(a),
+    "plane_fit": lambda a: el.plane_fit(a),
+    "resample_equilateral": lambda a: el.resample_equilateral(a, 0.1),
+    "pca_normalize": lambda a: el.pca_normalize(a),
+    "find_inflection": lambda a: el.find_inflection(a),
+    "prepare_keyline": lambda a: el.prepare_keyline(a, 0.1),
+    "interpolate_c2": lambda a: el.interpolate_c2(a),
+    "affine_coords": lambda a: el.affine_coords(a),
+    "affine_polyline": lambda a: el.affine_polyline(a, 10),
+    "lane_riesenfeld": lambda a: el.lane_riesenfeld(a, 2),
+    "affine_elements": lambda a: el.affine_elements(a),
+    "uniform_bspline": lambda a: el.uniform_bspline(a),
+    "BSpline poles": lambda a: el.BSpline(degree=1, poles=a, knots=[0, 1], mults=[2, 2]),
+    "SmoothElastica.points": lambda a: CURVE.points(a),
+    "EllipticBlend.basis": lambda a: el.EllipticBlend(m=0.3).basis(a),
+    "blend_curve": lambda a: el.blend_curve(a),
+    "hermite": lambda a: el.hermite(a, (0, 1), (2, 0), (0, -1), tension=0.0),
+    "Frame.to_3d": lambda a: el.plane_fit(np.c_[ARC, 0.1 * ARC[:, 0]])[1].to_3d(a),
+    "affine_curvature_exact": lambda a: el.affine_curvature_exact(a, a, a),
+}
+
+
+@pytest.mark.parametrize("kind", sorted(BAD_ARRAYS))
+@pytest.mark.parametrize("entry", sorted(POINT_ENTRIES))
+def test_bad_arrays_raise_value_error(entry, kind):
+    with pytest.raises(ValueError):
+        POINT_ENTRIES[entry](BAD_ARRAYS[kind])
+
+
+def test_complex_is_refused_not_truncated():
+    with pytest.raises(ValueError, match="complex"):
+        CURVE.points(np.array([1.0 + 2.0j]))
+    with pytest.raises(ValueError, match="complex"):
+        el.SmoothElastica(k=np.complex128(0.5 + 0.1j))
+
+
+BAD_SCALARS = [None, "0.5", 1 + 2j, np.complex128(0.5), True, [0.5, 0.6], object(),
+               np.array([0.5, 0.6])]
+
+
+@pytest.mark.parametrize("value", BAD_SCALARS, ids=repr)
+@pytest.mark.parametrize("field", ["x0", "mu", "k", "length"])
+def test_smooth_elastica_bad_scalars(field, value):
+    with pytest.raises(ValueError):
+        el.SmoothElastica(**{field: value})
+
+
+@pytest.mark.parametrize("value", BAD_SCALARS, ids=repr)
+def test_scalar_arguments_raise_value_error(value):
+    calls = [
+        lambda: el.DiscreteElastica(h=value),
+        lambda: CURVE.to_bspline(tol=value),
+        lambda: CURVE.to_bspline(degree=value),
+        lambda: el.resample_equilateral(ARC, value),
+        lambda: el.hermite((0, 0), (0, 1), (2, 0), (0, -1), tension=value),
+        lambda: el.hermite((0, 0), (0, 1), (2, 0), (0, -1), tension=0.0, samples=value),
+        lambda: el.EllipticBlend(k=value),
+        lambda: el.EllipticBlend(m=0.3, d=value),
+        lambda: el.MQBlend(c=value),
+        lambda: el.eck_d(value),
+        lambda: el.eck_omega(value),
+        lambda: el.find_inflection(ARC, side=value),
+        lambda: el.fit(ARC, max_iter=value if value is not None else "x"),   # None: default
+        lambda: el.fit(ARC, fixed={"x0": value}),
+        lambda: el.affine_polyline(ARC, value),
+        lambda: el.chaikin(ARC, value),
+        lambda: el.smooth_to_bspline(CURVE, value),
+        lambda: el.BSpline(degree=value, poles=[[0, 0], [1, 1]], knots=[0, 1], mults=[2, 2]),
+    ]
+    for call in calls:
+        with pytest.raises(ValueError):
+            call()
+
+
+@pytest.mark.parametrize("value", [2 ** 64, 2 ** 200, -1, -2 ** 63, 2 ** 31])
+def test_out_of_range_integers_raise_value_error(value):
+    calls = [
+        lambda: el.DiscreteElastica(n=value if value != 2 ** 31 else 2 ** 60),   # 2^31: valid
+        lambda: CURVE.to_bspline(degree=value),
+        lambda: el.BSpline(degree=value, poles=[[0, 0], [1, 1]], knots=[0, 1], mults=[2, 2]),
+        lambda: el.BSpline(degree=1, poles=[[0, 0], [1, 1]], knots=[0, 1], mults=[value, 2]),
+        lambda: el.BSpline(degree=1, poles=[[0, 0], [1, 1]], knots=[0, 1],
+                           mults=[2, 2]).derivative([0.5], order=value),
+        lambda: el.lane_riesenfeld(ARC, value),
+        lambda: el.uniform_bspline(ARC, degree=value),
+        lambda: el.hermite((0, 0), (0, 1), (2, 0), (0, -1), tension=0.0, grid=value),
+        lambda: el.fit(ARC, max_iter=value if value > 0 else 2 ** 40),
+        lambda: el.affine_polyline(ARC, value),
+        lambda: el.chaikin(ARC, value),
+    ]
+    for call in calls:
+        with pytest.raises(ValueError):
+            call()
+
+
+def test_wrong_types_raise_value_error_not_type_or_attribute_error():
+    with pytest.raises(ValueError):
+        el.smooth_to_bspline("not a curve")
+    with pytest.raises(ValueError):
+        el.BlendCurve(basis="not a basis", q=np.zeros((4, 2)))
+    with pytest.raises(ValueError):
+        el.fit(ARC, fixed=[("x0", 0.0)])          # not a mapping
+    with pytest.raises(ValueError):
+        el.fit(ARC, bounds={"x0": 1.0})          # not a (lo, hi) pair
+    with pytest.raises(ValueError):
+        el.fit(ARC, model=["smooth"])
+    with pytest.raises(ValueError):
+        el.fit(ARC, initial="guess")
+    with pytest.raises(ValueError):
+        el.osculating_conics(ARC, kind=["outer"])
+    with pytest.raises(ValueError):
+        el.EllipticBlend(m=0.3).from_points(ARC[:4], mode={"interpolate": 1})
+    c = el.SmoothElastica(k=0.5)
+    c.k = "0.7"                                   # a reassigned attribute is checked too
+    with pytest.raises(ValueError):
+        c.points([0.5])
+    d = el.DiscreteElastica()
+    d.n = 2 ** 70
+    with pytest.raises(ValueError):
+        d.points()
+
+
+def test_real_numbers_of_every_kind_are_accepted():
+    c = el.SmoothElastica(x0=Fraction(1, 2), y0=Decimal("0.25"), phi=np.float32(0.1), mu=2,
+                          k=np.float64(0.5), q=np.int64(0), length=np.array(3.0))
+    assert isinstance(c.k, float) and c.x0 == 0.5 and c.length == 3.0
+    s = [Fraction(1, 3), Decimal("0.5"), 1]
+    assert np.allclose(c.points(np.array(s, dtype=object)), c.points([1 / 3, 0.5, 1.0]))
+    assert np.allclose(c.points(np.array([0.5, 1.0], dtype=np.float32)), c.points([0.5, 1.0]))
+    assert len(el.DiscreteElastica(n=np.int32(7)).points()) == 7
+    assert len(el.DiscreteElastica(n=7.0).points()) == 7
+    assert CURVE.to_bspline(tol=Fraction(1, 10 ** 6), degree=np.int64(4)).degree == 4
+
+
+def test_limits_name_what_is_possible():
+    with pytest.raises(el.DomainError, match="EL_AFFINE_MAX_EDGES"):
+        el.affine_polyline(CURVE, 2 ** 62 - 1)    # killed the interpreter before
+    with pytest.raises(el.DomainError, match=r"r >= "):
+        el.resample_equilateral(ARC, 1e-9)
+    with pytest.raises(el.DomainError, match="smallest possible"):
+        CURVE.to_bspline(tol=1e-300)
+    with pytest.raises(el.DomainError, match="split it"):
+        el.SmoothElastica(k=1e8, length=1.0).to_bspline(tol=1e-6)
+
+
+def test_elliptic_blend_reports_its_basis():
+    b = el.EllipticBlend(m=0.3)
+    assert b.convex_hull and b.basis_min > -1e-12 and b.lebesgue == pytest.approx(1.0)
+    assert b.warnings() == []
+    b = el.EllipticBlend(m=0.62)
+    h = b.basis(np.linspace(0, 1, 4001))
+    assert not b.convex_hull
+    assert b.basis_min == pytest.approx(h.min(), abs=1e-7)
+    assert b.lebesgue == pytest.approx(np.abs(h).sum(axis=1).max(), rel=1e-7)
+    assert b.condition < 1000 and b.warnings() and "convex hull" in b.warnings()[0]
+    with pytest.raises(el.SingularError, match=r"outside \(0\.79932, 0\.80544\)"):
+        el.EllipticBlend(m=0.6438)
