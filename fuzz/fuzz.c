@@ -308,7 +308,57 @@ el_fit_options fz_fit_options(fz_in *in)
     if (what & 32) o.param_mode = fz_int(in) % 4;
     if (what & 64) o.use_initial = 1;
     if (what & 128) o.max_iter = fz_int(in) % 201;
+    const uint8_t more = fz_byte(in);
+    if (more & 1) o.distance = fz_byte(in) % 8 == 0 ? fz_int(in) : fz_byte(in) % 3;
+    if (more & 2) {   /* constraints: the kinds, values moderate or adversarial */
+        o.constraints = fz_byte(in) % 8 == 0 ? fz_int(in) : fz_byte(in);
+        o.start_point[0] = fz_range(in, -5, 5); o.start_point[1] = fz_range(in, -5, 5);
+        o.end_point[0] = fz_range(in, -5, 5);   o.end_point[1] = fz_range(in, -5, 5);
+        o.start_tangent = fz_range(in, -4, 4);  o.end_tangent = fz_range(in, -4, 4);
+        o.start_curvature = fz_range(in, -1, 1); o.end_curvature = fz_range(in, -1, 1);
+        o.length_range[0] = fz_range(in, 0, 10); o.length_range[1] = fz_range(in, 0, 100);
+        o.k_range[0] = fz_range(in, -3, 1);      o.k_range[1] = fz_range(in, -1, 3);
+    }
     return o;
+}
+
+static el_spline_end spline_end(fz_in *in)
+{
+    el_spline_end e;
+    memset(&e, 0, sizeof e);
+    e.kind = fz_byte(in) % 8 == 0 ? fz_int(in) : fz_byte(in) % 3;
+    e.tangent[0] = fz_range(in, -1, 1);
+    e.tangent[1] = fz_range(in, -1, 1);
+    e.curvature = fz_range(in, -2, 2);
+    return e;
+}
+
+/* options as a user sets them (tension, length, ends, closed), sometimes absurd */
+el_spline_options fz_spline_options(fz_in *in)
+{
+    el_spline_options o;
+    el_spline_options_defaults(&o);
+    if (fz_byte(in) % 2) o.mode = EL_SPLINE_LENGTH;
+    if (fz_byte(in) % 8 == 0) o.mode = fz_int(in);
+    o.sigma = fz_range(in, 0, 50);
+    o.length = fz_range(in, 1, 40);
+    o.closed = fz_byte(in) % 4 == 0;
+    o.start = spline_end(in);
+    o.end = spline_end(in);
+    if (fz_byte(in) % 4 == 0) o.tol = fz_double(in);
+    if (fz_byte(in) % 4 == 0) o.max_iter = fz_int(in);
+    if (fz_byte(in) % 4 == 0) o.max_steps = fz_int(in);
+    return o;
+}
+
+void fz_check_spline(const el_spline_result *r)
+{
+    FZ_FINITE(&r->pieces[0].x0, 7 * r->npieces);
+    FZ_FINITE(r->sigmas, r->npieces);
+    FZ_FINITE(r->forces, 2 * r->npieces);
+    FZ_FINITE(r->angles, r->npoints);
+    FZ_FINITE(r->curvatures, r->npoints);
+    FZ_FINITE(&r->sigma, 5);
 }
 
 int fz_blend_basis(fz_in *in, el_blend_basis *b)

@@ -60,6 +60,10 @@ el_discrete_params fz_discrete(fz_in *in);
  * sometimes with broken knots / mults / counts (el_bspline_check must catch
  * them). Arrays from fz_alloc. */
 el_bspline fz_bspline(fz_in *in, int dim);
+/* Spline options as a user sets them (mode, tension, length, ends, closed),
+ * sometimes absurd; and the finiteness checks of a spline result. */
+el_spline_options fz_spline_options(fz_in *in);
+void fz_check_spline(const el_spline_result *r);
 /* An initialised basis (MQ or elliptic); EL_OK or the init status. */
 int fz_blend_basis(fz_in *in, el_blend_basis *b);
 

@@ -1110,7 +1110,8 @@ int el_affine_quadratic_bspline(size_t npts, const double *xy, int clamped, stru
  * has no freedom left); out->max_deviation = -1 (the caller measures it against
  * its source). Errors: EL_EINVAL (NULL xy/out, npts < 4, non-finite input),
  * EL_ESINGULAR (A_2 or A_{m-2} = 0), EL_EDOM (an end point not on the turning
- * side of its joint's tangent line: no such parabola), EL_ENOMEM; out untouched
+ * side of its joint's tangent line: no such parabola; or so far from the
+ * polyline that the knots or poles overflow), EL_ENOMEM; out untouched
  * on error.
  */
 int el_affine_g2_bspline(size_t npts, const double *xy, const double *start, const double *end,

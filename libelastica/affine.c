@@ -470,6 +470,10 @@ int el_affine_g2_bspline(size_t npts, const double *xy, const double *start, con
     for (size_t j = 0; j < m; j++) b.mults[j] = 1;
     b.mults[0] = b.mults[m - 1] = 3;
     b.max_deviation = -1.0;
+    if (el_bspline_check(&b)) {   /* end points so far away that the knots or poles overflow */
+        el_bspline_free(&b);
+        return EL_EDOM;
+    }
     *out = b;
     return EL_OK;
 }

@@ -65,7 +65,7 @@ int el_discrete_eval(const el_discrete_params *p, size_t n, double *xy)
     if (st || walk_start(p, n, 0, &wk)) return domain_error(xy, 2 * n, NULL, 0);
     const double c = p->h * cos(p->phi), s = p->h * sin(p->phi);
     double x = p->x0, y = p->y0;
-    el_jacobi prev, v[BLOCK];
+    el_jacobi prev = {0}, v[BLOCK];   /* prev: set before its first use (i > 0) */
     for (size_t i0 = 0; i0 < n; i0 += BLOCK) {
         const size_t nb = n - i0 < BLOCK ? n - i0 : BLOCK;
         if (el__walk_values(&wk, nb, NULL, v, NULL)) return domain_error(xy, 2 * n, NULL, 0);

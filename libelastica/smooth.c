@@ -223,7 +223,7 @@ int el_smooth_jacobian(const el_smooth_params *p, size_t n, const double *s,
 int el_smooth_energy(const el_smooth_params *p, double *energy)
 {
     samples sc;
-    if (!energy || scan_samples(p, 1, &p->length, &sc)) return EL_EINVAL;
+    if (!p || !energy || scan_samples(p, 1, &p->length, &sc)) return EL_EINVAL;
     const double w = sqrt(p->mu), u1 = w * p->length + p->q, ka = fabs(p->k);
     el__modulus mod;
     el_jacobi a, b;

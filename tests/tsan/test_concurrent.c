@@ -6,7 +6,8 @@
  * serial ones (no hidden shared state). Jobs: smooth and discrete evaluation
  * and Jacobians (equally spaced and scattered s), Hermite by tension and by
  * length, the certified B-spline, B-spline evaluation, elliptic blends,
- * resampling.
+ * resampling, an elastic spline with its B-spline, and the fits that stay off
+ * Ipopt (its solves are serialised by a lock: not what this test is about).
  */
 #include <pthread.h>
 #include <stdio.h>
@@ -122,10 +123,54 @@ static int job_resample(double *out, size_t *nout)
     return st;
 }
 
+static int job_spline(double *out, size_t *nout)
+{
+    const double xy[12] = {0, 0, 2, 1.2, 4.5, 1.6, 7, 0.9, 9.2, -0.3, 11, 0.4};
+    el_spline_options o;
+    el_spline_options_defaults(&o);
+    o.sigma = 0.05;
+    o.end.kind = EL_SPLINE_TANGENT;
+    o.end.tangent[0] = 1.0;
+    el_spline_result r;
+    el_bspline b;
+    int st = el_spline_solve(xy, 6, &o, &r);
+    if (!st) st = el_spline_to_bspline(&r, 1e-6, 5, &b);
+    *nout = 0;
+    if (!st) {
+        for (size_t i = 0; i < r.npieces; i++) memcpy(out + 7 * i, &r.pieces[i], 7 * sizeof(double));
+        *nout = 7 * r.npieces;
+        const size_t nb = 2 * b.npoles < NOUT - *nout ? 2 * b.npoles : NOUT - *nout;
+        memcpy(out + *nout, b.poles, nb * sizeof(double));
+        *nout += nb;
+        el_bspline_free(&b);
+    }
+    el_spline_result_free(&r);
+    return st;
+}
+
+/* a noisy-free orthogonal smooth fit and a paired discrete fit of samples of SP:
+ * the common path (Levenberg-Marquardt, no Ipopt) */
+static int job_fit(double *out, size_t *nout)
+{
+    double s[NS], xy[2 * NS];
+    for (int i = 0; i < NS; i++) s[i] = SP.length * (i + 0.3 * (i % 3)) / (NS + 1);
+    int st = el_smooth_eval(&SP, NS, s, xy, NULL, NULL);
+    el_fit_smooth_result rs;
+    el_fit_discrete_result rd;
+    if (!st) st = el_fit_smooth(xy, NS, NULL, NULL, &rs, out + 14, out + 14 + NS);
+    if (!st) st = el_fit_discrete(xy, NS, NULL, NULL, &rd, NULL, NULL);
+    if (!st) {
+        memcpy(out, &rs.params, 7 * sizeof(double));
+        memcpy(out + 7, &rd.params, 7 * sizeof(double));
+    }
+    *nout = 14 + 2 * NS;
+    return st;
+}
+
 static const struct { const char *name; job_fn fn; } JOBS[] = {
     {"smooth", job_smooth}, {"discrete", job_discrete}, {"hermite tension", job_hermite_tension},
     {"hermite length", job_hermite_length}, {"bspline", job_bspline}, {"blend", job_blend},
-    {"resample", job_resample},
+    {"resample", job_resample}, {"spline", job_spline}, {"fit", job_fit},
 };
 enum { NJOBS = sizeof JOBS / sizeof *JOBS };
 
