@@ -4,6 +4,7 @@
  *                        curve through two curvature states (Theorem 7) and the objective;
  *   hermite_tension.c    all solutions for a given tension (seed 004 §4) and the analysis;
  *   hermite_length.c     all solutions for a given length;
+ *   hermite_chain.c      a solution near the separatrix as a chain split at its saddles;
  *   hermite.c            the public entry points: normalisation, world-frame solutions.
  */
 #ifndef EL_HERMITE_INTERNAL_H
@@ -85,5 +86,20 @@ int el__hermite_roots_push(hrootlist *l, const hroot *r);
  * (hermite_length.c): samples per search interval ns, sigma lines ng. */
 int el__hermite_solve_tension(hprob *pr, int ns, hrootlist *out);
 int el__hermite_solve_length(hprob *pr, double Lt, int ng, int ns, hrootlist *out);
+
+/* The world frame of a problem: the ends, their tangent angles, d = |p1 - p0|, and
+ * rot, the angle that turns the normalised frame into the world's. */
+typedef struct {
+    double p0[2], p1[2], psi0, psi1, d, rot;
+} hframe;
+
+/* The solution s (one piece, from the root: its curve, length, scalars), whose curve
+ * no single el_smooth_params carries to tol, as a chain split at its saddles
+ * (hermite_chain.c): sep = |F| - sigma of the curve (world units, exact), mode and
+ * target as el_hermite_solve's (the given sigma or length). EL_OK with s replaced by
+ * the chain when its residual is below s's (s->npieces > 1); EL_EDOM when the curve
+ * passes no saddle or the chain cannot be built (s unchanged). */
+int el__hermite_chain(const hframe *fr, int mode, double target, double sep, double tol,
+                      el_hermite_solution *s);
 
 #endif
