@@ -1176,6 +1176,23 @@ int el_smooth_to_bspline(const el_smooth_params *p, double tol, int degree, el_b
  */
 int el_smooth_to_bspline_g2(const el_smooth_params *p, double tol, int degree, el_bspline *out);
 
+/*
+ * One B-spline (planar, degree 3..7, clamped) within tol of a chain of n >= 1
+ * smooth elastica segments that meet G2 (each starting where the one before ends,
+ * with its tangent and curvature: an elastic spline's pieces, a Hermite chain):
+ * each piece by el_smooth_to_bspline_g2, joined with knot multiplicity degree - 2,
+ * so the B-spline is C2 in its parameter, the arc length from the first piece's
+ * start. out->max_deviation is the largest certified distance of the pieces plus
+ * the rounding of the joins (and what a joint's curvature mismatch costs).
+ * Errors: EL_EINVAL (NULL, n = 0, tol <= 0, degree outside 3..7, a piece
+ * el_smooth_check refuses), EL_EDOM (tol below what double precision resolves, see
+ * el_smooth_to_bspline), EL_EMAXITER (some piece did not reach tol: the B-spline is
+ * returned with its honest certified distance), EL_ENOMEM, EL_ESINGULAR. out
+ * untouched on errors other than EL_EMAXITER.
+ */
+int el_smooth_chain_to_bspline(const el_smooth_params *pieces, size_t n, double tol, int degree,
+                               el_bspline *out);
+
 /* ------------------------------------------------------------------- blend */
 
 /*

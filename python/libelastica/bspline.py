@@ -1,12 +1,13 @@
 """B-splines over the C library: the BSpline type, the natural C2 cubic through
-a polyline, and the tolerance-certified B-spline of a smooth elastica."""
+a polyline, and the tolerance-certified B-spline of a smooth elastica (or a chain
+of them)."""
 from __future__ import annotations
 
 from typing import Any
 
 import numpy as np
 
-from ._ffi import as_points, as_vector, bspline_from_c, check, dptr, ffi, lib
+from ._ffi import NotConvergedError, as_points, as_vector, bspline_from_c, check, dptr, ffi, lib
 
 
 class BSpline:
@@ -148,4 +149,27 @@ def smooth_to_bspline(curve, tol: float = 1e-6, degree: int = 3) -> BSpline:
         setattr(p, name, float(getattr(curve, name)))
     b = ffi.new("el_bspline *")
     check(lib.el_smooth_to_bspline(p, float(tol), int(degree), b), "to_bspline")
+    return bspline_from_c(b)
+
+
+def smooth_chain_to_bspline(pieces, tol: float = 1e-6, degree: int = 3) -> BSpline:
+    """ONE clamped degree-3..7 B-spline within ``tol`` of a chain of SmoothElastica
+    pieces that meet G2 (each starting where the one before ends), parametrised by
+    arc length from the first piece's start: each piece with exact end point, unit
+    tangent and curvature (el_smooth_chain_to_bspline), joined C2. ``max_deviation``
+    is the certified distance; NotConvergedError (with it) when tol is not reached."""
+    if int(degree) != degree:
+        raise ValueError(f"to_bspline: degree must be an integer, got {degree}")
+    arr = ffi.new("el_smooth_params[]", len(pieces))
+    for i, c in enumerate(pieces):
+        for name in ("x0", "y0", "phi", "mu", "k", "q", "length"):
+            setattr(arr[i], name, float(getattr(c, name)))
+    b = ffi.new("el_bspline *")
+    st = lib.el_smooth_chain_to_bspline(arr, len(pieces), float(tol), int(degree), b)
+    if st == lib.EL_EMAXITER:
+        dev = float(b.max_deviation)
+        lib.el_bspline_free(b)
+        raise NotConvergedError(st, f"to_bspline: tolerance {tol:g} not reached "
+                                    f"(certified {dev:.3g}); raise tol")
+    check(st, "to_bspline")
     return bspline_from_c(b)

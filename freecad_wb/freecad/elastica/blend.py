@@ -10,7 +10,7 @@ import json
 import FreeCAD as App
 
 from . import defaults
-from .geometry import (curve_bspline, el, is_sketch, link_edge, np, part_bspline,
+from .geometry import (el, is_sketch, link_edge, np, part_bspline,
                        plane_coordinates, sketch_geo_of_edge)
 from .proxy import (FeatureProxy, InputProblem, add_enum, add_property, attach_view,
                     check_degree, check_number, check_tolerance, read_only)
@@ -223,7 +223,8 @@ class BlendProxy(FeatureProxy):
                                f"(0 to {len(curves) - 1})")
         tol, degree = check_tolerance(obj.Tolerance), check_degree(obj.Degree)
         try:
-            r["bspline"] = curve_bspline(curves[obj.Solution], tol, degree)
+            # a SmoothElastica, or near the separatrix a Hermite chain: both give one B-spline
+            r["bspline"] = curves[obj.Solution].to_bspline(tol=tol, degree=degree)
         except ValueError as exc:
             raise InputProblem(f"B-spline failed: {exc}") from None
         return r
