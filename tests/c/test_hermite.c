@@ -550,6 +550,60 @@ START_TEST(no_solution_lost_up_to_high_tension)
 }
 END_TEST
 
+/* The chains lie on the exact curve: tests/data/hermite_chain_ref.txt holds points
+ * of exact solutions near the separatrix (sigma |p1-p0|^2 in [300, 1e4]), found at 90
+ * digits by Newton on the first integrals (tests/data/gen_hermite_chain_ref.py); each
+ * is among the returned solutions (same kappa0 and length), and the chain passes
+ * within 1e-9 |p1 - p0| of every reference point (the header's ~5e-10: what a double
+ * k near 1 allows) at the same arc length, up to a shift along the curve of the
+ * size of its length's error. */
+START_TEST(chains_lie_on_the_exact_curve)
+{
+    FILE *f = fopen("../data/hermite_chain_ref.txt", "r");
+    ck_assert_msg(f != NULL, "tests/data/hermite_chain_ref.txt missing");
+    int lines = 0, chains = 0;
+    double worst = 0.0, P[2], V[2], sigma, L, k0, xy[22];
+    int np;
+    while (fscanf(f, "%lf %lf %lf %lf %lf %lf %lf %d", &P[0], &P[1], &V[0], &V[1], &sigma, &L, &k0, &np) == 8) {
+        for (int j = 0; j < 22; j++) ck_assert_int_eq(fscanf(f, "%lf", &xy[j]), 1);
+        lines++;
+        const double p0[2] = {0, 0}, t0[2] = {0, 1};
+        el_hermite_options o;
+        el_hermite_options_defaults(&o);
+        o.sigma = sigma;
+        el_hermite_result r;
+        ck_assert_int_eq(el_hermite_solve(p0, t0, P, V, &o, &r), EL_OK);
+        const el_hermite_solution *s = NULL;
+        for (size_t i = 0; i < r.count && !s; i++)
+            if (fabs(r.solutions[i].kappa0 - k0) <= 1e-6 * (1.0 + fabs(k0)) &&
+                fabs(r.solutions[i].length - L) <= 1e-6 * L)
+                s = &r.solutions[i];
+        ck_assert_msg(s != NULL, "sigma %g: the exact solution kappa0 %.10g, L %.10g is not returned", sigma, k0, L);
+        chains += s->npieces > 1;
+        const el_smooth_params *pc[3];
+        const int n = pieces_of(s, pc);
+        for (int j = 0; j <= 10; j++) {
+            /* the piece holding arc length t, and the distance across the curve */
+            double t = s->length * j / 10.0, q[2], th;
+            int i = 0;
+            while (i + 1 < n && t > pc[i]->length) t -= pc[i++]->length;
+            ck_assert_int_eq(el_smooth_eval(pc[i], 1, &t, q, &th, NULL), EL_OK);
+            const double dx = q[0] - xy[2 * j], dy = q[1] - xy[2 * j + 1];
+            worst = fmax(worst, fabs(dx * sin(th) - dy * cos(th)));
+            ck_assert_msg(hypot(dx, dy) <= 1e-9 + 2.0 * fabs(s->length - L),
+                          "sigma %g, point %d: %g from the exact curve", sigma, j, hypot(dx, dy));
+        }
+        el_hermite_result_free(&r);
+    }
+    fclose(f);
+    ck_assert_int_ge(lines, 30);
+    ck_assert_int_ge(chains, 30);
+    ck_assert_msg(worst <= 1e-9, "a chain lies %g across from the exact curve", worst);
+    fprintf(stderr, "chains_lie_on_the_exact_curve: %d solutions (%d chains), at most %.2g across\n",
+            lines, chains, worst);
+}
+END_TEST
+
 /* ------------------------------------------------------------ degenerate data */
 
 START_TEST(collinear_data_give_the_straight_segment)
@@ -755,6 +809,7 @@ int main(void)
     tcase_add_test(tc, mirrored_data_give_mirrored_solutions);
     tcase_add_test(tc, near_separatrix_solutions_meet_tol);
     tcase_add_test(tc, no_solution_lost_up_to_high_tension);
+    tcase_add_test(tc, chains_lie_on_the_exact_curve);
     tcase_add_test(tc, collinear_data_give_the_straight_segment);
     tcase_add_test(tc, opposite_and_parallel_tangents);
     tcase_add_test(tc, circle_is_found_to_its_accuracy);
