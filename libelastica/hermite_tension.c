@@ -163,7 +163,7 @@ static void poly_roots_in(const double *c_in, int deg, double lo, double hi, dou
     double d[8], crit[8], pts[10], dp;
     int nc;
     for (int i = 1; i <= deg; i++) d[i - 1] = i * c[i];
-    poly_roots_in(d, deg - 1, lo, hi, 1e-10, crit, &nc);
+    poly_roots_in(d, deg - 1, lo, hi, 1e-7, crit, &nc);
     int np = 0;
     pts[np++] = lo;
     for (int i = 0; i < nc; i++) pts[np++] = crit[i];
@@ -353,10 +353,7 @@ static int split_points(const hprob *pr, int b, double X, const double *r40, con
 
 /* ------------------------------------------------------------ root finding on the pieces */
 
-/* The objective of one branch with a small cache of the last evaluations: GSL's
- * Brent re-evaluates the bracket ends (already sampled) in gsl_root_fsolver_set,
- * and the root it returns is its last evaluation, whose state the solution needs. */
-#define NCACHE 4
+/* The objective of one branch. */
 typedef struct {
     const hprob *pr;
     int b;
@@ -365,11 +362,6 @@ typedef struct {
      * starting guess of its Newton (hermite_objective.c) */
     int sep, side;
     double w0;
-    int ci;                      /* next slot */
-    double cx[NCACHE];           /* cached abscissae (NaN: empty) */
-    int crc[NCACHE], cfull[NCACHE];
-    hstate cst[NCACHE];          /* cfull: full state, else only cst.f */
-    double cw[NCACHE];           /* the unknown x of the cached state */
 } fctx;
 
 static void fctx_init(fctx *c, const hprob *pr, int b)
@@ -377,18 +369,6 @@ static void fctx_init(fctx *c, const hprob *pr, int b)
     memset(c, 0, sizeof *c);
     c->pr = pr;
     c->b = b;
-    for (int i = 0; i < NCACHE; i++) c->cx[i] = NAN;
-}
-
-static void cache_put(fctx *c, double x, int rc, const hstate *st, int full, double w)
-{
-    const int i = c->ci;
-    c->ci = (i + 1) % NCACHE;
-    c->cx[i] = x;
-    c->crc[i] = rc;
-    c->cfull[i] = full;
-    c->cst[i] = *st;
-    c->cw[i] = w;
 }
 
 /* The objective at abscissa u (x, or y in the separatrix chart) with Carlson's
@@ -410,50 +390,15 @@ static int piece_eval(fctx *c, double u, double qs, hstate *st, double *x)
     return rc;
 }
 
-/* piece_eval (full precision) through the cache; need_full: the whole state is wanted,
- * not only f; *x (may be NULL) the unknown x. */
-static int cached_eval(fctx *c, double u, int need_full, hstate *st, double *x)
-{
-    double w;
-    for (int i = 0; i < NCACHE; i++)
-        if (c->cx[i] == u && (c->cfull[i] || !need_full)) {
-            *st = c->cst[i];
-            if (x) *x = c->cw[i];
-            return c->crc[i];
-        }
-    const int rc = piece_eval(c, u, 1.0, st, &w);
-    cache_put(c, u, rc, st, 1, w);
-    if (x) *x = w;
-    return rc;
-}
-
-/* Seed the cache with a known objective value (a sample). */
-static void cache_seed(fctx *c, double x, double f)
-{
-    hstate st;
-    memset(&st, 0, sizeof st);
-    st.f = f;
-    cache_put(c, x, isfinite(f) ? EL_OK : EL_EDOM, &st, 0, NAN);
-}
-
 /* The objective for the samples that look for sign changes: elliptic integrals to
  * about 1e-8 instead of 1e-16 (COARSE_QS, one or two duplication steps fewer); its
- * sign and rough size are used, and Brent and every accepted root use el__hermite_full_eval. */
+ * sign and rough size are used, and the root finder and every accepted root the full precision. */
 static double fobj_coarse(fctx *c, double x)
 {
     hstate st;
     double w;
     return piece_eval(c, x, COARSE_QS, &st, &w) ? GSL_NAN : st.f;
 }
-
-static double fobj(double x, void *p)
-{
-    fctx *c = p;
-    hstate st;
-    if (cached_eval(c, x, 0, &st, NULL)) return GSL_NAN;
-    return st.f;
-}
-
 
 hroot el__hermite_mkroot(double x, int b, double sigma)
 {
@@ -478,38 +423,50 @@ int el__hermite_roots_push(hrootlist *l, const hroot *r)
     return EL_OK;
 }
 
-/* Brent (gsl_root_fsolver_brent) on [a, b] with f(a) f(b) < 0; accept a root where
- * |f| is small (a sign change across a jump of f is not a root). */
-static int brent_root(fctx *c, double a, double fa, double b, double fb, hrootlist *out)
+/* The root on [a, b] with f(a) f(b) < 0 (the samples' coarse values), by the
+ * Anderson-Bjorck variant of regula falsi (superlinear, the bracket kept): with the
+ * coarse objective while the bracket is wider than 1e-6 of its abscissae, then with
+ * full precision until |f| (the end position error along F, |P| = 1) is at rounding
+ * level (1e-14) or the bracket is 4e-16 |x| wide; a root where |f| <= 1e-8. A sign
+ * change across a jump of f (L wrapping at a period) is no root: the bracket closes
+ * with |f| large. (GSL's Brent needed ~8 full evaluations per root from the samples'
+ * brackets, where f is steep next to a split point; this ~5 coarse and ~2 full.) */
+static int bracket_root(fctx *c, double a, double fa, double b, double fb, hrootlist *out)
 {
-    cache_seed(c, a, fa);
-    cache_seed(c, b, fb);
-    gsl_function fn = {fobj, c};
-    gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
-    if (!s) return EL_ENOMEM;
-    int ok = gsl_root_fsolver_set(s, &fn, a, b) == GSL_SUCCESS;
-    double x = 0.5 * (a + b);
-    for (int it = 0; ok && it < 200; it++) {
-        if (gsl_root_fsolver_iterate(s) != GSL_SUCCESS) { ok = 0; break; }
-        x = gsl_root_fsolver_root(s);
-        const double lo = gsl_root_fsolver_x_lower(s), hi = gsl_root_fsolver_x_upper(s);
-        if (gsl_root_test_interval(lo, hi, 1e-300, 4e-16) == GSL_SUCCESS) break;
-        /* |f| (the end position error along F, |P| = 1) at rounding level: done, without
-         * the last steps that only shrink the bracket from the other side (x was GSL's
-         * last evaluation: the cache answers) */
-        {
-            hstate st;
-            if (!cached_eval(c, x, 0, &st, NULL) && fabs(st.f) <= 1e-14) break;
+    hroot r = el__hermite_mkroot(a, c->b, c->pr->sigma);
+    int ok = 0, full = 0;
+    double halved = fabs(b - a);   /* the bracket three steps ago: bisect unless it halved */
+    for (int it = 0; it < 100; it++) {
+        const double span = fabs(b - a), scale = fmax(fabs(a), fabs(b));
+        if (!full && span <= 1e-6 * (scale + 1e-3)) full = 1;
+        double x = (a * fb - b * fa) / (fb - fa);
+        if (it % 3 == 2) {
+            if (!(span < 0.5 * halved)) x = 0.5 * (a + b);
+            halved = span;
         }
-        /* a sign change across a jump of f (L wrapping at a period): |f| stays large
-         * while the bracket shrinks; a root would need a slope above 1e5 */
-        if (hi - lo < 1e-9 * (1.0 + fabs(x)) && !(fabs(fobj(x, c)) < 1e-4)) { ok = 0; break; }
+        if (!(x > fmin(a, b) && x < fmax(a, b))) x = 0.5 * (a + b);
+        const double step = fabs(x - b);
+        double w;
+        if (piece_eval(c, x, full ? 1.0 : COARSE_QS, &r.st, &w)) break;   /* no curve: no root */
+        if (!full && fabs(r.st.f) <= 1e-6) {     /* near the root: its value in full precision */
+            full = 1;
+            if (piece_eval(c, x, 1.0, &r.st, &w)) break;
+        }
+        r.x = w;
+        const double f = r.st.f;
+        if (full && (fabs(f) <= 1e-14 || span <= 4e-16 * scale || step <= 2e-16 * scale)) { ok = 1; break; }
+        if (span < 1e-9 * (1.0 + fabs(x)) && !(fabs(f) < 1e-4)) break;    /* a jump */
+        if (f * fb < 0.0) {
+            a = b;
+            fa = fb;
+        } else {
+            const double m = 1.0 - f / fb;
+            fa *= m > 0.0 ? m : 0.5;
+        }
+        b = x;
+        fb = f;
     }
-    gsl_root_fsolver_free(s);
-    if (!ok) return EL_OK;
-    hroot r = el__hermite_mkroot(x, c->b, c->pr->sigma);
-    if (cached_eval(c, x, 1, &r.st, &r.x)) return EL_OK;
-    if (!(fabs(r.st.f) <= 1e-8)) return EL_OK;
+    if (!ok || !(fabs(r.st.f) <= 1e-8)) return EL_OK;
     return el__hermite_roots_push(out, &r);
 }
 
@@ -536,8 +493,8 @@ static int touch_check(fctx *c, double a, double fa, double m, double fm, double
             if (v < 0.0) {
                 gsl_min_fminimizer_free(s);
                 const double fxm = fobj_coarse(c, xm);
-                if ((rc = brent_root(c, a, fa, xm, fxm, out))) return rc;
-                return brent_root(c, xm, fxm, b, fb, out);
+                if ((rc = bracket_root(c, a, fa, xm, fxm, out))) return rc;
+                return bracket_root(c, xm, fxm, b, fb, out);
             }
             if (gsl_min_test_interval(gsl_min_fminimizer_x_lower(s), gsl_min_fminimizer_x_upper(s),
                                       1e-11, 1e-9) == GSL_SUCCESS) break;
@@ -545,7 +502,7 @@ static int touch_check(fctx *c, double a, double fa, double m, double fm, double
         /* a double zero (tangency): accept it when f vanishes there */
         const double xm = gsl_min_fminimizer_x_minimum(s);
         hroot r = el__hermite_mkroot(xm, c->b, c->pr->sigma);
-        if (!cached_eval(c, xm, 1, &r.st, &r.x) && fabs(r.st.f) <= 1e-11) rc = el__hermite_roots_push(out, &r);
+        if (!piece_eval(c, xm, 1.0, &r.st, &r.x) && fabs(r.st.f) <= 1e-11) rc = el__hermite_roots_push(out, &r);
     }
     gsl_min_fminimizer_free(s);
     return rc;
@@ -650,7 +607,7 @@ static int solve_samples(fctx *c, double *xs, double *fs, int ns, double w, hroo
             hroot r = el__hermite_mkroot(xs[j], c->b, c->pr->sigma);
             if (!piece_eval(c, xs[j], 1.0, &r.st, &r.x) && (rc = el__hermite_roots_push(out, &r))) return rc;
         } else if (fs[j] * fs[j + 1] < 0.0) {
-            if ((rc = brent_root(c, xs[j], fs[j], xs[j + 1], fs[j + 1], out))) return rc;
+            if ((rc = bracket_root(c, xs[j], fs[j], xs[j + 1], fs[j + 1], out))) return rc;
         } else if (j > 0 && isfinite(fs[j - 1]) && fs[j - 1] * fs[j] > 0.0 &&
                    fabs(fs[j]) < fabs(fs[j - 1]) && fabs(fs[j]) < fabs(fs[j + 1]) &&
                    (parabola_min(xs + j - 1, fs + j - 1) < 0.5 * fabs(fs[j]) ||
