@@ -133,12 +133,11 @@ def _buffers():
     return b
 
 
-# el_hermite_solution unpacked in one go by a struct format built from cffi's layout
+# el_hermite_solution unpacked in one go by a struct format built from cffi's layout:
+# curve and the scalars (a chain's further pieces, rare, are read from the C struct)
 def _solution_struct():
-    pieces = [ffi.offsetof("el_hermite_solution", "curve")]
-    pieces += [ffi.offsetof("el_hermite_solution", "rest") + i * ffi.sizeof("el_smooth_params")
-               for i in range(2)]
-    fields = [(o + ffi.offsetof("el_smooth_params", n), "d") for o in pieces for n in SMOOTH_PARAMS]
+    curve = ffi.offsetof("el_hermite_solution", "curve")
+    fields = [(curve + ffi.offsetof("el_smooth_params", n), "d") for n in SMOOTH_PARAMS]
     fields += [(ffi.offsetof("el_hermite_solution", n), "i" if n in ("has_inflection", "npieces") else "d")
                for n in ("length", "sigma", "energy", "has_inflection", "kappa0", "kappa1", "residual",
                          "npieces")]
@@ -161,17 +160,24 @@ def _piece(values) -> SmoothElastica:
 
 
 def _solution(row):
-    """A SmoothElastica (or a HermiteChain) from one unpacked el_hermite_solution: in
-    the order of the struct, curve, the scalars, rest[0], rest[1]."""
-    length, sigma, energy, infl, kappa0, kappa1, residual, npieces = row[7:15]
-    extra = dict(sigma=sigma, energy_value=energy, has_inflection=bool(infl), kappa0=kappa0,
-                 kappa1=kappa1, residual=residual)
-    if npieces == 1:
-        e = _piece(row[0:7])
-        e.__dict__.update(extra)
-        return e
-    starts = (0, 15, 22)[:npieces]
-    return HermiteChain([_piece(row[i:i + 7]) for i in starts], **extra)
+    """A SmoothElastica from one unpacked el_hermite_solution; a chain's row is returned
+    as it is (_chain completes it from the C struct)."""
+    x0, y0, phi, mu, k, q, length, _, sigma, energy, infl, kappa0, kappa1, residual, npieces = row
+    if npieces != 1:
+        return row
+    e = SmoothElastica.__new__(SmoothElastica)
+    e.__dict__.update(x0=x0, y0=y0, phi=phi, mu=mu, k=k, q=q, length=length, sigma=sigma,
+                      energy_value=energy, has_inflection=bool(infl), kappa0=kappa0,
+                      kappa1=kappa1, residual=residual)
+    return e
+
+
+def _chain(row, c) -> HermiteChain:
+    """The HermiteChain of an unpacked row and its C struct c (for the further pieces)."""
+    _, _, _, _, _, _, _, _, sigma, energy, infl, kappa0, kappa1, residual, npieces = row
+    rest = [_piece([getattr(c.rest[i], n) for n in SMOOTH_PARAMS]) for i in range(npieces - 1)]
+    return HermiteChain([_piece(row[:7])] + rest, sigma=sigma, energy_value=energy,
+                        has_inflection=bool(infl), kappa0=kappa0, kappa1=kappa1, residual=residual)
 
 
 def hermite(p0, t0, p1, t1, tension: Optional[float] = None,
@@ -228,7 +234,10 @@ def hermite(p0, t0, p1, t1, tension: Optional[float] = None,
         n = res.count
         if n:
             raw = ffi.buffer(res.solutions, n * _SOL_SIZE)
-            out.extend(_solution(r) for r in _SOL_STRUCT.iter_unpack(raw))
+            out.extend(map(_solution, _SOL_STRUCT.iter_unpack(raw)))
+            for i, e in enumerate(out):
+                if e.__class__ is tuple:
+                    out[i] = _chain(e, res.solutions[i])
         out.unrepresentable = int(res.unrepresentable)
     finally:
         lib.el_hermite_result_free(res)
