@@ -571,7 +571,7 @@ void el_hermite_options_defaults(el_hermite_options *opt);
  * |p1 - p0| = 1), the three cases of Theorem 6, the kappa_m bound of Theorem 9
  * (computed for every sigma), subintervals split at the real roots of (40),
  * at the special values (45) where the objective is singular and at the ends of
- * (18) and (44), bracketing and Brent's method on each. Length mode: the tension
+ * (18) and (44), bracketing and a root finder on each. Length mode: the tension
  * solutions form curves in the plane of the unknown and sigma; they are found on
  * opt->grid sigma lines and followed by continuation with the analytic gradient, and
  * the points of length L are solved for where the length crosses L (hermite_length.c).
@@ -621,8 +621,9 @@ void el_hermite_options_defaults(el_hermite_options *opt);
  * tension (possible only for length < ~1.06 |p1 - p0|) are not found.
  * Work, bounded by the options: tension mode evaluates the objective about
  * samples + 14 times per piece between split points (at most 65 pieces per branch,
- * two separatrix pieces of 11 samples at most per piece), plus Brent's iterations
- * (at most 200) per sign change; length mode solves grid tension problems and at
+ * two separatrix pieces of 11 samples at most per piece), plus at most 100
+ * root-finder iterations per sign change; a chain (near the separatrix) at most 10
+ * correction steps of 2 (m + 1) + 5 evaluations of its m + 1 unknowns; length mode solves grid tension problems and at
  * most 1e5 evaluations for the tracing (EL_EMAXITER beyond).
  * res is overwritten (not freed first). EL_EINVAL leaves res untouched; EL_EMAXITER
  * returns the solutions found; other errors leave it empty (count 0).

@@ -3,6 +3,7 @@
  *   hermite_objective.c  the normalised problem: curvature data (Theorem 6), the
  *                        curve through two curvature states (Theorem 7) and the objective;
  *   hermite_tension.c    all solutions for a given tension (seed 004 §4) and the analysis;
+ *   hermite_poly.c       the polynomials (18), (40), (45) and their real roots;
  *   hermite_length.c     all solutions for a given length;
  *   hermite_chain.c      a solution near the separatrix as a chain split at its saddles;
  *   hermite.c            the public entry points: normalisation, world-frame solutions.
@@ -75,6 +76,17 @@ int el__hermite_sep_eval(const hprob *pr, int base, int fi, int b, int side, dou
 int el__hermite_ell_fd(double S, double C, int big, double k2, double kc2, double qs,
                        double *F, double *D);
 double el__hermite_wrap_pi(double a);
+
+/* Real roots of sum c[i] x^i: degree <= 2 (gsl_poly_solve_quadratic), and degree <= 8 in
+ * [lo, hi], ascending, to the relative precision tol (hermite_poly.c). */
+int el__poly_real_roots(const double *c, int deg, double *roots, int *nroots);
+void el__poly_roots_in(const double *c, int deg, double lo, double hi, double tol, double *roots,
+                       int *nroots);
+/* The coefficients (low to high) of (40), its degree returned; the special values (45)
+ * (at most four); the coefficients of (18) in kappa0 (case 1). */
+int el__hermite_poly40(const hprob *pr, double c[9]);
+int el__hermite_special_values(const hprob *pr, double *out, int *n);
+void el__hermite_disc_coeffs(const hprob *pr, double a[3]);
 
 /* Raw solutions of the normalised problem. */
 typedef struct { double x; int b; double sigma; hstate st; } hroot;
