@@ -388,6 +388,36 @@ START_TEST(near_separatrix_solutions_meet_tol)
 }
 END_TEST
 
+/* Length mode near the chord (L = 1.02..1.05 |p1 - p0|): the solutions of high tension
+ * (sigma |p1-p0|^2 up to ~1e5) come as chains where one piece cannot meet tol; every
+ * one meets the ends and has the given length, none is unrepresentable. */
+START_TEST(length_mode_near_the_chord_returns_chains)
+{
+    unsigned long long st = 555;
+    size_t total = 0, chains = 0;
+    for (int t = 0; t < 12; t++) {
+        const double a = test_uniform(&st, -M_PI, M_PI), b = test_uniform(&st, -M_PI, M_PI);
+        const double p0[2] = {0, 0}, t0[2] = {1, 0}, p1[2] = {cos(a), sin(a)}, t1[2] = {cos(b), sin(b)};
+        el_hermite_options o;
+        el_hermite_options_defaults(&o);
+        o.mode = EL_HERMITE_LENGTH;
+        o.length = test_uniform(&st, 1.02, 1.05);
+        el_hermite_result r;
+        ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_OK);
+        check_result(p0, t0, p1, t1, &r, 1e-10);
+        ck_assert_uint_eq(r.unrepresentable, 0);
+        for (size_t i = 0; i < r.count; i++) {
+            ck_assert_close(r.solutions[i].length, o.length, 1e-12 * o.length);
+            chains += r.solutions[i].npieces > 1;
+        }
+        total += r.count;
+        el_hermite_result_free(&r);
+    }
+    ck_assert_uint_gt(chains, 5);
+    fprintf(stderr, "length_mode_near_the_chord_returns_chains: %zu solutions, %zu chains\n", total, chains);
+}
+END_TEST
+
 /* ------------------------------------------------------------ completeness up to high tension */
 
 /* A dense scan of the objective of the normalised problem, independent of the solver's
@@ -808,6 +838,7 @@ int main(void)
     tcase_add_test(tc, length_mode_inverts_tension_mode);
     tcase_add_test(tc, mirrored_data_give_mirrored_solutions);
     tcase_add_test(tc, near_separatrix_solutions_meet_tol);
+    tcase_add_test(tc, length_mode_near_the_chord_returns_chains);
     tcase_add_test(tc, no_solution_lost_up_to_high_tension);
     tcase_add_test(tc, chains_lie_on_the_exact_curve);
     tcase_add_test(tc, collinear_data_give_the_straight_segment);
