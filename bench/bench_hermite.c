@@ -2,8 +2,9 @@
  * problem, over 10 000 random problems (tension mode, sigma |p1-p0|^2 uniform in
  * [-10, 40], random points and tangents), and the length mode (L / |p1-p0| uniform
  * in [1.05, 3]) against the tension mode on the same 1000 problems, the two solved
- * alternately problem by problem. One JSON line per figure; "readme"/"value" mark
- * the README's figures. */
+ * alternately problem by problem; at high tension (sigma |p1-p0|^2 in five bands up to
+ * 1e4) the solutions, how many are chains (hermite_chain.c) and unrepresentable. One
+ * JSON line per figure; "readme"/"value" mark the README's figures. */
 #define _POSIX_C_SOURCE 199309L
 #include "elastica.h"
 #include <math.h>
@@ -101,6 +102,31 @@ int main(void)
            "\"value\": \"%.0f us (%.1f solutions); %.1fx the by-tension solve\"}\n",
            NL, tl[NL / 2], tl[(NL * 9) / 10], (double)nsl / NL, t[NL / 2], ratio, fail, tl[NL / 2],
            (double)nsl / NL, ratio);
+    /* high tension (issue 12): every solution returned, none unrepresentable; the chains */
+    const double bands[6] = {0.0, 100.0, 300.0, 1e3, 3e3, 1e4};
+    for (int k = 0; k < 5; k++) {
+        size_t n = 0, chains = 0, unrep = 0;
+        double ts = 0.0;
+        s = 99 + (unsigned long long)k;
+        for (int i = 0; i < 300; i++) {
+            const double pi = 3.14159265358979324, a = uni(&s, -pi, pi), b = uni(&s, -pi, pi);
+            const double p0[2] = {0, 0}, t0[2] = {0, 1}, p1[2] = {cos(a), sin(a)}, t1[2] = {cos(b), sin(b)};
+            el_hermite_options o;
+            el_hermite_options_defaults(&o);
+            o.sigma = uni(&s, bands[k], bands[k + 1]);
+            el_hermite_result r;
+            const double t1us = now_us();
+            if (el_hermite_solve(p0, t0, p1, t1, &o, &r)) continue;
+            ts += now_us() - t1us;
+            n += r.count;
+            unrep += r.unrepresentable;
+            for (size_t j = 0; j < r.count; j++) chains += r.solutions[j].npieces > 1;
+            el_hermite_result_free(&r);
+        }
+        printf("{\"bench\": \"hermite_high_tension\", \"sigma_d2\": [%g, %g], \"problems\": 300, "
+               "\"solutions\": %zu, \"chains\": %zu, \"unrepresentable\": %zu, \"mean_us\": %.1f}\n",
+               bands[k], bands[k + 1], n, chains, unrep, ts / 300.0);
+    }
     free(t);
     free(tl);
     return 0;

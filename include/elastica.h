@@ -657,31 +657,41 @@ typedef struct el_hermite_options {
 } el_hermite_options;
 
 /*
- * One solution. curve is a valid el_smooth_params (el_smooth_eval works on it)
- * with curve.length = length, running from p0 (curve(0) = p0, tangent t0) to p1
- * (curve(length) = p1, tangent t1). Inflectional curves have 0 < k < 1; a
- * non-inflectional loop has k > 1 when it turns counter-clockwise and k < -1
- * when it turns clockwise (kappa < 0); a circular arc (below) has k = +-1e4.
- * A straight segment is k = 0. kappa0, kappa1 are the curvatures at p0 and p1
- * (= curve's kappa at 0 and length). residual = max(position error / |p1-p0|,
- * tangent angle error) measured with el_smooth_eval at both ends.
+ * One solution: a valid el_smooth_params (el_smooth_eval works on it) running from
+ * p0 (curve(0) = p0, tangent t0) to p1 (curve(length) = p1, tangent t1), or, near
+ * the separatrix where no single el_smooth_params meets opt->tol (see
+ * el_hermite_solve), a chain of npieces = 2 or 3 pieces of the same elastica: curve
+ * (from p0), then rest[0] (and rest[1]), each starting where the one before ends,
+ * with its tangent (position and tangent continuous to rounding), the last ending at
+ * p1. The pieces split the curve at its saddles (the near-straight stretches
+ * between two loops); each piece has its own start point and its phase q measured
+ * from its own loop (curvature extremum). Unused rest[] entries are zero. Old
+ * callers that read only curve get a valid curve from p0 (the first piece).
+ * Inflectional curves have 0 < k < 1 (a chain's pieces alternate the sign of k); a
+ * non-inflectional loop has k > 1 when it turns counter-clockwise and k < -1 when it
+ * turns clockwise (kappa < 0); a circular arc (below) has k = +-1e4. A straight
+ * segment is k = 0. length, energy, kappa0, kappa1, has_inflection and residual are
+ * of the whole curve (chain): kappa0, kappa1 the curvatures at p0 and p1; residual =
+ * max(position error / |p1-p0|, tangent angle error) measured with el_smooth_eval at
+ * both ends.
  */
 typedef struct el_hermite_solution {
-    el_smooth_params curve;
-    double length;         /* arc length L */
-    double sigma;          /* tension (given or, in length mode, computed; 0 for a straight segment there) */
-    double energy;         /* bending energy integral kappa^2 ds */
-    int has_inflection;    /* 1 if kappa changes sign inside (0, L) */
-    double kappa0, kappa1; /* curvature at p0 and at p1 */
-    double residual;       /* end-condition error, see above */
+    el_smooth_params curve;    /* the curve, or its first piece when npieces > 1 */
+    double length;             /* arc length L (of the whole curve) */
+    double sigma;              /* tension (given or, in length mode, computed; 0 for a straight segment there) */
+    double energy;             /* bending energy integral kappa^2 ds */
+    int has_inflection;        /* 1 if kappa changes sign inside (0, L) */
+    double kappa0, kappa1;     /* curvature at p0 and at p1 */
+    double residual;           /* end-condition error, see above */
+    int npieces;               /* 1, or 2..3 for a chain */
+    el_smooth_params rest[2];  /* pieces 2..npieces of a chain, in order */
 } el_hermite_solution;
 
 /* Solutions sorted by increasing energy; released by el_hermite_result_free.
  * unrepresentable: curves that exist (found and exact in the solver's variables) but
- * that no el_smooth_params meets to opt->tol, so they are not in solutions: they lie so
- * close to the separatrix (|k| within ~1e-6 of 1, common for sigma |p1-p0|^2 above
- * ~200) that one ulp of the double k moves the end by more than tol (see
- * el_hermite_solve). A larger tol returns them, with their residual. */
+ * that neither one el_smooth_params nor a chain of them meets to opt->tol, so they are
+ * not in solutions (none met in tests up to sigma |p1-p0|^2 = 1e4 at the default tol;
+ * see el_hermite_solve). */
 typedef struct el_hermite_result {
     size_t count;
     el_hermite_solution *solutions; /* count entries, library-owned */
@@ -698,7 +708,7 @@ void el_hermite_options_defaults(el_hermite_options *opt);
  * |p1 - p0| = 1), the three cases of Theorem 6, the kappa_m bound of Theorem 9
  * (computed for every sigma), subintervals split at the real roots of (40),
  * at the special values (45) where the objective is singular and at the ends of
- * (18) and (44), bracketing and Brent's method on each. Length mode: the tension
+ * (18) and (44), bracketing and a root finder on each. Length mode: the tension
  * solutions form curves in the plane of the unknown and sigma; they are found on
  * opt->grid sigma lines and followed by continuation with the analytic gradient, and
  * the points of length L are solved for where the length crosses L (hermite_length.c).
@@ -720,27 +730,37 @@ void el_hermite_options_defaults(el_hermite_options *opt);
  * little, then a second one with k held at each of its nearest doubles).
  * High tension: near the separatrix (|F| = sigma, |k| = 1) the solutions lie
  * exponentially close to it (1 - |k| ~ exp(-sqrt(2 sigma) L') for the length L'
- * spent near the saddle): the solver searches there in ln(|F| - sigma), where they
- * are well conditioned, and finds them all (tested against a dense scan for
- * sigma |p1-p0|^2 up to 1e4). But el_smooth_params stores the modulus as k, and one
- * ulp of k moves the end by about 1e-16 |d curve(L)/dk|, which grows like
- * 1 / (1 - |k|): beyond what the polish can compensate (from sigma |p1-p0|^2 ~ 200:
- * ~60% of the solutions at 600, all above ~3000, where 1 - |k| is below 1e-16) such
- * a curve is not returned but counted in res->unrepresentable. A larger tol returns
- * those it can hold to that tol, with their residual.
+ * spent near the saddle, the near-straight stretch between two loops): the solver
+ * searches there in ln(|F| - sigma), where they are well conditioned, and finds them
+ * all (tested against a dense scan for sigma |p1-p0|^2 up to 1e4). But
+ * el_smooth_params stores the modulus as k, and one ulp of k moves the end of a curve
+ * through a saddle by about 1e-16 / (1 - |k|) (the distance 2K between its loops grows
+ * like ln 1/(1 - |k|)): from sigma |p1-p0|^2 ~ 200 (~60 % of the solutions at 600,
+ * all above ~3000) no single el_smooth_params meets tol. Such a curve is returned
+ * as a chain (el_hermite_solution.npieces = 2 or 3) split at its saddles, each
+ * piece with its own start point and phase measured from its own loop, so that the
+ * loops' distance is carried by the phases instead of the rounded k
+ * (hermite_chain.c); the phases are corrected until the chain meets the ends.
+ * The pieces are the same elastica up to the rounding of k: position and tangent
+ * continuous at the joints, curvature to ~1e-8 of its largest value (kappa' jumps
+ * by as little at a loop's joint), and the chain lies within ~5e-10 |p1 - p0| of the
+ * exact curve (against a 90-digit evaluation, sigma |p1-p0|^2 up to 1e4; no
+ * el_smooth_params can come closer where 1 - |k| ~ 1e-17). A chain is returned only
+ * where one piece cannot meet tol.
  * A circular arc (sigma = kappa^2, where the parametrisation needs |k| = inf) is
  * returned with k = 1e4 (counter-clockwise) or -1e4 (clockwise), accurate to ~1e-8
  * only: it appears when opt->tol allows.
  * Range: coordinates and |p1 - p0| at most 1e100, |p1 - p0| at least 1e-100 (the
  * curvature scales as 1/|p1 - p0|, mu as its square); sigma |p1 - p0|^2 at most 1e5
- * (above, every solution lies closer to the separatrix than the search reaches;
- * none would be representable, see above); any sigma below (very negative: no curve,
+ * (above, solutions lie closer to the separatrix than the search reaches, |F| - sigma
+ * below 1e-300 sigma); any sigma below (very negative: no curve,
  * count 0). Length mode searches the same range of tension: its solutions of higher
  * tension (possible only for length < ~1.06 |p1 - p0|) are not found.
  * Work, bounded by the options: tension mode evaluates the objective about
  * samples + 14 times per piece between split points (at most 65 pieces per branch,
- * two separatrix pieces of 11 samples at most per piece), plus Brent's iterations
- * (at most 200) per sign change; length mode solves grid tension problems and at
+ * two separatrix pieces of 11 samples at most per piece), plus at most 100
+ * root-finder iterations per sign change; a chain (near the separatrix) at most 10
+ * correction steps of 2 (m + 1) + 5 evaluations of its m + 1 unknowns; length mode solves grid tension problems and at
  * most 1e5 evaluations for the tracing (EL_EMAXITER beyond).
  * res is overwritten (not freed first). EL_EINVAL leaves res untouched; EL_EMAXITER
  * returns the solutions found; other errors leave it empty (count 0).
@@ -1361,6 +1381,23 @@ int el_smooth_to_bspline(const el_smooth_params *p, double tol, int degree, el_b
  * spans. Same certification, statuses and outputs as el_smooth_to_bspline.
  */
 int el_smooth_to_bspline_g2(const el_smooth_params *p, double tol, int degree, el_bspline *out);
+
+/*
+ * One B-spline (planar, degree 3..7, clamped) within tol of a chain of n >= 1
+ * smooth elastica segments that meet G2 (each starting where the one before ends,
+ * with its tangent and curvature: an elastic spline's pieces, a Hermite chain):
+ * each piece by el_smooth_to_bspline_g2, joined with knot multiplicity degree - 2,
+ * so the B-spline is C2 in its parameter, the arc length from the first piece's
+ * start. out->max_deviation is the largest certified distance of the pieces plus
+ * the rounding of the joins (and what a joint's curvature mismatch costs).
+ * Errors: EL_EINVAL (NULL, n = 0, tol <= 0, degree outside 3..7, a piece
+ * el_smooth_check refuses), EL_EDOM (tol below what double precision resolves, see
+ * el_smooth_to_bspline), EL_EMAXITER (some piece did not reach tol: the B-spline is
+ * returned with its honest certified distance), EL_ENOMEM, EL_ESINGULAR. out
+ * untouched on errors other than EL_EMAXITER.
+ */
+int el_smooth_chain_to_bspline(const el_smooth_params *pieces, size_t n, double tol, int degree,
+                               el_bspline *out);
 
 /* ------------------------------------------------------------------- blend */
 

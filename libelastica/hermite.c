@@ -83,14 +83,11 @@ static int params_from_state(double x0, double y0, double theta, double kappa, d
     return EL_OK;
 }
 
-typedef struct {
-    double p0[2], p1[2], psi0, psi1, d, rot; /* rot = psi0 - pi/2: normalised -> world angle */
-} frame;
 
 static double angle_err(double a, double b) { return fabs(el__hermite_wrap_pi(a - b)); }
 
 /* End residual of a solution measured with el_smooth_eval. */
-static int residual(const frame *fr, const el_hermite_solution *s, double *res)
+static int residual(const hframe *fr, const el_hermite_solution *s, double *res)
 {
     const double sv[2] = {0.0, s->curve.length};
     double xy[4], th[2];
@@ -105,7 +102,7 @@ static int residual(const frame *fr, const el_hermite_solution *s, double *res)
 
 /* Residual vector of a solution for the polish: end point (2, / d), tangent
  * angles at both ends (2), and the mode's scalar condition (sigma or length). */
-static int polish_res(const frame *fr, const el_smooth_params *p, int mode, double target,
+static int polish_res(const hframe *fr, const el_smooth_params *p, int mode, double target,
                       double *r)
 {
     const double sv[2] = {0.0, p->length};
@@ -125,7 +122,7 @@ static int polish_res(const frame *fr, const el_smooth_params *p, int mode, doub
 /* The polish's step test: -1 if q is invalid, else 1 if its end residual (the
  * first four entries of polish_res, max norm) is below that of r, else 0; rq gets
  * q's residual vector. */
-static int step_improves(const frame *fr, int mode, double target, const el_smooth_params *q,
+static int step_improves(const hframe *fr, int mode, double target, const el_smooth_params *q,
                          const double *r, double *rq)
 {
     if (el_smooth_check(q) || polish_res(fr, q, mode, target, rq)) return -1;
@@ -138,7 +135,7 @@ static int step_improves(const frame *fr, int mode, double target, const el_smoo
  * solutions whose end residual, measured with el_smooth_eval, misses tol by a
  * little (near the separatrix k = 1 the map from kappa0 to the parameters is
  * ill-conditioned). Keeps the result only when the residual improves. */
-static void polish(const frame *fr, int mode, double target, el_hermite_solution *s)
+static void polish(const hframe *fr, int mode, double target, el_hermite_solution *s)
 {
     el_smooth_params p = s->curve;
     double r[5];
@@ -205,7 +202,7 @@ static void polish(const frame *fr, int mode, double target, el_hermite_solution
  * Gauss-Newton on the remaining three parameters (tension: phi, q, L; length:
  * phi, mu, q) fits the four end conditions in least squares (GSL QR); the best
  * curve is kept if it improves the residual. */
-static void polish_fixed_k(const frame *fr, int mode, double target, el_hermite_solution *s)
+static void polish_fixed_k(const hframe *fr, int mode, double target, el_hermite_solution *s)
 {
     el_smooth_params best = s->curve;
     double best_res = s->residual;
@@ -267,19 +264,29 @@ static void polish_fixed_k(const frame *fr, int mode, double target, el_hermite_
  * variables (|f| at rounding level) and so close to the separatrix (|F| - sigma below
  * 1e-6 of |F| + sigma) that the double k (whose complement k'^2 = 1 - k^2 sets the
  * length near the saddle) moves the end by more than tol. */
-static int representation_limited(const hroot *r)
+/* |F| - sigma of a root (normalised; exact where the separatrix chart gave it), and
+ * |F| + |sigma|, its scale. */
+static double root_sep(const hroot *r, double *scale)
 {
     const hstate *st = &r->st;
     const double F1 = -2.0 * st->k0p, F2 = st->k0 * st->k0 - r->sigma, Fn = hypot(F1, F2);
-    const double sep = st->has_sep ? st->sep : Fn - r->sigma;
-    return fabs(st->f) <= 1e-11 && fabs(sep) <= 1e-6 * (Fn + fabs(r->sigma));
+    *scale = Fn + fabs(r->sigma);
+    return st->has_sep ? st->sep : Fn - r->sigma;
 }
 
-static int make_solution(const frame *fr, const hroot *r, el_hermite_solution *s)
+static int representation_limited(const hroot *r)
+{
+    double scale;
+    const double sep = root_sep(r, &scale);
+    return fabs(r->st.f) <= 1e-11 && fabs(sep) <= 1e-6 * scale;
+}
+
+static int make_solution(const hframe *fr, const hroot *r, el_hermite_solution *s)
 {
     const hstate *st = &r->st;
     const double d = fr->d;
     memset(s, 0, sizeof *s);
+    s->npieces = 1;
     s->length = st->L * d;
     s->sigma = r->sigma / (d * d);
     s->energy = st->E / d;
@@ -305,9 +312,10 @@ static int make_solution(const frame *fr, const hroot *r, el_hermite_solution *s
                              s->sigma, s->length, st->has_sep ? &sep : NULL, &s->curve);
 }
 
-static int straight_solution(const frame *fr, double sigma, el_hermite_solution *s)
+static int straight_solution(const hframe *fr, double sigma, el_hermite_solution *s)
 {
     memset(s, 0, sizeof *s);
+    s->npieces = 1;
     s->curve.x0 = fr->p0[0];
     s->curve.y0 = fr->p0[1];
     s->curve.phi = fr->psi0;
@@ -327,7 +335,7 @@ static int straight_solution(const frame *fr, double sigma, el_hermite_solution 
  * with kappa = 2 k sqrt(mu) dn(k u; 1/k) constant to 1/(2 k^2) = 5e-9 relative, and
  * el_smooth_eval's closed form loses about eps k^2 to cancellation, so the arc
  * meets the ends only to ~1e-8: it is returned when that is within opt->tol. */
-static int circle_arc(const frame *fr, const double u0[2], const double u1[2],
+static int circle_arc(const hframe *fr, const double u0[2], const double u1[2],
                       double *c, double *L)
 {
     const double P[2] = {fr->p1[0] - fr->p0[0], fr->p1[1] - fr->p0[1]};
@@ -339,10 +347,11 @@ static int circle_arc(const frame *fr, const double u0[2], const double u1[2],
     return 1;
 }
 
-static int circle_solution(const frame *fr, double c, double L, el_hermite_solution *s)
+static int circle_solution(const hframe *fr, double c, double L, el_hermite_solution *s)
 {
     const double k = 1e4;
     memset(s, 0, sizeof *s);
+    s->npieces = 1;
     s->curve.x0 = fr->p0[0];
     s->curve.y0 = fr->p0[1];
     s->curve.phi = fr->psi0;
@@ -428,7 +437,7 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
     res->unrepresentable = 0;
 
     /* normalisation (seed 004 §4): p0 = 0, t0 = (0, 1), |p1 - p0| = 1, sigma d^2 */
-    frame fr;
+    hframe fr;
     memcpy(fr.p0, p0, sizeof fr.p0);
     memcpy(fr.p1, p1, sizeof fr.p1);
     fr.psi0 = atan2(u0[1], u0[0]);
@@ -498,10 +507,16 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
             polish(&fr, opt->mode, target, &s);
             if (s.residual > opt->tol) polish_fixed_k(&fr, opt->mode, target, &s);
         }
-        if (!(s.residual <= opt->tol)) {
-            if (representation_limited(&roots.v[i])) unrep[nunrep++] = s;
-            continue;
+        /* near the separatrix a curve through a saddle that one piece cannot carry:
+         * the chain split at its saddles (hermite_chain.c) */
+        if (!(s.residual <= opt->tol) && representation_limited(&roots.v[i])) {
+            double scale;
+            const double sep = root_sep(&roots.v[i], &scale) / (fr.d * fr.d);
+            const double target = opt->mode == EL_HERMITE_TENSION ? opt->sigma : opt->length;
+            el__hermite_chain(&fr, opt->mode, target, sep, opt->tol, &s);
+            if (!(s.residual <= opt->tol)) { unrep[nunrep++] = s; continue; }
         }
+        if (!(s.residual <= opt->tol)) continue;
         int dup = 0;
         for (size_t j = 0; j < n && !dup; j++) {
             if (same_solution(&s, &sol[j], fr.d)) {

@@ -3,7 +3,9 @@
  *   hermite_objective.c  the normalised problem: curvature data (Theorem 6), the
  *                        curve through two curvature states (Theorem 7) and the objective;
  *   hermite_tension.c    all solutions for a given tension (seed 004 §4) and the analysis;
+ *   hermite_poly.c       the polynomials (18), (40), (45) and their real roots;
  *   hermite_length.c     all solutions for a given length;
+ *   hermite_chain.c      a solution near the separatrix as a chain split at its saddles;
  *   hermite.c            the public entry points: normalisation, world-frame solutions.
  */
 #ifndef EL_HERMITE_INTERNAL_H
@@ -75,6 +77,17 @@ int el__hermite_ell_fd(double S, double C, int big, double k2, double kc2, doubl
                        double *F, double *D);
 double el__hermite_wrap_pi(double a);
 
+/* Real roots of sum c[i] x^i: degree <= 2 (gsl_poly_solve_quadratic), and degree <= 8 in
+ * [lo, hi], ascending, to the relative precision tol (hermite_poly.c). */
+int el__poly_real_roots(const double *c, int deg, double *roots, int *nroots);
+void el__poly_roots_in(const double *c, int deg, double lo, double hi, double tol, double *roots,
+                       int *nroots);
+/* The coefficients (low to high) of (40), its degree returned; the special values (45)
+ * (at most four); the coefficients of (18) in kappa0 (case 1). */
+int el__hermite_poly40(const hprob *pr, double c[9]);
+int el__hermite_special_values(const hprob *pr, double *out, int *n);
+void el__hermite_disc_coeffs(const hprob *pr, double a[3]);
+
 /* Raw solutions of the normalised problem. */
 typedef struct { double x; int b; double sigma; hstate st; } hroot;
 typedef struct { hroot *v; size_t n, cap; } hrootlist;
@@ -85,5 +98,20 @@ int el__hermite_roots_push(hrootlist *l, const hroot *r);
  * (hermite_length.c): samples per search interval ns, sigma lines ng. */
 int el__hermite_solve_tension(hprob *pr, int ns, hrootlist *out);
 int el__hermite_solve_length(hprob *pr, double Lt, int ng, int ns, hrootlist *out);
+
+/* The world frame of a problem: the ends, their tangent angles, d = |p1 - p0|, and
+ * rot, the angle that turns the normalised frame into the world's. */
+typedef struct {
+    double p0[2], p1[2], psi0, psi1, d, rot;
+} hframe;
+
+/* The solution s (one piece, from the root: its curve, length, scalars), whose curve
+ * no single el_smooth_params carries to tol, as a chain split at its saddles
+ * (hermite_chain.c): sep = |F| - sigma of the curve (world units, exact), mode and
+ * target as el_hermite_solve's (the given sigma or length). EL_OK with s replaced by
+ * the chain when its residual is below s's (s->npieces > 1); EL_EDOM when the curve
+ * passes no saddle or the chain cannot be built (s unchanged). */
+int el__hermite_chain(const hframe *fr, int mode, double target, double sep, double tol,
+                      el_hermite_solution *s);
 
 #endif

@@ -1,13 +1,13 @@
 /*
  * Hermite interpolation for a given tension, seed 004 §4: the kappa_m bound of
- * Theorem 9, the pieces between the split points ((18), (40), (44), (45)), and
- * bracketing with Brent's method on each; el_hermite_analyse reports the same analysis.
+ * Theorem 9, the pieces between the split points ((18), (40), (44), (45); the
+ * polynomials in hermite_poly.c), sampling and root finding on each; el_hermite_analyse
+ * reports the same analysis.
  */
 #include "hermite_internal.h"
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_math.h>
 #include <gsl/gsl_min.h>
-#include <gsl/gsl_poly.h>
 #include <gsl/gsl_roots.h>
 #include <stdlib.h>
 #include <string.h>
@@ -105,170 +105,6 @@ static int cmp_double(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-/* Real roots of sum c[i] x^i (degree <= 2) by gsl_poly_solve_quadratic. */
-static int poly_real_roots(const double *c_in, int deg, double *roots, int *nroots)
-{
-    double c[3];
-    double cmax = 0.0;
-    for (int i = 0; i <= deg; i++) { c[i] = c_in[i]; cmax = fmax(cmax, fabs(c[i])); }
-    *nroots = 0;
-    while (deg > 0 && fabs(c[deg]) <= 1e-14 * cmax) deg--;
-    if (deg <= 0) return EL_OK;
-    double r0, r1;
-    const int n = deg == 2 ? gsl_poly_solve_quadratic(c[2], c[1], c[0], &r0, &r1) : (r0 = -c[0] / c[1], 1);
-    if (n > 0) roots[(*nroots)++] = r0;
-    if (n > 1) roots[(*nroots)++] = r1;
-    return EL_OK;
-}
-
-/* p(x) and p'(x) by Horner's scheme */
-static double horner(const double *c, int deg, double x, double *dp)
-{
-    double v = c[deg], d = 0.0;
-    for (int i = deg - 1; i >= 0; i--) { d = d * x + v; v = v * x + c[i]; }
-    *dp = d;
-    return v;
-}
-
-/* The real roots of sum c[i] x^i (degree <= 8) in [lo, hi], ascending: between
- * consecutive real roots of the derivative (found the same way, down to degree 2, to
- * the relative precision tol) the polynomial is monotone, so every sign change there
- * holds exactly one root, found by Newton's method kept inside the bracket (bisection
- * when a step leaves it or does not shrink it by half). Written here because GSL's
- * gsl_poly_complex_solve (the eigenvalues of the companion matrix) returns close
- * real roots of (40) as complex pairs once sigma is large (its coefficients then span
- * thirty orders of magnitude: none found at sigma |p1-p0|^2 = 4000 on test problems),
- * and computes the complex roots that are not needed. A root of even multiplicity
- * (no sign change) is not found. */
-static void poly_roots_in(const double *c_in, int deg, double lo, double hi, double tol,
-                          double *roots, int *nroots)
-{
-    /* the terms' sizes on the interval, |c_i| R^i: a leading coefficient negligible there
-     * (a degenerate problem) lowers the degree */
-    const double R = fmax(1.0, fmax(fabs(lo), fabs(hi)));
-    double c[9], tmax = 0.0, Ri = 1.0, Rdeg[9];
-    for (int i = 0; i <= deg; i++, Ri *= R) { c[i] = c_in[i]; Rdeg[i] = Ri; tmax = fmax(tmax, fabs(c[i]) * Ri); }
-    *nroots = 0;
-    while (deg > 0 && fabs(c[deg]) * Rdeg[deg] <= 1e-14 * tmax) deg--;
-    if (deg <= 0 || !(hi > lo)) return;
-    if (deg <= 2) {
-        double r[2];
-        int n;
-        poly_real_roots(c, deg, r, &n);
-        for (int i = 0; i < n; i++)
-            if (r[i] >= lo && r[i] <= hi) roots[(*nroots)++] = r[i];
-        if (*nroots == 2 && roots[0] > roots[1]) { const double t = roots[0]; roots[0] = roots[1]; roots[1] = t; }
-        return;
-    }
-    double d[8], crit[8], pts[10], dp;
-    int nc;
-    for (int i = 1; i <= deg; i++) d[i - 1] = i * c[i];
-    poly_roots_in(d, deg - 1, lo, hi, 1e-10, crit, &nc);
-    int np = 0;
-    pts[np++] = lo;
-    for (int i = 0; i < nc; i++) pts[np++] = crit[i];
-    pts[np++] = hi;
-    double fb = horner(c, deg, lo, &dp);
-    for (int i = 0; i + 1 < np; i++) {
-        double a = pts[i], b = pts[i + 1], fa = fb;
-        fb = horner(c, deg, b, &dp);
-        if (fa == 0.0) {
-            if (*nroots == 0 || roots[*nroots - 1] != a) roots[(*nroots)++] = a;
-            continue;
-        }
-        if (fb == 0.0 || fa * fb > 0.0) continue;
-        /* [a, b] with p(a) p(b) < 0: Newton, bisection when the step leaves the bracket
-         * or the previous step did not halve (rtsafe of Numerical Recipes) */
-        double x = 0.5 * (a + b), dxold = b - a, dx = dxold, ga = fa;
-        double fx = horner(c, deg, x, &dp);
-        for (int it = 0; it < 100; it++) {
-            if (((x - b) * dp - fx) * ((x - a) * dp - fx) > 0.0 || fabs(2.0 * fx) > fabs(dxold * dp)) {
-                dxold = dx;
-                dx = 0.5 * (b - a);
-                x = a + dx;
-            } else {
-                dxold = dx;
-                dx = fx / dp;
-                x -= dx;
-            }
-            if (fabs(dx) <= tol * fabs(x) + 1e-300) break;
-            fx = horner(c, deg, x, &dp);
-            if (fx == 0.0) break;
-            if (fx * ga > 0.0) { a = x; ga = fx; } else b = x;
-        }
-        roots[(*nroots)++] = x;
-    }
-}
-
-/* Small polynomial arithmetic (coefficients low to high, degree <= 8). */
-typedef struct { double c[9]; int d; } poly;
-static poly pmul(poly a, poly b)
-{
-    poly r = {{0}, a.d + b.d};
-    for (int i = 0; i <= a.d; i++)
-        for (int j = 0; j <= b.d; j++) r.c[i + j] += a.c[i] * b.c[j];
-    return r;
-}
-static poly padd(poly a, double sa, poly b, double sb)
-{
-    poly r = {{0}, a.d > b.d ? a.d : b.d};
-    for (int i = 0; i <= a.d; i++) r.c[i] += sa * a.c[i];
-    for (int i = 0; i <= b.d; i++) r.c[i] += sb * b.c[i];
-    return r;
-}
-
-/* Polynomial (40) (Theorem 11): its roots are the kappa0 with kappa_m^2 = 2 sigma.
- * kappa_m^2 = 2 sigma in (8) gives 4 kappa0'^2 = -D, D = (kappa0^2 - sigma)^2 - sigma^2 (42).
- * Case 1: with (16) 4 (kappa1 - C)^2 + P2^2 D = 0 (43); subtracting 4/P2 (17) leaves
- * kappa1 = N / M, N = 4 P2 C^2 + P2^3 D + 8 V1 C + 4 A P2, M = 8 (P2 C + V1); so
- * 4 (N - C M)^2 + P2^2 D M^2 = 0, degree 8, leading 4 P2^2 (P1^2 + P2^2)^2 as printed.
- * Case 2: kappa0' = (A - C^2)/(2 V1) gives (A - C^2)^2 + V1^2 D = 0. */
-static poly poly40(const hprob *pr)
-{
-    const double s = pr->sigma, P1 = pr->P1, P2 = pr->P2, V1 = pr->V1, V2 = pr->V2;
-    const poly w = {{-s, 0, 1}, 2};
-    const poly C = {{-0.5 * s * P1, 1.0, 0.5 * P1}, 2};
-    const poly A = {{s - s * V2, 0, V2}, 2};
-    const poly one = {{1}, 0};
-    const poly D = padd(pmul(w, w), 1.0, one, -s * s);
-    if (pr->hcase == 2) {
-        const poly AC = padd(A, 1.0, pmul(C, C), -1.0);
-        return padd(pmul(AC, AC), 1.0, D, V1 * V1);
-    }
-    poly N = padd(pmul(C, C), 4.0 * P2, D, P2 * P2 * P2);
-    N = padd(N, 1.0, C, 8.0 * V1);
-    N = padd(N, 1.0, A, 4.0 * P2);
-    const poly M = padd(C, 8.0 * P2, one, 8.0 * V1);
-    const poly NC = padd(N, 1.0, pmul(C, M), -1.0);
-    return padd(pmul(NC, NC), 4.0, pmul(D, pmul(M, M)), P2 * P2);
-}
-
-/* (45): kappa0^2 = sigma, and kappa0' = 0, which by (15), (16) is C^2 = A. With
- * w = kappa0^2 - sigma, C^2 - A = w (w P1^2/4 + P1 kappa0 + 1 - V2): the quartic
- * splits into kappa0^2 = sigma and a quadratic, so at most four values. */
-static int special_values(const hprob *pr, double *out, int *n)
-{
-    *n = 0;
-    const double s = pr->sigma, P1 = pr->P1, V2 = pr->V2;
-    if (s >= 0.0) { out[(*n)++] = -sqrt(s); out[(*n)++] = sqrt(s); }
-    if (pr->hcase == 3) return EL_OK;
-    const double q[3] = {1.0 - V2 - 0.25 * s * P1 * P1, P1, 0.25 * P1 * P1};
-    double r[2];
-    int nr, rc = poly_real_roots(q, 2, r, &nr);
-    if (rc) return rc;
-    for (int i = 0; i < nr; i++) out[(*n)++] = r[i];
-    return EL_OK;
-}
-
-/* The ends of (18) (case 1): disc(kappa0) = a2 kappa0^2 + a1 kappa0 + a0 >= 0. */
-static void disc_coeffs(const hprob *pr, double a[3])
-{
-    const double s = pr->sigma, P1 = pr->P1, P2 = pr->P2, V1 = pr->V1, V2 = pr->V2;
-    a[2] = P2 * V1 * P1 + P2 * P2 * V2;
-    a[1] = 2.0 * P2 * V1;
-    a[0] = V1 * V1 - P2 * V1 * P1 * s + P2 * P2 * s * (1.0 - V2);
-}
-
 /* Domain of the unknown on branch b: [-X, X]. */
 static double domain_half(const hprob *pr, int b)
 {
@@ -324,16 +160,16 @@ static int split_points(const hprob *pr, int b, double X, const double *r40, con
     }
     if (pr->hcase == 1) {
         double a[3];
-        disc_coeffs(pr, a);
-        if ((rc = poly_real_roots(a, 2, r, &nr))) return rc;
+        el__hermite_disc_coeffs(pr, a);
+        if ((rc = el__poly_real_roots(a, 2, r, &nr))) return rc;
         for (int i = 0; i < nr; i++) pt_add(l, r[i], 0);
         /* kappa1 = 0 in (17): 2 V1 C + A P2 = 0 */
         const double q[3] = {V1 * P1 * s + P2 * V2 * s - P2 * s, -2.0 * V1, -V1 * P1 - P2 * V2};
-        if ((rc = poly_real_roots(q, 2, r, &nr))) return rc;
+        if ((rc = el__poly_real_roots(q, 2, r, &nr))) return rc;
         for (int i = 0; i < nr; i++) pt_add(l, r[i], 1);
     } else {
         const double q[3] = {-0.5 * P1 * s, 1.0, 0.5 * P1}; /* C = 0 */
-        if ((rc = poly_real_roots(q, 2, r, &nr))) return rc;
+        if ((rc = el__poly_real_roots(q, 2, r, &nr))) return rc;
         for (int i = 0; i < nr; i++) pt_add(l, r[i], 1);
     }
     pt_add(l, 0.0, 1);
@@ -345,7 +181,7 @@ static int split_points(const hprob *pr, int b, double X, const double *r40, con
      * vanished at none of the special values of the 10 000 bench problems (31 000
      * evaluated). So only the singular ones split: F = 0 (the circle kappa0^2 = sigma,
      * kappa0' = 0 on this branch) and those without a curve (point_class) */
-    if ((rc = special_values(pr, r, &nr))) return rc;
+    if ((rc = el__hermite_special_values(pr, r, &nr))) return rc;
     for (int i = 0; i < nr; i++)
         if (fabs(r[i]) < X && point_class(pr, b, r[i]) == CLASS_NONE) pt_add(l, r[i], 0);
     return EL_OK;
@@ -353,10 +189,7 @@ static int split_points(const hprob *pr, int b, double X, const double *r40, con
 
 /* ------------------------------------------------------------ root finding on the pieces */
 
-/* The objective of one branch with a small cache of the last evaluations: GSL's
- * Brent re-evaluates the bracket ends (already sampled) in gsl_root_fsolver_set,
- * and the root it returns is its last evaluation, whose state the solution needs. */
-#define NCACHE 4
+/* The objective of one branch. */
 typedef struct {
     const hprob *pr;
     int b;
@@ -365,11 +198,6 @@ typedef struct {
      * starting guess of its Newton (hermite_objective.c) */
     int sep, side;
     double w0;
-    int ci;                      /* next slot */
-    double cx[NCACHE];           /* cached abscissae (NaN: empty) */
-    int crc[NCACHE], cfull[NCACHE];
-    hstate cst[NCACHE];          /* cfull: full state, else only cst.f */
-    double cw[NCACHE];           /* the unknown x of the cached state */
 } fctx;
 
 static void fctx_init(fctx *c, const hprob *pr, int b)
@@ -377,18 +205,6 @@ static void fctx_init(fctx *c, const hprob *pr, int b)
     memset(c, 0, sizeof *c);
     c->pr = pr;
     c->b = b;
-    for (int i = 0; i < NCACHE; i++) c->cx[i] = NAN;
-}
-
-static void cache_put(fctx *c, double x, int rc, const hstate *st, int full, double w)
-{
-    const int i = c->ci;
-    c->ci = (i + 1) % NCACHE;
-    c->cx[i] = x;
-    c->crc[i] = rc;
-    c->cfull[i] = full;
-    c->cst[i] = *st;
-    c->cw[i] = w;
 }
 
 /* The objective at abscissa u (x, or y in the separatrix chart) with Carlson's
@@ -410,50 +226,15 @@ static int piece_eval(fctx *c, double u, double qs, hstate *st, double *x)
     return rc;
 }
 
-/* piece_eval (full precision) through the cache; need_full: the whole state is wanted,
- * not only f; *x (may be NULL) the unknown x. */
-static int cached_eval(fctx *c, double u, int need_full, hstate *st, double *x)
-{
-    double w;
-    for (int i = 0; i < NCACHE; i++)
-        if (c->cx[i] == u && (c->cfull[i] || !need_full)) {
-            *st = c->cst[i];
-            if (x) *x = c->cw[i];
-            return c->crc[i];
-        }
-    const int rc = piece_eval(c, u, 1.0, st, &w);
-    cache_put(c, u, rc, st, 1, w);
-    if (x) *x = w;
-    return rc;
-}
-
-/* Seed the cache with a known objective value (a sample). */
-static void cache_seed(fctx *c, double x, double f)
-{
-    hstate st;
-    memset(&st, 0, sizeof st);
-    st.f = f;
-    cache_put(c, x, isfinite(f) ? EL_OK : EL_EDOM, &st, 0, NAN);
-}
-
 /* The objective for the samples that look for sign changes: elliptic integrals to
  * about 1e-8 instead of 1e-16 (COARSE_QS, one or two duplication steps fewer); its
- * sign and rough size are used, and Brent and every accepted root use el__hermite_full_eval. */
+ * sign and rough size are used, and the root finder and every accepted root the full precision. */
 static double fobj_coarse(fctx *c, double x)
 {
     hstate st;
     double w;
     return piece_eval(c, x, COARSE_QS, &st, &w) ? GSL_NAN : st.f;
 }
-
-static double fobj(double x, void *p)
-{
-    fctx *c = p;
-    hstate st;
-    if (cached_eval(c, x, 0, &st, NULL)) return GSL_NAN;
-    return st.f;
-}
-
 
 hroot el__hermite_mkroot(double x, int b, double sigma)
 {
@@ -478,38 +259,50 @@ int el__hermite_roots_push(hrootlist *l, const hroot *r)
     return EL_OK;
 }
 
-/* Brent (gsl_root_fsolver_brent) on [a, b] with f(a) f(b) < 0; accept a root where
- * |f| is small (a sign change across a jump of f is not a root). */
-static int brent_root(fctx *c, double a, double fa, double b, double fb, hrootlist *out)
+/* The root on [a, b] with f(a) f(b) < 0 (the samples' coarse values), by the
+ * Anderson-Bjorck variant of regula falsi (superlinear, the bracket kept): with the
+ * coarse objective while the bracket is wider than 1e-6 of its abscissae, then with
+ * full precision until |f| (the end position error along F, |P| = 1) is at rounding
+ * level (1e-14) or the bracket is 4e-16 |x| wide; a root where |f| <= 1e-8. A sign
+ * change across a jump of f (L wrapping at a period) is no root: the bracket closes
+ * with |f| large. (GSL's Brent needed ~8 full evaluations per root from the samples'
+ * brackets, where f is steep next to a split point; this ~5 coarse and ~2 full.) */
+static int bracket_root(fctx *c, double a, double fa, double b, double fb, hrootlist *out)
 {
-    cache_seed(c, a, fa);
-    cache_seed(c, b, fb);
-    gsl_function fn = {fobj, c};
-    gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
-    if (!s) return EL_ENOMEM;
-    int ok = gsl_root_fsolver_set(s, &fn, a, b) == GSL_SUCCESS;
-    double x = 0.5 * (a + b);
-    for (int it = 0; ok && it < 200; it++) {
-        if (gsl_root_fsolver_iterate(s) != GSL_SUCCESS) { ok = 0; break; }
-        x = gsl_root_fsolver_root(s);
-        const double lo = gsl_root_fsolver_x_lower(s), hi = gsl_root_fsolver_x_upper(s);
-        if (gsl_root_test_interval(lo, hi, 1e-300, 4e-16) == GSL_SUCCESS) break;
-        /* |f| (the end position error along F, |P| = 1) at rounding level: done, without
-         * the last steps that only shrink the bracket from the other side (x was GSL's
-         * last evaluation: the cache answers) */
-        {
-            hstate st;
-            if (!cached_eval(c, x, 0, &st, NULL) && fabs(st.f) <= 1e-14) break;
+    hroot r = el__hermite_mkroot(a, c->b, c->pr->sigma);
+    int ok = 0, full = 0;
+    double halved = fabs(b - a);   /* the bracket three steps ago: bisect unless it halved */
+    for (int it = 0; it < 100; it++) {
+        const double span = fabs(b - a), scale = fmax(fabs(a), fabs(b));
+        if (!full && span <= 1e-6 * (scale + 1e-3)) full = 1;
+        double x = (a * fb - b * fa) / (fb - fa);
+        if (it % 3 == 2) {
+            if (!(span < 0.5 * halved)) x = 0.5 * (a + b);
+            halved = span;
         }
-        /* a sign change across a jump of f (L wrapping at a period): |f| stays large
-         * while the bracket shrinks; a root would need a slope above 1e5 */
-        if (hi - lo < 1e-9 * (1.0 + fabs(x)) && !(fabs(fobj(x, c)) < 1e-4)) { ok = 0; break; }
+        if (!(x > fmin(a, b) && x < fmax(a, b))) x = 0.5 * (a + b);
+        const double step = fabs(x - b);
+        double w;
+        if (piece_eval(c, x, full ? 1.0 : COARSE_QS, &r.st, &w)) break;   /* no curve: no root */
+        if (!full && fabs(r.st.f) <= 1e-6) {     /* near the root: its value in full precision */
+            full = 1;
+            if (piece_eval(c, x, 1.0, &r.st, &w)) break;
+        }
+        r.x = w;
+        const double f = r.st.f;
+        if (full && (fabs(f) <= 1e-14 || span <= 4e-16 * scale || step <= 2e-16 * scale)) { ok = 1; break; }
+        if (span < 1e-9 * (1.0 + fabs(x)) && !(fabs(f) < 1e-4)) break;    /* a jump */
+        if (f * fb < 0.0) {
+            a = b;
+            fa = fb;
+        } else {
+            const double m = 1.0 - f / fb;
+            fa *= m > 0.0 ? m : 0.5;
+        }
+        b = x;
+        fb = f;
     }
-    gsl_root_fsolver_free(s);
-    if (!ok) return EL_OK;
-    hroot r = el__hermite_mkroot(x, c->b, c->pr->sigma);
-    if (cached_eval(c, x, 1, &r.st, &r.x)) return EL_OK;
-    if (!(fabs(r.st.f) <= 1e-8)) return EL_OK;
+    if (!ok || !(fabs(r.st.f) <= 1e-8)) return EL_OK;
     return el__hermite_roots_push(out, &r);
 }
 
@@ -536,8 +329,8 @@ static int touch_check(fctx *c, double a, double fa, double m, double fm, double
             if (v < 0.0) {
                 gsl_min_fminimizer_free(s);
                 const double fxm = fobj_coarse(c, xm);
-                if ((rc = brent_root(c, a, fa, xm, fxm, out))) return rc;
-                return brent_root(c, xm, fxm, b, fb, out);
+                if ((rc = bracket_root(c, a, fa, xm, fxm, out))) return rc;
+                return bracket_root(c, xm, fxm, b, fb, out);
             }
             if (gsl_min_test_interval(gsl_min_fminimizer_x_lower(s), gsl_min_fminimizer_x_upper(s),
                                       1e-11, 1e-9) == GSL_SUCCESS) break;
@@ -545,7 +338,7 @@ static int touch_check(fctx *c, double a, double fa, double m, double fm, double
         /* a double zero (tangency): accept it when f vanishes there */
         const double xm = gsl_min_fminimizer_x_minimum(s);
         hroot r = el__hermite_mkroot(xm, c->b, c->pr->sigma);
-        if (!cached_eval(c, xm, 1, &r.st, &r.x) && fabs(r.st.f) <= 1e-11) rc = el__hermite_roots_push(out, &r);
+        if (!piece_eval(c, xm, 1.0, &r.st, &r.x) && fabs(r.st.f) <= 1e-11) rc = el__hermite_roots_push(out, &r);
     }
     gsl_min_fminimizer_free(s);
     return rc;
@@ -598,7 +391,7 @@ static int interval_to_refine(const double *xs, const double *fs, int n, double 
         const double fa = fs[j], fb = fs[j + 1];
         double sign;
         if (isfinite(fa) && isfinite(fb)) {
-            if (!(fa * fb > 0.0)) continue;                 /* a sign change: Brent's */
+            if (!(fa * fb > 0.0)) continue;                 /* a sign change: bracket_root */
             sign = fa > 0.0 ? 1.0 : -1.0;
         } else if (isfinite(fa) || isfinite(fb)) {
             const double f = isfinite(fa) ? fa : fb;
@@ -620,7 +413,7 @@ static int interval_to_refine(const double *xs, const double *fs, int n, double 
 
 /* Sample one piece (Chebyshev spacing, ends nudged inside: the split points are
  * where the objective is singular or not differentiable), refine where two zeros
- * may hide (interval_to_refine, at most REFINE_MAX more samples), Brent on sign
+ * may hide (interval_to_refine, at most REFINE_MAX more samples), bracket_root on sign
  * changes. */
 /* A sample whose |f| is below TOUCH_RATIO times both neighbours' (same sign) gets the
  * touch check even when the parabola through the three does not reach zero: the
@@ -650,7 +443,7 @@ static int solve_samples(fctx *c, double *xs, double *fs, int ns, double w, hroo
             hroot r = el__hermite_mkroot(xs[j], c->b, c->pr->sigma);
             if (!piece_eval(c, xs[j], 1.0, &r.st, &r.x) && (rc = el__hermite_roots_push(out, &r))) return rc;
         } else if (fs[j] * fs[j + 1] < 0.0) {
-            if ((rc = brent_root(c, xs[j], fs[j], xs[j + 1], fs[j + 1], out))) return rc;
+            if ((rc = bracket_root(c, xs[j], fs[j], xs[j + 1], fs[j + 1], out))) return rc;
         } else if (j > 0 && isfinite(fs[j - 1]) && fs[j - 1] * fs[j] > 0.0 &&
                    fabs(fs[j]) < fabs(fs[j - 1]) && fabs(fs[j]) < fabs(fs[j + 1]) &&
                    (parabola_min(xs + j - 1, fs + j - 1) < 0.5 * fabs(fs[j]) ||
@@ -764,8 +557,9 @@ int el__hermite_solve_tension(hprob *pr, int ns, hrootlist *out)
     if (pr->hcase != 3 && pr->sigma > 0.0) {
         double r[8];
         int nr;
-        const poly p = poly40(pr);
-        poly_roots_in(p.c, p.d, -pr->B, pr->B, 4e-16, r, &nr);
+        double pc[9];
+        const int pd = el__hermite_poly40(pr, pc);
+        el__poly_roots_in(pc, pd, -pr->B, pr->B, 4e-16, r, &nr);
         for (int i = 0; i < nr; i++)
             if (fabs(r[i]) < pr->B) { r40[n40] = r[i]; b40[n40++] = root_branch(pr, r[i]); }
     }
@@ -825,8 +619,8 @@ int el_hermite_analyse(const double P[2], const double V[2], double sigma,
     if (pr.hcase == 1) {
         double c[3], r[2];
         int nr;
-        disc_coeffs(&pr, c);
-        if ((rc = poly_real_roots(c, 2, r, &nr))) return rc;
+        el__hermite_disc_coeffs(&pr, c);
+        if ((rc = el__poly_real_roots(c, 2, r, &nr))) return rc;
         /* pieces of [lo, hi] where disc >= 0 */
         double pts[4] = {lo, hi, 0, 0};
         int np = 2;
@@ -851,8 +645,9 @@ int el_hermite_analyse(const double P[2], const double V[2], double sigma,
     if (pr.hcase != 3) {
         double r[8];
         int nr;
-        const poly p = poly40(&pr);
-        poly_roots_in(p.c, p.d, -pr.B, pr.B, 4e-16, r, &nr);
+        double pc[9];
+        const int pd = el__hermite_poly40(&pr, pc);
+        el__poly_roots_in(pc, pd, -pr.B, pr.B, 4e-16, r, &nr);
         for (int i = 0; i < nr && out.nroot < 8; i++) {
             int inside = 0;
             for (size_t j = 0; j < out.ninterval; j++)
@@ -863,7 +658,7 @@ int el_hermite_analyse(const double P[2], const double V[2], double sigma,
             out.root_branch[out.nroot++] = best;
         }
         int ns;
-        if ((rc = special_values(&pr, out.special, &ns))) return rc;
+        if ((rc = el__hermite_special_values(&pr, out.special, &ns))) return rc;
         out.nspecial = (size_t)ns;
         qsort(out.special, out.nspecial, sizeof(double), cmp_double);
     }

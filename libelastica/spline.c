@@ -332,27 +332,6 @@ done:
 
 int el_spline_to_bspline(const el_spline_result *res, double tol, int degree, el_bspline *out)
 {
-    if (!res || !out || !res->npieces || !res->pieces || !isfinite(tol) || !(tol > 0.0) ||
-        degree < 3 || degree > 7)
-        return EL_EINVAL;
-    const size_t m = res->npieces;
-    el_bspline *parts = calloc(m, sizeof *parts);
-    if (!parts) return EL_ENOMEM;
-    int st = EL_OK, status = EL_OK;
-    double dev = 0.0;
-    for (size_t j = 0; j < m && !st; j++) {
-        st = el_smooth_to_bspline_g2(&res->pieces[j], tol, degree, &parts[j]);
-        if (st == EL_EMAXITER) { status = st; st = EL_OK; }
-        if (!st) dev = fmax(dev, parts[j].max_deviation);
-    }
-    double err = 0.0;
-    el_bspline b;
-    if (!st) st = el__bspline_join_c2(parts, m, &b, &err);
-    for (size_t j = 0; j < m; j++) el_bspline_free(&parts[j]);
-    free(parts);
-    if (st) return st;
-    b.max_deviation = dev + err;
-    if (b.max_deviation > tol) status = EL_EMAXITER;
-    *out = b;
-    return status;
+    if (!res) return EL_EINVAL;
+    return el_smooth_chain_to_bspline(res->pieces, res->npieces, tol, degree, out);
 }

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Optional, Sequence, Union
+from typing import Optional, Sequence
 
 import numpy as np
 
@@ -211,7 +211,10 @@ def _ellipk(k: float) -> float:
 
 def elastica_inflections(curve, margin: float = 1e-9) -> np.ndarray:
     """Arc lengths of the inflections of a SmoothElastica in (0, length): cn(u;k) = 0,
-    u = sqrt(mu) s + q = (2j+1) K(k) for 0 < k < 1; none for k >= 1 or k = 0."""
+    u = sqrt(mu) s + q = (2j+1) K(k) for 0 < k < 1; none for k >= 1 or k = 0. A Hermite
+    chain answers for itself (HermiteChain.inflections)."""
+    if hasattr(curve, "inflections"):
+        return curve.inflections(margin)
     k = as_real(getattr(curve, "k", None), "elastica_inflections: curve.k")
     if not 0.0 < k < 1.0:
         return np.empty(0)

@@ -1,13 +1,14 @@
 """B-splines over the C library: the BSpline type, the natural C2 cubic through
-a polyline, and the tolerance-certified B-spline of a smooth elastica."""
+a polyline, and the tolerance-certified B-spline of a smooth elastica (or a chain
+of them)."""
 from __future__ import annotations
 
 from typing import Any
 
 import numpy as np
 
-from ._ffi import (INT_MAX, DomainError, as_int, as_points, as_real, as_vector, bspline_from_c,
-                   check, dptr, ffi, lib)
+from ._ffi import (INT_MAX, DomainError, NotConvergedError, as_int, as_points, as_real, as_vector,
+                   bspline_from_c, check, dptr, ffi, lib)
 
 
 class BSpline:
@@ -171,3 +172,26 @@ def _beyond_limits(p, tol: float) -> str:
                 f"pieces of at most {limit / (2 * abs(p.k) * np.sqrt(p.mu)):.4g} in length")
     return (f"tol = {tol:.3g} needs more than {limit} poles for this curve (the limit, "
             f"EL_BSPLINE_MAX_POLES): raise tol or split the curve")
+
+
+def smooth_chain_to_bspline(pieces, tol: float = 1e-6, degree: int = 3) -> BSpline:
+    """ONE clamped degree-3..7 B-spline within ``tol`` of a chain of SmoothElastica
+    pieces that meet G2 (each starting where the one before ends), parametrised by
+    arc length from the first piece's start: each piece with exact end point, unit
+    tangent and curvature (el_smooth_chain_to_bspline), joined C2. ``max_deviation``
+    is the certified distance; NotConvergedError (with it) when tol is not reached."""
+    tol = as_real(tol, "to_bspline: tol")
+    degree = as_int(degree, "to_bspline: degree")
+    arr = ffi.new("el_smooth_params[]", len(pieces))
+    for i, c in enumerate(pieces):
+        for name in ("x0", "y0", "phi", "mu", "k", "q", "length"):
+            setattr(arr[i], name, float(getattr(c, name)))
+    b = ffi.new("el_bspline *")
+    st = lib.el_smooth_chain_to_bspline(arr, len(pieces), tol, degree, b)
+    if st == lib.EL_EMAXITER:
+        dev = float(b.max_deviation)
+        lib.el_bspline_free(b)
+        raise NotConvergedError(st, f"to_bspline: tolerance {tol:g} not reached "
+                                    f"(certified {dev:.3g}); raise tol")
+    check(st, "to_bspline")
+    return bspline_from_c(b)

@@ -273,10 +273,11 @@ def _parse_fix(spec: Optional[str], data: np.ndarray, keyline: bool = False) -> 
 
 
 def _bspline_of(curve, tol: float, degree: int):
-    """The B-spline of a fitted curve: tolerance-certified for a smooth elastica; for a
-    discrete one the C2 cubic through its vertices (max_deviation unknown, -1)."""
-    from .core import SmoothElastica
-    if isinstance(curve, SmoothElastica):
+    """The B-spline of a fitted curve: tolerance-certified for a smooth elastica (or a
+    Hermite chain of them); for a discrete one the C2 cubic through its vertices
+    (max_deviation unknown, -1)."""
+    from .core import DiscreteElastica
+    if not isinstance(curve, DiscreteElastica):
         return curve.to_bspline(tol=tol, degree=degree)
     from .bspline import interpolate_c2
     return interpolate_c2(curve.points())
@@ -575,6 +576,7 @@ def cmd_hermite(args) -> int:
                "kappa0": getattr(c, "kappa0", None), "kappa1": getattr(c, "kappa1", None),
                "residual": getattr(c, "residual", None)}
         recs.append(rec)
+        # near the separatrix a chain of pieces ("curve": {"type": "chain", ...}), k its first piece's
         rows.append([i, rec["sigma"], c.length, c.k, rec["energy"],
                      "yes" if rec["has_inflection"] else "no", rec["kappa0"], rec["kappa1"],
                      rec["residual"]])
@@ -601,8 +603,9 @@ def cmd_hermite(args) -> int:
                                  title=f"Hermite elasticae, {what}: {len(sols)} solutions",
                                  params=[f"p0 = ({p0[0]:g}, {p0[1]:g}), t0 = ({t0[0]:g}, {t0[1]:g})",
                                          f"p1 = ({p1[0]:g}, {p1[1]:g}), t1 = ({t1[0]:g}, {t1[1]:g})"]
-                                 + [f"#{i}: k={c.k:.4g} L={c.length:.4g}" for i, c in
-                                    enumerate(sols[:12])])
+                                 + [f"#{i}: k={c.k:.4g} L={c.length:.4g}"
+                                    + (f" ({len(c.pieces)} pieces)" if hasattr(c, "pieces") else "")
+                                    for i, c in enumerate(sols[:12])])
             save_picture(pic, args.outputs.path(spec))
     if not sols:
         print(f"{PROG} hermite: no solution", file=sys.stderr)

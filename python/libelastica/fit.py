@@ -15,11 +15,11 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Mapping, Optional, Tuple, Union
+from typing import Mapping, Optional, Union
 
 import numpy as np
 
-from ._ffi import (DomainError, ElasticaError, NotConvergedError, as_int, as_points, as_real,
+from ._ffi import (DomainError, NotConvergedError, as_int, as_points, as_real,
                    as_real_array, check, dptr, ffi, lib)
 from .core import DISCRETE_PARAMS, SMOOTH_PARAMS, DiscreteElastica, SmoothElastica
 

@@ -10,17 +10,101 @@ from typing import List, Optional
 import numpy as np
 
 from ._ffi import as_int, as_real, as_size, as_vector, check, ffi, lib
+from .bspline import smooth_chain_to_bspline
 from .core import SMOOTH_PARAMS, SmoothElastica
 
-__all__ = ["hermite", "hermite_analyse", "HermiteSolutions"]
+__all__ = ["hermite", "hermite_analyse", "HermiteSolutions", "HermiteChain"]
 
 
 class HermiteSolutions(list):
-    """The solutions of :func:`hermite` (a list of :class:`SmoothElastica`), with
-    ``unrepresentable``: the number of curves that exist but that no set of smooth
-    parameters meets to ``tol`` (they lie too close to the separatrix, |k| = 1, for a
-    double k: see the header's el_hermite_solve); a larger ``tol`` returns them."""
+    """The solutions of :func:`hermite` (a list of :class:`SmoothElastica`, or of
+    :class:`HermiteChain` near the separatrix), with ``unrepresentable``: the number
+    of curves that exist but that neither one set of smooth parameters nor a chain of
+    them meets to ``tol`` (see the header's el_hermite_solve), and ``complete``: False
+    when length mode stopped at its work limit (the solutions found so far, with a
+    RuntimeWarning)."""
     unrepresentable: int = 0
+    complete: bool = True
+
+
+class HermiteChain:
+    """A Hermite solution near the separatrix (|k| -> 1) that no single
+    :class:`SmoothElastica` carries to ``tol`` (one ulp of the double k moves the end of
+    a curve through a saddle by ~1e-16 / (1 - |k|)): the same elastica as 2 or 3
+    ``pieces`` (SmoothElastica) split at its saddles, each starting where the one before
+    ends, with its tangent, the first at p0. Evaluation is by arc length over the
+    whole curve, like a SmoothElastica's: ``points(s)``, ``angle(s)`` (continuous),
+    ``curvature(s)``, ``energy()``, ``to_bspline(tol, degree)`` (one C2 B-spline), and
+    ``length``; ``k`` and ``mu`` are the first piece's (the pieces share |F| = 2 mu and
+    |k| up to its rounding), ``sigma`` the tension; plus the Hermite attributes
+    ``energy_value``, ``has_inflection``, ``kappa0``, ``kappa1``, ``residual``.
+    """
+
+    def __init__(self, pieces: List[SmoothElastica], **attrs):
+        self.pieces = list(pieces)
+        self.length = float(sum(p.length for p in self.pieces))
+        self.k, self.mu = self.pieces[0].k, self.pieces[0].mu
+        self.__dict__.update(attrs)
+        self._starts = np.concatenate([[0.0], np.cumsum([p.length for p in self.pieces])])
+        # each piece's angle offset (a multiple of 2 pi) that makes theta continuous
+        self._turns = [0.0]
+        for a, b in zip(self.pieces[:-1], self.pieces[1:]):
+            end = float(a.angle([a.length])[0]) + self._turns[-1]
+            start = float(b.angle([0.0])[0])
+            self._turns.append(2.0 * np.pi * round((end - start) / (2.0 * np.pi)))
+
+    def __repr__(self) -> str:
+        return (f"HermiteChain({len(self.pieces)} pieces, k={self.k:.17g}, mu={self.mu:.6g}, "
+                f"length={self.length:.6g})")
+
+    def _s(self, s) -> np.ndarray:
+        if s is None:
+            return np.linspace(0.0, self.length, 101)
+        return as_vector(s, "s")
+
+    def _eval(self, s, what: str) -> np.ndarray:
+        s = self._s(s)
+        j = np.clip(np.searchsorted(self._starts, s, side="right") - 1, 0, len(self.pieces) - 1)
+        out = np.empty((len(s), 2) if what == "points" else len(s))
+        for i in np.unique(j):
+            sel = j == i
+            out[sel] = getattr(self.pieces[i], what)(s[sel] - self._starts[i])
+            if what == "angle":
+                out[sel] += self._turns[i]
+        return out
+
+    def points(self, s=None) -> np.ndarray:
+        """Points at arc lengths s from p0, shape (n, 2) (default: 101 samples of [0, length])."""
+        return self._eval(s, "points")
+
+    def angle(self, s=None) -> np.ndarray:
+        """Tangent angle theta(s) (radians, continuous in s)."""
+        return self._eval(s, "angle")
+
+    def curvature(self, s=None) -> np.ndarray:
+        """Signed curvature kappa(s)."""
+        return self._eval(s, "curvature")
+
+    def energy(self) -> float:
+        """Bending energy: the integral of kappa^2 over the whole curve."""
+        return float(sum(p.energy() for p in self.pieces))
+
+    def inflections(self, margin: float = 1e-9) -> np.ndarray:
+        """Arc lengths of the inflections in (0, length): the pieces' own, and the
+        joints of an inflectional curve (its saddles are its inflections, kappa = 0)."""
+        from .affine import elastica_inflections
+        out = []
+        for i, p in enumerate(self.pieces):
+            out.extend(self._starts[i] + elastica_inflections(p, margin))
+            if i and abs(p.k) <= 1.0 and self.pieces[i - 1].k * p.k < 0.0:
+                out.append(self._starts[i])
+        return np.sort(np.array(out, dtype=float))
+
+    def to_bspline(self, tol: float = 1e-6, degree: int = 3):
+        """ONE clamped B-spline (degree 3..7) within ``tol`` (coordinate units) of the
+        whole curve, parametrised by arc length from p0 (el_smooth_chain_to_bspline:
+        each piece G2 at its ends, joined C2); ``max_deviation`` is the certified distance."""
+        return smooth_chain_to_bspline(self.pieces, tol, degree)
 
 
 def _vec2(v, name: str):
@@ -49,12 +133,14 @@ def _buffers():
     return b
 
 
-# el_hermite_solution unpacked in one go by a struct format built from cffi's layout
+# el_hermite_solution unpacked in one go by a struct format built from cffi's layout:
+# curve and the scalars (a chain's further pieces, rare, are read from the C struct)
 def _solution_struct():
     curve = ffi.offsetof("el_hermite_solution", "curve")
     fields = [(curve + ffi.offsetof("el_smooth_params", n), "d") for n in SMOOTH_PARAMS]
-    fields += [(ffi.offsetof("el_hermite_solution", n), "i" if n == "has_inflection" else "d")
-               for n in ("length", "sigma", "energy", "has_inflection", "kappa0", "kappa1", "residual")]
+    fields += [(ffi.offsetof("el_hermite_solution", n), "i" if n in ("has_inflection", "npieces") else "d")
+               for n in ("length", "sigma", "energy", "has_inflection", "kappa0", "kappa1", "residual",
+                         "npieces")]
     fmt, pos = "=", 0
     for off, code in sorted(fields):
         fmt += f"{off - pos}x{code}" if off > pos else code
@@ -66,10 +152,19 @@ def _solution_struct():
 _SOL_STRUCT, _SOL_SIZE = _solution_struct()
 
 
-def _solution(row) -> SmoothElastica:
-    """A SmoothElastica from one unpacked el_hermite_solution; the library returns
-    valid parameters, so the constructor's checks are skipped."""
-    x0, y0, phi, mu, k, q, length, _, sigma, energy, infl, kappa0, kappa1, residual = row
+def _piece(values) -> SmoothElastica:
+    """A SmoothElastica of valid parameters (the library's), without re-checking them."""
+    e = SmoothElastica.__new__(SmoothElastica)
+    e.__dict__.update(zip(SMOOTH_PARAMS, values))
+    return e
+
+
+def _solution(row):
+    """A SmoothElastica from one unpacked el_hermite_solution; a chain's row is returned
+    as it is (_chain completes it from the C struct)."""
+    x0, y0, phi, mu, k, q, length, _, sigma, energy, infl, kappa0, kappa1, residual, npieces = row
+    if npieces != 1:
+        return row
     e = SmoothElastica.__new__(SmoothElastica)
     e.__dict__.update(x0=x0, y0=y0, phi=phi, mu=mu, k=k, q=q, length=length, sigma=sigma,
                       energy_value=energy, has_inflection=bool(infl), kappa0=kappa0,
@@ -77,9 +172,17 @@ def _solution(row) -> SmoothElastica:
     return e
 
 
+def _chain(row, c) -> HermiteChain:
+    """The HermiteChain of an unpacked row and its C struct c (for the further pieces)."""
+    _, _, _, _, _, _, _, _, sigma, energy, infl, kappa0, kappa1, residual, npieces = row
+    rest = [_piece([getattr(c.rest[i], n) for n in SMOOTH_PARAMS]) for i in range(npieces - 1)]
+    return HermiteChain([_piece(row[:7])] + rest, sigma=sigma, energy_value=energy,
+                        has_inflection=bool(infl), kappa0=kappa0, kappa1=kappa1, residual=residual)
+
+
 def hermite(p0, t0, p1, t1, tension: Optional[float] = None,
             length: Optional[float] = None, *, tol: float = 1e-10,
-            samples: int = 12, grid: int = 6, max_solutions: int = 64) -> List[SmoothElastica]:
+            samples: int = 12, grid: int = 6, max_solutions: int = 64) -> HermiteSolutions:
     """All elastic curves (2 kappa'' + kappa^3 - sigma kappa = 0) from ``p0`` with
     tangent direction ``t0`` to ``p1`` with tangent direction ``t1`` whose length is
     at most one period of the curvature, sorted by bending energy.
@@ -87,8 +190,10 @@ def hermite(p0, t0, p1, t1, tension: Optional[float] = None,
     Give exactly one of ``tension`` (sigma, 1/length^2; any real, negative is
     compression) or ``length`` (the arc length; sigma is then computed).
 
-    Returns a :class:`HermiteSolutions` list of :class:`SmoothElastica`; each carries
-    extra attributes:
+    Returns a :class:`HermiteSolutions` list of :class:`SmoothElastica` (near the
+    separatrix, where no single one meets ``tol``, a :class:`HermiteChain` of two or
+    three pieces of the same elastica, evaluated the same way); each carries extra
+    attributes:
 
     - ``sigma``: the tension; ``energy_value``: integral of kappa^2 ds;
     - ``has_inflection``: whether the curvature changes sign;
@@ -101,7 +206,9 @@ def hermite(p0, t0, p1, t1, tension: Optional[float] = None,
     separatrix) are counted in the list's ``unrepresentable``, with a RuntimeWarning.
 
     Raises ``ValueError`` (an :class:`ElasticaError`) for bad input, and
-    :class:`DomainError` when ``p0 == p1`` or ``length < |p1 - p0|``.
+    :class:`DomainError` when ``p0 == p1`` or ``length < |p1 - p0|``. When length mode
+    reaches its work limit the solutions found so far are returned with a
+    RuntimeWarning and ``complete = False``.
     """
     if (tension is None) == (length is None):
         raise ValueError("hermite: give exactly one of tension= or length=")
@@ -119,13 +226,19 @@ def hermite(p0, t0, p1, t1, tension: Optional[float] = None,
     if rest != getattr(_local, "rest", None):
         opt.tol, opt.samples, opt.grid, opt.max_solutions = rest
         _local.rest = rest
-    check(lib.el_hermite_solve(buf, buf + 2, buf + 4, buf + 6, opt, res), "hermite")
+    status = lib.el_hermite_solve(buf, buf + 2, buf + 4, buf + 6, opt, res)
+    if status != lib.EL_EMAXITER:
+        check(status, "hermite")
     out = HermiteSolutions()
+    out.complete = status != lib.EL_EMAXITER
     try:
         n = res.count
         if n:
             raw = ffi.buffer(res.solutions, n * _SOL_SIZE)
-            out.extend(_solution(r) for r in _SOL_STRUCT.iter_unpack(raw))
+            out.extend(map(_solution, _SOL_STRUCT.iter_unpack(raw)))
+            for i, e in enumerate(out):
+                if e.__class__ is tuple:
+                    out[i] = _chain(e, res.solutions[i])
         out.unrepresentable = int(res.unrepresentable)
     finally:
         lib.el_hermite_result_free(res)
@@ -133,6 +246,10 @@ def hermite(p0, t0, p1, t1, tension: Optional[float] = None,
         warnings.warn(f"hermite: {out.unrepresentable} more curve(s) exist that no smooth "
                       f"parameters meet to tol={tol:g} (too close to the separatrix |k| = 1); "
                       "a larger tol returns them", RuntimeWarning, stacklevel=2)
+    if not out.complete:
+        warnings.warn(f"hermite: length mode reached its work limit; the {len(out)} solution(s) "
+                      "found so far are returned (the list's complete is False)",
+                      RuntimeWarning, stacklevel=2)
     return out
 
 

@@ -117,24 +117,35 @@ def _floats(a) -> list:
 
 
 def curve_to_dict(curve) -> Dict[str, Any]:
-    """A JSON-ready dict of a SmoothElastica or DiscreteElastica (its type and parameters)."""
+    """A JSON-ready dict of a SmoothElastica or DiscreteElastica (its type and parameters),
+    or of a Hermite chain ({"type": "chain", "pieces": [smooth dicts]})."""
     from .core import DISCRETE_PARAMS, SMOOTH_PARAMS, DiscreteElastica, SmoothElastica
+    from .hermite import HermiteChain
     if isinstance(curve, SmoothElastica):
         return {"type": "smooth", **{n: float(getattr(curve, n)) for n in SMOOTH_PARAMS}}
     if isinstance(curve, DiscreteElastica):
         return {"type": "discrete", **{n: float(getattr(curve, n)) for n in DISCRETE_PARAMS},
                 "n": int(curve.n)}
+    if isinstance(curve, HermiteChain):
+        return {"type": "chain", "pieces": [curve_to_dict(p) for p in curve.pieces]}
     raise TypeError(f"not an elastica: {type(curve).__name__}")
 
 
 def curve_from_dict(d: Dict[str, Any], name: str = "curve"):
-    """Rebuild a SmoothElastica / DiscreteElastica from :func:`curve_to_dict`'s dict
+    """Rebuild a SmoothElastica / DiscreteElastica / HermiteChain from :func:`curve_to_dict`'s dict
     (or a fit JSON holding one under ``"curve"``). Raises InputError when it is not one."""
     from .core import DISCRETE_PARAMS, SMOOTH_PARAMS, DiscreteElastica, SmoothElastica
     if isinstance(d, dict) and "curve" in d and isinstance(d["curve"], dict):
         d = d["curve"]
+    if isinstance(d, dict) and d.get("type") == "chain":
+        from .hermite import HermiteChain
+        pieces = d.get("pieces")
+        if not isinstance(pieces, list) or not pieces or \
+                any(not isinstance(p, dict) or p.get("type") != "smooth" for p in pieces):
+            raise InputError(f"{name}: a chain needs a list of smooth pieces")
+        return HermiteChain([curve_from_dict(p, f"{name} piece {i}") for i, p in enumerate(pieces)])
     if not isinstance(d, dict) or d.get("type") not in ("smooth", "discrete"):
-        raise InputError(f"{name}: no elastica curve (a 'type' of 'smooth' or 'discrete')")
+        raise InputError(f"{name}: no elastica curve (a 'type' of 'smooth', 'discrete' or 'chain')")
     names = SMOOTH_PARAMS if d["type"] == "smooth" else DISCRETE_PARAMS + ("n",)
     missing = [n for n in names if n not in d]
     if missing:

@@ -15,53 +15,95 @@ static double wrap(double a)
     return a;
 }
 
+/* The pieces of a solution: curve, then rest[0..npieces-2]. */
+static int pieces_of(const el_hermite_solution *s, const el_smooth_params **p)
+{
+    ck_assert_msg(s->npieces >= 1 && s->npieces <= 3, "npieces %d", s->npieces);
+    p[0] = &s->curve;
+    for (int i = 1; i < s->npieces; i++) p[i] = &s->rest[i - 1];
+    for (int i = s->npieces; i < 3; i++) ck_assert(s->rest[i - 1].length == 0.0);
+    return s->npieces;
+}
+
 /* Both ends met in the direction p0 -> p1 (position / |p1 - p0| and tangent
  * angle to tol), the orientation in the sign of k (a loop, |k| > 1, turns with
  * the sign of k), energy by el_smooth_energy, has_inflection by sampled
- * curvature, length = curve.length. */
+ * curvature, length = the sum of the pieces'. A chain's pieces follow each other
+ * (position and tangent to 1e-12) and are the same elastica: the solution's tension
+ * and the same |F| = 2 mu in every piece, force directions phi equal (mod 2 pi) and
+ * curvature continuous to 1e-7 of the largest. */
 static void check_solution(const double p0[2], const double t0[2], const double p1[2],
                            const double t1[2], const el_hermite_solution *s, double tol)
 {
     const double d = hypot(p1[0] - p0[0], p1[1] - p0[1]);
     const double ta = atan2(t0[1], t0[0]), tb = atan2(t1[1], t1[0]);
-    ck_assert_int_eq(el_smooth_check(&s->curve), EL_OK);
-    ck_assert_close(s->curve.length, s->length, 0.0);
-    const double sv[2] = {0.0, s->length};
-    double xy[4], th[2], kap[2];
-    ck_assert_int_eq(el_smooth_eval(&s->curve, 2, sv, xy, th, kap), EL_OK);
-    ck_assert_msg(hypot(xy[0] - p0[0], xy[1] - p0[1]) <= tol * d, "start point off by %g",
-                  hypot(xy[0] - p0[0], xy[1] - p0[1]));
-    ck_assert_msg(hypot(xy[2] - p1[0], xy[3] - p1[1]) <= tol * d, "end point off by %g (k %g)",
-                  hypot(xy[2] - p1[0], xy[3] - p1[1]), s->curve.k);
-    ck_assert_msg(fabs(wrap(th[0] - ta)) <= tol, "start tangent off by %g", wrap(th[0] - ta));
-    ck_assert_msg(fabs(wrap(th[1] - tb)) <= tol, "end tangent off by %g", wrap(th[1] - tb));
+    const el_smooth_params *pc[3];
+    const int n = pieces_of(s, pc);
+    double Lsum = 0.0, E = 0.0, xy[4], th[2], kap[2], prev[3] = {p0[0], p0[1], ta}, kprev = 0.0;
+    double kend[3][2];
+    for (int i = 0; i < n; i++) {
+        ck_assert_int_eq(el_smooth_check(pc[i]), EL_OK);
+        ck_assert(pc[i]->length > 0.0);
+        const double sv[2] = {0.0, pc[i]->length};
+        ck_assert_int_eq(el_smooth_eval(pc[i], 2, sv, xy, th, kap), EL_OK);
+        const double gap = hypot(xy[0] - prev[0], xy[1] - prev[1]), turn = fabs(wrap(th[0] - prev[2]));
+        if (i == 0) {
+            ck_assert_msg(gap <= tol * d, "start point off by %g", gap);
+            ck_assert_msg(turn <= tol, "start tangent off by %g", turn);
+        } else {
+            ck_assert_msg(gap <= 1e-12 * d && turn <= 1e-12, "joint %d: gap %g, turn %g", i, gap, turn);
+            /* the same elastica: tension, |F| and its direction */
+            const double si = 2.0 * pc[i]->mu * (2.0 * pc[i]->k * pc[i]->k - 1.0);
+            ck_assert_close(si, s->sigma, 1e-12 * fabs(s->sigma));
+            ck_assert_close(pc[i]->mu, pc[0]->mu, 1e-12 * pc[0]->mu);
+            ck_assert_msg(fabs(wrap(pc[i]->phi - pc[0]->phi)) <= 1e-7, "joint %d: phi %.17g, %.17g", i,
+                          pc[i]->phi, pc[0]->phi);
+            kend[i - 1][1] = kap[0];
+            kend[i - 1][0] = kprev;
+        }
+        prev[0] = xy[2]; prev[1] = xy[3]; prev[2] = th[1];
+        kprev = kap[1];
+        if (i == 0) ck_assert_close(kap[0], s->kappa0, fmax(1e-8, 100.0 * tol) * (1.0 + fabs(kap[0])));
+        double e;
+        ck_assert_int_eq(el_smooth_energy(pc[i], &e), EL_OK);
+        E += e;
+        Lsum += pc[i]->length;
+    }
+    ck_assert_msg(hypot(prev[0] - p1[0], prev[1] - p1[1]) <= tol * d, "end point off by %g (k %g, %d pieces)",
+                  hypot(prev[0] - p1[0], prev[1] - p1[1]), s->curve.k, n);
+    ck_assert_msg(fabs(wrap(prev[2] - tb)) <= tol, "end tangent off by %g", wrap(prev[2] - tb));
+    ck_assert_close(Lsum, s->length, 1e-14 * s->length);
+    if (n == 1) ck_assert_close(s->curve.length, s->length, 0.0);
     /* the end curvatures as reported, to 1e-8 (relative; looser with a looser tol) */
     const double ktol = fmax(1e-8, 100.0 * tol);
-    ck_assert_close(kap[0], s->kappa0, ktol * (1.0 + fabs(kap[0])));
-    ck_assert_close(kap[1], s->kappa1, ktol * (1.0 + fabs(kap[1])));
-    /* a loop's curvature has the sign of k everywhere */
-    if (fabs(s->curve.k) > 1.0) {
-        ck_assert_msg(s->curve.k * kap[0] > 0.0 && s->curve.k * kap[1] > 0.0,
-                      "loop k %g with kappa0 %g, kappa1 %g", s->curve.k, kap[0], kap[1]);
-        ck_assert_int_eq(s->has_inflection, 0);
-    }
-    double E;
-    ck_assert_int_eq(el_smooth_energy(&s->curve, &E), EL_OK);
+    ck_assert_close(kprev, s->kappa1, ktol * (1.0 + fabs(kprev)));
     ck_assert_close(E, s->energy, ktol * (1.0 + E));
-    /* inflection: sign change of kappa on a fine grid */
+    /* inflection: sign change of kappa on a fine grid of every piece; a loop's
+     * curvature has the sign of k everywhere */
     enum { NS = 2001 };
-    static double ss[NS], kk[NS];
-    for (int i = 0; i < NS; i++) ss[i] = s->length * i / (NS - 1);
-    ck_assert_int_eq(el_smooth_eval(&s->curve, NS, ss, NULL, NULL, kk), EL_OK);
-    int change = 0;
+    static double ss[NS], kk[3][NS];
     double kmax = 0.0;
-    for (int i = 0; i < NS; i++) kmax = fmax(kmax, fabs(kk[i]));
-    double last = 0.0; /* sign changes among the samples that are not ~0 (ends may be zeros) */
-    for (int i = 0; i < NS; i++) {
-        if (fabs(kk[i]) <= 1e-7 * kmax) continue;
-        if (last * kk[i] < 0.0) change = 1;
-        last = kk[i];
+    for (int i = 0; i < n; i++) {
+        for (int j = 0; j < NS; j++) ss[j] = pc[i]->length * j / (NS - 1);
+        ck_assert_int_eq(el_smooth_eval(pc[i], NS, ss, NULL, NULL, kk[i]), EL_OK);
+        for (int j = 0; j < NS; j++) kmax = fmax(kmax, fabs(kk[i][j]));
+        if (fabs(pc[i]->k) > 1.0) {
+            ck_assert_msg(pc[i]->k * kk[i][0] > 0.0 && pc[i]->k * kk[i][NS - 1] > 0.0,
+                          "loop k %g with kappa0 %g, kappa1 %g", pc[i]->k, kk[i][0], kk[i][NS - 1]);
+            ck_assert_int_eq(s->has_inflection, 0);
+        }
     }
+    for (int i = 0; i + 1 < n; i++)
+        ck_assert_msg(fabs(kend[i][0] - kend[i][1]) <= 1e-7 * kmax, "joint %d: curvature %g, %g (max %g)",
+                      i + 1, kend[i][0], kend[i][1], kmax);
+    int change = 0;
+    double last = 0.0; /* sign changes among the samples that are not ~0 (ends may be zeros) */
+    for (int i = 0; i < n; i++)
+        for (int j = 0; j < NS; j++) {
+            if (fabs(kk[i][j]) <= 1e-7 * kmax) continue;
+            if (last * kk[i][j] < 0.0) change = 1;
+            last = kk[i][j];
+        }
     ck_assert_msg(change == s->has_inflection, "has_inflection %d, sampled %d (k %g, L %g, kappa0 %g, kappa1 %g)",
                   s->has_inflection, change, s->curve.k, s->length, s->kappa0, s->kappa1);
 }
@@ -306,15 +348,15 @@ START_TEST(mirrored_data_give_mirrored_solutions)
 }
 END_TEST
 
-/* Large tension (sigma |p1-p0|^2 in [100, 600]): many solutions lie within 1e-7
- * of the separatrix |k| = 1, where one ulp of k moves the end by 1e-10..1e-8. Those
- * returned meet the ends to 1e-10 (checked with el_smooth_eval), and none is lost:
- * with tol 1e-6 the solver returns exactly those plus the ones it counted as
- * unrepresentable at 1e-10. */
+/* Large tension (sigma |p1-p0|^2 in [100, 600]): many solutions lie within 1e-7 of
+ * the separatrix |k| = 1, where one ulp of k moves the end of a curve through a saddle
+ * by 1e-10..1e-2. Every one is returned at the default tol (one piece, or a chain
+ * split at its saddles, each meeting the ends to 1e-10 and checked as above), none
+ * counted unrepresentable, and a looser tol returns the same curves. */
 START_TEST(near_separatrix_solutions_meet_tol)
 {
     unsigned long long st = 31337;
-    size_t loose = 0, strict = 0, unrep = 0, near = 0;
+    size_t strict = 0, chains = 0, near = 0;
     for (int t = 0; t < 40; t++) {
         const double p0[2] = {0, 0}, t0[2] = {1, 0};
         const double a = test_uniform(&st, -M_PI, M_PI), b = test_uniform(&st, -M_PI, M_PI);
@@ -322,24 +364,57 @@ START_TEST(near_separatrix_solutions_meet_tol)
         el_hermite_options o;
         el_hermite_options_defaults(&o);
         o.sigma = test_uniform(&st, 100.0, 600.0);
+        el_hermite_result r, l;
+        ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_OK);
+        check_result(p0, t0, p1, t1, &r, 1e-10);
+        ck_assert_uint_eq(r.unrepresentable, 0);
+        strict += r.count;
+        for (size_t i = 0; i < r.count; i++) {
+            near += fabs(fabs(r.solutions[i].curve.k) - 1.0) < 1e-7;
+            chains += r.solutions[i].npieces > 1;
+        }
+        o.tol = 1e-6;
+        ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &l), EL_OK);
+        check_result(p0, t0, p1, t1, &l, 1e-6);
+        ck_assert_uint_eq(l.count, r.count);
+        ck_assert_uint_eq(l.unrepresentable, 0);
+        el_hermite_result_free(&r);
+        el_hermite_result_free(&l);
+    }
+    ck_assert_uint_gt(near, 20);
+    ck_assert_uint_gt(chains, 10);
+    fprintf(stderr, "near_separatrix_solutions_meet_tol: %zu solutions, %zu within 1e-7 of |k| = 1, %zu chains\n",
+            strict, near, chains);
+}
+END_TEST
+
+/* Length mode near the chord (L = 1.02..1.05 |p1 - p0|): the solutions of high tension
+ * (sigma |p1-p0|^2 up to ~1e5) come as chains where one piece cannot meet tol; every
+ * one meets the ends and has the given length, none is unrepresentable. */
+START_TEST(length_mode_near_the_chord_returns_chains)
+{
+    unsigned long long st = 555;
+    size_t total = 0, chains = 0;
+    for (int t = 0; t < 12; t++) {
+        const double a = test_uniform(&st, -M_PI, M_PI), b = test_uniform(&st, -M_PI, M_PI);
+        const double p0[2] = {0, 0}, t0[2] = {1, 0}, p1[2] = {cos(a), sin(a)}, t1[2] = {cos(b), sin(b)};
+        el_hermite_options o;
+        el_hermite_options_defaults(&o);
+        o.mode = EL_HERMITE_LENGTH;
+        o.length = test_uniform(&st, 1.02, 1.05);
         el_hermite_result r;
         ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_OK);
         check_result(p0, t0, p1, t1, &r, 1e-10);
-        strict += r.count;
-        unrep += r.unrepresentable;
-        for (size_t i = 0; i < r.count; i++) near += fabs(fabs(r.solutions[i].curve.k) - 1.0) < 1e-7;
-        const size_t n_strict = r.count + r.unrepresentable;
-        el_hermite_result_free(&r);
-        o.tol = 1e-6;
-        ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_OK);
-        check_result(p0, t0, p1, t1, &r, 1e-6);
-        ck_assert_uint_eq(r.count + r.unrepresentable, n_strict);
-        loose += r.count;
+        ck_assert_uint_eq(r.unrepresentable, 0);
+        for (size_t i = 0; i < r.count; i++) {
+            ck_assert_close(r.solutions[i].length, o.length, 1e-12 * o.length);
+            chains += r.solutions[i].npieces > 1;
+        }
+        total += r.count;
         el_hermite_result_free(&r);
     }
-    ck_assert_uint_gt(near, 20);
-    ck_assert_uint_gt(unrep, 0);
-    ck_assert_uint_eq(strict + unrep, loose);
+    ck_assert_uint_gt(chains, 5);
+    fprintf(stderr, "length_mode_near_the_chord_returns_chains: %zu solutions, %zu chains\n", total, chains);
 }
 END_TEST
 
@@ -458,14 +533,13 @@ static int dense_scan(const hprob *pr0, double sigma, scan_root *r)
 
 /* Issue 12: no solution lost for sigma |p1-p0|^2 in [0, 1e4]. Every root of the dense
  * scan above is a returned solution (meeting the ends to 1e-10, checked with
- * el_smooth_eval) or, when it lies so close to the separatrix that no el_smooth_params
- * can carry it to tol, counted in res.unrepresentable, which equals the number of the
- * scan's roots near the separatrix that are not returned. Problems: sigma uniform in [0, 100], log-uniform in [100, 1e3]
- * and [1e3, 1e4], random end point and tangents (p0 = 0, t0 = (0, 1), |p1| = 1). */
+ * el_smooth_eval; one piece, or near the separatrix a chain split at its saddles) and
+ * none is counted unrepresentable. Problems: sigma uniform in [0, 100], log-uniform in
+ * [100, 1e3] and [1e3, 1e4], random end point and tangents (p0 = 0, t0 = (0, 1), |p1| = 1). */
 START_TEST(no_solution_lost_up_to_high_tension)
 {
     unsigned long long st = 2718;
-    int nscan = 0, nret = 0, nunrep = 0;
+    int nscan = 0, nret = 0, nchain = 0;
     for (int t = 0; t < 150; t++) {
         const double a = test_uniform(&st, -M_PI, M_PI), c = test_uniform(&st, -M_PI, M_PI);
         const double u = test_uniform(&st, 0.0, 1.0);
@@ -484,30 +558,79 @@ START_TEST(no_solution_lost_up_to_high_tension)
         el_hermite_result res;
         ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &res), EL_OK);
         check_result(p0, t0, p1, t1, &res, 1e-10);
-        int unmatched_sep = 0;
         for (int i = 0; i < n; i++) {
             int found = 0;
             for (size_t j = 0; j < res.count && !found; j++)
                 found = fabs(res.solutions[j].kappa0 - r[i].k0) <= 1e-6 * (1.0 + fabs(r[i].k0)) &&
                         fabs(res.solutions[j].length - r[i].L) <= 1e-6 * r[i].L;
-            if (!found) {
-                ck_assert_msg(r[i].sep, "sigma %g: the solution kappa0 %.10g, L %.10g of the scan is missing",
-                              sigma, r[i].k0, r[i].L);
-                unmatched_sep++;
-            }
+            ck_assert_msg(found, "sigma %g: the solution kappa0 %.10g, L %.10g of the scan is missing",
+                          sigma, r[i].k0, r[i].L);
         }
-        ck_assert_msg((int)res.unrepresentable == unmatched_sep,
-                      "sigma %g: %d solutions near the separatrix not returned, %zu counted unrepresentable",
-                      sigma, unmatched_sep, res.unrepresentable);
+        ck_assert_msg(res.unrepresentable == 0, "sigma %g: %zu counted unrepresentable", sigma,
+                      res.unrepresentable);
         nscan += n;
         nret += (int)res.count;
-        nunrep += (int)res.unrepresentable;
+        for (size_t j = 0; j < res.count; j++) nchain += res.solutions[j].npieces > 1;
         el_hermite_result_free(&res);
     }
     ck_assert_int_gt(nscan, 200);
-    ck_assert_int_gt(nunrep, 50);   /* the high tensions do reach the representation limit */
-    fprintf(stderr, "no_solution_lost_up_to_high_tension: %d scan roots, %d returned, %d unrepresentable\n",
-            nscan, nret, nunrep);
+    ck_assert_int_gt(nchain, 50);   /* the high tensions do need chains */
+    fprintf(stderr, "no_solution_lost_up_to_high_tension: %d scan roots, %d returned, %d of them chains\n",
+            nscan, nret, nchain);
+}
+END_TEST
+
+/* The chains lie on the exact curve: tests/data/hermite_chain_ref.txt holds points
+ * of exact solutions near the separatrix (sigma |p1-p0|^2 in [300, 1e4]), found at 90
+ * digits by Newton on the first integrals (tests/data/gen_hermite_chain_ref.py); each
+ * is among the returned solutions (same kappa0 and length), and the chain passes
+ * within 1e-9 |p1 - p0| of every reference point (the header's ~5e-10: what a double
+ * k near 1 allows) at the same arc length, up to a shift along the curve of the
+ * size of its length's error. */
+START_TEST(chains_lie_on_the_exact_curve)
+{
+    FILE *f = fopen("../data/hermite_chain_ref.txt", "r");
+    ck_assert_msg(f != NULL, "tests/data/hermite_chain_ref.txt missing");
+    int lines = 0, chains = 0;
+    double worst = 0.0, P[2], V[2], sigma, L, k0, xy[22];
+    int np;
+    while (fscanf(f, "%lf %lf %lf %lf %lf %lf %lf %d", &P[0], &P[1], &V[0], &V[1], &sigma, &L, &k0, &np) == 8) {
+        for (int j = 0; j < 22; j++) ck_assert_int_eq(fscanf(f, "%lf", &xy[j]), 1);
+        lines++;
+        const double p0[2] = {0, 0}, t0[2] = {0, 1};
+        el_hermite_options o;
+        el_hermite_options_defaults(&o);
+        o.sigma = sigma;
+        el_hermite_result r;
+        ck_assert_int_eq(el_hermite_solve(p0, t0, P, V, &o, &r), EL_OK);
+        const el_hermite_solution *s = NULL;
+        for (size_t i = 0; i < r.count && !s; i++)
+            if (fabs(r.solutions[i].kappa0 - k0) <= 1e-6 * (1.0 + fabs(k0)) &&
+                fabs(r.solutions[i].length - L) <= 1e-6 * L)
+                s = &r.solutions[i];
+        ck_assert_msg(s != NULL, "sigma %g: the exact solution kappa0 %.10g, L %.10g is not returned", sigma, k0, L);
+        chains += s->npieces > 1;
+        const el_smooth_params *pc[3];
+        const int n = pieces_of(s, pc);
+        for (int j = 0; j <= 10; j++) {
+            /* the piece holding arc length t, and the distance across the curve */
+            double t = s->length * j / 10.0, q[2], th;
+            int i = 0;
+            while (i + 1 < n && t > pc[i]->length) t -= pc[i++]->length;
+            ck_assert_int_eq(el_smooth_eval(pc[i], 1, &t, q, &th, NULL), EL_OK);
+            const double dx = q[0] - xy[2 * j], dy = q[1] - xy[2 * j + 1];
+            worst = fmax(worst, fabs(dx * sin(th) - dy * cos(th)));
+            ck_assert_msg(hypot(dx, dy) <= 1e-9 + 2.0 * fabs(s->length - L),
+                          "sigma %g, point %d: %g from the exact curve", sigma, j, hypot(dx, dy));
+        }
+        el_hermite_result_free(&r);
+    }
+    fclose(f);
+    ck_assert_int_ge(lines, 30);
+    ck_assert_int_ge(chains, 30);
+    ck_assert_msg(worst <= 1e-9, "a chain lies %g across from the exact curve", worst);
+    fprintf(stderr, "chains_lie_on_the_exact_curve: %d solutions (%d chains), at most %.2g across\n",
+            lines, chains, worst);
 }
 END_TEST
 
@@ -715,7 +838,9 @@ int main(void)
     tcase_add_test(tc, length_mode_inverts_tension_mode);
     tcase_add_test(tc, mirrored_data_give_mirrored_solutions);
     tcase_add_test(tc, near_separatrix_solutions_meet_tol);
+    tcase_add_test(tc, length_mode_near_the_chord_returns_chains);
     tcase_add_test(tc, no_solution_lost_up_to_high_tension);
+    tcase_add_test(tc, chains_lie_on_the_exact_curve);
     tcase_add_test(tc, collinear_data_give_the_straight_segment);
     tcase_add_test(tc, opposite_and_parallel_tangents);
     tcase_add_test(tc, circle_is_found_to_its_accuracy);

@@ -176,6 +176,27 @@ def test_hermite_table_json_and_svg(capsys, tmp_path):
         assert c.length == pytest.approx(4.0)
 
 
+def test_hermite_chains_in_json_svg_and_bspline(capsys, tmp_path):
+    """High tension: the solutions near the separatrix are chains; the JSON holds them
+    as {"type": "chain", "pieces": [...]}, which rebuild to the same curve from p0 to
+    p1, the picture draws every solution, and `bspline` converts a chain to one B-spline."""
+    args = ["0", "0", "1", "0", "1", "0.2", "1", "0.1", "--tension", "1500"]
+    r = run("hermite", *args, "--svg", tmp_path / "h.svg", env_extra={"LIBELASTICA_NO_MATPLOTLIB": "1"})
+    assert r.returncode == 0, r.stderr
+    doc = json.loads(cli(capsys, "hermite", *args, "--json", "-").stdout)
+    kinds = [s["curve"]["type"] for s in doc["solutions"]]
+    assert "chain" in kinds
+    root = svg_ok(tmp_path / "h.svg")
+    assert sum(1 for e in root.iter() if e.tag.endswith("polyline")) >= len(kinds)
+    for s in doc["solutions"]:
+        c = el.io.curve_from_dict(s["curve"])
+        np.testing.assert_allclose(c.points([0.0, c.length]), [[0, 0], [1, 0.2]], atol=1e-9)
+    chain = next(s for s in doc["solutions"] if s["curve"]["type"] == "chain")
+    (tmp_path / "c.json").write_text(json.dumps(chain))
+    out = json.loads(cli(capsys, "bspline", tmp_path / "c.json", "--tol", "1e-6", "--json", "-").stdout)
+    assert out["curve"]["type"] == "chain" and 0 <= out["bspline"]["max_deviation"] <= 1e-6
+
+
 def test_png_or_clear_error(tmp_path):
     out = tmp_path / "h.png"
     r = run("hermite", "0", "0", "1", "0", "1", "0", "1", "0", "--tension", "10", "--png", out)

@@ -10,7 +10,7 @@ from __future__ import annotations
 import json
 
 from . import defaults
-from .geometry import (curve_bspline, edge_end, el, is_sketch, link_edge, np, part_bspline,
+from .geometry import (edge_end, el, is_sketch, link_edge, np, part_bspline,
                        plane_coordinates, plane_curvature, sketch_geo_of_edge)
 from .proxy import (FeatureProxy, InputProblem, add_enum, add_property, attach_view,
                     check_degree, check_number, check_tolerance, read_only)
@@ -278,7 +278,8 @@ class BlendProxy(FeatureProxy):
             r["g2"], r["g2_ducks"], r["bspline"] = g2_blend(r, obj.Solution, tol, degree)
             return r
         try:
-            r["bspline"] = curve_bspline(curves[obj.Solution], tol, degree)
+            # a SmoothElastica, or near the separatrix a Hermite chain: both give one B-spline
+            r["bspline"] = curves[obj.Solution].to_bspline(tol=tol, degree=degree)
         except ValueError as exc:
             raise InputProblem(f"B-spline failed: {exc}") from None
         return r

@@ -11,7 +11,6 @@ import json
 import math
 
 import FreeCAD as App
-import Part
 
 from . import defaults
 from .geometry import (chain_bspline, cubic_through, el, link_edge, np, part_bspline,

@@ -1,0 +1,179 @@
+/*
+ * The polynomials of seed 004 §4 and their real roots in an interval: (18) (the
+ * domain of case 1), (40) (the separatrix crossings, Theorem 11) and (45) (the
+ * special values), for hermite_tension.c.
+ */
+#include "hermite_internal.h"
+#include <gsl/gsl_poly.h>
+#include <string.h>
+
+/* Real roots of sum c[i] x^i (degree <= 2) by gsl_poly_solve_quadratic. */
+int el__poly_real_roots(const double *c_in, int deg, double *roots, int *nroots)
+{
+    double c[3];
+    double cmax = 0.0;
+    for (int i = 0; i <= deg; i++) { c[i] = c_in[i]; cmax = fmax(cmax, fabs(c[i])); }
+    *nroots = 0;
+    while (deg > 0 && fabs(c[deg]) <= 1e-14 * cmax) deg--;
+    if (deg <= 0) return EL_OK;
+    double r0, r1;
+    const int n = deg == 2 ? gsl_poly_solve_quadratic(c[2], c[1], c[0], &r0, &r1) : (r0 = -c[0] / c[1], 1);
+    if (n > 0) roots[(*nroots)++] = r0;
+    if (n > 1) roots[(*nroots)++] = r1;
+    return EL_OK;
+}
+
+/* p(x) and p'(x) by Horner's scheme */
+static double horner(const double *c, int deg, double x, double *dp)
+{
+    double v = c[deg], d = 0.0;
+    for (int i = deg - 1; i >= 0; i--) { d = d * x + v; v = v * x + c[i]; }
+    *dp = d;
+    return v;
+}
+
+/* The real roots of sum c[i] x^i (degree <= 8) in [lo, hi], ascending: between
+ * consecutive real roots of the derivative (found the same way, down to degree 2, to
+ * the relative precision tol) the polynomial is monotone, so every sign change there
+ * holds exactly one root, found by Newton's method kept inside the bracket (bisection
+ * when a step leaves it or does not shrink it by half). Written here because GSL's
+ * gsl_poly_complex_solve (the eigenvalues of the companion matrix) returns close
+ * real roots of (40) as complex pairs once sigma is large (its coefficients then span
+ * thirty orders of magnitude: none found at sigma |p1-p0|^2 = 4000 on test problems),
+ * and computes the complex roots that are not needed. A root of even multiplicity
+ * (no sign change) is not found. */
+void el__poly_roots_in(const double *c_in, int deg, double lo, double hi, double tol,
+                          double *roots, int *nroots)
+{
+    /* the terms' sizes on the interval, |c_i| R^i: a leading coefficient negligible there
+     * (a degenerate problem) lowers the degree */
+    const double R = fmax(1.0, fmax(fabs(lo), fabs(hi)));
+    double c[9], tmax = 0.0, Ri = 1.0, Rdeg[9];
+    for (int i = 0; i <= deg; i++, Ri *= R) { c[i] = c_in[i]; Rdeg[i] = Ri; tmax = fmax(tmax, fabs(c[i]) * Ri); }
+    *nroots = 0;
+    while (deg > 0 && fabs(c[deg]) * Rdeg[deg] <= 1e-14 * tmax) deg--;
+    if (deg <= 0 || !(hi > lo)) return;
+    if (deg <= 2) {
+        double r[2];
+        int n;
+        el__poly_real_roots(c, deg, r, &n);
+        for (int i = 0; i < n; i++)
+            if (r[i] >= lo && r[i] <= hi) roots[(*nroots)++] = r[i];
+        if (*nroots == 2 && roots[0] > roots[1]) { const double t = roots[0]; roots[0] = roots[1]; roots[1] = t; }
+        return;
+    }
+    double d[8], crit[8], pts[10], dp;
+    int nc;
+    for (int i = 1; i <= deg; i++) d[i - 1] = i * c[i];
+    el__poly_roots_in(d, deg - 1, lo, hi, 1e-7, crit, &nc);
+    int np = 0;
+    pts[np++] = lo;
+    for (int i = 0; i < nc; i++) pts[np++] = crit[i];
+    pts[np++] = hi;
+    double fb = horner(c, deg, lo, &dp);
+    for (int i = 0; i + 1 < np; i++) {
+        double a = pts[i], b = pts[i + 1], fa = fb;
+        fb = horner(c, deg, b, &dp);
+        if (fa == 0.0) {
+            if (*nroots == 0 || roots[*nroots - 1] != a) roots[(*nroots)++] = a;
+            continue;
+        }
+        if (fb == 0.0 || fa * fb > 0.0) continue;
+        /* [a, b] with p(a) p(b) < 0: Newton, bisection when the step leaves the bracket
+         * or the previous step did not halve (rtsafe of Numerical Recipes) */
+        double x = 0.5 * (a + b), dxold = b - a, dx = dxold, ga = fa;
+        double fx = horner(c, deg, x, &dp);
+        for (int it = 0; it < 100; it++) {
+            if (((x - b) * dp - fx) * ((x - a) * dp - fx) > 0.0 || fabs(2.0 * fx) > fabs(dxold * dp)) {
+                dxold = dx;
+                dx = 0.5 * (b - a);
+                x = a + dx;
+            } else {
+                dxold = dx;
+                dx = fx / dp;
+                x -= dx;
+            }
+            if (fabs(dx) <= tol * fabs(x) + 1e-300) break;
+            fx = horner(c, deg, x, &dp);
+            if (fx == 0.0) break;
+            if (fx * ga > 0.0) { a = x; ga = fx; } else b = x;
+        }
+        roots[(*nroots)++] = x;
+    }
+}
+
+/* Small polynomial arithmetic (coefficients low to high, degree <= 8). */
+typedef struct { double c[9]; int d; } poly;
+static poly pmul(poly a, poly b)
+{
+    poly r = {{0}, a.d + b.d};
+    for (int i = 0; i <= a.d; i++)
+        for (int j = 0; j <= b.d; j++) r.c[i + j] += a.c[i] * b.c[j];
+    return r;
+}
+static poly padd(poly a, double sa, poly b, double sb)
+{
+    poly r = {{0}, a.d > b.d ? a.d : b.d};
+    for (int i = 0; i <= a.d; i++) r.c[i] += sa * a.c[i];
+    for (int i = 0; i <= b.d; i++) r.c[i] += sb * b.c[i];
+    return r;
+}
+
+/* Polynomial (40) (Theorem 11): its roots are the kappa0 with kappa_m^2 = 2 sigma.
+ * kappa_m^2 = 2 sigma in (8) gives 4 kappa0'^2 = -D, D = (kappa0^2 - sigma)^2 - sigma^2 (42).
+ * Case 1: with (16) 4 (kappa1 - C)^2 + P2^2 D = 0 (43); subtracting 4/P2 (17) leaves
+ * kappa1 = N / M, N = 4 P2 C^2 + P2^3 D + 8 V1 C + 4 A P2, M = 8 (P2 C + V1); so
+ * 4 (N - C M)^2 + P2^2 D M^2 = 0, degree 8, leading 4 P2^2 (P1^2 + P2^2)^2 as printed.
+ * Case 2: kappa0' = (A - C^2)/(2 V1) gives (A - C^2)^2 + V1^2 D = 0. */
+static poly poly40(const hprob *pr)
+{
+    const double s = pr->sigma, P1 = pr->P1, P2 = pr->P2, V1 = pr->V1, V2 = pr->V2;
+    const poly w = {{-s, 0, 1}, 2};
+    const poly C = {{-0.5 * s * P1, 1.0, 0.5 * P1}, 2};
+    const poly A = {{s - s * V2, 0, V2}, 2};
+    const poly one = {{1}, 0};
+    const poly D = padd(pmul(w, w), 1.0, one, -s * s);
+    if (pr->hcase == 2) {
+        const poly AC = padd(A, 1.0, pmul(C, C), -1.0);
+        return padd(pmul(AC, AC), 1.0, D, V1 * V1);
+    }
+    poly N = padd(pmul(C, C), 4.0 * P2, D, P2 * P2 * P2);
+    N = padd(N, 1.0, C, 8.0 * V1);
+    N = padd(N, 1.0, A, 4.0 * P2);
+    const poly M = padd(C, 8.0 * P2, one, 8.0 * V1);
+    const poly NC = padd(N, 1.0, pmul(C, M), -1.0);
+    return padd(pmul(NC, NC), 4.0, pmul(D, pmul(M, M)), P2 * P2);
+}
+
+/* (45): kappa0^2 = sigma, and kappa0' = 0, which by (15), (16) is C^2 = A. With
+ * w = kappa0^2 - sigma, C^2 - A = w (w P1^2/4 + P1 kappa0 + 1 - V2): the quartic
+ * splits into kappa0^2 = sigma and a quadratic, so at most four values. */
+int el__hermite_special_values(const hprob *pr, double *out, int *n)
+{
+    *n = 0;
+    const double s = pr->sigma, P1 = pr->P1, V2 = pr->V2;
+    if (s >= 0.0) { out[(*n)++] = -sqrt(s); out[(*n)++] = sqrt(s); }
+    if (pr->hcase == 3) return EL_OK;
+    const double q[3] = {1.0 - V2 - 0.25 * s * P1 * P1, P1, 0.25 * P1 * P1};
+    double r[2];
+    int nr, rc = el__poly_real_roots(q, 2, r, &nr);
+    if (rc) return rc;
+    for (int i = 0; i < nr; i++) out[(*n)++] = r[i];
+    return EL_OK;
+}
+
+/* The ends of (18) (case 1): disc(kappa0) = a2 kappa0^2 + a1 kappa0 + a0 >= 0. */
+void el__hermite_disc_coeffs(const hprob *pr, double a[3])
+{
+    const double s = pr->sigma, P1 = pr->P1, P2 = pr->P2, V1 = pr->V1, V2 = pr->V2;
+    a[2] = P2 * V1 * P1 + P2 * P2 * V2;
+    a[1] = 2.0 * P2 * V1;
+    a[0] = V1 * V1 - P2 * V1 * P1 * s + P2 * P2 * s * (1.0 - V2);
+}
+
+int el__hermite_poly40(const hprob *pr, double c[9])
+{
+    const poly p = poly40(pr);
+    memcpy(c, p.c, sizeof p.c);
+    return p.d;
+}
