@@ -147,6 +147,17 @@ int el_smooth_eval(const el_smooth_params *p, size_t n, const double *s,
 int el_smooth_jacobian(const el_smooth_params *p, size_t n, const double *s,
                        double *xy, double *jac);
 
+/*
+ * The same segment run backwards: out starts at p's end gamma(length) with the
+ * opposite tangent and runs to p's start, gamma_out(s) = gamma_p(length - s) and
+ * kappa_out(s) = -kappa_p(length - s). With u = sqrt(mu) s + q, u(length - s) = -u_out(s)
+ * for q_out = -(sqrt(mu) length + q); sn odd, dn even and theta_out = theta + pi give
+ * k_out = -k, phi_out = phi + pi, mu and length kept. out may equal p.
+ * Errors: EL_EINVAL (bad params, NULL out; out untouched), EL_EDOM (the end point as
+ * el_smooth_eval; out untouched).
+ */
+int el_smooth_reverse(const el_smooth_params *p, el_smooth_params *out);
+
 /* Bending energy integral_0^length kappa^2 ds, in closed form. Errors: EL_EINVAL (bad
  * params, NULL energy; *energy untouched), EL_EDOM (as el_smooth_eval with the one
  * sample s = length, or the energy overflows; *energy = NaN). */
@@ -1332,6 +1343,23 @@ int el_bspline_curvature(const el_bspline *b, size_t n, const double *t, double 
  * range), EL_ENOMEM. out is untouched on error.
  */
 int el_bspline_interpolate_c2(const double *xy, size_t n, el_bspline *out);
+
+/* An end condition of el_bspline_interpolate_c2_ends, in the chord-length parameter u:
+ * order 1: B'(u) = value (a clamped end: a unit tangent there makes the speed 1);
+ * order 2: B''(u) = value (value = 0 is the natural end; kappa N for a curvature
+ * kappa with unit normal N when the speed there is ~1). */
+typedef struct el_bspline_end {
+    int order;
+    double value[2];
+} el_bspline_end;
+
+/*
+ * el_bspline_interpolate_c2 with end conditions: start and end each NULL (natural,
+ * B'' = 0) or an el_bspline_end. Errors as el_bspline_interpolate_c2, plus EL_EINVAL
+ * for an order other than 1 or 2 or a non-finite value.
+ */
+int el_bspline_interpolate_c2_ends(const double *xy, size_t n, const el_bspline_end *start,
+                                   const el_bspline_end *end, el_bspline *out);
 
 /*
  * A clamped non-rational planar B-spline of degree 3..7 (simple interior

@@ -321,19 +321,49 @@ int el_bspline_curvature(const el_bspline *b, size_t n, const double *t, double 
 /* ------------------------------------------------------------------ C2 interpolation */
 
 /*
- * Natural cubic (B'' = 0 at both ends) with chord-length parameters
- * u_0 = 0, u_i = u_{i-1} + |D_i - D_{i-1}|; flat knots u_0 x4, u_1..u_{n-2},
- * u_{n-1} x4, n+2 poles, P_0 = D_0, P_{n+1} = D_{n-1}. Unknowns P_1..P_n:
- *   B''(u_0) = 0     <=> (P_2-P_1)/(U_5-U_2) = (P_1-P_0)/(U_4-U_1),
- *   B(u_i) = D_i     (i = 1..n-2; three non-zero basis functions),
- *   B''(u_{n-1}) = 0 <=> (P_{n+1}-P_n)/(U_{n+4}-U_{n+1}) = (P_n-P_{n-1})/(U_{n+3}-U_n)
- * (second-derivative poles, Piegl & Tiller (3.8)): a tridiagonal system,
- * totally positive in its interpolation rows, solved without pivoting.
+ * C2 cubic with chord-length parameters u_0 = 0, u_i = u_{i-1} + |D_i - D_{i-1}|;
+ * flat knots u_0 x4, u_1..u_{n-2}, u_{n-1} x4, n+2 poles, P_0 = D_0,
+ * P_{n+1} = D_{n-1}. Unknowns P_1..P_n. With the derivative poles of Piegl &
+ * Tiller (3.8), Q_i = 3 (P_{i+1} - P_i) / (U_{i+4} - U_{i+1}), B'(u_0) = Q_0 and
+ * B''(u_0) = 2 (Q_1 - Q_0) / (U_4 - U_2), so with a = U_4 - U_1, c = U_5 - U_2:
+ *   B'(u_0) = V   <=> P_1 = P_0 + a V / 3,
+ *   B''(u_0) = V  <=> (a + c) P_1 - a P_2 = c P_0 - a c (U_4 - U_2) V / 6
+ * (V = 0: the natural end), mirrored at u_{n-1}; between them
+ *   B(u_i) = D_i     (i = 1..n-2; three non-zero basis functions):
+ * a tridiagonal system, totally positive in its interpolation rows, solved
+ * without pivoting.
  */
+/* One end's row: diag, off-diagonal and right-hand side (x, y) in the parameter
+ * t = u / len (derivatives in u times len, len^2). a: the knot span next to the
+ * end; c: the one after; e: the second-derivative span. */
+static void end_row(const el_bspline_end *end, double a, double c, double e, double len,
+                    const double *P, double *diag, double *off, double *rx, double *ry)
+{
+    if (end && end->order == 1) {
+        *diag = 1.0; *off = 0.0;
+        *rx = P[0] + a * len * end->value[0] / 3.0;
+        *ry = P[1] + a * len * end->value[1] / 3.0;
+        return;
+    }
+    const double w = end ? a * c * e * len * len / 6.0 : 0.0;
+    *diag = a + c; *off = -a;
+    *rx = c * P[0] - (end ? w * end->value[0] : 0.0);
+    *ry = c * P[1] - (end ? w * end->value[1] : 0.0);
+}
+
 int el_bspline_interpolate_c2(const double *xy, size_t n, el_bspline *out)
+{
+    return el_bspline_interpolate_c2_ends(xy, n, NULL, NULL, out);
+}
+
+int el_bspline_interpolate_c2_ends(const double *xy, size_t n, const el_bspline_end *start,
+                                   const el_bspline_end *end, el_bspline *out)
 {
     if (!xy || !out || n < 2 || el__too_many(n, 2, sizeof(double))) return EL_EINVAL;
     if (el__all_finite(xy, 2 * n)) return EL_EINVAL;
+    if ((start && ((start->order != 1 && start->order != 2) || el__all_finite(start->value, 2))) ||
+        (end && ((end->order != 1 && end->order != 2) || el__all_finite(end->value, 2))))
+        return EL_EINVAL;
     el__gsl_quiet();
     el_bspline b;
     int st = el_bspline_alloc(&b, 3, 2, n + 2, n);
@@ -356,19 +386,21 @@ int el_bspline_interpolate_c2(const double *xy, size_t n, el_bspline *out)
     const double len = b.knots[n - 1];
     for (size_t i = 0; i < n + 6; i++) U[i] /= len;
     const double P0x = xy[0], P0y = xy[1], Pnx = xy[2 * n - 2], Pny = xy[2 * n - 1];
-    {   /* start row */
-        const double a = U[4] - U[1], c = U[5] - U[2];
-        diag[0] = a + c; sup[0] = -a; rx[0] = c * P0x; ry[0] = c * P0y;
-    }
+    end_row(start, U[4] - U[1], U[5] - U[2], U[4] - U[2], len, xy, &diag[0], &sup[0], &rx[0], &ry[0]);
     for (size_t i = 1; i + 1 < n; i++) {   /* interpolation rows: P_i, P_{i+1}, P_{i+2} */
         double N[4];
         basis_funs(U, 3 + i, 3, U[3 + i], N);   /* N_{i..i+3}; N_{i+3}(u_i) = 0 */
         sub[i - 1] = N[0]; diag[i] = N[1]; sup[i] = N[2];
         rx[i] = xy[2 * i]; ry[i] = xy[2 * i + 1];
     }
-    {   /* end row, unknown index n-1 holds P_n */
-        const double c = U[n + 4] - U[n + 1], d = U[n + 3] - U[n];
-        sub[n - 2] = -c; diag[n - 1] = c + d; rx[n - 1] = d * Pnx; ry[n - 1] = d * Pny;
+    {   /* end row, unknown index n-1 holds P_n; the end's derivative runs backwards */
+        el_bspline_end back;
+        if (end) {
+            back = *end;
+            if (back.order == 1) { back.value[0] = -back.value[0]; back.value[1] = -back.value[1]; }
+        }
+        end_row(end ? &back : NULL, U[n + 4] - U[n + 1], U[n + 3] - U[n], U[n + 3] - U[n + 1], len,
+                xy + 2 * n - 2, &diag[n - 1], &sub[n - 2], &rx[n - 1], &ry[n - 1]);
     }
     /* Gaussian elimination without pivoting (the Thomas algorithm), both right-hand
      * sides at once. By hand: GSL's gsl_linalg_solve_tridiag is the same

@@ -218,6 +218,20 @@ int el_smooth_jacobian(const el_smooth_params *p, size_t n, const double *s,
     return EL_OK;
 }
 
+/* Run backwards (header): the end point by el_smooth_eval, the rest by sn odd, dn even. */
+int el_smooth_reverse(const el_smooth_params *p, el_smooth_params *out)
+{
+    if (!out || el_smooth_check(p)) return EL_EINVAL;
+    double end[2];
+    int st = el_smooth_eval(p, 1, &p->length, end, NULL, NULL);
+    if (st) return st;
+    const el_smooth_params r = {end[0], end[1], p->phi + M_PI, p->mu, -p->k,
+                                -(sqrt(p->mu) * p->length + p->q), p->length};
+    if (el_smooth_check(&r)) return EL_EDOM;
+    *out = r;
+    return EL_OK;
+}
+
 /* int kappa^2 ds = 4 k^2 mu int cn^2 ds = 4 k^2 sqrt(mu) [u - D(u)]_q^{u1}; at |k| = 1,
  * 4 sqrt(mu) [E(u)]_q^{u1} with E = tanh (no cancellation of u - D for long curves). */
 int el_smooth_energy(const el_smooth_params *p, double *energy)

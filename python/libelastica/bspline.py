@@ -126,12 +126,29 @@ class BSpline:
                 and self.max_deviation == other.max_deviation)
 
 
-def interpolate_c2(points) -> BSpline:
-    """The natural C2 cubic B-spline through the vertices of a polyline (n >= 2),
-    chord-length parametrised (knots at the cumulative chord lengths)."""
+def _c2_end(spec, name: str):
+    """An el_bspline_end from None (natural), {"d1": (x, y)} or {"d2": (x, y)}."""
+    if spec is None:
+        return ffi.NULL
+    if not isinstance(spec, dict) or len(spec) != 1 or next(iter(spec)) not in ("d1", "d2"):
+        raise ValueError(f"interpolate_c2: {name} must be None, {{'d1': (x, y)}} or "
+                         f"{{'d2': (x, y)}}, got {spec!r}")
+    key, value = next(iter(spec.items()))
+    v = as_vector(value, f"interpolate_c2: {name} {key}")
+    if v.shape != (2,):
+        raise ValueError(f"interpolate_c2: {name} {key} must be two numbers, got {value!r}")
+    return ffi.new("el_bspline_end *", {"order": 1 if key == "d1" else 2, "value": list(v)})
+
+
+def interpolate_c2(points, start=None, end=None) -> BSpline:
+    """The C2 cubic B-spline through the vertices of a polyline (n >= 2), chord-length
+    parametrised (knots at the cumulative chord lengths). Each end is natural (B'' = 0,
+    None), or ``{"d1": (x, y)}`` (B' there: a unit tangent clamps the direction at speed
+    1) or ``{"d2": (x, y)}`` (B'' there: kappa times the unit normal for a curvature)."""
     xy = as_points(points, "points")
+    s, e = _c2_end(start, "start"), _c2_end(end, "end")
     b = ffi.new("el_bspline *")
-    check(lib.el_bspline_interpolate_c2(dptr(xy), len(xy), b), "interpolate_c2")
+    check(lib.el_bspline_interpolate_c2_ends(dptr(xy), len(xy), s, e, b), "interpolate_c2")
     return bspline_from_c(b)
 
 

@@ -100,6 +100,13 @@ class SmoothElastica:
               "SmoothElastica.jacobian")
         return jac
 
+    def reversed(self) -> "SmoothElastica":
+        """The same segment run backwards (el_smooth_reverse): it starts at this one's end
+        with the opposite tangent; points(s) = self.points(length - s), curvature negated."""
+        out = ffi.new("el_smooth_params *")
+        check(lib.el_smooth_reverse(self._c(), out), "SmoothElastica.reversed")
+        return SmoothElastica(**{n: float(getattr(out, n)) for n in SMOOTH_PARAMS})
+
     def to_bspline(self, tol: float = 1e-6, degree: int = 3):
         """Clamped non-rational B-spline of the given degree (3..7) within ``tol`` (absolute,
         coordinate units) of this segment everywhere, parametrised by arc length on

@@ -192,6 +192,66 @@ START_TEST(test_interpolate_c2_discrete_elastica)
 }
 END_TEST
 
+/* end conditions: the asked first or second derivative exactly, the vertices still
+ * interpolated, C2 inside; natural ends equal el_bspline_interpolate_c2 */
+START_TEST(interpolate_c2_ends_meet_their_derivatives)
+{
+    el_discrete_params dp = {0.5, -0.2, 0.3, 0.2, 0.25, 0.1, 0.8};
+    enum { NV = 12 };
+    double xy[2 * NV];
+    ck_assert_int_eq(el_discrete_eval(&dp, NV, xy), EL_OK);
+    const el_bspline_end kinds[4][2] = {
+        {{1, {0.6, 0.8}}, {1, {-1.0, 0.0}}},          /* clamped tangents */
+        {{2, {0.3, -1.1}}, {2, {0.0, 0.7}}},          /* given second derivatives */
+        {{1, {0.0, 1.0}}, {2, {0.0, 0.0}}},           /* mixed, the end natural */
+        {{2, {0.0, 0.0}}, {2, {0.0, 0.0}}},           /* natural both: the plain cubic */
+    };
+    for (int c = 0; c < 4; c++) {
+        el_bspline b, plain;
+        ck_assert_int_eq(el_bspline_interpolate_c2_ends(xy, NV, &kinds[c][0], &kinds[c][1], &b), EL_OK);
+        for (int i = 0; i < NV; i++) {
+            double pt[2];
+            ck_assert_int_eq(el_bspline_eval(&b, 1, &b.knots[i], pt), EL_OK);
+            ck_assert_close(pt[0], xy[2 * i], 1e-12);
+            ck_assert_close(pt[1], xy[2 * i + 1], 1e-12);
+        }
+        const double t[2] = {b.knots[0], b.knots[NV - 1]};
+        for (int e = 0; e < 2; e++) {
+            const el_bspline_end *end = &kinds[c][e];
+            double d[2];
+            ck_assert_int_eq(el_bspline_derivative(&b, end->order, 1, &t[e], d), EL_OK);
+            ck_assert_close(d[0], end->value[0], 1e-12);
+            ck_assert_close(d[1], end->value[1], 1e-12);
+        }
+        for (int i = 1; i + 1 < NV; i++) {   /* C2 at interior knots */
+            const double eps = 1e-7, tt[2] = {b.knots[i] - eps, b.knots[i] + eps};
+            double d[4];
+            ck_assert_int_eq(el_bspline_derivative(&b, 2, 2, tt, d), EL_OK);
+            ck_assert(hypot(d[2] - d[0], d[3] - d[1]) < 1e-5);
+        }
+        if (c == 3) {
+            ck_assert_int_eq(el_bspline_interpolate_c2(xy, NV, &plain), EL_OK);
+            for (size_t j = 0; j < 2 * plain.npoles; j++) ck_assert_close(b.poles[j], plain.poles[j], 1e-13);
+            el_bspline_free(&plain);
+        }
+        el_bspline_free(&b);
+    }
+    /* two vertices with both tangents: the cubic Hermite segment */
+    const double two[4] = {0, 0, 2, 0};
+    el_bspline b;
+    ck_assert_int_eq(el_bspline_interpolate_c2_ends(two, 2, &kinds[0][0], &kinds[0][1], &b), EL_OK);
+    double d[2];
+    ck_assert_int_eq(el_bspline_derivative(&b, 1, 1, &b.knots[0], d), EL_OK);
+    ck_assert_close(d[0], 0.6, 1e-14);
+    el_bspline_free(&b);
+    /* bad end conditions */
+    el_bspline_end bad = {3, {0, 0}};
+    ck_assert_int_eq(el_bspline_interpolate_c2_ends(xy, NV, &bad, NULL, &b), EL_EINVAL);
+    bad.order = 1; bad.value[1] = NAN;
+    ck_assert_int_eq(el_bspline_interpolate_c2_ends(xy, NV, NULL, &bad, &b), EL_EINVAL);
+}
+END_TEST
+
 START_TEST(test_interpolate_c2_bad_input)
 {
     el_bspline b;
@@ -375,6 +435,7 @@ int main(void)
     tcase_add_test(tc, test_bad_bsplines);
     tcase_add_test(tc, test_interpolate_c2_discrete_elastica);
     tcase_add_test(tc, test_interpolate_c2_bad_input);
+    tcase_add_test(tc, interpolate_c2_ends_meet_their_derivatives);
     tcase_add_loop_test(tc, test_smooth_to_bspline_certified, 0, 9);
     tcase_add_test(tc, test_smooth_to_bspline_degrees);
     tcase_add_loop_test(tc, test_smooth_to_bspline_end_tangents, 0, 28);

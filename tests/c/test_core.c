@@ -439,6 +439,55 @@ START_TEST(smooth_negative_k_is_the_mirror_image)
 }
 END_TEST
 
+START_TEST(smooth_reverse_runs_the_same_points_backwards)
+{
+    /* gamma_r(s) = gamma(L - s), theta_r = theta(L - s) + pi (mod 2 pi), kappa_r = -kappa(L - s),
+     * over k across 1 and its sign, phases and scales, at 3 (sparse) and 41 samples */
+    const double ks[] = {0.0, 0.3, -0.7, 0.999, 1.0, -1.0, 1.001, 2.5, -4.0};
+    const double mus[] = {1e-4, 0.8, 50.0};
+    const size_t ns[] = {3, 41};
+    for (size_t a = 0; a < sizeof ks / sizeof *ks; a++)
+        for (size_t b = 0; b < sizeof mus / sizeof *mus; b++)
+            for (size_t c = 0; c < 2; c++) {
+                const double mu = mus[b];
+                const el_smooth_params p = {1.5, -2.0, 0.7, mu, ks[a], 0.3 + a, 6.0 / sqrt(mu)};
+                el_smooth_params r;
+                ck_assert_int_eq(el_smooth_reverse(&p, &r), EL_OK);
+                ck_assert_close(r.length, p.length, 0.0);
+                const size_t n = ns[c];
+                double s[41], sb[41], xy[82], xr[82], th[41], thr[41], ka[41], kar[41];
+                for (size_t i = 0; i < n; i++) {
+                    s[i] = p.length * i / (n - 1.0);
+                    sb[i] = p.length - s[i];
+                }
+                ck_assert_int_eq(el_smooth_eval(&p, n, sb, xy, th, ka), EL_OK);
+                ck_assert_int_eq(el_smooth_eval(&r, n, s, xr, thr, kar), EL_OK);
+                const double tol = 1e-11 * (1.0 + p.length);
+                for (size_t i = 0; i < n; i++) {
+                    ck_assert_close(xr[2 * i], xy[2 * i], tol);
+                    ck_assert_close(xr[2 * i + 1], xy[2 * i + 1], tol);
+                    const double dth = remainder(thr[i] - th[i] - M_PI, 2.0 * M_PI);
+                    ck_assert_close(dth, 0.0, 1e-10);
+                    ck_assert_close(kar[i], -ka[i], 1e-10 * (1.0 + fabs(ka[i])));
+                }
+                el_smooth_params twice = r;
+                ck_assert_int_eq(el_smooth_reverse(&twice, &twice), EL_OK); /* out may equal p */
+                double xt[2];
+                ck_assert_int_eq(el_smooth_eval(&twice, 1, &p.length, xt, NULL, NULL), EL_OK);
+                double xe[2];
+                ck_assert_int_eq(el_smooth_eval(&p, 1, &p.length, xe, NULL, NULL), EL_OK);
+                ck_assert_close(xt[0], xe[0], tol);
+                ck_assert_close(xt[1], xe[1], tol);
+            }
+    el_smooth_params bad = {0, 0, 0, -1.0, 0.5, 0, 1}, out = {0};
+    ck_assert_int_eq(el_smooth_reverse(&bad, &out), EL_EINVAL);
+    ck_assert_int_eq(out.mu, 0.0);
+    ck_assert_int_eq(el_smooth_reverse(NULL, &out), EL_EINVAL);
+    bad.mu = 1.0;
+    ck_assert_int_eq(el_smooth_reverse(&bad, NULL), EL_EINVAL);
+}
+END_TEST
+
 START_TEST(smooth_rejects_bad_input)
 {
     double s[2] = {0, 1}, xy[4] = {7, 7, 7, 7}, jac[28], e = 7;
@@ -740,6 +789,7 @@ int main(void)
     tcase_add_test(sm, smooth_energy_matches_quadrature);
     tcase_add_test(sm, smooth_jacobian_matches_finite_differences);
     tcase_add_test(sm, smooth_negative_k_is_the_mirror_image);
+    tcase_add_test(sm, smooth_reverse_runs_the_same_points_backwards);
     tcase_add_test(sm, smooth_rejects_bad_input);
     tcase_add_test(sm, smooth_unresolvable_samples_are_edom_with_nan_outputs);
     tcase_add_test(sm, smooth_huge_n_is_einval_before_any_write);

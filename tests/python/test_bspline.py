@@ -115,6 +115,28 @@ def test_c2_interpolation_of_a_discrete_elastica():
     assert np.allclose(ref(t), b.evaluate(t), atol=1e-12)
 
 
+def test_c2_interpolation_end_conditions_compared_with_scipy():
+    """Clamped tangents and given second derivatives: the same cubic as scipy's
+    make_interp_spline with those end conditions (an independent solver)."""
+    from scipy.interpolate import make_interp_spline
+    pts = el.DiscreteElastica(x0=0, y0=0, h=0.3, phi=0.2, z=0.25, q=0.1, k=0.8, n=9).points()
+    chord = np.concatenate([[0], np.cumsum(np.hypot(*np.diff(pts, axis=0).T))])
+    t = np.linspace(chord[0], chord[-1], 201)
+    for start, end in ((("d1", (0.6, 0.8)), ("d1", (-1.0, 0.0))),
+                       (("d2", (0.3, -1.1)), ("d2", (0.0, 0.7))),
+                       (("d1", (0.0, 1.0)), ("d2", (0.0, 0.0)))):
+        b = interpolate_c2(pts, start=dict([start]), end=dict([end]))
+        order = {"d1": 1, "d2": 2}
+        ref = make_interp_spline(chord, pts, k=3, bc_type=([(order[start[0]], start[1])],
+                                                           [(order[end[0]], end[1])]))
+        assert np.abs(ref(t) - b.evaluate(t)).max() < 1e-10
+        assert np.allclose(b.derivative(b.domain[:1], order[start[0]]), [start[1]], atol=1e-12)
+        assert np.allclose(b.derivative(b.domain[1:], order[end[0]]), [end[1]], atol=1e-12)
+    for bad in ({"d3": (0, 0)}, {"d1": (0, 0, 1)}, {"d1": (np.nan, 0)}, ("d1", (0, 1))):
+        with pytest.raises(ValueError):
+            interpolate_c2(pts, start=bad)
+
+
 def test_c2_interpolation_bad_input():
     with pytest.raises(ValueError):
         interpolate_c2([[0, 0]])

@@ -149,3 +149,15 @@ def test_separatrix_sparse_grid_is_finite(k):
     assert np.isfinite(p).all()
     one = np.array([c.points(np.array([si]))[0] for si in s])
     assert np.abs(p - one).max() <= 1e-12
+
+
+@pytest.mark.parametrize("k", [0.0, 0.4, -0.9, 1.0, -1.0, 1.3, -2.5])
+def test_reversed_is_the_same_curve_backwards(k):
+    c = el.SmoothElastica(x0=1, y0=2, phi=0.4, mu=0.7, k=k, q=0.3, length=5.0)
+    r = c.reversed()
+    for s in (np.array([0.0, c.length]), np.linspace(0.0, c.length, 41)):
+        assert np.abs(r.points(s) - c.points(c.length - s)).max() < 1e-12
+        assert np.abs(r.curvature(s) + c.curvature(c.length - s)).max() < 1e-12
+        turn = np.remainder(r.angle(s) - c.angle(c.length - s), 2 * np.pi)
+        assert np.abs(turn - np.pi).max() < 1e-12
+    assert r.reversed().points(np.array([0.0]))[0] == pytest.approx(c.points(np.array([0.0]))[0], abs=1e-12)

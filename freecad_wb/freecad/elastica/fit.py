@@ -38,16 +38,6 @@ def _status_text(r):
     return "not converged (best curve kept): " + ffi.string(lib.el_strerror(st)).decode()
 
 
-def reversed_elastica(c):
-    """The smooth elastica c run backwards: it starts at c's end, its tangent turned by
-    pi, curvature negated. With u' = sqrt(mu) s' + q' and q' = -(sqrt(mu) L + q),
-    u(L - s') = -u', and sn odd, cn, dn even give k' = -k, phi' = phi + pi (checked
-    against c at every point in the tests)."""
-    x1, y1 = c.points(np().array([c.length]))[0]
-    return el().SmoothElastica(x0=float(x1), y0=float(y1), phi=c.phi + math.pi, mu=c.mu,
-                               k=-c.k, q=-(math.sqrt(c.mu) * c.length + c.q), length=c.length)
-
-
 def tangent_angle(edge, at, forward, plane):
     """The angle in ``plane`` of ``edge``'s tangent at its end nearest to ``at``
     (projected into the plane), signed so it points along ``forward`` (a plane vector)."""
@@ -139,7 +129,7 @@ def _shape_bspline(model, curves, split, constraints, tol, degree):
     joint is G2); discrete, the C2 cubic through the vertices (a keyline's both
     halves), natural at free ends, the constrained tangent or curvature at others."""
     if model == "smooth":
-        return chain_bspline([reversed_elastica(curves[0]), curves[1]] if split else curves,
+        return chain_bspline([curves[0].reversed(), curves[1]] if split else curves,
                              tol, degree)
     if split:
         a, b = curves[0].points(), curves[1].points()
@@ -353,7 +343,7 @@ class FitProxy(FeatureProxy):
         stored = stored_curves(obj)
         if stored and len(stored[0]) == 2 and isinstance(stored[0][0], el().SmoothElastica):
             first, second = stored[0]
-            return [reversed_elastica(first), second], stored[1]
+            return [first.reversed(), second], stored[1]
         return stored
 
 
@@ -397,5 +387,5 @@ def make(doc, sources=(), csv_file="", **props):
                        CsvFile=csv_file or "", **props)
 
 
-__all__ = ["FitProxy", "fit_core", "core_options", "make", "stored_curves", "reversed_elastica",
+__all__ = ["FitProxy", "fit_core", "core_options", "make", "stored_curves",
            "MODELS", "MODEL_NAMES", "DISTANCES", "DISTANCE_NAMES", "CONSTRAINT_FIELDS"]

@@ -3,6 +3,8 @@ plane coordinates of 3D points (the sketch's plane or a fitted one), Part
 B-splines of library B-splines, and writing results into sketches."""
 from __future__ import annotations
 
+import math
+
 import FreeCAD as App
 import Part
 
@@ -120,65 +122,39 @@ def curve_bspline(curve, tol, degree):
 
 def chain_bspline(pieces, tol, degree):
     """ONE libelastica BSpline of smooth elasticae that continue each other G2 (one
-    curve, or a keyline's two halves in order): the elastic spline's B-spline
-    (el_spline_to_bspline), whose pieces keep their end points, unit tangents and
-    curvatures exactly and join C2. InputProblem when ``tol`` is not reached."""
-    from libelastica._ffi import bspline_from_c, ffi, lib
-    from libelastica.core import SMOOTH_PARAMS
-    chain = ffi.new("el_spline_result *")
-    arr = ffi.new("el_smooth_params[]", len(pieces))
-    for i, p in enumerate(pieces):
-        for k in SMOOTH_PARAMS:
-            setattr(arr[i], k, getattr(p, k))
-    chain.npieces, chain.pieces = len(pieces), arr
-    out = ffi.new("el_bspline *")
-    st = lib.el_spline_to_bspline(chain, float(tol), int(degree), out)
-    if st == lib.EL_EMAXITER:
-        dev = float(out.max_deviation)
-        lib.el_bspline_free(out)
-        raise InputProblem(f"the B-spline does not reach the tolerance {tol:g} mm (certified "
-                           f"{dev:.3g} mm): raise Tolerance")
-    if st != lib.EL_OK:
-        from libelastica._ffi import check
-        try:
-            check(st, "B-spline")
-        except (ValueError, ArithmeticError, RuntimeError) as exc:
-            raise InputProblem(f"no B-spline at tolerance {tol:g} mm: {exc}") from None
-    return bspline_from_c(out)
+    curve, or a keyline's two halves in order): el.smooth_chain_to_bspline, whose
+    pieces keep their end points, unit tangents and curvatures exactly and join C2.
+    InputProblem when ``tol`` is not reached."""
+    e = el()
+    try:
+        return e.smooth_chain_to_bspline(pieces, float(tol), int(degree))
+    except e.NotConvergedError as exc:
+        raise InputProblem(f"the B-spline does not reach the tolerance {tol:g} mm: {exc}: "
+                           "raise Tolerance") from None
+    except (ValueError, ArithmeticError, RuntimeError) as exc:
+        raise InputProblem(f"no B-spline at tolerance {tol:g} mm: {exc}") from None
 
 
 def cubic_through(vertices, start=None, end=None):
     """The C2 cubic B-spline through polygon vertices (n, 2), chord-length
-    parametrised: natural ends (zero curvature; the library's interpolate_c2) unless
+    parametrised (the library's interpolate_c2): natural ends (zero curvature) unless
     ``start`` / ``end`` give an end condition: ("tangent", angle) clamps the unit
     tangent there, ("curvature", kappa) sets the second derivative to kappa times
     the end segment's left normal (kappa exactly when 0, else to the speed's
-    departure from 1). Those come from scipy's make_interp_spline: the library's
-    cubic has natural ends only."""
+    departure from 1)."""
     n = np()
-    if start is None and end is None:
-        from libelastica.bspline import interpolate_c2
-        return interpolate_c2(vertices)
-    try:
-        from scipy.interpolate import make_interp_spline
-    except ImportError:
-        raise InputProblem("a discrete fit's end tangent or curvature needs scipy (pip install "
-                           "scipy), or use the smooth model") from None
     xy = n.asarray(vertices, dtype=float)
-    u = n.concatenate([[0.0], n.cumsum(n.linalg.norm(n.diff(xy, axis=0), axis=1))])
 
     def condition(spec, a, b):
         if spec is None:
-            return [(2, n.zeros(2))]
+            return None
         kind, value = spec
         if kind == "tangent":
-            return [(1, n.array([n.cos(value), n.sin(value)]))]
+            return {"d1": (math.cos(value), math.sin(value))}
         d = (xy[b] - xy[a]) / n.linalg.norm(xy[b] - xy[a])
-        return [(2, value * n.array([-d[1], d[0]]))]
+        return {"d2": (-value * d[1], value * d[0])}
 
-    sp = make_interp_spline(u, xy, k=3, bc_type=(condition(start, 0, 1), condition(end, -2, -1)))
-    knots, mults = n.unique(sp.t, return_counts=True)
-    return el().BSpline(degree=3, poles=sp.c, knots=knots, mults=mults, max_deviation=-1.0)
+    return el().interpolate_c2(xy, start=condition(start, 0, 1), end=condition(end, -2, -1))
 
 
 def part_bspline(bs, plc):
