@@ -97,7 +97,7 @@ check: all check-c check-asan check-install check-python check-freecad
 
 # ------------------------------------------------------------------ bench, demo, install
 
-$(BUILD)/bench/%: bench/%.c $(BUILD)/libelastica.a
+$(BUILD)/bench/%: bench/%.c $(wildcard bench/*.h) $(BUILD)/libelastica.a
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_BASE) $(DEPS_CFLAGS) $< -o $@ $(BUILD)/libelastica.a $(DEPS_LIBS)
 
