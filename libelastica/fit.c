@@ -128,12 +128,6 @@ static int check_options(const el_fit_options *o, int model, int *which)
 
 /* ------------------------------------------------------------ one fit */
 
-typedef struct fit_out {
-    double params[FIT_NP], initial[FIT_NP];
-    double rms, max_error;
-    int iterations, candidates, ipopt_status, used_ipopt, status, mode, distance, constraint;
-} fit_out;
-
 /* The constraints in normalised units, and the bounds they add. */
 static void setup_constraints(const el_fit_options *o, int model, size_t n, double cx, double cy,
                               double sc, fit_constraints *con, double *lo, double *hi)
@@ -600,25 +594,6 @@ done:
 }
 
 /* The public wrappers: the result struct written only once a result exists. */
-#define FIT_PUBLISH(res, fo)                                                            \
-    do {                                                                                \
-        (res)->rms = (fo).rms; (res)->max_error = (fo).max_error;                       \
-        (res)->iterations = (fo).iterations; (res)->candidates = (fo).candidates;       \
-        (res)->ipopt_status = (fo).ipopt_status; (res)->status = (fo).status;           \
-        (res)->used_ipopt = (fo).used_ipopt; (res)->distance = (fo).distance;           \
-        (res)->constraint = (fo).constraint;                                            \
-    } while (0)
-
-static void to_discrete_params(const double *v, el_discrete_params *p)
-{
-    p->x0 = v[0]; p->y0 = v[1]; p->h = v[2]; p->phi = v[3]; p->z = v[4]; p->q = v[5]; p->k = v[6];
-}
-
-static void to_smooth_params(const double *v, el_smooth_params *p)
-{
-    p->x0 = v[0]; p->y0 = v[1]; p->phi = v[2]; p->mu = v[3]; p->k = v[4]; p->q = v[5]; p->length = v[6];
-}
-
 int el_fit_discrete(const double *xy, size_t n, const el_fit_options *opt,
                     const el_discrete_params *initial, el_fit_discrete_result *res,
                     double *distances, double *foot_s)
@@ -638,9 +613,7 @@ int el_fit_discrete(const double *xy, size_t n, const el_fit_options *opt,
         if (fo.constraint) res->constraint = fo.constraint;
         return st;
     }
-    to_discrete_params(fo.params, &res->params);
-    to_discrete_params(fo.initial, &res->initial);
-    FIT_PUBLISH(res, fo);
+    FIT_PUBLISH(res, fo, el_discrete_params);
     return fo.status;
 }
 
@@ -663,9 +636,7 @@ int el_fit_smooth(const double *xy, size_t n, const el_fit_options *opt,
         if (fo.constraint) res->constraint = fo.constraint;
         return st;
     }
-    to_smooth_params(fo.params, &res->params);
-    to_smooth_params(fo.initial, &res->initial);
-    FIT_PUBLISH(res, fo);
+    FIT_PUBLISH(res, fo, el_smooth_params);
     res->param_mode = fo.mode;
     return fo.status;
 }

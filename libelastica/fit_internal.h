@@ -176,6 +176,31 @@ double fit_denorm_param(int model, int j, double v, double cx, double cy, double
 /* The rms noise of the points from second differences, in normalised units. */
 double fit_noise_rms(const double *xy, size_t n, double sc);
 
+/* ------------------------------------------------------------------ results */
+
+/* A fit's result in input units, before it is published: params and initial in the
+ * parameter vector order, which is also the field order of el_discrete_params and
+ * el_smooth_params. */
+typedef struct fit_out {
+    double params[FIT_NP], initial[FIT_NP];
+    double rms, max_error;
+    int iterations, candidates, ipopt_status, used_ipopt, status, mode, distance, constraint;
+} fit_out;
+
+/* Write fit_out fo into the public result *res (el_fit_discrete_result or
+ * el_fit_smooth_result: the same fields), ParamT its parameter struct. */
+#define FIT_PUBLISH(res, fo, ParamT)                                                      \
+    do {                                                                                \
+        const double *p_ = (fo).params, *q_ = (fo).initial;                             \
+        (res)->params = (ParamT){p_[0], p_[1], p_[2], p_[3], p_[4], p_[5], p_[6]};      \
+        (res)->initial = (ParamT){q_[0], q_[1], q_[2], q_[3], q_[4], q_[5], q_[6]};     \
+        (res)->rms = (fo).rms; (res)->max_error = (fo).max_error;                       \
+        (res)->iterations = (fo).iterations; (res)->candidates = (fo).candidates;       \
+        (res)->ipopt_status = (fo).ipopt_status; (res)->status = (fo).status;           \
+        (res)->used_ipopt = (fo).used_ipopt; (res)->distance = (fo).distance;           \
+        (res)->constraint = (fo).constraint;                                            \
+    } while (0)
+
 /* ------------------------------------------------------------------ solvers */
 
 typedef struct fit_solution {
