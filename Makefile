@@ -192,7 +192,7 @@ check-tsan: | deps
 
 # ------------------------------------------------------------------ bench, demo, install
 
-$(BUILD)/bench/%: bench/%.c $(BUILD)/libelastica.a
+$(BUILD)/bench/%: bench/%.c $(wildcard bench/*.h) $(BUILD)/libelastica.a
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_BASE) $(DEPS_CFLAGS) $< -o $@ $(BUILD)/libelastica.a $(DEPS_LIBS)
 

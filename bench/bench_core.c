@@ -5,23 +5,11 @@
  * Prints one JSON line per figure (median of repeats, the cases interleaved so
  * that machine noise hits them alike); lines with "readme" feed the README table. */
 #include "elastica.h"
+#include "bench_util.h"
 #include <gsl/gsl_sf_elljac.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <time.h>
-
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return t.tv_sec + 1e-9 * t.tv_nsec;
-}
-
-static int cmp(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
 
 enum { REPS = 21, NCASE = 9 };
 static volatile double sink;
@@ -53,9 +41,9 @@ static void run(const job *j)
 
 static double ns_per_point(const job *j)
 {
-    double a = now();
+    double a = bench_now();
     run(j);
-    return (now() - a) * 1e9 / (double)j->n;
+    return (bench_now() - a) * 1e9 / (double)j->n;
 }
 
 int main(void)
@@ -77,7 +65,7 @@ int main(void)
             s[i] = sp.length * i / (n - 1.0);
             sr[i] = ss[i] = sp.length * rand() / (double)RAND_MAX;
         }
-        qsort(ss, n, sizeof *ss, cmp); /* sorted scattered: chord parameters, foot points */
+        qsort(ss, n, sizeof *ss, bench_cmp); /* sorted scattered: chord parameters, foot points */
         const double *grid[NCASE] = {s, s, s, s, s, ss, ss, sr, sr};
         static double t[NCASE][REPS];
         for (int r = 0; r < REPS; r++)
@@ -87,7 +75,7 @@ int main(void)
             }
         double v[NCASE];
         for (int i = 0; i < NCASE; i++) {
-            qsort(t[i], REPS, sizeof t[i][0], cmp);
+            qsort(t[i], REPS, sizeof t[i][0], bench_cmp);
             v[i] = t[i][REPS / 2];
         }
         for (int i = 0; i < NCASE; i++)

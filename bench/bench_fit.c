@@ -11,6 +11,7 @@
  *                               the library's paired fit of the same points for scale
  * BENCH_FIT_QUICK=1: fewer repeats. */
 #include "elastica.h"
+#include "bench_util.h"
 #include <IpStdCInterface.h>
 #include <math.h>
 #include <pthread.h>
@@ -25,25 +26,6 @@
 #ifndef M_PI
 #define M_PI 3.14159265358979323846
 #endif
-
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return t.tv_sec + 1e-9 * t.tv_nsec;
-}
-
-static int cmp(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, cmp);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 /* Gaussian noise (Box-Muller on a xorshift). */
 static double gauss(unsigned long long *s)
@@ -102,19 +84,19 @@ static void bench_threads(int quick)
     double ratio[16];
     for (int r = 0; r < reps; r++) {
         tjob a = {fits, 0, xy, n}, b = {fits, 4, xy, n};
-        double t0 = now();
+        double t0 = bench_now();
         fit_many(&a);
         fit_many(&b);
-        const double serial = now() - t0;
+        const double serial = bench_now() - t0;
         pthread_t ta, tb;
-        t0 = now();
+        t0 = bench_now();
         pthread_create(&ta, NULL, fit_many, &a);
         pthread_create(&tb, NULL, fit_many, &b);
         pthread_join(ta, NULL);
         pthread_join(tb, NULL);
-        ratio[r] = (now() - t0) / serial;
+        ratio[r] = (bench_now() - t0) / serial;
     }
-    const double m = median(ratio, reps);
+    const double m = bench_median(ratio, reps);
     printf("{\"bench\": \"fit_threads\", \"n\": %zu, \"fits_per_thread\": %d, \"two_threads_over_serial\": %.3f, "
            "\"note\": \"1.0 = serialised, 0.5 = two cores fully used (the machine is shared)\", "
            "\"readme\": \"two threads fitting at once (1000 points each)\", "
@@ -168,11 +150,11 @@ static void bench_scaling(int quick)
         discrete_points(n, 1e-3, 9, xy);
         for (int r = 0; r < reps; r++) {
             el_fit_discrete_result res;
-            const double t0 = now();
+            const double t0 = bench_now();
             el_fit_discrete(xy, n, NULL, NULL, &res, NULL, NULL);
-            t[r] = now() - t0;
+            t[r] = bench_now() - t0;
         }
-        ms[a] = 1e3 * median(t, reps);
+        ms[a] = 1e3 * bench_median(t, reps);
         lt[a] = log(ms[a]);
         ln[a] = log((double)n);
         free(xy);
@@ -366,20 +348,20 @@ static void bench_formulation(int quick)
         el_fit_options_defaults(&o);
         o.max_candidates = 1;
         el_fit_smooth_result res;
-        double t0 = now();
+        double t0 = bench_now();
         el_fit_smooth(xy, n, &o, NULL, &res, NULL, NULL);
-        tl[r] = now() - t0;
+        tl[r] = bench_now() - t0;
         il = res.iterations;
         fl = 0.5 * res.rms * res.rms;
         o.distance = EL_DISTANCE_PAIRED;
-        t0 = now();
+        t0 = bench_now();
         el_fit_smooth(xy, n, &o, NULL, &res, NULL, NULL);
-        tp[r] = now() - t0;
-        t0 = now();
+        tp[r] = bench_now() - t0;
+        t0 = bench_now();
         fa = arrow_fit(xy, n, &g[0], &ia);
-        ta[r] = now() - t0;
+        ta[r] = bench_now() - t0;
     }
-    const double mt = median(tl, reps), ma = median(ta, reps), mp = median(tp, reps);
+    const double mt = bench_median(tl, reps), ma = bench_median(ta, reps), mp = bench_median(tp, reps);
     printf("{\"bench\": \"fit_orthogonal_formulation\", \"n\": %zu, \"noise\": 0.01, "
            "\"library_ms\": %.3f, \"library_iterations\": %d, \"library_f\": %.6g, "
            "\"ipopt_arrow_ms\": %.3f, \"ipopt_arrow_iterations\": %d, \"ipopt_arrow_f\": %.6g, "

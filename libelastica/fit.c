@@ -128,12 +128,6 @@ static int check_options(const el_fit_options *o, int model, int *which)
 
 /* ------------------------------------------------------------ one fit */
 
-typedef struct fit_out {
-    double params[FIT_NP], initial[FIT_NP];
-    double rms, max_error;
-    int iterations, candidates, ipopt_status, used_ipopt, status, mode, distance, constraint;
-} fit_out;
-
 /* The constraints in normalised units, and the bounds they add. */
 static void setup_constraints(const el_fit_options *o, int model, size_t n, double cx, double cy,
                               double sc, fit_constraints *con, double *lo, double *hi)
@@ -226,7 +220,7 @@ static int bounded_start(fit_objective *ob, const double *xl, const double *xu, 
         moved[j] = x[j] > xl[j] && x[j] < xu[j];
         if (moved[j]) m.idx[m.nx++] = full.idx[j];
     }
-    if (m.nx == full.nx || m.nx == 0 || full.shape) return 0;
+    if (m.nx == full.nx || m.nx == 0 || full.chart) return 0;
     ob->map = m;
     double xr[FIT_MAXX];
     for (int j = 0, r = 0; j < full.nx; j++)
@@ -273,7 +267,7 @@ static int curve_distances(fit_objective *ob, const double *x, double v[2][FIT_N
 /* One initial guess: Levenberg-Marquardt, then Ipopt when something needs it. */
 static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit_constraints *con,
                            const double *xl, const double *xu, int need_ipopt, int lm_only,
-                           const double *x0, cand_result *r, double *tmp)
+                           const double *x0, double best_f, cand_result *r, double *tmp)
 {
     const int nx = ob->map.nx;
     memset(r, 0, sizeof *r);
@@ -314,7 +308,10 @@ static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit
         ob->have_base = 0;
     }
     x0 = xs;
-    if (!o->limited_memory && fit_lm(ob, x0, o->max_iter, &sol) == EL_OK) {
+    ob->f_ceiling = best_f;
+    const int lst = o->limited_memory ? EL_EINVAL : fit_lm(ob, x0, o->max_iter, &sol);
+    ob->f_ceiling = HUGE_VAL;
+    if (lst == EL_OK) {
         memcpy(r->x, sol.x, sizeof(double) * (size_t)nx);
         r->f = sol.val.f;
         r->iters += sol.iters;
@@ -323,6 +320,10 @@ static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit
         if (sol.certified && inside && !need_ipopt) { r->status = EL_OK; return EL_OK; }
         if (!sol.certified && sol.iters >= o->max_iter && !need_ipopt && inside) r->status = EL_EMAXITER;
         if (lm_only && inside && !need_ipopt) return EL_OK;
+        /* a later guess that ended above an earlier one's objective: Ipopt would only
+         * polish a worse fit (measured: 200 Ipopt iterations, 0.2 s, on 16 points whose
+         * third guess crawled along a flat valley) */
+        if (inside && !need_ipopt && r->f > best_f) return EL_OK;
     }
     fit_ipopt_out io;
     double x[FIT_MAXX];
@@ -428,7 +429,7 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
     const int kind = model == FIT_DISCRETE || o.distance == EL_DISTANCE_PAIRED ? FIT_PAIRED : FIT_ORTHOGONAL;
     const int need_ipopt = (o.constraints & ~(EL_CONSTRAIN_START_POINT | EL_CONSTRAIN_LENGTH | EL_CONSTRAIN_K)) != 0;
 
-    /* the map: free parameters, their scales, the shape variables */
+    /* the map: free parameters, their scales, the start-state chart */
     fit_map map;
     memset(&map, 0, sizeof map);
     map.model = model; map.ncurves = 1;
@@ -437,11 +438,11 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
         if (o.fixed[j]) map.fixed[j] = fit_norm_param(model, j, o.value[j], cx, cy, sc);
         else map.idx[map.nx++] = j;
     }
-    {
-        const int ia = ik, ib = 5, ic = model == FIT_DISCRETE ? 4 : 3;
-        map.shape = !o.fixed[ia] && !o.fixed[ib] && !o.fixed[ic] && !need_ipopt;
-        for (int j = 0; j < FIT_NP; j++)
-            if ((j == ia || j == ib || j == ic) && (isfinite(lo[j]) || isfinite(hi[j]))) map.shape = 0;
+    {   /* the chart replaces (phi, w or z, k, q): all four free and unbounded */
+        const int sl[4] = {model == FIT_DISCRETE ? 3 : 2, model == FIT_DISCRETE ? 4 : 3, ik, 5};
+        map.chart = !need_ipopt;
+        for (int a = 0; a < 4; a++)
+            if (o.fixed[sl[a]] || isfinite(lo[sl[a]]) || isfinite(hi[sl[a]])) map.chart = 0;
     }
     double xl[FIT_MAXX], xu[FIT_MAXX];
     for (int j = 0; j < map.nx; j++) {
@@ -514,7 +515,7 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
             memset(&r, 0, sizeof r);
             r.f = fv.f;
             r.status = EL_OK;
-        } else if ((st = solve_candidate(&ob, &o, &con, xl, xu, need_ipopt, lm_only, x0, &r, tmp))) {
+        } else if ((st = solve_candidate(&ob, &o, &con, xl, xu, need_ipopt, lm_only, x0, best.f, &r, tmp))) {
             goto done;
         }
         tried++;
@@ -600,25 +601,6 @@ done:
 }
 
 /* The public wrappers: the result struct written only once a result exists. */
-#define FIT_PUBLISH(res, fo)                                                            \
-    do {                                                                                \
-        (res)->rms = (fo).rms; (res)->max_error = (fo).max_error;                       \
-        (res)->iterations = (fo).iterations; (res)->candidates = (fo).candidates;       \
-        (res)->ipopt_status = (fo).ipopt_status; (res)->status = (fo).status;           \
-        (res)->used_ipopt = (fo).used_ipopt; (res)->distance = (fo).distance;           \
-        (res)->constraint = (fo).constraint;                                            \
-    } while (0)
-
-static void to_discrete_params(const double *v, el_discrete_params *p)
-{
-    p->x0 = v[0]; p->y0 = v[1]; p->h = v[2]; p->phi = v[3]; p->z = v[4]; p->q = v[5]; p->k = v[6];
-}
-
-static void to_smooth_params(const double *v, el_smooth_params *p)
-{
-    p->x0 = v[0]; p->y0 = v[1]; p->phi = v[2]; p->mu = v[3]; p->k = v[4]; p->q = v[5]; p->length = v[6];
-}
-
 int el_fit_discrete(const double *xy, size_t n, const el_fit_options *opt,
                     const el_discrete_params *initial, el_fit_discrete_result *res,
                     double *distances, double *foot_s)
@@ -638,9 +620,7 @@ int el_fit_discrete(const double *xy, size_t n, const el_fit_options *opt,
         if (fo.constraint) res->constraint = fo.constraint;
         return st;
     }
-    to_discrete_params(fo.params, &res->params);
-    to_discrete_params(fo.initial, &res->initial);
-    FIT_PUBLISH(res, fo);
+    FIT_PUBLISH(res, fo, el_discrete_params);
     return fo.status;
 }
 
@@ -663,9 +643,7 @@ int el_fit_smooth(const double *xy, size_t n, const el_fit_options *opt,
         if (fo.constraint) res->constraint = fo.constraint;
         return st;
     }
-    to_smooth_params(fo.params, &res->params);
-    to_smooth_params(fo.initial, &res->initial);
-    FIT_PUBLISH(res, fo);
+    FIT_PUBLISH(res, fo, el_smooth_params);
     res->param_mode = fo.mode;
     return fo.status;
 }

@@ -18,16 +18,6 @@
 
 enum { NEWTON_MAX = 40 };
 
-/* Newton's step for the foot, -t / (1 + kappa e) (gamma - P = t T + e N), with its
- * derivative bounded below (a point beyond the centre of curvature still moves the right
- * way) and the step to half the radius of curvature (or of the range): a foot stays on
- * its branch of a tight loop instead of jumping to another. */
-double fit_foot_step(double t, double e, double kappa, double range)
-{
-    const double u = -t / fmax(1.0 + kappa * e, 0.25), lim = 0.5 / fmax(fabs(kappa), 1.0 / range);
-    return fmin(fmax(u, -lim), lim);
-}
-
 /* gamma, d gamma / d sigma and the curvature term at m feet sig (one block). */
 typedef struct feet_block {
     double xy[2 * FIT_BLOCK], T[2 * FIT_BLOCK], kappa[FIT_BLOCK], dirs[FIT_BLOCK];
@@ -100,7 +90,7 @@ static int project_block(const fit_objective *o, double v[2][FIT_NP], size_t a, 
             const double Tx = b.T[2 * i], Ty = b.T[2 * i + 1];
             const double t = b.dirs[i] * (Tx * dx + Ty * dy);     /* d/dsigma of |gamma - P|^2 / 2 */
             const double e = Tx * dy - Ty * dx;                    /* N . (gamma - P) */
-            const double u = (last ? 0.0 : fmin(fmax(cur[i] + fit_foot_step(t, e, b.kappa[i], hi - lo), lo), hi)) - cur[i];
+            const double u = (last ? 0.0 : fit_clamp(cur[i] + fit_foot_step(t, e, b.kappa[i], hi - lo), lo, hi)) - cur[i];
             sig[act[i]] = cur[i] + u;
             if (fabs(u) > tol) { act[keep++] = act[i]; continue; }
             if (dist) {
@@ -295,20 +285,25 @@ static void grid_add(grid *g, const piece *p, int id)
         }
 }
 
-/* A point of a curve at arc length s (smooth; discrete: along the polygon V). */
-static int curve_point(const fit_objective *o, const double *v, const double *V, size_t nv, double s,
-                       double *xy)
+/* The points of a curve at arc lengths s_j = len j / m, j = 0..m (smooth: one
+ * evaluation of the sorted samples; discrete: along the polygon V). */
+static int curve_points(const fit_objective *o, const double *v, const double *V, size_t nv, double len,
+                        int m, double *xy)
 {
+    double s[MAX_PIECES + 1];
+    for (int j = 0; j <= m; j++) s[j] = len * j / m;
     if (o->map.model == FIT_SMOOTH) {
         el_smooth_params p;
         int st = fit_to_smooth(v, &p);
-        return st ? st : el_smooth_eval(&p, 1, &s, xy, NULL, NULL);
+        return st ? st : el_smooth_eval(&p, (size_t)m + 1, s, xy, NULL, NULL);
     }
     const double h = v[2];
-    size_t j = (size_t)fmin(fmax(floor(s / h), 0.0), (double)nv - 2.0);
-    const double t = fmin(fmax(s / h - (double)j, 0.0), 1.0);
-    xy[0] = V[2 * j] + t * (V[2 * j + 2] - V[2 * j]);
-    xy[1] = V[2 * j + 1] + t * (V[2 * j + 3] - V[2 * j + 1]);
+    for (int k = 0; k <= m; k++) {
+        size_t j = (size_t)fmin(fmax(floor(s[k] / h), 0.0), (double)nv - 2.0);
+        const double t = fmin(fmax(s[k] / h - (double)j, 0.0), 1.0);
+        xy[2 * k] = V[2 * j] + t * (V[2 * j + 2] - V[2 * j]);
+        xy[2 * k + 1] = V[2 * j + 1] + t * (V[2 * j + 3] - V[2 * j + 1]);
+    }
     return EL_OK;
 }
 
@@ -447,16 +442,14 @@ int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const do
         first[c] = np;
         if (!(len[c] > 0.0)) continue;
         const int m = (int)fmin(fmax(ceil(len[c] / (2.0 * dmed + 1e-300)), 8.0), (double)MAX_PIECES);
-        double a[2], b[2];
-        if ((st = curve_point(o, v[c], V[c], nv[c], 0.0, a))) break;
+        double ends[2 * (MAX_PIECES + 1)];
+        if ((st = curve_points(o, v[c], V[c], nv[c], len[c], m, ends))) break;
         for (int j = 0; j < m; j++) {
-            const double s0 = len[c] * j / m, s1 = len[c] * (j + 1) / m;
-            if ((st = curve_point(o, v[c], V[c], nv[c], s1, b))) break;
+            const double s0 = len[c] * j / m, s1 = len[c] * (j + 1) / m, *a = ends + 2 * j, *b = a + 2;
             piece *p = &pc[np++];
             p->cx = 0.5 * (a[0] + b[0]); p->cy = 0.5 * (a[1] + b[1]);
             p->r = 0.5 * (s1 - s0); p->s0 = s0; p->s1 = s1; p->curve = c;
             rmax = fmax(rmax, p->r);
-            a[0] = b[0]; a[1] = b[1];
         }
         count[c] = np - first[c];
     }

@@ -78,8 +78,9 @@ int fit_end_state(int model, const double *v, size_t n, int at_end, fit_end *e,
 typedef struct fit_map {
     int model, ncurves, nx;
     /* one curve: x_j = v[idx[j]] * scale[idx[j]] for the free parameters, the others at
-     * fixed[]; with shape, (k, q, z or w) go through the shape variables (fit_model.c) */
-    int idx[FIT_NP], shape;
+     * fixed[]; with chart, the slots of (phi, w or z, k, q) hold the start-state chart
+     * (theta0, kappa0, Fx, Fy) instead (fit_model.c) */
+    int idx[FIT_NP], chart;
     double scale[FIT_NP], fixed[FIT_NP];
     /* keyline (ncurves = 2): x = (xJ, yJ, psi, a1, b1, c1, a2, b2, c2), fit_keyline.c;
      * discrete: scale[c] = (vertices of side c) - 1 */
@@ -113,12 +114,17 @@ typedef struct fit_objective {
     double *s, *s_next;          /* orthogonal: foot parameters (n each); keyline smooth:
                                     sigma < 0 on the first curve at -sigma, >= 0 the second */
     int exact_feet;              /* project the feet at every evaluation (Ipopt) */
-    /* the feet's motion under a parameter step, from the last accepted point (base):
-     * b(s) = (d gamma(s) / d v)^T T(s) sampled at FIT_KNOTS arc lengths of each curve */
+    /* the feet's motion under a step of the variables x from the last accepted point
+     * (base): b(s) = (d gamma(s) / d x)^T T(s) sampled at FIT_KNOTS arc lengths of each
+     * curve (in x, the optimiser's well-scaled variables, not in v: fit_objective.c) */
     double last_move;            /* the largest foot move of the last evaluation */
     int have_base;
-    double base_v[2][FIT_NP], last_v[2][FIT_NP];
-    double knot_b[2][FIT_KNOTS][FIT_NP];
+    double base_x[FIT_MAXX], last_x[FIT_MAXX], step[FIT_MAXX], base_len[2];
+    double knot_b[2][FIT_KNOTS][FIT_MAXX], knot_ds[2][FIT_KNOTS];
+    /* a later guess's Levenberg-Marquardt gives up once it cannot reach this objective
+     * (an earlier guess's) at its recent rate within its remaining iterations
+     * (fit_lm.c); HUGE_VAL (fit_objective_init): never */
+    double f_ceiling;
     size_t split;                /* discrete keyline: the data index of the joint */
     double *work;                /* block buffers */
     /* a quadratic penalty (rho/2) |c(x)|^2 of constraint rows added to f (fit.c's start
@@ -147,9 +153,21 @@ void fit_objective_accept(fit_objective *o);
 /* Feet to the nearest points (Newton, from the current feet) at x. */
 int fit_objective_project(fit_objective *o, const double *x);
 
-/* Newton's step of a foot, bounded (fit_feet.c): t, e the tangential and normal parts
- * of gamma - P, kappa the curvature, range the curve's extent. */
-double fit_foot_step(double t, double e, double kappa, double range);
+/* min(max(x, lo), hi) for finite values, inline (libm's fmin / fmax are calls, in the
+ * per-point loops of the feet). */
+static inline double fit_clamp(double x, double lo, double hi) { return x < lo ? lo : x > hi ? hi : x; }
+
+/* Newton's step for the foot, -t / (1 + kappa e) (gamma - P = t T + e N: t, e the
+ * tangential and normal parts of gamma - P, kappa the curvature, range the curve's
+ * extent), with its derivative bounded below (a point beyond the centre of curvature
+ * still moves the right way) and the step to half the radius of curvature (or of the
+ * range): a foot stays on its branch of a tight loop instead of jumping to another. */
+static inline double fit_foot_step(double t, double e, double kappa, double range)
+{
+    const double den = 1.0 + kappa * e, ak = fabs(kappa), ir = 1.0 / range;
+    const double lim = 0.5 / (ak > ir ? ak : ir);
+    return fit_clamp(-t / (den > 0.25 ? den : 0.25), -lim, lim);
+}
 /* The feet's range [lo, hi]: the curve itself, or extended (the objective's). */
 void fit_feet_range(const fit_objective *o, double v[2][FIT_NP], int extended, double *lo, double *hi);
 /* Signed distances (left of the curve positive), feet (arc length; for the keyline from
@@ -175,6 +193,31 @@ double fit_norm_param(int model, int j, double v, double cx, double cy, double s
 double fit_denorm_param(int model, int j, double v, double cx, double cy, double sc);
 /* The rms noise of the points from second differences, in normalised units. */
 double fit_noise_rms(const double *xy, size_t n, double sc);
+
+/* ------------------------------------------------------------------ results */
+
+/* A fit's result in input units, before it is published: params and initial in the
+ * parameter vector order, which is also the field order of el_discrete_params and
+ * el_smooth_params. */
+typedef struct fit_out {
+    double params[FIT_NP], initial[FIT_NP];
+    double rms, max_error;
+    int iterations, candidates, ipopt_status, used_ipopt, status, mode, distance, constraint;
+} fit_out;
+
+/* Write fit_out fo into the public result *res (el_fit_discrete_result or
+ * el_fit_smooth_result: the same fields), ParamT its parameter struct. */
+#define FIT_PUBLISH(res, fo, ParamT)                                                      \
+    do {                                                                                \
+        const double *p_ = (fo).params, *q_ = (fo).initial;                             \
+        (res)->params = (ParamT){p_[0], p_[1], p_[2], p_[3], p_[4], p_[5], p_[6]};      \
+        (res)->initial = (ParamT){q_[0], q_[1], q_[2], q_[3], q_[4], q_[5], q_[6]};     \
+        (res)->rms = (fo).rms; (res)->max_error = (fo).max_error;                       \
+        (res)->iterations = (fo).iterations; (res)->candidates = (fo).candidates;       \
+        (res)->ipopt_status = (fo).ipopt_status; (res)->status = (fo).status;           \
+        (res)->used_ipopt = (fo).used_ipopt; (res)->distance = (fo).distance;           \
+        (res)->constraint = (fo).constraint;                                            \
+    } while (0)
 
 /* ------------------------------------------------------------------ solvers */
 

@@ -164,13 +164,10 @@ static int side_zero(int model, side_fit *sf, size_t nv)
 
 /* ------------------------------------------------------------ the driver */
 
-typedef struct side_out {
-    double params[FIT_NP], initial[FIT_NP], rms, max_error;
-} side_out;
-
+/* The two sides' results (the fields of the whole problem in side[0]), the joint. */
 typedef struct keyline_out {
-    side_out side[2];
-    int iterations, ipopt_status, used_ipopt, status, mode;
+    fit_out side[2];
+    int status;
     size_t joint;
 } keyline_out;
 
@@ -414,7 +411,7 @@ static int keyline_run(int model, const double *xy, size_t n, size_t split, cons
             fs[i] *= sc;
         }
         for (int c = 0; c < 2; c++) {
-            side_out *so = &out->side[c];
+            fit_out *so = &out->side[c];
             so->rms = cnt[c] ? sc * sqrt(s2[c] / (double)cnt[c]) : 0.0;
             so->max_error = sc * mx[c];
             double vc[FIT_NP], vi[FIT_NP];
@@ -435,10 +432,13 @@ static int keyline_run(int model, const double *xy, size_t n, size_t split, cons
     free(buf);
     free(ibuf);
     if (st) goto done;
-    out->iterations = iters;
-    out->ipopt_status = ipopt_status;
-    out->used_ipopt = used_ipopt;
-    out->mode = mode;
+    for (int c = 0; c < 2; c++) {
+        fit_out *so = &out->side[c];
+        so->iterations = iters; so->candidates = 1;
+        so->ipopt_status = ipopt_status; so->used_ipopt = used_ipopt;
+        so->mode = mode; so->status = out->status; so->constraint = 0;
+        so->distance = model == FIT_SMOOTH ? EL_DISTANCE_ORTHOGONAL : EL_DISTANCE_PAIRED;
+    }
     out->joint = js;
     st = out->status;
 done:
@@ -447,28 +447,6 @@ done:
     free(feetB);
     free(tmp);
     return st;
-}
-
-static void publish_smooth(const side_out *s, const keyline_out *k, el_fit_smooth_result *r)
-{
-    const double *p = s->params, *q = s->initial;
-    r->params = (el_smooth_params){p[0], p[1], p[2], p[3], p[4], p[5], p[6]};
-    r->initial = (el_smooth_params){q[0], q[1], q[2], q[3], q[4], q[5], q[6]};
-    r->rms = s->rms; r->max_error = s->max_error;
-    r->iterations = k->iterations; r->candidates = 1;
-    r->ipopt_status = k->ipopt_status; r->status = k->status; r->used_ipopt = k->used_ipopt;
-    r->distance = EL_DISTANCE_ORTHOGONAL; r->constraint = 0; r->param_mode = k->mode;
-}
-
-static void publish_discrete(const side_out *s, const keyline_out *k, el_fit_discrete_result *r)
-{
-    const double *p = s->params, *q = s->initial;
-    r->params = (el_discrete_params){p[0], p[1], p[2], p[3], p[4], p[5], p[6]};
-    r->initial = (el_discrete_params){q[0], q[1], q[2], q[3], q[4], q[5], q[6]};
-    r->rms = s->rms; r->max_error = s->max_error;
-    r->iterations = k->iterations; r->candidates = 1;
-    r->ipopt_status = k->ipopt_status; r->status = k->status; r->used_ipopt = k->used_ipopt;
-    r->distance = EL_DISTANCE_PAIRED; r->constraint = 0;
 }
 
 int el_fit_keyline_smooth(const double *xy, size_t n, size_t split, const el_fit_options *opt,
@@ -481,8 +459,9 @@ int el_fit_keyline_smooth(const double *xy, size_t n, size_t split, const el_fit
     k.status = -1;
     int st = keyline_run(FIT_SMOOTH, xy, n, split, opt, &k, distances, foot_s, side);
     if (k.status == -1 || (st != k.status)) return st;
-    publish_smooth(&k.side[0], &k, first);
-    publish_smooth(&k.side[1], &k, second);
+    FIT_PUBLISH(first, k.side[0], el_smooth_params);
+    FIT_PUBLISH(second, k.side[1], el_smooth_params);
+    first->param_mode = second->param_mode = k.side[0].mode;
     return k.status;
 }
 
@@ -496,8 +475,8 @@ int el_fit_keyline_discrete(const double *xy, size_t n, size_t split, const el_f
     k.status = -1;
     int st = keyline_run(FIT_DISCRETE, xy, n, split, opt, &k, distances, foot_s, side);
     if (k.status == -1 || (st != k.status)) return st;
-    publish_discrete(&k.side[0], &k, first);
-    publish_discrete(&k.side[1], &k, second);
+    FIT_PUBLISH(first, k.side[0], el_discrete_params);
+    FIT_PUBLISH(second, k.side[1], el_discrete_params);
     if (joint) *joint = k.joint;
     return k.status;
 }

@@ -236,26 +236,106 @@ int fit_end_state(int model, const double *v, size_t n, int at_end, fit_end *e, 
 /* ------------------------------------------------------------ the map x -> v */
 
 /*
- * Shape variables (one curve, k, q and z (discrete) or w (smooth) free and unbounded).
- * Near a circle (|k| >> 1) the curve depends on k only through 1/k^2 and on z, q (w)
- * through k z, k q (k w): the argument of am(k u; 1/k). In (k, z, q) the valley of the
- * objective is curved and Gauss-Newton steps overshoot, so the optimiser sees instead
- *   f with k = f / sqrt(2 - |f|)   (f in (-2, 2): f ~ k near 0, 2 - |f| ~ 4/k^2 near
- *                                   |k| = oo, |f| = 1 at |k| = 1; odd, C^1 at 0),
- *   z g, q g (w g) with g = sqrt(1 + k^2).
+ * The start-state chart (one curve; phi, k, q and w (smooth) or z (discrete) free and
+ * unbounded). The optimiser sees, instead of (phi, w, k, q), the curve's state at its
+ * start and the force on it:
+ *   theta0 = phi + 2 a(q)      the tangent angle at s = 0 (a = atan2(k sn q, dn q));
+ *   kappa0 = 2 k W cn q        the curvature there;
+ *   F = W^2 (cos phi, sin phi) the force: theta'' = F_y cos theta - F_x sin theta,
+ * with W = w (smooth) or W = (n-1) z (discrete, per unit of the index range; kappa0 and
+ * F are then per that unit too). The curve is the solution of that pendulum equation
+ * from (theta0, kappa0), analytic in these variables everywhere, while (phi, w, k, q)
+ * are singular at the circle (k -> oo, F = 0), the straight line (k = 0, q
+ * undetermined) and along valleys where phi, q and k trade off (measured on
+ * near-circular arcs, gently curved arcs and sketched S curves: scipy's MINPACK
+ * Levenberg-Marquardt took 40-2600 evaluations in (phi, w, k, q) and 11-58 in this
+ * chart; this library's took 30-400 iterations with the earlier shape variables).
+ * The inverse, x -> v: phi = arg F, |W| = sqrt|F| with the sign of kappa0,
+ * Delta = theta0 - phi reduced to [-pi, pi], S = sin(Delta/2), C = |kappa0| / (2 |W|),
+ *   k = hypot(S, C) > 0,   q = (S / k) R_F((C/k)^2, cos^2(Delta/2), 1)
+ * (k < 1: sn q = S/k, cn q = C/k >= 0, q = F(asin(S/k) | k); k > 1: am(k q | 1/k) =
+ * Delta/2 (sn(u, k) = sn(k u, 1/k)/k, cn(u, k) = dn(k u, 1/k) > 0), q = F(Delta/2 | 1/k)/k;
+ * Carlson's F(psi | m) = sin psi R_F(cos^2 psi, 1 - m^2 sin^2 psi, 1) makes both the one
+ * symmetric formula, continuous through k = 1). kappa0 < 0 is W < 0 with k > 0 (the
+ * smooth w < 0 is (|w|, -k, -q), the discrete z < 0 runs u backwards). d v / d x is the
+ * inverse of d x / d v (half_angle_at), solved as the 2 x 2 system of (k, q) after phi
+ * and W; it is singular only at k = 0 (the straight line, where q has no meaning).
  */
-static double k_of_f(double f) { return f / sqrt(2.0 - fabs(f)); }
-static double f_of_k(double k)
+typedef struct chart_slots { int phi, w, k, q; } chart_slots;
+
+static chart_slots chart_of(int model)
 {
-    const double a = fabs(k);
-    return copysign(0.5 * (a * sqrt(a * a + 8.0) - a * a), k);
+    chart_slots c = {model == FIT_DISCRETE ? 3 : 2, model == FIT_DISCRETE ? 4 : 3,
+                     model == FIT_DISCRETE ? 6 : 4, 5};
+    return c;
 }
 
-static void shape_slots(int model, int *ik, int *iq, int *iz)
+/* The position in x of parameter slot j (free), -1 if held. */
+static int x_pos(const fit_map *m, int j)
 {
-    *ik = model == FIT_DISCRETE ? 6 : 4;
-    *iq = 5;
-    *iz = model == FIT_DISCRETE ? 4 : 3;
+    for (int a = 0; a < m->nx; a++)
+        if (m->idx[a] == j) return a;
+    return -1;
+}
+
+/* (theta0, kappa0, Fx, Fy) of the parameters v (W = v[w] scale[w]). */
+static int chart_from_v(const fit_map *m, const double *v, double *c)
+{
+    const chart_slots sl = chart_of(m->model);
+    half_angle h;
+    int st = half_angle_at(v[sl.q], v[sl.k], &h);
+    if (st) return st;
+    const double W = v[sl.w] * m->scale[sl.w], mu = W * W;
+    c[0] = v[sl.phi] + 2.0 * h.a;
+    c[1] = 2.0 * v[sl.k] * W * h.cn;
+    c[2] = mu * cos(v[sl.phi]);
+    c[3] = mu * sin(v[sl.phi]);
+    return EL_OK;
+}
+
+/* v's (phi, w, k, q) from the chart c and, when D != NULL, d (phi, w, k, q) / d c
+ * (D[r][col], r in the slot order phi, w, k, q; w unscaled). */
+static int chart_to_v(const fit_map *m, const double *c, double *v, double D[4][4])
+{
+    const chart_slots sl = chart_of(m->model);
+    const double Fx = c[2], Fy = c[3], mu = hypot(Fx, Fy);
+    if (!(mu > 0.0) || !isfinite(mu) || !isfinite(c[0]) || !isfinite(c[1])) return EL_EDOM;
+    const double phi = atan2(Fy, Fx), sw = sqrt(mu), W = c[1] < 0.0 ? -sw : sw;
+    const double delta = remainder(c[0] - phi, 2.0 * M_PI), S = sin(0.5 * delta), cc = cos(0.5 * delta);
+    const double C = fabs(c[1]) / (2.0 * sw), k = hypot(S, C);
+    double q = 0.0;
+    if (k > 0.0) {
+        const double ck = C / k;
+        double rf, rd;
+        if (el__carlson_fd(ck * ck, cc * cc, 1.0, 1.0, &rf, &rd)) return EL_EDOM;
+        q = S / k * rf;
+    }
+    if (!isfinite(q) || !isfinite(k)) return EL_EDOM;
+    v[sl.phi] = phi;
+    v[sl.w] = W / m->scale[sl.w];
+    v[sl.k] = k;
+    v[sl.q] = q;
+    if (!D) return EL_OK;
+    /* x = (theta0, kappa0, Fx, Fy) as functions of (phi, W, k, q), inverted */
+    half_angle h;
+    int st = half_angle_at(q, k, &h);
+    if (st) return st;
+    const double m2 = mu * mu;
+    const double dphi[4] = {0.0, 0.0, -Fy / m2, Fx / m2};
+    const double dW[4] = {0.0, 0.0, W * Fx / (2.0 * m2), W * Fy / (2.0 * m2)};
+    /* theta0 = phi + 2 a(q, k), kappa0 = 2 k W cn(q, k): the (k, q) block */
+    const double a11 = 2.0 * h.a_k, a12 = 2.0 * h.a_u;
+    const double a21 = 2.0 * W * (h.cn + k * h.cn_k), a22 = 2.0 * k * W * h.cn_u;
+    const double det = a11 * a22 - a12 * a21;
+    if (!(fabs(det) > 0.0) || !isfinite(det)) return EL_EDOM;
+    for (int col = 0; col < 4; col++) {
+        const double r1 = (col == 0) - dphi[col], r2 = (col == 1) - 2.0 * k * h.cn * dW[col];
+        D[0][col] = dphi[col];
+        D[1][col] = dW[col] / m->scale[sl.w];
+        D[2][col] = (a22 * r1 - a12 * r2) / det;
+        D[3][col] = (a11 * r2 - a21 * r1) / det;
+    }
+    return EL_OK;
 }
 
 int fit_map_eval(const fit_map *m, const double *x, double v[2][FIT_NP], double *M)
@@ -265,52 +345,45 @@ int fit_map_eval(const fit_map *m, const double *x, double v[2][FIT_NP], double 
     memcpy(u, m->fixed, sizeof u);
     for (int j = 0; j < m->nx; j++) u[m->idx[j]] = x[j] / m->scale[m->idx[j]];
     memcpy(v[0], u, sizeof u);
-    double S[FIT_NP][FIT_NP] = {{0}};       /* d v / d u */
-    for (int j = 0; j < FIT_NP; j++) S[j][j] = 1.0;
-    if (m->shape) {
-        int ik, iq, iz;
-        shape_slots(m->model, &ik, &iq, &iz);
-        const double f = u[ik], af = fabs(f);
-        if (!(af < 2.0)) return EL_EDOM;
-        const double k = k_of_f(f), g2 = 1.0 + k * k, g = sqrt(g2);
-        const double dk = (4.0 - af) / (2.0 * (2.0 - af) * sqrt(2.0 - af));   /* even in f */
-        v[0][ik] = k;
-        v[0][iq] = u[iq] / g;
-        v[0][iz] = u[iz] / g;
-        S[ik][ik] = dk;
-        S[iq][iq] = S[iz][iz] = 1.0 / g;
-        S[iq][ik] = -v[0][iq] * (k / g2) * dk;
-        S[iz][ik] = -v[0][iz] * (k / g2) * dk;
-    }
     if (M)
         for (int r = 0; r < FIT_NP; r++)
-            for (int j = 0; j < m->nx; j++)
-                M[r * m->nx + j] = S[r][m->idx[j]] / m->scale[m->idx[j]];
+            for (int j = 0; j < m->nx; j++) M[r * m->nx + j] = r == m->idx[j] ? 1.0 / m->scale[r] : 0.0;
+    if (m->chart) {
+        const chart_slots sl = chart_of(m->model);
+        const int slot[4] = {sl.phi, sl.w, sl.k, sl.q}, pos[4] = {x_pos(m, sl.phi), x_pos(m, sl.w),
+                                                                  x_pos(m, sl.k), x_pos(m, sl.q)};
+        const double c[4] = {x[pos[0]], x[pos[1]], x[pos[2]], x[pos[3]]};
+        double D[4][4];
+        int st = chart_to_v(m, c, v[0], M ? D : NULL);
+        if (st) return st;
+        if (M)
+            for (int r = 0; r < 4; r++)
+                for (int col = 0; col < 4; col++) M[slot[r] * m->nx + pos[col]] = D[r][col];
+    }
     return el__all_finite(v[0], FIT_NP) ? EL_EDOM : EL_OK;
 }
 
 void fit_map_inverse(const fit_map *m, const double *v, double *x)
 {
-    double u[FIT_NP];
-    memcpy(u, v, sizeof u);
-    if (m->shape) {
-        int ik, iq, iz;
-        shape_slots(m->model, &ik, &iq, &iz);
-        const double g = sqrt(1.0 + v[ik] * v[ik]);
-        u[ik] = f_of_k(v[ik]);
-        u[iq] = v[iq] * g;
-        u[iz] = v[iz] * g;
+    for (int j = 0; j < m->nx; j++) x[j] = v[m->idx[j]] * m->scale[m->idx[j]];
+    if (!m->chart) return;
+    const chart_slots sl = chart_of(m->model);
+    double c[4];
+    if (chart_from_v(m, v, c)) {           /* unevaluable: left for the caller's check */
+        for (int a = 0; a < 4; a++) c[a] = NAN;
     }
-    for (int j = 0; j < m->nx; j++) x[j] = u[m->idx[j]] * m->scale[m->idx[j]];
+    x[x_pos(m, sl.phi)] = c[0];
+    x[x_pos(m, sl.w)] = c[1];
+    x[x_pos(m, sl.k)] = c[2];
+    x[x_pos(m, sl.q)] = c[3];
 }
 
 /*
  * The largest alpha <= 1 for which x + alpha d keeps the variables inside the model's
  * open domain, with a fraction-to-the-boundary rule (as Ipopt's): a step may go at most
- * half the way to the boundary (k at most doubles towards a circle, the straight line
- * or the separatrix in one step; farther, the Gauss-Newton model is not to be
- * trusted). The domains: the shape variable |f| < 2; the discrete h > 0 and k > -1; the
- * keyline's |k| < 1 and discrete h > 0.
+ * half the way to the boundary (farther, the Gauss-Newton model is not to be trusted).
+ * The domains: the discrete h > 0 and, outside the start-state chart (whose variables
+ * are unbounded), k > -1; the keyline's |k| < 1 and discrete h > 0.
  */
 double fit_map_step_limit(const fit_map *m, const double *x, const double *d)
 {
@@ -321,13 +394,10 @@ double fit_map_step_limit(const fit_map *m, const double *x, const double *d)
             const int slot = m->nx == 9 ? (j >= 3 ? (j - 3) % 3 : -1) : (j >= 3 ? (j - 3) % 2 + 1 : -1);
             if (slot == 1 + (m->model == FIT_DISCRETE)) { lo = -1.0; hi = 1.0; }    /* k */
             else if (slot == 0 && m->model == FIT_DISCRETE) lo = 0.0;               /* h */
-        } else {
-            int ik, iq, iz;
-            shape_slots(m->model, &ik, &iq, &iz);
+        } else if (m->model == FIT_DISCRETE) {
             const int col = m->idx[j];
-            if (m->shape && col == ik) { lo = -2.0; hi = 2.0; }
-            else if (m->model == FIT_DISCRETE && col == 6) lo = -m->scale[6];
-            else if (m->model == FIT_DISCRETE && col == 2) lo = 0.0;
+            if (col == 2) lo = 0.0;
+            else if (col == 6 && !m->chart) lo = -m->scale[6];
         }
         const double t = x[j] + d[j];
         if (d[j] < 0.0 && t < x[j] - 0.5 * (x[j] - lo)) alpha = fmin(alpha, 0.5 * (lo - x[j]) / d[j]);

@@ -140,6 +140,71 @@ START_TEST(test_keyline_map_is_g2_with_its_derivative)
 }
 END_TEST
 
+/* The start-state chart (theta0, kappa0, F) of fit_model.c: x -> v -> x gives back the
+ * same curve (points, tangent and curvature at both ends), and d v / d x carried to
+ * the end point matches central differences in x; both models, k across 1 (the
+ * chart's one formula for q), both signs of the curvature at the start (w or z < 0),
+ * and the continuations k < 0. */
+START_TEST(test_start_chart_same_curve_and_derivative)
+{
+    double tmp[FIT_WORK], worst = 0.0;
+    const double ks[] = {0.05, 0.3, 0.9, 0.999, 1.0, 1.001, 1.5, 4.0, 30.0, -0.4, -2.0};
+    for (int model = 0; model < 2; model++) {
+        fit_map m;
+        memset(&m, 0, sizeof m);
+        m.model = model; m.ncurves = 1; m.chart = 1;
+        for (int j = 0; j < FIT_NP; j++) {
+            m.scale[j] = (model == FIT_DISCRETE && (j == 2 || j == 4)) ? 40.0 : 1.0;
+            m.idx[m.nx++] = j;
+        }
+        for (size_t a = 0; a < sizeof ks / sizeof ks[0]; a++)
+            for (int sgn = -1; sgn <= 1; sgn += 2)
+                for (int qi = 0; qi < 3; qi++) {
+                    if (model == FIT_DISCRETE && ks[a] <= -1.0) continue;
+                    const double q = -0.8 + 0.7 * qi;
+                    const double vs[7] = {0.3, -0.2, 0.7, sgn * 1.3, ks[a], q, 2.0};
+                    const double vd[7] = {0.3, -0.2, 0.05, 0.7, sgn * 0.03, q, ks[a]};
+                    const double *v = model == FIT_SMOOTH ? vs : vd;
+                    double x[FIT_MAXX], w[2][FIT_NP], M[2 * FIT_NP * FIT_MAXX];
+                    fit_map_inverse(&m, v, x);
+                    ck_assert_int_eq(fit_map_eval(&m, x, w, M), EL_OK);
+                    for (int at_end = 0; at_end < 2; at_end++) {
+                        fit_end e0, e1;
+                        ck_assert_int_eq(fit_end_state(model, v, 50, at_end, &e0, tmp), EL_OK);
+                        ck_assert_int_eq(fit_end_state(model, w[0], 50, at_end, &e1, tmp), EL_OK);
+                        const double d = fmax(fmax(fabs(e0.xy[0] - e1.xy[0]), fabs(e0.xy[1] - e1.xy[1])),
+                                              fmax(fabs(remainder(e0.theta - e1.theta, 2 * M_PI)),
+                                                   fabs(e0.kappa - e1.kappa)));
+                        ck_assert_msg(d <= 1e-10, "model %d k %g sign %d q %g end %d: %g", model, ks[a], sgn,
+                                      q, at_end, d);
+                    }
+                    fit_end e;
+                    ck_assert_int_eq(fit_end_state(model, w[0], 50, 1, &e, tmp), EL_OK);
+                    for (int j = 0; j < m.nx; j++) {
+                        const double h = 1e-6 * (1.0 + fabs(x[j]));
+                        double xp[FIT_MAXX], xm[FIT_MAXX], vp[2][FIT_NP], vm[2][FIT_NP];
+                        memcpy(xp, x, sizeof xp); memcpy(xm, x, sizeof xm);
+                        xp[j] += h; xm[j] -= h;
+                        fit_end ep, em;
+                        ck_assert_int_eq(fit_map_eval(&m, xp, vp, NULL), EL_OK);
+                        ck_assert_int_eq(fit_map_eval(&m, xm, vm, NULL), EL_OK);
+                        ck_assert_int_eq(fit_end_state(model, vp[0], 50, 1, &ep, tmp), EL_OK);
+                        ck_assert_int_eq(fit_end_state(model, vm[0], 50, 1, &em, tmp), EL_OK);
+                        for (int c = 0; c < 2; c++) {
+                            double an = 0.0;
+                            for (int r = 0; r < FIT_NP; r++) an += e.dxy[c][r] * M[r * m.nx + j];
+                            const double fd = (ep.xy[c] - em.xy[c]) / (2 * h), err = fabs(fd - an) / (1.0 + fabs(fd));
+                            worst = fmax(worst, err);
+                            ck_assert_msg(err <= 1e-6, "model %d k %g sign %d q %g x%d: %g vs %g", model, ks[a],
+                                          sgn, q, j, an, fd);
+                        }
+                    }
+                }
+    }
+    ck_assert(worst > 0.0);
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("fit parts");
@@ -148,6 +213,7 @@ static Suite *suite(void)
     tcase_add_test(tc, test_blocked_discrete_walk_equals_one_call);
     tcase_add_test(tc, test_end_state_derivatives);
     tcase_add_test(tc, test_keyline_map_is_g2_with_its_derivative);
+    tcase_add_test(tc, test_start_chart_same_curve_and_derivative);
     suite_add_tcase(s, tc);
     return s;
 }
