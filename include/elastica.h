@@ -804,6 +804,13 @@ typedef struct el_spline_options {
                               times the local chord, length / length; 1e-14..1e-3, default 1e-10 */
     int max_iter;          /* Newton iterations per solve (at most), 1..1000; default 60 */
     int max_steps;         /* continuation steps (each family), 1..1000; default 60 */
+    const el_smooth_params *initial;   /* NULL (default), or ninitial = npoints - 1 pieces of
+                              an open spline through the points with these ends (G2 ends only
+                              clamped; its tension the given one in tension mode), e.g. the
+                              el_hermite_solve solution a G2 blend between two edges should
+                              follow: the solve starts from it (Newton) instead of its own
+                              start, so it keeps that branch; caller-owned, read only */
+    size_t ninitial;
 } el_spline_options;
 
 /*
@@ -892,7 +899,8 @@ void el_spline_options_defaults(el_spline_options *opt);
  * guides are placed on it (it is then a solution for its own end curvatures,
  * with no force on the guides) and the end curvatures moved to the given ones
  * by continuation. Length mode: the sibling of that length bent at that length,
- * else the free batten's sibling bent and followed in length. A G2 batten is
+ * else the free batten's sibling bent and followed in length. With initial,
+ * the sibling is Newton's from it (no other start is tried). A G2 batten is
  * hardly shorter under tension than free (its guides end up on the end
  * tangents: 1-2 % at most, some get longer): a length below that is not found
  * (EL_ENOCONV). Measured against the former rule (the end span with a tension
@@ -936,7 +944,8 @@ void el_spline_options_defaults(el_spline_options *opt);
  * error it is empty (npieces = 0, NULL arrays).
  * Errors: EL_EINVAL (NULL, n < 2, non-finite or coincident consecutive points,
  * bad options: sigma < 0 or non-finite in tension mode, zero tangent, closed with
- * fewer than 3 points), EL_EDOM (length mode with length < the polygon's length;
+ * fewer than 3 points, initial with ninitial != n - 1, closed, or a piece that
+ * fails el_smooth_check or starts off its point by more than 1e-6 of its chord), EL_EDOM (length mode with length < the polygon's length;
  * tension 0 when no free-sliding batten is found: continuation from a high
  * tension cannot reach sigma = 0, the family folds back, the batten slides off
  * its ducks), EL_ENOCONV (Newton and continuation did not reach tol; with G2

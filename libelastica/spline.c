@@ -74,6 +74,7 @@ static int check_options(const el_spline_options *o)
         o->max_steps < 1 || o->max_steps > 1000 || (o->closed != 0 && o->closed != 1))
         return EL_EINVAL;
     if (!o->closed && (check_end(&o->start) || check_end(&o->end))) return EL_EINVAL;
+    if (o->initial && o->closed) return EL_EINVAL;
     return EL_OK;
 }
 
@@ -251,6 +252,45 @@ int el_spline_solve(const double *xy, size_t n, const el_spline_options *opt,
     return el__spline_solve_paths(xy, n, opt, 1, res);
 }
 
+/*
+ * The sibling from the caller's pieces (opt->initial): each piece's parameters
+ * in the internal units, phi moved by whole turns so that the angles continue
+ * along the chain and meet a clamped start; the knot angles from them (a
+ * clamped end's angle takes the winding the pieces give it); sigma from the
+ * first piece in length mode; then Newton on the chain (its own start is not
+ * tried: the caller chose the branch). EL_EINVAL for pieces that do not fit.
+ */
+static int sibling_from_initial(el__spchain *w, const double *xy, const el_spline_options *opt,
+                                double S)
+{
+    const size_t n = w->n, m = w->m;
+    if (opt->ninitial != m) return EL_EINVAL;
+    double prev = w->kind[0] != EL_SPLINE_NATURAL ? w->th_end[0] : NAN;
+    for (size_t j = 0; j < m; j++) {
+        const el_smooth_params *p = &opt->initial[j];
+        if (el_smooth_check(p) || !(p->length > 0.0) ||
+            hypot(p->x0 - xy[2 * j], p->y0 - xy[2 * j + 1]) > 1e-6 * w->pc[j].h * S)
+            return EL_EINVAL;
+        const double s2[2] = {0.0, p->length};
+        double th[2];
+        int st = el_smooth_eval(p, 2, s2, NULL, th, NULL);
+        if (st) return st;
+        const double turn = isfinite(prev) ? 2.0 * M_PI * nearbyint((prev - th[0]) / (2.0 * M_PI)) : 0.0;
+        el__spiece *pc = &w->pc[j];
+        pc->v[EL__SP_PHI] = p->phi + turn;
+        pc->v[EL__SP_NU] = log(p->mu * S * S);
+        pc->v[EL__SP_K] = p->k;
+        pc->v[EL__SP_Q] = p->q;
+        pc->v[EL__SP_L] = p->length / S;
+        if (w->slot[j] == EL__SLOT_ANGLE) w->x[j] = th[0] + turn;
+        prev = th[1] + turn;
+        if (j == 0 && w->lmode) w->sigma = 2.0 * p->mu * (2.0 * p->k * p->k - 1.0) * S * S;
+    }
+    if (w->slot[n - 1] == EL__SLOT_ANGLE) w->x[n - 1] = prev;
+    else w->th_end[1] = prev + el__wrap_pi(w->th_end[1] - prev);
+    return el__chain_newton(w, EL__SP_DIRECT_ITER, w->aim, w->tol);
+}
+
 /* The spline of the chain w (its G2 ends clamped only): tension, length,
  * buckled or straight. st: EL_OK, or EL_ENOCONV with w->near (a solution to
  * what the parametrisation resolves), or an error. *straight: the line. */
@@ -281,8 +321,9 @@ static int solve_sibling(el__spchain *w, const double *xy, size_t n, const el_sp
 /*
  * G2 ends (spline_guide.c): from the sibling w (its G2 ends clamped only;
  * sib: the status of its solve) into g, the guides placed on it and the end
- * curvatures bent to kg at its tension or length (Lt; 0: tension mode). In length mode, when the
- * sibling or that continuation fails (the length can be nearly flat in sigma,
+ * curvatures bent to kg at its tension or length. In length mode (Lt: the
+ * length; 0: tension mode, or a sibling the caller chose), when the sibling or
+ * that continuation fails (the length can be nearly flat in sigma,
  * as between two points: sigma then runs far for a small change of the ends),
  * again from the free batten's sibling, bent at its tension and followed in
  * length as any spline (spline_path.c).
@@ -376,11 +417,13 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
         }
     }
 
-    int straight;
-    st = solve_sibling(&w, xy, n, opt, Lp, S, &straight);
+    int straight = 0;
+    st = opt->initial ? sibling_from_initial(&w, xy, opt, S) : solve_sibling(&w, xy, n, opt, Lp, S, &straight);
+    if (st == EL_EINVAL) goto done;
     const int sibling = !st || w.near;   /* the free batten exists (for sigma = 0's EL_EDOM) */
     if (st != EL_ENOMEM && !closed && (w.kind[0] == EL_SPLINE_G2 || w.kind[1] == EL_SPLINE_G2)) {
-        st = solve_g2(&w, &g, st, opt->max_steps, kg, lmode ? opt->length / S : 0.0);
+        /* from an initial sibling: its branch only (no free batten's) */
+        st = solve_g2(&w, &g, st, opt->max_steps, kg, lmode && !opt->initial ? opt->length / S : 0.0);
         sol = &g;
     }
     if (st == EL_ENOMEM) goto done;

@@ -18,8 +18,8 @@ __all__ = ["ElasticSpline", "elastic_spline"]
 
 
 class ElasticSpline:
-    """An elastic spline: ``pieces`` (SmoothElastica, piece i from point i to
-    point i+1; closed: the last from the last point back to the first),
+    """An elastic spline: ``pieces`` (SmoothElastica from knot to knot, see below;
+    closed: the last from the last point back to the first),
     ``tension`` (sigma, 1/length^2), ``length``, ``energy`` (integral of kappa^2 ds),
     ``forces`` ((npieces, 2): each piece's constant force F = (sigma - kappa^2) T
     - 2 kappa' N in units of EI/2, the batten after a section pulling on the
@@ -160,7 +160,7 @@ def _end(spec, name: str, opt_end) -> None:
 
 def elastic_spline(points, tension: Optional[float] = None, length: Optional[float] = None,
                    start=None, end=None, closed: bool = False, *, tol: float = 1e-10,
-                   max_iter: int = 60, max_steps: int = 60) -> ElasticSpline:
+                   max_iter: int = 60, max_steps: int = 60, initial=None) -> ElasticSpline:
     """The elastic spline (a batten) through ``points`` ((n, 2), n >= 2; closed:
     n >= 3, a repeated first point is dropped).
 
@@ -173,6 +173,11 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
     can meet, so its end span holds a guide duck, at half its chord (a third and
     two thirds when both ends of two points are G2), free to move along the
     chord's normal (``guides``, ``guide_forces``); the tension stays common.
+
+    ``initial`` (open curves): the spline to start from instead of the library's own
+    start, n - 1 SmoothElastica through the points with these ends (G2 ends only
+    tangent), e.g. the ``el.hermite`` solution a G2 blend between two edges should
+    follow: the solve keeps that branch (Newton from it, no other start tried).
 
     Raises ``ValueError`` for bad input (coincident consecutive points, NaN, ...),
     :class:`DomainError` when no such spline exists (a length not longer than
@@ -220,6 +225,16 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
         _end(start, "start", opt.start)
         _end(end, "end", opt.end)
     opt.tol, opt.max_iter, opt.max_steps = float(tol), int(max_iter), int(max_steps)
+    if initial is not None:
+        pieces = list(initial)
+        if closed or len(pieces) != n - 1 or not all(isinstance(p, SmoothElastica) for p in pieces):
+            raise ValueError(f"elastic_spline: initial must be {n - 1} SmoothElastica pieces of an "
+                             "open spline through the points")
+        arr = ffi.new("el_smooth_params[]", len(pieces))   # alive until the solve returns
+        for i, p in enumerate(pieces):
+            for k in SMOOTH_PARAMS:
+                setattr(arr[i], k, float(getattr(p, k)))
+        opt.initial, opt.ninitial = arr, len(pieces)
     res = ffi.new("el_spline_result *")
     st = lib.el_spline_solve(dptr(pts), n, opt, res)
     try:

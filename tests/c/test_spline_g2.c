@@ -252,6 +252,87 @@ START_TEST(random_battens_g2_solved_where_tangent_is)
 }
 END_TEST
 
+/*
+ * initial: the solve starts from the caller's sibling and keeps its branch. Two
+ * points between two lines, by length (1.5 times the distance): from each of the
+ * three Hermite solutions of that length of least energy (el_hermite_solve) the
+ * G2 batten stays nearest that one; the spline's own result as initial gives it
+ * back at once; pieces that do not fit are EL_EINVAL.
+ */
+START_TEST(initial_sibling_keeps_its_branch)
+{
+    const double p[] = {40.0, 0.0, 80.0, 25.0};
+    const double t0[2] = {1.0, 0.0}, t1[2] = {40.0 / hypot(40.0, 10.0), 10.0 / hypot(40.0, 10.0)};
+    el_hermite_options ho;
+    el_hermite_options_defaults(&ho);
+    ho.mode = EL_HERMITE_LENGTH;
+    ho.length = 70.0;
+    el_hermite_result hr;
+    ck_assert_int_eq(el_hermite_solve(p, t0, p + 2, t1, &ho, &hr), EL_OK);
+    ck_assert_uint_ge(hr.count, 3);
+    el_spline_options o = opts(EL_SPLINE_LENGTH, 70.0);
+    o.start = g2_end(t0[0], t0[1], 0.0);
+    o.end = g2_end(t1[0], t1[1], 0.0);
+    el_spline_result r;
+    double last = 0.0;
+    for (size_t i = 0; i < 3; i++) {   /* the three of least energy, in order */
+        o.initial = &hr.solutions[i].curve;
+        o.ninitial = 1;
+        ck_assert_int_eq(solve(p, 2, &o, &r), EL_OK);
+        check_spline(p, 2, &o, &r, 1e-9);
+        /* the nearest solution, both of length 70: the sum of squared distances at
+         * 20 arc lengths */
+        double best = INFINITY;
+        size_t nearest = hr.count;
+        for (size_t j = 0; j < hr.count; j++) {
+            double d2 = 0.0;
+            for (int k = 1; k <= 20; k++) {
+                double s = 70.0 * k / 21.0, a[2], b[2];
+                ck_assert_int_eq(el_smooth_eval(&hr.solutions[j].curve, 1, &s, a, NULL, NULL), EL_OK);
+                size_t q = 0;
+                while (q + 1 < r.npieces && s > r.pieces[q].length) s -= r.pieces[q++].length;
+                ck_assert_int_eq(el_smooth_eval(&r.pieces[q], 1, &s, b, NULL, NULL), EL_OK);
+                d2 += (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]);
+            }
+            if (d2 < best) { best = d2; nearest = j; }
+        }
+        ck_assert_uint_eq(nearest, i);
+        ck_assert_double_gt(r.energy, last);
+        last = r.energy;
+        el_spline_result_free(&r);
+    }
+    /* the spline's own result as its start: the same at once */
+    o.initial = NULL;
+    o.ninitial = 0;
+    o.length = 50.0;
+    ck_assert_int_eq(solve(p, 2, &o, &r), EL_OK);
+    el_spline_options c = clamped_only(o);
+    el_spline_result rc, again;
+    ck_assert_int_eq(solve(p, 2, &c, &rc), EL_OK);
+    c.initial = rc.pieces;
+    c.ninitial = rc.npieces;
+    ck_assert_int_eq(solve(p, 2, &c, &again), EL_OK);
+    ck_assert_int_le(again.iterations, 1);
+    ck_assert_close(again.energy, rc.energy, 1e-12 * rc.energy);
+    el_spline_result_free(&again);
+    /* pieces that do not fit */
+    c.ninitial = 2;
+    ck_assert_int_eq(solve(p, 2, &c, &again), EL_EINVAL);
+    c.ninitial = 1;
+    el_smooth_params off = rc.pieces[0];
+    off.x0 += 1e-3;
+    c.initial = &off;
+    ck_assert_int_eq(solve(p, 2, &c, &again), EL_EINVAL);
+    c.initial = rc.pieces;
+    c.closed = 1;
+    ck_assert_int_eq(solve(sketch, 3, &c, &again), EL_EINVAL);
+    ck_assert_uint_eq(again.npieces, 0);
+    el_spline_result_free(&rc);
+    el_spline_result_free(&r);
+    el_hermite_result_free(&hr);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("spline_g2");
@@ -261,6 +342,7 @@ int main(void)
     tcase_add_test(tc, two_points_are_the_g2_blend);
     tcase_add_test(tc, collinear_ducks_with_g2_ends);
     tcase_add_test(tc, random_battens_g2_solved_where_tangent_is);
+    tcase_add_test(tc, initial_sibling_keeps_its_branch);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }
