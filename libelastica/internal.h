@@ -119,14 +119,19 @@ enum { EL__SP_HALVINGS = 12 };                /* step halvings of a Newton step 
 /* One piece from (0, 0) to the chord (dx, dy) (spline_piece.c's comment). */
 typedef struct el__spiece {
     double v[EL__NV];
-    double dx, dy, h;            /* chord (spline.c's units) */
+    double dx, dy, h;            /* chord (spline.c's units); h: its length, the scale of R
+                                    (next to a guide duck: the length with the duck on its base) */
+    double cx0, cy0, gn[2];      /* next to a guide duck: the chord with every guide on its
+                                    base, and the span's unit normal the guides move along
+                                    (gn = 0: no guide duck at either end) */
     double R[EL__NV];            /* residuals at v */
     double th0, th1, kap0, kap1, dkap0;
     double energy, Kq;           /* integral kappa^2 ds; K of the modulus min(|k|, 1/|k|) */
     double st[EL__NV];           /* its start state (theta0, kappa0, kappa0', sigma, L) */
     double M[EL__NV * EL__NV];   /* d st / d v */
-    double D[4][EL__NV];         /* J^{-1} R, J^{-1} e2, J^{-1} e3, h^2 J^{-1} e4 */
-    double c0[4], c1[4], cL[4];  /* g0 . D[r], g1 . D[r], D[r][L] */
+    double D[5][EL__NV];         /* J^{-1} R, J^{-1} e2, J^{-1} e3, h^2 J^{-1} e4 and, next to a
+                                    guide duck, J^{-1} (gn / h, 0, 0, 0) (its end moved along gn) */
+    double c0[5], c1[5], cL[5];  /* g0 . D[r], g1 . D[r], D[r][L] */
 } el__spiece;
 
 /* A piece's Newton step (el__spiece_step_prepare). */
@@ -135,10 +140,11 @@ typedef struct el__spstep {
 } el__spstep;
 
 /* A piece's targets: end angles ta, tb and tension s, and which of the spline's
- * unknowns they are (slot index, -1: none, -2: the common sigma). */
+ * unknowns they are (slot index, -1: none, -2: the common sigma); ga, gb: the
+ * slot holding the offset of a guide duck at its start / end (-1: none). */
 typedef struct el__sptargets {
     double ta, tb, s;
-    long ia, ib, is;
+    long ia, ib, is, ga, gb;
 } el__sptargets;
 
 /* Residuals, end angles and curvatures, state, energy; with jac also M, the LU
@@ -156,12 +162,27 @@ int el__spiece_start(el__spiece *pc, const el__sptargets *t);
 int el__spiece_hermite(el__spiece *pc, const el__sptargets *t);
 /* max |v_i|. */
 double el__max_abs(const double *v, size_t n);
+/* LU with partial pivoting of the n x n row-major a (n <= EL__NV) in place
+ * (EL_ESINGULAR on a zero pivot), and its solve of b in place. */
+int el__lu_factor(double *a, int n, int *perm);
+void el__lu_solve(const double *a, int n, const int *perm, double *b);
 
 /* ---- the elastic spline's chain (spline_chain.c), its paths (spline_path.c) */
 
-/* A knot's unknown x_i: its tangent angle, none (a clamped end) or the tension
- * of the end span (a G2 end). */
-enum { EL__SLOT_ANGLE, EL__SLOT_FIXED, EL__SLOT_TENSION };
+/* A knot's unknown x_i: its tangent angle, none (a clamped end), or at a G2
+ * end (angle fixed) the offset of its guide duck along its span's normal. */
+enum { EL__SLOT_ANGLE, EL__SLOT_FIXED, EL__SLOT_GUIDE };
+/* Unknowns beyond the tridiagonal knot system (spline_chain.c): the guide
+ * offsets (at most two) and sigma. */
+enum { EL__MAX_BORDER = 3 };
+
+/* A guide duck of a G2 end (spline_guide.c): knot `knot` on the span from point
+ * `pa` to pa + 1, at the fraction f of its chord plus x[slot] times the span's
+ * unit normal (nx, ny) (internal units; h: the span's chord). */
+typedef struct el__spguide {
+    size_t knot, slot, pa;
+    double f, nx, ny, h;
+} el__spguide;
 /* With sigma unknown, the border equation: the total length, or the
  * pseudo-arclength step of spline_path.c. */
 enum { EL__BORDER_NONE, EL__BORDER_LENGTH, EL__BORDER_ARC };
@@ -183,7 +204,7 @@ typedef struct el__spsnap {
 } el__spsnap;
 
 typedef struct el__spchain {
-    size_t n, m;             /* points, pieces */
+    size_t n, m;             /* knots (the points and the guide ducks), pieces */
     int closed;
     int lmode;               /* sigma unknown: the EL__BORDER_ equation; 0: sigma given */
     int kind[2];             /* open: end kinds */
@@ -193,8 +214,14 @@ typedef struct el__spchain {
     double sigma_user;       /* tension mode: the sigma asked for (user units) */
     double *x, *ell;         /* slot values, local chord per knot */
     int *slot;
+    int ng;                  /* guide ducks (G2 ends) */
+    el__spguide guide[2];
+    long *guide_at;          /* per knot: its index in guide[], or -1 */
     el__spiece *pc;
-    double *F, *dg, *up, *lo, *b, *y, *z, *col, *row;   /* Newton work, n each */
+    double *F, *dg, *up, *lo, *b, *y, *z;               /* Newton work, n each */
+    double *bcol, *brow, *bz;   /* the border (EL__MAX_BORDER n each, spline_chain.c) */
+    double bmat[EL__MAX_BORDER * EL__MAX_BORDER], bg[EL__MAX_BORDER];
+    int *border;             /* per knot: its border index (slot GUIDE), or -1; sigma's is ng */
     double *xs;              /* backup of x */
     el__spstep *ps;          /* the pieces' Newton steps */
     double Gres;             /* border residual */
@@ -231,11 +258,22 @@ double el__wrap_pi(double a);
 
 /* The tension solution at w->sigma (final: to w->tol, else to EL__SP_NEAR). */
 int el__spline_solve_tension(el__spchain *w, int max_steps, int final);
-/* Length mode: the solution of total length Lt (internal units). */
+/* Length mode: the solution of total length Lt (internal units): from the
+ * start, else from the free batten (el__spline_free_batten: sigma = 0, or as
+ * near as continuation gets) by el__spline_length_from (its tension solution
+ * followed in length). */
 int el__spline_solve_length(el__spchain *w, int max_steps, double Lt);
+int el__spline_free_batten(el__spchain *w, int max_steps);
+int el__spline_length_from(el__spchain *w, int max_steps, double Lt);
 /* Length mode on collinear points: the buckled batten of length Lt (> the
  * polygon's Lp), the line's direction dir. */
 int el__spline_solve_buckled(el__spchain *w, int max_steps, double dir, double Lp, double Lt);
+
+/* G2 ends (spline_guide.c): the guided chain g of the solved sibling w, its G2
+ * ends clamped only (g allocated here; free it also on failure); then the end
+ * curvatures moved to kg (spline_path.c). */
+int el__guides_setup(el__spchain *g, const el__spchain *w);
+int el__spline_bend_ends(el__spchain *w, int max_steps, const double kg[2]);
 
 /* el_spline_solve; newton_first = 0: length mode by the continuation alone
  * (follow_length, the plain counterpart of the Newton attempts), for the tests. */
@@ -246,7 +284,8 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
  * (h = |gamma(L) - gamma(0)|), v = (phi, ln mu, k, q, L): J[25] = dR/dv with
  * R = ((gamma(L) - end)/h, theta(0) - ta, theta(L) - tb, (2 mu (2k^2-1) - sigma) h^2),
  * g0[5], g1[5] = d kappa(0)/dv, d kappa(L)/dv, M[25] = d(theta0, kappa0, kappa0', sigma, L)/dv,
- * d[9] = d(kappa(0), kappa(L), L)/d(ta, tb, sigma) by the implicit function theorem. */
+ * d[12] = d(kappa(0), kappa(L), L)/d(ta, tb, sigma, e) by the implicit function theorem,
+ * e: the end point moved along the chord's unit normal (a guide duck's offset). */
 int el__spline_piece_jacobians(const el_smooth_params *p, double *J, double *g0, double *g1,
                                double *M, double *d);
 

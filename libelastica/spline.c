@@ -4,7 +4,9 @@
  *   spline.c        the API: checks, units, the degenerate cases, the result,
  *                   the B-spline of the whole chain;
  *   spline_chain.c  the unknowns and equations, Newton on the whole chain, its start;
- *   spline_path.c   continuation in sigma, the length mode, the buckled strip;
+ *   spline_path.c   continuation in sigma, the length mode, the buckled strip,
+ *                   the G2 ends' continuation in the end curvatures;
+ *   spline_guide.c  G2 ends: the guide ducks (why, and where);
  *   spline_piece.c  one piece: residuals, Jacobians, its state, its start.
  *
  * Forces (seed 004 (9)-(10)): for the Lagrangian integral kappa^2 + sigma ds
@@ -29,7 +31,6 @@
 #include <string.h>
 
 /* ------------------------------------------------------------------ API */
-/* ------------------------------------------------------------------ API */
 
 void el_spline_options_defaults(el_spline_options *opt)
 {
@@ -45,7 +46,7 @@ void el_spline_options_defaults(el_spline_options *opt)
 void el_spline_result_free(el_spline_result *res)
 {
     if (!res) return;
-    free(res->pieces); free(res->sigmas); free(res->forces); free(res->angles); free(res->curvatures);
+    free(res->pieces); free(res->forces); free(res->angles); free(res->curvatures);
     memset(res, 0, sizeof *res);
 }
 
@@ -73,10 +74,12 @@ static int check_options(const el_spline_options *o)
         o->max_steps < 1 || o->max_steps > 1000 || (o->closed != 0 && o->closed != 1))
         return EL_EINVAL;
     if (!o->closed && (check_end(&o->start) || check_end(&o->end))) return EL_EINVAL;
+    if (o->initial && o->closed) return EL_EINVAL;
     return EL_OK;
 }
 
-/* Collinear points in order along the line, with ends that allow the straight line. */
+/* Collinear points in order along the line, with ends that allow the straight
+ * line (G2 ends as clamped: the sibling's, el_spline_solve). */
 static int straight_line(const double *xy, size_t n, const el_spline_options *o, double *dir)
 {
     if (o->closed) return 0;
@@ -94,7 +97,6 @@ static int straight_line(const double *xy, size_t n, const el_spline_options *o,
         const double tn = hypot(e[i]->tangent[0], e[i]->tangent[1]);
         const double tx = e[i]->tangent[0] / tn, ty = e[i]->tangent[1] / tn;
         if (fabs(ux * ty - uy * tx) > 1e-14 || ux * tx + uy * ty <= 0.0) return 0;
-        if (e[i]->kind == EL_SPLINE_G2 && e[i]->curvature != 0.0) return 0;
     }
     dir[0] = atan2(uy, ux);
     return 1;
@@ -117,89 +119,121 @@ static double piece_max_curvature(const el_smooth_params *p, double Kq, double k
  * large (piece_from_state keeps |k| <~ 1e4 there, as el_hermite_solve). */
 static int circle_piece(const el_smooth_params *p) { return fabs(p->k) >= 1e3; }
 
+/* Knot i's position in user units (xy: the points, S: the unit): a point, or a
+ * guide duck at its chord fraction plus its offset along the span's normal. */
+static void knot_position(const el__spchain *w, const double *xy, double S, size_t i, double *p)
+{
+    const long g = w->guide_at[i];
+    if (g < 0) {
+        size_t pt = i;   /* the point: the knots before i that are not guides */
+        for (int k = 0; k < w->ng; k++) pt -= w->guide[k].knot < i;
+        p[0] = xy[2 * pt];
+        p[1] = xy[2 * pt + 1];
+        return;
+    }
+    const el__spguide *gd = &w->guide[g];
+    const double *a = xy + 2 * gd->pa, d = w->x[gd->slot] * S;
+    p[0] = a[0] + gd->f * (a[2] - a[0]) + d * gd->nx;
+    p[1] = a[1] + gd->f * (a[3] - a[1]) + d * gd->ny;
+}
+
 /* Fill res from the solved chain (original units), measuring the residual;
  * *other: the part of it from joints and ends without a circle piece. */
-static int make_result(const el__spchain *w, const double *xy, double S, el_spline_result *res,
-                       double *other)
+static int make_result(const el__spchain *w, const double *xy, size_t npoints, double S,
+                       el_spline_result *res, double *other)
 {
     const size_t n = w->n, m = w->m;
     el_spline_result r;
     memset(&r, 0, sizeof r);
-    r.npoints = n;
+    r.npoints = npoints;
     r.npieces = m;
     r.pieces = malloc(m * sizeof *r.pieces);
-    r.sigmas = malloc(m * sizeof *r.sigmas);
     r.forces = malloc(2 * m * sizeof *r.forces);
-    r.angles = malloc(n * sizeof *r.angles);
-    r.curvatures = malloc(n * sizeof *r.curvatures);
+    r.angles = malloc(npoints * sizeof *r.angles);
+    r.curvatures = malloc(npoints * sizeof *r.curvatures);
     double *ends = malloc(2 * m * sizeof *ends);   /* theta, kappa at each piece's end */
-    if (!r.pieces || !r.sigmas || !r.forces || !r.angles || !r.curvatures || !ends) {
+    double *knot = malloc(4 * n * sizeof *knot);   /* positions, then theta, kappa at each knot */
+    if (!r.pieces || !r.forces || !r.angles || !r.curvatures || !ends || !knot) {
         el_spline_result_free(&r);
         free(ends);
+        free(knot);
         return EL_ENOMEM;
     }
+    double *kth = knot + 2 * n, *kka = knot + 3 * n;
+    for (size_t i = 0; i < n; i++) knot_position(w, xy, S, i, knot + 2 * i);
     double resid = 0.0, rest = 0.0;
     /* tension mode: the given sigma exactly (not through the unit S) */
     r.sigma = w->lmode ? w->sigma / (S * S) : w->sigma_user;
     for (size_t j = 0; j < m; j++) {
         const el__spiece *pc = &w->pc[j];
-        el__sptargets t;
-        el__chain_targets(w, j, &t);
         el_smooth_params *p = &r.pieces[j];
-        p->x0 = xy[2 * j];
-        p->y0 = xy[2 * j + 1];
+        p->x0 = knot[2 * j];
+        p->y0 = knot[2 * j + 1];
         p->phi = pc->v[EL__SP_PHI];
         p->mu = exp(pc->v[EL__SP_NU]) / (S * S);
         p->k = pc->v[EL__SP_K];
         p->q = pc->v[EL__SP_Q];
         p->length = pc->v[EL__SP_L] * S;
-        r.sigmas[j] = t.is == -1 ? r.sigma : t.s / (S * S);
         /* the residual is measured on the output, with el_smooth_eval */
         const double s2[2] = {0.0, p->length};
         double pt[4], th[2], ka[2];
         const int st = el_smooth_eval(p, 2, s2, pt, th, ka);
-        if (st) { el_spline_result_free(&r); free(ends); return st; }
-        const size_t e = (j + 1) % n;
-        const double h = hypot(xy[2 * e] - xy[2 * j], xy[2 * e + 1] - xy[2 * j + 1]);
-        const double rp = hypot(pt[2] - xy[2 * e], pt[3] - xy[2 * e + 1]) / h;
+        if (st) { el_spline_result_free(&r); free(ends); free(knot); return st; }
+        const double *e = knot + 2 * ((j + 1) % n);
+        const double h = hypot(e[0] - p->x0, e[1] - p->y0);
+        const double rp = hypot(pt[2] - e[0], pt[3] - e[1]) / h;
         resid = fmax(resid, rp);
         if (!circle_piece(p)) rest = fmax(rest, rp);
-        r.angles[j] = th[0];
-        r.curvatures[j] = ka[0];
+        kth[j] = th[0];
+        kka[j] = ka[0];
         ends[2 * j] = th[1];
         ends[2 * j + 1] = ka[1];
-        if (!w->closed && j == m - 1) { r.angles[n - 1] = th[1]; r.curvatures[n - 1] = ka[1]; }
+        if (!w->closed && j == m - 1) { kth[n - 1] = th[1]; kka[n - 1] = ka[1]; }
         /* F = (sigma - kappa^2) T - 2 kappa' N at s = 0 */
         const double dk = pc->dkap0 / (S * S), T[2] = {cos(th[0]), sin(th[0])};
-        const double a = r.sigmas[j] - ka[0] * ka[0];
+        const double a = r.sigma - ka[0] * ka[0];
         r.forces[2 * j] = a * T[0] + 2.0 * dk * T[1];
         r.forces[2 * j + 1] = a * T[1] - 2.0 * dk * T[0];
         r.energy += pc->energy / S;
         r.length += p->length;
         r.max_curvature = fmax(r.max_curvature, piece_max_curvature(p, pc->Kq, ka[0], ka[1]));
     }
-    /* the joints and the end conditions */
-    for (size_t i = 0; i < n; i++) {
+    /* the joints and the end conditions; the points' angles and curvatures */
+    for (size_t i = 0, pt = 0; i < n; i++) {
         const double lr = w->ell[i] * S;
         double ri = 0.0;
         int circle;
         if (!w->closed && (i == 0 || i == n - 1)) {
             const int e = i == 0 ? 0 : 1;
-            const double kap = r.curvatures[i];
+            const double kap = kka[i];
             if (w->kind[e] == EL_SPLINE_NATURAL) ri = fabs(kap) * lr;
             if (w->kind[e] == EL_SPLINE_G2) ri = fabs(kap - w->kg[e] / S) * lr;
             if (w->kind[e] != EL_SPLINE_NATURAL)
-                ri = fmax(ri, fabs(el__wrap_pi(r.angles[i] - w->th_end[e])));
+                ri = fmax(ri, fabs(el__wrap_pi(kth[i] - w->th_end[e])));
             circle = circle_piece(&r.pieces[i == 0 ? 0 : m - 1]);
         } else {
             const size_t jm = (i + m - 1) % m;
-            ri = fmax(fabs(el__wrap_pi(ends[2 * jm] - r.angles[i])), fabs(ends[2 * jm + 1] - r.curvatures[i]) * lr);
+            ri = fmax(fabs(el__wrap_pi(ends[2 * jm] - kth[i])), fabs(ends[2 * jm + 1] - kka[i]) * lr);
             circle = circle_piece(&r.pieces[jm]) || circle_piece(&r.pieces[i % m]);
         }
         resid = fmax(resid, ri);
         if (!circle) rest = fmax(rest, ri);
+        const long g = w->guide_at[i];
+        if (g < 0) {
+            r.angles[pt] = kth[i];
+            r.curvatures[pt++] = kka[i];
+            continue;
+        }
+        /* a guide duck: its position, and its force F_{i-1} - F_i */
+        r.guide_pieces[g] = i;
+        r.guides[2 * g] = knot[2 * i];
+        r.guides[2 * g + 1] = knot[2 * i + 1];
+        r.guide_forces[2 * g] = r.forces[2 * (i - 1)] - r.forces[2 * i];
+        r.guide_forces[2 * g + 1] = r.forces[2 * (i - 1) + 1] - r.forces[2 * i + 1];
     }
+    r.nguides = (size_t)w->ng;
     free(ends);
+    free(knot);
     if (w->lmode == EL__BORDER_LENGTH) {
         const double rl = fabs(r.length - w->Lt * S) / (w->Lt * S);
         resid = fmax(resid, rl);
@@ -216,6 +250,102 @@ int el_spline_solve(const double *xy, size_t n, const el_spline_options *opt,
                     el_spline_result *res)
 {
     return el__spline_solve_paths(xy, n, opt, 1, res);
+}
+
+/*
+ * The sibling from the caller's pieces (opt->initial): each piece's parameters
+ * in the internal units, phi moved by whole turns so that the angles continue
+ * along the chain and meet a clamped start; the knot angles from them (a
+ * clamped end's angle takes the winding the pieces give it); sigma from the
+ * first piece in length mode; then Newton on the chain (its own start is not
+ * tried: the caller chose the branch). EL_EINVAL for pieces that do not fit.
+ */
+static int sibling_from_initial(el__spchain *w, const double *xy, const el_spline_options *opt,
+                                double S)
+{
+    const size_t n = w->n, m = w->m;
+    if (opt->ninitial != m) return EL_EINVAL;
+    double prev = w->kind[0] != EL_SPLINE_NATURAL ? w->th_end[0] : NAN;
+    for (size_t j = 0; j < m; j++) {
+        const el_smooth_params *p = &opt->initial[j];
+        if (el_smooth_check(p) || !(p->length > 0.0) ||
+            hypot(p->x0 - xy[2 * j], p->y0 - xy[2 * j + 1]) > 1e-6 * w->pc[j].h * S)
+            return EL_EINVAL;
+        const double s2[2] = {0.0, p->length};
+        double th[2];
+        int st = el_smooth_eval(p, 2, s2, NULL, th, NULL);
+        if (st) return st;
+        const double turn = isfinite(prev) ? 2.0 * M_PI * nearbyint((prev - th[0]) / (2.0 * M_PI)) : 0.0;
+        el__spiece *pc = &w->pc[j];
+        pc->v[EL__SP_PHI] = p->phi + turn;
+        pc->v[EL__SP_NU] = log(p->mu * S * S);
+        pc->v[EL__SP_K] = p->k;
+        pc->v[EL__SP_Q] = p->q;
+        pc->v[EL__SP_L] = p->length / S;
+        if (w->slot[j] == EL__SLOT_ANGLE) w->x[j] = th[0] + turn;
+        prev = th[1] + turn;
+        if (j == 0 && w->lmode) w->sigma = 2.0 * p->mu * (2.0 * p->k * p->k - 1.0) * S * S;
+    }
+    if (w->slot[n - 1] == EL__SLOT_ANGLE) w->x[n - 1] = prev;
+    else w->th_end[1] = prev + el__wrap_pi(w->th_end[1] - prev);
+    return el__chain_newton(w, EL__SP_DIRECT_ITER, w->aim, w->tol);
+}
+
+/* The spline of the chain w (its G2 ends clamped only): tension, length,
+ * buckled or straight. st: EL_OK, or EL_ENOCONV with w->near (a solution to
+ * what the parametrisation resolves), or an error. *straight: the line. */
+static int solve_sibling(el__spchain *w, const double *xy, size_t n, const el_spline_options *opt,
+                         double Lp, double S, int *straight)
+{
+    const int lmode = w->lmode;
+    double dir;
+    *straight = 0;
+    if (straight_line(xy, n, opt, &dir) && (!lmode || opt->length <= Lp * (1.0 + 1e-14))) {
+        for (size_t i = 0; i < n; i++) if (w->slot[i] == EL__SLOT_ANGLE) w->x[i] = dir;
+        for (size_t j = 0; j < w->m; j++) {
+            el__spiece *pc = &w->pc[j];
+            pc->v[EL__SP_PHI] = dir; pc->v[EL__SP_NU] = log(1.0 / (pc->h * pc->h));
+            pc->v[EL__SP_K] = 0.0; pc->v[EL__SP_Q] = 0.0; pc->v[EL__SP_L] = pc->h;
+        }
+        if (lmode) { w->sigma = 0.0; w->Lt = Lp / S; }
+        el__chain_eval(w, 0);
+        *straight = 1;
+        return EL_OK;
+    }
+    if (!lmode) return el__spline_solve_tension(w, opt->max_steps, 1);
+    if (straight_line(xy, n, opt, &dir))   /* longer than the line */
+        return el__spline_solve_buckled(w, opt->max_steps, dir, Lp / S, opt->length / S);
+    return el__spline_solve_length(w, opt->max_steps, opt->length / S);
+}
+
+/*
+ * G2 ends (spline_guide.c): from the sibling w (its G2 ends clamped only;
+ * sib: the status of its solve) into g, the guides placed on it and the end
+ * curvatures bent to kg at its tension or length. In length mode (Lt: the
+ * length; 0: tension mode, or a sibling the caller chose), when the sibling or
+ * that continuation fails (the length can be nearly flat in sigma,
+ * as between two points: sigma then runs far for a small change of the ends),
+ * again from the free batten's sibling, bent at its tension and followed in
+ * length as any spline (spline_path.c).
+ */
+static int solve_g2(el__spchain *w, el__spchain *g, int sib, int max_steps, const double kg[2],
+                    double Lt)
+{
+    int st = sib;
+    if (!st || w->near) {
+        st = el__guides_setup(g, w);
+        if (!st) st = el__spline_bend_ends(g, max_steps, kg);
+        if (!st || g->near) return st;
+    }
+    if (st == EL_ENOMEM || Lt == 0.0) return st;
+    el__chain_free(g);
+    memset(g, 0, sizeof *g);
+    w->near = 0;
+    if ((st = el__spline_free_batten(w, max_steps))) return st;
+    if ((st = el__guides_setup(g, w))) return st;
+    if ((st = el__spline_bend_ends(g, max_steps, kg)) && !g->near) return st;
+    g->near = 0;
+    return el__spline_length_from(g, max_steps, Lt);
 }
 
 int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *opt,
@@ -242,11 +372,10 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
     if (!isfinite(Lp)) return EL_EINVAL;
     const int lmode = opt->mode == EL_SPLINE_LENGTH;
     if (lmode && opt->length < Lp * (1.0 - 1e-14)) return EL_EDOM;
-    int nten = 0;   /* G2 ends */
-    if (!closed) nten = (opt->start.kind == EL_SPLINE_G2) + (opt->end.kind == EL_SPLINE_G2);
-    if ((size_t)nten > m || (lmode && (size_t)nten >= m)) return EL_EDOM;
 
-    el__spchain w;
+    el__spchain w, g;
+    memset(&g, 0, sizeof g);
+    el__spchain *sol = &w;   /* the chain the result comes from */
     int st = el__chain_alloc(&w, n, m);
     if (st) goto done;
     const double S = Lp / (double)m;   /* the unit: mean chord */
@@ -269,6 +398,7 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
         w.ell[i] = 0.5 * (hl + hr);
         w.slot[i] = EL__SLOT_ANGLE;
     }
+    double kg[2] = {0.0, 0.0};   /* G2 ends' curvatures (internal units) */
     if (!closed) {
         /* the chord angles at both ends, the last one unwrapped along the chain
          * (as the knot angles are): a clamped end is within pi of its chord */
@@ -282,49 +412,37 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
             if (e[i]->kind == EL_SPLINE_NATURAL) continue;
             const double c = chord[i];
             w.th_end[i] = c + el__wrap_pi(atan2(e[i]->tangent[1], e[i]->tangent[0]) - c);
-            w.kg[i] = e[i]->kind == EL_SPLINE_G2 ? e[i]->curvature * S : 0.0;
-            w.slot[i ? n - 1 : 0] = e[i]->kind == EL_SPLINE_G2 ? EL__SLOT_TENSION : EL__SLOT_FIXED;
+            if (e[i]->kind == EL_SPLINE_G2) kg[i] = e[i]->curvature * S;
+            w.slot[i ? n - 1 : 0] = EL__SLOT_FIXED;   /* G2: clamped in the sibling */
         }
     }
 
-    double dir;
-    if (straight_line(xy, n, opt, &dir) && (!lmode || opt->length <= Lp * (1.0 + 1e-14))) {
-        for (size_t i = 0; i < n; i++) if (w.slot[i] == EL__SLOT_ANGLE) w.x[i] = dir;
-        for (size_t j = 0; j < m; j++) {
-            el__spiece *pc = &w.pc[j];
-            pc->v[EL__SP_PHI] = dir; pc->v[EL__SP_NU] = log(1.0 / (pc->h * pc->h));
-            pc->v[EL__SP_K] = 0.0; pc->v[EL__SP_Q] = 0.0; pc->v[EL__SP_L] = pc->h;
-        }
-        if (w.slot[0] == EL__SLOT_TENSION) w.x[0] = w.sigma;
-        if (w.slot[n - 1] == EL__SLOT_TENSION) w.x[n - 1] = w.sigma;
-        if (lmode) { w.sigma = 0.0; w.Lt = Lp / S; }
-        el__chain_eval(&w, 0);
-        double other;
-        st = make_result(&w, xy, S, res, &other);
-        if (!st && lmode) res->sigma = 0.0;
-        goto done;
+    int straight = 0;
+    st = opt->initial ? sibling_from_initial(&w, xy, opt, S) : solve_sibling(&w, xy, n, opt, Lp, S, &straight);
+    if (st == EL_EINVAL) goto done;
+    const int sibling = !st || w.near;   /* the free batten exists (for sigma = 0's EL_EDOM) */
+    if (st != EL_ENOMEM && !closed && (w.kind[0] == EL_SPLINE_G2 || w.kind[1] == EL_SPLINE_G2)) {
+        /* from an initial sibling: its branch only (no free batten's) */
+        st = solve_g2(&w, &g, st, opt->max_steps, kg, lmode && !opt->initial ? opt->length / S : 0.0);
+        sol = &g;
     }
-
-    if (!lmode)
-        st = el__spline_solve_tension(&w, opt->max_steps, 1);
-    else if (straight_line(xy, n, opt, &dir))   /* longer than the line */
-        st = el__spline_solve_buckled(&w, opt->max_steps, dir, Lp / S, opt->length / S);
-    else
-        st = el__spline_solve_length(&w, opt->max_steps, opt->length / S);
     if (st == EL_ENOMEM) goto done;
-    if (!st || w.near) {   /* a solution, or one to what the parametrisation resolves */
+    if (!st || sol->near) {   /* a solution, or one to what the parametrisation resolves */
         double other;
-        const int st2 = make_result(&w, xy, S, res, &other);
+        const int st2 = make_result(sol, xy, n, S, res, &other);
         if (st2) { st = st2; goto done; }
+        if (straight && lmode) { res->sigma = 0.0; goto done; }
+        if (straight) goto done;
         /* circle pieces are accepted at what el_smooth_params resolves (header) */
         st = res->residual <= opt->tol || (other <= opt->tol && res->residual <= EL__SP_CIRCLE_RESID)
                  ? EL_OK : EL_ENOCONV;
         goto done;
     }
     /* no solution found: for sigma = 0 the free-sliding batten slides off its ducks */
-    st = !lmode && opt->sigma == 0.0 ? EL_EDOM : EL_ENOCONV;
+    st = !lmode && opt->sigma == 0.0 && !sibling ? EL_EDOM : EL_ENOCONV;
 done:
     el__chain_free(&w);
+    el__chain_free(&g);
     return st;
 }
 

@@ -60,13 +60,28 @@ void el__chain_targets(const el__spchain *w, size_t j, el__sptargets *t)
     /* start knot j */
     if (w->slot[j] == EL__SLOT_ANGLE) { t->ta = w->x[j]; t->ia = (long)j; }
     else { t->ta = w->th_end[0]; t->ia = -1; }
-    if (!w->closed && j == 0 && w->slot[0] == EL__SLOT_TENSION) { t->s = w->x[0]; t->is = 0; }
     /* end knot */
     const size_t e = (j + 1) % n;
     if (w->closed && e == 0) { t->tb = w->x[0] + w->wind; t->ib = 0; }
     else if (w->slot[e] == EL__SLOT_ANGLE) { t->tb = w->x[e]; t->ib = (long)e; }
     else { t->tb = w->th_end[1]; t->ib = -1; }
-    if (!w->closed && e == n - 1 && w->slot[e] == EL__SLOT_TENSION) { t->s = w->x[e]; t->is = (long)e; }
+    t->ga = w->guide_at[j] >= 0 ? (long)w->guide[w->guide_at[j]].slot : -1;
+    t->gb = w->guide_at[e] >= 0 ? (long)w->guide[w->guide_at[e]].slot : -1;
+}
+
+/* The chords of the pieces next to a guide duck, from the guides' offsets
+ * (its chord's end moves along gn with a guide at its end, back with one at its start). */
+static void guide_chords(el__spchain *w)
+{
+    for (int g = 0; g < w->ng; g++)
+        for (size_t j = w->guide[g].knot - 1; j <= w->guide[g].knot; j++) {
+            el__sptargets t;
+            el__chain_targets(w, j, &t);
+            const double d = (t.gb >= 0 ? w->x[t.gb] : 0.0) - (t.ga >= 0 ? w->x[t.ga] : 0.0);
+            el__spiece *pc = &w->pc[j];
+            pc->dx = pc->cx0 + d * pc->gn[0];
+            pc->dy = pc->cy0 + d * pc->gn[1];
+        }
 }
 
 /* Evaluate every piece and the knot residuals; returns the merit (or INFINITY). */
@@ -74,6 +89,7 @@ double el__chain_eval(el__spchain *w, int jac)
 {
     const size_t n = w->n, m = w->m;
     double merit = 0.0, rmax = 0.0, Lsum = 0.0;
+    guide_chords(w);
     for (size_t j = 0; j < m; j++) {
         el__sptargets t;
         el__chain_targets(w, j, &t);
@@ -141,74 +157,144 @@ static int tri_solve(el__spchain *w, const double *rhs, double *x)
     return el__all_finite(x, n) ? EL_ESINGULAR : EL_OK;
 }
 
-/* One Newton direction: dx in w->y, dsigma returned in *ds. */
+/*
+ * The Newton system: T (the knot equations in the knot unknowns: tridiagonal,
+ * cyclic when closed; identity at the other knots) bordered by nb <= 3 unknowns,
+ * the guide offsets (border i at the knot guide[i].slot, whose equation, the
+ * given curvature at that end, is the border row) and sigma (index ng, the
+ * length or pseudo-arclength equation). Eliminated by the Schur complement:
+ * T Y = b, T Z = C (nb columns), (B - R Z) dz = g - R Y, x = Y - Z dz: nb + 1
+ * tridiagonal solves (one without a border), O(n). A piece after a guide duck
+ * depends on its offset and on the angles at its two knots, so the offset
+ * cannot join the tridiagonal part.
+ * jac_add: A(r, c) += v, r and c a knot (routed to T, C, R or B by its border
+ * index), or -1 - b for border b without a knot (sigma).
+ */
+static void jac_add(el__spchain *w, long r, long c, double v)
+{
+    const size_t n = w->n;
+    const int rb = r < 0 ? (int)(-1 - r) : w->border[r], cb = c < 0 ? (int)(-1 - c) : w->border[c];
+    if (rb < 0 && cb < 0) tri_add(w, r, c, v);
+    else if (rb < 0) w->bcol[cb * n + r] += v;
+    else if (cb < 0) w->brow[rb * n + c] += v;
+    else w->bmat[rb * EL__MAX_BORDER + cb] += v;
+}
+
+/* The right-hand side of row r (a knot or -1 - b). */
+static double *jac_rhs(el__spchain *w, long r)
+{
+    const int rb = r < 0 ? (int)(-1 - r) : w->border[r];
+    return rb < 0 ? &w->b[r] : &w->bg[rb];
+}
+
+/* Determinant of the leading k x k block of the nb x nb border matrix S (row-major, stride EL__MAX_BORDER). */
+static double det_lead(const double *S, int k)
+{
+    double a[EL__MAX_BORDER * EL__MAX_BORDER];
+    int perm[EL__MAX_BORDER];
+    for (int i = 0; i < k; i++)
+        for (int j = 0; j < k; j++) a[i * k + j] = S[i * EL__MAX_BORDER + j];
+    if (k == 0) return 1.0;
+    if (el__lu_factor(a, k, perm)) return 0.0;
+    double d = 1.0;
+    for (int i = 0; i < k; i++) d *= perm[i] != i ? -a[i * k + i] : a[i * k + i];
+    return d;
+}
+
+/* One Newton direction: dx in w->y (the guide offsets at their slots), dsigma in *ds. */
 static int chain_direction(el__spchain *w, double *ds)
 {
     const size_t n = w->n, m = w->m;
+    const int nb = w->ng + (w->lmode != 0);
+    const long SIG = -1 - w->ng;   /* sigma's column and border row */
     memset(w->dg, 0, n * sizeof *w->dg);
     memset(w->up, 0, n * sizeof *w->up);
     memset(w->lo, 0, n * sizeof *w->lo);
-    memset(w->col, 0, n * sizeof *w->col);
-    memset(w->row, 0, n * sizeof *w->row);
-    double d = 0.0, gr = -w->Gres;
-    for (size_t i = 0; i < n; i++) w->b[i] = -w->F[i];
-    for (size_t i = 0; i < n; i++)
-        if (w->slot[i] == EL__SLOT_FIXED) w->dg[i] = 1.0;
+    memset(w->bcol, 0, nb * n * sizeof *w->bcol);
+    memset(w->brow, 0, nb * n * sizeof *w->brow);
+    memset(w->bmat, 0, sizeof w->bmat);
+    for (size_t i = 0; i < n; i++) {
+        w->b[i] = 0.0;
+        *jac_rhs(w, (long)i) = -w->F[i];
+        if (w->slot[i] != EL__SLOT_ANGLE) w->dg[i] = 1.0;   /* x_i is not in T */
+    }
+    if (w->lmode) w->bg[w->ng] = -w->Gres;
     for (size_t j = 0; j < m; j++) {
         const el__spiece *pc = &w->pc[j];
         el__sptargets t;
         el__chain_targets(w, j, &t);
         const long rows[2] = {(long)j, (long)((j + 1) % n)};
         const double *cc[2] = {pc->c0, pc->c1};
-        for (int e = 0; e < 2; e++) {   /* kappa(0) enters row j with -l, kappa(L) row j+1 with +l */
-            const long r = rows[e];
-            if (w->slot[r] == EL__SLOT_FIXED) continue;
-            const double sg = (e ? 1.0 : -1.0) * w->ell[r];
-            const double *c = cc[e];
-            w->b[r] += sg * c[0];
-            if (t.ia >= 0) tri_add(w, r, t.ia, sg * c[1]);
-            if (t.ib >= 0) tri_add(w, r, t.ib, sg * c[2]);
-            if (t.is >= 0) tri_add(w, r, t.is, sg * c[3]);
-            else if (t.is == -2) w->col[r] += sg * c[3];
-        }
-        if (w->lmode == EL__BORDER_LENGTH) {
-            const double iL = 1.0 / w->Lt;
-            gr += pc->cL[0] * iL;
-            if (t.ia >= 0) w->row[t.ia] += pc->cL[1] * iL;
-            if (t.ib >= 0) w->row[t.ib] += pc->cL[2] * iL;
-            if (t.is >= 0) w->row[t.is] += pc->cL[3] * iL;
-            else if (t.is == -2) d += pc->cL[3] * iL;
+        for (int e = 0; e < 3; e++) {   /* kappa(0) enters row j with -l, kappa(L) row j+1 with +l */
+            long r;
+            double sg;
+            const double *c;
+            if (e < 2) {
+                r = rows[e];
+                if (w->slot[r] == EL__SLOT_FIXED) continue;
+                sg = (e ? 1.0 : -1.0) * w->ell[r];
+                c = cc[e];
+            } else {   /* the length, when it is the border equation */
+                if (w->lmode != EL__BORDER_LENGTH) continue;
+                r = SIG;
+                sg = 1.0 / w->Lt;
+                c = pc->cL;
+            }
+            *jac_rhs(w, r) += sg * c[0];
+            if (t.ia >= 0) jac_add(w, r, t.ia, sg * c[1]);
+            if (t.ib >= 0) jac_add(w, r, t.ib, sg * c[2]);
+            if (t.is == -2) jac_add(w, r, SIG, sg * c[3]);
+            if (t.ga >= 0) jac_add(w, r, t.ga, -sg * c[4]);
+            if (t.gb >= 0) jac_add(w, r, t.gb, sg * c[4]);
         }
     }
     if (w->lmode == EL__BORDER_ARC) {
-        memcpy(w->row, w->arc_a, n * sizeof *w->row);
-        d = w->arc_b;
+        for (size_t i = 0; i < n; i++) jac_add(w, SIG, (long)i, w->arc_a[i]);
+        jac_add(w, SIG, SIG, w->arc_b);
     }
     int st = tri_solve(w, w->b, w->y);
     if (st) return st;
     *ds = 0.0;
-    if (w->lmode) {
-        if ((st = tri_solve(w, w->col, w->z))) return st;
-        double ry = 0.0, rz = 0.0;
-        for (size_t i = 0; i < n; i++) { ry += w->row[i] * w->y[i]; rz += w->row[i] * w->z[i]; }
-        const double den = d - rz;
-        if (!(fabs(den) > 1e-300)) return EL_ESINGULAR;
-        *ds = (gr - ry) / den;
-        w->den = den;
-        for (size_t i = 0; i < n; i++) w->y[i] -= w->z[i] * *ds;
-        if (!isfinite(*ds) || el__all_finite(w->y, n)) return EL_ESINGULAR;
+    if (!nb) return EL_OK;
+    double S[EL__MAX_BORDER * EL__MAX_BORDER], dz[EL__MAX_BORDER];
+    for (int a = 0; a < nb; a++) {
+        if ((st = tri_solve(w, w->bcol + a * n, w->bz + a * n))) return st;
+        double ry = 0.0;
+        for (size_t i = 0; i < n; i++) ry += w->brow[a * n + i] * w->y[i];
+        dz[a] = w->bg[a] - ry;
     }
+    for (int a = 0; a < nb; a++)
+        for (int c = 0; c < nb; c++) {
+            double rz = 0.0;
+            for (size_t i = 0; i < n; i++) rz += w->brow[a * n + i] * w->bz[c * n + i];
+            S[a * EL__MAX_BORDER + c] = w->bmat[a * EL__MAX_BORDER + c] - rz;
+        }
+    if (w->lmode) {   /* sigma's Schur complement: d(border residual)/d sigma along the solutions */
+        const double dg = det_lead(S, w->ng);
+        w->den = dg != 0.0 ? det_lead(S, nb) / dg : 0.0;
+    }
+    double lu[EL__MAX_BORDER * EL__MAX_BORDER];
+    int perm[EL__MAX_BORDER];
+    for (int a = 0; a < nb; a++)
+        for (int c = 0; c < nb; c++) lu[a * nb + c] = S[a * EL__MAX_BORDER + c];
+    if (el__lu_factor(lu, nb, perm)) return EL_ESINGULAR;
+    el__lu_solve(lu, nb, perm, dz);
+    for (int a = 0; a < nb; a++)
+        for (size_t i = 0; i < n; i++) w->y[i] -= w->bz[a * n + i] * dz[a];
+    for (int g = 0; g < w->ng; g++) w->y[w->guide[g].slot] = dz[g];
+    if (w->lmode) *ds = dz[w->ng];
+    if (!isfinite(*ds) || el__all_finite(w->y, n)) return EL_ESINGULAR;
     return EL_OK;
 }
 
 /* The size of a Newton correction: the largest change of an angle (rad), of a
- * G2 span's tension and of sigma, these relative to 1 + their value. */
+ * guide's offset over its span's chord, and of sigma relative to 1 + sigma. */
 static double correction_size(const el__spchain *w, double ds)
 {
     double th = fabs(ds) / (1.0 + fabs(w->sigma));
     for (size_t i = 0; i < w->n; i++)
-        th = fmax(th, w->slot[i] == EL__SLOT_TENSION ? fabs(w->y[i]) / (1.0 + fabs(w->x[i]))
-                                                     : fabs(w->y[i]));
+        th = fmax(th, w->slot[i] == EL__SLOT_GUIDE ? fabs(w->y[i]) / w->guide[w->border[i]].h
+                                                   : fabs(w->y[i]));
     return th;
 }
 
@@ -257,9 +343,9 @@ int el__chain_newton(el__spchain *w, int cap, double aim, double accept)
         for (size_t i = 0; i < n; i++)
             if (w->slot[i] == EL__SLOT_ANGLE) dxm = fmax(dxm, fabs(w->y[i]));
         if (dxm > 0.5) al = 0.5 / dxm;
-        for (size_t i = 0; i < n; i++)
-            if (w->slot[i] == EL__SLOT_TENSION) {
-                const double r = fabs(w->x[i]) + 1.0;
+        for (size_t i = 0; i < n; i++)   /* a guide moves at most a quarter of its span's chord */
+            if (w->slot[i] == EL__SLOT_GUIDE) {
+                const double r = 0.25 * w->guide[w->border[i]].h;
                 if (fabs(w->y[i]) > r) al = fmin(al, r / fabs(w->y[i]));
             }
         /* piece steps dv = -D0 + D1 dta + D2 dtb + D3 ds, taken in the state */
@@ -269,10 +355,12 @@ int el__chain_newton(el__spchain *w, int cap, double aim, double accept)
             el__sptargets t;
             el__chain_targets(w, j, &t);
             const double dta = t.ia >= 0 ? w->y[t.ia] : 0.0, dtb = t.ib >= 0 ? w->y[t.ib] : 0.0;
-            const double dsj = t.is >= 0 ? w->y[t.is] : t.is == -2 ? ds : 0.0;
+            const double dsj = t.is == -2 ? ds : 0.0;
+            const double dg = (t.gb >= 0 ? w->y[t.gb] : 0.0) - (t.ga >= 0 ? w->y[t.ga] : 0.0);
             double dv[EL__NV];
             for (int i = 0; i < EL__NV; i++)
-                dv[i] = -pc->D[0][i] + pc->D[1][i] * dta + pc->D[2][i] * dtb + pc->D[3][i] * dsj;
+                dv[i] = -pc->D[0][i] + pc->D[1][i] * dta + pc->D[2][i] * dtb + pc->D[3][i] * dsj +
+                        (dg != 0.0 ? pc->D[4][i] * dg : 0.0);
             al = el__spiece_step_prepare(pc, dv, &w->ps[j], al);
         }
         const double sigma0 = w->sigma;
@@ -335,8 +423,6 @@ void el__chain_start_angles(el__spchain *w)
     const double tm = n > 2 ? w->x[n - 2] : w->kind[0] != EL_SPLINE_NATURAL ? w->th_end[0] : c[0];
     if (w->kind[0] == EL_SPLINE_NATURAL) w->x[0] = c[0] - 0.5 * (t1 - c[0]);
     if (w->kind[1] == EL_SPLINE_NATURAL) w->x[n - 1] = c[m - 1] - 0.5 * (tm - c[m - 1]);
-    if (w->slot[0] == EL__SLOT_TENSION) w->x[0] = w->sigma;
-    if (w->slot[n - 1] == EL__SLOT_TENSION) w->x[n - 1] = w->sigma;
 }
 
 /* The angles (rad) between the chord and the target tangents of a piece. */
@@ -381,8 +467,9 @@ int el__chain_start_pieces(el__spchain *w)
 void el__chain_free(el__spchain *w)
 {
     free(w->x); free(w->ell); free(w->slot); free(w->pc); free(w->F); free(w->dg); free(w->up);
-    free(w->lo); free(w->b); free(w->y); free(w->z); free(w->col); free(w->row); free(w->xs);
-    free(w->ps); free(w->snapbuf); free(w->arc_a); free(w->arc_x0);
+    free(w->lo); free(w->b); free(w->y); free(w->z); free(w->bcol); free(w->brow); free(w->bz);
+    free(w->xs); free(w->ps); free(w->snapbuf); free(w->arc_a); free(w->arc_x0);
+    free(w->guide_at); free(w->border);
 }
 
 /* The workspace of n knots and m pieces (zeroed first), with three snapshots
@@ -392,9 +479,15 @@ int el__chain_alloc(el__spchain *w, size_t n, size_t m)
     memset(w, 0, sizeof *w);
     if (n > SIZE_MAX / (8 * EL__NV * sizeof(double)) || m > n) return EL_ENOMEM;
     double **arr[] = {&w->x, &w->ell, &w->F, &w->dg, &w->up, &w->lo, &w->b, &w->y, &w->z,
-                      &w->col, &w->row, &w->xs, &w->arc_a, &w->arc_x0};
+                      &w->xs, &w->arc_a, &w->arc_x0};
     for (size_t i = 0; i < sizeof arr / sizeof arr[0]; i++)
         if (!(*arr[i] = calloc(n, sizeof(double)))) return EL_ENOMEM;
+    double **border[] = {&w->bcol, &w->brow, &w->bz};
+    for (size_t i = 0; i < 3; i++)
+        if (!(*border[i] = calloc(EL__MAX_BORDER * n, sizeof(double)))) return EL_ENOMEM;
+    if (!(w->guide_at = malloc(n * sizeof *w->guide_at)) || !(w->border = malloc(n * sizeof *w->border)))
+        return EL_ENOMEM;
+    for (size_t i = 0; i < n; i++) { w->guide_at[i] = -1; w->border[i] = -1; }
     const size_t ns = n + 2 * EL__NV * m;   /* doubles per snapshot */
     if (!(w->slot = calloc(n, sizeof *w->slot)) || !(w->pc = calloc(m, sizeof *w->pc)) ||
         !(w->ps = calloc(m, sizeof *w->ps)) || !(w->snapbuf = malloc(3 * ns * sizeof *w->snapbuf)))

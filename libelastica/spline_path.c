@@ -166,11 +166,18 @@ static int follow_length(el__spchain *w, int max_steps, double Lt)
     double gb = total_length(w) - Lt, gc;
     snap_save(w, B);
     if (fabs(gb) > 1e-9 * Lt) {
-        /* a second point: sigma moved towards the length */
+        /* a second point: sigma moved towards the length (a batten is shorter
+         * under more tension, but one whose guide ducks end on its end
+         * tangents is longer: the other way when the length moved away) */
         const double s1 = w->sigma + (gb < 0.0 ? -0.05 : 0.05) * rho;
         if (move_sigma(w, sv, &steps, s1)) return EL_ENOCONV;
-        snap_save(w, C);
         gc = total_length(w) - Lt;
+        if (fabs(gc) > fabs(gb)) {
+            snap_load(w, B);
+            if (move_sigma(w, sv, &steps, 2.0 * B->sigma - s1)) return EL_ENOCONV;
+            gc = total_length(w) - Lt;
+        }
+        snap_save(w, C);
         double N = arc_dist(w, B, C, rho), h = 2.0 * N;
         while (gc * gb > 0.0 || !(N > 0.0)) {
             if (steps-- <= 0 || !(N > 0.0) || !(h > 1e-9)) return EL_ENOCONV;
@@ -276,31 +283,70 @@ static int length_newton(el__spchain *w, double Lt)
  */
 int el__spline_solve_length(el__spchain *w, int max_steps, double Lt)
 {
-    el__spsnap *free_batten = &w->snap[2];
-    w->lmode = 0;
-    w->sigma = 0.0;
-    int st;
     if (w->newton_first) {
-        el__chain_start_angles(w);
-        st = el__chain_start_pieces(w);
-        if (st == EL_ENOMEM) return st;
-        if (!st && length_newton(w, Lt) == EL_OK) return EL_OK;
         w->lmode = 0;
         w->sigma = 0.0;
+        el__chain_start_angles(w);
+        const int st = el__chain_start_pieces(w);
+        if (st == EL_ENOMEM) return st;
+        if (!st && length_newton(w, Lt) == EL_OK) return EL_OK;
     }
-    st = el__spline_solve_tension(w, max_steps, 0);
+    const int st = el__spline_free_batten(w, max_steps);
+    return st ? st : el__spline_length_from(w, max_steps, Lt);
+}
+
+/* The free batten: the tension solution at sigma = 0, or as near it as the
+ * continuation from a high tension gets (to EL__SP_NEAR). */
+int el__spline_free_batten(el__spchain *w, int max_steps)
+{
+    w->lmode = 0;
+    w->sigma = 0.0;
+    int st = el__spline_solve_tension(w, max_steps, 0);
     if (st == EL_ENOCONV && isfinite(el__chain_eval(w, 1)) && w->resid <= EL__SP_NEAR) st = EL_OK;
-    if (st) return st;
+    return st;
+}
+
+/* Steps 2 (its Newton) and 3 from the tension solution in w. */
+int el__spline_length_from(el__spchain *w, int max_steps, double Lt)
+{
     if (w->newton_first) {
+        el__spsnap *free_batten = &w->snap[2];
         snap_save(w, free_batten);
         if (length_newton(w, Lt) == EL_OK) return EL_OK;
         w->lmode = 0;
         snap_load(w, free_batten);
         el__chain_eval(w, 1);   /* the pieces' states, which follow_length's snapshots keep */
     }
-    st = follow_length(w, max_steps, Lt);
+    const int st = follow_length(w, max_steps, Lt);
     if (st == EL_ENOCONV && w->lmode && w->resid <= EL__SP_NEAR) w->near = 1;
     return st;
+}
+/* ------------------------------------------------------------------ G2 ends */
+
+/* The end curvatures kg from par[0..1] (t = 0) to par[2..3], linearly. */
+static void set_end_curvature(el__spchain *w, double t, const double *par)
+{
+    for (int e = 0; e < 2; e++) w->kg[e] = t >= 1.0 ? par[2 + e] : par[e] + t * (par[2 + e] - par[e]);
+}
+
+/*
+ * G2 ends: from the guided G1 sibling in w (el__guides_setup: a solution for
+ * its own end curvatures w->kg) to the end curvatures kg, by continuation in
+ * them (the whole step first), at the tension or length of w. A straight
+ * sibling's pieces (k = 0, where q is undefined and J singular) start from the
+ * linearised batten first. Already there (kg equal to the sibling's): EL_OK.
+ */
+int el__spline_bend_ends(el__spchain *w, int max_steps, const double kg[2])
+{
+    if (w->kg[0] == kg[0] && w->kg[1] == kg[1]) return EL_OK;
+    for (size_t j = 0; j < w->m; j++) {
+        if (w->pc[j].v[EL__SP_K] != 0.0) continue;
+        el__sptargets t;
+        el__chain_targets(w, j, &t);
+        if (el__spiece_start(&w->pc[j], &t)) return EL_ENOCONV;
+    }
+    const double par[4] = {w->kg[0], w->kg[1], kg[0], kg[1]};
+    return continuation(w, w->snap, max_steps, 1.0, set_end_curvature, par, w->aim, w->tol);
 }
 
 /* ------------------------------------------------------------------ buckling */
@@ -450,8 +496,6 @@ int el__spline_solve_buckled(el__spchain *w, int max_steps, double dir, double L
             w->x[i] = dir + Th * (fabs(z) >= 1e-6 * zmax ? z : floor);
         }
         w->sigma = -2.0 * lambda;
-        if (w->slot[0] == EL__SLOT_TENSION) w->x[0] = w->sigma;
-        if (w->slot[n - 1] == EL__SLOT_TENSION) w->x[n - 1] = w->sigma;
         /* each piece the linearised batten of its span (el__spiece_start), not
          * corrected alone: near a span's clamped load its bow at fixed sigma
          * is ill-posed, the length of the whole chain fixes it */

@@ -38,12 +38,12 @@ enum { PIECE_ITER = 40 };
 
 /*
  * LU with partial pivoting of the n x n row-major a (n <= EL__NV), in place, and
- * its solve. Written out because GSL's LU sends every triangular solve through
+ * its solve (internal.h). Written out because GSL's LU sends every triangular solve through
  * BLAS (dtrsv with OpenBLAS's locking), about ten times the arithmetic of a
  * 5 x 5 system, and the spline factors one per piece per Newton iteration.
  * EL_ESINGULAR on a zero (or non-finite) pivot.
  */
-static int lu_factor(double *a, int n, int *perm)
+int el__lu_factor(double *a, int n, int *perm)
 {
     for (int c = 0; c < n; c++) {
         int p = c;
@@ -62,7 +62,7 @@ static int lu_factor(double *a, int n, int *perm)
     return EL_OK;
 }
 
-static void lu_solve(const double *a, int n, const int *perm, double *b)
+void el__lu_solve(const double *a, int n, const int *perm, double *b)
 {
     for (int c = 0; c < n; c++) {   /* the row exchanges, in order */
         const double t = b[perm[c]]; b[perm[c]] = b[c]; b[c] = t;
@@ -191,12 +191,14 @@ static int piece_eval_raw(el__spiece *pc, const el__sptargets *t, int jac, doubl
         memcpy(raw + EL__NV * EL__NV + EL__NV, g1, sizeof g1);
     }
     int perm[EL__NV];
-    if (lu_factor(J, EL__NV, perm)) return EL_ESINGULAR;
-    for (int r = 0; r < 4; r++) {
+    if (el__lu_factor(J, EL__NV, perm)) return EL_ESINGULAR;
+    const int guided = pc->gn[0] != 0.0 || pc->gn[1] != 0.0;
+    for (int r = 0; r < 4 + guided; r++) {
         double rhs[EL__NV] = {0};
         if (r == 0) memcpy(rhs, pc->R, sizeof rhs);
+        else if (r == 4) { rhs[0] = pc->gn[0] / h; rhs[1] = pc->gn[1] / h; }
         else rhs[r + 1] = r == 3 ? h2 : 1.0;
-        lu_solve(J, EL__NV, perm, rhs);
+        el__lu_solve(J, EL__NV, perm, rhs);
         memcpy(pc->D[r], rhs, sizeof rhs);
         double s0 = 0.0, s1 = 0.0;
         for (int i = 0; i < EL__NV; i++) { s0 += g0[i] * rhs[i]; s1 += g1[i] * rhs[i]; }
@@ -395,7 +397,7 @@ static void start_basis(int kind, double om, double h, double s, double b1[4], d
  * large for small end slopes, as the batten's. */
 int el__spiece_start(el__spiece *pc, const el__sptargets *t)
 {
-    const double h = pc->h, c0 = atan2(pc->dy, pc->dx);
+    const double h = hypot(pc->dx, pc->dy), c0 = atan2(pc->dy, pc->dx);
     const double c = c0 + 2.0 * M_PI * nearbyint((0.5 * (t->ta + t->tb) - c0) / (2.0 * M_PI));
     const double al = t->ta - c, be = t->tb - c;
     const double sa = tan(fmax(fmin(al, 1.3), -1.3)), sb = tan(fmax(fmin(be, 1.3), -1.3));
@@ -411,8 +413,8 @@ int el__spiece_start(el__spiece *pc, const el__sptargets *t)
         M[(2 + e) * 4 + 0] = 0.0; M[(2 + e) * 4 + 1] = 1.0; M[(2 + e) * 4 + 2] = b1[1]; M[(2 + e) * 4 + 3] = b2[1];
     }
     int perm[4];
-    if (lu_factor(M, 4, perm)) return EL_ESINGULAR;
-    lu_solve(M, 4, perm, rhs);
+    if (el__lu_factor(M, 4, perm)) return EL_ESINGULAR;
+    el__lu_solve(M, 4, perm, rhs);
     /* state at the midpoint */
     const double sm = 0.5 * h;
     double wd[4], b1[4], b2[4];
@@ -475,17 +477,19 @@ int el__spline_piece_jacobians(const el_smooth_params *p, double *J, double *g0,
     pc.dy = xy[3] - xy[1];
     pc.h = hypot(pc.dx, pc.dy);
     if (!(pc.h > 0.0)) return EL_EDOM;
-    const el__sptargets t = {th[0], th[1], 2.0 * p->mu * (2.0 * p->k * p->k - 1.0), -1, -1, -1};
+    pc.gn[0] = -pc.dy / pc.h;   /* the end moved along the chord's normal, as by a guide duck */
+    pc.gn[1] = pc.dx / pc.h;
+    const el__sptargets t = {th[0], th[1], 2.0 * p->mu * (2.0 * p->k * p->k - 1.0), -1, -1, -1, -1, -1};
     double raw[EL__NV * EL__NV + 2 * EL__NV];
     if ((st = piece_eval_raw(&pc, &t, 1, raw))) return st;
     memcpy(J, raw, EL__NV * EL__NV * sizeof *J);
     memcpy(g0, raw + EL__NV * EL__NV, EL__NV * sizeof *g0);
     memcpy(g1, raw + EL__NV * EL__NV + EL__NV, EL__NV * sizeof *g1);
     memcpy(M, pc.M, sizeof pc.M);
-    for (int r = 0; r < 3; r++) {
+    for (int r = 0; r < 4; r++) {
         d[r] = pc.c0[r + 1];
-        d[3 + r] = pc.c1[r + 1];
-        d[6 + r] = pc.cL[r + 1];
+        d[4 + r] = pc.c1[r + 1];
+        d[8 + r] = pc.cL[r + 1];
     }
     return EL_OK;
 }

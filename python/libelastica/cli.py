@@ -710,7 +710,8 @@ def cmd_spline(args) -> int:
     rec = {"file": args.file, "points": sp.data.tolist(), "closed": sp.closed, **kw,
            "tension": sp.tension, "length": sp.length, "energy": sp.energy,
            "max_curvature": sp.max_curvature, "residual": sp.residual,
-           "pieces": [curve_to_dict(c) for c in sp.pieces], "tensions": sp.tensions.tolist(),
+           "pieces": [curve_to_dict(c) for c in sp.pieces], "guides": sp.guides.tolist(),
+           "guide_forces": sp.guide_forces.tolist(), "guide_pieces": sp.guide_pieces,
            "forces": sp.forces.tolist(), "angles": sp.angles.tolist(),
            "curvatures": sp.curvatures.tolist(),
            "bspline": bspline_to_dict(b) if b is not None else None}

@@ -18,15 +18,22 @@ __all__ = ["ElasticSpline", "elastic_spline"]
 
 
 class ElasticSpline:
-    """An elastic spline: ``pieces`` (SmoothElastica, piece i from point i to
-    point i+1; closed: the last from the last point back to the first),
+    """An elastic spline: ``pieces`` (SmoothElastica from knot to knot, see below;
+    closed: the last from the last point back to the first),
     ``tension`` (sigma, 1/length^2), ``length``, ``energy`` (integral of kappa^2 ds),
     ``forces`` ((npieces, 2): each piece's constant force F = (sigma - kappa^2) T
     - 2 kappa' N in units of EI/2, the batten after a section pulling on the
-    batten before it; the duck at an inner point i holds forces[i-1] - forces[i]),
-    ``tensions`` (each piece's own; differs from ``tension`` only on the span next
-    to a G2 end), ``angles`` and ``curvatures`` at the points, ``max_curvature``,
-    ``residual`` (largest end-condition error reached) and ``closed``.
+    batten before it; the duck at an inner knot i holds forces[i-1] - forces[i]),
+    ``angles`` and ``curvatures`` at the points, ``max_curvature``, ``residual``
+    (largest end-condition error reached) and ``closed``.
+
+    The pieces run from knot to knot: the points and, next to each G2 end, its
+    guide duck (the ducks that make a G2 end possible at the common tension,
+    see :func:`elastic_spline`): ``guides`` ((g, 2) positions, the start's
+    first), ``guide_forces`` ((g, 2): the force each exerts on the batten,
+    normal to it, units of EI/2 as ``forces``) and ``guide_pieces`` (the index
+    of the piece each starts). Without G2 ends piece i runs from point i to
+    point i+1.
     """
 
     def __init__(self, res, points: np.ndarray, closed: bool):
@@ -42,7 +49,10 @@ class ElasticSpline:
         self.max_curvature = float(res.max_curvature)
         self.residual = float(res.residual)
         self.iterations = int(res.iterations)
-        self.tensions = np.frombuffer(ffi.buffer(res.sigmas, 8 * m), dtype=np.float64).copy()
+        g = int(res.nguides)
+        self.guides = np.array(list(res.guides)[:2 * g], dtype=np.float64).reshape(g, 2)
+        self.guide_forces = np.array(list(res.guide_forces)[:2 * g], dtype=np.float64).reshape(g, 2)
+        self.guide_pieces = [int(res.guide_pieces[i]) for i in range(g)]
         self.forces = np.frombuffer(ffi.buffer(res.forces, 16 * m),
                                     dtype=np.float64).reshape(m, 2).copy()
         self.angles = np.frombuffer(ffi.buffer(res.angles, 8 * n), dtype=np.float64).copy()
@@ -150,7 +160,7 @@ def _end(spec, name: str, opt_end) -> None:
 
 def elastic_spline(points, tension: Optional[float] = None, length: Optional[float] = None,
                    start=None, end=None, closed: bool = False, *, tol: float = 1e-10,
-                   max_iter: int = 60, max_steps: int = 60) -> ElasticSpline:
+                   max_iter: int = 60, max_steps: int = 60, initial=None) -> ElasticSpline:
     """The elastic spline (a batten) through ``points`` ((n, 2), n >= 2; closed:
     n >= 3, a repeated first point is dropped).
 
@@ -159,7 +169,15 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
     the polygon; sigma is then computed and may be negative: pushed together).
     ``start`` / ``end`` (open curves): None = natural (curvature 0), a tangent
     (tx, ty) = clamped, or {"tangent": (tx, ty), "curvature": k} = G2 to other
-    geometry (the span next to it then takes its own tension, ``tensions``).
+    geometry: a G2 end asks one condition more than a batten of given tension
+    can meet, so its end span holds a guide duck, at half its chord (a third and
+    two thirds when both ends of two points are G2), free to move along the
+    chord's normal (``guides``, ``guide_forces``); the tension stays common.
+
+    ``initial`` (open curves): the spline to start from instead of the library's own
+    start, n - 1 SmoothElastica through the points with these ends (G2 ends only
+    tangent), e.g. the ``el.hermite`` solution a G2 blend between two edges should
+    follow: the solve keeps that branch (Newton from it, no other start tried).
 
     Raises ``ValueError`` for bad input (coincident consecutive points, NaN, ...),
     :class:`DomainError` when no such spline exists (a length not longer than
@@ -206,12 +224,17 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
     if not closed:
         _end(start, "start", opt.start)
         _end(end, "end", opt.end)
-        g2 = (opt.start.kind == lib.EL_SPLINE_G2) + (opt.end.kind == lib.EL_SPLINE_G2)
-        if g2 > n - 1 or (length is not None and g2 >= n - 1):
-            raise DomainError(lib.EL_EDOM, "elastic_spline: a G2 end needs a span of its own "
-                              "(and in length mode one more span keeps the common tension): "
-                              f"too few points ({n})")
     opt.tol, opt.max_iter, opt.max_steps = float(tol), int(max_iter), int(max_steps)
+    if initial is not None:
+        pieces = list(initial)
+        if closed or len(pieces) != n - 1 or not all(isinstance(p, SmoothElastica) for p in pieces):
+            raise ValueError(f"elastic_spline: initial must be {n - 1} SmoothElastica pieces of an "
+                             "open spline through the points")
+        arr = ffi.new("el_smooth_params[]", len(pieces))   # alive until the solve returns
+        for i, p in enumerate(pieces):
+            for k in SMOOTH_PARAMS:
+                setattr(arr[i], k, float(getattr(p, k)))
+        opt.initial, opt.ninitial = arr, len(pieces)
     res = ffi.new("el_spline_result *")
     st = lib.el_spline_solve(dptr(pts), n, opt, res)
     try:

@@ -5,6 +5,7 @@
 #define SPLINE_CHECK_H
 #include "testutil.h"
 #include "internal.h"
+#include <stdlib.h>
 #include <string.h>
 
 static inline double wrap(double a) { return a - 2.0 * M_PI * nearbyint(a / (2.0 * M_PI)); }
@@ -22,19 +23,46 @@ static inline void state_at(const el_smooth_params *p, double s, double xy[2], d
     }
 }
 
+/* The knots of a result: the points, with its guide ducks inserted (a guide
+ * starts piece guide_pieces[g]); kxy: 2 knots, pt: the point of each knot or -1. */
+static inline size_t result_knots(const double *xy, const el_spline_options *o,
+                                  const el_spline_result *r, double *kxy, long *pt)
+{
+    const size_t nk = o->closed ? r->npieces : r->npieces + 1;
+    size_t p = 0;
+    for (size_t i = 0; i < nk; i++) {
+        long g = -1;
+        for (size_t k = 0; k < r->nguides; k++) if (r->guide_pieces[k] == i) g = (long)k;
+        kxy[2 * i] = g >= 0 ? r->guides[2 * g] : xy[2 * p];
+        kxy[2 * i + 1] = g >= 0 ? r->guides[2 * g + 1] : xy[2 * p + 1];
+        pt[i] = g >= 0 ? -1 : (long)p++;
+    }
+    ck_assert_uint_eq(p, r->npoints);
+    return nk;
+}
+
 /*
  * The properties issue 14 lists, measured with el_smooth_eval at the piece
- * ends: through the points (tol times the extent), tangent continuity (tol rad),
+ * ends: through the knots (tol times the extent), tangent continuity (tol rad),
  * curvature jump <= 1e-7 max |kappa|, each piece's tension 2 mu (2k^2 - 1) equal
- * to res->sigmas (and to res->sigma away from G2 spans, k = 0 straight pieces
- * exempt: kappa = 0 solves every tension), the end conditions, energy and length
- * as sums over the pieces, the force constant along each piece.
+ * to res->sigma (k = 0 straight pieces exempt: kappa = 0 solves every tension),
+ * every duck's load normal to the batten (frictionless, the guide ducks too),
+ * the end conditions, energy and length as sums over the pieces, the force
+ * constant along each piece; one guide duck per G2 end, a quarter of its end
+ * span's chord from the end, its force that of the pieces it joins.
  */
 static inline void check_spline(const double *xy, size_t n, const el_spline_options *o,
                                 const el_spline_result *r, double tol)
 {
     const size_t m = r->npieces;
-    ck_assert_uint_eq(m, o->closed ? r->npoints : r->npoints - 1);
+    const size_t g2 = o->closed ? 0 : (size_t)(o->start.kind == EL_SPLINE_G2) + (o->end.kind == EL_SPLINE_G2);
+    ck_assert_uint_eq(r->nguides, g2);
+    ck_assert_uint_eq(m, o->closed ? r->npoints : r->npoints - 1 + g2);
+    double *kxy = malloc(2 * (m + 1) * sizeof *kxy);
+    long *pt = malloc((m + 1) * sizeof *pt);
+    ck_assert_ptr_nonnull(kxy);
+    ck_assert_ptr_nonnull(pt);
+    const size_t nk = result_knots(xy, o, r, kxy, pt);
     double ext = 0.0;
     for (size_t i = 0; i < r->npoints; i++) ext = fmax(ext, fmax(fabs(xy[2 * i]), fabs(xy[2 * i + 1])));
     for (size_t j = 0; j + 1 < n; j++) ext = fmax(ext, hypot(xy[2 * j + 2] - xy[2 * j], xy[2 * j + 3] - xy[2 * j + 1]));
@@ -42,28 +70,27 @@ static inline void check_spline(const double *xy, size_t n, const el_spline_opti
     double E = 0.0, L = 0.0, kseen = 0.0;
     for (size_t j = 0; j < m; j++) {
         const el_smooth_params *p = &r->pieces[j];
-        const size_t e = (j + 1) % r->npoints;
+        const size_t e = (j + 1) % nk;
         ck_assert_int_eq(el_smooth_check(p), EL_OK);
-        ck_assert_msg(p->x0 == xy[2 * j] && p->y0 == xy[2 * j + 1], "piece %zu does not start at its point", j);
+        ck_assert_msg(p->x0 == kxy[2 * j] && p->y0 == kxy[2 * j + 1], "piece %zu does not start at its knot", j);
         double a[2], b[2], tha, thb, ka, kb, dka, dkb;
         state_at(p, 0.0, a, &tha, &ka, &dka);
         state_at(p, p->length, b, &thb, &kb, &dkb);
-        ck_assert_msg(hypot(b[0] - xy[2 * e], b[1] - xy[2 * e + 1]) <= tol * ext,
-                      "piece %zu misses point %zu by %g", j, e, hypot(b[0] - xy[2 * e], b[1] - xy[2 * e + 1]));
-        ck_assert_close(tha, r->angles[j], 1e-12 * (1.0 + fabs(tha)));
-        ck_assert_close(ka, r->curvatures[j], 1e-9 * (1.0 + kmax));
+        ck_assert_msg(hypot(b[0] - kxy[2 * e], b[1] - kxy[2 * e + 1]) <= tol * ext,
+                      "piece %zu misses knot %zu by %g", j, e, hypot(b[0] - kxy[2 * e], b[1] - kxy[2 * e + 1]));
+        if (pt[j] >= 0) {
+            ck_assert_close(tha, r->angles[pt[j]], 1e-12 * (1.0 + fabs(tha)));
+            ck_assert_close(ka, r->curvatures[pt[j]], 1e-9 * (1.0 + kmax));
+        }
         kseen = fmax(kseen, fmax(fabs(ka), fabs(kb)));
         /* one tension: sigma = 2 mu (2k^2 - 1) (seed 004 / smooth section) */
         if (p->k != 0.0) {
             const double sg = 2.0 * p->mu * (2.0 * p->k * p->k - 1.0);
-            ck_assert_msg(fabs(sg - r->sigmas[j]) <= 1e-8 * (fabs(r->sigmas[j]) + 4.0 * p->mu),
-                          "piece %zu tension %.17g, spline %.17g", j, sg, r->sigmas[j]);
+            ck_assert_msg(fabs(sg - r->sigma) <= 1e-8 * (fabs(r->sigma) + 4.0 * p->mu),
+                          "piece %zu tension %.17g, spline %.17g", j, sg, r->sigma);
         }
-        const int g2span = !o->closed && ((j == 0 && o->start.kind == EL_SPLINE_G2) ||
-                                          (j == m - 1 && o->end.kind == EL_SPLINE_G2));
-        if (!g2span) ck_assert_close(r->sigmas[j], r->sigma, 1e-12 * (1.0 + fabs(r->sigma)));
         /* the force F = (sigma - kappa^2) T - 2 kappa' N, constant along the piece */
-        const double s = r->sigmas[j], Fs = 1.0 + fabs(s) + kmax * kmax;
+        const double s = r->sigma, Fs = 1.0 + fabs(s) + kmax * kmax;
         const double Fb[2] = {(s - kb * kb) * cos(thb) + 2.0 * dkb * sin(thb),
                               (s - kb * kb) * sin(thb) - 2.0 * dkb * cos(thb)};
         const double Fa[2] = {(s - ka * ka) * cos(tha) + 2.0 * dka * sin(tha),
@@ -72,22 +99,26 @@ static inline void check_spline(const double *xy, size_t n, const el_spline_opti
                       "piece %zu force at 0 %g %g vs %g %g", j, Fa[0], Fa[1], r->forces[2 * j], r->forces[2 * j + 1]);
         ck_assert_msg(hypot(Fb[0] - r->forces[2 * j], Fb[1] - r->forces[2 * j + 1]) <= 1e-6 * Fs,
                       "piece %zu force not constant: %g %g vs %g %g", j, Fb[0], Fb[1], r->forces[2 * j], r->forces[2 * j + 1]);
-        /* G1 and G2 at the next point */
+        /* G1 and G2 at the next knot */
         if (o->closed || j + 1 < m) {
             const el_smooth_params *q = &r->pieces[e % m];
             double c[2], thc, kc;
             state_at(q, 0.0, c, &thc, &kc, NULL);
-            ck_assert_msg(fabs(wrap(thb - thc)) <= tol, "tangent jump %g at point %zu", wrap(thb - thc), e);
-            ck_assert_msg(fabs(kb - kc) <= 1e-7 * kmax + 1e-300, "curvature jump %g at point %zu (max %g)",
+            ck_assert_msg(fabs(wrap(thb - thc)) <= tol, "tangent jump %g at knot %zu", wrap(thb - thc), e);
+            ck_assert_msg(fabs(kb - kc) <= 1e-7 * kmax + 1e-300, "curvature jump %g at knot %zu (max %g)",
                           fabs(kb - kc), e, kmax);
             /* a frictionless duck: its load F_j - F_{j+1} is normal to the batten
              * (the tension is common) */
-            if (!g2span && !(e == m - 1 && !o->closed && o->end.kind == EL_SPLINE_G2) &&
-                !(o->closed ? 0 : (e == 1 && o->start.kind == EL_SPLINE_G2))) {
-                const double D[2] = {r->forces[2 * j] - r->forces[2 * (e % m)],
-                                     r->forces[2 * j + 1] - r->forces[2 * (e % m) + 1]};
-                ck_assert_msg(fabs(D[0] * cos(thc) + D[1] * sin(thc)) <= 1e-6 * Fs,
-                              "duck %zu pushes along the batten: %g", e, D[0] * cos(thc) + D[1] * sin(thc));
+            const double D[2] = {r->forces[2 * j] - r->forces[2 * (e % m)],
+                                 r->forces[2 * j + 1] - r->forces[2 * (e % m) + 1]};
+            ck_assert_msg(fabs(D[0] * cos(thc) + D[1] * sin(thc)) <= 1e-6 * Fs,
+                          "duck %zu pushes along the batten: %g", e, D[0] * cos(thc) + D[1] * sin(thc));
+            if (pt[e] < 0) {   /* a guide duck: its reported force */
+                size_t g = 0;
+                while (r->guide_pieces[g] != e) g++;
+                ck_assert_msg(hypot(r->guide_forces[2 * g] - D[0], r->guide_forces[2 * g + 1] - D[1]) <= 1e-12 * Fs,
+                              "guide %zu force %g %g, pieces say %g %g", g, r->guide_forces[2 * g],
+                              r->guide_forces[2 * g + 1], D[0], D[1]);
             }
         } else {
             ck_assert_close(thb, r->angles[r->npoints - 1], 1e-12 * (1.0 + fabs(thb)));
@@ -98,6 +129,8 @@ static inline void check_spline(const double *xy, size_t n, const el_spline_opti
         E += En;
         L += p->length;
     }
+    free(kxy);
+    free(pt);
     ck_assert_close(r->energy, E, 1e-12 * (1.0 + E));
     ck_assert_close(r->length, L, 1e-12 * L);
     ck_assert_msg(kseen <= kmax * (1.0 + 1e-12), "curvature %g above max_curvature %g", kseen, kmax);
@@ -106,17 +139,23 @@ static inline void check_spline(const double *xy, size_t n, const el_spline_opti
     if (!o->closed) {
         const el_spline_end *ends[2] = {&o->start, &o->end};
         const size_t at[2] = {0, r->npoints - 1};
-        for (int i = 0; i < 2; i++) {
+        for (int i = 0, g = 0; i < 2; i++) {
             const double k = r->curvatures[at[i]];
             if (ends[i]->kind == EL_SPLINE_NATURAL)
                 ck_assert_msg(fabs(k) <= 1e-9 * (1.0 + kmax), "natural end %d has kappa %g", i, k);
             if (ends[i]->kind != EL_SPLINE_NATURAL) {
                 const double ta = atan2(ends[i]->tangent[1], ends[i]->tangent[0]);
-                ck_assert_msg(fabs(wrap(r->angles[at[i]] - ta)) <= tol, "end %d tangent off by %g", i,
+                ck_assert_msg(fabs(wrap(r->angles[at[i]] - ta)) <= 1e-9, "end %d tangent off by %g", i,
                               wrap(r->angles[at[i]] - ta));
             }
-            if (ends[i]->kind == EL_SPLINE_G2)
-                ck_assert_close(k, ends[i]->curvature, 1e-9 * (1.0 + kmax));
+            if (ends[i]->kind != EL_SPLINE_G2) continue;
+            ck_assert_msg(fabs(k - ends[i]->curvature) <= 1e-7 * fmax(fabs(ends[i]->curvature), kmax) + 1e-300,
+                          "G2 end %d curvature %.17g, asked %.17g", i, k, ends[i]->curvature);
+            /* its guide: a quarter of the end span's chord from the end, on the chord's normal */
+            const double *a = xy + 2 * (i ? r->npoints - 2 : 0), *gp = r->guides + 2 * g++;
+            const double h = hypot(a[2] - a[0], a[3] - a[1]);
+            const double along = ((gp[0] - a[0]) * (a[2] - a[0]) + (gp[1] - a[1]) * (a[3] - a[1])) / (h * h);
+            ck_assert_msg(fabs(along - (i ? 0.75 : 0.25)) <= 1e-9, "guide %d at %.12g of its chord", g - 1, along);
         }
     }
 }

@@ -7,7 +7,6 @@ import unittest
 
 import FreeCAD as App
 import Part
-import numpy as np
 
 import elastica_samples as S
 from freecad.elastica import commands as C
@@ -361,12 +360,13 @@ class BlendG2Test(unittest.TestCase):
     def check_g2(self, b, sk):
         """The blend's ends: on the edges' ends, with their tangent and curvature
         vector (measured on the shape with Part's curve API; 1e-6 relative); G2 at
-        its inner points (the ducks) too."""
+        its inner points (the two guide ducks) too, each a quarter of the way in
+        from its edge along the line between the ends, pushing normal to the batten."""
         self.assertFalse(b.Status.startswith("error"), b.Status)
+        self.assertTrue(b.Status.startswith("G2 from solution "), b.Status)
         pieces = b.Proxy.plane_curves(b)[0]
-        self.assertIn(len(pieces) - 1, Bl.G2_DUCKS)
-        self.assertEqual(len(b.SpanTensions), len(pieces))
-        self.assertIn(f"through {len(pieces) - 1} of its points", b.Status)
+        self.assertEqual((len(pieces), len(b.GuideDucks), len(b.GuideForces)), (3, 2, 2))
+        self.assertAlmostEqual(b.BlendLength, sum(p.length for p in pieces), delta=1e-9)
         c = b.Shape.Edges[0].Curve
         ends = []      # (point, direction of travel of the blend there, curvature vector)
         for link, at_end, sign in ((b.Edge1, b.AtEnd1, 1), (b.Edge2, b.AtEnd2, -1)):
@@ -386,6 +386,12 @@ class BlendG2Test(unittest.TestCase):
             self.assertLess((p - q).Length, 1e-9)
             self.assertGreater(t.dot(s), 1.0 - 1e-12)
             self.assertLess((k - m).Length, 1e-6 * kmax, (k, m))
+        chord = ends[1][0] - ends[0][0]
+        for g, f, at in zip(b.GuideDucks, b.GuideForces, (0.25, 0.75)):
+            self.assertAlmostEqual((g - ends[0][0]).dot(chord) / chord.dot(chord), at, delta=1e-9)
+            u = c.parameter(g)
+            self.assertLess((c.value(u) - g).Length, b.Tolerance)
+            self.assertLess(abs(f.dot(App.Vector(c.tangent(u)[0]).normalize())), 1e-6 * f.Length)
         knots = c.getKnots()
         joins = [sum(p.length for p in pieces[:j]) for j in range(1, len(pieces))]
         for u in (knots[0] + s for s in joins):          # the ducks: knots (arc length)
@@ -403,9 +409,11 @@ class BlendG2Test(unittest.TestCase):
             b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Continuity="G2")
             self.doc.recompute()
             self.check_g2(b, sk)
-            self.assertIn("G2 along it", b.Status)
+            self.assertEqual(b.BlendTension, 0.0)          # the free batten, one tension
 
-    def test_g2_blend_passes_points_of_the_g1_solution(self):
+    def test_g2_blend_is_the_librarys_g2_batten_and_g1_comes_back(self):
+        """The shape is el.elastic_spline between the edge ends with their tangents and
+        curvatures (its B-spline); back to G1, the chosen solution and no guides."""
         sk = two_arcs_sketch(self.doc)
         b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"))
         self.doc.recompute()
@@ -413,16 +421,36 @@ class BlendG2Test(unittest.TestCase):
         b.Continuity = "G2"
         self.doc.recompute()
         self.check_g2(b, sk)
-        m = len(b.SpanTensions) - 1
-        for x, y in g1.points(g1.length * np.arange(1, m + 1) / (m + 1)):
-            p = b.Plane.multVec(App.Vector(x, y, 0))
-            self.assertLess(b.Shape.distToShape(Part.Vertex(p))[0], 1e-9 + b.Tolerance)
-        self.assertEqual(list(b.SpanTensions[1:-1]), [0.0] * (m - 1))   # the free batten's
-        self.assertLess(abs(b.Shape.Length - g1.length), 0.01 * g1.length)   # close to G1
+        import libelastica as el
+        ref = el.elastic_spline([(0, 0), (60, 15)], start={"tangent": (1, 0), "curvature": 1 / 30},
+                                end={"tangent": (math.cos(0.3), math.sin(0.3)), "curvature": 1 / 40})
+        self.assertAlmostEqual(b.BlendLength, ref.length, delta=1e-9 * ref.length)
+        self.assertAlmostEqual(b.Shape.Length, ref.length, delta=b.Tolerance)
+        self.assertLess(abs(b.Shape.Length - g1.length), 0.05 * g1.length)   # near the G1 one
         b.Continuity = "G1"
         self.doc.recompute()
-        self.assertEqual(list(b.SpanTensions), [])
+        self.assertEqual((list(b.GuideDucks), b.Status), ([], "solution 1 of %d" % len(b.Lengths)))
         self.assertAlmostEqual(b.Shape.Length, g1.length, delta=1e-3)
+
+    def test_g2_blend_by_length(self):
+        """Length mode: the G2 batten of that length (a pushed one, longer than free);
+        0 = the free G2 batten; a length the G2 batten cannot reach says which can."""
+        sk = two_arcs_sketch(self.doc)
+        b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Continuity="G2", Mode="length")
+        self.doc.recompute()
+        self.check_g2(b, sk)
+        free = b.BlendLength
+        self.assertEqual(b.BlendTension, 0.0)
+        b.Length = 1.05 * free
+        self.doc.recompute()
+        self.check_g2(b, sk)
+        self.assertAlmostEqual(b.BlendLength, 1.05 * free, delta=1e-9 * free)
+        self.assertAlmostEqual(b.Shape.Length, 1.05 * free, delta=b.Tolerance)
+        self.assertLess(b.BlendTension, 0.0)
+        b.Length = 61.95      # above the 61.85 mm between the ends, below any G2 batten
+        self.doc.recompute()
+        self.assertTrue(b.Status.startswith("error"), b.Status)
+        self.assertIn(f"the free G2 batten is {free:.4g} mm long", b.Status)
 
     def test_g2_blend_between_lines_ends_straight(self):
         sk = S.two_lines_sketch(self.doc)
@@ -431,8 +459,7 @@ class BlendG2Test(unittest.TestCase):
         c = self.check_g2(b, sk)
         for u in (c.FirstParameter, c.LastParameter):
             self.assertLess(c.curvature(u), 1e-9)
-        for t in b.SpanTensions[1:-1]:
-            self.assertAlmostEqual(t, 1e-4, delta=1e-15)                 # the given tension
+        self.assertEqual(b.BlendTension, 1e-4)                          # the given tension
 
     def test_g2_blend_re_solves_when_an_edge_moves(self):
         sk = two_arcs_sketch(self.doc)
@@ -449,12 +476,13 @@ class BlendG2Test(unittest.TestCase):
         b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Continuity="G2")
         self.doc.recompute()
         good = b.Shape.Length
-        # arc 2 as tight as 1 mm: no batten along the G1 curve bends that much at its end
+        # arc 2 as tight as 1 mm: no batten between the ends bends that much at its end
         sk.delGeometry(1)
         sk.addGeometry(second_arc(1.0), False)
         self.doc.recompute()
         self.assertTrue(b.Status.startswith("error"), b.Status)
-        self.assertIn("pick another solution", b.Status)
+        self.assertIn("no G2 blend found", b.Status)
+        self.assertIn("or G1", b.Status)
         self.assertAlmostEqual(b.Shape.Length, good, delta=1e-12)
         b.Continuity = "G1"                 # G1 still joins them
         self.doc.recompute()

@@ -97,7 +97,7 @@ class SplineTest(unittest.TestCase):
         self.assertAlmostEqual(s.SplineLength, ref.length, delta=1e-9 * ref.length)
         self.assertAlmostEqual(s.Shape.Length, s.SplineLength, delta=1e-3)
         self.assertLessEqual(s.BSplineDeviation, s.Tolerance)
-        self.assertEqual(list(s.SpanTensions), [0.0] * 4)
+        self.assertEqual((list(s.GuideDucks), list(s.GuideForces)), ([], []))   # no G2 end
 
     def test_duck_forces_balance_and_are_normal_to_the_batten(self):
         s = self.spline(Tension=2e-4)
@@ -160,18 +160,54 @@ class SplineTest(unittest.TestCase):
         k_arc = arc.normalAt(u) * arc.curvatureAt(u)
         k_end = curvature_vector(c, c.LastParameter)
         self.assertLess((k_end - k_arc).Length, 1e-6 / r)
-        self.assertIn("G2 end: the last span takes its own tension", s.Status)
-        self.assertNotAlmostEqual(s.SpanTensions[-1], 1e-4, delta=1e-8)
-        self.assertEqual(list(s.SpanTensions[:-1]), [1e-4] * 3)
+        self.check_guides(s, c, [ducks[-2], ducks[-1]], 0.75, 1e-4)
 
-    def test_g2_end_that_cannot_be_met_says_so(self):
+    def check_guides(self, s, c, span, fraction, tension):
+        """One guide duck, at ``fraction`` of its span's chord, a knot of the B-spline
+        where tangent and curvature are continuous; its force normal to the batten;
+        the ducks' and guide's forces balance; one tension (the given one)."""
+        self.assertIn("a guide duck a quarter into the", s.Status)
+        self.assertEqual((len(s.GuideDucks), len(s.GuideForces)), (1, 1))
+        g, f = s.GuideDucks[0], s.GuideForces[0]
+        chord = span[1] - span[0]
+        self.assertAlmostEqual((g - span[0]).dot(chord) / chord.dot(chord), fraction, delta=1e-9)
+        u = duck_parameters(c, [g])[0]
+        knots = c.getKnots()
+        i = knots.index(u)
+        (t0, k0), (t1, k1) = sides(c, u, 0.5 * min(u - knots[i - 1], knots[i + 1] - u))
+        self.assertLess((t0 - t1).Length, 1e-9)
+        self.assertLess((k0 - k1).Length, 1e-6 * s.MaxCurvature)
+        self.assertGreater(f.Length, 0.0)
+        self.assertLess(abs(f.dot(App.Vector(c.tangent(u)[0]).normalize())), 1e-9 * f.Length)
+        total = sum(list(s.DuckForces) + [f], App.Vector())
+        self.assertLess(total.Length, 1e-12 * max(v.Length for v in s.DuckForces))
+        self.assertEqual(s.SplineTension, tension)
+
+    def test_g2_end_after_a_line(self):
+        """Zero curvature after a line (the former rule, a tension of the end span's
+        own, found none here): met, a guide duck holding the batten."""
         sk = self.doc.addObject("Sketcher::SketchObject", "Ends")
         sk.Placement = S.SKETCH_PLACEMENT
         sk.addGeometry(Part.LineSegment(App.Vector(-40, 0, 0), App.Vector(0, 0, 0)), False)
         self.doc.recompute()
+        s = self.spline(StartCondition="G2", StartEdge=(sk, "Edge1"))
+        ducks = self.global_ducks()
+        c = self.check_through_and_g2(s, ducks)
+        self.assertLess(c.curvature(c.FirstParameter), 1e-7 * s.MaxCurvature)
+        self.check_guides(s, c, ducks[:2], 0.25, 0.0)
+
+    def test_g2_end_that_cannot_be_met_says_so(self):
+        sk = self.doc.addObject("Sketcher::SketchObject", "Ends")
+        sk.Placement = S.SKETCH_PLACEMENT
+        r = 2.0          # an arc of radius 2 mm ending at the first duck heading (1, 0.3)
+        a = math.atan2(-1.0, 0.3)
+        centre = App.Vector(-r * math.cos(a), -r * math.sin(a), 0)
+        sk.addGeometry(Part.ArcOfCircle(Part.Circle(centre, App.Vector(0, 0, 1), r), a - 1.0, a),
+                       False)
+        self.doc.recompute()
         s = self.spline(StartCondition="tangent", StartEdge=(sk, "Edge1"))
         good = s.Shape.copy()
-        s.StartCondition = "G2"          # zero curvature after a tangent curvature of 0.055/mm
+        s.StartCondition = "G2"          # a curl of 0.5/mm into a span of 32 mm
         self.doc.recompute()
         self.assertTrue(s.Status.startswith("error"), s.Status)
         self.assertIn("tangent end", s.Status)

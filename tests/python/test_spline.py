@@ -26,26 +26,39 @@ def one_point(piece, s):
     return piece.points(s)[0], piece.angle(s)[0], piece.curvature(s)[0]
 
 
+def knots(sp, pts):
+    """The points the pieces run between: the ducks and, next to a G2 end, its guide duck."""
+    out, g = [], dict(zip(sp.guide_pieces, sp.guides))
+    it = iter(pts)
+    for i in range(len(sp.pieces) + (0 if sp.closed else 1)):
+        out.append(g[i] if i in g else next(it))
+    return np.array(out)
+
+
 def check(sp, pts, tol=1e-9, closed=False):
-    """Through the points, G1 and G2 at them, one tension (k = 0: straight, exempt)."""
+    """Through the knots, G1 and G2 at them, one tension (k = 0: straight, exempt),
+    every duck frictionless (its load normal to the batten, the guides' too)."""
     n = len(sp.data)
-    assert len(sp.pieces) == (n if closed else n - 1)
+    kn = knots(sp, pts)
+    assert len(sp.pieces) == (n if closed else n - 1 + len(sp.guides))
     ext = np.abs(pts).max() + 1.0
     kmax = sp.max_curvature
     for j, p in enumerate(sp.pieces):
-        e = (j + 1) % n
+        e = (j + 1) % len(kn)
         a, tha, ka = one_point(p, 0.0)
         b, thb, kb = one_point(p, p.length)
-        assert np.allclose(a, pts[j], atol=0, rtol=0)
-        assert np.hypot(*(b - pts[e])) <= tol * ext
+        assert np.allclose(a, kn[j], atol=0, rtol=0)
+        assert np.hypot(*(b - kn[e])) <= tol * ext
         if p.k != 0.0:
-            assert 2 * p.mu * (2 * p.k ** 2 - 1) == pytest.approx(sp.tensions[j], rel=1e-8,
+            assert 2 * p.mu * (2 * p.k ** 2 - 1) == pytest.approx(sp.tension, rel=1e-8,
                                                                   abs=1e-8 * p.mu)
         if closed or j + 1 < len(sp.pieces):
             _, thc, kc = one_point(sp.pieces[e % len(sp.pieces)], 0.0)
             d = (thb - thc + np.pi) % (2 * np.pi) - np.pi
             assert abs(d) <= tol
             assert abs(kb - kc) <= 1e-7 * kmax
+            load = sp.forces[j] - sp.forces[e % len(sp.pieces)]
+            assert abs(load @ [np.cos(thc), np.sin(thc)]) <= 1e-6 * (1 + np.abs(sp.forces).max())
     assert sp.length == pytest.approx(sum(p.length for p in sp.pieces), rel=1e-12)
     assert sp.energy == pytest.approx(sum(p.energy() for p in sp.pieces), rel=1e-10)
 
@@ -54,7 +67,7 @@ def check(sp, pts, tol=1e-9, closed=False):
 def test_through_the_points_g2_one_tension(tension):
     sp = el.elastic_spline(SKETCH, tension=tension)
     check(sp, SKETCH)
-    assert sp.tension == tension and np.all(sp.tensions == tension)
+    assert sp.tension == tension and len(sp.guides) == 0 and sp.guide_pieces == []
     assert abs(sp.curvatures[0]) <= 1e-9 and abs(sp.curvatures[-1]) <= 1e-9   # natural ends
     assert all(abs(p.k) < 1.5 for p in sp.pieces)   # a gentle curve: no loops
 
@@ -125,7 +138,69 @@ def test_length_mode_closed_and_ends():
     check(sp, SKETCH)
     assert sp.angles[0] == pytest.approx(np.pi / 4, abs=1e-9)
     assert sp.curvatures[-1] == pytest.approx(-0.2, abs=1e-9)
-    assert sp.tensions[-1] != pytest.approx(1.0) and np.all(sp.tensions[:-1] == 1.0)
+    assert sp.guide_pieces == [len(SKETCH) - 1]   # the end's guide starts the last piece
+
+
+@pytest.mark.parametrize("mode", ["tension", "length"])
+def test_g2_ends_hold_guide_ducks(mode):
+    """G2 at both ends (an arc, a line): one guide duck per end, a quarter of its end
+    span's chord from the end, its force the jump of the pieces' forces and normal to
+    the batten; the end curvature met to 1e-7 relative, the tangent to 1e-9 rad."""
+    start, end = {"tangent": (1, 0.7), "curvature": 0.5}, {"tangent": (1, 0.2), "curvature": 0.0}
+    kw = {"tension": 1.0} if mode == "tension" else {"length": 9.4}
+    sp = el.elastic_spline(SKETCH, start=start, end=end, **kw)
+    check(sp, SKETCH)
+    assert sp.guide_pieces == [1, len(SKETCH)]
+    assert sp.guides.shape == (2, 2) and sp.guide_forces.shape == (2, 2)
+    for g, (a, b, f) in enumerate(((SKETCH[0], SKETCH[1], 0.25), (SKETCH[-2], SKETCH[-1], 0.75))):
+        c = b - a
+        assert (sp.guides[g] - a) @ c / (c @ c) == pytest.approx(f, abs=1e-12)
+        i = sp.guide_pieces[g]
+        assert np.allclose(sp.guide_forces[g], sp.forces[i - 1] - sp.forces[i], rtol=0,
+                           atol=1e-12 * np.abs(sp.forces).max())
+        assert np.hypot(*sp.guide_forces[g]) > 0   # it holds the batten
+    assert sp.angles[0] == pytest.approx(np.arctan2(0.7, 1), abs=1e-9)
+    assert sp.curvatures[0] == pytest.approx(0.5, rel=1e-7)
+    assert abs(sp.curvatures[-1]) <= 1e-7 * sp.max_curvature
+
+
+def test_guided_pieces_are_one_elastica_by_integration():
+    """Independent of the library's formulas: integrate the curvature equation from
+    the G2 start (its curvature, kappa' by a difference) to the guide duck: the
+    first piece lands on the guide, and the second leaves it with the same angle and
+    curvature (only kappa' jumps: the guide's force)."""
+    sigma = 0.8
+    sp = el.elastic_spline(SKETCH, tension=sigma, start={"tangent": (1, 0.7), "curvature": 0.5})
+    p = sp.pieces[0]
+    h = 1e-6
+    _, th0, k0 = one_point(p, 0.0)
+    dk0 = (one_point(p, h)[2] - k0) / h - h / 2 * 0.5 * (sigma * k0 - k0 ** 3)
+
+    def rhs(_, y):
+        x, yy, th, k, dk = y
+        return [np.cos(th), np.sin(th), k, dk, 0.5 * (sigma * k - k ** 3)]
+
+    sol = solve_ivp(rhs, (0.0, p.length), [*SKETCH[0], th0, k0, dk0], rtol=1e-11, atol=1e-12)
+    assert np.hypot(*(sol.y[:2, -1] - sp.guides[0])) < 1e-6
+    _, th1, k1 = one_point(sp.pieces[1], 0.0)
+    assert sol.y[2, -1] == pytest.approx(th1, abs=1e-6) and sol.y[3, -1] == pytest.approx(k1, abs=1e-5)
+    assert k0 == pytest.approx(0.5, rel=1e-9)
+
+
+@pytest.mark.parametrize("both", [False, True])
+def test_two_points_g2_blend(both):
+    """Two points with G2 ends (the G2 blend between two edges): three pieces of one
+    tension with both ends G2 (guides at 1/4 and 3/4 of the chord), two with one; the
+    free batten, and by length a little longer."""
+    p = np.array([[0.0, 0.0], [10.0, 1.0]])
+    end = {"tangent": (1, -0.3), "curvature": -0.1} if both else (1, -0.3)
+    sp = el.elastic_spline(p, start={"tangent": (1, 0.4), "curvature": 0.05}, end=end)
+    check(sp, p)
+    assert len(sp.pieces) == (3 if both else 2) and len(sp.guides) == (2 if both else 1)
+    longer = el.elastic_spline(p, start={"tangent": (1, 0.4), "curvature": 0.05}, end=end,
+                               length=1.02 * sp.length)
+    check(longer, p)
+    assert longer.length == pytest.approx(1.02 * sp.length, rel=1e-10) and longer.tension < 0
 
 
 def test_degenerate_inputs():
@@ -148,7 +223,9 @@ def test_degenerate_inputs():
     (dict(points=[[0, 0], [1, 1]], tension=-1.0), ValueError, "tension"),
     (dict(points=[[0, 0], [1, 1]], tension=1.0, length=3.0), ValueError, "not both"),
     (dict(points=[[0, 0], [1, 1]], start={"tangent": (1, 0), "curvature": 1},
-          end={"tangent": (1, 0), "curvature": 1}), el.DomainError, "span of its own"),
+          end={"tangent": (0, 1), "curvature": -1}), None, None),   # two points, both G2
+    (dict(points=[[0, 0], [1, 1]], start={"tangent": (1, 0), "curvature": np.nan}), ValueError,
+     "curvature must be finite"),
     (dict(points=[[0, 0], [1, 1]], start=(0, 0)), ValueError, "nonzero"),
     (dict(points=[[0, 0], [1, 1]], start={"curvature": 1}), ValueError, "tangent"),
     (dict(points=[[i, i % 2] for i in range(10)], tension=0.0), el.DomainError, "slides off"),
@@ -222,6 +299,12 @@ def test_cli_spline(tmp_path):
     r = run("spline", f, "--length", "9.0", "--start-tangent", "1", "1", "--json", "-")
     assert r.returncode == 0, r.stderr
     assert json.loads(r.stdout)["length"] == pytest.approx(9.0)
+    r = run("spline", f, "--tension", "0.5", "--end-tangent", "1", "0.1", "--end-curvature", "-0.2",
+            "--json", "-")   # a G2 end: its guide duck in the JSON
+    assert r.returncode == 0, r.stderr
+    d = json.loads(r.stdout)
+    assert len(d["pieces"]) == len(SKETCH) and d["guide_pieces"] == [len(SKETCH) - 1]
+    assert np.allclose(curve_from_dict(d["pieces"][-1]).points([0.0])[0], d["guides"][0])
     r = run("spline", f, "--length", "3")   # shorter than the polygon: bad input, one line
     assert r.returncode == 2 and "shorter than the polygon" in r.stderr
     assert len(r.stderr.strip().splitlines()) == 1

@@ -2,31 +2,32 @@
 an end of another, by tension (default: tension 0, the free batten) or by length;
 each solution described (length, energy, inflections, loops, largest curvature);
 the chosen one (lowest energy unless the user picked another) as a B-spline of
-few poles; or, Continuity G2, an elastic spline along it that also meets both
-edges' curvature. The feature follows its edges; writing it into a sketch is a
-copy."""
+few poles; or, Continuity G2, the elastic spline between the two ends that also
+meets both edges' curvature (two guide ducks hold it). The feature follows its
+edges; writing it into a sketch is a copy."""
 from __future__ import annotations
 
 import json
 
+import FreeCAD as App
+
 from . import defaults
 from .geometry import (edge_end, el, is_sketch, link_edge, np, part_bspline,
-                       plane_coordinates, plane_curvature, sketch_geo_of_edge)
+                       plane_coordinates, plane_curvature, sketch_geo_of_edge, to_3d)
 from .proxy import (FeatureProxy, InputProblem, add_enum, add_property, attach_view,
                     check_degree, check_number, check_tolerance, read_only)
 
 MODES = ["length", "tension"]
 CONTINUITIES = ["G1", "G2"]
-G2_DUCKS = (1, 2, 3, 4, 6, 8)     # points of the G1 curve a G2 blend may pass (g2_blend)
 BSPLINE_DEGREE = 5          # a blend's B-spline: few poles at the preference tolerance
 RESULT_LISTS = ("Lengths", "Energies", "Tensions", "Inflections", "Loops", "MaxCurvatures",
-                "Descriptions", "SpanTensions")
+                "Descriptions")
 G2_TIP = ("G1: one elastica, tangent to both edges. G2: tangent and curvature continuous at "
-          "both joins; one elastica cannot match both curvatures, so the G2 blend is an elastic "
-          "spline through 1 to 8 evenly spaced points of the chosen G1 solution (the fairest: "
-          "fewest inflections, then least energy); its inner spans keep that solution's "
-          "tension, the two end spans take tensions of their own. It stays close to the G1 "
-          "curve; its length follows")
+          "both joins. One elastica cannot meet both curvatures (8 conditions, 7 parameters), "
+          "so the G2 blend is the batten between the two ends held by two guide ducks, a "
+          "quarter of the way in from each edge and free to move across the line between the "
+          "ends (drawn in orange with their forces): one tension throughout, the tension or "
+          "length asked for (0: the free batten), bent from the chosen G1 solution")
 
 
 def nearest_ends(e0, e1):
@@ -122,46 +123,52 @@ def inflections(pieces):
     return sum(len(el().elastica_inflections(p)) for p in pieces)
 
 
-def g2_blend(r, i, tol, degree):
-    """The G2 blend along solution ``i`` of blend_core's result ``r``: an elastic
-    spline from the first edge's end to the second's through m points evenly spaced
-    (by arc length) on that solution, with both edges' tangent AND curvature at the
-    joins. One elastica cannot do it (8 conditions, 7 parameters); the library's G2
-    ends give each end span a tension of its own, so the batten needs ducks: its
-    inner spans keep the solution's tension (0 when that is negative: the library's
-    tension mode), and the ducks keep it close to the G1 curve the user previewed.
-    Of m = 1, 2, 3, 4, 6, 8 the fairest batten is taken: the fewest inflections,
-    then the least energy (one duck often has no solution, and more ducks trade
-    energy for wiggles near the ends). Returns (el.ElasticSpline, m, its B-spline).
+def g2_blend(r, i, mode, value, tol, degree):
+    """The G2 blend between the ends of blend_core's result ``r``: el.elastic_spline
+    through the two edge ends with G2 ends (the edges' tangent AND curvature). One
+    elastica cannot do it (8 conditions, 7 parameters); the library holds the batten
+    with a guide duck a quarter of the chord in from each end, free to move across
+    the chord, at one common tension: by ``mode`` 'tension' (value >= 0, 1/mm^2) or
+    'length' (value in mm; 0: the free batten), bent from solution ``i`` (its G1
+    sibling: the branch the user chose; if that does not bend, the library's own
+    start, said in the note). Returns (el.ElasticSpline, its B-spline, note).
     Raises InputProblem."""
     (e0, at0, a0, t0), (e1, at1, a1, t1) = r["ends"]
     plane = r["placement"]
     k0 = plane_curvature(e0, at0, t0, plane, "the first edge")
     k1 = plane_curvature(e1, at1, t1, plane, "the second edge")
-    c = r["curves"][i]
+    if mode == "tension" and value < 0:
+        raise InputProblem(f"Tension = {value:g}/mm^2: a G2 blend is solved for a tension >= 0; "
+                           "for one pushed together give a length")
     n, e = np(), el()
-    best = None
-    for m in G2_DUCKS:
-        ducks = c.points(c.length * n.arange(1, m + 1) / (m + 1))
-        if n.hypot(*(ducks[0] - a0)) > n.hypot(*(ducks[-1] - a0)):   # stored a1 -> a0
-            ducks = ducks[::-1]
-        try:
-            sp = e.elastic_spline(n.vstack([a0, ducks, a1]),
-                                  tension=max(float(getattr(c, "sigma", 0.0)), 0.0),
-                                  start={"tangent": tuple(t0), "curvature": k0},
-                                  end={"tangent": tuple(t1), "curvature": k1})
-        except (ValueError, ArithmeticError, RuntimeError):
-            continue
-        key = (inflections(sp.pieces), sp.energy)
-        if best is None or key < best[0]:
-            best = (key, sp, m)
-    if best is None:
-        raise InputProblem(f"no G2 blend along solution {i + 1}: the edges' curvatures "
-                           f"({k0:.3g}, {k1:.3g}/mm) ask more than a batten there can give; "
-                           "pick another solution, tension or length, or G1")
-    _, sp, m = best
+    ends = {"start": {"tangent": tuple(t0), "curvature": k0},
+            "end": {"tangent": tuple(t1), "curvature": k1}}
+    kw = {"length": value} if mode == "length" and value > 0 else \
+        {"tension": value if mode == "tension" else 0.0}
+    pts, note = n.vstack([a0, a1]), ""
+    sibling = r["curves"][i] if mode == "tension" or value > 0 else None
     try:
-        return sp, m, sp.to_bspline(tol, degree)
+        try:   # the chosen G1 solution as the sibling (a chain of pieces cannot be one)
+            if not isinstance(sibling, e.SmoothElastica):
+                raise ValueError("no single-piece G1 solution to start from")
+            sp = e.elastic_spline(pts, **ends, **kw, initial=[sibling])
+        except (ValueError, ArithmeticError, RuntimeError):
+            sp = e.elastic_spline(pts, **ends, **kw)
+            if sibling is not None:
+                note = f" (solution {i + 1} did not bend to G2: from the library's own start)"
+    except (ValueError, ArithmeticError, RuntimeError) as exc:
+        hint = "pick another tension or length, or G1"
+        if "length" in kw:
+            try:
+                free = e.elastic_spline(n.vstack([a0, a1]), **ends).length
+                hint = (f"the free G2 batten is {free:.4g} mm long; pulled it gets at most 1-2 % "
+                        "shorter, pushed longer: try a length from there, or G1")
+            except (ValueError, ArithmeticError, RuntimeError):
+                pass
+        raise InputProblem(f"no G2 blend found ({exc}); the edges' curvatures are {k0:.3g} and "
+                           f"{k1:.3g}/mm; {hint}") from None
+    try:
+        return sp, sp.to_bspline(tol, degree), note
     except (ValueError, ArithmeticError, RuntimeError) as exc:
         raise InputProblem(f"B-spline failed: {exc}") from None
 
@@ -235,16 +242,28 @@ class BlendProxy(FeatureProxy):
                      "Largest |curvature| of every solution (1/mm)")
         add_property(obj, "App::PropertyStringList", "Descriptions", "Result",
                      "Every solution in words")
-        add_property(obj, "App::PropertyFloatList", "SpanTensions", "Result",
-                     "G2: the tension of each span of the blend (1/mm^2; the inner ones are the "
-                     "G1 solution's); empty for G1")
+        if "SpanTensions" in obj.PropertiesList:   # version 1: the G2 end spans' own tensions
+            obj.removeProperty("SpanTensions")
+        add_property(obj, "App::PropertyVectorList", "GuideDucks", "Result",
+                     "G2: the two guide ducks holding the batten (global coordinates), a "
+                     "quarter of the way in from each edge; empty for G1")
+        add_property(obj, "App::PropertyVectorList", "GuideForces", "Result",
+                     "G2: the force each guide duck exerts on the batten (global directions, "
+                     "units of EI/2: 1/mm^2; normal to the batten)")
+        add_property(obj, "App::PropertyFloat", "BlendLength", "Result",
+                     "Length of the blend on screen (mm): the chosen solution's, or the G2 "
+                     "batten's")
+        add_property(obj, "App::PropertyFloat", "BlendTension", "Result",
+                     "Tension of the blend on screen (1/mm^2): the chosen solution's, or the "
+                     "G2 batten's")
         add_property(obj, "App::PropertyInteger", "Poles", "Result", "Poles of the B-spline")
         add_property(obj, "App::PropertyString", "Status", "Result", "Outcome of the last solve")
         add_property(obj, "App::PropertyString", "Curves", "Result",
                      "The blend's elastica(e) (JSON, plane coordinates): the chosen solution, "
                      "or the G2 blend's pieces")
         add_property(obj, "App::PropertyPlacement", "Plane", "Result", "The plane of the blend")
-        read_only(obj, *RESULT_LISTS, "Poles", "Status", "Curves", "Plane")
+        read_only(obj, *RESULT_LISTS, "GuideDucks", "GuideForces", "BlendLength",
+                  "BlendTension", "Poles", "Status", "Curves", "Plane")
 
     def onChanged(self, obj, prop):
         # a new problem: its lowest-energy solution (the panel re-applies a user's pick)
@@ -275,7 +294,8 @@ class BlendProxy(FeatureProxy):
                                f"(0 to {len(curves) - 1})")
         tol, degree = check_tolerance(obj.Tolerance), check_degree(obj.Degree)
         if obj.Continuity == "G2":
-            r["g2"], r["g2_ducks"], r["bspline"] = g2_blend(r, obj.Solution, tol, degree)
+            r["g2"], r["bspline"], r["g2_note"] = g2_blend(r, obj.Solution, obj.Mode, value,
+                                                           tol, degree)
             return r
         try:
             # a SmoothElastica, or near the separatrix a Hermite chain: both give one B-spline
@@ -302,12 +322,21 @@ class BlendProxy(FeatureProxy):
         from libelastica.io import curve_to_dict
         sp = r.get("g2")
         obj.Curves = json.dumps([curve_to_dict(c) for c in (sp.pieces if sp else [curves[i]])])
-        obj.SpanTensions = [float(t) for t in sp.tensions] if sp else []
-        obj.Status = f"solution {i + 1} of {len(curves)}" + (
-            f"; G2 along it (through {r['g2_ducks']} of its points): {sp.length:.4g} mm, energy "
-            f"{sp.energy:.3g}/mm, max curvature {sp.max_curvature:.3g}/mm, "
-            f"{inflections(sp.pieces)} inflections, end spans' tensions {sp.tensions[0]:.3g}, "
-            f"{sp.tensions[-1]:.3g}/mm\u00b2" if sp else "")
+        plc = r["placement"]
+        obj.GuideDucks = to_3d(plc, sp.guides) if sp else []
+        obj.GuideForces = [plc.Rotation.multVec(App.Vector(float(x), float(y), 0.0))
+                           for x, y in (sp.guide_forces if sp else [])]
+        obj.BlendLength = float(sp.length if sp else curves[i].length)
+        obj.BlendTension = float(sp.tension if sp else getattr(curves[i], "sigma", 0.0))
+        if sp:
+            forces = ", ".join(f"{float(np().hypot(*f)):.3g}" for f in sp.guide_forces)
+            obj.Status = (f"G2 from solution {i + 1} of {len(curves)}{r['g2_note']}: "
+                          f"{sp.length:.4g} mm, tension {sp.tension:.3g}/mm\u00b2, energy "
+                          f"{sp.energy:.3g}/mm, max curvature {sp.max_curvature:.3g}/mm, "
+                          f"{inflections(sp.pieces)} inflections; guide ducks' forces {forces} "
+                          "EI/2/mm\u00b2")
+        else:
+            obj.Status = f"solution {i + 1} of {len(curves)}"
 
     def on_error(self, obj):
         """A failed solve lists no solutions (the old curve stays, drawn dashed)."""

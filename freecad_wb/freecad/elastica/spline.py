@@ -1,10 +1,11 @@
 """Elastic spline (issue 14): the batten through N ducks. A chain of elasticae of one
 tension through picked points (sketch points or vertices, a Points object, a Draft
 wire or polyline), curvature continuous at every duck; each open end natural
-(curvature 0), tangent or G2 to a picked edge; or closed; by tension or by total
-length. The feature keeps the energy, tension, length, largest curvature and the
-force each duck holds; its shape is ONE G2 B-spline (ElasticSpline.to_bspline).
-It follows its points; writing it into a sketch is a copy."""
+(curvature 0), tangent or G2 to a picked edge (a G2 end holds a guide duck in
+its end span, at the same tension); or closed; by tension or by total length.
+The feature keeps the energy, tension, length, largest curvature and the force
+each duck holds; its shape is ONE G2 B-spline (ElasticSpline.to_bspline). It
+follows its points; writing it into a sketch is a copy."""
 from __future__ import annotations
 
 import json
@@ -50,15 +51,17 @@ def end_condition(edge, condition, point, neighbour, arriving):
 
 
 def duck_forces(sp):
-    """(n, 2) force each duck exerts on the batten (units of EI/2, 1/mm^2): with F_i
-    the constant force of piece i (the batten after a section pulling on the batten
-    before it), duck i holds F_{i-1} - F_i; an open end's duck holds -F_0 or
-    F_{m-1} (the library's convention, header section spline). They sum to zero."""
+    """(n, 2) force each duck (point) exerts on the batten (units of EI/2, 1/mm^2):
+    with F_i the constant force of piece i (the batten after a section pulling on the
+    batten before it), the duck at knot i holds F_{i-1} - F_i; an open end's duck
+    holds -F_0 or F_{m-1} (the library's convention, header section spline). The
+    guide ducks' forces (knots sp.guide_pieces) are sp.guide_forces; with them the
+    forces sum to zero."""
     n = np()
     f = n.asarray(sp.forces, dtype=float)
     if sp.closed:
         return n.roll(f, 1, axis=0) - f
-    return n.vstack([-f[:1], f[:-1] - f[1:], f[-1:]])
+    return n.delete(n.vstack([-f[:1], f[:-1] - f[1:], f[-1:]]), sp.guide_pieces, axis=0)
 
 
 def _tangent_only(spec):
@@ -87,9 +90,12 @@ def _solve(xy, mode, value, closed, start, end):
         try:
             e.elastic_spline(xy, start=_tangent_only(start), end=_tangent_only(end),
                              closed=closed, **kw)
-            failure = ("no equilibrium with this G2 end: its span finds no tension of its own "
-                       "that gives the edge's curvature (the batten would have to buckle); "
-                       "use a tangent end, or move the point next to it")
+            failure = ("no equilibrium with this G2 end: the batten with a tangent end exists, "
+                       "but bending its end to the edge's curvature with a guide duck did not "
+                       "converge (a curl too tight for the span next to it" + (
+                           ", or a length the G2 batten cannot reach: pulled it gets at most "
+                           "1-2 % shorter than free" if mode == "length" else "")
+                       + "); use a tangent end, or move the point next to it")
         except ValueError:
             pass
     raise InputProblem(failure)
@@ -165,10 +171,12 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
     sp, note = _solve(xy, mode, value, closed, *specs)
     if note:
         notes.append(note)
+    guides = iter(sp.guide_forces)
     for j, name in ((0, "first"), (-1, "last")):
         if isinstance(specs[j], dict):
-            notes.append(f"G2 {'start' if j == 0 else 'end'}: the {name} span takes its own "
-                         f"tension {sp.tensions[j]:.4g}/mm\u00b2")
+            notes.append(f"G2 {'start' if j == 0 else 'end'}: a guide duck a quarter into the "
+                         f"{name} span holds the batten there (force "
+                         f"{float(n.hypot(*next(guides))):.3g} EI/2/mm\u00b2)")
     try:
         bs = sp.to_bspline(tol, degree)
     except (ValueError, ArithmeticError, RuntimeError) as exc:
@@ -200,8 +208,9 @@ class SplineProxy(FeatureProxy):
         for end, which in (("Start", "first"), ("End", "last")):
             add_enum(obj, f"{end}Condition", "Spline",
                      f"At the {which} point: natural (curvature 0, a free end), tangent to "
-                     f"{end}Edge, or G2 to it (tangent and curvature; that end's span then "
-                     "takes a tension of its own)", END_CONDITIONS, "natural")
+                     f"{end}Edge, or G2 to it (tangent and curvature; a guide duck a quarter "
+                     "into that end's span, free to move across it, holds the batten there)",
+                     END_CONDITIONS, "natural")
             add_property(obj, "App::PropertyLinkSub", f"{end}Edge", "Spline",
                          f"The edge the {which} point follows (tangent or G2) at its end "
                          f"nearest that point")
@@ -221,21 +230,29 @@ class SplineProxy(FeatureProxy):
                 ("MaxCurvature", "Largest |curvature| (1/mm)"),
                 ("BSplineDeviation", "Certified distance of the B-spline from the spline (mm)")):
             add_property(obj, "App::PropertyFloat", name, "Result", tip)
-        add_property(obj, "App::PropertyFloatList", "SpanTensions", "Result",
-                     "Each span's tension (1/mm^2): the common one, except a G2 end's span")
+        if "SpanTensions" in obj.PropertiesList:   # version 1: a G2 end span's own tension
+            obj.removeProperty("SpanTensions")
         add_property(obj, "App::PropertyVectorList", "Ducks", "Result",
                      "The points the spline passes through (global coordinates)")
         add_property(obj, "App::PropertyVectorList", "DuckForces", "Result",
                      "The force each duck exerts on the batten (global directions, units of "
-                     "EI/2: 1/mm^2; times EI/2 in N mm^2 gives newtons); they sum to zero")
+                     "EI/2: 1/mm^2; times EI/2 in N mm^2 gives newtons); with the guide "
+                     "ducks' they sum to zero")
+        add_property(obj, "App::PropertyVectorList", "GuideDucks", "Result",
+                     "G2 ends: the guide duck in each end span (global coordinates, the "
+                     "start's first), a quarter of the span's chord from the end and moved "
+                     "across the chord until the end has the edge's curvature")
+        add_property(obj, "App::PropertyVectorList", "GuideForces", "Result",
+                     "The force each guide duck exerts on the batten (as DuckForces; normal "
+                     "to the batten)")
         add_property(obj, "App::PropertyInteger", "Poles", "Result", "Poles of the B-spline")
         add_property(obj, "App::PropertyString", "Status", "Result", "Outcome of the last solve")
         add_property(obj, "App::PropertyString", "Curves", "Result",
                      "The spline's pieces (JSON, plane coordinates)")
         add_property(obj, "App::PropertyPlacement", "Plane", "Result", "The plane of the spline")
         read_only(obj, "SplineLength", "SplineTension", "Energy", "MaxCurvature",
-                  "BSplineDeviation", "SpanTensions", "Ducks", "DuckForces", "Poles", "Status",
-                  "Curves", "Plane")
+                  "BSplineDeviation", "Ducks", "DuckForces", "GuideDucks", "GuideForces",
+                  "Poles", "Status", "Curves", "Plane")
 
     def end_specs(self, obj):
         """(start, end): None or (condition, Part edge) from the end properties."""
@@ -266,8 +283,10 @@ class SplineProxy(FeatureProxy):
         obj.Energy = sp.energy
         obj.MaxCurvature = sp.max_curvature
         obj.BSplineDeviation = float(bs.max_deviation)
-        obj.SpanTensions = [float(t) for t in sp.tensions]
         obj.Ducks = to_3d(plc, sp.data)
+        obj.GuideDucks = to_3d(plc, sp.guides)
+        obj.GuideForces = [plc.Rotation.multVec(App.Vector(float(x), float(y), 0.0))
+                           for x, y in sp.guide_forces]
         obj.DuckForces = [plc.Rotation.multVec(App.Vector(float(x), float(y), 0.0))
                           for x, y in r["forces"]]
         obj.Poles = int(bs.npoles)

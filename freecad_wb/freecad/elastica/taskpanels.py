@@ -169,8 +169,7 @@ class BlendPanel(Panel):
     def changed(self, prop):
         if prop == "Mode" and self.obj.Mode == "length" and self.obj.Lengths:
             # length mode starts from the length of the curve on screen
-            self.obj.Length = self.obj.Lengths[self.obj.Solution] \
-                if self.obj.Solution < len(self.obj.Lengths) else 0.0
+            self.obj.Length = self.obj.BlendLength
 
     def update(self):
         super().update()
@@ -198,12 +197,12 @@ class BlendPanel(Panel):
         if o.Descriptions:
             self.list.setCurrentRow(min(o.Solution, len(o.Descriptions) - 1))
         self.list.blockSignals(False)
-        # the field not being solved for shows the chosen solution's value
-        i = o.Solution
-        for box, values, active in ((self.length, o.Lengths, o.Mode == "length"),
-                                    (self.tension, o.Tensions, o.Mode == "tension")):
-            if not active and i < len(values):
-                self.show_value(box, values[i])
+        # the field not being solved for shows the value of the curve on screen
+        if o.Descriptions:
+            for box, value, active in ((self.length, o.BlendLength, o.Mode == "length"),
+                                       (self.tension, o.BlendTension, o.Mode == "tension")):
+                if not active:
+                    self.show_value(box, value)
         super().refresh()
 
     def result_text(self):
@@ -247,8 +246,8 @@ class SplinePanel(Panel):
             combo = self.choice(ends, end, f"{end}Condition", Sp.END_CONDITIONS,
                                 ["natural", "tangent to edge", "G2 to edge"],
                                 f"At the {which} point: natural (curvature 0), tangent to the "
-                                f"{end.lower()} edge, or G2 to it (tangent and curvature: that "
-                                "end's span then takes a tension of its own)", when=is_open)
+                                f"{end.lower()} edge, or G2 to it (tangent and curvature: a guide "
+                                "duck in that end's span, drawn in orange, holds it)", when=is_open)
             btn = self.edge_button(ends, f"{end} edge", f"{end}Edge",
                                    f"Select an edge, then click: the {which} point follows it "
                                    "(at its end nearest the point); click again to free it",
@@ -326,8 +325,10 @@ class SplinePanel(Panel):
         order = sorted(range(len(forces)), key=lambda i: -forces[i])[:self.MAX_DUCK_LINES]
         more = len(forces) - len(order)
         items = ", ".join(f"{i + 1}: {forces[i] * scale:.3g}" for i in sorted(order))
+        guides = ", ".join(f"{v.Length * scale:.3g}" for v in o.GuideForces)
         return (f"duck forces ({unit}): {items}"
-                + (f" (the {len(order)} largest of {len(forces)})" if more else ""))
+                + (f" (the {len(order)} largest of {len(forces)})" if more else "")
+                + (f"; guide ducks: {guides}" if guides else ""))
 
     def result_text(self):
         o = self.obj

@@ -24,7 +24,8 @@ WIDTHS = {"Fit": 3.0, "Blend": 3.0, "Comb": 1.0, "EllipticBlend": 3.0, "G2Quad":
           "Spline": 3.0}
 # overlays drawn beside a feature's shape: groups of (colour, markers, segments), each
 # drawn with its line width
-OVERLAY_GROUPS = {"Fit": (1.0,), "G2Quad": (1.0,), "Spline": (1.0, 1.0, 2.5)}
+OVERLAY_GROUPS = {"Fit": (1.0,), "G2Quad": (1.0,), "Spline": (1.0, 1.0, 2.5, 2.5), "Blend": (2.5,)}
+GUIDE_RGB = (0.95, 0.5, 0.0)  # the guide ducks of G2 ends (orange), apart from the user's ducks
 SPLINE_COMB_TEETH = 150     # teeth along a whole spline
 ARROW_SHARE = 0.1           # the longest duck-force arrow: this share of the spline's size
 
@@ -138,11 +139,11 @@ def restored(obj):
                                  finish_opening(App.getDocument(name)))
 
 
-def _arrows(tips, vectors, length):
+def _arrows(tips, vectors, length, big=None):
     """Segment pairs of arrows along ``vectors`` ending at ``tips`` (a force drawn
-    pushing on its point), the longest ``length`` long, each with a two-stroke head;
-    plane coordinates (z = 0)."""
-    big = max((v.Length for v in vectors), default=0.0)
+    pushing on its point), the longest (or one of size ``big``) ``length`` long, each
+    with a two-stroke head; plane coordinates (z = 0)."""
+    big = big or max((v.Length for v in vectors), default=0.0)
     out = []
     if big <= 0:
         return out
@@ -157,9 +158,28 @@ def _arrows(tips, vectors, length):
     return out
 
 
+def _force_arrows(obj, points, forces, size, big=None):
+    """Arrows (segment pairs, global) of the forces at points of a feature's plane (the
+    longest, or one of size ``big``, a tenth of ``size``)."""
+    if not points or len(forces) != len(points):
+        return []
+    rot = obj.Plane.Rotation
+    inv = rot.inverted()
+    local = [inv.multVec(v) for v in forces]
+    tips = [inv.multVec(p - obj.Plane.Base) for p in points]
+    return [rot.multVec(p) + obj.Plane.Base for p in _arrows(tips, local, ARROW_SHARE * size, big)]
+
+
+def _guide_overlay(obj, size, arrows=True, big=None):
+    """The guide ducks of G2 ends (orange markers) and their forces (orange arrows)."""
+    guides = list(getattr(obj, "GuideDucks", []))
+    forces = list(getattr(obj, "GuideForces", []))
+    return (GUIDE_RGB, guides, _force_arrows(obj, guides, forces, size, big) if arrows else [])
+
+
 def _spline_overlay(vobj, rgb):
-    """Ducks (markers), the curvature comb (teeth and envelope) and the duck forces
-    (arrows) of an elastic spline."""
+    """Ducks (markers), the curvature comb (teeth and envelope), the duck forces
+    (arrows) of an elastic spline, and its guide ducks (G2 ends) apart, in orange."""
     obj = vobj.Object
     ducks = list(obj.Ducks) if getattr(vobj, "ShowDucks", True) else []
     comb, arrows = [], []
@@ -171,16 +191,16 @@ def _spline_overlay(vobj, rgb):
             comb += [p for pair in teeth for p in pair]
             tips = [b for _, b in teeth]
             comb += [p for a, b in zip(tips, tips[1:]) for p in (a, b)]
-    if getattr(vobj, "ShowForces", True) and len(obj.DuckForces) == len(obj.Ducks):
-        # the plane's in-plane perpendicular for the arrow heads
-        rot = obj.Plane.Rotation
-        inv = rot.inverted()
-        local = [inv.multVec(v) for v in obj.DuckForces]
-        tips = [inv.multVec(p - obj.Plane.Base) for p in obj.Ducks]
-        arrows = [rot.multVec(p) + obj.Plane.Base
-                  for p in _arrows(tips, local, ARROW_SHARE * size)]
+    forces = getattr(vobj, "ShowForces", True)
+    # one scale for the ducks' and the guides' arrows
+    big = max((v.Length for v in list(obj.DuckForces) + list(getattr(obj, "GuideForces", []))),
+              default=0.0)
+    if forces:
+        arrows = _force_arrows(obj, list(obj.Ducks), list(obj.DuckForces), size, big)
+    guides = _guide_overlay(obj, size, forces, big) if getattr(vobj, "ShowDucks", True) else \
+        (GUIDE_RGB, [], [])
     return [((0.15, 0.15, 0.15), ducks, []), (_lighter(rgb), [], comb),
-            ((0.8, 0.05, 0.05), [], arrows)]
+            ((0.8, 0.05, 0.05), [], arrows), guides]
 
 
 def overlay_content(vobj):
@@ -200,6 +220,9 @@ def overlay_content(vobj):
         return [((0.35, 0.35, 0.35), data, [p for a, b in zip(data, data[1:]) for p in (a, b)])]
     if kind == "Spline":
         return _spline_overlay(vobj, rgb)
+    if kind == "Blend":      # G2: its guide ducks
+        size = obj.Shape.BoundBox.DiagonalLength if not obj.Shape.isNull() else 0.0
+        return [_guide_overlay(obj, size)]
     return []
 
 
@@ -224,7 +247,8 @@ class ViewProvider:
             props = [("ShowPolyline", "The affine arc-length polyline (the B-spline's "
                                       "control polygon inside each piece)", True)]
         elif kind == "Spline":
-            props = [("ShowDucks", "Markers at the points the spline passes through", True),
+            props = [("ShowDucks", "Markers at the points the spline passes through (grey) and "
+                                   "at the guide ducks of G2 ends (orange)", True),
                      ("ShowComb", "The curvature comb (teeth outside the bend)", True),
                      ("ShowForces", "An arrow at each duck: the force it exerts on the "
                                     "batten (the longest a tenth of the spline's size)", True)]
@@ -296,7 +320,7 @@ class ViewProvider:
             g["lines"].numVertices.setValues(0, len(segments) // 2, [2] * (len(segments) // 2))
 
     def updateData(self, obj, prop):
-        if prop in ("DataPoints", "FootPoints", "Polyline", "Curves", "DuckForces"):
+        if prop in ("DataPoints", "FootPoints", "Polyline", "Curves", "DuckForces", "GuideForces"):
             self._refresh(obj.ViewObject)
         elif prop == "Status":
             vobj = obj.ViewObject
