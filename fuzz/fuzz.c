@@ -354,7 +354,13 @@ el_spline_options fz_spline_options(fz_in *in)
 void fz_check_spline(const el_spline_result *r)
 {
     FZ_FINITE(&r->pieces[0].x0, 7 * r->npieces);
-    FZ_FINITE(r->sigmas, r->npieces);
+    if (r->nguides > 2) fz_finding("output", "more than two guide ducks");
+    else {
+        FZ_FINITE(r->guides, 2 * r->nguides);
+        FZ_FINITE(r->guide_forces, 2 * r->nguides);
+        for (size_t g = 0; g < r->nguides; g++)
+            if (r->guide_pieces[g] >= r->npieces) fz_finding("output", "guide duck on no piece");
+    }
     FZ_FINITE(r->forces, 2 * r->npieces);
     FZ_FINITE(r->angles, r->npoints);
     FZ_FINITE(r->curvatures, r->npoints);
