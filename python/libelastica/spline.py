@@ -10,8 +10,8 @@ from typing import List, Optional
 
 import numpy as np
 
-from ._ffi import (DomainError, NotConvergedError, as_points, bspline_from_c, check, dptr,
-                   ffi, lib)
+from ._ffi import DomainError, NotConvergedError, as_points, check, dptr, ffi, lib
+from .bspline import smooth_chain_to_bspline
 from .core import SmoothElastica, SMOOTH_PARAMS
 
 __all__ = ["ElasticSpline", "elastic_spline"]
@@ -107,26 +107,9 @@ class ElasticSpline:
         """ONE clamped B-spline (degree 3..7) for the whole spline within ``tol``
         (coordinate units) of it, parametrised by arc length from point 0: each
         piece with exact end point, unit tangent and curvature
-        (el_smooth_to_bspline_g2), joined with knot multiplicity degree - 2 at the
-        points, so it is C2 (G2) there. ``max_deviation`` is the certified distance."""
-        if int(degree) != degree:
-            raise ValueError(f"to_bspline: degree must be an integer, got {degree}")
-        res = ffi.new("el_spline_result *")
-        res.npieces = len(self.pieces)
-        arr = ffi.new("el_smooth_params[]", len(self.pieces))
-        for i, p in enumerate(self.pieces):
-            for k in SMOOTH_PARAMS:
-                setattr(arr[i], k, getattr(p, k))
-        res.pieces = arr
-        b = ffi.new("el_bspline *")
-        st = lib.el_spline_to_bspline(res, float(tol), int(degree), b)
-        if st == lib.EL_EMAXITER:
-            dev = float(b.max_deviation)
-            lib.el_bspline_free(b)
-            raise NotConvergedError(st, f"to_bspline: tolerance {tol:g} not reached "
-                                        f"(certified {dev:.3g}); raise tol")
-        check(st, "to_bspline")
-        return bspline_from_c(b)
+        (el_spline_to_bspline = el_smooth_chain_to_bspline), joined C2 (so G2) at the
+        points. ``max_deviation`` is the certified distance."""
+        return smooth_chain_to_bspline(self.pieces, tol, degree)
 
 
 def _end(spec, name: str, opt_end) -> None:
