@@ -258,3 +258,13 @@ def test_pendulum_identity_and_third_derivative_bound(k):
                                  edge_order=2), s, axis=0, edge_order=2)
     inner = slice(10, -10)
     assert np.allclose(np.hypot(*d3[inner].T), g3[inner], atol=1e-3 * bound)
+
+
+def test_chain_beyond_the_pole_limit_says_which_piece_and_why():
+    """A chain with a piece turning through more radians than EL_BSPLINE_MAX_POLES: a
+    DomainError naming the piece and the length to split it into, not a bare status."""
+    calm = el.SmoothElastica(x0=0, y0=0, phi=0, mu=1.0, k=0.5, q=0.0, length=2.0)
+    end = calm.points(np.array([calm.length]))[0]
+    wild = el.SmoothElastica(x0=end[0], y0=end[1], phi=0, mu=100.0, k=60.0, q=0.0, length=20.0)
+    with pytest.raises(el.DomainError, match=r"piece 2 of 2: the curve turns through up to"):
+        el.smooth_chain_to_bspline([calm, wild], 1e-4, 3)
