@@ -545,7 +545,8 @@ def fit_panel_ends(doc, f, lines):
     wait()
     check("Start curvature cannot be met" in panel.result.text() and
           abs(f.Shape.Length - shape.Length) < 1e-12,
-          "fit: a start curvature the model cannot meet: the panel names it, the shape stays")
+          "fit: a start curvature the model cannot meet: the panel names it, the shape stays "
+          f"({f.Status})")
     panel.reject()
     pump()
     after = (f.Model, f.SplitAtInflection, f.PinEnd, f.StartTangent, round(f.Rms, 12),
@@ -570,9 +571,19 @@ def ellblend_panel(doc, S):
           "elliptic blend: an arrow click on k previews k = 0.55")
     panel.mode.setCurrentIndex(1)
     wait()
-    check(e.Mode == "control" and e.Status == "ok" and panel.d.isEnabled(),
-          "elliptic blend panel: control points, d enabled")
+    check(e.Mode == "control" and e.Status == "ok" and panel.d.isEnabled()
+          and not panel.warning[0].isVisible(),
+          "elliptic blend panel: control points, d enabled, no warning")
+    type_into(panel.k, "0.79")                 # m = 0.62: a blending function goes negative
+    wait()
+    check(not e.ConvexHull and e.Warnings and panel.warning[0].isVisible() and
+          "convex hull" in panel.warning[1].text() and "error" not in panel.result.text(),
+          f"elliptic blend: the lost convex hull shown on the warning line ({e.Status})")
     screenshot("gui_ellblend_panel.png")
+    type_into(panel.k, "0.55")
+    wait()
+    check(e.ConvexHull and not e.Warnings and not panel.warning[0].isVisible(),
+          "elliptic blend: the warning line goes with the warning")
     panel.sketch.setCurrentIndex(panel.sketch.count() - 1)
     n0 = len(doc.Objects)
     check(panel.accept(), "elliptic blend panel accepts")

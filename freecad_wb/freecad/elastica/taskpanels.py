@@ -371,13 +371,20 @@ class EllipticBlendPanel(Panel):
                                "arrows step by a factor of 10", decade=True)
         r = self.box("Result")
         self.row(r, "", self.result)
+        self.warning_row(r)
         out = self.box("Output")
         self.output_rows(out, (), "(new sketch in the curve's plane)")
 
     def result_text(self):
         o = self.obj
+        hull = "inside" if o.ConvexHull else "can leave"
         return (f"B-spline within {_fmt(o.BSplineDeviation)} of the curve (tolerance "
-                f"{_fmt(o.Tolerance)})<br>{o.Status}")
+                f"{_fmt(o.Tolerance)})<br>basis min {o.BasisMin:.3g}, condition "
+                f"{o.Condition:.3g}: the curve {hull} the hull of its control points<br>"
+                f"{o.Status.split('; ')[0]}")
+
+    def warnings(self):
+        return [w[0].upper() + w[1:] for w in self.obj.Warnings]
 
 
 class G2QuadPanel(Panel):
