@@ -244,6 +244,14 @@ def blend_panel(doc, S):
         click_arrow(panel.tension, up=True)
         wait()
         check(b.Solution == 1 or len(b.Lengths) < 2, "blend: the user's pick survives an edit")
+    panel.continuity.setCurrentIndex(1)         # G2 by tension: >= 0 only
+    wait()
+    check(b.Continuity == "G2" and not b.Status.startswith("error") and
+          panel.tension.minimum() == 0.0 and "guide ducks' forces" in panel.result.text(),
+          f"blend: G2 by tension, the tension field from 0 ({b.Status})")
+    panel.continuity.setCurrentIndex(0)
+    wait()
+    check(panel.tension.minimum() < 0, "blend: G1 takes a negative tension again")
     panel.picked = None
     panel.mode.setCurrentIndex(0)               # solve for a length
     wait()
@@ -572,8 +580,9 @@ def ellblend_panel(doc, S):
     panel.mode.setCurrentIndex(1)
     wait()
     check(e.Mode == "control" and e.Status == "ok" and panel.d.isEnabled()
-          and not panel.warning[0].isVisible(),
-          "elliptic blend panel: control points, d enabled, no warning")
+          and not panel.warning[0].isVisible() and
+          e.ViewObject.Proxy.overlay_counts() == (4, 3 * 2),
+          "elliptic blend panel: control points, d enabled, no warning, control polygon drawn")
     type_into(panel.k, "0.79")                 # m = 0.62: a blending function goes negative
     wait()
     check(not e.ConvexHull and e.Warnings and panel.warning[0].isVisible() and

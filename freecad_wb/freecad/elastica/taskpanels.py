@@ -110,6 +110,10 @@ class FitPanel(Panel):
                 f"<br>{curve}k = {ks}<br>{bs}<br>{o.Status}")
 
 
+G2_LIST_TIP = (". G2: these are the G1 solutions; the G2 blend is bent from the one picked "
+               "(its branch: loops, inflections)")
+
+
 class BlendPanel(Panel):
     title = "Elastic blend"
     icon_name = "blend"
@@ -139,8 +143,8 @@ class BlendPanel(Panel):
         self.list = QtGui.QListWidget()
         self.list.setWordWrap(True)
         self.list.setMinimumHeight(90)
-        self.list.setToolTip("Every elastic curve for these ends, by bending energy: length, "
-                             "energy, inflections, loops, largest curvature; pick one to use it")
+        self.list.setMaximumHeight(140)       # about three solutions; the panel stays short
+        self.list.setToolTip(self.LIST_TIP)
         self.list.currentRowChanged.connect(self.pick)
         self.row(s, "", self.list)
         self.row(s, "", self.result)
@@ -203,11 +207,22 @@ class BlendPanel(Panel):
                                        (self.tension, o.BlendTension, o.Mode == "tension")):
                 if not active:
                     self.show_value(box, value)
+        # a G2 blend is solved for a tension >= 0 (pushed: give a length); a negative one
+        # typed before stays, and the feature says why it is refused
+        g2_tension = o.Continuity == "G2" and o.Mode == "tension" and o.Tension >= 0
+        self.tension.blockSignals(True)
+        self.tension.setMinimum(0.0 if g2_tension else -1e6)
+        self.tension.blockSignals(False)
+        self.list.setToolTip(self.LIST_TIP + (G2_LIST_TIP if o.Continuity == "G2" else ""))
         super().refresh()
+
+    LIST_TIP = ("Every elastic curve for these ends, by bending energy: length, energy, "
+                "inflections, loops, largest curvature; pick one to use it")
 
     def result_text(self):
         o = self.obj
-        return f"{o.Status}; B-spline: {o.Poles} poles, degree {o.Degree}"
+        return "<br>".join(o.Status.split("; ") +
+                           [f"B-spline: {o.Poles} poles, degree {o.Degree}"])
 
     def copy_code(self):
         if not (self.into_sketch.isEnabled() and self.into_sketch.isChecked()):
@@ -321,14 +336,14 @@ class SplinePanel(Panel):
         if not forces:
             return ""
         ei = o.Stiffness
-        unit, scale = ("N", 0.5 * ei) if ei > 0 else ("EI/2\u00b7/mm\u00b2", 1.0)
+        unit, scale = ("N", 0.5 * ei) if ei > 0 else ("1/mm\u00b2 \u00d7 EI/2", 1.0)
         order = sorted(range(len(forces)), key=lambda i: -forces[i])[:self.MAX_DUCK_LINES]
         more = len(forces) - len(order)
         items = ", ".join(f"{i + 1}: {forces[i] * scale:.3g}" for i in sorted(order))
         guides = ", ".join(f"{v.Length * scale:.3g}" for v in o.GuideForces)
         return (f"duck forces ({unit}): {items}"
                 + (f" (the {len(order)} largest of {len(forces)})" if more else "")
-                + (f"; guide ducks: {guides}" if guides else ""))
+                + (f"; guide ducks (orange): {guides}" if guides else ""))
 
     def result_text(self):
         o = self.obj
@@ -372,16 +387,21 @@ class EllipticBlendPanel(Panel):
         r = self.box("Result")
         self.row(r, "", self.result)
         self.warning_row(r)
+        self.show_q = self.check(r, "Show the control polygon", "ShowControlPolygon",
+                                 "The control points q0..q3 and their polygon: with a negative "
+                                 "basis the curve can leave their convex hull",
+                                 target=self.obj.ViewObject)
         out = self.box("Output")
         self.output_rows(out, (), "(new sketch in the curve's plane)")
 
     def result_text(self):
         o = self.obj
-        hull = "inside" if o.ConvexHull else "can leave"
+        hull = "stays inside" if o.ConvexHull else "can leave"
         return (f"B-spline within {_fmt(o.BSplineDeviation)} of the curve (tolerance "
                 f"{_fmt(o.Tolerance)})<br>basis min {o.BasisMin:.3g}, condition "
-                f"{o.Condition:.3g}: the curve {hull} the hull of its control points<br>"
-                f"{o.Status.split('; ')[0]}")
+                f"{o.Condition:.3g}: the curve {hull} the hull of its control points"
+                + (f"<br>control points {o.Spread:.3g} times as far apart as the points"
+                   if o.Mode == "interpolate" else ""))
 
     def warnings(self):
         return [w[0].upper() + w[1:] for w in self.obj.Warnings]
