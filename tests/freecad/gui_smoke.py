@@ -11,8 +11,9 @@ tests/freecad/freecad.mk: the Elastica workbench used as a user would.
 - the preference page loads, saves and has its icon; commands are recorded.
 
 Screenshots (whole window, 3D view included) stay in $ELASTICA_TEST_OUT
-(build/freecad/): gui_demo.png, gui_blend_panel.png, gui_fit_panel.png,
-gui_spline_panel.png, gui_ellblend_panel.png, gui_g2quad_panel.png,
+(build/freecad/): gui_demo.png, gui_blend_panel.png (a G2 blend by length, its
+guide ducks), gui_fit_panel.png, gui_fit_ends.png, gui_spline_g2.png (a G2 start),
+gui_spline_panel.png, gui_ellblend_panel.png (its warning line), gui_g2quad_panel.png,
 gui_comb_panel.png. The outcome goes
 to gui_smoke.result (first line PASS or FAIL); FreeCAD is then ended with os._exit
 because its exit status says nothing about a script. Only APIs present in FreeCAD
