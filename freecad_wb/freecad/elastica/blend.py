@@ -338,13 +338,14 @@ class BlendProxy(FeatureProxy):
         obj.BlendTension = float(sp.tension if sp else getattr(curves[i], "sigma", 0.0))
         if sp:
             forces = ", ".join(f"{float(np().hypot(*f)):.3g}" for f in sp.guide_forces)
+            bends = plural(inflections(sp.pieces), "inflection")
             free = " (free batten)" if tension_text(sp.tension, sp.length).startswith("0/") \
                 else ""
             # "; " parts: the panel shows one a line
             obj.Status = (f"G2 from solution {i + 1} of {len(curves)}{r['g2_note']}; length "
                           f"{sp.length:.4g} mm, tension {tension_text(sp.tension, sp.length)}"
                           f"{free}; energy {sp.energy:.3g}/mm, max curvature "
-                          f"{sp.max_curvature:.3g}/mm, {plural(inflections(sp.pieces), 'inflection')}"
+                          f"{sp.max_curvature:.3g}/mm, {bends}"
                           f"; guide ducks' forces {forces} (1/mm\u00b2 \u00d7 EI/2)")
         else:
             obj.Status = f"solution {i + 1} of {len(curves)}"
