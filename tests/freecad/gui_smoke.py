@@ -582,7 +582,7 @@ def ellblend_panel(doc, S):
     wait()
     check(e.Mode == "control" and e.Status == "ok" and panel.d.isEnabled()
           and not panel.warning[0].isVisible() and
-          e.ViewObject.Proxy.overlay_counts() == (4, 3 * 2),
+          e.ViewObject.Proxy.overlay_counts() == (4, 3),
           "elliptic blend panel: control points, d enabled, no warning, control polygon drawn")
     type_into(panel.k, "0.79")                 # m = 0.62: a blending function goes negative
     wait()
