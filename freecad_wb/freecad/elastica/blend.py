@@ -188,8 +188,9 @@ def plural(n, word):
 
 
 def tension_text(sigma, length):
-    """sigma in 1/mm^2, rounding noise (below 1e-9 of the scale 1/length^2) shown as 0."""
-    return f"{0.0 if abs(sigma) * length ** 2 < 1e-9 else sigma:.3g}/mm\u00b2"
+    """sigma in 1/mm^2 (the unit of the Tension fields), rounding noise (below 1e-9 of
+    the scale 1/length^2) shown as 0."""
+    return f"{0.0 if abs(sigma) * length ** 2 < 1e-9 else sigma:.3g} 1/mm\u00b2"
 
 
 def solution_text(i, length, energy, infl, loops, kmax):
@@ -339,7 +340,7 @@ class BlendProxy(FeatureProxy):
         if sp:
             forces = ", ".join(f"{float(np().hypot(*f)):.3g}" for f in sp.guide_forces)
             bends = plural(inflections(sp.pieces), "inflection")
-            free = " (free batten)" if tension_text(sp.tension, sp.length).startswith("0/") \
+            free = " (free batten)" if tension_text(sp.tension, sp.length).startswith("0 ") \
                 else ""
             # "; " parts: the panel shows one a line
             obj.Status = (f"G2 from solution {i + 1} of {len(curves)}{r['g2_note']}; length "

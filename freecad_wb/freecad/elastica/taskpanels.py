@@ -349,8 +349,9 @@ class SplinePanel(Panel):
         o = self.obj
         radius = f" (radius {1 / o.MaxCurvature:.3g} mm)" if o.MaxCurvature > 0 else ""
         notes = o.Status.split("; ")[1:]
-        lines = [f"length {_fmt(o.SplineLength)}, tension {o.SplineTension:.4g}/mm\u00b2"
-                 + (" (free batten)" if o.SplineTension == 0 else ""),
+        tension = B.tension_text(o.SplineTension, o.SplineLength)
+        lines = [f"length {_fmt(o.SplineLength)}, tension {tension}"
+                 + (" (free batten)" if tension.startswith("0 ") else ""),
                  f"energy \u222b\u03ba\u00b2 {o.Energy:.4g}/mm, max curvature "
                  f"{o.MaxCurvature:.3g}/mm{radius}",
                  self.forces_text(),
