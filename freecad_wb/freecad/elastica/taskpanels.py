@@ -147,6 +147,10 @@ class BlendPanel(Panel):
         self.list.setToolTip(self.LIST_TIP)
         self.list.currentRowChanged.connect(self.pick)
         self.row(s, "", self.list)
+        # the G2 batten of the free length (Length 0) starts from the library's own guess:
+        # no G1 solution to pick
+        self.enablers.append((self.list, lambda: not (o.Continuity == "G2" and
+                                                      o.Mode == "length" and o.Length == 0)))
         self.row(s, "", self.result)
         self.bspline_box("the elastica", "Degree of the B-spline (3 to 7): 5 to 7 need few "
                          "poles")
