@@ -11,8 +11,9 @@ tests/freecad/freecad.mk: the Elastica workbench used as a user would.
 - the preference page loads, saves and has its icon; commands are recorded.
 
 Screenshots (whole window, 3D view included) stay in $ELASTICA_TEST_OUT
-(build/freecad/): gui_demo.png, gui_blend_panel.png, gui_fit_panel.png,
-gui_spline_panel.png, gui_ellblend_panel.png, gui_g2quad_panel.png,
+(build/freecad/): gui_demo.png, gui_blend_panel.png (a G2 blend by length, its
+guide ducks), gui_fit_panel.png, gui_fit_ends.png, gui_spline_g2.png (a G2 start),
+gui_spline_panel.png, gui_ellblend_panel.png (its warning line), gui_g2quad_panel.png,
 gui_comb_panel.png. The outcome goes
 to gui_smoke.result (first line PASS or FAIL); FreeCAD is then ended with os._exit
 because its exit status says nothing about a script. Only APIs present in FreeCAD
@@ -244,6 +245,14 @@ def blend_panel(doc, S):
         click_arrow(panel.tension, up=True)
         wait()
         check(b.Solution == 1 or len(b.Lengths) < 2, "blend: the user's pick survives an edit")
+    panel.continuity.setCurrentIndex(1)         # G2 by tension: >= 0 only
+    wait()
+    check(b.Continuity == "G2" and not b.Status.startswith("error") and
+          panel.tension.minimum() == 0.0 and "guide ducks' forces" in panel.result.text(),
+          f"blend: G2 by tension, the tension field from 0 ({b.Status})")
+    panel.continuity.setCurrentIndex(0)
+    wait()
+    check(panel.tension.minimum() < 0, "blend: G1 takes a negative tension again")
     panel.picked = None
     panel.mode.setCurrentIndex(0)               # solve for a length
     wait()
@@ -545,7 +554,8 @@ def fit_panel_ends(doc, f, lines):
     wait()
     check("Start curvature cannot be met" in panel.result.text() and
           abs(f.Shape.Length - shape.Length) < 1e-12,
-          "fit: a start curvature the model cannot meet: the panel names it, the shape stays")
+          "fit: a start curvature the model cannot meet: the panel names it, the shape stays "
+          f"({f.Status})")
     panel.reject()
     pump()
     after = (f.Model, f.SplitAtInflection, f.PinEnd, f.StartTangent, round(f.Rms, 12),
@@ -570,9 +580,20 @@ def ellblend_panel(doc, S):
           "elliptic blend: an arrow click on k previews k = 0.55")
     panel.mode.setCurrentIndex(1)
     wait()
-    check(e.Mode == "control" and e.Status == "ok" and panel.d.isEnabled(),
-          "elliptic blend panel: control points, d enabled")
+    check(e.Mode == "control" and e.Status == "ok" and panel.d.isEnabled()
+          and not panel.warning[0].isVisible() and
+          e.ViewObject.Proxy.overlay_counts() == (4, 3),
+          "elliptic blend panel: control points, d enabled, no warning, control polygon drawn")
+    type_into(panel.k, "0.79")                 # m = 0.62: a blending function goes negative
+    wait()
+    check(not e.ConvexHull and e.Warnings and panel.warning[0].isVisible() and
+          "convex hull" in panel.warning[1].text() and "error" not in panel.result.text(),
+          f"elliptic blend: the lost convex hull shown on the warning line ({e.Status})")
     screenshot("gui_ellblend_panel.png")
+    type_into(panel.k, "0.55")
+    wait()
+    check(e.ConvexHull and not e.Warnings and not panel.warning[0].isVisible(),
+          "elliptic blend: the warning line goes with the warning")
     panel.sketch.setCurrentIndex(panel.sketch.count() - 1)
     n0 = len(doc.Objects)
     check(panel.accept(), "elliptic blend panel accepts")

@@ -1,9 +1,12 @@
 """freecadcmd -t tests of the Elliptic blend curve (seed 003): creation from a sketch
 of four points and from 3D vertices, parametric update when a point moves, save /
-reopen / recompute, B-spline into a sketch, and bad input (document unchanged).
+reopen / recompute, B-spline into a sketch, bad input (document unchanged), and the
+warnings (a basis that loses the convex hull, an ill-conditioned interpolation): set,
+said once in the report view, cleared.
 
 The shape is checked against the library's own blending curve: through the four
 points in interpolate mode, from q0 to q3 with the picked control points otherwise."""
+import math
 import os
 import tempfile
 import unittest
@@ -17,6 +20,47 @@ from freecad.elastica import ellblend as El
 from freecad.elastica import geometry as G
 
 XY = [(0.0, 0.0), (20.0, 35.0), (55.0, 40.0), (80.0, 5.0)]
+ZIGZAG = [(0.0, 0.0), (40.0, 40.0), (0.0, 40.0), (40.0, 0.0)]    # a Z: the curve must swing
+# control points whose curve leaves their hull where h_1 < 0 (m = 0.62, d = 2: h_1(0.27)
+# = -0.18 pulls the curve below the base line q0 q3)
+HIGH_Q1 = [(0.0, 0.0), (40.0, 40.0), (40.0, 0.0), (80.0, 0.0)]
+
+
+def _hull(xy):
+    """Convex hull (counter-clockwise) of 2D points (monotone chain)."""
+    pts = sorted(set(xy))
+
+    def half(seq):
+        out = []
+        for p in seq:
+            while len(out) >= 2 and ((out[-1][0] - out[-2][0]) * (p[1] - out[-2][1]) -
+                                     (out[-1][1] - out[-2][1]) * (p[0] - out[-2][0])) <= 0:
+                out.pop()
+            out.append(p)
+        return out[:-1]
+    return half(pts) + half(pts[::-1])
+
+
+def _outside(hull, p):
+    """How far p lies outside the convex polygon hull (<= 0: inside)."""
+    out = -math.inf
+    for (ax, ay), (bx, by) in zip(hull, hull[1:] + hull[:1]):
+        ex, ey = bx - ax, by - ay
+        out = max(out, ((p[0] - ax) * ey - (p[1] - ay) * ex) / math.hypot(ex, ey))
+    return out
+
+
+class _Warnings:
+    """Counts the report view's warnings (App.Console.PrintWarning) while active."""
+
+    def __enter__(self):
+        self.said = []
+        self.saved = App.Console.PrintWarning
+        App.Console.PrintWarning = lambda text: self.said.append(text)
+        return self
+
+    def __exit__(self, *exc):
+        App.Console.PrintWarning = self.saved
 
 
 def _vertices(doc, pts3d, prefix="P"):
@@ -40,7 +84,8 @@ class EllipticBlendTest(unittest.TestCase):
         App.closeDocument(self.doc.Name)
 
     def _ok(self, obj):
-        self.assertEqual(obj.Status, "ok")
+        # "ok", or "ok; warning: ..." with each of its Warnings
+        self.assertEqual(obj.Status, "; ".join(["ok"] + [f"warning: {w}" for w in obj.Warnings]))
         self.assertEqual(len(obj.Shape.Edges), 1)
         self.assertIsInstance(obj.Shape.Edges[0].Curve, Part.BSplineCurve)
         self.assertTrue(0 < obj.BSplineDeviation <= obj.Tolerance)
@@ -210,3 +255,91 @@ class EllipticBlendTest(unittest.TestCase):
         f.K = 0.5
         self.doc.recompute()
         self.assertEqual(f.Status, "ok")
+
+    def _plane_xy(self, f, points):
+        inv = f.Plane.inverse()
+        return [(p.x, p.y) for p in (inv.multVec(v) for v in points)]
+
+    def test_basis_off_the_convex_hull_is_warned_once_and_cleared(self):
+        self.sk = S.points_sketch(self.doc, HIGH_Q1, "HighQ1")
+        f = El.make(self.doc, [(self.sk, [])], Mode="control", K=0.3, KConvention="parameter")
+        with _Warnings() as w:
+            self.doc.recompute()
+            self.assertEqual(f.Status, "ok")
+            self.assertTrue(f.ConvexHull and f.BasisMin > -1e-12 and not f.Warnings)
+            self.assertAlmostEqual(f.Lebesgue, 1.0, delta=1e-9)
+            self.assertEqual(f.Spread, 1.0)
+            self.assertEqual(w.said, [])
+            f.K = 0.62                      # m = 0.62 > 0.6: a blending function goes negative
+            self.doc.recompute()
+            self.assertFalse(f.ConvexHull)
+            self.assertLess(f.BasisMin, -0.1)
+            self.assertGreater(f.Lebesgue, 1.3)
+            self.assertGreater(f.Condition, 100)
+            self.assertEqual(len(f.Warnings), 1)
+            self.assertIn("convex hull", f.Warnings[0])
+            self.assertTrue(f.Status.startswith("ok; warning: the basis is negative"), f.Status)
+            self.assertEqual(len(w.said), 1)
+            self.assertIn(f.Label, w.said[0])
+            # what it says is true: the curve leaves its control points' convex hull
+            hull = _hull(self._plane_xy(f, f.ControlPoints))
+            far = max(_outside(hull, p) for p in
+                      self._plane_xy(f, f.Shape.Edges[0].discretize(400)))
+            self.assertGreater(far, 0.01 * f.Shape.BoundBox.DiagonalLength)
+            # the same basis again (a recompute, a moved point): not said again
+            f.touch()
+            self.doc.recompute()
+            self.sk.movePoint(1, 1, App.Vector(42, 40, 0))
+            self.doc.recompute()
+            self.assertFalse(f.ConvexHull)
+            self.assertEqual(len(w.said), 1)
+            f.K = 0.3                       # back inside: cleared, silently
+            self.doc.recompute()
+            self.assertEqual(f.Status, "ok")
+            self.assertTrue(f.ConvexHull and not f.Warnings)
+            self.assertEqual(len(w.said), 1)
+            f.K = 0.62                      # a new change: said again
+            self.doc.recompute()
+            self.assertEqual(len(w.said), 2)
+
+    def test_ill_conditioned_interpolation_is_warned(self):
+        zig = S.points_sketch(self.doc, ZIGZAG, "Zigzag")
+        f = El.make(self.doc, [(zig, [])], K=0.3)
+        with _Warnings() as w:
+            self.doc.recompute()
+            self.assertEqual(f.Status, "ok")
+            self.assertTrue(f.ConvexHull and not f.Warnings and f.Spread < El.SPREAD_MAX)
+            f.K = 0.7                       # the basis keeps the hull, the collocation does not
+            self.doc.recompute()
+            self.assertTrue(f.ConvexHull)
+            self.assertGreater(f.Spread, El.SPREAD_MAX)
+            self.assertEqual(len(f.Warnings), 1)
+            self.assertIn("ill-conditioned", f.Warnings[0])
+            self.assertEqual(len(w.said), 1)
+            # what it says is true: the curve swings far outside the points it goes through
+            pts = [S.SKETCH_PLACEMENT.multVec(App.Vector(x, y, 0)) for x, y in ZIGZAG]
+            size = max((a - b).Length for a in pts for b in pts)
+            on = f.Shape.Edges[0].discretize(400)
+            swing = max((a - b).Length for a in on for b in on[::10])
+            self.assertGreater(swing, 2.0 * size)
+            self.assertEqual(len(f.Warnings), 1)
+            f.Mode = "control"              # the points as control points: no collocation
+            self.doc.recompute()
+            self.assertEqual((f.Status, f.Spread, list(f.Warnings)), ("ok", 1.0, []))
+
+    def test_warnings_kept_when_reopened(self):
+        f = El.make(self.doc, [(self.sk, [])], Mode="control", K=0.62, KConvention="parameter")
+        self.doc.recompute()
+        warnings = list(f.Warnings)
+        self.assertEqual(len(warnings), 1)
+        path = os.path.join(tempfile.mkdtemp(), "warned.FCStd")
+        self.doc.saveAs(path)
+        name = f.Name
+        App.closeDocument(self.doc.Name)
+        self.doc = App.openDocument(path)
+        f = self.doc.getObject(name)
+        self.assertEqual(list(f.Warnings), warnings)
+        with _Warnings() as w:
+            f.touch()
+            self.doc.recompute()
+        self.assertEqual((list(f.Warnings), w.said), (warnings, []))

@@ -183,10 +183,19 @@ def total_energy(curve, sigma):
     return bending_energy(curve) + float(sigma) * float(curve.length)
 
 
+def plural(n, word):
+    return f"{n} {word}{'' if n == 1 else 's'}"
+
+
+def tension_text(sigma, length):
+    """sigma in 1/mm^2 (the unit of the Tension fields), rounding noise (below 1e-9 of
+    the scale 1/length^2) shown as 0."""
+    return f"{0.0 if abs(sigma) * length ** 2 < 1e-9 else sigma:.3g} 1/mm\u00b2"
+
+
 def solution_text(i, length, energy, infl, loops, kmax):
-    return (f"{i + 1}: {length:.4g} mm, energy {energy:.3g}/mm, {infl} inflection"
-            f"{'' if infl == 1 else 's'}, {loops} loop{'' if loops == 1 else 's'}, "
-            f"max curvature {kmax:.3g}/mm")
+    return (f"{i + 1}: {length:.4g} mm, energy {energy:.3g}/mm, {plural(infl, 'inflection')}, "
+            f"{plural(loops, 'loop')}, max curvature {kmax:.3g}/mm")
 
 
 class BlendProxy(FeatureProxy):
@@ -249,7 +258,7 @@ class BlendProxy(FeatureProxy):
                      "quarter of the way in from each edge; empty for G1")
         add_property(obj, "App::PropertyVectorList", "GuideForces", "Result",
                      "G2: the force each guide duck exerts on the batten (global directions, "
-                     "units of EI/2: 1/mm^2; normal to the batten)")
+                     "in 1/mm^2: times EI/2 in N mm^2 gives newtons; normal to the batten)")
         add_property(obj, "App::PropertyFloat", "BlendLength", "Result",
                      "Length of the blend on screen (mm): the chosen solution's, or the G2 "
                      "batten's")
@@ -330,11 +339,15 @@ class BlendProxy(FeatureProxy):
         obj.BlendTension = float(sp.tension if sp else getattr(curves[i], "sigma", 0.0))
         if sp:
             forces = ", ".join(f"{float(np().hypot(*f)):.3g}" for f in sp.guide_forces)
-            obj.Status = (f"G2 from solution {i + 1} of {len(curves)}{r['g2_note']}: "
-                          f"{sp.length:.4g} mm, tension {sp.tension:.3g}/mm\u00b2, energy "
-                          f"{sp.energy:.3g}/mm, max curvature {sp.max_curvature:.3g}/mm, "
-                          f"{inflections(sp.pieces)} inflections; guide ducks' forces {forces} "
-                          "EI/2/mm\u00b2")
+            bends = plural(inflections(sp.pieces), "inflection")
+            free = " (free batten)" if tension_text(sp.tension, sp.length).startswith("0 ") \
+                else ""
+            # "; " parts: the panel shows one a line
+            obj.Status = (f"G2 from solution {i + 1} of {len(curves)}{r['g2_note']}; length "
+                          f"{sp.length:.4g} mm, tension {tension_text(sp.tension, sp.length)}"
+                          f"{free}; energy {sp.energy:.3g}/mm, max curvature "
+                          f"{sp.max_curvature:.3g}/mm, {bends}"
+                          f"; guide ducks' forces {forces} (1/mm\u00b2 \u00d7 EI/2)")
         else:
             obj.Status = f"solution {i + 1} of {len(curves)}"
 

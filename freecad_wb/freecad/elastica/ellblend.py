@@ -1,9 +1,20 @@
 """Elliptic blend curve (seed 003): the curve with Jacobi elliptic blending functions
 {1-t, sn((1-t)K), sn(Kt), t} through four picked coplanar points (or with them as
-control points), as a certified B-spline."""
+control points), as a certified B-spline.
+
+The basis is not always a partition of unity with positive functions: from about
+m = k^2 = 0.6 (d = 2) a blending function goes negative, the curve can leave the
+convex hull of its control points and moves further than they do (the Lebesgue
+factor), and near K(k) = 2 the system defining the basis is ill-conditioned; through
+the points, the collocation system can put the control points far away (Spread) and
+the curve swings wide. The feature keeps those figures (BasisMin, Lebesgue,
+Condition, ConvexHull, Spread), words them in Warnings, and says them once in the
+report view when they change."""
 from __future__ import annotations
 
 import math
+
+import FreeCAD as App
 
 from . import defaults
 from .geometry import el, np, part_bspline, plane_coordinates, to_3d
@@ -13,6 +24,33 @@ from .sources import gather_vertices
 
 MODES = ["interpolate", "control"]
 K_CONVENTIONS = ["modulus", "parameter"]
+# Through the points, the control points solve a 4x4 collocation system; when they
+# spread more than this many times as far as the points, the solve amplifies every
+# move of a point that much and the curve swings far outside them (a Z of four
+# points at k = 0.7: 43 times, the curve 4 times the points' size; at k = 0 the
+# same Z gives 10 and 1.4): the interpolation is ill-conditioned.
+SPREAD_MAX = 20.0
+
+
+def diameter(xy):
+    """The largest distance between two of the points (n, 2)."""
+    n = np()
+    return float(n.max(n.hypot(*(xy[:, None, :] - xy[None, :, :]).transpose(2, 0, 1))))
+
+
+def interpolation_warnings(xy, curve, mode):
+    """(spread, [warning]): how many times as far apart as the picked points xy the
+    control points lie (1 with mode 'control'), and the warning when over SPREAD_MAX."""
+    if mode != "interpolate":
+        return 1.0, []
+    spread = diameter(curve.q) / diameter(xy)
+    if spread <= SPREAD_MAX:
+        return spread, []
+    swing = diameter(curve.points()) / diameter(xy)
+    return spread, [f"the interpolation is ill-conditioned: the control points lie up to "
+                    f"{spread:.3g} times as far apart as the points and the curve spans "
+                    f"{swing:.3g} times their size; a smaller k, other points or control "
+                    "points give a tamer curve"]
 
 
 def ellblend_core(points, plane=None, mode="interpolate", k=0.5, d=2.0, tol=1e-3,
@@ -24,7 +62,8 @@ def ellblend_core(points, plane=None, mode="interpolate", k=0.5, d=2.0, tol=1e-3
     'parameter' m = k^2 (the paper's 'k'); ``d`` the end-derivative parameter.
     Returns a dict with 'curve' (libelastica BlendCurve, plane coordinates),
     'bspline' (certified within ``tol``), 'placement', 'control' (3D control
-    points). Raises InputProblem."""
+    points), 'spread' (control points' diameter / points', 1 for control points),
+    'warnings' (the basis' and the interpolation's, in words). Raises InputProblem."""
     if len(points) != 4:
         raise InputProblem(f"{len(points)} points: an elliptic blend needs exactly four")
     if mode not in MODES:
@@ -50,12 +89,13 @@ def ellblend_core(points, plane=None, mode="interpolate", k=0.5, d=2.0, tol=1e-3
         raise
     except (ValueError, ArithmeticError, RuntimeError) as exc:
         hint = ""
-        if "singular" in str(exc).lower():
-            hint = (" (the basis is singular near k = 0.80241, m = 0.64386; in interpolate "
-                    "mode the points may be degenerate)")
+        if "singular" in str(exc).lower() and "K(k) = 2" not in str(exc):
+            hint = " (in interpolate mode: the points may be degenerate)"
         raise InputProblem(f"elliptic blend failed: {exc}{hint}") from None
+    spread, bad_fit = interpolation_warnings(xy, curve, mode)
     return {"curve": curve, "bspline": bs, "placement": plane,
-            "control": to_3d(plane, curve.q)}
+            "control": to_3d(plane, curve.q), "spread": spread,
+            "warnings": list(curve.basis.warnings()) + bad_fit}
 
 
 class EllipticBlendProxy(FeatureProxy):
@@ -85,9 +125,27 @@ class EllipticBlendProxy(FeatureProxy):
                      "Certified distance of the B-spline from the blending curve (mm)")
         add_property(obj, "App::PropertyVectorList", "ControlPoints", "Result",
                      "The curve's four control points q0..q3 (global coordinates)")
+        add_property(obj, "App::PropertyFloat", "BasisMin", "Result",
+                     "Smallest value of a blending function on [0, 1]: negative, the curve can "
+                     "leave the convex hull of its control points")
+        add_property(obj, "App::PropertyBool", "ConvexHull", "Result",
+                     "Every blending function is >= 0: the curve stays inside the convex hull "
+                     "of its control points")
+        add_property(obj, "App::PropertyFloat", "Lebesgue", "Result",
+                     "Largest sum of |blending functions| (1 with the convex hull): a curve "
+                     "point moves at most this many times as far as a control point")
+        add_property(obj, "App::PropertyFloat", "Condition", "Result",
+                     "Condition number of the system (2.17) that defines the basis (bases above "
+                     "1000, k near 0.80241, are refused)")
+        add_property(obj, "App::PropertyFloat", "Spread", "Result",
+                     "Through the points: how many times as far apart as the points the "
+                     "control points lie (over 20: ill-conditioned); 1 for control points")
+        add_property(obj, "App::PropertyStringList", "Warnings", "Result",
+                     "What the designer should know about this basis (empty: none)")
         add_property(obj, "App::PropertyString", "Status", "Result", "Outcome of the last update")
         add_property(obj, "App::PropertyPlacement", "Plane", "Result", "The plane of the curve")
-        read_only(obj, "BSplineDeviation", "ControlPoints", "Status", "Plane")
+        read_only(obj, "BSplineDeviation", "ControlPoints", "BasisMin", "ConvexHull", "Lebesgue",
+                  "Condition", "Spread", "Warnings", "Status", "Plane")
 
     def compute(self, obj):
         """ellblend_core's dict for the linked points; raises InputProblem."""
@@ -99,7 +157,19 @@ class EllipticBlendProxy(FeatureProxy):
         obj.BSplineDeviation = float(r["bspline"].max_deviation)
         obj.ControlPoints = r["control"]
         obj.Plane = r["placement"]
-        obj.Status = "ok"
+        basis = r["curve"].basis
+        obj.BasisMin = float(basis.basis_min)
+        obj.ConvexHull = bool(basis.convex_hull)
+        obj.Lebesgue = float(basis.lebesgue)
+        obj.Condition = float(basis.condition)
+        obj.Spread = float(r["spread"])
+        warnings = r["warnings"]
+        if warnings != list(obj.Warnings):
+            # once per change of the warnings, not on every recompute of the same basis
+            for w in warnings:
+                App.Console.PrintWarning(f"Elastica {obj.Label}: {w}\n")
+            obj.Warnings = warnings
+        obj.Status = "; ".join(["ok"] + [f"warning: {w}" for w in warnings])
 
 
 def make(doc, sources=(), **props):

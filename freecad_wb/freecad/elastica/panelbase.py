@@ -15,6 +15,7 @@ from .geometry import is_sketch
 
 CURRENT = []        # the open panel, if any (scripts and the GUI smoke test drive it)
 DELAY_MS = 150      # recompute after this pause in editing
+WARNING_RGB = "#b36200"   # the amber of FreeCAD's report-view warnings, dark enough to read
 
 
 def _sketches(doc, exclude=()):
@@ -112,6 +113,7 @@ class Panel:
         self.result = QtGui.QLabel()
         self.result.setWordWrap(True)
         self.result.setTextInteractionFlags(QtCore.Qt.TextSelectableByMouse)
+        self.warning = None             # the warning line, when the panel has one
         self.form = []
         self.build()
         self.refresh()
@@ -142,6 +144,31 @@ class Panel:
         if tip:
             widget.setToolTip(tip)
         return widget
+
+    def warning_row(self, grid):
+        """A warning line (hidden while there is nothing to say): the standard warning
+        icon and amber text, as FreeCAD's dialogs and report view show warnings."""
+        w = QtGui.QWidget()
+        lay = QtGui.QHBoxLayout(w)
+        lay.setContentsMargins(0, 0, 0, 0)
+        sign = QtGui.QLabel()
+        size = w.style().pixelMetric(QtGui.QStyle.PM_SmallIconSize)
+        sign.setPixmap(w.style().standardIcon(QtGui.QStyle.SP_MessageBoxWarning).pixmap(size))
+        sign.setAlignment(QtCore.Qt.AlignTop)
+        text = QtGui.QLabel()
+        text.setWordWrap(True)
+        text.setTextInteractionFlags(QtCore.Qt.TextSelectableByMouse)
+        text.setStyleSheet(f"color: {WARNING_RGB}")
+        lay.addWidget(sign)
+        lay.addWidget(text, 1)
+        self.row(grid, "", w)
+        w.setVisible(False)
+        self.warning = (w, text)
+        return w
+
+    def warnings(self):
+        """What the warning line says (a list of sentences; none: hidden)."""
+        return []
 
     def number(self, grid, label, prop, lo, hi, step, unit, tip, decade=False, when=None):
         """A spin box bound live to the float property prop."""
@@ -344,6 +371,10 @@ class Panel:
             self.result.setText(f"<b style='color:#b00'>{o.Status}</b>")
         else:
             self.result.setText(self.result_text())
+        if self.warning is not None:
+            said = [] if o.Status.startswith("error") else self.warnings()
+            self.warning[1].setText("<br>".join(said))
+            self.warning[0].setVisible(bool(said))
         self.refresh_enabled()
 
     def refresh_enabled(self):

@@ -171,12 +171,10 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
     sp, note = _solve(xy, mode, value, closed, *specs)
     if note:
         notes.append(note)
-    guides = iter(sp.guide_forces)
     for j, name in ((0, "first"), (-1, "last")):
-        if isinstance(specs[j], dict):
+        if isinstance(specs[j], dict):     # its force: GuideForces
             notes.append(f"G2 {'start' if j == 0 else 'end'}: a guide duck a quarter into the "
-                         f"{name} span holds the batten there (force "
-                         f"{float(n.hypot(*next(guides))):.3g} EI/2/mm\u00b2)")
+                         f"{name} span holds the batten there")
     try:
         bs = sp.to_bspline(tol, degree)
     except (ValueError, ArithmeticError, RuntimeError) as exc:

@@ -110,6 +110,10 @@ class FitPanel(Panel):
                 f"<br>{curve}k = {ks}<br>{bs}<br>{o.Status}")
 
 
+G2_LIST_TIP = (". G2: these are the G1 solutions; the G2 blend is bent from the one picked "
+               "(its branch: loops, inflections)")
+
+
 class BlendPanel(Panel):
     title = "Elastic blend"
     icon_name = "blend"
@@ -139,10 +143,14 @@ class BlendPanel(Panel):
         self.list = QtGui.QListWidget()
         self.list.setWordWrap(True)
         self.list.setMinimumHeight(90)
-        self.list.setToolTip("Every elastic curve for these ends, by bending energy: length, "
-                             "energy, inflections, loops, largest curvature; pick one to use it")
+        self.list.setMaximumHeight(140)       # about three solutions; the panel stays short
+        self.list.setToolTip(self.LIST_TIP)
         self.list.currentRowChanged.connect(self.pick)
         self.row(s, "", self.list)
+        # the G2 batten of the free length (Length 0) starts from the library's own guess:
+        # no G1 solution to pick
+        self.enablers.append((self.list, lambda: not (o.Continuity == "G2" and
+                                                      o.Mode == "length" and o.Length == 0)))
         self.row(s, "", self.result)
         self.bspline_box("the elastica", "Degree of the B-spline (3 to 7): 5 to 7 need few "
                          "poles")
@@ -203,11 +211,22 @@ class BlendPanel(Panel):
                                        (self.tension, o.BlendTension, o.Mode == "tension")):
                 if not active:
                     self.show_value(box, value)
+        # a G2 blend is solved for a tension >= 0 (pushed: give a length); a negative one
+        # typed before stays, and the feature says why it is refused
+        g2_tension = o.Continuity == "G2" and o.Mode == "tension" and o.Tension >= 0
+        self.tension.blockSignals(True)
+        self.tension.setMinimum(0.0 if g2_tension else -1e6)
+        self.tension.blockSignals(False)
+        self.list.setToolTip(self.LIST_TIP + (G2_LIST_TIP if o.Continuity == "G2" else ""))
         super().refresh()
+
+    LIST_TIP = ("Every elastic curve for these ends, by bending energy: length, energy, "
+                "inflections, loops, largest curvature; pick one to use it")
 
     def result_text(self):
         o = self.obj
-        return f"{o.Status}; B-spline: {o.Poles} poles, degree {o.Degree}"
+        return "<br>".join(o.Status.split("; ") +
+                           [f"B-spline: {o.Poles} poles, degree {o.Degree}"])
 
     def copy_code(self):
         if not (self.into_sketch.isEnabled() and self.into_sketch.isChecked()):
@@ -321,21 +340,22 @@ class SplinePanel(Panel):
         if not forces:
             return ""
         ei = o.Stiffness
-        unit, scale = ("N", 0.5 * ei) if ei > 0 else ("EI/2\u00b7/mm\u00b2", 1.0)
+        unit, scale = ("N", 0.5 * ei) if ei > 0 else ("1/mm\u00b2 \u00d7 EI/2", 1.0)
         order = sorted(range(len(forces)), key=lambda i: -forces[i])[:self.MAX_DUCK_LINES]
         more = len(forces) - len(order)
         items = ", ".join(f"{i + 1}: {forces[i] * scale:.3g}" for i in sorted(order))
         guides = ", ".join(f"{v.Length * scale:.3g}" for v in o.GuideForces)
         return (f"duck forces ({unit}): {items}"
                 + (f" (the {len(order)} largest of {len(forces)})" if more else "")
-                + (f"; guide ducks: {guides}" if guides else ""))
+                + (f"; guide ducks (orange): {guides}" if guides else ""))
 
     def result_text(self):
         o = self.obj
         radius = f" (radius {1 / o.MaxCurvature:.3g} mm)" if o.MaxCurvature > 0 else ""
         notes = o.Status.split("; ")[1:]
-        lines = [f"length {_fmt(o.SplineLength)}, tension {o.SplineTension:.4g}/mm\u00b2"
-                 + (" (free batten)" if o.SplineTension == 0 else ""),
+        tension = B.tension_text(o.SplineTension, o.SplineLength)
+        lines = [f"length {_fmt(o.SplineLength)}, tension {tension}"
+                 + (" (free batten)" if tension.startswith("0 ") else ""),
                  f"energy \u222b\u03ba\u00b2 {o.Energy:.4g}/mm, max curvature "
                  f"{o.MaxCurvature:.3g}/mm{radius}",
                  self.forces_text(),
@@ -371,13 +391,25 @@ class EllipticBlendPanel(Panel):
                                "arrows step by a factor of 10", decade=True)
         r = self.box("Result")
         self.row(r, "", self.result)
+        self.warning_row(r)
+        self.show_q = self.check(r, "Show the control polygon", "ShowControlPolygon",
+                                 "The control points q0..q3 and their polygon: with a negative "
+                                 "basis the curve can leave their convex hull",
+                                 target=self.obj.ViewObject)
         out = self.box("Output")
         self.output_rows(out, (), "(new sketch in the curve's plane)")
 
     def result_text(self):
         o = self.obj
+        hull = "stays inside" if o.ConvexHull else "can leave"
         return (f"B-spline within {_fmt(o.BSplineDeviation)} of the curve (tolerance "
-                f"{_fmt(o.Tolerance)})<br>{o.Status}")
+                f"{_fmt(o.Tolerance)})<br>basis min {o.BasisMin:.3g}, condition "
+                f"{o.Condition:.3g}: the curve {hull} the hull of its control points"
+                + (f"<br>control points {o.Spread:.3g} times as far apart as the points"
+                   if o.Mode == "interpolate" else ""))
+
+    def warnings(self):
+        return [w[0].upper() + w[1:] for w in self.obj.Warnings]
 
 
 class G2QuadPanel(Panel):

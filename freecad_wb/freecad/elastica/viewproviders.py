@@ -7,7 +7,9 @@ comb takes its source's colour), double-click opens its task panel, and a
 feature whose last recompute failed is drawn dashed (it shows the last good
 shape). A fit also draws the points it fitted (markers) and, optionally, the
 residual segments to their points on the curve; a G2 quadratic B-spline its
-affine arc-length polyline (optionally)."""
+affine arc-length polyline, an elliptic blend its control polygon (optionally); an
+elastic spline its ducks, comb and forces, and the guide ducks of G2 ends (also a
+G2 blend's) in orange, larger than the curve is wide."""
 from __future__ import annotations
 
 import FreeCAD as App
@@ -23,11 +25,20 @@ ICONS = {"Fit": "fit", "Blend": "blend", "Comb": "comb", "EllipticBlend": "ellbl
 WIDTHS = {"Fit": 3.0, "Blend": 3.0, "Comb": 1.0, "EllipticBlend": 3.0, "G2Quad": 3.0,
           "Spline": 3.0}
 # overlays drawn beside a feature's shape: groups of (colour, markers, segments), each
-# drawn with its line width
-OVERLAY_GROUPS = {"Fit": (1.0,), "G2Quad": (1.0,), "Spline": (1.0, 1.0, 2.5, 2.5), "Blend": (2.5,)}
+# drawn with its (line width, marker size in pixels, in front of the curve or not); a
+# guide duck sits on the curve through it: its marker is larger than the curve is wide
+# and drawn in front, or the curve hides it
+GUIDES = (2.5, 11.0, True)
+OVERLAY_GROUPS = {"Fit": ((1.0, 6.0, False),), "G2Quad": ((1.0, 6.0, False),),
+                  "EllipticBlend": ((1.0, 7.0, False),),
+                  "Spline": ((1.0, 6.0, False), (1.0, 6.0, False), (2.5, 6.0, False), GUIDES),
+                  "Blend": (GUIDES,)}
 GUIDE_RGB = (0.95, 0.5, 0.0)  # the guide ducks of G2 ends (orange), apart from the user's ducks
+FORCE_RGB = (0.85, 0.1, 0.6)  # duck forces: magenta, apart from every palette colour of the curve
 SPLINE_COMB_TEETH = 150     # teeth along a whole spline
 ARROW_SHARE = 0.1           # the longest duck-force arrow: this share of the spline's size
+ARROW_FLOOR = 0.3           # no arrow shorter than this share of the longest: its direction
+                            # shows (the panel gives the values)
 
 
 def _kind(obj):
@@ -141,8 +152,9 @@ def restored(obj):
 
 def _arrows(tips, vectors, length, big=None):
     """Segment pairs of arrows along ``vectors`` ending at ``tips`` (a force drawn
-    pushing on its point), the longest (or one of size ``big``) ``length`` long, each
-    with a two-stroke head; plane coordinates (z = 0)."""
+    pushing on its point), the longest (or one of size ``big``) ``length`` long, none
+    shorter than ARROW_FLOOR of that, each with a two-stroke head; plane coordinates
+    (z = 0)."""
     big = big or max((v.Length for v in vectors), default=0.0)
     out = []
     if big <= 0:
@@ -150,7 +162,7 @@ def _arrows(tips, vectors, length, big=None):
     for tip, v in zip(tips, vectors):
         if v.Length <= 1e-9 * big:
             continue
-        tail = tip - v * (length / big)
+        tail = tip - v * (length * max(v.Length / big, ARROW_FLOOR) / v.Length)
         shaft = (tail - tip).Length
         back = (tail - tip) * (min(0.25 * length, 0.5 * shaft) / shaft)   # heads alike
         side = App.Vector(-back.y, back.x, 0.0)
@@ -200,7 +212,7 @@ def _spline_overlay(vobj, rgb):
     guides = _guide_overlay(obj, size, forces, big) if getattr(vobj, "ShowDucks", True) else \
         (GUIDE_RGB, [], [])
     return [((0.15, 0.15, 0.15), ducks, []), (_lighter(rgb), [], comb),
-            ((0.8, 0.05, 0.05), [], arrows), guides]
+            (FORCE_RGB, [], arrows), guides]
 
 
 def overlay_content(vobj):
@@ -220,9 +232,12 @@ def overlay_content(vobj):
         return [((0.35, 0.35, 0.35), data, [p for a, b in zip(data, data[1:]) for p in (a, b)])]
     if kind == "Spline":
         return _spline_overlay(vobj, rgb)
-    if kind == "Blend":      # G2: its guide ducks
+    if kind == "EllipticBlend":
+        q = list(obj.ControlPoints) if getattr(vobj, "ShowControlPolygon", True) else []
+        return [(_lighter(rgb), q, [p for a, b in zip(q, q[1:]) for p in (a, b)])]
+    if kind == "Blend":      # G2: its guide ducks; two arrows alone, twice a spline's
         size = obj.Shape.BoundBox.DiagonalLength if not obj.Shape.isNull() else 0.0
-        return [_guide_overlay(obj, size)]
+        return [_guide_overlay(obj, 2.0 * size)]
     return []
 
 
@@ -246,6 +261,10 @@ class ViewProvider:
         elif kind == "G2Quad":
             props = [("ShowPolyline", "The affine arc-length polyline (the B-spline's "
                                       "control polygon inside each piece)", True)]
+        elif kind == "EllipticBlend":
+            props = [("ShowControlPolygon", "The control points q0..q3 and their polygon (a "
+                                            "basis with negative functions lets the curve "
+                                            "leave their convex hull)", True)]
         elif kind == "Spline":
             props = [("ShowDucks", "Markers at the points the spline passes through (grey) and "
                                    "at the guide ducks of G2 ends (orange)", True),
@@ -270,14 +289,18 @@ class ViewProvider:
         pick = coin.SoPickStyle()
         pick.style = coin.SoPickStyle.UNPICKABLE
         root.addChild(pick)
-        for width in widths:
+        for width, size, in_front in widths:
             # one group: a colour, markers and line segments
             sep = coin.SoSeparator()
+            if in_front:
+                depth = coin.SoDepthBuffer()
+                depth.test = False
+                sep.addChild(depth)
             g = {"colour": coin.SoBaseColor(), "coords": coin.SoCoordinate3(),
                  "points": coin.SoPointSet(), "line_coords": coin.SoCoordinate3(),
                  "lines": coin.SoLineSet()}
             style = coin.SoDrawStyle()
-            style.pointSize = 6.0
+            style.pointSize = size
             style.lineWidth = width
             for node in (g["colour"], style, g["coords"], g["points"]):
                 sep.addChild(node)
@@ -320,7 +343,8 @@ class ViewProvider:
             g["lines"].numVertices.setValues(0, len(segments) // 2, [2] * (len(segments) // 2))
 
     def updateData(self, obj, prop):
-        if prop in ("DataPoints", "FootPoints", "Polyline", "Curves", "DuckForces", "GuideForces"):
+        if prop in ("DataPoints", "FootPoints", "Polyline", "Curves", "DuckForces", "GuideForces",
+                    "ControlPoints"):
             self._refresh(obj.ViewObject)
         elif prop == "Status":
             vobj = obj.ViewObject
@@ -329,7 +353,7 @@ class ViewProvider:
 
     def onChanged(self, vobj, prop):
         if prop in ("ShowData", "ShowResiduals", "ShowPolyline", "ShowDucks", "ShowComb",
-                    "ShowForces", "LineColor"):
+                    "ShowForces", "ShowControlPolygon", "LineColor"):
             self._refresh(vobj)
         elif prop == "Visibility":
             self._show(vobj)
