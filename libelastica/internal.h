@@ -16,6 +16,14 @@ void el__gsl_quiet(void);
 /* EL_OK when all n values are finite. */
 int el__all_finite(const double *v, size_t n);
 
+/* Small dense systems (dense.c; no GSL error handler is ever called): LU with partial
+ * pivoting of the n x n row-major a in place (EL_ESINGULAR on a zero pivot) and its
+ * solve of b in place; A x = b for symmetric positive definite a by Cholesky
+ * (EL_ESINGULAR when it is not, numerically). */
+int el__lu_factor(double *a, int n, int *perm);
+void el__lu_solve(const double *a, int n, const int *perm, double *b);
+int el__cholesky_solve(double *a, int n, double *b);
+
 /* Checked size arithmetic: every array size the library computes goes through
  * these, so none can wrap around. Return 0 and store the result, or 1 when it
  * would exceed SIZE_MAX (no such array can exist; callers answer EL_ENOMEM for
@@ -162,10 +170,6 @@ int el__spiece_start(el__spiece *pc, const el__sptargets *t);
 int el__spiece_hermite(el__spiece *pc, const el__sptargets *t);
 /* max |v_i|. */
 double el__max_abs(const double *v, size_t n);
-/* LU with partial pivoting of the n x n row-major a (n <= EL__NV) in place
- * (EL_ESINGULAR on a zero pivot), and its solve of b in place. */
-int el__lu_factor(double *a, int n, int *perm);
-void el__lu_solve(const double *a, int n, const int *perm, double *b);
 
 /* ---- the elastic spline's chain (spline_chain.c), its paths (spline_path.c) */
 

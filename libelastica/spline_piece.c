@@ -34,48 +34,6 @@
 
 enum { PIECE_ITER = 40 };
 
-/* ------------------------------------------------------------------ small dense systems */
-
-/*
- * LU with partial pivoting of the n x n row-major a (n <= EL__NV), in place, and
- * its solve (internal.h). Written out because GSL's LU sends every triangular solve through
- * BLAS (dtrsv with OpenBLAS's locking), about ten times the arithmetic of a
- * 5 x 5 system, and the spline factors one per piece per Newton iteration.
- * EL_ESINGULAR on a zero (or non-finite) pivot.
- */
-int el__lu_factor(double *a, int n, int *perm)
-{
-    for (int c = 0; c < n; c++) {
-        int p = c;
-        for (int r = c + 1; r < n; r++)
-            if (fabs(a[r * n + c]) > fabs(a[p * n + c])) p = r;
-        perm[c] = p;
-        if (!(fabs(a[p * n + c]) > 1e-300) || !isfinite(a[p * n + c])) return EL_ESINGULAR;
-        if (p != c)
-            for (int j = 0; j < n; j++) { const double t = a[c * n + j]; a[c * n + j] = a[p * n + j]; a[p * n + j] = t; }
-        const double inv = 1.0 / a[c * n + c];
-        for (int r = c + 1; r < n; r++) {
-            const double f = a[r * n + c] *= inv;
-            for (int j = c + 1; j < n; j++) a[r * n + j] -= f * a[c * n + j];
-        }
-    }
-    return EL_OK;
-}
-
-void el__lu_solve(const double *a, int n, const int *perm, double *b)
-{
-    for (int c = 0; c < n; c++) {   /* the row exchanges, in order */
-        const double t = b[perm[c]]; b[perm[c]] = b[c]; b[c] = t;
-    }
-    for (int r = 1; r < n; r++)
-        for (int c = 0; c < r; c++) b[r] -= a[r * n + c] * b[c];
-    for (int r = n - 1; r >= 0; r--) {
-        double sum = b[r];
-        for (int j = r + 1; j < n; j++) sum -= a[r * n + j] * b[j];
-        b[r] = sum / a[r * n + r];
-    }
-}
-
 /* ------------------------------------------------------------------ one el__spiece */
 
 /* theta - phi = 2a, the same branch as el_smooth_eval's: for |k| <= 1,

@@ -10,6 +10,10 @@
 #include <stdint.h>
 #include <string.h>
 #include <time.h>
+#include <stdlib.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_linalg.h>
+#include "internal.h"
 
 static double cpu_seconds(void) { return (double)clock() / CLOCKS_PER_SEC; }
 
@@ -450,6 +454,70 @@ START_TEST(find_inflection_extreme_scales)
 }
 END_TEST
 
+/* ------------------------------------------------------------- small solves */
+
+static int handler_calls;
+static void count_handler(const char *reason, const char *file, int line, int gsl_errno)
+{
+    (void)reason; (void)file; (void)line; (void)gsl_errno;
+    handler_calls++;
+}
+
+/* dense.c's LU and Cholesky: the solution of GSL's own solvers on regular matrices
+ * (random, n = 1..9), EL_ESINGULAR on singular / indefinite ones (exact duplicate
+ * rows, zero matrices, an indefinite symmetric matrix), and GSL's error handler never
+ * called (a caller's may abort) */
+START_TEST(small_solves_match_gsl_and_never_call_the_handler)
+{
+    gsl_error_handler_t *old = gsl_set_error_handler(count_handler);
+    handler_calls = 0;
+    unsigned seed = 7;
+    for (size_t n = 1; n <= 9; n++)
+        for (int rep = 0; rep < 20; rep++) {
+            double M[81], A[81], S[81], b[9], x[9], y[9], ref[9];
+            for (size_t i = 0; i < n * n; i++) M[i] = rand_r(&seed) / (double)RAND_MAX - 0.5;
+            for (size_t i = 0; i < n; i++) b[i] = rand_r(&seed) / (double)RAND_MAX - 0.5;
+            for (size_t i = 0; i < n; i++)        /* S = M^T M + I / 10: SPD */
+                for (size_t j = 0; j < n; j++) {
+                    double v = i == j ? 0.1 : 0.0;
+                    for (size_t k = 0; k < n; k++) v += M[k * n + i] * M[k * n + j];
+                    S[i * n + j] = v;
+                }
+            memcpy(A, M, sizeof(double) * n * n);
+            memcpy(x, b, sizeof(double) * n);
+            int perm[9];
+            ck_assert_int_eq(el__lu_factor(A, (int)n, perm), EL_OK);
+            el__lu_solve(A, (int)n, perm, x);
+            memcpy(A, S, sizeof(double) * n * n);
+            memcpy(y, b, sizeof(double) * n);
+            ck_assert_int_eq(el__cholesky_solve(A, (int)n, y), EL_OK);
+            /* references: GSL's LU and Cholesky on copies */
+            gsl_matrix_view Mv = gsl_matrix_view_array(M, n, n), Sv = gsl_matrix_view_array(S, n, n);
+            gsl_vector_view bv = gsl_vector_view_array(b, n), rv = gsl_vector_view_array(ref, n);
+            gsl_permutation *p = gsl_permutation_alloc(n);
+            int sg;
+            ck_assert_int_eq(gsl_linalg_LU_decomp(&Mv.matrix, p, &sg), 0);
+            ck_assert_int_eq(gsl_linalg_LU_solve(&Mv.matrix, p, &bv.vector, &rv.vector), 0);
+            for (size_t i = 0; i < n; i++) ck_assert_close(x[i], ref[i], 1e-9 * (1.0 + fabs(ref[i])));
+            ck_assert_int_eq(gsl_linalg_cholesky_decomp1(&Sv.matrix), 0);
+            ck_assert_int_eq(gsl_linalg_cholesky_solve(&Sv.matrix, &bv.vector, &rv.vector), 0);
+            for (size_t i = 0; i < n; i++) ck_assert_close(y[i], ref[i], 1e-9 * (1.0 + fabs(ref[i])));
+            gsl_permutation_free(p);
+        }
+    double dup[9] = {1, 2, 3, 1, 2, 3, 0, 1, 5}, zero[4] = {0}, ones[4] = {1, 1, 1, 1};
+    double indef[4] = {1, 2, 2, 1}, rhs[3] = {1, 2, 3};
+    int perm[3];
+    ck_assert_int_eq(el__lu_factor(dup, 3, perm), EL_ESINGULAR);
+    ck_assert_int_eq(el__lu_factor(zero, 2, perm), EL_ESINGULAR);
+    memset(zero, 0, sizeof zero);
+    ck_assert_int_eq(el__cholesky_solve(zero, 2, rhs), EL_ESINGULAR);
+    ck_assert_int_eq(el__cholesky_solve(ones, 2, rhs), EL_ESINGULAR);    /* pivot exactly 0 */
+    ck_assert_int_eq(el__cholesky_solve(indef, 2, rhs), EL_ESINGULAR);
+    ck_assert_int_eq(handler_calls, 0);
+    gsl_set_error_handler(old);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("robust");
@@ -475,6 +543,7 @@ int main(void)
     tcase_add_test(tc, resample_extreme_scales_scale_invariant);
     tcase_add_test(tc, plane_fit_and_pca_extreme_magnitudes);
     tcase_add_test(tc, find_inflection_extreme_scales);
+    tcase_add_test(tc, small_solves_match_gsl_and_never_call_the_handler);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }
