@@ -1238,6 +1238,8 @@ int el_smooth_chain_to_bspline(const el_smooth_params *pieces, size_t m, double 
 {
     if (!pieces || !m || !out || !isfinite(tol) || !(tol > 0.0) || degree < 3 || degree > 7)
         return EL_EINVAL;
+    for (size_t j = 0; j < m; j++)   /* every piece checked before any work */
+        if (el_smooth_check(&pieces[j])) return EL_EINVAL;
     el_bspline *parts = calloc(m, sizeof *parts);
     if (!parts) return EL_ENOMEM;
     int st = EL_OK, status = EL_OK;

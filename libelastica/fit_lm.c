@@ -25,7 +25,6 @@
  */
 #include "fit_internal.h"
 #include <string.h>
-#include <gsl/gsl_linalg.h>
 
 enum { LM_ROUNDS = 4, LM_RATE_SPAN = 10 };
 
@@ -42,11 +41,7 @@ static int lm_step(const fit_value *v, const double *D, double lambda, int nx, d
             A[j * nx + j] += lam * D[j];
             d[j] = -v->g[j];
         }
-        gsl_matrix_view Am = gsl_matrix_view_array(A, (size_t)nx, (size_t)nx);
-        gsl_vector_view dv = gsl_vector_view_array(d, (size_t)nx);
-        if (!gsl_linalg_cholesky_decomp1(&Am.matrix) && !gsl_linalg_cholesky_svx(&Am.matrix, &dv.vector) &&
-            !el__all_finite(d, (size_t)nx))
-            return EL_OK;
+        if (el__cholesky_solve(A, nx, d) == EL_OK) return EL_OK;   /* dense.c */
     }
     return EL_ESINGULAR;
 }

@@ -157,19 +157,12 @@ static void polish(const hframe *fr, int mode, double target, el_hermite_solutio
             if (e1 || e2) return;
             for (int i = 0; i < 5; i++) J[i * 5 + j] = (rp[i] - rm[i]) / (2.0 * h);
         }
-        /* J dv = -r by LU with partial pivoting (GSL) */
-        double rhs[5], dv[5];
-        for (int i = 0; i < 5; i++) rhs[i] = -r[i];
-        gsl_matrix_view Jm = gsl_matrix_view_array(J, 5, 5);
-        gsl_vector_view bv = gsl_vector_view_array(rhs, 5), xv = gsl_vector_view_array(dv, 5);
-        gsl_permutation perm_s;
-        size_t perm_data[5];
-        perm_s.size = 5;
-        perm_s.data = perm_data;
-        int signum;
-        if (gsl_linalg_LU_decomp(&Jm.matrix, &perm_s, &signum) != GSL_SUCCESS ||
-            gsl_linalg_LU_solve(&Jm.matrix, &perm_s, &bv.vector, &xv.vector) != GSL_SUCCESS)
-            return;
+        /* J dv = -r by LU with partial pivoting (dense.c) */
+        double dv[5];
+        for (int i = 0; i < 5; i++) dv[i] = -r[i];
+        int perm[5];
+        if (el__lu_factor(J, 5, perm)) return;
+        el__lu_solve(J, 5, perm, dv);
         for (int i = 0; i < 5; i++) if (!isfinite(dv[i])) return;
         el_smooth_params q = p;
         q.phi += dv[0]; q.mu += dv[1]; q.k += dv[2]; q.q += dv[3];

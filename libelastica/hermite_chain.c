@@ -24,7 +24,6 @@
  * the exact |k| and the joint moves to where the two errors cancel (below).
  */
 #include "hermite_internal.h"
-#include <gsl/gsl_linalg.h>
 #include <string.h>
 
 enum { MAXPIECES = 3, MAXUNK = MAXPIECES + 1 };
@@ -127,7 +126,7 @@ static int correct(const hframe *fr, chain *c, double tol)
             if (e1 || e2) return e1 ? e1 : e2;
             for (int i = 0; i < 3; i++) J[i * m + j] = (rp[i] - rm[i]) / (2.0 * h);
         }
-        /* (J J^T) y = -r, dx = J^T y (LU, GSL) */
+        /* (J J^T) y = -r, dx = J^T y (LU) */
         double A[9], y[3], b[3];
         for (int i = 0; i < 3; i++) {
             b[i] = -r[i];
@@ -137,14 +136,10 @@ static int correct(const hframe *fr, chain *c, double tol)
                 A[i * 3 + k] = sum;
             }
         }
-        gsl_matrix_view Am = gsl_matrix_view_array(A, 3, 3);
-        gsl_vector_view bv = gsl_vector_view_array(b, 3), yv = gsl_vector_view_array(y, 3);
-        size_t perm_data[3];
-        gsl_permutation perm = {3, perm_data};
-        int signum;
-        if (gsl_linalg_LU_decomp(&Am.matrix, &perm, &signum) != GSL_SUCCESS ||
-            gsl_linalg_LU_solve(&Am.matrix, &perm, &bv.vector, &yv.vector) != GSL_SUCCESS)
-            break;
+        int perm[3];
+        if (el__lu_factor(A, 3, perm)) break;
+        memcpy(y, b, sizeof y);
+        el__lu_solve(A, 3, perm, y);
         double dx[MAXUNK];
         for (int j = 0; j < m; j++) {
             dx[j] = 0.0;
