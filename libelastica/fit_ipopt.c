@@ -124,7 +124,7 @@ static Bool cb_f(Index n, Number *x, Bool new_x, Number *obj, UserDataPtr ud)
     ipctx *c = ud;
     if (ensure(c, x)) return FALSE;
     *obj = c->val.f;
-    return TRUE;
+    return isfinite(*obj) ? TRUE : FALSE;
 }
 
 static Bool cb_grad(Index n, Number *x, Bool new_x, Number *g, UserDataPtr ud)
@@ -133,7 +133,7 @@ static Bool cb_grad(Index n, Number *x, Bool new_x, Number *g, UserDataPtr ud)
     ipctx *c = ud;
     if (ensure(c, x)) return FALSE;
     memcpy(g, c->val.g, sizeof(double) * (size_t)c->nx);
-    return TRUE;
+    return !el__all_finite(g, (size_t)c->nx);
 }
 
 static Bool cb_g(Index n, Number *x, Bool new_x, Index m, Number *g, UserDataPtr ud)
@@ -141,7 +141,9 @@ static Bool cb_g(Index n, Number *x, Bool new_x, Index m, Number *g, UserDataPtr
     (void)n; (void)new_x;
     ipctx *c = ud;
     if (m == 0) return TRUE;
-    return fit_constraint_rows(c->o, c->con, x, g, NULL, NULL, c->tmp) == m;
+    /* (every value handed to Ipopt finite: MUMPS crashes on inf in its matrix) */
+    return fit_constraint_rows(c->o, c->con, x, g, NULL, NULL, c->tmp) == m &&
+           !el__all_finite(g, (size_t)m);
 }
 
 static Bool cb_jac_g(Index n, Number *x, Bool new_x, Index m, Index nele, Index *iRow, Index *jCol,
@@ -156,7 +158,8 @@ static Bool cb_jac_g(Index n, Number *x, Bool new_x, Index m, Index nele, Index 
         return TRUE;
     }
     double cv[FIT_NCON];
-    return fit_constraint_rows(c->o, c->con, x, cv, values, NULL, c->tmp) == m;
+    return fit_constraint_rows(c->o, c->con, x, cv, values, NULL, c->tmp) == m &&
+           !el__all_finite(values, (size_t)m * (size_t)n);
 }
 
 /*
@@ -216,7 +219,7 @@ static Bool cb_h(Index n, Number *x, Bool new_x, Number obj_factor, Index m, Num
     Index e = 0;
     for (Index r = 0; r < n; r++)
         for (Index q = 0; q <= r; q++) values[e++] = 0.5 * (H[r * n + q] + H[q * n + r]);
-    return TRUE;
+    return !el__all_finite(values, (size_t)e);
 }
 
 static Bool cb_iter(Index alg_mod, Index iter, Number obj, Number inf_pr, Number inf_du, Number mu,
