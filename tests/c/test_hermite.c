@@ -713,6 +713,39 @@ START_TEST(circle_is_found_to_its_accuracy)
 }
 END_TEST
 
+/* The semicircle between antiparallel tangents, (2, 0) heading (0, -1) to (0, 0)
+ * heading (0, 1), radius 1: an elastica for sigma = 1 (length pi, energy pi) that one
+ * el_smooth_params meets only to ~1e-8 (the k -> infinity limit): at the default
+ * tol it must be counted as unrepresentable, not silently dropped (tension and length). */
+START_TEST(semicircle_counted_not_dropped)
+{
+    const double p0[2] = {2, 0}, t0[2] = {0, -1}, p1[2] = {0, 0}, t1[2] = {0, 1};
+    for (int mode = 0; mode < 2; mode++) {
+        el_hermite_options o;
+        el_hermite_options_defaults(&o);
+        o.mode = mode ? EL_HERMITE_LENGTH : EL_HERMITE_TENSION;
+        o.sigma = 1.0;
+        o.length = M_PI;
+        el_hermite_result r;
+        const int rc = el_hermite_solve(p0, t0, p1, t1, &o, &r);
+        ck_assert_int_eq(rc, EL_OK);
+        int found = 0;
+        for (size_t i = 0; i < r.count; i++)
+            found |= fabs(r.solutions[i].length - M_PI) < 1e-9 && fabs(r.solutions[i].energy - M_PI) < 1e-6;
+        ck_assert_msg(found || r.unrepresentable >= 1, "mode %d: the semicircle is lost", mode);
+        el_hermite_result_free(&r);
+        /* at a tol it meets, it is a solution */
+        o.tol = 1e-6;
+        ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_OK);
+        found = 0;
+        for (size_t i = 0; i < r.count; i++)
+            found |= fabs(r.solutions[i].length - M_PI) < 1e-9 && fabs(r.solutions[i].energy - M_PI) < 1e-6;
+        ck_assert_msg(found, "mode %d: the semicircle at tol 1e-6", mode);
+        el_hermite_result_free(&r);
+    }
+}
+END_TEST
+
 START_TEST(bad_input_and_clear_statuses)
 {
     const double p0[2] = {0, 0}, t0[2] = {1, 0}, p1[2] = {1, 0.5}, t1[2] = {0, 1}, z[2] = {0, 0};
@@ -844,6 +877,7 @@ int main(void)
     tcase_add_test(tc, collinear_data_give_the_straight_segment);
     tcase_add_test(tc, opposite_and_parallel_tangents);
     tcase_add_test(tc, circle_is_found_to_its_accuracy);
+    tcase_add_test(tc, semicircle_counted_not_dropped);
     tcase_add_test(tc, bad_input_and_clear_statuses);
     tcase_add_test(tc, each_status_from_its_cause);
     suite_add_tcase(s, tc);
