@@ -85,7 +85,8 @@ static int cpt_eval(tracer *T, const cpt *like, double U, double V, cpt *p)
         if (isfinite(like->wg[0] + like->wg[1]))
             w += like->wg[0] * (U - like->U) + like->wg[1] * (V - like->V);
         const double y = SEP_SCALE * (fi ? V : U), other = sinh(fi ? U : V);
-        rc = el__hermite_sep_eval(T->pr, like->base, fi, like->b, like->side, y, other, &w, &st, &g, &sigma);
+        rc = el__hermite_sep_eval(T->pr, like->base, fi, like->b, like->side, y, other, 1.0, &w, &st, &g,
+                                  &sigma);
         c[fi] = SEP_SCALE;
         c[1 - fi] = sqrt(1.0 + other * other);
     } else {

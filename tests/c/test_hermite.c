@@ -435,7 +435,7 @@ static double scan_f(const hprob *pr, int b, int side, double u, double *w, hsta
     hgrad g;
     if (side == 0) return el__hermite_full_eval(pr, u, b, st) ? NAN : st->f;
     double ww = *w;
-    if (el__hermite_sep_eval(pr, HCHART_X, 0, b, side, u, pr->sigma, &ww, st, &g, NULL)) return NAN;
+    if (el__hermite_sep_eval(pr, HCHART_X, 0, b, side, u, pr->sigma, 1.0, &ww, st, &g, NULL)) return NAN;
     return st->f;
 }
 
