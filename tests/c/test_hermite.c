@@ -746,6 +746,41 @@ START_TEST(semicircle_counted_not_dropped)
 }
 END_TEST
 
+/* A length-mode problem (random, bench-like) where the trace used to step over a pair
+ * of solutions at sigma ~ 666 and ~ 733 (L changing fast along the curve of solutions):
+ * each must be found, and each is a solution of the tension mode at its sigma. */
+START_TEST(length_mode_close_pair_where_length_varies_fast)
+{
+    const double a = 1.1279159307184674, b = -1.5291763854072054;
+    const double p0[2] = {0, 0}, p1[2] = {0.19054130743500819, -0.19303363065595369};
+    const double t0[2] = {cos(a), sin(a)}, t1[2] = {cos(b), sin(b)};
+    const double want[2] = {665.711544036, 732.8718963};
+    el_hermite_options o;
+    el_hermite_options_defaults(&o);
+    o.mode = EL_HERMITE_LENGTH;
+    o.length = 0.53351931374167216;
+    el_hermite_result r;
+    ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_OK);
+    check_result(p0, t0, p1, t1, &r, o.tol);
+    for (int k = 0; k < 2; k++) {
+        int found = 0;
+        for (size_t i = 0; i < r.count; i++)
+            found |= fabs(r.solutions[i].sigma - want[k]) < 1e-6 * want[k];
+        ck_assert_msg(found, "the solution at sigma %g is lost", want[k]);
+        el_hermite_options ot;
+        el_hermite_options_defaults(&ot);
+        ot.sigma = want[k];
+        el_hermite_result rt;
+        ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &ot, &rt), EL_OK);
+        found = 0;
+        for (size_t i = 0; i < rt.count; i++) found |= fabs(rt.solutions[i].length - o.length) < 1e-8;
+        ck_assert(found);
+        el_hermite_result_free(&rt);
+    }
+    el_hermite_result_free(&r);
+}
+END_TEST
+
 START_TEST(bad_input_and_clear_statuses)
 {
     const double p0[2] = {0, 0}, t0[2] = {1, 0}, p1[2] = {1, 0.5}, t1[2] = {0, 1}, z[2] = {0, 0};
@@ -878,6 +913,7 @@ int main(void)
     tcase_add_test(tc, opposite_and_parallel_tangents);
     tcase_add_test(tc, circle_is_found_to_its_accuracy);
     tcase_add_test(tc, semicircle_counted_not_dropped);
+    tcase_add_test(tc, length_mode_close_pair_where_length_varies_fast);
     tcase_add_test(tc, bad_input_and_clear_statuses);
     tcase_add_test(tc, each_status_from_its_cause);
     suite_add_tcase(s, tc);
