@@ -531,6 +531,57 @@ static int dense_scan(const hprob *pr0, double sigma, scan_root *r)
     return n;
 }
 
+/* The separatrix samples of the tension solve start each Newton of el__hermite_sep_eval
+ * from the previous sample's state (the fast path) and retry from the piece's guess
+ * where that fails (hermite_tension.c piece_eval). Checked against the plain path, every
+ * sample from the crossing itself, on the crossings (roots of (40)) of random problems
+ * at sigma |p1-p0|^2 in [100, 1e4], NY samples per side down to |F| - sigma = 1e-300 sigma:
+ * where the plain path gives a state, the fast path (with its retry) gives the same f. */
+START_TEST(separatrix_warm_start_gives_the_plain_states)
+{
+    unsigned long long st = 4711;
+    int nsamples = 0, nretry = 0;
+    for (int t = 0; t < 60; t++) {
+        const double a = test_uniform(&st, -M_PI, M_PI), c = test_uniform(&st, -M_PI, M_PI);
+        const double sigma = 100.0 * pow(100.0, test_uniform(&st, 0.0, 1.0));
+        const double P[2] = {cos(a), sin(a)}, V[2] = {cos(c), sin(c)};
+        hprob pr;
+        memset(&pr, 0, sizeof pr);
+        pr.P1 = P[0]; pr.P2 = P[1]; pr.V1 = V[0]; pr.V2 = V[1]; pr.Lmin = 1.0; pr.sigma = sigma;
+        el__hermite_set_case(&pr);
+        el_hermite_analysis an;
+        ck_assert_int_eq(el_hermite_analyse(P, V, sigma, &an), EL_OK);
+        for (size_t i = 0; i < an.nroot; i++) {
+            for (int side = -1; side <= 1; side += 2) {
+                double warm = an.root[i];
+                for (int j = 0; j < NY; j++) {
+                    const double tt = (double)j / (NY - 1);
+                    const double y = log(1e-3 * sigma) - 690.0 * (1.0 - tt) * (1.0 - tt);
+                    hstate cold_st, warm_st;
+                    hgrad g;
+                    double wc = an.root[i], ww = warm;
+                    if (el__hermite_sep_eval(&pr, HCHART_X, 0, an.root_branch[i], side, y, sigma, 1.0, &wc,
+                                             &cold_st, &g, NULL))
+                        continue;
+                    nsamples++;
+                    if (el__hermite_sep_eval(&pr, HCHART_X, 0, an.root_branch[i], side, y, sigma, 1.0, &ww,
+                                             &warm_st, NULL, NULL)) {
+                        nretry++;              /* the retry from the piece's guess: the plain path */
+                        continue;
+                    }
+                    ck_assert_msg(fabs(warm_st.f - cold_st.f) <= 1e-9 * (1.0 + fabs(cold_st.f)) &&
+                                      fabs(warm_st.L - cold_st.L) <= 1e-9 * cold_st.L,
+                                  "sigma %g y %g: f %.17g (warm) vs %.17g", sigma, y, warm_st.f, cold_st.f);
+                    warm = ww;
+                }
+            }
+        }
+    }
+    printf("separatrix_warm_start_gives_the_plain_states: %d samples, %d retried\n", nsamples, nretry);
+    ck_assert_int_gt(nsamples, 1000);
+}
+END_TEST
+
 /* Issue 12: no solution lost for sigma |p1-p0|^2 in [0, 1e4]. Every root of the dense
  * scan above is a returned solution (meeting the ends to 1e-10, checked with
  * el_smooth_eval; one piece, or near the separatrix a chain split at its saddles) and
@@ -913,6 +964,7 @@ int main(void)
     tcase_add_test(tc, opposite_and_parallel_tangents);
     tcase_add_test(tc, circle_is_found_to_its_accuracy);
     tcase_add_test(tc, semicircle_counted_not_dropped);
+    tcase_add_test(tc, separatrix_warm_start_gives_the_plain_states);
     tcase_add_test(tc, length_mode_close_pair_where_length_varies_fast);
     tcase_add_test(tc, bad_input_and_clear_statuses);
     tcase_add_test(tc, each_status_from_its_cause);
