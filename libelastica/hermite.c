@@ -167,9 +167,10 @@ static void polish(const hframe *fr, int mode, double target, el_hermite_solutio
         perm_s.size = 5;
         perm_s.data = perm_data;
         int signum;
-        if (gsl_linalg_LU_decomp(&Jm.matrix, &perm_s, &signum) != GSL_SUCCESS ||
-            gsl_linalg_LU_solve(&Jm.matrix, &perm_s, &bv.vector, &xv.vector) != GSL_SUCCESS)
-            return;
+        if (gsl_linalg_LU_decomp(&Jm.matrix, &perm_s, &signum) != GSL_SUCCESS) return;
+        /* a zero pivot: singular, which LU_solve would report to GSL's error handler */
+        for (int i = 0; i < 5; i++) if (J[6 * i] == 0.0) return;
+        if (gsl_linalg_LU_solve(&Jm.matrix, &perm_s, &bv.vector, &xv.vector) != GSL_SUCCESS) return;
         for (int i = 0; i < 5; i++) if (!isfinite(dv[i])) return;
         el_smooth_params q = p;
         q.phi += dv[0]; q.mu += dv[1]; q.k += dv[2]; q.q += dv[3];

@@ -142,7 +142,9 @@ static int correct(const hframe *fr, chain *c, double tol)
         size_t perm_data[3];
         gsl_permutation perm = {3, perm_data};
         int signum;
+        /* a zero pivot: singular, which LU_solve would report to GSL's error handler */
         if (gsl_linalg_LU_decomp(&Am.matrix, &perm, &signum) != GSL_SUCCESS ||
+            A[0] == 0.0 || A[4] == 0.0 || A[8] == 0.0 ||
             gsl_linalg_LU_solve(&Am.matrix, &perm, &bv.vector, &yv.vector) != GSL_SUCCESS)
             break;
         double dx[MAXUNK];
