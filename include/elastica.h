@@ -701,8 +701,10 @@ typedef struct el_hermite_solution {
 /* Solutions sorted by increasing energy; released by el_hermite_result_free.
  * unrepresentable: curves that exist (found and exact in the solver's variables) but
  * that neither one el_smooth_params nor a chain of them meets to opt->tol, so they are
- * not in solutions (none met in tests up to sigma |p1-p0|^2 = 1e4 at the default tol;
- * see el_hermite_solve). */
+ * not in solutions: a circular arc (an elastica for sigma = curvature^2, which
+ * el_smooth_params reaches only in the limit k -> infinity, meeting the ends to ~1e-8)
+ * when tol is below that; no other met in tests up to sigma |p1-p0|^2 = 1e4 at the
+ * default tol (see el_hermite_solve). */
 typedef struct el_hermite_result {
     size_t count;
     el_hermite_solution *solutions; /* count entries, library-owned */

@@ -66,12 +66,13 @@ int el__hermite_chart_eval(const hprob *pr, int chart, double u, double v, int b
  * coordinate number fi (0: u, 1: v) is replaced by y = ln(side (|F| - sigma)), side = +1
  * (inflectional) or -1 (not); other is the base's other coordinate, *w the replaced one
  * (a starting guess in, the state's value out, by Newton on |F| - sigma = side e^y along
- * it). The state carries |F| - sigma exactly (hstate.sep), so k'^2 = (|F| - sigma) / (2 |F|)
+ * it; any guess on the same crossing of the separatrix gives the same state). qs: Carlson's
+ * precision as el__hermite_shape_eval's; g may be NULL (the state only). The state carries |F| - sigma exactly (hstate.sep), so k'^2 = (|F| - sigma) / (2 |F|)
  * keeps its relative precision however small: the length depends on ln k', which the base
  * coordinates alone cannot carry. The gradient is in the base chart's order with y in
  * place of the replaced coordinate. */
 int el__hermite_sep_eval(const hprob *pr, int base, int fi, int b, int side, double y,
-                         double other, double *w, hstate *st, hgrad *g, double *sigma);
+                         double other, double qs, double *w, hstate *st, hgrad *g, double *sigma);
 /* F(mu, k) and D(mu, k) for the amplitude given by its sine S, cosine C and big = (mu > pi) */
 int el__hermite_ell_fd(double S, double C, int big, double k2, double kc2, double qs,
                        double *F, double *D);

@@ -497,7 +497,7 @@ static double sep_of(const hprob *pr, const hstate *st, const curv_grad *cg, int
 }
 
 int el__hermite_sep_eval(const hprob *pr, int base, int fi, int b, int side, double y,
-                         double other, double *w, hstate *st, hgrad *g, double *sigma)
+                         double other, double qs, double *w, hstate *st, hgrad *g, double *sigma)
 {
     const int oi = 1 - fi;
     const double target = side * exp(y);
@@ -533,9 +533,12 @@ int el__hermite_sep_eval(const hprob *pr, int base, int fi, int b, int side, dou
     shapework sw;
     double rf, rd, U, DD;
     int rc = shape_prepare(&q, st, &sw);
-    if (!rc) rc = el__carlson_fd(sw.ra.x, sw.ra.y, 1.0, 1.0, &rf, &rd);
+    if (!rc) rc = el__carlson_fd(sw.ra.x, sw.ra.y, 1.0, qs, &rf, &rd);
     if (!rc) rc = shape_finish(&q, &sw, rf, rd, st, &U, &DD);
     if (rc) return rc;
+    *w = ww;
+    if (sigma) *sigma = q.sigma;
+    if (!g) return EL_OK;
     /* (y, other) -> base coordinates: d(base)/dy = target / d_w, d(base)/d(other) = -d_o / d_w */
     double d_o;
     sep_of(&q, st, &cg, oi, &d_o);
@@ -551,8 +554,6 @@ int el__hermite_sep_eval(const hprob *pr, int base, int fi, int b, int side, dou
     shape_grad(&q, st, &cg, &sw, U, DD, g);
     g->w[fi] = wy;
     g->w[oi] = wo;
-    *w = ww;
-    if (sigma) *sigma = q.sigma;
     return isfinite(g->f[0]) && isfinite(g->f[1]) ? EL_OK : EL_EDOM;
 }
 

@@ -197,7 +197,7 @@ typedef struct {
      * base chart (x, or case 3's (kappa0, kappa0') at the family's kappa0), w0 the
      * starting guess of its Newton (hermite_objective.c) */
     int sep, side;
-    double w0;
+    double w0, w_start;
 } fctx;
 
 static void fctx_init(fctx *c, const hprob *pr, int b)
@@ -217,12 +217,19 @@ static int piece_eval(fctx *c, double u, double qs, hstate *st, double *x)
         return rc ? rc : el__hermite_shape_eval(c->pr, qs, st);
     }
     const hprob *pr = c->pr;
-    hgrad g;
-    double w = c->w0;
-    const int rc = pr->hcase == 3
-        ? el__hermite_sep_eval(pr, HCHART_C3, 1, c->b >= 2, c->side, u, el__hermite_case3_kappa0(pr, c->b), &w, st, &g, NULL)
-        : el__hermite_sep_eval(pr, HCHART_X, 0, c->b, c->side, u, pr->sigma, &w, st, &g, NULL);
-    *x = w;
+    int rc = EL_EDOM;
+    /* Newton from the last state's w (a nearby y: fewer steps, the same state), and
+     * from the piece's starting guess w_start where that fails: next to the resolution
+     * of w (|F| - sigma ~ 1e-12 sigma) a start too close may stop short of the target */
+    for (int k = 0; k < 2 && rc; k++) {
+        double w = k ? c->w_start : c->w0;
+        if (k && w == c->w0) break;
+        rc = pr->hcase == 3
+            ? el__hermite_sep_eval(pr, HCHART_C3, 1, c->b >= 2, c->side, u, el__hermite_case3_kappa0(pr, c->b), qs, &w, st, NULL, NULL)
+            : el__hermite_sep_eval(pr, HCHART_X, 0, c->b, c->side, u, pr->sigma, qs, &w, st, NULL, NULL);
+        *x = w;
+        if (!rc) c->w0 = w;
+    }
     return rc;
 }
 
@@ -514,7 +521,7 @@ static int separatrix_end(const hprob *pr, int b, double x_end, double dir, doub
     fctx_init(&c, pr, b);
     c.sep = 1;
     c.side = d > 0.0 ? 1 : -1;
-    c.w0 = pr->hcase == 3 ? xin : xin;
+    c.w0 = c.w_start = xin;
     /* y_c: |F| - sigma = 1e-3 sigma, or half its value mid-piece where the piece does
      * not reach that far from the separatrix */
     double dc = 1e-3 * pr->sigma;
@@ -527,7 +534,7 @@ static int separatrix_end(const hprob *pr, int b, double x_end, double dir, doub
     if (piece_eval(&c, yc, COARSE_QS, &st, &x) || !((x - x_end) * dir > 0.0) || !(fabs(x - x_end) < width))
         return EL_OK;                                  /* the x chart covers the piece */
     *xc = x;
-    c.w0 = x;
+    c.w0 = c.w_start = x;
     return solve_sep_piece(&c, yc, out);
 }
 

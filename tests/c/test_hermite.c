@@ -435,7 +435,7 @@ static double scan_f(const hprob *pr, int b, int side, double u, double *w, hsta
     hgrad g;
     if (side == 0) return el__hermite_full_eval(pr, u, b, st) ? NAN : st->f;
     double ww = *w;
-    if (el__hermite_sep_eval(pr, HCHART_X, 0, b, side, u, pr->sigma, &ww, st, &g, NULL)) return NAN;
+    if (el__hermite_sep_eval(pr, HCHART_X, 0, b, side, u, pr->sigma, 1.0, &ww, st, &g, NULL)) return NAN;
     return st->f;
 }
 
@@ -530,6 +530,57 @@ static int dense_scan(const hprob *pr0, double sigma, scan_root *r)
     }
     return n;
 }
+
+/* The separatrix samples of the tension solve start each Newton of el__hermite_sep_eval
+ * from the previous sample's state (the fast path) and retry from the piece's guess
+ * where that fails (hermite_tension.c piece_eval). Checked against the plain path, every
+ * sample from the crossing itself, on the crossings (roots of (40)) of random problems
+ * at sigma |p1-p0|^2 in [100, 1e4], NY samples per side down to |F| - sigma = 1e-300 sigma:
+ * where the plain path gives a state, the fast path (with its retry) gives the same f. */
+START_TEST(separatrix_warm_start_gives_the_plain_states)
+{
+    unsigned long long st = 4711;
+    int nsamples = 0, nretry = 0;
+    for (int t = 0; t < 60; t++) {
+        const double a = test_uniform(&st, -M_PI, M_PI), c = test_uniform(&st, -M_PI, M_PI);
+        const double sigma = 100.0 * pow(100.0, test_uniform(&st, 0.0, 1.0));
+        const double P[2] = {cos(a), sin(a)}, V[2] = {cos(c), sin(c)};
+        hprob pr;
+        memset(&pr, 0, sizeof pr);
+        pr.P1 = P[0]; pr.P2 = P[1]; pr.V1 = V[0]; pr.V2 = V[1]; pr.Lmin = 1.0; pr.sigma = sigma;
+        el__hermite_set_case(&pr);
+        el_hermite_analysis an;
+        ck_assert_int_eq(el_hermite_analyse(P, V, sigma, &an), EL_OK);
+        for (size_t i = 0; i < an.nroot; i++) {
+            for (int side = -1; side <= 1; side += 2) {
+                double warm = an.root[i];
+                for (int j = 0; j < NY; j++) {
+                    const double tt = (double)j / (NY - 1);
+                    const double y = log(1e-3 * sigma) - 690.0 * (1.0 - tt) * (1.0 - tt);
+                    hstate cold_st, warm_st;
+                    hgrad g;
+                    double wc = an.root[i], ww = warm;
+                    if (el__hermite_sep_eval(&pr, HCHART_X, 0, an.root_branch[i], side, y, sigma, 1.0, &wc,
+                                             &cold_st, &g, NULL))
+                        continue;
+                    nsamples++;
+                    if (el__hermite_sep_eval(&pr, HCHART_X, 0, an.root_branch[i], side, y, sigma, 1.0, &ww,
+                                             &warm_st, NULL, NULL)) {
+                        nretry++;              /* the retry from the piece's guess: the plain path */
+                        continue;
+                    }
+                    ck_assert_msg(fabs(warm_st.f - cold_st.f) <= 1e-9 * (1.0 + fabs(cold_st.f)) &&
+                                      fabs(warm_st.L - cold_st.L) <= 1e-9 * cold_st.L,
+                                  "sigma %g y %g: f %.17g (warm) vs %.17g", sigma, y, warm_st.f, cold_st.f);
+                    warm = ww;
+                }
+            }
+        }
+    }
+    printf("separatrix_warm_start_gives_the_plain_states: %d samples, %d retried\n", nsamples, nretry);
+    ck_assert_int_gt(nsamples, 1000);
+}
+END_TEST
 
 /* Issue 12: no solution lost for sigma |p1-p0|^2 in [0, 1e4]. Every root of the dense
  * scan above is a returned solution (meeting the ends to 1e-10, checked with
@@ -713,6 +764,74 @@ START_TEST(circle_is_found_to_its_accuracy)
 }
 END_TEST
 
+/* The semicircle between antiparallel tangents, (2, 0) heading (0, -1) to (0, 0)
+ * heading (0, 1), radius 1: an elastica for sigma = 1 (length pi, energy pi) that one
+ * el_smooth_params meets only to ~1e-8 (the k -> infinity limit): at the default
+ * tol it must be counted as unrepresentable, not silently dropped (tension and length). */
+START_TEST(semicircle_counted_not_dropped)
+{
+    const double p0[2] = {2, 0}, t0[2] = {0, -1}, p1[2] = {0, 0}, t1[2] = {0, 1};
+    for (int mode = 0; mode < 2; mode++) {
+        el_hermite_options o;
+        el_hermite_options_defaults(&o);
+        o.mode = mode ? EL_HERMITE_LENGTH : EL_HERMITE_TENSION;
+        o.sigma = 1.0;
+        o.length = M_PI;
+        el_hermite_result r;
+        const int rc = el_hermite_solve(p0, t0, p1, t1, &o, &r);
+        ck_assert_int_eq(rc, EL_OK);
+        int found = 0;
+        for (size_t i = 0; i < r.count; i++)
+            found |= fabs(r.solutions[i].length - M_PI) < 1e-9 && fabs(r.solutions[i].energy - M_PI) < 1e-6;
+        ck_assert_msg(found || r.unrepresentable >= 1, "mode %d: the semicircle is lost", mode);
+        el_hermite_result_free(&r);
+        /* at a tol it meets, it is a solution */
+        o.tol = 1e-6;
+        ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_OK);
+        found = 0;
+        for (size_t i = 0; i < r.count; i++)
+            found |= fabs(r.solutions[i].length - M_PI) < 1e-9 && fabs(r.solutions[i].energy - M_PI) < 1e-6;
+        ck_assert_msg(found, "mode %d: the semicircle at tol 1e-6", mode);
+        el_hermite_result_free(&r);
+    }
+}
+END_TEST
+
+/* A length-mode problem (random, bench-like) where the trace used to step over a pair
+ * of solutions at sigma ~ 666 and ~ 733 (L changing fast along the curve of solutions):
+ * each must be found, and each is a solution of the tension mode at its sigma. */
+START_TEST(length_mode_close_pair_where_length_varies_fast)
+{
+    const double a = 1.1279159307184674, b = -1.5291763854072054;
+    const double p0[2] = {0, 0}, p1[2] = {0.19054130743500819, -0.19303363065595369};
+    const double t0[2] = {cos(a), sin(a)}, t1[2] = {cos(b), sin(b)};
+    const double want[2] = {665.711544036, 732.8718963};
+    el_hermite_options o;
+    el_hermite_options_defaults(&o);
+    o.mode = EL_HERMITE_LENGTH;
+    o.length = 0.53351931374167216;
+    el_hermite_result r;
+    ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_OK);
+    check_result(p0, t0, p1, t1, &r, o.tol);
+    for (int k = 0; k < 2; k++) {
+        int found = 0;
+        for (size_t i = 0; i < r.count; i++)
+            found |= fabs(r.solutions[i].sigma - want[k]) < 1e-6 * want[k];
+        ck_assert_msg(found, "the solution at sigma %g is lost", want[k]);
+        el_hermite_options ot;
+        el_hermite_options_defaults(&ot);
+        ot.sigma = want[k];
+        el_hermite_result rt;
+        ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &ot, &rt), EL_OK);
+        found = 0;
+        for (size_t i = 0; i < rt.count; i++) found |= fabs(rt.solutions[i].length - o.length) < 1e-8;
+        ck_assert(found);
+        el_hermite_result_free(&rt);
+    }
+    el_hermite_result_free(&r);
+}
+END_TEST
+
 START_TEST(bad_input_and_clear_statuses)
 {
     const double p0[2] = {0, 0}, t0[2] = {1, 0}, p1[2] = {1, 0.5}, t1[2] = {0, 1}, z[2] = {0, 0};
@@ -844,6 +963,9 @@ int main(void)
     tcase_add_test(tc, collinear_data_give_the_straight_segment);
     tcase_add_test(tc, opposite_and_parallel_tangents);
     tcase_add_test(tc, circle_is_found_to_its_accuracy);
+    tcase_add_test(tc, semicircle_counted_not_dropped);
+    tcase_add_test(tc, separatrix_warm_start_gives_the_plain_states);
+    tcase_add_test(tc, length_mode_close_pair_where_length_varies_fast);
     tcase_add_test(tc, bad_input_and_clear_statuses);
     tcase_add_test(tc, each_status_from_its_cause);
     suite_add_tcase(s, tc);
