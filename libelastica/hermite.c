@@ -478,11 +478,14 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
         if (!residual(&fr, &sol[n], &sol[n].residual)) n++;
     }
     double cc, cL;
+    int circle_unrep = 0;
     if (circle_arc(&fr, u0, u1, &cc, &cL) &&
         (opt->mode == EL_HERMITE_TENSION ? fabs(opt->sigma - cc * cc) <= 1e-12 * cc * cc
                                          : fabs(opt->length - cL) <= 1e-12 * cL)) {
         circle_solution(&fr, cc, cL, &sol[n]);
+        /* the arc meets the ends only to ~1e-8 (circle_arc): counted, not dropped, above tol */
         if (!residual(&fr, &sol[n], &sol[n].residual) && sol[n].residual <= opt->tol) n++;
+        else circle_unrep = 1;
     }
     /* found, exact in the solver's variables, but not representable to tol (below) */
     el_hermite_solution *unrep = malloc(roots.n * sizeof *unrep + 1);
@@ -521,7 +524,7 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
     }
     free(roots.v);
     /* each unrepresentable curve once, and not when another root of it was representable */
-    size_t nu = 0;
+    size_t nu = (size_t)circle_unrep;
     for (size_t i = 0; i < nunrep; i++) {
         int dup = 0;
         for (size_t j = 0; j < n && !dup; j++) dup = same_solution(&unrep[i], &sol[j], fr.d);
