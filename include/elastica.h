@@ -307,6 +307,9 @@ enum el_fit_distance { EL_DISTANCE_AUTO = 0, EL_DISTANCE_ORTHOGONAL = 1, EL_DIST
  * segment, the curvature (2/h) tan(K/2) at the end vertex of the curve extended by one
  * vertex (seed 000 (3.4)), the length (n-1) h. Met to 1e-10 of the data's size (1e-10
  * rad for angles), or the fit fails with EL_EDOM naming the constraint.
+ * Held exactly, without Ipopt, at the one end that has more of them (the end's by
+ * fitting the points in reverse order): the point; smooth, the tangent and the
+ * curvature; discrete, a zero curvature. The others are Ipopt's constraint rows.
  */
 enum el_fit_constraint {
     EL_CONSTRAIN_START_POINT = 1,
