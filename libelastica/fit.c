@@ -101,7 +101,6 @@ static int check_options(const el_fit_options *o, int model, int *which)
         return EL_EINVAL;
     if (o->param_mode < EL_PARAM_AUTO || o->param_mode > EL_PARAM_CHORD) return EL_EINVAL;
     if (o->distance < EL_DISTANCE_AUTO || o->distance > EL_DISTANCE_PAIRED) return EL_EINVAL;
-    if (model == FIT_DISCRETE && o->distance == EL_DISTANCE_ORTHOGONAL) return EL_EINVAL;
     for (int j = 0; j < FIT_NP; j++) {
         if (isnan(o->lower[j]) || isnan(o->upper[j]) || o->lower[j] > o->upper[j]) return EL_EINVAL;
         if (!o->fixed[j]) continue;
@@ -130,6 +129,30 @@ static int check_options(const el_fit_options *o, int model, int *which)
 }
 
 /* ------------------------------------------------------------ one fit */
+
+/* Whether the points are spaced evenly along the data: the mean segment of every run
+ * of w = max(3, (n-1)/16) consecutive segments within 1.3 x of each other's (a run's
+ * mean evens out the noise of scanned samples taken at equal steps, not a change of
+ * density or a gap). The discrete model's paired distance (seed 000 (4.6)) is meant
+ * for such data (an equilateral polygon, el_resample_equilateral's, or equal steps); on
+ * other points (sketched, scanned unevenly, with gaps) a vertex is not where its point
+ * is, and the paired fit is far from the points (measured: 42 points of two densities,
+ * noise 0.2: paired rms 12.4, orthogonal 0.15; a 175-point scan of spacing 1:6 with
+ * two gaps, noise 0.15: 4.2 and 0.15). */
+static int evenly_spaced(const double *xy, size_t n)
+{
+    const size_t m = n - 1, w = m / 16 > 3 ? m / 16 : 3;
+    if (m < w) return 1;
+    double run = 0.0, lo = HUGE_VAL, hi = 0.0;
+    for (size_t i = 0; i < m; i++) {
+        run += hypot(xy[2 * i + 2] - xy[2 * i], xy[2 * i + 3] - xy[2 * i + 1]);
+        if (i >= w) run -= hypot(xy[2 * (i - w) + 2] - xy[2 * (i - w)], xy[2 * (i - w) + 3] - xy[2 * (i - w) + 1]);
+        if (i + 1 >= w) { lo = fmin(lo, run); hi = fmax(hi, run); }
+    }
+    return hi <= 1.3 * lo;
+}
+
+
 
 /* The constraints in normalised units, and the bounds they add. */
 static void setup_constraints(const el_fit_options *o, int model, size_t n, double cx, double cy,
@@ -335,7 +358,7 @@ static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit
     int lm_ok = 0, inside = 1;
     double xs[FIT_MAXX];
     memcpy(xs, x0, sizeof(double) * (size_t)nx);
-    if (ob->kind == FIT_ORTHOGONAL && !o->limited_memory) {
+    if (ob->kind == FIT_ORTHOGONAL && ob->map.model == FIT_SMOOTH && !o->limited_memory) {
         /* the paired fit first: its pairing with the data's order keeps loops and sparse
          * points on their branch, and on equilateral data it is close and cheap (points
          * equally spaced in s); then the feet from its places */
@@ -483,7 +506,8 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
                                 isfinite(lo[5]) || isfinite(hi[5])))
         lo[3] = fmax(lo[3], 0.0);
 
-    const int kind = model == FIT_DISCRETE || o.distance == EL_DISTANCE_PAIRED ? FIT_PAIRED : FIT_ORTHOGONAL;
+    const int kind = o.distance == EL_DISTANCE_PAIRED ? FIT_PAIRED : o.distance == EL_DISTANCE_ORTHOGONAL ? FIT_ORTHOGONAL
+                   : model == FIT_SMOOTH || !evenly_spaced(xy, n) ? FIT_ORTHOGONAL : FIT_PAIRED;
 
     /* the map: free parameters, their scales, the start-state chart. The chart replaces
      * (phi, w or z, k, q) when all four are free and unbounded; it then holds a start

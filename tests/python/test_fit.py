@@ -152,6 +152,35 @@ def test_uneven_sampling_with_gaps(seed):
     assert_distances_measured(p, truth.length)
 
 
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_discrete_default_on_uneven_points_reaches_the_noise(seed):
+    """The discrete model's default on unevenly spaced points (spacing 1:6 and two gaps;
+    two densities with a gap; points sketched by hand) is the distance to the polygon:
+    its rms is within 1.2 x the noise and the polygon lies near the true curve, where
+    the paired fit (vertex i <-> point i) is many times the noise away. On an
+    equilateral polygon of the same points the default stays paired (seed 000 (4.6))."""
+    for pts, truth, noise in [(*uneven_scan(seed=seed, noise=0.15), 0.15),
+                              (*uneven_scan(seed=seed, noise=0.15, n=60), 0.15),
+                              (*_two_density_scan(seed + 5), 0.2)]:
+        size = polyline_length(pts)
+        r = el.fit(pts)
+        assert r.status == 0 and r.distance == "orthogonal"
+        assert r.rms <= 1.2 * noise, r.rms
+        assert_distances_measured(r, size)
+        assert np.hypot(*(r.curve.points()[[0, -1]] - pts[[0, -1]]).T).max() <= 3 * noise
+        off, _ = curve_distances(truth, r.curve.points())
+        assert off.max() <= 4 * noise, off.max()
+        p = el.fit(pts, distance="paired")
+        assert p.rms >= 5 * r.rms, (p.rms, r.rms)
+        eq = el.resample_equilateral(pts, size / (len(pts) - 1))
+        assert el.fit(eq).distance == "paired"
+    pts, truth = sketched_s(seed=seed, n=15, wobble=0.5)
+    r = el.fit(pts)
+    assert r.status == 0 and r.distance == "orthogonal"
+    assert r.rms < el.fit(pts, distance="paired").rms
+    assert_distances_measured(r, polyline_length(pts))
+
+
 @pytest.mark.parametrize("model", ["discrete", "smooth"])
 @pytest.mark.parametrize("noise", [0.0, 1e-3, 1e-2])
 def test_noise_levels(model, noise):
@@ -611,8 +640,6 @@ def test_bad_input(model):
     with pytest.raises(ValueError):
         el.fit(good, model=model, distance="nearest")
     if model == "discrete":
-        with pytest.raises(ValueError):
-            el.fit(good, model=model, distance="orthogonal")
         with pytest.raises(ValueError):                # fixed h <= 0
             el.fit(good, model=model, fixed={"h": 0.0})
     # collinear: the straight line, exactly
