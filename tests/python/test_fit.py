@@ -478,11 +478,12 @@ def test_zero_end_curvature_where_the_data_curves(model, end):
     separatrix (rms 7.9)."""
     c = el.SmoothElastica(x0=0.0, y0=0.0, phi=-1.028, mu=(1.0 / 105.0) ** 2, k=0.65, q=0.25, length=330.0)
     xy = c.points(np.linspace(0, c.length, 40))
-    con = {f"{end}_curvature": 0.0}
-    r = el.fit(xy, model=model, constraints=con)
-    assert r.status == 0
-    _check_constraints(r, con, model, polyline_length(xy))
-    assert r.rms < 1.7, r.rms
+    for kappa in (0.0, 0.001):      # the discrete 0.001 (Ipopt's row) stalled at rms 7.85
+        con = {f"{end}_curvature": kappa}
+        r = el.fit(xy, model=model, constraints=con)
+        assert r.status == 0
+        _check_constraints(r, con, model, polyline_length(xy))
+        assert r.rms < 1.7, (kappa, r.rms)
 
 
 @pytest.mark.parametrize("model,con", [("discrete", {"end_curvature": 0.0}),
