@@ -583,6 +583,7 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
         if ((st = el_fit_fractions(xy, n, o.param_mode, t, &mode))) goto done;
     }
     if ((st = fit_objective_init(&ob, kind, &map, xy, n, cx, cy, sc, t))) goto done;
+    ob.exact_ends = o.constraints != 0;
 
     /* candidates (normalised internal parameters) */
     double cand[MAXCAND][FIT_NP];

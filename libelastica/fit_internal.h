@@ -115,6 +115,7 @@ typedef struct fit_objective {
     double *s, *s_next;          /* orthogonal: foot parameters (n each); keyline smooth:
                                     sigma < 0 on the first curve at -sigma, >= 0 the second */
     int exact_feet;              /* project the feet at every evaluation (Ipopt) */
+    int exact_ends;              /* feet within the curve, not its extension (fit_feet.c) */
     /* the feet's motion under a step of the variables x from the last accepted point
      * (base): b(s) = (d gamma(s) / d x)^T T(s) sampled at FIT_KNOTS arc lengths of each
      * curve (in x, the optimiser's well-scaled variables, not in v: fit_objective.c) */
