@@ -92,6 +92,8 @@ class FitResult:
     def model_points(self) -> np.ndarray:
         """The model points the fit used for the data points, shape (n, 2): the feet
         (orthogonal), the paired curve points or the vertices (paired)."""
+        if self.distance == "orthogonal":
+            return self.foot_points()
         if isinstance(self.curve, DiscreteElastica):
             return self.curve.points()
         return self.curve.points(self.s)

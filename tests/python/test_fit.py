@@ -166,6 +166,7 @@ def test_discrete_default_on_uneven_points_reaches_the_noise(seed):
         r = el.fit(pts)
         assert r.status == 0 and r.distance == "orthogonal"
         assert r.rms <= 1.2 * noise, r.rms
+        assert np.array_equal(r.model_points(), r.foot_points())     # not the vertices
         assert_distances_measured(r, size)
         assert np.hypot(*(r.curve.points()[[0, -1]] - pts[[0, -1]]).T).max() <= 3 * noise
         off, _ = curve_distances(truth, r.curve.points())
