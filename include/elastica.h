@@ -288,10 +288,14 @@ int el_guess_smooth(const double *xy, size_t n, int mode, el_smooth_params *cand
 
 /*
  * How a fit measures the distance of a point to the model (el_fit_options.distance):
- *   EL_DISTANCE_AUTO        orthogonal for the smooth model, paired for the discrete one;
- *   EL_DISTANCE_ORTHOGONAL  smooth: the distance of each point to the curve, its foot
- *                           free on the curve; the curve starts and ends at the feet of
- *                           the first and last points;
+ *   EL_DISTANCE_AUTO        orthogonal, but paired for the discrete model on evenly
+ *                           spaced points (the mean segment of runs of max(3, (n-1)/16)
+ *                           segments within 1.3 x of each other: an equilateral polygon,
+ *                           e.g. el_resample_equilateral's, or samples at equal steps);
+ *   EL_DISTANCE_ORTHOGONAL  the distance of each point to the curve (smooth) or to the
+ *                           polygon of the n vertices (discrete), its foot free; the
+ *                           smooth curve starts and ends at the feet of the first and last
+ *                           points, the polygon at those points;
  *   EL_DISTANCE_PAIRED      point i <-> vertex i (the discrete model's definition, seed
  *                           000 (4.6)) or <-> gamma(t_i L), t_i from el_fit_fractions
  *                           (smooth; right for equilateral data).
@@ -307,6 +311,9 @@ enum el_fit_distance { EL_DISTANCE_AUTO = 0, EL_DISTANCE_ORTHOGONAL = 1, EL_DIST
  * segment, the curvature (2/h) tan(K/2) at the end vertex of the curve extended by one
  * vertex (seed 000 (3.4)), the length (n-1) h. Met to 1e-10 of the data's size (1e-10
  * rad for angles), or the fit fails with EL_EDOM naming the constraint.
+ * Held exactly, without Ipopt, at the one end that has more of them (the end's by
+ * fitting the points in reverse order): the point; smooth, the tangent and the
+ * curvature; discrete, a zero curvature. The others are Ipopt's constraint rows.
  */
 enum el_fit_constraint {
     EL_CONSTRAIN_START_POINT = 1,
@@ -377,8 +384,11 @@ typedef struct el_fit_smooth_result {
 } el_fit_smooth_result;
 
 /*
- * Least-squares fairing (4.6)-(4.8): the discrete elastica whose vertex i is
- * nearest the point P_i (n >= 4 points xy, 2n), over every k > 0 (the
+ * Least-squares fairing (4.6)-(4.8): the discrete elastica of n vertices nearest the
+ * n >= 4 points xy (2n): by orthogonal distance (each point's distance to the polygon,
+ * its foot free; vertex 0 and n-1 tied to the first and last points) or, on evenly
+ * spaced points (EL_DISTANCE_AUTO) or with EL_DISTANCE_PAIRED, vertex i nearest the
+ * point P_i (seed 000 (4.6)); over every k > 0 (the
  * optimiser crosses k = 1), with the analytic gradient (4.9)-(4.12) and the
  * Gauss-Newton Hessian J^T J. Coordinates are normalised internally (centroid,
  * rms radius), so the fit is invariant under similarity transforms.

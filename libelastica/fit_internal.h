@@ -100,7 +100,8 @@ int fit_keyline_map(const fit_map *m, const double *x, double v[2][FIT_NP], doub
 
 enum fit_kind {
     FIT_PAIRED,        /* point i <-> vertex i (discrete) or gamma(t_i L) (smooth) */
-    FIT_ORTHOGONAL,    /* smooth: distance to the curve; ends: gamma(0) - P_0, gamma(L) - P_n-1 */
+    FIT_ORTHOGONAL,    /* distance to the curve (smooth) or the polygon (discrete); ends:
+                          gamma(0) - P_0, gamma(end) - P_n-1 */
     FIT_KEYLINE        /* two curves sharing the joint: paired (discrete), orthogonal (smooth) */
 };
 
@@ -114,6 +115,7 @@ typedef struct fit_objective {
     double *s, *s_next;          /* orthogonal: foot parameters (n each); keyline smooth:
                                     sigma < 0 on the first curve at -sigma, >= 0 the second */
     int exact_feet;              /* project the feet at every evaluation (Ipopt) */
+    int exact_ends;              /* feet within the curve, not its extension (fit_feet.c) */
     /* the feet's motion under a step of the variables x from the last accepted point
      * (base): b(s) = (d gamma(s) / d x)^T T(s) sampled at FIT_KNOTS arc lengths of each
      * curve (in x, the optimiser's well-scaled variables, not in v: fit_objective.c) */
@@ -127,6 +129,10 @@ typedef struct fit_objective {
     double f_ceiling;
     size_t split;                /* discrete keyline: the data index of the joint */
     double *work;                /* block buffers */
+    /* discrete orthogonal: the polygon (2n), distances and feet (n each) of the last
+     * evaluation, and the points bucketed by their foot's segment (fit_objective.c) */
+    double *poly;
+    size_t *bucket, *order;
     /* a quadratic penalty (rho/2) |c(x)|^2 of constraint rows added to f (fit.c's start
      * of a constrained fit); pen NULL: none. pen_tmp: FIT_WORK doubles */
     const struct fit_constraints *pen;

@@ -349,16 +349,18 @@ int fit_map_eval(const fit_map *m, const double *x, double v[2][FIT_NP], double 
         for (int r = 0; r < FIT_NP; r++)
             for (int j = 0; j < m->nx; j++) M[r * m->nx + j] = r == m->idx[j] ? 1.0 / m->scale[r] : 0.0;
     if (m->chart) {
+        /* a chart variable held (a start tangent or curvature constraint) is in fixed[] */
         const chart_slots sl = chart_of(m->model);
         const int slot[4] = {sl.phi, sl.w, sl.k, sl.q}, pos[4] = {x_pos(m, sl.phi), x_pos(m, sl.w),
                                                                   x_pos(m, sl.k), x_pos(m, sl.q)};
-        const double c[4] = {x[pos[0]], x[pos[1]], x[pos[2]], x[pos[3]]};
-        double D[4][4];
+        double c[4], D[4][4];
+        for (int a = 0; a < 4; a++) c[a] = pos[a] >= 0 ? x[pos[a]] : m->fixed[slot[a]];
         int st = chart_to_v(m, c, v[0], M ? D : NULL);
         if (st) return st;
         if (M)
             for (int r = 0; r < 4; r++)
-                for (int col = 0; col < 4; col++) M[slot[r] * m->nx + pos[col]] = D[r][col];
+                for (int col = 0; col < 4; col++)
+                    if (pos[col] >= 0) M[slot[r] * m->nx + pos[col]] = D[r][col];
     }
     return el__all_finite(v[0], FIT_NP) ? EL_EDOM : EL_OK;
 }
@@ -372,10 +374,11 @@ void fit_map_inverse(const fit_map *m, const double *v, double *x)
     if (chart_from_v(m, v, c)) {           /* unevaluable: left for the caller's check */
         for (int a = 0; a < 4; a++) c[a] = NAN;
     }
-    x[x_pos(m, sl.phi)] = c[0];
-    x[x_pos(m, sl.w)] = c[1];
-    x[x_pos(m, sl.k)] = c[2];
-    x[x_pos(m, sl.q)] = c[3];
+    const int slot[4] = {sl.phi, sl.w, sl.k, sl.q};
+    for (int a = 0; a < 4; a++) {
+        const int p = x_pos(m, slot[a]);
+        if (p >= 0) x[p] = c[a];
+    }
 }
 
 /*

@@ -57,13 +57,23 @@ int fit_objective_init(fit_objective *o, int kind, const fit_map *map, const dou
     o->work = malloc(sizeof(double) * (W_SIZE + (feet ? 2 * n : 0)));
     if (!o->work) return EL_ENOMEM;
     if (feet) { o->s = o->work + W_SIZE; o->s_next = o->s + n; }
+    if (!feet && kind == FIT_ORTHOGONAL) {
+        o->poly = malloc(sizeof(double) * 4 * n);
+        o->bucket = malloc(sizeof(size_t) * 2 * n);
+        if (!o->poly || !o->bucket) { fit_objective_free(o); return EL_ENOMEM; }
+        o->order = o->bucket + n;
+    }
     return EL_OK;
 }
 
 void fit_objective_free(fit_objective *o)
 {
     free(o->work);
+    free(o->poly);
+    free(o->bucket);
     o->work = NULL;
+    o->poly = NULL;
+    o->bucket = o->order = NULL;
 }
 
 static void point(const fit_objective *o, size_t i, double *P)
@@ -175,6 +185,98 @@ static int discrete_paired(fit_objective *o, const double *v, size_t nv, size_t 
         }
         done += m;
     }
+    return EL_OK;
+}
+
+/*
+ * Discrete orthogonal: each point's distance to the polygon of the n vertices, its foot
+ * projected exactly at every evaluation (fit_polygon_distances, O(n) from the point's
+ * vertex). Interior points: r_i = |P_i - gamma(sigma_i)|, gamma(sigma) = (1-t) V_j +
+ * t V_{j+1}, with the row -u_i . d gamma(sigma_i) / dv at the foot held (u_i the unit
+ * vector from the foot to the point): exact, as the distance's derivative along the
+ * polygon vanishes at an interior foot, and at a vertex foot it is |P - V_j| (variable
+ * projection, as the smooth fit's). The ends V_0 - P_0 and V_{n-1} - P_{n-1} in full, so
+ * the polygon spans the data (its length (n-1) h is otherwise free beyond the ends).
+ * The Jacobian is walked in blocks of vertices; the points, bucketed by their foot's
+ * segment, are folded in chunks of at most FIT_BLOCK rows.
+ */
+static int discrete_orthogonal(fit_objective *o, const double *v, int want, sums *S, double *f)
+{
+    const size_t n = o->n;
+    double *w = o->work, *jac = w + W_JAC, *col = w + W_COL, *res = w + W_RES;
+    double *V = o->poly, *dist = V + 2 * n, *foot = dist + n;
+    fit_walk walk;
+    fit_walk_start(v, &walk);
+    int st;
+    for (size_t a = 0; a < n; a += FIT_BLOCK) {
+        const size_t m = n - a < FIT_BLOCK ? n - a : FIT_BLOCK;
+        if ((st = fit_discrete_rows(v, &walk, m, V + 2 * a, NULL, w + W_TMP))) return st;
+    }
+    const double h = v[2];
+    fit_polygon_distances(o, V, n, h, 0, 1, dist, foot);
+    double P0[2], P1[2];
+    point(o, 0, P0);
+    point(o, n - 1, P1);
+    const double e[4] = {V[0] - P0[0], V[1] - P0[1], V[2 * n - 2] - P1[0], V[2 * n - 1] - P1[1]};
+    for (int c = 0; c < 4; c++) *f += e[c] * e[c];
+    for (size_t i = 1; i + 1 < n; i++) *f += dist[i] * dist[i];
+    if (!want) return EL_OK;
+    /* counting sort of the interior points by segment */
+    size_t *cnt = o->bucket, *ord = o->order;
+    memset(cnt, 0, sizeof(size_t) * n);
+    for (size_t i = 1; i + 1 < n; i++) cnt[(size_t)fit_clamp(floor(foot[i] / h), 0.0, (double)n - 2.0)]++;
+    for (size_t j = 0, sum = 0; j < n; j++) { const size_t c = cnt[j]; cnt[j] = sum; sum += c; }
+    for (size_t i = 1; i + 1 < n; i++) ord[cnt[(size_t)fit_clamp(floor(foot[i] / h), 0.0, (double)n - 2.0)]++] = i;
+    /* cnt[j] is now the end of segment j's points in ord */
+    el_discrete_params dp;
+    double dq_dk = 0.0;
+    if ((st = fit_to_discrete(v, &dp, &dq_dk))) return st;
+    const int stride = 2 * FIT_BLOCK;
+    int rows = 0;
+    size_t next = 0;          /* the next position in ord */
+    fit_walk_start(v, &walk);
+    for (size_t a = 0; a < n; a += FIT_BLOCK) {
+        const size_t m = n - a < FIT_BLOCK ? n - a : FIT_BLOCK;
+        double xy[2 * (FIT_BLOCK + 1)];
+        if ((st = fit_discrete_rows(v, &walk, m, xy, jac, w + W_TMP))) return st;
+        /* vertex a + m's derivative (the walk's, before the k < 0 column change) */
+        double dn[2][FIT_NP];
+        memcpy(dn, walk.d, sizeof dn);
+        if (v[6] < 0.0)
+            for (int c = 0; c < 2; c++) dn[c][6] = -(dn[c][6] + dq_dk * dn[c][5]);
+        for (size_t j = a; j < a + m; j++) {
+            const double *dj = jac + 2 * (j - a) * FIT_NP;
+            const double *dk = j + 1 < a + m ? jac + 2 * (j + 1 - a) * FIT_NP : dn[0];
+            const int end = j == 0 ? 0 : j == n - 1 ? 1 : -1;
+            if (end >= 0) {         /* an end's full residual */
+                for (int c = 0; c < 2; c++, rows++) {
+                    res[rows] = e[2 * end + c];
+                    for (int q = 0; q < FIT_NP; q++) col[q * stride + rows] = dj[c * FIT_NP + q];
+                }
+            }
+            for (; j + 1 < n && next < cnt[j]; next++) {
+                const size_t i = ord[next];
+                double P[2];
+                point(o, i, P);
+                const double t = fit_clamp(foot[i] / h - (double)j, 0.0, 1.0);
+                const double gx = (1.0 - t) * V[2 * j] + t * V[2 * j + 2], gy = (1.0 - t) * V[2 * j + 1] + t * V[2 * j + 3];
+                double ux = P[0] - gx, uy = P[1] - gy;
+                const double d = fit_norm(ux, uy);
+                if (d > 0.0) { ux /= d; uy /= d; }
+                else {              /* on the polygon: its left normal */
+                    const double sx = V[2 * j + 2] - V[2 * j], sy = V[2 * j + 3] - V[2 * j + 1], l = fit_norm(sx, sy);
+                    ux = l > 0.0 ? -sy / l : 0.0; uy = l > 0.0 ? sx / l : 0.0;
+                }
+                res[rows] = d;
+                for (int q = 0; q < FIT_NP; q++)
+                    col[q * stride + rows] = -(ux * ((1.0 - t) * dj[q] + t * dk[q]) +
+                                               uy * ((1.0 - t) * dj[FIT_NP + q] + t * dk[FIT_NP + q]));
+                if (++rows >= stride - 2) { fold(S, col, stride, res, rows); rows = 0; }
+            }
+            if (rows >= stride - 2) { fold(S, col, stride, res, rows); rows = 0; }
+        }
+    }
+    if (rows) fold(S, col, stride, res, rows);
     return EL_OK;
 }
 
@@ -449,6 +551,8 @@ int fit_objective_eval(fit_objective *o, const double *x, int want_normal, fit_v
          * points split+1.. (its vertex 0 is the shared joint, paired once) */
         st = discrete_paired(o, v[0], o->split + 1, o->split, -1, 0, want_normal, &S[0], &f);
         if (!st) st = discrete_paired(o, v[1], o->n - o->split, o->split, 1, 1, want_normal, &S[1], &f);
+    } else if (m->model == FIT_DISCRETE && o->kind == FIT_ORTHOGONAL) {
+        st = discrete_orthogonal(o, v[0], want_normal, &S[0], &f);
     } else if (m->model == FIT_DISCRETE) {
         st = discrete_paired(o, v[0], o->n, 0, 1, 0, want_normal, &S[0], &f);
     } else if (o->kind == FIT_PAIRED) {

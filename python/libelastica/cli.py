@@ -858,8 +858,9 @@ def build_parser() -> argparse.ArgumentParser:
                    help="parameters held fixed: 'x0,y0' (start at the first point) or "
                         "'x0=0,y0=0,phi=0'")
     f.add_argument("--distance", choices=("orthogonal", "paired"),
-                   help="smooth model: what is minimised, the points' distances to the curve "
-                        "(default) or point i <-> arc length i L/(n-1) (the discrete model pairs)")
+                   help="what is minimised: the points' distances to the curve or polygon "
+                        "(default; the discrete model on evenly spaced points: paired) or "
+                        "point i <-> vertex i / arc length i L/(n-1)")
     c = f.add_argument_group("constraints (met to 1e-10 of the data's size, or exit 2 naming "
                              "the one that cannot be met)")
     c.add_argument("--start-point", metavar="X,Y|first", help="the curve starts here")

@@ -1,7 +1,8 @@
 """Least-squares fairing by elasticae (seed 000 §4) and the keyline pipeline (§5).
 
-The smooth model is fitted by orthogonal distance (each point's distance to the
-curve) by default; the discrete model pairs vertex i with point i (seed 000 (4.6)).
+Both models are fitted by orthogonal distance (each point's distance to the curve,
+or to the discrete model's polygon) by default; on evenly spaced points the
+discrete model pairs vertex i with point i (seed 000 (4.6)).
 Every result reports point-to-curve distances: ``distances`` (signed, + = left of the
 curve), ``foot_s`` (arc length of each point's foot), ``rms`` and ``max_error``.
 
@@ -58,8 +59,9 @@ class FitResult:
     it; smooth: the curve over [0, length]; discrete: the polygon of its vertices);
     ``foot_s`` (n,): arc length along the curve of each point's nearest point;
     ``rms`` / ``max_error``: from ``distances`` (input units); ``distance``:
-    "orthogonal" (what the smooth fit minimised by default) or "paired" (point i <->
-    vertex i, the discrete model's definition); ``iterations``; ``status``: 0 when
+    "orthogonal" (what was minimised: the points' distances to the curve / polygon)
+    or "paired" (point i <-> vertex i, seed 000 (4.6), the discrete default on evenly
+    spaced points; or the smooth paired arc lengths); ``iterations``; ``status``: 0 when
     converged, else the C status (EL_ENOCONV / EL_EMAXITER: ``curve`` is the best
     seen); ``ipopt_status`` / ``used_ipopt``: whether Ipopt ran (bounds, constraints,
     fallback) and its return code; ``s``: for the smooth model the curve parameter
@@ -90,6 +92,8 @@ class FitResult:
     def model_points(self) -> np.ndarray:
         """The model points the fit used for the data points, shape (n, 2): the feet
         (orthogonal), the paired curve points or the vertices (paired)."""
+        if self.distance == "orthogonal":
+            return self.foot_points()
         if isinstance(self.curve, DiscreteElastica):
             return self.curve.points()
         return self.curve.points(self.s)
@@ -173,9 +177,6 @@ def _options(model: str, n: int, fixed: Optional[Mapping[str, float]], bounds, t
     if distance is not None:
         if distance not in _DISTANCES:
             raise ValueError(f"fit: distance must be one of {tuple(_DISTANCES)}, got {distance!r}")
-        if model == "discrete" and distance == "orthogonal":
-            raise ValueError("fit: the discrete model pairs vertex i with point i (seed 000 "
-                             "(4.6)); distance='orthogonal' is for the smooth model")
         o.distance = _DISTANCES[distance]
     o.use_initial = 1 if initial is not None else 0
     _set_constraints(o, model, n, constraints)
@@ -217,11 +218,16 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
         initial: Optional[Curve] = None, strict: bool = False) -> FitResult:
     """Fit an elastica to the points (n, 2), n >= 4.
 
-    model: "discrete" (vertex i <-> point i, seed 000 (4.6)) or "smooth". distance
-    (smooth): "orthogonal" (default: the distances of the points to the curve, each
-    point's foot free; the curve starts and ends at the feet of the first and last
-    points) or "paired" (point i at arc length i*length/(n-1) for equilateral data, the
+    model: "discrete" (a polygon of n vertices, one per point) or "smooth". distance:
+    "orthogonal" (the distances of the points to the curve or polygon, each point's
+    foot free; the curve starts and ends at the first and last points' feet, the
+    polygon at those points) or "paired" (discrete: vertex i <-> point i, seed 000
+    (4.6); smooth: point i at arc length i*length/(n-1) for equilateral data, the
     chord-length parameter otherwise; ``param`` = "auto" | "uniform" | "chord").
+    Default: orthogonal, except the discrete model on evenly spaced points (an
+    equilateral polygon, e.g. from :func:`resample_equilateral`, or samples at equal
+    steps: runs of max(3, (n-1)/16) segments of means within 1.3 x): paired.
+    Sketched or unevenly scanned points need no resampling.
     constraints: any of ``{"start_point": (x, y), "end_point": (x, y),
     "start_tangent": angle, "end_tangent": angle, "start_curvature": kappa,
     "end_curvature": kappa, "length": (lo, hi), "k": (lo, hi)}`` (angles in radians,

@@ -516,7 +516,7 @@ START_TEST(test_fixed_h_nonpositive_rejected)
     o.fixed[6] = 1; o.value[6] = -1.0;                 /* smooth length */
     ck_assert_int_eq(el_fit_smooth(xy, n, &o, NULL, &sr, NULL, NULL), EL_EINVAL);
     el_fit_options_defaults(&o);
-    o.distance = EL_DISTANCE_ORTHOGONAL;                /* the discrete model pairs */
+    o.distance = EL_DISTANCE_PAIRED + 1;                /* no such distance */
     ck_assert_int_eq(el_fit_discrete(xy, n, &o, NULL, &r, NULL, NULL), EL_EINVAL);
 }
 END_TEST

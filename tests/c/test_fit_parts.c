@@ -205,6 +205,76 @@ START_TEST(test_start_chart_same_curve_and_derivative)
 }
 END_TEST
 
+/* The discrete orthogonal objective's gradient J^T r / n (the distances to the polygon,
+ * feet held: variable projection) against central differences of f, on unevenly spaced
+ * noisy points over three blocks of the walk (the next block's first vertex enters the
+ * last segment of a block), for k < 1, k > 1 and the continuation -1 < k < 0. */
+START_TEST(test_discrete_orthogonal_gradient)
+{
+    enum { N = 2 * FIT_BLOCK + 40 };
+    static double xy[2 * N];
+    unsigned long long rng = 7;
+    const double ks[] = {0.4, 1.6, -0.5};
+    double worst = 0.0;
+    for (size_t a = 0; a < sizeof ks / sizeof ks[0]; a++) {
+        const double v[FIT_NP] = {0.1, -0.2, 0.004, 0.4, 0.006, 0.3, ks[a]};
+        el_discrete_params p;
+        ck_assert_int_eq(fit_to_discrete(v, &p, NULL), EL_OK);
+        static double V[2 * N];
+        ck_assert_int_eq(el_discrete_eval(&p, N, V), EL_OK);
+        /* points along the polygon at uneven places, off it by noise */
+        for (size_t i = 0; i < N; i++) {
+            const double t = (double)i / (N - 1);
+            double u = (N - 1) * (t + 0.15 * sin(2 * M_PI * t) / (2 * M_PI) * 3.0 * t * (1 - t));
+            if (i >= FIT_BLOCK - 40 && i < FIT_BLOCK - 10)    /* 30 points on a block's last segment */
+                u = FIT_BLOCK - 1 + (double)(i - (FIT_BLOCK - 40)) / 30.0;
+            const size_t j = (size_t)fmin(fmax(floor(u), 0.0), N - 2.0);
+            const double f = fmin(fmax(u - (double)j, 0.0), 1.0);
+            for (int c = 0; c < 2; c++)
+                xy[2 * i + c] = V[2 * j + c] + f * (V[2 * j + 2 + c] - V[2 * j + c]) + 2e-3 * test_uniform(&rng, -1, 1);
+            if (i >= FIT_BLOCK - 40 && i < FIT_BLOCK - 10) {   /* large residuals there, along the normal */
+                const double sx = V[2 * j + 2] - V[2 * j], sy = V[2 * j + 3] - V[2 * j + 1], l = hypot(sx, sy);
+                xy[2 * i] -= 3.0 * v[2] * sy / l;
+                xy[2 * i + 1] += 3.0 * v[2] * sx / l;
+            }
+        }
+        fit_map m;
+        memset(&m, 0, sizeof m);
+        m.model = FIT_DISCRETE; m.ncurves = 1;
+        for (int j = 0; j < FIT_NP; j++) {
+            m.scale[j] = (j == 2 || j == 4) ? (double)(N - 1) : 1.0;
+            m.idx[m.nx++] = j;
+        }
+        fit_objective o;
+        ck_assert_int_eq(fit_objective_init(&o, FIT_ORTHOGONAL, &m, xy, N, 0.0, 0.0, 1.0, NULL), EL_OK);
+        double x[FIT_MAXX];
+        double vp[FIT_NP];
+        memcpy(vp, v, sizeof vp);
+        vp[3] += 1e-4;
+        fit_map_inverse(&m, vp, x);
+        fit_value val;
+        ck_assert_int_eq(fit_objective_eval(&o, x, 1, &val), EL_OK);
+        for (int j = 0; j < m.nx; j++) {
+            const double h = 1e-7 * (1.0 + fabs(x[j]));
+            double xp[FIT_MAXX], xm[FIT_MAXX];
+            fit_value fp, fm;
+            memcpy(xp, x, sizeof xp); memcpy(xm, x, sizeof xm);
+            xp[j] += h; xm[j] -= h;
+            ck_assert_int_eq(fit_objective_eval(&o, xp, 0, &fp), EL_OK);
+            ck_assert_int_eq(fit_objective_eval(&o, xm, 0, &fm), EL_OK);
+            const double fd = (fp.f - fm.f) / (2 * h);
+            double gmax = 0.0;
+            for (int i = 0; i < m.nx; i++) gmax = fmax(gmax, fabs(val.g[i]));
+            const double err = fabs(fd - val.g[j]) / gmax;
+            worst = fmax(worst, err);
+            ck_assert_msg(err <= 1e-5, "k %g x%d: %g vs %g", ks[a], j, val.g[j], fd);
+        }
+        fit_objective_free(&o);
+    }
+    ck_assert(worst > 0.0);
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("fit parts");
@@ -214,6 +284,7 @@ static Suite *suite(void)
     tcase_add_test(tc, test_end_state_derivatives);
     tcase_add_test(tc, test_keyline_map_is_g2_with_its_derivative);
     tcase_add_test(tc, test_start_chart_same_curve_and_derivative);
+    tcase_add_test(tc, test_discrete_orthogonal_gradient);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -343,8 +343,8 @@ def test_fit_orthogonal_distances_and_constraints(capsys, tmp_path):
     r = cli(capsys, "fit", SAMPLE_S, "--model", "smooth", "--start-point", "0,0", "--end-point", "1000,0",
             "--length", ",300")
     assert r.returncode == 2 and "length" in r.stderr
-    r = cli(capsys, "fit", SAMPLE_S, "--distance", "orthogonal")       # the discrete model pairs
-    assert r.returncode == 2
+    r = cli(capsys, "fit", SAMPLE_S, "--distance", "paired", "--json", "-")   # the discrete model
+    assert r.returncode == 0 and json.loads(r.stdout)["distance"] == "paired"
     r = cli(capsys, "fit", SAMPLE_S, "--model", "smooth", "--distance", "paired", "--json", "-")
     assert r.returncode == 0 and json.loads(r.stdout)["distance"] == "paired"
 

@@ -152,6 +152,36 @@ def test_uneven_sampling_with_gaps(seed):
     assert_distances_measured(p, truth.length)
 
 
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_discrete_default_on_uneven_points_reaches_the_noise(seed):
+    """The discrete model's default on unevenly spaced points (spacing 1:6 and two gaps;
+    two densities with a gap; points sketched by hand) is the distance to the polygon:
+    its rms is within 1.2 x the noise and the polygon lies near the true curve, where
+    the paired fit (vertex i <-> point i) is many times the noise away. On an
+    equilateral polygon of the same points the default stays paired (seed 000 (4.6))."""
+    for pts, truth, noise in [(*uneven_scan(seed=seed, noise=0.15), 0.15),
+                              (*uneven_scan(seed=seed, noise=0.15, n=60), 0.15),
+                              (*_two_density_scan(seed + 5), 0.2)]:
+        size = polyline_length(pts)
+        r = el.fit(pts)
+        assert r.status == 0 and r.distance == "orthogonal"
+        assert r.rms <= 1.2 * noise, r.rms
+        assert np.array_equal(r.model_points(), r.foot_points())     # not the vertices
+        assert_distances_measured(r, size)
+        assert np.hypot(*(r.curve.points()[[0, -1]] - pts[[0, -1]]).T).max() <= 3 * noise
+        off, _ = curve_distances(truth, r.curve.points())
+        assert off.max() <= 4 * noise, off.max()
+        p = el.fit(pts, distance="paired")
+        assert p.rms >= 5 * r.rms, (p.rms, r.rms)
+        eq = el.resample_equilateral(pts, size / (len(pts) - 1))
+        assert el.fit(eq).distance == "paired"
+    pts, truth = sketched_s(seed=seed, n=15, wobble=0.5)
+    r = el.fit(pts)
+    assert r.status == 0 and r.distance == "orthogonal"
+    assert r.rms < el.fit(pts, distance="paired").rms
+    assert_distances_measured(r, polyline_length(pts))
+
+
 @pytest.mark.parametrize("model", ["discrete", "smooth"])
 @pytest.mark.parametrize("noise", [0.0, 1e-3, 1e-2])
 def test_noise_levels(model, noise):
@@ -305,6 +335,18 @@ def _check_constraints(r, con, model, size):
         assert con["k"][0] - 1e-12 <= r.curve.k <= con["k"][1] + 1e-12, (con, r.curve.k)
 
 
+def _held_at_one_end(con, model):
+    """Whether the fit holds every constraint of con exactly, all at one end."""
+    def held(end):
+        names = {f"{end}_point"}
+        if model == "smooth":
+            names |= {f"{end}_tangent", f"{end}_curvature"}
+        elif con.get(f"{end}_curvature") == 0.0:
+            names.add(f"{end}_curvature")
+        return set(con) <= names
+    return held("start") or held("end")
+
+
 @pytest.mark.parametrize("model", ["smooth", "discrete"])
 def test_every_constraint_honoured_to_1e_9(model):
     """Every constraint, alone and combined, is met to 1e-9 (of the data's size; rad)
@@ -342,8 +384,107 @@ def test_every_constraint_honoured_to_1e_9(model):
         size = polyline_length(data)
         _check_constraints(r, con, model, size)
         assert r.status == 0, (con, r.status)
-        assert r.used_ipopt or set(con) <= {"start_point"}
+        # constraints all at one end that the fit holds exactly (the start point, and
+        # through the start-state chart the smooth tangent and curvature, the discrete
+        # zero curvature; the end's by fitting the points reversed) need no Ipopt
+        assert r.used_ipopt != _held_at_one_end(con, model), (con, r.used_ipopt)
         assert_distances_measured(r, size)
+
+
+def _two_density_scan(seed=5):
+    """42 noisy points (0.2) along an S: 30 dense over the first 30 %, a gap, 12 sparse."""
+    c = el.SmoothElastica(x0=0.0, y0=0.0, phi=-1.028, mu=(1.0 / 105.0) ** 2, k=0.65, q=0.25, length=330.0)
+    t = np.concatenate([np.linspace(0, .3, 30), np.linspace(.45, 1, 12)]) * c.length
+    rng = np.random.default_rng(seed)
+    return c.points(t) + rng.normal(0, 0.2, (len(t), 2)), c
+
+
+@pytest.mark.parametrize("seed", [5, 6, 7])
+@pytest.mark.parametrize("model", ["discrete", "smooth"])
+def test_paired_fit_distances_are_to_the_whole_curve(seed, model):
+    """On uneven data the paired fit is poor (points far from their vertices), so a
+    point's nearest place lies far from its own vertex or comes from another turn of a
+    loop: the reported distances are still those to the whole polygon / curve
+    (independent brute force). Before: 12.72 reported where the polygon is 11.41 away
+    (a foot found outside the stretch searched), 10.8 where a loop passed 5.7 away."""
+    pts, _ = _two_density_scan(seed)
+    r = el.fit(pts, model=model, distance="paired")
+    assert_distances_measured(r, polyline_length(pts))
+    pts, _ = uneven_scan(seed=seed, n=60)
+    r = el.fit(pts, model=model, distance="paired")
+    assert_distances_measured(r, polyline_length(pts))
+
+
+def test_constrained_fit_minimises_the_reported_distance():
+    """165 noisy points (1.0) along an S, the start tangent 0.2 rad off the data's and
+    the end at the last point: the fit reaches the constrained optimum of the distances
+    it reports, rms 1.5083 (scipy SLSQP over the same curves, distances by dense
+    sampling, from the fit's result and from the free fit). It stopped at 1.616 when
+    the objective counted distances to the curve extended 5 % beyond its ends, onto
+    which the wrongly started curve bent. Every start/end constraint set of a sketched S
+    is met (the four together raised a false ConstraintError after 2 s; time: bench_fit.py)."""
+    c = el.SmoothElastica(x0=0.0, y0=0.0, phi=-1.028, mu=(1.0 / 105.0) ** 2, k=0.65, q=0.25, length=330.0)
+    rng = np.random.default_rng(2)
+    xy = c.points(np.linspace(0, c.length, 165)) + rng.normal(0, 1.0, (165, 2))
+    con = {"start_tangent": c.angle([0.0])[0] + 0.2, "end_point": tuple(xy[-1])}
+    r = el.fit(xy, model="smooth", constraints=con)
+    assert r.status == 0
+    _check_constraints(r, con, "smooth", polyline_length(xy))
+    assert r.rms <= 1.5083 * (1 + 1e-4), r.rms
+    assert_distances_measured(r, polyline_length(xy))
+    pts, _ = sketched_s(seed=7, n=40, wobble=0.3)
+    con = {"start_point": tuple(pts[0]), "end_point": tuple(pts[-1]), "start_curvature": 0.0,
+           "end_curvature": 0.0}
+    for model in ("smooth", "discrete"):
+        r = el.fit(pts, model=model, constraints=con)
+        assert r.status == 0 and r.rms < 1.5, r.rms
+        _check_constraints(r, con, model, polyline_length(pts))
+
+
+@pytest.mark.parametrize("model", ["smooth", "discrete"])
+@pytest.mark.parametrize("end", ["start", "end"])
+@pytest.mark.parametrize("noise", [0.0, 0.2])
+def test_zero_end_curvature_met_not_refused(model, end, noise):
+    """Curvature 0 at an end (a free end, an inflection), a tiny and an ordinary value,
+    at either end of data that has an inflection there: met to 1e-9, and for 0 and the
+    tiny value with the rms of the free fit (the constraint holds on the true curve).
+    It was refused as 'no elastica meets constraint' for exactly 0 while 0.001 passed."""
+    k = 0.7
+    K = ellipk(k * k)
+    rng = np.random.default_rng(3)
+    if model == "smooth":
+        wave = el.SmoothElastica(x0=3, y0=-2, phi=0.2, mu=(1 / 30.0) ** 2, k=k, q=K, length=2 * K * 30.0)
+        data = wave.points(np.linspace(0, wave.length, 50))
+    else:   # vertices 0 and 49 at cn u = 0
+        data = el.DiscreteElastica(x0=3, y0=-2, h=2.2, phi=0.2, z=2 * K / 49, q=K, k=k, n=50).points()
+    data = data + rng.normal(0, noise, (50, 2))
+    size = polyline_length(data)
+    free = el.fit(data, model=model)
+    for kappa in (0.0, 1e-7, 0.01):
+        con = {f"{end}_curvature": kappa}
+        r = el.fit(data, model=model, constraints=con)
+        assert r.status == 0, (con, r.status)
+        _check_constraints(r, con, model, size)
+        if kappa < 0.01:
+            assert r.rms <= 1.02 * free.rms + 1e-6 * size, (con, r.rms, free.rms)
+
+
+@pytest.mark.parametrize("model", ["smooth", "discrete"])
+@pytest.mark.parametrize("end", ["start", "end"])
+def test_zero_end_curvature_where_the_data_curves(model, end):
+    """A noise-free S whose ends are near its extreme curvature, forced to start (end)
+    at an inflection: the fit meets it and is the constrained optimum found by an
+    independent search (scipy over curves starting at an inflection: rms 1.61 at the
+    start; the S is asymmetric), not a false ConstraintError or a curve stalled at the
+    separatrix (rms 7.9)."""
+    c = el.SmoothElastica(x0=0.0, y0=0.0, phi=-1.028, mu=(1.0 / 105.0) ** 2, k=0.65, q=0.25, length=330.0)
+    xy = c.points(np.linspace(0, c.length, 40))
+    for kappa in (0.0, 0.001):      # the discrete 0.001 (Ipopt's row) stalled at rms 7.85
+        con = {f"{end}_curvature": kappa}
+        r = el.fit(xy, model=model, constraints=con)
+        assert r.status == 0
+        _check_constraints(r, con, model, polyline_length(xy))
+        assert r.rms < 1.7, (kappa, r.rms)
 
 
 @pytest.mark.parametrize("model,con", [("discrete", {"end_curvature": 0.0}),
@@ -527,8 +668,6 @@ def test_bad_input(model):
     with pytest.raises(ValueError):
         el.fit(good, model=model, distance="nearest")
     if model == "discrete":
-        with pytest.raises(ValueError):
-            el.fit(good, model=model, distance="orthogonal")
         with pytest.raises(ValueError):                # fixed h <= 0
             el.fit(good, model=model, fixed={"h": 0.0})
     # collinear: the straight line, exactly
