@@ -672,7 +672,9 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
         if (!d) d = dbuf;
         if (!fs) fs = dbuf + n;
     }
-    if (ok) ok = curve_distances(&ob, best.x, v, d, fs, tmp) == EL_OK;
+    if (ok) ok = curve_distances(&ob, best.x, v, d, fs, tmp) == EL_OK &&
+                 !el__all_finite(d, n) && !el__all_finite(fs, n);
+    if (!ok) status = EL_EDOM;   /* its distances are beyond double precision: not a fit */
     double s2 = 0.0, emax = 0.0;
     for (size_t i = 0; i < n; i++) {
         if (!ok) { d[i] = HUGE_VAL; fs[i] = 0.0; continue; }

@@ -90,7 +90,8 @@ static int project_block(const fit_objective *o, double v[2][FIT_NP], size_t a, 
             const double Tx = b.T[2 * i], Ty = b.T[2 * i + 1];
             const double t = b.dirs[i] * (Tx * dx + Ty * dy);     /* d/dsigma of |gamma - P|^2 / 2 */
             const double e = Tx * dy - Ty * dx;                    /* N . (gamma - P) */
-            const double u = (last ? 0.0 : fit_clamp(cur[i] + fit_foot_step(t, e, b.kappa[i], hi - lo), lo, hi)) - cur[i];
+            /* the last iteration keeps the foot where it is (u = 0) and writes its distance */
+            const double u = last ? 0.0 : fit_clamp(cur[i] + fit_foot_step(t, e, b.kappa[i], hi - lo), lo, hi) - cur[i];
             sig[act[i]] = cur[i] + u;
             if (fabs(u) > tol) { act[keep++] = act[i]; continue; }
             if (dist) {
@@ -280,6 +281,14 @@ typedef struct grid {
     int used;
 } grid;
 
+/* The grid cell of coordinate x: floor(x / cell), held to +-2^40 (a far, diverging
+ * curve gives quotients no long holds; the searches below then take every piece). */
+static long cell_index(double x, double cell)
+{
+    const double c = floor(x / cell), lim = 1099511627776.0;
+    return c >= -lim && c <= lim ? (long)c : c > 0.0 ? (long)lim : -(long)lim;
+}
+
 static unsigned cell_hash(long ix, long iy)
 {
     const unsigned long h = (unsigned long)ix * 73856093UL ^ (unsigned long)iy * 19349663UL;
@@ -288,8 +297,8 @@ static unsigned cell_hash(long ix, long iy)
 
 static void grid_add(grid *g, const piece *p, int id)
 {
-    const long x0 = (long)floor((p->cx - p->r) / g->cell), x1 = (long)floor((p->cx + p->r) / g->cell);
-    const long y0 = (long)floor((p->cy - p->r) / g->cell), y1 = (long)floor((p->cy + p->r) / g->cell);
+    const long x0 = cell_index(p->cx - p->r, g->cell), x1 = cell_index(p->cx + p->r, g->cell);
+    const long y0 = cell_index(p->cy - p->r, g->cell), y1 = cell_index(p->cy + p->r, g->cell);
     for (long ix = x0; ix <= x1; ix++)
         for (long iy = y0; iy <= y1; iy++) {
             if (g->used >= 8 * MAX_PIECES) return;
@@ -483,8 +492,8 @@ int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const do
         for (int j = 0; j < np; j++) {
             const piece *p = &pc[j];
             const double R = 2.0 * dmax + p->r + rmax;
-            const long x0 = (long)floor((p->cx - R) / g->cell), x1 = (long)floor((p->cx + R) / g->cell);
-            const long y0 = (long)floor((p->cy - R) / g->cell), y1 = (long)floor((p->cy + R) / g->cell);
+            const long x0 = cell_index(p->cx - R, g->cell), x1 = cell_index(p->cx + R, g->cell);
+            const long y0 = cell_index(p->cy - R, g->cell), y1 = cell_index(p->cy + R, g->cell);
             const int all = (double)(x1 - x0 + 1) * (double)(y1 - y0 + 1) > 4.0 * np;
             for (long ix = x0; ix <= x1; ix++)
                 for (long iy = y0; iy <= y1; iy++)
@@ -515,8 +524,8 @@ int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const do
                 for (int j = lo; j <= hi; j++) any |= sep[j] > 2.0 * 1.4142135623730951 * d0 + 4.0 * rmax;
                 if (!any) continue;
             }
-            const long x0 = (long)floor((P[0] - d0) / g->cell), x1 = (long)floor((P[0] + d0) / g->cell);
-            const long y0 = (long)floor((P[1] - d0) / g->cell), y1 = (long)floor((P[1] + d0) / g->cell);
+            const long x0 = cell_index(P[0] - d0, g->cell), x1 = cell_index(P[0] + d0, g->cell);
+            const long y0 = cell_index(P[1] - d0, g->cell), y1 = cell_index(P[1] + d0, g->cell);
             const unsigned tag = (unsigned)i + 1u;
             const own_foot f0 = {side ? side[i] : 0, foot[i], d0};
             if ((double)(x1 - x0 + 1) * (double)(y1 - y0 + 1) > 4.0 * np) {   /* far: every piece */
