@@ -655,7 +655,7 @@ START_TEST(test_distances_do_not_depend_on_the_callers_arrays)
 {
     double xy[2 * 200];
     size_t n = 0;
-    FILE *fp = fopen("tests/data/fit_s_resampled_2mm.txt", "r");
+    FILE *fp = fopen("../data/fit_s_resampled_2mm.txt", "r");
     ck_assert_msg(fp != NULL, "tests/data/fit_s_resampled_2mm.txt missing");
     char line[256];
     while (n < 200 && fgets(line, sizeof line, fp))
