@@ -45,15 +45,13 @@ void el_fit_options_defaults(el_fit_options *opt)
 /* ------------------------------------------------------------ units */
 
 /* The parameter slot of the length ((n-1) h for the discrete model) and of k. */
-static int length_slot(int model) { return model == FIT_DISCRETE ? 2 : 6; }
-static int k_slot(int model) { return model == FIT_DISCRETE ? 6 : 4; }
 
 /* A parameter value j in input units -> normalised (the smooth mu -> w = sqrt(mu)). */
 double fit_norm_param(int model, int j, double v, double cx, double cy, double sc)
 {
     if (j == 0) return (v - cx) / sc;
     if (j == 1) return (v - cy) / sc;
-    if (j == length_slot(model)) return v / sc;
+    if (j == fit_length_slot(model)) return v / sc;
     if (model == FIT_SMOOTH && j == 3) return v >= 0.0 ? sqrt(v) * sc : NAN;
     return v;
 }
@@ -62,7 +60,7 @@ double fit_denorm_param(int model, int j, double v, double cx, double cy, double
 {
     if (j == 0) return cx + sc * v;
     if (j == 1) return cy + sc * v;
-    if (j == length_slot(model)) return v * sc;
+    if (j == fit_length_slot(model)) return v * sc;
     if (model == FIT_SMOOTH && j == 3) return (v / sc) * (v / sc);
     return v;
 }
@@ -154,62 +152,6 @@ static int evenly_spaced(const double *xy, size_t n)
 
 
 
-/* The constraints in normalised units, and the bounds they add. */
-static void setup_constraints(const el_fit_options *o, int model, size_t n, double cx, double cy,
-                              double sc, fit_constraints *con, double *lo, double *hi)
-{
-    memset(con, 0, sizeof *con);
-    con->mask = o->constraints;
-    con->start_xy[0] = (o->start_point[0] - cx) / sc; con->start_xy[1] = (o->start_point[1] - cy) / sc;
-    con->end_xy[0] = (o->end_point[0] - cx) / sc; con->end_xy[1] = (o->end_point[1] - cy) / sc;
-    con->start_theta = o->start_tangent; con->end_theta = o->end_tangent;
-    con->start_kappa = o->start_curvature * sc; con->end_kappa = o->end_curvature * sc;
-    const double per = model == FIT_DISCRETE ? (double)(n - 1) : 1.0;
-    if (o->constraints & EL_CONSTRAIN_LENGTH) {
-        const int j = length_slot(model);
-        lo[j] = fmax(lo[j], o->length_range[0] / per / sc);
-        hi[j] = fmin(hi[j], o->length_range[1] / per / sc);
-    }
-    if (o->constraints & EL_CONSTRAIN_K) {
-        const int j = k_slot(model);
-        lo[j] = fmax(lo[j], o->k_range[0]);
-        hi[j] = fmin(hi[j], o->k_range[1]);
-    }
-}
-
-/* Which constraint the normalised parameters v violate most (0: none), after a solve:
- * points and curvatures to 1e-10 of the data's rms radius, angles to 1e-10 rad, a
- * tangent not reversed, the length and k within their ranges. */
-static int violated(const fit_objective *ob, const fit_constraints *con, const double *v,
-                    const double *lo, const double *hi, double *tmp)
-{
-    const int model = ob->map.model, mask = con->mask;
-    const double tol = 1e-10;
-    const int jl = length_slot(model), jk = k_slot(model);
-    if ((mask & EL_CONSTRAIN_LENGTH) && (v[jl] < lo[jl] * (1 - 1e-14) || v[jl] > hi[jl] * (1 + 1e-14)))
-        return EL_CONSTRAIN_LENGTH;
-    if ((mask & EL_CONSTRAIN_K) && (v[jk] < lo[jk] - 1e-14 || v[jk] > hi[jk] + 1e-14))
-        return EL_CONSTRAIN_K;
-    int worst = 0;
-    double wv = 0.0;
-    for (int at_end = 0; at_end < 2; at_end++) {
-        const int pbit = at_end ? EL_CONSTRAIN_END_POINT : EL_CONSTRAIN_START_POINT;
-        const int tbit = at_end ? EL_CONSTRAIN_END_TANGENT : EL_CONSTRAIN_START_TANGENT;
-        const int kbit = at_end ? EL_CONSTRAIN_END_CURVATURE : EL_CONSTRAIN_START_CURVATURE;
-        if (!(mask & (pbit | tbit | kbit))) continue;
-        fit_end e;
-        if (fit_end_state(model, v, ob->n, at_end, &e, tmp)) return mask & (pbit | tbit | kbit);
-        const double *P = at_end ? con->end_xy : con->start_xy;
-        const double err[3] = {(mask & pbit) ? fmax(fabs(e.xy[0] - P[0]), fabs(e.xy[1] - P[1])) : 0.0,
-                               (mask & tbit) ? fabs(remainder(e.theta - (at_end ? con->end_theta : con->start_theta), 2.0 * M_PI)) : 0.0,
-                               (mask & kbit) ? fabs(e.kappa - (at_end ? con->end_kappa : con->start_kappa)) : 0.0};
-        const int bits[3] = {pbit, tbit, kbit};
-        for (int a = 0; a < 3; a++)
-            if (err[a] > tol && err[a] > wv) { wv = err[a]; worst = bits[a]; }
-    }
-    return worst;
-}
-
 static int ipopt_to_status(int rs)
 {
     switch (rs) {
@@ -290,74 +232,6 @@ static int curve_distances(fit_objective *ob, const double *x, double v[2][FIT_N
     return st;
 }
 
-/*
- * A start for a fit with a start tangent or curvature (bits) in the start-state chart
- * (free_map: the chart, those variables free): the fit with them free from the guess p0,
- * then the chart's theta0 / kappa0 moved from that fit's values to their targets in
- * HELD_STAGES stages, each fitted by Levenberg-Marquardt from the last, so the fit
- * follows the basin of the unconstrained one instead of starting from the guess with
- * its start state replaced (measured: a noise-free S forced to start at an inflection,
- * rms 4.2 or 8.0 from the guesses, 1.44 by continuation). The targets are the
- * constraints where the chart holds them exactly (smooth; the discrete zero curvature);
- * else (discrete: the tangent of the first segment, the curvature (3.4)) the chart values
- * that would meet them on the free fit's curve (its offset theta0 - Theta_0, kappa0 =
- * (n-1) h kappa), a start near the constraint for Ipopt's rows. x: out's variables on
- * return (p0's when nothing could be fitted). Returns the iterations.
- */
-enum { HELD_STAGES = 4 };
-static int held_start(fit_objective *ob, const fit_map *out, const fit_map *free_map, int bits,
-                      const fit_constraints *con, int max_iter, const double *p0, double *x, double *tmp)
-{
-    const int model = free_map->model;
-    const int sl[2] = {model == FIT_DISCRETE ? 3 : 2, model == FIT_DISCRETE ? 4 : 3};
-    const int bit[2] = {EL_CONSTRAIN_START_TANGENT, EL_CONSTRAIN_START_CURVATURE};
-    double v[2][FIT_NP], xf[FIT_MAXX], from[2] = {0.0, 0.0}, to[2] = {con->start_theta, con->start_kappa};
-    const fit_map saved = ob->map;
-    int iters = 0;
-    fit_solution sol;
-    fit_map_inverse(out, p0, x);
-    ob->map = *free_map;
-    ob->have_base = 0;
-    fit_map_inverse(free_map, p0, xf);
-    fit_end e;
-    if (fit_lm(ob, xf, max_iter, &sol) != EL_OK || fit_map_eval(free_map, sol.x, v, NULL) ||
-        (model == FIT_DISCRETE && fit_end_state(model, v[0], ob->n, 0, &e, tmp))) {
-        ob->map = saved;
-        ob->have_base = 0;
-        return 0;
-    }
-    iters += sol.iters;
-    fit_map stage = *free_map;
-    stage.nx = 0;
-    for (int j = 0; j < free_map->nx; j++) {
-        const int slot = free_map->idx[j];
-        if (slot == sl[0]) from[0] = sol.x[j];
-        if (slot == sl[1]) from[1] = sol.x[j];
-        if (!((slot == sl[0] && (bits & bit[0])) || (slot == sl[1] && (bits & bit[1])))) stage.idx[stage.nx++] = slot;
-    }
-    if (model == FIT_DISCRETE) {
-        to[0] = from[0] + remainder(con->start_theta - e.theta, 2.0 * M_PI);
-        to[1] = (double)(ob->n - 1) * v[0][2] * con->start_kappa;
-    }
-    for (int k = 1; k <= HELD_STAGES; k++) {
-        const double t = (double)k / HELD_STAGES;
-        for (int a = 0; a < 2; a++)
-            if (bits & bit[a])
-                stage.fixed[sl[a]] = t == 1.0 ? to[a] : a == 0 ? from[0] + t * remainder(to[0] - from[0], 2.0 * M_PI)
-                                                          : from[1] + t * (to[1] - from[1]);
-        ob->map = stage;
-        ob->have_base = 0;
-        double xs[FIT_MAXX];
-        fit_map_inverse(&stage, v[0], xs);
-        if (fit_lm(ob, xs, max_iter, &sol) != EL_OK || fit_map_eval(&stage, sol.x, v, NULL)) break;
-        iters += sol.iters;
-        fit_map_inverse(out, v[0], x);
-    }
-    ob->map = saved;
-    ob->have_base = 0;
-    return iters;
-}
-
 /* One initial guess: Levenberg-Marquardt, then Ipopt when something needs it. */
 static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit_constraints *con,
                            const double *xl, const double *xu, int need_ipopt, int lm_only,
@@ -403,7 +277,7 @@ static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit
     }
     x0 = xs;
     ob->f_ceiling = best_f;
-    /* near_start: x0 is near the constrained optimum already (held_start's continuation):
+    /* near_start: x0 is near the constrained optimum already (fit_held_start's continuation):
      * Ipopt from there, not from the unconstrained fit that Levenberg-Marquardt would
      * return to */
     const int lst = o->limited_memory || (near_start && need_ipopt) ? EL_EINVAL : fit_lm(ob, x0, o->max_iter, &sol);
@@ -492,18 +366,18 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
         hi[j] = isnan(b) ? HUGE_VAL : fmax(a, b);
     }
     fit_constraints con;
-    setup_constraints(&o, model, n, cx, cy, sc, &con, lo, hi);
+    fit_setup_constraints(&o, model, n, cx, cy, sc, &con, lo, hi);
     for (int j = 0; j < FIT_NP; j++) {
         if (lo[j] > hi[j]) {
-            res->constraint = (j == length_slot(model) && (o.constraints & EL_CONSTRAIN_LENGTH)) ? EL_CONSTRAIN_LENGTH
-                            : (j == k_slot(model) && (o.constraints & EL_CONSTRAIN_K)) ? EL_CONSTRAIN_K : 0;
+            res->constraint = (j == fit_length_slot(model) && (o.constraints & EL_CONSTRAIN_LENGTH)) ? EL_CONSTRAIN_LENGTH
+                            : (j == fit_k_slot(model) && (o.constraints & EL_CONSTRAIN_K)) ? EL_CONSTRAIN_K : 0;
             return EL_EINVAL;
         }
         if (o.fixed[j]) {
             const double v = fit_norm_param(model, j, o.value[j], cx, cy, sc);
             if (!isfinite(v) || v < lo[j] || v > hi[j]) {
-                res->constraint = j == length_slot(model) ? o.constraints & EL_CONSTRAIN_LENGTH
-                                : j == k_slot(model) ? o.constraints & EL_CONSTRAIN_K : 0;
+                res->constraint = j == fit_length_slot(model) ? o.constraints & EL_CONSTRAIN_LENGTH
+                                : j == fit_k_slot(model) ? o.constraints & EL_CONSTRAIN_K : 0;
                 return EL_EINVAL;
             }
         }
@@ -512,12 +386,12 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
     if ((o.constraints & EL_CONSTRAIN_END_POINT) && (o.constraints & (EL_CONSTRAIN_LENGTH | EL_CONSTRAIN_START_POINT)) ==
         (EL_CONSTRAIN_LENGTH | EL_CONSTRAIN_START_POINT)) {
         const double chord = hypot(con.end_xy[0] - con.start_xy[0], con.end_xy[1] - con.start_xy[1]);
-        const double maxlen = hi[length_slot(model)] * (model == FIT_DISCRETE ? (double)(n - 1) : 1.0);
+        const double maxlen = hi[fit_length_slot(model)] * (model == FIT_DISCRETE ? (double)(n - 1) : 1.0);
         if (chord > maxlen * (1.0 + 1e-12)) { res->constraint = EL_CONSTRAIN_LENGTH; return EL_EDOM; }
     }
     /* discrete k < 0 is used internally by shifting q (fit_canonical): not when q is
      * fixed; smooth w < 0 flips k and q: not when either is fixed or bounded */
-    const int ik = k_slot(model);
+    const int ik = fit_k_slot(model);
     if (model == FIT_DISCRETE && o.fixed[5] && !o.fixed[ik]) lo[ik] = fmax(lo[ik], 0.0);
     if (model == FIT_SMOOTH && (o.fixed[ik] || o.fixed[5] || isfinite(lo[ik]) || isfinite(hi[ik]) ||
                                 isfinite(lo[5]) || isfinite(hi[5])))
@@ -543,7 +417,7 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
         held = EL_CONSTRAIN_START_CURVATURE;
     const int need_ipopt = (o.constraints & ~(EL_CONSTRAIN_START_POINT | EL_CONSTRAIN_LENGTH | EL_CONSTRAIN_K | held)) != 0;
     /* the discrete start tangent and non-zero curvature stay Ipopt's rows, started by
-     * continuation in the chart (held_start; measured on a sketched S, start tangent: rms
+     * continuation in the chart (fit_held_start; measured on a sketched S, start tangent: rms
      * 0.70 in 1400 iterations from the free fit, 0.35 by continuation) */
     const int staged = chart_ok ? held | (o.constraints & (EL_CONSTRAIN_START_TANGENT | EL_CONSTRAIN_START_CURVATURE)) : 0;
     fit_constraints con_rows = con;      /* the constraints left to Ipopt's rows */
@@ -638,7 +512,7 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
         } else {
             int pre = 0;
             if (staged) {
-                pre = held_start(&ob, &map, &free_map, staged, &con, o.max_iter, p0, x0, tmp);
+                pre = fit_held_start(&ob, &map, &free_map, staged, &con, o.max_iter, p0, x0, tmp);
                 if (fit_has_feet(&ob))          /* the first feet again (the stages moved them) */
                     for (size_t i = 0; i < n; i++) ob.s[i] = t[i] * p0[6];
             }
@@ -665,7 +539,7 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
     int ok = fit_map_eval(&map, best.x, v, NULL) == EL_OK;
     if (ok && ob.s && !(last_is_best && fit_has_feet(&ob)))   /* else the fit's own feet */
         for (size_t i = 0; i < n; i++) ob.s[i] = t[i] * v[0][6];
-    if (ok && (constraint = violated(&ob, &con, v[0], lo, hi, tmp))) status = EL_EDOM;
+    if (ok && (constraint = fit_violated(&ob, &con, v[0], lo, hi, tmp))) status = EL_EDOM;
     double *dbuf = NULL, *d = dist, *fs = foot;
     if (!d || !fs) {
         if (!(dbuf = malloc(sizeof(double) * 2 * n))) { st = EL_ENOMEM; goto done; }
@@ -733,54 +607,6 @@ done:
 
 /* ------------------------------------------------------------ reversed fits */
 
-/* How well a fit handles the constraints at one end were they at its start: the start
- * point (x0, y0), and through the start-state chart the smooth start tangent and
- * curvature and the discrete zero start curvature are held exactly; the discrete
- * tangent and other curvatures are started near (fit_run). */
-static int held_score(const el_fit_options *o, int model, int at_end)
-{
-    const int c = o->constraints;
-    const int pbit = at_end ? EL_CONSTRAIN_END_POINT : EL_CONSTRAIN_START_POINT;
-    const int tbit = at_end ? EL_CONSTRAIN_END_TANGENT : EL_CONSTRAIN_START_TANGENT;
-    const int kbit = at_end ? EL_CONSTRAIN_END_CURVATURE : EL_CONSTRAIN_START_CURVATURE;
-    const double kv = at_end ? o->end_curvature : o->start_curvature;
-    /* 2 for each held exactly, 1 for the discrete tangent or curvature (a start by
-     * continuation in the chart, held_start) */
-    return 2 * !!(c & pbit) + ((c & tbit) ? (model == FIT_SMOOTH ? 2 : 1) : 0) +
-           ((c & kbit) ? (model == FIT_SMOOTH || kv == 0.0 ? 2 : 1) : 0);
-}
-
-/* The same curve run backwards (input units, p in the Jacobian order): smooth by
- * el_smooth_reverse; discrete vertex j' = vertex n-1-j is
- * (gamma_{n-1}, h, phi + pi, -z, q + (n-1) z, k) (Theta_j = phi + a_j + a_{j+1}). Both
- * are involutions; then the canonical form (k >= 0 inflectional). */
-static int reverse_params(int model, size_t n, double *p)
-{
-    double end[2];
-    if (model == FIT_SMOOTH) {
-        const el_smooth_params sp = {p[0], p[1], p[2], p[3], p[4], p[5], p[6]};
-        el_smooth_params r;
-        if (el_smooth_reverse(&sp, &r)) return EL_EDOM;
-        const double a[FIT_NP] = {r.x0, r.y0, r.phi, r.mu, r.k, r.q, r.length};
-        memcpy(p, a, sizeof a);
-        end[0] = r.x0; end[1] = r.y0;
-    } else {
-        el_discrete_params dp = {p[0], p[1], p[2], p[3], p[4], p[5], p[6]};
-        double *xy = malloc(sizeof(double) * 2 * n);
-        if (!xy) return EL_ENOMEM;
-        int st = el_discrete_eval(&dp, n, xy);
-        memcpy(end, xy + 2 * (n - 1), sizeof end);
-        free(xy);
-        if (st) return EL_EDOM;
-        p[5] += (double)(n - 1) * p[4];
-        p[4] = -p[4];
-        p[3] += M_PI;
-    }
-    p[0] = end[0]; p[1] = end[1];
-    p[3 - (model == FIT_SMOOTH)] = remainder(p[3 - (model == FIT_SMOOTH)], 2.0 * M_PI);
-    return fit_canonical(model, p, 1);
-}
-
 /*
  * fit_run, on the points in reverse order when the end holds more constraints than the
  * start (a fit holds start constraints exactly, the end's are Ipopt's rows): the end
@@ -793,7 +619,7 @@ static int fit_run_either_way(int model, const double *xy, size_t n, const el_fi
                               const double *init, fit_out *res, double *dist, double *foot)
 {
     int plain = !opt || !xy || n < 4 || opt->use_initial || (model == FIT_SMOOTH && (opt->constraints & EL_CONSTRAIN_K)) ||
-                held_score(opt, model, 1) <= held_score(opt, model, 0);
+                fit_held_score(opt, model, 1) <= fit_held_score(opt, model, 0);
     for (int j = 0; j < FIT_NP && !plain; j++)
         plain = opt->fixed[j] || isfinite(opt->lower[j]) || isfinite(opt->upper[j]);
     if (plain) return fit_run(model, xy, n, opt, 0, init, res, dist, foot);
@@ -835,7 +661,7 @@ static int fit_run_either_way(int model, const double *xy, size_t n, const el_fi
     }
     for (int a = 0; a < 3; a++)
         if (res->constraint == swap[a][0] || res->constraint == swap[a][1]) res->constraint ^= swap[a][0] | swap[a][1];
-    if (reverse_params(model, n, res->params) || reverse_params(model, n, res->initial))
+    if (fit_reverse_params(model, n, res->params) || fit_reverse_params(model, n, res->initial))
         return fit_run(model, xy, n, opt, 0, init, res, dist, foot);
     return st;
 }

@@ -271,4 +271,25 @@ int fit_ipopt(fit_objective *o, const double *xl, const double *xu, const fit_co
 int fit_constraint_rows(const fit_objective *o, const fit_constraints *con, const double *x,
                         double *c, double *J, int *which, double *tmp);
 
+/* ---- the end constraints (fit_constraints.c) */
+
+/* The slots of the length and of k in the parameter vector of each model. */
+static inline int fit_length_slot(int model) { return model == FIT_DISCRETE ? 2 : 6; }
+static inline int fit_k_slot(int model) { return model == FIT_DISCRETE ? 6 : 4; }
+/* The options' constraints in normalised units (centre cx, cy, scale sc) into con, and
+ * the bounds on the length and k they add to lo, hi. */
+void fit_setup_constraints(const el_fit_options *o, int model, size_t n, double cx, double cy,
+                           double sc, fit_constraints *con, double *lo, double *hi);
+/* The constraint bit the normalised parameters v violate most (0: none). */
+int fit_violated(const fit_objective *ob, const fit_constraints *con, const double *v,
+                 const double *lo, const double *hi, double *tmp);
+/* A start for a fit with a start tangent or curvature (bits) by continuation in the
+ * start-state chart; x: out's variables. Returns the iterations spent. */
+int fit_held_start(fit_objective *ob, const fit_map *out, const fit_map *free_map, int bits,
+                   const fit_constraints *con, int max_iter, const double *p0, double *x, double *tmp);
+/* How many of one end's constraints a fit would hold exactly at its start (weighted). */
+int fit_held_score(const el_fit_options *o, int model, int at_end);
+/* p (input units, n points) replaced by the same curve run backwards, canonical. */
+int fit_reverse_params(int model, size_t n, double *p);
+
 #endif
