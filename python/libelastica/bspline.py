@@ -207,10 +207,9 @@ def smooth_chain_to_bspline(pieces, tol: float = 1e-6, degree: int = 3) -> BSpli
     st = lib.el_smooth_chain_to_bspline(arr, len(pieces), tol, degree, b)
     if st == lib.EL_EDOM:   # a piece beyond el_smooth_to_bspline's limits: say which and why
         n = len(pieces)
-        why = [_beyond_limits(arr[i], tol) for i in range(n)]
         worst = max(range(n), key=lambda i: 2.0 * abs(arr[i].k) * np.sqrt(arr[i].mu) * arr[i].length)
-        raise DomainError(st, "to_bspline: " + (why[worst] if n == 1 else
-                                                f"piece {worst + 1} of {n}: {why[worst]}"))
+        why = _beyond_limits(arr[worst], tol)
+        raise DomainError(st, "to_bspline: " + (why if n == 1 else f"piece {worst + 1} of {n}: {why}"))
     if st == lib.EL_EMAXITER:
         dev = float(b.max_deviation)
         lib.el_bspline_free(b)

@@ -115,6 +115,30 @@ class SmoothElastica:
         return smooth_to_bspline(self, tol, degree)
 
 
+def chain_starts(pieces) -> np.ndarray:
+    """The arc length at which each piece of a chain starts, then the chain's length."""
+    return np.concatenate([[0.0], np.cumsum([p.length for p in pieces])])
+
+
+def chain_eval(pieces, starts, s, what: str, offsets=None, clip: bool = False) -> np.ndarray:
+    """A chain of SmoothElastica pieces (each starting where the one before ends;
+    ``starts`` from :func:`chain_starts`) evaluated at arc lengths ``s`` over the whole
+    chain: ``what`` is "points", "angle" or "curvature"; ``offsets[i]`` is added to
+    piece i's values (whole turns that make the angle continuous); ``clip`` holds each
+    local arc length to its piece (no extrapolation past the chain's ends)."""
+    j = np.clip(np.searchsorted(starts, s, side="right") - 1, 0, len(pieces) - 1)
+    out = np.empty((len(s), 2) if what == "points" else len(s))
+    for i in np.unique(j):
+        sel = j == i
+        local = s[sel] - starts[i]
+        if clip:
+            local = np.clip(local, 0.0, pieces[i].length)
+        out[sel] = getattr(pieces[i], what)(local)
+        if offsets is not None:
+            out[sel] += offsets[i]
+    return out
+
+
 @dataclass
 class DiscreteElastica:
     """A Bobenko–Suris discrete elastica: n vertices, segments of length h, potential

@@ -11,7 +11,7 @@ import numpy as np
 
 from ._ffi import as_int, as_real, as_size, as_vector, check, ffi, lib
 from .bspline import smooth_chain_to_bspline
-from .core import SMOOTH_PARAMS, SmoothElastica
+from .core import SMOOTH_PARAMS, SmoothElastica, chain_eval, chain_starts
 
 __all__ = ["hermite", "hermite_analyse", "HermiteSolutions", "HermiteChain"]
 
@@ -45,7 +45,7 @@ class HermiteChain:
         self.length = float(sum(p.length for p in self.pieces))
         self.k, self.mu = self.pieces[0].k, self.pieces[0].mu
         self.__dict__.update(attrs)
-        self._starts = np.concatenate([[0.0], np.cumsum([p.length for p in self.pieces])])
+        self._starts = chain_starts(self.pieces)
         # each piece's angle offset (a multiple of 2 pi) that makes theta continuous
         self._turns = [0.0]
         for a, b in zip(self.pieces[:-1], self.pieces[1:]):
@@ -63,15 +63,8 @@ class HermiteChain:
         return as_vector(s, "s")
 
     def _eval(self, s, what: str) -> np.ndarray:
-        s = self._s(s)
-        j = np.clip(np.searchsorted(self._starts, s, side="right") - 1, 0, len(self.pieces) - 1)
-        out = np.empty((len(s), 2) if what == "points" else len(s))
-        for i in np.unique(j):
-            sel = j == i
-            out[sel] = getattr(self.pieces[i], what)(s[sel] - self._starts[i])
-            if what == "angle":
-                out[sel] += self._turns[i]
-        return out
+        return chain_eval(self.pieces, self._starts, self._s(s), what,
+                          self._turns if what == "angle" else None)
 
     def points(self, s=None) -> np.ndarray:
         """Points at arc lengths s from p0, shape (n, 2) (default: 101 samples of [0, length])."""

@@ -12,7 +12,7 @@ import numpy as np
 
 from ._ffi import DomainError, NotConvergedError, as_points, check, dptr, ffi, lib
 from .bspline import smooth_chain_to_bspline
-from .core import SmoothElastica, SMOOTH_PARAMS
+from .core import SMOOTH_PARAMS, SmoothElastica, chain_eval, chain_starts
 
 __all__ = ["ElasticSpline", "elastic_spline"]
 
@@ -58,7 +58,7 @@ class ElasticSpline:
         self.angles = np.frombuffer(ffi.buffer(res.angles, 8 * n), dtype=np.float64).copy()
         self.curvatures = np.frombuffer(ffi.buffer(res.curvatures, 8 * n),
                                         dtype=np.float64).copy()
-        self._starts = np.concatenate([[0.0], np.cumsum([p.length for p in self.pieces])])
+        self._starts = chain_starts(self.pieces)
 
     def __repr__(self) -> str:
         return (f"ElasticSpline({len(self.pieces)} pieces, tension={self.tension:.6g}, "
@@ -72,13 +72,7 @@ class ElasticSpline:
         return np.linspace(0.0, self.length, int(n))
 
     def _eval(self, s: np.ndarray, what: str) -> np.ndarray:
-        j = np.clip(np.searchsorted(self._starts, s, side="right") - 1, 0, len(self.pieces) - 1)
-        out = np.empty((len(s), 2) if what == "points" else len(s))
-        for i in np.unique(j):
-            sel = j == i
-            local = np.clip(s[sel] - self._starts[i], 0.0, self.pieces[i].length)
-            out[sel] = getattr(self.pieces[i], what)(local)
-        return out
+        return chain_eval(self.pieces, self._starts, s, what, clip=True)
 
     def points(self, n: int = 200) -> np.ndarray:
         """(n, 2) points at n arc lengths equally spaced over the whole spline."""
