@@ -2,6 +2,7 @@
 point with a tangent to a point with a tangent, by tension or by length."""
 from __future__ import annotations
 
+import math
 import struct
 import threading
 import warnings
@@ -113,17 +114,34 @@ def _vec2(v, name: str):
     return float(a[0]), float(a[1])
 
 
+_FOUR_TUPLES, _FLOAT = (tuple,) * 4, {float}
+
+
+def _ends(p0, t0, p1, t1):
+    """The eight floats (p0, t0, p1, t1) of the C call: tuples of two Python floats
+    directly (the common case; el_hermite_solve refuses non-finite values, and
+    hermite() then explains by _vec2), anything else through _vec2."""
+    if (p0.__class__, t0.__class__, p1.__class__, t1.__class__) == _FOUR_TUPLES:
+        v = p0 + t0 + p1 + t1
+        if len(v) == 8 and len(p0) == len(p1) == len(t1) == 2 and set(map(type, v)) == _FLOAT:
+            return v
+    return _vec2(p0, "p0") + _vec2(t0, "t0") + _vec2(p1, "p1") + _vec2(t1, "t1")
+
+
+_TENSION, _LENGTH = lib.EL_HERMITE_TENSION, lib.EL_HERMITE_LENGTH
+_EINVAL, _EMAXITER = lib.EL_EINVAL, lib.EL_EMAXITER
+
 # Per-thread C buffers, allocated once (two threads may solve at once).
 _local = threading.local()
 
 
-def _buffers():
-    b = getattr(_local, "buffers", None)
-    if b is None:
-        opt = ffi.new("el_hermite_options *")
-        lib.el_hermite_options_defaults(opt)
-        b = _local.buffers = (opt, ffi.new("el_hermite_result *"), ffi.new("double[8]"))
-    return b
+def _new_buffers():
+    opt = ffi.new("el_hermite_options *")
+    lib.el_hermite_options_defaults(opt)
+    buf = ffi.new("double[8]")
+    _local.rest = None
+    _local.buffers = (opt, ffi.new("el_hermite_result *"), buf, buf + 2, buf + 4, buf + 6)
+    return _local.buffers
 
 
 # el_hermite_solution unpacked in one go by a struct format built from cffi's layout:
@@ -152,16 +170,16 @@ def _piece(values) -> SmoothElastica:
     return e
 
 
-def _solution(row):
-    """A SmoothElastica from one unpacked el_hermite_solution; a chain's row is returned
-    as it is (_chain completes it from the C struct)."""
-    x0, y0, phi, mu, k, q, length, _, sigma, energy, infl, kappa0, kappa1, residual, npieces = row
-    if npieces != 1:
-        return row
-    e = SmoothElastica.__new__(SmoothElastica)
-    e.__dict__.update(x0=x0, y0=y0, phi=phi, mu=mu, k=k, q=q, length=length, sigma=sigma,
-                      energy_value=energy, has_inflection=bool(infl), kappa0=kappa0,
-                      kappa1=kappa1, residual=residual)
+def _solution(row, i, _new=object.__new__, _cls=SmoothElastica):
+    """The SmoothElastica (or HermiteChain) of one unpacked el_hermite_solution, the
+    i-th of this thread's result. (Attributes are stored one by one, always in the same
+    order: Python then shares one key table among the instances, the fastest way.)"""
+    if row[14] != 1:
+        return _chain(row, _local.buffers[1].solutions[i])
+    e = _new(_cls)
+    (e.x0, e.y0, e.phi, e.mu, e.k, e.q, e.length, _, e.sigma, e.energy_value, infl,
+     e.kappa0, e.kappa1, e.residual, _) = row
+    e.has_inflection = infl != 0
     return e
 
 
@@ -205,36 +223,45 @@ def hermite(p0, t0, p1, t1, tension: Optional[float] = None,
     """
     if (tension is None) == (length is None):
         raise ValueError("hermite: give exactly one of tension= or length=")
-    opt, res, buf = _buffers()
-    buf[0:8] = _vec2(p0, "p0") + _vec2(t0, "t0") + _vec2(p1, "p1") + _vec2(t1, "t1")
+    try:
+        opt, res, buf, at_t0, at_p1, at_t1 = _local.buffers
+    except AttributeError:
+        opt, res, buf, at_t0, at_p1, at_t1 = _new_buffers()
+    buf[0:8] = _ends(p0, t0, p1, t1)
     if tension is not None:
-        opt.mode = lib.EL_HERMITE_TENSION
-        opt.sigma = as_real(tension, "hermite: tension")
+        opt.mode = _TENSION
+        opt.sigma = tension if tension.__class__ is float and tension - tension == 0.0 \
+            else as_real(tension, "hermite: tension")   # (x - x is NaN for NaN and inf)
     else:
-        opt.mode = lib.EL_HERMITE_LENGTH
-        opt.length = as_real(length, "hermite: length")
-    # the options that rarely change are set only when they do
-    rest = (as_real(tol, "hermite: tol"), as_int(samples, "hermite: samples"),
+        opt.mode = _LENGTH
+        opt.length = length if length.__class__ is float and length - length == 0.0 \
+            else as_real(length, "hermite: length")
+    # the options that rarely change are checked and set only when they do (the same
+    # values of the same exact types as last time were valid then)
+    rest = (tol, samples, grid, max_solutions)
+    if rest != _local.rest or tol.__class__ is not float or samples.__class__ is not int \
+            or grid.__class__ is not int or max_solutions.__class__ is not int:
+        opt.tol, opt.samples, opt.grid, opt.max_solutions = (
+            as_real(tol, "hermite: tol"), as_int(samples, "hermite: samples"),
             as_int(grid, "hermite: grid"), as_size(max_solutions, "hermite: max_solutions"))
-    if rest != getattr(_local, "rest", None):
-        opt.tol, opt.samples, opt.grid, opt.max_solutions = rest
         _local.rest = rest
-    status = lib.el_hermite_solve(buf, buf + 2, buf + 4, buf + 6, opt, res)
-    if status != lib.EL_EMAXITER:
+    status = lib.el_hermite_solve(buf, at_t0, at_p1, at_t1, opt, res)
+    if status and status != _EMAXITER:
+        if status == _EINVAL:   # _ends left finiteness to C: say which end is not finite
+            _vec2(p0, "p0"), _vec2(t0, "t0"), _vec2(p1, "p1"), _vec2(t1, "t1")
         check(status, "hermite")
     out = HermiteSolutions()
-    out.complete = status != lib.EL_EMAXITER
     try:
         n = res.count
         if n:
-            raw = ffi.buffer(res.solutions, n * _SOL_SIZE)
-            out.extend(map(_solution, _SOL_STRUCT.iter_unpack(raw)))
-            for i, e in enumerate(out):
-                if e.__class__ is tuple:
-                    out[i] = _chain(e, res.solutions[i])
-        out.unrepresentable = int(res.unrepresentable)
+            out.extend(map(_solution, _SOL_STRUCT.iter_unpack(ffi.buffer(res.solutions, n * _SOL_SIZE)),
+                           range(n)))
+        if res.unrepresentable:
+            out.unrepresentable = int(res.unrepresentable)
     finally:
         lib.el_hermite_result_free(res)
+    if status == _EMAXITER:
+        out.complete = False
     if out.unrepresentable:
         warnings.warn(f"hermite: {out.unrepresentable} more curve(s) exist that no smooth "
                       f"parameters meet to tol={tol:g} (too close to the separatrix |k| = 1); "

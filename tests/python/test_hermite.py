@@ -348,6 +348,40 @@ def test_plain_floats_and_arrays_give_the_same_solutions():
             el.hermite(bad, (1.0, 0.0), (1.0, 1.0), (0.0, 1.0), tension=1.0)
 
 
+def test_fast_paths_equal_the_general_path_and_refusals_leave_no_state():
+    """hermite()'s fast paths (tuples of floats, a float tension or length, options
+    checked only when they change) against the general path (arrays, numpy scalars,
+    explicit options) on random problems, chains near the separatrix included; and a
+    refused call (NaN/inf tension or length, a bad option) changes no later result."""
+    rng = np.random.default_rng(31)
+    def key(sols):
+        return [(type(s).__name__, s.length, s.kappa0, s.kappa1, s.energy_value, s.has_inflection)
+                for s in sols]
+    bad_calls = [dict(tension=float("nan")), dict(length=float("inf")), dict(tension="x"),
+                 dict(tension=1.0, tol=0.0), dict(tension=1.0, samples=True),
+                 dict(tension=1.0, grid=-1), dict(length=-2.0)]
+    chains = 0
+    for i in range(120):
+        a, b = rng.uniform(-np.pi, np.pi, 2)
+        p1 = rng.uniform(-1, 1, 2)
+        t0, t1 = (float(np.cos(a)), float(np.sin(a))), (float(np.cos(b)), float(np.sin(b)))
+        mode = "tension" if i % 3 else "length"
+        value = float(rng.uniform(-10, 3000) if mode == "tension" else rng.uniform(1.05, 3) * np.hypot(*p1))
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", RuntimeWarning)
+            fast = el.hermite((0.0, 0.0), t0, (float(p1[0]), float(p1[1])), t1, **{mode: value})
+            bad = bad_calls[i % len(bad_calls)]
+            with pytest.raises(ValueError):
+                el.hermite((0.0, 0.0), t0, (float(p1[0]), float(p1[1])), t1, **bad)
+            general = el.hermite(np.zeros(2), np.array(t0), p1, list(t1), **{mode: np.float64(value)},
+                                 tol=np.float64(1e-10), samples=np.int64(12), grid=6.0, max_solutions=64)
+            again = el.hermite((0.0, 0.0), t0, (float(p1[0]), float(p1[1])), t1, **{mode: value})
+        assert key(fast) == key(general) == key(again)
+        assert fast.unrepresentable == general.unrepresentable and fast.complete == general.complete
+        chains += sum(isinstance(s, el.HermiteChain) for s in fast)
+    assert chains > 0   # the chain rows of the fast unpacking were exercised
+
+
 def test_two_threads_solve_at_once():
     """The binding's per-thread buffers: concurrent calls give the serial results."""
     import threading
