@@ -239,7 +239,7 @@ def test_to_bspline_bad_input():
 
 @pytest.mark.parametrize("k", [0.3, 0.8, 0.99999, 1.0, 1.5, 4.0])
 def test_pendulum_identity_and_third_derivative_bound(k):
-    """bspline.c uses kappa' = -mu sin(theta - phi) (knot density by Taylor series) and
+    """bspline_approx.c uses kappa' = -mu sin(theta - phi) (knot density by Taylor series) and
     |gamma'''| = sqrt(kappa'^2 + kappa^4) <= sqrt((2 mu min(k,1))^2 + (2k sqrt(mu))^4)
     (remainder bound of the certified distance): check both on dense samples."""
     mu, phi = 1.7, 0.3
