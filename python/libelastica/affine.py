@@ -3,7 +3,7 @@
 A polyline x_0..x_N with A_i = det(x_i - x_{i-1}, x_{i+1} - x_i) constant is an
 *affine arc-length polyline*; exactly then the uniform quadratic B-spline with
 that control polygon has continuous curvature (G2). This module wraps
-libelastica/affine.c: polyline coordinates, discrete affine curvature,
+libelastica/affine.c and affine_polyline.c: polyline coordinates, discrete affine curvature,
 osculating conics, Chaikin / Lane–Riesenfeld refinement, the R^n affine length,
 uniform B-splines of such polygons, and the approximation algorithm of §4
 (:func:`affine_polyline`) for a :class:`SmoothElastica` or point data, and

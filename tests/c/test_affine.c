@@ -1,4 +1,4 @@
-/* Tests of libelastica/affine.c (seed 002): every formula against its defining identity. */
+/* Tests of libelastica/affine.c and affine_polyline.c (seed 002): every formula against its defining identity. */
 #include "testutil.h"
 #include <string.h>
 
