@@ -118,6 +118,14 @@ int el__walk_values(el__walk *wk, size_t count, const double *u, el_jacobi *val,
  * bspline.c. Errors: EL_EINVAL, EL_ENOMEM. */
 int el__bspline_join_c2(const el_bspline *parts, size_t count, el_bspline *out, double *err);
 
+/* ---- seed 003 curves (blend.c, for blend_bspline.c) */
+
+/* Whether b is an initialised basis (a known kind, d finite and positive). */
+int el__blend_basis_ok(const el_blend_basis *b);
+/* phi(t) and phi'(t) of one segment with control points q (8 doubles); xy or dxy
+ * may be NULL. Errors: those of the basis evaluation. */
+int el__blend_segment_at(const el_blend_basis *b, const double *q, double t, double xy[2], double dxy[2]);
+
 /* ---- elastic spline pieces (spline_piece.c, for spline_chain.c) */
 
 enum { EL__NV = 5 };                          /* piece unknowns v: phi, ln mu, k, q, L */
