@@ -10,13 +10,13 @@ from __future__ import annotations
 import argparse
 import os
 import sys
-import tempfile
 from pathlib import Path
 from typing import Any, Dict, List, Optional, Sequence
 
 import numpy as np
 
 from ._ffi import NotConvergedError
+from .cli_outputs import Outputs, check_outputs, out_path
 from .io import (InputError, curve_from_dict, curve_to_dict, read_json, read_points,
                  write_dxf_spline, write_json)
 
@@ -120,110 +120,6 @@ def _converged(res: Any) -> bool:
     if isinstance(status, bool):
         return status
     return str(status).lower() in ("ok", "converged", "success", "el_ok")
-
-
-def _out_path(spec: Optional[str], source: str, ext: str, batch: bool) -> Optional[Path]:
-    """Output path for one input: spec itself, spec with {stem} filled in, or (batch,
-    no {stem}) a directory spec/ holding <stem><ext>. Nothing is created here:
-    :class:`_Outputs` makes the directories when the file is written."""
-    if not spec:
-        return None
-    stem = Path(source).stem
-    if "{stem}" in spec:
-        return Path(spec.replace("{stem}", stem))
-    if batch:
-        return Path(spec) / f"{stem}{ext}"
-    return Path(spec)
-
-
-class _Outputs:
-    """The one place the command writes files (every subcommand goes through it).
-
-    - An output that is one of the command's inputs (the same file: by os.path.samefile,
-      so ``./a.csv``, links and ``{stem}`` patterns are caught) is refused before
-      anything is written (InputError: exit 2); so is a path given twice.
-    - Each output is written to a temporary next to it (same suffix, so the writers
-      still choose the format by it); :meth:`commit` renames them all into place
-      only when every one was written, :meth:`abort` removes them (and the
-      directories made for them): a failing output leaves nothing behind.
-
-    A subcommand names its input files ``file`` / ``files`` (or sets ``args.inputs``)
-    and writes with ``path = args.outputs.path(target)`` then ``write_x(..., path)``.
-    """
-
-    def __init__(self, inputs: Sequence[str]):
-        self._inputs = [Path(p) for p in inputs if p and p != "-" and Path(p).exists()]
-        self._staged: List[tuple] = []      # (temporary, final)
-        self._finals: set = set()
-        self._made: List[Path] = []         # directories created, deepest last
-
-    def check(self, target) -> Path:
-        """Refuse target when it is an input or already an output of this command."""
-        final = Path(target)
-        if final.exists():
-            for inp in self._inputs:
-                try:
-                    same = os.path.samefile(final, inp)
-                except OSError:
-                    same = False
-                if same:
-                    raise InputError(f"{final}: refusing to overwrite the input file {inp}")
-        key = os.path.abspath(final)
-        if key in self._finals:
-            raise InputError(f"{final}: the same output path is given twice")
-        return final
-
-    def path(self, target) -> Path:
-        """A temporary to write ``target``'s content to (renamed at commit)."""
-        final = self.check(target)
-        self._finals.add(os.path.abspath(final))
-        missing = []
-        parent = final.parent
-        while not parent.exists():
-            missing.append(parent)
-            parent = parent.parent
-        for d in reversed(missing):
-            d.mkdir()
-            self._made.append(d)
-        try:
-            fd, tmp = tempfile.mkstemp(prefix=f".{final.name}.", suffix=final.suffix or ".tmp",
-                                       dir=str(final.parent))
-        except OSError as exc:
-            raise InputError(f"{final}: cannot write there ({exc.strerror})") from None
-        os.close(fd)
-        self._staged.append((Path(tmp), final))
-        return Path(tmp)
-
-    def mark(self) -> int:
-        """A point to :meth:`rollback` to (a batch drops the outputs of a failed file)."""
-        return len(self._staged)
-
-    def rollback(self, mark: int) -> None:
-        for tmp, final in self._staged[mark:]:
-            self._finals.discard(os.path.abspath(final))
-            try:
-                tmp.unlink()
-            except OSError:
-                pass
-        del self._staged[mark:]
-
-    def commit(self) -> None:
-        for tmp, final in self._staged:
-            os.replace(tmp, final)
-        self._staged = []
-
-    def abort(self) -> None:
-        for tmp, _ in self._staged:
-            try:
-                tmp.unlink()
-            except OSError:
-                pass
-        for d in reversed(self._made):
-            try:
-                d.rmdir()
-            except OSError:
-                pass
-        self._staged, self._made = [], []
 
 
 class _Progress:
@@ -418,13 +314,13 @@ def _write_fit_outputs(path, args, batch, records, pictures, splines, points) ->
     """JSON, pictures (in the fit's plane coordinates) and DXF (splines and points in the
     input's coordinates) of one file."""
     from .report import fit_picture, save_picture
-    jpath = _out_path(args.json, path, ".json", batch) if args.json and args.json != "-" and not (
+    jpath = out_path(args.json, path, ".json", batch) if args.json and args.json != "-" and not (
         batch and args.json.endswith(".json") and "{stem}" not in args.json) else None
     if jpath is not None:
         write_json(records[0] if len(records) == 1 else {"file": str(path), "sides": records},
                    args.outputs.path(jpath))
     for spec, ext in ((args.svg, ".svg"), (args.png, ".png")):
-        out = _out_path(spec, path, ext, batch)
+        out = out_path(spec, path, ext, batch)
         if out is None or not pictures:
             continue
         pic = None
@@ -459,7 +355,7 @@ def _write_fit_outputs(path, args, batch, records, pictures, splines, points) ->
                 pic.params += [f"--- side {i + 1}"] + p.params
         save_picture(pic, args.outputs.path(out))
     if args.dxf and splines:
-        write_dxf_spline(splines, args.outputs.path(_out_path(args.dxf, path, ".dxf", batch)),
+        write_dxf_spline(splines, args.outputs.path(out_path(args.dxf, path, ".dxf", batch)),
                          points=points)
 
 
@@ -486,30 +382,6 @@ def _print_fit(rec: Dict[str, Any]) -> None:
                else "through the vertices (C2 cubic)")
         print(f"B-spline    degree {b['degree']}, {len(b['poles'])} poles, {dev}")
     print(f"status      {rec['status']}")
-
-
-OUTPUT_OPTIONS = (("json", ".json"), ("svg", ".svg"), ("png", ".png"), ("dxf", ".dxf"))
-
-
-def _check_outputs(args) -> None:
-    """Fail early (before any work) on outputs this installation cannot write, and on
-    an output that would replace an input (the same check again at writing)."""
-    files = list(getattr(args, "files", None) or [])
-    batch = len(files) > 1
-    for opt, ext in OUTPUT_OPTIONS:
-        spec = getattr(args, opt, None)
-        if not spec or spec == "-":
-            continue
-        for source in files or [spec]:
-            args.outputs.check(_out_path(spec, source, ext, batch))
-    if getattr(args, "png", None):
-        from .report import have_matplotlib
-        if not have_matplotlib():
-            raise InputError("--png needs matplotlib (pip install matplotlib); --svg works without it")
-    if getattr(args, "dxf", None):
-        from .io import have_ezdxf
-        if not have_ezdxf():
-            raise InputError("--dxf needs the optional package ezdxf (pip install ezdxf)")
 
 
 def cmd_fit(args) -> int:
@@ -984,11 +856,11 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     """Run the ``elastica`` command; returns the exit status (0, 1 or 2)."""
     parser = build_parser()
     args = parser.parse_args(argv)
-    args.outputs = _Outputs(list(getattr(args, "files", None) or []) + [getattr(args, "file", None)]
+    args.outputs = Outputs(list(getattr(args, "files", None) or []) + [getattr(args, "file", None)]
                             + list(getattr(args, "inputs", None) or []))
     try:
         try:
-            _check_outputs(args)
+            check_outputs(args)
             status = args.func(args)
             args.outputs.commit()
             return status

@@ -1,0 +1,140 @@
+"""Where the ``elastica`` command writes: output paths per input, and the one
+writer of files (:class:`Outputs`): an output that is an input is refused, every
+output goes to a temporary first and is renamed into place only when all of them
+were written (issue 12: the command never damages its input, and a failing output
+leaves nothing behind)."""
+from __future__ import annotations
+
+import os
+import tempfile
+from pathlib import Path
+from typing import List, Optional, Sequence
+
+from .io import InputError
+
+def out_path(spec: Optional[str], source: str, ext: str, batch: bool) -> Optional[Path]:
+    """Output path for one input: spec itself, spec with {stem} filled in, or (batch,
+    no {stem}) a directory spec/ holding <stem><ext>. Nothing is created here:
+    :class:`Outputs` makes the directories when the file is written."""
+    if not spec:
+        return None
+    stem = Path(source).stem
+    if "{stem}" in spec:
+        return Path(spec.replace("{stem}", stem))
+    if batch:
+        return Path(spec) / f"{stem}{ext}"
+    return Path(spec)
+
+
+class Outputs:
+    """The one place the command writes files (every subcommand goes through it).
+
+    - An output that is one of the command's inputs (the same file: by os.path.samefile,
+      so ``./a.csv``, links and ``{stem}`` patterns are caught) is refused before
+      anything is written (InputError: exit 2); so is a path given twice.
+    - Each output is written to a temporary next to it (same suffix, so the writers
+      still choose the format by it); :meth:`commit` renames them all into place
+      only when every one was written, :meth:`abort` removes them (and the
+      directories made for them): a failing output leaves nothing behind.
+
+    A subcommand names its input files ``file`` / ``files`` (or sets ``args.inputs``)
+    and writes with ``path = args.outputs.path(target)`` then ``write_x(..., path)``.
+    """
+
+    def __init__(self, inputs: Sequence[str]):
+        self._inputs = [Path(p) for p in inputs if p and p != "-" and Path(p).exists()]
+        self._staged: List[tuple] = []      # (temporary, final)
+        self._finals: set = set()
+        self._made: List[Path] = []         # directories created, deepest last
+
+    def check(self, target) -> Path:
+        """Refuse target when it is an input or already an output of this command."""
+        final = Path(target)
+        if final.exists():
+            for inp in self._inputs:
+                try:
+                    same = os.path.samefile(final, inp)
+                except OSError:
+                    same = False
+                if same:
+                    raise InputError(f"{final}: refusing to overwrite the input file {inp}")
+        key = os.path.abspath(final)
+        if key in self._finals:
+            raise InputError(f"{final}: the same output path is given twice")
+        return final
+
+    def path(self, target) -> Path:
+        """A temporary to write ``target``'s content to (renamed at commit)."""
+        final = self.check(target)
+        self._finals.add(os.path.abspath(final))
+        missing = []
+        parent = final.parent
+        while not parent.exists():
+            missing.append(parent)
+            parent = parent.parent
+        for d in reversed(missing):
+            d.mkdir()
+            self._made.append(d)
+        try:
+            fd, tmp = tempfile.mkstemp(prefix=f".{final.name}.", suffix=final.suffix or ".tmp",
+                                       dir=str(final.parent))
+        except OSError as exc:
+            raise InputError(f"{final}: cannot write there ({exc.strerror})") from None
+        os.close(fd)
+        self._staged.append((Path(tmp), final))
+        return Path(tmp)
+
+    def mark(self) -> int:
+        """A point to :meth:`rollback` to (a batch drops the outputs of a failed file)."""
+        return len(self._staged)
+
+    def rollback(self, mark: int) -> None:
+        for tmp, final in self._staged[mark:]:
+            self._finals.discard(os.path.abspath(final))
+            try:
+                tmp.unlink()
+            except OSError:
+                pass
+        del self._staged[mark:]
+
+    def commit(self) -> None:
+        for tmp, final in self._staged:
+            os.replace(tmp, final)
+        self._staged = []
+
+    def abort(self) -> None:
+        for tmp, _ in self._staged:
+            try:
+                tmp.unlink()
+            except OSError:
+                pass
+        for d in reversed(self._made):
+            try:
+                d.rmdir()
+            except OSError:
+                pass
+        self._staged, self._made = [], []
+
+
+OUTPUT_OPTIONS = (("json", ".json"), ("svg", ".svg"), ("png", ".png"), ("dxf", ".dxf"))
+
+
+def check_outputs(args) -> None:
+    """Fail early (before any work) on outputs this installation cannot write, and on
+    an output that would replace an input (the same check again at writing)."""
+    files = list(getattr(args, "files", None) or [])
+    batch = len(files) > 1
+    for opt, ext in OUTPUT_OPTIONS:
+        spec = getattr(args, opt, None)
+        if not spec or spec == "-":
+            continue
+        for source in files or [spec]:
+            args.outputs.check(out_path(spec, source, ext, batch))
+    if getattr(args, "png", None):
+        from .report import have_matplotlib
+        if not have_matplotlib():
+            raise InputError("--png needs matplotlib (pip install matplotlib); --svg works without it")
+    if getattr(args, "dxf", None):
+        from .io import have_ezdxf
+        if not have_ezdxf():
+            raise InputError("--dxf needs the optional package ezdxf (pip install ezdxf)")
