@@ -25,16 +25,21 @@
 #include <string.h>
 
 /* sigma range of length-mode solutions (normalised |P| = 1, length Lt > 1):
- * sigma >= -(C0/Lt)^2 (Theorem 9 bound, sigma <= 0 case); and since
- * |P| >= <P, -F/|F|> = L - 2 int dn^2(u) ds >= L - 2 I / sqrt(mu) with I <= 2 pi the
- * integral of dn^2 over one period, mu <= (4 pi / (Lt - 1))^2 and
- * sigma = 2 mu (2k^2 - 1) <= 2 mu for k <= 1; for k > 1 likewise with
- * nu = k^2 mu <= (4 / (Lt - 1))^2 and sigma <= 4 nu. */
+ * sigma >= -(C0/Lt)^2 (Theorem 9 bound, sigma <= 0 case). Above: for k <= 1,
+ * |P| >= <P, -F/|F|> = L - 2 int dn^2(u) ds (the tangent's component along F is
+ * 2 dn^2 - 1), and over at most one period u in [0, 4K] int dn^2 du <= 4 E(k), so
+ * Lt - 1 <= 8 E(k) / sqrt(mu) and sigma = 2 mu (2k^2 - 1) <= 128 E(k)^2 (2k^2 - 1) / (Lt - 1)^2,
+ * at most SIGMA_E2_INFL / (Lt - 1)^2: the maximum over k is 1.0166210 (at k^2 = 0.97136,
+ * just above its value 1 at k = 1; reached by the two-loop solutions near the
+ * separatrix, test_hermite.c checks it against tension-mode solutions). For k > 1
+ * likewise with nu = k^2 mu <= (4 / (Lt - 1))^2 and sigma <= 4 nu. The bound holds at
+ * every point of C with L >= Lt, so a trace above it has L < Lt. */
+#define SIGMA_E2_INFL 130.13
 static void sigma_range(double Lt, double *lo, double *hi)
 {
     const double c = C0_PERIOD / Lt, e = Lt - 1.0;
     *lo = -c * c;
-    *hi = fmax(32.0 * M_PI * M_PI / (e * e), 64.0 / (e * e));
+    *hi = fmax(SIGMA_E2_INFL / (e * e), 64.0 / (e * e));
 }
 
 /* The tension the search reaches (header: the same as tension mode's range; beyond it
@@ -474,7 +479,7 @@ static int trace(tracer *T, int origin, double dir)
 {
     const double hmin = 1e-7, hmax = 1.5;
     cpt p = T->seed[origin];
-    double tau[2], h = 0.05;
+    double tau[2], h = 0.3;
     tangent(&p, -dir * p.fg[1], dir * p.fg[0], tau);
     for (int step = 0; step < TRACE_STEPS;) {
         const double pU = p.U + h * tau[0], pV = p.V + h * tau[1];   /* predictor */
@@ -523,8 +528,39 @@ static int trace(tracer *T, int origin, double dir)
     return EL_OK;
 }
 
-/* The seed lines: every tension solution on nl lines spread over the sigma range in
- * t = asinh(sigma) (hermite_tension.c), ns samples each. */
+/* The point of C of a tension root r (tension sigma) in the chart of its kind, into *s:
+ * near the separatrix the root carries |F| - sigma exactly (hstate.sep) and the base
+ * coordinates alone do not fix the state (a rounded kappa0 lands on another one), so
+ * the separatrix chart, replacing either coordinate, is tried first and kept where it
+ * gives the root's state back. */
+static int seed_point(tracer *T, const hroot *r, double sigma, cpt *s)
+{
+    const hprob *pr = T->pr;
+    const int base = pr->hcase == 3 ? HCHART_C3 : HCHART_X, b = pr->hcase == 3 ? r->b >= 2 : r->b;
+    const cpt c = chart_spec(base, b);
+    double u[2];
+    for (int i = 0; i < 2; i++) u[i] = asinh(base_coord(pr, base, i, &r->st, sigma));
+    if (r->st.has_sep && r->st.sep != 0.0) {
+        const double Y = log(fabs(r->st.sep)) / SEP_SCALE;
+        for (int fi = 0; fi < 2; fi++) {
+            cpt sep = c;
+            sep.chart = CHART_SEP;
+            sep.fi = fi;
+            sep.side = r->st.sep > 0.0 ? 1 : -1;
+            sep.w = base_coord(pr, base, fi, &r->st, sigma);
+            const int rc = cpt_eval(T, &sep, fi ? u[0] : Y, fi ? Y : u[1], s);
+            if (rc == EL_EMAXITER) return rc;
+            if (!rc && same_hstate(sigma, &r->st, s->sigma, &s->st)) return EL_OK;
+        }
+    }
+    return cpt_eval(T, &c, u[0], u[1], s);
+}
+
+/* The seed lines: every tension solution on nl lines over the sigma range in
+ * t = asinh(sigma) (hermite_tension.c), ns samples each: both ends of the range and,
+ * between them, lines closer towards its top (fraction 1 - (1 - j / (nl - 1))^1.5),
+ * where pairs of solutions born between two lines cluster (curves with two loops near
+ * the separatrix, sigma (Lt - 1)^2 near 128, and one loop near 32). */
 static int seeds(tracer *T, int nl, int ns)
 {
     const hprob *pr = T->pr;
@@ -532,7 +568,8 @@ static int seeds(tracer *T, int nl, int ns)
     int rc = EL_OK, cap = 0;
     for (int j = 0; j < nl && !rc; j++) {
         hprob q = *pr;
-        q.sigma = sinh(T->tlo + (T->thi - T->tlo) * (j + 0.5) / nl);
+        const double frac = nl == 1 ? 1.0 : 1.0 - pow(1.0 - (double)j / (nl - 1), 1.5);
+        q.sigma = sinh(T->tlo + (T->thi - T->tlo) * frac);
         q.Lmin = 1.0;
         l.n = 0;
         if ((rc = el__hermite_solve_tension(&q, ns, &l))) break;
@@ -547,11 +584,7 @@ static int seeds(tracer *T, int nl, int ns)
             }
             const hroot *r = &l.v[i];
             cpt *s = &T->seed[T->nseed];
-            const cpt c = chart_spec(pr->hcase == 3 ? HCHART_C3 : HCHART_X, pr->hcase == 3 ? r->b >= 2 : r->b);
-            if (pr->hcase == 3)
-                rc = cpt_eval(T, &c, asinh(r->st.k0), asinh(r->st.k0p), s);
-            else
-                rc = cpt_eval(T, &c, asinh(r->x), asinh(q.sigma), s);
+            rc = seed_point(T, r, q.sigma, s);
             if (!rc) rc = rechart(T, s);
             if (rc == EL_EMAXITER) break;
             if (rc) { rc = EL_OK; continue; }
