@@ -29,17 +29,16 @@
  * |P| >= <P, -F/|F|> = L - 2 int dn^2(u) ds (the tangent's component along F is
  * 2 dn^2 - 1), and over at most one period u in [0, 4K] int dn^2 du <= 4 E(k), so
  * Lt - 1 <= 8 E(k) / sqrt(mu) and sigma = 2 mu (2k^2 - 1) <= 128 E(k)^2 (2k^2 - 1) / (Lt - 1)^2,
- * at most SIGMA_E2_INFL / (Lt - 1)^2: the maximum over k is 1.0166210 (at k^2 = 0.97136,
+ * at most HLEN_SIGMA_E2 / (Lt - 1)^2 (hermite_internal.h): the maximum over k is 1.0166210 (at k^2 = 0.97136,
  * just above its value 1 at k = 1; reached by the two-loop solutions near the
  * separatrix, test_hermite.c checks it against tension-mode solutions). For k > 1
  * likewise with nu = k^2 mu <= (4 / (Lt - 1))^2 and sigma <= 4 nu. The bound holds at
  * every point of C with L >= Lt, so a trace above it has L < Lt. */
-#define SIGMA_E2_INFL 130.13
 static void sigma_range(double Lt, double *lo, double *hi)
 {
     const double c = C0_PERIOD / Lt, e = Lt - 1.0;
     *lo = -c * c;
-    *hi = fmax(SIGMA_E2_INFL / (e * e), 64.0 / (e * e));
+    *hi = fmax(HLEN_SIGMA_E2 / (e * e), 64.0 / (e * e));
 }
 
 /* The tension the search reaches (header: the same as tension mode's range; beyond it
