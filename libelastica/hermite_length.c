@@ -443,7 +443,8 @@ static int length_crossings(tracer *T, const cpt *p, const double tp[2], const c
 static int step_events(tracer *T, int origin, const cpt *p, const double tp[2], const cpt *q,
                        const double tq[2], int *closed)
 {
-    int rc;
+    int rc, have = 0, rcr = EL_OK;
+    double tr = NAN;
     cpt r;
     if ((rc = length_crossings(T, p, tp, q, tq, 6))) return rc;
     for (int i = 0; i < T->nseed; i++) {
@@ -457,9 +458,14 @@ static int step_events(tracer *T, int origin, const cpt *p, const double tp[2], 
         if (fabs(k0 - s->st.k0) > 0.1 * (1.0 + fabs(s->st.k0) + fabs(q->st.k0 - p->st.k0)) ||
             fabs(k0p - s->st.k0p) > 0.1 * (1.0 + fabs(s->st.k0p) + fabs(q->st.k0p - p->st.k0p)))
             continue;
-        rc = cross(T, p, q, 1, s->t, &r);
-        if (rc == EL_EMAXITER) return rc;
-        if (rc || !same_state(&r, s)) continue;
+        /* the crossing of the line, once for the seeds of one line */
+        if (!have || fabs(s->t - tr) > 1e-12 * (1.0 + fabs(tr))) {
+            rcr = cross(T, p, q, 1, s->t, &r);
+            if (rcr == EL_EMAXITER) return rcr;
+            have = 1;
+            tr = s->t;
+        }
+        if (rcr || !same_state(&r, s)) continue;
         if (i == origin) *closed = 1;
         T->visited[i] = 1;
     }
