@@ -99,6 +99,11 @@ int el__hermite_roots_push(hrootlist *l, const hroot *r);
  * (hermite_length.c): samples per search interval ns, sigma lines ng. */
 int el__hermite_solve_tension(hprob *pr, int ns, hrootlist *out);
 int el__hermite_solve_length(hprob *pr, double Lt, int ng, int ns, hrootlist *out);
+/* The same with every trace followed as far as the former search did (the tests' reference). */
+int el__hermite_solve_length_thorough(hprob *pr, double Lt, int ng, int ns, hrootlist *out);
+/* Every solution of tension sigma > 0 and length L has sigma (L - 1)^2 <= HLEN_SIGMA_E2
+ * (|P| = 1; derivation in hermite_length.c, checked in test_hermite_length.c). */
+#define HLEN_SIGMA_E2 130.13
 
 /* The world frame of a problem: the ends, their tangent angles, d = |p1 - p0|, and
  * rot, the angle that turns the normalised frame into the world's. */
