@@ -317,9 +317,24 @@ static int bracket_root(fctx *c, double a, double fa, double b, double fb, hroot
 static double negf(double x, void *p) { return -fobj_coarse(p, x); }
 static double posf(double x, void *p) { return fobj_coarse(p, x); }
 
+/* A lower bound of a convex g on [l, u] from its values at l < m < u: the secant through
+ * (m, gm), (u, gu) lies below g left of m, the one through (l, gl), (m, gm) right of m;
+ * their lowest values on [l, u] are at l and at u. */
+static double convex_bracket_bound(double l, double gl, double m, double gm, double u, double gu)
+{
+    const double left = gm - (gu - gm) * (m - l) / (u - m);
+    const double right = gm - (gl - gm) * (u - m) / (m - l);
+    return fmin(left, right);
+}
+
 /* Two zeros closer than the sampling step (seed 004 §5 (a), (b): at most two per
  * piece, the objective convex between them): minimise sign * f on the bracket;
- * if the minimum changes sign, both zeros are bracketed. */
+ * if the minimum changes sign, both zeros are bracketed. The same convexity ends the
+ * search early: once the minimiser's bracket (lower, minimum, upper) bounds sign * f
+ * above TOUCH_CLEAR on it (convex_bracket_bound), no zero (nor a double zero, |f| <=
+ * 1e-11) lies there. (Brent's minimiser otherwise runs to its 40-iteration cap on most
+ * of these brackets, its interval test being relative to 1e-9.) */
+#define TOUCH_CLEAR 1e-8
 static int touch_check(fctx *c, double a, double fa, double m, double fm, double b, double fb,
                        hrootlist *out)
 {
@@ -339,8 +354,12 @@ static int touch_check(fctx *c, double a, double fa, double m, double fm, double
                 if ((rc = bracket_root(c, a, fa, xm, fxm, out))) return rc;
                 return bracket_root(c, xm, fxm, b, fb, out);
             }
-            if (gsl_min_test_interval(gsl_min_fminimizer_x_lower(s), gsl_min_fminimizer_x_upper(s),
-                                      1e-11, 1e-9) == GSL_SUCCESS) break;
+            const double lo = gsl_min_fminimizer_x_lower(s), up = gsl_min_fminimizer_x_upper(s);
+            if (lo < xm && xm < up && convex_bracket_bound(lo, s->f_lower, xm, v, up, s->f_upper) > TOUCH_CLEAR) {
+                gsl_min_fminimizer_free(s);
+                return EL_OK;
+            }
+            if (gsl_min_test_interval(lo, up, 1e-11, 1e-9) == GSL_SUCCESS) break;
         }
         /* a double zero (tangency): accept it when f vanishes there */
         const double xm = gsl_min_fminimizer_x_minimum(s);
