@@ -81,7 +81,7 @@ $(BUILD)/libelastica.a: $(LIB_OBJ)
 
 # ------------------------------------------------------------------ tests
 
-$(BUILD)/tests/%: tests/c/%.c tests/c/testutil.h $(BUILD)/libelastica.a
+$(BUILD)/tests/%: tests/c/%.c $(wildcard tests/c/*.h) $(BUILD)/libelastica.a
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_BASE) $(DEPS_CFLAGS) $(EXTRA_CFLAGS) -Itests/c -Ilibelastica $< -o $@ $(BUILD)/libelastica.a $(CHECK_LIBS) $(DEPS_LIBS)
 

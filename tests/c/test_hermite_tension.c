@@ -1,0 +1,87 @@
+/* The tension solve's completeness against a plain reference: every root of the dense
+ * scan (hermite_scan.h: uniform samples and bisection, nothing of the solver's split
+ * points, sampling, refinement, touch checks or root finding) is among the solutions
+ * el_hermite_solve returns, on 1200 random problems in three families. Guards the
+ * solver's fast paths (the touch check's early end, the root finder) against losing
+ * solutions. */
+#include "testutil.h"
+#include "hermite_internal.h"
+#include "hermite_scan.h"
+#include <stdio.h>
+#include <string.h>
+
+enum { NPROB = 400, NX_SET = 800 };
+
+/* family 0: sigma |p1-p0|^2 uniform in [-10, 40] (the bench); 1: log-uniform in [40, 1e4]
+ * (solutions near the separatrix, k across 1); 2: near-degenerate tangents, t0 within
+ * 1e-12..1e-6 rad of the normal to the chord (P2 ~ 0) or t1 within that of t0 (V1 ~ 0),
+ * sigma |p1-p0|^2 uniform in [-10, 200]. p0 = 0, t0 = (0, 1), |p1| = 1. */
+static void draw(unsigned long long *st, int family, double p1[2], double t1[2], double *sigma)
+{
+    double a = test_uniform(st, -M_PI, M_PI), c = test_uniform(st, -M_PI, M_PI);
+    const double u = test_uniform(st, 0.0, 1.0);
+    *sigma = family == 0 ? -10.0 + 50.0 * u : family == 1 ? 40.0 * pow(250.0, u) : -10.0 + 210.0 * u;
+    if (family == 2) {
+        const double e = pow(10.0, test_uniform(st, -12.0, -6.0)) * (test_uniform(st, 0.0, 1.0) < 0.5 ? -1.0 : 1.0);
+        if (test_uniform(st, 0.0, 1.0) < 0.5) a = (test_uniform(st, 0.0, 1.0) < 0.5 ? 0.0 : M_PI) + e;
+        else c = M_PI / 2 + (test_uniform(st, 0.0, 1.0) < 0.5 ? 0.0 : M_PI) + e;
+    }
+    p1[0] = cos(a);
+    p1[1] = sin(a);
+    t1[0] = cos(c);
+    t1[1] = sin(c);
+}
+
+START_TEST(tension_solutions_contain_every_scanned_root)
+{
+    const int family = _i;
+    unsigned long long st = 1601 + 7919 * (unsigned long long)family;
+    int nscan = 0, nret = 0, nprob = 0, nmiss = 0;
+    for (int t = 0; t < NPROB; t++) {
+        double p1[2], t1[2], sigma;
+        draw(&st, family, p1, t1, &sigma);
+        const double p0[2] = {0, 0}, t0[2] = {0, 1};
+        hprob pr;
+        memset(&pr, 0, sizeof pr);
+        pr.P1 = p1[0]; pr.P2 = p1[1]; pr.V1 = t1[0]; pr.V2 = t1[1]; pr.Lmin = 1.0;
+        el__hermite_set_case(&pr);
+        if (pr.hcase != 1) continue;                  /* the scan covers case 1 */
+        scan_root r[MAXSCAN];
+        const int n = dense_scan(&pr, sigma, NX_SET, r);
+        el_hermite_options o;
+        el_hermite_options_defaults(&o);
+        o.sigma = sigma;
+        el_hermite_result res;
+        ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &res), EL_OK);
+        for (int i = 0; i < n; i++) {
+            int found = 0;
+            for (size_t j = 0; j < res.count && !found; j++)
+                found = fabs(res.solutions[j].kappa0 - r[i].k0) <= 1e-6 * (1.0 + fabs(r[i].k0)) &&
+                        fabs(res.solutions[j].length - r[i].L) <= 1e-6 * r[i].L;
+            if (!found && nmiss++ < 10)
+                fprintf(stderr, "family %d problem %d (P %.17g %.17g V %.17g %.17g sigma %.17g): the scan's "
+                        "solution kappa0 %.10g, L %.10g is missing\n", family, t, p1[0], p1[1], t1[0], t1[1],
+                        sigma, r[i].k0, r[i].L);
+        }
+        nscan += n;
+        nret += (int)res.count;
+        nprob++;
+        el_hermite_result_free(&res);
+    }
+    ck_assert_msg(nmiss == 0, "family %d: %d of %d scanned solutions missing (the first above)", family, nmiss, nscan);
+    ck_assert_int_gt(nprob, NPROB / 2);
+    ck_assert_int_gt(nscan, nprob);
+    fprintf(stderr, "tension_solutions_contain_every_scanned_root (family %d): %d problems, %d scan roots, %d returned\n",
+            family, nprob, nscan, nret);
+}
+END_TEST
+
+int main(void)
+{
+    Suite *s = suite_create("hermite_tension");
+    TCase *tc = tcase_create("hermite_tension");
+    tcase_set_timeout(tc, 300);
+    tcase_add_loop_test(tc, tension_solutions_contain_every_scanned_root, 0, 3);
+    suite_add_tcase(s, tc);
+    return test_run_suite(s);
+}
