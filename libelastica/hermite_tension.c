@@ -116,6 +116,16 @@ static double domain_half(const hprob *pr, int b)
     return r > 0.0 ? 0.5 * sqrt(r) : -1.0;
 }
 
+/* Where (40) can vanish: it is a square plus D M^2 (case 1, hermite_poly.c) or plus
+ * V1^2 D (case 2), D = kappa0^2 (kappa0^2 - 2 sigma) (42), so its roots have
+ * kappa0^2 <= 2 sigma (kappa_m^2 = 2 sigma >= kappa0^2): [-sqrt(2 sigma), sqrt(2 sigma)]
+ * (widened by rounding's margin) holds the roots of [-B, B] with fewer critical points
+ * of the derivatives to locate. */
+static double poly40_range(double sigma, double B)
+{
+    return fmin(B, sqrt(2.0 * sigma) * (1.0 + 1e-9));
+}
+
 /* Which root of (17) has kappa_m^2 = 2 sigma at a root of (40) (seed 004 §4:
  * the roots are divided in two groups, one per objective function). */
 static int root_branch(const hprob *pr, double x)
@@ -585,7 +595,8 @@ int el__hermite_solve_tension(hprob *pr, int ns, hrootlist *out)
         int nr;
         double pc[9];
         const int pd = el__hermite_poly40(pr, pc);
-        el__poly_roots_in(pc, pd, -pr->B, pr->B, 4e-16, r, &nr);
+        const double X40 = poly40_range(pr->sigma, pr->B);
+        el__poly_roots_in(pc, pd, -X40, X40, 4e-16, r, &nr);
         for (int i = 0; i < nr; i++)
             if (fabs(r[i]) < pr->B) { r40[n40] = r[i]; b40[n40++] = root_branch(pr, r[i]); }
     }
@@ -673,7 +684,8 @@ int el_hermite_analyse(const double P[2], const double V[2], double sigma,
         int nr;
         double pc[9];
         const int pd = el__hermite_poly40(&pr, pc);
-        el__poly_roots_in(pc, pd, -pr.B, pr.B, 4e-16, r, &nr);
+        const double X40 = poly40_range(pr.sigma, pr.B);
+        el__poly_roots_in(pc, pd, -X40, X40, 4e-16, r, &nr);
         for (int i = 0; i < nr && out.nroot < 8; i++) {
             int inside = 0;
             for (size_t j = 0; j < out.ninterval; j++)
