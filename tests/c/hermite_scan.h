@@ -7,6 +7,7 @@
 
 #include "testutil.h"
 #include "hermite_internal.h"
+#include <string.h>
 
 /* A dense scan of the objective of the normalised problem, independent of the solver's
  * bracketing (split points, sampling, refinement): every sign change of f between
@@ -117,6 +118,36 @@ static int dense_scan(const hprob *pr0, double sigma, int nx, scan_root *r)
         }
     }
     return n;
+}
+
+/* The scan and the solve of one problem p0 = 0, t0 = (0, 1), p1, t1 (unit) at sigma: 0
+ * when the problem is not case 1 (nothing done), else 1 with the scan's roots in r[0..*n)
+ * and the solver's result in *res (EL_OK asserted; the caller frees it). */
+static int scan_and_solve(const double p1[2], const double t1[2], double sigma, int nx, scan_root *r,
+                          int *n, el_hermite_result *res)
+{
+    const double p0[2] = {0, 0}, t0[2] = {0, 1};
+    hprob pr;
+    memset(&pr, 0, sizeof pr);
+    pr.P1 = p1[0]; pr.P2 = p1[1]; pr.V1 = t1[0]; pr.V2 = t1[1]; pr.Lmin = 1.0;
+    el__hermite_set_case(&pr);
+    if (pr.hcase != 1) return 0;
+    *n = dense_scan(&pr, sigma, nx, r);
+    el_hermite_options o;
+    el_hermite_options_defaults(&o);
+    o.sigma = sigma;
+    ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, res), EL_OK);
+    return 1;
+}
+
+/* Whether the scan's root r is among the solutions (kappa0 and length to 1e-6). */
+static int scan_root_found(const scan_root *r, const el_hermite_result *res)
+{
+    for (size_t j = 0; j < res->count; j++)
+        if (fabs(res->solutions[j].kappa0 - r->k0) <= 1e-6 * (1.0 + fabs(r->k0)) &&
+            fabs(res->solutions[j].length - r->L) <= 1e-6 * r->L)
+            return 1;
+    return 0;
 }
 
 #endif
