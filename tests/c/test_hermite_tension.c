@@ -2,8 +2,9 @@
  * scan (hermite_scan.h: uniform samples and bisection, nothing of the solver's split
  * points, sampling, refinement, touch checks or root finding) is among the solutions
  * el_hermite_solve returns, on 1200 random problems in three families. Guards the
- * solver's fast paths (the touch check's early end, the root finder) against losing
- * solutions. */
+ * solver's fast paths (the touch check's early end, the search range of (40)) against
+ * losing solutions, and (40) against the rounding of its printed form (family 2: 11 of
+ * its 1027 scanned solutions were missing with that form). */
 #include "testutil.h"
 #include "hermite_internal.h"
 #include "hermite_scan.h"
