@@ -144,6 +144,38 @@ static int root_branch(const hprob *pr, double x)
 }
 
 
+/* |F|^2 - sigma^2 = 4 kappa0'^2 + kappa0^2 (kappa0^2 - 2 sigma) at x on branch b, from
+ * the curvature data alone (NaN outside (18)): what a root of (40) makes zero. */
+static double crossing_gap(const hprob *pr, int b, double x)
+{
+    hstate st;
+    if (el__hermite_curvdata(pr, x, b, &st)) return NAN;
+    return 4.0 * st.k0p * st.k0p + st.k0 * st.k0 * (st.k0 * st.k0 - 2.0 * pr->sigma);
+}
+
+/* A root x of (40), assigned to branch b, refined by the secant method on crossing_gap:
+ * the polynomial's coefficients span many orders of magnitude at high tension, which
+ * leaves its roots up to ~1e-12 relative off (1.7e-10 at sigma |p1-p0|^2 = 4000), while
+ * the solutions there lie exponentially closer to the crossing, from which the
+ * separatrix pieces start. The refined value is kept only when it lowers |gap| and
+ * moves x by less than 1e-6 (1 + |x|) (the same crossing). */
+static double crossing_refine(const hprob *pr, int b, double x)
+{
+    double x0 = x, g0 = crossing_gap(pr, b, x0);
+    if (!isfinite(g0) || g0 == 0.0) return x;
+    double x1 = x0 + 1e-10 * (1.0 + fabs(x0)), g1 = crossing_gap(pr, b, x1);
+    for (int it = 0; it < 8 && isfinite(g1) && g1 != g0 && g1 != 0.0; it++) {
+        const double x2 = x1 - g1 * (x1 - x0) / (g1 - g0);
+        if (!(fabs(x2 - x) < 1e-6 * (1.0 + fabs(x)))) return x;
+        x0 = x1;
+        g0 = g1;
+        x1 = x2;
+        g1 = crossing_gap(pr, b, x1);
+        if (fabs(x1 - x0) <= 4e-16 * fabs(x1)) break;
+    }
+    return isfinite(g1) && fabs(g1) < fabs(crossing_gap(pr, b, x)) ? x1 : x;
+}
+
 /* The kind of curve at x (el__hermite_state_class; cheap, the curvature data only); CLASS_NONE
  * also outside (18). */
 static int point_class(const hprob *pr, int b, double x)
@@ -598,7 +630,12 @@ int el__hermite_solve_tension(hprob *pr, int ns, hrootlist *out)
         const double X40 = poly40_range(pr->sigma, pr->B);
         el__poly_roots_in(pc, pd, -X40, X40, 4e-16, r, &nr);
         for (int i = 0; i < nr; i++)
-            if (fabs(r[i]) < pr->B) { r40[n40] = r[i]; b40[n40++] = root_branch(pr, r[i]); }
+            if (fabs(r[i]) < pr->B) {
+                /* the separatrix pieces (above SEP_SIGMA) need the crossing to rounding */
+                b40[n40] = root_branch(pr, r[i]);
+                r40[n40] = pr->sigma > SEP_SIGMA ? crossing_refine(pr, b40[n40], r[i]) : r[i];
+                n40++;
+            }
     }
     for (int b = 0; b < nbranches(pr); b++) {
         const double X = domain_half(pr, b);
@@ -692,7 +729,7 @@ int el_hermite_analyse(const double P[2], const double V[2], double sigma,
                 inside |= r[i] >= out.interval[2 * j] && r[i] <= out.interval[2 * j + 1];
             if (!inside) continue;
             const int best = root_branch(&pr, r[i]);
-            out.root[out.nroot] = r[i];
+            out.root[out.nroot] = crossing_refine(&pr, best, r[i]);
             out.root_branch[out.nroot++] = best;
         }
         int ns;

@@ -9,6 +9,7 @@
 #include "hermite_internal.h"
 #include "hermite_scan.h"
 #include <stdio.h>
+#include <string.h>
 
 enum { NPROB = 400, NX_SET = 800 };
 
@@ -64,12 +65,54 @@ START_TEST(tension_solutions_contain_every_scanned_root)
 }
 END_TEST
 
+/* |F|^2 - sigma^2 = 4 kappa0'^2 + kappa0^2 (kappa0^2 - 2 sigma) at x on branch b. */
+static double gap(const hprob *pr, int b, double x)
+{
+    hstate st;
+    if (el__hermite_curvdata(pr, x, b, &st)) return NAN;
+    return 4.0 * st.k0p * st.k0p + st.k0 * st.k0 * (st.k0 * st.k0 - 2.0 * pr->sigma);
+}
+
+/* At high tension the solutions hug the separatrix and the separatrix pieces start from
+ * the crossings, the roots of (40): each root el_hermite_analyse reports is a sign
+ * change of |F|^2 - sigma^2 on its branch within 1e-14 (1 + |kappa0|) (the polynomial's
+ * own roots were up to 1.7e-10 off at sigma |p1-p0|^2 = 4000, and a solution was lost). */
+START_TEST(separatrix_crossings_exact_at_high_tension)
+{
+    unsigned long long st = 3301;
+    int nroot = 0;
+    for (int t = 0; t < 300; t++) {
+        const double a = test_uniform(&st, -M_PI, M_PI), c = test_uniform(&st, -M_PI, M_PI);
+        const double sigma = 100.0 * pow(100.0, test_uniform(&st, 0.0, 1.0));
+        const double P[2] = {cos(a), sin(a)}, V[2] = {cos(c), sin(c)};
+        hprob pr;
+        memset(&pr, 0, sizeof pr);
+        pr.P1 = P[0]; pr.P2 = P[1]; pr.V1 = V[0]; pr.V2 = V[1]; pr.Lmin = 1.0; pr.sigma = sigma;
+        el__hermite_set_case(&pr);
+        el_hermite_analysis an;
+        ck_assert_int_eq(el_hermite_analyse(P, V, sigma, &an), EL_OK);
+        for (size_t i = 0; i < an.nroot; i++) {
+            const int b = an.root_branch[i];
+            const double x = an.root[i], d = 1e-14 * (1.0 + fabs(x));
+            const double gl = gap(&pr, b, x - d), gr = gap(&pr, b, x + d);
+            if (!isfinite(gl) || !isfinite(gr)) continue;   /* at an end of (18) */
+            ck_assert_msg(gl * gr <= 0.0, "sigma %g: root %.17g of (40) is no crossing to %.3g (gap %g, %g)",
+                          sigma, x, d, gl, gr);
+            nroot++;
+        }
+    }
+    ck_assert_int_gt(nroot, 300);
+    fprintf(stderr, "separatrix_crossings_exact_at_high_tension: %d roots\n", nroot);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("hermite_tension");
     TCase *tc = tcase_create("hermite_tension");
     tcase_set_timeout(tc, 300);
     tcase_add_loop_test(tc, tension_solutions_contain_every_scanned_root, 0, 3);
+    tcase_add_test(tc, separatrix_crossings_exact_at_high_tension);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }
