@@ -150,4 +150,18 @@ static int scan_root_found(const scan_root *r, const el_hermite_result *res)
     return 0;
 }
 
+/* A random problem at high tension: P, V unit at random angles, sigma log-uniform in
+ * [100, 1e4], its normalised form *pr and el_hermite_analyse's analysis (EL_OK asserted). */
+static void high_tension_problem(unsigned long long *st, double P[2], double V[2], double *sigma, hprob *pr,
+                                 el_hermite_analysis *an)
+{
+    const double a = test_uniform(st, -M_PI, M_PI), c = test_uniform(st, -M_PI, M_PI);
+    *sigma = 100.0 * pow(100.0, test_uniform(st, 0.0, 1.0));
+    P[0] = cos(a); P[1] = sin(a); V[0] = cos(c); V[1] = sin(c);
+    memset(pr, 0, sizeof *pr);
+    pr->P1 = P[0]; pr->P2 = P[1]; pr->V1 = V[0]; pr->V2 = V[1]; pr->Lmin = 1.0; pr->sigma = *sigma;
+    el__hermite_set_case(pr);
+    ck_assert_int_eq(el_hermite_analyse(P, V, *sigma, an), EL_OK);
+}
+
 #endif

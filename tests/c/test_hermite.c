@@ -430,15 +430,10 @@ START_TEST(separatrix_warm_start_gives_the_plain_states)
     unsigned long long st = 4711;
     int nsamples = 0, nretry = 0;
     for (int t = 0; t < 60; t++) {
-        const double a = test_uniform(&st, -M_PI, M_PI), c = test_uniform(&st, -M_PI, M_PI);
-        const double sigma = 100.0 * pow(100.0, test_uniform(&st, 0.0, 1.0));
-        const double P[2] = {cos(a), sin(a)}, V[2] = {cos(c), sin(c)};
+        double P[2], V[2], sigma;
         hprob pr;
-        memset(&pr, 0, sizeof pr);
-        pr.P1 = P[0]; pr.P2 = P[1]; pr.V1 = V[0]; pr.V2 = V[1]; pr.Lmin = 1.0; pr.sigma = sigma;
-        el__hermite_set_case(&pr);
         el_hermite_analysis an;
-        ck_assert_int_eq(el_hermite_analyse(P, V, sigma, &an), EL_OK);
+        high_tension_problem(&st, P, V, &sigma, &pr, &an);
         for (size_t i = 0; i < an.nroot; i++) {
             for (int side = -1; side <= 1; side += 2) {
                 double warm = an.root[i];
