@@ -66,9 +66,18 @@ $(BUILD)/.deps-ok: Makefile
 
 lib: $(BUILD)/libelastica.so $(BUILD)/libelastica.a
 
+# The Hermite solver's hot path (its objective, root finding, the elliptic integrals and
+# Jacobi functions under it) at -O3 and with sqrt not setting errno (no libm call per
+# square root; the library never reads errno, and neither flag changes a result: no
+# fast-math): 12 % fewer instructions and ~8 % less time on the tension bench (issue 16).
+# EXTRA_CFLAGS comes after: the sanitizer builds keep their -O1.
+HOT_OBJ := $(addprefix $(BUILD)/obj/,hermite.o hermite_objective.o hermite_poly.o hermite_tension.o \
+             ellint.o jacobi.o)
+$(HOT_OBJ): OPT_CFLAGS := -O3 -fno-math-errno
+
 $(BUILD)/obj/%.o: libelastica/%.c include/elastica.h $(wildcard libelastica/*.h) | $(BUILD)/.deps-ok
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS_BASE) $(DEPS_CFLAGS) $(EXTRA_CFLAGS) -c $< -o $@
+	$(CC) $(CFLAGS_BASE) $(OPT_CFLAGS) $(DEPS_CFLAGS) $(EXTRA_CFLAGS) -c $< -o $@
 
 # libelastica.so -> libelastica.so.0 (the soname) -> libelastica.so.0.1.0 (the file)
 $(BUILD)/libelastica.so: $(LIB_OBJ)
@@ -81,7 +90,7 @@ $(BUILD)/libelastica.a: $(LIB_OBJ)
 
 # ------------------------------------------------------------------ tests
 
-$(BUILD)/tests/%: tests/c/%.c tests/c/testutil.h $(BUILD)/libelastica.a
+$(BUILD)/tests/%: tests/c/%.c $(wildcard tests/c/*.h) $(BUILD)/libelastica.a
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_BASE) $(DEPS_CFLAGS) $(EXTRA_CFLAGS) -Itests/c -Ilibelastica $< -o $@ $(BUILD)/libelastica.a $(CHECK_LIBS) $(DEPS_LIBS)
 

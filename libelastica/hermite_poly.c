@@ -124,6 +124,11 @@ static poly padd(poly a, double sa, poly b, double sb)
  * Case 1: with (16) 4 (kappa1 - C)^2 + P2^2 D = 0 (43); subtracting 4/P2 (17) leaves
  * kappa1 = N / M, N = 4 P2 C^2 + P2^3 D + 8 V1 C + 4 A P2, M = 8 (P2 C + V1); so
  * 4 (N - C M)^2 + P2^2 D M^2 = 0, degree 8, leading 4 P2^2 (P1^2 + P2^2)^2 as printed.
+ * Since N - C M = P2 (4 (A - C^2) + P2^2 D), that is P2^2 times
+ *   4 (4 (A - C^2) + P2^2 D)^2 + D M^2,      leading 4 (P1^2 + P2^2)^2,
+ * which is formed here: the printed product loses the D M^2 term to rounding when P2 is
+ * small (P2 ~ 1e-11: a noisy square whose roots come and go), this form tends to 64 times
+ * case 2's as P2 -> 0.
  * Case 2: kappa0' = (A - C^2)/(2 V1) gives (A - C^2)^2 + V1^2 D = 0. */
 static poly poly40(const hprob *pr)
 {
@@ -133,16 +138,11 @@ static poly poly40(const hprob *pr)
     const poly A = {{s - s * V2, 0, V2}, 2};
     const poly one = {{1}, 0};
     const poly D = padd(pmul(w, w), 1.0, one, -s * s);
-    if (pr->hcase == 2) {
-        const poly AC = padd(A, 1.0, pmul(C, C), -1.0);
-        return padd(pmul(AC, AC), 1.0, D, V1 * V1);
-    }
-    poly N = padd(pmul(C, C), 4.0 * P2, D, P2 * P2 * P2);
-    N = padd(N, 1.0, C, 8.0 * V1);
-    N = padd(N, 1.0, A, 4.0 * P2);
+    const poly AC = padd(A, 1.0, pmul(C, C), -1.0);
+    if (pr->hcase == 2) return padd(pmul(AC, AC), 1.0, D, V1 * V1);
+    const poly Q = padd(AC, 4.0, D, P2 * P2);           /* (N - C M) / P2 */
     const poly M = padd(C, 8.0 * P2, one, 8.0 * V1);
-    const poly NC = padd(N, 1.0, pmul(C, M), -1.0);
-    return padd(pmul(NC, NC), 4.0, pmul(D, pmul(M, M)), P2 * P2);
+    return padd(pmul(Q, Q), 4.0, pmul(D, pmul(M, M)), 1.0);
 }
 
 /* (45): kappa0^2 = sigma, and kappa0' = 0, which by (15), (16) is C^2 = A. With

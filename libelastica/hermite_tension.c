@@ -116,6 +116,16 @@ static double domain_half(const hprob *pr, int b)
     return r > 0.0 ? 0.5 * sqrt(r) : -1.0;
 }
 
+/* Where (40) can vanish: it is a square plus D M^2 (case 1, hermite_poly.c) or plus
+ * V1^2 D (case 2), D = kappa0^2 (kappa0^2 - 2 sigma) (42), so its roots have
+ * kappa0^2 <= 2 sigma (kappa_m^2 = 2 sigma >= kappa0^2): [-sqrt(2 sigma), sqrt(2 sigma)]
+ * (widened by rounding's margin) holds the roots of [-B, B] with fewer critical points
+ * of the derivatives to locate. */
+static double poly40_range(double sigma, double B)
+{
+    return fmin(B, sqrt(2.0 * sigma) * (1.0 + 1e-9));
+}
+
 /* Which root of (17) has kappa_m^2 = 2 sigma at a root of (40) (seed 004 §4:
  * the roots are divided in two groups, one per objective function). */
 static int root_branch(const hprob *pr, double x)
@@ -133,6 +143,38 @@ static int root_branch(const hprob *pr, double x)
     return best;
 }
 
+
+/* |F|^2 - sigma^2 = 4 kappa0'^2 + kappa0^2 (kappa0^2 - 2 sigma) at x on branch b, from
+ * the curvature data alone (NaN outside (18)): what a root of (40) makes zero. */
+static double crossing_gap(const hprob *pr, int b, double x)
+{
+    hstate st;
+    if (el__hermite_curvdata(pr, x, b, &st)) return NAN;
+    return 4.0 * st.k0p * st.k0p + st.k0 * st.k0 * (st.k0 * st.k0 - 2.0 * pr->sigma);
+}
+
+/* A root x of (40), assigned to branch b, refined by the secant method on crossing_gap:
+ * the polynomial's coefficients span many orders of magnitude at high tension, which
+ * leaves its roots up to ~1e-12 relative off (1.7e-10 at sigma |p1-p0|^2 = 4000), while
+ * the solutions there lie exponentially closer to the crossing, from which the
+ * separatrix pieces start. The refined value is kept only when it lowers |gap| and
+ * moves x by less than 1e-6 (1 + |x|) (the same crossing). */
+static double crossing_refine(const hprob *pr, int b, double x)
+{
+    double x0 = x, g0 = crossing_gap(pr, b, x0);
+    if (!isfinite(g0) || g0 == 0.0) return x;
+    double x1 = x0 + 1e-10 * (1.0 + fabs(x0)), g1 = crossing_gap(pr, b, x1);
+    for (int it = 0; it < 8 && isfinite(g1) && g1 != g0 && g1 != 0.0; it++) {
+        const double x2 = x1 - g1 * (x1 - x0) / (g1 - g0);
+        if (!(fabs(x2 - x) < 1e-6 * (1.0 + fabs(x)))) return x;
+        x0 = x1;
+        g0 = g1;
+        x1 = x2;
+        g1 = crossing_gap(pr, b, x1);
+        if (fabs(x1 - x0) <= 4e-16 * fabs(x1)) break;
+    }
+    return isfinite(g1) && fabs(g1) < fabs(crossing_gap(pr, b, x)) ? x1 : x;
+}
 
 /* The kind of curve at x (el__hermite_state_class; cheap, the curvature data only); CLASS_NONE
  * also outside (18). */
@@ -317,9 +359,24 @@ static int bracket_root(fctx *c, double a, double fa, double b, double fb, hroot
 static double negf(double x, void *p) { return -fobj_coarse(p, x); }
 static double posf(double x, void *p) { return fobj_coarse(p, x); }
 
+/* A lower bound of a convex g on [l, u] from its values at l < m < u: the secant through
+ * (m, gm), (u, gu) lies below g left of m, the one through (l, gl), (m, gm) right of m;
+ * their lowest values on [l, u] are at l and at u. */
+static double convex_bracket_bound(double l, double gl, double m, double gm, double u, double gu)
+{
+    const double left = gm - (gu - gm) * (m - l) / (u - m);
+    const double right = gm - (gl - gm) * (u - m) / (m - l);
+    return fmin(left, right);
+}
+
 /* Two zeros closer than the sampling step (seed 004 §5 (a), (b): at most two per
  * piece, the objective convex between them): minimise sign * f on the bracket;
- * if the minimum changes sign, both zeros are bracketed. */
+ * if the minimum changes sign, both zeros are bracketed. The same convexity ends the
+ * search early: once the minimiser's bracket (lower, minimum, upper) bounds sign * f
+ * above TOUCH_CLEAR on it (convex_bracket_bound), no zero (nor a double zero, |f| <=
+ * 1e-11) lies there. (Brent's minimiser otherwise runs to its 40-iteration cap on most
+ * of these brackets, its interval test being relative to 1e-9.) */
+#define TOUCH_CLEAR 1e-8
 static int touch_check(fctx *c, double a, double fa, double m, double fm, double b, double fb,
                        hrootlist *out)
 {
@@ -339,8 +396,12 @@ static int touch_check(fctx *c, double a, double fa, double m, double fm, double
                 if ((rc = bracket_root(c, a, fa, xm, fxm, out))) return rc;
                 return bracket_root(c, xm, fxm, b, fb, out);
             }
-            if (gsl_min_test_interval(gsl_min_fminimizer_x_lower(s), gsl_min_fminimizer_x_upper(s),
-                                      1e-11, 1e-9) == GSL_SUCCESS) break;
+            const double lo = gsl_min_fminimizer_x_lower(s), up = gsl_min_fminimizer_x_upper(s);
+            if (lo < xm && xm < up && convex_bracket_bound(lo, s->f_lower, xm, v, up, s->f_upper) > TOUCH_CLEAR) {
+                gsl_min_fminimizer_free(s);
+                return EL_OK;
+            }
+            if (gsl_min_test_interval(lo, up, 1e-11, 1e-9) == GSL_SUCCESS) break;
         }
         /* a double zero (tangency): accept it when f vanishes there */
         const double xm = gsl_min_fminimizer_x_minimum(s);
@@ -566,9 +627,15 @@ int el__hermite_solve_tension(hprob *pr, int ns, hrootlist *out)
         int nr;
         double pc[9];
         const int pd = el__hermite_poly40(pr, pc);
-        el__poly_roots_in(pc, pd, -pr->B, pr->B, 4e-16, r, &nr);
+        const double X40 = poly40_range(pr->sigma, pr->B);
+        el__poly_roots_in(pc, pd, -X40, X40, 4e-16, r, &nr);
         for (int i = 0; i < nr; i++)
-            if (fabs(r[i]) < pr->B) { r40[n40] = r[i]; b40[n40++] = root_branch(pr, r[i]); }
+            if (fabs(r[i]) < pr->B) {
+                /* the separatrix pieces (above SEP_SIGMA) need the crossing to rounding */
+                b40[n40] = root_branch(pr, r[i]);
+                r40[n40] = pr->sigma > SEP_SIGMA ? crossing_refine(pr, b40[n40], r[i]) : r[i];
+                n40++;
+            }
     }
     for (int b = 0; b < nbranches(pr); b++) {
         const double X = domain_half(pr, b);
@@ -654,14 +721,15 @@ int el_hermite_analyse(const double P[2], const double V[2], double sigma,
         int nr;
         double pc[9];
         const int pd = el__hermite_poly40(&pr, pc);
-        el__poly_roots_in(pc, pd, -pr.B, pr.B, 4e-16, r, &nr);
+        const double X40 = poly40_range(pr.sigma, pr.B);
+        el__poly_roots_in(pc, pd, -X40, X40, 4e-16, r, &nr);
         for (int i = 0; i < nr && out.nroot < 8; i++) {
             int inside = 0;
             for (size_t j = 0; j < out.ninterval; j++)
                 inside |= r[i] >= out.interval[2 * j] && r[i] <= out.interval[2 * j + 1];
             if (!inside) continue;
             const int best = root_branch(&pr, r[i]);
-            out.root[out.nroot] = r[i];
+            out.root[out.nroot] = crossing_refine(&pr, best, r[i]);
             out.root_branch[out.nroot++] = best;
         }
         int ns;

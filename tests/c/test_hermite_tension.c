@@ -1,0 +1,113 @@
+/* The tension solve's completeness against a plain reference: every root of the dense
+ * scan (hermite_scan.h: uniform samples and bisection, nothing of the solver's split
+ * points, sampling, refinement, touch checks or root finding) is among the solutions
+ * el_hermite_solve returns, on 1200 random problems in three families. Guards the
+ * solver's fast paths (the touch check's early end, the search range of (40)) against
+ * losing solutions, and (40) against the rounding of its printed form (family 2: 11 of
+ * its 1027 scanned solutions were missing with that form). */
+#include "testutil.h"
+#include "hermite_internal.h"
+#include "hermite_scan.h"
+#include <stdio.h>
+#include <string.h>
+
+enum { NPROB = 400, NX_SET = 800 };
+
+/* family 0: sigma |p1-p0|^2 uniform in [-10, 40] (the bench); 1: log-uniform in [40, 1e4]
+ * (solutions near the separatrix, k across 1); 2: near-degenerate tangents, t0 within
+ * 1e-12..1e-6 rad of the normal to the chord (P2 ~ 0) or t1 within that of t0 (V1 ~ 0),
+ * sigma |p1-p0|^2 uniform in [-10, 200]. p0 = 0, t0 = (0, 1), |p1| = 1. */
+static void draw(unsigned long long *st, int family, double p1[2], double t1[2], double *sigma)
+{
+    double a = test_uniform(st, -M_PI, M_PI), c = test_uniform(st, -M_PI, M_PI);
+    const double u = test_uniform(st, 0.0, 1.0);
+    *sigma = family == 0 ? -10.0 + 50.0 * u : family == 1 ? 40.0 * pow(250.0, u) : -10.0 + 210.0 * u;
+    if (family == 2) {
+        const double e = pow(10.0, test_uniform(st, -12.0, -6.0)) * (test_uniform(st, 0.0, 1.0) < 0.5 ? -1.0 : 1.0);
+        if (test_uniform(st, 0.0, 1.0) < 0.5) a = (test_uniform(st, 0.0, 1.0) < 0.5 ? 0.0 : M_PI) + e;
+        else c = M_PI / 2 + (test_uniform(st, 0.0, 1.0) < 0.5 ? 0.0 : M_PI) + e;
+    }
+    p1[0] = cos(a);
+    p1[1] = sin(a);
+    t1[0] = cos(c);
+    t1[1] = sin(c);
+}
+
+START_TEST(tension_solutions_contain_every_scanned_root)
+{
+    const int family = _i;
+    unsigned long long st = 1601 + 7919 * (unsigned long long)family;
+    int nscan = 0, nret = 0, nprob = 0, nmiss = 0;
+    for (int t = 0; t < NPROB; t++) {
+        double p1[2], t1[2], sigma;
+        draw(&st, family, p1, t1, &sigma);
+        scan_root r[MAXSCAN];
+        el_hermite_result res;
+        int n;
+        if (!scan_and_solve(p1, t1, sigma, NX_SET, r, &n, &res)) continue;   /* the scan covers case 1 */
+        for (int i = 0; i < n; i++) {
+            const int found = scan_root_found(&r[i], &res);
+            if (!found && nmiss++ < 10)
+                fprintf(stderr, "family %d problem %d (P %.17g %.17g V %.17g %.17g sigma %.17g): the scan's "
+                        "solution kappa0 %.10g, L %.10g is missing\n", family, t, p1[0], p1[1], t1[0], t1[1],
+                        sigma, r[i].k0, r[i].L);
+        }
+        nscan += n;
+        nret += (int)res.count;
+        nprob++;
+        el_hermite_result_free(&res);
+    }
+    ck_assert_msg(nmiss == 0, "family %d: %d of %d scanned solutions missing (the first above)", family, nmiss, nscan);
+    ck_assert_int_gt(nprob, NPROB / 2);
+    ck_assert_int_gt(nscan, nprob);
+    fprintf(stderr, "tension_solutions_contain_every_scanned_root (family %d): %d problems, %d scan roots, %d returned\n",
+            family, nprob, nscan, nret);
+}
+END_TEST
+
+/* |F|^2 - sigma^2 = 4 kappa0'^2 + kappa0^2 (kappa0^2 - 2 sigma) at x on branch b. */
+static double gap(const hprob *pr, int b, double x)
+{
+    hstate st;
+    if (el__hermite_curvdata(pr, x, b, &st)) return NAN;
+    return 4.0 * st.k0p * st.k0p + st.k0 * st.k0 * (st.k0 * st.k0 - 2.0 * pr->sigma);
+}
+
+/* At high tension the solutions hug the separatrix and the separatrix pieces start from
+ * the crossings, the roots of (40): each root el_hermite_analyse reports is a sign
+ * change of |F|^2 - sigma^2 on its branch within 1e-14 (1 + |kappa0|) (the polynomial's
+ * own roots were up to 1.7e-10 off at sigma |p1-p0|^2 = 4000, and a solution was lost). */
+START_TEST(separatrix_crossings_exact_at_high_tension)
+{
+    unsigned long long st = 3301;
+    int nroot = 0;
+    for (int t = 0; t < 300; t++) {
+        double P[2], V[2], sigma;
+        hprob pr;
+        el_hermite_analysis an;
+        high_tension_problem(&st, P, V, &sigma, &pr, &an);
+        for (size_t i = 0; i < an.nroot; i++) {
+            const int b = an.root_branch[i];
+            const double x = an.root[i], d = 1e-14 * (1.0 + fabs(x));
+            const double gl = gap(&pr, b, x - d), gr = gap(&pr, b, x + d);
+            if (!isfinite(gl) || !isfinite(gr)) continue;   /* at an end of (18) */
+            ck_assert_msg(gl * gr <= 0.0, "sigma %g: root %.17g of (40) is no crossing to %.3g (gap %g, %g)",
+                          sigma, x, d, gl, gr);
+            nroot++;
+        }
+    }
+    ck_assert_int_gt(nroot, 300);
+    fprintf(stderr, "separatrix_crossings_exact_at_high_tension: %d roots\n", nroot);
+}
+END_TEST
+
+int main(void)
+{
+    Suite *s = suite_create("hermite_tension");
+    TCase *tc = tcase_create("hermite_tension");
+    tcase_set_timeout(tc, 300);
+    tcase_add_loop_test(tc, tension_solutions_contain_every_scanned_root, 0, 3);
+    tcase_add_test(tc, separatrix_crossings_exact_at_high_tension);
+    suite_add_tcase(s, tc);
+    return test_run_suite(s);
+}
