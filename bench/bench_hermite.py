@@ -3,8 +3,8 @@ against one G1 clothoid per problem (PyPI `clothoids`, ClothoidCurve.build_G1),
 same 10 000 random problems, same run, the two calls interleaved problem by
 problem. Both are timed per call from Python (libelastica through cffi, so both
 carry a call overhead of ~1 us). Then the cost of the Python API: `el.hermite`
-against the bare C call on the same problems, alternately; the overhead is the
-median of the per-problem differences.
+against the bare C call on the same problems, alternately (and in alternating
+order); the overhead is the median of the per-problem differences.
 One JSON line per figure; "readme"/"value" mark the README's figures."""
 import json
 import time
@@ -65,7 +65,8 @@ def timed_calls(p1, a, b, sigma):
 
 def python_overhead(p1, a, b, sigma, n=3000):
     """Per-problem time of el.hermite minus that of the bare C call (cffi, buffers
-    prepared once), the two alternately on the same problems."""
+    prepared once) on the same problem, the two alternately and in alternating order
+    (the second call of a pair finds the caches warm)."""
     import libelastica as el
     opt = ffi.new("el_hermite_options *")
     lib.el_hermite_options_defaults(opt)
@@ -74,16 +75,28 @@ def python_overhead(p1, a, b, sigma, n=3000):
     diff = np.empty(n)
     probs = [((0.0, 0.0), (float(np.cos(a[i])), float(np.sin(a[i]))), (float(p1[i, 0]), float(p1[i, 1])),
               (float(np.cos(b[i])), float(np.sin(b[i]))), float(sigma[i])) for i in range(n)]
-    for i, (q0, t0, q1, t1, s) in enumerate(probs):
+
+    def bare(q0, t0, q1, t1, s):
         buf[0:8] = q0 + t0 + q1 + t1
         opt.sigma = s
         t = time.perf_counter_ns()
         lib.el_hermite_solve(buf, buf + 2, buf + 4, buf + 6, opt, res)
         lib.el_hermite_result_free(res)
-        tc = time.perf_counter_ns() - t
+        return time.perf_counter_ns() - t
+
+    def api(q0, t0, q1, t1, s):
         t = time.perf_counter_ns()
         el.hermite(q0, t0, q1, t1, tension=s)
-        diff[i] = (time.perf_counter_ns() - t - tc) * 1e-3
+        return time.perf_counter_ns() - t
+
+    for i, q in enumerate(probs):
+        if i % 2:
+            tc = bare(*q)
+            tp = api(*q)
+        else:
+            tp = api(*q)
+            tc = bare(*q)
+        diff[i] = (tp - tc) * 1e-3
     return float(np.median(diff))
 
 
