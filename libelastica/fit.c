@@ -204,15 +204,15 @@ static int bounded_start(fit_objective *ob, const double *xl, const double *xu, 
 
 /* Distances and feet (normalised) of every point to the kept curve: near each point's
  * own place, then wherever the curve comes nearer. */
-static int curve_distances(fit_objective *ob, const double *x, double v[2][FIT_NP], double *d, double *fs,
-                           double *tmp)
+static int curve_distances(fit_objective *ob, const double *x, double v[2][FIT_NP], int branch_only,
+                           double *d, double *fs, double *tmp)
 {
     const size_t n = ob->n;
     const size_t nv[2] = {n, 0};
     if (ob->map.model == FIT_SMOOTH) {
         const double *V[2] = {NULL, NULL};
         int st = fit_feet_distances(ob, x, d, fs, NULL);
-        return st ? st : fit_nearest_everywhere(ob, v, V, nv, d, fs, NULL);
+        return st ? st : fit_nearest_everywhere(ob, v, V, nv, branch_only, d, fs, NULL);
     }
     double *buf = malloc(sizeof(double) * 2 * n);
     if (!buf) return EL_ENOMEM;
@@ -226,7 +226,7 @@ static int curve_distances(fit_objective *ob, const double *x, double v[2][FIT_N
     if (!st) {
         const double *V[2] = {buf, NULL};
         fit_polygon_distances(ob, buf, n, v[0][2], 0, 1, d, fs);
-        st = fit_nearest_everywhere(ob, v, V, nv, d, fs, NULL);
+        st = fit_nearest_everywhere(ob, v, V, nv, 0, d, fs, NULL);
     }
     free(buf);
     return st;
@@ -261,10 +261,15 @@ static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit
             for (size_t i = 0; i < ob->n; i++) ob->s[i] = ob->t[i] * v[0][6];
             /* each foot where the paired curve comes nearest (loops, sparse points: not
              * always near the point's place), so the orthogonal fit starts from the
-             * paired curve's own point-to-curve distances and only improves on them */
+             * paired curve's own point-to-curve distances and only improves on them.
+             * Only the branch of each foot matters here (the fit moves the feet by
+             * Newton steps at every evaluation and certifies them at rest): the search
+             * elsewhere stops at a step of 1e-7 of the length (branch_only; measured on
+             * the 42 noisy 1000-point curves of bench_fit.py: 12 % fewer instructions,
+             * every rms the same to 1e-9, one 2e-8 lower) */
             double *buf = malloc(sizeof(double) * 2 * ob->n);
             if (!buf) return EL_ENOMEM;
-            if (curve_distances(ob, xs, v, buf, buf + ob->n, tmp) == EL_OK) {
+            if (curve_distances(ob, xs, v, 1, buf, buf + ob->n, tmp) == EL_OK) {
                 memcpy(ob->s + 1, buf + ob->n + 1, sizeof(double) * (ob->n - 2));
                 ob->s[0] = 0.0;
                 ob->s[ob->n - 1] = v[0][6];
@@ -546,7 +551,7 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
         if (!d) d = dbuf;
         if (!fs) fs = dbuf + n;
     }
-    if (ok) ok = curve_distances(&ob, best.x, v, d, fs, tmp) == EL_OK &&
+    if (ok) ok = curve_distances(&ob, best.x, v, 0, d, fs, tmp) == EL_OK &&
                  !el__all_finite(d, n) && !el__all_finite(fs, n);
     if (!ok) status = EL_EDOM;   /* its distances are beyond double precision: not a fit */
     double s2 = 0.0, emax = 0.0;

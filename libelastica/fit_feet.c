@@ -334,7 +334,7 @@ static int curve_points(const fit_objective *o, const double *v, const double *V
 /* The nearest point of piece p to P: signed distance (+ left of the curve's own
  * direction) and arc length. */
 static int piece_nearest(const fit_objective *o, const double *v, const double *V, size_t nv,
-                         const piece *p, const double *P, double *d, double *s)
+                         const piece *p, const double *P, int branch_only, double *d, double *s)
 {
     if (o->map.model == FIT_DISCRETE) {
         const double h = v[2];
@@ -358,9 +358,16 @@ static int piece_nearest(const fit_objective *o, const double *v, const double *
     for (int it = 0; it < NEWTON_MAX; it++) {
         if ((st = el_smooth_eval(&sp, 1, &u, xy, &th, &ka))) return st;
         const double dx = xy[0] - P[0], dy = xy[1] - P[1], c = cos(th), sn = sin(th);
-        const double step = fit_foot_step(c * dx + sn * dy, c * dy - sn * dx, ka, v[6]);
-        const double un = fmin(fmax(u + step, 0.0), v[6]);
-        if (fabs(un - u) <= 1e-14 * (v[6] + 1e-300)) { u = un; break; }
+        const double t = c * dx + sn * dy, e = c * dy - sn * dx;
+        const double un = fmin(fmax(u + fit_foot_step(t, e, ka, v[6]), 0.0), v[6]), du = un - u;
+        if (branch_only && fabs(du) <= 1e-7 * (v[6] + 1e-300)) {
+            /* the distance at u + du to second order, as project_block's */
+            const double a = t + du, b = e + 0.5 * ka * du * du, dist = sqrt(a * a + b * b);
+            *d = b > 0.0 ? -dist : dist;
+            *s = un;
+            return EL_OK;
+        }
+        if (fabs(du) <= 1e-14 * (v[6] + 1e-300)) { u = un; break; }
         u = un;
     }
     if ((st = el_smooth_eval(&sp, 1, &u, xy, &th, NULL))) return st;
@@ -378,7 +385,7 @@ typedef struct own_foot {
 } own_foot;
 
 static int consider(const fit_objective *o, double v[2][FIT_NP], const double *V[2], const size_t nv[2],
-                    const piece *p, const double *P, const own_foot *f0, size_t i, double *dist,
+                    const piece *p, const double *P, const own_foot *f0, int branch_only, size_t i, double *dist,
                     double *foot, int *side)
 {
     const double dx = P[0] - p->cx, dy = P[1] - p->cy, reach = fabs(dist[i]) + p->r;
@@ -390,7 +397,7 @@ static int consider(const fit_objective *o, double v[2][FIT_NP], const double *V
                                   ? p->s1 >= f0->s - near && p->s0 <= f0->s + near
                                   : p->s0 >= f0->s - near && p->s1 <= f0->s + near)) return EL_OK;
     double d = HUGE_VAL, s = 0.0;
-    int st = piece_nearest(o, v[p->curve], V[p->curve], nv[p->curve], p, P, &d, &s);
+    int st = piece_nearest(o, v[p->curve], V[p->curve], nv[p->curve], p, P, branch_only, &d, &s);
     if (!st && fabs(d) < fabs(dist[i])) {
         dist[i] = d; foot[i] = s;
         if (side) side[i] = p->curve;
@@ -439,7 +446,7 @@ static int feet_are_nearest(const fit_objective *o, const double *v, const doubl
 }
 
 int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const double *V[2],
-                           const size_t nv[2], double *dist, double *foot, int *side)
+                           const size_t nv[2], int branch_only, double *dist, double *foot, int *side)
 {
     const int nc = o->map.ncurves;
     const size_t n = o->n;
@@ -529,7 +536,7 @@ int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const do
             const unsigned tag = (unsigned)i + 1u;
             const own_foot f0 = {side ? side[i] : 0, foot[i], d0};
             if ((double)(x1 - x0 + 1) * (double)(y1 - y0 + 1) > 4.0 * np) {   /* far: every piece */
-                for (int j = 0; j < np && !st; j++) st = consider(o, v, V, nv, &pc[j], P, &f0, i, dist, foot, side);
+                for (int j = 0; j < np && !st; j++) st = consider(o, v, V, nv, &pc[j], P, &f0, branch_only, i, dist, foot, side);
                 continue;
             }
             for (long ix = x0; ix <= x1 && !st; ix++)
@@ -538,7 +545,7 @@ int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const do
                         const int j = g->item[e];
                         if (stamp[j] == tag) continue;
                         stamp[j] = tag;
-                        st = consider(o, v, V, nv, &pc[j], P, &f0, i, dist, foot, side);
+                        st = consider(o, v, V, nv, &pc[j], P, &f0, branch_only, i, dist, foot, side);
                     }
         }
     }

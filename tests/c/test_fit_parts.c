@@ -1,6 +1,7 @@
 /* The pieces of the fit (libelastica/fit_internal.h) against their plain counterparts:
  * the blocked walk over a discrete curve against one Jacobian call, the end states'
- * derivatives and the keyline map's against finite differences. */
+ * derivatives and the keyline map's against finite differences, the start's search for
+ * nearer branches against the full one. */
 #include "testutil.h"
 #include "fit_internal.h"
 #include <string.h>
@@ -275,6 +276,58 @@ START_TEST(test_discrete_orthogonal_gradient)
 }
 END_TEST
 
+/* The orthogonal fit's start searches for nearer branches with branch_only (a step of
+ * 1e-7 of the length, the distance to second order): on noisy points along looping
+ * curves (k > 1, tangent turning many times, so the search is not skipped) it finds the
+ * same feet as the full search to 1e-6 of the length and the same distances to 1e-12,
+ * and the search moves some feet to another branch (it is exercised). */
+START_TEST(test_branch_only_search_equals_full_search)
+{
+    enum { N = 600 };
+    static double xy[2 * N], d0[N], f0[N], d1[N], f1[N];
+    unsigned long long rng = 11;
+    const double ks[] = {1.3, 2.5};
+    int moved = 0;
+    for (size_t a = 0; a < sizeof ks / sizeof ks[0]; a++) {
+        const double v[FIT_NP] = {0.2, -0.1, 0.3, 1.0, ks[a], 0.2, 14.0};
+        el_smooth_params p;
+        ck_assert_int_eq(fit_to_smooth(v, &p), EL_OK);
+        static double s[N];
+        for (size_t i = 0; i < N; i++) s[i] = v[6] * (double)i / (N - 1);
+        ck_assert_int_eq(el_smooth_eval(&p, N, s, xy, NULL, NULL), EL_OK);
+        for (size_t i = 0; i < 2 * N; i++) xy[i] += 0.08 * test_uniform(&rng, -1, 1);
+        fit_map m;
+        memset(&m, 0, sizeof m);
+        m.model = FIT_SMOOTH; m.ncurves = 1;
+        for (int j = 0; j < FIT_NP; j++) { m.scale[j] = 1.0; m.idx[m.nx++] = j; }
+        fit_objective o;
+        ck_assert_int_eq(fit_objective_init(&o, FIT_ORTHOGONAL, &m, xy, N, 0.0, 0.0, 1.0, NULL), EL_OK);
+        double x[FIT_MAXX], vv[2][FIT_NP];
+        fit_map_inverse(&m, v, x);
+        memcpy(vv[0], v, sizeof vv[0]);
+        const double *V[2] = {NULL, NULL};
+        const size_t nv[2] = {N, 0};
+        for (size_t i = 0; i < N; i++) o.s[i] = s[i];
+        ck_assert_int_eq(fit_feet_distances(&o, x, d0, f0, NULL), EL_OK);
+        memcpy(d1, d0, sizeof d1);
+        memcpy(f1, f0, sizeof f1);
+        static double local[N];
+        memcpy(local, f0, sizeof local);
+        ck_assert_int_eq(fit_nearest_everywhere(&o, vv, V, nv, 0, d0, f0, NULL), EL_OK);
+        ck_assert_int_eq(fit_nearest_everywhere(&o, vv, V, nv, 1, d1, f1, NULL), EL_OK);
+        for (size_t i = 0; i < N; i++) {
+            ck_assert_msg(fabs(f1[i] - f0[i]) <= 1e-6 * v[6], "k %g point %zu: foot %.15g vs %.15g",
+                          ks[a], i, f1[i], f0[i]);
+            ck_assert_msg(fabs(d1[i] - d0[i]) <= 1e-12, "k %g point %zu: distance %.17g vs %.17g",
+                          ks[a], i, d1[i], d0[i]);
+            moved += fabs(f0[i] - local[i]) > 0.1 * v[6];
+        }
+        fit_objective_free(&o);
+    }
+    ck_assert_int_gt(moved, 0);
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("fit parts");
@@ -285,6 +338,7 @@ static Suite *suite(void)
     tcase_add_test(tc, test_keyline_map_is_g2_with_its_derivative);
     tcase_add_test(tc, test_start_chart_same_curve_and_derivative);
     tcase_add_test(tc, test_discrete_orthogonal_gradient);
+    tcase_add_test(tc, test_branch_only_search_equals_full_search);
     suite_add_tcase(s, tc);
     return s;
 }
