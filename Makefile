@@ -145,6 +145,11 @@ build/fuzz/driver: fuzz/driver.c $(FUZZ_DEPS) $(LIB_SRC) include/elastica.h libe
 	$(CC) $(CFLAGS_BASE) $(SAN_FLAGS) $(DEPS_CFLAGS) fuzz/driver.c $(FUZZ_SRC) -o $@ \
 	  build/asan/libelastica.a $(DEPS_LIBS)
 
+# the same driver without sanitizers: times a call that is slow under them at full speed
+build/fuzz/driver-release: fuzz/driver.c $(FUZZ_DEPS) $(BUILD)/libelastica.a
+	@mkdir -p build/fuzz
+	$(CC) $(CFLAGS_BASE) $(DEPS_CFLAGS) fuzz/driver.c $(FUZZ_SRC) -o $@ $(BUILD)/libelastica.a $(DEPS_LIBS)
+
 build/fuzz/libfuzzer: fuzz/libfuzzer.c $(FUZZ_DEPS) $(LIB_SRC) include/elastica.h libelastica/internal.h | deps fuzz-deps
 	@$(MAKE) --no-print-directory BUILD=build/libfuzzer CC=clang \
 	  EXTRA_CFLAGS="$(SAN_FLAGS) $(CLANG_SAN) -fsanitize=fuzzer-no-link" build/libfuzzer/libelastica.a
@@ -162,21 +167,24 @@ fuzz-coverage:
 
 # make check: a deterministic slice (<= 60 s) and the corpus of past findings,
 # tolerating only fuzz/known-findings (other owners' open issues)
-check-fuzz: build/fuzz/driver fuzz-coverage
+FUZZ_RELEASE := --release build/fuzz/driver-release
+
+check-fuzz: build/fuzz/driver build/fuzz/driver-release fuzz-coverage
 	@rm -rf build/fuzz/findings && mkdir -p build/fuzz/findings
-	$(FUZZ_ENV) build/fuzz/driver --known fuzz/known-findings --scale $(FUZZ_SLICE)
-	$(FUZZ_ENV) build/fuzz/driver --known fuzz/known-findings --replay fuzz/corpus
+	$(FUZZ_ENV) build/fuzz/driver --known fuzz/known-findings $(FUZZ_RELEASE) --scale $(FUZZ_SLICE)
+	$(FUZZ_ENV) build/fuzz/driver --known fuzz/known-findings $(FUZZ_RELEASE) --replay fuzz/corpus
 
 # the whole driver, then libFuzzer for FUZZ_SECONDS; the last line sums both. Findings
 # of fuzz/known-findings (other owners' open issues) are counted apart, as "known".
 # Slow calls are the driver's to judge (CPU time, known list): libFuzzer's wall-clock
 # "slow units" on a shared machine are not findings; its timeouts (20 s) are.
-fuzz: build/fuzz/driver build/fuzz/libfuzzer fuzz-coverage
+fuzz: build/fuzz/driver build/fuzz/driver-release build/fuzz/libfuzzer fuzz-coverage
 	@rm -rf build/fuzz/findings build/fuzz/work && mkdir -p build/fuzz/findings build/fuzz/work
 	@build/fuzz/driver --write-seeds build/fuzz/work
-	@set +e; $(FUZZ_ENV) build/fuzz/driver --known fuzz/known-findings --scale $(FUZZ_SCALE) \
+	@set +e; $(FUZZ_ENV) build/fuzz/driver --known fuzz/known-findings $(FUZZ_RELEASE) --scale $(FUZZ_SCALE) \
 	  | tee build/fuzz/driver.log; \
-	$(FUZZ_ENV) build/fuzz/driver --known fuzz/known-findings --replay fuzz/corpus | tee -a build/fuzz/driver.log; \
+	$(FUZZ_ENV) build/fuzz/driver --known fuzz/known-findings $(FUZZ_RELEASE) --replay fuzz/corpus \
+	  | tee -a build/fuzz/driver.log; \
 	$(FUZZ_ENV) FUZZ_KNOWN=fuzz/known-findings build/fuzz/libfuzzer -max_total_time=$(FUZZ_SECONDS) \
 	  -timeout=20 -report_slow_units=60 -rss_limit_mb=4096 -max_len=65536 -print_final_stats=1 \
 	  -artifact_prefix=build/fuzz/findings/ build/fuzz/work fuzz/corpus > build/fuzz/libfuzzer.log 2>&1; \

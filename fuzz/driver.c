@@ -3,17 +3,22 @@
  * entries.def (built with ASan + UBSan), each entry's cases run in a forked
  * child so that a crash, a hang or a leak is pinned to the input that caused
  * it and the run goes on. Findings: crash, hang (a call over HANG_S seconds of
- * CPU: killed), slow (a call over SLOW_S of CPU with n <= 1e4), non-finite
+ * CPU: killed), slow (a call over 1 s of CPU at full speed with n <= 1e4: see
+ * SLOW_S), non-finite
  * (EL_OK with NaN/inf outputs), status (one the header does not list),
  * untouched (an output written on an error that documents it untouched),
  * output (other promises: counts, indices, certified deviations),
  * gsl-error (GSL's error handler called from inside the library), leak.
  *
  *   driver [--scale S] [--seed N] [--only NAME] [--findings DIR] [--known FILE]
- *                                                                  generated cases
- *   driver [--trace] --replay FILE|DIR ...                         given inputs (--trace:
+ *          [--release PATH]                                        generated cases
+ *   driver [--release PATH] [--trace] --replay FILE|DIR ...        given inputs (--trace:
  *                                                                  print the arguments)
  *   driver --write-seeds DIR                                       a libFuzzer seed corpus
+ *   driver --cpu FILE                       one input in this process: its CPU seconds
+ *
+ * --release names this driver built without sanitizers (make: build/fuzz/driver-release):
+ * a call slow here is timed again there, at full speed (--cpu).
  *
  * The last line: "fuzz driver: N inputs (M entry points), findings: F".
  * Exit status 1 when there are findings.
@@ -34,9 +39,14 @@
 #include <time.h>
 #include <unistd.h>
 
-/* The sanitizers slow calls down ~3x: the CPU limits are for the sanitized build. */
-static const double SLOW_S = 3.0;   /* "a call over 1 s CPU" at full speed */
+/* "A call over 1 s of CPU" (issue 12) is a statement about the library at full speed;
+ * the sanitizers slow calls down by 3x and, in Ipopt's MUMPS (uninstrumented Fortran that
+ * allocates on every factorisation), by 10x and more. A call over SCREEN_S here is timed
+ * again in the release driver and is slow when it takes over SLOW_S there; without a
+ * release driver, a call over SLOW_SANITIZED_S here is slow (the 3x estimate). */
+static const double SLOW_S = 1.0, SCREEN_S = 1.0, SLOW_SANITIZED_S = 3.0;
 static const int HANG_S = 20;       /* killed: reported as a hang */
+static const char *release_driver;  /* --release */
 enum { MAXLEN = 65536, BATCH = 256, EXIT_HANG = 99, SHOWN = 3 };
 
 /* Memory shared with the child: the input being run, so a crash names it. */
@@ -138,6 +148,12 @@ static void child_sink(const fz_entry *e, const char *kind, const char *msg)
     report(e->name, kind, msg, shm->data, shm->len);
 }
 
+/* The sink of --cpu: the sanitized driver that asked judges the input. */
+static void cpu_sink(const fz_entry *e, const char *kind, const char *msg)
+{
+    (void)e, (void)kind, (void)msg;
+}
+
 /* ---------------------------------------------------------------- the child */
 
 static void on_hang(int sig)
@@ -153,6 +169,28 @@ static double cpu_now(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+/* CPU seconds of the input in the release driver (--cpu), -1 if it cannot be run. */
+static double release_cpu(const uint8_t *data, size_t len)
+{
+    char path[] = "/tmp/elastica-fuzz-XXXXXX";
+    const int fd = mkstemp(path);
+    if (fd < 0) return -1.0;
+    const int wrote = write(fd, data, len) == (ssize_t)len;
+    close(fd);
+    double s = -1.0;
+    if (wrote) {
+        char cmd[2048];
+        snprintf(cmd, sizeof cmd, "'%s' --cpu '%s' 2>/dev/null", release_driver, path);
+        FILE *p = popen(cmd, "r");
+        if (p) {
+            if (fscanf(p, "cpu %lf", &s) != 1) s = -1.0;
+            if (pclose(p) != 0) s = -1.0;
+        }
+    }
+    unlink(path);
+    return s;
+}
+
 /* Run one input with the CPU limits. */
 static void run_one(const uint8_t *data, size_t len)
 {
@@ -164,9 +202,26 @@ static void run_one(const uint8_t *data, size_t len)
     fz_run(data, len, child_sink);
     const double dt = cpu_now() - t0;
     setitimer(ITIMER_PROF, &off, NULL);
-    if (dt > SLOW_S && fz_large <= 10000) {
-        char msg[128];
-        snprintf(msg, sizeof msg, "one call took %.1f s of CPU (limit %.0f s, sanitized build)", dt, SLOW_S);
+    if (dt > SCREEN_S && fz_large <= 10000) {
+        char msg[160];
+        if (!release_driver) {
+            if (dt <= SLOW_SANITIZED_S) return;
+            snprintf(msg, sizeof msg, "one call took %.1f s of CPU (limit %.0f s, sanitized build)", dt,
+                     SLOW_SANITIZED_S);
+        } else {
+            const double full = release_cpu(data, len);
+            if (full >= 0.0 && full <= SLOW_S) {
+                printf("fuzz driver: %s took %.1f s of CPU sanitized, %.2f s at full speed: not slow\n",
+                       fz_select(data, len)->name, dt, full);
+                return;
+            }
+            if (full < 0.0)
+                snprintf(msg, sizeof msg, "one call took %.1f s of CPU sanitized; the release driver "
+                         "could not time it", dt);
+            else
+                snprintf(msg, sizeof msg, "one call took %.2f s of CPU at full speed (limit %.0f s; "
+                         "%.1f s sanitized)", full, SLOW_S, dt);
+        }
         report(fz_select(data, len)->name, "slow", msg, data, len);
     }
 }
@@ -307,6 +362,20 @@ static void write_seeds(const char *dir, uint64_t seed)
         }
 }
 
+/* --cpu: run one input here and print its CPU seconds (the release driver's part). */
+static int cpu_of(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return 2;
+    static uint8_t buf[MAXLEN];
+    const size_t len = fread(buf, 1, sizeof buf, f);
+    fclose(f);
+    const double t0 = cpu_now();
+    fz_run(buf, len, cpu_sink);
+    printf("cpu %.6f\n", cpu_now() - t0);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     double scale = 1.0;
@@ -325,6 +394,8 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--findings") && i + 1 < argc) findings_dir = argv[++i];
         else if (!strcmp(argv[i], "--trace")) fz_trace = 1;
         else if (!strcmp(argv[i], "--known") && i + 1 < argc) fz_read_known(argv[++i]);
+        else if (!strcmp(argv[i], "--release") && i + 1 < argc) release_driver = argv[++i];
+        else if (!strcmp(argv[i], "--cpu") && i + 1 < argc) return cpu_of(argv[++i]);
         else if (!strcmp(argv[i], "--write-seeds") && i + 1 < argc) {
             write_seeds(argv[++i], seed);
             return 0;
@@ -332,7 +403,8 @@ int main(int argc, char **argv)
             for (i++; i < argc; i++, nreplay++) replay(argv[i]);
         } else {
             fprintf(stderr, "usage: driver [--scale S] [--seed N] [--only NAME] [--findings DIR] "
-                            "[--known FILE] | [--trace] --replay FILE|DIR... | --write-seeds DIR\n");
+                            "[--known FILE] [--release PATH] | [--release PATH] [--trace] --replay "
+                            "FILE|DIR... | --write-seeds DIR | --cpu FILE\n");
             return 2;
         }
     }

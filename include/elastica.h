@@ -399,8 +399,10 @@ typedef struct el_fit_smooth_result {
  * (the residual vector orthogonal to every column of the Jacobian to 1e-8, or zero to
  * rounding); Ipopt runs only for bounds that are active, constraints, an uncertified
  * result (noisy data whose decrease stalls, reported as EL_OK once Ipopt's acceptable
- * level is reached), or opt->limited_memory. Memory: O(n) for the result's distances,
- * the Jacobian is never stored. Thread safety: concurrent fits run at once; only
+ * level is reached), or opt->limited_memory. Work: a few Jacobian evaluations, O(n)
+ * each, per candidate; with limited_memory up to opt->max_iter Ipopt iterations per
+ * candidate (each ~3 ms for small n: MUMPS's fixed cost on this machine's Debian 12).
+ * Memory: O(n) for the result's distances, the Jacobian is never stored. Thread safety: concurrent fits run at once; only
  * their Ipopt solves are serialised by a process-wide lock (Debian's MUMPS, Ipopt's
  * linear solver, is not reentrant). Ipopt reads no options file (an ipopt.opt in the
  * working directory is ignored) and prints nothing.
