@@ -86,6 +86,14 @@ static int params_from_state(double x0, double y0, double theta, double kappa, d
 
 static double angle_err(double a, double b) { return fabs(el__hermite_wrap_pi(a - b)); }
 
+/* The end residual of the curve p from the ends' values xy, th at s = 0 and L. */
+static double end_residual(const hframe *fr, const double xy[4], const double th[2])
+{
+    const double *a = fr->p0, *b = fr->p1;
+    double e = fmax(hypot(xy[0] - a[0], xy[1] - a[1]), hypot(xy[2] - b[0], xy[3] - b[1])) / fr->d;
+    return fmax(e, fmax(angle_err(th[0], fr->psi0), angle_err(th[1], fr->psi1)));
+}
+
 /* End residual of a solution measured with el_smooth_eval. */
 static int residual(const hframe *fr, const el_hermite_solution *s, double *res)
 {
@@ -93,22 +101,21 @@ static int residual(const hframe *fr, const el_hermite_solution *s, double *res)
     double xy[4], th[2];
     int rc = el_smooth_eval(&s->curve, 2, sv, xy, th, NULL);
     if (rc) return rc;
-    const double *a = fr->p0, *b = fr->p1;
-    double e = fmax(hypot(xy[0] - a[0], xy[1] - a[1]), hypot(xy[2] - b[0], xy[3] - b[1])) / fr->d;
-    e = fmax(e, fmax(angle_err(th[0], fr->psi0), angle_err(th[1], fr->psi1)));
-    *res = e;
+    *res = end_residual(fr, xy, th);
     return EL_OK;
 }
 
 /* Residual vector of a solution for the polish: end point (2, / d), tangent
- * angles at both ends (2), and the mode's scalar condition (sigma or length). */
+ * angles at both ends (2), and the mode's scalar condition (sigma or length);
+ * *res (if res) gets the end residual (residual()) of the same evaluation. */
 static int polish_res(const hframe *fr, const el_smooth_params *p, int mode, double target,
-                      double *r)
+                      double *r, double *res)
 {
     const double sv[2] = {0.0, p->length};
     double xy[4], th[2];
     int rc = el_smooth_eval(p, 2, sv, xy, th, NULL);
     if (rc) return rc;
+    if (res) *res = end_residual(fr, xy, th);
     r[0] = (xy[2] - fr->p1[0]) / fr->d;
     r[1] = (xy[3] - fr->p1[1]) / fr->d;
     r[2] = el__hermite_wrap_pi(th[0] - fr->psi0);
@@ -121,11 +128,11 @@ static int polish_res(const hframe *fr, const el_smooth_params *p, int mode, dou
 
 /* The polish's step test: -1 if q is invalid, else 1 if its end residual (the
  * first four entries of polish_res, max norm) is below that of r, else 0; rq gets
- * q's residual vector. */
+ * q's residual vector, *res its end residual. */
 static int step_improves(const hframe *fr, int mode, double target, const el_smooth_params *q,
-                         const double *r, double *rq)
+                         const double *r, double *rq, double *res)
 {
-    if (el_smooth_check(q) || polish_res(fr, q, mode, target, rq)) return -1;
+    if (el_smooth_check(q) || polish_res(fr, q, mode, target, rq, res)) return -1;
     double n0 = 0.0, n1 = 0.0;
     for (int i = 0; i < 4; i++) { n0 = fmax(n0, fabs(r[i])); n1 = fmax(n1, fabs(rq[i])); }
     return n1 < n0;
@@ -138,51 +145,74 @@ static int step_improves(const hframe *fr, int mode, double target, const el_smo
 static void polish(const hframe *fr, int mode, double target, el_hermite_solution *s)
 {
     el_smooth_params p = s->curve;
-    double r[5];
-    if (polish_res(fr, &p, mode, target, r)) return;
+    double r[5], res, J[25], *v[5] = {&p.phi, &p.mu, &p.k, &p.q, &p.length};
+    if (polish_res(fr, &p, mode, target, r, &res)) return;
+    for (int j = 0; j < 5; j++) {
+        /* k: a step relative to the distance from the separatrix, where gamma
+         * varies on the scale |k| - 1 (the period grows like log 1/||k| - 1|) */
+        const double v0 = *v[j];
+        const double h = j == 2 ? 1e-7 * fmin(fabs(v0) + 1e-3, fmax(fabs(fabs(v0) - 1.0), 1e-9))
+                                : 1e-7 * (fabs(v0) + (j == 1 ? p.mu : 1e-3));
+        double rp[5], rm[5];
+        *v[j] = v0 + h;
+        int e1 = polish_res(fr, &p, mode, target, rp, NULL);
+        *v[j] = v0 - h;
+        int e2 = polish_res(fr, &p, mode, target, rm, NULL);
+        *v[j] = v0;
+        if (e1 || e2) return;
+        for (int i = 0; i < 5; i++) J[i * 5 + j] = (rp[i] - rm[i]) / (2.0 * h);
+    }
+    /* J dv = -r by LU with partial pivoting (dense.c); the start's Jacobian serves
+     * every step (a chord method: the steps are ~ the residual, < 1e-5, so J changes
+     * by far less than the convergence notices, and a step costs one evaluation
+     * instead of eleven) */
+    int perm[5];
+    if (el__lu_factor(J, 5, perm)) return;
     for (int it = 0; it < 4; it++) {
-        double J[25], *v[5] = {&p.phi, &p.mu, &p.k, &p.q, &p.length};
-        for (int j = 0; j < 5; j++) {
-            /* k: a step relative to the distance from the separatrix, where gamma
-             * varies on the scale |k| - 1 (the period grows like log 1/||k| - 1|) */
-            const double v0 = *v[j];
-            const double h = j == 2 ? 1e-7 * fmin(fabs(v0) + 1e-3, fmax(fabs(fabs(v0) - 1.0), 1e-9))
-                                    : 1e-7 * (fabs(v0) + (j == 1 ? p.mu : 1e-3));
-            double rp[5], rm[5];
-            *v[j] = v0 + h;
-            int e1 = polish_res(fr, &p, mode, target, rp);
-            *v[j] = v0 - h;
-            int e2 = polish_res(fr, &p, mode, target, rm);
-            *v[j] = v0;
-            if (e1 || e2) return;
-            for (int i = 0; i < 5; i++) J[i * 5 + j] = (rp[i] - rm[i]) / (2.0 * h);
-        }
-        /* J dv = -r by LU with partial pivoting (dense.c) */
         double dv[5];
         for (int i = 0; i < 5; i++) dv[i] = -r[i];
-        int perm[5];
-        if (el__lu_factor(J, 5, perm)) return;
         el__lu_solve(J, 5, perm, dv);
         for (int i = 0; i < 5; i++) if (!isfinite(dv[i])) return;
         el_smooth_params q = p;
         q.phi += dv[0]; q.mu += dv[1]; q.k += dv[2]; q.q += dv[3];
         if (mode == EL_HERMITE_TENSION) q.length += dv[4]; /* length mode: L stays exact */
-        double rq[5];
-        const int better = step_improves(fr, mode, target, &q, r, rq);
+        double rq[5], resq;
+        const int better = step_improves(fr, mode, target, &q, r, rq, &resq);
         if (better < 0) return;
         if (!better) break;
         p = q;
         memcpy(r, rq, sizeof r);
+        res = resq;
     }
+    if (!(res < s->residual)) return;
     el_hermite_solution t = *s;
     t.curve = p;
     t.length = p.length;
-    double res;
-    if (residual(fr, &t, &res) || !(res < s->residual)) return;
     t.residual = res;
     if (mode == EL_HERMITE_LENGTH) t.sigma = 2.0 * p.mu * (2.0 * p.k * p.k - 1.0);
     if (el_smooth_energy(&p, &t.energy)) return;
     *s = t;
+}
+
+/* The finite-difference Jacobian (4 x 3, row-major) of the end conditions (the first
+ * four entries of polish_res) in polish_fixed_k's parameters at p; nonzero if p or a
+ * perturbed p is invalid. */
+static int fixed_k_jacobian(const hframe *fr, int mode, double target, el_smooth_params p, double *J)
+{
+    double *v[3] = {&p.phi, &p.q, mode == EL_HERMITE_TENSION ? &p.length : &p.mu};
+    for (int c = 0; c < 3; c++) {
+        const double v0 = *v[c], h = 1e-7 * (fabs(v0) + (c == 2 ? fabs(v0) : 1e-3));
+        double rp[5], rm[5];
+        int bad;
+        *v[c] = v0 + h;
+        bad = el_smooth_check(&p) || polish_res(fr, &p, mode, target, rp, NULL);
+        *v[c] = v0 - h;
+        bad |= el_smooth_check(&p) || polish_res(fr, &p, mode, target, rm, NULL);
+        *v[c] = v0;
+        if (bad) return 1;
+        for (int i = 0; i < 4; i++) J[i * 3 + c] = (rp[i] - rm[i]) / (2.0 * h);
+    }
+    return 0;
 }
 
 /* Second polish for the solutions the first one leaves above tol: near the
@@ -198,48 +228,44 @@ static void polish(const hframe *fr, int mode, double target, el_hermite_solutio
 static void polish_fixed_k(const hframe *fr, int mode, double target, el_hermite_solution *s)
 {
     el_smooth_params best = s->curve;
-    double best_res = s->residual;
+    double best_res = s->residual, J[12], tau[3];
+    int have_J = 0, no_J = 0;
     for (int j = -4; j <= 4; j++) {
         el_smooth_params p = s->curve;
         for (int i = 0; i < abs(j); i++) p.k = nextafter(p.k, j > 0 ? INFINITY : -INFINITY);
         if (mode == EL_HERMITE_TENSION) p.mu = target / (2.0 * (2.0 * p.k * p.k - 1.0));
         if (el_smooth_check(&p)) continue;
-        double *v[3] = {&p.phi, &p.q, mode == EL_HERMITE_TENSION ? &p.length : &p.mu};
-        double r[5];
-        if (polish_res(fr, &p, mode, target, r)) continue;
-        for (int it = 0; it < 4; it++) {
-            double J[12], rhs[4], dv[3], tau[3], lsr[4];
-            int bad = 0;
-            for (int c = 0; c < 3 && !bad; c++) {
-                const double v0 = *v[c], h = 1e-7 * (fabs(v0) + (c == 2 ? fabs(v0) : 1e-3));
-                double rp[5], rm[5];
-                *v[c] = v0 + h;
-                bad |= el_smooth_check(&p) || polish_res(fr, &p, mode, target, rp);
-                *v[c] = v0 - h;
-                bad |= el_smooth_check(&p) || polish_res(fr, &p, mode, target, rm);
-                *v[c] = v0;
-                for (int i = 0; i < 4; i++) J[i * 3 + c] = (rp[i] - rm[i]) / (2.0 * h);
-            }
-            if (bad) break;
+        double r[5], res;
+        if (polish_res(fr, &p, mode, target, r, &res)) continue;
+        /* the Jacobian (QR-factored) of the first valid k serves every k and step (a
+         * chord method): the k are a few ulps apart and the steps ~ the residual, so
+         * it changes by ~1e-8 relative between them, far below what Gauss-Newton's
+         * convergence notices, and the k are 1 + 4 evaluations each instead of ~30 */
+        if (!have_J && !no_J) {
+            gsl_matrix_view Jm = gsl_matrix_view_array(J, 4, 3);
+            gsl_vector_view tv = gsl_vector_view_array(tau, 3);
+            have_J = !fixed_k_jacobian(fr, mode, target, p, J) &&
+                     gsl_linalg_QR_decomp(&Jm.matrix, &tv.vector) == GSL_SUCCESS;
+            no_J = !have_J;
+        }
+        for (int it = 0; it < 4 && have_J; it++) {
+            double rhs[4], dv[3], lsr[4];
             for (int i = 0; i < 4; i++) rhs[i] = -r[i];
             gsl_matrix_view Jm = gsl_matrix_view_array(J, 4, 3);
             gsl_vector_view bv = gsl_vector_view_array(rhs, 4), xv = gsl_vector_view_array(dv, 3);
             gsl_vector_view tv = gsl_vector_view_array(tau, 3), rv = gsl_vector_view_array(lsr, 4);
-            if (gsl_linalg_QR_decomp(&Jm.matrix, &tv.vector) != GSL_SUCCESS ||
-                gsl_linalg_QR_lssolve(&Jm.matrix, &tv.vector, &bv.vector, &xv.vector, &rv.vector) != GSL_SUCCESS)
+            if (gsl_linalg_QR_lssolve(&Jm.matrix, &tv.vector, &bv.vector, &xv.vector, &rv.vector) != GSL_SUCCESS)
                 break;
             el_smooth_params q = p;
             double *w[3] = {&q.phi, &q.q, mode == EL_HERMITE_TENSION ? &q.length : &q.mu};
             for (int c = 0; c < 3; c++) *w[c] += isfinite(dv[c]) ? dv[c] : NAN;
-            double rq[5];
-            if (step_improves(fr, mode, target, &q, r, rq) != 1) break;
+            double rq[5], resq;
+            if (step_improves(fr, mode, target, &q, r, rq, &resq) != 1) break;
             p = q;
             memcpy(r, rq, sizeof r);
+            res = resq;
         }
-        el_hermite_solution t = *s;
-        t.curve = p;
-        double res;
-        if (residual(fr, &t, &res) || !(res < best_res)) continue;
+        if (!(res < best_res)) continue;
         best = p;
         best_res = res;
     }
