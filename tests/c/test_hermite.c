@@ -389,33 +389,42 @@ START_TEST(near_separatrix_solutions_meet_tol)
 }
 END_TEST
 
-/* Length mode near the chord (L = 1.02..1.05 |p1 - p0|): the solutions of high tension
- * (sigma |p1-p0|^2 up to ~1e5) come as chains where one piece cannot meet tol; every
- * one meets the ends and has the given length, none is unrepresentable. */
-START_TEST(length_mode_near_the_chord_returns_chains)
+/* n random length-mode problems near the chord (L / |p1 - p0| uniform in [1.02, Lmax]),
+ * each result checked (ends to 1e-10, the given length, none unrepresentable): the
+ * solutions, the chains and the one-piece curves within 1e-7 of |k| = 1 added to c[0..2]. */
+static void solve_near_the_chord(unsigned long long st, int n, double Lmax, size_t c[3])
 {
-    unsigned long long st = 555;
-    size_t total = 0, chains = 0;
-    for (int t = 0; t < 12; t++) {
+    for (int t = 0; t < n; t++) {
         const double a = test_uniform(&st, -M_PI, M_PI), b = test_uniform(&st, -M_PI, M_PI);
         const double p0[2] = {0, 0}, t0[2] = {1, 0}, p1[2] = {cos(a), sin(a)}, t1[2] = {cos(b), sin(b)};
         el_hermite_options o;
         el_hermite_options_defaults(&o);
         o.mode = EL_HERMITE_LENGTH;
-        o.length = test_uniform(&st, 1.02, 1.05);
+        o.length = test_uniform(&st, 1.02, Lmax);
         el_hermite_result r;
         ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_OK);
         check_result(p0, t0, p1, t1, &r, 1e-10);
         ck_assert_uint_eq(r.unrepresentable, 0);
         for (size_t i = 0; i < r.count; i++) {
-            ck_assert_close(r.solutions[i].length, o.length, 1e-12 * o.length);
-            chains += r.solutions[i].npieces > 1;
+            const el_hermite_solution *s = &r.solutions[i];
+            ck_assert_close(s->length, o.length, 1e-12 * o.length);
+            c[1] += s->npieces > 1;
+            c[2] += s->npieces == 1 && fabs(fabs(s->curve.k) - 1.0) < 1e-7;
         }
-        total += r.count;
+        c[0] += r.count;
         el_hermite_result_free(&r);
     }
-    ck_assert_uint_gt(chains, 5);
-    fprintf(stderr, "length_mode_near_the_chord_returns_chains: %zu solutions, %zu chains\n", total, chains);
+}
+
+/* Length mode near the chord (L = 1.02..1.05 |p1 - p0|): the solutions of high tension
+ * (sigma |p1-p0|^2 up to ~1e5) come as chains where one piece cannot meet tol; every
+ * one meets the ends and has the given length, none is unrepresentable. */
+START_TEST(length_mode_near_the_chord_returns_chains)
+{
+    size_t c[3] = {0, 0, 0};
+    solve_near_the_chord(555, 12, 1.05, c);
+    ck_assert_uint_gt(c[1], 5);
+    fprintf(stderr, "length_mode_near_the_chord_returns_chains: %zu solutions, %zu chains\n", c[0], c[1]);
 }
 END_TEST
 
@@ -426,28 +435,12 @@ END_TEST
  * piece within 1e-7 of |k| = 1 (137 chains); without any polish 229, 1 and 176. */
 START_TEST(polish_keeps_near_separatrix_curves_in_one_piece)
 {
-    unsigned long long st = 4242;
-    size_t total = 0, near = 0;
-    for (int t = 0; t < 60; t++) {
-        const double a = test_uniform(&st, -M_PI, M_PI), b = test_uniform(&st, -M_PI, M_PI);
-        const double p0[2] = {0, 0}, t0[2] = {1, 0}, p1[2] = {cos(a), sin(a)}, t1[2] = {cos(b), sin(b)};
-        el_hermite_options o;
-        el_hermite_options_defaults(&o);
-        o.mode = EL_HERMITE_LENGTH;
-        o.length = test_uniform(&st, 1.02, 1.3);
-        el_hermite_result r;
-        ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_OK);
-        check_result(p0, t0, p1, t1, &r, 1e-10);
-        ck_assert_uint_eq(r.unrepresentable, 0);
-        for (size_t i = 0; i < r.count; i++)
-            near += r.solutions[i].npieces == 1 && fabs(fabs(r.solutions[i].curve.k) - 1.0) < 1e-7;
-        total += r.count;
-        el_hermite_result_free(&r);
-    }
-    ck_assert_uint_ge(total, 235);
-    ck_assert_uint_ge(near, 30);
+    size_t c[3] = {0, 0, 0};
+    solve_near_the_chord(4242, 60, 1.3, c);
+    ck_assert_uint_ge(c[0], 235);
+    ck_assert_uint_ge(c[2], 30);
     fprintf(stderr, "polish_keeps_near_separatrix_curves_in_one_piece: %zu solutions, %zu one piece near |k| = 1\n",
-            total, near);
+            c[0], c[2]);
 }
 END_TEST
 
