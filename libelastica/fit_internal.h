@@ -127,6 +127,9 @@ typedef struct fit_objective {
      * (an earlier guess's) at its recent rate within its remaining iterations
      * (fit_lm.c); HUGE_VAL (fit_objective_init): never */
     double f_ceiling;
+    /* Levenberg-Marquardt stops once a Gauss-Newton step would lower f by less than
+     * lm_tol of itself (fit_lm.c; fit_objective_init: 1e-13, the certificate) */
+    double lm_tol;
     size_t split;                /* discrete keyline: the data index of the joint */
     double *work;                /* block buffers */
     /* discrete orthogonal: the polygon (2n), distances and feet (n each) of the last
