@@ -70,11 +70,12 @@ static void point(const fit_objective *o, size_t i, double *P)
  * further evaluation.
  */
 static int project_block(const fit_objective *o, double v[2][FIT_NP], size_t a, size_t m,
-                         double *sig, double lo, double hi, double *dist)
+                         double *sig, double lo, double hi, double *dist, int keep_rest)
 {
     double cur[FIT_BLOCK];
-    size_t act[FIT_BLOCK], na = m;
-    for (size_t i = 0; i < m; i++) act[i] = a + i;
+    size_t act[FIT_BLOCK], na = 0;
+    for (size_t i = 0; i < m; i++)
+        if (!keep_rest || isnan(dist[a + i])) act[na++] = a + i;
     const double tol = 1e-7 * (hi - lo + 1e-300);
     feet_block b;
     for (int it = 0; it < NEWTON_MAX && na > 0; it++) {
@@ -133,7 +134,7 @@ int fit_objective_project(fit_objective *o, const double *x)
     /* the ends keep their places (their residuals are full vectors) */
     for (size_t a = 1; a + 1 < o->n; a += FIT_BLOCK) {
         const size_t m = o->n - 1 - a < FIT_BLOCK ? o->n - 1 - a : FIT_BLOCK;
-        if ((st = project_block(o, v, a, m, o->s, lo, hi, NULL))) return st;
+        if ((st = project_block(o, v, a, m, o->s, lo, hi, NULL, 0))) return st;
     }
     fit_feet_range(o, v, 0, &lo, &hi);
     o->s[0] = lo;
@@ -148,11 +149,17 @@ int fit_feet_distances(fit_objective *o, const double *x, double *dist, double *
     if (st) return st;
     fit_feet_range(o, v, 0, &lo, &hi);
     double *sig = o->s_next;
-    for (size_t i = 0; i < o->n; i++) sig[i] = fmin(fmax(o->s[i], lo), hi);
+    /* the points the last evaluation, at this x, found at rest keep its distances and
+     * feet (fit_objective.c) */
+    const int keep = o->rest_ok && o->rest == dist && o->rest_foot == foot &&
+                     !memcmp(o->rest_x, x, sizeof(double) * (size_t)o->map.nx);
+    for (size_t i = 0; i < o->n; i++)
+        sig[i] = keep && !isnan(dist[i]) ? foot[i] : fmin(fmax(o->s[i], lo), hi);
     for (size_t a = 0; a < o->n; a += FIT_BLOCK) {
         const size_t m = o->n - a < FIT_BLOCK ? o->n - a : FIT_BLOCK;
-        if ((st = project_block(o, v, a, m, sig, lo, hi, dist))) return st;
+        if ((st = project_block(o, v, a, m, sig, lo, hi, dist, keep))) return st;
     }
+    o->rest_ok = 0;
     for (size_t i = 0; i < o->n; i++) {
         foot[i] = fabs(sig[i]);
         if (side) side[i] = o->map.ncurves == 2 && sig[i] >= 0.0;

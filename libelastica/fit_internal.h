@@ -127,6 +127,18 @@ typedef struct fit_objective {
      * (an earlier guess's) at its recent rate within its remaining iterations
      * (fit_lm.c); HUGE_VAL (fit_objective_init): never */
     double f_ceiling;
+    /* Levenberg-Marquardt stops once a Gauss-Newton step would lower f by less than
+     * lm_tol of itself (fit_lm.c; fit_objective_init: 1e-13, the certificate) */
+    double lm_tol;
+    /* smooth orthogonal, one curve: the reported distances' and feet's arrays (n each,
+     * may be NULL), holding after each evaluation the signed distance and the moved foot
+     * of every point whose foot that evaluation found at rest within [0, L] (a Newton
+     * step below 1e-7 L, fit_feet_distances' test), distance NaN for the others; rest_x:
+     * the variables it was at, rest_ok: set by a completed evaluation, cleared by other
+     * writers of the arrays. fit_feet_distances at rest_x takes those points as they are
+     * (the report after the fit: one evaluation of every point fewer) */
+    double *rest, *rest_foot, rest_x[FIT_MAXX];
+    int rest_ok;
     size_t split;                /* discrete keyline: the data index of the joint */
     double *work;                /* block buffers */
     /* discrete orthogonal: the polygon (2n), distances and feet (n each) of the last

@@ -109,7 +109,7 @@ int fit_lm(fit_objective *o, const double *x0, int max_iter, fit_solution *sol)
             (recent[iters % LM_RATE_SPAN] - val.f) / LM_RATE_SPAN * (max_iter - iters) < val.f - o->f_ceiling)
             break;
         recent[iters % LM_RATE_SPAN] = val.f;
-        if (fit_first_order(&val, nx, 1e-13) || !(val.f > FIT_EXACT_F)) {
+        if (fit_first_order(&val, nx, o->lm_tol) || !(val.f > FIT_EXACT_F)) {
             /* with lazy feet the certificate needs feet at rest: moved by u < 1e-6 in the
              * evaluation (whose rows are those of the moved feet), they are the nearest
              * points to O(kappa u^2) ~ 1e-12, and the gradient is off by that relative to

@@ -53,6 +53,7 @@ int fit_objective_init(fit_objective *o, int kind, const fit_map *map, const dou
     o->kind = kind; o->map = *map; o->n = n; o->xy = xy;
     o->cx = cx; o->cy = cy; o->sc = sc; o->t = t;
     o->f_ceiling = HUGE_VAL;
+    o->lm_tol = 1e-13;
     const int feet = map->model == FIT_SMOOTH;
     o->work = malloc(sizeof(double) * (W_SIZE + (feet ? 2 * n : 0)));
     if (!o->work) return EL_ENOMEM;
@@ -337,6 +338,7 @@ typedef struct ortho_block {
     const size_t *idx;
     const unsigned char *end;
     double lo, hi;           /* the foot's range on this curve */
+    double *rest;            /* o->rest (one curve) or NULL */
 } ortho_block;
 
 static int ortho_rows(fit_objective *o, const ortho_block *b, int want, double *col, double *res,
@@ -353,6 +355,7 @@ static int ortho_rows(fit_objective *o, const ortho_block *b, int want, double *
         point(o, b->idx[i], P);
         const double gx = xy[2 * i], gy = xy[2 * i + 1], dx = gx - P[0], dy = gy - P[1];
         s_new[i] = b->s[i];
+        if (b->rest) b->rest[b->idx[i]] = NAN;
         if (b->end[i]) {
             *f += dx * dx + dy * dy;
             if (want) {
@@ -380,6 +383,11 @@ static int ortho_rows(fit_objective *o, const ortho_block *b, int want, double *
             d2 = a * a + c * c;
             s_new[i] = b->s[i] + u;
             o->last_move = fmax(o->last_move, fabs(u));
+            if (b->rest && fabs(u) <= 1e-7 * (b->v[6] + 1e-300) && s_new[i] >= 0.0 && s_new[i] <= b->v[6]) {
+                const double d = sqrt(d2);
+                b->rest[b->idx[i]] = c > 0.0 ? -d : d;    /* as project_block's */
+                o->rest_foot[b->idx[i]] = s_new[i];
+            }
             /* the row of the moved foot: its residual c, its normal N turned by kappa u
              * (to first order N - kappa u T), so that f, g and H describe the same point */
             r = c;
@@ -477,7 +485,7 @@ static int smooth_orthogonal(fit_objective *o, const double *v, int want, sums *
             s[i] = g == 0 ? 0.0 : g == o->n - 1 ? L
                  : fit_clamp(o->s[g] + foot_shift(o, 0, o->s[g]), lo, hi);
         }
-        ortho_block b = {v, m, s, idx, end, lo, hi};
+        ortho_block b = {v, m, s, idx, end, lo, hi, o->rest_foot ? o->rest : NULL};
         int rows = 0;
         if ((st = ortho_rows(o, &b, want, col, res, &rows, f, o->s_next + a))) return st;
         if (want) fold(S, col, 2 * FIT_BLOCK, res, rows);
@@ -519,7 +527,7 @@ static int keyline_smooth(fit_objective *o, double v[2][FIT_NP], int want, sums 
             }
             if (cnt == 0) continue;
             /* no lower clamp: a foot passing the joint continues on the other curve */
-            ortho_block b = {v[c], cnt, s, idx, end, -HUGE_VAL, far};
+            ortho_block b = {v[c], cnt, s, idx, end, -HUGE_VAL, far, NULL};
             int rows = 0;
             if ((st = ortho_rows(o, &b, want, col, res, &rows, f, snew))) return st;
             if (want) fold(&S[c], col, 2 * FIT_BLOCK, res, rows);
@@ -558,7 +566,10 @@ int fit_objective_eval(fit_objective *o, const double *x, int want_normal, fit_v
     } else if (o->kind == FIT_PAIRED) {
         st = smooth_paired(o, v[0], want_normal, &S[0], &f);
     } else {
+        o->rest_ok = 0;
+        memcpy(o->rest_x, x, sizeof(double) * (size_t)nx);
         st = smooth_orthogonal(o, v[0], want_normal, &S[0], &f);
+        o->rest_ok = !st && o->rest && o->rest_foot;
     }
     if (st) return st;
     const double inv = 1.0 / (double)o->n;

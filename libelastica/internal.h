@@ -86,7 +86,8 @@ int el__jacobi_eval_mod(const el__modulus *mod, double u, el_jacobi *val, el_jac
  *   el__walk_values(&wk, count, u, val, dk);   the next count points (call repeatedly);
  * with n < WALK_MIN_POINTS every point gets a fresh el__jacobi_eval_mod (setup would
  * cost more). dk[count] only when with_dk. Statuses: those of el__jacobi_eval_mod. */
-enum { WALK_PLAIN, WALK_GRID, WALK_ANCHORED, WALK_MIN_POINTS = 8 };
+enum { WALK_PLAIN, WALK_GRID, WALK_ANCHORED, WALK_MIN_POINTS = 8,
+       WALK_RESEED = 32 /* addition steps from a fresh evaluation, at most (jacobi_walk.c) */ };
 typedef struct el__walk {
     el__modulus mod;
     double k, kappa;           /* k >= 0 and max(1, k) */
@@ -95,9 +96,10 @@ typedef struct el__walk {
     size_t next;
     el_jacobi zstep, zstepk, cur, curk;
     double H, ua;              /* anchor spacing; where the anchors' fresh evaluation is */
-    int ja, steps;             /* current anchor (index from ua), steps since fresh; -1: none */
+    int jlo, jhi;              /* the anchors ua + j H computed, jlo <= j <= jhi; jlo > jhi: none */
     int have_hstep, have_series;
-    el_jacobi hstep[2], hstepk[2], anc, anck;
+    /* anchor j at [WALK_RESEED + j], |j| <= WALK_RESEED */
+    el_jacobi hstep[2], hstepk[2], anc[2 * WALK_RESEED + 1], anck[2 * WALK_RESEED + 1];
     double ser[8][6];          /* Maclaurin coefficients of sn cn dn D and their k-derivatives */
 } el__walk;
 int el__walk_init(el__walk *wk, double k, int with_dk, size_t n);

@@ -25,17 +25,21 @@
  * - a grid u_i = u0 + z i with x = max(1, k)|z| <= X_GRID: one step per point (the
  *   discrete elastica's vertices, sampling grids);
  * - any u_i (any order; fast when sorted): anchors spaced H = X_ANCHOR / max(1, k)
- *   are reached by steps of H from a fresh evaluation, and each u_i from its
- *   nearest anchor by a step over |delta| <= H/2 whose sn, cn, dn, D come from
- *   their Maclaurin series (offset_series). A point farther than MAX_JUMP anchors,
- *   or past RESEED steps, gets a fresh evaluation: work per point stays O(1).
- *   Grids with larger steps take this walk too.
+ *   are reached by steps of H outwards from a fresh evaluation (anchor j by |j|
+ *   steps), and each u_i from its nearest anchor by a step over |delta| <= H/2 whose
+ *   sn, cn, dn, D come from their Maclaurin series (offset_series). The anchors are
+ *   kept, so points going back and forth (the feet of noisy points along a curve:
+ *   nearly sorted) reuse them instead of stepping again (measured: the orthogonal
+ *   fit's feet took a fresh evaluation every 4 points when each return to an anchor
+ *   was a step). A point more than RESEED anchors from the fresh evaluation, or more
+ *   than MAX_JUMP past the anchors computed, gets a fresh evaluation: work per point
+ *   stays O(1). Grids with larger steps take this walk too.
  */
 #include "internal.h"
 
 enum {
-    RESEED = 32,  /* addition steps after a fresh evaluation, at most */
-    MAX_JUMP = 16 /* anchors stepped over before a fresh evaluation is cheaper */
+    RESEED = WALK_RESEED, /* addition steps after a fresh evaluation, at most */
+    MAX_JUMP = 16         /* anchors stepped over before a fresh evaluation is cheaper */
 };
 #define X_GRID 0.1          /* grids step by the theorem when max(1, k)|z| <= X_GRID */
 #define X_ANCHOR (1.0 / 16) /* anchor spacing max(1, k) H: offsets max(1, k)|delta| <= 1/32 */
@@ -177,7 +181,8 @@ int el__walk_init(el__walk *wk, double k, int with_dk, size_t n)
     wk->kappa = k > 1.0 ? k : 1.0;
     wk->mode = n < WALK_MIN_POINTS ? WALK_PLAIN : WALK_ANCHORED;
     wk->from_grid = 0;
-    wk->steps = -1; /* no anchor yet */
+    wk->jlo = 1; /* no anchor yet */
+    wk->jhi = 0;
     wk->have_hstep = wk->have_series = 0;
     wk->H = X_ANCHOR / wk->kappa;
     return EL_OK;
@@ -214,39 +219,39 @@ static int hstep_init(el__walk *wk)
 /* Values at one arbitrary u from the nearest anchor (or a fresh evaluation). */
 static int anchored(el__walk *wk, double u, el_jacobi *val, el_jacobi *vk)
 {
-    el_jacobi *ak = vk ? &wk->anck : NULL;
     const double d = u - wk->ua; /* exact near the anchors (Sterbenz) */
     const double dj = d / wk->H;
     int st;
-    if (wk->steps < 0 || !(fabs(dj - wk->ja) <= MAX_JUMP + 0.5) ||
-        wk->steps + fabs(dj - wk->ja) > RESEED - 0.5) {
-        if ((st = fresh(wk, u, &wk->anc, &wk->anck))) return st;
+    if (wk->jlo > wk->jhi || !(fabs(dj) <= RESEED - 0.5) ||
+        dj > wk->jhi + MAX_JUMP + 0.5 || dj < wk->jlo - MAX_JUMP - 0.5) {
+        el_jacobi *a = &wk->anc[RESEED], *a_k = &wk->anck[RESEED];
+        if ((st = fresh(wk, u, a, a_k))) return st;
         wk->ua = u;
-        wk->ja = 0;
-        wk->steps = 0;
-        *val = wk->anc;
-        if (vk) *vk = wk->anck;
+        wk->jlo = wk->jhi = 0;
+        *val = *a;
+        if (vk) *vk = *a_k;
         return EL_OK;
     }
     const int j = (int)nearbyint(dj);
-    if (j != wk->ja && !wk->have_hstep && (st = hstep_init(wk))) return st;
-    while (wk->ja != j) {
-        const int dir = wk->ja < j ? 0 : 1; /* a step of +H or of -H */
-        const el_jacobi a = wk->anc, a_k = wk->anck;
-        add_step(wk->k, &a, &a_k, &wk->hstep[dir], &wk->hstepk[dir], &wk->anc, ak);
-        wk->ja += dir ? -1 : 1;
-        wk->steps++;
-    }
+    if ((j > wk->jhi || j < wk->jlo) && !wk->have_hstep && (st = hstep_init(wk))) return st;
+    el_jacobi *anc = wk->anc + RESEED, *anck = wk->anck + RESEED;
+    const int with_dk = wk->with_dk;
+    for (; wk->jhi < j; wk->jhi++)
+        add_step(wk->k, &anc[wk->jhi], &anck[wk->jhi], &wk->hstep[0], &wk->hstepk[0], &anc[wk->jhi + 1],
+                 with_dk ? &anck[wk->jhi + 1] : NULL);
+    for (; wk->jlo > j; wk->jlo--)
+        add_step(wk->k, &anc[wk->jlo], &anck[wk->jlo], &wk->hstep[1], &wk->hstepk[1], &anc[wk->jlo - 1],
+                 with_dk ? &anck[wk->jlo - 1] : NULL);
     const double delta = d - j * wk->H;
     if (delta == 0.0) {
-        *val = wk->anc;
-        if (vk) *vk = wk->anck;
+        *val = anc[j];
+        if (vk) *vk = anck[j];
         return EL_OK;
     }
     if (!wk->have_series) offset_series_init(wk);
     el_jacobi b, bk;
     offset_series(wk, delta, &b, vk ? &bk : NULL);
-    add_step(wk->k, &wk->anc, ak, &b, &bk, val, vk);
+    add_step(wk->k, &anc[j], &anck[j], &b, &bk, val, vk);
     return EL_OK;
 }
 
@@ -271,10 +276,47 @@ static int grid_values(el__walk *wk, size_t count, el_jacobi *val, el_jacobi *vk
     return EL_OK;
 }
 
+/* The order in which the anchored walk visits the m <= SORT_CHUNK points u: by
+ * increasing u, unless u is monotone already (insertion sort: nearly sorted points
+ * cost a few moves each). Feet of noisy points on a curve passing close to itself
+ * alternate between two stretches of it (measured: 7,600 fresh evaluations for
+ * 10,000 points of one bench curve in data order, 2 per chunk sorted). */
+enum { SORT_CHUNK = 64 };
+
+static int visit_order(const double *u, size_t m, unsigned char *order)
+{
+    int up = 1, down = 1;
+    for (size_t i = 1; i < m; i++) {
+        up &= u[i] >= u[i - 1];
+        down &= u[i] <= u[i - 1];
+    }
+    if (up || down) return 0;
+    for (size_t i = 0; i < m; i++) {
+        size_t j = i;
+        for (; j > 0 && u[order[j - 1]] > u[i]; j--) order[j] = order[j - 1];
+        order[j] = (unsigned char)i;
+    }
+    return 1;
+}
+
 int el__walk_values(el__walk *wk, size_t count, const double *u, el_jacobi *val, el_jacobi *dk)
 {
     el_jacobi *vk = wk->with_dk ? dk : NULL;
     if (wk->mode == WALK_GRID) return grid_values(wk, count, val, vk);
+    if (wk->mode == WALK_ANCHORED && !wk->from_grid) {
+        for (size_t a = 0; a < count; a += SORT_CHUNK) {
+            const size_t m = count - a < SORT_CHUNK ? count - a : SORT_CHUNK;
+            unsigned char order[SORT_CHUNK];
+            const int sorted = visit_order(u + a, m, order);
+            for (size_t r = 0; r < m; r++) {
+                const size_t i = a + (sorted ? order[r] : r);
+                int st = anchored(wk, u[i], &val[i], vk ? &vk[i] : NULL);
+                if (st) return st;
+            }
+        }
+        wk->next += count;
+        return EL_OK;
+    }
     for (size_t i = 0; i < count; i++, wk->next++) {
         const double ui = wk->from_grid ? wk->u0 + wk->z * (double)wk->next : u[i];
         int st = wk->mode == WALK_PLAIN ? fresh(wk, ui, &val[i], vk ? &vk[i] : NULL)

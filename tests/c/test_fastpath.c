@@ -107,12 +107,18 @@ static void smooth_matches_pointwise(const el_smooth_params *p, size_t n, const 
     }
 }
 
-typedef enum { GRID, SORTED, UNSORTED } layout;
+/* FEET: the feet of noisy points on a curve passing close to itself, the order the
+ * orthogonal fit evaluates (jacobi_walk.c's chunk sort and kept anchors): a grid
+ * jittered by up to 4 steps, every other sample from a stretch half the length on */
+typedef enum { GRID, SORTED, UNSORTED, FEET } layout;
 
 static void fill_samples(layout how, size_t n, double length, unsigned long long *rng, double *s)
 {
     for (size_t i = 0; i < n; i++)
-        s[i] = how == GRID ? length * (double)i / (double)(n - 1) : test_uniform(rng, -0.05 * length, length);
+        s[i] = how == GRID ? length * (double)i / (double)(n - 1)
+             : how == FEET ? fmod(length * ((double)i + test_uniform(rng, -4.0, 4.0)) / (double)(n - 1) +
+                                  (i % 2 ? 0.5 * length : 0.0), length)
+             : test_uniform(rng, -0.05 * length, length);
     if (how == SORTED) /* insertion sort: n is small */
         for (size_t i = 1; i < n; i++) {
             const double x = s[i];
@@ -165,6 +171,8 @@ END_TEST
 START_TEST(sorted_scattered_matches_pointwise_dense) { random_curves("sorted, dense", SORTED, 40, 500, NMAX, 0xd0dULL); }
 END_TEST
 START_TEST(unsorted_matches_pointwise) { random_curves("unsorted", UNSORTED, 200, 2, 600, 0xa11ULL); }
+END_TEST
+START_TEST(feet_order_matches_pointwise) { random_curves("feet order", FEET, 40, 500, NMAX, 0xfee7ULL); }
 END_TEST
 
 START_TEST(walks_match_pointwise_across_k_equal_1_at_every_step)
@@ -386,6 +394,7 @@ int main(void)
     tcase_add_test(sm, sorted_scattered_matches_pointwise_sparse);
     tcase_add_test(sm, sorted_scattered_matches_pointwise_dense);
     tcase_add_test(sm, unsorted_matches_pointwise);
+    tcase_add_test(sm, feet_order_matches_pointwise);
     tcase_add_test(sm, walks_match_pointwise_across_k_equal_1_at_every_step);
     tcase_add_test(sm, walks_match_pointwise_at_extreme_scales);
     tcase_add_test(sm, smooth_positions_match_quadrature_of_angle);

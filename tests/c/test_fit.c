@@ -600,6 +600,62 @@ START_TEST(test_orthogonal_distances_and_feet)
 }
 END_TEST
 
+/* The distances an orthogonal fit reports (most taken from its last evaluation, whose
+ * feet were at rest: fit_feet_distances) against a fresh measurement: Newton's method
+ * from the reported foot by one-point evaluations, and the nearest of 20001 samples of
+ * the fitted curve; noisy points (1 % of the length) on an arc and on a loop passing
+ * close to itself, 1000 points each. */
+START_TEST(test_reported_distances_match_a_fresh_projection)
+{
+    enum { N = 1000, M = 20001 };
+    static double xy[2 * N], s[N], dist[N], foot[N], d2[N], f2[N], cs[M], cxy[2 * M];
+    const el_smooth_params curves[2] = {{0.5, -1.0, 0.3, 1.2, 0.7, 0.4, 4.0}, {0.0, 0.0, 1.0, 1.0, 3.0, 0.2, 2.9}};
+    unsigned long long rng = 0x0f007ULL;
+    for (int c = 0; c < 2; c++) {
+        const el_smooth_params p = curves[c];
+        for (size_t i = 0; i < N; i++) s[i] = p.length * (double)i / (double)(N - 1);
+        ck_assert_int_eq(el_smooth_eval(&p, N, s, xy, NULL, NULL), EL_OK);
+        for (size_t i = 0; i < 2 * N; i++) xy[i] += 0.01 * p.length * test_uniform(&rng, -1.0, 1.0);
+        el_fit_smooth_result r, r2;
+        ck_assert_int_eq(el_fit_smooth(xy, N, NULL, NULL, &r, dist, foot), EL_OK);
+        ck_assert_int_eq(el_fit_smooth(xy, N, NULL, NULL, &r2, NULL, NULL), EL_OK);
+        ck_assert(r.rms == r2.rms && r.max_error == r2.max_error);
+        ck_assert_int_eq(el_fit_smooth(xy, N, NULL, NULL, &r2, d2, f2), EL_OK);
+        const el_smooth_params *q = &r.params;
+        const double L = q->length;
+        for (size_t j = 0; j < M; j++) cs[j] = L * (double)j / (double)(M - 1);
+        ck_assert_int_eq(el_smooth_eval(q, M, cs, cxy, NULL, NULL), EL_OK);
+        double s2 = 0.0;
+        for (size_t i = 0; i < N; i++) {
+            ck_assert(dist[i] == d2[i] && foot[i] == f2[i]);
+            const double *P = xy + 2 * i;
+            double u = foot[i], g[2], th, ka;
+            for (int it = 0; it < 50; it++) {
+                ck_assert_int_eq(el_smooth_eval(q, 1, &u, g, &th, &ka), EL_OK);
+                const double t = cos(th) * (g[0] - P[0]) + sin(th) * (g[1] - P[1]);
+                const double e = cos(th) * (g[1] - P[1]) - sin(th) * (g[0] - P[0]);
+                const double un = fmin(fmax(u - t / fmax(1.0 + ka * e, 0.25), 0.0), L);
+                if (fabs(un - u) <= 1e-15 * L) break;
+                u = un;
+            }
+            ck_assert_int_eq(el_smooth_eval(q, 1, &u, g, &th, NULL), EL_OK);
+            const double fresh = hypot(P[0] - g[0], P[1] - g[1]);
+            const double side = cos(th) * (P[1] - g[1]) - sin(th) * (P[0] - g[0]);     /* + left */
+            ck_assert_msg(fabs(side) <= 1e-12 * L || (side > 0.0) == (dist[i] > 0.0), "curve %d point %zu: side", c, i);
+            ck_assert_msg(fabs(fabs(dist[i]) - fresh) <= 1e-12 * L, "curve %d point %zu: %.17g reported, %.17g fresh",
+                          c, i, fabs(dist[i]), fresh);
+            ck_assert_msg(fabs(foot[i] - u) <= 1e-7 * L, "curve %d point %zu: foot %.17g, fresh %.17g", c, i, foot[i], u);
+            double dmin = HUGE_VAL;
+            for (size_t j = 0; j < M; j++) dmin = fmin(dmin, hypot(P[0] - cxy[2 * j], P[1] - cxy[2 * j + 1]));
+            ck_assert_msg(fabs(dist[i]) <= dmin * (1.0 + 1e-12), "curve %d point %zu: %g reported, a sample at %g",
+                          c, i, fabs(dist[i]), dmin);
+            s2 += dist[i] * dist[i];
+        }
+        ck_assert_close(r.rms, sqrt(s2 / (double)N), 1e-14);
+    }
+}
+END_TEST
+
 /* The keyline: one G2 curve from the C API; split out of range and options it does not
  * take are refused. */
 START_TEST(test_keyline_joint)
@@ -698,6 +754,7 @@ static Suite *suite(void)
     tcase_add_test(tc, test_pinning);
     tcase_add_test(tc, test_scale_invariance);
     tcase_add_test(tc, test_bad_input);
+    tcase_add_test(tc, test_reported_distances_match_a_fresh_projection);
     tcase_add_test(tc, test_collinear);
     tcase_add_test(tc, test_degenerate_shapes);
     tcase_add_test(tc, test_maxiter_best_seen);
