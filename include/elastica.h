@@ -401,11 +401,12 @@ typedef struct el_fit_smooth_result {
  * result (noisy data whose decrease stalls, reported as EL_OK once Ipopt's acceptable
  * level is reached), or opt->limited_memory. Work: a few Jacobian evaluations, O(n)
  * each, per candidate; with limited_memory up to opt->max_iter Ipopt iterations per
- * candidate (each ~3 ms for small n: MUMPS's fixed cost on this machine's Debian 12).
- * Memory: O(n) for the result's distances, the Jacobian is never stored. Thread safety: concurrent fits run at once; only
- * their Ipopt solves are serialised by a process-wide lock (Debian's MUMPS, Ipopt's
- * linear solver, is not reentrant). Ipopt reads no options file (an ipopt.opt in the
- * working directory is ignored) and prints nothing.
+ * candidate (each ~3 ms for small n: the fixed cost of Debian 12's MUMPS). Memory:
+ * O(n) for the result's distances, the Jacobian is never stored. Thread safety:
+ * concurrent fits run at once; only their Ipopt solves are serialised by a
+ * process-wide lock (Debian's MUMPS, Ipopt's linear solver, is not reentrant). Ipopt
+ * reads no options file (an ipopt.opt in the working directory is ignored) and
+ * prints nothing.
  * distances, foot_s (caller-sized, n each, may be NULL): each point's signed distance
  * to the polygon of the vertices (+ = left of it) and its foot as arc length along it
  * from vertex 0, input units; rms and max_error are computed from them.
