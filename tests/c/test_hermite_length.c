@@ -128,6 +128,34 @@ START_TEST(length_mode_keeps_every_solution_of_a_dense_search)
 }
 END_TEST
 
+/* Two problems on which a predictor bent by the curvature of C (tried, reverted) lost a
+ * solution the tangent predictor finds: each must be among the default search's. */
+START_TEST(length_mode_finds_the_solutions_a_bent_predictor_lost)
+{
+    static const struct { double t0[2], p1[2], t1[2], L, kappa0; } c[] = {
+        {{-0.9433357022868173, 0.3318399505650836}, {-0.13508320774073157, 0.8983932114742208},
+         {-0.8795856187463392, -0.47574062186723093}, 0.9377606206039135, -261.372},
+        {{0.9625991261748987, 0.2709297368088661}, {0.02669966619449493, -0.35492759650842043},
+         {0.6336738751081974, -0.7736002973146796}, 0.3960371201913676, -33.875},
+    };
+    for (size_t i = 0; i < sizeof c / sizeof c[0]; i++) {
+        const double p0[2] = {0.0, 0.0};
+        el_hermite_options o;
+        el_hermite_options_defaults(&o);
+        o.mode = EL_HERMITE_LENGTH;
+        o.length = c[i].L;
+        el_hermite_result r;
+        ck_assert_int_eq(el_hermite_solve(p0, c[i].t0, c[i].p1, c[i].t1, &o, &r), EL_OK);
+        int found = 0;
+        for (size_t j = 0; j < r.count; j++)
+            found |= fabs(r.solutions[j].kappa0 - c[i].kappa0) < 1e-3 * fabs(c[i].kappa0) &&
+                     fabs(r.solutions[j].length - c[i].L) < 1e-9 * c[i].L;
+        el_hermite_result_free(&r);
+        ck_assert_msg(found, "problem %zu: no solution with kappa0 %g", i, c[i].kappa0);
+    }
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("hermite_length");
@@ -135,6 +163,7 @@ int main(void)
     tcase_set_timeout(tc, 300);
     tcase_add_test(tc, length_mode_sigma_bound_holds_for_tension_solutions);
     tcase_add_test(tc, length_mode_keeps_every_solution_of_a_dense_search);
+    tcase_add_test(tc, length_mode_finds_the_solutions_a_bent_predictor_lost);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }
