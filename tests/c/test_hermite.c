@@ -432,12 +432,15 @@ END_TEST
  * one-piece curves within 1e-7 of |k| = 1 to tol in length mode near the chord; it uses
  * one finite-difference Jacobian per polish (a chord method). On these 60 problems the
  * former Newton with a new Jacobian per step returned 235 solutions, 30 of them one
- * piece within 1e-7 of |k| = 1 (137 chains); without any polish 229, 1 and 176. */
+ * piece within 1e-7 of |k| = 1 (137 chains); without any polish 229, 1 and 176 (all
+ * three with a tracer whose predictor was bent by the curvature of C; the tangent
+ * predictor, which finds 9 more solutions in 8000 random length problems, finds one
+ * fewer here: 234). */
 START_TEST(polish_keeps_near_separatrix_curves_in_one_piece)
 {
     size_t c[3] = {0, 0, 0};
     solve_near_the_chord(4242, 60, 1.3, c);
-    ck_assert_uint_ge(c[0], 235);
+    ck_assert_uint_ge(c[0], 234);
     ck_assert_uint_ge(c[2], 30);
     fprintf(stderr, "polish_keeps_near_separatrix_curves_in_one_piece: %zu solutions, %zu one piece near |k| = 1\n",
             c[0], c[2]);
