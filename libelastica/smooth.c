@@ -111,6 +111,27 @@ static int walk_start(const el_smooth_params *p, size_t n, const double *s, cons
     return st ? EL_EDOM : EL_OK; /* inputs are checked: only overflow fails here */
 }
 
+/* The Jacobi values at the block's points u (and their k-derivatives if vk). A point
+ * at the base u = q itself (s = 0: the start of every end-residual check) takes the
+ * base point's values when each point gets a fresh evaluation anyway (WALK_PLAIN):
+ * the same evaluation, so the same values, one evaluation fewer. (The other walks
+ * step from point to point: skipping one would change their path.) */
+static int block_values(el__walk *wk, size_t nb, const double *u, double q, const el_jacobi *base,
+                        const el_jacobi *base_dk, el_jacobi *v, el_jacobi *vk)
+{
+    if (wk->mode != WALK_PLAIN) return el__walk_values(wk, nb, u, v, vk);
+    for (size_t j = 0; j < nb; j++) {
+        if (u[j] == q) {
+            v[j] = *base;
+            if (vk) vk[j] = *base_dk;
+            continue;
+        }
+        const int st = el__walk_values(wk, 1, u + j, v + j, vk ? vk + j : NULL);
+        if (st) return st;
+    }
+    return EL_OK;
+}
+
 int el_smooth_eval(const el_smooth_params *p, size_t n, const double *s,
                    double *xy, double *theta, double *kappa)
 {
@@ -127,7 +148,7 @@ int el_smooth_eval(const el_smooth_params *p, size_t n, const double *s,
         double u[BLOCK];
         el_jacobi v[BLOCK];
         for (size_t j = 0; j < nb; j++) u[j] = w * s[i0 + j] + p->q;
-        if ((st = el__walk_values(&wk, nb, u, v, NULL))) break;
+        if ((st = block_values(&wk, nb, u, p->q, &b, NULL, v, NULL))) break;
         for (size_t j = 0; j < nb; j++) {
             const size_t i = i0 + j;
             if (xy) {
@@ -174,7 +195,7 @@ int el_smooth_jacobian(const el_smooth_params *p, size_t n, const double *s,
         double u[BLOCK];
         el_jacobi v[BLOCK], vk[BLOCK];
         for (size_t j = 0; j < nb; j++) u[j] = w * s[i0 + j] + p->q;
-        if ((st = el__walk_values(&wk, nb, u, v, vk))) break;
+        if ((st = block_values(&wk, nb, u, p->q, &b, &bk, v, vk))) break;
         for (size_t j = 0; j < nb; j++) {
             const size_t i = i0 + j;
             const double si = s[i];

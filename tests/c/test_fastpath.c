@@ -13,6 +13,7 @@
  * sqrt(mu) L >> 1 + |q|); the walks add at most 32 addition steps of rounding (the
  * bound in jacobi_walk.c), so TOL_ROUNDINGS = 64 of them are allowed. */
 #include "testutil.h"
+#include "internal.h" /* WALK_MIN_POINTS: fewer samples get a fresh evaluation each */
 #include <float.h>
 #include <stdio.h>
 #include <string.h>
@@ -221,6 +222,37 @@ START_TEST(walks_match_pointwise_at_extreme_scales)
 }
 END_TEST
 
+/* s = 0 in a few-point call (the end-residual checks: s = {0, L}) takes the values
+ * of the base point u = q instead of evaluating there again (smooth.c): the start,
+ * its tangent and curvature must be those of el_jacobi_eval at q, sparse and with
+ * other samples before and after it, k across 1 and beyond. */
+START_TEST(start_sample_takes_the_base_point_values)
+{
+    unsigned long long rng = 0x5ba5eULL;
+    for (int t = 0; t < 600; t++) {
+        el_smooth_params p = {test_uniform(&rng, -3, 3), test_uniform(&rng, -3, 3), test_uniform(&rng, -3, 3),
+                              pow(10.0, test_uniform(&rng, -4, 4)), special_k(t, &rng), test_uniform(&rng, -5, 5),
+                              test_uniform(&rng, 0.5, 60)};
+        const size_t n = 1 + (size_t)(t % (WALK_MIN_POINTS - 1)), i0 = (size_t)t % n;
+        double s[WALK_MIN_POINTS], xy[2 * WALK_MIN_POINTS], th[WALK_MIN_POINTS], ka[WALK_MIN_POINTS];
+        for (size_t i = 0; i < n; i++) s[i] = p.length * ((double)i - (double)i0) / (double)n;
+        require(el_smooth_eval(&p, n, s, xy, th, ka) == EL_OK, "evaluation failed");
+        el_jacobi v;
+        ck_assert_int_eq(el_jacobi_eval(p.q, fabs(p.k), &v, NULL, NULL), EL_OK);
+        const double w = sqrt(p.mu), k = p.k, e = 4.0 * DBL_EPSILON;
+        require(xy[2 * i0] == p.x0 && xy[2 * i0 + 1] == p.y0, "start (%.17g, %.17g) is not (x0, y0)",
+                xy[2 * i0], xy[2 * i0 + 1]);
+        require(fabs(ka[i0] - 2.0 * k * w * v.cn) <= e * fabs(k) * w, "kappa(0) = %.17g, not %.17g", ka[i0],
+                2.0 * k * w * v.cn);
+        /* the tangent in the frame rotated by phi: (1 - 2 k^2 sn^2, 2 k sn dn) */
+        const double c = 1.0 - 2.0 * k * k * v.sn * v.sn, sn2 = 2.0 * k * v.sn * v.dn;
+        const double et = e * (1.0 + fabs(p.phi) + fabs(th[i0]) + k * k);   /* theta - phi rounded */
+        require(fabs(cos(th[i0] - p.phi) - c) <= et && fabs(sin(th[i0] - p.phi) - sn2) <= et,
+                "theta(0) = %.17g off the tangent at q (k = %.17g)", th[i0], k);
+    }
+}
+END_TEST
+
 /* Gauss-Legendre nodes and weights on [-1, 1], 8 points */
 static const double GL_X[8] = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290, -0.1834346424956498,
                                0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
@@ -398,6 +430,7 @@ int main(void)
     tcase_add_test(sm, walks_match_pointwise_across_k_equal_1_at_every_step);
     tcase_add_test(sm, walks_match_pointwise_at_extreme_scales);
     tcase_add_test(sm, smooth_positions_match_quadrature_of_angle);
+    tcase_add_test(sm, start_sample_takes_the_base_point_values);
     tcase_add_test(d, discrete_walk_matches_pointwise_dense_and_sparse);
     suite_add_tcase(s, sm);
     suite_add_tcase(s, d);
