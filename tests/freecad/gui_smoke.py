@@ -12,7 +12,7 @@ tests/freecad/freecad.mk: the Elastica workbench used as a user would.
 
 Screenshots (whole window, 3D view included) stay in $ELASTICA_TEST_OUT
 (build/freecad/): gui_demo.png, gui_blend_panel.png (a G2 blend by length, its
-guide ducks), gui_fit_panel.png, gui_fit_ends.png, gui_spline_g2.png (a G2 start),
+guide ducks), gui_fit_panel.png, gui_fit_ends.png (its warning line), gui_spline_g2.png (a G2 start),
 gui_spline_panel.png, gui_ellblend_panel.png (its warning line), gui_g2quad_panel.png,
 gui_comb_panel.png. The outcome goes
 to gui_smoke.result (first line PASS or FAIL); FreeCAD is then ended with os._exit
@@ -539,6 +539,10 @@ def fit_panel_ends(doc, f, lines):
           f"{lines.Label}.Edge1" and t.cross(line.tangentAt(0)).Length < 1e-9 and
           (e.valueAt(e.LastParameter) - f.DataPoints[-1]).Length < 1e-9,
           f"fit: start tangent from a picked edge, end pinned ({f.Status})")
+    # the line is 0.1 rad off the exact data's start: the warning line says what it costs
+    check(f.Warnings and panel.warning[0].isVisible() and "Start tangent" in
+          panel.warning[1].text() and f"{f.FreeRms:.3g} mm" in panel.warning[1].text() and
+          f.Rms > 2 * f.FreeRms, f"fit: the end conditions' cost on the warning line ({f.Warnings})")
     f.ViewObject.ShowResiduals = True
     view = Gui.ActiveDocument.ActiveView
     view.setCameraOrientation(f.Plane.Rotation)
@@ -560,6 +564,7 @@ def fit_panel_ends(doc, f, lines):
           abs(f.Shape.Length - shape.Length) < 1e-12,
           "fit: a start curvature the model cannot meet: the panel names it, the shape stays "
           f"({f.Status})")
+    check(not panel.warning[0].isVisible(), "fit: no warning line beside an error")
     panel.reject()
     pump()
     after = (f.Model, f.SplitAtInflection, f.PinEnd, f.StartTangent, round(f.Rms, 12),

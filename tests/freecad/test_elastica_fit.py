@@ -469,6 +469,30 @@ class FitConstraintTest(unittest.TestCase):
             if model == "smooth":           # the elastica itself, not only its B-spline
                 self.assertLess(abs(curve.curvature([0.0])[0]), 1e-9)
 
+    def test_end_conditions_that_cost_accuracy_are_warned_with_the_free_rms(self):
+        """A start curvature 4 times the data's own (0.05 against 0.012 1/mm) is met by a
+        smooth fit whose rms is 9 mm against 0.29 mm with free ends: the feature says so
+        (Warnings, naming the field, with both figures) and keeps the free-ended fit's
+        rms in FreeRms; one near the data's own is not warned of; without end
+        conditions FreeRms is -1."""
+        free = self._fit("smooth")
+        self.assertEqual((free.FreeRms, list(free.Warnings)), (-1.0, []))
+        near = self._fit("smooth", UseStartCurvature=True, StartCurvature=0.0105)
+        self.assertEqual(list(near.Warnings), [])
+        self.assertAlmostEqual(near.FreeRms, free.Rms, delta=1e-9 * free.Rms)
+        far = self._fit("smooth", UseStartCurvature=True, StartCurvature=0.05)
+        self.assertAlmostEqual(far.FreeRms, free.Rms, delta=1e-9 * free.Rms)
+        self.assertGreater(far.Rms, 2.0 * far.FreeRms)
+        self.assertEqual(len(far.Warnings), 1, list(far.Warnings))
+        w = far.Warnings[0]
+        self.assertIn("Start curvature", w)
+        self.assertIn(f"{far.FreeRms:.3g} mm", w)
+        self.assertIn(f"{far.Rms:.3g} mm", w)
+        # freed again: the warning goes
+        far.UseStartCurvature = False
+        self.doc.recompute()
+        self.assertEqual((far.FreeRms, list(far.Warnings)), (-1.0, []))
+
     def test_all_end_conditions_at_once(self):
         f = self._fit("smooth", PinStart=True, PinEnd=True, StartTangent=(self.lines, ["Edge1"]),
                       EndTangent=(self.lines, ["Edge2"]))

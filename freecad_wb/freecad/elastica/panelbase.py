@@ -167,8 +167,9 @@ class Panel:
         return w
 
     def warnings(self):
-        """What the warning line says (a list of sentences; none: hidden)."""
-        return []
+        """What the warning line says (a list of sentences; none: hidden): the
+        feature's Warnings, capitalised."""
+        return [w[0].upper() + w[1:] for w in getattr(self.obj, "Warnings", [])]
 
     def number(self, grid, label, prop, lo, hi, step, unit, tip, decade=False, when=None):
         """A spin box bound live to the float property prop."""

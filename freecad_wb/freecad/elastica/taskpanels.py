@@ -47,6 +47,7 @@ class FitPanel(Panel):
                                 "inflection (seed 000 §5); its ends stay free")
         r = self.box("Result")
         self.row(r, "", self.result)
+        self.warning_row(r)             # end conditions that cost accuracy
         vo = o.ViewObject
         self.show_data = self.check(r, "Show the fitted points", "ShowData",
                                     "Markers at the points the fit used", target=vo)
@@ -408,9 +409,6 @@ class EllipticBlendPanel(Panel):
                 f"{o.Condition:.3g}: the curve {hull} the hull of its control points"
                 + (f"<br>control points {o.Spread:.3g} times as far apart as the points"
                    if o.Mode == "interpolate" else ""))
-
-    def warnings(self):
-        return [w[0].upper() + w[1:] for w in self.obj.Warnings]
 
 
 class G2QuadPanel(Panel):
