@@ -200,6 +200,22 @@ static int switch_to(tracer *T, const cpt *spec, double U, double V, cpt *p)
     return EL_OK;
 }
 
+/* The point p of a separatrix chart in the separatrix chart replacing the other base
+ * coordinate, into *q (EL_OK). */
+static int sep_other(tracer *T, const cpt *p, cpt *q)
+{
+    double scale, c[2];
+    const double d = sep_dist(p, &scale);
+    for (int i = 0; i < 2; i++) c[i] = asinh(base_coord(T->pr, p->base, i, &p->st, p->sigma));
+    const int nfi = 1 - p->fi;
+    cpt sep = *p;
+    sep.fi = nfi;
+    sep.w = base_coord(T->pr, p->base, nfi, &p->st, p->sigma);
+    sep.wg[0] = sep.wg[1] = NAN;
+    const double Y = log(fabs(d)) / SEP_SCALE;
+    return cpt_eval(T, &sep, nfi ? c[0] : Y, nfi ? Y : c[1], q);
+}
+
 static int rechart(tracer *T, cpt *p)
 {
     const hprob *pr = T->pr;
@@ -219,16 +235,10 @@ static int rechart(tracer *T, cpt *p)
          * (chain rule; no evaluation in the base chart needed): the other one past 2 */
         const double ratio = fabs(p->wg[1 - fi]) / sqrt(1.0 + p->w * p->w);
         if (!(ratio > 2.0)) return EL_OK;
-        const int nfi = 1 - fi;
-        cpt sep = *p, b2;
-        sep.fi = nfi;
-        sep.w = base_coord(pr, p->base, nfi, &p->st, p->sigma);
-        sep.wg[0] = sep.wg[1] = NAN;
-        const double Y = log(fabs(d)) / SEP_SCALE;
-        const int rc = cpt_eval(T, &sep, nfi ? c[0] : Y, nfi ? Y : c[1], &b2);
-        if (rc == EL_EMAXITER) return rc;
-        if (!rc) *p = b2;
-        return EL_OK;
+        cpt q;
+        const int rc = sep_other(T, p, &q);
+        if (!rc) *p = q;
+        return rc == EL_EMAXITER ? rc : EL_OK;
     }
     if (p->sigma > 0.0 && fabs(d) < 1e-3 * scale && d != 0.0) {
         cpt sep = *p, q;
@@ -259,6 +269,58 @@ static int rechart(tracer *T, cpt *p)
     return EL_OK;
 }
 
+/* Same point of the curvature-data surface (same tension, kappa0, kappa0'). */
+static int same_hstate(double s1, const hstate *a, double s2, const hstate *b)
+{
+    if (a->has_sep && b->has_sep && !(fabs(a->sep - b->sep) <= 1e-6 * fabs(a->sep))) return 0;
+    return fabs(s1 - s2) <= 1e-9 * (1.0 + fabs(s1)) &&
+           fabs(a->k0 - b->k0) <= 1e-8 * (1.0 + fabs(a->k0)) &&
+           fabs(a->k0p - b->k0p) <= 1e-8 * (1.0 + fabs(a->k0p));
+}
+
+static int same_state(const cpt *a, const cpt *b) { return same_hstate(a->sigma, &a->st, b->sigma, &b->st); }
+
+/* The charts of point p other than its own, k = 0 .. NALT - 1: in case 1 the separatrix
+ * charts (either coordinate replaced; near the separatrix) and the plain chart over the
+ * other base of X and K1, then the separatrix chart replacing the other coordinate and
+ * the plain base chart of p's own base. EL_OK with the point there in *alt when the
+ * chart exists and gives p's state back, else EL_EDOM (or EL_EMAXITER). */
+#define NALT 5
+static int alt_chart(tracer *T, const cpt *p, int k, cpt *alt)
+{
+    const hprob *pr = T->pr;
+    double scale;
+    const double d = sep_dist(p, &scale);
+    const int near_sep = p->sigma > 0.0 && d != 0.0 && fabs(d) <= 1e-2 * scale;
+    int base = p->base, b = p->b, rc;
+    if (k < 3) {
+        if (pr->hcase != 1) return EL_EDOM;
+        if (base == HCHART_X) {
+            base = HCHART_K1;
+            b = 2.0 * (pr->P2 * pr->V1 * pr->P1 + pr->P2 * pr->P2 * pr->V2) * p->st.k0 + 2.0 * pr->P2 * pr->V1 >= 0.0 ? 0 : 1;
+        } else {
+            base = HCHART_X;
+            b = pr->P2 * p->st.k1 + pr->V1 >= 0.0 ? 0 : 1;
+        }
+    } else if (p->chart != CHART_SEP) {
+        return EL_EDOM;
+    }
+    cpt c = chart_spec(base, b);
+    double u[2];
+    for (int i = 0; i < 2; i++) u[i] = asinh(base_coord(pr, base, i, &p->st, p->sigma));
+    if (k == 0 || k == 1 || k == 3) {
+        const int fi = k == 3 ? 1 - p->fi : k;
+        if (!near_sep) return EL_EDOM;
+        c.chart = CHART_SEP;
+        c.fi = fi;
+        c.side = d > 0.0 ? 1 : -1;
+        c.w = base_coord(pr, base, fi, &p->st, p->sigma);
+        u[fi] = log(fabs(d)) / SEP_SCALE;
+    }
+    if ((rc = cpt_eval(T, &c, u[0], u[1], alt))) return rc == EL_EMAXITER ? rc : EL_EDOM;
+    return same_state(alt, p) ? EL_OK : EL_EDOM;
+}
+
 /* The point's coordinates in the chart of q (for orienting q's tangent). */
 static void coords_in(const hprob *pr, const cpt *p, const cpt *q, double *U, double *V)
 {
@@ -274,10 +336,17 @@ static void coords_in(const hprob *pr, const cpt *p, const cpt *q, double *U, do
 
 /* Newton on (f, G - target) (G: L, or t when which = 1) from the evaluated point *r,
  * steps at most span long and damped to decrease |f| + |G - target|. */
+#define NEWTON2_STALLS 4
+static int converged2(const cpt *r, int which, double target, double scale)
+{
+    return fabs(r->st.f) <= 1e-11 && fabs((which ? r->t : r->st.L) - target) <= 1e-11 * scale;
+}
+
 static int newton2(tracer *T, int which, double target, double span, cpt *r)
 {
     const double scale = fmax(1.0, fabs(target));
-    for (int it = 0; it < 12; it++) {
+    int stalls = 0;
+    for (int it = 0; it < 12 + NEWTON2_STALLS; it++) {
         const double *G = which ? r->tg : r->Lg;
         const double res0 = r->st.f, res1 = (which ? r->t : r->st.L) - target;
         if (fabs(res0) <= 1e-14 && fabs(res1) <= 1e-14 * scale) return EL_OK;
@@ -286,20 +355,29 @@ static int newton2(tracer *T, int which, double target, double span, cpt *r)
         double d0 = -(G[1] * res0 - r->fg[1] * res1) / det, d1 = -(-G[0] * res0 + r->fg[0] * res1) / det;
         const double n = hypot(d0, d1);
         if (n > span) { d0 *= span / n; d1 *= span / n; }
-        cpt s;
-        int ok = 0;
+        cpt s, full;
+        int ok = 0, full_ok = 0;
         for (int h = 0; h < 6 && !ok; h++, d0 *= 0.5, d1 *= 0.5) {
             const int rc = cpt_eval(T, r, r->U + d0, r->V + d1, &s);
             if (rc == EL_EMAXITER) return rc;
             if (rc) continue;
+            if (h == 0) { full = s; full_ok = 1; }
             const double r0 = s.st.f, r1 = (which ? s.t : s.st.L) - target;
             ok = fabs(r0) + fabs(r1) / scale < fabs(res0) + fabs(res1) / scale;
         }
-        if (!ok) break;
+        if (!ok) {
+            /* no step decreases the residual: at its rounding level (high tension, sigma L
+             * large against f), which lies near the tolerance; there (residuals below 1e-9)
+             * the full Newton steps, each a fresh draw of the rounding, a few more times (a
+             * solution at sigma 3574 was lost at |f| = 4e-11) */
+            if (converged2(r, which, target, scale) || !full_ok || stalls++ >= NEWTON2_STALLS ||
+                !(fabs(res0) <= 1e-9 && fabs(res1) <= 1e-9 * scale))
+                break;
+            s = full;
+        }
         *r = s;
     }
-    return fabs(r->st.f) <= 1e-11 && fabs((which ? r->t : r->st.L) - target) <= 1e-11 * scale
-               ? EL_OK : EL_ENOCONV;
+    return converged2(r, which, target, scale) ? EL_OK : EL_ENOCONV;
 }
 
 /* The point of the step p -> q of C where G (L, or t when which = 1) is target: Newton
@@ -322,17 +400,6 @@ static int cross(tracer *T, const cpt *p, const cpt *q, int which, double target
     }
     return rc;
 }
-
-/* Same point of the curvature-data surface (same tension, kappa0, kappa0'). */
-static int same_hstate(double s1, const hstate *a, double s2, const hstate *b)
-{
-    if (a->has_sep && b->has_sep && !(fabs(a->sep - b->sep) <= 1e-6 * fabs(a->sep))) return 0;
-    return fabs(s1 - s2) <= 1e-9 * (1.0 + fabs(s1)) &&
-           fabs(a->k0 - b->k0) <= 1e-8 * (1.0 + fabs(a->k0)) &&
-           fabs(a->k0p - b->k0p) <= 1e-8 * (1.0 + fabs(a->k0p));
-}
-
-static int same_state(const cpt *a, const cpt *b) { return same_hstate(a->sigma, &a->st, b->sigma, &b->st); }
 
 static int push_solution(tracer *T, const cpt *r)
 {
@@ -480,12 +547,17 @@ static int step_events(tracer *T, int origin, const cpt *p, const double tp[2], 
  * crossings of L = Lt hides in one long step (0.7 missed two of the 3528 solutions of
  * 1000 random problems; the cost is 0.3 % more evaluations) */
 #define LRATIO 0.35
+/* A step shorter than FOLD_H whose evaluation fails: the point's other charts are tried,
+ * at most CHART_FALLBACKS times per trace */
+#define FOLD_H 1e-2
+#define CHART_FALLBACKS 8
 /* Follow C from seed number origin in the direction dir (+-1 along its tangent). */
 static int trace(tracer *T, int origin, double dir)
 {
     const double hmin = 1e-7, hmax = 1.5;
-    cpt p = T->seed[origin];
+    cpt p = T->seed[origin], prev;
     double tau[2], h = 0.3;
+    int have_prev = 0, fallbacks = 0;
     tangent(&p, -dir * p.fg[1], dir * p.fg[0], tau);
     for (int step = 0; step < TRACE_STEPS;) {
         const double pU = p.U + h * tau[0], pV = p.V + h * tau[1];   /* predictor */
@@ -513,6 +585,34 @@ static int trace(tracer *T, int origin, double dir)
         }
         if (!ok) {
             h *= 0.5;
+            /* a failed evaluation on a short step: the chart folds there (the x chart
+             * where the branches of (17) meet, a separatrix chart whose replaced
+             * coordinate turns back along ln(|F| - sigma) = y) while C goes on; the
+             * other charts of the point (alt_chart) are tried, the first that makes the
+             * step is kept (traces crawled to hmin there and lost the solutions beyond) */
+            if (rc && h < FOLD_H && have_prev && fallbacks < CHART_FALLBACKS) {
+                fallbacks++;
+                int found = 0;
+                for (int k = 0; k < NALT && !found; k++) {
+                    cpt alt, trial;
+                    double pu, pv, ta[2];
+                    int its2, r2 = alt_chart(T, &p, k, &alt);
+                    if (r2 == EL_EMAXITER) return r2;
+                    if (r2) continue;
+                    coords_in(T->pr, &prev, &alt, &pu, &pv);
+                    tangent(&alt, alt.U - pu, alt.V - pv, ta);
+                    r2 = cpt_eval(T, &alt, alt.U + FOLD_H * ta[0], alt.V + FOLD_H * ta[1], &trial);
+                    if (!r2) r2 = correct(T, &trial, TRACE_TOL, 4, &its2);
+                    if (r2 == EL_EMAXITER) return r2;
+                    if (r2) continue;
+                    p = alt;
+                    tau[0] = ta[0];
+                    tau[1] = ta[1];
+                    h = FOLD_H;
+                    found = 1;
+                }
+                if (found) continue;
+            }
             if (h < hmin) return EL_OK;                 /* C ends (or is not smooth) here */
             continue;
         }
@@ -523,7 +623,8 @@ static int trace(tracer *T, int origin, double dir)
          * unbounded length near sigma = 0 (F -> 0, a straight line's limit) */
         if (closed || q.t < T->tlo || q.t > T->thi || (q.st.L > T->long_curves * T->Lt && q.st.L > p.st.L))
             return EL_OK;
-        const cpt prev = p;
+        prev = p;
+        have_prev = 1;
         p = q;
         if ((rc = rechart(T, &p))) return rc == EL_EMAXITER ? rc : EL_OK;
         double pu, pv;
