@@ -14,7 +14,9 @@
  * a singular one) or where it closes on itself; a seed a trace passes is not traced
  * again. The coordinates are asinh of the chart's (hermite_objective.c): (x, sigma),
  * in case 1 (kappa1, sigma) where the two branches of (17) meet (the x chart folds
- * there), and in case 3 (kappa0, kappa0').
+ * there), and in case 3 (kappa0, kappa0'); near the separatrix one of them is replaced
+ * by ln(|F| - sigma). Where a step fails in its chart at any length, the trace goes on
+ * in another chart of the same point.
  *
  * What this misses: a piece of C that crosses no seed line (a closed curve, or one
  * whose both ends are singular states, between two lines), and a solution where C
@@ -44,6 +46,11 @@ static void sigma_range(double Lt, double *lo, double *hi)
 /* The tension the search reaches (header: the same as tension mode's range; beyond it
  * the solutions lie closer to the separatrix than the separatrix chart reaches). */
 #define SIGMA_MAX 1e5
+/* Traces follow C up to the bound (sigma_range) or SIGMA_TRACE_MAX: a solution just
+ * beyond SIGMA_MAX on a curve that leaves the range with L still above Lt (at
+ * L / |p1 - p0| = 1.033, sigma |p1 - p0|^2 = 1.07e5; test_hermite_length.c) is found
+ * whatever the step that passes SIGMA_MAX. */
+#define SIGMA_TRACE_MAX 1e6
 /* the work limit: objective evaluations of the tracing (the bench problems need at
  * most ~5000; beyond it the solutions found so far are returned with EL_EMAXITER) */
 #define MAX_EVALS 100000
@@ -65,7 +72,7 @@ typedef struct {
 
 typedef struct {
     const hprob *pr;
-    double Lt, tlo, thi;
+    double Lt, tlo, thi, thi_trace;   /* t = asinh(sigma): seed lines in [tlo, thi]; traces end past thi_trace */
     cpt *seed;
     int nseed;
     char *visited;
@@ -380,6 +387,24 @@ static int newton2(tracer *T, int which, double target, double span, cpt *r)
     return converged2(r, which, target, scale) ? EL_OK : EL_ENOCONV;
 }
 
+/* newton2, and where it stops at its rounding level above the tolerance (residuals
+ * below 1e-8: a chart near its fold amplifies the rounding of the state, 3e-10 at
+ * sigma 9940 in a separatrix chart over x), newton2 again in the point's other charts. */
+static int newton2_charts(tracer *T, int which, double target, double span, cpt *r)
+{
+    int rc = newton2(T, which, target, span, r);
+    if (rc != EL_ENOCONV || !(fabs(r->st.f) <= 1e-8 && fabs((which ? r->t : r->st.L) - target) <= 1e-8 * fmax(1.0, fabs(target))))
+        return rc;
+    for (int k = 0; k < NALT; k++) {
+        cpt alt;
+        int r2 = alt_chart(T, r, k, &alt);
+        if (!r2) r2 = newton2(T, which, target, span, &alt);
+        if (r2 == EL_EMAXITER) return r2;
+        if (!r2) { *r = alt; return EL_OK; }
+    }
+    return rc;
+}
+
 /* The point of the step p -> q of C where G (L, or t when which = 1) is target: Newton
  * (newton2) from the linear interpolate, or, when p and q lie in different charts or
  * branches (C passed the fold of (17) within the step), from each end in its own. */
@@ -391,12 +416,12 @@ static int cross(tracer *T, const cpt *p, const cpt *q, int which, double target
     const int same = p->chart == q->chart && p->base == q->base && p->fi == q->fi && p->b == q->b && p->side == q->side;
     if (same) {
         const int rc = cpt_eval(T, q, p->U + w * dU, p->V + w * dV, r);
-        return rc ? rc : newton2(T, which, target, span, r);
+        return rc ? rc : newton2_charts(T, which, target, span, r);
     }
     int rc = EL_ENOCONV;
     for (int e = 0; e < 2 && rc && rc != EL_EMAXITER; e++) {
         *r = (w < 0.5) == (e == 0) ? *p : *q;
-        rc = newton2(T, which, target, span, r);
+        rc = newton2_charts(T, which, target, span, r);
     }
     return rc;
 }
@@ -417,14 +442,25 @@ static int same_chart(const cpt *a, const cpt *b)
 }
 
 /* Whether r, a point of C found from the step p -> q, lies on the step (Newton can
- * reach the neighbour of a close pair); a step across charts takes it as it is. */
-static int on_step(const cpt *p, const cpt *q, const cpt *r)
+ * reach the neighbour of a close pair): its projection on the chord within slack of
+ * [0, 1]; a step across charts takes it as it is. */
+static int on_step(const cpt *p, const cpt *q, const cpt *r, double slack)
 {
     const int same = p->chart == q->chart && p->base == q->base && p->fi == q->fi;
     const double dU = q->U - p->U, dV = q->V - p->V;
     const double lam = same && r->chart == p->chart && r->base == p->base && r->fi == p->fi
                            ? ((r->U - p->U) * dU + (r->V - p->V) * dV) / (dU * dU + dV * dV) : 0.5;
-    return lam >= -0.05 && lam <= 1.05;
+    return lam >= -slack && lam <= 1.0 + slack;
+}
+
+/* A solution r found from the step p -> q: kept (any point of C with L = Lt is a
+ * solution) where it lies near the step; 1 in *inside when it lies on the step itself,
+ * the crossing the step brackets (one just beyond an end is the neighbour of a close
+ * pair, and the bracketed one is still to be found). */
+static int keep_crossing(tracer *T, const cpt *p, const cpt *q, const cpt *r, int *inside)
+{
+    *inside = on_step(p, q, r, 1e-6);
+    return on_step(p, q, r, 0.05) ? push_solution(T, r) : EL_OK;
 }
 
 /* The solutions L = Lt on the step p -> q of C (both in one chart; tp, tq the unit
@@ -441,15 +477,17 @@ static int length_crossings(tracer *T, const cpt *p, const double tp[2], const c
     if (a * b <= 0.0) {
         rc = cross(T, p, q, 0, T->Lt, &r);
         if (rc == EL_EMAXITER) return rc;
-        /* accepted if it lies on the step (Newton can reach the neighbour of a close pair) */
-        if (rc == EL_OK && on_step(p, q, &r)) return push_solution(T, &r);
+        int inside = 0;
+        if (rc == EL_OK && (rc = keep_crossing(T, p, q, &r, &inside))) return rc;
+        if (inside) return EL_OK;
         /* Newton from the step's interpolate failed (off C where C bends away from its
-         * chord, say): from each end of the step, points of C */
+         * chord, say) or reached the neighbour: from each end of the step, points of C */
         for (int e = 0; e < 2 && same_chart(p, q); e++) {
             r = e ? *q : *p;
-            rc = newton2(T, 0, T->Lt, hypot(q->U - p->U, q->V - p->V) + 1e-12, &r);
+            rc = newton2_charts(T, 0, T->Lt, hypot(q->U - p->U, q->V - p->V) + 1e-12, &r);
             if (rc == EL_EMAXITER) return rc;
-            if (rc == EL_OK && on_step(p, q, &r)) return push_solution(T, &r);
+            if (rc == EL_OK && (rc = keep_crossing(T, p, q, &r, &inside))) return rc;
+            if (inside) return EL_OK;
         }
         /* still none (a long step, one across the branches of (17), or one that holds a
          * close pair): the point of C in the middle halves the bracket */
@@ -557,10 +595,14 @@ static int trace(tracer *T, int origin, double dir)
     const double hmin = 1e-7, hmax = 1.5;
     cpt p = T->seed[origin], prev;
     double tau[2], h = 0.3;
-    int have_prev = 0, fallbacks = 0;
+    int have_prev = 0, fallbacks = 0, have_kap = 0;
+    double kap[2] = {0.0, 0.0};
     tangent(&p, -dir * p.fg[1], dir * p.fg[0], tau);
     for (int step = 0; step < TRACE_STEPS;) {
-        const double pU = p.U + h * tau[0], pV = p.V + h * tau[1];   /* predictor */
+        /* predictor: along the tangent, bent by the curvature of C that the last step
+         * shows (its change of unit tangent over its length, same chart) */
+        const double bend = have_kap ? 0.5 * h * h : 0.0;
+        const double pU = p.U + h * tau[0] + bend * kap[0], pV = p.V + h * tau[1] + bend * kap[1];
         cpt q;
         int its = 0, rc = cpt_eval(T, &p, pU, pV, &q);
         if (rc == EL_EMAXITER) return rc;
@@ -621,7 +663,7 @@ static int trace(tracer *T, int origin, double dir)
         if ((rc = step_events(T, origin, &p, tau, &q, tq, &closed))) return rc;
         /* C leaves the sigma range of the solutions, closes, or runs to the curves of
          * unbounded length near sigma = 0 (F -> 0, a straight line's limit) */
-        if (closed || q.t < T->tlo || q.t > T->thi || (q.st.L > T->long_curves * T->Lt && q.st.L > p.st.L))
+        if (closed || q.t < T->tlo || q.t > T->thi_trace || (q.st.L > T->long_curves * T->Lt && q.st.L > p.st.L))
             return EL_OK;
         prev = p;
         have_prev = 1;
@@ -629,6 +671,12 @@ static int trace(tracer *T, int origin, double dir)
         if ((rc = rechart(T, &p))) return rc == EL_EMAXITER ? rc : EL_OK;
         double pu, pv;
         coords_in(T->pr, &prev, &p, &pu, &pv);
+        const double ds = hypot(q.U - prev.U, q.V - prev.V);
+        have_kap = same_chart(&p, &q) && same_chart(&prev, &q) && ds > 0.0;
+        if (have_kap) {
+            kap[0] = (tq[0] - tau[0]) / ds;
+            kap[1] = (tq[1] - tau[1]) / ds;
+        }
         tangent(&p, p.U - pu, p.V - pv, tau);
         if (cosang > 0.98 && its <= 2) h = fmin(1.5 * h, hmax);
     }
@@ -723,6 +771,7 @@ static int solve_length(hprob *pr, double Lt, int nl, int ns, double long_curves
     T.Lt = Lt;
     T.tlo = asinh(slo);
     T.thi = asinh(fmin(shi, SIGMA_MAX));
+    T.thi_trace = asinh(fmin(shi, SIGMA_TRACE_MAX));
     T.out = out;
     T.max_evals = MAX_EVALS;
     T.long_curves = long_curves;

@@ -129,8 +129,11 @@ START_TEST(length_mode_keeps_every_solution_of_a_dense_search)
 }
 END_TEST
 
-/* Two problems on which a predictor bent by the curvature of C (tried, reverted) lost a
- * solution the tangent predictor finds: each must be among the default search's. */
+/* Two problems on which the predictor bent by the curvature of C lost a solution the
+ * tangent predictor found, when first tried (the step's crossing Newton reached the
+ * neighbour of a close pair and took it for the bracketed one; a trace left the range
+ * at SIGMA_MAX on a step that ended just before the crossing): each must be among the
+ * default search's. */
 START_TEST(length_mode_finds_the_solutions_a_bent_predictor_lost)
 {
     static const struct { double t0[2], p1[2], t1[2], L, kappa0; } c[] = {
