@@ -542,13 +542,62 @@ static int length_crossings(tracer *T, const cpt *p, const double tp[2], const c
     return EL_OK;
 }
 
+/* Whether seed s is near the crossing of its line by the step p -> q, the state linearly
+ * interpolated to the line (far from the seed, no need for the exact crossing). */
+static int near_crossing(const cpt *p, const cpt *q, const cpt *s)
+{
+    const double w = (s->t - p->t) / (q->t - p->t);
+    const double k0 = p->st.k0 + w * (q->st.k0 - p->st.k0), k0p = p->st.k0p + w * (q->st.k0p - p->st.k0p);
+    return fabs(k0 - s->st.k0) <= 0.1 * (1.0 + fabs(s->st.k0) + fabs(q->st.k0 - p->st.k0)) &&
+           fabs(k0p - s->st.k0p) <= 0.1 * (1.0 + fabs(s->st.k0p) + fabs(q->st.k0p - p->st.k0p));
+}
+
+/* The seed the step p -> q (one chart, unit tangents tp, tq, in which t is the coordinate
+ * V) crosses on the line t = ts, without evaluations: the cubic Hermite interpolant of
+ * the step meets the line at U; the crossing is one of the line's seeds (all the tension
+ * solutions there), so where exactly one seed near the crossing (near_crossing) lies
+ * within 1 % of the step's length of U, all others (visited or not) farther than the
+ * step's length, and all in the step's chart, it is that one (the interpolant's error
+ * is below 1e-3 of the step in 97 % of 41 000 crossings, above 0.1 in 1). The seed's
+ * number, or -1 where that does not decide (then Newton does, step_events). */
+static int seed_by_interpolation(const tracer *T, const cpt *p, const double tp[2], const cpt *q,
+                                 const double tq[2], double ts)
+{
+    const int t_is_V = p->chart == HCHART_X || p->chart == HCHART_K1 ||
+                       (p->chart == CHART_SEP && p->fi == 0 && p->base != HCHART_C3);
+    if (!t_is_V || !same_chart(p, q) || !(q->V != p->V)) return -1;
+    const double D = hypot(q->U - p->U, q->V - p->V);
+    double x = (ts - p->V) / (q->V - p->V);
+    for (int it = 0; it < 30; it++) {   /* V(x) = ts by Newton: V is the cubic of x below */
+        const double V = (2 * x * x * x - 3 * x * x + 1) * p->V + (x * x * x - 2 * x * x + x) * D * tp[1] +
+                         (-2 * x * x * x + 3 * x * x) * q->V + (x * x * x - x * x) * D * tq[1] - ts;
+        const double dV = (6 * x * x - 6 * x) * (p->V - q->V) + (3 * x * x - 4 * x + 1) * D * tp[1] +
+                          (3 * x * x - 2 * x) * D * tq[1];
+        if (!(fabs(dV) > 0.0)) return -1;
+        x -= V / dV;
+    }
+    if (!(x >= 0.0 && x <= 1.0)) return -1;
+    const double U = (2 * x * x * x - 3 * x * x + 1) * p->U + (x * x * x - 2 * x * x + x) * D * tp[0] +
+                     (-2 * x * x * x + 3 * x * x) * q->U + (x * x * x - x * x) * D * tq[0];
+    int best = -1, close = 0;
+    for (int j = 0; j < T->nseed; j++) {
+        const cpt *s = &T->seed[j];
+        if (fabs(s->t - ts) > 1e-12 * (1.0 + fabs(ts)) || !near_crossing(p, q, s)) continue;
+        if (!same_chart(s, p)) return -1;
+        const double d = fabs(s->U - U);
+        if (d < D) close++;
+        if (d <= 0.01 * D) best = j;
+    }
+    return close == 1 ? best : -1;
+}
+
 /* The events of an accepted step p -> q (unit tangents tp, tq): solutions (L = Lt),
  * seed lines crossed (seeds on C are marked visited; the trace's own seed means C
  * closed: *closed = 1). */
 static int step_events(tracer *T, int origin, const cpt *p, const double tp[2], const cpt *q,
                        const double tq[2], int *closed)
 {
-    int rc, have = 0, rcr = EL_OK;
+    int rc, have = 0, rcr = EL_OK, fast = -1;
     double tr = NAN;
     cpt r;
     if ((rc = length_crossings(T, p, tp, q, tq, 6))) return rc;
@@ -557,20 +606,17 @@ static int step_events(tracer *T, int origin, const cpt *p, const double tp[2], 
         /* strictly crossed (the trace starts on its own seed's line) */
         if ((T->visited[i] && i != origin) || !((p->t - s->t) * (q->t - s->t) < 0.0 || q->t == s->t))
             continue;
-        /* the state interpolated to the line: far from the seed, no need for the exact crossing */
-        const double w = (s->t - p->t) / (q->t - p->t);
-        const double k0 = p->st.k0 + w * (q->st.k0 - p->st.k0), k0p = p->st.k0p + w * (q->st.k0p - p->st.k0p);
-        if (fabs(k0 - s->st.k0) > 0.1 * (1.0 + fabs(s->st.k0) + fabs(q->st.k0 - p->st.k0)) ||
-            fabs(k0p - s->st.k0p) > 0.1 * (1.0 + fabs(s->st.k0p) + fabs(q->st.k0p - p->st.k0p)))
-            continue;
-        /* the crossing of the line, once for the seeds of one line */
+        if (!near_crossing(p, q, s)) continue;
+        /* the crossing of the line, once for the seeds of one line: by interpolation
+         * where that decides, else by Newton */
         if (!have || fabs(s->t - tr) > 1e-12 * (1.0 + fabs(tr))) {
-            rcr = cross(T, p, q, 1, s->t, &r);
-            if (rcr == EL_EMAXITER) return rcr;
             have = 1;
             tr = s->t;
+            fast = seed_by_interpolation(T, p, tp, q, tq, s->t);
+            rcr = EL_OK;
+            if (fast < 0 && (rcr = cross(T, p, q, 1, s->t, &r)) == EL_EMAXITER) return rcr;
         }
-        if (rcr || !same_state(&r, s)) continue;
+        if (fast >= 0 ? fast != i : rcr || !same_state(&r, s)) continue;
         if (i == origin) *closed = 1;
         T->visited[i] = 1;
     }
