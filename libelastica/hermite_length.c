@@ -635,13 +635,18 @@ static int step_events(tracer *T, int origin, const cpt *p, const double tp[2], 
  * at most CHART_FALLBACKS times per trace */
 #define FOLD_H 1e-2
 #define CHART_FALLBACKS 8
+/* A trace that has taken CRAWL_STEPS steps in a row shorter than FOLD_H (no chart makes
+ * longer ones) ends: C runs into a state where it ends (kappa0 -> 0 on the separatrix,
+ * say), approached geometrically with L and sigma frozen; such traces ran on to
+ * TRACE_STEPS (up to 2000 evaluations each) and found nothing there. */
+#define CRAWL_STEPS 40
 /* Follow C from seed number origin in the direction dir (+-1 along its tangent). */
 static int trace(tracer *T, int origin, double dir)
 {
     const double hmin = 1e-7, hmax = 1.5;
     cpt p = T->seed[origin], prev;
     double tau[2], h = 0.3;
-    int have_prev = 0, fallbacks = 0, have_kap = 0;
+    int have_prev = 0, fallbacks = 0, have_kap = 0, crawl = 0;
     double kap[2] = {0.0, 0.0};
     tangent(&p, -dir * p.fg[1], dir * p.fg[0], tau);
     for (int step = 0; step < TRACE_STEPS;) {
@@ -705,11 +710,12 @@ static int trace(tracer *T, int origin, double dir)
             continue;
         }
         step++;
+        crawl = h < FOLD_H ? crawl + 1 : 0;
         int closed = 0;
         if ((rc = step_events(T, origin, &p, tau, &q, tq, &closed))) return rc;
         /* C leaves the sigma range of the solutions, closes, or runs to the curves of
          * unbounded length near sigma = 0 (F -> 0, a straight line's limit) */
-        if (closed || q.t < T->tlo || q.t > T->thi_trace || (q.st.L > T->long_curves * T->Lt && q.st.L > p.st.L))
+        if (closed || crawl > CRAWL_STEPS || q.t < T->tlo || q.t > T->thi_trace || (q.st.L > T->long_curves * T->Lt && q.st.L > p.st.L))
             return EL_OK;
         prev = p;
         have_prev = 1;
