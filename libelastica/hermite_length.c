@@ -78,6 +78,7 @@ typedef struct {
     char *visited;
     long evals, max_evals;
     double long_curves;   /* a trace ends where L passes long_curves Lt, increasing */
+    double line_power;    /* the seed lines' placement (seeds) */
     hrootlist *out;
 } tracer;
 
@@ -765,9 +766,12 @@ static int seed_point(tracer *T, const hroot *r, double sigma, cpt *s)
 
 /* The seed lines: every tension solution on nl lines over the sigma range in
  * t = asinh(sigma) (hermite_tension.c), ns samples each: both ends of the range and,
- * between them, lines closer towards its top (fraction 1 - (1 - j / (nl - 1))^1.5),
- * where pairs of solutions born between two lines cluster (curves with two loops near
- * the separatrix, sigma (Lt - 1)^2 near 128, and one loop near 32). */
+ * between them, lines at the fractions 1 - (1 - j / (nl - 1))^T->line_power of it. The
+ * top line is the one that matters most: it meets both arms of the curves that carry
+ * the pairs born near the top (two loops near the separatrix, sigma (Lt - 1)^2 near
+ * 128, one loop near 60); below it the lines are spread evenly, a little closer
+ * towards the bottom (LINE_POWER), where a tension solve is cheap (no separatrix
+ * pieces): a line at 0.72 of the range costs 3 times one at 0.16, the top one 10 times. */
 static int seeds(tracer *T, int nl, int ns)
 {
     const hprob *pr = T->pr;
@@ -775,7 +779,7 @@ static int seeds(tracer *T, int nl, int ns)
     int rc = EL_OK, cap = 0;
     for (int j = 0; j < nl && !rc; j++) {
         hprob q = *pr;
-        const double frac = nl == 1 ? 1.0 : 1.0 - pow(1.0 - (double)j / (nl - 1), 1.5);
+        const double frac = nl == 1 ? 1.0 : 1.0 - pow(1.0 - (double)j / (nl - 1), T->line_power);
         q.sigma = sinh(T->tlo + (T->thi - T->tlo) * frac);
         q.Lmin = 1.0;
         l.n = 0;
@@ -812,8 +816,15 @@ static int seeds(tracer *T, int nl, int ns)
  * evaluations. el__hermite_solve_length_thorough follows them to 10 Lt. */
 #define LONG_CURVES 3.0
 #define LONG_CURVES_THOROUGH 10.0
+/* The seed lines' placement (seeds): spread evenly, a little closer towards the bottom.
+ * Against the former 1.5 (closer towards the top): the same solutions on 7000 random
+ * problems (six kinds), 12 % fewer instructions on the bench's; the thorough search
+ * keeps 1.5 (its lines independent of the default's). */
+#define LINE_POWER 0.8
+#define LINE_POWER_THOROUGH 1.5
 
-static int solve_length(hprob *pr, double Lt, int nl, int ns, double long_curves, hrootlist *out)
+static int solve_length(hprob *pr, double Lt, int nl, int ns, double long_curves, double line_power,
+                        hrootlist *out)
 {
     double slo, shi;
     sigma_range(Lt, &slo, &shi);
@@ -827,6 +838,7 @@ static int solve_length(hprob *pr, double Lt, int nl, int ns, double long_curves
     T.out = out;
     T.max_evals = MAX_EVALS;
     T.long_curves = long_curves;
+    T.line_power = line_power;
     int rc = seeds(&T, nl, ns);
     for (int i = 0; i < T.nseed && !rc; i++) {
         if (T.visited[i]) continue;
@@ -843,10 +855,10 @@ static int solve_length(hprob *pr, double Lt, int nl, int ns, double long_curves
  * ns bracketing samples each. */
 int el__hermite_solve_length(hprob *pr, double Lt, int nl, int ns, hrootlist *out)
 {
-    return solve_length(pr, Lt, nl, ns, LONG_CURVES, out);
+    return solve_length(pr, Lt, nl, ns, LONG_CURVES, LINE_POWER, out);
 }
 
 int el__hermite_solve_length_thorough(hprob *pr, double Lt, int nl, int ns, hrootlist *out)
 {
-    return solve_length(pr, Lt, nl, ns, LONG_CURVES_THOROUGH, out);
+    return solve_length(pr, Lt, nl, ns, LONG_CURVES_THOROUGH, LINE_POWER_THOROUGH, out);
 }
