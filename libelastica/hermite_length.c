@@ -22,7 +22,7 @@
  * whose both ends are singular states, between two lines), and a solution where C
  * touches L = Lt without crossing it.
  */
-#include "hermite_internal.h"
+#include "hermite_length_internal.h"
 #include <stdlib.h>
 #include <string.h>
 
@@ -55,113 +55,6 @@ static void sigma_range(double Lt, double *lo, double *hi)
  * most ~5000; beyond it the solutions found so far are returned with EL_EMAXITER) */
 #define MAX_EVALS 100000
 
-/* A point of C in a chart (u, v; b): tracer coordinates (U, V) = (asinh u, asinh v),
- * t = asinh(sigma), the state, and the gradients of f, L and t in (U, V). In the
- * separatrix chart (chart = CHART_SEP over the chart base, on the side side of k = 1)
- * the base coordinate number fi is replaced by y / SEP_SCALE, y = ln|(|F| - sigma)|,
- * and w holds its value. */
-#define CHART_SEP 3
-#define SEP_SCALE 8.0
-typedef struct {
-    int chart, base, fi, side, b;
-    double U, V, w, sigma, t;
-    hstate st;
-    double fg[2], Lg[2], tg[2], sg[2];   /* sg: gradient of |F| - sigma */
-    double wg[2];                        /* separatrix chart: gradient of w */
-} cpt;
-
-typedef struct {
-    const hprob *pr;
-    double Lt, tlo, thi, thi_trace;   /* t = asinh(sigma): seed lines in [tlo, thi]; traces end past thi_trace */
-    cpt *seed;
-    int nseed;
-    char *visited;
-    long evals, max_evals;
-    double long_curves;   /* a trace ends where L passes long_curves Lt, increasing */
-    double line_power;    /* the seed lines' placement (seeds) */
-    hrootlist *out;
-} tracer;
-
-/* Evaluate the chart of `like` (chart, base, side, b; w as the separatrix chart's
- * starting guess) at (U, V) into *p. */
-static int cpt_eval(tracer *T, const cpt *like, double U, double V, cpt *p)
-{
-    hgrad g;
-    hstate st;
-    double sigma, w = like->w, c[2];
-    if (++T->evals > T->max_evals) return EL_EMAXITER;
-    int rc;
-    /* cosh from sinh (d asinh(u)/du = 1 / sqrt(1 + u^2)) */
-    if (like->chart == CHART_SEP) {
-        const int fi = like->fi;
-        /* the replaced coordinate extrapolated from like's as the starting guess */
-        if (isfinite(like->wg[0] + like->wg[1]))
-            w += like->wg[0] * (U - like->U) + like->wg[1] * (V - like->V);
-        const double y = SEP_SCALE * (fi ? V : U), other = sinh(fi ? U : V);
-        rc = el__hermite_sep_eval(T->pr, like->base, fi, like->b, like->side, y, other, 1.0, &w, &st, &g,
-                                  &sigma);
-        c[fi] = SEP_SCALE;
-        c[1 - fi] = sqrt(1.0 + other * other);
-    } else {
-        const double u = sinh(U), v = sinh(V);
-        rc = el__hermite_chart_eval(T->pr, like->chart, u, v, like->b, &st, &g, &sigma);
-        c[0] = sqrt(1.0 + u * u);
-        c[1] = sqrt(1.0 + v * v);
-    }
-    if (rc) return rc;
-    const double it = 1.0 / sqrt(1.0 + sigma * sigma);
-    p->chart = like->chart;
-    p->base = like->base;
-    p->fi = like->fi;
-    p->side = like->side;
-    p->sg[0] = g.sep[0] * c[0];
-    p->sg[1] = g.sep[1] * c[1];
-    p->wg[0] = like->chart == CHART_SEP ? g.w[0] * c[0] : NAN;
-    p->wg[1] = like->chart == CHART_SEP ? g.w[1] * c[1] : NAN;
-    p->b = like->b;
-    p->U = U;
-    p->V = V;
-    p->w = w;
-    p->sigma = sigma;
-    /* the charts X and K1 have t = asinh(sigma) as their coordinate V */
-    p->t = (like->chart == HCHART_X || like->chart == HCHART_K1) ? V
-           : like->chart == CHART_SEP && like->fi == 0 && like->base != HCHART_C3 ? V : asinh(sigma);
-    p->st = st;
-    for (int i = 0; i < 2; i++) {
-        p->fg[i] = g.f[i] * c[i];
-        p->Lg[i] = g.L[i] * c[i];
-        p->tg[i] = g.s[i] * c[i] * it;
-    }
-    return isfinite(p->fg[0] + p->fg[1] + p->Lg[0] + p->Lg[1]) ? EL_OK : EL_EDOM;
-}
-
-/* A chart without the separatrix replacement */
-static cpt chart_spec(int chart, int b)
-{
-    cpt c;
-    memset(&c, 0, sizeof c);
-    c.chart = c.base = chart;
-    c.b = b;
-    c.wg[0] = c.wg[1] = NAN;
-    return c;
-}
-
-/* |F| - sigma of a point, and |F| + sigma (its scale) */
-static double sep_dist(const cpt *p, double *scale)
-{
-    const double F1 = -2.0 * p->st.k0p, F2 = p->st.k0 * p->st.k0 - p->sigma, Fn = hypot(F1, F2);
-    *scale = Fn + fabs(p->sigma);
-    return p->st.has_sep ? p->st.sep : Fn - p->sigma;
-}
-
-/* Coordinate number i of a state in the chart `base` (raw, not asinh) */
-static double base_coord(const hprob *pr, int base, int i, const hstate *st, double sigma)
-{
-    if (base == HCHART_C3) return i ? st->k0p : st->k0;
-    if (i) return sigma;
-    return base == HCHART_K1 ? st->k1 : pr->hcase == 3 ? st->k0p : st->k0;
-}
-
 /* Newton steps along the gradient of f to the curve f = 0 (|f| below tol, or at a
  * distance |f| / |grad f| below 1e-13 where f is steep); at most maxit evaluations,
  * the count into *its. */
@@ -174,7 +67,7 @@ static int correct(tracer *T, cpt *q, double tol, int maxit, int *its)
         if (*its >= maxit) return EL_ENOCONV;
         const double c = q->st.f / g2;
         cpt n;
-        const int rc = cpt_eval(T, q, q->U - c * q->fg[0], q->V - c * q->fg[1], &n);
+        const int rc = el__hlen_eval(T, q, q->U - c * q->fg[0], q->V - c * q->fg[1], &n);
         if (rc) return rc;
         *q = n;
     }
@@ -187,159 +80,6 @@ static void tangent(const cpt *p, double d0, double d1, double tau[2])
     tau[0] = -p->fg[1] / n;
     tau[1] = p->fg[0] / n;
     if (tau[0] * d0 + tau[1] * d1 < 0.0) { tau[0] = -tau[0]; tau[1] = -tau[1]; }
-}
-
-/* The point re-expressed in the better conditioned chart (same state; EL_OK with *p
- * unchanged when it is already):
- * - near the separatrix (|F| - sigma below 1e-3 of |F| + sigma) where the objective
- *   depends on ln(|F| - sigma) (the curve passes near the saddle; |df/dy| >= 1e-6),
- *   the separatrix chart, there C follows the separatrix exponentially closely; back
- *   to the base chart above 1e-2, or where that dependence fades (C crosses k = 1);
- * - in case 1, K1 near the fold of X where the branches of (17) meet
- *   (|d asinh kappa1 / d asinh x| along a sigma line above 4; back to X below 1/4):
- *   (18) = a2 x^2 + a1 x + a0 = W^2, W = P2 kappa1 + V1, so dkappa1/dx = (2 a2 x + a1) / (2 P2 W). */
-/* *p re-expressed in the chart of spec at (U, V) if that works (else unchanged) */
-static int switch_to(tracer *T, const cpt *spec, double U, double V, cpt *p)
-{
-    cpt q;
-    const int rc = cpt_eval(T, spec, U, V, &q);
-    if (rc == EL_EMAXITER) return rc;
-    if (!rc) *p = q;
-    return EL_OK;
-}
-
-/* The point p of a separatrix chart in the separatrix chart replacing the other base
- * coordinate, into *q (EL_OK). */
-static int sep_other(tracer *T, const cpt *p, cpt *q)
-{
-    double scale, c[2];
-    const double d = sep_dist(p, &scale);
-    for (int i = 0; i < 2; i++) c[i] = asinh(base_coord(T->pr, p->base, i, &p->st, p->sigma));
-    const int nfi = 1 - p->fi;
-    cpt sep = *p;
-    sep.fi = nfi;
-    sep.w = base_coord(T->pr, p->base, nfi, &p->st, p->sigma);
-    sep.wg[0] = sep.wg[1] = NAN;
-    const double Y = log(fabs(d)) / SEP_SCALE;
-    return cpt_eval(T, &sep, nfi ? c[0] : Y, nfi ? Y : c[1], q);
-}
-
-static int rechart(tracer *T, cpt *p)
-{
-    const hprob *pr = T->pr;
-    double scale;
-    const double d = sep_dist(p, &scale);
-    if (p->chart == CHART_SEP) {
-        const int fi = p->fi;
-        const double fy = p->fg[fi] / SEP_SCALE;
-        cpt base = chart_spec(p->base, p->b);
-        double c[2];
-        for (int i = 0; i < 2; i++) c[i] = asinh(base_coord(pr, p->base, i, &p->st, p->sigma));
-        if (!(fabs(d) <= 1e-2 * scale && fabs(fy) >= 1e-7)) return switch_to(T, &base, c[0], c[1], p);
-        /* the replaced coordinate: the one |F| - sigma varies more along (the separatrix
-         * curve is a graph over the other there) in the base chart. |F| - sigma is a
-         * function of y alone here, so with A = asinh(w) = A(y, other') the ratio of its
-         * base gradient's components is |dA/dother'| = |dw/dother'| / sqrt(1 + w^2)
-         * (chain rule; no evaluation in the base chart needed): the other one past 2 */
-        const double ratio = fabs(p->wg[1 - fi]) / sqrt(1.0 + p->w * p->w);
-        if (!(ratio > 2.0)) return EL_OK;
-        cpt q;
-        const int rc = sep_other(T, p, &q);
-        if (!rc) *p = q;
-        return rc == EL_EMAXITER ? rc : EL_OK;
-    }
-    if (p->sigma > 0.0 && fabs(d) < 1e-3 * scale && d != 0.0) {
-        cpt sep = *p, q;
-        const int fi = fabs(p->sg[1]) > fabs(p->sg[0]);
-        sep.chart = CHART_SEP;
-        sep.base = p->chart;
-        sep.fi = fi;
-        sep.side = d > 0.0 ? 1 : -1;
-        sep.w = base_coord(pr, p->chart, fi, &p->st, p->sigma);
-        sep.wg[0] = sep.wg[1] = NAN;
-        const double Y = log(fabs(d)) / SEP_SCALE;
-        int rc = cpt_eval(T, &sep, fi ? p->U : Y, fi ? Y : p->V, &q);
-        if (rc == EL_EMAXITER) return rc;
-        if (!rc && fabs(q.fg[fi] / SEP_SCALE) >= 1e-6) { *p = q; return EL_OK; }
-    }
-    if (pr->hcase != 1) return EL_OK;
-    const double x = p->st.k0, k1 = p->st.k1, W = pr->P2 * k1 + pr->V1;
-    const double dd = 2.0 * (pr->P2 * pr->V1 * pr->P1 + pr->P2 * pr->P2 * pr->V2) * x + 2.0 * pr->P2 * pr->V1;
-    const double r = fabs(dd / (2.0 * pr->P2 * W)) * sqrt((1.0 + x * x) / (1.0 + k1 * k1));
-    if (p->chart == HCHART_X && r > 4.0) {
-        const cpt c = chart_spec(HCHART_K1, dd >= 0.0 ? 0 : 1);
-        return switch_to(T, &c, asinh(k1), p->V, p);
-    }
-    if (p->chart == HCHART_K1 && r < 0.25) {
-        const cpt c = chart_spec(HCHART_X, W >= 0.0 ? 0 : 1);
-        return switch_to(T, &c, asinh(x), p->V, p);
-    }
-    return EL_OK;
-}
-
-/* Same point of the curvature-data surface (same tension, kappa0, kappa0'). */
-static int same_hstate(double s1, const hstate *a, double s2, const hstate *b)
-{
-    if (a->has_sep && b->has_sep && !(fabs(a->sep - b->sep) <= 1e-6 * fabs(a->sep))) return 0;
-    return fabs(s1 - s2) <= 1e-9 * (1.0 + fabs(s1)) &&
-           fabs(a->k0 - b->k0) <= 1e-8 * (1.0 + fabs(a->k0)) &&
-           fabs(a->k0p - b->k0p) <= 1e-8 * (1.0 + fabs(a->k0p));
-}
-
-static int same_state(const cpt *a, const cpt *b) { return same_hstate(a->sigma, &a->st, b->sigma, &b->st); }
-
-/* The charts of point p other than its own, k = 0 .. NALT - 1: in case 1 the separatrix
- * charts (either coordinate replaced; near the separatrix) and the plain chart over the
- * other base of X and K1, then the separatrix chart replacing the other coordinate and
- * the plain base chart of p's own base. EL_OK with the point there in *alt when the
- * chart exists and gives p's state back, else EL_EDOM (or EL_EMAXITER). */
-#define NALT 5
-static int alt_chart(tracer *T, const cpt *p, int k, cpt *alt)
-{
-    const hprob *pr = T->pr;
-    double scale;
-    const double d = sep_dist(p, &scale);
-    const int near_sep = p->sigma > 0.0 && d != 0.0 && fabs(d) <= 1e-2 * scale;
-    int base = p->base, b = p->b, rc;
-    if (k < 3) {
-        if (pr->hcase != 1) return EL_EDOM;
-        if (base == HCHART_X) {
-            base = HCHART_K1;
-            b = 2.0 * (pr->P2 * pr->V1 * pr->P1 + pr->P2 * pr->P2 * pr->V2) * p->st.k0 + 2.0 * pr->P2 * pr->V1 >= 0.0 ? 0 : 1;
-        } else {
-            base = HCHART_X;
-            b = pr->P2 * p->st.k1 + pr->V1 >= 0.0 ? 0 : 1;
-        }
-    } else if (p->chart != CHART_SEP) {
-        return EL_EDOM;
-    }
-    cpt c = chart_spec(base, b);
-    double u[2];
-    for (int i = 0; i < 2; i++) u[i] = asinh(base_coord(pr, base, i, &p->st, p->sigma));
-    if (k == 0 || k == 1 || k == 3) {
-        const int fi = k == 3 ? 1 - p->fi : k;
-        if (!near_sep) return EL_EDOM;
-        c.chart = CHART_SEP;
-        c.fi = fi;
-        c.side = d > 0.0 ? 1 : -1;
-        c.w = base_coord(pr, base, fi, &p->st, p->sigma);
-        u[fi] = log(fabs(d)) / SEP_SCALE;
-    }
-    if ((rc = cpt_eval(T, &c, u[0], u[1], alt))) return rc == EL_EMAXITER ? rc : EL_EDOM;
-    return same_state(alt, p) ? EL_OK : EL_EDOM;
-}
-
-/* The point's coordinates in the chart of q (for orienting q's tangent). */
-static void coords_in(const hprob *pr, const cpt *p, const cpt *q, double *U, double *V)
-{
-    *U = p->U;
-    *V = p->V;
-    if (p->chart == q->chart && p->base == q->base && p->fi == q->fi) return;
-    double scale, c[2];
-    for (int i = 0; i < 2; i++) c[i] = asinh(base_coord(pr, q->base, i, &p->st, p->sigma));
-    if (q->chart == CHART_SEP) c[q->fi] = log(fabs(sep_dist(p, &scale)) + 1e-300) / SEP_SCALE;
-    *U = c[0];
-    *V = c[1];
 }
 
 /* Newton on (f, G - target) (G: L, or t when which = 1) from the evaluated point *r,
@@ -366,7 +106,7 @@ static int newton2(tracer *T, int which, double target, double span, cpt *r)
         cpt s, full;
         int ok = 0, full_ok = 0;
         for (int h = 0; h < 6 && !ok; h++, d0 *= 0.5, d1 *= 0.5) {
-            const int rc = cpt_eval(T, r, r->U + d0, r->V + d1, &s);
+            const int rc = el__hlen_eval(T, r, r->U + d0, r->V + d1, &s);
             if (rc == EL_EMAXITER) return rc;
             if (rc) continue;
             if (h == 0) { full = s; full_ok = 1; }
@@ -398,7 +138,7 @@ static int newton2_charts(tracer *T, int which, double target, double span, cpt 
         return rc;
     for (int k = 0; k < NALT; k++) {
         cpt alt;
-        int r2 = alt_chart(T, r, k, &alt);
+        int r2 = el__hlen_alt_chart(T, r, k, &alt);
         if (!r2) r2 = newton2(T, which, target, span, &alt);
         if (r2 == EL_EMAXITER) return r2;
         if (!r2) { *r = alt; return EL_OK; }
@@ -416,7 +156,7 @@ static int cross(tracer *T, const cpt *p, const cpt *q, int which, double target
     const double dU = q->U - p->U, dV = q->V - p->V, span = hypot(dU, dV) + 1e-12;
     const int same = p->chart == q->chart && p->base == q->base && p->fi == q->fi && p->b == q->b && p->side == q->side;
     if (same) {
-        const int rc = cpt_eval(T, q, p->U + w * dU, p->V + w * dV, r);
+        const int rc = el__hlen_eval(T, q, p->U + w * dU, p->V + w * dV, r);
         return rc ? rc : newton2_charts(T, which, target, span, r);
     }
     int rc = EL_ENOCONV;
@@ -430,16 +170,10 @@ static int cross(tracer *T, const cpt *p, const cpt *q, int which, double target
 static int push_solution(tracer *T, const cpt *r)
 {
     for (size_t i = 0; i < T->out->n; i++)
-        if (same_hstate(T->out->v[i].sigma, &T->out->v[i].st, r->sigma, &r->st)) return EL_OK;
+        if (el__hlen_same_hstate(T->out->v[i].sigma, &T->out->v[i].st, r->sigma, &r->st)) return EL_OK;
     hroot h = el__hermite_mkroot(T->pr->hcase == 3 ? r->st.k0p : r->st.k0, r->b, r->sigma);
     h.st = r->st;
     return el__hermite_roots_push(T->out, &h);
-}
-
-/* Same chart (and branch, side) */
-static int same_chart(const cpt *a, const cpt *b)
-{
-    return a->chart == b->chart && a->base == b->base && a->fi == b->fi && a->b == b->b && a->side == b->side;
 }
 
 /* Whether r, a point of C found from the step p -> q, lies on the step (Newton can
@@ -483,7 +217,7 @@ static int length_crossings(tracer *T, const cpt *p, const double tp[2], const c
         if (inside) return EL_OK;
         /* Newton from the step's interpolate failed (off C where C bends away from its
          * chord, say) or reached the neighbour: from each end of the step, points of C */
-        for (int e = 0; e < 2 && same_chart(p, q); e++) {
+        for (int e = 0; e < 2 && el__hlen_same_chart(p, q); e++) {
             r = e ? *q : *p;
             rc = newton2_charts(T, 0, T->Lt, hypot(q->U - p->U, q->V - p->V) + 1e-12, &r);
             if (rc == EL_EMAXITER) return rc;
@@ -496,7 +230,7 @@ static int length_crossings(tracer *T, const cpt *p, const double tp[2], const c
         cpt m;
         int its;
         const cpt *like = p->b == q->b ? p : q;
-        if ((rc = cpt_eval(T, like, 0.5 * (p->U + q->U), 0.5 * (p->V + q->V), &m)) == EL_EMAXITER) return rc;
+        if ((rc = el__hlen_eval(T, like, 0.5 * (p->U + q->U), 0.5 * (p->V + q->V), &m)) == EL_EMAXITER) return rc;
         if (!rc) rc = correct(T, &m, 1e-9, 6, &its);
         if (rc == EL_EMAXITER) return rc;
         if (rc) return EL_OK;
@@ -531,7 +265,7 @@ static int length_crossings(tracer *T, const cpt *p, const double tp[2], const c
         /* two crossings likely: the point of C there splits the step */
         cpt m;
         int its;
-        if ((rc = cpt_eval(T, p, p->U + x * dU, p->V + x * dV, &m)) == EL_EMAXITER) return rc;
+        if ((rc = el__hlen_eval(T, p, p->U + x * dU, p->V + x * dV, &m)) == EL_EMAXITER) return rc;
         if (!rc) rc = correct(T, &m, 1e-9, 6, &its);
         if (rc == EL_EMAXITER) return rc;
         if (rc) return EL_OK;
@@ -566,7 +300,7 @@ static int seed_by_interpolation(const tracer *T, const cpt *p, const double tp[
 {
     const int t_is_V = p->chart == HCHART_X || p->chart == HCHART_K1 ||
                        (p->chart == CHART_SEP && p->fi == 0 && p->base != HCHART_C3);
-    if (!t_is_V || !same_chart(p, q) || !(q->V != p->V)) return -1;
+    if (!t_is_V || !el__hlen_same_chart(p, q) || !(q->V != p->V)) return -1;
     const double D = hypot(q->U - p->U, q->V - p->V);
     double x = (ts - p->V) / (q->V - p->V);
     for (int it = 0; it < 30; it++) {   /* V(x) = ts by Newton: V is the cubic of x below */
@@ -584,7 +318,7 @@ static int seed_by_interpolation(const tracer *T, const cpt *p, const double tp[
     for (int j = 0; j < T->nseed; j++) {
         const cpt *s = &T->seed[j];
         if (fabs(s->t - ts) > 1e-12 * (1.0 + fabs(ts)) || !near_crossing(p, q, s)) continue;
-        if (!same_chart(s, p)) return -1;
+        if (!el__hlen_same_chart(s, p)) return -1;
         const double d = fabs(s->U - U);
         if (d < D) close++;
         if (d <= 0.01 * D) best = j;
@@ -617,7 +351,7 @@ static int step_events(tracer *T, int origin, const cpt *p, const double tp[2], 
             rcr = EL_OK;
             if (fast < 0 && (rcr = cross(T, p, q, 1, s->t, &r)) == EL_EMAXITER) return rcr;
         }
-        if (fast >= 0 ? fast != i : rcr || !same_state(&r, s)) continue;
+        if (fast >= 0 ? fast != i : rcr || !el__hlen_same_state(&r, s)) continue;
         if (i == origin) *closed = 1;
         T->visited[i] = 1;
     }
@@ -656,14 +390,14 @@ static int trace(tracer *T, int origin, double dir)
         const double bend = have_kap ? 0.5 * h * h : 0.0;
         const double pU = p.U + h * tau[0] + bend * kap[0], pV = p.V + h * tau[1] + bend * kap[1];
         cpt q;
-        int its = 0, rc = cpt_eval(T, &p, pU, pV, &q);
+        int its = 0, rc = el__hlen_eval(T, &p, pU, pV, &q);
         if (rc == EL_EMAXITER) return rc;
         if (!rc) rc = correct(T, &q, TRACE_TOL, 4, &its);
         if (rc && rc != EL_EMAXITER && T->pr->hcase == 1 && p.chart == HCHART_X) {
             /* where C passes from one branch of (17) to the other in the x chart */
             cpt other = p;
             other.b = 1 - p.b;
-            rc = cpt_eval(T, &other, pU, pV, &q);
+            rc = el__hlen_eval(T, &other, pU, pV, &q);
             if (!rc) rc = correct(T, &q, TRACE_TOL, 4, &its);
         }
         if (rc == EL_EMAXITER) return rc;
@@ -682,7 +416,7 @@ static int trace(tracer *T, int origin, double dir)
             /* a failed evaluation on a short step: the chart folds there (the x chart
              * where the branches of (17) meet, a separatrix chart whose replaced
              * coordinate turns back along ln(|F| - sigma) = y) while C goes on; the
-             * other charts of the point (alt_chart) are tried, the first that makes the
+             * other charts of the point (el__hlen_alt_chart) are tried, the first that makes the
              * step is kept (traces crawled to hmin there and lost the solutions beyond) */
             if (rc && h < FOLD_H && have_prev && fallbacks < CHART_FALLBACKS) {
                 fallbacks++;
@@ -690,12 +424,12 @@ static int trace(tracer *T, int origin, double dir)
                 for (int k = 0; k < NALT && !found; k++) {
                     cpt alt, trial;
                     double pu, pv, ta[2];
-                    int its2, r2 = alt_chart(T, &p, k, &alt);
+                    int its2, r2 = el__hlen_alt_chart(T, &p, k, &alt);
                     if (r2 == EL_EMAXITER) return r2;
                     if (r2) continue;
-                    coords_in(T->pr, &prev, &alt, &pu, &pv);
+                    el__hlen_coords_in(T->pr, &prev, &alt, &pu, &pv);
                     tangent(&alt, alt.U - pu, alt.V - pv, ta);
-                    r2 = cpt_eval(T, &alt, alt.U + FOLD_H * ta[0], alt.V + FOLD_H * ta[1], &trial);
+                    r2 = el__hlen_eval(T, &alt, alt.U + FOLD_H * ta[0], alt.V + FOLD_H * ta[1], &trial);
                     if (!r2) r2 = correct(T, &trial, TRACE_TOL, 4, &its2);
                     if (r2 == EL_EMAXITER) return r2;
                     if (r2) continue;
@@ -721,11 +455,11 @@ static int trace(tracer *T, int origin, double dir)
         prev = p;
         have_prev = 1;
         p = q;
-        if ((rc = rechart(T, &p))) return rc == EL_EMAXITER ? rc : EL_OK;
+        if ((rc = el__hlen_rechart(T, &p))) return rc == EL_EMAXITER ? rc : EL_OK;
         double pu, pv;
-        coords_in(T->pr, &prev, &p, &pu, &pv);
+        el__hlen_coords_in(T->pr, &prev, &p, &pu, &pv);
         const double ds = hypot(q.U - prev.U, q.V - prev.V);
-        have_kap = same_chart(&p, &q) && same_chart(&prev, &q) && ds > 0.0;
+        have_kap = el__hlen_same_chart(&p, &q) && el__hlen_same_chart(&prev, &q) && ds > 0.0;
         if (have_kap) {
             kap[0] = (tq[0] - tau[0]) / ds;
             kap[1] = (tq[1] - tau[1]) / ds;
@@ -734,34 +468,6 @@ static int trace(tracer *T, int origin, double dir)
         if (cosang > 0.98 && its <= 2) h = fmin(1.5 * h, hmax);
     }
     return EL_OK;
-}
-
-/* The point of C of a tension root r (tension sigma) in the chart of its kind, into *s:
- * near the separatrix the root carries |F| - sigma exactly (hstate.sep) and the base
- * coordinates alone do not fix the state (a rounded kappa0 lands on another one), so
- * the separatrix chart, replacing either coordinate, is tried first and kept where it
- * gives the root's state back. */
-static int seed_point(tracer *T, const hroot *r, double sigma, cpt *s)
-{
-    const hprob *pr = T->pr;
-    const int base = pr->hcase == 3 ? HCHART_C3 : HCHART_X, b = pr->hcase == 3 ? r->b >= 2 : r->b;
-    const cpt c = chart_spec(base, b);
-    double u[2];
-    for (int i = 0; i < 2; i++) u[i] = asinh(base_coord(pr, base, i, &r->st, sigma));
-    if (r->st.has_sep && r->st.sep != 0.0) {
-        const double Y = log(fabs(r->st.sep)) / SEP_SCALE;
-        for (int fi = 0; fi < 2; fi++) {
-            cpt sep = c;
-            sep.chart = CHART_SEP;
-            sep.fi = fi;
-            sep.side = r->st.sep > 0.0 ? 1 : -1;
-            sep.w = base_coord(pr, base, fi, &r->st, sigma);
-            const int rc = cpt_eval(T, &sep, fi ? u[0] : Y, fi ? Y : u[1], s);
-            if (rc == EL_EMAXITER) return rc;
-            if (!rc && same_hstate(sigma, &r->st, s->sigma, &s->st)) return EL_OK;
-        }
-    }
-    return cpt_eval(T, &c, u[0], u[1], s);
 }
 
 /* The seed lines: every tension solution on nl lines over the sigma range in
@@ -795,13 +501,13 @@ static int seeds(tracer *T, int nl, int ns)
             }
             const hroot *r = &l.v[i];
             cpt *s = &T->seed[T->nseed];
-            rc = seed_point(T, r, q.sigma, s);
-            if (!rc) rc = rechart(T, s);
+            rc = el__hlen_seed_point(T, r, q.sigma, s);
+            if (!rc) rc = el__hlen_rechart(T, s);
             if (rc == EL_EMAXITER) break;
             if (rc) { rc = EL_OK; continue; }
             /* a seed found twice (the tension solver's duplicates) is traced once */
             int dup = 0;
-            for (int k = 0; k < T->nseed && !dup; k++) dup = same_state(&T->seed[k], s);
+            for (int k = 0; k < T->nseed && !dup; k++) dup = el__hlen_same_state(&T->seed[k], s);
             if (!dup) T->visited[T->nseed++] = 0;
         }
     }
