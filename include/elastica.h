@@ -739,11 +739,14 @@ void el_hermite_options_defaults(el_hermite_options *opt);
  * opt->grid sigma lines and followed by continuation with the analytic gradient, and
  * the points of length L are solved for where the length crosses L (hermite_length.c).
  * The lines span the tension range the length allows (sigma (L/|p1 - p0| - 1)^2 |p1 - p0|^2
- * <= 130.13), both ends included, closer towards its top. It can miss a curve of
- * solutions that crosses none of the grid lines (a pair born and ending between two
- * lines): against 32 lines on 1000 random problems (any ends, L within 0.1 % to 5 % of
- * |p1 - p0|, L up to 8 |p1 - p0|, nearly opposite and nearly aligned tangents) it
- * misses 1 of 2535 solutions (test_hermite_length.c).
+ * <= 130.13, up to sigma |p1 - p0|^2 = 1e5), both ends included, a little closer towards
+ * its bottom (where a tension solve is cheap);
+ * the curves are followed through that range and on up to 1e6 (the solutions up there
+ * are returned too). It can miss a curve of solutions that crosses none of the grid
+ * lines (a pair born and ending between two lines): against 32 lines on 1000 random
+ * problems (any ends, L within 0.1 % to 5 % of |p1 - p0|, L up to 8 |p1 - p0|, nearly
+ * opposite and nearly aligned tangents) it misses none of 2536 solutions up to 1e5
+ * (test_hermite_length.c).
  * A count of 0 with EL_OK means no such curve exists (e.g. sigma very negative).
  * Completeness: the bracketing samples each subinterval, then bisects where the
  * samples leave room for two zeros of a convex objective (seed 004 §5 observes

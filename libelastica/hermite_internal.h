@@ -4,7 +4,8 @@
  *                        curve through two curvature states (Theorem 7) and the objective;
  *   hermite_tension.c    all solutions for a given tension (seed 004 §4) and the analysis;
  *   hermite_poly.c       the polynomials (18), (40), (45) and their real roots;
- *   hermite_length.c     all solutions for a given length;
+ *   hermite_length.c     all solutions for a given length (hermite_length_chart.c: its
+ *                        points in the charts; hermite_length_internal.h);
  *   hermite_chain.c      a solution near the separatrix as a chain split at its saddles;
  *   hermite.c            the public entry points: normalisation, world-frame solutions.
  */

@@ -1,0 +1,58 @@
+/*
+ * Internal declarations of the length mode's two files:
+ *   hermite_length.c        the tracing of the curves of tension solutions (C) and the
+ *                           solutions of the given length on them;
+ *   hermite_length_chart.c  the points of C in the charts of the curvature data and the
+ *                           passage from one chart to another.
+ */
+#ifndef EL_HERMITE_LENGTH_INTERNAL_H
+#define EL_HERMITE_LENGTH_INTERNAL_H
+
+#include "hermite_internal.h"
+
+/* A point of C in a chart (u, v; b): tracer coordinates (U, V) = (asinh u, asinh v),
+ * t = asinh(sigma), the state, and the gradients of f, L and t in (U, V). In the
+ * separatrix chart (chart = CHART_SEP over the chart base, on the side side of k = 1)
+ * the base coordinate number fi is replaced by y / SEP_SCALE, y = ln|(|F| - sigma)|,
+ * and w holds its value. */
+#define CHART_SEP 3
+#define SEP_SCALE 8.0
+typedef struct {
+    int chart, base, fi, side, b;
+    double U, V, w, sigma, t;
+    hstate st;
+    double fg[2], Lg[2], tg[2], sg[2];   /* sg: gradient of |F| - sigma */
+    double wg[2];                        /* separatrix chart: gradient of w */
+} cpt;
+
+typedef struct {
+    const hprob *pr;
+    double Lt, tlo, thi, thi_trace;   /* t = asinh(sigma): seed lines in [tlo, thi]; traces end past thi_trace */
+    cpt *seed;
+    int nseed;
+    char *visited;
+    long evals, max_evals;
+    double long_curves;   /* a trace ends where L passes long_curves Lt, increasing */
+    double line_power;    /* the seed lines' placement (seeds) */
+    hrootlist *out;
+} tracer;
+
+/* The point (U, V) in the chart of `like` (chart, base, fi, side, b; its w the separatrix
+ * chart's starting guess), into *p; counts one evaluation (EL_EMAXITER past the limit). */
+int el__hlen_eval(tracer *T, const cpt *like, double U, double V, cpt *p);
+/* p re-expressed in its better conditioned chart (same state; unchanged where it is). */
+int el__hlen_rechart(tracer *T, cpt *p);
+/* Same point of the curvature-data surface (tension, kappa0, kappa0'). */
+int el__hlen_same_hstate(double s1, const hstate *a, double s2, const hstate *b);
+int el__hlen_same_state(const cpt *a, const cpt *b);
+/* Same chart (and branch, side). */
+int el__hlen_same_chart(const cpt *a, const cpt *b);
+/* The point p in its other charts, k = 0 .. NALT - 1 (EL_OK where chart k gives p's state). */
+#define NALT 5
+int el__hlen_alt_chart(tracer *T, const cpt *p, int k, cpt *alt);
+/* p's coordinates in the chart of q (for orienting q's tangent). */
+void el__hlen_coords_in(const hprob *pr, const cpt *p, const cpt *q, double *U, double *V);
+/* The point of C of a tension root r (tension sigma) in the chart of its kind. */
+int el__hlen_seed_point(tracer *T, const hroot *r, double sigma, cpt *s);
+
+#endif
