@@ -167,13 +167,15 @@ int fit_feet_distances(fit_objective *o, const double *x, double *dist, double *
     return EL_OK;
 }
 
-/* Squared distance of P to segment A-B, and the fraction t of its nearest point. */
-static double segment_distance2(const double *A, const double *B, const double *P, double *t)
+/* Squared distance of P to segment A-B, and the fraction t of its nearest point.
+ * (The clamp to [0, 1] by comparisons, NaN to 0 as fmin(fmax(t, 0), 1) does: the
+ * report's hot loop, where libm's fmin/fmax are calls.) */
+static inline double segment_distance2(const double *A, const double *B, const double *P, double *t)
 {
     const double ux = B[0] - A[0], uy = B[1] - A[1], l2 = ux * ux + uy * uy;
     const double px = P[0] - A[0], py = P[1] - A[1];
     double tt = l2 > 0.0 ? (px * ux + py * uy) / l2 : 0.0;
-    tt = fmin(fmax(tt, 0.0), 1.0);
+    tt = tt > 0.0 ? (tt < 1.0 ? tt : 1.0) : 0.0;
     const double dx = px - tt * ux, dy = py - tt * uy;
     *t = tt;
     return dx * dx + dy * dy;
@@ -210,7 +212,8 @@ void fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, d
     for (size_t j = 1; j + 1 < nv; j++) {
         const double ax = V[2 * j] - V[2 * j - 2], ay = V[2 * j + 1] - V[2 * j - 1];
         const double bx = V[2 * j + 2] - V[2 * j], by = V[2 * j + 3] - V[2 * j + 1];
-        kmax = fmax(kmax, fabs(ax * by - ay * bx) / (h * h * h));
+        const double kj = fabs(ax * by - ay * bx) / (h * h * h);
+        if (kj > kmax) kmax = kj;        /* fmax(kmax, kj): kmax is never NaN */
     }
     for (size_t j = 0; j < nv; j++) {
         const size_t g = (size_t)((long)first + step * (long)j);
@@ -424,32 +427,34 @@ static int feet_are_nearest(const fit_objective *o, const double *v, const doubl
                             const double *dist)
 {
     if (o->map.ncurves != 1) return 0;
-    double dmax = 0.0, tmin = HUGE_VAL, tmax = -HUGE_VAL, kmax = 0.0, prev = 0.0;
-    for (size_t i = 0; i < o->n; i++) dmax = fmax(dmax, fabs(dist[i]));
-    if (o->map.model == FIT_SMOOTH) {
-        enum { M = 129 };
-        double s[M], th[M], ka[M];
-        el_smooth_params p;
-        for (int j = 0; j < M; j++) s[j] = v[6] * j / (M - 1);
-        if (fit_to_smooth(v, &p) || el_smooth_eval(&p, M, s, NULL, th, ka)) return 0;
-        for (int j = 0; j < M; j++) {
-            tmin = fmin(tmin, th[j]); tmax = fmax(tmax, th[j]);
-            kmax = fmax(kmax, fabs(ka[j]));
-        }
-        /* between samples |kappa| may exceed its sampled maximum by one step's worth */
-        kmax *= 1.5;
-    } else {
+    double tmin = HUGE_VAL, tmax = -HUGE_VAL;
+    if (o->map.model == FIT_DISCRETE) {
+        /* the segments' directions, unwrapped; the span only grows, so the walk stops
+         * once it exceeds pi/2 */
+        double prev = 0.0;
         for (size_t j = 0; j + 1 < nv; j++) {
             double t = atan2(V[2 * j + 3] - V[2 * j + 1], V[2 * j + 2] - V[2 * j]);
-            if (j > 0) {
-                t += 2.0 * M_PI * nearbyint((prev - t) / (2.0 * M_PI));
-                kmax = fmax(kmax, 2.0 / v[2] * fabs(tan(0.5 * (t - prev))));
-            }
+            if (j > 0) t += 2.0 * M_PI * nearbyint((prev - t) / (2.0 * M_PI));
             prev = t;
             tmin = fmin(tmin, t); tmax = fmax(tmax, t);
+            if (tmax - tmin > 0.5 * M_PI) return 0;
         }
+        return tmax - tmin <= 0.5 * M_PI;
     }
-    return tmax - tmin <= 0.5 * M_PI && (o->map.model == FIT_DISCRETE || kmax * dmax <= 0.1);
+    double dmax = 0.0, kmax = 0.0;
+    for (size_t i = 0; i < o->n; i++) dmax = fmax(dmax, fabs(dist[i]));
+    enum { M = 129 };
+    double s[M], th[M], ka[M];
+    el_smooth_params p;
+    for (int j = 0; j < M; j++) s[j] = v[6] * j / (M - 1);
+    if (fit_to_smooth(v, &p) || el_smooth_eval(&p, M, s, NULL, th, ka)) return 0;
+    for (int j = 0; j < M; j++) {
+        tmin = fmin(tmin, th[j]); tmax = fmax(tmax, th[j]);
+        kmax = fmax(kmax, fabs(ka[j]));
+    }
+    /* between samples |kappa| may exceed its sampled maximum by one step's worth */
+    kmax *= 1.5;
+    return tmax - tmin <= 0.5 * M_PI && kmax * dmax <= 0.1;
 }
 
 int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const double *V[2],
@@ -468,7 +473,8 @@ int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const do
         dmed /= (double)cnt;
     }
     double dmax = 0.0;
-    for (size_t i = 0; i < n; i++) dmax = fmax(dmax, fabs(dist[i]));
+    for (size_t i = 0; i < n; i++)
+        if (fabs(dist[i]) > dmax) dmax = fabs(dist[i]);     /* fmax(dmax, |d|), not a call */
     piece *pc = malloc(sizeof(piece) * 2 * MAX_PIECES);
     grid *g = malloc(sizeof(grid));
     unsigned *stamp = malloc(sizeof(unsigned) * 2 * MAX_PIECES);
@@ -519,8 +525,8 @@ int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const do
                         const double dx = pq->cx - p->cx, dy = pq->cy - p->cy, reach = 2.0 * dmax + p->r + pq->r;
                         if (dx * dx + dy * dy >= reach * reach) continue;
                         const double a = pq->curve == p->curve ? fabs(0.5 * (pq->s0 + pq->s1 - p->s0 - p->s1)) : HUGE_VAL;
-                        sep[j] = fmax(sep[j], a);
-                        sep[q] = fmax(sep[q], a);
+                        if (a > sep[j]) sep[j] = a;      /* fmax: sep is never NaN */
+                        if (a > sep[q]) sep[q] = a;
                     }
         }
         for (int j = 0; j < np; j++) stamp[j] = 0;
