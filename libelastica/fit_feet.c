@@ -387,8 +387,17 @@ static int piece_nearest(const fit_objective *o, const double *v, const double *
     return EL_OK;
 }
 
-/* Point i against piece p: searched when its disk comes nearer than the distance so far
- * and it is away from the point's own foot (whose neighbourhood was searched). */
+/* Whether the disk of piece p comes nearer to P than d (the callers' test before
+ * consider, inlined: most pieces a point visits are farther). */
+static inline int disk_reaches(const piece *p, const double *P, double d)
+{
+    const double dx = P[0] - p->cx, dy = P[1] - p->cy, reach = d + p->r;
+    return dx * dx + dy * dy < reach * reach;
+}
+
+/* Point i against piece p, whose disk comes nearer than the distance so far
+ * (disk_reaches): searched when it is away from the point's own foot (whose
+ * neighbourhood was searched). */
 typedef struct own_foot {
     int curve;
     double s, d;
@@ -398,8 +407,6 @@ static int consider(const fit_objective *o, double v[2][FIT_NP], const double *V
                     const piece *p, const double *P, const own_foot *f0, int branch_only, size_t i, double *dist,
                     double *foot, int *side)
 {
-    const double dx = P[0] - p->cx, dy = P[1] - p->cy, reach = fabs(dist[i]) + p->r;
-    if (dx * dx + dy * dy >= reach * reach) return EL_OK;      /* the disk is farther than dist */
     /* pieces already searched: smooth, those at the foot (the distance is convex there);
      * the polygon, those inside the stretch fit_polygon_distances searched */
     const double near = o->map.model == FIT_SMOOTH ? 2.0 * p->r : 2.0 * 1.4142135623730951 * f0->d;
@@ -549,7 +556,9 @@ int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const do
             const unsigned tag = (unsigned)i + 1u;
             const own_foot f0 = {side ? side[i] : 0, foot[i], d0};
             if ((double)(x1 - x0 + 1) * (double)(y1 - y0 + 1) > 4.0 * np) {   /* far: every piece */
-                for (int j = 0; j < np && !st; j++) st = consider(o, v, V, nv, &pc[j], P, &f0, branch_only, i, dist, foot, side);
+                for (int j = 0; j < np && !st; j++)
+                    if (disk_reaches(&pc[j], P, fabs(dist[i])))
+                        st = consider(o, v, V, nv, &pc[j], P, &f0, branch_only, i, dist, foot, side);
                 continue;
             }
             for (long ix = x0; ix <= x1 && !st; ix++)
@@ -558,7 +567,8 @@ int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const do
                         const int j = g->item[e];
                         if (stamp[j] == tag) continue;
                         stamp[j] = tag;
-                        st = consider(o, v, V, nv, &pc[j], P, &f0, branch_only, i, dist, foot, side);
+                        if (disk_reaches(&pc[j], P, fabs(dist[i])))
+                            st = consider(o, v, V, nv, &pc[j], P, &f0, branch_only, i, dist, foot, side);
                     }
         }
     }
