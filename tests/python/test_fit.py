@@ -703,3 +703,22 @@ def test_orthogonal_fit_of_loops_no_worse_than_paired(seed):
     p = el.fit(pts, model="smooth", distance="paired")
     assert o.status == 0 and o.distance == "orthogonal"
     assert o.rms <= p.rms * (1 + 1e-9)
+
+
+@pytest.mark.parametrize("model", ["discrete", "smooth"])
+def test_fit_result_curves_are_constructed_ones(model):
+    """fit.py builds the result's curves from the C parameters without the constructor
+    (_make_curve): they must be the curves the constructor makes of the same values
+    (every attribute, type and equality), for fit and fit_keyline."""
+    pts, _ = sketched_s(seed=3, n=60, wobble=0.2)
+    kl = keyline_3d(n=400, seed=1)
+    kf = el.fit_keyline(kl.xyz, model=model)
+    cls = el.DiscreteElastica if model == "discrete" else el.SmoothElastica
+    for r in (el.fit(pts, model=model), kf.first, kf.second):
+        for c in (r.curve, r.initial):
+            made = cls(**vars(c))
+            assert type(c) is cls and c == made and vars(c) == vars(made)
+            assert all(type(v) is float for k, v in vars(c).items() if k != "n")
+            assert model == "smooth" or (type(c.n) is int and c.n == len(r.points))
+            np.testing.assert_array_equal(c.points() if model == "discrete" else c.points(None),
+                                          made.points() if model == "discrete" else made.points(None))
