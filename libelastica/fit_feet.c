@@ -191,6 +191,37 @@ static double segment_signed(const double *A, const double *B, const double *P, 
 }
 
 /*
+ * A bound that leaves out segments without changing any result: a segment A-B of
+ * length at most lmax has no point nearer to P than |P - A| - lmax (triangle
+ * inequality), so one with |P - A|^2 > beyond_sq(d, lmax) is farther than d by 1e-9 of
+ * d + lmax, far beyond the rounding of segment_distance2 (~1e-15): its squared distance
+ * would compare as larger than d^2, and leaving it out changes neither the nearest
+ * segment nor the order in which ties are met.
+ */
+static inline double beyond_sq(double d, double lmax)
+{
+    const double r = (d + lmax) * (1.0 + 1e-9);
+    return r * r;
+}
+
+static inline int segment_beyond(const double *A, const double *P, double r2)
+{
+    const double dx = P[0] - A[0], dy = P[1] - A[1];
+    return dx * dx + dy * dy > r2;
+}
+
+/* The longest segment of the polygon of nv vertices (a bound for beyond_sq). */
+static double longest_segment(const double *V, size_t nv)
+{
+    double l2 = 0.0;
+    for (size_t j = 0; j + 1 < nv; j++) {
+        const double ux = V[2 * j + 2] - V[2 * j], uy = V[2 * j + 3] - V[2 * j + 1], u2 = ux * ux + uy * uy;
+        if (u2 > l2) l2 = u2;
+    }
+    return sqrt(l2) * (1.0 + 1e-12);
+}
+
+/*
  * The polygon of nv vertices V (normalised), data point first + step j <-> vertex j:
  * each point's distance to the polygon near its own vertex, its foot as arc length
  * h (segment + t) from vertex 0. A walk from the two segments at the vertex, on while
@@ -215,6 +246,7 @@ void fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, d
         const double kj = fabs(ax * by - ay * bx) / (h * h * h);
         if (kj > kmax) kmax = kj;        /* fmax(kmax, kj): kmax is never NaN */
     }
+    const double lmax = longest_segment(V, nv);
     for (size_t j = 0; j < nv; j++) {
         const size_t g = (size_t)((long)first + step * (long)j);
         double P[2];
@@ -252,10 +284,12 @@ void fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, d
             const double d = sqrt(bd);
             const long reach = kmax * d <= 0.1 ? 1 : (long)ceil(2.0 * 1.4142135623730951 * d / h) + 1;
             const long lo = centre - reach < 0 ? 0 : centre - reach, hi = centre + reach > last ? last : centre + reach;
+            double r2 = beyond_sq(d, lmax);
             for (long seg = lo; seg <= hi; seg++) {
+                if (segment_beyond(V + 2 * seg, P, r2)) continue;
                 double t;
                 const double d2 = segment_distance2(V + 2 * seg, V + 2 * seg + 2, P, &t);
-                if (d2 < bd) { bd = d2; best = seg; bt = t; }
+                if (d2 < bd) { bd = d2; best = seg; bt = t; r2 = beyond_sq(sqrt(bd), lmax); }
             }
         }
         dist[g] = segment_signed(V + 2 * best, V + 2 * best + 2, P, bt);
@@ -281,6 +315,7 @@ enum { MAX_PIECES = 128, HASH_BITS = 11 };
 
 typedef struct piece {
     double cx, cy, r, s0, s1;   /* disk, arc range on its curve */
+    double lmax;                /* polygon: its longest segment (beyond_sq) */
     int curve;
 } piece;
 
@@ -342,16 +377,19 @@ static int curve_points(const fit_objective *o, const double *v, const double *V
 }
 
 /* The nearest point of piece p to P: signed distance (+ left of the curve's own
- * direction) and arc length. */
+ * direction) and arc length. The polygon's segments farther than the distance so far,
+ * dnow, are left out (beyond_sq): the nearest of the others is the piece's nearest
+ * whenever that is nearer than dnow (else *d may be HUGE_VAL, also not nearer). */
 static int piece_nearest(const fit_objective *o, const double *v, const double *V, size_t nv,
-                         const piece *p, const double *P, int branch_only, double *d, double *s)
+                         const piece *p, const double *P, int branch_only, double dnow, double *d, double *s)
 {
     if (o->map.model == FIT_DISCRETE) {
-        const double h = v[2];
+        const double h = v[2], r2 = beyond_sq(dnow, p->lmax);
         const long j0 = (long)floor(p->s0 / h), j1 = (long)ceil(p->s1 / h);
         double best = HUGE_VAL, bt = 0.0;
         long bj = -1;
         for (long j = j0 < 0 ? 0 : j0; j < j1 && j <= (long)nv - 2; j++) {
+            if (segment_beyond(V + 2 * j, P, r2)) continue;
             double t;
             const double d2 = segment_distance2(V + 2 * j, V + 2 * j + 2, P, &t);
             if (d2 < best) { best = d2; bj = j; bt = t; }
@@ -414,7 +452,7 @@ static int consider(const fit_objective *o, double v[2][FIT_NP], const double *V
                                   ? p->s1 >= f0->s - near && p->s0 <= f0->s + near
                                   : p->s0 >= f0->s - near && p->s1 <= f0->s + near)) return EL_OK;
     double d = HUGE_VAL, s = 0.0;
-    int st = piece_nearest(o, v[p->curve], V[p->curve], nv[p->curve], p, P, branch_only, &d, &s);
+    int st = piece_nearest(o, v[p->curve], V[p->curve], nv[p->curve], p, P, branch_only, fabs(dist[i]), &d, &s);
     if (!st && fabs(d) < fabs(dist[i])) {
         dist[i] = d; foot[i] = s;
         if (side) side[i] = p->curve;
@@ -493,13 +531,14 @@ int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const do
         first[c] = np;
         if (!(len[c] > 0.0)) continue;
         const int m = (int)fmin(fmax(ceil(len[c] / (2.0 * dmed + 1e-300)), 8.0), (double)MAX_PIECES);
+        const double lmax = o->map.model == FIT_DISCRETE ? longest_segment(V[c], nv[c]) : 0.0;
         double ends[2 * (MAX_PIECES + 1)];
         if ((st = curve_points(o, v[c], V[c], nv[c], len[c], m, ends))) break;
         for (int j = 0; j < m; j++) {
             const double s0 = len[c] * j / m, s1 = len[c] * (j + 1) / m, *a = ends + 2 * j, *b = a + 2;
             piece *p = &pc[np++];
             p->cx = 0.5 * (a[0] + b[0]); p->cy = 0.5 * (a[1] + b[1]);
-            p->r = 0.5 * (s1 - s0); p->s0 = s0; p->s1 = s1; p->curve = c;
+            p->r = 0.5 * (s1 - s0); p->s0 = s0; p->s1 = s1; p->curve = c; p->lmax = lmax;
             rmax = fmax(rmax, p->r);
         }
         count[c] = np - first[c];
