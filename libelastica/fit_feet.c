@@ -327,11 +327,17 @@ typedef struct grid {
 } grid;
 
 /* The grid cell of coordinate x: floor(x / cell), held to +-2^40 (a far, diverging
- * curve gives quotients no long holds; the searches below then take every piece). */
+ * curve gives quotients no long holds; the searches below then take every piece).
+ * floor by the truncating conversion, which is exact within that range (libm's floor
+ * is a call on baseline x86-64, four a point here); NaN gives -2^40 as before. */
 static long cell_index(double x, double cell)
 {
-    const double c = floor(x / cell), lim = 1099511627776.0;
-    return c >= -lim && c <= lim ? (long)c : c > 0.0 ? (long)lim : -(long)lim;
+    const double q = x / cell, lim = 1099511627776.0;
+    if (q >= -lim && q <= lim) {
+        const long c = (long)q;
+        return (double)c > q ? c - 1 : c;
+    }
+    return q > 0.0 ? (long)lim : -(long)lim;
 }
 
 static unsigned cell_hash(long ix, long iy)
@@ -584,7 +590,9 @@ int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const do
             {   /* the foot's piece and its neighbours: near another part? */
                 const int c = side ? side[i] : 0;
                 if (count[c] == 0) continue;
-                const int jf = first[c] + (int)fmin(fmax(floor(foot[i] / (2.0 * pc[first[c]].r)), 0.0), count[c] - 1.0);
+                /* first[c] + floor(foot / piece length) held to the curve's pieces (NaN: 0) */
+                const double at = foot[i] / (2.0 * pc[first[c]].r);
+                const int jf = first[c] + (at > 0.0 ? (at < count[c] - 1.0 ? (int)at : count[c] - 1) : 0);
                 const int lo = jf > first[c] ? jf - 1 : jf, hi = jf + 1 < first[c] + count[c] ? jf + 1 : jf;
                 int any = 0;
                 for (int j = lo; j <= hi; j++) any |= sep[j] > 2.0 * 1.4142135623730951 * d0 + 4.0 * rmax;
