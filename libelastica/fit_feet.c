@@ -311,7 +311,7 @@ void fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, d
  * pieces away from its own foot whose disk is near enough are searched (Newton's method
  * from the piece's middle; the polygon's segments). O(n) work for ordinary data.
  */
-enum { MAX_PIECES = 128, HASH_BITS = 11 };
+enum { MAX_PIECES = 128, HASH_BITS = 11, SEP_LEVELS = 4 };
 
 typedef struct piece {
     double cx, cy, r, s0, s1;   /* disk, arc range on its curve */
@@ -529,7 +529,7 @@ int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const do
     piece *pc = malloc(sizeof(piece) * 2 * MAX_PIECES);
     grid *g = malloc(sizeof(grid));
     unsigned *stamp = malloc(sizeof(unsigned) * 2 * MAX_PIECES);
-    double *sep = malloc(sizeof(double) * 2 * MAX_PIECES);
+    double *sep = malloc(sizeof(double) * 2 * MAX_PIECES * SEP_LEVELS);
     if (!pc || !g || !stamp || !sep) { free(pc); free(g); free(stamp); free(sep); return EL_ENOMEM; }
     int np = 0, st = EL_OK, first[2] = {0, 0}, count[2] = {0, 0};
     double rmax = 0.0;
@@ -554,12 +554,21 @@ int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const do
         g->used = 0;
         /* cells of the reach of the pair test below: a piece then looks at 3 x 3 cells */
         g->cell = fmax(fmax(2.0 * rmax, 2.0 * dmed), 2.0 * dmax + 2.0 * rmax);
-        for (int j = 0; j < np; j++) { grid_add(g, &pc[j], j); stamp[j] = 0; sep[j] = 0.0; }
+        for (int j = 0; j < np; j++) { grid_add(g, &pc[j], j); stamp[j] = 0; }
+        for (int j = 0; j < np * SEP_LEVELS; j++) sep[j] = 0.0;
+        double reach_l[SEP_LEVELS];     /* 2 dmax / 2^l */
+        reach_l[0] = 2.0 * dmax;
+        for (int l = 1; l < SEP_LEVELS; l++) reach_l[l] = 0.5 * reach_l[l - 1];
         /* for each piece the farthest (in arc length) part of the curve that comes within
          * 2 dmax of it (another curve: HUGE_VAL): only a point whose foot is there and
          * whose own search (a stretch of 2 sqrt 2 d around its foot) did not reach that
          * part can have a nearer point elsewhere. (With the stretch of dmax for every
-         * point, a point nearer than dmax missed a loop passing 5.7 from it, measured.) */
+         * point, a point nearer than dmax missed a loop passing 5.7 from it, measured.)
+         * The same within 2 dmax / 2^l, levels l = 1 .. SEP_LEVELS - 1 (sep[SEP_LEVELS j +
+         * l]): a point at distance d0 can only have a nearer point within 2 d0 of its foot,
+         * so it takes the level of the smallest reach still >= 2 d0 (the same argument,
+         * with its own distance for the largest one: most points of an open arc then need
+         * no search, as the parts within 2 d0 of their foot are next to it along the arc) */
         const unsigned ptag = 0x80000000u;
         for (int j = 0; j < np; j++) {
             const piece *p = &pc[j];
@@ -574,11 +583,15 @@ int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const do
                         const piece *pq = &pc[q];
                         if (stamp[q] == (ptag | (unsigned)j)) continue;
                         stamp[q] = ptag | (unsigned)j;
-                        const double dx = pq->cx - p->cx, dy = pq->cy - p->cy, reach = 2.0 * dmax + p->r + pq->r;
-                        if (dx * dx + dy * dy >= reach * reach) continue;
+                        const double dx = pq->cx - p->cx, dy = pq->cy - p->cy, dd = dx * dx + dy * dy;
                         const double a = pq->curve == p->curve ? fabs(0.5 * (pq->s0 + pq->s1 - p->s0 - p->s1)) : HUGE_VAL;
-                        if (a > sep[j]) sep[j] = a;      /* fmax: sep is never NaN */
-                        if (a > sep[q]) sep[q] = a;
+                        for (int l = 0; l < SEP_LEVELS; l++) {
+                            const double reach = reach_l[l] + p->r + pq->r;
+                            if (dd >= reach * reach) break;          /* and the smaller reaches */
+                            double *sj = &sep[SEP_LEVELS * j + l], *sq = &sep[SEP_LEVELS * q + l];
+                            if (a > *sj) *sj = a;      /* fmax: sep is never NaN */
+                            if (a > *sq) *sq = a;
+                        }
                     }
         }
         for (int j = 0; j < np; j++) stamp[j] = 0;
@@ -594,8 +607,9 @@ int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const do
                 const double at = foot[i] / (2.0 * pc[first[c]].r);
                 const int jf = first[c] + (at > 0.0 ? (at < count[c] - 1.0 ? (int)at : count[c] - 1) : 0);
                 const int lo = jf > first[c] ? jf - 1 : jf, hi = jf + 1 < first[c] + count[c] ? jf + 1 : jf;
-                int any = 0;
-                for (int j = lo; j <= hi; j++) any |= sep[j] > 2.0 * 1.4142135623730951 * d0 + 4.0 * rmax;
+                int any = 0, l = 0;
+                while (l + 1 < SEP_LEVELS && reach_l[l + 1] >= 2.0 * d0) l++;
+                for (int j = lo; j <= hi; j++) any |= sep[SEP_LEVELS * j + l] > 2.0 * 1.4142135623730951 * d0 + 4.0 * rmax;
                 if (!any) continue;
             }
             const long x0 = cell_index(P[0] - d0, g->cell), x1 = cell_index(P[0] + d0, g->cell);
