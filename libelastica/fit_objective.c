@@ -167,21 +167,27 @@ static void fold(sums *s, const double *col, int stride, const double *res, int 
 }
 
 /* fold for rows (x, y) of points paired with a discrete curve's vertices, whose first
- * two columns, d/dx0 and d/dy0, are (1, 0, 1, 0, ...) and (0, 1, 0, 1, ...): their dot
- * products as sums of every other entry (the same numbers; 15 of the 35 products). */
+ * two columns, d/dx0 and d/dy0, are (1, 0, 1, 0, ...) and (0, 1, 0, 1, ...) (not stored:
+ * paired_rows from column 2): their dot products as sums of every other entry (the same
+ * numbers; 15 of the 35 products), their products with each other the counts of ones
+ * (exact, as dot sums them) and 0 (which adds nothing to a sum that starts at +0). */
 static void fold_paired(sums *s, const double *col, int stride, const double *res, int rows)
 {
-    for (int a = 0; a < FIT_NP; a++) {
+    s->A[0][0] += (double)((rows + 1) / 2);
+    s->A[1][1] += (double)(rows / 2);
+    for (int a = 0; a < 2; a++) s->b[a] += dot_every_other(res, rows, a);
+    for (int a = 2; a < FIT_NP; a++) {
         const double *ca = col + a * stride;
-        s->b[a] += a < 2 ? dot_every_other(res, rows, a) : dot(ca, res, rows);
+        s->b[a] += dot(ca, res, rows);
         for (int b = 0; b <= a; b++)
             s->A[a][b] += b < 2 ? dot_every_other(ca, rows, b) : dot(ca, col + b * stride, rows);
     }
 }
 
-/* Residual rows of paired points: gamma_i - P_g for the m samples, g = first + step i. */
+/* Residual rows of paired points: gamma_i - P_g for the m samples, g = first + step i;
+ * the Jacobian's columns from j0 on (fold_paired needs none of the first two). */
 static double paired_rows(const fit_objective *o, const double *xy, const double *jac, size_t m,
-                          size_t first, long step, double *col, double *res)
+                          size_t first, long step, int j0, double *col, double *res)
 {
     double f = 0.0;
     const int stride = 2 * FIT_BLOCK;
@@ -193,7 +199,7 @@ static double paired_rows(const fit_objective *o, const double *xy, const double
             const double d = xy[r] - P[c];
             res[r] = d;
             f += d * d;
-            for (int j = 0; j < FIT_NP; j++) col[j * stride + r] = jac[r * FIT_NP + j];
+            for (int j = j0; j < FIT_NP; j++) col[j * stride + r] = jac[r * FIT_NP + j];
         }
     }
     return f;
@@ -215,7 +221,7 @@ static int discrete_paired(fit_objective *o, const double *v, size_t nv, size_t 
         const size_t k0 = done == 0 && skip0 ? 1 : 0;
         const size_t g0 = (size_t)((long)first + step * (long)(done + k0));
         if (want) {
-            *f += paired_rows(o, xy + 2 * k0, jac + 2 * k0 * FIT_NP, m - k0, g0, step, col, res);
+            *f += paired_rows(o, xy + 2 * k0, jac + 2 * k0 * FIT_NP, m - k0, g0, step, 2, col, res);
             fold_paired(S, col, 2 * FIT_BLOCK, res, (int)(2 * (m - k0)));
         } else {
             for (size_t i = k0; i < m; i++) {
@@ -332,7 +338,7 @@ static int smooth_paired(fit_objective *o, const double *v, int want, sums *S, d
         for (size_t i = 0; i < m; i++) s[i] = o->t[a + i] * v[6];
         if ((st = fit_smooth_rows(v, m, s, xy, want ? jac : NULL))) return st;
         if (want) {
-            *f += paired_rows(o, xy, jac, m, a, 1, col, res);
+            *f += paired_rows(o, xy, jac, m, a, 1, 0, col, res);
             fold(S, col, 2 * FIT_BLOCK, res, (int)(2 * m));
         } else {
             for (size_t i = 0; i < m; i++) {
