@@ -566,7 +566,7 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
     for (size_t i = 0; i < n; i++) {
         if (!ok) { d[i] = HUGE_VAL; fs[i] = 0.0; continue; }
         s2 += d[i] * d[i];
-        emax = fmax(emax, fabs(d[i]));
+        if (fabs(d[i]) > emax) emax = fabs(d[i]);     /* fmax, without a libm call (d is finite) */
         d[i] *= sc;
         fs[i] *= sc;
     }

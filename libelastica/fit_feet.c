@@ -167,13 +167,15 @@ int fit_feet_distances(fit_objective *o, const double *x, double *dist, double *
     return EL_OK;
 }
 
-/* Squared distance of P to segment A-B, and the fraction t of its nearest point. */
-static double segment_distance2(const double *A, const double *B, const double *P, double *t)
+/* Squared distance of P to segment A-B, and the fraction t of its nearest point.
+ * (The clamp to [0, 1] by comparisons, NaN to 0 as fmin(fmax(t, 0), 1) does: the
+ * report's hot loop, where libm's fmin/fmax are calls.) */
+static inline double segment_distance2(const double *A, const double *B, const double *P, double *t)
 {
     const double ux = B[0] - A[0], uy = B[1] - A[1], l2 = ux * ux + uy * uy;
     const double px = P[0] - A[0], py = P[1] - A[1];
     double tt = l2 > 0.0 ? (px * ux + py * uy) / l2 : 0.0;
-    tt = fmin(fmax(tt, 0.0), 1.0);
+    tt = tt > 0.0 ? (tt < 1.0 ? tt : 1.0) : 0.0;
     const double dx = px - tt * ux, dy = py - tt * uy;
     *t = tt;
     return dx * dx + dy * dy;
@@ -186,6 +188,37 @@ static double segment_signed(const double *A, const double *B, const double *P, 
     const double dx = P[0] - A[0] - t * ux, dy = P[1] - A[1] - t * uy;
     const double d = sqrt(dx * dx + dy * dy);
     return ux * dy - uy * dx < 0.0 ? -d : d;
+}
+
+/*
+ * A bound that leaves out segments without changing any result: a segment A-B of
+ * length at most lmax has no point nearer to P than |P - A| - lmax (triangle
+ * inequality), so one with |P - A|^2 > beyond_sq(d, lmax) is farther than d by 1e-9 of
+ * d + lmax, far beyond the rounding of segment_distance2 (~1e-15): its squared distance
+ * would compare as larger than d^2, and leaving it out changes neither the nearest
+ * segment nor the order in which ties are met.
+ */
+static inline double beyond_sq(double d, double lmax)
+{
+    const double r = (d + lmax) * (1.0 + 1e-9);
+    return r * r;
+}
+
+static inline int segment_beyond(const double *A, const double *P, double r2)
+{
+    const double dx = P[0] - A[0], dy = P[1] - A[1];
+    return dx * dx + dy * dy > r2;
+}
+
+/* The longest segment of the polygon of nv vertices (a bound for beyond_sq). */
+static double longest_segment(const double *V, size_t nv)
+{
+    double l2 = 0.0;
+    for (size_t j = 0; j + 1 < nv; j++) {
+        const double ux = V[2 * j + 2] - V[2 * j], uy = V[2 * j + 3] - V[2 * j + 1], u2 = ux * ux + uy * uy;
+        if (u2 > l2) l2 = u2;
+    }
+    return sqrt(l2) * (1.0 + 1e-12);
 }
 
 /*
@@ -210,8 +243,10 @@ void fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, d
     for (size_t j = 1; j + 1 < nv; j++) {
         const double ax = V[2 * j] - V[2 * j - 2], ay = V[2 * j + 1] - V[2 * j - 1];
         const double bx = V[2 * j + 2] - V[2 * j], by = V[2 * j + 3] - V[2 * j + 1];
-        kmax = fmax(kmax, fabs(ax * by - ay * bx) / (h * h * h));
+        const double kj = fabs(ax * by - ay * bx) / (h * h * h);
+        if (kj > kmax) kmax = kj;        /* fmax(kmax, kj): kmax is never NaN */
     }
+    const double lmax = longest_segment(V, nv);
     for (size_t j = 0; j < nv; j++) {
         const size_t g = (size_t)((long)first + step * (long)j);
         double P[2];
@@ -249,10 +284,12 @@ void fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, d
             const double d = sqrt(bd);
             const long reach = kmax * d <= 0.1 ? 1 : (long)ceil(2.0 * 1.4142135623730951 * d / h) + 1;
             const long lo = centre - reach < 0 ? 0 : centre - reach, hi = centre + reach > last ? last : centre + reach;
+            double r2 = beyond_sq(d, lmax);
             for (long seg = lo; seg <= hi; seg++) {
+                if (segment_beyond(V + 2 * seg, P, r2)) continue;
                 double t;
                 const double d2 = segment_distance2(V + 2 * seg, V + 2 * seg + 2, P, &t);
-                if (d2 < bd) { bd = d2; best = seg; bt = t; }
+                if (d2 < bd) { bd = d2; best = seg; bt = t; r2 = beyond_sq(sqrt(bd), lmax); }
             }
         }
         dist[g] = segment_signed(V + 2 * best, V + 2 * best + 2, P, bt);
@@ -274,10 +311,11 @@ void fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, d
  * pieces away from its own foot whose disk is near enough are searched (Newton's method
  * from the piece's middle; the polygon's segments). O(n) work for ordinary data.
  */
-enum { MAX_PIECES = 128, HASH_BITS = 11 };
+enum { MAX_PIECES = 128, HASH_BITS = 11, SEP_LEVELS = 4 };
 
 typedef struct piece {
     double cx, cy, r, s0, s1;   /* disk, arc range on its curve */
+    double lmax;                /* polygon: its longest segment (beyond_sq) */
     int curve;
 } piece;
 
@@ -289,11 +327,17 @@ typedef struct grid {
 } grid;
 
 /* The grid cell of coordinate x: floor(x / cell), held to +-2^40 (a far, diverging
- * curve gives quotients no long holds; the searches below then take every piece). */
+ * curve gives quotients no long holds; the searches below then take every piece).
+ * floor by the truncating conversion, which is exact within that range (libm's floor
+ * is a call on baseline x86-64, four a point here); NaN gives -2^40 as before. */
 static long cell_index(double x, double cell)
 {
-    const double c = floor(x / cell), lim = 1099511627776.0;
-    return c >= -lim && c <= lim ? (long)c : c > 0.0 ? (long)lim : -(long)lim;
+    const double q = x / cell, lim = 1099511627776.0;
+    if (q >= -lim && q <= lim) {
+        const long c = (long)q;
+        return (double)c > q ? c - 1 : c;
+    }
+    return q > 0.0 ? (long)lim : -(long)lim;
 }
 
 static unsigned cell_hash(long ix, long iy)
@@ -339,16 +383,19 @@ static int curve_points(const fit_objective *o, const double *v, const double *V
 }
 
 /* The nearest point of piece p to P: signed distance (+ left of the curve's own
- * direction) and arc length. */
+ * direction) and arc length. The polygon's segments farther than the distance so far,
+ * dnow, are left out (beyond_sq): the nearest of the others is the piece's nearest
+ * whenever that is nearer than dnow (else *d may be HUGE_VAL, also not nearer). */
 static int piece_nearest(const fit_objective *o, const double *v, const double *V, size_t nv,
-                         const piece *p, const double *P, int branch_only, double *d, double *s)
+                         const piece *p, const double *P, int branch_only, double dnow, double *d, double *s)
 {
     if (o->map.model == FIT_DISCRETE) {
-        const double h = v[2];
+        const double h = v[2], r2 = beyond_sq(dnow, p->lmax);
         const long j0 = (long)floor(p->s0 / h), j1 = (long)ceil(p->s1 / h);
         double best = HUGE_VAL, bt = 0.0;
         long bj = -1;
         for (long j = j0 < 0 ? 0 : j0; j < j1 && j <= (long)nv - 2; j++) {
+            if (segment_beyond(V + 2 * j, P, r2)) continue;
             double t;
             const double d2 = segment_distance2(V + 2 * j, V + 2 * j + 2, P, &t);
             if (d2 < best) { best = d2; bj = j; bt = t; }
@@ -384,8 +431,17 @@ static int piece_nearest(const fit_objective *o, const double *v, const double *
     return EL_OK;
 }
 
-/* Point i against piece p: searched when its disk comes nearer than the distance so far
- * and it is away from the point's own foot (whose neighbourhood was searched). */
+/* Whether the disk of piece p comes nearer to P than d (the callers' test before
+ * consider, inlined: most pieces a point visits are farther). */
+static inline int disk_reaches(const piece *p, const double *P, double d)
+{
+    const double dx = P[0] - p->cx, dy = P[1] - p->cy, reach = d + p->r;
+    return dx * dx + dy * dy < reach * reach;
+}
+
+/* Point i against piece p, whose disk comes nearer than the distance so far
+ * (disk_reaches): searched when it is away from the point's own foot (whose
+ * neighbourhood was searched). */
 typedef struct own_foot {
     int curve;
     double s, d;
@@ -395,8 +451,6 @@ static int consider(const fit_objective *o, double v[2][FIT_NP], const double *V
                     const piece *p, const double *P, const own_foot *f0, int branch_only, size_t i, double *dist,
                     double *foot, int *side)
 {
-    const double dx = P[0] - p->cx, dy = P[1] - p->cy, reach = fabs(dist[i]) + p->r;
-    if (dx * dx + dy * dy >= reach * reach) return EL_OK;      /* the disk is farther than dist */
     /* pieces already searched: smooth, those at the foot (the distance is convex there);
      * the polygon, those inside the stretch fit_polygon_distances searched */
     const double near = o->map.model == FIT_SMOOTH ? 2.0 * p->r : 2.0 * 1.4142135623730951 * f0->d;
@@ -404,7 +458,7 @@ static int consider(const fit_objective *o, double v[2][FIT_NP], const double *V
                                   ? p->s1 >= f0->s - near && p->s0 <= f0->s + near
                                   : p->s0 >= f0->s - near && p->s1 <= f0->s + near)) return EL_OK;
     double d = HUGE_VAL, s = 0.0;
-    int st = piece_nearest(o, v[p->curve], V[p->curve], nv[p->curve], p, P, branch_only, &d, &s);
+    int st = piece_nearest(o, v[p->curve], V[p->curve], nv[p->curve], p, P, branch_only, fabs(dist[i]), &d, &s);
     if (!st && fabs(d) < fabs(dist[i])) {
         dist[i] = d; foot[i] = s;
         if (side) side[i] = p->curve;
@@ -424,32 +478,34 @@ static int feet_are_nearest(const fit_objective *o, const double *v, const doubl
                             const double *dist)
 {
     if (o->map.ncurves != 1) return 0;
-    double dmax = 0.0, tmin = HUGE_VAL, tmax = -HUGE_VAL, kmax = 0.0, prev = 0.0;
-    for (size_t i = 0; i < o->n; i++) dmax = fmax(dmax, fabs(dist[i]));
-    if (o->map.model == FIT_SMOOTH) {
-        enum { M = 129 };
-        double s[M], th[M], ka[M];
-        el_smooth_params p;
-        for (int j = 0; j < M; j++) s[j] = v[6] * j / (M - 1);
-        if (fit_to_smooth(v, &p) || el_smooth_eval(&p, M, s, NULL, th, ka)) return 0;
-        for (int j = 0; j < M; j++) {
-            tmin = fmin(tmin, th[j]); tmax = fmax(tmax, th[j]);
-            kmax = fmax(kmax, fabs(ka[j]));
-        }
-        /* between samples |kappa| may exceed its sampled maximum by one step's worth */
-        kmax *= 1.5;
-    } else {
+    double tmin = HUGE_VAL, tmax = -HUGE_VAL;
+    if (o->map.model == FIT_DISCRETE) {
+        /* the segments' directions, unwrapped; the span only grows, so the walk stops
+         * once it exceeds pi/2 */
+        double prev = 0.0;
         for (size_t j = 0; j + 1 < nv; j++) {
             double t = atan2(V[2 * j + 3] - V[2 * j + 1], V[2 * j + 2] - V[2 * j]);
-            if (j > 0) {
-                t += 2.0 * M_PI * nearbyint((prev - t) / (2.0 * M_PI));
-                kmax = fmax(kmax, 2.0 / v[2] * fabs(tan(0.5 * (t - prev))));
-            }
+            if (j > 0) t += 2.0 * M_PI * nearbyint((prev - t) / (2.0 * M_PI));
             prev = t;
             tmin = fmin(tmin, t); tmax = fmax(tmax, t);
+            if (tmax - tmin > 0.5 * M_PI) return 0;
         }
+        return tmax - tmin <= 0.5 * M_PI;
     }
-    return tmax - tmin <= 0.5 * M_PI && (o->map.model == FIT_DISCRETE || kmax * dmax <= 0.1);
+    double dmax = 0.0, kmax = 0.0;
+    for (size_t i = 0; i < o->n; i++) dmax = fmax(dmax, fabs(dist[i]));
+    enum { M = 129 };
+    double s[M], th[M], ka[M];
+    el_smooth_params p;
+    for (int j = 0; j < M; j++) s[j] = v[6] * j / (M - 1);
+    if (fit_to_smooth(v, &p) || el_smooth_eval(&p, M, s, NULL, th, ka)) return 0;
+    for (int j = 0; j < M; j++) {
+        tmin = fmin(tmin, th[j]); tmax = fmax(tmax, th[j]);
+        kmax = fmax(kmax, fabs(ka[j]));
+    }
+    /* between samples |kappa| may exceed its sampled maximum by one step's worth */
+    kmax *= 1.5;
+    return tmax - tmin <= 0.5 * M_PI && kmax * dmax <= 0.1;
 }
 
 int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const double *V[2],
@@ -468,11 +524,12 @@ int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const do
         dmed /= (double)cnt;
     }
     double dmax = 0.0;
-    for (size_t i = 0; i < n; i++) dmax = fmax(dmax, fabs(dist[i]));
+    for (size_t i = 0; i < n; i++)
+        if (fabs(dist[i]) > dmax) dmax = fabs(dist[i]);     /* fmax(dmax, |d|), not a call */
     piece *pc = malloc(sizeof(piece) * 2 * MAX_PIECES);
     grid *g = malloc(sizeof(grid));
     unsigned *stamp = malloc(sizeof(unsigned) * 2 * MAX_PIECES);
-    double *sep = malloc(sizeof(double) * 2 * MAX_PIECES);
+    double *sep = malloc(sizeof(double) * 2 * MAX_PIECES * SEP_LEVELS);
     if (!pc || !g || !stamp || !sep) { free(pc); free(g); free(stamp); free(sep); return EL_ENOMEM; }
     int np = 0, st = EL_OK, first[2] = {0, 0}, count[2] = {0, 0};
     double rmax = 0.0;
@@ -480,13 +537,14 @@ int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const do
         first[c] = np;
         if (!(len[c] > 0.0)) continue;
         const int m = (int)fmin(fmax(ceil(len[c] / (2.0 * dmed + 1e-300)), 8.0), (double)MAX_PIECES);
+        const double lmax = o->map.model == FIT_DISCRETE ? longest_segment(V[c], nv[c]) : 0.0;
         double ends[2 * (MAX_PIECES + 1)];
         if ((st = curve_points(o, v[c], V[c], nv[c], len[c], m, ends))) break;
         for (int j = 0; j < m; j++) {
             const double s0 = len[c] * j / m, s1 = len[c] * (j + 1) / m, *a = ends + 2 * j, *b = a + 2;
             piece *p = &pc[np++];
             p->cx = 0.5 * (a[0] + b[0]); p->cy = 0.5 * (a[1] + b[1]);
-            p->r = 0.5 * (s1 - s0); p->s0 = s0; p->s1 = s1; p->curve = c;
+            p->r = 0.5 * (s1 - s0); p->s0 = s0; p->s1 = s1; p->curve = c; p->lmax = lmax;
             rmax = fmax(rmax, p->r);
         }
         count[c] = np - first[c];
@@ -496,12 +554,21 @@ int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const do
         g->used = 0;
         /* cells of the reach of the pair test below: a piece then looks at 3 x 3 cells */
         g->cell = fmax(fmax(2.0 * rmax, 2.0 * dmed), 2.0 * dmax + 2.0 * rmax);
-        for (int j = 0; j < np; j++) { grid_add(g, &pc[j], j); stamp[j] = 0; sep[j] = 0.0; }
+        for (int j = 0; j < np; j++) { grid_add(g, &pc[j], j); stamp[j] = 0; }
+        for (int j = 0; j < np * SEP_LEVELS; j++) sep[j] = 0.0;
+        double reach_l[SEP_LEVELS];     /* 2 dmax / 2^l */
+        reach_l[0] = 2.0 * dmax;
+        for (int l = 1; l < SEP_LEVELS; l++) reach_l[l] = 0.5 * reach_l[l - 1];
         /* for each piece the farthest (in arc length) part of the curve that comes within
          * 2 dmax of it (another curve: HUGE_VAL): only a point whose foot is there and
          * whose own search (a stretch of 2 sqrt 2 d around its foot) did not reach that
          * part can have a nearer point elsewhere. (With the stretch of dmax for every
-         * point, a point nearer than dmax missed a loop passing 5.7 from it, measured.) */
+         * point, a point nearer than dmax missed a loop passing 5.7 from it, measured.)
+         * The same within 2 dmax / 2^l, levels l = 1 .. SEP_LEVELS - 1 (sep[SEP_LEVELS j +
+         * l]): a point at distance d0 can only have a nearer point within 2 d0 of its foot,
+         * so it takes the level of the smallest reach still >= 2 d0 (the same argument,
+         * with its own distance for the largest one: most points of an open arc then need
+         * no search, as the parts within 2 d0 of their foot are next to it along the arc) */
         const unsigned ptag = 0x80000000u;
         for (int j = 0; j < np; j++) {
             const piece *p = &pc[j];
@@ -516,11 +583,15 @@ int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const do
                         const piece *pq = &pc[q];
                         if (stamp[q] == (ptag | (unsigned)j)) continue;
                         stamp[q] = ptag | (unsigned)j;
-                        const double dx = pq->cx - p->cx, dy = pq->cy - p->cy, reach = 2.0 * dmax + p->r + pq->r;
-                        if (dx * dx + dy * dy >= reach * reach) continue;
+                        const double dx = pq->cx - p->cx, dy = pq->cy - p->cy, dd = dx * dx + dy * dy;
                         const double a = pq->curve == p->curve ? fabs(0.5 * (pq->s0 + pq->s1 - p->s0 - p->s1)) : HUGE_VAL;
-                        sep[j] = fmax(sep[j], a);
-                        sep[q] = fmax(sep[q], a);
+                        for (int l = 0; l < SEP_LEVELS; l++) {
+                            const double reach = reach_l[l] + p->r + pq->r;
+                            if (dd >= reach * reach) break;          /* and the smaller reaches */
+                            double *sj = &sep[SEP_LEVELS * j + l], *sq = &sep[SEP_LEVELS * q + l];
+                            if (a > *sj) *sj = a;      /* fmax: sep is never NaN */
+                            if (a > *sq) *sq = a;
+                        }
                     }
         }
         for (int j = 0; j < np; j++) stamp[j] = 0;
@@ -532,10 +603,13 @@ int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const do
             {   /* the foot's piece and its neighbours: near another part? */
                 const int c = side ? side[i] : 0;
                 if (count[c] == 0) continue;
-                const int jf = first[c] + (int)fmin(fmax(floor(foot[i] / (2.0 * pc[first[c]].r)), 0.0), count[c] - 1.0);
+                /* first[c] + floor(foot / piece length) held to the curve's pieces (NaN: 0) */
+                const double at = foot[i] / (2.0 * pc[first[c]].r);
+                const int jf = first[c] + (at > 0.0 ? (at < count[c] - 1.0 ? (int)at : count[c] - 1) : 0);
                 const int lo = jf > first[c] ? jf - 1 : jf, hi = jf + 1 < first[c] + count[c] ? jf + 1 : jf;
-                int any = 0;
-                for (int j = lo; j <= hi; j++) any |= sep[j] > 2.0 * 1.4142135623730951 * d0 + 4.0 * rmax;
+                int any = 0, l = 0;
+                while (l + 1 < SEP_LEVELS && reach_l[l + 1] >= 2.0 * d0) l++;
+                for (int j = lo; j <= hi; j++) any |= sep[SEP_LEVELS * j + l] > 2.0 * 1.4142135623730951 * d0 + 4.0 * rmax;
                 if (!any) continue;
             }
             const long x0 = cell_index(P[0] - d0, g->cell), x1 = cell_index(P[0] + d0, g->cell);
@@ -543,7 +617,9 @@ int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const do
             const unsigned tag = (unsigned)i + 1u;
             const own_foot f0 = {side ? side[i] : 0, foot[i], d0};
             if ((double)(x1 - x0 + 1) * (double)(y1 - y0 + 1) > 4.0 * np) {   /* far: every piece */
-                for (int j = 0; j < np && !st; j++) st = consider(o, v, V, nv, &pc[j], P, &f0, branch_only, i, dist, foot, side);
+                for (int j = 0; j < np && !st; j++)
+                    if (disk_reaches(&pc[j], P, fabs(dist[i])))
+                        st = consider(o, v, V, nv, &pc[j], P, &f0, branch_only, i, dist, foot, side);
                 continue;
             }
             for (long ix = x0; ix <= x1 && !st; ix++)
@@ -552,7 +628,8 @@ int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const do
                         const int j = g->item[e];
                         if (stamp[j] == tag) continue;
                         stamp[j] = tag;
-                        st = consider(o, v, V, nv, &pc[j], P, &f0, branch_only, i, dist, foot, side);
+                        if (disk_reaches(&pc[j], P, fabs(dist[i])))
+                            st = consider(o, v, V, nv, &pc[j], P, &f0, branch_only, i, dist, foot, side);
                     }
         }
     }

@@ -108,16 +108,22 @@ int fit_discrete_rows(const double *v, fit_walk *w, size_t m, double *xy, double
         memcpy(xy, txy, sizeof(double) * 2 * m);
     } else {
         if ((st = el_discrete_jacobian(&p, m + 1, txy, tj))) return st;
+        /* the block's rows moved to the whole curve's, written straight to jac (vertex m,
+         * the next block's start, to w->d after the others have used the old w->d) */
+        double next[2][FIT_NP];
         for (size_t i = 0; i <= m; i++) {
             for (int c = 0; c < 2; c++) {
-                double *r = tj + (2 * i + c) * FIT_NP;
-                r[4] += a * r[5];
-                for (int j = 2; j < FIT_NP; j++) r[j] += w->d[c][j];
+                const double *r = tj + (2 * i + c) * FIT_NP;
+                double *out = i < m ? jac + (2 * i + c) * FIT_NP : next[c];
+                const double *d = w->d[c];
+                out[0] = r[0]; out[1] = r[1];
+                out[2] = r[2] + d[2]; out[3] = r[3] + d[3];
+                out[4] = (r[4] + a * r[5]) + d[4];      /* u_0 = q + a z: dz gains a dq */
+                out[5] = r[5] + d[5]; out[6] = r[6] + d[6];
             }
         }
         if (xy) memcpy(xy, txy, sizeof(double) * 2 * m);
-        memcpy(w->d, tj + 2 * m * FIT_NP, sizeof w->d);
-        memcpy(jac, tj, sizeof(double) * 2 * m * FIT_NP);
+        memcpy(w->d, next, sizeof w->d);
         if (v[6] < 0.0)          /* d/dk of (|k|, q + 2K(|k|)) as a function of k < 0 */
             for (size_t i = 0; i < 2 * m; i++) {
                 double *r = jac + i * FIT_NP;

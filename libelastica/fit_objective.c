@@ -115,6 +115,23 @@ static double dot(const double *a, const double *b, int m)
     for (; r < m; r++) sum += a[r] * b[r];
     return sum;
 }
+
+/* dot(a, b) for a = (1, 0, 1, 0, ...) (parity 0) or (0, 1, 0, 1, ...) (parity 1): the
+ * same partial sums in the same order without the products (by 1: exact; by 0: zeros,
+ * which change no sum but a zero's sign, and fold adds every dot to a sum that starts
+ * at +0, so the sums are the same numbers). */
+static double dot_every_other(const double *b, int m, int parity)
+{
+    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;     /* slot `parity` of dot's pairs */
+    int r = 0;
+    for (; r + 8 <= m; r += 8) {
+        s0 += b[r + parity]; s1 += b[r + 2 + parity]; s2 += b[r + 4 + parity]; s3 += b[r + 6 + parity];
+    }
+    double sum = (s0 + s1) + (s2 + s3);
+    for (; r < m; r++)
+        if ((r & 1) == parity) sum += b[r];
+    return sum;
+}
 #else
 static double dot(const double *a, const double *b, int m)
 {
@@ -127,6 +144,17 @@ static double dot(const double *a, const double *b, int m)
     for (; r < m; r++) s0 += a[r] * b[r];
     return (s0 + s1) + (s2 + s3);
 }
+
+/* dot(a, b) for a = (1, 0, 1, 0, ...) (parity 0) or (0, 1, 0, 1, ...) (parity 1), as above */
+static double dot_every_other(const double *b, int m, int parity)
+{
+    double s[4] = {0.0, 0.0, 0.0, 0.0};
+    int r = 0;
+    for (; r + 4 <= m; r += 4) { s[parity] += b[r + parity]; s[parity + 2] += b[r + 2 + parity]; }
+    for (; r < m; r++)
+        if ((r & 1) == parity) s[0] += b[r];
+    return (s[0] + s[1]) + (s[2] + s[3]);
+}
 #endif
 
 static void fold(sums *s, const double *col, int stride, const double *res, int rows)
@@ -138,9 +166,28 @@ static void fold(sums *s, const double *col, int stride, const double *res, int 
     }
 }
 
-/* Residual rows of paired points: gamma_i - P_g for the m samples, g = first + step i. */
+/* fold for rows (x, y) of points paired with a discrete curve's vertices, whose first
+ * two columns, d/dx0 and d/dy0, are (1, 0, 1, 0, ...) and (0, 1, 0, 1, ...) (not stored:
+ * paired_rows from column 2): their dot products as sums of every other entry (the same
+ * numbers; 15 of the 35 products), their products with each other the counts of ones
+ * (exact, as dot sums them) and 0 (which adds nothing to a sum that starts at +0). */
+static void fold_paired(sums *s, const double *col, int stride, const double *res, int rows)
+{
+    s->A[0][0] += (double)((rows + 1) / 2);
+    s->A[1][1] += (double)(rows / 2);
+    for (int a = 0; a < 2; a++) s->b[a] += dot_every_other(res, rows, a);
+    for (int a = 2; a < FIT_NP; a++) {
+        const double *ca = col + a * stride;
+        s->b[a] += dot(ca, res, rows);
+        for (int b = 0; b <= a; b++)
+            s->A[a][b] += b < 2 ? dot_every_other(ca, rows, b) : dot(ca, col + b * stride, rows);
+    }
+}
+
+/* Residual rows of paired points: gamma_i - P_g for the m samples, g = first + step i;
+ * the Jacobian's columns from j0 on (fold_paired needs none of the first two). */
 static double paired_rows(const fit_objective *o, const double *xy, const double *jac, size_t m,
-                          size_t first, long step, double *col, double *res)
+                          size_t first, long step, int j0, double *col, double *res)
 {
     double f = 0.0;
     const int stride = 2 * FIT_BLOCK;
@@ -152,7 +199,7 @@ static double paired_rows(const fit_objective *o, const double *xy, const double
             const double d = xy[r] - P[c];
             res[r] = d;
             f += d * d;
-            for (int j = 0; j < FIT_NP; j++) col[j * stride + r] = jac[r * FIT_NP + j];
+            for (int j = j0; j < FIT_NP; j++) col[j * stride + r] = jac[r * FIT_NP + j];
         }
     }
     return f;
@@ -174,8 +221,8 @@ static int discrete_paired(fit_objective *o, const double *v, size_t nv, size_t 
         const size_t k0 = done == 0 && skip0 ? 1 : 0;
         const size_t g0 = (size_t)((long)first + step * (long)(done + k0));
         if (want) {
-            *f += paired_rows(o, xy + 2 * k0, jac + 2 * k0 * FIT_NP, m - k0, g0, step, col, res);
-            fold(S, col, 2 * FIT_BLOCK, res, (int)(2 * (m - k0)));
+            *f += paired_rows(o, xy + 2 * k0, jac + 2 * k0 * FIT_NP, m - k0, g0, step, 2, col, res);
+            fold_paired(S, col, 2 * FIT_BLOCK, res, (int)(2 * (m - k0)));
         } else {
             for (size_t i = k0; i < m; i++) {
                 double P[2];
@@ -291,7 +338,7 @@ static int smooth_paired(fit_objective *o, const double *v, int want, sums *S, d
         for (size_t i = 0; i < m; i++) s[i] = o->t[a + i] * v[6];
         if ((st = fit_smooth_rows(v, m, s, xy, want ? jac : NULL))) return st;
         if (want) {
-            *f += paired_rows(o, xy, jac, m, a, 1, col, res);
+            *f += paired_rows(o, xy, jac, m, a, 1, 0, col, res);
             fold(S, col, 2 * FIT_BLOCK, res, (int)(2 * m));
         } else {
             for (size_t i = 0; i < m; i++) {

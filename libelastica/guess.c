@@ -54,10 +54,11 @@ int fit_normalisation(const double *xy, size_t n, double *cx, double *cy, double
 {
     double mx = 0.0, my = 0.0;
     for (size_t i = 0; i < n; i++) { mx += xy[2 * i] / (double)n; my += xy[2 * i + 1] / (double)n; }
-    double amax = 0.0;
+    double amax = 0.0;     /* (the maxima by comparison, which skips NaN as fmax does: no libm call a point) */
     for (size_t i = 0; i < n; i++) {
-        amax = fmax(amax, fabs(xy[2 * i] - mx));
-        amax = fmax(amax, fabs(xy[2 * i + 1] - my));
+        const double ax = fabs(xy[2 * i] - mx), ay = fabs(xy[2 * i + 1] - my);
+        if (ax > amax) amax = ax;
+        if (ay > amax) amax = ay;
     }
     if (amax == 0.0) return EL_ESINGULAR;
     if (!isfinite(amax) || amax < DBL_MIN / DBL_EPSILON || !isfinite(mx) || !isfinite(my)) return EL_EDOM;

@@ -703,3 +703,45 @@ def test_orthogonal_fit_of_loops_no_worse_than_paired(seed):
     p = el.fit(pts, model="smooth", distance="paired")
     assert o.status == 0 and o.distance == "orthogonal"
     assert o.rms <= p.rms * (1 + 1e-9)
+
+
+@pytest.mark.parametrize("model", ["discrete", "smooth"])
+def test_fit_result_curves_are_constructed_ones(model):
+    """fit.py builds the result's curves from the C parameters without the constructor
+    (_make_curve): they must be the curves the constructor makes of the same values
+    (every attribute, type and equality), for fit and fit_keyline."""
+    pts, _ = sketched_s(seed=3, n=60, wobble=0.2)
+    kl = keyline_3d(n=400, seed=1)
+    kf = el.fit_keyline(kl.xyz, model=model)
+    cls = el.DiscreteElastica if model == "discrete" else el.SmoothElastica
+    for r in (el.fit(pts, model=model), kf.first, kf.second):
+        for c in (r.curve, r.initial):
+            made = cls(**vars(c))
+            assert type(c) is cls and c == made and vars(c) == vars(made)
+            assert all(type(v) is float for k, v in vars(c).items() if k != "n")
+            assert model == "smooth" or (type(c.n) is int and c.n == len(r.points))
+            np.testing.assert_array_equal(c.points() if model == "discrete" else c.points(None),
+                                          made.points() if model == "discrete" else made.points(None))
+
+
+@pytest.mark.parametrize("distance", ["paired", "orthogonal"])
+def test_discrete_distances_with_pruned_segments_match_brute_force(distance):
+    """The discrete report leaves out segments provably farther than the distance so far
+    (fit_feet.c: beyond_sq): the distances must still be those of every segment
+    (independent brute force), on evenly spaced noisy samples of open arcs and loops
+    (k 0.3 - 12, 1-3 half periods), 60 - 1000 points, noise 0 - 5 % of the length, the
+    point cloud scaled by 1e-3 - 1e3 (dense and sparse polygons, feet far from their
+    vertices, other turns of a loop nearer)."""
+    rng = np.random.default_rng(11)
+    cases = [(0.3, 1, 60, 0.0, 1.0), (0.9, 2, 200, 0.01, 1e3), (1.5, 3, 1000, 0.01, 1e-3),
+             (4.0, 2, 500, 0.05, 1.0), (12.0, 3, 1000, 0.001, 10.0), (0.6, 3, 400, 0.02, 0.1)]
+    for k, pieces, n, noise, scale in cases:
+        K2 = 2 * ellipk(k * k) if k < 1 else 2 * ellipk(1 / k ** 2) / k
+        c = el.DiscreteElastica(x0=0, y0=0, h=1.0 / n, phi=rng.uniform(-np.pi, np.pi),
+                                z=pieces * K2 * 0.9 / (n - 1), q=rng.uniform(-1, 1), k=k, n=n)
+        clean = scale * c.points()
+        L = polyline_length(clean)
+        pts = clean + rng.normal(0, noise * L / np.sqrt(2), clean.shape)
+        r = el.fit(pts, distance=distance)
+        assert r.distance == distance
+        assert_distances_measured(r, L, rel=1e-12)
