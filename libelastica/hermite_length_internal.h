@@ -37,6 +37,9 @@ typedef struct {
     hrootlist *out;
 } tracer;
 
+/* sinh to a few ulps, faster than libm's (the tracer's coordinates are asinh of the chart's) */
+double el__hlen_sinh(double x);
+
 /* The point (U, V) in the chart of `like` (chart, base, fi, side, b; its w the separatrix
  * chart's starting guess), into *p; counts one evaluation (EL_EMAXITER past the limit). */
 int el__hlen_eval(tracer *T, const cpt *like, double U, double V, cpt *p);

@@ -2,7 +2,7 @@
  * its search range checked against tension-mode solutions, and the default search
  * against a dense one (many more seed lines) over random problems of every kind. */
 #include "testutil.h"
-#include "hermite_internal.h"
+#include "hermite_length_internal.h"
 #include <gsl/gsl_sf_ellint.h>
 #include <gsl/gsl_mode.h>
 #include <stdio.h>
@@ -187,6 +187,24 @@ START_TEST(length_mode_follows_C_where_its_chart_folds)
 }
 END_TEST
 
+/* el__hlen_sinh, the tracer's fast sinh, against libm's over its whole range: both sides
+ * of its switch at 1/2, tiny and huge arguments, the overflow beyond 710 */
+START_TEST(length_mode_fast_sinh_matches_libm)
+{
+    double worst = 0.0;
+    for (double x = 1e-300; x < 800.0; x *= 1.0007) {
+        for (int sg = -1; sg <= 1; sg += 2) {
+            const double r = sinh(sg * x), f = el__hlen_sinh(sg * x);
+            if (isinf(r)) { ck_assert(f == r); continue; }
+            worst = fmax(worst, fabs(f - r) / fabs(r));
+        }
+    }
+    for (double x = 0.49; x < 0.51; x += 1e-6) worst = fmax(worst, fabs(el__hlen_sinh(x) - sinh(x)) / sinh(x));
+    ck_assert_msg(worst < 1e-15, "sinh relative error %g", worst);
+    ck_assert(el__hlen_sinh(0.0) == 0.0 && isnan(el__hlen_sinh(NAN)));
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("hermite_length");
@@ -196,6 +214,7 @@ int main(void)
     tcase_add_test(tc, length_mode_keeps_every_solution_of_a_dense_search);
     tcase_add_test(tc, length_mode_finds_the_solutions_a_bent_predictor_lost);
     tcase_add_test(tc, length_mode_follows_C_where_its_chart_folds);
+    tcase_add_test(tc, length_mode_fast_sinh_matches_libm);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }
