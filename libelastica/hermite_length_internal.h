@@ -34,6 +34,7 @@ typedef struct {
     long evals, max_evals;
     double long_curves;   /* a trace ends where L passes long_curves Lt, increasing */
     double line_power;    /* the seed lines' placement (seeds) */
+    int lean_seeds;       /* seed lines by el__hermite_seed_tension (else el__hermite_solve_tension) */
     hrootlist *out;
 } tracer;
 
