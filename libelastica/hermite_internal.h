@@ -99,6 +99,9 @@ int el__hermite_roots_push(hrootlist *l, const hroot *r);
 /* All roots for the tension pr->sigma (hermite_tension.c), for the length Lt
  * (hermite_length.c): samples per search interval ns, sigma lines ng. */
 int el__hermite_solve_tension(hprob *pr, int ns, hrootlist *out);
+/* The same for the length mode's seed lines: the same roots with fewer samples of the
+ * separatrix pieces where the objective is affine there (hermite_tension.c). */
+int el__hermite_seed_tension(hprob *pr, int ns, hrootlist *out);
 int el__hermite_solve_length(hprob *pr, double Lt, int ng, int ns, hrootlist *out);
 /* The same with every trace followed as far as the former search did (the tests' reference). */
 int el__hermite_solve_length_thorough(hprob *pr, double Lt, int ng, int ns, hrootlist *out);

@@ -489,7 +489,7 @@ static int seeds(tracer *T, int nl, int ns)
         q.sigma = sinh(T->tlo + (T->thi - T->tlo) * frac);
         q.Lmin = 1.0;
         l.n = 0;
-        if ((rc = el__hermite_solve_tension(&q, ns, &l))) break;
+        if ((rc = (T->lean_seeds ? el__hermite_seed_tension : el__hermite_solve_tension)(&q, ns, &l))) break;
         for (size_t i = 0; i < l.n && !rc; i++) {
             if (T->nseed == cap) {
                 cap = cap ? 2 * cap : 16;
@@ -530,7 +530,7 @@ static int seeds(tracer *T, int nl, int ns)
 #define LINE_POWER_THOROUGH 1.5
 
 static int solve_length(hprob *pr, double Lt, int nl, int ns, double long_curves, double line_power,
-                        hrootlist *out)
+                        int lean_seeds, hrootlist *out)
 {
     double slo, shi;
     sigma_range(Lt, &slo, &shi);
@@ -545,6 +545,7 @@ static int solve_length(hprob *pr, double Lt, int nl, int ns, double long_curves
     T.max_evals = MAX_EVALS;
     T.long_curves = long_curves;
     T.line_power = line_power;
+    T.lean_seeds = lean_seeds;
     int rc = seeds(&T, nl, ns);
     for (int i = 0; i < T.nseed && !rc; i++) {
         if (T.visited[i]) continue;
@@ -561,10 +562,10 @@ static int solve_length(hprob *pr, double Lt, int nl, int ns, double long_curves
  * ns bracketing samples each. */
 int el__hermite_solve_length(hprob *pr, double Lt, int nl, int ns, hrootlist *out)
 {
-    return solve_length(pr, Lt, nl, ns, LONG_CURVES, LINE_POWER, out);
+    return solve_length(pr, Lt, nl, ns, LONG_CURVES, LINE_POWER, 1, out);
 }
 
 int el__hermite_solve_length_thorough(hprob *pr, double Lt, int nl, int ns, hrootlist *out)
 {
-    return solve_length(pr, Lt, nl, ns, LONG_CURVES_THOROUGH, LINE_POWER_THOROUGH, out);
+    return solve_length(pr, Lt, nl, ns, LONG_CURVES_THOROUGH, LINE_POWER_THOROUGH, 0, out);
 }

@@ -34,8 +34,12 @@ typedef struct {
     long evals, max_evals;
     double long_curves;   /* a trace ends where L passes long_curves Lt, increasing */
     double line_power;    /* the seed lines' placement (seeds) */
+    int lean_seeds;       /* seed lines by el__hermite_seed_tension (else el__hermite_solve_tension) */
     hrootlist *out;
 } tracer;
+
+/* sinh to a few ulps, faster than libm's (the tracer's coordinates are asinh of the chart's) */
+double el__hlen_sinh(double x);
 
 /* The point (U, V) in the chart of `like` (chart, base, fi, side, b; its w the separatrix
  * chart's starting guess), into *p; counts one evaluation (EL_EMAXITER past the limit). */

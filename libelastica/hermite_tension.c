@@ -240,6 +240,7 @@ typedef struct {
      * starting guess of its Newton (hermite_objective.c) */
     int sep, side;
     double w0, w_start;
+    int lean;   /* the length mode's seeds (el__hermite_seed_tension): solve_sep_piece */
 } fctx;
 
 static void fctx_init(fctx *c, const hprob *pr, int b)
@@ -557,6 +558,25 @@ enum { NSEP = sizeof sep_steps / sizeof sep_steps[0] };
 static int solve_sep_piece(fctx *c, double yc, hrootlist *out)
 {
     double xs[NSEP + REFINE_MAX], fs[NSEP + REFINE_MAX];
+    if (c->lean) {
+        /* the length mode's seeds: the samples between y_c - 40 and y_c - 690 dropped where
+         * the objective is affine there. With eps = |F| - sigma = e^y, the state is analytic
+         * in eps and the length (hence f) is A + B ln eps + O(eps ln eps) (K(m) = ln(4/k')
+         * + O(k'^2 ln k'), k'^2 = eps / (2|F|)): below y_c - 40 (eps < 4e-21 sigma) the
+         * remainder is below rounding, and an affine f has at most the one root the two end
+         * samples bracket. Not so where an end's amplitude tends to pi/2 with eps (kappa0
+         * or kappa1 tending to 0 on the separatrix): the slopes over [y_c - 40, y_c - 20]
+         * and [y_c - 690, y_c - 40] then differ, and the full samples are taken. */
+        static const double lean_steps[] = {0.0, 1.0, 2.5, 5.0, 10.0, 20.0, 40.0, 690.0};
+        enum { NLEAN = sizeof lean_steps / sizeof lean_steps[0] };
+        for (int j = 0; j < NLEAN; j++) {
+            xs[j] = yc - lean_steps[NLEAN - 1 - j];
+            fs[j] = fobj_coarse(c, xs[j]);
+        }
+        const double s1 = (fs[2] - fs[1]) / 20.0, s2 = (fs[1] - fs[0]) / 650.0;
+        const double tol = 1e-6 * (fabs(s1) + fabs(s2) + (fabs(fs[0]) + fabs(fs[1]) + fabs(fs[2])) / 20.0);
+        if (fabs(s1 - s2) <= tol) return solve_samples(c, xs, fs, NLEAN - 1, lean_steps[NLEAN - 1], out);
+    }
     for (int j = 0; j < NSEP; j++) {
         xs[j] = yc - sep_steps[NSEP - 1 - j];
         fs[j] = fobj_coarse(c, xs[j]);
@@ -567,7 +587,7 @@ static int solve_sep_piece(fctx *c, double yc, hrootlist *out)
 /* The end x_end of a piece is a separatrix crossing and the piece runs towards
  * x_end + dir: the separatrix piece next to it, and into *xc the x where the x chart
  * takes over (x_end when there is none). */
-static int separatrix_end(const hprob *pr, int b, double x_end, double dir, double width,
+static int separatrix_end(const hprob *pr, int b, double x_end, double dir, double width, int lean,
                           hrootlist *out, double *xc)
 {
     *xc = x_end;
@@ -581,6 +601,7 @@ static int separatrix_end(const hprob *pr, int b, double x_end, double dir, doub
     fctx c;
     fctx_init(&c, pr, b);
     c.sep = 1;
+    c.lean = lean;
     c.side = d > 0.0 ? 1 : -1;
     c.w0 = c.w_start = xin;
     /* y_c: |F| - sigma = 1e-3 sigma, or half its value mid-piece where the piece does
@@ -613,8 +634,8 @@ static int piece_class(const hprob *pr, int b, double a, double c)
 
 static int nbranches(const hprob *pr) { return pr->hcase == 1 ? 2 : pr->hcase == 2 ? 1 : 4; }
 
-/* All roots of the objectives for fixed sigma (seed 004 §4). */
-int el__hermite_solve_tension(hprob *pr, int ns, hrootlist *out)
+/* All roots of the objectives for fixed sigma (seed 004 §4); lean: solve_sep_piece. */
+static int solve_tension(hprob *pr, int ns, int lean, hrootlist *out)
 {
     int rc = kappa_bound(pr->sigma, pr->Lmin, &pr->B);
     if (rc || pr->B < 0.0) return rc;
@@ -659,8 +680,8 @@ int el__hermite_solve_tension(hprob *pr, int ns, hrootlist *out)
             const double bb = pts[i + 1].x;
             /* separatrix crossings at the ends: the pieces next to them in y (above) */
             double xa = a, xb = bb;
-            if (a_sep && (rc = separatrix_end(pr, b, a, 1.0, bb - a, out, &xa))) return rc;
-            if (pts[i + 1].soft == SPLIT_SEP && (rc = separatrix_end(pr, b, bb, -1.0, bb - xa, out, &xb))) return rc;
+            if (a_sep && (rc = separatrix_end(pr, b, a, 1.0, bb - a, lean, out, &xa))) return rc;
+            if (pts[i + 1].soft == SPLIT_SEP && (rc = separatrix_end(pr, b, bb, -1.0, bb - xa, lean, out, &xb))) return rc;
             /* samples in proportion to the piece's share of the domain, at least 2 */
             const int m = 1 + (int)ceil(ns * (bb - a) / (2.0 * X));
             if ((rc = solve_piece(&c, xa, xb, m > 1000 ? 1000 : m, out))) return rc;
@@ -669,6 +690,10 @@ int el__hermite_solve_tension(hprob *pr, int ns, hrootlist *out)
     return EL_OK;
 }
 
+
+int el__hermite_solve_tension(hprob *pr, int ns, hrootlist *out) { return solve_tension(pr, ns, 0, out); }
+
+int el__hermite_seed_tension(hprob *pr, int ns, hrootlist *out) { return solve_tension(pr, ns, 1, out); }
 
 int el_hermite_analyse(const double P[2], const double V[2], double sigma,
                        el_hermite_analysis *a)

@@ -2,7 +2,7 @@
  * its search range checked against tension-mode solutions, and the default search
  * against a dense one (many more seed lines) over random problems of every kind. */
 #include "testutil.h"
-#include "hermite_internal.h"
+#include "hermite_length_internal.h"
 #include <gsl/gsl_sf_ellint.h>
 #include <gsl/gsl_mode.h>
 #include <stdio.h>
@@ -187,6 +187,74 @@ START_TEST(length_mode_follows_C_where_its_chart_folds)
 }
 END_TEST
 
+/* el__hlen_sinh, the tracer's fast sinh, against libm's over its whole range: both sides
+ * of its switch at 1/2, tiny and huge arguments, the overflow beyond 710 */
+START_TEST(length_mode_fast_sinh_matches_libm)
+{
+    double worst = 0.0;
+    for (double x = 1e-300; x < 800.0; x *= 1.0007) {
+        for (int sg = -1; sg <= 1; sg += 2) {
+            const double r = sinh(sg * x), f = el__hlen_sinh(sg * x);
+            if (isinf(r)) { ck_assert(f == r); continue; }
+            worst = fmax(worst, fabs(f - r) / fabs(r));
+        }
+    }
+    for (double x = 0.49; x < 0.51; x += 1e-6) worst = fmax(worst, fabs(el__hlen_sinh(x) - sinh(x)) / sinh(x));
+    ck_assert_msg(worst < 1e-15, "sinh relative error %g", worst);
+    ck_assert(el__hlen_sinh(0.0) == 0.0 && isnan(el__hlen_sinh(NAN)));
+}
+END_TEST
+
+/* A root of one sigma line in another list: the same curvature data, and near the
+ * separatrix the same |F| - sigma (its states converge there as |F| - sigma -> 0). */
+static int root_listed(const hroot *r, const hrootlist *l)
+{
+    for (size_t i = 0; i < l->n; i++) {
+        const hroot *q = &l->v[i];
+        if (q->b != r->b || !(fabs(q->st.k0 - r->st.k0) <= 1e-7 * (1.0 + fabs(r->st.k0))) ||
+            !(fabs(q->st.k0p - r->st.k0p) <= 1e-7 * (1.0 + fabs(r->st.k0p))))
+            continue;
+        const double a = r->st.has_sep ? r->st.sep : NAN, b = q->st.has_sep ? q->st.sep : NAN;
+        if (isnan(a) != isnan(b)) continue;
+        if (isnan(a) || fabs(log(fabs(a)) - log(fabs(b))) <= 1e-6 * (1.0 + fabs(log(fabs(a))))) return 1;
+    }
+    return 0;
+}
+
+/* The length mode's seed lines (el__hermite_seed_tension: the separatrix pieces sampled
+ * only at y_c - 690 below y_c - 40 where the objective is affine there) against the
+ * tension mode's full search, on lines of the five kinds of random_problem with sigma
+ * from 100 (SEP_SIGMA) to 1e5, log-uniform: the same roots, both ways, among them roots
+ * deep in the separatrix pieces (|F| - sigma below 1e-20 sigma). */
+START_TEST(length_mode_seed_lines_find_every_tension_root)
+{
+    unsigned long long st = 777;
+    size_t n = 0, deep = 0;
+    for (int i = 0; i < 1500; i++) {
+        double Lt;
+        hprob pr = random_problem(&st, i % 5, &Lt), pq;
+        pr.sigma = pow(10.0, test_uniform(&st, 2.0, 5.0));
+        pq = pr;
+        hrootlist full = {NULL, 0, 0}, lean = {NULL, 0, 0};
+        ck_assert_int_eq(el__hermite_solve_tension(&pr, 12, &full), EL_OK);
+        ck_assert_int_eq(el__hermite_seed_tension(&pq, 12, &lean), EL_OK);
+        for (size_t j = 0; j < full.n; j++) {
+            ck_assert_msg(root_listed(&full.v[j], &lean), "problem %d sigma %g: root %zu (kappa0 %g, sep %g) lost", i,
+                          pr.sigma, j, full.v[j].st.k0, full.v[j].st.has_sep ? full.v[j].st.sep : NAN);
+            deep += full.v[j].st.has_sep && fabs(full.v[j].st.sep) < 1e-20 * pr.sigma;
+        }
+        for (size_t j = 0; j < lean.n; j++)
+            ck_assert_msg(root_listed(&lean.v[j], &full), "problem %d sigma %g: root %zu (kappa0 %g) extra", i, pr.sigma,
+                          j, lean.v[j].st.k0);
+        n += full.n;
+        free(full.v);
+        free(lean.v);
+    }
+    fprintf(stderr, "length_mode_seed_lines_find_every_tension_root: %zu roots, %zu deep\n", n, deep);
+    ck_assert_uint_gt(deep, 20);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("hermite_length");
@@ -196,6 +264,8 @@ int main(void)
     tcase_add_test(tc, length_mode_keeps_every_solution_of_a_dense_search);
     tcase_add_test(tc, length_mode_finds_the_solutions_a_bent_predictor_lost);
     tcase_add_test(tc, length_mode_follows_C_where_its_chart_folds);
+    tcase_add_test(tc, length_mode_fast_sinh_matches_libm);
+    tcase_add_test(tc, length_mode_seed_lines_find_every_tension_root);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }
