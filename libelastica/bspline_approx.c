@@ -611,13 +611,23 @@ static int emit(const fit_ws *w, size_t N, const double *breaks, const double *p
 }
 
 /* el_smooth_to_bspline with nfix poles fixed at each end (2: G1 ends, 3: G2 ends). */
-static int smooth_to_bspline(const el_smooth_params *par, double tol, int degree, int nfix,
+static int smooth_to_bspline(const el_smooth_params *par_in, double tol, int degree, int nfix,
                              el_bspline *out)
 {
-    if (!out || el_smooth_check(par) || !isfinite(tol) || !(tol > 0.0) || degree < 3 ||
+    if (!out || el_smooth_check(par_in) || !isfinite(tol) || !(tol > 0.0) || degree < 3 ||
         degree > MAXDEG_FIT)
         return EL_EINVAL;
     el__gsl_quiet();
+    /* A huge angle phi: the same curve with phi in [-pi, pi]. el_smooth_eval rotates the
+     * points by cos, sin phi (exact for any phi) but returns the tangent angle as phi plus
+     * the shape's own turning, which rounds to ~1e-16 |phi| (phi = -3e305: a constant
+     * tangent), and the approximation steers by it (fuzz: 12 s of CPU, 92 poles for a
+     * curve that takes 65). atan2(sin, cos) keeps cos and sin phi to rounding; below
+     * 1e6 (turning exact to 1e-10) phi is kept, so the end poles stay el_smooth_eval's
+     * end points bit for bit. */
+    el_smooth_params reduced = *par_in;
+    if (fabs(reduced.phi) > 1e6) reduced.phi = atan2(sin(reduced.phi), cos(reduced.phi));
+    const el_smooth_params *par = &reduced;
     const int p = degree;
     const double L = par->length;
     if (L == 0.0) {   /* a point: every pole there, exact */
