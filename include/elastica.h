@@ -786,8 +786,10 @@ void el_hermite_options_defaults(el_hermite_options *opt);
  * curvature scales as 1/|p1 - p0|, mu as its square); sigma |p1 - p0|^2 at most 1e5
  * (above, solutions lie closer to the separatrix than the search reaches, |F| - sigma
  * below 1e-300 sigma); any sigma below (very negative: no curve,
- * count 0). Length mode searches the same range of tension: its solutions of higher
- * tension (possible only for length < ~1.06 |p1 - p0|) are not found.
+ * count 0). Length mode seeds its search in the same range of tension and follows the
+ * curves of solutions on up to sigma |p1 - p0|^2 = 1e6: solutions between 1e5 and 1e6
+ * (possible only for length < ~1.06 |p1 - p0|) are returned where such a curve reaches
+ * them, with no completeness claim; none above 1e6.
  * Work, bounded by the options: tension mode evaluates the objective about
  * samples + 14 times per piece between split points (at most 65 pieces per branch,
  * two separatrix pieces of 11 samples at most per piece), plus at most 100
