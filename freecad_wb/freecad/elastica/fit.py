@@ -182,7 +182,8 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
     fitted points, plane coordinates), 'feet' (their nearest points on the curve),
     'distances' (signed, + = left), 'measure', 'rms', 'max_error' (the library's
     point-to-curve figures), 'k', 'status', 'free_rms' (the same fit with free ends;
-    -1 without end conditions) and 'warnings' (end conditions that cost accuracy).
+    -1 without end conditions or when that fit fails) and 'warnings' (end conditions
+    that cost accuracy).
     Raises InputProblem with a user message."""
     n = np()
     if model not in MODELS:
@@ -320,8 +321,8 @@ class FitProxy(FeatureProxy):
                                                "whose B-spline passes through its vertices)")):
             add_property(obj, "App::PropertyFloat", name, "Result", tip)
         add_property(obj, "App::PropertyFloat", "FreeRms", "Result",
-                     "Rms of the same fit with free ends (mm; -1 without end conditions): "
-                     "what the end conditions cost")
+                     "Rms of the same fit with free ends (mm; -1 without end conditions, or "
+                     "when that fit fails): what the end conditions cost")
         add_property(obj, "App::PropertyStringList", "Warnings", "Result",
                      "What the designer should know about this fit (empty: none)")
         add_property(obj, "App::PropertyFloatList", "K", "Result", "Elliptic modulus k of each curve")
