@@ -276,6 +276,65 @@ START_TEST(test_discrete_orthogonal_gradient)
 }
 END_TEST
 
+/* The discrete paired objective's normal equations (fold_paired: the x0, y0 columns not
+ * stored, their products as sums of every other entry and counts of ones) against the
+ * plain g = J^T r / n and H = J^T J / n from el_discrete_jacobian, over three blocks of
+ * the walk on noisy points, for k < 1, k > 1 and -1 < k < 0 (v's k is then -|k| with
+ * q + 2K(|k|): the chain rule dk/dv = -1, dq/dv = -d2K/d|k|). */
+START_TEST(test_discrete_paired_normal_equations_equal_plain_ones)
+{
+    enum { N = 2 * FIT_BLOCK + 37 };
+    static double xy[2 * N], V[2 * N], J[2 * N * FIT_NP];
+    unsigned long long rng = 11;
+    const double ks[] = {0.4, 1.6, -0.5};
+    for (size_t a = 0; a < sizeof ks / sizeof ks[0]; a++) {
+        const double v[FIT_NP] = {0.1, -0.2, 0.004, 0.4, 0.006, 0.3, ks[a]};
+        el_discrete_params p;
+        double dq_dk;
+        ck_assert_int_eq(fit_to_discrete(v, &p, &dq_dk), EL_OK);
+        ck_assert_int_eq(el_discrete_jacobian(&p, N, V, J), EL_OK);
+        for (size_t i = 0; i < 2 * N; i++)   /* noise up to 50 % of a segment */
+            xy[i] = V[i] + 2e-3 * test_uniform(&rng, -1, 1);
+        if (v[6] < 0.0)                      /* d/dv6 = -d/dk - d2K/d|k| d/dq */
+            for (size_t r = 0; r < 2 * N; r++)
+                J[r * FIT_NP + 6] = -J[r * FIT_NP + 6] - dq_dk * J[r * FIT_NP + 5];
+        fit_map m;
+        memset(&m, 0, sizeof m);
+        m.model = FIT_DISCRETE; m.ncurves = 1;
+        for (int j = 0; j < FIT_NP; j++) { m.scale[j] = 1.0; m.idx[m.nx++] = j; }
+        fit_objective o;
+        ck_assert_int_eq(fit_objective_init(&o, FIT_PAIRED, &m, xy, N, 0.0, 0.0, 1.0, NULL), EL_OK);
+        double x[FIT_MAXX];
+        fit_map_inverse(&m, v, x);
+        fit_value val;
+        ck_assert_int_eq(fit_objective_eval(&o, x, 1, &val), EL_OK);
+        /* and the sums of the terms' magnitudes, the scale of their rounding */
+        double f = 0.0, g[FIT_NP] = {0}, H[FIT_NP][FIT_NP] = {{0}}, ga[FIT_NP] = {0}, Ha[FIT_NP][FIT_NP] = {{0}};
+        for (size_t r = 0; r < 2 * N; r++) {
+            const double res = V[r] - xy[r], *row = J + r * FIT_NP;
+            f += res * res;
+            for (int i = 0; i < FIT_NP; i++) {
+                g[i] += row[i] * res;
+                ga[i] += fabs(row[i] * res);
+                for (int j = 0; j <= i; j++) {
+                    H[i][j] += row[i] * row[j];
+                    Ha[i][j] += fabs(row[i] * row[j]);
+                }
+            }
+        }
+        ck_assert_msg(fabs(val.f - f / (2 * N)) <= 1e-12 * val.f, "k %g f %g vs %g", ks[a], val.f, f / (2 * N));
+        for (int i = 0; i < FIT_NP; i++) {
+            ck_assert_msg(fabs(val.g[i] - g[i] / N) <= 1e-12 * ga[i] / N, "k %g g%d %.17g vs %.17g",
+                          ks[a], i, val.g[i], g[i] / N);
+            for (int j = 0; j <= i; j++)
+                ck_assert_msg(fabs(val.H[i * m.nx + j] - H[i][j] / N) <= 1e-12 * Ha[i][j] / N,
+                              "k %g H%d%d %.17g vs %.17g", ks[a], i, j, val.H[i * m.nx + j], H[i][j] / N);
+        }
+        fit_objective_free(&o);
+    }
+}
+END_TEST
+
 /* The orthogonal fit's start searches for nearer branches with branch_only (a step of
  * 1e-7 of the length, the distance to second order): on noisy points along looping
  * curves (k > 1, tangent turning many times, so the search is not skipped) it finds the
@@ -338,6 +397,7 @@ static Suite *suite(void)
     tcase_add_test(tc, test_keyline_map_is_g2_with_its_derivative);
     tcase_add_test(tc, test_start_chart_same_curve_and_derivative);
     tcase_add_test(tc, test_discrete_orthogonal_gradient);
+    tcase_add_test(tc, test_discrete_paired_normal_equations_equal_plain_ones);
     tcase_add_test(tc, test_branch_only_search_equals_full_search);
     suite_add_tcase(s, tc);
     return s;
