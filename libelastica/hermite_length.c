@@ -58,8 +58,9 @@ static void sigma_range(double Lt, double *lo, double *hi)
 /* Newton steps along the gradient of f to the curve f = 0 (|f| below tol, or at a
  * distance |f| / |grad f| below 1e-13 where f is steep); at most maxit evaluations,
  * the count into *its. A step that does not decrease |f| ends it (EL_ENOCONV, as the
- * limit does): Newton converges quadratically here, so such a point is off its basin
- * and the trace's step is rejected anyway (0.5 % of the bench's instructions). */
+ * limit does): Newton converges quadratically from the trace's predictors, so such a
+ * start is off its basin and the callers' fallbacks (a shorter step, another chart)
+ * take over without the remaining evaluations (0.5 % of the bench's instructions). */
 static int correct(tracer *T, cpt *q, double tol, int maxit, int *its)
 {
     double last = INFINITY;
