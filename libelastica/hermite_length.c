@@ -397,7 +397,16 @@ static int trace(tracer *T, int origin, double dir)
         cpt q;
         int its = 0, rc = el__hlen_eval(T, &p, pU, pV, &q);
         if (rc == EL_EMAXITER) return rc;
-        if (!rc) rc = correct(T, &q, TRACE_TOL, 4, &its);
+        /* a predictor whose tangent has turned by more than 45 degrees (cos < 0.7) is
+         * rejected before its corrector: the corrected point, within 0.3 h of it, would
+         * fail the 25-degree test below (0.6 % of the bench's instructions) */
+        int turned = 0;
+        if (!rc) {
+            double tp[2];
+            tangent(&q, tau[0], tau[1], tp);
+            turned = tau[0] * tp[0] + tau[1] * tp[1] < 0.7;
+        }
+        if (!rc && !turned) rc = correct(T, &q, TRACE_TOL, 4, &its);
         if (rc && rc != EL_EMAXITER && T->pr->hcase == 1 && p.chart == HCHART_X) {
             /* where C passes from one branch of (17) to the other in the x chart */
             cpt other = p;
@@ -407,7 +416,7 @@ static int trace(tracer *T, int origin, double dir)
         }
         if (rc == EL_EMAXITER) return rc;
         double tq[2], cosang = 0.0, err = INFINITY;
-        int ok = !rc;
+        int ok = !rc && !turned;
         if (ok) {
             const double dU = q.U - p.U, dV = q.V - p.V;
             tangent(&q, tau[0], tau[1], tq);
