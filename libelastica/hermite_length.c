@@ -308,13 +308,15 @@ static int seed_by_interpolation(const tracer *T, const cpt *p, const double tp[
     if (!t_is_V || !el__hlen_same_chart(p, q) || !(q->V != p->V)) return -1;
     const double D = hypot(q->U - p->U, q->V - p->V);
     double x = (ts - p->V) / (q->V - p->V);
-    for (int it = 0; it < 30; it++) {   /* V(x) = ts by Newton: V is the cubic of x below */
+    for (int it = 0; it < 30; it++) {   /* V(x) = ts by Newton (V the cubic of x below) to |dx| <= 1e-15 */
         const double V = (2 * x * x * x - 3 * x * x + 1) * p->V + (x * x * x - 2 * x * x + x) * D * tp[1] +
                          (-2 * x * x * x + 3 * x * x) * q->V + (x * x * x - x * x) * D * tq[1] - ts;
         const double dV = (6 * x * x - 6 * x) * (p->V - q->V) + (3 * x * x - 4 * x + 1) * D * tp[1] +
                           (3 * x * x - 2 * x) * D * tq[1];
         if (!(fabs(dV) > 0.0)) return -1;
-        x -= V / dV;
+        const double dx = V / dV;
+        x -= dx;
+        if (fabs(dx) <= 1e-15) break;
     }
     if (!(x >= 0.0 && x <= 1.0)) return -1;
     const double U = (2 * x * x * x - 3 * x * x + 1) * p->U + (x * x * x - 2 * x * x + x) * D * tp[0] +
