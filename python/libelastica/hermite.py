@@ -137,22 +137,39 @@ _CALL_STRUCT = _layout([(8 * i, "d") for i in range(8)] +
                        [(8 * 8 + ffi.offsetof("el_hermite_options", n), c)
                         for n, c in (("mode", "i"), ("sigma", "d"), ("length", "d"))])
 _OPT_WORDS = -(-ffi.sizeof("el_hermite_options") // 8)   # the options, in doubles
+_COUNTS_AT = 8 * (8 + _OPT_WORDS)   # (bytes) the count and unrepresentable, after the options
+_SIZE_T = {4: "I", 8: "Q"}[ffi.sizeof("size_t")]
+_COUNTS = _layout([(_COUNTS_AT, _SIZE_T), (_COUNTS_AT + ffi.sizeof("size_t"), _SIZE_T)])
+_solve_into = lib.el_hermite_solve_into
 
 # Per-thread C memory, allocated once (two threads may solve at once): one block of
-# doubles holding the ends p0, t0, p1, t1 and, after them, the options (a call writes
-# both with one pack_into), and the options tol, samples, grid, max_solutions last set
-# (the Python objects, kept alive: the same objects need no new check).
+# doubles holding the ends p0, t0, p1, t1, then the options (a call writes both with
+# one pack_into), then el_hermite_solve_into's count and unrepresentable; the array of
+# solutions with a view of its first n for every n; and the options tol, samples, grid,
+# max_solutions last set (the Python objects, kept alive: the same objects need no
+# new check).
 _local = threading.local()
 _UNSET = object()
 _new_object = object.__new__
 
 
 def _new_state():
-    block = ffi.new("double[]", 8 + _OPT_WORDS)
+    block = ffi.new("double[]", 8 + _OPT_WORDS + 2 * -(-ffi.sizeof("size_t") // 8))
     opt = ffi.cast("el_hermite_options *", block + 8)
     lib.el_hermite_options_defaults(opt)
-    _local.state = (ffi.buffer(block), block, block + 2, block + 4, block + 6, opt,
-                    ffi.new("el_hermite_result *")) + (_UNSET,) * 4
+    counts = ffi.cast("size_t *", block + 8 + _OPT_WORDS)
+    solve_args = (block, block + 2, block + 4, block + 6, opt, None, 0, counts, counts + 1)
+    return _with_capacity((ffi.buffer(block), solve_args, None) + (_UNSET,) * 4, 64)
+
+
+def _with_capacity(state, cap: int):
+    """This thread's state with an array of cap solutions (64, the default max_solutions,
+    then as many as a call returned)."""
+    mem, solve_args, _, *last = state
+    solutions = ffi.new("el_hermite_solution[]", cap)
+    whole = memoryview(ffi.buffer(solutions))
+    _local.state = (mem, solve_args[:5] + (solutions, cap) + solve_args[7:],
+                    [whole[:n * _SOL_SIZE] for n in range(cap + 1)], *last)
     return _local.state
 
 
@@ -220,9 +237,9 @@ def hermite(p0, t0, p1, t1, tension: Optional[float] = None,
     # (This is the binding's hottest path, written for the interpreter: each line
     # below costs tens of instructions, a Python-level call hundreds.)
     try:
-        mem, at_p0, at_t0, at_p1, at_t1, opt, res, last_tol, last_samples, last_grid, last_max = _local.state
+        mem, solve_args, views, last_tol, last_samples, last_grid, last_max = _local.state
     except AttributeError:
-        mem, at_p0, at_t0, at_p1, at_t1, opt, res, last_tol, last_samples, last_grid, last_max = _new_state()
+        mem, solve_args, views, last_tol, last_samples, last_grid, last_max = _new_state()
     if length is None:
         if tension is None:
             raise ValueError("hermite: give exactly one of tension= or length=")
@@ -250,33 +267,32 @@ def hermite(p0, t0, p1, t1, tension: Optional[float] = None,
     # very objects set last time
     if tol is not last_tol or samples is not last_samples or grid is not last_grid \
             or max_solutions is not last_max:
+        opt = solve_args[4]
         opt.tol, opt.samples, opt.grid, opt.max_solutions = (
             as_real(tol, "hermite: tol"), as_int(samples, "hermite: samples"),
             as_int(grid, "hermite: grid"), as_size(max_solutions, "hermite: max_solutions"))
-        _local.state = (mem, at_p0, at_t0, at_p1, at_t1, opt, res, tol, samples, grid, max_solutions)
-    status = lib.el_hermite_solve(at_p0, at_t0, at_p1, at_t1, opt, res)
+        _local.state = (mem, solve_args, views, tol, samples, grid, max_solutions)
+    status = _solve_into(*solve_args)
     if status and status != _EMAXITER:
         if status == _EINVAL:   # say which end is not finite
             _general_ends(p0, t0, p1, t1)
         check(status, "hermite")
+    n, unrepresentable = _COUNTS.unpack_from(mem)
+    if n >= len(views):   # more than this thread's array holds: a larger one, solved again
+        mem, solve_args, views, *_ = _with_capacity(_local.state, n)
+        status = _solve_into(*solve_args)
+    # one SmoothElastica per solution, its attributes stored in the same order every
+    # time (the instances then share one key table)
     out = HermiteSolutions()
-    try:
-        n = res.count
-        if n:
-            # one SmoothElastica per solution, its attributes stored in the same order
-            # every time (the instances then share one key table)
-            for row in _SOL_STRUCT.iter_unpack(ffi.buffer(res.solutions, n * _SOL_SIZE)):
-                e = _new_object(SmoothElastica)
-                (e.x0, e.y0, e.phi, e.mu, e.k, e.q, e.length, _, e.sigma, e.energy_value, infl,
-                 e.kappa0, e.kappa1, e.residual, npieces) = row
-                e.has_inflection = infl != 0
-                out.append(e if npieces == 1 else _chain(row, res.solutions[len(out)]))
-        unrepresentable = res.unrepresentable
-    finally:
-        lib.el_hermite_result_free(res)
+    for row in _SOL_STRUCT.iter_unpack(views[n]):
+        e = _new_object(SmoothElastica)
+        (e.x0, e.y0, e.phi, e.mu, e.k, e.q, e.length, _, e.sigma, e.energy_value, infl,
+         e.kappa0, e.kappa1, e.residual, npieces) = row
+        e.has_inflection = infl != 0
+        out.append(e if npieces == 1 else _chain(row, solve_args[5][len(out)]))
     if unrepresentable:
-        out.unrepresentable = int(unrepresentable)
-        warnings.warn(f"hermite: {out.unrepresentable} more curve(s) exist that no smooth "
+        out.unrepresentable = unrepresentable
+        warnings.warn(f"hermite: {unrepresentable} more curve(s) exist that no smooth "
                       f"parameters meet to tol={tol:g} (too close to the separatrix |k| = 1); "
                       "a larger tol returns them", RuntimeWarning, stacklevel=2)
     if status:
