@@ -123,12 +123,17 @@ _TUPLES_OF_FLOATS = (tuple,) * 4 + (float,) * 8
 def _layout(fields, size: int = 0) -> struct.Struct:
     """The struct format of a C layout from its (byte offset, struct code) fields
     (offsets from cffi, so never retyped by hand); the bytes between them, and up to
-    size, are padding."""
-    fmt, pos = "=", 0
+    size, are padding. Native mode ("@": the library's own byte order and sizes, and
+    struct's fastest conversions); the fields sit at the C offsets, so its alignment
+    adds nothing (checked)."""
+    fmt, pos = "@", 0
     for off, code in sorted(fields):
         fmt += f"{off - pos}x{code}" if off > pos else code
-        pos = off + struct.calcsize("=" + code)
-    return struct.Struct(fmt + (f"{size - pos}x" if size > pos else ""))
+        pos = off + struct.calcsize("@" + code)
+    layout = struct.Struct(fmt + (f"{size - pos}x" if size > pos else ""))
+    if layout.size != max(size, pos):
+        raise ImportError(f"libelastica: struct layout {fmt} does not match the C one")
+    return layout
 
 
 # a call's varying inputs, written into this thread's block (below) by one pack_into:
@@ -173,14 +178,14 @@ def _with_capacity(state, cap: int):
     return _local.state
 
 
-# el_hermite_solution unpacked in one go: curve and the scalars (a chain's further
-# pieces, rare, are read from the C struct)
+# el_hermite_solution unpacked in one go: curve and the scalars but length (curve's
+# for one piece; a chain's, and its further pieces, rare, are read from the C struct)
 _SOL_SIZE = ffi.sizeof("el_hermite_solution")
 _SOL_STRUCT = _layout(
     [(ffi.offsetof("el_hermite_solution", "curve") + ffi.offsetof("el_smooth_params", n), "d")
      for n in SMOOTH_PARAMS] +
     [(ffi.offsetof("el_hermite_solution", n), "i" if n in ("has_inflection", "npieces") else "d")
-     for n in ("length", "sigma", "energy", "has_inflection", "kappa0", "kappa1", "residual", "npieces")],
+     for n in ("sigma", "energy", "has_inflection", "kappa0", "kappa1", "residual", "npieces")],
     _SOL_SIZE)
 
 
@@ -193,7 +198,7 @@ def _piece(values) -> SmoothElastica:
 
 def _chain(row, c) -> HermiteChain:
     """The HermiteChain of an unpacked row and its C struct c (for the further pieces)."""
-    _, _, _, _, _, _, _, _, sigma, energy, infl, kappa0, kappa1, residual, npieces = row
+    sigma, energy, infl, kappa0, kappa1, residual, npieces = row[7:]
     rest = [_piece([getattr(c.rest[i], n) for n in SMOOTH_PARAMS]) for i in range(npieces - 1)]
     return HermiteChain([_piece(row[:7])] + rest, sigma=sigma, energy_value=energy,
                         has_inflection=bool(infl), kappa0=kappa0, kappa1=kappa1, residual=residual)
@@ -286,7 +291,7 @@ def hermite(p0, t0, p1, t1, tension: Optional[float] = None,
     out = HermiteSolutions()
     for row in _SOL_STRUCT.iter_unpack(views[n]):
         e = _new_object(SmoothElastica)
-        (e.x0, e.y0, e.phi, e.mu, e.k, e.q, e.length, _, e.sigma, e.energy_value, infl,
+        (e.x0, e.y0, e.phi, e.mu, e.k, e.q, e.length, e.sigma, e.energy_value, infl,
          e.kappa0, e.kappa1, e.residual, npieces) = row
         e.has_inflection = infl != 0
         out.append(e if npieces == 1 else _chain(row, solve_args[5][len(out)]))
