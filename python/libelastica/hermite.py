@@ -2,7 +2,6 @@
 point with a tangent to a point with a tangent, by tension or by length."""
 from __future__ import annotations
 
-import math
 import struct
 import threading
 import warnings
@@ -136,6 +135,17 @@ def _layout(fields, size: int = 0) -> struct.Struct:
     return layout
 
 
+# el_hermite_solution unpacked in one go: curve and the scalars but length (curve's
+# for one piece; a chain's, and its further pieces, rare, are read from the C struct)
+_SOL_SIZE = ffi.sizeof("el_hermite_solution")
+_SOL_STRUCT = _layout(
+    [(ffi.offsetof("el_hermite_solution", "curve") + ffi.offsetof("el_smooth_params", n), "d")
+     for n in SMOOTH_PARAMS] +
+    [(ffi.offsetof("el_hermite_solution", n), "i" if n in ("has_inflection", "npieces") else "d")
+     for n in ("sigma", "energy", "has_inflection", "kappa0", "kappa1", "residual", "npieces")],
+    _SOL_SIZE)
+
+
 # a call's varying inputs, written into this thread's block (below) by one pack_into:
 # the eight floats of the ends, then the options' mode, sigma and length
 _CALL_STRUCT = _layout([(8 * i, "d") for i in range(8)] +
@@ -143,8 +153,7 @@ _CALL_STRUCT = _layout([(8 * i, "d") for i in range(8)] +
                         for n, c in (("mode", "i"), ("sigma", "d"), ("length", "d"))])
 _OPT_WORDS = -(-ffi.sizeof("el_hermite_options") // 8)   # the options, in doubles
 _COUNTS_AT = 8 * (8 + _OPT_WORDS)   # (bytes) the count and unrepresentable, after the options
-_SIZE_T = {4: "I", 8: "Q"}[ffi.sizeof("size_t")]
-_COUNTS = _layout([(_COUNTS_AT, _SIZE_T), (_COUNTS_AT + ffi.sizeof("size_t"), _SIZE_T)])
+_COUNTS = _layout([(_COUNTS_AT, "N"), (_COUNTS_AT + ffi.sizeof("size_t"), "N")])   # (N: size_t)
 _solve_into = lib.el_hermite_solve_into
 
 # Per-thread C memory, allocated once (two threads may solve at once): one block of
@@ -159,6 +168,7 @@ _new_object = object.__new__
 
 
 def _new_state():
+    """This thread's state, made on its first call."""
     block = ffi.new("double[]", 8 + _OPT_WORDS + 2 * -(-ffi.sizeof("size_t") // 8))
     opt = ffi.cast("el_hermite_options *", block + 8)
     lib.el_hermite_options_defaults(opt)
@@ -176,17 +186,6 @@ def _with_capacity(state, cap: int):
     _local.state = (mem, solve_args[:5] + (solutions, cap) + solve_args[7:],
                     [whole[:n * _SOL_SIZE] for n in range(cap + 1)], *last)
     return _local.state
-
-
-# el_hermite_solution unpacked in one go: curve and the scalars but length (curve's
-# for one piece; a chain's, and its further pieces, rare, are read from the C struct)
-_SOL_SIZE = ffi.sizeof("el_hermite_solution")
-_SOL_STRUCT = _layout(
-    [(ffi.offsetof("el_hermite_solution", "curve") + ffi.offsetof("el_smooth_params", n), "d")
-     for n in SMOOTH_PARAMS] +
-    [(ffi.offsetof("el_hermite_solution", n), "i" if n in ("has_inflection", "npieces") else "d")
-     for n in ("sigma", "energy", "has_inflection", "kappa0", "kappa1", "residual", "npieces")],
-    _SOL_SIZE)
 
 
 def _piece(values) -> SmoothElastica:
