@@ -288,6 +288,21 @@ el_bspline fz_bspline(fz_in *in, int dim)
     return b;
 }
 
+el_hermite_options fz_hermite_options(fz_in *in)
+{
+    el_hermite_options o;
+    el_hermite_options_defaults(&o);
+    if (fz_byte(in) % 2) o.mode = EL_HERMITE_LENGTH;
+    if (fz_byte(in) % 4 == 0) o.mode = fz_int(in);
+    o.sigma = fz_range(in, -20, 60);
+    o.length = fz_range(in, 0.5, 10);
+    if (fz_byte(in) % 4 == 0) o.tol = fz_double(in);
+    if (fz_byte(in) % 4 == 0) o.samples = fz_int(in);
+    if (fz_byte(in) % 4 == 0) o.grid = fz_int(in);
+    if (fz_byte(in) % 4 == 0) o.max_solutions = fz_request(in, 100);
+    return o;
+}
+
 el_fit_options fz_fit_options(fz_in *in)
 {
     el_fit_options o;
@@ -404,6 +419,18 @@ void fz_check_finite(const double *v, size_t n, const char *what)
             fz_finding("non-finite", "EL_OK (or a best result) with %s[%zu] = %g", what, i, v[i]);
             return;
         }
+}
+
+void fz_check_hermite_solutions(const el_hermite_solution *s, size_t n)
+{
+    for (size_t i = 0; i < n; i++) {
+        FZ_FINITE(&s[i].curve.x0, 7);
+        FZ_FINITE(&s[i].length, 3);
+        FZ_FINITE(&s[i].kappa0, 3);
+        const int np = s[i].npieces;
+        if (np < 1 || np > 3) fz_finding("output", "npieces %d", np);
+        else if (np > 1) FZ_FINITE(&s[i].rest[0].x0, 7 * (size_t)(np - 1));
+    }
 }
 
 static const unsigned char CANARY = 0xA5;

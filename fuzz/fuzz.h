@@ -54,6 +54,9 @@ unsigned fz_nulls(fz_in *in);
 double fz_modulus(fz_in *in);
 /* Fit options from the input: fixed parameters, bounds, tol, counts. */
 el_fit_options fz_fit_options(fz_in *in);
+/* Hermite options from the input: either mode, sigma and length in range mostly,
+ * sometimes a bad mode, tol, samples, grid or max_solutions. */
+el_hermite_options fz_hermite_options(fz_in *in);
 el_smooth_params fz_smooth(fz_in *in);
 el_discrete_params fz_discrete(fz_in *in);
 /* A B-spline built from the input: usually valid (clamped, degree 1..7),
@@ -79,6 +82,9 @@ void fz_finding(const char *kind, const char *fmt, ...);
 /* Every one of the n values is finite, else a "non-finite" finding naming what. */
 void fz_check_finite(const double *v, size_t n, const char *what);
 #define FZ_FINITE(v, n) fz_check_finite((v), (n), #v)
+
+/* Every solution's parameters and scalars finite, npieces 1..3 and its pieces finite. */
+void fz_check_hermite_solutions(const el_hermite_solution *s, size_t n);
 
 /* Canary bytes for outputs documented as untouched on error. */
 void fz_canary(void *p, size_t bytes);

@@ -812,6 +812,22 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
 void el_hermite_result_free(el_hermite_result *res);
 
 /*
+ * el_hermite_solve into the caller's memory, for a caller that solves many problems
+ * into one reusable array (the Python binding: one call per problem, no allocation or
+ * free crossing it). The solutions el_hermite_solve returns are copied to
+ * solutions[0 .. min(*count, cap)), lowest energy first; *count is how many there are
+ * (> cap: only the first cap are written; call again with an array of *count) and
+ * *unrepresentable as el_hermite_result's. Nothing to free; solutions may be NULL when
+ * cap is 0. Statuses as el_hermite_solve's: EL_EINVAL (also count or unrepresentable
+ * NULL, or solutions NULL with cap > 0) writes nothing; EL_EMAXITER writes the
+ * solutions found; other errors set *count = *unrepresentable = 0.
+ */
+int el_hermite_solve_into(const double p0[2], const double t0[2], const double p1[2],
+                          const double t1[2], const el_hermite_options *opt,
+                          el_hermite_solution *solutions, size_t cap, size_t *count,
+                          size_t *unrepresentable);
+
+/*
  * Diagnostics of the normalised tension problem (seed 004 §4-5): data
  * P = x(L), V = x'(L) after the normalisation x(0) = 0, x'(0) = (0,1), |P| = 1.
  * hcase: 1, 2 or 3 (Theorem 6); kappa_bound: |kappa_m| <= kappa_bound for all

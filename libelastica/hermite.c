@@ -567,3 +567,19 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
     return status;
 }
 
+int el_hermite_solve_into(const double p0[2], const double t0[2], const double p1[2],
+                          const double t1[2], const el_hermite_options *opt,
+                          el_hermite_solution *solutions, size_t cap, size_t *count,
+                          size_t *unrepresentable)
+{
+    if (!count || !unrepresentable || (cap > 0 && !solutions)) return EL_EINVAL;
+    el_hermite_result res;
+    const int status = el_hermite_solve(p0, t0, p1, t1, opt, &res);
+    if (status == EL_EINVAL) return status;   /* res untouched */
+    const size_t n = res.count < cap ? res.count : cap;
+    if (n > 0) memcpy(solutions, res.solutions, n * sizeof *solutions);
+    *count = res.count;
+    *unrepresentable = res.unrepresentable;
+    el_hermite_result_free(&res);
+    return status;
+}

@@ -2,7 +2,6 @@
 point with a tangent to a point with a tangent, by tension or by length."""
 from __future__ import annotations
 
-import math
 import struct
 import threading
 import warnings
@@ -114,53 +113,79 @@ def _vec2(v, name: str):
     return float(a[0]), float(a[1])
 
 
-_FOUR_TUPLES, _FLOAT = (tuple,) * 4, {float}
-
-
-def _ends(p0, t0, p1, t1):
-    """The eight floats (p0, t0, p1, t1) of the C call: tuples of two Python floats
-    directly (the common case; el_hermite_solve refuses non-finite values, and
-    hermite() then explains by _vec2), anything else through _vec2."""
-    if (p0.__class__, t0.__class__, p1.__class__, t1.__class__) == _FOUR_TUPLES:
-        v = p0 + t0 + p1 + t1
-        if len(v) == 8 and len(p0) == len(p1) == len(t1) == 2 and set(map(type, v)) == _FLOAT:
-            return v
-    return _vec2(p0, "p0") + _vec2(t0, "t0") + _vec2(p1, "p1") + _vec2(t1, "t1")
-
-
 _TENSION, _LENGTH = lib.EL_HERMITE_TENSION, lib.EL_HERMITE_LENGTH
 _EINVAL, _EMAXITER = lib.EL_EINVAL, lib.EL_EMAXITER
-
-# Per-thread C buffers, allocated once (two threads may solve at once).
-_local = threading.local()
-
-
-def _new_buffers():
-    opt = ffi.new("el_hermite_options *")
-    lib.el_hermite_options_defaults(opt)
-    buf = ffi.new("double[8]")
-    _local.rest = None
-    _local.buffers = (opt, ffi.new("el_hermite_result *"), buf, buf + 2, buf + 4, buf + 6)
-    return _local.buffers
+# the classes of hermite()'s fast path: four tuples of two Python floats
+_TUPLES_OF_FLOATS = (tuple,) * 4 + (float,) * 8
 
 
-# el_hermite_solution unpacked in one go by a struct format built from cffi's layout:
-# curve and the scalars (a chain's further pieces, rare, are read from the C struct)
-def _solution_struct():
-    curve = ffi.offsetof("el_hermite_solution", "curve")
-    fields = [(curve + ffi.offsetof("el_smooth_params", n), "d") for n in SMOOTH_PARAMS]
-    fields += [(ffi.offsetof("el_hermite_solution", n), "i" if n in ("has_inflection", "npieces") else "d")
-               for n in ("length", "sigma", "energy", "has_inflection", "kappa0", "kappa1", "residual",
-                         "npieces")]
-    fmt, pos = "=", 0
+def _layout(fields, size: int = 0) -> struct.Struct:
+    """The struct format of a C layout from its (byte offset, struct code) fields
+    (offsets from cffi, so never retyped by hand); the bytes between them, and up to
+    size, are padding. Native mode ("@": the library's own byte order and sizes, and
+    struct's fastest conversions); the fields sit at the C offsets, so its alignment
+    adds nothing (checked)."""
+    fmt, pos = "@", 0
     for off, code in sorted(fields):
         fmt += f"{off - pos}x{code}" if off > pos else code
-        pos = off + struct.calcsize("=" + code)
-    size = ffi.sizeof("el_hermite_solution")
-    return struct.Struct(fmt + (f"{size - pos}x" if size > pos else "")), size
+        pos = off + struct.calcsize("@" + code)
+    layout = struct.Struct(fmt + (f"{size - pos}x" if size > pos else ""))
+    if layout.size != max(size, pos):
+        raise ImportError(f"libelastica: struct layout {fmt} does not match the C one")
+    return layout
 
 
-_SOL_STRUCT, _SOL_SIZE = _solution_struct()
+# el_hermite_solution unpacked in one go: curve and the scalars but length (curve's
+# for one piece; a chain's, and its further pieces, rare, are read from the C struct)
+_SOL_SIZE = ffi.sizeof("el_hermite_solution")
+_SOL_STRUCT = _layout(
+    [(ffi.offsetof("el_hermite_solution", "curve") + ffi.offsetof("el_smooth_params", n), "d")
+     for n in SMOOTH_PARAMS] +
+    [(ffi.offsetof("el_hermite_solution", n), "i" if n in ("has_inflection", "npieces") else "d")
+     for n in ("sigma", "energy", "has_inflection", "kappa0", "kappa1", "residual", "npieces")],
+    _SOL_SIZE)
+
+
+# a call's varying inputs, written into this thread's block (below) by one pack_into:
+# the eight floats of the ends, then the options' mode, sigma and length
+_CALL_STRUCT = _layout([(8 * i, "d") for i in range(8)] +
+                       [(8 * 8 + ffi.offsetof("el_hermite_options", n), c)
+                        for n, c in (("mode", "i"), ("sigma", "d"), ("length", "d"))])
+_OPT_WORDS = -(-ffi.sizeof("el_hermite_options") // 8)   # the options, in doubles
+_COUNTS_AT = 8 * (8 + _OPT_WORDS)   # (bytes) the count and unrepresentable, after the options
+_COUNTS = _layout([(_COUNTS_AT, "N"), (_COUNTS_AT + ffi.sizeof("size_t"), "N")])   # (N: size_t)
+_solve_into = lib.el_hermite_solve_into
+
+# Per-thread C memory, allocated once (two threads may solve at once): one block of
+# doubles holding the ends p0, t0, p1, t1, then the options (a call writes both with
+# one pack_into), then el_hermite_solve_into's count and unrepresentable; the array of
+# solutions with a view of its first n for every n; and the options tol, samples, grid,
+# max_solutions last set (the Python objects, kept alive: the same objects need no
+# new check).
+_local = threading.local()
+_UNSET = object()
+_new_object = object.__new__
+
+
+def _new_state():
+    """This thread's state, made on its first call."""
+    block = ffi.new("double[]", 8 + _OPT_WORDS + 2 * -(-ffi.sizeof("size_t") // 8))
+    opt = ffi.cast("el_hermite_options *", block + 8)
+    lib.el_hermite_options_defaults(opt)
+    counts = ffi.cast("size_t *", block + 8 + _OPT_WORDS)
+    solve_args = (block, block + 2, block + 4, block + 6, opt, None, 0, counts, counts + 1)
+    return _with_capacity((ffi.buffer(block), solve_args, None) + (_UNSET,) * 4, 64)
+
+
+def _with_capacity(state, cap: int):
+    """This thread's state with an array of cap solutions (64, the default max_solutions,
+    then as many as a call returned)."""
+    mem, solve_args, _, *last = state
+    solutions = ffi.new("el_hermite_solution[]", cap)
+    whole = memoryview(ffi.buffer(solutions))
+    _local.state = (mem, solve_args[:5] + (solutions, cap) + solve_args[7:],
+                    [whole[:n * _SOL_SIZE] for n in range(cap + 1)], *last)
+    return _local.state
 
 
 def _piece(values) -> SmoothElastica:
@@ -170,25 +195,17 @@ def _piece(values) -> SmoothElastica:
     return e
 
 
-def _solution(row, i, _new=object.__new__, _cls=SmoothElastica):
-    """The SmoothElastica (or HermiteChain) of one unpacked el_hermite_solution, the
-    i-th of this thread's result. (Attributes are stored one by one, always in the same
-    order: Python then shares one key table among the instances, the fastest way.)"""
-    if row[14] != 1:
-        return _chain(row, _local.buffers[1].solutions[i])
-    e = _new(_cls)
-    (e.x0, e.y0, e.phi, e.mu, e.k, e.q, e.length, _, e.sigma, e.energy_value, infl,
-     e.kappa0, e.kappa1, e.residual, _) = row
-    e.has_inflection = infl != 0
-    return e
-
-
 def _chain(row, c) -> HermiteChain:
     """The HermiteChain of an unpacked row and its C struct c (for the further pieces)."""
-    _, _, _, _, _, _, _, _, sigma, energy, infl, kappa0, kappa1, residual, npieces = row
+    sigma, energy, infl, kappa0, kappa1, residual, npieces = row[7:]
     rest = [_piece([getattr(c.rest[i], n) for n in SMOOTH_PARAMS]) for i in range(npieces - 1)]
     return HermiteChain([_piece(row[:7])] + rest, sigma=sigma, energy_value=energy,
                         has_inflection=bool(infl), kappa0=kappa0, kappa1=kappa1, residual=residual)
+
+
+def _general_ends(p0, t0, p1, t1):
+    """The eight floats of ends that are not four tuples of two Python floats."""
+    return _vec2(p0, "p0") + _vec2(t0, "t0") + _vec2(p1, "p1") + _vec2(t1, "t1")
 
 
 def hermite(p0, t0, p1, t1, tension: Optional[float] = None,
@@ -221,52 +238,69 @@ def hermite(p0, t0, p1, t1, tension: Optional[float] = None,
     reaches its work limit the solutions found so far are returned with a
     RuntimeWarning and ``complete = False``.
     """
-    if (tension is None) == (length is None):
-        raise ValueError("hermite: give exactly one of tension= or length=")
+    # (This is the binding's hottest path, written for the interpreter: each line
+    # below costs tens of instructions, a Python-level call hundreds.)
     try:
-        opt, res, buf, at_t0, at_p1, at_t1 = _local.buffers
+        mem, solve_args, views, last_tol, last_samples, last_grid, last_max = _local.state
     except AttributeError:
-        opt, res, buf, at_t0, at_p1, at_t1 = _new_buffers()
-    buf[0:8] = _ends(p0, t0, p1, t1)
-    if tension is not None:
-        opt.mode = _TENSION
-        opt.sigma = tension if tension.__class__ is float and tension - tension == 0.0 \
-            else as_real(tension, "hermite: tension")   # (x - x is NaN for NaN and inf)
+        mem, solve_args, views, last_tol, last_samples, last_grid, last_max = _new_state()
+    if length is None:
+        if tension is None:
+            raise ValueError("hermite: give exactly one of tension= or length=")
+        mode, sigma, length = _TENSION, tension, 0.0
+        if sigma.__class__ is not float or sigma - sigma != 0.0:   # (x - x: NaN for NaN, inf)
+            sigma = as_real(sigma, "hermite: tension")
     else:
-        opt.mode = _LENGTH
-        opt.length = length if length.__class__ is float and length - length == 0.0 \
-            else as_real(length, "hermite: length")
-    # the options that rarely change are checked and set only when they do (the same
-    # values of the same exact types as last time were valid then)
-    rest = (tol, samples, grid, max_solutions)
-    if rest != _local.rest or tol.__class__ is not float or samples.__class__ is not int \
-            or grid.__class__ is not int or max_solutions.__class__ is not int:
+        if tension is not None:
+            raise ValueError("hermite: give exactly one of tension= or length=")
+        mode, sigma = _LENGTH, 0.0
+        if length.__class__ is not float or length - length != 0.0:
+            length = as_real(length, "hermite: length")
+    # the ends: four tuples of two Python floats directly (el_hermite_solve refuses
+    # non-finite values, and _vec2 then says which), anything else through _vec2
+    try:
+        (x0, y0), (tx0, ty0), (x1, y1), (tx1, ty1) = p0, t0, p1, t1
+    except (TypeError, ValueError):   # not four pairs
+        x0 = y0 = tx0 = ty0 = x1 = y1 = tx1 = ty1 = None
+    if (p0.__class__, t0.__class__, p1.__class__, t1.__class__, x0.__class__, y0.__class__,
+            tx0.__class__, ty0.__class__, x1.__class__, y1.__class__, tx1.__class__,
+            ty1.__class__) != _TUPLES_OF_FLOATS:
+        x0, y0, tx0, ty0, x1, y1, tx1, ty1 = _general_ends(p0, t0, p1, t1)
+    _CALL_STRUCT.pack_into(mem, 0, x0, y0, tx0, ty0, x1, y1, tx1, ty1, mode, sigma, length)
+    # the options that rarely change are checked and set only when they are not the
+    # very objects set last time
+    if tol is not last_tol or samples is not last_samples or grid is not last_grid \
+            or max_solutions is not last_max:
+        opt = solve_args[4]
         opt.tol, opt.samples, opt.grid, opt.max_solutions = (
             as_real(tol, "hermite: tol"), as_int(samples, "hermite: samples"),
             as_int(grid, "hermite: grid"), as_size(max_solutions, "hermite: max_solutions"))
-        _local.rest = rest
-    status = lib.el_hermite_solve(buf, at_t0, at_p1, at_t1, opt, res)
+        _local.state = (mem, solve_args, views, tol, samples, grid, max_solutions)
+    status = _solve_into(*solve_args)
     if status and status != _EMAXITER:
-        if status == _EINVAL:   # _ends left finiteness to C: say which end is not finite
-            _vec2(p0, "p0"), _vec2(t0, "t0"), _vec2(p1, "p1"), _vec2(t1, "t1")
+        if status == _EINVAL:   # say which end is not finite
+            _general_ends(p0, t0, p1, t1)
         check(status, "hermite")
+    n, unrepresentable = _COUNTS.unpack_from(mem)
+    if n >= len(views):   # more than this thread's array holds: a larger one, solved again
+        mem, solve_args, views, *_ = _with_capacity(_local.state, n)
+        status = _solve_into(*solve_args)
+    # one SmoothElastica per solution, its attributes stored in the same order every
+    # time (the instances then share one key table)
     out = HermiteSolutions()
-    try:
-        n = res.count
-        if n:
-            out.extend(map(_solution, _SOL_STRUCT.iter_unpack(ffi.buffer(res.solutions, n * _SOL_SIZE)),
-                           range(n)))
-        if res.unrepresentable:
-            out.unrepresentable = int(res.unrepresentable)
-    finally:
-        lib.el_hermite_result_free(res)
-    if status == _EMAXITER:
-        out.complete = False
-    if out.unrepresentable:
-        warnings.warn(f"hermite: {out.unrepresentable} more curve(s) exist that no smooth "
+    for row in _SOL_STRUCT.iter_unpack(views[n]):
+        e = _new_object(SmoothElastica)
+        (e.x0, e.y0, e.phi, e.mu, e.k, e.q, e.length, e.sigma, e.energy_value, infl,
+         e.kappa0, e.kappa1, e.residual, npieces) = row
+        e.has_inflection = infl != 0
+        out.append(e if npieces == 1 else _chain(row, solve_args[5][len(out)]))
+    if unrepresentable:
+        out.unrepresentable = unrepresentable
+        warnings.warn(f"hermite: {unrepresentable} more curve(s) exist that no smooth "
                       f"parameters meet to tol={tol:g} (too close to the separatrix |k| = 1); "
                       "a larger tol returns them", RuntimeWarning, stacklevel=2)
-    if not out.complete:
+    if status:
+        out.complete = False
         warnings.warn(f"hermite: length mode reached its work limit; the {len(out)} solution(s) "
                       "found so far are returned (the list's complete is False)",
                       RuntimeWarning, stacklevel=2)

@@ -845,6 +845,93 @@ START_TEST(each_status_from_its_cause)
 }
 END_TEST
 
+/* Every field of two solutions equal (the same solver run twice is deterministic);
+ * not memcmp: the structs' padding bytes are not part of the result. */
+static void assert_same_solution(const el_hermite_solution *a, const el_hermite_solution *b)
+{
+    const el_smooth_params *pa[3] = {&a->curve, &a->rest[0], &a->rest[1]};
+    const el_smooth_params *pb[3] = {&b->curve, &b->rest[0], &b->rest[1]};
+    for (int i = 0; i < 3; i++)
+        ck_assert(pa[i]->x0 == pb[i]->x0 && pa[i]->y0 == pb[i]->y0 && pa[i]->phi == pb[i]->phi &&
+                  pa[i]->mu == pb[i]->mu && pa[i]->k == pb[i]->k && pa[i]->q == pb[i]->q &&
+                  pa[i]->length == pb[i]->length);
+    ck_assert(a->length == b->length && a->sigma == b->sigma && a->energy == b->energy &&
+              a->has_inflection == b->has_inflection && a->kappa0 == b->kappa0 &&
+              a->kappa1 == b->kappa1 && a->residual == b->residual && a->npieces == b->npieces);
+}
+
+/* el_hermite_solve_into gives el_hermite_solve's solutions (chains and unrepresentable
+ * counts included: tension up to sigma d^2 = 3000, length mode, the semicircle at a tol
+ * it misses), only the first cap of them when the array is shorter (with the full count),
+ * the count alone with cap 0; EL_EINVAL writes nothing, EL_EDOM zero counts. */
+START_TEST(solve_into_gives_the_solutions_of_solve)
+{
+    unsigned long long st = 777;
+    el_hermite_solution into[64];
+    size_t total = 0, chains = 0, unrep = 0;
+    for (int t = 0; t < 60; t++) {
+        double p0[2] = {test_uniform(&st, -3, 3), test_uniform(&st, -3, 3)};
+        double p1[2] = {test_uniform(&st, -3, 3), test_uniform(&st, -3, 3)};
+        const double a = test_uniform(&st, -M_PI, M_PI), b = test_uniform(&st, -M_PI, M_PI);
+        double t0[2] = {cos(a), sin(a)}, t1[2] = {cos(b), sin(b)};
+        const double d = hypot(p1[0] - p0[0], p1[1] - p0[1]);
+        el_hermite_options o;
+        el_hermite_options_defaults(&o);
+        if (t % 3 == 2) {
+            o.mode = EL_HERMITE_LENGTH;
+            o.length = d * test_uniform(&st, 1.05, 3.0);
+        } else {
+            o.sigma = test_uniform(&st, -10.0, t % 3 ? 3000.0 : 40.0) / (d * d);
+        }
+        if (t == 0) {   /* the semicircle, unrepresentable at the default tol */
+            p0[0] = 2; p0[1] = 0; t0[0] = 0; t0[1] = -1; p1[0] = 0; p1[1] = 0; t1[0] = 0; t1[1] = 1;
+            o.sigma = 1.0;
+        }
+        el_hermite_result r;
+        const int rc = el_hermite_solve(p0, t0, p1, t1, &o, &r);
+        size_t count = 99, nu = 99;
+        ck_assert_int_eq(el_hermite_solve_into(p0, t0, p1, t1, &o, into, 64, &count, &nu), rc);
+        ck_assert_uint_eq(count, r.count);
+        ck_assert_uint_eq(nu, r.unrepresentable);
+        for (size_t i = 0; i < r.count; i++) {
+            assert_same_solution(&into[i], &r.solutions[i]);
+            chains += r.solutions[i].npieces > 1;
+        }
+        /* a shorter array: its cap lowest-energy solutions, the full count */
+        if (r.count > 1) {
+            el_hermite_solution few[2];
+            few[1].npieces = -7;   /* not written */
+            ck_assert_int_eq(el_hermite_solve_into(p0, t0, p1, t1, &o, few, 1, &count, &nu), rc);
+            ck_assert_uint_eq(count, r.count);
+            assert_same_solution(&few[0], &r.solutions[0]);
+            ck_assert_int_eq(few[1].npieces, -7);
+        }
+        ck_assert_int_eq(el_hermite_solve_into(p0, t0, p1, t1, &o, NULL, 0, &count, &nu), rc);
+        ck_assert_uint_eq(count, r.count);
+        total += r.count;
+        unrep += r.unrepresentable;
+        el_hermite_result_free(&r);
+    }
+    ck_assert_uint_gt(total, 100);
+    ck_assert_uint_gt(chains, 0);
+    ck_assert_uint_gt(unrep, 0);
+    /* EL_EINVAL writes nothing (its own NULLs and el_hermite_solve's); EL_EDOM zero counts */
+    const double p0[2] = {0, 0}, t0[2] = {1, 0}, p1[2] = {1, 0.5}, t1[2] = {0, 1}, nanv[2] = {NAN, 0};
+    el_hermite_options o;
+    el_hermite_options_defaults(&o);
+    size_t count = 5, nu = 3;
+    into[0].npieces = -7;
+    ck_assert_int_eq(el_hermite_solve_into(p0, t0, p1, t1, &o, into, 1, NULL, &nu), EL_EINVAL);
+    ck_assert_int_eq(el_hermite_solve_into(p0, t0, p1, t1, &o, into, 1, &count, NULL), EL_EINVAL);
+    ck_assert_int_eq(el_hermite_solve_into(p0, t0, p1, t1, &o, NULL, 1, &count, &nu), EL_EINVAL);
+    ck_assert_int_eq(el_hermite_solve_into(p0, t0, nanv, t1, &o, into, 1, &count, &nu), EL_EINVAL);
+    ck_assert_int_eq(el_hermite_solve_into(p0, t0, p1, t1, NULL, into, 1, &count, &nu), EL_EINVAL);
+    ck_assert(count == 5 && nu == 3 && into[0].npieces == -7);
+    ck_assert_int_eq(el_hermite_solve_into(p0, t0, p0, t1, &o, into, 1, &count, &nu), EL_EDOM);
+    ck_assert(count == 0 && nu == 0 && into[0].npieces == -7);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("hermite");
@@ -869,6 +956,7 @@ int main(void)
     tcase_add_test(tc, length_mode_close_pair_where_length_varies_fast);
     tcase_add_test(tc, bad_input_and_clear_statuses);
     tcase_add_test(tc, each_status_from_its_cause);
+    tcase_add_test(tc, solve_into_gives_the_solutions_of_solve);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }

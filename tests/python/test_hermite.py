@@ -382,6 +382,42 @@ def test_fast_paths_equal_the_general_path_and_refusals_leave_no_state():
     assert chains > 0   # the chain rows of the fast unpacking were exercised
 
 
+def test_options_equal_to_the_last_ones_but_refused_are_still_refused():
+    """hermite() skips checking tol, samples, grid and max_solutions when they are the
+    very objects set by the call before: a refused value equal to the last valid one
+    (grid=True after grid=1, samples=12.5 after 12.5 was refused) is refused again."""
+    ends = ((0.0, 0.0), (1.0, 0.0), (1.0, 0.5), (0.0, 1.0))
+    first = el.hermite(*ends, tension=2.0, grid=1)
+    with pytest.raises(ValueError):
+        el.hermite(*ends, tension=2.0, grid=True)
+    for _ in range(2):
+        with pytest.raises(ValueError):
+            el.hermite(*ends, tension=2.0, samples=12.5)
+    with pytest.raises(ValueError):
+        el.hermite(*ends, tension=2.0, tol=None)
+    again = el.hermite(*ends, tension=2.0, grid=1)
+    assert [(s.length, s.k) for s in again] == [(s.length, s.k) for s in first]
+
+
+def test_more_solutions_than_the_thread_array_holds_are_all_returned():
+    """The binding solves into a per-thread array (el_hermite_solve_into); a problem
+    with more solutions than it holds is solved again into a larger one, and returns
+    the same solutions as with room for all of them."""
+    import sys
+    H = sys.modules["libelastica.hermite"]
+    ends = ((0.0, 0.0), (1.0, 0.0), (1.0, 0.2), (1.0, 0.1))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        roomy = el.hermite(*ends, tension=1500.0)
+        assert len(roomy) >= 3
+        H._with_capacity(H._local.state, 1)
+        tight = el.hermite(*ends, tension=1500.0)
+    assert len(H._local.state[2]) == len(roomy) + 1   # grown to the count
+    assert [(type(s), s.length, s.k, s.kappa0, s.energy_value) for s in tight] == \
+           [(type(s), s.length, s.k, s.kappa0, s.energy_value) for s in roomy]
+    assert any(isinstance(s, el.HermiteChain) for s in tight)
+
+
 def test_two_threads_solve_at_once():
     """The binding's per-thread buffers: concurrent calls give the serial results."""
     import threading
@@ -446,17 +482,13 @@ def test_length_mode_work_limit_returns_the_solutions_found_with_a_warning(monke
     list holds them, complete is False and a RuntimeWarning says so."""
     import sys
     H = sys.modules["libelastica.hermite"]       # the module (el.hermite is the function)
-    real = H.lib
+    real = H._solve_into                          # (lib.el_hermite_solve_into)
 
-    class Limited:
-        def __getattr__(self, name):
-            return getattr(real, name)
+    def limited(*args):
+        real(*args)
+        return H.lib.EL_EMAXITER
 
-        def el_hermite_solve(self, *args):
-            real.el_hermite_solve(*args)
-            return real.EL_EMAXITER
-
-    monkeypatch.setattr(H, "lib", Limited())
+    monkeypatch.setattr(H, "_solve_into", limited)
     with pytest.warns(RuntimeWarning, match="work limit"):
         sols = el.hermite((0, 0), (0, 1), (2, 0), (0, -1), length=4.0)
     assert not sols.complete and len(sols) > 0
