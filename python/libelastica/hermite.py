@@ -183,9 +183,8 @@ def _with_capacity(state, cap: int):
     mem, solve_args, _, *last = state
     solutions = ffi.new("el_hermite_solution[]", cap)
     whole = memoryview(ffi.buffer(solutions))
-    _local.state = (mem, solve_args[:5] + (solutions, cap) + solve_args[7:],
-                    [whole[:n * _SOL_SIZE] for n in range(cap + 1)], *last)
-    return _local.state
+    return (mem, solve_args[:5] + (solutions, cap) + solve_args[7:],
+            [whole[:n * _SOL_SIZE] for n in range(cap + 1)], *last)
 
 
 def _piece(values) -> SmoothElastica:
@@ -241,70 +240,75 @@ def hermite(p0, t0, p1, t1, tension: Optional[float] = None,
     # (This is the binding's hottest path, written for the interpreter: each line
     # below costs tens of instructions, a Python-level call hundreds.)
     try:
-        mem, solve_args, views, last_tol, last_samples, last_grid, last_max = _local.state
-    except AttributeError:
-        mem, solve_args, views, last_tol, last_samples, last_grid, last_max = _new_state()
-    if length is None:
-        if tension is None:
-            raise ValueError("hermite: give exactly one of tension= or length=")
-        mode, sigma, length = _TENSION, tension, 0.0
-        if sigma.__class__ is not float or sigma - sigma != 0.0:   # (x - x: NaN for NaN, inf)
-            sigma = as_real(sigma, "hermite: tension")
-    else:
-        if tension is not None:
-            raise ValueError("hermite: give exactly one of tension= or length=")
-        mode, sigma = _LENGTH, 0.0
-        if length.__class__ is not float or length - length != 0.0:
-            length = as_real(length, "hermite: length")
-    # the ends: four tuples of two Python floats directly (el_hermite_solve refuses
-    # non-finite values, and _vec2 then says which), anything else through _vec2
+        mem, solve_args, views, last_tol, last_samples, last_grid, last_max = state = _local.state
+    except (AttributeError, TypeError):   # this thread's first call, or a call made while
+        # one runs in it (a finaliser or signal handler calling hermite): its own memory
+        mem, solve_args, views, last_tol, last_samples, last_grid, last_max = state = _new_state()
+    _local.state = None   # this call's until it returns: its results are read from it
     try:
-        (x0, y0), (tx0, ty0), (x1, y1), (tx1, ty1) = p0, t0, p1, t1
-    except (TypeError, ValueError):   # not four pairs
-        x0 = y0 = tx0 = ty0 = x1 = y1 = tx1 = ty1 = None
-    if (p0.__class__, t0.__class__, p1.__class__, t1.__class__, x0.__class__, y0.__class__,
-            tx0.__class__, ty0.__class__, x1.__class__, y1.__class__, tx1.__class__,
-            ty1.__class__) != _TUPLES_OF_FLOATS:
-        x0, y0, tx0, ty0, x1, y1, tx1, ty1 = _general_ends(p0, t0, p1, t1)
-    _CALL_STRUCT.pack_into(mem, 0, x0, y0, tx0, ty0, x1, y1, tx1, ty1, mode, sigma, length)
-    # the options that rarely change are checked and set only when they are not the
-    # very objects set last time
-    if tol is not last_tol or samples is not last_samples or grid is not last_grid \
-            or max_solutions is not last_max:
-        opt = solve_args[4]
-        opt.tol, opt.samples, opt.grid, opt.max_solutions = (
-            as_real(tol, "hermite: tol"), as_int(samples, "hermite: samples"),
-            as_int(grid, "hermite: grid"), as_size(max_solutions, "hermite: max_solutions"))
-        _local.state = (mem, solve_args, views, tol, samples, grid, max_solutions)
-    status = _solve_into(*solve_args)
-    if status and status != _EMAXITER:
-        if status == _EINVAL:   # say which end is not finite
-            _general_ends(p0, t0, p1, t1)
-        check(status, "hermite")
-    n, unrepresentable = _COUNTS.unpack_from(mem)
-    if n >= len(views):   # more than this thread's array holds: a larger one, solved again
-        mem, solve_args, views, *_ = _with_capacity(_local.state, n)
+        if length is None:
+            if tension is None:
+                raise ValueError("hermite: give exactly one of tension= or length=")
+            mode, sigma, length = _TENSION, tension, 0.0
+            if sigma.__class__ is not float or sigma - sigma != 0.0:   # (x - x: NaN for NaN, inf)
+                sigma = as_real(sigma, "hermite: tension")
+        else:
+            if tension is not None:
+                raise ValueError("hermite: give exactly one of tension= or length=")
+            mode, sigma = _LENGTH, 0.0
+            if length.__class__ is not float or length - length != 0.0:
+                length = as_real(length, "hermite: length")
+        # the ends: four tuples of two Python floats directly (el_hermite_solve refuses
+        # non-finite values, and _vec2 then says which), anything else through _vec2
+        try:
+            (x0, y0), (tx0, ty0), (x1, y1), (tx1, ty1) = p0, t0, p1, t1
+        except (TypeError, ValueError):   # not four pairs
+            x0 = y0 = tx0 = ty0 = x1 = y1 = tx1 = ty1 = None
+        if (p0.__class__, t0.__class__, p1.__class__, t1.__class__, x0.__class__, y0.__class__,
+                tx0.__class__, ty0.__class__, x1.__class__, y1.__class__, tx1.__class__,
+                ty1.__class__) != _TUPLES_OF_FLOATS:
+            x0, y0, tx0, ty0, x1, y1, tx1, ty1 = _general_ends(p0, t0, p1, t1)
+        _CALL_STRUCT.pack_into(mem, 0, x0, y0, tx0, ty0, x1, y1, tx1, ty1, mode, sigma, length)
+        # the options that rarely change are checked and set only when they are not the
+        # very objects set last time
+        if tol is not last_tol or samples is not last_samples or grid is not last_grid \
+                or max_solutions is not last_max:
+            opt = solve_args[4]
+            opt.tol, opt.samples, opt.grid, opt.max_solutions = (
+                as_real(tol, "hermite: tol"), as_int(samples, "hermite: samples"),
+                as_int(grid, "hermite: grid"), as_size(max_solutions, "hermite: max_solutions"))
+            state = (mem, solve_args, views, tol, samples, grid, max_solutions)
         status = _solve_into(*solve_args)
-    # one SmoothElastica per solution, its attributes stored in the same order every
-    # time (the instances then share one key table)
-    out = HermiteSolutions()
-    for row in _SOL_STRUCT.iter_unpack(views[n]):
-        e = _new_object(SmoothElastica)
-        (e.x0, e.y0, e.phi, e.mu, e.k, e.q, e.length, e.sigma, e.energy_value, infl,
-         e.kappa0, e.kappa1, e.residual, npieces) = row
-        e.has_inflection = infl != 0
-        out.append(e if npieces == 1 else _chain(row, solve_args[5][len(out)]))
-    if unrepresentable:
-        out.unrepresentable = unrepresentable
-        warnings.warn(f"hermite: {unrepresentable} more curve(s) exist that no smooth "
-                      f"parameters meet to tol={tol:g} (too close to the separatrix |k| = 1); "
-                      "a larger tol returns them", RuntimeWarning, stacklevel=2)
-    if status:
-        out.complete = False
-        warnings.warn(f"hermite: length mode reached its work limit; the {len(out)} solution(s) "
-                      "found so far are returned (the list's complete is False)",
-                      RuntimeWarning, stacklevel=2)
-    return out
+        if status and status != _EMAXITER:
+            if status == _EINVAL:   # say which end is not finite
+                _general_ends(p0, t0, p1, t1)
+            check(status, "hermite")
+        n, unrepresentable = _COUNTS.unpack_from(mem)
+        if n >= len(views):   # more than this thread's array holds: a larger one, solved again
+            mem, solve_args, views, *_ = state = _with_capacity(state, n)
+            status = _solve_into(*solve_args)
+        # one SmoothElastica per solution, its attributes stored in the same order every
+        # time (the instances then share one key table)
+        out = HermiteSolutions()
+        for row in _SOL_STRUCT.iter_unpack(views[n]):
+            e = _new_object(SmoothElastica)
+            (e.x0, e.y0, e.phi, e.mu, e.k, e.q, e.length, e.sigma, e.energy_value, infl,
+             e.kappa0, e.kappa1, e.residual, npieces) = row
+            e.has_inflection = infl != 0
+            out.append(e if npieces == 1 else _chain(row, solve_args[5][len(out)]))
+        if unrepresentable:
+            out.unrepresentable = unrepresentable
+            warnings.warn(f"hermite: {unrepresentable} more curve(s) exist that no smooth "
+                          f"parameters meet to tol={tol:g} (too close to the separatrix |k| = 1); "
+                          "a larger tol returns them", RuntimeWarning, stacklevel=2)
+        if status:
+            out.complete = False
+            warnings.warn(f"hermite: length mode reached its work limit; the {len(out)} solution(s) "
+                          "found so far are returned (the list's complete is False)",
+                          RuntimeWarning, stacklevel=2)
+        return out
+    finally:
+        _local.state = state
 
 
 def hermite_analyse(P, V, sigma: float) -> dict:

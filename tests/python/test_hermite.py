@@ -410,12 +410,52 @@ def test_more_solutions_than_the_thread_array_holds_are_all_returned():
         warnings.simplefilter("ignore", RuntimeWarning)
         roomy = el.hermite(*ends, tension=1500.0)
         assert len(roomy) >= 3
-        H._with_capacity(H._local.state, 1)
+        H._local.state = H._with_capacity(H._local.state, 1)
         tight = el.hermite(*ends, tension=1500.0)
     assert len(H._local.state[2]) == len(roomy) + 1   # grown to the count
     assert [(type(s), s.length, s.k, s.kappa0, s.energy_value) for s in tight] == \
            [(type(s), s.length, s.k, s.kappa0, s.energy_value) for s in roomy]
     assert any(isinstance(s, el.HermiteChain) for s in tight)
+
+
+def test_a_call_made_inside_a_call_leaves_its_results_intact():
+    """A finaliser (or signal handler) that calls hermite while another call in the same
+    thread reads its results from the thread's memory: that call still returns its own
+    solutions (the inner one gets memory of its own). The garbage collector is set to
+    run after every few allocations, so the finaliser runs at every point of the call."""
+    import gc
+    import sys
+
+    def sols(r):
+        return [(c.k, c.q, c.length, c.sigma) for c in r]
+
+    outer = ((0.0, 0.0), (0.0, 1.0), (2.0, 0.0), (0.0, -1.0))
+    inner = ((0.0, 0.0), (1.0, 0.0), (1.0, 0.3), (1.0, 0.0))
+    ref, ref_inner = sols(el.hermite(*outer, length=4.0)), sols(el.hermite(*inner, tension=2.0))
+    assert len(ref) != len(ref_inner)
+    inner_runs, inside = [], []
+
+    class Cyclic:
+        def __del__(self):
+            inside.append(sys._getframe(1).f_code.co_name == "hermite")
+            inner_runs.append(sols(el.hermite(*inner, tension=2.0)))
+
+    old = gc.get_threshold()
+    try:
+        for threshold in range(1, 40):
+            gc.collect()
+            gc.set_threshold(threshold, 1000, 1000)
+            c = Cyclic()
+            c.me = c
+            del c
+            got = sols(el.hermite(*outer, length=4.0))
+            gc.set_threshold(*old)
+            gc.collect()
+            assert got == ref, threshold
+    finally:
+        gc.set_threshold(*old)
+    assert sum(inside) >= 3     # the finaliser ran inside the call (the point of the test)
+    assert len(inner_runs) == 39 and all(r == ref_inner for r in inner_runs)
 
 
 def test_two_threads_solve_at_once():
