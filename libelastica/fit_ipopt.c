@@ -17,6 +17,7 @@
  * (normalised coordinates) at every accepted stop: constr_viol_tol and its acceptable twin.
  */
 #include "fit_internal.h"
+#include <stdlib.h>
 #include <string.h>
 #include <pthread.h>
 #include <IpStdCInterface.h>
@@ -38,12 +39,22 @@ typedef struct ipctx {
     double best_f, best_x[FIT_MAXX];
     int iters;
     double *tmp;
+    double *anchor;     /* smooth feet: those of the last point whose gradient Ipopt took */
+    int have_anchor;
 } ipctx;
 
 static int ensure(ipctx *c, const double *x)
 {
     if (c->have && !memcmp(c->xkey, x, sizeof(double) * (size_t)c->nx)) return EL_OK;
     c->have = 0;
+    /* every evaluation projects the feet from the same start, those of the point whose
+     * gradient Ipopt took last (the line search's base): projected from the last trial's
+     * instead, a foot could change branch between trials, f was then not continuous
+     * along the search direction, and the line search halved alpha down to 5e-324
+     * (~1075 evaluations) before Ipopt gave up (measured: a noisy 1000-point smooth fit
+     * with L-BFGS, EL_ENOCONV after 246 iterations, 1.9 s; anchored EL_OK after 78,
+     * 0.4 s, rms 1.012 of the exact Hessian's instead of 1.074) */
+    if (c->have_anchor) memcpy(c->o->s, c->anchor, sizeof(double) * c->o->n);
     int st = fit_objective_eval(c->o, x, 1, &c->val);
     if (st) return st;
     memcpy(c->xkey, x, sizeof(double) * (size_t)c->nx);
@@ -132,6 +143,7 @@ static Bool cb_grad(Index n, Number *x, Bool new_x, Number *g, UserDataPtr ud)
     (void)n; (void)new_x;
     ipctx *c = ud;
     if (ensure(c, x)) return FALSE;
+    if (c->anchor) { memcpy(c->anchor, c->o->s, sizeof(double) * c->o->n); c->have_anchor = 1; }
     memcpy(g, c->val.g, sizeof(double) * (size_t)c->nx);
     return !el__all_finite(g, (size_t)c->nx);
 }
@@ -271,6 +283,7 @@ int fit_ipopt(fit_objective *o, const double *xl, const double *xu, const fit_co
     double cv[FIT_NCON];
     c.m = con ? fit_constraint_rows(o, con, x, cv, NULL, NULL, tmp) : 0;
     if (c.m < 0) return EL_EDOM;
+    if (fit_has_feet(o) && !(c.anchor = malloc(sizeof(double) * o->n))) return EL_ENOMEM;
     const int saved = o->exact_feet;
     o->exact_feet = 1;
     double L[FIT_MAXX], U[FIT_MAXX], gl[FIT_NCON] = {0}, gu[FIT_NCON] = {0};
@@ -281,7 +294,7 @@ int fit_ipopt(fit_objective *o, const double *xl, const double *xu, const fit_co
     }
     double xscale[FIT_MAXX];
     const int scaled = opt->limited_memory && lbfgs_scaling(o, x, xscale);
-    if (pthread_mutex_lock(&ipopt_lock)) { o->exact_feet = saved; return EL_EINTERNAL; }
+    if (pthread_mutex_lock(&ipopt_lock)) { o->exact_feet = saved; free(c.anchor); return EL_EINTERNAL; }
     IpoptProblem pr = CreateIpoptProblem(nx, L, U, c.m, gl, gu, c.m * nx, nx * (nx + 1) / 2, 0,
                                          cb_f, cb_g, cb_grad, cb_jac_g, cb_h);
     int ok = pr != NULL;
@@ -311,6 +324,7 @@ int fit_ipopt(fit_objective *o, const double *xl, const double *xu, const fit_co
     if (ok) rs = IpoptSolve(pr, x, NULL, &obj, NULL, NULL, NULL, &c);
     if (pr) FreeIpoptProblem(pr);
     pthread_mutex_unlock(&ipopt_lock);
+    free(c.anchor);
     out->ipopt_status = (int)rs;
     out->iters = c.iters;
     /* the final point when feasible and no worse than the best seen, which is only

@@ -106,6 +106,42 @@ START_TEST(test_lbfgs_uneven_noisy_converges)
 }
 END_TEST
 
+/* 1000 points along a smooth elastica (k 0.917, a normal noise of 1 % of the length), the
+ * smooth model by orthogonal distance with L-BFGS. The feet were projected from the last
+ * trial point's, so along a search direction f jumped where a foot changed branch; the
+ * line search halved alpha up to ~1075 times and the fit ended with EL_ENOCONV after 222
+ * iterations. Projected from the line search's base point (fit_ipopt.c, ensure): EL_OK
+ * within the first candidate, at the exact Hessian's rms (to 1e-4). */
+START_TEST(test_lbfgs_feet_from_the_line_search_base)
+{
+    enum { N = 1000 };
+    unsigned long long rng = 5;
+    el_smooth_params p = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    p.phi = test_uniform(&rng, -3, 3);
+    p.mu = test_uniform(&rng, 0.5, 2);
+    p.k = exp(test_uniform(&rng, log(0.1), log(0.99)));
+    p.q = test_uniform(&rng, -2, 2);
+    p.length = test_uniform(&rng, 3, 9) / sqrt(p.mu);
+    static double s[N], xy[2 * N];
+    for (int i = 0; i < N; i++) s[i] = p.length * i / (N - 1);
+    ck_assert_int_eq(el_smooth_eval(&p, N, s, xy, NULL, NULL), EL_OK);
+    for (int i = 0; i < 2 * N; i++) {      /* Box-Muller */
+        const double u = test_uniform(&rng, 1e-12, 1), v = test_uniform(&rng, 0, 1);
+        xy[i] += 0.01 * p.length / sqrt(2.0) * sqrt(-2.0 * log(u)) * cos(2.0 * M_PI * v);
+    }
+    el_fit_options o;
+    el_fit_options_defaults(&o);
+    el_fit_smooth_result exact, lbfgs;
+    ck_assert_int_eq(el_fit_smooth(xy, N, &o, NULL, &exact, NULL, NULL), EL_OK);
+    o.limited_memory = 1;
+    const int st = el_fit_smooth(xy, N, &o, NULL, &lbfgs, NULL, NULL);
+    ck_assert_msg(st == EL_OK && lbfgs.iterations < o.max_iter, "status %d, %d iterations", st,
+                  lbfgs.iterations);
+    ck_assert_msg(fabs(lbfgs.rms - exact.rms) <= 1e-4 * exact.rms, "rms %.17g, exact Hessian %.17g",
+                  lbfgs.rms, exact.rms);
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("fit_lbfgs");
@@ -113,6 +149,7 @@ static Suite *suite(void)
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, test_lbfgs_start_tangent_converges_not_crawls);
     tcase_add_test(tc, test_lbfgs_uneven_noisy_converges);
+    tcase_add_test(tc, test_lbfgs_feet_from_the_line_search_base);
     suite_add_tcase(s, tc);
     return s;
 }
