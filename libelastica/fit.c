@@ -335,7 +335,7 @@ static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit
     }
     if (lm_ok && !inside) r->iters += bounded_start(ob, xl, xu, o->max_iter, x);
     int st = fit_ipopt(ob, xl, xu, need_ipopt ? con : NULL, o, x, &io, tmp);
-    if (st == EL_EINTERNAL) return st;
+    if (st == EL_EINTERNAL || st == EL_ENOMEM) return st;
     r->used_ipopt = 1;
     r->ipopt_status = io.ipopt_status;
     r->iters += io.iters;

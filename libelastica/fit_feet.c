@@ -312,6 +312,10 @@ void fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, d
  * from the piece's middle; the polygon's segments). O(n) work for ordinary data.
  */
 enum { MAX_PIECES = 128, HASH_BITS = 11, SEP_LEVELS = 4 };
+/* The grid's entries: a piece's disk (diameter 2 r <= cell, fit_nearest_everywhere) spans
+ * 2 cells per axis, 3 when rounding of (c +- r) / cell crosses one more integer: at most 9
+ * entries for each of the 2 MAX_PIECES pieces (grid_add reports more as EL_EINTERNAL) */
+enum { GRID_ENTRIES = 9 * 2 * MAX_PIECES };
 
 typedef struct piece {
     double cx, cy, r, s0, s1;   /* disk, arc range on its curve */
@@ -322,7 +326,7 @@ typedef struct piece {
 typedef struct grid {
     double cell;
     int head[1 << HASH_BITS];
-    int next[8 * MAX_PIECES], item[8 * MAX_PIECES];
+    int next[GRID_ENTRIES], item[GRID_ENTRIES];
     int used;
 } grid;
 
@@ -346,18 +350,20 @@ static unsigned cell_hash(long ix, long iy)
     return (unsigned)(h & ((1UL << HASH_BITS) - 1));
 }
 
-static void grid_add(grid *g, const piece *p, int id)
+/* 0: the grid is full (impossible by GRID_ENTRIES' bound; the caller's EL_EINTERNAL) */
+static int grid_add(grid *g, const piece *p, int id)
 {
     const long x0 = cell_index(p->cx - p->r, g->cell), x1 = cell_index(p->cx + p->r, g->cell);
     const long y0 = cell_index(p->cy - p->r, g->cell), y1 = cell_index(p->cy + p->r, g->cell);
     for (long ix = x0; ix <= x1; ix++)
         for (long iy = y0; iy <= y1; iy++) {
-            if (g->used >= 8 * MAX_PIECES) return;
+            if (g->used >= GRID_ENTRIES) return 0;
             const unsigned h = cell_hash(ix, iy);
             g->item[g->used] = id;
             g->next[g->used] = g->head[h];
             g->head[h] = g->used++;
         }
+    return 1;
 }
 
 /* The points of a curve at arc lengths s_j = len j / m, j = 0..m (smooth: one
@@ -554,7 +560,10 @@ int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const do
         g->used = 0;
         /* cells of the reach of the pair test below: a piece then looks at 3 x 3 cells */
         g->cell = fmax(fmax(2.0 * rmax, 2.0 * dmed), 2.0 * dmax + 2.0 * rmax);
-        for (int j = 0; j < np; j++) { grid_add(g, &pc[j], j); stamp[j] = 0; }
+        for (int j = 0; j < np; j++) {
+            if (!grid_add(g, &pc[j], j)) st = EL_EINTERNAL;
+            stamp[j] = 0;
+        }
         for (int j = 0; j < np * SEP_LEVELS; j++) sep[j] = 0.0;
         double reach_l[SEP_LEVELS];     /* 2 dmax / 2^l */
         reach_l[0] = 2.0 * dmax;
