@@ -276,6 +276,23 @@ static int piece_eval(fctx *c, double u, double qs, hstate *st, double *x)
     return rc;
 }
 
+/* piece_eval with COARSE_QS, continued to double precision where |f| <= fine_below
+ * (*fine says which): in the x chart the state prepared once
+ * (el__hermite_shape_eval_to), in the separatrix chart evaluated again. */
+static int piece_eval_to(fctx *c, double u, double fine_below, hstate *st, double *x, int *fine)
+{
+    if (!c->sep) {
+        *x = u;
+        const int rc = el__hermite_curvdata(c->pr, u, c->b, st);
+        return rc ? rc : el__hermite_shape_eval_to(c->pr, COARSE_QS, fine_below, st, fine);
+    }
+    int rc = piece_eval(c, u, COARSE_QS, st, x);
+    *fine = 0;
+    if (rc || !(fabs(st->f) <= fine_below)) return rc;
+    *fine = 1;
+    return piece_eval(c, u, 1.0, st, x);
+}
+
 /* The objective for the samples that look for sign changes: elliptic integrals to
  * about 1e-8 instead of 1e-16 (COARSE_QS, one or two duplication steps fewer); its
  * sign and rough size are used, and the root finder and every accepted root the full precision. */
@@ -333,11 +350,8 @@ static int bracket_root(fctx *c, double a, double fa, double b, double fb, hroot
         if (!(x > fmin(a, b) && x < fmax(a, b))) x = 0.5 * (a + b);
         const double step = fabs(x - b);
         double w;
-        if (piece_eval(c, x, full ? 1.0 : COARSE_QS, &r.st, &w)) break;   /* no curve: no root */
-        if (!full && fabs(r.st.f) <= 1e-6) {     /* near the root: its value in full precision */
-            full = 1;
-            if (piece_eval(c, x, 1.0, &r.st, &w)) break;
-        }
+        /* no curve: no root; near the root (|f| <= 1e-6) its value in full precision */
+        if (full ? piece_eval(c, x, 1.0, &r.st, &w) : piece_eval_to(c, x, 1e-6, &r.st, &w, &full)) break;
         r.x = w;
         const double f = r.st.f;
         if (full && (fabs(f) <= 1e-14 || span <= 4e-16 * scale || step <= 2e-16 * scale)) { ok = 1; break; }
