@@ -88,6 +88,9 @@ double el__hermite_wrap_pi(double a);
 int el__poly_real_roots(const double *c, int deg, double *roots, int *nroots);
 void el__poly_roots_in(const double *c, int deg, double lo, double hi, double tol, double *roots,
                        int *nroots);
+/* The same by the roots of the derivatives (the plain counterpart, and the fallback). */
+void el__poly_roots_in_plain(const double *c, int deg, double lo, double hi, double tol,
+                             double *roots, int *nroots);
 /* The coefficients (low to high) of (40), its degree returned; the special values (45)
  * (at most four); the coefficients of (18) in kappa0 (case 1). */
 int el__hermite_poly40(const hprob *pr, double c[9]);
