@@ -149,7 +149,7 @@ static void bernstein_coeffs(const double *c, int n, double lo, double hi, doubl
 static void bernstein_halves(const double *b, int n, double *bl, double *br, double *err)
 {
     double w[9], bmax = 0.0;
-    for (int k = 0; k <= n; k++) { w[k] = b[k]; bmax = fmax(bmax, fabs(b[k])); }
+    for (int k = 0; k <= n; k++) { w[k] = b[k]; bmax = fabs(b[k]) > bmax ? fabs(b[k]) : bmax; }
     for (int r = 0; r <= n; r++) {
         bl[r] = w[0];
         br[n - r] = w[n - r];

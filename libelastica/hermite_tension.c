@@ -357,14 +357,15 @@ static int bracket_root(fctx *c, double a, double fa, double b, double fb, hroot
     int ok = 0, full = 0;
     double halved = fabs(b - a);   /* the bracket three steps ago: bisect unless it halved */
     for (int it = 0; it < 100; it++) {
-        const double span = fabs(b - a), scale = fmax(fabs(a), fabs(b));
+        /* a, b finite: comparisons instead of libm's fmax, fmin (inner loop) */
+        const double span = fabs(b - a), scale = fabs(a) > fabs(b) ? fabs(a) : fabs(b);
         if (!full && span <= 1e-6 * (scale + 1e-3)) full = 1;
         double x = (a * fb - b * fa) / (fb - fa);
         if (it % 3 == 2) {
             if (!(span < 0.5 * halved)) x = 0.5 * (a + b);
             halved = span;
         }
-        if (!(x > fmin(a, b) && x < fmax(a, b))) x = 0.5 * (a + b);
+        if (!(a < b ? x > a && x < b : x > b && x < a)) x = 0.5 * (a + b);
         const double step = fabs(x - b);
         double w;
         /* no curve: no root; near the root (|f| <= 1e-6) its value in full precision */
@@ -469,7 +470,8 @@ static double convex_lower_bound(const double *xs, const double *fs, int n, int 
         const double slope = sign * (fs[q] - fs[p]) / (xs[q] - xs[p]);
         const double g0 = sign * fs[p] + slope * (xs[j] - xs[p]);
         const double g1 = sign * fs[p] + slope * (xs[j + 1] - xs[p]);
-        lb = fmax(lb, fmin(g0, g1));
+        const double g = g0 < g1 ? g0 : g1;     /* finite: no libm fmin/fmax calls here */
+        if (g > lb) lb = g;
         any = 1;
     }
     return any ? lb : INFINITY;
