@@ -166,15 +166,33 @@ static void bernstein_halves(const double *b, int n, double *bl, double *br, dou
 #define UNSURE_DEPTH 6
 #define ISOLATE_DEPTH 24
 
-/* The roots in [a, b] of p (coefficients c), its Bernstein coefficients bc there with the
- * error bound err, ascending into roots: by Descartes' rule for the Bernstein basis the
+/* The polynomial being isolated and the roots found so far (at most its degree n: more
+ * means rounding broke Descartes' count, underflow on a tiny interval say, and *full is
+ * set for the plain method to take over). */
+typedef struct {
+    const double *c;
+    int n;
+    double tol;
+    double *roots;
+    int nroots, full;
+} isolation;
+
+static void add_root(isolation *w, double x)
+{
+    if (w->nroots < w->n) w->roots[w->nroots++] = x;
+    else w->full = 1;
+}
+
+/* The roots in [a, b] of w's polynomial, its Bernstein coefficients bc there with the
+ * error bound err, ascending into w: by Descartes' rule for the Bernstein basis the
  * number of sign changes of bc bounds the number of roots and has its parity, so none
  * where bc keeps its sign, exactly one where it changes sign once (found by Newton from
  * where the control polygon crosses zero), else the halves. */
-static void isolate(const double *c, int n, double a, double b, const double *bc, double err,
-                    int depth, double tol, double *roots, int *nroots)
+static void isolate(isolation *w, double a, double b, const double *bc, double err, int depth)
 {
+    const int n = w->n;
     int changes = 0, unsure = 0, last = 0, cross = 0;
+    if (w->full) return;
     for (int k = 0; k <= n; k++) {
         const int s = bc[k] > err ? 1 : bc[k] < -err ? -1 : 0;
         if (s == 0) unsure = 1;
@@ -184,30 +202,30 @@ static void isolate(const double *c, int n, double a, double b, const double *bc
     if (!unsure && changes == 0) return;
     if (!unsure && changes == 1) {
         const double t = (cross - bc[cross] / (bc[cross] - bc[cross - 1])) / n;
-        roots[(*nroots)++] = bracketed_root(c, n, a, b, bc[0], a + t * (b - a), tol);
+        add_root(w, bracketed_root(w->c, n, a, b, bc[0], a + t * (b - a), w->tol));
         return;
     }
     if (depth >= (unsure ? UNSURE_DEPTH : ISOLATE_DEPTH)) {
         double r[8];
         int nr;
-        el__poly_roots_in_plain(c, n, a, b, tol, r, &nr);
+        el__poly_roots_in_plain(w->c, n, a, b, w->tol, r, &nr);
         for (int i = 0; i < nr; i++)
-            if (*nroots == 0 || r[i] > roots[*nroots - 1]) roots[(*nroots)++] = r[i];
+            if (w->nroots == 0 || r[i] > w->roots[w->nroots - 1]) add_root(w, r[i]);
         return;
     }
     double bl[9], br[9];
     bernstein_halves(bc, n, bl, br, &err);
     const double m = 0.5 * (a + b);
-    isolate(c, n, a, m, bl, err, depth + 1, tol, roots, nroots);
-    isolate(c, n, m, b, br, err, depth + 1, tol, roots, nroots);
+    isolate(w, a, m, bl, err, depth + 1);
+    isolate(w, m, b, br, err, depth + 1);
 }
 
 /* The same roots as el__poly_roots_in_plain, isolated first by the signs of Bernstein
  * coefficients: no roots of the derivatives to locate (of the degree-8 polynomial (40),
  * with four to eight roots in the interval, the plain method locates about thirty, each
  * by Newton's method), ~8 halvings instead. Where rounding leaves the count open the plain
- * method takes over on that interval (isolate). Checked against the plain method in
- * tests/c/test_hermite_tension.c. */
+ * method takes over on that interval, and on the whole where more roots than the degree
+ * came out (isolate). Checked against the plain method in tests/c/test_hermite_tension.c. */
 void el__poly_roots_in(const double *c_in, int deg, double lo, double hi, double tol, double *roots,
                        int *nroots)
 {
@@ -221,8 +239,11 @@ void el__poly_roots_in(const double *c_in, int deg, double lo, double hi, double
         return;
     }
     double b[9], err;
+    isolation w = {c, deg, tol, roots, 0, 0};
     bernstein_coeffs(c, deg, lo, hi, b, &err);
-    isolate(c, deg, lo, hi, b, err, 0, tol, roots, nroots);
+    isolate(&w, lo, hi, b, err, 0);
+    if (w.full) el__poly_roots_in_plain(c, deg, lo, hi, tol, roots, nroots);
+    else *nroots = w.nroots;
 }
 
 /* Small polynomial arithmetic (coefficients low to high, degree <= 8). */

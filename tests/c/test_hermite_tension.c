@@ -184,6 +184,35 @@ START_TEST(poly40_isolated_roots_match_plain_method)
 }
 END_TEST
 
+/* At a subnormal tension the range of (40) is ~1e-155 wide and its Bernstein
+ * coefficients underflow: isolation then counted more roots than the degree and wrote
+ * past the caller's eight (the fuzz driver's finding, ASan). Now no more than the
+ * degree, the plain method's roots, and el_hermite_analyse reports them. */
+START_TEST(poly40_roots_never_exceed_the_degree_at_subnormal_tension)
+{
+    const double th = 6.3787289234760038, ph = 1.0000000000000011;
+    const double sigmas[] = {1e-310, 1e-300, 4.9e-324, 1e-200};
+    for (int k = 0; k < 4; k++) {
+        hprob pr;
+        memset(&pr, 0, sizeof pr);
+        pr.P1 = cos(th); pr.P2 = sin(th); pr.V1 = cos(ph); pr.V2 = sin(ph); pr.Lmin = 1.0; pr.sigma = sigmas[k];
+        el__hermite_set_case(&pr);
+        double c[9], rf[16], rp[16];
+        int nf, np;
+        const int deg = el__hermite_poly40(&pr, c);
+        const double X = sqrt(2.0 * pr.sigma) * (1.0 + 1e-9);
+        el__poly_roots_in(c, deg, -X, X, 4e-16, rf, &nf);
+        el__poly_roots_in_plain(c, deg, -X, X, 4e-16, rp, &np);
+        ck_assert_int_le(nf, deg);
+        ck_assert_int_eq(nf, np);
+        const double P[2] = {pr.P1, pr.P2}, V[2] = {pr.V1, pr.V2};
+        el_hermite_analysis an;
+        ck_assert_int_eq(el_hermite_analyse(P, V, pr.sigma, &an), EL_OK);
+        ck_assert_int_le((int)an.nroot, 8);
+    }
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("hermite_tension");
@@ -192,6 +221,7 @@ int main(void)
     tcase_add_loop_test(tc, tension_solutions_contain_every_scanned_root, 0, 3);
     tcase_add_test(tc, separatrix_crossings_exact_at_high_tension);
     tcase_add_test(tc, poly40_isolated_roots_match_plain_method);
+    tcase_add_test(tc, poly40_roots_never_exceed_the_degree_at_subnormal_tension);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }
