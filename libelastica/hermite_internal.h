@@ -50,6 +50,10 @@ double el__hermite_case3_kappa0(const hprob *pr, int fam);
 int el__hermite_curvdata(const hprob *pr, double x, int b, hstate *st);
 int el__hermite_state_class(const hprob *pr, const hstate *st, double *Fn);
 int el__hermite_shape_eval(const hprob *pr, double qs, hstate *st);
+/* The same, continued to double precision (qs = 1) where |f| <= fine_below at qs; *fine
+ * (may be NULL) says whether the values are double precision. The same values as
+ * el__hermite_shape_eval with qs, then with 1, without preparing the state twice. */
+int el__hermite_shape_eval_to(const hprob *pr, double qs, double fine_below, hstate *st, int *fine);
 int el__hermite_full_eval(const hprob *pr, double x, int b, hstate *st);
 void el__hermite_set_case(hprob *pr);
 /* el__hermite_full_eval with the gradient of L, E and f (and sigma, and |F| - sigma)
@@ -84,6 +88,9 @@ double el__hermite_wrap_pi(double a);
 int el__poly_real_roots(const double *c, int deg, double *roots, int *nroots);
 void el__poly_roots_in(const double *c, int deg, double lo, double hi, double tol, double *roots,
                        int *nroots);
+/* The same by the roots of the derivatives (the plain counterpart, and the fallback). */
+void el__poly_roots_in_plain(const double *c, int deg, double lo, double hi, double tol,
+                             double *roots, int *nroots);
 /* The coefficients (low to high) of (40), its degree returned; the special values (45)
  * (at most four); the coefficients of (18) in kappa0 (case 1). */
 int el__hermite_poly40(const hprob *pr, double c[9]);

@@ -469,6 +469,23 @@ int el__hermite_shape_eval(const hprob *pr, double qs, hstate *st)
     return rc ? rc : shape_finish(pr, &w, rf, rd, st, &U, &DD);
 }
 
+int el__hermite_shape_eval_to(const hprob *pr, double qs, double fine_below, hstate *st, int *fine)
+{
+    shapework w;
+    double rf, rd, U, DD;
+    int rc = shape_prepare(pr, st, &w);
+    if (!rc) rc = el__carlson_fd(w.ra.x, w.ra.y, 1.0, qs, &rf, &rd);
+    if (rc || (rc = shape_finish(pr, &w, rf, rd, st, &U, &DD))) return rc;
+    if (fine) *fine = qs >= 1.0;
+    if (qs >= 1.0 || !(fabs(st->f) <= fine_below)) return EL_OK;
+    /* the same state to double precision: the integrals again, the rest kept */
+    if ((rc = el__carlson_fd(w.ra.x, w.ra.y, 1.0, 1.0, &rf, &rd)) || (rc = shape_finish(pr, &w, rf, rd, st, &U, &DD)))
+        return rc;
+    if (fine) *fine = 1;
+    return EL_OK;
+}
+
+
 int el__hermite_chart_eval(const hprob *pr, int chart, double u, double v, int b, hstate *st,
                            hgrad *g, double *sigma)
 {

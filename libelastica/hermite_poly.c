@@ -5,6 +5,7 @@
  */
 #include "hermite_internal.h"
 #include <gsl/gsl_poly.h>
+#include <float.h>
 #include <string.h>
 
 /* Real roots of sum c[i] x^i (degree <= 2) by gsl_poly_solve_quadratic. */
@@ -32,18 +33,44 @@ static double horner(const double *c, int deg, double x, double *dp)
     return v;
 }
 
+/* The root of sum c[i] x^i in [a, b], where its value fa at a and p(b) differ in sign, to
+ * the relative precision tol: Newton's method from x inside the bracket, kept there
+ * (bisection when a step leaves it or the previous step did not halve it; rtsafe of
+ * Numerical Recipes). */
+static double bracketed_root(const double *c, int deg, double a, double b, double fa, double x, double tol)
+{
+    double dp, dxold = b - a, dx = dxold, ga = fa;
+    double fx = horner(c, deg, x, &dp);
+    for (int it = 0; it < 100; it++) {
+        if (((x - b) * dp - fx) * ((x - a) * dp - fx) > 0.0 || fabs(2.0 * fx) > fabs(dxold * dp)) {
+            dxold = dx;
+            dx = 0.5 * (b - a);
+            x = a + dx;
+        } else {
+            dxold = dx;
+            dx = fx / dp;
+            x -= dx;
+        }
+        if (fabs(dx) <= tol * fabs(x) + 1e-300) break;
+        fx = horner(c, deg, x, &dp);
+        if (fx == 0.0) break;
+        if (fx * ga > 0.0) { a = x; ga = fx; } else b = x;
+    }
+    return x;
+}
+
 /* The real roots of sum c[i] x^i (degree <= 8) in [lo, hi], ascending: between
  * consecutive real roots of the derivative (found the same way, down to degree 2, to
  * the relative precision tol) the polynomial is monotone, so every sign change there
- * holds exactly one root, found by Newton's method kept inside the bracket (bisection
- * when a step leaves it or does not shrink it by half). Written here because GSL's
+ * holds exactly one root (bracketed_root from the midpoint). Written here because GSL's
  * gsl_poly_complex_solve (the eigenvalues of the companion matrix) returns close
  * real roots of (40) as complex pairs once sigma is large (its coefficients then span
  * thirty orders of magnitude: none found at sigma |p1-p0|^2 = 4000 on test problems),
  * and computes the complex roots that are not needed. A root of even multiplicity
- * (no sign change) is not found. */
-void el__poly_roots_in(const double *c_in, int deg, double lo, double hi, double tol,
-                          double *roots, int *nroots)
+ * (no sign change) is not found. The plain counterpart of el__poly_roots_in (below),
+ * and its fallback. */
+void el__poly_roots_in_plain(const double *c_in, int deg, double lo, double hi, double tol,
+                             double *roots, int *nroots)
 {
     /* the terms' sizes on the interval, |c_i| R^i: a leading coefficient negligible there
      * (a degenerate problem) lowers the degree */
@@ -65,41 +92,158 @@ void el__poly_roots_in(const double *c_in, int deg, double lo, double hi, double
     double d[8], crit[8], pts[10], dp;
     int nc;
     for (int i = 1; i <= deg; i++) d[i - 1] = i * c[i];
-    el__poly_roots_in(d, deg - 1, lo, hi, 1e-7, crit, &nc);
+    el__poly_roots_in_plain(d, deg - 1, lo, hi, 1e-7, crit, &nc);
     int np = 0;
     pts[np++] = lo;
     for (int i = 0; i < nc; i++) pts[np++] = crit[i];
     pts[np++] = hi;
     double fb = horner(c, deg, lo, &dp);
     for (int i = 0; i + 1 < np; i++) {
-        double a = pts[i], b = pts[i + 1], fa = fb;
+        const double a = pts[i], b = pts[i + 1], fa = fb;
         fb = horner(c, deg, b, &dp);
         if (fa == 0.0) {
             if (*nroots == 0 || roots[*nroots - 1] != a) roots[(*nroots)++] = a;
             continue;
         }
         if (fb == 0.0 || fa * fb > 0.0) continue;
-        /* [a, b] with p(a) p(b) < 0: Newton, bisection when the step leaves the bracket
-         * or the previous step did not halve (rtsafe of Numerical Recipes) */
-        double x = 0.5 * (a + b), dxold = b - a, dx = dxold, ga = fa;
-        double fx = horner(c, deg, x, &dp);
-        for (int it = 0; it < 100; it++) {
-            if (((x - b) * dp - fx) * ((x - a) * dp - fx) > 0.0 || fabs(2.0 * fx) > fabs(dxold * dp)) {
-                dxold = dx;
-                dx = 0.5 * (b - a);
-                x = a + dx;
-            } else {
-                dxold = dx;
-                dx = fx / dp;
-                x -= dx;
-            }
-            if (fabs(dx) <= tol * fabs(x) + 1e-300) break;
-            fx = horner(c, deg, x, &dp);
-            if (fx == 0.0) break;
-            if (fx * ga > 0.0) { a = x; ga = fx; } else b = x;
-        }
-        roots[(*nroots)++] = x;
+        roots[(*nroots)++] = bracketed_root(c, deg, a, b, fa, 0.5 * (a + b), tol);
     }
+}
+
+/* ------------------------------------------------------------ root isolation */
+
+/* Bernstein coefficients b[0..n] of p on [lo, hi] (p(lo + (hi - lo) t) = sum b_k
+ * C(n,k) t^k (1-t)^(n-k)) and a bound *err of their rounding errors: the Taylor shift
+ * p(lo + y) by repeated synthetic division, the scaling y = (hi - lo) t, then
+ * b_k = sum_{j <= k} C(k,j) / C(n,j) q_j (Farin, Curves and Surfaces for CAGD, 5.6). The
+ * bound comes from the same sums over absolute values: each term passes at most 2n + 2
+ * roundings, so |error| <= 4 (n + 1) eps times the sum of |terms|, taken with a margin. */
+static void bernstein_coeffs(const double *c, int n, double lo, double hi, double *b, double *err)
+{
+    double q[9], qa[9];
+    for (int i = 0; i <= n; i++) { q[i] = c[i]; qa[i] = fabs(c[i]); }
+    for (int i = 0; i < n; i++)
+        for (int j = n - 1; j >= i; j--) {
+            q[j] += lo * q[j + 1];
+            qa[j] += fabs(lo) * qa[j + 1];
+        }
+    double hj = 1.0;
+    for (int j = 0; j <= n; j++, hj *= hi - lo) { q[j] *= hj; qa[j] *= hj; }
+    *err = 0.0;
+    /* C(k,j) / C(n,j) = prod_{i<j} (k - i) / (n - i) */
+    for (int k = 0; k <= n; k++) {
+        double sum = 0.0, sa = 0.0, w = 1.0;
+        for (int j = 0; j <= k; j++) {
+            sum += w * q[j];
+            sa += w * qa[j];
+            w *= (double)(k - j) / (double)(n - j);
+        }
+        b[k] = sum;
+        *err = fmax(*err, 16.0 * (n + 1) * DBL_EPSILON * sa);
+    }
+}
+
+/* de Casteljau's subdivision at t = 1/2 into bl (left half) and br (right). The halves'
+ * coefficients are averages of the parent's, so their errors are at most the parent's
+ * bound plus n roundings of at most eps max |b| each: *err grows by that. */
+static void bernstein_halves(const double *b, int n, double *bl, double *br, double *err)
+{
+    double w[9], bmax = 0.0;
+    for (int k = 0; k <= n; k++) { w[k] = b[k]; bmax = fabs(b[k]) > bmax ? fabs(b[k]) : bmax; }
+    for (int r = 0; r <= n; r++) {
+        bl[r] = w[0];
+        br[n - r] = w[n - r];
+        for (int k = 0; k < n - r; k++) w[k] = 0.5 * (w[k] + w[k + 1]);
+    }
+    *err += 2.0 * n * DBL_EPSILON * bmax;
+}
+
+/* Depth of the subdivision before an interval is handed to the plain method: where
+ * rounding leaves a coefficient's sign open (p at rounding level: a double root, a root
+ * at a subdivision point, coefficients spanning many orders of magnitude: halving such an
+ * interval further doubles the unsure ones), and where two roots are still not apart
+ * (2^-24 of the interval). */
+#define UNSURE_DEPTH 6
+#define ISOLATE_DEPTH 24
+
+/* The polynomial being isolated and the roots found so far (at most its degree n: more
+ * means rounding broke Descartes' count, underflow on a tiny interval say, and *full is
+ * set for the plain method to take over). */
+typedef struct {
+    const double *c;
+    int n;
+    double tol;
+    double *roots;
+    int nroots, full;
+} isolation;
+
+static void add_root(isolation *w, double x)
+{
+    if (w->nroots < w->n) w->roots[w->nroots++] = x;
+    else w->full = 1;
+}
+
+/* The roots in [a, b] of w's polynomial, its Bernstein coefficients bc there with the
+ * error bound err, ascending into w: by Descartes' rule for the Bernstein basis the
+ * number of sign changes of bc bounds the number of roots and has its parity, so none
+ * where bc keeps its sign, exactly one where it changes sign once (found by Newton from
+ * where the control polygon crosses zero), else the halves. */
+static void isolate(isolation *w, double a, double b, const double *bc, double err, int depth)
+{
+    const int n = w->n;
+    int changes = 0, unsure = 0, last = 0, cross = 0;
+    if (w->full) return;
+    for (int k = 0; k <= n; k++) {
+        const int s = bc[k] > err ? 1 : bc[k] < -err ? -1 : 0;
+        if (s == 0) unsure = 1;
+        else if (last && s != last) { changes++; cross = k; }
+        if (s) last = s;
+    }
+    if (!unsure && changes == 0) return;
+    if (!unsure && changes == 1) {
+        const double t = (cross - bc[cross] / (bc[cross] - bc[cross - 1])) / n;
+        add_root(w, bracketed_root(w->c, n, a, b, bc[0], a + t * (b - a), w->tol));
+        return;
+    }
+    if (depth >= (unsure ? UNSURE_DEPTH : ISOLATE_DEPTH)) {
+        double r[8];
+        int nr;
+        el__poly_roots_in_plain(w->c, n, a, b, w->tol, r, &nr);
+        for (int i = 0; i < nr; i++)
+            if (w->nroots == 0 || r[i] > w->roots[w->nroots - 1]) add_root(w, r[i]);
+        return;
+    }
+    double bl[9], br[9];
+    bernstein_halves(bc, n, bl, br, &err);
+    const double m = 0.5 * (a + b);
+    isolate(w, a, m, bl, err, depth + 1);
+    isolate(w, m, b, br, err, depth + 1);
+}
+
+/* The same roots as el__poly_roots_in_plain, isolated first by the signs of Bernstein
+ * coefficients: no roots of the derivatives to locate (of the degree-8 polynomial (40),
+ * with four to eight roots in the interval, the plain method locates about thirty, each
+ * by Newton's method), ~8 halvings instead. Where rounding leaves the count open the plain
+ * method takes over on that interval, and on the whole where more roots than the degree
+ * came out (isolate). Checked against the plain method in tests/c/test_hermite_tension.c. */
+void el__poly_roots_in(const double *c_in, int deg, double lo, double hi, double tol, double *roots,
+                       int *nroots)
+{
+    const double R = fmax(1.0, fmax(fabs(lo), fabs(hi)));
+    double c[9], tmax = 0.0, Ri = 1.0, Rdeg[9];
+    for (int i = 0; i <= deg; i++, Ri *= R) { c[i] = c_in[i]; Rdeg[i] = Ri; tmax = fmax(tmax, fabs(c[i]) * Ri); }
+    *nroots = 0;
+    while (deg > 0 && fabs(c[deg]) * Rdeg[deg] <= 1e-14 * tmax) deg--;
+    if (deg <= 2 || !(hi > lo)) {
+        el__poly_roots_in_plain(c, deg, lo, hi, tol, roots, nroots);
+        return;
+    }
+    double b[9], err;
+    isolation w = {c, deg, tol, roots, 0, 0};
+    bernstein_coeffs(c, deg, lo, hi, b, &err);
+    isolate(&w, lo, hi, b, err, 0);
+    if (w.full) el__poly_roots_in_plain(c, deg, lo, hi, tol, roots, nroots);
+    else *nroots = w.nroots;
 }
 
 /* Small polynomial arithmetic (coefficients low to high, degree <= 8). */

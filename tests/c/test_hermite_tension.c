@@ -8,6 +8,7 @@
 #include "testutil.h"
 #include "hermite_internal.h"
 #include "hermite_scan.h"
+#include <float.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -101,6 +102,117 @@ START_TEST(separatrix_crossings_exact_at_high_tension)
 }
 END_TEST
 
+/* Roots of (40) (and of degree-8 polynomials with close roots and complex pairs near the
+ * axis) by Bernstein isolation (el__poly_roots_in) against the plain method by the roots
+ * of the derivatives (el__poly_roots_in_plain): the same number in the interval, each
+ * within 64 times its condition, the rounding error of p at the root over |p'| (both are
+ * roots only to that: 1e-9 relative at sigma |p1-p0|^2 = 4000), plus 1e-14 (1 + |x|).
+ * Families: the bench's tensions, high tension up to sigma |p1-p0|^2 = 1e5 (coefficients
+ * over thirty orders of magnitude), near-degenerate tangents (draw), and products of
+ * (x - r_i) with a pair 1e-3..1e-2 apart, a complex pair 1e-3..1e-2 off the axis and
+ * an interval ending at a root (closer pairs in [-8, 8] are lost in p's rounding: a pair
+ * 1e-5 apart there dips below zero by about the rounding error, and either method may
+ * find it or not depending on where it evaluates p). */
+static void compare_roots(const double *c, int deg, double lo, double hi, int *nroot, double *worst)
+{
+    double rf[8], rp[8];
+    int nf, np;
+    el__poly_roots_in(c, deg, lo, hi, 4e-16, rf, &nf);
+    el__poly_roots_in_plain(c, deg, lo, hi, 4e-16, rp, &np);
+    ck_assert_msg(nf == np, "%d roots by isolation, %d by the plain method in [%.17g, %.17g]", nf, np, lo, hi);
+    for (int i = 0; i < nf; i++) {
+        const double x = rp[i];
+        double v = c[deg], d = 0.0, ab = fabs(c[deg]);
+        for (int j = deg - 1; j >= 0; j--) { d = d * x + v; v = v * x + c[j]; ab = ab * fabs(x) + fabs(c[j]); }
+        const double cond = 2.0 * deg * DBL_EPSILON * ab / fabs(d);
+        const double dist = fabs(rf[i] - x);
+        ck_assert_msg(dist <= 64.0 * cond + 1e-14 * (1.0 + fabs(x)),
+                      "root %.17g by isolation, %.17g by the plain method (condition %.3g)", rf[i], x, cond);
+        ck_assert(i == 0 || rf[i] > rf[i - 1]);
+        *worst = fmax(*worst, dist / (cond + 1e-16 * (1.0 + fabs(x))));
+    }
+    *nroot += nf;
+}
+
+START_TEST(poly40_isolated_roots_match_plain_method)
+{
+    unsigned long long st = 4409;
+    int nroot = 0;
+    double worst = 0.0;
+    for (int t = 0; t < 3000; t++) {
+        const int family = t % 3;
+        double p1[2], t1[2], sigma;
+        draw(&st, family, p1, t1, &sigma);
+        if (t % 6 == 1) sigma = pow(10.0, test_uniform(&st, 1.5, 5.0));
+        if (!(sigma > 0.0)) continue;
+        hprob pr;
+        memset(&pr, 0, sizeof pr);
+        pr.P1 = p1[0]; pr.P2 = p1[1]; pr.V1 = t1[0]; pr.V2 = t1[1]; pr.Lmin = 1.0; pr.sigma = sigma;
+        el__hermite_set_case(&pr);
+        if (pr.hcase == 3) continue;
+        double c[9];
+        const int deg = el__hermite_poly40(&pr, c);
+        const double X = sqrt(2.0 * sigma) * (1.0 + 1e-9);
+        compare_roots(c, deg, -X, X, &nroot, &worst);
+    }
+    for (int t = 0; t < 3000; t++) {
+        /* (x - r_0) ... (x - r_5) ((x - u)^2 + e^2), or eight real roots */
+        double c[9] = {1.0}, r[8];
+        int deg = 0;
+        r[0] = test_uniform(&st, -5.0, 5.0);
+        r[1] = r[0] + pow(10.0, -test_uniform(&st, 2.0, 3.0));
+        for (int i = 2; i < 8; i++) r[i] = test_uniform(&st, -8.0, 8.0);
+        for (int i = 0; i < 8; i++) {
+            if (t % 2 && i == 6) {
+                const double e = pow(10.0, -test_uniform(&st, 2.0, 3.0)), q[3] = {r[6] * r[6] + e * e, -2.0 * r[6], 1.0};
+                double n[9] = {0};
+                for (int j = 0; j <= deg; j++)
+                    for (int k = 0; k < 3; k++) n[j + k] += c[j] * q[k];
+                deg += 2;
+                memcpy(c, n, sizeof c);
+                break;
+            }
+            for (int j = deg + 1; j > 0; j--) c[j] = c[j - 1] - r[i] * c[j];
+            c[0] *= -r[i];
+            deg++;
+        }
+        compare_roots(c, deg, -8.0, t % 5 ? 8.0 : r[5], &nroot, &worst);
+    }
+    ck_assert_int_gt(nroot, 20000);
+    fprintf(stderr, "poly40_isolated_roots_match_plain_method: %d roots, largest difference %.3g times the condition\n",
+            nroot, worst);
+}
+END_TEST
+
+/* At a subnormal tension the range of (40) is ~1e-155 wide and its Bernstein
+ * coefficients underflow: isolation then counted more roots than the degree and wrote
+ * past the caller's eight (the fuzz driver's finding, ASan). Now no more than the
+ * degree, the plain method's roots, and el_hermite_analyse reports them. */
+START_TEST(poly40_roots_never_exceed_the_degree_at_subnormal_tension)
+{
+    const double th = 6.3787289234760038, ph = 1.0000000000000011;
+    const double sigmas[] = {1e-310, 1e-300, 4.9e-324, 1e-200};
+    for (int k = 0; k < 4; k++) {
+        hprob pr;
+        memset(&pr, 0, sizeof pr);
+        pr.P1 = cos(th); pr.P2 = sin(th); pr.V1 = cos(ph); pr.V2 = sin(ph); pr.Lmin = 1.0; pr.sigma = sigmas[k];
+        el__hermite_set_case(&pr);
+        double c[9], rf[16], rp[16];
+        int nf, np;
+        const int deg = el__hermite_poly40(&pr, c);
+        const double X = sqrt(2.0 * pr.sigma) * (1.0 + 1e-9);
+        el__poly_roots_in(c, deg, -X, X, 4e-16, rf, &nf);
+        el__poly_roots_in_plain(c, deg, -X, X, 4e-16, rp, &np);
+        ck_assert_int_le(nf, deg);
+        ck_assert_int_eq(nf, np);
+        const double P[2] = {pr.P1, pr.P2}, V[2] = {pr.V1, pr.V2};
+        el_hermite_analysis an;
+        ck_assert_int_eq(el_hermite_analyse(P, V, pr.sigma, &an), EL_OK);
+        ck_assert_int_le((int)an.nroot, 8);
+    }
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("hermite_tension");
@@ -108,6 +220,8 @@ int main(void)
     tcase_set_timeout(tc, 300);
     tcase_add_loop_test(tc, tension_solutions_contain_every_scanned_root, 0, 3);
     tcase_add_test(tc, separatrix_crossings_exact_at_high_tension);
+    tcase_add_test(tc, poly40_isolated_roots_match_plain_method);
+    tcase_add_test(tc, poly40_roots_never_exceed_the_degree_at_subnormal_tension);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }
