@@ -1031,7 +1031,9 @@ void el_spline_options_defaults(el_spline_options *opt);
  *     tangent or G2 ends on the circle. It is the arc with |k| ~ 1e4 (as
  *     el_hermite_solve's circles), ~1e-8 from the circle; a spline is accepted
  *     (EL_OK) when what does not touch such a piece is within tol and its
- *     residual is at most 1e-7.
+ *     residual is at most 1e-7. Pieces near a circle (sigma within ~1e-5 of
+ *     kappa^2, |k| in the hundreds) count as such when el_smooth_eval resolves
+ *     them to less than tol: 64 eps (1 + max|u|)(1 + |k|) / sqrt(mu) > tol length.
  *   - high tension, pieces near the separatrix (1 - k^2 -> 0: a nearly straight
  *     run between two ducks' boundary layers, the batten pulled tight): the
  *     curvature at the piece's far end hangs on K(k), which the last bit of k

@@ -115,9 +115,19 @@ static double piece_max_curvature(const el_smooth_params *p, double Kq, double k
     return m;
 }
 
-/* A piece that is a circular arc to what el_smooth_params resolves: |k| this
- * large (piece_from_state keeps |k| <~ 1e4 there, as el_hermite_solve). */
-static int circle_piece(const el_smooth_params *p) { return fabs(p->k) >= 1e3; }
+/* A piece that is a circular arc to what el_smooth_params resolves: |k| this large
+ * (piece_from_state keeps |k| <~ 1e4 there, as el_hermite_solve), or a piece near one
+ * (sigma near kappa^2, |k| in the hundreds) whose points el_smooth_eval resolves only
+ * to more than tol of its length: 64 eps (1 + max|u|)(1 + |k|) / sqrt(mu) (header),
+ * ~128 eps k^2 per radian of turning. Without the second test ducks on a unit circle
+ * were accepted at sigma = 1 + 1e-8 (|k| 5000, residual 2e-8) but refused at
+ * sigma = 1 + 1e-6 (|k| ~ 700, residual 3.7e-10 > tol 1e-10). */
+static int circle_piece(const el_smooth_params *p, double tol)
+{
+    if (fabs(p->k) >= 1e3) return 1;
+    const double w = sqrt(p->mu), umax = fmax(fabs(p->q), fabs(p->q + w * p->length));
+    return p->length > 0.0 && 64.0 * DBL_EPSILON * (1.0 + umax) * (1.0 + fabs(p->k)) > tol * w * p->length;
+}
 
 /* Knot i's position in user units (xy: the points, S: the unit): a point, or a
  * guide duck at its chord fraction plus its offset along the span's normal. */
@@ -139,7 +149,7 @@ static void knot_position(const el__spchain *w, const double *xy, double S, size
 
 /* Fill res from the solved chain (original units), measuring the residual;
  * *other: the part of it from joints and ends without a circle piece. */
-static int make_result(const el__spchain *w, const double *xy, size_t npoints, double S,
+static int make_result(const el__spchain *w, const double *xy, size_t npoints, double S, double tol,
                        el_spline_result *res, double *other)
 {
     const size_t n = w->n, m = w->m;
@@ -183,7 +193,7 @@ static int make_result(const el__spchain *w, const double *xy, size_t npoints, d
         const double h = hypot(e[0] - p->x0, e[1] - p->y0);
         const double rp = hypot(pt[2] - e[0], pt[3] - e[1]) / h;
         resid = fmax(resid, rp);
-        if (!circle_piece(p)) rest = fmax(rest, rp);
+        if (!circle_piece(p, tol)) rest = fmax(rest, rp);
         kth[j] = th[0];
         kka[j] = ka[0];
         ends[2 * j] = th[1];
@@ -210,11 +220,11 @@ static int make_result(const el__spchain *w, const double *xy, size_t npoints, d
             if (w->kind[e] == EL_SPLINE_G2) ri = fabs(kap - w->kg[e] / S) * lr;
             if (w->kind[e] != EL_SPLINE_NATURAL)
                 ri = fmax(ri, fabs(el__wrap_pi(kth[i] - w->th_end[e])));
-            circle = circle_piece(&r.pieces[i == 0 ? 0 : m - 1]);
+            circle = circle_piece(&r.pieces[i == 0 ? 0 : m - 1], tol);
         } else {
             const size_t jm = (i + m - 1) % m;
             ri = fmax(fabs(el__wrap_pi(ends[2 * jm] - kth[i])), fabs(ends[2 * jm + 1] - kka[i]) * lr);
-            circle = circle_piece(&r.pieces[jm]) || circle_piece(&r.pieces[i % m]);
+            circle = circle_piece(&r.pieces[jm], tol) || circle_piece(&r.pieces[i % m], tol);
         }
         resid = fmax(resid, ri);
         if (!circle) rest = fmax(rest, ri);
@@ -429,7 +439,7 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
     if (st == EL_ENOMEM) goto done;
     if (!st || sol->near) {   /* a solution, or one to what the parametrisation resolves */
         double other;
-        const int st2 = make_result(sol, xy, n, S, res, &other);
+        const int st2 = make_result(sol, xy, n, S, opt->tol, res, &other);
         if (st2) { st = st2; goto done; }
         if (straight && lmode) { res->sigma = 0.0; goto done; }
         if (straight) goto done;

@@ -258,6 +258,21 @@ def test_circle_is_an_elastica_to_its_accuracy():
         assert np.allclose(sp.curvatures, 1 / R, atol=1e-7)
 
 
+@pytest.mark.parametrize("scale", [1e-3, 1.0, 1e4])
+@pytest.mark.parametrize("offset", [-3e-6, -1e-6, 3e-7, 1e-6, 3e-6, 1e-5])
+def test_ducks_on_a_circle_with_a_tension_near_its_own_are_accepted(offset, scale):
+    """sigma R^2 = 1 + offset: the spline is near the circle, its pieces near-circular
+    with |k| in the hundreds, which el_smooth_eval resolves only to ~1e-10 of their
+    length (header); they are accepted as the circle's own pieces are (offsets 1e-6 and
+    3e-6 were refused with a residual of 3e-10 while 1e-8 was accepted at 2e-8)."""
+    u = np.linspace(0.0, 2.0 * np.pi, 7, endpoint=False) + 0.15 * np.sin(np.arange(7))
+    sp = el.elastic_spline(scale * np.c_[np.cos(u), -np.sin(u)], closed=True,
+                           tension=(1.0 + offset) / scale**2)
+    assert sp.residual < 1e-8
+    assert all(100 < abs(p.k) < 1e4 for p in sp.pieces)
+    assert np.allclose(np.hypot(*sp.points(400).T), scale, rtol=1e-4, atol=0)
+
+
 @pytest.mark.parametrize("degree", [3, 5])
 @pytest.mark.parametrize("closed", [False, True])
 def test_one_bspline_g2_at_the_points(degree, closed):
