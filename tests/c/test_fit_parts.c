@@ -276,6 +276,17 @@ START_TEST(test_discrete_orthogonal_gradient)
 }
 END_TEST
 
+/* One curve of the model with every parameter free, x = v. */
+static fit_map all_free_unscaled(int model)
+{
+    fit_map m;
+    memset(&m, 0, sizeof m);
+    m.model = model;
+    m.ncurves = 1;
+    for (int j = 0; j < FIT_NP; j++) { m.scale[j] = 1.0; m.idx[m.nx++] = j; }
+    return m;
+}
+
 /* The discrete paired objective's normal equations (fold_paired: the x0, y0 columns not
  * stored, their products as sums of every other entry and counts of ones) against the
  * plain g = J^T r / n and H = J^T J / n from el_discrete_jacobian, over three blocks of
@@ -298,10 +309,7 @@ START_TEST(test_discrete_paired_normal_equations_equal_plain_ones)
         if (v[6] < 0.0)                      /* d/dv6 = -d/dk - d2K/d|k| d/dq */
             for (size_t r = 0; r < 2 * N; r++)
                 J[r * FIT_NP + 6] = -J[r * FIT_NP + 6] - dq_dk * J[r * FIT_NP + 5];
-        fit_map m;
-        memset(&m, 0, sizeof m);
-        m.model = FIT_DISCRETE; m.ncurves = 1;
-        for (int j = 0; j < FIT_NP; j++) { m.scale[j] = 1.0; m.idx[m.nx++] = j; }
+        const fit_map m = all_free_unscaled(FIT_DISCRETE);
         fit_objective o;
         ck_assert_int_eq(fit_objective_init(&o, FIT_PAIRED, &m, xy, N, 0.0, 0.0, 1.0, NULL), EL_OK);
         double x[FIT_MAXX];
@@ -355,10 +363,7 @@ START_TEST(test_branch_only_search_equals_full_search)
         for (size_t i = 0; i < N; i++) s[i] = v[6] * (double)i / (N - 1);
         ck_assert_int_eq(el_smooth_eval(&p, N, s, xy, NULL, NULL), EL_OK);
         for (size_t i = 0; i < 2 * N; i++) xy[i] += 0.08 * test_uniform(&rng, -1, 1);
-        fit_map m;
-        memset(&m, 0, sizeof m);
-        m.model = FIT_SMOOTH; m.ncurves = 1;
-        for (int j = 0; j < FIT_NP; j++) { m.scale[j] = 1.0; m.idx[m.nx++] = j; }
+        const fit_map m = all_free_unscaled(FIT_SMOOTH);
         fit_objective o;
         ck_assert_int_eq(fit_objective_init(&o, FIT_ORTHOGONAL, &m, xy, N, 0.0, 0.0, 1.0, NULL), EL_OK);
         double x[FIT_MAXX], vv[2][FIT_NP];
