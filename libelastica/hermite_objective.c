@@ -485,7 +485,6 @@ int el__hermite_shape_eval_to(const hprob *pr, double qs, double fine_below, hst
     return EL_OK;
 }
 
-
 int el__hermite_chart_eval(const hprob *pr, int chart, double u, double v, int b, hstate *st,
                            hgrad *g, double *sigma)
 {
