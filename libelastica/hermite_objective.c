@@ -460,15 +460,6 @@ static void shape_grad(const hprob *pr, const hstate *st, const curv_grad *cg, c
     }
 }
 
-int el__hermite_shape_eval(const hprob *pr, double qs, hstate *st)
-{
-    shapework w;
-    double rf, rd, U, DD;
-    int rc = shape_prepare(pr, st, &w);
-    if (!rc) rc = el__carlson_fd(w.ra.x, w.ra.y, 1.0, qs, &rf, &rd);
-    return rc ? rc : shape_finish(pr, &w, rf, rd, st, &U, &DD);
-}
-
 int el__hermite_shape_eval_to(const hprob *pr, double qs, double fine_below, hstate *st, int *fine)
 {
     shapework w;
@@ -483,6 +474,11 @@ int el__hermite_shape_eval_to(const hprob *pr, double qs, double fine_below, hst
         return rc;
     if (fine) *fine = 1;
     return EL_OK;
+}
+
+int el__hermite_shape_eval(const hprob *pr, double qs, hstate *st)
+{
+    return el__hermite_shape_eval_to(pr, qs, -1.0, st, NULL);   /* |f| <= -1: never continued */
 }
 
 int el__hermite_chart_eval(const hprob *pr, int chart, double u, double v, int b, hstate *st,

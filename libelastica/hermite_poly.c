@@ -33,6 +33,17 @@ static double horner(const double *c, int deg, double x, double *dp)
     return v;
 }
 
+/* The degree of sum c[i] x^i on [lo, hi] by the terms' sizes there, |c_i| R^i: a leading
+ * coefficient negligible on it (a degenerate problem) lowers the degree. */
+static int effective_degree(const double *c, int deg, double lo, double hi)
+{
+    const double R = fmax(1.0, fmax(fabs(lo), fabs(hi)));
+    double tmax = 0.0, Ri = 1.0, Rdeg[9];
+    for (int i = 0; i <= deg; i++, Ri *= R) { Rdeg[i] = Ri; tmax = fmax(tmax, fabs(c[i]) * Ri); }
+    while (deg > 0 && fabs(c[deg]) * Rdeg[deg] <= 1e-14 * tmax) deg--;
+    return deg;
+}
+
 /* The root of sum c[i] x^i in [a, b], where its value fa at a and p(b) differ in sign, to
  * the relative precision tol: Newton's method from x inside the bracket, kept there
  * (bisection when a step leaves it or the previous step did not halve it; rtsafe of
@@ -69,16 +80,11 @@ static double bracketed_root(const double *c, int deg, double a, double b, doubl
  * and computes the complex roots that are not needed. A root of even multiplicity
  * (no sign change) is not found. The plain counterpart of el__poly_roots_in (below),
  * and its fallback. */
-void el__poly_roots_in_plain(const double *c_in, int deg, double lo, double hi, double tol,
+void el__poly_roots_in_plain(const double *c, int deg, double lo, double hi, double tol,
                              double *roots, int *nroots)
 {
-    /* the terms' sizes on the interval, |c_i| R^i: a leading coefficient negligible there
-     * (a degenerate problem) lowers the degree */
-    const double R = fmax(1.0, fmax(fabs(lo), fabs(hi)));
-    double c[9], tmax = 0.0, Ri = 1.0, Rdeg[9];
-    for (int i = 0; i <= deg; i++, Ri *= R) { c[i] = c_in[i]; Rdeg[i] = Ri; tmax = fmax(tmax, fabs(c[i]) * Ri); }
+    deg = effective_degree(c, deg, lo, hi);
     *nroots = 0;
-    while (deg > 0 && fabs(c[deg]) * Rdeg[deg] <= 1e-14 * tmax) deg--;
     if (deg <= 0 || !(hi > lo)) return;
     if (deg <= 2) {
         double r[2];
@@ -226,14 +232,11 @@ static void isolate(isolation *w, double a, double b, const double *bc, double e
  * by Newton's method), ~8 halvings instead. Where rounding leaves the count open the plain
  * method takes over on that interval, and on the whole where more roots than the degree
  * came out (isolate). Checked against the plain method in tests/c/test_hermite_tension.c. */
-void el__poly_roots_in(const double *c_in, int deg, double lo, double hi, double tol, double *roots,
+void el__poly_roots_in(const double *c, int deg, double lo, double hi, double tol, double *roots,
                        int *nroots)
 {
-    const double R = fmax(1.0, fmax(fabs(lo), fabs(hi)));
-    double c[9], tmax = 0.0, Ri = 1.0, Rdeg[9];
-    for (int i = 0; i <= deg; i++, Ri *= R) { c[i] = c_in[i]; Rdeg[i] = Ri; tmax = fmax(tmax, fabs(c[i]) * Ri); }
+    deg = effective_degree(c, deg, lo, hi);
     *nroots = 0;
-    while (deg > 0 && fabs(c[deg]) * Rdeg[deg] <= 1e-14 * tmax) deg--;
     if (deg <= 2 || !(hi > lo)) {
         el__poly_roots_in_plain(c, deg, lo, hi, tol, roots, nroots);
         return;
