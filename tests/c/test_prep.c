@@ -5,18 +5,12 @@
 #include <float.h>
 #include <string.h>
 
-static double gauss(unsigned long long *st)
-{
-    double u1 = test_uniform(st, 1e-300, 1.0), u2 = test_uniform(st, 0.0, 1.0);
-    return sqrt(-2.0 * log(u1)) * cos(2.0 * M_PI * u2);
-}
-
 static double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 /* A random proper rotation: columns u, v, w (Gram-Schmidt of random vectors). */
 static void random_frame(unsigned long long *st, double *u, double *v, double *w)
 {
-    for (int j = 0; j < 3; j++) { u[j] = gauss(st); v[j] = gauss(st); }
+    for (int j = 0; j < 3; j++) { u[j] = test_normal(st); v[j] = test_normal(st); }
     double nu = sqrt(dot3(u, u));
     for (int j = 0; j < 3; j++) u[j] /= nu;
     double d = dot3(u, v);
@@ -37,7 +31,7 @@ static void tilted_curve(size_t n, double scale, const double *o, const double *
     for (size_t i = 0; i < n; i++) {
         double t = -1.5 + 3.2 * (double)i / (double)(n - 1);
         double x = scale * t, y = scale * (0.3 * t * t * t - 0.4 * t);
-        double z = zsig > 0 ? zsig * scale * gauss(st) : 0.0;
+        double z = zsig > 0 ? zsig * scale * test_normal(st) : 0.0;
         for (int j = 0; j < 3; j++) xyz[3 * i + j] = o[j] + x * u[j] + y * v[j] + z * w[j];
     }
 }
@@ -197,7 +191,7 @@ START_TEST(test_pca_normalize)
     double xy[2 * N], out[2 * N], back[2 * N];
     double a = test_uniform(&st, -M_PI, M_PI), ox = test_uniform(&st, -50, 50), oy = test_uniform(&st, -50, 50);
     for (size_t i = 0; i < N; i++) {
-        double t = test_uniform(&st, -3, 3), s = 0.5 * sin(2 * t) + 0.01 * gauss(&st);
+        double t = test_uniform(&st, -3, 3), s = 0.5 * sin(2 * t) + 0.01 * test_normal(&st);
         xy[2 * i] = ox + cos(a) * t - sin(a) * s;
         xy[2 * i + 1] = oy + sin(a) * t + cos(a) * s;
     }
@@ -494,8 +488,8 @@ static double cubic_trial(unsigned long long *st, double noise, double *rout)
     double p[2 * N];
     for (size_t i = 0; i < N; i++) {
         double x = -1.0 + 2.0 * (double)i / (N - 1), dx = x - xi;
-        double y = a * dx * dx * dx + b * dx + noise * gauss(st);
-        x += noise * gauss(st);
+        double y = a * dx * dx * dx + b * dx + noise * test_normal(st);
+        x += noise * test_normal(st);
         p[2 * i] = cos(ang) * x - sin(ang) * y;
         p[2 * i + 1] = sin(ang) * x + cos(ang) * y;
     }
@@ -552,7 +546,7 @@ START_TEST(test_inflection_invariance)
     for (size_t i = 0; i < N; i++) {
         double t = -1.2 + 2.9 * (double)i / (N - 1);
         p[2 * i] = t;
-        p[2 * i + 1] = sin(2.2 * t) * 0.4 + 0.002 * gauss(&st);
+        p[2 * i + 1] = sin(2.2 * t) * 0.4 + 0.002 * test_normal(&st);
     }
     el_inflection a, b, c;
     ck_assert_int_eq(el_find_inflection(p, N, 0, &a), EL_OK);

@@ -26,6 +26,13 @@ static inline double test_uniform(unsigned long long *state, double lo, double h
     return lo + (hi - lo) * (double)(x >> 11) / 9007199254740992.0;
 }
 
+/* Deterministic standard normal number (Box-Muller from two test_uniform draws). */
+static inline double test_normal(unsigned long long *state)
+{
+    const double u1 = test_uniform(state, 1e-300, 1.0), u2 = test_uniform(state, 0.0, 1.0);
+    return sqrt(-2.0 * log(u1)) * cos(2.0 * M_PI * u2);
+}
+
 /* Run one suite, return the process exit code. */
 static inline int test_run_suite(Suite *s)
 {
