@@ -28,6 +28,7 @@
 
 #include <dirent.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -169,6 +170,36 @@ static double cpu_now(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+/* CPU seconds of the release driver's `--cpu FILE` run, -1 if it cannot be run: a
+ * child exec'd directly (no shell, so any path works), its stdout through a pipe. */
+static double run_release(const char *path)
+{
+    int fds[2];
+    if (pipe(fds)) return -1.0;
+    const pid_t pid = fork();
+    if (pid < 0) { close(fds[0]); close(fds[1]); return -1.0; }
+    if (pid == 0) {
+        const int devnull = open("/dev/null", O_WRONLY);
+        if (devnull >= 0) dup2(devnull, 2);
+        dup2(fds[1], 1);
+        close(fds[0]);
+        execl(release_driver, release_driver, "--cpu", path, (char *)NULL);
+        _exit(127);
+    }
+    close(fds[1]);
+    double s = -1.0;
+    FILE *p = fdopen(fds[0], "r");
+    if (p) {
+        if (fscanf(p, "cpu %lf", &s) != 1) s = -1.0;
+        fclose(p);
+    } else {
+        close(fds[0]);
+    }
+    int status;
+    if (waitpid(pid, &status, 0) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0) s = -1.0;
+    return s;
+}
+
 /* CPU seconds of the input in the release driver (--cpu), -1 if it cannot be run. */
 static double release_cpu(const uint8_t *data, size_t len)
 {
@@ -177,16 +208,7 @@ static double release_cpu(const uint8_t *data, size_t len)
     if (fd < 0) return -1.0;
     const int wrote = write(fd, data, len) == (ssize_t)len;
     close(fd);
-    double s = -1.0;
-    if (wrote) {
-        char cmd[2048];
-        snprintf(cmd, sizeof cmd, "'%s' --cpu '%s' 2>/dev/null", release_driver, path);
-        FILE *p = popen(cmd, "r");
-        if (p) {
-            if (fscanf(p, "cpu %lf", &s) != 1) s = -1.0;
-            if (pclose(p) != 0) s = -1.0;
-        }
-    }
+    const double s = wrote ? run_release(path) : -1.0;
     unlink(path);
     return s;
 }
