@@ -14,6 +14,23 @@
  * k = 1 (here k'^2 comes in exactly). tests/c/test_ellint.c checks them against GSL.
  */
 #include "internal.h"
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+/* sqrt(x) and sqrt(y) at once where SSE2 has a two-lane square root (the same
+ * correctly rounded values: the duplication loop's latency is its square roots) */
+static void sqrt2(double x, double y, double *sx, double *sy)
+{
+#if defined(__SSE2__)
+    const __m128d r = _mm_sqrt_pd(_mm_set_pd(y, x));
+    *sx = _mm_cvtsd_f64(r);
+    *sy = _mm_cvtsd_f64(_mm_unpackhi_pd(r, r));
+#else
+    *sx = sqrt(x);
+    *sy = sqrt(y);
+#endif
+}
 
 /* max(|a - x|, |a - y|, |a - z|) without libm's fmax calls (inner loop) */
 static double maxdev(double a, double x, double y, double z)
@@ -78,7 +95,9 @@ int el__carlson_fd(double x, double y, double z, double qs, double *rf, double *
     double AF = AF0, AD = AD0, f2 = 1.0, f4 = 1.0, f8 = 1.0, num = 0.0, den = 1.0;
     while (QF >= AF || QD >= AD) {
         /* sqrt is what this loop costs: z = 1 (every caller's first step) is free */
-        const double sx = sqrt(x), sy = sqrt(y), sz = z == 1.0 ? 1.0 : sqrt(z);
+        double sx, sy;
+        sqrt2(x, y, &sx, &sy);
+        const double sz = z == 1.0 ? 1.0 : sqrt(z);
         const double lam = sx * sy + sx * sz + sy * sz, d = f8 * (sz * (z + lam));
         num = num * d + f4 * den;
         den *= d;
