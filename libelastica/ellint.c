@@ -14,6 +14,23 @@
  * k = 1 (here k'^2 comes in exactly). tests/c/test_ellint.c checks them against GSL.
  */
 #include "internal.h"
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+/* sqrt(x) and sqrt(y) at once where SSE2 has a two-lane square root (the same
+ * correctly rounded values: the duplication loop's latency is its square roots) */
+static void sqrt2(double x, double y, double *sx, double *sy)
+{
+#if defined(__SSE2__)
+    const __m128d r = _mm_sqrt_pd(_mm_set_pd(y, x));
+    *sx = _mm_cvtsd_f64(r);
+    *sy = _mm_cvtsd_f64(_mm_unpackhi_pd(r, r));
+#else
+    *sx = sqrt(x);
+    *sy = sqrt(y);
+#endif
+}
 
 /* max(|a - x|, |a - y|, |a - z|) without libm's fmax calls (inner loop) */
 static double maxdev(double a, double x, double y, double z)
@@ -24,26 +41,26 @@ static double maxdev(double a, double x, double y, double z)
 }
 
 /* The series of DLMF 19.36.1 (R_F) and 19.36.2 (R_D) to seventh order, in the
- * deviations of the arguments from their means AF, AD after the duplications
- * (scaled by f4 = 4^-steps), plus the duplication sum of R_D, num / den. (sqrt and
- * division dominate the cost here: one division per mean.) */
-static double rf_series(double AF0, double x0, double y0, double f4, double AF)
+ * deviations of the arguments from their means AF, AD after the duplications (kept
+ * unscaled: 4^steps times Carlson's, f2 = 2^steps), plus the duplication sum of R_D,
+ * num / den. (sqrt and division dominate the cost here: one division per mean.) */
+static double rf_series(double AF0, double x0, double y0, double f2, double AF)
 {
-    const double iA = 1.0 / AF, X = f4 * (AF0 - x0) * iA, Y = f4 * (AF0 - y0) * iA, Z = -X - Y;
+    const double iA = 1.0 / AF, X = (AF0 - x0) * iA, Y = (AF0 - y0) * iA, Z = -X - Y;
     const double E2 = X * Y - Z * Z, E3 = X * Y * Z;
     /* the coefficients' quotients are folded by the compiler: multiplications, not the
      * divisions (~4 cycles each, not pipelined) that dividing by them would cost */
     return (1.0 + E2 * (-1.0 / 10.0 + E2 * (1.0 / 24.0 - 5.0 / 208.0 * E2) + E3 * (-3.0 / 44.0 + 1.0 / 16.0 * E2)) +
-            E3 * (1.0 / 14.0 + 3.0 / 104.0 * E3)) * sqrt(iA);
+            E3 * (1.0 / 14.0 + 3.0 / 104.0 * E3)) * (f2 * sqrt(iA));
 }
 
-static double rd_series(double AD0, double x0, double y0, double f4, double AD, double num, double den)
+static double rd_series(double AD0, double x0, double y0, double f2, double AD, double num, double den)
 {
-    const double iA = 1.0 / AD, X = f4 * (AD0 - x0) * iA, Y = f4 * (AD0 - y0) * iA, Z = -(X + Y) / 3.0;
+    const double iA = 1.0 / AD, X = (AD0 - x0) * iA, Y = (AD0 - y0) * iA, Z = -(X + Y) / 3.0;
     const double XY = X * Y, Z2 = Z * Z;
     const double E2 = XY - 6.0 * Z2, E3 = (3.0 * XY - 8.0 * Z2) * Z;
     const double E4 = 3.0 * (XY - Z2) * Z2, E5 = XY * Z2 * Z;
-    return f4 * iA * sqrt(iA) *
+    return iA * (f2 * sqrt(iA)) *
                (1.0 + E2 * (-3.0 / 14.0 + E2 * (9.0 / 88.0 - 1.0 / 16.0 * E2 + 45.0 / 272.0 * E3) +
                             E3 * (-9.0 / 52.0) + E4 * (3.0 / 20.0) + E5 * (-9.0 / 68.0)) +
                 E3 * (1.0 / 6.0 + E3 * (3.0 / 40.0) + E4 * (-9.0 / 68.0)) + E4 * (-3.0 / 22.0) +
@@ -67,24 +84,34 @@ int el__carlson_fd(double x, double y, double z, double qs, double *rf, double *
      * r = 1e-16 (qs = 1); r ~ 1e-16 qs^-8 otherwise */
     const double QF = rf ? qs * 80.0 * maxdev(AF0, x, y, z) : 0.0;
     const double QD = qs * 120.0 * maxdev(AD0, x, y, z);
-    /* R_D's sum of f4 / (sqrt(z) (z + lam)) kept as one fraction num / den (the
-     * denominators are O(1) and there are a handful: no overflow) */
-    double AF = AF0, AD = AD0, f4 = 1.0, num = 0.0, den = 1.0;
-    while (f4 * QF >= fabs(AF) || f4 * QD >= fabs(AD)) {
+    /* The duplication x <- (x + lam)/4 (DLMF 19.26.18) without the 1/4: the arguments
+     * and means grow by 4 per step instead, lam by 4 and the square roots by 2, which are
+     * exact scalings (the same bits as Carlson's, one multiplication less on the loop's
+     * critical path); the deviations from the means shrink by 4 per step relative to
+     * them, so the test d <= 1/Q reads Q dev0 < A. R_D's sum of
+     * 4^-n / (sqrt(z_n) (z_n + lam_n)) in Carlson's scale (d = 8^-n times ours) kept
+     * as one fraction num / den (the denominators are O(1) and there are a handful: no
+     * overflow). */
+    double AF = AF0, AD = AD0, f2 = 1.0, f4 = 1.0, f8 = 1.0, num = 0.0, den = 1.0;
+    while (QF >= AF || QD >= AD) {
         /* sqrt is what this loop costs: z = 1 (every caller's first step) is free */
-        const double sx = sqrt(x), sy = sqrt(y), sz = z == 1.0 ? 1.0 : sqrt(z);
-        const double lam = sx * sy + sx * sz + sy * sz, d = sz * (z + lam);
+        double sx, sy;
+        sqrt2(x, y, &sx, &sy);
+        const double sz = z == 1.0 ? 1.0 : sqrt(z);
+        const double lam = sx * sy + sx * sz + sy * sz, d = f8 * (sz * (z + lam));
         num = num * d + f4 * den;
         den *= d;
-        AF = 0.25 * (AF + lam);
-        AD = 0.25 * (AD + lam);
-        x = 0.25 * (x + lam);
-        y = 0.25 * (y + lam);
-        z = 0.25 * (z + lam);
+        AF += lam;
+        AD += lam;
+        x += lam;
+        y += lam;
+        z += lam;
+        f2 *= 2.0;
         f4 *= 0.25;
+        f8 *= 0.125;
     }
-    if (rf) *rf = rf_series(AF0, x0, y0, f4, AF);
-    *rd = rd_series(AD0, x0, y0, f4, AD, num, den);
+    if (rf) *rf = rf_series(AF0, x0, y0, f2, AF);
+    *rd = rd_series(AD0, x0, y0, f2, AD, num, den);
     return (rf && !isfinite(*rf)) || !isfinite(*rd) ? EL_EDOM : EL_OK;
 }
 
