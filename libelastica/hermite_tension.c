@@ -740,8 +740,10 @@ static int solve_tension(hprob *pr, int ns, int lean, hrootlist *out)
         if (!(X > 0.0)) continue;
         ptlist l;
         if ((rc = split_points(pr, b, X, r40, b40, n40, &l))) return rc;
-        splitpt pts[MAXPTS + 2] = {{-X, 0}, {X, 0}};
+        splitpt pts[MAXPTS + 2];   /* pts[0..n) used: no zero-initialisation of its 1 KB */
         int n = 2, cls[MAXPTS + 1];
+        pts[0] = (splitpt){-X, 0};
+        pts[1] = (splitpt){X, 0};
         for (int i = 0; i < l.n; i++)
             if (l.v[i].x > -X && l.v[i].x < X) pts[n++] = l.v[i];
         sort_splitpts(pts, n);
