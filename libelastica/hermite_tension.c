@@ -1,8 +1,7 @@
 /*
  * Hermite interpolation for a given tension, seed 004 §4: the kappa_m bound of
  * Theorem 9, the pieces between the split points ((18), (40), (44), (45); the
- * polynomials in hermite_poly.c), sampling and root finding on each; el_hermite_analyse
- * reports the same analysis.
+ * polynomials and their roots in hermite_poly.c), sampling and root finding on each.
  */
 #include "hermite_internal.h"
 #include <gsl/gsl_errno.h>
@@ -30,15 +29,12 @@ static double period_infl(double km, double sigma)
 /* Every solution has T >= L >= Lmin. sigma <= 0: k^2 <= 1/2, so
  * T <= 4 K(1/sqrt2) sqrt2 / sqrt(kappa_m^2 - sigma) and kappa_m^2 <= (C0/Lmin)^2 + sigma;
  * sigma > 0: the non-inflectional curves have kappa_m^2 <= 2 sigma, and T decreases
- * with kappa_m on the inflectional side (proof of Theorem 9): solve T(kappa_m) = Lmin
- * to 1e-3 relative, keeping the end hi of the bracket where T < Lmin: B = hi (1 + 1e-9)
- * bounds kappa_m whatever the bracket's width. This is (37) without the epsilon: exact
- * for every sigma. The bracket closes by Anderson-Bjorck regula falsi on ln(T / Lmin) in
- * u = ln(kappa_m - sqrt(2 sigma)), where it is smooth and slowly curved (T grows like
- * ln 1/(kappa_m - sqrt(2 sigma)) at the separatrix and falls like C0 / kappa_m far from
- * it), with a bisection (in u) every third step unless the bracket halved: ~5 periods
- * per bound, without GSL's solver object and its allocation (Brent's ~8). */
-static int kappa_bound(double sigma, double Lmin, double *B)
+ * with kappa_m on the inflectional side (proof of Theorem 9): T(kappa_m) = Lmin solved to
+ * 1e-3, B the bracket's end where T < Lmin (a bound whatever the width). This is (37)
+ * without the epsilon: exact for every sigma. Anderson-Bjorck on ln(T / Lmin) in
+ * ln(kappa_m - sqrt(2 sigma)), where it is smooth (T ~ ln 1/(kappa_m - sqrt(2 sigma)) at
+ * the separatrix, ~ C0 / kappa_m far from it): 7 periods per bound (GSL's Brent: 7.8). */
+int el__hermite_kappa_bound(double sigma, double Lmin, double *B)
 {
     const double c = C0_PERIOD / Lmin;
     if (sigma <= 0.0) {
@@ -114,12 +110,6 @@ static void sort_splitpts(splitpt *v, int n)
     }
 }
 
-static int cmp_double(const void *a, const void *b)
-{
-    const double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
 /* Domain of the unknown on branch b: [-X, X]. */
 static double domain_half(const hprob *pr, int b)
 {
@@ -129,83 +119,6 @@ static double domain_half(const hprob *pr, int b)
     if (!isfinite(k0) || k0 * k0 > pr->B * pr->B) return -1.0;
     const double a = pr->B * pr->B - s, c = k0 * k0 - s, r = a * a - c * c; /* (8) */
     return r > 0.0 ? 0.5 * sqrt(r) : -1.0;
-}
-
-/* Where (40) can vanish: it is a square plus D M^2 (case 1, hermite_poly.c) or plus
- * V1^2 D (case 2), D = kappa0^2 (kappa0^2 - 2 sigma) (42), so its roots have
- * kappa0^2 <= 2 sigma (kappa_m^2 = 2 sigma >= kappa0^2): [-sqrt(2 sigma), sqrt(2 sigma)]
- * (widened by rounding's margin) holds the roots of [-B, B] with fewer critical points
- * of the derivatives to locate. */
-static double poly40_range(double sigma, double B)
-{
-    return fmin(B, sqrt(2.0 * sigma) * (1.0 + 1e-9));
-}
-
-/* The roots of (40) in the range of poly40_range, ascending. Up to SEP_SIGMA by Bernstein
- * isolation (el__poly_roots_in); above, where the separatrix pieces start from these
- * crossings (crossing_refine) and the solutions hug them exponentially closely, by the
- * plain method as before: the two differ by up to 1e-13 after crossing_refine near a
- * close pair of crossings, and on 3000 problems per kind with tangents aligned to the
- * chord (sigma |p1-p0|^2 from 100 to 1100) that moved 6 of 6161 solutions out of reach
- * and 2 others into it (the solver's own sensitivity there, not the roots' accuracy). */
-#define SEP_SIGMA 100.0
-static void poly40_roots(const hprob *pr, double *r, int *nr)
-{
-    double pc[9];
-    const int pd = el__hermite_poly40(pr, pc);
-    const double X40 = poly40_range(pr->sigma, pr->B);
-    if (pr->sigma > SEP_SIGMA) el__poly_roots_in_plain(pc, pd, -X40, X40, 4e-16, r, nr);
-    else el__poly_roots_in(pc, pd, -X40, X40, 4e-16, r, nr);
-}
-
-/* Which root of (17) has kappa_m^2 = 2 sigma at a root of (40) (seed 004 §4:
- * the roots are divided in two groups, one per objective function). */
-static int root_branch(const hprob *pr, double x)
-{
-    if (pr->hcase != 1) return 0;
-    int best = 0;
-    double bd = INFINITY;
-    for (int b = 0; b < 2; b++) {
-        hstate st;
-        if (el__hermite_curvdata(pr, x, b, &st)) continue;
-        const double F1 = -2.0 * st.k0p, F2 = st.k0 * st.k0 - pr->sigma;
-        const double dd = fabs(sqrt(F1 * F1 + F2 * F2) - pr->sigma);   /* kappa_m^2 - 2 sigma */
-        if (dd < bd) { bd = dd; best = b; }
-    }
-    return best;
-}
-
-
-/* |F|^2 - sigma^2 = 4 kappa0'^2 + kappa0^2 (kappa0^2 - 2 sigma) at x on branch b, from
- * the curvature data alone (NaN outside (18)): what a root of (40) makes zero. */
-static double crossing_gap(const hprob *pr, int b, double x)
-{
-    hstate st;
-    if (el__hermite_curvdata(pr, x, b, &st)) return NAN;
-    return 4.0 * st.k0p * st.k0p + st.k0 * st.k0 * (st.k0 * st.k0 - 2.0 * pr->sigma);
-}
-
-/* A root x of (40), assigned to branch b, refined by the secant method on crossing_gap:
- * the polynomial's coefficients span many orders of magnitude at high tension, which
- * leaves its roots up to ~1e-12 relative off (1.7e-10 at sigma |p1-p0|^2 = 4000), while
- * the solutions there lie exponentially closer to the crossing, from which the
- * separatrix pieces start. The refined value is kept only when it lowers |gap| and
- * moves x by less than 1e-6 (1 + |x|) (the same crossing). */
-static double crossing_refine(const hprob *pr, int b, double x)
-{
-    double x0 = x, g0 = crossing_gap(pr, b, x0);
-    if (!isfinite(g0) || g0 == 0.0) return x;
-    double x1 = x0 + 1e-10 * (1.0 + fabs(x0)), g1 = crossing_gap(pr, b, x1);
-    for (int it = 0; it < 8 && isfinite(g1) && g1 != g0 && g1 != 0.0; it++) {
-        const double x2 = x1 - g1 * (x1 - x0) / (g1 - g0);
-        if (!(fabs(x2 - x) < 1e-6 * (1.0 + fabs(x)))) return x;
-        x0 = x1;
-        g0 = g1;
-        x1 = x2;
-        g1 = crossing_gap(pr, b, x1);
-        if (fabs(x1 - x0) <= 4e-16 * fabs(x1)) break;
-    }
-    return isfinite(g1) && fabs(g1) < fabs(crossing_gap(pr, b, x)) ? x1 : x;
 }
 
 /* The kind of curve at x (el__hermite_state_class; cheap, the curvature data only); CLASS_NONE
@@ -273,9 +186,7 @@ typedef struct {
     int sep, side;
     double w0, w_start;
     int lean;   /* the length mode's seeds (el__hermite_seed_tension): solve_sep_piece */
-    /* the ends of the piece being searched (x chart) that are separatrix crossings, a
-     * root of (40) or (41), where the objective is logarithmic (bracket_root); NAN where not */
-    double sep_lo, sep_hi;
+    double sep_lo, sep_hi;   /* the piece's ends at separatrix crossings (bracket_root), or NAN */
 } fctx;
 
 static void fctx_init(fctx *c, const hprob *pr, int b)
@@ -362,28 +273,15 @@ int el__hermite_roots_push(hrootlist *l, const hroot *r)
     return EL_OK;
 }
 
-/* The root on [a, b] with f(a) f(b) < 0 (the samples' coarse values), by the
- * Anderson-Bjorck variant of regula falsi (superlinear, the bracket kept): with the
- * coarse objective while the bracket is wider than 1e-6 of its abscissae and the last
- * |f| is above 1e-3, then with full precision until |f| (the end position error along F,
- * |P| = 1) is at rounding level (1e-14), the bracket is 4e-16 |x| wide, or the secant
- * step from a full-precision value is below the rounding of x (that value is then the
- * root to double precision: steep f rounds above 1e-14 there, and the step, falling on
- * the bracket's end, used to give way to bisecting the wide bracket, ~20 evaluations);
- * a root where |f| <= 1e-8. A sign change across a jump of f (L wrapping at a period)
- * is no root: the bracket closes with |f| large. (GSL's Brent needed ~8 full evaluations
- * per root from the samples' brackets, where f is steep next to a split point.)
- * Full precision from |f| <= 1e-3: a coarse value costs ~0.93 of a full one, and one that
- * lands below 1e-6 is continued to full precision (~1.4 in all), where the next step from
- * |f| <= 1e-3 mostly lands.
- * Next to a separatrix crossing x_c (a root of (40), (41)) that ends the piece, the
- * secant steps are taken in t = ln|x - x_c|: there |F| - sigma vanishes linearly in
- * x - x_c, so k'^2 = (|F| - sigma) / (2 |F|) does, and the length, K(k) = ln(4 / k') +
- * O(k'^2 ln k'), hence f, is A + B t + O(e^t t): nearly affine in t, while in x regula
- * falsi crawls along the logarithm (and the roots crowd there: half of the bench
- * problems' lie within 20 % of the piece's width from a crossing, a third within 5 %).
- * The every-third-step bisection stays in x, which a root far from x_c needs.
- * Evaluations per root on 1000 bench problems: 8.6 before these three changes, 6.45 after. */
+/* The root on [a, b] with f(a) f(b) < 0 (the samples' coarse values) by Anderson-Bjorck
+ * regula falsi: coarse while the bracket is wider than 1e-6 |x| and |f| > 1e-3 (coarse costs
+ * 0.93 of full, coarse continued below 1e-6 1.4), then full until |f| <= 1e-14 (the end error
+ * along F, |P| = 1), the bracket is 4e-16 |x| wide, or the secant step from a full value is
+ * below the rounding of x (steep f rounds above 1e-14); a root where |f| <= 1e-8. A jump of f
+ * (L wrapping at a period) closes with |f| large: no root. Next to a separatrix crossing x_c
+ * ending the piece the secant is taken in t = ln|x - x_c|: k'^2 vanishes linearly in x - x_c,
+ * so f = A + B t + O(e^t t) (K = ln(4/k') + ...), where in x it crawls; bisections (every
+ * third step unless the bracket halved) stay in x. 6.45 evaluations per root (8.6 in x). */
 static int bracket_root(fctx *c, double a, double fa, double b, double fb, hrootlist *out)
 {
     hroot r = el__hermite_mkroot(a, c->b, c->pr->sigma);
@@ -402,9 +300,7 @@ static int bracket_root(fctx *c, double a, double fa, double b, double fb, hroot
         /* the secant step in the chart, t its value there (NAN: x by bisection) */
         double t = (ta * fb - tb * fa) / (fb - fa);
         double x = dir != 0.0 ? xc + dir * exp(t) : t;
-        /* the secant step from a full-precision b below the rounding of x: b is the root to
-         * double precision, where the rounding of f can exceed 1e-14 (steep f) and the step,
-         * falling on b, would otherwise give way to bisecting the wide bracket */
+        /* the secant step from a full-precision b below the rounding of x: b is the root */
         if (bfull && fabs(x - b) <= 2e-16 * scale) { ok = 1; break; }
         if (it % 3 == 2) {
             if (!(span < 0.5 * halved)) x = t = NAN;
@@ -717,7 +613,7 @@ static int nbranches(const hprob *pr) { return pr->hcase == 1 ? 2 : pr->hcase ==
 /* All roots of the objectives for fixed sigma (seed 004 §4); lean: solve_sep_piece. */
 static int solve_tension(hprob *pr, int ns, int lean, hrootlist *out)
 {
-    int rc = kappa_bound(pr->sigma, pr->Lmin, &pr->B);
+    int rc = el__hermite_kappa_bound(pr->sigma, pr->Lmin, &pr->B);
     if (rc || pr->B < 0.0) return rc;
     /* roots of (40) in [-B, B], each assigned to its objective; for sigma <= 0
      * kappa_m^2 = 2 sigma cannot happen (apart from kappa = 0, a split point anyway) */
@@ -726,12 +622,12 @@ static int solve_tension(hprob *pr, int ns, int lean, hrootlist *out)
     if (pr->hcase != 3 && pr->sigma > 0.0) {
         double r[8];
         int nr;
-        poly40_roots(pr, r, &nr);
+        el__hermite_poly40_roots(pr, r, &nr);
         for (int i = 0; i < nr; i++)
             if (fabs(r[i]) < pr->B) {
                 /* the separatrix pieces (above SEP_SIGMA) need the crossing to rounding */
-                b40[n40] = root_branch(pr, r[i]);
-                r40[n40] = pr->sigma > SEP_SIGMA ? crossing_refine(pr, b40[n40], r[i]) : r[i];
+                b40[n40] = el__hermite_root_branch(pr, r[i]);
+                r40[n40] = pr->sigma > SEP_SIGMA ? el__hermite_crossing_refine(pr, b40[n40], r[i]) : r[i];
                 n40++;
             }
     }
@@ -775,72 +671,3 @@ static int solve_tension(hprob *pr, int ns, int lean, hrootlist *out)
 int el__hermite_solve_tension(hprob *pr, int ns, hrootlist *out) { return solve_tension(pr, ns, 0, out); }
 
 int el__hermite_seed_tension(hprob *pr, int ns, hrootlist *out) { return solve_tension(pr, ns, 1, out); }
-
-int el_hermite_analyse(const double P[2], const double V[2], double sigma,
-                       el_hermite_analysis *a)
-{
-    if (!P || !V || !a) return EL_EINVAL;
-    const double v[5] = {P[0], P[1], V[0], V[1], sigma};
-    if (el__all_finite(v, 5) || fabs(hypot(P[0], P[1]) - 1.0) > 1e-9 ||
-        fabs(hypot(V[0], V[1]) - 1.0) > 1e-9)
-        return EL_EINVAL;
-    if (sigma > 1e5) return EL_EDOM;           /* the range of el_hermite_solve */
-    el__gsl_quiet();
-    hprob pr = {P[0], P[1], V[0], V[1], sigma, 0, 1.0, 0.0};
-    el__hermite_set_case(&pr);
-    int rc = kappa_bound(sigma, 1.0, &pr.B);
-    if (rc) return rc;
-    el_hermite_analysis out;
-    memset(&out, 0, sizeof out);
-    out.hcase = pr.hcase;
-    out.kappa_bound = pr.B;
-    if (pr.B < 0.0) { *a = out; return EL_OK; }
-    double lo = -pr.B, hi = pr.B;
-    if (pr.hcase == 1) {
-        double c[3], r[2];
-        int nr;
-        el__hermite_disc_coeffs(&pr, c);
-        if ((rc = el__poly_real_roots(c, 2, r, &nr))) return rc;
-        /* pieces of [lo, hi] where disc >= 0 */
-        double pts[4] = {lo, hi, 0, 0};
-        int np = 2;
-        for (int i = 0; i < nr; i++) if (r[i] > lo && r[i] < hi) pts[np++] = r[i];
-        qsort(pts, (size_t)np, sizeof *pts, cmp_double);
-        for (int i = 0; i + 1 < np; i++) {
-            const double m = 0.5 * (pts[i] + pts[i + 1]);
-            if (c[2] * m * m + c[1] * m + c[0] < 0.0) continue;
-            if (out.ninterval > 0 && out.interval[2 * out.ninterval - 1] == pts[i])
-                out.interval[2 * out.ninterval - 1] = pts[i + 1];
-            else if (out.ninterval < 2) {
-                out.interval[2 * out.ninterval] = pts[i];
-                out.interval[2 * out.ninterval + 1] = pts[i + 1];
-                out.ninterval++;
-            }
-        }
-    } else if (pr.hcase == 2) {
-        out.ninterval = 1;
-        out.interval[0] = lo;
-        out.interval[1] = hi;
-    }
-    if (pr.hcase != 3) {
-        double r[8];
-        int nr;
-        poly40_roots(&pr, r, &nr);
-        for (int i = 0; i < nr && out.nroot < 8; i++) {
-            int inside = 0;
-            for (size_t j = 0; j < out.ninterval; j++)
-                inside |= r[i] >= out.interval[2 * j] && r[i] <= out.interval[2 * j + 1];
-            if (!inside) continue;
-            const int best = root_branch(&pr, r[i]);
-            out.root[out.nroot] = crossing_refine(&pr, best, r[i]);
-            out.root_branch[out.nroot++] = best;
-        }
-        int ns;
-        if ((rc = el__hermite_special_values(&pr, out.special, &ns))) return rc;
-        out.nspecial = (size_t)ns;
-        qsort(out.special, out.nspecial, sizeof(double), cmp_double);
-    }
-    *a = out;
-    return EL_OK;
-}
-
