@@ -2,8 +2,9 @@
  * Internal declarations shared by the Hermite solver's files (seed 004):
  *   hermite_objective.c  the normalised problem: curvature data (Theorem 6), the
  *                        curve through two curvature states (Theorem 7) and the objective;
- *   hermite_tension.c    all solutions for a given tension (seed 004 §4) and the analysis;
- *   hermite_poly.c       the polynomials (18), (40), (45) and their real roots;
+ *   hermite_tension.c    all solutions for a given tension (seed 004 §4);
+ *   hermite_poly.c       the polynomials (18), (40), (45), their real roots, the separatrix
+ *                        crossings and the analysis (el_hermite_analyse);
  *   hermite_length.c     all solutions for a given length (hermite_length_chart.c: its
  *                        points in the charts; hermite_length_internal.h);
  *   hermite_chain.c      a solution near the separatrix as a chain split at its saddles;
@@ -96,6 +97,16 @@ void el__poly_roots_in_plain(const double *c, int deg, double lo, double hi, dou
 int el__hermite_poly40(const hprob *pr, double c[9]);
 int el__hermite_special_values(const hprob *pr, double *out, int *n);
 void el__hermite_disc_coeffs(const hprob *pr, double a[3]);
+
+/* The kappa_m bound of Theorem 9 for sigma and the length bound Lmin, *B < 0: no curve
+ * (hermite_tension.c). The roots of (40) in [-B, B] ascending, by Bernstein isolation up to
+ * SEP_SIGMA and the plain method above; the branch of (17) of such a root (case 1); the
+ * root refined on the curvature data of its branch (hermite_poly.c). */
+#define SEP_SIGMA 100.0
+int el__hermite_kappa_bound(double sigma, double Lmin, double *B);
+void el__hermite_poly40_roots(const hprob *pr, double *r, int *nr);
+int el__hermite_root_branch(const hprob *pr, double x);
+double el__hermite_crossing_refine(const hprob *pr, int b, double x);
 
 /* Raw solutions of the normalised problem. */
 typedef struct { double x; int b; double sigma; hstate st; } hroot;
