@@ -7,6 +7,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_math.h>
 #include <gsl/gsl_min.h>
+#include <gsl/gsl_roots.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -26,14 +27,18 @@ static double period_infl(double km, double sigma)
     return 4.0 * K / sqrt(0.5 * Fn);
 }
 
+typedef struct { double sigma, Lmin; } tparam;
+static double period_gap(double km, void *p)
+{
+    const tparam *t = p;
+    return period_infl(km, t->sigma) - t->Lmin;
+}
+
 /* Every solution has T >= L >= Lmin. sigma <= 0: k^2 <= 1/2, so
  * T <= 4 K(1/sqrt2) sqrt2 / sqrt(kappa_m^2 - sigma) and kappa_m^2 <= (C0/Lmin)^2 + sigma;
  * sigma > 0: the non-inflectional curves have kappa_m^2 <= 2 sigma, and T decreases
- * with kappa_m on the inflectional side (proof of Theorem 9): T(kappa_m) = Lmin solved to
- * 1e-3, B the bracket's end where T < Lmin (a bound whatever the width). This is (37)
- * without the epsilon: exact for every sigma. Anderson-Bjorck on ln(T / Lmin) in
- * ln(kappa_m - sqrt(2 sigma)), where it is smooth (T ~ ln 1/(kappa_m - sqrt(2 sigma)) at
- * the separatrix, ~ C0 / kappa_m far from it): 7 periods per bound (GSL's Brent: 7.8). */
+ * with kappa_m on the inflectional side (proof of Theorem 9): solve T(kappa_m) = Lmin
+ * (Brent). This is (37) without the epsilon: exact for every sigma. */
 int el__hermite_kappa_bound(double sigma, double Lmin, double *B)
 {
     const double c = C0_PERIOD / Lmin;
@@ -42,41 +47,24 @@ int el__hermite_kappa_bound(double sigma, double Lmin, double *B)
         *B = b2 > 0.0 ? sqrt(b2) * (1.0 + 1e-9) : -1.0;
         return EL_OK;
     }
-    const double s2 = sqrt(2.0 * sigma), lo = s2 * (1.0 + 1e-12);
-    double hi = s2 + c, Thi = period_infl(hi, sigma);
-    for (int i = 0; i < 200 && !(Thi < Lmin); i++) Thi = period_infl(hi *= 2.0, sigma);
-    if (!(Thi < Lmin)) return EL_EINTERNAL;
-    const double Tlo = period_infl(lo, sigma);
-    if (!(Tlo > Lmin)) { *B = lo; return EL_OK; }
-    /* u = ln(kappa_m - s2) and g = ln(T / Lmin) at the ends: g(ua) > 0 > g(ub) */
-    double ua = log(lo - s2), ga = log(Tlo / Lmin), ub = log(hi - s2), gb = log(Thi / Lmin);
-    double x_lo = lo, halved = ub - ua;
-    for (int it = 0; it < 200 && !(hi - x_lo <= 1e-3 * x_lo); it++) {
-        double u = (ua * gb - ub * ga) / (gb - ga);
-        if (it % 3 == 2) {
-            if (!(ub - ua < 0.5 * halved)) u = 0.5 * (ua + ub);
-            halved = ub - ua;
-        }
-        if (!(u > ua && u < ub)) u = 0.5 * (ua + ub);
-        const double x = s2 + exp(u), T = period_infl(x, sigma);
-        if (!isfinite(T)) break;                     /* hi stays a bound */
-        const double g = log(T / Lmin);
-        if (g < 0.0) {
-            /* the new upper end; Anderson-Bjorck scales the stale lower value */
-            const double m = 1.0 - g / gb;
-            ga *= m > 0.0 ? m : 0.5;
-            ub = u;
-            gb = g;
-            hi = x;
-        } else {
-            const double m = 1.0 - g / ga;
-            gb *= m > 0.0 ? m : 0.5;
-            ua = u;
-            ga = g;
-            x_lo = x;
-        }
+    const double lo = sqrt(2.0 * sigma) * (1.0 + 1e-12);
+    double hi = sqrt(2.0 * sigma) + c;
+    for (int i = 0; i < 200 && !(period_infl(hi, sigma) < Lmin); i++) hi *= 2.0;
+    if (!(period_infl(hi, sigma) < Lmin)) return EL_EINTERNAL;
+    if (!(period_infl(lo, sigma) > Lmin)) { *B = lo; return EL_OK; }
+    tparam tp = {sigma, Lmin};
+    gsl_function fn = {period_gap, &tp};
+    gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+    if (!s) return EL_ENOMEM;
+    if (gsl_root_fsolver_set(s, &fn, lo, hi) != GSL_SUCCESS) { gsl_root_fsolver_free(s); return EL_EINTERNAL; }
+    for (int it = 0; it < 200; it++) {
+        if (gsl_root_fsolver_iterate(s) != GSL_SUCCESS) break;
+        double a = gsl_root_fsolver_x_lower(s), b = gsl_root_fsolver_x_upper(s);
+        if (gsl_root_test_interval(a, b, 0.0, 1e-3) == GSL_SUCCESS) break;
     }
-    *B = hi * (1.0 + 1e-9);
+    /* the bracket's upper end has T < Lmin: a bound whatever the bracket's width */
+    *B = gsl_root_fsolver_x_upper(s) * (1.0 + 1e-9);
+    gsl_root_fsolver_free(s);
     return EL_OK;
 }
 
