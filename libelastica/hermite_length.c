@@ -196,10 +196,24 @@ static int on_step(const cpt *p, const cpt *q, const cpt *r, double slack)
 /* A solution r found from the step p -> q: kept (any point of C with L = Lt is a
  * solution) where it lies near the step; 1 in *inside when it lies on the step itself,
  * the crossing the step brackets (one just beyond an end is the neighbour of a close
- * pair, and the bracketed one is still to be found). */
+ * pair, and the bracketed one is still to be found). In a separatrix chart that also
+ * needs r on the step's sheet: the coordinates (other, ln(|F| - sigma)) have a state on
+ * each sheet of the replaced coordinate, and Newton can change sheet (it went from a
+ * step at sigma 500 to a solution at sigma -9 with coordinates on the step); the chart
+ * continued from an end of the step, as the trace does, gives r's state at r's. */
 static int keep_crossing(tracer *T, const cpt *p, const cpt *q, const cpt *r, int *inside)
 {
     *inside = on_step(p, q, r, 1e-6);
+    if (*inside && p->chart == CHART_SEP && el__hlen_same_chart(p, r)) {
+        int on = 0;
+        for (int e = 0; e < 2 && !on; e++) {
+            cpt c;
+            const int rc = el__hlen_eval(T, e ? q : p, r->U, r->V, &c);
+            if (rc == EL_EMAXITER) return rc;
+            on = !rc && el__hlen_same_state(&c, r);
+        }
+        *inside = on;
+    }
     return on_step(p, q, r, 0.05) ? push_solution(T, r) : EL_OK;
 }
 
@@ -232,12 +246,23 @@ static int length_crossings(tracer *T, const cpt *p, const double tp[2], const c
         /* still none (a long step, one across the branches of (17), or one that holds a
          * close pair): the point of C in the middle halves the bracket */
         if (depth == 0 || p->chart != q->chart || p->base != q->base || p->fi != q->fi) return EL_OK;
+        /* the chord's midpoint, corrected; where that fails (it lies outside the chart's
+         * domain where C runs along its edge, the x chart near the fold where the branches
+         * of (17) meet), the midpoint of the step's cubic Hermite interpolant,
+         * (p + q) / 2 + D (tp - tq) / 8 (D the chord's length), which follows C's bend,
+         * and for a step across the branches both again on the other end's branch */
+        const double D = hypot(q->U - p->U, q->V - p->V);
+        const cpt *ends[2] = {p->b == q->b ? p : q, p->b == q->b ? NULL : p};
         cpt m;
-        int its;
-        const cpt *like = p->b == q->b ? p : q;
-        if ((rc = el__hlen_eval(T, like, 0.5 * (p->U + q->U), 0.5 * (p->V + q->V), &m)) == EL_EMAXITER) return rc;
-        if (!rc) rc = correct(T, &m, 1e-9, 6, &its);
-        if (rc == EL_EMAXITER) return rc;
+        rc = EL_EDOM;
+        for (int k = 0; k < 4 && rc && ends[k / 2]; k++) {
+            const double bend = k % 2 ? 0.125 * D : 0.0;
+            int its;
+            rc = el__hlen_eval(T, ends[k / 2], 0.5 * (p->U + q->U) + bend * (tp[0] - tq[0]),
+                               0.5 * (p->V + q->V) + bend * (tp[1] - tq[1]), &m);
+            if (!rc) rc = correct(T, &m, 1e-9, 6, &its);
+            if (rc == EL_EMAXITER) return rc;
+        }
         if (rc) return EL_OK;
         double tm[2];
         tangent(&m, q->U - p->U, q->V - p->V, tm);
@@ -465,7 +490,11 @@ static int trace(tracer *T, int origin, double dir)
         int closed = 0;
         if ((rc = step_events(T, origin, &p, tau, &q, tq, &closed))) return rc;
         /* C leaves the sigma range of the solutions, closes, or runs to the curves of
-         * unbounded length near sigma = 0 (F -> 0, a straight line's limit) */
+         * unbounded length near sigma = 0 (F -> 0, a straight line's limit). A tail
+         * climbing in sigma with L < Lt and falling is followed to the range's end: such
+         * tails take a fifth of the tracing's evaluations on the bench's 1000 problems, but
+         * cut at their first step, the top line's seeds they would have passed start
+         * traces of their own that follow them down again (344k -> 568k evaluations). */
         if (closed || crawl > CRAWL_STEPS || q.t < T->tlo || q.t > T->thi_trace || (q.st.L > T->long_curves * T->Lt && q.st.L > p.st.L))
             return EL_OK;
         prev = p;
@@ -493,7 +522,9 @@ static int trace(tracer *T, int origin, double dir)
  * the pairs born near the top (two loops near the separatrix, sigma (Lt - 1)^2 near
  * 128, one loop near 60); below it the lines are spread evenly, a little closer
  * towards the bottom (LINE_POWER), where a tension solve is cheap (no separatrix
- * pieces): a line at 0.72 of the range costs 3 times one at 0.16, the top one 10 times. */
+ * pieces): on the bench's 1000 problems 16k, 22k, 29k, 92k, 115k and 255k instructions
+ * per problem from the bottom line up (the tension-mode solve of the same problems
+ * 106k); their samples matter little there (ns 4 instead of 12: 3 % fewer in all). */
 static int seeds(tracer *T, int nl, int ns)
 {
     const hprob *pr = T->pr;

@@ -134,29 +134,66 @@ END_TEST
  * neighbour of a close pair and took it for the bracketed one; a trace left the range
  * at SIGMA_MAX on a step that ended just before the crossing): each must be among the
  * default search's. */
+typedef struct { double t0[2], p1[2], t1[2], L, kappa0; } length_case;
+
+/* Whether el_hermite_solve by length (p0 = 0, defaults) returns the solution of c. */
+static int finds_length_solution(const length_case *c)
+{
+    const double p0[2] = {0.0, 0.0};
+    el_hermite_options o;
+    el_hermite_options_defaults(&o);
+    o.mode = EL_HERMITE_LENGTH;
+    o.length = c->L;
+    el_hermite_result r;
+    ck_assert_int_eq(el_hermite_solve(p0, c->t0, c->p1, c->t1, &o, &r), EL_OK);
+    int found = 0;
+    for (size_t j = 0; j < r.count; j++)
+        found |= fabs(r.solutions[j].kappa0 - c->kappa0) < 1e-3 * fabs(c->kappa0) &&
+                 fabs(r.solutions[j].length - c->L) < 1e-9 * c->L;
+    el_hermite_result_free(&r);
+    return found;
+}
+
 START_TEST(length_mode_finds_the_solutions_a_bent_predictor_lost)
 {
-    static const struct { double t0[2], p1[2], t1[2], L, kappa0; } c[] = {
+    static const length_case c[] = {
         {{-0.9433357022868173, 0.3318399505650836}, {-0.13508320774073157, 0.8983932114742208},
          {-0.8795856187463392, -0.47574062186723093}, 0.9377606206039135, -261.372},
         {{0.9625991261748987, 0.2709297368088661}, {0.02669966619449493, -0.35492759650842043},
          {0.6336738751081974, -0.7736002973146796}, 0.3960371201913676, -33.875},
     };
-    for (size_t i = 0; i < sizeof c / sizeof c[0]; i++) {
-        const double p0[2] = {0.0, 0.0};
-        el_hermite_options o;
-        el_hermite_options_defaults(&o);
-        o.mode = EL_HERMITE_LENGTH;
-        o.length = c[i].L;
-        el_hermite_result r;
-        ck_assert_int_eq(el_hermite_solve(p0, c[i].t0, c[i].p1, c[i].t1, &o, &r), EL_OK);
-        int found = 0;
-        for (size_t j = 0; j < r.count; j++)
-            found |= fabs(r.solutions[j].kappa0 - c[i].kappa0) < 1e-3 * fabs(c[i].kappa0) &&
-                     fabs(r.solutions[j].length - c[i].L) < 1e-9 * c[i].L;
-        el_hermite_result_free(&r);
-        ck_assert_msg(found, "problem %zu: no solution with kappa0 %g", i, c[i].kappa0);
-    }
+    for (size_t i = 0; i < sizeof c / sizeof c[0]; i++)
+        ck_assert_msg(finds_length_solution(&c[i]), "problem %zu: no solution with kappa0 %g", i, c[i].kappa0);
+}
+END_TEST
+
+/* Crossings of L = Lt that a step brackets and the search missed (problems of the
+ * solution-set dumps: t_opposite 286 of 1000, seed 12345; t_generic 1227, t_high 2666,
+ * t_opposite 417, 1390 and 2503 of 3000, seed 777). Newton from the chord's interpolate
+ * and from both ends fails, and the chord's midpoint, which halves the bracket, lies
+ * outside the x chart's domain where C runs along the fold of (17): the midpoint of the
+ * step's cubic Hermite interpolant finds problems 0, 1, 3 and 5, and 4 with it on the
+ * branch of (17) of the step's other end; in problem 2 Newton in a separatrix chart
+ * changed sheet to another solution at coordinates on the step, which was taken for the
+ * step's own (keep_crossing). */
+START_TEST(length_mode_halves_a_bracket_along_C)
+{
+    static const length_case c[] = {
+        {{0.38233821559365866, -0.92402245042891518}, {0.31092039683196315, 0.12639334936999413},
+         {-0.35790518555627931, 0.93375793338098356}, 0.55361551443436929, -19.22396882},
+        {{-0.99709587767528007, 0.076156488383873192}, {0.0395483616258403, 0.23926145361645679},
+         {-0.440221951371214, 0.8978889873090774}, 0.2649107468421687, -52.54789312},
+        {{0.63198650849507609, 0.77497938880992379}, {0.21674339957710087, 0.129429518464941},
+         {-0.337215450836168, 0.94142750104156181}, 0.46729000704485496, -7.971923278},
+        {{0.024274258950486176, -0.99970533676299078}, {0.21367036639243153, 0.006223324595103108},
+         {-0.023952843050795265, 0.9997130894960734}, 0.41750816051468348, -17.14670356},
+        {{0.79501827629163624, -0.60658547655072936}, {-0.068806729483513074, -0.077682910768713143},
+         {-0.80357946191525009, 0.5951974868797727}, 0.23015733659211252, -0.4077837344},
+        {{-0.67345693443867183, 0.73922645884496474}, {0.47419178620737323, 0.44681435026686317},
+         {0.68420783375289618, -0.729287076692827}, 1.4181441808281958, -9.916266833},
+    };
+    for (size_t i = 0; i < sizeof c / sizeof c[0]; i++)
+        ck_assert_msg(finds_length_solution(&c[i]), "problem %zu: no solution with kappa0 %g", i, c[i].kappa0);
 }
 END_TEST
 
@@ -263,6 +300,7 @@ int main(void)
     tcase_add_test(tc, length_mode_sigma_bound_holds_for_tension_solutions);
     tcase_add_test(tc, length_mode_keeps_every_solution_of_a_dense_search);
     tcase_add_test(tc, length_mode_finds_the_solutions_a_bent_predictor_lost);
+    tcase_add_test(tc, length_mode_halves_a_bracket_along_C);
     tcase_add_test(tc, length_mode_follows_C_where_its_chart_folds);
     tcase_add_test(tc, length_mode_fast_sinh_matches_libm);
     tcase_add_test(tc, length_mode_seed_lines_find_every_tension_root);
