@@ -106,6 +106,8 @@ void el__hermite_disc_coeffs(const hprob *pr, double a[3]);
 int el__hermite_kappa_bound(double sigma, double Lmin, double *B);
 void el__hermite_poly40_roots(const hprob *pr, double *r, int *nr);
 int el__hermite_root_branch(const hprob *pr, double x);
+/* The same by el__hermite_curvdata's states on both branches (the tests' reference). */
+int el__hermite_root_branch_plain(const hprob *pr, double x);
 double el__hermite_crossing_refine(const hprob *pr, int b, double x);
 
 /* Raw solutions of the normalised problem. */

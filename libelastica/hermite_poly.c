@@ -357,8 +357,37 @@ void el__hermite_poly40_roots(const hprob *pr, double *r, int *nr)
 }
 
 /* Which root of (17) has kappa_m^2 = 2 sigma at a root of (40) (seed 004 §4:
- * the roots are divided in two groups, one per objective function). */
+ * the roots are divided in two groups, one per objective function): the branch b
+ * whose |(|F| - sigma)| is the smaller. kappa0 = x and (18) are common to both
+ * branches, so kappa1 and kappa0' of each are formed here directly, by
+ * el__hermite_curvdata's formulas (19), (20) (the same values: test_hermite_tension.c
+ * checks the choice against curvdata's states), and (18) < 0 or a non-finite state
+ * (which curvdata rejects) leaves a branch out. */
 int el__hermite_root_branch(const hprob *pr, double x)
+{
+    if (pr->hcase != 1) return 0;
+    const double s = pr->sigma, P1 = pr->P1, P2 = pr->P2, V1 = pr->V1, V2 = pr->V2;
+    const double w = x * x - s, C = 0.5 * w * P1 + x, A = w * V2 + s;
+    const double c0 = 2.0 * V1 * C + A * P2, disc = V1 * V1 + P2 * c0;     /* (18) */
+    if (disc < 0.0) return 0;
+    const double sq = sqrt(disc), F2 = w;
+    int best = 0;
+    double bd = INFINITY;
+    for (int b = 0; b < 2; b++) {
+        double k1;
+        if (b == 0) k1 = V1 > 0.0 ? c0 / (V1 + sq) : (-V1 + sq) / P2;    /* (19) */
+        else        k1 = V1 < 0.0 ? c0 / (V1 - sq) : (-V1 - sq) / P2;
+        const double k0p = fabs(V1) > fabs(P2) ? (A - k1 * k1) / (2.0 * V1) : (k1 - C) / P2;  /* (20) */
+        if (!isfinite(k1) || !isfinite(k0p)) continue;
+        const double F1 = -2.0 * k0p;
+        const double dd = fabs(sqrt(F1 * F1 + F2 * F2) - s);   /* kappa_m^2 - 2 sigma */
+        if (dd < bd) { bd = dd; best = b; }
+    }
+    return best;
+}
+
+/* The same choice by el__hermite_curvdata's states (the plain counterpart: the tests' reference). */
+int el__hermite_root_branch_plain(const hprob *pr, double x)
 {
     if (pr->hcase != 1) return 0;
     int best = 0;
