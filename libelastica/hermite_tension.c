@@ -400,12 +400,14 @@ static double parabola_min(const double *x, const double *f)
 
 /* The lowest value a convex function g = sign * f can take on [xs[j], xs[j+1]] given
  * the samples: the secant of a neighbouring interval where g > 0 at both ends,
- * extended, lies below a convex function (+inf when no neighbour qualifies). */
-static double convex_lower_bound(const double *xs, const double *fs, int n, int j, double sign)
+ * extended, lies below a convex function (+inf when no neighbour qualifies). The
+ * bound is the larger of the two sides': once one side's exceeds above (the caller's
+ * best so far), that side's is returned (the caller only asks whether it is <= above). */
+static double convex_lower_bound(const double *xs, const double *fs, int n, int j, double sign, double above)
 {
     double lb = -INFINITY;
     int any = 0;
-    for (int side = -1; side <= 1; side += 2) {
+    for (int side = -1; side <= 1 && !(lb > above); side += 2) {
         const int p = side < 0 ? j - 1 : j + 1, q = p + 1;   /* the neighbour [xs[p], xs[q]] */
         if (p < 0 || q >= n || !(sign * fs[p] > 0.0) || !(sign * fs[q] > 0.0)) continue;
         const double slope = sign * (fs[q] - fs[p]) / (xs[q] - xs[p]);
@@ -445,7 +447,7 @@ static int interval_to_refine(const double *xs, const double *fs, int n, double 
             continue;
         }
         if (!(xs[j + 1] - xs[j] > minw)) continue;
-        double lb = convex_lower_bound(xs, fs, n, j, sign);
+        double lb = convex_lower_bound(xs, fs, n, j, sign, blb);
         /* no same-sign neighbour says anything (next to a sign change, say):
          * one bisection gives the interval a neighbour of its own */
         if (lb == INFINITY && xs[j + 1] - xs[j] > 10.0 * nanw) lb = 0.0;
