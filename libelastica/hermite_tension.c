@@ -49,8 +49,9 @@ int el__hermite_kappa_bound(double sigma, double Lmin, double *B)
     }
     const double lo = sqrt(2.0 * sigma) * (1.0 + 1e-12);
     double hi = sqrt(2.0 * sigma) + c;
-    for (int i = 0; i < 200 && !(period_infl(hi, sigma) < Lmin); i++) hi *= 2.0;
-    if (!(period_infl(hi, sigma) < Lmin)) return EL_EINTERNAL;
+    double Thi = period_infl(hi, sigma);   /* each period evaluated once: the AGM */
+    for (int i = 0; i < 200 && !(Thi < Lmin); i++) Thi = period_infl(hi *= 2.0, sigma);
+    if (!(Thi < Lmin)) return EL_EINTERNAL;
     if (!(period_infl(lo, sigma) > Lmin)) { *B = lo; return EL_OK; }
     tparam tp = {sigma, Lmin};
     gsl_function fn = {period_gap, &tp};
