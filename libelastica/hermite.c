@@ -384,19 +384,10 @@ static int circle_solution(const hframe *fr, double c, double L, el_hermite_solu
     return EL_OK;
 }
 
-/* Sort by increasing energy, stably (the order qsort's merge sort gave): insertion
- * sort, the lists being a few solutions long and mostly in order (qsort's set-up,
- * indirect comparisons and merge buffer cost 0.4 % of the tension bench's instructions,
- * this 0.2 %). */
-static void sort_by_energy(el_hermite_solution *v, size_t n)
+static int cmp_energy(const void *a, const void *b)
 {
-    for (size_t i = 1; i < n; i++) {
-        if (!(v[i - 1].energy > v[i].energy)) continue;   /* in order: no copy */
-        const el_hermite_solution t = v[i];
-        size_t j = i;
-        for (; j > 0 && v[j - 1].energy > t.energy; j--) v[j] = v[j - 1];
-        v[j] = t;
-    }
+    const el_hermite_solution *x = a, *y = b;
+    return (x->energy > y->energy) - (x->energy < y->energy);
 }
 
 static int same_solution(const el_hermite_solution *a, const el_hermite_solution *b, double d)
@@ -567,7 +558,7 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
         nu += !dup;
     }
     free(unrep);
-    sort_by_energy(sol, n);
+    qsort(sol, n, sizeof *sol, cmp_energy);
     if (n > opt->max_solutions) n = opt->max_solutions;
     if (n == 0) { free(sol); sol = NULL; }
     res->count = n;
