@@ -33,7 +33,7 @@
  * Lt - 1 <= 8 E(k) / sqrt(mu) and sigma = 2 mu (2k^2 - 1) <= 128 E(k)^2 (2k^2 - 1) / (Lt - 1)^2,
  * at most HLEN_SIGMA_E2 / (Lt - 1)^2 (hermite_internal.h): the maximum over k is 1.0166210 (at k^2 = 0.97136,
  * just above its value 1 at k = 1; reached by the two-loop solutions near the
- * separatrix, test_hermite.c checks it against tension-mode solutions). For k > 1
+ * separatrix, test_hermite_length.c checks it against tension-mode solutions). For k > 1
  * likewise with nu = k^2 mu <= (4 / (Lt - 1))^2 and sigma <= 4 nu. The bound holds at
  * every point of C with L >= Lt, so a trace above it has L < Lt. */
 static void sigma_range(double Lt, double *lo, double *hi)
