@@ -334,7 +334,10 @@ static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit
         for (int j = 0; j < nx; j++) inside &= x[j] >= xl[j] && x[j] <= xu[j];
     }
     if (lm_ok && !inside) r->iters += bounded_start(ob, xl, xu, o->max_iter, x);
+    /* L-BFGS stops a guess that cannot reach an earlier one's f (fit_ipopt.c) */
+    if (o->limited_memory) ob->f_ceiling = best_f;
     int st = fit_ipopt(ob, xl, xu, need_ipopt ? con : NULL, o, x, &io, tmp);
+    ob->f_ceiling = HUGE_VAL;
     if (st == EL_EINTERNAL || st == EL_ENOMEM) return st;
     r->used_ipopt = 1;
     r->ipopt_status = io.ipopt_status;
@@ -344,7 +347,7 @@ static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit
     if (st == EL_OK && (io.f <= r->f || need_ipopt || !lm_ok || !inside)) {
         memcpy(r->x, x, sizeof(double) * (size_t)nx);
         r->f = io.f;
-        r->status = ipopt_to_status(io.ipopt_status);
+        r->status = io.certified ? EL_OK : ipopt_to_status(io.ipopt_status);
     }
     /* a zero-residual fit that Ipopt could not certify (its step became tiny) is a fit */
     if (r->status == EL_ENOCONV && r->f <= FIT_EXACT_F) r->status = EL_OK;
