@@ -342,7 +342,8 @@ typedef struct el_fit_options {
     int limited_memory;  /* 1: Ipopt with its L-BFGS Hessian (the paper's setting, for comparison;
                             the variables scaled by sqrt of the Gauss-Newton diagonal at the start,
                             20 update pairs; without constraint rows stopped by the default path's
-                            first-order certificate, ipopt_status 5 (User_Requested_Stop) then) */
+                            first-order certificate, ipopt_status 5 (User_Requested_Stop) then;
+                            the smooth orthogonal fit starts from a paired one by the same L-BFGS) */
     int max_candidates;  /* initial guesses fitted at most (default 3; 1 = the best guess only) */
     int param_mode;      /* smooth model: enum el_param_mode (default EL_PARAM_AUTO) */
     int use_initial;     /* 1: start from the caller's initial parameters instead of the guess */
