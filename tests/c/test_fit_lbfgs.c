@@ -1,6 +1,7 @@
 /* Fits with Ipopt's L-BFGS Hessian (el_fit_options.limited_memory, the paper's setting):
  * they converge to the exact Hessian's fit instead of crawling to max_iter. */
 #include "testutil.h"
+#include <stdlib.h>
 
 /* make fuzz's input fuzz/corpus/fuzz-fit-discrete-lbfgs-start-tangent-slow.bin: 62
  * points (pairs repeated) at the scale 1e300, a start tangent, 5 candidates of 191
@@ -235,6 +236,52 @@ START_TEST(test_lbfgs_noise_free_discrete_exact)
 }
 END_TEST
 
+/* A k range whose end the fit reaches (1000 noise-free points at random arc lengths of a
+ * smooth elastica, the discrete model, k <= 0.8 x the curve's): where a slack is tiny
+ * Ipopt moves its bound (slack_move), and L-BFGS ended with k up to 3.2e-11 beyond the
+ * range's end, EL_EDOM. Kept inside (fit_ipopt.c): EL_OK at the exact path's rms. */
+static int by_value(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+START_TEST(test_lbfgs_k_range_end_kept)
+{
+    enum { N = 1000 };
+    static double s[N], xy[2 * N];
+    const unsigned long long seeds[2] = {1, 4};
+    for (int t = 0; t < 2; t++) {
+        unsigned long long rng = seeds[t];
+        el_smooth_params c = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+        c.phi = test_uniform(&rng, -1, 1);
+        c.mu = test_uniform(&rng, 0.3, 2);
+        c.k = test_uniform(&rng, 0.3, 1.6);
+        c.q = test_uniform(&rng, 0, 3);
+        c.length = test_uniform(&rng, 2, 6);
+        for (int i = 0; i < N; i++) s[i] = test_uniform(&rng, 0, c.length);
+        qsort(s, N, sizeof s[0], by_value);
+        s[0] = 0.0;
+        s[N - 1] = c.length;
+        ck_assert_int_eq(el_smooth_eval(&c, N, s, xy, NULL, NULL), EL_OK);
+        el_fit_options o;
+        el_fit_options_defaults(&o);
+        o.constraints = EL_CONSTRAIN_K;
+        o.k_range[0] = 0.0;
+        o.k_range[1] = 0.8 * c.k;
+        el_fit_discrete_result exact, lbfgs;
+        ck_assert_int_eq(el_fit_discrete(xy, N, &o, NULL, &exact, NULL, NULL), EL_OK);
+        o.limited_memory = 1;
+        const int st = el_fit_discrete(xy, N, &o, NULL, &lbfgs, NULL, NULL);
+        ck_assert_msg(st == EL_OK, "seed %llu: status %d, k %.17g, range end %.17g", seeds[t], st, lbfgs.params.k,
+                      o.k_range[1]);
+        ck_assert(lbfgs.params.k <= o.k_range[1]);
+        ck_assert_msg(fabs(lbfgs.rms - exact.rms) <= 1e-6 * exact.rms, "seed %llu: rms %.17g, exact %.17g", seeds[t],
+                      lbfgs.rms, exact.rms);
+    }
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("fit_lbfgs");
@@ -245,6 +292,7 @@ static Suite *suite(void)
     tcase_add_test(tc, test_lbfgs_feet_from_the_line_search_base);
     tcase_add_test(tc, test_lbfgs_sparse_noisy_smooth_at_the_exact_optimum);
     tcase_add_test(tc, test_lbfgs_noise_free_discrete_exact);
+    tcase_add_test(tc, test_lbfgs_k_range_end_kept);
     suite_add_tcase(s, tc);
     return s;
 }
