@@ -266,6 +266,7 @@ typedef struct fit_constraints {
 
 typedef struct fit_ipopt_out {
     int ipopt_status, iters;
+    int certified;       /* L-BFGS stopped at a point of the first-order condition (fit_lm.c) */
     double f;
 } fit_ipopt_out;
 /* A fit that only starts another (the keyline's side fits): el_fit_discrete /
