@@ -29,6 +29,7 @@
  * stays a valid objective where F is parallel to x1 (kappa0^2 = sigma).
  */
 #include "hermite_internal.h"
+#include <float.h>
 #include <string.h>
 
 /* ------------------------------------------------------------ elliptic helpers */
@@ -155,7 +156,10 @@ int el__hermite_curvdata(const hprob *pr, double x, int b, hstate *st)
         k1 = 0.5 * (k0 * k0 - s) * P1 + k0;                /* (16), P2 = 0 */
     } else {
         k0 = x;
-        const double w = k0 * k0 - s, C = 0.5 * w * P1 + k0, A = w * V2 + s;
+        /* A = w V2 + sigma as kappa0^2 V2 + sigma (1 - V2) (1 - V2 exact for V2 >= 1/2):
+         * with V nearly T(0) the terms of w V2 + sigma cancel, and the rounding of w (an ulp
+         * of sigma) made A, and kappa1, kappa0' with it, step with kappa0 */
+        const double w = k0 * k0 - s, C = 0.5 * w * P1 + k0, A = k0 * k0 * V2 + s * (1.0 - V2);
         if (pr->hcase == 2) {
             k1 = C;                                          /* (21) */
             k0p = (A - C * C) / (2.0 * V1);                  /* (22) */
@@ -319,7 +323,8 @@ typedef struct {
 static void slopes_and_grad(const hprob *pr, hstate *st, curv_grad *g)
 {
     const double P1 = pr->P1, P2 = pr->P2, V1 = pr->V1, V2 = pr->V2, s = pr->sigma;
-    const double k0 = st->k0, k1 = st->k1, w = k0 * k0 - s, C = 0.5 * w * P1 + k0, A = w * V2 + s;
+    const double k0 = st->k0, k1 = st->k1, w = k0 * k0 - s, C = 0.5 * w * P1 + k0;
+    const double A = k0 * k0 * V2 + s * (1.0 - V2);             /* as in el__hermite_curvdata */
     const int use15 = pr->hcase == 2 || fabs(V1) > fabs(P2);
     if (pr->hcase != 3) st->k0p = use15 ? (A - k1 * k1) / (2.0 * V1) : (k1 - C) / P2;
     st->k1p = st->k0p * V2 + 0.5 * w * V1;                      /* (14) */
@@ -508,37 +513,178 @@ static double sep_of(const hprob *pr, const hstate *st, const curv_grad *cg, int
     return (F1 * F1 + st->k0 * st->k0 * (st->k0 * st->k0 - 2.0 * s)) / (Fn + s);
 }
 
+/* The rounding of sep_of's value: a few ulps of its numerator's terms over |F| + sigma. */
+static double sep_rounding(const hprob *pr, const hstate *st)
+{
+    const double s = pr->sigma, F1 = -2.0 * st->k0p, F2 = st->k0 * st->k0 - s, q = st->k0 * st->k0;
+    return 8.0 * DBL_EPSILON * (F1 * F1 + q * (q + 2.0 * fabs(s))) / (sqrt(F1 * F1 + F2 * F2) + fabs(s));
+}
+
+/* The state of the base chart at w (the replaced coordinate) and |F| - sigma there, d,
+ * with its derivative dd along w. */
+typedef struct {
+    double w, d, dd;
+    hprob q;
+    hstate st;
+    curv_grad cg;
+} sep_point;
+
+static int sep_point_at(const hprob *pr, int base, int fi, int b, double other, double w, sep_point *p)
+{
+    p->w = w;
+    if (chart_state(pr, base, fi ? other : w, fi ? w : other, b, &p->q, &p->st, &p->cg)) return EL_EDOM;
+    p->d = sep_of(&p->q, &p->st, &p->cg, fi, &p->dd);
+    return isfinite(p->d) && isfinite(p->dd) && p->dd != 0.0 ? EL_OK : EL_EDOM;
+}
+
+/* Whether |F| - sigma runs monotonically (d/dw of the sign sgn) from p to t through their
+ * midpoint: a long step of Newton's that passed over a hump and a valley to a
+ * neighbouring crossing is caught there (one more evaluation). */
+static int sep_monotone_mid(const hprob *pr, int base, int fi, int b, double other, const sep_point *p,
+                            const sep_point *t, double sgn)
+{
+    sep_point m;
+    const double dir = t->w > p->w ? sgn : -sgn;
+    return !sep_point_at(pr, base, fi, b, other, 0.5 * (p->w + t->w), &m) && m.dd * sgn > 0.0 &&
+           (m.d - p->d) * dir > 0.0 && (t->d - m.d) * dir > 0.0;
+}
+
+/* |F| - sigma = target along w from the guess **pp (evaluated; *pp, *tp: the two points'
+ * storage, *pp the result): Newton, safeguarded so that the root is the one on the
+ * monotone stretch of |F| - sigma the guess lies on (the same crossing of the separatrix),
+ * whatever the guess there:
+ * - before the target is bracketed a step is taken only where d(|F| - sigma)/dw keeps the
+ *   guess's sign, the secant from the last point agrees with it, the error
+ *   |(|F| - sigma) - target| decreases and, for a step above 1e-3 (1 + |w|), the midpoint
+ *   lies between (sep_monotone_mid); else it is halved. Halved to the resolution of w,
+ *   past a peak the parabola through the two slopes puts well short of the target, or
+ *   after 60 evaluations (main's limit), there is no root on the stretch (the target lies
+ *   beyond its hump or the chart's domain): main's Newton crept towards such a peak for
+ *   all its 60 steps (856 of the length bench's 139k calls);
+ * - once points on both sides of the target are known the steps stay between them (no
+ *   step over a hump to a neighbouring crossing): Newton's where it falls inside and at
+ *   most halves the last, else the midpoint (Numerical Recipes' rtsafe);
+ * - it stops where the error is at the rounding of sep_of's terms (sep_rounding), the step
+ *   or the bracket at the resolution of w, or, within 4e-16 sigma, where a step no longer
+ *   reduces the error (the noise of |F| - sigma: the rounding of kappa0' from (17)).
+ *   Main stopped at 4e-16 sigma: next to a crossing |F| - sigma is many orders below
+ *   sigma, and w, and f with it (~1e-7 at sigma |p1-p0|^2 ~ 100..1000), depended on the
+ *   guess, so the root finder's |f| stalled above what the solver keeps.
+ * Hand-written: GSL's bracketed solvers (brent) need the bracket first and discard the
+ * derivative the chart gives with the value, its Newton (gsl_root_fdfsolver) has no
+ * safeguard, and the stretch (the sign of the slope) is a condition none of them knows. */
+static int sep_solve(const hprob *pr, int base, int fi, int b, double other, double target, sep_point **pp,
+                     sep_point **tp)
+{
+    sep_point *p = *pp, *t = *tp;
+    const double sgn = p->dd > 0.0 ? 1.0 : -1.0;
+    double lo = NAN, hi = NAN;   /* sgn ((|F| - sigma) - target) < 0 at lo, > 0 at hi */
+    double last = INFINITY;      /* the last step's size */
+    int evals = 0;               /* at most 60 evaluations (each pass makes at least one) */
+    for (;;) {
+        const double r = p->d - target, res = 4e-16 * fabs(p->w);
+        if (!(fabs(r) > sep_rounding(&p->q, &p->st))) return EL_OK;
+        /* within the rounding of sigma (the bound of the noise of |F| - sigma) a step that
+         * does not reduce the error ends the iteration */
+        const int noise = fabs(r) <= 4e-16 * (fabs(p->q.sigma) + fabs(p->d) + fabs(p->q.sigma + p->d));
+        if (sgn * r < 0.0) lo = p->w; else hi = p->w;
+        double step = -r / p->dd;
+        if (!(fabs(step) > res)) return EL_OK;           /* Newton's step at the resolution of w */
+        if (!isnan(lo + hi)) {
+            /* bracketed: Newton's step where it falls inside and at most halves the last,
+             * else the midpoint (as Numerical Recipes' rtsafe) */
+            const double wn = p->w + step;
+            if (fabs(hi - lo) <= 2.0 * res) return EL_OK;
+            if (!(lo < hi ? wn > lo && wn < hi : wn > hi && wn < lo) || !(fabs(step) <= 0.5 * last))
+                step = 0.5 * (lo + hi) - p->w;
+            last = fabs(step);
+            if (++evals > 60 || sep_point_at(pr, base, fi, b, other, p->w + step, t) || !(t->dd * sgn > 0.0))
+                return noise ? EL_OK : EL_ENOCONV;
+            if (noise && !(fabs(t->d - target) < fabs(r))) return EL_OK;
+            *tp = p;
+            *pp = p = t;
+            t = *tp;
+            continue;
+        }
+        for (;;) {
+            /* no better point: no root on the stretch, or the noise */
+            if (!(fabs(step) > res)) return noise ? EL_OK : EL_ENOCONV;
+            if (++evals > 60) return EL_ENOCONV;
+            const int bad = sep_point_at(pr, base, fi, b, other, p->w + step, t);
+            if (!bad && t->dd * sgn > 0.0 && (t->d - p->d) * step * sgn > 0.0 && fabs(t->d - target) < fabs(r) &&
+                (fabs(step) <= 1e-3 * (1.0 + fabs(p->w)) || sep_monotone_mid(pr, base, fi, b, other, p, t, sgn))) {
+                *tp = p;
+                *pp = p = t;
+                t = *tp;
+                break;
+            }
+            if (noise) return EL_OK;
+            /* past the hump's peak by a short step, still short of the target */
+            if (!bad && !(t->dd * sgn > 0.0) && sgn * (t->d - target) < 0.0 && fabs(step) <= 1e-3 * (1.0 + fabs(p->w))) {
+                const double c = (t->dd - p->dd) / step;
+                if (sgn * (p->d - 0.5 * p->dd * p->dd / c - target) < -0.25 * fabs(r)) return EL_ENOCONV;
+            }
+            step *= 0.5;
+        }
+        last = fabs(step);
+    }
+}
+
+/* The x chart's state (case 1, 2) with |F| - sigma = target exactly: kappa0' from
+ * kappa0 and target by (8), 4 kappa0'^2 = (|F| - sigma + kappa0^2)(|F| + sigma - kappa0^2)
+ * (its sign the sheet's), kappa1 by (16), kappa1' by (14), and kappa0 = w refined by Newton
+ * on (15), r = kappa1^2 + 2 V1 kappa0' - A, its last step (below the resolution of kappa0)
+ * taken to first order in the others. sep_solve's w is where |F| - sigma computed from the
+ * kappa0' of (17) meets the target; that kappa0' carries an ulp of rounding, which moves
+ * |F| - sigma by ~eps |kappa0'|^2 / sigma and w by a few ulps; next to the saddle, where the
+ * length goes with ln(|F| - sigma), f moved by up to ~1e-10 (near-straight solutions at
+ * sigma |p1-p0|^2 ~ 100..1000). Here |F| - sigma is exact by construction and the rounding
+ * falls on (15), which f feels less: the largest difference between guesses in
+ * test_hermite_tension.c drops from 8.9e-10 to 2.9e-10, and of main's t_aligned tension
+ * solutions (seed 777, 3000 problems) 10 are lost instead of 16 (371 gained, 363 without).
+ * Unchanged (EL_EDOM) where the refinement does not settle within 1e-9 of w. */
+static int sep_exact_state(const hprob *q, double target, double *w, hstate *st)
+{
+    const double s = q->sigma, P1 = q->P1, P2 = q->P2, V1 = q->V1, V2 = q->V2, sgn = st->k0p < 0.0 ? -1.0 : 1.0;
+    double k0 = *w;
+    for (int it = 0;; it++) {
+        const double k2 = k0 * k0, X = (target + k2) * (2.0 * s + target - k2);
+        if (!(X > 0.0)) return EL_EDOM;
+        const double k0p = sgn * 0.5 * sqrt(X);
+        const double k1 = k0p * P2 + 0.5 * (k2 - s) * P1 + k0;                        /* (16) */
+        const double r = k1 * k1 + 2.0 * V1 * k0p - (k2 * V2 + s * (1.0 - V2));        /* (15) */
+        const double dk0p = k0 * (s - k2) / (2.0 * k0p), dk1 = dk0p * P2 + k0 * P1 + 1.0;
+        const double step = -r / (2.0 * k1 * dk1 + 2.0 * V1 * dk0p - 2.0 * k0 * V2);
+        if (!isfinite(step) || !(fabs(k0 + step - *w) <= 1e-9 * (1.0 + fabs(*w)))) return EL_EDOM;
+        if (fabs(step) > 4e-16 * fabs(k0) && it < 4) {
+            k0 += step;
+            continue;
+        }
+        /* kappa1 and kappa1' are small next to the saddle and resolve the last step */
+        *w = k0;
+        st->k0 = k0;
+        st->k0p = k0p + dk0p * step;
+        st->k1 = k1 + dk1 * step;
+        st->k1p = k0p * V2 + 0.5 * (k2 - s) * V1 + (dk0p * V2 + k0 * V1) * step;       /* (14) */
+        return EL_OK;
+    }
+}
+
 int el__hermite_sep_eval(const hprob *pr, int base, int fi, int b, int side, double y,
                          double other, double qs, double *w, hstate *st, hgrad *g, double *sigma)
 {
     const int oi = 1 - fi;
     const double target = side * exp(y);
-    double ww = *w, d = NAN, dd = NAN;
-    hprob q;
-    curv_grad cg;
-    /* Newton on |F| - sigma = target along the replaced coordinate, damped to reduce the
-     * error at every step and kept where d(|F| - sigma)/dw keeps its sign (on the same
-     * crossing of the separatrix as the starting guess, not a neighbouring one) */
-    double err = INFINITY, dd0 = NAN, step = 0.0;
-    for (int it = 0;; it++) {
-        if (it == 60) return EL_ENOCONV;
-        const int bad = chart_state(pr, base, fi ? other : ww, fi ? ww : other, b, &q, st, &cg);
-        if (!bad) d = sep_of(&q, st, &cg, fi, &dd);
-        if (bad || !(fabs(d - target) < err) || (it > 0 && dd * dd0 <= 0.0)) {
-            if (it == 0) return EL_EDOM;
-            ww -= 0.5 * step;                  /* back towards the last good point */
-            step *= 0.5;
-            continue;
-        }
-        if (it == 0) dd0 = dd;
-        err = fabs(d - target);
-        const double tol = 4e-16 * (fabs(q.sigma) + fabs(d) + fabs(q.sigma + d));
-        if (err <= tol) break;
-        step = (target - d) / dd;
-        if (!isfinite(step)) return EL_ENOCONV;
-        if (fabs(step) <= 4e-16 * fabs(ww)) break;
-        ww += step;
-    }
+    sep_point buf[2], *p = buf, *t = buf + 1;
+    if (sep_point_at(pr, base, fi, b, other, *w, p)) return EL_EDOM;
+    const int src = sep_solve(pr, base, fi, b, other, target, &p, &t);
+    if (src) return src;
+    double ww = p->w;
+    const double d = p->d, dd = p->dd;
+    const hprob q = p->q;
+    curv_grad *cgp = &p->cg;
+    *st = p->st;
+    if (base == HCHART_X && fi == 0 && pr->hcase != 3) sep_exact_state(&q, target, &ww, st);
     if (target * d < 0.0 && fabs(d - target) > 1e-12 * fabs(q.sigma)) return EL_ENOCONV;
     st->has_sep = 1;
     st->sep = target;
@@ -553,17 +699,17 @@ int el__hermite_sep_eval(const hprob *pr, int base, int fi, int b, int side, dou
     if (!g) return EL_OK;
     /* (y, other) -> base coordinates: d(base)/dy = target / d_w, d(base)/d(other) = -d_o / d_w */
     double d_o;
-    sep_of(&q, st, &cg, oi, &d_o);
+    sep_of(&q, st, cgp, oi, &d_o);
     const double wy = target / dd, wo = -d_o / dd;
-    double *cols[5] = {cg.k0, cg.k0p, cg.k1, cg.k1p, cg.s};
+    double *cols[5] = {cgp->k0, cgp->k0p, cgp->k1, cgp->k1p, cgp->s};
     for (int j = 0; j < 5; j++) {
         cols[j][oi] += cols[j][fi] * wo;
         cols[j][fi] *= wy;
     }
-    cg.has_dsep = 1;
-    cg.dsep[fi] = target;
-    cg.dsep[oi] = 0.0;
-    shape_grad(&q, st, &cg, &sw, U, DD, g);
+    cgp->has_dsep = 1;
+    cgp->dsep[fi] = target;
+    cgp->dsep[oi] = 0.0;
+    shape_grad(&q, st, cgp, &sw, U, DD, g);
     g->w[fi] = wy;
     g->w[oi] = wo;
     return isfinite(g->f[0]) && isfinite(g->f[1]) ? EL_OK : EL_EDOM;

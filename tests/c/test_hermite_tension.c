@@ -1,7 +1,7 @@
 /* The tension solve's completeness against a plain reference: every root of the dense
  * scan (hermite_scan.h: uniform samples and bisection, nothing of the solver's split
  * points, sampling, refinement, touch checks or root finding) is among the solutions
- * el_hermite_solve returns, on 2000 random problems in five families. Guards the
+ * el_hermite_solve returns, on 2400 random problems in six families. Guards the
  * solver's fast paths (the touch check's early end, the search range of (40)) against
  * losing solutions, and (40) against the rounding of its printed form (family 2: 11 of
  * its 1027 scanned solutions were missing with that form). */
@@ -20,22 +20,25 @@ enum { NPROB = 400, NX_SET = 800 };
  * 1e-12..1e-6 rad of the normal to the chord (P2 ~ 0) or t1 within that of t0 (V1 ~ 0),
  * sigma |p1-p0|^2 uniform in [-10, 200]; 3: negative, uniform in [-100, -10] (few
  * solutions); 4: the tangents within 0.05 rad of the chord's direction (aligned) or t1
- * within 0.05 rad of -t0 (opposite), sigma |p1-p0|^2 uniform in [-10, 100] (above, the
- * separatrix chart leaves some near-straight aligned solutions at |f| ~ 3e-9, which
- * el_hermite_solve drops: 28 of 968 scanned ones up to 1000, before and after the root
- * finder's chart). p0 = 0, t0 = (0, 1), |p1| = 1. */
+ * within 0.05 rad of -t0 (opposite), sigma |p1-p0|^2 uniform in [-10, 100]; 5: the same
+ * tangents at sigma |p1-p0|^2 uniform in [100, 1000], where the near-straight aligned
+ * solutions (L ~ 1 + 1e-5) lie exponentially close to the separatrix: main (f540936) missed
+ * 30 of its 1023 scanned solutions (el__hermite_sep_eval's Newton stopped at 4e-16 sigma,
+ * far above the rounding of |F| - sigma there, so its w, and f with it (~1e-7), depended on
+ * the guess, and the root finder's |f| stalled above what the solver keeps), none since.
+ * p0 = 0, t0 = (0, 1), |p1| = 1. */
 static void draw(unsigned long long *st, int family, double p1[2], double t1[2], double *sigma)
 {
     double a = test_uniform(st, -M_PI, M_PI), c = test_uniform(st, -M_PI, M_PI);
     const double u = test_uniform(st, 0.0, 1.0);
     *sigma = family == 0 ? -10.0 + 50.0 * u : family == 1 ? 40.0 * pow(250.0, u) : family == 3 ? -100.0 + 90.0 * u
-           : family == 4 ? -10.0 + 110.0 * u : -10.0 + 210.0 * u;
+           : family == 4 ? -10.0 + 110.0 * u : family == 5 ? 100.0 + 900.0 * u : -10.0 + 210.0 * u;
     if (family == 2) {
         const double e = pow(10.0, test_uniform(st, -12.0, -6.0)) * (test_uniform(st, 0.0, 1.0) < 0.5 ? -1.0 : 1.0);
         if (test_uniform(st, 0.0, 1.0) < 0.5) a = (test_uniform(st, 0.0, 1.0) < 0.5 ? 0.0 : M_PI) + e;
         else c = M_PI / 2 + (test_uniform(st, 0.0, 1.0) < 0.5 ? 0.0 : M_PI) + e;
     }
-    if (family == 4) {
+    if (family >= 4) {
         /* t0 = (0, 1) at angle pi/2 from the x axis: the chord's angle a near pi/2, then t1 near
          * the chord's direction (aligned) or near -t0 */
         a = M_PI / 2 + test_uniform(st, -0.05, 0.05);
@@ -321,15 +324,71 @@ START_TEST(poly40_roots_never_exceed_the_degree_at_subnormal_tension)
 }
 END_TEST
 
+/* The separatrix chart is a function of its coordinates: el__hermite_sep_eval from the
+ * crossing itself (the scan's guess) and from the previous sample's w (the solver's)
+ * gives the state or fails alike, and the same f and L, on every crossing of (40) of
+ * family 5's problems (aligned tangents, sigma |p1-p0|^2 in [100, 1000]), NY samples per
+ * side from |F| - sigma = 1e-3 sigma down to 1e-300 sigma. Main (f540936) fails the first
+ * check here; on 200 other problems of the family its f differs by up to 1.2e-5 (Newton's
+ * stop at 4e-16 sigma) and 4 samples succeed from one guess only (a step over a hump to a
+ * neighbouring crossing). Now: largest difference 2.9e-10 here, 1.4e-9 on those 200 (the
+ * resolution of kappa0 next to the saddle: both ends of a near-straight solution lie
+ * there, and an ulp of kappa0 moves f by ~1e-9), none one-sided. */
+START_TEST(separatrix_chart_independent_of_the_guess)
+{
+    unsigned long long st = 6007;
+    int nsamples = 0;
+    double worst = 0.0;
+    for (int t = 0; t < 100; t++) {
+        double p1[2], t1[2], sigma;
+        draw(&st, 5, p1, t1, &sigma);
+        hprob pr;
+        memset(&pr, 0, sizeof pr);
+        pr.P1 = p1[0]; pr.P2 = p1[1]; pr.V1 = t1[0]; pr.V2 = t1[1]; pr.Lmin = 1.0; pr.sigma = sigma;
+        el__hermite_set_case(&pr);
+        el_hermite_analysis an;
+        ck_assert_int_eq(el_hermite_analyse(p1, t1, sigma, &an), EL_OK);
+        for (size_t i = 0; i < an.nroot; i++)
+            for (int side = -1; side <= 1; side += 2) {
+                double warm = an.root[i];
+                for (int j = 0; j < NY; j++) {
+                    const double tt = (double)j / (NY - 1);
+                    const double y = log(1e-3 * sigma) - 690.0 * (1.0 - tt) * (1.0 - tt);
+                    hstate cold_st, warm_st;
+                    double wc = an.root[i], ww = warm;
+                    const int rc = el__hermite_sep_eval(&pr, HCHART_X, 0, an.root_branch[i], side, y, sigma, 1.0,
+                                                        &wc, &cold_st, NULL, NULL);
+                    const int rw = el__hermite_sep_eval(&pr, HCHART_X, 0, an.root_branch[i], side, y, sigma, 1.0,
+                                                        &ww, &warm_st, NULL, NULL);
+                    ck_assert_msg(!rc == !rw, "problem %d root %.17g side %d y %.17g: rc %d from the crossing, %d from "
+                                  "the last w", t, an.root[i], side, y, rc, rw);
+                    if (rc) continue;
+                    nsamples++;
+                    warm = ww;
+                    const double d = fmax(fabs(warm_st.f - cold_st.f) / (1.0 + fabs(cold_st.f)),
+                                          fabs(warm_st.L - cold_st.L) / cold_st.L);
+                    worst = fmax(worst, d);
+                    ck_assert_msg(d <= 1e-8, "problem %d y %.17g: f %.17g (warm) vs %.17g, L %.17g vs %.17g", t, y,
+                                  warm_st.f, cold_st.f, warm_st.L, cold_st.L);
+                }
+            }
+    }
+    ck_assert_int_gt(nsamples, 100000);
+    fprintf(stderr, "separatrix_chart_independent_of_the_guess: %d samples, largest difference %.3e\n", nsamples,
+            worst);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("hermite_tension");
     TCase *tc = tcase_create("hermite_tension");
     tcase_set_timeout(tc, 300);
-    tcase_add_loop_test(tc, tension_solutions_contain_every_scanned_root, 0, 5);
-    tcase_add_loop_test(tc, tension_roots_exact_and_equal_to_the_bisection, 0, 5);
+    tcase_add_loop_test(tc, tension_solutions_contain_every_scanned_root, 0, 6);
+    tcase_add_loop_test(tc, tension_roots_exact_and_equal_to_the_bisection, 0, 6);
     tcase_add_test(tc, kappa_bound_bounds_the_period_tightly);
     tcase_add_test(tc, separatrix_crossings_exact_at_high_tension);
+    tcase_add_test(tc, separatrix_chart_independent_of_the_guess);
     tcase_add_test(tc, poly40_isolated_roots_match_plain_method);
     tcase_add_test(tc, poly40_roots_never_exceed_the_degree_at_subnormal_tension);
     suite_add_tcase(s, tc);
