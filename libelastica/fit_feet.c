@@ -282,7 +282,9 @@ void fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, d
         for (long centre = -1; centre != best;) {
             centre = best;
             const double d = sqrt(bd);
-            const long reach = kmax * d <= 0.1 ? 1 : (long)ceil(2.0 * 1.4142135623730951 * d / h) + 1;
+            /* at most the whole polygon (a far point's d / h can pass the range of long) */
+            const double span = ceil(2.0 * 1.4142135623730951 * d / h) + 1.0;
+            const long reach = kmax * d <= 0.1 ? 1 : span <= (double)(last + 1) ? (long)span : last + 1;
             const long lo = centre - reach < 0 ? 0 : centre - reach, hi = centre + reach > last ? last : centre + reach;
             double r2 = beyond_sq(d, lmax);
             for (long seg = lo; seg <= hi; seg++) {
