@@ -531,9 +531,19 @@ static int solve_piece(fctx *c, double a, double b, int ns, hrootlist *out)
 static const double sep_steps[] = {0.0, 1.0, 2.5, 5.0, 10.0, 20.0, 40.0, 80.0, 160.0, 320.0, 690.0};
 enum { NSEP = sizeof sep_steps / sizeof sep_steps[0] };
 
-static int solve_sep_piece(fctx *c, double yc, hrootlist *out)
+/* fyc: the coarse value at y_c, which separatrix_end has evaluated; el__hermite_sep_eval
+ * is a function of y (not of its Newton's guess: test_hermite_tension.c), so a value is
+ * computed once: the lean samples are among the full ones and are kept when those are
+ * taken. The root finder starts from the state at y_c (w_start), as when y_c was the last
+ * sample. Against the plain searches: test_hermite_tension.c (every root of a dense scan)
+ * and test_hermite_length.c (the lean seeds against the tension mode's full search). */
+static int solve_sep_piece(fctx *c, double yc, double fyc, hrootlist *out)
 {
     double xs[NSEP + REFINE_MAX], fs[NSEP + REFINE_MAX];
+    int have[NSEP] = {0};
+    for (int j = 0; j < NSEP; j++) xs[j] = yc - sep_steps[NSEP - 1 - j];
+    fs[NSEP - 1] = fyc;
+    have[NSEP - 1] = 1;
     if (c->lean) {
         /* the length mode's seeds: the samples between y_c - 40 and y_c - 690 dropped where
          * the objective is affine there. With eps = |F| - sigma = e^y, the state is analytic
@@ -543,20 +553,24 @@ static int solve_sep_piece(fctx *c, double yc, hrootlist *out)
          * samples bracket. Not so where an end's amplitude tends to pi/2 with eps (kappa0
          * or kappa1 tending to 0 on the separatrix): the slopes over [y_c - 40, y_c - 20]
          * and [y_c - 690, y_c - 40] then differ, and the full samples are taken. */
-        static const double lean_steps[] = {0.0, 1.0, 2.5, 5.0, 10.0, 20.0, 40.0, 690.0};
-        enum { NLEAN = sizeof lean_steps / sizeof lean_steps[0] };
-        for (int j = 0; j < NLEAN; j++) {
-            xs[j] = yc - lean_steps[NLEAN - 1 - j];
-            fs[j] = fobj_coarse(c, xs[j]);
+        static const int lean[] = {0, 4, 5, 6, 7, 8, 9, 10};   /* y_c - 690, - 40, ..., - 1, y_c */
+        enum { NLEAN = sizeof lean / sizeof lean[0] };
+        double lx[NLEAN + REFINE_MAX], lf[NLEAN + REFINE_MAX];
+        for (int i = 0; i < NLEAN; i++) {
+            const int j = lean[i];
+            if (!have[j]) fs[j] = fobj_coarse(c, xs[j]);
+            have[j] = 1;
+            lx[i] = xs[j];
+            lf[i] = fs[j];
         }
-        const double s1 = (fs[2] - fs[1]) / 20.0, s2 = (fs[1] - fs[0]) / 650.0;
-        const double tol = 1e-6 * (fabs(s1) + fabs(s2) + (fabs(fs[0]) + fabs(fs[1]) + fabs(fs[2])) / 20.0);
-        if (fabs(s1 - s2) <= tol) return solve_samples(c, xs, fs, NLEAN - 1, lean_steps[NLEAN - 1], out);
+        const double s1 = (lf[2] - lf[1]) / 20.0, s2 = (lf[1] - lf[0]) / 650.0;
+        const double tol = 1e-6 * (fabs(s1) + fabs(s2) + (fabs(lf[0]) + fabs(lf[1]) + fabs(lf[2])) / 20.0);
+        c->w0 = c->w_start;
+        if (fabs(s1 - s2) <= tol) return solve_samples(c, lx, lf, NLEAN - 1, sep_steps[NSEP - 1], out);
     }
-    for (int j = 0; j < NSEP; j++) {
-        xs[j] = yc - sep_steps[NSEP - 1 - j];
-        fs[j] = fobj_coarse(c, xs[j]);
-    }
+    for (int j = 0; j < NSEP; j++)
+        if (!have[j]) fs[j] = fobj_coarse(c, xs[j]);
+    c->w0 = c->w_start;
     return solve_samples(c, xs, fs, NSEP - 1, sep_steps[NSEP - 1], out);
 }
 
@@ -593,7 +607,7 @@ static int separatrix_end(const hprob *pr, int b, double x_end, double dir, doub
         return EL_OK;                                  /* the x chart covers the piece */
     *xc = x;
     c.w0 = c.w_start = x;
-    return solve_sep_piece(&c, yc, out);
+    return solve_sep_piece(&c, yc, st.f, out);
 }
 
 /* The kind of curve on a piece between split points, from its midpoint;
