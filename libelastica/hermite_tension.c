@@ -270,12 +270,14 @@ int el__hermite_roots_push(hrootlist *l, const hroot *r)
  * along F, |P| = 1) is at rounding level (1e-14), the bracket is 4e-16 |x| wide, or the
  * secant step from a full value is below the rounding of x: that value is the root to
  * double precision (steep f rounds above 1e-14; the step, falling on it, used to give way
- * to bisecting the wide bracket). The root: that last state where |f| <= 1e-8, else the
- * full-precision state of least |f| the iteration evaluated (evaluated again) where that
- * one has: next to the saddle a near-straight root's bracket can close one ulp of y wide
- * between f = -1.3e-22 and 1.5e-8, the last, and the root was dropped. (The last state,
+ * to bisecting the wide bracket). The root: that last state where |f| <= 1e-8; else, in the
+ * separatrix chart, the full-precision state of least |f| the iteration evaluated where
+ * that one has: next to the saddle a near-straight root's bracket can close one ulp of y
+ * wide between f = -1.3e-22 and 1.5e-8, the last, and the root was dropped (the state is
+ * kept, not evaluated again: within the rounding of w it depends on the Newton's guess,
+ * and at the abscissa of f = 4e-9 a second evaluation gave more than 1e-8). The last state,
  * not the least |f|, where both qualify: where f is steep its rounding (~1e-13) can put the
- * least |f| off the sign change.) A sign change across a jump of f (L wrapping at a period)
+ * least |f| off the sign change. A sign change across a jump of f (L wrapping at a period)
  * is none: the bracket closes with |f| large.
  * Next to a separatrix crossing x_c (a root of (40), (41)) that ends the piece, the secant
  * steps are taken in t = ln|x - x_c|: |F| - sigma, so k'^2 = (|F| - sigma) / (2 |F|),
@@ -287,8 +289,8 @@ int el__hermite_roots_push(hrootlist *l, const hroot *r)
  * these changes). */
 static int bracket_root(fctx *c, double a, double fa, double b, double fb, hrootlist *out)
 {
-    hroot r = el__hermite_mkroot(a, c->b, c->pr->sigma);
-    double best_u = NAN, best_f = INFINITY;   /* the full-precision value of least |f|, its abscissa */
+    hroot r = el__hermite_mkroot(a, c->b, c->pr->sigma), best;
+    double best_f = INFINITY;   /* separatrix chart: best, the full-precision state of least |f| */
     int ok = 0, full = 0, bfull = 0;   /* bfull: f(b) evaluated here in full precision */
     /* the chart of the secant steps: t = ln(dir (x - xc)), or t = x (dir = 0) */
     const double lo = a < b ? a : b, hi = a < b ? b : a;
@@ -317,8 +319,8 @@ static int bracket_root(fctx *c, double a, double fa, double b, double fb, hroot
         if (full ? piece_eval(c, x, 1.0, &r.st, &w) : piece_eval_to(c, x, 1e-6, &r.st, &w, &full)) break;
         r.x = w;
         const double f = r.st.f;
-        if (full && fabs(f) < best_f) {
-            best_u = x;
+        if (c->sep && full && fabs(f) < best_f) {
+            best = r;
             best_f = fabs(f);
         }
         if (full && (fabs(f) <= 1e-14 || span <= 4e-16 * scale || step <= 2e-16 * scale)) { ok = 1; break; }
@@ -336,12 +338,10 @@ static int bracket_root(fctx *c, double a, double fa, double b, double fb, hroot
         fb = f;
         bfull = full;
     }
-    if (!ok || !(best_f <= 1e-8)) return EL_OK;
+    if (!ok) return EL_OK;
     if (!(fabs(r.st.f) <= 1e-8)) {
-        /* the best state evaluated again (rare) */
-        double w;
-        if (piece_eval(c, best_u, 1.0, &r.st, &w) || !(fabs(r.st.f) <= 1e-8)) return EL_OK;
-        r.x = w;
+        if (!(best_f <= 1e-8)) return EL_OK;
+        r = best;
     }
     return el__hermite_roots_push(out, &r);
 }
