@@ -174,6 +174,7 @@ typedef struct {
      * starting guess of its Newton (hermite_objective.c) */
     int sep, side;
     double w0, w_start;
+    hsep_cache *sc;   /* the separatrix chart's last point (sep) */
     int lean;   /* the length mode's seeds (el__hermite_seed_tension): solve_sep_piece */
     double sep_lo, sep_hi;   /* the piece's ends at separatrix crossings (bracket_root), or NAN */
 } fctx;
@@ -204,8 +205,9 @@ static int piece_eval(fctx *c, double u, double qs, hstate *st, double *x)
         double w = k ? c->w_start : c->w0;
         if (k && w == c->w0) break;
         rc = pr->hcase == 3
-            ? el__hermite_sep_eval(pr, HCHART_C3, 1, c->b >= 2, c->side, u, el__hermite_case3_kappa0(pr, c->b), qs, &w, st, NULL, NULL)
-            : el__hermite_sep_eval(pr, HCHART_X, 0, c->b, c->side, u, pr->sigma, qs, &w, st, NULL, NULL);
+            ? el__hermite_sep_eval_from(pr, HCHART_C3, 1, c->b >= 2, c->side, u, el__hermite_case3_kappa0(pr, c->b), qs,
+                                        &w, st, NULL, NULL, c->sc)
+            : el__hermite_sep_eval_from(pr, HCHART_X, 0, c->b, c->side, u, pr->sigma, qs, &w, st, NULL, NULL, c->sc);
         *x = w;
         if (!rc) c->w0 = w;
     }
@@ -605,8 +607,11 @@ static int separatrix_end(const hprob *pr, int b, double x_end, double dir, doub
     const double F1 = -2.0 * st.k0p, F2 = st.k0 * st.k0 - pr->sigma, d = sqrt(F1 * F1 + F2 * F2) - pr->sigma;
     if (d == 0.0) return EL_OK;
     fctx c;
+    hsep_cache sc;
+    sc.valid = 0;
     fctx_init(&c, pr, b);
     c.sep = 1;
+    c.sc = &sc;
     c.lean = lean;
     c.side = d > 0.0 ? 1 : -1;
     c.w0 = c.w_start = xin;

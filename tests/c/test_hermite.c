@@ -277,7 +277,9 @@ END_TEST
  * |p1-p0|^2 uniform in [-10, 1000], that b1c7360 solved and 970c3e6 missed: 2 of 1000,
  * 10 of 3000 with another seed); the chain's own
  * Gauss-Newton takes any root bracket_root keeps (|f| <= 1e-8), and the final acceptance
- * (residual <= tol by el_smooth_eval, checked here) is unchanged. Each problem returns the
+ * (residual <= tol by el_smooth_eval, checked here) is unchanged. The last one (#741) was
+ * lost where bracket_root returned the last state it evaluated (f = 1.5e-8, one ulp of y
+ * from f = -1.3e-22) with the separatrix cache of hermite_tension.c. Each problem returns the
  * curve (L, kappa0, normalised by |p1 - p0|, as b1c7360 gave them to 10 digits). */
 static const struct { double p0[2], t0[2], p1[2], t1[2], sigma, L, k0; } near_straight[] = {
     {{0x1.89b7c418eec7cp+0, 0x1.6af775aa5aef8p-1}, {0x1.2689f9a74c93bp-1, 0x1.a2cbfe0f35b09p-1},  /* seed 12345 #479 */
@@ -304,6 +306,8 @@ static const struct { double p0[2], t0[2], p1[2], t1[2], sigma, L, k0; } near_st
      {0x1.126deb4a082d5p+2, 0x1.2eaf407604affp+1}, {0x1.c5381147d548fp-1, -0x1.dc637b9698c9p-2}, 0x1.d8c12208e92c7p+12, 1.000000015, -0.01782049955},
     {{-0x1.d19fe47fba71ep+1, -0x1.ae27a02dca42p-1}, {0x1.e8f28e66fe1bbp-3, 0x1.f131bc04daa02p-1},  /* seed 777 #2809 */
      {-0x1.9d60a504745c2p+1, 0x1.4d260f769201p-1}, {0x1.11e366d8836d3p-2, 0x1.ed589529be4f4p-1}, 0x1.2fcd2c1bf63b4p+7, 1.000012798, -0.3791556246},
+    {{0x1.76ce1e715e4d8p+0, -0x1.a4a32fbc7968p-5}, {-0x1.fffc6ca9bbf1ap-1, -0x1.e411bc764ed48p-8},  /* seed 777 #741 */
+     {0x1.44bfbf0f1acafp+0, -0x1.bfb38e7f12cf4p-5}, {-0x1.ffebec24929c7p-1, -0x1.1ec29cd8fbdadp-6}, 0x1.adf755287a811p+13, 1.000001387, 0.1643718109},
 };
 
 START_TEST(near_straight_chains_at_the_limit_of_doubles)
