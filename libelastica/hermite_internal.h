@@ -79,6 +79,33 @@ int el__hermite_chart_eval(const hprob *pr, int chart, double u, double v, int b
  * place of the replaced coordinate. */
 int el__hermite_sep_eval(const hprob *pr, int base, int fi, int b, int side, double y,
                          double other, double qs, double *w, hstate *st, hgrad *g, double *sigma);
+/* The derivatives of the curvature data in a chart's coordinates (u [0], v [1]), and
+ * sep_point, the state of a base chart at w (the separatrix chart's replaced coordinate)
+ * with |F| - sigma there, d, and its derivative dd along w (hermite_objective.c). */
+typedef struct {
+    double k0[2], k0p[2], k1[2], k1p[2], s[2];
+    int has_dsep;
+    double dsep[2];   /* d(|F| - sigma), given by the separatrix chart (else from the others) */
+} curv_grad;
+typedef struct {
+    double w, d, dd;
+    hprob q;
+    hstate st;
+    curv_grad cg;
+} sep_point;
+/* el__hermite_sep_eval with the last call's point kept in *cache (valid = 0 before the
+ * first call): a call whose guess *w is the w the last one returned starts its Newton from
+ * that point's state instead of evaluating it again: the guess is then that point's w,
+ * a few ulps from *w (before sep_exact_state's refinement), and the state the plain
+ * call's from there (test_hermite_tension.c). Every call with one cache has the same pr,
+ * base, fi, b, other and g = NULL (the state only). */
+typedef struct {
+    sep_point pt[2];
+    int cur, valid;
+    double w;
+} hsep_cache;
+int el__hermite_sep_eval_from(const hprob *pr, int base, int fi, int b, int side, double y, double other,
+                              double qs, double *w, hstate *st, hgrad *g, double *sigma, hsep_cache *cache);
 /* F(mu, k) and D(mu, k) for the amplitude given by its sine S, cosine C and big = (mu > pi) */
 int el__hermite_ell_fd(double S, double C, int big, double k2, double kc2, double qs,
                        double *F, double *D);

@@ -312,12 +312,6 @@ static int shape_finish(const hprob *pr, const shapework *w, double rf, double r
  *   HCHART_C3 (kappa0, kappa0'), case 3: sigma = kappa0^2 (b = 0) or from the other pair
  *             of (24), (P1 kappa0 + 2)^2 = sigma P1^2 + 4 V2 (b = 1): regular where the
  *             two members of a pair meet. */
-typedef struct {
-    double k0[2], k0p[2], k1[2], k1p[2], s[2];
-    int has_dsep;
-    double dsep[2];   /* d(|F| - sigma), given by the separatrix chart (else from the others) */
-} curv_grad;
-
 /* kappa0' and its derivatives from kappa0, kappa1, sigma and theirs: (16), or (15)
  * when V1 dominates (case 1); (22) in case 2; then kappa1' by (14). */
 static void slopes_and_grad(const hprob *pr, hstate *st, curv_grad *g)
@@ -520,15 +514,6 @@ static double sep_rounding(const hprob *pr, const hstate *st)
     return 8.0 * DBL_EPSILON * (F1 * F1 + q * (q + 2.0 * fabs(s))) / (sqrt(F1 * F1 + F2 * F2) + fabs(s));
 }
 
-/* The state of the base chart at w (the replaced coordinate) and |F| - sigma there, d,
- * with its derivative dd along w. */
-typedef struct {
-    double w, d, dd;
-    hprob q;
-    hstate st;
-    curv_grad cg;
-} sep_point;
-
 static int sep_point_at(const hprob *pr, int base, int fi, int b, double other, double w, sep_point *p)
 {
     p->w = w;
@@ -673,10 +658,23 @@ static int sep_exact_state(const hprob *q, double target, double *w, hstate *st)
 int el__hermite_sep_eval(const hprob *pr, int base, int fi, int b, int side, double y,
                          double other, double qs, double *w, hstate *st, hgrad *g, double *sigma)
 {
+    return el__hermite_sep_eval_from(pr, base, fi, b, side, y, other, qs, w, st, g, sigma, NULL);
+}
+
+int el__hermite_sep_eval_from(const hprob *pr, int base, int fi, int b, int side, double y, double other,
+                              double qs, double *w, hstate *st, hgrad *g, double *sigma, hsep_cache *cache)
+{
     const int oi = 1 - fi;
     const double target = side * exp(y);
-    sep_point buf[2], *p = buf, *t = buf + 1;
-    if (sep_point_at(pr, base, fi, b, other, *w, p)) return EL_EDOM;
+    sep_point local[2], *buf = cache ? cache->pt : local, *p = buf, *t = buf + 1;
+    if (cache && cache->valid && cache->w == *w) {
+        p = buf + cache->cur;     /* the last call's point: its state, not evaluated again */
+        t = buf + (1 - cache->cur);
+    } else if (sep_point_at(pr, base, fi, b, other, *w, p)) {
+        if (cache) cache->valid = 0;
+        return EL_EDOM;
+    }
+    if (cache) cache->valid = 0;
     const int src = sep_solve(pr, base, fi, b, other, target, &p, &t);
     if (src) return src;
     double ww = p->w;
@@ -696,7 +694,14 @@ int el__hermite_sep_eval(const hprob *pr, int base, int fi, int b, int side, dou
     if (rc) return rc;
     *w = ww;
     if (sigma) *sigma = q.sigma;
-    if (!g) return EL_OK;
+    if (!g) {
+        if (cache) {
+            cache->cur = (int)(p - buf);
+            cache->valid = 1;
+            cache->w = ww;
+        }
+        return EL_OK;
+    }
     /* (y, other) -> base coordinates: d(base)/dy = target / d_w, d(base)/d(other) = -d_o / d_w */
     double d_o;
     sep_of(&q, st, cgp, oi, &d_o);

@@ -367,7 +367,7 @@ int el__hermite_root_branch(const hprob *pr, double x)
 {
     if (pr->hcase != 1) return 0;
     const double s = pr->sigma, P1 = pr->P1, P2 = pr->P2, V1 = pr->V1, V2 = pr->V2;
-    const double w = x * x - s, C = 0.5 * w * P1 + x, A = w * V2 + s;
+    const double w = x * x - s, C = 0.5 * w * P1 + x, A = x * x * V2 + s * (1.0 - V2);   /* as curvdata's */
     const double c0 = 2.0 * V1 * C + A * P2, disc = V1 * V1 + P2 * c0;     /* (18) */
     if (disc < 0.0) return 0;
     const double sq = sqrt(disc), F2 = w;

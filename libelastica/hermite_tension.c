@@ -174,6 +174,7 @@ typedef struct {
      * starting guess of its Newton (hermite_objective.c) */
     int sep, side;
     double w0, w_start;
+    hsep_cache *sc;   /* the separatrix chart's last point (sep) */
     int lean;   /* the length mode's seeds (el__hermite_seed_tension): solve_sep_piece */
     double sep_lo, sep_hi;   /* the piece's ends at separatrix crossings (bracket_root), or NAN */
 } fctx;
@@ -204,8 +205,9 @@ static int piece_eval(fctx *c, double u, double qs, hstate *st, double *x)
         double w = k ? c->w_start : c->w0;
         if (k && w == c->w0) break;
         rc = pr->hcase == 3
-            ? el__hermite_sep_eval(pr, HCHART_C3, 1, c->b >= 2, c->side, u, el__hermite_case3_kappa0(pr, c->b), qs, &w, st, NULL, NULL)
-            : el__hermite_sep_eval(pr, HCHART_X, 0, c->b, c->side, u, pr->sigma, qs, &w, st, NULL, NULL);
+            ? el__hermite_sep_eval_from(pr, HCHART_C3, 1, c->b >= 2, c->side, u, el__hermite_case3_kappa0(pr, c->b), qs,
+                                        &w, st, NULL, NULL, c->sc)
+            : el__hermite_sep_eval_from(pr, HCHART_X, 0, c->b, c->side, u, pr->sigma, qs, &w, st, NULL, NULL, c->sc);
         *x = w;
         if (!rc) c->w0 = w;
     }
@@ -270,8 +272,15 @@ int el__hermite_roots_push(hrootlist *l, const hroot *r)
  * along F, |P| = 1) is at rounding level (1e-14), the bracket is 4e-16 |x| wide, or the
  * secant step from a full value is below the rounding of x: that value is the root to
  * double precision (steep f rounds above 1e-14; the step, falling on it, used to give way
- * to bisecting the wide bracket). A root where |f| <= 1e-8; a sign change across a jump of
- * f (L wrapping at a period) is none: the bracket closes with |f| large.
+ * to bisecting the wide bracket). The root: that last state where |f| <= 1e-8; else, in the
+ * separatrix chart, the full-precision state of least |f| the iteration evaluated where
+ * that one has: next to the saddle a near-straight root's bracket can close one ulp of y
+ * wide between f = -1.3e-22 and 1.5e-8, the last, and the root was dropped (the state is
+ * kept, not evaluated again: within the rounding of w it depends on the Newton's guess,
+ * and at the abscissa of f = 4e-9 a second evaluation gave more than 1e-8). The last state,
+ * not the least |f|, where both qualify: where f is steep its rounding (~1e-13) can put the
+ * least |f| off the sign change. A sign change across a jump of f (L wrapping at a period)
+ * is none: the bracket closes with |f| large.
  * Next to a separatrix crossing x_c (a root of (40), (41)) that ends the piece, the secant
  * steps are taken in t = ln|x - x_c|: |F| - sigma, so k'^2 = (|F| - sigma) / (2 |F|),
  * vanishes linearly in x - x_c, and the length (K = ln(4/k') + O(k'^2 ln k')), hence f, is
@@ -282,7 +291,8 @@ int el__hermite_roots_push(hrootlist *l, const hroot *r)
  * these changes). */
 static int bracket_root(fctx *c, double a, double fa, double b, double fb, hrootlist *out)
 {
-    hroot r = el__hermite_mkroot(a, c->b, c->pr->sigma);
+    hroot r = el__hermite_mkroot(a, c->b, c->pr->sigma), best;
+    double best_f = INFINITY;   /* separatrix chart: best, the full-precision state of least |f| */
     int ok = 0, full = 0, bfull = 0;   /* bfull: f(b) evaluated here in full precision */
     /* the chart of the secant steps: t = ln(dir (x - xc)), or t = x (dir = 0) */
     const double lo = a < b ? a : b, hi = a < b ? b : a;
@@ -311,6 +321,10 @@ static int bracket_root(fctx *c, double a, double fa, double b, double fb, hroot
         if (full ? piece_eval(c, x, 1.0, &r.st, &w) : piece_eval_to(c, x, 1e-6, &r.st, &w, &full)) break;
         r.x = w;
         const double f = r.st.f;
+        if (c->sep && full && fabs(f) < best_f) {
+            best = r;
+            best_f = fabs(f);
+        }
         if (full && (fabs(f) <= 1e-14 || span <= 4e-16 * scale || step <= 2e-16 * scale)) { ok = 1; break; }
         if (span < 1e-9 * (1.0 + fabs(x)) && !(fabs(f) < 1e-4)) break;    /* a jump */
         if (f * fb < 0.0) {
@@ -326,7 +340,11 @@ static int bracket_root(fctx *c, double a, double fa, double b, double fb, hroot
         fb = f;
         bfull = full;
     }
-    if (!ok || !(fabs(r.st.f) <= 1e-8)) return EL_OK;
+    if (!ok) return EL_OK;
+    if (!(fabs(r.st.f) <= 1e-8)) {
+        if (!(best_f <= 1e-8)) return EL_OK;
+        r = best;
+    }
     return el__hermite_roots_push(out, &r);
 }
 
@@ -531,9 +549,19 @@ static int solve_piece(fctx *c, double a, double b, int ns, hrootlist *out)
 static const double sep_steps[] = {0.0, 1.0, 2.5, 5.0, 10.0, 20.0, 40.0, 80.0, 160.0, 320.0, 690.0};
 enum { NSEP = sizeof sep_steps / sizeof sep_steps[0] };
 
-static int solve_sep_piece(fctx *c, double yc, hrootlist *out)
+/* fyc: the coarse value at y_c, which separatrix_end has evaluated; el__hermite_sep_eval
+ * is a function of y (not of its Newton's guess: test_hermite_tension.c), so a value is
+ * computed once: the lean samples are among the full ones and are kept when those are
+ * taken. The root finder starts from the state at y_c (w_start), as when y_c was the last
+ * sample. Against the plain searches: test_hermite_tension.c (every root of a dense scan)
+ * and test_hermite_length.c (the lean seeds against the tension mode's full search). */
+static int solve_sep_piece(fctx *c, double yc, double fyc, hrootlist *out)
 {
     double xs[NSEP + REFINE_MAX], fs[NSEP + REFINE_MAX];
+    int have[NSEP] = {0};
+    for (int j = 0; j < NSEP; j++) xs[j] = yc - sep_steps[NSEP - 1 - j];
+    fs[NSEP - 1] = fyc;
+    have[NSEP - 1] = 1;
     if (c->lean) {
         /* the length mode's seeds: the samples between y_c - 40 and y_c - 690 dropped where
          * the objective is affine there. With eps = |F| - sigma = e^y, the state is analytic
@@ -543,20 +571,24 @@ static int solve_sep_piece(fctx *c, double yc, hrootlist *out)
          * samples bracket. Not so where an end's amplitude tends to pi/2 with eps (kappa0
          * or kappa1 tending to 0 on the separatrix): the slopes over [y_c - 40, y_c - 20]
          * and [y_c - 690, y_c - 40] then differ, and the full samples are taken. */
-        static const double lean_steps[] = {0.0, 1.0, 2.5, 5.0, 10.0, 20.0, 40.0, 690.0};
-        enum { NLEAN = sizeof lean_steps / sizeof lean_steps[0] };
-        for (int j = 0; j < NLEAN; j++) {
-            xs[j] = yc - lean_steps[NLEAN - 1 - j];
-            fs[j] = fobj_coarse(c, xs[j]);
+        static const int lean[] = {0, 4, 5, 6, 7, 8, 9, 10};   /* y_c - 690, - 40, ..., - 1, y_c */
+        enum { NLEAN = sizeof lean / sizeof lean[0] };
+        double lx[NLEAN + REFINE_MAX], lf[NLEAN + REFINE_MAX];
+        for (int i = 0; i < NLEAN; i++) {
+            const int j = lean[i];
+            if (!have[j]) fs[j] = fobj_coarse(c, xs[j]);
+            have[j] = 1;
+            lx[i] = xs[j];
+            lf[i] = fs[j];
         }
-        const double s1 = (fs[2] - fs[1]) / 20.0, s2 = (fs[1] - fs[0]) / 650.0;
-        const double tol = 1e-6 * (fabs(s1) + fabs(s2) + (fabs(fs[0]) + fabs(fs[1]) + fabs(fs[2])) / 20.0);
-        if (fabs(s1 - s2) <= tol) return solve_samples(c, xs, fs, NLEAN - 1, lean_steps[NLEAN - 1], out);
+        const double s1 = (lf[2] - lf[1]) / 20.0, s2 = (lf[1] - lf[0]) / 650.0;
+        const double tol = 1e-6 * (fabs(s1) + fabs(s2) + (fabs(lf[0]) + fabs(lf[1]) + fabs(lf[2])) / 20.0);
+        c->w0 = c->w_start;
+        if (fabs(s1 - s2) <= tol) return solve_samples(c, lx, lf, NLEAN - 1, sep_steps[NSEP - 1], out);
     }
-    for (int j = 0; j < NSEP; j++) {
-        xs[j] = yc - sep_steps[NSEP - 1 - j];
-        fs[j] = fobj_coarse(c, xs[j]);
-    }
+    for (int j = 0; j < NSEP; j++)
+        if (!have[j]) fs[j] = fobj_coarse(c, xs[j]);
+    c->w0 = c->w_start;
     return solve_samples(c, xs, fs, NSEP - 1, sep_steps[NSEP - 1], out);
 }
 
@@ -575,8 +607,11 @@ static int separatrix_end(const hprob *pr, int b, double x_end, double dir, doub
     const double F1 = -2.0 * st.k0p, F2 = st.k0 * st.k0 - pr->sigma, d = sqrt(F1 * F1 + F2 * F2) - pr->sigma;
     if (d == 0.0) return EL_OK;
     fctx c;
+    hsep_cache sc;
+    sc.valid = 0;
     fctx_init(&c, pr, b);
     c.sep = 1;
+    c.sc = &sc;
     c.lean = lean;
     c.side = d > 0.0 ? 1 : -1;
     c.w0 = c.w_start = xin;
@@ -593,7 +628,7 @@ static int separatrix_end(const hprob *pr, int b, double x_end, double dir, doub
         return EL_OK;                                  /* the x chart covers the piece */
     *xc = x;
     c.w0 = c.w_start = x;
-    return solve_sep_piece(&c, yc, out);
+    return solve_sep_piece(&c, yc, st.f, out);
 }
 
 /* The kind of curve on a piece between split points, from its midpoint;

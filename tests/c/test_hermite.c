@@ -269,6 +269,99 @@ START_TEST(near_separatrix_solutions_meet_tol)
 }
 END_TEST
 
+/* Near-straight curves with aligned tangents at sigma |p1-p0|^2 in [300, 1000]: 2-piece chains
+ * (L ~ 1 + 1e-8..1e-5 |p1 - p0|) whose root, in the separatrix chart, sits at the limit of
+ * doubles (one ulp of y moves f by 1e-11..1e-8: #479's bracket closes between
+ * f = 1.1e-10 and -2.8e-11 six ulps apart). hermite.c tried the chain only for |f| <= 1e-11
+ * and lost them (the random problems, tangents within 0.05 rad of the chord and sigma
+ * |p1-p0|^2 uniform in [-10, 1000], that b1c7360 solved and 970c3e6 missed: 2 of 1000,
+ * 10 of 3000 with another seed); the chain's own
+ * Gauss-Newton takes any root bracket_root keeps (|f| <= 1e-8), and the final acceptance
+ * (residual <= tol by el_smooth_eval, checked here) is unchanged. The last one (#741) was
+ * lost where bracket_root returned the last state it evaluated (f = 1.5e-8, one ulp of y
+ * from f = -1.3e-22) with the separatrix cache of hermite_tension.c. Each problem returns the
+ * curve (L, kappa0, normalised by |p1 - p0|, as b1c7360 gave them to 10 digits). */
+static const struct { double p0[2], t0[2], p1[2], t1[2], sigma, L, k0; } near_straight[] = {
+    {{0x1.89b7c418eec7cp+0, 0x1.6af775aa5aef8p-1}, {0x1.2689f9a74c93bp-1, 0x1.a2cbfe0f35b09p-1},  /* seed 12345 #479 */
+     {0x1.3a799b24aab4ap+1, 0x1.e310c25beb7d6p+0}, {0x1.3b9f83a54a52bp-1, 0x1.93252c395e9a9p-1}, 0x1.a0c82881bc43cp+8, 1.000028285, -1.119725433},
+    {{0x1.b0d4d5e01c08cp+0, 0x1.1a0f14c32e82ep+2}, {-0x1.e92885dd5aaadp-1, 0x1.2e71c8f6aa812p-2},  /* seed 12345 #698 */
+     {-0x1.f6ab6018710d8p-1, 0x1.53e9b8ed6da54p+2}, {-0x1.e4c3ddcf5c36p-1, 0x1.4986936ea062fp-2}, 0x1.44ea6bc0fef4cp+5, 1.00001347, -0.3643390624},
+    {{0x1.7b4604165a9b8p-1, 0x1.ad772f322a4bcp+0}, {-0x1.8502590ad6227p-3, 0x1.f6adc6da29b44p-1},  /* seed 777 #1153 */
+     {0x1.3ccae98b4e27dp-1, 0x1.411f2abbc35f1p+1}, {-0x1.23a6287d301f7p-3, 0x1.fac8249ffb948p-1}, 0x1.33ccb80e3c87cp+9, 1.000034613, -0.7170727909},
+    {{-0x1.eaf00173ecb84p+1, 0x1.35d1709b25838p+0}, {-0x1.b512a94ede288p-7, -0x1.fff456fb24f17p-1},  /* seed 777 #1264 */
+     {-0x1.eb66073a37484p+1, 0x1.e9bf15a48bcedp-1}, {-0x1.f5d926c831c55p-7, -0x1.fff0a0964389bp-1}, 0x1.d0ab7b5323ee4p+12, 1.000000032, -0.01296710349},
+    {{-0x1.3ccdd00acc3bap+2, 0x1.842e2a28cc378p+1}, {-0x1.d93b6de79df68p-6, -0x1.ffc95049bac43p-1},  /* seed 777 #1844 */
+     {-0x1.3cf3645321b17p+2, 0x1.617333b222d4ep+1}, {-0x1.ab47237e5d3acp-8, -0x1.fffd36d7ab275p-1}, 0x1.735d8da37a82cp+13, 1.000005013, 0.4478564013},
+    {{-0x1.51fc35da63e94p+0, -0x1.8cada1409ca48p-1}, {0x1.9bebc5bed6032p-2, 0x1.d4bf601ce1069p-1},  /* seed 777 #1905 */
+     {-0x1.295961da235f2p+0, -0x1.a380329d0d91p-2}, {0x1.98f1f7de18a38p-2, 0x1.d566048b414dcp-1}, 0x1.754ca82ab13b3p+12, 1.000000176, 0.08917443293},
+    {{-0x1.1640ef0100a96p+1, -0x1.0f326892d0936p+2}, {-0x1.556c2d8ff77abp-3, -0x1.f8d5c4f725d7cp-1},  /* seed 777 #2025 */
+     {-0x1.e2407706efebap+1, -0x1.9525c73721edbp+3}, {-0x1.7d3cd6d71ab2p-3, -0x1.f70d01c5e853fp-1}, 0x1.82ee84adf0156p+3, 1.000004487, -0.4323128092},
+    {{-0x1.dcf7e9463fa06p+1, -0x1.ad3a405177c3cp+1}, {-0x1.7cc8d3d00d416p-1, -0x1.564487f7d63eap-1},  /* seed 777 #2048 */
+     {-0x1.5b743607673dbp+3, -0x1.34e53fec436bap+3}, {-0x1.8050375e1f7c2p-1, -0x1.524ceff541368p-1}, 0x1.64381c464e6c2p+2, 1.000001216, -0.1451435697},
+    {{0x1.01518c6b0cbc8p-1, -0x1.d96aa0d17ee24p+0}, {-0x1.291e336bc677ap-4, -0x1.fea6b479f6728p-1},  /* seed 777 #2472 */
+     {0x1.91ba1a61b2defp-2, -0x1.6d3ce01bcbeb9p+1}, {-0x1.bf6130d3fcd8bp-4, -0x1.fcefd2ed8f70dp-1}, 0x1.cf013258edf83p+9, 1.00001547, -0.8395892575},
+    {{0x1.2dea4a5d93f18p+0, -0x1.81135810d8b8cp+1}, {0x1.234573d1029a5p-1, -0x1.a513774c17257p-1},  /* seed 777 #2538 */
+     {0x1.0ca60404fdb58p+1, -0x1.1b791efcafe51p+2}, {0x1.15237ab057515p-1, -0x1.ae825d3a9469cp-1}, 0x1.383c5f05dfbcp+8, 1.000011238, -0.6829223999},
+    {{0x1.0276eb101054p+2, 0x1.3f743fcef557cp+1}, {0x1.c5851664f9d4bp-1, -0x1.db3defa07062cp-2},  /* seed 777 #2645 */
+     {0x1.126deb4a082d5p+2, 0x1.2eaf407604affp+1}, {0x1.c5381147d548fp-1, -0x1.dc637b9698c9p-2}, 0x1.d8c12208e92c7p+12, 1.000000015, -0.01782049955},
+    {{-0x1.d19fe47fba71ep+1, -0x1.ae27a02dca42p-1}, {0x1.e8f28e66fe1bbp-3, 0x1.f131bc04daa02p-1},  /* seed 777 #2809 */
+     {-0x1.9d60a504745c2p+1, 0x1.4d260f769201p-1}, {0x1.11e366d8836d3p-2, 0x1.ed589529be4f4p-1}, 0x1.2fcd2c1bf63b4p+7, 1.000012798, -0.3791556246},
+    {{0x1.76ce1e715e4d8p+0, -0x1.a4a32fbc7968p-5}, {-0x1.fffc6ca9bbf1ap-1, -0x1.e411bc764ed48p-8},  /* seed 777 #741 */
+     {0x1.44bfbf0f1acafp+0, -0x1.bfb38e7f12cf4p-5}, {-0x1.ffebec24929c7p-1, -0x1.1ec29cd8fbdadp-6}, 0x1.adf755287a811p+13, 1.000001387, 0.1643718109},
+};
+
+START_TEST(near_straight_chains_at_the_limit_of_doubles)
+{
+    const int n = (int)(sizeof near_straight / sizeof near_straight[0]);
+    double worst_jump = 0.0;
+    for (int i = 0; i < n; i++) {
+        const double *p0 = near_straight[i].p0, *t0 = near_straight[i].t0;
+        const double *p1 = near_straight[i].p1, *t1 = near_straight[i].t1;
+        const double d = hypot(p1[0] - p0[0], p1[1] - p0[1]);
+        el_hermite_options o;
+        el_hermite_options_defaults(&o);
+        o.sigma = near_straight[i].sigma;
+        el_hermite_result r;
+        ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_OK);
+        int found = 0;
+        for (size_t j = 0; j < r.count; j++) {
+            const el_hermite_solution *s = &r.solutions[j];
+            if (!(fabs(s->length / d - near_straight[i].L) <= 1e-9 * near_straight[i].L &&
+                  fabs(s->kappa0 * d - near_straight[i].k0) <= 1e-8 * (1.0 + fabs(near_straight[i].k0))))
+                continue;
+            found = 1;
+            ck_assert_int_eq(s->npieces, 2);
+            /* the ends to tol, the joint to 1e-12 (hermite_check.h's measures) */
+            const el_smooth_params *pc[3];
+            pieces_of(s, pc);
+            double xy[2][4], th[2][2], kap[2][2];
+            for (int k = 0; k < 2; k++) {
+                const double sv[2] = {0.0, pc[k]->length};
+                ck_assert_int_eq(el_smooth_eval(pc[k], 2, sv, xy[k], th[k], kap[k]), EL_OK);
+            }
+            ck_assert(hypot(xy[0][0] - p0[0], xy[0][1] - p0[1]) <= o.tol * d);
+            ck_assert(fabs(wrap(th[0][0] - atan2(t0[1], t0[0]))) <= o.tol);
+            ck_assert(hypot(xy[1][0] - xy[0][2], xy[1][1] - xy[0][3]) <= 1e-12 * d);
+            ck_assert(fabs(wrap(th[1][0] - th[0][1])) <= 1e-12);
+            ck_assert(hypot(xy[1][2] - p1[0], xy[1][3] - p1[1]) <= o.tol * d);
+            ck_assert(fabs(wrap(th[1][1] - atan2(t1[1], t1[0]))) <= o.tol);
+            /* the curvature's jump at the joint against the far loop's peak curvature
+             * kappa_m = 2 |k| sqrt(mu) (hermite_chain.c: ~1e-8 of it), not against the
+             * near-straight curve's own (check_solution's 1e-7 of max |kappa|, ~1e-3 of
+             * kappa_m here, which b1c7360's chains of these problems exceed as well) */
+            const double km = 2.0 * fabs(pc[0]->k) * sqrt(pc[0]->mu), jump = fabs(kap[0][1] - kap[1][0]) / km;
+            ck_assert_msg(jump <= 1e-8, "problem %d: curvature jump %g of kappa_m", i, jump);
+            worst_jump = fmax(worst_jump, jump);
+        }
+        ck_assert_msg(found, "problem %d: the curve L %.10g, kappa0 %.10g (|p1 - p0| = 1) is missing", i,
+                      near_straight[i].L, near_straight[i].k0);
+        el_hermite_result_free(&r);
+    }
+    fprintf(stderr, "near_straight_chains_at_the_limit_of_doubles: %d problems, curvature jumps up to %.2g of kappa_m\n",
+            n, worst_jump);
+}
+END_TEST
+
 /* n random length-mode problems near the chord (L / |p1 - p0| uniform in [1.02, Lmax]),
  * each result checked (ends to 1e-10, the given length, none unrepresentable): the
  * solutions, the chains and the one-piece curves within 1e-7 of |k| = 1 added to c[0..2]. */
@@ -477,6 +570,7 @@ int main(void)
     tcase_add_test(tc, length_mode_inverts_tension_mode);
     tcase_add_test(tc, mirrored_data_give_mirrored_solutions);
     tcase_add_test(tc, near_separatrix_solutions_meet_tol);
+    tcase_add_test(tc, near_straight_chains_at_the_limit_of_doubles);
     tcase_add_test(tc, length_mode_near_the_chord_returns_chains);
     tcase_add_test(tc, polish_keeps_near_separatrix_curves_in_one_piece);
     tcase_add_test(tc, no_solution_lost_up_to_high_tension);

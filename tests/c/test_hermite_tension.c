@@ -379,6 +379,79 @@ START_TEST(separatrix_chart_independent_of_the_guess)
 }
 END_TEST
 
+/* The separatrix chart's cache (el__hermite_sep_eval_from: a call whose guess is the w the
+ * last one returned starts from that call's point, hermite_tension.c's piece_eval) against
+ * the plain el__hermite_sep_eval, on the crossings of family 1's and 5's problems
+ * (sigma |p1-p0|^2 in [40, 1e4] and [100, 1000], both sides of the separatrix, k across 1),
+ * NY samples from |F| - sigma = 1e-3 sigma down to 1e-300 sigma, visited in order and
+ * alternating between the ends (the root finder's jumps), each from the last one's w:
+ * - the plain call from the cached point's w (sep_solve's, before sep_exact_state refines
+ *   it by a few ulps) gives the same status and bitwise the same state;
+ * - the plain call from the returned w (the guess without the cache) the same f and L to
+ *   the chart's independence of its guess (above) where both succeed. Where one fails
+ *   (1 of 688k samples) it is the chart's, not the cache's: the plain call from the cached
+ *   point fails alike (first check); piece_eval then starts again from the piece's guess. */
+START_TEST(separatrix_cache_gives_the_plain_states)
+{
+    int nsamples = 0, nhit = 0, none_sided = 0;
+    double worst = 0.0;
+    for (int family = 1; family <= 5; family += 4) {
+        unsigned long long st = 9001 + (unsigned long long)family;
+        for (int t = 0; t < 60; t++) {
+            double p1[2], t1[2], sigma;
+            draw(&st, family, p1, t1, &sigma);
+            hprob pr;
+            memset(&pr, 0, sizeof pr);
+            pr.P1 = p1[0]; pr.P2 = p1[1]; pr.V1 = t1[0]; pr.V2 = t1[1]; pr.Lmin = 1.0; pr.sigma = sigma;
+            el__hermite_set_case(&pr);
+            el_hermite_analysis an;
+            ck_assert_int_eq(el_hermite_analyse(p1, t1, sigma, &an), EL_OK);
+            for (size_t i = 0; i < an.nroot; i++)
+                for (int side = -1; side <= 1; side += 2)
+                    for (int order = 0; order < 2; order++) {
+                        hsep_cache cache;
+                        cache.valid = 0;
+                        double w = an.root[i];
+                        for (int j = 0; j < NY; j++) {
+                            const int jj = order == 0 ? j : j % 2 ? NY - 1 - j / 2 : j / 2;
+                            const double tt = (double)jj / (NY - 1);
+                            const double y = log(1e-3 * sigma) - 690.0 * (1.0 - tt) * (1.0 - tt);
+                            hstate cs, ps, qs;
+                            /* wq: the cached point's w, where the call starts (a hit: valid, w equal) */
+                            const int hit = cache.valid && cache.w == w;
+                            double wc = w, wp = w, wq = hit ? cache.pt[cache.cur].w : w;
+                            const int rc = el__hermite_sep_eval_from(&pr, HCHART_X, 0, an.root_branch[i], side, y, sigma,
+                                                                     1.0, &wc, &cs, NULL, NULL, &cache);
+                            const int rq = el__hermite_sep_eval(&pr, HCHART_X, 0, an.root_branch[i], side, y, sigma,
+                                                                1.0, &wq, &qs, NULL, NULL);
+                            const int rp = el__hermite_sep_eval(&pr, HCHART_X, 0, an.root_branch[i], side, y, sigma,
+                                                                1.0, &wp, &ps, NULL, NULL);
+                            nhit += hit;
+                            ck_assert_int_eq(rc, rq);
+                            if (!rc) ck_assert_msg(wc == wq && cs.f == qs.f && cs.L == qs.L && cs.E == qs.E,
+                                                   "family %d problem %d y %.17g: not the plain state", family, t, y);
+                            if (!rc != !rp) {
+                                none_sided++;
+                                w = rc ? w : wc;
+                                continue;
+                            }
+                            if (rc) continue;
+                            nsamples++;
+                            w = wc;
+                            const double d = fmax(fabs(cs.f - ps.f) / (1.0 + fabs(ps.f)), fabs(cs.L - ps.L) / ps.L);
+                            worst = fmax(worst, d);
+                            ck_assert_msg(d <= 1e-8, "family %d problem %d y %.17g: f %.17g (cache) vs %.17g, L %.17g "
+                                          "vs %.17g", family, t, y, cs.f, ps.f, cs.L, ps.L);
+                        }
+                    }
+        }
+    }
+    ck_assert_int_gt(nsamples, 100000);
+    fprintf(stderr, "separatrix_cache_gives_the_plain_states: %d samples (%d hits), largest difference %.3e, %d one-sided\n",
+            nsamples, nhit, worst, none_sided);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("hermite_tension");
@@ -389,6 +462,7 @@ int main(void)
     tcase_add_test(tc, kappa_bound_bounds_the_period_tightly);
     tcase_add_test(tc, separatrix_crossings_exact_at_high_tension);
     tcase_add_test(tc, separatrix_chart_independent_of_the_guess);
+    tcase_add_test(tc, separatrix_cache_gives_the_plain_states);
     tcase_add_test(tc, poly40_isolated_roots_match_plain_method);
     tcase_add_test(tc, poly40_roots_never_exceed_the_degree_at_subnormal_tension);
     suite_add_tcase(s, tc);
