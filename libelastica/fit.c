@@ -232,51 +232,12 @@ static int curve_distances(fit_objective *ob, const double *x, double v[2][FIT_N
     return st;
 }
 
-/* Levenberg-Marquardt; for the smooth orthogonal fit certified at rest, while it lowers
- * f, again from its point with the feet where the curve comes nearest
- * (fit_feet_to_nearest: a foot that rested on another pass of a loop than its nearest).
- * Not from an uncertified point, which Ipopt finishes (measured: 20 uneven noisy points,
- * refooted at each stall rms 0.16, Ipopt from the stall 0.0058). */
-static int lm_nearest(fit_objective *ob, const double *x0, int max_iter, fit_solution *sol)
-{
-    int st = fit_lm(ob, x0, max_iter, sol);
-    for (int round = 0; !st && round < FEET_ROUNDS && ob->rest && sol->certified && sol->val.f > FIT_EXACT_F; round++) {
-        fit_solution again;
-        if (fit_feet_to_nearest(ob, sol->x) || fit_lm(ob, sol->x, max_iter, &again)) break;
-        again.iters += sol->iters;
-        const int lower = again.val.f < sol->val.f * (1.0 - 1e-9);
-        if (again.val.f <= sol->val.f) *sol = again;
-        if (!lower) break;
-    }
-    return st;
-}
-
-/* Ipopt (fit_ipopt); for the smooth orthogonal fit, again from its point while the
- * feet where the curve comes nearest lower f there (as lm_nearest; measured: 200
- * noise-free uneven points, both tangents held, rms 2.0e-4 at rest, 6e-15 after). */
-static int ipopt_nearest(fit_objective *ob, const double *xl, const double *xu, const fit_constraints *con,
-                         const el_fit_options *o, double *x, fit_ipopt_out *io, double *tmp)
-{
-    const int st = fit_ipopt(ob, xl, xu, con, o, x, io, tmp);
-    for (int round = 0; st == EL_OK && round < FEET_ROUNDS && ob->rest && io->f > FIT_EXACT_F; round++) {
-        double xa[FIT_MAXX];
-        fit_ipopt_out ia;
-        fit_value fv;
-        memcpy(xa, x, sizeof xa);
-        if (fit_feet_to_nearest(ob, xa) || fit_objective_eval(ob, xa, 0, &fv) || !(fv.f < io->f * (1.0 - 1e-9)) ||
-            fit_ipopt(ob, xl, xu, con, o, xa, &ia, tmp) != EL_OK || !(ia.f < io->f))
-            break;
-        memcpy(x, xa, sizeof xa);
-        ia.iters += io->iters;
-        *io = ia;
-    }
-    return st;
-}
-
-/* One initial guess: Levenberg-Marquardt, then Ipopt when something needs it. */
+/* One initial guess: Levenberg-Marquardt, then Ipopt when something needs it. warm: x0 is
+ * a fit already and the feet are set (fit_run's refit): no paired start. */
 static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit_constraints *con,
                            const double *xl, const double *xu, int need_ipopt, int lm_only,
-                           const double *x0, double best_f, cand_result *r, double *tmp, int near_start)
+                           const double *x0, double best_f, cand_result *r, double *tmp, int near_start,
+                           int warm)
 {
     const int nx = ob->map.nx;
     memset(r, 0, sizeof *r);
@@ -288,7 +249,8 @@ static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit
     double xs[FIT_MAXX];
     memcpy(xs, x0, sizeof(double) * (size_t)nx);
     int crawled = 0;
-    if (ob->kind == FIT_ORTHOGONAL && ob->map.model == FIT_SMOOTH) {
+    const double *guess = x0;
+    if (!warm && ob->kind == FIT_ORTHOGONAL && ob->map.model == FIT_SMOOTH) {
         /* the paired fit first: its pairing with the data's order keeps loops and sparse
          * points on their branch, and on equilateral data it is close and cheap (points
          * equally spaced in s); then the feet from its places */
@@ -307,12 +269,19 @@ static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit
              * projected onto a loop's other pass stayed there, and L-BFGS ended at a worse
              * optimum (measured: 20 uneven noisy points, rms 0.0901 and 0.00390 against
              * the exact path's 0.0328 and 0.00384; with the feet nearest the guess
-             * instead, 10 of 30 such fits worse) */
+             * instead, 10 of 30 such fits worse). A paired fit that crawled to max_iter
+             * without its certificate (a sketch with a gap, whose paired valley the exact
+             * path also crawls) is no start: the guess then (measured: 1000 noisy points,
+             * EL_EMAXITER at rms 0.0544 from the crawled start, EL_OK at 0.0466 from the
+             * guess, the exact path 0.0534) */
             fit_ipopt_out po;
             memcpy(sol.x, x0, sizeof(double) * (size_t)nx);
             pst = fit_ipopt(ob, xl, xu, NULL, o, sol.x, &po, tmp);
             sol.iters = po.iters;
-            sol.certified = po.certified;
+            if (pst == EL_OK && !po.certified) {
+                r->iters += po.iters;
+                pst = EL_ENOCONV;
+            }
             if (pst == EL_ENOMEM || pst == EL_EINTERNAL) {
                 ob->lm_tol = certificate;
                 ob->kind = FIT_ORTHOGONAL;
@@ -320,19 +289,7 @@ static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit
             }
         } else {
             pst = fit_lm(ob, x0, o->max_iter, &sol);
-        }
-        /* a paired fit that crawled to max_iter without its certificate (a sketch with a
-         * gap, whose chord fractions misplace the points after it) is a doubtful start:
-         * L-BFGS starts from the guess then (measured, 1000 noisy sketched points:
-         * EL_EMAXITER at rms 0.0544 from the crawled start, EL_OK at 0.0466 from the
-         * guess); Levenberg-Marquardt, cheaper, from both, keeping the lower (measured:
-         * from the crawled start rms 0.0513 and 0.0069977 on two 1000-point sketches
-         * where the guess gives 0.0466 and 0.0059340, but 0.0058 against 0.104 from the
-         * guess on 20 uneven points) */
-        crawled = pst == EL_OK && !sol.certified;
-        if (crawled && o->limited_memory) {
-            r->iters += sol.iters;
-            pst = EL_ENOCONV;
+            crawled = pst == EL_OK && !sol.certified;
         }
         ob->lm_tol = certificate;
         if (pst == EL_OK) {
@@ -342,19 +299,25 @@ static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit
         ob->kind = FIT_ORTHOGONAL;
         if (fit_feet_start(ob, xs) != EL_OK) memcpy(xs, x0, sizeof(double) * (size_t)nx);
     }
-    const double *guess = x0;
     x0 = xs;
     ob->f_ceiling = best_f;
     /* near_start: x0 is near the constrained optimum already (fit_held_start's continuation):
      * Ipopt from there, not from the unconstrained fit that Levenberg-Marquardt would
      * return to */
-    const int lst = o->limited_memory || (near_start && need_ipopt) ? EL_EINVAL : lm_nearest(ob, x0, o->max_iter, &sol);
+    const int lst = o->limited_memory || (near_start && need_ipopt) ? EL_EINVAL : fit_lm(ob, x0, o->max_iter, &sol);
+    /* a paired start that crawled to max_iter without its certificate (a sketch with a
+     * gap, whose chord fractions misplace the points after it) may be far from the fit:
+     * Levenberg-Marquardt from the guess too, kept when certified lower (measured, 1000
+     * noisy sketched points: rms 0.057, 0.0071, 0.0129 from the crawled start, 0.0031,
+     * 0.0034, 0.0039 from the guess, the fits from the true curves'; an uncertified
+     * point is no measure: on 20 uneven points the crawled start's 0.0058, reached by
+     * Ipopt, would have lost to the guess's 0.104) */
     if (lst == EL_OK && crawled) {
         fit_solution g;
-        if (fit_feet_start(ob, guess) == EL_OK && lm_nearest(ob, guess, o->max_iter, &g) == EL_OK) {
+        if (fit_feet_start(ob, guess) == EL_OK && fit_lm(ob, guess, o->max_iter, &g) == EL_OK) {
             r->iters += g.iters;
-            if (g.val.f < sol.val.f) sol = g;
-            else fit_feet_to_nearest(ob, sol.x);      /* the kept point's feet */
+            if (g.certified && g.val.f < sol.val.f) sol = g;
+            else fit_feet_start(ob, sol.x);      /* the kept point's feet, from its curve */
         }
     }
     ob->f_ceiling = HUGE_VAL;
@@ -384,7 +347,7 @@ static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit
         ob->pen = con;
         ob->pen_tmp = tmp;
         for (ob->pen_rho = 1.0; ob->pen_rho <= 1e10; ob->pen_rho *= 100.0) {
-            if (lm_nearest(ob, x, o->max_iter, &sol) != EL_OK) break;
+            if (fit_lm(ob, x, o->max_iter, &sol) != EL_OK) break;
             memcpy(x, sol.x, sizeof(double) * (size_t)nx);
             r->iters += sol.iters;
             double c[FIT_NCON], cc = 0.0;
@@ -399,7 +362,7 @@ static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit
     if (lm_ok && !inside) r->iters += bounded_start(ob, xl, xu, o->max_iter, x);
     /* L-BFGS stops a guess that cannot reach an earlier one's f (fit_ipopt.c) */
     if (o->limited_memory) ob->f_ceiling = best_f;
-    int st = ipopt_nearest(ob, xl, xu, need_ipopt ? con : NULL, o, x, &io, tmp);
+    int st = fit_ipopt(ob, xl, xu, need_ipopt ? con : NULL, o, x, &io, tmp);
     ob->f_ceiling = HUGE_VAL;
     if (st == EL_EINTERNAL || st == EL_ENOMEM) return st;
     r->used_ipopt = 1;
@@ -602,7 +565,7 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
                     for (size_t i = 0; i < n; i++) ob.s[i] = t[i] * p0[6];
             }
             if ((st = solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, lm_only, x0, best.f, &r, tmp,
-                                      staged && pre > 0)))
+                                      staged && pre > 0, 0)))
                 goto done;
             r.iters += pre;
         }
@@ -620,13 +583,52 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
 
     /* the kept curve: its distances, constraints, canonical form, input units */
     double v[2][FIT_NP];
-    int status = best.status, constraint = 0;
-    int ok = fit_map_eval(&map, best.x, v, NULL) == EL_OK;
-    if (ok && ob.s && !(last_is_best && fit_has_feet(&ob)))   /* else the fit's own feet */
-        for (size_t i = 0; i < n; i++) ob.s[i] = t[i] * v[0][6];
-    if (ok && (constraint = fit_violated(&ob, &con, v[0], lo, hi, tmp))) status = EL_EDOM;
-    if (ok) ok = curve_distances(&ob, best.x, v, 0, d, fs, tmp) == EL_OK &&
-                 !el__all_finite(d, n) && !el__all_finite(fs, n);
+    int status, constraint, ok, refit = 1;
+    for (int round = 0;; round++) {
+        status = best.status;
+        constraint = 0;
+        ok = fit_map_eval(&map, best.x, v, NULL) == EL_OK;
+        if (ok && ob.s && !(last_is_best && fit_has_feet(&ob)))   /* else the fit's own feet */
+            for (size_t i = 0; i < n; i++) ob.s[i] = t[i] * v[0][6];
+        if (ok && (constraint = fit_violated(&ob, &con, v[0], lo, hi, tmp))) status = EL_EDOM;
+        if (ok) ok = curve_distances(&ob, best.x, v, 0, d, fs, tmp) == EL_OK &&
+                     !el__all_finite(d, n) && !el__all_finite(fs, n);
+        /* The smooth orthogonal fit moves each foot by Newton steps, which keep it on its
+         * branch: a foot that started where a rough curve (the paired start) came nearest,
+         * on another pass of a loop than the fit's nearest point, stays at that stationary
+         * point of its distance, and the fit is certified at rest there (measured: 20
+         * noise-free sketched points, one foot at distance 2.6e-2 on the other pass where
+         * the nearest is 1e-3 away, certified at rms 1.07e-3; the exact fit 4e-15). The
+         * feet found here, the nearest points, are then elsewhere (by more than 1e-3 of
+         * the length, far beyond a foot at rest; the extension's feet beyond the curve
+         * aside), or, when the fit's feet are gone (an earlier guess kept), the distances
+         * below the fit's: fitted again from its point with these feet, while that
+         * lowers f. */
+        if (!ok || !refit || round == FEET_ROUNDS || !ob.rest || !isfinite(best.f) || !(best.f > FIT_EXACT_F) ||
+            map.nx == 0)
+            break;
+        int elsewhere = 0;
+        if (last_is_best) {
+            for (size_t i = 1; i + 1 < n; i++)
+                elsewhere |= ob.s[i] >= 0.0 && ob.s[i] <= v[0][6] && fabs(fs[i] - ob.s[i]) > 1e-3 * v[0][6];
+        } else {
+            double s2 = 0.0;
+            for (size_t i = 0; i < n; i++) s2 += d[i] * d[i];
+            elsewhere = s2 < 2.0 * (double)n * best.f * (1.0 - 1e-6);
+        }
+        if (!elsewhere) break;
+        memcpy(ob.s + 1, fs + 1, sizeof(double) * (n - 2));
+        ob.s[0] = 0.0;
+        ob.s[n - 1] = v[0][6];
+        ob.have_base = 0;
+        cand_result r;
+        if ((st = solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, lm_only, best.x, best.f, &r, tmp, 1, 1)))
+            goto done;
+        iters += r.iters;
+        refit = r.f < best.f;       /* else once more for the kept curve's distances */
+        last_is_best = refit;
+        if (refit) best = r;
+    }
     if (!ok) status = EL_EDOM;   /* its distances are beyond double precision: not a fit */
     double s2 = 0.0, emax = 0.0;
     for (size_t i = 0; i < n; i++) {

@@ -168,32 +168,6 @@ int fit_feet_distances(fit_objective *o, const double *x, double *dist, double *
 }
 
 /*
- * A smooth orthogonal fit's feet (one curve) moved to where the curve at x comes nearest
- * to each point, the ends at 0 and L; the distances and feet in o->rest, o->rest_foot.
- * Levenberg-Marquardt moves each foot by Newton steps, which keep it on its branch: a
- * foot that started on another pass of a loop (the nearest point of a rough start curve)
- * stays at that stationary point of its distance, and the fit is certified at rest there
- * (measured: 20 noise-free sketched points, one foot on the other pass at distance
- * 2.6e-2 where its nearest is 1e-3 away; certified at rms 1.07e-3, the exact fit 4e-15).
- */
-int fit_feet_to_nearest(fit_objective *o, const double *x)
-{
-    double v[2][FIT_NP];
-    const double *V[2] = {NULL, NULL};
-    const size_t nv[2] = {o->n, 0};
-    double *d = o->rest, *fs = o->rest_foot;
-    int st = fit_map_eval(&o->map, x, v, NULL);
-    if (!st) st = fit_feet_distances(o, x, d, fs, NULL);
-    if (!st) st = fit_nearest_everywhere(o, v, V, nv, 1, d, fs, NULL);
-    if (st) return st;
-    memcpy(o->s + 1, fs + 1, sizeof(double) * (o->n - 2));
-    o->s[0] = 0.0;
-    o->s[o->n - 1] = v[0][6];
-    o->have_base = 0;
-    return EL_OK;
-}
-
-/*
  * The smooth orthogonal fit's first feet for the curve at x: each where that curve comes
  * nearest (loops, sparse points: not always near the point's place), so the fit starts
  * from the curve's own point-to-curve distances and only improves on them; the
@@ -210,8 +184,15 @@ int fit_feet_start(fit_objective *o, const double *x)
     int st = fit_map_eval(&o->map, x, v, NULL);
     if (st) return st;
     for (size_t i = 0; i < o->n; i++) o->s[i] = o->t[i] * v[0][6];
+    const double *V[2] = {NULL, NULL};
+    const size_t nv[2] = {o->n, 0};
+    double *d = o->rest, *fs = o->rest_foot;    /* the report's arrays (fit_run) */
     o->rest_ok = 0;
-    fit_feet_to_nearest(o, x);
+    if (fit_feet_distances(o, x, d, fs, NULL) == EL_OK && fit_nearest_everywhere(o, v, V, nv, 1, d, fs, NULL) == EL_OK) {
+        memcpy(o->s + 1, fs + 1, sizeof(double) * (o->n - 2));
+        o->s[0] = 0.0;
+        o->s[o->n - 1] = v[0][6];
+    }
     return EL_OK;
 }
 
