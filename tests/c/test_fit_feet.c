@@ -1,6 +1,6 @@
 /* The smooth orthogonal fit's feet on sketched points (a dense run, a gap, a sparse run):
  * a foot that starts on another pass of the curve than its nearest point must not stay
- * there (fit.c lm_nearest / ipopt_nearest, fit_feet.c fit_feet_to_nearest). Noise-free
+ * there (fit.c, fit_run: the report's nearest feet, the fit again from them). Noise-free
  * points of an elastica with k > 1 (the curve turns through a full loop): the default fit
  * is exact to rounding, free and with both end tangents held, by Levenberg-Marquardt and
  * by L-BFGS. Before: rms 1.07e-3 (20 points, free) and 9.3e-4 (50 points, tangents),

@@ -768,9 +768,9 @@ def _elastica_sampled(seed, n, spacing):
 @pytest.mark.parametrize("seed", [1, 5, 9])
 def test_smooth_exact_on_uneven_and_sketched_points(seed):
     """Noise-free uneven / sketched points of an elastica: the default fit is exact to
-    rounding, free and with both end tangents held. Main before fit_feet_to_nearest
-    certified 30 of these 48 fits (seeds 1, 5, 9) at rms 3e-6 .. 3e-2 of the size: a foot
-    resting on another pass of the curve than its nearest point."""
+    rounding, free and with both end tangents held. Main certified 30 of these 48 fits at
+    rms 3e-6 .. 3e-2 of the size: a foot resting on another pass of the curve than its
+    nearest point (fit.c, fit_run's report refits with the nearest feet)."""
     for n in (20, 50, 200, 1000):
         for spacing in ("uneven", "sketch"):
             P, _, tangents = _elastica_sampled(seed, n, spacing)
