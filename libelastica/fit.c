@@ -604,7 +604,7 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
          * aside), or, when the fit's feet are gone (an earlier guess kept), the distances
          * below the fit's: fitted again from its point with these feet, while that
          * lowers f (measured on bench_fit.py's 42 noisy 1000-point smooth curves: 20
-         * refitted, rms 0.1 .. 11 % lower, instructions 1.30e9 -> 3.15e9). */
+         * refitted, each lower, by up to 11 % of its rms; instructions 1.30e9 -> 3.15e9). */
         if (!ok || !refit || round == FEET_ROUNDS || !ob.rest || !isfinite(best.f) || !(best.f > FIT_EXACT_F) ||
             map.nx == 0)
             break;
