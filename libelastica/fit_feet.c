@@ -167,6 +167,35 @@ int fit_feet_distances(fit_objective *o, const double *x, double *dist, double *
     return EL_OK;
 }
 
+/*
+ * The smooth orthogonal fit's first feet for the curve at x: each where that curve comes
+ * nearest (loops, sparse points: not always near the point's place), so the fit starts
+ * from the curve's own point-to-curve distances and only improves on them; the
+ * fractions' places t_i L if that search fails. Only the branch of each foot matters
+ * here (the fit moves the feet by Newton steps at every evaluation and certifies them at
+ * rest): the search elsewhere stops at a step of 1e-7 of the length (branch_only;
+ * measured on the 42 noisy 1000-point curves of bench_fit.py: 12 % fewer instructions,
+ * every rms the same to 1e-9, one 2e-8 lower).
+ */
+int fit_feet_start(fit_objective *o, const double *x)
+{
+    double v[2][FIT_NP];
+    o->have_base = 0;
+    int st = fit_map_eval(&o->map, x, v, NULL);
+    if (st) return st;
+    for (size_t i = 0; i < o->n; i++) o->s[i] = o->t[i] * v[0][6];
+    const double *V[2] = {NULL, NULL};
+    const size_t nv[2] = {o->n, 0};
+    double *d = o->rest, *fs = o->rest_foot;    /* the report's arrays (fit_run) */
+    o->rest_ok = 0;
+    if (fit_feet_distances(o, x, d, fs, NULL) == EL_OK && fit_nearest_everywhere(o, v, V, nv, 1, d, fs, NULL) == EL_OK) {
+        memcpy(o->s + 1, fs + 1, sizeof(double) * (o->n - 2));
+        o->s[0] = 0.0;
+        o->s[o->n - 1] = v[0][6];
+    }
+    return EL_OK;
+}
+
 /* Squared distance of P to segment A-B, and the fraction t of its nearest point.
  * (The clamp to [0, 1] by comparisons, NaN to 0 as fmin(fmax(t, 0), 1) does: the
  * report's hot loop, where libm's fmin/fmax are calls.) */

@@ -188,6 +188,10 @@ static inline double fit_foot_step(double t, double e, double kappa, double rang
 }
 /* The feet's range [lo, hi]: the curve itself, or extended (the objective's). */
 void fit_feet_range(const fit_objective *o, double v[2][FIT_NP], int extended, double *lo, double *hi);
+/* Smooth orthogonal, one curve, o->rest and o->rest_foot set (fit.c's buffers): the first
+ * feet of a fit from x, each where the curve at x comes nearest (else at t_i L); an error
+ * only when that curve cannot be evaluated. */
+int fit_feet_start(fit_objective *o, const double *x);
 /* Signed distances (left of the curve positive), feet (arc length; for the keyline from
  * the joint) and sides (keyline; may be NULL) of every point at x, normalised units:
  * the feet projected from o->s (which keeps the objective's feet). */

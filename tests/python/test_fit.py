@@ -745,3 +745,56 @@ def test_discrete_distances_with_pruned_segments_match_brute_force(distance):
         r = el.fit(pts, distance=distance)
         assert r.distance == distance
         assert_distances_measured(r, L, rel=1e-12)
+
+
+def _elastica_sampled(seed, n, spacing):
+    """Points of a smooth elastica (k across 1, loops included) at uneven arc lengths or
+    sketched (dense, a gap, sparse), its curve and its end tangents."""
+    rng = np.random.default_rng(seed)
+    k = rng.uniform(0.3, 1.6)
+    L = rng.uniform(2, 6)
+    c = el.SmoothElastica(x0=0, y0=0, phi=rng.uniform(-1, 1), mu=rng.uniform(0.3, 2), k=k,
+                          q=rng.uniform(0, 3), length=L)
+    if spacing == "uneven":
+        s = np.sort(rng.uniform(0, L, n))
+        s[0], s[-1] = 0.0, L
+    else:
+        a = int(0.7 * n)
+        s = np.concatenate([np.linspace(0, 0.3 * L, a), np.linspace(0.45 * L, L, n - a)])
+    th = c.angle(np.array([0.0, L]))
+    return c.points(s), c, {"start_tangent": th[0], "end_tangent": th[1]}
+
+
+@pytest.mark.parametrize("seed", [1, 5, 9])
+def test_smooth_exact_on_uneven_and_sketched_points(seed):
+    """Noise-free uneven / sketched points of an elastica: the default fit is exact to
+    rounding, free and with both end tangents held. Main certified 30 of these 48 fits at
+    rms 3e-6 .. 3e-2 of the size: a foot resting on another pass of the curve than its
+    nearest point (fit.c, fit_run's report refits with the nearest feet)."""
+    for n in (20, 50, 200, 1000):
+        for spacing in ("uneven", "sketch"):
+            P, _, tangents = _elastica_sampled(seed, n, spacing)
+            size = np.sqrt(np.mean(np.sum((P - P.mean(0)) ** 2, 1)))
+            for cons in ({}, tangents):
+                r = el.fit(P, "smooth", constraints=cons)
+                assert r.status == 0
+                assert r.rms <= 1e-9 * size, (n, spacing, cons, r.rms / size)
+
+
+@pytest.mark.parametrize("seed", [2, 6, 11])
+def test_smooth_noisy_uneven_reaches_the_optimum_from_the_true_curve(seed):
+    """The same with noise of 1e-3 of the length: the default fit ends no higher than the
+    fit started from the true curve (the same optimum: to 1e-7 of its rms, the spread of
+    certified points; a worse local optimum is percents off). Main ended above it on the
+    1000 sketched points of these seeds (rms 0.0570, 0.00712, 0.0129 against 0.0526,
+    0.00704, 0.0120). Not yet reached (seeds 1 and 13 of 0..15, 1000 sketched): 0.0070
+    and 0.0100 against 0.0059 and 0.0052 (main: 0.0301 and 0.0393)."""
+    rng = np.random.default_rng(100 + seed)
+    for n in (200, 1000):
+        for spacing in ("uneven", "sketch"):
+            P, c, _ = _elastica_sampled(seed, n, spacing)
+            P = P + rng.normal(0, 1e-3 * c.length, P.shape)
+            r = el.fit(P, "smooth")
+            r0 = el.fit(P, "smooth", initial=c)
+            assert r.status == 0 and r0.status == 0
+            assert r.rms <= r0.rms * (1 + 1e-7), (n, spacing, r.rms, r0.rms)
