@@ -50,6 +50,16 @@ static void draw(unsigned long long *st, int family, double p1[2], double t1[2],
     t1[1] = sin(c);
 }
 
+/* The solver's normalised problem (p0 = 0, t0 = (0, 1), |p1| = 1) of draw()'s data. */
+static hprob normalised_problem(const double p1[2], const double t1[2], double sigma)
+{
+    hprob pr;
+    memset(&pr, 0, sizeof pr);
+    pr.P1 = p1[0]; pr.P2 = p1[1]; pr.V1 = t1[0]; pr.V2 = t1[1]; pr.Lmin = 1.0; pr.sigma = sigma;
+    el__hermite_set_case(&pr);
+    return pr;
+}
+
 START_TEST(tension_solutions_contain_every_scanned_root)
 {
     const int family = _i;
@@ -102,10 +112,7 @@ START_TEST(tension_roots_exact_and_equal_to_the_bisection)
     for (int t = 0; t < 200; t++) {
         double p1[2], t1[2], sigma;
         draw(&st, family, p1, t1, &sigma);
-        hprob pr;
-        memset(&pr, 0, sizeof pr);
-        pr.P1 = p1[0]; pr.P2 = p1[1]; pr.V1 = t1[0]; pr.V2 = t1[1]; pr.Lmin = 1.0; pr.sigma = sigma;
-        el__hermite_set_case(&pr);
+        hprob pr = normalised_problem(p1, t1, sigma);
         if (pr.hcase != 1) continue;
         scan_root r[MAXSCAN];
         const int n = dense_scan(&pr, sigma, NX_SET, r);
@@ -256,10 +263,7 @@ START_TEST(poly40_isolated_roots_match_plain_method)
         draw(&st, family, p1, t1, &sigma);
         if (t % 6 == 1) sigma = pow(10.0, test_uniform(&st, 1.5, 5.0));
         if (!(sigma > 0.0)) continue;
-        hprob pr;
-        memset(&pr, 0, sizeof pr);
-        pr.P1 = p1[0]; pr.P2 = p1[1]; pr.V1 = t1[0]; pr.V2 = t1[1]; pr.Lmin = 1.0; pr.sigma = sigma;
-        el__hermite_set_case(&pr);
+        hprob pr = normalised_problem(p1, t1, sigma);
         if (pr.hcase == 3) continue;
         double c[9];
         const int deg = el__hermite_poly40(&pr, c);
@@ -342,10 +346,7 @@ START_TEST(separatrix_chart_independent_of_the_guess)
     for (int t = 0; t < 100; t++) {
         double p1[2], t1[2], sigma;
         draw(&st, 5, p1, t1, &sigma);
-        hprob pr;
-        memset(&pr, 0, sizeof pr);
-        pr.P1 = p1[0]; pr.P2 = p1[1]; pr.V1 = t1[0]; pr.V2 = t1[1]; pr.Lmin = 1.0; pr.sigma = sigma;
-        el__hermite_set_case(&pr);
+        hprob pr = normalised_problem(p1, t1, sigma);
         el_hermite_analysis an;
         ck_assert_int_eq(el_hermite_analyse(p1, t1, sigma, &an), EL_OK);
         for (size_t i = 0; i < an.nroot; i++)
@@ -400,10 +401,7 @@ START_TEST(separatrix_cache_gives_the_plain_states)
         for (int t = 0; t < 60; t++) {
             double p1[2], t1[2], sigma;
             draw(&st, family, p1, t1, &sigma);
-            hprob pr;
-            memset(&pr, 0, sizeof pr);
-            pr.P1 = p1[0]; pr.P2 = p1[1]; pr.V1 = t1[0]; pr.V2 = t1[1]; pr.Lmin = 1.0; pr.sigma = sigma;
-            el__hermite_set_case(&pr);
+            hprob pr = normalised_problem(p1, t1, sigma);
             el_hermite_analysis an;
             ck_assert_int_eq(el_hermite_analyse(p1, t1, sigma, &an), EL_OK);
             for (size_t i = 0; i < an.nroot; i++)
