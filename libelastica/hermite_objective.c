@@ -543,8 +543,8 @@ static int sep_monotone_mid(const hprob *pr, int base, int fi, int b, double oth
  *   |(|F| - sigma) - target| decreases and, for a step above 1e-3 (1 + |w|), the midpoint
  *   lies between (sep_monotone_mid); else it is halved. Halved to the resolution of w,
  *   past a peak the parabola through the two slopes puts well short of the target, or
- *   after 60 evaluations (main's limit), there is no root on the stretch (the target lies
- *   beyond its hump or the chart's domain): main's Newton crept towards such a peak for
+ *   after 60 evaluations (the former damped Newton's limit), there is no root on the stretch (the target lies
+ *   beyond its hump or the chart's domain): that Newton crept towards such a peak for
  *   all its 60 steps (856 of the length bench's 139k calls);
  * - once points on both sides of the target are known the steps stay between them (no
  *   step over a hump to a neighbouring crossing): Newton's where it falls inside and at
@@ -552,7 +552,7 @@ static int sep_monotone_mid(const hprob *pr, int base, int fi, int b, double oth
  * - it stops where the error is at the rounding of sep_of's terms (sep_rounding), the step
  *   or the bracket at the resolution of w, or, within 4e-16 sigma, where a step no longer
  *   reduces the error (the noise of |F| - sigma: the rounding of kappa0' from (17)).
- *   Main stopped at 4e-16 sigma: next to a crossing |F| - sigma is many orders below
+ *   It stopped at 4e-16 sigma: next to a crossing |F| - sigma is many orders below
  *   sigma, and w, and f with it (~1e-7 at sigma |p1-p0|^2 ~ 100..1000), depended on the
  *   guess, so the root finder's |f| stalled above what the solver keeps.
  * Hand-written: GSL's bracketed solvers (brent) need the bracket first and discard the
@@ -625,7 +625,7 @@ static int sep_solve(const hprob *pr, int base, int fi, int b, double other, dou
  * length goes with ln(|F| - sigma), f moved by up to ~1e-10 (near-straight solutions at
  * sigma |p1-p0|^2 ~ 100..1000). Here |F| - sigma is exact by construction and the rounding
  * falls on (15), which f feels less: the largest difference between guesses in
- * test_hermite_tension.c drops from 8.9e-10 to 2.9e-10, and of main's t_aligned tension
+ * test_hermite_tension.c drops from 8.9e-10 to 2.9e-10, and of the former solver's t_aligned tension
  * solutions (seed 777, 3000 problems) 10 are lost instead of 16 (371 gained, 363 without).
  * Unchanged (EL_EDOM) where the refinement does not settle within 1e-9 of w. */
 static int sep_exact_state(const hprob *q, double target, double *w, hstate *st)
