@@ -543,9 +543,9 @@ static int sep_monotone_mid(const hprob *pr, int base, int fi, int b, double oth
  *   |(|F| - sigma) - target| decreases and, for a step above 1e-3 (1 + |w|), the midpoint
  *   lies between (sep_monotone_mid); else it is halved. Halved to the resolution of w,
  *   past a peak the parabola through the two slopes puts well short of the target, or
- *   after 60 evaluations (the former damped Newton's limit), there is no root on the stretch (the target lies
- *   beyond its hump or the chart's domain): that Newton crept towards such a peak for
- *   all its 60 steps (856 of the length bench's 139k calls);
+ *   after 60 evaluations (the former damped Newton's limit), there is no root on the
+ *   stretch (the target lies beyond its hump or the chart's domain): that Newton crept
+ *   towards such a peak for all its 60 steps (856 of the length bench's 139k calls);
  * - once points on both sides of the target are known the steps stay between them (no
  *   step over a hump to a neighbouring crossing): Newton's where it falls inside and at
  *   most halves the last, else the midpoint (Numerical Recipes' rtsafe);
