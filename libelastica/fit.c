@@ -209,11 +209,7 @@ static int curve_distances(fit_objective *ob, const double *x, double v[2][FIT_N
 {
     const size_t n = ob->n;
     const size_t nv[2] = {n, 0};
-    if (ob->map.model == FIT_SMOOTH) {
-        const double *V[2] = {NULL, NULL};
-        int st = fit_feet_distances(ob, x, d, fs, NULL);
-        return st ? st : fit_nearest_everywhere(ob, v, V, nv, branch_only, d, fs, NULL);
-    }
+    if (ob->map.model == FIT_SMOOTH) return fit_smooth_nearest(ob, x, v, branch_only, d, fs);
     double *buf = malloc(sizeof(double) * 2 * n);
     if (!buf) return EL_ENOMEM;
     fit_walk w;

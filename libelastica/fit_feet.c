@@ -167,6 +167,18 @@ int fit_feet_distances(fit_objective *o, const double *x, double *dist, double *
     return EL_OK;
 }
 
+/* Each point's distance to the smooth curve at x (v: its parameters, fit_map_eval) and
+ * its foot: Newton from the current feet (fit_feet_distances), then the nearest point
+ * anywhere on the curve (fit_nearest_everywhere; branch_only as there). */
+int fit_smooth_nearest(fit_objective *o, const double *x, double v[2][FIT_NP], int branch_only, double *d,
+                       double *fs)
+{
+    const double *V[2] = {NULL, NULL};
+    const size_t nv[2] = {o->n, 0};
+    const int st = fit_feet_distances(o, x, d, fs, NULL);
+    return st ? st : fit_nearest_everywhere(o, v, V, nv, branch_only, d, fs, NULL);
+}
+
 /*
  * The smooth orthogonal fit's first feet for the curve at x: each where that curve comes
  * nearest (loops, sparse points: not always near the point's place), so the fit starts
@@ -184,11 +196,9 @@ int fit_feet_start(fit_objective *o, const double *x)
     int st = fit_map_eval(&o->map, x, v, NULL);
     if (st) return st;
     for (size_t i = 0; i < o->n; i++) o->s[i] = o->t[i] * v[0][6];
-    const double *V[2] = {NULL, NULL};
-    const size_t nv[2] = {o->n, 0};
     double *d = o->rest, *fs = o->rest_foot;    /* the report's arrays (fit_run) */
     o->rest_ok = 0;
-    if (fit_feet_distances(o, x, d, fs, NULL) == EL_OK && fit_nearest_everywhere(o, v, V, nv, 1, d, fs, NULL) == EL_OK) {
+    if (fit_smooth_nearest(o, x, v, 1, d, fs) == EL_OK) {
         memcpy(o->s + 1, fs + 1, sizeof(double) * (o->n - 2));
         o->s[0] = 0.0;
         o->s[o->n - 1] = v[0][6];

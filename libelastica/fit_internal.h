@@ -188,6 +188,10 @@ static inline double fit_foot_step(double t, double e, double kappa, double rang
 }
 /* The feet's range [lo, hi]: the curve itself, or extended (the objective's). */
 void fit_feet_range(const fit_objective *o, double v[2][FIT_NP], int extended, double *lo, double *hi);
+/* Smooth: each point's distance and foot on the curve at x (v its parameters): Newton
+ * from the current feet, then the nearest point anywhere (fit_nearest_everywhere). */
+int fit_smooth_nearest(fit_objective *o, const double *x, double v[2][FIT_NP], int branch_only, double *d,
+                       double *fs);
 /* Smooth orthogonal, one curve, o->rest and o->rest_foot set (fit.c's buffers): the first
  * feet of a fit from x, each where the curve at x comes nearest (else at t_i L); an error
  * only when that curve cannot be evaluated. */

@@ -332,8 +332,9 @@ END_TEST
  * crossing itself (the scan's guess) and from the previous sample's w (the solver's)
  * gives the state or fails alike, and the same f and L, on every crossing of (40) of
  * family 5's problems (aligned tangents, sigma |p1-p0|^2 in [100, 1000]), NY samples per
- * side from |F| - sigma = 1e-3 sigma down to 1e-300 sigma. The former damped Newton (f540936) fails the first
- * check here; on 200 other problems of the family its f differs by up to 1.2e-5 (Newton's
+ * side from |F| - sigma = 1e-3 sigma down to 1e-300 sigma. The former damped Newton
+ * (f540936) fails the first check here; on 200 other problems of the family its f
+ * differs by up to 1.2e-5 (Newton's
  * stop at 4e-16 sigma) and 4 samples succeed from one guess only (a step over a hump to a
  * neighbouring crossing). Now: largest difference 2.9e-10 here, 1.4e-9 on those 200 (the
  * resolution of kappa0 next to the saddle: both ends of a near-straight solution lie
