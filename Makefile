@@ -134,7 +134,7 @@ FUZZ_DEPS  := $(FUZZ_SRC) fuzz/fuzz.h fuzz/entries.def
 FUZZ_ENV   := ASAN_OPTIONS=allocator_may_return_null=1:detect_leaks=1 \
               LSAN_OPTIONS=suppressions=$(CURDIR)/fuzz/lsan-suppressions \
               UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
-# clang 14 takes minutes over bspline_approx.c's unrolled loops with pointer-overflow checks:
+# clang 14 takes minutes over bspline_approx_fit.c's unrolled loops with pointer-overflow checks:
 # the libFuzzer build leaves those to the driver's gcc build
 CLANG_SAN  := -fno-sanitize=pointer-overflow
 FUZZ_SLICE ?= 0.1

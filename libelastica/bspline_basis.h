@@ -1,6 +1,6 @@
 /*
  * B-spline basis functions shared by bspline.c (evaluation, interpolation) and
- * bspline_approx.c (the certified approximation of an elastica), static inline so
+ * bspline_approx_fit.c (the certified approximation of an elastica), static inline so
  * that the approximation's loops keep them inlined and unrolled for p = 3.
  * Piegl & Tiller, The NURBS Book, A2.1/A2.2.
  */
