@@ -27,7 +27,8 @@ typedef struct {
 
 typedef struct {
     const hprob *pr;
-    double Lt, tlo, thi, thi_trace;   /* t = asinh(sigma): seed lines in [tlo, thi]; traces end past thi_trace */
+    double Lt, tlo, thi, thi_trace;   /* t = asinh(sigma): seed lines in [tlo, thi]; traces end past thi_trace with L < Lt */
+    double thi_bound;                 /* and past thi_bound (the sigma bound, sigma_range) whatever L */
     cpt *seed;
     int nseed;
     char *visited;

@@ -224,6 +224,26 @@ START_TEST(length_mode_follows_C_where_its_chart_folds)
 }
 END_TEST
 
+/* Solutions beyond SIGMA_TRACE_MAX (sigma |p1 - p0|^2 = 1.36e6, 1.07e6, 3.44e6: 3-piece
+ * chains of near-aligned ends, L / |p1 - p0| = 1.0097, 1.0055, 1.0031; the solution-set
+ * dump's l_aligned 4, 44 and 139 of 1000, seed 12345) on curves that leave the trace
+ * range with L above Lt: the traces go on to the crossings, which they found only where
+ * the step that passed SIGMA_TRACE_MAX happened to hold them (none of the three). */
+START_TEST(length_mode_follows_C_past_the_trace_range_while_L_exceeds_Lt)
+{
+    static const length_case c[] = {
+        {{0.89558674153421003, 0.44488693888238168}, {4.5586749655703773, 2.0892657898915625},
+         {0.89672444258603534, 0.44258928372562784}, 5.0632777981325807, 5.1482610070863224},
+        {{0.1112464839554563, 0.99379284552040748}, {0.46829812370153823, 4.7783780348843141},
+         {0.091235319865043407, 0.99582936109010323}, 4.8275016529842389, 2.1037584772562927},
+        {{-0.25392278803890062, 0.96722449189138693}, {-0.79347057509604646, 2.9014903480004177},
+         {-0.30725806880809559, 0.95162622870133184}, 3.017205804062824, 4.4392372932862694},
+    };
+    for (size_t i = 0; i < sizeof c / sizeof c[0]; i++)
+        ck_assert_msg(finds_length_solution(&c[i]), "problem %zu: no solution with kappa0 %g", i, c[i].kappa0);
+}
+END_TEST
+
 /* el__hlen_sinh, the tracer's fast sinh, against libm's over its whole range: both sides
  * of its switch at 1/2, tiny and huge arguments, the overflow beyond 710 */
 START_TEST(length_mode_fast_sinh_matches_libm)
@@ -302,6 +322,7 @@ int main(void)
     tcase_add_test(tc, length_mode_finds_the_solutions_a_bent_predictor_lost);
     tcase_add_test(tc, length_mode_halves_a_bracket_along_C);
     tcase_add_test(tc, length_mode_follows_C_where_its_chart_folds);
+    tcase_add_test(tc, length_mode_follows_C_past_the_trace_range_while_L_exceeds_Lt);
     tcase_add_test(tc, length_mode_fast_sinh_matches_libm);
     tcase_add_test(tc, length_mode_seed_lines_find_every_tension_root);
     suite_add_tcase(s, tc);
