@@ -27,7 +27,8 @@ typedef struct {
 
 typedef struct {
     const hprob *pr;
-    double Lt, tlo, thi, thi_trace;   /* t = asinh(sigma): seed lines in [tlo, thi]; traces end past thi_trace */
+    double Lt, tlo, thi, thi_trace;   /* t = asinh(sigma): seed lines in [tlo, thi]; traces end past thi_trace with L < Lt */
+    double thi_bound;                 /* and past thi_bound (the sigma bound, sigma_range) whatever L */
     cpt *seed;
     int nseed;
     char *visited;
@@ -35,8 +36,13 @@ typedef struct {
     double long_curves;   /* a trace ends where L passes long_curves Lt, increasing */
     double line_power;    /* the seed lines' placement (seeds) */
     int lean_seeds;       /* seed lines by el__hermite_seed_tension (else el__hermite_solve_tension) */
+    int retrace;          /* follow a trace through seeds other traces visited (step_events) */
     hrootlist *out;
 } tracer;
+
+/* el__hermite_solve_length with every trace followed through the seeds other traces
+ * visited (step_events' plain counterpart, for test_hermite_length.c) */
+int el__hlen_solve_retracing(hprob *pr, double Lt, int nl, int ns, hrootlist *out);
 
 /* sinh to a few ulps, faster than libm's (the tracer's coordinates are asinh of the chart's) */
 double el__hlen_sinh(double x);

@@ -129,6 +129,43 @@ START_TEST(length_mode_keeps_every_solution_of_a_dense_search)
 }
 END_TEST
 
+/* A trace ends at a seed another trace visited (step_events) against its plain
+ * counterpart, every trace followed through to its end (el__hlen_solve_retracing):
+ * the same solutions both ways over 1500 random problems of the five kinds of
+ * random_problem (Lt - 1 from 1e-3 to 7). */
+START_TEST(length_mode_stops_at_seeds_other_traces_visited)
+{
+    unsigned long long st = 1618;
+    size_t n = 0;
+    for (int i = 0; i < 1500; i++) {
+        double Lt;
+        hprob pr = random_problem(&st, i % 5, &Lt);
+        pr.Lmin = Lt;
+        hprob pq = pr;
+        hrootlist a = {NULL, 0, 0}, ref = {NULL, 0, 0};
+        ck_assert_int_eq(el__hermite_solve_length(&pr, Lt, 6, 12, &a), EL_OK);
+        ck_assert_int_eq(el__hlen_solve_retracing(&pq, Lt, 6, 12, &ref), EL_OK);
+        for (size_t j = 0; j < ref.n; j++) {
+            int found = 0;
+            for (size_t k = 0; k < a.n && !found; k++) found = same_root(&a.v[k], &ref.v[j]);
+            ck_assert_msg(found, "problem %d (kind %d, Lt %.17g): lost sigma %.9g kappa0 %.9g", i, i % 5, Lt,
+                          ref.v[j].sigma, ref.v[j].st.k0);
+        }
+        for (size_t j = 0; j < a.n; j++) {
+            int found = 0;
+            for (size_t k = 0; k < ref.n && !found; k++) found = same_root(&ref.v[k], &a.v[j]);
+            ck_assert_msg(found, "problem %d (kind %d, Lt %.17g): extra sigma %.9g kappa0 %.9g", i, i % 5, Lt,
+                          a.v[j].sigma, a.v[j].st.k0);
+        }
+        n += a.n;
+        free(a.v);
+        free(ref.v);
+    }
+    fprintf(stderr, "length_mode_stops_at_seeds_other_traces_visited: %zu solutions\n", n);
+    ck_assert_uint_gt(n, 3000);
+}
+END_TEST
+
 /* Two problems on which the predictor bent by the curvature of C lost a solution the
  * tangent predictor found, when first tried (the step's crossing Newton reached the
  * neighbour of a close pair and took it for the bracketed one; a trace left the range
@@ -224,6 +261,26 @@ START_TEST(length_mode_follows_C_where_its_chart_folds)
 }
 END_TEST
 
+/* Solutions beyond SIGMA_TRACE_MAX (sigma |p1 - p0|^2 = 1.36e6, 1.07e6, 3.44e6: 3-piece
+ * chains of near-aligned ends, L / |p1 - p0| = 1.0097, 1.0055, 1.0031; the solution-set
+ * dump's l_aligned 4, 44 and 139 of 1000, seed 12345) on curves that leave the trace
+ * range with L above Lt: the traces go on to the crossings, which they found only where
+ * the step that passed SIGMA_TRACE_MAX happened to hold them (none of the three). */
+START_TEST(length_mode_follows_C_past_the_trace_range_while_L_exceeds_Lt)
+{
+    static const length_case c[] = {
+        {{0.89558674153421003, 0.44488693888238168}, {4.5586749655703773, 2.0892657898915625},
+         {0.89672444258603534, 0.44258928372562784}, 5.0632777981325807, 5.1482610070863224},
+        {{0.1112464839554563, 0.99379284552040748}, {0.46829812370153823, 4.7783780348843141},
+         {0.091235319865043407, 0.99582936109010323}, 4.8275016529842389, 2.1037584772562927},
+        {{-0.25392278803890062, 0.96722449189138693}, {-0.79347057509604646, 2.9014903480004177},
+         {-0.30725806880809559, 0.95162622870133184}, 3.017205804062824, 4.4392372932862694},
+    };
+    for (size_t i = 0; i < sizeof c / sizeof c[0]; i++)
+        ck_assert_msg(finds_length_solution(&c[i]), "problem %zu: no solution with kappa0 %g", i, c[i].kappa0);
+}
+END_TEST
+
 /* el__hlen_sinh, the tracer's fast sinh, against libm's over its whole range: both sides
  * of its switch at 1/2, tiny and huge arguments, the overflow beyond 710 */
 START_TEST(length_mode_fast_sinh_matches_libm)
@@ -299,9 +356,11 @@ int main(void)
     tcase_set_timeout(tc, 300);
     tcase_add_test(tc, length_mode_sigma_bound_holds_for_tension_solutions);
     tcase_add_test(tc, length_mode_keeps_every_solution_of_a_dense_search);
+    tcase_add_test(tc, length_mode_stops_at_seeds_other_traces_visited);
     tcase_add_test(tc, length_mode_finds_the_solutions_a_bent_predictor_lost);
     tcase_add_test(tc, length_mode_halves_a_bracket_along_C);
     tcase_add_test(tc, length_mode_follows_C_where_its_chart_folds);
+    tcase_add_test(tc, length_mode_follows_C_past_the_trace_range_while_L_exceeds_Lt);
     tcase_add_test(tc, length_mode_fast_sinh_matches_libm);
     tcase_add_test(tc, length_mode_seed_lines_find_every_tension_root);
     suite_add_tcase(s, tc);
