@@ -230,26 +230,44 @@ static double segment_signed(const double *A, const double *B, const double *P, 
 }
 
 /*
- * A bound that leaves out segments without changing any result: a segment A-B of
- * length at most lmax has no point nearer to P than |P - A| - lmax (triangle
- * inequality), so one with |P - A|^2 > beyond_sq(d, lmax) is farther than d by 1e-9 of
- * d + lmax, far beyond the rounding of segment_distance2 (~1e-15): its squared distance
- * would compare as larger than d^2, and leaving it out changes neither the nearest
- * segment nor the order in which ties are met.
+ * The nearest of the segments j0 .. j1 - 1 of the polygon V to P when nearer than
+ * sqrt(*bd) (the first of equal ones): *bd (squared), *bj, *bt updated. Segments are
+ * left out without changing any result: one A-B of length at most lmax has no point
+ * nearer to P than |P - A| - lmax (triangle inequality), so one with |P - A| beyond
+ * *r = (sqrt(*bd) + lmax)(1 + 1e-9) (the caller's first reach; it shrinks with *bd)
+ * is farther than sqrt(*bd) by 1e-9 of it, far beyond the rounding of
+ * segment_distance2 (~1e-15): its squared distance would compare as larger, and
+ * leaving it out changes neither the nearest segment nor the order in which ties are
+ * met. A vertex at D > *r leaves out floor((D - *r) / lmax) segments from it: vertex
+ * j + m lies within m lmax of vertex j, so for m <= (D - *r) / lmax - 1 it lies beyond
+ * *r + lmax, a whole segment past the test.
  */
-static inline double beyond_sq(double d, double lmax)
+static inline void nearest_segment(const double *V, long j0, long j1, const double *P, double lmax, double *r,
+                                   double *bd, long *bj, double *bt)
 {
-    const double r = (d + lmax) * (1.0 + 1e-9);
-    return r * r;
+    double r2 = *r * *r;
+    for (long j = j0; j < j1;) {
+        const double dx = P[0] - V[2 * j], dy = P[1] - V[2 * j + 1], D2 = dx * dx + dy * dy;
+        if (D2 > r2) {
+            const double q = (sqrt(D2) - *r) / lmax;     /* NaN: one segment */
+            j += q >= 2.0 ? (q < (double)(j1 - j) ? (long)q : j1 - j) : 1;
+            continue;
+        }
+        double t;
+        const double d2 = segment_distance2(V + 2 * j, V + 2 * j + 2, P, &t);
+        if (d2 < *bd) {
+            *bd = d2; *bj = j; *bt = t;
+            const double rn = (sqrt(d2) + lmax) * (1.0 + 1e-9);
+            if (rn < *r) { *r = rn; r2 = rn * rn; }
+        }
+        j++;
+    }
 }
 
-static inline int segment_beyond(const double *A, const double *P, double r2)
-{
-    const double dx = P[0] - A[0], dy = P[1] - A[1];
-    return dx * dx + dy * dy > r2;
-}
+/* The reach of nearest_segment for the distance d. */
+static inline double reach_of(double d, double lmax) { return (d + lmax) * (1.0 + 1e-9); }
 
-/* The longest segment of the polygon of nv vertices (a bound for beyond_sq). */
+/* The longest segment of the polygon of nv vertices (nearest_segment's lmax). */
 static double longest_segment(const double *V, size_t nv)
 {
     double l2 = 0.0;
@@ -325,13 +343,8 @@ void fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, d
             const double span = ceil(2.0 * 1.4142135623730951 * d / h) + 1.0;
             const long reach = kmax * d <= 0.1 ? 1 : span <= (double)(last + 1) ? (long)span : last + 1;
             const long lo = centre - reach < 0 ? 0 : centre - reach, hi = centre + reach > last ? last : centre + reach;
-            double r2 = beyond_sq(d, lmax);
-            for (long seg = lo; seg <= hi; seg++) {
-                if (segment_beyond(V + 2 * seg, P, r2)) continue;
-                double t;
-                const double d2 = segment_distance2(V + 2 * seg, V + 2 * seg + 2, P, &t);
-                if (d2 < bd) { bd = d2; best = seg; bt = t; r2 = beyond_sq(sqrt(bd), lmax); }
-            }
+            double r = reach_of(d, lmax);
+            nearest_segment(V, lo, hi + 1, P, lmax, &r, &bd, &best, &bt);
         }
         dist[g] = segment_signed(V + 2 * best, V + 2 * best + 2, P, bt);
         foot[g] = h * ((double)best + bt);
@@ -344,13 +357,13 @@ void fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, d
  * The feet above are the nearest points near each point's place along the data (the
  * fit's own foot, or its vertex). A curve that passes close to itself (a loop) can come
  * nearer to a point somewhere else; the distance to the curve is the nearest of all.
- * The curves are cut into pieces of arc length l (about twice the median distance, at
+ * Smooth curves (the polygons': polygon_nearest_everywhere below) are cut into pieces of arc length l (about twice the median distance, at
  * least 1/128 of the length); every point of a piece lies within l/2 of the midpoint of
  * its end points (triangle inequality), so a piece can hold a nearer point only if that
  * disk comes within the point's distance. The disks go into a hash grid of cells of at
  * least their diameter; each point visits the cells its distance reaches, and only the
  * pieces away from its own foot whose disk is near enough are searched (Newton's method
- * from the piece's middle; the polygon's segments). O(n) work for ordinary data.
+ * from the piece's middle). O(n) work for ordinary data.
  */
 enum { MAX_PIECES = 128, HASH_BITS = 11, SEP_LEVELS = 4 };
 /* The grid's entries: a piece's disk (diameter 2 r <= cell, fit_nearest_everywhere) spans
@@ -360,7 +373,6 @@ enum { GRID_ENTRIES = 9 * 2 * MAX_PIECES };
 
 typedef struct piece {
     double cx, cy, r, s0, s1;   /* disk, arc range on its curve */
-    double lmax;                /* polygon: its longest segment (beyond_sq) */
     int curve;
 } piece;
 
@@ -385,10 +397,11 @@ static long cell_index(double x, double cell)
     return q > 0.0 ? (long)lim : -(long)lim;
 }
 
-static unsigned cell_hash(long ix, long iy)
+/* The bucket of cell (ix, iy) among mask + 1 (a power of two) */
+static size_t cell_hash(long ix, long iy, size_t mask)
 {
     const unsigned long h = (unsigned long)ix * 73856093UL ^ (unsigned long)iy * 19349663UL;
-    return (unsigned)(h & ((1UL << HASH_BITS) - 1));
+    return (size_t)(h & mask);
 }
 
 /* 0: the grid is full (impossible by GRID_ENTRIES' bound; the caller's EL_EINTERNAL) */
@@ -399,7 +412,7 @@ static int grid_add(grid *g, const piece *p, int id)
     for (long ix = x0; ix <= x1; ix++)
         for (long iy = y0; iy <= y1; iy++) {
             if (g->used >= GRID_ENTRIES) return 0;
-            const unsigned h = cell_hash(ix, iy);
+            const unsigned h = cell_hash(ix, iy, (1UL << HASH_BITS) - 1);
             g->item[g->used] = id;
             g->next[g->used] = g->head[h];
             g->head[h] = g->used++;
@@ -407,51 +420,21 @@ static int grid_add(grid *g, const piece *p, int id)
     return 1;
 }
 
-/* The points of a curve at arc lengths s_j = len j / m, j = 0..m (smooth: one
- * evaluation of the sorted samples; discrete: along the polygon V). */
-static int curve_points(const fit_objective *o, const double *v, const double *V, size_t nv, double len,
-                        int m, double *xy)
+/* The points of a smooth curve at arc lengths s_j = len j / m, j = 0..m (one
+ * evaluation of the sorted samples). */
+static int curve_points(const double *v, double len, int m, double *xy)
 {
     double s[MAX_PIECES + 1];
     for (int j = 0; j <= m; j++) s[j] = len * j / m;
-    if (o->map.model == FIT_SMOOTH) {
-        el_smooth_params p;
-        int st = fit_to_smooth(v, &p);
-        return st ? st : el_smooth_eval(&p, (size_t)m + 1, s, xy, NULL, NULL);
-    }
-    const double h = v[2];
-    for (int k = 0; k <= m; k++) {
-        size_t j = (size_t)fmin(fmax(floor(s[k] / h), 0.0), (double)nv - 2.0);
-        const double t = fmin(fmax(s[k] / h - (double)j, 0.0), 1.0);
-        xy[2 * k] = V[2 * j] + t * (V[2 * j + 2] - V[2 * j]);
-        xy[2 * k + 1] = V[2 * j + 1] + t * (V[2 * j + 3] - V[2 * j + 1]);
-    }
-    return EL_OK;
+    el_smooth_params p;
+    int st = fit_to_smooth(v, &p);
+    return st ? st : el_smooth_eval(&p, (size_t)m + 1, s, xy, NULL, NULL);
 }
 
-/* The nearest point of piece p to P: signed distance (+ left of the curve's own
- * direction) and arc length. The polygon's segments farther than the distance so far,
- * dnow, are left out (beyond_sq): the nearest of the others is the piece's nearest
- * whenever that is nearer than dnow (else *d may be HUGE_VAL, also not nearer). */
-static int piece_nearest(const fit_objective *o, const double *v, const double *V, size_t nv,
-                         const piece *p, const double *P, int branch_only, double dnow, double *d, double *s)
+/* The nearest point of piece p of a smooth curve to P: signed distance (+ left of the
+ * curve's own direction) and arc length. */
+static int piece_nearest(const double *v, const piece *p, const double *P, int branch_only, double *d, double *s)
 {
-    if (o->map.model == FIT_DISCRETE) {
-        const double h = v[2], r2 = beyond_sq(dnow, p->lmax);
-        const long j0 = (long)floor(p->s0 / h), j1 = (long)ceil(p->s1 / h);
-        double best = HUGE_VAL, bt = 0.0;
-        long bj = -1;
-        for (long j = j0 < 0 ? 0 : j0; j < j1 && j <= (long)nv - 2; j++) {
-            if (segment_beyond(V + 2 * j, P, r2)) continue;
-            double t;
-            const double d2 = segment_distance2(V + 2 * j, V + 2 * j + 2, P, &t);
-            if (d2 < best) { best = d2; bj = j; bt = t; }
-        }
-        if (bj < 0) { *d = HUGE_VAL; return EL_OK; }
-        *d = segment_signed(V + 2 * bj, V + 2 * bj + 2, P, bt);
-        *s = h * ((double)bj + bt);
-        return EL_OK;
-    }
     el_smooth_params sp;
     int st = fit_to_smooth(v, &sp);
     if (st) return st;
@@ -491,21 +474,17 @@ static inline int disk_reaches(const piece *p, const double *P, double d)
  * neighbourhood was searched). */
 typedef struct own_foot {
     int curve;
-    double s, d;
+    double s;
 } own_foot;
 
-static int consider(const fit_objective *o, double v[2][FIT_NP], const double *V[2], const size_t nv[2],
-                    const piece *p, const double *P, const own_foot *f0, int branch_only, size_t i, double *dist,
-                    double *foot, int *side)
+static int consider(double v[2][FIT_NP], const piece *p, const double *P, const own_foot *f0, int branch_only,
+                    size_t i, double *dist, double *foot, int *side)
 {
-    /* pieces already searched: smooth, those at the foot (the distance is convex there);
-     * the polygon, those inside the stretch fit_polygon_distances searched */
-    const double near = o->map.model == FIT_SMOOTH ? 2.0 * p->r : 2.0 * 1.4142135623730951 * f0->d;
-    if (p->curve == f0->curve && (o->map.model == FIT_SMOOTH
-                                  ? p->s1 >= f0->s - near && p->s0 <= f0->s + near
-                                  : p->s0 >= f0->s - near && p->s1 <= f0->s + near)) return EL_OK;
+    /* pieces already searched: those at the foot (the distance is convex there) */
+    const double near = 2.0 * p->r;
+    if (p->curve == f0->curve && p->s1 >= f0->s - near && p->s0 <= f0->s + near) return EL_OK;
     double d = HUGE_VAL, s = 0.0;
-    int st = piece_nearest(o, v[p->curve], V[p->curve], nv[p->curve], p, P, branch_only, fabs(dist[i]), &d, &s);
+    int st = piece_nearest(v[p->curve], p, P, branch_only, &d, &s);
     if (!st && fabs(d) < fabs(dist[i])) {
         dist[i] = d; foot[i] = s;
         if (side) side[i] = p->curve;
@@ -525,21 +504,28 @@ static int feet_are_nearest(const fit_objective *o, const double *v, const doubl
                             const double *dist)
 {
     if (o->map.ncurves != 1) return 0;
-    double tmin = HUGE_VAL, tmax = -HUGE_VAL;
     if (o->map.model == FIT_DISCRETE) {
-        /* the segments' directions, unwrapped; the span only grows, so the walk stops
-         * once it exceeds pi/2 */
-        double prev = 0.0;
+        /* the segments' directions in a cone of at most pi/2, from lo counter-clockwise
+         * to hi: a direction counter-clockwise of hi (cross > 0) widens it there, one
+         * clockwise of lo at the other side; consecutive directions less than pi/2 apart
+         * (dot > 0, else not proved), so each new one lies within pi of the cone and the
+         * cross products tell its side without angles */
+        double lo[2] = {0.0, 0.0}, hi[2] = {0.0, 0.0}, pr[2] = {0.0, 0.0};
         for (size_t j = 0; j + 1 < nv; j++) {
-            double t = atan2(V[2 * j + 3] - V[2 * j + 1], V[2 * j + 2] - V[2 * j]);
-            if (j > 0) t += 2.0 * M_PI * nearbyint((prev - t) / (2.0 * M_PI));
-            prev = t;
-            tmin = fmin(tmin, t); tmax = fmax(tmax, t);
-            if (tmax - tmin > 0.5 * M_PI) return 0;
+            const double u[2] = {V[2 * j + 2] - V[2 * j], V[2 * j + 3] - V[2 * j + 1]};
+            if (j > 0) {
+                if (!(pr[0] * u[0] + pr[1] * u[1] > 0.0)) return 0;
+                if (hi[0] * u[1] - hi[1] * u[0] > 0.0) { hi[0] = u[0]; hi[1] = u[1]; }
+                else if (lo[0] * u[1] - lo[1] * u[0] < 0.0) { lo[0] = u[0]; lo[1] = u[1]; }
+                if (!(lo[0] * hi[1] - lo[1] * hi[0] >= 0.0 && lo[0] * hi[0] + lo[1] * hi[1] >= 0.0)) return 0;
+            } else {
+                lo[0] = hi[0] = u[0]; lo[1] = hi[1] = u[1];
+            }
+            pr[0] = u[0]; pr[1] = u[1];
         }
-        return tmax - tmin <= 0.5 * M_PI;
+        return 1;
     }
-    double dmax = 0.0, kmax = 0.0;
+    double dmax = 0.0, kmax = 0.0, tmin = HUGE_VAL, tmax = -HUGE_VAL;
     for (size_t i = 0; i < o->n; i++) dmax = fmax(dmax, fabs(dist[i]));
     enum { M = 129 };
     double s[M], th[M], ka[M];
@@ -555,21 +541,135 @@ static int feet_are_nearest(const fit_objective *o, const double *v, const doubl
     return tmax - tmin <= 0.5 * M_PI && kmax * dmax <= 0.1;
 }
 
+/* A typical distance: the mean |d| of a spread sample of the n distances. */
+static double mean_distance(const double *dist, size_t n)
+{
+    const size_t step = n > 1024 ? n / 1024 : 1;
+    size_t cnt = 0;
+    double sum = 0.0;
+    for (size_t i = 0; i < n; i += step, cnt++) sum += fabs(dist[i]);
+    return sum / (double)cnt;
+}
+
+/*
+ * The discrete model's search elsewhere (fit_nearest_everywhere): each point's own
+ * search, fit_polygon_distances, covered the segments within arc length 2 sqrt 2 d of
+ * its foot (or proved them farther, d kappa <= 0.1); every other segment that can come
+ * nearer than d has its first vertex within d + lmax of the point (nearest_segment).
+ * The polygons are cut into runs of consecutive segments whose first vertices share a
+ * grid cell, bucketed by a hash of the cell (counting sort); a point visits the cells
+ * within that reach (every run when they outnumber the segments) and searches the runs
+ * there outside its own stretch. Exact (tests/c/test_fit_nearest.c: against every
+ * segment); O(n) for ordinary data.
+ */
+typedef struct polygon_query {
+    const double *P;
+    int own;                /* the point's curve, its stretch's segments x0 .. x1 - 1 */
+    long x0, x1;
+    double lmax, r, bd, bt; /* nearest_segment's; best: segment bj of curve bc */
+    long bj;
+    int bc;
+} polygon_query;
+
+/* The nearest segment of count runs ru (curve, first segment, end) to q->P, outside the
+ * point's own stretch. */
+static void search_runs(const double *V[2], const long *ru, size_t count, polygon_query *q)
+{
+    for (size_t e = 0; e < count; e++, ru += 3) {
+        const int c = (int)ru[0];
+        const long j0 = ru[1], j1 = ru[2];
+        const double was = q->bd;
+        if (c == q->own && q->x0 < q->x1) {
+            nearest_segment(V[c], j0, j1 < q->x0 ? j1 : q->x0, q->P, q->lmax, &q->r, &q->bd, &q->bj, &q->bt);
+            nearest_segment(V[c], j0 > q->x1 ? j0 : q->x1, j1, q->P, q->lmax, &q->r, &q->bd, &q->bj, &q->bt);
+        } else {
+            nearest_segment(V[c], j0, j1, q->P, q->lmax, &q->r, &q->bd, &q->bj, &q->bt);
+        }
+        if (q->bd < was) q->bc = c;
+    }
+}
+
+static int polygon_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const double *V[2],
+                                      const size_t nv[2], double *dist, double *foot, int *side)
+{
+    const int nc = o->map.ncurves;
+    long ns[2] = {0, 0};           /* segments of each curve */
+    double lmax = 0.0;
+    for (int c = 0; c < nc; c++) {
+        if (nv[c] < 2) continue;
+        ns[c] = (long)nv[c] - 1;
+        const double l = longest_segment(V[c], nv[c]);
+        if (l > lmax) lmax = l;
+    }
+    const size_t nseg = (size_t)(ns[0] + ns[1]);
+    if (nseg == 0) return EL_OK;
+    const double cell = 2.0 * fmax(mean_distance(dist, o->n), lmax);
+    size_t nb = 1;
+    while (nb < nseg) nb *= 2;
+    /* the runs (curve, first segment, end) in order, their buckets; then sorted by bucket */
+    size_t *start = calloc(nb + 1, sizeof(size_t)), *key = malloc(sizeof(size_t) * nseg);
+    long *run = malloc(sizeof(long) * 3 * nseg), *sorted = malloc(sizeof(long) * 3 * nseg);
+    if (!start || !key || !run || !sorted) { free(start); free(key); free(run); free(sorted); return EL_ENOMEM; }
+    size_t nr = 0;
+    for (int c = 0; c < nc; c++) {
+        long ix = 0, iy = 0;
+        for (long j = 0; j < ns[c]; j++) {
+            const long jx = cell_index(V[c][2 * j], cell), jy = cell_index(V[c][2 * j + 1], cell);
+            if (j > 0 && jx == ix && jy == iy) { run[3 * nr - 1]++; continue; }
+            ix = jx; iy = jy;
+            run[3 * nr] = c; run[3 * nr + 1] = j; run[3 * nr + 2] = j + 1;
+            key[nr] = cell_hash(ix, iy, nb - 1);
+            start[key[nr] + 1]++;
+            nr++;
+        }
+    }
+    for (size_t b = 0; b < nb; b++) start[b + 1] += start[b];
+    for (size_t e = 0; e < nr; e++)      /* start[b] moves to bucket b's end */
+        memcpy(sorted + 3 * start[key[e]]++, run + 3 * e, sizeof(long) * 3);
+    for (size_t b = nb; b > 0; b--) start[b] = start[b - 1];
+    start[0] = 0;
+    for (size_t i = 0; i < o->n; i++) {
+        const double d0 = fabs(dist[i]);
+        if (!(d0 > 0.0)) continue;
+        double P[2];
+        point(o, i, P);
+        polygon_query q = {P, side ? side[i] : 0, 0, 0, lmax, reach_of(d0, lmax), HUGE_VAL, 0.0, -1, 0};
+        /* the stretch: segments j with j h >= foot - 2 sqrt 2 d and (j + 1) h <= foot + 2 sqrt 2 d */
+        const double h = v[q.own][2], span = 2.0 * 1.4142135623730951 * d0;
+        q.x0 = (long)ceil(fit_clamp((foot[i] - span) / h, 0.0, (double)ns[q.own]));
+        q.x1 = (long)floor(fit_clamp((foot[i] + span) / h, 0.0, (double)ns[q.own]));
+        const long cx0 = cell_index(P[0] - q.r, cell), cx1 = cell_index(P[0] + q.r, cell);
+        const long cy0 = cell_index(P[1] - q.r, cell), cy1 = cell_index(P[1] + q.r, cell);
+        if ((double)(cx1 - cx0 + 1) * (double)(cy1 - cy0 + 1) > (double)nr) {
+            search_runs(V, run, nr, &q);     /* far: every run */
+        } else {
+            for (long ix = cx0; ix <= cx1; ix++)
+                for (long iy = cy0; iy <= cy1; iy++) {
+                    const size_t bk = cell_hash(ix, iy, nb - 1);
+                    search_runs(V, sorted + 3 * start[bk], start[bk + 1] - start[bk], &q);
+                }
+        }
+        if (q.bj < 0) continue;
+        const double d = segment_signed(V[q.bc] + 2 * q.bj, V[q.bc] + 2 * q.bj + 2, P, q.bt);
+        if (fabs(d) < d0) {
+            dist[i] = d;
+            foot[i] = v[q.bc][2] * ((double)q.bj + q.bt);
+            if (side) side[i] = q.bc;
+        }
+    }
+    free(start); free(key); free(run); free(sorted);
+    return EL_OK;
+}
+
 int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const double *V[2],
                            const size_t nv[2], int branch_only, double *dist, double *foot, int *side)
 {
     const int nc = o->map.ncurves;
     const size_t n = o->n;
     if (feet_are_nearest(o, v[0], V[0], nv[0], dist)) return EL_OK;
-    double len[2] = {0.0, 0.0}, dmed = 0.0;
-    for (int c = 0; c < nc; c++)
-        len[c] = o->map.model == FIT_SMOOTH ? v[c][6] : v[c][2] * (double)(nv[c] - 1);
-    {   /* a typical distance: the mean |d| of a spread sample */
-        const size_t step = n > 1024 ? n / 1024 : 1;
-        size_t cnt = 0;
-        for (size_t i = 0; i < n; i += step, cnt++) dmed += fabs(dist[i]);
-        dmed /= (double)cnt;
-    }
+    if (o->map.model == FIT_DISCRETE) return polygon_nearest_everywhere(o, v, V, nv, dist, foot, side);
+    const double len[2] = {v[0][6], nc > 1 ? v[1][6] : 0.0};
+    const double dmed = mean_distance(dist, n);
     double dmax = 0.0;
     for (size_t i = 0; i < n; i++)
         if (fabs(dist[i]) > dmax) dmax = fabs(dist[i]);     /* fmax(dmax, |d|), not a call */
@@ -584,14 +684,13 @@ int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const do
         first[c] = np;
         if (!(len[c] > 0.0)) continue;
         const int m = (int)fmin(fmax(ceil(len[c] / (2.0 * dmed + 1e-300)), 8.0), (double)MAX_PIECES);
-        const double lmax = o->map.model == FIT_DISCRETE ? longest_segment(V[c], nv[c]) : 0.0;
         double ends[2 * (MAX_PIECES + 1)];
-        if ((st = curve_points(o, v[c], V[c], nv[c], len[c], m, ends))) break;
+        if ((st = curve_points(v[c], len[c], m, ends))) break;
         for (int j = 0; j < m; j++) {
             const double s0 = len[c] * j / m, s1 = len[c] * (j + 1) / m, *a = ends + 2 * j, *b = a + 2;
             piece *p = &pc[np++];
             p->cx = 0.5 * (a[0] + b[0]); p->cy = 0.5 * (a[1] + b[1]);
-            p->r = 0.5 * (s1 - s0); p->s0 = s0; p->s1 = s1; p->curve = c; p->lmax = lmax;
+            p->r = 0.5 * (s1 - s0); p->s0 = s0; p->s1 = s1; p->curve = c;
             rmax = fmax(rmax, p->r);
         }
         count[c] = np - first[c];
@@ -628,7 +727,7 @@ int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const do
             const int all = (double)(x1 - x0 + 1) * (double)(y1 - y0 + 1) > 4.0 * np;
             for (long ix = x0; ix <= x1; ix++)
                 for (long iy = y0; iy <= y1; iy++)
-                    for (int e = all ? 0 : g->head[cell_hash(ix, iy)]; all ? e < np : e >= 0; e = all ? e + 1 : g->next[e]) {
+                    for (int e = all ? 0 : g->head[cell_hash(ix, iy, (1UL << HASH_BITS) - 1)]; all ? e < np : e >= 0; e = all ? e + 1 : g->next[e]) {
                         const int q = all ? e : g->item[e];
                         const piece *pq = &pc[q];
                         if (stamp[q] == (ptag | (unsigned)j)) continue;
@@ -665,21 +764,21 @@ int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const do
             const long x0 = cell_index(P[0] - d0, g->cell), x1 = cell_index(P[0] + d0, g->cell);
             const long y0 = cell_index(P[1] - d0, g->cell), y1 = cell_index(P[1] + d0, g->cell);
             const unsigned tag = (unsigned)i + 1u;
-            const own_foot f0 = {side ? side[i] : 0, foot[i], d0};
+            const own_foot f0 = {side ? side[i] : 0, foot[i]};
             if ((double)(x1 - x0 + 1) * (double)(y1 - y0 + 1) > 4.0 * np) {   /* far: every piece */
                 for (int j = 0; j < np && !st; j++)
                     if (disk_reaches(&pc[j], P, fabs(dist[i])))
-                        st = consider(o, v, V, nv, &pc[j], P, &f0, branch_only, i, dist, foot, side);
+                        st = consider(v, &pc[j], P, &f0, branch_only, i, dist, foot, side);
                 continue;
             }
             for (long ix = x0; ix <= x1 && !st; ix++)
                 for (long iy = y0; iy <= y1 && !st; iy++)
-                    for (int e = g->head[cell_hash(ix, iy)]; e >= 0 && !st; e = g->next[e]) {
+                    for (int e = g->head[cell_hash(ix, iy, (1UL << HASH_BITS) - 1)]; e >= 0 && !st; e = g->next[e]) {
                         const int j = g->item[e];
                         if (stamp[j] == tag) continue;
                         stamp[j] = tag;
                         if (disk_reaches(&pc[j], P, fabs(dist[i])))
-                            st = consider(o, v, V, nv, &pc[j], P, &f0, branch_only, i, dist, foot, side);
+                            st = consider(v, &pc[j], P, &f0, branch_only, i, dist, foot, side);
                     }
         }
     }
