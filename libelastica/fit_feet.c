@@ -323,10 +323,12 @@ void fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, d
                 j0 = jj < 0.0 ? 0 : jj > (double)(last + 1) ? last + 1 : (long)floor(jj);
             }
         }
+        long clo = j0, chi = j0 - 1;     /* the segments searched so far, clo .. chi */
         for (int dir = -1; dir <= 1; dir += 2) {
             for (long seg = dir < 0 ? j0 - 1 : j0; seg >= 0 && seg <= last; seg += dir) {
                 double t;
                 const double d2 = segment_distance2(V + 2 * seg, V + 2 * seg + 2, P, &t);
+                if (dir < 0) clo = seg; else chi = seg;
                 if (d2 < bd) { bd = d2; best = seg; bt = t; }
                 if (dir < 0 ? t > 0.0 : t < 1.0) break;     /* not at the far end: stop */
             }
@@ -335,7 +337,9 @@ void fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, d
         /* the stretch around the foot, again around a nearer foot found in it (the
          * search for nearer points elsewhere, fit_nearest_everywhere, leaves out the
          * stretch around the final foot: it must have been searched; measured: a foot
-         * moved 6 segments, its neighbour outside the first stretch 1.3 nearer) */
+         * moved 6 segments, its neighbour outside the first stretch 1.3 nearer). The
+         * segments searched already (clo .. chi, around the foot) cannot come strictly
+         * nearer than it: left out. */
         for (long centre = -1; centre != best;) {
             centre = best;
             const double d = sqrt(bd);
@@ -344,7 +348,10 @@ void fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, d
             const long reach = kmax * d <= 0.1 ? 1 : span <= (double)(last + 1) ? (long)span : last + 1;
             const long lo = centre - reach < 0 ? 0 : centre - reach, hi = centre + reach > last ? last : centre + reach;
             double r = reach_of(d, lmax);
-            nearest_segment(V, lo, hi + 1, P, lmax, &r, &bd, &best, &bt);
+            nearest_segment(V, lo, hi < clo ? hi + 1 : clo, P, lmax, &r, &bd, &best, &bt);
+            nearest_segment(V, lo > chi ? lo : chi + 1, hi + 1, P, lmax, &r, &bd, &best, &bt);
+            if (lo < clo) clo = lo;
+            if (hi > chi) chi = hi;
         }
         dist[g] = segment_signed(V + 2 * best, V + 2 * best + 2, P, bt);
         foot[g] = h * ((double)best + bt);
@@ -603,7 +610,7 @@ static int polygon_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP
     }
     const size_t nseg = (size_t)(ns[0] + ns[1]);
     if (nseg == 0) return EL_OK;
-    const double cell = 2.0 * fmax(mean_distance(dist, o->n), lmax);
+    const double cell = 8.0 * fmax(mean_distance(dist, o->n), lmax);
     size_t nb = 1;
     while (nb < nseg) nb *= 2;
     /* the runs (curve, first segment, end) in order, their buckets; then sorted by bucket */
