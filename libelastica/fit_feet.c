@@ -238,12 +238,10 @@ static double segment_signed(const double *A, const double *B, const double *P, 
  * is farther than sqrt(*bd) by 1e-9 of it, far beyond the rounding of
  * segment_distance2 (~1e-15): its squared distance would compare as larger, and
  * leaving it out changes neither the nearest segment nor the order in which ties are
- * met. (Leaving out the next (|P - A| - *r) / lmax - 1 segments as well, each within
- * that many lmax of A, took 8 % fewer instructions of the report but 7 % more time on
- * the bench's polygons: the loop's next index then waits for that bound.)
+ * met.
  */
-static inline void nearest_segment(const double *V, long j0, long j1, const double *P, double lmax, double *r,
-                                   double *bd, long *bj, double *bt)
+static inline void nearest_in_block(const double *V, long j0, long j1, const double *P, double lmax, double *r,
+                                    double *bd, long *bj, double *bt)
 {
     double r2 = *r * *r;
     for (long j = j0; j < j1; j++) {
@@ -256,6 +254,30 @@ static inline void nearest_segment(const double *V, long j0, long j1, const doub
             const double rn = (sqrt(d2) + lmax) * (1.0 + 1e-9);
             if (rn < *r) { *r = rn; r2 = rn * rn; }
         }
+    }
+}
+
+/*
+ * The same over blocks of BLOCK segments: a block whose first vertex lies beyond
+ * *r + BLOCK lmax (by the octagon norm max(|x|, |y|, (|x| + |y|) / sqrt 2) <= |x|, no
+ * square root) is left out whole, each of its vertices lying within (BLOCK - 1) lmax of
+ * that one, so beyond *r by more than a segment. (Dense polygons, spacing far below the
+ * noise: 5000 points, 1950 -> 1700 us a fit. Leaving out (|P - A| - *r) / lmax segments
+ * at every vertex beyond the reach took fewer instructions but 7 % more time on 1000
+ * points: the loop's next index then waits for that bound.)
+ */
+enum { BLOCK = 16 };
+static inline void nearest_segment(const double *V, long j0, long j1, const double *P, double lmax, double *r,
+                                   double *bd, long *bj, double *bt)
+{
+    for (long j = j0; j < j1; j += BLOCK) {
+        const long e = j1 - j > BLOCK ? j + BLOCK : j1;
+        if (e - j == BLOCK) {
+            const double ax = fabs(P[0] - V[2 * j]), ay = fabs(P[1] - V[2 * j + 1]);
+            const double m = ax > ay ? ax : ay, o = 0.7071067811865475 * (ax + ay);
+            if ((m > o ? m : o) > *r + BLOCK * lmax) continue;
+        }
+        nearest_in_block(V, j, e, P, lmax, r, bd, bj, bt);
     }
 }
 
