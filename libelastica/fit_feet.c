@@ -229,16 +229,18 @@ static double segment_signed(const double *A, const double *B, const double *P, 
     return ux * dy - uy * dx < 0.0 ? -d : d;
 }
 
+/* The reach of nearest_segment for the distance d and the longest segment lmax. */
+static inline double reach_of(double d, double lmax) { return (d + lmax) * (1.0 + 1e-9); }
+
 /*
  * The nearest of the segments j0 .. j1 - 1 of the polygon V to P when nearer than
  * sqrt(*bd) (the first of equal ones): *bd (squared), *bj, *bt updated. Segments are
  * left out without changing any result: one A-B of length at most lmax has no point
  * nearer to P than |P - A| - lmax (triangle inequality), so one with |P - A| beyond
- * *r = (sqrt(*bd) + lmax)(1 + 1e-9) (the caller's first reach; it shrinks with *bd)
- * is farther than sqrt(*bd) by 1e-9 of it, far beyond the rounding of
- * segment_distance2 (~1e-15): its squared distance would compare as larger, and
- * leaving it out changes neither the nearest segment nor the order in which ties are
- * met.
+ * *r = reach_of(sqrt(*bd), lmax) (the caller's first; it shrinks with *bd) is farther
+ * than sqrt(*bd) by 1e-9 of it, far beyond the rounding of segment_distance2 (~1e-15):
+ * its squared distance would compare as larger, and leaving it out changes neither the
+ * nearest segment nor the order in which ties are met.
  */
 static inline void nearest_in_block(const double *V, long j0, long j1, const double *P, double lmax, double *r,
                                     double *bd, long *bj, double *bt)
@@ -251,20 +253,19 @@ static inline void nearest_in_block(const double *V, long j0, long j1, const dou
         const double d2 = segment_distance2(V + 2 * j, V + 2 * j + 2, P, &t);
         if (d2 < *bd) {
             *bd = d2; *bj = j; *bt = t;
-            const double rn = (sqrt(d2) + lmax) * (1.0 + 1e-9);
+            const double rn = reach_of(sqrt(d2), lmax);
             if (rn < *r) { *r = rn; r2 = rn * rn; }
         }
     }
 }
 
 /*
- * The same over blocks of BLOCK segments: a block whose first vertex lies beyond
+ * The same by blocks of BLOCK segments: a block whose first vertex lies beyond
  * *r + BLOCK lmax (by the octagon norm max(|x|, |y|, (|x| + |y|) / sqrt 2) <= |x|, no
- * square root) is left out whole, each of its vertices lying within (BLOCK - 1) lmax of
- * that one, so beyond *r by more than a segment. (Dense polygons, spacing far below the
- * noise: 5000 points, 1950 -> 1700 us a fit. Leaving out (|P - A| - *r) / lmax segments
- * at every vertex beyond the reach took fewer instructions but 7 % more time on 1000
- * points: the loop's next index then waits for that bound.)
+ * square root) is left out whole, its vertices lying within (BLOCK - 1) lmax of that
+ * one (dense polygons: 5000 points, 1950 -> 1700 us a fit). (Leaving out
+ * (|P - A| - *r) / lmax segments at each vertex beyond: fewer instructions, 7 % more
+ * time on 1000 points, the loop's next index waiting for that bound.)
  */
 enum { BLOCK = 16 };
 static inline void nearest_segment(const double *V, long j0, long j1, const double *P, double lmax, double *r,
@@ -280,9 +281,6 @@ static inline void nearest_segment(const double *V, long j0, long j1, const doub
         nearest_in_block(V, j, e, P, lmax, r, bd, bj, bt);
     }
 }
-
-/* The reach of nearest_segment for the distance d. */
-static inline double reach_of(double d, double lmax) { return (d + lmax) * (1.0 + 1e-9); }
 
 /* The longest segment of the polygon of nv vertices (nearest_segment's lmax). */
 static double longest_segment(const double *V, size_t nv)
@@ -407,11 +405,10 @@ typedef struct grid {
     int used;
 } grid;
 
-/* The grid cell of coordinate x from q = x / cell (the polygons' grid: x times 1 / cell,
- * as monotone, without a division): floor(q), held to +-2^40 (a far, diverging curve
- * gives quotients no long holds; the searches below then take every piece). floor by
- * the truncating conversion, which is exact within that range (libm's floor is a call
- * on baseline x86-64, four a point here); NaN gives -2^40 as before. */
+/* The grid cell of coordinate x from q = x / cell (polygons: x times 1 / cell, monotone
+ * too): floor(q) by the truncating conversion, exact within +-2^40, where it is held (a
+ * far, diverging curve gives quotients no long holds; the searches below then take
+ * every piece; libm's floor is a call on baseline x86-64); NaN gives -2^40. */
 static long cell_index(double q)
 {
     const double lim = 1099511627776.0;
@@ -437,7 +434,7 @@ static int grid_add(grid *g, const piece *p, int id)
     for (long ix = x0; ix <= x1; ix++)
         for (long iy = y0; iy <= y1; iy++) {
             if (g->used >= GRID_ENTRIES) return 0;
-            const unsigned h = cell_hash(ix, iy, (1UL << HASH_BITS) - 1);
+            const size_t h = cell_hash(ix, iy, (1UL << HASH_BITS) - 1);
             g->item[g->used] = id;
             g->next[g->used] = g->head[h];
             g->head[h] = g->used++;
@@ -530,11 +527,10 @@ static int feet_are_nearest(const fit_objective *o, const double *v, const doubl
 {
     if (o->map.ncurves != 1) return 0;
     if (o->map.model == FIT_DISCRETE) {
-        /* the segments' directions in a cone of at most pi/2, from lo counter-clockwise
-         * to hi: a direction counter-clockwise of hi (cross > 0) widens it there, one
-         * clockwise of lo at the other side; consecutive directions less than pi/2 apart
-         * (dot > 0, else not proved), so each new one lies within pi of the cone and the
-         * cross products tell its side without angles */
+        /* the segments' directions in a cone of at most pi/2, lo counter-clockwise to hi,
+         * widened by a direction beyond either (cross products; consecutive directions
+         * less than pi/2 apart, dot > 0, else not proved: a new one lies within pi of the
+         * cone, so the signs tell its side) */
         double lo[2] = {0.0, 0.0}, hi[2] = {0.0, 0.0}, pr[2] = {0.0, 0.0};
         for (size_t j = 0; j + 1 < nv; j++) {
             const double u[2] = {V[2 * j + 2] - V[2 * j], V[2 * j + 3] - V[2 * j + 1]};
@@ -582,10 +578,11 @@ static double mean_distance(const double *dist, size_t n)
  * its foot (or proved them farther, d kappa <= 0.1); every other segment that can come
  * nearer than d has its first vertex within d + lmax of the point (nearest_segment).
  * The polygons are cut into runs of consecutive segments whose first vertices share a
- * grid cell, bucketed by a hash of the cell (counting sort); a point visits the cells
- * within that reach (every run when they outnumber the segments) and searches the runs
- * there outside its own stretch. Exact (tests/c/test_fit_nearest.c: against every
- * segment); O(n) for ordinary data.
+ * grid cell (of 8 max(mean |d|, lmax): a point's reach spans 1-2 cells per axis),
+ * bucketed by a hash of the cell (counting sort); a point visits the cells within that
+ * reach (every run when the cells outnumber the runs) and searches the runs there
+ * outside its own stretch. Exact (tests/c/test_fit_nearest.c: against every segment);
+ * O(n) for ordinary data.
  */
 typedef struct polygon_query {
     const double *P;
@@ -604,12 +601,10 @@ static void search_runs(const double *V[2], const long *ru, size_t count, polygo
         const int c = (int)ru[0];
         const long j0 = ru[1], j1 = ru[2];
         const double was = q->bd;
-        if (c == q->own && q->x0 < q->x1) {
-            nearest_segment(V[c], j0, j1 < q->x0 ? j1 : q->x0, q->P, q->lmax, &q->r, &q->bd, &q->bj, &q->bt);
-            nearest_segment(V[c], j0 > q->x1 ? j0 : q->x1, j1, q->P, q->lmax, &q->r, &q->bd, &q->bj, &q->bt);
-        } else {
-            nearest_segment(V[c], j0, j1, q->P, q->lmax, &q->r, &q->bd, &q->bj, &q->bt);
-        }
+        /* the parts before and after the stretch (the whole run off the own curve) */
+        const long x0 = c == q->own ? q->x0 : j1, x1 = c == q->own ? q->x1 : j1;
+        nearest_segment(V[c], j0, j1 < x0 ? j1 : x0, q->P, q->lmax, &q->r, &q->bd, &q->bj, &q->bt);
+        nearest_segment(V[c], j0 > x1 ? j0 : x1, j1, q->P, q->lmax, &q->r, &q->bd, &q->bj, &q->bt);
         if (q->bd < was) q->bc = c;
     }
 }
@@ -650,8 +645,7 @@ static int polygon_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP
         }
     }
     for (size_t b = 0; b < nb; b++) start[b + 1] += start[b];
-    for (size_t e = 0; e < nr; e++)      /* start[b] moves to bucket b's end */
-        memcpy(sorted + 3 * start[key[e]]++, run + 3 * e, sizeof(long) * 3);
+    for (size_t e = 0; e < nr; e++) memcpy(sorted + 3 * start[key[e]]++, run + 3 * e, sizeof(long) * 3);
     for (size_t b = nb; b > 0; b--) start[b] = start[b - 1];
     start[0] = 0;
     for (size_t i = 0; i < o->n; i++) {
@@ -661,10 +655,14 @@ static int polygon_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP
         point(o, i, P);
         polygon_query q = {P, side ? side[i] : 0, 0, 0, lmax, reach_of(d0, lmax), HUGE_VAL, 0.0, -1, 0};
         /* the stretch: segments j with j h >= foot - 2 sqrt 2 d and (j + 1) h <= foot + 2 sqrt 2 d
-         * (to rounding: fit_polygon_distances searched one segment more each way) */
-        const double span = 2.0 * 1.4142135623730951 * d0;
-        q.x0 = (long)ceil(fit_clamp((foot[i] - span) * inv_h[q.own], 0.0, (double)ns[q.own]));
-        q.x1 = (long)floor(fit_clamp((foot[i] + span) * inv_h[q.own], 0.0, (double)ns[q.own]));
+         * (to rounding: fit_polygon_distances searched a segment more each way), held to
+         * the curve (NaN: none); ceil and floor of the non-negative bounds by truncation */
+        const double span = 2.0 * 1.4142135623730951 * d0, top = (double)ns[q.own];
+        double a = (foot[i] - span) * inv_h[q.own], b = (foot[i] + span) * inv_h[q.own];
+        a = a > 0.0 ? (a < top ? a : top) : 0.0;
+        b = b > 0.0 ? (b < top ? b : top) : 0.0;
+        q.x0 = (long)a + ((double)(long)a < a);
+        q.x1 = (long)b;
         const long cx0 = cell_index((P[0] - q.r) * inv), cx1 = cell_index((P[0] + q.r) * inv);
         const long cy0 = cell_index((P[1] - q.r) * inv), cy1 = cell_index((P[1] + q.r) * inv);
         if ((double)(cx1 - cx0 + 1) * (double)(cy1 - cy0 + 1) > (double)nr) {
