@@ -36,15 +36,24 @@ static int brute_nearest(const double *const V[2], const size_t nv[2], int nc, d
     return found;
 }
 
-enum { ARC, LOOPS, WALK, ZIGZAG, SHAPES };
-static const char *const shape_name[SHAPES] = {"arc", "loops", "walk", "zigzag"};
+enum { ARC, LOOPS, WALK, ZIGZAG, ELASTICA, SHAPES };
+static const char *const shape_name[SHAPES] = {"arc", "loops", "walk", "zigzag", "elastica"};
 
 /* An equilateral polygon of nv vertices, segment h, scaled by sc: its turning per vertex
  * by shape (an arc of 80 degrees in all; 2.5 loops; a random walk of turns up to 0.5;
- * alternate turns of +-2.5 with noise). */
+ * alternate turns of +-2.5 with noise), or a discrete elastica (seed 000 (4.7)) of
+ * modulus k across 1, elliptic argument 2 .. 12 in all. */
 static void polygon(int shape, size_t nv, double h, double sc, unsigned long long *rng, double *V)
 {
     double th = test_uniform(rng, -M_PI, M_PI), x = 0.0, y = 0.0;
+    if (shape == ELASTICA) {
+        static const double ks[] = {0.3, 0.999, 1.0, 1.001, 2.0, 30.0};
+        const double k = ks[(size_t)test_uniform(rng, 0.0, 6.0)];
+        const el_discrete_params p = {0.0, 0.0, sc * h, th, test_uniform(rng, 2.0, 12.0) / (double)nv,
+                                      test_uniform(rng, -2.0, 2.0), k};
+        ck_assert_int_eq(el_discrete_eval(&p, nv, V), EL_OK);
+        return;
+    }
     for (size_t j = 0; j < nv; j++) {
         V[2 * j] = sc * x; V[2 * j + 1] = sc * y;
         x += h * cos(th); y += h * sin(th);
