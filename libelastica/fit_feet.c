@@ -15,6 +15,9 @@
 #include "fit_internal.h"
 #include <stdlib.h>
 #include <string.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 enum { NEWTON_MAX = 40 };
 
@@ -242,21 +245,43 @@ static inline double reach_of(double d, double lmax) { return (d + lmax) * (1.0 
  * its squared distance would compare as larger, and leaving it out changes neither the
  * nearest segment nor the order in which ties are met.
  */
+static inline int beyond2(const double *A, const double *P, double r2);
+
 static inline void nearest_in_block(const double *V, long j0, long j1, const double *P, double lmax, double *r,
                                     double *bd, long *bj, double *bt)
 {
     double r2 = *r * *r;
-    for (long j = j0; j < j1; j++) {
-        const double dx = P[0] - V[2 * j], dy = P[1] - V[2 * j + 1];
-        if (dx * dx + dy * dy > r2) continue;
-        double t;
-        const double d2 = segment_distance2(V + 2 * j, V + 2 * j + 2, P, &t);
-        if (d2 < *bd) {
-            *bd = d2; *bj = j; *bt = t;
-            const double rn = reach_of(sqrt(d2), lmax);
-            if (rn < *r) { *r = rn; r2 = rn * rn; }
+    for (long j = j0; j < j1; j += 2) {
+        /* segments j, j + 1 (held to j1); a pair beyond at the reach then is beyond at
+         * the smaller reach after segment j too */
+        const int far = beyond2(V + 2 * j, P, r2) | (j + 1 < j1 ? 0 : 2);
+        if (far == 3) continue;
+        for (long m = j; m < j + 2; m++) {
+            if (far >> (m - j) & 1) continue;
+            double t;
+            const double d2 = segment_distance2(V + 2 * m, V + 2 * m + 2, P, &t);
+            if (d2 < *bd) {
+                *bd = d2; *bj = m; *bt = t;
+                const double rn = reach_of(sqrt(d2), lmax);
+                if (rn < *r) { *r = rn; r2 = rn * rn; }
+            }
         }
     }
+}
+
+/* Bits 0 and 1: whether the vertices A and A + 2 lie beyond sqrt(r2) from P (both at
+ * once where SSE2 has two lanes: the same products and sums as one at a time; NaN: not
+ * beyond, as the scalar test). */
+static inline int beyond2(const double *A, const double *P, double r2)
+{
+#if defined(__SSE2__)
+    const __m128d p = _mm_loadu_pd(P), a = _mm_sub_pd(p, _mm_loadu_pd(A)), b = _mm_sub_pd(p, _mm_loadu_pd(A + 2));
+    const __m128d a2 = _mm_mul_pd(a, a), b2 = _mm_mul_pd(b, b);
+    return _mm_movemask_pd(_mm_cmpgt_pd(_mm_add_pd(_mm_unpacklo_pd(a2, b2), _mm_unpackhi_pd(a2, b2)), _mm_set1_pd(r2)));
+#else
+    const double ax = P[0] - A[0], ay = P[1] - A[1], bx = P[0] - A[2], by = P[1] - A[3];
+    return (ax * ax + ay * ay > r2) | (bx * bx + by * by > r2) << 1;
+#endif
 }
 
 /*
