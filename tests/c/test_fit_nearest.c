@@ -1,4 +1,4 @@
-/* The discrete fit's report (fit_feet.c): each point's distance to the polygon and its
+/* The discrete fit's report (fit_nearest.c): each point's distance to the polygon and its
  * foot, by fit_polygon_distances (the search near the point's vertex) and
  * fit_nearest_everywhere (a nearer part elsewhere), against the brute-force nearest
  * point (every segment, the first of equal distances) on equilateral polygons: arcs,
@@ -11,7 +11,7 @@
 
 /* Whether (d, foot, side) is a nearest point of the polygons V[c] (nv[c] vertices,
  * segment h, c < nc) to P, over every segment by the library's formula for one
- * (fit_feet.c): the signed distance (+ left of the segment's direction) and foot h (j + t)
+ * (fit_nearest.c): the signed distance (+ left of the segment's direction) and foot h (j + t)
  * on curve side of a segment at the least squared distance (exact ties: a foot at a
  * vertex is on two segments, each with its side). */
 static int brute_nearest(const double *const V[2], const size_t nv[2], int nc, double h, const double *P, double d,
