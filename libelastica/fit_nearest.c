@@ -1,0 +1,651 @@
+/*
+ * Point-to-curve distances of the report (fit_internal.h): the discrete model's distance
+ * of each point to the polygon of the vertices, searched from the segments at the
+ * point's own vertex outwards while the distance decreases (fit_polygon_distances), and
+ * for both models the nearest point anywhere on the curves (fit_nearest_everywhere: a
+ * loop passing close to itself). Signed distances: positive when the point lies left of
+ * the curve (its direction of increasing s; for a keyline side, away from the joint).
+ */
+#include "fit_internal.h"
+#include <stdlib.h>
+#include <string.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+enum { NEWTON_MAX = 40 };       /* a smooth piece's Newton iterations (as fit_feet.c's) */
+
+/* Point i, normalised (as fit_feet.c's, fit_objective.c's). */
+static void point(const fit_objective *o, size_t i, double *P)
+{
+    P[0] = (o->xy[2 * i] - o->cx) / o->sc;
+    P[1] = (o->xy[2 * i + 1] - o->cy) / o->sc;
+}
+
+/* Squared distance of P to segment A-B, and the fraction t of its nearest point.
+ * (The clamp to [0, 1] by comparisons, NaN to 0 as fmin(fmax(t, 0), 1) does: the
+ * report's hot loop, where libm's fmin/fmax are calls.) */
+static inline double segment_distance2(const double *A, const double *B, const double *P, double *t)
+{
+    const double ux = B[0] - A[0], uy = B[1] - A[1], l2 = ux * ux + uy * uy;
+    const double px = P[0] - A[0], py = P[1] - A[1];
+    double tt = l2 > 0.0 ? (px * ux + py * uy) / l2 : 0.0;
+    tt = tt > 0.0 ? (tt < 1.0 ? tt : 1.0) : 0.0;
+    const double dx = px - tt * ux, dy = py - tt * uy;
+    *t = tt;
+    return dx * dx + dy * dy;
+}
+
+/* The signed distance (+ = left of A -> B) of P to the point of segment A-B at t. */
+static double segment_signed(const double *A, const double *B, const double *P, double t)
+{
+    const double ux = B[0] - A[0], uy = B[1] - A[1];
+    const double dx = P[0] - A[0] - t * ux, dy = P[1] - A[1] - t * uy;
+    const double d = sqrt(dx * dx + dy * dy);
+    return ux * dy - uy * dx < 0.0 ? -d : d;
+}
+
+/* The reach of nearest_segment for the distance d and the longest segment lmax. */
+static inline double reach_of(double d, double lmax) { return (d + lmax) * (1.0 + 1e-9); }
+
+/*
+ * The nearest of the segments j0 .. j1 - 1 of the polygon V to P when nearer than
+ * sqrt(*bd) (the first of equal ones): *bd (squared), *bj, *bt updated. Segments are
+ * left out without changing any result: one A-B of length at most lmax has no point
+ * nearer to P than |P - A| - lmax (triangle inequality), so one with |P - A| beyond
+ * *r = reach_of(sqrt(*bd), lmax) (the caller's first; it shrinks with *bd) is farther
+ * than sqrt(*bd) by 1e-9 of it, far beyond the rounding of segment_distance2 (~1e-15):
+ * its squared distance would compare as larger, and leaving it out changes neither the
+ * nearest segment nor the order in which ties are met.
+ */
+static inline int beyond2(const double *A, const double *P, double r2);
+
+static inline void nearest_in_block(const double *V, long j0, long j1, const double *P, double lmax, double *r,
+                                    double *bd, long *bj, double *bt)
+{
+    double r2 = *r * *r;
+    for (long j = j0; j < j1; j += 2) {
+        /* segments j, j + 1 (held to j1); a pair beyond at the reach then is beyond at
+         * the smaller reach after segment j too */
+        const int far = beyond2(V + 2 * j, P, r2) | (j + 1 < j1 ? 0 : 2);
+        if (far == 3) continue;
+        for (long m = j; m < j + 2; m++) {
+            if (far >> (m - j) & 1) continue;
+            double t;
+            const double d2 = segment_distance2(V + 2 * m, V + 2 * m + 2, P, &t);
+            if (d2 < *bd) {
+                *bd = d2; *bj = m; *bt = t;
+                const double rn = reach_of(sqrt(d2), lmax);
+                if (rn < *r) { *r = rn; r2 = rn * rn; }
+            }
+        }
+    }
+}
+
+/* Bits 0 and 1: whether the vertices A and A + 2 lie beyond sqrt(r2) from P (both at
+ * once where SSE2 has two lanes: the same products and sums as one at a time; NaN: not
+ * beyond, as the scalar test). */
+static inline int beyond2(const double *A, const double *P, double r2)
+{
+#if defined(__SSE2__)
+    const __m128d p = _mm_loadu_pd(P), a = _mm_sub_pd(p, _mm_loadu_pd(A)), b = _mm_sub_pd(p, _mm_loadu_pd(A + 2));
+    const __m128d a2 = _mm_mul_pd(a, a), b2 = _mm_mul_pd(b, b);
+    return _mm_movemask_pd(_mm_cmpgt_pd(_mm_add_pd(_mm_unpacklo_pd(a2, b2), _mm_unpackhi_pd(a2, b2)), _mm_set1_pd(r2)));
+#else
+    const double ax = P[0] - A[0], ay = P[1] - A[1], bx = P[0] - A[2], by = P[1] - A[3];
+    return (ax * ax + ay * ay > r2) | (bx * bx + by * by > r2) << 1;
+#endif
+}
+
+/*
+ * The same by blocks of BLOCK segments: a block whose first vertex lies beyond
+ * *r + BLOCK lmax (by the octagon norm max(|x|, |y|, (|x| + |y|) / sqrt 2) <= |x|, no
+ * square root) is left out whole, its vertices lying within (BLOCK - 1) lmax of that
+ * one (dense polygons: 5000 points, 1950 -> 1700 us a fit). (Leaving out
+ * (|P - A| - *r) / lmax segments at each vertex beyond: fewer instructions, 7 % more
+ * time on 1000 points, the loop's next index waiting for that bound.)
+ */
+enum { BLOCK = 16 };
+static inline void nearest_segment(const double *V, long j0, long j1, const double *P, double lmax, double *r,
+                                   double *bd, long *bj, double *bt)
+{
+    for (long j = j0; j < j1; j += BLOCK) {
+        const long e = j1 - j > BLOCK ? j + BLOCK : j1;
+        if (e - j == BLOCK) {
+            const double ax = fabs(P[0] - V[2 * j]), ay = fabs(P[1] - V[2 * j + 1]);
+            const double m = ax > ay ? ax : ay, o = 0.7071067811865475 * (ax + ay);
+            if ((m > o ? m : o) > *r + BLOCK * lmax) continue;
+        }
+        nearest_in_block(V, j, e, P, lmax, r, bd, bj, bt);
+    }
+}
+
+/* The longest segment of the polygon of nv vertices (nearest_segment's lmax). */
+static double longest_segment(const double *V, size_t nv)
+{
+    double l2 = 0.0;
+    for (size_t j = 0; j + 1 < nv; j++) {
+        const double ux = V[2 * j + 2] - V[2 * j], uy = V[2 * j + 3] - V[2 * j + 1], u2 = ux * ux + uy * uy;
+        if (u2 > l2) l2 = u2;
+    }
+    return sqrt(l2) * (1.0 + 1e-12);
+}
+
+/*
+ * The polygon of nv vertices V (normalised), data point first + step j <-> vertex j:
+ * each point's distance to the polygon near its own vertex, its foot as arc length
+ * h (segment + t) from vertex 0. A walk from the two segments at the vertex, on while
+ * the nearest point of the last segment is its far end, finds a local minimum d; the
+ * polygon has kinks, so every segment within arc length 2 sqrt 2 d + h of it is then
+ * searched too (one segment each way where d kappa <= 0.1): where the polygon's
+ * direction varies within pi/2 (fit_nearest_everywhere checks) no point farther along it
+ * can be nearer than d (|V(s) - V(s')| >= cos(pi/4) |s - s'|), so this is the nearest
+ * point; elsewhere that search goes on.
+ */
+void fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, double h,
+                           size_t first, long step, double *dist, double *foot)
+{
+    const long last = (long)nv - 2;
+    /* the polygon's largest curvature, sin(turning) / h at its vertices: a point with
+     * d kappa <= 0.1 has its distance growing away from the walk's foot, so one more
+     * segment each way is enough (as for the smooth curve) */
+    double kmax = 0.0;
+    for (size_t j = 1; j + 1 < nv; j++) {
+        const double ax = V[2 * j] - V[2 * j - 2], ay = V[2 * j + 1] - V[2 * j - 1];
+        const double bx = V[2 * j + 2] - V[2 * j], by = V[2 * j + 3] - V[2 * j + 1];
+        const double kj = fabs(ax * by - ay * bx) / (h * h * h);
+        if (kj > kmax) kmax = kj;        /* fmax(kmax, kj): kmax is never NaN */
+    }
+    const double lmax = longest_segment(V, nv);
+    for (size_t j = 0; j < nv; j++) {
+        const size_t g = (size_t)((long)first + step * (long)j);
+        double P[2];
+        point(o, g, P);
+        long best = -1;
+        double bd = HUGE_VAL, bt = 0.0;
+        /* start where the point projects along the polygon's direction at its vertex:
+         * on dense polygons (spacing far below the noise) the foot lies many segments
+         * from the point's own vertex */
+        long j0 = (long)j;
+        {
+            const long a = (long)j < last ? (long)j : last;
+            const double ux = V[2 * a + 2] - V[2 * a], uy = V[2 * a + 3] - V[2 * a + 1];
+            const double along = ((P[0] - V[2 * j]) * ux + (P[1] - V[2 * j + 1]) * uy) / (h * h);
+            if (fabs(along) > 1.0 && isfinite(along)) {
+                const double jj = (double)j + along;
+                j0 = jj < 0.0 ? 0 : jj > (double)(last + 1) ? last + 1 : (long)floor(jj);
+            }
+        }
+        long clo = j0, chi = j0 - 1;     /* the segments searched so far, clo .. chi */
+        for (int dir = -1; dir <= 1; dir += 2) {
+            for (long seg = dir < 0 ? j0 - 1 : j0; seg >= 0 && seg <= last; seg += dir) {
+                double t;
+                const double d2 = segment_distance2(V + 2 * seg, V + 2 * seg + 2, P, &t);
+                if (dir < 0) clo = seg; else chi = seg;
+                if (d2 < bd) { bd = d2; best = seg; bt = t; }
+                if (dir < 0 ? t > 0.0 : t < 1.0) break;     /* not at the far end: stop */
+            }
+        }
+        if (best < 0) { dist[g] = 0.0; foot[g] = 0.0; continue; }
+        /* the stretch around the foot, again around a nearer foot found in it (the
+         * search for nearer points elsewhere, fit_nearest_everywhere, leaves out the
+         * stretch around the final foot: it must have been searched; measured: a foot
+         * moved 6 segments, its neighbour outside the first stretch 1.3 nearer). The
+         * segments searched already (clo .. chi, around the foot) cannot come strictly
+         * nearer than it: left out. */
+        for (long centre = -1; centre != best;) {
+            centre = best;
+            const double d = sqrt(bd);
+            /* at most the whole polygon (a far point's d / h can pass the range of long) */
+            const double span = ceil(2.0 * 1.4142135623730951 * d / h) + 1.0;
+            const long reach = kmax * d <= 0.1 ? 1 : span <= (double)(last + 1) ? (long)span : last + 1;
+            const long lo = centre - reach < 0 ? 0 : centre - reach, hi = centre + reach > last ? last : centre + reach;
+            double r = reach_of(d, lmax);
+            nearest_segment(V, lo, hi < clo ? hi + 1 : clo, P, lmax, &r, &bd, &best, &bt);
+            nearest_segment(V, lo > chi ? lo : chi + 1, hi + 1, P, lmax, &r, &bd, &best, &bt);
+            if (lo < clo) clo = lo;
+            if (hi > chi) chi = hi;
+        }
+        dist[g] = segment_signed(V + 2 * best, V + 2 * best + 2, P, bt);
+        foot[g] = h * ((double)best + bt);
+    }
+}
+
+/* ------------------------------------------------------------ the nearest point */
+
+/*
+ * The feet above are the nearest points near each point's place along the data (the
+ * fit's own foot, or its vertex). A curve that passes close to itself (a loop) can come
+ * nearer to a point somewhere else; the distance to the curve is the nearest of all.
+ * Smooth curves (the polygons': polygon_nearest_everywhere below) are cut into pieces of arc length l (about twice the median distance, at
+ * least 1/128 of the length); every point of a piece lies within l/2 of the midpoint of
+ * its end points (triangle inequality), so a piece can hold a nearer point only if that
+ * disk comes within the point's distance. The disks go into a hash grid of cells of at
+ * least their diameter; each point visits the cells its distance reaches, and only the
+ * pieces away from its own foot whose disk is near enough are searched (Newton's method
+ * from the piece's middle). O(n) work for ordinary data.
+ */
+enum { MAX_PIECES = 128, HASH_BITS = 11, SEP_LEVELS = 4 };
+/* The grid's entries: a piece's disk (diameter 2 r <= cell, fit_nearest_everywhere) spans
+ * 2 cells per axis, 3 when rounding of (c +- r) / cell crosses one more integer: at most 9
+ * entries for each of the 2 MAX_PIECES pieces (grid_add reports more as EL_EINTERNAL) */
+enum { GRID_ENTRIES = 9 * 2 * MAX_PIECES };
+
+typedef struct piece {
+    double cx, cy, r, s0, s1;   /* disk, arc range on its curve */
+    int curve;
+} piece;
+
+typedef struct grid {
+    double cell;
+    int head[1 << HASH_BITS];
+    int next[GRID_ENTRIES], item[GRID_ENTRIES];
+    int used;
+} grid;
+
+/* The grid cell of coordinate x from q = x / cell (polygons: x times 1 / cell, monotone
+ * too): floor(q) by the truncating conversion, exact within +-2^40, where it is held (a
+ * far, diverging curve gives quotients no long holds; the searches below then take
+ * every piece; libm's floor is a call on baseline x86-64); NaN gives -2^40. */
+static long cell_index(double q)
+{
+    const double lim = 1099511627776.0;
+    if (q >= -lim && q <= lim) {
+        const long c = (long)q;
+        return (double)c > q ? c - 1 : c;
+    }
+    return q > 0.0 ? (long)lim : -(long)lim;
+}
+
+/* The bucket of cell (ix, iy) among mask + 1 (a power of two) */
+static size_t cell_hash(long ix, long iy, size_t mask)
+{
+    const unsigned long h = (unsigned long)ix * 73856093UL ^ (unsigned long)iy * 19349663UL;
+    return (size_t)(h & mask);
+}
+
+/* 0: the grid is full (impossible by GRID_ENTRIES' bound; the caller's EL_EINTERNAL) */
+static int grid_add(grid *g, const piece *p, int id)
+{
+    const long x0 = cell_index((p->cx - p->r) / g->cell), x1 = cell_index((p->cx + p->r) / g->cell);
+    const long y0 = cell_index((p->cy - p->r) / g->cell), y1 = cell_index((p->cy + p->r) / g->cell);
+    for (long ix = x0; ix <= x1; ix++)
+        for (long iy = y0; iy <= y1; iy++) {
+            if (g->used >= GRID_ENTRIES) return 0;
+            const size_t h = cell_hash(ix, iy, (1UL << HASH_BITS) - 1);
+            g->item[g->used] = id;
+            g->next[g->used] = g->head[h];
+            g->head[h] = g->used++;
+        }
+    return 1;
+}
+
+/* The points of a smooth curve at arc lengths s_j = len j / m, j = 0..m (one
+ * evaluation of the sorted samples). */
+static int curve_points(const double *v, double len, int m, double *xy)
+{
+    double s[MAX_PIECES + 1];
+    for (int j = 0; j <= m; j++) s[j] = len * j / m;
+    el_smooth_params p;
+    int st = fit_to_smooth(v, &p);
+    return st ? st : el_smooth_eval(&p, (size_t)m + 1, s, xy, NULL, NULL);
+}
+
+/* The nearest point of piece p of a smooth curve to P: signed distance (+ left of the
+ * curve's own direction) and arc length. */
+static int piece_nearest(const double *v, const piece *p, const double *P, int branch_only, double *d, double *s)
+{
+    el_smooth_params sp;
+    int st = fit_to_smooth(v, &sp);
+    if (st) return st;
+    double u = 0.5 * (p->s0 + p->s1), xy[2], th = 0.0, ka = 0.0;
+    for (int it = 0; it < NEWTON_MAX; it++) {
+        if ((st = el_smooth_eval(&sp, 1, &u, xy, &th, &ka))) return st;
+        const double dx = xy[0] - P[0], dy = xy[1] - P[1], c = cos(th), sn = sin(th);
+        const double t = c * dx + sn * dy, e = c * dy - sn * dx;
+        const double un = fmin(fmax(u + fit_foot_step(t, e, ka, v[6]), 0.0), v[6]), du = un - u;
+        if (branch_only && fabs(du) <= 1e-7 * (v[6] + 1e-300)) {
+            /* the distance at u + du to second order, as project_block's */
+            const double a = t + du, b = e + 0.5 * ka * du * du, dist = sqrt(a * a + b * b);
+            *d = b > 0.0 ? -dist : dist;
+            *s = un;
+            return EL_OK;
+        }
+        if (fabs(du) <= 1e-14 * (v[6] + 1e-300)) { u = un; break; }
+        u = un;
+    }
+    if ((st = el_smooth_eval(&sp, 1, &u, xy, &th, NULL))) return st;
+    const double dx = P[0] - xy[0], dy = P[1] - xy[1];
+    *d = cos(th) * dy - sin(th) * dx < 0.0 ? -hypot(dx, dy) : hypot(dx, dy);
+    *s = u;
+    return EL_OK;
+}
+
+/* Whether the disk of piece p comes nearer to P than d (the callers' test before
+ * consider, inlined: most pieces a point visits are farther). */
+static inline int disk_reaches(const piece *p, const double *P, double d)
+{
+    const double dx = P[0] - p->cx, dy = P[1] - p->cy, reach = d + p->r;
+    return dx * dx + dy * dy < reach * reach;
+}
+
+/* Point i against piece p, whose disk comes nearer than the distance so far
+ * (disk_reaches): searched when it is away from the point's own foot (whose
+ * neighbourhood was searched). */
+typedef struct own_foot {
+    int curve;
+    double s;
+} own_foot;
+
+static int consider(double v[2][FIT_NP], const piece *p, const double *P, const own_foot *f0, int branch_only,
+                    size_t i, double *dist, double *foot, int *side)
+{
+    /* pieces already searched: those at the foot (the distance is convex there) */
+    const double near = 2.0 * p->r;
+    if (p->curve == f0->curve && p->s1 >= f0->s - near && p->s0 <= f0->s + near) return EL_OK;
+    double d = HUGE_VAL, s = 0.0;
+    int st = piece_nearest(v[p->curve], p, P, branch_only, &d, &s);
+    if (!st && fabs(d) < fabs(dist[i])) {
+        dist[i] = d; foot[i] = s;
+        if (side) side[i] = p->curve;
+    }
+    return st;
+}
+
+/*
+ * When the search can be left out: a single curve whose tangent turns by at most pi/2
+ * (so |gamma(s) - gamma(s')| >= cos(pi/4) |s - s'|: a point nearer than d to P lies
+ * within arc length 2 sqrt 2 d of the foot found) and, smooth, whose curvature is at
+ * most 0.1 / d for the largest distance d (the distance is convex along the curve over
+ * that stretch: the foot found is the nearest point); the polygon's feet were searched
+ * over that stretch (fit_polygon_distances).
+ */
+static int feet_are_nearest(const fit_objective *o, const double *v, const double *V, size_t nv,
+                            const double *dist)
+{
+    if (o->map.ncurves != 1) return 0;
+    if (o->map.model == FIT_DISCRETE) {
+        /* the segments' directions in a cone of at most pi/2, lo counter-clockwise to hi,
+         * widened by a direction beyond either (cross products; consecutive directions
+         * less than pi/2 apart, dot > 0, else not proved: a new one lies within pi of the
+         * cone, so the signs tell its side) */
+        double lo[2] = {0.0, 0.0}, hi[2] = {0.0, 0.0}, pr[2] = {0.0, 0.0};
+        for (size_t j = 0; j + 1 < nv; j++) {
+            const double u[2] = {V[2 * j + 2] - V[2 * j], V[2 * j + 3] - V[2 * j + 1]};
+            if (j > 0) {
+                if (!(pr[0] * u[0] + pr[1] * u[1] > 0.0)) return 0;
+                if (hi[0] * u[1] - hi[1] * u[0] > 0.0) { hi[0] = u[0]; hi[1] = u[1]; }
+                else if (lo[0] * u[1] - lo[1] * u[0] < 0.0) { lo[0] = u[0]; lo[1] = u[1]; }
+                if (!(lo[0] * hi[1] - lo[1] * hi[0] >= 0.0 && lo[0] * hi[0] + lo[1] * hi[1] >= 0.0)) return 0;
+            } else {
+                lo[0] = hi[0] = u[0]; lo[1] = hi[1] = u[1];
+            }
+            pr[0] = u[0]; pr[1] = u[1];
+        }
+        return 1;
+    }
+    double dmax = 0.0, kmax = 0.0, tmin = HUGE_VAL, tmax = -HUGE_VAL;
+    for (size_t i = 0; i < o->n; i++) dmax = fmax(dmax, fabs(dist[i]));
+    enum { M = 129 };
+    double s[M], th[M], ka[M];
+    el_smooth_params p;
+    for (int j = 0; j < M; j++) s[j] = v[6] * j / (M - 1);
+    if (fit_to_smooth(v, &p) || el_smooth_eval(&p, M, s, NULL, th, ka)) return 0;
+    for (int j = 0; j < M; j++) {
+        tmin = fmin(tmin, th[j]); tmax = fmax(tmax, th[j]);
+        kmax = fmax(kmax, fabs(ka[j]));
+    }
+    /* between samples |kappa| may exceed its sampled maximum by one step's worth */
+    kmax *= 1.5;
+    return tmax - tmin <= 0.5 * M_PI && kmax * dmax <= 0.1;
+}
+
+/* A typical distance: the mean |d| of a spread sample of the n distances. */
+static double mean_distance(const double *dist, size_t n)
+{
+    const size_t step = n > 1024 ? n / 1024 : 1;
+    size_t cnt = 0;
+    double sum = 0.0;
+    for (size_t i = 0; i < n; i += step, cnt++) sum += fabs(dist[i]);
+    return sum / (double)cnt;
+}
+
+/*
+ * The discrete model's search elsewhere (fit_nearest_everywhere): each point's own
+ * search, fit_polygon_distances, covered the segments within arc length 2 sqrt 2 d of
+ * its foot (or proved them farther, d kappa <= 0.1); every other segment that can come
+ * nearer than d has its first vertex within d + lmax of the point (nearest_segment).
+ * The polygons are cut into runs of consecutive segments whose first vertices share a
+ * grid cell (of 8 max(mean |d|, lmax): a point's reach spans 1-2 cells per axis),
+ * bucketed by a hash of the cell (counting sort); a point visits the cells within that
+ * reach (every run when the cells outnumber the runs) and searches the runs there
+ * outside its own stretch. Exact (tests/c/test_fit_nearest.c: against every segment);
+ * O(n) for ordinary data.
+ */
+typedef struct polygon_query {
+    const double *P;
+    int own;                /* the point's curve, its stretch's segments x0 .. x1 - 1 */
+    long x0, x1;
+    double lmax, r, bd, bt; /* nearest_segment's; best: segment bj of curve bc */
+    long bj;
+    int bc;
+} polygon_query;
+
+/* The nearest segment of count runs ru (curve, first segment, end) to q->P, outside the
+ * point's own stretch. */
+static void search_runs(const double *V[2], const long *ru, size_t count, polygon_query *q)
+{
+    for (size_t e = 0; e < count; e++, ru += 3) {
+        const int c = (int)ru[0];
+        const long j0 = ru[1], j1 = ru[2];
+        const double was = q->bd;
+        /* the parts before and after the stretch (the whole run off the own curve) */
+        const long x0 = c == q->own ? q->x0 : j1, x1 = c == q->own ? q->x1 : j1;
+        nearest_segment(V[c], j0, j1 < x0 ? j1 : x0, q->P, q->lmax, &q->r, &q->bd, &q->bj, &q->bt);
+        nearest_segment(V[c], j0 > x1 ? j0 : x1, j1, q->P, q->lmax, &q->r, &q->bd, &q->bj, &q->bt);
+        if (q->bd < was) q->bc = c;
+    }
+}
+
+static int polygon_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const double *V[2],
+                                      const size_t nv[2], double *dist, double *foot, int *side)
+{
+    const int nc = o->map.ncurves;
+    long ns[2] = {0, 0};           /* segments of each curve */
+    double lmax = 0.0, inv_h[2] = {0.0, 0.0};
+    for (int c = 0; c < nc; c++) {
+        inv_h[c] = 1.0 / v[c][2];
+        if (nv[c] < 2) continue;
+        ns[c] = (long)nv[c] - 1;
+        const double l = longest_segment(V[c], nv[c]);
+        if (l > lmax) lmax = l;
+    }
+    const size_t nseg = (size_t)(ns[0] + ns[1]);
+    if (nseg == 0) return EL_OK;
+    const double inv = 1.0 / (8.0 * fmax(mean_distance(dist, o->n), lmax));      /* 1 / cell */
+    size_t nb = 1;
+    while (nb < nseg) nb *= 2;
+    /* the runs (curve, first segment, end) in order, their buckets; then sorted by bucket */
+    size_t *start = calloc(nb + 1, sizeof(size_t)), *key = malloc(sizeof(size_t) * nseg);
+    long *run = malloc(sizeof(long) * 3 * nseg), *sorted = malloc(sizeof(long) * 3 * nseg);
+    if (!start || !key || !run || !sorted) { free(start); free(key); free(run); free(sorted); return EL_ENOMEM; }
+    size_t nr = 0;
+    for (int c = 0; c < nc; c++) {
+        long ix = 0, iy = 0;
+        for (long j = 0; j < ns[c]; j++) {
+            const long jx = cell_index(V[c][2 * j] * inv), jy = cell_index(V[c][2 * j + 1] * inv);
+            if (j > 0 && jx == ix && jy == iy) { run[3 * nr - 1]++; continue; }
+            ix = jx; iy = jy;
+            run[3 * nr] = c; run[3 * nr + 1] = j; run[3 * nr + 2] = j + 1;
+            key[nr] = cell_hash(ix, iy, nb - 1);
+            start[key[nr] + 1]++;
+            nr++;
+        }
+    }
+    for (size_t b = 0; b < nb; b++) start[b + 1] += start[b];
+    for (size_t e = 0; e < nr; e++) memcpy(sorted + 3 * start[key[e]]++, run + 3 * e, sizeof(long) * 3);
+    for (size_t b = nb; b > 0; b--) start[b] = start[b - 1];
+    start[0] = 0;
+    for (size_t i = 0; i < o->n; i++) {
+        const double d0 = fabs(dist[i]);
+        if (!(d0 > 0.0)) continue;
+        double P[2];
+        point(o, i, P);
+        polygon_query q = {P, side ? side[i] : 0, 0, 0, lmax, reach_of(d0, lmax), HUGE_VAL, 0.0, -1, 0};
+        /* the stretch: segments j with j h >= foot - 2 sqrt 2 d and (j + 1) h <= foot + 2 sqrt 2 d
+         * (to rounding: fit_polygon_distances searched a segment more each way), held to
+         * the curve (NaN: none); ceil and floor of the non-negative bounds by truncation */
+        const double span = 2.0 * 1.4142135623730951 * d0, top = (double)ns[q.own];
+        double a = (foot[i] - span) * inv_h[q.own], b = (foot[i] + span) * inv_h[q.own];
+        a = a > 0.0 ? (a < top ? a : top) : 0.0;
+        b = b > 0.0 ? (b < top ? b : top) : 0.0;
+        q.x0 = (long)a + ((double)(long)a < a);
+        q.x1 = (long)b;
+        const long cx0 = cell_index((P[0] - q.r) * inv), cx1 = cell_index((P[0] + q.r) * inv);
+        const long cy0 = cell_index((P[1] - q.r) * inv), cy1 = cell_index((P[1] + q.r) * inv);
+        if ((double)(cx1 - cx0 + 1) * (double)(cy1 - cy0 + 1) > (double)nr) {
+            search_runs(V, run, nr, &q);     /* far: every run */
+        } else {
+            for (long ix = cx0; ix <= cx1; ix++)
+                for (long iy = cy0; iy <= cy1; iy++) {
+                    const size_t bk = cell_hash(ix, iy, nb - 1);
+                    search_runs(V, sorted + 3 * start[bk], start[bk + 1] - start[bk], &q);
+                }
+        }
+        if (q.bj < 0) continue;
+        const double d = segment_signed(V[q.bc] + 2 * q.bj, V[q.bc] + 2 * q.bj + 2, P, q.bt);
+        if (fabs(d) < d0) {
+            dist[i] = d;
+            foot[i] = v[q.bc][2] * ((double)q.bj + q.bt);
+            if (side) side[i] = q.bc;
+        }
+    }
+    free(start); free(key); free(run); free(sorted);
+    return EL_OK;
+}
+
+int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const double *V[2],
+                           const size_t nv[2], int branch_only, double *dist, double *foot, int *side)
+{
+    const int nc = o->map.ncurves;
+    const size_t n = o->n;
+    if (feet_are_nearest(o, v[0], V[0], nv[0], dist)) return EL_OK;
+    if (o->map.model == FIT_DISCRETE) return polygon_nearest_everywhere(o, v, V, nv, dist, foot, side);
+    const double len[2] = {v[0][6], nc > 1 ? v[1][6] : 0.0};
+    const double dmed = mean_distance(dist, n);
+    double dmax = 0.0;
+    for (size_t i = 0; i < n; i++)
+        if (fabs(dist[i]) > dmax) dmax = fabs(dist[i]);     /* fmax(dmax, |d|), not a call */
+    piece *pc = malloc(sizeof(piece) * 2 * MAX_PIECES);
+    grid *g = malloc(sizeof(grid));
+    unsigned *stamp = malloc(sizeof(unsigned) * 2 * MAX_PIECES);
+    double *sep = malloc(sizeof(double) * 2 * MAX_PIECES * SEP_LEVELS);
+    if (!pc || !g || !stamp || !sep) { free(pc); free(g); free(stamp); free(sep); return EL_ENOMEM; }
+    int np = 0, st = EL_OK, first[2] = {0, 0}, count[2] = {0, 0};
+    double rmax = 0.0;
+    for (int c = 0; c < nc && !st; c++) {
+        first[c] = np;
+        if (!(len[c] > 0.0)) continue;
+        const int m = (int)fmin(fmax(ceil(len[c] / (2.0 * dmed + 1e-300)), 8.0), (double)MAX_PIECES);
+        double ends[2 * (MAX_PIECES + 1)];
+        if ((st = curve_points(v[c], len[c], m, ends))) break;
+        for (int j = 0; j < m; j++) {
+            const double s0 = len[c] * j / m, s1 = len[c] * (j + 1) / m, *a = ends + 2 * j, *b = a + 2;
+            piece *p = &pc[np++];
+            p->cx = 0.5 * (a[0] + b[0]); p->cy = 0.5 * (a[1] + b[1]);
+            p->r = 0.5 * (s1 - s0); p->s0 = s0; p->s1 = s1; p->curve = c;
+            rmax = fmax(rmax, p->r);
+        }
+        count[c] = np - first[c];
+    }
+    if (!st && np > 0) {
+        memset(g->head, -1, sizeof g->head);
+        g->used = 0;
+        /* cells of the reach of the pair test below: a piece then looks at 3 x 3 cells */
+        g->cell = fmax(fmax(2.0 * rmax, 2.0 * dmed), 2.0 * dmax + 2.0 * rmax);
+        for (int j = 0; j < np; j++) {
+            if (!grid_add(g, &pc[j], j)) st = EL_EINTERNAL;
+            stamp[j] = 0;
+        }
+        for (int j = 0; j < np * SEP_LEVELS; j++) sep[j] = 0.0;
+        double reach_l[SEP_LEVELS];     /* 2 dmax / 2^l */
+        reach_l[0] = 2.0 * dmax;
+        for (int l = 1; l < SEP_LEVELS; l++) reach_l[l] = 0.5 * reach_l[l - 1];
+        /* for each piece the farthest (in arc length) part of the curve that comes within
+         * 2 dmax of it (another curve: HUGE_VAL): only a point whose foot is there and
+         * whose own search (a stretch of 2 sqrt 2 d around its foot) did not reach that
+         * part can have a nearer point elsewhere. (With the stretch of dmax for every
+         * point, a point nearer than dmax missed a loop passing 5.7 from it, measured.)
+         * The same within 2 dmax / 2^l, levels l = 1 .. SEP_LEVELS - 1 (sep[SEP_LEVELS j +
+         * l]): a point at distance d0 can only have a nearer point within 2 d0 of its foot,
+         * so it takes the level of the smallest reach still >= 2 d0 (the same argument,
+         * with its own distance for the largest one: most points of an open arc then need
+         * no search, as the parts within 2 d0 of their foot are next to it along the arc) */
+        const unsigned ptag = 0x80000000u;
+        for (int j = 0; j < np; j++) {
+            const piece *p = &pc[j];
+            const double R = 2.0 * dmax + p->r + rmax;
+            const long x0 = cell_index((p->cx - R) / g->cell), x1 = cell_index((p->cx + R) / g->cell);
+            const long y0 = cell_index((p->cy - R) / g->cell), y1 = cell_index((p->cy + R) / g->cell);
+            const int all = (double)(x1 - x0 + 1) * (double)(y1 - y0 + 1) > 4.0 * np;
+            for (long ix = x0; ix <= x1; ix++)
+                for (long iy = y0; iy <= y1; iy++)
+                    for (int e = all ? 0 : g->head[cell_hash(ix, iy, (1UL << HASH_BITS) - 1)]; all ? e < np : e >= 0; e = all ? e + 1 : g->next[e]) {
+                        const int q = all ? e : g->item[e];
+                        const piece *pq = &pc[q];
+                        if (stamp[q] == (ptag | (unsigned)j)) continue;
+                        stamp[q] = ptag | (unsigned)j;
+                        const double dx = pq->cx - p->cx, dy = pq->cy - p->cy, dd = dx * dx + dy * dy;
+                        const double a = pq->curve == p->curve ? fabs(0.5 * (pq->s0 + pq->s1 - p->s0 - p->s1)) : HUGE_VAL;
+                        for (int l = 0; l < SEP_LEVELS; l++) {
+                            const double reach = reach_l[l] + p->r + pq->r;
+                            if (dd >= reach * reach) break;          /* and the smaller reaches */
+                            double *sj = &sep[SEP_LEVELS * j + l], *sq = &sep[SEP_LEVELS * q + l];
+                            if (a > *sj) *sj = a;      /* fmax: sep is never NaN */
+                            if (a > *sq) *sq = a;
+                        }
+                    }
+        }
+        for (int j = 0; j < np; j++) stamp[j] = 0;
+        for (size_t i = 0; i < n && !st; i++) {
+            double P[2];
+            point(o, i, P);
+            const double d0 = fabs(dist[i]);
+            if (!(d0 > 0.0)) continue;
+            {   /* the foot's piece and its neighbours: near another part? */
+                const int c = side ? side[i] : 0;
+                if (count[c] == 0) continue;
+                /* first[c] + floor(foot / piece length) held to the curve's pieces (NaN: 0) */
+                const double at = foot[i] / (2.0 * pc[first[c]].r);
+                const int jf = first[c] + (at > 0.0 ? (at < count[c] - 1.0 ? (int)at : count[c] - 1) : 0);
+                const int lo = jf > first[c] ? jf - 1 : jf, hi = jf + 1 < first[c] + count[c] ? jf + 1 : jf;
+                int any = 0, l = 0;
+                while (l + 1 < SEP_LEVELS && reach_l[l + 1] >= 2.0 * d0) l++;
+                for (int j = lo; j <= hi; j++) any |= sep[SEP_LEVELS * j + l] > 2.0 * 1.4142135623730951 * d0 + 4.0 * rmax;
+                if (!any) continue;
+            }
+            const long x0 = cell_index((P[0] - d0) / g->cell), x1 = cell_index((P[0] + d0) / g->cell);
+            const long y0 = cell_index((P[1] - d0) / g->cell), y1 = cell_index((P[1] + d0) / g->cell);
+            const unsigned tag = (unsigned)i + 1u;
+            const own_foot f0 = {side ? side[i] : 0, foot[i]};
+            if ((double)(x1 - x0 + 1) * (double)(y1 - y0 + 1) > 4.0 * np) {   /* far: every piece */
+                for (int j = 0; j < np && !st; j++)
+                    if (disk_reaches(&pc[j], P, fabs(dist[i])))
+                        st = consider(v, &pc[j], P, &f0, branch_only, i, dist, foot, side);
+                continue;
+            }
+            for (long ix = x0; ix <= x1 && !st; ix++)
+                for (long iy = y0; iy <= y1 && !st; iy++)
+                    for (int e = g->head[cell_hash(ix, iy, (1UL << HASH_BITS) - 1)]; e >= 0 && !st; e = g->next[e]) {
+                        const int j = g->item[e];
+                        if (stamp[j] == tag) continue;
+                        stamp[j] = tag;
+                        if (disk_reaches(&pc[j], P, fabs(dist[i])))
+                            st = consider(v, &pc[j], P, &f0, branch_only, i, dist, foot, side);
+                    }
+        }
+    }
+    free(sep);
+    free(pc); free(g); free(stamp);
+    return st;
+}

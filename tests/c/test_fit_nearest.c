@@ -1,0 +1,178 @@
+/* The discrete fit's report (fit_nearest.c): each point's distance to the polygon and its
+ * foot, by fit_polygon_distances (the search near the point's vertex) and
+ * fit_nearest_everywhere (a nearer part elsewhere), against the brute-force nearest
+ * point (every segment, the first of equal distances) on equilateral polygons: arcs,
+ * loops, self-intersecting random walks, zigzags; sparse and dense polygons (spacing
+ * from 10 x the noise down to 1/300 of it), far points, scales 1e-6 .. 1e6. The same
+ * distance and foot, bit for bit. */
+#include "testutil.h"
+#include "fit_internal.h"
+#include <string.h>
+
+/* Whether (d, foot, side) is a nearest point of the polygons V[c] (nv[c] vertices,
+ * segment h, c < nc) to P, over every segment by the library's formula for one
+ * (fit_nearest.c): the signed distance (+ left of the segment's direction) and foot h (j + t)
+ * on curve side of a segment at the least squared distance (exact ties: a foot at a
+ * vertex is on two segments, each with its side). */
+static int brute_nearest(const double *const V[2], const size_t nv[2], int nc, double h, const double *P, double d,
+                         double foot, int side)
+{
+    double best = HUGE_VAL;
+    int found = 0;
+    for (int pass = 0; pass < 2; pass++)
+        for (int c = 0; c < nc; c++)
+            for (size_t j = 0; j + 1 < nv[c]; j++) {
+                const double *A = V[c] + 2 * j, *B = A + 2;
+                const double ux = B[0] - A[0], uy = B[1] - A[1], l2 = ux * ux + uy * uy;
+                const double px = P[0] - A[0], py = P[1] - A[1];
+                double t = l2 > 0.0 ? (px * ux + py * uy) / l2 : 0.0;
+                t = t > 0.0 ? (t < 1.0 ? t : 1.0) : 0.0;
+                const double dx = px - t * ux, dy = py - t * uy, d2 = dx * dx + dy * dy;
+                if (pass == 0) { if (d2 < best) best = d2; continue; }
+                if (d2 != best || c != side) continue;
+                const double ex = P[0] - A[0] - t * ux, ey = P[1] - A[1] - t * uy, r = sqrt(ex * ex + ey * ey);
+                found |= (ux * ey - uy * ex < 0.0 ? -r : r) == d && h * ((double)j + t) == foot;
+            }
+    return found;
+}
+
+enum { ARC, LOOPS, WALK, ZIGZAG, ELASTICA, SHAPES };
+static const char *const shape_name[SHAPES] = {"arc", "loops", "walk", "zigzag", "elastica"};
+
+/* An equilateral polygon of nv vertices, segment h, scaled by sc: its turning per vertex
+ * by shape (an arc of 80 degrees in all; 2.5 loops; a random walk of turns up to 0.5;
+ * alternate turns of +-2.5 with noise), or a discrete elastica (seed 000 (4.7)) of
+ * modulus k across 1, elliptic argument 2 .. 12 in all. */
+static void polygon(int shape, size_t nv, double h, double sc, unsigned long long *rng, double *V)
+{
+    double th = test_uniform(rng, -M_PI, M_PI), x = 0.0, y = 0.0;
+    if (shape == ELASTICA) {
+        static const double ks[] = {0.3, 0.999, 1.0, 1.001, 2.0, 30.0};
+        const double k = ks[(size_t)test_uniform(rng, 0.0, 6.0)];
+        const el_discrete_params p = {0.0, 0.0, sc * h, th, test_uniform(rng, 2.0, 12.0) / (double)nv,
+                                      test_uniform(rng, -2.0, 2.0), k};
+        ck_assert_int_eq(el_discrete_eval(&p, nv, V), EL_OK);
+        return;
+    }
+    for (size_t j = 0; j < nv; j++) {
+        V[2 * j] = sc * x; V[2 * j + 1] = sc * y;
+        x += h * cos(th); y += h * sin(th);
+        switch (shape) {
+        case ARC: th += 1.4 / (double)nv; break;
+        case LOOPS: th += 5.0 * M_PI / (double)nv * (1.0 + 0.3 * test_uniform(rng, -1, 1)); break;
+        case WALK: th += test_uniform(rng, -0.5, 0.5); break;
+        default: th += (j % 2 ? 2.5 : -2.5) + test_uniform(rng, -0.3, 0.3); break;
+        }
+    }
+}
+
+enum { N_MAX = 1000 };
+static const size_t sizes[] = {2, 3, 40, 300, N_MAX};
+static const double noise[] = {0.1, 1.0, 7.0, 300.0};   /* in units of the spacing h */
+static const double scales[] = {1e-6, 1.0, 1e6};
+
+/* Points i <-> vertex i of W (n, segment h, scaled by sc), off it by the noise (noise h)
+ * and one point in 50 far away (100 x the polygon's length). */
+static void noisy_points(const double *W, size_t n, double noise_h, double sc, unsigned long long *rng, double *xy)
+{
+    for (size_t i = 0; i < n; i++)
+        for (int k = 0; k < 2; k++)
+            xy[2 * i + k] = W[2 * i + k] + sc * (i % 50 == 7 ? 200.0 : noise_h) * test_normal(rng);
+}
+
+/* One polygon, point i <-> vertex i. */
+START_TEST(test_polygon_report_equals_brute_force)
+{
+    static double V[2 * N_MAX], xy[2 * N_MAX], d[N_MAX], fs[N_MAX], local[N_MAX];
+    unsigned long long rng = 7;
+    long searched = 0, moved = 0;
+    for (size_t a = 0; a < sizeof sizes / sizeof sizes[0]; a++)
+        for (int shape = 0; shape < SHAPES; shape++)
+            for (size_t b = 0; b < sizeof noise / sizeof noise[0]; b++)
+                for (size_t c = 0; c < sizeof scales / sizeof scales[0]; c++) {
+                    const size_t n = sizes[a];
+                    const double h = 2.0 / (double)n, sc = scales[c];
+                    polygon(shape, n, h, sc, &rng, V);
+                    noisy_points(V, n, noise[b] * h, sc, &rng, xy);
+                    const fit_map m = {.model = FIT_DISCRETE, .ncurves = 1};
+                    fit_objective o;
+                    ck_assert_int_eq(fit_objective_init(&o, FIT_PAIRED, &m, xy, n, 0.0, 0.0, 1.0, NULL), EL_OK);
+                    double v[2][FIT_NP] = {{0}};
+                    v[0][2] = sc * h;
+                    const double *Vc[2] = {V, NULL};
+                    const size_t nv[2] = {n, 0};
+                    fit_polygon_distances(&o, V, n, sc * h, 0, 1, d, fs);
+                    memcpy(local, fs, sizeof(double) * n);
+                    ck_assert_int_eq(fit_nearest_everywhere(&o, v, Vc, nv, 0, d, fs, NULL), EL_OK);
+                    for (size_t i = 0; i < n; i++) {
+                        ck_assert_msg(brute_nearest(Vc, nv, 1, sc * h, xy + 2 * i, d[i], fs[i], 0),
+                                      "%s n %zu noise %g scale %g point %zu: d %.17g foot %.17g not nearest",
+                                      shape_name[shape], n, noise[b], sc, i, d[i], fs[i]);
+                        moved += fs[i] != local[i];
+                    }
+                    searched += (long)n;
+                    fit_objective_free(&o);
+                }
+    /* the search elsewhere is exercised: some feet are not where the local search ended */
+    ck_assert_int_gt(moved, searched / 100);
+}
+END_TEST
+
+/* A keyline's two polygons from the joint, vertex j of the first <-> point js - j, of
+ * the second <-> point js + j, each point's foot first on its own side (as fit_keyline.c
+ * does): the nearest point of both, and its side. */
+START_TEST(test_keyline_report_equals_brute_force)
+{
+    static double W[2 * N_MAX], V0[2 * N_MAX], V1[2 * N_MAX], xy[2 * N_MAX], d[N_MAX], fs[N_MAX];
+    static int sd[N_MAX];
+    unsigned long long rng = 8;
+    long searched = 0, crossed = 0;
+    for (size_t a = 2; a < sizeof sizes / sizeof sizes[0]; a++)
+        for (int shape = 0; shape < SHAPES; shape++)
+            for (size_t b = 0; b < sizeof noise / sizeof noise[0]; b++)
+                for (size_t c = 0; c < sizeof scales / sizeof scales[0]; c++) {
+                    const size_t n = sizes[a], js = n / 3;
+                    const double h = 2.0 / (double)n, sc = scales[c];
+                    polygon(shape, n, h, sc, &rng, W);
+                    for (size_t j = 0; j <= js; j++) { V0[2 * j] = W[2 * (js - j)]; V0[2 * j + 1] = W[2 * (js - j) + 1]; }
+                    memcpy(V1, W + 2 * js, sizeof(double) * 2 * (n - js));
+                    noisy_points(W, n, noise[b] * h, sc, &rng, xy);
+                    const fit_map m = {.model = FIT_DISCRETE, .ncurves = 2};
+                    fit_objective o;
+                    ck_assert_int_eq(fit_objective_init(&o, FIT_PAIRED, &m, xy, n, 0.0, 0.0, 1.0, NULL), EL_OK);
+                    double v[2][FIT_NP] = {{0}};
+                    v[0][2] = v[1][2] = sc * h;
+                    const double *Vc[2] = {V0, V1};
+                    const size_t nv[2] = {js + 1, n - js};
+                    fit_polygon_distances(&o, V0, nv[0], sc * h, js, -1, d, fs);
+                    const double dj = d[js], fj = fs[js];
+                    fit_polygon_distances(&o, V1, nv[1], sc * h, js, 1, d, fs);
+                    for (size_t i = 0; i < n; i++) sd[i] = i > js || (i == js && fabs(d[js]) < fabs(dj));
+                    if (sd[js] == 0) { d[js] = dj; fs[js] = fj; }
+                    ck_assert_int_eq(fit_nearest_everywhere(&o, v, Vc, nv, 0, d, fs, sd), EL_OK);
+                    for (size_t i = 0; i < n; i++) {
+                        ck_assert_msg(brute_nearest(Vc, nv, 2, sc * h, xy + 2 * i, d[i], fs[i], sd[i]),
+                                      "%s n %zu noise %g scale %g point %zu: d %.17g foot %.17g side %d not nearest",
+                                      shape_name[shape], n, noise[b], sc, i, d[i], fs[i], sd[i]);
+                        crossed += sd[i] != (i > js);
+                    }
+                    searched += (long)n;
+                    fit_objective_free(&o);
+                }
+    /* some points are nearest the other side */
+    ck_assert_int_gt(crossed, searched / 100);
+}
+END_TEST
+
+static Suite *suite(void)
+{
+    Suite *s = suite_create("fit_nearest");
+    TCase *tc = tcase_create("core");
+    tcase_set_timeout(tc, 60);
+    tcase_add_test(tc, test_polygon_report_equals_brute_force);
+    tcase_add_test(tc, test_keyline_report_equals_brute_force);
+    suite_add_tcase(s, tc);
+    return s;
+}
+
+int main(void) { return test_run_suite(suite()); }
