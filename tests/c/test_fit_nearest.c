@@ -1,10 +1,10 @@
-/* The discrete fit's report (fit_nearest.c): each point's distance to the polygon and its
+/* The fit's report (fit_nearest.c). Discrete: each point's distance to the polygon and its
  * foot, by fit_polygon_distances (the search near the point's vertex) and
  * fit_nearest_everywhere (a nearer part elsewhere), against the brute-force nearest
  * point (every segment, the first of equal distances) on equilateral polygons: arcs,
  * loops, self-intersecting random walks, zigzags; sparse and dense polygons (spacing
  * from 10 x the noise down to 1/300 of it), far points, scales 1e-6 .. 1e6. The same
- * distance and foot, bit for bit. */
+ * distance and foot, bit for bit. Smooth: against dense samples of the curve (below). */
 #include "testutil.h"
 #include "fit_internal.h"
 #include <string.h>
@@ -164,6 +164,71 @@ START_TEST(test_keyline_report_equals_brute_force)
 }
 END_TEST
 
+/* The smooth model: each point's foot by Newton from where the curve was sampled
+ * (fit_feet_distances) and then fit_nearest_everywhere, against the nearest of dense
+ * samples (50001 per curve, which are never nearer than the nearest point): tight loops
+ * (kappa_max up to 20 / length unit) and points scattered from 1/700 to 7 x the loops'
+ * radius of curvature off the curve, scales 1e-3 .. 1e3. Every distance no larger
+ * than the sampled nearest (and it is the distance of the foot's point). On the former
+ * search (Newton from the middle of pieces that turn by up to 5 rad, the foot's
+ * neighbourhood left out where the distance is not convex there) 329 of 9600 such points
+ * were up to 0.2 % of the length too far. */
+START_TEST(test_smooth_report_against_dense_samples)
+{
+    enum { N = 200, M = 50001 };
+    static double xy[2 * N], d[N], fs[N], f0[N], s[N], S[M], C[2 * M];
+    const double ks[] = {0.7, 1.3, 2.5, 5.0}, mus[] = {1.0, 4.0}, noises[] = {0.02, 0.3, 1.0}, scs[] = {1e-3, 1.0, 1e3};
+    unsigned long long rng = 99;
+    long moved = 0;
+    for (size_t a = 0; a < 4; a++)
+        for (size_t b = 0; b < 2; b++)
+            for (size_t c = 0; c < 3; c++)
+                for (size_t e = 0; e < 3; e++) {
+                    const double sc = scs[e];
+                    const double v[FIT_NP] = {0.2 * sc, -0.1 * sc, 0.3, sqrt(mus[b]) / sc, ks[a], 0.2, 14.0 * sc};
+                    el_smooth_params p;
+                    ck_assert_int_eq(fit_to_smooth(v, &p), EL_OK);
+                    for (size_t i = 0; i < N; i++) s[i] = v[6] * (double)i / (N - 1);
+                    ck_assert_int_eq(el_smooth_eval(&p, N, s, xy, NULL, NULL), EL_OK);
+                    for (size_t i = 0; i < 2 * N; i++) xy[i] += sc * noises[c] * test_uniform(&rng, -1.0, 1.0);
+                    for (size_t j = 0; j < M; j++) S[j] = v[6] * (double)j / (M - 1);
+                    ck_assert_int_eq(el_smooth_eval(&p, M, S, C, NULL, NULL), EL_OK);
+                    fit_map m;
+                    memset(&m, 0, sizeof m);
+                    m.model = FIT_SMOOTH;
+                    m.ncurves = 1;
+                    for (int j = 0; j < FIT_NP; j++) { m.scale[j] = 1.0; m.idx[m.nx++] = j; }
+                    fit_objective o;
+                    ck_assert_int_eq(fit_objective_init(&o, FIT_ORTHOGONAL, &m, xy, N, 0.0, 0.0, 1.0, NULL), EL_OK);
+                    double x[FIT_MAXX], vv[2][FIT_NP];
+                    fit_map_inverse(&m, v, x);
+                    memcpy(vv[0], v, sizeof vv[0]);
+                    const double *V[2] = {NULL, NULL};
+                    const size_t nv[2] = {N, 0};
+                    memcpy(o.s, s, sizeof s);
+                    ck_assert_int_eq(fit_feet_distances(&o, x, d, fs, NULL), EL_OK);
+                    memcpy(f0, fs, sizeof fs);
+                    ck_assert_int_eq(fit_nearest_everywhere(&o, vv, V, nv, 0, d, fs, NULL), EL_OK);
+                    for (size_t i = 0; i < N; i++) {
+                        double best = HUGE_VAL, F[2];
+                        for (size_t j = 0; j < M; j++) {
+                            const double dx = C[2 * j] - xy[2 * i], dy = C[2 * j + 1] - xy[2 * i + 1];
+                            best = fmin(best, dx * dx + dy * dy);
+                        }
+                        ck_assert_msg(fabs(d[i]) <= sqrt(best) + 1e-12 * sc,
+                                      "k %g mu %g noise %g scale %g point %zu: d %.17g, a sample at %.17g",
+                                      ks[a], mus[b], noises[c], sc, i, fabs(d[i]), sqrt(best));
+                        ck_assert_int_eq(el_smooth_eval(&p, 1, &fs[i], F, NULL, NULL), EL_OK);
+                        ck_assert_double_eq_tol(hypot(F[0] - xy[2 * i], F[1] - xy[2 * i + 1]), fabs(d[i]), 1e-12 * sc);
+                        moved += fabs(fs[i] - f0[i]) > 1e-6 * v[6];
+                    }
+                    fit_objective_free(&o);
+                }
+    /* the search elsewhere is exercised: feet moved to another pass */
+    ck_assert_int_gt(moved, 100);
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("fit_nearest");
@@ -171,6 +236,7 @@ static Suite *suite(void)
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, test_polygon_report_equals_brute_force);
     tcase_add_test(tc, test_keyline_report_equals_brute_force);
+    tcase_add_test(tc, test_smooth_report_against_dense_samples);
     suite_add_tcase(s, tc);
     return s;
 }
