@@ -736,21 +736,22 @@ int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const do
             point(o, i, P);
             const double d0 = fabs(dist[i]);
             if (!(d0 > 0.0)) continue;
-            {   /* the foot's piece and its neighbours: near another part? (unless the
-                 * point is too far for the distance's convexity: dense_nearest) */
-                const int c = side ? side[i] : 0;
-                if (count[c] == 0) continue;
-                if (dense[c].xy && kmax[c] * d0 > DENSE_KD) goto search;
+            const int c = side ? side[i] : 0;
+            if (count[c] == 0) continue;
+            if (!(dense[c].xy && kmax[c] * d0 > DENSE_KD)) {
+                /* the foot's piece and its neighbours: near another part? (not asked where
+                 * the point is too far for the distance's convexity: dense_nearest). A
+                 * part at separation a from their middles has points within a + 4 rmax
+                 * of the foot along the curve. */
                 /* first[c] + floor(foot / piece length) held to the curve's pieces (NaN: 0) */
                 const double at = foot[i] / (2.0 * pc[first[c]].r);
                 const int jf = first[c] + (at > 0.0 ? (at < count[c] - 1.0 ? (int)at : count[c] - 1) : 0);
                 const int lo = jf > first[c] ? jf - 1 : jf, hi = jf + 1 < first[c] + count[c] ? jf + 1 : jf;
                 int any = 0, l = 0;
                 while (l + 1 < SEP_LEVELS && reach_l[l + 1] >= 2.0 * d0) l++;
-                for (int j = lo; j <= hi; j++) any |= sep[SEP_LEVELS * j + l] > 2.0 * 1.4142135623730951 * d0 + 4.0 * rmax;
+                for (int j = lo; j <= hi; j++) any |= sep[SEP_LEVELS * j + l] + 4.0 * rmax > 2.0 * 1.4142135623730951 * d0;
                 if (!any) continue;
             }
-        search:;
             const long x0 = cell_index((P[0] - d0) / g->cell), x1 = cell_index((P[0] + d0) / g->cell);
             const long y0 = cell_index((P[1] - d0) / g->cell), y1 = cell_index((P[1] + d0) / g->cell);
             const unsigned tag = (unsigned)i + 1u;
