@@ -85,9 +85,11 @@ $(BUILD)/obj/%.o: libelastica/%.c include/elastica.h $(wildcard libelastica/*.h)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_BASE) $(OPT_CFLAGS) $(DEPS_CFLAGS) $(EXTRA_CFLAGS) -c $< -o $@
 
-# libelastica.so -> libelastica.so.0 (the soname) -> libelastica.so.0.1.0 (the file)
-$(BUILD)/libelastica.so: $(LIB_OBJ)
-	$(CC) -shared -Wl,-soname,$(SONAME) $(EXTRA_CFLAGS) -o $(BUILD)/libelastica.so.$(VERSION) $^ $(DEPS_LIBS)
+# libelastica.so -> libelastica.so.0 (the soname) -> libelastica.so.0.1.0 (the file);
+# it exports the API only (libelastica/exports.map)
+$(BUILD)/libelastica.so: $(LIB_OBJ) libelastica/exports.map
+	$(CC) -shared -Wl,-soname,$(SONAME) -Wl,--version-script=libelastica/exports.map $(EXTRA_CFLAGS) \
+	  -o $(BUILD)/libelastica.so.$(VERSION) $(LIB_OBJ) $(DEPS_LIBS)
 	ln -sf libelastica.so.$(VERSION) $(BUILD)/$(SONAME)
 	ln -sf $(SONAME) $@
 
@@ -305,6 +307,11 @@ check-install: lib
 	PKG_CONFIG_PATH=$(BUILD)/stage/lib/pkgconfig $(CC) -std=c99 -Wall -Werror examples/readme_example.c \
 	  $$(PKG_CONFIG_PATH=$(BUILD)/stage/lib/pkgconfig pkg-config --cflags --libs elastica) -o $(BUILD)/readme_example
 	LD_LIBRARY_PATH=$(BUILD)/stage/lib $(BUILD)/readme_example
+	@# the installed shared library exports the API only (el_ and a letter), so no
+	@# function of a program that uses it can replace one of the library's own
+	@so=$$(nm -D --defined-only $(BUILD)/stage/lib/libelastica.so | awk '{print $$3}' | grep -v '^el_[a-z]' || true); \
+	if [ -n "$$so" ]; then echo "check-install: libelastica.so exports internal symbols:" $$so; exit 1; fi
+	@echo "check-install: libelastica.so exports $$(nm -D --defined-only $(BUILD)/stage/lib/libelastica.so | grep -c ' el_') symbols, all el_*"
 
 clean:
 	rm -rf build build-* out
