@@ -341,7 +341,7 @@ static int piece_nearest(const double *v, const piece *p, const double *P, int b
  * tangent turns by at most 0.1 between them: Newton from every sample where the sampled
  * distance has a local minimum below d0 (plus the sampling's error), the nearest kept.
  */
-enum { DENSE_MAX = 1 << 16 };
+enum { DENSE_MAX = 1 << 14 };
 #define DENSE_KD 0.25   /* kappa_max d above which a point's search is dense_nearest's */
 
 typedef struct dense_samples {
@@ -391,9 +391,12 @@ static double dense_lower_bound(const dense_samples *ds, size_t j, double h, con
 }
 
 /* Point i against the samples of [s0, s1]: Newton's steps, held to the neighbouring
- * samples, from each local minimum of the sampled distance whose interval can hold a
+ * samples, from the local minima of the sampled distance whose interval can hold a
  * nearer point than the distance so far (a sample is at most h/2 farther than the
- * nearest point of its interval; then dense_lower_bound), except the foot's own. */
+ * nearest point of its interval; then dense_lower_bound), except the foot's own: the
+ * DENSE_TRIES nearest of them, nearest first, each tested again against the distance
+ * the ones before reached (bounded work where the samples are coarse: many minima). */
+enum { DENSE_TRIES = 8 };
 static int dense_nearest(const double *v, dense_samples *ds, double s0, double s1, const double *P, size_t i,
                          double *dist, double *foot, int *side)
 {
@@ -402,6 +405,9 @@ static int dense_nearest(const double *v, dense_samples *ds, double s0, double s
     const double a = floor(s0 / h) - 1.0, b = ceil(s1 / h) + 1.0, last = (double)(ds->m - 1);
     if (!(a <= b)) return EL_OK;
     const size_t j0 = a > 0.0 ? (a < last ? (size_t)a : ds->m - 1) : 0, j1 = b > 0.0 ? (b < last ? (size_t)b : ds->m - 1) : 0;
+    size_t cj[DENSE_TRIES];
+    double cd[DENSE_TRIES];
+    int nc = 0;
     double d2[3] = {HUGE_VAL, 0.0, 0.0};    /* samples j - 1, j, j + 1 */
     d2[1] = (C[2 * j0] - P[0]) * (C[2 * j0] - P[0]) + (C[2 * j0 + 1] - P[1]) * (C[2 * j0 + 1] - P[1]);
     for (size_t j = j0; j <= j1; j++) {
@@ -415,18 +421,26 @@ static int dense_nearest(const double *v, dense_samples *ds, double s0, double s
         /* the foot found so far is its own interval's minimum */
         const int own = (side ? side[i] : 0) == ds->curve && fabs(h * (double)j - foot[i]) <= h;
         if (inside && !own && d2[1] <= d2[0] && d2[1] <= d2[2] && d2[1] < lim * lim &&
-            dense_lower_bound(ds, j, h, P, d2[1]) < dist[i] * dist[i]) {
-            const double u = h * (double)j;
-            double d = HUGE_VAL, s = 0.0;
-            const int st = newton_nearest(v, u, fmax(u - h, 0.0), fmin(u + h, ds->len), P, 0, &d, &s);
-            if (st) return st;
-            if (fabs(d) < fabs(dist[i])) {
-                dist[i] = d; foot[i] = s;
-                if (side) side[i] = ds->curve;
-            }
+            (nc < DENSE_TRIES || d2[1] < cd[nc - 1])) {
+            /* into the candidates, ascending (the last one out when full) */
+            int k = nc < DENSE_TRIES ? nc++ : nc - 1;
+            for (; k > 0 && cd[k - 1] > d2[1]; k--) { cd[k] = cd[k - 1]; cj[k] = cj[k - 1]; }
+            cd[k] = d2[1];
+            cj[k] = j;
         }
         d2[0] = d2[1];
         d2[1] = d2[2];
+    }
+    for (int k = 0; k < nc; k++) {
+        if (!(dense_lower_bound(ds, cj[k], h, P, cd[k]) < dist[i] * dist[i])) continue;
+        const double u = h * (double)cj[k];
+        double d = HUGE_VAL, s = 0.0;
+        const int st = newton_nearest(v, u, fmax(u - h, 0.0), fmin(u + h, ds->len), P, 0, &d, &s);
+        if (st) return st;
+        if (fabs(d) < fabs(dist[i])) {
+            dist[i] = d; foot[i] = s;
+            if (side) side[i] = ds->curve;
+        }
     }
     return EL_OK;
 }
