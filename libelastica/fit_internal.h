@@ -188,14 +188,14 @@ static inline double fit_foot_step(double t, double e, double kappa, double rang
 }
 /* The feet's range [lo, hi]: the curve itself, or extended (the objective's). */
 void fit_feet_range(const fit_objective *o, double v[2][FIT_NP], int extended, double *lo, double *hi);
-/* Smooth: each point's distance and foot on the curve at x (v its parameters): Newton
- * from the current feet, then the nearest point anywhere (fit_nearest_everywhere). */
-int fit_smooth_nearest(fit_objective *o, const double *x, double v[2][FIT_NP], int branch_only, double *d,
-                       double *fs);
 /* Smooth orthogonal, one curve, o->rest and o->rest_foot set (fit.c's buffers): the first
  * feet of a fit from x, each where the curve at x comes nearest (else at t_i L); an error
  * only when that curve cannot be evaluated. */
 int fit_feet_start(fit_objective *o, const double *x);
+/* Smooth, one curve: the m feet sig[k] of the points pt[k] by Newton's method from
+ * sig[k] to the nearest points in [0, L], with their signed distances dist[k]. */
+int fit_feet_project_list(const fit_objective *o, double v[2][FIT_NP], const size_t *pt, size_t m, double *sig,
+                          double *dist);
 /* Signed distances (left of the curve positive), feet (arc length; for the keyline from
  * the joint) and sides (keyline; may be NULL) of every point at x, normalised units:
  * the feet projected from o->s (which keeps the objective's feet). */
@@ -213,6 +213,18 @@ void fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, d
  * order, instead of at 1e-14 with a fresh evaluation of the foot reported. */
 int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const double *V[2],
                            const size_t nv[2], int branch_only, double *dist, double *foot, int *side);
+
+/* fit_refit.c: the distances and feet (normalised) of every point to the kept curve x
+ * (v its parameters), near each point's own place, then wherever the curve comes nearer;
+ * projected (smooth): d, fs hold the first already (fit_feet_distances at x); tmp:
+ * FIT_WORK doubles. */
+int fit_curve_distances(fit_objective *ob, const double *x, double v[2][FIT_NP], int projected, double *d,
+                        double *fs, double *tmp);
+/* fit_refit.c: the smooth distances d and feet fs of the points at x (v its parameters,
+ * one curve), the feet projected from o->s, then those found nearer on another pass of
+ * the curve from its samples (*moved of them whose foot in o->s lies on [0, L]). */
+int fit_feet_elsewhere(fit_objective *o, const double *x, double v[2][FIT_NP], double *d, double *fs,
+                       size_t *moved);
 
 /* Normalisation shared with guess.c: centroid and rms radius of the points;
  * EL_ESINGULAR (all equal), EL_EDOM (a spread below ~1e-292 or beyond double's range). */
