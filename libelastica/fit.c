@@ -529,9 +529,10 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
          * bench_fit.py's 42 noisy 1000-point smooth curves: 19 refitted, one's moved feet
          * 110, 43, 12, 5, 2 in turn), so the rounds are cheap ones while they find feet
          * elsewhere: the feet from the curve's samples (fit_feet_elsewhere, each verified
-         * nearer), the refit by Levenberg-Marquardt alone, stopped at LOOSE_TOL and
-         * certified once at the end; then the search everywhere (the report's) for what
-         * they missed; none after FEET_ROUNDS refits by that search (a fit left with feet
+         * nearer; only once a sampled search, the start's, has seen other passes near the
+         * points or the search everywhere has found feet elsewhere), the refit by
+         * Levenberg-Marquardt alone, stopped at LOOSE_TOL and certified once at the end;
+         * then the search everywhere (the report's) for what they missed; none after FEET_ROUNDS refits by that search (a fit left with feet
          * elsewhere that the samples do not show would be refitted to the wrong feet).
          * Measured on those 42 (callgrind, with fit_feet_start's sampled search):
          * 3.17e9 -> 1.84e9 instructions (before any refit 1.30e9), 15 rms lower (by up
@@ -541,7 +542,8 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
         const int may_refit = ok && refit && ob.rest && isfinite(best.f) && best.f > FIT_EXACT_F && map.nx > 0;
         size_t moved = 0;
         int projected = 0;
-        if (may_refit && last_is_best && sampling && sampled < SAMPLED_ROUNDS && round < FEET_ROUNDS && !best.used_ipopt) {
+        if (may_refit && last_is_best && sampling && ob.other_passes && sampled < SAMPLED_ROUNDS && round < FEET_ROUNDS &&
+            !best.used_ipopt) {
             if ((st = fit_feet_elsewhere(&ob, best.x, v, d, fs, &moved)) == EL_ENOMEM) goto done;
             projected = st == EL_OK;
         }
@@ -581,6 +583,7 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
             }
             if (!elsewhere) break;
             round++;
+            ob.other_passes = 1;
         }
         memcpy(ob.s + 1, fs + 1, sizeof(double) * (n - 2));
         ob.s[0] = 0.0;

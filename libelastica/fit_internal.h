@@ -139,6 +139,9 @@ typedef struct fit_objective {
      * (the report after the fit: one evaluation of every point fewer) */
     double *rest, *rest_foot, rest_x[FIT_MAXX];
     int rest_ok;
+    /* smooth orthogonal: a sampled search for feet on another pass (fit_feet_elsewhere)
+     * has seen a pass within reach of a point, other than its own (fit_objective_init: 0) */
+    int other_passes;
     size_t split;                /* discrete keyline: the data index of the joint */
     double *work;                /* block buffers */
     /* discrete orthogonal: the polygon (2n), distances and feet (n each) of the last

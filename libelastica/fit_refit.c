@@ -63,7 +63,8 @@ static double dist2(const double *a, const double *P)
  * of the CANDS nearest such samples Newton's method to its foot, the nearest foot taken
  * when nearer than |d| and more than 1e-3 L away (fit.c's test of a foot elsewhere). Those points' d, fs
  * are then the nearer ones; *moved counts those whose foot in o->s lies on [0, L] (a
- * foot on the extension beyond an end is moved, not counted: fit.c's test). A pass
+ * foot on the extension beyond an end is moved, not counted: fit.c's test); a candidate
+ * sets o->other_passes. A pass
  * narrower than ~2 h, or a minimum that Newton's method misses from its sample, is not
  * found: the search everywhere (fit_nearest_everywhere, the report's) decides at the end.
  */
@@ -144,6 +145,7 @@ int fit_feet_elsewhere(fit_objective *o, const double *x, double v[2][FIT_NP], d
                 }
             for (size_t r = 0; r < k; r++) cp[nc + r] = i;
             nc += k;
+            o->other_passes |= k > 0;
         }
         if (nc == 0 || (st = fit_feet_project_list(o, v, cp, nc, cs, cd))) continue;
         for (size_t r = 0; r < nc;) {           /* point i's candidates: r .. r2-1 */
