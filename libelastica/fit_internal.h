@@ -20,6 +20,7 @@
 
 enum {
     FIT_NP = 7,        /* parameters of one curve */
+    FIT_PIECES = 128,  /* fit_feet_unproven's pieces of the curve */
     FIT_MAXX = 9,      /* optimiser variables at most (the keyline's joint problem) */
     FIT_BLOCK = 256,   /* samples per block of the streamed Jacobian */
     FIT_NCON = 6,      /* constraint rows at most */
@@ -228,6 +229,12 @@ int fit_curve_distances(fit_objective *ob, const double *x, double v[2][FIT_NP],
  * the curve from its samples (*moved of them whose foot in o->s lies on [0, L]). */
 int fit_feet_elsewhere(fit_objective *o, const double *x, double v[2][FIT_NP], double *d, double *fs,
                        size_t *moved);
+/* fit_refit.c, one smooth curve v: unproven[i] = 1 for the inner points whose feet fs
+ * (distances d, Newton's) the proof of fit_feet_elsewhere does not show the nearest points
+ * (their count *nopen; 0 at the ends), and mark[j] = 1 for the FIT_PIECES pieces of
+ * length L / FIT_PIECES that can hold a point nearer to one of them. */
+int fit_feet_unproven(const fit_objective *o, double v[2][FIT_NP], const double *d, const double *fs,
+                      unsigned char *unproven, size_t *nopen, unsigned char mark[FIT_PIECES]);
 
 /* Normalisation shared with guess.c: centroid and rms radius of the points;
  * EL_ESINGULAR (all equal), EL_EDOM (a spread below ~1e-292 or beyond double's range). */
