@@ -61,20 +61,19 @@ static void point(const fit_objective *o, size_t i, double *P)
 }
 
 /*
- * The feet sig[g] (g = the points a .. a+m-1) to the nearest points in [lo, hi], and
- * when dist != NULL the signed distances (+ = left of the curve's own direction). Newton's method; once a step u is below 1e-7 of the range the foot is
- * sigma + u and, with gamma - P = t T + e N at sigma, the distance follows from
+ * The feet sig[k] of the entries k in act[0 .. na-1] (entry k: the foot of point pt[k],
+ * or of point k when pt is NULL) to the nearest points in [lo, hi], and when dist !=
+ * NULL their signed distances dist[k] (+ = left of the curve's own direction). Newton's
+ * method; once a step u is below 1e-7 of the range the foot is sigma + u and, with
+ * gamma - P = t T + e N at sigma, the distance follows from
  *   gamma(sigma + u) - P = (t + u) T + (e + kappa u^2 / 2) N + O(u^3)
  * (exact for u = 0, a foot held at an end of the range), so the converged feet cost no
- * further evaluation.
+ * further evaluation. act (at most FIT_BLOCK entries) is overwritten.
  */
-static int project_block(const fit_objective *o, double v[2][FIT_NP], size_t a, size_t m,
-                         double *sig, double lo, double hi, double *dist, int keep_rest)
+static int project_entries(const fit_objective *o, double v[2][FIT_NP], size_t *act, size_t na, const size_t *pt,
+                           double *sig, double lo, double hi, double *dist)
 {
     double cur[FIT_BLOCK];
-    size_t act[FIT_BLOCK], na = 0;
-    for (size_t i = 0; i < m; i++)
-        if (!keep_rest || isnan(dist[a + i])) act[na++] = a + i;
     const double tol = 1e-7 * (hi - lo + 1e-300);
     feet_block b;
     for (int it = 0; it < NEWTON_MAX && na > 0; it++) {
@@ -85,7 +84,7 @@ static int project_block(const fit_objective *o, double v[2][FIT_NP], size_t a, 
         size_t keep = 0;
         for (size_t i = 0; i < na; i++) {
             double P[2];
-            point(o, act[i], P);
+            point(o, pt ? pt[act[i]] : act[i], P);
             const double dx = b.xy[2 * i] - P[0], dy = b.xy[2 * i + 1] - P[1];
             const double Tx = b.T[2 * i], Ty = b.T[2 * i + 1];
             const double t = b.dirs[i] * (Tx * dx + Ty * dy);     /* d/dsigma of |gamma - P|^2 / 2 */
@@ -103,6 +102,17 @@ static int project_block(const fit_objective *o, double v[2][FIT_NP], size_t a, 
         na = keep;
     }
     return EL_OK;
+}
+
+/* The feet sig[g] of the points g = a .. a+m-1 (m <= FIT_BLOCK), with keep_rest only
+ * those whose dist[g] is NaN (project_entries). */
+static int project_block(const fit_objective *o, double v[2][FIT_NP], size_t a, size_t m,
+                         double *sig, double lo, double hi, double *dist, int keep_rest)
+{
+    size_t act[FIT_BLOCK], na = 0;
+    for (size_t i = 0; i < m; i++)
+        if (!keep_rest || isnan(dist[a + i])) act[na++] = a + i;
+    return project_entries(o, v, act, na, NULL, sig, lo, hi, dist);
 }
 
 /* The feet's range: the curve over [0, L] (keyline: sigma in [-L1, L2]) for distances;
@@ -166,27 +176,19 @@ int fit_feet_distances(fit_objective *o, const double *x, double *dist, double *
     return EL_OK;
 }
 
-/* Each point's distance to the smooth curve at x (v: its parameters, fit_map_eval) and
- * its foot: Newton from the current feet (fit_feet_distances), then the nearest point
- * anywhere on the curve (fit_nearest_everywhere; branch_only as there). */
-int fit_smooth_nearest(fit_objective *o, const double *x, double v[2][FIT_NP], int branch_only, double *d,
-                       double *fs)
-{
-    const double *V[2] = {NULL, NULL};
-    const size_t nv[2] = {o->n, 0};
-    const int st = fit_feet_distances(o, x, d, fs, NULL);
-    return st ? st : fit_nearest_everywhere(o, v, V, nv, branch_only, d, fs, NULL);
-}
-
 /*
  * The smooth orthogonal fit's first feet for the curve at x: each where that curve comes
  * nearest (loops, sparse points: not always near the point's place), so the fit starts
  * from the curve's own point-to-curve distances and only improves on them; the
  * fractions' places t_i L if that search fails. Only the branch of each foot matters
  * here (the fit moves the feet by Newton steps at every evaluation and certifies them at
- * rest): the search elsewhere stops at a step of 1e-7 of the length (branch_only;
- * measured on the 42 noisy 1000-point curves of bench_fit.py: 12 % fewer instructions,
- * every rms the same to 1e-9, one 2e-8 lower).
+ * rest): the passes the curve's samples show (fit_feet_elsewhere; a pass it misses is
+ * the refit's, fit.c), none sampled where a foot is proven the nearest point (an open
+ * arc: fit_feet_unproven). The search everywhere took more on loops (measured on the 42
+ * noisy 1000-point smooth curves of bench_fit.py: 428M instructions against 169M, one
+ * loop's 20.3M against 5.6M); on open arcs the samples of every pass cost more than it
+ * (2.0M against 3.1M), the proof less (whole fits of 45 open and looped arcs of 20 -
+ * 5000 points against main's: none above +2 % but one spiral's +3.5 %).
  */
 int fit_feet_start(fit_objective *o, const double *x)
 {
@@ -197,10 +199,26 @@ int fit_feet_start(fit_objective *o, const double *x)
     for (size_t i = 0; i < o->n; i++) o->s[i] = o->t[i] * v[0][6];
     double *d = o->rest, *fs = o->rest_foot;    /* the report's arrays (fit_run) */
     o->rest_ok = 0;
-    if (fit_smooth_nearest(o, x, v, 1, d, fs) == EL_OK) {
+    size_t moved;
+    if (fit_feet_elsewhere(o, x, v, d, fs, &moved) == EL_OK) {
         memcpy(o->s + 1, fs + 1, sizeof(double) * (o->n - 2));
         o->s[0] = 0.0;
         o->s[o->n - 1] = v[0][6];
     }
     return EL_OK;
+}
+
+int fit_feet_project_list(const fit_objective *o, double v[2][FIT_NP], const size_t *pt, size_t m, double *sig,
+                          double *dist)
+{
+    double lo, hi;
+    fit_feet_range(o, v, 0, &lo, &hi);
+    int st = EL_OK;
+    size_t act[FIT_BLOCK];
+    for (size_t a = 0; a < m && !st; a += FIT_BLOCK) {
+        const size_t na = m - a < FIT_BLOCK ? m - a : FIT_BLOCK;
+        for (size_t k = 0; k < na; k++) act[k] = a + k;
+        st = project_entries(o, v, act, na, pt, sig, lo, hi, dist);
+    }
+    return st;
 }

@@ -20,6 +20,7 @@
 
 enum {
     FIT_NP = 7,        /* parameters of one curve */
+    FIT_PIECES = 128,  /* fit_feet_unproven's pieces of the curve */
     FIT_MAXX = 9,      /* optimiser variables at most (the keyline's joint problem) */
     FIT_BLOCK = 256,   /* samples per block of the streamed Jacobian */
     FIT_NCON = 6,      /* constraint rows at most */
@@ -139,6 +140,9 @@ typedef struct fit_objective {
      * (the report after the fit: one evaluation of every point fewer) */
     double *rest, *rest_foot, rest_x[FIT_MAXX];
     int rest_ok;
+    /* smooth orthogonal: a sampled search for feet on another pass (fit_feet_elsewhere)
+     * has seen a pass within reach of a point, other than its own (fit_objective_init: 0) */
+    int other_passes;
     size_t split;                /* discrete keyline: the data index of the joint */
     double *work;                /* block buffers */
     /* discrete orthogonal: the polygon (2n), distances and feet (n each) of the last
@@ -188,14 +192,14 @@ static inline double fit_foot_step(double t, double e, double kappa, double rang
 }
 /* The feet's range [lo, hi]: the curve itself, or extended (the objective's). */
 void fit_feet_range(const fit_objective *o, double v[2][FIT_NP], int extended, double *lo, double *hi);
-/* Smooth: each point's distance and foot on the curve at x (v its parameters): Newton
- * from the current feet, then the nearest point anywhere (fit_nearest_everywhere). */
-int fit_smooth_nearest(fit_objective *o, const double *x, double v[2][FIT_NP], int branch_only, double *d,
-                       double *fs);
 /* Smooth orthogonal, one curve, o->rest and o->rest_foot set (fit.c's buffers): the first
  * feet of a fit from x, each where the curve at x comes nearest (else at t_i L); an error
  * only when that curve cannot be evaluated. */
 int fit_feet_start(fit_objective *o, const double *x);
+/* Smooth, one curve: the m feet sig[k] of the points pt[k] by Newton's method from
+ * sig[k] to the nearest points in [0, L], with their signed distances dist[k]. */
+int fit_feet_project_list(const fit_objective *o, double v[2][FIT_NP], const size_t *pt, size_t m, double *sig,
+                          double *dist);
 /* Signed distances (left of the curve positive), feet (arc length; for the keyline from
  * the joint) and sides (keyline; may be NULL) of every point at x, normalised units:
  * the feet projected from o->s (which keeps the objective's feet). */
@@ -213,6 +217,24 @@ void fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, d
  * order, instead of at 1e-14 with a fresh evaluation of the foot reported. */
 int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const double *V[2],
                            const size_t nv[2], int branch_only, double *dist, double *foot, int *side);
+
+/* fit_refit.c: the distances and feet (normalised) of every point to the kept curve x
+ * (v its parameters), near each point's own place, then wherever the curve comes nearer;
+ * projected (smooth): d, fs hold the first already (fit_feet_distances at x); tmp:
+ * FIT_WORK doubles. */
+int fit_curve_distances(fit_objective *ob, const double *x, double v[2][FIT_NP], int projected, double *d,
+                        double *fs, double *tmp);
+/* fit_refit.c: the smooth distances d and feet fs of the points at x (v its parameters,
+ * one curve), the feet projected from o->s, then those found nearer on another pass of
+ * the curve from its samples (*moved of them whose foot in o->s lies on [0, L]). */
+int fit_feet_elsewhere(fit_objective *o, const double *x, double v[2][FIT_NP], double *d, double *fs,
+                       size_t *moved);
+/* fit_refit.c, one smooth curve v: unproven[i] = 1 for the inner points whose feet fs
+ * (distances d, Newton's) the proof of fit_feet_elsewhere does not show the nearest points
+ * (their count *nopen; 0 at the ends), and mark[j] = 1 for the FIT_PIECES pieces of
+ * length L / FIT_PIECES that can hold a point nearer to one of them. */
+int fit_feet_unproven(const fit_objective *o, double v[2][FIT_NP], const double *d, const double *fs,
+                      unsigned char *unproven, size_t *nopen, unsigned char mark[FIT_PIECES]);
 
 /* Normalisation shared with guess.c: centroid and rms radius of the points;
  * EL_ESINGULAR (all equal), EL_EDOM (a spread below ~1e-292 or beyond double's range). */

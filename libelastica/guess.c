@@ -36,8 +36,9 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_multifit.h>
 #include <gsl/gsl_sf_ellint.h>
+#include <gsl/gsl_statistics_double.h>
 
-enum { BLOCKS = 32, RAW_MAX = 40, NCAND_MAX = 6 };
+enum { BLOCKS = 32, RAW_MAX = 40, NCAND_MAX = 6, NOISE_SAMPLES = 65536 };
 
 /* A model-independent guess in normalised coordinates: u(s) = w s + q, s = t L. */
 typedef struct cguess {
@@ -71,6 +72,52 @@ int fit_normalisation(const double *xy, size_t n, double *cx, double *cy, double
     if (!(sc0 > 0.0) || !isfinite(sc0)) return EL_EDOM;
     *cx = mx; *cy = my; *sc = sc0;
     return EL_OK;
+}
+
+/* The fit's units (fit.c) and noise level, from the same normalisation. */
+
+/* A parameter value j in input units -> normalised (the smooth mu -> w = sqrt(mu)). */
+double fit_norm_param(int model, int j, double v, double cx, double cy, double sc)
+{
+    if (j == 0) return (v - cx) / sc;
+    if (j == 1) return (v - cy) / sc;
+    if (j == fit_length_slot(model)) return v / sc;
+    if (model == FIT_SMOOTH && j == 3) return v >= 0.0 ? sqrt(v) * sc : NAN;
+    return v;
+}
+
+double fit_denorm_param(int model, int j, double v, double cx, double cy, double sc)
+{
+    if (j == 0) return cx + sc * v;
+    if (j == 1) return cy + sc * v;
+    if (j == fit_length_slot(model)) return v * sc;
+    if (model == FIT_SMOOTH && j == 3) return (v / sc) * (v / sc);
+    return v;
+}
+
+/* Noise level of the points (rms per point) from third differences, in which a smooth
+ * curve's turning cancels (second differences carry its curvature, so that sparse tight
+ * loops would look noisy): P_{i+2} - 3P_{i+1} + 3P_i - P_{i-1} has variance 20 sigma^2
+ * per coordinate, |.|^2 mean 40 sigma^2 = 20 rms^2 and median ln 2 of the mean (a
+ * chi-square of two degrees); at most NOISE_SAMPLES of them, evenly spread. */
+double fit_noise_rms(const double *xy, size_t n, double sc)
+{
+    if (n < 4) return 0.0;
+    const size_t m = n - 3 < NOISE_SAMPLES ? n - 3 : NOISE_SAMPLES;
+    double *d = malloc(sizeof(double) * m);
+    if (!d) return 0.0;
+    for (size_t a = 0; a < m; a++) {
+        const size_t i = 1 + a * (n - 3) / m;
+        double e[2];
+        for (int c = 0; c < 2; c++) {
+            const double p0 = xy[2 * (i - 1) + c], p1 = xy[2 * i + c], p2 = xy[2 * (i + 1) + c], p3 = xy[2 * (i + 2) + c];
+            e[c] = ((p3 - p0) - 3.0 * (p2 - p1)) / sc;
+        }
+        d[a] = e[0] * e[0] + e[1] * e[1];
+    }
+    const double med = gsl_stats_median(d, 1, m);   /* quickselect; reorders d */
+    free(d);
+    return sqrt(med / (20.0 * 0.69314718055994531));
 }
 
 static int check_points(const double *xy, size_t n, size_t nmin)

@@ -392,6 +392,159 @@ START_TEST(test_branch_only_search_equals_full_search)
 }
 END_TEST
 
+/* The refit's cheap search for feet on another pass (fit_feet_elsewhere, from the
+ * curve's samples) against the search everywhere (fit_nearest_everywhere), both from the
+ * feet projected from the points' own places: on looping curves (k > 1, and an
+ * inflectional one of several periods; k = 9 over 8 loops), noisy and on the curve, 20 to 1200 points, in
+ * the caller's units at scales 1e-6 .. 1e6 (normalised as the fit does), it finds the
+ * same nearest point for every point, to 1e-12 in (normalised) distance and 1e-6 of the
+ * length in foot; it moves some (it is exercised). */
+START_TEST(test_sampled_search_equals_full_search)
+{
+    enum { NMAX = 1200 };
+    static double xy[2 * NMAX], s[NMAX], d0[NMAX], f0[NMAX], d1[NMAX], f1[NMAX], local[NMAX];
+    unsigned long long rng = 17;
+    const double ks[] = {1.3, 2.5, 9.0, 0.7}, lens[] = {14.0, 14.0, 3.0, 14.0};
+    const double scales[] = {1e-6, 1.0, 1e6}, noises[] = {0.0, 0.02, 0.08};
+    const size_t ns[] = {20, 300, NMAX};
+    size_t moved = 0, cases = 0;
+    for (size_t a = 0; a < sizeof ks / sizeof ks[0]; a++)
+        for (size_t b = 0; b < sizeof scales / sizeof scales[0]; b++)
+            for (size_t c = 0; c < sizeof noises / sizeof noises[0]; c++)
+                for (size_t e = 0; e < sizeof ns / sizeof ns[0]; e++) {
+                    /* the curve in normalised units, the points in the caller's (scale sc,
+                     * centre c): the fit's view */
+                    const size_t N = ns[e];
+                    const double sc = scales[b], cx = 3.0 * sc, cy = -2.0 * sc;
+                    const double v[FIT_NP] = {0.2, -0.1, 0.3, 1.0, ks[a], 0.2, lens[a]};
+                    el_smooth_params p;
+                    ck_assert_int_eq(fit_to_smooth(v, &p), EL_OK);
+                    for (size_t i = 0; i < N; i++) s[i] = v[6] * (double)i / (double)(N - 1);
+                    ck_assert_int_eq(el_smooth_eval(&p, N, s, xy, NULL, NULL), EL_OK);
+                    for (size_t i = 0; i < N; i++) {
+                        xy[2 * i] = cx + sc * (xy[2 * i] + noises[c] * test_uniform(&rng, -1, 1));
+                        xy[2 * i + 1] = cy + sc * (xy[2 * i + 1] + noises[c] * test_uniform(&rng, -1, 1));
+                    }
+                    const fit_map m = all_free_unscaled(FIT_SMOOTH);
+                    fit_objective o;
+                    ck_assert_int_eq(fit_objective_init(&o, FIT_ORTHOGONAL, &m, xy, N, cx, cy, sc, NULL), EL_OK);
+                    double x[FIT_MAXX], vv[2][FIT_NP];
+                    fit_map_inverse(&m, v, x);
+                    memcpy(vv[0], v, sizeof vv[0]);
+                    const double *V[2] = {NULL, NULL};
+                    const size_t nv[2] = {N, 0};
+                    for (size_t i = 0; i < N; i++) o.s[i] = s[i];
+                    ck_assert_int_eq(fit_feet_distances(&o, x, d0, f0, NULL), EL_OK);
+                    memcpy(local, f0, sizeof(double) * N);
+                    ck_assert_int_eq(fit_nearest_everywhere(&o, vv, V, nv, 0, d0, f0, NULL), EL_OK);
+                    size_t mv = 0;
+                    ck_assert_int_eq(fit_feet_elsewhere(&o, x, vv, d1, f1, &mv), EL_OK);
+                    size_t count = 0;
+                    for (size_t i = 1; i + 1 < N; i++) {
+                        ck_assert_msg(fabs(fabs(d1[i]) - fabs(d0[i])) <= 1e-12,
+                                      "k %g scale %g noise %g n %zu point %zu: distance %.17g vs %.17g", ks[a], sc,
+                                      noises[c], N, i, d1[i], d0[i]);
+                        ck_assert_msg(fabs(f1[i] - f0[i]) <= 1e-6 * v[6], "k %g scale %g noise %g n %zu point %zu: foot %.15g vs %.15g",
+                                      ks[a], sc, noises[c], N, i, f1[i], f0[i]);
+                        count += fabs(f1[i] - local[i]) > 1e-3 * v[6];
+                    }
+                    ck_assert_uint_eq(mv, count);          /* every foot of o.s lies on [0, L] */
+                    moved += mv;
+                    cases++;
+                    fit_objective_free(&o);
+                }
+    ck_assert_uint_eq(cases, 108);
+    ck_assert_uint_gt(moved, 0);
+}
+END_TEST
+
+/* fit_feet_unproven's proof against the search everywhere: every foot it proves is the
+ * nearest point; a nearer point of an unproven one lies on a marked piece; and
+ * fit_feet_elsewhere keeps proven feet as they are. Open arcs (short lengths: all proven, no sample taken) to loops, k across 1,
+ * scales 1e-6 .. 1e6, 20 .. 1200 points, noise 0 .. 0.08. */
+START_TEST(test_proven_feet_are_nearest)
+{
+    enum { NMAX = 1200 };
+    static double xy[2 * NMAX], s[NMAX], d0[NMAX], f0[NMAX], dF[NMAX], fF[NMAX], d1[NMAX], f1[NMAX];
+    static unsigned char unproven[NMAX];
+    unsigned char mark[FIT_PIECES];
+    unsigned long long rng = 23;
+    const double ks[] = {0.3, 0.9, 0.999999, 1.000001, 1.5, 9.0}, lens[] = {0.4, 3.0, 14.0};
+    const double scales[] = {1e-6, 1.0, 1e6}, noises[] = {0.0, 0.02, 0.08};
+    const size_t ns[] = {20, 300, NMAX};
+    size_t cases = 0, all = 0, some = 0, proven_feet = 0;
+    for (size_t a = 0; a < sizeof ks / sizeof ks[0]; a++)
+        for (size_t l = 0; l < sizeof lens / sizeof lens[0]; l++)
+            for (size_t b = 0; b < sizeof scales / sizeof scales[0]; b++)
+                for (size_t c = 0; c < sizeof noises / sizeof noises[0]; c++)
+                    for (size_t e = 0; e < sizeof ns / sizeof ns[0]; e++) {
+                        const size_t N = ns[e];
+                        const double sc = scales[b], cx = -sc, cy = 5.0 * sc, q = test_uniform(&rng, -2.0, 2.0);
+                        const double v[FIT_NP] = {0.1, 0.2, -0.4, 1.0, ks[a], q, lens[l]};
+                        el_smooth_params p;
+                        ck_assert_int_eq(fit_to_smooth(v, &p), EL_OK);
+                        for (size_t i = 0; i < N; i++) s[i] = v[6] * (double)i / (double)(N - 1);
+                        ck_assert_int_eq(el_smooth_eval(&p, N, s, xy, NULL, NULL), EL_OK);
+                        const double noise = noises[c] * fmin(1.0, v[6]);
+                        for (size_t i = 0; i < N; i++) {
+                            xy[2 * i] = cx + sc * (xy[2 * i] + noise * test_uniform(&rng, -1, 1));
+                            xy[2 * i + 1] = cy + sc * (xy[2 * i + 1] + noise * test_uniform(&rng, -1, 1));
+                        }
+                        const fit_map m = all_free_unscaled(FIT_SMOOTH);
+                        fit_objective o;
+                        ck_assert_int_eq(fit_objective_init(&o, FIT_ORTHOGONAL, &m, xy, N, cx, cy, sc, NULL), EL_OK);
+                        double x[FIT_MAXX], vv[2][FIT_NP];
+                        fit_map_inverse(&m, v, x);
+                        memcpy(vv[0], v, sizeof vv[0]);
+                        const double *V[2] = {NULL, NULL};
+                        const size_t nv[2] = {N, 0};
+                        for (size_t i = 0; i < N; i++) o.s[i] = s[i];
+                        ck_assert_int_eq(fit_feet_distances(&o, x, d0, f0, NULL), EL_OK);
+                        memcpy(dF, d0, sizeof(double) * N);
+                        memcpy(fF, f0, sizeof(double) * N);
+                        ck_assert_int_eq(fit_nearest_everywhere(&o, vv, V, nv, 0, dF, fF, NULL), EL_OK);
+                        size_t nopen = 0;
+                        ck_assert_int_eq(fit_feet_unproven(&o, vv, d0, f0, unproven, &nopen, mark), EL_OK);
+                        size_t count = 0;
+                        for (size_t i = 1; i + 1 < N; i++) {
+                            count += unproven[i];
+                            if (unproven[i]) {
+                                if (fabs(dF[i]) < fabs(d0[i])) {
+                                    const double jq = fF[i] / (v[6] / FIT_PIECES);
+                                    const int j = (int)fmin(jq, FIT_PIECES - 1.0);
+                                    ck_assert_msg(mark[j] || (j > 0 && jq == j && mark[j - 1]),
+                                                  "k %g L %g point %zu: nearer point on an unmarked piece", ks[a], v[6], i);
+                                }
+                                continue;
+                            }
+                            ck_assert_msg(fabs(fabs(dF[i]) - fabs(d0[i])) <= 1e-12 && fabs(fF[i] - f0[i]) <= 1e-6 * v[6],
+                                          "k %g L %g scale %g noise %g n %zu point %zu: proven foot %.15g (%.17g), "
+                                          "nearest %.15g (%.17g)", ks[a], v[6], sc, noises[c], N, i, f0[i], d0[i], fF[i],
+                                          dF[i]);
+                        }
+                        ck_assert_uint_eq(count, nopen);
+                        proven_feet += N - 2 - nopen;
+                        all += nopen == 0;
+                        some += nopen > 0 && nopen < N - 2;
+                        size_t mv = 0;
+                        ck_assert_int_eq(fit_feet_elsewhere(&o, x, vv, d1, f1, &mv), EL_OK);
+                        /* a proven foot stays; an unproven one moves only nearer (the samples'
+                         * search may miss a pass: test_sampled_search_equals_full_search) */
+                        for (size_t i = 1; i + 1 < N; i++) {
+                            ck_assert(fabs(d1[i]) <= fabs(d0[i]));
+                            if (!unproven[i]) ck_assert(d1[i] == d0[i] && f1[i] == f0[i]);
+                        }
+                        if (nopen == 0) ck_assert_uint_eq(mv, 0);
+                        cases++;
+                        fit_objective_free(&o);
+                    }
+    ck_assert_uint_eq(cases, 486);
+    ck_assert_uint_gt(all, 0);
+    ck_assert_uint_gt(some, 0);
+    ck_assert_uint_gt(proven_feet, 0);
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("fit parts");
@@ -404,6 +557,8 @@ static Suite *suite(void)
     tcase_add_test(tc, test_discrete_orthogonal_gradient);
     tcase_add_test(tc, test_discrete_paired_normal_equations_equal_plain_ones);
     tcase_add_test(tc, test_branch_only_search_equals_full_search);
+    tcase_add_test(tc, test_sampled_search_equals_full_search);
+    tcase_add_test(tc, test_proven_feet_are_nearest);
     suite_add_tcase(s, tc);
     return s;
 }
