@@ -211,12 +211,9 @@ void fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, d
 
 /* The distances above, corrected where the curve comes nearer elsewhere (a loop
  * passing close to itself): dist, foot, side (may be NULL) in and out; for the discrete
- * model V[c] are the vertices (nv[c]) of curve c. The signs are each curve's own.
- * branch_only (smooth): feet that only start a fit, which refines them (fit.c): a
- * search elsewhere stops at a step of 1e-7 of the length with the distance to second
- * order, instead of at 1e-14 with a fresh evaluation of the foot reported. */
+ * model V[c] are the vertices (nv[c]) of curve c. The signs are each curve's own. */
 int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const double *V[2],
-                           const size_t nv[2], int branch_only, double *dist, double *foot, int *side);
+                           const size_t nv[2], double *dist, double *foot, int *side);
 
 /* fit_refit.c: the distances and feet (normalised) of every point to the kept curve x
  * (v its parameters), near each point's own place, then wherever the curve comes nearer;

@@ -388,7 +388,7 @@ static int keyline_run(int model, const double *xy, size_t n, size_t split, cons
     }
     if (!st) {
         const double *Vc[2] = {V[0], V[1]};
-        st = fit_nearest_everywhere(&ob, v, Vc, nv, 0, d, fs, sd);
+        st = fit_nearest_everywhere(&ob, v, Vc, nv, d, fs, sd);
     }
     free(V[0]);
     free(V[1]);

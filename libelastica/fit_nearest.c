@@ -293,8 +293,7 @@ static int curve_points(const double *v, double len, int m, double *xy)
 
 /* Newton's method for the nearest point of a smooth curve (parameters v) to P from arc
  * length u: signed distance (+ left of the curve's own direction) and arc length. */
-static int newton_nearest(const double *v, double u, double lo, double hi, const double *P, int branch_only,
-                          double *d, double *s)
+static int newton_nearest(const double *v, double u, double lo, double hi, const double *P, double *d, double *s)
 {
     el_smooth_params sp;
     int st = fit_to_smooth(v, &sp);
@@ -305,13 +304,6 @@ static int newton_nearest(const double *v, double u, double lo, double hi, const
         const double dx = xy[0] - P[0], dy = xy[1] - P[1], c = cos(th), sn = sin(th);
         const double t = c * dx + sn * dy, e = c * dy - sn * dx;
         const double un = fmin(fmax(u + fit_foot_step(t, e, ka, v[6]), lo), hi), du = un - u;
-        if (branch_only && fabs(du) <= 1e-7 * (v[6] + 1e-300)) {
-            /* the distance at u + du to second order, as project_block's */
-            const double a = t + du, b = e + 0.5 * ka * du * du, dist = sqrt(a * a + b * b);
-            *d = b > 0.0 ? -dist : dist;
-            *s = un;
-            return EL_OK;
-        }
         if (fabs(du) <= 1e-14 * (v[6] + 1e-300)) { u = un; break; }
         u = un;
     }
@@ -323,9 +315,9 @@ static int newton_nearest(const double *v, double u, double lo, double hi, const
 }
 
 /* The nearest point of piece p of a smooth curve to P: Newton from its middle. */
-static int piece_nearest(const double *v, const piece *p, const double *P, int branch_only, double *d, double *s)
+static int piece_nearest(const double *v, const piece *p, const double *P, double *d, double *s)
 {
-    return newton_nearest(v, 0.5 * (p->s0 + p->s1), 0.0, v[6], P, branch_only, d, s);
+    return newton_nearest(v, 0.5 * (p->s0 + p->s1), 0.0, v[6], P, d, s);
 }
 
 /*
@@ -435,7 +427,7 @@ static int dense_nearest(const double *v, dense_samples *ds, double s0, double s
         if (!(dense_lower_bound(ds, cj[k], h, P, cd[k]) < dist[i] * dist[i])) continue;
         const double u = h * (double)cj[k];
         double d = HUGE_VAL, s = 0.0;
-        const int st = newton_nearest(v, u, fmax(u - h, 0.0), fmin(u + h, ds->len), P, 0, &d, &s);
+        const int st = newton_nearest(v, u, fmax(u - h, 0.0), fmin(u + h, ds->len), P, &d, &s);
         if (st) return st;
         if (fabs(d) < fabs(dist[i])) {
             dist[i] = d; foot[i] = s;
@@ -461,8 +453,8 @@ typedef struct own_foot {
     double s;
 } own_foot;
 
-static int consider(double v[2][FIT_NP], const piece *p, const double *P, const own_foot *f0, int branch_only,
-                    dense_samples *dense, size_t i, double *dist, double *foot, int *side)
+static int consider(double v[2][FIT_NP], const piece *p, const double *P, const own_foot *f0, dense_samples *dense,
+                    size_t i, double *dist, double *foot, int *side)
 {
     /* a piece that turns by more than 1/2, or a point too far for its distance to be
      * convex along the curve: on the samples */
@@ -474,7 +466,7 @@ static int consider(double v[2][FIT_NP], const piece *p, const double *P, const 
     if (!ds && p->curve == f0->curve && p->s1 >= f0->s - near && p->s0 <= f0->s + near) return EL_OK;
     if (ds) return dense_nearest(v[p->curve], ds, p->s0, p->s1, P, i, dist, foot, side);
     double d = HUGE_VAL, s = 0.0;
-    int st = piece_nearest(v[p->curve], p, P, branch_only, &d, &s);
+    int st = piece_nearest(v[p->curve], p, P, &d, &s);
     if (!st && fabs(d) < fabs(dist[i])) {
         dist[i] = d; foot[i] = s;
         if (side) side[i] = p->curve;
@@ -655,7 +647,7 @@ static int polygon_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP
 }
 
 int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const double *V[2],
-                           const size_t nv[2], int branch_only, double *dist, double *foot, int *side)
+                           const size_t nv[2], double *dist, double *foot, int *side)
 {
     const int nc = o->map.ncurves;
     const size_t n = o->n;
@@ -773,7 +765,7 @@ int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const do
             if ((double)(x1 - x0 + 1) * (double)(y1 - y0 + 1) > 4.0 * np) {   /* far: every piece */
                 for (int j = 0; j < np && !st; j++)
                     if (disk_reaches(&pc[j], P, fabs(dist[i])))
-                        st = consider(v, &pc[j], P, &f0, branch_only, dense, i, dist, foot, side);
+                        st = consider(v, &pc[j], P, &f0, dense, i, dist, foot, side);
                 continue;
             }
             for (long ix = x0; ix <= x1 && !st; ix++)
@@ -783,7 +775,7 @@ int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const do
                         if (stamp[j] == tag) continue;
                         stamp[j] = tag;
                         if (disk_reaches(&pc[j], P, fabs(dist[i])))
-                            st = consider(v, &pc[j], P, &f0, branch_only, dense, i, dist, foot, side);
+                            st = consider(v, &pc[j], P, &f0, dense, i, dist, foot, side);
                     }
         }
     }

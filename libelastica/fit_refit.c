@@ -22,7 +22,7 @@ int fit_curve_distances(fit_objective *ob, const double *x, double v[2][FIT_NP],
     if (ob->map.model == FIT_SMOOTH) {
         const double *V[2] = {NULL, NULL};
         const int st = projected ? EL_OK : fit_feet_distances(ob, x, d, fs, NULL);
-        return st ? st : fit_nearest_everywhere(ob, v, V, nv, 0, d, fs, NULL);
+        return st ? st : fit_nearest_everywhere(ob, v, V, nv, d, fs, NULL);
     }
     double *buf = malloc(sizeof(double) * 2 * n);
     if (!buf) return EL_ENOMEM;
@@ -36,7 +36,7 @@ int fit_curve_distances(fit_objective *ob, const double *x, double v[2][FIT_NP],
     if (!st) {
         const double *V[2] = {buf, NULL};
         fit_polygon_distances(ob, buf, n, v[0][2], 0, 1, d, fs);
-        st = fit_nearest_everywhere(ob, v, V, nv, 0, d, fs, NULL);
+        st = fit_nearest_everywhere(ob, v, V, nv, d, fs, NULL);
     }
     free(buf);
     return st;

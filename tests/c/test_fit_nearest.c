@@ -103,7 +103,7 @@ START_TEST(test_polygon_report_equals_brute_force)
                     const size_t nv[2] = {n, 0};
                     fit_polygon_distances(&o, V, n, sc * h, 0, 1, d, fs);
                     memcpy(local, fs, sizeof(double) * n);
-                    ck_assert_int_eq(fit_nearest_everywhere(&o, v, Vc, nv, 0, d, fs, NULL), EL_OK);
+                    ck_assert_int_eq(fit_nearest_everywhere(&o, v, Vc, nv, d, fs, NULL), EL_OK);
                     for (size_t i = 0; i < n; i++) {
                         ck_assert_msg(brute_nearest(Vc, nv, 1, sc * h, xy + 2 * i, d[i], fs[i], 0),
                                       "%s n %zu noise %g scale %g point %zu: d %.17g foot %.17g not nearest",
@@ -149,7 +149,7 @@ START_TEST(test_keyline_report_equals_brute_force)
                     fit_polygon_distances(&o, V1, nv[1], sc * h, js, 1, d, fs);
                     for (size_t i = 0; i < n; i++) sd[i] = i > js || (i == js && fabs(d[js]) < fabs(dj));
                     if (sd[js] == 0) { d[js] = dj; fs[js] = fj; }
-                    ck_assert_int_eq(fit_nearest_everywhere(&o, v, Vc, nv, 0, d, fs, sd), EL_OK);
+                    ck_assert_int_eq(fit_nearest_everywhere(&o, v, Vc, nv, d, fs, sd), EL_OK);
                     for (size_t i = 0; i < n; i++) {
                         ck_assert_msg(brute_nearest(Vc, nv, 2, sc * h, xy + 2 * i, d[i], fs[i], sd[i]),
                                       "%s n %zu noise %g scale %g point %zu: d %.17g foot %.17g side %d not nearest",
@@ -208,7 +208,7 @@ START_TEST(test_smooth_report_against_dense_samples)
                     memcpy(o.s, s, sizeof s);
                     ck_assert_int_eq(fit_feet_distances(&o, x, d, fs, NULL), EL_OK);
                     memcpy(f0, fs, sizeof fs);
-                    ck_assert_int_eq(fit_nearest_everywhere(&o, vv, V, nv, 0, d, fs, NULL), EL_OK);
+                    ck_assert_int_eq(fit_nearest_everywhere(&o, vv, V, nv, d, fs, NULL), EL_OK);
                     for (size_t i = 0; i < N; i++) {
                         double best = HUGE_VAL, F[2];
                         for (size_t j = 0; j < M; j++) {

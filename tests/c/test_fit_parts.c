@@ -343,55 +343,6 @@ START_TEST(test_discrete_paired_normal_equations_equal_plain_ones)
 }
 END_TEST
 
-/* The orthogonal fit's start searches for nearer branches with branch_only (a step of
- * 1e-7 of the length, the distance to second order): on noisy points along looping
- * curves (k > 1, tangent turning many times, so the search is not skipped) it finds the
- * same feet as the full search to 1e-6 of the length and the same distances to 1e-12,
- * and the search moves some feet to another branch (it is exercised). */
-START_TEST(test_branch_only_search_equals_full_search)
-{
-    enum { N = 600 };
-    static double xy[2 * N], d0[N], f0[N], d1[N], f1[N];
-    unsigned long long rng = 11;
-    const double ks[] = {1.3, 2.5};
-    int moved = 0;
-    for (size_t a = 0; a < sizeof ks / sizeof ks[0]; a++) {
-        const double v[FIT_NP] = {0.2, -0.1, 0.3, 1.0, ks[a], 0.2, 14.0};
-        el_smooth_params p;
-        ck_assert_int_eq(fit_to_smooth(v, &p), EL_OK);
-        static double s[N];
-        for (size_t i = 0; i < N; i++) s[i] = v[6] * (double)i / (N - 1);
-        ck_assert_int_eq(el_smooth_eval(&p, N, s, xy, NULL, NULL), EL_OK);
-        for (size_t i = 0; i < 2 * N; i++) xy[i] += 0.08 * test_uniform(&rng, -1, 1);
-        const fit_map m = all_free_unscaled(FIT_SMOOTH);
-        fit_objective o;
-        ck_assert_int_eq(fit_objective_init(&o, FIT_ORTHOGONAL, &m, xy, N, 0.0, 0.0, 1.0, NULL), EL_OK);
-        double x[FIT_MAXX], vv[2][FIT_NP];
-        fit_map_inverse(&m, v, x);
-        memcpy(vv[0], v, sizeof vv[0]);
-        const double *V[2] = {NULL, NULL};
-        const size_t nv[2] = {N, 0};
-        for (size_t i = 0; i < N; i++) o.s[i] = s[i];
-        ck_assert_int_eq(fit_feet_distances(&o, x, d0, f0, NULL), EL_OK);
-        memcpy(d1, d0, sizeof d1);
-        memcpy(f1, f0, sizeof f1);
-        static double local[N];
-        memcpy(local, f0, sizeof local);
-        ck_assert_int_eq(fit_nearest_everywhere(&o, vv, V, nv, 0, d0, f0, NULL), EL_OK);
-        ck_assert_int_eq(fit_nearest_everywhere(&o, vv, V, nv, 1, d1, f1, NULL), EL_OK);
-        for (size_t i = 0; i < N; i++) {
-            ck_assert_msg(fabs(f1[i] - f0[i]) <= 1e-6 * v[6], "k %g point %zu: foot %.15g vs %.15g",
-                          ks[a], i, f1[i], f0[i]);
-            ck_assert_msg(fabs(d1[i] - d0[i]) <= 1e-12, "k %g point %zu: distance %.17g vs %.17g",
-                          ks[a], i, d1[i], d0[i]);
-            moved += fabs(f0[i] - local[i]) > 0.1 * v[6];
-        }
-        fit_objective_free(&o);
-    }
-    ck_assert_int_gt(moved, 0);
-}
-END_TEST
-
 /* The refit's cheap search for feet on another pass (fit_feet_elsewhere, from the
  * curve's samples) against the search everywhere (fit_nearest_everywhere), both from the
  * feet projected from the points' own places: on looping curves (k > 1, and an
@@ -436,7 +387,7 @@ START_TEST(test_sampled_search_equals_full_search)
                     for (size_t i = 0; i < N; i++) o.s[i] = s[i];
                     ck_assert_int_eq(fit_feet_distances(&o, x, d0, f0, NULL), EL_OK);
                     memcpy(local, f0, sizeof(double) * N);
-                    ck_assert_int_eq(fit_nearest_everywhere(&o, vv, V, nv, 0, d0, f0, NULL), EL_OK);
+                    ck_assert_int_eq(fit_nearest_everywhere(&o, vv, V, nv, d0, f0, NULL), EL_OK);
                     size_t mv = 0;
                     ck_assert_int_eq(fit_feet_elsewhere(&o, x, vv, d1, f1, &mv), EL_OK);
                     size_t count = 0;
@@ -502,7 +453,7 @@ START_TEST(test_proven_feet_are_nearest)
                         ck_assert_int_eq(fit_feet_distances(&o, x, d0, f0, NULL), EL_OK);
                         memcpy(dF, d0, sizeof(double) * N);
                         memcpy(fF, f0, sizeof(double) * N);
-                        ck_assert_int_eq(fit_nearest_everywhere(&o, vv, V, nv, 0, dF, fF, NULL), EL_OK);
+                        ck_assert_int_eq(fit_nearest_everywhere(&o, vv, V, nv, dF, fF, NULL), EL_OK);
                         size_t nopen = 0;
                         ck_assert_int_eq(fit_feet_unproven(&o, vv, d0, f0, unproven, &nopen, mark), EL_OK);
                         size_t count = 0;
@@ -556,7 +507,6 @@ static Suite *suite(void)
     tcase_add_test(tc, test_start_chart_same_curve_and_derivative);
     tcase_add_test(tc, test_discrete_orthogonal_gradient);
     tcase_add_test(tc, test_discrete_paired_normal_equations_equal_plain_ones);
-    tcase_add_test(tc, test_branch_only_search_equals_full_search);
     tcase_add_test(tc, test_sampled_search_equals_full_search);
     tcase_add_test(tc, test_proven_feet_are_nearest);
     suite_add_tcase(s, tc);
