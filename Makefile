@@ -308,9 +308,11 @@ check-install: lib
 	  $$(PKG_CONFIG_PATH=$(BUILD)/stage/lib/pkgconfig pkg-config --cflags --libs elastica) -o $(BUILD)/readme_example
 	LD_LIBRARY_PATH=$(BUILD)/stage/lib $(BUILD)/readme_example
 	@# the installed shared library exports the API only (el_ and a letter), so no
-	@# function of a program that uses it can replace one of the library's own
+	@# function of a program that uses it can replace one of the library's own; the
+	@# static one defines no name outside el_* (its internals el__*)
 	@so=$$(nm -D --defined-only $(BUILD)/stage/lib/libelastica.so | awk '{print $$3}' | grep -v '^el_[a-z]' || true); \
-	if [ -n "$$so" ]; then echo "check-install: libelastica.so exports internal symbols:" $$so; exit 1; fi
+	a=$$(nm -g --defined-only $(BUILD)/stage/lib/libelastica.a | awk 'NF == 3 {print $$3}' | grep -v '^el_' || true); \
+	if [ -n "$$so$$a" ]; then echo "check-install: symbols outside the library's names:" $$so $$a; exit 1; fi
 	@echo "check-install: libelastica.so exports $$(nm -D --defined-only $(BUILD)/stage/lib/libelastica.so | grep -c ' el_') symbols, all el_*"
 
 clean:

@@ -133,7 +133,7 @@ static int bounded_start(fit_objective *ob, const double *xl, const double *xu, 
     fit_map m = full;
     double v[2][FIT_NP];
     for (int j = 0; j < full.nx; j++) x[j] = fmin(fmax(x[j], xl[j]), xu[j]);
-    if (fit_map_eval(&full, x, v, NULL)) return 0;
+    if (el__fit_map_eval(&full, x, v, NULL)) return 0;
     memcpy(m.fixed, v[0], sizeof m.fixed);
     m.nx = 0;
     int moved[FIT_MAXX];
@@ -147,7 +147,7 @@ static int bounded_start(fit_objective *ob, const double *xl, const double *xu, 
     for (int j = 0, r = 0; j < full.nx; j++)
         if (moved[j]) xr[r++] = x[j];
     fit_solution sol;
-    const int st = fit_lm(ob, xr, max_iter, &sol);
+    const int st = el__fit_lm(ob, xr, max_iter, &sol);
     ob->map = full;
     if (st) return 0;
     for (int j = 0, r = 0; j < full.nx; j++)
@@ -199,7 +199,7 @@ static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit
              * guess, the exact path 0.0534) */
             fit_ipopt_out po;
             memcpy(sol.x, x0, sizeof(double) * (size_t)nx);
-            pst = fit_ipopt(ob, xl, xu, NULL, o, sol.x, &po, tmp);
+            pst = el__fit_ipopt(ob, xl, xu, NULL, o, sol.x, &po, tmp);
             sol.iters = po.iters;
             if (pst == EL_OK && !po.certified) {
                 r->iters += po.iters;
@@ -211,7 +211,7 @@ static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit
                 return pst;
             }
         } else {
-            pst = fit_lm(ob, x0, o->max_iter, &sol);
+            pst = el__fit_lm(ob, x0, o->max_iter, &sol);
             crawled = pst == EL_OK && !sol.certified;
         }
         ob->lm_tol = certificate;
@@ -220,14 +220,14 @@ static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit
             r->iters += sol.iters;
         }
         ob->kind = FIT_ORTHOGONAL;
-        if (fit_feet_start(ob, xs) != EL_OK) memcpy(xs, x0, sizeof(double) * (size_t)nx);
+        if (el__fit_feet_start(ob, xs) != EL_OK) memcpy(xs, x0, sizeof(double) * (size_t)nx);
     }
     x0 = xs;
     ob->f_ceiling = best_f;
-    /* near_start: x0 is near the constrained optimum already (fit_held_start's continuation):
+    /* near_start: x0 is near the constrained optimum already (el__fit_held_start's continuation):
      * Ipopt from there, not from the unconstrained fit that Levenberg-Marquardt would
      * return to */
-    const int lst = o->limited_memory || (near_start && need_ipopt) ? EL_EINVAL : fit_lm(ob, x0, o->max_iter, &sol);
+    const int lst = o->limited_memory || (near_start && need_ipopt) ? EL_EINVAL : el__fit_lm(ob, x0, o->max_iter, &sol);
     /* a paired start that crawled to max_iter without its certificate (a sketch with a
      * gap, whose chord fractions misplace the points after it) may be far from the fit:
      * Levenberg-Marquardt from the guess too, kept when certified lower (measured, 1000
@@ -237,10 +237,10 @@ static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit
      * Ipopt, would have lost to the guess's 0.104) */
     if (lst == EL_OK && crawled) {
         fit_solution g;
-        if (fit_feet_start(ob, guess) == EL_OK && fit_lm(ob, guess, o->max_iter, &g) == EL_OK) {
+        if (el__fit_feet_start(ob, guess) == EL_OK && el__fit_lm(ob, guess, o->max_iter, &g) == EL_OK) {
             r->iters += g.iters;
             if (g.certified && g.val.f < sol.val.f) sol = g;
-            else fit_feet_start(ob, sol.x);      /* the kept point's feet, from its curve */
+            else el__fit_feet_start(ob, sol.x);      /* the kept point's feet, from its curve */
         }
     }
     ob->f_ceiling = HUGE_VAL;
@@ -270,11 +270,11 @@ static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit
         ob->pen = con;
         ob->pen_tmp = tmp;
         for (ob->pen_rho = 1.0; ob->pen_rho <= 1e10; ob->pen_rho *= 100.0) {
-            if (fit_lm(ob, x, o->max_iter, &sol) != EL_OK) break;
+            if (el__fit_lm(ob, x, o->max_iter, &sol) != EL_OK) break;
             memcpy(x, sol.x, sizeof(double) * (size_t)nx);
             r->iters += sol.iters;
             double c[FIT_NCON], cc = 0.0;
-            const int rows = fit_constraint_rows(ob, con, x, c, NULL, NULL, tmp);
+            const int rows = el__fit_constraint_rows(ob, con, x, c, NULL, NULL, tmp);
             for (int k = 0; k < rows; k++) cc = fmax(cc, fabs(c[k]));
             if (rows < 0 || cc <= 1e-10) break;
         }
@@ -285,7 +285,7 @@ static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit
     if (lm_ok && !inside) r->iters += bounded_start(ob, xl, xu, o->max_iter, x);
     /* L-BFGS stops a guess that cannot reach an earlier one's f (fit_ipopt.c) */
     if (o->limited_memory) ob->f_ceiling = best_f;
-    int st = fit_ipopt(ob, xl, xu, need_ipopt ? con : NULL, o, x, &io, tmp);
+    int st = el__fit_ipopt(ob, xl, xu, need_ipopt ? con : NULL, o, x, &io, tmp);
     ob->f_ceiling = HUGE_VAL;
     if (st == EL_EINTERNAL || st == EL_ENOMEM) return st;
     r->used_ipopt = 1;
@@ -315,7 +315,7 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
     if (o.use_initial && (!init || el__all_finite(init, FIT_NP))) return EL_EINVAL;
     el__gsl_quiet();
     double cx, cy, sc;
-    if ((st = fit_normalisation(xy, n, &cx, &cy, &sc))) return st;
+    if ((st = el__fit_normalisation(xy, n, &cx, &cy, &sc))) return st;
 
     /* start point: x0, y0 held */
     if (o.constraints & EL_CONSTRAIN_START_POINT) {
@@ -325,13 +325,13 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
     /* normalised bounds: the model's and the caller's, then the constraints' */
     double lo[FIT_NP], hi[FIT_NP];
     for (int j = 0; j < FIT_NP; j++) {
-        double a = fit_norm_param(model, j, o.lower[j], cx, cy, sc);
-        double b = fit_norm_param(model, j, o.upper[j], cx, cy, sc);
+        double a = el__fit_norm_param(model, j, o.lower[j], cx, cy, sc);
+        double b = el__fit_norm_param(model, j, o.upper[j], cx, cy, sc);
         lo[j] = isnan(a) ? -HUGE_VAL : fmin(a, b);
         hi[j] = isnan(b) ? HUGE_VAL : fmax(a, b);
     }
     fit_constraints con;
-    fit_setup_constraints(&o, model, n, cx, cy, sc, &con, lo, hi);
+    el__fit_setup_constraints(&o, model, n, cx, cy, sc, &con, lo, hi);
     for (int j = 0; j < FIT_NP; j++) {
         if (lo[j] > hi[j]) {
             res->constraint = (j == fit_length_slot(model) && (o.constraints & EL_CONSTRAIN_LENGTH)) ? EL_CONSTRAIN_LENGTH
@@ -339,7 +339,7 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
             return EL_EINVAL;
         }
         if (o.fixed[j]) {
-            const double v = fit_norm_param(model, j, o.value[j], cx, cy, sc);
+            const double v = el__fit_norm_param(model, j, o.value[j], cx, cy, sc);
             if (!isfinite(v) || v < lo[j] || v > hi[j]) {
                 res->constraint = j == fit_length_slot(model) ? o.constraints & EL_CONSTRAIN_LENGTH
                                 : j == fit_k_slot(model) ? o.constraints & EL_CONSTRAIN_K : 0;
@@ -354,7 +354,7 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
         const double maxlen = hi[fit_length_slot(model)] * (model == FIT_DISCRETE ? (double)(n - 1) : 1.0);
         if (chord > maxlen * (1.0 + 1e-12)) { res->constraint = EL_CONSTRAIN_LENGTH; return EL_EDOM; }
     }
-    /* discrete k < 0 is used internally by shifting q (fit_canonical): not when q is
+    /* discrete k < 0 is used internally by shifting q (el__fit_canonical): not when q is
      * fixed; smooth w < 0 flips k and q: not when either is fixed or bounded */
     const int ik = fit_k_slot(model);
     if (model == FIT_DISCRETE && o.fixed[5] && !o.fixed[ik]) lo[ik] = fmax(lo[ik], 0.0);
@@ -382,7 +382,7 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
         held = EL_CONSTRAIN_START_CURVATURE;
     const int need_ipopt = (o.constraints & ~(EL_CONSTRAIN_START_POINT | EL_CONSTRAIN_LENGTH | EL_CONSTRAIN_K | held)) != 0;
     /* the discrete start tangent and non-zero curvature stay Ipopt's rows, started by
-     * continuation in the chart (fit_held_start; measured on a sketched S, start tangent: rms
+     * continuation in the chart (el__fit_held_start; measured on a sketched S, start tangent: rms
      * 0.70 in 1400 iterations from the free fit, 0.35 by continuation) */
     const int staged = chart_ok ? held | (o.constraints & (EL_CONSTRAIN_START_TANGENT | EL_CONSTRAIN_START_CURVATURE)) : 0;
     fit_constraints con_rows = con;      /* the constraints left to Ipopt's rows */
@@ -393,7 +393,7 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
     map.chart = chart_ok && (!need_ipopt || staged);
     for (int j = 0; j < FIT_NP; j++) {
         map.scale[j] = (model == FIT_DISCRETE && (j == 2 || j == 4)) ? (double)(n - 1) : 1.0;
-        if (o.fixed[j]) map.fixed[j] = fit_norm_param(model, j, o.value[j], cx, cy, sc);
+        if (o.fixed[j]) map.fixed[j] = el__fit_norm_param(model, j, o.value[j], cx, cy, sc);
         else if (j == sl[0] && (held & EL_CONSTRAIN_START_TANGENT)) map.fixed[j] = con.start_theta;
         else if (j == sl[1] && (held & EL_CONSTRAIN_START_CURVATURE)) map.fixed[j] = con.start_kappa;
         else map.idx[map.nx++] = j;
@@ -421,7 +421,7 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
         if (!(t = malloc(sizeof(double) * n))) goto done;
         if ((st = el_fit_fractions(xy, n, o.param_mode, t, &mode))) goto done;
     }
-    if ((st = fit_objective_init(&ob, kind, &map, xy, n, cx, cy, sc, t))) goto done;
+    if ((st = el__fit_objective_init(&ob, kind, &map, xy, n, cx, cy, sc, t))) goto done;
     ob.exact_ends = o.constraints != 0;
     /* the distances and feet reported, the caller's arrays or dbuf; also the smooth
      * orthogonal fit's start feet and the distances its evaluations found at rest */
@@ -434,26 +434,26 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
     double cand[MAXCAND][FIT_NP];
     size_t ncand = 0;
     if (o.use_initial) {
-        for (int j = 0; j < FIT_NP; j++) cand[0][j] = fit_norm_param(model, j, init[j], cx, cy, sc);
+        for (int j = 0; j < FIT_NP; j++) cand[0][j] = el__fit_norm_param(model, j, init[j], cx, cy, sc);
         ncand = 1;
     } else if (model == FIT_DISCRETE) {
         el_discrete_params g[MAXCAND];
         if ((st = el_guess_discrete(xy, n, g, MAXCAND, &ncand))) goto done;
         for (size_t c = 0; c < ncand; c++) {
             const double p[FIT_NP] = {g[c].x0, g[c].y0, g[c].h, g[c].phi, g[c].z, g[c].q, g[c].k};
-            for (int j = 0; j < FIT_NP; j++) cand[c][j] = fit_norm_param(model, j, p[j], cx, cy, sc);
+            for (int j = 0; j < FIT_NP; j++) cand[c][j] = el__fit_norm_param(model, j, p[j], cx, cy, sc);
         }
     } else {
         el_smooth_params g[MAXCAND];
         if ((st = el_guess_smooth(xy, n, o.param_mode, g, MAXCAND, &ncand))) goto done;
         for (size_t c = 0; c < ncand; c++) {
             const double p[FIT_NP] = {g[c].x0, g[c].y0, g[c].phi, g[c].mu, g[c].k, g[c].q, g[c].length};
-            for (int j = 0; j < FIT_NP; j++) cand[c][j] = fit_norm_param(model, j, p[j], cx, cy, sc);
+            for (int j = 0; j < FIT_NP; j++) cand[c][j] = el__fit_norm_param(model, j, p[j], cx, cy, sc);
         }
     }
     if ((size_t)o.max_candidates < ncand) ncand = (size_t)o.max_candidates;
 
-    const double noise = fit_noise_rms(xy, n, sc);
+    const double noise = el__fit_noise_rms(xy, n, sc);
     cand_result best;
     memset(&best, 0, sizeof best);
     best.f = HUGE_VAL;
@@ -470,20 +470,20 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
             p0[j] = map.fixed[j];
         }
         if (el__all_finite(p0, FIT_NP)) continue;
-        fit_map_inverse(&map, p0, x0);
+        el__fit_map_inverse(&map, p0, x0);
         if (fit_has_feet(&ob))          /* the first feet: the fractions' places */
             for (size_t i = 0; i < n; i++) ob.s[i] = t[i] * p0[6];
         cand_result r;
         if (map.nx == 0) {
             fit_value fv;
-            if (fit_objective_eval(&ob, x0, 0, &fv)) continue;
+            if (el__fit_objective_eval(&ob, x0, 0, &fv)) continue;
             memset(&r, 0, sizeof r);
             r.f = fv.f;
             r.status = EL_OK;
         } else {
             int pre = 0;
             if (staged) {
-                pre = fit_held_start(&ob, &map, &free_map, staged, &con, o.max_iter, p0, x0, tmp);
+                pre = el__fit_held_start(&ob, &map, &free_map, staged, &con, o.max_iter, p0, x0, tmp);
                 if (fit_has_feet(&ob))          /* the first feet again (the stages moved them) */
                     for (size_t i = 0; i < n; i++) ob.s[i] = t[i] * p0[6];
             }
@@ -501,7 +501,7 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
     }
     if (!isfinite(best.f)) {      /* no guess could be evaluated: the first one, unfitted */
         best.status = EL_ENOCONV;
-        fit_map_inverse(&map, best_init, best.x);
+        el__fit_map_inverse(&map, best_init, best.x);
     }
 
     /* the kept curve: its distances, constraints, canonical form, input units */
@@ -511,10 +511,10 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
     for (int round = 0;;) {
         status = best.status;
         constraint = 0;
-        ok = fit_map_eval(&map, best.x, v, NULL) == EL_OK;
+        ok = el__fit_map_eval(&map, best.x, v, NULL) == EL_OK;
         if (ok && ob.s && !(last_is_best && fit_has_feet(&ob)))   /* else the fit's own feet */
             for (size_t i = 0; i < n; i++) ob.s[i] = t[i] * v[0][6];
-        if (ok && (constraint = fit_violated(&ob, &con, v[0], lo, hi, tmp))) status = EL_EDOM;
+        if (ok && (constraint = el__fit_violated(&ob, &con, v[0], lo, hi, tmp))) status = EL_EDOM;
         /* The smooth orthogonal fit moves each foot by Newton steps, which keep it on its
          * branch: a foot that started where a rough curve (the paired start) came nearest,
          * on another pass of a loop than the fit's nearest point, stays at that stationary
@@ -528,15 +528,15 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
          * curve, and near a crossing of two passes more feet change pass (measured on
          * bench_fit.py's 42 noisy 1000-point smooth curves: 19 refitted, one's moved feet
          * 110, 43, 12, 5, 2 in turn), so the rounds are cheap ones while they find feet
-         * elsewhere: the feet from the curve's samples (fit_feet_elsewhere, each verified
+         * elsewhere: the feet from the curve's samples (el__fit_feet_elsewhere, each verified
          * nearer; only once a sampled search, the start's, has seen other passes near the
          * points or the search everywhere has found feet elsewhere), the refit by
          * Levenberg-Marquardt alone, stopped at LOOSE_TOL and certified once at the end;
          * then the search everywhere (the report's) for what they missed; none after FEET_ROUNDS refits by that search (a fit left with feet
          * elsewhere that the samples do not show would be refitted to the wrong feet).
-         * Measured on those 42 (callgrind, with fit_feet_start's sampled search):
+         * Measured on those 42 (callgrind, with el__fit_feet_start's sampled search):
          * 3.17e9 -> 1.83e9 instructions (before any refit 1.31e9; el_fit_smooth alone
-         * 3.15e9 -> 1.81e9 with or without fit_feet_unproven's proof), 15 rms lower (by up
+         * 3.15e9 -> 1.81e9 with or without el__fit_feet_unproven's proof), 15 rms lower (by up
          * to 0.7 %), 25 the same to 1e-9, two higher by 5e-8 and 1.4e-5 at an objective f
          * lower by 2e-14 and 5e-5 (feet on the extension beyond an end, which the
          * reported distances do not use). */
@@ -545,7 +545,7 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
         int projected = 0;
         if (may_refit && last_is_best && sampling && ob.other_passes && sampled < SAMPLED_ROUNDS && round < FEET_ROUNDS &&
             !best.used_ipopt) {
-            if ((st = fit_feet_elsewhere(&ob, best.x, v, d, fs, &moved)) == EL_ENOMEM) goto done;
+            if ((st = el__fit_feet_elsewhere(&ob, best.x, v, d, fs, &moved)) == EL_ENOMEM) goto done;
             projected = st == EL_OK;
         }
         if (moved) {
@@ -556,7 +556,7 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
             loose = 0;
             cand_result r;
             ob.have_base = 0;
-            if ((!last_is_best && fit_feet_start(&ob, best.x)) ||
+            if ((!last_is_best && el__fit_feet_start(&ob, best.x)) ||
                 (st = solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, lm_only, best.x, HUGE_VAL, &r, tmp, 1, 1)) ||
                 !isfinite(r.f)) {
                 if (st) goto done;
@@ -569,7 +569,7 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
             last_is_best = 1;
             continue;
         } else {
-            if (ok) ok = fit_curve_distances(&ob, best.x, v, projected, d, fs, tmp) == EL_OK &&
+            if (ok) ok = el__fit_curve_distances(&ob, best.x, v, projected, d, fs, tmp) == EL_OK &&
                          !el__all_finite(d, n) && !el__all_finite(fs, n);
             /* after SAMPLED_ROUNDS that all found feet elsewhere: no more rounds */
             if (!ok || !may_refit || round == FEET_ROUNDS || sampled == SAMPLED_ROUNDS) break;
@@ -624,18 +624,18 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
         double shifted[FIT_NP];
         memcpy(shifted, v[0], sizeof shifted);
         const int may_shift = model == FIT_SMOOTH && !o.fixed[ik] && !o.fixed[5] &&
-                              fit_canonical(model, shifted, 1) == EL_OK &&
+                              el__fit_canonical(model, shifted, 1) == EL_OK &&
                               shifted[ik] >= lo[ik] && shifted[ik] <= hi[ik] &&
                               shifted[5] >= lo[5] && shifted[5] <= hi[5];
-        if (!ok || fit_canonical(model, v[0], may_shift)) {    /* only for unevaluable points */
+        if (!ok || el__fit_canonical(model, v[0], may_shift)) {    /* only for unevaluable points */
             memcpy(v[0], best_init, sizeof v[0]);
-            fit_canonical(model, v[0], 0);
+            el__fit_canonical(model, v[0], 0);
             if (status == EL_OK) status = EL_ENOCONV;
         }
     }
     for (int j = 0; j < FIT_NP; j++) {
-        res->params[j] = o.fixed[j] ? o.value[j] : fit_denorm_param(model, j, v[0][j], cx, cy, sc);
-        res->initial[j] = o.use_initial ? init[j] : fit_denorm_param(model, j, best_init[j], cx, cy, sc);
+        res->params[j] = o.fixed[j] ? o.value[j] : el__fit_denorm_param(model, j, v[0][j], cx, cy, sc);
+        res->initial[j] = o.use_initial ? init[j] : el__fit_denorm_param(model, j, best_init[j], cx, cy, sc);
         if (!o.use_initial && o.fixed[j]) res->initial[j] = o.value[j];
     }
     /* never hand out NaN, inf, mu = 0 or a curve outside the model: outside double's range */
@@ -659,7 +659,7 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
     res->constraint = constraint;
     res->status = st = status;
 done:
-    fit_objective_free(&ob);
+    el__fit_objective_free(&ob);
     free(dbuf);
     free(t);
     free(tmp);
@@ -680,7 +680,7 @@ static int fit_run_either_way(int model, const double *xy, size_t n, const el_fi
                               const double *init, fit_out *res, double *dist, double *foot)
 {
     int plain = !opt || !xy || n < 4 || opt->use_initial || (model == FIT_SMOOTH && (opt->constraints & EL_CONSTRAIN_K)) ||
-                fit_held_score(opt, model, 1) <= fit_held_score(opt, model, 0);
+                el__fit_held_score(opt, model, 1) <= el__fit_held_score(opt, model, 0);
     for (int j = 0; j < FIT_NP && !plain; j++)
         plain = opt->fixed[j] || isfinite(opt->lower[j]) || isfinite(opt->upper[j]);
     if (plain) return fit_run(model, xy, n, opt, 0, init, res, dist, foot);
@@ -722,7 +722,7 @@ static int fit_run_either_way(int model, const double *xy, size_t n, const el_fi
     }
     for (int a = 0; a < 3; a++)
         if (res->constraint == swap[a][0] || res->constraint == swap[a][1]) res->constraint ^= swap[a][0] | swap[a][1];
-    if (fit_reverse_params(model, n, res->params) || fit_reverse_params(model, n, res->initial))
+    if (el__fit_reverse_params(model, n, res->params) || el__fit_reverse_params(model, n, res->initial))
         return fit_run(model, xy, n, opt, 0, init, res, dist, foot);
     return st;
 }
@@ -775,7 +775,7 @@ int el_fit_smooth(const double *xy, size_t n, const el_fit_options *opt,
     return fo.status;
 }
 
-int fit_start(int model, const double *xy, size_t n, const el_fit_options *opt, double *v, int *mode,
+int el__fit_start(int model, const double *xy, size_t n, const el_fit_options *opt, double *v, int *mode,
               int *iters, double *foot)
 {
     fit_out fo;

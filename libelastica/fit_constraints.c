@@ -9,7 +9,7 @@
 #include <string.h>
 
 /* The constraints in normalised units, and the bounds they add. */
-void fit_setup_constraints(const el_fit_options *o, int model, size_t n, double cx, double cy,
+void el__fit_setup_constraints(const el_fit_options *o, int model, size_t n, double cx, double cy,
                               double sc, fit_constraints *con, double *lo, double *hi)
 {
     memset(con, 0, sizeof *con);
@@ -34,7 +34,7 @@ void fit_setup_constraints(const el_fit_options *o, int model, size_t n, double 
 /* Which constraint the normalised parameters v violate most (0: none), after a solve:
  * points and curvatures to 1e-10 of the data's rms radius, angles to 1e-10 rad, a
  * tangent not reversed, the length and k within their ranges. */
-int fit_violated(const fit_objective *ob, const fit_constraints *con, const double *v,
+int el__fit_violated(const fit_objective *ob, const fit_constraints *con, const double *v,
                     const double *lo, const double *hi, double *tmp)
 {
     const int model = ob->map.model, mask = con->mask;
@@ -52,7 +52,7 @@ int fit_violated(const fit_objective *ob, const fit_constraints *con, const doub
         const int kbit = at_end ? EL_CONSTRAIN_END_CURVATURE : EL_CONSTRAIN_START_CURVATURE;
         if (!(mask & (pbit | tbit | kbit))) continue;
         fit_end e;
-        if (fit_end_state(model, v, ob->n, at_end, &e, tmp)) return mask & (pbit | tbit | kbit);
+        if (el__fit_end_state(model, v, ob->n, at_end, &e, tmp)) return mask & (pbit | tbit | kbit);
         const double *P = at_end ? con->end_xy : con->start_xy;
         const double err[3] = {(mask & pbit) ? fmax(fabs(e.xy[0] - P[0]), fabs(e.xy[1] - P[1])) : 0.0,
                                (mask & tbit) ? fabs(remainder(e.theta - (at_end ? con->end_theta : con->start_theta), 2.0 * M_PI)) : 0.0,
@@ -79,7 +79,7 @@ int fit_violated(const fit_objective *ob, const fit_constraints *con, const doub
  * return (p0's when nothing could be fitted). Returns the iterations.
  */
 enum { HELD_STAGES = 4 };
-int fit_held_start(fit_objective *ob, const fit_map *out, const fit_map *free_map, int bits,
+int el__fit_held_start(fit_objective *ob, const fit_map *out, const fit_map *free_map, int bits,
                       const fit_constraints *con, int max_iter, const double *p0, double *x, double *tmp)
 {
     const int model = free_map->model;
@@ -89,13 +89,13 @@ int fit_held_start(fit_objective *ob, const fit_map *out, const fit_map *free_ma
     const fit_map saved = ob->map;
     int iters = 0;
     fit_solution sol;
-    fit_map_inverse(out, p0, x);
+    el__fit_map_inverse(out, p0, x);
     ob->map = *free_map;
     ob->have_base = 0;
-    fit_map_inverse(free_map, p0, xf);
+    el__fit_map_inverse(free_map, p0, xf);
     fit_end e;
-    if (fit_lm(ob, xf, max_iter, &sol) != EL_OK || fit_map_eval(free_map, sol.x, v, NULL) ||
-        (model == FIT_DISCRETE && fit_end_state(model, v[0], ob->n, 0, &e, tmp))) {
+    if (el__fit_lm(ob, xf, max_iter, &sol) != EL_OK || el__fit_map_eval(free_map, sol.x, v, NULL) ||
+        (model == FIT_DISCRETE && el__fit_end_state(model, v[0], ob->n, 0, &e, tmp))) {
         ob->map = saved;
         ob->have_base = 0;
         return 0;
@@ -122,10 +122,10 @@ int fit_held_start(fit_objective *ob, const fit_map *out, const fit_map *free_ma
         ob->map = stage;
         ob->have_base = 0;
         double xs[FIT_MAXX];
-        fit_map_inverse(&stage, v[0], xs);
-        if (fit_lm(ob, xs, max_iter, &sol) != EL_OK || fit_map_eval(&stage, sol.x, v, NULL)) break;
+        el__fit_map_inverse(&stage, v[0], xs);
+        if (el__fit_lm(ob, xs, max_iter, &sol) != EL_OK || el__fit_map_eval(&stage, sol.x, v, NULL)) break;
         iters += sol.iters;
-        fit_map_inverse(out, v[0], x);
+        el__fit_map_inverse(out, v[0], x);
     }
     ob->map = saved;
     ob->have_base = 0;
@@ -136,7 +136,7 @@ int fit_held_start(fit_objective *ob, const fit_map *out, const fit_map *free_ma
  * point (x0, y0), and through the start-state chart the smooth start tangent and
  * curvature and the discrete zero start curvature are held exactly; the discrete
  * tangent and other curvatures are started near (fit_run). */
-int fit_held_score(const el_fit_options *o, int model, int at_end)
+int el__fit_held_score(const el_fit_options *o, int model, int at_end)
 {
     const int c = o->constraints;
     const int pbit = at_end ? EL_CONSTRAIN_END_POINT : EL_CONSTRAIN_START_POINT;
@@ -144,7 +144,7 @@ int fit_held_score(const el_fit_options *o, int model, int at_end)
     const int kbit = at_end ? EL_CONSTRAIN_END_CURVATURE : EL_CONSTRAIN_START_CURVATURE;
     const double kv = at_end ? o->end_curvature : o->start_curvature;
     /* 2 for each held exactly, 1 for the discrete tangent or curvature (a start by
-     * continuation in the chart, fit_held_start) */
+     * continuation in the chart, el__fit_held_start) */
     return 2 * !!(c & pbit) + ((c & tbit) ? (model == FIT_SMOOTH ? 2 : 1) : 0) +
            ((c & kbit) ? (model == FIT_SMOOTH || kv == 0.0 ? 2 : 1) : 0);
 }
@@ -153,7 +153,7 @@ int fit_held_score(const el_fit_options *o, int model, int at_end)
  * el_smooth_reverse; discrete vertex j' = vertex n-1-j is
  * (gamma_{n-1}, h, phi + pi, -z, q + (n-1) z, k) (Theta_j = phi + a_j + a_{j+1}). Both
  * are involutions; then the canonical form (k >= 0 inflectional). */
-int fit_reverse_params(int model, size_t n, double *p)
+int el__fit_reverse_params(int model, size_t n, double *p)
 {
     double end[2];
     if (model == FIT_SMOOTH) {
@@ -177,5 +177,5 @@ int fit_reverse_params(int model, size_t n, double *p)
     }
     p[0] = end[0]; p[1] = end[1];
     p[3 - (model == FIT_SMOOTH)] = remainder(p[3 - (model == FIT_SMOOTH)], 2.0 * M_PI);
-    return fit_canonical(model, p, 1);
+    return el__fit_canonical(model, p, 1);
 }

@@ -38,7 +38,7 @@ static int feet_eval(const fit_objective *o, double v[2][FIT_NP], const double *
         }
         if (cnt == 0) continue;
         el_smooth_params p;
-        int st = fit_to_smooth(v[c], &p);
+        int st = el__fit_to_smooth(v[c], &p);
         if (st || (st = el_smooth_eval(&p, cnt, s, xy, th, ka))) return st ? st : EL_EDOM;
         const double dir = nc == 2 && c == 0 ? -1.0 : 1.0;
         for (size_t j = 0; j < cnt; j++) {
@@ -126,7 +126,7 @@ static int project_block(const fit_objective *o, double v[2][FIT_NP], size_t a, 
  * the first points (measured: rms 1.62 reported where 1.51 exists, found by SLSQP);
  * unconstrained fits end at the first and last points' feet, where the extension does
  * not matter, and converge faster with it (measured: a 1000-point uneven scan 2 x). */
-void fit_feet_range(const fit_objective *o, double v[2][FIT_NP], int extended, double *lo, double *hi)
+void el__fit_feet_range(const fit_objective *o, double v[2][FIT_NP], int extended, double *lo, double *hi)
 {
     const int ext = extended && !(o->map.ncurves == 1 && o->exact_ends);
     const double e = ext ? 1.05 : 1.0;
@@ -134,29 +134,29 @@ void fit_feet_range(const fit_objective *o, double v[2][FIT_NP], int extended, d
     *hi = e * v[o->map.ncurves == 2 ? 1 : 0][6];
 }
 
-int fit_objective_project(fit_objective *o, const double *x)
+int el__fit_objective_project(fit_objective *o, const double *x)
 {
     double v[2][FIT_NP], lo, hi;
-    int st = fit_map_eval(&o->map, x, v, NULL);
+    int st = el__fit_map_eval(&o->map, x, v, NULL);
     if (st) return st;
-    fit_feet_range(o, v, 1, &lo, &hi);
+    el__fit_feet_range(o, v, 1, &lo, &hi);
     /* the ends keep their places (their residuals are full vectors) */
     for (size_t a = 1; a + 1 < o->n; a += FIT_BLOCK) {
         const size_t m = o->n - 1 - a < FIT_BLOCK ? o->n - 1 - a : FIT_BLOCK;
         if ((st = project_block(o, v, a, m, o->s, lo, hi, NULL, 0))) return st;
     }
-    fit_feet_range(o, v, 0, &lo, &hi);
+    el__fit_feet_range(o, v, 0, &lo, &hi);
     o->s[0] = lo;
     o->s[o->n - 1] = hi;
     return EL_OK;
 }
 
-int fit_feet_distances(fit_objective *o, const double *x, double *dist, double *foot, int *side)
+int el__fit_feet_distances(fit_objective *o, const double *x, double *dist, double *foot, int *side)
 {
     double v[2][FIT_NP], lo, hi;
-    int st = fit_map_eval(&o->map, x, v, NULL);
+    int st = el__fit_map_eval(&o->map, x, v, NULL);
     if (st) return st;
-    fit_feet_range(o, v, 0, &lo, &hi);
+    el__fit_feet_range(o, v, 0, &lo, &hi);
     double *sig = o->s_next;
     /* the points the last evaluation, at this x, found at rest keep its distances and
      * feet (fit_objective.c) */
@@ -182,25 +182,25 @@ int fit_feet_distances(fit_objective *o, const double *x, double *dist, double *
  * from the curve's own point-to-curve distances and only improves on them; the
  * fractions' places t_i L if that search fails. Only the branch of each foot matters
  * here (the fit moves the feet by Newton steps at every evaluation and certifies them at
- * rest): the passes the curve's samples show (fit_feet_elsewhere; a pass it misses is
+ * rest): the passes the curve's samples show (el__fit_feet_elsewhere; a pass it misses is
  * the refit's, fit.c), none sampled where a foot is proven the nearest point (an open
- * arc: fit_feet_unproven). The search everywhere took more on loops (measured on the 42
+ * arc: el__fit_feet_unproven). The search everywhere took more on loops (measured on the 42
  * noisy 1000-point smooth curves of bench_fit.py: 428M instructions against 169M, one
  * loop's 20.3M against 5.6M); on open arcs the samples of every pass cost more than it
  * (2.0M against 3.1M), the proof less (whole fits of 45 open and looped arcs of 20 -
  * 5000 points against main's: none above +2 % but one spiral's +3.5 %).
  */
-int fit_feet_start(fit_objective *o, const double *x)
+int el__fit_feet_start(fit_objective *o, const double *x)
 {
     double v[2][FIT_NP];
     o->have_base = 0;
-    int st = fit_map_eval(&o->map, x, v, NULL);
+    int st = el__fit_map_eval(&o->map, x, v, NULL);
     if (st) return st;
     for (size_t i = 0; i < o->n; i++) o->s[i] = o->t[i] * v[0][6];
     double *d = o->rest, *fs = o->rest_foot;    /* the report's arrays (fit_run) */
     o->rest_ok = 0;
     size_t moved;
-    if (fit_feet_elsewhere(o, x, v, d, fs, &moved) == EL_OK) {
+    if (el__fit_feet_elsewhere(o, x, v, d, fs, &moved) == EL_OK) {
         memcpy(o->s + 1, fs + 1, sizeof(double) * (o->n - 2));
         o->s[0] = 0.0;
         o->s[o->n - 1] = v[0][6];
@@ -208,11 +208,11 @@ int fit_feet_start(fit_objective *o, const double *x)
     return EL_OK;
 }
 
-int fit_feet_project_list(const fit_objective *o, double v[2][FIT_NP], const size_t *pt, size_t m, double *sig,
+int el__fit_feet_project_list(const fit_objective *o, double v[2][FIT_NP], const size_t *pt, size_t m, double *sig,
                           double *dist)
 {
     double lo, hi;
-    fit_feet_range(o, v, 0, &lo, &hi);
+    el__fit_feet_range(o, v, 0, &lo, &hi);
     int st = EL_OK;
     size_t act[FIT_BLOCK];
     for (size_t a = 0; a < m && !st; a += FIT_BLOCK) {

@@ -20,13 +20,13 @@
 
 enum {
     FIT_NP = 7,        /* parameters of one curve */
-    FIT_PIECES = 128,  /* fit_feet_unproven's pieces of the curve */
+    FIT_PIECES = 128,  /* el__fit_feet_unproven's pieces of the curve */
     FIT_MAXX = 9,      /* optimiser variables at most (the keyline's joint problem) */
     FIT_BLOCK = 256,   /* samples per block of the streamed Jacobian */
     FIT_NCON = 6,      /* constraint rows at most */
     FIT_KNOTS = 65,    /* samples of the tangential motion of a curve (fit_objective.c) */
     /* scratch for a walk over a discrete curve: a block's points, Jacobian rows and the
-     * walk's own buffer (fit_discrete_rows: 2 (m + 1) (FIT_NP + 1) doubles) */
+     * walk's own buffer (el__fit_discrete_rows: 2 (m + 1) (FIT_NP + 1) doubles) */
     FIT_WORK = 2 * FIT_BLOCK * (FIT_NP + 1) + 2 * (FIT_BLOCK + 1) * (FIT_NP + 1)
 };
 
@@ -43,15 +43,15 @@ static inline double fit_norm(double x, double y) { return sqrt(x * x + y * y); 
  *   smooth   v = (x0, y0, phi, w, k, q, L) with w = sqrt(mu) of either sign: w < 0 is
  *     the curve (|w|, -k, -q) (sn odd, dn even), so k sn u is unchanged.
  * Both continuations let a Gauss-Newton step cross k = 0 or w = 0 instead of
- * stalling at a bound; fit_canonical() maps results back to the model's form.
+ * stalling at a bound; el__fit_canonical() maps results back to the model's form.
  */
-int fit_to_discrete(const double *v, el_discrete_params *p, double *dq_dk);
-int fit_to_smooth(const double *v, el_smooth_params *p);
-int fit_canonical(int model, double *v, int may_shift);
+int el__fit_to_discrete(const double *v, el_discrete_params *p, double *dq_dk);
+int el__fit_to_smooth(const double *v, el_smooth_params *p);
+int el__fit_canonical(int model, double *v, int may_shift);
 
 /* Points (xy, 2m) and, when jac != NULL, d gamma / d v (jac[(2i+c)*7 + j]) of the
  * smooth model at m arc lengths s. */
-int fit_smooth_rows(const double *v, size_t m, const double *s, double *xy, double *jac);
+int el__fit_smooth_rows(const double *v, size_t m, const double *s, double *xy, double *jac);
 
 /* The discrete vertices walked in blocks: the walk carries the next vertex and its
  * derivative, so vertex i of a block has the same d gamma_i / d v as one call over
@@ -60,8 +60,8 @@ typedef struct fit_walk {
     size_t next;                 /* index of the next vertex */
     double xy[2], d[2][FIT_NP];  /* that vertex and its derivative */
 } fit_walk;
-void fit_walk_start(const double *v, fit_walk *w);
-int fit_discrete_rows(const double *v, fit_walk *w, size_t m, double *xy, double *jac,
+void el__fit_walk_start(const double *v, fit_walk *w);
+int el__fit_discrete_rows(const double *v, fit_walk *w, size_t m, double *xy, double *jac,
                       double *tmp /* 2 (m+1) (7+1) */);
 
 /* State of a curve at arc length s (smooth; s = 0 or L) or at a vertex end
@@ -72,7 +72,7 @@ typedef struct fit_end {
     double xy[2], theta, kappa;
     double dxy[2][FIT_NP], dtheta[FIT_NP], dkappa[FIT_NP];
 } fit_end;
-int fit_end_state(int model, const double *v, size_t n, int at_end, fit_end *e,
+int el__fit_end_state(int model, const double *v, size_t n, int at_end, fit_end *e,
                   double *tmp /* discrete end: fit_walk block buffers, FIT_WORK doubles */);
 
 /* The map from the optimiser's variables x to the curves' internal parameters. */
@@ -90,12 +90,12 @@ typedef struct fit_map {
 
 /* v[c] (c < ncurves) and M = d v / d x (may be NULL): curve c's 7 x nx block, row-major,
  * at M + c * FIT_NP * FIT_MAXX. */
-int fit_map_eval(const fit_map *m, const double *x, double v[2][FIT_NP], double *M);
+int el__fit_map_eval(const fit_map *m, const double *x, double v[2][FIT_NP], double *M);
 /* The largest step fraction alpha <= 1 that keeps x + alpha d in the model's domain. */
-double fit_map_step_limit(const fit_map *m, const double *x, const double *d);
+double el__fit_map_step_limit(const fit_map *m, const double *x, const double *d);
 /* x for the parameters v[0] (one curve). */
-void fit_map_inverse(const fit_map *m, const double *v, double *x);
-int fit_keyline_map(const fit_map *m, const double *x, double v[2][FIT_NP], double *M);
+void el__fit_map_inverse(const fit_map *m, const double *v, double *x);
+int el__fit_keyline_map(const fit_map *m, const double *x, double v[2][FIT_NP], double *M);
 
 /* ------------------------------------------------------------------ objective */
 
@@ -126,22 +126,22 @@ typedef struct fit_objective {
     double knot_b[2][FIT_KNOTS][FIT_MAXX], knot_ds[2][FIT_KNOTS];
     /* a later guess's Levenberg-Marquardt gives up once it cannot reach this objective
      * (an earlier guess's) at its recent rate within its remaining iterations
-     * (fit_lm.c); HUGE_VAL (fit_objective_init): never */
+     * (fit_lm.c); HUGE_VAL (el__fit_objective_init): never */
     double f_ceiling;
     /* Levenberg-Marquardt stops once a Gauss-Newton step would lower f by less than
-     * lm_tol of itself (fit_lm.c; fit_objective_init: 1e-13, the certificate) */
+     * lm_tol of itself (fit_lm.c; el__fit_objective_init: 1e-13, the certificate) */
     double lm_tol;
     /* smooth orthogonal, one curve: the reported distances' and feet's arrays (n each,
      * may be NULL), holding after each evaluation the signed distance and the moved foot
      * of every point whose foot that evaluation found at rest within [0, L] (a Newton
-     * step below 1e-7 L, fit_feet_distances' test), distance NaN for the others; rest_x:
+     * step below 1e-7 L, el__fit_feet_distances' test), distance NaN for the others; rest_x:
      * the variables it was at, rest_ok: set by a completed evaluation, cleared by other
-     * writers of the arrays. fit_feet_distances at rest_x takes those points as they are
+     * writers of the arrays. el__fit_feet_distances at rest_x takes those points as they are
      * (the report after the fit: one evaluation of every point fewer) */
     double *rest, *rest_foot, rest_x[FIT_MAXX];
     int rest_ok;
-    /* smooth orthogonal: a sampled search for feet on another pass (fit_feet_elsewhere)
-     * has seen a pass within reach of a point, other than its own (fit_objective_init: 0) */
+    /* smooth orthogonal: a sampled search for feet on another pass (el__fit_feet_elsewhere)
+     * has seen a pass within reach of a point, other than its own (el__fit_objective_init: 0) */
     int other_passes;
     size_t split;                /* discrete keyline: the data index of the joint */
     double *work;                /* block buffers */
@@ -162,18 +162,18 @@ typedef struct fit_value {
     double g[FIT_MAXX], H[FIT_MAXX * FIT_MAXX];
 } fit_value;
 
-int fit_objective_init(fit_objective *o, int kind, const fit_map *map, const double *xy, size_t n,
+int el__fit_objective_init(fit_objective *o, int kind, const fit_map *map, const double *xy, size_t n,
                        double cx, double cy, double sc, const double *t);
 /* The smooth feet are variables of the objective (orthogonal, keyline); a paired smooth
  * objective keeps the arrays for the distances only. */
 static inline int fit_has_feet(const fit_objective *o) { return o->s && o->kind != FIT_PAIRED; }
-void fit_objective_free(fit_objective *o);
-int fit_objective_eval(fit_objective *o, const double *x, int want_normal, fit_value *out);
+void el__fit_objective_free(fit_objective *o);
+int el__fit_objective_eval(fit_objective *o, const double *x, int want_normal, fit_value *out);
 /* After an accepted step of a lazy-foot evaluation (want_normal at the accepted x): the
  * feet move to the updated ones computed there. */
-void fit_objective_accept(fit_objective *o);
+void el__fit_objective_accept(fit_objective *o);
 /* Feet to the nearest points (Newton, from the current feet) at x. */
-int fit_objective_project(fit_objective *o, const double *x);
+int el__fit_objective_project(fit_objective *o, const double *x);
 
 /* min(max(x, lo), hi) for finite values, inline (libm's fmin / fmax are calls, in the
  * per-point loops of the feet). */
@@ -191,56 +191,56 @@ static inline double fit_foot_step(double t, double e, double kappa, double rang
     return fit_clamp(-t / (den > 0.25 ? den : 0.25), -lim, lim);
 }
 /* The feet's range [lo, hi]: the curve itself, or extended (the objective's). */
-void fit_feet_range(const fit_objective *o, double v[2][FIT_NP], int extended, double *lo, double *hi);
+void el__fit_feet_range(const fit_objective *o, double v[2][FIT_NP], int extended, double *lo, double *hi);
 /* Smooth orthogonal, one curve, o->rest and o->rest_foot set (fit.c's buffers): the first
  * feet of a fit from x, each where the curve at x comes nearest (else at t_i L); an error
  * only when that curve cannot be evaluated. */
-int fit_feet_start(fit_objective *o, const double *x);
+int el__fit_feet_start(fit_objective *o, const double *x);
 /* Smooth, one curve: the m feet sig[k] of the points pt[k] by Newton's method from
  * sig[k] to the nearest points in [0, L], with their signed distances dist[k]. */
-int fit_feet_project_list(const fit_objective *o, double v[2][FIT_NP], const size_t *pt, size_t m, double *sig,
+int el__fit_feet_project_list(const fit_objective *o, double v[2][FIT_NP], const size_t *pt, size_t m, double *sig,
                           double *dist);
 /* Signed distances (left of the curve positive), feet (arc length; for the keyline from
  * the joint) and sides (keyline; may be NULL) of every point at x, normalised units:
  * the feet projected from o->s (which keeps the objective's feet). */
-int fit_feet_distances(fit_objective *o, const double *x, double *dist, double *foot, int *side);
+int el__fit_feet_distances(fit_objective *o, const double *x, double *dist, double *foot, int *side);
 /* The same for the polygon of nv vertices V (normalised) of one discrete curve of
  * segment h, vertex j <-> point first + step j. */
-void fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, double h,
+void el__fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, double h,
                            size_t first, long step, double *dist, double *foot);
 
 /* The distances above, corrected where the curve comes nearer elsewhere (a loop
  * passing close to itself): dist, foot, side (may be NULL) in and out; for the discrete
  * model V[c] are the vertices (nv[c]) of curve c. The signs are each curve's own. */
-int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const double *V[2],
+int el__fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const double *V[2],
                            const size_t nv[2], double *dist, double *foot, int *side);
 
 /* fit_refit.c: the distances and feet (normalised) of every point to the kept curve x
  * (v its parameters), near each point's own place, then wherever the curve comes nearer;
- * projected (smooth): d, fs hold the first already (fit_feet_distances at x); tmp:
+ * projected (smooth): d, fs hold the first already (el__fit_feet_distances at x); tmp:
  * FIT_WORK doubles. */
-int fit_curve_distances(fit_objective *ob, const double *x, double v[2][FIT_NP], int projected, double *d,
+int el__fit_curve_distances(fit_objective *ob, const double *x, double v[2][FIT_NP], int projected, double *d,
                         double *fs, double *tmp);
 /* fit_refit.c: the smooth distances d and feet fs of the points at x (v its parameters,
  * one curve), the feet projected from o->s, then those found nearer on another pass of
  * the curve from its samples (*moved of them whose foot in o->s lies on [0, L]). */
-int fit_feet_elsewhere(fit_objective *o, const double *x, double v[2][FIT_NP], double *d, double *fs,
+int el__fit_feet_elsewhere(fit_objective *o, const double *x, double v[2][FIT_NP], double *d, double *fs,
                        size_t *moved);
 /* fit_refit.c, one smooth curve v: unproven[i] = 1 for the inner points whose feet fs
- * (distances d, Newton's) the proof of fit_feet_elsewhere does not show the nearest points
+ * (distances d, Newton's) the proof of el__fit_feet_elsewhere does not show the nearest points
  * (their count *nopen; 0 at the ends), and mark[j] = 1 for the FIT_PIECES pieces of
  * length L / FIT_PIECES that can hold a point nearer to one of them. */
-int fit_feet_unproven(const fit_objective *o, double v[2][FIT_NP], const double *d, const double *fs,
+int el__fit_feet_unproven(const fit_objective *o, double v[2][FIT_NP], const double *d, const double *fs,
                       unsigned char *unproven, size_t *nopen, unsigned char mark[FIT_PIECES]);
 
 /* Normalisation shared with guess.c: centroid and rms radius of the points;
  * EL_ESINGULAR (all equal), EL_EDOM (a spread below ~1e-292 or beyond double's range). */
-int fit_normalisation(const double *xy, size_t n, double *cx, double *cy, double *sc);
+int el__fit_normalisation(const double *xy, size_t n, double *cx, double *cy, double *sc);
 /* A parameter j of a model in input units <-> normalised (the smooth mu <-> w). */
-double fit_norm_param(int model, int j, double v, double cx, double cy, double sc);
-double fit_denorm_param(int model, int j, double v, double cx, double cy, double sc);
+double el__fit_norm_param(int model, int j, double v, double cx, double cy, double sc);
+double el__fit_denorm_param(int model, int j, double v, double cx, double cy, double sc);
 /* The rms noise of the points from second differences, in normalised units. */
-double fit_noise_rms(const double *xy, size_t n, double sc);
+double el__fit_noise_rms(const double *xy, size_t n, double sc);
 
 /* ------------------------------------------------------------------ results */
 
@@ -281,9 +281,9 @@ typedef struct fit_solution {
 
 /* Levenberg-Marquardt from x; fills sol (best point seen). EL_OK, or an error of the
  * objective at the start point. */
-int fit_lm(fit_objective *o, const double *x, int max_iter, fit_solution *sol);
+int el__fit_lm(fit_objective *o, const double *x, int max_iter, fit_solution *sol);
 /* The first-order condition: g^T H^-1 g <= tol 2f (fit_lm.c), or f at rounding level. */
-int fit_first_order(const fit_value *v, int nx, double tol);
+int el__fit_first_order(const fit_value *v, int nx, double tol);
 
 /* Constraints (normalised units), the bits of enum el_fit_constraint. */
 typedef struct fit_constraints {
@@ -300,18 +300,18 @@ typedef struct fit_ipopt_out {
  * el_fit_smooth by Levenberg-Marquardt alone, no Ipopt fallback (an uncertified result
  * is EL_EMAXITER / EL_ENOCONV with its parameters). v: the parameters in input units
  * (the model's Jacobian order); *iters += the iterations; foot: as el_fit_smooth's. */
-int fit_start(int model, const double *xy, size_t n, const el_fit_options *opt, double *v, int *mode,
+int el__fit_start(int model, const double *xy, size_t n, const el_fit_options *opt, double *v, int *mode,
               int *iters, double *foot);
 
 /* Ipopt from x (in place; the best point seen on return) with bounds xl, xu (+-HUGE_VAL:
  * none) and constraints con (NULL: none). */
-int fit_ipopt(fit_objective *o, const double *xl, const double *xu, const fit_constraints *con,
+int el__fit_ipopt(fit_objective *o, const double *xl, const double *xu, const fit_constraints *con,
               const el_fit_options *opt, double *x, fit_ipopt_out *out, double *tmp);
 /* Constraint values c (rows in the order of the mask bits; the start point is held
  * parameters, the length and k ranges bounds, so neither has rows), their kinds which[]
  * and, when J != NULL, their derivative in x (rows x nx); returns the row count, -1
  * when the curve cannot be evaluated. tmp: FIT_WORK doubles. */
-int fit_constraint_rows(const fit_objective *o, const fit_constraints *con, const double *x,
+int el__fit_constraint_rows(const fit_objective *o, const fit_constraints *con, const double *x,
                         double *c, double *J, int *which, double *tmp);
 
 /* ---- the end constraints (fit_constraints.c) */
@@ -321,18 +321,18 @@ static inline int fit_length_slot(int model) { return model == FIT_DISCRETE ? 2 
 static inline int fit_k_slot(int model) { return model == FIT_DISCRETE ? 6 : 4; }
 /* The options' constraints in normalised units (centre cx, cy, scale sc) into con, and
  * the bounds on the length and k they add to lo, hi. */
-void fit_setup_constraints(const el_fit_options *o, int model, size_t n, double cx, double cy,
+void el__fit_setup_constraints(const el_fit_options *o, int model, size_t n, double cx, double cy,
                            double sc, fit_constraints *con, double *lo, double *hi);
 /* The constraint bit the normalised parameters v violate most (0: none). */
-int fit_violated(const fit_objective *ob, const fit_constraints *con, const double *v,
+int el__fit_violated(const fit_objective *ob, const fit_constraints *con, const double *v,
                  const double *lo, const double *hi, double *tmp);
 /* A start for a fit with a start tangent or curvature (bits) by continuation in the
  * start-state chart; x: out's variables. Returns the iterations spent. */
-int fit_held_start(fit_objective *ob, const fit_map *out, const fit_map *free_map, int bits,
+int el__fit_held_start(fit_objective *ob, const fit_map *out, const fit_map *free_map, int bits,
                    const fit_constraints *con, int max_iter, const double *p0, double *x, double *tmp);
 /* How many of one end's constraints a fit would hold exactly at its start (weighted). */
-int fit_held_score(const el_fit_options *o, int model, int at_end);
+int el__fit_held_score(const el_fit_options *o, int model, int at_end);
 /* p (input units, n points) replaced by the same curve run backwards, canonical. */
-int fit_reverse_params(int model, size_t n, double *p);
+int el__fit_reverse_params(int model, size_t n, double *p);
 
 #endif

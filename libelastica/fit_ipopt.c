@@ -4,10 +4,10 @@
  *
  *   minimise f(x) = (1/2n) sum r^2   subject to  xl <= x <= xu,  c(x) = 0,
  *
- * f and its gradient J^T r / n from fit_objective_eval (the feet projected at every
+ * f and its gradient J^T r / n from el__fit_objective_eval (the feet projected at every
  * evaluation, from those of the line search's base: f is a function of x along a
  * search); the constraints (end point, tangent directions, curvatures at the ends) with
- * their analytic Jacobians from fit_end_state; the Hessian of the Lagrangian by
+ * their analytic Jacobians from el__fit_end_state; the Hessian of the Lagrangian by
  * differences of its analytic gradient (cb_h). A tangent direction alpha is the
  * constraint sin(theta - alpha) = 0, smooth everywhere; the reversed direction
  * (cos < 0) is caught by the caller's check of the result.
@@ -83,7 +83,7 @@ static int ensure(ipctx *c, const double *x)
      * with L-BFGS, EL_ENOCONV after 246 iterations, 1.9 s; anchored EL_OK after 78,
      * 0.4 s, rms 1.012 of the exact Hessian's instead of 1.074) */
     if (c->have_anchor) memcpy(c->o->s, c->anchor, sizeof(double) * c->o->n);
-    int st = fit_objective_eval(c->o, x, 1, &c->val);
+    int st = el__fit_objective_eval(c->o, x, 1, &c->val);
     if (st) return st;
     memcpy(c->xkey, x, sizeof(double) * (size_t)c->nx);
     c->have = 1;
@@ -95,12 +95,12 @@ static int ensure(ipctx *c, const double *x)
 }
 
 /* Constraint rows at x: values (and d/dx when J). */
-int fit_constraint_rows(const fit_objective *o, const fit_constraints *con, const double *x,
+int el__fit_constraint_rows(const fit_objective *o, const fit_constraints *con, const double *x,
                         double *c, double *J, int *which, double *tmp)
 {
     const int nx = o->map.nx;
     double v[2][FIT_NP], M[FIT_NP * FIT_MAXX];
-    if (fit_map_eval(&o->map, x, v, M)) return -1;
+    if (el__fit_map_eval(&o->map, x, v, M)) return -1;
     fit_end e[2];
     int have[2] = {0, 0}, rows = 0;
     for (int bit = 0; bit < 6; bit++) {
@@ -109,7 +109,7 @@ int fit_constraint_rows(const fit_objective *o, const fit_constraints *con, cons
         const int at_end = flag == EL_CONSTRAIN_END_POINT || flag == EL_CONSTRAIN_END_TANGENT ||
                            flag == EL_CONSTRAIN_END_CURVATURE;
         if (!have[at_end]) {
-            if (fit_end_state(o->map.model, v[0], o->n, at_end, &e[at_end], tmp)) return -1;
+            if (el__fit_end_state(o->map.model, v[0], o->n, at_end, &e[at_end], tmp)) return -1;
             have[at_end] = 1;
         }
         const fit_end *E = &e[at_end];
@@ -187,7 +187,7 @@ static Bool cb_g(Index n, Number *x, Bool new_x, Index m, Number *g, UserDataPtr
     ipctx *c = ud;
     if (m == 0) return TRUE;
     /* (every value handed to Ipopt finite: MUMPS crashes on inf in its matrix) */
-    return fit_constraint_rows(c->o, c->con, x, g, NULL, NULL, c->tmp) == m &&
+    return el__fit_constraint_rows(c->o, c->con, x, g, NULL, NULL, c->tmp) == m &&
            !el__all_finite(g, (size_t)m);
 }
 
@@ -203,7 +203,7 @@ static Bool cb_jac_g(Index n, Number *x, Bool new_x, Index m, Index nele, Index 
         return TRUE;
     }
     double cv[FIT_NCON];
-    return fit_constraint_rows(c->o, c->con, x, cv, values, NULL, c->tmp) == m &&
+    return el__fit_constraint_rows(c->o, c->con, x, cv, values, NULL, c->tmp) == m &&
            !el__all_finite(values, (size_t)m * (size_t)n);
 }
 
@@ -221,11 +221,11 @@ static int lagrangian_gradient(ipctx *c, const double *x, double of, const doubl
                                double *gl)
 {
     fit_value v;
-    if (fit_objective_eval(c->o, x, 1, &v)) return 0;
+    if (el__fit_objective_eval(c->o, x, 1, &v)) return 0;
     for (int i = 0; i < c->nx; i++) gl[i] = of * v.g[i];
     if (m > 0) {
         double cv[FIT_NCON], J[FIT_NCON * FIT_MAXX];
-        if (fit_constraint_rows(c->o, c->con, x, cv, J, NULL, c->tmp) != m) return 0;
+        if (el__fit_constraint_rows(c->o, c->con, x, cv, J, NULL, c->tmp) != m) return 0;
         for (int r = 0; r < m; r++)
             for (int i = 0; i < c->nx; i++) gl[i] += lambda[r] * J[r * c->nx + i];
     }
@@ -296,8 +296,8 @@ static Bool cb_iter(Index alg_mod, Index iter, Number obj, Number inf_pr, Number
     const double f = c->gval.f, ceiling = c->o->f_ceiling;
     c->flat = iter > 0 && f >= c->last_f * (1.0 - 1e-12) ? c->flat + 1 : 0;
     c->last_f = f;
-    if (fit_first_order(&c->gval, c->nx, c->o->lm_tol) ||
-        (c->flat >= LBFGS_FLAT && fit_first_order(&c->gval, c->nx, fmax(1e-11, 1e-14 * sqrt(2.0 / f))))) {
+    if (el__fit_first_order(&c->gval, c->nx, c->o->lm_tol) ||
+        (c->flat >= LBFGS_FLAT && el__fit_first_order(&c->gval, c->nx, fmax(1e-11, 1e-14 * sqrt(2.0 / f))))) {
         c->certified = 1;
         return FALSE;
     }
@@ -327,7 +327,7 @@ static int lbfgs_scaling(fit_objective *o, const double *x, double *d)
 {
     const int nx = o->map.nx;
     fit_value v;
-    if (fit_objective_eval(o, x, 1, &v) != EL_OK) return 0;
+    if (el__fit_objective_eval(o, x, 1, &v) != EL_OK) return 0;
     double top = 0.0;
     for (int j = 0; j < nx; j++) {
         d[j] = sqrt(fmax(v.H[j * nx + j], 0.0));
@@ -347,7 +347,7 @@ static int lbfgs_options(IpoptProblem pr, int free)
         && (!free || AddIpoptIntOption(pr, "acceptable_iter", 0));
 }
 
-int fit_ipopt(fit_objective *o, const double *xl, const double *xu, const fit_constraints *con,
+int el__fit_ipopt(fit_objective *o, const double *xl, const double *xu, const fit_constraints *con,
               const el_fit_options *opt, double *x, fit_ipopt_out *out, double *tmp)
 {
     const int nx = o->map.nx;
@@ -357,7 +357,7 @@ int fit_ipopt(fit_objective *o, const double *xl, const double *xu, const fit_co
     c.max_iter = opt->max_iter;
     c.best_f = HUGE_VAL;
     double cv[FIT_NCON];
-    c.m = con ? fit_constraint_rows(o, con, x, cv, NULL, NULL, tmp) : 0;
+    c.m = con ? el__fit_constraint_rows(o, con, x, cv, NULL, NULL, tmp) : 0;
     if (c.m < 0) return EL_EDOM;
     c.free = opt->limited_memory && c.m == 0;
     for (int j = 0; j < nx; j++) c.free &= !isfinite(xl[j]) && !isfinite(xu[j]);
@@ -425,7 +425,7 @@ int fit_ipopt(fit_objective *o, const double *xl, const double *xu, const fit_co
     /* the final point when feasible and no worse than the best seen, which is only
      * guaranteed feasible without constraints */
     fit_value fin;
-    const int fin_ok = el__all_finite(x, (size_t)nx) == EL_OK && fit_objective_eval(o, x, 0, &fin) == EL_OK;
+    const int fin_ok = el__all_finite(x, (size_t)nx) == EL_OK && el__fit_objective_eval(o, x, 0, &fin) == EL_OK;
     if (!fin_ok || (c.m == 0 && c.best_f < fin.f)) {
         if (!isfinite(c.best_f)) { o->exact_feet = saved; return ok ? EL_ENOCONV : EL_EINTERNAL; }
         memcpy(x, c.best_x, sizeof(double) * (size_t)nx);
@@ -433,7 +433,7 @@ int fit_ipopt(fit_objective *o, const double *xl, const double *xu, const fit_co
     } else {
         out->f = fin.f;
     }
-    if (fit_has_feet(o)) fit_objective_project(o, x);
+    if (fit_has_feet(o)) el__fit_objective_project(o, x);
     o->exact_feet = saved;
     return ok ? EL_OK : EL_EINTERNAL;
 }

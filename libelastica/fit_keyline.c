@@ -53,7 +53,7 @@ static void full_vars(const fit_map *m, const double *x, double *f)
     f[6] = m->fixed_h * m->scale[1]; f[7] = x[5]; f[8] = x[6];
 }
 
-int fit_keyline_map(const fit_map *m, const double *x, double v[2][FIT_NP], double *M)
+int el__fit_keyline_map(const fit_map *m, const double *x, double v[2][FIT_NP], double *M)
 {
     double f[9], Mf[2][FIT_NP][9];
     full_vars(m, x, f);
@@ -143,13 +143,13 @@ static int side_zero(int model, side_fit *sf, size_t nv)
     if (model == FIT_SMOOTH) {
         el_smooth_params p;
         double th;
-        if (fit_to_smooth(v, &p) || el_smooth_eval(&p, 1, &best, sf->xy, &th, NULL)) return EL_OK;
+        if (el__fit_to_smooth(v, &p) || el_smooth_eval(&p, 1, &best, sf->xy, &th, NULL)) return EL_OK;
         sf->theta = th;
     } else {
         /* the vertex nearest the zero, inside the side, and its segment's direction */
         const double j = fmin(fmax(nearbyint(best), 0.0), (double)nv - 2.0);
         el_discrete_params p;
-        if (fit_to_discrete(v, &p, NULL)) return EL_OK;
+        if (el__fit_to_discrete(v, &p, NULL)) return EL_OK;
         const size_t m2 = (size_t)j + 2;
         double *xy = malloc(sizeof(double) * 2 * m2);
         if (!xy) return EL_ENOMEM;
@@ -205,10 +205,10 @@ static int fit_side(int model, const double *xy, size_t n, size_t split, int dir
     el_fit_options so = *o;
     so.max_iter = so.max_iter < 40 ? so.max_iter : 40;
     double p[FIT_NP];
-    int st = fit_start(model, pts, m, &so, p, mode, iters, foot);
+    int st = el__fit_start(model, pts, m, &so, p, mode, iters, foot);
     free(pts);
     if (st != EL_OK && st != EL_ENOCONV && st != EL_EMAXITER) return st;
-    for (int j = 0; j < FIT_NP; j++) sf->v[j] = fit_norm_param(model, j, p[j], cx, cy, sc);
+    for (int j = 0; j < FIT_NP; j++) sf->v[j] = el__fit_norm_param(model, j, p[j], cx, cy, sc);
     if (foot)
         for (size_t j = 0; j < m; j++) foot[j] /= sc;
     return side_zero(model, sf, m);
@@ -260,7 +260,7 @@ static int keyline_run(int model, const double *xy, size_t n, size_t split, cons
     if (st) return st;
     el__gsl_quiet();
     double cx, cy, sc;
-    if ((st = fit_normalisation(xy, n, &cx, &cy, &sc))) return st;
+    if ((st = el__fit_normalisation(xy, n, &cx, &cy, &sc))) return st;
     const double fixed_h = model == FIT_DISCRETE && o.fixed[2] ? o.value[2] / sc : 0.0;
 
     double *feetA = NULL, *feetB = NULL, *tmp = NULL;
@@ -293,7 +293,7 @@ static int keyline_run(int model, const double *xy, size_t n, size_t split, cons
     map.fixed_h = fixed_h;
     map.scale[0] = model == FIT_DISCRETE ? (double)i0 : 1.0;
     map.scale[1] = model == FIT_DISCRETE ? (double)(n - 1 - i0) : 1.0;
-    if ((st = fit_objective_init(&ob, FIT_KEYLINE, &map, xy, n, cx, cy, sc, NULL))) goto done;
+    if ((st = el__fit_objective_init(&ob, FIT_KEYLINE, &map, xy, n, cx, cy, sc, NULL))) goto done;
     ob.split = i0;
 
     double xf[9], x[FIT_MAXX], L[2] = {0.0, 0.0}, P_split[2];
@@ -302,7 +302,7 @@ static int keyline_run(int model, const double *xy, size_t n, size_t split, cons
     if (map.nx == 9) memcpy(x, xf, sizeof xf);
     else { x[0] = xf[0]; x[1] = xf[1]; x[2] = xf[2]; x[3] = xf[4]; x[4] = xf[5]; x[5] = xf[7]; x[6] = xf[8]; }
     double v0[2][FIT_NP];
-    if ((st = fit_map_eval(&map, x, v0, NULL))) goto done;
+    if ((st = el__fit_map_eval(&map, x, v0, NULL))) goto done;
     if (model == FIT_SMOOTH) {   /* the first feet: each side fit's, from its zero */
         for (size_t j = 0; j <= split; j++) ob.s[split - j] = -(feetA[j] - (sf[0].has_zero ? sf[0].at : 0.0));
         for (size_t j = 1; j < n - split; j++) ob.s[split + j] = feetB[j] - (sf[1].has_zero ? sf[1].at : 0.0);
@@ -311,7 +311,7 @@ static int keyline_run(int model, const double *xy, size_t n, size_t split, cons
     }
 
     fit_solution sol;
-    if ((st = fit_lm(&ob, x, o.max_iter, &sol))) goto done;
+    if ((st = el__fit_lm(&ob, x, o.max_iter, &sol))) goto done;
     int certified = sol.certified, used_ipopt = 0, ipopt_status = 0;
     iters += sol.iters;
     if (model == FIT_DISCRETE) {
@@ -323,7 +323,7 @@ static int keyline_run(int model, const double *xy, size_t n, size_t split, cons
                 const size_t keep = ob.split;
                 ob.split = trial;
                 fit_solution s2;
-                if (fit_lm(&ob, sol.x, o.max_iter, &s2) != EL_OK || !(s2.val.f < sol.val.f)) {
+                if (el__fit_lm(&ob, sol.x, o.max_iter, &s2) != EL_OK || !(s2.val.f < sol.val.f)) {
                     ob.split = keep;
                     break;
                 }
@@ -338,7 +338,7 @@ static int keyline_run(int model, const double *xy, size_t n, size_t split, cons
         double xl[FIT_MAXX], xu[FIT_MAXX], xi[FIT_MAXX];
         for (int j = 0; j < FIT_MAXX; j++) { xl[j] = -HUGE_VAL; xu[j] = HUGE_VAL; }
         memcpy(xi, sol.x, sizeof xi);
-        if (fit_ipopt(&ob, xl, xu, NULL, &o, xi, &io, tmp) == EL_OK) {
+        if (el__fit_ipopt(&ob, xl, xu, NULL, &o, xi, &io, tmp) == EL_OK) {
             used_ipopt = 1;
             ipopt_status = io.ipopt_status;
             iters += io.iters;
@@ -350,7 +350,7 @@ static int keyline_run(int model, const double *xy, size_t n, size_t split, cons
 
     /* results: distances (+ = left of the keyline from point 0 to point n-1), sides */
     double v[2][FIT_NP];
-    if ((st = fit_map_eval(&map, sol.x, v, NULL))) goto done;
+    if ((st = el__fit_map_eval(&map, sol.x, v, NULL))) goto done;
     double *d = dist, *fs = foot, *buf = NULL;
     int *sd = side, *ibuf = NULL;
     if (!d || !fs || !sd) {
@@ -365,30 +365,30 @@ static int keyline_run(int model, const double *xy, size_t n, size_t split, cons
     const size_t nv[2] = {js + 1, n - js};
     double *V[2] = {NULL, NULL};
     if (model == FIT_SMOOTH) {
-        st = fit_feet_distances(&ob, sol.x, d, fs, sd);
+        st = el__fit_feet_distances(&ob, sol.x, d, fs, sd);
     } else {
         for (int c = 0; c < 2 && !st; c++) {
             if (!(V[c] = malloc(sizeof(double) * 2 * nv[c]))) { st = EL_ENOMEM; break; }
             fit_walk w;
-            fit_walk_start(v[c], &w);
+            el__fit_walk_start(v[c], &w);
             for (size_t a = 0; a < nv[c] && !st; a += FIT_BLOCK) {
                 const size_t m = nv[c] - a < FIT_BLOCK ? nv[c] - a : FIT_BLOCK;
-                st = fit_discrete_rows(v[c], &w, m, V[c] + 2 * a, NULL, tmp);
+                st = el__fit_discrete_rows(v[c], &w, m, V[c] + 2 * a, NULL, tmp);
             }
         }
         if (!st) {
-            fit_polygon_distances(&ob, V[0], nv[0], v[0][2], js, -1, d, fs);
+            el__fit_polygon_distances(&ob, V[0], nv[0], v[0][2], js, -1, d, fs);
             for (size_t i = 0; i <= js; i++) sd[i] = 0;
             /* the joint's point: its distance to the nearer side */
             const double d0 = d[js], f0 = fs[js];
-            fit_polygon_distances(&ob, V[1], nv[1], v[1][2], js, 1, d, fs);
+            el__fit_polygon_distances(&ob, V[1], nv[1], v[1][2], js, 1, d, fs);
             for (size_t i = js; i < n; i++) sd[i] = 1;
             if (fabs(d0) <= fabs(d[js])) { d[js] = d0; fs[js] = f0; sd[js] = 0; }
         }
     }
     if (!st) {
         const double *Vc[2] = {V[0], V[1]};
-        st = fit_nearest_everywhere(&ob, v, Vc, nv, d, fs, sd);
+        st = el__fit_nearest_everywhere(&ob, v, Vc, nv, d, fs, sd);
     }
     free(V[0]);
     free(V[1]);
@@ -417,11 +417,11 @@ static int keyline_run(int model, const double *xy, size_t n, size_t split, cons
             double vc[FIT_NP], vi[FIT_NP];
             memcpy(vc, v[c], sizeof vc);
             memcpy(vi, v0[c], sizeof vi);
-            fit_canonical(model, vc, 1);
-            fit_canonical(model, vi, 1);
+            el__fit_canonical(model, vc, 1);
+            el__fit_canonical(model, vi, 1);
             for (int j = 0; j < FIT_NP; j++) {
-                so->params[j] = fit_denorm_param(model, j, vc[j], cx, cy, sc);
-                so->initial[j] = fit_denorm_param(model, j, vi[j], cx, cy, sc);
+                so->params[j] = el__fit_denorm_param(model, j, vc[j], cx, cy, sc);
+                so->initial[j] = el__fit_denorm_param(model, j, vi[j], cx, cy, sc);
             }
             if (model == FIT_DISCRETE && fixed_h > 0.0) so->params[2] = o.value[2];
             int valid = !el__all_finite(so->params, FIT_NP) && !el__all_finite(so->initial, FIT_NP);
@@ -442,7 +442,7 @@ static int keyline_run(int model, const double *xy, size_t n, size_t split, cons
     out->joint = js;
     st = out->status;
 done:
-    fit_objective_free(&ob);
+    el__fit_objective_free(&ob);
     free(feetA);
     free(feetB);
     free(tmp);

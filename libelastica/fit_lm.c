@@ -7,7 +7,7 @@
  * keeps five residual-length vectors (f, f_trial, two work vectors and the unused
  * geodesic-acceleration vector): 80 bytes per point for the paired fit, which alone
  * exceeds the memory budget of a 10^6-point fit (80 MiB). This solver needs only f, the
- * gradient and the p x p normal equations, which fit_objective_eval computes block by
+ * gradient and the p x p normal equations, which el__fit_objective_eval computes block by
  * block in the same pass as the residuals; and a trial point's normal equations come
  * with its objective (a step is usually accepted), so an accepted iteration costs one
  * evaluation. The iteration itself is the textbook one (Nielsen's damping update, as in
@@ -46,7 +46,7 @@ static int lm_step(const fit_value *v, const double *D, double lambda, int nx, d
     return EL_ESINGULAR;
 }
 
-int fit_first_order(const fit_value *v, int nx, double tol)
+int el__fit_first_order(const fit_value *v, int nx, double tol)
 {
     if (!(v->f > FIT_EXACT_F)) return 1;
     /* the gradient in the norm of the Gauss-Newton matrix: g^T H^-1 g, twice the
@@ -89,16 +89,16 @@ static void scaling(const fit_value *v, int nx, double *D)
     for (int j = 0; j < nx; j++) D[j] = fmax(D[j], fmax(v->H[j * nx + j], 1e-30 * mx + 1e-300));
 }
 
-int fit_lm(fit_objective *o, const double *x0, int max_iter, fit_solution *sol)
+int el__fit_lm(fit_objective *o, const double *x0, int max_iter, fit_solution *sol)
 {
     const int nx = o->map.nx;
     const int lazy = fit_has_feet(o) && !o->exact_feet;
     fit_value val, trial;
     double x[FIT_MAXX], xt[FIT_MAXX], d[FIT_MAXX], D[FIT_MAXX] = {0};
     memcpy(x, x0, sizeof(double) * (size_t)nx);
-    int st = fit_objective_eval(o, x, 1, &val);
+    int st = el__fit_objective_eval(o, x, 1, &val);
     if (st) return st;
-    fit_objective_accept(o);
+    el__fit_objective_accept(o);
     scaling(&val, nx, D);
     double lambda = 1e-9, nu = 2.0, recent[LM_RATE_SPAN];
     int iters = 0, rounds = 0, certified = 0, stalled = 0;
@@ -109,7 +109,7 @@ int fit_lm(fit_objective *o, const double *x0, int max_iter, fit_solution *sol)
             (recent[iters % LM_RATE_SPAN] - val.f) / LM_RATE_SPAN * (max_iter - iters) < val.f - o->f_ceiling)
             break;
         recent[iters % LM_RATE_SPAN] = val.f;
-        if (fit_first_order(&val, nx, o->lm_tol) || !(val.f > FIT_EXACT_F)) {
+        if (el__fit_first_order(&val, nx, o->lm_tol) || !(val.f > FIT_EXACT_F)) {
             /* with lazy feet the certificate needs feet at rest: moved by u < 1e-6 in the
              * evaluation (whose rows are those of the moved feet), they are the nearest
              * points to O(kappa u^2) ~ 1e-12, and the gradient is off by that relative to
@@ -119,8 +119,8 @@ int fit_lm(fit_objective *o, const double *x0, int max_iter, fit_solution *sol)
             if (rounds++ >= LM_ROUNDS) break;
             /* the feet one Newton step on at the same x (an accepted step has already
              * moved them: accepting again would swap back to the older feet) */
-            if ((st = fit_objective_eval(o, x, 1, &val))) break;
-            fit_objective_accept(o);
+            if ((st = el__fit_objective_eval(o, x, 1, &val))) break;
+            el__fit_objective_accept(o);
             continue;
         }
         if (lm_step(&val, D, lambda, nx, d)) {
@@ -129,7 +129,7 @@ int fit_lm(fit_objective *o, const double *x0, int max_iter, fit_solution *sol)
             continue;
         }
         /* a step leaving the model's domain stops short of its boundary */
-        const double alpha = fit_map_step_limit(&o->map, x, d);
+        const double alpha = el__fit_map_step_limit(&o->map, x, d);
         for (int i = 0; i < nx; i++) d[i] *= alpha;
         double pred = 0.0, dHd = 0.0;
         for (int i = 0; i < nx; i++) {
@@ -141,7 +141,7 @@ int fit_lm(fit_objective *o, const double *x0, int max_iter, fit_solution *sol)
         }
         pred -= 0.5 * dHd;
         iters++;
-        const int ok = fit_objective_eval(o, xt, 1, &trial) == EL_OK;
+        const int ok = el__fit_objective_eval(o, xt, 1, &trial) == EL_OK;
         const double rho = ok && pred > 0.0 ? (val.f - trial.f) / pred : -1.0;
         /* a step whose predicted gain is below the objective's rounding (the residuals
          * are known to ~1e-14 of the curve's size, f to ~1e-12 of itself on noisy
@@ -150,12 +150,12 @@ int fit_lm(fit_objective *o, const double *x0, int max_iter, fit_solution *sol)
          * 5e-14 f short of the certificate's 1e-13, every step then "rejected" by 1e-13 f
          * of noise until the damping ran out and Ipopt polished for 50 ms) */
         const int rounding = ok && pred <= 1e-12 * val.f && trial.f <= val.f * (1.0 + 1e-12) &&
-                             fit_first_order(&trial, nx, 1e-13);
+                             el__fit_first_order(&trial, nx, 1e-13);
         if (rounding || (ok && trial.f < val.f && rho > 1e-4)) {
             const double rel = (val.f - trial.f) / val.f;
             memcpy(x, xt, sizeof(double) * (size_t)nx);
             val = trial;
-            fit_objective_accept(o);
+            el__fit_objective_accept(o);
             scaling(&val, nx, D);
             const double c = 2.0 * fmin(fmax(rho, 0.0), 1.0) - 1.0;
             lambda *= fmax(1.0 / 3.0, 1.0 - c * c * c);
@@ -165,7 +165,7 @@ int fit_lm(fit_objective *o, const double *x0, int max_iter, fit_solution *sol)
         } else {
             /* a rejected step from a point already within the stall certificate (below):
              * shorter steps would only be judged by rounding too */
-            if (ok && fit_first_order(&val, nx, 1e-11)) { stalled = 1; break; }
+            if (ok && el__fit_first_order(&val, nx, 1e-11)) { stalled = 1; break; }
             lambda = damping_for(&val, D, lambda * nu, nx, (ok ? 0.25 : 0.1) * scaled_norm(d, D, nx));
             nu *= 2.0;
             if (lambda > 1e20) { stalled = 1; break; }
@@ -181,12 +181,12 @@ int fit_lm(fit_objective *o, const double *x0, int max_iter, fit_solution *sol)
     const double tol = stalled ? 1e-11 : 1e-13;
     if (lazy && !certified) {
         /* what is returned is measured at exact feet */
-        if (fit_objective_project(o, x) == EL_OK && fit_objective_eval(o, x, 1, &val) == EL_OK)
-            certified = fit_first_order(&val, nx, tol) || !(val.f > FIT_EXACT_F);
+        if (el__fit_objective_project(o, x) == EL_OK && el__fit_objective_eval(o, x, 1, &val) == EL_OK)
+            certified = el__fit_first_order(&val, nx, tol) || !(val.f > FIT_EXACT_F);
     }
     memcpy(sol->x, x, sizeof(double) * (size_t)nx);
     sol->val = val;
     sol->iters = iters;
-    sol->certified = certified || fit_first_order(&val, nx, tol);
+    sol->certified = certified || el__fit_first_order(&val, nx, tol);
     return EL_OK;
 }

@@ -22,7 +22,7 @@ static int twoK(double k, double *K2, double *dK2)
 
 /* Discrete: -1 < k < 0 is |k| with q + 2K(|k|); *dq_dk (may be NULL) receives
  * d(2K(|k|))/d|k| when that shift applies, else 0. */
-int fit_to_discrete(const double *v, el_discrete_params *p, double *dq_dk)
+int el__fit_to_discrete(const double *v, el_discrete_params *p, double *dq_dk)
 {
     double K2 = 0.0, dK2 = 0.0;
     p->x0 = v[0]; p->y0 = v[1]; p->h = v[2]; p->phi = v[3]; p->z = v[4]; p->q = v[5]; p->k = v[6];
@@ -37,7 +37,7 @@ int fit_to_discrete(const double *v, el_discrete_params *p, double *dq_dk)
 }
 
 /* Smooth: w < 0 is (|w|, -k, -q); mu = w^2. */
-int fit_to_smooth(const double *v, el_smooth_params *p)
+int el__fit_to_smooth(const double *v, el_smooth_params *p)
 {
     const double s = v[3] < 0.0 ? -1.0 : 1.0;
     p->x0 = v[0]; p->y0 = v[1]; p->phi = v[2]; p->mu = v[3] * v[3];
@@ -50,7 +50,7 @@ int fit_to_smooth(const double *v, el_smooth_params *p)
  * -1 < k < 0 as the same curve with |k| and q + 2K(|k|), so inflectional results
  * have k >= 0; the discrete model always shifts (its k is >= 0). |k| > 1 keeps its sign.
  */
-int fit_canonical(int model, double *v, int may_shift)
+int el__fit_canonical(int model, double *v, int may_shift)
 {
     const int ik = model == FIT_DISCRETE ? 6 : 4;
     double K2, dK2;
@@ -63,10 +63,10 @@ int fit_canonical(int model, double *v, int may_shift)
     return model == FIT_DISCRETE && v[ik] < 0.0 ? EL_EDOM : EL_OK;
 }
 
-int fit_smooth_rows(const double *v, size_t m, const double *s, double *xy, double *jac)
+int el__fit_smooth_rows(const double *v, size_t m, const double *s, double *xy, double *jac)
 {
     el_smooth_params p;
-    int st = fit_to_smooth(v, &p);
+    int st = el__fit_to_smooth(v, &p);
     if (st) return st;
     if (!jac) return el_smooth_eval(&p, m, s, xy, NULL, NULL);
     if ((st = el_smooth_jacobian(&p, m, s, xy, jac))) return st;
@@ -80,7 +80,7 @@ int fit_smooth_rows(const double *v, size_t m, const double *s, double *xy, doub
     return EL_OK;
 }
 
-void fit_walk_start(const double *v, fit_walk *w)
+void el__fit_walk_start(const double *v, fit_walk *w)
 {
     memset(w, 0, sizeof *w);
     w->xy[0] = v[0]; w->xy[1] = v[1];
@@ -93,11 +93,11 @@ void fit_walk_start(const double *v, fit_walk *w)
  * q + a z, k), so d gamma_{a+j} = d gamma_a + dS_j with the z column of S gaining a
  * times its q column. One vertex more is evaluated: the next block's start.
  */
-int fit_discrete_rows(const double *v, fit_walk *w, size_t m, double *xy, double *jac, double *tmp)
+int el__fit_discrete_rows(const double *v, fit_walk *w, size_t m, double *xy, double *jac, double *tmp)
 {
     el_discrete_params p;
     double dq_dk;
-    int st = fit_to_discrete(v, &p, &dq_dk);
+    int st = el__fit_to_discrete(v, &p, &dq_dk);
     if (st) return st;
     const double a = (double)w->next;
     p.x0 = w->xy[0]; p.y0 = w->xy[1];
@@ -163,7 +163,7 @@ static int smooth_end(const double *v, int at_end, fit_end *e)
 {
     const double s = at_end ? v[6] : 0.0, w = v[3], k = v[4];
     double jac[2 * FIT_NP];
-    int st = fit_smooth_rows(v, 1, &s, e->xy, jac);
+    int st = el__fit_smooth_rows(v, 1, &s, e->xy, jac);
     if (st) return st;
     memcpy(e->dxy, jac, sizeof e->dxy);
     half_angle h;
@@ -203,12 +203,12 @@ static int discrete_end(const double *v, size_t n, int at_end, fit_end *e, doubl
         e->dxy[0][0] = 1.0; e->dxy[1][1] = 1.0;
     } else {
         fit_walk w;
-        fit_walk_start(v, &w);
+        el__fit_walk_start(v, &w);
         double *xy = tmp, *jac = xy + 2 * FIT_BLOCK, *t2 = jac + 2 * FIT_BLOCK * FIT_NP;
         size_t left = n;
         while (left > 0) {
             const size_t m = left < FIT_BLOCK ? left : FIT_BLOCK;
-            if ((st = fit_discrete_rows(v, &w, m, xy, jac, t2))) return st;
+            if ((st = el__fit_discrete_rows(v, &w, m, xy, jac, t2))) return st;
             left -= m;
             if (left == 0) {
                 memcpy(e->xy, xy + 2 * (m - 1), sizeof e->xy);
@@ -234,7 +234,7 @@ static int discrete_end(const double *v, size_t n, int at_end, fit_end *e, doubl
     return EL_OK;
 }
 
-int fit_end_state(int model, const double *v, size_t n, int at_end, fit_end *e, double *tmp)
+int el__fit_end_state(int model, const double *v, size_t n, int at_end, fit_end *e, double *tmp)
 {
     return model == FIT_SMOOTH ? smooth_end(v, at_end, e) : discrete_end(v, n, at_end, e, tmp);
 }
@@ -344,9 +344,9 @@ static int chart_to_v(const fit_map *m, const double *c, double *v, double D[4][
     return EL_OK;
 }
 
-int fit_map_eval(const fit_map *m, const double *x, double v[2][FIT_NP], double *M)
+int el__fit_map_eval(const fit_map *m, const double *x, double v[2][FIT_NP], double *M)
 {
-    if (m->ncurves == 2) return fit_keyline_map(m, x, v, M);
+    if (m->ncurves == 2) return el__fit_keyline_map(m, x, v, M);
     double u[FIT_NP];
     memcpy(u, m->fixed, sizeof u);
     for (int j = 0; j < m->nx; j++) u[m->idx[j]] = x[j] / m->scale[m->idx[j]];
@@ -371,7 +371,7 @@ int fit_map_eval(const fit_map *m, const double *x, double v[2][FIT_NP], double 
     return el__all_finite(v[0], FIT_NP) ? EL_EDOM : EL_OK;
 }
 
-void fit_map_inverse(const fit_map *m, const double *v, double *x)
+void el__fit_map_inverse(const fit_map *m, const double *v, double *x)
 {
     for (int j = 0; j < m->nx; j++) x[j] = v[m->idx[j]] * m->scale[m->idx[j]];
     if (!m->chart) return;
@@ -394,7 +394,7 @@ void fit_map_inverse(const fit_map *m, const double *v, double *x)
  * The domains: the discrete h > 0 and, outside the start-state chart (whose variables
  * are unbounded), k > -1; the keyline's |k| < 1 and discrete h > 0.
  */
-double fit_map_step_limit(const fit_map *m, const double *x, const double *d)
+double el__fit_map_step_limit(const fit_map *m, const double *x, const double *d)
 {
     double alpha = 1.0;
     for (int j = 0; j < m->nx; j++) {

@@ -1,8 +1,8 @@
 /*
  * Point-to-curve distances of the report (fit_internal.h): the discrete model's distance
  * of each point to the polygon of the vertices, searched from the segments at the
- * point's own vertex outwards while the distance decreases (fit_polygon_distances), and
- * for both models the nearest point anywhere on the curves (fit_nearest_everywhere: a
+ * point's own vertex outwards while the distance decreases (el__fit_polygon_distances), and
+ * for both models the nearest point anywhere on the curves (el__fit_nearest_everywhere: a
  * loop passing close to itself). Signed distances: positive when the point lies left of
  * the curve (its direction of increasing s; for a keyline side, away from the joint).
  */
@@ -138,11 +138,11 @@ static double longest_segment(const double *V, size_t nv)
  * the nearest point of the last segment is its far end, finds a local minimum d; the
  * polygon has kinks, so every segment within arc length 2 sqrt 2 d + h of it is then
  * searched too (one segment each way where d kappa <= 0.1): where the polygon's
- * direction varies within pi/2 (fit_nearest_everywhere checks) no point farther along it
+ * direction varies within pi/2 (el__fit_nearest_everywhere checks) no point farther along it
  * can be nearer than d (|V(s) - V(s')| >= cos(pi/4) |s - s'|), so this is the nearest
  * point; elsewhere that search goes on.
  */
-void fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, double h,
+void el__fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, double h,
                            size_t first, long step, double *dist, double *foot)
 {
     const long last = (long)nv - 2;
@@ -188,7 +188,7 @@ void fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, d
         }
         if (best < 0) { dist[g] = 0.0; foot[g] = 0.0; continue; }
         /* the stretch around the foot, again around a nearer foot found in it (the
-         * search for nearer points elsewhere, fit_nearest_everywhere, leaves out the
+         * search for nearer points elsewhere, el__fit_nearest_everywhere, leaves out the
          * stretch around the final foot: it must have been searched; measured: a foot
          * moved 6 segments, its neighbour outside the first stretch 1.3 nearer). The
          * segments searched already (clo .. chi, around the foot) cannot come strictly
@@ -226,7 +226,7 @@ void fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, d
  * from the piece's middle). O(n) work for ordinary data.
  */
 enum { MAX_PIECES = 128, HASH_BITS = 11, SEP_LEVELS = 4 };
-/* The grid's entries: a piece's disk (diameter 2 r <= cell, fit_nearest_everywhere) spans
+/* The grid's entries: a piece's disk (diameter 2 r <= cell, el__fit_nearest_everywhere) spans
  * 2 cells per axis, 3 when rounding of (c +- r) / cell crosses one more integer: at most 9
  * entries for each of the 2 MAX_PIECES pieces (grid_add reports more as EL_EINTERNAL) */
 enum { GRID_ENTRIES = 9 * 2 * MAX_PIECES };
@@ -287,7 +287,7 @@ static int curve_points(const double *v, double len, int m, double *xy)
     double s[MAX_PIECES + 1];
     for (int j = 0; j <= m; j++) s[j] = len * j / m;
     el_smooth_params p;
-    int st = fit_to_smooth(v, &p);
+    int st = el__fit_to_smooth(v, &p);
     return st ? st : el_smooth_eval(&p, (size_t)m + 1, s, xy, NULL, NULL);
 }
 
@@ -296,7 +296,7 @@ static int curve_points(const double *v, double len, int m, double *xy)
 static int newton_nearest(const double *v, double u, double lo, double hi, const double *P, double *d, double *s)
 {
     el_smooth_params sp;
-    int st = fit_to_smooth(v, &sp);
+    int st = el__fit_to_smooth(v, &sp);
     if (st) return st;
     double xy[2], th = 0.0, ka = 0.0;
     for (int it = 0; it < NEWTON_MAX; it++) {
@@ -356,7 +356,7 @@ static int dense_init(const double *v, int curve, dense_samples *ds)
     if (!ds->xy || !ds->tan || !s) { free(s); return EL_ENOMEM; }
     for (size_t j = 0; j < ds->m; j++) s[j] = len * (double)j / (double)(ds->m - 1);
     el_smooth_params sp;
-    int st = fit_to_smooth(v, &sp);
+    int st = el__fit_to_smooth(v, &sp);
     if (!st) st = el_smooth_eval(&sp, ds->m, s, ds->xy, th, NULL);
     for (size_t j = 0; j < ds->m && !st; j++) { ds->tan[2 * j] = cos(th[j]); ds->tan[2 * j + 1] = sin(th[j]); }
     free(s);
@@ -480,7 +480,7 @@ static int consider(double v[2][FIT_NP], const piece *p, const double *P, const 
  * within arc length 2 sqrt 2 d of the foot found) and, smooth, whose curvature is at
  * most 0.1 / d for the largest distance d (the distance is convex along the curve over
  * that stretch: the foot found is the nearest point); the polygon's feet were searched
- * over that stretch (fit_polygon_distances).
+ * over that stretch (el__fit_polygon_distances).
  */
 static int feet_are_nearest(const fit_objective *o, const double *v, const double *V, size_t nv,
                             const double *dist)
@@ -512,7 +512,7 @@ static int feet_are_nearest(const fit_objective *o, const double *v, const doubl
     double s[M], th[M], ka[M];
     el_smooth_params p;
     for (int j = 0; j < M; j++) s[j] = v[6] * j / (M - 1);
-    if (fit_to_smooth(v, &p) || el_smooth_eval(&p, M, s, NULL, th, ka)) return 0;
+    if (el__fit_to_smooth(v, &p) || el_smooth_eval(&p, M, s, NULL, th, ka)) return 0;
     for (int j = 0; j < M; j++) {
         tmin = fmin(tmin, th[j]); tmax = fmax(tmax, th[j]);
         kmax = fmax(kmax, fabs(ka[j]));
@@ -533,8 +533,8 @@ static double mean_distance(const double *dist, size_t n)
 }
 
 /*
- * The discrete model's search elsewhere (fit_nearest_everywhere): each point's own
- * search, fit_polygon_distances, covered the segments within arc length 2 sqrt 2 d of
+ * The discrete model's search elsewhere (el__fit_nearest_everywhere): each point's own
+ * search, el__fit_polygon_distances, covered the segments within arc length 2 sqrt 2 d of
  * its foot (or proved them farther, d kappa <= 0.1); every other segment that can come
  * nearer than d has its first vertex within d + lmax of the point (nearest_segment).
  * The polygons are cut into runs of consecutive segments whose first vertices share a
@@ -615,7 +615,7 @@ static int polygon_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP
         point(o, i, P);
         polygon_query q = {P, side ? side[i] : 0, 0, 0, lmax, reach_of(d0, lmax), HUGE_VAL, 0.0, -1, 0};
         /* the stretch: segments j with j h >= foot - 2 sqrt 2 d and (j + 1) h <= foot + 2 sqrt 2 d
-         * (to rounding: fit_polygon_distances searched a segment more each way), held to
+         * (to rounding: el__fit_polygon_distances searched a segment more each way), held to
          * the curve (NaN: none); ceil and floor of the non-negative bounds by truncation */
         const double span = 2.0 * 1.4142135623730951 * d0, top = (double)ns[q.own];
         double a = (foot[i] - span) * inv_h[q.own], b = (foot[i] + span) * inv_h[q.own];
@@ -646,7 +646,7 @@ static int polygon_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP
     return EL_OK;
 }
 
-int fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const double *V[2],
+int el__fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const double *V[2],
                            const size_t nv[2], double *dist, double *foot, int *side)
 {
     const int nc = o->map.ncurves;

@@ -46,7 +46,7 @@ enum {
     W_SIZE = W_RES + 2 * FIT_BLOCK
 };
 
-int fit_objective_init(fit_objective *o, int kind, const fit_map *map, const double *xy, size_t n,
+int el__fit_objective_init(fit_objective *o, int kind, const fit_map *map, const double *xy, size_t n,
                        double cx, double cy, double sc, const double *t)
 {
     memset(o, 0, sizeof *o);
@@ -61,13 +61,13 @@ int fit_objective_init(fit_objective *o, int kind, const fit_map *map, const dou
     if (!feet && kind == FIT_ORTHOGONAL) {
         o->poly = malloc(sizeof(double) * 4 * n);
         o->bucket = malloc(sizeof(size_t) * 2 * n);
-        if (!o->poly || !o->bucket) { fit_objective_free(o); return EL_ENOMEM; }
+        if (!o->poly || !o->bucket) { el__fit_objective_free(o); return EL_ENOMEM; }
         o->order = o->bucket + n;
     }
     return EL_OK;
 }
 
-void fit_objective_free(fit_objective *o)
+void el__fit_objective_free(fit_objective *o)
 {
     free(o->work);
     free(o->poly);
@@ -212,12 +212,12 @@ static int discrete_paired(fit_objective *o, const double *v, size_t nv, size_t 
 {
     double *w = o->work, *xy = w + W_XY, *jac = w + W_JAC, *col = w + W_COL, *res = w + W_RES;
     fit_walk walk;
-    fit_walk_start(v, &walk);
+    el__fit_walk_start(v, &walk);
     size_t done = 0;
     int st;
     while (done < nv) {
         const size_t m = nv - done < FIT_BLOCK ? nv - done : FIT_BLOCK;
-        if ((st = fit_discrete_rows(v, &walk, m, xy, want ? jac : NULL, w + W_TMP))) return st;
+        if ((st = el__fit_discrete_rows(v, &walk, m, xy, want ? jac : NULL, w + W_TMP))) return st;
         const size_t k0 = done == 0 && skip0 ? 1 : 0;
         const size_t g0 = (size_t)((long)first + step * (long)(done + k0));
         if (want) {
@@ -238,7 +238,7 @@ static int discrete_paired(fit_objective *o, const double *v, size_t nv, size_t 
 
 /*
  * Discrete orthogonal: each point's distance to the polygon of the n vertices, its foot
- * projected exactly at every evaluation (fit_polygon_distances, O(n) from the point's
+ * projected exactly at every evaluation (el__fit_polygon_distances, O(n) from the point's
  * vertex). Interior points: r_i = |P_i - gamma(sigma_i)|, gamma(sigma) = (1-t) V_j +
  * t V_{j+1}, with the row -u_i . d gamma(sigma_i) / dv at the foot held (u_i the unit
  * vector from the foot to the point): exact, as the distance's derivative along the
@@ -254,14 +254,14 @@ static int discrete_orthogonal(fit_objective *o, const double *v, int want, sums
     double *w = o->work, *jac = w + W_JAC, *col = w + W_COL, *res = w + W_RES;
     double *V = o->poly, *dist = V + 2 * n, *foot = dist + n;
     fit_walk walk;
-    fit_walk_start(v, &walk);
+    el__fit_walk_start(v, &walk);
     int st;
     for (size_t a = 0; a < n; a += FIT_BLOCK) {
         const size_t m = n - a < FIT_BLOCK ? n - a : FIT_BLOCK;
-        if ((st = fit_discrete_rows(v, &walk, m, V + 2 * a, NULL, w + W_TMP))) return st;
+        if ((st = el__fit_discrete_rows(v, &walk, m, V + 2 * a, NULL, w + W_TMP))) return st;
     }
     const double h = v[2];
-    fit_polygon_distances(o, V, n, h, 0, 1, dist, foot);
+    el__fit_polygon_distances(o, V, n, h, 0, 1, dist, foot);
     double P0[2], P1[2];
     point(o, 0, P0);
     point(o, n - 1, P1);
@@ -278,15 +278,15 @@ static int discrete_orthogonal(fit_objective *o, const double *v, int want, sums
     /* cnt[j] is now the end of segment j's points in ord */
     el_discrete_params dp;
     double dq_dk = 0.0;
-    if ((st = fit_to_discrete(v, &dp, &dq_dk))) return st;
+    if ((st = el__fit_to_discrete(v, &dp, &dq_dk))) return st;
     const int stride = 2 * FIT_BLOCK;
     int rows = 0;
     size_t next = 0;          /* the next position in ord */
-    fit_walk_start(v, &walk);
+    el__fit_walk_start(v, &walk);
     for (size_t a = 0; a < n; a += FIT_BLOCK) {
         const size_t m = n - a < FIT_BLOCK ? n - a : FIT_BLOCK;
         double xy[2 * (FIT_BLOCK + 1)];
-        if ((st = fit_discrete_rows(v, &walk, m, xy, jac, w + W_TMP))) return st;
+        if ((st = el__fit_discrete_rows(v, &walk, m, xy, jac, w + W_TMP))) return st;
         /* vertex a + m's derivative (the walk's, before the k < 0 column change) */
         double dn[2][FIT_NP];
         memcpy(dn, walk.d, sizeof dn);
@@ -336,7 +336,7 @@ static int smooth_paired(fit_objective *o, const double *v, int want, sums *S, d
     for (size_t a = 0; a < o->n; a += FIT_BLOCK) {
         const size_t m = o->n - a < FIT_BLOCK ? o->n - a : FIT_BLOCK;
         for (size_t i = 0; i < m; i++) s[i] = o->t[a + i] * v[6];
-        if ((st = fit_smooth_rows(v, m, s, xy, want ? jac : NULL))) return st;
+        if ((st = el__fit_smooth_rows(v, m, s, xy, want ? jac : NULL))) return st;
         if (want) {
             *f += paired_rows(o, xy, jac, m, a, 1, 0, col, res);
             fold(S, col, 2 * FIT_BLOCK, res, (int)(2 * m));
@@ -392,7 +392,7 @@ static int ortho_rows(fit_objective *o, const ortho_block *b, int want, double *
                       int *rows, double *f, double *s_new)
 {
     double *w = o->work, *xy = w + W_XY, *jac = w + W_JAC, T0[2], kappa0;
-    int st = fit_smooth_rows(b->v, b->m, b->s, xy, jac);
+    int st = el__fit_smooth_rows(b->v, b->m, b->s, xy, jac);
     if (st || (st = start_state(b->v, T0, &kappa0))) return st;
     const double wv = b->v[3], w2 = wv * wv, cp = cos(b->v[2]), sp = sin(b->v[2]);
     const int stride = 2 * FIT_BLOCK;
@@ -473,7 +473,7 @@ static int base_knots(fit_objective *o, int c, const double *v, const double *M)
     const int nx = o->map.nx;
     int st = start_state(v, T0, &kappa0);
     for (int j = 0; j < FIT_KNOTS; j++) s[j] = v[6] * (double)j / (double)(FIT_KNOTS - 1);
-    if (st || (st = fit_smooth_rows(v, FIT_KNOTS, s, xy, jac))) return st;
+    if (st || (st = el__fit_smooth_rows(v, FIT_KNOTS, s, xy, jac))) return st;
     for (int j = 0; j < FIT_KNOTS; j++) {
         const double *jx = jac + 2 * j * FIT_NP, *jy = jx + FIT_NP;
         double Tx = v[3] * jx[5] + T0[0], Ty = v[3] * jy[5] + T0[1], b[FIT_NP];
@@ -521,7 +521,7 @@ static int smooth_orthogonal(fit_objective *o, const double *v, int want, sums *
     const double L = v[6];
     double vv[2][FIT_NP], lo, hi;
     memcpy(vv[0], v, sizeof vv[0]);
-    fit_feet_range(o, vv, 1, &lo, &hi);
+    el__fit_feet_range(o, vv, 1, &lo, &hi);
     int st;
     for (size_t a = 0; a < o->n; a += FIT_BLOCK) {
         const size_t m = o->n - a < FIT_BLOCK ? o->n - a : FIT_BLOCK;
@@ -557,7 +557,7 @@ static int keyline_smooth(fit_objective *o, double v[2][FIT_NP], int want, sums 
         for (int c = 0; c < 2; c++) {
             const double L = v[c][6];
             double lo, hi;
-            fit_feet_range(o, v, 1, &lo, &hi);
+            el__fit_feet_range(o, v, 1, &lo, &hi);
             const double far = c == 0 ? -lo : hi;
             size_t cnt = 0;
             for (size_t i = 0; i < m; i++) {
@@ -584,18 +584,18 @@ static int keyline_smooth(fit_objective *o, double v[2][FIT_NP], int want, sums 
     return EL_OK;
 }
 
-int fit_objective_eval(fit_objective *o, const double *x, int want_normal, fit_value *out)
+int el__fit_objective_eval(fit_objective *o, const double *x, int want_normal, fit_value *out)
 {
     const fit_map *m = &o->map;
     const int nx = m->nx, nc = m->ncurves;
     double v[2][FIT_NP], M[2][FIT_NP * FIT_MAXX];
-    int st = fit_map_eval(m, x, v, want_normal ? M[0] : NULL);
+    int st = el__fit_map_eval(m, x, v, want_normal ? M[0] : NULL);
     if (st) return st;
     memcpy(o->last_x, x, sizeof(double) * (size_t)nx);
     for (int i = 0; i < nx; i++) o->step[i] = x[i] - o->base_x[i];
     if (o->have_base && !o->exact_feet && fit_has_feet(o)) knot_shifts(o);
     o->last_move = 0.0;
-    if (o->exact_feet && fit_has_feet(o) && (st = fit_objective_project(o, x))) return st;
+    if (o->exact_feet && fit_has_feet(o) && (st = el__fit_objective_project(o, x))) return st;
     sums S[2];
     memset(S, 0, sizeof S);
     double f = 0.0;
@@ -624,7 +624,7 @@ int fit_objective_eval(fit_objective *o, const double *x, int want_normal, fit_v
     double pc[FIT_NCON], pJ[FIT_NCON * FIT_MAXX];
     int prows = 0;
     if (o->pen) {
-        prows = fit_constraint_rows(o, o->pen, x, pc, want_normal ? pJ : NULL, NULL, o->pen_tmp);
+        prows = el__fit_constraint_rows(o, o->pen, x, pc, want_normal ? pJ : NULL, NULL, o->pen_tmp);
         if (prows < 0) return EL_EDOM;
         for (int r = 0; r < prows; r++) out->f += 0.5 * o->pen_rho * pc[r] * pc[r];
     }
@@ -666,7 +666,7 @@ int fit_objective_eval(fit_objective *o, const double *x, int want_normal, fit_v
     return EL_OK;
 }
 
-void fit_objective_accept(fit_objective *o)
+void el__fit_objective_accept(fit_objective *o)
 {
     if (!fit_has_feet(o) || o->exact_feet) return;
     double *t = o->s;
@@ -674,7 +674,7 @@ void fit_objective_accept(fit_objective *o)
     o->s_next = t;
     memcpy(o->base_x, o->last_x, sizeof o->base_x);
     double v[2][FIT_NP], M[2][FIT_NP * FIT_MAXX];
-    o->have_base = fit_map_eval(&o->map, o->base_x, v, M[0]) == EL_OK;
+    o->have_base = el__fit_map_eval(&o->map, o->base_x, v, M[0]) == EL_OK;
     for (int c = 0; c < o->map.ncurves && o->have_base; c++)
         if (base_knots(o, c, v[c], M[c])) o->have_base = 0;
 }

@@ -7,36 +7,36 @@
 #include <stdlib.h>
 #include <string.h>
 
-enum { CANDS = 8,        /* fit_feet_elsewhere's candidates per point */
+enum { CANDS = 8,        /* el__fit_feet_elsewhere's candidates per point */
        PIECES = FIT_PIECES,
-       OWN_MAX = 16 };    /* fit_feet_unproven: feet's pieces searched for the pieces sampled */
+       OWN_MAX = 16 };    /* el__fit_feet_unproven: feet's pieces searched for the pieces sampled */
 
 /* Distances and feet (normalised) of every point to the kept curve: near each point's
  * own place, then wherever the curve comes nearer. projected (smooth): d and fs hold the
- * first already (fit_feet_distances at x, as fit_feet_elsewhere leaves them). */
-int fit_curve_distances(fit_objective *ob, const double *x, double v[2][FIT_NP], int projected, double *d,
+ * first already (el__fit_feet_distances at x, as el__fit_feet_elsewhere leaves them). */
+int el__fit_curve_distances(fit_objective *ob, const double *x, double v[2][FIT_NP], int projected, double *d,
                         double *fs, double *tmp)
 {
     const size_t n = ob->n;
     const size_t nv[2] = {n, 0};
     if (ob->map.model == FIT_SMOOTH) {
         const double *V[2] = {NULL, NULL};
-        const int st = projected ? EL_OK : fit_feet_distances(ob, x, d, fs, NULL);
-        return st ? st : fit_nearest_everywhere(ob, v, V, nv, d, fs, NULL);
+        const int st = projected ? EL_OK : el__fit_feet_distances(ob, x, d, fs, NULL);
+        return st ? st : el__fit_nearest_everywhere(ob, v, V, nv, d, fs, NULL);
     }
     double *buf = malloc(sizeof(double) * 2 * n);
     if (!buf) return EL_ENOMEM;
     fit_walk w;
-    fit_walk_start(v[0], &w);
+    el__fit_walk_start(v[0], &w);
     int st = EL_OK;
     for (size_t a = 0; a < n && !st; a += FIT_BLOCK) {
         const size_t m = n - a < FIT_BLOCK ? n - a : FIT_BLOCK;
-        st = fit_discrete_rows(v[0], &w, m, buf + 2 * a, NULL, tmp);
+        st = el__fit_discrete_rows(v[0], &w, m, buf + 2 * a, NULL, tmp);
     }
     if (!st) {
         const double *V[2] = {buf, NULL};
-        fit_polygon_distances(ob, buf, n, v[0][2], 0, 1, d, fs);
-        st = fit_nearest_everywhere(ob, v, V, nv, d, fs, NULL);
+        el__fit_polygon_distances(ob, buf, n, v[0][2], 0, 1, d, fs);
+        st = el__fit_nearest_everywhere(ob, v, V, nv, d, fs, NULL);
     }
     free(buf);
     return st;
@@ -127,7 +127,7 @@ static int proven(const windows *w, double d, double s0)
     return w->kmax[j] * (fabs(d) + A) < 1.0;
 }
 
-int fit_feet_unproven(const fit_objective *o, double v[2][FIT_NP], const double *d, const double *fs,
+int el__fit_feet_unproven(const fit_objective *o, double v[2][FIT_NP], const double *d, const double *fs,
                       unsigned char *unproven, size_t *nopen, unsigned char mark[FIT_PIECES])
 {
     const size_t n = o->n;
@@ -136,7 +136,7 @@ int fit_feet_unproven(const fit_objective *o, double v[2][FIT_NP], const double 
     el_smooth_params p;
     windows w;
     int st;
-    if ((st = fit_to_smooth(v[0], &p)) || (st = D < HUGE_VAL ? windows_of(&p, D, &w) : EL_EDOM)) return st;
+    if ((st = el__fit_to_smooth(v[0], &p)) || (st = D < HUGE_VAL ? windows_of(&p, D, &w) : EL_EDOM)) return st;
     *nopen = 0;
     unproven[0] = unproven[n - 1] = 0;
     for (size_t i = 1; i + 1 < n; i++) *nopen += unproven[i] = !proven(&w, d[i], fs[i]);
@@ -164,8 +164,8 @@ int fit_feet_unproven(const fit_objective *o, double v[2][FIT_NP], const double 
 
 /*
  * The distances d and feet fs of the points to the smooth curve at x (one curve), Newton
- * from the feet o->s (fit_feet_distances), then for each inner point whose foot is not
- * proven the nearest point (fit_feet_unproven; on an open arc usually none, and then no
+ * from the feet o->s (el__fit_feet_distances), then for each inner point whose foot is not
+ * proven the nearest point (el__fit_feet_unproven; on an open arc usually none, and then no
  * sample is taken) a foot on another pass of the curve that is nearer, found from the
  * curve's samples gamma(j h), h = L / M, on the pieces that can hold one:
  * a sample that is a local minimum of the sampled distance, at least 1.5 h from the foot
@@ -177,14 +177,14 @@ int fit_feet_unproven(const fit_objective *o, double v[2][FIT_NP], const double 
  * foot on the extension beyond an end is moved, not counted: fit.c's test); a candidate
  * sets o->other_passes. A pass
  * narrower than ~2 h, or a minimum that Newton's method misses from its sample, is not
- * found: the search everywhere (fit_nearest_everywhere, the report's) decides at the end.
+ * found: the search everywhere (el__fit_nearest_everywhere, the report's) decides at the end.
  */
-int fit_feet_elsewhere(fit_objective *o, const double *x, double v[2][FIT_NP], double *d, double *fs,
+int el__fit_feet_elsewhere(fit_objective *o, const double *x, double v[2][FIT_NP], double *d, double *fs,
                        size_t *moved)
 {
     const size_t n = o->n;
     *moved = 0;
-    int st = fit_feet_distances(o, x, d, fs, NULL);
+    int st = el__fit_feet_distances(o, x, d, fs, NULL);
     const double L = v[0][6];
     el_smooth_params p;
     if (st || o->map.ncurves != 1 || n < 3 || !(L > 0.0)) return st;
@@ -192,7 +192,8 @@ int fit_feet_elsewhere(fit_objective *o, const double *x, double v[2][FIT_NP], d
     unsigned char *unproven = malloc(n), mark[PIECES];
     if (!unproven) return EL_ENOMEM;
     size_t nopen = 0;
-    if ((st = fit_to_smooth(v[0], &p)) || (st = fit_feet_unproven(o, v, d, fs, unproven, &nopen, mark)) || nopen == 0) {
+    if ((st = el__fit_to_smooth(v[0], &p)) || (st = el__fit_feet_unproven(o, v, d, fs, unproven, &nopen, mark)) ||
+        nopen == 0) {
         free(unproven);
         return st;
     }
@@ -275,7 +276,7 @@ int fit_feet_elsewhere(fit_objective *o, const double *x, double v[2][FIT_NP], d
             nc += k;
             o->other_passes |= k > 0;
         }
-        if (nc == 0 || (st = fit_feet_project_list(o, v, cp, nc, cs, cd))) continue;
+        if (nc == 0 || (st = el__fit_feet_project_list(o, v, cp, nc, cs, cd))) continue;
         for (size_t r = 0; r < nc;) {           /* point i's candidates: r .. r2-1 */
             const size_t i = cp[r];
             size_t r2 = r, best = nc;

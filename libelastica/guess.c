@@ -51,7 +51,7 @@ typedef struct cguess {
  * overflow; a spread below DBL_MIN / DBL_EPSILON (~1e-292: differences of the points
  * would be denormal, losing their digits) or beyond double's range is EL_EDOM.
  */
-int fit_normalisation(const double *xy, size_t n, double *cx, double *cy, double *sc)
+int el__fit_normalisation(const double *xy, size_t n, double *cx, double *cy, double *sc)
 {
     double mx = 0.0, my = 0.0;
     for (size_t i = 0; i < n; i++) { mx += xy[2 * i] / (double)n; my += xy[2 * i + 1] / (double)n; }
@@ -77,7 +77,7 @@ int fit_normalisation(const double *xy, size_t n, double *cx, double *cy, double
 /* The fit's units (fit.c) and noise level, from the same normalisation. */
 
 /* A parameter value j in input units -> normalised (the smooth mu -> w = sqrt(mu)). */
-double fit_norm_param(int model, int j, double v, double cx, double cy, double sc)
+double el__fit_norm_param(int model, int j, double v, double cx, double cy, double sc)
 {
     if (j == 0) return (v - cx) / sc;
     if (j == 1) return (v - cy) / sc;
@@ -86,7 +86,7 @@ double fit_norm_param(int model, int j, double v, double cx, double cy, double s
     return v;
 }
 
-double fit_denorm_param(int model, int j, double v, double cx, double cy, double sc)
+double el__fit_denorm_param(int model, int j, double v, double cx, double cy, double sc)
 {
     if (j == 0) return cx + sc * v;
     if (j == 1) return cy + sc * v;
@@ -100,7 +100,7 @@ double fit_denorm_param(int model, int j, double v, double cx, double cy, double
  * loops would look noisy): P_{i+2} - 3P_{i+1} + 3P_i - P_{i-1} has variance 20 sigma^2
  * per coordinate, |.|^2 mean 40 sigma^2 = 20 rms^2 and median ln 2 of the mean (a
  * chi-square of two degrees); at most NOISE_SAMPLES of them, evenly spread. */
-double fit_noise_rms(const double *xy, size_t n, double sc)
+double el__fit_noise_rms(const double *xy, size_t n, double sc)
 {
     if (n < 4) return 0.0;
     const size_t m = n - 3 < NOISE_SAMPLES ? n - 3 : NOISE_SAMPLES;
@@ -202,7 +202,7 @@ int el_fit_fractions(const double *xy, size_t n, int mode, double *t, int *mode_
     if (check_points(xy, n, 2) || !t || mode < EL_PARAM_AUTO || mode > EL_PARAM_CHORD)
         return EL_EINVAL;
     points p = {xy, n, 0.0, 0.0, 1.0};
-    int st = fit_normalisation(xy, n, &p.cx, &p.cy, &p.sc);
+    int st = el__fit_normalisation(xy, n, &p.cx, &p.cy, &p.sc);
     fractions f;
     if (st || (st = fractions_start(&f, &p, mode, mode_used))) return st;
     for (size_t i = 0; i < n; i++) t[i] = fractions_next(&f);
@@ -454,19 +454,19 @@ static double place(int model, const points *p, const double *v, double *x0, dou
     int st;
     if (model == FIT_DISCRETE && m == n) {
         fit_walk w;
-        fit_walk_start(v, &w);
-        st = fit_discrete_rows(v, &w, n, G, NULL, tmp);
+        el__fit_walk_start(v, &w);
+        st = el__fit_discrete_rows(v, &w, n, G, NULL, tmp);
     } else if (model == FIT_DISCRETE) {
         const double vs[FIT_NP] = {0.0, 0.0, v[3], v[4] / v[2], v[6], v[5], v[2] * (double)(n - 1)};
         for (size_t j = 0; j < m; j++) s[j] = v[2] * (double)idx[j];
-        st = fit_smooth_rows(vs, m, s, G, NULL);
+        st = el__fit_smooth_rows(vs, m, s, G, NULL);
     } else {
         fractions f = *f0;
         for (size_t i = 0, j = 0; i < n && j < m; i++) {
             const double t = fractions_next(&f);
             if (i == idx[j]) s[j++] = t * v[6];
         }
-        st = fit_smooth_rows(v, m, s, G, NULL);
+        st = el__fit_smooth_rows(v, m, s, G, NULL);
     }
     if (st) return HUGE_VAL;
     for (size_t j = 0; j < m; j++) {
@@ -510,7 +510,7 @@ static int guess_run(int model, const double *xy, size_t n, int mode, void *cand
     if (mode < EL_PARAM_AUTO || mode > EL_PARAM_CHORD) return EL_EINVAL;
     el__gsl_quiet();
     points p = {xy, n, 0.0, 0.0, 1.0};
-    int st = fit_normalisation(xy, n, &p.cx, &p.cy, &p.sc);
+    int st = el__fit_normalisation(xy, n, &p.cx, &p.cy, &p.sc);
     if (st) return st;
     fractions f0, f;
     if ((st = fractions_start(&f0, &p, model == FIT_DISCRETE ? EL_PARAM_UNIFORM : mode, NULL))) return st;
@@ -535,7 +535,7 @@ static int guess_run(int model, const double *xy, size_t n, int mode, void *cand
     size_t m = nok < cap ? nok : cap;
     double out[NCAND_MAX][FIT_NP];
     for (size_t j = 0; j < m; j++) {
-        for (int i = 0; i < FIT_NP; i++) out[j][i] = fit_denorm_param(model, i, v[order[j]][i], p.cx, p.cy, p.sc);
+        for (int i = 0; i < FIT_NP; i++) out[j][i] = el__fit_denorm_param(model, i, v[order[j]][i], p.cx, p.cy, p.sc);
         /* parameters outside double's range (mu of a 1e300-sized curve underflows) */
         if (el__all_finite(out[j], FIT_NP) || !(out[j][model == FIT_DISCRETE ? 2 : 3] >= DBL_MIN)) return EL_EDOM;
     }

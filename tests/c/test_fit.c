@@ -601,7 +601,7 @@ START_TEST(test_orthogonal_distances_and_feet)
 END_TEST
 
 /* The distances an orthogonal fit reports (most taken from its last evaluation, whose
- * feet were at rest: fit_feet_distances) against a fresh measurement: Newton's method
+ * feet were at rest: el__fit_feet_distances) against a fresh measurement: Newton's method
  * from the reported foot by one-point evaluations, and the nearest of 20001 samples of
  * the fitted curve; noisy points (1 % of the length) on an arc and on a loop passing
  * close to itself, 1000 points each. */

@@ -1,6 +1,6 @@
 /* The fit's report (fit_nearest.c). Discrete: each point's distance to the polygon and its
- * foot, by fit_polygon_distances (the search near the point's vertex) and
- * fit_nearest_everywhere (a nearer part elsewhere), against the brute-force nearest
+ * foot, by el__fit_polygon_distances (the search near the point's vertex) and
+ * el__fit_nearest_everywhere (a nearer part elsewhere), against the brute-force nearest
  * point (every segment, the first of equal distances) on equilateral polygons: arcs,
  * loops, self-intersecting random walks, zigzags; sparse and dense polygons (spacing
  * from 10 x the noise down to 1/300 of it), far points, scales 1e-6 .. 1e6. The same
@@ -96,14 +96,14 @@ START_TEST(test_polygon_report_equals_brute_force)
                     noisy_points(V, n, noise[b] * h, sc, &rng, xy);
                     const fit_map m = {.model = FIT_DISCRETE, .ncurves = 1};
                     fit_objective o;
-                    ck_assert_int_eq(fit_objective_init(&o, FIT_PAIRED, &m, xy, n, 0.0, 0.0, 1.0, NULL), EL_OK);
+                    ck_assert_int_eq(el__fit_objective_init(&o, FIT_PAIRED, &m, xy, n, 0.0, 0.0, 1.0, NULL), EL_OK);
                     double v[2][FIT_NP] = {{0}};
                     v[0][2] = sc * h;
                     const double *Vc[2] = {V, NULL};
                     const size_t nv[2] = {n, 0};
-                    fit_polygon_distances(&o, V, n, sc * h, 0, 1, d, fs);
+                    el__fit_polygon_distances(&o, V, n, sc * h, 0, 1, d, fs);
                     memcpy(local, fs, sizeof(double) * n);
-                    ck_assert_int_eq(fit_nearest_everywhere(&o, v, Vc, nv, d, fs, NULL), EL_OK);
+                    ck_assert_int_eq(el__fit_nearest_everywhere(&o, v, Vc, nv, d, fs, NULL), EL_OK);
                     for (size_t i = 0; i < n; i++) {
                         ck_assert_msg(brute_nearest(Vc, nv, 1, sc * h, xy + 2 * i, d[i], fs[i], 0),
                                       "%s n %zu noise %g scale %g point %zu: d %.17g foot %.17g not nearest",
@@ -111,7 +111,7 @@ START_TEST(test_polygon_report_equals_brute_force)
                         moved += fs[i] != local[i];
                     }
                     searched += (long)n;
-                    fit_objective_free(&o);
+                    el__fit_objective_free(&o);
                 }
     /* the search elsewhere is exercised: some feet are not where the local search ended */
     ck_assert_int_gt(moved, searched / 100);
@@ -139,17 +139,17 @@ START_TEST(test_keyline_report_equals_brute_force)
                     noisy_points(W, n, noise[b] * h, sc, &rng, xy);
                     const fit_map m = {.model = FIT_DISCRETE, .ncurves = 2};
                     fit_objective o;
-                    ck_assert_int_eq(fit_objective_init(&o, FIT_PAIRED, &m, xy, n, 0.0, 0.0, 1.0, NULL), EL_OK);
+                    ck_assert_int_eq(el__fit_objective_init(&o, FIT_PAIRED, &m, xy, n, 0.0, 0.0, 1.0, NULL), EL_OK);
                     double v[2][FIT_NP] = {{0}};
                     v[0][2] = v[1][2] = sc * h;
                     const double *Vc[2] = {V0, V1};
                     const size_t nv[2] = {js + 1, n - js};
-                    fit_polygon_distances(&o, V0, nv[0], sc * h, js, -1, d, fs);
+                    el__fit_polygon_distances(&o, V0, nv[0], sc * h, js, -1, d, fs);
                     const double dj = d[js], fj = fs[js];
-                    fit_polygon_distances(&o, V1, nv[1], sc * h, js, 1, d, fs);
+                    el__fit_polygon_distances(&o, V1, nv[1], sc * h, js, 1, d, fs);
                     for (size_t i = 0; i < n; i++) sd[i] = i > js || (i == js && fabs(d[js]) < fabs(dj));
                     if (sd[js] == 0) { d[js] = dj; fs[js] = fj; }
-                    ck_assert_int_eq(fit_nearest_everywhere(&o, v, Vc, nv, d, fs, sd), EL_OK);
+                    ck_assert_int_eq(el__fit_nearest_everywhere(&o, v, Vc, nv, d, fs, sd), EL_OK);
                     for (size_t i = 0; i < n; i++) {
                         ck_assert_msg(brute_nearest(Vc, nv, 2, sc * h, xy + 2 * i, d[i], fs[i], sd[i]),
                                       "%s n %zu noise %g scale %g point %zu: d %.17g foot %.17g side %d not nearest",
@@ -157,7 +157,7 @@ START_TEST(test_keyline_report_equals_brute_force)
                         crossed += sd[i] != (i > js);
                     }
                     searched += (long)n;
-                    fit_objective_free(&o);
+                    el__fit_objective_free(&o);
                 }
     /* some points are nearest the other side */
     ck_assert_int_gt(crossed, searched / 100);
@@ -165,7 +165,7 @@ START_TEST(test_keyline_report_equals_brute_force)
 END_TEST
 
 /* The smooth model: each point's foot by Newton from where the curve was sampled
- * (fit_feet_distances) and then fit_nearest_everywhere, against the nearest of dense
+ * (el__fit_feet_distances) and then el__fit_nearest_everywhere, against the nearest of dense
  * samples (50001 per curve, which are never nearer than the nearest point): tight loops
  * (kappa_max up to 20 / length unit) and points scattered from 1/700 to 7 x the loops'
  * radius of curvature off the curve, scales 1e-3 .. 1e3. Every distance no larger
@@ -187,7 +187,7 @@ START_TEST(test_smooth_report_against_dense_samples)
                     const double sc = scs[e];
                     const double v[FIT_NP] = {0.2 * sc, -0.1 * sc, 0.3, sqrt(mus[b]) / sc, ks[a], 0.2, 14.0 * sc};
                     el_smooth_params p;
-                    ck_assert_int_eq(fit_to_smooth(v, &p), EL_OK);
+                    ck_assert_int_eq(el__fit_to_smooth(v, &p), EL_OK);
                     for (size_t i = 0; i < N; i++) s[i] = v[6] * (double)i / (N - 1);
                     ck_assert_int_eq(el_smooth_eval(&p, N, s, xy, NULL, NULL), EL_OK);
                     for (size_t i = 0; i < 2 * N; i++) xy[i] += sc * noises[c] * test_uniform(&rng, -1.0, 1.0);
@@ -199,16 +199,16 @@ START_TEST(test_smooth_report_against_dense_samples)
                     m.ncurves = 1;
                     for (int j = 0; j < FIT_NP; j++) { m.scale[j] = 1.0; m.idx[m.nx++] = j; }
                     fit_objective o;
-                    ck_assert_int_eq(fit_objective_init(&o, FIT_ORTHOGONAL, &m, xy, N, 0.0, 0.0, 1.0, NULL), EL_OK);
+                    ck_assert_int_eq(el__fit_objective_init(&o, FIT_ORTHOGONAL, &m, xy, N, 0.0, 0.0, 1.0, NULL), EL_OK);
                     double x[FIT_MAXX], vv[2][FIT_NP];
-                    fit_map_inverse(&m, v, x);
+                    el__fit_map_inverse(&m, v, x);
                     memcpy(vv[0], v, sizeof vv[0]);
                     const double *V[2] = {NULL, NULL};
                     const size_t nv[2] = {N, 0};
                     memcpy(o.s, s, sizeof s);
-                    ck_assert_int_eq(fit_feet_distances(&o, x, d, fs, NULL), EL_OK);
+                    ck_assert_int_eq(el__fit_feet_distances(&o, x, d, fs, NULL), EL_OK);
                     memcpy(f0, fs, sizeof fs);
-                    ck_assert_int_eq(fit_nearest_everywhere(&o, vv, V, nv, d, fs, NULL), EL_OK);
+                    ck_assert_int_eq(el__fit_nearest_everywhere(&o, vv, V, nv, d, fs, NULL), EL_OK);
                     for (size_t i = 0; i < N; i++) {
                         double best = HUGE_VAL, F[2];
                         for (size_t j = 0; j < M; j++) {
@@ -222,7 +222,7 @@ START_TEST(test_smooth_report_against_dense_samples)
                         ck_assert_double_eq_tol(hypot(F[0] - xy[2 * i], F[1] - xy[2 * i + 1]), fabs(d[i]), 1e-12 * sc);
                         moved += fabs(fs[i] - f0[i]) > 1e-6 * v[6];
                     }
-                    fit_objective_free(&o);
+                    el__fit_objective_free(&o);
                 }
     /* the search elsewhere is exercised: feet moved to another pass */
     ck_assert_int_gt(moved, 100);

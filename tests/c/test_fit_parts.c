@@ -19,7 +19,7 @@ START_TEST(test_blocked_discrete_walk_equals_one_call)
             const double v[7] = {0.3, -0.7, 2.0 / (double)n, 0.4, 3.0 / (double)n, 0.25, ks[b]};
             el_discrete_params p;
             double dq;
-            ck_assert_int_eq(fit_to_discrete(v, &p, &dq), EL_OK);
+            ck_assert_int_eq(el__fit_to_discrete(v, &p, &dq), EL_OK);
             double *xy = malloc(sizeof(double) * 2 * n), *jac = malloc(sizeof(double) * 14 * n);
             double *wxy = malloc(sizeof(double) * 2 * n), *wjac = malloc(sizeof(double) * 14 * n);
             ck_assert_int_eq(el_discrete_jacobian(&p, n, xy, jac), EL_OK);
@@ -27,10 +27,10 @@ START_TEST(test_blocked_discrete_walk_equals_one_call)
                 for (size_t i = 0; i < 2 * n; i++) jac[i * 7 + 6] = -(jac[i * 7 + 6] + dq * jac[i * 7 + 5]);
             for (size_t blk = 1; blk <= 300; blk = blk * 3 + 1) {
                 fit_walk w;
-                fit_walk_start(v, &w);
+                el__fit_walk_start(v, &w);
                 for (size_t s = 0; s < n; s += blk) {
                     const size_t m = n - s < blk ? n - s : blk;
-                    ck_assert_int_eq(fit_discrete_rows(v, &w, m, wxy + 2 * s, wjac + 14 * s, tmp), EL_OK);
+                    ck_assert_int_eq(el__fit_discrete_rows(v, &w, m, wxy + 2 * s, wjac + 14 * s, tmp), EL_OK);
                 }
                 double scale = 1.0, e = 0.0;
                 for (size_t i = 0; i < 14 * n; i++) {
@@ -61,14 +61,14 @@ START_TEST(test_end_state_derivatives)
                 const double *v = model == FIT_SMOOTH ? smooth[a] : discrete[a];
                 const size_t n = 60;
                 fit_end e, ep, em;
-                ck_assert_int_eq(fit_end_state(model, v, n, at_end, &e, tmp), EL_OK);
+                ck_assert_int_eq(el__fit_end_state(model, v, n, at_end, &e, tmp), EL_OK);
                 for (int j = 0; j < 7; j++) {
                     const double h = 1e-6 * (1.0 + fabs(v[j]));
                     double vp[7], vm[7];
                     memcpy(vp, v, sizeof vp); memcpy(vm, v, sizeof vm);
                     vp[j] += h; vm[j] -= h;
-                    ck_assert_int_eq(fit_end_state(model, vp, n, at_end, &ep, tmp), EL_OK);
-                    ck_assert_int_eq(fit_end_state(model, vm, n, at_end, &em, tmp), EL_OK);
+                    ck_assert_int_eq(el__fit_end_state(model, vp, n, at_end, &ep, tmp), EL_OK);
+                    ck_assert_int_eq(el__fit_end_state(model, vm, n, at_end, &em, tmp), EL_OK);
                     const double fd[4] = {(ep.xy[0] - em.xy[0]) / (2 * h), (ep.xy[1] - em.xy[1]) / (2 * h),
                                           remainder(ep.theta - em.theta, 2 * M_PI) / (2 * h),
                                           (ep.kappa - em.kappa) / (2 * h)};
@@ -82,12 +82,12 @@ START_TEST(test_end_state_derivatives)
     }
     /* the states themselves: the smooth curve's own evaluation */
     el_smooth_params p;
-    ck_assert_int_eq(fit_to_smooth(smooth[2], &p), EL_OK);
+    ck_assert_int_eq(el__fit_to_smooth(smooth[2], &p), EL_OK);
     double s[2] = {0.0, p.length}, xy[4], th[2], ka[2];
     ck_assert_int_eq(el_smooth_eval(&p, 2, s, xy, th, ka), EL_OK);
     for (int at_end = 0; at_end < 2; at_end++) {
         fit_end e;
-        ck_assert_int_eq(fit_end_state(FIT_SMOOTH, smooth[2], 0, at_end, &e, tmp), EL_OK);
+        ck_assert_int_eq(el__fit_end_state(FIT_SMOOTH, smooth[2], 0, at_end, &e, tmp), EL_OK);
         ck_assert_close(e.xy[0], xy[2 * at_end], 1e-13);
         ck_assert_close(e.kappa, ka[at_end], 1e-13);
         ck_assert(fabs(remainder(e.theta - th[at_end], 2 * M_PI)) <= 1e-13);
@@ -114,10 +114,10 @@ START_TEST(test_keyline_map_is_g2_with_its_derivative)
             if (held) { const int cols[7] = {0, 1, 2, 4, 5, 7, 8}; for (int j = 0; j < 7; j++) x[j] = xs[cols[j]]; }
             else memcpy(x, xs, sizeof xs);
             double v[2][FIT_NP], M[2 * FIT_NP * FIT_MAXX];
-            ck_assert_int_eq(fit_map_eval(&m, x, v, M), EL_OK);
+            ck_assert_int_eq(el__fit_map_eval(&m, x, v, M), EL_OK);
             fit_end e[2];
             for (int c = 0; c < 2; c++) {
-                ck_assert_int_eq(fit_end_state(model, v[c], 50, 0, &e[c], tmp), EL_OK);
+                ck_assert_int_eq(el__fit_end_state(model, v[c], 50, 0, &e[c], tmp), EL_OK);
                 ck_assert_msg(fabs(e[c].kappa) <= 1e-12, "model %d side %d kappa %g", model, c, e[c].kappa);
             }
             ck_assert(fabs(e[0].xy[0] - e[1].xy[0]) == 0.0 && fabs(e[0].xy[1] - e[1].xy[1]) == 0.0);
@@ -128,8 +128,8 @@ START_TEST(test_keyline_map_is_g2_with_its_derivative)
                 double xp[FIT_MAXX], xm[FIT_MAXX], vp[2][FIT_NP], vm[2][FIT_NP];
                 memcpy(xp, x, sizeof xp); memcpy(xm, x, sizeof xm);
                 xp[j] += h; xm[j] -= h;
-                ck_assert_int_eq(fit_map_eval(&m, xp, vp, NULL), EL_OK);
-                ck_assert_int_eq(fit_map_eval(&m, xm, vm, NULL), EL_OK);
+                ck_assert_int_eq(el__fit_map_eval(&m, xp, vp, NULL), EL_OK);
+                ck_assert_int_eq(el__fit_map_eval(&m, xm, vm, NULL), EL_OK);
                 for (int c = 0; c < 2; c++)
                     for (int r = 0; r < FIT_NP; r++) {
                         const double fd = (vp[c][r] - vm[c][r]) / (2 * h), an = M[c * FIT_NP * FIT_MAXX + r * m.nx + j];
@@ -167,12 +167,12 @@ START_TEST(test_start_chart_same_curve_and_derivative)
                     const double vd[7] = {0.3, -0.2, 0.05, 0.7, sgn * 0.03, q, ks[a]};
                     const double *v = model == FIT_SMOOTH ? vs : vd;
                     double x[FIT_MAXX], w[2][FIT_NP], M[2 * FIT_NP * FIT_MAXX];
-                    fit_map_inverse(&m, v, x);
-                    ck_assert_int_eq(fit_map_eval(&m, x, w, M), EL_OK);
+                    el__fit_map_inverse(&m, v, x);
+                    ck_assert_int_eq(el__fit_map_eval(&m, x, w, M), EL_OK);
                     for (int at_end = 0; at_end < 2; at_end++) {
                         fit_end e0, e1;
-                        ck_assert_int_eq(fit_end_state(model, v, 50, at_end, &e0, tmp), EL_OK);
-                        ck_assert_int_eq(fit_end_state(model, w[0], 50, at_end, &e1, tmp), EL_OK);
+                        ck_assert_int_eq(el__fit_end_state(model, v, 50, at_end, &e0, tmp), EL_OK);
+                        ck_assert_int_eq(el__fit_end_state(model, w[0], 50, at_end, &e1, tmp), EL_OK);
                         const double d = fmax(fmax(fabs(e0.xy[0] - e1.xy[0]), fabs(e0.xy[1] - e1.xy[1])),
                                               fmax(fabs(remainder(e0.theta - e1.theta, 2 * M_PI)),
                                                    fabs(e0.kappa - e1.kappa)));
@@ -180,17 +180,17 @@ START_TEST(test_start_chart_same_curve_and_derivative)
                                       q, at_end, d);
                     }
                     fit_end e;
-                    ck_assert_int_eq(fit_end_state(model, w[0], 50, 1, &e, tmp), EL_OK);
+                    ck_assert_int_eq(el__fit_end_state(model, w[0], 50, 1, &e, tmp), EL_OK);
                     for (int j = 0; j < m.nx; j++) {
                         const double h = 1e-6 * (1.0 + fabs(x[j]));
                         double xp[FIT_MAXX], xm[FIT_MAXX], vp[2][FIT_NP], vm[2][FIT_NP];
                         memcpy(xp, x, sizeof xp); memcpy(xm, x, sizeof xm);
                         xp[j] += h; xm[j] -= h;
                         fit_end ep, em;
-                        ck_assert_int_eq(fit_map_eval(&m, xp, vp, NULL), EL_OK);
-                        ck_assert_int_eq(fit_map_eval(&m, xm, vm, NULL), EL_OK);
-                        ck_assert_int_eq(fit_end_state(model, vp[0], 50, 1, &ep, tmp), EL_OK);
-                        ck_assert_int_eq(fit_end_state(model, vm[0], 50, 1, &em, tmp), EL_OK);
+                        ck_assert_int_eq(el__fit_map_eval(&m, xp, vp, NULL), EL_OK);
+                        ck_assert_int_eq(el__fit_map_eval(&m, xm, vm, NULL), EL_OK);
+                        ck_assert_int_eq(el__fit_end_state(model, vp[0], 50, 1, &ep, tmp), EL_OK);
+                        ck_assert_int_eq(el__fit_end_state(model, vm[0], 50, 1, &em, tmp), EL_OK);
                         for (int c = 0; c < 2; c++) {
                             double an = 0.0;
                             for (int r = 0; r < FIT_NP; r++) an += e.dxy[c][r] * M[r * m.nx + j];
@@ -220,7 +220,7 @@ START_TEST(test_discrete_orthogonal_gradient)
     for (size_t a = 0; a < sizeof ks / sizeof ks[0]; a++) {
         const double v[FIT_NP] = {0.1, -0.2, 0.004, 0.4, 0.006, 0.3, ks[a]};
         el_discrete_params p;
-        ck_assert_int_eq(fit_to_discrete(v, &p, NULL), EL_OK);
+        ck_assert_int_eq(el__fit_to_discrete(v, &p, NULL), EL_OK);
         static double V[2 * N];
         ck_assert_int_eq(el_discrete_eval(&p, N, V), EL_OK);
         /* points along the polygon at uneven places, off it by noise */
@@ -247,22 +247,22 @@ START_TEST(test_discrete_orthogonal_gradient)
             m.idx[m.nx++] = j;
         }
         fit_objective o;
-        ck_assert_int_eq(fit_objective_init(&o, FIT_ORTHOGONAL, &m, xy, N, 0.0, 0.0, 1.0, NULL), EL_OK);
+        ck_assert_int_eq(el__fit_objective_init(&o, FIT_ORTHOGONAL, &m, xy, N, 0.0, 0.0, 1.0, NULL), EL_OK);
         double x[FIT_MAXX];
         double vp[FIT_NP];
         memcpy(vp, v, sizeof vp);
         vp[3] += 1e-4;
-        fit_map_inverse(&m, vp, x);
+        el__fit_map_inverse(&m, vp, x);
         fit_value val;
-        ck_assert_int_eq(fit_objective_eval(&o, x, 1, &val), EL_OK);
+        ck_assert_int_eq(el__fit_objective_eval(&o, x, 1, &val), EL_OK);
         for (int j = 0; j < m.nx; j++) {
             const double h = 1e-7 * (1.0 + fabs(x[j]));
             double xp[FIT_MAXX], xm[FIT_MAXX];
             fit_value fp, fm;
             memcpy(xp, x, sizeof xp); memcpy(xm, x, sizeof xm);
             xp[j] += h; xm[j] -= h;
-            ck_assert_int_eq(fit_objective_eval(&o, xp, 0, &fp), EL_OK);
-            ck_assert_int_eq(fit_objective_eval(&o, xm, 0, &fm), EL_OK);
+            ck_assert_int_eq(el__fit_objective_eval(&o, xp, 0, &fp), EL_OK);
+            ck_assert_int_eq(el__fit_objective_eval(&o, xm, 0, &fm), EL_OK);
             const double fd = (fp.f - fm.f) / (2 * h);
             double gmax = 0.0;
             for (int i = 0; i < m.nx; i++) gmax = fmax(gmax, fabs(val.g[i]));
@@ -270,7 +270,7 @@ START_TEST(test_discrete_orthogonal_gradient)
             worst = fmax(worst, err);
             ck_assert_msg(err <= 1e-5, "k %g x%d: %g vs %g", ks[a], j, val.g[j], fd);
         }
-        fit_objective_free(&o);
+        el__fit_objective_free(&o);
     }
     ck_assert(worst > 0.0);
 }
@@ -302,7 +302,7 @@ START_TEST(test_discrete_paired_normal_equations_equal_plain_ones)
         const double v[FIT_NP] = {0.1, -0.2, 0.004, 0.4, 0.006, 0.3, ks[a]};
         el_discrete_params p;
         double dq_dk;
-        ck_assert_int_eq(fit_to_discrete(v, &p, &dq_dk), EL_OK);
+        ck_assert_int_eq(el__fit_to_discrete(v, &p, &dq_dk), EL_OK);
         ck_assert_int_eq(el_discrete_jacobian(&p, N, V, J), EL_OK);
         for (size_t i = 0; i < 2 * N; i++)   /* noise up to 50 % of a segment */
             xy[i] = V[i] + 2e-3 * test_uniform(&rng, -1, 1);
@@ -311,11 +311,11 @@ START_TEST(test_discrete_paired_normal_equations_equal_plain_ones)
                 J[r * FIT_NP + 6] = -J[r * FIT_NP + 6] - dq_dk * J[r * FIT_NP + 5];
         const fit_map m = all_free_unscaled(FIT_DISCRETE);
         fit_objective o;
-        ck_assert_int_eq(fit_objective_init(&o, FIT_PAIRED, &m, xy, N, 0.0, 0.0, 1.0, NULL), EL_OK);
+        ck_assert_int_eq(el__fit_objective_init(&o, FIT_PAIRED, &m, xy, N, 0.0, 0.0, 1.0, NULL), EL_OK);
         double x[FIT_MAXX];
-        fit_map_inverse(&m, v, x);
+        el__fit_map_inverse(&m, v, x);
         fit_value val;
-        ck_assert_int_eq(fit_objective_eval(&o, x, 1, &val), EL_OK);
+        ck_assert_int_eq(el__fit_objective_eval(&o, x, 1, &val), EL_OK);
         /* and the sums of the terms' magnitudes, the scale of their rounding */
         double f = 0.0, g[FIT_NP] = {0}, H[FIT_NP][FIT_NP] = {{0}}, ga[FIT_NP] = {0}, Ha[FIT_NP][FIT_NP] = {{0}};
         for (size_t r = 0; r < 2 * N; r++) {
@@ -338,13 +338,13 @@ START_TEST(test_discrete_paired_normal_equations_equal_plain_ones)
                 ck_assert_msg(fabs(val.H[i * m.nx + j] - H[i][j] / N) <= 1e-12 * Ha[i][j] / N,
                               "k %g H%d%d %.17g vs %.17g", ks[a], i, j, val.H[i * m.nx + j], H[i][j] / N);
         }
-        fit_objective_free(&o);
+        el__fit_objective_free(&o);
     }
 }
 END_TEST
 
-/* The refit's cheap search for feet on another pass (fit_feet_elsewhere, from the
- * curve's samples) against the search everywhere (fit_nearest_everywhere), both from the
+/* The refit's cheap search for feet on another pass (el__fit_feet_elsewhere, from the
+ * curve's samples) against the search everywhere (el__fit_nearest_everywhere), both from the
  * feet projected from the points' own places: on looping curves (k > 1, and an
  * inflectional one of several periods; k = 9 over 8 loops), noisy and on the curve, 20 to 1200 points, in
  * the caller's units at scales 1e-6 .. 1e6 (normalised as the fit does), it finds the
@@ -369,7 +369,7 @@ START_TEST(test_sampled_search_equals_full_search)
                     const double sc = scales[b], cx = 3.0 * sc, cy = -2.0 * sc;
                     const double v[FIT_NP] = {0.2, -0.1, 0.3, 1.0, ks[a], 0.2, lens[a]};
                     el_smooth_params p;
-                    ck_assert_int_eq(fit_to_smooth(v, &p), EL_OK);
+                    ck_assert_int_eq(el__fit_to_smooth(v, &p), EL_OK);
                     for (size_t i = 0; i < N; i++) s[i] = v[6] * (double)i / (double)(N - 1);
                     ck_assert_int_eq(el_smooth_eval(&p, N, s, xy, NULL, NULL), EL_OK);
                     for (size_t i = 0; i < N; i++) {
@@ -378,18 +378,18 @@ START_TEST(test_sampled_search_equals_full_search)
                     }
                     const fit_map m = all_free_unscaled(FIT_SMOOTH);
                     fit_objective o;
-                    ck_assert_int_eq(fit_objective_init(&o, FIT_ORTHOGONAL, &m, xy, N, cx, cy, sc, NULL), EL_OK);
+                    ck_assert_int_eq(el__fit_objective_init(&o, FIT_ORTHOGONAL, &m, xy, N, cx, cy, sc, NULL), EL_OK);
                     double x[FIT_MAXX], vv[2][FIT_NP];
-                    fit_map_inverse(&m, v, x);
+                    el__fit_map_inverse(&m, v, x);
                     memcpy(vv[0], v, sizeof vv[0]);
                     const double *V[2] = {NULL, NULL};
                     const size_t nv[2] = {N, 0};
                     for (size_t i = 0; i < N; i++) o.s[i] = s[i];
-                    ck_assert_int_eq(fit_feet_distances(&o, x, d0, f0, NULL), EL_OK);
+                    ck_assert_int_eq(el__fit_feet_distances(&o, x, d0, f0, NULL), EL_OK);
                     memcpy(local, f0, sizeof(double) * N);
-                    ck_assert_int_eq(fit_nearest_everywhere(&o, vv, V, nv, d0, f0, NULL), EL_OK);
+                    ck_assert_int_eq(el__fit_nearest_everywhere(&o, vv, V, nv, d0, f0, NULL), EL_OK);
                     size_t mv = 0;
-                    ck_assert_int_eq(fit_feet_elsewhere(&o, x, vv, d1, f1, &mv), EL_OK);
+                    ck_assert_int_eq(el__fit_feet_elsewhere(&o, x, vv, d1, f1, &mv), EL_OK);
                     size_t count = 0;
                     for (size_t i = 1; i + 1 < N; i++) {
                         ck_assert_msg(fabs(fabs(d1[i]) - fabs(d0[i])) <= 1e-12,
@@ -402,17 +402,17 @@ START_TEST(test_sampled_search_equals_full_search)
                     ck_assert_uint_eq(mv, count);          /* every foot of o.s lies on [0, L] */
                     moved += mv;
                     cases++;
-                    fit_objective_free(&o);
+                    el__fit_objective_free(&o);
                 }
     ck_assert_uint_eq(cases, 108);
     ck_assert_uint_gt(moved, 0);
 }
 END_TEST
 
-/* fit_feet_unproven's proof against the search everywhere: every foot it proves is the
+/* el__fit_feet_unproven's proof against the search everywhere: every foot it proves is the
  * nearest point; a nearer point of an unproven one lies on a marked piece; and
- * fit_feet_elsewhere keeps proven feet as they are. Open arcs (short lengths: all proven, no sample taken) to loops, k across 1,
- * scales 1e-6 .. 1e6, 20 .. 1200 points, noise 0 .. 0.08. */
+ * el__fit_feet_elsewhere keeps proven feet as they are. Open arcs (short lengths: all proven, no
+ * sample taken) to loops, k across 1, scales 1e-6 .. 1e6, 20 .. 1200 points, noise 0 .. 0.08. */
 START_TEST(test_proven_feet_are_nearest)
 {
     enum { NMAX = 1200 };
@@ -433,7 +433,7 @@ START_TEST(test_proven_feet_are_nearest)
                         const double sc = scales[b], cx = -sc, cy = 5.0 * sc, q = test_uniform(&rng, -2.0, 2.0);
                         const double v[FIT_NP] = {0.1, 0.2, -0.4, 1.0, ks[a], q, lens[l]};
                         el_smooth_params p;
-                        ck_assert_int_eq(fit_to_smooth(v, &p), EL_OK);
+                        ck_assert_int_eq(el__fit_to_smooth(v, &p), EL_OK);
                         for (size_t i = 0; i < N; i++) s[i] = v[6] * (double)i / (double)(N - 1);
                         ck_assert_int_eq(el_smooth_eval(&p, N, s, xy, NULL, NULL), EL_OK);
                         const double noise = noises[c] * fmin(1.0, v[6]);
@@ -443,19 +443,19 @@ START_TEST(test_proven_feet_are_nearest)
                         }
                         const fit_map m = all_free_unscaled(FIT_SMOOTH);
                         fit_objective o;
-                        ck_assert_int_eq(fit_objective_init(&o, FIT_ORTHOGONAL, &m, xy, N, cx, cy, sc, NULL), EL_OK);
+                        ck_assert_int_eq(el__fit_objective_init(&o, FIT_ORTHOGONAL, &m, xy, N, cx, cy, sc, NULL), EL_OK);
                         double x[FIT_MAXX], vv[2][FIT_NP];
-                        fit_map_inverse(&m, v, x);
+                        el__fit_map_inverse(&m, v, x);
                         memcpy(vv[0], v, sizeof vv[0]);
                         const double *V[2] = {NULL, NULL};
                         const size_t nv[2] = {N, 0};
                         for (size_t i = 0; i < N; i++) o.s[i] = s[i];
-                        ck_assert_int_eq(fit_feet_distances(&o, x, d0, f0, NULL), EL_OK);
+                        ck_assert_int_eq(el__fit_feet_distances(&o, x, d0, f0, NULL), EL_OK);
                         memcpy(dF, d0, sizeof(double) * N);
                         memcpy(fF, f0, sizeof(double) * N);
-                        ck_assert_int_eq(fit_nearest_everywhere(&o, vv, V, nv, dF, fF, NULL), EL_OK);
+                        ck_assert_int_eq(el__fit_nearest_everywhere(&o, vv, V, nv, dF, fF, NULL), EL_OK);
                         size_t nopen = 0;
-                        ck_assert_int_eq(fit_feet_unproven(&o, vv, d0, f0, unproven, &nopen, mark), EL_OK);
+                        ck_assert_int_eq(el__fit_feet_unproven(&o, vv, d0, f0, unproven, &nopen, mark), EL_OK);
                         size_t count = 0;
                         for (size_t i = 1; i + 1 < N; i++) {
                             count += unproven[i];
@@ -478,7 +478,7 @@ START_TEST(test_proven_feet_are_nearest)
                         all += nopen == 0;
                         some += nopen > 0 && nopen < N - 2;
                         size_t mv = 0;
-                        ck_assert_int_eq(fit_feet_elsewhere(&o, x, vv, d1, f1, &mv), EL_OK);
+                        ck_assert_int_eq(el__fit_feet_elsewhere(&o, x, vv, d1, f1, &mv), EL_OK);
                         /* a proven foot stays; an unproven one moves only nearer (the samples'
                          * search may miss a pass: test_sampled_search_equals_full_search) */
                         for (size_t i = 1; i + 1 < N; i++) {
@@ -487,7 +487,7 @@ START_TEST(test_proven_feet_are_nearest)
                         }
                         if (nopen == 0) ck_assert_uint_eq(mv, 0);
                         cases++;
-                        fit_objective_free(&o);
+                        el__fit_objective_free(&o);
                     }
     ck_assert_uint_eq(cases, 486);
     ck_assert_uint_gt(all, 0);
