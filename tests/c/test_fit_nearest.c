@@ -5,8 +5,7 @@
  * loops, self-intersecting random walks, zigzags; sparse and dense polygons (spacing
  * from 10 x the noise down to 1/300 of it), far points, scales 1e-6 .. 1e6. The same
  * distance and foot, bit for bit. Smooth: against dense samples of the curve (below). */
-#include "testutil.h"
-#include "fit_internal.h"
+#include "fit_check.h"
 #include <string.h>
 
 /* Whether (d, foot, side) is a nearest point of the polygons V[c] (nv[c] vertices,
@@ -186,26 +185,15 @@ START_TEST(test_smooth_report_against_dense_samples)
                 for (size_t e = 0; e < 3; e++) {
                     const double sc = scs[e];
                     const double v[FIT_NP] = {0.2 * sc, -0.1 * sc, 0.3, sqrt(mus[b]) / sc, ks[a], 0.2, 14.0 * sc};
+                    fit_objective o;
+                    double x[FIT_MAXX], vv[2][FIT_NP];
+                    noisy_smooth_objective(v, N, sc * noises[c], 0.0, 0.0, 1.0, &rng, s, xy, &o, x, vv);
                     el_smooth_params p;
                     ck_assert_int_eq(el__fit_to_smooth(v, &p), EL_OK);
-                    for (size_t i = 0; i < N; i++) s[i] = v[6] * (double)i / (N - 1);
-                    ck_assert_int_eq(el_smooth_eval(&p, N, s, xy, NULL, NULL), EL_OK);
-                    for (size_t i = 0; i < 2 * N; i++) xy[i] += sc * noises[c] * test_uniform(&rng, -1.0, 1.0);
                     for (size_t j = 0; j < M; j++) S[j] = v[6] * (double)j / (M - 1);
                     ck_assert_int_eq(el_smooth_eval(&p, M, S, C, NULL, NULL), EL_OK);
-                    fit_map m;
-                    memset(&m, 0, sizeof m);
-                    m.model = FIT_SMOOTH;
-                    m.ncurves = 1;
-                    for (int j = 0; j < FIT_NP; j++) { m.scale[j] = 1.0; m.idx[m.nx++] = j; }
-                    fit_objective o;
-                    ck_assert_int_eq(el__fit_objective_init(&o, FIT_ORTHOGONAL, &m, xy, N, 0.0, 0.0, 1.0, NULL), EL_OK);
-                    double x[FIT_MAXX], vv[2][FIT_NP];
-                    el__fit_map_inverse(&m, v, x);
-                    memcpy(vv[0], v, sizeof vv[0]);
                     const double *V[2] = {NULL, NULL};
                     const size_t nv[2] = {N, 0};
-                    memcpy(o.s, s, sizeof s);
                     ck_assert_int_eq(el__fit_feet_distances(&o, x, d, fs, NULL), EL_OK);
                     memcpy(f0, fs, sizeof fs);
                     ck_assert_int_eq(el__fit_nearest_everywhere(&o, vv, V, nv, d, fs, NULL), EL_OK);

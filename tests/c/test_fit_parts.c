@@ -2,8 +2,7 @@
  * the blocked walk over a discrete curve against one Jacobian call, the end states'
  * derivatives and the keyline map's against finite differences, the start's search for
  * nearer branches against the full one. */
-#include "testutil.h"
-#include "fit_internal.h"
+#include "fit_check.h"
 #include <string.h>
 
 /* Vertices and d gamma / d v walked in blocks of every size equal one call over the
@@ -276,17 +275,6 @@ START_TEST(test_discrete_orthogonal_gradient)
 }
 END_TEST
 
-/* One curve of the model with every parameter free, x = v. */
-static fit_map all_free_unscaled(int model)
-{
-    fit_map m;
-    memset(&m, 0, sizeof m);
-    m.model = model;
-    m.ncurves = 1;
-    for (int j = 0; j < FIT_NP; j++) { m.scale[j] = 1.0; m.idx[m.nx++] = j; }
-    return m;
-}
-
 /* The discrete paired objective's normal equations (fold_paired: the x0, y0 columns not
  * stored, their products as sums of every other entry and counts of ones) against the
  * plain g = J^T r / n and H = J^T J / n from el_discrete_jacobian, over three blocks of
@@ -368,23 +356,11 @@ START_TEST(test_sampled_search_equals_full_search)
                     const size_t N = ns[e];
                     const double sc = scales[b], cx = 3.0 * sc, cy = -2.0 * sc;
                     const double v[FIT_NP] = {0.2, -0.1, 0.3, 1.0, ks[a], 0.2, lens[a]};
-                    el_smooth_params p;
-                    ck_assert_int_eq(el__fit_to_smooth(v, &p), EL_OK);
-                    for (size_t i = 0; i < N; i++) s[i] = v[6] * (double)i / (double)(N - 1);
-                    ck_assert_int_eq(el_smooth_eval(&p, N, s, xy, NULL, NULL), EL_OK);
-                    for (size_t i = 0; i < N; i++) {
-                        xy[2 * i] = cx + sc * (xy[2 * i] + noises[c] * test_uniform(&rng, -1, 1));
-                        xy[2 * i + 1] = cy + sc * (xy[2 * i + 1] + noises[c] * test_uniform(&rng, -1, 1));
-                    }
-                    const fit_map m = all_free_unscaled(FIT_SMOOTH);
                     fit_objective o;
-                    ck_assert_int_eq(el__fit_objective_init(&o, FIT_ORTHOGONAL, &m, xy, N, cx, cy, sc, NULL), EL_OK);
                     double x[FIT_MAXX], vv[2][FIT_NP];
-                    el__fit_map_inverse(&m, v, x);
-                    memcpy(vv[0], v, sizeof vv[0]);
+                    noisy_smooth_objective(v, N, noises[c], cx, cy, sc, &rng, s, xy, &o, x, vv);
                     const double *V[2] = {NULL, NULL};
                     const size_t nv[2] = {N, 0};
-                    for (size_t i = 0; i < N; i++) o.s[i] = s[i];
                     ck_assert_int_eq(el__fit_feet_distances(&o, x, d0, f0, NULL), EL_OK);
                     memcpy(local, f0, sizeof(double) * N);
                     ck_assert_int_eq(el__fit_nearest_everywhere(&o, vv, V, nv, d0, f0, NULL), EL_OK);
@@ -432,24 +408,11 @@ START_TEST(test_proven_feet_are_nearest)
                         const size_t N = ns[e];
                         const double sc = scales[b], cx = -sc, cy = 5.0 * sc, q = test_uniform(&rng, -2.0, 2.0);
                         const double v[FIT_NP] = {0.1, 0.2, -0.4, 1.0, ks[a], q, lens[l]};
-                        el_smooth_params p;
-                        ck_assert_int_eq(el__fit_to_smooth(v, &p), EL_OK);
-                        for (size_t i = 0; i < N; i++) s[i] = v[6] * (double)i / (double)(N - 1);
-                        ck_assert_int_eq(el_smooth_eval(&p, N, s, xy, NULL, NULL), EL_OK);
-                        const double noise = noises[c] * fmin(1.0, v[6]);
-                        for (size_t i = 0; i < N; i++) {
-                            xy[2 * i] = cx + sc * (xy[2 * i] + noise * test_uniform(&rng, -1, 1));
-                            xy[2 * i + 1] = cy + sc * (xy[2 * i + 1] + noise * test_uniform(&rng, -1, 1));
-                        }
-                        const fit_map m = all_free_unscaled(FIT_SMOOTH);
                         fit_objective o;
-                        ck_assert_int_eq(el__fit_objective_init(&o, FIT_ORTHOGONAL, &m, xy, N, cx, cy, sc, NULL), EL_OK);
                         double x[FIT_MAXX], vv[2][FIT_NP];
-                        el__fit_map_inverse(&m, v, x);
-                        memcpy(vv[0], v, sizeof vv[0]);
+                        noisy_smooth_objective(v, N, noises[c] * fmin(1.0, v[6]), cx, cy, sc, &rng, s, xy, &o, x, vv);
                         const double *V[2] = {NULL, NULL};
                         const size_t nv[2] = {N, 0};
-                        for (size_t i = 0; i < N; i++) o.s[i] = s[i];
                         ck_assert_int_eq(el__fit_feet_distances(&o, x, d0, f0, NULL), EL_OK);
                         memcpy(dF, d0, sizeof(double) * N);
                         memcpy(fF, f0, sizeof(double) * N);
