@@ -776,7 +776,7 @@ int el_fit_smooth(const double *xy, size_t n, const el_fit_options *opt,
 }
 
 int el__fit_start(int model, const double *xy, size_t n, const el_fit_options *opt, double *v, int *mode,
-              int *iters, double *foot)
+                  int *iters, double *foot)
 {
     fit_out fo;
     memset(&fo, 0, sizeof fo);

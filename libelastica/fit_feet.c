@@ -209,7 +209,7 @@ int el__fit_feet_start(fit_objective *o, const double *x)
 }
 
 int el__fit_feet_project_list(const fit_objective *o, double v[2][FIT_NP], const size_t *pt, size_t m, double *sig,
-                          double *dist)
+                              double *dist)
 {
     double lo, hi;
     el__fit_feet_range(o, v, 0, &lo, &hi);

@@ -62,7 +62,7 @@ typedef struct fit_walk {
 } fit_walk;
 void el__fit_walk_start(const double *v, fit_walk *w);
 int el__fit_discrete_rows(const double *v, fit_walk *w, size_t m, double *xy, double *jac,
-                      double *tmp /* 2 (m+1) (7+1) */);
+                          double *tmp /* 2 (m+1) (7+1) */);
 
 /* State of a curve at arc length s (smooth; s = 0 or L) or at a vertex end
  * (discrete, at_end = 0: vertex 0, 1: vertex n-1 of n): point, tangent angle, curvature
@@ -73,7 +73,7 @@ typedef struct fit_end {
     double dxy[2][FIT_NP], dtheta[FIT_NP], dkappa[FIT_NP];
 } fit_end;
 int el__fit_end_state(int model, const double *v, size_t n, int at_end, fit_end *e,
-                  double *tmp /* discrete end: fit_walk block buffers, FIT_WORK doubles */);
+                      double *tmp /* discrete end: fit_walk block buffers, FIT_WORK doubles */);
 
 /* The map from the optimiser's variables x to the curves' internal parameters. */
 typedef struct fit_map {
@@ -163,7 +163,7 @@ typedef struct fit_value {
 } fit_value;
 
 int el__fit_objective_init(fit_objective *o, int kind, const fit_map *map, const double *xy, size_t n,
-                       double cx, double cy, double sc, const double *t);
+                           double cx, double cy, double sc, const double *t);
 /* The smooth feet are variables of the objective (orthogonal, keyline); a paired smooth
  * objective keeps the arrays for the distances only. */
 static inline int fit_has_feet(const fit_objective *o) { return o->s && o->kind != FIT_PAIRED; }
@@ -199,7 +199,7 @@ int el__fit_feet_start(fit_objective *o, const double *x);
 /* Smooth, one curve: the m feet sig[k] of the points pt[k] by Newton's method from
  * sig[k] to the nearest points in [0, L], with their signed distances dist[k]. */
 int el__fit_feet_project_list(const fit_objective *o, double v[2][FIT_NP], const size_t *pt, size_t m, double *sig,
-                          double *dist);
+                              double *dist);
 /* Signed distances (left of the curve positive), feet (arc length; for the keyline from
  * the joint) and sides (keyline; may be NULL) of every point at x, normalised units:
  * the feet projected from o->s (which keeps the objective's feet). */
@@ -207,31 +207,31 @@ int el__fit_feet_distances(fit_objective *o, const double *x, double *dist, doub
 /* The same for the polygon of nv vertices V (normalised) of one discrete curve of
  * segment h, vertex j <-> point first + step j. */
 void el__fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, double h,
-                           size_t first, long step, double *dist, double *foot);
+                               size_t first, long step, double *dist, double *foot);
 
 /* The distances above, corrected where the curve comes nearer elsewhere (a loop
  * passing close to itself): dist, foot, side (may be NULL) in and out; for the discrete
  * model V[c] are the vertices (nv[c]) of curve c. The signs are each curve's own. */
 int el__fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const double *V[2],
-                           const size_t nv[2], double *dist, double *foot, int *side);
+                               const size_t nv[2], double *dist, double *foot, int *side);
 
 /* fit_refit.c: the distances and feet (normalised) of every point to the kept curve x
  * (v its parameters), near each point's own place, then wherever the curve comes nearer;
  * projected (smooth): d, fs hold the first already (el__fit_feet_distances at x); tmp:
  * FIT_WORK doubles. */
 int el__fit_curve_distances(fit_objective *ob, const double *x, double v[2][FIT_NP], int projected, double *d,
-                        double *fs, double *tmp);
+                            double *fs, double *tmp);
 /* fit_refit.c: the smooth distances d and feet fs of the points at x (v its parameters,
  * one curve), the feet projected from o->s, then those found nearer on another pass of
  * the curve from its samples (*moved of them whose foot in o->s lies on [0, L]). */
 int el__fit_feet_elsewhere(fit_objective *o, const double *x, double v[2][FIT_NP], double *d, double *fs,
-                       size_t *moved);
+                           size_t *moved);
 /* fit_refit.c, one smooth curve v: unproven[i] = 1 for the inner points whose feet fs
  * (distances d, Newton's) the proof of el__fit_feet_elsewhere does not show the nearest points
  * (their count *nopen; 0 at the ends), and mark[j] = 1 for the FIT_PIECES pieces of
  * length L / FIT_PIECES that can hold a point nearer to one of them. */
 int el__fit_feet_unproven(const fit_objective *o, double v[2][FIT_NP], const double *d, const double *fs,
-                      unsigned char *unproven, size_t *nopen, unsigned char mark[FIT_PIECES]);
+                          unsigned char *unproven, size_t *nopen, unsigned char mark[FIT_PIECES]);
 
 /* Normalisation shared with guess.c: centroid and rms radius of the points;
  * EL_ESINGULAR (all equal), EL_EDOM (a spread below ~1e-292 or beyond double's range). */
@@ -301,18 +301,18 @@ typedef struct fit_ipopt_out {
  * is EL_EMAXITER / EL_ENOCONV with its parameters). v: the parameters in input units
  * (the model's Jacobian order); *iters += the iterations; foot: as el_fit_smooth's. */
 int el__fit_start(int model, const double *xy, size_t n, const el_fit_options *opt, double *v, int *mode,
-              int *iters, double *foot);
+                  int *iters, double *foot);
 
 /* Ipopt from x (in place; the best point seen on return) with bounds xl, xu (+-HUGE_VAL:
  * none) and constraints con (NULL: none). */
 int el__fit_ipopt(fit_objective *o, const double *xl, const double *xu, const fit_constraints *con,
-              const el_fit_options *opt, double *x, fit_ipopt_out *out, double *tmp);
+                  const el_fit_options *opt, double *x, fit_ipopt_out *out, double *tmp);
 /* Constraint values c (rows in the order of the mask bits; the start point is held
  * parameters, the length and k ranges bounds, so neither has rows), their kinds which[]
  * and, when J != NULL, their derivative in x (rows x nx); returns the row count, -1
  * when the curve cannot be evaluated. tmp: FIT_WORK doubles. */
 int el__fit_constraint_rows(const fit_objective *o, const fit_constraints *con, const double *x,
-                        double *c, double *J, int *which, double *tmp);
+                            double *c, double *J, int *which, double *tmp);
 
 /* ---- the end constraints (fit_constraints.c) */
 
@@ -322,14 +322,14 @@ static inline int fit_k_slot(int model) { return model == FIT_DISCRETE ? 6 : 4; 
 /* The options' constraints in normalised units (centre cx, cy, scale sc) into con, and
  * the bounds on the length and k they add to lo, hi. */
 void el__fit_setup_constraints(const el_fit_options *o, int model, size_t n, double cx, double cy,
-                           double sc, fit_constraints *con, double *lo, double *hi);
+                               double sc, fit_constraints *con, double *lo, double *hi);
 /* The constraint bit the normalised parameters v violate most (0: none). */
 int el__fit_violated(const fit_objective *ob, const fit_constraints *con, const double *v,
-                 const double *lo, const double *hi, double *tmp);
+                     const double *lo, const double *hi, double *tmp);
 /* A start for a fit with a start tangent or curvature (bits) by continuation in the
  * start-state chart; x: out's variables. Returns the iterations spent. */
 int el__fit_held_start(fit_objective *ob, const fit_map *out, const fit_map *free_map, int bits,
-                   const fit_constraints *con, int max_iter, const double *p0, double *x, double *tmp);
+                       const fit_constraints *con, int max_iter, const double *p0, double *x, double *tmp);
 /* How many of one end's constraints a fit would hold exactly at its start (weighted). */
 int el__fit_held_score(const el_fit_options *o, int model, int at_end);
 /* p (input units, n points) replaced by the same curve run backwards, canonical. */

@@ -96,7 +96,7 @@ static int ensure(ipctx *c, const double *x)
 
 /* Constraint rows at x: values (and d/dx when J). */
 int el__fit_constraint_rows(const fit_objective *o, const fit_constraints *con, const double *x,
-                        double *c, double *J, int *which, double *tmp)
+                            double *c, double *J, int *which, double *tmp)
 {
     const int nx = o->map.nx;
     double v[2][FIT_NP], M[FIT_NP * FIT_MAXX];
@@ -348,7 +348,7 @@ static int lbfgs_options(IpoptProblem pr, int free)
 }
 
 int el__fit_ipopt(fit_objective *o, const double *xl, const double *xu, const fit_constraints *con,
-              const el_fit_options *opt, double *x, fit_ipopt_out *out, double *tmp)
+                  const el_fit_options *opt, double *x, fit_ipopt_out *out, double *tmp)
 {
     const int nx = o->map.nx;
     ipctx c;

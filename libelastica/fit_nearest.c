@@ -143,7 +143,7 @@ static double longest_segment(const double *V, size_t nv)
  * point; elsewhere that search goes on.
  */
 void el__fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, double h,
-                           size_t first, long step, double *dist, double *foot)
+                               size_t first, long step, double *dist, double *foot)
 {
     const long last = (long)nv - 2;
     /* the polygon's largest curvature, sin(turning) / h at its vertices: a point with
@@ -647,7 +647,7 @@ static int polygon_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP
 }
 
 int el__fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const double *V[2],
-                           const size_t nv[2], double *dist, double *foot, int *side)
+                               const size_t nv[2], double *dist, double *foot, int *side)
 {
     const int nc = o->map.ncurves;
     const size_t n = o->n;

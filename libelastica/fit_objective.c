@@ -47,7 +47,7 @@ enum {
 };
 
 int el__fit_objective_init(fit_objective *o, int kind, const fit_map *map, const double *xy, size_t n,
-                       double cx, double cy, double sc, const double *t)
+                           double cx, double cy, double sc, const double *t)
 {
     memset(o, 0, sizeof *o);
     o->kind = kind; o->map = *map; o->n = n; o->xy = xy;

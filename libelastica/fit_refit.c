@@ -15,7 +15,7 @@ enum { CANDS = 8,        /* el__fit_feet_elsewhere's candidates per point */
  * own place, then wherever the curve comes nearer. projected (smooth): d and fs hold the
  * first already (el__fit_feet_distances at x, as el__fit_feet_elsewhere leaves them). */
 int el__fit_curve_distances(fit_objective *ob, const double *x, double v[2][FIT_NP], int projected, double *d,
-                        double *fs, double *tmp)
+                            double *fs, double *tmp)
 {
     const size_t n = ob->n;
     const size_t nv[2] = {n, 0};
@@ -128,7 +128,7 @@ static int proven(const windows *w, double d, double s0)
 }
 
 int el__fit_feet_unproven(const fit_objective *o, double v[2][FIT_NP], const double *d, const double *fs,
-                      unsigned char *unproven, size_t *nopen, unsigned char mark[FIT_PIECES])
+                          unsigned char *unproven, size_t *nopen, unsigned char mark[FIT_PIECES])
 {
     const size_t n = o->n;
     double D = 0.0;
@@ -180,7 +180,7 @@ int el__fit_feet_unproven(const fit_objective *o, double v[2][FIT_NP], const dou
  * found: the search everywhere (el__fit_nearest_everywhere, the report's) decides at the end.
  */
 int el__fit_feet_elsewhere(fit_objective *o, const double *x, double v[2][FIT_NP], double *d, double *fs,
-                       size_t *moved)
+                           size_t *moved)
 {
     const size_t n = o->n;
     *moved = 0;
