@@ -609,14 +609,18 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
             loose = moved != 0;
         }
     }
-    if (!ok) status = EL_EDOM;   /* its distances are beyond double precision: not a fit */
     double s2 = 0.0, emax = 0.0;
-    for (size_t i = 0; i < n; i++) {
-        if (!ok) { d[i] = HUGE_VAL; fs[i] = 0.0; continue; }
+    for (size_t i = 0; ok && i < n; i++) {
         s2 += d[i] * d[i];
         if (fabs(d[i]) > emax) emax = fabs(d[i]);     /* fmax, without a libm call (d is finite) */
         d[i] *= sc;
         fs[i] *= sc;
+    }
+    /* in the input's units too (fuzz: feet of 1e306 times the scale of 1e2 overflowed) */
+    if (ok) ok = isfinite(sc * sqrt(s2 / (double)n)) && isfinite(sc * emax) && !el__all_finite(fs, n);
+    if (!ok) {
+        status = EL_EDOM;        /* its distances are beyond double precision: not a fit */
+        for (size_t i = 0; i < n; i++) { d[i] = HUGE_VAL; fs[i] = 0.0; }
     }
     res->rms = ok ? sc * sqrt(s2 / (double)n) : HUGE_VAL;
     res->max_error = ok ? sc * emax : HUGE_VAL;

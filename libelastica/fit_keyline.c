@@ -426,8 +426,11 @@ static int keyline_run(int model, const double *xy, size_t n, size_t split, cons
             if (model == FIT_DISCRETE && fixed_h > 0.0) so->params[2] = o.value[2];
             int valid = !el__all_finite(so->params, FIT_NP) && !el__all_finite(so->initial, FIT_NP);
             valid = valid && so->params[model == FIT_DISCRETE ? 2 : 3] >= DBL_MIN;
+            /* its distances in the input's units, as fit.c's */
+            valid = valid && isfinite(so->rms) && isfinite(so->max_error);
             if (!valid) out->status = EL_EDOM;
         }
+        if (el__all_finite(d, n) || el__all_finite(fs, n)) out->status = EL_EDOM;
     }
     free(buf);
     free(ibuf);
