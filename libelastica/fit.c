@@ -288,9 +288,11 @@ static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit
     int st = el__fit_ipopt(ob, xl, xu, need_ipopt ? con : NULL, o, x, &io, tmp);
     ob->f_ceiling = HUGE_VAL;
     if (st == EL_EINTERNAL || st == EL_ENOMEM) return st;
-    r->used_ipopt = 1;
-    r->ipopt_status = io.ipopt_status;
-    r->iters += io.iters;
+    if (io.ran) {
+        r->used_ipopt = 1;
+        r->ipopt_status = io.ipopt_status;
+        r->iters += io.iters;
+    }
     /* Ipopt's point when it had to run (constraints, the LM point outside the bounds)
      * or when it improved on an uncertified one */
     if (st == EL_OK && (io.f <= r->f || need_ipopt || !lm_ok || !inside)) {

@@ -292,6 +292,7 @@ typedef struct fit_constraints {
 } fit_constraints;
 
 typedef struct fit_ipopt_out {
+    int ran;             /* Ipopt ran (else the rest is 0, f HUGE_VAL: e.g. constraints not evaluable) */
     int ipopt_status, iters;
     int certified;       /* L-BFGS stopped at a point of the first-order condition (fit_lm.c) */
     double f;

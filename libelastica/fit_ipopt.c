@@ -351,6 +351,8 @@ int el__fit_ipopt(fit_objective *o, const double *xl, const double *xu, const fi
                   const el_fit_options *opt, double *x, fit_ipopt_out *out, double *tmp)
 {
     const int nx = o->map.nx;
+    memset(out, 0, sizeof *out);      /* its callers read it on every return (iterations: 0) */
+    out->f = HUGE_VAL;
     ipctx c;
     memset(&c, 0, sizeof c);
     c.o = o; c.con = con; c.nx = nx; c.tmp = tmp; c.limited_memory = opt->limited_memory;
@@ -403,6 +405,7 @@ int el__fit_ipopt(fit_objective *o, const double *xl, const double *xu, const fi
     if (ok) rs = IpoptSolve(pr, x, NULL, &obj, NULL, NULL, NULL, &c);
     if (pr) FreeIpoptProblem(pr);
     pthread_mutex_unlock(&ipopt_lock);
+    out->ran = ok;
     out->ipopt_status = (int)rs;
     out->iters = c.iters;
     out->certified = c.certified;
