@@ -361,6 +361,19 @@ int el__fit_ipopt(fit_objective *o, const double *xl, const double *xu, const fi
     double cv[FIT_NCON];
     c.m = con ? el__fit_constraint_rows(o, con, x, cv, NULL, NULL, tmp) : 0;
     if (c.m < 0) return EL_EDOM;
+    /* Every variable fixed by its bounds: Debian's Ipopt 3.14 dereferences a null iterate
+     * in IpoptApplication::call_optimize then (fuzz: a segfault in GetIterateFromComp,
+     * el_fit_discrete with all seven bounds lo = hi). That point is the only one: its
+     * objective, Ipopt not run; with constraints to meet, no point (EL_EDOM). */
+    int nfree = 0;
+    for (int j = 0; j < nx; j++) nfree += xl[j] < xu[j];
+    if (nfree == 0) {
+        for (int j = 0; j < nx; j++) x[j] = xl[j];
+        fit_value at;
+        if (c.m > 0 || el__fit_objective_eval(o, x, 0, &at) != EL_OK) return EL_EDOM;
+        out->f = at.f;
+        return EL_OK;
+    }
     c.free = opt->limited_memory && c.m == 0;
     for (int j = 0; j < nx; j++) c.free &= !isfinite(xl[j]) && !isfinite(xu[j]);
     if (fit_has_feet(o) && !(c.anchor = malloc(sizeof(double) * o->n))) return EL_ENOMEM;
