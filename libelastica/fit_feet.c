@@ -15,8 +15,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-enum { NEWTON_MAX = 40 };
-
 /* gamma, d gamma / d sigma and the curvature term at m feet sig (one block). */
 typedef struct feet_block {
     double xy[2 * FIT_BLOCK], T[2 * FIT_BLOCK], kappa[FIT_BLOCK], dirs[FIT_BLOCK];
@@ -54,12 +52,6 @@ static int feet_eval(const fit_objective *o, double v[2][FIT_NP], const double *
     return EL_OK;
 }
 
-static void point(const fit_objective *o, size_t i, double *P)
-{
-    P[0] = (o->xy[2 * i] - o->cx) / o->sc;
-    P[1] = (o->xy[2 * i + 1] - o->cy) / o->sc;
-}
-
 /*
  * The feet sig[k] of the entries k in act[0 .. na-1] (entry k: the foot of point pt[k],
  * or of point k when pt is NULL) to the nearest points in [lo, hi], and when dist !=
@@ -76,15 +68,15 @@ static int project_entries(const fit_objective *o, double v[2][FIT_NP], size_t *
     double cur[FIT_BLOCK];
     const double tol = 1e-7 * (hi - lo + 1e-300);
     feet_block b;
-    for (int it = 0; it < NEWTON_MAX && na > 0; it++) {
+    for (int it = 0; it < FIT_NEWTON_MAX && na > 0; it++) {
         for (size_t i = 0; i < na; i++) cur[i] = sig[act[i]];
         int st = feet_eval(o, v, cur, na, &b);
         if (st) return st;
-        const int last = it + 1 == NEWTON_MAX;
+        const int last = it + 1 == FIT_NEWTON_MAX;
         size_t keep = 0;
         for (size_t i = 0; i < na; i++) {
             double P[2];
-            point(o, pt ? pt[act[i]] : act[i], P);
+            fit_point(o, pt ? pt[act[i]] : act[i], P);
             const double dx = b.xy[2 * i] - P[0], dy = b.xy[2 * i + 1] - P[1];
             const double Tx = b.T[2 * i], Ty = b.T[2 * i + 1];
             const double t = b.dirs[i] * (Tx * dx + Ty * dy);     /* d/dsigma of |gamma - P|^2 / 2 */

@@ -167,6 +167,14 @@ int el__fit_objective_init(fit_objective *o, int kind, const fit_map *map, const
 /* The smooth feet are variables of the objective (orthogonal, keyline); a paired smooth
  * objective keeps the arrays for the distances only. */
 static inline int fit_has_feet(const fit_objective *o) { return o->s && o->kind != FIT_PAIRED; }
+/* Point i in normalised units (the fit's centre cx, cy and scale sc). */
+static inline void fit_point(const fit_objective *o, size_t i, double *P)
+{
+    P[0] = (o->xy[2 * i] - o->cx) / o->sc;
+    P[1] = (o->xy[2 * i + 1] - o->cy) / o->sc;
+}
+/* Newton's iterations for a foot on the smooth curve (fit_feet.c, fit_nearest.c). */
+enum { FIT_NEWTON_MAX = 40 };
 void el__fit_objective_free(fit_objective *o);
 int el__fit_objective_eval(fit_objective *o, const double *x, int want_normal, fit_value *out);
 /* After an accepted step of a lazy-foot evaluation (want_normal at the accepted x): the

@@ -13,15 +13,6 @@
 #include <emmintrin.h>
 #endif
 
-enum { NEWTON_MAX = 40 };       /* a smooth piece's Newton iterations (as fit_feet.c's) */
-
-/* Point i, normalised (as fit_feet.c's, fit_objective.c's). */
-static void point(const fit_objective *o, size_t i, double *P)
-{
-    P[0] = (o->xy[2 * i] - o->cx) / o->sc;
-    P[1] = (o->xy[2 * i + 1] - o->cy) / o->sc;
-}
-
 /* Squared distance of P to segment A-B, and the fraction t of its nearest point.
  * (The clamp to [0, 1] by comparisons, NaN to 0 as fmin(fmax(t, 0), 1) does: the
  * report's hot loop, where libm's fmin/fmax are calls.) */
@@ -160,7 +151,7 @@ void el__fit_polygon_distances(const fit_objective *o, const double *V, size_t n
     for (size_t j = 0; j < nv; j++) {
         const size_t g = (size_t)((long)first + step * (long)j);
         double P[2];
-        point(o, g, P);
+        fit_point(o, g, P);
         long best = -1;
         double bd = HUGE_VAL, bt = 0.0;
         /* start where the point projects along the polygon's direction at its vertex:
@@ -291,6 +282,9 @@ static int curve_points(const double *v, double len, int m, double *xy)
     return st ? st : el_smooth_eval(&p, (size_t)m + 1, s, xy, NULL, NULL);
 }
 
+/* The bound of |kappa| on the smooth curve v: 2 |k| sqrt(mu) (seed 000 (4.3); v[3] = +-sqrt(mu)). */
+static double kappa_bound(const double *v) { return 2.0 * fabs(v[4] * v[3]); }
+
 /* Newton's method for the nearest point of a smooth curve (parameters v) to P from arc
  * length u: signed distance (+ left of the curve's own direction) and arc length. */
 static int newton_nearest(const double *v, double u, double lo, double hi, const double *P, double *d, double *s)
@@ -299,7 +293,7 @@ static int newton_nearest(const double *v, double u, double lo, double hi, const
     int st = el__fit_to_smooth(v, &sp);
     if (st) return st;
     double xy[2], th = 0.0, ka = 0.0;
-    for (int it = 0; it < NEWTON_MAX; it++) {
+    for (int it = 0; it < FIT_NEWTON_MAX; it++) {
         if ((st = el_smooth_eval(&sp, 1, &u, xy, &th, &ka))) return st;
         const double dx = xy[0] - P[0], dy = xy[1] - P[1], c = cos(th), sn = sin(th);
         const double t = c * dx + sn * dy, e = c * dy - sn * dx;
@@ -345,7 +339,7 @@ typedef struct dense_samples {
 
 static int dense_init(const double *v, int curve, dense_samples *ds)
 {
-    const double len = v[6], kmax = 2.0 * fabs(v[4] * v[3]);
+    const double len = v[6], kmax = kappa_bound(v);
     const double want = ceil(len * kmax / 0.1) + 2.0;
     ds->curve = curve;
     ds->len = len;
@@ -459,7 +453,7 @@ static int consider(double v[2][FIT_NP], const piece *p, const double *P, const 
 {
     /* a piece that turns by more than 1/2, or a point too far for its distance to be
      * convex along the curve: on the samples */
-    const double kmax = 2.0 * fabs(v[p->curve][4] * v[p->curve][3]);
+    const double kmax = kappa_bound(v[p->curve]);
     dense_samples *ds = dense[p->curve].xy && (kmax * 2.0 * p->r > 0.5 || kmax * fabs(dist[i]) > DENSE_KD)
                             ? &dense[p->curve] : NULL;
     /* pieces already searched: those at the foot (the distance is convex there) */
@@ -613,7 +607,7 @@ static int polygon_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP
         const double d0 = fabs(dist[i]);
         if (!(d0 > 0.0)) continue;
         double P[2];
-        point(o, i, P);
+        fit_point(o, i, P);
         polygon_query q = {P, side ? side[i] : 0, 0, 0, lmax, reach_of(d0, lmax), HUGE_VAL, 0.0, -1, 0};
         /* the stretch: segments j with j h >= foot - 2 sqrt 2 d and (j + 1) h <= foot + 2 sqrt 2 d
          * (to rounding: el__fit_polygon_distances searched a segment more each way), held to
@@ -684,9 +678,8 @@ int el__fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], cons
             rmax = fmax(rmax, p->r);
         }
         count[c] = np - first[c];
-        /* |kappa| <= kappa_max = 2 |k| sqrt(mu) (seed 000 (4.3); v[3] = +-sqrt(mu)): points too far for the
-         * pieces' argument, or pieces that turn too much (dense_nearest) */
-        kmax[c] = 2.0 * fabs(v[c][4] * v[c][3]);
+        /* points too far for the pieces' argument, or pieces that turn too much (dense_nearest) */
+        kmax[c] = kappa_bound(v[c]);
         if (kmax[c] * dmax > DENSE_KD || kmax[c] * len[c] / m > 0.5) st = dense_init(v[c], c, &dense[c]);
     }
     if (!st && np > 0) {
@@ -740,7 +733,7 @@ int el__fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], cons
         for (int j = 0; j < np; j++) stamp[j] = 0;
         for (size_t i = 0; i < n && !st; i++) {
             double P[2];
-            point(o, i, P);
+            fit_point(o, i, P);
             const double d0 = fabs(dist[i]);
             if (!(d0 > 0.0)) continue;
             const int c = side ? side[i] : 0;

@@ -77,12 +77,6 @@ void el__fit_objective_free(fit_objective *o)
     o->bucket = o->order = NULL;
 }
 
-static void point(const fit_objective *o, size_t i, double *P)
-{
-    P[0] = (o->xy[2 * i] - o->cx) / o->sc;
-    P[1] = (o->xy[2 * i + 1] - o->cy) / o->sc;
-}
-
 /* Sums of one curve: A = sum row row^T (lower triangle), b = sum row r. */
 typedef struct sums {
     double A[FIT_NP][FIT_NP], b[FIT_NP];
@@ -193,7 +187,7 @@ static double paired_rows(const fit_objective *o, const double *xy, const double
     const int stride = 2 * FIT_BLOCK;
     for (size_t i = 0; i < m; i++) {
         double P[2];
-        point(o, (size_t)((long)first + step * (long)i), P);
+        fit_point(o, (size_t)((long)first + step * (long)i), P);
         for (int c = 0; c < 2; c++) {
             const size_t r = 2 * i + c;
             const double d = xy[r] - P[c];
@@ -226,7 +220,7 @@ static int discrete_paired(fit_objective *o, const double *v, size_t nv, size_t 
         } else {
             for (size_t i = k0; i < m; i++) {
                 double P[2];
-                point(o, (size_t)((long)first + step * (long)(done + i)), P);
+                fit_point(o, (size_t)((long)first + step * (long)(done + i)), P);
                 const double dx = xy[2 * i] - P[0], dy = xy[2 * i + 1] - P[1];
                 *f += dx * dx + dy * dy;
             }
@@ -263,8 +257,8 @@ static int discrete_orthogonal(fit_objective *o, const double *v, int want, sums
     const double h = v[2];
     el__fit_polygon_distances(o, V, n, h, 0, 1, dist, foot);
     double P0[2], P1[2];
-    point(o, 0, P0);
-    point(o, n - 1, P1);
+    fit_point(o, 0, P0);
+    fit_point(o, n - 1, P1);
     const double e[4] = {V[0] - P0[0], V[1] - P0[1], V[2 * n - 2] - P1[0], V[2 * n - 1] - P1[1]};
     for (int c = 0; c < 4; c++) *f += e[c] * e[c];
     for (size_t i = 1; i + 1 < n; i++) *f += dist[i] * dist[i];
@@ -305,7 +299,7 @@ static int discrete_orthogonal(fit_objective *o, const double *v, int want, sums
             for (; j + 1 < n && next < cnt[j]; next++) {
                 const size_t i = ord[next];
                 double P[2];
-                point(o, i, P);
+                fit_point(o, i, P);
                 const double t = fit_clamp(foot[i] / h - (double)j, 0.0, 1.0);
                 const double gx = (1.0 - t) * V[2 * j] + t * V[2 * j + 2], gy = (1.0 - t) * V[2 * j + 1] + t * V[2 * j + 3];
                 double ux = P[0] - gx, uy = P[1] - gy;
@@ -343,7 +337,7 @@ static int smooth_paired(fit_objective *o, const double *v, int want, sums *S, d
         } else {
             for (size_t i = 0; i < m; i++) {
                 double P[2];
-                point(o, a + i, P);
+                fit_point(o, a + i, P);
                 const double dx = xy[2 * i] - P[0], dy = xy[2 * i + 1] - P[1];
                 *f += dx * dx + dy * dy;
             }
@@ -399,7 +393,7 @@ static int ortho_rows(fit_objective *o, const ortho_block *b, int want, double *
     for (size_t i = 0; i < b->m; i++) {
         const double *jx = jac + 2 * i * FIT_NP, *jy = jx + FIT_NP;
         double P[2];
-        point(o, b->idx[i], P);
+        fit_point(o, b->idx[i], P);
         const double gx = xy[2 * i], gy = xy[2 * i + 1], dx = gx - P[0], dy = gy - P[1];
         s_new[i] = b->s[i];
         if (b->rest) b->rest[b->idx[i]] = NAN;
