@@ -214,6 +214,8 @@ int el__fit_feet_project_list(const fit_objective *o, double v[2][FIT_NP], const
 int el__fit_feet_distances(fit_objective *o, const double *x, double *dist, double *foot, int *side);
 /* The same for the polygon of nv vertices V (normalised) of one discrete curve of
  * segment h, vertex j <-> point first + step j. */
+/* The direction of (x, y) in (-pi, pi] to within 2e-6 (fit_nearest.c). */
+double el__fit_direction(double x, double y);
 void el__fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, double h,
                                size_t first, long step, double *dist, double *foot);
 

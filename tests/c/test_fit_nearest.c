@@ -35,13 +35,16 @@ static int brute_nearest(const double *const V[2], const size_t nv[2], int nc, d
     return found;
 }
 
-enum { ARC, LOOPS, WALK, ZIGZAG, ELASTICA, SHAPES };
-static const char *const shape_name[SHAPES] = {"arc", "loops", "walk", "zigzag", "elastica"};
+enum { ARC, LOOPS, WALK, ZIGZAG, HAIRPIN, ELASTICA, SHAPES };
+static const char *const shape_name[SHAPES] = {"arc", "loops", "walk", "zigzag", "hairpin", "elastica"};
 
 /* An equilateral polygon of nv vertices, segment h, scaled by sc: its turning per vertex
  * by shape (an arc of 80 degrees in all; 2.5 loops; a random walk of turns up to 0.5;
- * alternate turns of +-2.5 with noise), or a discrete elastica (seed 000 (4.7)) of
- * modulus k across 1, elliptic argument 2 .. 12 in all. */
+ * alternate turns of +-2.5 with noise; a hairpin: two straight arms about 2 h apart
+ * joined by a turn of pi - 0.01 over 3 vertices, whose turning stays below pi: a search
+ * that took directions within pi, not pi/2, as proof that a part cannot come back near
+ * misses the other arm), or a discrete elastica (seed 000 (4.7)) of modulus k across 1,
+ * elliptic argument 2 .. 12 in all. */
 static void polygon(int shape, size_t nv, double h, double sc, unsigned long long *rng, double *V)
 {
     double th = test_uniform(rng, -M_PI, M_PI), x = 0.0, y = 0.0;
@@ -60,6 +63,7 @@ static void polygon(int shape, size_t nv, double h, double sc, unsigned long lon
         case ARC: th += 1.4 / (double)nv; break;
         case LOOPS: th += 5.0 * M_PI / (double)nv * (1.0 + 0.3 * test_uniform(rng, -1, 1)); break;
         case WALK: th += test_uniform(rng, -0.5, 0.5); break;
+        case HAIRPIN: th += j + 2 >= nv / 2 && j + 2 < nv / 2 + 3 ? (M_PI - 0.01) / 3.0 : 0.0; break;
         default: th += (j % 2 ? 2.5 : -2.5) + test_uniform(rng, -0.3, 0.3); break;
         }
     }
@@ -217,6 +221,25 @@ START_TEST(test_smooth_report_against_dense_samples)
 }
 END_TEST
 
+/* The windows' directions (fit_nearest.c): within 2e-6 of atan2 all round the circle, at
+ * every scale, on the axes and the diagonals (modulo 2 pi: the cut at -pi). */
+START_TEST(test_direction_within_its_bound)
+{
+    unsigned long long rng = 3;
+    double worst = 0.0;
+    for (int i = 0; i < 400000; i++) {
+        const double th = i < 16 ? i * M_PI / 8.0 : test_uniform(&rng, -M_PI, M_PI);
+        const double r = pow(10.0, test_uniform(&rng, -300.0, 300.0));
+        const double x = r * cos(th), y = r * sin(th);
+        const double e = fabs(remainder(el__fit_direction(x, y) - atan2(y, x), 2.0 * M_PI));
+        if (e > worst) worst = e;
+    }
+    ck_assert_msg(worst <= 2e-6, "direction off by %g", worst);
+    ck_assert_double_eq(el__fit_direction(1.0, 0.0), 0.0);
+    ck_assert_double_eq_tol(el__fit_direction(0.0, -1.0), -0.5 * M_PI, 1e-15);
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("fit_nearest");
@@ -225,6 +248,7 @@ static Suite *suite(void)
     tcase_add_test(tc, test_polygon_report_equals_brute_force);
     tcase_add_test(tc, test_keyline_report_equals_brute_force);
     tcase_add_test(tc, test_smooth_report_against_dense_samples);
+    tcase_add_test(tc, test_direction_within_its_bound);
     suite_add_tcase(s, tc);
     return s;
 }
