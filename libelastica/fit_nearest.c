@@ -128,25 +128,37 @@ static double longest_segment(const double *V, size_t nv)
  * h (segment + t) from vertex 0. A walk from the two segments at the vertex, on while
  * the nearest point of the last segment is its far end, finds a local minimum d; the
  * polygon has kinks, so every segment within arc length 2 sqrt 2 d + h of it is then
- * searched too (one segment each way where d kappa <= 0.1): where the polygon's
+ * searched too, or fewer where the polygon turns little (below): where the polygon's
  * direction varies within pi/2 (el__fit_nearest_everywhere checks) no point farther along it
  * can be nearer than d (|V(s) - V(s')| >= cos(pi/4) |s - s'|), so this is the nearest
  * point; elsewhere that search goes on.
+ *
+ * Fewer segments: along the polygon f(s) = |V(s) - P|^2 / 2 has f'' = 1 on a segment and
+ * f' jumps by (v - P).(T' - T) at a vertex v (unit tangents T before, T' after), by at
+ * most c l with c = |v - P| tmax / lmin (tmax the largest |T' - T|, lmin the shortest
+ * segment l). With c < 1 at every vertex of the stretch (|v - P| <= d + its arc length
+ * from the foot), f' at the segments' starts grows by at least (1 - c) lmin a segment,
+ * from above -lmin at a local minimum's segment: local minima lie within
+ * ceil(1 / (1 - c)) - 1 segments of each other, and f grows from them to the stretch's
+ * ends; that many segments each way hold the stretch's nearest point (one for c <= 1/2).
  */
 void el__fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, double h,
                                size_t first, long step, double *dist, double *foot)
 {
     const long last = (long)nv - 2;
-    /* the polygon's largest curvature, sin(turning) / h at its vertices: a point with
-     * d kappa <= 0.1 has its distance growing away from the walk's foot, so one more
-     * segment each way is enough (as for the smooth curve) */
-    double kmax = 0.0;
-    for (size_t j = 1; j + 1 < nv; j++) {
-        const double ax = V[2 * j] - V[2 * j - 2], ay = V[2 * j + 1] - V[2 * j - 1];
-        const double bx = V[2 * j + 2] - V[2 * j], by = V[2 * j + 3] - V[2 * j + 1];
-        const double kj = fabs(ax * by - ay * bx) / (h * h * h);
-        if (kj > kmax) kmax = kj;        /* fmax(kmax, kj): kmax is never NaN */
+    /* the polygon's largest turning |T' - T| at its vertices over its shortest segment
+     * (the bound of the jumps of f' above; a zero-length or non-finite segment: NaN, so
+     * that every stretch is searched whole) */
+    double tmax = 0.0, lmin = HUGE_VAL, tx = 0.0, ty = 0.0;
+    for (size_t j = 0; j + 1 < nv; j++) {
+        const double ux = V[2 * j + 2] - V[2 * j], uy = V[2 * j + 3] - V[2 * j + 1], l = sqrt(ux * ux + uy * uy);
+        const double nx = ux / l, ny = uy / l, t2 = (nx - tx) * (nx - tx) + (ny - ty) * (ny - ty);
+        if (!(l > 0.0 && l < HUGE_VAL)) { tmax = NAN; break; }
+        if (j > 0 && t2 > tmax) tmax = t2;
+        if (l < lmin) lmin = l;
+        tx = nx; ty = ny;
     }
+    const double turn_per_length = sqrt(tmax) / lmin * (1.0 + 1e-9);
     const double lmax = longest_segment(V, nv);
     for (size_t j = 0; j < nv; j++) {
         const size_t g = (size_t)((long)first + step * (long)j);
@@ -189,7 +201,9 @@ void el__fit_polygon_distances(const fit_objective *o, const double *V, size_t n
             const double d = sqrt(bd);
             /* at most the whole polygon (a far point's d / h can pass the range of long) */
             const double span = ceil(2.0 * 1.4142135623730951 * d / h) + 1.0;
-            const long reach = kmax * d <= 0.1 ? 1 : span <= (double)(last + 1) ? (long)span : last + 1;
+            const double c = turn_per_length * (d + (span + 1.0) * lmax);
+            const double few = c < 1.0 ? ceil(1.0 / (1.0 - c)) - 1.0 : HUGE_VAL, m = few < span ? few : span;
+            const long reach = m >= 1.0 ? (m <= (double)(last + 1) ? (long)m : last + 1) : 1;
             const long lo = centre - reach < 0 ? 0 : centre - reach, hi = centre + reach > last ? last : centre + reach;
             double r = reach_of(d, lmax);
             nearest_segment(V, lo, hi < clo ? hi + 1 : clo, P, lmax, &r, &bd, &best, &bt);

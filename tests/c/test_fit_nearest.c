@@ -35,12 +35,15 @@ static int brute_nearest(const double *const V[2], const size_t nv[2], int nc, d
     return found;
 }
 
-enum { ARC, LOOPS, WALK, ZIGZAG, HAIRPIN, ELASTICA, SHAPES };
-static const char *const shape_name[SHAPES] = {"arc", "loops", "walk", "zigzag", "hairpin", "elastica"};
+enum { ARC, RING, LOOPS, WALK, ZIGZAG, SPIKES, HAIRPIN, ELASTICA, SHAPES };
+static const char *const shape_name[SHAPES] = {"arc", "ring", "loops", "walk", "zigzag", "spikes", "hairpin", "elastica"};
 
 /* An equilateral polygon of nv vertices, segment h, scaled by sc: its turning per vertex
- * by shape (an arc of 80 degrees in all; 2.5 loops; a random walk of turns up to 0.5;
- * alternate turns of +-2.5 with noise; a hairpin: two straight arms about 2 h apart
+ * by shape (an arc of 80 degrees in all; a ring of 0.95 turns, whose points near the
+ * centre have many local minima of distance; 2.5 loops; a random walk of turns up to 0.5;
+ * alternate turns of +-2.5 with noise; spikes, alternate turns of +-(pi - 0.02), whose
+ * sin(turning) / h is small: a search that took it for the polygon's curvature missed
+ * the neighbouring spike; a hairpin: two straight arms about 2 h apart
  * joined by a turn of pi - 0.01 over 3 vertices, whose turning stays below pi: a search
  * that took directions within pi, not pi/2, as proof that a part cannot come back near
  * misses the other arm), or a discrete elastica (seed 000 (4.7)) of modulus k across 1,
@@ -61,8 +64,10 @@ static void polygon(int shape, size_t nv, double h, double sc, unsigned long lon
         x += h * cos(th); y += h * sin(th);
         switch (shape) {
         case ARC: th += 1.4 / (double)nv; break;
+        case RING: th += 0.95 * 2.0 * M_PI / (double)nv; break;
         case LOOPS: th += 5.0 * M_PI / (double)nv * (1.0 + 0.3 * test_uniform(rng, -1, 1)); break;
         case WALK: th += test_uniform(rng, -0.5, 0.5); break;
+        case SPIKES: th += (j % 2 ? 1.0 : -1.0) * (M_PI - 0.02); break;
         case HAIRPIN: th += j + 2 >= nv / 2 && j + 2 < nv / 2 + 3 ? (M_PI - 0.01) / 3.0 : 0.0; break;
         default: th += (j % 2 ? 2.5 : -2.5) + test_uniform(rng, -0.3, 0.3); break;
         }
