@@ -110,21 +110,44 @@ static double dot(const double *a, const double *b, int m)
     return sum;
 }
 
-/* dot(a, b) for a = (1, 0, 1, 0, ...) (parity 0) or (0, 1, 0, 1, ...) (parity 1): the
- * same partial sums in the same order without the products (by 1: exact; by 0: zeros,
- * which change no sum but a zero's sign, and fold adds every dot to a sum that starts
- * at +0, so the sums are the same numbers). */
-static double dot_every_other(const double *b, int m, int parity)
+/* dot(a, b) and dot(a, c) in one pass (a loaded once): the same sums as dot's. */
+static void dot2(const double *a, const double *b, const double *c, int m, double *ab, double *ac)
 {
-    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;     /* slot `parity` of dot's pairs */
+    pair s0 = {0.0, 0.0}, s1 = s0, s2 = s0, s3 = s0, u0 = s0, u1 = s0, u2 = s0, u3 = s0;
     int r = 0;
     for (; r + 8 <= m; r += 8) {
-        s0 += b[r + parity]; s1 += b[r + 2 + parity]; s2 += b[r + 4 + parity]; s3 += b[r + 6 + parity];
+        pair a0, a1, a2, a3, x0, x1, x2, x3;
+        memcpy(&a0, a + r, 16); memcpy(&a1, a + r + 2, 16); memcpy(&a2, a + r + 4, 16); memcpy(&a3, a + r + 6, 16);
+        memcpy(&x0, b + r, 16); memcpy(&x1, b + r + 2, 16); memcpy(&x2, b + r + 4, 16); memcpy(&x3, b + r + 6, 16);
+        s0 += a0 * x0; s1 += a1 * x1; s2 += a2 * x2; s3 += a3 * x3;
+        memcpy(&x0, c + r, 16); memcpy(&x1, c + r + 2, 16); memcpy(&x2, c + r + 4, 16); memcpy(&x3, c + r + 6, 16);
+        u0 += a0 * x0; u1 += a1 * x1; u2 += a2 * x2; u3 += a3 * x3;
     }
-    double sum = (s0 + s1) + (s2 + s3);
-    for (; r < m; r++)
-        if ((r & 1) == parity) sum += b[r];
-    return sum;
+    const pair t = (s0 + s1) + (s2 + s3), v = (u0 + u1) + (u2 + u3);
+    double sb = t[0] + t[1], sc = v[0] + v[1];
+    for (; r < m; r++) { sb += a[r] * b[r]; sc += a[r] * c[r]; }
+    *ab = sb;
+    *ac = sc;
+}
+
+/* dot(a, b) for a = (1, 0, 1, 0, ...) (*even) and a = (0, 1, 0, 1, ...) (*odd) in one
+ * pass: the same partial sums in the same order without the products (by 1: exact; by
+ * 0: zeros, which change no sum but a zero's sign, and fold adds every dot to a sum
+ * that starts at +0, so the sums are the same numbers), the two lanes of b's pairs. */
+static void dot_every_other2(const double *b, int m, double *even, double *odd)
+{
+    pair s0 = {0.0, 0.0}, s1 = s0, s2 = s0, s3 = s0;
+    int r = 0;
+    for (; r + 8 <= m; r += 8) {
+        pair b0, b1, b2, b3;
+        memcpy(&b0, b + r, 16); memcpy(&b1, b + r + 2, 16); memcpy(&b2, b + r + 4, 16); memcpy(&b3, b + r + 6, 16);
+        s0 += b0; s1 += b1; s2 += b2; s3 += b3;
+    }
+    const pair t = (s0 + s1) + (s2 + s3);
+    double sum[2] = {t[0], t[1]};
+    for (; r < m; r++) sum[r & 1] += b[r];
+    *even = sum[0];
+    *odd = sum[1];
 }
 #else
 static double dot(const double *a, const double *b, int m)
@@ -139,7 +162,8 @@ static double dot(const double *a, const double *b, int m)
     return (s0 + s1) + (s2 + s3);
 }
 
-/* dot(a, b) for a = (1, 0, 1, 0, ...) (parity 0) or (0, 1, 0, 1, ...) (parity 1), as above */
+/* dot(a, b) for a = (1, 0, 1, 0, ...) (parity 0) or (0, 1, 0, 1, ...) (parity 1), as
+ * dot_every_other2 above */
 static double dot_every_other(const double *b, int m, int parity)
 {
     double s[4] = {0.0, 0.0, 0.0, 0.0};
@@ -149,15 +173,39 @@ static double dot_every_other(const double *b, int m, int parity)
         if ((r & 1) == parity) s[0] += b[r];
     return (s[0] + s[1]) + (s[2] + s[3]);
 }
+
+static void dot2(const double *a, const double *b, const double *c, int m, double *ab, double *ac)
+{
+    *ab = dot(a, b, m);
+    *ac = dot(a, c, m);
+}
+
+static void dot_every_other2(const double *b, int m, double *even, double *odd)
+{
+    *even = dot_every_other(b, m, 0);
+    *odd = dot_every_other(b, m, 1);
+}
 #endif
+
+/* b[a] += ca.res and A[a][b] += ca.cb for b = b0..a, two at a time (dot2). */
+static void fold_column(sums *s, int a, int b0, const double *col, int stride, const double *res, int rows)
+{
+    const double *ca = col + a * stride, *with[FIT_NP + 1];
+    double *out[FIT_NP + 1], e, o;
+    int k = 0;
+    out[k] = &s->b[a]; with[k++] = res;
+    for (int b = b0; b <= a; b++) { out[k] = &s->A[a][b]; with[k++] = col + b * stride; }
+    for (int j = 0; j + 1 < k; j += 2) {
+        dot2(ca, with[j], with[j + 1], rows, &e, &o);
+        *out[j] += e;
+        *out[j + 1] += o;
+    }
+    if (k % 2) *out[k - 1] += dot(ca, with[k - 1], rows);
+}
 
 static void fold(sums *s, const double *col, int stride, const double *res, int rows)
 {
-    for (int a = 0; a < FIT_NP; a++) {
-        const double *ca = col + a * stride;
-        s->b[a] += dot(ca, res, rows);
-        for (int b = 0; b <= a; b++) s->A[a][b] += dot(ca, col + b * stride, rows);
-    }
+    for (int a = 0; a < FIT_NP; a++) fold_column(s, a, 0, col, stride, res, rows);
 }
 
 /* fold for rows (x, y) of points paired with a discrete curve's vertices, whose first
@@ -167,14 +215,18 @@ static void fold(sums *s, const double *col, int stride, const double *res, int 
  * (exact, as dot sums them) and 0 (which adds nothing to a sum that starts at +0). */
 static void fold_paired(sums *s, const double *col, int stride, const double *res, int rows)
 {
+    double e, o;
     s->A[0][0] += (double)((rows + 1) / 2);
     s->A[1][1] += (double)(rows / 2);
-    for (int a = 0; a < 2; a++) s->b[a] += dot_every_other(res, rows, a);
+    dot_every_other2(res, rows, &e, &o);
+    s->b[0] += e;
+    s->b[1] += o;
     for (int a = 2; a < FIT_NP; a++) {
         const double *ca = col + a * stride;
-        s->b[a] += dot(ca, res, rows);
-        for (int b = 0; b <= a; b++)
-            s->A[a][b] += b < 2 ? dot_every_other(ca, rows, b) : dot(ca, col + b * stride, rows);
+        dot_every_other2(ca, rows, &e, &o);
+        s->A[a][0] += e;
+        s->A[a][1] += o;
+        fold_column(s, a, 2, col, stride, res, rows);
     }
 }
 
