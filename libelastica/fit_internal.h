@@ -55,14 +55,15 @@ int el__fit_smooth_rows(const double *v, size_t m, const double *s, double *xy, 
 
 /* The discrete vertices walked in blocks: the walk carries the next vertex and its
  * derivative, so vertex i of a block has the same d gamma_i / d v as one call over
- * the whole curve (tested). */
+ * the whole curve (tested). * jac (when not NULL): rows jac[(2i+c)*7 + j], or with cstride > 0 by column,
+ * jac[j * cstride + 2i + c], columns 2..6 only (the paired fit's fold). */
 typedef struct fit_walk {
     size_t next;                 /* index of the next vertex */
     double xy[2], d[2][FIT_NP];  /* that vertex and its derivative */
 } fit_walk;
 void el__fit_walk_start(const double *v, fit_walk *w);
 int el__fit_discrete_rows(const double *v, fit_walk *w, size_t m, double *xy, double *jac,
-                          double *tmp /* 2 (m+1) (7+1) */);
+                          size_t cstride, double *tmp /* 2 (m+1) (7+1) */);
 
 /* State of a curve at arc length s (smooth; s = 0 or L) or at a vertex end
  * (discrete, at_end = 0: vertex 0, 1: vertex n-1 of n): point, tangent angle, curvature

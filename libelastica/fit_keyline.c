@@ -373,7 +373,7 @@ static int keyline_run(int model, const double *xy, size_t n, size_t split, cons
             el__fit_walk_start(v[c], &w);
             for (size_t a = 0; a < nv[c] && !st; a += FIT_BLOCK) {
                 const size_t m = nv[c] - a < FIT_BLOCK ? nv[c] - a : FIT_BLOCK;
-                st = el__fit_discrete_rows(v[c], &w, m, V[c] + 2 * a, NULL, tmp);
+                st = el__fit_discrete_rows(v[c], &w, m, V[c] + 2 * a, NULL, 0, tmp);
             }
         }
         if (!st) {

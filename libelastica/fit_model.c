@@ -93,7 +93,8 @@ void el__fit_walk_start(const double *v, fit_walk *w)
  * q + a z, k), so d gamma_{a+j} = d gamma_a + dS_j with the z column of S gaining a
  * times its q column. One vertex more is evaluated: the next block's start.
  */
-int el__fit_discrete_rows(const double *v, fit_walk *w, size_t m, double *xy, double *jac, double *tmp)
+int el__fit_discrete_rows(const double *v, fit_walk *w, size_t m, double *xy, double *jac, size_t cstride,
+                          double *tmp)
 {
     el_discrete_params p;
     double dq_dk;
@@ -111,24 +112,29 @@ int el__fit_discrete_rows(const double *v, fit_walk *w, size_t m, double *xy, do
         /* the block's rows moved to the whole curve's, written straight to jac (vertex m,
          * the next block's start, to w->d after the others have used the old w->d) */
         double next[2][FIT_NP];
+        const int negative = v[6] < 0.0;
         for (size_t i = 0; i <= m; i++) {
             for (int c = 0; c < 2; c++) {
-                const double *r = tj + (2 * i + c) * FIT_NP;
-                double *out = i < m ? jac + (2 * i + c) * FIT_NP : next[c];
-                const double *d = w->d[c];
-                out[0] = r[0]; out[1] = r[1];
-                out[2] = r[2] + d[2]; out[3] = r[3] + d[3];
-                out[4] = (r[4] + a * r[5]) + d[4];      /* u_0 = q + a z: dz gains a dq */
-                out[5] = r[5] + d[5]; out[6] = r[6] + d[6];
+                const double *r = tj + (2 * i + c) * FIT_NP, *d = w->d[c];
+                const double d2 = r[2] + d[2], d3 = r[3] + d[3];
+                const double d4 = (r[4] + a * r[5]) + d[4];      /* u_0 = q + a z: dz gains a dq */
+                const double d5 = r[5] + d[5], d6 = r[6] + d[6];
+                /* d/dk of (|k|, q + 2K(|k|)) as a function of k < 0 (not for the next block's
+                 * start, whose derivative the walk carries) */
+                const double dk = i < m && negative ? -(d6 + dq_dk * d5) : d6;
+                if (i < m && cstride) {
+                    double *out = jac + 2 * i + c;
+                    out[2 * cstride] = d2; out[3 * cstride] = d3; out[4 * cstride] = d4;
+                    out[5 * cstride] = d5; out[6 * cstride] = dk;
+                } else {
+                    double *out = i < m ? jac + (2 * i + c) * FIT_NP : next[c];
+                    out[0] = r[0]; out[1] = r[1];
+                    out[2] = d2; out[3] = d3; out[4] = d4; out[5] = d5; out[6] = dk;
+                }
             }
         }
         if (xy) memcpy(xy, txy, sizeof(double) * 2 * m);
         memcpy(w->d, next, sizeof w->d);
-        if (v[6] < 0.0)          /* d/dk of (|k|, q + 2K(|k|)) as a function of k < 0 */
-            for (size_t i = 0; i < 2 * m; i++) {
-                double *r = jac + i * FIT_NP;
-                r[6] = -(r[6] + dq_dk * r[5]);
-            }
     }
     w->xy[0] = txy[2 * m]; w->xy[1] = txy[2 * m + 1];
     w->next += m;
@@ -208,7 +214,7 @@ static int discrete_end(const double *v, size_t n, int at_end, fit_end *e, doubl
         size_t left = n;
         while (left > 0) {
             const size_t m = left < FIT_BLOCK ? left : FIT_BLOCK;
-            if ((st = el__fit_discrete_rows(v, &w, m, xy, jac, t2))) return st;
+            if ((st = el__fit_discrete_rows(v, &w, m, xy, jac, 0, t2))) return st;
             left -= m;
             if (left == 0) {
                 memcpy(e->xy, xy + 2 * (m - 1), sizeof e->xy);

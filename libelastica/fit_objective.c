@@ -231,7 +231,7 @@ static void fold_paired(sums *s, const double *col, int stride, const double *re
 }
 
 /* Residual rows of paired points: gamma_i - P_g for the m samples, g = first + step i;
- * the Jacobian's columns from j0 on (fold_paired needs none of the first two). */
+ * the Jacobian's rows jac (when not NULL) to columns, from j0 on. */
 static double paired_rows(const fit_objective *o, const double *xy, const double *jac, size_t m,
                           size_t first, long step, int j0, double *col, double *res)
 {
@@ -245,7 +245,8 @@ static double paired_rows(const fit_objective *o, const double *xy, const double
             const double d = xy[r] - P[c];
             res[r] = d;
             f += d * d;
-            for (int j = j0; j < FIT_NP; j++) col[j * stride + r] = jac[r * FIT_NP + j];
+            if (jac)
+                for (int j = j0; j < FIT_NP; j++) col[j * stride + r] = jac[r * FIT_NP + j];
         }
     }
     return f;
@@ -256,19 +257,19 @@ static double paired_rows(const fit_objective *o, const double *xy, const double
 static int discrete_paired(fit_objective *o, const double *v, size_t nv, size_t first, long step,
                            int skip0, int want, sums *S, double *f)
 {
-    double *w = o->work, *xy = w + W_XY, *jac = w + W_JAC, *col = w + W_COL, *res = w + W_RES;
+    double *w = o->work, *xy = w + W_XY, *col = w + W_COL, *res = w + W_RES;
     fit_walk walk;
     el__fit_walk_start(v, &walk);
     size_t done = 0;
     int st;
     while (done < nv) {
         const size_t m = nv - done < FIT_BLOCK ? nv - done : FIT_BLOCK;
-        if ((st = el__fit_discrete_rows(v, &walk, m, xy, want ? jac : NULL, w + W_TMP))) return st;
+        if ((st = el__fit_discrete_rows(v, &walk, m, xy, want ? col : NULL, 2 * FIT_BLOCK, w + W_TMP))) return st;
         const size_t k0 = done == 0 && skip0 ? 1 : 0;
         const size_t g0 = (size_t)((long)first + step * (long)(done + k0));
         if (want) {
-            *f += paired_rows(o, xy + 2 * k0, jac + 2 * k0 * FIT_NP, m - k0, g0, step, 2, col, res);
-            fold_paired(S, col, 2 * FIT_BLOCK, res, (int)(2 * (m - k0)));
+            *f += paired_rows(o, xy + 2 * k0, NULL, m - k0, g0, step, 0, NULL, res);
+            fold_paired(S, col + 2 * k0, 2 * FIT_BLOCK, res, (int)(2 * (m - k0)));
         } else {
             for (size_t i = k0; i < m; i++) {
                 double P[2];
@@ -304,7 +305,7 @@ static int discrete_orthogonal(fit_objective *o, const double *v, int want, sums
     int st;
     for (size_t a = 0; a < n; a += FIT_BLOCK) {
         const size_t m = n - a < FIT_BLOCK ? n - a : FIT_BLOCK;
-        if ((st = el__fit_discrete_rows(v, &walk, m, V + 2 * a, NULL, w + W_TMP))) return st;
+        if ((st = el__fit_discrete_rows(v, &walk, m, V + 2 * a, NULL, 0, w + W_TMP))) return st;
     }
     const double h = v[2];
     el__fit_polygon_distances(o, V, n, h, 0, 1, dist, foot);
@@ -332,7 +333,7 @@ static int discrete_orthogonal(fit_objective *o, const double *v, int want, sums
     for (size_t a = 0; a < n; a += FIT_BLOCK) {
         const size_t m = n - a < FIT_BLOCK ? n - a : FIT_BLOCK;
         double xy[2 * (FIT_BLOCK + 1)];
-        if ((st = el__fit_discrete_rows(v, &walk, m, xy, jac, w + W_TMP))) return st;
+        if ((st = el__fit_discrete_rows(v, &walk, m, xy, jac, 0, w + W_TMP))) return st;
         /* vertex a + m's derivative (the walk's, before the k < 0 column change) */
         double dn[2][FIT_NP];
         memcpy(dn, walk.d, sizeof dn);

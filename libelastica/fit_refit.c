@@ -31,7 +31,7 @@ int el__fit_curve_distances(fit_objective *ob, const double *x, double v[2][FIT_
     int st = EL_OK;
     for (size_t a = 0; a < n && !st; a += FIT_BLOCK) {
         const size_t m = n - a < FIT_BLOCK ? n - a : FIT_BLOCK;
-        st = el__fit_discrete_rows(v[0], &w, m, buf + 2 * a, NULL, tmp);
+        st = el__fit_discrete_rows(v[0], &w, m, buf + 2 * a, NULL, 0, tmp);
     }
     if (!st) {
         const double *V[2] = {buf, NULL};

@@ -455,7 +455,7 @@ static double place(int model, const points *p, const double *v, double *x0, dou
     if (model == FIT_DISCRETE && m == n) {
         fit_walk w;
         el__fit_walk_start(v, &w);
-        st = el__fit_discrete_rows(v, &w, n, G, NULL, tmp);
+        st = el__fit_discrete_rows(v, &w, n, G, NULL, 0, tmp);
     } else if (model == FIT_DISCRETE) {
         const double vs[FIT_NP] = {0.0, 0.0, v[3], v[4] / v[2], v[6], v[5], v[2] * (double)(n - 1)};
         for (size_t j = 0; j < m; j++) s[j] = v[2] * (double)idx[j];

@@ -6,7 +6,8 @@
 #include <string.h>
 
 /* Vertices and d gamma / d v walked in blocks of every size equal one call over the
- * whole curve, for k across 1 and the continuation -1 < k < 0. */
+ * whole curve, for k across 1 and the continuation -1 < k < 0; by columns (the paired
+ * fit's layout) the same numbers as by rows. */
 START_TEST(test_blocked_discrete_walk_equals_one_call)
 {
     const size_t sizes[] = {2, 3, 17, 255, 256, 257, 600};
@@ -25,12 +26,20 @@ START_TEST(test_blocked_discrete_walk_equals_one_call)
             if (v[6] < 0.0)        /* the continuation's k column: d/dk of (|k|, q + 2K(|k|)) */
                 for (size_t i = 0; i < 2 * n; i++) jac[i * 7 + 6] = -(jac[i * 7 + 6] + dq * jac[i * 7 + 5]);
             for (size_t blk = 1; blk <= 300; blk = blk * 3 + 1) {
-                fit_walk w;
+                fit_walk w, wc;
                 el__fit_walk_start(v, &w);
+                el__fit_walk_start(v, &wc);
+                double *col = malloc(sizeof(double) * 14 * blk), cxy[2 * 300];
                 for (size_t s = 0; s < n; s += blk) {
                     const size_t m = n - s < blk ? n - s : blk;
-                    ck_assert_int_eq(el__fit_discrete_rows(v, &w, m, wxy + 2 * s, wjac + 14 * s, tmp), EL_OK);
+                    ck_assert_int_eq(el__fit_discrete_rows(v, &w, m, wxy + 2 * s, wjac + 14 * s, 0, tmp), EL_OK);
+                    ck_assert_int_eq(el__fit_discrete_rows(v, &wc, m, cxy, col, 2 * blk, tmp), EL_OK);
+                    for (size_t r = 0; r < 2 * m; r++) {
+                        ck_assert(cxy[r] == wxy[2 * s + r]);
+                        for (int j = 2; j < 7; j++) ck_assert(col[(size_t)j * 2 * blk + r] == wjac[(2 * s + r) * 7 + j]);
+                    }
                 }
+                free(col);
                 double scale = 1.0, e = 0.0;
                 for (size_t i = 0; i < 14 * n; i++) {
                     scale = fmax(scale, fabs(jac[i]));
