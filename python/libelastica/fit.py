@@ -256,8 +256,6 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     n = pts.shape[0]
     if n < 4:
         raise ValueError(f"fit: need at least 4 points, got {n}")
-    if not np.all(np.isfinite(pts)):
-        raise ValueError("fit: points must be finite (no NaN/inf)")
     try:   # options of the wrong shape (not a mapping, bounds not pairs, ...): ValueError
         o = _options(model, n, fixed, bounds, tol, max_iter, limited_memory, max_candidates, param,
                      initial, distance, constraints)
@@ -269,6 +267,8 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     dist, foot = np.empty(n), np.empty(n)
     st = (lib.el_fit_smooth if smooth else lib.el_fit_discrete)(dptr(pts), n, o, init, res,
                                                                dptr(dist), dptr(foot))
+    if st == lib.EL_EINVAL and not np.all(np.isfinite(pts)):   # checked here, off the common path
+        raise ValueError("fit: points must be finite (no NaN/inf)")
     if res.constraint and st in (lib.EL_EINVAL, lib.EL_EDOM):
         _raise_constraint(st, res.constraint)
     if st not in (lib.EL_OK, lib.EL_ENOCONV, lib.EL_EMAXITER):

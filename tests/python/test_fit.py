@@ -655,7 +655,7 @@ def test_bad_input(model):
     for bad in (np.nan, np.inf):
         p = good.copy()
         p[4, 1] = bad
-        with pytest.raises(ValueError):
+        with pytest.raises(ValueError, match="points must be finite"):
             el.fit(p, model=model)
     with pytest.raises(el.SingularError):
         el.fit(np.ones((10, 2)), model=model)
