@@ -589,52 +589,82 @@ double el__fit_direction(double x, double y)
  * the search elsewhere leaves the window out. The directions (el__fit_direction, within
  * 2e-6 each: the range is held to pi/2 - 1e-5) are unwrapped by the turning at each
  * vertex, taken in [-pi, pi] (a turning near pi, where that choice can err, ends every
- * window); a zero-length or non-finite segment ends every window too. Two pointers with
- * monotone queues of the window's largest and smallest direction, O(ns); the offsets
- * are held to 2^32 - 1 (a window of 4e9 segments is proof enough). 0: no memory.
+ * window); a zero-length or non-finite segment ends every window too, and a window
+ * spans at most WINDOW_MAX segments beyond its first and ends where a queue below is
+ * full (shorter windows prove less, never wrongly). Two pointers with monotone queues
+ * (rings) of the window's largest and smallest direction: O(ns) time, 4 bytes a
+ * segment. 0: no memory.
  */
-static int direction_windows(const double *V, long ns, unsigned *fwd, unsigned *back)
+enum { WINDOW_MAX = 65535, WINDOW_RING = 65536 };
+typedef struct dir_entry {
+    long j;
+    double th;
+} dir_entry;
+
+/* The direction of segment j of V; 0 when it has none (zero length, not finite: it is
+ * measured again each time, as such a segment ends every window). */
+static int segment_direction(const double *V, long j, double *dir)
+{
+    const double ux = V[2 * j + 2] - V[2 * j], uy = V[2 * j + 3] - V[2 * j + 1], u2 = ux * ux + uy * uy;
+    if (!(u2 > 0.0 && u2 < HUGE_VAL)) return 0;
+    *dir = el__fit_direction(ux, uy);
+    return 1;
+}
+
+static int direction_windows(const double *V, long ns, unsigned short *fwd, unsigned short *back)
 {
     const double aperture = 0.5 * M_PI - 1e-5;
-    double *th = malloc(sizeof(double) * (size_t)ns);
-    long *qmax = malloc(sizeof(long) * (size_t)ns), *qmin = malloc(sizeof(long) * (size_t)ns);
-    char *ok = malloc((size_t)ns);
-    if (!th || !qmax || !qmin || !ok) { free(th); free(qmax); free(qmin); free(ok); return 0; }
-    double last = 0.0;
+    unsigned long ring = 1;
+    while (ring < WINDOW_RING && ring < (unsigned long)ns + 1) ring *= 2;
+    dir_entry *qmax = malloc(sizeof(dir_entry) * ring), *qmin = malloc(sizeof(dir_entry) * ring);
+    if (!qmax || !qmin) { free(qmax); free(qmin); return 0; }
+    const unsigned long mask = ring - 1;
+    unsigned long h0 = 0, t0 = 0, h1 = 0, t1 = 0;  /* queue heads and tails, counted */
+    long e = -1;                                    /* the window [j, e] */
+    double raw = 0.0, th = 0.0;                     /* segment e's direction, and unwrapped */
+    int next_ok = 0;                                /* segment e + 1's, once measured */
+    double next = 0.0, next_th = 0.0;
     for (long j = 0; j < ns; j++) {
-        const double ux = V[2 * j + 2] - V[2 * j], uy = V[2 * j + 3] - V[2 * j + 1], u2 = ux * ux + uy * uy;
-        ok[j] = u2 > 0.0 && u2 < HUGE_VAL;
-        const double dir = ok[j] ? el__fit_direction(ux, uy) : 0.0, turn = dir - last;
-        /* unwrapped: the turning from the previous segment in [-pi, pi] */
-        th[j] = j > 0 && ok[j] && ok[j - 1] ? th[j - 1] + (turn > M_PI ? turn - 2.0 * M_PI : turn < -M_PI ? turn + 2.0 * M_PI : turn) : dir;
-        last = dir;
-    }
-    /* fwd: the window [j, e] grows while the next segment keeps the directions' range
-     * within the aperture; queues hold the window's indices of decreasing (qmax) and
-     * increasing (qmin) direction */
-    long e = -1, h0 = 0, t0 = 0, h1 = 0, t1 = 0;
-    for (long j = 0; j < ns; j++) {
-        if (e < j) { e = j; h0 = t0 = h1 = t1 = 0; qmax[t0++] = j; qmin[t1++] = j; }
-        while (h0 < t0 && qmax[h0] < j) h0++;
-        while (h1 < t1 && qmin[h1] < j) h1++;
-        while (ok[j] && e + 1 < ns && ok[e + 1]) {
-            const double t = th[e + 1];
-            const double hi = t > th[qmax[h0]] ? t : th[qmax[h0]], lo = t < th[qmin[h1]] ? t : th[qmin[h1]];
+        if (e < j) {        /* a window from j alone */
+            e = j;
+            next_ok = 0;
+            h0 = t0 = h1 = t1 = 0;
+            if (!segment_direction(V, j, &raw)) { fwd[j] = 0; continue; }
+            th = raw;
+            qmax[t0++ & mask] = (dir_entry){j, th};
+            qmin[t1++ & mask] = (dir_entry){j, th};
+        }
+        while (qmax[h0 & mask].j < j) h0++;
+        while (qmin[h1 & mask].j < j) h1++;
+        /* grow while the next segment keeps the directions' range within the aperture */
+        while (e + 1 < ns && e + 1 - j <= WINDOW_MAX && t0 - h0 < ring && t1 - h1 < ring) {
+            if (!next_ok) {
+                if (!segment_direction(V, e + 1, &next)) break;
+                const double turn = next - raw;
+                next_th = th + (turn > M_PI ? turn - 2.0 * M_PI : turn < -M_PI ? turn + 2.0 * M_PI : turn);
+                next_ok = 1;
+            }
+            const double t = next_th;
+            const double hi = t > qmax[h0 & mask].th ? t : qmax[h0 & mask].th;
+            const double lo = t < qmin[h1 & mask].th ? t : qmin[h1 & mask].th;
             if (!(hi - lo <= aperture)) break;
             e++;
-            while (t0 > h0 && th[qmax[t0 - 1]] <= t) t0--;
-            qmax[t0++] = e;
-            while (t1 > h1 && th[qmin[t1 - 1]] >= t) t1--;
-            qmin[t1++] = e;
+            raw = next;
+            th = t;
+            next_ok = 0;
+            while (t0 > h0 && qmax[(t0 - 1) & mask].th <= t) t0--;
+            qmax[t0++ & mask] = (dir_entry){e, t};
+            while (t1 > h1 && qmin[(t1 - 1) & mask].th >= t) t1--;
+            qmin[t1++ & mask] = (dir_entry){e, t};
         }
-        fwd[j] = e - j < 4294967295L ? (unsigned)(e - j) : 4294967295U;
+        fwd[j] = (unsigned short)(e - j);
     }
     /* back: the first i whose window reaches j (the windows' ends grow with i) */
     for (long j = 0, i = 0; j < ns; j++) {
         while ((long)fwd[i] + i < j) i++;
-        back[j] = j - i < 4294967295L ? (unsigned)(j - i) : 4294967295U;
+        back[j] = (unsigned short)(j - i);
     }
-    free(th); free(qmax); free(qmin); free(ok);
+    free(qmax); free(qmin);
     return 1;
 }
 
@@ -675,7 +705,7 @@ static int polygon_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP
     /* the runs (curve, first segment, end) in order, their buckets; then sorted by bucket */
     size_t *start = calloc(nb + 1, sizeof(size_t)), *key = malloc(sizeof(size_t) * nseg);
     long *run = malloc(sizeof(long) * 3 * nseg), *sorted = malloc(sizeof(long) * 3 * nseg);
-    unsigned *win = malloc(sizeof(unsigned) * 2 * nseg), *fwd[2] = {win, win + 2 * ns[0]};
+    unsigned short *win = malloc(sizeof(unsigned short) * 2 * nseg), *fwd[2] = {win, win + 2 * ns[0]};
     int st = start && key && run && sorted && win ? EL_OK : EL_ENOMEM;
     for (int c = 0; c < nc && !st; c++)
         if (ns[c] > 0 && !direction_windows(V[c], ns[c], fwd[c], fwd[c] + ns[c])) st = EL_ENOMEM;

@@ -226,6 +226,41 @@ START_TEST(test_smooth_report_against_dense_samples)
 }
 END_TEST
 
+/* A polygon longer than a direction window may be (65535 segments beyond its first):
+ * an arc of 70000 segments turning 1.2 (one window, capped; the queue of its smallest
+ * direction full), a hairpin, and the arc back 2 h inside it, with points 3 h off: a
+ * sample of them against the brute-force nearest segment. */
+START_TEST(test_long_polygon_report_equals_brute_force)
+{
+    enum { ARM = 70000, NV = 2 * ARM + 4 };
+    double *V = malloc(sizeof(double) * 2 * NV), *xy = malloc(sizeof(double) * 2 * NV);
+    double *d = malloc(sizeof(double) * NV), *fs = malloc(sizeof(double) * NV);
+    const double h = 1e-4;
+    double th = 0.3, x = 0.0, y = 0.0;
+    for (size_t j = 0; j < NV; j++) {
+        V[2 * j] = x; V[2 * j + 1] = y;
+        x += h * cos(th); y += h * sin(th);
+        th += j < ARM ? 1.2 / ARM : j < ARM + 3 ? (M_PI - 1e-3) / 3.0 : -1.2 / ARM;
+    }
+    unsigned long long rng = 11;
+    noisy_points(V, NV, 3.0 * h, 1.0, &rng, xy);
+    const fit_map m = {.model = FIT_DISCRETE, .ncurves = 1};
+    fit_objective o;
+    ck_assert_int_eq(el__fit_objective_init(&o, FIT_PAIRED, &m, xy, NV, 0.0, 0.0, 1.0, NULL), EL_OK);
+    double v[2][FIT_NP] = {{0}};
+    v[0][2] = h;
+    const double *Vc[2] = {V, NULL};
+    const size_t nv[2] = {NV, 0};
+    el__fit_polygon_distances(&o, V, NV, h, 0, 1, d, fs);
+    ck_assert_int_eq(el__fit_nearest_everywhere(&o, v, Vc, nv, d, fs, NULL), EL_OK);
+    for (size_t i = 0; i < NV; i += 701)
+        ck_assert_msg(brute_nearest(Vc, nv, 1, h, xy + 2 * i, d[i], fs[i], 0), "point %zu: d %.17g foot %.17g not nearest",
+                      i, d[i], fs[i]);
+    el__fit_objective_free(&o);
+    free(V); free(xy); free(d); free(fs);
+}
+END_TEST
+
 /* The windows' directions (fit_nearest.c): within 2e-6 of atan2 all round the circle, at
  * every scale, on the axes and the diagonals (modulo 2 pi: the cut at -pi). */
 START_TEST(test_direction_within_its_bound)
@@ -253,6 +288,7 @@ static Suite *suite(void)
     tcase_add_test(tc, test_polygon_report_equals_brute_force);
     tcase_add_test(tc, test_keyline_report_equals_brute_force);
     tcase_add_test(tc, test_smooth_report_against_dense_samples);
+    tcase_add_test(tc, test_long_polygon_report_equals_brute_force);
     tcase_add_test(tc, test_direction_within_its_bound);
     suite_add_tcase(s, tc);
     return s;
