@@ -38,7 +38,7 @@
 #include <gsl/gsl_sf_ellint.h>
 #include <gsl/gsl_statistics_double.h>
 
-enum { BLOCKS = 32, RAW_MAX = 40, NCAND_MAX = 6, NOISE_SAMPLES = 65536 };
+enum { BLOCKS = 32, RAW_MAX = 40, NCAND_MAX = 6, NOISE_SAMPLES = 65536, FRAME_PROBE = 32 };
 
 /* A model-independent guess in normalised coordinates: u(s) = w s + q, s = t L. */
 typedef struct cguess {
@@ -95,17 +95,19 @@ double el__fit_denorm_param(int model, int j, double v, double cx, double cy, do
     return v;
 }
 
-/* Noise level of the points (rms per point) from third differences, in which a smooth
- * curve's turning cancels (second differences carry its curvature, so that sparse tight
- * loops would look noisy): P_{i+2} - 3P_{i+1} + 3P_i - P_{i-1} has variance 20 sigma^2
- * per coordinate, |.|^2 mean 40 sigma^2 = 20 rms^2 and median ln 2 of the mean (a
- * chi-square of two degrees); at most NOISE_SAMPLES of them, evenly spread. */
-double el__fit_noise_rms(const double *xy, size_t n, double sc)
+/* Noise level of the points (rms per point), the smaller of two estimates (both from
+ * third differences, in which a smooth curve's turning cancels; second differences carry
+ * its curvature, so that sparse tight loops would look noisy), each the median over at
+ * most NOISE_SAMPLES stencils, evenly spread:
+ *  - plain: P_{i+2} - 3P_{i+1} + 3P_i - P_{i-1} has variance 20 sigma^2 per coordinate,
+ *    |.|^2 mean 40 sigma^2 = 20 rms^2 and median ln 2 of the mean (a chi-square of two
+ *    degrees). A straight line cancels only at equal spacing: on uneven spacing its
+ *    slope times the unevenness remains (measured: 20 points at random arc lengths, 0.1 %
+ *    noise, 12x the truth in the median; 5 % of the length with no noise at all);
+ *  - in the stencil's frame (noise_frame): any spacing. */
+static double noise_plain(const double *xy, size_t n, double sc, double *d)
 {
-    if (n < 4) return 0.0;
     const size_t m = n - 3 < NOISE_SAMPLES ? n - 3 : NOISE_SAMPLES;
-    double *d = malloc(sizeof(double) * m);
-    if (!d) return 0.0;
     for (size_t a = 0; a < m; a++) {
         const size_t i = 1 + a * (n - 3) / m;
         double e[2];
@@ -116,8 +118,71 @@ double el__fit_noise_rms(const double *xy, size_t n, double sc)
         d[a] = e[0] * e[0] + e[1] * e[1];
     }
     const double med = gsl_stats_median(d, 1, m);   /* quickselect; reorders d */
-    free(d);
     return sqrt(med / (20.0 * 0.69314718055994531));
+}
+
+/* The stencil P_{i-1} .. P_{i+2} in the frame of the chord P_{i-2} P_{i+3} (its outer
+ * neighbours, so that the frame does not depend on the stencil's own noise): abscissae
+ * x_j, ordinates y_j, and the third divided difference of y over x, sum_j w_j y_j with
+ * w_j = 1 / prod_{l != j} (x_j - x_l) = (-1)^j V_j / V (V the Vandermonde product of the
+ * four x, V_j that of the other three: no division, no overflow), cancels every quadratic
+ * y(x), hence a straight line at any spacing. With isotropic noise of sigma per
+ * coordinate, the y_j's noise is independent of the x_j's, so e = sum w_j y_j / |w| has
+ * variance sigma^2 whatever the spacing (for the curve's, the x noise enters times the
+ * slope of y(x), small: the frame is nearly the tangent); e^2 has mean sigma^2 = rms^2 / 2
+ * and median 0.454936 of that (a chi-square of one degree). On equal spacing w is
+ * (-1, 3, -3, 1) (measured: within 1.05x of the truth on dense curves, 0.1 % and 1 %
+ * noise, uniform, random or sketched spacing; 1.07x on 20 random points, 0.1 %). */
+static double noise_frame(const double *xy, size_t n, double sc, size_t cap, double *d)
+{
+    const size_t span = n - 5, m = span < cap ? span : cap;
+    const double inv = 1.0 / sc;
+    size_t cnt = 0;
+    for (size_t a = 0; a < m; a++) {
+        const size_t i = 2 + a * span / m;
+        const double *o = xy + 2 * (i - 1);
+        /* the frame's direction U unnormalised: e scales as |U| (y as |U|, w as |U|^3) */
+        const double ux = (xy[2 * (i + 3)] - xy[2 * (i - 2)]) * inv, uy = (xy[2 * (i + 3) + 1] - xy[2 * (i - 2) + 1]) * inv;
+        const double u2 = ux * ux + uy * uy;
+        if (!(u2 > 0.0) || !isfinite(u2)) continue;
+        double x[4], y[4];
+        for (int j = 0; j < 4; j++) {
+            const double dx = (o[2 * j] - o[0]) * inv, dy = (o[2 * j + 1] - o[1]) * inv;
+            x[j] = dx * ux + dy * uy;
+            y[j] = dy * ux - dx * uy;
+        }
+        const double d01 = x[1] - x[0], d02 = x[2] - x[0], d03 = x[3] - x[0];
+        const double d12 = x[2] - x[1], d13 = x[3] - x[1], d23 = x[3] - x[2];
+        const double w[4] = {d12 * d13 * d23, -d02 * d03 * d23, d01 * d03 * d13, -d01 * d02 * d12};
+        double wmax = 0.0;
+        for (int j = 0; j < 4; j++)
+            if (fabs(w[j]) > wmax) wmax = fabs(w[j]);
+        if (!(wmax > 0.0) || !isfinite(wmax)) continue;      /* coincident abscissae */
+        const double r = 1.0 / wmax;
+        double num = 0.0, w2 = 0.0;
+        for (int j = 0; j < 4; j++) {
+            const double wj = w[j] * r;
+            num += wj * y[j];
+            w2 += wj * wj;
+        }
+        d[cnt++] = num * num / (w2 * u2);
+    }
+    if (cnt == 0) return HUGE_VAL;
+    const double med = gsl_stats_median(d, 1, cnt);
+    return sqrt(2.0 * med / 0.45493642311957283);
+}
+
+double el__fit_noise_rms(const double *xy, size_t n, double sc)
+{
+    if (n < 4) return 0.0;
+    double *d = malloc(sizeof(double) * (n - 3 < NOISE_SAMPLES ? n - 3 : NOISE_SAMPLES));
+    if (!d) return 0.0;
+    const double plain = noise_plain(xy, n, sc, d);
+    double frame = n >= 6 ? noise_frame(xy, n, sc, FRAME_PROBE, d) : HUGE_VAL;
+    if (n - 5 > FRAME_PROBE)      /* a probe; all of them only where it is below half of plain */
+        frame = frame < 0.5 * plain ? noise_frame(xy, n, sc, NOISE_SAMPLES, d) : HUGE_VAL;
+    free(d);
+    return fmin(plain, frame);
 }
 
 static int check_points(const double *xy, size_t n, size_t nmin)
