@@ -156,11 +156,16 @@ static double noise_frame(const double *xy, size_t n, double sc, size_t cap, dou
         }
         const double d01 = x[1] - x[0], d02 = x[2] - x[0], d03 = x[3] - x[0];
         const double d12 = x[2] - x[1], d13 = x[3] - x[1], d23 = x[3] - x[2];
+        /* a point repeated (a pen at rest, a scanner's duplicate) is no independent sample:
+         * its copies' difference, the limit of w at coincident abscissae, is 0 */
+        if ((d01 == 0.0 && y[1] == y[0]) || (d02 == 0.0 && y[2] == y[0]) || (d03 == 0.0 && y[3] == y[0]) ||
+            (d12 == 0.0 && y[2] == y[1]) || (d13 == 0.0 && y[3] == y[1]) || (d23 == 0.0 && y[3] == y[2]))
+            continue;
         const double w[4] = {d12 * d13 * d23, -d02 * d03 * d23, d01 * d03 * d13, -d01 * d02 * d12};
         double wmax = 0.0;
         for (int j = 0; j < 4; j++)
             if (fabs(w[j]) > wmax) wmax = fabs(w[j]);
-        if (!(wmax > 0.0) || !isfinite(wmax)) continue;      /* coincident abscissae */
+        if (!(wmax > 0.0) || !isfinite(wmax)) continue;      /* abscissae coincident in two pairs or three */
         const double r = 1.0 / wmax;
         double num = 0.0, w2 = 0.0;
         for (int j = 0; j < 4; j++) {

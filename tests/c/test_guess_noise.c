@@ -233,6 +233,31 @@ START_TEST(test_noise_frame_by_definition)
 }
 END_TEST
 
+/* Repeated points (every point twice, as a pen at rest or a scanner's duplicates) are no
+ * independent samples: the frame estimate skips stencils with a point repeated, so the
+ * copies' zero difference is not taken for zero noise (measured before: 1e-17 of the
+ * truth, and test_fit_lbfgs.c's paired loop tried every candidate); here every stencil
+ * holds a copy, so the plain figure, not below half the noise. */
+START_TEST(test_noise_repeated_points)
+{
+    const size_t ns[] = {20, 200};
+    unsigned long long rng = 99;
+    double xy[2 * 400], s[200];
+    for (size_t a = 0; a < sizeof ns / sizeof ns[0]; a++) {
+        const size_t n = ns[a];
+        const double sigma = 0.1 / (double)n;
+        random_places(&rng, n, 1.0, s);
+        for (size_t i = 0; i < n; i++) {
+            const double x = s[i] + sigma * test_normal(&rng), y = 0.5 * s[i] + sigma * test_normal(&rng);
+            xy[4 * i] = xy[4 * i + 2] = x;
+            xy[4 * i + 1] = xy[4 * i + 3] = y;
+        }
+        const double e = noise_of(xy, 2 * n);
+        ck_assert_msg(e >= 0.5 * sqrt(2.0) * sigma, "n %zu repeated: estimate %.3g, noise %.3g", n, e, sqrt(2.0) * sigma);
+    }
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("guess_noise");
@@ -242,6 +267,7 @@ static Suite *suite(void)
     tcase_add_test(tc, test_noise_free_curves_uneven);
     tcase_add_test(tc, test_noise_equal_spacing_is_plain);
     tcase_add_test(tc, test_noise_frame_by_definition);
+    tcase_add_test(tc, test_noise_repeated_points);
     suite_add_tcase(s, tc);
     return s;
 }
