@@ -456,12 +456,10 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
     }
     if ((size_t)o.max_candidates < ncand) ncand = (size_t)o.max_candidates;
 
-    /* the noise's rms per point is of both coordinates; a distance to the curve sees its
-     * normal component alone, 1/sqrt(2) of it (measured on 120 sparse noisy sets at
-     * uneven places: 14 -> 12 fits worse than the best basin by > 1 %, 4 -> 2 of them
-     * above the true curve's rms). Not with constraints, whose own cost in rms the rule
-     * cannot know (bench_fit.py's 165 noisy points, start tangent 0.2 rad off: rms 1.5 x
-     * the normal noise in every basin; 3 candidates under Ipopt, 8x the time, same rms). */
+    /* rms per point of both coordinates; a distance to the curve sees the normal part,
+     * 1/sqrt(2) (120 sparse uneven noisy sets: 14 -> 12 worse than the best basin by > 1 %).
+     * Not with constraints, whose cost in rms the rule cannot know (bench_fit.py's 165
+     * constrained points: rms 1.5 x the normal noise in every basin, 3 candidates, 8x time) */
     const double noise = el__fit_noise_rms(xy, n, sc) * (kind == FIT_ORTHOGONAL && !o.constraints ? 0.70710678118654752 : 1.0);
     cand_result best;
     memset(&best, 0, sizeof best);
