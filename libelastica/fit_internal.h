@@ -249,6 +249,7 @@ double el__fit_norm_param(int model, int j, double v, double cx, double cy, doub
 double el__fit_denorm_param(int model, int j, double v, double cx, double cy, double sc);
 /* The rms noise of the points from second differences, in normalised units. */
 double el__fit_noise_rms(const double *xy, size_t n, double sc);
+double el__fit_noise_plain(const double *xy, size_t n, double sc);
 
 /* ------------------------------------------------------------------ results */
 

@@ -193,6 +193,17 @@ double el__fit_noise_rms(const double *xy, size_t n, double sc)
     return fmin(plain, frame);
 }
 
+/* The plain figure alone (fit.c's stop rule for a constrained fit). */
+double el__fit_noise_plain(const double *xy, size_t n, double sc)
+{
+    if (n < 4) return 0.0;
+    double *d = malloc(sizeof(double) * (n - 3 < NOISE_SAMPLES ? n - 3 : NOISE_SAMPLES));
+    if (!d) return 0.0;
+    const double plain = noise_plain(xy, n, sc, d);
+    free(d);
+    return plain;
+}
+
 static int check_points(const double *xy, size_t n, size_t nmin)
 {
     if (!xy || n < nmin) return EL_EINVAL;
