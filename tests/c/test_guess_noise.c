@@ -1,0 +1,275 @@
+/* The noise level of the points (guess.c's el__fit_noise_rms), which stops the fit's
+ * candidate loop: on uneven spacing, pure noise along a straight line is measured within
+ * a few % of the noise added and noise-free curves far below it (plain third differences
+ * cancel a line only at equal spacing); on equal spacing it is the plain third
+ * differences' figure to the bit; the frame estimate (its 32-stencil probe for more points)
+ * against its definition by divided differences 1 / prod (x_j - x_l). */
+#include "testutil.h"
+#include "fit_internal.h"
+#include <string.h>
+#include <gsl/gsl_statistics_double.h>
+
+static int cmp_double(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* n sorted uniform random arc lengths in [0, len], the ends at 0 and len. */
+static void random_places(unsigned long long *rng, size_t n, double len, double *s)
+{
+    for (size_t i = 0; i < n; i++) s[i] = test_uniform(rng, 0.0, len);
+    qsort(s, n, sizeof s[0], cmp_double);
+    s[0] = 0.0;
+    s[n - 1] = len;
+}
+
+static double noise_of(const double *xy, size_t n)
+{
+    double cx, cy, sc;
+    ck_assert_int_eq(el__fit_normalisation(xy, n, &cx, &cy, &sc), EL_OK);
+    return el__fit_noise_rms(xy, n, sc) * sc;
+}
+
+/* Plain third differences, today's formula (guess.c's noise_plain), in the input's units. */
+static double plain_noise(const double *xy, size_t n)
+{
+    double cx, cy, sc;
+    ck_assert_int_eq(el__fit_normalisation(xy, n, &cx, &cy, &sc), EL_OK);
+    const size_t m = n - 3 < 65536 ? n - 3 : 65536;
+    double *d = malloc(sizeof(double) * m);
+    ck_assert_ptr_nonnull(d);
+    for (size_t a = 0; a < m; a++) {
+        const size_t i = 1 + a * (n - 3) / m;
+        double e[2];
+        for (int c = 0; c < 2; c++) {
+            const double p0 = xy[2 * (i - 1) + c], p1 = xy[2 * i + c], p2 = xy[2 * (i + 1) + c], p3 = xy[2 * (i + 2) + c];
+            e[c] = ((p3 - p0) - 3.0 * (p2 - p1)) / sc;
+        }
+        d[a] = e[0] * e[0] + e[1] * e[1];
+    }
+    const double med = gsl_stats_median(d, 1, m);
+    free(d);
+    return sqrt(med / (20.0 * 0.69314718055994531)) * sc;
+}
+
+/* The frame estimate by its definition: stencil P_{i-1} .. P_{i+2} in the unit frame of
+ * P_{i-2} P_{i+3}, w_j = 1 / prod_{l != j} (x_j - x_l), e^2 = (sum w_j y_j)^2 / sum w_j^2,
+ * rms = sqrt(2 median / 0.454936) over every stencil (input units). */
+static double frame_by_definition(const double *xy, size_t n)
+{
+    double *d = malloc(sizeof(double) * n);
+    ck_assert_ptr_nonnull(d);
+    size_t cnt = 0;
+    for (size_t i = 2; i + 3 < n; i++) {
+        const double ux0 = xy[2 * (i + 3)] - xy[2 * (i - 2)], uy0 = xy[2 * (i + 3) + 1] - xy[2 * (i - 2) + 1];
+        const double ul = hypot(ux0, uy0), ux = ux0 / ul, uy = uy0 / ul;
+        double x[4], y[4], w[4], num = 0.0, w2 = 0.0;
+        for (int j = 0; j < 4; j++) {
+            const double dx = xy[2 * (i - 1 + j)] - xy[2 * (i - 1)], dy = xy[2 * (i - 1 + j) + 1] - xy[2 * (i - 1) + 1];
+            x[j] = dx * ux + dy * uy;
+            y[j] = dy * ux - dx * uy;
+        }
+        for (int j = 0; j < 4; j++) {
+            double prod = 1.0;
+            for (int l = 0; l < 4; l++)
+                if (l != j) prod *= x[j] - x[l];
+            w[j] = 1.0 / prod;
+            num += w[j] * y[j];
+            w2 += w[j] * w[j];
+        }
+        d[cnt++] = num * num / w2;
+    }
+    qsort(d, cnt, sizeof d[0], cmp_double);
+    const double med = cnt % 2 ? d[cnt / 2] : 0.5 * (d[cnt / 2 - 1] + d[cnt / 2]);
+    free(d);
+    return sqrt(2.0 * med / 0.45493642311957283);
+}
+
+/* Pure noise of sigma per coordinate along a straight line at random places, noise from
+ * 1e-3 to 10 mean spacings: the median over many sets within 5 % of the noise's rms
+ * sqrt(2) sigma, where the frame estimate serves (noise far below or far above the
+ * spacing; sparse sets always take it); near one spacing, more than 37 points keep the
+ * plain figure when the probe does not show it twice too high, which the line's
+ * unevenness raises by ~7 % there (measured: 1.06-1.07 x), so within 10 %.
+ * Plain third differences: 1.7 x (200 points, noise 0.1 spacing) to 2000 x. */
+START_TEST(test_noise_pure_noise_uneven)
+{
+    const size_t ns[] = {40, 200, 2000};
+    const double ratios[] = {1e-3, 0.1, 1.0, 10.0};
+    unsigned long long rng = 0x9e3779b97f4a7c15ULL;
+    double *xy = malloc(sizeof(double) * 2 * 2000), *s = malloc(sizeof(double) * 2000), r[200];
+    ck_assert(xy && s);
+    for (size_t a = 0; a < sizeof ns / sizeof ns[0]; a++)
+        for (size_t b = 0; b < sizeof ratios / sizeof ratios[0]; b++) {
+            const size_t n = ns[a];
+            const int trials = n <= 200 ? 200 : 40;
+            const double sigma = ratios[b] / (double)n, c = cos(0.7), sn = sin(0.7);
+            for (int t = 0; t < trials; t++) {
+                random_places(&rng, n, 1.0, s);
+                for (size_t i = 0; i < n; i++) {
+                    xy[2 * i] = 3.0 + s[i] * c + sigma * test_normal(&rng);
+                    xy[2 * i + 1] = -1.0 + s[i] * sn + sigma * test_normal(&rng);
+                }
+                r[t] = noise_of(xy, n) / (sqrt(2.0) * sigma);
+            }
+            qsort(r, (size_t)trials, sizeof r[0], cmp_double);
+            const double med = r[trials / 2], tol = ratios[b] == 1.0 ? 0.10 : 0.05;
+            ck_assert_msg(fabs(med - 1.0) <= tol, "n %zu noise / spacing %g: median estimate / truth %.4f",
+                          n, ratios[b], med);
+        }
+    free(xy);
+    free(s);
+}
+END_TEST
+
+/* Noise-free elasticae (k across 1, loops and inflectional) at random places: the estimate
+ * is the curve's own third differences, far below any noise a fit would be stopped by
+ * (plain third differences measured up to 0.20, 0.024, 0.0025 of the rms radius for 40,
+ * 200, 2000 points: the unevenness times the slope; 40 points of a loop carry their own
+ * third differences, up to 0.017 measured; k = 5, several turns in 40 points, would be
+ * all curve). */
+START_TEST(test_noise_free_curves_uneven)
+{
+    const size_t ns[] = {40, 200, 2000};
+    const double bound[] = {5e-2, 1e-4, 1e-6};
+    const double ks[] = {0.3, 0.9, 0.999, 1.001, 1.2, 1.6};
+    unsigned long long rng = 12345;
+    double *xy = malloc(sizeof(double) * 2 * 2000), *s = malloc(sizeof(double) * 2000);
+    ck_assert(xy && s);
+    for (size_t a = 0; a < sizeof ns / sizeof ns[0]; a++)
+        for (size_t b = 0; b < sizeof ks / sizeof ks[0]; b++)
+            for (int t = 0; t < 6; t++) {
+                const size_t n = ns[a];
+                el_smooth_params p = {0.0, 0.0, test_uniform(&rng, -1.0, 1.0), test_uniform(&rng, 0.3, 2.0),
+                                      t % 2 ? ks[b] : -ks[b], test_uniform(&rng, 0.0, 3.0), test_uniform(&rng, 2.0, 6.0)};
+                random_places(&rng, n, p.length, s);
+                ck_assert_int_eq(el_smooth_eval(&p, n, s, xy, NULL, NULL), EL_OK);
+                double cx, cy, sc;
+                ck_assert_int_eq(el__fit_normalisation(xy, n, &cx, &cy, &sc), EL_OK);
+                const double e = el__fit_noise_rms(xy, n, sc);
+                ck_assert_msg(e <= bound[a], "n %zu k %g: estimate %.3g of the rms radius", n, p.k, e);
+            }
+    free(xy);
+    free(s);
+}
+END_TEST
+
+/* Equal spacing: the plain third differences' figure to the bit (the probe does not find
+ * it twice too high), noisy or not, dense and sparse beyond the probe, at scales from
+ * 1e-150 to 1e150; with every stencil in the probe (n <= 37) the smaller of the two. */
+START_TEST(test_noise_equal_spacing_is_plain)
+{
+    const size_t ns[] = {8, 20, 37, 38, 70, 200, 1000, 5000};
+    const double noises[] = {1e-3, 1e-2};
+    const double scales[] = {1e-150, 1.0, 1e150};
+    unsigned long long rng = 777;
+    double *xy = malloc(sizeof(double) * 2 * 5000), *s = malloc(sizeof(double) * 5000);
+    ck_assert(xy && s);
+    for (size_t a = 0; a < sizeof ns / sizeof ns[0]; a++)
+        for (size_t b = 0; b < sizeof noises / sizeof noises[0]; b++)
+            for (size_t c = 0; c < sizeof scales / sizeof scales[0]; c++) {
+                const size_t n = ns[a];
+                const el_smooth_params p = {0.0, 0.0, 0.3, 1.2, b ? 1.3 : 0.7, 0.5, 4.0};
+                for (size_t i = 0; i < n; i++) s[i] = p.length * (double)i / (double)(n - 1);
+                ck_assert_int_eq(el_smooth_eval(&p, n, s, xy, NULL, NULL), EL_OK);
+                for (size_t i = 0; i < 2 * n; i++) xy[i] = scales[c] * (xy[i] + noises[b] * p.length * test_normal(&rng));
+                const double got = noise_of(xy, n), plain = plain_noise(xy, n);
+                if (n - 5 > 32) ck_assert_msg(got == plain, "n %zu noise %g scale %g: %.17g, plain %.17g", n,
+                                              noises[b], scales[c], got, plain);
+                else ck_assert_msg(got <= plain && got > 0.0, "n %zu: %.17g, plain %.17g", n, got, plain);
+            }
+    free(xy);
+    free(s);
+}
+END_TEST
+
+/* The frame estimate (Vandermonde weights, normalised by the largest, the frame's
+ * direction unnormalised; a probe of 32 stencils for more points) against its definition:
+ * with every stencil in the probe, min(plain, definition) to rounding (1e-9 relative, or
+ * 1e-12 of the rms radius where noise-free stencils cancel); with more, either
+ * the plain figure (the probe not below half of it) or min(plain, definition). Uneven and
+ * sketched (a gap) places, noisy and noise-free, k across 1, scales 1e-150 .. 1e150. */
+START_TEST(test_noise_frame_by_definition)
+{
+    const size_t ns[] = {6, 7, 12, 37, 38, 100, 1000};
+    const double noises[] = {0.0, 1e-4, 1e-2};
+    const double ks[] = {0.5, 0.999, 1.001, 2.0};
+    const double scales[] = {1e-150, 1.0, 1e150};
+    unsigned long long rng = 4242;
+    double *xy = malloc(sizeof(double) * 2 * 1000), *s = malloc(sizeof(double) * 1000);
+    ck_assert(xy && s);
+    for (size_t a = 0; a < sizeof ns / sizeof ns[0]; a++)
+        for (size_t b = 0; b < sizeof noises / sizeof noises[0]; b++)
+            for (size_t kk = 0; kk < sizeof ks / sizeof ks[0]; kk++)
+                for (int sketch = 0; sketch < 2; sketch++) {
+                    const size_t n = ns[a];
+                    const double sc0 = scales[(a + b + kk) % 3];
+                    const el_smooth_params p = {0.0, 0.0, -0.4, 1.5, ks[kk], 0.2, 3.0};
+                    if (sketch) {   /* 70 % of the points on the first 30 %, a gap, the rest */
+                        const size_t m = (size_t)(0.7 * (double)n);
+                        for (size_t i = 0; i < n; i++)
+                            s[i] = i < m ? 0.3 * p.length * (double)i / (double)(m - 1)
+                                         : p.length * (0.45 + 0.55 * (double)(i - m) / (double)(n - m - 1 ? n - m - 1 : 1));
+                    } else {
+                        random_places(&rng, n, p.length, s);
+                    }
+                    ck_assert_int_eq(el_smooth_eval(&p, n, s, xy, NULL, NULL), EL_OK);
+                    for (size_t i = 0; i < 2 * n; i++) xy[i] = sc0 * (xy[i] + noises[b] * p.length * test_normal(&rng));
+                    const double got = noise_of(xy, n) / sc0, plain = plain_noise(xy, n) / sc0;
+                    double xs[2 * 1000];
+                    for (size_t i = 0; i < 2 * n; i++) xs[i] = xy[i] / sc0;
+                    const double def = fmin(plain, frame_by_definition(xs, n));
+                    /* to rounding: relative, or of the rms radius where noise-free stencils
+                     * cancel to ~1e-9 (coordinates rounded to 1e-16, the two forms of w) */
+                    const int same = fabs(got - def) <= 1e-9 * def || fabs(got - def) <= 1e-12;
+                    if (n - 5 <= 32) ck_assert_msg(same, "n %zu noise %g k %g sketch %d: %.17g, definition %.17g",
+                                                   n, noises[b], ks[kk], sketch, got, def);
+                    else ck_assert_msg(same || got == plain, "n %zu noise %g k %g sketch %d: %.17g, definition %.17g, plain %.17g",
+                                       n, noises[b], ks[kk], sketch, got, def, plain);
+                }
+    free(xy);
+    free(s);
+}
+END_TEST
+
+/* Repeated points (every point twice, as a pen at rest or a scanner's duplicates) are no
+ * independent samples: the frame estimate skips stencils with a point repeated, so the
+ * copies' zero difference is not taken for zero noise (measured before: 1e-17 of the
+ * truth, and test_fit_lbfgs.c's paired loop tried every candidate); here every stencil
+ * holds a copy, so the plain figure, not below half the noise. */
+START_TEST(test_noise_repeated_points)
+{
+    const size_t ns[] = {20, 200};
+    unsigned long long rng = 99;
+    double xy[2 * 400], s[200];
+    for (size_t a = 0; a < sizeof ns / sizeof ns[0]; a++) {
+        const size_t n = ns[a];
+        const double sigma = 0.1 / (double)n;
+        random_places(&rng, n, 1.0, s);
+        for (size_t i = 0; i < n; i++) {
+            const double x = s[i] + sigma * test_normal(&rng), y = 0.5 * s[i] + sigma * test_normal(&rng);
+            xy[4 * i] = xy[4 * i + 2] = x;
+            xy[4 * i + 1] = xy[4 * i + 3] = y;
+        }
+        const double e = noise_of(xy, 2 * n);
+        ck_assert_msg(e >= 0.5 * sqrt(2.0) * sigma, "n %zu repeated: estimate %.3g, noise %.3g", n, e, sqrt(2.0) * sigma);
+    }
+}
+END_TEST
+
+static Suite *suite(void)
+{
+    Suite *s = suite_create("guess_noise");
+    TCase *tc = tcase_create("core");
+    tcase_set_timeout(tc, 120);
+    tcase_add_test(tc, test_noise_pure_noise_uneven);
+    tcase_add_test(tc, test_noise_free_curves_uneven);
+    tcase_add_test(tc, test_noise_equal_spacing_is_plain);
+    tcase_add_test(tc, test_noise_frame_by_definition);
+    tcase_add_test(tc, test_noise_repeated_points);
+    suite_add_tcase(s, tc);
+    return s;
+}
+
+int main(void) { return test_run_suite(suite()); }
