@@ -614,7 +614,7 @@ double el__fit_start_turn(int model, const double *v, const double *xy, size_t n
     for (size_t a = 0; a < n; a += FIT_BLOCK) {
         const size_t m = n - a < FIT_BLOCK ? n - a : FIT_BLOCK;
         for (size_t i = 0; model == FIT_SMOOTH && i < m; i++) s[i] = t[a + i] * v[6];
-        if (model == FIT_DISCRETE ? el__fit_discrete_rows(v, &w, m, G, NULL, tmp) : el__fit_smooth_rows(v, m, s, G, NULL))
+        if (model == FIT_DISCRETE ? el__fit_discrete_rows(v, &w, m, G, NULL, 0, tmp) : el__fit_smooth_rows(v, m, s, G, NULL))
             return 0.0;
         for (size_t i = 0; i < m; i++) {
             const double ax = G[2 * i] - v[0], ay = G[2 * i + 1] - v[1];
