@@ -253,10 +253,6 @@ double el__fit_denorm_param(int model, int j, double v, double cx, double cy, do
 /* The rms noise of the points from second differences, in normalised units. */
 double el__fit_noise_rms(const double *xy, size_t n, double sc);
 double el__fit_noise_plain(const double *xy, size_t n, double sc);
-/* The turn about a guess v's start (normalised) that lays its points, paired (vertex i or
- * gamma(t_i L)), best onto the data's, both from their starts, the data's at S (guess.c). */
-double el__fit_start_turn(int model, const double *v, const double *xy, size_t n, double cx, double cy, double sc,
-                          const double *S, const double *t, double *tmp);
 
 /* ------------------------------------------------------------------ results */
 

@@ -602,31 +602,6 @@ static double place(int model, const points *p, const double *v, double *x0, dou
     return isfinite(r) ? r : HUGE_VAL;
 }
 
-/* The turn about a candidate's start that best lays its points onto the data, both taken
- * from their starts (Procrustes: G_i - G_0 onto P_i - S, paired as the paired start pairs
- * them: vertex i, or gamma(t_i L)), for a fit whose start point S is held. */
-double el__fit_start_turn(int model, const double *v, const double *xy, size_t n, double cx, double cy, double sc,
-                          const double *S, const double *t, double *tmp)
-{
-    double G[2 * FIT_BLOCK], s[FIT_BLOCK], cross = 0.0, dot = 0.0;
-    fit_walk w;
-    if (model == FIT_DISCRETE) el__fit_walk_start(v, &w);
-    for (size_t a = 0; a < n; a += FIT_BLOCK) {
-        const size_t m = n - a < FIT_BLOCK ? n - a : FIT_BLOCK;
-        for (size_t i = 0; model == FIT_SMOOTH && i < m; i++) s[i] = t[a + i] * v[6];
-        if (model == FIT_DISCRETE ? el__fit_discrete_rows(v, &w, m, G, NULL, 0, tmp) : el__fit_smooth_rows(v, m, s, G, NULL))
-            return 0.0;
-        for (size_t i = 0; i < m; i++) {
-            const double ax = G[2 * i] - v[0], ay = G[2 * i + 1] - v[1];
-            const double bx = (xy[2 * (a + i)] - cx) / sc - S[0], by = (xy[2 * (a + i) + 1] - cy) / sc - S[1];
-            cross += ax * by - ay * bx;
-            dot += ax * bx + ay * by;
-        }
-    }
-    const double turn = atan2(cross, dot);
-    return isfinite(turn) ? turn : 0.0;
-}
-
 /* Smooth parameters from a continuous guess (x0 = y0 = 0): internal form (w). */
 static void to_internal(int model, const cguess *g, size_t n, double *v)
 {

@@ -4,8 +4,7 @@
  * spacing and its merged polygon, each of these stopped in a worse basin (rms 0.0328,
  * 0.0484, 0.0282 against 0.0040, 0.0081, 0.0049): the plain third differences took the
  * unevenness for noise (7-20 x the truth), and the guesses of the points themselves, with
- * sides of a few noise levels, all landed in the same wrong basin. With the end pinned, the
- * guesses are turned about their start before they are moved onto the pinned point. */
+ * sides of a few noise levels, all landed in the same wrong basin. */
 #include "testutil.h"
 #include <math.h>
 
@@ -61,25 +60,6 @@ static const double LOOP35[] = {
 };
 static const el_smooth_params LOOP35_TRUE = {0.0, 0.0, -2.0605714552488221, 1.311762577844654, 1.5821603134562194, 3.370640416661506, 5.3454115274955019};
 
-/* 20 points of a loop (k = 1.154) at random places, 0.1 % noise, the end pinned at the
- * curve's true end (fit_set.py seed 10, case 32): the fit runs on the points reversed with
- * the start point held; each guess was moved onto it unturned, and the fit stopped at rms
- * 0.067 (from the true parameters 0.0061) */
-static const double PINNED20[] = {
-    0.00071488549067545096, -0.0027673381209898972, 0.10345483448596954, -0.16402887078292433,
-    0.70307500216097374, -0.029434625287523577, 0.70925319714053003, 0.24966571659214751,
-    0.33119603138784887, 0.54564992630750819, 0.30763512930882725, 0.57073245361388747,
-    -0.082324554553367055, 0.51384169204010077, -0.10349928637211085, 0.51772956643495527,
-    -0.18016694647221657, 0.47685662638112641, -0.22786907328181771, 0.43744951434926649,
-    -0.26667618092158746, 0.41499434093266752, -0.26957668882653429, 0.40701046634670873,
-    -0.35446840557835679, 0.32612774364106945, -0.3592123318230544, 0.32300891508323676,
-    -0.43857536450521029, 0.21171462318870149, -0.44396789802071418, 0.20166532631992801,
-    -0.4998186894379063, -0.10307213825519505, -0.48528126280541478, -0.21343299803867971,
-    -0.074560504516567552, -0.48481071951622112, -0.33616867660114813, 0.36406522678131642,
-};
-static const el_smooth_params PINNED20_TRUE = {0.0, 0.0, 0.4084243599242281, 1.479843057751147, 1.1536062013757218, 2.9602652455201355, 5.0020928265690019};
-static const double PINNED20_END[2] = {-0.33427591937386736, 0.36745772855814351};
-
 static void check_smooth(const double *xy, size_t n, const el_smooth_params *truth)
 {
     el_fit_smooth_result def, from_truth;
@@ -115,25 +95,6 @@ START_TEST(test_fit_sparse_uneven_loop_discrete)
 }
 END_TEST
 
-START_TEST(test_fit_sparse_uneven_end_pinned_discrete)
-{
-    const size_t n = sizeof PINNED20 / sizeof PINNED20[0] / 2;
-    const el_smooth_params *t = &PINNED20_TRUE;
-    const double h = t->length / (double)(n - 1);
-    const el_discrete_params truth = {t->x0, t->y0, h, t->phi, sqrt(t->mu) * h, t->q, t->k};
-    el_fit_options o;
-    el_fit_options_defaults(&o);
-    o.constraints = EL_CONSTRAIN_END_POINT;
-    o.end_point[0] = PINNED20_END[0];
-    o.end_point[1] = PINNED20_END[1];
-    el_fit_discrete_result def, from_truth;
-    ck_assert_int_eq(el_fit_discrete(PINNED20, n, &o, NULL, &def, NULL, NULL), EL_OK);
-    o.use_initial = 1;
-    ck_assert_int_eq(el_fit_discrete(PINNED20, n, &o, &truth, &from_truth, NULL, NULL), EL_OK);
-    ck_assert_msg(def.rms <= 1.01 * from_truth.rms, "default rms %.6g, from the truth %.6g", def.rms, from_truth.rms);
-}
-END_TEST
-
 static Suite *suite(void)
 {
     Suite *s = suite_create("fit_basin");
@@ -141,7 +102,6 @@ static Suite *suite(void)
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, test_fit_sparse_uneven_loop_smooth);
     tcase_add_test(tc, test_fit_sparse_uneven_loop_discrete);
-    tcase_add_test(tc, test_fit_sparse_uneven_end_pinned_discrete);
     suite_add_tcase(s, tc);
     return s;
 }
