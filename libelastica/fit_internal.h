@@ -55,8 +55,9 @@ int el__fit_smooth_rows(const double *v, size_t m, const double *s, double *xy, 
 
 /* The discrete vertices walked in blocks: the walk carries the next vertex and its
  * derivative, so vertex i of a block has the same d gamma_i / d v as one call over
- * the whole curve (tested). * jac (when not NULL): rows jac[(2i+c)*7 + j], or with cstride > 0 by column,
- * jac[j * cstride + 2i + c], columns 2..6 only (the paired fit's fold). */
+ * the whole curve (tested). jac (when not NULL): rows jac[(2i+c)*7 + j], or with
+ * cstride > 0 by column, jac[j * cstride + 2i + c], columns 2..6 only (the paired
+ * fit's fold). */
 typedef struct fit_walk {
     size_t next;                 /* index of the next vertex */
     double xy[2], d[2][FIT_NP];  /* that vertex and its derivative */
@@ -215,10 +216,10 @@ int el__fit_feet_project_list(const fit_objective *o, double v[2][FIT_NP], const
 int el__fit_feet_distances(fit_objective *o, const double *x, double *dist, double *foot, int *side);
 /* The same for the polygon of nv vertices V (normalised) of one discrete curve of
  * segment h, vertex j <-> point first + step j. */
-/* The direction of (x, y) in (-pi, pi] to within 2e-6 (fit_nearest.c). */
-double el__fit_direction(double x, double y);
 void el__fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, double h,
                                size_t first, long step, double *dist, double *foot);
+/* The direction of (x, y) in (-pi, pi] to within 2e-6 (fit_nearest.c). */
+double el__fit_direction(double x, double y);
 
 /* The distances above, corrected where the curve comes nearer elsewhere (a loop
  * passing close to itself): dist, foot, side (may be NULL) in and out; for the discrete
@@ -250,7 +251,8 @@ int el__fit_normalisation(const double *xy, size_t n, double *cx, double *cy, do
 /* A parameter j of a model in input units <-> normalised (the smooth mu <-> w). */
 double el__fit_norm_param(int model, int j, double v, double cx, double cy, double sc);
 double el__fit_denorm_param(int model, int j, double v, double cx, double cy, double sc);
-/* The rms noise of the points from second differences, in normalised units. */
+/* The rms noise of the points from third differences, in normalised units, at any
+ * spacing (guess.c); _plain: the plain differences alone (equal spacing). */
 double el__fit_noise_rms(const double *xy, size_t n, double sc);
 double el__fit_noise_plain(const double *xy, size_t n, double sc);
 
