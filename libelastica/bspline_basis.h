@@ -7,17 +7,14 @@
 #ifndef EL_BSPLINE_BASIS_H
 #define EL_BSPLINE_BASIS_H
 #include <stddef.h>
+#include "internal.h"
 
 enum { MAXDEG_FIT = 7, MAXDEG_BASIS = 15 };
 
 /* The fit's inner loops are written once with the degree p as a parameter and
  * inlined with p = 3 (the default degree) as a constant, which lets the
  * compiler unroll them; other degrees take the generic copy. */
-#ifdef __GNUC__
-#define FIT_INLINE static inline __attribute__((always_inline))
-#else
-#define FIT_INLINE static inline
-#endif
+#define FIT_INLINE EL__INLINE
 #if defined(__clang__)
 #define FIT_UNROLL _Pragma("unroll 8")   /* (a full unroll of the generic copy fails) */
 #elif defined(__GNUC__) && __GNUC__ >= 8

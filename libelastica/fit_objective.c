@@ -210,7 +210,7 @@ static void fold(sums *s, const double *col, int stride, const double *res, int 
 
 /* fold for rows (x, y) of points paired with a discrete curve's vertices, whose first
  * two columns, d/dx0 and d/dy0, are (1, 0, 1, 0, ...) and (0, 1, 0, 1, ...) (not stored:
- * paired_rows from column 2): their dot products as sums of every other entry (the same
+ * el__fit_discrete_rows writes columns 2..6): their dot products as sums of every other entry (the same
  * numbers; 15 of the 35 products), their products with each other the counts of ones
  * (exact, as dot sums them) and 0 (which adds nothing to a sum that starts at +0). */
 static void fold_paired(sums *s, const double *col, int stride, const double *res, int rows)
@@ -231,9 +231,9 @@ static void fold_paired(sums *s, const double *col, int stride, const double *re
 }
 
 /* Residual rows of paired points: gamma_i - P_g for the m samples, g = first + step i;
- * the Jacobian's rows jac (when not NULL) to columns, from j0 on. */
+ * the Jacobian's rows jac (when not NULL) to columns. */
 static double paired_rows(const fit_objective *o, const double *xy, const double *jac, size_t m,
-                          size_t first, long step, int j0, double *col, double *res)
+                          size_t first, long step, double *col, double *res)
 {
     double f = 0.0;
     const int stride = 2 * FIT_BLOCK;
@@ -246,7 +246,7 @@ static double paired_rows(const fit_objective *o, const double *xy, const double
             res[r] = d;
             f += d * d;
             if (jac)
-                for (int j = j0; j < FIT_NP; j++) col[j * stride + r] = jac[r * FIT_NP + j];
+                for (int j = 0; j < FIT_NP; j++) col[j * stride + r] = jac[r * FIT_NP + j];
         }
     }
     return f;
@@ -268,7 +268,7 @@ static int discrete_paired(fit_objective *o, const double *v, size_t nv, size_t 
         const size_t k0 = done == 0 && skip0 ? 1 : 0;
         const size_t g0 = (size_t)((long)first + step * (long)(done + k0));
         if (want) {
-            *f += paired_rows(o, xy + 2 * k0, NULL, m - k0, g0, step, 0, NULL, res);
+            *f += paired_rows(o, xy + 2 * k0, NULL, m - k0, g0, step, NULL, res);
             fold_paired(S, col + 2 * k0, 2 * FIT_BLOCK, res, (int)(2 * (m - k0)));
         } else {
             for (size_t i = k0; i < m; i++) {
@@ -385,7 +385,7 @@ static int smooth_paired(fit_objective *o, const double *v, int want, sums *S, d
         for (size_t i = 0; i < m; i++) s[i] = o->t[a + i] * v[6];
         if ((st = el__fit_smooth_rows(v, m, s, xy, want ? jac : NULL))) return st;
         if (want) {
-            *f += paired_rows(o, xy, jac, m, a, 1, 0, col, res);
+            *f += paired_rows(o, xy, jac, m, a, 1, col, res);
             fold(S, col, 2 * FIT_BLOCK, res, (int)(2 * m));
         } else {
             for (size_t i = 0; i < m; i++) {

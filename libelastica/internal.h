@@ -9,6 +9,14 @@
 #define M_PI 3.14159265358979323846
 #endif
 
+/* A hot inner function inlined into its callers (where the compiler would not by itself:
+ * the B-spline fit's loops with the degree a constant, the Jacobi walk's addition step). */
+#ifdef __GNUC__
+#define EL__INLINE static inline __attribute__((always_inline))
+#else
+#define EL__INLINE static inline
+#endif
+
 /* Turn GSL's aborting error handler off (once per process, thread-safe); every
  * entry point that calls GSL calls this first and maps GSL statuses to EL_ codes. */
 void el__gsl_quiet(void);

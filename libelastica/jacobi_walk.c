@@ -51,12 +51,7 @@ enum {
  * The walk's inner loop, one step a vertex: inlined into its callers (the same
  * arithmetic; the 42 discrete bench fits: 1.3 % fewer instructions).
  */
-#ifdef __GNUC__
-#define STEP_INLINE static inline __attribute__((always_inline))
-#else
-#define STEP_INLINE static inline
-#endif
-STEP_INLINE void add_step(double k, const el_jacobi *a, const el_jacobi *ak,
+EL__INLINE void add_step(double k, const el_jacobi *a, const el_jacobi *ak,
                      const el_jacobi *b, const el_jacobi *bk, el_jacobi *r, el_jacobi *rk)
 {
     const double m = k * k, ss = a->sn * b->sn, den = 1.0 - m * ss * ss, id = 1.0 / den;

@@ -7,7 +7,6 @@
 #include "testutil.h"
 #include "fit_internal.h"
 #include <string.h>
-#include <gsl/gsl_statistics_double.h>
 
 static int cmp_double(const void *a, const void *b)
 {
@@ -31,26 +30,12 @@ static double noise_of(const double *xy, size_t n)
     return el__fit_noise_rms(xy, n, sc) * sc;
 }
 
-/* Plain third differences, today's formula (guess.c's noise_plain), in the input's units. */
+/* The plain third differences alone (guess.c's el__fit_noise_plain), in the input's units. */
 static double plain_noise(const double *xy, size_t n)
 {
     double cx, cy, sc;
     ck_assert_int_eq(el__fit_normalisation(xy, n, &cx, &cy, &sc), EL_OK);
-    const size_t m = n - 3 < 65536 ? n - 3 : 65536;
-    double *d = malloc(sizeof(double) * m);
-    ck_assert_ptr_nonnull(d);
-    for (size_t a = 0; a < m; a++) {
-        const size_t i = 1 + a * (n - 3) / m;
-        double e[2];
-        for (int c = 0; c < 2; c++) {
-            const double p0 = xy[2 * (i - 1) + c], p1 = xy[2 * i + c], p2 = xy[2 * (i + 1) + c], p3 = xy[2 * (i + 2) + c];
-            e[c] = ((p3 - p0) - 3.0 * (p2 - p1)) / sc;
-        }
-        d[a] = e[0] * e[0] + e[1] * e[1];
-    }
-    const double med = gsl_stats_median(d, 1, m);
-    free(d);
-    return sqrt(med / (20.0 * 0.69314718055994531)) * sc;
+    return el__fit_noise_plain(xy, n, sc) * sc;
 }
 
 /* The frame estimate by its definition: stencil P_{i-1} .. P_{i+2} in the unit frame of
