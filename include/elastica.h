@@ -346,7 +346,8 @@ typedef struct el_fit_options {
                             20 update pairs; without constraint rows stopped by the default path's
                             first-order certificate, ipopt_status 5 (User_Requested_Stop) then;
                             the smooth orthogonal fit starts from a paired one by the same L-BFGS) */
-    int max_candidates;  /* initial guesses fitted at most (default 3; 1 = the best guess only) */
+    int max_candidates;  /* initial guesses fitted at most (default 6, all the guess gives; 1 = the best
+                            guess only); fitting stops at the first within 1.5 noise levels of the data */
     int param_mode;      /* smooth model: enum el_param_mode (default EL_PARAM_AUTO) */
     int use_initial;     /* 1: start from the caller's initial parameters instead of the guess */
     int distance;        /* enum el_fit_distance (default EL_DISTANCE_AUTO) */
@@ -400,7 +401,17 @@ typedef struct el_fit_smooth_result {
  * rms radius), so the fit is invariant under similarity transforms.
  * initial is read only when opt->use_initial (else it may be NULL); opt NULL =
  * defaults. Up to opt->max_candidates initial guesses (el_guess_discrete) are
- * fitted and the best kept.
+ * fitted and the best kept. A constrained fit whose guesses all end above the data's
+ * noise also starts from the unconstrained fit's curve (guesses started under the
+ * constraints can all miss the data's basin). By distance to the polygon or curve, a
+ * fit must follow the points: one that strays from them (a loop or a pass where there
+ * is no point, or the points passed out of order: more than a tenth of the points'
+ * polygon length of curve unaccounted for by the arcs between feet, 1.6 times their
+ * chord plus 4 noise levels each) is fitted again from the paired fit's curve, which
+ * passes them in order, and that fit is kept when it follows the points or strays less
+ * than half as far, even at a higher rms (without this, 41 noisy points along an arc
+ * of length 1 were fitted at a lower rms by a curve of length 4.5 looping twice round
+ * them). Such refits cost up to a few seconds on sparse data with constraints.
  * Solver: Levenberg-Marquardt, its result certified by the first-order condition
  * (the residual vector orthogonal to every column of the Jacobian to 1e-8, or zero to
  * rounding); Ipopt runs only for bounds that are active, constraints, an uncertified

@@ -233,6 +233,16 @@ int el__fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], cons
  * FIT_WORK doubles. */
 int el__fit_curve_distances(fit_objective *ob, const double *x, double v[2][FIT_NP], int projected, double *d,
                             double *fs, double *tmp);
+/* fit_refit.c: how far a fit by distance to the curve strays from its points: the
+ * length of curve (total L, input units like the rest) that no point accounts for, the
+ * arc between feet fs adjacent along the curve beyond 1.6 times their points' chord (an
+ * arc turning by pi) and beyond the first and last foot, each less 4 noise levels, over
+ * the length of the points' polygon: a loop or a pass where there is no point, or the
+ * points' order run backwards (a point whose foot lies on another pass of a loop, where
+ * the passes cross, adds nothing). Above FIT_STRAY the fit does not follow its points;
+ * -1 when out of memory. */
+#define FIT_STRAY 0.1
+double el__fit_stray(const double *xy, size_t n, const double *fs, double L, double noise);
 /* fit_refit.c: the smooth distances d and feet fs of the points at x (v its parameters,
  * one curve), the feet projected from o->s, then those found nearer on another pass of
  * the curve from its samples (*moved of them whose foot in o->s lies on [0, L]). */
@@ -264,6 +274,7 @@ double el__fit_noise_plain(const double *xy, size_t n, double sc);
 typedef struct fit_out {
     double params[FIT_NP], initial[FIT_NP];
     double rms, max_error;
+    double f;    /* the objective (normalised units) of the kept fit's last solve */
     int iterations, candidates, ipopt_status, used_ipopt, status, mode, distance, constraint;
 } fit_out;
 

@@ -297,3 +297,29 @@ out:
     free(unproven);
     return st;
 }
+
+/* (foot, point) pairs by foot */
+typedef struct { double s; size_t i; } foot_of;
+static int by_foot(const void *a, const void *b)
+{
+    const double x = ((const foot_of *)a)->s, y = ((const foot_of *)b)->s;
+    return (x > y) - (x < y);
+}
+
+double el__fit_stray(const double *xy, size_t n, const double *fs, double L, double noise)
+{
+    foot_of *f = malloc(sizeof *f * n);
+    if (!f) return -1.0;
+    for (size_t i = 0; i < n; i++) f[i] = (foot_of){fs[i], i};
+    qsort(f, n, sizeof *f, by_foot);
+    const double slack = 4.0 * noise;
+    double poly = 0.0, stray = fmax(0.0, f[0].s - slack) + fmax(0.0, L - f[n - 1].s - slack);
+    for (size_t k = 0; k + 1 < n; k++) {
+        const size_t a = f[k].i, b = f[k + 1].i;
+        const double chord = hypot(xy[2 * b] - xy[2 * a], xy[2 * b + 1] - xy[2 * a + 1]);
+        stray += fmax(0.0, f[k + 1].s - f[k].s - 1.6 * chord - slack);
+        poly += hypot(xy[2 * k + 2] - xy[2 * k], xy[2 * k + 3] - xy[2 * k + 1]);
+    }
+    free(f);
+    return stray / poly;
+}

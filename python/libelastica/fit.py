@@ -237,7 +237,12 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     Default: orthogonal, except the discrete model on evenly spaced points (an
     equilateral polygon, e.g. from :func:`resample_equilateral`, or samples at equal
     steps: runs of max(3, (n-1)/16) segments of means within 1.3 x): paired.
-    Sketched or unevenly scanned points need no resampling.
+    Sketched or unevenly scanned points need no resampling. A fit by distance to the
+    curve follows the points: one that strays from them (a loop or a pass where there is
+    no point, the points passed out of order) is fitted again from the paired fit and
+    replaced when that one follows them, even at a higher rms. max_candidates: initial
+    guesses fitted at most (default 6; fitting stops at the first that reaches the
+    data's noise level).
     constraints: any of ``{"start_point": (x, y), "end_point": (x, y),
     "start_tangent": angle, "end_tangent": angle, "start_curvature": kappa,
     "end_curvature": kappa, "length": (lo, hi), "k": (lo, hi)}`` (angles in radians,

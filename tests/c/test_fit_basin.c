@@ -6,6 +6,7 @@
  * unevenness for noise (7-20 x the truth), and the guesses of the points themselves, with
  * sides of a few noise levels, all landed in the same wrong basin. */
 #include "testutil.h"
+#include "fit_internal.h"
 #include <math.h>
 
 /* 20 points of a loop (k = 1.128) at random arc lengths, noise 0.1 % of the length per
@@ -95,6 +96,178 @@ START_TEST(test_fit_sparse_uneven_loop_discrete)
 }
 END_TEST
 
+/* 41 points of an arc (k = 1.391) at random arc lengths, noise 0.5 % of the extent
+ * (sets.py seed 4, case 22) */
+static const double ARC41[] = {
+    -0.0021813758762006092, -0.0052292387210803922, 0.0087127058507547976, -0.03805970438382205,
+    0.035425435655133855, -0.10892245824315294, 0.048302579252443877, -0.13177186126034882,
+    0.07102954580401763, -0.16468431621786678, 0.067854993726289697, -0.17938739507307314,
+    0.082069821063578921, -0.20049346125677089, 0.0905802843242796, -0.20476657947341678,
+    0.095199943298717199, -0.20854829736921268, 0.095999725817940987, -0.21434120970990245,
+    0.10739167275311143, -0.23902165814789025, 0.12472495142156134, -0.25085734471869142,
+    0.18040575365259312, -0.29218995117397589, 0.17083768358744955, -0.28832947138753262,
+    0.16698425539272282, -0.28798064803546108, 0.17381494776470213, -0.29516246200460239,
+    0.16992171457425118, -0.29365888458696671, 0.17784130944179191, -0.29410543913102982,
+    0.20034956337783835, -0.3071395943995231, 0.21958131350764026, -0.3152680217613909,
+    0.24321943026740622, -0.3263078692317391, 0.2548449797964451, -0.34308303578596044,
+    0.27293914650575996, -0.35177117213408532, 0.28718937870892097, -0.35530766360633848,
+    0.38935832665455233, -0.37833890339169479, 0.38960358480699342, -0.37888996521020307,
+    0.38835245954318537, -0.37578727066701695, 0.39830615088211363, -0.37682152553174364,
+    0.39259899295870138, -0.3801254231384425, 0.41446575896713556, -0.37736694927132614,
+    0.43745035582771435, -0.38037067698349003, 0.5127347528813514, -0.37992198264946342,
+    0.52590731140038538, -0.36936839188249815, 0.6124508664469549, -0.34376474950803121,
+    0.6433005188124864, -0.32971094019171365, 0.64124484565440476, -0.34122776265352595,
+    0.65435187162235742, -0.32986915382826465, 0.66278855482486698, -0.32415835493950307,
+    0.69457172522367616, -0.30380614937280404, 0.74555473065309796, -0.2482767736899669,
+    0.7596681339607767, -0.22965616331482561,
+};
+static const el_smooth_params ARC41_TRUE = {0, 0, 2.2596032634190841, 1.2401828374828392, 1.3911174827516055, -1.611485220265461, 1};
+/* 43 points of an S (k = 0.253), noisy, start point and tangent of the true curve
+ * (sets.py seed 4, case 532) */
+static const double S43[] = {
+    -0.0034628547445482495, -0.0016390295251229362, 0.00015623852675942553, -0.011124592484579704,
+    0.0077391943660595373, 0.00098625384359120327, 0.0023353956693734522, -0.0092673709599419597,
+    0.013035636197657356, -0.022397120885965047, 0.023349365598889261, -0.028523532796343298,
+    0.032116126218894488, -0.036714006173900374, 0.029225419645743583, -0.056070003511251701,
+    0.058399826121584557, -0.079782915094867068, 0.072818266970259948, -0.10679859052367115,
+    0.093297799090111128, -0.12371691663331505, 0.1009631533076998, -0.13136114450213707,
+    0.19183522351453583, -0.22558535412381345, 0.20584814226330869, -0.24365164718502952,
+    0.21972719387852946, -0.25845711956818929, 0.22780744578983342, -0.26440561102200633,
+    0.23431369020605594, -0.26032005249162954, 0.2754719639118981, -0.30110714507709074,
+    0.27978148629068605, -0.29498342320707005, 0.28901649141499253, -0.30523774823331301,
+    0.31068811790072276, -0.31592759350735061, 0.31875969734447801, -0.32835634886465875,
+    0.34454978288110449, -0.35290609896584879, 0.38049676484131834, -0.36905802175293673,
+    0.41227094490643384, -0.39384529737265528, 0.42529305180565308, -0.40113327636539037,
+    0.45590784084212749, -0.41833946308631542, 0.45817323472945576, -0.41769828159695827,
+    0.4598415946192152, -0.42279974334410597, 0.45432471376482242, -0.41691944170151074,
+    0.49381037838486391, -0.43615413923002722, 0.51155662248044453, -0.44412108795800864,
+    0.50672717506606324, -0.44279456048783028, 0.60312781119851688, -0.4874302222259061,
+    0.63963920423276355, -0.5042178527680341, 0.666793856719338, -0.51251696780725486,
+    0.70975763363148181, -0.5345552057324281, 0.73745956679946423, -0.54224728441034764,
+    0.73884771097348945, -0.54233438790632249, 0.73552142321702563, -0.54278847169490174,
+    0.78461208128173932, -0.55826351932308427, 0.78449118455955869, -0.55969071252573832,
+    0.79795852483981333, -0.56863164199398841,
+};
+static const el_smooth_params S43_TRUE = {0, 0, -0.87682342232723975, 3.1006651709664643, 0.25261438075693143, -0.2566323366220109, 1};
+static const double S43_TANGENT = -1.0050640981928318;
+/* 37 points of an S (k = 0.656), noisy, start point and tangent of the true curve
+ * (sets.py seed 5, case 194), fitted by the discrete model */
+static const double S37[] = {
+    -0.0070275334307143642, -0.0070879768388448349, 0.012874300516338208, 0.058391963229424249,
+    0.016230194017109172, 0.055967311028188235, 0.014153288553876257, 0.08484440811275519,
+    0.01501170659732187, 0.096503345004815361, 0.015426678108724386, 0.12856446953917172,
+    0.022156685320476342, 0.15930464014301118, 0.023111612829397513, 0.17261488848935491,
+    0.022079737589805064, 0.18076425947133606, 0.020039581791589739, 0.18829470735053475,
+    0.014774459690096262, 0.23267495376995473, 0.017540511102462165, 0.22955419273864835,
+    0.0090220541970470833, 0.25229489648640496, -0.0017755615073066396, 0.26206224675286749,
+    0.0054704168666437052, 0.26251331623833085, -0.00010849970842636853, 0.27019313981657544,
+    0.0012876021799960789, 0.27693071321355722, -0.0081990125276286269, 0.28164845948030265,
+    0.0017222163819314252, 0.26816694617589676, -0.019102941694244945, 0.3023934669755361,
+    -0.023045734541893095, 0.30716644726713338, -0.10434529877193728, 0.35096174931993762,
+    -0.12189539678227634, 0.35106197097300496, -0.20086252263994242, 0.34934762456725849,
+    -0.22441181068045887, 0.33095281720301017, -0.25310869402925135, 0.3134049641315379,
+    -0.27173997743427597, 0.29321922261058064, -0.330598832620556, 0.21455985223401886,
+    -0.35829972441592406, 0.16852317716670642, -0.39134556541330506, 0.10897815218500817,
+    -0.4012602378305874, 0.086156839964045648, -0.43311029116032346, 0.065681754638650863,
+    -0.45456007144729704, 0.033959634485611193, -0.44913973259664525, 0.042382850979470858,
+    -0.45054308804061305, 0.026382190635405693, -0.46400681132634763, 0.028739115948809398,
+    -0.51260976318522622, -0.016401043264559198,
+};
+static const el_smooth_params S37_TRUE = {0, 0, 2.787379009765786, 24.294254516255769, 0.65592961186632659, -1.9480179631254417, 1};
+static const double S37_TANGENT = 1.3675293821974832;
+
+/* A fit that strays from its points (a loop where there is none, the points passed
+ * backwards) has a lower rms than the curve they were drawn from only by its freedom
+ * between them: the default fit follows them (fit.c's follow_points). Before, ARC41's
+ * default ended at rms 0.053 (EL_EMAXITER, three guesses), and with six guesses at
+ * 0.00354 along a curve of length 4.5 that loops twice round the arc (length 1). */
+START_TEST(test_fit_follows_sparse_points)
+{
+    const size_t n = sizeof ARC41 / sizeof ARC41[0] / 2;
+    el_fit_smooth_result def, from_truth;
+    ck_assert_int_eq(el_fit_smooth(ARC41, n, NULL, NULL, &def, NULL, NULL), EL_OK);
+    el_fit_options o;
+    el_fit_options_defaults(&o);
+    o.use_initial = 1;
+    ck_assert_int_eq(el_fit_smooth(ARC41, n, &o, &ARC41_TRUE, &from_truth, NULL, NULL), EL_OK);
+    ck_assert_msg(def.rms <= 1.01 * from_truth.rms && def.params.length <= 1.1 * from_truth.params.length,
+                  "default rms %.6g length %.4g, from the truth %.6g, %.4g", def.rms, def.params.length,
+                  from_truth.rms, from_truth.params.length);
+}
+END_TEST
+
+/* A constrained fit whose guesses, started with the constraints, all end in another basin
+ * than the data's: the unconstrained fit's curve as one more start (fit.c's
+ * unconstrained_start). Before: rms 0.00531 against 0.00331 from the true curve. */
+START_TEST(test_fit_constrained_free_start)
+{
+    const size_t n = sizeof S43 / sizeof S43[0] / 2;
+    el_fit_options o;
+    el_fit_options_defaults(&o);
+    o.constraints = EL_CONSTRAIN_START_POINT | EL_CONSTRAIN_START_TANGENT;
+    o.start_point[0] = o.start_point[1] = 0.0;
+    o.start_tangent = S43_TANGENT;
+    el_fit_smooth_result def, from_truth;
+    ck_assert_int_eq(el_fit_smooth(S43, n, &o, NULL, &def, NULL, NULL), EL_OK);
+    o.use_initial = 1;
+    ck_assert_int_eq(el_fit_smooth(S43, n, &o, &S43_TRUE, &from_truth, NULL, NULL), EL_OK);
+    ck_assert_msg(def.rms <= 1.01 * from_truth.rms, "default rms %.6g, from the truth %.6g", def.rms, from_truth.rms);
+}
+END_TEST
+
+/* The discrete model under the same two constraints: before, a polygon of length 2089
+ * (rms 0.034, EL_EMAXITER) round 37 points along an S of length 1; now the S (the fit
+ * from the true curve's polygon: the same rms to 1 %). */
+START_TEST(test_fit_follows_sparse_points_discrete)
+{
+    const size_t n = sizeof S37 / sizeof S37[0] / 2;
+    const el_smooth_params *t = &S37_TRUE;
+    const double h = t->length / (double)(n - 1);
+    const el_discrete_params truth = {t->x0, t->y0, h, t->phi, sqrt(t->mu) * h, t->q, t->k};
+    el_fit_options o;
+    el_fit_options_defaults(&o);
+    o.constraints = EL_CONSTRAIN_START_POINT | EL_CONSTRAIN_START_TANGENT;
+    o.start_point[0] = o.start_point[1] = 0.0;
+    o.start_tangent = S37_TANGENT;
+    el_fit_discrete_result def, from_truth;
+    ck_assert_int_eq(el_fit_discrete(S37, n, &o, NULL, &def, NULL, NULL), EL_OK);
+    o.use_initial = 1;
+    ck_assert_int_eq(el_fit_discrete(S37, n, &o, &truth, &from_truth, NULL, NULL), EL_OK);
+    ck_assert_msg(def.rms <= 1.01 * from_truth.rms && def.params.h <= 1.1 * from_truth.params.h,
+                  "default rms %.6g h %.4g, from the truth %.6g, %.4g", def.rms, def.params.h, from_truth.rms,
+                  from_truth.params.h);
+}
+END_TEST
+
+/* el__fit_stray by its definition: 11 points on the unit segment [0, 1] of the x axis
+ * and their feet on a curve of length L. */
+START_TEST(test_fit_stray_measure)
+{
+    double xy[22], fs[11];
+    for (int i = 0; i <= 10; i++) { xy[2 * i] = 0.1 * i; xy[2 * i + 1] = 0.0; fs[i] = 0.1 * i; }
+    /* a curve along the points: nothing strays */
+    ck_assert(el__fit_stray(xy, 11, fs, 1.0, 0.0) == 0.0);
+    /* a loop of length 0.5 between points 4 and 5: 0.6 - 1.6 * 0.1 = 0.44 of arc unaccounted */
+    for (int i = 5; i <= 10; i++) fs[i] += 0.5;
+    ck_assert(fabs(el__fit_stray(xy, 11, fs, 1.5, 0.0) - 0.44) < 1e-12);
+    ck_assert(el__fit_stray(xy, 11, fs, 1.5, 0.0) > FIT_STRAY);
+    /* within 4 noise levels: nothing */
+    ck_assert(el__fit_stray(xy, 11, fs, 1.5, 0.15) == 0.0);
+    /* the curve going on 0.3 past the last foot */
+    ck_assert(fabs(el__fit_stray(xy, 11, fs, 1.8, 0.0) - 0.74) < 1e-12);
+    /* point 7's foot on another pass, next to point 2's (where the passes cross): the
+     * feet adjacent along the curve are points near each other, nothing strays */
+    for (int i = 0; i <= 10; i++) fs[i] = 0.1 * i;
+    xy[14] = 0.2;
+    xy[15] = 0.01;
+    fs[7] = 0.201;
+    ck_assert(el__fit_stray(xy, 11, fs, 1.0, 0.0) < 1e-12);
+    /* the points passed backwards: from the first foot at 0 out to 1 and back */
+    for (int i = 0; i <= 10; i++) { xy[2 * i] = 0.1 * i; xy[2 * i + 1] = 0.0; fs[i] = i ? 2.0 - 0.1 * i : 0.0; }
+    ck_assert(el__fit_stray(xy, 11, fs, 2.0, 0.0) > FIT_STRAY);
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("fit_basin");
@@ -102,6 +275,10 @@ static Suite *suite(void)
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, test_fit_sparse_uneven_loop_smooth);
     tcase_add_test(tc, test_fit_sparse_uneven_loop_discrete);
+    tcase_add_test(tc, test_fit_follows_sparse_points);
+    tcase_add_test(tc, test_fit_constrained_free_start);
+    tcase_add_test(tc, test_fit_follows_sparse_points_discrete);
+    tcase_add_test(tc, test_fit_stray_measure);
     suite_add_tcase(s, tc);
     return s;
 }
