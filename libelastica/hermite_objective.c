@@ -52,7 +52,7 @@ typedef struct {
     double mult, acc;     /* F = mult S R_F(x, y, 1), D = mult S^3 R_D(x, y, 1) / 3 + acc */
 } reduced_amp;
 
-static void amp_reduce(double S, double C, int big, double k2, double kc2, reduced_amp *r)
+EL__INLINE void amp_reduce(double S, double C, int big, double k2, double kc2, reduced_amp *r)
 {
     double mult = 1.0, acc = 0.0, x = C * C;
     while (big || C < 0.0 || S < 0.0) {
@@ -184,7 +184,8 @@ int el__hermite_curvdata(const hprob *pr, double x, int b, hstate *st)
 }
 
 
-int el__hermite_state_class(const hprob *pr, const hstate *st, double *Fn)
+/* el__hermite_state_class, inlined into shape_prepare */
+EL__INLINE int state_class(const hprob *pr, const hstate *st, double *Fn)
 {
     const double s = pr->sigma, F1 = -2.0 * st->k0p, F2 = st->k0 * st->k0 - s;
     /* sqrt rather than hypot (inner loop; the values are far from overflow) */
@@ -194,6 +195,8 @@ int el__hermite_state_class(const hprob *pr, const hstate *st, double *Fn)
     if (st->has_sep ? st->sep > 0.0 : *Fn > s) return CLASS_INFL;   /* k'^2 = (|F| - sigma) / (2 |F|) > 0 */
     return st->k0 * st->k1 > 0.0 ? CLASS_NONINFL : CLASS_NONE;
 }
+
+int el__hermite_state_class(const hprob *pr, const hstate *st, double *Fn) { return state_class(pr, st, Fn); }
 
 /* What shape_finish needs besides the two Carlson integrals of the reduced amplitude:
  * L = Lscale F, E = Escale (F - Dfac (D + prod)), f = (E - sigma L - FP) iFn; and
@@ -211,11 +214,14 @@ typedef struct {
 /* Theorem 7 and its supplement: the curvature function through (kappa0, kappa0')
  * reaches (kappa1, kappa1') at a unique L in (0, T]; then length, energy and the
  * objective f, in two halves around the one Carlson R_F/R_D evaluation of the
- * reduced amplitude (el__hermite_shape_eval). */
-static int shape_prepare(const hprob *pr, hstate *st, shapework *w)
+ * reduced amplitude (el__hermite_shape_eval). Inlined, with amp_reduce and state_class, into
+ * its three callers: el__hermite_shape_eval_to's copy (every sample and root-finder step)
+ * drops the stores only shape_grad reads and keeps the reduced amplitude in registers; the
+ * same arithmetic, the same bits, 5.6 % fewer instructions on the tension bench (issue 16). */
+EL__INLINE int shape_prepare(const hprob *pr, hstate *st, shapework *w)
 {
     double Fn;
-    const int cls = el__hermite_state_class(pr, st, &Fn);
+    const int cls = state_class(pr, st, &Fn);
     if (cls == CLASS_NONE) return EL_EDOM;
     const double s = pr->sigma, F1 = -2.0 * st->k0p, F2 = st->k0 * st->k0 - s, km2 = Fn + s;
     /* k^2 = kappa_m^2 / (2 |F|) and its complement, exact up to the one difference

@@ -10,7 +10,8 @@
 #endif
 
 /* A hot inner function inlined into its callers (where the compiler would not by itself:
- * the B-spline fit's loops with the degree a constant, the Jacobi walk's addition step). */
+ * the B-spline fit's loops with the degree a constant, the Jacobi walk's addition step, the
+ * Hermite objective's shape_prepare). */
 #ifdef __GNUC__
 #define EL__INLINE static inline __attribute__((always_inline))
 #else

@@ -92,8 +92,8 @@ START_TEST(tension_solutions_contain_every_scanned_root)
 }
 END_TEST
 
-/* The root finder (bracket_root: regula falsi in ln|x - x_c| next to a separatrix
- * crossing, in x elsewhere, and the stop where the secant step from a full-precision value
+/* The root finder (bracket_root: inverse quadratic interpolation and regula falsi in
+ * ln|x - x_c| next to a separatrix crossing, in x elsewhere, and the stop where the secant step from a full-precision value
  * falls below the rounding of x) against its plain counterpart, the scan's bisection, on the
  * raw roots of the tension solve: each root in the x chart is exact to double precision
  * (|f| <= 1e-14, or f changes sign across x -+ 16 eps |x|: steep f rounds above 1e-14), and
@@ -451,6 +451,31 @@ START_TEST(separatrix_cache_gives_the_plain_states)
 }
 END_TEST
 
+/* A steep root: at sigma |p1-p0|^2 = 629 two solutions have kappa0 within 4e-9 of each
+ * other, and f runs from 0.04 to -0.01 over 2e-7 of kappa0 next to the second; bracket_root
+ * stopped as at a jump (L wrapping at a period: the bracket 1e-9 |x| wide with |f| >= 1e-4)
+ * with |f| = 1.7e-4 on a bracket 3.1e-8 wide, one step before |f| fell below 1e-14, when
+ * its steps were changed (inverse quadratic interpolation): the jump is now declared only
+ * where a step also fails to halve |f|. All four solutions, the steep one among them. */
+START_TEST(steep_root_next_to_a_close_pair_is_kept)
+{
+    const double p0[2] = {0.0, 0.0}, p1[2] = {0.29161144505791281, -0.2026611146185322};
+    const double t0[2] = {-0.088068724982514612, 0.99611440089979331}, t1[2] = {0.90674630356147023, -0.42167658338780223};
+    el_hermite_options opt;
+    el_hermite_options_defaults(&opt);
+    opt.sigma = 4987.6367385076646;
+    el_hermite_result res;
+    ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &opt, &res), EL_OK);
+    int steep = 0;
+    for (size_t i = 0; i < res.count; i++)
+        steep |= fabs(res.solutions[i].length - 0.4923652212900993) <= 1e-9 &&
+                 fabs(res.solutions[i].kappa0 - 88.338122366102297) <= 1e-6;
+    ck_assert_int_eq((int)res.count, 4);
+    ck_assert_msg(steep, "the steep solution (L 0.49236522129, kappa0 88.338122366) is missing");
+    el_hermite_result_free(&res);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("hermite_tension");
@@ -458,6 +483,7 @@ int main(void)
     tcase_set_timeout(tc, 300);
     tcase_add_loop_test(tc, tension_solutions_contain_every_scanned_root, 0, 6);
     tcase_add_loop_test(tc, tension_roots_exact_and_equal_to_the_bisection, 0, 6);
+    tcase_add_test(tc, steep_root_next_to_a_close_pair_is_kept);
     tcase_add_test(tc, kappa_bound_bounds_the_period_tightly);
     tcase_add_test(tc, separatrix_crossings_exact_at_high_tension);
     tcase_add_test(tc, separatrix_chart_independent_of_the_guess);
