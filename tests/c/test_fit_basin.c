@@ -97,7 +97,7 @@ START_TEST(test_fit_sparse_uneven_loop_discrete)
 END_TEST
 
 /* 41 points of an arc (k = 1.391) at random arc lengths, noise 0.5 % of the extent
- * (sets.py seed 4, case 22) */
+ * (python3 bench/bench_fit_sparse.py 4 22) */
 static const double ARC41[] = {
     -0.0021813758762006092, -0.0052292387210803922, 0.0087127058507547976, -0.03805970438382205,
     0.035425435655133855, -0.10892245824315294, 0.048302579252443877, -0.13177186126034882,
@@ -123,7 +123,7 @@ static const double ARC41[] = {
 };
 static const el_smooth_params ARC41_TRUE = {0, 0, 2.2596032634190841, 1.2401828374828392, 1.3911174827516055, -1.611485220265461, 1};
 /* 43 points of an S (k = 0.253), noisy, start point and tangent of the true curve
- * (sets.py seed 4, case 532) */
+ * (bench_fit_sparse.py 4 532) */
 static const double S43[] = {
     -0.0034628547445482495, -0.0016390295251229362, 0.00015623852675942553, -0.011124592484579704,
     0.0077391943660595373, 0.00098625384359120327, 0.0023353956693734522, -0.0092673709599419597,
@@ -151,7 +151,7 @@ static const double S43[] = {
 static const el_smooth_params S43_TRUE = {0, 0, -0.87682342232723975, 3.1006651709664643, 0.25261438075693143, -0.2566323366220109, 1};
 static const double S43_TANGENT = -1.0050640981928318;
 /* 37 points of an S (k = 0.656), noisy, start point and tangent of the true curve
- * (sets.py seed 5, case 194), fitted by the discrete model */
+ * (bench_fit_sparse.py 5 194), fitted by the discrete model */
 static const double S37[] = {
     -0.0070275334307143642, -0.0070879768388448349, 0.012874300516338208, 0.058391963229424249,
     0.016230194017109172, 0.055967311028188235, 0.014153288553876257, 0.08484440811275519,

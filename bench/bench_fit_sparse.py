@@ -1,0 +1,119 @@
+"""Fits of sparse, unevenly spaced, noisy points (a designer's sketch): how often the
+default fit strays from its points or ends in a worse basin than the curve they were
+drawn from.
+
+Each set: a smooth elastica of length 1 turning by at most 2 pi (k in [0.1, 0.95] or
+[1.05, 3], mu in [0.5, 30], random phase and orientation), 6-59 points at uniformly
+random arc lengths (the ends included), Gaussian noise of 0.1, 0.5 or 1 % of the
+curve's extent per coordinate. Fitted free and with the true start point and tangent
+(a curve continuing an edge G1), by the smooth and the discrete model.
+
+  fit_sparse  per kind: sets, fits that stray (el__fit_stray's measure with the true
+              noise: more than a tenth of the points' polygon length of curve
+              unaccounted for by the arcs between feet), smooth fits whose rms is
+              above 1.01 x the fit started from the true curve, errors, and the
+              median and maximum CPU time of a fit.
+
+`python3 bench/bench_fit_sparse.py SEED CASE` prints one set's points (the
+sets tests/c/test_fit_basin.c takes its data from: seed 4 case 22, seed 4 case 532,
+seed 5 case 194)."""
+import json
+import sys
+import time
+
+import numpy as np
+
+import libelastica as el
+
+KINDS = {"free": (), "start G1": ("start_point", "start_tangent")}
+
+
+def sets(seed):
+    """(case, points, true curve, noise, constraint values) of the seed's sets, in order;
+    the case number counts the curves drawn, those turning by more than 2 pi skipped."""
+    rng = np.random.default_rng(seed)
+    case = -1
+    while True:
+        k = rng.choice([rng.uniform(0.1, 0.95), rng.uniform(1.05, 3.0)])
+        mu = rng.uniform(0.5, 30.0)
+        c = el.SmoothElastica(x0=0, y0=0, phi=rng.uniform(-3, 3), mu=mu, k=k * rng.choice([-1, 1]),
+                              q=rng.uniform(-2, 2), length=1.0)
+        n = int(rng.integers(6, 60))
+        case += 1
+        if np.ptp(c.angle(np.linspace(0, 1, 400))) > 6.3:
+            continue
+        s = np.sort(rng.uniform(0, 1, n))
+        s[0], s[-1] = 0.0, 1.0
+        p = c.points(s)
+        sig = rng.choice([0.001, 0.005, 0.01]) * np.ptp(p, axis=0).max()
+        pts = p + rng.normal(0, sig, p.shape)
+        ends = {"start_point": tuple(p[0]), "start_tangent": float(c.angle(np.array([0.0]))[0])}
+        yield case, pts, c, sig, ends
+
+
+def stray(r, pts, sig, length):
+    """el__fit_stray's measure (fit_refit.c) with the true noise level sig."""
+    order = np.argsort(r.foot_s, kind="stable")
+    f, q = r.foot_s[order], pts[order]
+    chord = np.hypot(*np.diff(q, axis=0).T)
+    poly = np.hypot(*np.diff(pts, axis=0).T).sum()
+    lost = np.maximum(0.0, np.diff(f) - 1.6 * chord - 4 * sig).sum()
+    lost += max(0.0, f[0] - 4 * sig) + max(0.0, length - f[-1] - 4 * sig)
+    return lost / poly
+
+
+def measure(seed, count):
+    out = {(m, k): dict(stray=0, worse=0, errors=0, t=[]) for m in ("smooth", "discrete") for k in KINDS}
+    drawn = sets(seed)
+    for _ in range(count):
+        case, pts, c, sig, ends = next(drawn)
+        for (model, kind), o in out.items():
+            cons = {name: ends[name] for name in KINDS[kind]} or None
+            c0 = time.process_time()
+            try:
+                r = el.fit(pts, model=model, constraints=cons)
+            except (ValueError, ArithmeticError):
+                o["t"].append(time.process_time() - c0)
+                o["errors"] += 1
+                continue
+            o["t"].append(time.process_time() - c0)
+            length = r.curve.length if model == "smooth" else r.curve.h * (len(pts) - 1)
+            o["stray"] += int(stray(r, pts, sig, length) > 0.1)
+            if model == "smooth":
+                try:
+                    o["worse"] += int(r.rms > 1.01 * el.fit(pts, model=model, constraints=cons, initial=c).rms)
+                except (ValueError, ArithmeticError):
+                    pass
+    return out
+
+
+def main():
+    if len(sys.argv) == 3:
+        seed, case = int(sys.argv[1]), int(sys.argv[2])
+        for c, pts, _, _, _ in sets(seed):
+            if c == case:
+                np.savetxt(sys.stdout, pts)
+                return
+            if c > case:
+                sys.exit(f"case {case} of seed {seed} turns by more than 2 pi: not a set")
+    seed, count = 5, 100
+    res = measure(seed, count)
+    for (model, kind), o in res.items():
+        t = np.array(o["t"]) * 1e3
+        line = {"bench": "fit_sparse", "model": model, "constraints": kind, "seed": seed, "sets": count,
+                "stray": o["stray"], "errors": o["errors"], "median_cpu_ms": round(float(np.median(t)), 2),
+                "max_cpu_ms": round(float(t.max()), 1)}
+        if model == "smooth":
+            line["worse_than_from_truth"] = o["worse"]
+        print(json.dumps(line))
+    total = sum(o["stray"] for o in res.values())
+    worse = sum(o.get("worse", 0) for (m, _), o in res.items() if m == "smooth")
+    print(json.dumps({"bench": "fit_sparse_all", "sets": count * len(res), "stray": total,
+                      "readme": "fits of 6-59 sparse uneven noisy points (smooth and discrete, free and "
+                                "with a start tangent) that stray from them",
+                      "value": f"{total} of {count * len(res)} (smooth: {worse} of {2 * count} worse than "
+                               "the fit from the true curve by > 1 %)"}))
+
+
+if __name__ == "__main__":
+    main()
