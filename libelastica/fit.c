@@ -368,6 +368,17 @@ static int follow_points(int model, const double *xy, size_t n, const el_fit_opt
     paired.status = -1;
     int st = fit_run(model, xy, n, &po, 0, NULL, &paired, NULL, NULL);
     if (st == EL_ENOMEM) return st;
+    if (paired.status != EL_OK && paired.status != EL_ENOCONV && paired.status != EL_EMAXITER && po.constraints) {
+        /* no paired curve meets the constraints: the unconstrained fit by distance, which
+         * follows the points, as the start (measured: 42 points, discrete, start point and
+         * tangent, a polygon of length 16 at rms 0.0225 where the points span an S of 1) */
+        po.constraints = 0;
+        po.distance = EL_DISTANCE_ORTHOGONAL;
+        memset(&paired, 0, sizeof paired);
+        paired.status = -1;
+        if ((st = fit_run(model, xy, n, &po, 0, NULL, &paired, NULL, NULL)) == EL_ENOMEM) return st;
+        po.constraints = opt->constraints;
+    }
     if (paired.status != EL_OK && paired.status != EL_ENOCONV && paired.status != EL_EMAXITER) return EL_OK;
     double *buf = malloc(sizeof(double) * 2 * n);
     if (!buf) return EL_ENOMEM;
