@@ -348,17 +348,18 @@ static double fit_out_length(int model, size_t n, const fit_out *r)
     return model == FIT_SMOOTH ? r->params[6] : (double)(n - 1) * r->params[2];
 }
 
-/* A fit by distance to the curve that strays from its points (el__fit_strays: a loop
+/* A fit by distance to the curve that strays from its points (el__fit_stray: a loop
  * between two points, the points' order run backwards) where a curve near them has
  * a lower rms only by the curve's freedom between them: the paired fit, which passes
  * the points in their order, and the orthogonal fit from its curve, kept in place of
  * *res (d, fs its distances and feet, input units) when it follows the points or strays
- * less than half as far (stray: *res's el__fit_stray).
+ * less than half as far (stray: *res's el__fit_stray; noise, scale: the data's noise
+ * level and size, input units).
  * Measured on sparse uneven noisy smooth sets (test_fit_basin.c): a curve of length 4.5
  * looping twice round 41 points along an arc of length 1 (rms 0.00354), 0.00366 this
  * way, the fit from the true curve's. EL_OK (whether replaced or not) or EL_ENOMEM. */
 static int follow_points(int model, const double *xy, size_t n, const el_fit_options *opt, double noise,
-                         double stray, fit_out *res, double *d, double *fs)
+                         double scale, double stray, fit_out *res, double *d, double *fs)
 {
     el_fit_options po;
     if (opt) po = *opt; else el_fit_options_defaults(&po);
@@ -389,7 +390,7 @@ static int follow_points(int model, const double *xy, size_t n, const el_fit_opt
     st = fit_run(model, xy, n, &po, 0, paired.params, &fo, buf, buf + n);
     double st2 = HUGE_VAL;
     if (st != EL_ENOMEM && (fo.status == EL_OK || fo.status == EL_ENOCONV || fo.status == EL_EMAXITER))
-        st2 = el__fit_stray(xy, n, buf + n, fit_out_length(model, n, &fo), noise);
+        st2 = el__fit_stray(xy, n, buf + n, fit_out_length(model, n, &fo), noise, scale);
     if (st2 <= FIT_STRAY || st2 < 0.5 * stray) {
         fo.iterations += res->iterations + paired.iterations;
         fo.candidates += res->candidates + paired.candidates;
@@ -556,7 +557,8 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
      * keep the plain figure: the rule cannot know their constraints' cost in rms (278 constrained
      * fit_set.py fits: no rms changed by > 1e-8, 15 % more candidates, one 4 -> 323 ms); the
      * unconstrained start (unconstrained_start) is tried while above the data's figure */
-    const double data_noise = el__fit_noise_rms(xy, n, sc) * (kind == FIT_ORTHOGONAL ? 0.70710678118654752 : 1.0);
+    const double noise_rms = el__fit_noise_rms(xy, n, sc);
+    const double data_noise = noise_rms * (kind == FIT_ORTHOGONAL ? 0.70710678118654752 : 1.0);
     const double noise = o.constraints ? el__fit_noise_plain(xy, n, sc) : data_noise;
     cand_result best;
     memset(&best, 0, sizeof best);
@@ -782,9 +784,9 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
     res->constraint = constraint;
     res->status = st = status;
     if (ok && kind == FIT_ORTHOGONAL && !o.use_initial && !lm_only) {
-        const double noise_in = el__fit_noise_rms(xy, n, sc) * sc;
-        const double stray = el__fit_stray(xy, n, fs, fit_out_length(model, n, res), noise_in);
-        if (stray > FIT_STRAY && (st = follow_points(model, xy, n, opt, noise_in, stray, res, d, fs)) == EL_OK)
+        const double noise_in = noise_rms * sc;
+        const double stray = el__fit_stray(xy, n, fs, fit_out_length(model, n, res), noise_in, sc);
+        if (stray > FIT_STRAY && (st = follow_points(model, xy, n, opt, noise_in, sc, stray, res, d, fs)) == EL_OK)
             st = res->status;
     }
 done:

@@ -240,9 +240,9 @@ int el__fit_curve_distances(fit_objective *ob, const double *x, double v[2][FIT_
  * the length of the points' polygon: a loop or a pass where there is no point, or the
  * points' order run backwards (a point whose foot lies on another pass of a loop, where
  * the passes cross, adds nothing). Above FIT_STRAY the fit does not follow its points;
- * -1 when out of memory. */
+ * -1 when out of memory. scale: the data's size (the fit's normalisation, el__fit_normalisation). */
 #define FIT_STRAY 0.1
-double el__fit_stray(const double *xy, size_t n, const double *fs, double L, double noise);
+double el__fit_stray(const double *xy, size_t n, const double *fs, double L, double noise, double scale);
 /* fit_refit.c: the smooth distances d and feet fs of the points at x (v its parameters,
  * one curve), the feet projected from o->s, then those found nearer on another pass of
  * the curve from its samples (*moved of them whose foot in o->s lies on [0, L]). */

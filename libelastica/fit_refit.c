@@ -298,27 +298,37 @@ out:
     return st;
 }
 
-/* (foot, point) pairs by foot */
+/* (foot, point) pairs sorted by foot: by insertion, linear in n where the feet are in
+ * order but for a few (every fit that follows its points; qsort cost 4 % of a 1000-point
+ * smooth fit) */
 typedef struct { double s; size_t i; } foot_of;
-static int by_foot(const void *a, const void *b)
+static void sort_by_foot(foot_of *f, size_t n)
 {
-    const double x = ((const foot_of *)a)->s, y = ((const foot_of *)b)->s;
-    return (x > y) - (x < y);
+    for (size_t k = 1; k < n; k++) {
+        const foot_of t = f[k];
+        size_t j = k;
+        for (; j > 0 && f[j - 1].s > t.s; j--) f[j] = f[j - 1];
+        f[j] = t;
+    }
 }
 
-double el__fit_stray(const double *xy, size_t n, const double *fs, double L, double noise)
+double el__fit_stray(const double *xy, size_t n, const double *fs, double L, double noise, double scale)
 {
     foot_of *f = malloc(sizeof *f * n);
     if (!f) return -1.0;
-    for (size_t i = 0; i < n; i++) f[i] = (foot_of){fs[i], i};
-    qsort(f, n, sizeof *f, by_foot);
-    const double slack = 4.0 * noise;
-    double poly = 0.0, stray = fmax(0.0, f[0].s - slack) + fmax(0.0, L - f[n - 1].s - slack);
+    /* lengths over scale (the data's size): sqrt of sums of squares without overflow,
+     * cheaper than hypot (2 % of a 1000-point smooth fit with hypot) */
+    const double is = 1.0 / scale;
+    for (size_t i = 0; i < n; i++) f[i] = (foot_of){fs[i] * is, i};
+    sort_by_foot(f, n);
+    const double slack = 4.0 * noise * is;
+    double poly = 0.0, stray = fmax(0.0, f[0].s - slack) + fmax(0.0, L * is - f[n - 1].s - slack);
     for (size_t k = 0; k + 1 < n; k++) {
         const size_t a = f[k].i, b = f[k + 1].i;
-        const double chord = hypot(xy[2 * b] - xy[2 * a], xy[2 * b + 1] - xy[2 * a + 1]);
-        stray += fmax(0.0, f[k + 1].s - f[k].s - 1.6 * chord - slack);
-        poly += hypot(xy[2 * k + 2] - xy[2 * k], xy[2 * k + 3] - xy[2 * k + 1]);
+        const double cx = (xy[2 * b] - xy[2 * a]) * is, cy = (xy[2 * b + 1] - xy[2 * a + 1]) * is;
+        const double px = (xy[2 * k + 2] - xy[2 * k]) * is, py = (xy[2 * k + 3] - xy[2 * k + 1]) * is;
+        stray += fmax(0.0, f[k + 1].s - f[k].s - 1.6 * sqrt(cx * cx + cy * cy) - slack);
+        poly += sqrt(px * px + py * py);
     }
     free(f);
     return stray / poly;

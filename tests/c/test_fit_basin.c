@@ -246,25 +246,33 @@ START_TEST(test_fit_stray_measure)
     double xy[22], fs[11];
     for (int i = 0; i <= 10; i++) { xy[2 * i] = 0.1 * i; xy[2 * i + 1] = 0.0; fs[i] = 0.1 * i; }
     /* a curve along the points: nothing strays */
-    ck_assert(el__fit_stray(xy, 11, fs, 1.0, 0.0) == 0.0);
+    ck_assert(el__fit_stray(xy, 11, fs, 1.0, 0.0, 1.0) == 0.0);
     /* a loop of length 0.5 between points 4 and 5: 0.6 - 1.6 * 0.1 = 0.44 of arc unaccounted */
     for (int i = 5; i <= 10; i++) fs[i] += 0.5;
-    ck_assert(fabs(el__fit_stray(xy, 11, fs, 1.5, 0.0) - 0.44) < 1e-12);
-    ck_assert(el__fit_stray(xy, 11, fs, 1.5, 0.0) > FIT_STRAY);
+    ck_assert(fabs(el__fit_stray(xy, 11, fs, 1.5, 0.0, 1.0) - 0.44) < 1e-12);
+    ck_assert(el__fit_stray(xy, 11, fs, 1.5, 0.0, 1.0) > FIT_STRAY);
     /* within 4 noise levels: nothing */
-    ck_assert(el__fit_stray(xy, 11, fs, 1.5, 0.15) == 0.0);
+    ck_assert(el__fit_stray(xy, 11, fs, 1.5, 0.15, 1.0) == 0.0);
+    /* the same at the extremes of double's range */
+    for (int e = -1; e <= 1; e += 2) {
+        const double m = e < 0 ? 1e-300 : 1e300;
+        double mxy[22], mfs[11];
+        for (int i = 0; i < 22; i++) mxy[i] = m * xy[i];
+        for (int i = 0; i < 11; i++) mfs[i] = m * fs[i];
+        ck_assert(fabs(el__fit_stray(mxy, 11, mfs, 1.5 * m, 0.0, m) - 0.44) < 1e-12);
+    }
     /* the curve going on 0.3 past the last foot */
-    ck_assert(fabs(el__fit_stray(xy, 11, fs, 1.8, 0.0) - 0.74) < 1e-12);
+    ck_assert(fabs(el__fit_stray(xy, 11, fs, 1.8, 0.0, 1.0) - 0.74) < 1e-12);
     /* point 7's foot on another pass, next to point 2's (where the passes cross): the
      * feet adjacent along the curve are points near each other, nothing strays */
     for (int i = 0; i <= 10; i++) fs[i] = 0.1 * i;
     xy[14] = 0.2;
     xy[15] = 0.01;
     fs[7] = 0.201;
-    ck_assert(el__fit_stray(xy, 11, fs, 1.0, 0.0) < 1e-12);
+    ck_assert(el__fit_stray(xy, 11, fs, 1.0, 0.0, 1.0) < 1e-12);
     /* the points passed backwards: from the first foot at 0 out to 1 and back */
     for (int i = 0; i <= 10; i++) { xy[2 * i] = 0.1 * i; xy[2 * i + 1] = 0.0; fs[i] = i ? 2.0 - 0.1 * i : 0.0; }
-    ck_assert(el__fit_stray(xy, 11, fs, 2.0, 0.0) > FIT_STRAY);
+    ck_assert(el__fit_stray(xy, 11, fs, 2.0, 0.0, 1.0) > FIT_STRAY);
 }
 END_TEST
 
