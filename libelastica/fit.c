@@ -15,10 +15,11 @@
  * first-order condition and inside the caller's bounds is final. Ipopt (fit_ipopt.c)
  * runs from there for bounds that are active, constraints, or an uncertified result.
  * Constraints on the start point are the parameters x0, y0 held, a start tangent or
- * curvature are the start-state chart's variables held (fit_run); a fit whose end has
- * more of these than its start runs on the points reversed (fit_run_either_way). The
+ * curvature are the start-state chart's variables held (el__fit_run); a fit whose end has
+ * more of these than its start runs on the points reversed (fit_restart.c). The
  * others go to Ipopt's constraint interface. Every result is checked against its
- * constraints.
+ * constraints. Further starts (fit_restart.c): a constrained fit's from the unconstrained
+ * fit, and one that strays from its points from the paired fit.
  */
 #include "fit_internal.h"
 #include <stdlib.h>
@@ -26,7 +27,7 @@
 #include <float.h>
 
 enum { MAXCAND = 6, FEET_ROUNDS = 4, SAMPLED_ROUNDS = 5 };
-/* the sampled refits' stop (fit_run): a Gauss-Newton step would lower f by less than this */
+/* the sampled refits' stop (el__fit_run): a Gauss-Newton step would lower f by less than this */
 static const double LOOSE_TOL = 1e-5;
 
 void el_fit_options_defaults(el_fit_options *opt)
@@ -157,7 +158,7 @@ static int bounded_start(fit_objective *ob, const double *xl, const double *xu, 
 }
 
 /* One initial guess: Levenberg-Marquardt, then Ipopt when something needs it. warm: x0 is
- * a fit already and the feet are set (fit_run's refit): no paired start. */
+ * a fit already and the feet are set (el__fit_run's refit): no paired start. */
 static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit_constraints *con,
                            const double *xl, const double *xu, int need_ipopt, int lm_only,
                            const double *x0, double best_f, cand_result *r, double *tmp, int near_start,
@@ -306,34 +307,6 @@ static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit
     return EL_OK;
 }
 
-static int fit_run(int model, const double *xy, size_t n, const el_fit_options *opt, int lm_only,
-                   const double *init, fit_out *res, double *dist, double *foot);
-
-/* A constrained fit's last start, when every guess ended far above the noise: the fit
- * without the constraints (the caller's fixed parameters and bounds kept), whose curve
- * lies in the data's basin, normalised into v. The guesses are started with the
- * constraints imposed, which can put them all in another basin (measured on 600 sparse
- * uneven noisy smooth sets, tests/c/test_fit_basin.c: start point and tangent fixed, rms
- * 0.0053 where this start reaches 0.0033, the fit from the true curve's). None when the
- * free fit's objective is not 1 % below best_f, the constrained fits' best (the same
- * objective): the constrained optimum near it would not be lower. EL_ENOMEM, or EL_EDOM
- * when there is no such start. */
-static int unconstrained_start(int model, const double *xy, size_t n, const el_fit_options *opt, double cx,
-                               double cy, double sc, double best_f, double *v)
-{
-    el_fit_options f = *opt;
-    f.constraints = 0;
-    fit_out fo;
-    memset(&fo, 0, sizeof fo);
-    fo.status = -1;
-    const int st = fit_run(model, xy, n, &f, 1, NULL, &fo, NULL, NULL);    /* a start: no Ipopt */
-    if (st == EL_ENOMEM) return st;
-    if ((fo.status != EL_OK && fo.status != EL_ENOCONV && fo.status != EL_EMAXITER) || !(fo.f < 0.99 * best_f))
-        return EL_EDOM;
-    for (int j = 0; j < FIT_NP; j++) v[j] = el__fit_norm_param(model, j, fo.params[j], cx, cy, sc);
-    return el__all_finite(v, FIT_NP) ? EL_EDOM : EL_OK;
-}
-
 /* The point x of a fit (its map's variables) meets the constraints con and bounds. */
 static int meets_constraints(fit_objective *ob, const fit_map *map, const fit_constraints *con, const double *x,
                              const double *lo, const double *hi, double *tmp)
@@ -342,68 +315,8 @@ static int meets_constraints(fit_objective *ob, const fit_map *map, const fit_co
     return el__fit_map_eval(map, x, v, NULL) == EL_OK && !el__fit_violated(ob, con, v[0], lo, hi, tmp);
 }
 
-/* The curve's length of a fit's result. */
-static double fit_out_length(int model, size_t n, const fit_out *r)
-{
-    return model == FIT_SMOOTH ? r->params[6] : (double)(n - 1) * r->params[2];
-}
-
-/* A fit by distance to the curve that strays from its points (el__fit_stray: a loop
- * between two points, the points' order run backwards) where a curve near them has
- * a lower rms only by the curve's freedom between them: the paired fit, which passes
- * the points in their order, and the orthogonal fit from its curve, kept in place of
- * *res (d, fs its distances and feet, input units) when it follows the points or strays
- * less than half as far (stray: *res's el__fit_stray; noise, scale: the data's noise
- * level and size, input units).
- * Measured on sparse uneven noisy smooth sets (test_fit_basin.c): a curve of length 4.5
- * looping twice round 41 points along an arc of length 1 (rms 0.00354), 0.00366 this
- * way, the fit from the true curve's. EL_OK (whether replaced or not) or EL_ENOMEM. */
-static int follow_points(int model, const double *xy, size_t n, const el_fit_options *opt, double noise,
-                         double scale, double stray, fit_out *res, double *d, double *fs)
-{
-    el_fit_options po;
-    if (opt) po = *opt; else el_fit_options_defaults(&po);
-    po.distance = EL_DISTANCE_PAIRED;
-    fit_out paired, fo;
-    memset(&paired, 0, sizeof paired);
-    paired.status = -1;
-    int st = fit_run(model, xy, n, &po, 0, NULL, &paired, NULL, NULL);
-    if (st == EL_ENOMEM) return st;
-    if (paired.status != EL_OK && paired.status != EL_ENOCONV && paired.status != EL_EMAXITER && po.constraints) {
-        /* no paired curve meets the constraints: the unconstrained fit by distance, which
-         * follows the points, as the start (measured: 42 points, discrete, start point and
-         * tangent, a polygon of length 16 at rms 0.0225 where the points span an S of 1) */
-        po.constraints = 0;
-        po.distance = EL_DISTANCE_ORTHOGONAL;
-        memset(&paired, 0, sizeof paired);
-        paired.status = -1;
-        if ((st = fit_run(model, xy, n, &po, 0, NULL, &paired, NULL, NULL)) == EL_ENOMEM) return st;
-        po.constraints = opt->constraints;
-    }
-    if (paired.status != EL_OK && paired.status != EL_ENOCONV && paired.status != EL_EMAXITER) return EL_OK;
-    double *buf = malloc(sizeof(double) * 2 * n);
-    if (!buf) return EL_ENOMEM;
-    po.distance = EL_DISTANCE_ORTHOGONAL;
-    po.use_initial = 1;
-    memset(&fo, 0, sizeof fo);
-    fo.status = -1;
-    st = fit_run(model, xy, n, &po, 0, paired.params, &fo, buf, buf + n);
-    double st2 = HUGE_VAL;
-    if (st != EL_ENOMEM && (fo.status == EL_OK || fo.status == EL_ENOCONV || fo.status == EL_EMAXITER))
-        st2 = el__fit_stray(xy, n, buf + n, fit_out_length(model, n, &fo), noise, scale);
-    if (st2 <= FIT_STRAY || st2 < 0.5 * stray) {
-        fo.iterations += res->iterations + paired.iterations;
-        fo.candidates += res->candidates + paired.candidates;
-        *res = fo;
-        memcpy(d, buf, sizeof(double) * n);
-        memcpy(fs, buf + n, sizeof(double) * n);
-    }
-    free(buf);
-    return st == EL_ENOMEM ? st : EL_OK;
-}
-
-static int fit_run(int model, const double *xy, size_t n, const el_fit_options *opt, int lm_only,
-                   const double *init, fit_out *res, double *dist, double *foot)
+int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt, int lm_only,
+                const double *init, fit_out *res, double *dist, double *foot)
 {
     el_fit_options o;
     if (opt) o = *opt; else el_fit_options_defaults(&o);
@@ -556,7 +469,7 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
      * (120 sparse uneven noisy sets: 14 -> 12 worse than the best basin by > 1 %). Constrained fits
      * keep the plain figure: the rule cannot know their constraints' cost in rms (278 constrained
      * fit_set.py fits: no rms changed by > 1e-8, 15 % more candidates, one 4 -> 323 ms); the
-     * unconstrained start (unconstrained_start) is tried while above the data's figure */
+     * unconstrained start (el__fit_unconstrained_start) is tried while above the data's figure */
     const double noise_rms = el__fit_noise_rms(xy, n, sc);
     const double data_noise = noise_rms * (kind == FIT_ORTHOGONAL ? 0.70710678118654752 : 1.0);
     const double noise = o.constraints ? el__fit_noise_plain(xy, n, sc) : data_noise;
@@ -571,7 +484,7 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
     for (size_t ci = 0; ci < ncand + (free_start != 0); ci++) {
         if (ci == ncand) {      /* every guess far from the noise: one more start */
             free_start = 0;
-            const int fst = unconstrained_start(model, xy, n, opt, cx, cy, sc, best.f, cand[ncand]);
+            const int fst = el__fit_unconstrained_start(model, xy, n, opt, cx, cy, sc, best.f, cand[ncand]);
             if (fst == EL_ENOMEM) { st = fst; goto done; }
             if (fst) break;
             free_ci = ncand++;
@@ -785,8 +698,8 @@ static int fit_run(int model, const double *xy, size_t n, const el_fit_options *
     res->status = st = status;
     if (ok && kind == FIT_ORTHOGONAL && !o.use_initial && !lm_only) {
         const double noise_in = noise_rms * sc;
-        const double stray = el__fit_stray(xy, n, fs, fit_out_length(model, n, res), noise_in, sc);
-        if (stray > FIT_STRAY && (st = follow_points(model, xy, n, opt, noise_in, sc, stray, res, d, fs)) == EL_OK)
+        const double stray = el__fit_stray(xy, n, fs, el__fit_out_length(model, n, res), noise_in, sc);
+        if (stray > FIT_STRAY && (st = el__fit_follow_points(model, xy, n, opt, noise_in, sc, stray, res, d, fs)) == EL_OK)
             st = res->status;
     }
 done:
@@ -794,67 +707,6 @@ done:
     free(dbuf);
     free(t);
     free(tmp);
-    return st;
-}
-
-/* ------------------------------------------------------------ reversed fits */
-
-/*
- * fit_run, on the points in reverse order when the end holds more constraints than the
- * start (a fit holds start constraints exactly, the end's are Ipopt's rows): the end
- * constraints become start ones, and the result is turned round (params, initial,
- * distances with the other sign, feet from the other end). Only when nothing else
- * depends on the direction: no fixed parameters, bounds, initial curve or (smooth)
- * signed k range.
- */
-static int fit_run_either_way(int model, const double *xy, size_t n, const el_fit_options *opt,
-                              const double *init, fit_out *res, double *dist, double *foot)
-{
-    int plain = !opt || !xy || n < 4 || opt->use_initial || (model == FIT_SMOOTH && (opt->constraints & EL_CONSTRAIN_K)) ||
-                el__fit_held_score(opt, model, 1) <= el__fit_held_score(opt, model, 0);
-    for (int j = 0; j < FIT_NP && !plain; j++)
-        plain = opt->fixed[j] || isfinite(opt->lower[j]) || isfinite(opt->upper[j]);
-    if (plain) return fit_run(model, xy, n, opt, 0, init, res, dist, foot);
-    el_fit_options o = *opt;
-    const int c = opt->constraints, swap[3][2] = {{EL_CONSTRAIN_START_POINT, EL_CONSTRAIN_END_POINT},
-                                                  {EL_CONSTRAIN_START_TANGENT, EL_CONSTRAIN_END_TANGENT},
-                                                  {EL_CONSTRAIN_START_CURVATURE, EL_CONSTRAIN_END_CURVATURE}};
-    o.constraints = c & ~(swap[0][0] | swap[0][1] | swap[1][0] | swap[1][1] | swap[2][0] | swap[2][1]);
-    for (int a = 0; a < 3; a++) {
-        if (c & swap[a][0]) o.constraints |= swap[a][1];
-        if (c & swap[a][1]) o.constraints |= swap[a][0];
-    }
-    memcpy(o.start_point, opt->end_point, sizeof o.start_point);
-    memcpy(o.end_point, opt->start_point, sizeof o.end_point);
-    o.start_tangent = opt->end_tangent + M_PI; o.end_tangent = opt->start_tangent + M_PI;
-    o.start_curvature = -opt->end_curvature; o.end_curvature = -opt->start_curvature;
-    double *rxy = malloc(sizeof(double) * 2 * n);
-    if (!rxy) return EL_ENOMEM;
-    for (size_t i = 0; i < n; i++) { rxy[2 * i] = xy[2 * (n - 1 - i)]; rxy[2 * i + 1] = xy[2 * (n - 1 - i) + 1]; }
-    int st = fit_run(model, rxy, n, &o, 0, NULL, res, dist, foot);
-    free(rxy);
-    if (res->status == -1) {        /* failed before a result: the bits back */
-        for (int a = 0; a < 3; a++)
-            if (res->constraint == swap[a][0] || res->constraint == swap[a][1])
-                res->constraint ^= swap[a][0] | swap[a][1];
-        return st;
-    }
-    const double total = model == FIT_SMOOTH ? res->params[6] : (double)(n - 1) * res->params[2];
-    for (size_t i = 0; dist && i < n - 1 - i; i++) {
-        const double d = dist[i];
-        dist[i] = -dist[n - 1 - i];
-        dist[n - 1 - i] = -d;
-    }
-    if (dist && n % 2) dist[n / 2] = -dist[n / 2];
-    for (size_t i = 0; foot && i <= n - 1 - i; i++) {
-        const double f = foot[i];
-        foot[i] = total - foot[n - 1 - i];
-        foot[n - 1 - i] = total - f;
-    }
-    for (int a = 0; a < 3; a++)
-        if (res->constraint == swap[a][0] || res->constraint == swap[a][1]) res->constraint ^= swap[a][0] | swap[a][1];
-    if (el__fit_reverse_params(model, n, res->params) || el__fit_reverse_params(model, n, res->initial))
-        return fit_run(model, xy, n, opt, 0, init, res, dist, foot);
     return st;
 }
 
@@ -873,7 +725,7 @@ int el_fit_discrete(const double *xy, size_t n, const el_fit_options *opt,
     fit_out fo;
     memset(&fo, 0, sizeof fo);
     fo.status = -1;
-    int st = fit_run_either_way(FIT_DISCRETE, xy, n, opt, initial ? init : NULL, &fo, distances, foot_s);
+    int st = el__fit_run_either_way(FIT_DISCRETE, xy, n, opt, initial ? init : NULL, &fo, distances, foot_s);
     if (fo.status == -1) {        /* failed before a result existed */
         if (fo.constraint) res->constraint = fo.constraint;
         return st;
@@ -896,7 +748,7 @@ int el_fit_smooth(const double *xy, size_t n, const el_fit_options *opt,
     fit_out fo;
     memset(&fo, 0, sizeof fo);
     fo.status = -1;
-    int st = fit_run_either_way(FIT_SMOOTH, xy, n, opt, initial ? init : NULL, &fo, distances, foot_s);
+    int st = el__fit_run_either_way(FIT_SMOOTH, xy, n, opt, initial ? init : NULL, &fo, distances, foot_s);
     if (fo.status == -1) {
         if (fo.constraint) res->constraint = fo.constraint;
         return st;
@@ -912,7 +764,7 @@ int el__fit_start(int model, const double *xy, size_t n, const el_fit_options *o
     fit_out fo;
     memset(&fo, 0, sizeof fo);
     fo.status = -1;
-    int st = fit_run(model, xy, n, opt, 1, NULL, &fo, NULL, foot);
+    int st = el__fit_run(model, xy, n, opt, 1, NULL, &fo, NULL, foot);
     if (fo.status == -1) return st;
     memcpy(v, fo.params, sizeof fo.params);
     if (mode) *mode = fo.mode;

@@ -328,6 +328,28 @@ typedef struct fit_ipopt_out {
  * (the model's Jacobian order); *iters += the iterations; foot: as el_fit_smooth's. */
 int el__fit_start(int model, const double *xy, size_t n, const el_fit_options *opt, double *v, int *mode,
                   int *iters, double *foot);
+/* One fit of the points (fit.c): el_fit_discrete / el_fit_smooth into *res (status -1
+ * until a result exists), opt NULL = defaults, init the caller's initial parameters
+ * (opt->use_initial); lm_only: no Ipopt fallback and no further start (el__fit_start). */
+int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt, int lm_only,
+                const double *init, fit_out *res, double *dist, double *foot);
+/* fit_restart.c: el__fit_run on the points in reverse order when the end holds more
+ * constraints than the start, else as they are (the public entry points). */
+int el__fit_run_either_way(int model, const double *xy, size_t n, const el_fit_options *opt,
+                           const double *init, fit_out *res, double *dist, double *foot);
+/* fit_restart.c: a constrained fit's last start, the unconstrained fit's curve
+ * (normalised by cx, cy, sc into v) when its objective is 1 % below best_f; EL_EDOM:
+ * none, EL_ENOMEM. */
+int el__fit_unconstrained_start(int model, const double *xy, size_t n, const el_fit_options *opt, double cx,
+                                double cy, double sc, double best_f, double *v);
+/* fit_restart.c: the curve's length of a fit's result. */
+double el__fit_out_length(int model, size_t n, const fit_out *r);
+/* fit_restart.c: a fit by distance whose result *res (d, fs its distances and feet,
+ * input units) strays from its points by stray (el__fit_stray) fitted again from the
+ * paired fit's curve, which replaces it when it follows them or strays less than half
+ * as far; EL_OK (replaced or not) or EL_ENOMEM. */
+int el__fit_follow_points(int model, const double *xy, size_t n, const el_fit_options *opt, double noise,
+                          double scale, double stray, fit_out *res, double *d, double *fs);
 
 /* Ipopt from x (in place; the best point seen on return) with bounds xl, xu (+-HUGE_VAL:
  * none) and constraints con (NULL: none). */

@@ -1,0 +1,164 @@
+/*
+ * A fit's further runs of el__fit_run (fit.c): the unconstrained fit as a constrained
+ * fit's last start, the paired fit's curve as the start of a fit by distance that strays
+ * from its points, and fits of the points in reverse order.
+ */
+#include "fit_internal.h"
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ------------------------------------------------------------ further starts */
+
+/* A fit's result is a curve: converged, or the best seen (not an error, nor a
+ * constraint it could not meet). */
+static int gave_curve(const fit_out *r)
+{
+    return r->status == EL_OK || r->status == EL_ENOCONV || r->status == EL_EMAXITER;
+}
+
+/* A constrained fit's last start, when every guess ended far above the noise: the fit
+ * without the constraints (the caller's fixed parameters and bounds kept), whose curve
+ * lies in the data's basin, normalised into v. The guesses are started with the
+ * constraints imposed, which can put them all in another basin (measured on 600 sparse
+ * uneven noisy smooth sets, tests/c/test_fit_basin.c: start point and tangent fixed, rms
+ * 0.0053 where this start reaches 0.0033, the fit from the true curve's). None when the
+ * free fit's objective is not 1 % below best_f, the constrained fits' best (the same
+ * objective): the constrained optimum near it would not be lower. EL_ENOMEM, or EL_EDOM
+ * when there is no such start. */
+int el__fit_unconstrained_start(int model, const double *xy, size_t n, const el_fit_options *opt, double cx,
+                                double cy, double sc, double best_f, double *v)
+{
+    el_fit_options f = *opt;
+    f.constraints = 0;
+    fit_out fo;
+    memset(&fo, 0, sizeof fo);
+    fo.status = -1;
+    const int st = el__fit_run(model, xy, n, &f, 1, NULL, &fo, NULL, NULL);    /* a start: no Ipopt */
+    if (st == EL_ENOMEM) return st;
+    if (!gave_curve(&fo) || !(fo.f < 0.99 * best_f))
+        return EL_EDOM;
+    for (int j = 0; j < FIT_NP; j++) v[j] = el__fit_norm_param(model, j, fo.params[j], cx, cy, sc);
+    return el__all_finite(v, FIT_NP) ? EL_EDOM : EL_OK;
+}
+
+/* The curve's length of a fit's result. */
+double el__fit_out_length(int model, size_t n, const fit_out *r)
+{
+    return model == FIT_SMOOTH ? r->params[6] : (double)(n - 1) * r->params[2];
+}
+
+/* A fit by distance to the curve that strays from its points (el__fit_stray: a loop
+ * between two points, the points' order run backwards) where a curve near them has
+ * a lower rms only by the curve's freedom between them: the paired fit, which passes
+ * the points in their order, and the orthogonal fit from its curve, kept in place of
+ * *res (d, fs its distances and feet, input units) when it follows the points or strays
+ * less than half as far (stray: *res's el__fit_stray; noise, scale: the data's noise
+ * level and size, input units).
+ * Measured on sparse uneven noisy smooth sets (test_fit_basin.c): a curve of length 4.5
+ * looping twice round 41 points along an arc of length 1 (rms 0.00354), 0.00366 this
+ * way, the fit from the true curve's. EL_OK (whether replaced or not) or EL_ENOMEM. */
+int el__fit_follow_points(int model, const double *xy, size_t n, const el_fit_options *opt, double noise,
+                          double scale, double stray, fit_out *res, double *d, double *fs)
+{
+    el_fit_options po;
+    if (opt) po = *opt; else el_fit_options_defaults(&po);
+    po.distance = EL_DISTANCE_PAIRED;
+    fit_out paired, fo;
+    memset(&paired, 0, sizeof paired);
+    paired.status = -1;
+    int st = el__fit_run(model, xy, n, &po, 0, NULL, &paired, NULL, NULL);
+    if (st == EL_ENOMEM) return st;
+    if (!gave_curve(&paired) && po.constraints) {
+        /* no paired curve meets the constraints: the unconstrained fit by distance, which
+         * follows the points, as the start (measured: 42 points, discrete, start point and
+         * tangent, a polygon of length 16 at rms 0.0225 where the points span an S of 1) */
+        po.constraints = 0;
+        po.distance = EL_DISTANCE_ORTHOGONAL;
+        memset(&paired, 0, sizeof paired);
+        paired.status = -1;
+        if ((st = el__fit_run(model, xy, n, &po, 0, NULL, &paired, NULL, NULL)) == EL_ENOMEM) return st;
+        po.constraints = opt->constraints;
+    }
+    if (!gave_curve(&paired)) return EL_OK;
+    double *buf = malloc(sizeof(double) * 2 * n);
+    if (!buf) return EL_ENOMEM;
+    po.distance = EL_DISTANCE_ORTHOGONAL;
+    po.use_initial = 1;
+    memset(&fo, 0, sizeof fo);
+    fo.status = -1;
+    st = el__fit_run(model, xy, n, &po, 0, paired.params, &fo, buf, buf + n);
+    double st2 = HUGE_VAL;
+    if (st != EL_ENOMEM && gave_curve(&fo))
+        st2 = el__fit_stray(xy, n, buf + n, el__fit_out_length(model, n, &fo), noise, scale);
+    if (st2 <= FIT_STRAY || st2 < 0.5 * stray) {
+        fo.iterations += res->iterations + paired.iterations;
+        fo.candidates += res->candidates + paired.candidates;
+        *res = fo;
+        memcpy(d, buf, sizeof(double) * n);
+        memcpy(fs, buf + n, sizeof(double) * n);
+    }
+    free(buf);
+    return st == EL_ENOMEM ? st : EL_OK;
+}
+
+/* ------------------------------------------------------------ reversed fits */
+
+/*
+ * el__fit_run, on the points in reverse order when the end holds more constraints than the
+ * start (a fit holds start constraints exactly, the end's are Ipopt's rows): the end
+ * constraints become start ones, and the result is turned round (params, initial,
+ * distances with the other sign, feet from the other end). Only when nothing else
+ * depends on the direction: no fixed parameters, bounds, initial curve or (smooth)
+ * signed k range.
+ */
+int el__fit_run_either_way(int model, const double *xy, size_t n, const el_fit_options *opt,
+                           const double *init, fit_out *res, double *dist, double *foot)
+{
+    int plain = !opt || !xy || n < 4 || opt->use_initial || (model == FIT_SMOOTH && (opt->constraints & EL_CONSTRAIN_K)) ||
+                el__fit_held_score(opt, model, 1) <= el__fit_held_score(opt, model, 0);
+    for (int j = 0; j < FIT_NP && !plain; j++)
+        plain = opt->fixed[j] || isfinite(opt->lower[j]) || isfinite(opt->upper[j]);
+    if (plain) return el__fit_run(model, xy, n, opt, 0, init, res, dist, foot);
+    el_fit_options o = *opt;
+    const int c = opt->constraints, swap[3][2] = {{EL_CONSTRAIN_START_POINT, EL_CONSTRAIN_END_POINT},
+                                                  {EL_CONSTRAIN_START_TANGENT, EL_CONSTRAIN_END_TANGENT},
+                                                  {EL_CONSTRAIN_START_CURVATURE, EL_CONSTRAIN_END_CURVATURE}};
+    o.constraints = c & ~(swap[0][0] | swap[0][1] | swap[1][0] | swap[1][1] | swap[2][0] | swap[2][1]);
+    for (int a = 0; a < 3; a++) {
+        if (c & swap[a][0]) o.constraints |= swap[a][1];
+        if (c & swap[a][1]) o.constraints |= swap[a][0];
+    }
+    memcpy(o.start_point, opt->end_point, sizeof o.start_point);
+    memcpy(o.end_point, opt->start_point, sizeof o.end_point);
+    o.start_tangent = opt->end_tangent + M_PI; o.end_tangent = opt->start_tangent + M_PI;
+    o.start_curvature = -opt->end_curvature; o.end_curvature = -opt->start_curvature;
+    double *rxy = malloc(sizeof(double) * 2 * n);
+    if (!rxy) return EL_ENOMEM;
+    for (size_t i = 0; i < n; i++) { rxy[2 * i] = xy[2 * (n - 1 - i)]; rxy[2 * i + 1] = xy[2 * (n - 1 - i) + 1]; }
+    int st = el__fit_run(model, rxy, n, &o, 0, NULL, res, dist, foot);
+    free(rxy);
+    if (res->status == -1) {        /* failed before a result: the bits back */
+        for (int a = 0; a < 3; a++)
+            if (res->constraint == swap[a][0] || res->constraint == swap[a][1])
+                res->constraint ^= swap[a][0] | swap[a][1];
+        return st;
+    }
+    const double total = model == FIT_SMOOTH ? res->params[6] : (double)(n - 1) * res->params[2];
+    for (size_t i = 0; dist && i < n - 1 - i; i++) {
+        const double d = dist[i];
+        dist[i] = -dist[n - 1 - i];
+        dist[n - 1 - i] = -d;
+    }
+    if (dist && n % 2) dist[n / 2] = -dist[n / 2];
+    for (size_t i = 0; foot && i <= n - 1 - i; i++) {
+        const double f = foot[i];
+        foot[i] = total - foot[n - 1 - i];
+        foot[n - 1 - i] = total - f;
+    }
+    for (int a = 0; a < 3; a++)
+        if (res->constraint == swap[a][0] || res->constraint == swap[a][1]) res->constraint ^= swap[a][0] | swap[a][1];
+    if (el__fit_reverse_params(model, n, res->params) || el__fit_reverse_params(model, n, res->initial))
+        return el__fit_run(model, xy, n, opt, 0, init, res, dist, foot);
+    return st;
+}
