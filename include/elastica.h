@@ -401,17 +401,20 @@ typedef struct el_fit_smooth_result {
  * rms radius), so the fit is invariant under similarity transforms.
  * initial is read only when opt->use_initial (else it may be NULL); opt NULL =
  * defaults. Up to opt->max_candidates initial guesses (el_guess_discrete) are
- * fitted and the best kept. A constrained fit whose guesses all end above the data's
- * noise also starts from the unconstrained fit's curve (guesses started under the
- * constraints can all miss the data's basin). By distance to the polygon or curve, a
- * fit must follow the points: one that strays from them (a loop or a pass where there
- * is no point, or the points passed out of order: more than a tenth of the points'
- * polygon length of curve unaccounted for by the arcs between feet, 1.6 times their
- * chord plus 4 noise levels each) is fitted again from the paired fit's curve, which
- * passes them in order, and that fit is kept when it follows the points or strays less
- * than half as far, even at a higher rms (without this, 41 noisy points along an arc
- * of length 1 were fitted at a lower rms by a curve of length 4.5 looping twice round
- * them). Such refits cost up to a few seconds on sparse data with constraints.
+ * fitted and the best kept. Where no constraint needs Ipopt's rows (no constraint, or
+ * those held exactly: the start point, and the smooth start tangent and curvature):
+ * a constrained fit whose guesses all end above the data's noise also starts from the
+ * unconstrained fit's curve (guesses started under the constraints can all miss the
+ * data's basin); and by distance to the polygon or curve, a fit must follow the points:
+ * one that strays from them (a loop or a pass where there is no point, or the points
+ * passed out of order: more than a tenth of the points' polygon length of curve
+ * unaccounted for by the arcs between feet, 1.6 times their chord plus 4 noise levels
+ * each) is fitted again from the paired fit's curve, which passes them in order, and
+ * that fit is kept when it follows the points or strays less than half as far, even at
+ * a higher rms (without this, 41 noisy points along an arc of length 1 were fitted at a
+ * lower rms by a curve of length 4.5 looping twice round them). Up to 0.5 s of CPU on
+ * 6-59 sparse points (bench/bench_fit_sparse.py). With Ipopt's rows, its iterations over
+ * the guesses and refits of one fit stop at twice opt->max_iter.
  * Solver: Levenberg-Marquardt, its result certified by the first-order condition
  * (the residual vector orthogonal to every column of the Jacobian to 1e-8, or zero to
  * rounding); Ipopt runs only for bounds that are active, constraints, an uncertified

@@ -119,7 +119,7 @@ static int ipopt_to_status(int rs)
 
 typedef struct cand_result {
     double x[FIT_MAXX], f;
-    int status, iters, used_ipopt, ipopt_status;
+    int status, iters, used_ipopt, ipopt_status, ipopt_iters;
 } cand_result;
 
 /*
@@ -294,6 +294,7 @@ static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit
         r->used_ipopt = 1;
         r->ipopt_status = io.ipopt_status;
         r->iters += io.iters;
+        r->ipopt_iters = io.iters;
     }
     /* Ipopt's point when it had to run (constraints, the LM point outside the bounds)
      * or when it improved on an uncertified one */
@@ -479,7 +480,11 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
     best.status = EL_ENOCONV;
     double best_init[FIT_NP];
     memcpy(best_init, cand[0], sizeof best_init);
-    int iters = 0, tried = 0, last_is_best = 0, free_start = o.constraints && !o.use_initial && !lm_only;
+    /* the further starts (fit_restart.c) where the fit needs no Ipopt rows: with them each
+     * run is Ipopt's, ~1.5 ms an iteration (a sparse discrete fit with a start tangent
+     * took 1.8 s with them) */
+    int iters = 0, tried = 0, last_is_best = 0, ipopt_spent = 0;
+    int free_start = o.constraints && !need_ipopt && !o.use_initial && !lm_only;
     size_t free_ci = (size_t)-1;    /* the unconstrained start's index in cand, once added */
     for (size_t ci = 0; ci < ncand + (free_start != 0); ci++) {
         if (ci == ncand) {      /* every guess far from the noise: one more start */
@@ -527,6 +532,10 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
         if (last_is_best) { best = r; memcpy(best_init, p0, sizeof p0); }
         const double rms = sqrt(2.0 * best.f);
         if (rms <= 1e-10 || map.nx == 0) break;
+        /* constraint rows: Ipopt's iterations over the guesses and the refits below at most
+         * twice max_iter (the fuzzer's 11 points with end constraints: five runs to max_iter,
+         * 1.3 s) */
+        if (need_ipopt && (ipopt_spent += r.ipopt_iters) >= 2 * o.max_iter) break;
         if (rms <= 1.5 * noise && best.status == EL_OK) {
             if (!free_start || rms <= 1.5 * data_noise) break;
             ci = ncand - 1;     /* no more guesses; the unconstrained start next */
@@ -573,7 +582,8 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
          * to 0.7 %), 25 the same to 1e-9, two higher by 5e-8 and 1.4e-5 at an objective f
          * lower by 2e-14 and 5e-5 (feet on the extension beyond an end, which the
          * reported distances do not use). */
-        const int may_refit = ok && refit && ob.rest && isfinite(best.f) && best.f > FIT_EXACT_F && map.nx > 0;
+        const int may_refit = ok && refit && ob.rest && isfinite(best.f) && best.f > FIT_EXACT_F && map.nx > 0 &&
+                              !(need_ipopt && ipopt_spent >= 2 * o.max_iter);
         size_t moved = 0;
         int projected = 0;
         if (may_refit && last_is_best && sampling && ob.other_passes && sampled < SAMPLED_ROUNDS && round < FEET_ROUNDS &&
@@ -629,6 +639,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
         ob.lm_tol = certificate;
         if (st) goto done;
         iters += r.iters;
+        ipopt_spent += r.ipopt_iters;
         if (moved && !(r.status == EL_OK && r.f < best.f)) {
             /* a cheap refit not certified lower: the rounds by the search everywhere */
             sampling = 0;
@@ -696,7 +707,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
     res->distance = kind == FIT_PAIRED ? EL_DISTANCE_PAIRED : EL_DISTANCE_ORTHOGONAL;
     res->constraint = constraint;
     res->status = st = status;
-    if (ok && kind == FIT_ORTHOGONAL && !o.use_initial && !lm_only) {
+    if (ok && kind == FIT_ORTHOGONAL && !need_ipopt && !o.use_initial && !lm_only) {
         const double noise_in = noise_rms * sc;
         const double stray = el__fit_stray(xy, n, fs, el__fit_out_length(model, n, res), noise_in, sc);
         if (stray > FIT_STRAY && (st = el__fit_follow_points(model, xy, n, opt, noise_in, sc, stray, res, d, fs)) == EL_OK)

@@ -70,9 +70,8 @@ int el__fit_follow_points(int model, const double *xy, size_t n, const el_fit_op
     int st = el__fit_run(model, xy, n, &po, 0, NULL, &paired, NULL, NULL);
     if (st == EL_ENOMEM) return st;
     if (!gave_curve(&paired) && po.constraints) {
-        /* no paired curve meets the constraints: the unconstrained fit by distance, which
-         * follows the points, as the start (measured: 42 points, discrete, start point and
-         * tangent, a polygon of length 16 at rms 0.0225 where the points span an S of 1) */
+        /* no paired curve meets the held constraints: the unconstrained fit by distance,
+         * which follows the points, as the start */
         po.constraints = 0;
         po.distance = EL_DISTANCE_ORTHOGONAL;
         memset(&paired, 0, sizeof paired);

@@ -240,7 +240,9 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     Sketched or unevenly scanned points need no resampling. A fit by distance to the
     curve follows the points: one that strays from them (a loop or a pass where there is
     no point, the points passed out of order) is fitted again from the paired fit and
-    replaced when that one follows them, even at a higher rms. max_candidates: initial
+    replaced when that one follows them, even at a higher rms (free fits and those whose
+    constraints are held exactly: the start point, the smooth start tangent and
+    curvature). max_candidates: initial
     guesses fitted at most (default 6; fitting stops at the first that reaches the
     data's noise level).
     constraints: any of ``{"start_point": (x, y), "end_point": (x, y),

@@ -150,31 +150,6 @@ static const double S43[] = {
 };
 static const el_smooth_params S43_TRUE = {0, 0, -0.87682342232723975, 3.1006651709664643, 0.25261438075693143, -0.2566323366220109, 1};
 static const double S43_TANGENT = -1.0050640981928318;
-/* 37 points of an S (k = 0.656), noisy, start point and tangent of the true curve
- * (bench_fit_sparse.py 5 194), fitted by the discrete model */
-static const double S37[] = {
-    -0.0070275334307143642, -0.0070879768388448349, 0.012874300516338208, 0.058391963229424249,
-    0.016230194017109172, 0.055967311028188235, 0.014153288553876257, 0.08484440811275519,
-    0.01501170659732187, 0.096503345004815361, 0.015426678108724386, 0.12856446953917172,
-    0.022156685320476342, 0.15930464014301118, 0.023111612829397513, 0.17261488848935491,
-    0.022079737589805064, 0.18076425947133606, 0.020039581791589739, 0.18829470735053475,
-    0.014774459690096262, 0.23267495376995473, 0.017540511102462165, 0.22955419273864835,
-    0.0090220541970470833, 0.25229489648640496, -0.0017755615073066396, 0.26206224675286749,
-    0.0054704168666437052, 0.26251331623833085, -0.00010849970842636853, 0.27019313981657544,
-    0.0012876021799960789, 0.27693071321355722, -0.0081990125276286269, 0.28164845948030265,
-    0.0017222163819314252, 0.26816694617589676, -0.019102941694244945, 0.3023934669755361,
-    -0.023045734541893095, 0.30716644726713338, -0.10434529877193728, 0.35096174931993762,
-    -0.12189539678227634, 0.35106197097300496, -0.20086252263994242, 0.34934762456725849,
-    -0.22441181068045887, 0.33095281720301017, -0.25310869402925135, 0.3134049641315379,
-    -0.27173997743427597, 0.29321922261058064, -0.330598832620556, 0.21455985223401886,
-    -0.35829972441592406, 0.16852317716670642, -0.39134556541330506, 0.10897815218500817,
-    -0.4012602378305874, 0.086156839964045648, -0.43311029116032346, 0.065681754638650863,
-    -0.45456007144729704, 0.033959634485611193, -0.44913973259664525, 0.042382850979470858,
-    -0.45054308804061305, 0.026382190635405693, -0.46400681132634763, 0.028739115948809398,
-    -0.51260976318522622, -0.016401043264559198,
-};
-static const el_smooth_params S37_TRUE = {0, 0, 2.787379009765786, 24.294254516255769, 0.65592961186632659, -1.9480179631254417, 1};
-static const double S37_TANGENT = 1.3675293821974832;
 
 /* A fit that strays from its points (a loop where there is none, the points passed
  * backwards) has a lower rms than the curve they were drawn from only by its freedom
@@ -212,30 +187,6 @@ START_TEST(test_fit_constrained_free_start)
     o.use_initial = 1;
     ck_assert_int_eq(el_fit_smooth(S43, n, &o, &S43_TRUE, &from_truth, NULL, NULL), EL_OK);
     ck_assert_msg(def.rms <= 1.01 * from_truth.rms, "default rms %.6g, from the truth %.6g", def.rms, from_truth.rms);
-}
-END_TEST
-
-/* The discrete model under the same two constraints: before, a polygon of length 2089
- * (rms 0.034, EL_EMAXITER) round 37 points along an S of length 1; now the S (the fit
- * from the true curve's polygon: the same rms to 1 %). */
-START_TEST(test_fit_follows_sparse_points_discrete)
-{
-    const size_t n = sizeof S37 / sizeof S37[0] / 2;
-    const el_smooth_params *t = &S37_TRUE;
-    const double h = t->length / (double)(n - 1);
-    const el_discrete_params truth = {t->x0, t->y0, h, t->phi, sqrt(t->mu) * h, t->q, t->k};
-    el_fit_options o;
-    el_fit_options_defaults(&o);
-    o.constraints = EL_CONSTRAIN_START_POINT | EL_CONSTRAIN_START_TANGENT;
-    o.start_point[0] = o.start_point[1] = 0.0;
-    o.start_tangent = S37_TANGENT;
-    el_fit_discrete_result def, from_truth;
-    ck_assert_int_eq(el_fit_discrete(S37, n, &o, NULL, &def, NULL, NULL), EL_OK);
-    o.use_initial = 1;
-    ck_assert_int_eq(el_fit_discrete(S37, n, &o, &truth, &from_truth, NULL, NULL), EL_OK);
-    ck_assert_msg(def.rms <= 1.01 * from_truth.rms && def.params.h <= 1.1 * from_truth.params.h,
-                  "default rms %.6g h %.4g, from the truth %.6g, %.4g", def.rms, def.params.h, from_truth.rms,
-                  from_truth.params.h);
 }
 END_TEST
 
@@ -285,7 +236,6 @@ static Suite *suite(void)
     tcase_add_test(tc, test_fit_sparse_uneven_loop_discrete);
     tcase_add_test(tc, test_fit_follows_sparse_points);
     tcase_add_test(tc, test_fit_constrained_free_start);
-    tcase_add_test(tc, test_fit_follows_sparse_points_discrete);
     tcase_add_test(tc, test_fit_stray_measure);
     suite_add_tcase(s, tc);
     return s;
