@@ -414,7 +414,8 @@ typedef struct el_fit_smooth_result {
  * a higher rms (without this, 41 noisy points along an arc of length 1 were fitted at a
  * lower rms by a curve of length 4.5 looping twice round them). Up to 0.5 s of CPU on
  * 6-59 sparse points (bench/bench_fit_sparse.py). With Ipopt's rows, its iterations over
- * the guesses and refits of one fit stop at twice opt->max_iter.
+ * the guesses (once one meets the constraints) and the refits of one fit stop at twice
+ * opt->max_iter.
  * Solver: Levenberg-Marquardt, its result certified by the first-order condition
  * (the residual vector orthogonal to every column of the Jacobian to 1e-8, or zero to
  * rounding); Ipopt runs only for bounds that are active, constraints, an uncertified

@@ -532,10 +532,10 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
         if (last_is_best) { best = r; memcpy(best_init, p0, sizeof p0); }
         const double rms = sqrt(2.0 * best.f);
         if (rms <= 1e-10 || map.nx == 0) break;
-        /* constraint rows: Ipopt's iterations over the guesses and the refits below at most
-         * twice max_iter (the fuzzer's 11 points with end constraints: five runs to max_iter,
-         * 1.3 s) */
-        if (need_ipopt && (ipopt_spent += r.ipopt_iters) >= 2 * o.max_iter) break;
+        /* constraint rows: Ipopt's iterations over the guesses, once one has met the
+         * constraints, and the refits below at most twice max_iter (the fuzzer's 11 points
+         * with end constraints: five runs to max_iter, 1.3 s) */
+        if (need_ipopt && (ipopt_spent += r.ipopt_iters) >= 2 * o.max_iter && best.status == EL_OK) break;
         if (rms <= 1.5 * noise && best.status == EL_OK) {
             if (!free_start || rms <= 1.5 * data_noise) break;
             ci = ncand - 1;     /* no more guesses; the unconstrained start next */
