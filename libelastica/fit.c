@@ -119,7 +119,7 @@ static int ipopt_to_status(int rs)
 
 typedef struct cand_result {
     double x[FIT_MAXX], f;
-    int status, iters, used_ipopt, ipopt_status, ipopt_iters;
+    int status, iters, used_ipopt, ipopt_status;
 } cand_result;
 
 /*
@@ -156,6 +156,9 @@ static int bounded_start(fit_objective *ob, const double *xl, const double *xu, 
         if (moved[j]) x[j] = fmin(fmax(sol.x[r++], xl[j]), xu[j]);
     return sol.iters;
 }
+
+/* 1 when a candidate's Ipopt run ended at its iteration limit (Maximum_Iterations_Exceeded). */
+static int ran_out(const cand_result *r) { return r->used_ipopt && r->ipopt_status == -1; }
 
 /* One initial guess: Levenberg-Marquardt, then Ipopt when something needs it. warm: x0 is
  * a fit already and the feet are set (el__fit_run's refit): no paired start. */
@@ -294,7 +297,6 @@ static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit
         r->used_ipopt = 1;
         r->ipopt_status = io.ipopt_status;
         r->iters += io.iters;
-        r->ipopt_iters = io.iters;
     }
     /* Ipopt's point when it had to run (constraints, the LM point outside the bounds)
      * or when it improved on an uncertified one */
@@ -483,7 +485,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
     /* the further starts (fit_restart.c) where the fit needs no Ipopt rows: with them each
      * run is Ipopt's, ~1.5 ms an iteration (a sparse discrete fit with a start tangent
      * took 1.8 s with them) */
-    int iters = 0, tried = 0, last_is_best = 0, ipopt_spent = 0;
+    int iters = 0, tried = 0, last_is_best = 0, ipopt_spent = 0;   /* Ipopt runs to max_iter */
     int free_start = o.constraints && !need_ipopt && !o.use_initial && !lm_only;
     size_t free_ci = (size_t)-1;    /* the unconstrained start's index in cand, once added */
     for (size_t ci = 0; ci < ncand + (free_start != 0); ci++) {
@@ -532,10 +534,10 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
         if (last_is_best) { best = r; memcpy(best_init, p0, sizeof p0); }
         const double rms = sqrt(2.0 * best.f);
         if (rms <= 1e-10 || map.nx == 0) break;
-        /* constraint rows: Ipopt's iterations over the guesses, once one has met the
-         * constraints, and the refits below at most twice max_iter (the fuzzer's 11 points
-         * with end constraints: five runs to max_iter, 1.3 s) */
-        if (need_ipopt && (ipopt_spent += r.ipopt_iters) >= 2 * o.max_iter && best.status == EL_OK) break;
+        /* constraint rows: Ipopt's runs that end at max_iter, at most two over the guesses
+         * once one has met the constraints, and over the refits below while none has (the
+         * fuzzer's 11 points with end constraints: five runs to max_iter, 1.3 s) */
+        if (need_ipopt && (ipopt_spent += ran_out(&r)) >= 2 && best.status == EL_OK) break;
         if (rms <= 1.5 * noise && best.status == EL_OK) {
             if (!free_start || rms <= 1.5 * data_noise) break;
             ci = ncand - 1;     /* no more guesses; the unconstrained start next */
@@ -583,7 +585,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
          * lower by 2e-14 and 5e-5 (feet on the extension beyond an end, which the
          * reported distances do not use). */
         const int may_refit = ok && refit && ob.rest && isfinite(best.f) && best.f > FIT_EXACT_F && map.nx > 0 &&
-                              !(need_ipopt && ipopt_spent >= 2 * o.max_iter);
+                              !(need_ipopt && ipopt_spent >= 2 && best.status != EL_OK);
         size_t moved = 0;
         int projected = 0;
         if (may_refit && last_is_best && sampling && ob.other_passes && sampled < SAMPLED_ROUNDS && round < FEET_ROUNDS &&
@@ -639,14 +641,16 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
         ob.lm_tol = certificate;
         if (st) goto done;
         iters += r.iters;
-        ipopt_spent += r.ipopt_iters;
+        ipopt_spent += ran_out(&r);
         if (moved && !(r.status == EL_OK && r.f < best.f)) {
             /* a cheap refit not certified lower: the rounds by the search everywhere */
             sampling = 0;
             last_is_best = 0;
             continue;
         }
-        refit = r.f < best.f;       /* else once more for the kept curve's distances */
+        /* else once more for the kept curve's distances; with constraint rows only a refit
+         * that meets them (where Ipopt could not, r.f is Levenberg-Marquardt's, free) */
+        refit = r.f < best.f && (!need_ipopt || meets_constraints(&ob, &map, &con, r.x, lo, hi, tmp));
         last_is_best = refit;
         if (refit) {
             best = r;
