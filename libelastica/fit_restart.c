@@ -87,10 +87,10 @@ int el__fit_follow_points(int model, const double *xy, size_t n, const el_fit_op
     memset(&fo, 0, sizeof fo);
     fo.status = -1;
     st = el__fit_run(model, xy, n, &po, 0, paired.params, &fo, buf, buf + n);
-    double st2 = HUGE_VAL;
-    if (st != EL_ENOMEM && gave_curve(&fo))
-        st2 = el__fit_stray(xy, n, buf + n, el__fit_out_length(model, n, &fo), noise, scale);
-    if (st2 <= FIT_STRAY || st2 < 0.5 * stray) {
+    /* the refit's own stray; -1 (out of memory) and a refit without a curve: not kept */
+    const double refit_stray = st != EL_ENOMEM && gave_curve(&fo)
+        ? el__fit_stray(xy, n, buf + n, el__fit_out_length(model, n, &fo), noise, scale) : -1.0;
+    if (refit_stray >= 0.0 && (refit_stray <= FIT_STRAY || refit_stray < 0.5 * stray)) {
         fo.iterations += res->iterations + paired.iterations;
         fo.candidates += res->candidates + paired.candidates;
         *res = fo;
