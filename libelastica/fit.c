@@ -535,7 +535,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
         const double rms = sqrt(2.0 * best.f);
         if (rms <= 1e-10 || map.nx == 0) break;
         /* constraint rows: Ipopt's runs that end at max_iter, at most two over the guesses
-         * once one has met the constraints, and over the refits below while none has (the
+         * once one has met the constraints; while none has, no refit below after one (the
          * fuzzer's 11 points with end constraints: five runs to max_iter, 1.3 s) */
         if (need_ipopt && (ipopt_spent += ran_out(&r)) >= 2 && best.status == EL_OK) break;
         if (rms <= 1.5 * noise && best.status == EL_OK) {
@@ -585,7 +585,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
          * lower by 2e-14 and 5e-5 (feet on the extension beyond an end, which the
          * reported distances do not use). */
         const int may_refit = ok && refit && ob.rest && isfinite(best.f) && best.f > FIT_EXACT_F && map.nx > 0 &&
-                              !(need_ipopt && ipopt_spent >= 2 && best.status != EL_OK);
+                              !(need_ipopt && ipopt_spent >= 1 && best.status != EL_OK);
         size_t moved = 0;
         int projected = 0;
         if (may_refit && last_is_best && sampling && ob.other_passes && sampled < SAMPLED_ROUNDS && round < FEET_ROUNDS &&
