@@ -274,7 +274,7 @@ double el__fit_noise_plain(const double *xy, size_t n, double sc);
 typedef struct fit_out {
     double params[FIT_NP], initial[FIT_NP];
     double rms, max_error;
-    double f;    /* the objective (normalised units) of the kept fit's last solve */
+    double f;    /* the objective (normalised units) of the kept fit (its best candidate) */
     int iterations, candidates, ipopt_status, used_ipopt, status, mode, distance, constraint;
 } fit_out;
 
