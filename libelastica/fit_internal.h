@@ -243,6 +243,9 @@ int el__fit_curve_distances(fit_objective *ob, const double *x, double v[2][FIT_
  * -1 when out of memory. scale: the data's size (the fit's normalisation, el__fit_normalisation). */
 #define FIT_STRAY 0.1
 double el__fit_stray(const double *xy, size_t n, const double *fs, double L, double noise, double scale);
+/* fit_refit.c: idx (n entries) the indices 0..n-1 in the order of fs, ties by index;
+ * 0, or -1 when out of memory (feet far out of order take n pairs of workspace) */
+int el__fit_feet_order(const double *fs, size_t *idx, size_t n);
 /* fit_refit.c: the smooth distances d and feet fs of the points at x (v its parameters,
  * one curve), the feet projected from o->s, then those found nearer on another pass of
  * the curve from its samples (*moved of them whose foot in o->s lies on [0, L]). */

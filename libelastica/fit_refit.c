@@ -298,17 +298,42 @@ out:
     return st;
 }
 
-/* The points' indices in the order of their feet fs: by insertion, linear in n where the
- * feet are in order but for a few (qsort cost 4 % of a 1000-point smooth fit) */
-static void sort_by_foot(const double *fs, size_t *idx, size_t n)
+typedef struct { double foot; size_t index; } foot_index;
+
+static int by_foot_then_index(const void *a, const void *b)
 {
+    const foot_index *x = a, *y = b;     /* a total order: a NaN foot after every number */
+    if (x->foot < y->foot) return -1;
+    if (x->foot > y->foot) return 1;
+    if (isnan(x->foot) != isnan(y->foot)) return isnan(x->foot) ? 1 : -1;
+    return (x->index > y->index) - (x->index < y->index);
+}
+
+/* Header: by insertion, linear in n where the feet are in order but for a few (qsort
+ * cost 4 % of a 1000-point smooth fit); past FEET_ORDER_MOVES moves a point (the feet
+ * far out of order, insertion's n^2 / 4 moves) by qsort on (foot, index) pairs: the
+ * same order, ties by index as insertion leaves them. */
+#define FEET_ORDER_MOVES 32
+int el__fit_feet_order(const double *fs, size_t *idx, size_t n)
+{
+    const size_t budget = FEET_ORDER_MOVES * n;
+    size_t moves = 0;
     for (size_t k = 0; k < n; k++) idx[k] = k;
-    for (size_t k = 1; k < n; k++) {
+    for (size_t k = 1; k < n && moves <= budget; k++) {
         const size_t t = idx[k];
         size_t j = k;
         for (; j > 0 && fs[idx[j - 1]] > fs[t]; j--) idx[j] = idx[j - 1];
         idx[j] = t;
+        moves += k - j;
     }
+    if (moves <= budget) return 0;
+    foot_index *pairs = malloc(sizeof *pairs * n);
+    if (!pairs) return -1;
+    for (size_t k = 0; k < n; k++) { pairs[k].foot = fs[k]; pairs[k].index = k; }
+    qsort(pairs, n, sizeof *pairs, by_foot_then_index);
+    for (size_t k = 0; k < n; k++) idx[k] = pairs[k].index;
+    free(pairs);
+    return 0;
 }
 
 double el__fit_stray(const double *xy, size_t n, const double *fs, double L, double noise, double scale)
@@ -320,7 +345,7 @@ double el__fit_stray(const double *xy, size_t n, const double *fs, double L, dou
     size_t *idx = NULL;
     if (!in_order) {
         if (!(idx = malloc(sizeof *idx * n))) return -1.0;
-        sort_by_foot(fs, idx, n);
+        if (el__fit_feet_order(fs, idx, n)) { free(idx); return -1.0; }
     }
     /* lengths over scale (the data's size): sqrt of sums of squares without overflow,
      * cheaper than hypot (2 % of a 1000-point smooth fit with hypot) */

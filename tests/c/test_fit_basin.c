@@ -227,6 +227,68 @@ START_TEST(test_fit_stray_measure)
 }
 END_TEST
 
+/* el__fit_feet_order: the order of the feet, ties by index, whether insertion keeps it
+ * (feet nearly in order) or the qsort fallback takes over (far out of order): sorted,
+ * neighbours swapped, reversed, shuffled, runs of ties, sizes 0 to 2 * 10^5. */
+static void check_feet_order(const double *fs, size_t n)
+{
+    size_t *idx = malloc(sizeof *idx * (n ? n : 1));
+    char *seen = calloc(n ? n : 1, 1);
+    ck_assert(idx && seen);
+    ck_assert_int_eq(el__fit_feet_order(fs, idx, n), 0);
+    for (size_t k = 0; k < n; k++) {
+        ck_assert(idx[k] < n && !seen[idx[k]]);
+        seen[idx[k]] = 1;
+        if (k) ck_assert(fs[idx[k - 1]] < fs[idx[k]] || (fs[idx[k - 1]] == fs[idx[k]] && idx[k - 1] < idx[k]));
+    }
+    free(idx);
+    free(seen);
+}
+
+START_TEST(test_fit_feet_order)
+{
+    const size_t sizes[] = {0, 1, 2, 3, 50, 1000, 200000};
+    unsigned long long r = 88172645463325252ULL;
+    for (size_t z = 0; z < sizeof sizes / sizeof *sizes; z++) {
+        const size_t n = sizes[z];
+        double *fs = malloc(sizeof *fs * (n ? n : 1));
+        ck_assert(fs != NULL);
+        for (int pattern = 0; pattern < 5; pattern++) {
+            for (size_t k = 0; k < n; k++) {
+                r ^= r << 13; r ^= r >> 7; r ^= r << 17;
+                const double u = (double)(r >> 11) / 9007199254740992.0;
+                fs[k] = pattern == 0 ? (double)k                       /* sorted */
+                      : pattern == 1 ? (double)(k ^ 1)                 /* neighbours swapped */
+                      : pattern == 2 ? (double)(n - k)                 /* reversed */
+                      : pattern == 3 ? u                               /* shuffled */
+                      : (double)((n - k) / 7);                         /* reversed runs of 7 ties */
+            }
+            check_feet_order(fs, n);
+        }
+        free(fs);
+    }
+}
+END_TEST
+
+/* el__fit_stray with 2 * 10^5 feet run backwards (the fallback's order): points on the
+ * unit segment, feet 1 - x on a curve of length 1.5; only the 0.5 past the last foot
+ * strays, over the polygon's length 1 */
+START_TEST(test_fit_stray_backwards_feet)
+{
+    const size_t n = 200001;
+    double *xy = malloc(sizeof *xy * 2 * n), *fs = malloc(sizeof *fs * n);
+    ck_assert(xy && fs);
+    for (size_t k = 0; k < n; k++) {
+        xy[2 * k] = (double)k / (double)(n - 1);
+        xy[2 * k + 1] = 0.0;
+        fs[k] = 1.0 - xy[2 * k];
+    }
+    ck_assert(fabs(el__fit_stray(xy, n, fs, 1.5, 0.0, 1.0) - 0.5) < 1e-9);
+    free(xy);
+    free(fs);
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("fit_basin");
@@ -237,6 +299,8 @@ static Suite *suite(void)
     tcase_add_test(tc, test_fit_follows_sparse_points);
     tcase_add_test(tc, test_fit_constrained_free_start);
     tcase_add_test(tc, test_fit_stray_measure);
+    tcase_add_test(tc, test_fit_feet_order);
+    tcase_add_test(tc, test_fit_stray_backwards_feet);
     suite_add_tcase(s, tc);
     return s;
 }
