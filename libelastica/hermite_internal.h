@@ -55,6 +55,9 @@ int el__hermite_shape_eval(const hprob *pr, double qs, hstate *st);
  * (may be NULL) says whether the values are double precision. The same values as
  * el__hermite_shape_eval with qs, then with 1, without preparing the state twice. */
 int el__hermite_shape_eval_to(const hprob *pr, double qs, double fine_below, hstate *st, int *fine);
+/* f alone in the x chart: el__hermite_curvdata then el__hermite_shape_eval's st.f, the same
+ * bits (test_hermite_tension.c); NAN and the status where they fail. */
+int el__hermite_x_objective(const hprob *pr, double x, int b, double qs, double *f);
 int el__hermite_full_eval(const hprob *pr, double x, int b, hstate *st);
 void el__hermite_set_case(hprob *pr);
 /* el__hermite_full_eval with the gradient of L, E and f (and sigma, and |F| - sigma)

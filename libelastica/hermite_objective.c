@@ -145,7 +145,8 @@ double el__hermite_case3_kappa0(const hprob *pr, int fam)
 
 /* Theorem 6: curvature data for the unknown x (kappa0 in case 1, 2; kappa0' in
  * case 3) on branch b (case 1: root of (17); case 3: the kappa0 of (24)). */
-int el__hermite_curvdata(const hprob *pr, double x, int b, hstate *st)
+/* el__hermite_curvdata, inlined into el__hermite_x_objective */
+EL__INLINE int curvdata(const hprob *pr, double x, int b, hstate *st)
 {
     const double s = pr->sigma, P1 = pr->P1, P2 = pr->P2, V1 = pr->V1, V2 = pr->V2;
     double k0, k0p, k1;
@@ -182,6 +183,8 @@ int el__hermite_curvdata(const hprob *pr, double x, int b, hstate *st)
     st->has_sep = 0;
     return isfinite(k1) && isfinite(k0p) ? EL_OK : EL_EDOM;
 }
+
+int el__hermite_curvdata(const hprob *pr, double x, int b, hstate *st) { return curvdata(pr, x, b, st); }
 
 
 /* el__hermite_state_class, inlined into shape_prepare */
@@ -484,6 +487,21 @@ int el__hermite_shape_eval_to(const hprob *pr, double qs, double fine_below, hst
 int el__hermite_shape_eval(const hprob *pr, double qs, hstate *st)
 {
     return el__hermite_shape_eval_to(pr, qs, -1.0, st, NULL);   /* |f| <= -1: never continued */
+}
+
+/* curvdata, shape_prepare, the integrals and shape_finish inlined into one function on a
+ * local state: what the bracketing samples need (their f), without the state's stores */
+int el__hermite_x_objective(const hprob *pr, double x, int b, double qs, double *f)
+{
+    hstate st;
+    shapework w;
+    double rf, rd, U, DD;
+    int rc = curvdata(pr, x, b, &st);
+    if (!rc) rc = shape_prepare(pr, &st, &w);
+    if (!rc) rc = el__carlson_fd(w.ra.x, w.ra.y, 1.0, qs, &rf, &rd);
+    if (!rc) rc = shape_finish(pr, &w, rf, rd, &st, &U, &DD);
+    *f = rc ? NAN : st.f;
+    return rc;
 }
 
 int el__hermite_chart_eval(const hprob *pr, int chart, double u, double v, int b, hstate *st,

@@ -236,6 +236,11 @@ static int piece_eval_to(fctx *c, double u, double fine_below, hstate *st, doubl
  * sign and rough size are used, and the root finder and every accepted root the full precision. */
 static double fobj_coarse(fctx *c, double x)
 {
+    if (!c->sep) {
+        double f;
+        el__hermite_x_objective(c->pr, x, c->b, COARSE_QS, &f);
+        return f;
+    }
     hstate st;
     double w;
     return piece_eval(c, x, COARSE_QS, &st, &w) ? GSL_NAN : st.f;

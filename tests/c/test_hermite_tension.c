@@ -476,6 +476,42 @@ START_TEST(steep_root_next_to_a_close_pair_is_kept)
 }
 END_TEST
 
+
+/* el__hermite_x_objective (the bracketing samples' f) against the plain path,
+ * el__hermite_curvdata then el__hermite_shape_eval: the same status and the same bits,
+ * at the coarse and the full precision, on every branch over [-B, B] and a margin
+ * beyond (no curve there), for the six families' problems. */
+START_TEST(x_objective_equals_the_plain_evaluation)
+{
+    unsigned long long st = 4711;
+    long nsame = 0, nfail = 0;
+    for (int family = 0; family < 6; family++)
+        for (int t = 0; t < 60; t++) {
+            double p1[2], t1[2], sigma;
+            draw(&st, family, p1, t1, &sigma);
+            hprob pr = normalised_problem(p1, t1, sigma);
+            if (el__hermite_kappa_bound(pr.sigma, pr.Lmin, &pr.B) || pr.B < 0.0) continue;
+            for (int b = 0; b < 4; b++)
+                for (int i = 0; i <= 400; i++) {
+                    const double x = pr.B * (-1.1 + 2.2 * i / 400.0);
+                    for (int q = 0; q < 2; q++) {
+                        const double qs = q ? 1.0 : 0.1;
+                        hstate hs;
+                        double f;
+                        int rc0 = el__hermite_curvdata(&pr, x, b, &hs);
+                        if (!rc0) rc0 = el__hermite_shape_eval(&pr, qs, &hs);
+                        const int rc1 = el__hermite_x_objective(&pr, x, b, qs, &f);
+                        ck_assert_int_eq(rc0, rc1);
+                        if (rc0) { ck_assert(isnan(f)); nfail++; continue; }
+                        ck_assert(memcmp(&f, &hs.f, sizeof f) == 0);
+                        nsame++;
+                    }
+                }
+        }
+    ck_assert(nsame > 100000 && nfail > 1000);   /* both outcomes covered */
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("hermite_tension");
@@ -484,6 +520,7 @@ int main(void)
     tcase_add_loop_test(tc, tension_solutions_contain_every_scanned_root, 0, 6);
     tcase_add_loop_test(tc, tension_roots_exact_and_equal_to_the_bisection, 0, 6);
     tcase_add_test(tc, steep_root_next_to_a_close_pair_is_kept);
+    tcase_add_test(tc, x_objective_equals_the_plain_evaluation);
     tcase_add_test(tc, kappa_bound_bounds_the_period_tightly);
     tcase_add_test(tc, separatrix_crossings_exact_at_high_tension);
     tcase_add_test(tc, separatrix_chart_independent_of_the_guess);
