@@ -50,6 +50,9 @@ enum { CLASS_NONE, CLASS_INFL, CLASS_NONINFL, CLASS_MIXED };
 double el__hermite_case3_kappa0(const hprob *pr, int fam);
 int el__hermite_curvdata(const hprob *pr, double x, int b, hstate *st);
 int el__hermite_state_class(const hprob *pr, const hstate *st, double *Fn);
+/* The class of the state at x on branch b (CLASS_NONE where el__hermite_curvdata fails):
+ * the two calls inlined into one. */
+int el__hermite_x_class(const hprob *pr, double x, int b);
 int el__hermite_shape_eval(const hprob *pr, double qs, hstate *st);
 /* The same, continued to double precision (qs = 1) where |f| <= fine_below at qs; *fine
  * (may be NULL) says whether the values are double precision. The same values as

@@ -201,6 +201,13 @@ EL__INLINE int state_class(const hprob *pr, const hstate *st, double *Fn)
 
 int el__hermite_state_class(const hprob *pr, const hstate *st, double *Fn) { return state_class(pr, st, Fn); }
 
+int el__hermite_x_class(const hprob *pr, double x, int b)
+{
+    hstate st;
+    double Fn;
+    return curvdata(pr, x, b, &st) ? CLASS_NONE : state_class(pr, &st, &Fn);
+}
+
 /* What shape_finish needs besides the two Carlson integrals of the reduced amplitude:
  * L = Lscale F, E = Escale (F - Dfac (D + prod)), f = (E - sigma L - FP) iFn; and
  * what shape_grad needs: m, mc the parameter of the integrals and its complement,

@@ -112,12 +112,7 @@ static double domain_half(const hprob *pr, int b)
 
 /* The kind of curve at x (el__hermite_state_class; cheap, the curvature data only); CLASS_NONE
  * also outside (18). */
-static int point_class(const hprob *pr, int b, double x)
-{
-    hstate st;
-    double Fn;
-    return el__hermite_curvdata(pr, x, b, &st) ? CLASS_NONE : el__hermite_state_class(pr, &st, &Fn);
-}
+static int point_class(const hprob *pr, int b, double x) { return el__hermite_x_class(pr, x, b); }
 
 /* Split points of branch b: (18) ends, (40) roots, (44) kappa0 = 0 and kappa1 = 0,
  * (45) special values; case 3: (41), kappa0' = 0. */
@@ -357,9 +352,22 @@ static int bracket_root(fctx *c, double a, double fa, double b, double fb, hroot
         const double step = fabs(x - b);
         double w;
         /* no curve: no root; near the root (|f| <= 1e-6) its value in full precision */
-        if (full ? piece_eval(c, x, 1.0, &r.st, &w) : piece_eval_to(c, x, 1e-6, &r.st, &w, &full)) break;
+        double f;
+        if (!full && !c->sep) {
+            /* x chart, coarse: f alone (el__hermite_x_objective); where |f| <= 1e-6 the state
+             * in full precision, as piece_eval_to's continuation gives it (the same bits) */
+            if (el__hermite_x_objective(c->pr, x, c->b, COARSE_QS, &f)) break;
+            w = x;
+            if (fabs(f) <= 1e-6) {
+                full = 1;
+                if (piece_eval(c, x, 1.0, &r.st, &w)) break;
+                f = r.st.f;
+            }
+        } else {
+            if (full ? piece_eval(c, x, 1.0, &r.st, &w) : piece_eval_to(c, x, 1e-6, &r.st, &w, &full)) break;
+            f = r.st.f;
+        }
         r.x = w;
-        const double f = r.st.f;
         if (c->sep && full && fabs(f) < best_f) {
             best = r;
             best_f = fabs(f);

@@ -477,11 +477,12 @@ START_TEST(steep_root_next_to_a_close_pair_is_kept)
 END_TEST
 
 
-/* el__hermite_x_objective (the bracketing samples' f) against the plain path,
- * el__hermite_curvdata then el__hermite_shape_eval: the same status and the same bits,
+/* el__hermite_x_objective (the bracketing samples' f) and el__hermite_x_class against the
+ * plain path, el__hermite_curvdata then el__hermite_shape_eval (el__hermite_state_class): the
+ * same status and the same bits,
  * at the coarse and the full precision, on every branch over [-B, B] and a margin
  * beyond (no curve there), for the six families' problems. */
-START_TEST(x_objective_equals_the_plain_evaluation)
+START_TEST(x_objective_and_class_equal_the_plain_evaluation)
 {
     unsigned long long st = 4711;
     long nsame = 0, nfail = 0;
@@ -494,6 +495,10 @@ START_TEST(x_objective_equals_the_plain_evaluation)
             for (int b = 0; b < 4; b++)
                 for (int i = 0; i <= 400; i++) {
                     const double x = pr.B * (-1.1 + 2.2 * i / 400.0);
+                    hstate cs;
+                    double Fn;
+                    const int cls = el__hermite_curvdata(&pr, x, b, &cs) ? CLASS_NONE : el__hermite_state_class(&pr, &cs, &Fn);
+                    ck_assert_int_eq(cls, el__hermite_x_class(&pr, x, b));
                     for (int q = 0; q < 2; q++) {
                         const double qs = q ? 1.0 : 0.1;
                         hstate hs;
@@ -520,7 +525,7 @@ int main(void)
     tcase_add_loop_test(tc, tension_solutions_contain_every_scanned_root, 0, 6);
     tcase_add_loop_test(tc, tension_roots_exact_and_equal_to_the_bisection, 0, 6);
     tcase_add_test(tc, steep_root_next_to_a_close_pair_is_kept);
-    tcase_add_test(tc, x_objective_equals_the_plain_evaluation);
+    tcase_add_test(tc, x_objective_and_class_equal_the_plain_evaluation);
     tcase_add_test(tc, kappa_bound_bounds_the_period_tightly);
     tcase_add_test(tc, separatrix_crossings_exact_at_high_tension);
     tcase_add_test(tc, separatrix_chart_independent_of_the_guess);
