@@ -88,7 +88,7 @@ static int correct(tracer *T, cpt *q, double tol, int maxit, int *its)
 /* The unit tangent of C at p, oriented along (d0, d1). */
 static void tangent(const cpt *p, double d0, double d1, double tau[2])
 {
-    const double n = hypot(p->fg[0], p->fg[1]);
+    const double n = el__hlen_norm(p->fg[0], p->fg[1]);
     tau[0] = -p->fg[1] / n;
     tau[1] = p->fg[0] / n;
     if (tau[0] * d0 + tau[1] * d1 < 0.0) { tau[0] = -tau[0]; tau[1] = -tau[1]; }
@@ -113,7 +113,7 @@ static int newton2(tracer *T, int which, double target, double span, cpt *r)
         const double det = r->fg[0] * G[1] - r->fg[1] * G[0];
         if (!(fabs(det) > 0.0)) return EL_EDOM;
         double d0 = -(G[1] * res0 - r->fg[1] * res1) / det, d1 = -(-G[0] * res0 + r->fg[0] * res1) / det;
-        const double n = hypot(d0, d1);
+        const double n = el__hlen_norm(d0, d1);
         if (n > span) { d0 *= span / n; d1 *= span / n; }
         cpt s, full;
         int ok = 0, full_ok = 0;
@@ -165,7 +165,7 @@ static int cross(tracer *T, const cpt *p, const cpt *q, int which, double target
 {
     const double gp = which ? p->t : p->st.L, gq = which ? q->t : q->st.L;
     const double w = gp == gq ? 0.5 : (gp - target) / (gp - gq);
-    const double dU = q->U - p->U, dV = q->V - p->V, span = hypot(dU, dV) + 1e-12;
+    const double dU = q->U - p->U, dV = q->V - p->V, span = el__hlen_norm(dU, dV) + 1e-12;
     const int same = p->chart == q->chart && p->base == q->base && p->fi == q->fi && p->b == q->b && p->side == q->side;
     if (same) {
         const int rc = el__hlen_eval(T, q, p->U + w * dU, p->V + w * dV, r);
@@ -245,7 +245,7 @@ static int length_crossings(tracer *T, const cpt *p, const double tp[2], const c
          * chord, say) or reached the neighbour: from each end of the step, points of C */
         for (int e = 0; e < 2 && el__hlen_same_chart(p, q); e++) {
             r = e ? *q : *p;
-            rc = newton2_charts(T, 0, T->Lt, hypot(q->U - p->U, q->V - p->V) + 1e-12, &r);
+            rc = newton2_charts(T, 0, T->Lt, el__hlen_norm(q->U - p->U, q->V - p->V) + 1e-12, &r);
             if (rc == EL_EMAXITER) return rc;
             if (rc == EL_OK && (rc = keep_crossing(T, p, q, &r, &inside))) return rc;
             if (inside) return EL_OK;
@@ -258,7 +258,7 @@ static int length_crossings(tracer *T, const cpt *p, const double tp[2], const c
          * of (17) meet), the midpoint of the step's cubic Hermite interpolant,
          * (p + q) / 2 + D (tp - tq) / 8 (D the chord's length), which follows C's bend,
          * and for a step across the branches both again on the other end's branch */
-        const double D = hypot(q->U - p->U, q->V - p->V);
+        const double D = el__hlen_norm(q->U - p->U, q->V - p->V);
         const cpt *ends[2] = {p->b == q->b ? p : q, p->b == q->b ? NULL : p};
         cpt m;
         rc = EL_EDOM;
@@ -277,7 +277,7 @@ static int length_crossings(tracer *T, const cpt *p, const double tp[2], const c
         return length_crossings(T, &m, tm, q, tq, depth - 1);
     }
     if (depth == 0) return EL_OK;
-    const double dU = q->U - p->U, dV = q->V - p->V, ds = hypot(dU, dV);
+    const double dU = q->U - p->U, dV = q->V - p->V, ds = el__hlen_norm(dU, dV);
     const double m0 = (p->Lg[0] * tp[0] + p->Lg[1] * tp[1]) * ds;
     const double m1 = (q->Lg[0] * tq[0] + q->Lg[1] * tq[1]) * ds;
     /* H(x) = a h00 + m0 h10 + b h01 + m1 h11 on [0, 1]; H'(x) = c2 x^2 + c1 x + m0 */
@@ -342,7 +342,7 @@ static int seed_by_interpolation(const tracer *T, const cpt *p, const double tp[
     const int t_is_V = p->chart == HCHART_X || p->chart == HCHART_K1 ||
                        (p->chart == CHART_SEP && p->fi == 0 && p->base != HCHART_C3);
     if (!t_is_V || !el__hlen_same_chart(p, q) || !(q->V != p->V)) return -1;
-    const double D = hypot(q->U - p->U, q->V - p->V);
+    const double D = el__hlen_norm(q->U - p->U, q->V - p->V);
     double x = (ts - p->V) / (q->V - p->V);
     for (int it = 0; it < 30; it++) {   /* V(x) = ts by Newton (V the cubic of x below) to |dx| <= 1e-15 */
         const double V = (2 * x * x * x - 3 * x * x + 1) * p->V + (x * x * x - 2 * x * x + x) * D * tp[1] +
@@ -492,7 +492,7 @@ static int trace(tracer *T, int origin, double dir)
             const double dU = q.U - p.U, dV = q.V - p.V;
             tangent(&q, tau[0], tau[1], tq);
             cosang = tau[0] * tq[0] + tau[1] * tq[1];
-            err = hypot(q.U - pU, q.V - pV);
+            err = el__hlen_norm(q.U - pU, q.V - pV);
             ok = err <= 0.3 * h && cosang >= 0.9 && fabs(log(q.st.L / p.st.L)) <= LRATIO &&
                  dU * tau[0] + dV * tau[1] > 0.0;
         }
@@ -550,7 +550,7 @@ static int trace(tracer *T, int origin, double dir)
         if ((rc = el__hlen_rechart(T, &p))) return rc == EL_EMAXITER ? rc : EL_OK;
         double pu, pv;
         el__hlen_coords_in(T->pr, &prev, &p, &pu, &pv);
-        const double ds = hypot(q.U - prev.U, q.V - prev.V);
+        const double ds = el__hlen_norm(q.U - prev.U, q.V - prev.V);
         have_last = el__hlen_same_chart(&p, &q) && el__hlen_same_chart(&prev, &q) && ds > 0.0;
         lastP[0] = prev.U;
         lastP[1] = prev.V;

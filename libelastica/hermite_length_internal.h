@@ -50,6 +50,8 @@ int el__hlen_solve_newton_seeds(hprob *pr, double Lt, int nl, int ns, hrootlist 
 
 /* sinh to a few ulps, faster than libm's (the tracer's coordinates are asinh of the chart's) */
 double el__hlen_sinh(double x);
+/* hypot(a, b), faster than libm's */
+double el__hlen_norm(double a, double b);
 
 /* The point (U, V) in the chart of `like` (chart, base, fi, side, b; its w the separatrix
  * chart's starting guess), into *p; counts one evaluation (EL_EMAXITER past the limit). */

@@ -345,6 +345,35 @@ START_TEST(length_mode_follows_C_past_the_trace_range_while_L_exceeds_Lt)
 }
 END_TEST
 
+/* el__hlen_norm, the tracer's fast hypot, against libm's over the whole range: both
+ * sides of its switches at squares' sums 1e-290 and 1e290, zeros, subnormals, huge,
+ * infinite and NaN arguments; within 2u of the exact value and hypot within 1 ulp of it,
+ * so within 4.5e-16 of hypot relative */
+START_TEST(length_mode_fast_norm_matches_libm)
+{
+    unsigned long long st = 4242;
+    double worst = 0.0;
+    for (int i = 0; i < 2000000; i++) {
+        st ^= st << 13; st ^= st >> 7; st ^= st << 17;
+        const double ea = -320.0 + 628.0 * (double)(st >> 11) / 9007199254740992.0;
+        st ^= st << 13; st ^= st >> 7; st ^= st << 17;
+        /* b within a few decades of a half the time (both squares matter), anywhere else */
+        const double eb = i % 2 ? ea - 8.0 * (double)(st >> 11) / 9007199254740992.0
+                                : -320.0 + 628.0 * (double)(st >> 11) / 9007199254740992.0;
+        const double a = (st & 1 ? -1.0 : 1.0) * pow(10.0, ea), b = (st & 2 ? -1.0 : 1.0) * pow(10.0, eb);
+        const double r = hypot(a, b), f = el__hlen_norm(a, b);
+        if (isinf(r)) { ck_assert(f == r); continue; }
+        worst = fmax(worst, fabs(f - r) / r);
+    }
+    for (double x = 0.9e-145; x < 1.1e-145; x *= 1.0001) worst = fmax(worst, fabs(el__hlen_norm(x, x) - hypot(x, x)) / hypot(x, x));
+    for (double x = 0.9e145; x < 1.1e145; x *= 1.0001) worst = fmax(worst, fabs(el__hlen_norm(x, -x) - hypot(x, x)) / hypot(x, x));
+    ck_assert_msg(worst <= 4.5e-16, "hypot relative error %g", worst);
+    ck_assert(el__hlen_norm(0.0, 0.0) == 0.0 && el__hlen_norm(-3.0, 4.0) == 5.0);
+    ck_assert(el__hlen_norm(INFINITY, 1.0) == INFINITY && el__hlen_norm(1.0, -INFINITY) == INFINITY);
+    ck_assert(isnan(el__hlen_norm(NAN, 1.0)) && el__hlen_norm(1e-320, 0.0) == 1e-320);
+}
+END_TEST
+
 /* el__hlen_sinh, the tracer's fast sinh, against libm's over its whole range: both sides
  * of its switch at 1/2, tiny and huge arguments, the overflow beyond 710 */
 START_TEST(length_mode_fast_sinh_matches_libm)
@@ -428,6 +457,7 @@ int main(void)
     tcase_add_test(tc, length_mode_follows_C_where_its_chart_folds);
     tcase_add_test(tc, length_mode_follows_C_past_the_trace_range_while_L_exceeds_Lt);
     tcase_add_test(tc, length_mode_fast_sinh_matches_libm);
+    tcase_add_test(tc, length_mode_fast_norm_matches_libm);
     tcase_add_test(tc, length_mode_seed_lines_find_every_tension_root);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
