@@ -226,7 +226,12 @@ int el_discrete_jacobian(const el_discrete_params *p, size_t n, double *xy, doub
  *   EL_PARAM_UNIFORM  s_i = i r, r = length/(n-1): equilateral data (point i
  *                     at arc length i r of the fitted curve);
  *   EL_PARAM_CHORD    s_i = t_i length, t_i = (chord length from point 0 to
- *                     point i) / (total chord length): the chord-length parameter;
+ *                     point i) / (total chord length): the chord-length parameter,
+ *                     each side's noise taken out: sqrt(max(d^2 - 2 nu^2, d^2/100))
+ *                     for a side d, nu the points' noise level as the fit estimates
+ *                     it (rms per point; noise lengthens a side to sqrt(d^2 + 2 nu^2)
+ *                     on average, and plain chords gave a cluster of close noisy
+ *                     points too much of the curve);
  *   EL_PARAM_AUTO     UNIFORM when the data are equilateral in the large: the
  *                     sides of the polygon of the means of 32 blocks of
  *                     consecutive points (of the points themselves when n <= 40)

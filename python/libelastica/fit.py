@@ -233,7 +233,8 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     foot free; the curve starts and ends at the first and last points' feet, the
     polygon at those points) or "paired" (discrete: vertex i <-> point i, seed 000
     (4.6); smooth: point i at arc length i*length/(n-1) for equilateral data, the
-    chord-length parameter otherwise; ``param`` = "auto" | "uniform" | "chord").
+    chord-length parameter, the points' estimated noise taken out of each chord,
+    otherwise; ``param`` = "auto" | "uniform" | "chord").
     Default: orthogonal, except the discrete model on evenly spaced points (an
     equilateral polygon, e.g. from :func:`resample_equilateral`, or samples at equal
     steps: runs of max(3, (n-1)/16) segments of means within 1.3 x): paired.

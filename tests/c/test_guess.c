@@ -1,6 +1,7 @@
 /* Initial guess (guess.c), seed 000 §4.3: the modulus k from (4.34)-(4.37)
  * and the phase fit land close to the truth on noise-free data; invariance. */
 #include "testutil.h"
+#include "fit_internal.h"
 #include <gsl/gsl_sf_ellint.h>
 
 static double half_period(double k)
@@ -107,6 +108,46 @@ START_TEST(test_guess_bad_input)
 }
 END_TEST
 
+/* el_fit_fractions' chord parameter by its definition: each side d of the points' polygon
+ * (normalised units) counts sqrt(max(d^2 - 2 nu^2, d^2 / 100)), nu the noise level the fit
+ * estimates (el__fit_noise_rms); on uneven noisy points that differs from the plain
+ * chords, on noise-free points along a line it is the plain chords. */
+START_TEST(test_fractions_noise_out)
+{
+    enum { N = 40 };
+    double xy[2 * N], t[N], cx, cy, sc;
+    for (int pass = 0; pass < 2; pass++) {
+        unsigned long long r = 2463534242ULL;
+        for (int i = 0; i < N; i++) {
+            r ^= r << 13; r ^= r >> 7; r ^= r << 17;
+            const double s = (double)i * i / ((N - 1.0) * (N - 1.0)), e = pass ? 0.0 : 0.03 * ((double)(r >> 11) / 9007199254740992.0 - 0.5);
+            xy[2 * i] = 3.0 * s + e;
+            xy[2 * i + 1] = pass ? 0.5 * s : sin(2.0 * s) + e;
+        }
+        int mode = -1;
+        ck_assert_int_eq(el_fit_fractions(xy, N, EL_PARAM_CHORD, t, &mode), EL_OK);
+        ck_assert_int_eq(mode, EL_PARAM_CHORD);
+        ck_assert_int_eq(el__fit_normalisation(xy, N, &cx, &cy, &sc), EL_OK);
+        const double nu = el__fit_noise_rms(xy, N, sc), n2 = 2.0 * nu * nu;
+        ck_assert(pass ? nu < 1e-12 : nu > 1e-4);
+        double cum[N], plain[N];
+        cum[0] = plain[0] = 0.0;
+        for (int i = 1; i < N; i++) {
+            const double dx = (xy[2 * i] - xy[2 * i - 2]) / sc, dy = (xy[2 * i + 1] - xy[2 * i - 1]) / sc, d2 = dx * dx + dy * dy;
+            cum[i] = cum[i - 1] + sqrt(fmax(d2 - n2, 0.01 * d2));
+            plain[i] = plain[i - 1] + sqrt(d2);
+        }
+        double moved = 0.0;
+        for (int i = 0; i < N; i++) {
+            ck_assert_msg(fabs(t[i] - cum[i] / cum[N - 1]) <= 1e-14, "pass %d t[%d] %.17g, by definition %.17g",
+                          pass, i, t[i], cum[i] / cum[N - 1]);
+            moved = fmax(moved, fabs(t[i] - plain[i] / plain[N - 1]));
+        }
+        ck_assert_msg(pass ? moved <= 1e-14 : moved > 1e-3, "pass %d: %g from the plain chords", pass, moved);
+    }
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("guess");
@@ -116,6 +157,7 @@ static Suite *suite(void)
     tcase_add_test(tc, test_guess_k_smooth);
     tcase_add_test(tc, test_guess_similarity);
     tcase_add_test(tc, test_guess_bad_input);
+    tcase_add_test(tc, test_fractions_noise_out);
     suite_add_tcase(s, tc);
     return s;
 }
