@@ -49,8 +49,10 @@ static int effective_degree(const double *c, int deg, double lo, double hi)
 /* The root of sum c[i] x^i in [a, b], where its value fa at a and p(b) differ in sign, to
  * the relative precision tol: Newton's method from x inside the bracket, kept there
  * (bisection when a step leaves it or the previous step did not halve it; rtsafe of
- * Numerical Recipes). */
-static double bracketed_root(const double *c, int deg, double a, double b, double fa, double x, double tol)
+ * Numerical Recipes). Inlined with deg constant for (40)'s usual degree 8
+ * (bracketed_root below): horner unrolled, the same operations. */
+static inline double bracketed_root_deg(const double *c, const int deg, double a, double b, double fa,
+                                        double x, double tol)
 {
     double dp, dxold = b - a, dx = dxold, ga = fa;
     double fx = horner(c, deg, x, &dp);
@@ -70,6 +72,11 @@ static double bracketed_root(const double *c, int deg, double a, double b, doubl
         if (fx * ga > 0.0) { a = x; ga = fx; } else b = x;
     }
     return x;
+}
+
+static double bracketed_root(const double *c, int deg, double a, double b, double fa, double x, double tol)
+{
+    return deg == 8 ? bracketed_root_deg(c, 8, a, b, fa, x, tol) : bracketed_root_deg(c, deg, a, b, fa, x, tol);
 }
 
 /* The real roots of sum c[i] x^i (degree <= 8) in [lo, hi], ascending: between
@@ -126,7 +133,8 @@ void el__poly_roots_in_plain(const double *c, int deg, double lo, double hi, dou
  * b_k = sum_{j <= k} C(k,j) / C(n,j) q_j (Farin, Curves and Surfaces for CAGD, 5.6). The
  * bound comes from the same sums over absolute values: each term passes at most 2n + 2
  * roundings, so |error| <= 4 (n + 1) eps times the sum of |terms|, taken with a margin. */
-static void bernstein_coeffs(const double *c, int n, double lo, double hi, double *b, double *err)
+static inline void bernstein_coeffs(const double *c, const int n, double lo, double hi, double *b,
+                                    double *err)
 {
     double q[9], qa[9];
     for (int i = 0; i <= n; i++) { q[i] = c[i]; qa[i] = fabs(c[i]); }
@@ -147,17 +155,19 @@ static void bernstein_coeffs(const double *c, int n, double lo, double hi, doubl
             w *= (double)(k - j) / (double)(n - j);
         }
         b[k] = sum;
-        *err = fmax(*err, 16.0 * (n + 1) * DBL_EPSILON * sa);
+        const double e = 16.0 * (n + 1) * DBL_EPSILON * sa;
+        if (e > *err) *err = e;             /* fmax(*err, e): a NaN e leaves *err */
     }
 }
 
 /* de Casteljau's subdivision at t = 1/2 into bl (left half) and br (right). The halves'
  * coefficients are averages of the parent's, so their errors are at most the parent's
- * bound plus n roundings of at most eps max |b| each: *err grows by that. */
-static void bernstein_halves(const double *b, int n, double *bl, double *br, double *err)
+ * bound plus n roundings of at most eps max |b| each (bmax): *err grows by that. */
+static inline void bernstein_halves(const double *b, const int n, double bmax, double *bl, double *br,
+                                    double *err)
 {
-    double w[9], bmax = 0.0;
-    for (int k = 0; k <= n; k++) { w[k] = b[k]; bmax = fabs(b[k]) > bmax ? fabs(b[k]) : bmax; }
+    double w[9];
+    for (int k = 0; k <= n; k++) w[k] = b[k];
     for (int r = 0; r <= n; r++) {
         bl[r] = w[0];
         br[n - r] = w[n - r];
@@ -191,21 +201,28 @@ static void add_root(isolation *w, double x)
     else w->full = 1;
 }
 
-/* The roots in [a, b] of w's polynomial, its Bernstein coefficients bc there with the
- * error bound err, ascending into w: by Descartes' rule for the Bernstein basis the
- * number of sign changes of bc bounds the number of roots and has its parity, so none
- * where bc keeps its sign, exactly one where it changes sign once (found by Newton from
- * where the control polygon crosses zero), else the halves. */
-static void isolate(isolation *w, double a, double b, const double *bc, double err, int depth)
+static void isolate(isolation *w, double a, double b, const double *bc, double err, int depth);
+static void isolate8(isolation *w, double a, double b, const double *bc, double err, int depth);
+
+/* The roots in [a, b] of w's polynomial (degree n = w->n), its Bernstein coefficients bc
+ * there with the error bound err, ascending into w: by Descartes' rule for the Bernstein
+ * basis the number of sign changes of bc bounds the number of roots and has its parity,
+ * so none where bc keeps its sign, exactly one where it changes sign once (found by
+ * Newton from where the control polygon crosses zero), else the halves. Inlined into
+ * isolate8 with n = 8 constant ((40)'s usual degree: the loops unrolled, the same
+ * operations) and into isolate for other degrees. */
+static inline void isolate_deg(isolation *w, const int n, double a, double b, const double *bc, double err,
+                               int depth)
 {
-    const int n = w->n;
     int changes = 0, unsure = 0, last = 0, cross = 0;
+    double bmax = 0.0;
     if (w->full) return;
     for (int k = 0; k <= n; k++) {
         const int s = bc[k] > err ? 1 : bc[k] < -err ? -1 : 0;
         if (s == 0) unsure = 1;
         else if (last && s != last) { changes++; cross = k; }
         if (s) last = s;
+        bmax = fabs(bc[k]) > bmax ? fabs(bc[k]) : bmax;
     }
     if (!unsure && changes == 0) return;
     if (!unsure && changes == 1) {
@@ -222,10 +239,25 @@ static void isolate(isolation *w, double a, double b, const double *bc, double e
         return;
     }
     double bl[9], br[9];
-    bernstein_halves(bc, n, bl, br, &err);
+    bernstein_halves(bc, n, bmax, bl, br, &err);
     const double m = 0.5 * (a + b);
-    isolate(w, a, m, bl, err, depth + 1);
-    isolate(w, m, b, br, err, depth + 1);
+    if (n == 8) {
+        isolate8(w, a, m, bl, err, depth + 1);
+        isolate8(w, m, b, br, err, depth + 1);
+    } else {
+        isolate(w, a, m, bl, err, depth + 1);
+        isolate(w, m, b, br, err, depth + 1);
+    }
+}
+
+static void isolate8(isolation *w, double a, double b, const double *bc, double err, int depth)
+{
+    isolate_deg(w, 8, a, b, bc, err, depth);
+}
+
+static void isolate(isolation *w, double a, double b, const double *bc, double err, int depth)
+{
+    isolate_deg(w, w->n, a, b, bc, err, depth);
 }
 
 /* The same roots as el__poly_roots_in_plain, isolated first by the signs of Bernstein
@@ -245,8 +277,13 @@ void el__poly_roots_in(const double *c, int deg, double lo, double hi, double to
     }
     double b[9], err;
     isolation w = {c, deg, tol, roots, 0, 0};
-    bernstein_coeffs(c, deg, lo, hi, b, &err);
-    isolate(&w, lo, hi, b, err, 0);
+    if (deg == 8) {                         /* n constant: the loops unrolled, the same operations */
+        bernstein_coeffs(c, 8, lo, hi, b, &err);
+        isolate8(&w, lo, hi, b, err, 0);
+    } else {
+        bernstein_coeffs(c, deg, lo, hi, b, &err);
+        isolate(&w, lo, hi, b, err, 0);
+    }
     if (w.full) el__poly_roots_in_plain(c, deg, lo, hi, tol, roots, nroots);
     else *nroots = w.nroots;
 }
