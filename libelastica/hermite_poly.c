@@ -138,7 +138,9 @@ static inline void bernstein_coeffs(const double *c, const int n, double lo, dou
 {
     double q[9], qa[9];
     for (int i = 0; i <= n; i++) { q[i] = c[i]; qa[i] = fabs(c[i]); }
+#pragma GCC unroll 8
     for (int i = 0; i < n; i++)
+#pragma GCC unroll 8
         for (int j = n - 1; j >= i; j--) {
             q[j] += lo * q[j + 1];
             qa[j] += fabs(lo) * qa[j + 1];
@@ -147,8 +149,10 @@ static inline void bernstein_coeffs(const double *c, const int n, double lo, dou
     for (int j = 0; j <= n; j++, hj *= hi - lo) { q[j] *= hj; qa[j] *= hj; }
     *err = 0.0;
     /* C(k,j) / C(n,j) = prod_{i<j} (k - i) / (n - i) */
+#pragma GCC unroll 9
     for (int k = 0; k <= n; k++) {
         double sum = 0.0, sa = 0.0, w = 1.0;
+#pragma GCC unroll 9
         for (int j = 0; j <= k; j++) {
             sum += w * q[j];
             sa += w * qa[j];
@@ -168,9 +172,11 @@ static inline void bernstein_halves(const double *b, const int n, double bmax, d
 {
     double w[9];
     for (int k = 0; k <= n; k++) w[k] = b[k];
+#pragma GCC unroll 9
     for (int r = 0; r <= n; r++) {
         bl[r] = w[0];
         br[n - r] = w[n - r];
+#pragma GCC unroll 8
         for (int k = 0; k < n - r; k++) w[k] = 0.5 * (w[k] + w[k + 1]);
     }
     *err += 2.0 * n * DBL_EPSILON * bmax;
