@@ -517,6 +517,48 @@ START_TEST(x_objective_and_class_equal_the_plain_evaluation)
 }
 END_TEST
 
+/* el__hermite_end_values (the end-residual checks' evaluation, hermite.c) against
+ * el_smooth_eval at s = 0 and s = length: the same status and, where EL_OK, the same bits,
+ * over curves of every kind: |k| < 1, near and at 1, > 1 (theta's branch), k = 0 and
+ * negative; u = q at the end (length 0, tiny sqrt(mu) length); mu from 1e-12 to 1e12;
+ * phases past EL__PHASE_MAX and lengths below rounding (EL_EDOM); invalid curves
+ * (EL_EINVAL). */
+START_TEST(end_values_equal_el_smooth_eval)
+{
+    unsigned long long st = 2718;
+    long nok = 0, nedom = 0, ninval = 0;
+    for (int t = 0; t < 200000; t++) {
+        el_smooth_params p;
+        const int kind = t % 8;
+        p.x0 = test_uniform(&st, -10.0, 10.0) * (kind == 7 ? 1e6 : 1.0);
+        p.y0 = test_uniform(&st, -10.0, 10.0);
+        p.phi = test_uniform(&st, -10.0, 10.0);
+        p.mu = pow(10.0, test_uniform(&st, -12.0, 12.0));
+        const double e = pow(10.0, test_uniform(&st, -16.0, -1.0)) * (test_uniform(&st, 0.0, 1.0) < 0.5 ? -1.0 : 1.0);
+        const double sg = test_uniform(&st, 0.0, 1.0) < 0.5 ? -1.0 : 1.0;
+        p.k = kind == 0 ? test_uniform(&st, -1.0, 1.0) : kind == 1 ? sg * (1.0 + e) : kind == 2 ? sg
+            : kind == 3 ? test_uniform(&st, -50.0, 50.0) : kind == 4 ? 0.0 : test_uniform(&st, -3.0, 3.0);
+        p.q = kind == 5 ? sg * pow(10.0, test_uniform(&st, 10.0, 17.0)) : test_uniform(&st, -50.0, 50.0);
+        if (t % 97 == 0) p.q = t % 2 ? 0.0 : -0.0;
+        const double Lu = test_uniform(&st, 0.0, 1.0);
+        p.length = kind == 6 ? (Lu < 0.3 ? 0.0 : pow(10.0, test_uniform(&st, -20.0, -8.0)))
+                             : pow(10.0, test_uniform(&st, -3.0, 2.0)) / sqrt(p.mu);
+        if (t % 101 == 0) p.mu = t % 2 ? 0.0 : NAN;
+        if (t % 103 == 0) p.length = -1.0;
+        const double sv[2] = {0.0, p.length};
+        double xy0[4], th0[2], xy1[4], th1[2];
+        const int rc0 = el_smooth_eval(&p, 2, sv, xy0, th0, NULL);
+        const int rc1 = el__hermite_end_values(&p, xy1, th1);
+        ck_assert_int_eq(rc0, rc1);
+        if (rc0 == EL_EDOM) { nedom++; continue; }
+        if (rc0) { ninval++; continue; }
+        ck_assert(memcmp(xy0, xy1, sizeof xy0) == 0 && memcmp(th0, th1, sizeof th0) == 0);
+        nok++;
+    }
+    ck_assert(nok > 100000 && nedom > 1000 && ninval > 3000);   /* every outcome covered */
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("hermite_tension");
@@ -526,6 +568,7 @@ int main(void)
     tcase_add_loop_test(tc, tension_roots_exact_and_equal_to_the_bisection, 0, 6);
     tcase_add_test(tc, steep_root_next_to_a_close_pair_is_kept);
     tcase_add_test(tc, x_objective_and_class_equal_the_plain_evaluation);
+    tcase_add_test(tc, end_values_equal_el_smooth_eval);
     tcase_add_test(tc, kappa_bound_bounds_the_period_tightly);
     tcase_add_test(tc, separatrix_crossings_exact_at_high_tension);
     tcase_add_test(tc, separatrix_chart_independent_of_the_guess);
