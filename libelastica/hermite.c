@@ -31,7 +31,6 @@
 #include "hermite_internal.h"
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_linalg.h>
-#include <float.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -95,53 +94,11 @@ static double end_residual(const hframe *fr, const double xy[4], const double th
     return fmax(e, fmax(angle_err(th[0], fr->psi0), angle_err(th[1], fr->psi1)));
 }
 
-/* el_smooth_eval(p, 2, {0, p->length}, xy, th, NULL), its steps for these two points
- * (smooth.c: scan_samples, smooth_domain, walk_start with WALK_PLAIN as n < WALK_MIN_POINTS,
- * block_values, the closed form and half_angle) without its set-up for many points: the
- * same operations on the same values, so the same bits and the same failures (EL_EINVAL
- * for an invalid p, EL_EDOM where the samples are unresolved or an output is not
- * finite; el_smooth_eval then fills NaN, which no caller here reads).
- * tests/c/test_hermite_tension.c compares the two bit for bit. */
-int el__hermite_end_values(const el_smooth_params *p, double xy[4], double th[2])
-{
-    if (el_smooth_check(p)) return EL_EINVAL;
-    const double L = p->length, w = sqrt(p->mu), ka = fabs(p->k);
-    const double u[2] = {w * 0.0 + p->q, w * L + p->q};
-    double umax = fabs(p->q);
-    for (int i = 0; i < 2; i++) umax = fabs(u[i]) > umax ? fabs(u[i]) : umax;
-    /* smooth_domain with smax = extent = L */
-    if (!isfinite(umax) || (ka != 1.0 && (ka > 1.0 ? ka : 1.0) * umax > EL__PHASE_MAX)) return EL_EDOM;
-    if (DBL_EPSILON * (1.0 + umax) * (1.0 + ka) > 1e-3 * w * L && L > 0.0) return EL_EDOM;
-    el__modulus mod;
-    el_jacobi b, v[2];
-    if (el__modulus_init(ka, 0, &mod) || el__jacobi_eval_mod(&mod, p->q, &b, NULL, NULL)) return EL_EDOM;
-    for (int i = 0; i < 2; i++)
-        if (u[i] == p->q) v[i] = b;
-        else if (el__jacobi_eval_mod(&mod, u[i], &v[i], NULL, NULL)) return EL_EDOM;
-    const double iw = 1.0 / w, k = p->k, c = cos(p->phi), sp = sin(p->phi);
-    double finite = 0.0;
-    for (int i = 0; i < 2; i++) {
-        const double X = ((u[i] - p->q) - 2.0 * k * k * (v[i].D - b.D)) * iw;
-        const double Y = -2.0 * k * (v[i].cn - b.cn) * iw;
-        xy[2 * i] = p->x0 + c * X - sp * Y;
-        xy[2 * i + 1] = p->y0 + sp * X + c * Y;
-        /* half_angle: the branch of atan2 nearest n pi for |k| > 1 */
-        double a = atan2(ka * v[i].sn, v[i].dn);
-        if (ka > 1.0) {
-            const double npi = M_PI * nearbyint(ka * u[i] / (2.0 * mod.K));
-            a += 2.0 * M_PI * nearbyint((npi - a) / (2.0 * M_PI));
-        }
-        th[i] = p->phi + 2.0 * (copysign(1.0, k) * a);
-        finite += (xy[2 * i] - xy[2 * i]) + (xy[2 * i + 1] - xy[2 * i + 1]) + (th[i] - th[i]);
-    }
-    return finite != 0.0 ? EL_EDOM : EL_OK;
-}
-
 /* End residual of a solution measured as el_smooth_eval gives its ends. */
 static int residual(const hframe *fr, const el_hermite_solution *s, double *res)
 {
     double xy[4], th[2];
-    int rc = el__hermite_end_values(&s->curve, xy, th);
+    int rc = el__smooth_ends(&s->curve, xy, th);
     if (rc) return rc;
     *res = end_residual(fr, xy, th);
     return EL_OK;
@@ -155,7 +112,7 @@ static int polish_res(const hframe *fr, const el_smooth_params *p, int mode, dou
                       double *r, double *res)
 {
     double xy[4], th[2];
-    int rc = el__hermite_end_values(p, xy, th);
+    int rc = el__smooth_ends(p, xy, th);
     if (rc) return rc;
     if (res) *res = end_residual(fr, xy, th);
     r[0] = (xy[2] - fr->p1[0]) / fr->d;

@@ -177,8 +177,4 @@ typedef struct {
 int el__hermite_chain(const hframe *fr, int mode, double target, double sep, double tol,
                       el_hermite_solution *s);
 
-/* el_smooth_eval(p, 2, {0, p->length}, xy, th, NULL) without its set-up for many points:
- * the same bits and statuses (hermite.c; the end-residual checks). */
-int el__hermite_end_values(const el_smooth_params *p, double xy[4], double th[2]);
-
 #endif

@@ -87,6 +87,11 @@ int el__modulus_init(double k, int with_dk, el__modulus *mod);
  * (d_dk only if the modulus was prepared with_dk). */
 int el__jacobi_eval_mod(const el__modulus *mod, double u, el_jacobi *val, el_jacobi *d_du, el_jacobi *d_dk);
 
+/* el_smooth_eval(p, 2, {0, p->length}, xy, th, NULL) for the two ends alone (smooth.c):
+ * the same steps, bits and statuses without the set-up for many samples (the Hermite
+ * solutions' end-residual checks, hermite.c). */
+int el__smooth_ends(const el_smooth_params *p, double xy[4], double th[2]);
+
 /* Jacobi sn, cn, dn, D (and k-derivatives) at many u_i at a few flops per point
  * (jacobi_walk.c; am and E are not filled). The caller keeps max(1, k)|u_i| <= EL__PHASE_MAX.
  *   el__walk wk;

@@ -517,13 +517,13 @@ START_TEST(x_objective_and_class_equal_the_plain_evaluation)
 }
 END_TEST
 
-/* el__hermite_end_values (the end-residual checks' evaluation, hermite.c) against
+/* el__smooth_ends (the end-residual checks' evaluation, smooth.c) against
  * el_smooth_eval at s = 0 and s = length: the same status and, where EL_OK, the same bits,
  * over curves of every kind: |k| < 1, near and at 1, > 1 (theta's branch), k = 0 and
  * negative; u = q at the end (length 0, tiny sqrt(mu) length); mu from 1e-12 to 1e12;
  * phases past EL__PHASE_MAX and lengths below rounding (EL_EDOM); invalid curves
  * (EL_EINVAL). */
-START_TEST(end_values_equal_el_smooth_eval)
+START_TEST(smooth_ends_equal_el_smooth_eval)
 {
     unsigned long long st = 2718;
     long nok = 0, nedom = 0, ninval = 0;
@@ -548,7 +548,7 @@ START_TEST(end_values_equal_el_smooth_eval)
         const double sv[2] = {0.0, p.length};
         double xy0[4], th0[2], xy1[4], th1[2];
         const int rc0 = el_smooth_eval(&p, 2, sv, xy0, th0, NULL);
-        const int rc1 = el__hermite_end_values(&p, xy1, th1);
+        const int rc1 = el__smooth_ends(&p, xy1, th1);
         ck_assert_int_eq(rc0, rc1);
         if (rc0 == EL_EDOM) { nedom++; continue; }
         if (rc0) { ninval++; continue; }
@@ -568,7 +568,7 @@ int main(void)
     tcase_add_loop_test(tc, tension_roots_exact_and_equal_to_the_bisection, 0, 6);
     tcase_add_test(tc, steep_root_next_to_a_close_pair_is_kept);
     tcase_add_test(tc, x_objective_and_class_equal_the_plain_evaluation);
-    tcase_add_test(tc, end_values_equal_el_smooth_eval);
+    tcase_add_test(tc, smooth_ends_equal_el_smooth_eval);
     tcase_add_test(tc, kappa_bound_bounds_the_period_tightly);
     tcase_add_test(tc, separatrix_crossings_exact_at_high_tension);
     tcase_add_test(tc, separatrix_chart_independent_of_the_guess);
