@@ -129,13 +129,12 @@ START_TEST(length_mode_keeps_every_solution_of_a_dense_search)
 }
 END_TEST
 
-/* A trace ends at a seed another trace visited (step_events) against its plain
- * counterpart, every trace followed through to its end (el__hlen_solve_retracing):
- * the same solutions both ways over 1500 random problems of the five kinds of
- * random_problem (Lt - 1 from 1e-3 to 7). */
-START_TEST(length_mode_stops_at_seeds_other_traces_visited)
+/* The length mode against a plain counterpart (plain) over 1500 random problems of the
+ * five kinds of random_problem (Lt - 1 from 1e-3 to 7): the same solutions both ways. */
+typedef int (*length_solver)(hprob *pr, double Lt, int nl, int ns, hrootlist *out);
+
+static void same_solutions_as(const char *what, unsigned long long st, length_solver plain)
 {
-    unsigned long long st = 1618;
     size_t n = 0;
     for (int i = 0; i < 1500; i++) {
         double Lt;
@@ -144,62 +143,41 @@ START_TEST(length_mode_stops_at_seeds_other_traces_visited)
         hprob pq = pr;
         hrootlist a = {NULL, 0, 0}, ref = {NULL, 0, 0};
         ck_assert_int_eq(el__hermite_solve_length(&pr, Lt, 6, 12, &a), EL_OK);
-        ck_assert_int_eq(el__hlen_solve_retracing(&pq, Lt, 6, 12, &ref), EL_OK);
+        ck_assert_int_eq(plain(&pq, Lt, 6, 12, &ref), EL_OK);
         for (size_t j = 0; j < ref.n; j++) {
             int found = 0;
             for (size_t k = 0; k < a.n && !found; k++) found = same_root(&a.v[k], &ref.v[j]);
-            ck_assert_msg(found, "problem %d (kind %d, Lt %.17g): lost sigma %.9g kappa0 %.9g", i, i % 5, Lt,
-                          ref.v[j].sigma, ref.v[j].st.k0);
+            ck_assert_msg(found, "%s: problem %d (kind %d, Lt %.17g): lost sigma %.9g kappa0 %.9g", what, i, i % 5,
+                          Lt, ref.v[j].sigma, ref.v[j].st.k0);
         }
         for (size_t j = 0; j < a.n; j++) {
             int found = 0;
             for (size_t k = 0; k < ref.n && !found; k++) found = same_root(&ref.v[k], &a.v[j]);
-            ck_assert_msg(found, "problem %d (kind %d, Lt %.17g): extra sigma %.9g kappa0 %.9g", i, i % 5, Lt,
-                          a.v[j].sigma, a.v[j].st.k0);
+            ck_assert_msg(found, "%s: problem %d (kind %d, Lt %.17g): extra sigma %.9g kappa0 %.9g", what, i, i % 5,
+                          Lt, a.v[j].sigma, a.v[j].st.k0);
         }
         n += a.n;
         free(a.v);
         free(ref.v);
     }
-    fprintf(stderr, "length_mode_stops_at_seeds_other_traces_visited: %zu solutions\n", n);
+    fprintf(stderr, "%s: %zu solutions\n", what, n);
     ck_assert_uint_gt(n, 3000);
+}
+
+/* A trace ends at a seed another trace visited (step_events) against every trace
+ * followed through to its end (el__hlen_solve_retracing). */
+START_TEST(length_mode_stops_at_seeds_other_traces_visited)
+{
+    same_solutions_as("length_mode_stops_at_seeds_other_traces_visited", 1618, el__hlen_solve_retracing);
 }
 END_TEST
 
 /* A seed line crossing matched to its seed by the step's cubic Hermite interpolant
- * (seed_by_interpolation, seeds of another chart measured in the step's) against its
- * plain counterpart, Newton for every crossing (el__hlen_solve_newton_seeds): the same
- * solutions both ways over 1500 random problems of the five kinds of random_problem. */
+ * (seed_by_interpolation, seeds of another chart measured in the step's) against Newton
+ * for every crossing (el__hlen_solve_newton_seeds). */
 START_TEST(length_mode_matches_seeds_as_newton_does)
 {
-    unsigned long long st = 1414;
-    size_t n = 0;
-    for (int i = 0; i < 1500; i++) {
-        double Lt;
-        hprob pr = random_problem(&st, i % 5, &Lt);
-        pr.Lmin = Lt;
-        hprob pq = pr;
-        hrootlist a = {NULL, 0, 0}, ref = {NULL, 0, 0};
-        ck_assert_int_eq(el__hermite_solve_length(&pr, Lt, 6, 12, &a), EL_OK);
-        ck_assert_int_eq(el__hlen_solve_newton_seeds(&pq, Lt, 6, 12, &ref), EL_OK);
-        for (size_t j = 0; j < ref.n; j++) {
-            int found = 0;
-            for (size_t k = 0; k < a.n && !found; k++) found = same_root(&a.v[k], &ref.v[j]);
-            ck_assert_msg(found, "problem %d (kind %d, Lt %.17g): lost sigma %.9g kappa0 %.9g", i, i % 5, Lt,
-                          ref.v[j].sigma, ref.v[j].st.k0);
-        }
-        for (size_t j = 0; j < a.n; j++) {
-            int found = 0;
-            for (size_t k = 0; k < ref.n && !found; k++) found = same_root(&ref.v[k], &a.v[j]);
-            ck_assert_msg(found, "problem %d (kind %d, Lt %.17g): extra sigma %.9g kappa0 %.9g", i, i % 5, Lt,
-                          a.v[j].sigma, a.v[j].st.k0);
-        }
-        n += a.n;
-        free(a.v);
-        free(ref.v);
-    }
-    fprintf(stderr, "length_mode_matches_seeds_as_newton_does: %zu solutions\n", n);
-    ck_assert_uint_gt(n, 3000);
+    same_solutions_as("length_mode_matches_seeds_as_newton_does", 1414, el__hlen_solve_newton_seeds);
 }
 END_TEST
 
