@@ -243,6 +243,10 @@ int el__fit_curve_distances(fit_objective *ob, const double *x, double v[2][FIT_
  * -1 when out of memory. scale: the data's size (the fit's normalisation, el__fit_normalisation). */
 #define FIT_STRAY 0.1
 double el__fit_stray(const double *xy, size_t n, const double *fs, double L, double noise, double scale);
+/* fit_refit.c: whether the smooth orthogonal fit at x (ob's map) strays from its points
+ * (el__fit_stray > FIT_STRAY; noise: el__fit_noise_rms, normalised); d, fs (n each: ob's
+ * rest arrays, or the caller's) overwritten with its distances and feet (input units). */
+int el__fit_strays_at(fit_objective *ob, const double *x, double noise, double *d, double *fs, double *tmp);
 /* fit_refit.c: idx (n entries) the indices 0..n-1 in the order of fs, ties by index;
  * 0, or -1 when out of memory (feet far out of order take n pairs of workspace) */
 int el__fit_feet_order(const double *fs, size_t *idx, size_t n);

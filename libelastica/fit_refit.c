@@ -362,3 +362,12 @@ double el__fit_stray(const double *xy, size_t n, const double *fs, double L, dou
     free(idx);
     return stray / poly;
 }
+
+int el__fit_strays_at(fit_objective *ob, const double *x, double noise, double *d, double *fs, double *tmp)
+{
+    double v[2][FIT_NP];
+    if (el__fit_map_eval(&ob->map, x, v, NULL) || el__fit_curve_distances(ob, x, v, 0, d, fs, tmp)) return 0;
+    ob->rest_ok = 0;     /* d, fs no longer hold an evaluation's points at rest */
+    for (size_t i = 0; i < ob->n; i++) fs[i] *= ob->sc;
+    return el__fit_stray(ob->xy, ob->n, fs, v[0][6] * ob->sc, noise * ob->sc, ob->sc) > FIT_STRAY;
+}
