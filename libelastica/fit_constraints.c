@@ -1,12 +1,62 @@
 /*
- * The fit's end constraints (fit.c's driver calls these): the options in normalised
- * units and the bounds they add, the check of a result against them, the start of a
- * constrained fit by continuation in the start-state chart (the constraints it holds
- * exactly), and the reversal that turns end constraints into start ones.
+ * The fit's options and end constraints (fit.c's driver calls these): the options'
+ * defaults and check, the constraints in normalised units and the bounds they add, the
+ * check of a result against them, the start of a constrained fit by continuation in the
+ * start-state chart (the constraints it holds exactly), and the reversal that turns end
+ * constraints into start ones.
  */
 #include "fit_internal.h"
 #include <stdlib.h>
 #include <string.h>
+
+void el_fit_options_defaults(el_fit_options *opt)
+{
+    if (!opt) return;
+    memset(opt, 0, sizeof *opt);
+    for (int j = 0; j < FIT_NP; j++) { opt->lower[j] = -HUGE_VAL; opt->upper[j] = HUGE_VAL; }
+    opt->tol = 1e-12;
+    opt->max_iter = 200;
+    opt->max_candidates = 6;
+    opt->param_mode = EL_PARAM_AUTO;
+    opt->distance = EL_DISTANCE_AUTO;
+    opt->length_range[1] = HUGE_VAL;
+    opt->k_range[0] = -HUGE_VAL;
+    opt->k_range[1] = HUGE_VAL;
+}
+
+int el__fit_check_options(const el_fit_options *o, int model, int *which)
+{
+    *which = 0;
+    if (!(o->tol > 0.0) || !isfinite(o->tol) || o->max_iter < 1 || o->max_candidates < 1)
+        return EL_EINVAL;
+    if (o->param_mode < EL_PARAM_AUTO || o->param_mode > EL_PARAM_CHORD) return EL_EINVAL;
+    if (o->distance < EL_DISTANCE_AUTO || o->distance > EL_DISTANCE_PAIRED) return EL_EINVAL;
+    for (int j = 0; j < FIT_NP; j++) {
+        if (isnan(o->lower[j]) || isnan(o->upper[j]) || o->lower[j] > o->upper[j]) return EL_EINVAL;
+        if (!o->fixed[j]) continue;
+        const double v = o->value[j];
+        if (!isfinite(v) || v < o->lower[j] || v > o->upper[j]) return EL_EINVAL;
+        if (model == FIT_DISCRETE && j == 2 && !(v > 0.0)) return EL_EINVAL;   /* h */
+        if (model == FIT_SMOOTH && ((j == 3 && !(v > 0.0)) || (j == 6 && v < 0.0))) return EL_EINVAL;
+    }
+    const int c = o->constraints;
+    if (c & ~255) return EL_EINVAL;
+    const double vals[8] = {o->start_point[0], o->start_point[1], o->end_point[0], o->end_point[1],
+                            o->start_tangent, o->end_tangent, o->start_curvature, o->end_curvature};
+    const int bits[8] = {1, 1, 2, 2, 4, 8, 16, 32};
+    for (int a = 0; a < 8; a++)
+        if ((c & bits[a]) && !isfinite(vals[a])) { *which = bits[a]; return EL_EINVAL; }
+    if ((c & EL_CONSTRAIN_LENGTH) && !(o->length_range[0] >= 0.0 && o->length_range[0] <= o->length_range[1]
+                                      && isfinite(o->length_range[0]) && !isnan(o->length_range[1]))) {
+        *which = EL_CONSTRAIN_LENGTH;
+        return EL_EINVAL;
+    }
+    if ((c & EL_CONSTRAIN_K) && !(o->k_range[0] <= o->k_range[1])) { *which = EL_CONSTRAIN_K; return EL_EINVAL; }
+    if (c & EL_CONSTRAIN_START_POINT)
+        for (int j = 0; j < 2; j++)
+            if (o->fixed[j] && o->value[j] != o->start_point[j]) { *which = EL_CONSTRAIN_START_POINT; return EL_EINVAL; }
+    return EL_OK;
+}
 
 /* The constraints in normalised units, and the bounds they add. */
 void el__fit_setup_constraints(const el_fit_options *o, int model, size_t n, double cx, double cy,

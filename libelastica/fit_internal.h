@@ -374,6 +374,9 @@ int el__fit_constraint_rows(const fit_objective *o, const fit_constraints *con, 
 /* The slots of the length and of k in the parameter vector of each model. */
 static inline int fit_length_slot(int model) { return model == FIT_DISCRETE ? 2 : 6; }
 static inline int fit_k_slot(int model) { return model == FIT_DISCRETE ? 6 : 4; }
+/* The options' check (el_fit_smooth's EL_EINVAL cases; which: the constraint bit at
+ * fault, 0 for others). */
+int el__fit_check_options(const el_fit_options *o, int model, int *which);
 /* The options' constraints in normalised units (centre cx, cy, scale sc) into con, and
  * the bounds on the length and k they add to lo, hi. */
 void el__fit_setup_constraints(const el_fit_options *o, int model, size_t n, double cx, double cy,
