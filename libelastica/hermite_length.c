@@ -399,25 +399,30 @@ static int step_events(tracer *T, int origin, const cpt *p, const double tp[2], 
     double tr = NAN;
     cpt r;
     if ((rc = length_crossings(T, p, tp, q, tq, 6))) return rc;
-    for (int i = 0; i < T->nseed; i++) {
-        const cpt *s = &T->seed[i];
-        /* strictly crossed (the trace starts on its own seed's line) */
-        if ((T->visited[i] && i != origin && T->retrace) || !((p->t - s->t) * (q->t - s->t) < 0.0 || q->t == s->t))
-            continue;
-        if (!near_crossing(p, q, s)) continue;
-        /* the crossing of the line, once for the seeds of one line: by interpolation
-         * where that decides, else by Newton */
-        if (!have || fabs(s->t - tr) > 1e-12 * (1.0 + fabs(tr))) {
-            have = 1;
-            tr = s->t;
-            fast = T->newton_seeds ? -1 : seed_by_interpolation(T, p, tp, q, tq, s->t);
-            rcr = EL_OK;
-            if (fast < 0 && (rcr = cross(T, p, q, 1, s->t, &r)) == EL_EMAXITER) return rcr;
-            if (fast < 0 && !rcr && !length_fits(p, q, &r)) rcr = EL_ENOCONV;
+    const double smin = fmin(p->t, q->t), smax = fmax(p->t, q->t);
+    for (int j = 0, i = 0; j < T->nline; i = T->line[j++].end) {
+        /* a line whose seeds all lie outside [smin, smax]: none of them is crossed (below) */
+        if (T->line[j].thi < smin || T->line[j].tlo > smax) continue;
+        for (; i < T->line[j].end; i++) {
+            const cpt *s = &T->seed[i];
+            /* strictly crossed (the trace starts on its own seed's line) */
+            if ((T->visited[i] && i != origin && T->retrace) || !((p->t - s->t) * (q->t - s->t) < 0.0 || q->t == s->t))
+                continue;
+            if (!near_crossing(p, q, s)) continue;
+            /* the crossing of the line, once for the seeds of one line: by interpolation
+             * where that decides, else by Newton */
+            if (!have || fabs(s->t - tr) > 1e-12 * (1.0 + fabs(tr))) {
+                have = 1;
+                tr = s->t;
+                fast = T->newton_seeds ? -1 : seed_by_interpolation(T, p, tp, q, tq, s->t);
+                rcr = EL_OK;
+                if (fast < 0 && (rcr = cross(T, p, q, 1, s->t, &r)) == EL_EMAXITER) return rcr;
+                if (fast < 0 && !rcr && !length_fits(p, q, &r)) rcr = EL_ENOCONV;
+            }
+            if (fast >= 0 ? fast != i : rcr || !el__hlen_same_state(&r, s)) continue;
+            if (i == origin || T->visited[i]) *closed = 1;
+            T->visited[i] = 1;
         }
-        if (fast >= 0 ? fast != i : rcr || !el__hlen_same_state(&r, s)) continue;
-        if (i == origin || T->visited[i]) *closed = 1;
-        T->visited[i] = 1;
     }
     return EL_OK;
 }
@@ -583,6 +588,7 @@ static int seeds(tracer *T, int nl, int ns)
     const hprob *pr = T->pr;
     hrootlist l = {NULL, 0, 0};
     int rc = EL_OK, cap = 0;
+    if (!(T->line = malloc((size_t)nl * sizeof *T->line))) return EL_ENOMEM;
     for (int j = 0; j < nl && !rc; j++) {
         hprob q = *pr;
         const double frac = nl == 1 ? 1.0 : 1.0 - pow(1.0 - (double)j / (nl - 1), T->line_power);
@@ -610,6 +616,15 @@ static int seeds(tracer *T, int nl, int ns)
             for (int k = 0; k < T->nseed && !dup; k++) dup = el__hlen_same_state(&T->seed[k], s);
             if (!dup) T->visited[T->nseed++] = 0;
         }
+        seed_line *ln = &T->line[T->nline];
+        ln->tlo = INFINITY;
+        ln->thi = -INFINITY;
+        for (int i = T->nline ? T->line[T->nline - 1].end : 0; i < T->nseed; i++) {
+            ln->tlo = fmin(ln->tlo, T->seed[i].t);
+            ln->thi = fmax(ln->thi, T->seed[i].t);
+        }
+        ln->end = T->nseed;
+        T->nline++;
     }
     free(l.v);
     return rc;
@@ -658,6 +673,7 @@ static int solve_length(hprob *pr, double Lt, int nl, int ns, double long_curves
     }
     free(T.seed);
     free(T.visited);
+    free(T.line);
     return rc;
 }
 

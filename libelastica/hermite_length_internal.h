@@ -25,12 +25,22 @@ typedef struct {
     double wg[2];                        /* separatrix chart: gradient of w */
 } cpt;
 
+/* A seed line: its seeds end before seed number end (they follow the line before's),
+ * their t within [tlo, thi] (t of a seed in case 3 or a separatrix chart is asinh of
+ * its state's sigma, within rounding of the line's) */
+typedef struct {
+    int end;
+    double tlo, thi;
+} seed_line;
+
 typedef struct {
     const hprob *pr;
     double Lt, tlo, thi, thi_trace;   /* t = asinh(sigma): seed lines in [tlo, thi]; traces end past thi_trace with L < Lt */
     double thi_bound;                 /* and past thi_bound (the sigma bound, sigma_range) whatever L */
     cpt *seed;
     int nseed;
+    seed_line *line;   /* the seed lines in order (nline) */
+    int nline;
     char *visited;
     long evals, max_evals;
     double long_curves;   /* a trace ends where L passes long_curves Lt, increasing */

@@ -30,7 +30,6 @@
  */
 #include "hermite_internal.h"
 #include <float.h>
-#include <string.h>
 
 /* ------------------------------------------------------------ elliptic helpers */
 
@@ -329,15 +328,19 @@ static int shape_finish(const hprob *pr, const shapework *w, double rf, double r
  *             of (24), (P1 kappa0 + 2)^2 = sigma P1^2 + 4 V2 (b = 1): regular where the
  *             two members of a pair meet. */
 /* kappa0' and its derivatives from kappa0, kappa1, sigma and theirs: (16), or (15)
- * when V1 dominates (case 1); (22) in case 2; then kappa1' by (14). */
-static void slopes_and_grad(const hprob *pr, hstate *st, curv_grad *g)
+ * when V1 dominates (case 1); (22) in case 2; then kappa1' by (14). have_slopes: the
+ * state's kappa0', kappa1' are curvdata's, the same expressions (the same bits), and
+ * only their derivatives are formed. */
+static void slopes_and_grad(const hprob *pr, int have_slopes, hstate *st, curv_grad *g)
 {
     const double P1 = pr->P1, P2 = pr->P2, V1 = pr->V1, V2 = pr->V2, s = pr->sigma;
     const double k0 = st->k0, k1 = st->k1, w = k0 * k0 - s, C = 0.5 * w * P1 + k0;
     const double A = k0 * k0 * V2 + s * (1.0 - V2);             /* as in el__hermite_curvdata */
     const int use15 = pr->hcase == 2 || fabs(V1) > fabs(P2);
-    if (pr->hcase != 3) st->k0p = use15 ? (A - k1 * k1) / (2.0 * V1) : (k1 - C) / P2;
-    st->k1p = st->k0p * V2 + 0.5 * w * V1;                      /* (14) */
+    if (!have_slopes) {
+        if (pr->hcase != 3) st->k0p = use15 ? (A - k1 * k1) / (2.0 * V1) : (k1 - C) / P2;
+        st->k1p = st->k0p * V2 + 0.5 * w * V1;                  /* (14) */
+    }
     for (int i = 0; i < 2; i++) {
         const double dw = 2.0 * k0 * g->k0[i] - g->s[i], dC = 0.5 * P1 * dw + g->k0[i];
         const double dA = V2 * dw + g->s[i];
@@ -352,7 +355,9 @@ static int chart_state(const hprob *pr0, int chart, double u, double v, int b, h
                        hstate *st, curv_grad *g)
 {
     const double P1 = pr0->P1, P2 = pr0->P2, V1 = pr0->V1, V2 = pr0->V2;
-    memset(g, 0, sizeof *g);
+    /* every derivative stored below (the zeros too; k0p and k1p by slopes_and_grad
+     * outside case 3): no memset of the struct per evaluation */
+    g->has_dsep = 0;
     *pr = *pr0;
     st->has_sep = 0;
     if (chart == HCHART_C3) {
@@ -361,10 +366,10 @@ static int chart_state(const hprob *pr0, int chart, double u, double v, int b, h
         st->k0 = k0;
         st->k0p = v;
         st->k1 = 0.5 * (k0 * k0 - pr->sigma) * P1 + k0;         /* (16), P2 = 0 */
-        g->k0[0] = 1.0;
-        g->k0p[1] = 1.0;
-        g->s[0] = b == 0 ? 2.0 * k0 : 2.0 * q / P1;
-        g->k1[0] = 0.5 * P1 * (2.0 * k0 - g->s[0]) + 1.0;
+        g->k0[0] = 1.0; g->k0[1] = 0.0;
+        g->k0p[0] = 0.0; g->k0p[1] = 1.0;
+        g->s[0] = b == 0 ? 2.0 * k0 : 2.0 * q / P1; g->s[1] = 0.0;
+        g->k1[0] = 0.5 * P1 * (2.0 * k0 - g->s[0]) + 1.0; g->k1[1] = 0.0;
     } else if (chart == HCHART_K1) {
         /* (18) as a quadratic in kappa0: disc = a2 x^2 + a1 x + a0(sigma) = W^2 */
         const double s = v, W = P2 * u + V1;
@@ -378,21 +383,23 @@ static int chart_state(const hprob *pr0, int chart, double u, double v, int b, h
         pr->sigma = s;
         st->k0 = x;
         st->k1 = u;
-        g->k1[0] = 1.0;
-        g->s[1] = 1.0;
+        g->k1[0] = 1.0; g->k1[1] = 0.0;
+        g->s[0] = 0.0; g->s[1] = 1.0;
         g->k0[0] = 2.0 * W * P2 / r;                          /* d(18)/dx dx = 2 W P2 dkappa1 */
         g->k0[1] = -(-P2 * V1 * P1 + P2 * P2 * (1.0 - V2)) / r;
     } else {
         pr->sigma = v;
-        if (el__hermite_curvdata(pr, u, b, st)) return EL_EDOM;
-        g->s[1] = 1.0;
+        if (curvdata(pr, u, b, st)) return EL_EDOM;
+        g->s[0] = 0.0; g->s[1] = 1.0;
         if (pr->hcase == 3) {
             /* x = kappa0'; kappa0 = +-sqrt(sigma) or (P1 kappa0 + 2)^2 = sigma P1^2 + 4 V2 */
-            g->k0p[0] = 1.0;
+            g->k0p[0] = 1.0; g->k0p[1] = 0.0;
+            g->k0[0] = 0.0;
             g->k0[1] = b < 2 ? 0.5 / st->k0 : 0.5 * P1 / (P1 * st->k0 + 2.0);
+            g->k1[0] = 0.0;
             g->k1[1] = (P1 * st->k0 + 1.0) * g->k0[1] - 0.5 * P1;
         } else {
-            g->k0[0] = 1.0;
+            g->k0[0] = 1.0; g->k0[1] = 0.0;
             const double dw0 = 2.0 * st->k0, dC0 = 0.5 * P1 * dw0 + 1.0, dA0 = V2 * dw0;
             const double dC1 = -0.5 * P1, dA1 = 1.0 - V2;
             if (pr->hcase == 2) {
@@ -406,7 +413,7 @@ static int chart_state(const hprob *pr0, int chart, double u, double v, int b, h
             }
         }
     }
-    slopes_and_grad(pr, st, g);
+    slopes_and_grad(pr, chart == HCHART_X, st, g);
     return isfinite(st->k0p) && isfinite(st->k1) && isfinite(st->k1p) ? EL_OK : EL_EDOM;
 }
 
