@@ -71,18 +71,21 @@ static void sigma_range(double Lt, double *lo, double *hi)
 static int correct(tracer *T, cpt *q, double tol, int maxit, int *its)
 {
     double last = INFINITY;
+    cpt buf[2], *cur = q;   /* the iterates alternate in buf; the last good one into *q once */
+    int rc;
     for (*its = 0;; ++*its) {
-        const double g2 = q->fg[0] * q->fg[0] + q->fg[1] * q->fg[1], af = fabs(q->st.f);
-        if (!(g2 > 0.0)) return EL_EDOM;
-        if (af <= tol || af <= 1e-13 * sqrt(g2)) return EL_OK;
-        if (*its >= maxit || !(af < last)) return EL_ENOCONV;
+        const double g2 = cur->fg[0] * cur->fg[0] + cur->fg[1] * cur->fg[1], af = fabs(cur->st.f);
+        if (!(g2 > 0.0)) { rc = EL_EDOM; break; }
+        if (af <= tol || af <= 1e-13 * sqrt(g2)) { rc = EL_OK; break; }
+        if (*its >= maxit || !(af < last)) { rc = EL_ENOCONV; break; }
         last = af;
-        const double c = q->st.f / g2;
-        cpt n;
-        const int rc = el__hlen_eval(T, q, q->U - c * q->fg[0], q->V - c * q->fg[1], &n);
-        if (rc) return rc;
-        *q = n;
+        const double c = cur->st.f / g2;
+        cpt *n = &buf[*its % 2];
+        if ((rc = el__hlen_eval(T, cur, cur->U - c * cur->fg[0], cur->V - c * cur->fg[1], n))) break;
+        cur = n;
     }
+    if (cur != q) *q = *cur;
+    return rc;
 }
 
 /* The unit tangent of C at p, oriented along (d0, d1). */

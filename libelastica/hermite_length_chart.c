@@ -37,11 +37,11 @@ double el__hlen_norm(double a, double b)
 }
 
 /* Evaluate the chart of `like` (chart, base, side, b; w as the separatrix chart's
- * starting guess) at (U, V) into *p. */
+ * starting guess) at (U, V) into *p (the state directly into p->st: *p is undefined
+ * where it fails, and no caller reads it then). */
 int el__hlen_eval(tracer *T, const cpt *like, double U, double V, cpt *p)
 {
     hgrad g;
-    hstate st;
     double sigma, w = like->w, c[2];
     if (++T->evals > T->max_evals) return EL_EMAXITER;
     int rc;
@@ -52,13 +52,13 @@ int el__hlen_eval(tracer *T, const cpt *like, double U, double V, cpt *p)
         if (isfinite(like->wg[0] + like->wg[1]))
             w += like->wg[0] * (U - like->U) + like->wg[1] * (V - like->V);
         const double y = SEP_SCALE * (fi ? V : U), other = el__hlen_sinh(fi ? U : V);
-        rc = el__hermite_sep_eval(T->pr, like->base, fi, like->b, like->side, y, other, 1.0, &w, &st, &g,
+        rc = el__hermite_sep_eval(T->pr, like->base, fi, like->b, like->side, y, other, 1.0, &w, &p->st, &g,
                                   &sigma);
         c[fi] = SEP_SCALE;
         c[1 - fi] = sqrt(1.0 + other * other);
     } else {
         const double u = el__hlen_sinh(U), v = el__hlen_sinh(V);
-        rc = el__hermite_chart_eval(T->pr, like->chart, u, v, like->b, &st, &g, &sigma);
+        rc = el__hermite_chart_eval(T->pr, like->chart, u, v, like->b, &p->st, &g, &sigma);
         c[0] = sqrt(1.0 + u * u);
         c[1] = sqrt(1.0 + v * v);
     }
@@ -80,7 +80,6 @@ int el__hlen_eval(tracer *T, const cpt *like, double U, double V, cpt *p)
     /* the charts X and K1 have t = asinh(sigma) as their coordinate V */
     p->t = (like->chart == HCHART_X || like->chart == HCHART_K1) ? V
            : like->chart == CHART_SEP && like->fi == 0 && like->base != HCHART_C3 ? V : asinh(sigma);
-    p->st = st;
     for (int i = 0; i < 2; i++) {
         p->fg[i] = g.f[i] * c[i];
         p->Lg[i] = g.L[i] * c[i];

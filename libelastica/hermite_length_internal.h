@@ -64,7 +64,8 @@ double el__hlen_sinh(double x);
 double el__hlen_norm(double a, double b);
 
 /* The point (U, V) in the chart of `like` (chart, base, fi, side, b; its w the separatrix
- * chart's starting guess), into *p; counts one evaluation (EL_EMAXITER past the limit). */
+ * chart's starting guess), into *p (undefined where it fails); counts one evaluation
+ * (EL_EMAXITER past the limit). */
 int el__hlen_eval(tracer *T, const cpt *like, double U, double V, cpt *p);
 /* p re-expressed in its better conditioned chart (same state; unchanged where it is). */
 int el__hlen_rechart(tracer *T, cpt *p);
