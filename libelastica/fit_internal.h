@@ -248,7 +248,7 @@ double el__fit_stray(const double *xy, size_t n, const double *fs, double L, dou
  * rest arrays, or the caller's) overwritten with its distances and feet (input units). */
 int el__fit_strays_at(fit_objective *ob, const double *x, double noise, double *d, double *fs, double *tmp);
 /* fit_refit.c: idx (n entries) the indices 0..n-1 in the order of fs, ties by index;
- * 0, or -1 when out of memory (feet far out of order take n pairs of workspace) */
+ * 0, or -1 when out of memory (NaN feet far out of order take n pairs of workspace) */
 int el__fit_feet_order(const double *fs, size_t *idx, size_t n);
 /* fit_refit.c: the smooth distances d and feet fs of the points at x (v its parameters,
  * one curve), the feet projected from o->s, then those found nearer on another pass of

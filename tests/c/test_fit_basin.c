@@ -280,9 +280,11 @@ START_TEST(test_fit_stray_measure)
 }
 END_TEST
 
-/* el__fit_feet_order: the order of the feet, ties by index, whether insertion keeps it
- * (feet nearly in order) or the qsort fallback takes over (far out of order): sorted,
- * neighbours swapped, reversed, shuffled, runs of ties, sizes 0 to 2 * 10^5. */
+/* el__fit_feet_order: the order of the feet, ties by index, NaN last, whether insertion
+ * keeps it (feet nearly in order) or a fallback takes over (far out of order: GSL's
+ * heapsort and the tie runs by index; with NaN feet, qsort on pairs): sorted, neighbours
+ * swapped, reversed, shuffled, runs of ties, shuffled ties, all equal, shuffled with NaN,
+ * sizes 0 to 2 * 10^5. */
 static void check_feet_order(const double *fs, size_t n)
 {
     size_t *idx = malloc(sizeof *idx * (n ? n : 1));
@@ -292,7 +294,10 @@ static void check_feet_order(const double *fs, size_t n)
     for (size_t k = 0; k < n; k++) {
         ck_assert(idx[k] < n && !seen[idx[k]]);
         seen[idx[k]] = 1;
-        if (k) ck_assert(fs[idx[k - 1]] < fs[idx[k]] || (fs[idx[k - 1]] == fs[idx[k]] && idx[k - 1] < idx[k]));
+        if (!k) continue;
+        const double a = fs[idx[k - 1]], b = fs[idx[k]];
+        const int by_index = idx[k - 1] < idx[k];
+        ck_assert(isnan(a) ? isnan(b) && by_index : isnan(b) || a < b || (a == b && by_index));
     }
     free(idx);
     free(seen);
@@ -306,7 +311,7 @@ START_TEST(test_fit_feet_order)
         const size_t n = sizes[z];
         double *fs = malloc(sizeof *fs * (n ? n : 1));
         ck_assert(fs != NULL);
-        for (int pattern = 0; pattern < 5; pattern++) {
+        for (int pattern = 0; pattern < 8; pattern++) {
             for (size_t k = 0; k < n; k++) {
                 r ^= r << 13; r ^= r >> 7; r ^= r << 17;
                 const double u = (double)(r >> 11) / 9007199254740992.0;
@@ -314,7 +319,10 @@ START_TEST(test_fit_feet_order)
                       : pattern == 1 ? (double)(k ^ 1)                 /* neighbours swapped */
                       : pattern == 2 ? (double)(n - k)                 /* reversed */
                       : pattern == 3 ? u                               /* shuffled */
-                      : (double)((n - k) / 7);                         /* reversed runs of 7 ties */
+                      : pattern == 4 ? (double)((n - k) / 7)           /* reversed runs of 7 ties */
+                      : pattern == 5 ? floor(10.0 * u)                 /* shuffled ties */
+                      : pattern == 6 ? 1.0                             /* all equal */
+                      : u < 0.01 ? NAN : u;                            /* shuffled with NaN */
             }
             check_feet_order(fs, n);
         }
