@@ -53,9 +53,10 @@ def main() -> None:
         res = ffi.new(f"el_fit_{model}_result *")
         cfit = lib.el_fit_discrete if model == "discrete" else lib.el_fit_smooth
         xy = dptr(pts)
+        dist, foot = ffi.new("double[]", N), ffi.new("double[]", N)   # as el.fit, which reports both
 
         def c_call():
-            cfit(xy, N, opt, ffi.NULL, res)
+            cfit(xy, N, opt, ffi.NULL, res, dist, foot)
 
         def py_call():
             el.fit(pts, model=model)
