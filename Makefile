@@ -247,14 +247,17 @@ $(BUILD)/bench/%: bench/%.cc $(BUILD)/libelastica.a | occt-dev
 # problems this small (~9 % of a Hermite profile), charging every figure for them.
 BENCH_PIP := clothoids scipy
 # Every line is kept in $(BUILD)/bench.jsonl; the lines with "readme" and "value" keys
-# become the README's figures table (bench/readme_figures.py): one source of truth.
+# become the README's figures table (bench/readme_figures.py): one source of truth. A
+# bench that fails is named, its figures are left out of the table, and make bench fails.
 bench: all $(BENCH_BIN) $(BENCH_CXX_BIN)
 	@$(PYTHON) -c "import Clothoids, scipy" 2>/dev/null || $(PYTHON) -m pip install -q $(BENCH_PIP)
-	@{ for b in $(BENCH_BIN) $(BENCH_CXX_BIN); do OPENBLAS_NUM_THREADS=1 $$b; done; \
+	@rm -f $(BUILD)/bench.failed
+	@{ for b in $(BENCH_BIN) $(BENCH_CXX_BIN); do OPENBLAS_NUM_THREADS=1 $$b || echo $$b >> $(BUILD)/bench.failed; done; \
 	  for b in bench/bench_*.py; do [ -f "$$b" ] || continue; \
 	    OPENBLAS_NUM_THREADS=1 LIBELASTICA_PATH=$(CURDIR)/$(BUILD)/libelastica.so \
-	    PYTHONPATH=$(CURDIR)/python $(PYTHON) $$b; done; } | tee $(BUILD)/bench.jsonl
+	    PYTHONPATH=$(CURDIR)/python $(PYTHON) $$b || echo $$b >> $(BUILD)/bench.failed; done; } | tee $(BUILD)/bench.jsonl
 	@$(PYTHON) bench/readme_figures.py $(BUILD)/bench.jsonl README.md
+	@if [ -s $(BUILD)/bench.failed ]; then echo "make bench: failed (their figures left out):" $$(cat $(BUILD)/bench.failed); exit 1; fi
 
 # headless FreeCAD (freecadcmd) with a throw-away HOME; the report is printed, the full log kept
 demo: all
