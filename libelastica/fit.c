@@ -257,6 +257,14 @@ static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit
     return EL_OK;
 }
 
+/* The first feet of a fit by distance with feet (orthogonal smooth): the fractions' places
+ * t_i on a curve of the given length. */
+static void first_feet(fit_objective *ob, const double *t, double length)
+{
+    if (fit_has_feet(ob))
+        for (size_t i = 0; i < ob->n; i++) ob->s[i] = t[i] * length;
+}
+
 /* The point x of a fit (its map's variables) meets the constraints con and bounds. */
 static int meets_constraints(fit_objective *ob, const fit_map *map, const fit_constraints *con, const double *x,
                              const double *lo, const double *hi, double *tmp)
@@ -424,6 +432,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
     const double data_noise = noise_rms * (kind == FIT_ORTHOGONAL ? 0.70710678118654752 : 1.0);
     const double noise = o.constraints ? el__fit_noise_plain(xy, n, sc) : data_noise;
     cand_result best;
+    int best_strays = -1;      /* best strays from its points (el__fit_strays_at), once known */
     memset(&best, 0, sizeof best);
     best.f = HUGE_VAL;
     best.status = EL_ENOCONV;
@@ -452,10 +461,9 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
         }
         if (el__all_finite(p0, FIT_NP)) continue;
         el__fit_map_inverse(&map, p0, x0);
-        if (fit_has_feet(&ob))          /* the first feet: the fractions' places */
-            for (size_t i = 0; i < n; i++) ob.s[i] = t[i] * p0[6];
+        first_feet(&ob, t, p0[6]);
         cand_result r;
-        int feet_stale = 0;
+        int feet_stale = 0, r_strays = -1;     /* r_strays: r strays from its points, once known */
         if (map.nx == 0) {
             fit_value fv;
             if (el__fit_objective_eval(&ob, x0, 0, &fv)) continue;
@@ -466,8 +474,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
             int pre = 0;
             if (staged) {
                 pre = el__fit_held_start(&ob, &map, &free_map, staged, &con, o.max_iter, p0, x0, tmp);
-                if (fit_has_feet(&ob))          /* the first feet again (the stages moved them) */
-                    for (size_t i = 0; i < n; i++) ob.s[i] = t[i] * p0[6];
+                first_feet(&ob, t, p0[6]);      /* again (the stages moved them) */
             }
             if ((st = solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, lm_only, x0, best.f, &r, tmp,
                                       staged && pre > 0, 0)))
@@ -484,10 +491,9 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
              * another fit 5 x; none worse. Straying: a start curvature alone, a loop of
              * length 3.1 at rms 0.0217 within the noise rule, 0.0095 directly) */
             if (staged && model == FIT_SMOOTH && (!(sqrt(2.0 * r.f) <= 1.5 * noise && r.status == EL_OK) ||
-                                                 (ob.rest && el__fit_strays_at(&ob, r.x, noise_rms, d, fs, tmp)))) {
+                                                 (ob.rest && (r_strays = el__fit_strays_at(&ob, r.x, noise_rms, d, fs, tmp))))) {
                 cand_result rd;
-                if (fit_has_feet(&ob))
-                    for (size_t i = 0; i < n; i++) ob.s[i] = t[i] * p0[6];
+                first_feet(&ob, t, p0[6]);
                 el__fit_map_inverse(&map, p0, x0);
                 ob.have_base = 0;
                 if ((st = solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, lm_only, x0, best.f, &rd, tmp, 0, 0)))
@@ -497,7 +503,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
                 const int rd_meets = !need_ipopt || meets_constraints(&ob, &map, &con, rd.x, lo, hi, tmp);
                 const int direct = rd_meets && (!r_meets || rd.f < r.f);
                 ipopt_spent += ran_out(direct ? &r : &rd);    /* the run let go; the kept one below */
-                if (direct) r = rd;
+                if (direct) { r = rd; r_strays = -1; }
                 else { r.iters = rd.iters; feet_stale = 1; }     /* ob.s: the direct fit's feet */
             }
         }
@@ -506,7 +512,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
         /* the unconstrained start only where its fit meets the constraints: where Ipopt
          * could not, its f is that of the free fit */
         last_is_best = r.f < best.f && (ci != free_ci || meets_constraints(&ob, &map, &con, r.x, lo, hi, tmp));
-        if (last_is_best) { best = r; memcpy(best_init, p0, sizeof p0); }
+        if (last_is_best) { best = r; best_strays = r_strays; memcpy(best_init, p0, sizeof p0); }
         last_is_best &= !feet_stale;
         const double rms = sqrt(2.0 * best.f);
         if (rms <= 1e-10 || map.nx == 0) break;
@@ -519,8 +525,9 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
          * above: with the direct start but without this check, a G1-G1 fit of 41 points
          * stopped on a loop of length 3.0 at rms 0.0133, where the next guess reaches
          * 0.0079 and the true curve, length 1, has 0.0081) */
-        if (rms <= 1.5 * noise && best.status == EL_OK &&
-            !(need_ipopt && ob.rest && el__fit_strays_at(&ob, best.x, noise_rms, d, fs, tmp))) {
+        if (need_ipopt && ob.rest && rms <= 1.5 * noise && best.status == EL_OK && best_strays < 0)
+            best_strays = el__fit_strays_at(&ob, best.x, noise_rms, d, fs, tmp);
+        if (rms <= 1.5 * noise && best.status == EL_OK && !(need_ipopt && ob.rest && best_strays > 0)) {
             if (!free_start || rms <= 1.5 * data_noise) break;
             ci = ncand - 1;     /* no more guesses; the unconstrained start next */
         }
