@@ -104,6 +104,16 @@ static int bounded_start(fit_objective *ob, const double *xl, const double *xu, 
     return sol.iters;
 }
 
+/* The largest |row| of the constraint rows con at x; HUGE_VAL where they cannot be
+ * evaluated. They are met where it is at most 1e-10. */
+static double rows_violation(fit_objective *ob, const fit_constraints *con, const double *x, double *tmp)
+{
+    double c[FIT_NCON], cc = 0.0;
+    const int rows = el__fit_constraint_rows(ob, con, x, c, NULL, NULL, tmp);
+    for (int k = 0; k < rows; k++) cc = fmax(cc, fabs(c[k]));
+    return rows < 0 ? HUGE_VAL : cc;
+}
+
 /* 1 when a candidate's Ipopt run ended at its iteration limit (Maximum_Iterations_Exceeded). */
 static int ran_out(const cand_result *r) { return r->used_ipopt && r->ipopt_status == -1; }
 
@@ -211,7 +221,8 @@ static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit
         if (inside && !need_ipopt && r->f > best_f) return EL_OK;
     }
     fit_ipopt_out io;
-    double x[FIT_MAXX];
+    double x[FIT_MAXX], xpen[FIT_MAXX];
+    int pen_met = 0;     /* the penalty's last point meets the rows (xpen) */
     memcpy(x, lm_ok ? r->x : x0, sizeof(double) * (size_t)nx);
     if (lm_ok && need_ipopt) {
         /* Ipopt from the unconstrained optimum took wild first steps where the constraint
@@ -225,12 +236,12 @@ static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit
             if (el__fit_lm(ob, x, o->max_iter, &sol) != EL_OK) break;
             memcpy(x, sol.x, sizeof(double) * (size_t)nx);
             r->iters += sol.iters;
-            double c[FIT_NCON], cc = 0.0;
-            const int rows = el__fit_constraint_rows(ob, con, x, c, NULL, NULL, tmp);
-            for (int k = 0; k < rows; k++) cc = fmax(cc, fabs(c[k]));
-            if (rows < 0 || cc <= 1e-10) break;
+            const double cc = rows_violation(ob, con, x, tmp);
+            pen_met = cc <= 1e-10;
+            if (cc == HUGE_VAL || pen_met) break;
         }
         ob->pen = NULL;
+        if (pen_met) memcpy(xpen, x, sizeof(double) * (size_t)nx);
         inside = 1;
         for (int j = 0; j < nx; j++) inside &= x[j] >= xl[j] && x[j] <= xu[j];
     }
@@ -251,6 +262,19 @@ static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit
         memcpy(r->x, x, sizeof(double) * (size_t)nx);
         r->f = io.f;
         r->status = io.certified ? EL_OK : ipopt_to_status(io.ipopt_status);
+    }
+    /* Ipopt's point off the rows where the penalty's met them: the penalty's, uncertified
+     * (measured: 40 uneven noisy points along a gentle arc, both ends pinned, discrete by
+     * distance: Ipopt crept along the end-point rows from each guess to max_iter, 5203
+     * iterations, and the fit failed with EL_EDOM, where the penalty's point met them at
+     * an f 2e-4 of itself above Ipopt's last) */
+    if (pen_met && !(rows_violation(ob, con, r->x, tmp) <= 1e-10)) {
+        fit_value fv;
+        if (el__fit_objective_eval(ob, xpen, 0, &fv) == EL_OK) {
+            memcpy(r->x, xpen, sizeof(double) * (size_t)nx);
+            r->f = fv.f;
+            r->status = EL_ENOCONV;
+        }
     }
     /* a zero-residual fit that Ipopt could not certify (its step became tiny) is a fit */
     if (r->status == EL_ENOCONV && r->f <= FIT_EXACT_F) r->status = EL_OK;
@@ -433,6 +457,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
     const double noise = o.constraints ? el__fit_noise_plain(xy, n, sc) : data_noise;
     cand_result best;
     int best_strays = -1;      /* best strays from its points (el__fit_strays_at), once known */
+    int best_meets = 0;        /* with rows: best meets the constraints */
     memset(&best, 0, sizeof best);
     best.f = HUGE_VAL;
     best.status = EL_ENOCONV;
@@ -443,14 +468,23 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
      * took 1.8 s with them) */
     int iters = 0, tried = 0, last_is_best = 0, ipopt_spent = 0;   /* Ipopt runs to max_iter */
     int free_start = o.constraints && !need_ipopt && !o.use_initial && !lm_only;
+    /* a discrete fit with rows: the smooth fit's curve (el__fit_smooth_start) as its last
+     * start, where nothing holds the smooth fit's parameters to other meanings (fixed
+     * values, bounds, the signed k range) */
+    int smooth_start = model == FIT_DISCRETE && need_ipopt && !o.use_initial && !lm_only && !o.limited_memory &&
+                       !(o.constraints & EL_CONSTRAIN_K);
+    for (int j = 0; j < FIT_NP && smooth_start; j++)     /* the caller's (o holds a start point in x0, y0) */
+        if (opt->fixed[j] || isfinite(opt->lower[j]) || isfinite(opt->upper[j])) smooth_start = 0;
     size_t free_ci = (size_t)-1;    /* the unconstrained start's index in cand, once added */
-    for (size_t ci = 0; ci < ncand + (free_start != 0); ci++) {
+    for (size_t ci = 0; ci < ncand + (free_start || smooth_start); ci++) {
         if (ci == ncand) {      /* every guess far from the noise: one more start */
-            free_start = 0;
-            const int fst = el__fit_unconstrained_start(model, xy, n, opt, cx, cy, sc, best.f, cand[ncand]);
+            const int fst = free_start ? el__fit_unconstrained_start(model, xy, n, opt, cx, cy, sc, best.f, cand[ncand])
+                                       : el__fit_smooth_start(xy, n, opt, cx, cy, sc, cand[ncand]);
             if (fst == EL_ENOMEM) { st = fst; goto done; }
             if (fst) break;
-            free_ci = ncand++;
+            if (free_start) free_ci = ncand;
+            free_start = smooth_start = 0;
+            ncand++;
         }
         double p0[FIT_NP], x0[FIT_MAXX];
         memcpy(p0, cand[ci], sizeof p0);
@@ -509,25 +543,37 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
         }
         tried++;
         iters += r.iters;
-        /* the unconstrained start only where its fit meets the constraints: where Ipopt
-         * could not, its f is that of the free fit */
-        last_is_best = r.f < best.f && (ci != free_ci || meets_constraints(&ob, &map, &con, r.x, lo, hi, tmp));
-        if (last_is_best) { best = r; best_strays = r_strays; memcpy(best_init, p0, sizeof p0); }
+        /* the unconstrained start only where its fit meets the constraints (where Ipopt
+         * could not, its f is that of the free fit); with rows, a fit that meets them
+         * before one that does not, whatever their f (measured: a discrete G1-G1 sketch of
+         * 7 points, whose first guess ended at Ipopt's max_iter off the end tangent below
+         * the f of the three that met it, failed with EL_EDOM) */
+        const int r_meets = (need_ipopt || ci == free_ci) && meets_constraints(&ob, &map, &con, r.x, lo, hi, tmp);
+        last_is_best = ci == free_ci ? r_meets && r.f < best.f
+                     : need_ipopt ? (r_meets && !best_meets) || (r_meets == best_meets && r.f < best.f)
+                     : r.f < best.f;
+        if (last_is_best) { best = r; best_strays = r_strays; best_meets = r_meets; memcpy(best_init, p0, sizeof p0); }
         last_is_best &= !feet_stale;
         const double rms = sqrt(2.0 * best.f);
         if (rms <= 1e-10 || map.nx == 0) break;
         /* constraint rows: Ipopt's runs that end at max_iter, at most two over the guesses
-         * once one has met the constraints; while none has, no refit below after one (the
-         * fuzzer's 11 points with end constraints: five runs to max_iter, 1.3 s) */
-        if (need_ipopt && (ipopt_spent += ran_out(&r)) >= 2 && best.status == EL_OK) break;
+         * once one has met the constraints (converged, or the penalty's point); while none
+         * has, no refit below after one (the fuzzer's 11 points with end constraints: five
+         * runs to max_iter, 1.3 s; a discrete sketch of 45 points pinned at both ends,
+         * every guess to max_iter, 3.1 s) */
+        if (need_ipopt && (ipopt_spent += ran_out(&r)) >= 2 && (best.status == EL_OK || best_meets)) {
+            if (!smooth_start) break;
+            ci = ncand - 1;     /* no more guesses; the smooth fit's start next */
+            continue;
+        }
         /* with rows there is no follow_points refit at the end: a fit that strays from its
          * points (a loop where there is none) is no reason to stop (measured on the sets
          * above: with the direct start but without this check, a G1-G1 fit of 41 points
          * stopped on a loop of length 3.0 at rms 0.0133, where the next guess reaches
          * 0.0079 and the true curve, length 1, has 0.0081) */
-        if (need_ipopt && ob.rest && rms <= 1.5 * noise && best.status == EL_OK && best_strays < 0)
+        if (need_ipopt && kind == FIT_ORTHOGONAL && rms <= 1.5 * noise && best.status == EL_OK && best_strays < 0)
             best_strays = el__fit_strays_at(&ob, best.x, noise_rms, d, fs, tmp);
-        if (rms <= 1.5 * noise && best.status == EL_OK && !(need_ipopt && ob.rest && best_strays > 0)) {
+        if (rms <= 1.5 * noise && best.status == EL_OK && !(need_ipopt && kind == FIT_ORTHOGONAL && best_strays > 0)) {
             if (!free_start || rms <= 1.5 * data_noise) break;
             ci = ncand - 1;     /* no more guesses; the unconstrained start next */
         }

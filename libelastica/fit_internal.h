@@ -243,7 +243,7 @@ int el__fit_curve_distances(fit_objective *ob, const double *x, double v[2][FIT_
  * -1 when out of memory. scale: the data's size (the fit's normalisation, el__fit_normalisation). */
 #define FIT_STRAY 0.1
 double el__fit_stray(const double *xy, size_t n, const double *fs, double L, double noise, double scale);
-/* fit_refit.c: whether the smooth orthogonal fit at x (ob's map) strays from its points
+/* fit_refit.c: whether the fit by distance at x (ob's map) strays from its points
  * (el__fit_stray > FIT_STRAY; noise: el__fit_noise_rms, normalised); d, fs (n each: ob's
  * rest arrays, or the caller's) overwritten with its distances and feet (input units). */
 int el__fit_strays_at(fit_objective *ob, const double *x, double noise, double *d, double *fs, double *tmp);
@@ -349,6 +349,11 @@ int el__fit_run_either_way(int model, const double *xy, size_t n, const el_fit_o
  * none, EL_ENOMEM. */
 int el__fit_unconstrained_start(int model, const double *xy, size_t n, const el_fit_options *opt, double cx,
                                 double cy, double sc, double best_f, double *v);
+/* fit_restart.c: a discrete fit's last start where its constraints are rows: the smooth
+ * fit with the same constraints as the discrete model's continuum limit (normalised by
+ * cx, cy, sc into v); EL_EDOM: none, EL_ENOMEM. */
+int el__fit_smooth_start(const double *xy, size_t n, const el_fit_options *opt, double cx, double cy, double sc,
+                         double *v);
 /* fit_restart.c: the curve's length of a fit's result. */
 double el__fit_out_length(int model, size_t n, const fit_out *r);
 /* fit_restart.c: a fit by distance whose result *res (d, fs its distances and feet,

@@ -390,5 +390,6 @@ int el__fit_strays_at(fit_objective *ob, const double *x, double noise, double *
     if (el__fit_map_eval(&ob->map, x, v, NULL) || el__fit_curve_distances(ob, x, v, 0, d, fs, tmp)) return 0;
     ob->rest_ok = 0;     /* d, fs no longer hold an evaluation's points at rest */
     for (size_t i = 0; i < ob->n; i++) fs[i] *= ob->sc;
-    return el__fit_stray(ob->xy, ob->n, fs, v[0][6] * ob->sc, noise * ob->sc, ob->sc) > FIT_STRAY;
+    const double L = ob->map.model == FIT_SMOOTH ? v[0][6] : (double)(ob->n - 1) * v[0][2];
+    return el__fit_stray(ob->xy, ob->n, fs, L * ob->sc, noise * ob->sc, ob->sc) > FIT_STRAY;
 }

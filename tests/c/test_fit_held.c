@@ -5,8 +5,7 @@
  * fit from it, which follows the same starts). Each set is one of 2 x 150 random sets of
  * 6-59 points (numpy default_rng(6) and (7), the generator of bench/bench_fit_sparse.py);
  * each test failed before fit.c's direct start and stray check. */
-#include "testutil.h"
-#include <math.h>
+#include "sketch_check.h"
 
 /* 27 points of an arc (k = -0.557, turning by 0.8 rad), noise 1 % of the extent (seed 6, set 29) */
 static const double ARC27[] = {
@@ -104,26 +103,6 @@ static const double TT41[] = {
     0.7583179130150801, -0.6240263369155956,
 };
 static const el_smooth_params TT41_TRUE = {0, 0, -0.547389461937132, 17.547700914879936, -0.18691942136005024, -0.06776904916188808, 1};
-
-/* The rms distance of the points to the curve p: the nearest of 20001 samples (spaced
- * 5e-5 of the length: each distance off by < 1e-8, far below the points' noise). */
-static double true_rms(const double *xy, size_t n, const el_smooth_params *p)
-{
-    enum { M = 20001 };
-    static double s[M], P[2 * M];
-    for (int j = 0; j < M; j++) s[j] = p->length * j / (M - 1.0);
-    ck_assert_int_eq(el_smooth_eval(p, M, s, P, NULL, NULL), EL_OK);
-    double s2 = 0.0;
-    for (size_t i = 0; i < n; i++) {
-        double best = HUGE_VAL;
-        for (int j = 0; j < M; j++) {
-            const double dx = P[2 * j] - xy[2 * i], dy = P[2 * j + 1] - xy[2 * i + 1];
-            best = fmin(best, dx * dx + dy * dy);
-        }
-        s2 += best;
-    }
-    return sqrt(s2 / (double)n);
-}
 
 /* The default smooth fit of xy with the constraints mask taken from the true curve p:
  * EL_OK, rms within 1 % of p's own, length within 10 % of p's (no loop). */
