@@ -120,7 +120,12 @@ static int newton2(tracer *T, int which, double target, double span, cpt *r)
         if (n > span) { d0 *= span / n; d1 *= span / n; }
         cpt s, full;
         int ok = 0, full_ok = 0;
-        for (int h = 0; h < 6 && !ok; h++, d0 *= 0.5, d1 *= 0.5) {
+        /* r within the tolerance already (converged2): the residual is at its rounding
+         * level, where a full step that does not decrease it is not helped by shorter
+         * ones (the halvings below cost 5 evaluations and end the iteration the same way:
+         * 489 such iterations, 2934 evaluations on the bench's 1000 problems) */
+        const int conv = converged2(r, which, target, scale);
+        for (int h = 0; h < 6 && !ok && !(conv && full_ok); h++, d0 *= 0.5, d1 *= 0.5) {
             const int rc = el__hlen_eval(T, r, r->U + d0, r->V + d1, &s);
             if (rc == EL_EMAXITER) return rc;
             if (rc) continue;
@@ -161,17 +166,58 @@ static int newton2_charts(tracer *T, int which, double target, double span, cpt 
     return rc;
 }
 
+/* Newton's start for the crossing L = target of the step p -> q (one chart; unit tangents
+ * tp, tq; L - target of opposite signs at the ends): the point of the step's cubic Hermite
+ * interpolant (the trace's predictor, ends and tangents over the chord length D) at the
+ * parameter x where the cubic Hermite interpolant of L along it (its slopes Lg . t D)
+ * crosses the target, by safeguarded Newton from the linear interpolate w. The curve's
+ * error is fourth order in D where the chord's is second: newton2 starts closer to C
+ * (0.6 % fewer instructions in the length mode; the same solutions on 16 x 1000 random
+ * problems in each of three ranges of L / |p1 - p0|, up to 2e-8 relative in sigma and
+ * kappa0 at sigma |p1 - p0|^2 ~ 2000, where both curves meet the ends to 1e-14). */
+static void hermite_start(const cpt *p, const double tp[2], const cpt *q, const double tq[2], double target,
+                          double w, double *sU, double *sV)
+{
+    const double D = el__hlen_norm(q->U - p->U, q->V - p->V);
+    const double a = p->st.L - target, b = q->st.L - target;
+    const double m0 = (p->Lg[0] * tp[0] + p->Lg[1] * tp[1]) * D, m1 = (q->Lg[0] * tq[0] + q->Lg[1] * tq[1]) * D;
+    double lo = 0.0, hi = 1.0, x = w;
+    if (!(a * b <= 0.0) || !(x >= 0.0 && x <= 1.0)) return;
+    for (int it = 0; it < 40; it++) {
+        const double x2 = x * x, x3 = x2 * x;
+        const double H = (2 * x3 - 3 * x2 + 1) * a + (x3 - 2 * x2 + x) * m0 + (3 * x2 - 2 * x3) * b + (x3 - x2) * m1;
+        const double dH = (6 * x2 - 6 * x) * (a - b) + (3 * x2 - 4 * x + 1) * m0 + (3 * x2 - 2 * x) * m1;
+        if (H == 0.0) break;
+        if ((H > 0.0) == (a > 0.0)) lo = x; else hi = x;
+        double xn = x - H / dH;
+        if (!(xn > lo && xn < hi)) xn = 0.5 * (lo + hi);
+        const double dx = fabs(xn - x);
+        x = xn;
+        if (dx <= 1e-14) break;
+    }
+    const double x2 = x * x, x3 = x2 * x;
+    const double h00 = 2 * x3 - 3 * x2 + 1, h10 = (x3 - 2 * x2 + x) * D, h01 = 3 * x2 - 2 * x3, h11 = (x3 - x2) * D;
+    const double U = h00 * p->U + h10 * tp[0] + h01 * q->U + h11 * tq[0];
+    const double V = h00 * p->V + h10 * tp[1] + h01 * q->V + h11 * tq[1];
+    if (isfinite(U) && isfinite(V)) { *sU = U; *sV = V; }
+}
+
 /* The point of the step p -> q of C where G (L, or t when which = 1) is target: Newton
- * (newton2) from the linear interpolate, or, when p and q lie in different charts or
- * branches (C passed the fold of (17) within the step), from each end in its own. */
-static int cross(tracer *T, const cpt *p, const cpt *q, int which, double target, cpt *r)
+ * (newton2) from the linear interpolate, for L with the step's unit tangents tp, tq from
+ * the point of its cubic Hermite interpolant there (hermite_start; the chord's where
+ * T->chord_start), or, when p and q lie in different charts or branches (C passed the
+ * fold of (17) within the step), from each end in its own. */
+static int cross(tracer *T, const cpt *p, const double *tp, const cpt *q, const double *tq, int which,
+                 double target, cpt *r)
 {
     const double gp = which ? p->t : p->st.L, gq = which ? q->t : q->st.L;
     const double w = gp == gq ? 0.5 : (gp - target) / (gp - gq);
     const double dU = q->U - p->U, dV = q->V - p->V, span = el__hlen_norm(dU, dV) + 1e-12;
     const int same = p->chart == q->chart && p->base == q->base && p->fi == q->fi && p->b == q->b && p->side == q->side;
     if (same) {
-        const int rc = el__hlen_eval(T, q, p->U + w * dU, p->V + w * dV, r);
+        double sU = p->U + w * dU, sV = p->V + w * dV;
+        if (tp && tq && !T->chord_start) hermite_start(p, tp, q, tq, target, w, &sU, &sV);
+        const int rc = el__hlen_eval(T, q, sU, sV, r);
         return rc ? rc : newton2_charts(T, which, target, span, r);
     }
     int rc = EL_ENOCONV;
@@ -239,7 +285,7 @@ static int length_crossings(tracer *T, const cpt *p, const double tp[2], const c
     cpt r;
     const double a = p->st.L - T->Lt, b = q->st.L - T->Lt;
     if (a * b <= 0.0) {
-        rc = cross(T, p, q, 0, T->Lt, &r);
+        rc = cross(T, p, tp, q, tq, 0, T->Lt, &r);
         if (rc == EL_EMAXITER) return rc;
         int inside = 0;
         if (rc == EL_OK && (rc = keep_crossing(T, p, q, &r, &inside))) return rc;
@@ -419,7 +465,7 @@ static int step_events(tracer *T, int origin, const cpt *p, const double tp[2], 
                 tr = s->t;
                 fast = T->newton_seeds ? -1 : seed_by_interpolation(T, p, tp, q, tq, s->t);
                 rcr = EL_OK;
-                if (fast < 0 && (rcr = cross(T, p, q, 1, s->t, &r)) == EL_EMAXITER) return rcr;
+                if (fast < 0 && (rcr = cross(T, p, NULL, q, NULL, 1, s->t, &r)) == EL_EMAXITER) return rcr;
                 if (fast < 0 && !rcr && !length_fits(p, q, &r)) rcr = EL_ENOCONV;
             }
             if (fast >= 0 ? fast != i : rcr || !el__hlen_same_state(&r, s)) continue;
@@ -438,6 +484,8 @@ static int step_events(tracer *T, int origin, const cpt *p, const double tp[2], 
  * crossings of L = Lt hides in one long step (0.7 missed two of the 3528 solutions of
  * 1000 random problems; the cost is 0.3 % more evaluations) */
 #define LRATIO 0.35
+#define LRATIO_LO 0.7046880897187134  /* exp(-LRATIO) */
+#define LRATIO_HI 1.4190675485932571  /* exp(LRATIO) */
 /* A step shorter than FOLD_H whose evaluation fails: the point's other charts are tried,
  * at most CHART_FALLBACKS times per trace */
 #define FOLD_H 1e-2
@@ -502,7 +550,9 @@ static int trace(tracer *T, int origin, double dir)
             tangent(&q, tau[0], tau[1], tq);
             cosang = tau[0] * tq[0] + tau[1] * tq[1];
             err = el__hlen_norm(q.U - pU, q.V - pV);
-            ok = err <= 0.3 * h && cosang >= 0.9 && fabs(log(q.st.L / p.st.L)) <= LRATIO &&
+            /* |ln(Lq / Lp)| <= LRATIO without the logarithm (the ratio between its exponentials) */
+            const double lr = q.st.L / p.st.L;
+            ok = err <= 0.3 * h && cosang >= 0.9 && lr >= LRATIO_LO && lr <= LRATIO_HI &&
                  dU * tau[0] + dV * tau[1] > 0.0;
         }
         if (!ok) {
@@ -648,7 +698,7 @@ static int seeds(tracer *T, int nl, int ns)
 #define LINE_POWER_THOROUGH 1.5
 
 static int solve_length(hprob *pr, double Lt, int nl, int ns, double long_curves, double line_power,
-                        int lean_seeds, int retrace, int newton_seeds, hrootlist *out)
+                        int lean_seeds, int retrace, int newton_seeds, int chord_start, hrootlist *out)
 {
     double slo, shi;
     sigma_range(Lt, &slo, &shi);
@@ -667,6 +717,7 @@ static int solve_length(hprob *pr, double Lt, int nl, int ns, double long_curves
     T.lean_seeds = lean_seeds;
     T.retrace = retrace;
     T.newton_seeds = newton_seeds;
+    T.chord_start = chord_start;
     int rc = seeds(&T, nl, ns);
     for (int i = 0; i < T.nseed && !rc; i++) {
         if (T.visited[i]) continue;
@@ -684,20 +735,25 @@ static int solve_length(hprob *pr, double Lt, int nl, int ns, double long_curves
  * ns bracketing samples each. */
 int el__hermite_solve_length(hprob *pr, double Lt, int nl, int ns, hrootlist *out)
 {
-    return solve_length(pr, Lt, nl, ns, LONG_CURVES, LINE_POWER, 1, 0, 0, out);
+    return solve_length(pr, Lt, nl, ns, LONG_CURVES, LINE_POWER, 1, 0, 0, 0, out);
 }
 
 int el__hlen_solve_retracing(hprob *pr, double Lt, int nl, int ns, hrootlist *out)
 {
-    return solve_length(pr, Lt, nl, ns, LONG_CURVES, LINE_POWER, 1, 1, 0, out);
+    return solve_length(pr, Lt, nl, ns, LONG_CURVES, LINE_POWER, 1, 1, 0, 0, out);
 }
 
 int el__hlen_solve_newton_seeds(hprob *pr, double Lt, int nl, int ns, hrootlist *out)
 {
-    return solve_length(pr, Lt, nl, ns, LONG_CURVES, LINE_POWER, 1, 0, 1, out);
+    return solve_length(pr, Lt, nl, ns, LONG_CURVES, LINE_POWER, 1, 0, 1, 0, out);
+}
+
+int el__hlen_solve_chord_start(hprob *pr, double Lt, int nl, int ns, hrootlist *out)
+{
+    return solve_length(pr, Lt, nl, ns, LONG_CURVES, LINE_POWER, 1, 0, 0, 1, out);
 }
 
 int el__hermite_solve_length_thorough(hprob *pr, double Lt, int nl, int ns, hrootlist *out)
 {
-    return solve_length(pr, Lt, nl, ns, LONG_CURVES_THOROUGH, LINE_POWER_THOROUGH, 0, 1, 0, out);
+    return solve_length(pr, Lt, nl, ns, LONG_CURVES_THOROUGH, LINE_POWER_THOROUGH, 0, 1, 0, 0, out);
 }

@@ -48,6 +48,7 @@ typedef struct {
     int lean_seeds;       /* seed lines by el__hermite_seed_tension (else el__hermite_solve_tension) */
     int retrace;          /* follow a trace through seeds other traces visited (step_events) */
     int newton_seeds;     /* every seed line crossing by Newton (seed_by_interpolation's plain counterpart) */
+    int chord_start;      /* the crossings' Newton from the chord (hermite_start's plain counterpart) */
     hrootlist *out;
 } tracer;
 
@@ -57,6 +58,9 @@ int el__hlen_solve_retracing(hprob *pr, double Lt, int nl, int ns, hrootlist *ou
 /* el__hermite_solve_length with every seed line crossing matched to its seed by Newton
  * (seed_by_interpolation's plain counterpart, for test_hermite_length.c) */
 int el__hlen_solve_newton_seeds(hprob *pr, double Lt, int nl, int ns, hrootlist *out);
+/* el__hermite_solve_length with the Newton of every L = Lt crossing started on the step's
+ * chord (hermite_start's plain counterpart, for test_hermite_length.c) */
+int el__hlen_solve_chord_start(hprob *pr, double Lt, int nl, int ns, hrootlist *out);
 
 /* sinh to a few ulps, faster than libm's (the tracer's coordinates are asinh of the chart's) */
 double el__hlen_sinh(double x);

@@ -164,6 +164,14 @@ static void same_solutions_as(const char *what, unsigned long long st, length_so
     ck_assert_uint_gt(n, 3000);
 }
 
+/* The Newton of a crossing L = Lt started on the step's cubic Hermite interpolant
+ * (hermite_start) against its start on the chord (el__hlen_solve_chord_start). */
+START_TEST(length_mode_starts_crossings_on_the_cubic_as_on_the_chord)
+{
+    same_solutions_as("length_mode_starts_crossings_on_the_cubic_as_on_the_chord", 2718, el__hlen_solve_chord_start);
+}
+END_TEST
+
 /* A trace ends at a seed another trace visited (step_events) against every trace
  * followed through to its end (el__hlen_solve_retracing). */
 START_TEST(length_mode_stops_at_seeds_other_traces_visited)
@@ -429,6 +437,7 @@ int main(void)
     tcase_add_test(tc, length_mode_keeps_every_solution_of_a_dense_search);
     tcase_add_test(tc, length_mode_stops_at_seeds_other_traces_visited);
     tcase_add_test(tc, length_mode_matches_seeds_as_newton_does);
+    tcase_add_test(tc, length_mode_starts_crossings_on_the_cubic_as_on_the_chord);
     tcase_add_test(tc, length_mode_finds_the_solutions_a_bent_predictor_lost);
     tcase_add_test(tc, length_mode_finds_the_solutions_a_cubic_predictor_lost);
     tcase_add_test(tc, length_mode_halves_a_bracket_along_C);
