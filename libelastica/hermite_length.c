@@ -174,7 +174,11 @@ static int newton2_charts(tracer *T, int which, double target, double span, cpt 
  * error is fourth order in D where the chord's is second: newton2 starts closer to C
  * (0.6 % fewer instructions in the length mode; the same solutions on 16 x 1000 random
  * problems in each of three ranges of L / |p1 - p0|, up to 2e-8 relative in sigma and
- * kappa0 at sigma |p1 - p0|^2 ~ 2000, where both curves meet the ends to 1e-14). */
+ * kappa0 at sigma |p1 - p0|^2 ~ 2000, where both curves meet the ends to 1e-14).
+ * Hand-written rather than gsl_poly_solve_cubic: the cubic may have three real roots in
+ * [0, 1], and the start wanted is the one Newton reaches from the linear interpolate w
+ * within the bracket [lo, hi] it keeps (a degenerate cubic, a quadratic or a line, needs
+ * no special case). */
 static void hermite_start(const cpt *p, const double tp[2], const cpt *q, const double tq[2], double target,
                           double w, double *sU, double *sV)
 {
