@@ -562,7 +562,15 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
         nu += !dup;
     }
     free(unrep);
-    qsort(sol, n, sizeof *sol, cmp_energy);
+    /* by energy: insertion sort, stable as glibc's qsort (a merge sort) on the same
+     * comparison; the lists are a few solutions long (qsort's indirect calls and
+     * buffer cost more than the sort) */
+    for (size_t i = 1; i < n; i++) {
+        const el_hermite_solution t = sol[i];
+        size_t j = i;
+        for (; j > 0 && cmp_energy(&sol[j - 1], &t) > 0; j--) sol[j] = sol[j - 1];
+        sol[j] = t;
+    }
     if (n > opt->max_solutions) n = opt->max_solutions;
     if (n == 0) { free(sol); sol = NULL; }
     res->count = n;

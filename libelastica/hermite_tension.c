@@ -27,11 +27,13 @@ static double period_infl(double km, double sigma)
     return 4.0 * K / sqrt(0.5 * Fn);
 }
 
-typedef struct { double sigma, Lmin; } tparam;
+/* lo, hi: the bracket's ends, whose periods Tlo, Thi are known (gsl_root_fsolver_set
+ * evaluates both ends again: the same values, served here) */
+typedef struct { double sigma, Lmin, lo, Tlo, hi, Thi; } tparam;
 static double period_gap(double km, void *p)
 {
     const tparam *t = p;
-    return period_infl(km, t->sigma) - t->Lmin;
+    return (km == t->lo ? t->Tlo : km == t->hi ? t->Thi : period_infl(km, t->sigma)) - t->Lmin;
 }
 
 /* Every solution has T >= L >= Lmin. sigma <= 0: k^2 <= 1/2, so
@@ -52,21 +54,28 @@ int el__hermite_kappa_bound(double sigma, double Lmin, double *B)
     double Thi = period_infl(hi, sigma);   /* each period evaluated once: the AGM */
     for (int i = 0; i < 200 && !(Thi < Lmin); i++) Thi = period_infl(hi *= 2.0, sigma);
     if (!(Thi < Lmin)) return EL_EINTERNAL;
-    if (!(period_infl(lo, sigma) > Lmin)) { *B = lo; return EL_OK; }
-    tparam tp = {sigma, Lmin};
+    const double Tlo = period_infl(lo, sigma);
+    if (!(Tlo > Lmin)) { *B = lo; return EL_OK; }
+    tparam tp = {sigma, Lmin, lo, Tlo, hi, Thi};
     gsl_function fn = {period_gap, &tp};
-    gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+    /* GSL's Brent solver on the stack: its state (the type's public size) in a local
+     * buffer instead of gsl_root_fsolver_alloc's two mallocs per problem; where the type
+     * needs more, allocated as before */
+    double state[32];
+    gsl_root_fsolver local = {gsl_root_fsolver_brent, NULL, 0.0, 0.0, 0.0, state};
+    gsl_root_fsolver *s = gsl_root_fsolver_brent->size <= sizeof state ? &local : gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
     if (!s) return EL_ENOMEM;
-    if (gsl_root_fsolver_set(s, &fn, lo, hi) != GSL_SUCCESS) { gsl_root_fsolver_free(s); return EL_EINTERNAL; }
-    for (int it = 0; it < 200; it++) {
+    int rc = EL_OK;
+    if (gsl_root_fsolver_set(s, &fn, lo, hi) != GSL_SUCCESS) rc = EL_EINTERNAL;
+    for (int it = 0; it < 200 && !rc; it++) {
         if (gsl_root_fsolver_iterate(s) != GSL_SUCCESS) break;
         double a = gsl_root_fsolver_x_lower(s), b = gsl_root_fsolver_x_upper(s);
         if (gsl_root_test_interval(a, b, 0.0, 1e-3) == GSL_SUCCESS) break;
     }
     /* the bracket's upper end has T < Lmin: a bound whatever the bracket's width */
-    *B = gsl_root_fsolver_x_upper(s) * (1.0 + 1e-9);
-    gsl_root_fsolver_free(s);
-    return EL_OK;
+    if (!rc) *B = gsl_root_fsolver_x_upper(s) * (1.0 + 1e-9);
+    if (s != &local) gsl_root_fsolver_free(s);
+    return rc;
 }
 
 /* ------------------------------------------------------------ split points */
@@ -578,13 +587,22 @@ static int solve_samples(fctx *c, double *xs, double *fs, int ns, double w, hroo
     return EL_OK;
 }
 
-static int solve_piece(fctx *c, double a, double b, int ns, hrootlist *out)
+/* cos(pi / ns) of the pieces' sample counts, computed once per solve (NCOS: the counts
+ * the default 12 samples give, and more) */
+#define NCOS 32
+static int solve_piece(fctx *c, double a, double b, int ns, double *cosn, hrootlist *out)
 {
     double xs[1002 + REFINE_MAX], fs[1002 + REFINE_MAX];
     const double eps = 1e-10 * (b - a) + 1e-14 * (fabs(a) + fabs(b));
     if (!(b - a > 4.0 * eps)) return EL_OK;
     /* cos(pi j / ns) by the Chebyshev recurrence c_{j+1} = 2 c_1 c_j - c_{j-1} */
-    const double c1 = cos(M_PI / ns);
+    double c1;
+    if (ns < NCOS) {
+        if (isnan(cosn[ns])) cosn[ns] = cos(M_PI / ns);
+        c1 = cosn[ns];
+    } else {
+        c1 = cos(M_PI / ns);
+    }
     double cprev = c1, cj = 1.0;
     for (int j = 0; j <= ns; j++) {
         xs[j] = a + (b - a) * 0.5 * (1.0 - cj);
@@ -725,6 +743,8 @@ static int solve_tension(hprob *pr, int ns, int lean, hrootlist *out)
                 n40++;
             }
     }
+    double cosn[NCOS];
+    for (int i = 0; i < NCOS; i++) cosn[i] = NAN;
     for (int b = 0; b < nbranches(pr); b++) {
         const double X = domain_half(pr, b);
         if (!(X > 0.0)) continue;
@@ -755,7 +775,7 @@ static int solve_tension(hprob *pr, int ns, int lean, hrootlist *out)
             const int m = 1 + (int)ceil(ns * (bb - a) / (2.0 * X));
             c.sep_lo = a_sep && xa == a ? a : NAN;
             c.sep_hi = pts[i + 1].soft == SPLIT_SEP && xb == bb ? bb : NAN;
-            if ((rc = solve_piece(&c, xa, xb, m > 1000 ? 1000 : m, out))) return rc;
+            if ((rc = solve_piece(&c, xa, xb, m > 1000 ? 1000 : m, cosn, out))) return rc;
         }
     }
     return EL_OK;

@@ -184,10 +184,16 @@ int el_smooth_eval(const el_smooth_params *p, size_t n, const double *s,
  * instructions went to the general path's set-up. */
 int el__smooth_ends(const el_smooth_params *p, double xy[4], double th[2])
 {
-    const double s[2] = {0.0, p ? p->length : 0.0};
+    /* scan_samples over s = {0, length} by hand: umax = max(|q|, |sqrt(mu) length + q|)
+     * (w 0 + q is q), smax = |length|, not uniform (two points) */
+    if (el_smooth_check(p)) return EL_EINVAL;
+    const double s[2] = {0.0, p->length};
     samples sc;
-    int st = scan_samples(p, 2, s, &sc);
-    if (st) return st;
+    const double u1 = fabs(sqrt(p->mu) * s[1] + p->q), uq = fabs(p->q);
+    sc.umax = u1 > uq ? u1 : uq;
+    sc.smax = fabs(p->length);
+    sc.uniform = 0;
+    int st;
     el__modulus mod;
     el_jacobi b, v[2];
     const double w = sqrt(p->mu), iw = 1.0 / w, k = p->k, c = cos(p->phi), sp = sin(p->phi);
