@@ -14,6 +14,7 @@
  * k = 1 (here k'^2 comes in exactly). tests/c/test_ellint.c checks them against GSL.
  */
 #include "internal.h"
+#include <float.h>
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -70,7 +71,8 @@ static double rd_series(double AD0, double x0, double y0, double f2, double AD, 
 
 static int carlson_args_ok(double x, double y, double z)
 {
-    return x >= 0.0 && y >= 0.0 && z > 0.0 && !(x == 0.0 && y == 0.0) && isfinite(x + y + z);
+    /* x, y >= 0 (NaN fails): x + y > 0 iff not both 0; the sum finite iff each is */
+    return x >= 0.0 && y >= 0.0 && z > 0.0 && x + y > 0.0 && x + y + z <= DBL_MAX;
 }
 
 int el__carlson_fd(double x, double y, double z, double qs, double *rf, double *rd)
@@ -123,6 +125,20 @@ int el__carlson_fd(double x, double y, double z, double qs, double *rf, double *
 int el__ellint_complete(double k, double kc2, double *K, double *D)
 {
     if (!(kc2 > 0.0) || !(k >= 0.0) || !isfinite(k + kc2)) return EL_EDOM;
+    if (!D) {
+        /* K alone (D = NULL): the same a_n, the same stop, so the same K; without the
+         * c_n sums (two divisions a step) */
+        double a = 1.0, b = sqrt(kc2);
+        for (int n = 0; n < 40; n++) {
+            const double an = 0.5 * (a + b);
+            const int last = fabs(a - b) <= 1e-9 * a;
+            b = sqrt(a * b);
+            a = an;
+            if (last) break;
+        }
+        *K = M_PI / (2.0 * a);
+        return EL_OK;
+    }
     double a = 1.0, b = sqrt(kc2), c = k, ct = 1.0, w = 0.5, sum = 0.5; /* ct = c_n / k */
     /* stop at |a - b| <= 1e-9 a: one more step is then exact to rounding (quadratic
      * convergence); it is taken without the sqrt, b being irrelevant after it */

@@ -518,7 +518,8 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
         else circle_unrep = 1;
     }
     /* found, exact in the solver's variables, but not representable to tol (below) */
-    el_hermite_solution *unrep = malloc(roots.n * sizeof *unrep + 1);
+    /* (on the stack for the usual few roots: no malloc and free per problem) */
+    el_hermite_solution ubuf[8], *unrep = roots.n <= 8 ? ubuf : malloc(roots.n * sizeof *unrep);
     size_t nunrep = 0;
     if (!unrep) { free(sol); free(roots.v); return EL_ENOMEM; }
     for (size_t i = 0; i < roots.n; i++) {
@@ -561,7 +562,7 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
         for (size_t j = 0; j < i && !dup; j++) dup = same_solution(&unrep[i], &unrep[j], fr.d);
         nu += !dup;
     }
-    free(unrep);
+    if (unrep != ubuf) free(unrep);
     /* by energy: insertion sort, stable as glibc's qsort (a merge sort) on the same
      * comparison; the lists are a few solutions long (qsort's indirect calls and
      * buffer cost more than the sort) */

@@ -15,7 +15,8 @@ int el__poly_real_roots(const double *c_in, int deg, double *roots, int *nroots)
 {
     double c[3];
     double cmax = 0.0;
-    for (int i = 0; i <= deg; i++) { c[i] = c_in[i]; cmax = fmax(cmax, fabs(c[i])); }
+    /* a comparison, not libm's fmax (a call: NaN rules): cmax stays a number either way */
+    for (int i = 0; i <= deg; i++) { c[i] = c_in[i]; cmax = fabs(c[i]) > cmax ? fabs(c[i]) : cmax; }
     *nroots = 0;
     while (deg > 0 && fabs(c[deg]) <= 1e-14 * cmax) deg--;
     if (deg <= 0) return EL_OK;
@@ -41,7 +42,10 @@ static int effective_degree(const double *c, int deg, double lo, double hi)
 {
     const double R = fmax(1.0, fmax(fabs(lo), fabs(hi)));
     double tmax = 0.0, Ri = 1.0, Rdeg[9];
-    for (int i = 0; i <= deg; i++, Ri *= R) { Rdeg[i] = Ri; tmax = fmax(tmax, fabs(c[i]) * Ri); }
+    for (int i = 0; i <= deg; i++, Ri *= R) {
+        Rdeg[i] = Ri;
+        tmax = fabs(c[i]) * Ri > tmax ? fabs(c[i]) * Ri : tmax;   /* fmax without the call */
+    }
     while (deg > 0 && fabs(c[deg]) * Rdeg[deg] <= 1e-14 * tmax) deg--;
     return deg;
 }

@@ -21,9 +21,9 @@
 static double period_infl(double km, double sigma)
 {
     const double Fn = km * km - sigma, k = sqrt(km * km / (2.0 * Fn));
-    double K, D;
-    /* the AGM with k'^2 = (|F| - sigma) / (2 |F|): cheaper than GSL's Kcomp */
-    if (el__ellint_complete(k, (Fn - sigma) / (2.0 * Fn), &K, &D)) return NAN;
+    double K;
+    /* the AGM with k'^2 = (|F| - sigma) / (2 |F|): cheaper than GSL's Kcomp (K alone) */
+    if (el__ellint_complete(k, (Fn - sigma) / (2.0 * Fn), &K, NULL)) return NAN;
     return 4.0 * K / sqrt(0.5 * Fn);
 }
 

@@ -72,7 +72,7 @@ void *el__realloc(void *p, size_t count, size_t per, size_t elem);
 int el__carlson_fd(double x, double y, double z, double qs, double *rf, double *rd);
 /* The complete integrals K(k) and D(k) = int_0^(pi/2) sin^2 / sqrt(1 - k^2 sin^2) =
  * (K - E)/k^2 for 0 <= k < 1, given kc2 = 1 - k^2 formed without cancellation
- * (ellint.c, AGM). EL_EDOM unless kc2 > 0. */
+ * (ellint.c, AGM). EL_EDOM unless kc2 > 0. D = NULL: K alone (the same bits, cheaper). */
 int el__ellint_complete(double k, double kc2, double *K, double *D);
 
 /* What el_jacobi_eval precomputes for one modulus k: kg = min(k, 1/k), its
@@ -86,6 +86,9 @@ int el__modulus_init(double k, int with_dk, el__modulus *mod);
 /* el_jacobi_eval for a prepared modulus: the cheap path for many u at one k
  * (d_dk only if the modulus was prepared with_dk). */
 int el__jacobi_eval_mod(const el__modulus *mod, double u, el_jacobi *val, el_jacobi *d_du, el_jacobi *d_dk);
+/* el__jacobi_eval_mod without am (val->am NaN) and derivatives: the other values and the
+ * status the same bits, without am's atan2 (el__smooth_ends' two evaluations). */
+int el__jacobi_values(const el__modulus *mod, double u, el_jacobi *val);
 
 /* el_smooth_eval(p, 2, {0, p->length}, xy, th, NULL) for the two ends alone (smooth.c):
  * the same steps, bits and statuses without the set-up for many samples (the Hermite

@@ -161,7 +161,7 @@ static int jacobi_reduced(const el__modulus *mod, double x, double *sn, double *
  * Core for 0 <= k = mod->kg <= 1. Fills val (all fields) and, if dk != NULL,
  * the k-derivatives at fixed u of sn, cn, dn, am, D, E.
  */
-static int jacobi_le1(const el__modulus *mod, double u, el_jacobi *val, el_jacobi *dk)
+static int jacobi_le1(const el__modulus *mod, double u, el_jacobi *val, el_jacobi *dk, int want_am)
 {
     const double k = mod->kg, m = k * k;
     double sn, cn, dn, phi, D, nhalf = 0.0; /* nhalf: number of half periods 2K removed */
@@ -192,7 +192,9 @@ static int jacobi_le1(const el__modulus *mod, double u, el_jacobi *val, el_jacob
             D = copysign(mod->Dc - Dx - s * c / d, r);
         }
         sr = sn; cr = cn; dr = dn;
-        phi = atan2(sn, cn); /* |r| <= K so cn >= 0: phi in [-pi/2, pi/2] */
+        /* |r| <= K so cn >= 0: phi in [-pi/2, pi/2]; not wanted (el__jacobi_values): 0, a
+         * finite placeholder (the k-derivatives need it) */
+        phi = want_am || dk ? atan2(sn, cn) : 0.0;
         if (nhalf != 0.0) {
             D += nhalf * 2.0 * mod->Dc;
             if (fmod(nhalf, 2.0) != 0.0) { sn = -sn; cn = -cn; }
@@ -234,7 +236,8 @@ static int jacobi_le1(const el__modulus *mod, double u, el_jacobi *val, el_jacob
     return EL_OK;
 }
 
-int el__jacobi_eval_mod(const el__modulus *mod, double u, el_jacobi *val, el_jacobi *d_du, el_jacobi *d_dk)
+static int jacobi_eval(const el__modulus *mod, double u, el_jacobi *val, el_jacobi *d_du, el_jacobi *d_dk,
+                       int want_am)
 {
     if (!val || !isfinite(u)) return EL_EINVAL;
     const double k = mod->k;
@@ -242,18 +245,18 @@ int el__jacobi_eval_mod(const el__modulus *mod, double u, el_jacobi *val, el_jac
     int st;
     if (k != 1.0 && (k > 1.0 ? k : 1.0) * fabs(u) > EL__PHASE_MAX) return EL_EDOM;
     if (k <= 1.0) {
-        if ((st = jacobi_le1(mod, u, &v, d_dk ? &dk : NULL))) return st;
+        if ((st = jacobi_le1(mod, u, &v, d_dk ? &dk : NULL, want_am))) return st;
     } else {
         /* reciprocal modulus: f(u, k) = g(ku, 1/k) */
         const double kr = mod->kg, w = k * u;
         el_jacobi g, gk;
-        if ((st = jacobi_le1(mod, w, &g, d_dk ? &gk : NULL))) return st;
+        if ((st = jacobi_le1(mod, w, &g, d_dk ? &gk : NULL, 0))) return st;   /* g.am unused */
         v.sn = g.sn * kr;
         v.cn = g.dn;
         v.dn = g.cn;
         v.D = g.D * kr * kr * kr;
         v.E = u - g.D * kr;
-        v.am = atan2(v.sn, v.cn);
+        v.am = want_am ? atan2(v.sn, v.cn) : 0.0;
         if (d_dk) {
             /* d/dk g(ku, 1/k) = u g_w - g_kr / k^2, with g_w from the u-identities */
             const double kr2 = kr * kr;
@@ -269,8 +272,9 @@ int el__jacobi_eval_mod(const el__modulus *mod, double u, el_jacobi *val, el_jac
     }
     /* k-derivatives overflow at k = 1 beyond |u| ~ 700 (d cn/dk ~ e^|u| / 4 there) and
      * for k > 1e154 (k^2 D); values never, but check them too */
-    const double all[6] = {v.sn, v.cn, v.dn, v.am, v.D, v.E};
-    if (el__all_finite(all, 6)) return EL_EDOM;
+    /* isfinite inline, not el__all_finite's call over an array (every evaluation) */
+    if (!(isfinite(v.sn) && isfinite(v.cn) && isfinite(v.dn) && isfinite(v.am) && isfinite(v.D) && isfinite(v.E)))
+        return EL_EDOM;
     if (d_dk) {
         const double der[6] = {dk.sn, dk.cn, dk.dn, dk.am, dk.D, dk.E};
         if (el__all_finite(der, 6)) return EL_EDOM;
@@ -284,8 +288,21 @@ int el__jacobi_eval_mod(const el__modulus *mod, double u, el_jacobi *val, el_jac
         d_du->E = v.dn * v.dn;
         d_du->D = v.sn * v.sn;
     }
+    /* am finite whenever sn, cn are (atan2 of finite values plus whole half periods,
+     * or atan(sinh u)): its placeholder changes no status above */
+    if (!want_am) v.am = NAN;
     *val = v;
     return EL_OK;
+}
+
+int el__jacobi_eval_mod(const el__modulus *mod, double u, el_jacobi *val, el_jacobi *d_du, el_jacobi *d_dk)
+{
+    return jacobi_eval(mod, u, val, d_du, d_dk, 1);
+}
+
+int el__jacobi_values(const el__modulus *mod, double u, el_jacobi *val)
+{
+    return jacobi_eval(mod, u, val, NULL, NULL, 0);
 }
 
 int el_jacobi_eval(double u, double k, el_jacobi *val, el_jacobi *d_du, el_jacobi *d_dk)

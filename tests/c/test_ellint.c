@@ -6,6 +6,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_sf_ellint.h>
 #include <stdio.h>
+#include <string.h>
 
 /* Relative error of both integrals at (x, y, z) against GSL; fails above tol. */
 static double check_point(double x, double y, double z, double qs, double tol)
@@ -138,6 +139,9 @@ START_TEST(complete_integrals_match_gsl)
         ck_assert_int_eq(gsl_sf_ellint_RD_e(0.0, kc2, 1.0, GSL_PREC_DOUBLE, &gd), GSL_SUCCESS);
         double K, D;
         ck_assert_int_eq(el__ellint_complete(k, kc2, &K, &D), EL_OK);
+        double Konly;   /* K alone (D = NULL): the same bits */
+        ck_assert_int_eq(el__ellint_complete(k, kc2, &Konly, NULL), EL_OK);
+        ck_assert(memcmp(&K, &Konly, sizeof K) == 0);
         const double eK = fabs(K - gf.val) / gf.val, eD = fabs(D - gd.val / 3.0) / (gd.val / 3.0);
         ck_assert_msg(eK <= 2e-15 && eD <= 4e-15, "k'^2 = %.17g: K err %.3g, D err %.3g", kc2, eK, eD);
         worst = fmax(worst, fmax(eK, eD));
@@ -148,6 +152,19 @@ START_TEST(complete_integrals_match_gsl)
     ck_assert_close(D, M_PI / 4.0, 1e-16);                /* int_0^(pi/2) sin^2 */
     ck_assert_int_eq(el__ellint_complete(1.0, 0.0, &K, &D), EL_EDOM);
     ck_assert_int_eq(el__ellint_complete(0.5, NAN, &K, &D), EL_EDOM);
+    ck_assert_int_eq(el__ellint_complete(1.0, 0.0, &K, NULL), EL_EDOM);
+    ck_assert_int_eq(el__ellint_complete(0.5, NAN, &K, NULL), EL_EDOM);
+    ck_assert_int_eq(el__ellint_complete(NAN, 0.5, &K, NULL), EL_EDOM);
+    /* K alone against K with D at random k'^2 over (0, 1) and the period's range near 0 */
+    unsigned long long st = 99;
+    for (int i = 0; i < 100000; i++) {
+        const double kc = i % 2 ? test_uniform(&st, 0.0, 1.0) : pow(10.0, test_uniform(&st, -300.0, 0.0));
+        const double kk = sqrt(1.0 - kc);
+        double K1, D1, K2;
+        const int r1 = el__ellint_complete(kk, kc, &K1, &D1), r2 = el__ellint_complete(kk, kc, &K2, NULL);
+        ck_assert_int_eq(r1, r2);
+        if (!r1) ck_assert(memcmp(&K1, &K2, sizeof K1) == 0);
+    }
     printf("ellint: complete K, D worst relative error against GSL %.2e\n", worst);
 }
 END_TEST
@@ -156,9 +173,16 @@ START_TEST(carlson_rejects_bad_arguments)
 {
     double rf, rd;
     const double bad[][3] = {{-1e-300, 1, 1}, {1, -1, 1}, {1, 1, 0}, {0, 0, 1}, {NAN, 1, 1},
-                             {1, INFINITY, 1}, {1, 1, -2}};
+                             {1, INFINITY, 1}, {1, 1, -2}, {0, -0.0, 1}, {-0.0, -0.0, 1}, {INFINITY, 0, 1},
+                             {1, 1, INFINITY}, {1, NAN, 1}, {1, 1, NAN}, {1e308, 1e308, 1}, {0, 0, 1e300}};
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++)
         ck_assert_int_eq(el__carlson_fd(bad[i][0], bad[i][1], bad[i][2], 1.0, &rf, &rd), EL_EDOM);
+    /* the edge of the domain that is accepted: one of x, y zero or subnormal, the sum
+     * just finite */
+    const double good[][3] = {{0, 4.9e-324, 1}, {4.9e-324, 0, 1}, {0, 1, 1e-10}, {-0.0, 1, 1},
+                              {1e307, 1e307, 1e307}};
+    for (size_t i = 0; i < sizeof good / sizeof good[0]; i++)
+        ck_assert_int_eq(el__carlson_fd(good[i][0], good[i][1], good[i][2], 1.0, &rf, &rd), EL_OK);
 }
 END_TEST
 

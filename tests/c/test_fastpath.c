@@ -199,6 +199,38 @@ START_TEST(walks_match_pointwise_across_k_equal_1_at_every_step)
 }
 END_TEST
 
+/* el__jacobi_values (el__smooth_ends' evaluations: no am, no derivatives) against
+ * el__jacobi_eval_mod: the same status and sn, cn, dn, D, E bits, for k from 0 to 1e6
+ * across 1 (k < 1, k = 1, k > 1 and 1 -+ 1e-15), u sparse (random over +-1e4 / max(1, k))
+ * and dense (a fine grid around the half periods), up to the phase limit. */
+START_TEST(jacobi_values_equal_the_full_evaluation)
+{
+    unsigned long long st = 0x7ac0b1ULL;
+    const double kfix[] = {0.0, 0.3, 0.999, 1.0 - 1e-15, 1.0, 1.0 + 1e-15, 1.001, 3.0, 1e6};
+    long nok = 0, nedom = 0;
+    for (int t = 0; t < 4000; t++) {
+        const double k = t < 9 * 50 ? kfix[t / 50] : pow(10.0, test_uniform(&st, -3.0, 3.0));
+        el__modulus mod;
+        if (el__modulus_init(k, 0, &mod)) continue;
+        const double reach = (t % 7 == 0 ? EL__PHASE_MAX * 1.01 : 1e4) / (k > 1.0 ? k : 1.0);
+        for (int i = 0; i < 60; i++) {
+            const double u = t % 2 ? test_uniform(&st, -reach, reach)
+                                   : (i - 30) * (2.0 * mod.K / (k > 1.0 ? k : 1.0)) / 8.0 + 1e-3 * (t % 5);
+            el_jacobi a, b;
+            const int r0 = el__jacobi_eval_mod(&mod, u, &a, NULL, NULL), r1 = el__jacobi_values(&mod, u, &b);
+            ck_assert_int_eq(r0, r1);
+            if (r0) { nedom++; continue; }
+            ck_assert(isnan(b.am));
+            ck_assert_msg(memcmp(&a.sn, &b.sn, sizeof a.sn) == 0 && memcmp(&a.cn, &b.cn, sizeof a.cn) == 0 &&
+                          memcmp(&a.dn, &b.dn, sizeof a.dn) == 0 && memcmp(&a.D, &b.D, sizeof a.D) == 0 &&
+                          memcmp(&a.E, &b.E, sizeof a.E) == 0, "k %.17g u %.17g", k, u);
+            nok++;
+        }
+    }
+    ck_assert(nok > 100000 && nedom > 1000);   /* both outcomes covered */
+}
+END_TEST
+
 START_TEST(walks_match_pointwise_at_extreme_scales)
 {
     /* valid but extreme: mu 1e-8 .. 1e8, lengths to 1e6, |x0| = 1e6, k from 1e-300 to 1e5 */
@@ -429,6 +461,7 @@ int main(void)
     tcase_add_test(sm, feet_order_matches_pointwise);
     tcase_add_test(sm, walks_match_pointwise_across_k_equal_1_at_every_step);
     tcase_add_test(sm, walks_match_pointwise_at_extreme_scales);
+    tcase_add_test(sm, jacobi_values_equal_the_full_evaluation);
     tcase_add_test(sm, smooth_positions_match_quadrature_of_angle);
     tcase_add_test(sm, start_sample_takes_the_base_point_values);
     tcase_add_test(d, discrete_walk_matches_pointwise_dense_and_sparse);

@@ -9,6 +9,8 @@
 #include "hermite_internal.h"
 #include "hermite_scan.h"
 #include <float.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_roots.h>
 #include <gsl/gsl_sf_ellint.h>
 #include <stdio.h>
 #include <string.h>
@@ -181,6 +183,69 @@ START_TEST(kappa_bound_bounds_the_period_tightly)
         ntight++;
     }
     ck_assert_int_gt(ntight, 2000);
+}
+END_TEST
+
+/* The kappa_m bound as it was computed before the solver moved to the stack and the
+ * bracket's end periods were served from their first evaluation: a heap-allocated GSL
+ * Brent solver over T(kappa_m) - Lmin, the period by the AGM with D (all of its sums). */
+typedef struct { double sigma, Lmin; } plain_tp;
+static double plain_period(double km, double sigma)
+{
+    const double Fn = km * km - sigma, k = sqrt(km * km / (2.0 * Fn));
+    double K, D;
+    if (el__ellint_complete(k, (Fn - sigma) / (2.0 * Fn), &K, &D)) return NAN;
+    return 4.0 * K / sqrt(0.5 * Fn);
+}
+static double plain_gap(double km, void *p)
+{
+    const plain_tp *t = p;
+    return plain_period(km, t->sigma) - t->Lmin;
+}
+static int plain_kappa_bound(double sigma, double Lmin, double *B)
+{
+    const double c = C0_PERIOD / Lmin;
+    if (sigma <= 0.0) {
+        const double b2 = c * c + sigma;
+        *B = b2 > 0.0 ? sqrt(b2) * (1.0 + 1e-9) : -1.0;
+        return EL_OK;
+    }
+    const double lo = sqrt(2.0 * sigma) * (1.0 + 1e-12);
+    double hi = sqrt(2.0 * sigma) + c, Thi = plain_period(hi, sigma);
+    for (int i = 0; i < 200 && !(Thi < Lmin); i++) Thi = plain_period(hi *= 2.0, sigma);
+    if (!(Thi < Lmin)) return EL_EINTERNAL;
+    if (!(plain_period(lo, sigma) > Lmin)) { *B = lo; return EL_OK; }
+    plain_tp tp = {sigma, Lmin};
+    gsl_function fn = {plain_gap, &tp};
+    gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+    ck_assert_ptr_nonnull(s);
+    ck_assert_int_eq(gsl_root_fsolver_set(s, &fn, lo, hi), GSL_SUCCESS);
+    for (int it = 0; it < 200; it++) {
+        if (gsl_root_fsolver_iterate(s) != GSL_SUCCESS) break;
+        if (gsl_root_test_interval(gsl_root_fsolver_x_lower(s), gsl_root_fsolver_x_upper(s), 0.0, 1e-3) == GSL_SUCCESS)
+            break;
+    }
+    *B = gsl_root_fsolver_x_upper(s) * (1.0 + 1e-9);
+    gsl_root_fsolver_free(s);
+    return EL_OK;
+}
+
+/* el__hermite_kappa_bound against the plain computation above: the same status and bits
+ * for sigma from -120 to 1e5 (sparse and dense in the exponent) and Lmin from 1 (the
+ * tension mode) to 10 (the length mode's seeds). */
+START_TEST(kappa_bound_equals_the_plain_brent)
+{
+    unsigned long long st = 1979;
+    const double Lmins[4] = {1.0, 1.001, 2.0, 10.0};
+    for (int t = 0; t < 20000; t++) {
+        const double sigma = t % 10 == 9 ? -test_uniform(&st, 0.0, 120.0)
+                           : t % 2 ? pow(10.0, test_uniform(&st, -8.0, 5.0)) : pow(10.0, -8.0 + 13.0 * t / 20000.0);
+        const double Lmin = Lmins[t % 4];
+        double B0 = 0.0, B1 = 0.0;
+        const int r0 = plain_kappa_bound(sigma, Lmin, &B0), r1 = el__hermite_kappa_bound(sigma, Lmin, &B1);
+        ck_assert_int_eq(r0, r1);
+        ck_assert_msg(memcmp(&B0, &B1, sizeof B0) == 0, "sigma %.17g Lmin %g: B %.17g / %.17g", sigma, Lmin, B0, B1);
+    }
 }
 END_TEST
 
@@ -570,6 +635,7 @@ int main(void)
     tcase_add_test(tc, x_objective_and_class_equal_the_plain_evaluation);
     tcase_add_test(tc, smooth_ends_equal_el_smooth_eval);
     tcase_add_test(tc, kappa_bound_bounds_the_period_tightly);
+    tcase_add_test(tc, kappa_bound_equals_the_plain_brent);
     tcase_add_test(tc, separatrix_crossings_exact_at_high_tension);
     tcase_add_test(tc, separatrix_chart_independent_of_the_guess);
     tcase_add_test(tc, separatrix_cache_gives_the_plain_states);
