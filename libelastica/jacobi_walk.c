@@ -85,10 +85,11 @@ static void negate(const el_jacobi *v, el_jacobi *r)
     r->am = -v->am; r->E = -v->E;
 }
 
-/* A fresh evaluation at u (jacobi.c). */
+/* A fresh evaluation at u (jacobi.c); without k-derivatives by el__jacobi_values (the
+ * walk's values carry no am: the same bits, without its atan2). */
 static int fresh(const el__walk *wk, double u, el_jacobi *val, el_jacobi *dk)
 {
-    return el__jacobi_eval_mod(&wk->mod, u, val, NULL, wk->with_dk ? dk : NULL);
+    return wk->with_dk ? el__jacobi_eval_mod(&wk->mod, u, val, NULL, dk) : el__jacobi_values(&wk->mod, u, val);
 }
 
 /*

@@ -109,7 +109,8 @@ static int walk_start(const el_smooth_params *p, size_t n, const double *s, cons
     if (!st) st = el__walk_init(wk, fabs(p->k), with_dk, n);
     if (!st && sc->uniform)
         st = el__walk_grid(wk, w * s[0] + p->q, w * ((s[n - 1] - s[0]) / (double)(n - 1)));
-    if (!st) st = el__jacobi_eval_mod(&wk->mod, p->q, base, NULL, base_dk);
+    /* am is not read (el__jacobi_values: the same other values, no atan2) */
+    if (!st) st = base_dk ? el__jacobi_eval_mod(&wk->mod, p->q, base, NULL, base_dk) : el__jacobi_values(&wk->mod, p->q, base);
     return st ? EL_EDOM : EL_OK; /* inputs are checked: only overflow fails here */
 }
 
@@ -306,7 +307,7 @@ int el_smooth_energy(const el_smooth_params *p, double *energy)
     el__modulus mod;
     el_jacobi a, b;
     if (smooth_domain(p, &sc) || el__modulus_init(ka, 0, &mod) ||
-        el__jacobi_eval_mod(&mod, p->q, &a, NULL, NULL) || el__jacobi_eval_mod(&mod, u1, &b, NULL, NULL)) {
+        el__jacobi_values(&mod, p->q, &a) || el__jacobi_values(&mod, u1, &b)) {   /* E, D: no am */
         *energy = NAN;
         return EL_EDOM;
     }
