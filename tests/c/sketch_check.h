@@ -1,5 +1,6 @@
 /* Shared by the tests of fits to sparse noisy sketches (test_fit_held.c,
- * test_fit_discrete_rows.c): the rms of the points to the curve they were drawn from. */
+ * test_fit_discrete_rows.c): the rms of the points to the curve they were drawn from, and
+ * that curve's end states as a fit's constraints. */
 #ifndef EL_SKETCH_CHECK_H
 #define EL_SKETCH_CHECK_H
 
@@ -24,6 +25,22 @@ static double true_rms(const double *xy, size_t n, const el_smooth_params *p)
         s2 += best;
     }
     return sqrt(s2 / (double)n);
+}
+
+/* Options with the constraints mask taken from the curve p: its end points, tangents and
+ * curvatures (into P, th, ka as well). */
+static el_fit_options constraints_of(const el_smooth_params *p, int mask, double P[4], double th[2], double ka[2])
+{
+    const double s[2] = {0.0, p->length};
+    ck_assert_int_eq(el_smooth_eval(p, 2, s, P, th, ka), EL_OK);
+    el_fit_options o;
+    el_fit_options_defaults(&o);
+    o.constraints = mask;
+    o.start_point[0] = P[0]; o.start_point[1] = P[1];
+    o.end_point[0] = P[2]; o.end_point[1] = P[3];
+    o.start_tangent = th[0]; o.end_tangent = th[1];
+    o.start_curvature = ka[0]; o.end_curvature = ka[1];
+    return o;
 }
 
 #endif

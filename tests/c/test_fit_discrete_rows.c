@@ -10,6 +10,7 @@
  * bench/bench_fit_sparse.py); each test failed before fit.c's selection of the fits that
  * meet the rows, the tangent row 2 sin(delta / 2) and the smooth fit's start
  * (el__fit_smooth_start). */
+#include "sketch_arc59.h"
 #include "sketch_check.h"
 
 /* 40 points of a gentle arc (k = 0.46, turning by 1.06 rad), noise 1 % of the extent (set 23) */
@@ -46,55 +47,14 @@ static const double TT7[] = {
 };
 static const el_smooth_params TT7_TRUE = {0, 0, -0.6014626651767014, 4.990296157108886, -0.7576176791625856, 1.3298170295599037, 1};
 
-/* 59 points (k = -0.39, turning by 1.2 rad), noise 1 % (set 134) */
-static const double S59[] = {
-    0.005204302228707904, -0.003758967985409901, 0.004433420987800948, 0.014272807838298974,
-    -0.008055853295533287, 0.0068550221754778325, 0.024839473136120928, 0.033823611532022194,
-    0.03854753932267013, 0.08777531636081194, 0.04412723827367991, 0.08108538670196593,
-    0.04413876862768062, 0.13964266263467362, 0.05596926386785129, 0.15337094593867037,
-    0.08590223830770399, 0.1646291867478234, 0.08761623572596473, 0.1900714600962608,
-    0.08352550154410453, 0.22026839437413542, 0.10010820692728223, 0.23771341942624688,
-    0.10761449110278083, 0.2378819634951688, 0.1270090319455693, 0.2754447546508976,
-    0.11471045111932057, 0.28605288742024126, 0.12091855458484298, 0.29421474419242744,
-    0.13082162933063138, 0.2968359279528621, 0.12243969960614641, 0.323306791880032,
-    0.1344455463889614, 0.3233469057789056, 0.14077409190421297, 0.3202544074084935,
-    0.14071853564968415, 0.3630528097780116, 0.15611694905320106, 0.3878120835311549,
-    0.15149017110236435, 0.41145126589243763, 0.16095363468884066, 0.43180552724141336,
-    0.16417635617699605, 0.4193108113317507, 0.16275021278003643, 0.44487623863791526,
-    0.16322994928400852, 0.4595613604323196, 0.15784099842599272, 0.47629658878237946,
-    0.16041851457462722, 0.4774462507964932, 0.16604541644338527, 0.5222641615315521,
-    0.18061863515377713, 0.5343609287625786, 0.17265268096230416, 0.5304038118723305,
-    0.18616348236231464, 0.5167308859518086, 0.16051602633267564, 0.5850410257235004,
-    0.18179519487605655, 0.6360192835318912, 0.16421637622503085, 0.6655571675354197,
-    0.17661843613619221, 0.6546786989556986, 0.15599438718208944, 0.6570031630469932,
-    0.16655650108020043, 0.6625225106350758, 0.15468659558987363, 0.666862412028417,
-    0.16869439327460065, 0.6729994594271791, 0.15862778999414137, 0.6811959417829709,
-    0.15946468137301395, 0.7077039051379657, 0.12719086486482348, 0.7318247937420694,
-    0.14742746696526143, 0.738044569522004, 0.13082849256800122, 0.751981063595383,
-    0.13634431809389158, 0.8009098326190454, 0.11791579939302967, 0.7676468679225339,
-    0.10510776329747411, 0.8182908857409176, 0.06593804536574965, 0.8453559368020062,
-    0.08789701863883968, 0.8626453599122172, 0.09602007011464764, 0.8609166294444396,
-    0.08534345647721214, 0.8922240658841021, 0.07456127467944239, 0.8898314203231756,
-    0.07576637411859573, 0.8781451552307772, 0.0745758791823792, 0.8905730542659083,
-    0.06561266828087207, 0.897635596358297, 0.06239828170824061, 0.9038236532788857,
-    0.016955128393009437, 0.9278290951490636,
-};
-static const el_smooth_params S59_TRUE = {0, 0, 1.961917961371599, 6.641591934622904, -0.3873257831504926, 1.1982496053675926, 1};
 
 /* The default discrete fit of xy with the constraints mask taken from the smooth curve p:
  * EL_OK, each constraint met by the polygon (vertices 0 and n-1, the first and last
  * segments' directions: to 1e-9), rms within 20 % of p's own, length within 10 % of p's. */
 static void check_meets_and_follows(const double *xy, size_t n, const el_smooth_params *p, int mask)
 {
-    const double s[2] = {0.0, p->length};
-    double P[4], th[2];
-    ck_assert_int_eq(el_smooth_eval(p, 2, s, P, th, NULL), EL_OK);
-    el_fit_options o;
-    el_fit_options_defaults(&o);
-    o.constraints = mask;
-    o.start_point[0] = P[0]; o.start_point[1] = P[1];
-    o.end_point[0] = P[2]; o.end_point[1] = P[3];
-    o.start_tangent = th[0]; o.end_tangent = th[1];
+    double P[4], th[2], ka[2];
+    const el_fit_options o = constraints_of(p, mask, P, th, ka);
     el_fit_discrete_result r;
     const int st = el_fit_discrete(xy, n, &o, NULL, &r, NULL, NULL);
     ck_assert_msg(st == EL_OK, "n %zu, constraints %#x: status %d (constraint %#x)", n, (unsigned)mask, st,
@@ -128,12 +88,12 @@ START_TEST(test_fit_discrete_pinned_ends)
 END_TEST
 
 /* G1 at both ends. TT7: EL_EDOM before, the first guess's fit, off the end tangent at
- * max_iter, kept for its lower f over three that met it. S59: EL_EDOM before, every
+ * max_iter, kept for its lower f over three that met it. ARC59: EL_EDOM before, every
  * guess's fit with a reversed end tangent, where sin(theta - alpha) vanishes too. */
 START_TEST(test_fit_discrete_g1_ends)
 {
     check_meets_and_follows(TT7, sizeof TT7 / sizeof TT7[0] / 2, &TT7_TRUE, G1_START | G1_END);
-    check_meets_and_follows(S59, sizeof S59 / sizeof S59[0] / 2, &S59_TRUE, G1_START | G1_END);
+    check_meets_and_follows(ARC59, sizeof ARC59 / sizeof ARC59[0] / 2, &ARC59_TRUE, G1_START | G1_END);
 }
 END_TEST
 
@@ -142,7 +102,7 @@ END_TEST
  * fit is far from the points or strays, and the smooth fit's start reaches 0.0093. */
 START_TEST(test_fit_discrete_g1_start)
 {
-    check_meets_and_follows(S59, sizeof S59 / sizeof S59[0] / 2, &S59_TRUE, G1_START);
+    check_meets_and_follows(ARC59, sizeof ARC59 / sizeof ARC59[0] / 2, &ARC59_TRUE, G1_START);
 }
 END_TEST
 

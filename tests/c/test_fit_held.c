@@ -108,16 +108,8 @@ static const el_smooth_params TT41_TRUE = {0, 0, -0.547389461937132, 17.54770091
  * EL_OK, rms within 1 % of p's own, length within 10 % of p's (no loop). */
 static void check_reaches_truth(const double *xy, size_t n, const el_smooth_params *p, int mask)
 {
-    const double s[2] = {0.0, p->length};
     double P[4], th[2], ka[2];
-    ck_assert_int_eq(el_smooth_eval(p, 2, s, P, th, ka), EL_OK);
-    el_fit_options o;
-    el_fit_options_defaults(&o);
-    o.constraints = mask;
-    o.start_point[0] = P[0]; o.start_point[1] = P[1];
-    o.end_point[0] = P[2]; o.end_point[1] = P[3];
-    o.start_tangent = th[0]; o.end_tangent = th[1];
-    o.start_curvature = ka[0]; o.end_curvature = ka[1];
+    const el_fit_options o = constraints_of(p, mask, P, th, ka);
     el_fit_smooth_result r;
     ck_assert_int_eq(el_fit_smooth(xy, n, &o, NULL, &r, NULL, NULL), EL_OK);
     const double truth = true_rms(xy, n, p);
