@@ -125,35 +125,24 @@ int el__carlson_fd(double x, double y, double z, double qs, double *rf, double *
 int el__ellint_complete(double k, double kc2, double *K, double *D)
 {
     if (!(kc2 > 0.0) || !(k >= 0.0) || !isfinite(k + kc2)) return EL_EDOM;
-    if (!D) {
-        /* K alone (D = NULL): the same a_n, the same stop, so the same K; without the
-         * c_n sums (two divisions a step) */
-        double a = 1.0, b = sqrt(kc2);
-        for (int n = 0; n < 40; n++) {
-            const double an = 0.5 * (a + b);
-            const int last = fabs(a - b) <= 1e-9 * a;
-            b = sqrt(a * b);
-            a = an;
-            if (last) break;
-        }
-        *K = M_PI / (2.0 * a);
-        return EL_OK;
-    }
     double a = 1.0, b = sqrt(kc2), c = k, ct = 1.0, w = 0.5, sum = 0.5; /* ct = c_n / k */
     /* stop at |a - b| <= 1e-9 a: one more step is then exact to rounding (quadratic
-     * convergence); it is taken without the sqrt, b being irrelevant after it */
+     * convergence). K alone (D = NULL): the same a_n and stop, without the c_n sums (two
+     * divisions a step) */
     for (int n = 0; n < 40; n++) {
         const double an = 0.5 * (a + b);
-        ct = c * ct / (4.0 * an);
-        c = c * c / (4.0 * an);
-        w *= 2.0;
-        sum += w * ct * ct;
+        if (D) {
+            ct = c * ct / (4.0 * an);
+            c = c * c / (4.0 * an);
+            w *= 2.0;
+            sum += w * ct * ct;
+        }
         const int last = fabs(a - b) <= 1e-9 * a;
         b = sqrt(a * b);
         a = an;
         if (last) break;
     }
     *K = M_PI / (2.0 * a);
-    *D = *K * sum;
+    if (D) *D = *K * sum;
     return EL_OK;
 }

@@ -105,12 +105,12 @@ static int bounded_start(fit_objective *ob, const double *xl, const double *xu, 
 }
 
 /* The largest |row| of the constraint rows con at x; HUGE_VAL where they cannot be
- * evaluated. They are met where it is at most 1e-10. */
+ * evaluated or one is not a number. They are met where it is at most 1e-10. */
 static double rows_violation(fit_objective *ob, const fit_constraints *con, const double *x, double *tmp)
 {
     double c[FIT_NCON], cc = 0.0;
     const int rows = el__fit_constraint_rows(ob, con, x, c, NULL, NULL, tmp);
-    for (int k = 0; k < rows; k++) cc = fmax(cc, fabs(c[k]));
+    for (int k = 0; k < rows; k++) cc = fabs(c[k]) <= cc ? cc : isnan(c[k]) ? HUGE_VAL : fabs(c[k]);
     return rows < 0 ? HUGE_VAL : cc;
 }
 

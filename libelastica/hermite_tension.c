@@ -58,12 +58,7 @@ int el__hermite_kappa_bound(double sigma, double Lmin, double *B)
     if (!(Tlo > Lmin)) { *B = lo; return EL_OK; }
     tparam tp = {sigma, Lmin, lo, Tlo, hi, Thi};
     gsl_function fn = {period_gap, &tp};
-    /* GSL's Brent solver on the stack: its state (the type's public size) in a local
-     * buffer instead of gsl_root_fsolver_alloc's two mallocs per problem; where the type
-     * needs more, allocated as before */
-    double state[32];
-    gsl_root_fsolver local = {gsl_root_fsolver_brent, NULL, 0.0, 0.0, 0.0, state};
-    gsl_root_fsolver *s = gsl_root_fsolver_brent->size <= sizeof state ? &local : gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+    gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
     if (!s) return EL_ENOMEM;
     int rc = EL_OK;
     if (gsl_root_fsolver_set(s, &fn, lo, hi) != GSL_SUCCESS) rc = EL_EINTERNAL;
@@ -74,7 +69,7 @@ int el__hermite_kappa_bound(double sigma, double Lmin, double *B)
     }
     /* the bracket's upper end has T < Lmin: a bound whatever the bracket's width */
     if (!rc) *B = gsl_root_fsolver_x_upper(s) * (1.0 + 1e-9);
-    if (s != &local) gsl_root_fsolver_free(s);
+    gsl_root_fsolver_free(s);
     return rc;
 }
 
