@@ -320,7 +320,9 @@ enum el_fit_distance { EL_DISTANCE_AUTO = 0, EL_DISTANCE_ORTHOGONAL = 1, EL_DIST
  * rad for angles), or the fit fails with EL_EDOM naming the constraint.
  * Held exactly, without Ipopt, at the one end that has more of them (the end's by
  * fitting the points in reverse order): the point; smooth, the tangent and the
- * curvature; discrete, a zero curvature. The others are Ipopt's constraint rows.
+ * curvature; discrete, a zero curvature. Both end points, with no other constraint,
+ * are held exactly together (the fitted shape turned and scaled about the start point
+ * onto the end point: no Ipopt). The others are Ipopt's constraint rows.
  */
 enum el_fit_constraint {
     EL_CONSTRAIN_START_POINT = 1,

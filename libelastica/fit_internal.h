@@ -77,14 +77,20 @@ typedef struct fit_end {
 int el__fit_end_state(int model, const double *v, size_t n, int at_end, fit_end *e,
                       double *tmp /* discrete end: fit_walk block buffers, FIT_WORK doubles */);
 
+/* The charts of a map (fit_model.c): none; the start state (theta0, kappa0, F) in the
+ * slots of (phi, w or z, k, q); both end points held, x = (a, Gx, Gy) in the slots of
+ * (w or z, k, q), the start state of the curve's shape at unit length (x0, y0 in fixed[]). */
+enum { FIT_CHART_NONE = 0, FIT_CHART_START = 1, FIT_CHART_ENDS = 2 };
+
 /* The map from the optimiser's variables x to the curves' internal parameters. */
 typedef struct fit_map {
     int model, ncurves, nx;
     /* one curve: x_j = v[idx[j]] * scale[idx[j]] for the free parameters, the others at
      * fixed[]; with chart, the slots of (phi, w or z, k, q) hold the start-state chart
      * (theta0, kappa0, Fx, Fy) instead (fit_model.c) */
-    int idx[FIT_NP], chart;
+    int idx[FIT_NP], chart;      /* FIT_CHART_* */
     double scale[FIT_NP], fixed[FIT_NP];
+    double chord[2];             /* FIT_CHART_ENDS: the held end point minus the start point */
     /* keyline (ncurves = 2): x = (xJ, yJ, psi, a1, b1, c1, a2, b2, c2), fit_keyline.c;
      * discrete: scale[c] = (vertices of side c) - 1 */
     double fixed_h;              /* discrete keyline: h of both sides held (> 0), else 0 */
@@ -337,8 +343,10 @@ int el__fit_start(int model, const double *xy, size_t n, const el_fit_options *o
                   int *iters, double *foot);
 /* One fit of the points (fit.c): el_fit_discrete / el_fit_smooth into *res (status -1
  * until a result exists), opt NULL = defaults, init the caller's initial parameters
- * (opt->use_initial); lm_only: no Ipopt fallback and no further start (el__fit_start). */
-int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt, int lm_only,
+ * (opt->use_initial); flags: FIT_RUN_LM_ONLY, no Ipopt fallback and no further start
+ * (el__fit_start); FIT_RUN_ROWS, both end points as Ipopt's rows, not the ends chart. */
+enum { FIT_RUN_LM_ONLY = 1, FIT_RUN_ROWS = 2 };
+int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt, int flags,
                 const double *init, fit_out *res, double *dist, double *foot);
 /* fit_restart.c: el__fit_run on the points in reverse order when the end holds more
  * constraints than the start, else as they are (the public entry points). */

@@ -350,9 +350,110 @@ static int chart_to_v(const fit_map *m, const double *c, double *v, double D[4][
     return EL_OK;
 }
 
+/*
+ * The ends chart (both end points held, fit.c): x = (a, Gx, Gy) is the start state of
+ * the curve's shape at unit length, the curve of the start-state chart with theta0 = 0,
+ * kappa0 = a, F = (Gx, Gy) and length 1 (smooth L = 1; discrete h = 1, whose chart is per
+ * unit of the index range already). With e its end point relative to its start, that curve
+ * is turned by alpha = arg D - arg e and scaled by lambda = |D| / |e| about the held start
+ * point (D = chord: end - start): smooth phi += alpha, w /= lambda, L = lambda; discrete
+ * phi += alpha, h = lambda. Its end lands on the held end to rounding, with no constraint
+ * row (Ipopt crept along the two end-point rows for up to 5000 iterations: fit.c). The
+ * similarity leaves (a, G) three free shape variables, the analytic start-state chart's
+ * (theta0, kappa0, F, L) less the four a turn and a scale about the start take; singular
+ * only where e = 0 (a closed curve). The inverse: a = kappa0 L, G = F L^2 turned by
+ * -theta0 (discrete: L = 1), the same shape whatever its ends.
+ */
+enum { ENDS_BLOCK = 64 };   /* vertices per block of the discrete end's walk */
+
+/* e: the end point of u relative to its start (smooth at s = L, discrete vertex n - 1 of
+ * n = scale[2] + 1); de (may be NULL): d e / d u (k >= 0: the chart's). */
+static int end_offset(const fit_map *m, const double *u, double e[2], double de[2][FIT_NP])
+{
+    if (m->model == FIT_SMOOTH) {
+        double xy[2], jac[2 * FIT_NP];
+        const int st = el__fit_smooth_rows(u, 1, &u[6], xy, de ? jac : NULL);
+        if (st) return st;
+        if (de) memcpy(de, jac, sizeof jac);
+        e[0] = xy[0] - u[0];
+        e[1] = xy[1] - u[1];
+        return EL_OK;
+    }
+    /* the walk over vertices 0 .. n-2 carries vertex n-1 and its derivative */
+    double xy[2 * ENDS_BLOCK], jac[2 * ENDS_BLOCK * FIT_NP], t2[2 * (ENDS_BLOCK + 1) * (FIT_NP + 1)];
+    fit_walk w;
+    el__fit_walk_start(u, &w);
+    for (size_t left = (size_t)m->scale[2]; left > 0;) {
+        const size_t b = left < ENDS_BLOCK ? left : ENDS_BLOCK;
+        const int st = el__fit_discrete_rows(u, &w, b, xy, jac, 0, t2);
+        if (st) return st;
+        left -= b;
+    }
+    e[0] = w.xy[0] - u[0];
+    e[1] = w.xy[1] - u[1];
+    if (de) memcpy(de, w.d, sizeof w.d);
+    return EL_OK;
+}
+
+static int ends_to_v(const fit_map *m, const double *x, double *v, double *M)
+{
+    const chart_slots sl = chart_of(m->model);
+    const int jl = fit_length_slot(m->model);
+    const double c[4] = {0.0, x[0], x[1], x[2]};
+    double u[FIT_NP] = {0.0}, D[4][4], e[2], de[2][FIT_NP];
+    u[jl] = 1.0;
+    int st = chart_to_v(m, c, u, M ? D : NULL);
+    if (st || (st = end_offset(m, u, e, M ? de : NULL))) return st;
+    const double e2 = e[0] * e[0] + e[1] * e[1], lam = fit_norm(m->chord[0], m->chord[1]) / sqrt(e2);
+    if (!(e2 > 0.0) || !isfinite(lam)) return EL_EDOM;
+    memcpy(v, u, sizeof u);
+    v[0] = m->fixed[0];
+    v[1] = m->fixed[1];
+    v[sl.phi] = u[sl.phi] + atan2(m->chord[1], m->chord[0]) - atan2(e[1], e[0]);
+    v[jl] = lam;
+    if (m->model == FIT_SMOOTH) v[sl.w] = u[sl.w] / lam;
+    if (!M) return EL_OK;
+    const int slot[4] = {sl.phi, sl.w, sl.k, sl.q};
+    memset(M, 0, sizeof(double) * FIT_NP * m->nx);
+    for (int j = 0; j < m->nx; j++) {
+        /* d u / d x_j (the chart's column j + 1: theta0 held at 0), carried to e */
+        double du[FIT_NP] = {0.0}, dei[2] = {0.0, 0.0};
+        for (int r = 0; r < 4; r++) du[slot[r]] = D[r][j + 1];
+        for (int r = 0; r < FIT_NP; r++) {
+            dei[0] += de[0][r] * du[r];
+            dei[1] += de[1][r] * du[r];
+        }
+        const double dalpha = -(e[0] * dei[1] - e[1] * dei[0]) / e2;
+        const double dlam = -lam * (e[0] * dei[0] + e[1] * dei[1]) / e2;
+        for (int r = 0; r < 4; r++) M[slot[r] * m->nx + j] = du[slot[r]];
+        M[sl.phi * m->nx + j] += dalpha;
+        M[jl * m->nx + j] = dlam;
+        if (m->model == FIT_SMOOTH) M[sl.w * m->nx + j] = (du[sl.w] - v[sl.w] * dlam) / lam;
+    }
+    return EL_OK;
+}
+
+/* x of the ends chart for the parameters v: the shape of v's curve, whatever its ends. */
+static void ends_from_v(const fit_map *m, const double *v, double *x)
+{
+    double c[4];
+    if (chart_from_v(m, v, c)) {           /* unevaluable: left for the caller's check */
+        x[0] = x[1] = x[2] = NAN;
+        return;
+    }
+    const double L = m->model == FIT_SMOOTH ? v[6] : 1.0, cs = cos(c[0]), sn = sin(c[0]);
+    x[0] = c[1] * L;
+    x[1] = (cs * c[2] + sn * c[3]) * L * L;
+    x[2] = (cs * c[3] - sn * c[2]) * L * L;
+}
+
 int el__fit_map_eval(const fit_map *m, const double *x, double v[2][FIT_NP], double *M)
 {
     if (m->ncurves == 2) return el__fit_keyline_map(m, x, v, M);
+    if (m->chart == FIT_CHART_ENDS) {
+        const int st = ends_to_v(m, x, v[0], M);
+        return st ? st : el__all_finite(v[0], FIT_NP) ? EL_EDOM : EL_OK;
+    }
     double u[FIT_NP];
     memcpy(u, m->fixed, sizeof u);
     for (int j = 0; j < m->nx; j++) u[m->idx[j]] = x[j] / m->scale[m->idx[j]];
@@ -379,6 +480,10 @@ int el__fit_map_eval(const fit_map *m, const double *x, double v[2][FIT_NP], dou
 
 void el__fit_map_inverse(const fit_map *m, const double *v, double *x)
 {
+    if (m->chart == FIT_CHART_ENDS) {
+        ends_from_v(m, v, x);
+        return;
+    }
     for (int j = 0; j < m->nx; j++) x[j] = v[m->idx[j]] * m->scale[m->idx[j]];
     if (!m->chart) return;
     const chart_slots sl = chart_of(m->model);

@@ -35,7 +35,7 @@ int el__fit_unconstrained_start(int model, const double *xy, size_t n, const el_
     fit_out fo;
     memset(&fo, 0, sizeof fo);
     fo.status = -1;
-    const int st = el__fit_run(model, xy, n, &f, 1, NULL, &fo, NULL, NULL);    /* a start: no Ipopt */
+    const int st = el__fit_run(model, xy, n, &f, FIT_RUN_LM_ONLY, NULL, &fo, NULL, NULL);    /* a start: no Ipopt */
     if (st == EL_ENOMEM) return st;
     if (!gave_curve(&fo) || !(fo.f < 0.99 * best_f))
         return EL_EDOM;

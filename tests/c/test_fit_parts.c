@@ -214,6 +214,80 @@ START_TEST(test_start_chart_same_curve_and_derivative)
 }
 END_TEST
 
+/* The ends chart (a, G) of fit_model.c: the curve of a v that meets the held ends comes
+ * back from x = inverse(v) (points, tangents and curvatures at both ends), x -> v lands
+ * on the held end for any x, and d v / d x matches central differences in x in all seven
+ * parameters; both models, k across 1, both signs of the start curvature, the
+ * continuations k < 0, chords from 1e-4 to 1e4. */
+START_TEST(test_ends_chart_same_curve_and_derivative)
+{
+    double tmp[FIT_WORK], worst = 0.0;
+    const double ks[] = {0.05, 0.3, 0.9, 0.999, 1.0, 1.001, 1.5, 4.0, 30.0, -0.4, -2.0};
+    const double scales[] = {1e-4, 1.0, 1e4};
+    const size_t n = 50;
+    for (int model = 0; model < 2; model++)
+        for (size_t a = 0; a < sizeof ks / sizeof ks[0]; a++)
+            for (int sgn = -1; sgn <= 1; sgn += 2)
+                for (int qi = 0; qi < 3; qi++)
+                    for (int si = 0; si < 3; si++) {
+                        if (model == FIT_DISCRETE && ks[a] <= -1.0) continue;
+                        const double q = -0.8 + 0.7 * qi, S = scales[si];
+                        const double vs[7] = {0.3 * S, -0.2 * S, 0.7, sgn * 1.3 / S, ks[a], q, 2.0 * S};
+                        const double vd[7] = {0.3 * S, -0.2 * S, 0.05 * S, 0.7, sgn * 0.03, q, ks[a]};
+                        const double *v = model == FIT_SMOOTH ? vs : vd;
+                        fit_end s0, s1;
+                        ck_assert_int_eq(el__fit_end_state(model, v, n, 0, &s0, tmp), EL_OK);
+                        ck_assert_int_eq(el__fit_end_state(model, v, n, 1, &s1, tmp), EL_OK);
+                        fit_map m;
+                        memset(&m, 0, sizeof m);
+                        m.model = model; m.ncurves = 1; m.chart = FIT_CHART_ENDS;
+                        for (int j = 0; j < FIT_NP; j++)
+                            m.scale[j] = (model == FIT_DISCRETE && (j == 2 || j == 4)) ? (double)(n - 1) : 1.0;
+                        const int slots[3] = {model == FIT_DISCRETE ? 4 : 3, fit_k_slot(model), 5};
+                        for (int j = 0; j < 3; j++) m.idx[m.nx++] = slots[j];
+                        m.fixed[0] = v[0]; m.fixed[1] = v[1];
+                        m.chord[0] = s1.xy[0] - s0.xy[0]; m.chord[1] = s1.xy[1] - s0.xy[1];
+                        double x[FIT_MAXX], w[2][FIT_NP], M[2 * FIT_NP * FIT_MAXX];
+                        el__fit_map_inverse(&m, v, x);
+                        ck_assert_int_eq(el__fit_map_eval(&m, x, w, M), EL_OK);
+                        for (int at_end = 0; at_end < 2; at_end++) {
+                            fit_end e1;
+                            const fit_end *e0 = at_end ? &s1 : &s0;
+                            ck_assert_int_eq(el__fit_end_state(model, w[0], n, at_end, &e1, tmp), EL_OK);
+                            const double d = fmax(fmax(fabs(e0->xy[0] - e1.xy[0]), fabs(e0->xy[1] - e1.xy[1])) / S,
+                                                  fmax(fabs(remainder(e0->theta - e1.theta, 2 * M_PI)),
+                                                       fabs(e0->kappa - e1.kappa) * S));
+                            ck_assert_msg(d <= 1e-10, "model %d k %g sign %d q %g scale %g end %d: %g", model,
+                                          ks[a], sgn, q, S, at_end, d);
+                        }
+                        for (int j = 0; j < m.nx; j++) {
+                            const double h = 1e-6 * (1.0 + fabs(x[j]));
+                            double xp[FIT_MAXX], xm[FIT_MAXX], vp[2][FIT_NP], vm[2][FIT_NP];
+                            memcpy(xp, x, sizeof xp); memcpy(xm, x, sizeof xm);
+                            xp[j] += h; xm[j] -= h;
+                            ck_assert_int_eq(el__fit_map_eval(&m, xp, vp, NULL), EL_OK);
+                            ck_assert_int_eq(el__fit_map_eval(&m, xm, vm, NULL), EL_OK);
+                            /* a shape moved by x: its end still on the held end */
+                            fit_end ep;
+                            ck_assert_int_eq(el__fit_end_state(model, vp[0], n, 1, &ep, tmp), EL_OK);
+                            ck_assert_msg(fmax(fabs(ep.xy[0] - s1.xy[0]), fabs(ep.xy[1] - s1.xy[1])) <= 1e-12 * S,
+                                          "model %d k %g: end moved", model, ks[a]);
+                            for (int r = 0; r < FIT_NP; r++) {
+                                const double diff = r == (model == FIT_DISCRETE ? 3 : 2)
+                                                  ? remainder(vp[0][r] - vm[0][r], 2 * M_PI) : vp[0][r] - vm[0][r];
+                                const double fd = diff / (2 * h), an = M[r * m.nx + j];
+                                const double ref = fabs(w[0][r]) / (1.0 + fabs(x[j])) + 1.0;
+                                const double err = fabs(fd - an) / (ref + fabs(fd));
+                                worst = fmax(worst, err);
+                                ck_assert_msg(err <= 1e-6, "model %d k %g sign %d q %g scale %g x%d v%d: %g vs %g",
+                                              model, ks[a], sgn, q, S, j, r, an, fd);
+                            }
+                        }
+                    }
+    ck_assert(worst > 0.0);
+}
+END_TEST
+
 /* The discrete orthogonal objective's gradient J^T r / n (the distances to the polygon,
  * feet held: variable projection) against central differences of f, on unevenly spaced
  * noisy points over three blocks of the walk (the next block's first vertex enters the
@@ -477,6 +551,7 @@ static Suite *suite(void)
     tcase_add_test(tc, test_end_state_derivatives);
     tcase_add_test(tc, test_keyline_map_is_g2_with_its_derivative);
     tcase_add_test(tc, test_start_chart_same_curve_and_derivative);
+    tcase_add_test(tc, test_ends_chart_same_curve_and_derivative);
     tcase_add_test(tc, test_discrete_orthogonal_gradient);
     tcase_add_test(tc, test_discrete_paired_normal_equations_equal_plain_ones);
     tcase_add_test(tc, test_sampled_search_equals_full_search);
