@@ -5,8 +5,9 @@ drawn from.
 Each set: a smooth elastica of length 1 turning by at most 2 pi (k in [0.1, 0.95] or
 [1.05, 3], mu in [0.5, 30], random phase and orientation), 6-59 points at uniformly
 random arc lengths (the ends included), Gaussian noise of 0.1, 0.5 or 1 % of the
-curve's extent per coordinate. Fitted free and with the true start point and tangent
-(a curve continuing an edge G1), by the smooth and the discrete model, and by the smooth
+curve's extent per coordinate. Fitted free, with the true start point and tangent
+(a curve continuing an edge G1) and pinned at the true end points (FreeCAD's Pin start
+and Pin end: the ends chart, no Ipopt), by the smooth and the discrete model, and by the smooth
 model with the true curve's start point, tangent and curvature and end point and tangent
 (a blend joining geometry G2 at its start, G1 at its end).
 
@@ -16,7 +17,10 @@ model with the true curve's start point, tangent and curvature and end point and
               above 1.01 x the fit started from the true curve and above 1.01 x the
               true curve's own rms (it meets the constraints: they are its own; the
               fit from it follows the same starts, so both can be worse), errors,
-              and the median and maximum CPU time of a fit.
+              fits not certified (status other than 0), fits that ran Ipopt, and the
+              median and maximum CPU time of a fit.
+  fit_sparse_pinned  the fits pinned at both ends of both models: median and maximum
+              CPU time, fits that ran Ipopt, not certified, errors.
 
 `python3 bench/bench_fit_sparse.py SEED CASE` prints one set's points (the
 sets tests/c/test_fit_basin.c takes its data from: seed 4 case 22, seed 4 case 532,
@@ -29,7 +33,7 @@ import numpy as np
 
 import libelastica as el
 
-KINDS = {"free": (), "start G1": ("start_point", "start_tangent")}
+KINDS = {"free": (), "start G1": ("start_point", "start_tangent"), "pinned ends": ("start_point", "end_point")}
 # smooth only (the discrete model's start curvature other than 0 is an Ipopt row): a blend
 # that must join geometry G2 at its start and G1 at its end
 SMOOTH_KINDS = {"G2 start, G1 end": ("start_point", "start_tangent", "start_curvature", "end_point", "end_tangent")}
@@ -78,8 +82,10 @@ def true_rms(c, pts):
 
 
 def measure(seed, count):
-    out = {(m, k): dict(stray=0, worse=0, worse_true=0, errors=0, t=[]) for m in ("smooth", "discrete") for k in KINDS}
-    out.update({("smooth", k): dict(stray=0, worse=0, worse_true=0, errors=0, t=[]) for k in SMOOTH_KINDS})
+    def tally():
+        return dict(stray=0, worse=0, worse_true=0, errors=0, uncertified=0, ipopt=0, t=[])
+    out = {(m, k): tally() for m in ("smooth", "discrete") for k in KINDS}
+    out.update({("smooth", k): tally() for k in SMOOTH_KINDS})
     names = dict(KINDS, **SMOOTH_KINDS)
     drawn = sets(seed)
     for _ in range(count):
@@ -95,6 +101,8 @@ def measure(seed, count):
                 o["errors"] += 1
                 continue
             o["t"].append(time.process_time() - c0)
+            o["uncertified"] += int(r.status != 0)
+            o["ipopt"] += int(r.used_ipopt)
             length = r.curve.length if model == "smooth" else r.curve.h * (len(pts) - 1)
             o["stray"] += int(stray(r, pts, sig, length) > 0.1)
             if model == "smooth":
@@ -120,7 +128,8 @@ def main():
     for (model, kind), o in res.items():
         t = np.array(o["t"]) * 1e3
         line = {"bench": "fit_sparse", "model": model, "constraints": kind, "seed": seed, "sets": count,
-                "stray": o["stray"], "errors": o["errors"], "median_cpu_ms": round(float(np.median(t)), 2),
+                "stray": o["stray"], "errors": o["errors"], "uncertified": o["uncertified"],
+                "ipopt": o["ipopt"], "median_cpu_ms": round(float(np.median(t)), 2),
                 "max_cpu_ms": round(float(t.max()), 1)}
         if model == "smooth":
             line["worse_than_from_truth"] = o["worse"]
@@ -131,10 +140,25 @@ def main():
     smooth = [o for (m, _), o in res.items() if m == "smooth"]
     worse = sum(o["worse_true"] for o in smooth)
     print(json.dumps({"bench": "fit_sparse_all", "sets": count * len(res), "stray": total, "errors": errors,
-                      "readme": "fits of 6-59 sparse uneven noisy points (smooth and discrete, free and "
-                                "with a start tangent; smooth G2 start + G1 end) that stray from them",
+                      "readme": "fits of 6-59 sparse uneven noisy points (smooth and discrete, free, "
+                                "with a start tangent and pinned at both ends; smooth G2 start + G1 end) "
+                                "that stray from them",
                       "value": f"{total} of {count * len(res)}, {errors} errors (smooth: {worse} of "
                                f"{count * len(smooth)} above the true curve's rms by > 1 %)"}))
+
+
+    pinned = [res[(m, "pinned ends")] for m in ("smooth", "discrete")]
+    t = {m: np.array(res[(m, "pinned ends")]["t"]) * 1e3 for m in ("smooth", "discrete")}
+    print(json.dumps({"bench": "fit_sparse_pinned", "sets": count, "models": 2,
+                      "median_cpu_ms": {m: round(float(np.median(v)), 2) for m, v in t.items()},
+                      "max_cpu_ms": {m: round(float(v.max()), 1) for m, v in t.items()},
+                      "ipopt": sum(o["ipopt"] for o in pinned), "uncertified": sum(o["uncertified"] for o in pinned),
+                      "errors": sum(o["errors"] for o in pinned),
+                      "readme": "the same sketches pinned at both ends (Pin start + Pin end), smooth / discrete",
+                      "value": f"median {np.median(t['smooth']):.1f} / {np.median(t['discrete']):.1f} ms CPU, "
+                               f"max {t['smooth'].max():.0f} / {t['discrete'].max():.0f} ms; Ipopt in "
+                               f"{sum(o['ipopt'] for o in pinned)} of {2 * count}, "
+                               f"{sum(o['uncertified'] for o in pinned)} uncertified"}))
 
 
 if __name__ == "__main__":
