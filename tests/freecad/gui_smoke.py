@@ -12,7 +12,8 @@ tests/freecad/freecad.mk: the Elastica workbench used as a user would.
 
 Screenshots (whole window, 3D view included) stay in $ELASTICA_TEST_OUT
 (build/freecad/): gui_demo.png, gui_blend_panel.png (a G2 blend by length, its
-guide ducks), gui_fit_panel.png, gui_fit_ends.png (its warning line), gui_spline_g2.png (a G2 start),
+guide ducks), gui_fit_panel.png, gui_fit_ends.png (its warning line), gui_fit_sparse.png (a sketch of 7
+points fitted by the discrete model: its warning line), gui_spline_g2.png (a G2 start),
 gui_spline_panel.png, gui_ellblend_panel.png (its warning line), gui_g2quad_panel.png,
 gui_comb_panel.png. The outcome goes
 to gui_smoke.result (first line PASS or FAIL); FreeCAD is then ended with os._exit
@@ -572,6 +573,36 @@ def fit_panel_ends(doc, f, lines):
     check(after == before and panel.tangent_buttons, f"fit Cancel reverts ({after} vs {before})")
 
 
+def fit_panel_sparse(doc, S):
+    """A sketch of 7 points fitted by the default (discrete) model: the warning line
+    says its polygon of 6 segments lies far from them and names the smooth model; with
+    Model set to smooth the warning goes. Cancel removes the new feature."""
+    psk = S.points_sketch(doc, [(x + 140.0, y - 60.0) for x, y in (
+        (10.007, 5.016), (16.543, 11.151), (28.999, 29.244), (34.834, 43.041),
+        (41.322, 66.133), (44.22, 78.81), (48.429, 95.26))], "SevenPoints")
+    panel = open_panel(doc, "Elastica_Fit", [(psk, "")], "Fit elastica on 7 points")
+    f = panel.obj
+    wait()
+    text = panel.warning[1].text()
+    check(f.Model == "discrete" and panel.warning[0].isVisible() and "7 points" in text and
+          "Smooth elastica" in text and f"{f.Rms:.3g} mm" in text,
+          f"fit of 7 points, discrete: the warning line names the smooth model ({text})")
+    view = Gui.ActiveDocument.ActiveView
+    view.setCameraOrientation(f.Plane.Rotation)
+    from freecad.elastica.panelbase import show_box
+    show_box(App.BoundBox(psk.Shape.BoundBox))
+    screenshot("gui_fit_sparse.png")
+    rms = f.Rms
+    panel.model.setCurrentIndex(1)
+    wait()
+    check(f.Model == "smooth" and not panel.warning[0].isVisible() and f.Rms < 0.1 * rms,
+          f"fit of 7 points, smooth: no warning, rms {f.Rms:.3g} mm (discrete {rms:.3g} mm)")
+    n0 = len(doc.Objects)
+    panel.reject()
+    pump()
+    check(len(doc.Objects) == n0 - 1, "fit of 7 points: Cancel removes the new feature")
+
+
 # ------------------------------------------------------------------ the others
 
 def ellblend_panel(doc, S):
@@ -664,6 +695,7 @@ def run():
     blend = blend_panel(doc, S)
     spline_panel(doc, S)
     ksk = fit_panel(doc, S)
+    fit_panel_sparse(doc, S)
     ellblend_panel(doc, S)
     g2quad_panel(doc, ksk)
     comb_panel(doc, blend)
