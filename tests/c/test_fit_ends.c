@@ -5,10 +5,11 @@
  * generator of bench/bench_fit_sparse.py), pinned at that curve's ends or at the first and
  * last points (FreeCAD's Pin start / Pin end), fitted by both models: EL_OK, no Ipopt, the
  * ends met to 1e-9 of the size, the rms within 20 % of the curve's own and the length
- * within 10 % of its. PP41 smooth and PP43 smooth failed before the chart (rms 2.8 x the
+ * within 10 % of its. BEND41 smooth and PP43 smooth failed before the chart (rms 2.8 x the
  * curve's along a loop of length 1.9; 1.43 x: the guesses' basin, left by the unconstrained
- * start); PP41 discrete needs the smooth fit's start (the first and unconstrained starts end
+ * start); BEND41 discrete needs the smooth fit's start (the first and unconstrained starts end
  * on a polygon of length 1.22 at 2.7 x, within the noise figure of these sparse points). */
+#include "sketch_bend41.h"
 #include "sketch_check.h"
 
 /* 40 points of a gentle arc (k = 0.46, turning by 1.06 rad), noise 1 % of the extent (set 23) */
@@ -36,31 +37,6 @@ static const double PP40[] = {
 };
 static const el_smooth_params PP40_TRUE = {0, 0, 1.091026926051888, 1.6921439796757685, 0.46300181324831136, -1.0021897334153347, 1};
 
-/* 41 points of a bend (k = -0.19, mu = 17.5), noise 1 % (set 105) */
-static const double PP41[] = {
-    -0.0011667799568630473, 0.011132696279427883, 0.035326602094671256, -0.01707206384645017,
-    0.05600409732569095, -0.0364847038014524, 0.11390113950701526, -0.0672859098461744,
-    0.12098680491379796, -0.08504152246635281, 0.1080012390790137, -0.07908941517082213,
-    0.1261069231912352, -0.10880621838865324, 0.20191005757912983, -0.16795041276847786,
-    0.20138579236703535, -0.1453793181982922, 0.19621937710924, -0.18233078822411772,
-    0.19031540632699376, -0.18105365565853393, 0.2286555761005867, -0.19560387507314775,
-    0.26012965157922746, -0.21821469729947948, 0.24799027083803007, -0.23522734566555825,
-    0.26209337138948574, -0.24735491246072383, 0.284717434702185, -0.27454877465037636,
-    0.2797028133772179, -0.27540067580833405, 0.29591992200409717, -0.29065461617674515,
-    0.30239360311322466, -0.307182426277394, 0.30748360076332104, -0.3122083611821151,
-    0.31548841464749106, -0.31937391522982594, 0.334410819672906, -0.3453752119870096,
-    0.3127153678252164, -0.33477546369856737, 0.33905086981866034, -0.35712817182899226,
-    0.3372921716272531, -0.36268093952903474, 0.35572053556944067, -0.3736336433688346,
-    0.4305650769776277, -0.4479178260090137, 0.44056859327557263, -0.46637386197514447,
-    0.4309957570258618, -0.4765278961888772, 0.4400666585579075, -0.46321311271219107,
-    0.4514079149603875, -0.4733832003617623, 0.453317312149986, -0.49818140642149455,
-    0.47840542514841156, -0.5054771282871369, 0.4942945646641073, -0.5203238594950954,
-    0.5954046242636355, -0.5592161735865265, 0.6370272364491181, -0.590125719926547,
-    0.6710219641411906, -0.6010202869793074, 0.6698032753350862, -0.5953741511744548,
-    0.7143004930698094, -0.6112897398626171, 0.7171986122499509, -0.6183479124624579,
-    0.7583179130150801, -0.6240263369155956,
-};
-static const el_smooth_params PP41_TRUE = {0, 0, -0.547389461937132, 17.547700914879936, -0.18691942136005024, -0.06776904916188808, 1};
 /* 43 points of a gentle arc (k = -0.35, mu = 2.0), noise 1 % (set 229) */
 static const double PP43[] = {
     -0.0013454616874694354, -0.0032737709066266263, -0.009455445477893095, -0.044185760338507796,
@@ -172,7 +148,7 @@ START_TEST(test_fit_pinned_curve_ends)
 {
     for (int model = 0; model < 2; model++) {
         check_curve_ends(model, PP40, N_OF(PP40), &PP40_TRUE, 0);
-        check_curve_ends(model, PP41, N_OF(PP41), &PP41_TRUE, 0);
+        check_curve_ends(model, BEND41, N_OF(BEND41), &BEND41_TRUE, 0);
         check_curve_ends(model, PP43, N_OF(PP43), &PP43_TRUE, 0);
     }
 }
@@ -193,10 +169,10 @@ START_TEST(test_fit_pinned_data_ends_any_scale)
     const double scales[3] = {1e-6, 1.0, 1e6};
     for (int model = 0; model < 2; model++)
         for (int a = 0; a < 3; a++) {
-            const size_t n = N_OF(PP41);
-            double xy[2 * N_OF(PP41)], P[4];
-            for (size_t i = 0; i < 2 * n; i++) xy[i] = (PP41[i] + (i % 2 ? -3e3 : 3e3)) * scales[a];
-            el_smooth_params p = PP41_TRUE;
+            const size_t n = N_OF(BEND41);
+            double xy[2 * N_OF(BEND41)], P[4];
+            for (size_t i = 0; i < 2 * n; i++) xy[i] = (BEND41[i] + (i % 2 ? -3e3 : 3e3)) * scales[a];
+            el_smooth_params p = BEND41_TRUE;
             p.x0 = 3e3; p.y0 = -3e3;
             memcpy(P, xy, 2 * sizeof(double));
             memcpy(P + 2, xy + 2 * n - 2, 2 * sizeof(double));

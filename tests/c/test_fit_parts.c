@@ -8,6 +8,17 @@
 /* Vertices and d gamma / d v walked in blocks of every size equal one call over the
  * whole curve, for k across 1 and the continuation -1 < k < 0; by columns (the paired
  * fit's layout) the same numbers as by rows. */
+/* The map m at x moved by +-h in variable j: vp, vm (the central differences' points). */
+static void map_at_offsets(const fit_map *m, const double *x, int j, double h, double vp[2][FIT_NP],
+                           double vm[2][FIT_NP])
+{
+    double xp[FIT_MAXX], xm[FIT_MAXX];
+    memcpy(xp, x, sizeof xp); memcpy(xm, x, sizeof xm);
+    xp[j] += h; xm[j] -= h;
+    ck_assert_int_eq(el__fit_map_eval(m, xp, vp, NULL), EL_OK);
+    ck_assert_int_eq(el__fit_map_eval(m, xm, vm, NULL), EL_OK);
+}
+
 START_TEST(test_blocked_discrete_walk_equals_one_call)
 {
     const size_t sizes[] = {2, 3, 17, 255, 256, 257, 600};
@@ -133,11 +144,8 @@ START_TEST(test_keyline_map_is_g2_with_its_derivative)
                           "model %d tangents %g %g", model, e[0].theta, e[1].theta);
             for (int j = 0; j < m.nx; j++) {
                 const double h = 1e-6 * (1.0 + fabs(x[j]));
-                double xp[FIT_MAXX], xm[FIT_MAXX], vp[2][FIT_NP], vm[2][FIT_NP];
-                memcpy(xp, x, sizeof xp); memcpy(xm, x, sizeof xm);
-                xp[j] += h; xm[j] -= h;
-                ck_assert_int_eq(el__fit_map_eval(&m, xp, vp, NULL), EL_OK);
-                ck_assert_int_eq(el__fit_map_eval(&m, xm, vm, NULL), EL_OK);
+                double vp[2][FIT_NP], vm[2][FIT_NP];
+                map_at_offsets(&m, x, j, h, vp, vm);
                 for (int c = 0; c < 2; c++)
                     for (int r = 0; r < FIT_NP; r++) {
                         const double fd = (vp[c][r] - vm[c][r]) / (2 * h), an = M[c * FIT_NP * FIT_MAXX + r * m.nx + j];
@@ -191,12 +199,9 @@ START_TEST(test_start_chart_same_curve_and_derivative)
                     ck_assert_int_eq(el__fit_end_state(model, w[0], 50, 1, &e, tmp), EL_OK);
                     for (int j = 0; j < m.nx; j++) {
                         const double h = 1e-6 * (1.0 + fabs(x[j]));
-                        double xp[FIT_MAXX], xm[FIT_MAXX], vp[2][FIT_NP], vm[2][FIT_NP];
-                        memcpy(xp, x, sizeof xp); memcpy(xm, x, sizeof xm);
-                        xp[j] += h; xm[j] -= h;
+                        double vp[2][FIT_NP], vm[2][FIT_NP];
                         fit_end ep, em;
-                        ck_assert_int_eq(el__fit_map_eval(&m, xp, vp, NULL), EL_OK);
-                        ck_assert_int_eq(el__fit_map_eval(&m, xm, vm, NULL), EL_OK);
+                        map_at_offsets(&m, x, j, h, vp, vm);
                         ck_assert_int_eq(el__fit_end_state(model, vp[0], 50, 1, &ep, tmp), EL_OK);
                         ck_assert_int_eq(el__fit_end_state(model, vm[0], 50, 1, &em, tmp), EL_OK);
                         for (int c = 0; c < 2; c++) {
@@ -262,11 +267,8 @@ START_TEST(test_ends_chart_same_curve_and_derivative)
                         }
                         for (int j = 0; j < m.nx; j++) {
                             const double h = 1e-6 * (1.0 + fabs(x[j]));
-                            double xp[FIT_MAXX], xm[FIT_MAXX], vp[2][FIT_NP], vm[2][FIT_NP];
-                            memcpy(xp, x, sizeof xp); memcpy(xm, x, sizeof xm);
-                            xp[j] += h; xm[j] -= h;
-                            ck_assert_int_eq(el__fit_map_eval(&m, xp, vp, NULL), EL_OK);
-                            ck_assert_int_eq(el__fit_map_eval(&m, xm, vm, NULL), EL_OK);
+                            double vp[2][FIT_NP], vm[2][FIT_NP];
+                            map_at_offsets(&m, x, j, h, vp, vm);
                             /* a shape moved by x: its end still on the held end */
                             fit_end ep;
                             ck_assert_int_eq(el__fit_end_state(model, vp[0], n, 1, &ep, tmp), EL_OK);
