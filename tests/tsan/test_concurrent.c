@@ -7,7 +7,8 @@
  * and Jacobians (equally spaced and scattered s), Hermite by tension and by
  * length, the certified B-spline, B-spline evaluation, elliptic blends,
  * resampling, an elastic spline with its B-spline, and the fits that stay off
- * Ipopt (its solves are serialised by a lock: not what this test is about).
+ * Ipopt (its solves are serialised by a lock: not what this test is about): free, and
+ * pinned at both ends (the ends chart).
  */
 #include <pthread.h>
 #include <stdio.h>
@@ -167,10 +168,35 @@ static int job_fit(double *out, size_t *nout)
     return st;
 }
 
+/* the same points pinned at both ends, both models: the ends chart, no Ipopt either
+ * (EL_EINTERNAL here if a fit ran it) */
+static int job_fit_pinned(double *out, size_t *nout)
+{
+    double s[NS], xy[2 * NS];
+    for (int i = 0; i < NS; i++) s[i] = SP.length * (i + 0.3 * (i % 3)) / (NS + 1);
+    int st = el_smooth_eval(&SP, NS, s, xy, NULL, NULL);
+    el_fit_options o;
+    el_fit_options_defaults(&o);
+    o.constraints = EL_CONSTRAIN_START_POINT | EL_CONSTRAIN_END_POINT;
+    memcpy(o.start_point, xy, 2 * sizeof(double));
+    memcpy(o.end_point, xy + 2 * NS - 2, 2 * sizeof(double));
+    el_fit_smooth_result rs;
+    el_fit_discrete_result rd;
+    if (!st) st = el_fit_smooth(xy, NS, &o, NULL, &rs, out + 14, out + 14 + NS);
+    if (!st) st = el_fit_discrete(xy, NS, &o, NULL, &rd, NULL, NULL);
+    if (!st && (rs.used_ipopt || rd.used_ipopt)) st = EL_EINTERNAL;
+    if (!st) {
+        memcpy(out, &rs.params, 7 * sizeof(double));
+        memcpy(out + 7, &rd.params, 7 * sizeof(double));
+    }
+    *nout = 14 + 2 * NS;
+    return st;
+}
+
 static const struct { const char *name; job_fn fn; } JOBS[] = {
     {"smooth", job_smooth}, {"discrete", job_discrete}, {"hermite tension", job_hermite_tension},
     {"hermite length", job_hermite_length}, {"bspline", job_bspline}, {"blend", job_blend},
-    {"resample", job_resample}, {"spline", job_spline}, {"fit", job_fit},
+    {"resample", job_resample}, {"spline", job_spline}, {"fit", job_fit}, {"fit pinned", job_fit_pinned},
 };
 enum { NJOBS = sizeof JOBS / sizeof *JOBS };
 
