@@ -791,7 +791,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
     if (ok && kind == FIT_ORTHOGONAL && !need_ipopt && !o.use_initial && !lm_only) {
         const double noise_in = noise_rms * sc;
         const double stray = el__fit_stray(xy, n, fs, el__fit_out_length(model, n, res), noise_in, sc);
-        if (stray > FIT_STRAY && (st = el__fit_follow_points(model, xy, n, opt, noise_in, sc, stray, res, d, fs)) == EL_OK)
+        if (stray > FIT_STRAY && (st = el__fit_follow_points(model, xy, n, opt, flags, noise_in, sc, stray, res, d, fs)) == EL_OK)
             st = res->status;
     }
     /* held ends, not certified: the end point as Ipopt's rows from this fit, kept when

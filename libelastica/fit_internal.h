@@ -344,8 +344,10 @@ int el__fit_start(int model, const double *xy, size_t n, const el_fit_options *o
 /* One fit of the points (fit.c): el_fit_discrete / el_fit_smooth into *res (status -1
  * until a result exists), opt NULL = defaults, init the caller's initial parameters
  * (opt->use_initial); flags: FIT_RUN_LM_ONLY, no Ipopt fallback and no further start
- * (el__fit_start); FIT_RUN_ROWS, both end points as Ipopt's rows, not the ends chart. */
-enum { FIT_RUN_LM_ONLY = 1, FIT_RUN_ROWS = 2 };
+ * (el__fit_start); FIT_RUN_ROWS, both end points as Ipopt's rows, not the ends chart;
+ * FIT_RUN_NO_OTHER, no start from the other model's fit (el__fit_follow_points: the
+ * fit that start runs). */
+enum { FIT_RUN_LM_ONLY = 1, FIT_RUN_ROWS = 2, FIT_RUN_NO_OTHER = 4 };
 int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt, int flags,
                 const double *init, fit_out *res, double *dist, double *foot);
 /* fit_restart.c: el__fit_run on the points in reverse order when the end holds more
@@ -367,8 +369,10 @@ double el__fit_out_length(int model, size_t n, const fit_out *r);
 /* fit_restart.c: a fit by distance whose result *res (d, fs its distances and feet,
  * input units) strays from its points by stray (el__fit_stray) fitted again from the
  * paired fit's curve, which replaces it when it follows them or strays less than half
- * as far; EL_OK (replaced or not) or EL_ENOMEM. */
-int el__fit_follow_points(int model, const double *xy, size_t n, const el_fit_options *opt, double noise,
+ * as far, and (a free fit, flags without FIT_RUN_NO_OTHER) from the other model's fit,
+ * which replaces it when it follows them at a lower rms; EL_OK (replaced or not) or
+ * EL_ENOMEM. */
+int el__fit_follow_points(int model, const double *xy, size_t n, const el_fit_options *opt, int flags, double noise,
                           double scale, double stray, fit_out *res, double *d, double *fs);
 
 /* Ipopt from x (in place; the best point seen on return) with bounds xl, xu (+-HUGE_VAL:
