@@ -794,31 +794,9 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
         if (stray > FIT_STRAY && (st = el__fit_follow_points(model, xy, n, opt, flags, noise_in, sc, stray, res, d, fs)) == EL_OK)
             st = res->status;
     }
-    /* held ends, not certified: the end point as Ipopt's rows from this fit, kept when
-     * certified (measured: one of the 1200 fits above, a discrete fit near k = 1 where
-     * Levenberg-Marquardt crept to max_iter; the rows certify it in 26 ms, rms 0.005 % lower) */
-    if (ends_chart && !lm_only && (st == EL_ENOCONV || st == EL_EMAXITER)) {
-        el_fit_options ro = *opt;
-        ro.use_initial = 1;
-        fit_out alt;
-        memset(&alt, 0, sizeof alt);
-        alt.status = -1;
-        double *buf = malloc(sizeof(double) * 2 * n);
-        if (!buf) { st = EL_ENOMEM; goto done; }
-        const int rst = el__fit_run(model, xy, n, &ro, FIT_RUN_ROWS, res->params, &alt, buf, buf + n);
-        if (rst == EL_OK) {
-            memcpy(d, buf, sizeof(double) * n);
-            memcpy(fs, buf + n, sizeof(double) * n);
-            memcpy(alt.initial, res->initial, sizeof alt.initial);
-            alt.iterations += res->iterations;
-            alt.candidates += res->candidates;
-            *res = alt;
-            st = EL_OK;
-        } else if (rst == EL_ENOMEM) {
-            st = rst;
-        }
-        free(buf);
-    }
+    /* held ends, not certified: the rows' fit from this one (fit_restart.c) */
+    if (ends_chart && !lm_only && (st == EL_ENOCONV || st == EL_EMAXITER))
+        st = el__fit_rows_fallback(model, xy, n, opt, res, d, fs);
 done:
     el__fit_objective_free(&ob);
     free(dbuf);

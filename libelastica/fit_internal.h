@@ -375,6 +375,12 @@ double el__fit_out_length(int model, size_t n, const fit_out *r);
 int el__fit_follow_points(int model, const double *xy, size_t n, const el_fit_options *opt, int flags, double noise,
                           double scale, double stray, fit_out *res, double *d, double *fs);
 
+/* fit_restart.c: an uncertified fit pinned at both ends (the ends chart) fitted again with
+ * the end point as Ipopt's rows from its result, which replaces *res (d, fs) when
+ * certified; EL_OK when replaced, else res->status, or EL_ENOMEM. */
+int el__fit_rows_fallback(int model, const double *xy, size_t n, const el_fit_options *opt, fit_out *res, double *d,
+                          double *fs);
+
 /* Ipopt from x (in place; the best point seen on return) with bounds xl, xu (+-HUGE_VAL:
  * none) and constraints con (NULL: none). */
 int el__fit_ipopt(fit_objective *o, const double *xl, const double *xu, const fit_constraints *con,
