@@ -43,16 +43,6 @@ int el__fit_unconstrained_start(int model, const double *xy, size_t n, const el_
     return el__all_finite(v, FIT_NP) ? EL_EDOM : EL_OK;
 }
 
-/* A discrete fit's last start where its constraints are Ipopt's rows and every guess
- * ended far from the noise, off the rows or off its points: the smooth fit with the same
- * constraints (whose held start state and direct start reach the data's basin, fit.c),
- * as the discrete model's continuum limit, h = L / (n - 1), z = w h and phi, q, k its
- * own (a loop turning clockwise, k < -1, is (-w, -k, -q)), normalised into v. The rows
- * start the guesses' fits from the free fit's basin, where a sparse sketch's may hold no
- * polygon near the data that meets them (measured on 4 x 150 sparse uneven noisy
- * sketches, discrete with start point and tangent, and with both points and one or both
- * tangents: polygons of length 1.5-51740 along an arc of length 1, at up to 4 x the rms
- * this start reaches). EL_ENOMEM, or EL_EDOM when there is none. */
 /* A curve of n points' fit of the other model as this model's parameters p (input units,
  * the Jacobian order): the discrete model as the smooth one's continuum limit, h = L / (n - 1),
  * z = w h and phi, q, k its own (a loop turning clockwise, k < -1, as (-w, -k, -q)); the
@@ -70,6 +60,16 @@ static void continuum_limit(int to_model, size_t n, const double *from, double *
     }
 }
 
+/* A discrete fit's last start where its constraints are Ipopt's rows and every guess
+ * ended far from the noise, off the rows or off its points: the smooth fit with the same
+ * constraints (whose held start state and direct start reach the data's basin, fit.c),
+ * as the discrete model's continuum limit, h = L / (n - 1), z = w h and phi, q, k its
+ * own (a loop turning clockwise, k < -1, is (-w, -k, -q)), normalised into v. The rows
+ * start the guesses' fits from the free fit's basin, where a sparse sketch's may hold no
+ * polygon near the data that meets them (measured on 4 x 150 sparse uneven noisy
+ * sketches, discrete with start point and tangent, and with both points and one or both
+ * tangents: polygons of length 1.5-51740 along an arc of length 1, at up to 4 x the rms
+ * this start reaches). EL_ENOMEM, or EL_EDOM when there is none. */
 int el__fit_smooth_start(const double *xy, size_t n, const el_fit_options *opt, double cx, double cy, double sc,
                          double *v)
 {
@@ -156,14 +156,18 @@ int el__fit_follow_points(int model, const double *xy, size_t n, const el_fit_op
      * 45 orientations by the smooth model and 38 by the discrete, up to 0.045 at the others,
      * the paired refit that follows the points 3.6 x the straying fit's; with this start
      * 0.0090 at 42 by both models. 150 random sketches: no rms changed) */
-    if (st != EL_ENOMEM && !po.constraints && !(flags & FIT_RUN_NO_OTHER) && (!follows || res->rms > stray_rms)) {
+    int other_ok = st != EL_ENOMEM && !po.constraints && !(flags & FIT_RUN_NO_OTHER) && (!follows || res->rms > stray_rms);
+    for (int j = 0; j < FIT_NP && other_ok; j++)     /* the parameters mean other things in the other model */
+        other_ok = !po.fixed[j] && !isfinite(po.lower[j]) && !isfinite(po.upper[j]);
+    if (other_ok) {
         el_fit_options oo = po;
         oo.distance = EL_DISTANCE_AUTO;
         oo.use_initial = 0;
         fit_out other;
         memset(&other, 0, sizeof other);
         other.status = -1;
-        st = el__fit_run(!model, xy, n, &oo, FIT_RUN_NO_OTHER, NULL, &other, NULL, NULL);
+        st = el__fit_run(model == FIT_SMOOTH ? FIT_DISCRETE : FIT_SMOOTH, xy, n, &oo, FIT_RUN_NO_OTHER, NULL, &other,
+                         NULL, NULL);
         if (st != EL_ENOMEM && gave_curve(&other)) {
             double p[FIT_NP];
             continuum_limit(model, n, other.params, p);
