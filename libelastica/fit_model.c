@@ -379,13 +379,14 @@ static int end_offset(const fit_map *m, const double *u, double e[2], double de[
         e[1] = xy[1] - u[1];
         return EL_OK;
     }
-    /* the walk over vertices 0 .. n-2 carries vertex n-1 and its derivative */
+    /* the walk over vertices 0 .. n-2 carries vertex n-1 (and, with the blocks' Jacobian
+     * rows, its derivative; without de the points alone) */
     double xy[2 * ENDS_BLOCK], jac[2 * ENDS_BLOCK * FIT_NP], t2[2 * (ENDS_BLOCK + 1) * (FIT_NP + 1)];
     fit_walk w;
     el__fit_walk_start(u, &w);
     for (size_t left = (size_t)m->scale[2]; left > 0;) {
         const size_t b = left < ENDS_BLOCK ? left : ENDS_BLOCK;
-        const int st = el__fit_discrete_rows(u, &w, b, xy, jac, 0, t2);
+        const int st = el__fit_discrete_rows(u, &w, b, xy, de ? jac : NULL, 0, t2);
         if (st) return st;
         left -= b;
     }
