@@ -19,8 +19,9 @@ model with the true curve's start point, tangent and curvature and end point and
               fit from it follows the same starts, so both can be worse), errors,
               fits not certified (status other than 0), fits that ran Ipopt, and the
               median and maximum CPU time of a fit.
-  fit_sparse_pinned  the fits pinned at both ends of both models: median and maximum
-              CPU time, fits that ran Ipopt, not certified, errors.
+  fit_sparse_free, fit_sparse_pinned  the free fits and those pinned at both ends, both
+              models: median, maximum and total CPU time, fits that ran Ipopt, not
+              certified, errors.
 
 `python3 bench/bench_fit_sparse.py SEED CASE` prints one set's points (the
 sets tests/c/test_fit_basin.c takes its data from: seed 4 case 22, seed 4 case 532,
@@ -147,19 +148,28 @@ def main():
                                f"{count * len(smooth)} above the true curve's rms by > 1 %)"}))
 
 
-    pinned = [res[(m, "pinned ends")] for m in ("smooth", "discrete")]
-    t = {m: np.array(res[(m, "pinned ends")]["t"]) * 1e3 for m in ("smooth", "discrete")}
-    print(json.dumps({"bench": "fit_sparse_pinned", "sets": count, "models": 2,
+    kind_row(res, "free", "fit_sparse_free", "the same sketches fitted free, smooth / discrete", count)
+    kind_row(res, "pinned ends", "fit_sparse_pinned",
+             "the same sketches pinned at both ends (Pin start + Pin end), smooth / discrete", count)
+
+
+def kind_row(res, kind, bench, readme, count):
+    """One kind's figures over both models: CPU time (median, max, all the fits'), Ipopt,
+    uncertified fits, errors."""
+    both = [res[(m, kind)] for m in ("smooth", "discrete")]
+    t = {m: np.array(res[(m, kind)]["t"]) * 1e3 for m in ("smooth", "discrete")}
+    total = sum(float(v.sum()) for v in t.values()) * 1e-3
+    print(json.dumps({"bench": bench, "sets": count, "models": 2,
                       "median_cpu_ms": {m: round(float(np.median(v)), 2) for m, v in t.items()},
                       "max_cpu_ms": {m: round(float(v.max()), 1) for m, v in t.items()},
-                      "ipopt": sum(o["ipopt"] for o in pinned), "uncertified": sum(o["uncertified"] for o in pinned),
-                      "errors": sum(o["errors"] for o in pinned),
-                      "readme": "the same sketches pinned at both ends (Pin start + Pin end), smooth / discrete",
+                      "total_cpu_s": round(total, 2),
+                      "ipopt": sum(o["ipopt"] for o in both), "uncertified": sum(o["uncertified"] for o in both),
+                      "errors": sum(o["errors"] for o in both),
+                      "readme": readme,
                       "value": f"median {np.median(t['smooth']):.1f} / {np.median(t['discrete']):.1f} ms CPU, "
-                               f"max {t['smooth'].max():.0f} / {t['discrete'].max():.0f} ms; Ipopt in "
-                               f"{sum(o['ipopt'] for o in pinned)} of {2 * count}, "
-                               f"{sum(o['uncertified'] for o in pinned)} uncertified"}))
-
+                               f"max {t['smooth'].max():.0f} / {t['discrete'].max():.0f} ms, {total:.2f} s for "
+                               f"all {2 * count}; Ipopt in {sum(o['ipopt'] for o in both)} of {2 * count}, "
+                               f"{sum(o['uncertified'] for o in both)} uncertified"}))
 
 if __name__ == "__main__":
     main()

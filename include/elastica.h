@@ -419,15 +419,17 @@ typedef struct el_fit_smooth_result {
  * each) is fitted again from the paired fit's curve, which passes them in order, and
  * that fit is kept when it follows the points or strays less than half as far, even at
  * a higher rms (without this, 41 noisy points along an arc of length 1 were fitted at a
- * lower rms by a curve of length 4.5 looping twice round them). Up to 0.5 s of CPU on
- * 6-59 sparse points (bench/bench_fit_sparse.py). With Ipopt's rows, its iterations over
+ * lower rms by a curve of length 4.5 looping twice round them). Free fits of 6-59 sparse
+ * points take up to ~0.1 s of CPU (bench/bench_fit_sparse.py; a few hard sketches up to
+ * ~0.8 s), those with Ipopt's rows up to ~1 s. With Ipopt's rows, its iterations over
  * the guesses (once one meets the constraints) and the refits of one fit stop at twice
  * opt->max_iter.
  * Solver: Levenberg-Marquardt, its result certified by the first-order condition
  * (the residual vector orthogonal to every column of the Jacobian to 1e-8, or zero to
- * rounding); Ipopt runs only for bounds that are active, constraints, an uncertified
- * result (noisy data whose decrease stalls, reported as EL_OK once Ipopt's acceptable
- * level is reached), or opt->limited_memory. Work: a few Jacobian evaluations, O(n)
+ * rounding); Ipopt runs only for bounds that are active, constraints it cannot hold
+ * exactly, the fit kept when it is left uncertified (once, from it: noisy data whose
+ * decrease stalls, reported as EL_OK once Ipopt's acceptable level is reached; not each
+ * guess so left on the way), or opt->limited_memory. Work: a few Jacobian evaluations, O(n)
  * each, per candidate; with limited_memory up to opt->max_iter Ipopt iterations per
  * candidate (~0.5 ms each for n <= 1000, mostly Debian 12's MUMPS; on 144 fits of
  * sketched, uneven and noisy points, 20-1000 of them, free or constrained, a median of 65

@@ -117,10 +117,11 @@ static double rows_violation(fit_objective *ob, const fit_constraints *con, cons
 /* 1 when a candidate's Ipopt run ended at its iteration limit (Maximum_Iterations_Exceeded). */
 static int ran_out(const cand_result *r) { return r->used_ipopt && r->ipopt_status == -1; }
 
-/* One initial guess: Levenberg-Marquardt, then Ipopt when something needs it. warm: x0 is
- * a fit already and the feet are set (el__fit_run's refit): no paired start. */
+/* One initial guess: Levenberg-Marquardt, then Ipopt when something needs it (rows, the
+ * point outside the bounds; without them, the point left uncertified unless no_polish).
+ * warm: x0 is a fit already and the feet are set (el__fit_run's refit): no paired start. */
 static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit_constraints *con,
-                           const double *xl, const double *xu, int need_ipopt, int lm_only,
+                           const double *xl, const double *xu, int need_ipopt, int no_polish,
                            const double *x0, double best_f, cand_result *r, double *tmp, int near_start,
                            int warm)
 {
@@ -188,8 +189,9 @@ static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit
     ob->f_ceiling = best_f;
     /* near_start: x0 is near the constrained optimum already (el__fit_held_start's continuation):
      * Ipopt from there, not from the unconstrained fit that Levenberg-Marquardt would
-     * return to */
-    const int lst = o->limited_memory || (near_start && need_ipopt) ? EL_EINVAL : el__fit_lm(ob, x0, o->max_iter, &sol);
+     * return to; or it is the fit to polish (el__fit_fallback's run) */
+    const int lst = o->limited_memory || (near_start && (need_ipopt || !no_polish)) ? EL_EINVAL
+                  : el__fit_lm(ob, x0, o->max_iter, &sol);
     /* a paired start that crawled to max_iter without its certificate (a sketch with a
      * gap, whose chord fractions misplace the points after it) may be far from the fit:
      * Levenberg-Marquardt from the guess too, kept when certified lower (measured, 1000
@@ -214,7 +216,7 @@ static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit
         for (int j = 0; j < nx; j++) inside &= sol.x[j] >= xl[j] && sol.x[j] <= xu[j];
         if (sol.certified && inside && !need_ipopt) { r->status = EL_OK; return EL_OK; }
         if (!sol.certified && sol.iters >= o->max_iter && !need_ipopt && inside) r->status = EL_EMAXITER;
-        if (lm_only && inside && !need_ipopt) return EL_OK;
+        if (no_polish && inside && !need_ipopt) return EL_OK;
         /* a later guess that ended above an earlier one's objective: Ipopt would only
          * polish a worse fit (measured: 200 Ipopt iterations, 0.2 s, on 16 points whose
          * third guess crawled along a flat valley) */
@@ -490,6 +492,18 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
     for (int j = 0; j < FIT_NP && smooth_start; j++)     /* the caller's (o holds a start point in x0, y0) */
         if (opt->fixed[j] || isfinite(opt->lower[j]) || isfinite(opt->upper[j])) smooth_start = 0;
     size_t free_ci = (size_t)-1;    /* the unconstrained start's index in cand, once added */
+    /* without rows, Ipopt polishes only in el__fit_fallback's run (FIT_RUN_POLISH): the fit
+     * kept, when Levenberg-Marquardt leaves it uncertified (below), not every guess and
+     * refit so left (the refits below pass no_polish = 1). Each polish cost ~1.3 ms an
+     * iteration, up to max_iter, and crept along the valley where Levenberg-Marquardt had:
+     * measured on 2 x 150 sparse uneven noisy sketches (bench_fit_sparse.py's generator,
+     * seeds 6 and 7), both models, free: 37 polishes in 15 fits, none certified, 8.9 s of
+     * the 9.8 s CPU of the 600 fits; without them every rms the same to 1 %, every fit
+     * certified, 0.8 s. The 504-curve suite: success the same, every rms the same to 1e-3 */
+    const int no_polish = lm_only || !(flags & FIT_RUN_POLISH);
+    /* el__fit_fallback's run: Ipopt straight from the kept fit (the caller's start), its
+     * feet from its curve, as the polish of a guess was */
+    const int polish_run = !no_polish && !need_ipopt && o.use_initial;
     if (ends_chart && free_start) {
         /* held ends: the unconstrained fit's curve turned and scaled onto them is the first
          * start. The guesses turned and scaled onto the ends can lie far from the points (a
@@ -533,6 +547,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
             memcpy(p0, ve[0], sizeof p0);
         }
         first_feet(&ob, t, p0[6]);
+        if (polish_run && ob.rest && el__fit_feet_start(&ob, x0)) continue;
         cand_result r;
         int feet_stale = 0, r_strays = -1;     /* r_strays: r strays from its points, once known */
         if (map.nx == 0) {
@@ -543,12 +558,12 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
             r.status = EL_OK;
         } else {
             int pre = 0;
-            if (staged) {
+            if (staged && !polish_run) {
                 pre = el__fit_held_start(&ob, &map, &free_map, staged, &con, o.max_iter, p0, x0, tmp);
                 first_feet(&ob, t, p0[6]);      /* again (the stages moved them) */
             }
-            if ((st = solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, lm_only, x0, best.f, &r, tmp,
-                                      staged && pre > 0, 0)))
+            if ((st = solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, no_polish, x0, best.f, &r, tmp,
+                                      (staged && pre > 0) || polish_run, polish_run)))
                 goto done;
             r.iters += pre;
             /* smooth: where the continuation's fit is above the noise or strays from the
@@ -561,13 +576,14 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
              * meet; a G1-G1 set along a loop of length 2.9 at 2.1 x its true curve's rms,
              * another fit 5 x; none worse. Straying: a start curvature alone, a loop of
              * length 3.1 at rms 0.0217 within the noise rule, 0.0095 directly) */
-            if (staged && model == FIT_SMOOTH && (!(sqrt(2.0 * r.f) <= 1.5 * noise && r.status == EL_OK) ||
-                                                 (ob.rest && (r_strays = el__fit_strays_at(&ob, r.x, noise_rms, d, fs, tmp))))) {
+            if (staged && !polish_run && model == FIT_SMOOTH &&
+                (!(sqrt(2.0 * r.f) <= 1.5 * noise && r.status == EL_OK) ||
+                 (ob.rest && (r_strays = el__fit_strays_at(&ob, r.x, noise_rms, d, fs, tmp))))) {
                 cand_result rd;
                 first_feet(&ob, t, p0[6]);
                 el__fit_map_inverse(&map, p0, x0);
                 ob.have_base = 0;
-                if ((st = solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, lm_only, x0, best.f, &rd, tmp, 0, 0)))
+                if ((st = solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, no_polish, x0, best.f, &rd, tmp, 0, 0)))
                     goto done;
                 rd.iters += r.iters;
                 const int r_meets = !need_ipopt || meets_constraints(&ob, &map, &con, r.x, lo, hi, tmp);
@@ -610,7 +626,15 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
          * 0.0079 and the true curve, length 1, has 0.0081) */
         if (need_ipopt && kind == FIT_ORTHOGONAL && rms <= 1.5 * noise && best.status == EL_OK && best_strays < 0)
             best_strays = el__fit_strays_at(&ob, best.x, noise_rms, d, fs, tmp);
-        if (rms <= 1.5 * noise && best.status == EL_OK && !(need_ipopt && kind == FIT_ORTHOGONAL && best_strays > 0)) {
+        /* a fit where Levenberg-Marquardt stalled uncertified (no step lowers f), whose polish
+         * is deferred (el__fit_fallback below), stops too: the polish made it EL_OK here before
+         * (measured: a smooth fit with a start tangent of 45 points, the first guess stalled
+         * at rms 0.68 x the noise figure; without this all five guesses and the unconstrained
+         * start ran, 14 -> 56 ms, for the same fit). Not one that crawled to max_iter: the
+         * next guesses can reach a lower basin (a discrete sketch of 41 points: 0.0072 by
+         * the third guess, where the first crawled to 0.016 within 1.5 x the figure) */
+        const int settled = best.status == EL_OK || (no_polish && !lm_only && !need_ipopt && best.status == EL_ENOCONV);
+        if (rms <= 1.5 * noise && settled && !(need_ipopt && kind == FIT_ORTHOGONAL && best_strays > 0)) {
             /* held ends: the discrete fit's smooth start too, while above the data's own
              * figure (the constrained fits' plain noise figure is high on sparse curved
              * points: a set of 41 points whose polygon ended at 2.7 x its curve's rms, length
@@ -679,7 +703,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
             cand_result r;
             ob.have_base = 0;
             if ((!last_is_best && el__fit_feet_start(&ob, best.x)) ||
-                (st = solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, lm_only, best.x, HUGE_VAL, &r, tmp, 1, 1)) ||
+                (st = solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, 1, best.x, HUGE_VAL, &r, tmp, 1, 1)) ||
                 !isfinite(r.f)) {
                 if (st) goto done;
                 best.status = EL_ENOCONV;
@@ -714,7 +738,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
         ob.have_base = 0;
         cand_result r;
         if (moved) ob.lm_tol = LOOSE_TOL;
-        st = solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, moved ? 1 : lm_only, best.x, best.f, &r, tmp, 1, 1);
+        st = solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, 1, best.x, best.f, &r, tmp, 1, 1);
         ob.lm_tol = certificate;
         if (st) goto done;
         iters += r.iters;
@@ -794,9 +818,10 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
         if (stray > FIT_STRAY && (st = el__fit_follow_points(model, xy, n, opt, flags, noise_in, sc, stray, res, d, fs)) == EL_OK)
             st = res->status;
     }
-    /* held ends, not certified: the rows' fit from this one (fit_restart.c) */
-    if (ends_chart && !lm_only && (st == EL_ENOCONV || st == EL_EMAXITER))
-        st = el__fit_rows_fallback(model, xy, n, opt, res, d, fs);
+    /* not certified: Ipopt from this one (fit_restart.c); held ends as its rows */
+    if (!need_ipopt && !(flags & (FIT_RUN_LM_ONLY | FIT_RUN_POLISH | FIT_RUN_INNER)) &&
+        (st == EL_ENOCONV || st == EL_EMAXITER))
+        st = el__fit_fallback(model, xy, n, opt, ends_chart ? FIT_RUN_ROWS : FIT_RUN_POLISH, res, d, fs);
 done:
     el__fit_objective_free(&ob);
     free(dbuf);

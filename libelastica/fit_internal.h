@@ -346,8 +346,11 @@ int el__fit_start(int model, const double *xy, size_t n, const el_fit_options *o
  * (opt->use_initial); flags: FIT_RUN_LM_ONLY, no Ipopt fallback and no further start
  * (el__fit_start); FIT_RUN_ROWS, both end points as Ipopt's rows, not the ends chart;
  * FIT_RUN_NO_OTHER, no start from the other model's fit (el__fit_follow_points: the
- * fit that start runs). */
-enum { FIT_RUN_LM_ONLY = 1, FIT_RUN_ROWS = 2, FIT_RUN_NO_OTHER = 4 };
+ * fit that start runs); FIT_RUN_POLISH, Ipopt polishes a fit without rows that
+ * Levenberg-Marquardt leaves uncertified (el__fit_fallback's run; otherwise the fit
+ * kept is polished by that run); FIT_RUN_INNER, a fit inside another
+ * (el__fit_follow_points'), whose result the outer one polishes if it keeps it. */
+enum { FIT_RUN_LM_ONLY = 1, FIT_RUN_ROWS = 2, FIT_RUN_NO_OTHER = 4, FIT_RUN_POLISH = 8, FIT_RUN_INNER = 16 };
 int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt, int flags,
                 const double *init, fit_out *res, double *dist, double *foot);
 /* fit_restart.c: el__fit_run on the points in reverse order when the end holds more
@@ -375,11 +378,12 @@ double el__fit_out_length(int model, size_t n, const fit_out *r);
 int el__fit_follow_points(int model, const double *xy, size_t n, const el_fit_options *opt, int flags, double noise,
                           double scale, double stray, fit_out *res, double *d, double *fs);
 
-/* fit_restart.c: an uncertified fit pinned at both ends (the ends chart) fitted again with
- * the end point as Ipopt's rows from its result, which replaces *res (d, fs) when
- * certified; EL_OK when replaced, else res->status, or EL_ENOMEM. */
-int el__fit_rows_fallback(int model, const double *xy, size_t n, const el_fit_options *opt, fit_out *res, double *d,
-                          double *fs);
+/* fit_restart.c: an uncertified fit fitted again from its result by Ipopt (flags
+ * FIT_RUN_POLISH; FIT_RUN_ROWS: pinned at both ends, the end point as Ipopt's rows), which replaces *res
+ * (d, fs) when certified or, without rows, lower; EL_OK when replaced by a certified fit,
+ * else res->status, or EL_ENOMEM. */
+int el__fit_fallback(int model, const double *xy, size_t n, const el_fit_options *opt, int flags, fit_out *res,
+                     double *d, double *fs);
 
 /* Ipopt from x (in place; the best point seen on return) with bounds xl, xu (+-HUGE_VAL:
  * none) and constraints con (NULL: none). */

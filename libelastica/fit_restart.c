@@ -113,7 +113,7 @@ int el__fit_follow_points(int model, const double *xy, size_t n, const el_fit_op
     fit_out paired, fo;
     memset(&paired, 0, sizeof paired);
     paired.status = -1;
-    int st = el__fit_run(model, xy, n, &po, 0, NULL, &paired, NULL, NULL);
+    int st = el__fit_run(model, xy, n, &po, FIT_RUN_INNER, NULL, &paired, NULL, NULL);
     if (st == EL_ENOMEM) return st;
     if (!gave_curve(&paired) && po.constraints) {
         /* no paired curve meets the held constraints: the unconstrained fit by distance,
@@ -122,7 +122,7 @@ int el__fit_follow_points(int model, const double *xy, size_t n, const el_fit_op
         po.distance = EL_DISTANCE_ORTHOGONAL;
         memset(&paired, 0, sizeof paired);
         paired.status = -1;
-        if ((st = el__fit_run(model, xy, n, &po, 0, NULL, &paired, NULL, NULL)) == EL_ENOMEM) return st;
+        if ((st = el__fit_run(model, xy, n, &po, FIT_RUN_INNER, NULL, &paired, NULL, NULL)) == EL_ENOMEM) return st;
         po.constraints = opt->constraints;
     }
     if (!gave_curve(&paired)) return EL_OK;
@@ -132,7 +132,7 @@ int el__fit_follow_points(int model, const double *xy, size_t n, const el_fit_op
     po.use_initial = 1;
     memset(&fo, 0, sizeof fo);
     fo.status = -1;
-    st = el__fit_run(model, xy, n, &po, 0, paired.params, &fo, buf, buf + n);
+    st = el__fit_run(model, xy, n, &po, FIT_RUN_INNER, paired.params, &fo, buf, buf + n);
     /* the refit's own stray; -1 (out of memory) and a refit without a curve: not kept */
     const double refit_stray = st != EL_ENOMEM && gave_curve(&fo)
         ? el__fit_stray(xy, n, buf + n, el__fit_out_length(model, n, &fo), noise, scale) : -1.0;
@@ -166,14 +166,14 @@ int el__fit_follow_points(int model, const double *xy, size_t n, const el_fit_op
         fit_out other;
         memset(&other, 0, sizeof other);
         other.status = -1;
-        st = el__fit_run(model == FIT_SMOOTH ? FIT_DISCRETE : FIT_SMOOTH, xy, n, &oo, FIT_RUN_NO_OTHER, NULL, &other,
-                         NULL, NULL);
+        st = el__fit_run(model == FIT_SMOOTH ? FIT_DISCRETE : FIT_SMOOTH, xy, n, &oo, FIT_RUN_NO_OTHER | FIT_RUN_INNER,
+                         NULL, &other, NULL, NULL);
         if (st != EL_ENOMEM && gave_curve(&other)) {
             double p[FIT_NP];
             continuum_limit(model, n, other.params, p);
             memset(&fo, 0, sizeof fo);
             fo.status = -1;
-            st = el__fit_run(model, xy, n, &po, 0, p, &fo, buf, buf + n);
+            st = el__fit_run(model, xy, n, &po, FIT_RUN_INNER, p, &fo, buf, buf + n);
             const double other_stray = st != EL_ENOMEM && gave_curve(&fo)
                 ? el__fit_stray(xy, n, buf + n, el__fit_out_length(model, n, &fo), noise, scale) : -1.0;
             if (other_stray >= 0.0 && other_stray <= FIT_STRAY && fo.rms < res->rms) {
@@ -189,24 +189,29 @@ int el__fit_follow_points(int model, const double *xy, size_t n, const el_fit_op
     return st == EL_ENOMEM ? st : EL_OK;
 }
 
-/* A fit pinned at both ends in the ends chart that Levenberg-Marquardt did not certify:
- * the end point as Ipopt's rows from its result (FIT_RUN_ROWS), which replaces *res (d, fs
- * its distances and feet) when certified (measured: one of 1200 sparse sketches pinned at
- * both ends, a discrete fit near k = 1 where Levenberg-Marquardt crept to max_iter; the
- * rows certify it in 26 ms, rms 0.005 % lower). EL_OK when replaced, else res->status, or
- * EL_ENOMEM. */
-int el__fit_rows_fallback(int model, const double *xy, size_t n, const el_fit_options *opt, fit_out *res, double *d,
-                          double *fs)
+/* A fit that Levenberg-Marquardt did not certify, fitted again from its result by Ipopt
+ * (el__fit_run with the result as the caller's start). flags FIT_RUN_ROWS: a fit pinned
+ * at both ends in the ends chart, the end point as Ipopt's rows (measured: one of 1200
+ * sparse sketches pinned at both ends, a discrete fit near k = 1 where Levenberg-Marquardt
+ * crept to max_iter; the rows certify it in 26 ms, rms 0.005 % lower); FIT_RUN_POLISH: a
+ * fit without rows, Ipopt from where Levenberg-Marquardt stops. The refit replaces *res (d,
+ * fs its distances and feet) when certified, or, without rows (which an uncertified run
+ * need not meet), when lower. EL_OK when replaced by a certified fit, else res->status,
+ * or EL_ENOMEM. */
+int el__fit_fallback(int model, const double *xy, size_t n, const el_fit_options *opt, int flags, fit_out *res,
+                     double *d, double *fs)
 {
-    el_fit_options ro = *opt;
+    el_fit_options ro;
+    if (opt) ro = *opt; else el_fit_options_defaults(&ro);
     ro.use_initial = 1;
     fit_out alt;
     memset(&alt, 0, sizeof alt);
     alt.status = -1;
     double *buf = malloc(sizeof(double) * 2 * n);
     if (!buf) return EL_ENOMEM;
-    int st = el__fit_run(model, xy, n, &ro, FIT_RUN_ROWS, res->params, &alt, buf, buf + n);
-    if (st == EL_OK) {
+    int st = el__fit_run(model, xy, n, &ro, flags, res->params, &alt, buf, buf + n);
+    const int lower = !(flags & FIT_RUN_ROWS) && (st == EL_ENOCONV || st == EL_EMAXITER) && alt.f < res->f;
+    if (st == EL_OK || lower) {
         memcpy(d, buf, sizeof(double) * n);
         memcpy(fs, buf + n, sizeof(double) * n);
         memcpy(alt.initial, res->initial, sizeof alt.initial);

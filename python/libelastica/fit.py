@@ -63,9 +63,10 @@ class FitResult:
     or "paired" (point i <-> vertex i, seed 000 (4.6), the discrete default on evenly
     spaced points; or the smooth paired arc lengths); ``iterations``; ``status``: 0 when
     converged, else the C status (EL_ENOCONV / EL_EMAXITER: ``curve`` is the best
-    seen); ``ipopt_status`` / ``used_ipopt``: whether Ipopt ran (bounds, constraints,
-    fallback) and its return code; ``s``: for the smooth model the curve parameter
-    each point was fitted at (its foot, or for a paired fit its paired arc length;
+    seen); ``ipopt_status`` / ``used_ipopt``: whether Ipopt ran for the kept fit
+    (bounds, constraints, its polish when left uncertified) and its return code;
+    ``s``: for the smooth model the curve parameter each point was fitted at (its
+    foot, or for a paired fit its paired arc length;
     None for discrete); ``param_mode``: "uniform" or "chord" (smooth: the paired arc
     lengths, or the first feet); ``points``: the fitted points.
     """
