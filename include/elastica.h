@@ -267,10 +267,12 @@ int el_fit_fractions(const double *xy, size_t n, int mode, double *t, int *mode_
  * from the curvature, unwrapped, which counts the monotone pieces m of (4.38)
  * from the data) and a straight-line fit of u_n = z n + q (4.54). Candidates
  * (at most 6): this guess, the same with one monotone piece less and more
- * (m -/+ 1), the guess on the other side of k = 1 when k is near 1, and a
- * circular-arc / straight-line guess; with n <= 40 also those of the polygon whose
- * sides shorter than two noise levels are merged (noisy short sides' tangents are
- * noise), ranked together with the first.
+ * (m -/+ 1), the guess on the other side of k = 1 when k is near 1, a
+ * circular-arc / straight-line guess from the tangent angles, and the arc of the
+ * circle fitted to the points themselves (algebraic least squares: no tangents, so
+ * points clustered closer than their noise do not spoil it); with n <= 40 also those
+ * of the polygon whose sides shorter than two noise levels are merged (noisy short
+ * sides' tangents are noise), ranked together with the first.
  * With more than 128 points, x0, y0 and the ranking use every stride-th point (at most
  * 128; the discrete candidate evaluated there as its continuum limit, O(h^2) apart).
  * Errors: EL_EINVAL (NULL, cap = 0, n < 4, NaN/inf), EL_ESINGULAR (all points

@@ -492,18 +492,24 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
     for (int j = 0; j < FIT_NP && smooth_start; j++)     /* the caller's (o holds a start point in x0, y0) */
         if (opt->fixed[j] || isfinite(opt->lower[j]) || isfinite(opt->upper[j])) smooth_start = 0;
     size_t free_ci = (size_t)-1;    /* the unconstrained start's index in cand, once added */
-    /* without rows, Ipopt polishes only in el__fit_fallback's run (FIT_RUN_POLISH): the fit
-     * kept, when Levenberg-Marquardt leaves it uncertified (below), not every guess and
-     * refit so left (the refits below pass no_polish = 1). Each polish cost ~1.3 ms an
-     * iteration, up to max_iter, and crept along the valley where Levenberg-Marquardt had:
-     * measured on 2 x 150 sparse uneven noisy sketches (bench_fit_sparse.py's generator,
-     * seeds 6 and 7), both models, free: 37 polishes in 15 fits, none certified, 8.9 s of
-     * the 9.8 s CPU of the 600 fits; without them every rms the same to 1 %, every fit
-     * certified, 0.8 s. The 504-curve suite: success the same, every rms the same to 1e-3 */
-    const int no_polish = lm_only || !(flags & FIT_RUN_POLISH);
+    /* without rows or bounds, Ipopt polishes only in el__fit_fallback's run (FIT_RUN_POLISH):
+     * the fit kept, when Levenberg-Marquardt leaves it uncertified (below), not every guess
+     * and refit so left. Each polish cost ~1.3 ms an iteration, up to max_iter, and crept
+     * along the valley where Levenberg-Marquardt had: measured on 2 x 150 sparse uneven
+     * noisy sketches (bench_fit_sparse.py's generator, seeds 6 and 7), both models, free:
+     * 37 polishes in 15 fits, none certified, 8.9 s of the 9.8 s CPU of the 600 fits;
+     * without them every rms the same to 1 %, every fit certified, 0.8 s. The 504-curve
+     * suite: success the same, every rms the same to 1e-3. With bounds each guess is
+     * polished as before: Levenberg-Marquardt creeps towards an active bound, where Ipopt
+     * stops (a k range excluding the points' k: a guess crept 200 iterations towards its
+     * end, and Ipopt from its point reached it) */
+    int bounded = 0;
+    for (int j = 0; j < map.nx; j++) bounded |= isfinite(xl[j]) || isfinite(xu[j]);
+    const int no_polish = lm_only || (!bounded && !(flags & FIT_RUN_POLISH));
     /* el__fit_fallback's run: Ipopt straight from the kept fit (the caller's start), its
-     * feet from its curve, as the polish of a guess was */
-    const int polish_run = !no_polish && !need_ipopt && o.use_initial;
+     * feet from its curve, as the polish of a guess was; its refits are not polished */
+    const int polish_run = (flags & FIT_RUN_POLISH) && !lm_only && !need_ipopt && o.use_initial;
+    const int refit_no_polish = no_polish || polish_run;
     if (ends_chart && free_start) {
         /* held ends: the unconstrained fit's curve turned and scaled onto them is the first
          * start. The guesses turned and scaled onto the ends can lie far from the points (a
@@ -703,7 +709,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
             cand_result r;
             ob.have_base = 0;
             if ((!last_is_best && el__fit_feet_start(&ob, best.x)) ||
-                (st = solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, 1, best.x, HUGE_VAL, &r, tmp, 1, 1)) ||
+                (st = solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, refit_no_polish, best.x, HUGE_VAL, &r, tmp, 1, 1)) ||
                 !isfinite(r.f)) {
                 if (st) goto done;
                 best.status = EL_ENOCONV;
@@ -738,7 +744,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
         ob.have_base = 0;
         cand_result r;
         if (moved) ob.lm_tol = LOOSE_TOL;
-        st = solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, 1, best.x, best.f, &r, tmp, 1, 1);
+        st = solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, moved || refit_no_polish, best.x, best.f, &r, tmp, 1, 1);
         ob.lm_tol = certificate;
         if (st) goto done;
         iters += r.iters;
@@ -819,7 +825,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
             st = res->status;
     }
     /* not certified: Ipopt from this one (fit_restart.c); held ends as its rows */
-    if (!need_ipopt && !(flags & (FIT_RUN_LM_ONLY | FIT_RUN_POLISH | FIT_RUN_INNER)) &&
+    if (!need_ipopt && !bounded && !(flags & (FIT_RUN_LM_ONLY | FIT_RUN_POLISH | FIT_RUN_INNER)) &&
         (st == EL_ENOCONV || st == EL_EMAXITER))
         st = el__fit_fallback(model, xy, n, opt, ends_chart ? FIT_RUN_ROWS : FIT_RUN_POLISH, res, d, fs);
 done:

@@ -26,8 +26,9 @@
  *    for the smooth model that is the curve (|w|, -k, -q), so clockwise loops
  *    get k < -1 (to_smooth); the discrete model keeps k > 0 and z < 0.
  *  - Ambiguity (k near 1, a wrong unwrap) is handled by candidates: the guess on
- *    the other side of k = 1 and a circular-arc / straight-line guess; the fit
- *    tries them in order of their initial rms.
+ *    the other side of k = 1, a circular-arc / straight-line guess and the arc of the
+ *    circle fitted to the points (no tangent angles); the fit tries them in order of
+ *    their initial rms.
  */
 #include "fit_internal.h"
 #include <stdlib.h>
@@ -40,7 +41,7 @@
 
 /* GUESSES_MAX from one polygon, of the two polygons (guess_run) the CAND_OUT best ranked
  * handed out (the header's "at most 6") */
-enum { BLOCKS = 32, RAW_MAX = 40, GUESSES_MAX = 5, NCAND_MAX = 2 * GUESSES_MAX, CAND_OUT = 6,
+enum { BLOCKS = 32, RAW_MAX = 40, GUESSES_MAX = 6, NCAND_MAX = 2 * GUESSES_MAX, CAND_OUT = 6,
        NOISE_SAMPLES = 65536, FRAME_PROBE = 32, MERGE_NOISE = 2, MERGED_MIN = 8 };
 
 /* A model-independent guess in normalised coordinates: u(s) = w s + q, s = t L. */
@@ -537,6 +538,40 @@ static size_t guesses(const points *p, fractions *f, double merge, cguess *out)
                 g->k = 10.0; g->w = A / (2.0 * g->k); g->q = 0.0; g->phi = c[0];
             }
             cnt++;
+        }
+    }
+    /* the circle nearest the polygon's points algebraically (Kasa: x^2 + y^2 + D x + E y + F
+     * = 0, linear in D, E, F), its arc from the first point's angle about the centre to the
+     * last's. It uses no tangent angle, which points clustered closer than their noise spoil
+     * (measured: 59 points along a gentle arc, k = 0.39 turning by 1.2 rad, noise 1 %,
+     * turned by 0..88 degrees: the guesses above reached rms 0.0090 only through the
+     * other model's fit or not at all (0.034-0.045 at 60-64 degrees); the fit from this
+     * one, 0.0090 at every angle in ~3 ms). Nearly straight (turning < 1e-3): the line above. */
+    if (m >= 3) {
+        double X[3 * (RAW_MAX + 1)], b[RAW_MAX + 1], c[3];
+        for (size_t i = 0; i < m; i++) {
+            const double x = Q[2 * i], y = Q[2 * i + 1];
+            X[3 * i] = x; X[3 * i + 1] = y; X[3 * i + 2] = 1.0;
+            b[i] = -(x * x + y * y);
+        }
+        if (!linfit(m, 3, X, b, c)) {
+            const double cx = -0.5 * c[0], cy = -0.5 * c[1], R = sqrt(cx * cx + cy * cy - c[2]);
+            double prev = atan2(Q[1] - cy, Q[0] - cx), turn = 0.0;
+            const double a0 = prev;
+            for (size_t i = 1; i < m; i++) {
+                const double a = atan2(Q[2 * i + 1] - cy, Q[2 * i] - cx);
+                turn += remainder(a - prev, 2.0 * M_PI);
+                prev = a;
+            }
+            if (isfinite(R) && R > 0.0 && fabs(turn) >= 1e-3 && isfinite(turn)) {
+                const double sg = turn > 0.0 ? 1.0 : -1.0;
+                cguess *g = &out[cnt++];
+                g->L = R * fabs(turn);
+                g->k = 10.0;                      /* near circle: kappa ~ 2 k w for k > 1 */
+                g->w = sg / (R * 2.0 * g->k);
+                g->q = 0.0;
+                g->phi = a0 + sg * 0.5 * M_PI;    /* the tangent at the first point */
+            }
         }
     }
     return cnt;

@@ -408,7 +408,10 @@ static void run_job(thread_job *j)
         for (size_t i = 0; i < 2 * n; i++) xy[i] += 1e-3 * test_uniform(&rng, -1, 1);
         el_fit_options o;
         el_fit_options_defaults(&o);
-        if (j->bounded) { o.lower[6] = 0.9; o.upper[6] = 1.0; }    /* excludes the truth */
+        /* a k range excluding the truth; one guess (the circle) creeps towards its end, EL_OK
+         * at rms 0.027 after ~1000 iterations where 200 leave it uncertified at 0.060 (the
+         * other guesses' basin: 0.142) */
+        if (j->bounded) { o.lower[6] = 0.9; o.upper[6] = 1.0; o.max_iter = 1000; }
         el_fit_discrete(xy, n, &o, NULL, &j->res[r], j->dist[r], foot);
     }
 }
