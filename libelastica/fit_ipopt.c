@@ -272,6 +272,18 @@ static Bool cb_h(Index n, Number *x, Bool new_x, Number obj_factor, Index m, Num
     return !el__all_finite(values, (size_t)e);
 }
 
+/* f at this iteration hopeless against an earlier guess's (o->f_ceiling): the decrease of
+ * the last LBFGS_RATE_SPAN iterations, kept up for the remaining ones, would not reach it
+ * (fit_lm.c's rate test). */
+static int hopeless(ipctx *c, double f)
+{
+    const double ceiling = c->o->f_ceiling;
+    const int k = c->n_iter++;
+    const double old = c->recent[k % LBFGS_RATE_SPAN];
+    c->recent[k % LBFGS_RATE_SPAN] = f;
+    return k >= 2 * LBFGS_RATE_SPAN && f > ceiling && (old - f) / LBFGS_RATE_SPAN * (c->max_iter - k) < f - ceiling;
+}
+
 /*
  * L-BFGS's stop without constraint rows or finite bounds (c->free: the certificate is the
  * first-order condition of f alone; with them Ipopt's own tests, 'acceptable' included),
@@ -288,6 +300,9 @@ static Bool cb_h(Index n, Number *x, Bool new_x, Number obj_factor, Index m, Num
  *   rms 4e-8, stalled at 1e-8 of f); else an uncertified stop (Ipopt's status 5 then
  *   means EL_ENOCONV);
  * - hopeless against an earlier guess (o->f_ceiling): fit_lm.c's rate test.
+ * The exact Hessian's runs without rows stop by the rate test alone (on Ipopt's objective:
+ * with bounds, later guesses of 1000 points crept 200 iterations from outside a k range,
+ * 4-9 s each, test_fit_lbfgs.c's k range); with rows Ipopt's own tests.
  */
 static Bool cb_iter(Index alg_mod, Index iter, Number obj, Number inf_pr, Number inf_du, Number mu,
                     Number d_norm, Number reg, Number alpha_du, Number alpha_pr, Index ls,
@@ -297,8 +312,13 @@ static Bool cb_iter(Index alg_mod, Index iter, Number obj, Number inf_pr, Number
     (void)alpha_du; (void)alpha_pr; (void)ls;
     ipctx *c = ud;
     c->iters = iter;
-    if (!c->free || alg_mod != 0 || !c->have_g) return TRUE;
-    const double f = c->gval.f, ceiling = c->o->f_ceiling;
+    if (!c->free) {
+        /* the exact Hessian without rows (bounds alone, every iterate within them): the
+         * rate test on Ipopt's objective (an earlier f need not meet rows) */
+        return c->m > 0 || alg_mod != 0 || !hopeless(c, obj);
+    }
+    if (alg_mod != 0 || !c->have_g) return TRUE;
+    const double f = c->gval.f;
     c->flat = iter > 0 && f >= c->last_f * (1.0 - 1e-12) ? c->flat + 1 : 0;
     c->last_f = f;
     if (el__fit_first_order(&c->gval, c->nx, c->o->lm_tol) ||
@@ -306,13 +326,7 @@ static Bool cb_iter(Index alg_mod, Index iter, Number obj, Number inf_pr, Number
         c->certified = 1;
         return FALSE;
     }
-    const int k = c->n_iter++;
-    const double old = c->recent[k % LBFGS_RATE_SPAN];
-    c->recent[k % LBFGS_RATE_SPAN] = f;
-    if (k >= 2 * LBFGS_RATE_SPAN && f > ceiling &&
-        (old - f) / LBFGS_RATE_SPAN * (c->max_iter - k) < f - ceiling)
-        return FALSE;
-    return c->flat < LBFGS_FLAT;
+    return !hopeless(c, f) && c->flat < LBFGS_FLAT;
 }
 
 /*
