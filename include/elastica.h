@@ -316,12 +316,15 @@ enum el_fit_distance { EL_DISTANCE_AUTO = 0, EL_DISTANCE_ORTHOGONAL = 1, EL_DIST
  * options. Tangents are directions (angle of the unit tangent, rad, the direction of
  * travel from the first point to the last); curvatures signed (+ = turning
  * counter-clockwise, 0 = an inflection or a free end), in 1/input units. For the discrete
- * model the start/end point is vertex 0 / n-1, the tangent that of the first / last
- * segment, the curvature (2/h) tan(K/2) at the end vertex of the curve extended by one
- * vertex (seed 000 (3.4)), the length (n-1) h. Met to 1e-10 of the data's size (1e-10
- * rad for angles), or the fit fails with EL_EDOM naming the constraint.
+ * model the start/end point is vertex 0 / n-1, the tangent that vertex's theta_j = phi +
+ * 2 a(q + j z) with sin a = k sn, cos a = dn (seed 000 (4.4): segment j runs at the mean
+ * of theta_j and theta_j+1; theta_j is the smooth elastica's tangent angle with the same
+ * phi, k, q, mu = 1, at s = j z; a B-spline through the vertices clamped to it is the
+ * curve's G1 join), the curvature (2/h) tan(K/2) at the end vertex of the curve extended
+ * by one vertex (seed 000 (3.4)), the length (n-1) h. Met to 1e-10 of the data's size
+ * (1e-10 rad for angles), or the fit fails with EL_EDOM naming the constraint.
  * Held exactly, without Ipopt, at the one end that has more of them (the end's by
- * fitting the points in reverse order): the point; smooth, the tangent and the
+ * fitting the points in reverse order): the point and the tangent; smooth, the
  * curvature; discrete, a zero curvature. Both end points, with no other constraint,
  * are held exactly together (the fitted shape turned and scaled about the start point
  * onto the end point: no Ipopt). The others are Ipopt's constraint rows.

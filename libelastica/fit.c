@@ -368,7 +368,8 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
 
     /* the map: free parameters, their scales, the start-state chart. The chart replaces
      * (phi, w or z, k, q) when all four are free and unbounded; it then holds a start
-     * tangent (smooth: theta0) and a start curvature (smooth: kappa0; discrete: 0, where
+     * tangent (theta0; discrete: vertex 0's theta_0, fit_model.c) and a start curvature
+     * (smooth: kappa0; discrete: 0, where
      * its (3.4) curvature and the chart's 2 k W cn q vanish together, at cn q = 0) as
      * variables fixed at their values: met exactly, no constraint row. As rows (Ipopt,
      * in (phi, w, k, q)) kappa0 = 0 was reached only along k -> 1, q -> oo, where its
@@ -379,8 +380,9 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
     for (int a = 0; a < 4; a++)
         if (o.fixed[sl[a]] || isfinite(lo[sl[a]]) || isfinite(hi[sl[a]])) chart_ok = 0;
     if (chart_ok && model == FIT_SMOOTH) held = o.constraints & (EL_CONSTRAIN_START_TANGENT | EL_CONSTRAIN_START_CURVATURE);
-    if (chart_ok && model == FIT_DISCRETE && (o.constraints & EL_CONSTRAIN_START_CURVATURE) && con.start_kappa == 0.0)
-        held = EL_CONSTRAIN_START_CURVATURE;
+    if (chart_ok && model == FIT_DISCRETE)
+        held = (o.constraints & EL_CONSTRAIN_START_TANGENT) |
+               ((o.constraints & EL_CONSTRAIN_START_CURVATURE) && con.start_kappa == 0.0 ? EL_CONSTRAIN_START_CURVATURE : 0);
     /* both end points and nothing else: the ends chart (fit_model.c) holds both, and the fit
      * needs no Ipopt (FIT_RUN_ROWS: as rows, the fallback below). Measured on 4 x 150 sparse
      * uneven noisy sketches of 6-59 points (bench_fit_sparse.py's generator, seeds 6 and 7),
@@ -394,9 +396,10 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
                            fit_norm(chord[0], chord[1]) > 1e-9 && !isfinite(lo[jl]) && !isfinite(hi[jl]) && !o.fixed[jl];
     if (ends_chart) held = EL_CONSTRAIN_END_POINT;
     const int need_ipopt = (o.constraints & ~(EL_CONSTRAIN_START_POINT | EL_CONSTRAIN_LENGTH | EL_CONSTRAIN_K | held)) != 0;
-    /* the discrete start tangent and non-zero curvature stay Ipopt's rows, started by
-     * continuation in the chart (el__fit_held_start; measured on a sketched S, start tangent: rms
-     * 0.70 in 1400 iterations from the free fit, 0.35 by continuation) */
+    /* the discrete non-zero start curvature stays an Ipopt row, started by continuation in
+     * the chart (el__fit_held_start; measured on a sketched S, then with the first segment's
+     * direction as the start tangent, a row too: rms 0.70 in 1400 iterations from the free
+     * fit, 0.35 by continuation) */
     const int staged = chart_ok ? (held | o.constraints) & (EL_CONSTRAIN_START_TANGENT | EL_CONSTRAIN_START_CURVATURE) : 0;
     fit_constraints con_rows = con;      /* the constraints left to Ipopt's rows */
     con_rows.mask &= ~held;
@@ -569,7 +572,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
         } else {
             int pre = 0;
             if (staged && !polish_run) {
-                pre = el__fit_held_start(&ob, &map, &free_map, staged, &con, o.max_iter, p0, x0, tmp);
+                pre = el__fit_held_start(&ob, &map, &free_map, staged, &con, o.max_iter, p0, x0);
                 first_feet(&ob, t, p0[6]);      /* again (the stages moved them) */
             }
             if ((st = solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, no_polish, x0, best.f, &r, tmp,

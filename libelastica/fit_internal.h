@@ -414,7 +414,7 @@ int el__fit_violated(const fit_objective *ob, const fit_constraints *con, const 
 /* A start for a fit with a start tangent or curvature (bits) by continuation in the
  * start-state chart; x: out's variables. Returns the iterations spent. */
 int el__fit_held_start(fit_objective *ob, const fit_map *out, const fit_map *free_map, int bits,
-                       const fit_constraints *con, int max_iter, const double *p0, double *x, double *tmp);
+                       const fit_constraints *con, int max_iter, const double *p0, double *x);
 /* How many of one end's constraints a fit would hold exactly at its start (weighted). */
 int el__fit_held_score(const el_fit_options *o, int model, int at_end);
 /* p (input units, n points) replaced by the same curve run backwards, canonical. */

@@ -191,8 +191,10 @@ static int smooth_end(const double *v, int at_end, fit_end *e)
     return EL_OK;
 }
 
-/* Discrete, vertex j0 = 0 (at_end 0) or n-1: the tangent of the adjacent segment,
- * Theta = phi + a_j + a_{j+1} (j = 0 or n-2), and the extended curvature
+/* Discrete, vertex j0 = 0 (at_end 0) or n-1: the vertex's tangent angle theta_j0 = phi +
+ * 2 a_j0 (seed 000 (4.4): the segment between vertices j and j+1 runs at the mean of
+ * theta_j and theta_j+1; theta_j0 is the smooth elastica's tangent at u_j0 = z j0 + q,
+ * the start-state chart's theta0 at j0 = 0), and the extended curvature
  * kappa = (2/h) tan((a_{j0+1} - a_{j0-1})/2) (seed 000 (3.4) at the end vertex). */
 static int discrete_end(const double *v, size_t n, int at_end, fit_end *e, double *tmp)
 {
@@ -222,14 +224,11 @@ static int discrete_end(const double *v, size_t n, int at_end, fit_end *e, doubl
             }
         }
     }
-    /* the segment: a_{j0} + a_{j0+1} at the start, a_{j0-1} + a_{j0} at the end */
-    const half_angle *s0 = at_end ? &ha[0] : &ha[1], *s1 = at_end ? &ha[1] : &ha[2];
-    const double j_s0 = at_end ? js[0] : js[1], j_s1 = at_end ? js[1] : js[2];
-    e->theta = v[3] + s0->a + s1->a;
+    e->theta = v[3] + 2.0 * ha[1].a;
     e->dtheta[3] = 1.0;
-    e->dtheta[4] = s0->a_u * j_s0 + s1->a_u * j_s1;
-    e->dtheta[5] = s0->a_u + s1->a_u;
-    e->dtheta[6] = s0->a_k + s1->a_k;
+    e->dtheta[4] = 2.0 * ha[1].a_u * js[1];
+    e->dtheta[5] = 2.0 * ha[1].a_u;
+    e->dtheta[6] = 2.0 * ha[1].a_k;
     const double D = ha[2].a - ha[0].a, tn = tan(0.5 * D);
     e->kappa = 2.0 / h * tn;
     const double dD = (1.0 + tn * tn) / h;          /* d kappa / d D */

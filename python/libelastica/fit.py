@@ -243,7 +243,7 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     curve follows the points: one that strays from them (a loop or a pass where there is
     no point, the points passed out of order) is fitted again from the paired fit and
     replaced when that one follows them, even at a higher rms (free fits and those whose
-    constraints are held exactly: the start point, the smooth start tangent and
+    constraints are held exactly: the start point and tangent, the smooth start
     curvature). max_candidates: initial
     guesses fitted at most (default 6; fitting stops at the first that reaches the
     data's noise level).
@@ -252,7 +252,10 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     "end_curvature": kappa, "length": (lo, hi), "k": (lo, hi)}`` (angles in radians,
     the direction of travel from the first point to the last; curvature signed, +
     turning left, 0 an inflection; ranges with None for no limit), met to 1e-10 of the
-    data's size or ConstraintError naming the one that cannot be met.
+    data's size or ConstraintError naming the one that cannot be met. The discrete
+    model's tangent at vertex j is theta_j = phi + 2 a(q + j z), the tangent of the
+    smooth elastica with its phi, k, q and mu = 1 at s = j z (segment j runs at the mean
+    of theta_j and theta_j+1, seed 000 (4.4)).
     fixed: parameters held at given values, e.g. ``{"x0": 0, "y0": 0}`` or ``{"h": r}``.
     bounds: ``{name: (lo, hi)}`` (None = unbounded). initial: start from this curve
     instead of the automatic guess. A fit that does not converge returns the best curve

@@ -471,8 +471,11 @@ START_TEST(test_ipopt_opt_in_working_directory_ignored)
     el_discrete_eval(&p, n, xy);
     el_fit_options o;
     el_fit_options_defaults(&o);
-    o.constraints = EL_CONSTRAIN_END_TANGENT;
-    o.end_tangent = atan2(xy[2 * n - 1] - xy[2 * n - 3], xy[2 * n - 2] - xy[2 * n - 4]);
+    /* the curve's own vertex tangents at both ends (the start one held, the end one Ipopt's
+     * row) */
+    o.constraints = EL_CONSTRAIN_START_TANGENT | EL_CONSTRAIN_END_TANGENT;
+    o.start_tangent = discrete_vertex_tangent(&p, 0.0);
+    o.end_tangent = discrete_vertex_tangent(&p, (double)(n - 1));
     el_fit_discrete_result r;
     const int st = el_fit_discrete(xy, n, &o, NULL, &r, NULL, NULL);
     fflush(stdout);

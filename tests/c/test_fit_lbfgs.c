@@ -7,7 +7,10 @@
  * points (pairs repeated) at the scale 1e300, a start tangent, 5 candidates of 191
  * iterations. Unscaled, L-BFGS ran every candidate to max_iter (1560 iterations, 3.3 s)
  * and returned EL_EDOM with the tangent unmet; with the variables scaled
- * (fit_ipopt.c, lbfgs_scaling) 209 iterations and the exact Hessian's rms. */
+ * (fit_ipopt.c, lbfgs_scaling) 209 iterations and the exact Hessian's rms. The tangent,
+ * 1 rad from the free fit's, is now held in the start-state chart (the discrete vertex
+ * tangent), reached in 16 continuation stages (four ended at rms 0.23 of the normalised
+ * points, every guess, 1-1.8 s a fit; sixteen at 0.097 in 0.03-0.07 s). */
 static const double loop62[] = {
     -0.0012859825871474283, -0.017132662840944536, 0.11763869014871596, 0.04041954775995996,
     0.15382062186005924, 0.16103249793030622, 0.15382062186005924, 0.16103249793030622,
@@ -58,7 +61,9 @@ START_TEST(test_lbfgs_start_tangent_converges_not_crawls)
     o.limited_memory = 1;
     const int st = el_fit_discrete(xy, n, &o, NULL, &lbfgs, NULL, NULL);
     ck_assert_msg(st == EL_OK, "status %d, %d iterations", st, lbfgs.iterations);
-    ck_assert_msg(lbfgs.iterations <= 2 * o.max_iter, "%d iterations", lbfgs.iterations);
+    /* the held tangent's continuation stages (fit_constraints.c) count in both */
+    ck_assert_msg(lbfgs.iterations <= exact.iterations + 2 * o.max_iter, "%d iterations, exact Hessian %d",
+                  lbfgs.iterations, exact.iterations);
     ck_assert_msg(fabs(lbfgs.rms - exact.rms) <= 1e-6 * exact.rms, "rms %.17g, exact Hessian %.17g",
                   lbfgs.rms, exact.rms);
 }

@@ -114,8 +114,44 @@ START_TEST(test_end_state_derivatives)
 }
 END_TEST
 
+/* The discrete end tangent is the vertex tangent theta_j = phi + 2 a_j (a tangent
+ * constraint's meaning): checked by its defining identity, seed 000 (4.4), segment j
+ * running at the mean of theta_j and theta_j+1 (both from el__fit_end_state, the end
+ * vertex of the polygon cut after vertex j and j+1), at every segment of 30-vertex
+ * polygons, k across 1 and k < 0 (the internal sign, |k| with q + 2K). */
+START_TEST(test_discrete_vertex_tangents)
+{
+    double tmp[FIT_WORK];
+    const double cases[][7] = {{0.3, -0.2, 0.01, 0.4, 0.02, 0.3, 0.6}, {0.3, -0.2, 0.01, 0.4, -0.03, 0.3, -0.4},
+                               {0.0, 0.0, 0.05, 1.0, 0.05, -0.2, 2.0}, {0.0, 0.0, 0.05, -2.0, 0.08, 0.4, 0.999},
+                               {0.0, 0.0, 0.05, -2.0, 0.08, 0.4, 1.0}, {0.0, 0.0, 0.05, -2.0, 0.08, 0.4, 1.001},
+                               {1.0, 2.0, 3.0, 0.5, 0.2, -1.0, 0.1}};
+    enum { N = 30 };
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        const double *v = cases[c];
+        el_discrete_params p;
+        ck_assert_int_eq(el__fit_to_discrete(v, &p, NULL), EL_OK);
+        double V[2 * N];
+        ck_assert_int_eq(el_discrete_eval(&p, N, V), EL_OK);
+        fit_end e0, e1, s0;
+        ck_assert_int_eq(el__fit_end_state(FIT_DISCRETE, v, N, 0, &s0, tmp), EL_OK);
+        ck_assert_int_eq(el__fit_end_state(FIT_DISCRETE, v, 1, 1, &e0, tmp), EL_OK);   /* vertex 0 as an end */
+        ck_assert(fabs(remainder(s0.theta - e0.theta, 2 * M_PI)) <= 1e-14);
+        for (size_t j = 0; j + 1 < N; j++) {
+            ck_assert_int_eq(el__fit_end_state(FIT_DISCRETE, v, j + 1, 1, &e0, tmp), EL_OK);
+            ck_assert_int_eq(el__fit_end_state(FIT_DISCRETE, v, j + 2, 1, &e1, tmp), EL_OK);
+            const double mean = e0.theta + 0.5 * remainder(e1.theta - e0.theta, 2 * M_PI);
+            const double seg = atan2(V[2 * j + 3] - V[2 * j + 1], V[2 * j + 2] - V[2 * j]);
+            ck_assert_msg(fabs(remainder(seg - mean, 2 * M_PI)) <= 1e-12, "case %zu segment %zu: %.17g vs %.17g", c, j,
+                          seg, mean);
+        }
+    }
+}
+END_TEST
+
 /* The keyline's joint variables: every point of them is a G2 joint (zero curvature on
- * both sides, opposite tangents), and d v / d x matches central differences. */
+ * both sides, opposite tangents: discrete, the first segments), and d v / d x matches
+ * central differences. */
 START_TEST(test_keyline_map_is_g2_with_its_derivative)
 {
     double tmp[FIT_WORK];
@@ -140,8 +176,18 @@ START_TEST(test_keyline_map_is_g2_with_its_derivative)
                 ck_assert_msg(fabs(e[c].kappa) <= 1e-12, "model %d side %d kappa %g", model, c, e[c].kappa);
             }
             ck_assert(fabs(e[0].xy[0] - e[1].xy[0]) == 0.0 && fabs(e[0].xy[1] - e[1].xy[1]) == 0.0);
-            ck_assert_msg(fabs(remainder(e[0].theta - e[1].theta - M_PI, 2 * M_PI)) <= 1e-13,
-                          "model %d tangents %g %g", model, e[0].theta, e[1].theta);
+            /* discrete: the polygon runs straight through the joint, its first segments
+             * opposite (the vertex tangents of el__fit_end_state need not be) */
+            double th[2] = {e[0].theta, e[1].theta};
+            for (int c = 0; c < 2 && model == FIT_DISCRETE; c++) {
+                el_discrete_params p;
+                double V[4];
+                ck_assert_int_eq(el__fit_to_discrete(v[c], &p, NULL), EL_OK);
+                ck_assert_int_eq(el_discrete_eval(&p, 2, V), EL_OK);
+                th[c] = atan2(V[3] - V[1], V[2] - V[0]);
+            }
+            ck_assert_msg(fabs(remainder(th[0] - th[1] - M_PI, 2 * M_PI)) <= 1e-13,
+                          "model %d tangents %g %g", model, th[0], th[1]);
             for (int j = 0; j < m.nx; j++) {
                 const double h = 1e-6 * (1.0 + fabs(x[j]));
                 double vp[2][FIT_NP], vm[2][FIT_NP];
@@ -551,6 +597,7 @@ static Suite *suite(void)
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, test_blocked_discrete_walk_equals_one_call);
     tcase_add_test(tc, test_end_state_derivatives);
+    tcase_add_test(tc, test_discrete_vertex_tangents);
     tcase_add_test(tc, test_keyline_map_is_g2_with_its_derivative);
     tcase_add_test(tc, test_start_chart_same_curve_and_derivative);
     tcase_add_test(tc, test_ends_chart_same_curve_and_derivative);

@@ -17,6 +17,15 @@
     ck_assert_msg(fabs(_a - _b) <= _t, "%s = %.17g, %s = %.17g, |diff| = %.3g > %.3g", \
                   #a, _a, #b, _b, fabs(_a - _b), _t); } while (0)
 
+/* The discrete curve p's tangent at vertex j, theta_j = phi + 2 a(q + j z) (sin a = k sn,
+ * cos a = dn: the fit's tangent constraint; seed 000 (4.4)). */
+static inline double discrete_vertex_tangent(const el_discrete_params *p, double j)
+{
+    el_jacobi J;
+    ck_assert_int_eq(el_jacobi_eval(p->q + j * p->z, p->k, &J, NULL, NULL), EL_OK);
+    return p->phi + 2.0 * atan2(p->k * J.sn, J.dn);
+}
+
 /* Deterministic uniform random number in [lo, hi) (xorshift, per-test state). */
 static inline double test_uniform(unsigned long long *state, double lo, double hi)
 {
