@@ -512,7 +512,9 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
      * end, and Ipopt from its point reached it) */
     int bounded = 0;
     for (int j = 0; j < map.nx; j++) bounded |= isfinite(xl[j]) || isfinite(xu[j]);
-    const int no_polish = lm_only || (!bounded && !(flags & FIT_RUN_POLISH));
+    /* deferred: this fit's guesses and refits are not polished; its kept fit may be */
+    const int deferred = !lm_only && !need_ipopt && !bounded && !(flags & FIT_RUN_POLISH);
+    const int no_polish = lm_only || deferred;   /* with rows Ipopt runs whatever it is */
     /* el__fit_fallback's run: Ipopt straight from the kept fit (the caller's start), its
      * feet from its curve, as the polish of a guess was; its refits are not polished */
     const int polish_run = (flags & FIT_RUN_POLISH) && !lm_only && !need_ipopt && o.use_initial;
@@ -646,7 +648,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
          * start ran, 14 -> 56 ms, for the same fit). Not one that crawled to max_iter: the
          * next guesses can reach a lower basin (a discrete sketch of 41 points: 0.0072 by
          * the third guess, where the first crawled to 0.016 within 1.5 x the figure) */
-        const int settled = best.status == EL_OK || (no_polish && !lm_only && !need_ipopt && best.status == EL_ENOCONV);
+        const int settled = best.status == EL_OK || (deferred && best.status == EL_ENOCONV);
         if (rms <= 1.5 * noise && settled && !(need_ipopt && kind == FIT_ORTHOGONAL && best_strays > 0)) {
             /* held ends: the discrete fit's smooth start too, while above the data's own
              * figure (the constrained fits' plain noise figure is high on sparse curved
@@ -832,8 +834,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
             st = res->status;
     }
     /* not certified: Ipopt from this one (fit_restart.c); held ends as its rows */
-    if (!need_ipopt && !bounded && !(flags & (FIT_RUN_LM_ONLY | FIT_RUN_POLISH | FIT_RUN_INNER)) &&
-        (st == EL_ENOCONV || st == EL_EMAXITER))
+    if (deferred && !(flags & FIT_RUN_INNER) && (st == EL_ENOCONV || st == EL_EMAXITER))
         st = el__fit_fallback(model, xy, n, opt, ends_chart ? FIT_RUN_ROWS : FIT_RUN_POLISH, res, d, fs);
 done:
     el__fit_objective_free(&ob);

@@ -474,6 +474,17 @@ static int phase_fit(const segs *S, double phi, double mu, double A, double k, c
     return EL_OK;
 }
 
+/* A circular arc of curvature kappa, start tangent theta0, length L as a guess: k = 10
+ * (kappa = 2 k w cn u ~ 2 k w for k > 1, within 1 % of constant), u(0) = 0. */
+static void near_circle(double theta0, double kappa, double L, cguess *g)
+{
+    g->k = 10.0;
+    g->w = kappa / (2.0 * g->k);
+    g->q = 0.0;
+    g->phi = theta0;
+    g->L = L;
+}
+
 /* Guesses in normalised coordinates from the polygon reduced with `merge` (reduce);
  * returns how many (<= GUESSES_MAX; none from a merged polygon that kept every point or
  * fewer than MERGED_MIN). */
@@ -534,8 +545,8 @@ static size_t guesses(const points *p, fractions *f, double merge, cguess *out)
             g->L = L;
             if (fabs(A) * L < 1e-3) {        /* nearly straight: tiny k */
                 g->k = 1e-3; g->w = 1.0 / L; g->q = 0.0; g->phi = c[0] + 0.5 * A * L;
-            } else {                          /* near circle: kappa ~ 2 k w for k > 1 */
-                g->k = 10.0; g->w = A / (2.0 * g->k); g->q = 0.0; g->phi = c[0];
+            } else {
+                near_circle(c[0], A, L, g);
             }
             cnt++;
         }
@@ -564,13 +575,8 @@ static size_t guesses(const points *p, fractions *f, double merge, cguess *out)
                 prev = a;
             }
             if (isfinite(R) && R > 0.0 && fabs(turn) >= 1e-3 && isfinite(turn)) {
-                const double sg = turn > 0.0 ? 1.0 : -1.0;
-                cguess *g = &out[cnt++];
-                g->L = R * fabs(turn);
-                g->k = 10.0;                      /* near circle: kappa ~ 2 k w for k > 1 */
-                g->w = sg / (R * 2.0 * g->k);
-                g->q = 0.0;
-                g->phi = a0 + sg * 0.5 * M_PI;    /* the tangent at the first point */
+                const double sg = turn > 0.0 ? 1.0 : -1.0;     /* the tangent at the first point: */
+                near_circle(a0 + sg * 0.5 * M_PI, sg / R, R * fabs(turn), &out[cnt++]);
             }
         }
     }
