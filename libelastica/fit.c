@@ -11,7 +11,7 @@
  * initial rms; the next is tried only while the best rms is above both the exact level
  * and 1.5 x the noise level estimated from third differences (el__fit_noise_rms, its
  * normal part for a distance to the curve; the plain figure for a constrained fit).
- * Each is fitted by Levenberg-Marquardt (fit_lm.c); a result certified by its
+ * Each is fitted (fit_candidate.c) by Levenberg-Marquardt (fit_lm.c); a result certified by its
  * first-order condition and inside the caller's bounds is final. Ipopt (fit_ipopt.c)
  * runs from there for bounds that are active, constraints, or an uncertified result.
  * Constraints on the start point are the parameters x0, y0 held, a start tangent or
@@ -52,239 +52,6 @@ static int evenly_spaced(const double *xy, size_t n)
         if (i + 1 >= w) { lo = fmin(lo, run); hi = fmax(hi, run); }
     }
     return hi <= 1.3 * lo;
-}
-
-static int ipopt_to_status(int rs)
-{
-    switch (rs) {
-    case 0: case 1: return EL_OK;          /* Solve_Succeeded, Solved_To_Acceptable_Level */
-    case -1: case -4: return EL_EMAXITER;  /* Maximum_Iterations_Exceeded, Maximum_CpuTime_Exceeded */
-    case 2: return EL_EDOM;                /* Infeasible_Problem_Detected */
-    default: return EL_ENOCONV;
-    }
-}
-
-typedef struct cand_result {
-    double x[FIT_MAXX], f;
-    int status, iters, used_ipopt, ipopt_status;
-} cand_result;
-
-/*
- * A start for Ipopt when the unconstrained fit lies outside the bounds: the variables
- * beyond them held at their bounds and the others fitted again (Levenberg-Marquardt),
- * so that Ipopt starts at the best point of the active bounds' face instead of at a
- * clamped point far from any fit (measured: a k bound excluding the data's k, 200 Ipopt
- * iterations from the clamped point, a handful from this one). Returns the iterations.
- */
-static int bounded_start(fit_objective *ob, const double *xl, const double *xu, int max_iter, double *x)
-{
-    const fit_map full = ob->map;
-    fit_map m = full;
-    double v[2][FIT_NP];
-    for (int j = 0; j < full.nx; j++) x[j] = fmin(fmax(x[j], xl[j]), xu[j]);
-    if (el__fit_map_eval(&full, x, v, NULL)) return 0;
-    memcpy(m.fixed, v[0], sizeof m.fixed);
-    m.nx = 0;
-    int moved[FIT_MAXX];
-    for (int j = 0; j < full.nx; j++) {
-        moved[j] = x[j] > xl[j] && x[j] < xu[j];
-        if (moved[j]) m.idx[m.nx++] = full.idx[j];
-    }
-    if (m.nx == full.nx || m.nx == 0 || full.chart) return 0;
-    ob->map = m;
-    double xr[FIT_MAXX];
-    for (int j = 0, r = 0; j < full.nx; j++)
-        if (moved[j]) xr[r++] = x[j];
-    fit_solution sol;
-    const int st = el__fit_lm(ob, xr, max_iter, &sol);
-    ob->map = full;
-    if (st) return 0;
-    for (int j = 0, r = 0; j < full.nx; j++)
-        if (moved[j]) x[j] = fmin(fmax(sol.x[r++], xl[j]), xu[j]);
-    return sol.iters;
-}
-
-/* The largest |row| of the constraint rows con at x; HUGE_VAL where they cannot be
- * evaluated or one is not a number. They are met where it is at most 1e-10. */
-static double rows_violation(fit_objective *ob, const fit_constraints *con, const double *x, double *tmp)
-{
-    double c[FIT_NCON], cc = 0.0;
-    const int rows = el__fit_constraint_rows(ob, con, x, c, NULL, NULL, tmp);
-    for (int k = 0; k < rows; k++) cc = fabs(c[k]) <= cc ? cc : isnan(c[k]) ? HUGE_VAL : fabs(c[k]);
-    return rows < 0 ? HUGE_VAL : cc;
-}
-
-/* 1 when a candidate's Ipopt run ended at its iteration limit (Maximum_Iterations_Exceeded). */
-static int ran_out(const cand_result *r) { return r->used_ipopt && r->ipopt_status == -1; }
-
-/* One initial guess: Levenberg-Marquardt, then Ipopt when something needs it (rows, the
- * point outside the bounds; without them, the point left uncertified unless no_polish).
- * warm: x0 is a fit already and the feet are set (el__fit_run's refit): no paired start. */
-static int solve_candidate(fit_objective *ob, const el_fit_options *o, const fit_constraints *con,
-                           const double *xl, const double *xu, int need_ipopt, int no_polish,
-                           const double *x0, double best_f, cand_result *r, double *tmp, int near_start,
-                           int warm)
-{
-    const int nx = ob->map.nx;
-    memset(r, 0, sizeof *r);
-    memcpy(r->x, x0, sizeof(double) * (size_t)nx);
-    r->f = HUGE_VAL;
-    r->status = EL_ENOCONV;
-    fit_solution sol;
-    int lm_ok = 0, inside = 1;
-    double xs[FIT_MAXX];
-    memcpy(xs, x0, sizeof(double) * (size_t)nx);
-    int crawled = 0;
-    const double *guess = x0;
-    if (!warm && ob->kind == FIT_ORTHOGONAL && ob->map.model == FIT_SMOOTH) {
-        /* the paired fit first: its pairing with the data's order keeps loops and sparse
-         * points on their branch, and on equilateral data it is close and cheap (points
-         * equally spaced in s); then the feet from its places */
-        ob->kind = FIT_PAIRED;
-        /* only a start: stopped once a Gauss-Newton step would lower the paired f by
-         * less than 1e-9 of itself, far below its gap to the orthogonal f (measured on
-         * the 42 noisy 1000-point curves of bench_fit.py: one evaluation fewer on most,
-         * every rms the same to 1e-9 but one 2e-8 lower; at 1e-6 one fit of the 252
-         * smooth suite curves ended 3e-5 higher) */
-        const double certificate = ob->lm_tol;
-        ob->lm_tol = 1e-9;
-        int pst;
-        if (o->limited_memory) {
-            /* the same start by the caller's optimiser: Ipopt's L-BFGS, stopped at the same
-             * certificate (fit_ipopt.c). From the guess's fractions instead, the feet
-             * projected onto a loop's other pass stayed there, and L-BFGS ended at a worse
-             * optimum (measured: 20 uneven noisy points, rms 0.0901 and 0.00390 against
-             * the exact path's 0.0328 and 0.00384; with the feet nearest the guess
-             * instead, 10 of 30 such fits worse). A paired fit that crawled to max_iter
-             * without its certificate (a sketch with a gap, whose paired valley the exact
-             * path also crawls) is no start: the guess then (measured: 1000 noisy points,
-             * EL_EMAXITER at rms 0.0544 from the crawled start, EL_OK at 0.0466 from the
-             * guess, the exact path 0.0534) */
-            fit_ipopt_out po;
-            memcpy(sol.x, x0, sizeof(double) * (size_t)nx);
-            pst = el__fit_ipopt(ob, xl, xu, NULL, o, sol.x, &po, tmp);
-            sol.iters = po.iters;
-            if (pst == EL_OK && !po.certified) {
-                r->iters += po.iters;
-                pst = EL_ENOCONV;
-            }
-            if (pst == EL_ENOMEM || pst == EL_EINTERNAL) {
-                ob->lm_tol = certificate;
-                ob->kind = FIT_ORTHOGONAL;
-                return pst;
-            }
-        } else {
-            pst = el__fit_lm(ob, x0, o->max_iter, &sol);
-            crawled = pst == EL_OK && !sol.certified;
-        }
-        ob->lm_tol = certificate;
-        if (pst == EL_OK) {
-            memcpy(xs, sol.x, sizeof(double) * (size_t)nx);
-            r->iters += sol.iters;
-        }
-        ob->kind = FIT_ORTHOGONAL;
-        if (el__fit_feet_start(ob, xs) != EL_OK) memcpy(xs, x0, sizeof(double) * (size_t)nx);
-    }
-    x0 = xs;
-    ob->f_ceiling = best_f;
-    /* near_start: x0 is near the constrained optimum already (el__fit_held_start's continuation):
-     * Ipopt from there, not from the unconstrained fit that Levenberg-Marquardt would
-     * return to; or it is the fit to polish (el__fit_fallback's run) */
-    const int lst = o->limited_memory || (near_start && (need_ipopt || !no_polish)) ? EL_EINVAL
-                  : el__fit_lm(ob, x0, o->max_iter, &sol);
-    /* a paired start that crawled to max_iter without its certificate (a sketch with a
-     * gap, whose chord fractions misplace the points after it) may be far from the fit:
-     * Levenberg-Marquardt from the guess too, kept when certified lower (measured, 1000
-     * noisy sketched points: rms 0.057, 0.0071, 0.0129 from the crawled start, 0.0031,
-     * 0.0034, 0.0039 from the guess, the fits from the true curves'; an uncertified
-     * point is no measure: on 20 uneven points the crawled start's 0.0058, reached by
-     * Ipopt, would have lost to the guess's 0.104) */
-    if (lst == EL_OK && crawled) {
-        fit_solution g;
-        if (el__fit_feet_start(ob, guess) == EL_OK && el__fit_lm(ob, guess, o->max_iter, &g) == EL_OK) {
-            r->iters += g.iters;
-            if (g.certified && g.val.f < sol.val.f) sol = g;
-            else el__fit_feet_start(ob, sol.x);      /* the kept point's feet, from its curve */
-        }
-    }
-    ob->f_ceiling = HUGE_VAL;
-    if (lst == EL_OK) {
-        memcpy(r->x, sol.x, sizeof(double) * (size_t)nx);
-        r->f = sol.val.f;
-        r->iters += sol.iters;
-        lm_ok = 1;
-        for (int j = 0; j < nx; j++) inside &= sol.x[j] >= xl[j] && sol.x[j] <= xu[j];
-        if (sol.certified && inside && !need_ipopt) { r->status = EL_OK; return EL_OK; }
-        if (!sol.certified && sol.iters >= o->max_iter && !need_ipopt && inside) r->status = EL_EMAXITER;
-        if (no_polish && inside && !need_ipopt) return EL_OK;
-        /* a later guess that ended above an earlier one's objective: Ipopt would only
-         * polish a worse fit (measured: 200 Ipopt iterations, 0.2 s, on 16 points whose
-         * third guess crawled along a flat valley) */
-        if (inside && !need_ipopt && r->f > best_f) return EL_OK;
-    }
-    fit_ipopt_out io;
-    double x[FIT_MAXX], xpen[FIT_MAXX];
-    int pen_met = 0;     /* the penalty's last point meets the rows (xpen) */
-    memcpy(x, lm_ok ? r->x : x0, sizeof(double) * (size_t)nx);
-    if (lm_ok && need_ipopt) {
-        /* Ipopt from the unconstrained optimum took wild first steps where the constraint
-         * is far from met there (measured: sample_2d.csv, discrete, end curvature 0: a
-         * straight line, rms 7.7, instead of 0.27): first a quadratic penalty
-         * (rho/2)|c|^2 with rho raised 100-fold from 1 (normalised units), each stage by
-         * Levenberg-Marquardt from the last, so Ipopt starts near the constrained optimum */
-        ob->pen = con;
-        ob->pen_tmp = tmp;
-        for (ob->pen_rho = 1.0; ob->pen_rho <= 1e10; ob->pen_rho *= 100.0) {
-            if (el__fit_lm(ob, x, o->max_iter, &sol) != EL_OK) break;
-            memcpy(x, sol.x, sizeof(double) * (size_t)nx);
-            r->iters += sol.iters;
-            const double cc = rows_violation(ob, con, x, tmp);
-            pen_met = cc <= 1e-10;
-            if (cc == HUGE_VAL || pen_met) break;
-        }
-        ob->pen = NULL;
-        if (pen_met) memcpy(xpen, x, sizeof(double) * (size_t)nx);
-        inside = 1;
-        for (int j = 0; j < nx; j++) inside &= x[j] >= xl[j] && x[j] <= xu[j];
-    }
-    if (lm_ok && !inside) r->iters += bounded_start(ob, xl, xu, o->max_iter, x);
-    /* Ipopt stops a guess that cannot reach an earlier one's f (fit_ipopt.c): with L-BFGS,
-     * and without rows (bounds alone: every iterate within them, f comparable). Measured:
-     * 1000 points of a curve, the discrete model with a k range excluding the curve's
-     * (test_fit_lbfgs.c): two later guesses each ran Ipopt to max_iter from outside the
-     * range, 4-9 s each on a polygon far from the points */
-    if (o->limited_memory || !need_ipopt) ob->f_ceiling = best_f;
-    int st = el__fit_ipopt(ob, xl, xu, need_ipopt ? con : NULL, o, x, &io, tmp);
-    ob->f_ceiling = HUGE_VAL;
-    if (st == EL_EINTERNAL || st == EL_ENOMEM) return st;
-    if (io.ran) {
-        r->used_ipopt = 1;
-        r->ipopt_status = io.ipopt_status;
-        r->iters += io.iters;
-    }
-    /* Ipopt's point when it had to run (constraints, the LM point outside the bounds)
-     * or when it improved on an uncertified one */
-    if (st == EL_OK && (io.f <= r->f || need_ipopt || !lm_ok || !inside)) {
-        memcpy(r->x, x, sizeof(double) * (size_t)nx);
-        r->f = io.f;
-        r->status = io.certified ? EL_OK : ipopt_to_status(io.ipopt_status);
-    }
-    /* Ipopt's point off the rows where the penalty's met them: the penalty's, uncertified
-     * (measured: 40 uneven noisy points along a gentle arc, both ends pinned, discrete by
-     * distance: Ipopt crept along the end-point rows from each guess to max_iter, 5203
-     * iterations, and the fit failed with EL_EDOM, where the penalty's point met them at
-     * an f 2e-4 of itself above Ipopt's last) */
-    if (pen_met && !(rows_violation(ob, con, r->x, tmp) <= 1e-10)) {
-        fit_value fv;
-        if (el__fit_objective_eval(ob, xpen, 0, &fv) == EL_OK) {
-            memcpy(r->x, xpen, sizeof(double) * (size_t)nx);
-            r->f = fv.f;
-            r->status = EL_ENOCONV;
-        }
-    }
-    /* a zero-residual fit that Ipopt could not certify (its step became tiny) is a fit */
-    if (r->status == EL_ENOCONV && r->f <= FIT_EXACT_F) r->status = EL_OK;
-    return EL_OK;
 }
 
 /* The first feet of a fit by distance with feet (orthogonal smooth): the fractions' places
@@ -478,7 +245,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
     const double noise_rms = el__fit_noise_rms(xy, n, sc);
     const double data_noise = noise_rms * (kind == FIT_ORTHOGONAL ? 0.70710678118654752 : 1.0);
     const double noise = o.constraints ? el__fit_noise_plain(xy, n, sc) : data_noise;
-    cand_result best;
+    fit_candidate best;
     int best_strays = -1;      /* best strays from its points (el__fit_strays_at), once known */
     int best_meets = 0;        /* with rows: best meets the constraints */
     memset(&best, 0, sizeof best);
@@ -563,7 +330,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
         }
         first_feet(&ob, t, p0[6]);
         if (polish_run && ob.rest && el__fit_feet_start(&ob, x0)) continue;
-        cand_result r;
+        fit_candidate r;
         int feet_stale = 0, r_strays = -1;     /* r_strays: r strays from its points, once known */
         if (map.nx == 0) {
             fit_value fv;
@@ -577,7 +344,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
                 pre = el__fit_held_start(&ob, &map, &free_map, staged, &con, o.max_iter, p0, x0);
                 first_feet(&ob, t, p0[6]);      /* again (the stages moved them) */
             }
-            if ((st = solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, no_polish, x0, best.f, &r, tmp,
+            if ((st = el__fit_solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, no_polish, x0, best.f, &r, tmp,
                                       (staged && pre > 0) || polish_run, polish_run)))
                 goto done;
             r.iters += pre;
@@ -594,17 +361,17 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
             if (staged && !polish_run && model == FIT_SMOOTH &&
                 (!(sqrt(2.0 * r.f) <= 1.5 * noise && r.status == EL_OK) ||
                  (ob.rest && (r_strays = el__fit_strays_at(&ob, r.x, noise_rms, d, fs, tmp))))) {
-                cand_result rd;
+                fit_candidate rd;
                 first_feet(&ob, t, p0[6]);
                 el__fit_map_inverse(&map, p0, x0);
                 ob.have_base = 0;
-                if ((st = solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, no_polish, x0, best.f, &rd, tmp, 0, 0)))
+                if ((st = el__fit_solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, no_polish, x0, best.f, &rd, tmp, 0, 0)))
                     goto done;
                 rd.iters += r.iters;
                 const int r_meets = !need_ipopt || meets_constraints(&ob, &map, &con, r.x, lo, hi, tmp);
                 const int rd_meets = !need_ipopt || meets_constraints(&ob, &map, &con, rd.x, lo, hi, tmp);
                 const int direct = rd_meets && (!r_meets || rd.f < r.f);
-                ipopt_spent += ran_out(direct ? &r : &rd);    /* the run let go; the kept one below */
+                ipopt_spent += el__fit_ran_out(direct ? &r : &rd);    /* the run let go; the kept one below */
                 if (direct) { r = rd; r_strays = -1; }
                 else { r.iters = rd.iters; feet_stale = 1; }     /* ob.s: the direct fit's feet */
             }
@@ -629,7 +396,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
          * has, no refit below after one (the fuzzer's 11 points with end constraints: five
          * runs to max_iter, 1.3 s; a discrete sketch of 45 points pinned at both ends,
          * every guess to max_iter, 3.1 s) */
-        if (need_ipopt && (ipopt_spent += ran_out(&r)) >= 2 && (best.status == EL_OK || best_meets)) {
+        if (need_ipopt && (ipopt_spent += el__fit_ran_out(&r)) >= 2 && (best.status == EL_OK || best_meets)) {
             if (!smooth_start) break;
             ci = ncand - 1;     /* no more guesses; the smooth fit's start next */
             continue;
@@ -715,10 +482,10 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
             /* the kept point, stopped at LOOSE_TOL, certified from its feet (the nearest
              * ones when a later refit's replaced them) */
             loose = 0;
-            cand_result r;
+            fit_candidate r;
             ob.have_base = 0;
             if ((!last_is_best && el__fit_feet_start(&ob, best.x)) ||
-                (st = solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, refit_no_polish, best.x, HUGE_VAL, &r, tmp, 1, 1)) ||
+                (st = el__fit_solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, refit_no_polish, best.x, HUGE_VAL, &r, tmp, 1, 1)) ||
                 !isfinite(r.f)) {
                 if (st) goto done;
                 best.status = EL_ENOCONV;
@@ -751,13 +518,13 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
         ob.s[0] = 0.0;
         ob.s[n - 1] = v[0][6];
         ob.have_base = 0;
-        cand_result r;
+        fit_candidate r;
         if (moved) ob.lm_tol = LOOSE_TOL;
-        st = solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, moved || refit_no_polish, best.x, best.f, &r, tmp, 1, 1);
+        st = el__fit_solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, moved || refit_no_polish, best.x, best.f, &r, tmp, 1, 1);
         ob.lm_tol = certificate;
         if (st) goto done;
         iters += r.iters;
-        ipopt_spent += ran_out(&r);
+        ipopt_spent += el__fit_ran_out(&r);
         if (moved && !(r.status == EL_OK && r.f < best.f)) {
             /* a cheap refit not certified lower: the rounds by the search everywhere */
             sampling = 0;

@@ -7,7 +7,7 @@
  * curve's range. For the keyline, sigma < 0 is the first curve at -sigma and sigma >= 0
  * the second: d gamma / d sigma = -T on the first, the second derivative kappa N on both,
  * so one Newton iteration serves the joined curve and a foot crosses the joint freely.
- * The polygon's distances and the nearest point anywhere: fit_nearest.c.
+ * The polygon's distances: fit_polygon.c; the nearest point anywhere: fit_nearest.c.
  * Signed distances: positive when the point lies left of the curve (its direction of
  * increasing s; for a keyline side, away from the joint).
  */

@@ -2,6 +2,8 @@
  * How the fitting code's files meet (not installed):
  *   fit.c            the public entry points: options, normalisation, initial guesses,
  *                    which solver runs, results and distances in input units;
+ *   fit_candidate.c  one initial guess solved: Levenberg-Marquardt, then Ipopt where
+ *                    rows, bounds or an uncertified point need it;
  *   fit_model.c      the optimiser's parameters: internal parameter vectors, the maps
  *                    variables -> parameters with their derivatives, model points and
  *                    Jacobians block by block, the curve's end states (point, tangent,
@@ -157,8 +159,8 @@ typedef struct fit_objective {
      * evaluation, and the points bucketed by their foot's segment (fit_objective.c) */
     double *poly;
     size_t *bucket, *order;
-    /* a quadratic penalty (rho/2) |c(x)|^2 of constraint rows added to f (fit.c's start
-     * of a constrained fit); pen NULL: none. pen_tmp: FIT_WORK doubles */
+    /* a quadratic penalty (rho/2) |c(x)|^2 of constraint rows added to f (fit_candidate.c's
+     * start of a constrained fit); pen NULL: none. pen_tmp: FIT_WORK doubles */
     const struct fit_constraints *pen;
     double pen_rho, *pen_tmp;
 } fit_objective;
@@ -220,18 +222,51 @@ int el__fit_feet_project_list(const fit_objective *o, double v[2][FIT_NP], const
  * the joint) and sides (keyline; may be NULL) of every point at x, normalised units:
  * the feet projected from o->s (which keeps the objective's feet). */
 int el__fit_feet_distances(fit_objective *o, const double *x, double *dist, double *foot, int *side);
-/* The same for the polygon of nv vertices V (normalised) of one discrete curve of
- * segment h, vertex j <-> point first + step j. */
+/* fit_polygon.c: the same for the polygon of nv vertices V (normalised) of one discrete
+ * curve of segment h, vertex j <-> point first + step j. */
 void el__fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, double h,
                                size_t first, long step, double *dist, double *foot);
-/* The direction of (x, y) in (-pi, pi] to within 2e-6 (fit_nearest.c). */
+/* The direction of (x, y) in (-pi, pi] to within 2e-6 (fit_polygon.c). */
 double el__fit_direction(double x, double y);
-
+/* fit_polygon.c: el__fit_nearest_everywhere's search of the discrete model's polygons. */
+int el__fit_polygon_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const double *V[2],
+                                       const size_t nv[2], double *dist, double *foot, int *side);
 /* The distances above, corrected where the curve comes nearer elsewhere (a loop
  * passing close to itself): dist, foot, side (may be NULL) in and out; for the discrete
  * model V[c] are the vertices (nv[c]) of curve c. The signs are each curve's own. */
 int el__fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const double *V[2],
                                const size_t nv[2], double *dist, double *foot, int *side);
+/* The hash grids of the searches everywhere (fit_nearest.c, fit_polygon.c): the grid cell
+ * of coordinate x from q = x / cell (polygons: x times 1 / cell, monotone too): floor(q)
+ * by the truncating conversion, exact within +-2^40, where it is held (a far, diverging
+ * curve gives quotients no long holds; the searches then take every piece; libm's floor
+ * is a call on baseline x86-64); NaN gives -2^40. */
+static inline long fit_cell_index(double q)
+{
+    const double lim = 1099511627776.0;
+    if (q >= -lim && q <= lim) {
+        const long c = (long)q;
+        return (double)c > q ? c - 1 : c;
+    }
+    return q > 0.0 ? (long)lim : -(long)lim;
+}
+
+/* The bucket of cell (ix, iy) among mask + 1 (a power of two) */
+static inline size_t fit_cell_hash(long ix, long iy, size_t mask)
+{
+    const unsigned long h = (unsigned long)ix * 73856093UL ^ (unsigned long)iy * 19349663UL;
+    return (size_t)(h & mask);
+}
+
+/* A typical distance: the mean |d| of a spread sample of the n distances. */
+static inline double fit_mean_distance(const double *dist, size_t n)
+{
+    const size_t step = n > 1024 ? n / 1024 : 1;
+    size_t cnt = 0;
+    double sum = 0.0;
+    for (size_t i = 0; i < n; i += step, cnt++) sum += fabs(dist[i]);
+    return sum / (double)cnt;
+}
 
 /* fit_refit.c: the distances and feet (normalised) of every point to the kept curve x
  * (v its parameters), near each point's own place, then wherever the curve comes nearer;
@@ -335,6 +370,24 @@ typedef struct fit_ipopt_out {
     int certified;       /* L-BFGS stopped at a point of the first-order condition (fit_lm.c) */
     double f;
 } fit_ipopt_out;
+/* One initial guess's result (fit_candidate.c): its point x, f, status, iterations, Ipopt's run. */
+typedef struct fit_candidate {
+    double x[FIT_MAXX], f;
+    int status, iters, used_ipopt, ipopt_status;
+} fit_candidate;
+/* 1 when a candidate's Ipopt run ended at its iteration limit (Maximum_Iterations_Exceeded). */
+static inline int el__fit_ran_out(const fit_candidate *r) { return r->used_ipopt && r->ipopt_status == -1; }
+/* One initial guess x0 (fit_candidate.c): Levenberg-Marquardt, then Ipopt when something
+ * needs it (rows, the point outside the bounds xl, xu; without them, the point left
+ * uncertified unless no_polish); best_f, the best earlier candidate's f (a later one that
+ * cannot reach it is stopped); near_start: x0 is near the constrained optimum already
+ * (el__fit_held_start's continuation) or the fit to polish, Ipopt from there; warm: x0
+ * is a fit already and the feet are set (el__fit_run's refit): no paired start.
+ * EL_OK with *r (its status the fit's), or EL_ENOMEM / EL_EINTERNAL. */
+int el__fit_solve_candidate(fit_objective *ob, const el_fit_options *o, const fit_constraints *con,
+                            const double *xl, const double *xu, int need_ipopt, int no_polish,
+                            const double *x0, double best_f, fit_candidate *r, double *tmp, int near_start,
+                            int warm);
 /* A fit that only starts another (the keyline's side fits): el_fit_discrete /
  * el_fit_smooth by Levenberg-Marquardt alone, no Ipopt fallback (an uncertified result
  * is EL_EMAXITER / EL_ENOCONV with its parameters). v: the parameters in input units

@@ -220,7 +220,7 @@ static Bool cb_jac_g(Index n, Number *x, Bool new_x, Index m, Index nele, Index 
  * constrained solves then crept along the constraints for hundreds of iterations
  * (measured: a sketched S with a start tangent, 200+ iterations without reaching 1e-12;
  * with this Hessian 28). Bounds alone on paired residuals: J^T J / n (positive
- * semidefinite; the start is the best point of the active bounds, fit.c).
+ * semidefinite; the start is the best point of the active bounds, fit_candidate.c).
  */
 static int lagrangian_gradient(ipctx *c, const double *x, double of, const double *lambda, int m,
                                double *gl)

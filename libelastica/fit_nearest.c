@@ -1,229 +1,22 @@
 /*
- * Point-to-curve distances of the report (fit_internal.h): the discrete model's distance
- * of each point to the polygon of the vertices, searched from the segments at the
- * point's own vertex outwards while the distance decreases (el__fit_polygon_distances), and
- * for both models the nearest point anywhere on the curves (el__fit_nearest_everywhere: a
- * loop passing close to itself). Signed distances: positive when the point lies left of
- * the curve (its direction of increasing s; for a keyline side, away from the joint).
+ * Point-to-curve distances of the report (fit_internal.h), the smooth curve's and the
+ * dispatch: the nearest point anywhere on the curves (el__fit_nearest_everywhere: a loop
+ * passing close to itself), left out where the curve turns too little to come back;
+ * the polygon's searches are fit_polygon.c's. Signed distances: positive when the point
+ * lies left of the curve (its direction of increasing s; for a keyline side, away from
+ * the joint).
  */
 #include "fit_internal.h"
 #include <stdlib.h>
 #include <string.h>
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
-/* Squared distance of P to segment A-B, and the fraction t of its nearest point.
- * (The clamp to [0, 1] by comparisons, NaN to 0 as fmin(fmax(t, 0), 1) does: the
- * report's hot loop, where libm's fmin/fmax are calls.) */
-static inline double segment_distance2(const double *A, const double *B, const double *P, double *t)
-{
-    const double ux = B[0] - A[0], uy = B[1] - A[1], l2 = ux * ux + uy * uy;
-    const double px = P[0] - A[0], py = P[1] - A[1];
-    double tt = l2 > 0.0 ? (px * ux + py * uy) / l2 : 0.0;
-    tt = tt > 0.0 ? (tt < 1.0 ? tt : 1.0) : 0.0;
-    const double dx = px - tt * ux, dy = py - tt * uy;
-    *t = tt;
-    return dx * dx + dy * dy;
-}
-
-/* The signed distance (+ = left of A -> B) of P to the point of segment A-B at t. */
-static double segment_signed(const double *A, const double *B, const double *P, double t)
-{
-    const double ux = B[0] - A[0], uy = B[1] - A[1];
-    const double dx = P[0] - A[0] - t * ux, dy = P[1] - A[1] - t * uy;
-    const double d = sqrt(dx * dx + dy * dy);
-    return ux * dy - uy * dx < 0.0 ? -d : d;
-}
-
-/* The reach of nearest_segment for the distance d and the longest segment lmax. */
-static inline double reach_of(double d, double lmax) { return (d + lmax) * (1.0 + 1e-9); }
 
 /*
- * The nearest of the segments j0 .. j1 - 1 of the polygon V to P when nearer than
- * sqrt(*bd) (the first of equal ones): *bd (squared), *bj, *bt updated. Segments are
- * left out without changing any result: one A-B of length at most lmax has no point
- * nearer to P than |P - A| - lmax (triangle inequality), so one with |P - A| beyond
- * *r = reach_of(sqrt(*bd), lmax) (the caller's first; it shrinks with *bd) is farther
- * than sqrt(*bd) by 1e-9 of it, far beyond the rounding of segment_distance2 (~1e-15):
- * its squared distance would compare as larger, and leaving it out changes neither the
- * nearest segment nor the order in which ties are met.
- */
-static inline int beyond2(const double *A, const double *P, double r2);
-
-static inline void nearest_in_block(const double *V, long j0, long j1, const double *P, double lmax, double *r,
-                                    double *bd, long *bj, double *bt)
-{
-    double r2 = *r * *r;
-    for (long j = j0; j < j1; j += 2) {
-        /* segments j, j + 1 (held to j1); a pair beyond at the reach then is beyond at
-         * the smaller reach after segment j too */
-        const int far = beyond2(V + 2 * j, P, r2) | (j + 1 < j1 ? 0 : 2);
-        if (far == 3) continue;
-        for (long m = j; m < j + 2; m++) {
-            if (far >> (m - j) & 1) continue;
-            double t;
-            const double d2 = segment_distance2(V + 2 * m, V + 2 * m + 2, P, &t);
-            if (d2 < *bd) {
-                *bd = d2; *bj = m; *bt = t;
-                const double rn = reach_of(sqrt(d2), lmax);
-                if (rn < *r) { *r = rn; r2 = rn * rn; }
-            }
-        }
-    }
-}
-
-/* Bits 0 and 1: whether the vertices A and A + 2 lie beyond sqrt(r2) from P (both at
- * once where SSE2 has two lanes: the same products and sums as one at a time; NaN: not
- * beyond, as the scalar test). */
-static inline int beyond2(const double *A, const double *P, double r2)
-{
-#if defined(__SSE2__)
-    const __m128d p = _mm_loadu_pd(P), a = _mm_sub_pd(p, _mm_loadu_pd(A)), b = _mm_sub_pd(p, _mm_loadu_pd(A + 2));
-    const __m128d a2 = _mm_mul_pd(a, a), b2 = _mm_mul_pd(b, b);
-    return _mm_movemask_pd(_mm_cmpgt_pd(_mm_add_pd(_mm_unpacklo_pd(a2, b2), _mm_unpackhi_pd(a2, b2)), _mm_set1_pd(r2)));
-#else
-    const double ax = P[0] - A[0], ay = P[1] - A[1], bx = P[0] - A[2], by = P[1] - A[3];
-    return (ax * ax + ay * ay > r2) | (bx * bx + by * by > r2) << 1;
-#endif
-}
-
-/*
- * The same by blocks of BLOCK segments: a block whose first vertex lies beyond
- * *r + BLOCK lmax (by the octagon norm max(|x|, |y|, (|x| + |y|) / sqrt 2) <= |x|, no
- * square root) is left out whole, its vertices lying within (BLOCK - 1) lmax of that
- * one (dense polygons: 5000 points, 1950 -> 1700 us a fit). (Leaving out
- * (|P - A| - *r) / lmax segments at each vertex beyond: fewer instructions, 7 % more
- * time on 1000 points, the loop's next index waiting for that bound.)
- */
-enum { BLOCK = 16 };
-static inline void nearest_segment(const double *V, long j0, long j1, const double *P, double lmax, double *r,
-                                   double *bd, long *bj, double *bt)
-{
-    for (long j = j0; j < j1; j += BLOCK) {
-        const long e = j1 - j > BLOCK ? j + BLOCK : j1;
-        if (e - j == BLOCK) {
-            const double ax = fabs(P[0] - V[2 * j]), ay = fabs(P[1] - V[2 * j + 1]);
-            const double m = ax > ay ? ax : ay, o = 0.7071067811865475 * (ax + ay);
-            if ((m > o ? m : o) > *r + BLOCK * lmax) continue;
-        }
-        nearest_in_block(V, j, e, P, lmax, r, bd, bj, bt);
-    }
-}
-
-/* The longest segment of the polygon of nv vertices (nearest_segment's lmax). */
-static double longest_segment(const double *V, size_t nv)
-{
-    double l2 = 0.0;
-    for (size_t j = 0; j + 1 < nv; j++) {
-        const double ux = V[2 * j + 2] - V[2 * j], uy = V[2 * j + 3] - V[2 * j + 1], u2 = ux * ux + uy * uy;
-        if (u2 > l2) l2 = u2;
-    }
-    return sqrt(l2) * (1.0 + 1e-12);
-}
-
-/*
- * The polygon of nv vertices V (normalised), data point first + step j <-> vertex j:
- * each point's distance to the polygon near its own vertex, its foot as arc length
- * h (segment + t) from vertex 0. A walk from the two segments at the vertex, on while
- * the nearest point of the last segment is its far end, finds a local minimum d; the
- * polygon has kinks, so every segment within arc length 2 sqrt 2 d + h of it is then
- * searched too, or fewer where the polygon turns little (below): where the polygon's
- * direction varies within pi/2 (el__fit_nearest_everywhere checks) no point farther along it
- * can be nearer than d (|V(s) - V(s')| >= cos(pi/4) |s - s'|), so this is the nearest
- * point; elsewhere that search goes on.
- *
- * Fewer segments: along the polygon f(s) = |V(s) - P|^2 / 2 has f'' = 1 on a segment and
- * f' jumps by (v - P).(T' - T) at a vertex v (unit tangents T before, T' after), by at
- * most c l with c = |v - P| tmax / lmin (tmax the largest |T' - T|, lmin the shortest
- * segment l). With c < 1 at every vertex of the stretch (|v - P| <= d + its arc length
- * from the foot), f' at the segments' starts grows by at least (1 - c) lmin a segment,
- * from above -lmin at a local minimum's segment: local minima lie within
- * ceil(1 / (1 - c)) - 1 segments of each other, and f grows from them to the stretch's
- * ends; that many segments each way hold the stretch's nearest point (one for c <= 1/2).
- */
-void el__fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, double h,
-                               size_t first, long step, double *dist, double *foot)
-{
-    const long last = (long)nv - 2;
-    /* the polygon's largest turning |T' - T| at its vertices over its shortest segment
-     * (the bound of the jumps of f' above; a zero-length or non-finite segment: NaN, so
-     * that every stretch is searched whole) */
-    double tmax = 0.0, lmin = HUGE_VAL, tx = 0.0, ty = 0.0;
-    for (size_t j = 0; j + 1 < nv; j++) {
-        const double ux = V[2 * j + 2] - V[2 * j], uy = V[2 * j + 3] - V[2 * j + 1], l = sqrt(ux * ux + uy * uy);
-        const double nx = ux / l, ny = uy / l, t2 = (nx - tx) * (nx - tx) + (ny - ty) * (ny - ty);
-        if (!(l > 0.0 && l < HUGE_VAL)) { tmax = NAN; break; }
-        if (j > 0 && t2 > tmax) tmax = t2;
-        if (l < lmin) lmin = l;
-        tx = nx; ty = ny;
-    }
-    const double turn_per_length = sqrt(tmax) / lmin * (1.0 + 1e-9);
-    const double lmax = longest_segment(V, nv);
-    for (size_t j = 0; j < nv; j++) {
-        const size_t g = (size_t)((long)first + step * (long)j);
-        double P[2];
-        fit_point(o, g, P);
-        long best = -1;
-        double bd = HUGE_VAL, bt = 0.0;
-        /* start where the point projects along the polygon's direction at its vertex:
-         * on dense polygons (spacing far below the noise) the foot lies many segments
-         * from the point's own vertex */
-        long j0 = (long)j;
-        {
-            const long a = (long)j < last ? (long)j : last;
-            const double ux = V[2 * a + 2] - V[2 * a], uy = V[2 * a + 3] - V[2 * a + 1];
-            const double along = ((P[0] - V[2 * j]) * ux + (P[1] - V[2 * j + 1]) * uy) / (h * h);
-            if (fabs(along) > 1.0 && isfinite(along)) {
-                const double jj = (double)j + along;
-                j0 = jj < 0.0 ? 0 : jj > (double)(last + 1) ? last + 1 : (long)floor(jj);
-            }
-        }
-        long clo = j0, chi = j0 - 1;     /* the segments searched so far, clo .. chi */
-        for (int dir = -1; dir <= 1; dir += 2) {
-            for (long seg = dir < 0 ? j0 - 1 : j0; seg >= 0 && seg <= last; seg += dir) {
-                double t;
-                const double d2 = segment_distance2(V + 2 * seg, V + 2 * seg + 2, P, &t);
-                if (dir < 0) clo = seg; else chi = seg;
-                if (d2 < bd) { bd = d2; best = seg; bt = t; }
-                if (dir < 0 ? t > 0.0 : t < 1.0) break;     /* not at the far end: stop */
-            }
-        }
-        if (best < 0) { dist[g] = 0.0; foot[g] = 0.0; continue; }
-        /* the stretch around the foot, again around a nearer foot found in it (the
-         * search for nearer points elsewhere, el__fit_nearest_everywhere, leaves out the
-         * stretch around the final foot: it must have been searched; measured: a foot
-         * moved 6 segments, its neighbour outside the first stretch 1.3 nearer). The
-         * segments searched already (clo .. chi, around the foot) cannot come strictly
-         * nearer than it: left out. */
-        for (long centre = -1; centre != best;) {
-            centre = best;
-            const double d = sqrt(bd);
-            /* at most the whole polygon (a far point's d / h can pass the range of long) */
-            const double span = ceil(2.0 * 1.4142135623730951 * d / h) + 1.0;
-            const double c = turn_per_length * (d + (span + 1.0) * lmax);
-            const double few = c < 1.0 ? ceil(1.0 / (1.0 - c)) - 1.0 : HUGE_VAL, m = few < span ? few : span;
-            const long reach = m >= 1.0 ? (m <= (double)(last + 1) ? (long)m : last + 1) : 1;
-            const long lo = centre - reach < 0 ? 0 : centre - reach, hi = centre + reach > last ? last : centre + reach;
-            double r = reach_of(d, lmax);
-            nearest_segment(V, lo, hi < clo ? hi + 1 : clo, P, lmax, &r, &bd, &best, &bt);
-            nearest_segment(V, lo > chi ? lo : chi + 1, hi + 1, P, lmax, &r, &bd, &best, &bt);
-            if (lo < clo) clo = lo;
-            if (hi > chi) chi = hi;
-        }
-        dist[g] = segment_signed(V + 2 * best, V + 2 * best + 2, P, bt);
-        foot[g] = h * ((double)best + bt);
-    }
-}
-
-/* ------------------------------------------------------------ the nearest point */
-
-/*
- * The feet above are the nearest points near each point's place along the data (the
- * fit's own foot, or its vertex). A curve that passes close to itself (a loop) can come
- * nearer to a point somewhere else; the distance to the curve is the nearest of all.
- * Smooth curves (the polygons': polygon_nearest_everywhere below) are cut into pieces of arc length l (about twice the median distance, at
- * least 1/128 of the length); every point of a piece lies within l/2 of the midpoint of
+ * The feet of el__fit_feet_distances and el__fit_polygon_distances are the nearest points
+ * near each point's place along the data (the fit's own foot, or its vertex). A curve that
+ * passes close to itself (a loop) can come nearer to a point somewhere else; the distance
+ * to the curve is the nearest of all. Smooth curves (the polygons': fit_polygon.c) are cut
+ * into pieces of arc length l (about twice the median distance, at least 1/128 of the
+ * length); every point of a piece lies within l/2 of the midpoint of
  * its end points (triangle inequality), so a piece can hold a nearer point only if that
  * disk comes within the point's distance. The disks go into a hash grid of cells of at
  * least their diameter; each point visits the cells its distance reaches, and only the
@@ -248,36 +41,15 @@ typedef struct grid {
     int used;
 } grid;
 
-/* The grid cell of coordinate x from q = x / cell (polygons: x times 1 / cell, monotone
- * too): floor(q) by the truncating conversion, exact within +-2^40, where it is held (a
- * far, diverging curve gives quotients no long holds; the searches below then take
- * every piece; libm's floor is a call on baseline x86-64); NaN gives -2^40. */
-static long cell_index(double q)
-{
-    const double lim = 1099511627776.0;
-    if (q >= -lim && q <= lim) {
-        const long c = (long)q;
-        return (double)c > q ? c - 1 : c;
-    }
-    return q > 0.0 ? (long)lim : -(long)lim;
-}
-
-/* The bucket of cell (ix, iy) among mask + 1 (a power of two) */
-static size_t cell_hash(long ix, long iy, size_t mask)
-{
-    const unsigned long h = (unsigned long)ix * 73856093UL ^ (unsigned long)iy * 19349663UL;
-    return (size_t)(h & mask);
-}
-
 /* 0: the grid is full (impossible by GRID_ENTRIES' bound; the caller's EL_EINTERNAL) */
 static int grid_add(grid *g, const piece *p, int id)
 {
-    const long x0 = cell_index((p->cx - p->r) / g->cell), x1 = cell_index((p->cx + p->r) / g->cell);
-    const long y0 = cell_index((p->cy - p->r) / g->cell), y1 = cell_index((p->cy + p->r) / g->cell);
+    const long x0 = fit_cell_index((p->cx - p->r) / g->cell), x1 = fit_cell_index((p->cx + p->r) / g->cell);
+    const long y0 = fit_cell_index((p->cy - p->r) / g->cell), y1 = fit_cell_index((p->cy + p->r) / g->cell);
     for (long ix = x0; ix <= x1; ix++)
         for (long iy = y0; iy <= y1; iy++) {
             if (g->used >= GRID_ENTRIES) return 0;
-            const size_t h = cell_hash(ix, iy, (1UL << HASH_BITS) - 1);
+            const size_t h = fit_cell_hash(ix, iy, (1UL << HASH_BITS) - 1);
             g->item[g->used] = id;
             g->next[g->used] = g->head[h];
             g->head[h] = g->used++;
@@ -531,259 +303,15 @@ static int feet_are_nearest(const fit_objective *o, const double *v, const doubl
     return tmax - tmin <= 0.5 * M_PI && kmax * dmax <= 0.1;
 }
 
-/* A typical distance: the mean |d| of a spread sample of the n distances. */
-static double mean_distance(const double *dist, size_t n)
-{
-    const size_t step = n > 1024 ? n / 1024 : 1;
-    size_t cnt = 0;
-    double sum = 0.0;
-    for (size_t i = 0; i < n; i += step, cnt++) sum += fabs(dist[i]);
-    return sum / (double)cnt;
-}
-
-/*
- * The discrete model's search elsewhere (el__fit_nearest_everywhere): each point's own
- * search, el__fit_polygon_distances, covered the segments within arc length 2 sqrt 2 d of
- * its foot (or proved them farther, d kappa <= 0.1); every other segment that can come
- * nearer than d has its first vertex within d + lmax of the point (nearest_segment).
- * The polygons are cut into runs of consecutive segments whose first vertices share a
- * grid cell (of 8 max(mean |d|, lmax): a point's reach spans 1-2 cells per axis),
- * bucketed by a hash of the cell (counting sort); a point visits the cells within that
- * reach (every run when the cells outnumber the runs) and searches the runs there
- * outside its own stretch. Exact (tests/c/test_fit_nearest.c: against every segment);
- * O(n) for ordinary data.
- */
-typedef struct polygon_query {
-    const double *P;
-    int own;                /* the point's curve, its stretch's segments x0 .. x1 - 1 */
-    long x0, x1;
-    double lmax, r, bd, bt; /* nearest_segment's; best: segment bj of curve bc */
-    long bj;
-    int bc;
-} polygon_query;
-
-/*
- * The direction of (x, y) in (-pi, pi] to within 2e-6 (tests/c/test_fit_nearest.c checks
- * it against atan2): Hastings' odd polynomial of degree 11 for atan on [0, 1] (error
- * 1.7e-6) after the reduction to the first octant. The windows below take a direction
- * per segment; libm's atan2 cost three times the rest of their work, and their proof
- * allows for the error.
- */
-double el__fit_direction(double x, double y)
-{
-    const double ax = fabs(x), ay = fabs(y), mx = ax > ay ? ax : ay, mn = ax > ay ? ay : ax;
-    const double a = mx > 0.0 ? mn / mx : 0.0, s = a * a;
-    double r = a * (0.99997726 + s * (-0.33262347 + s * (0.19354346 + s * (-0.11643287 + s * (0.05265332 - 0.01172120 * s)))));
-    if (ay > ax) r = 0.5 * M_PI - r;
-    if (x < 0.0) r = M_PI - r;
-    return y < 0.0 ? -r : r;
-}
-
-/*
- * The polygon's windows of direction: for each of its ns segments j, the last segment
- * j + fwd[j] and the first j - back[j] such that the directions of the segments from j
- * to there lie within an angle of pi/2. Along such a window a point at arc length D
- * from a foot F lies at least D cos(pi/4) from F (the chord is at least the arc times
- * the cosine of the largest angle to the middle direction), so one at D >= 2 sqrt 2 d,
- * outside the point's own stretch, is no nearer than d to a point at distance d from F:
- * the search elsewhere leaves the window out. The directions (el__fit_direction, within
- * 2e-6 each: the range is held to pi/2 - 1e-5) are unwrapped by the turning at each
- * vertex, taken in [-pi, pi] (a turning near pi, where that choice can err, ends every
- * window); a zero-length or non-finite segment ends every window too, and a window
- * spans at most WINDOW_MAX segments beyond its first and ends where a queue below is
- * full (shorter windows prove less, never wrongly). Two pointers with monotone queues
- * (rings) of the window's largest and smallest direction: O(ns) time, 4 bytes a
- * segment. 0: no memory.
- */
-enum { WINDOW_MAX = 65535, WINDOW_RING = 65536 };
-typedef struct dir_entry {
-    long j;
-    double th;
-} dir_entry;
-
-/* The direction of segment j of V; 0 when it has none (zero length, not finite: it is
- * measured again each time, as such a segment ends every window). */
-static int segment_direction(const double *V, long j, double *dir)
-{
-    const double ux = V[2 * j + 2] - V[2 * j], uy = V[2 * j + 3] - V[2 * j + 1], u2 = ux * ux + uy * uy;
-    if (!(u2 > 0.0 && u2 < HUGE_VAL)) return 0;
-    *dir = el__fit_direction(ux, uy);
-    return 1;
-}
-
-static int direction_windows(const double *V, long ns, unsigned short *fwd, unsigned short *back)
-{
-    const double aperture = 0.5 * M_PI - 1e-5;
-    unsigned long ring = 1;
-    while (ring < WINDOW_RING && ring < (unsigned long)ns + 1) ring *= 2;
-    dir_entry *qmax = malloc(sizeof(dir_entry) * ring), *qmin = malloc(sizeof(dir_entry) * ring);
-    if (!qmax || !qmin) { free(qmax); free(qmin); return 0; }
-    const unsigned long mask = ring - 1;
-    unsigned long h0 = 0, t0 = 0, h1 = 0, t1 = 0;  /* queue heads and tails, counted */
-    long e = -1;                                    /* the window [j, e] */
-    double raw = 0.0, th = 0.0;                     /* segment e's direction, and unwrapped */
-    int next_ok = 0;                                /* segment e + 1's, once measured */
-    double next = 0.0, next_th = 0.0;
-    for (long j = 0; j < ns; j++) {
-        if (e < j) {        /* a window from j alone */
-            e = j;
-            next_ok = 0;
-            h0 = t0 = h1 = t1 = 0;
-            if (!segment_direction(V, j, &raw)) { fwd[j] = 0; continue; }
-            th = raw;
-            qmax[t0++ & mask] = (dir_entry){j, th};
-            qmin[t1++ & mask] = (dir_entry){j, th};
-        }
-        while (qmax[h0 & mask].j < j) h0++;
-        while (qmin[h1 & mask].j < j) h1++;
-        /* grow while the next segment keeps the directions' range within the aperture */
-        while (e + 1 < ns && e + 1 - j <= WINDOW_MAX && t0 - h0 < ring && t1 - h1 < ring) {
-            if (!next_ok) {
-                if (!segment_direction(V, e + 1, &next)) break;
-                const double turn = next - raw;
-                next_th = th + (turn > M_PI ? turn - 2.0 * M_PI : turn < -M_PI ? turn + 2.0 * M_PI : turn);
-                next_ok = 1;
-            }
-            const double t = next_th;
-            const double hi = t > qmax[h0 & mask].th ? t : qmax[h0 & mask].th;
-            const double lo = t < qmin[h1 & mask].th ? t : qmin[h1 & mask].th;
-            if (!(hi - lo <= aperture)) break;
-            e++;
-            raw = next;
-            th = t;
-            next_ok = 0;
-            while (t0 > h0 && qmax[(t0 - 1) & mask].th <= t) t0--;
-            qmax[t0++ & mask] = (dir_entry){e, t};
-            while (t1 > h1 && qmin[(t1 - 1) & mask].th >= t) t1--;
-            qmin[t1++ & mask] = (dir_entry){e, t};
-        }
-        fwd[j] = (unsigned short)(e - j);
-    }
-    /* back: the first i whose window reaches j (the windows' ends grow with i) */
-    for (long j = 0, i = 0; j < ns; j++) {
-        while ((long)fwd[i] + i < j) i++;
-        back[j] = (unsigned short)(j - i);
-    }
-    free(qmax); free(qmin);
-    return 1;
-}
-
-/* The nearest segment of count runs ru (curve, first segment, end) to q->P, outside the
- * point's own stretch and its direction windows. */
-static void search_runs(const double *V[2], const long *ru, size_t count, polygon_query *q)
-{
-    for (size_t e = 0; e < count; e++, ru += 3) {
-        const int c = (int)ru[0];
-        const long j0 = ru[1], j1 = ru[2];
-        const double was = q->bd;
-        /* the parts before and after the stretch (the whole run off the own curve) */
-        const long x0 = c == q->own ? q->x0 : j1, x1 = c == q->own ? q->x1 : j1;
-        nearest_segment(V[c], j0, j1 < x0 ? j1 : x0, q->P, q->lmax, &q->r, &q->bd, &q->bj, &q->bt);
-        nearest_segment(V[c], j0 > x1 ? j0 : x1, j1, q->P, q->lmax, &q->r, &q->bd, &q->bj, &q->bt);
-        if (q->bd < was) q->bc = c;
-    }
-}
-
-static int polygon_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const double *V[2],
-                                      const size_t nv[2], double *dist, double *foot, int *side)
-{
-    const int nc = o->map.ncurves;
-    long ns[2] = {0, 0};           /* segments of each curve */
-    double lmax = 0.0, inv_h[2] = {0.0, 0.0};
-    for (int c = 0; c < nc; c++) {
-        inv_h[c] = 1.0 / v[c][2];
-        if (nv[c] < 2) continue;
-        ns[c] = (long)nv[c] - 1;
-        const double l = longest_segment(V[c], nv[c]);
-        if (l > lmax) lmax = l;
-    }
-    const size_t nseg = (size_t)(ns[0] + ns[1]);
-    if (nseg == 0) return EL_OK;
-    const double inv = 1.0 / (8.0 * fmax(mean_distance(dist, o->n), lmax));      /* 1 / cell */
-    size_t nb = 1;
-    while (nb < nseg) nb *= 2;
-    /* the runs (curve, first segment, end) in order, their buckets; then sorted by bucket */
-    size_t *start = calloc(nb + 1, sizeof(size_t)), *key = malloc(sizeof(size_t) * nseg);
-    long *run = malloc(sizeof(long) * 3 * nseg), *sorted = malloc(sizeof(long) * 3 * nseg);
-    unsigned short *win = malloc(sizeof(unsigned short) * 2 * nseg), *fwd[2] = {win, win + 2 * ns[0]};
-    int st = start && key && run && sorted && win ? EL_OK : EL_ENOMEM;
-    for (int c = 0; c < nc && !st; c++)
-        if (ns[c] > 0 && !direction_windows(V[c], ns[c], fwd[c], fwd[c] + ns[c])) st = EL_ENOMEM;
-    if (st) { free(start); free(key); free(run); free(sorted); free(win); return st; }
-    size_t nr = 0;
-    for (int c = 0; c < nc; c++) {
-        long ix = 0, iy = 0;
-        for (long j = 0; j < ns[c]; j++) {
-            const long jx = cell_index(V[c][2 * j] * inv), jy = cell_index(V[c][2 * j + 1] * inv);
-            if (j > 0 && jx == ix && jy == iy) { run[3 * nr - 1]++; continue; }
-            ix = jx; iy = jy;
-            run[3 * nr] = c; run[3 * nr + 1] = j; run[3 * nr + 2] = j + 1;
-            key[nr] = cell_hash(ix, iy, nb - 1);
-            start[key[nr] + 1]++;
-            nr++;
-        }
-    }
-    for (size_t b = 0; b < nb; b++) start[b + 1] += start[b];
-    for (size_t e = 0; e < nr; e++) memcpy(sorted + 3 * start[key[e]]++, run + 3 * e, sizeof(long) * 3);
-    for (size_t b = nb; b > 0; b--) start[b] = start[b - 1];
-    start[0] = 0;
-    for (size_t i = 0; i < o->n; i++) {
-        const double d0 = fabs(dist[i]);
-        if (!(d0 > 0.0)) continue;
-        double P[2];
-        fit_point(o, i, P);
-        polygon_query q = {P, side ? side[i] : 0, 0, 0, lmax, reach_of(d0, lmax), HUGE_VAL, 0.0, -1, 0};
-        /* the stretch: segments j with j h >= foot - 2 sqrt 2 d and (j + 1) h <= foot + 2 sqrt 2 d
-         * (to rounding: el__fit_polygon_distances searched a segment more each way), held to
-         * the curve (NaN: none); ceil and floor of the non-negative bounds by truncation */
-        const double span = 2.0 * 1.4142135623730951 * d0, top = (double)ns[q.own];
-        double a = (foot[i] - span) * inv_h[q.own], b = (foot[i] + span) * inv_h[q.own];
-        a = a > 0.0 ? (a < top ? a : top) : 0.0;
-        b = b > 0.0 ? (b < top ? b : top) : 0.0;
-        q.x0 = (long)a + ((double)(long)a < a);
-        q.x1 = (long)b;
-        /* and the direction windows of the foot's segment (one segment on either side, in
-         * case the foot's rounding gave the neighbour) */
-        if (ns[q.own] > 0 && isfinite(foot[i])) {
-            const double u = foot[i] * inv_h[q.own];
-            const long f = u > 0.0 ? (u < top - 1.0 ? (long)u : ns[q.own] - 1) : 0;
-            const long flo = f > 0 ? f - 1 : 0, fhi = f + 1 < ns[q.own] ? f + 1 : f;
-            const long w0 = fhi - (long)fwd[q.own][ns[q.own] + fhi], w1 = flo + (long)fwd[q.own][flo] + 1;
-            if (w0 < q.x0) q.x0 = w0;
-            if (w1 > q.x1) q.x1 = w1;
-        }
-        const long cx0 = cell_index((P[0] - q.r) * inv), cx1 = cell_index((P[0] + q.r) * inv);
-        const long cy0 = cell_index((P[1] - q.r) * inv), cy1 = cell_index((P[1] + q.r) * inv);
-        if ((double)(cx1 - cx0 + 1) * (double)(cy1 - cy0 + 1) > (double)nr) {
-            search_runs(V, run, nr, &q);     /* far: every run */
-        } else {
-            for (long ix = cx0; ix <= cx1; ix++)
-                for (long iy = cy0; iy <= cy1; iy++) {
-                    const size_t bk = cell_hash(ix, iy, nb - 1);
-                    search_runs(V, sorted + 3 * start[bk], start[bk + 1] - start[bk], &q);
-                }
-        }
-        if (q.bj < 0) continue;
-        const double d = segment_signed(V[q.bc] + 2 * q.bj, V[q.bc] + 2 * q.bj + 2, P, q.bt);
-        if (fabs(d) < d0) {
-            dist[i] = d;
-            foot[i] = v[q.bc][2] * ((double)q.bj + q.bt);
-            if (side) side[i] = q.bc;
-        }
-    }
-    free(start); free(key); free(run); free(sorted); free(win);
-    return EL_OK;
-}
-
 int el__fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], const double *V[2],
                                const size_t nv[2], double *dist, double *foot, int *side)
 {
     const int nc = o->map.ncurves;
     const size_t n = o->n;
     if (feet_are_nearest(o, v[0], V[0], nv[0], dist)) return EL_OK;
-    if (o->map.model == FIT_DISCRETE) return polygon_nearest_everywhere(o, v, V, nv, dist, foot, side);
+    if (o->map.model == FIT_DISCRETE) return el__fit_polygon_nearest_everywhere(o, v, V, nv, dist, foot, side);
     const double len[2] = {v[0][6], nc > 1 ? v[1][6] : 0.0};
-    const double dmed = mean_distance(dist, n);
+    const double dmed = fit_mean_distance(dist, n);
     double dmax = 0.0;
     for (size_t i = 0; i < n; i++)
         if (fabs(dist[i]) > dmax) dmax = fabs(dist[i]);     /* fmax(dmax, |d|), not a call */
@@ -843,12 +371,12 @@ int el__fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], cons
         for (int j = 0; j < np; j++) {
             const piece *p = &pc[j];
             const double R = 2.0 * dmax + p->r + rmax;
-            const long x0 = cell_index((p->cx - R) / g->cell), x1 = cell_index((p->cx + R) / g->cell);
-            const long y0 = cell_index((p->cy - R) / g->cell), y1 = cell_index((p->cy + R) / g->cell);
+            const long x0 = fit_cell_index((p->cx - R) / g->cell), x1 = fit_cell_index((p->cx + R) / g->cell);
+            const long y0 = fit_cell_index((p->cy - R) / g->cell), y1 = fit_cell_index((p->cy + R) / g->cell);
             const int all = (double)(x1 - x0 + 1) * (double)(y1 - y0 + 1) > 4.0 * np;
             for (long ix = x0; ix <= x1; ix++)
                 for (long iy = y0; iy <= y1; iy++)
-                    for (int e = all ? 0 : g->head[cell_hash(ix, iy, (1UL << HASH_BITS) - 1)]; all ? e < np : e >= 0; e = all ? e + 1 : g->next[e]) {
+                    for (int e = all ? 0 : g->head[fit_cell_hash(ix, iy, (1UL << HASH_BITS) - 1)]; all ? e < np : e >= 0; e = all ? e + 1 : g->next[e]) {
                         const int q = all ? e : g->item[e];
                         const piece *pq = &pc[q];
                         if (stamp[q] == (ptag | (unsigned)j)) continue;
@@ -886,8 +414,8 @@ int el__fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], cons
                 for (int j = lo; j <= hi; j++) any |= sep[SEP_LEVELS * j + l] + 4.0 * rmax > 2.0 * 1.4142135623730951 * d0;
                 if (!any) continue;
             }
-            const long x0 = cell_index((P[0] - d0) / g->cell), x1 = cell_index((P[0] + d0) / g->cell);
-            const long y0 = cell_index((P[1] - d0) / g->cell), y1 = cell_index((P[1] + d0) / g->cell);
+            const long x0 = fit_cell_index((P[0] - d0) / g->cell), x1 = fit_cell_index((P[0] + d0) / g->cell);
+            const long y0 = fit_cell_index((P[1] - d0) / g->cell), y1 = fit_cell_index((P[1] + d0) / g->cell);
             const unsigned tag = (unsigned)i + 1u;
             const own_foot f0 = {side ? side[i] : 0, foot[i]};
             if ((double)(x1 - x0 + 1) * (double)(y1 - y0 + 1) > 4.0 * np) {   /* far: every piece */
@@ -898,7 +426,7 @@ int el__fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], cons
             }
             for (long ix = x0; ix <= x1 && !st; ix++)
                 for (long iy = y0; iy <= y1 && !st; iy++)
-                    for (int e = g->head[cell_hash(ix, iy, (1UL << HASH_BITS) - 1)]; e >= 0 && !st; e = g->next[e]) {
+                    for (int e = g->head[fit_cell_hash(ix, iy, (1UL << HASH_BITS) - 1)]; e >= 0 && !st; e = g->next[e]) {
                         const int j = g->item[e];
                         if (stamp[j] == tag) continue;
                         stamp[j] = tag;

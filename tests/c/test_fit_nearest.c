@@ -1,4 +1,4 @@
-/* The fit's report (fit_nearest.c). Discrete: each point's distance to the polygon and its
+/* The fit's report (fit_nearest.c, fit_polygon.c). Discrete: each point's distance to the polygon and its
  * foot, by el__fit_polygon_distances (the search near the point's vertex) and
  * el__fit_nearest_everywhere (a nearer part elsewhere), against the brute-force nearest
  * point (every segment, the first of equal distances) on equilateral polygons: arcs,
@@ -10,7 +10,7 @@
 
 /* Whether (d, foot, side) is a nearest point of the polygons V[c] (nv[c] vertices,
  * segment h, c < nc) to P, over every segment by the library's formula for one
- * (fit_nearest.c): the signed distance (+ left of the segment's direction) and foot h (j + t)
+ * (fit_polygon.c): the signed distance (+ left of the segment's direction) and foot h (j + t)
  * on curve side of a segment at the least squared distance (exact ties: a foot at a
  * vertex is on two segments, each with its side). */
 static int brute_nearest(const double *const V[2], const size_t nv[2], int nc, double h, const double *P, double d,
@@ -261,7 +261,7 @@ START_TEST(test_long_polygon_report_equals_brute_force)
 }
 END_TEST
 
-/* The windows' directions (fit_nearest.c): within 2e-6 of atan2 all round the circle, at
+/* The windows' directions (fit_polygon.c): within 2e-6 of atan2 all round the circle, at
  * every scale, on the axes and the diagonals (modulo 2 pi: the cut at -pi). */
 START_TEST(test_direction_within_its_bound)
 {
