@@ -184,12 +184,27 @@ def _options(model: str, n: int, fixed: Optional[Mapping[str, float]], bounds, t
     return o
 
 
-def _raise_constraint(status: int, constraint: int) -> None:
+def _conditions(constraints: Optional[Mapping[str, object]], fixed: Optional[Mapping[str, float]]) -> int:
+    """The equations the constraints and fixed parameters impose on the curve's 7 parameters
+    (a point 2, a tangent or curvature 1, a fixed parameter 1; x0, y0 are the start point's)."""
+    dims = {"point": 2, "angle": 1, "number": 1, "range": 0}
+    held = set(fixed or ())
+    if "start_point" in (constraints or {}):
+        held -= {"x0", "y0"}
+    return sum(dims[_CONSTRAINTS[name][1]] for name in (constraints or {})) + len(held)
+
+
+def _raise_constraint(status: int, constraint: int, conditions: int) -> None:
     name = _CONSTRAINT_NAMES.get(constraint)
     if status == lib.EL_EINVAL:
         msg = f"fit: constraint {name!r} contradicts the options or another constraint"
     else:
         msg = f"fit: no elastica of the model meets constraint {name!r} (to 1e-10 of the data's size)"
+        if conditions > 7:
+            # e.g. point, tangent and curvature at both ends (a G2 join of two edges): a
+            # curve of 7 parameters meets 8 equations only where they come from one elastica
+            msg += (f"; the constraints are {conditions} equations on the 7 parameters of one "
+                    "elastica, met together only by values taken from one elastica's ends")
     raise ConstraintError(status, msg, name)
 
 
@@ -282,7 +297,7 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     if st == lib.EL_EINVAL and not np.all(np.isfinite(pts)):   # checked here, off the common path
         raise ValueError("fit: points must be finite (no NaN/inf)")
     if res.constraint and st in (lib.EL_EINVAL, lib.EL_EDOM):
-        _raise_constraint(st, res.constraint)
+        _raise_constraint(st, res.constraint, _conditions(constraints, fixed))
     if st not in (lib.EL_OK, lib.EL_ENOCONV, lib.EL_EMAXITER):
         check(st, "fit")
     s = None

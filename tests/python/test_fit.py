@@ -527,6 +527,29 @@ def test_constraint_errors_name_the_constraint():
             el.fit(pts, model="smooth", constraints=bad)
 
 
+@pytest.mark.parametrize("model", ["smooth", "discrete"])
+def test_overdetermined_ends_say_so(model):
+    """Point, tangent and curvature at both ends (a G2 join of two edges) are 8 equations
+    on an elastica's 7 parameters: the free fit's own end values with the first and last
+    points cannot all be met, and the error says why; 7 of them (G2 start, G1 end) are no
+    such case (the message is the plain one, or the fit succeeds)."""
+    pts, _ = sketched_s(seed=8, n=20)
+    f = el.fit(pts, model="smooth")
+    z = np.array([0.0, f.curve.length])
+    th, ka = f.curve.angle(z), f.curve.curvature(z)
+    cons = dict(start_point=tuple(pts[0]), end_point=tuple(pts[-1]), start_tangent=th[0], end_tangent=th[1],
+                start_curvature=ka[0] if model == "smooth" else 0.0, end_curvature=ka[1])
+    with pytest.raises(el.ConstraintError) as e:
+        el.fit(pts, model=model, constraints=cons)
+    assert "8 equations on the 7 parameters" in str(e.value) and e.value.constraint in cons
+    seven = {k: v for k, v in cons.items() if k != "end_curvature"}
+    try:
+        r = el.fit(pts, model=model, constraints=seven)
+        _check_constraints(r, seven, model, polyline_length(pts))
+    except el.ConstraintError as e7:
+        assert "equations" not in str(e7)
+
+
 # ------------------------------------------------------------------ keyline
 
 def _g2(kf):
