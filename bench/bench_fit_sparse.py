@@ -6,8 +6,9 @@ Each set: a smooth elastica of length 1 turning by at most 2 pi (k in [0.1, 0.95
 [1.05, 3], mu in [0.5, 30], random phase and orientation), 6-59 points at uniformly
 random arc lengths (the ends included), Gaussian noise of 0.1, 0.5 or 1 % of the
 curve's extent per coordinate. Fitted free, with the true start point and tangent
-(a curve continuing an edge G1) and pinned at the true end points (FreeCAD's Pin start
-and Pin end: the ends chart, no Ipopt), by the smooth and the discrete model, and by the smooth
+(a curve continuing an edge G1), pinned at the true end points (FreeCAD's Pin start
+and Pin end: the ends chart, no Ipopt) and with the true end points and tangents (a
+curve joining two edges G1), by the smooth and the discrete model, and by the smooth
 model with the true curve's start point, tangent and curvature and end point and tangent
 (a blend joining geometry G2 at its start, G1 at its end).
 
@@ -19,9 +20,9 @@ model with the true curve's start point, tangent and curvature and end point and
               fit from it follows the same starts, so both can be worse), errors,
               fits not certified (status other than 0), fits that ran Ipopt, and the
               median and maximum CPU time of a fit.
-  fit_sparse_free, fit_sparse_pinned  the free fits and those pinned at both ends, both
-              models: median, maximum and total CPU time, fits that ran Ipopt, not
-              certified, errors.
+  fit_sparse_free, fit_sparse_pinned, fit_sparse_g1_ends  the free fits, those pinned at
+              both ends and those joined G1 at both ends, both models: median, maximum
+              and total CPU time, fits that ran Ipopt, not certified, errors.
 
 `python3 bench/bench_fit_sparse.py SEED CASE` prints one set's points (the
 sets tests/c/test_fit_basin.c takes its data from: seed 4 case 22, seed 4 case 532,
@@ -34,7 +35,8 @@ import numpy as np
 
 import libelastica as el
 
-KINDS = {"free": (), "start G1": ("start_point", "start_tangent"), "pinned ends": ("start_point", "end_point")}
+KINDS = {"free": (), "start G1": ("start_point", "start_tangent"), "pinned ends": ("start_point", "end_point"),
+         "G1 both ends": ("start_point", "start_tangent", "end_point", "end_tangent")}
 # smooth only (the discrete model's start curvature other than 0 is an Ipopt row): a blend
 # that must join geometry G2 at its start and G1 at its end
 SMOOTH_KINDS = {"G2 start, G1 end": ("start_point", "start_tangent", "start_curvature", "end_point", "end_tangent")}
@@ -142,8 +144,8 @@ def main():
     worse = sum(o["worse_true"] for o in smooth)
     print(json.dumps({"bench": "fit_sparse_all", "sets": count * len(res), "stray": total, "errors": errors,
                       "readme": "fits of 6-59 sparse uneven noisy points (smooth and discrete, free, "
-                                "with a start tangent and pinned at both ends; smooth G2 start + G1 end) "
-                                "that stray from them",
+                                "with a start tangent, pinned at both ends, G1 at both ends; smooth G2 start "
+                                "+ G1 end) that stray from them",
                       "value": f"{total} of {count * len(res)}, {errors} errors (smooth: {worse} of "
                                f"{count * len(smooth)} above the true curve's rms by > 1 %)"}))
 
@@ -151,6 +153,8 @@ def main():
     kind_row(res, "free", "fit_sparse_free", "the same sketches fitted free, smooth / discrete", count)
     kind_row(res, "pinned ends", "fit_sparse_pinned",
              "the same sketches pinned at both ends (Pin start + Pin end), smooth / discrete", count)
+    kind_row(res, "G1 both ends", "fit_sparse_g1_ends",
+             "the same sketches joined G1 at both ends (the true end points and tangents), smooth / discrete", count)
 
 
 def kind_row(res, kind, bench, readme, count):
