@@ -71,23 +71,41 @@ static int curve_points(const double *v, double len, int m, double *xy)
 /* The bound of |kappa| on the smooth curve v: 2 |k| sqrt(mu) (seed 000 (4.3); v[3] = +-sqrt(mu)). */
 static double kappa_bound(const double *v) { return 2.0 * fabs(v[4] * v[3]); }
 
-/* Newton's method for the nearest point of a smooth curve (parameters v) to P from arc
- * length u: signed distance (+ left of the curve's own direction) and arc length. */
-static int newton_nearest(const double *v, double u, double lo, double hi, const double *P, double *d, double *s)
+/* A smooth curve of the search (parameters v, the fit's) prepared for Newton's steps one
+ * point at a time (el__smooth_point); st: el__fit_to_smooth's or el__smooth_prepare's
+ * status, which each of its evaluations returns. */
+typedef struct near_curve {
+    el__smooth_curve c;
+    double len;
+    int st;
+} near_curve;
+
+static void near_curve_init(const double *v, near_curve *nc)
 {
-    el_smooth_params sp;
-    int st = el__fit_to_smooth(v, &sp);
+    el_smooth_params p;
+    nc->len = v[6];
+    nc->st = el__fit_to_smooth(v, &p);
+    if (!nc->st) nc->st = el__smooth_prepare(&p, &nc->c);
+}
+
+/* Newton's method for the nearest point of a smooth curve to P from arc length u: signed
+ * distance (+ left of the curve's own direction) and arc length. Each step one
+ * el__smooth_point: el_smooth_eval's values at u bit for bit, at ~1/3 of its cost for one
+ * point (its set-up: the modulus and the base point, once per curve here). */
+static int newton_nearest(const near_curve *nc, double u, double lo, double hi, const double *P, double *d, double *s)
+{
+    int st = nc->st;
     if (st) return st;
     double xy[2], th = 0.0, ka = 0.0;
     for (int it = 0; it < FIT_NEWTON_MAX; it++) {
-        if ((st = el_smooth_eval(&sp, 1, &u, xy, &th, &ka))) return st;
+        if ((st = el__smooth_point(&nc->c, u, xy, &th, &ka))) return st;
         const double dx = xy[0] - P[0], dy = xy[1] - P[1], c = cos(th), sn = sin(th);
         const double t = c * dx + sn * dy, e = c * dy - sn * dx;
-        const double un = fmin(fmax(u + fit_foot_step(t, e, ka, v[6]), lo), hi), du = un - u;
-        if (fabs(du) <= 1e-14 * (v[6] + 1e-300)) { u = un; break; }
+        const double un = fmin(fmax(u + fit_foot_step(t, e, ka, nc->len), lo), hi), du = un - u;
+        if (fabs(du) <= 1e-14 * (nc->len + 1e-300)) { u = un; break; }
         u = un;
     }
-    if ((st = el_smooth_eval(&sp, 1, &u, xy, &th, NULL))) return st;
+    if ((st = el__smooth_point(&nc->c, u, xy, &th, NULL))) return st;
     const double dx = P[0] - xy[0], dy = P[1] - xy[1];
     *d = cos(th) * dy - sin(th) * dx < 0.0 ? -hypot(dx, dy) : hypot(dx, dy);
     *s = u;
@@ -95,9 +113,9 @@ static int newton_nearest(const double *v, double u, double lo, double hi, const
 }
 
 /* The nearest point of piece p of a smooth curve to P: Newton from its middle. */
-static int piece_nearest(const double *v, const piece *p, const double *P, double *d, double *s)
+static int piece_nearest(const near_curve *nc, const piece *p, const double *P, double *d, double *s)
 {
-    return newton_nearest(v, 0.5 * (p->s0 + p->s1), 0.0, v[6], P, d, s);
+    return newton_nearest(nc, 0.5 * (p->s0 + p->s1), 0.0, nc->len, P, d, s);
 }
 
 /*
@@ -170,7 +188,7 @@ static double dense_lower_bound(const dense_samples *ds, size_t j, double h, con
  * DENSE_TRIES nearest of them, nearest first, each tested again against the distance
  * the ones before reached (bounded work where the samples are coarse: many minima). */
 enum { DENSE_TRIES = 8 };
-static int dense_nearest(const double *v, dense_samples *ds, double s0, double s1, const double *P, size_t i,
+static int dense_nearest(const near_curve *curve, dense_samples *ds, double s0, double s1, const double *P, size_t i,
                          double *dist, double *foot, int *side)
 {
     const double h = ds->len / (double)(ds->m - 1), *C = ds->xy;
@@ -208,7 +226,7 @@ static int dense_nearest(const double *v, dense_samples *ds, double s0, double s
         if (!(dense_lower_bound(ds, cj[k], h, P, cd[k]) < dist[i] * dist[i])) continue;
         const double u = h * (double)cj[k];
         double d = HUGE_VAL, s = 0.0;
-        const int st = newton_nearest(v, u, fmax(u - h, 0.0), fmin(u + h, ds->len), P, &d, &s);
+        const int st = newton_nearest(curve, u, fmax(u - h, 0.0), fmin(u + h, ds->len), P, &d, &s);
         if (st) return st;
         if (fabs(d) < fabs(dist[i])) {
             dist[i] = d; foot[i] = s;
@@ -234,8 +252,8 @@ typedef struct own_foot {
     double s;
 } own_foot;
 
-static int consider(double v[2][FIT_NP], const piece *p, const double *P, const own_foot *f0, dense_samples *dense,
-                    size_t i, double *dist, double *foot, int *side)
+static int consider(double v[2][FIT_NP], const near_curve *curves, const piece *p, const double *P,
+                    const own_foot *f0, dense_samples *dense, size_t i, double *dist, double *foot, int *side)
 {
     /* a piece that turns by more than 1/2, or a point too far for its distance to be
      * convex along the curve: on the samples */
@@ -245,9 +263,9 @@ static int consider(double v[2][FIT_NP], const piece *p, const double *P, const 
     /* pieces already searched: those at the foot (the distance is convex there) */
     const double near = 2.0 * p->r;
     if (!ds && p->curve == f0->curve && p->s1 >= f0->s - near && p->s0 <= f0->s + near) return EL_OK;
-    if (ds) return dense_nearest(v[p->curve], ds, p->s0, p->s1, P, i, dist, foot, side);
+    if (ds) return dense_nearest(&curves[p->curve], ds, p->s0, p->s1, P, i, dist, foot, side);
     double d = HUGE_VAL, s = 0.0;
-    int st = piece_nearest(v[p->curve], p, P, &d, &s);
+    int st = piece_nearest(&curves[p->curve], p, P, &d, &s);
     if (!st && fabs(d) < fabs(dist[i])) {
         dist[i] = d; foot[i] = s;
         if (side) side[i] = p->curve;
@@ -326,8 +344,10 @@ int el__fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], cons
     memset(dense, 0, sizeof dense);
     double kmax[2] = {0.0, 0.0};
     double rmax = 0.0;
+    near_curve curves[2];
     for (int c = 0; c < nc && !st; c++) {
         first[c] = np;
+        near_curve_init(v[c], &curves[c]);
         if (!(len[c] > 0.0)) continue;
         const int m = (int)fmin(fmax(ceil(len[c] / (2.0 * dmed + 1e-300)), 8.0), (double)MAX_PIECES);
         double ends[2 * (MAX_PIECES + 1)];
@@ -421,7 +441,7 @@ int el__fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], cons
             if ((double)(x1 - x0 + 1) * (double)(y1 - y0 + 1) > 4.0 * np) {   /* far: every piece */
                 for (int j = 0; j < np && !st; j++)
                     if (disk_reaches(&pc[j], P, fabs(dist[i])))
-                        st = consider(v, &pc[j], P, &f0, dense, i, dist, foot, side);
+                        st = consider(v, curves, &pc[j], P, &f0, dense, i, dist, foot, side);
                 continue;
             }
             for (long ix = x0; ix <= x1 && !st; ix++)
@@ -431,7 +451,7 @@ int el__fit_nearest_everywhere(const fit_objective *o, double v[2][FIT_NP], cons
                         if (stamp[j] == tag) continue;
                         stamp[j] = tag;
                         if (disk_reaches(&pc[j], P, fabs(dist[i])))
-                            st = consider(v, &pc[j], P, &f0, dense, i, dist, foot, side);
+                            st = consider(v, curves, &pc[j], P, &f0, dense, i, dist, foot, side);
                     }
         }
     }

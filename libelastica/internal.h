@@ -95,6 +95,22 @@ int el__jacobi_values(const el__modulus *mod, double u, el_jacobi *val);
  * solutions' end-residual checks, hermite.c). */
 int el__smooth_ends(const el_smooth_params *p, double xy[4], double th[2]);
 
+/* A smooth curve prepared for evaluation one s at a time (smooth.c: Newton's steps along
+ * it, fit_nearest.c): the modulus, the base point's values and the rotation computed once.
+ * el__smooth_point(c, s, ...) is el_smooth_eval(p, 1, &s, ...): the same steps, bits and
+ * statuses (xy, theta, kappa may be NULL; NaN with EL_EDOM), without the per-call set-up
+ * (a modulus and two Jacobi evaluations where the point needs one). el__smooth_prepare:
+ * EL_EINVAL for bad parameters (el_smooth_check), EL_EDOM where the modulus or the base
+ * point overflow (el_smooth_eval then fails at every s). */
+typedef struct el__smooth_curve {
+    el_smooth_params p;
+    el__modulus mod;
+    el_jacobi base;              /* the Jacobi values at u = q */
+    double w, iw, c, s;          /* sqrt(mu), 1 / sqrt(mu), cos phi, sin phi */
+} el__smooth_curve;
+int el__smooth_prepare(const el_smooth_params *p, el__smooth_curve *c);
+int el__smooth_point(const el__smooth_curve *c, double s, double xy[2], double *theta, double *kappa);
+
 /* Jacobi sn, cn, dn, D (and k-derivatives) at many u_i at a few flops per point
  * (jacobi_walk.c; am and E are not filled). The caller keeps max(1, k)|u_i| <= EL__PHASE_MAX.
  *   el__walk wk;

@@ -231,6 +231,65 @@ START_TEST(jacobi_values_equal_the_full_evaluation)
 }
 END_TEST
 
+/* el__smooth_point on a prepared curve (Newton's steps of the nearest-point search,
+ * fit_nearest.c) against el_smooth_eval at the one s: the same status and, where EL_OK, the
+ * same bits of xy, theta and kappa (each output may be NULL), NaN where both fail; s at
+ * 0 (the base point), at the length, beyond both ends and far enough for EL_EDOM, not
+ * finite (EL_EINVAL); curves of every kind: |k| < 1, near and at 1, > 1 (theta's branch),
+ * 0 and negative, mu from 1e-12 to 1e12, |x0| to 1e6, phases past EL__PHASE_MAX; bad
+ * parameters (the preparation's EL_EINVAL, el_smooth_eval's at every s). */
+START_TEST(prepared_point_equals_el_smooth_eval)
+{
+    unsigned long long st = 0x9e1a7ULL;
+    long nok = 0, nedom = 0, ninval = 0;
+    for (int t = 0; t < 20000; t++) {
+        el_smooth_params p;
+        const int kind = t % 8;
+        p.x0 = test_uniform(&st, -10.0, 10.0) * (kind == 7 ? 1e6 : 1.0);
+        p.y0 = test_uniform(&st, -10.0, 10.0);
+        p.phi = test_uniform(&st, -10.0, 10.0);
+        p.mu = pow(10.0, test_uniform(&st, -12.0, 12.0));
+        const double e = pow(10.0, test_uniform(&st, -16.0, -1.0)) * (test_uniform(&st, 0.0, 1.0) < 0.5 ? -1.0 : 1.0);
+        const double sg = test_uniform(&st, 0.0, 1.0) < 0.5 ? -1.0 : 1.0;
+        p.k = kind == 0 ? test_uniform(&st, -1.0, 1.0) : kind == 1 ? sg * (1.0 + e) : kind == 2 ? sg
+            : kind == 3 ? test_uniform(&st, -50.0, 50.0) : kind == 4 ? 0.0 : test_uniform(&st, -3.0, 3.0);
+        p.q = kind == 5 ? sg * pow(10.0, test_uniform(&st, 10.0, 17.0)) : test_uniform(&st, -50.0, 50.0);
+        p.length = pow(10.0, test_uniform(&st, -3.0, 2.0)) / sqrt(p.mu);
+        if (t % 101 == 0) p.mu = t % 2 ? 0.0 : NAN;
+        el__smooth_curve c;
+        const int prep = el__smooth_prepare(&p, &c);
+        for (int i = 0; i < 12; i++) {
+            double s = i == 0 ? 0.0 : i == 1 ? p.length : i == 2 ? NAN : i == 3 ? INFINITY
+                     : i == 4 ? sg * 1e20 * (p.length + 1.0) : p.length * test_uniform(&st, -1.0, 2.0);
+            double xy0[2], th0, ka0, xy1[2], th1, ka1;
+            const int mask = i % 8;     /* which outputs: xy, theta, kappa */
+            const int rc0 = el_smooth_eval(&p, 1, &s, mask & 1 ? NULL : xy0, mask & 2 ? NULL : &th0, mask & 4 ? NULL : &ka0);
+            if (prep) {
+                require(rc0 == prep || (prep == EL_EDOM && rc0 == EL_EINVAL && !isfinite(s)),
+                        "prepared %d, evaluated %d (k %.17g q %.17g)", prep, rc0, p.k, p.q);
+                ninval += prep == EL_EINVAL;
+                nedom += prep == EL_EDOM;
+                continue;
+            }
+            const int rc1 = el__smooth_point(&c, s, mask & 1 ? NULL : xy1, mask & 2 ? NULL : &th1, mask & 4 ? NULL : &ka1);
+            require(rc0 == rc1, "status %d against %d (k %.17g q %.17g s %.17g)", rc1, rc0, p.k, p.q, s);
+            if (rc0 == EL_EINVAL) { ninval++; continue; }
+            if (rc0 == EL_EDOM) {
+                require((mask & 1 || (isnan(xy1[0]) && isnan(xy1[1]))) && (mask & 2 || isnan(th1)) &&
+                        (mask & 4 || isnan(ka1)), "EL_EDOM without NaN outputs");
+                nedom++;
+                continue;
+            }
+            require((mask & 1 || memcmp(xy0, xy1, sizeof xy0) == 0) && (mask & 2 || memcmp(&th0, &th1, sizeof th0) == 0) &&
+                    (mask & 4 || memcmp(&ka0, &ka1, sizeof ka0) == 0),
+                    "different bits (k %.17g q %.17g mu %.17g s %.17g)", p.k, p.q, p.mu, s);
+            nok++;
+        }
+    }
+    ck_assert(nok > 100000 && nedom > 10000 && ninval > 20000);   /* every outcome covered */
+}
+END_TEST
+
 START_TEST(walks_match_pointwise_at_extreme_scales)
 {
     /* valid but extreme: mu 1e-8 .. 1e8, lengths to 1e6, |x0| = 1e6, k from 1e-300 to 1e5 */
@@ -462,6 +521,7 @@ int main(void)
     tcase_add_test(sm, walks_match_pointwise_across_k_equal_1_at_every_step);
     tcase_add_test(sm, walks_match_pointwise_at_extreme_scales);
     tcase_add_test(sm, jacobi_values_equal_the_full_evaluation);
+    tcase_add_test(sm, prepared_point_equals_el_smooth_eval);
     tcase_add_test(sm, smooth_positions_match_quadrature_of_angle);
     tcase_add_test(sm, start_sample_takes_the_base_point_values);
     tcase_add_test(d, discrete_walk_matches_pointwise_dense_and_sparse);
