@@ -90,8 +90,8 @@ static void near_curve_init(const double *v, near_curve *nc)
 
 /* Newton's method for the nearest point of a smooth curve to P from arc length u: signed
  * distance (+ left of the curve's own direction) and arc length. Each step one
- * el__smooth_point: el_smooth_eval's values at u bit for bit, at ~1/3 of its cost for one
- * point (its set-up: the modulus and the base point, once per curve here). */
+ * el__smooth_point: el_smooth_eval's values at u bit for bit, at under half its cost for
+ * one point (its set-up, the modulus and the base point, once per curve here). */
 static int newton_nearest(const near_curve *nc, double u, double lo, double hi, const double *P, double *d, double *s)
 {
     int st = nc->st;

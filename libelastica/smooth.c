@@ -224,7 +224,8 @@ int el__smooth_ends(const el_smooth_params *p, double xy[4], double th[2])
 /* Header (internal.h): el_smooth_eval with one sample is WALK_PLAIN, the point a fresh
  * el__jacobi_values (the base point's values at u = q), the domain checked with
  * umax = max(|q|, |u|) and smax = |s| (scan_samples, smooth_domain): the same here, the
- * modulus and base point once. Measured: 560 ns a single-point el_smooth_eval, ~3 x this. */
+ * modulus and base point once. Measured (k = 0.8, s over [0.3, 2.3]): a single-point
+ * el_smooth_eval 600-690 ns, this 280-320 ns. */
 int el__smooth_prepare(const el_smooth_params *p, el__smooth_curve *c)
 {
     if (el_smooth_check(p)) return EL_EINVAL;
