@@ -243,17 +243,9 @@ START_TEST(prepared_point_equals_el_smooth_eval)
     unsigned long long st = 0x9e1a7ULL;
     long nok = 0, nedom = 0, ninval = 0;
     for (int t = 0; t < 20000; t++) {
-        el_smooth_params p;
         const int kind = t % 8;
-        p.x0 = test_uniform(&st, -10.0, 10.0) * (kind == 7 ? 1e6 : 1.0);
-        p.y0 = test_uniform(&st, -10.0, 10.0);
-        p.phi = test_uniform(&st, -10.0, 10.0);
-        p.mu = pow(10.0, test_uniform(&st, -12.0, 12.0));
-        const double e = pow(10.0, test_uniform(&st, -16.0, -1.0)) * (test_uniform(&st, 0.0, 1.0) < 0.5 ? -1.0 : 1.0);
-        const double sg = test_uniform(&st, 0.0, 1.0) < 0.5 ? -1.0 : 1.0;
-        p.k = kind == 0 ? test_uniform(&st, -1.0, 1.0) : kind == 1 ? sg * (1.0 + e) : kind == 2 ? sg
-            : kind == 3 ? test_uniform(&st, -50.0, 50.0) : kind == 4 ? 0.0 : test_uniform(&st, -3.0, 3.0);
-        p.q = kind == 5 ? sg * pow(10.0, test_uniform(&st, 10.0, 17.0)) : test_uniform(&st, -50.0, 50.0);
+        double sg;
+        el_smooth_params p = test_smooth_of_kind(kind, &st, &sg);
         p.length = pow(10.0, test_uniform(&st, -3.0, 2.0)) / sqrt(p.mu);
         if (t % 101 == 0) p.mu = t % 2 ? 0.0 : NAN;
         el__smooth_curve c;

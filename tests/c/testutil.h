@@ -42,6 +42,27 @@ static inline double test_normal(unsigned long long *state)
     return sqrt(-2.0 * log(u1)) * cos(2.0 * M_PI * u2);
 }
 
+/* A smooth curve of kind 0..7 for the fast paths' equality tests, its length left to the
+ * caller (drawn from *state in a fixed order: x0, y0, phi, mu, then k and q by kind):
+ * mu 1e-12..1e12; k in (-1, 1), +-(1 +- 1e-16..1e-1), +-1, up to +-50, 0, or in (-3, 3);
+ * kind 5 |q| 1e10..1e17 (phases past EL__PHASE_MAX), kind 7 |x0| to 1e6; *sign a random sign. */
+static inline el_smooth_params test_smooth_of_kind(int kind, unsigned long long *state, double *sign)
+{
+    el_smooth_params p;
+    p.x0 = test_uniform(state, -10.0, 10.0) * (kind == 7 ? 1e6 : 1.0);
+    p.y0 = test_uniform(state, -10.0, 10.0);
+    p.phi = test_uniform(state, -10.0, 10.0);
+    p.mu = pow(10.0, test_uniform(state, -12.0, 12.0));
+    const double e = pow(10.0, test_uniform(state, -16.0, -1.0)) * (test_uniform(state, 0.0, 1.0) < 0.5 ? -1.0 : 1.0);
+    const double sg = test_uniform(state, 0.0, 1.0) < 0.5 ? -1.0 : 1.0;
+    p.k = kind == 0 ? test_uniform(state, -1.0, 1.0) : kind == 1 ? sg * (1.0 + e) : kind == 2 ? sg
+        : kind == 3 ? test_uniform(state, -50.0, 50.0) : kind == 4 ? 0.0 : test_uniform(state, -3.0, 3.0);
+    p.q = kind == 5 ? sg * pow(10.0, test_uniform(state, 10.0, 17.0)) : test_uniform(state, -50.0, 50.0);
+    p.length = 0.0;
+    *sign = sg;
+    return p;
+}
+
 /* Run one suite, return the process exit code. */
 static inline int test_run_suite(Suite *s)
 {
