@@ -11,9 +11,10 @@
  * initial rms; the next is tried only while the best rms is above both the exact level
  * and 1.5 x the noise level estimated from third differences (el__fit_noise_rms, its
  * normal part for a distance to the curve; the plain figure for a constrained fit).
- * Each is fitted (fit_candidate.c) by Levenberg-Marquardt (fit_lm.c); a result certified by its
- * first-order condition and inside the caller's bounds is final. Ipopt (fit_ipopt.c)
- * runs from there for bounds that are active, constraints, or an uncertified result.
+ * Each is fitted (fit_candidate.c) by Levenberg-Marquardt (fit_lm.c); a result certified
+ * by its first-order condition and inside the caller's bounds is final. Ipopt
+ * (fit_ipopt.c) runs from there for bounds that are active, constraints, or an
+ * uncertified result.
  * Constraints on the start point are the parameters x0, y0 held, a start tangent or
  * curvature are the start-state chart's variables held (el__fit_run); a fit whose end has
  * more of these than its start runs on the points reversed (fit_restart.c). The
