@@ -346,7 +346,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
                 first_feet(&ob, t, p0[6]);      /* again (the stages moved them) */
             }
             if ((st = el__fit_solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, no_polish, x0, best.f, &r, tmp,
-                                      (staged && pre > 0) || polish_run, polish_run)))
+                                              (staged && pre > 0) || polish_run, polish_run)))
                 goto done;
             r.iters += pre;
             /* smooth: where the continuation's fit is above the noise or strays from the

@@ -75,15 +75,14 @@ static double kappa_bound(const double *v) { return 2.0 * fabs(v[4] * v[3]); }
  * point at a time (el__smooth_point); st: el__fit_to_smooth's or el__smooth_prepare's
  * status, which each of its evaluations returns. */
 typedef struct near_curve {
-    el__smooth_curve c;
-    double len;
+    el__smooth_curve c;         /* c.p.length: the curve's length, v[6] */
     int st;
 } near_curve;
 
 static void near_curve_init(const double *v, near_curve *nc)
 {
     el_smooth_params p;
-    nc->len = v[6];
+    memset(nc, 0, sizeof *nc);      /* c.p.length 0 where the curve is not one */
     nc->st = el__fit_to_smooth(v, &p);
     if (!nc->st) nc->st = el__smooth_prepare(&p, &nc->c);
 }
@@ -101,8 +100,8 @@ static int newton_nearest(const near_curve *nc, double u, double lo, double hi, 
         if ((st = el__smooth_point(&nc->c, u, xy, &th, &ka))) return st;
         const double dx = xy[0] - P[0], dy = xy[1] - P[1], c = cos(th), sn = sin(th);
         const double t = c * dx + sn * dy, e = c * dy - sn * dx;
-        const double un = fmin(fmax(u + fit_foot_step(t, e, ka, nc->len), lo), hi), du = un - u;
-        if (fabs(du) <= 1e-14 * (nc->len + 1e-300)) { u = un; break; }
+        const double un = fmin(fmax(u + fit_foot_step(t, e, ka, nc->c.p.length), lo), hi), du = un - u;
+        if (fabs(du) <= 1e-14 * (nc->c.p.length + 1e-300)) { u = un; break; }
         u = un;
     }
     if ((st = el__smooth_point(&nc->c, u, xy, &th, NULL))) return st;
@@ -115,7 +114,7 @@ static int newton_nearest(const near_curve *nc, double u, double lo, double hi, 
 /* The nearest point of piece p of a smooth curve to P: Newton from its middle. */
 static int piece_nearest(const near_curve *nc, const piece *p, const double *P, double *d, double *s)
 {
-    return newton_nearest(nc, 0.5 * (p->s0 + p->s1), 0.0, nc->len, P, d, s);
+    return newton_nearest(nc, 0.5 * (p->s0 + p->s1), 0.0, nc->c.p.length, P, d, s);
 }
 
 /*

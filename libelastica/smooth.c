@@ -181,39 +181,20 @@ int el_smooth_eval(const el_smooth_params *p, size_t n, const double *s,
 }
 
 /* Header (internal.h): with two samples the walk is WALK_PLAIN (n < WALK_MIN_POINTS), each
- * point a fresh el__jacobi_eval_mod and the one at u = q the base point's values
- * (block_values), so these are el_smooth_eval's operations on the same values
- * (test_hermite_tension.c compares the two bit for bit); 1.2 % of the tension mode's
- * instructions went to the general path's set-up. */
+ * point a fresh el__jacobi_values and the one at u = q the base point's values
+ * (block_values), so these are the prepared curve's two points (el__smooth_point, below);
+ * the status: the domain of the two samples together is that of the end s = length alone
+ * (umax and the extent largest there), which a failing start shares (test_hermite_tension.c
+ * compares the two bit for bit). 1.2 % of the tension mode's instructions went to the
+ * general path's set-up. */
 int el__smooth_ends(const el_smooth_params *p, double xy[4], double th[2])
 {
-    /* scan_samples over s = {0, length} by hand: umax = max(|q|, |sqrt(mu) length + q|)
-     * (w 0 + q is q), smax = |length|, not uniform (two points) */
-    if (el_smooth_check(p)) return EL_EINVAL;
-    const double s[2] = {0.0, p->length};
-    samples sc;
-    const double u1 = fabs(sqrt(p->mu) * s[1] + p->q), uq = fabs(p->q);
-    sc.umax = u1 > uq ? u1 : uq;
-    sc.smax = fabs(p->length);
-    sc.uniform = 0;
-    int st;
-    el__modulus mod;
-    el_jacobi b, v[2];
-    const double w = sqrt(p->mu), iw = 1.0 / w, k = p->k, c = cos(p->phi), sp = sin(p->phi);
-    st = smooth_domain(p, &sc) || el__modulus_init(fabs(k), 0, &mod) || el__jacobi_values(&mod, p->q, &b);
-    double finite = 0.0;
-    for (int i = 0; i < 2 && !st; i++) {
-        const double u = w * s[i] + p->q;
-        if (u == p->q) v[i] = b;
-        else if ((st = el__jacobi_values(&mod, u, &v[i]))) break;   /* am is not read */
-        const double X = ((u - p->q) - 2.0 * k * k * (v[i].D - b.D)) * iw;
-        const double Y = -2.0 * k * (v[i].cn - b.cn) * iw;
-        xy[2 * i] = p->x0 + c * X - sp * Y;
-        xy[2 * i + 1] = p->y0 + sp * X + c * Y;
-        th[i] = p->phi + 2.0 * half_angle(u, k, mod.K, &v[i]);
-        finite += (xy[2 * i] - xy[2 * i]) + (xy[2 * i + 1] - xy[2 * i + 1]) + (th[i] - th[i]);
-    }
-    if (st || finite != 0.0) {
+    el__smooth_curve c;
+    int st = el__smooth_prepare(p, &c);
+    if (st == EL_EINVAL) return st;
+    if (!st) st = el__smooth_point(&c, 0.0, xy, th, NULL);
+    if (!st) st = el__smooth_point(&c, p->length, xy + 2, th + 1, NULL);
+    if (st) {
         fill_nan(xy, 4);
         fill_nan(th, 2);
         return EL_EDOM;
