@@ -135,6 +135,42 @@ static int block_values(el__walk *wk, size_t nb, const double *u, double q, cons
     return EL_OK;
 }
 
+/* The curve's frame (el__smooth_curve's p, w, iw, c, s; the modulus and base point are
+ * the caller's). */
+static void curve_frame(const el_smooth_params *p, el__smooth_curve *c)
+{
+    c->p = *p;
+    c->w = sqrt(p->mu);
+    c->iw = 1.0 / c->w;
+    c->c = cos(p->phi);
+    c->s = sin(p->phi);
+}
+
+/* The point at u = sqrt(mu) s + q from its Jacobi values v (the header's formulas):
+ * position, tangent angle and curvature into entry i of those of xy, theta, kappa not
+ * NULL; adds x - x of each value written to *finite (0 while all are finite). */
+static inline void point_values(const el__smooth_curve *c, double u, const el_jacobi *v, size_t i,
+                                double *xy, double *theta, double *kappa, double *finite)
+{
+    const el_smooth_params *p = &c->p;
+    const double k = p->k;
+    if (xy) {
+        const double X = ((u - p->q) - 2.0 * k * k * (v->D - c->base.D)) * c->iw;
+        const double Y = -2.0 * k * (v->cn - c->base.cn) * c->iw;
+        xy[2 * i] = p->x0 + c->c * X - c->s * Y;
+        xy[2 * i + 1] = p->y0 + c->s * X + c->c * Y;
+        *finite += (xy[2 * i] - xy[2 * i]) + (xy[2 * i + 1] - xy[2 * i + 1]);
+    }
+    if (theta) {
+        theta[i] = p->phi + 2.0 * half_angle(u, k, c->mod.K, v);
+        *finite += theta[i] - theta[i];
+    }
+    if (kappa) {
+        kappa[i] = 2.0 * k * c->w * v->cn;
+        *finite += kappa[i] - kappa[i];
+    }
+}
+
 int el_smooth_eval(const el_smooth_params *p, size_t n, const double *s,
                    double *xy, double *theta, double *kappa)
 {
@@ -144,32 +180,23 @@ int el_smooth_eval(const el_smooth_params *p, size_t n, const double *s,
     el__walk wk;
     el_jacobi b;
     st = walk_start(p, n, s, &sc, 0, &wk, &b, NULL);
-    const double w = sqrt(p->mu), iw = 1.0 / w, k = p->k, c = cos(p->phi), sp = sin(p->phi);
+    /* the curve for point_values, a copy no callee sees: the stores through xy cannot
+     * alias it (its base filled in place, as block_values' argument: +0.6 % instructions
+     * on 1000-point evaluations) */
+    el__smooth_curve cv;
+    if (!st) {
+        curve_frame(p, &cv);
+        cv.mod = wk.mod;
+        cv.base = b;
+    }
     double finite = 0.0; /* x - x is 0 for finite x, NaN otherwise: stays 0 while no output overflows */
     for (size_t i0 = 0; i0 < n && !st; i0 += BLOCK) {
         const size_t nb = n - i0 < BLOCK ? n - i0 : BLOCK;
         double u[BLOCK];
         el_jacobi v[BLOCK];
-        for (size_t j = 0; j < nb; j++) u[j] = w * s[i0 + j] + p->q;
+        for (size_t j = 0; j < nb; j++) u[j] = cv.w * s[i0 + j] + p->q;
         if ((st = block_values(&wk, nb, u, p->q, &b, NULL, v, NULL))) break;
-        for (size_t j = 0; j < nb; j++) {
-            const size_t i = i0 + j;
-            if (xy) {
-                const double X = ((u[j] - p->q) - 2.0 * k * k * (v[j].D - b.D)) * iw;
-                const double Y = -2.0 * k * (v[j].cn - b.cn) * iw;
-                xy[2 * i] = p->x0 + c * X - sp * Y;
-                xy[2 * i + 1] = p->y0 + sp * X + c * Y;
-                finite += (xy[2 * i] - xy[2 * i]) + (xy[2 * i + 1] - xy[2 * i + 1]);
-            }
-            if (theta) {
-                theta[i] = p->phi + 2.0 * half_angle(u[j], k, wk.mod.K, &v[j]);
-                finite += theta[i] - theta[i];
-            }
-            if (kappa) {
-                kappa[i] = 2.0 * k * w * v[j].cn;
-                finite += kappa[i] - kappa[i];
-            }
-        }
+        for (size_t j = 0; j < nb; j++) point_values(&cv, u[j], &v[j], i0 + j, xy, theta, kappa, &finite);
     }
     if (st || finite != 0.0) {
         fill_nan(xy, 2 * n);
@@ -210,11 +237,7 @@ int el__smooth_ends(const el_smooth_params *p, double xy[4], double th[2])
 int el__smooth_prepare(const el_smooth_params *p, el__smooth_curve *c)
 {
     if (el_smooth_check(p)) return EL_EINVAL;
-    c->p = *p;
-    c->w = sqrt(p->mu);
-    c->iw = 1.0 / c->w;
-    c->c = cos(p->phi);
-    c->s = sin(p->phi);
+    curve_frame(p, c);
     /* the domain is each point's (el__smooth_point); these fail only where it does or
      * on overflow, as in el_smooth_eval */
     return el__modulus_init(fabs(p->k), 0, &c->mod) || el__jacobi_values(&c->mod, p->q, &c->base) ? EL_EDOM : EL_OK;
@@ -223,7 +246,7 @@ int el__smooth_prepare(const el_smooth_params *p, el__smooth_curve *c)
 int el__smooth_point(const el__smooth_curve *c, double s, double xy[2], double *theta, double *kappa)
 {
     const el_smooth_params *p = &c->p;
-    const double u = c->w * s + p->q, k = p->k;
+    const double u = c->w * s + p->q;
     if (!(fabs(s) <= DBL_MAX)) return EL_EINVAL;
     const double au = fabs(u), uq = fabs(p->q);
     const samples sc = {au > uq ? au : uq, fabs(s), 0};
@@ -234,21 +257,7 @@ int el__smooth_point(const el__smooth_curve *c, double s, double xy[2], double *
         else st = el__jacobi_values(&c->mod, u, &v) ? EL_EDOM : EL_OK;
     }
     double finite = 0.0;
-    if (!st && xy) {
-        const double X = ((u - p->q) - 2.0 * k * k * (v.D - c->base.D)) * c->iw;
-        const double Y = -2.0 * k * (v.cn - c->base.cn) * c->iw;
-        xy[0] = p->x0 + c->c * X - c->s * Y;
-        xy[1] = p->y0 + c->s * X + c->c * Y;
-        finite += (xy[0] - xy[0]) + (xy[1] - xy[1]);
-    }
-    if (!st && theta) {
-        *theta = p->phi + 2.0 * half_angle(u, k, c->mod.K, &v);
-        finite += *theta - *theta;
-    }
-    if (!st && kappa) {
-        *kappa = 2.0 * k * c->w * v.cn;
-        finite += *kappa - *kappa;
-    }
+    if (!st) point_values(c, u, &v, 0, xy, theta, kappa, &finite);
     if (st || finite != 0.0) {
         fill_nan(xy, 2);
         fill_nan(theta, 1);
