@@ -7,7 +7,9 @@ polylines from them.
 """
 import math
 import os
+import shutil
 import sys
+import tempfile
 
 import FreeCAD as App
 import Part
@@ -33,6 +35,14 @@ def keyline_xy(n=40, length=None):
         p["length"] = length
     c = el.SmoothElastica(**p)
     return c.points(np.linspace(0.0, c.length, n)), c
+
+
+def temp_path(test, name):
+    """A path named name in a fresh temporary folder that test removes when it ends
+    (tempfile.mkdtemp alone left a folder in /tmp per test and run)."""
+    folder = tempfile.mkdtemp(prefix="elastica-test-")
+    test.addCleanup(shutil.rmtree, folder, True)
+    return os.path.join(folder, name)
 
 
 def new_doc(name):

@@ -6,7 +6,9 @@
 #   on the demo document examples/demo.py makes headless first ($(BUILD)/freecad/demo/);
 #   it keeps its screenshots ($(BUILD)/freecad/gui_*.png) and a result file checked here.
 # FreeCAD runs with HOME=$(BUILD)/freecad/home, whose Mod folder links to freecad_wb/,
-# so the user's real ~/.local and ~/.config are never touched.
+# so the user's real ~/.local and ~/.config are never touched, and with TMPDIR in it: the
+# Start page leaves a FreeCADStartThumbnails folder in the temporary directory at each
+# GUI start (and the single-instance socket, `FreeCAD`, stays there too).
 BUILD     ?= build
 FCDIR     := $(BUILD)/freecad
 FCHOME    := $(CURDIR)/$(FCDIR)/home
@@ -14,7 +16,7 @@ FCMOD     := $(FCHOME)/.local/share/FreeCAD/Mod
 FC_TESTS  := $(basename $(notdir $(wildcard tests/freecad/test_*.py)))
 FC_ENV     = HOME=$(FCHOME) LIBELASTICA_PATH=$(CURDIR)/$(BUILD)/libelastica.so \
              PYTHONPATH=$(CURDIR)/python:$(CURDIR)/tests/freecad \
-             QTWEBENGINE_DISABLE_SANDBOX=1 ELASTICA_TEST_OUT=$(CURDIR)/$(FCDIR)
+             QTWEBENGINE_DISABLE_SANDBOX=1 ELASTICA_TEST_OUT=$(CURDIR)/$(FCDIR) TMPDIR=$(FCHOME)/tmp
 TIMEOUT   ?= 150
 
 .PHONY: all fc-home fc-tests fc-gui fc-demo fc-gallery fc-addon
@@ -22,7 +24,7 @@ all: fc-tests fc-addon fc-gui
 
 # a fresh HOME without a Mod folder: `make freecad-install` must make it and link the workbench
 fc-home:
-	@rm -rf $(FCHOME) && mkdir -p $(FCHOME)
+	@rm -rf $(FCHOME) && mkdir -p $(FCHOME)/tmp
 	@$(MAKE) --no-print-directory -f Makefile freecad-install FREECAD_MOD=$(FCMOD) BUILD=$(BUILD) > /dev/null
 	@test "$$(readlink $(FCMOD)/elastica)" = "$(CURDIR)/freecad_wb" || \
 	  { echo "FAILED: make freecad-install did not link $(FCMOD)/elastica"; exit 1; }

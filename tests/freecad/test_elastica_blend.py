@@ -2,7 +2,6 @@
 updates, save / reopen, and bad input (the document must stay unchanged)."""
 import math
 import os
-import tempfile
 import unittest
 
 import FreeCAD as App
@@ -262,7 +261,7 @@ class BlendTest(unittest.TestCase):
         samples = [tuple(p) for p in b.Shape.Edges[0].discretize(50)]
         lengths, nteeth = list(b.Lengths), len(comb.Shape.Edges)
         bname, cname = b.Name, comb.Name
-        path = os.path.join(tempfile.mkdtemp(), "blend.FCStd")
+        path = S.temp_path(self, "blend.FCStd")
         self.doc.saveAs(path)
         name = self.doc.Name
         App.closeDocument(name)

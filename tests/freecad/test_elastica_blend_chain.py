@@ -5,7 +5,6 @@ and survives save / reopen."""
 import json
 import math
 import os
-import tempfile
 import unittest
 
 import FreeCAD as App
@@ -63,7 +62,7 @@ class BlendChainTest(unittest.TestCase):
         b.Solution = kinds.index("chain")
         self.doc.recompute()
         stored, bname = b.Curves, b.Name
-        path = os.path.join(tempfile.mkdtemp(), "blend_chain.FCStd")
+        path = S.temp_path(self, "blend_chain.FCStd")
         self.doc.saveAs(path)
         App.closeDocument(self.doc.Name)
         self.doc = App.openDocument(path)

@@ -8,7 +8,6 @@ The shape is checked against the library's own blending curve: through the four
 points in interpolate mode, from q0 to q3 with the picked control points otherwise."""
 import math
 import os
-import tempfile
 import unittest
 
 import FreeCAD as App
@@ -200,7 +199,7 @@ class EllipticBlendTest(unittest.TestCase):
         q = [App.Vector(v) for v in f.ControlPoints]
         samples = [tuple(p) for p in f.Shape.Edges[0].discretize(50)]
         name = f.Name
-        path = os.path.join(tempfile.mkdtemp(), "ellblend.FCStd")
+        path = S.temp_path(self, "ellblend.FCStd")
         self.doc.saveAs(path)
         App.closeDocument(self.doc.Name)
         self.doc = App.openDocument(path)
@@ -332,7 +331,7 @@ class EllipticBlendTest(unittest.TestCase):
         self.doc.recompute()
         warnings = list(f.Warnings)
         self.assertEqual(len(warnings), 1)
-        path = os.path.join(tempfile.mkdtemp(), "warned.FCStd")
+        path = S.temp_path(self, "warned.FCStd")
         self.doc.saveAs(path)
         name = f.Name
         App.closeDocument(self.doc.Name)

@@ -7,7 +7,6 @@ elastica_samples.KEYLINE), so a correct fit has a tiny error and finds that k.""
 import json
 import math
 import os
-import tempfile
 import unittest
 
 import FreeCAD as App
@@ -89,7 +88,7 @@ class FitInputsTest(unittest.TestCase):
         self._fit_ok(f)
 
     def test_csv_file(self):
-        path = os.path.join(tempfile.mkdtemp(), "keyline.csv")
+        path = S.temp_path(self, "keyline.csv")
         with open(path, "w") as fh:
             fh.write("x,y,z\n")
             for v in G.to_3d(S.SKETCH_PLACEMENT, self.xy):
@@ -188,7 +187,7 @@ class FitParametricTest(unittest.TestCase):
         rms = self.fit.Rms
         pts = [tuple(p) for p in self.fit.Shape.Edges[0].discretize(60)]
         name, fname = self.doc.Name, self.fit.Name
-        path = os.path.join(tempfile.mkdtemp(), "fit.FCStd")
+        path = S.temp_path(self, "fit.FCStd")
         self.doc.saveAs(path)
         App.closeDocument(name)
         self.doc = App.openDocument(path)
@@ -310,7 +309,7 @@ class FitResultTest(unittest.TestCase):
         f.ResampleStep = 1.2345678901234567e-5
         self.doc.recompute()
         name, fname = self.doc.Name, f.Name
-        path = os.path.join(tempfile.mkdtemp(), "tiny.FCStd")
+        path = S.temp_path(self, "tiny.FCStd")
         self.doc.saveAs(path)
         App.closeDocument(name)
         self.doc = App.openDocument(path)
@@ -326,7 +325,7 @@ class FitResultTest(unittest.TestCase):
         f = Fi.make(self.doc, [(self.sk, [])], Model="smooth", PinStart=True)
         self.doc.recompute()
         name, fname = self.doc.Name, f.Name
-        path = os.path.join(tempfile.mkdtemp(), "v2.FCStd")
+        path = S.temp_path(self, "v2.FCStd")
         self.doc.saveAs(path)
         App.closeDocument(name)
         old = path.replace("v2", "v1")
@@ -685,7 +684,7 @@ class FitBadInputTest(unittest.TestCase):
 
     def test_missing_and_malformed_csv(self):
         self._rejected([], csv_file="/nonexistent/points.csv")
-        path = os.path.join(tempfile.mkdtemp(), "bad.csv")
+        path = S.temp_path(self, "bad.csv")
         with open(path, "w") as fh:
             fh.write("1,2\n3,x\n")
         self._rejected([], csv_file=path)

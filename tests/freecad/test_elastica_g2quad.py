@@ -3,7 +3,6 @@ curve with an inflection, one curvature-continuous quadratic B-spline per piece,
 ending exactly on the source; its reported deviation; parametric updates;
 save / reopen; bad input (a message, the document unchanged)."""
 import os
-import tempfile
 import unittest
 
 import FreeCAD as App
@@ -93,7 +92,7 @@ class G2QuadTest(unittest.TestCase):
         self.doc.recompute()
         pts = [tuple(p) for e in q.Shape.Edges for p in e.discretize(30)]
         name, qname = self.doc.Name, q.Name
-        path = os.path.join(tempfile.mkdtemp(), "g2.FCStd")
+        path = S.temp_path(self, "g2.FCStd")
         self.doc.saveAs(path)
         App.closeDocument(name)
         self.doc = App.openDocument(path)

@@ -5,7 +5,6 @@ point moves, save / reopen, every kind of source, and bad input (a message, the
 document unchanged)."""
 import math
 import os
-import tempfile
 import unittest
 
 import FreeCAD as App
@@ -285,7 +284,7 @@ class SplineTest(unittest.TestCase):
         s = self.spline(Tension=1.2345678901234567e-4, Stiffness=3.6e6)
         energy, name = s.Energy, s.Name
         samples = [tuple(p) for p in s.Shape.Edges[0].discretize(50)]
-        path = os.path.join(tempfile.mkdtemp(), "spline.FCStd")
+        path = S.temp_path(self, "spline.FCStd")
         self.doc.saveAs(path)
         App.closeDocument(self.doc.Name)
         self.doc = App.openDocument(path)
