@@ -17,7 +17,7 @@ from typing import Tuple
 
 import numpy as np
 
-from ._ffi import DomainError, as_int, as_points, as_real, as_real_array, check, dptr, ffi, lib
+from ._ffi import DomainError, ElasticaError, as_int, as_points, as_real, as_real_array, check, dptr, ffi, lib
 
 __all__ = ["Frame", "Frame2D", "Inflection", "PreparedKeyline", "plane_fit",
            "resample_equilateral", "pca_normalize", "find_inflection", "find_inflection_info",
@@ -171,6 +171,21 @@ def resample_equilateral(xy, r: float, return_info: bool = False):
                               f"{length / (limit - 1):.3g}")
         raise DomainError(st, "resample_equilateral: the polyline's coordinates or length are "
                           "beyond double's range")
+    if st == lib.EL_EINVAL:      # which of the header's causes (NaN/inf points: as_points)
+        why = None
+        if pts.shape[0] < 2:
+            why = f"{pts.shape[0]} point: a polyline needs at least 2"
+        elif not r > 0.0:
+            why = f"r = {r:g}: the segment length must be positive"
+        else:
+            # r beyond every point's distance from A_1 (the end of smaller x): no A_2
+            start = pts[-1] if pts[-1, 0] < pts[0, 0] else pts[0]
+            reach = float(np.max(np.hypot(pts[:, 0] - start[0], pts[:, 1] - start[1])))
+            if reach < r:
+                why = (f"r = {r:.6g} is longer than the polyline reaches: its points lie within "
+                       f"{reach:.6g} of its start (the end of smaller x); a polygon needs a smaller r")
+        if why:
+            raise ElasticaError(st, f"resample_equilateral: {why}")
     check(st, "resample_equilateral")
     try:
         m = int(res.n)

@@ -689,6 +689,29 @@ class FitBadInputTest(unittest.TestCase):
             fh.write("1,2\n3,x\n")
         self._rejected([], csv_file=path)
 
+    def test_resample_step_longer_than_the_points_reach(self):
+        xy, _ = S.keyline_xy(20)
+        msg = self._rejected([(S.points_sketch(self.doc, xy), [])], ResampleStep=5000.0)
+        self.assertIn("Resample = 5000 mm is longer than the points reach", msg)
+        reach = max(math.hypot(*(p - xy[0])) for p in xy)          # the S starts at smaller x
+        self.assertLess(xy[0][0], xy[-1][0])
+        self.assertIn(f"all within {reach:.4g} mm", msg)
+        self.assertIn("0 fits the points as they are", msg)
+        # a keyline split at its inflection: the same words (the polygon starts from either end)
+        msg = self._rejected([(S.points_sketch(self.doc, xy), [])], ResampleStep=5000.0,
+                             SplitAtInflection=True)
+        self.assertIn("Resample = 5000 mm is longer than the points reach", msg)
+        self.assertNotIn("resample_equilateral", msg)
+
+    def test_resample_step_leaving_too_few_points(self):
+        xy, _ = S.keyline_xy(20)
+        length = sum(math.hypot(*(q - p)) for p, q in zip(xy[:-1], xy[1:]))
+        msg = self._rejected([(S.points_sketch(self.doc, xy), [])], ResampleStep=100.0)
+        left = len(el.resample_equilateral(xy, 100.0))
+        self.assertLess(left, Fi.MIN_POINTS)
+        self.assertIn(f"Resample = 100 mm leaves {left} points; a fit needs {Fi.MIN_POINTS}", msg)
+        self.assertIn(f"need a step under {length / (Fi.MIN_POINTS - 1):.4g} mm", msg)
+
     def test_separate_chains(self):
         sk = S.two_lines_sketch(self.doc)
         self.assertIn("chains", self._rejected([(sk, ["Edge1", "Edge2"])]))

@@ -166,7 +166,18 @@ def test_resample_bad_input():
     for r in (0.0, -1.0, np.nan, np.inf, 3.5):
         with pytest.raises(ValueError):
             el.resample_equilateral(poly, r)
-    with pytest.raises(ValueError):
+    for r in (0.0, -1.0):
+        with pytest.raises(ValueError, match="must be positive"):
+            el.resample_equilateral(poly, r)
+    with pytest.raises(ValueError, match=r"r = 3.5 is longer than the polyline reaches: its points lie within 3 of"):
+        el.resample_equilateral(poly, 3.5)
+    # the reach from the start A_1, the end of smaller x (here the last point): 6.40, where
+    # the first point's is 5; r = 6 has its A_2 on the first side walked
+    hook = np.array([[5.0, 0.0], [5.0, 4.0], [0.0, 0.0]])
+    assert len(el.resample_equilateral(hook, 6.0)) == 2
+    with pytest.raises(ValueError, match=r"lie within 6\.40312 of its start"):
+        el.resample_equilateral(hook, 6.5)
+    with pytest.raises(ValueError, match="at least 2"):
         el.resample_equilateral(poly[:1], 0.5)
     bad = poly.copy()
     bad[2, 0] = np.inf

@@ -118,6 +118,36 @@ def _constraint_cost(xy, model, distance, fixed, constraints, rms):
                          "the data"]
 
 
+def _step_advice(xy):
+    """What a resampling step of the points xy must be below, and the way out."""
+    length = float(np().sum(np().hypot(*np().diff(xy, axis=0).T)))
+    return (f"the points' polyline is {length:.4g} mm long, so {MIN_POINTS} points need a step "
+            f"under {length / (MIN_POINTS - 1):.4g} mm; 0 fits the points as they are")
+
+
+def _check_reach(xy, step, starts):
+    """Refuse, in the panel's terms, a resampling step longer than any point lies from
+    the polygon's start (the library's rule: no second vertex). starts: the indices the
+    start may be (one piece: the end of smaller x; a keyline: either end, its own
+    frame decides)."""
+    n = np()
+    reach = max(float(n.max(n.hypot(xy[:, 0] - xy[i, 0], xy[:, 1] - xy[i, 1]))) for i in starts)
+    if step > reach:
+        raise InputProblem(f"Resample = {step:g} mm is longer than the points reach (all within "
+                           f"{reach:.4g} mm of the end the polygon starts from): {_step_advice(xy)}")
+
+
+def _resampled(xy, step):
+    """The points xy resampled into an equilateral polygon of segment step
+    (el.resample_equilateral), at least MIN_POINTS vertices of it."""
+    _check_reach(xy, step, [-1 if xy[-1, 0] < xy[0, 0] else 0])
+    out = el().resample_equilateral(xy, step)
+    if len(out) < MIN_POINTS:
+        raise InputProblem(f"Resample = {step:g} mm leaves {len(out)} points; a fit needs "
+                           f"{MIN_POINTS}: {_step_advice(xy)}")
+    return out
+
+
 def _keyline(xy, model, step):
     """The keyline of points xy as one G2 curve (el.fit_keyline): its two halves as
     the library gives them (plane coordinates, each from the joint outwards, with
@@ -245,16 +275,15 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
             xy = n.ascontiguousarray(xy[n.argsort(xn[:, 0], kind="stable")])
         constraints, free_rms, warnings = {}, -1.0, []
         if split:
+            if step > 0:
+                _check_reach(xy, step, [0, -1])
             fitted = _keyline(xy, model, step)
         else:
             fixed = {}
             if step > 0:
-                xy = el().resample_equilateral(xy, step)
+                xy = _resampled(xy, step)
                 if model == "discrete":
                     fixed["h"] = step            # the polygon's segment (seed 000 §5.4)
-            if len(xy) < MIN_POINTS:
-                raise InputProblem(f"resampling leaves {len(xy)} points; a fit needs "
-                                   f"{MIN_POINTS}: use a smaller step")
             constraints = end_constraints(xy, plane, **ends)
             fitted = _one_piece(xy, model, distance, fixed, constraints)
         curves, results, data, feet, dist, rms, max_error = fitted
@@ -270,7 +299,7 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         if split and "inflection" in str(exc):
             hint = " (no inflection: fit without splitting the keyline)"
         elif step and "resample" in str(exc):
-            hint = f" (is the resampling step {step} longer than the curve?)"
+            hint = f" (is the resampling step {step:g} mm longer than the curve?)"
         raise InputProblem(f"fit failed: {exc}{hint}") from None
     if not (n.all(n.isfinite(dist)) and math.isfinite(rms)):
         raise InputProblem("fit failed: non-finite error")
