@@ -20,7 +20,7 @@ import numpy as np
 from ._ffi import DomainError, ElasticaError, as_int, as_points, as_real, as_real_array, check, dptr, ffi, lib
 
 __all__ = ["Frame", "Frame2D", "Inflection", "PreparedKeyline", "plane_fit",
-           "resample_equilateral", "pca_normalize", "find_inflection", "find_inflection_info",
+           "resample_equilateral", "RESAMPLE_MAX_VERTICES", "pca_normalize", "find_inflection", "find_inflection_info",
            "prepare_keyline"]
 
 
@@ -145,6 +145,11 @@ class Resampled:
     s: np.ndarray
     reversed: bool
     remainder: float
+
+
+#: The most vertices resample_equilateral builds (EL_RESAMPLE_MAX_VERTICES): a segment r
+#: below the polyline's length / (RESAMPLE_MAX_VERTICES - 1) is refused (DomainError).
+RESAMPLE_MAX_VERTICES = int(lib.EL_RESAMPLE_MAX_VERTICES)
 
 
 def resample_equilateral(xy, r: float, return_info: bool = False):

@@ -679,8 +679,16 @@ class FitBadInputTest(unittest.TestCase):
     def test_failed_fit_no_inflection_to_split(self):
         sk = S.arc_sketch(self.doc, 30.0)       # convex: the keyline split must fail
         msg = self._rejected([(sk, ["Edge1"])], SplitAtInflection=True)
-        self.assertIn("fit failed", msg)
-        self.assertIn("inflection", msg)
+        self.assertIn("no inflection found in the points: fit them without splitting", msg)
+        self.assertNotIn("prepare_keyline", msg)
+
+    def test_coincident_points(self):
+        import Points
+        cloud = self.doc.addObject("Points::Feature", "Same")
+        cloud.Points = Points.Points([App.Vector(3, 4, 5)] * 8)
+        self.doc.recompute()
+        # the sources keep one point of each place
+        self.assertIn("1 point: a fit needs at least 6", self._rejected([(cloud, [])]))
 
     def test_missing_and_malformed_csv(self):
         self._rejected([], csv_file="/nonexistent/points.csv")
@@ -711,6 +719,22 @@ class FitBadInputTest(unittest.TestCase):
         self.assertLess(left, Fi.MIN_POINTS)
         self.assertIn(f"Resample = 100 mm leaves {left} points; a fit needs {Fi.MIN_POINTS}", msg)
         self.assertIn(f"need a step under {length / (Fi.MIN_POINTS - 1):.4g} mm", msg)
+
+    def test_resample_step_too_fine(self):
+        xy, _ = S.keyline_xy(20)
+        length = sum(math.hypot(*(q - p)) for p, q in zip(xy[:-1], xy[1:]))
+        most = el.RESAMPLE_MAX_VERTICES
+        msg = self._rejected([(S.points_sketch(self.doc, xy), [])], ResampleStep=1e-5)
+        self.assertIn(f"more than {most - 1}: use a step of at least {length / (most - 1):.4g} mm", msg)
+        # the library's own limit: a step just above it is taken
+        self.assertGreater(len(el.resample_equilateral(xy, 1.001 * length / (most - 1))), 0.99 * most)
+
+    def test_resample_step_across_a_hairpin(self):
+        # out 100 mm and back, 0.5 mm apart: the polygon of step 3 mm jumps across from the start
+        xy = [(x, 0.0) for x in range(0, 101, 5)] + [(x, 0.5) for x in range(100, -1, -5)]
+        msg = self._rejected([(S.polyline_3d(self.doc, xy), [])], ResampleStep=3.0)   # ordered
+        self.assertIn("Resample = 3 mm leaves 2 points", msg)
+        self.assertIn("the polygon jumps where the points double back", msg)
 
     def test_separate_chains(self):
         sk = S.two_lines_sketch(self.doc)

@@ -314,12 +314,18 @@ class SplineTest(unittest.TestCase):
         nan.Points = Points.Points([App.Vector(0, 0, 0), App.Vector(float("nan"), 1, 0),
                                     App.Vector(5, 2, 0)])
         one = S.points_sketch(self.doc, [(0, 0)], "One")
+        same = self.doc.addObject("Points::Feature", "Same")
+        same.Points = Points.Points([App.Vector(1, 2, 3)] * 4)
+        two = self.doc.addObject("Points::Feature", "Two3D")      # no sketch: no plane
+        two.Points = Points.Points([App.Vector(0, 0, 0), App.Vector(5, 2, 1)])
         # the free batten slides off a tight zigzag of ducks
         zigzag = S.points_sketch(self.doc, [(10 * i, 10 * (i % 2)) for i in range(10)], "Zigzag")
         self.doc.recompute()
         before = S.doc_state(self.doc)
         cases = [([], {}, "nothing selected"),
                  ([(one, [])], {}, "at least 2"),
+                 ([(same, [])], {}, "points coincide"),
+                 ([(two, [])], {}, "two points lie in many planes"),
                  ([(nan, [])], {}, "not finite"),
                  ([(self.sk, [])], {"Mode": "length", "Length": 100.0}, "any length above"),
                  ([(self.sk, [])], {"Tension": -1e-3}, "Tension = -0.001"),

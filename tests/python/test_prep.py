@@ -179,6 +179,11 @@ def test_resample_bad_input():
         el.resample_equilateral(hook, 6.5)
     with pytest.raises(ValueError, match="at least 2"):
         el.resample_equilateral(poly[:1], 0.5)
+    # the vertex limit the binding exports: a segment below length / (limit - 1) is refused
+    limit = el.RESAMPLE_MAX_VERTICES
+    with pytest.raises(el.DomainError, match=str(limit)):
+        el.resample_equilateral(poly, 0.999 * 3.0 / (limit - 1))
+    assert len(el.resample_equilateral(poly, 1.001 * 3.0 / (limit - 1))) > 0.99 * limit
     bad = poly.copy()
     bad[2, 0] = np.inf
     with pytest.raises(ValueError):

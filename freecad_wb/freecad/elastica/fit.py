@@ -141,10 +141,22 @@ def _resampled(xy, step):
     """The points xy resampled into an equilateral polygon of segment step
     (el.resample_equilateral), at least MIN_POINTS vertices of it."""
     _check_reach(xy, step, [-1 if xy[-1, 0] < xy[0, 0] else 0])
+    n, most = np(), el().RESAMPLE_MAX_VERTICES
+    length = float(n.sum(n.hypot(*n.diff(xy, axis=0).T)))
+    if length / step > most - 1:
+        raise InputProblem(f"Resample = {step:g} mm would cut the points' {length:.4g} mm polyline "
+                           f"into {length / step:.3g} segments, more than {most - 1}: use a step of "
+                           f"at least {length / (most - 1):.4g} mm, or 0 to fit the points as they are")
     out = el().resample_equilateral(xy, step)
     if len(out) < MIN_POINTS:
+        # the vertices are step apart along the way, so few of them from a step short enough
+        # for MIN_POINTS mean the walk jumped ahead: the points double back or pass close to
+        # themselves within the step (seed 000 §5.3 jumps a hairpin narrower than it)
+        why = (_step_advice(xy) if step >= length / (MIN_POINTS - 1) else
+               "the polygon jumps where the points double back or pass within the step of "
+               "themselves; 0 fits the points as they are")
         raise InputProblem(f"Resample = {step:g} mm leaves {len(out)} points; a fit needs "
-                           f"{MIN_POINTS}: {_step_advice(xy)}")
+                           f"{MIN_POINTS}: {why}")
     return out
 
 
@@ -250,7 +262,8 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
     if closed:
         raise InputProblem("the input is a closed curve: an elastica fit needs an open one")
     if len(points) < MIN_POINTS:
-        raise InputProblem(f"{len(points)} points: a fit needs at least {MIN_POINTS}")
+        raise InputProblem(f"{len(points)} point{'s' if len(points) != 1 else ''}: a fit needs "
+                           f"at least {MIN_POINTS}")
     step = check_number("Resampling step", step, 0.0, None, "mm")
     tol = check_tolerance(tol)
     if model == "smooth":
@@ -296,9 +309,13 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         raise
     except (ValueError, ArithmeticError, RuntimeError) as exc:
         hint = ""
-        if split and "inflection" in str(exc):
-            hint = " (no inflection: fit without splitting the keyline)"
-        elif step and "resample" in str(exc):
+        if split and "no inflection found" in str(exc):
+            raise InputProblem("no inflection found in the points: fit them without splitting "
+                               "the keyline") from None
+        if split and "fewer than 4 vertices" in str(exc):
+            raise InputProblem("the inflection found lies too near an end (fewer than 4 points "
+                               "on one side): fit the points without splitting the keyline") from None
+        if step and "resample" in str(exc):
             hint = f" (is the resampling step {step:g} mm longer than the curve?)"
         raise InputProblem(f"fit failed: {exc}{hint}") from None
     if not (n.all(n.isfinite(dist)) and math.isfinite(rms)):

@@ -65,6 +65,11 @@ def plane_coordinates(points, plane=None, flat=1e-9, what="points"):
         local = to_plane(plane, points)
         if n.max(n.abs(local[:, 2])) <= 1e-9 * (1.0 + extent):
             return n.ascontiguousarray(local[:, :2]), plane
+    if not extent > 0.0:
+        raise InputProblem(f"the {what} coincide")
+    if len(points) < 3:
+        raise InputProblem("two points lie in many planes: put them in a sketch (its plane), or "
+                           "add a third point or an end tangent")
     xyz = n.array([tuple(p) for p in points], dtype=float)
     xy, frame = el().plane_fit(xyz)
     if flat is not None and frame.rms > flat * (1.0 + extent):

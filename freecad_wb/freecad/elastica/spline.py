@@ -124,6 +124,8 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
     if len(pts) < need:
         raise InputProblem(f"{len(pts)} point{'s' if len(pts) != 1 else ''}: an elastic spline "
                            f"needs at least {need}{' (closed)' if closed else ''}")
+    if not max((a - pts[0]).Length for a in pts) > 0.0:
+        raise InputProblem(f"the {len(pts)} points coincide")
     value = check_number("Tension", tension, 0.0, None, "1/mm^2", why="0 is the free batten; to "
                          "push the batten together give a length") if mode == "tension" \
         else check_number("Length", length, 0.0, None, "mm", why="0 is the free batten's length")
@@ -140,6 +142,8 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
     try:
         loc, plane = plane_coordinates(pts + probes, plane, flat=1e-6,
                                        what="points (with the end edges' tangents)")
+    except InputProblem:
+        raise
     except (ValueError, ArithmeticError) as exc:
         raise InputProblem(f"no plane through the points: {exc}") from None
     xy = n.ascontiguousarray(loc[:len(pts)])
