@@ -7,7 +7,7 @@ from .fit import ConstraintError, FitResult, KeylineFit, fit, fit_keyline
 from .prep import (RESAMPLE_MAX_VERTICES, Frame, Frame2D, find_inflection, pca_normalize, plane_fit,
                    prepare_keyline, resample_equilateral)
 from .blend import BlendCurve, EllipticBlend, MQBlend, blend_curve, eck_d, eck_omega
-from .hermite import HermiteChain, HermiteSolutions, hermite, hermite_analyse
+from .hermite import HERMITE_SIGMA_D2_MAX, HermiteChain, HermiteSolutions, hermite, hermite_analyse
 from .spline import ElasticSpline, elastic_spline
 from .bspline import BSpline, interpolate_c2, smooth_chain_to_bspline, smooth_to_bspline
 from .affine import (AffinePolyline, OsculatingConics, affine_coords, affine_curvature,

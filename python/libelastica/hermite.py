@@ -2,6 +2,7 @@
 point with a tangent to a point with a tangent, by tension or by length."""
 from __future__ import annotations
 
+import math
 import struct
 import threading
 import warnings
@@ -9,11 +10,11 @@ from typing import List, Optional
 
 import numpy as np
 
-from ._ffi import as_int, as_real, as_size, as_vector, check, ffi, lib
+from ._ffi import DomainError, as_int, as_real, as_size, as_vector, check, ffi, lib
 from .bspline import smooth_chain_to_bspline
 from .core import SMOOTH_PARAMS, SmoothElastica, chain_eval, chain_starts
 
-__all__ = ["hermite", "hermite_analyse", "HermiteSolutions", "HermiteChain"]
+__all__ = ["hermite", "hermite_analyse", "HermiteSolutions", "HermiteChain", "HERMITE_SIGMA_D2_MAX"]
 
 
 class HermiteSolutions(list):
@@ -114,7 +115,29 @@ def _vec2(v, name: str):
 
 
 _TENSION, _LENGTH = lib.EL_HERMITE_TENSION, lib.EL_HERMITE_LENGTH
-_EINVAL, _EMAXITER = lib.EL_EINVAL, lib.EL_EMAXITER
+_EINVAL, _EDOM, _EMAXITER = lib.EL_EINVAL, lib.EL_EDOM, lib.EL_EMAXITER
+
+#: The tension range of el_hermite_solve (elastica.h): tension times |p1 - p0|^2 at most
+#: this (a double: the header states it, no C constant carries it).
+HERMITE_SIGMA_D2_MAX = 1e5
+
+
+def _out_of_range(x0, y0, x1, y1, mode, sigma, length):
+    """Which of el_hermite_solve's ranges (elastica.h) the ends or the tension leave
+    (its EL_EDOM), in words; None when none does."""
+    d = math.hypot(x1 - x0, y1 - y0)
+    if d == 0.0:
+        return "hermite: p0 and p1 coincide"
+    if not 1e-100 <= d <= 1e100 or max(abs(x0), abs(y0), abs(x1), abs(y1)) > 1e100:
+        return (f"hermite: |p1 - p0| = {d:.3g} or a coordinate is outside the range the solver "
+                "covers (|p1 - p0| from 1e-100 to 1e100, coordinates up to 1e100)")
+    if mode == _TENSION and sigma * d * d > HERMITE_SIGMA_D2_MAX:
+        return (f"hermite: tension {sigma:.6g} at |p1 - p0| = {d:.6g} makes sigma |p1 - p0|^2 = "
+                f"{sigma * d * d:.3g}, past the {HERMITE_SIGMA_D2_MAX:g} the solver covers "
+                f"(here a tension of at most {HERMITE_SIGMA_D2_MAX / (d * d):.6g})")
+    if mode == _LENGTH and not length > d:
+        return f"hermite: length {length:.6g} is not longer than |p1 - p0| = {d:.6g}"
+    return None
 # the classes of hermite()'s fast path: four tuples of two Python floats
 _TUPLES_OF_FLOATS = (tuple,) * 4 + (float,) * 8
 
@@ -282,6 +305,10 @@ def hermite(p0, t0, p1, t1, tension: Optional[float] = None,
         if status and status != _EMAXITER:
             if status == _EINVAL:   # say which end is not finite
                 _general_ends(p0, t0, p1, t1)
+            if status == _EDOM:
+                why = _out_of_range(x0, y0, x1, y1, mode, sigma, length)
+                if why:
+                    raise DomainError(status, why)
             check(status, "hermite")
         n, unrepresentable = _COUNTS.unpack_from(mem)
         if n >= len(views):   # more than this thread's array holds: a larger one, solved again

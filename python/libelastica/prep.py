@@ -277,7 +277,8 @@ class PreparedKeyline:
         (inflection -> first vertex, inflection -> last vertex). Raises
         DomainError when there is no inflection."""
         if self.inflection is None:
-            raise DomainError(lib.EL_EDOM, "prepare_keyline: no inflection found")
+            raise DomainError(lib.EL_EDOM, "prepare_keyline: no inflection found: the points turn "
+                              "one way (a keyline splits at its inflection; fit them as one curve)")
         i = self.inflection
         return self.polygon[i::-1].copy(), self.polygon[i:].copy()
 

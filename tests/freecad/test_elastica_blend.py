@@ -315,6 +315,20 @@ class BlendTest(unittest.TestCase):
             self.assertTrue(C.MESSAGES)
             self.assertEqual(S.doc_state(self.doc), before)
 
+    def test_tension_past_the_solver_range_names_the_largest(self):
+        b = C.blend_sources([(self.sk, ["Edge1", "Edge2"])], open_panel=False)
+        ends = [e.valueAt(e.LastParameter if i == 0 else e.FirstParameter)
+                for i, e in enumerate(self.sk.Shape.Edges[:2])]
+        gap = (ends[1] - ends[0]).Length
+        b.Tension = 1e5 / gap ** 2 * 1.01
+        self.doc.recompute()
+        self.assertTrue(b.Status.startswith("error"), b.Status)
+        self.assertIn(f"too high for ends {gap:.6g} mm apart", b.Status)
+        self.assertIn(f"at most {1e5 / gap ** 2:.4g}/mm^2", b.Status)
+        b.Tension = 1e5 / gap ** 2 * 0.99            # within: solved
+        self.doc.recompute()
+        self.assertFalse(b.Status.startswith("error"), b.Status)
+
     def test_command_core_records_a_feature(self):
         b = C.blend_sources([(self.sk, ["Edge1", "Edge2"])], open_panel=False)
         self.assertIsNotNone(b)

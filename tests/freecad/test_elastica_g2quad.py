@@ -11,6 +11,7 @@ import Part
 import elastica_samples as S
 from freecad.elastica import commands as C
 from freecad.elastica import g2quad as Q
+from freecad.elastica.proxy import InputProblem
 
 
 def plane_bspline(edge, plane):
@@ -136,6 +137,11 @@ class G2QuadTest(unittest.TestCase):
         self.assertIn("not coplanar", self._rejected([(helix, [])]))
         self.assertIn("Vertex1", self._rejected([(self.sk, ["Vertex1"])]))
         del before
+        # edges OCC cannot join into a wire (below its tolerance): a message, not an OCCError
+        tiny = [Part.LineSegment(App.Vector(0, 0, 0), App.Vector(1e-7, 0, 0)).toShape().Edges[0],
+                Part.LineSegment(App.Vector(1e-7, 0, 0), App.Vector(2e-7, 1e-7, 0)).toShape().Edges[0]]
+        with self.assertRaisesRegex(InputProblem, "do not join into one wire"):
+            Q.g2quad_core(tiny)
 
     def test_command_core_records_a_feature(self):
         q = C.g2quad_sources([(self.sk, ["Edge1"])], open_panel=False, Edges=12)

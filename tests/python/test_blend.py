@@ -134,7 +134,7 @@ def test_bad_input():
         b.basis([0.5, np.nan])
     with pytest.raises(ValueError):
         b.from_points(np.zeros((4, 2)), mode="bogus")
-    with pytest.raises(el.SingularError):
+    with pytest.raises(el.SingularError, match="points 2 and 3 coincide"):
         b.from_points([[0, 0], [1, 1], [1, 1], [2, 0]])
 
 

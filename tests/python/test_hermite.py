@@ -321,10 +321,17 @@ def test_degenerate_data():
                 _check_ends(s, [0, 0], [1, 0], p1, t1)
     # sigma < 0 so strong that no period is as long as the chord: no curve
     assert el.hermite([0, 0], [1, 0], [1, 0.5], [0, 1], tension=-500.0) == []
-    with pytest.raises(el.DomainError):
+    with pytest.raises(el.DomainError, match="p0 and p1 coincide"):
         el.hermite([0, 0], [1, 0], [0, 0], [0, 1], tension=1.0)
-    with pytest.raises(el.DomainError):
+    with pytest.raises(el.DomainError, match=r"length 1 is not longer than \|p1 - p0\| = 1.41421"):
         el.hermite([0, 0], [1, 0], [1, 1], [0, 1], length=1.0)
+    # the tension range, sigma |p1 - p0|^2 <= HERMITE_SIGMA_D2_MAX, named with the bound here
+    d2 = 2.0 ** 2 + 1.0
+    assert len(el.hermite([1, 1], [1, 0], [3, 2], [1, 0], tension=el.HERMITE_SIGMA_D2_MAX / d2 * 0.999)) > 0
+    with pytest.raises(el.DomainError, match=r"past the 100000 the solver covers \(here a tension of at most 20000\)"):
+        el.hermite([1, 1], [1, 0], [3, 2], [1, 0], tension=el.HERMITE_SIGMA_D2_MAX / d2 * 1.001)
+    with pytest.raises(el.DomainError, match="outside the range the solver covers"):
+        el.hermite([0, 0], [1, 0], [1e-120, 0], [1, 0], tension=1.0)
     with pytest.raises(ValueError):
         el.hermite([0, 0], [0, 0], [1, 1], [0, 1], tension=1.0)
     with pytest.raises(ValueError):

@@ -369,5 +369,5 @@ def test_prepare_keyline():
     a = np.linspace(0, 2, 100)
     arc = el.prepare_keyline(np.c_[np.cos(a), np.sin(a)], 0.05)
     assert arc.inflection is None
-    with pytest.raises(el.DomainError):
+    with pytest.raises(el.DomainError, match="no inflection found: the points turn one way"):
         arc.sides()

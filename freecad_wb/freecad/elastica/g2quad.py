@@ -25,7 +25,12 @@ def g2quad_core(edges, plane=None, nedges=24):
         raise InputProblem(f"Edges = {n}: the polyline needs at least 3 edges")
     if n > 5000:
         raise InputProblem(f"Edges = {n}: at most 5000 (the B-spline has as many poles)")
-    if Part.Wire(edges).isClosed():
+    try:
+        closed = Part.Wire(edges).isClosed()
+    except Part.OCCError as exc:     # edges below OCC's tolerance, say, that cannot be joined
+        raise InputProblem(f"the edges do not join into one wire ({exc}): pick one connected "
+                           "chain") from None
+    if closed:
         raise InputProblem("the source is a closed curve: pick an open one (split it first)")
     pts, tangents = sample_chain(edges, SAMPLES_PER_VERTEX * n)
     try:
