@@ -130,7 +130,8 @@ class G2QuadTest(unittest.TestCase):
         line = self.doc.addObject("Part::Feature", "Line")
         line.Shape = Part.makeLine(App.Vector(0, 0, 0), App.Vector(50, 10, 0))
         self.doc.recompute()
-        self.assertIn("failed", self._rejected([(line, ["Edge1"])]))
+        self.assertIn("a straight stretch of the source has no affine arc length",
+                      self._rejected([(line, ["Edge1"])]))
         helix = self.doc.addObject("Part::Feature", "Helix")
         helix.Shape = Part.makeHelix(10, 30, 5)
         self.doc.recompute()

@@ -252,8 +252,10 @@ def test_affine_polyline_points_and_errors():
     assert r.S_total == pytest.approx(np.abs(S).sum())
     x = np.linspace(0.4, 2 * np.pi - 0.4, 801)
     wave = np.c_[x, np.sin(x)]
-    with pytest.raises(el.DomainError):
+    with pytest.raises(el.DomainError, match="an inflection where none is allowed"):
         el.affine_polyline(wave, 30, split_inflections=False)
+    with pytest.raises(el.DomainError, match="a straight piece"):
+        el.affine_polyline(np.c_[np.linspace(0, 3, 40), np.zeros(40)], 10)
     with pytest.raises(el.DomainError):
         el.affine_polyline(wave, 30, inflections=[100])
     with pytest.raises(el.DomainError):

@@ -40,11 +40,15 @@ def g2quad_core(edges, plane=None, nedges=24):
         g = el().g2_quadratic(xy, n, tangents=tan)
     except InputProblem:
         raise
+    except el().DomainError as exc:
+        if "affine_polyline" not in str(exc):
+            raise InputProblem(f"G2 quadratic B-spline failed: {exc}") from None
+        raise InputProblem(f"no G2 quadratic B-spline with Edges = {n}: a straight stretch of the "
+                           "source has no affine arc length, or its turns need more edges (about 3 "
+                           "per turn of the tangent): give more edges, or pick a source curved "
+                           "throughout") from None
     except (ValueError, ArithmeticError, RuntimeError) as exc:
-        hint = ""
-        if "domain" in str(exc).lower():
-            hint = " (a straight source, or too few edges for its turns: give more edges)"
-        raise InputProblem(f"G2 quadratic B-spline failed: {exc}{hint}") from None
+        raise InputProblem(f"G2 quadratic B-spline failed: {exc}") from None
     return {"result": g, "placement": plane}
 
 
