@@ -11,7 +11,7 @@ import FreeCAD as App
 import Part
 
 import elastica_samples as S
-from elastica_samples import curvature_vector, sides
+from elastica_samples import curvature_vector, el, sides
 from freecad.elastica import commands as C
 from freecad.elastica import spline as Sp
 
@@ -320,6 +320,11 @@ class SplineTest(unittest.TestCase):
         two.Points = Points.Points([App.Vector(0, 0, 0), App.Vector(5, 2, 1)])
         # the free batten slides off a tight zigzag of ducks
         zigzag = S.points_sketch(self.doc, [(10 * i, 10 * (i % 2)) for i in range(10)], "Zigzag")
+        # six points of an arch: pushed to ten times its free length the solver finds no
+        # equilibrium, and the message gives the free batten's length for scale
+        arch_xy = [(100 * t, 30 * math.sin(3 * t)) for t in [i / 29 for i in range(0, 30, 5)]]
+        arch = S.points_sketch(self.doc, arch_xy, "Arch")
+        free = el.elastic_spline(arch_xy).length
         self.doc.recompute()
         before = S.doc_state(self.doc)
         cases = [([], {}, "nothing selected"),
@@ -331,6 +336,9 @@ class SplineTest(unittest.TestCase):
                  ([(self.sk, [])], {"Tension": -1e-3}, "Tension = -0.001"),
                  ([(self.sk, [])], {"Tension": float("nan")}, "Tension = nan"),
                  ([(zigzag, [])], {}, "slides off"),
+                 ([(arch, [])], {"Mode": "length", "Length": 1000.0},
+                  f"no equilibrium found at Length = 1000 mm: the solver did not converge; the free "
+                  f"batten through these points is {free:.6g} mm long"),
                  ([(self.sk, ["Vertex9"])], {}, "has no")]
         for sources, opts, words in cases:
             del C.MESSAGES[:]
