@@ -1,0 +1,107 @@
+"""What the ``elastica`` command's subcommands share (cli.py, cli_fit.py): the exit
+statuses and program name, numbers and tables for the terminal, argument checks, the
+batch progress bar, a fitted curve's B-spline and a plane's record."""
+from __future__ import annotations
+
+import sys
+from typing import Any, Dict, List, Optional, Sequence
+
+import numpy as np
+
+from .io import InputError
+
+EXIT_OK, EXIT_NOCONV, EXIT_BADINPUT, EXIT_INTERNAL = 0, 1, 2, 3
+
+PROG = "elastica"
+
+
+def _fmt(v: Any, width: int = 0) -> str:
+    if isinstance(v, float):
+        s = f"{v:.6g}"
+    elif v is None:
+        s = "-"
+    else:
+        s = str(v)
+    return s.rjust(width) if width else s
+
+
+def _table(headers: Sequence[str], rows: Sequence[Sequence[Any]]) -> str:
+    cells = [[_fmt(c) for c in r] for r in rows]
+    widths = [max([len(h)] + [len(r[i]) for r in cells]) for i, h in enumerate(headers)]
+    lines = ["  ".join(h.ljust(w) for h, w in zip(headers, widths)),
+             "  ".join("-" * w for w in widths)]
+    lines += ["  ".join(c.ljust(w) for c, w in zip(r, widths)) for r in cells]
+    return "\n".join(ln.rstrip() for ln in lines)
+
+
+def _float_list(text: str, n: int, what: str) -> List[float]:
+    try:
+        vals = [float(v) for v in text.split(",")]
+    except ValueError:
+        raise InputError(f"{what}: expected {n} comma-separated numbers, got {text!r}") from None
+    if len(vals) != n or not all(np.isfinite(vals)):
+        raise InputError(f"{what}: expected {n} finite comma-separated numbers, got {text!r}")
+    return vals
+
+
+def _finite(x: float, what: str) -> float:
+    if not np.isfinite(x):
+        raise InputError(f"{what} must be finite, got {x}")
+    return x
+
+
+def _status_text(status: Any) -> str:
+    from ._ffi import ffi, lib
+    if isinstance(status, (int, np.integer)) and not isinstance(status, bool):
+        return "ok" if status == lib.EL_OK else ffi.string(lib.el_strerror(int(status))).decode()
+    return str(status)
+
+
+def _converged(res: Any) -> bool:
+    """Whether a FitResult converged (its status EL_OK, or a 'converged' flag)."""
+    from ._ffi import lib
+    if hasattr(res, "converged"):
+        return bool(res.converged)
+    status = getattr(res, "status", 0)
+    if isinstance(status, (int, np.integer)) and not isinstance(status, bool):
+        return int(status) == lib.EL_OK
+    if isinstance(status, bool):
+        return status
+    return str(status).lower() in ("ok", "converged", "success", "el_ok")
+
+
+class _Progress:
+    """A text progress bar on stderr (batch mode)."""
+
+    def __init__(self, total: int, enabled: bool):
+        self.total, self.enabled, self.done = total, enabled, 0
+
+    def step(self, label: str) -> None:
+        self.done += 1
+        if not self.enabled:
+            return
+        width = 30
+        filled = int(width * self.done / max(self.total, 1))
+        bar = "#" * filled + "." * (width - filled)
+        sys.stderr.write(f"\r[{bar}] {self.done}/{self.total} {label[:40]:<40}")
+        if self.done == self.total:
+            sys.stderr.write("\n")
+        sys.stderr.flush()
+
+
+def _bspline_of(curve, tol: float, degree: int):
+    """The B-spline of a fitted curve: tolerance-certified for a smooth elastica (or a
+    Hermite chain of them); for a discrete one the C2 cubic through its vertices
+    (max_deviation unknown, -1)."""
+    from .core import DiscreteElastica
+    if not isinstance(curve, DiscreteElastica):
+        return curve.to_bspline(tol=tol, degree=degree)
+    from .bspline import interpolate_c2
+    return interpolate_c2(curve.points())
+
+
+def _plane_record(frame) -> Optional[Dict[str, Any]]:
+    if frame is None:
+        return None
+    return {"origin": frame.origin, "normal": frame.e3, "e1": frame.e1, "e2": frame.e2,
+            "rms": frame.rms}

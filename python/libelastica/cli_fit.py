@@ -1,0 +1,284 @@
+"""``elastica fit``: fit elasticae to the points of one file or a batch of them, with
+JSON, report pictures (SVG/PNG), B-splines and DXF (cli.py builds the parser)."""
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+from typing import Any, Dict, List, Optional
+
+import numpy as np
+
+from ._ffi import NotConvergedError
+from .cli_common import (EXIT_BADINPUT, EXIT_NOCONV, EXIT_OK, PROG, _bspline_of, _converged,
+                         _finite, _float_list, _fmt, _plane_record, _Progress, _status_text,
+                         _table)
+from .cli_outputs import out_path
+from .io import InputError, curve_to_dict, read_points, write_dxf_spline, write_json
+
+
+def _parse_fix(spec: Optional[str], data: np.ndarray, keyline: bool = False) -> Dict[str, float]:
+    """--fix 'x0,y0' (the start pinned to the first data point) or 'x0=1,y0=2,phi=0'
+    (explicit values). With --keyline, x0/y0 are already pinned at the inflection, so
+    bare 'x0'/'y0' are dropped."""
+    fixed: Dict[str, float] = {}
+    for item in (spec or "").split(","):
+        item = item.strip()
+        if not item:
+            continue
+        name, _, value = item.partition("=")
+        name = name.strip()
+        if value:
+            try:
+                fixed[name] = _finite(float(value), f"--fix {name}")
+            except ValueError:
+                raise InputError(f"--fix: {name}={value!r} is not a number") from None
+        elif name in ("x0", "y0"):
+            if not keyline:
+                fixed[name] = float(data[0, 0 if name == "x0" else 1])
+        else:
+            raise InputError(f"--fix: give a value for {name} (e.g. {name}=0.5); only x0 and y0 "
+                             "default to the first point")
+    return fixed
+
+
+def _fit_kwargs(args, fixed: Dict[str, float], constraints: Optional[Dict[str, Any]] = None
+                ) -> Dict[str, Any]:
+    kw: Dict[str, Any] = {"model": args.model}
+    if fixed:
+        kw["fixed"] = fixed
+    if args.max_iter is not None:
+        kw["max_iter"] = args.max_iter
+    if constraints:
+        kw["constraints"] = constraints
+    if getattr(args, "distance", None):
+        kw["distance"] = args.distance
+    return kw
+
+
+def _side_record(res, data: np.ndarray, model: str) -> Dict[str, Any]:
+    rec = {"model": model, "n_points": int(len(data)),
+           "curve": curve_to_dict(res.curve),
+           "initial": curve_to_dict(res.initial) if res.initial is not None else None,
+           "rms": float(res.rms), "max_error": float(res.max_error),
+           "iterations": int(res.iterations), "status": _status_text(res.status),
+           "converged": _converged(res)}
+    if getattr(res, "distances", None) is not None:
+        # point-to-curve distances (+ = left of the curve) and each foot's arc length
+        rec.update(distance=res.distance, distances=[float(v) for v in res.distances],
+                   foot_s=[float(v) for v in res.foot_s])
+    return rec
+
+
+def _constraints(args, data: np.ndarray) -> Dict[str, Any]:
+    """el.fit's constraints from the command line (angles in degrees there)."""
+    con: Dict[str, Any] = {}
+    for end, idx, word in (("start", 0, "first"), ("end", -1, "last")):
+        spec = getattr(args, f"{end}_point")
+        if spec is not None:
+            con[f"{end}_point"] = (tuple(float(v) for v in data[idx, :2]) if spec.strip() == word
+                                   else tuple(_float_list(spec, 2, f"--{end}-point")))
+        ang = getattr(args, f"{end}_tangent")
+        if ang is not None:
+            con[f"{end}_tangent"] = np.radians(_finite(ang, f"--{end}-tangent"))
+        kap = getattr(args, f"{end}_curvature")
+        if kap is not None:
+            con[f"{end}_curvature"] = _finite(kap, f"--{end}-curvature")
+    for name in ("length", "k"):
+        spec = getattr(args, name if name == "length" else "k_range")
+        if spec is not None:
+            lo, _, hi = spec.partition(",")
+            try:
+                con[name] = (float(lo) if lo.strip() else None, float(hi) if hi.strip() else None)
+            except ValueError:
+                raise InputError(f"--{name}: expected LO,HI (either may be empty), got {spec!r}") from None
+    return con
+
+
+def fit_file(path: str, args, batch: bool) -> List[Dict[str, Any]]:
+    """Fit one file; returns one record per fitted curve (two with --keyline) and writes
+    the requested outputs. Raises InputError / ValueError for bad input."""
+    import libelastica as el
+    pts = read_points(path, min_points=4)
+    if args.step is not None:
+        _finite(args.step, "--step")
+    records: List[Dict[str, Any]] = []
+    pictures = []                       # (data (n,2), FitResult) per record
+    extra_info: Dict[str, Any] = {}
+    if args.keyline:
+        # seed 000 §5 as one G2 curve: plane fit, resampling (segment --step),
+        # re-normalisation, inflection, two elasticae sharing the joint
+        if _constraints(args, pts) or getattr(args, "distance", None):
+            raise InputError("--keyline: the joint is the keyline's constraint; end constraints "
+                             "and --distance apply to one-piece fits")
+        fixed = _parse_fix(args.fix, pts[:, :2], keyline=True)
+        kres = el.fit_keyline(pts, r=args.step, **_fit_kwargs(args, fixed))
+        prep = kres.prepared
+        plane = _plane_record(prep.frame)
+        to_input = prep.to_input
+        extra_info = {"inflection_index": int(kres.inflection),
+                      "inflection_point": prep.to_input(kres.joint),
+                      "step": prep.r, "coordinates": "x''y'' (PCA frame of the resampled polygon)",
+                      "frame2d": {"origin": prep.frame2d.origin, "f1": prep.frame2d.f1,
+                                  "f2": prep.frame2d.f2}}
+        for i, res in enumerate((kres.first, kres.second)):
+            rec = _side_record(res, res.points, args.model)
+            rec["side"] = i
+            records.append(rec)
+            pictures.append((res.points, res))
+        data = prep.polygon
+    else:
+        plane, to_input = None, None
+        if pts.shape[1] == 3:
+            xy, frame = el.plane_fit(pts)
+            plane = _plane_record(frame)
+            to_input = frame.to_3d
+        else:
+            xy = pts
+        data = xy
+        if args.step is not None:
+            total = float(np.sum(np.linalg.norm(np.diff(xy, axis=0), axis=1)))
+            if not 0 < args.step < total:
+                raise InputError(f"{path}: --step must be in (0, {total:.6g}) (the polyline's "
+                                 f"length), got {args.step}")
+            data = el.resample_equilateral(xy, args.step)
+            if len(data) < 4:
+                raise InputError(f"{path}: --step {args.step} leaves only {len(data)} points")
+        res = el.fit(data, **_fit_kwargs(args, _parse_fix(args.fix, data), _constraints(args, data)))
+        records.append(_side_record(res, data, args.model))
+        pictures.append((data, res))
+    for rec in records:
+        rec.update({"file": str(path), "plane": plane, "step": args.step, **extra_info})
+    splines = []
+    if args.bspline_tol is not None or args.dxf:
+        tol = _finite(args.bspline_tol if args.bspline_tol is not None else 1e-6, "--bspline-tol")
+        for rec, (_, res) in zip(records, pictures):
+            b = _bspline_of(res.curve, tol, args.degree)
+            rec["bspline"] = b.to_dict()
+            splines.append(b)
+    if to_input is not None:
+        # B-splines are affine invariant: mapping the poles maps the curve exactly, so the
+        # DXF gets the curves in the input's coordinates (3D for 3D input)
+        from .bspline import BSpline
+        splines = [BSpline(b.degree, to_input(b.poles), b.knots, b.mults, b.max_deviation)
+                   for b in splines]
+    _write_fit_outputs(path, args, batch, records, pictures, splines, pts)
+    return records
+
+
+def _write_fit_outputs(path, args, batch, records, pictures, splines, points) -> None:
+    """JSON, pictures (in the fit's plane coordinates) and DXF (splines and points in the
+    input's coordinates) of one file."""
+    from .report import fit_picture, save_picture
+    jpath = out_path(args.json, path, ".json", batch) if args.json and args.json != "-" and not (
+        batch and args.json.endswith(".json") and "{stem}" not in args.json) else None
+    if jpath is not None:
+        write_json(records[0] if len(records) == 1 else {"file": str(path), "sides": records},
+                   args.outputs.path(jpath))
+    for spec, ext in ((args.svg, ".svg"), (args.png, ".png")):
+        out = out_path(spec, path, ext, batch)
+        if out is None or not pictures:
+            continue
+        pic = None
+        for i, ((d, res), rec) in enumerate(zip(pictures, records)):
+            extra = [f"rms = {rec['rms']:.4g}, max error = {rec['max_error']:.4g}",
+                     f"iterations = {rec['iterations']}, status = {rec['status']}"]
+            if rec.get("plane"):
+                extra.append(f"plane fit rms = {rec['plane']['rms']:.4g}")
+            p = fit_picture(d, res.curve, res.initial, model_points=res.foot_points(),
+                            title=f"{Path(path).name}: {args.model} elastica fit"
+                                  + (" (keyline, x''y'' frame)" if args.keyline else ""),
+                            extra=extra)
+            if pic is None:
+                pic = p
+            else:              # keyline: second side into the same picture, other colours
+                recolor = {"initial guess": "#bcbd22", "elastica": "#9467bd"}
+                for L in p.layers:
+                    if L.label == "data":
+                        L.label = "data (2)"
+                        L.color = "#555555"
+                    else:
+                        L.color = recolor.get(L.label, L.color)
+                        L.label += f" ({i + 1})"
+                    pic.layers.append(L)
+                a0, b0 = pic.residuals
+                pic.residuals = (np.vstack([a0, p.residuals[0]]), np.vstack([b0, p.residuals[1]]))
+                for g in p.graphs:
+                    g.label += f" ({i + 1})"
+                    if g.primary:
+                        g.color = "#9467bd"
+                pic.graphs += p.graphs
+                pic.params += [f"--- side {i + 1}"] + p.params
+        save_picture(pic, args.outputs.path(out))
+    if args.dxf and splines:
+        write_dxf_spline(splines, args.outputs.path(out_path(args.dxf, path, ".dxf", batch)),
+                         points=points)
+
+
+def _print_fit(rec: Dict[str, Any]) -> None:
+    print(f"file        {rec['file']}")
+    if rec.get("plane"):
+        n = np.asarray(rec["plane"]["normal"])
+        print(f"3D input    plane fit: normal ({n[0]:.4g}, {n[1]:.4g}, {n[2]:.4g}), "
+              f"rms distance {rec['plane']['rms']:.4g}")
+    if "side" in rec:
+        print(f"side        {rec['side'] + 1}")
+    print(f"model       {rec['model']}  ({rec['n_points']} points)")
+    if rec.get("curve"):
+        print("parameters  " + ", ".join(f"{k}={_fmt(v)}" for k, v in rec["curve"].items()
+                                         if k != "type"))
+        how = {"orthogonal": "point-to-curve", "paired": "point-to-curve; fitted paired"}.get(
+            rec.get("distance"), "")
+        print(f"rms         {_fmt(rec['rms'])}" + (f"   ({how} distances)" if how else ""))
+        print(f"max error   {_fmt(rec['max_error'])}")
+        print(f"iterations  {rec['iterations']}")
+    if rec.get("bspline"):
+        b = rec["bspline"]
+        dev = (f"max deviation {_fmt(b['max_deviation'])}" if b["max_deviation"] >= 0
+               else "through the vertices (C2 cubic)")
+        print(f"B-spline    degree {b['degree']}, {len(b['poles'])} poles, {dev}")
+    print(f"status      {rec['status']}")
+
+
+def cmd_fit(args) -> int:
+    files = args.files
+    batch = len(files) > 1
+    if not batch:
+        recs = fit_file(files[0], args, batch=False)
+        if args.json == "-":
+            write_json(recs[0] if len(recs) == 1 else {"file": files[0], "sides": recs}, "-")
+        else:
+            for i, r in enumerate(recs):
+                if i:
+                    print()
+                _print_fit(r)
+        return EXIT_OK if all(r["converged"] for r in recs) else EXIT_NOCONV
+    progress = _Progress(len(files), args.progress or sys.stderr.isatty())
+    rows, all_recs, bad = [], [], 0
+    for f in files:
+        mark = args.outputs.mark()
+        try:
+            recs = fit_file(f, args, batch=True)
+        except NotConvergedError as exc:
+            args.outputs.rollback(mark)
+            recs = [{"file": f, "model": args.model, "curve": None, "rms": None,
+                     "max_error": None, "status": f"not converged: {exc}", "converged": False}]
+        except (InputError, ValueError) as exc:
+            args.outputs.rollback(mark)
+            bad += 1
+            recs = [{"file": f, "model": args.model, "curve": None, "rms": None,
+                     "max_error": None, "status": f"bad input: {exc}", "converged": False}]
+        for r in recs:
+            name = f if "side" not in r else f"{f} [{r['side'] + 1}]"
+            k = r["curve"]["k"] if r.get("curve") else None
+            rows.append([name, r["model"], k, r["rms"], r["max_error"], r["status"]])
+        all_recs += recs
+        progress.step(Path(f).name)
+    if args.json and "{stem}" not in args.json and (args.json == "-" or args.json.endswith(".json")):
+        write_json(all_recs, "-" if args.json == "-" else args.outputs.path(args.json))
+    if args.json != "-":
+        print(_table(["file", "model", "k", "rms", "max error", "status"], rows))
+    n_noconv = sum(1 for r in all_recs if not r["converged"]) - bad
+    if bad:
+        print(f"{PROG}: {bad} of {len(files)} files had bad input", file=sys.stderr)
+        return EXIT_BADINPUT
+    return EXIT_NOCONV if n_noconv else EXIT_OK
