@@ -295,7 +295,8 @@ def _run(samples: np.ndarray, tangents: Optional[np.ndarray], infl: Sequence[int
     infl_arr = (ffi.new("size_t[]", [as_size(i, "affine_polyline: inflections") for i in infl])
                 if len(infl) else ffi.NULL)
     tan = dptr(tangents) if tangents is not None else ffi.NULL
-    st = lib.el_affine_polyline(len(samples), dptr(samples), tan, len(infl), infl_arr, int(n), opt, res)
+    st = lib.el_affine_polyline(len(samples), dptr(samples), tan, len(infl), infl_arr, int(n), opt,
+                                res)
     if st == lib.EL_EDOM:   # the header's causes (the range checks are the caller's, above)
         raise DomainError(st, "affine_polyline: input outside the domain the method covers: a "
                               "straight piece (no affine arc length), an inflection where none is "

@@ -158,9 +158,10 @@ class _Blend:
         q = np.empty((4, 2))
         st = lib.el_blend_from_points(self._b, dptr(pts), _PICK[mode], dptr(q))
         if st == lib.EL_ESINGULAR:
-            same = [i for i in range(3) if pts[i, 0] == pts[i + 1, 0] and pts[i, 1] == pts[i + 1, 1]]
+            same = [i for i in range(3) if (pts[i] == pts[i + 1]).all()]
             if same:
-                raise SingularError(st, f"from_points: points {same[0] + 1} and {same[0] + 2} coincide")
+                raise SingularError(st, f"from_points: points {same[0] + 1} and {same[0] + 2} "
+                                        "coincide")
         check(st, "from_points")
         return q
 

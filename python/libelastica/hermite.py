@@ -138,6 +138,8 @@ def _out_of_range(x0, y0, x1, y1, mode, sigma, length):
     if mode == _LENGTH and not length > d:
         return f"hermite: length {length:.6g} is not longer than |p1 - p0| = {d:.6g}"
     return None
+
+
 # the classes of hermite()'s fast path: four tuples of two Python floats
 _TUPLES_OF_FLOATS = (tuple,) * 4 + (float,) * 8
 

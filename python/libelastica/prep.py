@@ -17,11 +17,12 @@ from typing import Tuple
 
 import numpy as np
 
-from ._ffi import DomainError, ElasticaError, as_int, as_points, as_real, as_real_array, check, dptr, ffi, lib
+from ._ffi import (DomainError, ElasticaError, as_int, as_points, as_real, as_real_array, check,
+                   dptr, ffi, lib)
 
 __all__ = ["Frame", "Frame2D", "Inflection", "PreparedKeyline", "plane_fit",
-           "resample_equilateral", "RESAMPLE_MAX_VERTICES", "pca_normalize", "find_inflection", "find_inflection_info",
-           "prepare_keyline"]
+           "resample_equilateral", "RESAMPLE_MAX_VERTICES", "pca_normalize", "find_inflection",
+           "find_inflection_info", "prepare_keyline"]
 
 
 def _c_struct(ctype: str, obj, names) -> object:
@@ -188,7 +189,8 @@ def resample_equilateral(xy, r: float, return_info: bool = False):
             reach = float(np.max(np.hypot(pts[:, 0] - start[0], pts[:, 1] - start[1])))
             if reach < r:
                 why = (f"r = {r:.6g} is longer than the polyline reaches: its points lie within "
-                       f"{reach:.6g} of its start (the end of smaller x); a polygon needs a smaller r")
+                       f"{reach:.6g} of its start (the end of smaller x); a polygon needs a "
+                       "smaller r")
         if why:
             raise ElasticaError(st, f"resample_equilateral: {why}")
     check(st, "resample_equilateral")

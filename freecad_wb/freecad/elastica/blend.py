@@ -93,8 +93,8 @@ def blend_core(e0, at_end0, e1, at_end1, plane=None, mode="tension", value=0.0):
         e = el()
         if mode == "tension":
             if value * dist * dist > e.HERMITE_SIGMA_D2_MAX:
-                raise InputProblem(f"Tension = {value:g}/mm^2 is too high for ends {dist:.6g} mm apart: "
-                                   f"the solver covers tension times distance^2 up to "
+                raise InputProblem(f"Tension = {value:g}/mm^2 is too high for ends {dist:.6g} mm "
+                                   f"apart: the solver covers tension times distance^2 up to "
                                    f"{e.HERMITE_SIGMA_D2_MAX:g}, here a tension of at most "
                                    f"{e.HERMITE_SIGMA_D2_MAX / dist ** 2:.4g}/mm^2")
             sols = e.hermite(a0, t0, a1, t1, tension=value)

@@ -134,7 +134,8 @@ def _check_reach(xy, step, starts):
     reach = max(float(n.max(n.hypot(xy[:, 0] - xy[i, 0], xy[:, 1] - xy[i, 1]))) for i in starts)
     if step > reach:
         raise InputProblem(f"Resample = {step:g} mm is longer than the points reach (all within "
-                           f"{reach:.4g} mm of the end the polygon starts from): {_step_advice(xy)}")
+                           f"{reach:.4g} mm of the end the polygon starts from): "
+                           + _step_advice(xy))
 
 
 def _resampled(xy, step):
@@ -144,9 +145,10 @@ def _resampled(xy, step):
     n, most = np(), el().RESAMPLE_MAX_VERTICES
     length = float(n.sum(n.hypot(*n.diff(xy, axis=0).T)))
     if length / step > most - 1:
-        raise InputProblem(f"Resample = {step:g} mm would cut the points' {length:.4g} mm polyline "
-                           f"into {length / step:.3g} segments, more than {most - 1}: use a step of "
-                           f"at least {length / (most - 1):.4g} mm, or 0 to fit the points as they are")
+        raise InputProblem(f"Resample = {step:g} mm would cut the points' {length:.4g} mm "
+                           f"polyline into {length / step:.3g} segments, more than {most - 1}: use "
+                           f"a step of at least {length / (most - 1):.4g} mm, or 0 to fit the "
+                           "points as they are")
     out = el().resample_equilateral(xy, step)
     if len(out) < MIN_POINTS:
         # the vertices are step apart along the way, so few of them from a step short enough
@@ -313,8 +315,8 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
             raise InputProblem("no inflection found in the points: fit them without splitting "
                                "the keyline") from None
         if split and "fewer than 4 vertices" in str(exc):
-            raise InputProblem("the inflection found lies too near an end (fewer than 4 points "
-                               "on one side): fit the points without splitting the keyline") from None
+            raise InputProblem("the inflection found lies too near an end (fewer than 4 points on "
+                               "one side): fit the points without splitting the keyline") from None
         if step and "resample" in str(exc):
             hint = f" (is the resampling step {step:g} mm longer than the curve?)"
         raise InputProblem(f"fit failed: {exc}{hint}") from None
