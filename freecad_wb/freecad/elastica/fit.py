@@ -118,9 +118,13 @@ def _constraint_cost(xy, model, distance, fixed, constraints, rms):
                          "the data"]
 
 
-def _step_advice(xy):
-    """What a resampling step of the points xy must be below, and the way out."""
-    length = float(np().sum(np().hypot(*np().diff(xy, axis=0).T)))
+def _polyline_length(xy):
+    return float(np().sum(np().hypot(*np().diff(xy, axis=0).T)))
+
+
+def _step_advice(length):
+    """What a resampling step of points whose polyline is length long must be below, and
+    the way out."""
     return (f"the points' polyline is {length:.4g} mm long, so {MIN_POINTS} points need a step "
             f"under {length / (MIN_POINTS - 1):.4g} mm; 0 fits the points as they are")
 
@@ -135,15 +139,14 @@ def _check_reach(xy, step, starts):
     if step > reach:
         raise InputProblem(f"Resample = {step:g} mm is longer than the points reach (all within "
                            f"{reach:.4g} mm of the end the polygon starts from): "
-                           + _step_advice(xy))
+                           + _step_advice(_polyline_length(xy)))
 
 
 def _resampled(xy, step):
     """The points xy resampled into an equilateral polygon of segment step
     (el.resample_equilateral), at least MIN_POINTS vertices of it."""
     _check_reach(xy, step, [-1 if xy[-1, 0] < xy[0, 0] else 0])
-    n, most = np(), el().RESAMPLE_MAX_VERTICES
-    length = float(n.sum(n.hypot(*n.diff(xy, axis=0).T)))
+    most, length = el().RESAMPLE_MAX_VERTICES, _polyline_length(xy)
     if length / step > most - 1:
         raise InputProblem(f"Resample = {step:g} mm would cut the points' {length:.4g} mm "
                            f"polyline into {length / step:.3g} segments, more than {most - 1}: use "
@@ -154,7 +157,7 @@ def _resampled(xy, step):
         # the vertices are step apart along the way, so few of them from a step short enough
         # for MIN_POINTS mean the walk jumped ahead: the points double back or pass close to
         # themselves within the step (seed 000 §5.3 jumps a hairpin narrower than it)
-        why = (_step_advice(xy) if step >= length / (MIN_POINTS - 1) else
+        why = (_step_advice(length) if step >= length / (MIN_POINTS - 1) else
                "the polygon jumps where the points double back or pass within the step of "
                "themselves; 0 fits the points as they are")
         raise InputProblem(f"Resample = {step:g} mm leaves {len(out)} points; a fit needs "
@@ -310,16 +313,13 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
     except InputProblem:
         raise
     except (ValueError, ArithmeticError, RuntimeError) as exc:
-        hint = ""
         if split and "no inflection found" in str(exc):
             raise InputProblem("no inflection found in the points: fit them without splitting "
                                "the keyline") from None
         if split and "fewer than 4 vertices" in str(exc):
             raise InputProblem("the inflection found lies too near an end (fewer than 4 points on "
                                "one side): fit the points without splitting the keyline") from None
-        if step and "resample" in str(exc):
-            hint = f" (is the resampling step {step:g} mm longer than the curve?)"
-        raise InputProblem(f"fit failed: {exc}{hint}") from None
+        raise InputProblem(f"fit failed: {exc}") from None
     if not (n.all(n.isfinite(dist)) and math.isfinite(rms)):
         raise InputProblem("fit failed: non-finite error")
     measure = "point to curve" if model == "smooth" else "point to curve (its polygon)"

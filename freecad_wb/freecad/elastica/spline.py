@@ -132,7 +132,7 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
     if len(pts) < need:
         raise InputProblem(f"{len(pts)} point{'s' if len(pts) != 1 else ''}: an elastic spline "
                            f"needs at least {need}{' (closed)' if closed else ''}")
-    if not max((a - pts[0]).Length for a in pts) > 0.0:
+    if not extent > 0.0:
         raise InputProblem(f"the {len(pts)} points coincide")
     value = check_number("Tension", tension, 0.0, None, "1/mm^2", why="0 is the free batten; to "
                          "push the batten together give a length") if mode == "tension" \
