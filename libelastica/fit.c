@@ -159,10 +159,15 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
      * CPU 53 s -> 3.4 s over the 1200 fits, 105 -> 2 above 0.1 s, the slowest 1.6 -> 0.34 s */
     const double chord[2] = {con.end_xy[0] - con.start_xy[0], con.end_xy[1] - con.start_xy[1]};
     const int jl = fit_length_slot(model);
-    const int ends_chart = chart_ok && !(flags & FIT_RUN_ROWS) &&
-                           o.constraints == (EL_CONSTRAIN_START_POINT | EL_CONSTRAIN_END_POINT) &&
-                           fit_norm(chord[0], chord[1]) > 1e-9 && !isfinite(lo[jl]) && !isfinite(hi[jl]) && !o.fixed[jl];
-    if (ends_chart) held = EL_CONSTRAIN_END_POINT;
+    /* with a zero start curvature too (FIT_RUN_ENDS_HELD, el__fit_ends_held): the chart's
+     * a = kappa0 L held at 0, scale-free; an end curvature stays a row */
+    const int both = EL_CONSTRAIN_START_POINT | EL_CONSTRAIN_END_POINT;
+    const int zero_k0 = (o.constraints & EL_CONSTRAIN_START_CURVATURE) && con.start_kappa == 0.0 ? EL_CONSTRAIN_START_CURVATURE : 0;
+    const int ends_ok = chart_ok && !(flags & FIT_RUN_ROWS) && (o.constraints & both) == both &&
+                        !(o.constraints & ~(both | zero_k0 | EL_CONSTRAIN_END_CURVATURE)) &&
+                        fit_norm(chord[0], chord[1]) > 1e-9 && !isfinite(lo[jl]) && !isfinite(hi[jl]) && !o.fixed[jl];
+    const int ends_chart = ends_ok && (o.constraints == both || (zero_k0 && (flags & FIT_RUN_ENDS_HELD)));
+    if (ends_chart) held = EL_CONSTRAIN_END_POINT | zero_k0;
     const int need_ipopt = (o.constraints & ~(EL_CONSTRAIN_START_POINT | EL_CONSTRAIN_LENGTH | EL_CONSTRAIN_K | held)) != 0;
     /* the discrete non-zero start curvature stays an Ipopt row, started by continuation in
      * the chart (el__fit_held_start; measured on a sketched S, then with the first segment's
@@ -186,7 +191,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
     fit_map free_map = map;              /* the same with the held chart variables free */
     free_map.nx = 0;
     for (int j = 0; j < FIT_NP; j++)
-        if (!o.fixed[j]) free_map.idx[free_map.nx++] = j;
+        if (ends_chart ? j == sl[1] || j == sl[2] || j == sl[3] : !o.fixed[j]) free_map.idx[free_map.nx++] = j;
     double xl[FIT_MAXX], xu[FIT_MAXX];
     for (int j = 0; j < map.nx; j++) {
         const int col = map.idx[j];
@@ -263,7 +268,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
      * (el__fit_smooth_start) as its last start, where nothing holds the smooth fit's
      * parameters to other meanings (fixed values, bounds, the signed k range) */
     int smooth_start = model == FIT_DISCRETE && (need_ipopt || ends_chart) && !o.use_initial && !lm_only &&
-                       !o.limited_memory && !(o.constraints & EL_CONSTRAIN_K);
+                       !o.limited_memory && !(o.constraints & EL_CONSTRAIN_K) && !(flags & FIT_RUN_ENDS_HELD);
     for (int j = 0; j < FIT_NP && smooth_start; j++)     /* the caller's (o holds a start point in x0, y0) */
         if (opt->fixed[j] || isfinite(opt->lower[j]) || isfinite(opt->upper[j])) smooth_start = 0;
     size_t free_ci = (size_t)-1;    /* the unconstrained start's index in cand, once added */
@@ -598,12 +603,21 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
     if (ok && kind == FIT_ORTHOGONAL && !need_ipopt && !o.use_initial && !lm_only) {
         const double noise_in = noise_rms * sc;
         const double stray = el__fit_stray(xy, n, fs, el__fit_out_length(model, n, res), noise_in, sc);
-        if (stray > FIT_STRAY && (st = el__fit_follow_points(model, xy, n, opt, flags, noise_in, sc, stray, res, d, fs)) == EL_OK)
+        /* el__fit_ends_held's run that strays is not kept (the fit it would replace has
+         * followed its points already) */
+        if (stray > FIT_STRAY && (flags & FIT_RUN_ENDS_HELD)) st = EL_ENOCONV;
+        else if (stray > FIT_STRAY && (st = el__fit_follow_points(model, xy, n, opt, flags, noise_in, sc, stray, res, d, fs)) == EL_OK)
             st = res->status;
     }
     /* not certified: Ipopt from this one (fit_restart.c); held ends as its rows */
     if (deferred && !(flags & FIT_RUN_INNER) && (st == EL_ENOCONV || st == EL_EMAXITER))
         st = el__fit_fallback(model, xy, n, opt, ends_chart ? FIT_RUN_ROWS : FIT_RUN_POLISH, res, d, fs);
+    /* pinned at both ends with a zero start curvature: fitted in the ends chart too, that
+     * curvature held there (el__fit_ends_held); with an end curvature (a row in either
+     * chart, where the ends chart's runs are the slower) only when this fit failed */
+    if (ends_ok && zero_k0 && !ends_chart && !lm_only && !o.use_initial && !(flags & FIT_RUN_INNER) && st != EL_ENOMEM &&
+        (!(o.constraints & EL_CONSTRAIN_END_CURVATURE) || st != EL_OK))
+        st = el__fit_ends_held(model, xy, n, opt, res, d, fs);
 done:
     el__fit_objective_free(&ob);
     free(dbuf);

@@ -81,7 +81,8 @@ int el__fit_end_state(int model, const double *v, size_t n, int at_end, fit_end 
 
 /* The charts of a map (fit_model.c): none; the start state (theta0, kappa0, F) in the
  * slots of (phi, w or z, k, q); both end points held, x = (a, Gx, Gy) in the slots of
- * (w or z, k, q), the start state of the curve's shape at unit length (x0, y0 in fixed[]). */
+ * (w or z, k, q), the start state of the curve's shape at unit length (x0, y0 in fixed[];
+ * a zero start curvature held too: a = 0 in fixed[], x = (Gx, Gy)). */
 enum { FIT_CHART_NONE = 0, FIT_CHART_START = 1, FIT_CHART_ENDS = 2 };
 
 /* The map from the optimiser's variables x to the curves' internal parameters. */
@@ -402,8 +403,11 @@ int el__fit_start(int model, const double *xy, size_t n, const el_fit_options *o
  * fit that start runs); FIT_RUN_POLISH, Ipopt polishes a fit without rows that
  * Levenberg-Marquardt leaves uncertified (el__fit_fallback's run; otherwise the fit
  * kept is polished by that run); FIT_RUN_INNER, a fit inside another
- * (el__fit_follow_points'), whose result the outer one polishes if it keeps it. */
-enum { FIT_RUN_LM_ONLY = 1, FIT_RUN_ROWS = 2, FIT_RUN_NO_OTHER = 4, FIT_RUN_POLISH = 8, FIT_RUN_INNER = 16 };
+ * (el__fit_follow_points'), whose result the outer one polishes if it keeps it;
+ * FIT_RUN_ENDS_HELD, pinned at both ends with a zero start curvature: the ends chart with
+ * that curvature held (el__fit_ends_held's run). */
+enum { FIT_RUN_LM_ONLY = 1, FIT_RUN_ROWS = 2, FIT_RUN_NO_OTHER = 4, FIT_RUN_POLISH = 8, FIT_RUN_INNER = 16,
+       FIT_RUN_ENDS_HELD = 32 };
 int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt, int flags,
                 const double *init, fit_out *res, double *dist, double *foot);
 /* fit_restart.c: el__fit_run on the points in reverse order when the end holds more
@@ -437,6 +441,12 @@ int el__fit_follow_points(int model, const double *xy, size_t n, const el_fit_op
  * else res->status, or EL_ENOMEM. */
 int el__fit_fallback(int model, const double *xy, size_t n, const el_fit_options *opt, int flags, fit_out *res,
                      double *d, double *fs);
+/* fit_restart.c: a fit pinned at both ends with a zero start curvature (*res, d, fs, from the
+ * start-state chart with the end point as Ipopt's rows) fitted again in the ends chart with
+ * that curvature held (FIT_RUN_ENDS_HELD), which replaces it when certified and lower or
+ * where it gave no fit that meets the constraints; res->status, or EL_ENOMEM. */
+int el__fit_ends_held(int model, const double *xy, size_t n, const el_fit_options *opt, fit_out *res, double *d,
+                      double *fs);
 
 /* Ipopt from x (in place; the best point seen on return) with bounds xl, xu (+-HUGE_VAL:
  * none) and constraints con (NULL: none). */

@@ -361,7 +361,9 @@ static int chart_to_v(const fit_map *m, const double *c, double *v, double D[4][
  * similarity leaves (a, G) three free shape variables, the analytic start-state chart's
  * (theta0, kappa0, F, L) less the four a turn and a scale about the start take; singular
  * only where e = 0 (a closed curve). The inverse: a = kappa0 L, G = F L^2 turned by
- * -theta0 (discrete: L = 1), the same shape whatever its ends.
+ * -theta0 (discrete: L = 1), the same shape whatever its ends. A zero start curvature is
+ * a = 0 at every scale: held in fixed[] (el__fit_ends_held), x = (Gx, Gy); x holds the free
+ * ones of (a, Gx, Gy) in this order.
  */
 enum { ENDS_BLOCK = 64 };   /* vertices per block of the discrete end's walk */
 
@@ -399,7 +401,16 @@ static int ends_to_v(const fit_map *m, const double *x, double *v, double *M)
 {
     const chart_slots sl = chart_of(m->model);
     const int jl = fit_length_slot(m->model);
-    const double c[4] = {0.0, x[0], x[1], x[2]};
+    const int slot[4] = {sl.phi, sl.w, sl.k, sl.q};
+    /* c: the chart (theta0 = 0, a, Gx, Gy), x its free coordinates in this order; a held
+     * (a zero start curvature) is in fixed[] */
+    double c[4] = {0.0, 0.0, 0.0, 0.0};
+    int col[FIT_MAXX];     /* the chart column of x_j */
+    for (int a = 1, p = 0; a < 4; a++) {
+        const int free = x_pos(m, slot[a]) >= 0;
+        c[a] = free ? x[p] : m->fixed[slot[a]];
+        if (free) col[p++] = a;
+    }
     double u[FIT_NP] = {0.0}, D[4][4], e[2], de[2][FIT_NP];
     u[jl] = 1.0;
     int st = chart_to_v(m, c, u, M ? D : NULL);
@@ -413,12 +424,11 @@ static int ends_to_v(const fit_map *m, const double *x, double *v, double *M)
     v[jl] = lam;
     if (m->model == FIT_SMOOTH) v[sl.w] = u[sl.w] / lam;
     if (!M) return EL_OK;
-    const int slot[4] = {sl.phi, sl.w, sl.k, sl.q};
     memset(M, 0, sizeof(double) * FIT_NP * m->nx);
     for (int j = 0; j < m->nx; j++) {
-        /* d u / d x_j (the chart's column j + 1: theta0 held at 0), carried to e */
+        /* d u / d x_j (the chart's column col[j]: theta0 held at 0), carried to e */
         double du[FIT_NP] = {0.0}, dei[2] = {0.0, 0.0};
-        for (int r = 0; r < 4; r++) du[slot[r]] = D[r][j + 1];
+        for (int r = 0; r < 4; r++) du[slot[r]] = D[r][col[j]];
         for (int r = 0; r < FIT_NP; r++) {
             dei[0] += de[0][r] * du[r];
             dei[1] += de[1][r] * du[r];
@@ -433,18 +443,21 @@ static int ends_to_v(const fit_map *m, const double *x, double *v, double *M)
     return EL_OK;
 }
 
-/* x of the ends chart for the parameters v: the shape of v's curve, whatever its ends. */
+/* x of the ends chart for the parameters v: the shape of v's curve, whatever its ends (a
+ * held variable left out). */
 static void ends_from_v(const fit_map *m, const double *v, double *x)
 {
-    double c[4];
-    if (chart_from_v(m, v, c)) {           /* unevaluable: left for the caller's check */
-        x[0] = x[1] = x[2] = NAN;
-        return;
+    const chart_slots sl = chart_of(m->model);
+    const int slot[4] = {sl.phi, sl.w, sl.k, sl.q};
+    double c[4], shape[4] = {0.0, NAN, NAN, NAN};
+    if (!chart_from_v(m, v, c)) {          /* unevaluable: NaN, left for the caller's check */
+        const double L = m->model == FIT_SMOOTH ? v[6] : 1.0, cs = cos(c[0]), sn = sin(c[0]);
+        shape[1] = c[1] * L;
+        shape[2] = (cs * c[2] + sn * c[3]) * L * L;
+        shape[3] = (cs * c[3] - sn * c[2]) * L * L;
     }
-    const double L = m->model == FIT_SMOOTH ? v[6] : 1.0, cs = cos(c[0]), sn = sin(c[0]);
-    x[0] = c[1] * L;
-    x[1] = (cs * c[2] + sn * c[3]) * L * L;
-    x[2] = (cs * c[3] - sn * c[2]) * L * L;
+    for (int a = 1, p = 0; a < 4; a++)
+        if (x_pos(m, slot[a]) >= 0) x[p++] = shape[a];
 }
 
 int el__fit_map_eval(const fit_map *m, const double *x, double v[2][FIT_NP], double *M)

@@ -1,0 +1,191 @@
+/* Fits pinned at both ends with a zero curvature at one or both (a batten with a free end
+ * between two pins): the start-state chart holds the zero start curvature and leaves the
+ * end point to Ipopt's rows; the ends chart (fit_model.c) holds both end points and, since
+ * kappa0 L = 0 is free of scale, that curvature too (el__fit_ends_held, fit_restart.c). The
+ * two fall into different basins, and the fit keeps the lower. Sparse noisy points at
+ * uneven places along a smooth curve of length 1 (numpy default_rng(5), the generator of
+ * bench/bench_fit_sparse.py), pinned at that curve's ends, by both models; the plain
+ * counterpart is the start-state chart's fit alone (el__fit_run with FIT_RUN_INNER). Each
+ * test failed before the ends chart held the curvature: ZK13 smooth at 2.9 x this rms,
+ * ZK101 at 2.0 x, ZK92 discrete with both end curvatures 0 in neither chart's plain run met
+ * (EL_EDOM), where the ends chart meets them. */
+#include "testutil.h"
+#include "fit_internal.h"
+#include <math.h>
+#include <string.h>
+
+/* seed 5 case 13: 9 points, noise 1.0 % of the extent; its curve's ends (start,
+ * end) and end curvatures 2.18, -0.308 */
+static const double ZK13[] = {
+ 0.001761020665737351, -0.012215033753461049, -0.03344242350789735, 0.03941813613755728,
+ -0.0536143330209436, 0.05289269613557455, -0.11223911214413396, 0.10617140908351802, -0.13075836368890292,
+ 0.12102405173858574, -0.20311974097709298, 0.15461693276767738, -0.4974828968223471, 0.3105478969795347,
+ -0.5249550973048296, 0.36489638317497125, -0.6444198458577148, 0.6888962176305,
+};
+static const double ZK13_ENDS[4] = {0.0, 0.0, -0.6541806597270909, 0.6892469608505178};
+
+/* seed 5 case 92: 30 points, noise 0.5 % of the extent; its curve's ends (start,
+ * end) and end curvatures -3.93, -0.393 */
+static const double ZK92[] = {
+ 0.007872800695331689, -0.0021414466896516127, 0.030078987743107403, -0.11727724484201667,
+ 0.026204212804267674, -0.12873867489313884, 0.024531974889114006, -0.14358281853110239,
+ 0.029083076363428405, -0.14079513929680745, 0.014997491142167486, -0.19519956518578163,
+ 0.008275965105503862, -0.2467793439837181, 0.0073831695266319535, -0.2613816634299408,
+ 0.001410060452359592, -0.2807756931617771, -0.012956296703864794, -0.3069270728230864,
+ -0.02004552375807697, -0.3508681088363242, -0.02479770682576137, -0.4064388770249317,
+ -0.034397323741411204, -0.42097663489106985, -0.033602623952150176, -0.436361520562025,
+ -0.04006632607588155, -0.4822967494276853, -0.03737363491076989, -0.4982155149229384,
+ -0.028264572896557462, -0.5503724401152567, -0.024631557684688114, -0.5562616875321369,
+ 0.03655858536298649, -0.6647237961933139, 0.043377971102231815, -0.666712210703018, 0.05399231018506174,
+ -0.6769894023343056, 0.11946055953869128, -0.7247451120488425, 0.14987634785601753, -0.7247123269590049,
+ 0.16823774128461763, -0.7358923792908114, 0.17789385331522303, -0.7445842575612838, 0.1844630405010582,
+ -0.7453277490398503, 0.19996561629863133, -0.7488551950100671, 0.20679807329766542, -0.7511125708343678,
+ 0.2337652588758863, -0.7480422108039632, 0.3269215730555124, -0.7728905615134146,
+};
+static const double ZK92_ENDS[4] = {0.0, 0.0, 0.319451801008962, -0.7685655797538855};
+
+/* seed 5 case 101: 33 points, noise 1.0 % of the extent; its curve's ends (start,
+ * end) and end curvatures 0.712, -0.369 */
+static const double ZK101[] = {
+ -0.0043195769468589735, 0.0004955387116694806, 0.10882802937127273, -0.08186409998600758,
+ 0.11345653199103428, -0.10267762097299783, 0.2163556684098798, -0.17741671731970565, 0.23665151247649585,
+ -0.1896742263368405, 0.2648738959069006, -0.19387612334561202, 0.2735775886868798, -0.18759492232024993,
+ 0.30984818227738575, -0.24552847954360843, 0.303437860931394, -0.22507354164246934, 0.3016292216556924,
+ -0.24046953838856663, 0.3332736976253152, -0.23300691348963676, 0.38244341170956603, -0.2749807242916496,
+ 0.39336214666583663, -0.2658778530993347, 0.39894818156868506, -0.276224949716906, 0.39356423937340407,
+ -0.27835753766230265, 0.4220851191104401, -0.2796936533840104, 0.4806639661834783, -0.31325368567720124,
+ 0.5484809607016556, -0.36734206808851816, 0.6072738052739061, -0.3806613395594709, 0.6216489896513684,
+ -0.40651268156209497, 0.6322336290729188, -0.39419319157398797, 0.6273045857574223, -0.3863676670820298,
+ 0.6857779784279386, -0.42981273276365084, 0.7073332372625863, -0.4333539760026796, 0.710520475919168,
+ -0.4441217862820518, 0.7444482026616847, -0.45776570905453545, 0.7348962135255358, -0.47264574871312665,
+ 0.769138045790115, -0.47141086279449906, 0.7448385891776484, -0.4569920664163047, 0.7672080332792494,
+ -0.48546051777617444, 0.8003547197384059, -0.48050862616878987, 0.827339648517339, -0.5090132219583937,
+ 0.8508996540628274, -0.527292398171958,
+};
+static const double ZK101_ENDS[4] = {0.0, 0.0, 0.8512010162887202, -0.5191942594449669};
+
+#define N_OF(a) (sizeof a / sizeof a[0] / 2)
+
+/* The curvature of a fit's curve (params in the model's Jacobian order) at its start (at_end
+ * 0) or end (1): the discrete one that of the polygon extended by a vertex (fit_internal.h,
+ * on the internal parameters: the smooth w = sqrt(mu)). */
+static double end_curvature(int model, const double *params, size_t n, int at_end)
+{
+    static double tmp[FIT_WORK];
+    double v[FIT_NP];
+    for (int j = 0; j < FIT_NP; j++) v[j] = el__fit_norm_param(model, j, params[j], 0.0, 0.0, 1.0);
+    fit_end e;
+    ck_assert_int_eq(el__fit_end_state(model, v, n, at_end, &e, tmp), EL_OK);
+    return e.kappa;
+}
+
+/* The fit of xy (n points, scaled by scale about the origin) pinned at ends (start, end,
+ * scaled) with the zero curvatures of mask (EL_CONSTRAIN_START_CURVATURE and / or
+ * EL_CONSTRAIN_END_CURVATURE): EL_OK, both ends and those curvatures met (to 1e-9 of the
+ * size, curvatures times the size), its rms no higher than the plain counterpart's when
+ * that met them, and at most `gain` x it. Returns the plain counterpart's status. */
+static int check_zero_curvature(int model, const double *xy0, size_t n, const double *ends0, int mask, double scale,
+                                double gain)
+{
+    double xy[2 * 64], ends[4];
+    ck_assert(n <= 64);
+    for (size_t i = 0; i < 2 * n; i++) xy[i] = xy0[i] * scale;
+    for (int i = 0; i < 4; i++) ends[i] = ends0[i] * scale;
+    el_fit_options o;
+    el_fit_options_defaults(&o);
+    o.constraints = EL_CONSTRAIN_START_POINT | EL_CONSTRAIN_END_POINT | mask;
+    memcpy(o.start_point, ends, sizeof o.start_point);
+    memcpy(o.end_point, ends + 2, sizeof o.end_point);
+    o.start_curvature = o.end_curvature = 0.0;
+    fit_out plain, fit;
+    memset(&plain, 0, sizeof plain);
+    memset(&fit, 0, sizeof fit);
+    plain.status = fit.status = -1;
+    if (mask == EL_CONSTRAIN_END_CURVATURE) {
+        /* the fit runs reversed (the zero curvature at its start): so does the plain one */
+        double rxy[2 * 64];
+        for (size_t i = 0; i < n; i++) { rxy[2 * i] = xy[2 * (n - 1 - i)]; rxy[2 * i + 1] = xy[2 * (n - 1 - i) + 1]; }
+        el_fit_options r = o;
+        r.constraints = EL_CONSTRAIN_START_POINT | EL_CONSTRAIN_END_POINT | EL_CONSTRAIN_START_CURVATURE;
+        memcpy(r.start_point, ends + 2, sizeof r.start_point);
+        memcpy(r.end_point, ends, sizeof r.end_point);
+        (void)el__fit_run(model, rxy, n, &r, FIT_RUN_INNER, NULL, &plain, NULL, NULL);
+    } else {
+        (void)el__fit_run(model, xy, n, &o, FIT_RUN_INNER, NULL, &plain, NULL, NULL);
+    }
+    const int st = el__fit_run_either_way(model, xy, n, &o, NULL, &fit, NULL, NULL);
+    ck_assert_msg(st == EL_OK, "model %d n %zu scale %g: status %d", model, n, scale, st);
+    double V[2 * 64];
+    if (model == FIT_SMOOTH) {
+        const el_smooth_params p = {fit.params[0], fit.params[1], fit.params[2], fit.params[3], fit.params[4],
+                                    fit.params[5], fit.params[6]};
+        const double s[2] = {0.0, p.length};
+        ck_assert_int_eq(el_smooth_eval(&p, 2, s, V, NULL, NULL), EL_OK);
+        V[2 * n - 2] = V[2];
+        V[2 * n - 1] = V[3];
+    } else {
+        const el_discrete_params p = {fit.params[0], fit.params[1], fit.params[2], fit.params[3], fit.params[4],
+                                      fit.params[5], fit.params[6]};
+        ck_assert_int_eq(el_discrete_eval(&p, n, V), EL_OK);
+    }
+    ck_assert(hypot(V[0] - ends[0], V[1] - ends[1]) <= 1e-9 * scale);
+    ck_assert(hypot(V[2 * n - 2] - ends[2], V[2 * n - 1] - ends[3]) <= 1e-9 * scale);
+    for (int at_end = 0; at_end < 2; at_end++)
+        if (mask & (at_end ? EL_CONSTRAIN_END_CURVATURE : EL_CONSTRAIN_START_CURVATURE))
+            ck_assert_msg(fabs(end_curvature(model, fit.params, n, at_end)) * scale <= 1e-9,
+                          "model %d scale %g: curvature %g at end %d", model, scale,
+                          end_curvature(model, fit.params, n, at_end), at_end);
+    if (plain.status == EL_OK || plain.status == EL_ENOCONV || plain.status == EL_EMAXITER)
+        ck_assert_msg(fit.rms <= plain.rms * (1.0 + 1e-9) && fit.rms <= gain * plain.rms,
+                      "model %d n %zu scale %g: rms %.6g, the start-state chart's %.6g", model, n, scale,
+                      fit.rms / scale, plain.rms / scale);
+    return plain.status;
+}
+
+/* A zero start curvature: ZK13 smooth (9 points; the start-state chart's fit 0.0442, the
+ * ends chart's 0.0151), at the sketch's scale and at 1e-6 and 1e6 of it; discrete, no
+ * higher. */
+START_TEST(test_fit_zero_start_curvature_held_in_ends_chart)
+{
+    const double scales[3] = {1.0, 1e-6, 1e6};
+    for (int a = 0; a < 3; a++)
+        check_zero_curvature(FIT_SMOOTH, ZK13, N_OF(ZK13), ZK13_ENDS, EL_CONSTRAIN_START_CURVATURE, scales[a], 0.5);
+    check_zero_curvature(FIT_DISCRETE, ZK13, N_OF(ZK13), ZK13_ENDS, EL_CONSTRAIN_START_CURVATURE, 1.0, 1.0);
+}
+END_TEST
+
+/* A zero end curvature: the fit runs reversed (fit_restart.c), the curvature held at its
+ * start; ZK101 by both models (the start-state chart's 0.0171 / 0.0163, the ends chart's
+ * 0.0083 / 0.0083); the plain counterpart reversed too. */
+START_TEST(test_fit_zero_end_curvature_held_reversed)
+{
+    check_zero_curvature(FIT_SMOOTH, ZK101, N_OF(ZK101), ZK101_ENDS, EL_CONSTRAIN_END_CURVATURE, 1.0, 0.6);
+    check_zero_curvature(FIT_DISCRETE, ZK101, N_OF(ZK101), ZK101_ENDS, EL_CONSTRAIN_END_CURVATURE, 1.0, 0.6);
+}
+END_TEST
+
+/* Both end curvatures zero (the end one a row in either chart): ZK92 discrete, whose
+ * start-state chart's fit meets no polygon there (EL_EDOM), meets them in the ends chart;
+ * smooth, no higher than the start-state chart's. */
+START_TEST(test_fit_zero_curvatures_both_ends_met)
+{
+    const int both = EL_CONSTRAIN_START_CURVATURE | EL_CONSTRAIN_END_CURVATURE;
+    const int plain = check_zero_curvature(FIT_DISCRETE, ZK92, N_OF(ZK92), ZK92_ENDS, both, 1.0, 1.0);
+    ck_assert_msg(plain == EL_EDOM, "the start-state chart's fit now %d: this test no longer shows the ends chart's", plain);
+    check_zero_curvature(FIT_SMOOTH, ZK92, N_OF(ZK92), ZK92_ENDS, both, 1.0, 1.0);
+}
+END_TEST
+
+static Suite *suite(void)
+{
+    Suite *s = suite_create("fit_ends_held");
+    TCase *tc = tcase_create("core");
+    tcase_set_timeout(tc, 120);
+    tcase_add_test(tc, test_fit_zero_start_curvature_held_in_ends_chart);
+    tcase_add_test(tc, test_fit_zero_end_curvature_held_reversed);
+    tcase_add_test(tc, test_fit_zero_curvatures_both_ends_met);
+    suite_add_tcase(s, tc);
+    return s;
+}
+
+int main(void) { return test_run_suite(suite()); }
