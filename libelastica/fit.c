@@ -613,10 +613,11 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
     if (deferred && !(flags & FIT_RUN_INNER) && (st == EL_ENOCONV || st == EL_EMAXITER))
         st = el__fit_fallback(model, xy, n, opt, ends_chart ? FIT_RUN_ROWS : FIT_RUN_POLISH, res, d, fs);
     /* pinned at both ends with a zero start curvature: fitted in the ends chart too, that
-     * curvature held there (el__fit_ends_held); with an end curvature (a row in either
-     * chart, where the ends chart's runs are the slower) only when this fit failed */
+     * curvature held there (el__fit_ends_held); with an end curvature other than 0 (a row
+     * in either chart, where the ends chart's runs are the slower) only when this fit was
+     * not certified */
     if (ends_ok && zero_k0 && !ends_chart && !lm_only && !o.use_initial && !(flags & FIT_RUN_INNER) && st != EL_ENOMEM &&
-        (!(o.constraints & EL_CONSTRAIN_END_CURVATURE) || st != EL_OK))
+        (!(o.constraints & EL_CONSTRAIN_END_CURVATURE) || con.end_kappa == 0.0 || st != EL_OK))
         st = el__fit_ends_held(model, xy, n, opt, res, d, fs);
 done:
     el__fit_objective_free(&ob);

@@ -233,10 +233,14 @@ int el__fit_fallback(int model, const double *xy, size_t n, const el_fit_options
  * sketches, bench_fit_sparse.py's seed 5, pinned at their curve's ends, a zero curvature at
  * one end, each model: this one lower by > 1 % on 5-14 of 100, higher on 2-8, either by up
  * to 2.3 x). The lower is kept: lower than before on 2-4 of 100 per model and end, higher on
- * none, the median CPU 5.2 -> 7.7 ms (this one by Levenberg-Marquardt alone, ~2.5 ms). With
- * an end curvature too (a row here as well, the runs ~3 x slower) only where the first did
- * not certify a fit: of 400 such fits, 4 that met no constraints (EL_EDOM) now meet them,
- * 4 uncertified ones are lower, and 2 discrete ones by the better smooth start.
+ * none, the median CPU 5.2 -> 7.7 ms (this one by Levenberg-Marquardt alone, ~2.5 ms).
+ * With a zero curvature at both ends (a natural batten between two pins; the end one a row
+ * here as well, the runs ~3 x slower) always: of the same 100 sets, lower by > 10 % on 20
+ * smooth and 33 discrete fits (by > 2 x on 10 and 16), one discrete fit 5 % higher (its
+ * smooth start, itself lower, led elsewhere), 2 that met no constraints (EL_EDOM) meet
+ * them; the median CPU 47 -> 186 ms smooth, 86 -> 351 ms discrete, the slowest 1.5 and
+ * 2.3 s. With another end curvature only where the first did not certify a fit: of 200
+ * such fits, 2 that met none now meet them and 4 are lower.
  */
 int el__fit_ends_held(int model, const double *xy, size_t n, const el_fit_options *opt, fit_out *res, double *d,
                       double *fs)
