@@ -170,14 +170,14 @@ int el__fit_held_start(fit_objective *ob, const fit_map *out, const fit_map *fre
     const double turn = (bits & bit[0]) ? fabs(remainder(to[0] - from[0], 2.0 * M_PI)) : 0.0;
     /* the ends chart's a = kappa0 L: in stages of asinh a (HELD_ASINH) */
     const int ends = free_map->chart == FIT_CHART_ENDS && (bits & bit[1]);
-    const double span = ends ? fabs(asinh(to[1]) - asinh(from[1])) : 0.0;
+    const double as0 = asinh(from[1]), as1 = asinh(to[1]), span = ends ? fabs(as1 - as0) : 0.0;
     const int stages = (int)fmin(HELD_STAGES_MAX, fmax(HELD_STAGES, fmax(ceil(turn / HELD_TURN), ceil(span / HELD_ASINH))));
     for (int k = 1; k <= stages; k++) {
         const double t = (double)k / stages;
         for (int a = 0; a < 2; a++)
             if (bits & bit[a])
                 stage.fixed[sl[a]] = t == 1.0 ? to[a] : a == 0 ? from[0] + t * remainder(to[0] - from[0], 2.0 * M_PI)
-                                   : ends ? sinh(asinh(from[1]) + t * (asinh(to[1]) - asinh(from[1])))
+                                   : ends ? sinh(as0 + t * (as1 - as0))
                                           : from[1] + t * (to[1] - from[1]);
         ob->map = stage;
         ob->have_base = 0;

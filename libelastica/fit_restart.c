@@ -93,6 +93,17 @@ double el__fit_out_length(int model, size_t n, const fit_out *r)
     return model == FIT_SMOOTH ? r->params[6] : (double)(n - 1) * r->params[2];
 }
 
+/* *res (d, fs its distances and feet) replaced by the refit alt (buf: its distances, then
+ * its feet), the iterations and candidates of both counted. */
+static void replace_fit(fit_out *res, fit_out *alt, const double *buf, size_t n, double *d, double *fs)
+{
+    memcpy(d, buf, sizeof(double) * n);
+    memcpy(fs, buf + n, sizeof(double) * n);
+    alt->iterations += res->iterations;
+    alt->candidates += res->candidates;
+    *res = *alt;
+}
+
 /* A fit by distance to the curve that strays from its points (el__fit_stray: a loop
  * between two points, the points' order run backwards) where a curve near them has
  * a lower rms only by the curve's freedom between them: the paired fit, which passes
@@ -139,11 +150,9 @@ int el__fit_follow_points(int model, const double *xy, size_t n, const el_fit_op
     const double stray_rms = res->rms;    /* the fit that strays */
     int follows = stray <= FIT_STRAY;     /* *res follows its points */
     if (refit_stray >= 0.0 && (refit_stray <= FIT_STRAY || refit_stray < 0.5 * stray)) {
-        fo.iterations += res->iterations + paired.iterations;
-        fo.candidates += res->candidates + paired.candidates;
-        *res = fo;
-        memcpy(d, buf, sizeof(double) * n);
-        memcpy(fs, buf + n, sizeof(double) * n);
+        fo.iterations += paired.iterations;
+        fo.candidates += paired.candidates;
+        replace_fit(res, &fo, buf, n, d, fs);
         follows = refit_stray <= FIT_STRAY;
     }
     /* a free fit that nothing near follows as closely as it strays (the paired refit strays
@@ -177,11 +186,9 @@ int el__fit_follow_points(int model, const double *xy, size_t n, const el_fit_op
             const double other_stray = st != EL_ENOMEM && gave_curve(&fo)
                 ? el__fit_stray(xy, n, buf + n, el__fit_out_length(model, n, &fo), noise, scale) : -1.0;
             if (other_stray >= 0.0 && other_stray <= FIT_STRAY && fo.rms < res->rms) {
-                fo.iterations += res->iterations + other.iterations;
-                fo.candidates += res->candidates + other.candidates;
-                *res = fo;
-                memcpy(d, buf, sizeof(double) * n);
-                memcpy(fs, buf + n, sizeof(double) * n);
+                fo.iterations += other.iterations;
+                fo.candidates += other.candidates;
+                replace_fit(res, &fo, buf, n, d, fs);
             }
         }
     }
@@ -212,12 +219,8 @@ int el__fit_fallback(int model, const double *xy, size_t n, const el_fit_options
     int st = el__fit_run(model, xy, n, &ro, flags, res->params, &alt, buf, buf + n);
     const int lower = !(flags & FIT_RUN_ROWS) && (st == EL_ENOCONV || st == EL_EMAXITER) && alt.f < res->f;
     if (st == EL_OK || lower) {
-        memcpy(d, buf, sizeof(double) * n);
-        memcpy(fs, buf + n, sizeof(double) * n);
         memcpy(alt.initial, res->initial, sizeof alt.initial);
-        alt.iterations += res->iterations;
-        alt.candidates += res->candidates;
-        *res = alt;
+        replace_fit(res, &alt, buf, n, d, fs);
     } else if (st != EL_ENOMEM) {
         st = res->status;
     }
@@ -254,13 +257,7 @@ int el__fit_ends_held(int model, const double *xy, size_t n, const el_fit_option
     /* lower, or where the first fit gave none that meets the constraints (an uncertified one
      * that does is kept when lower: it is the better fit, only its certificate is missing) */
     const int none = res->status != EL_OK && res->status != EL_ENOCONV && res->status != EL_EMAXITER;
-    if (st == EL_OK && (none || alt.rms < res->rms)) {
-        memcpy(d, buf, sizeof(double) * n);
-        memcpy(fs, buf + n, sizeof(double) * n);
-        alt.iterations += res->iterations;
-        alt.candidates += res->candidates;
-        *res = alt;
-    }
+    if (st == EL_OK && (none || alt.rms < res->rms)) replace_fit(res, &alt, buf, n, d, fs);
     free(buf);
     return st == EL_ENOMEM ? st : res->status;
 }

@@ -336,6 +336,64 @@ START_TEST(test_ends_chart_same_curve_and_derivative)
 }
 END_TEST
 
+/* The ends chart with a zero start curvature held (a = 0 in fixed[], x = (Gx, Gy):
+ * el__fit_ends_held): every shape it gives starts with curvature 0 exactly and ends on the
+ * held end, x comes back from its curve (el__fit_map_inverse), and d v / d x matches central
+ * differences; both models, G in 16 directions (k = |sin(delta / 2)| from 0.02 to 1, both
+ * signs of the start's turn) and three magnitudes, chords from 1e-4 to 1e4. */
+START_TEST(test_ends_chart_held_zero_start_curvature)
+{
+    double tmp[FIT_WORK], worst = 0.0;
+    const double mags[] = {0.3, 4.0, 60.0}, scales[] = {1e-4, 1.0, 1e4};
+    const size_t n = 50;
+    for (int model = 0; model < 2; model++)
+        for (int di = 0; di < 16; di++)
+            for (size_t gi = 0; gi < sizeof mags / sizeof mags[0]; gi++)
+                for (size_t si = 0; si < sizeof scales / sizeof scales[0]; si++) {
+                    const double ang = -M_PI + (di + 0.5) * (2.0 * M_PI / 16.0), S = scales[si];
+                    const int wslot = model == FIT_DISCRETE ? 4 : 3;
+                    fit_map m;
+                    memset(&m, 0, sizeof m);
+                    m.model = model; m.ncurves = 1; m.chart = FIT_CHART_ENDS;
+                    for (int j = 0; j < FIT_NP; j++)
+                        m.scale[j] = (model == FIT_DISCRETE && (j == 2 || j == 4)) ? (double)(n - 1) : 1.0;
+                    m.idx[m.nx++] = fit_k_slot(model);
+                    m.idx[m.nx++] = 5;
+                    m.fixed[0] = 0.3 * S; m.fixed[1] = -0.2 * S; m.fixed[wslot] = 0.0;
+                    m.chord[0] = 0.8 * S; m.chord[1] = 0.5 * S;
+                    const double x[2] = {mags[gi] * cos(ang), mags[gi] * sin(ang)};
+                    double w[2][FIT_NP], M[2 * FIT_NP * FIT_MAXX], xi[FIT_MAXX];
+                    if (el__fit_map_eval(&m, x, w, M) != EL_OK) continue;    /* a closed shape (e = 0) */
+                    fit_end e0, e1;
+                    ck_assert_int_eq(el__fit_end_state(model, w[0], n, 0, &e0, tmp), EL_OK);
+                    ck_assert_int_eq(el__fit_end_state(model, w[0], n, 1, &e1, tmp), EL_OK);
+                    ck_assert_msg(fabs(e0.kappa) * S <= 1e-12, "model %d dir %d |G| %g scale %g: kappa0 %g", model, di,
+                                  mags[gi], S, e0.kappa);
+                    ck_assert(fmax(fabs(e1.xy[0] - e0.xy[0] - m.chord[0]), fabs(e1.xy[1] - e0.xy[1] - m.chord[1])) <=
+                              1e-12 * S);
+                    el__fit_map_inverse(&m, w[0], xi);
+                    for (int j = 0; j < 2; j++)
+                        ck_assert_msg(fabs(xi[j] - x[j]) <= 1e-9 * (1.0 + fabs(x[j])), "model %d dir %d: x%d %g back as %g",
+                                      model, di, j, x[j], xi[j]);
+                    for (int j = 0; j < m.nx; j++) {
+                        const double h = 1e-6 * (1.0 + fabs(x[j]));
+                        double vp[2][FIT_NP], vm[2][FIT_NP];
+                        map_at_offsets(&m, x, j, h, vp, vm);
+                        for (int r = 0; r < FIT_NP; r++) {
+                            const double diff = r == (model == FIT_DISCRETE ? 3 : 2)
+                                              ? remainder(vp[0][r] - vm[0][r], 2 * M_PI) : vp[0][r] - vm[0][r];
+                            const double fd = diff / (2 * h), an = M[r * m.nx + j];
+                            const double err = fabs(fd - an) / (fabs(w[0][r]) / (1.0 + fabs(x[j])) + 1.0 + fabs(fd));
+                            worst = fmax(worst, err);
+                            ck_assert_msg(err <= 1e-6, "model %d dir %d |G| %g scale %g x%d v%d: %g vs %g", model, di,
+                                          mags[gi], S, j, r, an, fd);
+                        }
+                    }
+                }
+    ck_assert(worst > 0.0);
+}
+END_TEST
+
 /* The discrete orthogonal objective's gradient J^T r / n (the distances to the polygon,
  * feet held: variable projection) against central differences of f, on unevenly spaced
  * noisy points over three blocks of the walk (the next block's first vertex enters the
@@ -601,6 +659,7 @@ static Suite *suite(void)
     tcase_add_test(tc, test_keyline_map_is_g2_with_its_derivative);
     tcase_add_test(tc, test_start_chart_same_curve_and_derivative);
     tcase_add_test(tc, test_ends_chart_same_curve_and_derivative);
+    tcase_add_test(tc, test_ends_chart_held_zero_start_curvature);
     tcase_add_test(tc, test_discrete_orthogonal_gradient);
     tcase_add_test(tc, test_discrete_paired_normal_equations_equal_plain_ones);
     tcase_add_test(tc, test_sampled_search_equals_full_search);
