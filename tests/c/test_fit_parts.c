@@ -361,7 +361,7 @@ START_TEST(test_ends_chart_held_zero_start_curvature)
                     m.idx[m.nx++] = 5;
                     m.fixed[0] = 0.3 * S; m.fixed[1] = -0.2 * S; m.fixed[wslot] = 0.0;
                     m.chord[0] = 0.8 * S; m.chord[1] = 0.5 * S;
-                    const double x[2] = {mags[gi] * cos(ang), mags[gi] * sin(ang)};
+                    const double x[FIT_MAXX] = {mags[gi] * cos(ang), mags[gi] * sin(ang)};   /* map_at_offsets' size */
                     double w[2][FIT_NP], M[2 * FIT_NP * FIT_MAXX], xi[FIT_MAXX];
                     if (el__fit_map_eval(&m, x, w, M) != EL_OK) continue;    /* a closed shape (e = 0) */
                     fit_end e0, e1;
