@@ -8,7 +8,8 @@ random arc lengths (the ends included), Gaussian noise of 0.1, 0.5 or 1 % of the
 curve's extent per coordinate. Fitted free, with the true start point and tangent
 (a curve continuing an edge G1), pinned at the true end points (FreeCAD's Pin start
 and Pin end: the ends chart, no Ipopt) and with the true end points and tangents (a
-curve joining two edges G1), by the smooth and the discrete model, and by the smooth
+curve joining two edges G1), pinned at the true end points with curvature 0 there (the
+natural batten), by the smooth and the discrete model, and by the smooth
 model with the true curve's start point, tangent and curvature and end point and tangent
 (a blend joining geometry G2 at its start, G1 at its end).
 
@@ -20,9 +21,10 @@ model with the true curve's start point, tangent and curvature and end point and
               fit from it follows the same starts, so both can be worse), errors,
               fits not certified (status other than 0), fits that ran Ipopt, and the
               median and maximum CPU time of a fit.
-  fit_sparse_free, fit_sparse_pinned, fit_sparse_g1_ends  the free fits, those pinned at
-              both ends and those joined G1 at both ends, both models: median, maximum
-              and total CPU time, fits that ran Ipopt, not certified, errors.
+  fit_sparse_free, fit_sparse_pinned, fit_sparse_g1_ends, fit_sparse_natural  the free
+              fits, those pinned at both ends, those joined G1 at both ends and the natural
+              battens, both models: median, maximum and total CPU time, fits that ran Ipopt,
+              not certified, errors (the natural battens: and those that stray).
 
 `python3 bench/bench_fit_sparse.py SEED CASE` prints one set's points (the
 sets tests/c/test_fit_basin.c takes its data from: seed 4 case 22, seed 4 case 532,
@@ -36,7 +38,11 @@ import numpy as np
 import libelastica as el
 
 KINDS = {"free": (), "start G1": ("start_point", "start_tangent"), "pinned ends": ("start_point", "end_point"),
-         "G1 both ends": ("start_point", "start_tangent", "end_point", "end_tangent")}
+         "G1 both ends": ("start_point", "start_tangent", "end_point", "end_tangent"),
+         "natural batten": ("start_point", "end_point")}
+# pinned at both ends with curvature 0 there (FreeCAD's Pin start + Pin end + curvature 0 at
+# both ends), whatever the curve's own end curvatures
+ZERO_CURVATURES = {"natural batten": {"start_curvature": 0.0, "end_curvature": 0.0}}
 # smooth only (the discrete model's start curvature other than 0 is an Ipopt row): a blend
 # that must join geometry G2 at its start and G1 at its end
 SMOOTH_KINDS = {"G2 start, G1 end": ("start_point", "start_tangent", "start_curvature", "end_point", "end_tangent")}
@@ -95,7 +101,7 @@ def measure(seed, count):
         case, pts, c, sig, ends = next(drawn)
         truth = true_rms(c, pts)
         for (model, kind), o in out.items():
-            cons = {name: ends[name] for name in names[kind]} or None
+            cons = dict({name: ends[name] for name in names[kind]}, **ZERO_CURVATURES.get(kind, {})) or None
             c0 = time.process_time()
             try:
                 r = el.fit(pts, model=model, constraints=cons)
@@ -140,12 +146,14 @@ def main():
         print(json.dumps(line))
     total = sum(o["stray"] for o in res.values())
     errors = sum(o["errors"] for o in res.values())
-    smooth = [o for (m, _), o in res.items() if m == "smooth"]
+    # the true curve meets every kind's constraints but the natural batten's (its own end
+    # curvatures are not 0): that kind is not compared with it
+    smooth = [o for (m, k), o in res.items() if m == "smooth" and k not in ZERO_CURVATURES]
     worse = sum(o["worse_true"] for o in smooth)
     print(json.dumps({"bench": "fit_sparse_all", "sets": count * len(res), "stray": total, "errors": errors,
                       "readme": "fits of 6-59 sparse uneven noisy points (smooth and discrete, free, "
-                                "with a start tangent, pinned at both ends, G1 at both ends; smooth G2 start "
-                                "+ G1 end) that stray from them",
+                                "with a start tangent, pinned at both ends, G1 at both ends, natural batten; smooth "
+                                "G2 start + G1 end) that stray from them",
                       "value": f"{total} of {count * len(res)}, {errors} errors (smooth: {worse} of "
                                f"{count * len(smooth)} above the true curve's rms by > 1 %)"}))
 
@@ -155,15 +163,21 @@ def main():
              "the same sketches pinned at both ends (Pin start + Pin end), smooth / discrete", count)
     kind_row(res, "G1 both ends", "fit_sparse_g1_ends",
              "the same sketches joined G1 at both ends (the true end points and tangents), smooth / discrete", count)
+    kind_row(res, "natural batten", "fit_sparse_natural",
+             "the same sketches pinned at both ends with curvature 0 there (the natural batten), smooth / discrete",
+             count, strays=True)
 
 
-def kind_row(res, kind, bench, readme, count):
+def kind_row(res, kind, bench, readme, count, strays=False):
     """One kind's figures over both models: CPU time (median, max, all the fits'), Ipopt,
-    uncertified fits, errors."""
+    uncertified fits, errors (strays: and the fits that stray from their points)."""
     both = [res[(m, kind)] for m in ("smooth", "discrete")]
+    stray_text = (f"; {res[('smooth', kind)]['stray']} / {res[('discrete', kind)]['stray']} stray from their points"
+                  if strays else "")
     t = {m: np.array(res[(m, kind)]["t"]) * 1e3 for m in ("smooth", "discrete")}
     total = sum(float(v.sum()) for v in t.values()) * 1e-3
     print(json.dumps({"bench": bench, "sets": count, "models": 2,
+                      "stray": {m: res[(m, kind)]["stray"] for m in ("smooth", "discrete")},
                       "median_cpu_ms": {m: round(float(np.median(v)), 2) for m, v in t.items()},
                       "max_cpu_ms": {m: round(float(v.max()), 1) for m, v in t.items()},
                       "total_cpu_s": round(total, 2),
@@ -173,7 +187,7 @@ def kind_row(res, kind, bench, readme, count):
                       "value": f"median {np.median(t['smooth']):.1f} / {np.median(t['discrete']):.1f} ms CPU, "
                                f"max {t['smooth'].max():.0f} / {t['discrete'].max():.0f} ms, {total:.2f} s for "
                                f"all {2 * count}; Ipopt in {sum(o['ipopt'] for o in both)} of {2 * count}, "
-                               f"{sum(o['uncertified'] for o in both)} uncertified"}))
+                               f"{sum(o['uncertified'] for o in both)} uncertified{stray_text}"}))
 
 if __name__ == "__main__":
     main()

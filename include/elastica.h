@@ -327,7 +327,13 @@ enum el_fit_distance { EL_DISTANCE_AUTO = 0, EL_DISTANCE_ORTHOGONAL = 1, EL_DIST
  * fitting the points in reverse order): the point and the tangent; smooth, the
  * curvature; discrete, a zero curvature. Both end points, with no other constraint,
  * are held exactly together (the fitted shape turned and scaled about the start point
- * onto the end point: no Ipopt). The others are Ipopt's constraint rows.
+ * onto the end point: no Ipopt). The others are Ipopt's constraint rows, but for the
+ * natural batten: el_fit_smooth with both end points and both end curvatures 0 (and no
+ * other constraint, fixed parameter or bound on phi, mu, k, q, length) searches the
+ * curves that meet them (both ends inflections on the chord: per number of half-waves a
+ * family in k alone) without Ipopt, leaves out those that cross themselves, and keeps the
+ * nearest that follows the points (as below), else the nearest; certified when it is a
+ * minimum along its family (or where its lobes touch), else EL_ENOCONV.
  */
 enum el_fit_constraint {
     EL_CONSTRAIN_START_POINT = 1,

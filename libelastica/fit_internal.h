@@ -424,6 +424,15 @@ int el__fit_unconstrained_start(int model, const double *xy, size_t n, const el_
  * cx, cy, sc into v); EL_EDOM: none, EL_ENOMEM. */
 int el__fit_smooth_start(const double *xy, size_t n, const el_fit_options *opt, double cx, double cy, double sc,
                          double *v);
+/* fit_natural.c: a smooth fit by distance pinned at both ends (ob's ends chart) with both end
+ * curvatures 0: the member of that one-parameter family of curves nearest the points among
+ * those that do not cross themselves (normalised parameters v; noise: el__fit_noise_rms,
+ * normalised); *certified: a minimum along the family; *evals: the members evaluated.
+ * EL_EDOM: none, EL_ENOMEM. */
+int el__fit_natural_fit(fit_objective *ob, double noise, double *v, int *certified, int *evals);
+/* fit_natural.c: the moduli bounding the natural batten's family: k* (2E = K, the figure
+ * eight) and k_t (lobes j and j + 2 touch). */
+int el__natural_moduli(double *kstar, double *ktouch);
 /* fit_restart.c: the curve's length of a fit's result. */
 double el__fit_out_length(int model, size_t n, const fit_out *r);
 /* fit_restart.c: a fit by distance whose result *res (d, fs its distances and feet,
