@@ -333,7 +333,9 @@ enum el_fit_distance { EL_DISTANCE_AUTO = 0, EL_DISTANCE_ORTHOGONAL = 1, EL_DIST
  * curves that meet them (both ends inflections on the chord: per number of half-waves a
  * family in k alone) without Ipopt, leaves out those that cross themselves, and keeps the
  * nearest that follows the points (as below), else the nearest; certified when it is a
- * minimum along its family (or where its lobes touch), else EL_ENOCONV.
+ * minimum along its family (or where its lobes touch), else EL_ENOCONV; el_fit_discrete
+ * starts from that curve (its polygon meets both zero curvatures exactly) and keeps the
+ * end one as Ipopt's row.
  */
 enum el_fit_constraint {
     EL_CONSTRAIN_START_POINT = 1,

@@ -237,12 +237,11 @@ int el__fit_fallback(int model, const double *xy, size_t n, const el_fit_options
  * one end, each model: this one lower by > 1 % on 5-14 of 100, higher on 2-8, either by up
  * to 2.3 x). The lower is kept: lower than before on 2-4 of 100 per model and end, higher on
  * none, the median CPU 5.2 -> 7.7 ms (this one by Levenberg-Marquardt alone, ~2.5 ms).
- * With a zero curvature at both ends (a natural batten between two pins; the end one a row
- * here as well, the runs ~3 x slower) always, for the discrete model (the smooth one searches
- * its family instead: fit_natural.c, fit.c): of the same 100 sets, lower by > 10 % on 33
- * discrete fits (by > 2 x on 16), 2 that met no constraints (EL_EDOM) meet them; the median
- * CPU 86 -> 351 ms, the slowest 2.3 s. With another end curvature only where the first did
- * not certify a fit: of 200 such fits, 2 that met none now meet them and 4 are lower.
+ * With a zero curvature at both ends (a natural batten between two pins) the ends chart's
+ * run comes first and alone where it gives a fit (fit.c: the smooth fit searches its family,
+ * fit_natural.c, the discrete one starts from that curve), this only where it gives none.
+ * With another end curvature only where the first did not certify a fit: of 200 such fits,
+ * 2 that met none now meet them and 4 are lower.
  */
 int el__fit_ends_held(int model, const double *xy, size_t n, const el_fit_options *opt, fit_out *res, double *d,
                       double *fs)

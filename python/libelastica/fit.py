@@ -270,7 +270,10 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     data's size or ConstraintError naming the one that cannot be met. The discrete
     model's tangent at vertex j is theta_j = phi + 2 a(q + j z), the tangent of the
     smooth elastica with its phi, k, q and mu = 1 at s = j z (segment j runs at the mean
-    of theta_j and theta_j+1, seed 000 (4.4)).
+    of theta_j and theta_j+1, seed 000 (4.4)). Both end points with both curvatures 0
+    (the natural batten): the smooth fit searches every curve that meets them (no
+    Ipopt), leaves out those that cross themselves and keeps the nearest that follows the
+    points; the discrete fit starts from it.
     fixed: parameters held at given values, e.g. ``{"x0": 0, "y0": 0}`` or ``{"h": r}``.
     bounds: ``{name: (lo, hi)}`` (None = unbounded). initial: start from this curve
     instead of the automatic guess. A fit that does not converge returns the best curve
