@@ -95,8 +95,8 @@ START_TEST(test_natural_moduli_bound_the_simple_members)
 }
 END_TEST
 
-/* The natural fit of the points xy (n) pinned at ends; rms, params out */
-static int natural_fit(const double *xy, size_t n, const double *ends, el_fit_smooth_result *r)
+/* The natural batten's options: pinned at ends (start, end), both curvatures 0 */
+static el_fit_options natural_options(const double *ends)
 {
     el_fit_options o;
     el_fit_options_defaults(&o);
@@ -105,7 +105,14 @@ static int natural_fit(const double *xy, size_t n, const double *ends, el_fit_sm
     memcpy(o.start_point, ends, sizeof o.start_point);
     memcpy(o.end_point, ends + 2, sizeof o.end_point);
     o.start_curvature = o.end_curvature = 0.0;
-    return el_fit_smooth(xy, n, &o, NULL, r, NULL, NULL);
+    return o;
+}
+
+/* The natural fit of the points xy (n) pinned at ends (distances d, feet fs: NULL or n each) */
+static int natural_fit(const double *xy, size_t n, const double *ends, el_fit_smooth_result *r, double *d, double *fs)
+{
+    const el_fit_options o = natural_options(ends);
+    return el_fit_smooth(xy, n, &o, NULL, r, d, fs);
 }
 
 /* Both ends at the pins and of curvature 0 (to 1e-9 of the size), as el_smooth_eval sees them */
@@ -140,7 +147,7 @@ START_TEST(test_natural_members_recovered_exactly)
             memcpy(ends, xy, 2 * sizeof(double));
             memcpy(ends + 2, xy + 2 * n - 2, 2 * sizeof(double));
             el_fit_smooth_result r;
-            const int st = natural_fit(xy, n, ends, &r);
+            const int st = natural_fit(xy, n, ends, &r, NULL, NULL);
             ck_assert_msg(st == EL_OK && r.rms <= 1e-9 * sc && !r.used_ipopt,
                           "m %d k %g scale %g: status %d rms %g (of the size) ipopt %d", cases[c].m, cases[c].k, sc, st,
                           r.rms / sc, r.used_ipopt);
@@ -188,7 +195,7 @@ START_TEST(test_natural_fit_is_the_family_minimum)
         memcpy(ends + 2, xy + 2 * n - 2, 2 * sizeof(double));
         for (size_t i = 0; i < 2 * n; i++) xy[i] += 0.005 * test_normal(&state);
         el_fit_smooth_result r;
-        ck_assert_int_eq(natural_fit(xy, n, ends, &r), EL_OK);
+        ck_assert_int_eq(natural_fit(xy, n, ends, &r, NULL, NULL), EL_OK);
         ck_assert(!r.used_ipopt);
         check_natural_ends(&r.params, ends, 1.0);
         const double chord = hypot(ends[2] - ends[0], ends[3] - ends[1]);
@@ -216,20 +223,13 @@ END_TEST
 START_TEST(test_natural_fit_follows_a_sketch)
 {
     const size_t n = N_OF(ZK26);
+    double *d = malloc(sizeof(double) * 2 * n), *fs = d + n;
+    ck_assert(d);
     el_fit_smooth_result r;
-    ck_assert_int_eq(natural_fit(ZK26, n, ZK26_ENDS, &r), EL_OK);
+    ck_assert_int_eq(natural_fit(ZK26, n, ZK26_ENDS, &r, d, fs), EL_OK);
     ck_assert(!r.used_ipopt);
     check_natural_ends(&r.params, ZK26_ENDS, 1.0);
     ck_assert(!crosses_itself(&r.params, 4000));
-    double *d = malloc(sizeof(double) * 2 * n), *fs = d + n;
-    ck_assert(d);
-    el_fit_options o;
-    el_fit_options_defaults(&o);
-    o.constraints = EL_CONSTRAIN_START_POINT | EL_CONSTRAIN_END_POINT | EL_CONSTRAIN_START_CURVATURE |
-                    EL_CONSTRAIN_END_CURVATURE;
-    memcpy(o.start_point, ZK26_ENDS, sizeof o.start_point);
-    memcpy(o.end_point, ZK26_ENDS + 2, sizeof o.end_point);
-    ck_assert_int_eq(el_fit_smooth(ZK26, n, &o, NULL, &r, d, fs), EL_OK);
     double cx, cy, sc;
     ck_assert_int_eq(el__fit_normalisation(ZK26, n, &cx, &cy, &sc), EL_OK);
     const double noise = el__fit_noise_rms(ZK26, n, sc) * sc;
@@ -238,6 +238,7 @@ START_TEST(test_natural_fit_follows_a_sketch)
     fit_out rows;
     memset(&rows, 0, sizeof rows);
     rows.status = -1;
+    const el_fit_options o = natural_options(ZK26_ENDS);
     ck_assert_int_eq(el__fit_run(FIT_SMOOTH, ZK26, n, &o, FIT_RUN_INNER, NULL, &rows, d, fs), EL_OK);
     const el_smooth_params rp = {rows.params[0], rows.params[1], rows.params[2], rows.params[3], rows.params[4],
                                  rows.params[5], rows.params[6]};
