@@ -36,8 +36,9 @@
 #include <string.h>
 
 /* The samples of tau: from L / c = 1 + e^-8 in steps of e^0.5 (at most NTAU_MAX) up to
- * 1 + e^4, three times the points' polygon or the touching lobes; half-waves from 1 to the points' crossings of the chord + 4 (at least
- * 6, at most MMAX); Brent's minimiser from the NREFINE lowest sampled minima. */
+ * 1 + e^4, three times the points' polygon or the touching lobes; half-waves from 1 to
+ * the points' crossings of the chord + 4 (at least 6, at most MMAX); Brent's minimiser
+ * from the NREFINE lowest sampled minima of each kind (following the points or not). */
 enum { NTAU_MAX = 128, MMAX = 64, NREFINE = 3 };
 #define TAU0 (-8.0)
 #define TAU_STEP 0.5
@@ -79,7 +80,8 @@ static double touch_gap(double k, void *p)
     (void)p;
     const double phi1 = asin(1.0 / (M_SQRT2 * k));
     gsl_sf_result E1, F1;
-    if (gsl_sf_ellint_E_e(phi1, k, GSL_PREC_DOUBLE, &E1) || gsl_sf_ellint_F_e(phi1, k, GSL_PREC_DOUBLE, &F1)) return NAN;
+    if (gsl_sf_ellint_E_e(phi1, k, GSL_PREC_DOUBLE, &E1) || gsl_sf_ellint_F_e(phi1, k, GSL_PREC_DOUBLE, &F1))
+        return NAN;
     return 2.0 * E1.val - F1.val - 2.0 * g_of(k, NULL);
 }
 
@@ -131,9 +133,10 @@ static int member(family *fm, double tau, double kmax, double *v)
     }
     fm->target = tau;
     gsl_function fn = {tau_gap, fm};
-    double k, K, g, t;
-    if (!(tau_gap(1e-9, fm) < 0.0 && tau_gap(kmax, fm) >= 0.0)) return EL_EDOM;
-    const int st = tau_gap(kmax, fm) == 0.0 ? (k = kmax, EL_OK) : root(&fn, 1e-9, kmax, &k);
+    double k = kmax, K, g, t;
+    const double gap_hi = tau_gap(kmax, fm);     /* 0 at the touching lobes' own tau_t */
+    if (!(tau_gap(1e-9, fm) < 0.0 && gap_hi >= 0.0)) return EL_EDOM;
+    const int st = gap_hi == 0.0 ? EL_OK : root(&fn, 1e-9, kmax, &k);
     if (st == EL_ENOMEM) fm->err = st;
     if (st || member_shape(k, &K, &g, &t)) return EL_EDOM;
     v[3] = 2.0 * fm->m * g / c;
@@ -309,7 +312,8 @@ static void scan(family *fm, int mmax, double kstar, double ktouch, candidate *c
             for (int j = 1; j < ns; j++) {
                 if (!(f[j] < f[j - 1])) continue;
                 if (j + 1 < ns && f[j] <= f[j + 1])
-                    cs[(*nc)++] = (candidate){f[j], t[j], t[j - 1], f[j - 1], t[j + 1], f[j + 1], kmax, m, mir, 0, fol[j]};
+                    cs[(*nc)++] = (candidate){f[j], t[j], t[j - 1], f[j - 1], t[j + 1], f[j + 1], kmax, m, mir, 0,
+                                              fol[j]};
                 else if (j + 1 == ns && edge)
                     cs[(*nc)++] = (candidate){f[j], t[j], t[j - 1], f[j - 1], t[j], f[j], kmax, m, mir, 1, fol[j]};
             }
