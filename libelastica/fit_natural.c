@@ -38,8 +38,13 @@
 /* The samples of tau: from L / c = 1 + e^-8 in steps of e^0.5 (at most NTAU_MAX) up to
  * 1 + e^4, three times the points' polygon or the touching lobes; half-waves from 1 to
  * the points' crossings of the chord + 4 (at least 6, at most MMAX); Brent's minimiser
- * from the NREFINE lowest sampled minima of each kind (following the points or not). */
-enum { NTAU_MAX = 128, MMAX = 64, NREFINE = 3 };
+ * from the NREFINE lowest sampled minima of each kind (following the points or not).
+ * The samples and the minimiser see NSCAN of the points at most (spread by index, the ends
+ * among them), Gauss-Newton and the certificate all of them: ~600 members evaluated over
+ * all of 20 000 noisy points along a member took 6 s, where the former fits of the guesses
+ * by Ipopt took 0.54 s; so 0.26 s (2000 points: 0.057 s, Ipopt's 0.092; 200: 0.050 s,
+ * Ipopt's 0.020), the same rms. */
+enum { NTAU_MAX = 128, MMAX = 64, NREFINE = 3, NSCAN = 64 };
 #define TAU0 (-8.0)
 #define TAU_STEP 0.5
 
@@ -178,7 +183,8 @@ static double member_f(double tau, void *p)
 }
 
 /* A candidate: a sampled minimum (tau between its neighbours lo, hi) or an end */
-typedef struct { double f, tau, lo, flo, hi, fhi, kmax; int m, mirror, certified, follows; } candidate;
+/* bound: at the touching lobes' tau_t or the segment, a minimum by its place (no Brent) */
+typedef struct { double f, tau, lo, flo, hi, fhi, kmax; int m, mirror, bound, follows; } candidate;
 
 /* those that follow their points first, then by f */
 static int by_follows_f(const void *a, const void *b)
@@ -189,15 +195,15 @@ static int by_follows_f(const void *a, const void *b)
 }
 
 /* Gauss-Newton on tau from Brent's minimum, the distances' derivative by central
- * differences: Brent's minimiser resolves tau to ~1e-8 |tau| (GSL's tolerance), which
+ * differences (returns whether it converged: the certificate along the family): Brent's minimiser resolves tau to ~1e-8 |tau| (GSL's tolerance), which
  * leaves a curve through exact points 1e-8 of its size off them; these steps take it to
  * rounding (the distances vanish there: quadratic convergence) and change a noisy fit's f
  * by less than that resolution's square */
-static void gauss_newton(family *fm, const member_at *ma, candidate *c)
+static int gauss_newton(family *fm, const member_at *ma, candidate *c)
 {
     const size_t n = fm->ob->n;
     double *r = fm->r, *rp = fm->r + n, *rm = fm->r + 2 * n;
-    for (int it = 0; it < 8 && !fm->err; it++) {
+    for (int it = 0; it < 12 && !fm->err; it++) {
         const double h = 1e-5 * (1.0 + fabs(c->tau));
         const double f0 = member_f(c->tau, (void *)ma);
         memcpy(r, fm->d, sizeof(double) * n);
@@ -205,7 +211,8 @@ static void gauss_newton(family *fm, const member_at *ma, candidate *c)
         memcpy(rp, fm->d, sizeof(double) * n);
         const double fmn = member_f(c->tau - h, (void *)ma);
         memcpy(rm, fm->d, sizeof(double) * n);
-        if (!(f0 < HUGE_VAL && fp < HUGE_VAL && fmn < HUGE_VAL)) return;
+        if (!(f0 < HUGE_VAL && fp < HUGE_VAL && fmn < HUGE_VAL)) return 0;
+        c->f = f0;
         double jr = 0.0, jj = 0.0;
         for (size_t i = 1; i + 1 < n; i++) {
             const double J = (rp[i] - rm[i]) / (2.0 * h);
@@ -213,43 +220,46 @@ static void gauss_newton(family *fm, const member_at *ma, candidate *c)
             jj += J * J;
         }
         const double step = -jr / jj;
-        if (!isfinite(step)) return;
+        if (!isfinite(step)) return 0;
+        /* converged: the step at the resolution of tau, or the decrease it promises
+         * (jr step / 2 of the sum of squares) at the rounding of f */
+        const int conv = fabs(step) <= 1e-12 * (1.0 + fabs(c->tau)) || -0.5 * jr * step <= 1e-14 * f0;
         const double f1 = member_f(c->tau + step, (void *)ma);
-        if (!(f1 < c->f)) return;
+        if (!(f1 < c->f)) return conv;
         c->tau += step;
         c->f = f1;
-        if (fabs(step) <= 1e-13 * (1.0 + fabs(c->tau))) return;
+        if (conv) return 1;
     }
+    return 0;
 }
 
-/* Brent's minimiser on the candidate's bracket; certified where it converges (tau to 1e-6,
- * near the minimiser's own resolution) */
-static void refine(family *fm, candidate *c)
+/* Brent's minimiser on the candidate's bracket to tol in tau (1e-3 for the candidates:
+ * gauss_newton polishes the one kept); returns whether it converged there */
+static int refine(family *fm, candidate *c, double tol)
 {
-    if (c->certified || !(c->flo > c->f && c->fhi > c->f)) return;
     fm->m = c->m;
     fm->mirror = c->mirror;
     member_at ma = {fm, c->kmax};
+    if (c->bound || !(c->flo > c->f && c->fhi > c->f)) return 0;
     gsl_function fn = {member_f, &ma};
     gsl_min_fminimizer *s = gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent);
-    if (!s) { fm->err = EL_ENOMEM; return; }
+    if (!s) { fm->err = EL_ENOMEM; return 0; }
+    int conv = 0;
     if (gsl_min_fminimizer_set_with_values(s, &fn, c->tau, c->f, c->lo, c->flo, c->hi, c->fhi) == GSL_SUCCESS) {
-        int conv = 0;
         for (int it = 0; it < 100 && !conv; it++) {
             if (gsl_min_fminimizer_iterate(s) != GSL_SUCCESS) break;
-            conv = gsl_min_test_interval(gsl_min_fminimizer_x_lower(s), gsl_min_fminimizer_x_upper(s), 1e-6, 0.0) ==
+            conv = gsl_min_test_interval(gsl_min_fminimizer_x_lower(s), gsl_min_fminimizer_x_upper(s), tol, 0.0) ==
                    GSL_SUCCESS;
         }
         if (gsl_min_fminimizer_f_minimum(s) <= c->f) {
             c->f = gsl_min_fminimizer_f_minimum(s);
             c->tau = gsl_min_fminimizer_x_minimum(s);
         }
-        c->certified = conv;
     }
     gsl_min_fminimizer_free(s);
-    gauss_newton(fm, &ma, c);
     member_f(c->tau, &ma);      /* whether the minimum follows its points */
     c->follows = !fm->strays;
+    return conv;
 }
 
 /* The half-waves to try: the points' crossings of the chord (changes of their side
@@ -272,7 +282,7 @@ static int max_halfwaves(const fit_objective *ob, double noise)
 /* The sampled minima over tau of every (m, mirror) into cs (*nc), and the straight
  * segment where it is below the nearest samples. Interior minima, and for m >= 3 the
  * touching lobes' end tau_t where f falls towards it (the members beyond cross: a minimum
- * under that bound, certified); the other ends are limits (the segment, the figure
+ * under that bound); the other ends are limits (the segment, the figure
  * eight's infinite loop) */
 static void scan(family *fm, int mmax, double kstar, double ktouch, candidate *cs, int *nc)
 {
@@ -323,6 +333,19 @@ static void scan(family *fm, int mmax, double kstar, double ktouch, candidate *c
     if (seg_min) cs[(*nc)++] = (candidate){f0, 0.0, 0.0, f0, 0.0, f0, kstar, 0, 0, 1, seg_follows};
 }
 
+/* The length of the points' polygon (normalised) */
+static double polygon_length(const fit_objective *ob)
+{
+    double poly = 0.0;
+    for (size_t i = 0; i + 1 < ob->n; i++) {
+        double P[2], Q[2];
+        fit_point(ob, i, P);
+        fit_point(ob, i + 1, Q);
+        poly += fit_norm(Q[0] - P[0], Q[1] - P[1]);
+    }
+    return poly;
+}
+
 int el__fit_natural_fit(fit_objective *ob, double noise, double *v, int *certified, int *evals)
 {
     el__gsl_quiet();
@@ -333,21 +356,34 @@ int el__fit_natural_fit(fit_objective *ob, double noise, double *v, int *certifi
     memset(&fm, 0, sizeof fm);
     fm.ob = ob;
     fm.noise = noise;
-    for (size_t i = 0; i + 1 < ob->n; i++) {
-        double P[2], Q[2];
-        fit_point(ob, i, P);
-        fit_point(ob, i + 1, Q);
-        fm.poly += fit_norm(Q[0] - P[0], Q[1] - P[1]);
-    }
+    fm.poly = polygon_length(ob);
     const int mmax = max_halfwaves(ob, noise);
-    double *buf = malloc(sizeof(double) * 6 * ob->n);
+    double *buf = malloc(sizeof(double) * 6 * ob->n), *sxy = malloc(sizeof(double) * 3 * NSCAN);
     candidate *cs = malloc(sizeof *cs * (size_t)(2 * mmax * (NTAU_MAX + 1) + 1));
     st = EL_ENOMEM;
-    if (!buf || !cs) goto out;
+    if (!buf || !sxy || !cs) goto out;
     fm.d = buf;
     fm.fs = buf + ob->n;
     fm.fs_in = buf + 2 * ob->n;
     fm.r = buf + 3 * ob->n;
+    /* the scan and the minimiser on NSCAN of the points at most (their own objective, the
+     * same map), Gauss-Newton and the certificate on all */
+    fit_objective sub;
+    int have_sub = 0;
+    if (ob->n > NSCAN) {
+        for (size_t i = 0; i < NSCAN; i++) {
+            const size_t j = (size_t)((double)i * (double)(ob->n - 1) / (double)(NSCAN - 1) + 0.5);
+            sxy[2 * i] = ob->xy[2 * j];
+            sxy[2 * i + 1] = ob->xy[2 * j + 1];
+            sxy[2 * NSCAN + i] = ob->t[j];
+        }
+        if (el__fit_objective_init(&sub, ob->kind, &ob->map, sxy, NSCAN, ob->cx, ob->cy, ob->sc, sxy + 2 * NSCAN))
+            goto out;
+        have_sub = 1;
+        sub.exact_ends = ob->exact_ends;
+        fm.ob = &sub;
+        fm.poly = polygon_length(&sub);
+    }
     int nc = 0;
     scan(&fm, mmax, kstar, ktouch, cs, &nc);
     /* the lowest sampled minima refined, NREFINE of those that follow their points and
@@ -358,21 +394,39 @@ int el__fit_natural_fit(fit_objective *ob, double noise, double *v, int *certifi
     for (int i = 0; i < nc && !fm.err; i++) {
         const int cls = cs[i].follows;     /* the sample's; the minimum's after refine */
         if (done[cls]++ >= NREFINE) continue;
-        refine(&fm, &cs[i]);
+        refine(&fm, &cs[i], 1e-3);
         if (pick < 0 || by_follows_f(&cs[i], &cs[pick]) < 0) pick = i;
+    }
+    if (have_sub) {
+        el__fit_objective_free(&sub);
+        fm.ob = ob;
+        fm.poly = polygon_length(ob);
     }
     st = fm.err ? fm.err : pick < 0 ? EL_EDOM : EL_OK;
     if (!st) {
-        fm.m = cs[pick].m;
-        fm.mirror = cs[pick].mirror;
-        st = member(&fm, cs[pick].tau, cs[pick].kmax, v);
-        *certified = cs[pick].certified;
+        candidate *c = &cs[pick];
+        fm.m = c->m;
+        fm.mirror = c->mirror;
+        const member_at ma = {&fm, c->kmax};
+        int conv = c->m > 0 && gauss_newton(&fm, &ma, c);
+        if (c->m > 0 && !c->bound && !conv) {
+            /* Gauss-Newton did not settle (a minimum where a foot changes pass, a kink of f):
+             * a minimum along the family all the same where Brent's minimiser closes on it */
+            c->lo = c->tau - 1e-2;
+            c->hi = c->tau + 1e-2;
+            c->flo = member_f(c->lo, (void *)&ma);
+            c->fhi = member_f(c->hi, (void *)&ma);
+            conv = refine(&fm, c, 1e-6);
+        }
+        st = fm.err ? fm.err : member(&fm, c->tau, c->kmax, v);
+        *certified = c->bound || conv;
         *evals = fm.evals;
     }
 out:
     ob->rest_ok = 0;
     ob->have_base = 0;
     free(buf);
+    free(sxy);
     free(cs);
     return st;
 }

@@ -216,6 +216,45 @@ START_TEST(test_natural_fit_is_the_family_minimum)
 }
 END_TEST
 
+/* Dense scans (more points than the search samples with: it sees 64 of them, the
+ * minimiser all): noisy (0.3 % of the size) along members at scale 1e3, no higher than the
+ * start-state chart's fit by Ipopt's rows (el__fit_run with FIT_RUN_INNER, the former path,
+ * which the dense points lead to the same basin); noise-free, recovered to rounding */
+START_TEST(test_natural_fit_of_dense_points)
+{
+    const struct { int m; double k; size_t n; double noise; } cases[] = {
+        {2, 0.6, 500, 3e-3}, {3, -0.75, 3000, 3e-3}, {1, 0.4, 1000, 0.0}, {4, 0.8, 2000, 0.0}};
+    unsigned long long state = 77;
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        const size_t n = cases[c].n;
+        const el_smooth_params p = member_of(cases[c].m, cases[c].k, 1e3, -0.9, 50.0, 20.0);
+        double *s = malloc(sizeof(double) * 7 * n), *xy = s + n, *d = xy + 2 * n, *fs = d + n, *pd = fs + n, *pfs = pd + n;
+        ck_assert(s);
+        for (size_t i = 0; i < n; i++) s[i] = p.length * (i == 0 ? 0.0 : i == n - 1 ? 1.0 : test_uniform(&state, 0.0, 1.0));
+        for (size_t i = 1; i < n; i++)      /* sorted: the points in their order along the curve */
+            for (size_t j = i; j > 0 && s[j - 1] > s[j]; j--) { const double t = s[j]; s[j] = s[j - 1]; s[j - 1] = t; }
+        ck_assert_int_eq(el_smooth_eval(&p, n, s, xy, NULL, NULL), EL_OK);
+        double ends[4] = {xy[0], xy[1], xy[2 * n - 2], xy[2 * n - 1]};
+        for (size_t i = 0; i < 2 * n; i++) xy[i] += cases[c].noise * 1e3 * test_normal(&state);
+        el_fit_smooth_result r;
+        const int st = natural_fit(xy, n, ends, &r, d, fs);
+        ck_assert_msg(st == EL_OK && !r.used_ipopt, "case %zu: status %d ipopt %d", c, st, r.used_ipopt);
+        check_natural_ends(&r.params, ends, 1e3);
+        if (cases[c].noise == 0.0) {
+            ck_assert_msg(r.rms <= 1e-9 * 1e3, "case %zu: rms %g", c, r.rms);
+        } else {
+            const el_fit_options o = natural_options(ends);
+            fit_out rows;
+            memset(&rows, 0, sizeof rows);
+            rows.status = -1;
+            ck_assert_int_eq(el__fit_run(FIT_SMOOTH, xy, n, &o, FIT_RUN_INNER, NULL, &rows, pd, pfs), EL_OK);
+            ck_assert_msg(r.rms <= rows.rms * (1.0 + 1e-6), "case %zu: rms %.9g, the rows' %.9g", c, r.rms, rows.rms);
+        }
+        free(s);
+    }
+}
+END_TEST
+
 /* A sketch whose curve bends at its ends, pinned there with curvature 0: the rows' fit
  * (the start-state chart, el__fit_run with FIT_RUN_INNER, the former path) wound a chain of
  * 16 loops across the points (length 9.3, rms 0.0145); this one is a simple curve that
@@ -257,6 +296,7 @@ static Suite *suite(void)
     tcase_add_test(tc, test_natural_members_recovered_exactly);
     tcase_add_test(tc, test_natural_fit_is_the_family_minimum);
     tcase_add_test(tc, test_natural_fit_follows_a_sketch);
+    tcase_add_test(tc, test_natural_fit_of_dense_points);
     suite_add_tcase(s, tc);
     return s;
 }
