@@ -182,8 +182,8 @@ static double member_f(double tau, void *p)
     return f;
 }
 
-/* A candidate: a sampled minimum (tau between its neighbours lo, hi) or an end */
-/* bound: at the touching lobes' tau_t or the segment, a minimum by its place (no Brent) */
+/* A candidate: a sampled minimum (tau between its neighbours lo, hi), or (bound) the
+ * touching lobes' tau_t or the segment, a minimum by its place (no Brent) */
 typedef struct { double f, tau, lo, flo, hi, fhi, kmax; int m, mirror, bound, follows; } candidate;
 
 /* those that follow their points first, then by f */
@@ -195,10 +195,10 @@ static int by_follows_f(const void *a, const void *b)
 }
 
 /* Gauss-Newton on tau from Brent's minimum, the distances' derivative by central
- * differences (returns whether it converged: the certificate along the family): Brent's minimiser resolves tau to ~1e-8 |tau| (GSL's tolerance), which
- * leaves a curve through exact points 1e-8 of its size off them; these steps take it to
- * rounding (the distances vanish there: quadratic convergence) and change a noisy fit's f
- * by less than that resolution's square */
+ * differences; returns whether it converged (the certificate along the family). Brent's
+ * minimiser stops at 1e-3 in tau here and could not go below ~1e-8 |tau| (GSL's
+ * tolerance), which leaves a curve through exact points 1e-8 of its size off them; these
+ * steps take it to rounding (the distances vanish there: quadratic convergence) */
 static int gauss_newton(family *fm, const member_at *ma, candidate *c)
 {
     const size_t n = fm->ob->n;
@@ -408,6 +408,7 @@ int el__fit_natural_fit(fit_objective *ob, double noise, double *v, int *certifi
         fm.m = c->m;
         fm.mirror = c->mirror;
         const member_at ma = {&fm, c->kmax};
+        c->f = member_f(c->tau, (void *)&ma);     /* of all the points (the scan's: of NSCAN) */
         int conv = c->m > 0 && gauss_newton(&fm, &ma, c);
         if (c->m > 0 && !c->bound && !conv) {
             /* Gauss-Newton did not settle (a minimum where a foot changes pass, a kink of f):
