@@ -660,8 +660,9 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
     /* pinned at both ends with a zero start curvature: fitted in the ends chart too, that
      * curvature held there (el__fit_ends_held); with an end curvature other than 0 (a row
      * in either chart, where the ends chart's runs are the slower) only when this fit was
-     * not certified */
-    if (ends_ok && zero_k0 && !ends_chart && !lm_only && !o.use_initial && !(flags & FIT_RUN_INNER) && st != EL_ENOMEM &&
+     * not certified; the natural batten's ran first (above) */
+    if (ends_ok && zero_k0 && !ends_chart && !natural && !lm_only && !o.use_initial && !(flags & FIT_RUN_INNER) &&
+        st != EL_ENOMEM &&
         (!(o.constraints & EL_CONSTRAIN_END_CURVATURE) || con.end_kappa == 0.0 || st != EL_OK))
         st = el__fit_ends_held(model, xy, n, opt, res, d, fs);
 done:

@@ -61,6 +61,7 @@ typedef struct {
     double *d, *fs, *fs_in;    /* n each: distances and feet, the feet in input units */
     double *r;                 /* 3 n: gauss_newton's distances */
     double noise, poly;        /* el__fit_noise_rms and the points' polygon length (normalised) */
+    int classify;              /* member_f sets strays (the scan, a refined minimum) */
     int strays;                /* member_f's last member winds where there are no points: it
                                   strays from them (el__fit_stray) and is longer than 1.25 poly */
     int evals, err;            /* member_f's evaluations; EL_ENOMEM seen */
@@ -182,6 +183,7 @@ static double member_f(double tau, void *p)
     double f = 0.0;
     for (size_t i = 1; i + 1 < ob->n; i++) f += fm->d[i] * fm->d[i];
     if (!isfinite(f)) return HUGE_VAL;
+    if (!fm->classify) return f;     /* Brent's and Gauss-Newton's steps need f alone */
     for (size_t i = 0; i < ob->n; i++) fm->fs_in[i] = fm->fs[i] * ob->sc;
     const double stray = el__fit_stray(ob->xy, ob->n, fm->fs_in, v[0][6] * ob->sc, fm->noise * ob->sc, ob->sc);
     if (stray < 0.0) { fm->err = EL_ENOMEM; return HUGE_VAL; }
@@ -264,7 +266,9 @@ static int refine(family *fm, candidate *c, double tol)
         }
     }
     gsl_min_fminimizer_free(s);
+    fm->classify = 1;
     member_f(c->tau, &ma);      /* whether the minimum follows its points */
+    fm->classify = 0;
     c->follows = !fm->strays;
     return conv;
 }
@@ -394,7 +398,9 @@ int el__fit_natural_fit(fit_objective *ob, double noise, double *v, int *certifi
         fm.poly = polygon_length(&sub);
     }
     int nc = 0;
+    fm.classify = 1;
     scan(&fm, mmax, kstar, ktouch, cs, &nc);
+    fm.classify = 0;
     /* the lowest sampled minima refined, NREFINE of those that follow their points and
      * NREFINE of the others (a snake wound across the points comes closer to more of them:
      * member_f); the lowest that follows, else the lowest */
