@@ -165,3 +165,20 @@ def doc_state(doc):
         size = (len(sh.Edges), round(sh.Length, 9)) if sh is not None and not sh.isNull() else None
         out.append((o.Name, o.TypeId, size))
     return out
+
+
+def travel_ends(f):
+    """[(point, unit tangent, signed curvature)] at the start and the end of a fit's
+    one B-spline, in the direction of travel (first point -> last), from Part's curve
+    API: curvature() and normal() (towards the centre), signed + when the curve
+    turns left seen from the fit plane's normal."""
+    c = f.Shape.Edges[0].Curve
+    up = f.Plane.Rotation.multVec(App.Vector(0, 0, 1))
+    out = []
+    for u in (c.FirstParameter, c.LastParameter):
+        t = App.Vector(c.tangent(u)[0]).normalize()
+        k = c.curvature(u)
+        if k > 1e-13:
+            k *= 1.0 if t.cross(App.Vector(c.normal(u))).dot(up) > 0 else -1.0
+        out.append((c.value(u), t, k))
+    return out

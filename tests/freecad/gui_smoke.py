@@ -12,8 +12,9 @@ tests/freecad/freecad.mk: the Elastica workbench used as a user would.
 
 Screenshots (whole window, 3D view included) stay in $ELASTICA_TEST_OUT
 (build/freecad/): gui_demo.png, gui_blend_panel.png (a G2 blend by length, its
-guide ducks), gui_fit_panel.png, gui_fit_ends.png (its warning line), gui_fit_sparse.png (a sketch of 7
-points fitted by the discrete model: its warning line), gui_spline_g2.png (a G2 start),
+guide ducks), gui_fit_panel.png, gui_fit_ends.png (its warning line), gui_fit_g2.png
+(joined G2 to an arc), gui_fit_sparse.png (a sketch of 7 points fitted by the
+discrete model: its warning line), gui_spline_g2.png (a G2 start),
 gui_spline_panel.png, gui_ellblend_panel.png (its warning line), gui_g2quad_panel.png,
 gui_comb_panel.png. The outcome goes
 to gui_smoke.result (first line PASS or FAIL); FreeCAD is then ended with os._exit
@@ -435,7 +436,7 @@ def spline_panel(doc, S):
 def fit_panel(doc, S):
     import Part
     from freecad.elastica import taskpanels as T
-    xy, _ = S.keyline_xy(30)
+    xy, curve = S.keyline_xy(30)
     ksk = S.bspline_sketch(doc, xy)
     # a line beside the data's start, for the start tangent (issue 13 point 3)
     lines = doc.addObject("Sketcher::SketchObject", "TangentLine")
@@ -445,6 +446,14 @@ def fit_panel(doc, S):
     p = App.Vector(*xy[0], 0) + App.Vector(math.cos(a), math.sin(a), 0) * 8.0
     lines.addGeometry(Part.LineSegment(p, p + App.Vector(math.cos(a), math.sin(a), 0) * 40.0),
                       False)
+    # and an arc ending at the data's start, tangent to it there and curving 1.5 times as
+    # much (the data's own start curvature is 0.0123/mm, turning left): for a G2 join
+    th, k0 = float(curve.angle([0.0])[0]), 1.5 * float(curve.curvature([0.0])[0])
+    p0 = App.Vector(*xy[0], 0)
+    centre = p0 + App.Vector(-math.sin(th), math.cos(th), 0) / k0
+    a0 = math.atan2(p0.y - centre.y, p0.x - centre.x)
+    lines.addGeometry(Part.ArcOfCircle(Part.Circle(centre, App.Vector(0, 0, 1), 1 / k0),
+                                       a0 - 0.5, a0), False)
     doc.recompute()
     panel = open_panel(doc, "Elastica_Fit", [(ksk, "Edge1")], "Fit elastica")
     f = panel.obj
@@ -510,14 +519,16 @@ def fit_panel(doc, S):
     out = [o for o in doc.Objects if o.Name.startswith("ElasticaSketch")]
     check(len(out) == 1 and len(out[0].Geometry) == 1,
           "fit: the keyline copied into a new sketch as ONE B-spline")
-    fit_panel_ends(doc, f, lines)
+    fit_panel_ends(doc, f, lines, k0)
     return ksk
 
 
-def fit_panel_ends(doc, f, lines):
+def fit_panel_ends(doc, f, lines, k0):
     """Editing a fit's ends in its panel (double-click): pin end, a start tangent
-    picked from an edge, a start curvature the model cannot meet (its message names
-    the field, the shape stays), and Cancel reverting all of it."""
+    picked from an edge, a G2 join to the arc of curvature k0 (lines' Edge2), a start
+    curvature the model cannot meet (its message names the field, the shape stays), and
+    Cancel reverting all of it."""
+    import elastica_samples as S
     before = (f.Model, f.SplitAtInflection, f.PinEnd, f.StartTangent, round(f.Rms, 12),
               round(f.Shape.Length, 9))
     panel = double_click(f)
@@ -553,6 +564,45 @@ def fit_panel_ends(doc, f, lines):
         box.add(p)
     show_box(box)
     screenshot("gui_fit_ends.png")
+    # G2 to the arc: picking it frees the line (the join back to G1), the join then takes
+    # the arc's curvature and the typed start curvature gives way
+    check(panel.joins[0].isEnabled() and not panel.joins[1].isEnabled(),
+          "fit: the start join applies (its edge picked), the end join not (no end edge)")
+    panel.joins[0].setCurrentIndex(1)
+    wait()
+    check(f.StartContinuity == "G2" and not panel.start_curvature[0].isEnabled(),
+          f"fit: start join G2, start curvature field disabled ({f.Status})")
+    panel.tangent_buttons[0].click()                              # free the line
+    wait()
+    check(not f.StartTangent and f.StartContinuity == "G1" and panel.joins[0].currentIndex() == 0
+          and not panel.joins[0].isEnabled() and "error" not in f.Status,
+          f"fit: freeing the start tangent sets its join back to G1 ({f.Status})")
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(doc.Name, lines.Name, "Edge2")
+    panel.tangent_buttons[0].click()
+    panel.joins[0].setCurrentIndex(1)
+    wait()
+    kappa = [k for _, _, k in S.travel_ends(f)]
+    check(f.StartContinuity == "G2" and abs(kappa[0] - k0) < 1e-9 and "error" not in f.Status,
+          f"fit: G2 to the picked arc: start curvature {kappa[0]:.6g}/mm, the arc's {k0:.6g}/mm "
+          f"({f.Status})")
+    box = App.BoundBox(lines.Shape.Edges[1].BoundBox)          # the arc and the join
+    for q in f.DataPoints[:len(f.DataPoints) // 6]:
+        box.add(q)
+    show_box(box)
+    from PySide import QtGui
+    scroll = panel.joins[0]
+    while scroll is not None and not isinstance(scroll, QtGui.QScrollArea):
+        scroll = scroll.parentWidget()
+    if scroll is not None:                  # the Ends box in sight (scrolled down only)
+        from PySide import QtCore
+        y = panel.joins[0].mapTo(scroll.widget(), QtCore.QPoint(0, 0)).y()
+        scroll.verticalScrollBar().setValue(y - 150)
+    screenshot("gui_fit_g2.png")
+    if scroll is not None:
+        scroll.verticalScrollBar().setValue(0)
+    panel.joins[0].setCurrentIndex(0)
+    wait()
     # a start curvature of 1000/mm (radius 1 um): the smooth model meets it with a
     # separatrix curl (a poor fit, but a fit); the discrete one of 2 mm segments cannot
     panel.model.setCurrentIndex(0)

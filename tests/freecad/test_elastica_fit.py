@@ -13,7 +13,7 @@ import FreeCAD as App
 import Part
 
 import elastica_samples as S
-from elastica_samples import el
+from elastica_samples import el, travel_ends
 from freecad.elastica import commands as C
 from freecad.elastica import comb as Co
 from freecad.elastica import fit as Fi
@@ -352,23 +352,6 @@ class FitResultTest(unittest.TestCase):
         self.assertIs(features.make_fit, Fi.make)          # recorded macros of version 1
 
 
-def travel_ends(f):
-    """[(point, unit tangent, signed curvature)] at the start and the end of a fit's
-    one B-spline, in the direction of travel (first point -> last), from Part's curve
-    API: curvature() and normal() (towards the centre), signed + when the curve
-    turns left seen from the fit plane's normal."""
-    c = f.Shape.Edges[0].Curve
-    up = f.Plane.Rotation.multVec(App.Vector(0, 0, 1))
-    out = []
-    for u in (c.FirstParameter, c.LastParameter):
-        t = App.Vector(c.tangent(u)[0]).normalize()
-        k = c.curvature(u)
-        if k > 1e-13:
-            k *= 1.0 if t.cross(App.Vector(c.normal(u))).dot(up) > 0 else -1.0
-        out.append((c.value(u), t, k))
-    return out
-
-
 def plane_angle(f, v):
     """The angle of a 3D direction in the fit's plane (as the library counts it)."""
     import math
@@ -527,6 +510,79 @@ class FitConstraintTest(unittest.TestCase):
         for t, e in ((t0, "Edge1"), (t1, "Edge2")):
             line = self.lines.Shape.getElement(e)
             self.assertLess(t.cross(App.Vector(line.tangentAt(0)).normalize()).Length, 1e-9)
+
+    def _arc_at(self, i, radius, left, beyond):
+        """A sketch arc of the given radius through data point i (0 or -1) tangent to the
+        true curve there, turning left or right along the direction of travel, lying
+        before the start / past the end (beyond) or over the data (not beyond: the arc's
+        other end at the point); its signed curvature along the travel: +-1/radius."""
+        import numpy as np
+        _, c = S.keyline_xy(40)
+        th = float(c.angle(np.array([0.0 if i == 0 else c.length]))[0])
+        p = App.Vector(*self.xy[i], 0)
+        side = 1.0 if left else -1.0
+        centre = p + App.Vector(-math.sin(th), math.cos(th), 0) * (side * radius)
+        a = math.atan2(p.y - centre.y, p.x - centre.x)
+        # counter-clockwise from a the arc runs along the travel when it turns left
+        ahead = (i == -1) == beyond
+        span = (a, a + 0.8) if ahead == left else (a - 0.8, a)
+        sk = self.doc.addObject("Sketcher::SketchObject", "Arc")
+        sk.Placement = S.SKETCH_PLACEMENT
+        sk.addGeometry(Part.ArcOfCircle(Part.Circle(centre, App.Vector(0, 0, 1), radius), *span),
+                       False)
+        self.doc.recompute()
+        return sk
+
+    def test_g2_joins_to_picked_arcs_on_the_shape(self):
+        """Start / End join G2: the smooth B-spline takes the picked arc's tangent and
+        signed curvature at the join (to 1e-9, whichever end of the arc meets the point,
+        turning either way), pinned there or not, at one end or both; G1 to the same arcs
+        leaves the curvature the data's (0.012 and -0.0124 1/mm)."""
+        cases = [((70.0, True, True), (80.0, False, True)),      # the data's own sense
+                 ((300.0, False, False), (200.0, True, False))]  # the other, arcs over the data
+        for (r0, left0, out0), (r1, left1, out1) in cases:
+            arcs = (self._arc_at(0, r0, left0, out0), self._arc_at(-1, r1, left1, out1))
+            want = (1 / r0 if left0 else -1 / r0, 1 / r1 if left1 else -1 / r1)
+            for joins, pins in ((("G2", "G1"), True), (("G1", "G2"), True), (("G2", "G2"), False)):
+                f = self._fit("smooth", PinStart=pins, PinEnd=pins,
+                              StartTangent=(arcs[0], ["Edge1"]), EndTangent=(arcs[1], ["Edge1"]),
+                              StartContinuity=joins[0], EndContinuity=joins[1])
+                ends = travel_ends(f)
+                for i in (0, 1):
+                    arc = arcs[i].Shape.Edges[0]
+                    point = f.DataPoints[(0, -1)[i]]        # the arc's end there
+                    u = min((arc.FirstParameter, arc.LastParameter),
+                            key=lambda v: (arc.valueAt(v) - point).Length)
+                    what = (r0, r1, joins, pins, i)
+                    self.assertLess(ends[i][1].cross(App.Vector(arc.tangentAt(u)).normalize()).Length,
+                                    1e-9, what)
+                    if pins:
+                        self.assertLess((ends[i][0] - point).Length, 1e-9, what)
+                    if joins[i] == "G2":
+                        self.assertAlmostEqual(ends[i][2], want[i], delta=1e-9, msg=what)
+                    else:
+                        self.assertGreater(abs(ends[i][2] - want[i]), 1e-3, what)
+
+    def test_g2_join_messages(self):
+        """A G2 join that cannot be: without its edge, beside a typed curvature at that end,
+        with the discrete model, on a split keyline: the message names the join and the way
+        out, and nothing is fitted."""
+        arc = self._arc_at(0, 70.0, True, True)
+        for props, said in (
+                (dict(StartContinuity="G2"), "Start join G2 follows the start tangent's edge"),
+                (dict(StartContinuity="G2", StartTangent=(arc, ["Edge1"]), UseStartCurvature=True),
+                 "clear Start curvature"),
+                (dict(EndContinuity="G2", EndTangent=(self.lines, ["Edge2"]), Model="discrete"),
+                 "choose Model Smooth elastica for a G2 join"),
+                (dict(StartContinuity="G2", SplitAtInflection=True), "Start join G2")):
+            f = Fi.make(self.doc, [(self.sk, [])], **dict(dict(Model="smooth"), **props))
+            self.doc.recompute()
+            self.assertTrue(f.Status.startswith("error") and said in f.Status, (props, f.Status))
+            self.assertTrue(f.Shape.isNull(), props)
+        # a join whose curvature is met at a cost names the join in its warning
+        f = self._fit("smooth", PinStart=True, StartTangent=(self._arc_at(0, 20.0, True, True),
+                                                             ["Edge1"]), StartContinuity="G2")
+        self.assertTrue(any("Start join G2" in w for w in f.Warnings), list(f.Warnings))
 
     def test_a_constraint_that_cannot_be_met_leaves_the_feature_unchanged(self):
         f = self._fit("discrete")

@@ -138,6 +138,7 @@ def fit_sources(sources, csv_file="", open_panel=True, **options):
     """Check the fit input, create the Fit feature (recorded), open its task panel.
     ``options`` override the preferences: Model, Distance, SplitAtInflection, PinStart,
     PinEnd, UseStartCurvature, StartCurvature, UseEndCurvature, EndCurvature,
+    StartContinuity, EndContinuity,
     ResampleStep, Tolerance, Degree. Returns the new feature or None (message
     printed, document unchanged)."""
     from . import fit, sources as src_mod

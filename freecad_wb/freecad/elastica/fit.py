@@ -14,7 +14,7 @@ import FreeCAD as App
 
 from . import defaults
 from .geometry import (chain_bspline, cubic_through, el, link_edge, np, part_bspline,
-                       plane_coordinates, to_3d)
+                       plane_coordinates, plane_curvature, to_3d)
 from .proxy import (FeatureProxy, InputProblem, add_enum, add_property, check_degree,
                     check_number, check_tolerance, new_feature, read_only)
 from .sources import gather_points
@@ -28,6 +28,10 @@ DISTANCE_NAMES = {"orthogonal": "Point to curve", "paired": "Paired (equilateral
 CONSTRAINT_FIELDS = {"start_point": "Pin start", "end_point": "Pin end",
                      "start_tangent": "Start tangent", "end_tangent": "End tangent",
                      "start_curvature": "Start curvature", "end_curvature": "End curvature"}
+# an end joined G2 to its tangent edge: the curvature is the edge's, so messages name the join
+JOIN_FIELDS = {"start_curvature": "Start join G2 (the start edge's curvature)",
+               "end_curvature": "End join G2 (the end edge's curvature)"}
+CONTINUITIES = ["G1", "G2"]
 
 
 def _status_text(r):
@@ -39,58 +43,81 @@ def _status_text(r):
 
 
 def tangent_angle(edge, at, forward, plane):
-    """The angle in ``plane`` of ``edge``'s tangent at its end nearest to ``at``
-    (projected into the plane), signed so it points along ``forward`` (a plane vector)."""
+    """(angle, at_end): the angle in ``plane`` of ``edge``'s tangent at its end nearest
+    to ``at`` (projected into the plane), signed so it points along ``forward`` (a plane
+    vector), and whether that end is the edge's last."""
     n = np()
     a, b = edge.FirstParameter, edge.LastParameter
-    u = a if (edge.valueAt(a) - at).Length <= (edge.valueAt(b) - at).Length else b
-    t = plane.Rotation.inverted().multVec(App.Vector(edge.tangentAt(u)))
+    at_end = (edge.valueAt(a) - at).Length > (edge.valueAt(b) - at).Length
+    t = plane.Rotation.inverted().multVec(App.Vector(edge.tangentAt(b if at_end else a)))
     if math.hypot(t.x, t.y) < 1e-9 * max(t.Length, 1e-300):
         raise InputProblem("the tangent edge is perpendicular to the fit plane")
     if t.x * forward[0] + t.y * forward[1] < 0:
         t = -t
-    return float(n.arctan2(t.y, t.x))
+    return float(n.arctan2(t.y, t.x)), at_end
 
 
 def end_constraints(xy, plane, pin_start=False, pin_end=False, start_edge=None, end_edge=None,
-                    start_curvature=None, end_curvature=None):
+                    start_curvature=None, end_curvature=None, start_g2=False, end_g2=False):
     """el.fit's constraints for plane points xy (in their order): pinned ends at the
     first / last point, tangents of Part edges at their ends nearest those points
     (the direction of travel), curvatures (1/mm, + turning left seen from the plane's
-    normal, 0 = a free end or an inflection)."""
+    normal, 0 = a free end or an inflection); ``start_g2`` / ``end_g2``: that end joins
+    its tangent edge G2, the curvature being the edge's there (in the plane, signed by
+    the direction of travel)."""
     c = {}
     if pin_start:
         c["start_point"] = (float(xy[0][0]), float(xy[0][1]))
     if pin_end:
         c["end_point"] = (float(xy[-1][0]), float(xy[-1][1]))
-    # the direction of travel near each end: over an eighth of the points (noise-proof)
-    m = max(1, len(xy) // 8)
-    for name, edge, i, forward in (("start_tangent", start_edge, 0, xy[m] - xy[0]),
-                                   ("end_tangent", end_edge, -1, xy[-1] - xy[-1 - m])):
-        if edge is not None:
-            at = plane.multVec(App.Vector(float(xy[i][0]), float(xy[i][1]), 0.0))
-            c[name] = tangent_angle(edge, at, forward, plane)
     for name, value in (("start_curvature", start_curvature), ("end_curvature", end_curvature)):
         if value is not None:
             c[name] = check_number(CONSTRAINT_FIELDS[name], value, unit="1/mm")
+    # the direction of travel near each end: over an eighth of the points (noise-proof)
+    m = max(1, len(xy) // 8)
+    for where, edge, g2, i, forward in (("start", start_edge, start_g2, 0, xy[m] - xy[0]),
+                                        ("end", end_edge, end_g2, -1, xy[-1] - xy[-1 - m])):
+        if g2 and edge is None:
+            raise InputProblem(f"{where.capitalize()} join G2 follows the {where} tangent's "
+                               f"edge: pick one ({where.capitalize()} tangent), or set G1")
+        if g2 and f"{where}_curvature" in c:
+            raise InputProblem(f"{where.capitalize()} curvature and {where} join G2 both set "
+                               f"the curvature there: clear {where.capitalize()} curvature "
+                               "(G2 takes the edge's)")
+        if edge is not None:
+            at = plane.multVec(App.Vector(float(xy[i][0]), float(xy[i][1]), 0.0))
+            angle, at_end = tangent_angle(edge, at, forward, plane)
+            c[f"{where}_tangent"] = angle
+            if g2:
+                c[f"{where}_curvature"] = plane_curvature(
+                    edge, at_end, (math.cos(angle), math.sin(angle)), plane, f"the {where} edge")
     return c
 
 
-def _constraint_problem(exc):
+def constraint_fields(start_g2=False, end_g2=False):
+    """The field each library constraint comes from (a G2 join's curvature: the join)."""
+    fields = dict(CONSTRAINT_FIELDS)
+    for name, g2 in (("start_curvature", start_g2), ("end_curvature", end_g2)):
+        if g2:
+            fields[name] = JOIN_FIELDS[name]
+    return fields
+
+
+def _constraint_problem(exc, fields=CONSTRAINT_FIELDS):
     """InputProblem naming the field of a constraint the library could not meet."""
-    field = CONSTRAINT_FIELDS.get(exc.constraint, exc.constraint or "a constraint")
+    field = fields.get(exc.constraint, exc.constraint or "a constraint")
     why = str(exc).replace("fit: ", "", 1)
     return InputProblem(f"{field} cannot be met: {why}; free it or change it")
 
 
-def _one_piece(xy, model, distance, fixed, constraints):
+def _one_piece(xy, model, distance, fixed, constraints, fields):
     """The fit of points xy in one piece: (curves, results, data, feet, signed distances,
-    rms, max error) as the library reports them."""
+    rms, max error) as the library reports them; fields: constraint_fields."""
     try:
         r = el().fit(xy, model=model, fixed=fixed or None, constraints=constraints or None,
                      distance=distance if model == "smooth" else None)
     except el().ConstraintError as exc:
-        raise _constraint_problem(exc) from None
+        raise _constraint_problem(exc, fields) from None
     return [r.curve], [r], xy, r.foot_points(), r.distances, r.rms, r.max_error
 
 
@@ -102,8 +129,9 @@ def _one_piece(xy, model, distance, fixed, constraints):
 COST_RATIO, COST_FLOOR = 2.0, 1e-4
 
 
-def _constraint_cost(xy, model, distance, fixed, constraints, rms):
-    """(rms of the same fit with free ends, or -1 when it fails; the warnings)."""
+def _constraint_cost(xy, model, distance, fixed, constraints, rms, fields):
+    """(rms of the same fit with free ends, or -1 when it fails; the warnings);
+    fields: constraint_fields."""
     try:
         free = el().fit(xy, model=model, fixed=fixed or None,
                         distance=distance if model == "smooth" else None).rms
@@ -112,7 +140,7 @@ def _constraint_cost(xy, model, distance, fixed, constraints, rms):
     extent = float(np().ptp(xy, axis=0).max())
     if not (rms > COST_RATIO * free and rms - free > COST_FLOOR * extent):
         return float(free), []
-    named = [CONSTRAINT_FIELDS[c] for c in CONSTRAINT_FIELDS if c in constraints]
+    named = [fields[c] for c in CONSTRAINT_FIELDS if c in constraints]
     return float(free), [f"the end conditions ({', '.join(named)}) raise the rms from "
                          f"{free:.3g} mm (free ends) to {rms:.3g} mm: check that they match "
                          "the data"]
@@ -244,13 +272,14 @@ def _coarse_polygon(xy, constraints, rms):
 
 def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", split=False,
              distance="orthogonal", pin_start=False, pin_end=False, start_edge=None,
-             end_edge=None, start_curvature=None, end_curvature=None, step=0.0, tol=1e-3,
-             degree=3):
+             end_edge=None, start_curvature=None, end_curvature=None, start_g2=False,
+             end_g2=False, step=0.0, tol=1e-3, degree=3):
     """Fit elastica(e) to 3D points. ``distance``: what the smooth one-piece fit
     minimises ("orthogonal": point to curve; "paired": point i at arc length
     i L/(n-1), for equilateral data). ``start_edge`` / ``end_edge``: Part edges whose
     tangents the curve's ends follow; ``start_curvature`` / ``end_curvature``: 1/mm
-    or None (free). Returns a dict: 'curves' (plane coordinates; a keyline's two
+    or None (free); ``start_g2`` / ``end_g2``: that end joins its edge G2 (its
+    curvature too; the smooth model). Returns a dict: 'curves' (plane coordinates; a keyline's two
     halves, each from the joint), 'results', 'bspline', 'placement', 'data' (the
     fitted points, plane coordinates), 'feet' (their nearest points on the curve),
     'distances' (signed, + = left), 'measure', 'rms', 'max_error' (the library's
@@ -274,11 +303,19 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
     if model == "smooth":
         degree = check_degree(degree)
     ends = dict(pin_start=pin_start, pin_end=pin_end, start_edge=start_edge, end_edge=end_edge,
-                start_curvature=start_curvature, end_curvature=end_curvature)
+                start_curvature=start_curvature, end_curvature=end_curvature,
+                start_g2=bool(start_g2), end_g2=bool(end_g2))
+    fields = constraint_fields(start_g2, end_g2)
+    joins = [f"{w} join G2" for w, g2 in (("Start", start_g2), ("End", end_g2)) if g2]
+    if joins and model == "discrete" and not split:
+        raise InputProblem(f"{', '.join(joins)}: the discrete fit's B-spline is the C2 cubic "
+                           "through its vertices, which holds a tangent or a curvature at an end, "
+                           "not both: choose Model Smooth elastica for a G2 join, or set G1")
     if split:
         chosen = [CONSTRAINT_FIELDS[k] for k, v in zip(
             ("start_point", "end_point", "start_tangent", "end_tangent", "start_curvature",
-             "end_curvature"), ends.values()) if v is not None and v is not False]
+             "end_curvature"), list(ends.values())[:6]) if v is not None and v is not False]
+        chosen += joins
         if chosen:
             raise InputProblem(f"{', '.join(chosen)}: a split keyline is one G2 curve fitted "
                                "with free ends (the library's keyline fit takes no end "
@@ -303,10 +340,11 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
                 if model == "discrete":
                     fixed["h"] = step            # the polygon's segment (seed 000 §5.4)
             constraints = end_constraints(xy, plane, **ends)
-            fitted = _one_piece(xy, model, distance, fixed, constraints)
+            fitted = _one_piece(xy, model, distance, fixed, constraints, fields)
         curves, results, data, feet, dist, rms, max_error = fitted
         if constraints:
-            free_rms, warnings = _constraint_cost(xy, model, distance, fixed, constraints, rms)
+            free_rms, warnings = _constraint_cost(xy, model, distance, fixed, constraints, rms,
+                                                  fields)
         if model == "discrete" and not split and not step:
             warnings = warnings + _coarse_polygon(xy, constraints, rms)
         bspline = _shape_bspline(model, curves, split, constraints, tol, degree)
@@ -372,6 +410,11 @@ class FitProxy(FeatureProxy):
                      "An edge whose tangent (at its end nearest the data's end, projected into "
                      "the fit plane) the curve follows there (one-piece fits; empty: free)")
         for where in ("Start", "End"):
+            add_enum(obj, f"{where}Continuity", "Fit",
+                     f"How the curve joins its {where}Tangent edge: G1 follows its tangent; G2 "
+                     "its curvature too (at that end of the edge, in the fit plane; the smooth "
+                     f"model). With Pin{where} on a point at the edge's end the join is G2",
+                     CONTINUITIES, "G1")
             add_property(obj, "App::PropertyBool", f"Use{where}Curvature", "Fit",
                          f"Hold the curve's curvature at its {where.lower()} at "
                          f"{where}Curvature (one-piece fits)", False)
@@ -492,14 +535,15 @@ def core_options(props):
                 pin_end=get("PinEnd", False),
                 start_curvature=get("StartCurvature", 0.0) if get("UseStartCurvature") else None,
                 end_curvature=get("EndCurvature", 0.0) if get("UseEndCurvature") else None,
-                step=get("ResampleStep", 0.0), tol=get("Tolerance", 1e-3),
-                degree=get("Degree", 3))
+                start_g2=get("StartContinuity", "G1") == "G2",
+                end_g2=get("EndContinuity", "G1") == "G2", step=get("ResampleStep", 0.0),
+                tol=get("Tolerance", 1e-3), degree=get("Degree", 3))
 
 
 def make(doc, sources=(), csv_file="", **props):
     """A new Fit feature in ``doc``; ``sources`` [(obj, [subnames])]; props set Model,
     Distance, SplitAtInflection, PinStart, PinEnd, UseStartCurvature, StartCurvature,
-    ResampleStep, Tolerance, Degree, ..."""
+    StartContinuity ("G1" / "G2"), ResampleStep, Tolerance, Degree, ..."""
     if "PinEnds" in props:                       # the version-1 name (recorded macros)
         props["PinStart"] = props.pop("PinEnds")
     return new_feature(doc, "ElasticaFit", FitProxy,
@@ -508,4 +552,5 @@ def make(doc, sources=(), csv_file="", **props):
 
 
 __all__ = ["FitProxy", "fit_core", "core_options", "make", "stored_curves",
-           "MODELS", "MODEL_NAMES", "DISTANCES", "DISTANCE_NAMES", "CONSTRAINT_FIELDS"]
+           "MODELS", "MODEL_NAMES", "DISTANCES", "DISTANCE_NAMES", "CONSTRAINT_FIELDS",
+           "CONTINUITIES"]

@@ -244,11 +244,13 @@ class Panel:
             self.enablers.append((box, when))
         return box
 
-    def edge_button(self, grid, label, prop, tip, empty="free", when=None, picked=None):
+    def edge_button(self, grid, label, prop, tip, empty="free", when=None, picked=None,
+                    freed=None):
         """A button bound to the edge link prop: a click with an edge selected links it,
-        a click on a linked one frees it; ``picked()`` runs after a pick."""
+        a click on a linked one frees it; ``picked()`` runs after a pick, ``freed()``
+        after a free."""
         btn = QtGui.QPushButton()
-        btn.clicked.connect(lambda _=False: self.pick_edge(prop, picked))
+        btn.clicked.connect(lambda _=False: self.pick_edge(prop, picked, freed))
         self.row(grid, label, btn, tip)
         if when:
             self.enablers.append((btn, when))
@@ -256,9 +258,11 @@ class Panel:
         self.show_edges()
         return btn
 
-    def pick_edge(self, prop, picked=None):
+    def pick_edge(self, prop, picked=None, freed=None):
         if getattr(self.obj, prop):
             self.set(prop, None)
+            if freed:
+                freed()
         else:
             sel = [(s.Object, n) for s in Gui.Selection.getSelectionEx()
                    for n in s.SubElementNames if n.startswith("Edge")]

@@ -65,23 +65,37 @@ class FitPanel(Panel):
         self.pin_end = self.check(e, "Pin the end", "PinEnd",
                                   "The curve ends exactly at the last point (one-piece fits)",
                                   when=lambda: self.one_piece() or o.PinEnd, at=(row, 1))
-        self.tangent_buttons = [
-            self.edge_button(e, f"{text} tangent", prop,
-                             f"{text} tangent: select an edge and click to follow its tangent "
-                             "(at its end nearest the data's "
-                             f"{text.lower()}, projected into the fit plane); click again to "
-                             "free it (one-piece fits)",
-                             when=lambda prop=prop: self.one_piece() or bool(getattr(o, prop)))
-            for prop, text in (("StartTangent", "Start"), ("EndTangent", "End"))]
+        self.tangent_buttons, self.joins = [], []
+        for prop, text in (("StartTangent", "Start"), ("EndTangent", "End")):
+            self.tangent_buttons.append(self.edge_button(
+                e, f"{text} tangent", prop,
+                f"{text} tangent: select an edge and click to follow its tangent (at its end "
+                f"nearest the data's {text.lower()}, projected into the fit plane); click again "
+                "to free it (one-piece fits)",
+                when=lambda prop=prop: self.one_piece() or bool(getattr(o, prop)),
+                freed=lambda i=len(self.joins): self.joins[i].setCurrentIndex(0)))
+            join = self.choice(e, f"{text} join", f"{text}Continuity", F.CONTINUITIES,
+                               ["G1 (tangent)", "G2 (curvature)"],
+                               f"How the curve joins the {text.lower()} tangent's edge: G1 "
+                               "follows its tangent, G2 its curvature too (the smooth model; "
+                               f"with Pin the {text.lower()} on a point at the edge's end the "
+                               "join is G2)",
+                               when=lambda prop=prop, text=text:
+                               getattr(o, f"{text}Continuity") == "G2" or
+                               (self.one_piece() and o.Model == "smooth" and
+                                bool(getattr(o, prop))))
+            # G2 takes the edge's curvature: a typed one at that end is cleared
+            join.currentIndexChanged.connect(lambda _, text=text: self.joined(text))
+            self.joins.append(join)
         self.start_curvature, self.end_curvature = (
             # "curvature" in full does not fit the 260 px Combo View beside its value
             self.checked_number(e, f"{text} \u03ba", f"Use{text}Curvature", f"{text}Curvature",
                                 -1e6, 1e6, 1e-3, "1/mm",
                                 f"{text} curvature \u03ba (1/mm), held when checked: 0 = a "
                                 "free end or an inflection; + turns left seen from the fit "
-                                "plane's normal (one-piece fits)",
-                                when=lambda text=text: self.one_piece()
-                                or getattr(o, f"Use{text}Curvature"))
+                                "plane's normal (one-piece fits; a G2 join takes its edge's)",
+                                when=lambda text=text: getattr(o, f"Use{text}Curvature")
+                                or (self.one_piece() and getattr(o, f"{text}Continuity") != "G2"))
             for text in ("Start", "End"))
         self.bspline_box("the smooth elastica", "Degree of the smooth fit's B-spline (3 to 7); a "
                          "discrete fit's vertices are joined by the C2 cubic through them",
@@ -92,6 +106,13 @@ class FitPanel(Panel):
 
     def one_piece(self):
         return not self.obj.SplitAtInflection
+
+    def joined(self, where):
+        """A G2 join at ``where`` (Start / End) takes the edge's curvature: a typed one
+        there is unchecked."""
+        o = self.obj
+        if getattr(o, f"{where}Continuity") == "G2" and getattr(o, f"Use{where}Curvature"):
+            (self.start_curvature if where == "Start" else self.end_curvature)[0].setChecked(False)
 
     def view_objects(self):
         """The data and the tangent edges stay in view with the fit."""
