@@ -463,7 +463,7 @@ class BlendG2Test(unittest.TestCase):
         b.Length = 61.95      # above the 61.85 mm between the ends, below any G2 batten
         self.doc.recompute()
         self.assertTrue(b.Status.startswith("error"), b.Status)
-        self.assertIn(f"the free G2 batten is {free:.4g} mm long", b.Status)
+        self.assertIn(f"the free G2 batten (tension 0) is {free:.4g} mm long", b.Status)
 
     def test_g2_blend_between_lines_ends_straight(self):
         sk = S.two_lines_sketch(self.doc)
@@ -494,12 +494,28 @@ class BlendG2Test(unittest.TestCase):
         sk.addGeometry(second_arc(1.0), False)
         self.doc.recompute()
         self.assertTrue(b.Status.startswith("error"), b.Status)
-        self.assertIn("no G2 blend found", b.Status)
+        self.assertIn("no G2 blend at tension 0 1/mm", b.Status)
         self.assertIn("or G1", b.Status)
+        self.assertNotIn("(best result", b.Status)      # not the library's inner words
         self.assertAlmostEqual(b.Shape.Length, good, delta=1e-12)
         b.Continuity = "G1"                 # G1 still joins them
         self.doc.recompute()
         self.assertFalse(b.Status.startswith("error"), b.Status)
+
+    def test_g2_pulled_too_hard_says_the_free_batten_exists(self):
+        """At tension 1/mm^2 (sigma d^2 = 3800 between ends 62 mm apart) no G2 batten is
+        found; the message says so in the panel's terms and that the free one exists."""
+        sk = two_arcs_sketch(self.doc, 30.0, 40.0)
+        b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Continuity="G2", Tension=1.0)
+        self.doc.recompute()
+        self.assertTrue(b.Status.startswith("error: no G2 blend at tension 1 1/mm"), b.Status)
+        self.assertIn("did not converge", b.Status)
+        self.assertNotIn("(best result", b.Status)
+        self.assertIn("the free G2 batten (tension 0) exists: try a lower tension, or G1",
+                      b.Status)
+        b.Tension = 0.05
+        self.doc.recompute()
+        self.check_g2(b, sk)
 
 
 class CombTest(unittest.TestCase):

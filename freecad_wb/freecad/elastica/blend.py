@@ -162,16 +162,24 @@ def g2_blend(r, i, mode, value, tol, degree):
             if sibling is not None:
                 note = f" (solution {i + 1} did not bend to G2: from the library's own start)"
     except (ValueError, ArithmeticError, RuntimeError) as exc:
+        asked = (f"of length {value:g} mm" if "length" in kw else
+                 f"at tension {tension_text(kw['tension'], float(n.linalg.norm(a1 - a0)))}")
+        # the library's own words, without its nested parentheses ("did not converge
+        # (best result seen returned)": nothing is returned here)
+        why = str(exc).split(" (")[0].replace("elastic_spline: ", "")
         hint = "pick another tension or length, or G1"
-        if "length" in kw:
-            try:
-                free = e.elastic_spline(n.vstack([a0, a1]), **ends).length
-                hint = (f"the free G2 batten is {free:.4g} mm long; pulled it gets at most 1-2 % "
-                        "shorter, pushed longer: try a length from there, or G1")
-            except (ValueError, ArithmeticError, RuntimeError):
-                pass
-        raise InputProblem(f"no G2 blend found ({exc}); the edges' curvatures are {k0:.3g} and "
-                           f"{k1:.3g}/mm; {hint}") from None
+        try:
+            free = e.elastic_spline(n.vstack([a0, a1]), **ends).length
+            hint = (f"the free G2 batten (tension 0) is {free:.4g} mm long; pulled it gets at "
+                    "most 1-2 % shorter, pushed longer: try a length from there, or G1"
+                    if "length" in kw else
+                    "the free G2 batten (tension 0) exists: try a lower tension, or G1")
+        except (ValueError, ArithmeticError, RuntimeError):
+            pass
+        solve = f"the batten's solve {why}" if why.startswith("did not") else \
+            f"the batten's solve: {why}"
+        raise InputProblem(f"no G2 blend {asked} ({solve}); the edges' curvatures are "
+                           f"{k0:.3g} and {k1:.3g}/mm; {hint}") from None
     try:
         return sp, sp.to_bspline(tol, degree), note
     except (ValueError, ArithmeticError, RuntimeError) as exc:
