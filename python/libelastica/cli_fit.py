@@ -136,10 +136,8 @@ def fit_file(path: str, args, batch: bool) -> List[Dict[str, Any]]:
             xy = pts
         data = xy
         if args.step is not None:
-            total = float(np.sum(np.linalg.norm(np.diff(xy, axis=0), axis=1)))
-            if not 0 < args.step < total:
-                raise InputError(f"{path}: --step must be in (0, {total:.6g}) (the polyline's "
-                                 f"length), got {args.step}")
+            # the library's rule and message (a positive step the points reach from the
+            # polygon's start), as for --keyline
             data = el.resample_equilateral(xy, args.step)
             if len(data) < 4:
                 raise InputError(f"{path}: --step {args.step} leaves only {len(data)} points")

@@ -119,6 +119,26 @@ def test_overflowing_arguments_exit_2(work, capsys, args):
     assert "internal error" not in err and len(err.strip().splitlines()) == 1
 
 
+@pytest.mark.parametrize("keyline", [[], ["--keyline"]], ids=["one piece", "keyline"])
+def test_step_beyond_the_points_reach_is_the_librarys_rule(tmp_path, capsys, keyline):
+    """A step longer than the points' reach from the polygon's start (7.011; their
+    polyline is 7.118 long) cannot make a polygon: refused with the library's
+    message naming the reach, with or without --keyline (the one-piece fit's own check
+    said "(0, length)"), as is a step beyond the length; a short step fits."""
+    path = tmp_path / "p.csv"
+    path.write_text("0,0\n1,0.2\n2,0.3\n3,0.2\n4,0\n5,-0.3\n6,-0.5\n7,-0.4\n")
+    for step in ("7.05", "7.5"):       # within the polyline's length, beyond it
+        code, _, err = cli(capsys, "fit", str(path), "--step", step, *keyline)
+        assert code == 2 and "longer than the polyline reaches" in err and "7.01142" in err, err
+        assert len(err.strip().splitlines()) == 1
+    for step in ("0", "-1"):
+        code, _, err = cli(capsys, "fit", str(path), "--step", step, *keyline)
+        assert code == 2 and "must be positive" in err, err
+    if not keyline:        # a keyline of 8 points cannot be split; one piece fits
+        code, out, err = cli(capsys, "fit", str(path), "--step", "0.5", "--json", "-")
+        assert code == 0 and json.loads(out)["step"] == 0.5, err
+
+
 def test_step_past_the_vertex_limit_says_what_is_possible(work, capsys):
     code, _, err = cli(capsys, "fit", "a.csv", "--step", "1e-9")
     assert code == 2 and "EL_RESAMPLE_MAX_VERTICES" in err and "r >= " in err
