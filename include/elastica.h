@@ -772,6 +772,9 @@ typedef struct el_hermite_result {
 /* Defaults: tension mode, sigma = 0, tol 1e-10, samples 12, grid 6, max_solutions 64. */
 void el_hermite_options_defaults(el_hermite_options *opt);
 
+/* The tension range el_hermite_solve covers: sigma |p1 - p0|^2 at most this (1e5). */
+enum { EL_HERMITE_SIGMA_D2_MAX = 100000 };
+
 /*
  * All elastic curves from (p0, t0) to (p1, t1) (t0, t1: nonzero tangent
  * directions, normalised inside), length <= one curvature period.
@@ -828,8 +831,9 @@ void el_hermite_options_defaults(el_hermite_options *opt);
  * returned with k = 1e4 (counter-clockwise) or -1e4 (clockwise), accurate to ~1e-8
  * only: it appears when opt->tol allows.
  * Range: coordinates and |p1 - p0| at most 1e100, |p1 - p0| at least 1e-100 (the
- * curvature scales as 1/|p1 - p0|, mu as its square); sigma |p1 - p0|^2 at most 1e5
- * (above, solutions lie closer to the separatrix than the search reaches, |F| - sigma
+ * curvature scales as 1/|p1 - p0|, mu as its square); sigma |p1 - p0|^2 at most
+ * EL_HERMITE_SIGMA_D2_MAX = 1e5 (above, solutions lie closer to the separatrix than the
+ * search reaches, |F| - sigma
  * below 1e-300 sigma); any sigma below (very negative: no curve,
  * count 0). Length mode seeds its search in the same range of tension and follows the
  * curves of solutions on up to sigma |p1 - p0|^2 = 1e6: solutions between 1e5 and 1e6

@@ -435,10 +435,10 @@ static int unit(const double t[2], double u[2])
 
 /* The range the solver covers (header): coordinates and |p1 - p0| up to 1e100 and
  * |p1 - p0| down to 1e-100 (the curvature ~ 1/d, mu = |F|/2 ~ 1/d^2 and the energy stay
- * in double range); sigma |p1 - p0|^2 up to 1e5 (the separatrix search reaches
- * |F| - sigma = 1e-300 sigma, and the solutions lie within exp(-sqrt(2 sigma) L') of it). */
+ * in double range); sigma |p1 - p0|^2 up to EL_HERMITE_SIGMA_D2_MAX (the separatrix search
+ * reaches |F| - sigma = 1e-300 sigma, and the solutions lie within exp(-sqrt(2 sigma) L') of
+ * it). */
 #define SCALE_MAX 1e100
-#define SIGMA_D2_MAX 1e5
 
 int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
                      const double t1[2], const el_hermite_options *opt,
@@ -486,7 +486,7 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
     if (opt->mode == EL_HERMITE_TENSION) {
         pr.sigma = opt->sigma * fr.d * fr.d;
         pr.Lmin = 1.0;
-        if (pr.sigma > SIGMA_D2_MAX) return EL_EDOM;
+        if (pr.sigma > EL_HERMITE_SIGMA_D2_MAX) return EL_EDOM;
         rc = el__hermite_solve_tension(&pr, opt->samples, &roots);
     } else {
         Ln = opt->length / fr.d;

@@ -46,7 +46,7 @@ static void sigma_range(double Lt, double *lo, double *hi)
 
 /* The tension the search reaches (header: the same as tension mode's range; beyond it
  * the solutions lie closer to the separatrix than the separatrix chart reaches). */
-#define SIGMA_MAX 1e5
+#define SIGMA_MAX ((double)EL_HERMITE_SIGMA_D2_MAX)
 /* Traces follow C up to the bound (sigma_range) or SIGMA_TRACE_MAX: a solution just
  * beyond SIGMA_MAX on a curve that leaves the range with L still above Lt (at
  * L / |p1 - p0| = 1.033, sigma |p1 - p0|^2 = 1.07e5; test_hermite_length.c) is found

@@ -497,7 +497,7 @@ int el_hermite_analyse(const double P[2], const double V[2], double sigma,
     if (el__all_finite(v, 5) || fabs(hypot(P[0], P[1]) - 1.0) > 1e-9 ||
         fabs(hypot(V[0], V[1]) - 1.0) > 1e-9)
         return EL_EINVAL;
-    if (sigma > 1e5) return EL_EDOM;           /* the range of el_hermite_solve */
+    if (sigma > EL_HERMITE_SIGMA_D2_MAX) return EL_EDOM;   /* the range of el_hermite_solve */
     el__gsl_quiet();
     hprob pr = {P[0], P[1], V[0], V[1], sigma, 0, 1.0, 0.0};
     el__hermite_set_case(&pr);

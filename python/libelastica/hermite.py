@@ -118,8 +118,8 @@ _TENSION, _LENGTH = lib.EL_HERMITE_TENSION, lib.EL_HERMITE_LENGTH
 _EINVAL, _EDOM, _EMAXITER = lib.EL_EINVAL, lib.EL_EDOM, lib.EL_EMAXITER
 
 #: The tension range of el_hermite_solve (elastica.h): tension times |p1 - p0|^2 at most
-#: this (a double: the header states it, no C constant carries it).
-HERMITE_SIGMA_D2_MAX = 1e5
+#: this.
+HERMITE_SIGMA_D2_MAX = float(lib.EL_HERMITE_SIGMA_D2_MAX)
 
 
 def _out_of_range(x0, y0, x1, y1, mode, sigma, length):
