@@ -1482,16 +1482,21 @@ int el_bspline_interpolate_c2(const double *xy, size_t n, el_bspline *out);
 /* An end condition of el_bspline_interpolate_c2_ends, in the chord-length parameter u:
  * order 1: B'(u) = value (a clamped end: a unit tangent there makes the speed 1);
  * order 2: B''(u) = value (value = 0 is the natural end; kappa N for a curvature
- * kappa with unit normal N when the speed there is ~1). */
+ * kappa with unit normal N when the speed there is ~1);
+ * order 3: B'(u) = value and B''(u) = value2 (a G2 end: a unit tangent T and kappa N,
+ * N the left normal of T, give the curvature kappa exactly). */
 typedef struct el_bspline_end {
     int order;
     double value[2];
+    double value2[2];   /* order 3 only */
 } el_bspline_end;
 
 /*
  * el_bspline_interpolate_c2 with end conditions: start and end each NULL (natural,
- * B'' = 0) or an el_bspline_end. Errors as el_bspline_interpolate_c2, plus EL_EINVAL
- * for an order other than 1 or 2 or a non-finite value.
+ * B'' = 0) or an el_bspline_end. An order-3 end has one more knot, in the middle of
+ * its end span (B(u_i) = xy_i still at the chord-length u_i; n + 2 poles plus one per
+ * order-3 end). Errors as el_bspline_interpolate_c2, plus EL_EINVAL for an order other
+ * than 1, 2 or 3 or a non-finite value.
  */
 int el_bspline_interpolate_c2_ends(const double *xy, size_t n, const el_bspline_end *start,
                                    const el_bspline_end *end, el_bspline *out);

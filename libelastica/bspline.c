@@ -195,33 +195,46 @@ int el_bspline_curvature(const el_bspline *b, size_t n, const double *t, double 
 
 /*
  * C2 cubic with chord-length parameters u_0 = 0, u_i = u_{i-1} + |D_i - D_{i-1}|;
- * flat knots u_0 x4, u_1..u_{n-2}, u_{n-1} x4, n+2 poles, P_0 = D_0,
- * P_{n+1} = D_{n-1}. Unknowns P_1..P_n. With the derivative poles of Piegl &
- * Tiller (3.8), Q_i = 3 (P_{i+1} - P_i) / (U_{i+4} - U_{i+1}), B'(u_0) = Q_0 and
- * B''(u_0) = 2 (Q_1 - Q_0) / (U_4 - U_2), so with a = U_4 - U_1, c = U_5 - U_2:
+ * flat knots u_0 x4, u_1..u_{n-2}, u_{n-1} x4 (and the midpoint of the end span next
+ * to an order-3 end), m poles, P_0 = D_0, P_{m-1} = D_{n-1}. Unknowns P_1..P_{m-2}.
+ * With the derivative poles of Piegl & Tiller (3.8), Q_i = 3 (P_{i+1} - P_i) /
+ * (U_{i+4} - U_{i+1}), B'(u_0) = Q_0 and B''(u_0) = 2 (Q_1 - Q_0) / (U_4 - U_2), so with
+ * a = U_4 - U_1, c = U_5 - U_2, e = U_4 - U_2:
  *   B'(u_0) = V   <=> P_1 = P_0 + a V / 3,
- *   B''(u_0) = V  <=> (a + c) P_1 - a P_2 = c P_0 - a c (U_4 - U_2) V / 6
- * (V = 0: the natural end), mirrored at u_{n-1}; between them
- *   B(u_i) = D_i     (i = 1..n-2; three non-zero basis functions):
- * a tridiagonal system, totally positive in its interpolation rows, solved
- * without pivoting.
+ *   B''(u_0) = A  <=> (a + c) P_1 - a P_2 = c P_0 - a c e A / 6
+ * (A = 0: the natural end), both (order 3) <=> P_1 as above and
+ *   P_2 - P_1 = c (V + e A / 2) / 3,
+ * mirrored at u_{n-1} (the parameter reversed: V changes sign, A does not); between
+ * them B(u_i) = D_i (i = 1..n-2; three non-zero basis functions): a tridiagonal
+ * system, totally positive in its interpolation rows, solved without pivoting.
  */
-/* One end's row: diag, off-diagonal and right-hand side (x, y) in the parameter
- * t = u / len (derivatives in u times len, len^2). a: the knot span next to the
- * end; c: the one after; e: the second-derivative span. */
-static void end_row(const el_bspline_end *end, double a, double c, double e, double len,
-                    const double *P, double *diag, double *off, double *rx, double *ry)
+/* One end's rows (two for order 3: rows[0] next to the end, then rows[1]): diagonal,
+ * the coefficient of the unknown one further in, of the one nearer the end (order 3's
+ * second row), right-hand side (x, y); in the parameter t = u / len (derivatives in u
+ * times len, len^2). a: the knot span next to the end; c: the one after; e: the
+ * second-derivative span. Returns the number of rows. */
+typedef struct { double diag, in, out, rx, ry; } end_row_t;
+static int end_rows(const el_bspline_end *end, double a, double c, double e, double len,
+                    const double *P, end_row_t rows[2])
 {
-    if (end && end->order == 1) {
-        *diag = 1.0; *off = 0.0;
-        *rx = P[0] + a * len * end->value[0] / 3.0;
-        *ry = P[1] + a * len * end->value[1] / 3.0;
-        return;
+    if (end && (end->order == 1 || end->order == 3)) {
+        const double vx = len * end->value[0], vy = len * end->value[1];
+        rows[0] = (end_row_t){1.0, 0.0, 0.0, P[0] + a * vx / 3.0, P[1] + a * vy / 3.0};
+        if (end->order == 1) return 1;
+        const double ax = len * len * end->value2[0], ay = len * len * end->value2[1];
+        rows[1] = (end_row_t){1.0, 0.0, -1.0, c * (vx + 0.5 * e * ax) / 3.0, c * (vy + 0.5 * e * ay) / 3.0};
+        return 2;
     }
     const double w = end ? a * c * e * len * len / 6.0 : 0.0;
-    *diag = a + c; *off = -a;
-    *rx = c * P[0] - (end ? w * end->value[0] : 0.0);
-    *ry = c * P[1] - (end ? w * end->value[1] : 0.0);
+    rows[0] = (end_row_t){a + c, -a, 0.0, c * P[0] - (end ? w * end->value[0] : 0.0),
+                          c * P[1] - (end ? w * end->value[1] : 0.0)};
+    return 1;
+}
+
+static int bad_end(const el_bspline_end *end)
+{
+    return end && ((end->order < 1 || end->order > 3) || el__all_finite(end->value, 2) ||
+                   (end->order == 3 && el__all_finite(end->value2, 2)));
 }
 
 int el_bspline_interpolate_c2(const double *xy, size_t n, el_bspline *out)
@@ -234,68 +247,93 @@ int el_bspline_interpolate_c2_ends(const double *xy, size_t n, const el_bspline_
 {
     if (!xy || !out || n < 2 || el__too_many(n, 2, sizeof(double))) return EL_EINVAL;
     if (el__all_finite(xy, 2 * n)) return EL_EINVAL;
-    if ((start && ((start->order != 1 && start->order != 2) || el__all_finite(start->value, 2))) ||
-        (end && ((end->order != 1 && end->order != 2) || el__all_finite(end->value, 2))))
-        return EL_EINVAL;
+    if (bad_end(start) || bad_end(end)) return EL_EINVAL;
+    /* es, ee: the extra knot of an order-3 end; nu unknowns P_1..P_{m-2}, m = nu + 2 */
+    const size_t es = start && start->order == 3, ee = end && end->order == 3;
+    const size_t nk = n + es + ee, m = n + 2 + es + ee, nu = m - 2;
     el_bspline b;
-    int st = el_bspline_alloc(&b, 3, 2, n + 2, n);
+    int st = el_bspline_alloc(&b, 3, 2, m, nk);
     if (st) return st;
-    double *U = el__alloc(n + 1, 7, sizeof *U);   /* n + 6 flat knots, 6 n for the solve */
+    double *U = el__alloc(nk + 1, 7, sizeof *U);   /* m + 4 flat knots, 6 nu for the solve */
     if (!U) { el_bspline_free(&b); return EL_ENOMEM; }
-    double *diag = U + n + 6, *sup = diag + n, *sub = sup + n, *rx = sub + n, *ry = rx + n,
-           *sol = ry + n;
-    b.knots[0] = 0.0;
+    double *diag = U + m + 4, *sup = diag + nu, *sub = sup + nu, *rx = sub + nu, *ry = rx + nu;
+    double *sol = ry + nu;
+    /* the vertices' chord-length parameters into U first, then the distinct knots with
+     * the extra ones: an end span's midpoint (its thirds when one span has both) */
+    U[0] = 0.0;
     for (size_t i = 1; i < n; i++) {
         const double h = hypot(xy[2 * i] - xy[2 * i - 2], xy[2 * i + 1] - xy[2 * i - 1]);
-        b.knots[i] = b.knots[i - 1] + h;
-        if (!isfinite(b.knots[i])) { st = EL_EDOM; goto done; }   /* length beyond double's range */
-        if (!(b.knots[i] > b.knots[i - 1])) { st = EL_ESINGULAR; goto done; }
+        U[i] = U[i - 1] + h;
+        if (!isfinite(U[i])) { st = EL_EDOM; goto done; }   /* length beyond double's range */
+        if (!(U[i] > U[i - 1])) { st = EL_ESINGULAR; goto done; }
     }
-    for (size_t i = 0; i < n; i++) b.mults[i] = (i == 0 || i + 1 == n) ? 4 : 1;
+    for (size_t i = 0; i < n; i++) b.knots[i + es + (ee && i + 1 == n)] = U[i];
+    const double share = es && ee && n == 2 ? 1.0 / 3.0 : 0.5;
+    if (es) b.knots[1] = U[0] + share * (U[1] - U[0]);
+    if (ee) b.knots[nk - 2] = U[n - 1] - share * (U[n - 1] - U[n - 2]);
+    for (size_t i = 0; i < nk; i++) b.mults[i] = (i == 0 || i + 1 == nk) ? 4 : 1;
     el_bspline_flat_knots(&b, U);
     /* the system in the parameter u / length (the same curve; no underflow of the
      * knot differences' products for tiny coordinates, no overflow for huge ones) */
-    const double len = b.knots[n - 1];
-    for (size_t i = 0; i < n + 6; i++) U[i] /= len;
+    const double len = b.knots[nk - 1];
+    for (size_t i = 0; i < m + 4; i++) U[i] /= len;
     const double P0x = xy[0], P0y = xy[1], Pnx = xy[2 * n - 2], Pny = xy[2 * n - 1];
-    end_row(start, U[4] - U[1], U[5] - U[2], U[4] - U[2], len, xy, &diag[0], &sup[0], &rx[0], &ry[0]);
-    for (size_t i = 1; i + 1 < n; i++) {   /* interpolation rows: P_i, P_{i+1}, P_{i+2} */
-        double N[4];
-        basis_funs(U, 3 + i, 3, U[3 + i], N);   /* N_{i..i+3}; N_{i+3}(u_i) = 0 */
-        sub[i - 1] = N[0]; diag[i] = N[1]; sup[i] = N[2];
-        rx[i] = xy[2 * i]; ry[i] = xy[2 * i + 1];
+    for (size_t i = 0; i < nu; i++) sub[i] = sup[i] = 0.0;
+    end_row_t rows[2];
+    const int ns = end_rows(start, U[4] - U[1], U[5] - U[2], U[4] - U[2], len, xy, rows);
+    for (int r = 0; r < ns; r++) {
+        diag[r] = rows[r].diag;
+        sup[r] = rows[r].in;
+        if (r) sub[r - 1] = rows[r].out;
+        rx[r] = rows[r].rx;
+        ry[r] = rows[r].ry;
     }
-    {   /* end row, unknown index n-1 holds P_n; the end's derivative runs backwards */
+    for (size_t i = 1; i + 1 < n; i++) {   /* interpolation rows: P_{i+es}, P_{i+es+1}, P_{i+es+2} */
+        double N[4];
+        const size_t r = i + es;
+        basis_funs(U, 3 + r, 3, U[3 + r], N);   /* N_{r..r+3}; N_{r+3}(u_i) = 0 */
+        sub[r - 1] = N[0]; diag[r] = N[1]; sup[r] = N[2];
+        rx[r] = xy[2 * i]; ry[r] = xy[2 * i + 1];
+    }
+    {   /* the end's rows, from the last unknown inwards; its derivative runs backwards */
         el_bspline_end back;
         if (end) {
             back = *end;
-            if (back.order == 1) { back.value[0] = -back.value[0]; back.value[1] = -back.value[1]; }
+            if (back.order != 2) { back.value[0] = -back.value[0]; back.value[1] = -back.value[1]; }
         }
-        end_row(end ? &back : NULL, U[n + 4] - U[n + 1], U[n + 3] - U[n], U[n + 3] - U[n + 1], len,
-                xy + 2 * n - 2, &diag[n - 1], &sub[n - 2], &rx[n - 1], &ry[n - 1]);
+        const int ne = end_rows(end ? &back : NULL, U[m + 2] - U[m - 1], U[m + 1] - U[m - 2],
+                                U[m + 1] - U[m - 1], len, xy + 2 * n - 2, rows);
+        for (int r = 0; r < ne; r++) {
+            const size_t j = nu - 1 - (size_t)r;
+            diag[j] = rows[r].diag;
+            sub[j - 1] = rows[r].in;
+            if (r) sup[j] = rows[r].out;
+            rx[j] = rows[r].rx;
+            ry[j] = rows[r].ry;
+        }
     }
     /* Gaussian elimination without pivoting (the Thomas algorithm), both right-hand
      * sides at once. By hand: GSL's gsl_linalg_solve_tridiag is the same
      * elimination, but reports a zero pivot to the process-wide error handler,
      * which a caller may have set to abort. sol holds the eliminated sup. */
-    for (size_t i = 0; i < n; i++) {
-        const double m = i ? diag[i] - sub[i - 1] * sol[i - 1] : diag[0];
-        if (!(fabs(m) > 0.0) || !isfinite(m)) { st = EL_ESINGULAR; goto done; }
-        sol[i] = i + 1 < n ? sup[i] / m : 0.0;
-        rx[i] = (rx[i] - (i ? sub[i - 1] * rx[i - 1] : 0.0)) / m;
-        ry[i] = (ry[i] - (i ? sub[i - 1] * ry[i - 1] : 0.0)) / m;
+    for (size_t i = 0; i < nu; i++) {
+        const double piv = i ? diag[i] - sub[i - 1] * sol[i - 1] : diag[0];
+        if (!(fabs(piv) > 0.0) || !isfinite(piv)) { st = EL_ESINGULAR; goto done; }
+        sol[i] = i + 1 < nu ? sup[i] / piv : 0.0;
+        rx[i] = (rx[i] - (i ? sub[i - 1] * rx[i - 1] : 0.0)) / piv;
+        ry[i] = (ry[i] - (i ? sub[i - 1] * ry[i - 1] : 0.0)) / piv;
     }
-    for (size_t i = n - 1; i-- > 0;) {
+    for (size_t i = nu - 1; i-- > 0;) {
         rx[i] -= sol[i] * rx[i + 1];
         ry[i] -= sol[i] * ry[i + 1];
     }
-    for (size_t j = 0; j < n; j++) {
+    for (size_t j = 0; j < nu; j++) {
         b.poles[2 * (j + 1)] = rx[j];
         b.poles[2 * (j + 1) + 1] = ry[j];
     }
-    if (el__all_finite(b.poles, 2 * (n + 2))) { st = EL_EDOM; goto done; }   /* overflow */
+    if (el__all_finite(b.poles + 2, 2 * nu)) { st = EL_EDOM; goto done; }   /* overflow */
     b.poles[0] = P0x; b.poles[1] = P0y;
-    b.poles[2 * (n + 1)] = Pnx; b.poles[2 * (n + 1) + 1] = Pny;
+    b.poles[2 * (m - 1)] = Pnx; b.poles[2 * (m - 1) + 1] = Pny;
 done:
     free(U);
     if (st) { el_bspline_free(&b); return st; }

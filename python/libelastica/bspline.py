@@ -127,24 +127,34 @@ class BSpline:
 
 
 def _c2_end(spec, name: str):
-    """An el_bspline_end from None (natural), {"d1": (x, y)} or {"d2": (x, y)}."""
+    """An el_bspline_end from None (natural), {"d1": (x, y)}, {"d2": (x, y)} or both."""
     if spec is None:
         return ffi.NULL
-    if not isinstance(spec, dict) or len(spec) != 1 or next(iter(spec)) not in ("d1", "d2"):
-        raise ValueError(f"interpolate_c2: {name} must be None, {{'d1': (x, y)}} or "
-                         f"{{'d2': (x, y)}}, got {spec!r}")
-    key, value = next(iter(spec.items()))
-    v = as_vector(value, f"interpolate_c2: {name} {key}")
-    if v.shape != (2,):
-        raise ValueError(f"interpolate_c2: {name} {key} must be two numbers, got {value!r}")
-    return ffi.new("el_bspline_end *", {"order": 1 if key == "d1" else 2, "value": list(v)})
+    if not isinstance(spec, dict) or not spec or set(spec) - {"d1", "d2"}:
+        raise ValueError(f"interpolate_c2: {name} must be None or a dict of 'd1' and / or "
+                         f"'d2': (x, y), got {spec!r}")
+    values = {}
+    for key in ("d1", "d2"):
+        if key in spec:
+            v = as_vector(spec[key], f"interpolate_c2: {name} {key}")
+            if v.shape != (2,):
+                raise ValueError(f"interpolate_c2: {name} {key} must be two numbers, got "
+                                 f"{spec[key]!r}")
+            values[key] = list(v)
+    if len(values) == 2:
+        return ffi.new("el_bspline_end *", {"order": 3, "value": values["d1"],
+                                            "value2": values["d2"]})
+    key, v = next(iter(values.items()))
+    return ffi.new("el_bspline_end *", {"order": 1 if key == "d1" else 2, "value": v})
 
 
 def interpolate_c2(points, start=None, end=None) -> BSpline:
     """The C2 cubic B-spline through the vertices of a polyline (n >= 2), chord-length
     parametrised (knots at the cumulative chord lengths). Each end is natural (B'' = 0,
     None), or ``{"d1": (x, y)}`` (B' there: a unit tangent clamps the direction at speed
-    1) or ``{"d2": (x, y)}`` (B'' there: kappa times the unit normal for a curvature)."""
+    1) or ``{"d2": (x, y)}`` (B'' there: kappa times the unit normal for a curvature), or
+    both (a G2 end: a unit tangent and kappa times its left normal give the curvature
+    kappa exactly; one more knot, mid-way along that end's span)."""
     xy = as_points(points, "points")
     s, e = _c2_end(start, "start"), _c2_end(end, "end")
     b = ffi.new("el_bspline *")

@@ -201,10 +201,10 @@ START_TEST(interpolate_c2_ends_meet_their_derivatives)
     double xy[2 * NV];
     ck_assert_int_eq(el_discrete_eval(&dp, NV, xy), EL_OK);
     const el_bspline_end kinds[4][2] = {
-        {{1, {0.6, 0.8}}, {1, {-1.0, 0.0}}},          /* clamped tangents */
-        {{2, {0.3, -1.1}}, {2, {0.0, 0.7}}},          /* given second derivatives */
-        {{1, {0.0, 1.0}}, {2, {0.0, 0.0}}},           /* mixed, the end natural */
-        {{2, {0.0, 0.0}}, {2, {0.0, 0.0}}},           /* natural both: the plain cubic */
+        {{1, {0.6, 0.8}, {0, 0}}, {1, {-1.0, 0.0}, {0, 0}}},   /* clamped tangents */
+        {{2, {0.3, -1.1}, {0, 0}}, {2, {0.0, 0.7}, {0, 0}}},   /* given second derivatives */
+        {{1, {0.0, 1.0}, {0, 0}}, {2, {0.0, 0.0}, {0, 0}}},    /* mixed, the end natural */
+        {{2, {0.0, 0.0}, {0, 0}}, {2, {0.0, 0.0}, {0, 0}}},    /* natural both: the plain cubic */
     };
     for (int c = 0; c < 4; c++) {
         el_bspline b, plain;
@@ -245,10 +245,93 @@ START_TEST(interpolate_c2_ends_meet_their_derivatives)
     ck_assert_close(d[0], 0.6, 1e-14);
     el_bspline_free(&b);
     /* bad end conditions */
-    el_bspline_end bad = {3, {0, 0}};
+    el_bspline_end bad = {0, {0, 0}, {0, 0}};
     ck_assert_int_eq(el_bspline_interpolate_c2_ends(xy, NV, &bad, NULL, &b), EL_EINVAL);
     bad.order = 1; bad.value[1] = NAN;
     ck_assert_int_eq(el_bspline_interpolate_c2_ends(xy, NV, NULL, &bad, &b), EL_EINVAL);
+}
+END_TEST
+
+/* G2 ends (order 3): B' and B'' at the end both as asked, so a unit tangent T and
+ * kappa N give the curvature kappa there; the vertices still at their chord-length
+ * parameters, C2 at every interior knot (the extra ones too), one pole more per G2 end;
+ * with either other order at the other end, on polylines of 2 to 12 vertices at
+ * scales 1e-6, 1 and 1e6 (the conditions scaled with them: kappa ~ 1/scale). */
+START_TEST(interpolate_c2_g2_ends_meet_tangent_and_curvature)
+{
+    unsigned long long rng = 77;
+    const int sizes[] = {2, 3, 4, 12};
+    const double scales[] = {1e-6, 1.0, 1e6};
+    for (int si = 0; si < 3; si++)
+        for (int ni = 0; ni < 4; ni++)
+            for (int c = 0; c < 5; c++) {
+                const double S = scales[si];
+                const int n = sizes[ni];
+                double xy[2 * 12], u[12];
+                for (int i = 0; i < n; i++) {     /* a wavy polyline, rightwards */
+                    xy[2 * i] = S * (i + test_uniform(&rng, -0.3, 0.3));
+                    xy[2 * i + 1] = S * test_uniform(&rng, -0.8, 0.8);
+                    u[i] = i ? u[i - 1] + hypot(xy[2 * i] - xy[2 * i - 2], xy[2 * i + 1] - xy[2 * i - 1]) : 0.0;
+                }
+                const double a0 = test_uniform(&rng, -1, 1), a1 = test_uniform(&rng, -1, 1);
+                const double k0 = test_uniform(&rng, -2, 2) / S, k1 = test_uniform(&rng, -2, 2) / S;
+                const el_bspline_end g2s = {3, {cos(a0), sin(a0)}, {-k0 * sin(a0), k0 * cos(a0)}};
+                const el_bspline_end g2e = {3, {cos(a1), sin(a1)}, {-k1 * sin(a1), k1 * cos(a1)}};
+                const el_bspline_end t1 = {1, {cos(a1), sin(a1)}, {0, 0}};
+                const el_bspline_end d2 = {2, {-k0 * sin(a0), k0 * cos(a0)}, {0, 0}};
+                const el_bspline_end *ends[5][2] = {
+                    {&g2s, NULL}, {NULL, &g2e}, {&g2s, &g2e}, {&g2s, &t1}, {&d2, &g2e}};
+                const el_bspline_end *s0 = ends[c][0], *s1 = ends[c][1];
+                el_bspline b;
+                ck_assert_int_eq(el_bspline_interpolate_c2_ends(xy, (size_t)n, s0, s1, &b), EL_OK);
+                const int extra = (s0 && s0->order == 3) + (s1 && s1->order == 3);
+                ck_assert_uint_eq(b.npoles, (size_t)(n + 2 + extra));
+                ck_assert_uint_eq(b.nknots, (size_t)(n + extra));
+                for (int i = 0; i < n; i++) {
+                    double pt[2];
+                    ck_assert_int_eq(el_bspline_eval(&b, 1, &u[i], pt), EL_OK);
+                    ck_assert_close(pt[0], xy[2 * i], 1e-12 * S * n);
+                    ck_assert_close(pt[1], xy[2 * i + 1], 1e-12 * S * n);
+                }
+                const double t[2] = {0.0, u[n - 1]};
+                for (int e = 0; e < 2; e++) {
+                    const el_bspline_end *end = ends[c][e];
+                    if (!end) continue;
+                    double d[2], dd[2], kappa;
+                    ck_assert_int_eq(el_bspline_derivative(&b, 1, 1, &t[e], d), EL_OK);
+                    ck_assert_int_eq(el_bspline_derivative(&b, 2, 1, &t[e], dd), EL_OK);
+                    const double *want1 = end->order == 2 ? NULL : end->value;
+                    const double *want2 = end->order == 3 ? end->value2 : end->order == 2 ? end->value : NULL;
+                    if (want1) {
+                        ck_assert_close(d[0], want1[0], 1e-11);
+                        ck_assert_close(d[1], want1[1], 1e-11);
+                    }
+                    if (want2) {
+                        ck_assert_close(dd[0], want2[0], 1e-9 / S);
+                        ck_assert_close(dd[1], want2[1], 1e-9 / S);
+                    }
+                    if (end->order == 3) {
+                        ck_assert_int_eq(el_bspline_curvature(&b, 1, &t[e], &kappa), EL_OK);
+                        ck_assert_close(kappa, e ? k1 : k0, 1e-9 / S);
+                    }
+                }
+                for (size_t i = 1; i + 1 < b.nknots; i++) {   /* C2 at every interior knot */
+                    const double h = 1e-7 * u[n - 1], tt[2] = {b.knots[i] - h, b.knots[i] + h};
+                    double dd[4];
+                    ck_assert(b.knots[i] > b.knots[i - 1]);
+                    ck_assert_int_eq(el_bspline_derivative(&b, 2, 2, tt, dd), EL_OK);
+                    ck_assert(hypot(dd[2] - dd[0], dd[3] - dd[1]) < 1e-4 / S);
+                }
+                el_bspline_free(&b);
+            }
+    /* an order-3 end with a non-finite second value */
+    el_bspline b;
+    const double xy[4] = {0, 0, 1, 0};
+    el_bspline_end bad = {3, {1, 0}, {0, NAN}};
+    ck_assert_int_eq(el_bspline_interpolate_c2_ends(xy, 2, &bad, NULL, &b), EL_EINVAL);
+    bad.order = 4;
+    bad.value2[1] = 0.0;
+    ck_assert_int_eq(el_bspline_interpolate_c2_ends(xy, 2, NULL, &bad, &b), EL_EINVAL);
 }
 END_TEST
 
@@ -470,6 +553,7 @@ int main(void)
     tcase_add_test(tc, test_interpolate_c2_discrete_elastica);
     tcase_add_test(tc, test_interpolate_c2_bad_input);
     tcase_add_test(tc, interpolate_c2_ends_meet_their_derivatives);
+    tcase_add_test(tc, interpolate_c2_g2_ends_meet_tangent_and_curvature);
     tcase_add_loop_test(tc, test_smooth_to_bspline_certified, 0, 9);
     tcase_add_test(tc, test_smooth_to_bspline_degrees);
     tcase_add_loop_test(tc, test_smooth_to_bspline_end_tangents, 0, 28);

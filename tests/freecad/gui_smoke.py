@@ -601,6 +601,13 @@ def fit_panel_ends(doc, f, lines, k0):
     screenshot("gui_fit_g2.png")
     if scroll is not None:
         scroll.verticalScrollBar().setValue(0)
+    panel.model.setCurrentIndex(0)              # the discrete model's cubic joins G2 too
+    wait()
+    kappa = [k for _, _, k in S.travel_ends(f)]
+    check(f.Model == "discrete" and panel.joins[0].isEnabled() and abs(kappa[0] - k0) < 1e-9
+          and "error" not in f.Status,
+          f"fit: discrete, G2 to the arc: start curvature {kappa[0]:.6g}/mm ({f.Status})")
+    panel.model.setCurrentIndex(1)
     panel.joins[0].setCurrentIndex(0)
     wait()
     # a start curvature of 1000/mm (radius 1 um): the smooth model meets it with a

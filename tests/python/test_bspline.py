@@ -137,6 +137,39 @@ def test_c2_interpolation_end_conditions_compared_with_scipy():
             interpolate_c2(pts, start=bad)
 
 
+def test_c2_interpolation_g2_ends_compared_with_scipy():
+    """Tangent and second derivative at one end (a G2 end, with its extra knot mid-way
+    along the end span): the same cubic as scipy's make_interp_spline given those knots
+    and conditions; the vertices at their chord-length parameters; a unit tangent with
+    kappa times its left normal gives the curvature kappa exactly."""
+    from scipy.interpolate import make_interp_spline
+    pts = el.DiscreteElastica(x0=0, y0=0, h=0.3, phi=0.2, z=0.25, q=0.1, k=0.8, n=9).points()
+    chord = np.concatenate([[0], np.cumsum(np.hypot(*np.diff(pts, axis=0).T))])
+    t = np.linspace(chord[0], chord[-1], 201)
+    a0, k0, a1, k1 = 0.4, 1.3, -0.7, -0.6
+    g2s = {"d1": (np.cos(a0), np.sin(a0)), "d2": (-k0 * np.sin(a0), k0 * np.cos(a0))}
+    g2e = {"d1": (np.cos(a1), np.sin(a1)), "d2": (-k1 * np.sin(a1), k1 * np.cos(a1))}
+    order = {"d1": 1, "d2": 2}
+    for start, end in ((g2s, None), (None, g2e), (g2s, g2e), (g2s, {"d1": g2e["d1"]}),
+                       ({"d2": (0.3, -1.1)}, g2e)):
+        b = interpolate_c2(pts, start=start, end=end)
+        assert len(b.poles) == len(pts) + 2 + (start is not None and len(start) == 2) + \
+            (end is not None and len(end) == 2)
+        bc = [[(order[k], v) for k, v in sorted(e.items())] if e else [(2, (0.0, 0.0))]
+              for e in (start, end)]
+        ref = make_interp_spline(chord, pts, k=3, t=b.flat_knots(), bc_type=tuple(bc))
+        assert np.abs(ref(t) - b.evaluate(t)).max() < 1e-10
+        assert np.abs(b.evaluate(chord) - pts).max() < 1e-12
+        for e, u, kappa in ((start, b.domain[0], k0), (end, b.domain[1], k1)):
+            if e and len(e) == 2:
+                assert np.allclose(b.derivative([u], 1), [e["d1"]], atol=1e-12)
+                assert np.allclose(b.derivative([u], 2), [e["d2"]], atol=1e-10)
+                assert abs(b.curvature([u])[0] - kappa) < 1e-10
+    for bad in ({"d1": (1, 0), "d2": (0, np.nan)}, {"d1": (1, 0), "d3": (0, 0)}, {}):
+        with pytest.raises(ValueError):
+            interpolate_c2(pts, start=bad)
+
+
 def test_c2_interpolation_bad_input():
     with pytest.raises(ValueError):
         interpolate_c2([[0, 0]])

@@ -226,7 +226,8 @@ def _shape_bspline(model, curves, split, constraints, tol, degree):
     G2 B-spline of the elastica (a keyline: its first half reversed, then the second;
     end points, tangents and curvatures exact, so the constraints hold on it and the
     joint is G2); discrete, the C2 cubic through the vertices (a keyline's both
-    halves), natural at free ends, the constrained tangent or curvature at others."""
+    halves), natural at free ends, the constrained tangent, curvature or both (G2) at
+    others."""
     if model == "smooth":
         return chain_bspline([curves[0].reversed(), curves[1]] if split else curves,
                              tol, degree)
@@ -235,10 +236,14 @@ def _shape_bspline(model, curves, split, constraints, tol, degree):
         return cubic_through(np().vstack([a[::-1], b[1:]]))
     ends = []
     for where in ("start", "end"):
-        if f"{where}_tangent" in constraints:
-            ends.append(("tangent", constraints[f"{where}_tangent"]))
-        elif f"{where}_curvature" in constraints:
-            ends.append(("curvature", constraints[f"{where}_curvature"]))
+        tangent = constraints.get(f"{where}_tangent")
+        kappa = constraints.get(f"{where}_curvature")
+        if tangent is not None and kappa is not None:
+            ends.append(("g2", tangent, kappa))
+        elif tangent is not None:
+            ends.append(("tangent", tangent))
+        elif kappa is not None:
+            ends.append(("curvature", kappa))
         else:
             ends.append(None)
     return cubic_through(curves[0].points(), *ends)
@@ -270,6 +275,23 @@ def _coarse_polygon(xy, constraints, rms):
             "from them: choose Model Smooth elastica for so few points"]
 
 
+def _join_gaps(bspline, plane, joined, tol):
+    """Warnings for G2 joins whose curve end lies farther than tol (mm) from the edge:
+    the tangent and curvature are the edge's end's, its point is not (the end is pinned
+    to the data's first / last point, or free). joined: [(where, edge)]."""
+    out = []
+    ends = bspline.evaluate(np().array(bspline.domain))
+    for where, edge in joined:
+        p = plane.multVec(App.Vector(*map(float, ends[0 if where == "start" else 1]), 0.0))
+        gap = min((edge.valueAt(u) - p).Length for u in (edge.FirstParameter, edge.LastParameter))
+        if gap > tol:
+            point = "first" if where == "start" else "last"
+            out.append(f"{where.capitalize()} join G2: the curve's {where} is {gap:.3g} mm from "
+                       f"the edge's end (it takes the edge's tangent and curvature there): put "
+                       f"the {point} point on the edge's end and pin the {where} to join it")
+    return out
+
+
 def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", split=False,
              distance="orthogonal", pin_start=False, pin_end=False, start_edge=None,
              end_edge=None, start_curvature=None, end_curvature=None, start_g2=False,
@@ -279,7 +301,7 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
     i L/(n-1), for equilateral data). ``start_edge`` / ``end_edge``: Part edges whose
     tangents the curve's ends follow; ``start_curvature`` / ``end_curvature``: 1/mm
     or None (free); ``start_g2`` / ``end_g2``: that end joins its edge G2 (its
-    curvature too; the smooth model). Returns a dict: 'curves' (plane coordinates; a keyline's two
+    curvature too). Returns a dict: 'curves' (plane coordinates; a keyline's two
     halves, each from the joint), 'results', 'bspline', 'placement', 'data' (the
     fitted points, plane coordinates), 'feet' (their nearest points on the curve),
     'distances' (signed, + = left), 'measure', 'rms', 'max_error' (the library's
@@ -307,10 +329,6 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
                 start_g2=bool(start_g2), end_g2=bool(end_g2))
     fields = constraint_fields(start_g2, end_g2)
     joins = [f"{w} join G2" for w, g2 in (("Start", start_g2), ("End", end_g2)) if g2]
-    if joins and model == "discrete" and not split:
-        raise InputProblem(f"{', '.join(joins)}: the discrete fit's B-spline is the C2 cubic "
-                           "through its vertices, which holds a tangent or a curvature at an end, "
-                           "not both: choose Model Smooth elastica for a G2 join, or set G1")
     if split:
         chosen = [CONSTRAINT_FIELDS[k] for k, v in zip(
             ("start_point", "end_point", "start_tangent", "end_tangent", "start_curvature",
@@ -348,6 +366,9 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         if model == "discrete" and not split and not step:
             warnings = warnings + _coarse_polygon(xy, constraints, rms)
         bspline = _shape_bspline(model, curves, split, constraints, tol, degree)
+        joined = [(w, e) for w, e, g2 in (("start", start_edge, start_g2),
+                                          ("end", end_edge, end_g2)) if g2 and e is not None]
+        warnings = warnings + _join_gaps(bspline, plane, joined, tol)
     except InputProblem:
         raise
     except (ValueError, ArithmeticError, RuntimeError) as exc:
@@ -412,8 +433,8 @@ class FitProxy(FeatureProxy):
         for where in ("Start", "End"):
             add_enum(obj, f"{where}Continuity", "Fit",
                      f"How the curve joins its {where}Tangent edge: G1 follows its tangent; G2 "
-                     "its curvature too (at that end of the edge, in the fit plane; the smooth "
-                     f"model). With Pin{where} on a point at the edge's end the join is G2",
+                     "its curvature too (at that end of the edge, in the fit plane). With "
+                     f"Pin{where} on a point at the edge's end the join is G2",
                      CONTINUITIES, "G1")
             add_property(obj, "App::PropertyBool", f"Use{where}Curvature", "Fit",
                          f"Hold the curve's curvature at its {where.lower()} at "

@@ -146,16 +146,19 @@ def cubic_through(vertices, start=None, end=None):
     ``start`` / ``end`` give an end condition: ("tangent", angle) clamps the unit
     tangent there, ("curvature", kappa) sets the second derivative to kappa times
     the end segment's left normal (kappa exactly when 0, else to the speed's
-    departure from 1)."""
+    departure from 1), ("g2", angle, kappa) both: the unit tangent and kappa times
+    its left normal, the curvature kappa exactly (one more knot in that end span)."""
     n = np()
     xy = n.asarray(vertices, dtype=float)
 
     def condition(spec, a, b):
         if spec is None:
             return None
-        kind, value = spec
-        if kind == "tangent":
-            return {"d1": (math.cos(value), math.sin(value))}
+        kind, value = spec[0], spec[1]
+        if kind in ("tangent", "g2"):
+            c, s = math.cos(value), math.sin(value)
+            return {"d1": (c, s)} if kind == "tangent" else \
+                {"d1": (c, s), "d2": (-spec[2] * s, spec[2] * c)}
         d = (xy[b] - xy[a]) / n.linalg.norm(xy[b] - xy[a])
         return {"d2": (-value * d[1], value * d[0])}
 

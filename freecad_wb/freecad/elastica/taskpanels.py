@@ -77,13 +77,11 @@ class FitPanel(Panel):
             join = self.choice(e, f"{text} join", f"{text}Continuity", F.CONTINUITIES,
                                ["G1 (tangent)", "G2 (curvature)"],
                                f"How the curve joins the {text.lower()} tangent's edge: G1 "
-                               "follows its tangent, G2 its curvature too (the smooth model; "
-                               f"with Pin the {text.lower()} on a point at the edge's end the "
-                               "join is G2)",
+                               "follows its tangent, G2 its curvature too (with Pin the "
+                               f"{text.lower()} on a point at the edge's end the join is G2)",
                                when=lambda prop=prop, text=text:
                                getattr(o, f"{text}Continuity") == "G2" or
-                               (self.one_piece() and o.Model == "smooth" and
-                                bool(getattr(o, prop))))
+                               (self.one_piece() and bool(getattr(o, prop))))
             # G2 takes the edge's curvature: a typed one at that end is cleared
             join.currentIndexChanged.connect(lambda _, text=text: self.joined(text))
             self.joins.append(join)
