@@ -162,6 +162,36 @@ def interpolate_c2(points, start=None, end=None) -> BSpline:
     return bspline_from_c(b)
 
 
+def cubic_through(points, start=None, end=None) -> BSpline:
+    """The C2 cubic through a polygon's vertices (a discrete elastica's B-spline) with the
+    end conditions of a fit's constraints: each end None (natural, curvature 0) or a dict
+    of ``"tangent"`` (the unit tangent's angle, rad, in the direction of travel: clamped,
+    speed 1) and / or ``"curvature"`` (signed, + turning left: kappa times the end
+    segment's left normal as B'', the curvature kappa where the speed is ~1; with a
+    tangent kappa times its left normal, the curvature kappa exactly: a G2 end)."""
+    xy = as_points(points, "points")
+
+    def condition(spec, which):
+        if spec is None:
+            return None
+        if not isinstance(spec, dict) or not spec or set(spec) - {"tangent", "curvature"}:
+            raise ValueError(f"cubic_through: {which} must be None or a dict of 'tangent' and / "
+                             f"or 'curvature', got {spec!r}")
+        kappa = as_real(spec.get("curvature", 0.0), f"cubic_through: {which} curvature")
+        if "tangent" in spec:
+            a = as_real(spec["tangent"], f"cubic_through: {which} tangent")
+            t = (np.cos(a), np.sin(a))
+            return {"d1": t} if "curvature" not in spec else \
+                {"d1": t, "d2": (-kappa * t[1], kappa * t[0])}
+        i, j = (0, 1) if which == "start" else (-2, -1)
+        d = xy[j] - xy[i]
+        n = float(np.hypot(*d))
+        d = d / n if n > 0 else d
+        return {"d2": (-kappa * d[1], kappa * d[0])}
+
+    return interpolate_c2(xy, start=condition(start, "start"), end=condition(end, "end"))
+
+
 def smooth_to_bspline(curve, tol: float = 1e-6, degree: int = 3) -> BSpline:
     """Clamped degree-3..7 B-spline within ``tol`` (absolute, coordinate units) of a
     SmoothElastica everywhere, parametrised by its arc length; the certified

@@ -381,7 +381,8 @@ def build_parser() -> argparse.ArgumentParser:
     f.add_argument("--svg", metavar="PATH", help="write the report picture as SVG")
     f.add_argument("--png", metavar="PATH", help="write the report picture as PNG (matplotlib)")
     f.add_argument("--bspline-tol", type=float, metavar="TOL",
-                   help="add the B-spline of the fitted curve (within TOL for smooth)")
+                   help="add the B-spline of the fitted curve (within TOL for smooth; "
+                        "discrete: the C2 cubic through the vertices, with the end constraints)")
     f.add_argument("--degree", type=int, default=3, help="B-spline degree (default 3)")
     f.add_argument("--max-iter", type=int, metavar="N", help="Ipopt iterations per start (default 200)")
     f.add_argument("--dxf", metavar="PATH", help="write the B-spline as a DXF SPLINE (ezdxf)")

@@ -170,6 +170,36 @@ def test_c2_interpolation_g2_ends_compared_with_scipy():
             interpolate_c2(pts, start=bad)
 
 
+def test_cubic_through_takes_a_fits_end_conditions():
+    """el.cubic_through: a tangent angle clamps the unit tangent, a curvature alone sets
+    B'' to kappa times the end segment's left normal, both give a G2 end (the tangent and
+    the curvature exactly); the same cubic as interpolate_c2 given those derivatives."""
+    pts = el.DiscreteElastica(x0=0, y0=0, h=0.3, phi=0.2, z=0.25, q=0.1, k=0.8, n=9).points()
+    a0, k0, a1, k1 = 0.4, 1.3, -0.7, -0.6
+    for start, end in (({"tangent": a0, "curvature": k0}, {"tangent": a1}),
+                       ({"curvature": k0}, {"tangent": a1, "curvature": k1}), (None, None)):
+        b = el.cubic_through(pts, start=start, end=end)
+        assert np.abs(b.evaluate(b.domain[:1]) - pts[:1]).max() < 1e-12
+        for e, u, i, j in ((start, b.domain[0], 0, 1), (end, b.domain[1], -2, -1)):
+            e = e or {}
+            d1, d2 = b.derivative([u], 1)[0], b.derivative([u], 2)[0]
+            if "tangent" in e:
+                assert np.allclose(d1, [np.cos(e["tangent"]), np.sin(e["tangent"])], atol=1e-12)
+            if "tangent" in e and "curvature" in e:
+                assert abs(b.curvature([u])[0] - e["curvature"]) < 1e-10
+            elif "tangent" not in e:
+                seg = (pts[j] - pts[i]) / np.linalg.norm(pts[j] - pts[i])
+                k = e.get("curvature", 0.0)
+                assert np.allclose(d2, [-k * seg[1], k * seg[0]], atol=1e-10)
+    ref = interpolate_c2(pts, start={"d1": (np.cos(a0), np.sin(a0)),
+                                     "d2": (-k0 * np.sin(a0), k0 * np.cos(a0))})
+    b = el.cubic_through(pts, start={"tangent": a0, "curvature": k0})
+    assert np.array_equal(b.poles, ref.poles) and np.array_equal(b.knots, ref.knots)
+    for bad in ({"angle": 0.1}, {}, {"tangent": np.nan}, ("tangent", 0.1)):
+        with pytest.raises(ValueError):
+            el.cubic_through(pts, start=bad)
+
+
 def test_c2_interpolation_bad_input():
     with pytest.raises(ValueError):
         interpolate_c2([[0, 0]])

@@ -349,6 +349,27 @@ def test_fit_orthogonal_distances_and_constraints(capsys, tmp_path):
     assert r.returncode == 0 and json.loads(r.stdout)["distance"] == "paired"
 
 
+def test_fit_discrete_bspline_keeps_the_end_constraints(capsys):
+    """A discrete fit's B-spline (--bspline-tol, --dxf: the C2 cubic through its vertices)
+    takes the constrained ends: a start tangent with a curvature (G2: both exactly), an end
+    tangent (clamped); without constraints its ends are natural (curvature 0)."""
+    r = cli(capsys, "fit", SAMPLE_S, "--model", "smooth", "--json", "-")
+    c = el.io.curve_from_dict(json.loads(r.stdout)["curve"])
+    a0, a1 = np.degrees(c.angle([0.0, c.length]))
+    k0 = float(c.curvature([0.0])[0])
+    r = cli(capsys, "fit", SAMPLE_S, "--start-tangent", a0, "--start-curvature", k0,
+            "--end-tangent", a1, "--bspline-tol", "1e-6", "--json", "-")
+    assert r.returncode == 0, r.stderr
+    b = el.BSpline.from_dict(json.loads(r.stdout)["bspline"])
+    d = b.derivative(np.array(b.domain), 1)
+    got = np.degrees(np.arctan2(d[:, 1], d[:, 0]))
+    assert np.max(np.abs(np.remainder(got - [a0, a1] + 180.0, 360.0) - 180.0)) < 1e-9
+    assert abs(b.curvature([b.domain[0]])[0] - k0) <= 1e-9 * abs(k0)
+    r = cli(capsys, "fit", SAMPLE_S, "--bspline-tol", "1e-6", "--json", "-")
+    b = el.BSpline.from_dict(json.loads(r.stdout)["bspline"])
+    assert np.max(np.abs(b.curvature(np.array(b.domain)))) < 1e-12
+
+
 def test_fit_keyline_3d(capsys, tmp_path):
     r = cli(capsys, "fit", EX / "keyline_3d.csv", "--keyline", "--step", "3", "--json", "-")
     assert r.returncode == 0, r.stderr

@@ -35,6 +35,7 @@ POINT_ENTRIES = {
     "find_inflection": lambda a: el.find_inflection(a),
     "prepare_keyline": lambda a: el.prepare_keyline(a, 0.1),
     "interpolate_c2": lambda a: el.interpolate_c2(a),
+    "cubic_through": lambda a: el.cubic_through(a, start={"tangent": 0.1, "curvature": 1.0}),
     "affine_coords": lambda a: el.affine_coords(a),
     "affine_polyline": lambda a: el.affine_polyline(a, 10),
     "lane_riesenfeld": lambda a: el.lane_riesenfeld(a, 2),

@@ -13,7 +13,7 @@ import math
 import FreeCAD as App
 
 from . import defaults
-from .geometry import (chain_bspline, cubic_through, el, link_edge, np, part_bspline,
+from .geometry import (chain_bspline, el, link_edge, np, part_bspline,
                        plane_coordinates, plane_curvature, to_3d)
 from .proxy import (FeatureProxy, InputProblem, add_enum, add_property, check_degree,
                     check_number, check_tolerance, new_feature, read_only)
@@ -233,20 +233,10 @@ def _shape_bspline(model, curves, split, constraints, tol, degree):
                              tol, degree)
     if split:
         a, b = curves[0].points(), curves[1].points()
-        return cubic_through(np().vstack([a[::-1], b[1:]]))
-    ends = []
-    for where in ("start", "end"):
-        tangent = constraints.get(f"{where}_tangent")
-        kappa = constraints.get(f"{where}_curvature")
-        if tangent is not None and kappa is not None:
-            ends.append(("g2", tangent, kappa))
-        elif tangent is not None:
-            ends.append(("tangent", tangent))
-        elif kappa is not None:
-            ends.append(("curvature", kappa))
-        else:
-            ends.append(None)
-    return cubic_through(curves[0].points(), *ends)
+        return el().cubic_through(np().vstack([a[::-1], b[1:]]))
+    start, end = ({k: constraints[f"{w}_{k}"] for k in ("tangent", "curvature")
+                   if f"{w}_{k}" in constraints} or None for w in ("start", "end"))
+    return el().cubic_through(curves[0].points(), start=start, end=end)
 
 
 # A discrete fit of few points is a polygon of as few segments, which cannot follow a

@@ -3,8 +3,6 @@ plane coordinates of 3D points (the sketch's plane or a fitted one), Part
 B-splines of library B-splines, and writing results into sketches."""
 from __future__ import annotations
 
-import math
-
 import FreeCAD as App
 import Part
 
@@ -138,31 +136,6 @@ def chain_bspline(pieces, tol, degree):
                            "raise Tolerance") from None
     except (ValueError, ArithmeticError, RuntimeError) as exc:
         raise InputProblem(f"no B-spline at tolerance {tol:g} mm: {exc}") from None
-
-
-def cubic_through(vertices, start=None, end=None):
-    """The C2 cubic B-spline through polygon vertices (n, 2), chord-length
-    parametrised (the library's interpolate_c2): natural ends (zero curvature) unless
-    ``start`` / ``end`` give an end condition: ("tangent", angle) clamps the unit
-    tangent there, ("curvature", kappa) sets the second derivative to kappa times
-    the end segment's left normal (kappa exactly when 0, else to the speed's
-    departure from 1), ("g2", angle, kappa) both: the unit tangent and kappa times
-    its left normal, the curvature kappa exactly (one more knot in that end span)."""
-    n = np()
-    xy = n.asarray(vertices, dtype=float)
-
-    def condition(spec, a, b):
-        if spec is None:
-            return None
-        kind, value = spec[0], spec[1]
-        if kind in ("tangent", "g2"):
-            c, s = math.cos(value), math.sin(value)
-            return {"d1": (c, s)} if kind == "tangent" else \
-                {"d1": (c, s), "d2": (-spec[2] * s, spec[2] * c)}
-        d = (xy[b] - xy[a]) / n.linalg.norm(xy[b] - xy[a])
-        return {"d2": (-value * d[1], value * d[0])}
-
-    return el().interpolate_c2(xy, start=condition(start, 0, 1), end=condition(end, -2, -1))
 
 
 def part_bspline(bs, plc):
