@@ -459,8 +459,10 @@ def fit_panel(doc, S):
     f = panel.obj
     fits_combo_view(panel, "fit")
     check("rms" in panel.result.text() and "point to curve" in panel.result.text() and "k =" in
-          panel.result.text() and "-1" not in panel.result.text(),
-          "fit panel shows point-to-curve rms, max error, k, the B-spline (no '-1 mm')")
+          panel.result.text() and "end \u03ba" in panel.result.text() and
+          "-1 mm" not in panel.result.text(),
+          "fit panel shows point-to-curve rms, max error, k, end curvatures, the B-spline (no "
+          f"'-1 mm'): {panel.result.text()}")
     check(panel.model.currentText().startswith("Discrete elastica"), "fit: human model names")
     check(not panel.degree.isEnabled() and not panel.tol.isEnabled() and
           not panel.distance.isEnabled(),
@@ -586,6 +588,9 @@ def fit_panel_ends(doc, f, lines, k0):
     check(f.StartContinuity == "G2" and abs(kappa[0] - k0) < 1e-9 and "error" not in f.Status,
           f"fit: G2 to the picked arc: start curvature {kappa[0]:.6g}/mm, the arc's {k0:.6g}/mm "
           f"({f.Status})")
+    check(abs(panel.start_curvature[1].value() - k0) < 1e-9 and f"end \u03ba {k0:.4g}" in
+          panel.result.text(), "fit: the G2 join's curvature in its (disabled) field and the "
+          f"result ({panel.start_curvature[1].text()})")
     box = App.BoundBox(lines.Shape.Edges[1].BoundBox)          # the arc and the join
     for q in f.DataPoints[:len(f.DataPoints) // 6]:
         box.add(q)
@@ -610,6 +615,8 @@ def fit_panel_ends(doc, f, lines, k0):
     panel.model.setCurrentIndex(1)
     panel.joins[0].setCurrentIndex(0)
     wait()
+    check(panel.start_curvature[1].value() == f.StartCurvature,
+          "fit: back to G1, the curvature field shows its own value again")
     # a start curvature of 1000/mm (radius 1 um): the smooth model meets it with a
     # separatrix curl (a poor fit, but a fit); the discrete one of 2 mm segments cannot
     panel.model.setCurrentIndex(0)

@@ -567,6 +567,8 @@ class FitConstraintTest(unittest.TestCase):
                         self.assertLess((ends[i][0] - point).Length, 1e-9, what)
                     gap = any(w.startswith(f"{('Start', 'End')[i]} join G2: the curve's")
                               for w in f.Warnings)
+                    # the feature reports the shape's end curvatures
+                    self.assertAlmostEqual(f.EndCurvatures[i], ends[i][2], delta=1e-9, msg=what)
                     if joins[i] == "G2":
                         self.assertAlmostEqual(ends[i][2], want[i], delta=1e-9, msg=what)
                         # unpinned, the end lies off the arc's end: the warning says so

@@ -295,7 +295,8 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
     halves, each from the joint), 'results', 'bspline', 'placement', 'data' (the
     fitted points, plane coordinates), 'feet' (their nearest points on the curve),
     'distances' (signed, + = left), 'measure', 'rms', 'max_error' (the library's
-    point-to-curve figures), 'k', 'status', 'free_rms' (the same fit with free ends;
+    point-to-curve figures), 'k', 'end_curvatures' (the shape's at its first and last
+    point, 1/mm, + turning left), 'status', 'free_rms' (the same fit with free ends;
     -1 without end conditions or when that fit fails) and 'warnings' (end conditions
     that cost accuracy; a discrete fit of few points whose polygon the smooth model's
     curve beats).
@@ -377,6 +378,7 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         "data": data, "feet": feet, "distances": n.asarray(dist, dtype=float),
         "measure": measure, "rms": float(rms), "max_error": float(max_error),
         "k": [float(r.curve.k) for r in results],
+        "end_curvatures": [float(v) for v in bspline.curvature(n.array(bspline.domain))],
         "status": "; ".join(_status_text(r) for r in results),
         "free_rms": free_rms, "warnings": warnings,
     }
@@ -457,6 +459,9 @@ class FitProxy(FeatureProxy):
         add_property(obj, "App::PropertyStringList", "Warnings", "Result",
                      "What the designer should know about this fit (empty: none)")
         add_property(obj, "App::PropertyFloatList", "K", "Result", "Elliptic modulus k of each curve")
+        add_property(obj, "App::PropertyFloatList", "EndCurvatures", "Result",
+                     "Curvature (1/mm) of the shape at its start and end, + turning left seen "
+                     "from the fit plane's normal (a G2 join's: its edge's)")
         add_property(obj, "App::PropertyString", "Status", "Result", "Outcome of the last fit")
         add_property(obj, "App::PropertyString", "ErrorMeasure", "Result",
                      "What Rms and MaxError measure")
@@ -473,7 +478,8 @@ class FitProxy(FeatureProxy):
         add_property(obj, "App::PropertyVectorList", "FootPoints", "Result",
                      "Each data point's nearest point on the curve (its polygon for a discrete "
                      "fit), global coordinates")
-        read_only(obj, "Rms", "MaxError", "BSplineDeviation", "FreeRms", "Warnings", "K", "Status",
+        read_only(obj, "Rms", "MaxError", "BSplineDeviation", "FreeRms", "Warnings", "K",
+                  "EndCurvatures", "Status",
                   "ErrorMeasure",
                   "Distances", "Curves", "Plane", "DataPoints", "FootPoints")
 
@@ -495,6 +501,7 @@ class FitProxy(FeatureProxy):
         obj.MaxError = r["max_error"]
         obj.ErrorMeasure = r["measure"]
         obj.K = r["k"]
+        obj.EndCurvatures = r["end_curvatures"]
         obj.BSplineDeviation = r["bspline"].max_deviation
         obj.Plane = plc
         obj.DataPoints = to_3d(plc, r["data"])

@@ -127,8 +127,27 @@ class FitPanel(Panel):
         else:
             bs = "B-spline: the C2 cubic through the vertices"
         curve = "one G2 curve of two elasticae, " if len(o.K) == 2 else ""
+        ends = ""
+        if len(o.EndCurvatures) == 2:
+            # rounding noise (below 1e-9 of 1/length: a natural end's) shown as 0
+            size = o.Shape.Length if not o.Shape.isNull() else 0.0
+            ends = "<br>end \u03ba {:.4g}, {:.4g}/mm".format(
+                *(0.0 if abs(k) * size < 1e-9 else k for k in o.EndCurvatures))
         return (f"{n} points, {o.ErrorMeasure}:<br>rms {_fmt(o.Rms)}, max {_fmt(o.MaxError)}"
-                f"<br>{curve}k = {ks}<br>{bs}<br>{o.Status}")
+                f"<br>{curve}k = {ks}{ends}<br>{bs}<br>{o.Status}")
+
+    def refresh(self):
+        """As every panel's; a G2 join's curvature field (disabled) shows the edge's, the
+        others their property's value."""
+        super().refresh()
+        o = self.obj
+        for i, (where, box) in enumerate((("Start", self.start_curvature),
+                                          ("End", self.end_curvature))):
+            g2 = getattr(o, f"{where}Continuity") == "G2" and not getattr(o, f"Use{where}Curvature")
+            value = o.EndCurvatures[i] if g2 and len(o.EndCurvatures) == 2 else \
+                getattr(o, f"{where}Curvature")
+            if box[1].value() != value:
+                self.show_value(box[1], value)
 
 
 G2_LIST_TIP = (". G2: these are the G1 solutions; the G2 blend is bent from the one picked "
