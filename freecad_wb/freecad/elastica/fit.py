@@ -321,10 +321,11 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
     fields = constraint_fields(start_g2, end_g2)
     joins = [f"{w} join G2" for w, g2 in (("Start", start_g2), ("End", end_g2)) if g2]
     if split:
-        chosen = [CONSTRAINT_FIELDS[k] for k, v in zip(
-            ("start_point", "end_point", "start_tangent", "end_tangent", "start_curvature",
-             "end_curvature"), list(ends.values())[:6]) if v is not None and v is not False]
-        chosen += joins
+        given = dict(start_point=pin_start, end_point=pin_end, start_tangent=start_edge,
+                     end_tangent=end_edge, start_curvature=start_curvature,
+                     end_curvature=end_curvature)
+        chosen = [CONSTRAINT_FIELDS[k] for k, v in given.items()
+                  if v is not None and v is not False] + joins
         if chosen:
             raise InputProblem(f"{', '.join(chosen)}: a split keyline is one G2 curve fitted "
                                "with free ends (the library's keyline fit takes no end "
