@@ -89,19 +89,15 @@ class _Progress:
         sys.stderr.flush()
 
 
-def _bspline_of(curve, tol: float, degree: int, constraints=None):
-    """The B-spline of a fitted curve: tolerance-certified for a smooth elastica (or a
-    Hermite chain of them); for a discrete one the C2 cubic through its vertices
-    (max_deviation unknown, -1) with the fit's end tangents and curvatures
-    (``constraints``, el.fit's; natural ends without)."""
+def _bspline_of(curve, tol: float, degree: int):
+    """The B-spline of a curve: tolerance-certified for a smooth elastica (or a Hermite
+    chain of them); for a discrete one the C2 cubic through its vertices (max_deviation
+    unknown, -1; a fit's: FitResult.to_bspline, which keeps its end constraints)."""
     from .core import DiscreteElastica
     if not isinstance(curve, DiscreteElastica):
         return curve.to_bspline(tol=tol, degree=degree)
-    from .bspline import cubic_through
-    con = constraints or {}
-    start, end = ({k: con[f"{w}_{k}"] for k in ("tangent", "curvature") if f"{w}_{k}" in con}
-                  or None for w in ("start", "end"))
-    return cubic_through(curve.points(), start=start, end=end)
+    from .bspline import interpolate_c2
+    return interpolate_c2(curve.points())
 
 
 def _plane_record(frame) -> Optional[Dict[str, Any]]:

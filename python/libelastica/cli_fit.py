@@ -9,7 +9,7 @@ from typing import Any, Dict, List, Optional
 import numpy as np
 
 from ._ffi import NotConvergedError
-from .cli_common import (EXIT_BADINPUT, EXIT_NOCONV, EXIT_OK, PROG, _bspline_of, _converged,
+from .cli_common import (EXIT_BADINPUT, EXIT_NOCONV, EXIT_OK, PROG, _converged,
                          _finite, _float_list, _fmt, _plane_record, _Progress, _status_text,
                          _table)
 from .cli_outputs import out_path
@@ -103,7 +103,6 @@ def fit_file(path: str, args, batch: bool) -> List[Dict[str, Any]]:
         _finite(args.step, "--step")
     records: List[Dict[str, Any]] = []
     pictures = []                       # (data (n,2), FitResult) per record
-    ends = [None, None]                 # el.fit's constraints per record (a keyline's: none)
     extra_info: Dict[str, Any] = {}
     if args.keyline:
         # seed 000 §5 as one G2 curve: plane fit, resampling (segment --step),
@@ -142,18 +141,16 @@ def fit_file(path: str, args, batch: bool) -> List[Dict[str, Any]]:
             data = el.resample_equilateral(xy, args.step)
             if len(data) < 4:
                 raise InputError(f"{path}: --step {args.step} leaves only {len(data)} points")
-        constraints = _constraints(args, data)
-        res = el.fit(data, **_fit_kwargs(args, _parse_fix(args.fix, data), constraints))
+        res = el.fit(data, **_fit_kwargs(args, _parse_fix(args.fix, data), _constraints(args, data)))
         records.append(_side_record(res, data, args.model))
         pictures.append((data, res))
-        ends = [constraints]
     for rec in records:
         rec.update({"file": str(path), "plane": plane, "step": args.step, **extra_info})
     splines = []
     if args.bspline_tol is not None or args.dxf:
         tol = _finite(args.bspline_tol if args.bspline_tol is not None else 1e-6, "--bspline-tol")
-        for rec, (_, res), con in zip(records, pictures, ends):
-            b = _bspline_of(res.curve, tol, args.degree, con)
+        for rec, (_, res) in zip(records, pictures):
+            b = res.to_bspline(tol, args.degree)       # a discrete fit's: its end constraints
             rec["bspline"] = b.to_dict()
             splines.append(b)
     if to_input is not None:

@@ -68,7 +68,8 @@ class FitResult:
     ``s``: for the smooth model the curve parameter each point was fitted at (its
     foot, or for a paired fit its paired arc length;
     None for discrete); ``param_mode``: "uniform" or "chord" (smooth: the paired arc
-    lengths, or the first feet); ``points``: the fitted points.
+    lengths, or the first feet); ``points``: the fitted points; ``constraints``: the
+    fit's constraints as given (:meth:`to_bspline` keeps the ends' on a discrete curve).
     """
     curve: Curve
     initial: Curve
@@ -85,10 +86,25 @@ class FitResult:
     distance: str = "paired"
     used_ipopt: bool = False
     points: Optional[np.ndarray] = None
+    constraints: Optional[Mapping[str, object]] = None
 
     @property
     def converged(self) -> bool:
         return self.status == lib.EL_OK
+
+    def to_bspline(self, tol: float = 1e-6, degree: int = 3):
+        """The fitted curve as one B-spline for CAD: a smooth elastica's within ``tol``
+        (certified; its end points, tangents and curvatures exact, so the constraints hold
+        on it); a discrete one's C2 cubic through its vertices (:func:`cubic_through`)
+        with the fit's constrained end tangents and curvatures (G2 where both), natural
+        ends elsewhere (``tol`` and ``degree`` unused)."""
+        if isinstance(self.curve, SmoothElastica):
+            return self.curve.to_bspline(tol=tol, degree=degree)
+        from .bspline import cubic_through
+        con = self.constraints or {}
+        start, end = ({k: con[f"{w}_{k}"] for k in ("tangent", "curvature") if f"{w}_{k}" in con}
+                      or None for w in ("start", "end"))
+        return cubic_through(self.curve.points(), start=start, end=end)
 
     def model_points(self) -> np.ndarray:
         """The model points the fit used for the data points, shape (n, 2): the feet
@@ -225,7 +241,7 @@ def _make_curve(model: str, p, n: int) -> Curve:
 
 
 def _result(model: str, res, st: int, pts: np.ndarray, dist: np.ndarray, foot: np.ndarray,
-            s: Optional[np.ndarray] = None) -> FitResult:
+            s: Optional[np.ndarray] = None, constraints=None) -> FitResult:
     n = len(pts)
     return FitResult(curve=_make_curve(model, res.params, n), initial=_make_curve(model, res.initial, n),
                      rms=float(res.rms), max_error=float(res.max_error),
@@ -233,7 +249,8 @@ def _result(model: str, res, st: int, pts: np.ndarray, dist: np.ndarray, foot: n
                      ipopt_status=int(res.ipopt_status), candidates=int(res.candidates), s=s,
                      param_mode=_MODE_NAMES.get(int(res.param_mode)) if model == "smooth" else None,
                      distances=dist, foot_s=foot, distance=_DISTANCE_NAMES[int(res.distance)],
-                     used_ipopt=bool(res.used_ipopt), points=pts)
+                     used_ipopt=bool(res.used_ipopt), points=pts,
+                     constraints=dict(constraints) if constraints else None)
 
 
 def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = None, *,
@@ -313,7 +330,7 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
             s = foot.copy()
     if strict and st != lib.EL_OK:
         check(st, "fit")
-    return _result(model, res, st, pts.copy(), dist, foot, s)
+    return _result(model, res, st, pts.copy(), dist, foot, s, constraints)
 
 
 # ------------------------------------------------------------------ keyline

@@ -200,6 +200,29 @@ def test_cubic_through_takes_a_fits_end_conditions():
             el.cubic_through(pts, start=bad)
 
 
+def test_fit_result_to_bspline_keeps_the_fits_end_constraints():
+    """FitResult.to_bspline: a discrete fit's cubic takes its constrained end tangent and
+    curvature (G2 at the start, G1 at the end; natural without constraints), a smooth
+    fit's is its elastica's certified B-spline."""
+    c = el.SmoothElastica(x0=0, y0=0, phi=0.3, mu=4.0, k=0.7, q=0.4, length=3.0)
+    pts = c.points(np.linspace(0, 3, 40)) + np.random.default_rng(5).normal(0, 1e-3, (40, 2))
+    a0, a1 = (float(v) for v in c.angle([0.0, 3.0]))
+    k0 = float(c.curvature([0.0])[0])
+    cons = {"start_tangent": a0, "start_curvature": k0, "end_tangent": a1}
+    r = el.fit(pts, model="discrete", constraints=cons)
+    b = r.to_bspline()
+    d = b.derivative(np.array(b.domain), 1)
+    assert np.allclose(d, [[np.cos(a0), np.sin(a0)], [np.cos(a1), np.sin(a1)]], atol=1e-12)
+    assert abs(b.curvature([b.domain[0]])[0] - k0) <= 1e-10 * abs(k0)
+    assert np.abs(b.evaluate(b.knots[:1]) - r.curve.points()[:1]).max() < 1e-12
+    free = el.fit(pts, model="discrete").to_bspline()
+    assert np.abs(free.curvature(np.array(free.domain))).max() < 1e-9
+    s = el.fit(pts, model="smooth", constraints=cons)
+    ref = s.curve.to_bspline(tol=1e-7, degree=4)
+    got = s.to_bspline(tol=1e-7, degree=4)
+    assert np.array_equal(got.poles, ref.poles) and got.max_deviation == ref.max_deviation
+
+
 def test_c2_interpolation_bad_input():
     with pytest.raises(ValueError):
         interpolate_c2([[0, 0]])

@@ -221,7 +221,7 @@ def _moved(curve, frame2d):
     return dataclasses.replace(curve, x0=float(x0), y0=float(y0), phi=float(curve.phi + turn))
 
 
-def _shape_bspline(model, curves, split, constraints, tol, degree):
+def _shape_bspline(model, curves, results, split, tol, degree):
     """ONE B-spline of the fit, run from the first point to the last: smooth, the
     G2 B-spline of the elastica (a keyline: its first half reversed, then the second;
     end points, tangents and curvatures exact, so the constraints hold on it and the
@@ -234,9 +234,7 @@ def _shape_bspline(model, curves, split, constraints, tol, degree):
     if split:
         a, b = curves[0].points(), curves[1].points()
         return el().cubic_through(np().vstack([a[::-1], b[1:]]))
-    start, end = ({k: constraints[f"{w}_{k}"] for k in ("tangent", "curvature")
-                   if f"{w}_{k}" in constraints} or None for w in ("start", "end"))
-    return el().cubic_through(curves[0].points(), start=start, end=end)
+    return results[0].to_bspline()          # the fit's end constraints on the cubic
 
 
 # A discrete fit of few points is a polygon of as few segments, which cannot follow a
@@ -357,7 +355,7 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
                                                   fields)
         if model == "discrete" and not split and not step:
             warnings = warnings + _coarse_polygon(xy, constraints, rms)
-        bspline = _shape_bspline(model, curves, split, constraints, tol, degree)
+        bspline = _shape_bspline(model, curves, results, split, tol, degree)
         joined = [(w, e) for w, e, g2 in (("start", start_edge, start_g2),
                                           ("end", end_edge, end_g2)) if g2 and e is not None]
         warnings = warnings + _join_gaps(bspline, plane, joined, tol)
