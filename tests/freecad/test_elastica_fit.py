@@ -579,14 +579,17 @@ class FitConstraintTest(unittest.TestCase):
 
     def test_g2_join_messages(self):
         """A G2 join that cannot be: without its edge, beside a typed curvature at that end,
-        on a split keyline: the message names the join and the way out, and nothing is
-        fitted."""
+        on a split keyline, at both pinned ends (8 conditions): the message names the join
+        and the way out, and nothing is fitted."""
         arc = self._arc_at(0, 70.0, True, True)
         for props, said in (
                 (dict(StartContinuity="G2"), "Start join G2 follows the start tangent's edge"),
                 (dict(StartContinuity="G2", StartTangent=(arc, ["Edge1"]), UseStartCurvature=True),
                  "clear Start curvature"),
-                (dict(StartContinuity="G2", SplitAtInflection=True), "Start join G2")):
+                (dict(StartContinuity="G2", SplitAtInflection=True), "Start join G2"),
+                (dict(StartContinuity="G2", EndContinuity="G2", PinStart=True, PinEnd=True,
+                      StartTangent=(arc, ["Edge1"]), EndTangent=(self.lines, ["Edge2"])),
+                 "use Elastic spline (G2 to edge at both ends)")):
             f = Fi.make(self.doc, [(self.sk, [])], **dict(dict(Model="smooth"), **props))
             self.doc.recompute()
             self.assertTrue(f.Status.startswith("error") and said in f.Status, (props, f.Status))

@@ -318,6 +318,11 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
                 start_g2=bool(start_g2), end_g2=bool(end_g2))
     fields = constraint_fields(start_g2, end_g2)
     joins = [f"{w} join G2" for w, g2 in (("Start", start_g2), ("End", end_g2)) if g2]
+    if start_g2 and end_g2 and pin_start and pin_end and not split:
+        raise InputProblem("G2 joins at both pinned ends are 8 conditions on the 7 parameters "
+                           "of one elastica (met together only by one elastica's own ends): "
+                           "set one join G1 or free a pin; for a batten through the points "
+                           "joining both edges G2, use Elastic spline (G2 to edge at both ends)")
     if split:
         given = dict(start_point=pin_start, end_point=pin_end, start_tangent=start_edge,
                      end_tangent=end_edge, start_curvature=start_curvature,
