@@ -566,28 +566,33 @@ def fit_panel_ends(doc, f, lines, k0):
         box.add(p)
     show_box(box)
     screenshot("gui_fit_ends.png")
-    # G2 to the arc: picking it frees the line (the join back to G1), the join then takes
-    # the arc's curvature and the typed start curvature gives way
+    # joined G2 to the arc: freeing the line sets its join back to Tangent only; the G2
+    # join starts the curve at the arc's end (the data's first point) with the arc's
+    # tangent and curvature, and a typed start curvature and Pin start give way
     check(panel.joins[0].isEnabled() and not panel.joins[1].isEnabled(),
           "fit: the start join applies (its edge picked), the end join not (no end edge)")
-    panel.joins[0].setCurrentIndex(1)
+    panel.joins[0].setCurrentIndex(2)
     wait()
-    check(f.StartContinuity == "G2" and not panel.start_curvature[0].isEnabled(),
-          f"fit: start join G2, start curvature field disabled ({f.Status})")
+    check(f.StartContinuity == "G2" and not panel.start_curvature[0].isEnabled() and
+          not panel.pin_start.isEnabled() and "error" not in f.Status,
+          f"fit: start join G2, start curvature and Pin start disabled ({f.Status})")
     panel.tangent_buttons[0].click()                              # free the line
     wait()
-    check(not f.StartTangent and f.StartContinuity == "G1" and panel.joins[0].currentIndex() == 0
-          and not panel.joins[0].isEnabled() and "error" not in f.Status,
-          f"fit: freeing the start tangent sets its join back to G1 ({f.Status})")
+    check(not f.StartTangent and f.StartContinuity == "tangent" and
+          panel.joins[0].currentIndex() == 0 and not panel.joins[0].isEnabled() and
+          "error" not in f.Status,
+          f"fit: freeing the start tangent sets its join back to Tangent only ({f.Status})")
     Gui.Selection.clearSelection()
     Gui.Selection.addSelection(doc.Name, lines.Name, "Edge2")
     panel.tangent_buttons[0].click()
-    panel.joins[0].setCurrentIndex(1)
+    panel.joins[0].setCurrentIndex(2)
     wait()
-    kappa = [k for _, _, k in S.travel_ends(f)]
-    check(f.StartContinuity == "G2" and abs(kappa[0] - k0) < 1e-9 and "error" not in f.Status,
-          f"fit: G2 to the picked arc: start curvature {kappa[0]:.6g}/mm, the arc's {k0:.6g}/mm "
-          f"({f.Status})")
+    start, _, kappa = S.travel_ends(f)[0]
+    arc_end = lines.Shape.Edges[1].Vertexes[1].Point
+    check(f.StartContinuity == "G2" and abs(kappa - k0) < 1e-9 and
+          (start - arc_end).Length < 1e-9 and "error" not in f.Status,
+          f"fit: G2 to the picked arc: starts at its end, curvature {kappa:.6g}/mm, the arc's "
+          f"{k0:.6g}/mm ({f.Status})")
     check(abs(panel.start_curvature[1].value() - k0) < 1e-9 and f"end \u03ba {k0:.4g}" in
           panel.result.text(), "fit: the G2 join's curvature in its (disabled) field and the "
           f"result ({panel.start_curvature[1].text()})")
@@ -608,15 +613,16 @@ def fit_panel_ends(doc, f, lines, k0):
         scroll.verticalScrollBar().setValue(0)
     panel.model.setCurrentIndex(0)              # the discrete model's cubic joins G2 too
     wait()
-    kappa = [k for _, _, k in S.travel_ends(f)]
-    check(f.Model == "discrete" and panel.joins[0].isEnabled() and abs(kappa[0] - k0) < 1e-9
-          and "error" not in f.Status,
-          f"fit: discrete, G2 to the arc: start curvature {kappa[0]:.6g}/mm ({f.Status})")
+    start, _, kappa = S.travel_ends(f)[0]
+    check(f.Model == "discrete" and panel.joins[0].isEnabled() and abs(kappa - k0) < 1e-9
+          and (start - arc_end).Length < 1e-9 and "error" not in f.Status,
+          f"fit: discrete, G2 to the arc: start curvature {kappa:.6g}/mm ({f.Status})")
     panel.model.setCurrentIndex(1)
     panel.joins[0].setCurrentIndex(0)
     wait()
-    check(panel.start_curvature[1].value() == f.StartCurvature,
-          "fit: back to G1, the curvature field shows its own value again")
+    check(panel.start_curvature[1].value() == f.StartCurvature and panel.pin_start.isEnabled(),
+          "fit: back to Tangent only, the curvature field shows its own value again, Pin "
+          "start applies")
     # a start curvature of 1000/mm (radius 1 um): the smooth model meets it with a
     # separatrix curl (a poor fit, but a fit); the discrete one of 2 mm segments cannot
     panel.model.setCurrentIndex(0)

@@ -28,10 +28,10 @@ DISTANCE_NAMES = {"orthogonal": "Point to curve", "paired": "Paired (equilateral
 CONSTRAINT_FIELDS = {"start_point": "Pin start", "end_point": "Pin end",
                      "start_tangent": "Start tangent", "end_tangent": "End tangent",
                      "start_curvature": "Start curvature", "end_curvature": "End curvature"}
-# an end joined G2 to its tangent edge: the curvature is the edge's, so messages name the join
-JOIN_FIELDS = {"start_curvature": "Start join G2 (the start edge's curvature)",
-               "end_curvature": "End join G2 (the end edge's curvature)"}
-CONTINUITIES = ["G1", "G2"]
+# How an end meets its tangent edge: its tangent only, or joined to the edge's end (the
+# CAD sense: G1 = the point and the tangent, G2 = the curvature too)
+CONTINUITIES = ["tangent", "G1", "G2"]
+CONTINUITY_NAMES = {"tangent": "Tangent only", "G1": "G1", "G2": "G2"}
 
 
 def _status_text(r):
@@ -58,13 +58,15 @@ def tangent_angle(edge, at, forward, plane):
 
 
 def end_constraints(xy, plane, pin_start=False, pin_end=False, start_edge=None, end_edge=None,
-                    start_curvature=None, end_curvature=None, start_g2=False, end_g2=False):
+                    start_curvature=None, end_curvature=None, start_join="tangent",
+                    end_join="tangent"):
     """el.fit's constraints for plane points xy (in their order): pinned ends at the
     first / last point, tangents of Part edges at their ends nearest those points
     (the direction of travel), curvatures (1/mm, + turning left seen from the plane's
-    normal, 0 = a free end or an inflection); ``start_g2`` / ``end_g2``: that end joins
-    its tangent edge G2, the curvature being the edge's there (in the plane, signed by
-    the direction of travel)."""
+    normal, 0 = a free end or an inflection). ``start_join`` / ``end_join`` (CONTINUITIES):
+    how that end meets its edge: its tangent only, or joined to the edge's end (G1: its
+    point, in the fit plane, and tangent; G2: its curvature there too, signed by the
+    direction of travel)."""
     c = {}
     if pin_start:
         c["start_point"] = (float(xy[0][0]), float(xy[0][1]))
@@ -73,33 +75,50 @@ def end_constraints(xy, plane, pin_start=False, pin_end=False, start_edge=None, 
     for name, value in (("start_curvature", start_curvature), ("end_curvature", end_curvature)):
         if value is not None:
             c[name] = check_number(CONSTRAINT_FIELDS[name], value, unit="1/mm")
+    extent = float(np().ptp(xy, axis=0).max())
     # the direction of travel near each end: over an eighth of the points (noise-proof)
     m = max(1, len(xy) // 8)
-    for where, edge, g2, i, forward in (("start", start_edge, start_g2, 0, xy[m] - xy[0]),
-                                        ("end", end_edge, end_g2, -1, xy[-1] - xy[-1 - m])):
-        if g2 and edge is None:
-            raise InputProblem(f"{where.capitalize()} join G2 follows the {where} tangent's "
-                               f"edge: pick one ({where.capitalize()} tangent), or set G1")
-        if g2 and f"{where}_curvature" in c:
-            raise InputProblem(f"{where.capitalize()} curvature and {where} join G2 both set "
-                               f"the curvature there: clear {where.capitalize()} curvature "
-                               "(G2 takes the edge's)")
-        if edge is not None:
-            at = plane.multVec(App.Vector(float(xy[i][0]), float(xy[i][1]), 0.0))
-            angle, at_end = tangent_angle(edge, at, forward, plane)
-            c[f"{where}_tangent"] = angle
-            if g2:
-                c[f"{where}_curvature"] = plane_curvature(
-                    edge, at_end, (math.cos(angle), math.sin(angle)), plane, f"the {where} edge")
+    for where, edge, join, i, forward in (("start", start_edge, start_join, 0, xy[m] - xy[0]),
+                                          ("end", end_edge, end_join, -1, xy[-1] - xy[-1 - m])):
+        End = where.capitalize()
+        if join not in CONTINUITIES:
+            raise InputProblem(f"{End}Continuity = {join!r}: one of {', '.join(CONTINUITIES)}")
+        if join != "tangent" and edge is None:
+            raise InputProblem(f"{End} join {join} joins the {where} tangent's edge: pick one "
+                               f"({End} tangent), or set Tangent only")
+        if join != "tangent" and f"{where}_point" in c:
+            raise InputProblem(f"Pin {where} and {where} join {join} both set the {where} point: "
+                               f"clear Pin {where} (the join starts at the edge's end)")
+        if join == "G2" and f"{where}_curvature" in c:
+            raise InputProblem(f"{End} curvature and {where} join G2 both set the curvature "
+                               f"there: clear {End} curvature (G2 takes the edge's)")
+        if edge is None:
+            continue
+        at = plane.multVec(App.Vector(float(xy[i][0]), float(xy[i][1]), 0.0))
+        angle, at_end = tangent_angle(edge, at, forward, plane)
+        c[f"{where}_tangent"] = angle
+        if join == "tangent":
+            continue
+        u = edge.LastParameter if at_end else edge.FirstParameter
+        p = plane.inverse().multVec(edge.valueAt(u))
+        if abs(p.z) > 1e-7 + 1e-9 * extent:    # FreeCAD's Precision::Confusion, mm
+            raise InputProblem(f"the {where} edge's end lies {abs(p.z):.3g} mm off the fit plane: "
+                               f"no {join} join in it (Tangent only follows its direction)")
+        c[f"{where}_point"] = (float(p.x), float(p.y))
+        if join == "G2":
+            c[f"{where}_curvature"] = plane_curvature(
+                edge, at_end, (math.cos(angle), math.sin(angle)), plane, f"the {where} edge")
     return c
 
 
-def constraint_fields(start_g2=False, end_g2=False):
-    """The field each library constraint comes from (a G2 join's curvature: the join)."""
+def constraint_fields(start_join="tangent", end_join="tangent"):
+    """The field each library constraint comes from: a G1 / G2 join's point, tangent and
+    (G2) curvature are the join's."""
     fields = dict(CONSTRAINT_FIELDS)
-    for name, g2 in (("start_curvature", start_g2), ("end_curvature", end_g2)):
-        if g2:
-            fields[name] = JOIN_FIELDS[name]
+    for where, join in (("start", start_join), ("end", end_join)):
+        if join in ("G1", "G2"):
+            for what in ("point", "tangent") + (("curvature",) if join == "G2" else ()):
+                fields[f"{where}_{what}"] = f"{where.capitalize()} join {join}"
     return fields
 
 
@@ -140,7 +159,7 @@ def _constraint_cost(xy, model, distance, fixed, constraints, rms, fields):
     extent = float(np().ptp(xy, axis=0).max())
     if not (rms > COST_RATIO * free and rms - free > COST_FLOOR * extent):
         return float(free), []
-    named = [fields[c] for c in CONSTRAINT_FIELDS if c in constraints]
+    named = list(dict.fromkeys(fields[c] for c in CONSTRAINT_FIELDS if c in constraints))
     return float(free), [f"the end conditions ({', '.join(named)}) raise the rms from "
                          f"{free:.3g} mm (free ends) to {rms:.3g} mm: check that they match "
                          "the data"]
@@ -263,33 +282,16 @@ def _coarse_polygon(xy, constraints, rms):
             "from them: choose Model Smooth elastica for so few points"]
 
 
-def _join_gaps(bspline, plane, joined, tol):
-    """Warnings for G2 joins whose curve end lies farther than tol (mm) from the edge:
-    the tangent and curvature are the edge's end's, its point is not (the end is pinned
-    to the data's first / last point, or free). joined: [(where, edge)]."""
-    out = []
-    ends = bspline.evaluate(np().array(bspline.domain))
-    for where, edge in joined:
-        p = plane.multVec(App.Vector(*map(float, ends[0 if where == "start" else 1]), 0.0))
-        gap = min((edge.valueAt(u) - p).Length for u in (edge.FirstParameter, edge.LastParameter))
-        if gap > tol:
-            point = "first" if where == "start" else "last"
-            out.append(f"{where.capitalize()} join G2: the curve's {where} is {gap:.3g} mm from "
-                       f"the edge's end (it takes the edge's tangent and curvature there): put "
-                       f"the {point} point on the edge's end and pin the {where} to join it")
-    return out
-
-
 def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", split=False,
              distance="orthogonal", pin_start=False, pin_end=False, start_edge=None,
-             end_edge=None, start_curvature=None, end_curvature=None, start_g2=False,
-             end_g2=False, step=0.0, tol=1e-3, degree=3):
+             end_edge=None, start_curvature=None, end_curvature=None, start_join="tangent",
+             end_join="tangent", step=0.0, tol=1e-3, degree=3):
     """Fit elastica(e) to 3D points. ``distance``: what the smooth one-piece fit
     minimises ("orthogonal": point to curve; "paired": point i at arc length
     i L/(n-1), for equilateral data). ``start_edge`` / ``end_edge``: Part edges whose
     tangents the curve's ends follow; ``start_curvature`` / ``end_curvature``: 1/mm
-    or None (free); ``start_g2`` / ``end_g2``: that end joins its edge G2 (its
-    curvature too). Returns a dict: 'curves' (plane coordinates; a keyline's two
+    or None (free); ``start_join`` / ``end_join``: how that end meets its edge
+    (end_constraints). Returns a dict: 'curves' (plane coordinates; a keyline's two
     halves, each from the joint), 'results', 'bspline', 'placement', 'data' (the
     fitted points, plane coordinates), 'feet' (their nearest points on the curve),
     'distances' (signed, + = left), 'measure', 'rms', 'max_error' (the library's
@@ -315,14 +317,15 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         degree = check_degree(degree)
     ends = dict(pin_start=pin_start, pin_end=pin_end, start_edge=start_edge, end_edge=end_edge,
                 start_curvature=start_curvature, end_curvature=end_curvature,
-                start_g2=bool(start_g2), end_g2=bool(end_g2))
-    fields = constraint_fields(start_g2, end_g2)
-    joins = [f"{w} join G2" for w, g2 in (("Start", start_g2), ("End", end_g2)) if g2]
-    if start_g2 and end_g2 and pin_start and pin_end and not split:
-        raise InputProblem("G2 joins at both pinned ends are 8 conditions on the 7 parameters "
-                           "of one elastica (met together only by one elastica's own ends): "
-                           "set one join G1 or free a pin; for a batten through the points "
-                           "joining both edges G2, use Elastic spline (G2 to edge at both ends)")
+                start_join=start_join, end_join=end_join)
+    fields = constraint_fields(start_join, end_join)
+    joins = [f"{w} join {j}" for w, j in (("Start", start_join), ("End", end_join))
+             if j != "tangent"]
+    if start_join == end_join == "G2" and not split:
+        raise InputProblem("G2 joins at both ends are 8 conditions on the 7 parameters of one "
+                           "elastica (met together only by one elastica's own ends): set one "
+                           "join G1 or Tangent only; for a batten through the points joining "
+                           "both edges G2, use Elastic spline (G2 to edge at both ends)")
     if split:
         given = dict(start_point=pin_start, end_point=pin_end, start_tangent=start_edge,
                      end_tangent=end_edge, start_curvature=start_curvature,
@@ -361,9 +364,6 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         if model == "discrete" and not split and not step:
             warnings = warnings + _coarse_polygon(xy, constraints, rms)
         bspline = _shape_bspline(model, curves, results, split, tol, degree)
-        joined = [(w, e) for w, e, g2 in (("start", start_edge, start_g2),
-                                          ("end", end_edge, end_g2)) if g2 and e is not None]
-        warnings = warnings + _join_gaps(bspline, plane, joined, tol)
     except InputProblem:
         raise
     except (ValueError, ArithmeticError, RuntimeError) as exc:
@@ -428,10 +428,10 @@ class FitProxy(FeatureProxy):
                      "the fit plane) the curve follows there (one-piece fits; empty: free)")
         for where in ("Start", "End"):
             add_enum(obj, f"{where}Continuity", "Fit",
-                     f"How the curve joins its {where}Tangent edge: G1 follows its tangent; G2 "
-                     "its curvature too (at that end of the edge, in the fit plane). With "
-                     f"Pin{where} on a point at the edge's end the join is G2",
-                     CONTINUITIES, "G1")
+                     f"How the curve meets its {where}Tangent edge: tangent = follows its "
+                     f"tangent (at the end nearest the data's {where.lower()}); G1 = joins "
+                     "the edge there (starts at that end, in the fit plane, with its tangent); "
+                     "G2 = and its curvature", CONTINUITIES, "tangent")
             add_property(obj, "App::PropertyBool", f"Use{where}Curvature", "Fit",
                          f"Hold the curve's curvature at its {where.lower()} at "
                          f"{where}Curvature (one-piece fits)", False)
@@ -557,15 +557,15 @@ def core_options(props):
                 pin_end=get("PinEnd", False),
                 start_curvature=get("StartCurvature", 0.0) if get("UseStartCurvature") else None,
                 end_curvature=get("EndCurvature", 0.0) if get("UseEndCurvature") else None,
-                start_g2=get("StartContinuity", "G1") == "G2",
-                end_g2=get("EndContinuity", "G1") == "G2", step=get("ResampleStep", 0.0),
+                start_join=get("StartContinuity", "tangent"),
+                end_join=get("EndContinuity", "tangent"), step=get("ResampleStep", 0.0),
                 tol=get("Tolerance", 1e-3), degree=get("Degree", 3))
 
 
 def make(doc, sources=(), csv_file="", **props):
     """A new Fit feature in ``doc``; ``sources`` [(obj, [subnames])]; props set Model,
     Distance, SplitAtInflection, PinStart, PinEnd, UseStartCurvature, StartCurvature,
-    StartContinuity ("G1" / "G2"), ResampleStep, Tolerance, Degree, ..."""
+    StartContinuity ("tangent" / "G1" / "G2"), ResampleStep, Tolerance, Degree, ..."""
     if "PinEnds" in props:                       # the version-1 name (recorded macros)
         props["PinStart"] = props.pop("PinEnds")
     return new_feature(doc, "ElasticaFit", FitProxy,
@@ -575,4 +575,4 @@ def make(doc, sources=(), csv_file="", **props):
 
 __all__ = ["FitProxy", "fit_core", "core_options", "make", "stored_curves",
            "MODELS", "MODEL_NAMES", "DISTANCES", "DISTANCE_NAMES", "CONSTRAINT_FIELDS",
-           "CONTINUITIES"]
+           "CONTINUITIES", "CONTINUITY_NAMES"]

@@ -58,13 +58,17 @@ class FitPanel(Panel):
         # the end conditions apply to one-piece fits; a set one stays editable after a
         # split so that the user can clear what the split refuses
         row = e.rowCount()
+        # a pin gives way to a G1 / G2 join at that end (which starts at the edge's end)
         self.pin_start = self.check(e, "Pin the start", "PinStart",
                                     "The curve starts exactly at the first point (one-piece "
-                                    "fits)", when=lambda: self.one_piece() or o.PinStart,
+                                    "fits)", when=lambda: o.PinStart or (
+                                        self.one_piece() and o.StartContinuity == "tangent"),
                                     at=(row, 0))
         self.pin_end = self.check(e, "Pin the end", "PinEnd",
                                   "The curve ends exactly at the last point (one-piece fits)",
-                                  when=lambda: self.one_piece() or o.PinEnd, at=(row, 1))
+                                  when=lambda: o.PinEnd or (
+                                      self.one_piece() and o.EndContinuity == "tangent"),
+                                  at=(row, 1))
         self.tangent_buttons, self.joins = [], []
         for prop, text in (("StartTangent", "Start"), ("EndTangent", "End")):
             self.tangent_buttons.append(self.edge_button(
@@ -75,14 +79,16 @@ class FitPanel(Panel):
                 when=lambda prop=prop: self.one_piece() or bool(getattr(o, prop)),
                 freed=lambda i=len(self.joins): self.joins[i].setCurrentIndex(0)))
             join = self.choice(e, f"{text} join", f"{text}Continuity", F.CONTINUITIES,
-                               ["G1 (tangent)", "G2 (curvature)"],
-                               f"How the curve joins the {text.lower()} tangent's edge: G1 "
-                               "follows its tangent, G2 its curvature too (with Pin the "
-                               f"{text.lower()} on a point at the edge's end the join is G2)",
+                               [F.CONTINUITY_NAMES[c] for c in F.CONTINUITIES],
+                               f"How the curve meets the {text.lower()} tangent's edge: its "
+                               "tangent only, or joined to the edge's end: G1 starts there "
+                               "with its tangent, G2 with its curvature too (the edge's end in "
+                               "the fit plane)",
                                when=lambda prop=prop, text=text:
-                               getattr(o, f"{text}Continuity") == "G2" or
+                               getattr(o, f"{text}Continuity") != "tangent" or
                                (self.one_piece() and bool(getattr(o, prop))))
-            # G2 takes the edge's curvature: a typed one at that end is cleared
+            # a join takes the edge's point (G1, G2) and curvature (G2): a pin or a typed
+            # curvature at that end is cleared
             join.currentIndexChanged.connect(lambda _, text=text: self.joined(text))
             self.joins.append(join)
         self.start_curvature, self.end_curvature = (
@@ -106,11 +112,16 @@ class FitPanel(Panel):
         return not self.obj.SplitAtInflection
 
     def joined(self, where):
-        """A G2 join at ``where`` (Start / End) takes the edge's curvature: a typed one
-        there is unchecked."""
+        """A join at ``where`` (Start / End) takes the edge's end (G1, G2) and its
+        curvature (G2): a pin and a typed curvature there are unchecked."""
         o = self.obj
-        if getattr(o, f"{where}Continuity") == "G2" and getattr(o, f"Use{where}Curvature"):
-            (self.start_curvature if where == "Start" else self.end_curvature)[0].setChecked(False)
+        join = getattr(o, f"{where}Continuity")
+        pin = self.pin_start if where == "Start" else self.pin_end
+        curvature = (self.start_curvature if where == "Start" else self.end_curvature)[0]
+        if join != "tangent" and getattr(o, f"Pin{where}"):
+            pin.setChecked(False)
+        if join == "G2" and getattr(o, f"Use{where}Curvature"):
+            curvature.setChecked(False)
 
     def view_objects(self):
         """The data and the tangent edges stay in view with the fit."""
