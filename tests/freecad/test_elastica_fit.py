@@ -595,12 +595,24 @@ class FitConstraintTest(unittest.TestCase):
                       EndTangent=(self.lines, ["Edge2"])),
                  "use Elastic spline (G2 to edge at both ends)"),
                 (dict(StartContinuity="G1", StartTangent=(lifted, ["Edge1"])),
-                 "the start edge's end lies 2 mm off the fit plane")):
+                 "the start edge's end lies 2 mm off the fit plane, more than the Tolerance")):
             f = Fi.make(self.doc, [(self.sk, [])], **dict(dict(Model="smooth"), **props))
             self.doc.recompute()
             self.assertTrue(f.Status.startswith("error") and said in f.Status, (props, f.Status))
             self.assertTrue(f.Shape.isNull(), props)
         f = self._fit("smooth", StartTangent=(lifted, ["Edge1"]))   # its direction: fine
+        # off the plane by less than the Tolerance (a plane fitted to a scan): joined in it
+        near = self.doc.addObject("Sketcher::SketchObject", "Near")
+        near.Placement = S.SKETCH_PLACEMENT.multiply(App.Placement(App.Vector(0, 0, 5e-4),
+                                                                   App.Rotation()))
+        near.addGeometry(arc.Geometry[0], False)
+        self.doc.recompute()
+        f = Fi.make(self.doc, [(self.sk, [])], Model="smooth", Tolerance=1e-3,
+                    StartTangent=(near, ["Edge1"]), StartContinuity="G1")
+        self.doc.recompute()
+        self.assertIn("converged", f.Status)
+        self.assertLess((travel_ends(f)[0][0] - near.Shape.Edges[0].Vertexes[1].Point).Length,
+                        6e-4)
         f = self._fit("smooth", StartTangent=(self._arc_at(0, 20.0, True, True), ["Edge1"]),
                       StartContinuity="G2")
         self.assertTrue(any("the end conditions (Start join G2) raise the rms" in w

@@ -59,14 +59,15 @@ def tangent_angle(edge, at, forward, plane):
 
 def end_constraints(xy, plane, pin_start=False, pin_end=False, start_edge=None, end_edge=None,
                     start_curvature=None, end_curvature=None, start_join="tangent",
-                    end_join="tangent"):
+                    end_join="tangent", tol=1e-3):
     """el.fit's constraints for plane points xy (in their order): pinned ends at the
     first / last point, tangents of Part edges at their ends nearest those points
     (the direction of travel), curvatures (1/mm, + turning left seen from the plane's
     normal, 0 = a free end or an inflection). ``start_join`` / ``end_join`` (CONTINUITIES):
     how that end meets its edge: its tangent only, or joined to the edge's end (G1: its
     point, in the fit plane, and tangent; G2: its curvature there too, signed by the
-    direction of travel)."""
+    direction of travel); the edge's end may lie off the fit plane by up to ``tol`` (mm,
+    the B-spline's tolerance: a plane fitted to scanned points is not the sketch's)."""
     c = {}
     if pin_start:
         c["start_point"] = (float(xy[0][0]), float(xy[0][1]))
@@ -101,9 +102,10 @@ def end_constraints(xy, plane, pin_start=False, pin_end=False, start_edge=None, 
             continue
         u = edge.LastParameter if at_end else edge.FirstParameter
         p = plane.inverse().multVec(edge.valueAt(u))
-        if abs(p.z) > 1e-7 + 1e-9 * extent:    # FreeCAD's Precision::Confusion, mm
-            raise InputProblem(f"the {where} edge's end lies {abs(p.z):.3g} mm off the fit plane: "
-                               f"no {join} join in it (Tangent only follows its direction)")
+        if abs(p.z) > max(tol, 1e-7 + 1e-9 * extent):   # 1e-7 mm: FreeCAD's Confusion
+            raise InputProblem(f"the {where} edge's end lies {abs(p.z):.3g} mm off the fit plane, "
+                               f"more than the Tolerance {tol:g} mm: no {join} join in it "
+                               "(Tangent only follows its direction)")
         c[f"{where}_point"] = (float(p.x), float(p.y))
         if join == "G2":
             c[f"{where}_curvature"] = plane_curvature(
@@ -355,7 +357,7 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
                 xy = _resampled(xy, step)
                 if model == "discrete":
                     fixed["h"] = step            # the polygon's segment (seed 000 §5.4)
-            constraints = end_constraints(xy, plane, **ends)
+            constraints = end_constraints(xy, plane, tol=tol, **ends)
             fitted = _one_piece(xy, model, distance, fixed, constraints, fields)
         curves, results, data, feet, dist, rms, max_error = fitted
         if constraints:
