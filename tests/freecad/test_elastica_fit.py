@@ -560,8 +560,8 @@ class FitConstraintTest(unittest.TestCase):
                     u = min((arc.FirstParameter, arc.LastParameter),
                             key=lambda v: (arc.valueAt(v) - point).Length)
                     what = (model, r0, r1, joins, i)
-                    self.assertLess(ends[i][1].cross(App.Vector(arc.tangentAt(u)).normalize()).Length,
-                                    1e-9, what)
+                    along = App.Vector(arc.tangentAt(u)).normalize()
+                    self.assertLess(ends[i][1].cross(along).Length, 1e-9, what)
                     self.assertAlmostEqual(f.EndCurvatures[i], ends[i][2], delta=1e-9, msg=what)
                     gap = (ends[i][0] - arc.valueAt(u)).Length
                     if joins[i] == "tangent":
