@@ -573,6 +573,31 @@ class FitConstraintTest(unittest.TestCase):
                     elif ci == 1:       # arcs bent against the data: not their curvature
                         self.assertGreater(abs(ends[i][2] - want[i]), 1e-3, what)
 
+    def test_unordered_points_face_their_join_edges(self):
+        """A sketch of points has no order (its points are sorted along their principal
+        axis, whichever way that points): the edges picked for the start and the end say
+        which end is which. The data's last point called the start (an arc there as the
+        Start join G2, the line beside the first point as the End join G1), the same points
+        listed both ways: the fit runs from that point (its first fitted point), starts on
+        the arc's end with the arc's curvature (+1/80 along this travel) and ends on the
+        line's end."""
+        arc = self._arc_at(-1, 80.0, False, True)   # past the data's last point
+        a = arc.Shape.Edges[0]
+        line = self.lines.Shape.Edges[0]           # 5 mm before the first point
+        last = S.SKETCH_PLACEMENT.multVec(App.Vector(*self.xy[-1], 0))
+        for name, pts in (("Forward", self.xy), ("Backward", self.xy[::-1])):
+            sk = S.points_sketch(self.doc, pts, name)
+            f = Fi.make(self.doc, [(sk, [])], Model="smooth", Tolerance=1e-6,
+                        StartTangent=(arc, ["Edge1"]), StartContinuity="G2",
+                        EndTangent=(self.lines, ["Edge1"]), EndContinuity="G1")
+            self.doc.recompute()
+            self.assertIn("converged", f.Status, name)
+            (p0, _, k0), (p1, _, _) = travel_ends(f)
+            self.assertLess((f.DataPoints[0] - last).Length, 1e-9, name)
+            self.assertLess(min((p0 - v.Point).Length for v in a.Vertexes), 1e-9, name)
+            self.assertAlmostEqual(k0, 1 / 80.0, delta=1e-9, msg=name)
+            self.assertLess(min((p1 - v.Point).Length for v in line.Vertexes), 1e-9, name)
+
     def test_join_messages(self):
         """A join that cannot be: G1 / G2 without its edge, G2 beside a typed curvature, G1
         beside a pin at that end, on a split keyline, G2 at both ends (8 conditions), to an

@@ -11,6 +11,7 @@ import json
 import math
 
 import FreeCAD as App
+import Part
 
 from . import defaults
 from .geometry import (chain_bspline, el, link_edge, np, part_bspline,
@@ -284,6 +285,18 @@ def _coarse_polygon(xy, constraints, rms):
             "from them: choose Model Smooth elastica for so few points"]
 
 
+def _facing_the_edges(xy, plane, start_edge, end_edge):
+    """Unordered points (sorted along their principal axis, either way) in the order whose
+    start lies nearer the start tangent's edge and whose end nearer the end's: the edges
+    say which end the user means (the axis's sign does not)."""
+    def dist(edge, i):
+        return edge.distToShape(Part.Vertex(plane.multVec(App.Vector(*map(float, xy[i]), 0.0))))[0]
+
+    votes = [dist(e, -1) - dist(e, 0) if w == "start" else dist(e, 0) - dist(e, -1)
+             for w, e in (("start", start_edge), ("end", end_edge)) if e is not None]
+    return xy[::-1].copy() if votes and sum(v < 0 for v in votes) > len(votes) / 2 else xy
+
+
 def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", split=False,
              distance="orthogonal", pin_start=False, pin_end=False, start_edge=None,
              end_edge=None, start_curvature=None, end_curvature=None, start_join="tangent",
@@ -346,6 +359,7 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         if not ordered:
             xn, _ = el().pca_normalize(xy)
             xy = n.ascontiguousarray(xy[n.argsort(xn[:, 0], kind="stable")])
+            xy = _facing_the_edges(xy, plane, start_edge, end_edge)
         constraints, free_rms, warnings = {}, -1.0, []
         if split:
             if step > 0:
