@@ -162,6 +162,14 @@ def interpolate_c2(points, start=None, end=None) -> BSpline:
     return bspline_from_c(b)
 
 
+def fit_end_conditions(constraints):
+    """(start, end) for :func:`cubic_through` from a fit's constraints (el.fit's names):
+    each end's ``tangent`` and / or ``curvature``, None where it has neither."""
+    con = constraints or {}
+    return tuple({k: con[f"{w}_{k}"] for k in ("tangent", "curvature") if f"{w}_{k}" in con}
+                 or None for w in ("start", "end"))
+
+
 def cubic_through(points, start=None, end=None) -> BSpline:
     """The C2 cubic through a polygon's vertices (a discrete elastica's B-spline) with the
     end conditions of a fit's constraints: each end None (natural, curvature 0) or a dict

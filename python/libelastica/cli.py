@@ -123,7 +123,8 @@ def cmd_bspline(args) -> int:
         (doc if isinstance(doc, list) else [doc])
     curves = [curve_from_dict(it, name=args.file) for it in items]
     _finite(args.tol, "--tol")
-    splines = [_bspline_of(c, args.tol, args.degree) for c in curves]
+    splines = [_bspline_of(c, args.tol, args.degree, it.get("constraints") if isinstance(it, dict)
+                           else None) for c, it in zip(curves, items)]
     out = [{"curve": curve_to_dict(c), "bspline": b.to_dict()} for c, b in zip(curves, splines)]
     result = out[0] if len(out) == 1 else {"sides": out}
     if args.json:

@@ -62,6 +62,8 @@ def _side_record(res, data: np.ndarray, model: str) -> Dict[str, Any]:
            "rms": float(res.rms), "max_error": float(res.max_error),
            "iterations": int(res.iterations), "status": _status_text(res.status),
            "converged": _converged(res)}
+    if res.constraints:     # el.fit's (radians): `elastica bspline` keeps a discrete fit's ends
+        rec["constraints"] = res.constraints
     if getattr(res, "distances", None) is not None:
         # point-to-curve distances (+ = left of the curve) and each foot's arc length
         rec.update(distance=res.distance, distances=[float(v) for v in res.distances],

@@ -100,10 +100,8 @@ class FitResult:
         ends elsewhere (``tol`` and ``degree`` unused)."""
         if isinstance(self.curve, SmoothElastica):
             return self.curve.to_bspline(tol=tol, degree=degree)
-        from .bspline import cubic_through
-        con = self.constraints or {}
-        start, end = ({k: con[f"{w}_{k}"] for k in ("tangent", "curvature") if f"{w}_{k}" in con}
-                      or None for w in ("start", "end"))
+        from .bspline import cubic_through, fit_end_conditions
+        start, end = fit_end_conditions(self.constraints)
         return cubic_through(self.curve.points(), start=start, end=end)
 
     def model_points(self) -> np.ndarray:

@@ -349,10 +349,11 @@ def test_fit_orthogonal_distances_and_constraints(capsys, tmp_path):
     assert r.returncode == 0 and json.loads(r.stdout)["distance"] == "paired"
 
 
-def test_fit_discrete_bspline_keeps_the_end_constraints(capsys):
+def test_fit_discrete_bspline_keeps_the_end_constraints(capsys, tmp_path):
     """A discrete fit's B-spline (--bspline-tol, --dxf: the C2 cubic through its vertices)
     takes the constrained ends: a start tangent with a curvature (G2: both exactly), an end
-    tangent (clamped); without constraints its ends are natural (curvature 0)."""
+    tangent (clamped), and so does `elastica bspline` of the fit's JSON; without
+    constraints its ends are natural (curvature 0)."""
     r = cli(capsys, "fit", SAMPLE_S, "--model", "smooth", "--json", "-")
     c = el.io.curve_from_dict(json.loads(r.stdout)["curve"])
     a0, a1 = np.degrees(c.angle([0.0, c.length]))
@@ -365,6 +366,12 @@ def test_fit_discrete_bspline_keeps_the_end_constraints(capsys):
     got = np.degrees(np.arctan2(d[:, 1], d[:, 0]))
     assert np.max(np.abs(np.remainder(got - [a0, a1] + 180.0, 360.0) - 180.0)) < 1e-9
     assert abs(b.curvature([b.domain[0]])[0] - k0) <= 1e-9 * abs(k0)
+    # the fit's JSON carries its constraints: `elastica bspline` makes the same B-spline
+    (tmp_path / "f.json").write_text(r.stdout)
+    r2 = cli(capsys, "bspline", tmp_path / "f.json", "--json", "-")
+    assert r2.returncode == 0, r2.stderr
+    again = el.BSpline.from_dict(json.loads(r2.stdout)["bspline"])
+    assert np.array_equal(again.poles, b.poles) and np.array_equal(again.knots, b.knots)
     r = cli(capsys, "fit", SAMPLE_S, "--bspline-tol", "1e-6", "--json", "-")
     b = el.BSpline.from_dict(json.loads(r.stdout)["bspline"])
     assert np.max(np.abs(b.curvature(np.array(b.domain)))) < 1e-12
