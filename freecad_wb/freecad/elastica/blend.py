@@ -164,9 +164,6 @@ def g2_blend(r, i, mode, value, tol, degree):
     except (ValueError, ArithmeticError, RuntimeError) as exc:
         asked = (f"of length {value:g} mm" if "length" in kw else
                  f"at tension {tension_text(kw['tension'], float(n.linalg.norm(a1 - a0)))}")
-        # the library's own words, without its nested parentheses ("did not converge
-        # (best result seen returned)": nothing is returned here)
-        why = str(exc).split(" (")[0].replace("elastic_spline: ", "")
         hint = "pick another tension or length, or G1"
         try:
             free = e.elastic_spline(n.vstack([a0, a1]), **ends).length
@@ -176,8 +173,9 @@ def g2_blend(r, i, mode, value, tol, degree):
                     "the free G2 batten (tension 0) exists: try a lower tension, or G1")
         except (ValueError, ArithmeticError, RuntimeError):
             pass
-        solve = f"the batten's solve {why}" if why.startswith("did not") else \
-            f"the batten's solve: {why}"
+        # not the library's "(best result seen returned)": nothing is returned here
+        solve = "the batten's solve did not converge" if isinstance(exc, e.NotConvergedError) \
+            else f"the batten's solve: {str(exc).replace('elastic_spline: ', '', 1)}"
         raise InputProblem(f"no G2 blend {asked} ({solve}); the edges' curvatures are "
                            f"{k0:.3g} and {k1:.3g}/mm; {hint}") from None
     try:
