@@ -9,8 +9,8 @@ from .prep import (RESAMPLE_MAX_VERTICES, Frame, Frame2D, find_inflection, pca_n
 from .blend import BlendCurve, EllipticBlend, MQBlend, blend_curve, eck_d, eck_omega
 from .hermite import HERMITE_SIGMA_D2_MAX, HermiteChain, HermiteSolutions, hermite, hermite_analyse
 from .spline import ElasticSpline, elastic_spline
-from .bspline import (BSpline, cubic_through, interpolate_c2, smooth_chain_to_bspline,
-                      smooth_to_bspline)
+from .bspline import (BSpline, cubic_through, interpolate_c2, keyline_bspline,
+                      smooth_chain_to_bspline, smooth_to_bspline)
 from .affine import (AffinePolyline, OsculatingConics, affine_coords, affine_curvature,
                      affine_curvature_exact, affine_elements, affine_length, affine_polyline,
                      chaikin, elastica_affine_curvature, elastica_inflections, lane_riesenfeld,

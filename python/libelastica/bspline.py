@@ -200,6 +200,23 @@ def cubic_through(points, start=None, end=None) -> BSpline:
     return interpolate_c2(xy, start=condition(start, "start"), end=condition(end, "end"))
 
 
+def keyline_bspline(first, second, tol: float = 1e-6, degree: int = 3) -> BSpline:
+    """ONE B-spline of a keyline's two halves, each running from the joint outwards (as
+    :func:`fit_keyline` gives them), from the first half's far end through the joint to
+    the second's: smooth halves, the chain of the first reversed and the second
+    (:func:`smooth_chain_to_bspline`: within ``tol``, the joint's point, tangent and zero
+    curvature exact); discrete ones, the C2 cubic through the vertices of both (the joint
+    once), natural at the far ends (``tol``, ``degree`` unused). Two separate cubics
+    would each leave the joint with its own end tangent."""
+    from .core import DiscreteElastica, SmoothElastica
+    if isinstance(first, SmoothElastica) and isinstance(second, SmoothElastica):
+        return smooth_chain_to_bspline([first.reversed(), second], tol, degree)
+    if isinstance(first, DiscreteElastica) and isinstance(second, DiscreteElastica):
+        return cubic_through(np.vstack([first.points()[::-1], second.points()[1:]]))
+    raise ValueError("keyline_bspline: two SmoothElastica or two DiscreteElastica halves are "
+                     f"needed, got {type(first).__name__} and {type(second).__name__}")
+
+
 def smooth_to_bspline(curve, tol: float = 1e-6, degree: int = 3) -> BSpline:
     """Clamped degree-3..7 B-spline within ``tol`` (absolute, coordinate units) of a
     SmoothElastica everywhere, parametrised by its arc length; the certified

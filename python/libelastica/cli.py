@@ -117,23 +117,49 @@ def cmd_hermite(args) -> int:
 
 # ------------------------------------------------------------------ bspline
 
+def _curve_groups(doc):
+    """The curves of a JSON document in groups that make one B-spline each: a keyline
+    fit's two sides (records with "side", each from the joint outwards) together, any
+    other curve alone (a record, a list of them, a batch's documents, "sides")."""
+    groups = []
+    for d in doc if isinstance(doc, list) else [doc]:
+        sides = d.get("sides") if isinstance(d, dict) else None
+        if sides is None:
+            groups.append([d])
+        elif len(sides) == 2 and all(isinstance(s, dict) and "side" in s for s in sides):
+            groups.append(sides)
+        else:
+            groups += [[s] for s in sides]
+    return groups
+
+
 def cmd_bspline(args) -> int:
-    doc = read_json(args.file)
-    items = doc.get("sides") if isinstance(doc, dict) and "sides" in doc else \
-        (doc if isinstance(doc, list) else [doc])
-    curves = [curve_from_dict(it, name=args.file) for it in items]
+    import libelastica as el
+    groups = _curve_groups(read_json(args.file))
     _finite(args.tol, "--tol")
-    splines = [_bspline_of(c, args.tol, args.degree, it.get("constraints") if isinstance(it, dict)
-                           else None) for c, it in zip(curves, items)]
-    out = [{"curve": curve_to_dict(c), "bspline": b.to_dict()} for c, b in zip(curves, splines)]
+    out, splines, names = [], [], []
+    for items in groups:
+        curves = [curve_from_dict(it, name=args.file) for it in items]
+        if len(curves) == 2:           # a keyline: ONE B-spline through its joint
+            b = el.keyline_bspline(curves[0], curves[1], args.tol, args.degree)
+            out.append({"sides": [{"curve": curve_to_dict(c)} for c in curves],
+                        "bspline": b.to_dict()})
+            names.append(f"keyline of two {type(curves[0]).__name__}")
+        else:
+            it = items[0]
+            b = _bspline_of(curves[0], args.tol, args.degree,
+                            it.get("constraints") if isinstance(it, dict) else None)
+            out.append({"curve": curve_to_dict(curves[0]), "bspline": b.to_dict()})
+            names.append(type(curves[0]).__name__)
+        splines.append(b)
     result = out[0] if len(out) == 1 else {"sides": out}
     if args.json:
         write_json(result, "-" if args.json == "-" else args.outputs.path(args.json))
     if args.json != "-":
-        for c, b in zip(curves, splines):
+        for name, b in zip(names, splines):
             dev = (f"max deviation {b.max_deviation:.3g}" if b.max_deviation >= 0 else
                    "interpolates the vertices (deviation between them not certified)")
-            print(f"{type(c).__name__}: B-spline degree {b.degree}, {b.npoles} poles, "
+            print(f"{name}: B-spline degree {b.degree}, {b.npoles} poles, "
                   f"{len(b.knots)} knots, {dev}")
     if args.dxf:
         write_dxf_spline(splines, args.outputs.path(args.dxf))
@@ -408,7 +434,8 @@ def build_parser() -> argparse.ArgumentParser:
     b = sub.add_parser("bspline", help="B-spline of a fitted curve's JSON",
                        description="Convert the curve in a JSON written by 'fit --json' into a "
                                    "B-spline (certified within --tol for a smooth elastica; the "
-                                   "C2 cubic through the vertices for a discrete one).",
+                                   "C2 cubic through the vertices for a discrete one; a "
+                                   "keyline's two sides make one B-spline through the joint).",
                        epilog=BSPLINE_EXAMPLES, formatter_class=raw)
     b.add_argument("file", metavar="FIT.json")
     b.add_argument("--tol", type=float, default=1e-6, help="tolerance (default 1e-6)")

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sys
 from pathlib import Path
-from typing import Any, Dict, List, Optional
+from typing import Any, Dict, List, Optional, Tuple
 
 import numpy as np
 
@@ -96,9 +96,10 @@ def _constraints(args, data: np.ndarray) -> Dict[str, Any]:
     return con
 
 
-def fit_file(path: str, args, batch: bool) -> List[Dict[str, Any]]:
-    """Fit one file; returns one record per fitted curve (two with --keyline) and writes
-    the requested outputs. Raises InputError / ValueError for bad input."""
+def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[str, Any]]:
+    """Fit one file; returns one record per fitted curve (two with --keyline) and the
+    file's JSON document (the record; a keyline's {"file", "sides", "bspline"}), and
+    writes the requested outputs. Raises InputError / ValueError for bad input."""
     import libelastica as el
     pts = read_points(path, min_points=4)
     if args.step is not None:
@@ -148,32 +149,34 @@ def fit_file(path: str, args, batch: bool) -> List[Dict[str, Any]]:
         pictures.append((data, res))
     for rec in records:
         rec.update({"file": str(path), "plane": plane, "step": args.step, **extra_info})
+    doc = records[0] if len(records) == 1 else {"file": str(path), "sides": records}
     splines = []
     if args.bspline_tol is not None or args.dxf:
         tol = _finite(args.bspline_tol if args.bspline_tol is not None else 1e-6, "--bspline-tol")
-        for rec, (_, res) in zip(records, pictures):
-            b = res.to_bspline(tol, args.degree)       # a discrete fit's: its end constraints
-            rec["bspline"] = b.to_dict()
-            splines.append(b)
+        if args.keyline:       # ONE B-spline through the joint (x''y'', as the sides)
+            splines.append(kres.to_bspline(tol, args.degree))
+            doc["bspline"] = splines[0].to_dict()
+        else:
+            splines.append(res.to_bspline(tol, args.degree))   # a discrete fit's: its ends
+            records[0]["bspline"] = splines[0].to_dict()
     if to_input is not None:
         # B-splines are affine invariant: mapping the poles maps the curve exactly, so the
         # DXF gets the curves in the input's coordinates (3D for 3D input)
         from .bspline import BSpline
         splines = [BSpline(b.degree, to_input(b.poles), b.knots, b.mults, b.max_deviation)
                    for b in splines]
-    _write_fit_outputs(path, args, batch, records, pictures, splines, pts)
-    return records
+    _write_fit_outputs(path, args, batch, doc, records, pictures, splines, pts)
+    return records, doc
 
 
-def _write_fit_outputs(path, args, batch, records, pictures, splines, points) -> None:
+def _write_fit_outputs(path, args, batch, doc, records, pictures, splines, points) -> None:
     """JSON, pictures (in the fit's plane coordinates) and DXF (splines and points in the
     input's coordinates) of one file."""
     from .report import fit_picture, save_picture
     jpath = out_path(args.json, path, ".json", batch) if args.json and args.json != "-" and not (
         batch and args.json.endswith(".json") and "{stem}" not in args.json) else None
     if jpath is not None:
-        write_json(records[0] if len(records) == 1 else {"file": str(path), "sides": records},
-                   args.outputs.path(jpath))
+        write_json(doc, args.outputs.path(jpath))
     for spec, ext in ((args.svg, ".svg"), (args.png, ".png")):
         out = out_path(spec, path, ext, batch)
         if out is None or not pictures:
@@ -232,32 +235,38 @@ def _print_fit(rec: Dict[str, Any]) -> None:
         print(f"max error   {_fmt(rec['max_error'])}")
         print(f"iterations  {rec['iterations']}")
     if rec.get("bspline"):
-        b = rec["bspline"]
-        dev = (f"max deviation {_fmt(b['max_deviation'])}" if b["max_deviation"] >= 0
-               else "through the vertices (C2 cubic)")
-        print(f"B-spline    degree {b['degree']}, {len(b['poles'])} poles, {dev}")
+        _print_bspline(rec["bspline"])
     print(f"status      {rec['status']}")
+
+
+def _print_bspline(b: Dict[str, Any], what: str = "") -> None:
+    dev = (f"max deviation {_fmt(b['max_deviation'])}" if b["max_deviation"] >= 0
+           else "through the vertices (C2 cubic)")
+    print(f"B-spline    {what}degree {b['degree']}, {len(b['poles'])} poles, {dev}")
 
 
 def cmd_fit(args) -> int:
     files = args.files
     batch = len(files) > 1
     if not batch:
-        recs = fit_file(files[0], args, batch=False)
+        recs, doc = fit_file(files[0], args, batch=False)
         if args.json == "-":
-            write_json(recs[0] if len(recs) == 1 else {"file": files[0], "sides": recs}, "-")
+            write_json(doc, "-")
         else:
             for i, r in enumerate(recs):
                 if i:
                     print()
                 _print_fit(r)
+            if len(recs) > 1 and doc.get("bspline"):
+                print()
+                _print_bspline(doc["bspline"], "of the keyline: ")
         return EXIT_OK if all(r["converged"] for r in recs) else EXIT_NOCONV
     progress = _Progress(len(files), args.progress or sys.stderr.isatty())
-    rows, all_recs, bad = [], [], 0
+    rows, all_recs, docs, bad = [], [], [], 0
     for f in files:
         mark = args.outputs.mark()
         try:
-            recs = fit_file(f, args, batch=True)
+            recs, doc = fit_file(f, args, batch=True)
         except NotConvergedError as exc:
             args.outputs.rollback(mark)
             recs = [{"file": f, "model": args.model, "curve": None, "rms": None,
@@ -267,14 +276,17 @@ def cmd_fit(args) -> int:
             bad += 1
             recs = [{"file": f, "model": args.model, "curve": None, "rms": None,
                      "max_error": None, "status": f"bad input: {exc}", "converged": False}]
+            doc = recs[0]
         for r in recs:
             name = f if "side" not in r else f"{f} [{r['side'] + 1}]"
             k = r["curve"]["k"] if r.get("curve") else None
             rows.append([name, r["model"], k, r["rms"], r["max_error"], r["status"]])
         all_recs += recs
+        docs.append(doc)
         progress.step(Path(f).name)
     if args.json and "{stem}" not in args.json and (args.json == "-" or args.json.endswith(".json")):
-        write_json(all_recs, "-" if args.json == "-" else args.outputs.path(args.json))
+        # each file's document, as one file's JSON holds it (a keyline's two sides together)
+        write_json(docs, "-" if args.json == "-" else args.outputs.path(args.json))
     if args.json != "-":
         print(_table(["file", "model", "k", "rms", "max error", "status"], rows))
     n_noconv = sum(1 for r in all_recs if not r["converged"]) - bad

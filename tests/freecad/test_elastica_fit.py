@@ -378,25 +378,30 @@ class FitConstraintTest(unittest.TestCase):
     def setUp(self):
         import numpy as np
         self.doc = S.new_doc("ElasticaFitConstraints")
+        self._data(1.0)
+
+    def _data(self, scale):
+        """The noisy points (0.3 mm noise) and lines near their ends, 0.05 rad off the
+        data's own directions there, all scaled by ``scale``."""
+        import numpy as np
         xy, _ = S.keyline_xy(40)
-        self.xy = xy + np.random.default_rng(3).normal(0.0, 0.3, xy.shape)
+        self.xy = scale * (xy + np.random.default_rng(3).normal(0.0, 0.3, xy.shape))
         self.sk = S.points_sketch(self.doc, self.xy, "Noisy")
-        # lines near the data's ends, 0.05 rad off the data's own directions there
         self.lines = self.doc.addObject("Sketcher::SketchObject", "Tangents")
         self.lines.Placement = S.SKETCH_PLACEMENT
         for i, j, turn in ((0, 3, 0.05), (-1, -4, -0.05)):
             d = self.xy[i] - self.xy[j]
             a = math.atan2(d[1], d[0]) + turn
-            p = App.Vector(*self.xy[i], 0) + App.Vector(math.cos(a), math.sin(a), 0) * 5.0
+            p = App.Vector(*self.xy[i], 0) + App.Vector(math.cos(a), math.sin(a), 0) * 5.0 * scale
             self.lines.addGeometry(Part.LineSegment(p, p + App.Vector(math.cos(a), math.sin(a),
-                                                                      0) * 30.0), False)
+                                                                      0) * 30.0 * scale), False)
         self.doc.recompute()
 
     def tearDown(self):
         App.closeDocument(self.doc.Name)
 
     def _fit(self, model, **props):
-        f = Fi.make(self.doc, [(self.sk, [])], Model=model, Tolerance=1e-6, **props)
+        f = Fi.make(self.doc, [(self.sk, [])], **dict(dict(Model=model, Tolerance=1e-6), **props))
         self.doc.recompute()
         self.assertFalse(f.Status.startswith("error"), (model, props, f.Status))
         self.assertIn("converged", f.Status)
@@ -572,6 +577,35 @@ class FitConstraintTest(unittest.TestCase):
                         self.assertAlmostEqual(ends[i][2], want[i], delta=1e-9, msg=what)
                     elif ci == 1:       # arcs bent against the data: not their curvature
                         self.assertGreater(abs(ends[i][2] - want[i]), 1e-3, what)
+
+    def test_joins_at_extreme_scales(self):
+        """The joins of test_joins_to_picked_arcs_on_the_shape on the same drawing scaled
+        by 1e-3 (a 0.33 mm part) and 1e4 (a 3.3 km one), Tolerance scaled alike: tangent,
+        point and curvature of the arc met to 1e-9 of the scale."""
+        for scale in (1e-3, 1e4):
+            self._data(scale)
+            arcs = (self._arc_at(0, 70.0 * scale, True, True),
+                    self._arc_at(-1, 80.0 * scale, False, True))
+            want = (1 / 70.0, -1 / 80.0)          # times 1 / scale
+            for model, joins in (("smooth", ("G2", "G1")), ("discrete", ("G1", "G2")),
+                                 ("discrete", ("G2", "tangent"))):
+                f = self._fit(model, StartTangent=(arcs[0], ["Edge1"]),
+                              EndTangent=(arcs[1], ["Edge1"]), StartContinuity=joins[0],
+                              EndContinuity=joins[1], Tolerance=1e-6 * scale)
+                ends = travel_ends(f)
+                for i in (0, 1):
+                    arc = arcs[i].Shape.Edges[0]
+                    u = min((arc.FirstParameter, arc.LastParameter),
+                            key=lambda v: (arc.valueAt(v) - f.DataPoints[(0, -1)[i]]).Length)
+                    what = (scale, model, joins, i)
+                    along = App.Vector(arc.tangentAt(u)).normalize()
+                    self.assertLess(ends[i][1].cross(along).Length, 1e-9, what)
+                    if joins[i] != "tangent":
+                        self.assertLess((ends[i][0] - arc.valueAt(u)).Length, 1e-9 * scale, what)
+                    if joins[i] == "G2":
+                        self.assertAlmostEqual(ends[i][2] * scale, want[i], delta=1e-9, msg=what)
+                        self.assertAlmostEqual(f.EndCurvatures[i] * scale, want[i], delta=1e-9,
+                                               msg=what)
 
     def test_unordered_points_face_their_join_edges(self):
         """A sketch of points has no order (its points are sorted along their principal

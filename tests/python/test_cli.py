@@ -385,6 +385,59 @@ def test_fit_keyline_3d(capsys, tmp_path):
     assert len(doc["sides"][0]["inflection_point"]) == 3       # mapped back to 3D
 
 
+@pytest.mark.parametrize("model", ["discrete", "smooth"])
+def test_fit_keyline_bspline_is_one_curve_through_the_joint(capsys, tmp_path, fake_ezdxf, model):
+    """--keyline with --bspline-tol / --dxf writes ONE B-spline from the first point to the
+    last through the joint (two natural cubics of a discrete keyline each left the joint
+    with its own tangent): the document's "bspline", the DXF's one SPLINE (in the input's
+    coordinates); discrete, through every vertex of both sides, the joint once; smooth,
+    on both halves to its certified deviation, the joint's tangent and zero curvature
+    exact; `elastica bspline` of the fit's JSON gives the same B-spline."""
+    r = cli(capsys, "fit", SAMPLE_S, "--keyline", "--model", model, "--bspline-tol", "1e-6",
+            "--json", tmp_path / "k.json", "--dxf", tmp_path / "k.dxf")
+    assert r.returncode == 0, r.stderr
+    assert "B-spline    of the keyline" in r.stdout
+    doc = json.loads((tmp_path / "k.json").read_text())
+    assert all("bspline" not in side for side in doc["sides"])
+    b = el.BSpline.from_dict(doc["bspline"])
+    first, second = (el.io.curve_from_dict(side["curve"]) for side in doc["sides"])
+    if model == "discrete":
+        v = np.vstack([first.points()[::-1], second.points()[1:]])
+        t = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(v, axis=0), axis=1))])
+        assert np.max(np.abs(b(t) - v)) <= 1e-9 * t[-1]
+    else:
+        s1, s2 = np.linspace(0.0, first.length, 200), np.linspace(0.0, second.length, 200)
+        on_halves = np.vstack([first.points(s1), second.points(s2)])
+        t = np.concatenate([first.length - s1, first.length + s2])   # near arc length
+        for _ in range(4):         # the feet on the B-spline (Newton on (b - p) . b' = 0)
+            d, d1, d2 = b(t) - on_halves, b.derivative(t), b.derivative(t, 2)
+            t = np.clip(t - np.sum(d * d1, 1) / np.sum(d1 * d1 + d * d2, 1), *b.domain)
+        assert np.max(np.linalg.norm(b(t) - on_halves, axis=1)) <= b.max_deviation <= 1e-6
+        a = second.angle([0.0])[0]
+        tangent = b.derivative([first.length])[0]
+        u = tangent / np.linalg.norm(tangent)
+        assert u[0] * np.sin(a) - u[1] * np.cos(a) == pytest.approx(0.0, abs=1e-12)
+        assert abs(b.curvature([first.length])[0]) <= 1e-9 * np.max(np.abs(b.curvature(s1)))
+    (_, ctrl, _, _, _), = [c for c in fake_ezdxf if c[0] == "spline"]
+    f = {k: np.array(v) for k, v in doc["sides"][0]["frame2d"].items()}   # x''y'' -> input
+    to_input = f["origin"] + np.outer(b.poles[:, 0], f["f1"]) + np.outer(b.poles[:, 1], f["f2"])
+    np.testing.assert_allclose(np.array(ctrl)[:, :2], to_input, rtol=0, atol=1e-9 * b.domain[1])
+    r = cli(capsys, "bspline", tmp_path / "k.json", "--json", "-")
+    assert r.returncode == 0, r.stderr
+    again = json.loads(r.stdout)
+    assert len(again["sides"]) == 2
+    np.testing.assert_allclose(el.BSpline.from_dict(again["bspline"]).poles, b.poles, rtol=0,
+                               atol=1e-12 * b.domain[1])
+    if model == "discrete":      # a batch's JSON: each file's document, as one file's
+        r = cli(capsys, "fit", SAMPLE_S, SAMPLE_S, "--keyline", "--bspline-tol", "1e-6",
+                "--json", tmp_path / "all.json")
+        assert r.returncode == 0, r.stderr
+        docs = json.loads((tmp_path / "all.json").read_text())
+        assert [len(d["sides"]) for d in docs] == [2, 2] and all("bspline" in d for d in docs)
+        r = cli(capsys, "bspline", tmp_path / "all.json", "--json", "-")
+        assert [len(d["sides"]) for d in json.loads(r.stdout)["sides"]] == [2, 2]
+
+
 def test_fit_not_converged_exit_1(capsys):
     r = cli(capsys, "fit", SAMPLE_S, "--model", "smooth", "--max-iter", "1")
     assert r.returncode == 1, (r.stdout, r.stderr)

@@ -604,6 +604,26 @@ def test_keyline_one_g2_curve(model, seed):
     assert np.linalg.norm(J3 - kl.inflection_xyz) <= 1.0 * kf.prepared.r
 
 
+@pytest.mark.parametrize("model", ["discrete", "smooth"])
+def test_keyline_to_bspline_runs_through_the_joint(model):
+    """KeylineFit.to_bspline is ONE B-spline from the first side's far end through the
+    joint to the second's (x''y''); keyline_bspline refuses halves of two models."""
+    kl = keyline_3d(seed=0, noise=1e-3)
+    kf = el.fit_keyline(kl.xyz, model=model)
+    b = kf.to_bspline(1e-6 * kl.length)
+    a, c = kf.first.curve, kf.second.curve
+    ends = [a.points()[-1], c.points()[-1]] if model == "discrete" else \
+        [a.points([a.length])[0], c.points([c.length])[0]]
+    np.testing.assert_allclose(b(np.array(b.domain)), ends, rtol=0, atol=1e-9 * kl.length)
+    # the joint at its parameter: the first side's arc length, or its polygon's length
+    t = a.length if model == "smooth" else \
+        np.sum(np.linalg.norm(np.diff(a.points(), axis=0), axis=1))
+    np.testing.assert_allclose(b([t])[0], kf.joint, rtol=0, atol=1e-9 * kl.length)
+    other = el.fit_keyline(kl.xyz, model="smooth" if model == "discrete" else "discrete")
+    with pytest.raises(ValueError, match="two SmoothElastica or two DiscreteElastica"):
+        el.keyline_bspline(a, other.second.curve)
+
+
 @pytest.mark.parametrize("noise_mm", [0.1, 0.2, 0.3])
 def test_keyline_seed000_conditions_h_free(noise_mm):
     """Seed 000 §5: r = 1 mm, scanner noise 0.1-0.3 mm, valley radius ~150 mm,

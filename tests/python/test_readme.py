@@ -50,6 +50,6 @@ def test_dxf_holds_the_splines(tmp_path):
                           capture_output=True, text=True)
     assert done.returncode == 0, done.stderr
     splines = ezdxf.readfile(str(out)).modelspace().query("SPLINE")
-    assert len(splines) == 2                          # one per side of the inflection
+    assert len(splines) == 1                          # the keyline, through its joint
     for sp in splines:
         assert sp.dxf.degree == 3 and len(sp.control_points) >= 4

@@ -250,12 +250,8 @@ def _shape_bspline(model, curves, results, split, tol, degree):
     joint is G2); discrete, the C2 cubic through the vertices (a keyline's both
     halves), natural at free ends, the constrained tangent, curvature or both (G2) at
     others."""
-    if model == "smooth":
-        return chain_bspline([curves[0].reversed(), curves[1]] if split else curves,
-                             tol, degree)
-    if split:
-        a, b = curves[0].points(), curves[1].points()
-        return el().cubic_through(np().vstack([a[::-1], b[1:]]))
+    if split or model == "smooth":
+        return chain_bspline(curves, tol, degree, keyline=split)
     return results[0].to_bspline()          # the fit's end constraints on the cubic
 
 
