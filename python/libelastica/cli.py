@@ -388,7 +388,7 @@ def build_parser() -> argparse.ArgumentParser:
                         "'x0=0,y0=0,phi=0'")
     f.add_argument("--distance", choices=("orthogonal", "paired"),
                    help="what is minimised: the points' distances to the curve or polygon "
-                        "(default; the discrete model on evenly spaced points: paired) or "
+                        "(default; the discrete model on equally spaced points: paired) or "
                         "point i <-> vertex i / arc length i L/(n-1)")
     c = f.add_argument_group("constraints (met to 1e-10 of the data's size, or exit 2 naming "
                              "the one that cannot be met)")

@@ -1,7 +1,7 @@
 """Least-squares fairing by elasticae (seed 000 §4) and the keyline pipeline (§5).
 
 Both models are fitted by orthogonal distance (each point's distance to the curve,
-or to the discrete model's polygon) by default; on evenly spaced points the
+or to the discrete model's polygon) by default; on equally spaced points the
 discrete model pairs vertex i with point i (seed 000 (4.6)).
 Every result reports point-to-curve distances: ``distances`` (signed, + = left of the
 curve), ``foot_s`` (arc length of each point's foot), ``rms`` and ``max_error``.
@@ -266,9 +266,10 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     (4.6); smooth: point i at arc length i*length/(n-1) for equilateral data, the
     chord-length parameter, the points' estimated noise taken out of each chord,
     otherwise; ``param`` = "auto" | "uniform" | "chord").
-    Default: orthogonal, except the discrete model on evenly spaced points (an
+    Default: orthogonal, except the discrete model on equally spaced points (an
     equilateral polygon, e.g. from :func:`resample_equilateral`, or samples at equal
-    steps: runs of max(3, (n-1)/16) segments of means within 1.3 x): paired.
+    steps: the polyline reaches every point i within a tenth of a mean segment of i
+    mean segments): paired.
     Sketched or unevenly scanned points need no resampling. A fit by distance to the
     curve follows the points: one that strays from them (a loop or a pass where there is
     no point, the points passed out of order) is fitted again from the paired fit and

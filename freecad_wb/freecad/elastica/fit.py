@@ -421,7 +421,7 @@ class FitProxy(FeatureProxy):
                  "to the curve (any spacing); paired = point i against arc length i L/(n-1), "
                  "for equilateral data (e.g. resampled). A discrete fit minimises the distance "
                  "to its polygon on unevenly spaced points and pairs point i with vertex i on "
-                 "evenly spaced ones; rms and max error are point-to-curve distances either way",
+                 "equally spaced ones; rms and max error are point-to-curve distances either way",
                  DISTANCES, "orthogonal")
         add_property(obj, "App::PropertyBool", "SplitAtInflection", "Fit",
                      "Fit a keyline as one G2 curve of two elasticae meeting at its inflection "

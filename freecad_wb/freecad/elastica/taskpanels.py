@@ -36,9 +36,9 @@ class FitPanel(Panel):
                                     "What the smooth fit minimises: each point's distance to "
                                     "the curve (any spacing), or point i against arc length "
                                     "i L/(n-1) (equilateral data). A discrete fit minimises the "
-                                    "distance to its polygon on uneven points, pairs point i with "
-                                    "vertex i on evenly spaced ones", when=lambda: o.Model == "smooth"
-                                    and not o.SplitAtInflection)
+                                    "distance to its polygon on uneven points, pairs point i "
+                                    "with vertex i on equally spaced ones",
+                                    when=lambda: o.Model == "smooth" and not o.SplitAtInflection)
         self.step = self.number(g, "Resample", "ResampleStep", 0.0, 1e6, 0.5, "mm",
                                 "Equilateral resampling step before fitting (mm); 0 keeps the "
                                 "points (a split keyline then uses 1/100 of its length)")
