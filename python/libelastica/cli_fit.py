@@ -67,8 +67,25 @@ def _side_record(res, data: np.ndarray, model: str) -> Dict[str, Any]:
     if getattr(res, "distances", None) is not None:
         # point-to-curve distances (+ = left of the curve) and each foot's arc length
         rec.update(distance=res.distance, distances=[float(v) for v in res.distances],
-                   foot_s=[float(v) for v in res.foot_s])
+                   foot_s=[float(v) for v in res.foot_s],
+                   outliers=[int(i) for i in res.outliers()])   # el.far_points
     return rec
+
+
+def _warn_far_points(path, rec: Dict[str, Any]) -> None:
+    """A warning on stderr naming the points far from the fitted curve (the record's
+    "outliers": indices into the fitted points, the file's rows unless resampled)."""
+    far = rec.get("outliers")
+    if not far:
+        return
+    d = np.abs(np.asarray(rec["distances"]))
+    rest = np.delete(d, far)
+    rows = ", ".join(str(i) for i in far[:10]) + (", ..." if len(far) > 10 else "")
+    side = f" (side {rec['side'] + 1})" if "side" in rec else ""
+    print(f"{PROG} fit: warning: {path}{side}: {len(far)} of {len(d)} points lie "
+          f"{d[far].min():.3g} to {d[far].max():.3g} from the curve, the others within "
+          f"{rest.max():.3g}: outliers? (points {rows}, counted from 0) Each pulls the fit "
+          "towards itself: remove them to fit the rest", file=sys.stderr)
 
 
 def _constraints(args, data: np.ndarray) -> Dict[str, Any]:
@@ -149,6 +166,7 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
         pictures.append((data, res))
     for rec in records:
         rec.update({"file": str(path), "plane": plane, "step": args.step, **extra_info})
+        _warn_far_points(path, rec)
     doc = records[0] if len(records) == 1 else {"file": str(path), "sides": records}
     splines = []
     if args.bspline_tol is not None or args.dxf:

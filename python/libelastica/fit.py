@@ -60,7 +60,7 @@ class FitResult:
     ``foot_s`` (n,): arc length along the curve of each point's nearest point;
     ``rms`` / ``max_error``: from ``distances`` (input units); ``distance``:
     "orthogonal" (what was minimised: the points' distances to the curve / polygon)
-    or "paired" (point i <-> vertex i, seed 000 (4.6), the discrete default on evenly
+    or "paired" (point i <-> vertex i, seed 000 (4.6), the discrete default on equally
     spaced points; or the smooth paired arc lengths); ``iterations``; ``status``: 0 when
     converged, else the C status (EL_ENOCONV / EL_EMAXITER: ``curve`` is the best
     seen); ``ipopt_status`` / ``used_ipopt``: whether Ipopt ran for the kept fit
@@ -113,6 +113,11 @@ class FitResult:
             return self.curve.points()
         return self.curve.points(self.s)
 
+    def outliers(self, factor: Optional[float] = None) -> np.ndarray:
+        """Indices of the points far from the fitted curve (:func:`far_points`)."""
+        return far_points(self.distances, self.points,
+                          OUTLIER_FACTOR if factor is None else factor)
+
     def foot_points(self) -> np.ndarray:
         """Each data point's nearest point on the curve (the other end of its
         distance), shape (n, 2)."""
@@ -123,6 +128,28 @@ class FitResult:
         j = np.clip(np.floor(self.foot_s / c.h).astype(int), 0, len(V) - 2)
         t = (self.foot_s / c.h - j)[:, None]
         return V[j] + t * (V[j + 1] - V[j])
+
+
+OUTLIER_FACTOR = 6.0
+OUTLIER_MIN_POINTS = 20
+
+
+def far_points(distances, points, factor: float = OUTLIER_FACTOR) -> np.ndarray:
+    """Indices of the points whose distance to a fitted curve exceeds ``factor`` times the
+    typical distance, 1.4826 x the median |distance| (for normal noise its standard
+    deviation, which a few far points hardly move), and 1e-6 of the points' extent (on
+    exact data the distances are rounding): scan glitches, points of other geometry,
+    each pulling a least-squares fit towards itself. None among fewer than
+    OUTLIER_MIN_POINTS points (too few for a typical distance)."""
+    d = np.abs(as_real_array(distances, "far_points: distances"))
+    pts = as_real_array(points, "far_points: points")
+    if d.ndim != 1 or pts.ndim != 2 or len(pts) != len(d):
+        raise ValueError("far_points: distances (n,) and points (n, 2 or 3) are needed")
+    if len(d) < OUTLIER_MIN_POINTS:
+        return np.empty(0, dtype=np.intp)
+    extent = float(np.max(np.ptp(pts, axis=0)))
+    typical = 1.4826 * float(np.median(d))
+    return np.nonzero((d > factor * typical) & (d > 1e-6 * extent))[0]
 
 
 def _pair(value, name: str):

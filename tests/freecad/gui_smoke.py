@@ -14,7 +14,8 @@ Screenshots (whole window, 3D view included) stay in $ELASTICA_TEST_OUT
 (build/freecad/): gui_demo.png, gui_blend_panel.png (a G2 blend by length, its
 guide ducks), gui_fit_panel.png, gui_fit_ends.png (its warning line), gui_fit_g2.png
 (joined G2 to an arc), gui_fit_sparse.png (a sketch of 7 points fitted by the
-discrete model: its warning line), gui_spline_g2.png (a G2 start),
+discrete model: its warning line), gui_fit_outliers.png (a scan's two glitches on
+the warning line), gui_spline_g2.png (a G2 start),
 gui_spline_panel.png, gui_ellblend_panel.png (its warning line), gui_g2quad_panel.png,
 gui_comb_panel.png. The outcome goes
 to gui_smoke.result (first line PASS or FAIL); FreeCAD is then ended with os._exit
@@ -673,6 +674,29 @@ def fit_panel_sparse(doc, S):
     check(len(doc.Objects) == n0 - 1, "fit of 7 points: Cancel removes the new feature")
 
 
+def fit_panel_far_points(doc, S):
+    """A scan's sketch of 40 noisy points with two glitches (15 and 25 mm off): the warning
+    line counts them, with their distances; the residual segments run out to them."""
+    import numpy as np
+    xy, _ = S.keyline_xy(40)
+    xy = xy + np.random.default_rng(4).normal(0.0, 0.1, xy.shape) + [0.0, -160.0]
+    xy[[10, 25]] += [[12.0, -9.0], [-20.0, 15.0]]
+    psk = S.points_sketch(doc, xy, "Glitches")
+    panel = open_panel(doc, "Elastica_Fit", [(psk, "")], "Fit elastica of a scan with glitches")
+    f = panel.obj
+    wait()
+    text = panel.warning[1].text()
+    check(panel.warning[0].isVisible() and "2 of 40 points lie" in text and "outliers?" in text,
+          f"fit of a scan with glitches: the warning line counts them ({text})")
+    view = Gui.ActiveDocument.ActiveView
+    view.setCameraOrientation(f.Plane.Rotation)
+    from freecad.elastica.panelbase import show_box
+    show_box(App.BoundBox(psk.Shape.BoundBox))
+    screenshot("gui_fit_outliers.png")
+    panel.reject()
+    pump()
+
+
 # ------------------------------------------------------------------ the others
 
 def ellblend_panel(doc, S):
@@ -766,6 +790,7 @@ def run():
     spline_panel(doc, S)
     ksk = fit_panel(doc, S)
     fit_panel_sparse(doc, S)
+    fit_panel_far_points(doc, S)
     ellblend_panel(doc, S)
     g2quad_panel(doc, ksk)
     comb_panel(doc, blend)

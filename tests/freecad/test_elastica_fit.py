@@ -228,6 +228,27 @@ class FitResultTest(unittest.TestCase):
     def tearDown(self):
         App.closeDocument(self.doc.Name)
 
+    def test_points_far_from_the_curve_are_named(self):
+        """Two glitches in 40 noisy sketch points: the fit's warning counts them, gives
+        their distances and the farthest's place; the points without them give none."""
+        import numpy as np
+        noisy = self.xy + np.random.default_rng(4).normal(0.0, 0.1, self.xy.shape)
+        glitched = noisy.copy()
+        glitched[[10, 25]] += [[12.0, -9.0], [-20.0, 15.0]]
+        for name, pts, far in (("Clean", noisy, False), ("Glitched", glitched, True)):
+            for model in ("smooth", "discrete"):
+                f = Fi.make(self.doc, [(S.points_sketch(self.doc, pts, name), [])], Model=model)
+                self.doc.recompute()
+                self.assertIn("converged", f.Status)
+                said = [w for w in f.Warnings if "outliers?" in w]
+                if not far:
+                    self.assertEqual(said, [], (name, model))
+                    continue
+                self.assertEqual(len(said), 1, (model, list(f.Warnings)))
+                self.assertIn("2 of 40 points lie", said[0])
+                top = S.SKETCH_PLACEMENT.multVec(App.Vector(*glitched[25], 0))
+                self.assertIn(f"the farthest at ({top.x:.4g}, {top.y:.4g}, {top.z:.4g})", said[0])
+
     def test_fit_keeps_its_points_and_their_feet(self):
         import numpy as np
         f = Fi.make(self.doc, [(self.sk, [])], Model="smooth")

@@ -438,6 +438,24 @@ def test_fit_keyline_bspline_is_one_curve_through_the_joint(capsys, tmp_path, fa
         assert [len(d["sides"]) for d in json.loads(r.stdout)["sides"]] == [2, 2]
 
 
+def test_fit_warns_of_points_far_from_the_curve(capsys, tmp_path):
+    """Three glitches in a scan: a warning on stderr names them (points 10, 30, 45 of the
+    file, their distances), the fit's exit code unchanged, the JSON record lists them as
+    "outliers"; the sample's own points give no such warning."""
+    c = el.SmoothElastica(x0=0, y0=0, phi=0.3, mu=1 / 80 ** 2, k=0.7, q=0.2, length=250)
+    pts = c.points(np.linspace(0, 250, 60)) + np.random.default_rng(3).normal(0, 0.1, (60, 2))
+    pts[[10, 30, 45]] += [[15, -10], [-12, 8], [20, 20]]
+    path = tmp_path / "scan.csv"
+    np.savetxt(path, pts, delimiter=",", header="x,y", comments="")
+    r = cli(capsys, "fit", path, "--model", "smooth", "--json", tmp_path / "f.json")
+    assert r.returncode == 0, r.stderr
+    assert "3 of 60 points lie" in r.stderr and "points 10, 30, 45, counted from 0" in r.stderr
+    assert json.loads((tmp_path / "f.json").read_text())["outliers"] == [10, 30, 45]
+    r = cli(capsys, "fit", SAMPLE_S, "--json", "-")
+    assert r.returncode == 0 and "outliers" not in r.stderr
+    assert json.loads(r.stdout)["outliers"] == []
+
+
 def test_fit_not_converged_exit_1(capsys):
     r = cli(capsys, "fit", SAMPLE_S, "--model", "smooth", "--max-iter", "1")
     assert r.returncode == 1, (r.stdout, r.stderr)

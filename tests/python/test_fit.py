@@ -182,6 +182,38 @@ def test_discrete_default_on_uneven_points_reaches_the_noise(seed):
     assert_distances_measured(r, polyline_length(pts))
 
 
+def test_far_points_name_the_glitches_of_a_scan():
+    """Three glitches in 60 noisy points (9 to 28 mm off, noise 0.1 mm) pull the fit (k 0.90
+    for 0.70): FitResult.outliers names exactly them, for both models; without them the
+    fit is at the noise. No point is named on noisy scans, even or not, of 20 to 400 points
+    (120 fits), on exact points, or among fewer than 20."""
+    c = el.SmoothElastica(x0=0, y0=0, phi=0.3, mu=1 / 80 ** 2, k=0.7, q=0.2, length=250)
+    rng = np.random.default_rng(3)
+    clean = c.points(np.linspace(0, 250, 60)) + rng.normal(0, 0.1, (60, 2))
+    glitched = clean.copy()
+    glitched[[10, 30, 45]] += [[15, -10], [-12, 8], [20, 20]]
+    for model in ("smooth", "discrete"):
+        r = el.fit(glitched, model=model)
+        assert abs(r.curve.k - 0.7) > 0.1                    # pulled
+        np.testing.assert_array_equal(r.outliers(), [10, 30, 45])
+        np.testing.assert_array_equal(el.far_points(r.distances, r.points), [10, 30, 45])
+        rest = el.fit(np.delete(glitched, r.outliers(), axis=0), model=model)
+        assert rest.rms <= 0.12 and abs(rest.curve.k - 0.7) < 0.03
+        assert len(el.fit(clean, model=model).outliers()) == 0
+        exact = c.points(np.linspace(0, 250, 40))
+        assert len(el.fit(exact, model=model).outliers()) == 0
+        assert len(el.fit(glitched[:19], model=model).outliers()) == 0
+    for seed in range(60):
+        rng = np.random.default_rng(seed)
+        n = int(rng.integers(20, 400))
+        s = np.sort(rng.uniform(0, 250, n)) if seed % 2 else np.linspace(0, 250, n)
+        pts = c.points(s) + rng.normal(0, 10 ** rng.uniform(-3, 0), (n, 2))
+        for model in ("smooth", "discrete"):
+            assert len(el.fit(pts, model=model).outliers()) == 0, (seed, model)
+    with pytest.raises(ValueError, match="far_points"):
+        el.far_points(np.zeros(30), np.zeros((29, 2)))
+
+
 def test_discrete_default_on_slowly_changing_spacing():
     """Points whose step grows by 10 % or 25 % from one end to the other (a scan slowing
     down, a sketch drawn faster), and 10 000 points at random places (every run of them as

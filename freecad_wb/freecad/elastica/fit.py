@@ -281,6 +281,22 @@ def _coarse_polygon(xy, constraints, rms):
             "from them: choose Model Smooth elastica for so few points"]
 
 
+def _far_points(data, dist, plane):
+    """The warning for points far from the fitted curve (el.far_points: glitches of a scan,
+    points of other geometry), naming the farthest's place, else none."""
+    n = np()
+    far = el().far_points(dist, data)
+    if not len(far):
+        return []
+    d = n.abs(n.asarray(dist, dtype=float))
+    rest = n.delete(d, far)
+    worst = plane.multVec(App.Vector(*map(float, data[far[n.argmax(d[far])]]), 0.0))
+    return [f"{len(far)} of {len(d)} points lie {d[far].min():.3g} to {d[far].max():.3g} mm from "
+            f"the curve, the others within {rest.max():.3g} mm (the farthest at ({worst.x:.4g}, "
+            f"{worst.y:.4g}, {worst.z:.4g})): outliers? Each pulls the fit towards itself: "
+            "remove them to fit the rest"]
+
+
 def _facing_the_edges(xy, plane, start_edge, end_edge):
     """Unordered points (sorted along their principal axis, either way) in the order whose
     start lies nearer the start tangent's edge and whose end nearer the end's: the edges
@@ -375,6 +391,7 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
                                                   fields)
         if model == "discrete" and not split and not step:
             warnings = warnings + _coarse_polygon(xy, constraints, rms)
+        warnings = warnings + _far_points(data, dist, plane)
         bspline = _shape_bspline(model, curves, results, split, tol, degree)
     except InputProblem:
         raise
