@@ -805,7 +805,13 @@ enum { EL_HERMITE_SIGMA_D2_MAX = 100000 };
  * [-10, 40]: none of the 25 265 solutions of the 10 000 bench problems the
  * defaults were tuned on, 2 of 25 250 on another 10 000; with sigma |p1-p0|^2 in
  * [0, 5]: 18 of 26 810 and 22 of 26 770. Raise opt->samples where completeness
- * matters more than time).
+ * matters more than time). Nearly collinear tangents with the end point ahead: within
+ * opt->tol of collinear the straight segment is returned; beyond, the near-straight curve
+ * starts from a state next to the saddle (sigma > 0) or the centre (sigma < 0) of the
+ * curvature's phase plane, which the solver's unknown resolves only to ~1e-16 absolute,
+ * and is missed for tangents up to ~1e-8 rad from collinear (sigma |p1-p0|^2 from -10 to
+ * 10, and some up to 1e-5), ~1e-7 at 100, ~1e-4 at 1e3-1e4 (found at sigma = 0 from
+ * ~5e-10).
  * Every solution is verified with el_smooth_eval and returned only if its residual
  * is <= opt->tol (after a Newton polish on the parameters when it misses by a
  * little, then a second one with k held at each of its nearest doubles).

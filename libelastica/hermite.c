@@ -478,7 +478,13 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
     pr.V1 = cr * u1[0] + sr * u1[1];
     pr.V2 = -sr * u1[0] + cr * u1[1];
     el__hermite_set_case(&pr);
-    const int collinear = fabs(pr.P1) < 1e-13 && pr.P2 > 0.0 && fabs(pr.V1) < 1e-13 && pr.V2 > 0.0;
+    /* the straight segment meets the ends to tol (its residual is checked below): p1 ahead
+     * on the line of t0 and t1 along t0, each to tol. Near-straight curves between nearly
+     * collinear tangents lie next to the saddle of the curvature's phase plane, where the
+     * x chart's states lose their relative precision (tangents 1e-9 rad from collinear at
+     * sigma |p1 - p0|^2 = 10: f off by 0.3 at the curve's state, the curve lost; 1e-12 at
+     * 10 to 1e4 too); within tol the segment is one */
+    const int collinear = fabs(pr.P1) <= opt->tol && pr.P2 > 0.0 && fabs(pr.V1) <= opt->tol && pr.V2 > 0.0;
 
     hrootlist roots = {NULL, 0, 0};
     int rc;
@@ -505,7 +511,7 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
     size_t n = 0;
     if (collinear && (opt->mode == EL_HERMITE_TENSION || Ln <= 1.0 + 1e-12)) {
         straight_solution(&fr, opt->mode == EL_HERMITE_TENSION ? opt->sigma : 0.0, &sol[n]);
-        if (!residual(&fr, &sol[n], &sol[n].residual)) n++;
+        if (!residual(&fr, &sol[n], &sol[n].residual) && sol[n].residual <= opt->tol) n++;
     }
     double cc, cL;
     int circle_unrep = 0;
