@@ -12,6 +12,7 @@ import csv
 import io as _io
 import json
 import math
+import re
 from pathlib import Path
 from typing import Any, Dict, Optional, Union
 
@@ -27,30 +28,44 @@ class InputError(ValueError):
     """Bad user input (a file that is missing, malformed, or holds unusable points)."""
 
 
+# a number written with a decimal comma (1,5 or -0,25e3): semicolon-separated files
+# from spreadsheets in many locales
+_DECIMAL_COMMA = re.compile(r"[+-]?\d*,\d+(?:[eE][+-]?\d+)?")
+# a header's coordinate names: x, Y, "z [mm]", "x (mm)"
+_AXIS_NAME = re.compile(r"\s*([xyzXYZ])\s*(?:[\[(].*[\])])?\s*")
+
+
 def _parse_text(text: str, name: str) -> np.ndarray:
-    """Rows of 2 or 3 numbers separated by commas, semicolons, tabs or spaces.
-    Blank lines and lines starting with '#' are skipped; one header line of
-    non-numbers (e.g. ``x,y,z``) is allowed as the first data line."""
+    """Rows of numbers separated by semicolons (with decimal commas or points), commas,
+    tabs or spaces. Blank lines and lines starting with '#' are skipped; one header line
+    of non-numbers (e.g. ``x,y,z``) is allowed as the first data line. Rows of more than 3
+    numbers (a scanner's point ids, normals, intensities) are read when the header names
+    the coordinate columns ``x``, ``y`` and optionally ``z`` (units in brackets allowed);
+    a header that names them picks them by name in any case ("id,x,y", "y,x")."""
     rows = []
+    header = None
     first = True
     data_lines = [ln for ln in text.splitlines() if ln.strip() and not ln.lstrip().startswith("#")]
     sample = "\n".join(data_lines[:20])
     delim = None
-    if "," in sample:
-        delim = ","
-    elif ";" in sample:
+    if ";" in sample:
         delim = ";"
+    elif "," in sample:
+        delim = ","
     reader = (csv.reader(_io.StringIO(text), delimiter=delim) if delim
               else (line.split() for line in text.splitlines()))
     for lineno, fields in enumerate(reader, start=1):
         fields = [f.strip() for f in fields if f.strip() != ""]
         if not fields or fields[0].startswith("#"):
             continue
+        if delim == ";":
+            fields = [f.replace(",", ".") if _DECIMAL_COMMA.fullmatch(f) else f for f in fields]
         try:
             row = [float(f) for f in fields]
         except ValueError:
             if first and not any(_is_number(f) for f in fields):
                 first = False          # a header line
+                header = fields
                 continue
             raise InputError(f"{name}: line {lineno}: not a number in {','.join(fields)!r}")
         first = False
@@ -60,7 +75,15 @@ def _parse_text(text: str, name: str) -> np.ndarray:
     widths = {len(r) for r in rows}
     if len(widths) != 1:
         raise InputError(f"{name}: rows have different numbers of columns {sorted(widths)}")
-    return np.array(rows, dtype=np.float64)
+    arr = np.array(rows, dtype=np.float64)
+    axes = [m.group(1).lower() if (m := _AXIS_NAME.fullmatch(h)) else None for h in header or []]
+    if len(axes) == arr.shape[1] and "x" in axes and "y" in axes and \
+            all(axes.count(a) <= 1 for a in "xyz"):
+        return arr[:, [axes.index(a) for a in "xyz" if a in axes]]   # by the header's names
+    if arr.shape[1] > 3:
+        raise InputError(f"{name}: {arr.shape[1]} columns: name the coordinates x, y (and z) "
+                         "in a header line to read them from more columns, or give 2 or 3")
+    return arr
 
 
 def _is_number(s: str) -> bool:
@@ -75,10 +98,11 @@ def read_points(path: PathLike, min_points: int = 3) -> np.ndarray:
     """Read an (n, 2) or (n, 3) float64 array of points from ``path``.
 
     Formats: ``.npy`` (a numeric array of shape (n, 2) or (n, 3)), otherwise text
-    with comma, semicolon or whitespace separated columns, ``#`` comments and an
-    optional header line. Raises :class:`InputError` for a missing or unreadable
-    file, malformed rows, a column count other than 2 or 3, NaN/inf values,
-    fewer than ``min_points`` points, or all points equal.
+    with comma, semicolon (decimal commas allowed) or whitespace separated columns,
+    ``#`` comments and an optional header line, which can pick the columns ``x``, ``y``,
+    ``z`` out of more. Raises :class:`InputError` for a missing or unreadable file,
+    malformed rows, a column count other than 2 or 3 without such a header, NaN/inf
+    values, fewer than ``min_points`` points, or all points equal.
     """
     p = Path(path)
     name = str(path)

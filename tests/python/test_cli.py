@@ -153,6 +153,34 @@ def test_read_points_formats(tmp_path):
         read_points(tmp_path / "a.csv", min_points=5)
 
 
+def test_read_points_as_scanners_and_spreadsheets_write_them(tmp_path):
+    """Semicolons with decimal commas (a spreadsheet in many locales); a header that names
+    the coordinate columns picks them by name, out of more columns (point ids, normals)
+    or in another order ("id,x,y" read the ids as x before); more than 3 columns without
+    such names, or with a name twice, is refused naming the way out."""
+    pts = np.array([[0.0, -1.25], [1.5, 0.5], [2.0, 0.75], [3.0, 1e3]])
+    z = np.array([0.5, 0.25, -3.0, 2.0])
+    files = {
+        "comma.csv": "x;y\n" + "".join(f"{x};{y}\n".replace(".", ",") for x, y in pts),
+        "units.csv": "X [mm]; Y [mm]\n" + "".join(f"{x:.2f};{y:.2f}\n".replace(".", ",")
+                                                  for x, y in pts),
+        "ids.csv": "id,x,y\n" + "".join(f"{i + 7},{x},{y}\n" for i, (x, y) in enumerate(pts)),
+        "swapped.txt": "y x\n" + "".join(f"{y} {x}\n" for x, y in pts),
+        "scan.csv": "id,x,y,z,nx,ny,nz\n" + "".join(f"{i},{x},{y},{c},0,0,1\n"
+                                                     for i, ((x, y), c) in enumerate(zip(pts, z))),
+    }
+    for name, text in files.items():
+        (tmp_path / name).write_text(text)
+        got = read_points(tmp_path / name)
+        want = np.c_[pts, z] if name == "scan.csv" else pts
+        np.testing.assert_array_equal(got, want, err_msg=name)
+    for text in ("1,2,3,4\n5,6,7,8\n9,1,2,3\n", "a,b,c,d\n1,2,3,4\n5,6,7,8\n9,1,2,3\n",
+                 "x,x,y,z\n1,2,3,4\n5,6,7,8\n9,1,2,3\n"):
+        (tmp_path / "bad.csv").write_text(text)
+        with pytest.raises(InputError, match="name the coordinates x, y"):
+            read_points(tmp_path / "bad.csv")
+
+
 # ------------------------------------------------------------------ hermite
 
 def test_hermite_table_json_and_svg(capsys, tmp_path):
