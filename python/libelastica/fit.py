@@ -329,6 +329,10 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     n = pts.shape[0]
     if n < 4:
         raise ValueError(f"fit: need at least 4 points, got {n}")
+    kind = SmoothElastica if model == "smooth" else DiscreteElastica
+    if initial is not None and not isinstance(initial, kind):
+        raise ValueError(f"fit: initial must be a {kind.__name__} for the {model} model, got "
+                         f"{type(initial).__name__}")
     try:   # options of the wrong shape (not a mapping, bounds not pairs, ...): ValueError
         o = _options(model, n, fixed, bounds, tol, max_iter, limited_memory, max_candidates, param,
                      initial, distance, constraints)

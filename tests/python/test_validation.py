@@ -137,6 +137,10 @@ def test_wrong_types_raise_value_error_not_type_or_attribute_error():
         el.fit(ARC, model=["smooth"])
     with pytest.raises(ValueError):
         el.fit(ARC, initial="guess")
+    with pytest.raises(ValueError, match="initial must be a DiscreteElastica"):
+        el.fit(ARC, initial=el.SmoothElastica(k=0.5))     # the other model's curve (TypeError)
+    with pytest.raises(ValueError, match="initial must be a SmoothElastica"):
+        el.fit(ARC, model="smooth", initial=el.DiscreteElastica(n=len(ARC)))
     with pytest.raises(ValueError):
         el.osculating_conics(ARC, kind=["outer"])
     with pytest.raises(ValueError):
