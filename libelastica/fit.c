@@ -33,32 +33,29 @@ static const double LOOSE_TOL = 1e-5;
 
 /* ------------------------------------------------------------ one fit */
 
-/* Whether point i lies where vertex i of an equilateral polygon would: the chord length
- * along the data up to point i within EVEN_DRIFT of a mean segment from i mean segments,
- * for every i. The discrete model's paired distance (seed 000 (4.6)) pairs point i with
- * vertex i at i h along the polygon, so it is meant for such data (an equilateral
- * polygon, el_resample_equilateral's, or samples at equal steps: their noise moves each
- * point, and the sum of the segments telescopes, so it drifts by the noise, not by a
- * random walk). On other points a vertex is not where its point is and the paired fit
- * is far from them (measured: 42 points of two densities, noise 0.2: paired rms 12.4,
- * point-to-polygon 0.15; a 175-point scan of spacing 1:6 with two gaps, noise 0.15: 4.2
- * and 0.15). A slow change of spacing is enough: the former test (runs of (n-1)/16
- * segments of means within 1.3 x) paired 40 points whose step grows by 10 % from one end
- * to the other, noise 0.1: rms 0.44 where the distance to the polygon gives 0.093, k 0.79
- * for 0.70; and 10 000 points at random places (their runs' means even, their places a
- * random walk): 0.14 for 0.099. */
-#define EVEN_DRIFT 0.1
+/* Whether the points are spaced evenly along the data: the mean segment of every run
+ * of w = max(3, (n-1)/16) consecutive segments within 1.3 x of each other's (a run's
+ * mean evens out the noise of scanned samples taken at equal steps, not a change of
+ * density or a gap). The discrete model's paired distance (seed 000 (4.6)) is meant
+ * for such data (an equilateral polygon, el_resample_equilateral's, or equal steps); on
+ * other points (sketched, scanned unevenly, with gaps) a vertex is not where its point
+ * is, and the paired fit is far from the points (measured: 42 points of two densities,
+ * noise 0.2: paired rms 12.4, orthogonal 0.15; a 175-point scan of spacing 1:6 with
+ * two gaps, noise 0.15: 4.2 and 0.15). */
+/* Even spacing in this sense is necessary for the pairing, not sufficient: a slow change of
+ * spacing, or points at random places (every run as dense as the next), pass it, and the
+ * paired fit is then judged by its points' slip along the polygon (el__fit_unpaired). */
 static int evenly_spaced(const double *xy, size_t n)
 {
-    double total = 0.0;
-    for (size_t i = 0; i + 1 < n; i++) total += hypot(xy[2 * i + 2] - xy[2 * i], xy[2 * i + 3] - xy[2 * i + 1]);
-    const double mean = total / (double)(n - 1);
-    double along = 0.0;
-    for (size_t i = 0; i + 1 < n; i++) {
-        along += hypot(xy[2 * i + 2] - xy[2 * i], xy[2 * i + 3] - xy[2 * i + 1]);
-        if (!(fabs(along - (double)(i + 1) * mean) <= EVEN_DRIFT * mean)) return 0;
+    const size_t m = n - 1, w = m / 16 > 3 ? m / 16 : 3;
+    if (m < w) return 1;
+    double run = 0.0, lo = HUGE_VAL, hi = 0.0;
+    for (size_t i = 0; i < m; i++) {
+        run += hypot(xy[2 * i + 2] - xy[2 * i], xy[2 * i + 3] - xy[2 * i + 1]);
+        if (i >= w) run -= hypot(xy[2 * (i - w) + 2] - xy[2 * (i - w)], xy[2 * (i - w) + 3] - xy[2 * (i - w) + 1]);
+        if (i + 1 >= w) { lo = fmin(lo, run); hi = fmax(hi, run); }
     }
-    return 1;
+    return hi <= 1.3 * lo;
 }
 
 /* The first feet of a fit by distance with feet (orthogonal smooth): the fractions' places
@@ -660,8 +657,16 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
         else if (stray > FIT_STRAY && (st = el__fit_follow_points(model, xy, n, opt, flags, noise_in, sc, stray, res, d, fs)) == EL_OK)
             st = res->status;
     }
+    /* paired by the spacing test alone: refitted by distance to the polygon where its points
+     * slip along the polygon from their vertices (fit_restart.c) */
+    int unpaired = 0;
+    if (ok && kind == FIT_PAIRED && o.distance == EL_DISTANCE_AUTO && !o.use_initial && !lm_only &&
+        !(flags & FIT_RUN_INNER) && st != EL_ENOMEM) {
+        st = el__fit_unpaired(model, xy, n, opt, res, d, fs);
+        unpaired = res->distance == EL_DISTANCE_ORTHOGONAL;   /* its run polished it as needed */
+    }
     /* not certified: Ipopt from this one (fit_restart.c); held ends as its rows */
-    if (deferred && !(flags & FIT_RUN_INNER) && (st == EL_ENOCONV || st == EL_EMAXITER))
+    if (deferred && !unpaired && !(flags & FIT_RUN_INNER) && (st == EL_ENOCONV || st == EL_EMAXITER))
         st = el__fit_fallback(model, xy, n, opt, ends_chart ? FIT_RUN_ROWS : FIT_RUN_POLISH, res, d, fs);
     /* pinned at both ends with a zero start curvature: fitted in the ends chart too, that
      * curvature held there (el__fit_ends_held); with an end curvature other than 0 (a row

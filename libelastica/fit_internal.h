@@ -450,6 +450,11 @@ int el__fit_follow_points(int model, const double *xy, size_t n, const el_fit_op
  * else res->status, or EL_ENOMEM. */
 int el__fit_fallback(int model, const double *xy, size_t n, const el_fit_options *opt, int flags, fit_out *res,
                      double *d, double *fs);
+/* fit_restart.c: a discrete fit paired by the spacing test alone (*res, d, fs) whose points
+ * slip along its polygon from their vertices, fitted again by distance to the polygon from
+ * its result, which replaces it when lower; res->status, or EL_ENOMEM. */
+int el__fit_unpaired(int model, const double *xy, size_t n, const el_fit_options *opt, fit_out *res, double *d,
+                     double *fs);
 /* fit_restart.c: a fit pinned at both ends with a zero start curvature (*res, d, fs, from the
  * start-state chart with the end point as Ipopt's rows) fitted again in the ends chart with
  * that curvature held (FIT_RUN_ENDS_HELD), which replaces it when certified and lower or

@@ -408,8 +408,7 @@ static void run_job(thread_job *j)
         for (size_t i = 0; i < 2 * n; i++) xy[i] += 1e-3 * test_uniform(&rng, -1, 1);
         el_fit_options o;
         el_fit_options_defaults(&o);
-        /* vertex i <-> point i: the samples are the model's own equal steps (their noise, a
-         * tenth of a step, makes the default measure to the polygon) */
+        /* vertex i <-> point i, as the samples are the model's own equal steps */
         o.distance = EL_DISTANCE_PAIRED;
         /* a k range excluding the truth; one guess (the circle) creeps towards its end, EL_OK
          * at rms 0.027 after ~1000 iterations where 200 leave it uncertified at 0.060 (the
