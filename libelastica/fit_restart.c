@@ -196,6 +196,23 @@ int el__fit_follow_points(int model, const double *xy, size_t n, const el_fit_op
     return st == EL_ENOMEM ? st : EL_OK;
 }
 
+/* el__fit_run from *res's curve (the caller's start) with the options opt, the distance
+ * measure replaced unless distance < 0: its result into *alt, its distances and feet into
+ * *buf (2 n, the caller frees it); EL_ENOMEM (*buf NULL), else el__fit_run's status. */
+static int rerun_from(int model, const double *xy, size_t n, const el_fit_options *opt, int distance, int flags,
+                      const fit_out *res, fit_out *alt, double **buf)
+{
+    el_fit_options ro;
+    if (opt) ro = *opt; else el_fit_options_defaults(&ro);
+    if (distance >= 0) ro.distance = distance;
+    ro.use_initial = 1;
+    memset(alt, 0, sizeof *alt);
+    alt->status = -1;
+    *buf = malloc(sizeof(double) * 2 * n);
+    if (!*buf) return EL_ENOMEM;
+    return el__fit_run(model, xy, n, &ro, flags, res->params, alt, *buf, *buf + n);
+}
+
 /* The paired fit's points slip along its polygon by more than PAIRING_SLIP times their
  * distance from it (rms of foot arc length - i h against the rms distance, beyond 1e-4 of
  * the polygon's length: a fit without noise differs from its points by the model's O(h^2)
@@ -219,16 +236,9 @@ int el__fit_unpaired(int model, const double *xy, size_t n, const el_fit_options
         su += u * u;
     }
     if (!(sqrt(su / (double)n) > PAIRING_SLIP * res->rms + 1e-4 * (double)(n - 1) * h)) return res->status;
-    el_fit_options ro;
-    if (opt) ro = *opt; else el_fit_options_defaults(&ro);
-    ro.distance = EL_DISTANCE_ORTHOGONAL;
-    ro.use_initial = 1;
     fit_out alt;
-    memset(&alt, 0, sizeof alt);
-    alt.status = -1;
-    double *buf = malloc(sizeof(double) * 2 * n);
-    if (!buf) return EL_ENOMEM;
-    const int st = el__fit_run(model, xy, n, &ro, 0, res->params, &alt, buf, buf + n);
+    double *buf;
+    const int st = rerun_from(model, xy, n, opt, EL_DISTANCE_ORTHOGONAL, 0, res, &alt, &buf);
     if (st != EL_ENOMEM && alt.status != -1 && alt.rms < res->rms) {
         memcpy(alt.initial, res->initial, sizeof alt.initial);
         replace_fit(res, &alt, buf, n, d, fs);
@@ -249,15 +259,9 @@ int el__fit_unpaired(int model, const double *xy, size_t n, const el_fit_options
 int el__fit_fallback(int model, const double *xy, size_t n, const el_fit_options *opt, int flags, fit_out *res,
                      double *d, double *fs)
 {
-    el_fit_options ro;
-    if (opt) ro = *opt; else el_fit_options_defaults(&ro);
-    ro.use_initial = 1;
     fit_out alt;
-    memset(&alt, 0, sizeof alt);
-    alt.status = -1;
-    double *buf = malloc(sizeof(double) * 2 * n);
-    if (!buf) return EL_ENOMEM;
-    int st = el__fit_run(model, xy, n, &ro, flags, res->params, &alt, buf, buf + n);
+    double *buf;
+    int st = rerun_from(model, xy, n, opt, -1, flags, res, &alt, &buf);
     const int lower = !(flags & FIT_RUN_ROWS) && (st == EL_ENOCONV || st == EL_EMAXITER) && alt.f < res->f;
     if (st == EL_OK || lower) {
         memcpy(alt.initial, res->initial, sizeof alt.initial);
