@@ -16,7 +16,7 @@ import numpy as np
 
 from ._ffi import NotConvergedError
 from .cli_common import (EXIT_BADINPUT, EXIT_INTERNAL, EXIT_NOCONV, EXIT_OK, PROG, _bspline_of,
-                         _finite, _plane_record, _table)
+                         _finite, _input_map, _mapped_bspline, _plane_record, _table)
 from .cli_fit import cmd_fit
 from .cli_outputs import Outputs, check_outputs
 from .io import (InputError, curve_from_dict, curve_to_dict, read_json, read_points,
@@ -151,7 +151,9 @@ def cmd_bspline(args) -> int:
                             it.get("constraints") if isinstance(it, dict) else None)
             out.append({"curve": curve_to_dict(curves[0]), "bspline": b.to_dict()})
             names.append(type(curves[0]).__name__)
-        splines.append(b)
+        # the JSON in the curve's coordinates (as the fit record's), the DXF in the input's
+        to_input = _input_map(items[0]) if isinstance(items[0], dict) else None
+        splines.append(_mapped_bspline(b, to_input))
     result = out[0] if len(out) == 1 else {"sides": out}
     if args.json:
         write_json(result, "-" if args.json == "-" else args.outputs.path(args.json))

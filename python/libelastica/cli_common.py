@@ -102,6 +102,38 @@ def _bspline_of(curve, tol: float, degree: int, constraints=None):
     return cubic_through(curve.points(), start=start, end=end)
 
 
+def _input_map(rec: Dict[str, Any]):
+    """The map from a fit record's curve coordinates to its input's, as `fit` writes its
+    DXF: a keyline's x''y'' to the plane ("frame2d"), the plane to 3D ("plane"); None when
+    they are the same."""
+    from .prep import Frame, Frame2D
+    maps = []
+    f2, pl = rec.get("frame2d"), rec.get("plane")
+    if f2:
+        maps.append(Frame2D(origin=np.asarray(f2["origin"], float), f1=np.asarray(f2["f1"], float),
+                            f2=np.asarray(f2["f2"], float), eigenvalues=np.zeros(2)).to_parent)
+    if pl:
+        maps.append(Frame(origin=np.asarray(pl["origin"], float), e1=np.asarray(pl["e1"], float),
+                          e2=np.asarray(pl["e2"], float), e3=np.asarray(pl["normal"], float),
+                          eigenvalues=np.zeros(3), rms=float(pl["rms"])).to_3d)
+    if not maps:
+        return None
+
+    def to_input(xy):
+        for m in maps:
+            xy = m(xy)
+        return xy
+    return to_input
+
+
+def _mapped_bspline(b, to_input):
+    """The BSpline b with its poles mapped by to_input (an affine map: the curve maps
+    exactly); b itself when to_input is None."""
+    from .bspline import BSpline
+    return b if to_input is None else BSpline(b.degree, to_input(b.poles), b.knots, b.mults,
+                                              b.max_deviation)
+
+
 def _plane_record(frame) -> Optional[Dict[str, Any]]:
     if frame is None:
         return None

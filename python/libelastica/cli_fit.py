@@ -10,8 +10,8 @@ import numpy as np
 
 from ._ffi import NotConvergedError
 from .cli_common import (EXIT_BADINPUT, EXIT_NOCONV, EXIT_OK, PROG, _converged,
-                         _finite, _float_list, _fmt, _plane_record, _Progress, _status_text,
-                         _table)
+                         _finite, _float_list, _fmt, _mapped_bspline, _plane_record, _Progress,
+                         _status_text, _table)
 from .cli_outputs import out_path
 from .io import InputError, curve_to_dict, read_points, write_dxf_spline, write_json
 
@@ -177,12 +177,8 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
         else:
             splines.append(res.to_bspline(tol, args.degree))   # a discrete fit's: its ends
             records[0]["bspline"] = splines[0].to_dict()
-    if to_input is not None:
-        # B-splines are affine invariant: mapping the poles maps the curve exactly, so the
-        # DXF gets the curves in the input's coordinates (3D for 3D input)
-        from .bspline import BSpline
-        splines = [BSpline(b.degree, to_input(b.poles), b.knots, b.mults, b.max_deviation)
-                   for b in splines]
+    # the DXF gets the curves in the input's coordinates (3D for 3D input)
+    splines = [_mapped_bspline(b, to_input) for b in splines]
     _write_fit_outputs(path, args, batch, doc, records, pictures, splines, pts)
     return records, doc
 

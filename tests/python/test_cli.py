@@ -484,6 +484,23 @@ def test_fit_warns_of_points_far_from_the_curve(capsys, tmp_path):
     assert json.loads(r.stdout)["outliers"] == []
 
 
+@pytest.mark.parametrize("case", ["3D one piece", "2D keyline", "3D keyline"])
+def test_bspline_of_a_fit_json_writes_the_dxf_in_the_inputs_coordinates(capsys, tmp_path,
+                                                                        fake_ezdxf, case):
+    """`elastica bspline fit.json --dxf` writes the same SPLINE as `elastica fit --dxf`: in
+    the input's coordinates (3D for a 3D scan, the input's axes for a keyline's x''y''), not
+    the curve's own (it drew a 3D scan's curve in its fit plane's coordinates, at the origin)."""
+    args = {"3D one piece": [SAMPLE_3D, "--model", "smooth"], "2D keyline": [SAMPLE_S, "--keyline"],
+            "3D keyline": [EX / "keyline_3d.csv", "--keyline", "--step", "3"]}[case]
+    r = cli(capsys, "fit", *args, "--json", tmp_path / "f.json", "--dxf", tmp_path / "f.dxf")
+    assert r.returncode == 0, r.stderr
+    r = cli(capsys, "bspline", tmp_path / "f.json", "--dxf", tmp_path / "b.dxf")
+    assert r.returncode == 0, r.stderr
+    fit_dxf, bspline_dxf = [c for c in fake_ezdxf if c[0] == "spline"]
+    assert len(fit_dxf[1]) == len(bspline_dxf[1]) and fit_dxf[3] == bspline_dxf[3]
+    np.testing.assert_allclose(np.array(bspline_dxf[1]), np.array(fit_dxf[1]), rtol=0, atol=1e-9)
+
+
 def test_fit_not_converged_exit_1(capsys):
     r = cli(capsys, "fit", SAMPLE_S, "--model", "smooth", "--max-iter", "1")
     assert r.returncode == 1, (r.stdout, r.stderr)
