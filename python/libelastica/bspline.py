@@ -162,12 +162,19 @@ def interpolate_c2(points, start=None, end=None) -> BSpline:
     return bspline_from_c(b)
 
 
-def fit_end_conditions(constraints):
-    """(start, end) for :func:`cubic_through` from a fit's constraints (el.fit's names):
-    each end's ``tangent`` and / or ``curvature``, None where it has neither."""
+def fitted_bspline(curve, tol: float = 1e-6, degree: int = 3, constraints=None) -> BSpline:
+    """The B-spline of a fitted curve for CAD: a smooth elastica's (or a Hermite chain's)
+    within ``tol``, certified, its ends exact; a discrete one's C2 cubic through its
+    vertices (:func:`cubic_through`) with the end tangents and curvatures among the fit's
+    ``constraints`` (el.fit's names; G2 where both), natural ends elsewhere (``tol`` and
+    ``degree`` unused). FitResult.to_bspline and `elastica bspline` of a fit's JSON."""
+    from .core import DiscreteElastica
+    if not isinstance(curve, DiscreteElastica):
+        return curve.to_bspline(tol=tol, degree=degree)
     con = constraints or {}
-    return tuple({k: con[f"{w}_{k}"] for k in ("tangent", "curvature") if f"{w}_{k}" in con}
-                 or None for w in ("start", "end"))
+    start, end = ({k: con[f"{w}_{k}"] for k in ("tangent", "curvature") if f"{w}_{k}" in con}
+                  or None for w in ("start", "end"))
+    return cubic_through(curve.points(), start=start, end=end)
 
 
 def cubic_through(points, start=None, end=None) -> BSpline:

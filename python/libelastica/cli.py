@@ -15,8 +15,8 @@ from typing import Optional, Sequence
 import numpy as np
 
 from ._ffi import NotConvergedError
-from .cli_common import (EXIT_BADINPUT, EXIT_INTERNAL, EXIT_NOCONV, EXIT_OK, PROG, _bspline_of,
-                         _finite, _input_map, _mapped_bspline, _plane_record, _table)
+from .cli_common import (EXIT_BADINPUT, EXIT_INTERNAL, EXIT_NOCONV, EXIT_OK, PROG, _finite,
+                         _input_map, _mapped_bspline, _plane_record, _table)
 from .cli_fit import cmd_fit
 from .cli_outputs import Outputs, check_outputs
 from .io import (InputError, curve_from_dict, curve_to_dict, read_json, read_points,
@@ -147,8 +147,8 @@ def cmd_bspline(args) -> int:
             names.append(f"keyline of two {type(curves[0]).__name__}")
         else:
             it = items[0]
-            b = _bspline_of(curves[0], args.tol, args.degree,
-                            it.get("constraints") if isinstance(it, dict) else None)
+            b = el.bspline.fitted_bspline(curves[0], args.tol, args.degree,
+                                          it.get("constraints") if isinstance(it, dict) else None)
             out.append({"curve": curve_to_dict(curves[0]), "bspline": b.to_dict()})
             names.append(type(curves[0]).__name__)
         # the JSON in the curve's coordinates (as the fit record's), the DXF in the input's

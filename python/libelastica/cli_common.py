@@ -89,19 +89,6 @@ class _Progress:
         sys.stderr.flush()
 
 
-def _bspline_of(curve, tol: float, degree: int, constraints=None):
-    """The B-spline of a curve: tolerance-certified for a smooth elastica (or a Hermite
-    chain of them); for a discrete one the C2 cubic through its vertices (max_deviation
-    unknown, -1) with the end tangents and curvatures of the fit's ``constraints``
-    (a fit record's; natural ends without), as FitResult.to_bspline."""
-    from .core import DiscreteElastica
-    if not isinstance(curve, DiscreteElastica):
-        return curve.to_bspline(tol=tol, degree=degree)
-    from .bspline import cubic_through, fit_end_conditions
-    start, end = fit_end_conditions(constraints)
-    return cubic_through(curve.points(), start=start, end=end)
-
-
 def _input_map(rec: Dict[str, Any]):
     """The map from a fit record's curve coordinates to its input's, as `fit` writes its
     DXF: a keyline's x''y'' to the plane ("frame2d"), the plane to 3D ("plane"); None when

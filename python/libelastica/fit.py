@@ -98,11 +98,8 @@ class FitResult:
         on it); a discrete one's C2 cubic through its vertices (:func:`cubic_through`)
         with the fit's constrained end tangents and curvatures (G2 where both), natural
         ends elsewhere (``tol`` and ``degree`` unused)."""
-        if isinstance(self.curve, SmoothElastica):
-            return self.curve.to_bspline(tol=tol, degree=degree)
-        from .bspline import cubic_through, fit_end_conditions
-        start, end = fit_end_conditions(self.constraints)
-        return cubic_through(self.curve.points(), start=start, end=end)
+        from .bspline import fitted_bspline
+        return fitted_bspline(self.curve, tol, degree, self.constraints)
 
     def model_points(self) -> np.ndarray:
         """The model points the fit used for the data points, shape (n, 2): the feet
