@@ -474,15 +474,39 @@ static int phase_fit(const segs *S, double phi, double mu, double A, double k, c
     return EL_OK;
 }
 
-/* A circular arc of curvature kappa, start tangent theta0, length L as a guess: k = 10
- * (kappa = 2 k w cn u ~ 2 k w for k > 1, within 1 % of constant), u(0) = 0. */
+/*
+ * A circular arc of curvature kappa, start tangent theta0, length L as a guess: an
+ * elastica whose curvature kappa = 2 k w cn u stays within ~1 % of kappa along it. Turning
+ * by 2 rad or more, k = 10 (cn u within 1 % of 1 for k > 1), u(0) = 0. A gentler arc has
+ * the force F = w^2 at 1e-2 / L^2 instead, along the arc's mid tangent (phi = theta0 +
+ * kappa L / 2: the turn is a small swing about the pendulum's rest, theta'' = -F sin(theta
+ * - phi), which changes the curvature by ~F L^2 / 8 of itself): with k = 10 the force
+ * (kappa / 20)^2 of a nearly straight arc was ~1e-9, where the fit's start-state chart
+ * (fit_model.c) is singular and Levenberg-Marquardt could take no step (measured: noisy
+ * straight lines of 100-180 points, 3 of 40 fits ended at Ipopt's max_iter crawling
+ * along k = 1). The two agree at kappa L = 2. From the start state (theta0 - phi = 2 a(q),
+ * kappa = 2 k w cn q): S = sin((theta0 - phi) / 2), C = |kappa| / (2 |w|), k = hypot(S, C),
+ * q = F(asin(S / k) | k) for k < 1, F((theta0 - phi) / 2 | 1/k) / k otherwise (sn q = S/k,
+ * cn q = C/k > 0), w < 0 for kappa < 0 (fit_model.c's chart).
+ */
+enum { NEAR_CIRCLE_K = 10 };
 static void near_circle(double theta0, double kappa, double L, cguess *g)
 {
-    g->k = 10.0;
-    g->w = kappa / (2.0 * g->k);
-    g->q = 0.0;
-    g->phi = theta0;
+    const double w0 = 0.1 / L;
     g->L = L;
+    if (fabs(kappa) >= 2.0 * NEAR_CIRCLE_K * w0) {
+        g->k = NEAR_CIRCLE_K;
+        g->w = kappa / (2.0 * g->k);
+        g->q = 0.0;
+        g->phi = theta0;
+        return;
+    }
+    const double half = -0.25 * kappa * L, S = sin(half), C = fabs(kappa) / (2.0 * w0), k = hypot(S, C);
+    g->phi = theta0 + 0.5 * kappa * L;
+    g->w = kappa < 0.0 ? -w0 : w0;
+    g->k = k;
+    g->q = k == 0.0 ? 0.0 : k < 1.0 ? gsl_sf_ellint_F(asin(S / k), k, GSL_PREC_DOUBLE)
+                                    : gsl_sf_ellint_F(half, 1.0 / k, GSL_PREC_DOUBLE) / k;
 }
 
 /* Guesses in normalised coordinates from the polygon reduced with `merge` (reduce);

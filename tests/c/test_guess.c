@@ -148,6 +148,48 @@ START_TEST(test_fractions_noise_out)
 }
 END_TEST
 
+/* A circular arc's guess is an elastica of the arc's curvature to 1 % along it, and for
+ * an arc turning by less than 2 rad one whose force mu = w^2 is not vanishing against its
+ * length (mu L^2 >= 1e-3): with k = 10 for every arc, a nearly straight one's mu was
+ * ~(turn / 20)^2, where the fit's start-state chart is singular (fit_model.c) and
+ * Levenberg-Marquardt took no step from the guess (guess.c, near_circle). Turns from
+ * 1e-3 rad to 3 rad either way, at scales 1e-3 and 1e3. */
+START_TEST(test_guess_arc_is_a_near_circle)
+{
+    enum { N = 50 };
+    const double turns[] = {1.2e-3, 0.01, 0.05, 0.5, 1.5, 1.99, 2.01, 3.0};
+    double xy[2 * N], s[N], th[N], ka[N];
+    for (size_t a = 0; a < sizeof turns / sizeof turns[0]; a++)
+        for (int sense = -1; sense <= 1; sense += 2)
+            for (double scale = 1e-3; scale < 1e4; scale *= 1e6) {
+                const double R = 10.0 * scale, turn = sense * turns[a], L = R * fabs(turn);
+                for (int i = 0; i < N; i++) {
+                    const double ang = 0.3 + turn * i / (N - 1.0);    /* kappa = sense / R */
+                    xy[2 * i] = 5.0 * scale + R * cos(ang);
+                    xy[2 * i + 1] = R * sin(ang);
+                }
+                el_smooth_params c[6];
+                size_t cnt = 0;
+                ck_assert_int_eq(el_guess_smooth(xy, N, EL_PARAM_AUTO, c, 6, &cnt), EL_OK);
+                int found = 0;
+                for (size_t j = 0; j < cnt && !found; j++) {
+                    for (int i = 0; i < N; i++) s[i] = c[j].length * i / (N - 1.0);
+                    if (el_smooth_eval(&c[j], N, s, xy, th, ka) != EL_OK) continue;
+                    double dev = 0.0;
+                    for (int i = 0; i < N; i++) dev = fmax(dev, fabs(ka[i] * R * sense - 1.0));
+                    if (dev > 0.01) continue;
+                    found = 1;
+                    const double muL2 = c[j].mu * c[j].length * c[j].length;
+                    ck_assert_msg(fabs(turn) >= 2.0 || muL2 >= 1e-3, "turn %g scale %g: mu L^2 = %g",
+                                  turn, scale, muL2);
+                    ck_assert_msg(fabs(c[j].length - L) <= 0.01 * L, "turn %g: length %g of %g", turn,
+                                  c[j].length, L);
+                }
+                ck_assert_msg(found, "turn %g scale %g: no guess of constant curvature 1/R", turn, scale);
+            }
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("guess");
@@ -158,6 +200,7 @@ static Suite *suite(void)
     tcase_add_test(tc, test_guess_similarity);
     tcase_add_test(tc, test_guess_bad_input);
     tcase_add_test(tc, test_fractions_noise_out);
+    tcase_add_test(tc, test_guess_arc_is_a_near_circle);
     suite_add_tcase(s, tc);
     return s;
 }
