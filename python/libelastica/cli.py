@@ -117,10 +117,17 @@ def cmd_hermite(args) -> int:
 
 # ------------------------------------------------------------------ bspline
 
+# what `bspline` keeps of each record it reads, so that its own output read again gives
+# the same B-splines in the same coordinates: a keyline's sides, the input's plane and
+# frame, a discrete fit's end constraints
+_READ_AGAIN = ("side", "plane", "frame2d", "constraints")
+
+
 def _curve_groups(doc):
     """The curves of a JSON document in groups that make one B-spline each: a keyline
     fit's two sides (records with "side", each from the joint outwards) together, any
-    other curve alone (a record, a list of them, a batch's documents, "sides")."""
+    other curve alone (a record, a list of them, a batch's documents, "sides", and
+    `bspline`'s own output of those)."""
     groups = []
     for d in doc if isinstance(doc, list) else [doc]:
         sides = d.get("sides") if isinstance(d, dict) else None
@@ -129,8 +136,12 @@ def _curve_groups(doc):
         elif len(sides) == 2 and all(isinstance(s, dict) and "side" in s for s in sides):
             groups.append(sides)
         else:
-            groups += [[s] for s in sides]
+            groups += _curve_groups(sides)
     return groups
+
+
+def _kept(item) -> dict:
+    return {k: item[k] for k in _READ_AGAIN if k in item} if isinstance(item, dict) else {}
 
 
 def cmd_bspline(args) -> int:
@@ -142,14 +153,14 @@ def cmd_bspline(args) -> int:
         curves = [curve_from_dict(it, name=args.file) for it in items]
         if len(curves) == 2:           # a keyline: ONE B-spline through its joint
             b = el.keyline_bspline(curves[0], curves[1], args.tol, args.degree)
-            out.append({"sides": [{"curve": curve_to_dict(c)} for c in curves],
+            out.append({"sides": [{"curve": curve_to_dict(c), **_kept(it)} for c, it in zip(curves, items)],
                         "bspline": b.to_dict()})
             names.append(f"keyline of two {type(curves[0]).__name__}")
         else:
             it = items[0]
             b = el.bspline.fitted_bspline(curves[0], args.tol, args.degree,
                                           it.get("constraints") if isinstance(it, dict) else None)
-            out.append({"curve": curve_to_dict(curves[0]), "bspline": b.to_dict()})
+            out.append({"curve": curve_to_dict(curves[0]), **_kept(it), "bspline": b.to_dict()})
             names.append(type(curves[0]).__name__)
         # the JSON in the curve's coordinates (as the fit record's), the DXF in the input's
         to_input = _input_map(items[0]) if isinstance(items[0], dict) else None

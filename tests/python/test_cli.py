@@ -462,8 +462,12 @@ def test_fit_keyline_bspline_is_one_curve_through_the_joint(capsys, tmp_path, fa
         assert r.returncode == 0, r.stderr
         docs = json.loads((tmp_path / "all.json").read_text())
         assert [len(d["sides"]) for d in docs] == [2, 2] and all("bspline" in d for d in docs)
-        r = cli(capsys, "bspline", tmp_path / "all.json", "--json", "-")
-        assert [len(d["sides"]) for d in json.loads(r.stdout)["sides"]] == [2, 2]
+        r = cli(capsys, "bspline", tmp_path / "all.json", "--json", tmp_path / "all_b.json")
+        out = json.loads((tmp_path / "all_b.json").read_text())
+        assert [len(d["sides"]) for d in out["sides"]] == [2, 2]
+        r = cli(capsys, "bspline", tmp_path / "all_b.json", "--json", "-")     # its own output again
+        assert r.returncode == 0, r.stderr
+        assert [d["bspline"] for d in json.loads(r.stdout)["sides"]] == [d["bspline"] for d in out["sides"]]
 
 
 def test_fit_warns_of_points_far_from_the_curve(capsys, tmp_path):
@@ -489,16 +493,23 @@ def test_bspline_of_a_fit_json_writes_the_dxf_in_the_inputs_coordinates(capsys, 
                                                                         fake_ezdxf, case):
     """`elastica bspline fit.json --dxf` writes the same SPLINE as `elastica fit --dxf`: in
     the input's coordinates (3D for a 3D scan, the input's axes for a keyline's x''y''), not
-    the curve's own (it drew a 3D scan's curve in its fit plane's coordinates, at the origin)."""
+    the curve's own (it drew a 3D scan's curve in its fit plane's coordinates, at the origin).
+    `bspline` of its own JSON gives that SPLINE again (its records lost the plane, the frame
+    and a keyline's sides: a keyline came back as two splines, in the curve's coordinates)."""
     args = {"3D one piece": [SAMPLE_3D, "--model", "smooth"], "2D keyline": [SAMPLE_S, "--keyline"],
             "3D keyline": [EX / "keyline_3d.csv", "--keyline", "--step", "3"]}[case]
     r = cli(capsys, "fit", *args, "--json", tmp_path / "f.json", "--dxf", tmp_path / "f.dxf")
     assert r.returncode == 0, r.stderr
-    r = cli(capsys, "bspline", tmp_path / "f.json", "--dxf", tmp_path / "b.dxf")
+    r = cli(capsys, "bspline", tmp_path / "f.json", "--dxf", tmp_path / "b.dxf", "--json", tmp_path / "b.json")
     assert r.returncode == 0, r.stderr
-    fit_dxf, bspline_dxf = [c for c in fake_ezdxf if c[0] == "spline"]
-    assert len(fit_dxf[1]) == len(bspline_dxf[1]) and fit_dxf[3] == bspline_dxf[3]
-    np.testing.assert_allclose(np.array(bspline_dxf[1]), np.array(fit_dxf[1]), rtol=0, atol=1e-9)
+    r = cli(capsys, "bspline", tmp_path / "b.json", "--dxf", tmp_path / "bb.dxf", "--json", tmp_path / "bb.json")
+    assert r.returncode == 0, r.stderr
+    fit_dxf, bspline_dxf, again_dxf = [c for c in fake_ezdxf if c[0] == "spline"]
+    for other in (bspline_dxf, again_dxf):
+        assert len(fit_dxf[1]) == len(other[1]) and fit_dxf[3] == other[3]
+        np.testing.assert_allclose(np.array(other[1]), np.array(fit_dxf[1]), rtol=0, atol=1e-9)
+    first, again = (json.loads((tmp_path / f).read_text()) for f in ("b.json", "bb.json"))
+    assert first["bspline"] == again["bspline"]
 
 
 def test_fit_not_converged_exit_1(capsys):
