@@ -71,22 +71,32 @@ def _converged(res: Any) -> bool:
 
 
 class _Progress:
-    """A text progress bar on stderr (batch mode)."""
+    """A text progress bar on stderr (batch mode). clear() wipes the bar's line before
+    other output (a file's warnings) would be written after it on the same line."""
+    WIDTH = 30
 
     def __init__(self, total: int, enabled: bool):
         self.total, self.enabled, self.done = total, enabled, 0
+        self.shown = 0      # characters of the bar's line on the screen (no newline yet)
 
     def step(self, label: str) -> None:
         self.done += 1
         if not self.enabled:
             return
-        width = 30
-        filled = int(width * self.done / max(self.total, 1))
-        bar = "#" * filled + "." * (width - filled)
-        sys.stderr.write(f"\r[{bar}] {self.done}/{self.total} {label[:40]:<40}")
+        filled = int(self.WIDTH * self.done / max(self.total, 1))
+        line = f"[{'#' * filled}{'.' * (self.WIDTH - filled)}] {self.done}/{self.total} {label[:40]:<40}"
+        sys.stderr.write("\r" + line)
+        self.shown = len(line)
         if self.done == self.total:
             sys.stderr.write("\n")
+            self.shown = 0
         sys.stderr.flush()
+
+    def clear(self) -> None:
+        if self.shown:
+            sys.stderr.write("\r" + " " * self.shown + "\r")
+            sys.stderr.flush()
+            self.shown = 0
 
 
 def _input_map(rec: Dict[str, Any]):

@@ -279,6 +279,7 @@ def cmd_fit(args) -> int:
     rows, all_recs, docs, bad = [], [], [], 0
     for f in files:
         mark = args.outputs.mark()
+        progress.clear()        # the file's warnings on a line of their own
         try:
             recs, doc = fit_file(f, args, batch=True)
         except NotConvergedError as exc:

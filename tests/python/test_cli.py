@@ -486,6 +486,15 @@ def test_fit_warns_of_points_far_from_the_curve(capsys, tmp_path):
     r = cli(capsys, "fit", SAMPLE_S, "--json", "-")
     assert r.returncode == 0 and "outliers" not in r.stderr
     assert json.loads(r.stdout)["outliers"] == []
+    # in a batch with its progress bar: the warning on a line of its own, the bar's line
+    # wiped before it (it was written after the bar, "[###...] 1/3 s.csv  elastica fit: ...")
+    r = cli(capsys, "fit", SAMPLE_S, path, SAMPLE_2D, "--progress", "--json", tmp_path / "b.json")
+    assert r.returncode == 0, r.stderr
+    warned = [line for line in r.stderr.split("\n") if "warning:" in line]
+    assert len(warned) == 1 and "3 of 60 points lie" in warned[0]
+    *before, shown = warned[0].split("\r")
+    assert shown.startswith("elastica fit: warning:") and before[-1].strip() == "", warned[0]
+    assert r.stderr.rstrip("\n").split("\r")[-1].startswith("[" + "#" * 30 + "] 3/3")
 
 
 @pytest.mark.parametrize("case", ["3D one piece", "2D keyline", "3D keyline"])
