@@ -3,7 +3,8 @@ interpolation, B-splines (Python binding of the C library)."""
 from ._ffi import DomainError, ElasticaError, NotConvergedError, SingularError
 from .core import DiscreteElastica, SmoothElastica
 from . import io
-from .fit import ConstraintError, FitResult, KeylineFit, far_points, fit, fit_keyline
+from .fit import (ConstraintError, FitResult, KeylineFit, far_points, far_points_summary, fit,
+                  fit_keyline)
 from .prep import (RESAMPLE_MAX_VERTICES, Frame, Frame2D, find_inflection, pca_normalize, plane_fit,
                    prepare_keyline, resample_equilateral)
 from .blend import BlendCurve, EllipticBlend, MQBlend, blend_curve, eck_d, eck_omega

@@ -75,17 +75,15 @@ def _side_record(res, data: np.ndarray, model: str) -> Dict[str, Any]:
 def _warn_far_points(path, rec: Dict[str, Any]) -> None:
     """A warning on stderr naming the points far from the fitted curve (the record's
     "outliers": indices into the fitted points, the file's rows unless resampled)."""
+    from .fit import far_points_summary
     far = rec.get("outliers")
     if not far:
         return
-    d = np.abs(np.asarray(rec["distances"]))
-    rest = np.delete(d, far)
     rows = ", ".join(str(i) for i in far[:10]) + (", ..." if len(far) > 10 else "")
     side = f" (side {rec['side'] + 1})" if "side" in rec else ""
-    print(f"{PROG} fit: warning: {path}{side}: {len(far)} of {len(d)} points lie "
-          f"{d[far].min():.3g} to {d[far].max():.3g} from the curve, the others within "
-          f"{rest.max():.3g}: outliers? (points {rows}, counted from 0) Each pulls the fit "
-          "towards itself: remove them to fit the rest", file=sys.stderr)
+    print(f"{PROG} fit: warning: {path}{side}: {far_points_summary(rec['distances'], far)}: "
+          f"outliers? (points {rows}, counted from 0) Each pulls the fit towards itself: "
+          "remove them to fit the rest", file=sys.stderr)
 
 
 def _constraints(args, data: np.ndarray) -> Dict[str, Any]:

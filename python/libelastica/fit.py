@@ -149,6 +149,21 @@ def far_points(distances, points, factor: float = OUTLIER_FACTOR) -> np.ndarray:
     return np.nonzero((d > factor * typical) & (d > 1e-6 * extent))[0]
 
 
+def far_points_summary(distances, far, unit: str = "") -> str:
+    """What a warning of far points says (the CLI's and FreeCAD's): how many of the points
+    lie how far from the curve and how near the others are, "3 of 60 points lie 9.05 to 16
+    from the curve, the others within 1.69" (``unit`` after the distances, e.g. " mm");
+    far: their indices (:func:`far_points`), at least one."""
+    d = np.abs(np.asarray(distances, dtype=float))
+    far = np.asarray(far, dtype=np.intp)
+    if d.ndim != 1 or far.ndim != 1 or not len(far) or len(far) >= len(d):
+        raise ValueError("far_points_summary: distances (n,) and 1 to n - 1 indices of far points are needed")
+    rest = np.delete(d, far)
+    lie = (f"lies {d[far][0]:.3g}{unit}" if len(far) == 1 else
+           f"lie {d[far].min():.3g} to {d[far].max():.3g}{unit}")
+    return f"{len(far)} of {len(d)} points {lie} from the curve, the others within {rest.max():.3g}{unit}"
+
+
 def _pair(value, name: str):
     try:
         a, b = (as_real(v, name, finite=False) if v is not None else None for v in value)

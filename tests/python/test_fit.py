@@ -214,6 +214,17 @@ def test_far_points_name_the_glitches_of_a_scan():
         el.far_points(np.zeros(30), np.zeros((29, 2)))
 
 
+def test_far_points_summary():
+    """The sentence of the CLI's and FreeCAD's warnings: the count, the range of the far
+    points' distances (either sign) and the largest of the others, with a unit if given."""
+    d = np.array([0.1, -0.2, 9.05, 0.05, -16.0, 1.69, 0.3])
+    assert el.far_points_summary(d, [2, 4]) == "2 of 7 points lie 9.05 to 16 from the curve, the others within 1.69"
+    assert el.far_points_summary(d, [4], " mm") == "1 of 7 points lies 16 mm from the curve, the others within 9.05 mm"
+    for far in ([], list(range(7)), [[2]]):
+        with pytest.raises(ValueError, match="far_points_summary"):
+            el.far_points_summary(d, far)
+
+
 def test_discrete_default_on_slowly_changing_spacing():
     """Points whose step grows by 10 % or 25 % from one end to the other (a scan slowing
     down, a sketch drawn faster), and 10 000 points at random places (every run of them as

@@ -288,11 +288,9 @@ def _far_points(data, dist, plane):
     far = el().far_points(dist, data)
     if not len(far):
         return []
-    d = n.abs(n.asarray(dist, dtype=float))
-    rest = n.delete(d, far)
-    worst = plane.multVec(App.Vector(*map(float, data[far[n.argmax(d[far])]]), 0.0))
-    return [f"{len(far)} of {len(d)} points lie {d[far].min():.3g} to {d[far].max():.3g} mm from "
-            f"the curve, the others within {rest.max():.3g} mm (the farthest at ({worst.x:.4g}, "
+    farthest = far[n.argmax(n.abs(n.asarray(dist, dtype=float))[far])]
+    worst = plane.multVec(App.Vector(*map(float, data[farthest]), 0.0))
+    return [f"{el().far_points_summary(dist, far, ' mm')} (the farthest at ({worst.x:.4g}, "
             f"{worst.y:.4g}, {worst.z:.4g})): outliers? Each pulls the fit towards itself: "
             "remove them to fit the rest"]
 
