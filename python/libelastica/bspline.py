@@ -164,11 +164,15 @@ def interpolate_c2(points, start=None, end=None) -> BSpline:
 
 def fitted_bspline(curve, tol: float = 1e-6, degree: int = 3, constraints=None) -> BSpline:
     """The B-spline of a fitted curve for CAD: a smooth elastica's (or a Hermite chain's)
-    within ``tol``, certified, its ends exact; a discrete one's C2 cubic through its
-    vertices (:func:`cubic_through`) with the end tangents and curvatures among the fit's
-    ``constraints`` (el.fit's names; G2 where both), natural ends elsewhere (``tol`` and
-    ``degree`` unused). FitResult.to_bspline and `elastica bspline` of a fit's JSON."""
-    from .core import DiscreteElastica
+    within ``tol``, certified, its end points, unit tangents and curvatures exact
+    (:func:`smooth_chain_to_bspline`: G2 ends, so end curvature constraints hold on it;
+    SmoothElastica.to_bspline keeps the tangents only); a discrete one's C2 cubic through
+    its vertices (:func:`cubic_through`) with the end tangents and curvatures among the
+    fit's ``constraints`` (el.fit's names; G2 where both), natural ends elsewhere (``tol``
+    and ``degree`` unused). FitResult.to_bspline and `elastica bspline` of a fit's JSON."""
+    from .core import DiscreteElastica, SmoothElastica
+    if isinstance(curve, SmoothElastica):
+        return smooth_chain_to_bspline([curve], tol, degree)
     if not isinstance(curve, DiscreteElastica):
         return curve.to_bspline(tol=tol, degree=degree)
     con = constraints or {}
