@@ -59,6 +59,30 @@ class _Parser(argparse.ArgumentParser):
         self.exit(EXIT_BADINPUT, f"{self.prog}: error: {message}\n")
 
 
+def _ranged(kind, lo=None, hi=None, above=None, below=None):
+    """An argparse type: a finite int / float within its range, the option and the range
+    named in the usage error (the library's own refusal named neither: "invalid argument
+    (NULL, NaN/inf, out of range or too few points)")."""
+    bounds = ([f">= {lo:g}"] if lo is not None else []) + ([f"> {above:g}"] if above is not None else []) + \
+             ([f"<= {hi:g}"] if hi is not None else []) + ([f"< {below:g}"] if below is not None else [])
+    what = ("an integer " if kind is int else "a number ") + " and ".join(bounds)
+
+    def parse(text: str):
+        try:
+            v = kind(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"{text!r}: {what} is needed") from None
+        if not np.isfinite(v) or (lo is not None and v < lo) or (hi is not None and v > hi) or \
+                (above is not None and not v > above) or (below is not None and not v < below):
+            raise argparse.ArgumentTypeError(f"{text}: {what} is needed")
+        return v
+    return parse
+
+
+POSITIVE = _ranged(float, above=0.0)
+DEGREE = _ranged(int, lo=3, hi=7)
+
+
 # ------------------------------------------------------------------ hermite
 
 def cmd_hermite(args) -> int:
@@ -147,7 +171,6 @@ def _kept(item) -> dict:
 def cmd_bspline(args) -> int:
     import libelastica as el
     groups = _curve_groups(read_json(args.file))
-    _finite(args.tol, "--tol")
     out, splines, names = [], [], []
     for items in groups:
         curves = [curve_from_dict(it, name=args.file) for it in items]
@@ -198,7 +221,7 @@ def cmd_blend(args) -> int:
         print(f"{PROG} blend: warning: {w}", file=sys.stderr)
     b = None
     if args.tol is not None or args.dxf:
-        b = curve.to_bspline(_finite(args.tol if args.tol is not None else 1e-6, "--tol"))
+        b = curve.to_bspline(args.tol if args.tol is not None else 1e-6)
         rec["bspline"] = b.to_dict()
     if args.json:
         write_json(rec, "-" if args.json == "-" else args.outputs.path(args.json))
@@ -247,7 +270,7 @@ def cmd_spline(args) -> int:
             t if k is None else {"tangent": t, "curvature": _finite(k, f"--{name}-curvature")})
     sp = el.elastic_spline(pts, **kw, start=ends["start"], end=ends["end"], closed=args.closed)
     need_b = args.dxf or args.bspline_tol is not None
-    b = sp.to_bspline(_finite(args.bspline_tol or 1e-6, "--bspline-tol"), args.degree) \
+    b = sp.to_bspline(args.bspline_tol or 1e-6, args.degree) \
         if need_b else None
     rec = {"file": args.file, "points": sp.data.tolist(), "closed": sp.closed, **kw,
            "tension": sp.tension, "length": sp.length, "energy": sp.energy,
@@ -415,16 +438,17 @@ def build_parser() -> argparse.ArgumentParser:
     c.add_argument("--end-curvature", type=float, metavar="K", help="curvature at the end")
     c.add_argument("--length", metavar="LO,HI", help="range of the curve's length (either may be empty)")
     c.add_argument("--k", dest="k_range", metavar="LO,HI", help="range of the modulus k")
-    f.add_argument("--step", type=float, metavar="R",
+    f.add_argument("--step", type=POSITIVE, metavar="R",
                    help="resample into an equilateral polygon of segment R first")
     f.add_argument("--json", metavar="PATH", help="write the result as JSON ('-' = stdout)")
     f.add_argument("--svg", metavar="PATH", help="write the report picture as SVG")
     f.add_argument("--png", metavar="PATH", help="write the report picture as PNG (matplotlib)")
-    f.add_argument("--bspline-tol", type=float, metavar="TOL",
+    f.add_argument("--bspline-tol", type=POSITIVE, metavar="TOL",
                    help="add the B-spline of the fitted curve (within TOL for smooth; "
                         "discrete: the C2 cubic through the vertices, with the end constraints)")
-    f.add_argument("--degree", type=int, default=3, help="B-spline degree (default 3)")
-    f.add_argument("--max-iter", type=int, metavar="N", help="Ipopt iterations per start (default 200)")
+    f.add_argument("--degree", type=DEGREE, default=3, help="B-spline degree 3..7 (default 3)")
+    f.add_argument("--max-iter", type=_ranged(int, lo=1), metavar="N",
+                   help="Ipopt iterations per start (default 200)")
     f.add_argument("--dxf", metavar="PATH", help="write the B-spline as a DXF SPLINE (ezdxf)")
     f.add_argument("--progress", action="store_true",
                    help="always draw the batch progress bar (default: when stderr is a terminal)")
@@ -438,7 +462,7 @@ def build_parser() -> argparse.ArgumentParser:
                    help="x0 y0 tx0 ty0 x1 y1 tx1 ty1")
     g = h.add_mutually_exclusive_group(required=True)
     g.add_argument("--tension", type=float, metavar="SIGMA", help="tension sigma")
-    g.add_argument("--length", type=float, metavar="L", help="arc length")
+    g.add_argument("--length", type=POSITIVE, metavar="L", help="arc length")
     h.add_argument("--json", metavar="PATH", help="write the solutions as JSON ('-' = stdout)")
     h.add_argument("--svg", metavar="PATH", help="picture of all solutions (SVG)")
     h.add_argument("--png", metavar="PATH", help="picture of all solutions (PNG, matplotlib)")
@@ -451,8 +475,8 @@ def build_parser() -> argparse.ArgumentParser:
                                    "keyline's two sides make one B-spline through the joint).",
                        epilog=BSPLINE_EXAMPLES, formatter_class=raw)
     b.add_argument("file", metavar="FIT.json")
-    b.add_argument("--tol", type=float, default=1e-6, help="tolerance (default 1e-6)")
-    b.add_argument("--degree", type=int, default=3, help="degree (default 3)")
+    b.add_argument("--tol", type=POSITIVE, default=1e-6, help="tolerance (default 1e-6)")
+    b.add_argument("--degree", type=DEGREE, default=3, help="degree 3..7 (default 3)")
     b.add_argument("--json", metavar="PATH", help="write the B-spline as JSON ('-' = stdout)")
     b.add_argument("--dxf", metavar="PATH", help="write a DXF SPLINE (needs ezdxf)")
     b.set_defaults(func=cmd_bspline)
@@ -472,16 +496,16 @@ def build_parser() -> argparse.ArgumentParser:
     g = sp.add_mutually_exclusive_group()
     g.add_argument("--tension", type=float, default=0.0, metavar="SIGMA",
                    help="tension sigma >= 0, 1/length^2 (default 0: the free-sliding batten)")
-    g.add_argument("--length", type=float, metavar="L", help="total length (sigma computed)")
+    g.add_argument("--length", type=POSITIVE, metavar="L", help="total length (sigma computed)")
     sp.add_argument("--closed", action="store_true", help="a closed curve through the points")
     for name in ("start", "end"):
         sp.add_argument(f"--{name}-tangent", type=float, nargs=2, metavar=("TX", "TY"),
                         help=f"clamp the {name} tangent (default: natural, curvature 0)")
         sp.add_argument(f"--{name}-curvature", type=float, metavar="K",
                         help=f"and its curvature: G2 to other geometry (needs --{name}-tangent)")
-    sp.add_argument("--bspline-tol", type=float, metavar="TOL",
+    sp.add_argument("--bspline-tol", type=POSITIVE, metavar="TOL",
                     help="add the B-spline within TOL to the JSON (default 1e-6 with --dxf)")
-    sp.add_argument("--degree", type=int, default=3, help="B-spline degree 3..7 (default 3)")
+    sp.add_argument("--degree", type=DEGREE, default=3, help="B-spline degree 3..7 (default 3)")
     sp.add_argument("--json", metavar="PATH", help="write the spline as JSON ('-' = stdout)")
     sp.add_argument("--svg", metavar="PATH", help="picture with the curvature comb (SVG)")
     sp.add_argument("--png", metavar="PATH", help="picture with the curvature comb (PNG)")
@@ -494,12 +518,14 @@ def build_parser() -> argparse.ArgumentParser:
                        epilog=BLEND_EXAMPLES, formatter_class=raw)
     e.add_argument("values", nargs=8, type=float, metavar="V", help="x0 y0 x1 y1 x2 y2 x3 y3")
     km = e.add_mutually_exclusive_group()
-    km.add_argument("--k", type=float, help="elliptic modulus k in [0, 1) (default 0.5)")
-    km.add_argument("--m", type=float, help="elliptic parameter m = k^2 (the paper's 'k')")
-    e.add_argument("--d", type=float, default=2.0, help="end-derivative parameter (default 2)")
+    km.add_argument("--k", type=_ranged(float, lo=0.0, below=1.0),
+                    help="elliptic modulus k in [0, 1) (default 0.5)")
+    km.add_argument("--m", type=_ranged(float, lo=0.0, below=1.0),
+                    help="elliptic parameter m = k^2 in [0, 1) (the paper's 'k')")
+    e.add_argument("--d", type=POSITIVE, default=2.0, help="end-derivative parameter > 0 (default 2)")
     e.add_argument("--mode", choices=("interpolate", "control"), default="interpolate",
                    help="pass through the points (default) or use them as control points")
-    e.add_argument("--tol", type=float, metavar="TOL", help="add the cubic B-spline within TOL")
+    e.add_argument("--tol", type=POSITIVE, metavar="TOL", help="add the cubic B-spline within TOL")
     e.add_argument("--json", metavar="PATH", help="write the result as JSON ('-' = stdout)")
     e.add_argument("--svg", metavar="PATH", help="picture (SVG)")
     e.add_argument("--png", metavar="PATH", help="picture (PNG, matplotlib)")

@@ -117,8 +117,6 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
     writes the requested outputs. Raises InputError / ValueError for bad input."""
     import libelastica as el
     pts = read_points(path, min_points=4)
-    if args.step is not None:
-        _finite(args.step, "--step")
     records: List[Dict[str, Any]] = []
     pictures = []                       # (data (n,2), FitResult) per record
     extra_info: Dict[str, Any] = {}

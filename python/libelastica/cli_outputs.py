@@ -6,6 +6,7 @@ leaves nothing behind)."""
 from __future__ import annotations
 
 import os
+import stat
 import tempfile
 from pathlib import Path
 from typing import List, Optional, Sequence
@@ -24,6 +25,17 @@ def out_path(spec: Optional[str], source: str, ext: str, batch: bool) -> Optiona
     if batch:
         return Path(spec) / f"{stem}{ext}"
     return Path(spec)
+
+
+def _mode_for(final: Path) -> int:
+    """The permissions of an output: the file's own when it is replaced, else those the
+    umask gives a new file (0644 under umask 022), not mkstemp's 0600 for its temporary."""
+    try:
+        return stat.S_IMODE(os.stat(final).st_mode)
+    except OSError:
+        umask = os.umask(0)
+        os.umask(umask)
+        return 0o666 & ~umask
 
 
 class Outputs:
@@ -50,6 +62,8 @@ class Outputs:
     def check(self, target) -> Path:
         """Refuse target when it is an input or already an output of this command."""
         final = Path(target)
+        if final.is_dir():
+            raise InputError(f"{final}: is a directory; give a file name")
         if final.exists():
             for inp in self._inputs:
                 try:
@@ -99,6 +113,7 @@ class Outputs:
 
     def commit(self) -> None:
         for tmp, final in self._staged:
+            os.chmod(tmp, _mode_for(final))
             os.replace(tmp, final)
         self._staged = []
 
@@ -129,7 +144,11 @@ def check_outputs(args) -> None:
         if not spec or spec == "-":
             continue
         for source in files or [spec]:
-            args.outputs.check(out_path(spec, source, ext, batch))
+            final = args.outputs.check(out_path(spec, source, ext, batch))
+            # a picture's format is its name's (the writers choose by it): --svg x.png
+            # wrote a PNG without a word
+            if opt in ("svg", "png") and final.suffix.lower() != ext:
+                raise InputError(f"--{opt} {final}: the picture's file name must end in {ext}")
     if getattr(args, "png", None):
         from .report import have_matplotlib
         if not have_matplotlib():

@@ -233,8 +233,30 @@ def _options(model: str, n: int, fixed: Optional[Mapping[str, float]], bounds, t
             raise ValueError(f"fit: distance must be one of {tuple(_DISTANCES)}, got {distance!r}")
         o.distance = _DISTANCES[distance]
     o.use_initial = 1 if initial is not None else 0
+    _check_option_ranges(o, model, names)
     _set_constraints(o, model, n, constraints)
     return o
+
+
+def _check_option_ranges(o, model: str, names) -> None:
+    """The C library's ranges of the options (el_fit_*: EL_EINVAL), named: its own
+    message names neither the option nor the range."""
+    for j, name in enumerate(names):
+        lo, hi = o.lower[j], o.upper[j]
+        if math.isnan(lo) or math.isnan(hi) or lo > hi:
+            raise ValueError(f"fit: bounds of {name} must be (lo, hi) with lo <= hi, got ({lo:g}, {hi:g})")
+        if not o.fixed[j]:
+            continue
+        v = o.value[j]
+        positive = name == ("h" if model == "discrete" else "mu")
+        if (positive and not v > 0.0) or (model == "smooth" and name == "length" and v < 0.0):
+            raise ValueError(f"fit: fixed {name} must be {'> 0' if positive else '>= 0'}, got {v:g}")
+        if not lo <= v <= hi:
+            raise ValueError(f"fit: fixed {name} = {v:g} lies outside its bounds ({lo:g}, {hi:g})")
+    for what, ok in (("tol must be > 0", o.tol > 0.0), ("max_iter must be >= 1", o.max_iter >= 1),
+                     ("max_candidates must be >= 1", o.max_candidates >= 1)):
+        if not ok:
+            raise ValueError(f"fit: {what}, got {getattr(o, what.split()[0]):g}")
 
 
 def _conditions(constraints: Optional[Mapping[str, object]], fixed: Optional[Mapping[str, float]]) -> int:

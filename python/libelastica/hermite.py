@@ -232,6 +232,23 @@ def _general_ends(p0, t0, p1, t1):
     return _vec2(p0, "p0") + _vec2(t0, "t0") + _vec2(p1, "p1") + _vec2(t1, "t1")
 
 
+def _invalid(tx0, ty0, tx1, ty1, mode, length, options) -> str:
+    """What el_hermite_solve refused with EL_EINVAL (its header's list), named: a zero
+    tangent, a length not > 0, an option out of its range; '' for none of these."""
+    tol, samples, grid, max_solutions = options
+    for name, tx, ty in (("t0", tx0, ty0), ("t1", tx1, ty1)):
+        if tx == 0.0 and ty == 0.0:
+            return f"the tangent {name} = (0, 0) has no direction"
+    if mode == _LENGTH and not length > 0.0:
+        return f"length must be > 0, got {length:g}"
+    for what, ok in ((f"tol must be > 0, got {tol!r}", tol > 0), (f"samples must be 4..1000, got {samples!r}", 4 <= samples <= 1000),
+                     (f"grid must be 1..256, got {grid!r}", 1 <= grid <= 256),
+                     (f"max_solutions must be >= 1, got {max_solutions!r}", max_solutions >= 1)):
+        if not ok:
+            return what
+    return ""
+
+
 def hermite(p0, t0, p1, t1, tension: Optional[float] = None,
             length: Optional[float] = None, *, tol: float = 1e-10,
             samples: int = 12, grid: int = 6, max_solutions: int = 64) -> HermiteSolutions:
@@ -305,8 +322,11 @@ def hermite(p0, t0, p1, t1, tension: Optional[float] = None,
             state = (mem, solve_args, views, tol, samples, grid, max_solutions)
         status = _solve_into(*solve_args)
         if status and status != _EMAXITER:
-            if status == _EINVAL:   # say which end is not finite
+            if status == _EINVAL:   # say which end is not finite, or what else is refused
                 _general_ends(p0, t0, p1, t1)
+                why = _invalid(tx0, ty0, tx1, ty1, mode, length, state[3:])
+                if why:
+                    raise ValueError(f"hermite: {why}")
             if status == _EDOM:
                 why = _out_of_range(x0, y0, x1, y1, mode, sigma, length)
                 if why:

@@ -133,7 +133,7 @@ def test_step_beyond_the_points_reach_is_the_librarys_rule(tmp_path, capsys, key
         assert len(err.strip().splitlines()) == 1
     for step in ("0", "-1"):
         code, _, err = cli(capsys, "fit", str(path), "--step", step, *keyline)
-        assert code == 2 and "must be positive" in err, err
+        assert code == 2 and f"argument --step: {step}: a number > 0 is needed" in err, err
     if not keyline:        # a keyline of 8 points cannot be split; one piece fits
         code, out, err = cli(capsys, "fit", str(path), "--step", "0.5", "--json", "-")
         assert code == 0 and json.loads(out)["step"] == 0.5, err
@@ -156,3 +156,63 @@ def test_blend_warns_when_the_convex_hull_is_lost(work, capsys):
     code, _, err = cli(capsys, "blend", "0", "0", "0.3", "0.8", "0.7", "0.9", "1", "0",
                        "--m", "0.6438")
     assert code == 2 and "singular neighbourhood" in err
+
+
+def test_outputs_get_the_permissions_a_new_or_replaced_file_has(work, capsys):
+    """Every output was written through a 0600 temporary and kept that mode: colleagues
+    (and a CAD server) could not read the DXF or JSON, and an existing 0644 file turned
+    0600. Now a new file gets what the umask gives (0644 under 022, 0664 under 002), a
+    replaced one keeps its own mode."""
+    old = os.umask(0o022)
+    try:
+        (work / "kept.json").write_text("old")
+        os.chmod(work / "kept.json", 0o640)
+        code, _, err = cli(capsys, "fit", "a.csv", "--json", "new.json", "--svg", "new.svg")
+        assert code == 0, err
+        code, _, err = cli(capsys, "fit", "a.csv", "--json", "kept.json")
+        assert code == 0, err
+        os.umask(0o002)
+        code, _, err = cli(capsys, "fit", "a.csv", "--json", "group.json")
+        assert code == 0, err
+    finally:
+        os.umask(old)
+    mode = {p: os.stat(work / p).st_mode & 0o777 for p in ("new.json", "new.svg", "kept.json", "group.json")}
+    assert mode == {"new.json": 0o644, "new.svg": 0o644, "kept.json": 0o640, "group.json": 0o664}
+    assert json.loads((work / "kept.json").read_text())["converged"]
+
+
+@pytest.mark.parametrize("args, said", [
+    (["fit", "a.csv", "--json", "sub"], "sub: is a directory; give a file name"),
+    (["fit", "a.csv", "--svg", "x.png"], "--svg x.png: the picture's file name must end in .svg"),
+    (["fit", "a.csv", "--png", "x.txt"], "--png x.txt: the picture's file name must end in .png"),
+], ids=["directory", "svg named png", "png named txt"])
+def test_output_names_that_cannot_be_written_as_asked_are_refused(work, capsys, args, said):
+    """An existing directory as an output file failed at the rename ("[Errno 21] Is a
+    directory: '.sub.x1y2.tmp' -> 'sub'"), a picture named for another format was written
+    in the format of its name (--svg x.png: a PNG) or failed naming the temporary."""
+    (work / "sub").mkdir()
+    code, _, err = cli(capsys, *args)
+    assert code == 2 and said in err and ".tmp" not in err, err
+    assert sorted(p.name for p in work.iterdir()) == ["a.csv", "sub"] and not any((work / "sub").iterdir())
+
+
+@pytest.mark.parametrize("args, said", [
+    (["fit", "a.csv", "--model", "smooth", "--bspline-tol", "0"], "argument --bspline-tol: 0: a number > 0 is needed"),
+    (["fit", "a.csv", "--degree", "2"], "argument --degree: 2: an integer >= 3 and <= 7 is needed"),
+    (["fit", "a.csv", "--max-iter", "0"], "argument --max-iter: 0: an integer >= 1 is needed"),
+    (["fit", "a.csv", "--step", "-1"], "argument --step: -1: a number > 0 is needed"),
+    (["fit", "a.csv", "--model", "smooth", "--fix", "mu=-1"], "fixed mu must be > 0, got -1"),
+    (["bspline", "a.json", "--tol", "-1"], "argument --tol: -1: a number > 0 is needed"),
+    (["hermite", "0", "0", "0", "0", "1", "0", "1", "0", "--length", "2"], "the tangent t0 = (0, 0) has no direction"),
+    (["hermite", "0", "0", "1", "0", "1", "0", "1", "0", "--length", "-2"], "argument --length: -2: a number > 0 is needed"),
+    (["blend", "0", "0", "0.3", "0.8", "0.7", "0.9", "1", "0", "--d", "0"], "argument --d: 0: a number > 0 is needed"),
+    (["blend", "0", "0", "0.3", "0.8", "0.7", "0.9", "1", "0", "--k", "1"], "argument --k: 1: a number >= 0 and < 1 is needed"),
+    (["spline", "a.csv", "--degree", "8"], "argument --degree: 8: an integer >= 3 and <= 7 is needed"),
+], ids=lambda a: " ".join(a) if isinstance(a, list) else None)
+def test_option_out_of_range_is_named(work, capsys, args, said):
+    """Options out of their range name the option and the range (the library's refusal
+    said "invalid argument (NULL, NaN/inf, out of range or too few points)" for each)."""
+    (work / "a.json").write_text("{}")
+    code, _, err = cli(capsys, *args)
+    assert code == 2 and said in err and "NULL" not in err, err
+    assert len(err.strip().splitlines()) == 1

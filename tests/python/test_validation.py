@@ -178,6 +178,42 @@ def test_limits_name_what_is_possible():
         el.SmoothElastica(k=1e8, length=1.0).to_bspline(tol=1e-6)
 
 
+@pytest.mark.parametrize("kwargs, said", [
+    (dict(model="smooth", fixed={"mu": -1}), "fixed mu must be > 0, got -1"),
+    (dict(fixed={"h": 0}), "fixed h must be > 0, got 0"),
+    (dict(model="smooth", fixed={"length": -1}), "fixed length must be >= 0, got -1"),
+    (dict(fixed={"k": 0.5}, bounds={"k": (0.6, 0.9)}), "fixed k = 0.5 lies outside its bounds"),
+    (dict(bounds={"k": (0.9, 0.6)}), "bounds of k must be (lo, hi) with lo <= hi"),
+    (dict(tol=0), "tol must be > 0, got 0"),
+    (dict(max_iter=0), "max_iter must be >= 1, got 0"),
+    (dict(max_candidates=0), "max_candidates must be >= 1, got 0"),
+], ids=lambda a: str(a) if isinstance(a, dict) else None)
+def test_fit_options_out_of_range_are_named(kwargs, said):
+    """The fit's options out of the C library's ranges name the option and its range (its
+    own EL_EINVAL said "invalid argument (NULL, NaN/inf, out of range or too few points)")."""
+    with pytest.raises(ValueError) as exc:
+        el.fit(ARC, **kwargs)
+    assert said in str(exc.value) and "NULL" not in str(exc.value)
+
+
+@pytest.mark.parametrize("kwargs, said", [
+    (dict(t0=(0.0, 0.0)), "the tangent t0 = (0, 0) has no direction"),
+    (dict(t1=(0, 0)), "the tangent t1 = (0, 0) has no direction"),
+    (dict(length=0.0), "length must be > 0, got 0"),
+    (dict(tol=0.0), "tol must be > 0"),
+    (dict(samples=2), "samples must be 4..1000, got 2"),
+    (dict(grid=0), "grid must be 1..256, got 0"),
+    (dict(max_solutions=0), "max_solutions must be >= 1, got 0"),
+], ids=lambda a: str(a) if isinstance(a, dict) else None)
+def test_hermite_refusals_are_named(kwargs, said):
+    args = dict(p0=(0.0, 0.0), t0=(1.0, 0.0), p1=(1.0, 0.0), t1=(1.0, 0.0), length=2.0)
+    args.update(kwargs)
+    with pytest.raises(ValueError) as exc:
+        el.hermite(**args)
+    assert said in str(exc.value) and "NULL" not in str(exc.value)
+    assert len(el.hermite((0.0, 0.0), (1.0, 0.0), (1.0, 0.0), (1.0, 0.0), length=2.0)) >= 1   # the state is left sound
+
+
 def test_elliptic_blend_reports_its_basis():
     b = el.EllipticBlend(m=0.3)
     assert b.convex_hull and b.basis_min > -1e-12 and b.lebesgue == pytest.approx(1.0)
