@@ -142,7 +142,15 @@ int el__fit_solve_candidate(fit_objective *ob, const el_fit_options *o, const fi
      * 0.0034, 0.0039 from the guess, the fits from the true curves'; an uncertified
      * point is no measure: on 20 uneven points the crawled start's 0.0058, reached by
      * Ipopt, would have lost to the guess's 0.104) */
-    if (lst == EL_OK && crawled) {
+    /* a paired start that ended far above the data's noise (ob->f_direct) may have led into
+     * another basin: the chord fractions of clustered points misplace them along the
+     * curve (measured: 9 points exactly on a gentle S, a cluster of 4 within 0.1 of its
+     * length of 6.8 and a pair at its end: rms 0.0046 from the paired start, even from the
+     * true curve; from the guess's feet 4e-14). Levenberg-Marquardt from the guess's own
+     * feet too, kept when certified lower (noisy fits end at the noise: not run there; nor
+     * for constraint rows, whose Ipopt run starts from the paired fit's basin) */
+    const int above = lst == EL_OK && ob->map.model == FIT_SMOOTH && !warm && !need_ipopt && sol.val.f > ob->f_direct;
+    if (lst == EL_OK && (crawled || above)) {
         fit_solution g;
         if (el__fit_feet_start(ob, guess) == EL_OK && el__fit_lm(ob, guess, o->max_iter, &g) == EL_OK) {
             r->iters += g.iters;

@@ -139,6 +139,10 @@ typedef struct fit_objective {
      * (an earlier guess's) at its recent rate within its remaining iterations
      * (fit_lm.c); HUGE_VAL (el__fit_objective_init): never */
     double f_ceiling;
+    /* smooth orthogonal: a fit from the paired start that ends above this objective (far
+     * above the data's noise, fit.c) is fitted from its guess's own feet too (fit_candidate.c);
+     * HUGE_VAL (el__fit_objective_init): never */
+    double f_direct;
     /* Levenberg-Marquardt stops once a Gauss-Newton step would lower f by less than
      * lm_tol of itself (fit_lm.c; el__fit_objective_init: 1e-13, the certificate) */
     double lm_tol;

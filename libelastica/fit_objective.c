@@ -53,6 +53,7 @@ int el__fit_objective_init(fit_objective *o, int kind, const fit_map *map, const
     o->kind = kind; o->map = *map; o->n = n; o->xy = xy;
     o->cx = cx; o->cy = cy; o->sc = sc; o->t = t;
     o->f_ceiling = HUGE_VAL;
+    o->f_direct = HUGE_VAL;
     o->lm_tol = 1e-13;
     const int feet = map->model == FIT_SMOOTH;
     o->work = malloc(sizeof(double) * (W_SIZE + (feet ? 2 * n : 0)));

@@ -254,6 +254,24 @@ def test_discrete_default_on_slowly_changing_spacing():
     assert el.fit(even, model="discrete").distance == "paired"
 
 
+def test_clustered_exact_points_give_their_curve():
+    """9 points exactly on a gentle S (k = 0.42), four of them within 0.1 of its length 6.8
+    and two at its end: the smooth fit is that curve (rms 0.0046 before, status ok, even
+    from the true curve: the paired start's chord fractions misplaced the cluster and led
+    into another basin, certified there). Fitted from the guess's own feet too where the
+    paired start ends above the data's noise."""
+    truth = el.SmoothElastica(x0=0.0, y0=0.0, phi=0.892649083382071, mu=1.0, k=0.4223158294302174,
+                              q=1.9624350581521428, length=6.774235448807142)
+    s = np.array([0.38, 1.17, 2.04, 2.053, 2.127, 2.141, 5.34, 6.47, 6.483])
+    pts = truth.points(s)
+    for r in (el.fit(pts, model="smooth"), el.fit(pts, model="smooth", initial=truth)):
+        assert r.status == 0 and r.rms < 1e-9, r.rms
+        assert abs(r.curve.length - (s[-1] - s[0])) < 1e-7
+    scale = 250.0          # the same in a designer's millimetres, moved off the origin
+    r = el.fit(pts * scale + [1e4, -3e3], model="smooth")
+    assert r.status == 0 and r.rms < 1e-9 * scale, r.rms
+
+
 def test_noisy_straight_runs_converge():
     """A designer's straight run: 40 noisy lines of 20-200 points, equal steps and random
     places (noise 0.5 % of the length). Every fit ends within the line's own rms and is
