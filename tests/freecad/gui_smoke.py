@@ -129,10 +129,20 @@ def type_into(box, text):
 
 
 def fits_combo_view(panel, what):
-    """Every task box fits a 264 px Combo View; every input has a tooltip."""
+    """Every task box fits a 264 px Combo View, and the panel fits the task view's
+    viewport beside its vertical scroll bar (FreeCAD's task view has no horizontal one:
+    the Fit panel's boxes were cut off by 19 px at 1280 x 1024); every input has a
+    tooltip."""
     from PySide import QtGui
     widest = max(f.minimumSizeHint().width() for f in panel.form)
     check(widest <= 240, f"{what} panel fits the Combo View (widest box {widest} px)")
+    pump()
+    areas = [a for a in Gui.getMainWindow().findChildren(QtGui.QScrollArea)
+             if a.isVisible() and a.widget() is not None and a.isAncestorOf(panel.form[0])]
+    need = areas and areas[0].widget().minimumSizeHint().width()
+    check(areas and need <= areas[0].viewport().width(),
+          f"{what} panel fits the task view (needs {need} px of "
+          f"{areas[0].viewport().width() if areas else '?'})")
     kinds = (QtGui.QAbstractSpinBox, QtGui.QComboBox, QtGui.QCheckBox, QtGui.QPushButton,
              QtGui.QListWidget)
     bare = [type(w).__name__ for f in panel.form for w in f.findChildren(QtGui.QWidget)
@@ -271,6 +281,13 @@ def blend_panel(doc, S):
     wait()
     check(abs(b.Shape.Length - 70.0) < 1e-2 and b.ViewObject.DrawStyle == "Solid",
           f"blend typed length 70 -> {b.Shape.Length:.4f}")
+    # typed as in FreeCAD's own boxes: other units, an expression, a decimal comma ("7 cm"
+    # was read as 7 mm, "=2*35" ignored)
+    for text, mm in (("6.5 cm", 65.0), ("2.75 in", 69.85), ("=2*34", 68.0), ("70,5", 70.5), ("70", 70.0)):
+        type_into(panel.length, text)
+        wait()
+        check(abs(b.Length - mm) < 1e-9 and abs(b.Shape.Length - mm) < 1e-2,
+              f"blend: typed {text!r} is {mm} mm (Length {b.Length}, curve {b.Shape.Length:.4f})")
     panel.continuity.setCurrentIndex(1)         # G2
     wait()
     check(b.Continuity == "G2" and len(b.GuideDucks) == 2 and "G2 from solution" in panel.result.text()
@@ -278,6 +295,16 @@ def blend_panel(doc, S):
           and b.ViewObject.Proxy.overlay_counts() == (2, 2 * 3),
           f"blend: G2 from the chosen solution at the typed length, guide ducks drawn ({b.Status})")
     screenshot("gui_blend_panel.png")
+    # another Elastica command while this panel is open: inactive, and refused when called
+    # (FreeCAD's own commands leave an open dialog alone; it was replaced without its OK
+    # or Cancel, a sketch left in edit mode)
+    from freecad.elastica import commands as C
+    n_objects = len(doc.Objects)
+    check(not C.FitCommand().IsActive() and C.fit_sources([(sk, ["Edge1", "Edge2"])]) is None
+          and C.MESSAGES[-1] == C.DIALOG_OPEN and len(doc.Objects) == n_objects
+          and T.CURRENT and T.CURRENT[0] is panel and Gui.Control.activeDialog()
+          and T.open_for(b) and T.CURRENT[0] is panel,
+          "blend panel open: another command is inactive and refused, the panel stays")
     panel.continuity.setCurrentIndex(0)
     wait()
     panel.into_sketch.setChecked(True)

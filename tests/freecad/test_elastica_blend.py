@@ -621,8 +621,16 @@ class CombTest(unittest.TestCase):
         self.assertEqual(comb.Status, "ok")
 
     def test_comb_bad_input(self):
+        cyl = self.doc.addObject("Part::Cylinder", "Cyl")
+        self.doc.recompute()
         before = S.doc_state(self.doc)
         del C.MESSAGES[:]
         self.assertEqual(C.comb_sources([]), [])
         self.assertTrue(C.MESSAGES)
         self.assertEqual(S.doc_state(self.doc), before)
+        # a face or vertex is refused as the other commands refuse it (it combed every edge
+        # of the object, without a word)
+        for sub in ("Face1", "Vertex1"):
+            self.assertEqual(C.comb_sources([(cyl, [sub])]), [])
+            self.assertIn(f"select edges or the whole object, not {sub}", C.MESSAGES[-1])
+            self.assertEqual(S.doc_state(self.doc), before)

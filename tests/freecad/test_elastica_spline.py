@@ -329,7 +329,7 @@ class SplineTest(unittest.TestCase):
         before = S.doc_state(self.doc)
         cases = [([], {}, "nothing selected"),
                  ([(one, [])], {}, "at least 2"),
-                 ([(same, [])], {}, "points coincide"),
+                 ([(same, [])], {}, "the 4 points coincide"),     # all of them (it said 3)
                  ([(two, [])], {}, "two points lie in many planes"),
                  ([(nan, [])], {}, "not finite"),
                  ([(self.sk, [])], {"Mode": "length", "Length": 100.0}, "any length above"),

@@ -93,6 +93,9 @@ def _check_and_create(title, what, check, code, open_panel):
     then create the feature by the recorded ``code`` (a string, or a function giving
     it after the check) and open its task panel. Returns the new feature or None
     (message printed, document unchanged)."""
+    if open_panel and dialog_open():
+        message(DIALOG_OPEN)
+        return None
     try:
         check()
     except InputProblem as exc:
@@ -117,8 +120,18 @@ def _doc():
     return doc
 
 
+def dialog_open():
+    """A task dialog is open (ours or FreeCAD's, e.g. the Sketcher's edit)."""
+    return bool(App.GuiUp and Gui.Control.activeDialog())
+
+
+DIALOG_OPEN = "a task dialog is open: finish it (OK or Cancel) first"
+
+
 class _Command:
-    """A toolbar command: ``run(selection)``, guarded; active with a document."""
+    """A toolbar command: ``run(selection)``, guarded; active with a document and no task
+    dialog open (as FreeCAD's own commands that open one: a second panel replaced the
+    first without its OK or Cancel, and left a sketch in edit mode)."""
 
     pixmap = menu = tip = ""
 
@@ -126,7 +139,7 @@ class _Command:
         return {"Pixmap": icon(self.pixmap), "MenuText": self.menu, "ToolTip": self.tip}
 
     def IsActive(self):
-        return App.ActiveDocument is not None
+        return App.ActiveDocument is not None and not dialog_open()
 
     def Activated(self):
         _guarded(type(self).run)
@@ -333,7 +346,10 @@ def comb_sources(sources):
         return []
     made = []
     for obj, subs in sources:
-        subs = [s for s in subs if s.startswith("Edge")]
+        other = [s for s in subs if not s.startswith("Edge")]
+        if other:      # as the other commands refuse a face (it combed every edge of its object)
+            message(f"{obj.Label}.{other[0]}: select edges or the whole object, not {other[0]}")
+            continue
         try:
             comb.comb_core(obj, subs, 8)
         except InputProblem as exc:

@@ -39,9 +39,33 @@ def _buttons(*names):
         return flags.value
 
 
+# a box's unit as FreeCAD's unit parser writes it (App.Units.Quantity)
+_PARSED_UNIT = {"mm": "mm", "1/mm": "1/mm", "1/mm\u00b2": "1/mm^2", "mm\u00b2": "mm^2",
+                "N\u00b7mm\u00b2": "N*mm^2"}
+
+
+def _in_unit(text, unit):
+    """The number a typed quantity is in the box's unit, by FreeCAD's own parser (as its
+    Quantity spin boxes read input): '7 cm' in a box of mm is 70, '2.75 in' 69.85,
+    '=2*35' 70, '70,5' 70.5 where the decimal separator is a comma. ValueError for text it
+    cannot read or a quantity of another kind ('7 kg' for a length)."""
+    try:
+        q = App.Units.Quantity(text[1:] if text.startswith("=") else text)
+    except Exception:      # the parser's errors are of several kinds (syntax, 1/0, ...)
+        raise ValueError(f"{text}: not a number or quantity") from None
+    if q.Unit == App.Units.Quantity("1").Unit:
+        return q.Value
+    ref = App.Units.Quantity(f"1 {_PARSED_UNIT.get(unit, '?')}") if unit else None
+    if ref is None or q.Unit != ref.Unit:
+        raise ValueError(f"{text}: not a quantity in {unit or 'plain numbers'}")
+    return q.Value / ref.Value
+
+
 class NumberBox(QtGui.QDoubleSpinBox):
     """A spin box that shows its value as typed ('0.001', '2.5e-07', not '0.00'),
-    accepts scientific notation and steps by ``singleStep``."""
+    accepts scientific notation, quantities in other units and expressions as FreeCAD's
+    own boxes do ('7 cm', '2.75 in', '=2*35': _in_unit; a plain float read as '7 cm' was
+    taken as 7 mm) and steps by ``singleStep``."""
 
     unit = ""                            # Qt calls validate() while __init__ runs
 
@@ -54,6 +78,9 @@ class NumberBox(QtGui.QDoubleSpinBox):
         self.unit = f" {unit}" if unit else ""
         self.setSuffix(self.unit)
         self.setToolTip(tip)
+        # as narrow as its minimum, not the width of '-1e+06 1/mm' (its range's text): the
+        # Fit panel's Ends box was 216 px wide for it
+        self.setSizePolicy(QtGui.QSizePolicy.Preferred, QtGui.QSizePolicy.Fixed)
 
     def textFromValue(self, value):
         return f"{value:.6g}"
@@ -62,7 +89,10 @@ class NumberBox(QtGui.QDoubleSpinBox):
         t = text.strip()
         if self.unit and t.endswith(self.unit.strip()):
             t = t[:-len(self.unit.strip())].strip()
-        return float(t)
+        try:
+            return float(t)
+        except ValueError:
+            return _in_unit(t, self.unit.strip())
 
     def valueFromText(self, text):
         try:

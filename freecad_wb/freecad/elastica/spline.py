@@ -126,14 +126,14 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
             raise InputProblem(f"point {i + 1} is not finite ({p.x:g}, {p.y:g}, {p.z:g})")
     pts = list(points)
     extent = max(((a - pts[0]).Length for a in pts), default=0.0)
+    if len(pts) > 1 and not extent > 0.0:        # all of them, counted before the drop below
+        raise InputProblem(f"the {len(pts)} points coincide")
     if closed and len(pts) > 3 and (pts[0] - pts[-1]).Length <= 1e-9 * (1.0 + extent):
         pts = pts[:-1]                     # a closed wire's first vertex, repeated
     need = 3 if closed else 2
     if len(pts) < need:
         raise InputProblem(f"{len(pts)} point{'s' if len(pts) != 1 else ''}: an elastic spline "
                            f"needs at least {need}{' (closed)' if closed else ''}")
-    if not extent > 0.0:
-        raise InputProblem(f"the {len(pts)} points coincide")
     value = check_number("Tension", tension, 0.0, None, "1/mm^2", why="0 is the free batten; to "
                          "push the batten together give a length") if mode == "tension" \
         else check_number("Length", length, 0.0, None, "mm", why="0 is the free batten's length")

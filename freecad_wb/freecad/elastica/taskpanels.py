@@ -59,12 +59,14 @@ class FitPanel(Panel):
         # split so that the user can clear what the split refuses
         row = e.rowCount()
         # a pin gives way to a G1 / G2 join at that end (which starts at the edge's end)
-        self.pin_start = self.check(e, "Pin the start", "PinStart",
+        # short labels and join boxes: the Ends box beside the task view's vertical scroll
+        # bar (the Fit panel is the tallest) fits 1280 x 1024 (it was cut off by 19 px)
+        self.pin_start = self.check(e, "Pin start", "PinStart",
                                     "The curve starts exactly at the first point (one-piece "
                                     "fits)", when=lambda: o.PinStart or (
                                         self.one_piece() and o.StartContinuity == "tangent"),
                                     at=(row, 0))
-        self.pin_end = self.check(e, "Pin the end", "PinEnd",
+        self.pin_end = self.check(e, "Pin end", "PinEnd",
                                   "The curve ends exactly at the last point (one-piece fits)",
                                   when=lambda: o.PinEnd or (
                                       self.one_piece() and o.EndContinuity == "tangent"),
@@ -90,6 +92,7 @@ class FitPanel(Panel):
             # a join takes the edge's point (G1, G2) and curvature (G2): a pin or a typed
             # curvature at that end is cleared
             join.currentIndexChanged.connect(lambda _, text=text: self.joined(text))
+            join.setMinimumContentsLength(4)
             self.joins.append(join)
         self.start_curvature, self.end_curvature = (
             # "curvature" in full does not fit the 260 px Combo View beside its value
@@ -515,7 +518,13 @@ def open_for(obj, created=False):
     if panel is None:
         return False
     if Gui.Control.activeDialog():
-        Gui.Control.closeDialog()
+        # as FreeCAD's own edit: the open dialog stays (closing it dropped its edits without
+        # OK or Cancel); its own feature's panel is already there
+        from .commands import DIALOG_OPEN, message
+        if CURRENT and getattr(CURRENT[0], "obj", None) is obj:
+            return True
+        message(DIALOG_OPEN)
+        return False
     p = panel(obj, created or bool(getattr(obj.Proxy, "fresh", False)))
     obj.Proxy.fresh = False
     CURRENT[:] = [p]
