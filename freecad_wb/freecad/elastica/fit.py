@@ -243,6 +243,29 @@ def _moved(curve, frame2d):
     return dataclasses.replace(curve, x0=float(x0), y0=float(y0), phi=float(curve.phi + turn))
 
 
+def _polygon_deviation(bspline, curves, samples=32):
+    """The largest distance of a discrete fit's cubic from its polygon (the vertices of
+    its one or two curves, a keyline's first half reversed), sampled ``samples`` times per
+    span: the cubic is parametrised by chord length, so the samples of a span lie near
+    that segment (measured against its two neighbours too). What the drawn B-spline adds
+    to the polygon's distances (9 sketched points: rms 0.013 mm to the polygon, 0.056 to
+    the B-spline)."""
+    n = np()
+    V = curves[0].points() if len(curves) == 1 else n.vstack([curves[0].points()[::-1], curves[1].points()[1:]])
+    c = n.concatenate([[0.0], n.cumsum(n.linalg.norm(n.diff(V, axis=0), axis=1))])
+    k = n.unique(bspline.knots)
+    t = n.concatenate([n.linspace(a, b, samples, endpoint=False) for a, b in zip(k[:-1], k[1:])] + [k[-1:]])
+    P = bspline.evaluate(t)
+    j = n.clip(n.searchsorted(c, t) - 1, 0, len(V) - 2)
+    best = n.full(len(t), n.inf)
+    for dj in (-1, 0, 1):
+        i = n.clip(j + dj, 0, len(V) - 2)
+        A, D = V[i], V[i + 1] - V[i]
+        u = n.clip(n.sum((P - A) * D, axis=1) / n.maximum(n.sum(D * D, axis=1), 1e-300), 0.0, 1.0)
+        best = n.minimum(best, n.linalg.norm(P - (A + u[:, None] * D), axis=1))
+    return float(best.max())
+
+
 def _shape_bspline(model, curves, results, split, tol, degree):
     """ONE B-spline of the fit, run from the first point to the last: smooth, the
     G2 B-spline of the elastica (a keyline: its first half reversed, then the second;
@@ -394,12 +417,12 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
     except InputProblem:
         raise
     except (ValueError, ArithmeticError, RuntimeError) as exc:
-        if split and "no inflection found" in str(exc):
-            raise InputProblem("no inflection found in the points: fit them without splitting "
-                               "the keyline") from None
-        if split and "fewer than 4 vertices" in str(exc):
-            raise InputProblem("the inflection found lies too near an end (fewer than 4 points on "
-                               "one side): fit the points without splitting the keyline") from None
+        if split and "no inflection" in str(exc):
+            # the library's reason (none found; one of noise near an end, or that two
+            # elasticae fit no better than one turning one way), in the panel's terms
+            why = str(exc).split(": ", 1)[-1].replace("fit them as one curve",
+                                                        "fit them without splitting the keyline")
+            raise InputProblem(why) from None
         raise InputProblem(f"fit failed: {exc}") from None
     if not (n.all(n.isfinite(dist)) and math.isfinite(rms)):
         raise InputProblem("fit failed: non-finite error")
@@ -410,6 +433,8 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         "measure": measure, "rms": float(rms), "max_error": float(max_error),
         "k": [float(r.curve.k) for r in results],
         "end_curvatures": [float(v) for v in bspline.curvature(n.array(bspline.domain))],
+        "bspline_deviation": (float(bspline.max_deviation) if model == "smooth"
+                              else _polygon_deviation(bspline, curves)),
         "status": "; ".join(_status_text(r) for r in results),
         "free_rms": free_rms, "warnings": warnings,
     }
@@ -481,8 +506,9 @@ class FitProxy(FeatureProxy):
                                   "curve (mm; see ErrorMeasure)"),
                           ("MaxError", "Largest distance of a fitted point from the curve (mm)"),
                           ("BSplineDeviation", "Certified distance of the B-spline from the "
-                                               "smooth elastica (mm; -1 for a discrete fit, "
-                                               "whose B-spline passes through its vertices)")):
+                                               "smooth elastica (mm); of a discrete fit's cubic "
+                                               "through the vertices, its largest distance from "
+                                               "the polygon (sampled)")):
             add_property(obj, "App::PropertyFloat", name, "Result", tip)
         add_property(obj, "App::PropertyFloat", "FreeRms", "Result",
                      "Rms of the same fit with free ends (mm; -1 without end conditions, or "
@@ -533,7 +559,7 @@ class FitProxy(FeatureProxy):
         obj.ErrorMeasure = r["measure"]
         obj.K = r["k"]
         obj.EndCurvatures = r["end_curvatures"]
-        obj.BSplineDeviation = r["bspline"].max_deviation
+        obj.BSplineDeviation = r["bspline_deviation"]
         obj.Plane = plc
         obj.DataPoints = to_3d(plc, r["data"])
         obj.FootPoints = to_3d(plc, r["feet"])

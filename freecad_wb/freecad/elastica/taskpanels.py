@@ -139,7 +139,8 @@ class FitPanel(Panel):
         if o.Model == "smooth":
             bs = f"B-spline within {_fmt(o.BSplineDeviation)} (degree {o.Degree})"
         else:
-            bs = "B-spline: the C2 cubic through the vertices"
+            # what the drawn curve adds to the polygon's distances
+            bs = f"B-spline: the C2 cubic through the vertices, up to {_fmt(o.BSplineDeviation)} off the polygon"
         curve = "one G2 curve of two elasticae, " if len(o.K) == 2 else ""
         ends = ""
         if len(o.EndCurvatures) == 2:
