@@ -337,6 +337,13 @@ def blend_panel(doc, S):
     T.CURRENT[0].reject()
     pump()
     check([o.Name for o in doc.Objects] == names, "Cancel removes a new feature")
+    # Undo while a new feature's panel is open: the feature goes and so does its panel (it
+    # stayed open on nothing, and its OK reported success)
+    open_panel(doc, "Elastica_Blend", [(sk2, "Edge1"), (sk2, "Edge2")], "Third blend")
+    Gui.runCommand("Std_Undo")
+    wait()
+    check([o.Name for o in doc.Objects] == names and not T.CURRENT and not Gui.Control.activeDialog(),
+          "Undo of a new feature closes its panel")
     return b
 
 

@@ -120,6 +120,24 @@ class DecadeBox(NumberBox):
         self.setValue(self.value() * 10.0 ** steps)
 
 
+class _Watch:
+    """A document observer that closes a panel whose feature leaves its document (Undo
+    of the command that made it, a deletion in the tree): the panel stayed open on a
+    feature that was gone, and its OK reported success with nothing kept."""
+
+    def __init__(self, panel):
+        self.panel = panel
+
+    def slotDeletedObject(self, obj):
+        p = self.panel
+        try:
+            mine = obj.Document.Name == p.doc_name and obj.Name == p.name
+        except Exception:  # an object half torn down: not ours to judge
+            mine = False
+        if mine:     # after the deletion has finished
+            QtCore.QTimer.singleShot(0, p.gone_away)
+
+
 class Panel:
     """Shared machinery: bound fields, the delayed recompute, result text, the undo
     transaction. Subclasses build their boxes in ``build`` and return the result
@@ -131,6 +149,9 @@ class Panel:
     def __init__(self, obj, created=True):
         self.obj = obj
         self.doc = obj.Document
+        self.name, self.doc_name = obj.Name, obj.Document.Name
+        self.watch = _Watch(self)
+        App.addDocumentObserver(self.watch)
         self.created = created          # a command made it: its transaction is still open
         self.enablers = []              # (widget, callable -> bool)
         self.edge_buttons = []          # (edge link property, button, text when empty)
@@ -439,7 +460,17 @@ class Panel:
         return code + (f"elastica_geometry.write_to_sketch({doc}.getObject({self.obj.Name!r}), "
                        "_sk)\n")
 
+    def gone_away(self):
+        """The feature left the document while the panel was open: the panel closes."""
+        if CURRENT and CURRENT[0] is self:
+            self.timer.stop()
+            App.Console.PrintWarning(f"Elastica: {self.name} was undone or deleted; its panel closes\n")
+            self._close()
+
     def accept(self):
+        if self.name not in [o.Name for o in self.doc.Objects]:
+            self.gone_away()
+            return True
         self.flush()
         if self.obj.Status.startswith("error"):
             App.Console.PrintError(f"Elastica: {self.obj.Status}\n")
@@ -467,6 +498,10 @@ class Panel:
 
     def _close(self):
         CURRENT[:] = []
+        try:
+            App.removeDocumentObserver(self.watch)
+        except Exception:  # already removed (a second close)
+            pass
         Gui.Control.closeDialog()
         if Gui.ActiveDocument is not None:
             Gui.ActiveDocument.resetEdit()
