@@ -131,7 +131,9 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
         prep = kres.prepared
         plane = _plane_record(prep.frame)
         to_input = prep.to_input
-        extra_info = {"inflection_index": int(kres.inflection),
+        extra_info = {"input_rms": kres.input_rms, "input_max_error": kres.input_max_error,
+                      "input_points": len(pts),
+                      "inflection_index": int(kres.inflection),
                       "inflection_point": prep.to_input(kres.joint),
                       "step": prep.r, "coordinates": "x''y'' (PCA frame of the resampled polygon)",
                       "frame2d": {"origin": prep.frame2d.origin, "f1": prep.frame2d.f1,
@@ -267,9 +269,13 @@ def cmd_fit(args) -> int:
                 if i:
                     print()
                 _print_fit(r)
-            if len(recs) > 1 and doc.get("bspline"):
+            if len(recs) > 1:       # a keyline: the file's own points to the whole curve
                 print()
-                _print_bspline(doc["bspline"], "of the keyline: ")
+                r = recs[0]
+                print(f"keyline     rms {_fmt(r['input_rms'])}, max error {_fmt(r['input_max_error'])}"
+                      f"   (the file's {r['input_points']} points to the keyline, in its plane)")
+                if doc.get("bspline"):
+                    _print_bspline(doc["bspline"], "of the keyline: ")
         return EXIT_OK if all(r["converged"] for r in recs) else EXIT_NOCONV
     progress = _Progress(len(files), args.progress or sys.stderr.isatty())
     rows, all_recs, docs, bad = [], [], [], 0

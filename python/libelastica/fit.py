@@ -417,6 +417,19 @@ class KeylineFit:
     second: FitResult
     inflection_estimate: Optional[int] = None
     joint: Optional[np.ndarray] = None
+    # each input point's distance (in its plane) to the keyline: the polygon of both
+    # discrete halves, or the smooth curve the points themselves were fitted to; the
+    # sides' rms / max_error are the fitted points' (a discrete keyline's: the resampled
+    # polygon's vertices, paired: 0.116 / 0.277 where the file's points lie 0.132 / 0.344)
+    input_distances: Optional[np.ndarray] = None
+
+    @property
+    def input_rms(self) -> float:
+        return float(np.sqrt(np.mean(self.input_distances ** 2)))
+
+    @property
+    def input_max_error(self) -> float:
+        return float(np.max(self.input_distances))
 
     def side_points(self, which: str = "second", input_coords: bool = True) -> np.ndarray:
         """The fitted model points of one side (paired vertices or feet), in the
@@ -432,6 +445,20 @@ class KeylineFit:
         halves' vertices)."""
         from .bspline import keyline_bspline
         return keyline_bspline(self.first.curve, self.second.curve, tol, degree)
+
+
+def _polyline_distances(points, vertices, chunk_pairs: int = 1 << 21) -> np.ndarray:
+    """Each point's distance to the polyline through vertices (m >= 2), every segment
+    looked at (no order assumed), points taken in chunks of chunk_pairs / (m - 1)."""
+    A, D = vertices[:-1], np.diff(vertices, axis=0)
+    DD = np.maximum(np.sum(D * D, axis=1), 1e-300)
+    out = np.empty(len(points))
+    step = max(1, chunk_pairs // len(A))
+    for i in range(0, len(points), step):
+        P = points[i:i + step, None, :]
+        u = np.clip(np.sum((P - A) * D, axis=2) / DD, 0.0, 1.0)
+        out[i:i + step] = np.sqrt(np.min(np.sum((P - A - u[..., None] * D) ** 2, axis=2), axis=1))
+    return out
 
 
 def _keyline_options(model: str, kwargs: dict):
@@ -584,8 +611,14 @@ def fit_keyline(points, r: Optional[float] = None, model: str = "discrete", side
                          float(np.sqrt(np.mean(dist ** 2))) if model == "discrete" else None)
     J = np.array([fits[1].curve.x0, fits[1].curve.y0])
     infl = int(np.argmin(np.linalg.norm(prep.polygon - J, axis=1)))
+    if model == "discrete":
+        xy = prep.frame.project(pts) if prep.frame is not None else pts[:, :2]
+        polygon = np.vstack([fits[0].curve.points()[::-1], fits[1].curve.points()[1:]])
+        inputs = _polyline_distances(prep.frame2d.to_local(xy), polygon)
+    else:
+        inputs = np.abs(dist)           # the input points themselves were fitted
     return KeylineFit(prepared=prep, inflection=infl, first=fits[0], second=fits[1],
-                      inflection_estimate=i0, joint=J)
+                      inflection_estimate=i0, joint=J, input_distances=inputs)
 
 
 __all__ = ["ConstraintError", "FitResult", "KeylineFit", "fit", "fit_keyline", "NotConvergedError"]

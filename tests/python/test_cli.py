@@ -411,6 +411,14 @@ def test_fit_keyline_3d(capsys, tmp_path):
     doc = json.loads(r.stdout)
     assert doc["sides"][0]["plane"]["rms"] < 1.0
     assert len(doc["sides"][0]["inflection_point"]) == 3       # mapped back to 3D
+    # the file's own points to the keyline (the sides' figures are the resampled polygon's)
+    kf = el.fit_keyline(read_points(EX / "keyline_3d.csv"), r=3)
+    side = doc["sides"][0]
+    assert side["input_points"] == 161 and side["input_rms"] == pytest.approx(kf.input_rms, rel=1e-12)
+    assert side["input_max_error"] == pytest.approx(kf.input_max_error, rel=1e-12)
+    r = cli(capsys, "fit", EX / "keyline_3d.csv", "--keyline", "--step", "3")
+    assert f"keyline     rms {kf.input_rms:.6g}, max error {kf.input_max_error:.6g}" in r.stdout
+    assert "(the file's 161 points to the keyline, in its plane)" in r.stdout
 
 
 @pytest.mark.parametrize("model", ["discrete", "smooth"])
