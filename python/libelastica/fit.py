@@ -450,14 +450,18 @@ class KeylineFit:
 def _polyline_distances(points, vertices, chunk_pairs: int = 1 << 21) -> np.ndarray:
     """Each point's distance to the polyline through vertices (m >= 2), every segment
     looked at (no order assumed), points taken in chunks of chunk_pairs / (m - 1)."""
-    A, D = vertices[:-1], np.diff(vertices, axis=0)
-    DD = np.maximum(np.sum(D * D, axis=1), 1e-300)
+    ax, ay = vertices[:-1, 0], vertices[:-1, 1]
+    dx, dy = np.diff(vertices[:, 0]), np.diff(vertices[:, 1])
+    inv = 1.0 / np.maximum(dx * dx + dy * dy, 1e-300)
     out = np.empty(len(points))
-    step = max(1, chunk_pairs // len(A))
-    for i in range(0, len(points), step):
-        P = points[i:i + step, None, :]
-        u = np.clip(np.sum((P - A) * D, axis=2) / DD, 0.0, 1.0)
-        out[i:i + step] = np.sqrt(np.min(np.sum((P - A - u[..., None] * D) ** 2, axis=2), axis=1))
+    step = max(1, chunk_pairs // len(ax))
+    for i in range(0, len(points), step):     # x and y apart: a third of the temporaries
+        wx = points[i:i + step, 0, None] - ax
+        wy = points[i:i + step, 1, None] - ay
+        u = np.clip((wx * dx + wy * dy) * inv, 0.0, 1.0)
+        wx -= u * dx
+        wy -= u * dy
+        out[i:i + step] = np.sqrt(np.min(wx * wx + wy * wy, axis=1))
     return out
 
 
