@@ -505,8 +505,7 @@ static void near_circle(double theta0, double kappa, double L, cguess *g)
     g->phi = theta0 + 0.5 * kappa * L;
     g->w = kappa < 0.0 ? -w0 : w0;
     g->k = k;
-    g->q = k == 0.0 ? 0.0 : k < 1.0 ? gsl_sf_ellint_F(asin(S / k), k, GSL_PREC_DOUBLE)
-                                    : gsl_sf_ellint_F(half, 1.0 / k, GSL_PREC_DOUBLE) / k;
+    g->q = k == 0.0 ? 0.0 : k < 1.0 ? ellF(asin(S / k), k) : ellF(half, 1.0 / k) / k;   /* NaN: no guess */
 }
 
 /* Guesses in normalised coordinates from the polygon reduced with `merge` (reduce);
