@@ -129,15 +129,20 @@ class FitResult:
 
 OUTLIER_FACTOR = 6.0
 OUTLIER_MIN_POINTS = 20
+OUTLIER_FLOOR = 1e-4
+OUTLIER_GAP = 1.5
 
 
 def far_points(distances, points, factor: float = OUTLIER_FACTOR) -> np.ndarray:
     """Indices of the points whose distance to a fitted curve exceeds ``factor`` times the
     typical distance, 1.4826 x the median |distance| (for normal noise its standard
-    deviation, which a few far points hardly move), and 1e-6 of the points' extent (on
-    exact data the distances are rounding): scan glitches, points of other geometry,
-    each pulling a least-squares fit towards itself. None among fewer than
-    OUTLIER_MIN_POINTS points (too few for a typical distance)."""
+    deviation, which a few far points hardly move), standing apart from the others (a step
+    of more than OUTLIER_GAP between them and the next nearer), and OUTLIER_FLOOR of the
+    points' extent (on nearly exact data the distances are the model's own small misfit: 60 points
+    of a sketched B-spline fitted to 0.00026 mm on 330 mm had 6 "outliers" at 0.0004-0.0012
+    mm under a floor of 1e-6): scan glitches, points of other geometry, each pulling a
+    least-squares fit towards itself. None among fewer than OUTLIER_MIN_POINTS points (too
+    few for a typical distance)."""
     d = np.abs(as_real_array(distances, "far_points: distances"))
     pts = as_real_array(points, "far_points: points")
     if d.ndim != 1 or pts.ndim != 2 or len(pts) != len(d):
@@ -146,7 +151,16 @@ def far_points(distances, points, factor: float = OUTLIER_FACTOR) -> np.ndarray:
         return np.empty(0, dtype=np.intp)
     extent = float(np.max(np.ptp(pts, axis=0)))
     typical = 1.4826 * float(np.median(d))
-    return np.nonzero((d > factor * typical) & (d > 1e-6 * extent))[0]
+    m = int(np.count_nonzero((d > factor * typical) & (d > OUTLIER_FLOOR * extent)))
+    if m == 0 or m == len(d):
+        return np.empty(0, dtype=np.intp)
+    # and apart from the others: the far points are the largest distances down to the last
+    # step of more than OUTLIER_GAP among them (a misfit rising towards an end condition the
+    # data do not follow is no glitch: one of 165 points at 7.02 mm, the next at 5.13)
+    order = np.argsort(-d, kind="stable")
+    top = d[order[:m + 1]]
+    steps = np.nonzero(top[:-1] > OUTLIER_GAP * top[1:])[0]
+    return np.sort(order[:steps[-1] + 1]) if len(steps) else np.empty(0, dtype=np.intp)
 
 
 def far_points_summary(distances, far, unit: str = "") -> str:

@@ -212,6 +212,31 @@ def test_far_points_name_the_glitches_of_a_scan():
             assert len(el.fit(pts, model=model).outliers()) == 0, (seed, model)
     with pytest.raises(ValueError, match="far_points"):
         el.far_points(np.zeros(30), np.zeros((29, 2)))
+    # nearly exact points (a sketched B-spline's samples): a misfit far below what a designer
+    # sees is no glitch, however it compares with the typical distance
+    near = c.points(np.linspace(0, 250, 60)) + rng.normal(0, 1e-7 * 250, (60, 2))
+    near[[5, 20, 40]] += [[0, 2e-5 * 250], [1.5e-5 * 250, 0], [0, -3e-5 * 250]]
+    for model in ("smooth", "discrete"):
+        r = el.fit(near, model=model)
+        assert np.abs(r.distances).max() > 6 * 1.4826 * np.median(np.abs(r.distances))
+        assert len(r.outliers()) == 0, (model, r.outliers())
+
+
+def test_far_points_stand_apart():
+    """Far points stand apart from the others: glitches above a step of more than 1.5 x are
+    named, the points of a misfit that rises smoothly towards an end condition are not
+    (one of 165 points at 7.02 mm, the next at 5.13, was named before)."""
+    rng = np.random.default_rng(8)
+    pts = np.c_[np.linspace(0, 300, 166), np.zeros(166)]
+    noise = np.abs(rng.normal(0, 0.15, 150))
+    ramp = np.r_[noise, np.linspace(0.3, 5.13, 15), 7.02]          # a misfit rising to an end
+    assert len(el.far_points(ramp, pts)) == 0
+    glitched = ramp.copy()
+    glitched[[3, 70]] = [20.0, 31.0]                               # two glitches on top of it
+    np.testing.assert_array_equal(el.far_points(glitched, pts), [3, 70])
+    clean = np.r_[noise, np.abs(rng.normal(0, 0.15, 16))]
+    clean[[10, 40, 90]] = [9.4, 18.1, 12.0]                        # three glitches in noise
+    np.testing.assert_array_equal(el.far_points(clean, pts), [10, 40, 90])
 
 
 def test_far_points_summary():
