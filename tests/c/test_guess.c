@@ -148,8 +148,10 @@ START_TEST(test_fractions_noise_out)
 }
 END_TEST
 
-/* A circular arc's guess is an elastica of the arc's curvature to 1 % along it, and for
- * an arc turning by less than 2 rad one whose force mu = w^2 is not vanishing against its
+/* A circular arc's guess is an elastica of the arc's curvature to 1 % along it, and each
+ * such guess (near_circle's, and (4.34)'s where its curvature is that constant) starts
+ * with the arc's tangent at its first point (the start state it is built from) and, for
+ * an arc turning by less than 2 rad, has a force mu = w^2 not vanishing against its
  * length (mu L^2 >= 1e-3): with k = 10 for every arc, a nearly straight one's mu was
  * ~(turn / 20)^2, where the fit's start-state chart is singular (fit_model.c) and
  * Levenberg-Marquardt took no step from the guess (guess.c, near_circle). Turns from
@@ -172,18 +174,25 @@ START_TEST(test_guess_arc_is_a_near_circle)
                 size_t cnt = 0;
                 ck_assert_int_eq(el_guess_smooth(xy, N, EL_PARAM_AUTO, c, 6, &cnt), EL_OK);
                 int found = 0;
-                for (size_t j = 0; j < cnt && !found; j++) {
+                for (size_t j = 0; j < cnt; j++) {     /* every candidate of the arc's curvature */
                     for (int i = 0; i < N; i++) s[i] = c[j].length * i / (N - 1.0);
                     if (el_smooth_eval(&c[j], N, s, xy, th, ka) != EL_OK) continue;
                     double dev = 0.0;
                     for (int i = 0; i < N; i++) dev = fmax(dev, fabs(ka[i] * R * sense - 1.0));
                     if (dev > 0.01) continue;
-                    found = 1;
                     const double muL2 = c[j].mu * c[j].length * c[j].length;
                     ck_assert_msg(fabs(turn) >= 2.0 || muL2 >= 1e-3, "turn %g scale %g: mu L^2 = %g",
                                   turn, scale, muL2);
-                    ck_assert_msg(fabs(c[j].length - L) <= 0.01 * L, "turn %g: length %g of %g", turn,
-                                  c[j].length, L);
+                    if (!found)        /* the best ranked of them: the arc's length */
+                        ck_assert_msg(fabs(c[j].length - L) <= 0.01 * L, "turn %g: length %g of %g", turn,
+                                      c[j].length, L);
+                    found = 1;
+                    /* the start state it was built from (theta0 = phi + 2 a(q), placed by
+                     * the mean offset): the arc's first tangent and point */
+                    const double dth = remainder(th[0] - (0.3 + sense * 0.5 * M_PI), 2.0 * M_PI);
+                    const double dp = hypot(xy[0] - (5.0 * scale + R * cos(0.3)), xy[1] - R * sin(0.3));
+                    ck_assert_msg(fabs(dth) <= 0.02 && dp <= 0.01 * L, "turn %g scale %g: start tangent off "
+                                  "by %g rad, start point by %g of %g", turn, scale, dth, dp, L);
                 }
                 ck_assert_msg(found, "turn %g scale %g: no guess of constant curvature 1/R", turn, scale);
             }
