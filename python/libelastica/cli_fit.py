@@ -168,7 +168,7 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
     doc = records[0] if len(records) == 1 else {"file": str(path), "sides": records}
     splines = []
     if args.bspline_tol is not None or args.dxf:
-        tol = _finite(args.bspline_tol if args.bspline_tol is not None else 1e-6, "--bspline-tol")
+        tol = args.bspline_tol if args.bspline_tol is not None else 1e-6     # > 0: the parser's
         if args.keyline:       # ONE B-spline through the joint (x''y'', as the sides)
             splines.append(kres.to_bspline(tol, args.degree))
             doc["bspline"] = splines[0].to_dict()
