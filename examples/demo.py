@@ -177,14 +177,14 @@ def run(src, out):
     def fit_json(f):
         b = f.Shape.Edges[0].Curve
         return {"label": f.Label, "model": f.Model, "split_at_inflection": f.SplitAtInflection,
-                "resample_step_mm": f.ResampleStep, "points": len(f.DataPoints),
+                "resample_step_mm": f.ResampleStep.Value, "points": len(f.DataPoints),
                 "error_measure": f.ErrorMeasure, "rms_mm": f.Rms, "max_error_mm": f.MaxError,
                 "k": list(f.K), "status": f.Status,
                 "curves": [dict(curve_to_dict(c), energy=float(c.energy()) if
                                 isinstance(c, el.SmoothElastica) else None)
                            for c in f.Proxy.plane_curves(f)[0]],
                 "bspline": {"degree": b.Degree, "poles": b.NbPoles, "length_mm": f.Shape.Length,
-                            "tolerance_mm": f.Tolerance, "deviation_mm": f.BSplineDeviation}}
+                            "tolerance_mm": f.Tolerance.Value, "deviation_mm": f.BSplineDeviation}}
 
     report = {
         "input": os.path.relpath(src, ROOT) if src.startswith(ROOT) else src,

@@ -286,8 +286,8 @@ def blend_panel(doc, S):
     for text, mm in (("6.5 cm", 65.0), ("2.75 in", 69.85), ("=2*34", 68.0), ("70,5", 70.5), ("70", 70.0)):
         type_into(panel.length, text)
         wait()
-        check(abs(b.Length - mm) < 1e-9 and abs(b.Shape.Length - mm) < 1e-2,
-              f"blend: typed {text!r} is {mm} mm (Length {b.Length}, curve {b.Shape.Length:.4f})")
+        check(abs(b.Length.Value - mm) < 1e-9 and abs(b.Shape.Length - mm) < 1e-2,
+              f"blend: typed {text!r} is {mm} mm (Length {b.Length.Value}, curve {b.Shape.Length:.4f})")
     panel.continuity.setCurrentIndex(1)         # G2
     wait()
     check(b.Continuity == "G2" and len(b.GuideDucks) == 2 and "G2 from solution" in panel.result.text()
@@ -381,11 +381,11 @@ def spline_panel(doc, S):
     panel.mode.setCurrentIndex(1)               # solve for a length
     wait()
     check(s.Mode == "length" and panel.length.isEnabled() and not panel.tension.isEnabled()
-          and abs(s.Length - s.SplineLength) < 1e-6 and s.Status == "ok",
+          and abs(s.Length.Value - s.SplineLength) < 1e-6 and s.Status == "ok",
           "spline mode switch: length mode starts from the length on screen")
     click_arrow(panel.length, up=True)
     wait()
-    check(abs(s.SplineLength - (s.Length)) < 1e-6 and s.SplineTension < s.Tension and
+    check(abs(s.SplineLength - s.Length.Value) < 1e-6 and s.SplineTension < s.Tension and
           abs(panel.tension.value() - s.SplineTension) < 1e-12,
           f"spline: a longer batten is pushed (tension {s.SplineTension:.3g} shown)")
     type_into(panel.length, "100")
@@ -510,15 +510,15 @@ def fit_panel(doc, S):
     wait()
     check(f.Model == "smooth" and panel.degree.isEnabled() and panel.distance.isEnabled() and
           "converged" in f.Status, f"fit panel: smooth model ({f.Status})")
-    t0 = f.Tolerance
+    t0 = f.Tolerance.Value
     click_arrow(panel.tol, up=True)
-    check(abs(f.Tolerance - 10 * t0) < 1e-12 * t0 and panel.tol.text().startswith(f"{10 * t0:g}"),
+    check(abs(f.Tolerance.Value - 10 * t0) < 1e-12 * t0 and panel.tol.text().startswith(f"{10 * t0:g}"),
           f"fit: tolerance arrow steps a decade ({t0:g} -> {panel.tol.text()})")
     click_arrow(panel.tol, up=False)
     click_arrow(panel.tol, up=False)
     wait()
-    check(abs(f.Tolerance - t0 / 10) < 1e-12 * t0 and "error" not in f.Status,
-          f"fit: tolerance {f.Tolerance:g} applied")
+    check(abs(f.Tolerance.Value - t0 / 10) < 1e-12 * t0 and "error" not in f.Status,
+          f"fit: tolerance {f.Tolerance.Value:g} applied")
     panel.pin_end.click()                   # a mouse click on the check box
     wait()
     e = f.Shape.Edges[0]

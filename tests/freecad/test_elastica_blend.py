@@ -230,8 +230,8 @@ class BlendTest(unittest.TestCase):
         self.doc.recompute()
         b.Solution = 1
         self.doc.recompute()
-        b.Length = 72.0
-        self.assertEqual(b.Solution, 0)
+        b.Length = "7.2 cm"                    # a length with its unit, as FreeCAD's own
+        self.assertEqual((b.Length.Value, b.Solution), (72.0, 0))
         b.Solution = 7
         self.doc.recompute()
         self.assertTrue(b.Status.startswith("error"))

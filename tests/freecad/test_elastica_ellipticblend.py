@@ -97,7 +97,7 @@ class EllipticBlendTest(unittest.TestCase):
         params = []
         for p in pts:
             dist = e.distToShape(Part.Vertex(p))[0]
-            self.assertLess(dist, obj.Tolerance + 1e-9)
+            self.assertLess(dist, obj.Tolerance.Value + 1e-9)
             params.append(e.Curve.parameter(p))
         self.assertEqual(params, sorted(params))
         self.assertLess((e.valueAt(e.FirstParameter) - pts[0]).Length, 1e-7)

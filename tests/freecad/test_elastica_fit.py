@@ -41,7 +41,7 @@ class FitInputsTest(unittest.TestCase):
         # the shape (B-spline) lies on the true curve, mapped into 3D
         true_pts = [tuple(p) for p in G.to_3d(S.SKETCH_PLACEMENT, self.curve.points(
             __import__("numpy").linspace(0, self.curve.length, 30)))]
-        self.assertLess(S.distance_to_shape(true_pts, obj.Shape), 20 * rms + obj.Tolerance)
+        self.assertLess(S.distance_to_shape(true_pts, obj.Shape), 20 * rms + obj.Tolerance.Value)
         return obj
 
     # the discrete elastica through 40 points of a smooth one differs from it by O(h^2):
@@ -361,6 +361,54 @@ class FitResultTest(unittest.TestCase):
         self.assertEqual(f.Tolerance, 1e-300)               # a float property alone keeps 0.0
         self.assertEqual(f.ResampleStep, 1.2345678901234567e-5)
         self.assertFalse(f.isTouched() if hasattr(f, "isTouched") else "Touched" in f.State)
+
+    def test_lengths_take_units_and_documents_of_version_2_load(self):
+        """Tolerance and ResampleStep are lengths (App::PropertyDistance: typed and shown
+        with a unit); version 2 stored them as App::PropertyFloat: such a document opens
+        with lengths, the exact values, the expression and the result kept, untouched."""
+        import zipfile
+        f = Fi.make(self.doc, [(self.sk, [])], Model="smooth")
+        f.Tolerance = "5 um"
+        f.ResampleStep = "0.1 cm"
+        self.assertAlmostEqual(f.Tolerance.Value, 5e-3, delta=1e-18)
+        self.assertAlmostEqual(f.ResampleStep.Value, 1.0, delta=1e-15)
+        f.Tolerance = 1.2345678901234567e-2
+        f.setExpression("ResampleStep", "Tolerance * 80")
+        self.doc.recompute()
+        rms, step = f.Rms, f.ResampleStep.Value
+        self.assertAlmostEqual(step, 80 * 1.2345678901234567e-2, delta=1e-12)
+        name, fname = self.doc.Name, f.Name
+        path = S.temp_path(self, "v3.FCStd")
+        self.doc.saveAs(path)
+        App.closeDocument(name)
+        old = path.replace("v3", "v2")
+        with zipfile.ZipFile(path) as zin, zipfile.ZipFile(old, "w") as zout:
+            for item in zin.infolist():
+                data = zin.read(item.filename)
+                if item.filename == "Document.xml":
+                    text = data.decode()
+                    for prop in ("Tolerance", "ResampleStep"):
+                        new = f'<Property name="{prop}" type="App::PropertyDistance"'
+                        self.assertEqual(text.count(new), 1, prop)
+                        text = text.replace(new, f'<Property name="{prop}" type="App::PropertyFloat"')
+                    data = text.encode()
+                zout.writestr(item, data)
+        self.doc = App.openDocument(old)
+        f = self.doc.getObject(fname)
+        for prop in ("Tolerance", "ResampleStep"):
+            self.assertEqual(f.getTypeIdOfProperty(prop), "App::PropertyDistance")
+        self.assertEqual(f.Tolerance.Value, 1.2345678901234567e-2)     # not the file's 16 decimals
+        self.assertEqual(f.ResampleStep.Value, step)
+        self.assertEqual(dict(f.ExpressionEngine).get("ResampleStep"), "Tolerance * 80")
+        self.assertNotIn("Touched", f.State)
+        self.assertEqual(f.Rms, rms)
+        f.Tolerance = "0.02 mm"
+        self.doc.recompute()
+        self.assertAlmostEqual(f.ResampleStep.Value, 1.6, delta=1e-12)  # the expression follows
+        self.assertFalse(f.Status.startswith("error"), f.Status)
+        f.Tolerance = 1.2345678901234567e-2
+        self.doc.recompute()
+        self.assertAlmostEqual(f.Rms, rms, delta=1e-12 * rms)
 
     def test_documents_of_the_old_layout_load(self):
         """Version 1 saved its proxies as freecad.elastica.features.<Class> and the

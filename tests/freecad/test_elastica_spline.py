@@ -355,9 +355,10 @@ class SplineTest(unittest.TestCase):
         self.assertIn("131.633 mm", s.Status)           # the polygon's length: the limit
         self.assertEqual(s.Length, 50.0)                 # as typed
         self.assertAlmostEqual(s.Shape.Length, good, delta=1e-12)
-        s.Length = 150.0
+        s.Length = "0.15 m"                              # a length with its unit
         self.doc.recompute()
         self.assertTrue(s.Status.startswith("ok"), s.Status)
+        self.assertAlmostEqual(s.SplineLength, 150.0, delta=1e-9)
         for prop, value in (("Stiffness", -1.0), ("Degree", 9), ("Tolerance", 0.0)):
             old = getattr(s, prop)
             setattr(s, prop, value)

@@ -14,8 +14,8 @@ import FreeCAD as App
 from . import defaults
 from .geometry import (edge_end, el, is_sketch, link_edge, np, part_bspline,
                        plane_coordinates, plane_curvature, sketch_geo_of_edge, to_3d)
-from .proxy import (FeatureProxy, InputProblem, add_enum, add_property, attach_view,
-                    check_degree, check_number, check_tolerance, read_only)
+from .proxy import (FeatureProxy, InputProblem, add_enum, add_length, add_property,
+                    attach_view, check_degree, check_number, check_tolerance, read_only)
 
 MODES = ["length", "tension"]
 CONTINUITIES = ["G1", "G2"]
@@ -231,9 +231,9 @@ class BlendProxy(FeatureProxy):
                          "do not", -1)
         add_enum(obj, "Mode", "Blend", "Solve for a given tension (default: 0, the free "
                  "batten) or a given arc length", MODES, "tension")
-        add_property(obj, "App::PropertyFloat", "Length", "Blend",
-                     "Arc length of the blend in length mode (mm); 0 = the length of the "
-                     "lowest-energy free batten", 0.0)
+        add_length(obj, "Length", "Blend",
+                   "Arc length of the blend in length mode (mm); 0 = the length of the "
+                   "lowest-energy free batten", 0.0)
         add_property(obj, "App::PropertyFloat", "Tension", "Blend",
                      "Tension sigma in tension mode (1/mm^2; 0 = free batten, negative = "
                      "compression)", 0.0)
@@ -241,8 +241,8 @@ class BlendProxy(FeatureProxy):
         add_property(obj, "App::PropertyInteger", "Solution", "Blend",
                      "Which solution, by bending energy (0 = the lowest); reset to 0 by every "
                      "edit of the blend's parameters", 0)
-        add_property(obj, "App::PropertyFloat", "Tolerance", "BSpline",
-                     "Largest distance (mm) of the B-spline from the elastica", tol)
+        add_length(obj, "Tolerance", "BSpline",
+                   "Largest distance (mm) of the B-spline from the elastica", tol)
         add_property(obj, "App::PropertyInteger", "Degree", "BSpline",
                      "Degree of the B-spline (3 to 7; high degrees need few poles)",
                      BSPLINE_DEGREE)
@@ -306,13 +306,13 @@ class BlendProxy(FeatureProxy):
         plane = None
         if obj.Edge1[0] == obj.Edge2[0] and is_sketch(obj.Edge1[0]):
             plane = obj.Edge1[0].getGlobalPlacement()
-        value = obj.Length if obj.Mode == "length" else obj.Tension
+        value = float(obj.Length) if obj.Mode == "length" else obj.Tension
         r = blend_core(e1, obj.AtEnd1, e2, obj.AtEnd2, plane, obj.Mode, value)
         curves = r["curves"]
         if not 0 <= obj.Solution < len(curves):
             raise InputProblem(f"Solution = {obj.Solution}: there are {len(curves)} solutions "
                                f"(0 to {len(curves) - 1})")
-        tol, degree = check_tolerance(obj.Tolerance), check_degree(obj.Degree)
+        tol, degree = check_tolerance(float(obj.Tolerance)), check_degree(obj.Degree)
         if obj.Continuity == "G2":
             r["g2"], r["bspline"], r["g2_note"] = g2_blend(r, obj.Solution, obj.Mode, value,
                                                            tol, degree)

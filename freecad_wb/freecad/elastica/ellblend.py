@@ -18,8 +18,8 @@ import FreeCAD as App
 
 from . import defaults
 from .geometry import el, np, part_bspline, plane_coordinates, to_3d
-from .proxy import (FeatureProxy, InputProblem, add_enum, add_property, check_number,
-                    check_tolerance, new_feature, read_only)
+from .proxy import (FeatureProxy, InputProblem, add_enum, add_length, add_property,
+                    check_number, check_tolerance, new_feature, read_only)
 from .sources import gather_vertices
 
 MODES = ["interpolate", "control"]
@@ -119,8 +119,8 @@ class EllipticBlendProxy(FeatureProxy):
         add_property(obj, "App::PropertyFloat", "D", "Blend",
                      "End-derivative parameter d > 0: the curve leaves q0 with velocity "
                      "d (q1 - q0) and ends with d (q3 - q2)", 2.0)
-        add_property(obj, "App::PropertyFloat", "Tolerance", "BSpline",
-                     "Largest distance (mm) of the B-spline from the blending curve", defaults()[0])
+        add_length(obj, "Tolerance", "BSpline",
+                   "Largest distance (mm) of the B-spline from the blending curve", defaults()[0])
         add_property(obj, "App::PropertyFloat", "BSplineDeviation", "Result",
                      "Certified distance of the B-spline from the blending curve (mm)")
         add_property(obj, "App::PropertyVectorList", "ControlPoints", "Result",
@@ -150,7 +150,8 @@ class EllipticBlendProxy(FeatureProxy):
     def compute(self, obj):
         """ellblend_core's dict for the linked points; raises InputProblem."""
         pts, plane = gather_vertices(obj.Points)
-        return ellblend_core(pts, plane, obj.Mode, obj.K, obj.D, obj.Tolerance, obj.KConvention)
+        return ellblend_core(pts, plane, obj.Mode, obj.K, obj.D, float(obj.Tolerance),
+                             obj.KConvention)
 
     def apply(self, obj, r):
         obj.Shape = part_bspline(r["bspline"], r["placement"]).toShape()

@@ -16,8 +16,8 @@ import Part
 from . import defaults
 from .geometry import (chain_bspline, el, link_edge, np, part_bspline,
                        plane_coordinates, plane_curvature, to_3d)
-from .proxy import (FeatureProxy, InputProblem, add_enum, add_property, check_degree,
-                    check_number, check_tolerance, new_feature, read_only)
+from .proxy import (FeatureProxy, InputProblem, add_enum, add_length, add_property,
+                    check_degree, check_number, check_tolerance, new_feature, read_only)
 from .sources import gather_points
 
 MIN_POINTS = 6          # fewer points cannot determine the 7 (5 shape) parameters of a fit
@@ -493,12 +493,12 @@ class FitProxy(FeatureProxy):
                          "seen from the fit plane's normal (a sketch's normal)", 0.0)
         if "PinEnds" in obj.PropertiesList:            # documents of version 1
             obj.removeProperty("PinEnds")
-        add_property(obj, "App::PropertyFloat", "ResampleStep", "Fit",
-                     "Equilateral resampling step (mm) before fitting; 0 keeps the points. A "
-                     "split keyline: the step of its preparation (0 = 1/100 of its length); the "
-                     "discrete one fits that polygon, the smooth one the points themselves", 0.0)
-        add_property(obj, "App::PropertyFloat", "Tolerance", "BSpline",
-                     "Largest distance (mm) of the B-spline from the fitted smooth elastica", tol)
+        add_length(obj, "ResampleStep", "Fit",
+                   "Equilateral resampling step (mm) before fitting; 0 keeps the points. A "
+                   "split keyline: the step of its preparation (0 = 1/100 of its length); the "
+                   "discrete one fits that polygon, the smooth one the points themselves", 0.0)
+        add_length(obj, "Tolerance", "BSpline",
+                   "Largest distance (mm) of the B-spline from the fitted smooth elastica", tol)
         add_property(obj, "App::PropertyInteger", "Degree", "BSpline",
                      "Degree of the B-spline (3 to 7) of a smooth fit; a discrete fit's vertices "
                      "are joined by the C2 cubic through them (natural at free ends)", deg)
@@ -611,8 +611,8 @@ def core_options(props):
                 start_curvature=get("StartCurvature", 0.0) if get("UseStartCurvature") else None,
                 end_curvature=get("EndCurvature", 0.0) if get("UseEndCurvature") else None,
                 start_join=get("StartContinuity", "tangent"),
-                end_join=get("EndContinuity", "tangent"), step=get("ResampleStep", 0.0),
-                tol=get("Tolerance", 1e-3), degree=get("Degree", 3))
+                end_join=get("EndContinuity", "tangent"), step=float(get("ResampleStep", 0.0)),
+                tol=float(get("Tolerance", 1e-3)), degree=get("Degree", 3))
 
 
 def make(doc, sources=(), csv_file="", **props):

@@ -226,7 +226,7 @@ class Panel:
         """A spin box bound live to the float property prop."""
         box = (DecadeBox if decade else NumberBox)(lo, hi, step, unit, tip)
         box.blockSignals(True)
-        box.setValue(getattr(self.obj, prop))
+        box.setValue(float(getattr(self.obj, prop)))
         box.blockSignals(False)
         box.valueChanged.connect(lambda v: self.set(prop, float(v)))
         self.row(grid, label, box, tip)
@@ -522,4 +522,4 @@ def show_box(box):
 
 
 def _fmt(v, unit="mm"):
-    return f"{v:.3g} {unit}".strip()
+    return f"{float(v):.3g} {unit}".strip()

@@ -15,7 +15,7 @@ import math
 
 import FreeCAD as App
 
-VERSION = 2             # of the proxies' saved state
+VERSION = 3             # of the proxies' saved state (3: lengths typed with units)
 VIEW_HOOK = []          # [attach(obj), restored(obj)] set by init_gui: view providers
 
 
@@ -29,6 +29,29 @@ def add_property(obj, kind, name, group, tip, value=None):
         obj.addProperty(kind, name, group, tip)
         if value is not None:
             setattr(obj, name, value)
+
+
+# A length the designer types is an App::PropertyDistance: the property editor shows it
+# with its unit and parses one ("6.5 cm"), as FreeCAD's own features' lengths. Not
+# App::PropertyLength, which sets a negative value to 0 silently; the feature's check
+# names the value typed instead (check_number).
+LENGTH = "App::PropertyDistance"
+
+
+def add_length(obj, name, group, tip, value=None):
+    """A length property (LENGTH). Documents of version 2 stored it as App::PropertyFloat:
+    that property is replaced, its value and expression kept."""
+    if name in obj.PropertiesList and obj.getTypeIdOfProperty(name) == "App::PropertyFloat":
+        value = float(getattr(obj, name))
+        expression = dict(obj.ExpressionEngine).get(name)
+        if expression:
+            obj.setExpression(name, None)
+        obj.removeProperty(name)
+        add_property(obj, LENGTH, name, group, tip, value)
+        if expression:
+            obj.setExpression(name, expression)
+        return
+    add_property(obj, LENGTH, name, group, tip, value)
 
 
 def add_enum(obj, name, group, tip, values, value=None):
@@ -145,7 +168,7 @@ class FeatureProxy:
     # ---------------------------------------------------------------- save / restore
 
     def _float_props(self, obj):
-        return [p for p in obj.PropertiesList if obj.getTypeIdOfProperty(p) == "App::PropertyFloat"]
+        return [p for p in obj.PropertiesList if obj.getTypeIdOfProperty(p) in ("App::PropertyFloat", LENGTH)]
 
     def __getstate__(self):
         state = {"kind": self.kind, "version": VERSION}

@@ -16,8 +16,8 @@ import FreeCAD as App
 from . import defaults
 from .geometry import edge_end, el, link_edge, np, part_bspline, plane_coordinates, \
     plane_curvature, to_3d
-from .proxy import (FeatureProxy, InputProblem, add_enum, add_property, check_degree,
-                    check_number, check_tolerance, new_feature, read_only)
+from .proxy import (FeatureProxy, InputProblem, add_enum, add_length, add_property,
+                    check_degree, check_number, check_tolerance, new_feature, read_only)
 from .sources import gather_vertices
 
 MODES = ["tension", "length"]
@@ -209,9 +209,9 @@ class SplineProxy(FeatureProxy):
         add_property(obj, "App::PropertyFloat", "Tension", "Spline",
                      "Tension sigma in tension mode (1/mm^2, >= 0): 0 = the free batten, "
                      "larger pulls the batten straighter between the ducks", 0.0)
-        add_property(obj, "App::PropertyFloat", "Length", "Spline",
-                     "Total length in length mode (mm), longer than the polygon through the "
-                     "points; 0 = the free batten's length", 0.0)
+        add_length(obj, "Length", "Spline",
+                   "Total length in length mode (mm), longer than the polygon through the "
+                   "points; 0 = the free batten's length", 0.0)
         add_property(obj, "App::PropertyBool", "Closed", "Spline",
                      "A closed batten through the points (the end conditions do not apply)",
                      False)
@@ -227,8 +227,8 @@ class SplineProxy(FeatureProxy):
         add_property(obj, "App::PropertyFloat", "Stiffness", "Spline",
                      "Bending stiffness EI of the batten (N mm^2): the duck forces in newtons; "
                      "0 = in units of EI/2 (1/mm^2)", 0.0)
-        add_property(obj, "App::PropertyFloat", "Tolerance", "BSpline",
-                     "Largest distance (mm) of the B-spline from the elastic spline", tol)
+        add_length(obj, "Tolerance", "BSpline",
+                   "Largest distance (mm) of the B-spline from the elastic spline", tol)
         add_property(obj, "App::PropertyInteger", "Degree", "BSpline",
                      "Degree of the B-spline (3 to 7): one B-spline, G2 at the points",
                      BSPLINE_DEGREE)
@@ -282,8 +282,8 @@ class SplineProxy(FeatureProxy):
         check_number("Stiffness", obj.Stiffness, 0.0, None, "N mm^2", why="0 shows the duck "
                      "forces in units of EI/2")
         pts, plane = gather_vertices(obj.Points, DUCKS_NEED, edge_means_object=True)
-        return spline_core(pts, plane, obj.Mode, obj.Tension, obj.Length, obj.Closed,
-                           *self.end_specs(obj), tol=obj.Tolerance, degree=obj.Degree)
+        return spline_core(pts, plane, obj.Mode, obj.Tension, float(obj.Length), obj.Closed,
+                           *self.end_specs(obj), tol=float(obj.Tolerance), degree=obj.Degree)
 
     def apply(self, obj, r):
         sp, plc, bs = r["spline"], r["placement"], r["bspline"]

@@ -383,8 +383,9 @@ class SplinePanel(Panel):
         self.tension.setMinimum(0.0 if tension_mode else -1e6)
         self.tension.blockSignals(False)
         given, shown = (self.tension, self.length) if tension_mode else (self.length, self.tension)
-        if given.value() != getattr(o, "Tension" if tension_mode else "Length"):
-            self.show_value(given, getattr(o, "Tension" if tension_mode else "Length"))
+        value = float(getattr(o, "Tension" if tension_mode else "Length"))
+        if given.value() != value:
+            self.show_value(given, value)
         if o.Ducks and not o.Status.startswith("error"):
             self.show_value(shown, o.SplineLength if tension_mode else o.SplineTension)
         super().refresh()
