@@ -153,10 +153,12 @@ COST_RATIO, COST_FLOOR = 2.0, 1e-4
 
 def _constraint_cost(xy, model, distance, fixed, constraints, rms, fields):
     """(rms of the same fit with free ends, or -1 when it fails; the warnings);
-    fields: constraint_fields."""
+    fields: constraint_fields. A discrete fit's rms is its drawn cubic's (_drawn_distances)."""
     try:
-        free = el().fit(xy, model=model, fixed=fixed or None,
-                        distance=distance if model == "smooth" else None).rms
+        r = el().fit(xy, model=model, fixed=fixed or None,
+                     distance=distance if model == "smooth" else None)
+        free = r.rms if model == "smooth" else \
+            _rms(_drawn_distances(r.to_bspline(), xy, r.foot_s)[1])
     except (ValueError, ArithmeticError, RuntimeError):
         return -1.0, []
     extent = float(np().ptp(xy, axis=0).max())
@@ -166,6 +168,55 @@ def _constraint_cost(xy, model, distance, fixed, constraints, rms, fields):
     return float(free), [f"the end conditions ({', '.join(named)}) raise the rms from "
                          f"{free:.3g} mm (free ends) to {rms:.3g} mm: check that they match "
                          "the data"]
+
+
+def _rms(dist):
+    return float(np().sqrt(np().mean(np().square(dist))))
+
+
+def _drawn_distances(bspline, data, t0, steps=30):
+    """Each point's nearest point on a discrete fit's drawn cubic and its signed distance
+    (+ = left of the travel): the curve the designer gets, where the library measures to
+    the polygon (9 exact points on the sample S, uneven: rms 0.099 mm to the polygon, 0.22
+    to the cubic). Newton on (B(t) - p) . B'(t) = 0 from t0, each point's polygon foot: the
+    cubic runs through the vertices by chord length, so a foot's arc length along the
+    polygon is its parameter there. A step is kept only where it brings the point closer
+    (B-spline evaluation and its derivatives are the library's; the projection onto one is
+    not: Part's parameter() searches the whole curve for every point)."""
+    n = np()
+    a, b = bspline.domain
+    t = n.clip(n.asarray(t0, dtype=float) + a, a, b)
+    P = bspline.evaluate(t)
+    d2 = n.sum((P - data) ** 2, axis=1)
+    for _ in range(steps):
+        D1, D2 = bspline.derivative(t, 1), bspline.derivative(t, 2)
+        r = P - data
+        g = n.sum(r * D1, axis=1)
+        h = n.sum(D1 * D1, axis=1)
+        curv = h + n.sum(r * D2, axis=1)          # g's derivative: Newton where positive
+        h = n.where(curv > 0.0, curv, h)
+        tn = n.clip(t - g / n.maximum(h, 1e-300), a, b)
+        Pn = bspline.evaluate(tn)
+        dn = n.sum((Pn - data) ** 2, axis=1)
+        closer = dn < d2
+        if not closer.any():
+            break
+        t, P, d2 = n.where(closer, tn, t), n.where(closer[:, None], Pn, P), n.where(closer, dn, d2)
+    D1, r = bspline.derivative(t, 1), data - P
+    left = D1[:, 0] * r[:, 1] - D1[:, 1] * r[:, 0] >= 0.0
+    return P, n.where(left, 1.0, -1.0) * n.sqrt(d2)
+
+
+def _foot_parameters(results, split):
+    """The data points' parameters on a discrete fit's cubic from their polygon feet: the
+    arc length of each foot (a keyline's first half reversed, from the first point, then the
+    second's after the joint vertex)."""
+    if not split:
+        return results[0].foot_s
+    n = np()
+    first, second = results
+    joint = _polyline_length(first.curve.points())
+    return n.concatenate([joint - first.foot_s[::-1], joint + second.foot_s[1:]])
 
 
 def _polyline_length(xy):
@@ -230,7 +281,7 @@ def _keyline(xy, model, step):
     feet = to_plane(n.vstack([first.foot_points()[::-1], second.foot_points()[skip:]]))
     dist = n.concatenate([-first.distances[::-1], second.distances[skip:]])
     halves = [_moved(r.curve, kf.prepared.frame2d) for r in (first, second)]
-    rms = float(n.sqrt(n.mean(dist ** 2)))
+    rms = _rms(dist)
     return halves, [first, second], data, feet, dist, rms, float(n.abs(dist).max())
 
 
@@ -300,7 +351,7 @@ def _coarse_polygon(xy, constraints, rms):
     if not (rms > COST_RATIO * smooth and rms - smooth > COST_FLOOR * extent):
         return []
     return [f"{len(xy)} points give the discrete model a polygon of {len(xy) - 1} segments, "
-            f"{rms:.3g} mm from them (rms), where the smooth model's curve lies {smooth:.3g} mm "
+            f"its cubic {rms:.3g} mm from them (rms), where the smooth model's curve lies {smooth:.3g} mm "
             "from them: choose Model Smooth elastica for so few points"]
 
 
@@ -407,13 +458,16 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
             constraints = end_constraints(xy, plane, tol=tol, **ends)
             fitted = _one_piece(xy, model, distance, fixed, constraints, fields)
         curves, results, data, feet, dist, rms, max_error = fitted
+        bspline = _shape_bspline(model, curves, results, split, tol, degree)
+        if model == "discrete":
+            feet, dist = _drawn_distances(bspline, data, _foot_parameters(results, split))
+            rms, max_error = _rms(dist), float(np().abs(dist).max())
         if constraints:
             free_rms, warnings = _constraint_cost(xy, model, distance, fixed, constraints, rms,
                                                   fields)
         if model == "discrete" and not split and not step:
             warnings = warnings + _coarse_polygon(xy, constraints, rms)
         warnings = warnings + _far_points(data, dist, plane)
-        bspline = _shape_bspline(model, curves, results, split, tol, degree)
     except InputProblem:
         raise
     except (ValueError, ArithmeticError, RuntimeError) as exc:
@@ -426,7 +480,8 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         raise InputProblem(f"fit failed: {exc}") from None
     if not (n.all(n.isfinite(dist)) and math.isfinite(rms)):
         raise InputProblem("fit failed: non-finite error")
-    measure = "point to curve" if model == "smooth" else "point to curve (its polygon)"
+    measure = "point to curve" if model == "smooth" else \
+        "point to curve (the cubic through the polygon's vertices)"
     return {
         "curves": curves, "results": results, "bspline": bspline, "placement": plane,
         "data": data, "feet": feet, "distances": n.asarray(dist, dtype=float),
