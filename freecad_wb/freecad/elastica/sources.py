@@ -135,16 +135,31 @@ def wire_points(shape):
     return pts
 
 
+def along_principal_axis(points):
+    """Points without an order of their own (a scan's cloud) in order along their first
+    principal axis, starting at the end on the first stored point's side (as a fit orders
+    them; right for a curve that does not double back along that axis)."""
+    import numpy as np
+    xyz = np.array([tuple(p) for p in points], dtype=float)
+    if len(xyz) < 3 or not np.isfinite(xyz).all():      # a non-finite point: the caller says so
+        return list(points)
+    c = xyz - xyz.mean(axis=0)
+    u = c @ np.linalg.svd(c, full_matrices=False)[2][0]
+    order = np.argsort(u if u[0] <= np.median(u) else -u, kind="stable")
+    return [points[i] for i in order]
+
+
 def object_points(obj):
     """The points of a whole object, in order: a sketch's sketch points (else the
-    vertices of its one wire), a Points object's points, the vertices of a wire
-    along it, else a shape's vertices."""
+    vertices of its one wire), a Points object's points along their principal axis (a
+    cloud's stored order is the scanner's), the vertices of a wire along it, else a
+    shape's vertices."""
     if is_sketch(obj):
         pts = sketch_points(obj)
         if pts or obj.Shape.isNull():
             return pts
     if obj.isDerivedFrom("Points::Feature"):
-        return [obj.Placement.multVec(App.Vector(*p)) for p in obj.Points.Points]
+        return along_principal_axis([obj.Placement.multVec(App.Vector(*p)) for p in obj.Points.Points])
     shape = getattr(obj, "Shape", None)
     if shape is None or shape.isNull():
         raise InputProblem(f"{obj.Label} has no geometry")
