@@ -236,8 +236,15 @@ class FitParametricTest(unittest.TestCase):
         self.doc.recompute()
         self.assertTrue(self.fit.Status.startswith("error"), self.fit.Status)
         self.assertIn("3 points", self.fit.Status)
-        self.assertNotIn("Invalid", self.fit.State)
+        # in error as FreeCAD's own features are (the tree's mark), its last shape kept
+        self.assertIn("Invalid", self.fit.State)
+        self.assertFalse(self.fit.isValid())
         self.assertLess(abs(self.fit.Shape.Length - before.Length), 1e-12)
+        for x, y in self.xy[3:]:
+            self.sk.addGeometry(Part.Point(App.Vector(x, y, 0)), False)
+        self.doc.recompute()
+        self.assertTrue(self.fit.isValid() and "Invalid" not in self.fit.State, self.fit.State)
+        self.assertFalse(self.fit.Status.startswith("error"), self.fit.Status)
 
 
 class FitResultTest(unittest.TestCase):

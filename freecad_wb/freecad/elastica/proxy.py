@@ -23,6 +23,10 @@ class InputProblem(ValueError):
     """Unusable input for a feature (a message for the user, not a bug)."""
 
 
+class RecomputeError(App.Base.FreeCADError):
+    """A feature's failed recompute, raised to FreeCAD (FeatureProxy.execute)."""
+
+
 def add_property(obj, kind, name, group, tip, value=None):
     """Add a property (with its tooltip) unless the object has it already."""
     if name not in obj.PropertiesList:
@@ -144,17 +148,22 @@ class FeatureProxy:
     # ---------------------------------------------------------------- recompute
 
     def execute(self, obj):
+        """compute, then apply; a failure is said in one line (report), the last good shape
+        kept (drawn dashed), and raised to FreeCAD, which marks the feature in error as its
+        own (the tree's error mark, "Recompute failed!", its dependents not recomputed), at
+        the cost of a three-line traceback after that line in the report view."""
         try:
             r = self.compute(obj)
         except InputProblem as exc:
-            report(obj, str(exc))
-            self.on_error(obj)
-            return
+            msg = str(exc)
         except Exception as exc:  # a bug or a kernel error: report it, keep the shape
-            report(obj, f"{type(exc).__name__}: {exc}")
-            self.on_error(obj)
+            msg = f"{type(exc).__name__}: {exc}"
+        else:
+            self.apply(obj, r)
             return
-        self.apply(obj, r)
+        report(obj, msg)
+        self.on_error(obj)
+        raise RecomputeError(f"Elastica {obj.Label}: {msg}")
 
     def setup(self, obj):
         pass
