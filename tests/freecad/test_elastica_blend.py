@@ -225,6 +225,49 @@ class BlendTest(unittest.TestCase):
                for x, y in c[0].points(np.linspace(0, c[0].length, 200))]
         self.assertLess(S.distance_to_shape(pts, b.Shape), b.Tolerance)
 
+    def test_a_picked_solution_follows_the_edges(self):
+        """A picked solution stays the shape shown as an edge moves (its index may change
+        when solutions appear or vanish); where that shape is gone, the lowest-energy one
+        is shown and the status says so (it was 'error: Solution = 3: there are 3
+        solutions', and on the way the index named another curve)."""
+        import numpy as np
+        b = Bl.make(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"), Mode="length", Length=90.0)
+        self.doc.recompute()
+
+        def move(y):
+            shown = Bl.turning(b.Proxy.plane_curves(b)[0])
+            self.sk.movePoint(1, 1, App.Vector(80, y, 0))
+            self.doc.recompute()
+            self.assertTrue(b.Status.startswith("solution"), (y, b.Status))
+            if "gone" in b.Status:
+                self.assertEqual(b.Solution, 0)
+                return
+            d = Bl.turning(b.Proxy.plane_curves(b)[0]) - shown
+            self.assertLess(float(np.sqrt(np.mean((d - d.mean()) ** 2))), Bl.SAME_SHAPE, (y, b.Status))
+
+        for pick, ys in ((3, (30, 35, 40, 60, 80)), (2, (30, 40, 20))):
+            self.sk.movePoint(1, 1, App.Vector(80, 25, 0))
+            self.doc.recompute()
+            b.Solution = pick
+            self.doc.recompute()
+            for y in ys:
+                move(y)
+        self.assertIn("gone", b.Status)
+        # the solution picked at y = 35 is index 4 of 5; at 36 the same shape is index 3 of 4
+        self.sk.movePoint(1, 1, App.Vector(80, 35, 0))
+        self.doc.recompute()
+        b.Solution = 4
+        self.doc.recompute()
+        move(36)
+        self.assertEqual(b.Solution, 3)
+        self.assertIn("(solution 5 before the edges moved)", b.Status)
+        # a parameter edit still picks the lowest energy
+        b.Solution = 2
+        self.doc.recompute()
+        b.Length = 91.0
+        self.doc.recompute()
+        self.assertEqual(b.Solution, 0)
+
     def test_editing_selects_the_lowest_energy_again(self):
         b = Bl.make(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"), Mode="length", Length=70.0)
         self.doc.recompute()

@@ -194,6 +194,41 @@ def total_energy(curve, sigma):
     return bending_energy(curve) + float(sigma) * float(curve.length)
 
 
+def turning(chain, samples=129):
+    """The tangent angle (unwrapped) of a chain of curves at ``samples`` points evenly
+    spaced in arc length: a curve's shape whatever its size and place."""
+    n = np()
+    lengths = n.array([float(c.length) for c in chain])
+    ends = n.cumsum(lengths)
+    s = n.linspace(0.0, ends[-1], samples)
+    piece = n.minimum(n.searchsorted(ends, s), len(chain) - 1)
+    theta = n.empty(samples)
+    for j, c in enumerate(chain):
+        at = piece == j
+        theta[at] = c.angle(n.clip(s[at] - (ends[j] - lengths[j]), 0.0, lengths[j]))
+    return n.unwrap(theta)
+
+
+# A solution followed as the edges move turns within SAME_SHAPE (rms, rad) of the curve
+# shown before: two lines' blend of 90 mm, an end moved by 5 mm, 0.33-0.42 for the same
+# solution, 1.8 and more for the others.
+SAME_SHAPE = 1.0
+
+
+def nearest_shape(before, curves):
+    """The index of the curve whose turning (tangent angle along its normalised length) is
+    nearest ``before`` (the turning of the curve shown), a common turn of the whole aside,
+    when it is within SAME_SHAPE, else None: the same solution, followed as the edges move,
+    where an index names another curve, or none, once solutions appear or vanish."""
+    n = np()
+    gaps = []
+    for c in curves:
+        d = turning([c]) - before
+        gaps.append(float(n.sqrt(n.mean((d - d.mean()) ** 2))))
+    j = int(n.argmin(gaps))
+    return j if gaps[j] <= SAME_SHAPE else None
+
+
 def plural(n, word):
     return f"{n} {word}{'' if n == 1 else 's'}"
 
@@ -240,7 +275,8 @@ class BlendProxy(FeatureProxy):
         add_enum(obj, "Continuity", "Blend", G2_TIP, CONTINUITIES, "G1")
         add_property(obj, "App::PropertyInteger", "Solution", "Blend",
                      "Which solution, by bending energy (0 = the lowest); reset to 0 by every "
-                     "edit of the blend's parameters", 0)
+                     "edit of the blend's parameters; a picked one follows its shape when the "
+                     "edges move (the lowest where that shape is gone)", 0)
         add_length(obj, "Tolerance", "BSpline",
                    "Largest distance (mm) of the B-spline from the elastica", tol)
         add_property(obj, "App::PropertyInteger", "Degree", "BSpline",
@@ -288,8 +324,26 @@ class BlendProxy(FeatureProxy):
     def onChanged(self, obj, prop):
         # a new problem: its lowest-energy solution (the panel re-applies a user's pick)
         if prop in ("Mode", "Length", "Tension", "AtEnd1", "AtEnd2", "Edge1", "Edge2") \
-                and "Restore" not in obj.State and getattr(obj, "Solution", 0) != 0:
-            obj.Solution = 0
+                and "Restore" not in obj.State:
+            self._new_problem = True
+            if getattr(obj, "Solution", 0) != 0:
+                obj.Solution = 0
+
+    def _followed_solution(self, obj, curves, sigma):
+        """obj.Solution; a picked one (not 0, the lowest energy) after the edges moved (other
+        solutions, no parameter edited: an edit picks the lowest energy), the solution of
+        the shape shown (nearest_shape), or
+        the lowest-energy one where that shape is gone: the index of a picked one names
+        another curve, or none, once solutions appear or vanish. Returns (index, whether the
+        shape shown is gone)."""
+        new_problem, self._new_problem = getattr(self, "_new_problem", False), False
+        shown = self.plane_curves(obj) if obj.Lengths else None   # the last good solve's
+        same = [(float(c.length), total_energy(c, sigma)) for c in curves] == \
+            list(zip(obj.Lengths, obj.Energies))
+        if new_problem or same or shown is None or obj.Solution == 0:
+            return obj.Solution, False
+        j = nearest_shape(turning(shown[0]), curves)
+        return (0, True) if j is None else (j, False)
 
     def ends(self, obj):
         """The two linked edges (global), or InputProblem."""
@@ -309,23 +363,29 @@ class BlendProxy(FeatureProxy):
         value = float(obj.Length) if obj.Mode == "length" else obj.Tension
         r = blend_core(e1, obj.AtEnd1, e2, obj.AtEnd2, plane, obj.Mode, value)
         curves = r["curves"]
-        if not 0 <= obj.Solution < len(curves):
-            raise InputProblem(f"Solution = {obj.Solution}: there are {len(curves)} solutions "
+        i, r["gone"] = self._followed_solution(obj, curves, value if obj.Mode == "tension" else 0.0)
+        r["solution"] = i
+        if not 0 <= i < len(curves):
+            raise InputProblem(f"Solution = {i}: there are {len(curves)} solutions "
                                f"(0 to {len(curves) - 1})")
         tol, degree = check_tolerance(float(obj.Tolerance)), check_degree(obj.Degree)
         if obj.Continuity == "G2":
-            r["g2"], r["bspline"], r["g2_note"] = g2_blend(r, obj.Solution, obj.Mode, value,
-                                                           tol, degree)
+            r["g2"], r["bspline"], r["g2_note"] = g2_blend(r, i, obj.Mode, value, tol, degree)
             return r
         try:
             # a SmoothElastica, or near the separatrix a Hermite chain: both give one B-spline
-            r["bspline"] = curves[obj.Solution].to_bspline(tol=tol, degree=degree)
+            r["bspline"] = curves[i].to_bspline(tol=tol, degree=degree)
         except ValueError as exc:
             raise InputProblem(f"B-spline failed: {exc}") from None
         return r
 
     def apply(self, obj, r):
-        curves, i = r["curves"], obj.Solution
+        curves, i = r["curves"], r["solution"]
+        followed = "" if i == obj.Solution and not r["gone"] else (
+            f" (the lowest energy: solution {obj.Solution + 1}'s shape is gone with the edges' "
+            "move)" if r["gone"] else f" (solution {obj.Solution + 1} before the edges moved)")
+        if followed:
+            obj.Solution = i
         obj.Shape = part_bspline(r["bspline"], r["placement"]).toShape()
         described = [describe(c) for c in curves]
         obj.Lengths = [float(c.length) for c in curves]
@@ -354,13 +414,13 @@ class BlendProxy(FeatureProxy):
             free = " (free batten)" if tension_text(sp.tension, sp.length).startswith("0 ") \
                 else ""
             # "; " parts: the panel shows one a line
-            obj.Status = (f"G2 from solution {i + 1} of {len(curves)}{r['g2_note']}; length "
+            obj.Status = (f"G2 from solution {i + 1} of {len(curves)}{followed}{r['g2_note']}; length "
                           f"{sp.length:.4g} mm, tension {tension_text(sp.tension, sp.length)}"
                           f"{free}; energy {sp.energy:.3g}/mm, max curvature "
                           f"{sp.max_curvature:.3g}/mm, {bends}"
                           f"; guide ducks' forces {forces} (1/mm\u00b2 \u00d7 EI/2)")
         else:
-            obj.Status = f"solution {i + 1} of {len(curves)}"
+            obj.Status = f"solution {i + 1} of {len(curves)}{followed}"
 
     def on_error(self, obj):
         """A failed solve lists no solutions (the old curve stays, drawn dashed)."""
