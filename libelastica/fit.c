@@ -27,7 +27,9 @@
 #include <string.h>
 #include <float.h>
 
-enum { MAXCAND = 6, FEET_ROUNDS = 4, SAMPLED_ROUNDS = 5 };
+/* SKETCH_POINTS: fewer points are a sketch's (bench_fit_sparse.py draws 6-59), whose noise
+ * figure holds their curve's bending too (ob.f_direct) */
+enum { MAXCAND = 6, FEET_ROUNDS = 4, SAMPLED_ROUNDS = 5, SKETCH_POINTS = 60 };
 /* the sampled refits' stop (el__fit_run): a Gauss-Newton step would lower f by less than this */
 static const double LOOSE_TOL = 1e-5;
 
@@ -268,9 +270,13 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
     /* smooth: a guess whose fit from the paired start ends this far above the noise is fitted
      * from its own feet too (fit_candidate.c; measured: from 3 to 10 x the noise figure, the
      * clustered exact points there reach 4e-14, a sparse uneven loop of 15 points
-     * (test_fit_basin.c) keeps its basin; at 1.5 x its direct fit wins into a worse basin,
-     * at 30 x the clustered points keep 0.0046) */
-    if (kind == FIT_ORTHOGONAL) ob.f_direct = 0.5 * (5.0 * noise) * (5.0 * noise);   /* f = rms^2 / 2 */
+     * (test_fit_basin.c) keeps its basin). A free fit of fewer than SKETCH_POINTS points
+     * always: the noise figure of a few points spread along a curve holds its bending (6
+     * points exactly on an elastica, 5 close together and one far: 3.1e-3, the fit from
+     * the paired start 2.3e-3, from the guess's feet 2e-13; bench_fit_sparse.py's 1100
+     * fits of 6-59 points: no count changed, the free fits' median time the same) */
+    if (kind == FIT_ORTHOGONAL)
+        ob.f_direct = n < SKETCH_POINTS && !o.constraints ? 0.0 : 0.5 * (5.0 * noise) * (5.0 * noise);   /* rms^2 / 2 */
     fit_candidate best;
     int best_strays = -1;      /* best strays from its points (el__fit_strays_at), once known */
     int best_meets = 0;        /* with rows: best meets the constraints */
@@ -312,6 +318,13 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
      * feet from its curve, as the polish of a guess was; its refits are not polished */
     const int polish_run = (flags & FIT_RUN_POLISH) && !lm_only && !need_ipopt && o.use_initial;
     const int refit_no_polish = no_polish || polish_run;
+    /* the caller's own start (el_fit_options.use_initial): fitted from its own feet, the
+     * nearest points of its curve, without the paired start, which pairs the points with
+     * their chord fractions and can lead away from it (measured: 6 points exactly on an
+     * elastica, 5 close together and one far: from the true curve rms 2.3e-3, an extra wave
+     * in the gap; from its feet 3e-16). The library's own reruns from a fit, and constrained
+     * fits (their held start moves the curve first), keep that start */
+    const int caller_start = o.use_initial && !(flags & FIT_RUN_INNER) && kind == FIT_ORTHOGONAL && !o.constraints;
     if (ends_chart && free_start) {
         /* held ends: the unconstrained fit's curve turned and scaled onto them is the first
          * start. The guesses turned and scaled onto the ends can lie far from the points (a
@@ -382,7 +395,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
         first_feet(&ob, t, p0[6]);
         const int family = ci == natural_ci && model == FIT_SMOOTH;   /* the natural batten's member */
         const int from_smooth = ci == natural_ci && model == FIT_DISCRETE;   /* its discrete start */
-        if ((polish_run || family) && ob.rest && el__fit_feet_start(&ob, x0)) continue;
+        if ((polish_run || caller_start || family) && ob.rest && el__fit_feet_start(&ob, x0)) continue;
         fit_candidate r;
         int feet_stale = 0, r_strays = -1;     /* r_strays: r strays from its points, once known */
         if (map.nx == 0 || family) {
@@ -402,7 +415,8 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
                 first_feet(&ob, t, p0[6]);      /* again (the stages moved them) */
             }
             if ((st = el__fit_solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, no_polish, x0, best.f, &r, tmp,
-                                              (staged && pre > 0) || polish_run || from_smooth, polish_run)))
+                                              (staged && pre > 0) || polish_run || from_smooth,
+                                              polish_run || caller_start)))
                 goto done;
             r.iters += pre;
             /* smooth: where the continuation's fit is above the noise or strays from the
