@@ -30,6 +30,10 @@
 /* SKETCH_POINTS: fewer points are a sketch's (bench_fit_sparse.py draws 6-59), whose noise
  * figure holds their curve's bending too (ob.f_direct) */
 enum { MAXCAND = 6, FEET_ROUNDS = 4, SAMPLED_ROUNDS = 5, SKETCH_POINTS = 60 };
+/* a sketch's free fit with rows is a start where its objective is below this share of the
+ * constrained fits' best (its rms below half theirs: constraints that cost that much are
+ * not the data's own, or the guesses missed their basin) */
+static const double FREE_GAIN = 0.25;
 /* the sampled refits' stop (el__fit_run): a Gauss-Newton step would lower f by less than this */
 static const double LOOSE_TOL = 1e-5;
 
@@ -289,7 +293,17 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
      * run is Ipopt's, ~1.5 ms an iteration (a sparse discrete fit with a start tangent
      * took 1.8 s with them) */
     int iters = 0, tried = 0, last_is_best = 0, ipopt_spent = 0;   /* Ipopt runs to max_iter */
-    int free_start = o.constraints && !need_ipopt && !o.use_initial && !lm_only;
+    /* with rows, a smooth sketch's too (fewer than SKETCH_POINTS points; the caller's fit, not
+     * one run inside another), whatever its noise figure, when its free fit is below
+     * FREE_GAIN of the best constrained one's objective: a G1-G1 fit of 6 points exactly on an
+     * elastica, whose constraints are its own, ended on a figure-eight 11 times as long, rms
+     * 0.096 where the free fit has 2e-11; one of 7 points on a near-straight curve, turning by
+     * 721 degrees at 6.9 x its true curve's rms (bench_fit_sparse: no count higher, G1-G1 and
+     * G2-G1 fits above their true curve's fit 1 -> 0 and 2 -> 1; median time of a G1-G1
+     * sketch 4.1 -> 4.9 ms, 7.1 without FREE_GAIN. Not discrete: its fits there were not worse,
+     * and its rows' runs cost three times as much) */
+    const int sketch_rows = need_ipopt && n < SKETCH_POINTS && model == FIT_SMOOTH && !(flags & FIT_RUN_INNER);
+    int free_start = o.constraints && (!need_ipopt || sketch_rows) && !o.use_initial && !lm_only;
     /* a discrete fit with rows or both ends held: the smooth fit's curve
      * (el__fit_smooth_start) as its last start, where nothing holds the smooth fit's
      * parameters to other meanings (fixed values, bounds, the signed k range) */
@@ -366,7 +380,8 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
     for (size_t ci = 0; ci < ncand + (free_start || smooth_start); ci++) {
         if (ci == ncand) {      /* every guess far from the noise: one more start, the unconstrained first */
             const int use_free = free_start;
-            const int fst = use_free ? el__fit_unconstrained_start(model, xy, n, opt, cx, cy, sc, best.f, cand[ncand])
+            const int fst = use_free ? el__fit_unconstrained_start(model, xy, n, opt, cx, cy, sc,
+                                                                   (sketch_rows ? FREE_GAIN : 0.99) * best.f, cand[ncand])
                                      : el__fit_smooth_start(xy, n, opt, cx, cy, sc, cand[ncand]);
             if (fst == EL_ENOMEM) { st = fst; goto done; }
             if (use_free) free_start = 0; else smooth_start = 0;
@@ -395,7 +410,11 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
         first_feet(&ob, t, p0[6]);
         const int family = ci == natural_ci && model == FIT_SMOOTH;   /* the natural batten's member */
         const int from_smooth = ci == natural_ci && model == FIT_DISCRETE;   /* its discrete start */
-        if ((polish_run || caller_start || family) && ob.rest && el__fit_feet_start(&ob, x0)) continue;
+        /* a curve's own start (the caller's, or a sketch's free fit with rows): from its feet,
+         * neither the held start's continuation nor the paired start, which moved the
+         * free fit above from its curve onto the same figure-eight */
+        const int from_curve = caller_start || (sketch_rows && ci == free_ci && kind == FIT_ORTHOGONAL);
+        if ((polish_run || from_curve || family) && ob.rest && el__fit_feet_start(&ob, x0)) continue;
         fit_candidate r;
         int feet_stale = 0, r_strays = -1;     /* r_strays: r strays from its points, once known */
         if (map.nx == 0 || family) {
@@ -410,13 +429,13 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
             r.iters = family ? natural_evals : 0;
         } else {
             int pre = 0;
-            if (staged && !polish_run && !from_smooth) {
+            if (staged && !polish_run && !from_smooth && !from_curve) {
                 pre = el__fit_held_start(&ob, &map, &free_map, staged, &con, o.max_iter, p0, x0);
                 first_feet(&ob, t, p0[6]);      /* again (the stages moved them) */
             }
             if ((st = el__fit_solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, no_polish, x0, best.f, &r, tmp,
                                               (staged && pre > 0) || polish_run || from_smooth,
-                                              polish_run || caller_start)))
+                                              polish_run || from_curve)))
                 goto done;
             r.iters += pre;
             /* smooth: where the continuation's fit is above the noise or strays from the
@@ -429,7 +448,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
              * meet; a G1-G1 set along a loop of length 2.9 at 2.1 x its true curve's rms,
              * another fit 5 x; none worse. Straying: a start curvature alone, a loop of
              * length 3.1 at rms 0.0217 within the noise rule, 0.0095 directly) */
-            if (staged && !polish_run && model == FIT_SMOOTH &&
+            if (staged && !polish_run && !from_curve && model == FIT_SMOOTH &&
                 (!(sqrt(2.0 * r.f) <= 1.5 * noise && r.status == EL_OK) ||
                  (ob.rest && (r_strays = el__fit_strays_at(&ob, r.x, noise_rms, d, fs, tmp))))) {
                 fit_candidate rd;
@@ -471,8 +490,8 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
          * runs to max_iter, 1.3 s; a discrete sketch of 45 points pinned at both ends,
          * every guess to max_iter, 3.1 s) */
         if (need_ipopt && (ipopt_spent += el__fit_ran_out(&r)) >= 2 && (best.status == EL_OK || best_meets)) {
-            if (!smooth_start) break;
-            ci = ncand - 1;     /* no more guesses; the smooth fit's start next */
+            if (!smooth_start && !(free_start && sketch_rows)) break;
+            ci = ncand - 1;     /* no more guesses; the smooth fit's (or a sketch's free) start next */
             continue;
         }
         /* with rows there is no follow_points refit at the end: a fit that strays from its
@@ -495,7 +514,8 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
              * figure (the constrained fits' plain noise figure is high on sparse curved
              * points: a set of 41 points whose polygon ended at 2.7 x its curve's rms, length
              * 1.22 for 1, within 1.5 of it; the smooth start reaches 0.93 x) */
-            const int more = (free_start || (smooth_start && ends_chart)) && rms > 1.5 * data_noise;
+            const int more = (free_start || (smooth_start && ends_chart)) &&
+                             (rms > 1.5 * data_noise || (free_start && sketch_rows));
             if (!more) break;
             ci = ncand - 1;     /* no more guesses; the unconstrained start next */
         }

