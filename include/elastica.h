@@ -1078,7 +1078,8 @@ void el_spline_options_defaults(el_spline_options *opt);
  * left of the line's direction, then followed in length: equal spans bow
  * alternately, uneven ones mostly in the longest span); two points with
  * natural ends are the straight segment, with both
- * tangents the least-energy Hermite elastica of that tension. Two consecutive
+ * tangents the least-energy Hermite elastica of that tension or length (by length: the
+ * chain started from el_hermite_solve's least-energy solution). Two consecutive
  * points that coincide are EL_EINVAL (the batten cannot pass a duck twice in no
  * length); a closed curve needs 3 distinct points.
  * Accuracy: the residual (see tol) reaches ~1e-14 for moderate tensions. Two

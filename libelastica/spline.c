@@ -427,6 +427,29 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
         }
     }
 
+    /* two points clamped at both ends, by length: Newton from the least-energy Hermite
+     * elastica of that length (el_hermite_solve), the curve the header promises; the chain's
+     * own start and its continuation from the free batten failed beyond 1.06 x the free
+     * batten's length ((0,0) -> (3,1), both tangents (1,0): EL_ENOCONV from 3.4 where four
+     * solutions exist) and at 3.3 followed a branch of 6 % more energy */
+    el_hermite_result hermite;
+    memset(&hermite, 0, sizeof hermite);
+    el_spline_options with_start;
+    if (lmode && !closed && n == 2 && !opt->initial && w.kind[0] == EL_SPLINE_TANGENT &&
+        w.kind[1] == EL_SPLINE_TANGENT) {
+        el_hermite_options ho;
+        el_hermite_options_defaults(&ho);
+        ho.mode = EL_HERMITE_LENGTH;
+        ho.length = opt->length;
+        st = el_hermite_solve(xy, opt->start.tangent, xy + 2, opt->end.tangent, &ho, &hermite);
+        if (st == EL_ENOMEM) goto done;
+        if (!st && hermite.count > 0 && hermite.solutions[0].npieces == 1) {
+            with_start = *opt;
+            with_start.initial = &hermite.solutions[0].curve;
+            with_start.ninitial = 1;
+            opt = &with_start;
+        }
+    }
     int straight = 0;
     st = opt->initial ? sibling_from_initial(&w, xy, opt, S) : solve_sibling(&w, xy, n, opt, Lp, S, &straight);
     if (st == EL_EINVAL) goto done;
@@ -451,6 +474,7 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
     /* no solution found: for sigma = 0 the free-sliding batten slides off its ducks */
     st = !lmode && opt->sigma == 0.0 && !sibling ? EL_EDOM : EL_ENOCONV;
 done:
+    el_hermite_result_free(&hermite);
     el__chain_free(&w);
     el__chain_free(&g);
     return st;

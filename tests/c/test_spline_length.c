@@ -51,6 +51,48 @@ END_TEST
  * status and the same spline (angles, curvatures, energy; sigma to its
  * conditioning), and Newton is what solved the near targets (fewer iterations).
  */
+/* Two points clamped at both ends, by length: the least-energy Hermite elastica of that
+ * length (header). (0,0) -> (3,1), tangents (1,0): EL_ENOCONV from 1.06 x the free batten's
+ * length, a branch of 6 % more energy below (QA); then 300 random such problems (chord
+ * ratio 1.02-3, any tangents) against el_hermite_solve's least-energy solution */
+START_TEST(two_clamped_points_by_length_are_the_least_energy_hermite)
+{
+    unsigned long long seed = 11;
+    int compared = 0;
+    for (int c = 0; c < 305; c++) {
+        double xy[4] = {0.0, 0.0, 3.0, 1.0}, a = 0.0, b = 0.0, L = 3.3 + 0.4 * c;
+        if (c >= 5) {
+            xy[2] = test_uniform(&seed, -1.0, 1.0);
+            xy[3] = test_uniform(&seed, -1.0, 1.0);
+            a = test_uniform(&seed, -M_PI, M_PI);
+            b = test_uniform(&seed, -M_PI, M_PI);
+            L = hypot(xy[2], xy[3]) * test_uniform(&seed, 1.02, 3.0);
+        }
+        el_spline_options o = opts(EL_SPLINE_LENGTH, L);
+        o.start.kind = o.end.kind = EL_SPLINE_TANGENT;
+        o.start.tangent[0] = cos(a); o.start.tangent[1] = sin(a);
+        o.end.tangent[0] = cos(b); o.end.tangent[1] = sin(b);
+        el_hermite_options ho;
+        el_hermite_options_defaults(&ho);
+        ho.mode = EL_HERMITE_LENGTH;
+        ho.length = L;
+        el_hermite_result h;
+        ck_assert_int_eq(el_hermite_solve(xy, o.start.tangent, xy + 2, o.end.tangent, &ho, &h), EL_OK);
+        if (h.count > 0 && h.solutions[0].npieces == 1) {
+            el_spline_result r;
+            ck_assert_msg(solve(xy, 2, &o, &r) == EL_OK, "case %d: L %g", c, L);
+            check_spline(xy, 2, &o, &r, 1e-9);
+            ck_assert_msg(fabs(r.energy - h.solutions[0].energy) <= 1e-8 * (1.0 + h.solutions[0].energy),
+                          "case %d: energy %.12g, least Hermite %.12g", c, r.energy, h.solutions[0].energy);
+            el_spline_result_free(&r);
+            compared++;
+        }
+        el_hermite_result_free(&h);
+    }
+    ck_assert_int_ge(compared, 290);
+}
+END_TEST
+
 START_TEST(length_mode_newton_equals_the_continuation)
 {
     unsigned long long seed = 20240611ULL;
@@ -401,6 +443,7 @@ int main(void)
     TCase *tc = tcase_create("spline_length");
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, length_mode_meets_the_length_and_the_tension_mode);
+    tcase_add_test(tc, two_clamped_points_by_length_are_the_least_energy_hermite);
     tcase_add_test(tc, length_mode_newton_equals_the_continuation);
     tcase_add_test(tc, buckled_collinear_batten_takes_its_first_mode);
     tcase_add_test(tc, natural_ends_under_high_tension_reach_tol);
