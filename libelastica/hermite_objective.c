@@ -212,6 +212,14 @@ int el__hermite_x_class(const hprob *pr, double x, int b)
  * what shape_grad needs: m, mc the parameter of the integrals and its complement,
  * the sine, cosine and delta amplitude of the amplitude at both ends, |F|, kappa_m^2,
  * sqrt(mu) = sqrt(|F|/2), F and (S1, C1) = |F| (sin, cos) of theta1 - phi. */
+/* An end state equal to the start state within rounding is a whole period away (L = T):
+ * with parallel end tangents one branch of (17) has kappa1 = kappa0, kappa1' = kappa0'
+ * everywhere, and sin mu, zero but for rounding, took L = 0+ or T at random, so that the
+ * objective jumped along it and roots came and went with the samples (200 random problems
+ * with parallel tangents: 87 solution sets changed between 12 and 300 samples, the
+ * least-energy solution among those lost; with any tangents: none) */
+#define WHOLE_PERIOD 1e-14
+
 typedef struct {
     reduced_amp ra;
     double Lscale, Escale, Dfac, prod, FP, iFn;
@@ -250,6 +258,7 @@ EL__INLINE int shape_prepare(const hprob *pr, hstate *st, shapework *w)
         const double ikm = 1.0 / sqrt(km2), ik = 2.0 * rmu * ikm;   /* 1/k = sqrt(2 |F|) / kappa_m */
         const double s0 = sh0 * ik, c0 = st->k0 * ikm, s1 = sh1 * ik, c1 = st->k1 * ikm;
         amplitude_difference(k2, s0, c0, ch0, s1, c1, ch1, &smu, &cmu);
+        if (cmu > 0.0 && fabs(smu) <= WHOLE_PERIOD) smu = 0.0;
         const int big = smu < 0.0 || (smu == 0.0 && cmu > 0.0);
         amp_reduce(smu, cmu, big, k2, kc2, &w->ra);
         st->s0 = s0;        /* for make_solution's inflection count */
@@ -280,6 +289,7 @@ EL__INLINE int shape_prepare(const hprob *pr, hstate *st, shapework *w)
         amplitude_difference(m2, b0, ch0, fabs(st->k0) / km, b1, ch1, fabs(st->k1) / km, &smu, &cmu);
         /* the product b1 b0 sin mu is the same for either sign choice */
         w->prod = b1 * b0 * smu;
+        if (cmu > 0.0 && fabs(smu) <= WHOLE_PERIOD) smu = 0.0;
         if (smu < 0.0 || (smu == 0.0 && cmu > 0.0)) { smu = -smu; cmu = -cmu; }
         amp_reduce(smu, cmu, 0, m2, mc2, &w->ra);
         w->m = m2;

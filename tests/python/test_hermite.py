@@ -426,15 +426,21 @@ def test_more_solutions_than_the_thread_array_holds_are_all_returned():
 
 
 def test_tension_keeps_steep_roots():
-    """Four elastic curves of tension 2 join (0, 0) to (1, 0.3), both tangents along x: each
-    meets the ends (el_smooth_eval, to 1e-10) at that tension, and they differ. Before the
-    root finder's interpolation steps and its jump test on |f| halving (hermite_tension.c's
-    bracket_root, 0049e00), two of them (k 1.103, length 5.016; k 0.752, length 2.779)
-    were lost."""
+    """Seven elastic curves of tension 2 join (0, 0) to (1, 0.3), both tangents along x, of
+    four lengths: each meets the ends (el_smooth_eval, to 1e-10) at that tension; the tangents
+    being parallel, the half turn about the chord's midpoint with the curve reversed maps
+    each onto a solution (its partner: kappa0 and kappa1 swapped and negated), one of them
+    onto itself. Before the root finder's interpolation steps and its jump test on |f|
+    halving (hermite_tension.c's bracket_root, 0049e00), two lengths (k 1.103, length 5.016;
+    k 0.752, length 2.779) were lost; before WHOLE_PERIOD (hermite_objective.c) the
+    partners of three."""
     inner = ((0.0, 0.0), (1.0, 0.0), (1.0, 0.3), (1.0, 0.0))
     sols = el.hermite(*inner, tension=2.0)
-    assert len(sols) == 4
+    assert len(sols) == 7
     assert len({round(c.length, 6) for c in sols}) == 4
+    ends = np.array([c.curvature(np.array([0.0, c.length])) for c in sols])
+    for k0, k1 in ends:
+        assert np.min(np.hypot(ends[:, 0] + k1, ends[:, 1] + k0)) <= 1e-8 * (1.0 + abs(k0) + abs(k1))
     for c in sols:
         assert c.sigma == 2.0
         end = c.points(np.array([c.length]))[0]
