@@ -312,6 +312,9 @@ int el__spline_solve_tension(el__spchain *w, int max_steps, int final);
 int el__spline_solve_length(el__spchain *w, int max_steps, double Lt);
 int el__spline_free_batten(el__spchain *w, int max_steps);
 int el__spline_length_from(el__spchain *w, int max_steps, double Lt);
+/* From the tension solution in w to the one at sigma (internal units), by continuation
+ * in sigma, to w->tol. */
+int el__spline_tension_from(el__spchain *w, int max_steps, double sigma);
 /* Length mode on collinear points: the buckled batten of length Lt (> the
  * polygon's Lp), the line's direction dir. */
 int el__spline_solve_buckled(el__spchain *w, int max_steps, double dir, double Lp, double Lt);

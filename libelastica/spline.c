@@ -336,10 +336,14 @@ static int solve_sibling(el__spchain *w, const double *xy, size_t n, const el_sp
  * that continuation fails (the length can be nearly flat in sigma,
  * as between two points: sigma then runs far for a small change of the ends),
  * again from the free batten's sibling, bent at its tension and followed in
- * length as any spline (spline_path.c).
+ * length as any spline (spline_path.c). In tension mode (sigma_t: the tension,
+ * NAN for a sibling the caller chose) likewise, followed in sigma: bending the
+ * ends of a taut sibling can fail where the free batten bends them (the ducks
+ * of examples/ducks.csv, start tangent (0, 1) with curvature -0.5, end (0, 1)
+ * with 0.3: EL_ENOCONV from sigma = 0.05, converged at 0).
  */
 static int solve_g2(el__spchain *w, el__spchain *g, int sib, int max_steps, const double kg[2],
-                    double Lt)
+                    double Lt, double sigma_t)
 {
     int st = sib;
     if (!st || w->near) {
@@ -347,7 +351,7 @@ static int solve_g2(el__spchain *w, el__spchain *g, int sib, int max_steps, cons
         if (!st) st = el__spline_bend_ends(g, max_steps, kg);
         if (!st || g->near) return st;
     }
-    if (st == EL_ENOMEM || Lt == 0.0) return st;
+    if (st == EL_ENOMEM || (Lt == 0.0 && !(isfinite(sigma_t) && sigma_t != 0.0))) return st;
     el__chain_free(g);
     memset(g, 0, sizeof *g);
     w->near = 0;
@@ -355,7 +359,7 @@ static int solve_g2(el__spchain *w, el__spchain *g, int sib, int max_steps, cons
     if ((st = el__guides_setup(g, w))) return st;
     if ((st = el__spline_bend_ends(g, max_steps, kg)) && !g->near) return st;
     g->near = 0;
-    return el__spline_length_from(g, max_steps, Lt);
+    return Lt != 0.0 ? el__spline_length_from(g, max_steps, Lt) : el__spline_tension_from(g, max_steps, sigma_t);
 }
 
 int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *opt,
@@ -456,7 +460,8 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
     const int sibling = !st || w.near;   /* the free batten exists (for sigma = 0's EL_EDOM) */
     if (st != EL_ENOMEM && !closed && (w.kind[0] == EL_SPLINE_G2 || w.kind[1] == EL_SPLINE_G2)) {
         /* from an initial sibling: its branch only (no free batten's) */
-        st = solve_g2(&w, &g, st, opt->max_steps, kg, lmode && !opt->initial ? opt->length / S : 0.0);
+        st = solve_g2(&w, &g, st, opt->max_steps, kg, lmode && !opt->initial ? opt->length / S : 0.0,
+                      lmode || opt->initial ? NAN : opt->sigma * S * S);
         sol = &g;
     }
     if (st == EL_ENOMEM) goto done;

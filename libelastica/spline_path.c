@@ -253,6 +253,12 @@ int el__spline_solve_tension(el__spchain *w, int max_steps, int final)
     return continuation(w, w->snap, max_steps, 0.25, set_sigma, par, aim, accept);
 }
 
+int el__spline_tension_from(el__spchain *w, int max_steps, double sigma)
+{
+    const double par[2] = {w->sigma, sigma};
+    return continuation(w, w->snap, max_steps, 1.0, set_sigma_linear, par, w->aim, w->tol);
+}
+
 /* Newton in length mode (the length as the border equation, sigma unknown),
  * trusted only while it contracts (el__chain_newton). */
 static int length_newton(el__spchain *w, double Lt)

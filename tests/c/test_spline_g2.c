@@ -94,6 +94,28 @@ START_TEST(g2_ends_keep_the_common_tension)
 }
 END_TEST
 
+/* G2 ends far from the sketch's own (both tangents (0, 1), curvatures -0.5 and 0.3) under
+ * tension: bending the taut sibling's ends failed from sigma = 0.05 (EL_ENOCONV, QA) where the
+ * free batten's bend; now followed in sigma from there. (The tangent spline through the
+ * points and guides, solved from its own start, takes another branch here: check_spline's
+ * identities are the test.) */
+START_TEST(steep_g2_ends_under_tension)
+{
+    const double sigmas[] = {0.05, 0.297, 0.5};
+    for (size_t c = 0; c < sizeof sigmas / sizeof sigmas[0]; c++) {
+        el_spline_options o = opts(EL_SPLINE_TENSION, sigmas[c]);
+        o.start = g2_end(0.0, 1.0, -0.5);
+        o.end = g2_end(0.0, 1.0, 0.3);
+        el_spline_result r;
+        const int st = solve(sketch, NSKETCH, &o, &r);
+        ck_assert_msg(st == EL_OK, "sigma %g: status %d", sigmas[c], st);
+        ck_assert_close(r.sigma, sigmas[c], 1e-12 * sigmas[c]);
+        check_spline(sketch, NSKETCH, &o, &r, 1e-9);
+        el_spline_result_free(&r);
+    }
+}
+END_TEST
+
 /* Two points with G2 ends: the G2 blend between two edges (a line, an arc) —
  * three pieces with both ends G2 (guides at 1/4 and 3/4 of the chord), two
  * with one; the free batten, under tension and by length. */
@@ -339,6 +361,7 @@ int main(void)
     TCase *tc = tcase_create("spline_g2");
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, g2_ends_keep_the_common_tension);
+    tcase_add_test(tc, steep_g2_ends_under_tension);
     tcase_add_test(tc, two_points_are_the_g2_blend);
     tcase_add_test(tc, collinear_ducks_with_g2_ends);
     tcase_add_test(tc, random_battens_g2_solved_where_tangent_is);
