@@ -373,7 +373,9 @@ typedef struct el_fit_options {
     int max_candidates;  /* initial guesses fitted at most (default 6, all the guess gives; 1 = the best
                             guess only); fitting stops at the first within 1.5 noise levels of the data */
     int param_mode;      /* smooth model: enum el_param_mode (default EL_PARAM_AUTO) */
-    int use_initial;     /* 1: start from the caller's initial parameters instead of the guess */
+    int use_initial;     /* 1: start from the caller's initial parameters instead of the guess
+                            (smooth by distance, no constraints: from the points' nearest
+                            points on that curve) */
     int distance;        /* enum el_fit_distance (default EL_DISTANCE_AUTO) */
     int constraints;     /* bits of enum el_fit_constraint (default 0: none) */
     double start_point[2], end_point[2];     /* input units */

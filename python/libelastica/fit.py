@@ -368,7 +368,8 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     points; the discrete fit starts from it.
     fixed: parameters held at given values, e.g. ``{"x0": 0, "y0": 0}`` or ``{"h": r}``.
     bounds: ``{name: (lo, hi)}`` (None = unbounded). initial: start from this curve
-    instead of the automatic guess. A fit that does not converge returns the best curve
+    instead of the automatic guess (a smooth fit by distance without constraints: from the
+    points' nearest points on it, so points exactly on it give it back). A fit that does not converge returns the best curve
     seen with ``status`` != 0 (raises NotConvergedError if ``strict``). Bad input (NaN,
     too few points, all points equal) raises ValueError / ElasticaError subclasses.
     """
