@@ -274,13 +274,16 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
     /* smooth: a guess whose fit from the paired start ends this far above the noise is fitted
      * from its own feet too (fit_candidate.c; measured: from 3 to 10 x the noise figure, the
      * clustered exact points there reach 4e-14, a sparse uneven loop of 15 points
-     * (test_fit_basin.c) keeps its basin). A free fit of fewer than SKETCH_POINTS points
-     * always: the noise figure of a few points spread along a curve holds its bending (6
-     * points exactly on an elastica, 5 close together and one far: 3.1e-3, the fit from
-     * the paired start 2.3e-3, from the guess's feet 2e-13; bench_fit_sparse.py's 1100
-     * fits of 6-59 points: no count changed, the free fits' median time the same) */
+     * (test_fit_basin.c) keeps its basin). A free fit of fewer than SKETCH_POINTS unevenly
+     * spaced points always: the noise figure of a few points spread along a curve holds its
+     * bending (6 points exactly on an elastica, 5 close together and one far: 3.1e-3, the fit
+     * from the paired start 2.3e-3, from the guess's feet 2e-13; bench_fit_sparse.py's 1100
+     * fits of 6-59 points: no count changed, the free fits' median time the same). Evenly
+     * spaced points' chord fractions are their places: a keyline's resampled sides (~20-50
+     * vertices) took 1.9 ms instead of 1.1 for the same fits */
     if (kind == FIT_ORTHOGONAL)
-        ob.f_direct = n < SKETCH_POINTS && !o.constraints ? 0.0 : 0.5 * (5.0 * noise) * (5.0 * noise);   /* rms^2 / 2 */
+        ob.f_direct = n < SKETCH_POINTS && !o.constraints && !evenly_spaced(xy, n)
+                          ? 0.0 : 0.5 * (5.0 * noise) * (5.0 * noise);   /* rms^2 / 2 */
     fit_candidate best;
     int best_strays = -1;      /* best strays from its points (el__fit_strays_at), once known */
     int best_meets = 0;        /* with rows: best meets the constraints */
