@@ -243,9 +243,21 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
     /* candidates (normalised internal parameters); two more: free_start, smooth_start */
     double cand[MAXCAND + 2][FIT_NP];
     size_t ncand = 0;
+    /* the caller's start with constraints: fitted from its own feet first (caller_start),
+     * then as before, from its held start state (a start-state chart singular on a
+     * near-straight curve: 7 points with 0.2 % noise, G1 at both ends, the first failed the
+     * end tangent); the lower that meets them is kept. From the held start alone, 6 points (5
+     * within the first fifth of a 130 mm curve, with 0.02 mm noise, and its far end) joined
+     * with the true curve's own end points and tangents ended at rms 3.0 where the true
+     * curve, the start, has 0.024 (QA) */
+    const int caller_twice = o.use_initial && o.constraints && !(flags & FIT_RUN_INNER) && kind == FIT_ORTHOGONAL;
     if (o.use_initial) {
         for (int j = 0; j < FIT_NP; j++) cand[0][j] = el__fit_norm_param(model, j, init[j], cx, cy, sc);
         ncand = 1;
+        if (caller_twice) {
+            memcpy(cand[1], cand[0], sizeof cand[0]);
+            ncand = 2;
+        }
     } else if (model == FIT_DISCRETE) {
         el_discrete_params g[MAXCAND];
         if ((st = el_guess_discrete(xy, n, g, MAXCAND, &ncand))) goto done;
@@ -416,7 +428,8 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
         /* a curve's own start (the caller's, or a sketch's free fit with rows): from its feet,
          * neither the held start's continuation nor the paired start, which moved the
          * free fit above from its curve onto the same figure-eight */
-        const int from_curve = caller_start || (sketch_rows && ci == free_ci && kind == FIT_ORTHOGONAL);
+        const int from_curve = caller_start || (caller_twice && ci == 0) ||
+                               (sketch_rows && ci == free_ci && kind == FIT_ORTHOGONAL);
         if ((polish_run || from_curve || family) && ob.rest && el__fit_feet_start(&ob, x0)) continue;
         fit_candidate r;
         int feet_stale = 0, r_strays = -1;     /* r_strays: r strays from its points, once known */

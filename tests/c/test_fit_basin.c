@@ -92,6 +92,55 @@ static const double G1_STRAIGHT7[] = {
 static const el_smooth_params G1_STRAIGHT7_TRUE = {1.234476075164002, 2.617454474652514, 2.9302799143672082, 1.0,
                                                    -0.00458035883422192, -1.4825672019287124, 3.333028643420897};
 
+/* 6 points: 5 within the first fifth of a 130 mm elastica with 0.02 mm noise, and its far end */
+static const double G1_CLUSTER6[] = {
+    0.0044442042994180175, -0.03668484125096244, 5.0641859708720505, 4.055610070998182,
+    9.936207085339545, 8.425361316359362, 14.512898220235465, 13.095845163026057,
+    18.935800655550622, 17.936182063615863, 95.57023180514076, 85.44025875632148,
+};
+static const el_smooth_params G1_CLUSTER6_TRUE = {0.0, 0.0, 0.24633187491334851, 1.0 / 2500.0, 0.329913012311587,
+                                                  0.6400941819588737, 130.50060446631574};
+
+/* the fit joined G1 at both ends with the curve t's own end points and tangents, from its
+ * own start or (from_truth) from t */
+static void g1_fit_from(const double *xy, size_t n, const el_smooth_params *t, int from_truth,
+                        el_fit_smooth_result *r)
+{
+    const double s[2] = {0.0, t->length};
+    double ends[4], theta[2];
+    ck_assert_int_eq(el_smooth_eval(t, 2, s, ends, theta, NULL), EL_OK);
+    el_fit_options o;
+    el_fit_options_defaults(&o);
+    o.constraints = EL_CONSTRAIN_START_POINT | EL_CONSTRAIN_END_POINT | EL_CONSTRAIN_START_TANGENT |
+                    EL_CONSTRAIN_END_TANGENT;
+    memcpy(o.start_point, ends, sizeof o.start_point);
+    memcpy(o.end_point, ends + 2, sizeof o.end_point);
+    o.start_tangent = theta[0];
+    o.end_tangent = theta[1];
+    o.use_initial = from_truth;
+    ck_assert_int_eq(el_fit_smooth(xy, n, &o, from_truth ? t : NULL, r, NULL, NULL), EL_OK);
+    ck_assert_int_eq(r->status, EL_OK);
+}
+
+/* the rms of the points from a curve, by its dense samples */
+static double rms_from_curve(const double *xy, size_t n, const el_smooth_params *t)
+{
+    enum { M = 200001 };
+    double *sk = malloc(sizeof(double) * M), *p = malloc(sizeof(double) * 2 * M);
+    ck_assert(sk && p);
+    for (int k = 0; k < M; k++) sk[k] = t->length * k / (M - 1.0);
+    ck_assert_int_eq(el_smooth_eval(t, M, sk, p, NULL, NULL), EL_OK);
+    double sq = 0.0;
+    for (size_t i = 0; i < n; i++) {
+        double best = HUGE_VAL;
+        for (int k = 0; k < M; k++) best = fmin(best, hypot(p[2 * k] - xy[2 * i], p[2 * k + 1] - xy[2 * i + 1]));
+        sq += best * best;
+    }
+    free(sk);
+    free(p);
+    return sqrt(sq / (double)n);
+}
+
 static void check_smooth(const double *xy, size_t n, const el_smooth_params *truth)
 {
     el_fit_smooth_result def, from_truth;
@@ -134,41 +183,30 @@ START_TEST(test_fit_g1_sketch_follows_its_points)
         {G1_STRAIGHT7, sizeof G1_STRAIGHT7 / sizeof G1_STRAIGHT7[0] / 2, &G1_STRAIGHT7_TRUE},
     };
     for (size_t c = 0; c < sizeof sets / sizeof sets[0]; c++) {
-        const el_smooth_params *t = sets[c].truth;
-        const double s[2] = {0.0, t->length};
-        double ends[4], theta[2];
-        ck_assert_int_eq(el_smooth_eval(t, 2, s, ends, theta, NULL), EL_OK);
-        el_fit_options o;
-        el_fit_options_defaults(&o);
-        o.constraints = EL_CONSTRAIN_START_POINT | EL_CONSTRAIN_END_POINT | EL_CONSTRAIN_START_TANGENT |
-                        EL_CONSTRAIN_END_TANGENT;
-        memcpy(o.start_point, ends, sizeof o.start_point);
-        memcpy(o.end_point, ends + 2, sizeof o.end_point);
-        o.start_tangent = theta[0];
-        o.end_tangent = theta[1];
         el_fit_smooth_result r;
-        ck_assert_int_eq(el_fit_smooth(sets[c].xy, sets[c].n, &o, NULL, &r, NULL, NULL), EL_OK);
-        /* the true curve's rms, by its dense samples (it meets the constraints) */
-        enum { M = 200001 };
-        double *sk = malloc(sizeof(double) * M), *p = malloc(sizeof(double) * 2 * M);
-        ck_assert(sk && p);
-        for (int k = 0; k < M; k++) sk[k] = t->length * k / (M - 1.0);
-        ck_assert_int_eq(el_smooth_eval(t, M, sk, p, NULL, NULL), EL_OK);
-        double sq = 0.0;
-        for (size_t i = 0; i < sets[c].n; i++) {
-            double best = HUGE_VAL;
-            for (int k = 0; k < M; k++)
-                best = fmin(best, hypot(p[2 * k] - sets[c].xy[2 * i], p[2 * k + 1] - sets[c].xy[2 * i + 1]));
-            sq += best * best;
-        }
-        free(sk);
-        free(p);
-        const double true_rms = sqrt(sq / (double)sets[c].n);
-        ck_assert_msg(r.status == EL_OK && fabs(r.params.length - t->length) < 0.01 * t->length &&
+        g1_fit_from(sets[c].xy, sets[c].n, sets[c].truth, 0, &r);
+        const double true_rms = rms_from_curve(sets[c].xy, sets[c].n, sets[c].truth);
+        ck_assert_msg(fabs(r.params.length - sets[c].truth->length) < 0.01 * sets[c].truth->length &&
                       r.rms <= true_rms * (1.0 + 1e-6) + 1e-12,
-                      "set %zu: status %d length %g (true %g) rms %g (true curve %g)", c, r.status, r.params.length,
-                      t->length, r.rms, true_rms);
+                      "set %zu: length %g (true %g) rms %g (true curve %g)", c, r.params.length,
+                      sets[c].truth->length, r.rms, true_rms);
     }
+}
+END_TEST
+
+/* a G1-G1 fit started from a curve that meets its constraints ends at most at that curve's
+ * rms (it ended at 3.0 where the true curve has 0.024, and on the exact points' figure-eight
+ * where the true curve has 3e-11, QA) */
+START_TEST(test_fit_g1_from_a_curve_that_meets_the_constraints)
+{
+    el_fit_smooth_result exact, noisy;
+    g1_fit_from(G1_EXACT6, sizeof G1_EXACT6 / sizeof G1_EXACT6[0] / 2, &G1_EXACT6_TRUE, 1, &exact);
+    ck_assert_msg(exact.rms < 1e-9, "exact points: rms %g", exact.rms);
+    const size_t n = sizeof G1_CLUSTER6 / sizeof G1_CLUSTER6[0] / 2;
+    g1_fit_from(G1_CLUSTER6, n, &G1_CLUSTER6_TRUE, 1, &noisy);
+    const double truth = rms_from_curve(G1_CLUSTER6, n, &G1_CLUSTER6_TRUE);
+    ck_assert_msg(noisy.rms <= truth * (1.0 + 1e-6), "clustered noisy points: rms %g, the true curve's %g", noisy.rms,
+                  truth);
 }
 END_TEST
 
@@ -459,6 +497,7 @@ static Suite *suite(void)
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, test_fit_exact_sparse_points_give_their_curve);
     tcase_add_test(tc, test_fit_g1_sketch_follows_its_points);
+    tcase_add_test(tc, test_fit_g1_from_a_curve_that_meets_the_constraints);
     tcase_add_test(tc, test_fit_sparse_uneven_loop_smooth);
     tcase_add_test(tc, test_fit_sparse_uneven_loop_discrete);
     tcase_add_test(tc, test_fit_follows_sparse_points);
