@@ -400,7 +400,6 @@ class FitResultTest(unittest.TestCase):
         """Tolerance and ResampleStep are lengths (App::PropertyDistance: typed and shown
         with a unit); version 2 stored them as App::PropertyFloat: such a document opens
         with lengths, the exact values, the expression and the result kept, untouched."""
-        import zipfile
         f = Fi.make(self.doc, [(self.sk, [])], Model="smooth")
         f.Tolerance = "5 um"
         f.ResampleStep = "0.1 cm"
@@ -416,17 +415,14 @@ class FitResultTest(unittest.TestCase):
         self.doc.saveAs(path)
         App.closeDocument(name)
         old = path.replace("v3", "v2")
-        with zipfile.ZipFile(path) as zin, zipfile.ZipFile(old, "w") as zout:
-            for item in zin.infolist():
-                data = zin.read(item.filename)
-                if item.filename == "Document.xml":
-                    text = data.decode()
-                    for prop in ("Tolerance", "ResampleStep"):
-                        new = f'<Property name="{prop}" type="App::PropertyDistance"'
-                        self.assertEqual(text.count(new), 1, prop)
-                        text = text.replace(new, f'<Property name="{prop}" type="App::PropertyFloat"')
-                    data = text.encode()
-                zout.writestr(item, data)
+
+        def as_version_2(text):
+            for prop in ("Tolerance", "ResampleStep"):
+                new = f'<Property name="{prop}" type="App::PropertyDistance"'
+                self.assertEqual(text.count(new), 1, prop)
+                text = text.replace(new, f'<Property name="{prop}" type="App::PropertyFloat"')
+            return text
+        rewrite_document(path, old, as_version_2)
         self.doc = App.openDocument(old)
         f = self.doc.getObject(fname)
         for prop in ("Tolerance", "ResampleStep"):
@@ -447,7 +443,6 @@ class FitResultTest(unittest.TestCase):
     def test_documents_of_the_old_layout_load(self):
         """Version 1 saved its proxies as freecad.elastica.features.<Class> and the
         fit's pinning as PinEnds."""
-        import zipfile
         f = Fi.make(self.doc, [(self.sk, [])], Model="smooth", PinStart=True)
         self.doc.recompute()
         name, fname = self.doc.Name, f.Name
@@ -455,17 +450,12 @@ class FitResultTest(unittest.TestCase):
         self.doc.saveAs(path)
         App.closeDocument(name)
         old = path.replace("v2", "v1")
-        with zipfile.ZipFile(path) as zin, zipfile.ZipFile(old, "w") as zout:
-            for item in zin.infolist():
-                data = zin.read(item.filename)
-                if item.filename == "Document.xml":
-                    text = data.decode()
-                    self.assertIn('module="freecad.elastica.fit"', text)
-                    text = text.replace('module="freecad.elastica.fit"',
-                                        'module="freecad.elastica.features"')
-                    text = text.replace('name="PinStart"', 'name="PinEnds"')
-                    data = text.encode()
-                zout.writestr(item, data)
+
+        def as_version_1(text):
+            self.assertIn('module="freecad.elastica.fit"', text)
+            text = text.replace('module="freecad.elastica.fit"', 'module="freecad.elastica.features"')
+            return text.replace('name="PinStart"', 'name="PinEnds"')
+        rewrite_document(path, old, as_version_1)
         self.doc = App.openDocument(old)
         f = self.doc.getObject(fname)
         self.assertEqual(type(f.Proxy).__name__, "FitProxy")
@@ -476,6 +466,18 @@ class FitResultTest(unittest.TestCase):
         self.assertFalse(f.Status.startswith("error"), f.Status)
         from freecad.elastica import features
         self.assertIs(features.make_fit, Fi.make)          # recorded macros of version 1
+
+
+def rewrite_document(path, out, edit):
+    """A copy of the FreeCAD file path at out, its Document.xml text passed through edit
+    (a document as an older version wrote it)."""
+    import zipfile
+    with zipfile.ZipFile(path) as zin, zipfile.ZipFile(out, "w") as zout:
+        for item in zin.infolist():
+            data = zin.read(item.filename)
+            if item.filename == "Document.xml":
+                data = edit(data.decode()).encode()
+            zout.writestr(item, data)
 
 
 def plane_angle(f, v):
