@@ -137,16 +137,18 @@ def wire_points(shape):
 
 def along_principal_axis(points):
     """Points without an order of their own (a scan's cloud) in order along their first
-    principal axis, starting at the end on the first stored point's side (as a fit orders
-    them; right for a curve that does not double back along that axis)."""
+    principal axis (el.plane_fit's x', which runs from the first stored point towards the
+    last), as a fit orders them: right for a curve that does not double back along that
+    axis. Fewer than 3 points, coincident or non-finite ones stay as stored (the caller
+    says what is wrong with them)."""
     import numpy as np
-    xyz = np.array([tuple(p) for p in points], dtype=float)
-    if len(xyz) < 3 or not np.isfinite(xyz).all():      # a non-finite point: the caller says so
+    if len(points) < 3:
         return list(points)
-    c = xyz - xyz.mean(axis=0)
-    u = c @ np.linalg.svd(c, full_matrices=False)[2][0]
-    order = np.argsort(u if u[0] <= np.median(u) else -u, kind="stable")
-    return [points[i] for i in order]
+    try:
+        xy, _ = el().plane_fit(np.array([tuple(p) for p in points], dtype=float))
+    except (ValueError, ArithmeticError):
+        return list(points)
+    return [points[i] for i in np.argsort(xy[:, 0], kind="stable")]
 
 
 def object_points(obj):
