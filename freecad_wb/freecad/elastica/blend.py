@@ -74,7 +74,8 @@ def blend_core(e0, at_end0, e1, at_end1, plane=None, mode="tension", value=0.0):
     The blend leaves e0 in its tangent direction and enters e1 along it. ``mode``
     'tension' (value = sigma, 1/mm^2) or 'length' (value = arc length in mm; 0 = the
     length of the lowest-energy free batten). Returns a dict with 'curves' (sorted
-    by energy, plane coordinates), 'placement', 'distance'. Raises InputProblem."""
+    by energy, plane coordinates), 'energies' (total_energy at the tension; bending energy
+    by length), 'placement', 'distance'. Raises InputProblem."""
     p0, d0 = edge_end(e0, at_end0)
     p1, d1 = edge_end(e1, at_end1)
     d1 = -d1                       # arriving at e1: pointing into it
@@ -115,12 +116,14 @@ def blend_core(e0, at_end0, e1, at_end1, plane=None, mode="tension", value=0.0):
     if not sols:
         raise InputProblem("no elastic curve joins these ends with this "
                            + ("length" if mode == "length" else "tension"))
+    # under tension the curve minimises the bending energy plus sigma times its length:
+    # ordered by that (at sigma > 0 a huge gentle loop has the least bending energy alone)
+    energies = [total_energy(c, value if mode == "tension" else 0.0) for c in sols]
     if mode == "tension":
-        # under tension the curve minimises the bending energy plus sigma times its length:
-        # order by that (at sigma > 0 a huge gentle loop has the least bending energy alone)
-        sols = sorted(sols, key=lambda c: total_energy(c, value))
+        order = sorted(range(len(sols)), key=energies.__getitem__)
+        sols, energies = [sols[j] for j in order], [energies[j] for j in order]
     ends = ((e0, at_end0, a0, t0), (e1, at_end1, a1, t1))
-    return {"curves": sols, "placement": plane, "distance": dist, "ends": ends}
+    return {"curves": sols, "energies": energies, "placement": plane, "distance": dist, "ends": ends}
 
 
 def inflections(pieces):
@@ -329,18 +332,18 @@ class BlendProxy(FeatureProxy):
             if getattr(obj, "Solution", 0) != 0:
                 obj.Solution = 0
 
-    def _followed_solution(self, obj, curves, sigma):
+    def _followed_solution(self, obj, curves, energies):
         """obj.Solution; a picked one (not 0, the lowest energy) after the edges moved (other
-        solutions, no parameter edited: an edit picks the lowest energy), the solution of
-        the shape shown (nearest_shape), or
-        the lowest-energy one where that shape is gone: the index of a picked one names
-        another curve, or none, once solutions appear or vanish. Returns (index, whether the
-        shape shown is gone)."""
+        solutions, no parameter edited: an edit picks the lowest energy), the solution of the
+        shape shown (nearest_shape), or the lowest-energy one where that shape is gone: the
+        index of a picked one names another curve, or none, once solutions appear or vanish.
+        Returns (index, whether the shape shown is gone)."""
         new_problem, self._new_problem = getattr(self, "_new_problem", False), False
-        shown = self.plane_curves(obj) if obj.Lengths else None   # the last good solve's
-        same = [(float(c.length), total_energy(c, sigma)) for c in curves] == \
+        same = [(float(c.length), e) for c, e in zip(curves, energies)] == \
             list(zip(obj.Lengths, obj.Energies))
-        if new_problem or same or shown is None or obj.Solution == 0:
+        shown = None if new_problem or same or obj.Solution == 0 or not obj.Lengths \
+            else self.plane_curves(obj)                # the last good solve's curve
+        if shown is None:
             return obj.Solution, False
         j = nearest_shape(turning(shown[0]), curves)
         return (0, True) if j is None else (j, False)
@@ -363,7 +366,7 @@ class BlendProxy(FeatureProxy):
         value = float(obj.Length) if obj.Mode == "length" else obj.Tension
         r = blend_core(e1, obj.AtEnd1, e2, obj.AtEnd2, plane, obj.Mode, value)
         curves = r["curves"]
-        i, r["gone"] = self._followed_solution(obj, curves, value if obj.Mode == "tension" else 0.0)
+        i, r["gone"] = self._followed_solution(obj, curves, r["energies"])
         r["solution"] = i
         if not 0 <= i < len(curves):
             raise InputProblem(f"Solution = {i}: there are {len(curves)} solutions "
@@ -389,8 +392,7 @@ class BlendProxy(FeatureProxy):
         obj.Shape = part_bspline(r["bspline"], r["placement"]).toShape()
         described = [describe(c) for c in curves]
         obj.Lengths = [float(c.length) for c in curves]
-        sigma = obj.Tension if obj.Mode == "tension" else 0.0
-        obj.Energies = [total_energy(c, sigma) for c in curves]
+        obj.Energies = r["energies"]
         obj.Tensions = [float(getattr(c, "sigma", 0.0)) for c in curves]
         obj.Inflections = [d[0] for d in described]
         obj.Loops = [d[1] for d in described]
