@@ -396,6 +396,18 @@ class FitResultTest(unittest.TestCase):
         self.assertEqual(f.ResampleStep, 1.2345678901234567e-5)
         self.assertFalse(f.isTouched() if hasattr(f, "isTouched") else "Touched" in f.State)
 
+    def _reopened_as(self, f, edit):
+        """The feature f after its document is saved, its Document.xml passed through edit
+        (as an older version wrote it) and opened again (self.doc the opened one)."""
+        name, fname = self.doc.Name, f.Name
+        path = S.temp_path(self, "saved.FCStd")
+        self.doc.saveAs(path)
+        App.closeDocument(name)
+        old = path.replace("saved", "older")
+        rewrite_document(path, old, edit)
+        self.doc = App.openDocument(old)
+        return self.doc.getObject(fname)
+
     def test_lengths_take_units_and_documents_of_version_2_load(self):
         """Tolerance and ResampleStep are lengths (App::PropertyDistance: typed and shown
         with a unit); version 2 stored them as App::PropertyFloat: such a document opens
@@ -410,11 +422,6 @@ class FitResultTest(unittest.TestCase):
         self.doc.recompute()
         rms, step = f.Rms, f.ResampleStep.Value
         self.assertAlmostEqual(step, 80 * 1.2345678901234567e-2, delta=1e-12)
-        name, fname = self.doc.Name, f.Name
-        path = S.temp_path(self, "v3.FCStd")
-        self.doc.saveAs(path)
-        App.closeDocument(name)
-        old = path.replace("v3", "v2")
 
         def as_version_2(text):
             for prop in ("Tolerance", "ResampleStep"):
@@ -422,9 +429,7 @@ class FitResultTest(unittest.TestCase):
                 self.assertEqual(text.count(new), 1, prop)
                 text = text.replace(new, f'<Property name="{prop}" type="App::PropertyFloat"')
             return text
-        rewrite_document(path, old, as_version_2)
-        self.doc = App.openDocument(old)
-        f = self.doc.getObject(fname)
+        f = self._reopened_as(f, as_version_2)
         for prop in ("Tolerance", "ResampleStep"):
             self.assertEqual(f.getTypeIdOfProperty(prop), "App::PropertyDistance")
         self.assertEqual(f.Tolerance.Value, 1.2345678901234567e-2)     # not the file's 16 decimals
@@ -445,19 +450,12 @@ class FitResultTest(unittest.TestCase):
         fit's pinning as PinEnds."""
         f = Fi.make(self.doc, [(self.sk, [])], Model="smooth", PinStart=True)
         self.doc.recompute()
-        name, fname = self.doc.Name, f.Name
-        path = S.temp_path(self, "v2.FCStd")
-        self.doc.saveAs(path)
-        App.closeDocument(name)
-        old = path.replace("v2", "v1")
 
         def as_version_1(text):
             self.assertIn('module="freecad.elastica.fit"', text)
             text = text.replace('module="freecad.elastica.fit"', 'module="freecad.elastica.features"')
             return text.replace('name="PinStart"', 'name="PinEnds"')
-        rewrite_document(path, old, as_version_1)
-        self.doc = App.openDocument(old)
-        f = self.doc.getObject(fname)
+        f = self._reopened_as(f, as_version_1)
         self.assertEqual(type(f.Proxy).__name__, "FitProxy")
         self.assertTrue(f.PinStart)
         self.assertNotIn("PinEnds", f.PropertiesList)
