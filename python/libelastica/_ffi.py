@@ -82,10 +82,15 @@ _ERRORS = {lib.EL_ENOCONV: NotConvergedError, lib.EL_EMAXITER: NotConvergedError
            lib.EL_EDOM: DomainError, lib.EL_ESINGULAR: SingularError}
 
 
+# the C texts of these two say "(best result seen returned)": true of the C call's out
+# parameters, not of a raised exception, which returns nothing
+_RAISED_TEXT = {lib.EL_ENOCONV: "did not converge", lib.EL_EMAXITER: "iteration limit reached"}
+
+
 def check(status: int, what: str = "") -> None:
     """Raise the exception that matches a C status (pynacl's `ensure` pattern)."""
     if status != lib.EL_OK:
-        msg = ffi.string(lib.el_strerror(status)).decode()
+        msg = _RAISED_TEXT.get(status) or ffi.string(lib.el_strerror(status)).decode()
         raise _ERRORS.get(status, ElasticaError)(status, f"{what}: {msg}" if what else msg)
 
 

@@ -564,7 +564,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
             return status
         except NotConvergedError as exc:
             args.outputs.abort()
-            print(f"{PROG} {args.command}: did not converge: {exc}", file=sys.stderr)
+            print(f"{PROG} {args.command}: {exc}", file=sys.stderr)   # it says what did not converge
             return EXIT_NOCONV
         except BaseException:
             args.outputs.abort()

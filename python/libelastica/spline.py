@@ -217,14 +217,14 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
     try:
         if st == lib.EL_OK:
             return ElasticSpline(res, pts, closed)
-        msg = ffi.string(lib.el_strerror(st)).decode()
         if st == lib.EL_EDOM:   # the cases above are checked: the free batten
             raise DomainError(st, "elastic_spline: no free-sliding batten (tension 0) passes "
                                   "these points: it slides off its ducks; give a tension > 0 "
                                   "or a length")
         if st == lib.EL_ENOCONV:
-            err = NotConvergedError(st, f"elastic_spline: {msg}" + (
-                f" (residual {res.residual:.3g} > tol {tol:g})" if res.npieces else ""))
+            err = NotConvergedError(st, "elastic_spline: did not converge: " + (
+                f"residual {res.residual:.3g} > tol {tol:g} (the spline reached is kept in "
+                "the exception)" if res.npieces else "no spline through the points was reached"))
             err.spline = ElasticSpline(res, pts, closed) if res.npieces else None
             raise err
         check(st, "elastic_spline")   # raises: st is an error

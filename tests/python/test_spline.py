@@ -238,6 +238,26 @@ def test_bad_input_clear_errors(kwargs, exc, text):
         el.elastic_spline(**kwargs)
 
 
+def test_not_converged_says_what_it_holds():
+    """A NotConvergedError says whether a spline was reached (the C text's "best result
+    seen returned" is about the C call's result, not a raised exception's)."""
+    pts = [(0, 0), (1, 0.3), (2, 0), (3, 0.5)]
+    with pytest.raises(el.NotConvergedError) as near:   # sigma h^2 ~ 300: resolved to ~1e-9
+        el.elastic_spline(pts, tension=300.0, tol=1e-12)
+    assert near.value.spline is not None and "the spline reached is kept" in str(near.value)
+    assert near.value.spline.residual > 1e-12
+    with pytest.raises(el.NotConvergedError) as none:   # sigma h^2 ~ 3000: nothing reached
+        el.elastic_spline(pts, tension=3000.0)
+    assert none.value.spline is None and "no spline" in str(none.value)
+    for err in (near.value, none.value):
+        assert "returned" not in str(err)
+    noisy = el.DiscreteElastica(x0=0, y0=0, h=0.01, phi=0.3, z=0.03, q=0.2, k=0.9,
+                                n=100).points() + np.random.default_rng(0).normal(0, 1e-4, (100, 2))
+    with pytest.raises(el.NotConvergedError) as strict:
+        el.fit(noisy, max_iter=1, max_candidates=1, strict=True)
+    assert "returned" not in str(strict.value) and "iteration limit" in str(strict.value)
+
+
 def test_circle_is_an_elastica_to_its_accuracy():
     """Ducks on a circle of radius R with tension 1/R^2: the circle itself
     (kappa^2 = sigma, no force, |k| = infinity) is the spline, resolved in
@@ -327,6 +347,11 @@ def test_cli_spline(tmp_path):
     assert r.returncode == 2 and "--start-tangent" in r.stderr
     r = run("spline", f, "--closed", "--tension", "1", "--json", "-")
     assert r.returncode == 0 and len(json.loads(r.stdout)["pieces"]) == len(SKETCH)
+    g = tmp_path / "taut.csv"   # no spline at sigma h^2 ~ 3000: exit 1, one line, said once
+    np.savetxt(g, [(0, 0), (1, 0.3), (2, 0), (3, 0.5)], delimiter=",")
+    r = run("spline", g, "--tension", "3000", "--json", js)
+    assert r.returncode == 1 and r.stderr.count("did not converge") == 1, r.stderr
+    assert "no spline" in r.stderr and len(r.stderr.strip().splitlines()) == 1
 
 
 def test_cli_length_mode_on_the_example_ducks(tmp_path):

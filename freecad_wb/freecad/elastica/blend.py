@@ -176,7 +176,7 @@ def g2_blend(r, i, mode, value, tol, degree):
                     "the free G2 batten (tension 0) exists: try a lower tension, or G1")
         except (ValueError, ArithmeticError, RuntimeError):
             pass
-        # not the library's "(best result seen returned)": nothing is returned here
+        # not the exception's words about the spline it keeps: nothing is returned here
         solve = "the batten's solve did not converge" if isinstance(exc, e.NotConvergedError) \
             else f"the batten's solve: {str(exc).replace('elastic_spline: ', '', 1)}"
         raise InputProblem(f"no G2 blend {asked} ({solve}); the edges' curvatures are "
