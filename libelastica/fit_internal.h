@@ -293,6 +293,10 @@ double el__fit_stray(const double *xy, size_t n, const double *fs, double L, dou
  * (el__fit_stray > FIT_STRAY; noise: el__fit_noise_rms, normalised); d, fs (n each: ob's
  * rest arrays, or the caller's) overwritten with its distances and feet (input units). */
 int el__fit_strays_at(fit_objective *ob, const double *x, double noise, double *d, double *fs, double *tmp);
+/* fit_refit.c: whether the smooth curve at x (ob's map, one curve) crosses itself (its
+ * polygon of 256 chords: a loop narrower than ~1/256 of its length is missed); 0 where it
+ * cannot be evaluated. */
+int el__fit_crosses_itself(const fit_objective *ob, const double *x);
 /* fit_refit.c: idx (n entries) the indices 0..n-1 in the order of fs, ties by index;
  * 0, or -1 when out of memory (NaN feet far out of order take n pairs of workspace) */
 int el__fit_feet_order(const double *fs, size_t *idx, size_t n);
@@ -434,6 +438,14 @@ int el__fit_smooth_start(const double *xy, size_t n, const el_fit_options *opt, 
  * normalised); *certified: a minimum along the family; *evals: the members evaluated.
  * EL_EDOM: none, EL_ENOMEM. */
 int el__fit_natural_fit(fit_objective *ob, double noise, double *v, int *certified, int *evals);
+/* fit_g1_family.c: a smooth fit by distance joined G1 at both ends (ob's map: the start
+ * state chart, the start tangent held; con: the normalised end points and tangents): the
+ * el_hermite_solve solutions of those ends nearest the points over a scan of the tension,
+ * those whose objective is below f_below (the fit's, |r|^2 / 2n), at most *count (in: > 0; out: how many), one per family, those that follow them
+ * (el__fit_stray) first, then by their objective (normalised
+ * parameters v[j]; noise: el__fit_noise_rms, normalised). EL_EDOM: none, EL_ENOMEM. */
+int el__fit_g1_family_start(fit_objective *ob, const fit_constraints *con, double noise, double f_below,
+                            double (*v)[FIT_NP], int *count);
 /* fit_natural.c: the moduli bounding the natural batten's family: k* (2E = K, the figure
  * eight) and k_t (lobes j and j + 2 touch). */
 int el__natural_moduli(double *kstar, double *ktouch);

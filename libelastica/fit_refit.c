@@ -393,3 +393,29 @@ int el__fit_strays_at(fit_objective *ob, const double *x, double noise, double *
     const double L = ob->map.model == FIT_SMOOTH ? v[0][6] : (double)(ob->n - 1) * v[0][2];
     return el__fit_stray(ob->xy, ob->n, fs, L * ob->sc, noise * ob->sc, ob->sc) > FIT_STRAY;
 }
+
+/* the chords of the crossing test: a loop narrower than about L / CROSS_CHORDS is missed */
+enum { CROSS_CHORDS = 256 };
+
+int el__fit_crosses_itself(const fit_objective *ob, const double *x)
+{
+    double v[2][FIT_NP], s[CROSS_CHORDS + 1], p[2 * (CROSS_CHORDS + 1)];
+    el_smooth_params c;
+    if (ob->map.model != FIT_SMOOTH || ob->map.ncurves != 1 || el__fit_map_eval(&ob->map, x, v, NULL) ||
+        el__fit_to_smooth(v[0], &c))
+        return 0;
+    for (int j = 0; j <= CROSS_CHORDS; j++) s[j] = c.length * j / CROSS_CHORDS;
+    if (el_smooth_eval(&c, CROSS_CHORDS + 1, s, p, NULL, NULL)) return 0;
+    /* chords a and b (not neighbours) cross: each one's ends on both sides of the other */
+    for (int a = 0; a < CROSS_CHORDS; a++) {
+        const double *A = p + 2 * a, ax = A[2] - A[0], ay = A[3] - A[1];
+        for (int b = a + 2; b < CROSS_CHORDS; b++) {
+            const double *B = p + 2 * b, bx = B[2] - B[0], by = B[3] - B[1];
+            const double s1 = ax * (B[1] - A[1]) - ay * (B[0] - A[0]), s2 = ax * (B[3] - A[1]) - ay * (B[2] - A[0]);
+            if ((s1 > 0.0) == (s2 > 0.0)) continue;
+            const double s3 = bx * (A[1] - B[1]) - by * (A[0] - B[0]), s4 = bx * (A[3] - B[1]) - by * (A[2] - B[0]);
+            if ((s3 > 0.0) != (s4 > 0.0)) return 1;
+        }
+    }
+    return 0;
+}

@@ -101,6 +101,37 @@ static const double G1_CLUSTER6[] = {
 static const el_smooth_params G1_CLUSTER6_TRUE = {0.0, 0.0, 0.24633187491334851, 1.0 / 2500.0, 0.329913012311587,
                                                   0.6400941819588737, 130.50060446631574};
 
+/* sketches clustered along a part of a curve (bench-like: a curve of length 1, points at
+ * random arc lengths within its first or last 10-40 %, 0-2 elsewhere, 0-0.5 % noise) */
+static const double CLUSTER_S1_64[] = {
+    -0.0001480691253918705, -0.0016242334802360557, 0.48159476467688167, 0.4270871752214613, 0.5531873937299643,
+    0.5967598657216631, 0.5523925859118076, 0.6129126245402786, 0.5620502262659517, 0.6053325005218959,
+    0.5660233716897471, 0.6389264488297088, 0.5703671280841314, 0.6692784887170516, 0.5752874803992089,
+    0.6880225452957852, 0.6015659800213661, 0.744441240149411,
+};
+static const el_smooth_params CLUSTER_S1_64_TRUE = {0.0, 0.0, -0.7160033103864447, 0.9339371694469842, 0.9185287829484403, 0.5775807223794587, 1.0};
+static const double CLUSTER_S2_104[] = {
+    0.00015124186870728128, -1.9600907744674494e-05, 0.13754930490914, 0.054890289833161014,
+    0.08580482792623316, 0.048861763888886627, 0.05273266890538231, 0.053097378933195875, 0.04052656591487694,
+    0.05611283050651394, 0.032464632814856384, 0.058923815085058916, 0.02913983680955237, 0.060410913504113525,
+    0.026719291719104782, 0.0608931268506535, 0.015204063548519555, 0.06572468930121332, -0.013260835270790687,
+    0.08154549401691151,
+};
+static const el_smooth_params CLUSTER_S2_104_TRUE = {0.0, 0.0, -1.1478180396883786, 8.720282750405794, -1.2708664970575492, 1.3487720640536711, 1.0};
+static const double CLUSTER_S2_113[] = {
+    -0.0062040261520074575, 0.00034388728182268517, 0.051861064062365396, 0.012220313197340418,
+    0.058639138444669434, 0.01170271551885485, 0.08598144016494055, 0.019907472783867026, 0.09998657952596333,
+    0.020595123518277674, 0.11319984021938884, 0.01909495732308394, 0.15518774317496087, 0.019684048341935108,
+    0.9620214585488223, 0.10275017306806668,
+};
+static const el_smooth_params CLUSTER_S2_113_TRUE = {0.0, 0.0, 0.9269099765298039, 6.387336957675042, -0.5101487874230765, 0.7108894026218135, 1.0};
+static const double CLUSTER_S2_107[] = {
+    0.0, 0.0, -0.06608682088631768, -0.13954919918988154, -0.10136160679429954, -0.16150922684788224,
+    -0.10527440178157686, -0.16436587512170325, -0.12098509998707006, -0.17700304005322767, -0.1478877586248587,
+    -0.20493420245874075,
+};
+static const el_smooth_params CLUSTER_S2_107_TRUE = {0.0, 0.0, -0.5516186541006594, 27.490035825973678, -0.896560769729103, -1.8511993811422274, 1.0};
+
 /* the fit joined G1 at both ends with the curve t's own end points and tangents, from its
  * own start or (from_truth) from t */
 static void g1_fit_from(const double *xy, size_t n, const el_smooth_params *t, int from_truth,
@@ -207,6 +238,29 @@ START_TEST(test_fit_g1_from_a_curve_that_meets_the_constraints)
     const double truth = rms_from_curve(G1_CLUSTER6, n, &G1_CLUSTER6_TRUE);
     ck_assert_msg(noisy.rms <= truth * (1.0 + 1e-6), "clustered noisy points: rms %g, the true curve's %g", noisy.rms,
                   truth);
+}
+END_TEST
+
+/* a G1-G1 fit of clustered sketched points reaches their true curve's basin (default start;
+ * they ended at 137 x, 4.25 x, 28 x and 6.9 x that curve's rms, status ok: its guesses are
+ * fitted to the points first and moved onto the ends after, far from that basin), and 6 points
+ * exactly on a curve are fitted (EL_EDOM before: no guess's fit met the end tangent) */
+START_TEST(test_fit_g1_clustered_sketches)
+{
+    const struct { const double *xy; size_t n; const el_smooth_params *truth; } sets[] = {
+        {G1_CLUSTER6, sizeof G1_CLUSTER6 / sizeof G1_CLUSTER6[0] / 2, &G1_CLUSTER6_TRUE},
+        {CLUSTER_S1_64, sizeof CLUSTER_S1_64 / sizeof CLUSTER_S1_64[0] / 2, &CLUSTER_S1_64_TRUE},
+        {CLUSTER_S2_104, sizeof CLUSTER_S2_104 / sizeof CLUSTER_S2_104[0] / 2, &CLUSTER_S2_104_TRUE},
+        {CLUSTER_S2_113, sizeof CLUSTER_S2_113 / sizeof CLUSTER_S2_113[0] / 2, &CLUSTER_S2_113_TRUE},
+    };
+    for (size_t c = 0; c < sizeof sets / sizeof sets[0]; c++) {
+        el_fit_smooth_result r;
+        g1_fit_from(sets[c].xy, sets[c].n, sets[c].truth, 0, &r);
+        const double true_rms = rms_from_curve(sets[c].xy, sets[c].n, sets[c].truth);
+        ck_assert_msg(r.rms <= 1.01 * true_rms, "set %zu: rms %g, the true curve's %g", c, r.rms, true_rms);
+    }
+    el_fit_smooth_result exact;
+    g1_fit_from(CLUSTER_S2_107, sizeof CLUSTER_S2_107 / sizeof CLUSTER_S2_107[0] / 2, &CLUSTER_S2_107_TRUE, 0, &exact);
 }
 END_TEST
 
@@ -498,6 +552,7 @@ static Suite *suite(void)
     tcase_add_test(tc, test_fit_exact_sparse_points_give_their_curve);
     tcase_add_test(tc, test_fit_g1_sketch_follows_its_points);
     tcase_add_test(tc, test_fit_g1_from_a_curve_that_meets_the_constraints);
+    tcase_add_test(tc, test_fit_g1_clustered_sketches);
     tcase_add_test(tc, test_fit_sparse_uneven_loop_smooth);
     tcase_add_test(tc, test_fit_sparse_uneven_loop_discrete);
     tcase_add_test(tc, test_fit_follows_sparse_points);
