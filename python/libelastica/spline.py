@@ -10,7 +10,7 @@ from typing import List, Optional
 
 import numpy as np
 
-from ._ffi import DomainError, NotConvergedError, as_points, check, dptr, ffi, lib
+from ._ffi import DomainError, NotConvergedError, as_int, as_points, as_real, check, dptr, ffi, lib
 from .bspline import smooth_chain_to_bspline
 from .core import SMOOTH_PARAMS, SmoothElastica, chain_eval, chain_starts
 
@@ -201,7 +201,14 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
     if not closed:
         _end(start, "start", opt.start)
         _end(end, "end", opt.end)
-    opt.tol, opt.max_iter, opt.max_steps = float(tol), int(max_iter), int(max_steps)
+    # the ranges of el_spline_options (elastica.h), named here (the library's EL_EINVAL
+    # cannot say which)
+    tol = as_real(tol, "elastic_spline: tol")
+    if not 1e-14 <= tol <= 1e-3:
+        raise ValueError(f"elastic_spline: tol must be in [1e-14, 1e-3], got {tol!r}")
+    opt.tol = tol
+    opt.max_iter = as_int(max_iter, "elastic_spline: max_iter", 1, 1000)
+    opt.max_steps = as_int(max_steps, "elastic_spline: max_steps", 1, 1000)
     if initial is not None:
         pieces = list(initial)
         if closed or len(pieces) != n - 1 or not all(isinstance(p, SmoothElastica) for p in pieces):
