@@ -317,7 +317,10 @@ int el__spline_length_from(el__spchain *w, int max_steps, double Lt);
 int el__spline_tension_from(el__spchain *w, int max_steps, double sigma);
 /* Length mode on collinear points: the buckled batten of length Lt (> the
  * polygon's Lp), the line's direction dir. */
-int el__spline_solve_buckled(el__spchain *w, int max_steps, double dir, double Lp, double Lt);
+int el__spline_solve_buckled(el__spchain *w, int max_steps, double dir, double Lp, double Lt, int mirror);
+/* Ducks near the line of direction dir (every chord advancing along it), length Lt: the
+ * buckled batten of the ducks projected onto it, moved to the ducks (spline_path.c). */
+int el__spline_solve_near_line(el__spchain *w, int max_steps, double dir, double Lt);
 
 /* G2 ends (spline_guide.c): the guided chain g of the solved sibling w, its G2
  * ends clamped only (g allocated here; free it also on failure); then the end

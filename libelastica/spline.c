@@ -102,6 +102,30 @@ static int straight_line(const double *xy, size_t n, const el_spline_options *o,
     return 1;
 }
 
+/* Points near the line through the first and the last (dir: its direction): each within
+ * NEAR_LINE of their distance from it, each chord advancing along it, clamped ends within
+ * NEAR_LINE rad of it (not G2: their guide ducks are placed on a solved sibling) */
+#define NEAR_LINE 0.05
+static int near_line(const double *xy, size_t n, const el_spline_options *o, double *dir)
+{
+    if (o->closed || n < 3 || o->start.kind == EL_SPLINE_G2 || o->end.kind == EL_SPLINE_G2) return 0;
+    const double dx = xy[2 * n - 2] - xy[0], dy = xy[2 * n - 1] - xy[1], D = hypot(dx, dy);
+    if (!(D > 0.0)) return 0;
+    const double ux = dx / D, uy = dy / D;
+    for (size_t i = 0; i + 1 < n; i++) {
+        const double ax = xy[2 * i + 2] - xy[2 * i], ay = xy[2 * i + 3] - xy[2 * i + 1];
+        const double off = ux * (xy[2 * i + 3] - xy[1]) - uy * (xy[2 * i + 2] - xy[0]);
+        if (!(fabs(off) <= NEAR_LINE * D) || !(ux * ax + uy * ay > 0.0)) return 0;
+    }
+    const el_spline_end *e[2] = {&o->start, &o->end};
+    for (int i = 0; i < 2; i++)
+        if (e[i]->kind == EL_SPLINE_TANGENT &&
+            !(fabs(el__wrap_pi(atan2(e[i]->tangent[1], e[i]->tangent[0]) - atan2(uy, ux))) <= NEAR_LINE))
+            return 0;
+    *dir = atan2(uy, ux);
+    return 1;
+}
+
 /* max |kappa| on a piece: the ends, or 2|k| sqrt(mu) if u passes a maximum of
  * |cn|: u = 2 j K(k) (|k| < 1), |k| u = 2 j K(1/|k|) (|k| > 1); Kq = K(min(|k|, 1/|k|)). */
 static double piece_max_curvature(const el_smooth_params *p, double Kq, double k0, double k1)
@@ -324,7 +348,9 @@ static int solve_sibling(el__spchain *w, const double *xy, size_t n, const el_sp
     }
     if (!lmode) return el__spline_solve_tension(w, opt->max_steps, 1);
     if (straight_line(xy, n, opt, &dir))   /* longer than the line */
-        return el__spline_solve_buckled(w, opt->max_steps, dir, Lp / S, opt->length / S);
+        return el__spline_solve_buckled(w, opt->max_steps, dir, Lp / S, opt->length / S, 0);
+    if (near_line(xy, n, opt, &dir))       /* buckled near it, or from the free batten */
+        return el__spline_solve_near_line(w, opt->max_steps, dir, opt->length / S);
     return el__spline_solve_length(w, opt->max_steps, opt->length / S);
 }
 

@@ -175,6 +175,42 @@ START_TEST(random_points_and_tensions)
 }
 END_TEST
 
+/* Tension mode follows its ducks: sketched steps (a top hat, QA; three drawn like it) at
+ * sigma = c / extent^2 for c from 0.01 to 10, natural ends: the direct Newton returned
+ * loops up to 17 x the ducks' polygon (crossing themselves, status ok) where the free
+ * batten pulled to that tension follows them */
+START_TEST(tension_mode_follows_its_ducks)
+{
+    static const double top_hat[] = {0.95, 0.05, 2.424, -0.031, 3.179, 1.514, 4.304, 1.521, 4.973, 0.074,
+                                     5.877, -0.025, 7.037, 1.587, 7.522, 1.509, 8.219, -0.01, 9.176, -0.034};
+    static const double steps1[] = {0.794, -0.014, 2.413, 0.065, 3.158, 1.550, 4.175, 1.364, 4.616,
+                                    -0.094, 5.542, -0.009, 6.108, 1.479, 6.780, 1.511, 8.331, 0.011};
+    static const double steps2[] = {0.961, 0.044, 2.222, 0.034, 2.466, 1.468, 3.878, 1.500, 5.733, 0.022, 7.421,
+                                    0.023, 9.215, 1.544, 10.604, 1.513, 11.246, -0.005, 12.829, -0.013,
+                                    13.410, 1.553, 15.106, 1.387};
+    static const double steps3[] = {0.700, 0.044, 2.543, -0.017, 3.670, 1.541, 4.417, 1.447, 4.931, 0.028,
+                                    6.004, -0.025, 6.881, 1.534, 8.203, 1.550, 9.300, -0.037, 9.567, -0.003};
+    const struct { const double *xy; size_t n; double extent; } sets[] = {
+        {top_hat, 10, 8.226}, {steps1, 9, 7.537}, {steps2, 12, 14.145}, {steps3, 10, 8.867},
+    };
+    const double c[] = {0.01, 0.043, 0.1, 1.0, 10.0};
+    for (size_t k = 0; k < sizeof sets / sizeof sets[0]; k++) {
+        double poly = 0.0;
+        for (size_t i = 0; i + 1 < sets[k].n; i++)
+            poly += hypot(sets[k].xy[2 * i + 2] - sets[k].xy[2 * i], sets[k].xy[2 * i + 3] - sets[k].xy[2 * i + 1]);
+        for (size_t j = 0; j < sizeof c / sizeof c[0]; j++) {
+            el_spline_options o = opts(EL_SPLINE_TENSION, c[j] / (sets[k].extent * sets[k].extent));
+            el_spline_result r;
+            ck_assert_int_eq(solve(sets[k].xy, sets[k].n, &o, &r), EL_OK);
+            check_spline(sets[k].xy, sets[k].n, &o, &r, 1e-9);
+            ck_assert_msg(r.length <= 1.2 * poly, "set %zu, c %g: length %g, the ducks' polygon %g", k, c[j], r.length,
+                          poly);
+            el_spline_result_free(&r);
+        }
+    }
+}
+END_TEST
+
 START_TEST(spline_is_a_critical_point_of_the_energy)
 {
     const double sigma = 0.5;
@@ -572,6 +608,7 @@ int main(void)
     tcase_add_test(tc, implicit_derivatives_match_hermite_solutions);
     tcase_add_test(tc, through_points_g2_one_tension);
     tcase_add_test(tc, random_points_and_tensions);
+    tcase_add_test(tc, tension_mode_follows_its_ducks);
     tcase_add_test(tc, spline_is_a_critical_point_of_the_energy);
     tcase_add_test(tc, closed_curves);
     tcase_add_test(tc, clamped_and_g2_ends);

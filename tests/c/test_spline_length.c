@@ -333,6 +333,42 @@ END_TEST
  * curvature does not hang on K(k), which k's last bit moves by 1e-16 / (1 - k^2):
  * the residual stays below tol (it was 2e-10..4e-9 with u near 2K).
  */
+/* Ducks near a line pushed longer (QA: 7 ducks along 6.6, one raised): every raise from
+ * 1e-9 to 1e-3 gives the spline of that length (none before: the path from the free batten
+ * met the line's buckling), and raising that duck from 0.05 to 0.27 in steps of 0.01 moves
+ * the batten smoothly in its first mode (it jumped between modes of 2.6-10 x the energy) */
+START_TEST(ducks_near_a_line_buckle_in_their_first_mode)
+{
+    const double x[7] = {0.0, 1.0, 1.5, 3.5, 4.8, 5.5, 6.6};
+    double xy[14];
+    for (int i = 0; i < 7; i++) { xy[2 * i] = x[i]; xy[2 * i + 1] = 0.0; }
+    const double raise[] = {1e-9, 1e-6, 1e-3};
+    for (size_t r = 0; r < 3; r++)
+        for (int k = 0; k < 2; k++) {
+            xy[7] = raise[r];
+            double poly = 0.0;
+            for (int i = 0; i < 6; i++) poly += hypot(xy[2 * i + 2] - xy[2 * i], xy[2 * i + 3] - xy[2 * i + 1]);
+            el_spline_options o = opts(EL_SPLINE_LENGTH, (k ? 1.2 : 1.05) * poly);
+            el_spline_result res;
+            ck_assert_msg(solve(xy, 7, &o, &res) == EL_OK, "raised by %g, %g x", raise[r], k ? 1.2 : 1.05);
+            check_spline(xy, 7, &o, &res, 1e-9);
+            el_spline_result_free(&res);
+        }
+    double last = 0.0;
+    for (int step = 0; step <= 22; step++) {
+        xy[7] = 0.05 + 0.01 * step;
+        el_spline_options o = opts(EL_SPLINE_LENGTH, 7.92);
+        el_spline_result res;
+        ck_assert_int_eq(solve(xy, 7, &o, &res), EL_OK);
+        check_spline(xy, 7, &o, &res, 1e-9);
+        ck_assert_msg(step == 0 || fabs(res.energy - last) <= 0.01 * last, "duck at %g: energy %g after %g", xy[7],
+                      res.energy, last);
+        last = res.energy;
+        el_spline_result_free(&res);
+    }
+}
+END_TEST
+
 static const double scan33[] = {
     0, 0.142, 0.315, 0.182, 0.604, 0.152, 0.866, 0.208, 1.101, 0.364, 1.309, 0.541, 1.494, 0.673,
     1.659, 0.737, 1.809, 0.743, 1.949, 0.71, 2.086, 0.66, 2.225, 0.61, 2.373, 0.579, 2.534, 0.587,
@@ -446,6 +482,7 @@ int main(void)
     tcase_add_test(tc, two_clamped_points_by_length_are_the_least_energy_hermite);
     tcase_add_test(tc, length_mode_newton_equals_the_continuation);
     tcase_add_test(tc, buckled_collinear_batten_takes_its_first_mode);
+    tcase_add_test(tc, ducks_near_a_line_buckle_in_their_first_mode);
     tcase_add_test(tc, natural_ends_under_high_tension_reach_tol);
     tcase_add_test(tc, hand_placed_ducks);
     suite_add_tcase(s, tc);
