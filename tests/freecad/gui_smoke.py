@@ -554,6 +554,10 @@ def fit_panel(doc, S):
     check(not panel.warning[0].isVisible() and not [w for w in f.Warnings if "outliers?" in w],
           f"fit of a sketched curve: no far points named ({list(f.Warnings)})")
     screenshot("gui_fit_panel.png")
+    # Copy into: only sketches in the fit's plane (another one flattened the copy onto it)
+    offered = [panel.sketch.itemData(i) for i in range(panel.sketch.count())]
+    check("TangentLine" in offered and "Lines2" not in offered and "KeylineSketch" not in offered,
+          f"fit: Copy into offers the sketches in the fit plane, not its source ({offered})")
     panel.sketch.setCurrentIndex(panel.sketch.count() - 1)   # new sketch
     check(panel.accept(), "fit panel accepts")
     pump()

@@ -186,19 +186,37 @@ def sketch_geo_of_edge(sketch, edge_name):
     return None
 
 
-def write_to_sketch(feature, sketch, constrain_to=None):
-    """Add the feature's B-spline edge(s) to ``sketch``, mapped into its plane: a copy,
-    which no longer follows the feature. ``constrain_to`` [(geo index, pos), (geo index,
-    pos)] adds endpoint tangency of the new curve's start and end to those sketch
-    geometries (what version-1 blends recorded). Returns the new geometry indices."""
+def sketch_curves(feature, sketch):
+    """The feature's B-spline curve(s) in ``sketch``'s coordinates. InputProblem when they
+    do not lie in its plane: the sketch would keep only their shadow on it, flattened."""
     inv = sketch.getGlobalPlacement().inverse()
-    ids = []
+    curves = []
     for e in feature.Shape.Edges:
         c = e.Curve.copy()
         if not isinstance(c, Part.BSplineCurve):
             c = e.toNurbs().Edges[0].Curve
         c.transform(inv.toMatrix())
-        ids.append(sketch.addGeometry(c, False))
+        curves.append(c)
+    poles = [p for c in curves for p in c.getPoles()]
+    if not poles:
+        raise InputProblem(f"{feature.Label} has no curve to copy")
+    # a B-spline lies in the hull of its poles: all of them in the plane put it there
+    extent = max((p - poles[0]).Length for p in poles)
+    off = max(abs(p.z) for p in poles)
+    if off > 1e-7 + 1e-9 * extent:          # 1e-7 mm: FreeCAD's Confusion
+        raise InputProblem(f"{sketch.Label} does not lie in the plane of {feature.Label} (its "
+                           f"curve reaches {off:.3g} mm off the sketch's plane): copy it into a "
+                           "sketch in the curve's plane, or a new one")
+    return curves
+
+
+def write_to_sketch(feature, sketch, constrain_to=None):
+    """Add the feature's B-spline edge(s) to ``sketch``, mapped into its plane: a copy,
+    which no longer follows the feature. ``constrain_to`` [(geo index, pos), (geo index,
+    pos)] adds endpoint tangency of the new curve's start and end to those sketch
+    geometries (what version-1 blends recorded). Returns the new geometry indices.
+    InputProblem, with nothing added, when the sketch is not in the curve's plane."""
+    ids = [sketch.addGeometry(c, False) for c in sketch_curves(feature, sketch)]
     if constrain_to and ids:
         import Sketcher
         (g0, pos0), (g1, pos1) = constrain_to

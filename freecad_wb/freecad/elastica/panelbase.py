@@ -8,10 +8,13 @@ from __future__ import annotations
 
 import FreeCAD as App
 import FreeCADGui as Gui
+import Part
 from PySide import QtCore, QtGui
 
 from . import icon
-from .geometry import is_sketch
+
+from .geometry import is_sketch, sketch_curves
+from .proxy import InputProblem
 
 CURRENT = []        # the open panel, if any (scripts and the GUI smoke test drive it)
 DELAY_MS = 150      # recompute after this pause in editing
@@ -357,15 +360,36 @@ class Panel:
                                "Unchecked: OK removes the feature (keep only the sketch copy)",
                                target=self)
         self.sketch = _narrow(QtGui.QComboBox())
-        self.sketch.addItem("(no copy)", "")
-        for sk in _sketches(self.doc, exclude):
-            self.sketch.addItem(sk.Label, sk.Name)
-        self.sketch.addItem(new_label, "*new*")
+        self.sketch_exclude, self.sketch_new = list(exclude), new_label
+        self.offer_sketches()
         self.row(grid, "Copy into", self.sketch,
                  "OK copies the B-spline into this sketch: a copy, which does not follow later "
-                 "edits (the feature does)")
+                 "edits (the feature does); only sketches in the curve's plane are offered")
 
     _keep = True
+
+    def offer_sketches(self):
+        """The Copy into choices: the sketches in the curve's plane (another one would
+        flatten the copy onto itself), kept up to date as the curve moves; the choice made
+        stays while it is offered."""
+        offered = []
+        for sk in _sketches(self.doc, self.sketch_exclude):
+            try:
+                sketch_curves(self.obj, sk)
+            except (InputProblem, Part.OCCError):
+                continue
+            offered.append((sk.Label, sk.Name))
+        items = [("(no copy)", "")] + offered + [(self.sketch_new, "*new*")]
+        box = self.sketch
+        if [(box.itemText(i), box.itemData(i)) for i in range(box.count())] == items:
+            return
+        chosen = box.itemData(box.currentIndex()) if box.count() else ""
+        box.blockSignals(True)
+        box.clear()
+        for text, name in items:
+            box.addItem(text, name)
+        box.setCurrentIndex(max(0, box.findData(chosen)))
+        box.blockSignals(False)
 
     # ---------------------------------------------------------------- live update
 
@@ -427,6 +451,8 @@ class Panel:
             self.result.setText(f"<b style='color:#b00'>{o.Status}</b>")
         else:
             self.result.setText(self.result_text())
+        if hasattr(self, "sketch"):
+            self.offer_sketches()
         if self.warning is not None:
             said = [] if o.Status.startswith("error") else self.warnings()
             self.warning[1].setText("<br>".join(said))

@@ -1,0 +1,66 @@
+"""freecadcmd -t tests of copying a result's B-spline into an existing sketch
+(geometry.write_to_sketch, what the panels' "Copy into" runs on OK): a sketch in the
+curve's plane takes the curve as it is, one in another plane is refused with a message and
+left as it was (it kept only the curve's shadow on its plane, flattened)."""
+import math
+import unittest
+
+import FreeCAD as App
+import Part
+
+import elastica_samples as S
+from freecad.elastica import fit as Fi
+from freecad.elastica import geometry as G
+from freecad.elastica.proxy import InputProblem
+
+
+class CopyIntoSketchTest(unittest.TestCase):
+    def setUp(self):
+        self.doc = S.new_doc("ElasticaSketchCopy")
+        xy = [(x, 10 * math.sin(x / 30.0)) for x in range(0, 100, 10)]
+        self.fit = Fi.make(self.doc, [(S.points_sketch(self.doc, xy), [])], Model="smooth")
+        self.doc.recompute()
+        self.assertFalse(self.fit.Status.startswith("error"), self.fit.Status)
+
+    def tearDown(self):
+        App.closeDocument(self.doc.Name)
+
+    def _sketch(self, placement, name):
+        sk = self.doc.addObject("Sketcher::SketchObject", name)
+        sk.Placement = placement
+        sk.addGeometry(Part.LineSegment(App.Vector(0, 0, 0), App.Vector(10, 0, 0)), False)
+        self.doc.recompute()
+        return sk
+
+    def test_a_sketch_in_another_plane_is_refused_untouched(self):
+        plane = S.SKETCH_PLACEMENT
+        tilted = App.Placement(plane.Base, plane.Rotation.multiply(
+            App.Rotation(App.Vector(1, 0, 0), 90)))
+        lifted = App.Placement(plane.multVec(App.Vector(0, 0, 2)), plane.Rotation)
+        for placement, name in ((tilted, "Front"), (lifted, "Parallel")):
+            sk = self._sketch(placement, name)
+            with self.assertRaises(InputProblem) as cm:
+                G.write_to_sketch(self.fit, sk)
+            msg = str(cm.exception)
+            self.assertIn(f"{name} does not lie in the plane of {self.fit.Label}", msg)
+            self.assertIn("mm off the sketch's plane", msg)
+            self.assertEqual(len(sk.Geometry), 1)          # nothing half-written
+            self.assertEqual(len(sk.Shape.Edges), 1)
+
+    def test_a_sketch_in_the_curve_plane_takes_the_curve(self):
+        # the fit's plane, its origin moved and turned within it
+        plane = S.SKETCH_PLACEMENT
+        moved = App.Placement(plane.multVec(App.Vector(-30, 12, 0)), plane.Rotation.multiply(
+            App.Rotation(App.Vector(0, 0, 1), 40)))
+        sk = self._sketch(moved, "Same")
+        ids = G.write_to_sketch(self.fit, sk)
+        self.doc.recompute()
+        self.assertEqual(len(ids), 1)
+        e = sk.Shape.Edges[-1]
+        pts = [tuple(p) for p in e.discretize(40)]
+        self.assertLess(S.distance_to_shape(pts, self.fit.Shape), 1e-7)
+        self.assertAlmostEqual(e.Length, self.fit.Shape.Length, delta=1e-7)
+
+
+if __name__ == "__main__":
+    unittest.main()
