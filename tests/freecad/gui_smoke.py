@@ -592,9 +592,15 @@ def fit_panel_ends(doc, f, lines, k0):
     e = f.Shape.Edges[0]
     line = lines.Shape.Edges[0]
     t = App.Vector(e.tangentAt(e.FirstParameter)).normalize()
+    # resampled (step 2 mm): the pinned end is the equilateral polygon's last vertex, which
+    # stops short of the last of the points given (DataPoints)
+    from freecad.elastica import geometry as G
+    poly = S.el.resample_equilateral(G.to_plane(f.Plane, f.DataPoints)[:, :2],
+                                     f.ResampleStep.Value)
+    pinned = f.Plane.multVec(App.Vector(*map(float, poly[-1]), 0))
     check(f.StartTangent and f.StartTangent[0] is lines and panel.tangent_buttons[0].text() ==
           f"{lines.Label}.Edge1" and t.cross(line.tangentAt(0)).Length < 1e-9 and
-          (e.valueAt(e.LastParameter) - f.DataPoints[-1]).Length < 1e-9,
+          (e.valueAt(e.LastParameter) - pinned).Length < 1e-9,
           f"fit: start tangent from a picked edge, end pinned ({f.Status})")
     # the line is 0.1 rad off the exact data's start: the warning line says what it costs
     check(f.Warnings and panel.warning[0].isVisible() and "Start tangent" in

@@ -15,7 +15,7 @@ import Part
 
 from . import defaults
 from .geometry import (chain_bspline, el, link_edge, np, part_bspline,
-                       plane_coordinates, plane_curvature, to_3d)
+                       plane_coordinates, plane_curvature, to_3d, to_plane)
 from .proxy import (FeatureProxy, InputProblem, add_enum, add_length, add_property,
                     check_degree, check_number, check_tolerance, new_feature, read_only)
 from .sources import gather_points
@@ -207,6 +207,61 @@ def _drawn_distances(bspline, data, t0, steps=30):
     return P, n.where(left, 1.0, -1.0) * n.sqrt(d2)
 
 
+def _nearest_on(bspline, data, samples=16):
+    """Each point's nearest point on a B-spline and its signed distance (+ = left of the
+    travel), as _drawn_distances, from the nearest of ``samples`` points per knot span:
+    for points the fit did not use (the user's, where it fitted a resampled polygon)."""
+    n = np()
+    k = n.unique(bspline.knots)
+    t = n.concatenate([n.linspace(a, b, samples, endpoint=False)
+                       for a, b in zip(k[:-1], k[1:])] + [k[-1:]])
+    P = bspline.evaluate(t)
+    start = n.empty(len(data))
+    for i in range(0, len(data), 500):          # a bounded (500, samples) table at a time
+        d2 = n.sum((data[i:i + 500, None, :] - P[None, :, :]) ** 2, axis=2)
+        start[i:i + 500] = t[n.argmin(d2, axis=1)]
+    return _drawn_distances(bspline, data, start - bspline.domain[0])
+
+
+def _beyond_the_ends(bspline, feet, dist, extent):
+    """Which points lie beyond the curve's ends (their nearest point on it an end, farther
+    than COST_FLOOR of their extent and COST_RATIO times the others' rms): those a
+    resampled polygon leaves out. An
+    equilateral polygon ends where no point lies a step further on (seed 000 §5.3), so up
+    to a step of the points' run is not fitted, and the curve stops there too."""
+    n = np()
+    ends = bspline.evaluate(n.array(bspline.domain))
+    at_end = n.min(n.linalg.norm(feet[:, None, :] - ends[None, :, :], axis=2), axis=1) \
+        <= 1e-9 * (1.0 + extent)
+    others = _rms(dist[~at_end]) if not at_end.all() else 0.0
+    return at_end & (n.abs(dist) > max(COST_FLOOR * extent, COST_RATIO * others))
+
+
+def _left_out(beyond, dist, step):
+    """The warning for points a resampled fit left out (_beyond_the_ends), else none."""
+    if not beyond.any():
+        return []
+    d = np().abs(dist[beyond])
+    m = int(beyond.sum())
+    return [f"{m} of {len(dist)} points {'lies' if m == 1 else 'lie'} beyond the curve's ends, up to "
+            f"{float(d.max()):.3g} mm from it: the resampled polygon (Resample = {step:g} mm) "
+            "stops where no point lies a step further on, and the curve with it; Rms and "
+            "MaxError include them: a shorter step leaves less out, 0 none"]
+
+
+def _off_plane(off, rms, extent):
+    """The warning for points whose distances from their plane (``off``, mm) outweigh the
+    fit's in-plane rms (and above COST_FLOOR of their extent): a plane curve cannot come
+    closer to them than that, else none."""
+    n = np()
+    off_rms = _rms(off)
+    if not (off_rms > rms and off_rms > COST_FLOOR * extent):
+        return []
+    return [f"the points lie up to {float(n.abs(off).max()):.3g} mm (rms {off_rms:.3g} mm) off "
+            f"their plane, the fit's: Rms and MaxError include that (in the plane the curve lies "
+            f"{rms:.3g} mm from them, rms); a plane curve comes no closer"]
+
+
 def _foot_parameters(results, split):
     """The data points' parameters on a discrete fit's cubic from their polygon feet: the
     arc length of each foot (a keyline's first half reversed, from the first point, then the
@@ -357,13 +412,14 @@ def _coarse_polygon(xy, constraints, rms):
 
 def _far_points(data, dist, plane):
     """The warning for points far from the fitted curve (el.far_points: glitches of a scan,
-    points of other geometry), naming the farthest's place, else none."""
+    points of other geometry), naming the farthest's place, else none. data: (n, 3) in the
+    frame ``plane``."""
     n = np()
     far = el().far_points(dist, data)
     if not len(far):
         return []
     farthest = far[n.argmax(n.abs(n.asarray(dist, dtype=float))[far])]
-    worst = plane.multVec(App.Vector(*map(float, data[farthest]), 0.0))
+    worst = plane.multVec(App.Vector(*map(float, data[farthest])))
     return [f"{el().far_points_summary(dist, far, ' mm')} (the farthest at ({worst.x:.4g}, "
             f"{worst.y:.4g}, {worst.z:.4g})): outliers? Each pulls the fit towards itself: "
             "remove them to fit the rest"]
@@ -372,9 +428,10 @@ def _far_points(data, dist, plane):
 def _facing_the_edges(xy, plane, start_edge, end_edge):
     """Unordered points (sorted along their principal axis, either way) in the order whose
     start lies nearer the start tangent's edge and whose end nearer the end's: the edges
-    say which end the user means (the axis's sign does not)."""
+    say which end the user means (the axis's sign does not). xy: plane coordinates, and
+    the distance from the plane as a third column if any."""
     def dist(edge, i):
-        return edge.distToShape(Part.Vertex(plane.multVec(App.Vector(*map(float, xy[i]), 0.0))))[0]
+        return edge.distToShape(Part.Vertex(plane.multVec(App.Vector(*map(float, xy[i])))))[0]
 
     votes = [dist(e, -1) - dist(e, 0) if w == "start" else dist(e, 0) - dist(e, -1)
              for w, e in (("start", start_edge), ("end", end_edge)) if e is not None]
@@ -392,9 +449,10 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
     or None (free); ``start_join`` / ``end_join``: how that end meets its edge
     (end_constraints). Returns a dict: 'curves' (plane coordinates; a keyline's two
     halves, each from the joint), 'results', 'bspline', 'placement', 'data' (the
-    fitted points, plane coordinates), 'feet' (their nearest points on the curve),
-    'distances' (signed, + = left), 'measure', 'rms', 'max_error' (the library's
-    point-to-curve figures), 'k', 'end_curvatures' (the shape's at its first and last
+    user's points, (n, 3) in the frame of the plane: never a resampled polygon), 'feet'
+    (their nearest points on the curve), 'distances' (signed, + = left; in 3D),
+    'measure', 'rms', 'max_error' (point to curve: the library's figures for points it
+    fitted as they are and in its plane, else measured on the curve drawn), 'k', 'end_curvatures' (the shape's at its first and last
     point, 1/mm, + turning left), 'status', 'free_rms' (the same fit with free ends;
     -1 without end conditions or when that fit fails) and 'warnings' (end conditions
     that cost accuracy; a discrete fit of few points whose polygon the smooth model's
@@ -440,10 +498,13 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
                                "Distance to point to curve, or fit in one piece")
     try:
         xy, plane = plane_coordinates(points, plane, flat=None)
+        # the user's points in the fit's frame: plane coordinates and distance from the plane
+        user = n.column_stack([xy, to_plane(plane, points)[:, 2]])
         if not ordered:
             xn, _ = el().pca_normalize(xy)
-            xy = n.ascontiguousarray(xy[n.argsort(xn[:, 0], kind="stable")])
-            xy = _facing_the_edges(xy, plane, start_edge, end_edge)
+            user = _facing_the_edges(user[n.argsort(xn[:, 0], kind="stable")], plane,
+                                     start_edge, end_edge)
+        xy = n.ascontiguousarray(user[:, :2])
         constraints, free_rms, warnings = {}, -1.0, []
         if split:
             if step > 0:
@@ -467,7 +528,24 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
                                                   fields)
         if model == "discrete" and not split and not step:
             warnings = warnings + _coarse_polygon(xy, constraints, rms)
-        warnings = warnings + _far_points(data, dist, plane)
+        # the figures are the user's points': where the library fitted a resampled polygon
+        # (whose tail it may leave out), their distances to the curve drawn
+        size = float(n.ptp(user[:, :2], axis=0).max())
+        resampled = data.shape != user[:, :2].shape or \
+            not n.allclose(data, user[:, :2], rtol=0.0, atol=1e-9 * (1.0 + size))
+        beyond = n.zeros(len(user), dtype=bool)
+        if resampled:
+            feet, dist = _nearest_on(bspline, n.ascontiguousarray(user[:, :2]))
+            beyond = _beyond_the_ends(bspline, feet, dist, size)
+        # and in 3D: the curve lies in the plane, so a point's distance from the plane adds
+        # to its distance in it (a scan off its plane fits 0.02 mm in it, 0.45 mm in 3D)
+        plane_rms = _rms(dist)
+        dist = n.copysign(n.hypot(dist, user[:, 2]), dist)
+        rms, max_error = _rms(dist), float(n.abs(dist).max())
+        data = user
+        warnings = warnings + _left_out(beyond, dist, step) + \
+            _off_plane(user[:, 2], plane_rms, size) + \
+            _far_points(data[~beyond], dist[~beyond], plane)
     except InputProblem:
         raise
     except (ValueError, ArithmeticError, RuntimeError) as exc:
@@ -482,6 +560,10 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         raise InputProblem("fit failed: non-finite error")
     measure = "point to curve" if model == "smooth" else \
         "point to curve (the cubic through the polygon's vertices)"
+    if resampled:
+        measure += ", from the points given (not the resampled polygon)"
+    if n.abs(user[:, 2]).max() > 1e-9 * (1.0 + size):
+        measure += ", in 3D (their distance from the fit plane included)"
     return {
         "curves": curves, "results": results, "bspline": bspline, "placement": plane,
         "data": data, "feet": feet, "distances": n.asarray(dist, dtype=float),
@@ -557,9 +639,10 @@ class FitProxy(FeatureProxy):
         add_property(obj, "App::PropertyInteger", "Degree", "BSpline",
                      "Degree of the B-spline (3 to 7) of a smooth fit; a discrete fit's vertices "
                      "are joined by the C2 cubic through them (natural at free ends)", deg)
-        for name, tip in (("Rms", "Root mean square distance of the fitted points from the "
-                                  "curve (mm; see ErrorMeasure)"),
-                          ("MaxError", "Largest distance of a fitted point from the curve (mm)"),
+        for name, tip in (("Rms", "Root mean square distance of the points given (never "
+                                  "resampled ones) from the curve, in 3D (mm; see ErrorMeasure)"),
+                          ("MaxError", "Largest distance of a point given from the curve, in "
+                                       "3D (mm)"),
                           ("BSplineDeviation", "Certified distance of the B-spline from the "
                                                "smooth elastica (mm); of a discrete fit's cubic "
                                                "through the vertices, its largest distance from "
@@ -586,7 +669,7 @@ class FitProxy(FeatureProxy):
         add_property(obj, "App::PropertyPlacement", "Plane", "Result",
                      "The plane of the fit (sketch placement or PCA plane)")
         add_property(obj, "App::PropertyVectorList", "DataPoints", "Result",
-                     "The fitted points (after resampling), global coordinates")
+                     "The points given (never the resampled ones), global coordinates")
         add_property(obj, "App::PropertyVectorList", "FootPoints", "Result",
                      "Each data point's nearest point on the curve (its polygon for a discrete "
                      "fit), global coordinates")
@@ -616,7 +699,7 @@ class FitProxy(FeatureProxy):
         obj.EndCurvatures = r["end_curvatures"]
         obj.BSplineDeviation = r["bspline_deviation"]
         obj.Plane = plc
-        obj.DataPoints = to_3d(plc, r["data"])
+        obj.DataPoints = [plc.multVec(App.Vector(*map(float, p))) for p in r["data"]]
         obj.FootPoints = to_3d(plc, r["feet"])
         obj.Distances = [float(d) for d in r["distances"]]
         from libelastica.io import curve_to_dict
