@@ -1073,3 +1073,34 @@ class FitBadInputTest(unittest.TestCase):
         self.assertEqual(f.Model, "smooth")
         self.assertLess(f.Rms, 1e-3)
 
+
+
+class FitPointOrderTest(unittest.TestCase):
+    """Points without an order of their own (a sketch of points) run along their principal
+    axis unless the order they were made in gives a polyline no longer: a curl past 180
+    degrees doubles back along its axis (sorted there it zigzags and fits 3.6 mm rms)."""
+
+    def setUp(self):
+        self.doc = S.new_doc("ElasticaFitOrder")
+
+    def tearDown(self):
+        App.closeDocument(self.doc.Name)
+
+    def _fit(self, xy):
+        f = Fi.make(self.doc, [(S.points_sketch(self.doc, xy), [])], Model="smooth")
+        self.doc.recompute()
+        self.assertFalse(f.Status.startswith("error"), f.Status)
+        return f
+
+    def test_a_curl_past_half_a_turn_keeps_the_sketch_order(self):
+        th = [math.radians(-115 + 230 * i / 13) for i in range(14)]
+        f = self._fit([(40 * math.cos(t), 40 * math.sin(t)) for t in th])
+        self.assertLess(f.Rms, 1e-5)
+        self.assertLess(f.MaxError, 1e-5)
+
+    def test_points_made_out_of_order_run_along_their_axis(self):
+        import numpy as np
+        xy, _ = S.keyline_xy(30)
+        shuffled = xy[np.random.default_rng(5).permutation(len(xy))]
+        f = self._fit(shuffled)
+        self.assertLess(f.Rms, 1e-3)

@@ -501,9 +501,14 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         # the user's points in the fit's frame: plane coordinates and distance from the plane
         user = n.column_stack([xy, to_plane(plane, points)[:, 2]])
         if not ordered:
+            # along the principal axis, unless the points as stored (a sketch's in the order
+            # they were made) make a polyline no longer: a curl past 180 deg doubles back
+            # along its axis, and sorted there it zigzags across (rms 3.6 mm against 6e-7)
             xn, _ = el().pca_normalize(xy)
-            user = _facing_the_edges(user[n.argsort(xn[:, 0], kind="stable")], plane,
-                                     start_edge, end_edge)
+            along = n.argsort(xn[:, 0], kind="stable")
+            if _polyline_length(xy) > _polyline_length(xy[along]):
+                user = user[along]
+            user = _facing_the_edges(user, plane, start_edge, end_edge)
         xy = n.ascontiguousarray(user[:, :2])
         constraints, free_rms, warnings = {}, -1.0, []
         if split:
