@@ -1061,6 +1061,15 @@ class FitBadInputTest(unittest.TestCase):
         self.assertIn("Resample = 3 mm leaves 2 points", msg)
         self.assertIn("the polygon jumps where the points double back", msg)
 
+    def test_a_whole_sketch_of_points_and_edges(self):
+        # 15 points and a reference line: the line gave "2 points: a fit needs at least 6"
+        sk = S.points_sketch(self.doc, [(x, 0.004 * x * x) for x in range(0, 101, 7)])
+        sk.addGeometry(Part.LineSegment(App.Vector(-30, -5, 0), App.Vector(-5, -1, 0)), False)
+        self.doc.recompute()
+        msg = self._rejected([(sk, [])])
+        self.assertIn("PointSketch holds 15 points and 1 edge: a fit takes either, not both", msg)
+        self.assertIn("select its points (or its edges)", msg)
+
     def test_separate_chains(self):
         sk = S.two_lines_sketch(self.doc)
         self.assertIn("chains", self._rejected([(sk, ["Edge1", "Edge2"])]))

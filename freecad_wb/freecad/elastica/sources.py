@@ -92,6 +92,14 @@ def gather_points(sources, csv_file="", samples_per_edge=60):
                     raise InputProblem(f"{obj.Label} holds no edges and no points")
                 vertices.extend(pts)
                 continue
+            n_pts = len(sketch_points(obj)) if not subs else 0
+            if n_pts:
+                # which the user means is not ours to guess (the edges gave a line's 2 points)
+                n_edges = len(obj.Shape.Edges)
+                raise InputProblem(
+                    f"{obj.Label} holds {n_pts} point{'s' if n_pts != 1 else ''} and {n_edges} "
+                    f"edge{'s' if n_edges != 1 else ''}: a fit takes either, not both; select "
+                    "its points (or its edges) in the 3D view rather than the whole sketch")
         if obj.isDerivedFrom("Points::Feature"):
             points.extend(obj.Placement.multVec(App.Vector(*p)) for p in obj.Points.Points)
             continue
