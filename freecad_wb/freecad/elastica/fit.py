@@ -243,7 +243,8 @@ def _left_out(beyond, dist, step):
         return []
     d = np().abs(dist[beyond])
     m = int(beyond.sum())
-    return [f"{m} of {len(dist)} points {'lies' if m == 1 else 'lie'} beyond the curve's ends, up to "
+    verb = "lies" if m == 1 else "lie"
+    return [f"{m} of {len(dist)} points {verb} beyond the curve's ends, up to "
             f"{float(d.max()):.3g} mm from it: the resampled polygon (Resample = {step:g} mm) "
             "stops where no point lies a step further on, and the curve with it; Rms and "
             "MaxError include them: a shorter step leaves less out, 0 none"]
@@ -360,7 +361,8 @@ def _polygon_deviation(bspline, curves, samples=32):
     V = curves[0].points() if len(curves) == 1 else n.vstack([curves[0].points()[::-1], curves[1].points()[1:]])
     c = n.concatenate([[0.0], n.cumsum(n.linalg.norm(n.diff(V, axis=0), axis=1))])
     k = n.unique(bspline.knots)
-    t = n.concatenate([n.linspace(a, b, samples, endpoint=False) for a, b in zip(k[:-1], k[1:])] + [k[-1:]])
+    t = n.concatenate([n.linspace(a, b, samples, endpoint=False)
+                       for a, b in zip(k[:-1], k[1:])] + [k[-1:]])
     P = bspline.evaluate(t)
     j = n.clip(n.searchsorted(c, t) - 1, 0, len(V) - 2)
     best = n.full(len(t), n.inf)
@@ -452,9 +454,10 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
     user's points, (n, 3) in the frame of the plane: never a resampled polygon), 'feet'
     (their nearest points on the curve), 'distances' (signed, + = left; in 3D),
     'measure', 'rms', 'max_error' (point to curve: the library's figures for points it
-    fitted as they are and in its plane, else measured on the curve drawn), 'k', 'end_curvatures' (the shape's at its first and last
-    point, 1/mm, + turning left), 'status', 'free_rms' (the same fit with free ends;
-    -1 without end conditions or when that fit fails) and 'warnings' (end conditions
+    fitted as they are and in its plane, else measured on the curve drawn), 'k',
+    'end_curvatures' (the shape's at its first and last point, 1/mm, + turning left),
+    'status', 'free_rms' (the same fit with free ends; -1 without end conditions or when
+    that fit fails) and 'warnings' (end conditions
     that cost accuracy; a discrete fit of few points whose polygon the smooth model's
     curve beats).
     Raises InputProblem with a user message."""

@@ -12,7 +12,6 @@ import Part
 from PySide import QtCore, QtGui
 
 from . import icon
-
 from .geometry import is_sketch, sketch_curves
 from .proxy import InputProblem
 
