@@ -767,8 +767,9 @@ typedef struct el_hermite_solution {
  * that neither one el_smooth_params nor a chain of them meets to opt->tol, so they are
  * not in solutions: a circular arc (an elastica for sigma = curvature^2, which
  * el_smooth_params reaches only in the limit k -> infinity, meeting the ends to ~1e-8)
- * when tol is below that; no other met in tests up to sigma |p1-p0|^2 = 1e4 at the
- * default tol (see el_hermite_solve). */
+ * when tol is below that; a near-straight curve at sigma = 0 between tangents within
+ * ~1e-6 rad of the chord (see el_hermite_solve); no other met in tests up to
+ * sigma |p1-p0|^2 = 1e4 at the default tol. */
 typedef struct el_hermite_result {
     size_t count;
     el_hermite_solution *solutions; /* count entries, library-owned */
@@ -813,10 +814,14 @@ enum { EL_HERMITE_SIGMA_D2_MAX = 100000 };
  * matters more than time). Nearly collinear tangents with the end point ahead: within
  * opt->tol of collinear the straight segment is returned; beyond, the near-straight curve
  * starts from a state next to the saddle (sigma > 0) or the centre (sigma < 0) of the
- * curvature's phase plane, which the solver's unknown resolves only to ~1e-16 absolute,
- * and is missed for tangents up to ~1e-8 rad from collinear (sigma |p1-p0|^2 from -10 to
- * 10, and some up to 1e-5), ~1e-7 at 100, ~1e-4 at 1e3-1e4 (found at sigma = 0 from
- * ~5e-10).
+ * curvature's phase plane, which the solver's unknown resolves only to ~1e-16 absolute:
+ * with tangents within 1e-2 rad of the chord and sigma |p1-p0|^2 within [-10, 10] it is
+ * also solved from the linear beam (hermite.c, near_straight_solution) and added where
+ * the roots missed it; at sigma = 0 a curve whose tangents lie within ~1e-6 rad of the
+ * chord is a sliver of a huge elastica that el_smooth_params meets only to ~1e-16 / angle
+ * (counted in unrepresentable where that is above tol). Beyond that range it is missed for
+ * tangents up to ~1e-8 rad from collinear (sigma |p1-p0|^2 from -10 to 10, and some up to
+ * 1e-6), ~1e-7 at 100, ~1e-4 at 1e3-1e4.
  * Every solution is verified with el_smooth_eval and returned only if its residual
  * is <= opt->tol (after a Newton polish on the parameters when it misses by a
  * little, then a second one with k held at each of its nearest doubles).

@@ -29,6 +29,7 @@
  * stays a valid objective where F is parallel to x1 (kappa0^2 = sigma).
  */
 #include "hermite_internal.h"
+#include <float.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_linalg.h>
 #include <stdlib.h>
@@ -102,6 +103,19 @@ static int residual(const hframe *fr, const el_hermite_solution *s, double *res)
     if (rc) return rc;
     *res = end_residual(fr, xy, th);
     return EL_OK;
+}
+
+/* A polished solution's end curvatures, from its curve (make_solution's were the root's) */
+static int end_curvatures(el_hermite_solution *t)
+{
+    const double ends[2] = {0.0, t->curve.length};
+    double kappa[2];
+    const int rc = el_smooth_eval(&t->curve, 2, ends, NULL, NULL, kappa);
+    if (!rc) {
+        t->kappa0 = kappa[0];
+        t->kappa1 = kappa[1];
+    }
+    return rc;
 }
 
 /* Residual vector of a solution for the polish (its ends as el_smooth_eval gives them):
@@ -189,7 +203,7 @@ static void polish(const hframe *fr, int mode, double target, el_hermite_solutio
     t.length = p.length;
     t.residual = res;
     if (mode == EL_HERMITE_LENGTH) t.sigma = 2.0 * p.mu * (2.0 * p.k * p.k - 1.0);
-    if (el_smooth_energy(&p, &t.energy)) return;
+    if (el_smooth_energy(&p, &t.energy) || end_curvatures(&t)) return;
     *s = t;
 }
 
@@ -274,7 +288,7 @@ static void polish_fixed_k(const hframe *fr, int mode, double target, el_hermite
     t.length = best.length;
     t.residual = best_res;
     if (mode == EL_HERMITE_LENGTH) t.sigma = 2.0 * best.mu * (2.0 * best.k * best.k - 1.0);
-    if (el_smooth_energy(&best, &t.energy)) return;
+    if (el_smooth_energy(&best, &t.energy) || end_curvatures(&t)) return;
     *s = t;
 }
 
@@ -347,6 +361,132 @@ static int straight_solution(const hframe *fr, double sigma, el_hermite_solution
     s->curve.q = 0.0;
     s->curve.length = s->length = fr->d;
     s->sigma = sigma;
+    return EL_OK;
+}
+
+/* Tangents within NEAR_STRAIGHT rad of the chord, the end point ahead, |sigma| |p1 - p0|^2
+ * at most NEAR_SIGMA: the near-straight curve, from the linear beam's (the conserved F =
+ * (kappa^2 - sigma) T + 2 kappa' N gives kappa'' = (sigma - kappa^2) kappa / 2; linearised
+ * kappa'' = sigma kappa / 2: kappa = A f1 + B f2 with f1, f2 = 1, s (sigma = 0),
+ * cosh / sinh (sigma > 0), cos / sin (sigma < 0) of sqrt(|sigma| / 2) s), whose slope
+ * theta = theta0 + integral kappa ends at theta1 and whose deflection integral theta
+ * vanishes at s = d (Simpson's rule, NEAR_SIMPSON intervals), L = d + integral theta^2 / 2;
+ * polished (polish, polish_fixed_k). EL_EDOM where it cannot be evaluated (a buckling load
+ * makes the linear system singular), else EL_OK with its residual: above tol where the
+ * polish fails, or where the parameters cannot carry it (at sigma = 0 the curve is a
+ * piece sqrt(mu) L ~ |theta| of a huge elastica, whose closed form loses ~eps / (sqrt(mu)
+ * L) to cancellation). Written because the solver's bracketing misses it there: at
+ * sigma = 0 with tangents +-a of a shallow arc, for every a from 1e-9 to 3e-4 (QA); of
+ * 1500 random such problems (tangents 1e-9 to 1e-2 rad off the chord, sigma |p1 - p0|^2
+ * 0 or in [-10, 10]) 411 lacked it, 136 now: 96 at sigma = 0 counted unrepresentable,
+ * 40 at other tensions with tangents ~1e-9..1e-8 rad off the chord (the header's limit);
+ * none listed twice */
+#define NEAR_STRAIGHT 1e-2
+#define NEAR_SIGMA 10.0
+enum { NEAR_SIMPSON = 64 };
+
+static double near_basis(int j, double sigma, double s)
+{
+    const double w = sqrt(0.5 * fabs(sigma)) * s;
+    if (sigma == 0.0) return j ? s : 1.0;
+    if (sigma > 0.0) return j ? sinh(w) : cosh(w);
+    return j ? sin(w) : cos(w);
+}
+
+/* The end conditions' residual (end point / d, end tangent) of the curve from p0, t0 with
+ * the start state (kappa0, kappa0') = x[0], x[1] and length x[2] at tension sigma */
+static int near_residual(const hframe *fr, double sigma, const double x[3], double r[3], el_smooth_params *p)
+{
+    double xy[4], th[2];
+    if (params_from_state(fr->p0[0], fr->p0[1], fr->psi0, x[0], x[1], sigma, x[2], NULL, p) ||
+        el_smooth_check(p) || el__smooth_ends(p, xy, th))
+        return EL_EDOM;
+    r[0] = (xy[2] - fr->p1[0]) / fr->d;
+    r[1] = (xy[3] - fr->p1[1]) / fr->d;
+    r[2] = el__hermite_wrap_pi(th[1] - fr->psi1);
+    return isfinite(r[0]) && isfinite(r[1]) && isfinite(r[2]) ? EL_OK : EL_EDOM;
+}
+
+/* Newton on the start state and the length from x (the linear beam's), a finite-difference
+ * Jacobian each step (steps scale: the state's size, ~theta / d and theta / d^2), while
+ * the residual falls; the curve into s->curve */
+static void near_newton(const hframe *fr, double sigma, double scale, double x[3], el_hermite_solution *s)
+{
+    const double d = fr->d, hs[3] = {1e-6 * scale / d, 1e-6 * scale / (d * d), 1e-6 * scale * d};
+    double r[3];
+    el_smooth_params p;
+    if (near_residual(fr, sigma, x, r, &p)) return;
+    double rn = fmax(fabs(r[0]), fmax(fabs(r[1]), fabs(r[2])));
+    s->curve = p;
+    for (int it = 0; it < 12 && rn > 0.0; it++) {
+        double J[9], rp[3], rm[3];
+        for (int c = 0; c < 3; c++) {
+            double xp[3] = {x[0], x[1], x[2]}, xm[3] = {x[0], x[1], x[2]};
+            xp[c] += hs[c];
+            xm[c] -= hs[c];
+            if (near_residual(fr, sigma, xp, rp, &p) || near_residual(fr, sigma, xm, rm, &p)) return;
+            for (int i = 0; i < 3; i++) J[i * 3 + c] = (rp[i] - rm[i]) / (2.0 * hs[c]);
+        }
+        int perm[3];
+        double dx[3] = {-r[0], -r[1], -r[2]};
+        if (el__lu_factor(J, 3, perm)) return;
+        el__lu_solve(J, 3, perm, dx);
+        const double xn[3] = {x[0] + dx[0], x[1] + dx[1], x[2] + dx[2]};
+        double rt[3];
+        if (near_residual(fr, sigma, xn, rt, &p)) return;
+        const double tn = fmax(fabs(rt[0]), fmax(fabs(rt[1]), fabs(rt[2])));
+        if (!(tn < rn)) return;
+        memcpy(x, xn, sizeof xn);
+        memcpy(r, rt, sizeof rt);
+        rn = tn;
+        s->curve = p;
+    }
+}
+
+static int near_straight_solution(const hframe *fr, double sigma, double tol, el_hermite_solution *s)
+{
+    const double d = fr->d, chi = atan2(fr->p1[1] - fr->p0[1], fr->p1[0] - fr->p0[0]);
+    const double t0 = el__hermite_wrap_pi(fr->psi0 - chi), t1 = el__hermite_wrap_pi(fr->psi1 - chi);
+    if (!(fabs(t0) <= NEAR_STRAIGHT && fabs(t1) <= NEAR_STRAIGHT && fabs(sigma) * d * d <= NEAR_SIGMA))
+        return EL_EDOM;
+    /* integral f_j and integral (d - s) f_j over [0, d] (the turning and the deflection) */
+    const double h = d / NEAR_SIMPSON;
+    double I[2][2] = {{0.0, 0.0}, {0.0, 0.0}};
+    for (int i = 0; i <= NEAR_SIMPSON; i++) {
+        const double wt = (i == 0 || i == NEAR_SIMPSON ? 1.0 : i % 2 ? 4.0 : 2.0) * h / 3.0, x = i * h;
+        for (int j = 0; j < 2; j++) {
+            I[0][j] += wt * near_basis(j, sigma, x);
+            I[1][j] += wt * (d - x) * near_basis(j, sigma, x);
+        }
+    }
+    const double det = I[0][0] * I[1][1] - I[0][1] * I[1][0], r0 = t1 - t0, r1 = -t0 * d;
+    if (!(fabs(det) > 0.0)) return EL_EDOM;
+    const double A = (r0 * I[1][1] - I[0][1] * r1) / det, B = (I[0][0] * r1 - I[1][0] * r0) / det;
+    const double g = sqrt(0.5 * fabs(sigma));
+    const double k0 = A, k0p = sigma == 0.0 ? B : B * g;      /* f1'(0) = 0, f2'(0) = 1 or g */
+    /* L = d + integral theta^2 / 2, theta = t0 + integral kappa (the trapezoid's running sum) */
+    double theta = t0, w2 = 0.0, kprev = k0;
+    int turns = 0;     /* kappa's changes of sign inside */
+    for (int i = 1; i <= NEAR_SIMPSON; i++) {
+        const double x = i * h, k = A * near_basis(0, sigma, x) + B * near_basis(1, sigma, x);
+        const double th = theta + 0.5 * h * (kprev + k);
+        turns += i < NEAR_SIMPSON && (k < 0.0) != (kprev < 0.0) && kprev != 0.0;
+        w2 += 0.5 * h * (theta * theta + th * th);
+        theta = th;
+        kprev = k;
+    }
+    memset(s, 0, sizeof *s);
+    s->npieces = 1;
+    s->sigma = sigma;
+    double x[3] = {k0, k0p, d + 0.5 * w2};
+    if (params_from_state(fr->p0[0], fr->p0[1], fr->psi0, x[0], x[1], sigma, x[2], NULL, &s->curve)) return EL_EDOM;
+    near_newton(fr, sigma, fmax(fabs(t0), fabs(t1)), x, s);
+    s->length = s->curve.length;
+    if (residual(fr, s, &s->residual)) return EL_EDOM;
+    polish(fr, EL_HERMITE_TENSION, sigma, s);
+    if (s->residual > tol) polish_fixed_k(fr, EL_HERMITE_TENSION, sigma, s);
+    if (end_curvatures(s) || el_smooth_energy(&s->curve, &s->energy)) return EL_EDOM;
+    s->has_inflection = turns > 0;   /* the linear beam's: the polish moves kappa by O(theta^3) */
     return EL_OK;
 }
 
@@ -513,6 +653,12 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
         straight_solution(&fr, opt->mode == EL_HERMITE_TENSION ? opt->sigma : 0.0, &sol[n]);
         if (!residual(&fr, &sol[n], &sol[n].residual) && sol[n].residual <= opt->tol) n++;
     }
+    el_hermite_solution nearly;     /* added below unless the roots hold it */
+    const int near_ok = opt->mode == EL_HERMITE_TENSION && !collinear &&
+                        near_straight_solution(&fr, opt->sigma, opt->tol, &nearly) == EL_OK;
+    /* at sigma = 0 not met to tol only by the parameters' resolution: unrepresentable */
+    const int near_unrep = near_ok && !(nearly.residual <= opt->tol) && opt->sigma == 0.0 &&
+                           nearly.residual <= 1e3 * DBL_EPSILON / (sqrt(nearly.curve.mu) * nearly.curve.length);
     double cc, cL;
     int circle_unrep = 0;
     if (circle_arc(&fr, u0, u1, &cc, &cL) &&
@@ -550,6 +696,10 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
             if (!(s.residual <= opt->tol)) { unrep[nunrep++] = s; continue; }
         }
         if (!(s.residual <= opt->tol)) continue;
+        /* a near-straight curve's energy from its parameters: the root's state loses it to
+         * cancellation (tangents 1e-4 rad off the chord at sigma |p1 - p0|^2 = 7.3: 2e-5 of
+         * it, 7.5e-5 where polished); its few ulps elsewhere are kept as they are */
+        if (s.npieces == 1 && s.energy * fr.d < 1.0 && el_smooth_energy(&s.curve, &s.energy)) continue;
         int dup = 0;
         for (size_t j = 0; j < n && !dup; j++) {
             if (same_solution(&s, &sol[j], fr.d)) {
@@ -560,8 +710,23 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
         if (!dup) sol[n++] = s;
     }
     free(roots.v);
-    /* each unrepresentable curve once, and not when another root of it was representable */
     size_t nu = (size_t)circle_unrep;
+    if (near_ok && (nearly.residual <= opt->tol || near_unrep)) {
+        int dup = 0;
+        for (size_t j = 0; j < n && !dup; j++) dup = same_solution(&nearly, &sol[j], fr.d);
+        if (!dup && near_unrep) {
+            nu++;
+        } else if (!dup) {
+            if (n == cap) {
+                el_hermite_solution *more = realloc(sol, (cap + 1) * sizeof *sol);
+                if (!more) { free(sol); if (unrep != ubuf) free(unrep); return EL_ENOMEM; }
+                sol = more;
+                cap++;
+            }
+            sol[n++] = nearly;
+        }
+    }
+    /* each unrepresentable curve once, and not when another root of it was representable */
     for (size_t i = 0; i < nunrep; i++) {
         int dup = 0;
         for (size_t j = 0; j < n && !dup; j++) dup = same_solution(&unrep[i], &sol[j], fr.d);

@@ -348,8 +348,9 @@ def hermite(p0, t0, p1, t1, tension: Optional[float] = None,
         if unrepresentable:
             out.unrepresentable = unrepresentable
             warnings.warn(f"hermite: {unrepresentable} more curve(s) exist that no smooth "
-                          f"parameters meet to tol={tol:g} (too close to the separatrix |k| = 1); "
-                          "a larger tol returns them", RuntimeWarning, stacklevel=2)
+                          f"parameters meet to tol={tol:g} (too close to the separatrix |k| = 1, "
+                          "or, at tension 0, so nearly straight that they are a sliver of a huge "
+                          "elastica); a larger tol returns them", RuntimeWarning, stacklevel=2)
         if status:
             out.complete = False
             warnings.warn(f"hermite: length mode reached its work limit; the {len(out)} solution(s) "

@@ -565,3 +565,27 @@ def test_length_mode_work_limit_returns_the_solutions_found_with_a_warning(monke
     assert not sols.complete and len(sols) > 0
     for c in sols:
         _check_ends(c, (0, 0), (0, 1), (2, 0), (0, -1))
+
+
+@pytest.mark.parametrize("a", [1e-4, 3e-4, 1e-3])
+def test_tangents_near_the_chord_give_the_near_straight_curve_first(a):
+    """A shallow arc's tangents +-a off the chord at tension 0 (two nearly aligned edges):
+    the near-straight curve, energy ~ 4 a^2 / d, is the first solution (only a loop of
+    energy 23 was returned for a from 1e-9 to 3e-4, QA)."""
+    sols = el.hermite((0, 0), (np.cos(a), np.sin(a)), (1, 0), (np.cos(a), -np.sin(a)), tension=0.0)
+    assert sols[0].energy_value == pytest.approx(4 * a * a, rel=1e-2)
+    assert sols[0].length == pytest.approx(1.0, abs=1e-5)
+
+
+def test_near_straight_curve_beyond_the_parameters_is_counted_and_named():
+    """Tangents 1e-6 rad off the chord at tension 0: the near-straight curve is a sliver of
+    a huge elastica that the parameters meet only to ~1e-10; counted unrepresentable with a
+    warning that says so, and returned with a larger tol."""
+    t0, t1 = (np.cos(1e-6), np.sin(1e-6)), (np.cos(1e-6), -np.sin(1e-6))
+    with pytest.warns(RuntimeWarning, match="nearly straight"):
+        sols = el.hermite((0, 0), t0, (1, 0), t1, tension=0.0)
+    assert sols.unrepresentable == 1 and all(s.energy_value > 1 for s in sols)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        loose = el.hermite((0, 0), t0, (1, 0), t1, tension=0.0, tol=1e-8)
+    assert loose[0].energy_value == pytest.approx(4e-12, rel=1e-2) and loose[0].residual <= 1e-8
