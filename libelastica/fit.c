@@ -410,7 +410,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
      * from its own feet (the guesses' path, Levenberg-Marquardt first, where that run does
      * not meet them): a second pass of the loop below. Measured on 300 sketches of 5-22
      * points clustered along 10-40 % of a curve (0-0.5 % noise, 0-2 points elsewhere, its
-     * ends and tangents): fits above 1.01 x their true curve's rms 19 -> 4 (at up to 137 x
+     * ends and tangents): fits above 1.01 x their true curve's rms 19 -> 4 (at up to 28 x
      * before), none worse by 1 %, one EL_EDOM fitted; median CPU 10.7 -> 13.2 ms;
      * bench_fit_sparse.py's G1-G1 sets 1 -> 0 above their true curve, median 4.4 -> 7.6 ms
      * (the scan's 19 tension solves and their members' distances). Fitted among the guesses

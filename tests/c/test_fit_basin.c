@@ -242,7 +242,7 @@ START_TEST(test_fit_g1_from_a_curve_that_meets_the_constraints)
 END_TEST
 
 /* a G1-G1 fit of clustered sketched points reaches their true curve's basin (default start;
- * they ended at 137 x, 4.25 x, 28 x and 6.9 x that curve's rms, status ok: its guesses are
+ * they ended at 127 x, 4.25 x, 28 x and 6.9 x that curve's rms, status ok: its guesses are
  * fitted to the points first and moved onto the ends after, far from that basin), and 6 points
  * exactly on a curve are fitted (EL_EDOM before: no guess's fit met the end tangent) */
 START_TEST(test_fit_g1_clustered_sketches)
