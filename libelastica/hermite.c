@@ -699,7 +699,7 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
         /* a near-straight curve's energy from its parameters: the root's state loses it to
          * cancellation (tangents 1e-4 rad off the chord at sigma |p1 - p0|^2 = 7.3: 2e-5 of
          * it, 7.5e-5 where polished); its few ulps elsewhere are kept as they are */
-        if (s.npieces == 1 && s.energy * fr.d < 1.0 && el_smooth_energy(&s.curve, &s.energy)) continue;
+        if (s.npieces == 1 && s.energy * fr.d < 1e-2 && el_smooth_energy(&s.curve, &s.energy)) continue;
         int dup = 0;
         for (size_t j = 0; j < n && !dup; j++) {
             if (same_solution(&s, &sol[j], fr.d)) {
