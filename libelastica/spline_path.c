@@ -269,7 +269,8 @@ static void unwind(el__spchain *w, int max_steps, double aim, double accept)
     double poly = 0.0;
     for (size_t j = 0; j < w->m; j++) poly += w->pc[j].h;
     if (w->sigma != 0.0 && total_length(w) > WANDER * poly) pull_from(w, max_steps, aim, accept, 0.0);
-    if (w->sigma < HIGH_SIGMA && total_length(w) > WANDER * poly) pull_from(w, max_steps, aim, accept, HIGH_SIGMA);
+    if (w->sigma < HIGH_SIGMA && total_length(w) > WANDER * poly)
+        pull_from(w, max_steps, aim, accept, HIGH_SIGMA);
 }
 
 /* The tension solution at w->sigma: directly (one that winds away from its ducks: another
@@ -493,8 +494,8 @@ static int buckling_mode(el__spchain *w, size_t i0, size_t i1, double *lambda)
 /*
  * Collinear points, a length Lt longer than the line (Lp): the batten buckles
  * in its first mode (buckling_mode), its largest bow (the first of equal ones)
- * to the left (mirror: to the right), started with the small excess L1 = Lp (1 + 1e-3), less if that
- * makes the mean square slope on a span more than 0.05^2 (where the
+ * to the left (mirror: to the right), started with the small excess L1 = Lp (1 +
+ * 1e-3), less if that makes the mean square slope on a span more than 0.05^2 (where the
  * linearisation is accurate): slopes theta = dir + Theta z with integral w'^2 =
  * 2 (L1 - Lp), sigma = -2 lambda, each piece the linearised batten of its span;
  * then followed in length. Two points clamped at both ends have no free slope:
@@ -589,6 +590,14 @@ static void set_ducks(el__spchain *w, double t, const double *par)
         w->ell[i] = 0.5 * (w->pc[i > 0 ? i - 1 : 0].h + w->pc[i < m ? i : m - 1].h);
 }
 
+/* The chain's bending energy (its pieces', internal units) */
+static double chain_energy(const el__spchain *w)
+{
+    double e = 0.0;
+    for (size_t j = 0; j < w->m; j++) e += w->pc[j].energy;
+    return e;
+}
+
 /*
  * Ducks near a line (open, no guide ducks; dir: the line's direction, along which
  * every chord advances), a length Lt longer than their polygon: the batten through the
@@ -601,13 +610,6 @@ static void set_ducks(el__spchain *w, double t, const double *par)
  * by 0.05 .. 0.27, the batten jumped between modes of 2.6 .. 10 x the energy as that
  * duck moved by 0.01 (QA).
  */
-static double chain_energy(const el__spchain *w)
-{
-    double e = 0.0;
-    for (size_t j = 0; j < w->m; j++) e += w->pc[j].energy;
-    return e;
-}
-
 int el__spline_solve_near_line(el__spchain *w, int max_steps, double dir, double Lt)
 {
     const size_t n = w->n, m = w->m;
