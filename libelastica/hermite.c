@@ -367,20 +367,20 @@ static int straight_solution(const hframe *fr, double sigma, el_hermite_solution
 /* Tangents within NEAR_STRAIGHT rad of the chord, the end point ahead, |sigma| |p1 - p0|^2
  * at most NEAR_SIGMA: the near-straight curve, from the linear beam's (the conserved F =
  * (kappa^2 - sigma) T + 2 kappa' N gives kappa'' = (sigma - kappa^2) kappa / 2; linearised
- * kappa'' = sigma kappa / 2: kappa = A f1 + B f2 with f1, f2 = 1, s (sigma = 0),
- * cosh / sinh (sigma > 0), cos / sin (sigma < 0) of sqrt(|sigma| / 2) s), whose slope
- * theta = theta0 + integral kappa ends at theta1 and whose deflection integral theta
- * vanishes at s = d (Simpson's rule, NEAR_SIMPSON intervals), L = d + integral theta^2 / 2;
- * polished (polish, polish_fixed_k). EL_EDOM where it cannot be evaluated (a buckling load
- * makes the linear system singular), else EL_OK with its residual: above tol where the
- * polish fails, or where the parameters cannot carry it (at sigma = 0 the curve is a
- * piece sqrt(mu) L ~ |theta| of a huge elastica, whose closed form loses ~eps / (sqrt(mu)
- * L) to cancellation). Written because the solver's bracketing misses it there: at
- * sigma = 0 with tangents +-a of a shallow arc, for every a from 1e-9 to 3e-4 (QA); of
- * 1500 random such problems (tangents 1e-9 to 1e-2 rad off the chord, sigma |p1 - p0|^2
- * 0 or in [-10, 10]) 411 lacked it, 136 now: 96 at sigma = 0 counted unrepresentable,
- * 40 at other tensions with tangents ~1e-9..1e-8 rad off the chord (the header's limit);
- * none listed twice */
+ * kappa'' = sigma kappa / 2: kappa = A f1 + B f2 with f1, f2 = 1, s (sigma = 0), cosh / sinh
+ * (sigma > 0), cos / sin (sigma < 0) of sqrt(|sigma| / 2) s), whose slope theta = theta0 +
+ * integral kappa ends at theta1 and whose deflection integral theta vanishes at s = d
+ * (Simpson's rule, NEAR_SIMPSON intervals), L = d + integral theta^2 / 2; Newton on its
+ * start state and length (near_newton), polished (polish, polish_fixed_k). EL_EDOM where it
+ * cannot be evaluated (a buckling load makes the linear system singular), else EL_OK with
+ * its residual: above tol where the polish fails, or where the parameters cannot carry it
+ * (at sigma = 0 the curve is a piece sqrt(mu) L ~ |theta| of a huge elastica, whose closed
+ * form loses ~eps / (sqrt(mu) L) to cancellation). Written because the solver's bracketing
+ * misses it there: at sigma = 0 with tangents +-a of a shallow arc, for every a from 1e-9 to
+ * 3e-4 (QA); of 1500 random such problems (tangents 1e-9 to 1e-2 rad off the chord, sigma
+ * |p1 - p0|^2 0 or in [-10, 10]) 411 lacked it, 136 now: 96 at sigma = 0 counted
+ * unrepresentable, 40 at other tensions with tangents ~1e-9..1e-8 rad off the chord (the
+ * header's limit); none listed twice */
 #define NEAR_STRAIGHT 1e-2
 #define NEAR_SIGMA 10.0
 enum { NEAR_SIMPSON = 64 };
