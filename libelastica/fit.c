@@ -80,15 +80,6 @@ static int meets_constraints(fit_objective *ob, const fit_map *map, const fit_co
     return el__fit_map_eval(map, x, v, NULL) == EL_OK && !el__fit_violated(ob, con, v[0], lo, hi, tmp);
 }
 
-/* Whether the fit at x crosses itself or strays from its points (*strays: el__fit_strays_at's
- * answer, computed once; d, fs: its workspace) */
-static int wanders(fit_objective *ob, const double *x, int *strays, double noise, double *d, double *fs, double *tmp)
-{
-    if (el__fit_crosses_itself(ob, x)) return 1;
-    if (*strays < 0) *strays = el__fit_strays_at(ob, x, noise, d, fs, tmp);
-    return *strays;
-}
-
 int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt, int flags,
                 const double *init, fit_out *res, double *dist, double *foot)
 {
@@ -541,8 +532,8 @@ candidates:
          * replace one that does neither (7 noisy points along a near-straight curve: a
          * loop in a gap between them, rms 0.84 x the kept fit's, within el__fit_stray's
          * allowance for a curved arc) */
-        if (last_is_best && ci < nfamily && best_meets && wanders(&ob, r.x, &r_strays, noise_rms, d, fs, tmp))
-            last_is_best = wanders(&ob, best.x, &best_strays, noise_rms, d, fs, tmp);
+        if (last_is_best && ci < nfamily && best_meets && el__fit_wanders(&ob, r.x, &r_strays, noise_rms, d, fs, tmp))
+            last_is_best = el__fit_wanders(&ob, best.x, &best_strays, noise_rms, d, fs, tmp);
         if (last_is_best) {
             best = r; best_strays = r_strays; best_meets = r_meets; memcpy(best_init, p0, sizeof p0);
             family_won |= ci < nfamily;

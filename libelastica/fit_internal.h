@@ -297,6 +297,9 @@ int el__fit_strays_at(fit_objective *ob, const double *x, double noise, double *
  * polygon of 256 chords: a loop narrower than ~1/256 of its length is missed); 0 where it
  * cannot be evaluated. */
 int el__fit_crosses_itself(const fit_objective *ob, const double *x);
+/* fit_refit.c: whether the fit at x crosses itself or strays from its points (*strays:
+ * el__fit_strays_at's answer, -1 until computed, then kept; d, fs as its). */
+int el__fit_wanders(fit_objective *ob, const double *x, int *strays, double noise, double *d, double *fs, double *tmp);
 /* fit_refit.c: idx (n entries) the indices 0..n-1 in the order of fs, ties by index;
  * 0, or -1 when out of memory (NaN feet far out of order take n pairs of workspace) */
 int el__fit_feet_order(const double *fs, size_t *idx, size_t n);

@@ -419,3 +419,10 @@ int el__fit_crosses_itself(const fit_objective *ob, const double *x)
     }
     return 0;
 }
+
+int el__fit_wanders(fit_objective *ob, const double *x, int *strays, double noise, double *d, double *fs, double *tmp)
+{
+    if (el__fit_crosses_itself(ob, x)) return 1;
+    if (*strays < 0) *strays = el__fit_strays_at(ob, x, noise, d, fs, tmp);
+    return *strays;
+}
