@@ -344,7 +344,21 @@ int el__spline_solve_length(el__spchain *w, int max_steps, double Lt)
         if (st == EL_ENOMEM) return st;
         if (!st && length_newton(w, Lt) == EL_OK) return EL_OK;
     }
-    const int st = el__spline_free_batten(w, max_steps);
+    int st = el__spline_free_batten(w, max_steps);
+    if (st == EL_ENOCONV) {
+        /* no free batten (ducks in a ring: a closed batten without tension swells without
+         * bound; a zigzag slides off): from a batten under tension instead, the first of
+         * these that converges, followed in length as the free one is (9 ducks of a blob,
+         * closed: no spline at the lengths its tensions 0.3, 1, 3 give, QA; its tension
+         * sigma h^2 = 40 has none either) */
+        const double sigmas[3] = {HIGH_SIGMA, 4.0, 0.4};   /* sigma h^2 on the mean chord */
+        for (int i = 0; i < 3 && st == EL_ENOCONV; i++) {
+            w->near = 0;
+            w->lmode = 0;
+            w->sigma = sigmas[i];
+            st = el__spline_solve_tension(w, max_steps, 0);
+        }
+    }
     return st ? st : el__spline_length_from(w, max_steps, Lt);
 }
 

@@ -369,6 +369,30 @@ START_TEST(ducks_near_a_line_buckle_in_their_first_mode)
 }
 END_TEST
 
+/* A closed spline by length where no free batten exists (a ring of ducks: without tension
+ * it swells without bound): the lengths that tensions 0.3, 1, 3 give are reached, at those
+ * tensions (none was, QA) */
+START_TEST(closed_length_without_a_free_batten)
+{
+    static const double blob[] = {4.288, 1.7064, 2.6029, 1.1654, 1.498, 1.5679, 0.2344, 1.881, -2.3731, 0.7068,
+                                  -2.3464, 0.2071, -2.4051, -0.9101, -0.3182, -2.1825, 0.9045, -1.8066};
+    const double sigma[] = {0.3, 1.0, 3.0};
+    for (size_t i = 0; i < 3; i++) {
+        el_spline_options o = opts(EL_SPLINE_TENSION, sigma[i]);
+        o.closed = 1;
+        el_spline_result t, l;
+        ck_assert_int_eq(solve(blob, 9, &o, &t), EL_OK);
+        el_spline_options ol = opts(EL_SPLINE_LENGTH, t.length);
+        ol.closed = 1;
+        ck_assert_msg(solve(blob, 9, &ol, &l) == EL_OK, "length %g (tension %g)", t.length, sigma[i]);
+        check_spline(blob, 9, &ol, &l, 1e-9);
+        ck_assert_close(l.sigma, sigma[i], 1e-6 * sigma[i]);
+        el_spline_result_free(&t);
+        el_spline_result_free(&l);
+    }
+}
+END_TEST
+
 static const double scan33[] = {
     0, 0.142, 0.315, 0.182, 0.604, 0.152, 0.866, 0.208, 1.101, 0.364, 1.309, 0.541, 1.494, 0.673,
     1.659, 0.737, 1.809, 0.743, 1.949, 0.71, 2.086, 0.66, 2.225, 0.61, 2.373, 0.579, 2.534, 0.587,
@@ -483,6 +507,7 @@ int main(void)
     tcase_add_test(tc, length_mode_newton_equals_the_continuation);
     tcase_add_test(tc, buckled_collinear_batten_takes_its_first_mode);
     tcase_add_test(tc, ducks_near_a_line_buckle_in_their_first_mode);
+    tcase_add_test(tc, closed_length_without_a_free_batten);
     tcase_add_test(tc, natural_ends_under_high_tension_reach_tol);
     tcase_add_test(tc, hand_placed_ducks);
     suite_add_tcase(s, tc);
