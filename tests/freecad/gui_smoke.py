@@ -17,7 +17,8 @@ guide ducks), gui_fit_panel.png, gui_fit_ends.png (its warning line), gui_fit_g2
 discrete model: its warning line), gui_fit_outliers.png (a scan's two glitches on
 the warning line), gui_spline_g2.png (a G2 start),
 gui_spline_panel.png, gui_ellblend_panel.png (its warning line), gui_g2quad_panel.png,
-gui_comb_panel.png. The outcome goes
+gui_comb_panel.png, gui_blend_undo.png and gui_fit_undo.png (Edit > Undo during an edit:
+the panel closed). The outcome goes
 to gui_smoke.result (first line PASS or FAIL); FreeCAD is then ended with os._exit
 because its exit status says nothing about a script. Only APIs present in FreeCAD
 0.20 and 1.0 are used (PySide through FreeCAD's shim)."""
@@ -183,6 +184,53 @@ def double_click(obj):
     return T.CURRENT[0] if T.CURRENT else None
 
 
+def undo_during_edit(doc, obj, field, prop, first, second, what):
+    """The user's sequence: the feature's edit panel open (double-click), ``first``
+    typed into the panel's ``field``, Edit > Undo (Std_Undo: active during a task dialog
+    in FreeCAD 0.20) with the panel still open, ``second`` typed, Cancel. The undo took
+    the panel's transaction back but left the panel open on the first value: the second
+    escaped every transaction and Cancel kept it, nothing left to undo it with. Undo now
+    closes the panel (as it does a new feature's), the document as before the edit; the
+    user's next edit opens the panel again and its Cancel reverts it. Screenshot
+    gui_<what>_undo.png: the state after the undo."""
+    from freecad.elastica import taskpanels as T
+
+    def state():
+        v = getattr(obj, prop)
+        shape = [(round(e.Length, 9), getattr(e.Curve, "NbPoles", 0)) for e in obj.Shape.Edges]
+        return (getattr(v, "Value", v), shape, list(doc.UndoNames), doc.UndoCount,
+                doc.HasPendingTransaction)
+
+    before = state()
+    panel = double_click(obj)
+    type_into(getattr(panel, field), first)
+    wait()
+    previewed = state()
+    check(previewed[0] != before[0] and previewed[1] != before[1] and doc.HasPendingTransaction
+          and doc.UndoNames[0] == f"Edit {obj.Label}",
+          f"{what} edit: {prop} {first} previewed in the panel's transaction ({previewed} vs "
+          f"{before}; {obj.Status})")
+    Gui.runCommand("Std_Undo")
+    wait()
+    screenshot(f"gui_{what}_undo.png")
+    closed = not T.CURRENT and not Gui.Control.activeDialog() and \
+        Gui.ActiveDocument.getInEdit() is None
+    undone = state()
+    panel = T.CURRENT[0] if T.CURRENT else double_click(obj)    # the user carries on
+    type_into(getattr(panel, field), second)
+    wait()
+    held = doc.HasPendingTransaction and state()[0] != before[0]
+    panel.reject()
+    pump()
+    check(state() == before and not T.CURRENT and not Gui.Control.activeDialog(),
+          f"{what}: Undo during an edit, an edit, Cancel: the document as before the edit "
+          f"({state()} vs {before})")
+    check(closed and undone == before,
+          f"{what}: Undo during an edit closes the panel, the document as before the edit "
+          f"({undone})")
+    check(held, f"{what}: the edit after the Undo is in a transaction (Cancel reverts it)")
+
+
 # ------------------------------------------------------------------ the demo
 
 def demo_document():
@@ -329,6 +377,7 @@ def blend_panel(doc, S):
     doc.recompute()
     check(not b.Status.startswith("error") and abs(b.Shape.Length - 70.0) < 1e-2,
           "blend re-solves when its edge moves")
+    undo_during_edit(doc, b, "length", "Length", "71", "72", "blend")
     # a new blend cancelled: gone
     sk2 = S.two_lines_sketch(doc, "Lines2", App.Placement(App.Vector(0, 0, -30), App.Rotation()))
     doc.recompute()
@@ -691,6 +740,7 @@ def fit_panel_ends(doc, f, lines, k0):
     after = (f.Model, f.SplitAtInflection, f.PinEnd, f.StartTangent, round(f.Rms, 12),
              round(f.Shape.Length, 9))
     check(after == before and panel.tangent_buttons, f"fit Cancel reverts ({after} vs {before})")
+    undo_during_edit(doc, f, "tol", "Tolerance", "0.1", "1", "fit")
 
 
 def fit_panel_sparse(doc, S):

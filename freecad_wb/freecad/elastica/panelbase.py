@@ -125,10 +125,23 @@ class DecadeBox(NumberBox):
 class _Watch:
     """A document observer that closes a panel whose feature leaves its document (Undo
     of the command that made it, a deletion in the tree): the panel stayed open on a
-    feature that was gone, and its OK reported success with nothing kept."""
+    feature that was gone, and its OK reported success with nothing kept. And one whose
+    document is undone or redone while it is open (Edit > Undo is active during a task
+    dialog in FreeCAD 0.20, whatever the dialog says): the undo takes the panel's open
+    transaction with it (its edits, or the step before when it had none), so the panel
+    stayed open on values the document no longer had, its later edits outside any
+    transaction, and Cancel could revert none of them. The panel closes then, the
+    document as the undo left it, as FreeCAD's own edits end when their transaction
+    goes."""
 
     def __init__(self, panel):
         self.panel = panel
+
+    def mine(self, doc):
+        try:
+            return doc.Name == self.panel.doc_name
+        except Exception:  # a document half torn down: not ours to judge
+            return False
 
     def slotDeletedObject(self, obj):
         p = self.panel
@@ -136,8 +149,16 @@ class _Watch:
             mine = obj.Document.Name == p.doc_name and obj.Name == p.name
         except Exception:  # an object half torn down: not ours to judge
             mine = False
-        if mine:     # after the deletion has finished
-            QtCore.QTimer.singleShot(0, p.gone_away)
+        if mine:
+            p.lost("undone or deleted")
+
+    def slotUndoDocument(self, doc):
+        if self.mine(doc):
+            self.panel.lost("Undo took its edit back")
+
+    def slotRedoDocument(self, doc):
+        if self.mine(doc):
+            self.panel.lost("Redo replaced its edit")
 
 
 class Panel:
@@ -147,6 +168,7 @@ class Panel:
 
     title = ""
     icon_name = "elastica"
+    gone = ""           # why the panel lost its feature or its transaction (``lost``)
 
     def __init__(self, obj, created=True):
         self.obj = obj
@@ -393,6 +415,8 @@ class Panel:
     # ---------------------------------------------------------------- live update
 
     def set(self, prop, value, target=None):
+        if self.gone:               # closing: no edit outside the panel's transaction
+            return
         target = target if target is not None else self.obj
         if getattr(target, prop) != value:
             setattr(target, prop, value)
@@ -485,15 +509,25 @@ class Panel:
         return code + (f"elastica_geometry.write_to_sketch({doc}.getObject({self.obj.Name!r}), "
                        "_sk)\n")
 
+    def lost(self, why):
+        """The feature left the document, or an undo / redo took the panel's transaction
+        (_Watch): no more edits, and the panel closes once the undo has finished, the
+        document as it left it."""
+        self.timer.stop()
+        if not self.gone:
+            self.gone = why
+            QtCore.QTimer.singleShot(0, self.gone_away)
+
     def gone_away(self):
-        """The feature left the document while the panel was open: the panel closes."""
+        """The panel closes without OK or Cancel (``lost``)."""
+        self.timer.stop()
         if CURRENT and CURRENT[0] is self:
-            self.timer.stop()
-            App.Console.PrintWarning(f"Elastica: {self.name} was undone or deleted; its panel closes\n")
+            App.Console.PrintWarning(f"Elastica: {self.name}: {self.gone or 'undone or deleted'}; "
+                                     "its panel closes\n")
             self._close()
 
     def accept(self):
-        if self.name not in [o.Name for o in self.doc.Objects]:
+        if self.gone or self.name not in [o.Name for o in self.doc.Objects]:
             self.gone_away()
             return True
         self.flush()
@@ -512,6 +546,9 @@ class Panel:
 
     def reject(self):
         self.timer.stop()
+        if self.gone:               # nothing of the panel's left to revert
+            self.gone_away()
+            return True
         name = self.obj.Name
         self.doc.abortTransaction()
         # without undo (UndoMode 0) the abort keeps a fresh feature: remove it
