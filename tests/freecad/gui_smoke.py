@@ -231,6 +231,27 @@ def undo_during_edit(doc, obj, field, prop, first, second, what):
     check(held, f"{what}: the edit after the Undo is in a transaction (Cancel reverts it)")
 
 
+def double_click_during_edit(doc, obj, field, prop, value, what):
+    """A second double-click on the feature whose panel is open (the tree's): the panel
+    stays, with its edit and its transaction, and Cancel reverts them. FreeCAD's setEdit
+    ended the edit first (unsetEdit closed the dialog without OK or Cancel) and a new
+    panel opened: the first one's transaction stayed pending, its observer kept, and
+    Cancel reverted only what came after."""
+    from freecad.elastica import taskpanels as T
+    before = (getattr(getattr(obj, prop), "Value", getattr(obj, prop)), list(doc.UndoNames))
+    panel = double_click(obj)
+    type_into(getattr(panel, field), value)
+    wait()
+    again = double_click(obj)
+    check(again is panel and Gui.Control.activeDialog() and doc.HasPendingTransaction,
+          f"{what}: a second double-click keeps the open panel and its transaction")
+    panel.reject()
+    pump()
+    after = (getattr(getattr(obj, prop), "Value", getattr(obj, prop)), list(doc.UndoNames))
+    check(after == before and not T.CURRENT and not doc.HasPendingTransaction,
+          f"{what}: Cancel after a second double-click reverts the edit ({after} vs {before})")
+
+
 # ------------------------------------------------------------------ the demo
 
 def demo_document():
@@ -378,6 +399,7 @@ def blend_panel(doc, S):
     check(not b.Status.startswith("error") and abs(b.Shape.Length - 70.0) < 1e-2,
           "blend re-solves when its edge moves")
     undo_during_edit(doc, b, "length", "Length", "71", "72", "blend")
+    double_click_during_edit(doc, b, "length", "Length", "71", "blend")
     # a new blend cancelled: gone
     sk2 = S.two_lines_sketch(doc, "Lines2", App.Placement(App.Vector(0, 0, -30), App.Rotation()))
     doc.recompute()

@@ -379,7 +379,11 @@ class ViewProvider:
 
     def doubleClicked(self, vobj):
         import FreeCADGui as Gui
-        Gui.ActiveDocument.setEdit(vobj.Object.Name, 0)
+        from .panelbase import CURRENT
+        # its panel already open: it stays (setEdit would end the edit first, closing the
+        # dialog without OK or Cancel, its transaction left pending)
+        if not (CURRENT and getattr(CURRENT[0], "obj", None) is vobj.Object):
+            Gui.ActiveDocument.setEdit(vobj.Object.Name, 0)
         return True
 
     # ---------------------------------------------------------------- state
