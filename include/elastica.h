@@ -1086,7 +1086,17 @@ void el_spline_options_defaults(el_spline_options *opt);
  * alternately, uneven ones mostly in the longest span); two points with
  * natural ends are the straight segment, with both
  * tangents the least-energy Hermite elastica of that tension or length (by length: the
- * chain started from el_hermite_solve's least-energy solution). Two consecutive
+ * chain started from el_hermite_solve's least-energy solution). Ducks near a line
+ * (each within 5 % of the first-to-last chord from it, every chord advancing along it,
+ * tangent ends within 0.05 rad of it, no G2 end) pushed longer: the buckled batten of the
+ * ducks projected onto the line (its first mode, either side), moved to the ducks by
+ * continuation in their positions, or the path from the free batten where that ends at a
+ * lower energy. Tension mode: a solution of the direct Newton longer than 1.5 x the
+ * ducks' polygon (it winds away from them: loops) is replaced by the free batten pulled
+ * to that tension, or the batten brought down from sigma h^2 = 40, where that converges
+ * shorter. Without a free batten (a closed ring of ducks; a zigzag that slides off)
+ * length mode follows the length from the batten under sigma h^2 = 40, 4 or 0.4 (the
+ * first that converges). Two consecutive
  * points that coincide are EL_EINVAL (the batten cannot pass a duck twice in no
  * length); a closed curve needs 3 distinct points.
  * Accuracy: the residual (see tol) reaches ~1e-14 for moderate tensions. Two
