@@ -150,6 +150,10 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
     can meet, so its end span holds a guide duck, at half its chord (a third and
     two thirds when both ends of two points are G2), free to move along the
     chord's normal (``guides``, ``guide_forces``); the tension stays common.
+    Of the equilibria the batten that follows its ducks is returned: under tension one
+    pulled from the free batten where the direct solve winds into loops (longer than
+    1.5 x the ducks' polygon); pushed longer through ducks near a line, their line's
+    buckled batten moved onto them (elastica.h, el_spline_solve).
 
     ``initial`` (open curves): the spline to start from instead of the library's own
     start, n - 1 SmoothElastica through the points with these ends (G2 ends only
