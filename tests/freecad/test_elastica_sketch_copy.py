@@ -61,6 +61,24 @@ class CopyIntoSketchTest(unittest.TestCase):
         self.assertLess(S.distance_to_shape(pts, self.fit.Shape), 1e-7)
         self.assertAlmostEqual(e.Length, self.fit.Shape.Length, delta=1e-7)
 
+    def test_a_sketch_another_feature_reads_whole_is_refused_untouched(self):
+        """Two stations of points, each fitted: Copy into the other station's sketch made
+        that fit fail ('holds 20 points and 1 edge', QA); the sketch is now refused, its
+        fit unchanged."""
+        xy = [(x, 30 + 10 * math.sin(x / 30.0)) for x in range(0, 100, 10)]
+        station = S.points_sketch(self.doc, xy)
+        other = Fi.make(self.doc, [(station, [])], Model="smooth")
+        self.doc.recompute()
+        rms = other.Rms
+        with self.assertRaises(InputProblem) as cm:
+            G.write_to_sketch(self.fit, station)
+        self.assertIn(f"{station.Label} is read whole by {other.Label}", str(cm.exception))
+        self.assertEqual(len(station.Shape.Edges), 0)
+        station.touch()
+        self.doc.recompute()
+        self.assertFalse(other.Status.startswith("error"), other.Status)
+        self.assertEqual(other.Rms, rms)
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -186,9 +186,32 @@ def sketch_geo_of_edge(sketch, edge_name):
     return None
 
 
+def read_whole_by(sketch):
+    """The Elastica features that read ``sketch`` whole (a link without sub-elements):
+    an edge copied into it changes what they read (a fit of its points refuses points
+    with edges)."""
+    users = []
+    for user in sketch.InList:
+        if not getattr(getattr(user, "Proxy", None), "kind", ""):
+            continue
+        for prop in ("Source", "Points"):
+            links = getattr(user, prop, None)
+            if isinstance(links, list) and any(o is sketch and not any(subs) for o, subs in links):
+                users.append(user)
+                break
+    return users
+
+
 def sketch_curves(feature, sketch):
     """The feature's B-spline curve(s) in ``sketch``'s coordinates. InputProblem when they
-    do not lie in its plane: the sketch would keep only their shadow on it, flattened."""
+    do not lie in its plane (the sketch would keep only their shadow on it, flattened) or
+    when another Elastica feature reads the sketch whole (the copy would change its input:
+    a fit of the sketch's points stopped with 'points and an edge')."""
+    readers = [u.Label for u in read_whole_by(sketch) if u is not feature]
+    if readers:
+        raise InputProblem(f"{sketch.Label} is read whole by {', '.join(readers)}: a curve "
+                           "copied into it would change what they read; copy it into another "
+                           "sketch, or a new one")
     inv = sketch.getGlobalPlacement().inverse()
     curves = []
     for e in feature.Shape.Edges:
