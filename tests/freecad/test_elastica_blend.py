@@ -70,6 +70,21 @@ class BlendTest(unittest.TestCase):
         self.assertEqual(len(b.Lengths), len(b.Energies))
         self._check_g1(b)
 
+    def test_lines_in_line_to_freecads_confusion_get_the_straight_blend(self):
+        """Two lines 100 mm apart, the second 1e-7 mm off the first's axis (FreeCAD's
+        Confusion), tension 1e-3/mm^2: the straight blend first (a 277 mm loop was, the
+        near-straight curve missed, QA)."""
+        for off in (1e-9, 1e-7, 1e-6):
+            sk = self.doc.addObject("Sketcher::SketchObject", "InLine")
+            sk.Placement = S.SKETCH_PLACEMENT
+            sk.addGeometry(Part.LineSegment(App.Vector(-50, 0, 0), App.Vector(0, 0, 0)), False)
+            sk.addGeometry(Part.LineSegment(App.Vector(100, off, 0), App.Vector(150, off, 0)), False)
+            self.doc.recompute()
+            b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Mode="tension", Tension=1e-3)
+            self.doc.recompute()
+            self.assertFalse(b.Status.startswith("error"), b.Status)
+            self.assertAlmostEqual(b.Shape.Length, 100.0, delta=1e-6)
+
     def test_blend_by_length_has_that_length(self):
         b = Bl.make(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"), Mode="length", Length=60.0)
         self.doc.recompute()

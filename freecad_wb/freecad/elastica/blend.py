@@ -92,23 +92,27 @@ def blend_core(e0, at_end0, e1, at_end1, plane=None, mode="tension", value=0.0):
         a0, a1 = loc[0], loc[2]
         t0, t1 = (loc[1] - a0) / dist, (a1 - loc[3]) / dist
         e = el()
+        # to FreeCAD's Confusion (1e-7 mm), as its own geometry: edges in line to within it
+        # are in line, joined by the straight segment (lines 1e-7 mm off each other's axis
+        # 100 mm apart gave a 277 mm loop first: the near-straight curve was missed, QA)
+        tol = max(1e-10, 1e-7 / dist)
         if mode == "tension":
             if value * dist * dist > e.HERMITE_SIGMA_D2_MAX:
                 raise InputProblem(f"Tension = {value:g}/mm^2 is too high for ends {dist:.6g} mm "
                                    f"apart: the solver covers tension times distance^2 up to "
                                    f"{e.HERMITE_SIGMA_D2_MAX:g}, here a tension of at most "
                                    f"{e.HERMITE_SIGMA_D2_MAX / dist ** 2:.4g}/mm^2")
-            sols = e.hermite(a0, t0, a1, t1, tension=value)
+            sols = e.hermite(a0, t0, a1, t1, tension=value, tol=tol)
         else:
             if value == 0.0:                      # the free batten's own length
-                free = e.hermite(a0, t0, a1, t1, tension=0.0)
+                free = e.hermite(a0, t0, a1, t1, tension=0.0, tol=tol)
                 if not free:
                     raise InputProblem("no free batten joins these ends: give a length")
                 value = float(free[0].length)
             if value <= dist:
                 raise InputProblem(f"length {value:.6g} mm is not longer than the {dist:.6g} mm "
                                    f"between the ends: any length above {dist:.6g} mm is possible")
-            sols = e.hermite(a0, t0, a1, t1, length=value)
+            sols = e.hermite(a0, t0, a1, t1, length=value, tol=tol)
     except InputProblem:
         raise
     except (ValueError, ArithmeticError, RuntimeError) as exc:
