@@ -1107,6 +1107,16 @@ class FitPointOrderTest(unittest.TestCase):
         self.assertLess(f.Rms, 1e-5)
         self.assertLess(f.MaxError, 1e-5)
 
+    def test_a_curl_with_a_point_added_last_follows_the_curl(self):
+        """A 270 deg curl sketched in order but for one point added afterwards (QA: a
+        curve 338 mm long for 188 mm of curl, rms 0.13, status converged): the points'
+        nearest-neighbour chain."""
+        th = [1.5 * math.pi * i / 19 for i in range(20)]
+        xy = [(40 * math.cos(t), 40 * math.sin(t)) for t in th]
+        f = self._fit(xy[:9] + xy[10:] + [xy[9]])
+        self.assertLess(f.Rms, 1e-5)
+        self.assertAlmostEqual(f.Shape.Length, 40 * 1.5 * math.pi, delta=1e-3)
+
     def test_points_made_out_of_order_run_along_their_axis(self):
         import numpy as np
         xy, _ = S.keyline_xy(30)
