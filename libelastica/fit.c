@@ -29,7 +29,11 @@
 
 /* SKETCH_POINTS: fewer points are a sketch's (bench_fit_sparse.py draws 6-59), whose noise
  * figure holds their curve's bending too (ob.f_direct) */
-enum { MAXCAND = 6, FEET_ROUNDS = 4, SAMPLED_ROUNDS = 5, SKETCH_POINTS = 60, G1_STARTS = 2 };
+enum { MAXCAND = 6, FEET_ROUNDS = 4, SAMPLED_ROUNDS = 5, SKETCH_POINTS = 60, G1_STARTS = 3 };
+/* a G1 family member is fitted where its own objective is below this multiple of the kept
+ * fit's: its fit comes lower (16 sketched points between nearly collinear lines: a member
+ * at 1.12 x a guess's looping fit reached 0.86 x it, following the points, QA) */
+static const double MEMBER_GAIN = 4.0;
 /* a sketch's free fit with rows is a start where its objective is below this share of the
  * constrained fits' best (its rms below half theirs: constraints that cost that much are
  * not the data's own, or the guesses missed their basin) */
@@ -587,7 +591,8 @@ candidates:
         memcpy(kept_feet, ob.s, sizeof(double) * n);
         kept_last = last_is_best;
         int nf = G1_STARTS;
-        const int gst = el__fit_g1_family_start(&ob, &con, noise_rms, best_meets ? best.f : HUGE_VAL, cand, &nf);
+        const int gst = el__fit_g1_family_start(&ob, &con, noise_rms, best_meets ? MEMBER_GAIN * best.f : HUGE_VAL,
+                                                cand, &nf);
         if (gst == EL_ENOMEM) { st = gst; goto done; }
         nfamily = gst ? 0 : (size_t)nf;
         if (nfamily > 0) {

@@ -28,12 +28,6 @@ enum { MAX_SOLUTIONS = 16 };
 
 typedef struct { double f, len, k0, k1; int follows; } member;
 
-/* a before b: one that follows its points, then the lower f */
-static int before(const member *a, const member *b)
-{
-    return a->follows != b->follows ? a->follows > b->follows : a->f < b->f;
-}
-
 /* Members alike enough to be taken for one family: lengths within 25 %, end curvatures
  * (times |p1 - p0|) within a half of their size. Not tuned: one family's members a grid
  * step apart can differ more (a length 19.4 -> 11.1 from sigma |p1 - p0|^2 = 0.1 to 0.32
@@ -55,16 +49,17 @@ int el__fit_g1_family_start(fit_objective *ob, const fit_constraints *con, doubl
     const double t0[2] = {cos(con->start_theta), sin(con->start_theta)};
     const double t1[2] = {cos(con->end_theta), sin(con->end_theta)};
     const double d2 = (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]), dn = sqrt(d2);
-    double *buf = malloc(sizeof(double) * 3 * n);
+    enum { MAX_MEMBERS = (int)(sizeof SIGMA_D2 / sizeof SIGMA_D2[0]) * MAX_SOLUTIONS };
+    double *buf = malloc(sizeof(double) * 3 * n), (*mv)[FIT_NP] = malloc(sizeof *mv * MAX_MEMBERS);
     el_hermite_solution *sol = malloc(sizeof *sol * MAX_SOLUTIONS);
-    member *kept = malloc(sizeof *kept * (size_t)(kmax > 0 ? kmax : 1));
+    member *all = malloc(sizeof *all * MAX_MEMBERS);
     *count = 0;
-    if (!buf || !sol || !kept) { free(buf); free(sol); free(kept); return EL_ENOMEM; }
+    if (!buf || !mv || !sol || !all) { free(buf); free(mv); free(sol); free(all); return EL_ENOMEM; }
     double *d = buf, *fs = buf + n, *fs_in = buf + 2 * n;
     el_hermite_options ho;
     el_hermite_options_defaults(&ho);
     ho.max_solutions = MAX_SOLUTIONS;
-    int st = EL_OK, nk = 0;
+    int st = EL_OK, nm = 0;
     for (size_t g = 0; g < sizeof SIGMA_D2 / sizeof SIGMA_D2[0] && st != EL_ENOMEM; g++) {
         ho.sigma = SIGMA_D2[g] / d2;
         size_t ns = 0, unrep = 0;
@@ -91,34 +86,36 @@ int el__fit_g1_family_start(fit_objective *ob, const fit_constraints *con, doubl
             const double stray = el__fit_stray(ob->xy, n, fs_in, vv[0][6] * ob->sc, noise * ob->sc, ob->sc);
             if (stray < 0.0) { st = EL_ENOMEM; break; }
             m.follows = stray <= FIT_STRAY;
-            /* its family's member kept so far: replaced when m goes before it; a new
-             * family in a free place, else in the last place when m goes before that */
-            int at = 0;
-            while (at < nk && !alike(&kept[at], &m)) at++;
-            if (at == nk && nk < kmax) {
-                nk++;
-            } else {
-                if (at == nk) at = nk - 1;
-                if (!before(&m, &kept[at])) continue;
-            }
-            kept[at] = m;
-            memcpy(v[at], vv[0], sizeof v[at]);
-            for (; at > 0 && before(&kept[at], &kept[at - 1]); at--) {   /* to its place */
-                const member tm = kept[at];
-                kept[at] = kept[at - 1];
-                kept[at - 1] = tm;
-                double tv[FIT_NP];
-                memcpy(tv, v[at], sizeof tv);
-                memcpy(v[at], v[at - 1], sizeof tv);
-                memcpy(v[at - 1], tv, sizeof tv);
-            }
+            all[nm] = m;
+            memcpy(mv[nm++], vv[0], sizeof mv[0]);
         }
     }
+    /* the lowest objectives of other families (kmax - 1 of them), then the lowest of
+     * another family that follows the points, then the lowest again while there is room:
+     * a true curve that loops in a gap between clustered points has the lowest; between
+     * nearly collinear ends the near-straight member follows them, the lowest loop away */
+    int chosen[MAX_MEMBERS], nk = 0;
+    for (int pass = 0; pass < 3 && st != EL_ENOMEM; pass++) {
+        const int want = pass == 0 && kmax > 1 ? kmax - 1 : kmax;
+        while (nk < want) {
+            int pick = -1;
+            for (int i = 0; i < nm; i++) {
+                int taken = pass == 1 && !all[i].follows;
+                for (int j = 0; j < nk && !taken; j++) taken = chosen[j] == i || alike(&all[i], &all[chosen[j]]);
+                if (!taken && (pick < 0 || all[i].f < all[pick].f)) pick = i;
+            }
+            if (pick < 0) break;
+            chosen[nk++] = pick;
+            if (pass == 1) break;   /* one that follows */
+        }
+    }
+    for (int j = 0; j < nk; j++) memcpy(v[j], mv[chosen[j]], sizeof v[j]);
     *count = nk;
     ob->rest_ok = 0;
     ob->have_base = 0;
     free(buf);
+    free(mv);
     free(sol);
-    free(kept);
+    free(all);
     return st == EL_ENOMEM ? st : nk > 0 ? EL_OK : EL_EDOM;
 }
