@@ -33,6 +33,35 @@ class G2QuadTest(unittest.TestCase):
     def tearDown(self):
         App.closeDocument(self.doc.Name)
 
+    def test_where_the_pieces_meet_is_reported_as_measured(self):
+        """The pieces meet at the inflection: JoinAngle and JoinCurvatureJump are the
+        angle between their tangents and the jump of their signed curvature there, measured
+        here on the shape's edges by finite differences of positions (the panel said 'G2'
+        where the curvature went -0.0019 -> +0.0019/mm, QA)."""
+        import math
+        q = Q.make(self.doc, [(self.sk, ["Edge1"])], Edges=24)
+        self.doc.recompute()
+        es = q.Shape.Edges
+        self.assertEqual(q.Pieces, 2)
+        self.assertEqual(len(es), 2)
+        up = q.Plane.Rotation.multVec(App.Vector(0, 0, 1))
+
+        def turning(e, at_end):
+            """Signed curvature at an end from three points 1e-4 of the edge apart."""
+            a, b = (e.LastParameter, e.FirstParameter) if at_end else (e.FirstParameter, e.LastParameter)
+            h = (b - a) * 1e-4
+            p0, p1, p2 = (e.valueAt(a + i * h) for i in range(3))
+            u, v = p1 - p0, p2 - p1
+            k = math.copysign(u.getAngle(v), u.cross(v).dot(up)) / u.Length
+            return -k if at_end else k      # walked backwards from an end: the other sign
+
+        a, b = es
+        ta, tb = a.tangentAt(a.LastParameter), b.tangentAt(b.FirstParameter)
+        self.assertAlmostEqual(q.JoinAngle, math.degrees(ta.getAngle(tb)), delta=1e-6)
+        jump = abs(turning(a, True) - turning(b, False))
+        self.assertAlmostEqual(q.JoinCurvatureJump, jump, delta=0.02 * jump + 1e-9)
+        self.assertGreater(q.JoinCurvatureJump, 1e3 * q.CurvatureJump / q.Shape.Length)
+
     def test_pieces_are_g2_and_end_exactly_on_the_source(self):
         import libelastica as el
         import numpy as np

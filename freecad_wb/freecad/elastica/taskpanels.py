@@ -487,8 +487,10 @@ class G2QuadPanel(Panel):
         o = self.obj
         return (f"{o.Pieces} piece{'s' if o.Pieces != 1 else ''} (split at inflections), "
                 f"{o.Poles} poles, degree 2<br>distance from the source: {_fmt(o.Deviation)}<br>"
-                f"curvature jump at joints: {o.CurvatureJump:.1g} (G2)<br>end tangents off by "
-                f"{o.EndTangentError:.2g}\u00b0<br>{o.Status}")
+                f"curvature jump at joints inside the pieces: {o.CurvatureJump:.1g} (G2)<br>"
+                + (f"where the pieces meet: tangents {o.JoinAngle:.2g}\u00b0 apart, curvature "
+                   f"jump {o.JoinCurvatureJump:.2g}/mm (not G2 there)<br>" if o.Pieces > 1 else "")
+                + f"end tangents off by {o.EndTangentError:.2g}\u00b0<br>{o.Status}")
 
 
 class CombPanel(Panel):
