@@ -400,17 +400,17 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
     }
     /* joined G1 at both ends (smooth, by distance, nothing else held or bounded): after the
      * guesses, the members of the Hermite families of those ends nearest the points
-     * (fit_g1_family.c, up to G1_STARTS, one per family) whose objective is below the fit
-     * kept (any, where that does not meet the constraints), each fitted by Ipopt straight
-     * from its own feet (the guesses' path, Levenberg-Marquardt first, where that run does
-     * not meet them): a second pass of the loop below. Measured on 300 sketches of 5-22
-     * points clustered along 10-40 % of a curve (0-0.5 % noise, 0-2 points elsewhere, its
-     * ends and tangents): fits above 1.01 x their true curve's rms 19 -> 4 (at up to 28 x
-     * before), none worse by 1 %, one EL_EDOM fitted; median CPU 10.7 -> 13.2 ms;
-     * bench_fit_sparse.py's G1-G1 sets 1 -> 0 above their true curve, median 4.4 -> 7.6 ms
-     * (the scan's 19 tension solves and their members' distances). Fitted among the guesses
-     * instead, the members cost 2-4 x the median and their fits ended in other basins
-     * where a guess's reached the true curve's */
+     * (fit_g1_family.c, up to G1_STARTS: of other families, and one that follows them) whose
+     * objective is below MEMBER_GAIN x the kept fit's (any, where that does not meet the
+     * constraints), each fitted by Ipopt straight from its own feet (the guesses' path,
+     * Levenberg-Marquardt first, where that run does not meet them): a second pass of the loop
+     * below. Measured on 300 sketches of 5-22 points clustered along 10-40 % of a curve (0-0.5 %
+     * noise, 0-2 points elsewhere, its ends and tangents): fits above 1.01 x their true curve's
+     * rms 19 -> 1 (at up to 28 x before), none worse by 1 %, one EL_EDOM fitted; median CPU 10.7
+     * -> 14.7 ms; bench_fit_sparse.py's G1-G1 sets 1 -> 0 above their true curve, median 4.4 ->
+     * 9.5 ms (the scan's 19 tension solves, their members' distances, up to 3 Ipopt runs). Fitted
+     * among the guesses instead, the members cost 2-4 x the median and their fits ended in other
+     * basins where a guess's reached the true curve's */
     int g1_only = model == FIT_SMOOTH && kind == FIT_ORTHOGONAL && ob.rest && !o.use_initial && !lm_only &&
                   !(flags & FIT_RUN_INNER) && o.constraints == (both | EL_CONSTRAIN_START_TANGENT | EL_CONSTRAIN_END_TANGENT);
     for (int j = 0; j < FIT_NP && g1_only; j++)

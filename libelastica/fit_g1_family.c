@@ -4,9 +4,9 @@
  * and those form one-parameter families, each met by el_hermite_solve at the tensions
  * sigma along it. A scan of sigma over its range (SIGMA_D2, times 1 / |p1 - p0|^2) meets
  * every family; the members nearest the points (the sum of their squared distances, feet
- * as the fit's: el__fit_feet_elsewhere), those that follow them (el__fit_stray) first,
- * are the fit's first starts, one per family (members alike in length and end curvatures
- * are taken for one family: the nearer kept). Written because the fit's guesses are fitted
+ * as the fit's: el__fit_feet_elsewhere) of other families, and the nearest that follows
+ * them (el__fit_stray), are the fit's further starts (members alike in length and end
+ * curvatures are taken for one family). Written because the fit's guesses are fitted
  * to the points first and then moved onto the constraints, which can lead far from every
  * good member when the points are clustered: 6 points, 5 within the first fifth of a
  * 130 mm curve with 0.02 mm noise and its far end, ended at rms 3.0 where the curve they

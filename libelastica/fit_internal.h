@@ -445,9 +445,10 @@ int el__fit_natural_fit(fit_objective *ob, double noise, double *v, int *certifi
  * state chart, the start tangent held; con: the normalised end points and tangents): the
  * el_hermite_solve solutions of those ends nearest the points over a scan of the tension
  * whose objective is below f_below (the fit's, |r|^2 / 2n): at most *count (in: > 0; out:
- * how many), one per family, those that follow them (el__fit_stray) first, then by their
- * objective (normalised parameters v[j]; noise: el__fit_noise_rms, normalised). EL_EDOM:
- * none, EL_ENOMEM. ob's feet are left at the last member's. */
+ * how many), the lowest objectives of other families (*count - 1) and the lowest that
+ * follows the points (el__fit_stray), then the lowest again while there is room
+ * (normalised parameters v[j]; noise: el__fit_noise_rms, normalised). EL_EDOM: none,
+ * EL_ENOMEM. ob's feet are left at the last member's. */
 int el__fit_g1_family_start(fit_objective *ob, const fit_constraints *con, double noise, double f_below,
                             double (*v)[FIT_NP], int *count);
 /* fit_natural.c: the moduli bounding the natural batten's family: k* (2E = K, the figure

@@ -132,6 +132,10 @@ static const double CLUSTER_S2_107[] = {
 };
 static const el_smooth_params CLUSTER_S2_107_TRUE = {0.0, 0.0, -0.5516186541006594, 27.490035825973678, -0.896560769729103, -1.8511993811422274, 1.0};
 
+/* a sketch's points (n of them) and the curve they were drawn from */
+typedef struct { const double *xy; size_t n; const el_smooth_params *truth; } sketch_set;
+#define SKETCH(a) {a, sizeof a / sizeof a[0] / 2, &a##_TRUE}
+
 /* the fit joined G1 at both ends with the curve t's own end points and tangents, from its
  * own start or (from_truth) from t */
 static void g1_fit_from(const double *xy, size_t n, const el_smooth_params *t, int from_truth,
@@ -209,10 +213,7 @@ END_TEST
  * most that curve's */
 START_TEST(test_fit_g1_sketch_follows_its_points)
 {
-    const struct { const double *xy; size_t n; const el_smooth_params *truth; } sets[] = {
-        {G1_EXACT6, sizeof G1_EXACT6 / sizeof G1_EXACT6[0] / 2, &G1_EXACT6_TRUE},
-        {G1_STRAIGHT7, sizeof G1_STRAIGHT7 / sizeof G1_STRAIGHT7[0] / 2, &G1_STRAIGHT7_TRUE},
-    };
+    const sketch_set sets[] = {SKETCH(G1_EXACT6), SKETCH(G1_STRAIGHT7)};
     for (size_t c = 0; c < sizeof sets / sizeof sets[0]; c++) {
         el_fit_smooth_result r;
         g1_fit_from(sets[c].xy, sets[c].n, sets[c].truth, 0, &r);
@@ -247,12 +248,8 @@ END_TEST
  * exactly on a curve are fitted (EL_EDOM before: no guess's fit met the end tangent) */
 START_TEST(test_fit_g1_clustered_sketches)
 {
-    const struct { const double *xy; size_t n; const el_smooth_params *truth; } sets[] = {
-        {G1_CLUSTER6, sizeof G1_CLUSTER6 / sizeof G1_CLUSTER6[0] / 2, &G1_CLUSTER6_TRUE},
-        {CLUSTER_S1_64, sizeof CLUSTER_S1_64 / sizeof CLUSTER_S1_64[0] / 2, &CLUSTER_S1_64_TRUE},
-        {CLUSTER_S2_104, sizeof CLUSTER_S2_104 / sizeof CLUSTER_S2_104[0] / 2, &CLUSTER_S2_104_TRUE},
-        {CLUSTER_S2_113, sizeof CLUSTER_S2_113 / sizeof CLUSTER_S2_113[0] / 2, &CLUSTER_S2_113_TRUE},
-    };
+    const sketch_set sets[] = {SKETCH(G1_CLUSTER6), SKETCH(CLUSTER_S1_64), SKETCH(CLUSTER_S2_104),
+                               SKETCH(CLUSTER_S2_113)};
     for (size_t c = 0; c < sizeof sets / sizeof sets[0]; c++) {
         el_fit_smooth_result r;
         g1_fit_from(sets[c].xy, sets[c].n, sets[c].truth, 0, &r);
