@@ -68,15 +68,8 @@ int el__fit_g1_family_start(fit_objective *ob, const fit_constraints *con, doubl
         for (size_t c = 0; c < ns && c < MAX_SOLUTIONS; c++) {
             if (sol[c].npieces != 1) continue;   /* a chain (near the separatrix): no one curve */
             const el_smooth_params *p = &sol[c].curve;
-            double w[FIT_NP] = {p->x0, p->y0, p->phi, sqrt(p->mu), p->k, p->q, p->length}, x[FIT_MAXX],
-                   vv[2][FIT_NP];
-            el__fit_map_inverse(&ob->map, w, x);
-            if (el__fit_map_eval(&ob->map, x, vv, NULL)) continue;
-            for (size_t i = 0; i < n; i++) ob->s[i] = ob->t[i] * vv[0][6];
-            ob->have_base = 0;
-            ob->rest_ok = 0;
-            size_t moved;
-            const int fst = el__fit_feet_elsewhere(ob, x, vv, d, fs, &moved);
+            double vv[2][FIT_NP] = {{p->x0, p->y0, p->phi, sqrt(p->mu), p->k, p->q, p->length}}, x[FIT_MAXX];
+            const int fst = el__fit_curve_feet(ob, vv, x, d, fs);
             if (fst == EL_ENOMEM) { st = fst; break; }
             if (fst) continue;
             member m = {0.0, p->length / dn, sol[c].kappa0 * dn, sol[c].kappa1 * dn, 0};

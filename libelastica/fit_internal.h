@@ -308,6 +308,11 @@ int el__fit_feet_order(const double *fs, size_t *idx, size_t n);
  * the curve from its samples (*moved of them whose foot in o->s lies on [0, L]). */
 int el__fit_feet_elsewhere(fit_objective *o, const double *x, double v[2][FIT_NP], double *d, double *fs,
                            size_t *moved);
+/* fit_refit.c: the distances d and feet fs of the points to the curve v[0] (normalised
+ * parameters; x: its variables in ob's map, v evaluated again from them), the feet afresh
+ * from the chord fractions, then el__fit_feet_elsewhere's (a member of a family searched
+ * whole: fit_natural.c, fit_g1_family.c); EL_EDOM where v is not in the map. */
+int el__fit_curve_feet(fit_objective *ob, double v[2][FIT_NP], double *x, double *d, double *fs);
 /* fit_refit.c, one smooth curve v: unproven[i] = 1 for the inner points whose feet fs
  * (distances d, Newton's) the proof of el__fit_feet_elsewhere does not show the nearest points
  * (their count *nopen; 0 at the ends), and mark[j] = 1 for the FIT_PIECES pieces of

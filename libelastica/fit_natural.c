@@ -171,13 +171,7 @@ static double member_f(double tau, void *p)
     fm->strays = 1;
     if (fm->err || member(fm, tau, ma->kmax, v[0])) return HUGE_VAL;
     fm->evals++;
-    el__fit_map_inverse(&ob->map, v[0], x);
-    if (el__fit_map_eval(&ob->map, x, v, NULL)) return HUGE_VAL;
-    for (size_t i = 0; i < ob->n; i++) ob->s[i] = ob->t[i] * v[0][6];
-    ob->have_base = 0;
-    ob->rest_ok = 0;
-    size_t moved;
-    const int st = el__fit_feet_elsewhere(ob, x, v, fm->d, fm->fs, &moved);
+    const int st = el__fit_curve_feet(ob, v, x, fm->d, fm->fs);
     if (st == EL_ENOMEM) fm->err = st;
     if (st) return HUGE_VAL;
     double f = 0.0;

@@ -394,6 +394,17 @@ int el__fit_strays_at(fit_objective *ob, const double *x, double noise, double *
     return el__fit_stray(ob->xy, ob->n, fs, L * ob->sc, noise * ob->sc, ob->sc) > FIT_STRAY;
 }
 
+int el__fit_curve_feet(fit_objective *ob, double v[2][FIT_NP], double *x, double *d, double *fs)
+{
+    el__fit_map_inverse(&ob->map, v[0], x);
+    if (el__fit_map_eval(&ob->map, x, v, NULL)) return EL_EDOM;
+    for (size_t i = 0; i < ob->n; i++) ob->s[i] = ob->t[i] * v[0][6];
+    ob->have_base = 0;
+    ob->rest_ok = 0;
+    size_t moved;
+    return el__fit_feet_elsewhere(ob, x, v, d, fs, &moved);
+}
+
 /* the chords of the crossing test: a loop narrower than about L / CROSS_CHORDS is missed */
 enum { CROSS_CHORDS = 256 };
 

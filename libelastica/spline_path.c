@@ -237,18 +237,28 @@ static int follow_length(el__spchain *w, int max_steps, double Lt)
 #define WANDER 1.5
 #define HIGH_SIGMA 40.0
 
-/* From the tension solution at sigma0 (Newton from the chain's start there) along the
- * tension to w->sigma (geometrically in sigma + 1, as from a high tension below); kept when
- * it converges shorter than the solution in w, which w->snap[2] holds meanwhile */
+/* From the tension solution at sigma0 (Newton from the chain's start there, to start_aim,
+ * accepted at start_accept) along the tension to target, geometrically in sigma + 1:
+ * EL_OK, EL_ENOCONV or EL_ENOMEM */
+static int from_sigma(el__spchain *w, int max_steps, double sigma0, double target, double start_aim,
+                      double start_accept, double aim, double accept)
+{
+    w->sigma = sigma0;
+    el__chain_start_angles(w);
+    const int st = el__chain_start_pieces(w);
+    if (st) return st == EL_ENOMEM ? st : EL_ENOCONV;
+    if (el__chain_newton(w, EL__SP_DIRECT_ITER, start_aim, start_accept) != EL_OK) return EL_ENOCONV;
+    const double par[3] = {sigma0, target, 1.0};
+    return continuation(w, w->snap, max_steps, 0.25, set_sigma, par, aim, accept);
+}
+
+/* The batten pulled from sigma0 to w->sigma (from_sigma), kept when it converges shorter
+ * than the solution in w, which w->snap[2] holds meanwhile */
 static void pull_from(el__spchain *w, int max_steps, double aim, double accept, double sigma0)
 {
     const double target = w->sigma, was = total_length(w);
     snap_save(w, &w->snap[2]);
-    w->sigma = sigma0;
-    el__chain_start_angles(w);
-    const double par[3] = {sigma0, target, 1.0};
-    if (el__chain_start_pieces(w) || el__chain_newton(w, EL__SP_DIRECT_ITER, aim, accept) ||
-        continuation(w, w->snap, max_steps, 0.25, set_sigma, par, aim, accept) || !(total_length(w) < was)) {
+    if (from_sigma(w, max_steps, sigma0, target, aim, accept, aim, accept) || !(total_length(w) < was)) {
         snap_load(w, &w->snap[2]);
         el__chain_eval(w, 0);
     }
@@ -291,13 +301,7 @@ int el__spline_solve_tension(el__spchain *w, int max_steps, int final)
         if (final && w->resid <= EL__SP_NEAR) { w->near = 1; return EL_ENOCONV; }
     }
     /* from a high tension on the mean chord (the unit here) */
-    const double hi = HIGH_SIGMA;
-    w->sigma = hi;
-    el__chain_start_angles(w);
-    if ((st = el__chain_start_pieces(w))) return st == EL_ENOMEM ? st : EL_ENOCONV;
-    if (el__chain_newton(w, EL__SP_DIRECT_ITER, 1e-3 * EL__SP_NEAR, EL__SP_NEAR) != EL_OK) return EL_ENOCONV;
-    const double par[3] = {hi, target, 1.0};
-    return continuation(w, w->snap, max_steps, 0.25, set_sigma, par, aim, accept);
+    return from_sigma(w, max_steps, HIGH_SIGMA, target, 1e-3 * EL__SP_NEAR, EL__SP_NEAR, aim, accept);
 }
 
 int el__spline_tension_from(el__spchain *w, int max_steps, double sigma)

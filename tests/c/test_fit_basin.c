@@ -136,14 +136,10 @@ static const el_smooth_params CLUSTER_S2_107_TRUE = {0.0, 0.0, -0.55161865410065
 typedef struct { const double *xy; size_t n; const el_smooth_params *truth; } sketch_set;
 #define SKETCH(a) {a, sizeof a / sizeof a[0] / 2, &a##_TRUE}
 
-/* the fit joined G1 at both ends with the curve t's own end points and tangents, from its
- * own start or (from_truth) from t */
-static void g1_fit_from(const double *xy, size_t n, const el_smooth_params *t, int from_truth,
-                        el_fit_smooth_result *r)
+/* the options of a fit joined G1 at both ends: end points ends[0..1], ends[2..3], tangents
+ * theta[0], theta[1] */
+static el_fit_options g1_options(const double ends[4], const double theta[2])
 {
-    const double s[2] = {0.0, t->length};
-    double ends[4], theta[2];
-    ck_assert_int_eq(el_smooth_eval(t, 2, s, ends, theta, NULL), EL_OK);
     el_fit_options o;
     el_fit_options_defaults(&o);
     o.constraints = EL_CONSTRAIN_START_POINT | EL_CONSTRAIN_END_POINT | EL_CONSTRAIN_START_TANGENT |
@@ -152,6 +148,18 @@ static void g1_fit_from(const double *xy, size_t n, const el_smooth_params *t, i
     memcpy(o.end_point, ends + 2, sizeof o.end_point);
     o.start_tangent = theta[0];
     o.end_tangent = theta[1];
+    return o;
+}
+
+/* the fit joined G1 at both ends with the curve t's own end points and tangents, from its
+ * own start or (from_truth) from t */
+static void g1_fit_from(const double *xy, size_t n, const el_smooth_params *t, int from_truth,
+                        el_fit_smooth_result *r)
+{
+    const double s[2] = {0.0, t->length};
+    double ends[4], theta[2];
+    ck_assert_int_eq(el_smooth_eval(t, 2, s, ends, theta, NULL), EL_OK);
+    el_fit_options o = g1_options(ends, theta);
     o.use_initial = from_truth;
     ck_assert_int_eq(el_fit_smooth(xy, n, &o, from_truth ? t : NULL, r, NULL, NULL), EL_OK);
     ck_assert_int_eq(r->status, EL_OK);
@@ -278,15 +286,9 @@ START_TEST(test_fit_g1_between_nearly_collinear_lines_follows_them)
         25.612644634135858, 3.204001857993407, 24.476083220007276, 4.578810758344524,
         33.82613533701522, 4.47363056957244, 127.49863748004536, 20.50183040266643,
     };
-    el_fit_options o;
-    el_fit_options_defaults(&o);
-    o.constraints = EL_CONSTRAIN_START_POINT | EL_CONSTRAIN_END_POINT | EL_CONSTRAIN_START_TANGENT |
-                    EL_CONSTRAIN_END_TANGENT;
-    o.start_point[0] = o.start_point[1] = 0.0;
-    o.end_point[0] = 128.24970605074512;
-    o.end_point[1] = 20.950505884368585;
-    o.start_tangent = 0.15770762478524028;
-    o.end_tangent = 0.1639527998433821;
+    const double ends[4] = {0.0, 0.0, 128.24970605074512, 20.950505884368585};
+    const double theta[2] = {0.15770762478524028, 0.1639527998433821};
+    el_fit_options o = g1_options(ends, theta);
     el_fit_smooth_result r;
     ck_assert_int_eq(el_fit_smooth(xy, 16, &o, NULL, &r, NULL, NULL), EL_OK);
     const double chord = hypot(o.end_point[0], o.end_point[1]);
