@@ -663,12 +663,9 @@ def fit_panel_ends(doc, f, lines, k0):
     e = f.Shape.Edges[0]
     line = lines.Shape.Edges[0]
     t = App.Vector(e.tangentAt(e.FirstParameter)).normalize()
-    # resampled (step 2 mm): the pinned end is the equilateral polygon's last vertex, which
-    # stops short of the last of the points given (DataPoints)
-    from freecad.elastica import geometry as G
-    poly = S.el.resample_equilateral(G.to_plane(f.Plane, f.DataPoints)[:, :2],
-                                     f.ResampleStep.Value)
-    pinned = f.Plane.multVec(App.Vector(*map(float, poly[-1]), 0))
+    # resampled (step 2 mm): the pinned end is the last of the points given (DataPoints),
+    # which the equilateral polygon stops short of
+    pinned = f.DataPoints[-1]
     check(f.StartTangent and f.StartTangent[0] is lines and panel.tangent_buttons[0].text() ==
           f"{lines.Label}.Edge1" and t.cross(line.tangentAt(0)).Length < 1e-9 and
           (e.valueAt(e.LastParameter) - pinned).Length < 1e-9,

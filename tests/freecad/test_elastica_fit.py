@@ -553,6 +553,26 @@ class FitConstraintTest(unittest.TestCase):
                 self.assertLess((travel_ends(f)[i][0] - point).Length, 1e-9, (model, prop))
                 self.assertGreater((free[i][0] - point).Length, 0.05, (model, prop))
 
+    def test_pinned_ends_are_the_users_points_when_resampled(self):
+        """Pin start / end with a resampling step pin the first and last points made, in
+        either direction: the equilateral polygon starts from the end of smaller x and stops
+        short of the other by up to a step (pinned there: 6 mm off the last point, the
+        start pinned at the last point for points made right to left, rms 1.12 where the
+        points' arc fits to 0.004)."""
+        arc = [(100 * math.sin(0.9 * i / 40), 100 * (1 - math.cos(0.9 * i / 40))) for i in range(41)]
+        for xy in (arc, arc[::-1]):
+            sk = S.points_sketch(self.doc, xy, "Arc")
+            first, last = (S.SKETCH_PLACEMENT.multVec(App.Vector(*p, 0)) for p in (xy[0], xy[-1]))
+            for model in ("smooth", "discrete"):
+                f = Fi.make(self.doc, [(sk, [])], Model=model, PinStart=True, PinEnd=True,
+                            ResampleStep=7.0, Tolerance=1e-6)
+                self.doc.recompute()
+                self.assertIn("converged", f.Status)
+                (start, _, _), (end, _, _) = travel_ends(f)
+                self.assertLess((start - first).Length, 1e-9, model)
+                self.assertLess((end - last).Length, 1e-9, model)
+                self.assertLess(f.Rms, 0.02, model)
+
     def test_end_tangents_from_picked_edges_on_the_shape(self):
         for model in ("smooth", "discrete"):
             for prop, i, edge in (("StartTangent", 0, "Edge1"), ("EndTangent", 1, "Edge2")):
@@ -1116,6 +1136,33 @@ class FitPointOrderTest(unittest.TestCase):
         f = self._fit(xy[:9] + xy[10:] + [xy[9]])
         self.assertLess(f.Rms, 1e-5)
         self.assertAlmostEqual(f.Shape.Length, 40 * 1.5 * math.pi, delta=1e-3)
+
+    def test_a_large_scan_is_ordered_in_bounded_memory(self):
+        """A Points object of 20 000 scanned points stored in random order: its nearest-
+        neighbour chain would take 20 000^2 distances at once (a MemoryError naming 2.98
+        GiB under an 8 GB limit, 6 GiB allocated without); ordered along its axis it fits
+        to its noise."""
+        import tracemalloc
+
+        import numpy as np
+        import Points
+        rng = np.random.default_rng(1)
+        m = 20000
+        t = np.sort(rng.uniform(0, 1, m))
+        xy = np.column_stack([200 * t, 30 * np.sin(3 * t) + rng.normal(0, 0.05, m)])
+        cloud = self.doc.addObject("Points::Feature", "Scan")
+        cloud.Points = Points.Points([App.Vector(*map(float, p), 0) for p in xy[rng.permutation(m)]])
+        self.doc.recompute()
+        tracemalloc.start()
+        try:
+            f = Fi.make(self.doc, [(cloud, [])], Model="smooth")
+            self.doc.recompute()
+            peak = tracemalloc.get_traced_memory()[1]
+        finally:
+            tracemalloc.stop()
+        self.assertFalse(f.Status.startswith("error"), f.Status)
+        self.assertLess(peak, 100e6)
+        self.assertLess(f.Rms, 0.06)
 
     def test_points_made_out_of_order_run_along_their_axis(self):
         import numpy as np

@@ -267,6 +267,20 @@ class SplineTest(unittest.TestCase):
         self.assertAlmostEqual(self.spline([(dw, [])]).Energy, ref.Energy,
                                delta=1e-9 * ref.Energy)
 
+    def test_a_scan_of_a_curl_runs_along_the_curl(self):
+        """A Points object of ducks along 270 deg of a circle, stored out of order: along
+        their principal axis they zigzag across the curl (no free batten passes them so); in
+        curve order (as a fit takes them) the spline is the one through them in order."""
+        th = [1.5 * math.pi * i / 11 for i in range(12)]
+        xy = [(40 * math.cos(t), 40 * math.sin(t)) for t in th]
+        ref = self.spline([(S.polyline_3d(self.doc, xy, name="Curl"), [])])
+        s = self.spline([(S.points_object(self.doc, xy, name="Scan"), [])])
+        self.assertAlmostEqual(s.Shape.Length, ref.Shape.Length, delta=1e-5 * ref.Shape.Length)
+        self.assertAlmostEqual(s.Energy, ref.Energy, delta=1e-5 * ref.Energy)
+        ducks = self.global_ducks(xy)
+        self.assertLess(min(max((a - b).Length for a, b in zip(s.Ducks, way))
+                            for way in (ducks, ducks[::-1])), 1e-4)
+
     def test_two_points_and_collinear_points_give_the_straight_batten(self):
         s = self.spline([(S.points_sketch(self.doc, [(0, 0), (50, 20)], "Two"), [])])
         self.assertAlmostEqual(s.SplineLength, math.hypot(50, 20), delta=1e-9)

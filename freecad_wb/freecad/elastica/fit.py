@@ -14,11 +14,11 @@ import FreeCAD as App
 import Part
 
 from . import defaults
-from .geometry import (chain_bspline, el, link_edge, np, part_bspline,
+from .geometry import (chain_bspline, el, link_edge, np, part_bspline, polyline_length,
                        plane_coordinates, plane_curvature, to_3d, to_plane)
 from .proxy import (FeatureProxy, InputProblem, add_enum, add_length, add_property,
                     check_degree, check_number, check_tolerance, new_feature, read_only)
-from .sources import gather_points
+from .sources import curve_order, gather_points
 
 MIN_POINTS = 6          # fewer points cannot determine the 7 (5 shape) parameters of a fit
 MODELS = ["discrete", "smooth"]
@@ -271,36 +271,8 @@ def _foot_parameters(results, split):
         return results[0].foot_s
     n = np()
     first, second = results
-    joint = _polyline_length(first.curve.points())
+    joint = polyline_length(first.curve.points())
     return n.concatenate([joint - first.foot_s[::-1], joint + second.foot_s[1:]])
-
-
-def _chain_order(xy):
-    """The points' nearest-neighbour chain: from the closest pair, the nearest point not yet
-    in it joined at whichever end it is nearer, until all are in (O(n^2))."""
-    n = np()
-    m = len(xy)
-    if m < 3:
-        return n.arange(m)
-    d = n.hypot(*(xy[:, None, :] - xy[None, :, :]).transpose(2, 0, 1))
-    n.fill_diagonal(d, n.inf)
-    a, b = n.unravel_index(n.argmin(d), d.shape)
-    chain, free = [int(a), int(b)], n.ones(m, dtype=bool)
-    free[[a, b]] = False
-    while free.any():
-        head, tail = d[chain[0]], d[chain[-1]]
-        i, j = int(n.argmin(n.where(free, head, n.inf))), int(n.argmin(n.where(free, tail, n.inf)))
-        if head[i] < tail[j]:
-            chain.insert(0, i)
-            free[i] = False
-        else:
-            chain.append(j)
-            free[j] = False
-    return n.array(chain)
-
-
-def _polyline_length(xy):
-    return float(np().sum(np().hypot(*np().diff(xy, axis=0).T)))
 
 
 def _step_advice(length):
@@ -320,20 +292,22 @@ def _check_reach(xy, step, starts):
     if step > reach:
         raise InputProblem(f"Resample = {step:g} mm is longer than the points reach (all within "
                            f"{reach:.4g} mm of the end the polygon starts from): "
-                           + _step_advice(_polyline_length(xy)))
+                           + _step_advice(polyline_length(xy)))
 
 
 def _resampled(xy, step):
     """The points xy resampled into an equilateral polygon of segment step
     (el.resample_equilateral), at least MIN_POINTS vertices of it."""
     _check_reach(xy, step, [-1 if xy[-1, 0] < xy[0, 0] else 0])
-    most, length = el().RESAMPLE_MAX_VERTICES, _polyline_length(xy)
+    most, length = el().RESAMPLE_MAX_VERTICES, polyline_length(xy)
     if length / step > most - 1:
         raise InputProblem(f"Resample = {step:g} mm would cut the points' {length:.4g} mm "
                            f"polyline into {length / step:.3g} segments, more than {most - 1}: use "
                            f"a step of at least {length / (most - 1):.4g} mm, or 0 to fit the "
                            "points as they are")
     out = el().resample_equilateral(xy, step)
+    if xy[-1, 0] < xy[0, 0]:
+        out = out[::-1].copy()       # it starts from the end of smaller x: the user's order
     if len(out) < MIN_POINTS:
         # the vertices are step apart along the way, so few of them from a step short enough
         # for MIN_POINTS mean the walk jumped ahead: the points double back or pass close to
@@ -344,6 +318,11 @@ def _resampled(xy, step):
         raise InputProblem(f"Resample = {step:g} mm leaves {len(out)} points; a fit needs "
                            f"{MIN_POINTS}: {why}")
     return out
+
+
+def _apart(p, q):
+    """Whether points p and q differ by more than a rounding of their size."""
+    return float(np().hypot(*(p - q))) > 1e-12 * (1.0 + float(np().abs(q).max()))
 
 
 def _keyline(xy, model, step):
@@ -528,14 +507,7 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         # the user's points in the fit's frame: plane coordinates and distance from the plane
         user = n.column_stack([xy, to_plane(plane, points)[:, 2]])
         if not ordered:
-            # the shortest polyline of: along the principal axis, the points as stored (a
-            # sketch's in the order they were made) and their nearest-neighbour chain. A
-            # curl past 180 deg doubles back along its axis (sorted there it zigzags across:
-            # rms 3.6 mm against 6e-7); one point of it added last, the stored order jumps
-            # (a curve 338 mm long for 188 mm of curl, QA)
-            xn, _ = el().pca_normalize(xy)
-            orders = [n.argsort(xn[:, 0], kind="stable"), n.arange(len(xy)), _chain_order(xy)]
-            user = user[min(orders, key=lambda o: _polyline_length(xy[o]))]
+            user = user[curve_order(xy)]
             user = _facing_the_edges(user, plane, start_edge, end_edge)
         xy = n.ascontiguousarray(user[:, :2])
         constraints, free_rms, warnings = {}, -1.0, []
@@ -546,8 +518,12 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         else:
             fixed = {}
             if step > 0:
-                xy = _resampled(xy, step)
-                if model == "discrete":
+                polygon = _resampled(xy, step)
+                # a pinned end is the user's point, which the polygon stops short of by up
+                # to a step: the data runs on to it, no longer equilateral there
+                pins = [pin_start and _apart(polygon[0], xy[0]), pin_end and _apart(polygon[-1], xy[-1])]
+                xy = n.vstack([xy[:1]] * pins[0] + [polygon] + [xy[-1:]] * pins[1])
+                if model == "discrete" and not any(pins):
                     fixed["h"] = step            # the polygon's segment (seed 000 §5.4)
             constraints = end_constraints(xy, plane, tol=tol, **ends)
             fitted = _one_piece(xy, model, distance, fixed, constraints, fields)

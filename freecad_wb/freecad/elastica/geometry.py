@@ -20,6 +20,11 @@ def np():
     return numpy
 
 
+def polyline_length(xy):
+    """The length of the polyline through the rows of xy."""
+    return float(np().sum(np().hypot(*np().diff(xy, axis=0).T)))
+
+
 def is_sketch(obj):
     return obj is not None and obj.isDerivedFrom("Sketcher::SketchObject")
 

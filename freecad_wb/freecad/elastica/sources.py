@@ -7,7 +7,7 @@ from __future__ import annotations
 import FreeCAD as App
 import Part
 
-from .geometry import dedup, el, is_sketch
+from .geometry import dedup, el, is_sketch, np, polyline_length
 from .proxy import InputProblem
 
 
@@ -143,33 +143,75 @@ def wire_points(shape):
     return pts
 
 
-def along_principal_axis(points):
-    """Points without an order of their own (a scan's cloud) in order along their first
-    principal axis (el.plane_fit's x', which runs from the first stored point towards the
-    last), as a fit orders them: right for a curve that does not double back along that
-    axis. Fewer than 3 points, coincident or non-finite ones stay as stored (the caller
-    says what is wrong with them)."""
-    import numpy as np
+# the nearest-neighbour chain's points at most: it takes m^2 distances at once (32 MB
+# here); a scan's cloud past it is ordered along its axis or as stored
+CHAIN_MAX = 2000
+
+
+def curve_order(xy):
+    """The order of points without one of their own (xy: their plane coordinates): the
+    shortest polyline of three, as stored (a sketch's in the order its points were made:
+    the first of equals, so Pin start means the first point made), along their first
+    principal axis and their nearest-neighbour chain (up to CHAIN_MAX points). Along the axis suits a scan that does not double back; a curl past 180 deg
+    does (sorted along the axis it zigzags across: a fit's rms 3.6 mm against 6e-7, no
+    free batten through them); one point of a curl added last, the stored order jumps (a
+    fit 338 mm long for 188 mm of curl)."""
+    n = np()
+    xn, _ = el().pca_normalize(xy)
+    orders = [n.arange(len(xy)), n.argsort(xn[:, 0], kind="stable")]
+    if len(xy) <= CHAIN_MAX:
+        orders.append(_chain_order(xy))
+    return min(orders, key=lambda o: polyline_length(xy[o]))
+
+
+def _chain_order(xy):
+    """The points' nearest-neighbour chain: from the closest pair, the nearest point not yet
+    in it joined at whichever end it is nearer, until all are in (O(n^2))."""
+    n = np()
+    m = len(xy)
+    if m < 3:
+        return n.arange(m)
+    d = n.hypot(*(xy[:, None, :] - xy[None, :, :]).transpose(2, 0, 1))
+    n.fill_diagonal(d, n.inf)
+    a, b = n.unravel_index(n.argmin(d), d.shape)
+    chain, free = [int(a), int(b)], n.ones(m, dtype=bool)
+    free[[a, b]] = False
+    while free.any():
+        head, tail = d[chain[0]], d[chain[-1]]
+        i, j = int(n.argmin(n.where(free, head, n.inf))), int(n.argmin(n.where(free, tail, n.inf)))
+        if head[i] < tail[j]:
+            chain.insert(0, i)
+            free[i] = False
+        else:
+            chain.append(j)
+            free[j] = False
+    return n.array(chain)
+
+
+def in_curve_order(points):
+    """A Points object's points (a scan's cloud: its stored order is the scanner's) in the
+    order of curve_order in their best-fit plane. Fewer than 3 points, coincident or
+    non-finite ones stay as stored (the caller says what is wrong with them)."""
     if len(points) < 3:
         return list(points)
     try:
-        xy, _ = el().plane_fit(np.array([tuple(p) for p in points], dtype=float))
+        xy, _ = el().plane_fit(np().array([tuple(p) for p in points], dtype=float))
     except (ValueError, ArithmeticError):
         return list(points)
-    return [points[i] for i in np.argsort(xy[:, 0], kind="stable")]
+    return [points[i] for i in curve_order(xy)]
 
 
 def object_points(obj):
     """The points of a whole object, in order: a sketch's sketch points (else the
-    vertices of its one wire), a Points object's points along their principal axis (a
-    cloud's stored order is the scanner's), the vertices of a wire along it, else a
+    vertices of its one wire), a Points object's points in curve order (in_curve_order),
+    the vertices of a wire along it, else a
     shape's vertices."""
     if is_sketch(obj):
         pts = sketch_points(obj)
         if pts or obj.Shape.isNull():
             return pts
     if obj.isDerivedFrom("Points::Feature"):
-        return along_principal_axis([obj.Placement.multVec(App.Vector(*p)) for p in obj.Points.Points])
+        return in_curve_order([obj.Placement.multVec(App.Vector(*p)) for p in obj.Points.Points])
     shape = getattr(obj, "Shape", None)
     if shape is None or shape.isNull():
         raise InputProblem(f"{obj.Label} has no geometry")
