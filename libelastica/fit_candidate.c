@@ -14,7 +14,10 @@ static int ipopt_to_status(int rs)
     switch (rs) {
     case 0: case 1: return EL_OK;          /* Solve_Succeeded, Solved_To_Acceptable_Level */
     case -1: case -4: return EL_EMAXITER;  /* Maximum_Iterations_Exceeded, Maximum_CpuTime_Exceeded */
-    case 2: return EL_EDOM;                /* Infeasible_Problem_Detected */
+    /* Infeasible_Problem_Detected (2) too: Ipopt's restoration phase failed from its point,
+     * no proof of infeasibility; whether the fit meets the constraints is checked at its end
+     * (el__fit_violated names one it does not meet; a G1-G1 fit from a curve meeting them
+     * failed with EL_EDOM naming none) */
     default: return EL_ENOCONV;
     }
 }

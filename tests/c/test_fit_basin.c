@@ -132,6 +132,32 @@ static const double CLUSTER_S2_107[] = {
 };
 static const el_smooth_params CLUSTER_S2_107_TRUE = {0.0, 0.0, -0.5516186541006594, 27.490035825973678, -0.896560769729103, -1.8511993811422274, 1.0};
 
+/* 31 sketched points (1 % noise) between two nearly collinear lines, clustered at the start
+ * with one far point (QA), the lines' ends and tangents, and their Hermite elastica of
+ * tension 0 (el_hermite_solve's first solution) */
+static const double NEAR_LINES31[] = {
+    -0.6073177883020564, -1.1882519455341163, -0.32332850865698515, 1.1790131920467477,
+    -0.02351738013707626, 1.0053840156064513, -0.7048188166250781, 1.6145964360401146,
+    -0.9711886460818875, 2.515537653187861, -1.794502843980509, 2.9369524699642695,
+    -1.407040168378163, 4.0773746184512145, -1.4057167575446086, 5.406676973005103,
+    -1.7842102043941208, 5.23366351030571, -2.4187197537761245, 6.613913361385687,
+    -2.5349642654130724, 6.30100708115295, -1.512787833423635, 7.044057973841115,
+    -2.8528030857176936, 9.0216696216466, -2.5948510922305674, 10.008351782266732,
+    -4.335884395366155, 11.323437166048368, -4.788392045208638, 11.964073168955236,
+    -4.38947610598833, 12.271013101389189, -3.7803504893235127, 12.643862673969636,
+    -3.844937291196961, 12.574271746387302, -4.3091218761416625, 15.485068584044026,
+    -5.633967403126281, 16.050252368213073, -5.124521396720179, 16.17196465692552,
+    -5.526205430432279, 15.881423256635292, -5.009414191871398, 17.554010983890628,
+    -5.36514504078331, 17.490248494789206, -6.055605709964216, 16.871841126146787,
+    -5.959595557645605, 18.41186760452187, -5.826743515435492, 19.192869137169783,
+    -7.75645619949259, 22.636836190638657, -17.168048036011474, 54.06839459089613,
+    -24.854438215795504, 77.99126605418445,
+};
+static const double NEAR_LINES31_ENDS[4] = {0.0, 0.0, -24.66301981529592, 78.45502411809693};
+static const double NEAR_LINES31_TANGENTS[2] = {1.8733458771677916, 1.8753520491468738};
+static const el_smooth_params NEAR_LINES31_BATTEN = {0.0, 0.0, 0.3052533074984088, 1.8180197346001872e-06,
+                                                     0.7071067811865476, 1.7805388658302685, 82.24025197233856};
+
 /* a sketch's points (n of them) and the curve they were drawn from */
 typedef struct { const double *xy; size_t n; const el_smooth_params *truth; } sketch_set;
 #define SKETCH(a) {a, sizeof a / sizeof a[0] / 2, &a##_TRUE}
@@ -247,6 +273,27 @@ START_TEST(test_fit_g1_from_a_curve_that_meets_the_constraints)
     const double truth = rms_from_curve(G1_CLUSTER6, n, &G1_CLUSTER6_TRUE);
     ck_assert_msg(noisy.rms <= truth * (1.0 + 1e-6), "clustered noisy points: rms %g, the true curve's %g", noisy.rms,
                   truth);
+}
+END_TEST
+
+/* a G1-G1 fit from a curve meeting its constraints never fails with EL_EDOM naming none of
+ * them: Ipopt's Infeasible_Problem_Detected on a refit from the tension-0 batten of two nearly
+ * collinear lines was taken for it (QA); the fit meets the constraints and is no worse than
+ * its start */
+START_TEST(test_fit_g1_from_a_batten_is_no_domain_error)
+{
+    const size_t n = sizeof NEAR_LINES31 / sizeof NEAR_LINES31[0] / 2;
+    el_fit_options o = g1_options(NEAR_LINES31_ENDS, NEAR_LINES31_TANGENTS);
+    o.use_initial = 1;
+    el_fit_smooth_result r;
+    const int st = el_fit_smooth(NEAR_LINES31, n, &o, &NEAR_LINES31_BATTEN, &r, NULL, NULL);
+    ck_assert_msg(st == EL_OK || st == EL_ENOCONV || st == EL_EMAXITER, "status %d, constraint %d", st, r.constraint);
+    const double s[2] = {0.0, r.params.length};
+    double xy[4], th[2];
+    ck_assert_int_eq(el_smooth_eval(&r.params, 2, s, xy, th, NULL), EL_OK);
+    for (int i = 0; i < 4; i++) ck_assert_msg(fabs(xy[i] - NEAR_LINES31_ENDS[i]) < 1e-9 * 100.0, "end %d", i);
+    for (int i = 0; i < 2; i++) ck_assert(fabs(remainder(th[i] - NEAR_LINES31_TANGENTS[i], 2.0 * M_PI)) < 1e-9);
+    ck_assert_double_le(r.rms, rms_from_curve(NEAR_LINES31, n, &NEAR_LINES31_BATTEN));
 }
 END_TEST
 
@@ -585,6 +632,7 @@ static Suite *suite(void)
     tcase_add_test(tc, test_fit_exact_sparse_points_give_their_curve);
     tcase_add_test(tc, test_fit_g1_sketch_follows_its_points);
     tcase_add_test(tc, test_fit_g1_from_a_curve_that_meets_the_constraints);
+    tcase_add_test(tc, test_fit_g1_from_a_batten_is_no_domain_error);
     tcase_add_test(tc, test_fit_g1_clustered_sketches);
     tcase_add_test(tc, test_fit_g1_between_nearly_collinear_lines_follows_them);
     tcase_add_test(tc, test_fit_sparse_uneven_loop_smooth);
