@@ -283,8 +283,29 @@ static void unwind(el__spchain *w, int max_steps, double aim, double accept)
         pull_from(w, max_steps, aim, accept, HIGH_SIGMA);
 }
 
+/*
+ * FREE_START: under a small tension el_hermite_solve's least-energy piece (the chain's
+ * start where a piece's tangents are far from its chord) can be a curve at the tension's
+ * own length scale 1/sqrt(sigma), nearly closed through its two close ducks: its energy
+ * ~ sqrt(sigma) vanishes as sigma -> 0 (as it runs off to infinity), below the batten's
+ * ~ 1/h. Measured: 7 sketched ducks (DUCKS7 in tests/c/test_spline.c) at sigma 1.4e-7
+ * (internal), the first piece 22313 long for its chord of 1.85 (energy 0.0031; the
+ * free piece 2.04, energy 1.34): the direct Newton stalls (merit 7.60 -> 7.58 in 20
+ * iterations) and at sigma h^2 = 40 it does not converge either (18.5 -> 12.5): no
+ * spline for user tensions 1e-12 .. 1e-5, 1e-14 and 0 solved (none for 0.3 .. 10 either:
+ * now 0.3 solves and 1 reaches 3e-9, EL_ENOCONV with the spline). The
+ * piece is not replaced where it is found: without a free batten (a closed ring) the
+ * spline itself lies at that scale (taking the free piece there changed the energy of 154
+ * of 2659 solved cases below). So where both paths fail, the free batten pulled to sigma,
+ * the continuation unwind takes too. 90 sketches (walks, steps, arcs; natural, clamped,
+ * closed) x sigma 0, 1e-14 .. 1e-3: failures where the free batten exists 77 -> 4 (near
+ * straight pieces, whose 1 - k^2 a double does not resolve: EL_ENOCONV with the
+ * spline), none solved before changed; at sigma 1e-2 .. 10 6 more solved, none changed,
+ * CPU 4.1 -> 6.1 s (failures try one path more); bench_spline unchanged (6.46 ms).
+ */
+
 /* The tension solution at w->sigma: directly (one that winds away from its ducks: another
- * path to it, unwind), else by continuation from a high tension.
+ * path to it, unwind), else by continuation from a high tension, else from the free batten.
  * final: to tol (else to EL__SP_NEAR, as a start for the length mode). */
 int el__spline_solve_tension(el__spchain *w, int max_steps, int final)
 {
@@ -301,7 +322,10 @@ int el__spline_solve_tension(el__spchain *w, int max_steps, int final)
         if (final && w->resid <= EL__SP_NEAR) { w->near = 1; return EL_ENOCONV; }
     }
     /* from a high tension on the mean chord (the unit here) */
-    return from_sigma(w, max_steps, HIGH_SIGMA, target, 1e-3 * EL__SP_NEAR, EL__SP_NEAR, aim, accept);
+    st = from_sigma(w, max_steps, HIGH_SIGMA, target, 1e-3 * EL__SP_NEAR, EL__SP_NEAR, aim, accept);
+    if (st != EL_ENOCONV || w->near || !final || !(target > 0.0)) return st;
+    /* else the free batten pulled to target (FREE_START) */
+    return from_sigma(w, max_steps, 0.0, target, 1e-3 * EL__SP_NEAR, EL__SP_NEAR, aim, accept);
 }
 
 int el__spline_tension_from(el__spchain *w, int max_steps, double sigma)

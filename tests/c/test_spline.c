@@ -211,6 +211,38 @@ START_TEST(tension_mode_follows_its_ducks)
 }
 END_TEST
 
+/* Small tensions: 7 sketched ducks (DUCKS7, spline_path.c's FREE_START) solved at 0 and
+ * 1e-14 but not from 1e-12 to 1e-5 (EL_ENOCONV: the start's first piece a curve 22313
+ * long at the tension's own scale, then neither path converged): the same batten as the
+ * free one (energy 0.173144 to 3e-7, length 73.474 to 5e-5: pulled shorter), longer ones
+ * winding away */
+START_TEST(small_tensions_keep_the_free_batten)
+{
+    static const double ducks7[] = {44.9, 0.2, 51.6, 20.9, 61.7, 19.9, 76.8, 19.1, 83.7, 20.1,
+                                    93.9, 20.1, 100.3, 19.4};
+    const double sig[] = {0.0, 1e-14, 1e-12, 1e-10, 1e-8, 1e-6, 1e-5, 3e-5};
+    double E0 = 0.0, L0 = 0.0, Eprev = 0.0, Lprev = 0.0;
+    for (size_t i = 0; i < sizeof sig / sizeof sig[0]; i++) {
+        el_spline_options o = opts(EL_SPLINE_TENSION, sig[i]);
+        el_spline_result r;
+        ck_assert_msg(solve(ducks7, 7, &o, &r) == EL_OK, "sigma %g: no spline", sig[i]);
+        check_spline(ducks7, 7, &o, &r, 1e-9);
+        ck_assert(r.residual <= o.tol);
+        if (i == 0) { E0 = r.energy; L0 = r.length; Eprev = E0; Lprev = L0; }
+        ck_assert_msg(fabs(r.energy - E0) <= 1e-6 * E0 && fabs(r.length - L0) <= 1e-4 * L0,
+                      "sigma %g: energy %.9g, length %.9g (free batten %.9g, %.9g)", sig[i], r.energy, r.length,
+                      E0, L0);
+        /* more tension: more bending, shorter (the same branch) */
+        ck_assert_msg(r.energy >= Eprev * (1.0 - 1e-12) && r.length <= Lprev * (1.0 + 1e-12),
+                      "sigma %g: energy %.12g, length %.12g after %.12g, %.12g", sig[i], r.energy, r.length, Eprev,
+                      Lprev);
+        Eprev = r.energy;
+        Lprev = r.length;
+        el_spline_result_free(&r);
+    }
+}
+END_TEST
+
 START_TEST(spline_is_a_critical_point_of_the_energy)
 {
     const double sigma = 0.5;
@@ -609,6 +641,7 @@ int main(void)
     tcase_add_test(tc, through_points_g2_one_tension);
     tcase_add_test(tc, random_points_and_tensions);
     tcase_add_test(tc, tension_mode_follows_its_ducks);
+    tcase_add_test(tc, small_tensions_keep_the_free_batten);
     tcase_add_test(tc, spline_is_a_critical_point_of_the_energy);
     tcase_add_test(tc, closed_curves);
     tcase_add_test(tc, clamped_and_g2_ends);
