@@ -1096,10 +1096,10 @@ void el_spline_options_defaults(el_spline_options *opt);
  * to that tension, or the batten brought down from sigma h^2 = 40, where that converges
  * shorter; where neither the direct Newton nor the batten from sigma h^2 = 40 converges,
  * the free batten pulled to that tension (small tensions: the least-energy Hermite piece
- * the start takes can be a curve at the tension's scale 1 / sqrt(sigma)). Without a free batten (a closed ring of ducks; a zigzag that slides off)
- * length mode follows the length from the batten under sigma h^2 = 40, 4 or 0.4 (the
- * first that converges). Two consecutive
- * points that coincide are EL_EINVAL (the batten cannot pass a duck twice in no
+ * the start takes can be a curve at the tension's scale 1 / sqrt(sigma)). Without a free
+ * batten (a closed ring of ducks; a zigzag that slides off) length mode follows the
+ * length from the batten under sigma h^2 = 40, 4 or 0.4 (the first that converges). Two
+ * consecutive points that coincide are EL_EINVAL (the batten cannot pass a duck twice in no
  * length); a closed curve needs 3 distinct points.
  * Accuracy: the residual (see tol) reaches ~1e-14 for moderate tensions. Two
  * configurations are resolved only as far as el_smooth_params can:
