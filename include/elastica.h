@@ -496,7 +496,8 @@ int el_fit_discrete(const double *xy, size_t n, const el_fit_options *opt,
  * distances, foot_s: signed distance to the curve over [0, length] (+ = left) and the
  * foot's arc length s; the foot is the nearest point near the point's place along the
  * data (Newton's method from the fit's own foot). Statuses and outputs as
- * el_fit_discrete.
+ * el_fit_discrete; its parameter mu ~ 1 / extent^2 narrows the scale EL_EDOM (res
+ * untouched) to data whose extent lies outside ~1e-150 .. 1e150.
  */
 int el_fit_smooth(const double *xy, size_t n, const el_fit_options *opt,
                   const el_smooth_params *initial, el_fit_smooth_result *res,
@@ -1150,8 +1151,9 @@ void el_spline_result_free(el_spline_result *res);
  * the arc length of the spline from point 0 (closed: the joint at point 0 stays
  * a clamped end, G2 by the same end conditions). out->max_deviation is the
  * largest certified distance of the pieces (plus the rounding of the joins).
- * Errors: EL_EINVAL (NULL, res empty, tol <= 0, degree outside 3..7), EL_EDOM
- * (tol below what double precision resolves, see el_smooth_to_bspline),
+ * Errors: EL_EINVAL (NULL, res empty, tol <= 0, degree outside 3..7, pieces that do
+ * not meet within tol as el_smooth_chain_to_bspline says: an unconverged result's),
+ * EL_EDOM (tol below what double precision resolves, see el_smooth_to_bspline),
  * EL_EMAXITER (some piece did not reach tol: the B-spline is returned with its
  * honest certified distance), EL_ENOMEM, EL_ESINGULAR. out untouched on errors
  * other than EL_EMAXITER.
@@ -1472,8 +1474,9 @@ int el_bspline_flat_knots(const el_bspline *b, double *flat);
 
 /*
  * Points B(t_i) (de Boor's algorithm), pts: dim*n interleaved. t must lie in
- * [knots[0], knots[nknots-1]] (values outside by less than 1e-12 of the
- * knot range are clamped to it; beyond that EL_EDOM: no extrapolation).
+ * [knots[0], knots[nknots-1]] (values outside by less than 1e-12 of |knots[0]| +
+ * |knots[nknots-1]| + the knot range, the rounding of t there, are clamped to it;
+ * beyond that EL_EDOM: no extrapolation).
  * Errors: EL_EINVAL (invalid b, NULL arrays with n > 0, non-finite t), EL_EDOM
  * (a t outside, checked before anything is written; or a value beyond double's
  * range, which only derivatives can reach, the values before it written), EL_ENOMEM.
@@ -1589,7 +1592,9 @@ int el_smooth_to_bspline_g2(const el_smooth_params *p, double tol, int degree, e
  * start. out->max_deviation is the largest certified distance of the pieces plus
  * the rounding of the joins (and what a joint's curvature mismatch costs).
  * Errors: EL_EINVAL (NULL, n = 0, tol <= 0, degree outside 3..7, a piece
- * el_smooth_check refuses), EL_EDOM (tol below what double precision resolves, see
+ * el_smooth_check refuses, or one that does not start within tol of where the one
+ * before ends, its tangent within tol / (the shorter piece's length) of that end's),
+ * EL_EDOM (tol below what double precision resolves, see
  * el_smooth_to_bspline), EL_EMAXITER (some piece did not reach tol: the B-spline is
  * returned with its honest certified distance), EL_ENOMEM, EL_ESINGULAR. out
  * untouched on errors other than EL_EMAXITER.

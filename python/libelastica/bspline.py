@@ -267,6 +267,22 @@ def _beyond_limits(p, tol: float) -> str:
             f"EL_BSPLINE_MAX_POLES): raise tol or split the curve")
 
 
+def _check_joints(pieces, tol):
+    """ValueError naming the first joint where a piece does not start within tol of where
+    the one before ends, its tangent within tol / (the shorter's length) of that end's (the
+    library's EL_EINVAL for such a chain)."""
+    for j in range(1, len(pieces)):
+        a, b = pieces[j - 1], pieces[j]
+        end, start = a.points(np.array([a.length]))[0], b.points(np.array([0.0]))[0]
+        kink = abs(np.remainder(b.angle(np.array([0.0]))[0] - a.angle(np.array([a.length]))[0] + np.pi,
+                                2 * np.pi) - np.pi)
+        gap = float(np.hypot(*(start - end)))
+        if not (gap <= tol and kink * min(a.length, b.length) <= tol):
+            raise ValueError(f"to_bspline: piece {j + 1} does not start where piece {j} ends "
+                             f"(gap {gap:.3g}, tangents {kink:.3g} rad apart): a chain's pieces "
+                             f"meet within tol = {tol:g}")
+
+
 def smooth_chain_to_bspline(pieces, tol: float = 1e-6, degree: int = 3) -> BSpline:
     """ONE clamped degree-3..7 B-spline within ``tol`` of a chain of SmoothElastica
     pieces that meet G2 (each starting where the one before ends), parametrised by
@@ -281,6 +297,8 @@ def smooth_chain_to_bspline(pieces, tol: float = 1e-6, degree: int = 3) -> BSpli
             setattr(arr[i], name, float(getattr(c, name)))
     b = ffi.new("el_bspline *")
     st = lib.el_smooth_chain_to_bspline(arr, len(pieces), tol, degree, b)
+    if st == lib.EL_EINVAL and tol > 0 and 3 <= degree <= 7:
+        _check_joints(pieces, tol)
     if st == lib.EL_EDOM:   # a piece beyond el_smooth_to_bspline's limits: say which and why
         n = len(pieces)
         worst = max(range(n), key=lambda i: 2.0 * abs(arr[i].k) * np.sqrt(arr[i].mu) * arr[i].length)

@@ -507,6 +507,36 @@ START_TEST(test_smooth_to_bspline_bad_input)
 }
 END_TEST
 
+/* A chain whose pieces do not meet (a kink, a gap) is refused before anything is written:
+ * the C2 join's bound does not see a kink (0.5 rad between pieces 2 long was certified at
+ * 0.0171 where the B-spline lay 0.0175 from them, QA); within tol they convert */
+START_TEST(test_chain_pieces_must_meet)
+{
+    /* the second piece continues the first's elastica (q advanced by sqrt(mu) L): G2 */
+    el_smooth_params pc[2] = {{0.0, 0.0, 0.0, 1.0, 0.5, 0.3, 2.0}, {0.0, 0.0, 0.0, 1.0, 0.5, 2.3, 2.0}};
+    const double s[2] = {0.0, pc[0].length};
+    double xy[4];
+    ck_assert_int_eq(el_smooth_eval(&pc[0], 2, s, xy, NULL, NULL), EL_OK);
+    el_bspline b;
+    memset(&b, 0x5a, sizeof b);
+    const el_bspline untouched = b;
+    const double tol = 1e-6, kinks[3] = {0.5, 0.0, 1e-3 * tol / 2.0}, gaps[3] = {0.0, 0.1, 1e-3 * tol};
+    for (int c = 0; c < 3; c++) {
+        pc[1].x0 = xy[2] + gaps[c];
+        pc[1].y0 = xy[3];
+        pc[1].phi = kinks[c];
+        const int st = el_smooth_chain_to_bspline(pc, 2, tol, 5, &b);
+        if (c < 2) {
+            ck_assert_int_eq(st, EL_EINVAL);
+            ck_assert(memcmp(&b, &untouched, sizeof b) == 0);
+        } else {
+            ck_assert_msg(st == EL_OK && b.max_deviation <= tol, "status %d, certified %g", st, b.max_deviation);
+            el_bspline_free(&b);
+        }
+    }
+}
+END_TEST
+
 /* A curve given with a huge angle phi is the same curve as with phi reduced to
  * [-pi, pi] (el_smooth_eval rotates its points by cos, sin phi), and is approximated as
  * that one is: the same poles, certified to tol. Before, the tangent angle phi + turning
@@ -558,6 +588,7 @@ int main(void)
     tcase_add_test(tc, test_smooth_to_bspline_degrees);
     tcase_add_loop_test(tc, test_smooth_to_bspline_end_tangents, 0, 28);
     tcase_add_test(tc, test_smooth_to_bspline_bad_input);
+    tcase_add_test(tc, test_chain_pieces_must_meet);
     tcase_add_test(tc, huge_angle_is_approximated_as_the_reduced_one);
     suite_add_tcase(s, tc);
     return test_run_suite(s);

@@ -529,6 +529,41 @@ START_TEST(test_fixed_h_nonpositive_rejected)
 }
 END_TEST
 
+/* Similarity invariance at every scale double's range allows: 6 points fitted at 1e-290 ..
+ * 1e300 give the fit at scale 1 scaled (the discrete fit's pairing test squared the slips:
+ * at 1e-160 they underflowed, 4 points stayed paired at 5e9 x the rms, EL_OK (QA); at 1e160
+ * they overflowed, these 6 were refitted by distance); the smooth model's mu ~ 1 / extent^2
+ * leaves double's range beyond 1e+-150: EL_EDOM, res untouched. */
+START_TEST(test_fits_are_invariant_under_scaling)
+{
+    const double base[12] = {0.0, 0.0, 1.0, 0.1, 2.0, 0.35, 3.0, 0.3, 4.0, -0.1, 5.0, 0.05};
+    el_fit_discrete_result d1;
+    el_fit_smooth_result s1;
+    ck_assert_int_eq(el_fit_discrete(base, 6, NULL, NULL, &d1, NULL, NULL), EL_OK);
+    ck_assert_int_eq(el_fit_smooth(base, 6, NULL, NULL, &s1, NULL, NULL), EL_OK);
+    for (int e = -290; e <= 300; e += 10) {
+        const double sc = pow(10.0, e);
+        double xy[12];
+        for (int i = 0; i < 12; i++) xy[i] = base[i] * sc;
+        el_fit_discrete_result d;
+        ck_assert_int_eq(el_fit_discrete(xy, 6, NULL, NULL, &d, NULL, NULL), EL_OK);
+        ck_assert_msg(d.distance == d1.distance && fabs(d.rms / sc - d1.rms) <= 1e-6 * d1.rms + 1e-15 &&
+                      fabs(d.params.h / sc - d1.params.h) <= 1e-9 * d1.params.h,
+                      "1e%d: distance %d rms/scale %g (%g at 1)", e, d.distance, d.rms / sc, d1.rms);
+        el_fit_smooth_result s;
+        memset(&s, 0x5a, sizeof s);
+        const el_fit_smooth_result untouched = s;
+        const int st = el_fit_smooth(xy, 6, NULL, NULL, &s, NULL, NULL);
+        if (abs(e) <= 150) {
+            ck_assert_msg(st == EL_OK && fabs(s.params.length / sc - s1.params.length) <= 1e-9 * s1.params.length,
+                          "1e%d: status %d", e, st);
+        } else {
+            ck_assert_msg(st == EL_EDOM && memcmp(&s, &untouched, sizeof s) == 0, "1e%d: status %d", e, st);
+        }
+    }
+}
+END_TEST
+
 /* Data at 1e-300 .. 1e300 and denormal spreads: a correct fit or EL_EDOM, never EL_OK
  * with NaN, inf, mu = 0 or h = 0; the guesses and the fractions likewise. */
 START_TEST(test_extreme_magnitudes_edom_or_correct)
@@ -771,6 +806,7 @@ static Suite *suite(void)
     tcase_add_test(tc, test_ipopt_opt_in_working_directory_ignored);
     tcase_add_test(tc, test_fixed_h_nonpositive_rejected);
     tcase_add_test(tc, test_extreme_magnitudes_edom_or_correct);
+    tcase_add_test(tc, test_fits_are_invariant_under_scaling);
     tcase_add_test(tc, test_orthogonal_distances_and_feet);
     tcase_add_test(tc, test_keyline_joint);
     tcase_add_test(tc, test_distances_do_not_depend_on_the_callers_arrays);
