@@ -39,12 +39,12 @@ def _parse_text(text: str, name: str) -> np.ndarray:
     """Rows of numbers separated by semicolons (with decimal commas or points), commas,
     tabs or spaces. Blank lines and lines starting with '#' are skipped; one header line
     of non-numbers (e.g. ``x,y,z``) is allowed as the first data line. Rows of more than 3
-    numbers (a scanner's point ids, normals, intensities) are read when the header names
-    the coordinate columns ``x``, ``y`` and optionally ``z`` (units in brackets allowed);
-    a header that names them picks them by name in any case ("id,x,y", "y,x")."""
-    rows = []
+    columns (a scanner's point ids, normals, intensities; a survey's point names) are read
+    when the header names the coordinate columns ``x``, ``y`` and optionally ``z`` (units in
+    brackets allowed); a header that names them picks them by name in any case ("id,x,y",
+    "y,x", "name,x,y,z"), the other columns need not be numbers."""
+    rows = []       # (line number, fields)
     header = None
-    first = True
     data_lines = [ln for ln in text.splitlines() if ln.strip() and not ln.lstrip().startswith("#")]
     sample = "\n".join(data_lines[:20])
     delim = None
@@ -60,30 +60,29 @@ def _parse_text(text: str, name: str) -> np.ndarray:
             continue
         if delim == ";":
             fields = [f.replace(",", ".") if _DECIMAL_COMMA.fullmatch(f) else f for f in fields]
-        try:
-            row = [float(f) for f in fields]
-        except ValueError:
-            if first and not any(_is_number(f) for f in fields):
-                first = False          # a header line
-                header = fields
-                continue
-            raise InputError(f"{name}: line {lineno}: not a number in {','.join(fields)!r}")
-        first = False
-        rows.append(row)
+        if not rows and header is None and not any(_is_number(f) for f in fields):
+            header = fields            # a header line
+            continue
+        rows.append((lineno, fields))
     if not rows:
         raise InputError(f"{name}: no data rows")
-    widths = {len(r) for r in rows}
+    widths = {len(f) for _, f in rows}
     if len(widths) != 1:
         raise InputError(f"{name}: rows have different numbers of columns {sorted(widths)}")
-    arr = np.array(rows, dtype=np.float64)
+    width = widths.pop()
     axes = [m.group(1).lower() if (m := _AXIS_NAME.fullmatch(h)) else None for h in header or []]
-    if len(axes) == arr.shape[1] and "x" in axes and "y" in axes and \
-            all(axes.count(a) <= 1 for a in "xyz"):
-        return arr[:, [axes.index(a) for a in "xyz" if a in axes]]   # by the header's names
-    if arr.shape[1] > 3:
-        raise InputError(f"{name}: {arr.shape[1]} columns: name the coordinates x, y (and z) "
+    named = len(axes) == width and "x" in axes and "y" in axes and all(axes.count(a) <= 1 for a in "xyz")
+    cols = [axes.index(a) for a in "xyz" if a in axes] if named else list(range(width))
+    out = np.empty((len(rows), len(cols)))
+    for r, (lineno, fields) in enumerate(rows):
+        try:
+            out[r] = [float(fields[c]) for c in cols]
+        except ValueError:
+            raise InputError(f"{name}: line {lineno}: not a number in {','.join(fields)!r}") from None
+    if not named and width > 3:
+        raise InputError(f"{name}: {width} columns: name the coordinates x, y (and z) "
                          "in a header line to read them from more columns, or give 2 or 3")
-    return arr
+    return out
 
 
 def _is_number(s: str) -> bool:

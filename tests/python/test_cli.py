@@ -156,8 +156,9 @@ def test_read_points_formats(tmp_path):
 def test_read_points_as_scanners_and_spreadsheets_write_them(tmp_path):
     """Semicolons with decimal commas (a spreadsheet in many locales); a header that names
     the coordinate columns picks them by name, out of more columns (point ids, normals)
-    or in another order ("id,x,y" read the ids as x before); more than 3 columns without
-    such names, or with a name twice, is refused naming the way out."""
+    or in another order ("id,x,y" read the ids as x before), the other columns text too (a
+    survey's point names: "name,x,y,z" was refused, QA); more than 3 columns without such
+    names, or with a name twice, is refused naming the way out."""
     pts = np.array([[0.0, -1.25], [1.5, 0.5], [2.0, 0.75], [3.0, 1e3]])
     z = np.array([0.5, 0.25, -3.0, 2.0])
     files = {
@@ -168,17 +169,22 @@ def test_read_points_as_scanners_and_spreadsheets_write_them(tmp_path):
         "swapped.txt": "y x\n" + "".join(f"{y} {x}\n" for x, y in pts),
         "scan.csv": "id,x,y,z,nx,ny,nz\n" + "".join(f"{i},{x},{y},{c},0,0,1\n"
                                                      for i, ((x, y), c) in enumerate(zip(pts, z))),
+        "survey.csv": "name,x,y,z\n" + "".join(f"P{i},{x},{y},{c}\n"
+                                               for i, ((x, y), c) in enumerate(zip(pts, z))),
     }
     for name, text in files.items():
         (tmp_path / name).write_text(text)
         got = read_points(tmp_path / name)
-        want = np.c_[pts, z] if name == "scan.csv" else pts
+        want = np.c_[pts, z] if name in ("scan.csv", "survey.csv") else pts
         np.testing.assert_array_equal(got, want, err_msg=name)
     for text in ("1,2,3,4\n5,6,7,8\n9,1,2,3\n", "a,b,c,d\n1,2,3,4\n5,6,7,8\n9,1,2,3\n",
                  "x,x,y,z\n1,2,3,4\n5,6,7,8\n9,1,2,3\n"):
         (tmp_path / "bad.csv").write_text(text)
         with pytest.raises(InputError, match="name the coordinates x, y"):
             read_points(tmp_path / "bad.csv")
+    (tmp_path / "names.csv").write_text("P0,1,2\nP1,3,4\nP2,5,7\n")       # no header: no names
+    with pytest.raises(InputError, match="line 1: not a number"):
+        read_points(tmp_path / "names.csv")
 
 
 # ------------------------------------------------------------------ hermite

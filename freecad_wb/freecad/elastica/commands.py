@@ -250,7 +250,8 @@ def spline_sources(sources, open_panel=True, **options):
     opts.update(options)
 
     def check():
-        pts, plane = src_mod.gather_vertices(sources, spline.DUCKS_NEED, edge_means_object=True)
+        pts, plane = src_mod.gather_vertices(sources, spline.DUCKS_NEED, edge_means_object=True,
+                                             curve_ordered=True)
         if "Closed" not in opts:
             opts["Closed"] = len(pts) > 3 and (pts[0] - pts[-1]).Length < 1e-9
         spline.spline_core(pts, plane, opts.get("Mode", "tension"), opts.get("Tension", 0.0),

@@ -101,7 +101,7 @@ def gather_points(sources, csv_file="", samples_per_edge=60):
                     f"edge{'s' if n_edges != 1 else ''}: a fit takes either, not both; select "
                     "its points (or its edges) in the 3D view rather than the whole sketch")
         if obj.isDerivedFrom("Points::Feature"):
-            points.extend(obj.Placement.multVec(App.Vector(*p)) for p in obj.Points.Points)
+            points.extend(obj.Points.Points)      # placed already (its kernel's transform)
             continue
         shape = getattr(obj, "Shape", None)
         if shape is None or shape.isNull():
@@ -201,17 +201,19 @@ def in_curve_order(points):
     return [points[i] for i in curve_order(xy)]
 
 
-def object_points(obj):
+def object_points(obj, curve_ordered=False):
     """The points of a whole object, in order: a sketch's sketch points (else the
-    vertices of its one wire), a Points object's points in curve order (in_curve_order),
-    the vertices of a wire along it, else a
-    shape's vertices."""
+    vertices of its one wire; ``curve_ordered``: in curve order, as a fit takes them), a
+    Points object's points in curve order (in_curve_order), the vertices of a wire along
+    it, else a shape's vertices."""
     if is_sketch(obj):
         pts = sketch_points(obj)
         if pts or obj.Shape.isNull():
-            return pts
+            return in_curve_order(pts) if curve_ordered else pts
     if obj.isDerivedFrom("Points::Feature"):
-        return in_curve_order([obj.Placement.multVec(App.Vector(*p)) for p in obj.Points.Points])
+        # Points.Points are placed already (the kernel's transform): a scan moved by its
+        # Placement was fitted twice as far (QA)
+        return in_curve_order(list(obj.Points.Points))
     shape = getattr(obj, "Shape", None)
     if shape is None or shape.isNull():
         raise InputProblem(f"{obj.Label} has no geometry")
@@ -219,12 +221,14 @@ def object_points(obj):
 
 
 def gather_vertices(sources, need="four vertices, or a sketch of four points",
-                    edge_means_object=False):
+                    edge_means_object=False, curve_ordered=False):
     """Picked points in selection order, without merging coincident ones: vertices
     of sketches or shapes ('VertexN'), or whole objects (``object_points``: a
     sketch's points, a Points object, a wire's vertices in order). ``need`` says
     what to select when nothing is; ``edge_means_object``: a picked edge stands for
-    its whole object (a click on a Draft wire picks one of its edges). Returns
+    its whole object (a click on a Draft wire picks one of its edges);
+    ``curve_ordered``: a whole sketch's points in curve order (a spline's ducks; an
+    elliptic blend's control points keep the order they were made in). Returns
     (points, plane: the sketch placement when all come from one sketch, else None)."""
     if not sources:
         raise InputProblem(f"nothing selected: select {need}")
@@ -236,7 +240,7 @@ def gather_vertices(sources, need="four vertices, or a sketch of four points",
         if edge_means_object and any(s.startswith("Edge") for s in subs):
             subs = []
         if not subs:
-            pts.extend(object_points(obj))
+            pts.extend(object_points(obj, curve_ordered))
             continue
         for s in subs:
             if not s.startswith("Vertex"):
