@@ -428,6 +428,40 @@ START_TEST(length_mode_seed_lines_find_every_tension_root)
 }
 END_TEST
 
+/* Solutions near the separatrix (|k| 1.004 to 1.014) that grid 32 (and 48, 64 in the first)
+ * lost while every other grid found them: a step 1.28 long passed from one branch of C to
+ * one 0.02 away (one more pass near the saddle, L 1.75 -> 2.09 where both slopes said
+ * down), the seeds it crossed on the branch it left were taken for visited, and the trace
+ * coming back along that branch stopped there, short of the solution (trace's L test).
+ * p0 = (0, 0), p1 = (1, 0), tangents at angles a and b: each solution found at every grid. */
+START_TEST(length_mode_finds_the_solution_at_every_grid)
+{
+    static const struct { double a, b, L, sigma; } c[] = {
+        {2.4014601800539546, -0.84177126285813819, 2.167692048742988, 43.965876928514746},
+        {2.4300316840593696, -2.4626951396328973, 1.6183889719945408, 35.594715329629707},
+        {0.98772009848664133, -1.9614343260688762, 1.2710418658140006, 30.650953501766061},
+    };
+    for (size_t i = 0; i < sizeof c / sizeof c[0]; i++) {
+        const double p0[2] = {0.0, 0.0}, p1[2] = {1.0, 0.0};
+        const double t0[2] = {cos(c[i].a), sin(c[i].a)}, t1[2] = {cos(c[i].b), sin(c[i].b)};
+        for (int g = 1; g <= 64; g++) {
+            el_hermite_options o;
+            el_hermite_options_defaults(&o);
+            o.mode = EL_HERMITE_LENGTH;
+            o.length = c[i].L;
+            o.grid = g;
+            el_hermite_result r;
+            ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_OK);
+            int found = 0;
+            for (size_t j = 0; j < r.count; j++)
+                found |= fabs(r.solutions[j].sigma - c[i].sigma) <= 1e-6 * c[i].sigma;
+            el_hermite_result_free(&r);
+            ck_assert_msg(found, "problem %zu, grid %d: no solution with sigma %.9g", i, g, c[i].sigma);
+        }
+    }
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("hermite_length");
@@ -443,6 +477,7 @@ int main(void)
     tcase_add_test(tc, length_mode_halves_a_bracket_along_C);
     tcase_add_test(tc, length_mode_follows_C_where_its_chart_folds);
     tcase_add_test(tc, length_mode_follows_C_past_the_trace_range_while_L_exceeds_Lt);
+    tcase_add_test(tc, length_mode_finds_the_solution_at_every_grid);
     tcase_add_test(tc, length_mode_fast_sinh_matches_libm);
     tcase_add_test(tc, length_mode_fast_norm_matches_libm);
     tcase_add_test(tc, length_mode_seed_lines_find_every_tension_root);
