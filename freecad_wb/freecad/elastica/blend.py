@@ -12,10 +12,11 @@ import json
 import FreeCAD as App
 
 from . import defaults
-from .geometry import (edge_end, el, is_sketch, link_edge, np, part_bspline,
+from .geometry import (edge_end, el, global_element, is_sketch, link_edge, np, part_bspline,
                        plane_coordinates, plane_curvature, sketch_geo_of_edge, to_3d)
-from .proxy import (FeatureProxy, InputProblem, add_enum, add_length, add_property,
-                    attach_view, check_degree, check_number, check_tolerance, read_only)
+from .proxy import (FeatureProxy, InputProblem, add_enum, add_length, add_link,
+                    add_property, attach_view, check_degree, check_number, check_tolerance,
+                    read_only)
 
 MODES = ["length", "tension"]
 CONTINUITIES = ["G1", "G2"]
@@ -258,10 +259,10 @@ class BlendProxy(FeatureProxy):
 
     def setup(self, obj):
         tol, _, _ = defaults()
-        add_property(obj, "App::PropertyLinkSub", "Edge1", "Input",
-                     "First edge (the blend leaves it)")
-        add_property(obj, "App::PropertyLinkSub", "Edge2", "Input",
-                     "Second edge (the blend enters it)")
+        add_link(obj, "App::PropertyLinkSub", "Edge1", "Input",
+                 "First edge (the blend leaves it)")
+        add_link(obj, "App::PropertyLinkSub", "Edge2", "Input",
+                 "Second edge (the blend enters it)")
         add_property(obj, "App::PropertyBool", "AtEnd1", "Input",
                      "Leave the first edge at its end vertex (else at its start)", True)
         add_property(obj, "App::PropertyBool", "AtEnd2", "Input",
@@ -450,8 +451,7 @@ def make(doc, edge1, edge2, at_end1=None, at_end2=None, **props):
             gi = sketch_geo_of_edge(o, name)
             setattr(obj, f"SketchGeometry{i}", -1 if gi is None else gi)
     if at_end1 is None or at_end2 is None:
-        a, b = nearest_ends(edge1[0].Shape.getElement(edge1[1]),
-                            edge2[0].Shape.getElement(edge2[1]))
+        a, b = nearest_ends(global_element(*edge1), global_element(*edge2))
         at_end1 = a if at_end1 is None else at_end1
         at_end2 = b if at_end2 is None else at_end2
     obj.AtEnd1, obj.AtEnd2 = bool(at_end1), bool(at_end2)

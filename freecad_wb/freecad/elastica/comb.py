@@ -11,8 +11,9 @@ import math
 import FreeCAD as App
 import Part
 
-from .geometry import dedup, el, np
-from .proxy import FeatureProxy, InputProblem, add_property, new_feature, read_only, report
+from .geometry import dedup, el, global_element, global_shape, np
+from .proxy import (FeatureProxy, InputProblem, add_link, add_property, new_feature, read_only,
+                    report)
 
 SCALE_SHARE = 0.12    # automatic scale: the longest tooth is this share of the extent
 
@@ -53,8 +54,8 @@ def comb_core(source, subs=(), samples=60, scale=0.0):
         raise InputProblem(f"Samples = {samples} is not usable: 2 to 5000 teeth per curve")
     if not math.isfinite(scale):
         raise InputProblem(f"Scale = {scale}: must be a finite number (0 = automatic)")
-    shape = getattr(source, "Shape", None)
-    if shape is None or shape.isNull():
+    shape = global_shape(source)              # where it is drawn (a sketch in a Body: placed)
+    if shape.isNull():
         raise InputProblem("the comb's source has no geometry")
     per_curve = []
     proxy = getattr(source, "Proxy", None)
@@ -62,11 +63,8 @@ def comb_core(source, subs=(), samples=60, scale=0.0):
     if stored and all(isinstance(c, el().SmoothElastica) for c in stored[0]):
         per_curve = [_elastica_teeth(c, stored[1], samples) for c in stored[0]]
     else:
-        try:
-            edges = [shape.getElement(s) for s in subs if s.startswith("Edge")] if subs \
-                else shape.Edges
-        except (Part.OCCError, ValueError, IndexError):
-            raise InputProblem(f"{source.Label} has no {', '.join(subs)}") from None
+        edges = [global_element(source, s) for s in subs if s.startswith("Edge")] if subs \
+            else shape.Edges
         if not edges:
             raise InputProblem("the comb's source has no edges")
         per_curve = [_edge_teeth(e, samples) for e in edges]
@@ -114,8 +112,8 @@ class CombProxy(FeatureProxy):
     kind = "Comb"
 
     def setup(self, obj):
-        add_property(obj, "App::PropertyLinkSub", "Source", "Comb",
-                     "An Elastica result, or an object (and optionally its edges)")
+        add_link(obj, "App::PropertyLinkSub", "Source", "Comb",
+                 "An Elastica result, or an object (and optionally its edges)")
         add_property(obj, "App::PropertyInteger", "Samples", "Comb",
                      "Teeth per curve (2 to 5000)", 60)
         add_property(obj, "App::PropertyFloat", "Scale", "Comb",

@@ -204,7 +204,7 @@ def _two_edges(sources):
 def blend_sources(sources, open_panel=True):
     """Check two selected edges, create the Blend feature (recorded), open its panel."""
     from . import blend
-    from .geometry import is_sketch
+    from .geometry import global_element, is_sketch
     doc = _doc()
     if doc is None:
         return None
@@ -214,8 +214,7 @@ def blend_sources(sources, open_panel=True):
         return None
 
     def check():
-        e1 = edges[0][0].Shape.getElement(edges[0][1])
-        e2 = edges[1][0].Shape.getElement(edges[1][1])
+        e1, e2 = global_element(*edges[0]), global_element(*edges[1])
         a, b = blend.nearest_ends(e1, e2)
         plane = None
         if edges[0][0] == edges[1][0] and is_sketch(edges[0][0]):

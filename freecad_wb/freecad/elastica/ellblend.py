@@ -18,8 +18,8 @@ import FreeCAD as App
 
 from . import defaults
 from .geometry import el, np, part_bspline, plane_coordinates, to_3d
-from .proxy import (FeatureProxy, InputProblem, add_enum, add_length, add_property,
-                    check_number, check_tolerance, new_feature, read_only)
+from .proxy import (FeatureProxy, InputProblem, add_enum, add_length, add_link,
+                    add_property, check_number, check_tolerance, new_feature, read_only)
 from .sources import gather_vertices
 
 MODES = ["interpolate", "control"]
@@ -104,9 +104,9 @@ class EllipticBlendProxy(FeatureProxy):
     kind = "EllipticBlend"
 
     def setup(self, obj):
-        add_property(obj, "App::PropertyLinkSubList", "Points", "Input",
-                     "Four coplanar points, in order: vertices of sketches or shapes, or a sketch "
-                     "holding four sketch points")
+        add_link(obj, "App::PropertyLinkSubList", "Points", "Input",
+                 "Four coplanar points, in order: vertices of sketches or shapes, or a sketch "
+                 "holding four sketch points")
         add_enum(obj, "Mode", "Blend",
                  "interpolate: the curve passes through the four points (chord-length "
                  "parameters); control: the points are its control points", MODES)

@@ -16,8 +16,9 @@ import Part
 from . import defaults
 from .geometry import (chain_bspline, el, link_edge, np, part_bspline, polyline_length,
                        plane_coordinates, plane_curvature, to_3d, to_plane)
-from .proxy import (FeatureProxy, InputProblem, add_enum, add_length, add_property,
-                    check_degree, check_number, check_tolerance, new_feature, read_only)
+from .proxy import (FeatureProxy, InputProblem, add_enum, add_length, add_link,
+                    add_property, check_degree, check_number, check_tolerance, new_feature,
+                    read_only)
 from .sources import curve_order, gather_points
 
 MIN_POINTS = 6          # fewer points cannot determine the 7 (5 shape) parameters of a fit
@@ -593,8 +594,8 @@ class FitProxy(FeatureProxy):
 
     def setup(self, obj):
         tol, deg, model = defaults()
-        add_property(obj, "App::PropertyLinkSubList", "Source", "Input",
-                     "Sketch edges or vertices, a Points object, or a wire / 3D polyline to fit")
+        add_link(obj, "App::PropertyLinkSubList", "Source", "Input",
+                 "Sketch edges or vertices, a Points object, or a wire / 3D polyline to fit")
         add_property(obj, "App::PropertyFile", "CsvFile", "Input",
                      "A CSV / text file of x,y[,z] points (mm), used instead of Source when set")
         add_property(obj, "App::PropertyInteger", "SamplesPerEdge", "Input",
@@ -618,12 +619,12 @@ class FitProxy(FeatureProxy):
                      bool(getattr(obj, "PinEnds", False)))
         add_property(obj, "App::PropertyBool", "PinEnd", "Fit",
                      "The curve ends exactly at the last data point (one-piece fits)", False)
-        add_property(obj, "App::PropertyLinkSub", "StartTangent", "Fit",
-                     "An edge whose tangent (at its end nearest the data's start, projected "
-                     "into the fit plane) the curve follows there (one-piece fits; empty: free)")
-        add_property(obj, "App::PropertyLinkSub", "EndTangent", "Fit",
-                     "An edge whose tangent (at its end nearest the data's end, projected into "
-                     "the fit plane) the curve follows there (one-piece fits; empty: free)")
+        add_link(obj, "App::PropertyLinkSub", "StartTangent", "Fit",
+                 "An edge whose tangent (at its end nearest the data's start, projected "
+                 "into the fit plane) the curve follows there (one-piece fits; empty: free)")
+        add_link(obj, "App::PropertyLinkSub", "EndTangent", "Fit",
+                 "An edge whose tangent (at its end nearest the data's end, projected into "
+                 "the fit plane) the curve follows there (one-piece fits; empty: free)")
         for where in ("Start", "End"):
             add_enum(obj, f"{where}Continuity", "Fit",
                      f"How the curve meets its {where}Tangent edge: tangent = follows its "

@@ -11,7 +11,7 @@ import FreeCAD as App
 import Part
 
 from .geometry import bspline_edges, el, np, plane_coordinates, to_3d
-from .proxy import FeatureProxy, InputProblem, add_property, new_feature, read_only
+from .proxy import FeatureProxy, InputProblem, add_link, add_property, new_feature, read_only
 from .sources import gather_edges, sample_chain
 
 SAMPLES_PER_VERTEX = 20     # seed 002 §4.2: |p| ~ 20 |x|
@@ -82,8 +82,8 @@ class G2QuadProxy(FeatureProxy):
     kind = "G2Quad"
 
     def setup(self, obj):
-        add_property(obj, "App::PropertyLinkSubList", "Source", "Input",
-                     "The curve: edges of a sketch or any object (one open chain, in a plane)")
+        add_link(obj, "App::PropertyLinkSubList", "Source", "Input",
+                 "The curve: edges of a sketch or any object (one open chain, in a plane)")
         add_property(obj, "App::PropertyInteger", "Edges", "G2 quadratic",
                      "Edges of the affine arc-length polyline (3 to 5000): the B-splines have "
                      "about as many poles; the distance from the source falls like 1/Edges^2", 24)

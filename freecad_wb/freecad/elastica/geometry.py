@@ -38,6 +38,46 @@ def dedup(vecs, tol=1e-9):
     return out
 
 
+# ----------------------------------------------------------- where a source is drawn
+
+def container_placement(obj):
+    """The placement of the containers ``obj`` lies in (a PartDesign Body, an App::Part,
+    nested ones): what takes its Shape, its Points, its vertices (all in the container's
+    coordinates) to where the 3D view draws them. The identity at document level."""
+    if not (hasattr(obj, "getGlobalPlacement") and hasattr(obj, "Placement")):
+        return App.Placement()
+    return obj.getGlobalPlacement().multiply(obj.Placement.inverse())
+
+
+def global_shape(obj, name=""):
+    """``obj``'s shape, or its sub-element ``name`` ('Edge3', 'Vertex2'), in global
+    coordinates: where it is drawn, the placement of its containers applied (FreeCAD's
+    Part.getShape given their matrix: obj.Shape is in its container's coordinates, a
+    sketch's in its Body's). A copy; a null shape when there is none."""
+    try:
+        return Part.getShape(obj, name, needSubElement=bool(name),
+                             mat=container_placement(obj).toMatrix())
+    except (Part.OCCError, ValueError, IndexError, RuntimeError):
+        return Part.Shape()
+
+
+def global_element(obj, name):
+    """The sub-element ``name`` of ``obj`` in global coordinates (global_shape), or
+    InputProblem when it has none of that name."""
+    e = global_shape(obj, name)
+    if e.isNull():
+        raise InputProblem(f"{obj.Label} has no {name}")
+    return e
+
+
+def global_points(obj):
+    """A Points object's points in global coordinates: Points.Points carries its own
+    Placement (the kernel's transform), not its containers'."""
+    pts = list(obj.Points.Points)
+    plc = container_placement(obj)
+    return pts if plc.isIdentity() else [plc.multVec(p) for p in pts]
+
+
 # ----------------------------------------------------------- placements <-> frames
 
 def placement_from_frame(frame):
@@ -164,20 +204,20 @@ def bspline_edges(bsplines, plc):
 
 def link_edge(obj, name, geo_index=-1):
     """The global edge of a link: a sketch's geometry ``geo_index`` when >= 0 (stable
-    when the sketch changes), else ``obj.Shape``'s sub-element ``name``."""
+    when the sketch changes), else ``obj``'s sub-element ``name`` (global_element)."""
     if is_sketch(obj) and 0 <= geo_index < len(obj.Geometry):
         e = obj.Geometry[geo_index].toShape()
         e.transformShape(obj.getGlobalPlacement().toMatrix())
         return e
-    try:
-        return obj.Shape.getElement(name)
-    except (Part.OCCError, ValueError, IndexError):
-        raise InputProblem(f"{obj.Label} has no {name}") from None
+    return global_element(obj, name)
 
 
 def sketch_geo_of_edge(sketch, edge_name):
     """The index of the sketch geometry whose shape is the sketch edge 'EdgeN', or None."""
-    edge = sketch.Shape.getElement(edge_name)
+    try:
+        edge = global_element(sketch, edge_name)
+    except InputProblem:
+        return None
     inv = sketch.getGlobalPlacement().inverse()
     mid = inv.multVec(edge.valueAt(0.5 * (edge.FirstParameter + edge.LastParameter)))
     for i, g in enumerate(sketch.Geometry):
@@ -219,7 +259,7 @@ def sketch_curves(feature, sketch):
                            "sketch, or a new one")
     inv = sketch.getGlobalPlacement().inverse()
     curves = []
-    for e in feature.Shape.Edges:
+    for e in global_shape(feature).Edges:
         c = e.Curve.copy()
         if not isinstance(c, Part.BSplineCurve):
             c = e.toNurbs().Edges[0].Curve

@@ -58,6 +58,24 @@ def add_length(obj, name, group, tip, value=None):
     add_property(obj, LENGTH, name, group, tip, value)
 
 
+# What a feature reads is linked with global scope (App::PropertyLinkSubGlobal, ...), as
+# Draft's path array links its path: a feature at document level reads a sketch inside a
+# PartDesign Body or an App::Part, which a link of local scope may not reach (FreeCAD
+# warned "Link(s) to object(s) 'Sketch' go out of the allowed scope 'ElasticaFit'" at each
+# recompute). The features stay at document level, their shapes in global coordinates.
+def add_link(obj, kind, name, group, tip):
+    """A link property ``kind`` ('App::PropertyLinkSub', 'App::PropertyLinkSubList') of
+    global scope. Documents made before stored it with local scope: that property is
+    replaced, its value kept."""
+    scoped = kind + "Global"
+    if name in obj.PropertiesList and obj.getTypeIdOfProperty(name) == kind:
+        value = getattr(obj, name)
+        obj.removeProperty(name)
+        add_property(obj, scoped, name, group, tip, value)
+        return
+    add_property(obj, scoped, name, group, tip)
+
+
 def add_enum(obj, name, group, tip, values, value=None):
     """An enumeration property; when it has no values yet (new object) they are
     set, and the current one to value (default: the first)."""

@@ -1,13 +1,21 @@
 """Points, vertices and edges from what the user picked (a PropertyLinkSub(List)
 value: [(obj, (subname, ...)), ...]): sketch edges and vertices, sketches of points,
 Points objects, wires and 3D polylines, CSV files. Raises InputProblem with a
-message for anything unusable."""
+message for anything unusable.
+
+Everything read here is in global coordinates, where the 3D view draws it: a source
+inside a container (a PartDesign Body, an App::Part) placed off the origin has its
+Shape in the container's coordinates, so shapes and sub-elements are read through
+geometry.global_shape / global_element and Points through global_points, never
+obj.Shape (a fit of a sketch edge in a Body at z = 100 tilted 30 deg lay 89 mm from the
+edge drawn, its plane being the sketch's global placement)."""
 from __future__ import annotations
 
 import FreeCAD as App
 import Part
 
-from .geometry import dedup, el, is_sketch, np, polyline_length
+from .geometry import (dedup, el, global_element, global_points, global_shape, is_sketch, np,
+                       polyline_length)
 from .proxy import InputProblem
 
 
@@ -21,13 +29,6 @@ def sketch_points(sketch):
     plc = sketch.getGlobalPlacement()
     return [plc.multVec(g.toShape().Point) for g in sketch.Geometry
             if g.TypeId == "Part::GeomPoint"]
-
-
-def _element(obj, name):
-    try:
-        return obj.Shape.getElement(name)
-    except (Part.OCCError, ValueError, IndexError):
-        raise InputProblem(f"{obj.Label} has no {name}") from None
 
 
 def chain(edges):
@@ -101,10 +102,10 @@ def gather_points(sources, csv_file="", samples_per_edge=60):
                     f"edge{'s' if n_edges != 1 else ''}: a fit takes either, not both; select "
                     "its points (or its edges) in the 3D view rather than the whole sketch")
         if obj.isDerivedFrom("Points::Feature"):
-            points.extend(obj.Points.Points)      # placed already (its kernel's transform)
+            points.extend(global_points(obj))
             continue
-        shape = getattr(obj, "Shape", None)
-        if shape is None or shape.isNull():
+        shape = global_shape(obj)
+        if shape.isNull():
             raise InputProblem(f"{obj.Label} has no geometry")
         if not subs:
             if shape.Edges:
@@ -113,7 +114,7 @@ def gather_points(sources, csv_file="", samples_per_edge=60):
                 vertices.extend(v.Point for v in shape.Vertexes)
             continue
         for s in subs:
-            e = _element(obj, s)
+            e = global_element(obj, s)
             if s.startswith("Edge"):
                 edges.append(e)
             elif s.startswith("Vertex"):
@@ -211,11 +212,11 @@ def object_points(obj, curve_ordered=False):
         if pts or obj.Shape.isNull():
             return in_curve_order(pts) if curve_ordered else pts
     if obj.isDerivedFrom("Points::Feature"):
-        # Points.Points are placed already (the kernel's transform): a scan moved by its
-        # Placement was fitted twice as far (QA)
-        return in_curve_order(list(obj.Points.Points))
-    shape = getattr(obj, "Shape", None)
-    if shape is None or shape.isNull():
+        # Points.Points are placed by the object's own Placement (the kernel's transform):
+        # a scan moved by it was fitted twice as far (QA); global_points adds its containers'
+        return in_curve_order(global_points(obj))
+    shape = global_shape(obj)
+    if shape.isNull():
         raise InputProblem(f"{obj.Label} has no geometry")
     return wire_points(shape) or [v.Point for v in shape.Vertexes]
 
@@ -245,7 +246,7 @@ def gather_vertices(sources, need="four vertices, or a sketch of four points",
         for s in subs:
             if not s.startswith("Vertex"):
                 raise InputProblem(f"{obj.Label}.{s}: select vertices (points), not {s}")
-            pts.append(_element(obj, s).Point)
+            pts.append(global_element(obj, s).Point)
     plane = None
     if len(sketches) == 1 and all(o.Name in sketches for o, _ in sources):
         plane = next(o for o, _ in sources).getGlobalPlacement()
@@ -261,8 +262,8 @@ def gather_edges(sources):
     edges, sketches, plane = [], set(), None
     for obj, subs in sources:
         subs = _subs(subs)
-        shape = getattr(obj, "Shape", None)
-        if shape is None or shape.isNull() or not shape.Edges:
+        shape = global_shape(obj)
+        if shape.isNull() or not shape.Edges:
             raise InputProblem(f"{obj.Label} has no edges")
         if is_sketch(obj):
             sketches.add(obj.Name)
@@ -270,7 +271,7 @@ def gather_edges(sources):
         for s in subs or [f"Edge{i + 1}" for i in range(len(shape.Edges))]:
             if not s.startswith("Edge"):
                 raise InputProblem(f"{obj.Label}.{s}: select edges, not {s}")
-            edges.append(_element(obj, s))
+            edges.append(global_element(obj, s))
     if len(sketches) != 1 or any(not is_sketch(o) for o, _ in sources):
         plane = None
     return chain(edges), plane

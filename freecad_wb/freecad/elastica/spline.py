@@ -16,8 +16,9 @@ import FreeCAD as App
 from . import defaults
 from .geometry import edge_end, el, link_edge, np, part_bspline, plane_coordinates, \
     plane_curvature, to_3d
-from .proxy import (FeatureProxy, InputProblem, add_enum, add_length, add_property,
-                    check_degree, check_number, check_tolerance, new_feature, read_only)
+from .proxy import (FeatureProxy, InputProblem, add_enum, add_length, add_link,
+                    add_property, check_degree, check_number, check_tolerance, new_feature,
+                    read_only)
 from .sources import gather_vertices
 
 MODES = ["tension", "length"]
@@ -202,8 +203,8 @@ class SplineProxy(FeatureProxy):
 
     def setup(self, obj):
         tol, _, _ = defaults()
-        add_property(obj, "App::PropertyLinkSubList", "Points", "Input",
-                     "The ducks, in order: " + DUCKS_NEED)
+        add_link(obj, "App::PropertyLinkSubList", "Points", "Input",
+                 "The ducks, in order: " + DUCKS_NEED)
         add_enum(obj, "Mode", "Spline", "Solve for a given tension (default 0: the free "
                  "batten) or a given total length (the tension follows)", MODES, "tension")
         add_property(obj, "App::PropertyFloat", "Tension", "Spline",
@@ -221,9 +222,9 @@ class SplineProxy(FeatureProxy):
                      f"{end}Edge, or G2 to it (tangent and curvature; a guide duck a quarter "
                      "into that end's span, free to move across it, holds the batten there)",
                      END_CONDITIONS, "natural")
-            add_property(obj, "App::PropertyLinkSub", f"{end}Edge", "Spline",
-                         f"The edge the {which} point follows (tangent or G2) at its end "
-                         f"nearest that point")
+            add_link(obj, "App::PropertyLinkSub", f"{end}Edge", "Spline",
+                     f"The edge the {which} point follows (tangent or G2) at its end "
+                     f"nearest that point")
         add_property(obj, "App::PropertyFloat", "Stiffness", "Spline",
                      "Bending stiffness EI of the batten (N mm^2): the duck forces in newtons; "
                      "0 = in units of EI/2 (1/mm^2)", 0.0)
