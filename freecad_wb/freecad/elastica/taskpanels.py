@@ -41,7 +41,8 @@ class FitPanel(Panel):
                                     when=lambda: o.Model == "smooth" and not o.SplitAtInflection)
         self.step = self.number(g, "Resample", "ResampleStep", 0.0, 1e6, 0.5, "mm",
                                 "Equilateral resampling step before fitting (mm); 0 keeps the "
-                                "points (a split keyline then uses 1/100 of its length)")
+                                "points (a split keyline then uses 1/100 of the points' run, "
+                                "through their medians in runs: scan noise does not lengthen it)")
         self.split = self.check(g, "Split at the inflection", "SplitAtInflection",
                                 "Fit a keyline as one G2 curve of two elasticae meeting at its "
                                 "inflection (seed 000 §5); its ends stay free")
