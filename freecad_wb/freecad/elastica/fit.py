@@ -567,7 +567,8 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
                 polygon = _resampled(xy, step)
                 # a pinned end is the user's point, which the polygon stops short of by up
                 # to a step: the data runs on to it, no longer equilateral there
-                pins = [pin_start and _apart(polygon[0], xy[0]), pin_end and _apart(polygon[-1], xy[-1])]
+                pins = [pin_start and _apart(polygon[0], xy[0]),
+                        pin_end and _apart(polygon[-1], xy[-1])]
                 xy = n.vstack([xy[:1]] * pins[0] + [polygon] + [xy[-1:]] * pins[1])
                 if model == "discrete" and not any(pins):
                     fixed["h"] = step            # the polygon's segment (seed 000 §5.4)

@@ -265,7 +265,9 @@ def _cell_size(xy, target):
 def _heaviest_path(nodes, weight):
     """The path of the nodes' Euclidean minimum spanning tree (Prim, O(m^2)) that holds
     the most weight (the tree's diameter by node weight: from any node the heaviest path's
-    far end, then from there the heaviest path), as indices from one end to the other."""
+    far end, then from there the heaviest path), as indices from one end to the other.
+    Written here: FreeCAD's Python has numpy, not necessarily scipy's csgraph, and the
+    skeleton's few hundred cells need no more than this."""
     n = np()
     m = len(nodes)
     if m < 3:
