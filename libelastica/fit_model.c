@@ -516,7 +516,8 @@ void el__fit_map_inverse(const fit_map *m, const double *v, double *x)
  * open domain, with a fraction-to-the-boundary rule (as Ipopt's): a step may go at most
  * half the way to the boundary (farther, the Gauss-Newton model is not to be trusted).
  * The domains: the discrete h > 0 and, outside the start-state chart (whose variables
- * are unbounded), k > -1; the keyline's |k| < 1 and discrete h > 0.
+ * are unbounded), k > -1; the discrete keyline's |k| < 1 and h > 0 (the smooth one's
+ * variable is atanh k).
  */
 double el__fit_map_step_limit(const fit_map *m, const double *x, const double *d)
 {
@@ -525,7 +526,7 @@ double el__fit_map_step_limit(const fit_map *m, const double *x, const double *d
         double lo = -HUGE_VAL, hi = HUGE_VAL;
         if (m->ncurves == 2) {
             const int slot = m->nx == 9 ? (j >= 3 ? (j - 3) % 3 : -1) : (j >= 3 ? (j - 3) % 2 + 1 : -1);
-            if (slot == 1 + (m->model == FIT_DISCRETE)) { lo = -1.0; hi = 1.0; }    /* k */
+            if (slot == 2 && m->model == FIT_DISCRETE) { lo = -1.0; hi = 1.0; }     /* k (smooth: atanh k) */
             else if (slot == 0 && m->model == FIT_DISCRETE) lo = 0.0;               /* h */
         } else if (m->model == FIT_DISCRETE) {
             const int col = m->idx[j];
