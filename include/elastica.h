@@ -511,10 +511,10 @@ int el_fit_smooth(const double *xy, size_t n, const el_fit_options *opt,
  * >= 3 points each side) is its initial place, the index of the point nearest the
  * estimated inflection; it is refined first (each side fitted alone, the zeros of their
  * curvature; and, as a second start whose joint fit is kept when better, one elastica of
- * all the points split at its inflection) and then, smooth: each point's foot lies on either curve and J is free;
- * discrete: the data are an equilateral polygon (seed 000 §5.3), vertex j of `first`
- * <-> point split - j, vertex j of `second` <-> point split + j, and the split index is
- * moved while the joint fit improves; *joint (may be NULL) receives the final index
+ * all the points split at its inflection) and then, smooth: each point's foot lies on
+ * either curve and J is free; discrete: the data are an equilateral polygon (seed 000
+ * §5.3), vertex j of `first` <-> point split - j, vertex j of `second` <-> point
+ * split + j, and the split index is moved while the joint fit improves; *joint (may be NULL) receives the final index
  * (first has joint + 1 vertices, second n - joint). The discrete h of each side is
  * free (§5.4 Table 1), or held at opt->value[2] for both with opt->fixed[2].
  * opt: max_iter, tol and (discrete) fixed h are read; other fixed parameters, bounds,

@@ -532,8 +532,9 @@ def _solve_keyline(model: str, data, split: int, o):
         st = lib.el_fit_keyline_smooth(dptr(data), n, split, o, res[0], res[1], dptr(dist),
                                        dptr(foot), ffi.cast("int *", ffi.from_buffer(sides)))
     if st == lib.EL_EDOM:     # el_fit_keyline_*: a side is not inflectional
-        raise DomainError(lib.EL_EDOM, "fit_keyline: a side of the joint fit is not inflectional: the points "
-                          "show no inflection a keyline can split at; fit them as one curve")
+        raise DomainError(lib.EL_EDOM, "fit_keyline: a side of the joint fit is not "
+                          "inflectional: the points show no inflection a keyline can split "
+                          "at; fit them as one curve")
     if st not in (lib.EL_OK, lib.EL_ENOCONV, lib.EL_EMAXITER):
         check(st, "fit_keyline")
     if model == "discrete":
