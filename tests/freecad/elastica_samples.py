@@ -103,6 +103,20 @@ def two_lines_sketch(doc, name="Lines", placement=SKETCH_PLACEMENT):
     return sk
 
 
+def line_and_arc_sketch(doc, name="LineArc", placement=SKETCH_PLACEMENT):
+    """A line ending at (0, 0) heading 18 degrees up, and a quarter arc (radius 40 about
+    (100, -45)) whose end (60, -45) is the nearest, 75 mm away: the blend must turn back
+    up into it and no free batten (tension 0) joins them; by length, any length above
+    75 mm does (QA)."""
+    sk = doc.addObject("Sketcher::SketchObject", name)
+    sk.Placement = placement
+    sk.addGeometry(Part.LineSegment(App.Vector(-30, -10, 0), App.Vector(0, 0, 0)), False)
+    sk.addGeometry(Part.ArcOfCircle(Part.Circle(App.Vector(100, -45, 0), App.Vector(0, 0, 1), 40),
+                                    math.pi / 2, math.pi), False)
+    doc.recompute()
+    return sk
+
+
 def arc_sketch(doc, radius=20.0, name="Arc", placement=SKETCH_PLACEMENT):
     """A sketch with one circular arc of the given radius (a quarter turn)."""
     sk = doc.addObject("Sketcher::SketchObject", name)

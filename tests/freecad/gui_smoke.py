@@ -17,7 +17,8 @@ guide ducks), gui_fit_panel.png, gui_fit_ends.png (its warning line), gui_fit_g2
 discrete model: its warning line), gui_fit_outliers.png (a scan's two glitches on
 the warning line), gui_spline_g2.png (a G2 start),
 gui_spline_panel.png, gui_ellblend_panel.png (its warning line), gui_g2quad_panel.png,
-gui_comb_panel.png, gui_blend_undo.png and gui_fit_undo.png (Edit > Undo during an edit:
+gui_comb_panel.png, gui_blend_no_free_batten.png (the note why by length),
+gui_blend_undo.png and gui_fit_undo.png (Edit > Undo during an edit:
 the panel closed). The outcome goes
 to gui_smoke.result (first line PASS or FAIL); FreeCAD is then ended with os._exit
 because its exit status says nothing about a script. Only APIs present in FreeCAD
@@ -415,6 +416,25 @@ def blend_panel(doc, S):
     wait()
     check([o.Name for o in doc.Objects] == names and not T.CURRENT and not Gui.Control.activeDialog(),
           "Undo of a new feature closes its panel")
+    # ends no free batten joins: the feature is made by length, its panel says why; Cancel
+    sk3 = S.line_and_arc_sketch(doc, "LineArc", App.Placement(App.Vector(0, 0, -60),
+                                                                 App.Rotation()))
+    names = [o.Name for o in doc.Objects]
+    panel = open_panel(doc, "Elastica_Blend", [(sk3, "Edge1"), (sk3, "Edge2")],
+                       "Blend without a free batten")
+    nb = panel.obj
+    said = panel.warning[1].text()
+    check(nb.Mode == "length" and panel.mode.currentIndex() == 0 and panel.length.isEnabled()
+          and not nb.Status.startswith("error") and panel.list.count() >= 1,
+          f"blend without a free batten: by length {nb.Length}, {panel.list.count()} solutions "
+          f"({nb.Status})")
+    check(panel.warning[0].isVisible() and "No free batten" in said and "112 mm" in said,
+          f"blend without a free batten: the panel says why it is by length ({said})")
+    screenshot("gui_blend_no_free_batten.png")
+    panel.reject()
+    pump()
+    check([o.Name for o in doc.Objects] == names and not T.CURRENT,
+          "blend without a free batten: Cancel removes it")
     return b
 
 

@@ -357,6 +357,34 @@ class BlendTest(unittest.TestCase):
             self.assertTrue(C.MESSAGES, sources)
             self.assertEqual(S.doc_state(self.doc), before)
 
+    def test_command_without_a_free_batten_starts_by_length(self):
+        """A line's end and an arc's end no free batten joins (tension 0: no solution),
+        which blends by length or tension do: the command makes the feature by length
+        (the fairest of a few multiples of the ends' distance, here 1.5 x 75 mm), says
+        why, and the blend is a good one (it refused, and the panel where a length or a
+        tension works was never reached, QA)."""
+        sk = S.line_and_arc_sketch(self.doc)
+        e1, e2 = sk.Shape.Edges
+        a, b = Bl.nearest_ends(e1, e2)
+        with self.assertRaisesRegex(ValueError, "no elastic curve"):   # no free batten
+            Bl.blend_core(e1, a, e2, b)
+        n0 = len(self.doc.Objects)
+        del C.MESSAGES[:]
+        f = C.blend_sources([(sk, ["Edge1"]), (sk, ["Edge2"])], open_panel=False)
+        self.assertIsNotNone(f, C.MESSAGES)
+        self.assertEqual(len(self.doc.Objects), n0 + 1)
+        self.assertEqual((f.Mode, f.Length.Value), ("length", 112.0))
+        self.assertFalse(f.Status.startswith("error"), f.Status)
+        self.assertGreaterEqual(len(f.Lengths), 1)
+        self.assertEqual(f.Loops[0], 0)
+        self.assertAlmostEqual(f.Shape.Length, 112.0, delta=1e-3)
+        self.assertTrue(any("no free batten" in m and "112 mm" in m and "75 mm" in m
+                            for m in C.MESSAGES), C.MESSAGES)
+        # the recorded command makes the same feature (a macro replays it)
+        g = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Mode="length", Length=112.0)
+        self.doc.recompute()
+        self.assertEqual(list(g.Lengths), list(f.Lengths))
+
     def test_touching_and_noncoplanar_ends_are_rejected(self):
         import Part
         a = self.doc.addObject("Part::Feature", "A")

@@ -31,6 +31,11 @@ G2_TIP = ("G1: one elastica, tangent to both edges. G2: tangent and curvature co
           "length asked for (0: the free batten), bent from the chosen G1 solution")
 
 
+class NoBlend(InputProblem):
+    """Good ends, but no elastic curve joins them at this tension or length (another
+    tension or length may give one): not bad input."""
+
+
 def nearest_ends(e0, e1):
     """(at_end0, at_end1): the pair of ends of two edges closest to each other."""
     best = None
@@ -108,7 +113,7 @@ def blend_core(e0, at_end0, e1, at_end1, plane=None, mode="tension", value=0.0):
             if value == 0.0:                      # the free batten's own length
                 free = e.hermite(a0, t0, a1, t1, tension=0.0, tol=tol)
                 if not free:
-                    raise InputProblem("no free batten joins these ends: give a length")
+                    raise NoBlend("no free batten joins these ends: give a length")
                 value = float(free[0].length)
             if value <= dist:
                 raise InputProblem(f"length {value:.6g} mm is not longer than the {dist:.6g} mm "
@@ -119,7 +124,7 @@ def blend_core(e0, at_end0, e1, at_end1, plane=None, mode="tension", value=0.0):
     except (ValueError, ArithmeticError, RuntimeError) as exc:
         raise InputProblem(f"Hermite problem failed: {exc}") from None
     if not sols:
-        raise InputProblem("no elastic curve joins these ends with this "
+        raise NoBlend("no elastic curve joins these ends with this "
                            + ("length" if mode == "length" else "tension"))
     # under tension the curve minimises the bending energy plus sigma times its length:
     # ordered by that (at sigma > 0 a huge gentle loop has the least bending energy alone)
@@ -129,6 +134,39 @@ def blend_core(e0, at_end0, e1, at_end1, plane=None, mode="tension", value=0.0):
         sols, energies = [sols[j] for j in order], [energies[j] for j in order]
     ends = ((e0, at_end0, a0, t0), (e1, at_end1, a1, t1))
     return {"curves": sols, "energies": energies, "placement": plane, "distance": dist, "ends": ends}
+
+
+# Where the free batten (tension 0) does not exist (its bending energy falls without end
+# as the curve gets longer: no length is the batten's own), the Elastic blend command
+# starts by length at the fairest of these multiples of the distance between the ends.
+LENGTH_MULTIPLES = (1.25, 1.5, 2.0, 3.0)
+
+
+def starting_length(e0, at_end0, e1, at_end1, plane=None):
+    """A length to start a blend by, where the free batten does not join the ends: of
+    LENGTH_MULTIPLES times their distance (3 digits), the one whose lowest-energy solution
+    is the fairest, loop-free first, then by its bending energy times its length (the
+    energy of its shape whatever its size). Returns (length, note for the user); raises
+    NoBlend when no such length has a solution."""
+    dist = (edge_end(e1, at_end1)[0] - edge_end(e0, at_end0)[0]).Length
+    best = None
+    for m in LENGTH_MULTIPLES:
+        length = float(f"{m * dist:.3g}")
+        try:
+            c = blend_core(e0, at_end0, e1, at_end1, plane, "length", length)["curves"][0]
+        except NoBlend:
+            continue
+        key = (describe(c)[1] > 0, bending_energy(c) * length)
+        if best is None or key < best[0]:
+            best = (key, m, length)
+    if best is None:
+        raise NoBlend("no elastic curve joins these ends, free or at "
+                      f"{', '.join(f'{m:g}' for m in LENGTH_MULTIPLES)} times their distance")
+    _, m, length = best
+    return length, (f"no free batten (tension 0) joins these ends: solved for a length "
+                    f"instead, {length:g} mm ({m:g} \u00d7 the {dist:.4g} mm between them, the "
+                    f"fairest of {LENGTH_MULTIPLES[0]:g} to {LENGTH_MULTIPLES[-1]:g} \u00d7); "
+                    "change it, or solve for a tension > 0")
 
 
 def inflections(pieces):
@@ -470,5 +508,6 @@ def copy_into_sketch(blend, sketch=None):
     return write_to_sketch(blend, sketch or blend.Edge1[0])[0]
 
 
-__all__ = ["BlendProxy", "blend_core", "g2_blend", "make", "copy_into_sketch", "nearest_ends",
+__all__ = ["BlendProxy", "NoBlend", "blend_core", "starting_length", "g2_blend", "make",
+           "copy_into_sketch", "nearest_ends",
            "edge_end", "MODES", "CONTINUITIES"]

@@ -91,13 +91,15 @@ def _create(doc, title, code, keep_open=False):
 def _check_and_create(title, what, check, code, open_panel):
     """Run ``check()`` (the feature's core on the input; InputProblem = bad input),
     then create the feature by the recorded ``code`` (a string, or a function giving
-    it after the check) and open its task panel. Returns the new feature or None
-    (message printed, document unchanged)."""
+    it after the check) and open its task panel. ``check`` may return a note (why the
+    command chose other values than the usual defaults): said in the report view and at
+    the top of the panel. Returns the new feature or None (message printed, document
+    unchanged)."""
     if open_panel and dialog_open():
         message(DIALOG_OPEN)
         return None
     try:
-        check()
+        note = check()
     except InputProblem as exc:
         message(str(exc))
         return None
@@ -107,9 +109,11 @@ def _check_and_create(title, what, check, code, open_panel):
     doc = App.ActiveDocument
     panel = open_panel and App.GuiUp
     obj = _create(doc, title, code() if callable(code) else code, keep_open=panel)
+    if obj is not None and note:
+        message(f"{obj.Label}: {note}", error=False)
     if panel and obj is not None:
         from . import taskpanels
-        taskpanels.open_for(obj, created=True)
+        taskpanels.open_for(obj, created=True, note=note or "")
     return obj
 
 
@@ -213,19 +217,31 @@ def blend_sources(sources, open_panel=True):
         message("select exactly two edges (their nearest ends are joined)")
         return None
 
+    opts = {}
+
     def check():
+        """The free batten (the default); where none joins the ends (good ends all the
+        same), a length that gives blends (blend.starting_length): the feature is made
+        by it and its panel opens, where the designer changes it."""
         e1, e2 = global_element(*edges[0]), global_element(*edges[1])
         a, b = blend.nearest_ends(e1, e2)
         plane = None
         if edges[0][0] == edges[1][0] and is_sketch(edges[0][0]):
             plane = edges[0][0].getGlobalPlacement()
-        blend.blend_core(e1, a, e2, b, plane)
+        try:
+            blend.blend_core(e1, a, e2, b, plane)
+            return None
+        except blend.NoBlend:
+            length, note = blend.starting_length(e1, a, e2, b, plane)
+        opts.update(Mode="length", Length=length)
+        return note
 
     return _check_and_create(
         "Elastic blend", "blend", check,
-        "from freecad.elastica import blend as elastica_blend\n"
+        lambda: "from freecad.elastica import blend as elastica_blend\n"
         f"_blend = elastica_blend.make({_ref_doc(doc)}, ({_ref(edges[0][0])}, {edges[0][1]!r}), "
-        f"({_ref(edges[1][0])}, {edges[1][1]!r}))\n{_ref_doc(doc)}.recompute()", open_panel)
+        f"({_ref(edges[1][0])}, {edges[1][1]!r}){', ' + _kw(opts) if opts else ''})\n"
+        f"{_ref_doc(doc)}.recompute()", open_panel)
 
 
 class BlendCommand(_Command):

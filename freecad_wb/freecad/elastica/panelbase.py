@@ -170,8 +170,9 @@ class Panel:
     icon_name = "elastica"
     gone = ""           # why the panel lost its feature or its transaction (``lost``)
 
-    def __init__(self, obj, created=True):
+    def __init__(self, obj, created=True, note=""):
         self.obj = obj
+        self.note = note                # why the command chose what it did (warning line)
         self.doc = obj.Document
         self.name, self.doc_name = obj.Name, obj.Document.Name
         self.watch = _Watch(self)
@@ -242,9 +243,10 @@ class Panel:
         return w
 
     def warnings(self):
-        """What the warning line says (a list of sentences; none: hidden): the
-        feature's Warnings, capitalised."""
-        return [w[0].upper() + w[1:] for w in getattr(self.obj, "Warnings", [])]
+        """What the warning line says (a list of sentences; none: hidden): the command's
+        note, then the feature's Warnings, capitalised."""
+        said = ([self.note] if self.note else []) + list(getattr(self.obj, "Warnings", []))
+        return [w[0].upper() + w[1:] for w in said]
 
     def number(self, grid, label, prop, lo, hi, step, unit, tip, decade=False, when=None):
         """A spin box bound live to the float property prop."""

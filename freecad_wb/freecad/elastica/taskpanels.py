@@ -178,6 +178,7 @@ class BlendPanel(Panel):
         o = self.obj
         self.picked = None              # the user's choice of solution, kept across edits
         g = self.box("Elastic blend")
+        self.warning_row(g)             # why the command did not start at the free batten
         self.mode = self.choice(g, "Solve for", "Mode", B.MODES, ["a length", "a tension"],
                                 "A tension (0: the free batten, the fairest curve) or a given "
                                 "arc length")
@@ -231,6 +232,8 @@ class BlendPanel(Panel):
             return 1e-4
 
     def changed(self, prop):
+        if prop in ("Mode", "AtEnd1", "AtEnd2"):
+            self.note = ""              # the command's choice of mode is the user's now
         if prop == "Mode" and self.obj.Mode == "length" and self.obj.Lengths:
             # length mode starts from the length of the curve on screen
             self.obj.Length = self.obj.BlendLength
@@ -516,9 +519,10 @@ PANELS = {"Fit": FitPanel, "Blend": BlendPanel, "Spline": SplinePanel,
           "EllipticBlend": EllipticBlendPanel, "G2Quad": G2QuadPanel, "Comb": CombPanel}
 
 
-def open_for(obj, created=False):
+def open_for(obj, created=False, note=""):
     """Show the task panel of an Elastica feature. ``created``: a command has just
-    made it inside a still open transaction (OK commits it, Cancel removes it)."""
+    made it inside a still open transaction (OK commits it, Cancel removes it);
+    ``note``: why the command chose the values it did (the panel's warning line)."""
     panel = PANELS.get(getattr(getattr(obj, "Proxy", None), "kind", ""))
     if panel is None:
         return False
@@ -530,7 +534,7 @@ def open_for(obj, created=False):
             return True
         message(DIALOG_OPEN)
         return False
-    p = panel(obj, created or bool(getattr(obj.Proxy, "fresh", False)))
+    p = panel(obj, created or bool(getattr(obj.Proxy, "fresh", False)), note=note)
     obj.Proxy.fresh = False
     CURRENT[:] = [p]
     Gui.Control.showDialog(p)
