@@ -933,31 +933,25 @@ class FitDistanceTest(unittest.TestCase):
         self.assertIn("cubic", f.ErrorMeasure)
 
     def test_distances_to_a_looping_curve_are_to_its_nearest_point(self):
-        """A discrete fit held by a start tangent and an end G2 join, which loops far above
-        its 12 points (tilted sketches): each point's distance is to its NEAREST point on
-        the curve drawn, as Part's distToShape measures it, not the local minimum Newton
-        reaches from the point's polygon foot (rms 10.55 / max 15.3 mm were reported,
-        4.67 / 7.07 measured; one point 13.03 mm where the curve passes 2.25 mm, QA)."""
+        """A discrete fit's distances are to the NEAREST point of the cubic drawn, not the
+        local minimum Newton reaches from each point's polygon foot: on a curve that loops
+        back past its points that stops on the wrong pass (QA: a fit held by a start tangent
+        and an end G2 join looping 130 mm above its 12 points reported rms 10.55 / max 15.3
+        mm, 4.67 / 7.07 measured; one point 13.03 mm where the curve passes 2.25 mm). Here
+        the feet start half the curve away, on a loop's other passes; the distances agree
+        with Part's distToShape on the drawn curve."""
         import numpy as np
-        plc = App.Placement(App.Vector(5, 7, 3), App.Rotation(App.Vector(0.3, 1, 0.2), 25))
-        t = np.linspace(0.05, 0.95, 12)
-        xy = np.c_[100 * t, 20 * np.sin(math.pi * t) +
-                   np.random.default_rng(3).normal(0, 0.2, 12)]
-        pts = S.points_sketch(self.doc, xy, "Arch", placement=plc)
-        geo = self.doc.addObject("Sketcher::SketchObject", "Geo")
-        geo.Placement = plc
-        geo.addGeometry(Part.LineSegment(App.Vector(-40, -15, 0), App.Vector(0, 0, 0)), False)
-        geo.addGeometry(Part.ArcOfCircle(Part.Circle(App.Vector(100, -30, 0),
-                                                     App.Vector(0, 0, 1), 30),
-                                         math.pi / 2, math.pi), False)
-        self.doc.recompute()
-        f = Fi.make(self.doc, [(pts, [])], Model="discrete", StartTangent=(geo, ["Edge1"]),
-                    EndTangent=(geo, ["Edge2"]), StartContinuity="tangent", EndContinuity="G2")
-        self.doc.recompute()
-        self.assertFalse(f.Status.startswith("error"), f.Status)
-        self._check_distances(f, f.Shape, 1e-9)
-        self.assertLess(f.MaxError, 7.1)
-        self.assertAlmostEqual(abs(f.Distances[0]), 2.249, delta=1e-3)
+        c = el.SmoothElastica(x0=0.0, y0=0.0, phi=0.0, mu=1.0, k=1.3, q=0.0, length=14.0)
+        bs = c.to_bspline(1e-9, 3)
+        s = np.linspace(0.5, 13.5, 40)
+        offset = np.random.default_rng(3).normal(0.0, 0.05, (40, 2))
+        data = c.points(s) + offset
+        start = (s + 0.5 * c.length) % c.length - bs.domain[0]    # feet on the far passes
+        feet, dist = Fi._drawn_distances(bs, data, start)
+        edge = Fi.part_bspline(bs, App.Placement()).toShape()
+        part = np.array([edge.distToShape(Part.Vertex(App.Vector(x, y, 0)))[0] for x, y in data])
+        self.assertLess(np.abs(np.abs(dist) - part).max(), 1e-9)
+        self.assertLess(np.abs(np.hypot(*(feet - data).T) - part).max(), 1e-9)
 
     def test_keyline_distances_are_point_to_shape(self):
         f = Fi.make(self.doc, [(self.sk, [])], Model="smooth", SplitAtInflection=True,
