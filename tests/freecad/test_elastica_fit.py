@@ -18,6 +18,7 @@ from freecad.elastica import commands as C
 from freecad.elastica import comb as Co
 from freecad.elastica import fit as Fi
 from freecad.elastica import geometry as G
+from freecad.elastica import nearest as Nr
 
 K_TRUE = S.KEYLINE["k"]
 
@@ -947,7 +948,7 @@ class FitDistanceTest(unittest.TestCase):
         offset = np.random.default_rng(3).normal(0.0, 0.05, (40, 2))
         data = c.points(s) + offset
         start = (s + 0.5 * c.length) % c.length - bs.domain[0]    # feet on the far passes
-        feet, dist = Fi._drawn_distances(bs, data, start)
+        feet, dist = Nr.drawn_distances(bs, data, start)
         edge = Fi.part_bspline(bs, App.Placement()).toShape()
         part = np.array([edge.distToShape(Part.Vertex(App.Vector(x, y, 0)))[0] for x, y in data])
         self.assertLess(np.abs(np.abs(dist) - part).max(), 1e-9)
