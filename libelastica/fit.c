@@ -256,7 +256,10 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
      * within the first fifth of a 130 mm curve, with 0.02 mm noise, and its far end) joined
      * with the true curve's own end points and tangents ended at rms 3.0 where the true
      * curve, the start, has 0.024 (QA) */
-    const int caller_twice = o.use_initial && o.constraints && !(flags & FIT_RUN_INNER) && kind == FIT_ORTHOGONAL;
+    /* (and el__fit_follow_points' refit from the paired curve: from the held start alone, a
+     * start point and tangent on 40 uneven points went back to a loop of length 38.8 for
+     * points spanning 10.1, rms 0.067; from its feet 0.090 along them, QA) */
+    const int caller_twice = o.use_initial && o.constraints && kind == FIT_ORTHOGONAL;
     if (o.use_initial) {
         for (int j = 0; j < FIT_NP; j++) cand[0][j] = el__fit_norm_param(model, j, init[j], cx, cy, sc);
         ncand = 1;
@@ -325,11 +328,13 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
      * and its rows' runs cost three times as much) */
     const int sketch_rows = need_ipopt && n < SKETCH_POINTS && model == FIT_SMOOTH && !(flags & FIT_RUN_INNER);
     int free_start = o.constraints && (!need_ipopt || sketch_rows) && !o.use_initial && !lm_only;
-    /* a discrete fit with rows or both ends held: the smooth fit's curve
-     * (el__fit_smooth_start) as its last start, where nothing holds the smooth fit's
-     * parameters to other meanings (fixed values, bounds, the signed k range) */
-    int smooth_start = model == FIT_DISCRETE && (need_ipopt || ends_chart) && !o.use_initial && !lm_only &&
-                       !o.limited_memory && !(o.constraints & EL_CONSTRAIN_K) && !(flags & FIT_RUN_ENDS_HELD);
+    /* a discrete fit with rows, a held start state or both ends held: the smooth fit's curve
+     * (el__fit_smooth_start) as a start, fitted from where it is (no held start's
+     * continuation), where nothing holds the smooth fit's parameters to other meanings (fixed
+     * values, bounds, the signed k range; with rows, not for L-BFGS); the first but with held
+     * ends (below) */
+    int smooth_start = model == FIT_DISCRETE && (need_ipopt || ends_chart || staged) && !o.use_initial && !lm_only &&
+                       (!o.limited_memory || !need_ipopt) && !(o.constraints & EL_CONSTRAIN_K) && !(flags & FIT_RUN_ENDS_HELD);
     for (int j = 0; j < FIT_NP && smooth_start; j++)     /* the caller's (o holds a start point in x0, y0) */
         if (opt->fixed[j] || isfinite(opt->lower[j]) || isfinite(opt->upper[j])) smooth_start = 0;
     size_t free_ci = (size_t)-1;    /* the unconstrained start's index in cand, once added */
@@ -398,6 +403,21 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
         if (nst == EL_OK) { natural_ci = 0; ncand++; }
         else memmove(cand[0], cand[1], ncand * sizeof cand[0]);
     }
+    /* The guesses' fits with a held start tangent or rows end far from the points (a scribble
+     * of 888 self-crossings, 25 x the data's length, at the lowest objective: its points'
+     * distances are searched near their own vertices), or at a length of 10 for points
+     * spanning 5, even from the free fit; from the smooth fit's curve, 0.0205 at once, as the
+     * smooth model's (300 uneven points of an elliptic arc, true start point and tangent, QA).
+     * With rows each guess crept to 2400-4500 Ipopt iterations (2000 points: 26 s). */
+    size_t smooth_ci = (size_t)-1;
+    if (smooth_start && !ends_chart) {
+        memmove(cand[1], cand[0], ncand * sizeof cand[0]);
+        const int sst = el__fit_smooth_start(xy, n, opt, cx, cy, sc, cand[0]);
+        if (sst == EL_ENOMEM) { st = sst; goto done; }
+        if (sst == EL_OK) { smooth_ci = 0; ncand++; }
+        else memmove(cand[0], cand[1], ncand * sizeof cand[0]);
+        smooth_start = 0;
+    }
     /* joined G1 at both ends (smooth, by distance, nothing else held or bounded): after the
      * guesses, the members of the Hermite families of those ends nearest the points
      * (fit_g1_family.c, up to G1_STARTS: of other families, and one that follows them) whose
@@ -431,7 +451,7 @@ candidates:
                 ci--;           /* the smooth start in this slot */
                 continue;
             }
-            if (use_free) free_ci = ncand;
+            if (use_free) free_ci = ncand; else smooth_ci = ncand;
             ncand++;
         }
         double p0[FIT_NP], x0[FIT_MAXX];
@@ -450,7 +470,7 @@ candidates:
         }
         first_feet(&ob, t, p0[6]);
         const int family = ci == natural_ci && model == FIT_SMOOTH;   /* the natural batten's member */
-        const int from_smooth = ci == natural_ci && model == FIT_DISCRETE;   /* its discrete start */
+        const int from_smooth = (ci == natural_ci || ci == smooth_ci) && model == FIT_DISCRETE;   /* the smooth fit's curve */
         /* a curve's own start (the caller's, or a sketch's free fit with rows): from its feet,
          * neither the held start's continuation nor the paired start, which moved the
          * free fit above from its curve onto the same figure-eight */
@@ -476,7 +496,7 @@ candidates:
                 first_feet(&ob, t, p0[6]);      /* again (the stages moved them) */
             }
             if ((st = el__fit_solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, no_polish, x0, best.f, &r, tmp,
-                                              (staged && pre > 0) || polish_run || from_smooth || ci < nfamily,
+                                              (staged && pre > 0) || polish_run || (from_smooth && ci == natural_ci) || ci < nfamily,
                                               polish_run || from_curve)))
                 goto done;
             r.iters += pre;
@@ -532,11 +552,15 @@ candidates:
         last_is_best = ci == free_ci ? r_meets && r.f < best.f
                      : need_ipopt ? (r_meets && !best_meets) || (r_meets == best_meets && r.f < best.f)
                      : r.f < best.f;
-        /* a family member's fit that crosses itself or strays from its points does not
-         * replace one that does neither (7 noisy points along a near-straight curve: a
-         * loop in a gap between them, rms 0.84 x the kept fit's, within el__fit_stray's
-         * allowance for a curved arc) */
-        if (last_is_best && ci < nfamily && best_meets && el__fit_wanders(&ob, r.x, &r_strays, noise_rms, d, fs, tmp))
+        /* a constrained fit that crosses itself or strays from its points (el__fit_wanders)
+         * does not replace one that does neither (a G1 family member: 7 noisy points along a
+         * near-straight curve, a loop in a gap between them, rms 0.84 x the kept fit's, within
+         * el__fit_stray's allowance for a curved arc; el__fit_follow_points' refit of the
+         * hull profile above from the paired curve: its held start's loop below its feet's
+         * fit). Not the other way round: a fit pinned away from clustered points strays by
+         * that measure (test_fit_basin.c's clustered G1 sketch: 28 x its true curve's rms) */
+        if (last_is_best && o.constraints && !lm_only && isfinite(best.f) && (best_meets || !need_ipopt) &&
+            el__fit_wanders(&ob, r.x, &r_strays, noise_rms, d, fs, tmp))
             last_is_best = el__fit_wanders(&ob, best.x, &best_strays, noise_rms, d, fs, tmp);
         if (last_is_best) {
             best = r; best_strays = r_strays; best_meets = r_meets; memcpy(best_init, p0, sizeof p0);
@@ -546,6 +570,19 @@ candidates:
         /* the natural batten's member meets the rows: every fit that does is a member of
          * the family already searched */
         if (ci == natural_ci && r_meets) break;
+        /* paired by the spacing test alone, the smooth start's polygon certified and kept:
+         * where its points slip along it, the guesses fit a pairing that el__fit_unpaired
+         * replaces (2000 uneven points, G1 at both ends: three guesses' continuations crept
+         * 2400-4500 iterations each, 26 s, before its refit by distance from this one) */
+        if (ci == smooth_ci && last_is_best && best.status == EL_OK && kind == FIT_PAIRED &&
+            o.distance == EL_DISTANCE_AUTO && !(flags & FIT_RUN_INNER) && (best_meets || !need_ipopt)) {
+            double vs[2][FIT_NP], s2 = 0.0;
+            if (el__fit_map_eval(&map, best.x, vs, NULL) == EL_OK &&
+                el__fit_curve_distances(&ob, best.x, vs, 0, d, fs, tmp) == EL_OK) {
+                for (size_t i = 0; i < n; i++) s2 += d[i] * d[i];
+                if (el__fit_slips(n, vs[0][2], sqrt(s2 / (double)n), fs)) break;
+            }
+        }
         const double rms = sqrt(2.0 * best.f);
         if (rms <= 1e-10 || map.nx == 0) break;
         if (ci < nfamily) continue;    /* every family member fitted */

@@ -158,6 +158,8 @@ typedef struct fit_objective {
     /* smooth orthogonal: a sampled search for feet on another pass (el__fit_feet_elsewhere)
      * has seen a pass within reach of a point, other than its own (el__fit_objective_init: 0) */
     int other_passes;
+    /* the points' own polygon crosses itself (el__fit_wanders; 0 until known, then 1: no, 2: yes) */
+    int points_cross;
     size_t split;                /* discrete keyline: the data index of the joint */
     double *work;                /* block buffers */
     /* discrete orthogonal: the polygon (2n), distances and feet (n each) of the last
@@ -293,12 +295,15 @@ double el__fit_stray(const double *xy, size_t n, const double *fs, double L, dou
  * (el__fit_stray > FIT_STRAY; noise: el__fit_noise_rms, normalised); d, fs (n each: ob's
  * rest arrays, or the caller's) overwritten with its distances and feet (input units). */
 int el__fit_strays_at(fit_objective *ob, const double *x, double noise, double *d, double *fs, double *tmp);
-/* fit_refit.c: whether the smooth curve at x (ob's map, one curve) crosses itself (its
- * polygon of 256 chords: a loop narrower than ~1/256 of its length is missed); 0 where it
- * cannot be evaluated. */
+/* fit_refit.c: whether the curve at x (ob's map, one curve) crosses itself: the smooth
+ * curve's polygon of 256 chords, the discrete polygon's chords through every
+ * ceil((n - 1) / 256)-th vertex (its own segments up to 257 vertices); a loop narrower
+ * than ~1/256 of its length is missed. 0 where it cannot be evaluated; EL_ENOMEM (2). */
 int el__fit_crosses_itself(const fit_objective *ob, const double *x);
-/* fit_refit.c: whether the fit at x crosses itself or strays from its points (*strays:
- * el__fit_strays_at's answer, -1 until computed, then kept; d, fs as its). */
+/* fit_refit.c: whether the fit at x crosses itself where the points' own polygon (its
+ * chords through every ceil((n - 1) / 64)-th point: the noise of dense points does not
+ * cross) does not, or strays from its points (*strays: el__fit_strays_at's answer, -1
+ * until computed, then kept; d, fs as its). */
 int el__fit_wanders(fit_objective *ob, const double *x, int *strays, double noise, double *d, double *fs, double *tmp);
 /* fit_refit.c: idx (n entries) the indices 0..n-1 in the order of fs, ties by index;
  * 0, or -1 when out of memory (NaN feet far out of order take n pairs of workspace) */
@@ -481,6 +486,10 @@ int el__fit_fallback(int model, const double *xy, size_t n, const el_fit_options
  * its result, which replaces it when lower; res->status, or EL_ENOMEM. */
 int el__fit_unpaired(int model, const double *xy, size_t n, const el_fit_options *opt, fit_out *res, double *d,
                      double *fs);
+/* fit_restart.c: whether the points slip along a paired fit's polygon (segment h, their
+ * feet fs and rms distance to it, one units) by more than PAIRING_SLIP times their
+ * distance (el__fit_unpaired's test). */
+int el__fit_slips(size_t n, double h, double rms, const double *fs);
 /* fit_restart.c: a fit pinned at both ends with a zero start curvature (*res, d, fs, from the
  * start-state chart with the end point as Ipopt's rows) fitted again in the ends chart with
  * that curvature held (FIT_RUN_ENDS_HELD), which replaces it when certified and lower or

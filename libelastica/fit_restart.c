@@ -226,18 +226,22 @@ static int rerun_from(int model, const double *xy, size_t n, const el_fit_option
  * 3.1 x (0.14 for 0.099). */
 #define PAIRING_SLIP 1.3
 
-int el__fit_unpaired(int model, const double *xy, size_t n, const el_fit_options *opt, fit_out *res, double *d,
-                     double *fs)
+int el__fit_slips(size_t n, double h, double rms, const double *fs)
 {
     /* in units of the segment h (slips squared in input units underflowed at 1e-160, points
      * staying paired at 5e9 x the orthogonal fit's rms, and overflowed at 1e160) */
-    const double h = res->params[2];
     double su = 0.0;
     for (size_t i = 0; i < n; i++) {
         const double u = fs[i] / h - (double)i;
         su += u * u;
     }
-    if (!(sqrt(su / (double)n) > PAIRING_SLIP * (res->rms / h) + 1e-4 * (double)(n - 1))) return res->status;
+    return sqrt(su / (double)n) > PAIRING_SLIP * (rms / h) + 1e-4 * (double)(n - 1);
+}
+
+int el__fit_unpaired(int model, const double *xy, size_t n, const el_fit_options *opt, fit_out *res, double *d,
+                     double *fs)
+{
+    if (!el__fit_slips(n, res->params[2], res->rms, fs)) return res->status;
     fit_out alt;
     double *buf;
     const int st = rerun_from(model, xy, n, opt, EL_DISTANCE_ORTHOGONAL, 0, res, &alt, &buf);
