@@ -300,6 +300,9 @@ int el__fit_strays_at(fit_objective *ob, const double *x, double noise, double *
  * ceil((n - 1) / 256)-th vertex (its own segments up to 257 vertices); a loop narrower
  * than ~1/256 of its length is missed. 0 where it cannot be evaluated; EL_ENOMEM (2). */
 int el__fit_crosses_itself(const fit_objective *ob, const double *x);
+/* fit_refit.c: whether the curve at x crosses itself (el__fit_crosses_itself) where the
+ * points' own polygon (as el__fit_wanders) does not. */
+int el__fit_loops(fit_objective *ob, const double *x);
 /* fit_refit.c: whether the fit at x crosses itself where the points' own polygon (its
  * chords through every ceil((n - 1) / 64)-th point: the noise of dense points does not
  * cross) does not, or strays from its points (*strays: el__fit_strays_at's answer, -1

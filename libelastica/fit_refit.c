@@ -458,12 +458,17 @@ int el__fit_crosses_itself(const fit_objective *ob, const double *x)
     return cross;
 }
 
-int el__fit_wanders(fit_objective *ob, const double *x, int *strays, double noise, double *d, double *fs, double *tmp)
+int el__fit_loops(fit_objective *ob, const double *x)
 {
     const int cross = el__fit_crosses_itself(ob, x);
     if (cross == EL_ENOMEM) return 0;
     if (cross && !ob->points_cross) ob->points_cross = 1 + chords_cross(ob->xy, ob->n, chord_step(ob->n, POINT_CHORDS));
-    if (cross && ob->points_cross == 1) return 1;
+    return cross && ob->points_cross == 1;
+}
+
+int el__fit_wanders(fit_objective *ob, const double *x, int *strays, double noise, double *d, double *fs, double *tmp)
+{
+    if (el__fit_loops(ob, x)) return 1;
     if (*strays < 0) *strays = el__fit_strays_at(ob, x, noise, d, fs, tmp);
     return *strays;
 }
