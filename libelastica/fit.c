@@ -98,6 +98,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
     el__gsl_quiet();
     double cx, cy, sc;
     if ((st = el__fit_normalisation(xy, n, &cx, &cy, &sc))) return st;
+    const double norm[3] = {cx, cy, sc};
 
     /* start point: x0, y0 held */
     if (o.constraints & EL_CONSTRAIN_START_POINT) {
@@ -831,22 +832,10 @@ candidates:
          * it gained on 2 of 100 at +30 s CPU (/tmp/scrib/sweep.py: smooth, start point and
          * tangent 0.1 rad off the data's, 0.1397 -> 0.1321, 0.1263 -> 0.1246 as before the
          * rule, and 0.1250 -> 0.1217) */
-        else if (wander_kept && o.constraints && model == FIT_SMOOTH) {
-            fit_out alt = *res;
-            double *ab = malloc(sizeof(double) * 2 * n);
-            if (!ab) { st = EL_ENOMEM; goto done; }
-            memcpy(ab, d, sizeof(double) * n); memcpy(ab + n, fs, sizeof(double) * n);
-            st = el__fit_follow_points(model, xy, n, opt, flags, noise_in, sc, stray, &alt, ab, ab + n);
-            double pa[FIT_NP], xa[FIT_MAXX];
-            for (int j = 0; j < FIT_NP; j++) pa[j] = el__fit_norm_param(model, j, alt.params[j], cx, cy, sc);
-            el__fit_map_inverse(&map, pa, xa);
-            if (st == EL_OK && alt.rms < res->rms && !el__fit_loops(&ob, xa)) {
-                *res = alt;
-                memcpy(d, ab, sizeof(double) * n); memcpy(fs, ab + n, sizeof(double) * n);
-            }
-            free(ab);
-            if (st == EL_OK) st = res->status;
-        }
+        else if (wander_kept && o.constraints && model == FIT_SMOOTH &&
+                 (st = el__fit_follow_unless_loops(model, xy, n, opt, flags, noise_in, stray, &ob, norm, res, d, fs)) ==
+                     EL_OK)
+            st = res->status;
     }
     /* paired by the spacing test alone: refitted by distance to the polygon where its points
      * slip along the polygon from their vertices (fit_restart.c) */
@@ -858,24 +847,11 @@ candidates:
     }
     /* not certified: Ipopt from this one (fit_restart.c); held ends as its rows */
     if (deferred && !unpaired && !(flags & FIT_RUN_INNER) && (st == EL_ENOCONV || st == EL_EMAXITER)) {
-        /* after the rule that keeps a fit that neither crosses itself nor strays: its
-         * polish does not end on a loop either (a discrete start point and tangent, 231
-         * points: 0.120 -> 0.092 crossing itself 3 times) */
-        const fit_out pre = *res;
-        double *pb = wander_kept && o.constraints ? malloc(sizeof(double) * 2 * n) : NULL;
-        if (pb) { memcpy(pb, d, sizeof(double) * n); memcpy(pb + n, fs, sizeof(double) * n); }
-        st = el__fit_fallback(model, xy, n, opt, ends_chart ? FIT_RUN_ROWS : FIT_RUN_POLISH, res, d, fs);
-        if (pb && st != EL_ENOMEM) {
-            double pa[FIT_NP], xa[FIT_MAXX];
-            for (int j = 0; j < FIT_NP; j++) pa[j] = el__fit_norm_param(model, j, res->params[j], cx, cy, sc);
-            el__fit_map_inverse(&map, pa, xa);
-            if (el__fit_loops(&ob, xa)) {
-                *res = pre;
-                memcpy(d, pb, sizeof(double) * n); memcpy(fs, pb + n, sizeof(double) * n);
-                st = res->status;
-            }
-        }
-        free(pb);
+        const int rows = ends_chart ? FIT_RUN_ROWS : FIT_RUN_POLISH;
+        /* after the rule that keeps a fit that neither crosses itself nor strays: its polish
+         * does not end on a loop either (el__fit_fallback_unless_loops) */
+        st = wander_kept && o.constraints ? el__fit_fallback_unless_loops(model, xy, n, opt, rows, &ob, norm, res, d, fs)
+                                          : el__fit_fallback(model, xy, n, opt, rows, res, d, fs);
     }
     /* pinned at both ends with a zero start curvature: fitted in the ends chart too, that
      * curvature held there (el__fit_ends_held); with an end curvature other than 0 (a row

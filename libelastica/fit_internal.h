@@ -478,6 +478,16 @@ double el__fit_out_length(int model, size_t n, const fit_out *r);
 int el__fit_follow_points(int model, const double *xy, size_t n, const el_fit_options *opt, int flags, double noise,
                           double scale, double stray, fit_out *res, double *d, double *fs);
 
+/* fit_restart.c: el__fit_follow_points on a copy of the smooth fit *res (d, fs), kept when it
+ * returns lower and not crossing itself (el__fit_loops in ob's map; norm: the fit's
+ * normalisation cx, cy, sc); EL_OK (replaced or not) or EL_ENOMEM. */
+int el__fit_follow_unless_loops(int model, const double *xy, size_t n, const el_fit_options *opt, int flags,
+                                double noise, double stray, fit_objective *ob, const double norm[3], fit_out *res,
+                                double *d, double *fs);
+/* fit_restart.c: el__fit_fallback, undone where its result crosses itself (el__fit_loops);
+ * its status, or the kept fit's. */
+int el__fit_fallback_unless_loops(int model, const double *xy, size_t n, const el_fit_options *opt, int flags,
+                                  fit_objective *ob, const double norm[3], fit_out *res, double *d, double *fs);
 /* fit_restart.c: an uncertified fit fitted again from its result by Ipopt (flags
  * FIT_RUN_POLISH; FIT_RUN_ROWS: pinned at both ends, the end point as Ipopt's rows), which replaces *res
  * (d, fs) when certified or, without rows, lower; EL_OK when replaced by a certified fit,
