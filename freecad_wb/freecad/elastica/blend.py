@@ -125,7 +125,7 @@ def blend_core(e0, at_end0, e1, at_end1, plane=None, mode="tension", value=0.0):
         raise InputProblem(f"Hermite problem failed: {exc}") from None
     if not sols:
         raise NoBlend("no elastic curve joins these ends with this "
-                           + ("length" if mode == "length" else "tension"))
+                      + ("length" if mode == "length" else "tension"))
     # under tension the curve minimises the bending energy plus sigma times its length:
     # ordered by that (at sigma > 0 a huge gentle loop has the least bending energy alone)
     energies = [total_energy(c, value if mode == "tension" else 0.0) for c in sols]
