@@ -574,6 +574,31 @@ class FitConstraintTest(unittest.TestCase):
                 self.assertLess((end - last).Length, 1e-9, model)
                 self.assertLess(f.Rms, 0.02, model)
 
+    def test_a_join_whose_edge_runs_back_over_the_points_is_named(self):
+        """An end join G2 on an arc that leaves its joined end back over the points: the
+        curve can meet it only by turning back (a cusp); the fit looped 130 mm above points
+        20 mm high with status converged and only the end conditions' cost as a warning (QA).
+        The warning (or the error, where the join is not met) says so; the arc joined at
+        its other end, continuing the points, is not named."""
+        import numpy as np
+        t = np.linspace(0.05, 0.95, 12)
+        xy = np.c_[100 * t, 20 * np.sin(math.pi * t) + np.random.default_rng(3).normal(0, 0.2, 12)]
+        pts = S.points_sketch(self.doc, xy, "Arch")
+        geo = self.doc.addObject("Sketcher::SketchObject", "Geo")
+        geo.Placement = S.SKETCH_PLACEMENT
+        geo.addGeometry(Part.ArcOfCircle(Part.Circle(App.Vector(100, -30, 0), App.Vector(0, 0, 1), 30),
+                                         math.pi / 2, math.pi), False)      # back over the points
+        geo.addGeometry(Part.ArcOfCircle(Part.Circle(App.Vector(100, -30, 0), App.Vector(0, 0, 1), 30),
+                                         0.0, math.pi / 2), False)          # on, away from them
+        self.doc.recompute()
+        for edge, named in (("Edge2", True), ("Edge1", False)):    # (the sketch's edge order)
+            for model in ("smooth", "discrete"):
+                f = Fi.make(self.doc, [(pts, [])], Model=model, EndTangent=(geo, [edge]),
+                            EndContinuity="G2")
+                self.doc.recompute()
+                said = " ".join(list(f.Warnings)) if not f.Status.startswith("error") else f.Status
+                self.assertEqual("cusp" in said, named, (edge, model, said))
+
     def test_end_tangents_from_picked_edges_on_the_shape(self):
         for model in ("smooth", "discrete"):
             for prop, i, edge in (("StartTangent", 0, "Edge1"), ("EndTangent", 1, "Edge2")):
@@ -953,6 +978,31 @@ class FitDistanceTest(unittest.TestCase):
         part = np.array([edge.distToShape(Part.Vertex(App.Vector(x, y, 0)))[0] for x, y in data])
         self.assertLess(np.abs(np.abs(dist) - part).max(), 1e-9)
         self.assertLess(np.abs(np.hypot(*(feet - data).T) - part).max(), 1e-9)
+
+    def test_distances_within_a_sample_of_the_foot_are_searched_too(self):
+        """A discrete fit's cubic of 12 spans 107 mm long (a fit looping to meet a reversed
+        G2 join): the nearer minimum lay 6 mm along the curve from the one Newton found,
+        within one of a span's samples, and was taken for it (14.584 mm reported where the
+        curve passes 14.343 mm from the point). No point of a grid around the curve, from
+        any start, is reported farther than the nearest of 400 001 samples of it."""
+        import numpy as np
+        poles = [[8.490117, -18.74222], [41.986563, -6.181052], [201.371978, 12.887191],
+                 [-96.395014, 24.050613], [213.597769, 0.727507], [-97.471327, -44.901395],
+                 [210.32488, 12.051217], [-101.005271, 39.711622], [206.165347, 3.675897],
+                 [-93.336287, -61.263915], [199.803554, -5.078885], [-43.670722, 93.327853],
+                 [46.33867, -31.994871], [82.11289, 0.0], [100.0, 0.0]]
+        knots = list(np.arange(11) * 107.32266063902395) + [1126.8879367097509, 1180.5492670292629]
+        bs = el.BSpline(3, poles, knots, [4] + [1] * 11 + [4])
+        g = np.linspace(-20.0, 120.0, 15)
+        data = np.array([(x, y) for x in g for y in np.linspace(-30.0, 40.0, 8)])
+        ts = np.linspace(bs.domain[0], bs.domain[1], 400001)
+        dense = bs.evaluate(ts)
+        want = np.array([np.hypot(*(dense - p).T).min() for p in data])
+        for start in (0.0, 217.0, 600.0):
+            _, dist = Nr.drawn_distances(bs, data, np.full(len(data), start))
+            # never farther than the dense samples' nearest (a foot is a point of the curve:
+            # nearer is the samples' spacing)
+            self.assertLess((np.abs(dist) - want).max(), 1e-9, start)
 
     def test_keyline_distances_are_point_to_shape(self):
         f = Fi.make(self.doc, [(self.sk, [])], Model="smooth", SplitAtInflection=True,

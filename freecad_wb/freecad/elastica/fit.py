@@ -70,8 +70,10 @@ def end_constraints(xy, plane, pin_start=False, pin_end=False, start_edge=None, 
     how that end meets its edge: its tangent only, or joined to the edge's end (G1: its
     point, in the fit plane, and tangent; G2: its curvature there too, signed by the
     direction of travel); the edge's end may lie off the fit plane by up to ``tol`` (mm,
-    the B-spline's tolerance: a plane fitted to scanned points is not the sketch's)."""
-    c = {}
+    the B-spline's tolerance: a plane fitted to scanned points is not the sketch's).
+    Returns (constraints, warnings: a join whose edge leaves its joined end back towards
+    the points, which the curve meets only by turning back)."""
+    c, warnings = {}, []
     if pin_start:
         c["start_point"] = (float(xy[0][0]), float(xy[0][1]))
     if pin_end:
@@ -110,10 +112,20 @@ def end_constraints(xy, plane, pin_start=False, pin_end=False, start_edge=None, 
                                f"more than the Tolerance {tol:g} mm: no {join} join in it "
                                "(Tangent only follows its direction)")
         c[f"{where}_point"] = (float(p.x), float(p.y))
+        # the edge from its joined end, in the plane: a continuation of the curve at its end,
+        # behind it at its start; else the curve turns back into it (a cusp), and a fit meets
+        # that by looping (QA: a G2 end join on an arc leaving back over its points, a fit
+        # looping 130 mm above points 20 mm high, status converged)
+        into = plane.Rotation.inverted().multVec(App.Vector(edge.tangentAt(u)) * (-1 if at_end else 1))
+        ahead = into.x * forward[0] + into.y * forward[1]
+        if ahead < 0 if where == "end" else ahead > 0:
+            warnings.append(f"{End} join {join}: the edge leaves its joined end back along the "
+                            f"points, so the curve turns back into it (a cusp) and loops to do "
+                            f"so: join the edge's other end, or set Tangent only")
         if join == "G2":
             c[f"{where}_curvature"] = plane_curvature(
                 edge, at_end, (math.cos(angle), math.sin(angle)), plane, f"the {where} edge")
-    return c
+    return c, warnings
 
 
 def constraint_fields(start_join="tangent", end_join="tangent"):
@@ -507,7 +519,7 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
             user = user[curve_order(xy)]
             user = _facing_the_edges(user, plane, start_edge, end_edge)
         xy = n.ascontiguousarray(user[:, :2])
-        constraints, free_rms, warnings, used = {}, -1.0, [], None
+        constraints, free_rms, warnings, used, reversed_joins = {}, -1.0, [], None, []
         if split:
             default = _keyline_step(xy)
             _check_reach(xy, step, [0, -1], default)
@@ -524,8 +536,13 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
                 xy = n.vstack([xy[:1]] * pins[0] + [polygon] + [xy[-1:]] * pins[1])
                 if model == "discrete" and not any(pins):
                     fixed["h"] = step            # the polygon's segment (seed 000 §5.4)
-            constraints = end_constraints(xy, plane, tol=tol, **ends)
-            fitted = _one_piece(xy, model, distance, fixed, constraints, fields)
+            constraints, reversed_joins = end_constraints(xy, plane, tol=tol, **ends)
+            try:
+                fitted = _one_piece(xy, model, distance, fixed, constraints, fields)
+            except InputProblem as exc:
+                if not reversed_joins:
+                    raise
+                raise InputProblem(f"{exc}. {reversed_joins[0]}") from None
         curves, results, data, feet, dist, rms, max_error = fitted
         bspline = _shape_bspline(model, curves, results, split, tol, degree)
         if model == "discrete":
@@ -534,6 +551,7 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         if constraints:
             free_rms, warnings = _constraint_cost(xy, model, distance, fixed, constraints, rms,
                                                   fields)
+        warnings = reversed_joins + warnings
         if model == "discrete" and not split and not step:
             warnings = warnings + _coarse_polygon(xy, constraints, rms)
         # the figures are the user's points': where the library fitted a resampled polygon

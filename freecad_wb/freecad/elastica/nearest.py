@@ -115,8 +115,7 @@ def _nearest_feet(bspline, data, t0):
     hold a nearer point (on a smooth curve: the foot's own span or two, unless the curve
     comes back near the point). Those spans, sieved by ever smaller blocks of spans
     (_nearer_spans), are sampled at SPAN_SAMPLES + 1 points, and Newton runs again
-    from each sample nearer than its neighbours (but the foot's own); the nearest foot
-    wins. Returns (t, B(t), squared
+    from each sample nearer than its neighbours; the nearest foot wins. Returns (t, B(t), squared
     distances); Part's distToShape gives the same feet to rounding (test_elastica_fit)."""
     n = np()
     t, P, d2 = _newton_feet(bspline, data, t0)
@@ -147,11 +146,12 @@ def _nearest_feet(bspline, data, t0):
             pad = n.column_stack([before, dd, after])
             low = (dd <= pad[:, :-2]) & (dd <= pad[:, 2:])
             low[:, -1] &= ~go_on                   # the next span's first sample
+            # every dip, the found foot's too: within a sample of it may lie another, nearer
+            # minimum (a discrete fit's cubic of 12 spans 107 mm long: 14.584 mm reported
+            # where the curve passes 14.343 mm from the point, 6 mm along it)
             r, i = n.nonzero(low)
-            # a dip within a sample of the foot found is its own: Newton would return there
-            other = n.abs(ts[r, i] - t[p[r]]) > (t1s[sp[r]] - t0s[sp[r]]) / SPAN_SAMPLES
-            seed_p.append(p[r[other]])
-            seed_t.append(ts[r[other], i[other]])
+            seed_p.append(p[r])
+            seed_t.append(ts[r, i])
     if not seed_p or not sum(len(x) for x in seed_p):
         return t, P, d2
     q = n.concatenate(seed_p)
