@@ -298,7 +298,7 @@ int el__fit_strays_at(fit_objective *ob, const double *x, double noise, double *
 /* fit_refit.c: whether the curve at x (ob's map, one curve) crosses itself: the smooth
  * curve's polygon of 256 chords, the discrete polygon's chords through every
  * ceil((n - 1) / 256)-th vertex (its own segments up to 257 vertices); a loop narrower
- * than ~1/256 of its length is missed. 0 where it cannot be evaluated; EL_ENOMEM (2). */
+ * than ~1/256 of its length is missed. 0 where it cannot be evaluated (or allocated). */
 int el__fit_crosses_itself(const fit_objective *ob, const double *x);
 /* fit_refit.c: whether the curve at x crosses itself (el__fit_crosses_itself) where the
  * points' own polygon (as el__fit_wanders) does not. */

@@ -10,7 +10,7 @@ import math
 import FreeCAD as App
 import Part
 
-from .geometry import bspline_edges, el, np, plane_coordinates, to_3d
+from .geometry import bspline_edges, el, np, plane_coordinates, plane_curvature, to_3d
 from .proxy import FeatureProxy, InputProblem, add_link, add_property, new_feature, read_only
 from .sources import gather_edges, sample_chain
 
@@ -52,27 +52,20 @@ def g2quad_core(edges, plane=None, nedges=24):
     return {"result": g, "placement": plane}
 
 
-def _signed_curvature(curve, u, up):
-    """The curvature of a plane curve at u, + turning left about ``up``."""
-    k = curve.curvature(u)
-    if k == 0.0:
-        return 0.0
-    t = App.Vector(*curve.tangent(u)[0])
-    return k if t.cross(App.Vector(*curve.normal(u))).dot(up) > 0.0 else -k
-
-
-def _joins(edges, up):
+def _joins(edges, plane):
     """Where consecutive pieces meet: the largest angle between their tangents (degrees)
-    and the largest jump of their signed curvature (1/mm). Seed 002's pieces are G2 inside
-    and only meet at the inflections (QA: 'G2' shown where the curvature went -0.0019 ->
-    +0.0019/mm and the tangents 0.027 deg apart)."""
+    and the largest jump of their signed curvature in ``plane`` (1/mm, plane_curvature).
+    Seed 002's pieces are G2 inside and only meet at the inflections (QA: 'G2' shown where
+    the curvature went -0.0019 -> +0.0019/mm and the tangents 0.027 deg apart)."""
     angle = jump = 0.0
+    inv = plane.Rotation.inverted()
     for a, b in zip(edges, edges[1:]):
-        ca, cb = a.Curve, b.Curve
-        ua, ub = a.LastParameter, b.FirstParameter
-        ta, tb = App.Vector(*ca.tangent(ua)[0]), App.Vector(*cb.tangent(ub)[0])
+        ta = App.Vector(a.tangentAt(a.LastParameter))
+        tb = App.Vector(b.tangentAt(b.FirstParameter))
         angle = max(angle, math.degrees(ta.getAngle(tb)))
-        jump = max(jump, abs(_signed_curvature(ca, ua, up) - _signed_curvature(cb, ub, up)))
+        t = inv.multVec(ta)
+        jump = max(jump, abs(plane_curvature(a, True, (t.x, t.y), plane) -
+                             plane_curvature(b, False, (t.x, t.y), plane)))
     return angle, jump
 
 
@@ -121,7 +114,7 @@ class G2QuadProxy(FeatureProxy):
         obj.CurvatureJump = float(g.curvature_jump)
         obj.EndTangentError = math.degrees(g.end_tangent_error or 0.0)
         obj.Pieces = len(g.bsplines)
-        obj.JoinAngle, obj.JoinCurvatureJump = _joins(edges, plc.Rotation.multVec(App.Vector(0, 0, 1)))
+        obj.JoinAngle, obj.JoinCurvatureJump = _joins(edges, plc)
         obj.Poles = g.npoles
         obj.Polyline = to_3d(plc, g.polyline.points)
         obj.Plane = plc
