@@ -103,6 +103,21 @@ def two_lines_sketch(doc, name="Lines", placement=SKETCH_PLACEMENT):
     return sk
 
 
+def lead_in_sketches(doc):
+    """QA's sketches of an edge link (bug_edge_names): 'Edges' holds a helper line (geometry 0,
+    Edge1), a lead-in line ending at (-2, 0) (geometry 1, Edge2) and a run-out line from
+    (60, -5) (geometry 2, Edge3); 'Pts' six points from (0, 0.5) to (55, -4.5) between them.
+    Returns (edges sketch, points sketch)."""
+    sk = doc.addObject("Sketcher::SketchObject", "Edges")
+    for a, b in (((-60, 40), (-30, 40)), ((-30, -10), (-2, 0)), ((60, -5), (90, -5))):
+        sk.addGeometry(Part.LineSegment(App.Vector(*a, 0), App.Vector(*b, 0)), False)
+    pts = doc.addObject("Sketcher::SketchObject", "Pts")
+    for x, y in [(0, 0.5), (9, 3.0), (18, 4.5), (30, 3.0), (42, -1.0), (55, -4.5)]:
+        pts.addGeometry(Part.Point(App.Vector(x, y, 0)), False)
+    doc.recompute()
+    return sk, pts
+
+
 def line_and_arc_sketch(doc, name="LineArc", placement=SKETCH_PLACEMENT):
     """A line ending at (0, 0) heading 18 degrees up, and a quarter arc (radius 40 about
     (100, -45)) whose end (60, -45) is the nearest, 75 mm away: the blend must turn back
@@ -169,6 +184,15 @@ def sides(bspline, u, span):
 def distance_to_shape(points, shape):
     """Largest distance of 3D points from a shape."""
     return max(shape.distToShape(Part.Vertex(App.Vector(*p)))[0] for p in points)
+
+
+def status_once_deleted(feature, *sources):
+    """The feature's Status once its source objects ``sources`` are deleted and the document
+    recomputed (FreeCAD empties links to them)."""
+    for obj in sources:
+        feature.Document.removeObject(obj.Name)
+    feature.Document.recompute()
+    return feature.Status
 
 
 def doc_state(doc):

@@ -518,6 +518,14 @@ def spline_panel(doc, S):
                                       *((a - 0.8, a) if k > 0 else (a, a + 0.8))), False)
     doc.recompute()
     panel.refresh()
+    # the line it followed is deleted: it says so (not the arc now named Edge1) till relinked
+    check(s.Status == f"error: StartEdge: the sketch geometry it followed ({line.Label}.Edge1) "
+          "was deleted: relink StartEdge" and "relink StartEdge" in panel.result.text(),
+          f"spline: its start edge deleted, it says so ({s.Status})")
+    screenshot("gui_spline_edge_deleted.png")
+    s.StartEdge = (line, ["Edge1"])
+    doc.recompute()
+    panel.refresh()
     check(s.Status.startswith("ok") and "guide duck" in panel.result.text(),
           f"spline: G2 to an arc: its guide duck holds the batten ({s.Status})")
     panel.closed.setChecked(True)

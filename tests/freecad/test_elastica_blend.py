@@ -154,6 +154,36 @@ class BlendTest(unittest.TestCase):
         self.assertLess((self.sk.Geometry[0].EndPoint - App.Vector(40, 0, 0)).Length, 0.05)
         self.assertLess((self.sk.Geometry[1].StartPoint - App.Vector(80, 25, 0)).Length, 0.05)
 
+    def test_edges_follow_their_geometry_as_the_sketch_changes(self):
+        """QA: a blend of Edges.Edge2 and Edge3 kept them when the helper line Edge1 was made
+        construction (their geometry indices) but failed 'Edges has no Edge3' once it was
+        deleted (the indices shifted too); a solution picked stays picked."""
+        sk, _ = S.lead_in_sketches(self.doc)
+        b = Bl.make(self.doc, (sk, "Edge2"), (sk, "Edge3"))
+        self.doc.recompute()
+        self.assertEqual(b.Status, "solution 1 of 2")
+        b.Solution = 1
+        self.doc.recompute()
+        shape = b.Shape.copy()
+        for change in (lambda: sk.toggleConstruction(0), lambda: sk.delGeometry(0)):
+            change()
+            self.doc.recompute()
+            self.assertEqual(b.Status, "solution 2 of 2")
+            self.assertEqual((b.Edge1[1], b.Edge2[1]), (["Edge1"], ["Edge2"]))
+            self.assertLess(S.distance_to_shape([v.Point for v in shape.Vertexes], b.Shape), 1e-9)
+            self.assertAlmostEqual(b.Shape.Length, shape.Length, delta=1e-9)
+        sk.delGeometry(1)                                # the run-out line itself
+        self.doc.recompute()
+        self.assertEqual(b.Status, "error: Edge2: the sketch geometry it followed (Edges.Edge2) "
+                         "was deleted: relink Edge2")
+
+    def test_a_deleted_source_is_named(self):
+        """QA: a blend whose sketch was deleted said 'a blend needs two edges'."""
+        b = Bl.make(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"))
+        self.doc.recompute()
+        self.assertEqual(S.status_once_deleted(b, self.sk), "error: Edge1: the object of its edge "
+                         "was deleted: relink Edge1")
+
     def test_default_is_the_lowest_energy_free_batten(self):
         import libelastica as el
         import numpy as np
@@ -579,6 +609,7 @@ class BlendG2Test(unittest.TestCase):
         # arc 2 as tight as 1 mm: no batten between the ends bends that much at its end
         sk.delGeometry(1)
         sk.addGeometry(second_arc(1.0), False)
+        b.Edge2 = (sk, ["Edge2"])           # the arc it followed is deleted: relinked
         self.doc.recompute()
         self.assertTrue(b.Status.startswith("error"), b.Status)
         self.assertIn("no G2 blend at tension 0 1/mm", b.Status)

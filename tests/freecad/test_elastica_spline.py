@@ -182,6 +182,30 @@ class SplineTest(unittest.TestCase):
         self.assertLess(total.Length, 1e-12 * max(v.Length for v in s.DuckForces))
         self.assertEqual(s.SplineTension, tension)
 
+    def test_an_end_edge_follows_its_geometry_as_the_sketch_changes(self):
+        """QA: StartEdge = Edges.Edge2 (the lead-in); the helper line Edge1 made construction
+        or deleted, the spline started along the run-out line, tangent (1, 0) for (0.94,
+        0.34), status ok."""
+        sk, pts = S.lead_in_sketches(self.doc)
+        s = self.spline([(pts, [])], StartCondition="tangent", StartEdge=(sk, "Edge2"))
+        lead_in = App.Vector(28, 10, 0).normalize()
+
+        def start():
+            e = s.Shape.Edges[0]
+            return App.Vector(e.tangentAt(e.FirstParameter)).normalize()
+
+        self.assertGreater(start().dot(lead_in), 1 - 1e-9)
+        for change in (lambda: sk.toggleConstruction(0), lambda: sk.delGeometry(0)):
+            change()
+            self.doc.recompute()
+            self.assertTrue(s.Status.startswith("ok"), s.Status)
+            self.assertGreater(start().dot(lead_in), 1 - 1e-9)
+            self.assertEqual(s.StartEdge[1], ["Edge1"])
+        sk.delGeometry(0)                                # the lead-in itself
+        self.doc.recompute()
+        self.assertEqual(s.Status, f"error: StartEdge: the sketch geometry it followed "
+                         f"({sk.Label}.Edge1) was deleted: relink StartEdge")
+
     def test_g2_end_after_a_line(self):
         """Zero curvature after a line (the former rule, a tension of the end span's
         own, found none here): met, a guide duck holding the batten."""

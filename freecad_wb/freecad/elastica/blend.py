@@ -12,9 +12,10 @@ import json
 import FreeCAD as App
 
 from . import defaults
-from .geometry import (edge_end, el, global_element, is_sketch, link_edge, np, part_bspline,
-                       plane_coordinates, plane_curvature, sketch_geo_of_edge, to_3d)
-from .proxy import (FeatureProxy, InputProblem, add_enum, add_length, add_link,
+from .geometry import (edge_end, el, followed_edge, global_element, is_sketch, np,
+                       part_bspline, plane_coordinates, plane_curvature, to_3d)
+from .proxy import (FeatureProxy, InputProblem, add_enum, add_geometry_index, add_length,
+                    add_link,
                     add_property, attach_view, check_degree, check_number, check_tolerance,
                     read_only)
 
@@ -294,6 +295,7 @@ class BlendProxy(FeatureProxy):
     """Elastic Hermite curve between an end of one edge and an end of another."""
 
     kind = "Blend"
+    edge_links = {"Edge1": "SketchGeometry1", "Edge2": "SketchGeometry2"}
 
     def setup(self, obj):
         tol, _, _ = defaults()
@@ -305,11 +307,8 @@ class BlendProxy(FeatureProxy):
                      "Leave the first edge at its end vertex (else at its start)", True)
         add_property(obj, "App::PropertyBool", "AtEnd2", "Input",
                      "Enter the second edge at its end vertex (else at its start)", False)
-        for i in (1, 2):
-            add_property(obj, "App::PropertyInteger", f"SketchGeometry{i}", "Input",
-                         f"Index of Edge{i}'s geometry in its sketch (-1: use the edge name); "
-                         "sketch edge names change when geometry is added, geometry indices "
-                         "do not", -1)
+        for link, index in self.edge_links.items():
+            add_geometry_index(obj, index, link)
         add_enum(obj, "Mode", "Blend", "Solve for a given tension (default: 0, the free "
                  "batten) or a given arc length", MODES, "tension")
         add_length(obj, "Length", "Blend",
@@ -368,6 +367,8 @@ class BlendProxy(FeatureProxy):
                   "BlendTension", "Poles", "Status", "Curves", "Plane")
 
     def onChanged(self, obj, prop):
+        if prop in self.edge_links and not self.link_changed(obj, prop):
+            return                  # restored, or renamed following its sketch geometry
         # a new problem: its lowest-energy solution (the panel re-applies a user's pick)
         if prop in ("Mode", "Length", "Tension", "AtEnd1", "AtEnd2", "Edge1", "Edge2") \
                 and "Restore" not in obj.State:
@@ -394,10 +395,15 @@ class BlendProxy(FeatureProxy):
     def ends(self, obj):
         """The two linked edges (global), or InputProblem."""
         out = []
-        for link, gi in ((obj.Edge1, obj.SketchGeometry1), (obj.Edge2, obj.SketchGeometry2)):
-            if not link or not link[1] or not link[1][0].startswith("Edge"):
-                raise InputProblem("a blend needs two edges")
-            out.append(link_edge(link[0], link[1][0], gi))
+        for prop in self.edge_links:
+            link = getattr(obj, prop)
+            if link and not (link[1] and link[1][0].startswith("Edge")):
+                raise InputProblem(f"{prop} links {link[0].Label}.{(link[1] or [''])[0]}: a "
+                                   "blend needs two edges")
+            edge = followed_edge(obj, prop)
+            if edge is None:
+                raise InputProblem(f"{prop} is empty: a blend needs two edges: link {prop}")
+            out.append(edge)
         return out
 
     def compute(self, obj):
@@ -484,10 +490,6 @@ def make(doc, edge1, edge2, at_end1=None, at_end2=None, **props):
     BlendProxy(obj)
     obj.Edge1 = (edge1[0], [edge1[1]])
     obj.Edge2 = (edge2[0], [edge2[1]])
-    for i, (o, name) in ((1, edge1), (2, edge2)):
-        if is_sketch(o):
-            gi = sketch_geo_of_edge(o, name)
-            setattr(obj, f"SketchGeometry{i}", -1 if gi is None else gi)
     if at_end1 is None or at_end2 is None:
         a, b = nearest_ends(global_element(*edge1), global_element(*edge2))
         at_end1 = a if at_end1 is None else at_end1

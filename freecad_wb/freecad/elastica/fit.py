@@ -14,11 +14,11 @@ import FreeCAD as App
 import Part
 
 from . import defaults
-from .geometry import (chain_bspline, el, link_edge, np, part_bspline, polyline_length,
+from .geometry import (chain_bspline, el, followed_edge, np, part_bspline, polyline_length,
                        plane_coordinates, plane_curvature, to_3d, to_plane)
-from .proxy import (FeatureProxy, InputProblem, add_enum, add_length, add_link,
-                    add_property, check_degree, check_number, check_tolerance, new_feature,
-                    read_only)
+from .proxy import (FeatureProxy, InputProblem, add_enum, add_geometry_index, add_length,
+                    add_link, add_property, check_degree, check_number, check_tolerance,
+                    new_feature, read_only)
 from .nearest import drawn_distances, nearest_on
 from .sources import curve_order, gather_points
 
@@ -607,6 +607,7 @@ class FitProxy(FeatureProxy):
     """Elastica fitted to sketch edges / vertices, a Points object, a wire or a CSV file."""
 
     kind = "Fit"
+    edge_links = {"StartTangent": "StartTangentGeometry", "EndTangent": "EndTangentGeometry"}
 
     def setup(self, obj):
         tol, deg, model = defaults()
@@ -641,6 +642,8 @@ class FitProxy(FeatureProxy):
         add_link(obj, "App::PropertyLinkSub", "EndTangent", "Fit",
                  "An edge whose tangent (at its end nearest the data's end, projected into "
                  "the fit plane) the curve follows there (one-piece fits; empty: free)")
+        for link, index in self.edge_links.items():
+            add_geometry_index(obj, index, link)
         for where in ("Start", "End"):
             add_enum(obj, f"{where}Continuity", "Fit",
                      f"How the curve meets its {where}Tangent edge: tangent = follows its "
@@ -712,9 +715,10 @@ class FitProxy(FeatureProxy):
             raise InputProblem(f"SamplesPerEdge = {obj.SamplesPerEdge} is not usable: 4 to 10000")
         pts, plane, ordered, closed = gather_points(obj.Source, obj.CsvFile, obj.SamplesPerEdge)
         edges = {}
-        for key, link in (("start_edge", obj.StartTangent), ("end_edge", obj.EndTangent)):
-            if link and link[1] and link[1][0]:
-                edges[key] = link_edge(link[0], link[1][0])
+        for key, prop in (("start_edge", "StartTangent"), ("end_edge", "EndTangent")):
+            edge = followed_edge(obj, prop)
+            if edge is not None:
+                edges[key] = edge
         return fit_core(pts, plane, ordered, closed, **core_options(obj), **edges)
 
     def apply(self, obj, r):

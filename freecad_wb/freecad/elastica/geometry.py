@@ -212,23 +212,129 @@ def link_edge(obj, name, geo_index=-1):
     return global_element(obj, name)
 
 
+def _ends_and_middle(edge, plc=None):
+    """The points of ``edge`` at its first, middle and last parameter (its curve's, whatever
+    its orientation in a wire), placed by ``plc``."""
+    a, b = edge.FirstParameter, edge.LastParameter
+    pts = [edge.valueAt(u) for u in (a, 0.5 * (a + b), b)]
+    return [plc.multVec(p) for p in pts] if plc is not None else pts
+
+
+def _same_points(p, q):
+    return all((a - b).Length <= 1e-7 * (1.0 + a.Length) for a, b in zip(p, q))
+
+
+def _drawn(sketch, i):
+    """Whether the sketch's geometry i is an edge of its shape (not construction, no point)."""
+    return not sketch.getConstruction(i) and sketch.Geometry[i].TypeId != "Part::GeomPoint"
+
+
 def sketch_geo_of_edge(sketch, edge_name):
     """The index of the sketch geometry whose shape is the sketch edge 'EdgeN', or None."""
     try:
-        edge = global_element(sketch, edge_name)
-    except InputProblem:
+        edge = sketch.Shape.getElement(edge_name)
+    except (Part.OCCError, ValueError, IndexError):
         return None
-    inv = sketch.getGlobalPlacement().inverse()
-    mid = inv.multVec(edge.valueAt(0.5 * (edge.FirstParameter + edge.LastParameter)))
-    for i, g in enumerate(sketch.Geometry):
-        if sketch.getConstruction(i):
-            continue
-        try:
-            if g.toShape().distToShape(Part.Vertex(mid))[0] < 1e-7:
-                return i
-        except Part.OCCError:
-            continue
-    return None
+    at = _ends_and_middle(edge)
+    return next((i for i, g in enumerate(sketch.Geometry) if _drawn(sketch, i) and
+                 _same_points(at, _ends_and_middle(g.toShape(), sketch.Placement))), None)
+
+
+def sketch_edge_name(sketch, i):
+    """The name ('EdgeN') of the sketch's edge that draws its geometry i, or None (construction
+    geometry, a point): the shape holds the drawn geometry only, sorted into wires (Edge3
+    may draw geometry 4)."""
+    if not _drawn(sketch, i):
+        return None
+    at = _ends_and_middle(sketch.Geometry[i].toShape(), sketch.Placement)
+    return next((f"Edge{k + 1}" for k, e in enumerate(sketch.Shape.Edges)
+                 if _same_points(at, _ends_and_middle(e))), None)
+
+
+# A feature's link to a sketch edge follows the edge's geometry, not its name: the names
+# shift when earlier geometry turns construction or is deleted (QA: a fit's G1 start,
+# linked to Edge2, joined the run-out line once a helper line before it was made
+# construction; status converged). The geometry is known by its Tag while the document is
+# open (the proxy's ``followed``) and by its index, saved in the property the proxy's
+# ``edge_links`` names: FreeCAD 0.20 gives sketch geometry new Tags when a document is
+# opened, and saves no id of its own. The index is FREE until the link is first resolved
+# (a new link, a document of a version before), DELETED once the link's geometry or its
+# object is deleted (the feature says so until it is relinked).
+FREE, DELETED = -1, -2
+
+
+def _geometry_index(feature, prop, sketch, name):
+    """The index of the ``sketch`` geometry the link ``prop`` follows: the one of its Tag,
+    else of its saved index, else (FREE) the one its name ``name`` draws; None when none."""
+    proxy = feature.Proxy
+    if prop in proxy.followed:
+        return next((i for i, g in enumerate(sketch.Geometry) if g.Tag == proxy.followed[prop]),
+                    None)
+    index = getattr(feature, proxy.edge_links[prop])
+    if 0 <= index < len(sketch.Geometry):
+        return index
+    return sketch_geo_of_edge(sketch, name) if index == FREE else None
+
+
+def remember_followed(feature):
+    """Record the Tags of the sketch geometry an opened document's feature's edge links
+    follow (their saved indices say which): a sketch edited before the first recompute is
+    followed too."""
+    for prop in feature.Proxy.edge_links:
+        link = getattr(feature, prop)
+        if link and link[1] and link[1][0] and is_sketch(link[0]):
+            i = _geometry_index(feature, prop, link[0], link[1][0])
+            if i is not None:
+                feature.Proxy.followed[prop] = link[0].Geometry[i].Tag
+
+
+def followed_edge(feature, prop):
+    """The global edge an Elastica feature's link ``prop`` (obj, ['EdgeN']) names, or None
+    when the link is empty; InputProblem naming ``prop`` when what it followed was deleted.
+    A sketch edge is its geometry followed (see FREE, DELETED), the link renamed to the
+    edge that geometry draws now."""
+    proxy = feature.Proxy
+    index_prop = proxy.edge_links[prop]
+    index = getattr(feature, index_prop)
+    link = getattr(feature, prop)
+    if not link or not link[1] or not link[1][0]:
+        if index == DELETED:
+            raise InputProblem(f"{prop}: the object of its edge was deleted: relink {prop}")
+        return None
+    obj, name = link[0], link[1][0]
+    if not is_sketch(obj):
+        return global_element(obj, name)
+    i = _geometry_index(feature, prop, obj, name)
+    if i is None:
+        if index == DELETED or prop in proxy.followed:
+            setattr(feature, index_prop, DELETED)
+            raise InputProblem(f"{prop}: the sketch geometry it followed ({obj.Label}.{name}) "
+                               f"was deleted: relink {prop}")
+        raise InputProblem(f"{prop}: {obj.Label} has no {name}")
+    proxy.followed[prop] = obj.Geometry[i].Tag
+    if index != i:
+        setattr(feature, index_prop, i)
+    drawn = sketch_edge_name(obj, i)
+    if drawn and drawn != name:
+        setattr(feature, prop, (obj, [drawn]))       # the same geometry: relinked() is False
+    return link_edge(obj, name, i)
+
+
+def relinked(feature, prop, deleted=False):
+    """After the link ``prop`` of ``feature`` changed: whether it now names other geometry
+    than it followed (another edge picked, the link emptied), which is then forgotten (the
+    link's name says which at the next recompute); ``deleted``: emptied because its object
+    is being deleted (followed_edge then says so). False for followed_edge's own renaming."""
+    proxy = feature.Proxy
+    tag = proxy.followed.pop(prop, None)
+    link = getattr(feature, prop)
+    if tag and link and link[1] and is_sketch(link[0]):
+        i = sketch_geo_of_edge(link[0], link[1][0])
+        if i is not None and link[0].Geometry[i].Tag == tag:
+            proxy.followed[prop] = tag
+            return False
+    setattr(feature, proxy.edge_links[prop], DELETED if deleted and not link else FREE)
+    return True
 
 
 def read_whole_by(sketch):

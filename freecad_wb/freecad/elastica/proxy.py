@@ -76,6 +76,15 @@ def add_link(obj, kind, name, group, tip):
     add_property(obj, scoped, name, group, tip)
 
 
+def add_geometry_index(obj, name, link):
+    """The hidden integer property ``name``: the index of the sketch geometry the edge link
+    ``link`` follows (geometry.followed_edge; -1 until the link is first resolved)."""
+    add_property(obj, "App::PropertyInteger", name, obj.getGroupOfProperty(link),
+                 f"Index of {link}'s geometry in its sketch, followed as the sketch changes "
+                 "(-1: not resolved yet, -2: deleted)", -1)
+    obj.setEditorMode(name, 2)
+
+
 def add_enum(obj, name, group, tip, values, value=None):
     """An enumeration property; when it has no values yet (new object) they are
     set, and the current one to value (default: the first)."""
@@ -156,6 +165,9 @@ class FeatureProxy:
     (raises InputProblem) and apply (writes the result)."""
 
     kind = ""
+    # {edge link property: the property of the sketch geometry index it follows}: a sketch
+    # edge's name shifts as the sketch changes, its geometry is followed (geometry.followed_edge)
+    edge_links = {}
 
     def __init__(self, obj):
         self.Object = obj
@@ -189,8 +201,30 @@ class FeatureProxy:
     def on_error(self, obj):
         """Called after a failed recompute (the message is in Status already)."""
 
+    def onBeforeChange(self, obj, prop):
+        if prop in self.edge_links:
+            link = getattr(obj, prop, None)
+            self._removing = bool(link) and bool(link[0].Removing)
+
     def onChanged(self, obj, prop):
-        pass
+        if prop in self.edge_links:
+            self.link_changed(obj, prop)
+
+    @property
+    def followed(self):
+        """{edge link property: the Tag of the sketch geometry it follows}, in this session
+        (not saved: a document opened gives its sketches' geometry new Tags)."""
+        return self.__dict__.setdefault("_followed", {})
+
+    def link_changed(self, obj, prop):
+        """Whether the edge link ``prop`` that changed names other geometry than it followed
+        (geometry.relinked): a link the designer changed, emptied as its object is deleted;
+        not one restored, nor followed_edge's renaming."""
+        if "Restore" in obj.State or getattr(self, "_restoring", False) or \
+                self.edge_links[prop] not in obj.PropertiesList:
+            return False
+        from .geometry import relinked
+        return relinked(obj, prop, deleted=getattr(self, "_removing", False))
 
     # ---------------------------------------------------------------- save / restore
 
@@ -218,7 +252,13 @@ class FeatureProxy:
 
     def onDocumentRestored(self, obj):
         self.Object = obj
-        self.setup(obj)               # properties added by newer versions
+        self._restoring = True        # the links it replaces (add_link) are no new links
+        try:
+            self.setup(obj)           # properties added by newer versions
+        finally:
+            self._restoring = False
+        from .geometry import remember_followed
+        remember_followed(obj)
         changed = False
         for p, text in getattr(self, "_exact", {}).items():
             if p not in obj.PropertiesList:

@@ -14,11 +14,11 @@ import math
 import FreeCAD as App
 
 from . import defaults
-from .geometry import edge_end, el, link_edge, np, part_bspline, plane_coordinates, \
+from .geometry import edge_end, el, followed_edge, np, part_bspline, plane_coordinates, \
     plane_curvature, to_3d
-from .proxy import (FeatureProxy, InputProblem, add_enum, add_length, add_link,
-                    add_property, check_degree, check_number, check_tolerance, new_feature,
-                    read_only)
+from .proxy import (FeatureProxy, InputProblem, add_enum, add_geometry_index, add_length,
+                    add_link, add_property, check_degree, check_number, check_tolerance,
+                    new_feature, read_only)
 from .sources import gather_vertices
 
 MODES = ["tension", "length"]
@@ -200,6 +200,7 @@ class SplineProxy(FeatureProxy):
     """The elastic spline through the linked points."""
 
     kind = "Spline"
+    edge_links = {"StartEdge": "StartEdgeGeometry", "EndEdge": "EndEdgeGeometry"}
 
     def setup(self, obj):
         tol, _, _ = defaults()
@@ -225,6 +226,7 @@ class SplineProxy(FeatureProxy):
             add_link(obj, "App::PropertyLinkSub", f"{end}Edge", "Spline",
                      f"The edge the {which} point follows (tangent or G2) at its end "
                      f"nearest that point")
+            add_geometry_index(obj, f"{end}EdgeGeometry", f"{end}Edge")
         add_property(obj, "App::PropertyFloat", "Stiffness", "Spline",
                      "Bending stiffness EI of the batten (N mm^2): the duck forces in newtons; "
                      "0 = in units of EI/2 (1/mm^2)", 0.0)
@@ -273,10 +275,12 @@ class SplineProxy(FeatureProxy):
             if cond == "natural" or obj.Closed:
                 out.append(None)
                 continue
-            if not link or not link[1] or not link[1][0].startswith("Edge"):
+            edge = None if link and link[1] and not link[1][0].startswith("Edge") else \
+                followed_edge(obj, f"{end}Edge")
+            if edge is None:
                 raise InputProblem(f"{end}Condition = {cond} needs an edge: pick one "
                                    f"({end.lower()} edge)")
-            out.append((cond, link_edge(link[0], link[1][0])))
+            out.append((cond, edge))
         return out
 
     def compute(self, obj):
