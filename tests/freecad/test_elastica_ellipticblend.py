@@ -243,6 +243,14 @@ class EllipticBlendTest(unittest.TestCase):
             self.assertTrue(C.MESSAGES and text in C.MESSAGES[-1], (text, C.MESSAGES))
             self.assertEqual(S.doc_state(self.doc), before, text)
 
+    def test_a_deleted_source_is_named(self):
+        """QA: a feature whose source was deleted said 'nothing selected: select ...', the
+        command's words."""
+        f = El.make(self.doc, [(self.sk, [])])
+        self.doc.recompute()
+        self.assertEqual(S.status_once_deleted(f, self.sk), "error: its source was deleted: "
+                         "relink Points (four vertices, or a sketch of four points)")
+
     def test_bad_property_keeps_shape_and_reports(self):
         f = El.make(self.doc, [(self.sk, [])])
         self.doc.recompute()

@@ -1169,6 +1169,16 @@ class FitBadInputTest(unittest.TestCase):
     def test_empty_selection(self):
         self.assertIn("nothing selected", self._rejected([]))
 
+    def test_a_deleted_source_is_named(self):
+        """QA: a feature whose source was deleted said 'nothing selected: select ...', the
+        command's words."""
+        sk = S.points_sketch(self.doc, [(0, 0), (7, 3.1), (11, 5.5), (25, 9), (31, 8.2), (48, 2)])
+        f = Fi.make(self.doc, [(sk, [])])
+        self.doc.recompute()
+        self.assertEqual(S.status_once_deleted(f, sk), "error: its source was deleted: relink "
+                         "Source (sketch edges or vertices, a Points object, a wire, or give a "
+                         "CSV file)")
+
     def test_three_points(self):
         sk = S.points_sketch(self.doc, [(0, 0), (10, 3), (20, 1)])
         self.assertIn("3 points", self._rejected([(sk, [])]))

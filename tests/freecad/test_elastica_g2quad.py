@@ -173,6 +173,14 @@ class G2QuadTest(unittest.TestCase):
         with self.assertRaisesRegex(InputProblem, "do not join into one wire"):
             Q.g2quad_core(tiny)
 
+    def test_a_deleted_source_is_named(self):
+        """QA: a feature whose source was deleted said 'nothing selected: select ...', the
+        command's words."""
+        q = Q.make(self.doc, [(self.sk, ["Edge1"])], Edges=24)
+        self.doc.recompute()
+        self.assertEqual(S.status_once_deleted(q, self.sk), "error: its source was deleted: "
+                         "relink Source (an edge or a sketch curve)")
+
     def test_command_core_records_a_feature(self):
         q = C.g2quad_sources([(self.sk, ["Edge1"])], open_panel=False, Edges=12)
         self.assertIsNotNone(q)

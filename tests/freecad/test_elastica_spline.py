@@ -413,6 +413,13 @@ class SplineTest(unittest.TestCase):
             self.assertTrue(C.MESSAGES and words in C.MESSAGES[-1], (words, C.MESSAGES))
             self.assertEqual(S.doc_state(self.doc), before, words)
 
+    def test_a_deleted_source_is_named(self):
+        """QA: a feature whose source was deleted said 'nothing selected: select ...', the
+        command's words."""
+        s = self.spline()
+        self.assertEqual(S.status_once_deleted(s, self.sk), "error: its source was deleted: "
+                         f"relink Points ({Sp.DUCKS_NEED})")
+
     def test_bad_edit_keeps_the_last_good_shape(self):
         s = self.spline(Mode="length", Length=140.0)
         good = s.Shape.Length

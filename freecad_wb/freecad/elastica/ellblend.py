@@ -149,7 +149,7 @@ class EllipticBlendProxy(FeatureProxy):
 
     def compute(self, obj):
         """ellblend_core's dict for the linked points; raises InputProblem."""
-        pts, plane = gather_vertices(obj.Points)
+        pts, plane = gather_vertices(obj.Points, link="Points")
         return ellblend_core(pts, plane, obj.Mode, obj.K, obj.D, float(obj.Tolerance),
                              obj.KConvention)
 

@@ -713,7 +713,8 @@ class FitProxy(FeatureProxy):
         """The fit as a dict (see fit_core); raises InputProblem."""
         if not 4 <= obj.SamplesPerEdge <= 10000:
             raise InputProblem(f"SamplesPerEdge = {obj.SamplesPerEdge} is not usable: 4 to 10000")
-        pts, plane, ordered, closed = gather_points(obj.Source, obj.CsvFile, obj.SamplesPerEdge)
+        pts, plane, ordered, closed = gather_points(obj.Source, obj.CsvFile, obj.SamplesPerEdge,
+                                                    link="Source")
         edges = {}
         for key, prop in (("start_edge", "StartTangent"), ("end_edge", "EndTangent")):
             edge = followed_edge(obj, prop)

@@ -103,7 +103,7 @@ class G2QuadProxy(FeatureProxy):
                   "EndTangentError", "Pieces", "Poles", "Polyline", "Status", "Plane")
 
     def compute(self, obj):
-        edges, plane = gather_edges(obj.Source)
+        edges, plane = gather_edges(obj.Source, link="Source")
         return g2quad_core(edges, plane, obj.Edges)
 
     def apply(self, obj, r):

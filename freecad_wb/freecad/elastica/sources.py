@@ -23,6 +23,15 @@ def _subs(subs):
     return [s for s in (subs or ()) if s]
 
 
+def nothing_read(need, link=None):
+    """InputProblem for sources that are none: nothing selected for a command (``need``: what
+    to select), or a feature's link ``link`` emptied (FreeCAD empties a link to an object
+    deleted; a feature reported that as 'nothing selected', QA)."""
+    if link:
+        return InputProblem(f"its source was deleted: relink {link} ({need})")
+    return InputProblem(f"nothing selected: select {need}")
+
+
 def sketch_points(sketch):
     """The global positions of a sketch's point geometries (0.20 reports every
     sketch point as construction geometry, so all are taken)."""
@@ -61,8 +70,9 @@ def sample_edges(edges, samples_per_edge):
     return dedup(pts), Part.Wire(ch).isClosed()
 
 
-def gather_points(sources, csv_file="", samples_per_edge=60):
-    """Points of a fit's input, in 3D, with what is known about them.
+def gather_points(sources, csv_file="", samples_per_edge=60, link=None):
+    """Points of a fit's input, in 3D, with what is known about them; ``link``: the
+    feature's property the sources come from (None: a selection; see nothing_read).
 
     Returns (points: list[App.Vector], plane: App.Placement or None (a sketch's),
     ordered: bool, closed: bool)."""
@@ -77,8 +87,8 @@ def gather_points(sources, csv_file="", samples_per_edge=60):
         closed = len(pts) > 2 and (pts[0] - pts[-1]).Length < 1e-9
         return pts, None, True, closed
     if not sources:
-        raise InputProblem("nothing selected: select sketch edges or vertices, a Points "
-                           "object, a wire, or give a CSV file")
+        raise nothing_read("sketch edges or vertices, a Points object, a wire, or give a CSV "
+                           "file", link)
     edges, vertices, points = [], [], []
     plane = None
     sketches = set()
@@ -365,17 +375,19 @@ def object_points(obj, curve_ordered=False):
 
 
 def gather_vertices(sources, need="four vertices, or a sketch of four points",
-                    edge_means_object=False, curve_ordered=False):
+                    edge_means_object=False, curve_ordered=False, link=None):
     """Picked points in selection order, without merging coincident ones: vertices
     of sketches or shapes ('VertexN'), or whole objects (``object_points``: a
     sketch's points, a Points object, a wire's vertices in order). ``need`` says
     what to select when nothing is; ``edge_means_object``: a picked edge stands for
     its whole object (a click on a Draft wire picks one of its edges);
     ``curve_ordered``: a whole sketch's points in curve order (a spline's ducks; an
-    elliptic blend's control points keep the order they were made in). Returns
-    (points, plane: the sketch placement when all come from one sketch, else None)."""
+    elliptic blend's control points keep the order they were made in); ``link``: the
+    feature's property the sources come from (None: a selection; see nothing_read).
+    Returns (points, plane: the sketch placement when all come from one sketch, else
+    None)."""
     if not sources:
-        raise InputProblem(f"nothing selected: select {need}")
+        raise nothing_read(need, link)
     pts, sketches = [], set()
     for obj, subs in sources:
         subs = _subs(subs)
@@ -396,12 +408,12 @@ def gather_vertices(sources, need="four vertices, or a sketch of four points",
     return pts, plane
 
 
-def gather_edges(sources):
+def gather_edges(sources, link=None):
     """The picked edges (a chain, sorted head to tail) and the sketch plane when they
     all come from one sketch: (edges, plane or None). A whole object gives all its
-    edges."""
+    edges. ``link``: the feature's property the sources come from (see nothing_read)."""
     if not sources:
-        raise InputProblem("nothing selected: select an edge or a sketch curve")
+        raise nothing_read("an edge or a sketch curve", link)
     edges, sketches, plane = [], set(), None
     for obj, subs in sources:
         subs = _subs(subs)

@@ -286,7 +286,8 @@ class SplineProxy(FeatureProxy):
     def compute(self, obj):
         check_number("Stiffness", obj.Stiffness, 0.0, None, "N mm^2", why="0 shows the duck "
                      "forces in units of EI/2")
-        pts, plane = gather_vertices(obj.Points, DUCKS_NEED, edge_means_object=True, curve_ordered=True)
+        pts, plane = gather_vertices(obj.Points, DUCKS_NEED, edge_means_object=True,
+                                     curve_ordered=True, link="Points")
         return spline_core(pts, plane, obj.Mode, obj.Tension, float(obj.Length), obj.Closed,
                            *self.end_specs(obj), tol=float(obj.Tolerance), degree=obj.Degree)
 
