@@ -20,7 +20,7 @@ from .proxy import (FeatureProxy, InputProblem, add_enum, add_geometry_index, ad
                     add_link, add_property, check_degree, check_number, check_tolerance,
                     new_feature, read_only)
 from .nearest import drawn_distances, nearest_on
-from .sources import curve_order, gather_points
+from .sources import curve_order, file_order, gather_points
 
 MIN_POINTS = 6          # fewer points cannot determine the 7 (5 shape) parameters of a fit
 MODELS = ["discrete", "smooth"]
@@ -456,7 +456,8 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
              distance="orthogonal", pin_start=False, pin_end=False, start_edge=None,
              end_edge=None, start_curvature=None, end_curvature=None, start_join="tangent",
              end_join="tangent", step=0.0, tol=1e-3, degree=3):
-    """Fit elastica(e) to 3D points. ``distance``: what the smooth one-piece fit
+    """Fit elastica(e) to 3D points: in their order (``ordered``), in curve_order's (False)
+    or a file's, kept when a curve's (None: file_order). ``distance``: what the smooth one-piece fit
     minimises ("orthogonal": point to curve; "paired": point i at arc length
     i L/(n-1), for equilateral data). ``start_edge`` / ``end_edge``: Part edges whose
     tangents the curve's ends follow; ``start_curvature`` / ``end_curvature``: 1/mm
@@ -515,9 +516,10 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         xy, plane = plane_coordinates(points, plane, flat=None)
         # the user's points in the fit's frame: plane coordinates and distance from the plane
         user = n.column_stack([xy, to_plane(plane, points)[:, 2]])
-        if not ordered:
-            user = user[curve_order(xy)]
-            user = _facing_the_edges(user, plane, start_edge, end_edge)
+        order, ordering = file_order(xy) if ordered is None else \
+            (None if ordered else curve_order(xy), [])
+        if order is not None:
+            user = _facing_the_edges(user[order], plane, start_edge, end_edge)
         xy = n.ascontiguousarray(user[:, :2])
         constraints, free_rms, warnings, used, reversed_joins = {}, -1.0, [], None, []
         if split:
@@ -551,7 +553,7 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         if constraints:
             free_rms, warnings = _constraint_cost(xy, model, distance, fixed, constraints, rms,
                                                   fields)
-        warnings = reversed_joins + warnings
+        warnings = ordering + reversed_joins + warnings
         if model == "discrete" and not split and not step:
             warnings = warnings + _coarse_polygon(xy, constraints, rms)
         # the figures are the user's points': where the library fitted a resampled polygon

@@ -75,7 +75,8 @@ def gather_points(sources, csv_file="", samples_per_edge=60, link=None):
     feature's property the sources come from (None: a selection; see nothing_read).
 
     Returns (points: list[App.Vector], plane: App.Placement or None (a sketch's),
-    ordered: bool, closed: bool)."""
+    ordered: True (in curve order), False (none: curve_order's) or None (a file's order,
+    which may be no curve's: file_order), closed: bool)."""
     el()
     if csv_file:
         from libelastica.io import read_points
@@ -85,7 +86,7 @@ def gather_points(sources, csv_file="", samples_per_edge=60, link=None):
             raise InputProblem(str(exc)) from None
         pts = [App.Vector(*(list(map(float, r)) + [0.0] * (3 - len(r)))) for r in arr]
         closed = len(pts) > 2 and (pts[0] - pts[-1]).Length < 1e-9
-        return pts, None, True, closed
+        return pts, None, None, closed
     if not sources:
         raise nothing_read("sketch edges or vertices, a Points object, a wire, or give a CSV "
                            "file", link)
@@ -182,6 +183,26 @@ def curve_order(xy):
     orders = [n.arange(len(xy)), n.argsort(xn[:, 0], kind="stable")]
     orders.append(_chain_order(xy) if len(xy) < SCAN_POINTS else _skeleton_order(xy))
     return min(orders, key=lambda o: polyline_length(xy[o]))
+
+
+# A file's points in an order whose polyline is more than FILE_ORDER_RATIO times as long as
+# curve_order's are no curve's (a scanner's unsorted export, QA: 800 points of 0.2 mm noise
+# along 200 mm, 54 m back and forth for 318 mm, fitted 1180 mm long at rms 6.9 mm, status
+# converged); a digitiser's in order zigzags across its noise where the skeleton does less:
+# 1.5 to 1.8 times as long for 2000 points of 0.3 to 1 mm noise.
+FILE_ORDER_RATIO = 3.0
+
+
+def file_order(xy):
+    """(order, warnings) of a file's points (xy: their plane coordinates): (None, []) when
+    the file's order is a curve's, kept exactly, else curve_order's, said in a warning."""
+    order = curve_order(xy)
+    given, curve = polyline_length(xy), polyline_length(xy[order])
+    if not given > FILE_ORDER_RATIO * curve:
+        return None, []
+    return order, [f"the file's points are not in curve order (their polyline is {given:.4g} mm "
+                   f"long, {given / curve:.3g} times the {curve:.4g} mm of the points in curve "
+                   "order): fitted in curve order, as a Points object's"]
 
 
 def _chain_order(xy):
