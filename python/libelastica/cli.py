@@ -436,8 +436,10 @@ def build_parser() -> argparse.ArgumentParser:
     c.add_argument("--start-curvature", type=float, metavar="K",
                    help="curvature at the start (1/units, + turning left; 0: a free end)")
     c.add_argument("--end-curvature", type=float, metavar="K", help="curvature at the end")
-    c.add_argument("--length", metavar="LO,HI", help="range of the curve's length (either may be empty)")
-    c.add_argument("--k", dest="k_range", metavar="LO,HI", help="range of the modulus k")
+    c.add_argument("--length", metavar="L|LO,HI",
+                   help="the curve's length L, or its range (either end may be empty)")
+    c.add_argument("--k", dest="k_range", metavar="K|LO,HI",
+                   help="the modulus k, or its range (either end may be empty)")
     f.add_argument("--step", type=POSITIVE, metavar="R",
                    help="resample into an equilateral polygon of segment R first")
     f.add_argument("--json", metavar="PATH", help="write the result as JSON ('-' = stdout)")

@@ -103,11 +103,15 @@ def _constraints(args, data: np.ndarray) -> Dict[str, Any]:
     for name in ("length", "k"):
         spec = getattr(args, name if name == "length" else "k_range")
         if spec is not None:
-            lo, _, hi = spec.partition(",")
+            # one value is that value exactly, as hermite's and spline's --length L (QA:
+            # `--length 95` was read as 95 or more and fitted 99.7 long, exit 0)
+            lo, comma, hi = spec.partition(",")
+            hi = hi if comma else lo
             try:
                 con[name] = (float(lo) if lo.strip() else None, float(hi) if hi.strip() else None)
             except ValueError:
-                raise InputError(f"--{name}: expected LO,HI (either may be empty), got {spec!r}") from None
+                raise InputError(f"--{name}: expected V or LO,HI (either may be empty), "
+                                 f"got {spec!r}") from None
     return con
 
 

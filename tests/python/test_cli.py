@@ -383,6 +383,24 @@ def test_fit_orthogonal_distances_and_constraints(capsys, tmp_path):
     assert r.returncode == 0 and json.loads(r.stdout)["distance"] == "paired"
 
 
+def test_fit_one_length_is_that_length(capsys):
+    """`fit --length L` fits a curve of length L, as hermite's and spline's --length L
+    (it was read as L or more: `--length 95` fitted the sample 99.7 long, exit 0); LO,HI
+    stays a range, ',HI' an upper bound."""
+    lengths = {}
+    for spec in ("95", "95,95", "95,", ",95"):
+        r = cli(capsys, "fit", SAMPLE_2D, "--model", "smooth", "--length", spec, "--json", "-")
+        assert r.returncode == 0, r.stderr
+        lengths[spec] = json.loads(r.stdout)["curve"]["length"]
+    free = json.loads(cli(capsys, "fit", SAMPLE_2D, "--model", "smooth", "--json", "-").stdout)
+    assert free["curve"]["length"] > 95 + 1
+    assert lengths["95"] == pytest.approx(95, rel=1e-9) == lengths["95,95"]
+    assert lengths["95,"] == pytest.approx(free["curve"]["length"], rel=1e-6)
+    assert lengths[",95"] == pytest.approx(95, rel=1e-9)
+    r = cli(capsys, "fit", SAMPLE_2D, "--length", "x")
+    assert r.returncode == 2 and "--length: expected V or LO,HI" in r.stderr
+
+
 def test_fit_discrete_bspline_keeps_the_end_constraints(capsys, tmp_path):
     """A discrete fit's B-spline (--bspline-tol, --dxf: the C2 cubic through its vertices)
     takes the constrained ends: a start tangent with a curvature (G2: both exactly), an end
