@@ -259,6 +259,9 @@ class EllipticBlend(_Blend):
     def _args(self) -> str:
         return f"k={self.k!r}, d={self.d!r}"
 
+    def __reduce__(self):     # pickle / copy by the parameters (the C basis is cffi data)
+        return EllipticBlend, (self.k, self.d)
+
 
 class MQBlend(_Blend):
     """Eck's MQ span ``{1-t, sqrt(c^2+(1-t)^2), sqrt(c^2+t^2), t}`` (2.1), c != 0, with
@@ -278,6 +281,9 @@ class MQBlend(_Blend):
 
     def _args(self) -> str:
         return f"c={self.c!r}, d={self.d!r}"
+
+    def __reduce__(self):     # pickle / copy by the parameters (the C basis is cffi data)
+        return MQBlend, (self.c, self.d)
 
 
 def eck_d(c: float) -> float:

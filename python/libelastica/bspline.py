@@ -38,6 +38,11 @@ class BSpline:
         self.max_deviation = as_real(max_deviation, "BSpline: max_deviation", finite=False)
         self._c()  # validates (EL_EINVAL -> ElasticaError)
 
+    def __getstate__(self):
+        """Without the cffi array of the last C view (it cannot be pickled or copied; _c
+        makes one per call)."""
+        return {k: v for k, v in self.__dict__.items() if k != "_cmults"}
+
     # -- C view -------------------------------------------------------------
     def _c(self):
         """An el_bspline pointing into this object's arrays (valid while self lives)."""

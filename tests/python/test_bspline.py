@@ -385,3 +385,21 @@ def test_chain_whose_pieces_do_not_meet_is_refused_naming_the_joint():
             el.smooth_chain_to_bspline([a, b], 1e-6, 5)
     sp = el.elastic_spline([(0, 0), (1, 0.5), (2, 0.2), (3, 1.0)], tension=0.1)
     assert sp.to_bspline(1e-9, 5).max_deviation <= 1e-9
+
+
+def test_pickle_and_copy_keep_the_curve():
+    """A B-spline pickles and deep-copies (multiprocessing, caches: its C view's cffi array
+    raised TypeError), the copy evaluating bit for bit as the original and still usable
+    after the original is gone."""
+    import copy
+    import pickle
+    b = el.SmoothElastica(**CURVES["inflectional k<1"]).to_bspline(1e-6)
+    t = np.linspace(*b.domain, 57)
+    want = b.evaluate(t)
+    b.evaluate(t[:3])                       # a C view made before the copies
+    for twin in (pickle.loads(pickle.dumps(b)), copy.deepcopy(b), copy.copy(b)):
+        assert np.array_equal(twin.evaluate(t), want)
+        assert twin.max_deviation == b.max_deviation
+    twin = pickle.loads(pickle.dumps(b))
+    del b
+    assert np.array_equal(twin.evaluate(t), want)
