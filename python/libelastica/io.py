@@ -28,16 +28,16 @@ class InputError(ValueError):
     """Bad user input (a file that is missing, malformed, or holds unusable points)."""
 
 
-# a number written with a decimal comma (1,5 or -0,25e3): semicolon-separated files
-# from spreadsheets in many locales
+# a number written with a decimal comma (1,5 or -0,25e3): semicolon- or tab-separated files
+# from spreadsheets and digitisers in many locales
 _DECIMAL_COMMA = re.compile(r"[+-]?\d*,\d+(?:[eE][+-]?\d+)?")
 # a header's coordinate names: x, Y, "z [mm]", "x (mm)"
 _AXIS_NAME = re.compile(r"\s*([xyzXYZ])\s*(?:[\[(].*[\])])?\s*")
 
 
 def _parse_text(text: str, name: str) -> np.ndarray:
-    """Rows of numbers separated by semicolons (with decimal commas or points), commas,
-    tabs or spaces. Blank lines and lines starting with '#' are skipped; one header line
+    """Rows of numbers separated by semicolons or tabs (with decimal commas or points),
+    commas, or spaces. Blank lines and lines starting with '#' are skipped; one header line
     of non-numbers (e.g. ``x,y,z``) is allowed as the first data line. Rows of more than 3
     columns (a scanner's point ids, normals, intensities; a survey's point names) are read
     when the header names the coordinate columns ``x``, ``y`` and optionally ``z`` (units in
@@ -50,6 +50,8 @@ def _parse_text(text: str, name: str) -> np.ndarray:
     delim = None
     if ";" in sample:
         delim = ";"
+    elif "," in sample and _tab_separated_decimal_commas(data_lines[:20]):
+        delim = "\t"
     elif "," in sample:
         delim = ","
     reader = (csv.reader(_io.StringIO(text), delimiter=delim) if delim
@@ -58,7 +60,7 @@ def _parse_text(text: str, name: str) -> np.ndarray:
         fields = [f.strip() for f in fields if f.strip() != ""]
         if not fields or fields[0].startswith("#"):
             continue
-        if delim == ";":
+        if delim in (";", "\t"):
             fields = [f.replace(",", ".") if _DECIMAL_COMMA.fullmatch(f) else f for f in fields]
         if not rows and header is None and not any(_is_number(f) for f in fields):
             header = fields            # a header line
@@ -85,6 +87,17 @@ def _parse_text(text: str, name: str) -> np.ndarray:
     return out
 
 
+def _tab_separated_decimal_commas(lines) -> bool:
+    """Whether lines holding commas are tab-separated numbers with decimal commas (an
+    export as '1,5<TAB>0,25': QA, refused as 'not a number'): every line but a header splits
+    at tabs into numbers, some written with a decimal comma."""
+    rows = [[f.strip() for f in ln.split("\t") if f.strip()] for ln in lines]
+    rows = rows[1:] if rows and not any(map(_is_number, rows[0])) else rows
+    return bool(rows) and all(len(r) > 1 for r in rows) and all(
+        _is_number(f) or _DECIMAL_COMMA.fullmatch(f) for r in rows for f in r) and any(
+        _DECIMAL_COMMA.fullmatch(f) for r in rows for f in r)
+
+
 def _is_number(s: str) -> bool:
     try:
         float(s)
@@ -97,7 +110,8 @@ def read_points(path: PathLike, min_points: int = 3) -> np.ndarray:
     """Read an (n, 2) or (n, 3) float64 array of points from ``path``.
 
     Formats: ``.npy`` (a numeric array of shape (n, 2) or (n, 3)), otherwise text
-    with comma, semicolon (decimal commas allowed) or whitespace separated columns,
+    with comma, semicolon or tab (decimal commas allowed with both) or whitespace
+    separated columns,
     ``#`` comments and an optional header line, which can pick the columns ``x``, ``y``,
     ``z`` out of more. Raises :class:`InputError` for a missing or unreadable file,
     malformed rows, a column count other than 2 or 3 without such a header, NaN/inf

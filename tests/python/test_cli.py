@@ -154,7 +154,8 @@ def test_read_points_formats(tmp_path):
 
 
 def test_read_points_as_scanners_and_spreadsheets_write_them(tmp_path):
-    """Semicolons with decimal commas (a spreadsheet in many locales); a header that names
+    """Semicolons or tabs with decimal commas (spreadsheets, digitisers in many locales),
+    other files with tabs as they were read; a header that names
     the coordinate columns picks them by name, out of more columns (point ids, normals)
     or in another order ("id,x,y" read the ids as x before), the other columns text too (a
     survey's point names: "name,x,y,z" was refused, QA); more than 3 columns without such
@@ -165,6 +166,11 @@ def test_read_points_as_scanners_and_spreadsheets_write_them(tmp_path):
         "comma.csv": "x;y\n" + "".join(f"{x};{y}\n".replace(".", ",") for x, y in pts),
         "units.csv": "X [mm]; Y [mm]\n" + "".join(f"{x:.2f};{y:.2f}\n".replace(".", ",")
                                                   for x, y in pts),
+        # tabs with decimal commas (a digitiser's export; refused as 'not a number', QA),
+        # tabs with decimal points, and a comma-separated file with a tab after the commas
+        "tabs.txt": "x\ty\n" + "".join(f"{x}\t{y}\n".replace(".", ",") for x, y in pts),
+        "tabs_points.txt": "".join(f"{x}\t{y}\n" for x, y in pts),
+        "comma_tab.csv": "".join(f"{x},\t{y}\n" for x, y in pts),
         "ids.csv": "id,x,y\n" + "".join(f"{i + 7},{x},{y}\n" for i, (x, y) in enumerate(pts)),
         "swapped.txt": "y x\n" + "".join(f"{y} {x}\n" for x, y in pts),
         "scan.csv": "id,x,y,z,nx,ny,nz\n" + "".join(f"{i},{x},{y},{c},0,0,1\n"
