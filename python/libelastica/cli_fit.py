@@ -55,7 +55,9 @@ def _fit_kwargs(args, fixed: Dict[str, float], constraints: Optional[Dict[str, A
     return kw
 
 
-def _side_record(res, data: np.ndarray, model: str) -> Dict[str, Any]:
+def _side_record(res, data: np.ndarray, model: str, free=None) -> Dict[str, Any]:
+    """The JSON record of one fitted curve; ``free``: a constrained fit's points' distances
+    to the fit without its constraints (points held off only by them are no outliers)."""
     rec = {"model": model, "n_points": int(len(data)),
            "curve": curve_to_dict(res.curve),
            "initial": curve_to_dict(res.initial) if res.initial is not None else None,
@@ -68,7 +70,7 @@ def _side_record(res, data: np.ndarray, model: str) -> Dict[str, Any]:
         # point-to-curve distances (+ = left of the curve) and each foot's arc length
         rec.update(distance=res.distance, distances=[float(v) for v in res.distances],
                    foot_s=[float(v) for v in res.foot_s],
-                   outliers=[int(i) for i in res.outliers()])   # el.far_points
+                   outliers=[int(i) for i in res.outliers(free_distances=free)])
     return rec
 
 
@@ -163,8 +165,12 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
             data = el.resample_equilateral(xy, args.step)
             if len(data) < 4:
                 raise InputError(f"{path}: --step {args.step} leaves only {len(data)} points")
-        res = el.fit(data, **_fit_kwargs(args, _parse_fix(args.fix, data), _constraints(args, data)))
-        records.append(_side_record(res, data, args.model))
+        fixed, constraints = _parse_fix(args.fix, data), _constraints(args, data)
+        res = el.fit(data, **_fit_kwargs(args, fixed, constraints))
+        free = None
+        if constraints and getattr(res, "distances", None) is not None:
+            free = el.fit(data, **_fit_kwargs(args, fixed)).distances
+        records.append(_side_record(res, data, args.model, free))
         pictures.append((data, res))
     for rec in records:
         rec.update({"file": str(path), "plane": plane, "step": args.step, **extra_info})

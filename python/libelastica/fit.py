@@ -110,10 +110,11 @@ class FitResult:
             return self.curve.points()
         return self.curve.points(self.s)
 
-    def outliers(self, factor: Optional[float] = None) -> np.ndarray:
-        """Indices of the points far from the fitted curve (:func:`far_points`)."""
+    def outliers(self, factor: Optional[float] = None, free_distances=None) -> np.ndarray:
+        """Indices of the points far from the fitted curve (:func:`far_points`;
+        ``free_distances``: a constrained fit's points' distances without its constraints)."""
         return far_points(self.distances, self.points,
-                          OUTLIER_FACTOR if factor is None else factor)
+                          OUTLIER_FACTOR if factor is None else factor, free_distances)
 
     def foot_points(self) -> np.ndarray:
         """Each data point's nearest point on the curve (the other end of its
@@ -133,7 +134,8 @@ OUTLIER_FLOOR = 1e-4
 OUTLIER_GAP = 1.5
 
 
-def far_points(distances, points, factor: float = OUTLIER_FACTOR) -> np.ndarray:
+def far_points(distances, points, factor: float = OUTLIER_FACTOR,
+               free_distances=None) -> np.ndarray:
     """Indices of the points whose distance to a fitted curve exceeds ``factor`` times the
     typical distance, 1.4826 x the median |distance| (for normal noise its standard
     deviation, which a few far points hardly move), standing apart from the others (a step
@@ -142,11 +144,17 @@ def far_points(distances, points, factor: float = OUTLIER_FACTOR) -> np.ndarray:
     of a sketched B-spline fitted to 0.00026 mm on 330 mm had 6 "outliers" at 0.0004-0.0012
     mm under a floor of 1e-6): scan glitches, points of other geometry, each pulling a
     least-squares fit towards itself. None among fewer than OUTLIER_MIN_POINTS points (too
-    few for a typical distance)."""
+    few for a typical distance). ``free_distances``: for a constrained fit, the same points'
+    distances to the fit without its constraints; a point is far only when far from both
+    (a length held short of the data's left its two end points 2.2 off, the others within
+    0.5: no glitches, the constraint's cost)."""
     d = np.abs(as_real_array(distances, "far_points: distances"))
     pts = as_real_array(points, "far_points: points")
     if d.ndim != 1 or pts.ndim != 2 or len(pts) != len(d):
         raise ValueError("far_points: distances (n,) and points (n, 2 or 3) are needed")
+    if free_distances is not None:
+        free = far_points(free_distances, pts, factor)
+        return np.intersect1d(far_points(d, pts, factor), free)
     if len(d) < OUTLIER_MIN_POINTS:
         return np.empty(0, dtype=np.intp)
     extent = float(np.max(np.ptp(pts, axis=0)))

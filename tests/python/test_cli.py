@@ -524,6 +524,15 @@ def test_fit_warns_of_points_far_from_the_curve(capsys, tmp_path):
     r = cli(capsys, "fit", SAMPLE_S, "--json", "-")
     assert r.returncode == 0 and "outliers" not in r.stderr
     assert json.loads(r.stdout)["outliers"] == []
+    # a constrained fit: the glitches still named; the end points a length held short of
+    # the data's leaves 2.2 off (the others within 0.5) are the constraint's cost, not
+    # outliers to remove (QA: "points 0, 29 ... remove them to fit the rest")
+    r = cli(capsys, "fit", path, "--model", "smooth", "--start-tangent", "17", "--json", "-")
+    assert r.returncode == 0 and json.loads(r.stdout)["outliers"] == [10, 30, 45], r.stderr
+    r = cli(capsys, "fit", SAMPLE_2D, "--model", "smooth", "--length", "95", "--json", "-")
+    d = np.abs(json.loads(r.stdout)["distances"])
+    assert r.returncode == 0 and min(d[0], d[-1]) > 4 * max(d[1:-1])
+    assert "outliers" not in r.stderr and json.loads(r.stdout)["outliers"] == []
     # in a batch with its progress bar: the warning on a line of its own, the bar's line
     # wiped before it (it was written after the bar, "[###...] 1/3 s.csv  elastica fit: ...")
     r = cli(capsys, "fit", SAMPLE_S, path, SAMPLE_2D, "--progress", "--json", tmp_path / "b.json")

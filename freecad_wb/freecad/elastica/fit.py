@@ -166,22 +166,24 @@ COST_RATIO, COST_FLOOR = 2.0, 1e-4
 
 
 def _constraint_cost(xy, model, distance, fixed, constraints, rms, fields):
-    """(rms of the same fit with free ends, or -1 when it fails; the warnings);
-    fields: constraint_fields. A discrete fit's rms is its drawn cubic's (drawn_distances)."""
+    """(rms of the same fit with free ends, or -1 when it fails; the warnings; the points'
+    distances to that fit, or None); fields: constraint_fields. A discrete fit's distances
+    are its drawn cubic's (drawn_distances)."""
     try:
         r = el().fit(xy, model=model, fixed=fixed or None,
                      distance=distance if model == "smooth" else None)
-        free = r.rms if model == "smooth" else \
-            _rms(drawn_distances(r.to_bspline(), xy, r.foot_s)[1])
+        dist = r.distances if model == "smooth" else \
+            drawn_distances(r.to_bspline(), xy, r.foot_s)[1]
+        free = r.rms if model == "smooth" else _rms(dist)
     except (ValueError, ArithmeticError, RuntimeError):
-        return -1.0, []
+        return -1.0, [], None
     extent = float(np().ptp(xy, axis=0).max())
     if not (rms > COST_RATIO * free and rms - free > COST_FLOOR * extent):
-        return float(free), []
+        return float(free), [], dist
     named = list(dict.fromkeys(fields[c] for c in CONSTRAINT_FIELDS if c in constraints))
     return float(free), [f"the end conditions ({', '.join(named)}) raise the rms from "
                          f"{free:.3g} mm (free ends) to {rms:.3g} mm: check that they match "
-                         "the data"]
+                         "the data"], dist
 
 
 def _rms(dist):
@@ -424,12 +426,13 @@ def _coarse_polygon(xy, constraints, rms):
             "from them: choose Model Smooth elastica for so few points"]
 
 
-def _far_points(data, dist, plane):
+def _far_points(data, dist, plane, free=None):
     """The warning for points far from the fitted curve (el.far_points: glitches of a scan,
     points of other geometry), naming the farthest's place, else none. data: (n, 3) in the
-    frame ``plane``."""
+    frame ``plane``; free: their distances to the fit with free ends (points held off only
+    by the end conditions are no outliers to remove)."""
     n = np()
-    far = el().far_points(dist, data)
+    far = el().far_points(dist, data, free_distances=free)
     if not len(far):
         return []
     farthest = far[n.argmax(n.abs(n.asarray(dist, dtype=float))[far])]
@@ -522,6 +525,7 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
             user = _facing_the_edges(user[order], plane, start_edge, end_edge)
         xy = n.ascontiguousarray(user[:, :2])
         constraints, free_rms, warnings, used, reversed_joins = {}, -1.0, [], None, []
+        free_dist = None
         if split:
             default = _keyline_step(xy)
             _check_reach(xy, step, [0, -1], default)
@@ -551,8 +555,8 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
             feet, dist = drawn_distances(bspline, data, _foot_parameters(results, split))
             rms, max_error = _rms(dist), float(np().abs(dist).max())
         if constraints:
-            free_rms, warnings = _constraint_cost(xy, model, distance, fixed, constraints, rms,
-                                                  fields)
+            free_rms, warnings, free_dist = _constraint_cost(xy, model, distance, fixed,
+                                                             constraints, rms, fields)
         warnings = ordering + reversed_joins + warnings
         if model == "discrete" and not split and not step:
             warnings = warnings + _coarse_polygon(xy, constraints, rms)
@@ -573,7 +577,8 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         data = user
         warnings = warnings + _left_out(beyond, dist, step, used) + \
             _off_plane(user[:, 2], plane_rms, size) + \
-            _far_points(data[~beyond], dist[~beyond], plane)
+            _far_points(data[~beyond], dist[~beyond], plane,
+                        None if resampled or free_dist is None else free_dist[~beyond])
     except InputProblem:
         raise
     except (ValueError, ArithmeticError, RuntimeError) as exc:
