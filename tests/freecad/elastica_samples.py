@@ -118,6 +118,42 @@ def lead_in_sketches(doc):
     return sk, pts
 
 
+def helper_and_curve_sketch(doc, xy, pieces=3, name="Chain"):
+    """QA's sketch of picked sources (bug_source_names): a helper line (geometry 0, Edge1),
+    then the curve through ``xy`` as ``pieces`` B-splines end to end (geometry 1, 2, ...; a
+    piece through 2 points is a line): the helper made construction or deleted, every other
+    edge and vertex name shifts."""
+    sk = doc.addObject("Sketcher::SketchObject", name)
+    sk.Placement = SKETCH_PLACEMENT
+    sk.addGeometry(Part.LineSegment(App.Vector(-60, 200, 0), App.Vector(-30, 200, 0)), False)
+    cuts = np.linspace(0, len(xy) - 1, pieces + 1).round().astype(int)
+    for a, b in zip(cuts, cuts[1:]):
+        pts = [App.Vector(x, y, 0) for x, y in xy[a:b + 1]]
+        if len(pts) == 2:
+            sk.addGeometry(Part.LineSegment(*pts), False)
+            continue
+        c = Part.BSplineCurve()
+        c.interpolate(pts)
+        sk.addGeometry(c, False)
+    doc.recompute()
+    return sk
+
+
+def sketch_names(sketch, elements):
+    """The names the sketch's elements [(geometry index, 'edge' / 'start' / 'end')] have now:
+    'EdgeN' of the edge through the geometry's middle, 'VertexN' at its start or end."""
+    out = []
+    for i, what in elements:
+        e = sketch.Geometry[i].toShape()
+        u = {"start": e.FirstParameter, "end": e.LastParameter}.get(
+            what, 0.5 * (e.FirstParameter + e.LastParameter))
+        at = Part.Vertex(sketch.Placement.multVec(e.valueAt(u)))
+        kind = sketch.Shape.Edges if what == "edge" else sketch.Shape.Vertexes
+        out.append(next(f"{'Edge' if what == 'edge' else 'Vertex'}{k + 1}"
+                        for k, x in enumerate(kind) if x.distToShape(at)[0] < 1e-7))
+    return out
+
+
 def line_and_arc_sketch(doc, name="LineArc", placement=SKETCH_PLACEMENT):
     """A line ending at (0, 0) heading 18 degrees up, and a quarter arc (radius 40 about
     (100, -45)) whose end (60, -45) is the nearest, 75 mm away: the blend must turn back

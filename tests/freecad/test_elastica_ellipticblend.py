@@ -103,6 +103,24 @@ class EllipticBlendTest(unittest.TestCase):
         self.assertLess((e.valueAt(e.FirstParameter) - pts[0]).Length, 1e-7)
         self.assertLess((e.valueAt(e.LastParameter) - pts[-1]).Length, 1e-7)
 
+    def test_picked_vertices_follow_their_geometry(self):
+        """Four vertices picked in a sketch stay those points as an earlier helper line turns
+        construction or is deleted; their geometry deleted, it says so."""
+        sk = S.helper_and_curve_sketch(self.doc, XY, pieces=3)
+        picked = [(1, "start"), (1, "end"), (2, "end"), (3, "end")]
+        f = El.make(self.doc, [(sk, S.sketch_names(sk, picked))])
+        self.doc.recompute()
+        for change in (lambda: sk.toggleConstruction(0), lambda: sk.delGeometry(0)):
+            change()
+            self.doc.recompute()
+            self._ok(f)
+            self._through(f, self.pts)
+        name = f.Points[0][1][3]
+        sk.delGeometry(2)                                # the last point's line
+        self.doc.recompute()
+        self.assertEqual(f.Status, f"error: Points: the sketch geometry it followed (Chain."
+                         f"{name}) was deleted: relink Points")
+
     def test_from_sketch_points_interpolates(self):
         f = El.make(self.doc, [(self.sk, [])])
         self.doc.recompute()

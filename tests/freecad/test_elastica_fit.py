@@ -1006,6 +1006,88 @@ class FitEdgeLinkTest(unittest.TestCase):
         self.assertEqual(f.Status, "converged")
 
 
+class FitSourceLinkTest(unittest.TestCase):
+    """Edges and vertices picked in a sketch for Source are their geometry, followed as the
+    sketch changes (QA: a fit of Chain.Edge2 and Edge3 fitted Edge3 and Edge4 once the helper
+    line Edge1 was made construction, status converged)."""
+
+    def setUp(self):
+        self.doc = S.new_doc("ElasticaFitSourceLink")
+        self.xy, _ = S.keyline_xy(40)
+
+    def tearDown(self):
+        App.closeDocument(self.doc.Name)
+
+    def _same_points(self, f, points):
+        self.assertEqual(f.Status, "converged")
+        self.assertEqual(len(f.DataPoints), len(points))
+        self.assertLess(max((a - b).Length for a, b in zip(f.DataPoints, points)), 1e-9)
+
+    def _reopened(self, f):
+        path = S.temp_path(self, "source.FCStd")
+        name = f.Name
+        self.doc.saveAs(path)
+        App.closeDocument(self.doc.Name)
+        self.doc = App.openDocument(path)
+        return self.doc.getObject("Chain"), self.doc.getObject(name)
+
+    def test_picked_edges_follow_their_geometry(self):
+        sk = S.helper_and_curve_sketch(self.doc, self.xy)
+        picked = [(1, "edge"), (2, "edge")]
+        f = Fi.make(self.doc, [(sk, S.sketch_names(sk, picked))], Model="smooth")
+        self.doc.recompute()
+        self.assertEqual(f.Source[0][1], ("Edge2", "Edge3"))
+        points = list(f.DataPoints)
+        sk, f = self._reopened(f)            # the geometry's Tags are new: its indices saved
+        sk.toggleConstruction(0)
+        self.doc.recompute()
+        self._same_points(f, points)
+        self.assertEqual(f.Source[0][1], tuple(S.sketch_names(sk, picked)))
+        self.assertEqual(f.Source[0][1], ("Edge1", "Edge2"))
+        sk.delGeometry(0)
+        self.doc.recompute()
+        self._same_points(f, points)
+        self.assertEqual(list(f.SourceGeometry), ["0", "1"])
+
+    def test_picked_vertices_follow_their_geometry(self):
+        sk = S.helper_and_curve_sketch(self.doc, self.xy[::3], pieces=len(self.xy[::3]) - 1)
+        picked = [(i, "start") for i in range(1, 12)]
+        f = Fi.make(self.doc, [(sk, S.sketch_names(sk, picked))], Model="smooth")
+        self.doc.recompute()
+        points = list(f.DataPoints)
+        self.assertEqual(len(points), 11)
+        for change in (lambda: sk.toggleConstruction(0), lambda: sk.delGeometry(0)):
+            change()
+            self.doc.recompute()
+            self._same_points(f, points)
+        # a vertex is known by the first geometry ending there: the end of the one before
+        self.assertEqual(list(f.SourceGeometry)[:2], ["0:start", "0:end"])
+
+    def test_a_document_of_a_version_before_follows_the_sources_it_names(self):
+        sk = S.helper_and_curve_sketch(self.doc, self.xy)
+        f = Fi.make(self.doc, [(sk, ["Edge2", "Edge3"])], Model="smooth")
+        self.doc.recompute()
+        points = list(f.DataPoints)
+        f.removeProperty("SourceGeometry")             # a document made before: no indices
+        sk, f = self._reopened(f)
+        sk.toggleConstruction(0)
+        self.doc.recompute()
+        self._same_points(f, points)
+        self.assertEqual(list(f.SourceGeometry), ["1", "2"])
+
+    def test_a_deleted_source_geometry_is_named(self):
+        sk = S.helper_and_curve_sketch(self.doc, self.xy)
+        f = Fi.make(self.doc, [(sk, ["Edge2", "Edge3"])], Model="smooth")
+        self.doc.recompute()
+        sk.delGeometry(2)                                # the second edge picked
+        self.doc.recompute()
+        self.assertEqual(f.Status, "error: Source: the sketch geometry it followed (Chain.Edge3) "
+                         "was deleted: relink Source")
+        f.Source = [(sk, ["Edge2"])]                     # relinked: the first edge alone
+        self.doc.recompute()
+        self.assertEqual(f.Status, "converged")
+
+
 class FitDistanceTest(unittest.TestCase):
     """Issue 13 point 2 in FreeCAD: Rms, MaxError and Distances are point-to-curve figures
     (the library's; a discrete fit's to its drawn cubic) and equal Part's own distance of

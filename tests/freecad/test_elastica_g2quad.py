@@ -33,6 +33,25 @@ class G2QuadTest(unittest.TestCase):
     def tearDown(self):
         App.closeDocument(self.doc.Name)
 
+    def test_a_picked_edge_follows_its_geometry(self):
+        """QA: the G2 quadratic of Chain.Edge3 approximated Edge4 once the helper line Edge1 was
+        made construction; its geometry deleted, it says so."""
+        sk = S.helper_and_curve_sketch(self.doc, self.xy)
+        q = Q.make(self.doc, [(sk, ["Edge3"])], Edges=24)
+        self.doc.recompute()
+        self.assertEqual(q.Status, "ok")
+        polyline = list(q.Polyline)
+        for change in (lambda: sk.toggleConstruction(0), lambda: sk.delGeometry(0)):
+            change()
+            self.doc.recompute()
+            self.assertEqual(q.Status, "ok")
+            self.assertLess(max((a - b).Length for a, b in zip(q.Polyline, polyline)), 1e-9)
+        self.assertEqual(q.Source[0][1], ("Edge2",))
+        sk.delGeometry(1)
+        self.doc.recompute()
+        self.assertEqual(q.Status, "error: Source: the sketch geometry it followed (Chain.Edge2) "
+                         "was deleted: relink Source")
+
     def test_where_the_pieces_meet_is_reported_as_measured(self):
         """The pieces meet at the inflection: JoinAngle and JoinCurvatureJump are the
         angle between their tangents and the jump of their signed curvature there, measured
@@ -113,6 +132,7 @@ class G2QuadTest(unittest.TestCase):
         c = Part.BSplineCurve()
         c.interpolate([App.Vector(x, y, 0) for x, y in xy])
         self.sk.addGeometry(c, False)
+        q.Source = [(self.sk, ["Edge1"])]            # the curve it followed is deleted: relinked
         self.doc.recompute()
         self.assertEqual(q.Status, "ok")
         self.assertGreater(abs(q.Shape.Length - before), 1.0)

@@ -206,6 +206,22 @@ class SplineTest(unittest.TestCase):
         self.assertEqual(s.Status, f"error: StartEdge: the sketch geometry it followed "
                          f"({sk.Label}.Edge1) was deleted: relink StartEdge")
 
+    def test_picked_points_follow_their_geometry(self):
+        """QA: a spline through picked sketch vertices ran through other vertices once the
+        helper line Edge1 was made construction (its two vertices gone from the numbering)."""
+        xy = [(0, 0), (30, 10), (60, 5), (90, 20), (120, 0), (150, 15)]
+        sk = S.helper_and_curve_sketch(self.doc, xy, pieces=5)
+        picked = [(1, "start"), (1, "end"), (2, "end"), (3, "end")]
+        s = self.spline([(sk, S.sketch_names(sk, picked))])
+        ducks = self.global_ducks(xy[:4])
+        for change in (lambda: sk.toggleConstruction(0), lambda: sk.delGeometry(0)):
+            change()
+            self.doc.recompute()
+            self.assertTrue(s.Status.startswith("ok"), s.Status)
+            self.assertLess(max((a - b).Length for a, b in zip(s.Ducks, ducks)), 1e-9)
+        self.assertEqual(s.Points[0][1], tuple(S.sketch_names(sk, [(0, "start"), (0, "end"),
+                                                                   (1, "end"), (2, "end")])))
+
     def test_g2_end_after_a_line(self):
         """Zero curvature after a line (the former rule, a tension of the end span's
         own, found none here): met, a guide duck holding the batten."""

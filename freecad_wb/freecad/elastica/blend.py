@@ -294,7 +294,7 @@ class BlendProxy(FeatureProxy):
     """Elastic Hermite curve between an end of one edge and an end of another."""
 
     kind = "Blend"
-    edge_links = {"Edge1": "SketchGeometry1", "Edge2": "SketchGeometry2"}
+    followed_links = {"Edge1": "SketchGeometry1", "Edge2": "SketchGeometry2"}
 
     def setup(self, obj):
         tol, _, _ = defaults()
@@ -306,7 +306,7 @@ class BlendProxy(FeatureProxy):
                      "Leave the first edge at its end vertex (else at its start)", True)
         add_property(obj, "App::PropertyBool", "AtEnd2", "Input",
                      "Enter the second edge at its end vertex (else at its start)", False)
-        for link, index in self.edge_links.items():
+        for link, index in self.followed_links.items():
             add_geometry_index(obj, index, link)
         add_enum(obj, "Mode", "Blend", "Solve for a given tension (default: 0, the free "
                  "batten) or a given arc length", MODES, "tension")
@@ -366,7 +366,7 @@ class BlendProxy(FeatureProxy):
                   "BlendTension", "Poles", "Status", "Curves", "Plane")
 
     def onChanged(self, obj, prop):
-        if prop in self.edge_links and not self.link_changed(obj, prop):
+        if prop in self.followed_links and not self.link_changed(obj, prop):
             return                  # restored, or renamed following its sketch geometry
         # a new problem: its lowest-energy solution (the panel re-applies a user's pick)
         if prop in ("Mode", "Length", "Tension", "AtEnd1", "AtEnd2", "Edge1", "Edge2") \
@@ -394,7 +394,7 @@ class BlendProxy(FeatureProxy):
     def ends(self, obj):
         """The two linked edges (global), or InputProblem."""
         out = []
-        for prop in self.edge_links:
+        for prop in self.followed_links:
             link = getattr(obj, prop)
             if link and not (link[1] and link[1][0].startswith("Edge")):
                 raise InputProblem(f"{prop} links {link[0].Label}.{(link[1] or [''])[0]}: a "

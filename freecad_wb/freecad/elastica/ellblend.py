@@ -17,9 +17,9 @@ import math
 import FreeCAD as App
 
 from . import defaults
-from .geometry import el, np, part_bspline, plane_coordinates, to_3d
-from .proxy import (FeatureProxy, InputProblem, add_enum, add_length, add_link,
-                    add_property, check_number, check_tolerance, new_feature, read_only)
+from .geometry import el, followed_reader, np, part_bspline, plane_coordinates, to_3d
+from .proxy import (FeatureProxy, InputProblem, add_enum, add_geometry_index, add_length,
+                    add_link, add_property, check_number, check_tolerance, new_feature, read_only)
 from .sources import gather_vertices
 
 MODES = ["interpolate", "control"]
@@ -102,11 +102,13 @@ class EllipticBlendProxy(FeatureProxy):
     """Elliptic blending-function curve (seed 003) through / controlled by four points."""
 
     kind = "EllipticBlend"
+    followed_links = {"Points": "PointsGeometry"}
 
     def setup(self, obj):
         add_link(obj, "App::PropertyLinkSubList", "Points", "Input",
                  "Four coplanar points, in order: vertices of sketches or shapes, or a sketch "
                  "holding four sketch points")
+        add_geometry_index(obj, "PointsGeometry", "Points")
         add_enum(obj, "Mode", "Blend",
                  "interpolate: the curve passes through the four points (chord-length "
                  "parameters); control: the points are its control points", MODES)
@@ -149,7 +151,8 @@ class EllipticBlendProxy(FeatureProxy):
 
     def compute(self, obj):
         """ellblend_core's dict for the linked points; raises InputProblem."""
-        pts, plane = gather_vertices(obj.Points, link="Points")
+        element = followed_reader(obj, "Points")      # renames Points: read it after
+        pts, plane = gather_vertices(obj.Points, link="Points", element=element)
         return ellblend_core(pts, plane, obj.Mode, obj.K, obj.D, float(obj.Tolerance),
                              obj.KConvention)
 

@@ -14,8 +14,8 @@ import FreeCAD as App
 import Part
 
 from . import defaults
-from .geometry import (chain_bspline, el, followed_edge, np, part_bspline, polyline_length,
-                       plane_coordinates, plane_curvature, to_3d, to_plane)
+from .geometry import (chain_bspline, el, followed_edge, followed_reader, np, part_bspline,
+                       polyline_length, plane_coordinates, plane_curvature, to_3d, to_plane)
 from .proxy import (FeatureProxy, InputProblem, add_enum, add_geometry_index, add_length,
                     add_link, add_property, check_degree, check_number, check_tolerance,
                     new_feature, read_only)
@@ -614,7 +614,8 @@ class FitProxy(FeatureProxy):
     """Elastica fitted to sketch edges / vertices, a Points object, a wire or a CSV file."""
 
     kind = "Fit"
-    edge_links = {"StartTangent": "StartTangentGeometry", "EndTangent": "EndTangentGeometry"}
+    followed_links = {"Source": "SourceGeometry", "StartTangent": "StartTangentGeometry",
+                      "EndTangent": "EndTangentGeometry"}
 
     def setup(self, obj):
         tol, deg, model = defaults()
@@ -649,7 +650,7 @@ class FitProxy(FeatureProxy):
         add_link(obj, "App::PropertyLinkSub", "EndTangent", "Fit",
                  "An edge whose tangent (at its end nearest the data's end, projected into "
                  "the fit plane) the curve follows there (one-piece fits; empty: free)")
-        for link, index in self.edge_links.items():
+        for link, index in self.followed_links.items():
             add_geometry_index(obj, index, link)
         for where in ("Start", "End"):
             add_enum(obj, f"{where}Continuity", "Fit",
@@ -720,8 +721,10 @@ class FitProxy(FeatureProxy):
         """The fit as a dict (see fit_core); raises InputProblem."""
         if not 4 <= obj.SamplesPerEdge <= 10000:
             raise InputProblem(f"SamplesPerEdge = {obj.SamplesPerEdge} is not usable: 4 to 10000")
+        # renames Source: read it after; a CSV file is read instead of Source, not its geometry
+        element = None if obj.CsvFile else followed_reader(obj, "Source")
         pts, plane, ordered, closed = gather_points(obj.Source, obj.CsvFile, obj.SamplesPerEdge,
-                                                    link="Source")
+                                                    link="Source", element=element)
         edges = {}
         for key, prop in (("start_edge", "StartTangent"), ("end_edge", "EndTangent")):
             edge = followed_edge(obj, prop)

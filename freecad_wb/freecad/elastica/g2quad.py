@@ -10,8 +10,10 @@ import math
 import FreeCAD as App
 import Part
 
-from .geometry import bspline_edges, el, np, plane_coordinates, plane_curvature, to_3d
-from .proxy import FeatureProxy, InputProblem, add_link, add_property, new_feature, read_only
+from .geometry import (bspline_edges, el, followed_reader, np, plane_coordinates,
+                       plane_curvature, to_3d)
+from .proxy import (FeatureProxy, InputProblem, add_geometry_index, add_link, add_property,
+                    new_feature, read_only)
 from .sources import gather_edges, sample_chain
 
 SAMPLES_PER_VERTEX = 20     # seed 002 §4.2: |p| ~ 20 |x|
@@ -73,10 +75,12 @@ class G2QuadProxy(FeatureProxy):
     """Curvature-continuous quadratic B-spline of a picked curve (seed 002)."""
 
     kind = "G2Quad"
+    followed_links = {"Source": "SourceGeometry"}
 
     def setup(self, obj):
         add_link(obj, "App::PropertyLinkSubList", "Source", "Input",
                  "The curve: edges of a sketch or any object (one open chain, in a plane)")
+        add_geometry_index(obj, "SourceGeometry", "Source")
         add_property(obj, "App::PropertyInteger", "Edges", "G2 quadratic",
                      "Edges of the affine arc-length polyline (3 to 5000): the B-splines have "
                      "about as many poles; the distance from the source falls like 1/Edges^2", 24)
@@ -103,7 +107,8 @@ class G2QuadProxy(FeatureProxy):
                   "EndTangentError", "Pieces", "Poles", "Polyline", "Status", "Plane")
 
     def compute(self, obj):
-        edges, plane = gather_edges(obj.Source, link="Source")
+        element = followed_reader(obj, "Source")      # renames Source: read it after
+        edges, plane = gather_edges(obj.Source, link="Source", element=element)
         return g2quad_core(edges, plane, obj.Edges)
 
     def apply(self, obj, r):

@@ -77,11 +77,19 @@ def add_link(obj, kind, name, group, tip):
 
 
 def add_geometry_index(obj, name, link):
-    """The hidden integer property ``name``: the index of the sketch geometry the edge link
-    ``link`` follows (geometry.followed_edge; -1 until the link is first resolved)."""
-    add_property(obj, "App::PropertyInteger", name, obj.getGroupOfProperty(link),
-                 f"Index of {link}'s geometry in its sketch, followed as the sketch changes "
-                 "(-1: not resolved yet, -2: deleted)", -1)
+    """The hidden property ``name``: the indices of the sketch geometry the link ``link``
+    follows (geometry.followed_elements): an integer for a one-edge link (-1 until the link is
+    first resolved), a string list for a list, one entry per sub-element."""
+    group = obj.getGroupOfProperty(link)
+    if obj.getTypeIdOfProperty(link).startswith("App::PropertyLinkSubList"):
+        add_property(obj, "App::PropertyStringList", name, group,
+                     f"Index of the sketch geometry of each sub-element of {link}, followed as "
+                     "the sketch changes: 'i' (its edge), 'i:start' / 'i:end' (a vertex; -1: "
+                     "not resolved yet, -2: deleted)")
+    else:
+        add_property(obj, "App::PropertyInteger", name, group,
+                     f"Index of {link}'s geometry in its sketch, followed as the sketch changes "
+                     "(-1: not resolved yet, -2: deleted)", -1)
     obj.setEditorMode(name, 2)
 
 
@@ -165,9 +173,10 @@ class FeatureProxy:
     (raises InputProblem) and apply (writes the result)."""
 
     kind = ""
-    # {edge link property: the property of the sketch geometry index it follows}: a sketch
-    # edge's name shifts as the sketch changes, its geometry is followed (geometry.followed_edge)
-    edge_links = {}
+    # {link property: the property of the sketch geometry indices it follows}: a sketch edge's or
+    # vertex's name shifts as the sketch changes, its geometry is followed
+    # (geometry.followed_elements)
+    followed_links = {}
 
     def __init__(self, obj):
         self.Object = obj
@@ -202,26 +211,28 @@ class FeatureProxy:
         """Called after a failed recompute (the message is in Status already)."""
 
     def onBeforeChange(self, obj, prop):
-        if prop in self.edge_links:
+        if prop in self.followed_links:
             link = getattr(obj, prop, None)
-            self._removing = bool(link) and bool(link[0].Removing)
+            self._removing = isinstance(link, tuple) and bool(link[0].Removing)
 
     def onChanged(self, obj, prop):
-        if prop in self.edge_links:
+        if prop in self.followed_links:
             self.link_changed(obj, prop)
 
     @property
     def followed(self):
-        """{edge link property: the Tag of the sketch geometry it follows}, in this session
-        (not saved: a document opened gives its sketches' geometry new Tags)."""
+        """{link property: [(the Tag of the sketch geometry a sub-element follows, its
+        position) or None, per sub-element]}, in this session (not saved: a document opened
+        gives its sketches' geometry new Tags)."""
         return self.__dict__.setdefault("_followed", {})
 
     def link_changed(self, obj, prop):
-        """Whether the edge link ``prop`` that changed names other geometry than it followed
+        """Whether the link ``prop`` that changed names other geometry than it followed
         (geometry.relinked): a link the designer changed, emptied as its object is deleted;
-        not one restored, nor followed_edge's renaming."""
+        not one restored, nor followed_elements' renaming."""
         if "Restore" in obj.State or getattr(self, "_restoring", False) or \
-                self.edge_links[prop] not in obj.PropertiesList:
+                getattr(self, "_renaming", False) or \
+                self.followed_links[prop] not in obj.PropertiesList:
             return False
         from .geometry import relinked
         return relinked(obj, prop, deleted=getattr(self, "_removing", False))

@@ -70,9 +70,11 @@ def sample_edges(edges, samples_per_edge):
     return dedup(pts), Part.Wire(ch).isClosed()
 
 
-def gather_points(sources, csv_file="", samples_per_edge=60, link=None):
+def gather_points(sources, csv_file="", samples_per_edge=60, link=None, element=None):
     """Points of a fit's input, in 3D, with what is known about them; ``link``: the
-    feature's property the sources come from (None: a selection; see nothing_read).
+    feature's property the sources come from (None: a selection; see nothing_read);
+    ``element``: the function (obj, name) that reads a picked sub-element (global_element;
+    a feature's: geometry.followed_reader, its sketch geometry followed).
 
     Returns (points: list[App.Vector], plane: App.Placement or None (a sketch's),
     ordered: True (in curve order), False (none: curve_order's) or None (a file's order,
@@ -90,6 +92,7 @@ def gather_points(sources, csv_file="", samples_per_edge=60, link=None):
     if not sources:
         raise nothing_read("sketch edges or vertices, a Points object, a wire, or give a CSV "
                            "file", link)
+    element = element or global_element
     edges, vertices, points = [], [], []
     plane = None
     sketches = set()
@@ -125,7 +128,7 @@ def gather_points(sources, csv_file="", samples_per_edge=60, link=None):
                 vertices.extend(v.Point for v in shape.Vertexes)
             continue
         for s in subs:
-            e = global_element(obj, s)
+            e = element(obj, s)
             if s.startswith("Edge"):
                 edges.append(e)
             elif s.startswith("Vertex"):
@@ -396,7 +399,7 @@ def object_points(obj, curve_ordered=False):
 
 
 def gather_vertices(sources, need="four vertices, or a sketch of four points",
-                    edge_means_object=False, curve_ordered=False, link=None):
+                    edge_means_object=False, curve_ordered=False, link=None, element=None):
     """Picked points in selection order, without merging coincident ones: vertices
     of sketches or shapes ('VertexN'), or whole objects (``object_points``: a
     sketch's points, a Points object, a wire's vertices in order). ``need`` says
@@ -404,11 +407,12 @@ def gather_vertices(sources, need="four vertices, or a sketch of four points",
     its whole object (a click on a Draft wire picks one of its edges);
     ``curve_ordered``: a whole sketch's points in curve order (a spline's ducks; an
     elliptic blend's control points keep the order they were made in); ``link``: the
-    feature's property the sources come from (None: a selection; see nothing_read).
-    Returns (points, plane: the sketch placement when all come from one sketch, else
-    None)."""
+    feature's property the sources come from (None: a selection; see nothing_read);
+    ``element``: reads a picked vertex (as gather_points'). Returns (points, plane: the sketch
+    placement when all come from one sketch, else None)."""
     if not sources:
         raise nothing_read(need, link)
+    element = element or global_element
     pts, sketches = [], set()
     for obj, subs in sources:
         subs = _subs(subs)
@@ -422,19 +426,21 @@ def gather_vertices(sources, need="four vertices, or a sketch of four points",
         for s in subs:
             if not s.startswith("Vertex"):
                 raise InputProblem(f"{obj.Label}.{s}: select vertices (points), not {s}")
-            pts.append(global_element(obj, s).Point)
+            pts.append(element(obj, s).Point)
     plane = None
     if len(sketches) == 1 and all(o.Name in sketches for o, _ in sources):
         plane = next(o for o, _ in sources).getGlobalPlacement()
     return pts, plane
 
 
-def gather_edges(sources, link=None):
+def gather_edges(sources, link=None, element=None):
     """The picked edges (a chain, sorted head to tail) and the sketch plane when they
     all come from one sketch: (edges, plane or None). A whole object gives all its
-    edges. ``link``: the feature's property the sources come from (see nothing_read)."""
+    edges. ``link``: the feature's property the sources come from (see nothing_read);
+    ``element``: reads a picked edge (as gather_points')."""
     if not sources:
         raise nothing_read("an edge or a sketch curve", link)
+    element = element or global_element
     edges, sketches, plane = [], set(), None
     for obj, subs in sources:
         subs = _subs(subs)
@@ -444,10 +450,13 @@ def gather_edges(sources, link=None):
         if is_sketch(obj):
             sketches.add(obj.Name)
             plane = obj.getGlobalPlacement()
-        for s in subs or [f"Edge{i + 1}" for i in range(len(shape.Edges))]:
+        if not subs:
+            edges.extend(shape.Edges)
+            continue
+        for s in subs:
             if not s.startswith("Edge"):
                 raise InputProblem(f"{obj.Label}.{s}: select edges, not {s}")
-            edges.append(global_element(obj, s))
+            edges.append(element(obj, s))
     if len(sketches) != 1 or any(not is_sketch(o) for o, _ in sources):
         plane = None
     return chain(edges), plane

@@ -14,8 +14,8 @@ import math
 import FreeCAD as App
 
 from . import defaults
-from .geometry import edge_end, el, followed_edge, np, part_bspline, plane_coordinates, \
-    plane_curvature, to_3d
+from .geometry import (edge_end, el, followed_edge, followed_reader, np, part_bspline,
+                       plane_coordinates, plane_curvature, to_3d)
 from .proxy import (FeatureProxy, InputProblem, add_enum, add_geometry_index, add_length,
                     add_link, add_property, check_degree, check_number, check_tolerance,
                     new_feature, read_only)
@@ -200,12 +200,14 @@ class SplineProxy(FeatureProxy):
     """The elastic spline through the linked points."""
 
     kind = "Spline"
-    edge_links = {"StartEdge": "StartEdgeGeometry", "EndEdge": "EndEdgeGeometry"}
+    followed_links = {"Points": "PointsGeometry", "StartEdge": "StartEdgeGeometry",
+                      "EndEdge": "EndEdgeGeometry"}
 
     def setup(self, obj):
         tol, _, _ = defaults()
         add_link(obj, "App::PropertyLinkSubList", "Points", "Input",
                  "The ducks, in order: " + DUCKS_NEED)
+        add_geometry_index(obj, "PointsGeometry", "Points")
         add_enum(obj, "Mode", "Spline", "Solve for a given tension (default 0: the free "
                  "batten) or a given total length (the tension follows)", MODES, "tension")
         add_property(obj, "App::PropertyFloat", "Tension", "Spline",
@@ -286,8 +288,9 @@ class SplineProxy(FeatureProxy):
     def compute(self, obj):
         check_number("Stiffness", obj.Stiffness, 0.0, None, "N mm^2", why="0 shows the duck "
                      "forces in units of EI/2")
+        element = followed_reader(obj, "Points")      # renames Points: read it after
         pts, plane = gather_vertices(obj.Points, DUCKS_NEED, edge_means_object=True,
-                                     curve_ordered=True, link="Points")
+                                     curve_ordered=True, link="Points", element=element)
         return spline_core(pts, plane, obj.Mode, obj.Tension, float(obj.Length), obj.Closed,
                            *self.end_specs(obj), tol=float(obj.Tolerance), degree=obj.Degree)
 
