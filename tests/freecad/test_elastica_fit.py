@@ -18,6 +18,7 @@ from freecad.elastica import commands as C
 from freecad.elastica import comb as Co
 from freecad.elastica import fit as Fi
 from freecad.elastica import geometry as G
+from freecad.elastica import links as L
 from freecad.elastica import nearest as Nr
 
 K_TRUE = S.KEYLINE["k"]
@@ -929,7 +930,7 @@ class FitEdgeLinkTest(unittest.TestCase):
         self.assertEqual(f.Status, "converged")
         self.assertLess(min((v.Point - App.Vector(-2, 0, 0)).Length for v in f.Shape.Vertexes),
                         1e-6)
-        self.assertEqual(G.sketch_geo_of_edge(self.sk, f.StartTangent[1][0]), lead_in)
+        self.assertEqual(L.sketch_geo_of_edge(self.sk, f.StartTangent[1][0]), lead_in)
 
     def test_a_tangent_edge_follows_its_geometry_as_the_sketch_changes(self):
         f = self._fit()

@@ -12,8 +12,9 @@ import json
 import FreeCAD as App
 
 from . import defaults
-from .geometry import (edge_end, el, followed_edge, global_element, is_sketch, np,
-                       part_bspline, plane_coordinates, plane_curvature, to_3d)
+from .geometry import (edge_end, el, global_element, is_sketch, np, part_bspline,
+                       plane_coordinates, plane_curvature, to_3d)
+from .links import followed_edge
 from .proxy import (FeatureProxy, InputProblem, add_enum, add_geometry_index, add_length,
                     add_link, add_property, attach_view, check_degree, check_number,
                     check_tolerance, read_only)

@@ -17,7 +17,8 @@ import math
 import FreeCAD as App
 
 from . import defaults
-from .geometry import el, followed_reader, np, part_bspline, plane_coordinates, to_3d
+from .geometry import el, np, part_bspline, plane_coordinates, to_3d
+from .links import followed_reader
 from .proxy import (FeatureProxy, InputProblem, add_enum, add_geometry_index, add_length,
                     add_link, add_property, check_number, check_tolerance, new_feature, read_only)
 from .sources import gather_vertices

@@ -8,8 +8,9 @@ from .comb import CombProxy, comb_core, make as make_comb
 from .ellblend import (EllipticBlendProxy, K_CONVENTIONS, MODES as ELLBLEND_MODES,
                        ellblend_core, make as make_ellblend)
 from .fit import FitProxy, fit_core, make as make_fit
-from .geometry import (curve_bspline, link_edge, part_bspline, placement_from_frame,
-                       sketch_geo_of_edge, to_3d, to_plane, write_to_sketch)
+from .geometry import (curve_bspline, link_edge, part_bspline, placement_from_frame, to_3d,
+                       to_plane, write_to_sketch)
+from .links import sketch_geo_of_edge
 from .proxy import InputProblem
 from .sources import gather_points, gather_vertices
 from .viewproviders import ViewProvider

@@ -14,8 +14,9 @@ import FreeCAD as App
 import Part
 
 from . import defaults
-from .geometry import (chain_bspline, el, followed_edge, followed_reader, np, part_bspline,
-                       polyline_length, plane_coordinates, plane_curvature, to_3d, to_plane)
+from .geometry import (chain_bspline, el, np, part_bspline, polyline_length,
+                       plane_coordinates, plane_curvature, to_3d, to_plane)
+from .links import followed_edge, followed_reader
 from .proxy import (FeatureProxy, InputProblem, add_enum, add_geometry_index, add_length,
                     add_link, add_property, check_degree, check_number, check_tolerance,
                     new_feature, read_only)

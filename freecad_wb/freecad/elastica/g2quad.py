@@ -10,8 +10,8 @@ import math
 import FreeCAD as App
 import Part
 
-from .geometry import (bspline_edges, el, followed_reader, np, plane_coordinates,
-                       plane_curvature, to_3d)
+from .geometry import bspline_edges, el, np, plane_coordinates, plane_curvature, to_3d
+from .links import followed_reader
 from .proxy import (FeatureProxy, InputProblem, add_geometry_index, add_link, add_property,
                     new_feature, read_only)
 from .sources import gather_edges, sample_chain

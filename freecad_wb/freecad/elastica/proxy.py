@@ -78,7 +78,7 @@ def add_link(obj, kind, name, group, tip):
 
 def add_geometry_index(obj, name, link):
     """The hidden property ``name``: the indices of the sketch geometry the link ``link``
-    follows (geometry.followed_elements): an integer for a one-edge link (-1 until the link is
+    follows (links.followed_elements): an integer for a one-edge link (-1 until the link is
     first resolved), a string list for a list, one entry per sub-element."""
     group = obj.getGroupOfProperty(link)
     if obj.getTypeIdOfProperty(link).startswith("App::PropertyLinkSubList"):
@@ -175,7 +175,7 @@ class FeatureProxy:
     kind = ""
     # {link property: the property of the sketch geometry indices it follows}: a sketch edge's or
     # vertex's name shifts as the sketch changes, its geometry is followed
-    # (geometry.followed_elements)
+    # (links.followed_elements)
     followed_links = {}
 
     def __init__(self, obj):
@@ -228,13 +228,13 @@ class FeatureProxy:
 
     def link_changed(self, obj, prop):
         """Whether the link ``prop`` that changed names other geometry than it followed
-        (geometry.relinked): a link the designer changed, emptied as its object is deleted;
+        (links.relinked): a link the designer changed, emptied as its object is deleted;
         not one restored, nor followed_elements' renaming."""
         if "Restore" in obj.State or getattr(self, "_restoring", False) or \
                 getattr(self, "_renaming", False) or \
                 self.followed_links[prop] not in obj.PropertiesList:
             return False
-        from .geometry import relinked
+        from .links import relinked
         return relinked(obj, prop, deleted=getattr(self, "_removing", False))
 
     # ---------------------------------------------------------------- save / restore
@@ -268,7 +268,7 @@ class FeatureProxy:
             self.setup(obj)           # properties added by newer versions
         finally:
             self._restoring = False
-        from .geometry import remember_followed
+        from .links import remember_followed
         remember_followed(obj)
         changed = False
         for p, text in getattr(self, "_exact", {}).items():

@@ -74,7 +74,7 @@ def gather_points(sources, csv_file="", samples_per_edge=60, link=None, element=
     """Points of a fit's input, in 3D, with what is known about them; ``link``: the
     feature's property the sources come from (None: a selection; see nothing_read);
     ``element``: the function (obj, name) that reads a picked sub-element (global_element;
-    a feature's: geometry.followed_reader, its sketch geometry followed).
+    a feature's: links.followed_reader, its sketch geometry followed).
 
     Returns (points: list[App.Vector], plane: App.Placement or None (a sketch's),
     ordered: True (in curve order), False (none: curve_order's) or None (a file's order,

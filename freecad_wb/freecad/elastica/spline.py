@@ -14,8 +14,9 @@ import math
 import FreeCAD as App
 
 from . import defaults
-from .geometry import (edge_end, el, followed_edge, followed_reader, np, part_bspline,
-                       plane_coordinates, plane_curvature, to_3d)
+from .geometry import (edge_end, el, np, part_bspline, plane_coordinates, plane_curvature,
+                       to_3d)
+from .links import followed_edge, followed_reader
 from .proxy import (FeatureProxy, InputProblem, add_enum, add_geometry_index, add_length,
                     add_link, add_property, check_degree, check_number, check_tolerance,
                     new_feature, read_only)

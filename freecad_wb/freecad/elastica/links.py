@@ -1,0 +1,273 @@
+"""A feature's links to sketch edges and vertices, followed by their geometry as the sketch
+changes (its edge and vertex names shift), and said when that geometry is deleted."""
+from __future__ import annotations
+
+import Part
+
+from .geometry import global_element, is_sketch, link_edge
+from .proxy import InputProblem
+
+
+def _ends_and_middle(edge, plc=None):
+    """The points of ``edge`` at its first, middle and last parameter (its curve's, whatever
+    its orientation in a wire), placed by ``plc``."""
+    a, b = edge.FirstParameter, edge.LastParameter
+    pts = [edge.valueAt(u) for u in (a, 0.5 * (a + b), b)]
+    return [plc.multVec(p) for p in pts] if plc is not None else pts
+
+
+def _same_points(p, q):
+    return all((a - b).Length <= 1e-7 * (1.0 + a.Length) for a, b in zip(p, q))
+
+
+def _drawn(sketch, i):
+    """Whether the sketch's geometry i is an edge of its shape (not construction, no point)."""
+    return not sketch.getConstruction(i) and sketch.Geometry[i].TypeId != "Part::GeomPoint"
+
+
+def sketch_geo_of_edge(sketch, edge_name):
+    """The index of the sketch geometry whose shape is the sketch edge 'EdgeN', or None."""
+    try:
+        edge = sketch.Shape.getElement(edge_name)
+    except (Part.OCCError, ValueError, IndexError):
+        return None
+    at = _ends_and_middle(edge)
+    return next((i for i, g in enumerate(sketch.Geometry) if _drawn(sketch, i) and
+                 _same_points(at, _ends_and_middle(g.toShape(), sketch.Placement))), None)
+
+
+def sketch_edge_name(sketch, i):
+    """The name ('EdgeN') of the sketch's edge that draws its geometry i, or None (construction
+    geometry, a point): the shape holds the drawn geometry only, sorted into wires (Edge3
+    may draw geometry 4)."""
+    if not _drawn(sketch, i):
+        return None
+    at = _ends_and_middle(sketch.Geometry[i].toShape(), sketch.Placement)
+    return next((f"Edge{k + 1}" for k, e in enumerate(sketch.Shape.Edges)
+                 if _same_points(at, _ends_and_middle(e))), None)
+
+
+# What of a sketch geometry a link's sub-element is: its edge, or the vertex at its start or
+# end (Sketcher's PointPos 1, 2). A link's 'VertexN' is a vertex of the sketch's Shape, as the
+# 3D view picks it: the drawn geometry's ends, coincident ones merged, no centres and no sketch
+# points (0.20 leaves them out of the Shape). Sketcher's getGeoVertexIndex counts other
+# vertices: every geometry's, construction and centres included (its edit mode's VertexN).
+EDGE, START, END = 0, 1, 2
+
+
+def _vertex(sketch, i, pos, plc=None):
+    """The point at the START or END of the sketch's geometry i, placed by ``plc``."""
+    return _ends_and_middle(sketch.Geometry[i].toShape(), plc)[0 if pos == START else 2]
+
+
+def sketch_geo_of_element(sketch, name):
+    """(geometry index, EDGE / START / END) of the sketch element ``name``: the geometry of the
+    edge 'EdgeN'; the first drawn geometry with an end at the vertex 'VertexN'. None when
+    the sketch has no such element."""
+    if name.startswith("Edge"):
+        i = sketch_geo_of_edge(sketch, name)
+        return None if i is None else (i, EDGE)
+    try:
+        at = [sketch.Shape.getElement(name).Point]
+    except (Part.OCCError, ValueError, IndexError):
+        return None
+    return next(((i, pos) for i in range(len(sketch.Geometry)) if _drawn(sketch, i)
+                 for pos in (START, END)
+                 if _same_points(at, [_vertex(sketch, i, pos, sketch.Placement)])), None)
+
+
+def sketch_element_name(sketch, i, pos):
+    """The name ('EdgeN', 'VertexN') of the sketch's element that is (geometry i, pos) now, or
+    None (construction geometry)."""
+    if pos == EDGE:
+        return sketch_edge_name(sketch, i)
+    if not _drawn(sketch, i):
+        return None
+    at = [_vertex(sketch, i, pos, sketch.Placement)]
+    return next((f"Vertex{k + 1}" for k, v in enumerate(sketch.Shape.Vertexes)
+                 if _same_points(at, [v.Point])), None)
+
+
+def _element(sketch, i, pos):
+    """The global edge or vertex (geometry i, pos) of ``sketch``."""
+    if pos == EDGE:
+        return link_edge(sketch, "", i)
+    return Part.Vertex(sketch.getGlobalPlacement().multVec(_vertex(sketch, i, pos)))
+
+
+# A feature's link to sketch edges and vertices follows their geometry, not their names: the
+# names shift when earlier geometry turns construction or is deleted (QA: a fit's G1 start,
+# linked to Edge2, joined the run-out line once a helper line before it was made
+# construction; a fit of Edge3 and Edge4 fitted two other edges; status converged). Each
+# sub-element the link names (a slot: _slots) is known by its geometry's Tag and its position
+# while the document is open (the proxy's ``followed``) and by its geometry index, saved in the
+# property the proxy's ``followed_links`` names (an integer for a one-edge link, a string list
+# 'index' / 'index:start' / 'index:end' for a list): FreeCAD 0.20 gives sketch geometry new
+# Tags when a document is opened, and saves no id of its own. The index is FREE until the slot
+# is first resolved (a new link, a document of a version before), DELETED once its geometry is
+# deleted, or a one-edge link's object (the feature says so until it is relinked).
+FREE, DELETED = -1, -2
+_POS_NAMES = {START: "start", END: "end"}
+
+
+def _slots(link):
+    """The sub-elements a link's value names, in order: [(obj, name)]; whole objects left
+    out. ``link``: a PropertyLinkSub's (obj, [name]) or None, a PropertyLinkSubList's
+    [(obj, (name, ...)), ...]."""
+    if isinstance(link, list):
+        return [(obj, s) for obj, subs in link for s in subs if s]
+    return [(link[0], link[1][0])] if link and link[1] and link[1][0] else []
+
+
+def _followable(obj, name):
+    return is_sketch(obj) and name.startswith(("Edge", "Vertex"))
+
+
+def _saved(feature, prop, n):
+    """The saved (index, pos) of each of the link ``prop``'s n slots (FREE where none)."""
+    value = getattr(feature, feature.Proxy.followed_links[prop])
+    if isinstance(value, int):
+        saved = [(value, EDGE)]
+    else:
+        pos = {name: p for p, name in _POS_NAMES.items()}
+        saved = [(int(i), pos.get(name, EDGE)) for i, _, name in (v.partition(":") for v in value)]
+    return (saved + [(FREE, EDGE)] * n)[:n]
+
+
+def _save(feature, prop, saved):
+    """Write the slots' (index, pos) ``saved`` into the link ``prop``'s index property."""
+    index_prop = feature.Proxy.followed_links[prop]
+    if feature.getTypeIdOfProperty(index_prop) == "App::PropertyInteger":
+        value = saved[0][0] if saved else FREE
+    else:
+        value = [f"{i}:{_POS_NAMES[pos]}" if i >= 0 and pos in _POS_NAMES else str(i)
+                 for i, pos in saved]
+    if getattr(feature, index_prop) != value:
+        setattr(feature, index_prop, value)
+
+
+def _locate(sketch, name, tag, saved):
+    """(geometry index, pos) of the ``sketch`` element a slot follows: the geometry of its
+    (Tag, pos) ``tag``, else its ``saved`` (index, pos), else (FREE) the element its name
+    ``name`` is now; None when none."""
+    if tag is not None:
+        i = next((i for i, g in enumerate(sketch.Geometry) if g.Tag == tag[0]), None)
+        return None if i is None else (i, tag[1])
+    index, pos = saved
+    if 0 <= index < len(sketch.Geometry):
+        return index, pos
+    return sketch_geo_of_element(sketch, name) if index == FREE else None
+
+
+def _tag(sketch, at):
+    return None if at is None else (sketch.Geometry[at[0]].Tag, at[1])
+
+
+def remember_followed(feature):
+    """Record the Tags of the sketch geometry an opened document's feature's links follow
+    (their saved indices say which): a sketch edited before the first recompute is followed
+    too."""
+    for prop in feature.Proxy.followed_links:
+        slots = _slots(getattr(feature, prop))
+        tags = [_tag(obj, _locate(obj, name, None, saved)) if _followable(obj, name) else None
+                for (obj, name), saved in zip(slots, _saved(feature, prop, len(slots)))]
+        if any(tags):
+            feature.Proxy.followed[prop] = tags
+
+
+def followed_elements(feature, prop):
+    """The global sub-elements an Elastica feature's link ``prop`` names, in order (_slots).
+    A sketch's edge or vertex is its geometry followed (see FREE, DELETED), the link renamed to
+    the element that geometry is now; InputProblem naming ``prop`` when that geometry was
+    deleted."""
+    proxy = feature.Proxy
+    slots = _slots(getattr(feature, prop))
+    tags = proxy.followed.get(prop) or []
+    tags = tags if len(tags) == len(slots) else [None] * len(slots)
+    saved = _saved(feature, prop, len(slots))
+    shapes, names, problem = [], [], None
+    for k, (obj, name) in enumerate(slots):
+        names.append(name)
+        if not _followable(obj, name):
+            shapes.append(global_element(obj, name))
+            continue
+        at = _locate(obj, name, tags[k], saved[k])
+        if at is None:
+            if saved[k][0] == DELETED or tags[k] is not None:
+                saved[k] = (DELETED, saved[k][1])
+                problem = problem or (f"{prop}: the sketch geometry it followed ({obj.Label}."
+                                      f"{name}) was deleted: relink {prop}")
+            problem = problem or f"{prop}: {obj.Label} has no {name}"
+            continue
+        tags[k], saved[k] = _tag(obj, at), at
+        shapes.append(_element(obj, *at))
+        names[k] = sketch_element_name(obj, *at) or name
+    proxy.followed[prop] = tags
+    _save(feature, prop, saved)
+    if problem:
+        raise InputProblem(problem)
+    if names != [name for _, name in slots]:
+        _rename(feature, prop, names)
+    return shapes
+
+
+def _rename(feature, prop, names):
+    """Give the link ``prop``'s slots the names ``names`` (what their geometry is now)."""
+    link, it = getattr(feature, prop), iter(names)
+    if isinstance(link, list):
+        value = [(obj, tuple(next(it) if s else s for s in subs)) for obj, subs in link]
+    else:
+        value = (link[0], [next(it)])
+    feature.Proxy._renaming = True          # the same geometry: no new link (link_changed)
+    try:
+        setattr(feature, prop, value)
+    finally:
+        feature.Proxy._renaming = False
+
+
+def followed_edge(feature, prop):
+    """The global edge an Elastica feature's one-edge link ``prop`` (obj, ['EdgeN']) names
+    (followed_elements), or None when the link is empty; InputProblem naming ``prop`` when
+    what it followed was deleted, its geometry or its object."""
+    if not _slots(getattr(feature, prop)):
+        if getattr(feature, feature.Proxy.followed_links[prop]) == DELETED:
+            raise InputProblem(f"{prop}: the object of its edge was deleted: relink {prop}")
+        return None
+    return followed_elements(feature, prop)[0]
+
+
+def followed_reader(feature, prop):
+    """For sources.gather_*: a function (obj, name) -> the global sub-element ``name`` of
+    ``obj`` that the link ``prop`` follows (followed_elements, in the link's order); what the
+    link does not name (a whole object's edges), global_element."""
+    shapes = followed_elements(feature, prop)
+    queues = {}
+    for (obj, name), shape in zip(_slots(getattr(feature, prop)), shapes):
+        queues.setdefault((obj.Name, name), []).append(shape)
+
+    def element(obj, name):
+        queue = queues.get((obj.Name, name))
+        return queue.pop(0) if queue else global_element(obj, name)
+    return element
+
+
+def relinked(feature, prop, deleted=False):
+    """After the link ``prop`` of ``feature`` changed: whether it now names other geometry
+    than it followed (another element picked, one added, the link emptied); a slot naming
+    geometry it followed keeps it, the others are forgotten (their names say which at the
+    next recompute). ``deleted``: a one-edge link emptied because its object is being deleted
+    (followed_edge then says so)."""
+    proxy = feature.Proxy
+    old = [t for t in proxy.followed.pop(prop, None) or () if t]
+    link = getattr(feature, prop)
+    slots = _slots(link)
+    tags, saved = [], []
+    for obj, name in slots:
+        at = sketch_geo_of_element(obj, name) if _followable(obj, name) else None
+        kept = _tag(obj, at) in old
+        tags.append(_tag(obj, at) if kept else None)
+        saved.append(at if kept else (FREE, EDGE))
+    if any(tags):
+        proxy.followed[prop] = tags
+    _save(feature, prop, [(DELETED, EDGE)] if deleted and link is None else saved)
+    return len(slots) != len(old) or not all(tags)
