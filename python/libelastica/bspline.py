@@ -216,19 +216,26 @@ def cubic_through(points, start=None, end=None) -> BSpline:
     return interpolate_c2(xy, start=condition(start, "start"), end=condition(end, "end"))
 
 
-def keyline_bspline(first, second, tol: float = 1e-6, degree: int = 3) -> BSpline:
+def keyline_bspline(first, second, tol: float = 1e-6, degree: int = 3, ends=None) -> BSpline:
     """ONE B-spline of a keyline's two halves, each running from the joint outwards (as
     :func:`fit_keyline` gives them), from the first half's far end through the joint to
     the second's: smooth halves, the chain of the first reversed and the second
     (:func:`smooth_chain_to_bspline`: within ``tol``, the joint's point, tangent and zero
     curvature exact); discrete ones, the C2 cubic through the vertices of both (the joint
-    once), natural at the far ends (``tol``, ``degree`` unused). Two separate cubics
-    would each leave the joint with its own end tangent."""
+    once), natural at the far ends (``tol``, ``degree`` unused), each half continued to
+    the foot of its end point in ``ends`` (two points or None: KeylineFit.ends) by
+    DiscreteElastica.continued_to. Two separate cubics would each leave the joint with
+    its own end tangent."""
     from .core import DiscreteElastica, SmoothElastica
     if isinstance(first, SmoothElastica) and isinstance(second, SmoothElastica):
         return smooth_chain_to_bspline([first.reversed(), second], tol, degree)
     if isinstance(first, DiscreteElastica) and isinstance(second, DiscreteElastica):
-        return cubic_through(np.vstack([first.points()[::-1], second.points()[1:]]))
+        if ends is not None and len(ends) != 2:
+            raise ValueError(f"keyline_bspline: ends must be two points or None, got {ends!r}")
+        tails = [np.empty((0, 2))] * 2 if ends is None else \
+            [c.continued_to(e) for c, e in zip((first, second), ends)]
+        return cubic_through(np.vstack([tails[0][::-1], first.points()[::-1], second.points()[1:],
+                                        tails[1]]))
     raise ValueError("keyline_bspline: two SmoothElastica or two DiscreteElastica halves are "
                      f"needed, got {type(first).__name__} and {type(second).__name__}")
 

@@ -144,7 +144,7 @@ def cmd_hermite(args) -> int:
 # what `bspline` keeps of each record it reads, so that its own output read again gives
 # the same B-splines in the same coordinates: a keyline's sides, the input's plane and
 # frame, a discrete fit's end constraints
-_READ_AGAIN = ("side", "plane", "frame2d", "constraints")
+_READ_AGAIN = ("side", "end", "plane", "frame2d", "constraints")
 
 
 def _curve_groups(doc):
@@ -175,7 +175,9 @@ def cmd_bspline(args) -> int:
     for items in groups:
         curves = [curve_from_dict(it, name=args.file) for it in items]
         if len(curves) == 2:           # a keyline: ONE B-spline through its joint
-            b = el.keyline_bspline(curves[0], curves[1], args.tol, args.degree)
+            ends = [it.get("end") if isinstance(it, dict) else None for it in items]
+            b = el.keyline_bspline(curves[0], curves[1], args.tol, args.degree,
+                                   None if None in ends else ends)
             out.append({"sides": [{"curve": curve_to_dict(c), **_kept(it)} for c, it in zip(curves, items)],
                         "bspline": b.to_dict()})
             names.append(f"keyline of two {type(curves[0]).__name__}")

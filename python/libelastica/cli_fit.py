@@ -147,6 +147,8 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
         for i, res in enumerate((kres.first, kres.second)):
             rec = _side_record(res, res.points, args.model)
             rec["side"] = i
+            if kres.ends is not None:    # where a discrete half ends: `elastica bspline` again
+                rec["end"] = [float(v) for v in kres.ends[i]]
             records.append(rec)
             pictures.append((res.points, res))
         data = prep.polygon

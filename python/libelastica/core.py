@@ -188,6 +188,28 @@ class DiscreteElastica:
         check(lib.el_discrete_eval(p, self.n, dptr(out)), "DiscreteElastica")
         return out
 
+    def continued_to(self, point) -> np.ndarray:
+        """The polygon continued past its last vertex by its own recursion (seed 000 (4.4),
+        u_m = z m + q for m >= n) to the foot of ``point`` on it: (m, 2), the vertices after
+        the last one, the foot last; (0, 2) when that foot is not beyond the last vertex.
+        A keyline's resampled polygon stops up to a step short of its points (§5.3): this
+        reaches their end. A foot within 1e-3 h of a vertex is that vertex (a shorter last
+        chord would only bend the cubic through the vertices)."""
+        P = as_vector(point, "DiscreteElastica.continued_to: point")
+        if P.shape != (2,) or not np.all(np.isfinite(P)):
+            raise ValueError("DiscreteElastica.continued_to: point must be finite (x, y), "
+                             f"got {point!r}")
+        V = self.points()
+        steps = int(np.ceil(np.hypot(*(P - V[-1])) / self.h)) + 2   # a straight run's, and 2
+        W = DiscreteElastica(**{k: getattr(self, k) for k in DISCRETE_PARAMS},
+                             n=self.n + steps).points()
+        for j in range(self.n - 1, len(W) - 1):
+            t = float(np.dot(P - W[j], W[j + 1] - W[j])) / self.h ** 2
+            if t < 1.0:
+                tail = W[self.n:j + 1]
+                return tail if t <= 1e-3 else np.vstack([tail, W[j] + t * (W[j + 1] - W[j])])
+        return np.empty((0, 2))        # the point beyond the continuation's reach: none
+
     def curvature(self) -> np.ndarray:
         """Discrete curvature (2/h) tan(K/2) at the n-2 interior vertices (seed 000 (3.4))."""
         p = self._c()

@@ -445,6 +445,9 @@ class KeylineFit:
     # sides' rms / max_error are the fitted points' (a discrete keyline's: the resampled
     # polygon's vertices, paired: 0.116 / 0.277 where the file's points lie 0.132 / 0.344)
     input_distances: Optional[np.ndarray] = None
+    # discrete: where the keyline ends (2, 2), the feet of the input's end points on the
+    # halves continued by their recursion (the polygon stops up to a step short, §5.3)
+    ends: Optional[np.ndarray] = None
 
     @property
     def input_rms(self) -> float:
@@ -467,7 +470,7 @@ class KeylineFit:
         within ``tol``, G2 at the joint exactly; discrete: the C2 cubic through both
         halves' vertices)."""
         from .bspline import keyline_bspline
-        return keyline_bspline(self.first.curve, self.second.curve, tol, degree)
+        return keyline_bspline(self.first.curve, self.second.curve, tol, degree, self.ends)
 
 
 def _polyline_distances(points, vertices, chunk_pairs: int = 1 << 21) -> np.ndarray:
@@ -644,12 +647,28 @@ def fit_keyline(points, r: Optional[float] = None, model: str = "discrete", side
     infl = int(np.argmin(np.linalg.norm(prep.polygon - J, axis=1)))
     if model == "discrete":
         xy = prep.frame.project(pts) if prep.frame is not None else pts[:, :2]
-        polygon = np.vstack([fits[0].curve.points()[::-1], fits[1].curve.points()[1:]])
-        inputs = _polyline_distances(prep.frame2d.to_local(xy), polygon)
+        local = prep.frame2d.to_local(xy)
+        tails, ends = _keyline_tails([f.curve for f in fits], local[[0, -1]])
+        polygon = np.vstack([tails[0][::-1], fits[0].curve.points()[::-1],
+                             fits[1].curve.points()[1:], tails[1]])
+        inputs = _polyline_distances(local, polygon)
     else:
-        inputs = np.abs(dist)           # the input points themselves were fitted
+        inputs, ends = np.abs(dist), None        # the input points themselves were fitted
     return KeylineFit(prepared=prep, inflection=infl, first=fits[0], second=fits[1],
-                      inflection_estimate=i0, joint=J, input_distances=inputs)
+                      inflection_estimate=i0, joint=J, input_distances=inputs, ends=ends)
+
+
+def _keyline_tails(halves, end_points):
+    """Each discrete half continued to the foot of the input's end point nearer its far
+    end (DiscreteElastica.continued_to), and those feet (2, 2): the halves fit the
+    resampled polygon, which stops up to a step short of the points (seed 000 §5.3)."""
+    tails, ends = [], []
+    for c in halves:
+        far = c.points()[-1]
+        e = end_points[int(np.argmin(np.linalg.norm(end_points - far, axis=1)))]
+        tails.append(c.continued_to(e))
+        ends.append(tails[-1][-1] if len(tails[-1]) else far)
+    return tails, np.array(ends)
 
 
 __all__ = ["ConstraintError", "FitResult", "KeylineFit", "fit", "fit_keyline", "NotConvergedError"]

@@ -456,7 +456,8 @@ def test_fit_keyline_bspline_is_one_curve_through_the_joint(capsys, tmp_path, fa
     """--keyline with --bspline-tol / --dxf writes ONE B-spline from the first point to the
     last through the joint (two natural cubics of a discrete keyline each left the joint
     with its own tangent): the document's "bspline", the DXF's one SPLINE (in the input's
-    coordinates); discrete, through every vertex of both sides, the joint once; smooth,
+    coordinates); discrete, through every vertex of both sides, the joint once, to each
+    side's "end"; smooth,
     on both halves to its certified deviation, the joint's tangent and zero curvature
     exact; `elastica bspline` of the fit's JSON gives the same B-spline."""
     r = cli(capsys, "fit", SAMPLE_S, "--keyline", "--model", model, "--bspline-tol", "1e-6",
@@ -467,8 +468,11 @@ def test_fit_keyline_bspline_is_one_curve_through_the_joint(capsys, tmp_path, fa
     assert all("bspline" not in side for side in doc["sides"])
     b = el.BSpline.from_dict(doc["bspline"])
     first, second = (el.io.curve_from_dict(side["curve"]) for side in doc["sides"])
-    if model == "discrete":
-        v = np.vstack([first.points()[::-1], second.points()[1:]])
+    if model == "discrete":      # each half continued to its "end" (KeylineFit.ends)
+        tails = [c.continued_to(side["end"]) for c, side in zip((first, second), doc["sides"])]
+        v = np.vstack([tails[0][::-1], first.points()[::-1], second.points()[1:], tails[1]])
+        np.testing.assert_allclose(b(np.array(b.domain)), [side["end"] for side in doc["sides"]],
+                                   rtol=0, atol=1e-9 * b.domain[1])
         t = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(v, axis=0), axis=1))])
         assert np.max(np.abs(b(t) - v)) <= 1e-9 * t[-1]
     else:

@@ -748,17 +748,18 @@ def test_keyline_one_g2_curve(model, seed):
 @pytest.mark.parametrize("model", ["discrete", "smooth"])
 def test_keyline_to_bspline_runs_through_the_joint(model):
     """KeylineFit.to_bspline is ONE B-spline from the first side's far end through the
-    joint to the second's (x''y''); keyline_bspline refuses halves of two models."""
+    joint to the second's (x''y''; a discrete side's end continued to KeylineFit.ends);
+    keyline_bspline refuses halves of two models."""
     kl = keyline_3d(seed=0, noise=1e-3)
     kf = el.fit_keyline(kl.xyz, model=model)
     b = kf.to_bspline(1e-6 * kl.length)
     a, c = kf.first.curve, kf.second.curve
-    ends = [a.points()[-1], c.points()[-1]] if model == "discrete" else \
-        [a.points([a.length])[0], c.points([c.length])[0]]
+    ends = kf.ends if model == "discrete" else [a.points([a.length])[0], c.points([c.length])[0]]
     np.testing.assert_allclose(b(np.array(b.domain)), ends, rtol=0, atol=1e-9 * kl.length)
     # the joint at its parameter: the first side's arc length, or its polygon's length
     t = a.length if model == "smooth" else \
-        np.sum(np.linalg.norm(np.diff(a.points(), axis=0), axis=1))
+        np.sum(np.linalg.norm(np.diff(np.vstack([a.points(), a.continued_to(kf.ends[0])]),
+                                      axis=0), axis=1))
     np.testing.assert_allclose(b([t])[0], kf.joint, rtol=0, atol=1e-9 * kl.length)
     other = el.fit_keyline(kl.xyz, model="smooth" if model == "discrete" else "discrete")
     with pytest.raises(ValueError, match="two SmoothElastica or two DiscreteElastica"):
@@ -838,17 +839,18 @@ def test_fit_keyline_bad_input():
 @pytest.mark.parametrize("model", ["discrete", "smooth"])
 def test_keyline_input_distances_are_the_files_points(model):
     """KeylineFit.input_distances: each input point's distance (in its plane) to the whole
-    keyline, as a dense sampling of both halves measures it; a discrete keyline's sides
-    report the resampled polygon's vertices (paired), which understated the scan's max
-    error by 24 % on examples/keyline_3d.csv."""
+    keyline, as a dense sampling of both halves measures it (a discrete half continued to
+    its end in KeylineFit.ends); a discrete keyline's sides report the resampled polygon's
+    vertices (paired), which understated the scan's max error by 24 % on
+    examples/keyline_3d.csv."""
     pts = np.loadtxt(EXAMPLES / "keyline_3d.csv", delimiter=",", skiprows=2)
     kf = el.fit_keyline(pts, model=model)
     pr = kf.prepared
     xy = pr.frame2d.to_local(pr.frame.project(pts))
     dense, gap = [], 0.0      # samples of the halves, and the largest gap between two
-    for half in (kf.first.curve, kf.second.curve):
+    for i, half in enumerate((kf.first.curve, kf.second.curve)):
         if model == "discrete":
-            V = half.points()
+            V = np.vstack([half.points(), half.continued_to(kf.ends[i])])
             t = np.linspace(0, 1, 400)[:, None]
             dense += [V[j] + t * (V[j + 1] - V[j]) for j in range(len(V) - 1)]
             gap = max(gap, half.h / 399)
@@ -863,6 +865,48 @@ def test_keyline_input_distances_are_the_files_points(model):
     assert kf.input_max_error == pytest.approx(d.max(), abs=0.5 * gap)
     if model == "discrete":
         assert kf.input_max_error > 1.2 * max(kf.first.max_error, kf.second.max_error)
+
+
+def test_discrete_keyline_reaches_the_scans_ends():
+    """QA: a 300 mm S tile profile, 250 uneven points, noise 0.2 mm. The resampled polygon
+    stops up to a step (r = 3.19 mm) short of the last point (seed 000 §5.3), and the
+    discrete keyline and its B-spline stopped with it: the last point 1.539 mm off (the
+    smooth keyline's ends 0.28 / 0.011 mm). Each half is continued by its recursion to the
+    foot of its end point (KeylineFit.ends): the ends as near as the smooth keyline's."""
+    rng = np.random.default_rng(1)
+    c = el.SmoothElastica(x0=0, y0=0, phi=0.0, mu=(2.5 / 300) ** 2, k=0.7, q=0.5, length=300.0)
+    s = np.sort(rng.uniform(0, 300, 250))
+    s[0], s[-1] = 0, 300
+    noise = 0.2
+    P = c.points(s) + rng.normal(0, noise, (250, 2))
+    smooth = el.fit_keyline(P, model="smooth")
+    kf = el.fit_keyline(P, model="discrete")
+    loc = kf.prepared.frame2d.to_local(P)
+    b = kf.to_bspline()
+    B = b(np.array(b.domain))
+    assert np.all(np.linalg.norm(B - loc[[0, -1]], axis=1) <= 3 * noise)
+    np.testing.assert_allclose(B, kf.ends, rtol=0, atol=1e-9 * 300)
+    assert max(kf.input_distances[[0, -1]]) <= 3 * noise
+    assert kf.input_max_error <= 1.2 * smooth.input_max_error
+    tail = kf.second.curve.continued_to(kf.ends[1])     # the step the polygon left out
+    assert len(tail) == 1 and np.linalg.norm(tail[0] - kf.second.curve.points()[-1]) < kf.prepared.r
+    assert _g2(kf)[1] <= 1e-12       # the joint untouched
+
+
+def test_discrete_continued_to_is_the_recursion():
+    """DiscreteElastica.continued_to: the vertices after the last are the longer curve's
+    (seed 000 (4.4) continued), the foot of a point beside the continuation last; nothing
+    for a point before the last vertex."""
+    d = el.DiscreteElastica(x0=1.0, y0=2.0, h=0.5, phi=0.3, z=0.08, q=0.2, k=0.7, n=20)
+    W = el.DiscreteElastica(**{k: getattr(d, k) for k in "x0 y0 h phi z q k".split()},
+                            n=24).points()
+    N = np.array([-(W[22, 1] - W[21, 1]), W[22, 0] - W[21, 0]]) / d.h
+    tail = d.continued_to(W[21] + 0.4 * (W[22] - W[21]) + 0.3 * N)
+    np.testing.assert_allclose(tail[:-1], W[20:22], rtol=0, atol=1e-12)
+    np.testing.assert_allclose(tail[-1], W[21] + 0.4 * (W[22] - W[21]), rtol=0, atol=1e-12)
+    assert d.continued_to(W[18]).shape == (0, 2)
+    with pytest.raises(ValueError):
+        d.continued_to([np.nan, 0.0])
 
 
 @pytest.mark.parametrize("model", ["discrete", "smooth"])
