@@ -463,7 +463,9 @@ class G2Quadratic:
     source's tangents are unknown; a quadratic end segment that meets its joint G2
     has no freedom left for the tangent, the error is O(edge)); covers_source: False
     when an end piece next to an inflection was too short to keep, so the splines
-    start / stop at that inflection (§4.4)."""
+    start / stop at that inflection (§4.4); fit: with ``fit=True`` the FitResult of the
+    smooth elastica fitted to the points (the source then; its rms / max_error are the
+    points' distances to it), else None."""
     bsplines: list
     polyline: AffinePolyline
     ends: np.ndarray
@@ -471,6 +473,7 @@ class G2Quadratic:
     curvature_jump: float
     end_tangent_error: Optional[float]
     covers_source: bool
+    fit: Optional[object] = None
 
     @property
     def npoles(self) -> int:
@@ -494,8 +497,39 @@ def _spline_deviation(bs, samples: np.ndarray, lo: float, hi: float) -> float:
     return worst
 
 
+def _sign_changes(points: np.ndarray) -> int:
+    """How often the discrete curvature det(x_i - x_{i-1}, x_{i+1} - x_i) of the points
+    changes sign (zeros skipped): a curve's inflections, and as many again as noise or
+    rounding adds (801 samples of an S: 1 exact, 19 rounded to 1e-4, 245 to 1e-3)."""
+    d = np.diff(points, axis=0)
+    a = np.sign(d[:-1, 0] * d[1:, 1] - d[:-1, 1] * d[1:, 0])
+    a = a[a != 0]
+    return int(np.count_nonzero(a[1:] != a[:-1]))
+
+
+# More sign changes of the points' discrete curvature than a piecewise-convex profile's few
+# inflections: noise (_sign_changes), named as such in g2_quadratic's DomainError.
+NOISY_SIGN_CHANGES = 3
+
+
+def _noisy_points_error(exc: DomainError, points: np.ndarray) -> DomainError:
+    """g2_quadratic's DomainError for point data: the cause, how noisy the points are, and
+    the way out (fit=True)."""
+    flips = _sign_changes(points)
+    why = str(exc)
+    if flips > NOISY_SIGN_CHANGES:   # the C status's list of causes is beside the point
+        why = (f"{why.split(':')[0]}: the points are too noisy for the construction: their "
+               f"discrete curvature changes sign {flips} times over {len(points)} points; its "
+               "affine arc length takes their second and third differences (seed 002 (1), "
+               "(15)), so it needs a piecewise-convex curve to high accuracy")
+    return DomainError(exc.status, f"{why}; fit=True (`elastica g2quad FILE --fit`) fits one "
+                       "smooth elastica to the points first and builds from it, or pass a fitted "
+                       "SmoothElastica (`elastica fit --model smooth --json`, then `elastica "
+                       "g2quad fit.json`)")
+
+
 def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents=None,
-                 **options) -> G2Quadratic:
+                 fit: bool = False, **options) -> G2Quadratic:
     """Seed 002 end to end: approximate a SmoothElastica or a sampled curve (N+1, 2)
     by an affine arc-length polyline with n edges (:func:`affine_polyline`, each
     piece's A adjusted so its last vertex lands on the piece end), then build one
@@ -504,11 +538,30 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
     (:func:`g2_bspline`; only the two end segments of a piece are not uniform).
     ``tangents`` (N+1, 2) of point data sharpen the replacement curve and give the
     end tangent error; ``options`` go to :func:`affine_polyline`.
-    Raises ValueError / DomainError (straight source, n too small, ...)."""
-    options.setdefault("fit_ends", True)
+    Measured points are rarely accurate enough for the construction (801 samples of a
+    300 mm S rounded to 1e-4 mm fail): ``fit=True`` fits one smooth elastica to them
+    (:func:`fit`, point-to-curve distance) and builds from that curve (``fit`` of the
+    result: the points' distances to it; ``deviation``: the splines' from it).
+    Raises ValueError / DomainError (straight source, n too small, noisy points: the
+    message counts the sign changes of their discrete curvature, ...)."""
     is_curve = hasattr(curve_or_points, "curvature") and hasattr(curve_or_points, "length")
-    ap = affine_polyline(curve_or_points, n, samples_per_vertex=samples_per_vertex,
-                         tangents=None if is_curve else tangents, **options)
+    if fit:
+        if is_curve or tangents is not None:
+            raise ValueError("g2_quadratic: fit=True fits point data (without tangents); "
+                             "a curve is built from as it is")
+        from .fit import fit as fit_points
+        fitted = fit_points(as_points(curve_or_points, "points"), model="smooth")
+        g = g2_quadratic(fitted.curve, n, samples_per_vertex, **options)
+        g.fit = fitted
+        return g
+    options.setdefault("fit_ends", True)
+    try:
+        ap = affine_polyline(curve_or_points, n, samples_per_vertex=samples_per_vertex,
+                             tangents=None if is_curve else tangents, **options)
+    except DomainError as exc:
+        if is_curve:
+            raise
+        raise _noisy_points_error(exc, as_points(curve_or_points, "points")) from None
     npieces = len(ap.A)
     if is_curve:
         c = curve_or_points
@@ -535,7 +588,12 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
     splines, jump, dev, terr = [], 0.0, 0.0, 0.0
     for p in range(npieces):
         a, b = ap.piece_start[p], ap.piece_start[p + 1]
-        bs = g2_bspline(ap.points[a:b + 1], ends[p], ends[p + 1])
+        try:
+            bs = g2_bspline(ap.points[a:b + 1], ends[p], ends[p + 1])
+        except DomainError as exc:       # an end beside its joint's tangent: noisy points
+            if is_curve:
+                raise
+            raise _noisy_points_error(exc, samples) from None
         kl, kr = quadratic_joint_curvatures(bs)
         if len(kl):
             jump = max(jump, float(np.max(np.abs(kl - kr) / np.maximum(np.abs(kl), np.abs(kr)))))

@@ -49,6 +49,7 @@ BLEND_EXAMPLES = """examples:
 
 G2QUAD_EXAMPLES = """examples:
   elastica g2quad curve.csv --edges 30 --svg g2.svg --dxf g2.dxf
+  elastica g2quad scan.csv --fit --edges 24 --dxf g2.dxf      # measured points: fit first
   elastica fit points.csv --model smooth --json fit.json && elastica g2quad fit.json --json -"""
 
 
@@ -330,6 +331,8 @@ def cmd_g2quad(args) -> int:
             raise InputError(f"{args.file}: {len(items)} curves; give one (e.g. one side's JSON)")
         curve = curve_from_dict(items[0], name=args.file)
         src = curve if isinstance(curve, SmoothElastica) else curve.points()
+        if args.fit and src is curve:
+            raise InputError(f"--fit: {args.file} is a fitted smooth elastica already")
         curve_source = src is curve
         data = curve.points(np.linspace(0.0, curve.length, 400)) if curve_source else src
         n = args.edges or 40
@@ -342,13 +345,16 @@ def cmd_g2quad(args) -> int:
             src = pts
         data, curve_source = src, False
         n = args.edges or max(6, (len(src) - 1) // 20)    # seed 002 §4.2: ~20 samples per vertex
-    g = el.g2_quadratic(src, n)
+    g = el.g2_quadratic(src, n, fit=args.fit)
     jumps = f"{g.curvature_jump:.2g}"
     rec = {"file": str(source), "edges": int(n), "pieces": len(g.bsplines), "plane": plane,
            "ends": g.ends, "covers_source": g.covers_source, "deviation": g.deviation,
            "curvature_jump": g.curvature_jump, "end_tangent_error_rad": g.end_tangent_error,
            "polyline": g.polyline.points, "A": g.polyline.A,
            "bsplines": [b.to_dict() for b in g.bsplines]}
+    if g.fit is not None:      # --fit: the elastica built from, the points' distances to it
+        rec["fit"] = {"curve": curve_to_dict(g.fit.curve), "rms": g.fit.rms,
+                      "max_error": g.fit.max_error, "status": int(g.fit.status)}
     if args.json:
         write_json(rec, args.json)
     if args.json != "-":
@@ -357,12 +363,15 @@ def cmd_g2quad(args) -> int:
             "1 inflection-free piece"
         print(f"G2 quadratic B-spline: {split}, {n} edges, {g.npoles} poles (degree 2, "
               "uniform inside)")
+        if g.fit is not None:
+            print(f"  source: a smooth elastica fitted to the {len(src)} points (--fit), rms "
+                  f"{g.fit.rms:.3g}, max error {g.fit.max_error:.3g} from them")
         print(f"  starts at ({g.ends[0][0]:.6g}, {g.ends[0][1]:.6g}), ends at "
               f"({g.ends[-1][0]:.6g}, {g.ends[-1][1]:.6g}), exactly on the source")
         if not g.covers_source:
             print("  warning: an end of the source next to an inflection is left out (too short "
-                  "for 3 edges); noisy points: fit first (elastica fit --model smooth --json) "
-                  "and pass the JSON", file=sys.stderr)
+                  "for 3 edges); noisy points: --fit, or fit first (elastica fit --model smooth "
+                  "--json) and pass the JSON", file=sys.stderr)
         print(f"  largest relative curvature jump at a joint: {jumps} (G2)")
         print(f"  largest distance from the source: {g.deviation:.3g}")
         if g.end_tangent_error is not None:
@@ -546,6 +555,10 @@ def build_parser() -> argparse.ArgumentParser:
     q.add_argument("file", metavar="FILE", help="points (a dense sampling: ~20 per edge) or FIT.json")
     q.add_argument("--edges", type=int, metavar="N",
                    help="polyline edges (default: points/20, at least 6; 40 for a fit)")
+    q.add_argument("--fit", action="store_true",
+                   help="fit one smooth elastica to the points first and build from it: "
+                        "measured or rounded points (the construction takes their second and "
+                        "third differences)")
     q.add_argument("--json", metavar="PATH", help="write the result as JSON ('-' = stdout)")
     q.add_argument("--svg", metavar="PATH", help="picture (SVG)")
     q.add_argument("--png", metavar="PATH", help="picture (PNG, matplotlib)")

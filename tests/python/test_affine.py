@@ -388,6 +388,53 @@ def test_g2_quadratic_inflection_next_to_the_end_is_reported():
     assert np.allclose(_ends(g.bsplines[0])[1], c.points([L - 0.004])[0], atol=1e-12)
 
 
+# QA's S: a 300 mm tile profile with one inflection, and its measured versions
+QA_S = el.SmoothElastica(x0=0, y0=0, phi=0.0, mu=(2.5 / 300) ** 2, k=0.7, q=0.5, length=300.0)
+
+
+def _qa_scan():
+    """250 uneven points of QA_S with 0.2 mm noise (a scanned roof tile)."""
+    rng = np.random.default_rng(1)
+    s = np.sort(rng.uniform(0, 300, 250))
+    s[0], s[-1] = 0, 300
+    return QA_S.points(s) + rng.normal(0, 0.2, (250, 2))
+
+
+@pytest.mark.parametrize("decimals", [4, 3])
+def test_g2_quadratic_of_rounded_points_fits_first(decimals):
+    """QA: 801 samples of a 300 mm S written with 4 or 3 decimals (mm) failed with a
+    DomainError listing straight pieces, inflections, too few edges: the construction takes
+    second and third differences, and rounding makes inflections (19 / 245 sign changes of
+    the discrete curvature). The error now says so and names fit=True, which fits one
+    smooth elastica first and gives the exact samples' splines."""
+    P = np.round(QA_S.points(np.linspace(0, 300, 801)), decimals)
+    with pytest.raises(el.DomainError, match="too noisy.*changes sign [0-9]+ times.*fit=True"):
+        el.g2_quadratic(P, 30)
+    g = el.g2_quadratic(P, 30, fit=True)
+    exact = el.g2_quadratic(QA_S, 30)
+    assert len(g.bsplines) == 2 and g.covers_source and g.curvature_jump <= 1e-9
+    assert g.fit.max_error <= 10 ** -decimals and g.fit.status == 0
+    assert g.deviation == pytest.approx(exact.deviation, rel=1e-3)
+    assert np.max(np.linalg.norm(g.ends - exact.ends, axis=1)) <= 10 ** -decimals
+    with pytest.raises(ValueError, match="fit=True fits point data"):
+        el.g2_quadratic(QA_S, 30, fit=True)
+
+
+def test_g2_quadratic_of_a_noisy_scan_fits_first():
+    """QA's 250-point scan (0.2 mm noise) failed as the rounded samples did; fit=True builds
+    the two pieces within the noise of the points: each point's distance to the splines is
+    at most the fit's to its elastica plus the splines' deviation from it."""
+    P = _qa_scan()
+    with pytest.raises(el.DomainError, match="too noisy"):
+        el.g2_quadratic(P, 12)
+    g = el.g2_quadratic(P, 12, fit=True)
+    assert len(g.bsplines) == 2 and g.covers_source and g.fit.rms <= 0.25
+    from libelastica.report import closest_points
+    B = np.vstack([b(np.linspace(b.knots[0], b.knots[-1], 4001)) for b in g.bsplines])
+    d = np.linalg.norm(closest_points(P, B) - P, axis=1)
+    assert d.max() <= g.fit.max_error + g.deviation + 1e-3
+
+
 def test_joint_curvatures_measure_what_scipy_measures():
     x = aal_polyline([0.3, 0.9, 1.1, 0.6, 0.8, 1.2, 0.5, 0.7])
     b = el.g2_bspline(x, x[0], x[-1])
@@ -459,6 +506,29 @@ def test_g2quad_command_from_a_fitted_elastica(tmp_path, capsys):
     assert rec["pieces"] == 3 and rec["end_tangent_error_rad"] < 0.1
     s = np.r_[0.0, el.elastica_inflections(c), c.length]
     assert np.allclose(rec["ends"], c.points(s), atol=1e-12)
+
+
+def test_g2quad_command_fits_measured_points_first(tmp_path, capsys):
+    """`elastica g2quad FILE` on 801 samples written with 3 decimals: exit 2, one line saying
+    the points are too noisy and naming --fit; with --fit: the smooth elastica's fit and the
+    splines (JSON "fit"); --fit of a fitted elastica's JSON is refused."""
+    src = tmp_path / "curve_3dec.csv"
+    np.savetxt(src, np.round(QA_S.points(np.linspace(0, 300, 801)), 3), delimiter=",",
+               fmt="%.3f", header="x,y", comments="")
+    code, text, err = _g2quad(capsys, src, "--edges", 30)
+    assert code == 2 and len(err.strip().splitlines()) == 1 and "too noisy" in err, err
+    assert "--fit" in err
+    code, text, err = _g2quad(capsys, src, "--edges", 30, "--fit", "--json", "-")
+    assert code == 0, err
+    rec = json.loads(text)
+    assert rec["pieces"] == 2 and rec["covers_source"] and rec["fit"]["max_error"] <= 1e-3
+    assert el.io.curve_from_dict(rec["fit"]["curve"]).length == pytest.approx(300.0, abs=1e-2)
+    code, text, err = _g2quad(capsys, src, "--edges", 30, "--fit")
+    assert code == 0 and "fitted to the 801 points (--fit)" in text, err
+    fit = tmp_path / "fit.json"
+    el.io.write_json(el.io.curve_to_dict(QA_S), fit)
+    code, text, err = _g2quad(capsys, fit, "--fit")
+    assert code == 2 and "already" in err, err
 
 
 def test_g2quad_command_bad_input(tmp_path, capsys):
