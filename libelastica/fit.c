@@ -308,7 +308,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
                           ? 0.0 : 0.5 * (5.0 * noise) * (5.0 * noise);   /* rms^2 / 2 */
     fit_candidate best;
     int best_strays = -1;      /* best strays from its points (el__fit_strays_at), once known */
-    int wander_kept = 0;       /* the rule below kept best over a lower fit that wanders */
+    int wander_kept = 0;       /* the rule below (or a sketch's) kept a fit that does not wander */
     int best_meets = 0;        /* with rows: best meets the constraints */
     memset(&best, 0, sizeof best);
     best.f = HUGE_VAL;
@@ -836,6 +836,10 @@ candidates:
                  (st = el__fit_follow_unless_loops(model, xy, n, opt, flags, noise_in, stray, &ob, norm, res, d, fs)) ==
                      EL_OK)
             st = res->status;
+        /* a sketch's free fit that still wanders: its guesses from their feet (fit_restart.c) */
+        if (st != EL_ENOMEM && model == FIT_SMOOTH && !o.constraints && n < SKETCH_POINTS &&
+            !(flags & FIT_RUN_INNER))
+            st = el__fit_sketch_follows(xy, n, opt, noise_in, &ob, norm, res, d, fs, &wander_kept);
     }
     /* paired by the spacing test alone: refitted by distance to the polygon where its points
      * slip along the polygon from their vertices (fit_restart.c) */
@@ -850,8 +854,9 @@ candidates:
         const int rows = ends_chart ? FIT_RUN_ROWS : FIT_RUN_POLISH;
         /* after the rule that keeps a fit that neither crosses itself nor strays: its polish
          * does not end on a loop either (el__fit_fallback_unless_loops) */
-        st = wander_kept && o.constraints ? el__fit_fallback_unless_loops(model, xy, n, opt, rows, &ob, norm, res, d, fs)
-                                          : el__fit_fallback(model, xy, n, opt, rows, res, d, fs);
+        st = wander_kept
+                 ? el__fit_fallback_unless_loops(model, xy, n, opt, rows, &ob, norm, res, d, fs)
+                 : el__fit_fallback(model, xy, n, opt, rows, res, d, fs);
     }
     /* pinned at both ends with a zero start curvature: fitted in the ends chart too, that
      * curvature held there (el__fit_ends_held); with an end curvature other than 0 (a row

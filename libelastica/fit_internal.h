@@ -484,6 +484,17 @@ int el__fit_follow_points(int model, const double *xy, size_t n, const el_fit_op
 int el__fit_follow_unless_loops(int model, const double *xy, size_t n, const el_fit_options *opt, int flags,
                                 double noise, double stray, fit_objective *ob, const double norm[3], fit_out *res,
                                 double *d, double *fs);
+/* fit_restart.c: a sketch's free smooth fit (fewer than SKETCH_POINTS points, fit.c) in *res
+ * (d, fs: its distances and feet; noise: the data's figure, input units; ob, norm: as
+ * el__fit_follow_unless_loops) that wanders (strays from its points or crosses itself where
+ * their polygon does not): the guesses fitted from their own feet, the lowest that does
+ * neither kept (*replaced = 1) when its rms is at most FIT_SKETCH_TOL of the data's size
+ * above *res's (a sketch is drawn to about that). res->status, or EL_ENOMEM. */
+enum { FIT_SKETCH_GUESSES = 6 };
+#define FIT_SKETCH_TOL 0.01
+int el__fit_sketch_follows(const double *xy, size_t n, const el_fit_options *opt, double noise,
+                           fit_objective *ob, const double norm[3], fit_out *res, double *d,
+                           double *fs, int *replaced);
 /* fit_restart.c: el__fit_fallback, undone where its result crosses itself (el__fit_loops);
  * its status, or the kept fit's. */
 int el__fit_fallback_unless_loops(int model, const double *xy, size_t n, const el_fit_options *opt, int flags,

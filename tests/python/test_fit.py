@@ -383,6 +383,71 @@ def test_points_sketched_along_an_s(seed):
     assert r.rms <= p.rms
 
 
+def crossings(c, m=600):
+    """Self-crossings of the polyline c (m, 2): pairs of segments, not neighbours, each
+    one's ends on both sides of the other."""
+    a, b = c[:-1], c[1:]
+    cross = lambda p, q, r: ((q[..., 0] - p[..., 0]) * (r[..., 1] - p[..., 1])
+                             - (q[..., 1] - p[..., 1]) * (r[..., 0] - p[..., 0]))
+    cnt = 0
+    for i in range(len(a) - 2):
+        u, v = a[i + 2:], b[i + 2:]
+        cnt += int(np.sum((cross(a[i], b[i], u) * cross(a[i], b[i], v) < 0)
+                          & (cross(u, v, a[i]) * cross(u, v, b[i]) < 0)))
+    return cnt
+
+
+def assert_follows_sketch(r, pts):
+    """No loop where the points' polygon has none, no longer than twice that polygon."""
+    c = r.curve
+    assert c.length <= 2 * polyline_length(pts), (c.length, polyline_length(pts), r.rms)
+    if not crossings(pts):
+        assert not crossings(c.points(np.linspace(0, c.length, 600))), (c.length, r.rms)
+
+
+# 5 points sketched along a quarter circle, 0.1 % noise (QA, bug4.py): the smooth fit looped,
+# length 33.2 at rms 0.0119 (status 6) and 8.29 crossing itself at rms 5.6e-13 (status 0)
+QUARTER_SKETCHES = (
+    [[0.937308, 0.346469], [0.89193, 0.453841], [0.554963, 0.831934], [0.345384, 0.938646],
+     [0.160032, 0.986972]],
+    [[0.862716, 0.505708], [0.825108, 0.563297], [0.703721, 0.710209], [0.268014, 0.962765],
+     [0.240787, 0.970639]],
+)
+
+
+@pytest.mark.parametrize("case", [0, 1])
+def test_five_sketched_points_give_the_arc_they_follow(case):
+    """Many elasticae pass through 5 points: the fit is the one along their polygon, as
+    exact as the near-circular one a user starts it from (rms ~1e-15, length 1.06 / 0.80)."""
+    pts = np.array(QUARTER_SKETCHES[case])
+    r = el.fit(pts, model="smooth")
+    assert r.status == 0
+    assert r.rms <= 1e-10
+    assert r.curve.length <= 1.02 * polyline_length(pts)
+    assert_follows_sketch(r, pts)
+
+
+SKETCH_CURVES = {
+    "ellipse": lambda t: np.c_[3 * np.cos(0.2 + 2.0 * t), 1.2 * np.sin(0.2 + 2.0 * t)],
+    "sine": lambda t: np.c_[t * 6, np.sin(t * 6)],
+    "S": lambda t: np.c_[t * 4, np.tanh((t - 0.5) * 8) * 0.7],
+    "hull": lambda t: np.c_[t * 10, 1.5 * (1 - (2 * t - 1) ** 4)],
+    "quarter": lambda t: np.c_[np.cos(t * np.pi / 2), np.sin(t * np.pi / 2)],
+}
+
+
+def test_few_sketched_points_are_followed():
+    """40 sketches of 5-9 points at random places along simple curves, 0.5 % noise (bug4.py's
+    generator, seed 0: 5 fits looped or ran > 2 x their polygon before): none loops or strays."""
+    rng = np.random.default_rng(0)
+    for trial in range(8):
+        for f in SKETCH_CURVES.values():
+            n = int(rng.choice([5, 6, 7, 9]))
+            pts = f(np.sort(rng.uniform(0, 1, n)))
+            pts = pts + rng.normal(0, 0.005 * np.ptp(pts, 0).max(), pts.shape)
+            assert_follows_sketch(el.fit(pts, model="smooth"), pts)
+
+
 def test_bundled_keyline_in_one_piece():
     """examples/keyline_3d.csv (one elastica, k = 0.65, noise 0.15 mm) fitted in one
     piece: within the noise (main: 1.98 mm rms, k = 0.716)."""
