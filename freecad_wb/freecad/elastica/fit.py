@@ -149,13 +149,13 @@ def _constraint_problem(exc, fields=CONSTRAINT_FIELDS):
 
 def _one_piece(xy, model, distance, fixed, constraints, fields):
     """The fit of points xy in one piece: (curves, results, data, feet, signed distances,
-    rms, max error) as the library reports them; fields: constraint_fields."""
+    rms, max error, None) as the library reports them; fields: constraint_fields."""
     try:
         r = el().fit(xy, model=model, fixed=fixed or None, constraints=constraints or None,
                      distance=distance if model == "smooth" else None)
     except el().ConstraintError as exc:
         raise _constraint_problem(exc, fields) from None
-    return [r.curve], [r], xy, r.foot_points(), r.distances, r.rms, r.max_error
+    return [r.curve], [r], xy, r.foot_points(), r.distances, r.rms, r.max_error, None
 
 
 # End conditions that raise the rms above COST_RATIO times the free-ended fit's (and by
@@ -239,15 +239,15 @@ def _off_plane(off, rms, extent):
             f"{rms:.3g} mm from them, rms); a plane curve comes no closer"]
 
 
-def _foot_parameters(results, split):
+def _foot_parameters(results, split, tails=None):
     """The data points' parameters on a discrete fit's cubic from their polygon feet: the
     arc length of each foot (a keyline's first half reversed, from the first point, then the
-    second's after the joint vertex)."""
+    second's after the joint vertex; after its ``tails``' lead, _keyline)."""
     if not split:
         return results[0].foot_s
     n = np()
     first, second = results
-    joint = polyline_length(first.curve.points())
+    joint = polyline_length(first.curve.points()) + (0.0 if tails is None else tails[1])
     return n.concatenate([joint - first.foot_s[::-1], joint + second.foot_s[1:]])
 
 
@@ -342,7 +342,11 @@ def _keyline(xy, model, step):
     the library gives them (plane coordinates, each from the joint outwards, with
     opposite tangents and zero curvature there), the results, and the fitted points,
     feet and signed distances (+ = left of the travel) in the order of travel from
-    the first point, each point once (the discrete joint vertex belongs to both)."""
+    the first point, each point once (the discrete joint vertex belongs to both), and a
+    discrete keyline's tails: (its ends in the plane, the length its first half's
+    continuation adds before it), else None. The discrete halves fit the resampled polygon,
+    which stops up to a step short of the points (seed 000 §5.3): their B-spline continues
+    each by its recursion to its end point's foot (KeylineFit.ends)."""
     n = np()
     kf = el().fit_keyline(xy, r=step, model=model)
     first, second = kf.first, kf.second
@@ -353,7 +357,11 @@ def _keyline(xy, model, step):
     dist = n.concatenate([-first.distances[::-1], second.distances[skip:]])
     halves = [_moved(r.curve, kf.prepared.frame2d) for r in (first, second)]
     rms = _rms(dist)
-    return halves, [first, second], data, feet, dist, rms, float(n.abs(dist).max())
+    tails = None
+    if kf.ends is not None:
+        lead = first.curve.continued_to(kf.ends[0])
+        tails = (to_plane(kf.ends), polyline_length(n.vstack([first.curve.points()[-1:], lead])))
+    return halves, [first, second], data, feet, dist, rms, float(n.abs(dist).max()), tails
 
 
 def _moved(curve, frame2d):
@@ -389,15 +397,16 @@ def _polygon_deviation(bspline, curves, samples=32):
     return float(best.max())
 
 
-def _shape_bspline(model, curves, results, split, tol, degree):
+def _shape_bspline(model, curves, results, split, tol, degree, tails=None):
     """ONE B-spline of the fit, run from the first point to the last: smooth, the
     G2 B-spline of the elastica (a keyline: its first half reversed, then the second;
     end points, tangents and curvatures exact, so the constraints hold on it and the
     joint is G2); discrete, the C2 cubic through the vertices (a keyline's both
     halves), natural at free ends, the constrained tangent, curvature or both (G2) at
-    others."""
+    others; ``tails``: a discrete keyline's (_keyline), to its ends."""
     if split or model == "smooth":
-        return chain_bspline(curves, tol, degree, keyline=split)
+        return chain_bspline(curves, tol, degree, keyline=split,
+                             ends=None if tails is None else tails[0])
     return results[0].to_bspline()          # the fit's end constraints on the cubic
 
 
@@ -550,10 +559,10 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
                 if not reversed_joins:
                     raise
                 raise InputProblem(f"{exc}. {reversed_joins[0]}") from None
-        curves, results, data, feet, dist, rms, max_error = fitted
-        bspline = _shape_bspline(model, curves, results, split, tol, degree)
+        curves, results, data, feet, dist, rms, max_error, tails = fitted
+        bspline = _shape_bspline(model, curves, results, split, tol, degree, tails)
         if model == "discrete":
-            feet, dist = drawn_distances(bspline, data, _foot_parameters(results, split))
+            feet, dist = drawn_distances(bspline, data, _foot_parameters(results, split, tails))
             rms, max_error = _rms(dist), float(np().abs(dist).max())
         if constraints:
             free_rms, warnings, free_dist = _constraint_cost(xy, model, distance, fixed,

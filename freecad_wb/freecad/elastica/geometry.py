@@ -168,16 +168,16 @@ def curve_bspline(curve, tol, degree):
     return interpolate_c2(curve.points())
 
 
-def chain_bspline(pieces, tol, degree, keyline=False):
+def chain_bspline(pieces, tol, degree, keyline=False, ends=None):
     """ONE libelastica BSpline of smooth elasticae that continue each other G2
     (el.smooth_chain_to_bspline: the pieces keep their end points, unit tangents and
     curvatures exactly and join C2), or with ``keyline`` of a keyline's two halves, each
-    from the joint outwards, smooth or discrete (el.keyline_bspline). InputProblem when
-    ``tol`` is not reached."""
+    from the joint outwards, smooth or discrete (el.keyline_bspline; ``ends``: where
+    discrete halves end, KeylineFit.ends). InputProblem when ``tol`` is not reached."""
     e = el()
     try:
         if keyline:
-            return e.keyline_bspline(pieces[0], pieces[1], float(tol), int(degree))
+            return e.keyline_bspline(pieces[0], pieces[1], float(tol), int(degree), ends)
         return e.smooth_chain_to_bspline(pieces, float(tol), int(degree))
     except e.NotConvergedError as exc:
         raise InputProblem(f"the B-spline does not reach the tolerance {tol:g} mm: {exc}: "
