@@ -344,7 +344,9 @@ def cmd_g2quad(args) -> int:
         else:
             src = pts
         data, curve_source = src, False
-        n = args.edges or max(6, (len(src) - 1) // 20)    # seed 002 §4.2: ~20 samples per vertex
+        # seed 002 §4.2: ~20 samples per vertex; a curve fitted to them (--fit) as a fit's
+        # JSON (QA: 150 points -> 7 edges, the B-spline 0.51 off a fit of rms 0.047)
+        n = args.edges or (40 if args.fit else max(6, (len(src) - 1) // 20))
     g = el.g2_quadratic(src, n, fit=args.fit)
     jumps = f"{g.curvature_jump:.2g}"
     rec = {"file": str(source), "edges": int(n), "pieces": len(g.bsplines), "plane": plane,
@@ -554,7 +556,7 @@ def build_parser() -> argparse.ArgumentParser:
                        epilog=G2QUAD_EXAMPLES, formatter_class=raw)
     q.add_argument("file", metavar="FILE", help="points (a dense sampling: ~20 per edge) or FIT.json")
     q.add_argument("--edges", type=int, metavar="N",
-                   help="polyline edges (default: points/20, at least 6; 40 for a fit)")
+                   help="polyline edges (default: points/20, at least 6; 40 for a fit or --fit)")
     q.add_argument("--fit", action="store_true",
                    help="fit one smooth elastica to the points first and build from it: "
                         "measured or rounded points (the construction takes their second and "

@@ -525,6 +525,15 @@ def test_g2quad_command_fits_measured_points_first(tmp_path, capsys):
     assert el.io.curve_from_dict(rec["fit"]["curve"]).length == pytest.approx(300.0, abs=1e-2)
     code, text, err = _g2quad(capsys, src, "--edges", 30, "--fit")
     assert code == 0 and "fitted to the 801 points (--fit)" in text, err
+    # without --edges: 40, as for a fit's JSON (points/20 took 7 for 150 points of a noisy
+    # arc, the B-spline 0.51 off the fit, QA), not the points' count's
+    arc = tmp_path / "arc.csv"
+    t = np.linspace(0, 2, 150)
+    np.savetxt(arc, np.c_[50 * np.cos(t), 50 * np.sin(t)] +
+               np.random.default_rng(4).normal(0, 0.05, (150, 2)), delimiter=",")
+    code, text, err = _g2quad(capsys, arc, "--fit", "--json", "-")
+    assert code == 0 and json.loads(text)["edges"] == 40, err
+    assert json.loads(text)["deviation"] < 0.05           # 0.0156 from the fit (7 edges: 0.51)
     fit = tmp_path / "fit.json"
     el.io.write_json(el.io.curve_to_dict(QA_S), fit)
     code, text, err = _g2quad(capsys, fit, "--fit")
