@@ -57,7 +57,8 @@ def _fit_kwargs(args, fixed: Dict[str, float], constraints: Optional[Dict[str, A
 
 def _side_record(res, data: np.ndarray, model: str, free=None) -> Dict[str, Any]:
     """The JSON record of one fitted curve; ``free``: a constrained fit's points' distances
-    to the fit without its constraints (points held off only by them are no outliers)."""
+    to the fit without its constraints (points held off only by them are no outliers), kept
+    as "free_distances"."""
     rec = {"model": model, "n_points": int(len(data)),
            "curve": curve_to_dict(res.curve),
            "initial": curve_to_dict(res.initial) if res.initial is not None else None,
@@ -71,6 +72,8 @@ def _side_record(res, data: np.ndarray, model: str, free=None) -> Dict[str, Any]
         rec.update(distance=res.distance, distances=[float(v) for v in res.distances],
                    foot_s=[float(v) for v in res.foot_s],
                    outliers=[int(i) for i in res.outliers(free_distances=free)])
+        if free is not None:
+            rec["free_distances"] = [float(v) for v in free]
     return rec
 
 
@@ -83,7 +86,8 @@ def _warn_far_points(path, rec: Dict[str, Any]) -> None:
         return
     rows = ", ".join(str(i) for i in far[:10]) + (", ..." if len(far) > 10 else "")
     side = f" (side {rec['side'] + 1})" if "side" in rec else ""
-    print(f"{PROG} fit: warning: {path}{side}: {far_points_summary(rec['distances'], far)}: "
+    said = far_points_summary(rec["distances"], far, free_distances=rec.get("free_distances"))
+    print(f"{PROG} fit: warning: {path}{side}: {said}: "
           f"outliers? (points {rows}, counted from 0) Each pulls the fit towards itself: "
           "remove them to fit the rest", file=sys.stderr)
 

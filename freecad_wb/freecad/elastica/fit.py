@@ -445,9 +445,9 @@ def _far_points(data, dist, plane, free=None):
     far = el().far_points(dist, data, free_distances=free)
     if not len(far):
         return []
-    farthest = far[n.argmax(n.abs(n.asarray(dist, dtype=float))[far])]
+    farthest = far[n.argmax(n.abs(n.asarray(dist if free is None else free, dtype=float))[far])]
     worst = plane.multVec(App.Vector(*map(float, data[farthest])))
-    return [f"{el().far_points_summary(dist, far, ' mm')} (the farthest at ({worst.x:.4g}, "
+    return [f"{el().far_points_summary(dist, far, ' mm', free)} (the farthest at ({worst.x:.4g}, "
             f"{worst.y:.4g}, {worst.z:.4g})): outliers? Each pulls the fit towards itself: "
             "remove them to fit the rest"]
 
