@@ -1004,6 +1004,42 @@ class FitEdgeLinkTest(unittest.TestCase):
         self.doc.recompute()
         self.assertEqual(f.Status, "converged")
 
+    def test_undoing_a_relink_follows_what_was_followed(self):
+        """QA: the lead-in deleted, StartTangent relinked to 'Edge2' (the run-out line now),
+        Undo twice: the fit stayed on the run-out line (start (60, -5)), converged."""
+        self.doc.UndoMode = 1
+        f = self._fit()
+        self.doc.openTransaction("delete the lead-in")
+        self.sk.delGeometry(1)
+        self.doc.commitTransaction()
+        self.doc.recompute()
+        deleted = ("error: StartTangent: the sketch geometry it followed (Edges.Edge2) was "
+                   "deleted: relink StartTangent")
+        self.assertEqual(f.Status, deleted)
+        self.doc.openTransaction("relink")
+        f.StartTangent = (self.sk, ["Edge2"])
+        self.doc.commitTransaction()
+        self.doc.recompute()
+        self.assertEqual(f.Status, "converged")
+        self.doc.undo()                                  # the relink
+        self.doc.recompute()
+        self.assertEqual(f.Status, deleted)
+        self.doc.undo()                                  # the deletion
+        self.doc.recompute()
+        self._joins_the_lead_in(f, 1)
+        self.assertEqual(f.StartTangent[1], ["Edge2"])
+
+    def test_a_tangent_edge_made_construction_is_named(self):
+        f = self._fit()
+        self.sk.toggleConstruction(1)                    # the lead-in itself
+        self.doc.recompute()
+        self.assertEqual(f.Status, "error: StartTangent: the sketch geometry it followed "
+                         "(Edges.Edge2) is construction geometry now: make it normal geometry "
+                         "or relink StartTangent")
+        self.sk.toggleConstruction(1)
+        self.doc.recompute()
+        self._joins_the_lead_in(f, 1)
+
 
 class FitSourceLinkTest(unittest.TestCase):
     """Edges and vertices picked in a sketch for Source are their geometry, followed as the
@@ -1085,6 +1121,31 @@ class FitSourceLinkTest(unittest.TestCase):
         f.Source = [(sk, ["Edge2"])]                     # relinked: the first edge alone
         self.doc.recompute()
         self.assertEqual(f.Status, "converged")
+
+    def test_a_source_geometry_made_construction_is_named(self):
+        """QA: Edge3 (geometry 2) of a fit of Edge2 and Edge3 made construction: the fit went on
+        fitting it, converged, its Source 'Edge3' the name of geometry 3 now."""
+        sk = S.helper_and_curve_sketch(self.doc, self.xy)
+        f = Fi.make(self.doc, [(sk, ["Edge2", "Edge3"])], Model="smooth")
+        self.doc.recompute()
+        sk.toggleConstruction(2)
+        self.doc.recompute()
+        self.assertEqual(f.Status, "error: Source: the sketch geometry it followed (Chain.Edge3) "
+                         "is construction geometry now: make it normal geometry or relink Source")
+
+    def test_a_sketch_edited_and_saved_before_the_fit_recomputes_is_followed(self):
+        """QA: the helper line deleted, only the sketch recomputed, the document saved and
+        opened: the fit fitted two other edges (moved up to 110 mm), converged."""
+        sk = S.helper_and_curve_sketch(self.doc, self.xy)
+        f = Fi.make(self.doc, [(sk, ["Edge2", "Edge3"])], Model="smooth")
+        self.doc.recompute()
+        points = list(f.DataPoints)
+        sk.delGeometry(0)
+        sk.recompute()
+        sk, f = self._reopened(f)
+        self.doc.recompute()
+        self._same_points(f, points)
+        self.assertEqual(f.Source[0][1], ("Edge1", "Edge2"))
 
 
 class FitDistanceTest(unittest.TestCase):

@@ -222,6 +222,24 @@ class SplineTest(unittest.TestCase):
         self.assertEqual(s.Points[0][1], tuple(S.sketch_names(sk, [(0, "start"), (0, "end"),
                                                                    (1, "end"), (2, "end")])))
 
+    def test_a_shared_vertex_outlives_its_geometry(self):
+        """QA: a spline through the 5 vertices of a 4-segment polyline; segment 1 deleted:
+        'Points: the sketch geometry it followed (Poly.Vertex3) was deleted', though segment
+        2 still starts there."""
+        sk = self.doc.addObject("Sketcher::SketchObject", "Poly")
+        xy = [(0, 0), (20, 10), (40, 12), (60, 5), (80, -5)]
+        for a, b in zip(xy, xy[1:]):
+            sk.addGeometry(Part.LineSegment(App.Vector(*a, 0), App.Vector(*b, 0)), False)
+        self.doc.recompute()
+        picked = [(0, "start")] + [(i, "end") for i in range(4)]
+        s = self.spline([(sk, S.sketch_names(sk, picked))])
+        ducks = list(s.Ducks)
+        sk.delGeometry(1)                  # (20, 10)-(40, 12): still ends of geometry 0 and 2
+        self.doc.recompute()
+        self.assertTrue(s.Status.startswith("ok"), s.Status)
+        self.assertLess(max((a - b).Length for a, b in zip(s.Ducks, ducks)), 1e-9)
+        self.assertEqual(list(s.PointsGeometry), ["0:start", "0:end", "1:start", "1:end", "2:end"])
+
     def test_g2_end_after_a_line(self):
         """Zero curvature after a line (the former rule, a tension of the end span's
         own, found none here): met, a guide duck holding the batten."""

@@ -2,6 +2,9 @@
 changes (its edge and vertex names shift), and said when that geometry is deleted."""
 from __future__ import annotations
 
+import json
+
+import FreeCAD as App
 import Part
 
 from .geometry import global_element, is_sketch, link_edge
@@ -71,9 +74,15 @@ def sketch_geo_of_element(sketch, name):
         at = [sketch.Shape.getElement(name).Point]
     except (Part.OCCError, ValueError, IndexError):
         return None
+    return _geo_at(sketch, at[0], sketch.Placement)
+
+
+def _geo_at(sketch, point, plc=None):
+    """(geometry index, START / END) of the first drawn geometry with an end at ``point``
+    (placed by ``plc``), or None."""
     return next(((i, pos) for i in range(len(sketch.Geometry)) if _drawn(sketch, i)
                  for pos in (START, END)
-                 if _same_points(at, [_vertex(sketch, i, pos, sketch.Placement)])), None)
+                 if _same_points([point], [_vertex(sketch, i, pos, plc)])), None)
 
 
 def sketch_element_name(sketch, i, pos):
@@ -100,7 +109,7 @@ def _element(sketch, i, pos):
 # linked to Edge2, joined the run-out line once a helper line before it was made
 # construction; a fit of Edge3 and Edge4 fitted two other edges; status converged). Each
 # sub-element the link names (a slot: _slots) is known by its geometry's Tag and its position
-# while the document is open (the proxy's ``followed``) and by its geometry index, saved in the
+# while the document is open (_tags) and by its geometry index, saved in the
 # property the proxy's ``followed_links`` names (an integer for a one-edge link, a string list
 # 'index' / 'index:start' / 'index:end' for a list): FreeCAD 0.20 gives sketch geometry new
 # Tags when a document is opened, and saves no id of its own. The index is FREE until the slot
@@ -108,6 +117,25 @@ def _element(sketch, i, pos):
 # deleted, or a one-edge link's object (the feature says so until it is relinked).
 FREE, DELETED = -1, -2
 _POS_NAMES = {START: "start", END: "end"}
+# The Tags are kept in a transient property (proxy.add_geometry_index), not in the proxy: Undo
+# restores them with the link and its indices (QA: undoing a relink left the fit on the edge
+# relinked to, the proxy's Tags said so).
+TAGS = "FollowedTags"
+
+
+def _tags(feature, prop, n=None):
+    """The session record of each of the link ``prop``'s n slots (all it has: None): (Tag, pos)
+    of its geometry, and a vertex's point in the sketch (x, y, z); or None (not followed)."""
+    text = getattr(feature, TAGS).get(prop)
+    tags = [tuple(t) if t else None for t in json.loads(text)] if text else []
+    return tags if n is None or len(tags) == n else [None] * n
+
+
+def _set_tags(feature, prop, tags):
+    value = dict(getattr(feature, TAGS))
+    value[prop] = json.dumps(tags) if any(tags) else ""
+    if value != getattr(feature, TAGS):
+        setattr(feature, TAGS, value)
 
 
 def _slots(link):
@@ -149,9 +177,13 @@ def _save(feature, prop, saved):
 def _locate(sketch, name, tag, saved):
     """(geometry index, pos) of the ``sketch`` element a slot follows: the geometry of its
     (Tag, pos) ``tag``, else its ``saved`` (index, pos), else (FREE) the element its name
-    ``name`` is now; None when none."""
+    ``name`` is now; None when none. A vertex whose geometry is gone or construction is
+    the drawn geometry ending at its point, if any."""
     if tag is not None:
         i = next((i for i, g in enumerate(sketch.Geometry) if g.Tag == tag[0]), None)
+        if tag[1] != EDGE and (i is None or not _drawn(sketch, i)):
+            # a vertex other geometry ends at too (a polyline's joint) outlives its geometry
+            return _geo_at(sketch, App.Vector(*tag[2:])) or (None if i is None else (i, tag[1]))
         return None if i is None else (i, tag[1])
     index, pos = saved
     if 0 <= index < len(sketch.Geometry):
@@ -160,7 +192,11 @@ def _locate(sketch, name, tag, saved):
 
 
 def _tag(sketch, at):
-    return None if at is None else (sketch.Geometry[at[0]].Tag, at[1])
+    """The session record (_tags) of (geometry index, pos) ``at``."""
+    if at is None:
+        return None
+    point = () if at[1] == EDGE else tuple(_vertex(sketch, *at))
+    return (sketch.Geometry[at[0]].Tag, at[1], *point)
 
 
 def remember_followed(feature):
@@ -171,19 +207,17 @@ def remember_followed(feature):
         slots = _slots(getattr(feature, prop))
         tags = [_tag(obj, _locate(obj, name, None, saved)) if _followable(obj, name) else None
                 for (obj, name), saved in zip(slots, _saved(feature, prop, len(slots)))]
-        if any(tags):
-            feature.Proxy.followed[prop] = tags
+        _set_tags(feature, prop, tags)
 
 
 def followed_elements(feature, prop):
     """The global sub-elements an Elastica feature's link ``prop`` names, in order (_slots).
     A sketch's edge or vertex is its geometry followed (see FREE, DELETED), the link renamed to
     the element that geometry is now; InputProblem naming ``prop`` when that geometry was
-    deleted."""
-    proxy = feature.Proxy
+    deleted or made construction geometry (no edge of the sketch's shape, as for FreeCAD's
+    own features)."""
     slots = _slots(getattr(feature, prop))
-    tags = proxy.followed.get(prop) or []
-    tags = tags if len(tags) == len(slots) else [None] * len(slots)
+    tags = _tags(feature, prop, len(slots))
     saved = _saved(feature, prop, len(slots))
     shapes, names, problem = [], [], None
     for k, (obj, name) in enumerate(slots):
@@ -200,9 +234,14 @@ def followed_elements(feature, prop):
             problem = problem or f"{prop}: {obj.Label} has no {name}"
             continue
         tags[k], saved[k] = _tag(obj, at), at
+        if not _drawn(obj, at[0]):
+            problem = problem or (f"{prop}: the sketch geometry it followed ({obj.Label}.{name})"
+                                  f" is construction geometry now: make it normal geometry or "
+                                  f"relink {prop}")
+            continue
         shapes.append(_element(obj, *at))
         names[k] = sketch_element_name(obj, *at) or name
-    proxy.followed[prop] = tags
+    _set_tags(feature, prop, tags)
     _save(feature, prop, saved)
     if problem:
         raise InputProblem(problem)
@@ -257,17 +296,39 @@ def relinked(feature, prop, deleted=False):
     geometry it followed keeps it, the others are forgotten (their names say which at the
     next recompute). ``deleted``: a one-edge link emptied because its object is being deleted
     (followed_edge then says so)."""
-    proxy = feature.Proxy
-    old = [t for t in proxy.followed.pop(prop, None) or () if t]
     link = getattr(feature, prop)
     slots = _slots(link)
+    old = [t[:2] for t in _tags(feature, prop) if t]
     tags, saved = [], []
     for obj, name in slots:
         at = sketch_geo_of_element(obj, name) if _followable(obj, name) else None
-        kept = _tag(obj, at) in old
+        kept = at is not None and _tag(obj, at)[:2] in old
         tags.append(_tag(obj, at) if kept else None)
         saved.append(at if kept else (FREE, EDGE))
-    if any(tags):
-        proxy.followed[prop] = tags
+    _set_tags(feature, prop, tags)
     _save(feature, prop, [(DELETED, EDGE)] if deleted and link is None else saved)
     return len(slots) != len(old) or not all(tags)
+
+
+def save_followed(doc):
+    """Write what the links of ``doc``'s features follow in this session into their index
+    properties, as ``doc`` is saved: a sketch edited after a feature's last recompute (QA:
+    the helper line deleted, the document saved and opened: the fit fitted two other edges)."""
+    for obj in doc.Objects:
+        links = getattr(getattr(obj, "Proxy", None), "followed_links", {})
+        for prop, index_prop in links.items():
+            if not {prop, index_prop, TAGS} <= set(obj.PropertiesList):
+                continue                    # a document of a version before, not restored yet
+            slots = _slots(getattr(obj, prop))
+            tags = _tags(obj, prop, len(slots))
+            saved = _saved(obj, prop, len(slots))
+            _save(obj, prop, [(_locate(sketch, name, tag, s) or (DELETED, s[1])) if tag else s
+                              for (sketch, name), tag, s in zip(slots, tags, saved)])
+
+
+class _SaveObserver:
+    def slotStartSaveDocument(self, doc, filename):
+        save_followed(doc)
+
+
+App.addDocumentObserver(_SaveObserver())

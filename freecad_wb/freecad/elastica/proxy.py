@@ -91,6 +91,11 @@ def add_geometry_index(obj, name, link):
                      f"Index of {link}'s geometry in its sketch, followed as the sketch changes "
                      "(-1: not resolved yet, -2: deleted)", -1)
     obj.setEditorMode(name, 2)
+    # links.TAGS: the Tags of what the links follow, in this session only (transient: not
+    # saved; output: recording them touches nothing)
+    if "FollowedTags" not in obj.PropertiesList:
+        obj.addProperty("App::PropertyMap", "FollowedTags", group, "The sketch geometry the "
+                        "links follow in this session: {link: its slots' Tags}", 2 | 4 | 8)
 
 
 def add_enum(obj, name, group, tip, values, value=None):
@@ -219,18 +224,13 @@ class FeatureProxy:
         if prop in self.followed_links:
             self.link_changed(obj, prop)
 
-    @property
-    def followed(self):
-        """{link property: [(the Tag of the sketch geometry a sub-element follows, its
-        position) or None, per sub-element]}, in this session (not saved: a document opened
-        gives its sketches' geometry new Tags)."""
-        return self.__dict__.setdefault("_followed", {})
-
     def link_changed(self, obj, prop):
         """Whether the link ``prop`` that changed names other geometry than it followed
         (links.relinked): a link the designer changed, emptied as its object is deleted;
-        not one restored, nor followed_elements' renaming."""
-        if "Restore" in obj.State or getattr(self, "_restoring", False) or \
+        not one restored (a document opened, Undo, Redo: its indices and Tags are restored
+        with it), nor followed_elements' renaming."""
+        if "Restore" in obj.State or obj.Document.Transacting or \
+                getattr(self, "_restoring", False) or \
                 getattr(self, "_renaming", False) or \
                 self.followed_links[prop] not in obj.PropertiesList:
             return False
