@@ -327,8 +327,11 @@ def save_followed(doc):
 
 
 class _SaveObserver:
+    """save_followed as a document's save starts: a proxy's own dumps() comes too late (the
+    properties are written in name order, the index properties before Proxy)."""
+
     def slotStartSaveDocument(self, doc, filename):
         save_followed(doc)
 
 
-App.addDocumentObserver(_SaveObserver())
+App.addDocumentObserver(_SaveObserver())      # once: Python imports a module once
