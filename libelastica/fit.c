@@ -76,14 +76,6 @@ static void first_feet(fit_objective *ob, const double *t, double length)
         for (size_t i = 0; i < ob->n; i++) ob->s[i] = t[i] * length;
 }
 
-/* The point x of a fit (its map's variables) meets the constraints con and bounds. */
-static int meets_constraints(fit_objective *ob, const fit_map *map, const fit_constraints *con, const double *x,
-                             const double *lo, const double *hi, double *tmp)
-{
-    double v[2][FIT_NP];
-    return el__fit_map_eval(map, x, v, NULL) == EL_OK && !el__fit_violated(ob, con, v[0], lo, hi, tmp);
-}
-
 int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt, int flags,
                 const double *init, fit_out *res, double *dist, double *foot)
 {
@@ -246,9 +238,9 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
     if (!fs) fs = dbuf + n;
     if (model == FIT_SMOOTH && kind == FIT_ORTHOGONAL) { ob.rest = d; ob.rest_foot = fs; }
 
-    /* candidates (normalised internal parameters); more: free_start, smooth_start, the G1 ends'
-     * family members */
-    double cand[MAXCAND + 2 + G1_STARTS][FIT_NP];
+    /* candidates (normalised internal parameters); more: free_start, smooth_start, the two
+     * conjugate starts, the G1 ends' family members */
+    double cand[MAXCAND + 4 + G1_STARTS][FIT_NP];
     size_t ncand = 0;
     /* the caller's start with constraints: fitted from its own feet first (caller_start),
      * then as before, from its held start state (a start-state chart singular on a
@@ -399,8 +391,9 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
          * rms of 36 former fits came from loops wound across the points), median CPU 352 ->
          * 32 ms, the slowest 2.56 -> 0.15 s, none uncertified */
         memmove(cand[1], cand[0], ncand * sizeof cand[0]);
-        const int nst = model == FIT_SMOOTH ? el__fit_natural_fit(&ob, noise_rms, cand[0], &natural_ok, &natural_evals)
-                                            : el__fit_smooth_start(xy, n, opt, cx, cy, sc, cand[0]);
+        const int nst = model == FIT_SMOOTH
+                      ? el__fit_natural_fit(&ob, noise_rms, cand[0], &natural_ok, &natural_evals)
+                      : el__fit_smooth_start(xy, n, opt, FIT_RUN_NO_CONJUGATE, cx, cy, sc, cand[0]);
         if (nst == EL_ENOMEM) { st = nst; goto done; }
         if (nst == EL_OK) { natural_ci = 0; ncand++; }
         else memmove(cand[0], cand[1], ncand * sizeof cand[0]);
@@ -414,11 +407,35 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
     size_t smooth_ci = (size_t)-1;
     if (smooth_start && !ends_chart) {
         memmove(cand[1], cand[0], ncand * sizeof cand[0]);
-        const int sst = el__fit_smooth_start(xy, n, opt, cx, cy, sc, cand[0]);
+        const int sst = el__fit_smooth_start(xy, n, opt, FIT_RUN_NO_CONJUGATE, cx, cy, sc, cand[0]);
         if (sst == EL_ENOMEM) { st = sst; goto done; }
         if (sst == EL_OK) { smooth_ci = 0; ncand++; }
         else memmove(cand[0], cand[1], ncand * sizeof cand[0]);
         smooth_start = 0;
+    }
+    /* held at an inflection (start tangent and zero curvature) with a tangent row at the other
+     * end: the held state's curves whose tangents lie on the guesses' side of the inflection's
+     * cannot reach a row beyond it, and Ipopt stopped off the row from every guess (sine scans
+     * held at both true tangents and a zero end curvature, the points reversed: EL_EDOM on 2 of
+     * 3, the nearly straight curve at 46 x the free fit's rms on the third, QA). First the held
+     * fit's conjugate, turning the other way round (el__fit_conjugate_start), fitted from where
+     * it is, its feet found again (el__fit_refeet): rms 0.100, 0.181, 0.182, where 150 random
+     * starts reach 0.100, 0.171, 0.117 */
+    size_t nconj = 0;    /* the conjugate starts: the first nconj candidates */
+    const int inflection = EL_CONSTRAIN_START_TANGENT | EL_CONSTRAIN_START_CURVATURE;
+    if ((held & inflection) == inflection && con.start_kappa == 0.0 &&
+        (con_rows.mask & EL_CONSTRAIN_END_TANGENT) && !o.use_initial && !lm_only &&
+        !(flags & (FIT_RUN_INNER | FIT_RUN_NO_CONJUGATE))) {
+        const size_t m = model == FIT_SMOOTH ? 2 : 1;
+        memmove(cand[m], cand[0], ncand * sizeof cand[0]);
+        /* discrete: the smooth fit that has them, as its smooth start (without them: the
+         * smooth start's continuum limit of the conjugate was 1.75 on #10, this 0.207) */
+        const int cst = model == FIT_SMOOTH
+                      ? el__fit_conjugate_start(xy, n, opt, cx, cy, sc, cand)
+                      : el__fit_smooth_start(xy, n, opt, 0, cx, cy, sc, cand[0]);
+        if (cst == EL_ENOMEM) { st = cst; goto done; }
+        if (cst == EL_OK) { nconj = m; ncand += m; }
+        else memmove(cand[0], cand[m], ncand * sizeof cand[0]);
     }
     /* joined G1 at both ends (smooth, by distance, nothing else held or bounded): after the
      * guesses, the members of the Hermite families of those ends nearest the points
@@ -445,7 +462,8 @@ candidates:
             const int use_free = free_start;
             const int fst = use_free ? el__fit_unconstrained_start(model, xy, n, opt, cx, cy, sc,
                                                                    (sketch_rows ? FREE_GAIN : 0.99) * best.f, cand[ncand])
-                                     : el__fit_smooth_start(xy, n, opt, cx, cy, sc, cand[ncand]);
+                                     : el__fit_smooth_start(xy, n, opt, FIT_RUN_NO_CONJUGATE, cx,
+                                                            cy, sc, cand[ncand]);
             if (fst == EL_ENOMEM) { st = fst; goto done; }
             if (use_free) free_start = 0; else smooth_start = 0;
             if (fst) {
@@ -477,6 +495,7 @@ candidates:
          * neither the held start's continuation nor the paired start, which moved the
          * free fit above from its curve onto the same figure-eight */
         const int from_curve = caller_start || (caller_twice && ci == 0) || ci < nfamily ||
+                               ci < nconj ||
                                (sketch_rows && ci == free_ci && kind == FIT_ORTHOGONAL);
         if ((polish_run || from_curve || family) && ob.rest && el__fit_feet_start(&ob, x0)) continue;
         fit_candidate r;
@@ -497,22 +516,26 @@ candidates:
                 pre = el__fit_held_start(&ob, &map, &free_map, staged, &con, o.max_iter, p0, x0);
                 first_feet(&ob, t, p0[6]);      /* again (the stages moved them) */
             }
-            if ((st = el__fit_solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, no_polish, x0, best.f, &r, tmp,
-                                              (staged && pre > 0) || polish_run || (from_smooth && ci == natural_ci) || ci < nfamily,
-                                              polish_run || from_curve)))
+            const int near = (staged && pre > 0) || polish_run ||
+                             (from_smooth && ci == natural_ci) || ci < nfamily || ci < nconj;
+            if ((st = el__fit_solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, no_polish, x0,
+                                              best.f, &r, tmp, near, polish_run || from_curve)))
                 goto done;
             r.iters += pre;
+            if (ci < nconj && (st = el__fit_refeet(&ob, &o, &con_rows, &con, lo, hi, xl, xu,
+                                                   no_polish, &r, &feet_stale, tmp)))
+                goto done;
             /* a family member whose Ipopt run did not meet the rows (6 points exactly on a
              * curve: to max_iter at a minimum it could not certify): from it as from a
              * guess, Levenberg-Marquardt first, kept when that meets them */
-            if (ci < nfamily && !meets_constraints(&ob, &map, &con, r.x, lo, hi, tmp) &&
+            if (ci < nfamily && !el__fit_meets(&ob, &map, &con, r.x, lo, hi, tmp) &&
                 el__fit_feet_start(&ob, x0) == EL_OK) {
                 fit_candidate rb;
                 if ((st = el__fit_solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, no_polish, x0, best.f, &rb,
                                                   tmp, 0, 1)))
                     goto done;
                 rb.iters += r.iters;
-                if (meets_constraints(&ob, &map, &con, rb.x, lo, hi, tmp)) r = rb;
+                if (el__fit_meets(&ob, &map, &con, rb.x, lo, hi, tmp)) r = rb;
                 else r.iters = rb.iters;
             }
             /* smooth: where the continuation's fit is above the noise or strays from the
@@ -535,8 +558,9 @@ candidates:
                 if ((st = el__fit_solve_candidate(&ob, &o, &con_rows, xl, xu, need_ipopt, no_polish, x0, best.f, &rd, tmp, 0, 0)))
                     goto done;
                 rd.iters += r.iters;
-                const int r_meets = !need_ipopt || meets_constraints(&ob, &map, &con, r.x, lo, hi, tmp);
-                const int rd_meets = !need_ipopt || meets_constraints(&ob, &map, &con, rd.x, lo, hi, tmp);
+                const int r_meets = !need_ipopt || el__fit_meets(&ob, &map, &con, r.x, lo, hi, tmp);
+                const int rd_meets = !need_ipopt || el__fit_meets(&ob, &map, &con, rd.x, lo, hi,
+                                                                  tmp);
                 const int direct = rd_meets && (!r_meets || rd.f < r.f);
                 ipopt_spent += el__fit_ran_out(direct ? &r : &rd);    /* the run let go; the kept one below */
                 if (direct) { r = rd; r_strays = -1; }
@@ -550,7 +574,8 @@ candidates:
          * before one that does not, whatever their f (measured: a discrete G1-G1 sketch of
          * 7 points, whose first guess ended at Ipopt's max_iter off the end tangent below
          * the f of the three that met it, failed with EL_EDOM) */
-        const int r_meets = (need_ipopt || ci == free_ci) && meets_constraints(&ob, &map, &con, r.x, lo, hi, tmp);
+        const int r_meets = (need_ipopt || ci == free_ci) &&
+                            el__fit_meets(&ob, &map, &con, r.x, lo, hi, tmp);
         last_is_best = ci == free_ci ? r_meets && r.f < best.f
                      : need_ipopt ? (r_meets && !best_meets) || (r_meets == best_meets && r.f < best.f)
                      : r.f < best.f;
@@ -640,6 +665,7 @@ candidates:
             ncand = nfamily;
             free_start = smooth_start = 0;
             free_ci = natural_ci = (size_t)-1;
+            nconj = 0;
             goto candidates;
         }
     }
@@ -756,7 +782,7 @@ candidates:
         }
         /* else once more for the kept curve's distances; with constraint rows only a refit
          * that meets them (where Ipopt could not, r.f is Levenberg-Marquardt's, free) */
-        refit = r.f < best.f && (!need_ipopt || meets_constraints(&ob, &map, &con, r.x, lo, hi, tmp));
+        refit = r.f < best.f && (!need_ipopt || el__fit_meets(&ob, &map, &con, r.x, lo, hi, tmp));
         last_is_best = refit;
         if (refit) {
             best = r;
@@ -890,7 +916,8 @@ int el_fit_discrete(const double *xy, size_t n, const el_fit_options *opt,
     fit_out fo;
     memset(&fo, 0, sizeof fo);
     fo.status = -1;
-    int st = el__fit_run_either_way(FIT_DISCRETE, xy, n, opt, initial ? init : NULL, &fo, distances, foot_s);
+    int st = el__fit_run_either_way(FIT_DISCRETE, xy, n, opt, 0, initial ? init : NULL, &fo,
+                                    distances, foot_s);
     if (fo.status == -1) {        /* failed before a result existed */
         if (fo.constraint) res->constraint = fo.constraint;
         return st;
@@ -913,7 +940,8 @@ int el_fit_smooth(const double *xy, size_t n, const el_fit_options *opt,
     fit_out fo;
     memset(&fo, 0, sizeof fo);
     fo.status = -1;
-    int st = el__fit_run_either_way(FIT_SMOOTH, xy, n, opt, initial ? init : NULL, &fo, distances, foot_s);
+    int st = el__fit_run_either_way(FIT_SMOOTH, xy, n, opt, 0, initial ? init : NULL, &fo,
+                                    distances, foot_s);
     if (fo.status == -1) {
         if (fo.constraint) res->constraint = fo.constraint;
         return st;

@@ -253,3 +253,25 @@ int el__fit_solve_candidate(fit_objective *ob, const el_fit_options *o, const fi
     if (r->status == EL_ENOCONV && r->f <= FIT_EXACT_F) r->status = EL_OK;
     return EL_OK;
 }
+
+int el__fit_refeet(fit_objective *ob, const el_fit_options *o, const fit_constraints *rows,
+                   const fit_constraints *con, const double *lo, const double *hi, const double *xl,
+                   const double *xu, int no_polish, fit_candidate *r, int *stale, double *tmp)
+{
+    for (int round = 0; round < REFEET_ROUNDS && ob->rest; round++) {
+        if (!el__fit_meets(ob, &ob->map, con, r->x, lo, hi, tmp) || el__fit_feet_start(ob, r->x))
+            break;
+        fit_candidate rb;
+        const int st = el__fit_solve_candidate(ob, o, rows, xl, xu, 1, no_polish, r->x, HUGE_VAL,
+                                               &rb, tmp, 1, 1);
+        if (st) return st;
+        rb.iters += r->iters;
+        if (!(rb.f < r->f * (1.0 - 1e-6)) || !el__fit_meets(ob, &ob->map, con, rb.x, lo, hi, tmp)) {
+            r->iters = rb.iters;
+            *stale = 1;     /* ob's feet: rb's */
+            break;
+        }
+        *r = rb;
+    }
+    return EL_OK;
+}

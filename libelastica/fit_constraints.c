@@ -114,6 +114,14 @@ int el__fit_violated(const fit_objective *ob, const fit_constraints *con, const 
     return worst;
 }
 
+int el__fit_meets(fit_objective *ob, const fit_map *map, const fit_constraints *con,
+                  const double *x, const double *lo, const double *hi, double *tmp)
+{
+    double v[2][FIT_NP];
+    return el__fit_map_eval(map, x, v, NULL) == EL_OK &&
+           !el__fit_violated(ob, con, v[0], lo, hi, tmp);
+}
+
 /*
  * A start for a fit with a start tangent or curvature (bits) in the start-state chart
  * (free_map: the chart, those variables free): the fit with them free from the guess p0,

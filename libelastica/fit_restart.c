@@ -8,6 +8,8 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <float.h>
+#include <gsl/gsl_sf_ellint.h>
 
 /* ------------------------------------------------------------ further starts */
 
@@ -70,21 +72,88 @@ static void continuum_limit(int to_model, size_t n, const double *from, double *
  * sketches, discrete with start point and tangent, and with both points and one or both
  * tangents: polygons of length 1.5-51740 along an arc of length 1, at up to 4 x the rms
  * this start reaches). EL_ENOMEM, or EL_EDOM when there is none. */
-int el__fit_smooth_start(const double *xy, size_t n, const el_fit_options *opt, double cx, double cy, double sc,
-                         double *v)
+int el__fit_smooth_start(const double *xy, size_t n, const el_fit_options *opt, int flags,
+                         double cx, double cy, double sc, double *v)
 {
     el_fit_options so = *opt;
     so.distance = EL_DISTANCE_ORTHOGONAL;
     fit_out fo;
     memset(&fo, 0, sizeof fo);
     fo.status = -1;
-    const int st = el__fit_run_either_way(FIT_SMOOTH, xy, n, &so, NULL, &fo, NULL, NULL);
+    const int st = el__fit_run_either_way(FIT_SMOOTH, xy, n, &so, flags, NULL, &fo, NULL, NULL);
     if (st == EL_ENOMEM) return st;
     if (!gave_curve(&fo)) return EL_EDOM;
     double p[FIT_NP];
     continuum_limit(FIT_DISCRETE, n, fo.params, p);
     for (int j = 0; j < FIT_NP; j++) v[j] = el__fit_norm_param(FIT_DISCRETE, j, p[j], cx, cy, sc);
     return el__all_finite(v, FIT_NP) ? EL_EDOM : EL_OK;
+}
+
+/* The conjugate of a smooth inflectional curve p (input units) at its start: the same start
+ * point, tangent and zero curvature, the force reversed (phi + pi, k' = sqrt(1 - k^2)), so
+ * that between its inflections it turns the other way round, through the directions p does
+ * not take (its inflections' tangents the same mod 2 pi); w scaled by K(k') / K(k), its
+ * inflections as many. EL_EDOM where p has no inflection at its start. */
+static int conjugate(el_smooth_params *p)
+{
+    const double k = fabs(p->k);
+    el_jacobi J;
+    if (!(k > 0.0 && k < 1.0) || el_jacobi_eval(p->q, k, &J, NULL, NULL) || fabs(J.cn) > 1e-6)
+        return EL_EDOM;
+    /* Delta = theta0 - phi = 2 asin(k sn q), |Delta| < pi; k' = cos(Delta / 2) = dn q */
+    const double sd = (p->k < 0.0) == (J.sn < 0.0) ? 1.0 : -1.0, kc = J.dn;
+    gsl_sf_result K, Kc;
+    if (!(kc > 0.0 && kc < 1.0) || gsl_sf_ellint_Kcomp_e(k, GSL_PREC_DOUBLE, &K) ||
+        gsl_sf_ellint_Kcomp_e(kc, GSL_PREC_DOUBLE, &Kc))
+        return EL_EDOM;
+    const double wc = sqrt(p->mu) * Kc.val / K.val;
+    p->phi += sd * M_PI;
+    p->mu = wc * wc;
+    p->k = kc;
+    p->q = -sd * Kc.val;
+    return el_smooth_check(p) ? EL_EDOM : EL_OK;
+}
+
+/* The chord of a smooth curve's ends, or 0 where it cannot be evaluated. */
+static double chord_of(const el_smooth_params *p)
+{
+    double e[2];
+    if (el_smooth_eval(p, 1, &p->length, e, NULL, NULL)) return 0.0;
+    return hypot(e[0] - p->x0, e[1] - p->y0);
+}
+
+/* the conjugate's growth to the held fit's chord, at most (its chord vanishes where its
+ * loops' advance does, near k' = 0.91) */
+static const double CONJUGATE_GROWTH = 100.0;
+
+int el__fit_conjugate_start(const double *xy, size_t n, const el_fit_options *opt, double cx,
+                            double cy, double sc, double v[2][FIT_NP])
+{
+    el_fit_options f = *opt;
+    f.constraints &= EL_CONSTRAIN_START_POINT | EL_CONSTRAIN_START_TANGENT |
+                     EL_CONSTRAIN_START_CURVATURE;       /* the held start state alone */
+    fit_out fo;
+    memset(&fo, 0, sizeof fo);
+    fo.status = -1;
+    const int st = el__fit_run(FIT_SMOOTH, xy, n, &f, FIT_RUN_LM_ONLY | FIT_RUN_INNER, NULL, &fo,
+                               NULL, NULL);
+    if (st == EL_ENOMEM) return st;
+    if (!gave_curve(&fo)) return EL_EDOM;
+    el_smooth_params c = {fo.params[0], fo.params[1], fo.params[2], fo.params[3], fo.params[4],
+                          fo.params[5], fo.params[6]};
+    const double chord = chord_of(&c);
+    if (conjugate(&c)) return EL_EDOM;
+    /* the conjugate spans less (a loop between inflections): also scaled up to the held
+     * fit's chord */
+    const double grow = fmin(chord / fmax(chord_of(&c), DBL_MIN), CONJUGATE_GROWTH);
+    for (int a = 0; a < 2; a++) {
+        const double g = a ? fmax(grow, 1.0) : 1.0;
+        const double p[FIT_NP] = {c.x0, c.y0, c.phi, c.mu / (g * g), c.k, c.q, c.length * g};
+        for (int j = 0; j < FIT_NP; j++)
+            v[a][j] = el__fit_norm_param(FIT_SMOOTH, j, p[j], cx, cy, sc);
+        if (el__all_finite(v[a], FIT_NP)) return EL_EDOM;
+    }
+    return EL_OK;
 }
 
 /* The curve's length of a fit's result. */
@@ -322,13 +391,13 @@ int el__fit_ends_held(int model, const double *xy, size_t n, const el_fit_option
  * signed k range.
  */
 int el__fit_run_either_way(int model, const double *xy, size_t n, const el_fit_options *opt,
-                           const double *init, fit_out *res, double *dist, double *foot)
+                           int flags, const double *init, fit_out *res, double *dist, double *foot)
 {
     int plain = !opt || !xy || n < 4 || opt->use_initial || (model == FIT_SMOOTH && (opt->constraints & EL_CONSTRAIN_K)) ||
                 el__fit_held_score(opt, model, 1) <= el__fit_held_score(opt, model, 0);
     for (int j = 0; j < FIT_NP && !plain; j++)
         plain = opt->fixed[j] || isfinite(opt->lower[j]) || isfinite(opt->upper[j]);
-    if (plain) return el__fit_run(model, xy, n, opt, 0, init, res, dist, foot);
+    if (plain) return el__fit_run(model, xy, n, opt, flags, init, res, dist, foot);
     el_fit_options o = *opt;
     const int c = opt->constraints, swap[3][2] = {{EL_CONSTRAIN_START_POINT, EL_CONSTRAIN_END_POINT},
                                                   {EL_CONSTRAIN_START_TANGENT, EL_CONSTRAIN_END_TANGENT},
@@ -345,7 +414,7 @@ int el__fit_run_either_way(int model, const double *xy, size_t n, const el_fit_o
     double *rxy = malloc(sizeof(double) * 2 * n);
     if (!rxy) return EL_ENOMEM;
     for (size_t i = 0; i < n; i++) { rxy[2 * i] = xy[2 * (n - 1 - i)]; rxy[2 * i + 1] = xy[2 * (n - 1 - i) + 1]; }
-    int st = el__fit_run(model, rxy, n, &o, 0, NULL, res, dist, foot);
+    int st = el__fit_run(model, rxy, n, &o, flags, NULL, res, dist, foot);
     free(rxy);
     if (res->status == -1) {        /* failed before a result: the bits back */
         for (int a = 0; a < 3; a++)
@@ -368,7 +437,7 @@ int el__fit_run_either_way(int model, const double *xy, size_t n, const el_fit_o
     for (int a = 0; a < 3; a++)
         if (res->constraint == swap[a][0] || res->constraint == swap[a][1]) res->constraint ^= swap[a][0] | swap[a][1];
     if (el__fit_reverse_params(model, n, res->params) || el__fit_reverse_params(model, n, res->initial))
-        return el__fit_run(model, xy, n, opt, 0, init, res, dist, foot);
+        return el__fit_run(model, xy, n, opt, flags, init, res, dist, foot);
     return st;
 }
 

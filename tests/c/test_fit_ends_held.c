@@ -140,7 +140,7 @@ static void check_zero_curvature(int model, const double *xy0, size_t n, const d
         (void)el__fit_run(model, xy, n, &o, FIT_RUN_INNER, NULL, &plain, NULL, NULL);
     }
     double d[64], fs[64];
-    const int st = el__fit_run_either_way(model, xy, n, &o, NULL, &fit, d, fs);
+    const int st = el__fit_run_either_way(model, xy, n, &o, 0, NULL, &fit, d, fs);
     ck_assert_msg(st == EL_OK, "model %d n %zu scale %g: status %d", model, n, scale, st);
     double V[2 * 64];
     if (model == FIT_SMOOTH) {
