@@ -300,6 +300,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
                           ? 0.0 : 0.5 * (5.0 * noise) * (5.0 * noise);   /* rms^2 / 2 */
     fit_candidate best;
     int best_strays = -1;      /* best strays from its points (el__fit_strays_at), once known */
+    int best_loops = -1;       /* best crosses itself (el__fit_loops), once known */
     int wander_kept = 0;       /* the rule below (or a sketch's) kept a fit that does not wander */
     int best_meets = 0;        /* with rows: best meets the constraints */
     memset(&best, 0, sizeof best);
@@ -590,9 +591,16 @@ candidates:
             el__fit_wanders(&ob, r.x, &r_strays, noise_rms, d, fs, tmp)) {
             last_is_best = el__fit_wanders(&ob, best.x, &best_strays, noise_rms, d, fs, tmp);
             wander_kept |= !last_is_best;
+        } else if (!last_is_best && o.constraints && !lm_only &&
+                   (need_ipopt || ci == free_ci ? r_meets : 1) &&
+                   el__fit_fair_over_loop(&ob, r.x, r.f, &r_strays, best.x, best.f, &best_loops,
+                                          noise_rms, d, fs, tmp)) {
+            /* the other way round where best crosses itself (el__fit_fair_over_loop) */
+            last_is_best = wander_kept = 1;
         }
         if (last_is_best) {
             best = r; best_strays = r_strays; best_meets = r_meets; memcpy(best_init, p0, sizeof p0);
+            best_loops = -1;
             family_won |= ci < nfamily;
         }
         last_is_best &= !feet_stale;
