@@ -375,7 +375,8 @@ typedef struct el_fit_options {
     int param_mode;      /* smooth model: enum el_param_mode (default EL_PARAM_AUTO) */
     int use_initial;     /* 1: start from the caller's initial parameters instead of the guess
                             (smooth by distance, no constraints: from the points' nearest
-                            points on that curve) */
+                            points on that curve); a curve that runs against the points'
+                            order is run backwards first (the same curve, el_smooth_reverse) */
     int distance;        /* enum el_fit_distance (default EL_DISTANCE_AUTO) */
     int constraints;     /* bits of enum el_fit_constraint (default 0: none) */
     double start_point[2], end_point[2];     /* input units */

@@ -383,9 +383,11 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     fixed: parameters held at given values, e.g. ``{"x0": 0, "y0": 0}`` or ``{"h": r}``.
     bounds: ``{name: (lo, hi)}`` (None = unbounded). initial: start from this curve
     instead of the automatic guess (a smooth fit by distance without constraints: from the
-    points' nearest points on it, so points exactly on it give it back). A fit that does not converge returns the best curve
-    seen with ``status`` != 0 (raises NotConvergedError if ``strict``). Bad input (NaN,
-    too few points, all points equal) raises ValueError / ElasticaError subclasses.
+    points' nearest points on it, so points exactly on it give it back); a curve that runs
+    against the points' order is run backwards first (the same curve). A fit that does not
+    converge returns the best curve seen with ``status`` != 0 (raises NotConvergedError if
+    ``strict``). Bad input (NaN, too few points, all points equal) raises ValueError /
+    ElasticaError subclasses.
     """
     if not isinstance(model, str) or model not in ("discrete", "smooth"):
         raise ValueError(f"fit: model must be 'discrete' or 'smooth', got {model!r}")
