@@ -441,9 +441,12 @@ typedef struct el_fit_smooth_result {
  * a higher rms (without this, 41 noisy points along an arc of length 1 were fitted at a
  * lower rms by a curve of length 4.5 looping twice round them). With constraints, a fit
  * that crosses itself where the points' polygon does not, or strays, does not replace
- * one that does neither, even at a lower rms; a discrete fit with rows or a held start
- * state starts first from the smooth fit's curve (its guesses ended on polygons 25 x the
- * data's length, crossing themselves hundreds of times). Free fits of 6-59 sparse
+ * one that does neither, even at a lower rms (a smooth fit of fewer than 60 points kept
+ * that still does either is fitted again from the free fit's curve and the guesses, each
+ * from its own feet, and gives way to the lowest that does neither and is at most 1 % of
+ * the data's size higher); a discrete fit with rows or a held start state starts first
+ * from the smooth fit's curve (its guesses ended on polygons 25 x the data's length,
+ * crossing themselves hundreds of times). Free fits of 6-59 sparse
  * points take up to ~0.1 s of CPU (bench/bench_fit_sparse.py; a few hard sketches up to
  * ~0.8 s), those with Ipopt's rows up to ~1 s. With Ipopt's rows, its iterations over
  * the guesses (once one meets the constraints) and the refits of one fit stop at twice

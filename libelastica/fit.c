@@ -900,6 +900,12 @@ candidates:
         st != EL_ENOMEM &&
         (!(o.constraints & EL_CONSTRAIN_END_CURVATURE) || con.end_kappa == 0.0 || st != EL_OK))
         st = el__fit_ends_held(model, xy, n, opt, res, d, fs);
+    /* a sketch's constrained fit that wanders: its constraints from other starts (fit_restart.c;
+     * not the natural batten's, whose family was searched whole) */
+    if (ok && model == FIT_SMOOTH && kind == FIT_ORTHOGONAL && o.constraints && n < SKETCH_POINTS &&
+        !natural && !o.use_initial && !lm_only && !(flags & FIT_RUN_INNER) &&
+        (st == EL_OK || st == EL_ENOCONV || st == EL_EMAXITER))
+        st = el__fit_sketch_follows_held(xy, n, opt, noise_rms * sc, &ob, norm, res, d, fs);
 done:
     el__fit_objective_free(&ob);
     free(kept_feet);

@@ -523,6 +523,12 @@ enum { FIT_SKETCH_GUESSES = 6 };
 int el__fit_sketch_follows(const double *xy, size_t n, const el_fit_options *opt, double noise,
                            fit_objective *ob, const double norm[3], fit_out *res, double *d,
                            double *fs, int *replaced);
+/* fit_restart.c: the same for a sketch's constrained smooth fit: its constraints fitted from
+ * the free fit's curve and the guesses, each from its own feet; kept as there, when it meets
+ * them too. res->status, or EL_ENOMEM. */
+int el__fit_sketch_follows_held(const double *xy, size_t n, const el_fit_options *opt, double noise,
+                                fit_objective *ob, const double norm[3], fit_out *res, double *d,
+                                double *fs);
 /* fit_restart.c: el__fit_fallback, undone where its result crosses itself (el__fit_loops);
  * its status, or the kept fit's. */
 int el__fit_fallback_unless_loops(int model, const double *xy, size_t n, const el_fit_options *opt, int flags,

@@ -1249,3 +1249,18 @@ def test_initial_reversed_runs_as_the_points():
     fwd = el.fit(pts, model="discrete", initial=d)
     b = el.fit(pts, model="discrete", initial=turned)
     assert b.status == 0 and b.rms < 1.01 * fwd.rms
+
+
+@pytest.mark.parametrize("cons", ["tangents", "points", "point_tangent"])
+def test_sketch_constrained_follows_points(cons):
+    # QA: a ship section of 5 offsets (mm, polyline 5676), whose free fit is exact along
+    # 5999; with its end tangents a coil of length 7.6e6 (rms 0.74, feet out of order),
+    # pinned at both ends a pass of 1.07e7 (rms 50.1), start point and tangent 24983 (3.32)
+    P = np.array([[0., 0.], [508., 68.], [1297., 499.], [1480., 3575.], [579., 4342.]])
+    c = {"tangents": {"start_tangent": 0.0, "end_tangent": 2.6481578210},
+         "points": {"start_point": tuple(P[0]), "end_point": tuple(P[-1])},
+         "point_tangent": {"start_point": tuple(P[0]), "start_tangent": 0.0}}[cons]
+    r = el.fit(P, model="smooth", constraints=c)
+    assert r.status == 0 and r.rms < 0.5
+    assert r.curve.length < 1.1 * polyline_length(P)
+    assert np.all(np.diff(r.foot_s) >= 0)
