@@ -578,6 +578,57 @@ static int result_wanders(const double *xy, size_t n, double noise, fit_objectiv
     return !(stray <= FIT_STRAY) || result_loops(ob, FIT_SMOOTH, norm, res);
 }
 
+/* Each start fitted from its own feet (go: use_initial; flags: el__fit_run's), the lowest
+ * that does not wander (result_wanders) replacing *res (d, fs) when its rms is at most
+ * FIT_SKETCH_TOL of the data's size above *res's; *replaced says so. res->status, or
+ * EL_ENOMEM. */
+static int lowest_that_follows(const double *xy, size_t n, const el_fit_options *go, int flags,
+                               const double (*starts)[FIT_NP], size_t ns, double noise,
+                               fit_objective *ob, const double norm[3], fit_out *res, double *d,
+                               double *fs, int *replaced)
+{
+    double *buf = malloc(sizeof(double) * 4 * n);     /* a run's distances and feet, the best's */
+    if (!buf) return EL_ENOMEM;
+    fit_out best, alt;
+    best.status = -1;
+    int st = EL_OK, iters = 0;
+    for (size_t c = 0; c < ns && st != EL_ENOMEM; c++) {
+        memset(&alt, 0, sizeof alt);
+        alt.status = -1;
+        st = el__fit_run(FIT_SMOOTH, xy, n, go, flags, starts[c], &alt, buf, buf + n);
+        iters += alt.iterations;
+        if (st == EL_ENOMEM || !gave_curve(&alt)) continue;
+        if (result_wanders(xy, n, noise, ob, norm, &alt, buf + n) ||
+            (best.status != -1 && !(alt.rms < best.rms)))
+            continue;
+        best = alt;
+        memcpy(buf + 2 * n, buf, sizeof(double) * 2 * n);
+    }
+    if (st != EL_ENOMEM && best.status != -1 && best.rms <= res->rms + FIT_SKETCH_TOL * norm[2]) {
+        best.iterations = iters;
+        replace_fit(res, &best, buf + 2 * n, n, d, fs);
+        *replaced = 1;
+    }
+    free(buf);
+    return st == EL_ENOMEM ? st : res->status;
+}
+
+/* Up to FIT_SKETCH_GUESSES default guesses of the points appended to starts[*ns]. */
+static int add_guesses(const double *xy, size_t n, const el_fit_options *go,
+                       double (*starts)[FIT_NP], size_t *ns)
+{
+    el_smooth_params g[FIT_SKETCH_GUESSES];
+    size_t ng = 0;
+    if (el_guess_smooth(xy, n, go->param_mode, g, FIT_SKETCH_GUESSES, &ng) == EL_ENOMEM)
+        return EL_ENOMEM;
+    if ((size_t)go->max_candidates < ng) ng = (size_t)go->max_candidates;
+    for (size_t c = 0; c < ng; c++) {
+        const double p[FIT_NP] = {g[c].x0, g[c].y0, g[c].phi, g[c].mu, g[c].k, g[c].q, g[c].length};
+        memcpy(starts[(*ns)++], p, sizeof p);
+    }
+    return EL_OK;
+}
+
 /* Few points admit many elasticae through them (5 points: 7 residuals for the 7 parameters,
  * the end points' feet held), and the paired start (fit_candidate.c) led every guess to a
  * loop, where from their own feet they follow the points: a quarter circle's 5 sketched
@@ -598,37 +649,12 @@ int el__fit_sketch_follows(const double *xy, size_t n, const el_fit_options *opt
     if (!result_wanders(xy, n, noise, ob, norm, res, fs)) return res->status;
     el_fit_options go;
     if (opt) go = *opt; else el_fit_options_defaults(&go);
-    el_smooth_params g[FIT_SKETCH_GUESSES];
-    size_t ng = 0;
-    if (el_guess_smooth(xy, n, go.param_mode, g, FIT_SKETCH_GUESSES, &ng) == EL_ENOMEM)
-        return EL_ENOMEM;
-    if ((size_t)go.max_candidates < ng) ng = (size_t)go.max_candidates;
-    double *buf = malloc(sizeof(double) * 4 * n);     /* a run's distances and feet, the best's */
-    if (!buf) return EL_ENOMEM;
+    double starts[FIT_SKETCH_GUESSES][FIT_NP];
+    size_t ns = 0;
+    if (add_guesses(xy, n, &go, starts, &ns) == EL_ENOMEM) return EL_ENOMEM;
     go.use_initial = 1;     /* the caller's start: from its own feet (fit.c) */
-    fit_out best, alt;
-    best.status = -1;
-    int st = EL_OK, iters = 0;
-    for (size_t c = 0; c < ng && st != EL_ENOMEM; c++) {
-        const double p[FIT_NP] = {g[c].x0, g[c].y0, g[c].phi, g[c].mu, g[c].k, g[c].q, g[c].length};
-        memset(&alt, 0, sizeof alt);
-        alt.status = -1;
-        st = el__fit_run(FIT_SMOOTH, xy, n, &go, FIT_RUN_LM_ONLY, p, &alt, buf, buf + n);
-        if (st == EL_ENOMEM || !gave_curve(&alt)) continue;
-        iters += alt.iterations;
-        if (result_wanders(xy, n, noise, ob, norm, &alt, buf + n) ||
-            (best.status != -1 && !(alt.rms < best.rms)))
-            continue;
-        best = alt;
-        memcpy(buf + 2 * n, buf, sizeof(double) * 2 * n);
-    }
-    if (st != EL_ENOMEM && best.status != -1 && best.rms <= res->rms + FIT_SKETCH_TOL * norm[2]) {
-        best.iterations = iters;
-        replace_fit(res, &best, buf + 2 * n, n, d, fs);
-        *replaced = 1;
-    }
-    free(buf);
-    return st == EL_ENOMEM ? st : res->status;
+    return lowest_that_follows(xy, n, &go, FIT_RUN_LM_ONLY, (const double (*)[FIT_NP])starts, ns,
+                               noise, ob, norm, res, d, fs, replaced);
 }
 
 /* A sketch's constrained smooth fit in *res (d, fs: its distances and feet) that wanders
@@ -654,41 +680,13 @@ int el__fit_sketch_follows_held(const double *xy, size_t n, const el_fit_options
     fit_out alt;
     memset(&alt, 0, sizeof alt);
     alt.status = -1;
-    int st = el__fit_run(FIT_SMOOTH, xy, n, &go, 0, NULL, &alt, NULL, NULL);
-    if (st == EL_ENOMEM) return st;
-    if (gave_curve(&alt)) memcpy(starts[ns++], alt.params, sizeof starts[0]);
-    el_smooth_params g[FIT_SKETCH_GUESSES];
-    size_t ng = 0;
-    if (el_guess_smooth(xy, n, go.param_mode, g, FIT_SKETCH_GUESSES, &ng) == EL_ENOMEM)
+    if (el__fit_run(FIT_SMOOTH, xy, n, &go, 0, NULL, &alt, NULL, NULL) == EL_ENOMEM ||
+        add_guesses(xy, n, &go, starts + gave_curve(&alt), &ns) == EL_ENOMEM)
         return EL_ENOMEM;
-    if ((size_t)go.max_candidates < ng) ng = (size_t)go.max_candidates;
-    for (size_t c = 0; c < ng; c++) {
-        const double p[FIT_NP] = {g[c].x0, g[c].y0, g[c].phi, g[c].mu, g[c].k, g[c].q, g[c].length};
-        memcpy(starts[ns++], p, sizeof p);
-    }
-    double *buf = malloc(sizeof(double) * 4 * n);     /* a run's distances and feet, the best's */
-    if (!buf) return EL_ENOMEM;
+    if (gave_curve(&alt)) { memcpy(starts[0], alt.params, sizeof starts[0]); ns++; }
     go = *opt;
     go.use_initial = 1;
-    fit_out best;
-    best.status = -1;
-    int iters = 0;
-    for (size_t c = 0; c < ns && st != EL_ENOMEM; c++) {
-        memset(&alt, 0, sizeof alt);
-        alt.status = -1;
-        st = el__fit_run(FIT_SMOOTH, xy, n, &go, 0, starts[c], &alt, buf, buf + n);   /* polished */
-        iters += alt.iterations;
-        if (st == EL_ENOMEM || !gave_curve(&alt) ||
-            result_wanders(xy, n, noise, ob, norm, &alt, buf + n) ||
-            (best.status != -1 && !(alt.rms < best.rms)))
-            continue;
-        best = alt;
-        memcpy(buf + 2 * n, buf, sizeof(double) * 2 * n);
-    }
-    if (st != EL_ENOMEM && best.status != -1 && best.rms <= res->rms + FIT_SKETCH_TOL * norm[2]) {
-        best.iterations = iters;
-        replace_fit(res, &best, buf + 2 * n, n, d, fs);
-    }
-    free(buf);
-    return st == EL_ENOMEM ? st : res->status;
+    int replaced = 0;       /* each run polished (flags 0) */
+    return lowest_that_follows(xy, n, &go, 0, (const double (*)[FIT_NP])starts, ns, noise, ob,
+                               norm, res, d, fs, &replaced);
 }
