@@ -45,6 +45,16 @@ def temp_path(test, name):
     return os.path.join(folder, name)
 
 
+def reopened(test, file, *names):
+    """test.doc saved as ``file`` (in a temp_path), closed and opened again (test.doc the
+    opened one): the objects of those names in it."""
+    path = temp_path(test, file)
+    test.doc.saveAs(path)
+    App.closeDocument(test.doc.Name)
+    test.doc = App.openDocument(path)
+    return [test.doc.getObject(n) for n in names]
+
+
 def new_doc(name):
     for d in list(App.listDocuments().values()):
         if d.Name == name:

@@ -946,12 +946,7 @@ class FitEdgeLinkTest(unittest.TestCase):
         self._joins_the_lead_in(f, 0)
         self.assertEqual(f.StartTangent[1], ["Edge2"])
         # saved, opened (FreeCAD gives the geometry new Tags) and edited before a recompute
-        path = S.temp_path(self, "link.FCStd")
-        name = f.Name
-        self.doc.saveAs(path)
-        App.closeDocument(self.doc.Name)
-        self.doc = App.openDocument(path)
-        self.sk, f = self.doc.getObject("Edges"), self.doc.getObject(name)
+        self.sk, f = S.reopened(self, "link.FCStd", "Edges", f.Name)
         self.sk.delGeometry(2)
         self.sk.addGeometry(Part.LineSegment(App.Vector(-90, -20, 0), App.Vector(-70, -20, 0)))
         self.doc.recompute()
@@ -960,12 +955,7 @@ class FitEdgeLinkTest(unittest.TestCase):
     def test_a_document_of_a_version_before_follows_the_edge_it_names(self):
         f = self._fit()
         f.removeProperty("StartTangentGeometry")        # a document made before: no index
-        path = S.temp_path(self, "old.FCStd")
-        name = f.Name
-        self.doc.saveAs(path)
-        App.closeDocument(self.doc.Name)
-        self.doc = App.openDocument(path)
-        self.sk, f = self.doc.getObject("Edges"), self.doc.getObject(name)
+        self.sk, f = S.reopened(self, "old.FCStd", "Edges", f.Name)
         self.assertEqual(f.StartTangentGeometry, -1)
         self.sk.delGeometry(0)
         self.doc.recompute()
@@ -1058,14 +1048,6 @@ class FitSourceLinkTest(unittest.TestCase):
         self.assertEqual(len(f.DataPoints), len(points))
         self.assertLess(max((a - b).Length for a, b in zip(f.DataPoints, points)), 1e-9)
 
-    def _reopened(self, f):
-        path = S.temp_path(self, "source.FCStd")
-        name = f.Name
-        self.doc.saveAs(path)
-        App.closeDocument(self.doc.Name)
-        self.doc = App.openDocument(path)
-        return self.doc.getObject("Chain"), self.doc.getObject(name)
-
     def test_picked_edges_follow_their_geometry(self):
         sk = S.helper_and_curve_sketch(self.doc, self.xy)
         picked = [(1, "edge"), (2, "edge")]
@@ -1073,7 +1055,8 @@ class FitSourceLinkTest(unittest.TestCase):
         self.doc.recompute()
         self.assertEqual(f.Source[0][1], ("Edge2", "Edge3"))
         points = list(f.DataPoints)
-        sk, f = self._reopened(f)            # the geometry's Tags are new: its indices saved
+        # the geometry's Tags are new: its indices saved
+        sk, f = S.reopened(self, "source.FCStd", "Chain", f.Name)
         sk.toggleConstruction(0)
         self.doc.recompute()
         self._same_points(f, points)
@@ -1104,7 +1087,7 @@ class FitSourceLinkTest(unittest.TestCase):
         self.doc.recompute()
         points = list(f.DataPoints)
         f.removeProperty("SourceGeometry")             # a document made before: no indices
-        sk, f = self._reopened(f)
+        sk, f = S.reopened(self, "source.FCStd", "Chain", f.Name)
         sk.toggleConstruction(0)
         self.doc.recompute()
         self._same_points(f, points)
@@ -1142,7 +1125,7 @@ class FitSourceLinkTest(unittest.TestCase):
         points = list(f.DataPoints)
         sk.delGeometry(0)
         sk.recompute()
-        sk, f = self._reopened(f)
+        sk, f = S.reopened(self, "source.FCStd", "Chain", f.Name)
         self.doc.recompute()
         self._same_points(f, points)
         self.assertEqual(f.Source[0][1], ("Edge1", "Edge2"))
