@@ -469,6 +469,13 @@ int el__fit_unconstrained_start(int model, const double *xy, size_t n, const el_
  * cx, cy, sc into v); EL_EDOM: none, EL_ENOMEM. */
 int el__fit_smooth_start(const double *xy, size_t n, const el_fit_options *opt, int flags,
                          double cx, double cy, double sc, double *v);
+/* fit_restart.c: the conjugate of a smooth inflectional curve p (input units) at its start:
+ * the same start point, tangent and zero curvature, the force reversed (phi + pi,
+ * k' = sqrt(1 - k^2)), so that between its inflections it turns the other way round, through
+ * the directions p does not take (its inflections' tangents the same mod 2 pi); w scaled by
+ * K(k') / K(k), its inflections as far apart (tests/c/test_fit_ends_held.c). EL_EDOM where p
+ * has no inflection at its start. */
+int el__fit_conjugate(el_smooth_params *p);
 /* fit_restart.c: a smooth fit held at an inflection at its start (start tangent and zero
  * curvature) with a tangent row at its end: the conjugate of its fit without rows (the same
  * start state, the force reversed: it turns between its inflections the other way round,

@@ -89,12 +89,7 @@ int el__fit_smooth_start(const double *xy, size_t n, const el_fit_options *opt, 
     return el__all_finite(v, FIT_NP) ? EL_EDOM : EL_OK;
 }
 
-/* The conjugate of a smooth inflectional curve p (input units) at its start: the same start
- * point, tangent and zero curvature, the force reversed (phi + pi, k' = sqrt(1 - k^2)), so
- * that between its inflections it turns the other way round, through the directions p does
- * not take (its inflections' tangents the same mod 2 pi); w scaled by K(k') / K(k), its
- * inflections as many. EL_EDOM where p has no inflection at its start. */
-static int conjugate(el_smooth_params *p)
+int el__fit_conjugate(el_smooth_params *p)
 {
     const double k = fabs(p->k);
     el_jacobi J;
@@ -142,7 +137,7 @@ int el__fit_conjugate_start(const double *xy, size_t n, const el_fit_options *op
     el_smooth_params c = {fo.params[0], fo.params[1], fo.params[2], fo.params[3], fo.params[4],
                           fo.params[5], fo.params[6]};
     const double chord = chord_of(&c);
-    if (conjugate(&c)) return EL_EDOM;
+    if (el__fit_conjugate(&c)) return EL_EDOM;
     /* the conjugate spans less (a loop between inflections): also scaled up to the held
      * fit's chord */
     const double grow = fmin(chord / fmax(chord_of(&c), DBL_MIN), CONJUGATE_GROWTH);

@@ -11,6 +11,7 @@
  * chart meets them, ZK79 discrete and ZK101 smooth with both at 3.0 and 2.2 x. */
 #include "testutil.h"
 #include "fit_internal.h"
+#include <gsl/gsl_sf_ellint.h>
 #include <math.h>
 #include <string.h>
 
@@ -226,6 +227,48 @@ START_TEST(test_fit_zero_curvatures_both_ends_met)
 }
 END_TEST
 
+/* The conjugate (el__fit_conjugate) by its defining identities, not its formula: on 300
+ * inflectional curves (k = +-0.03..0.99, mu 1e-4..1e4, starting at an inflection q = K, -K,
+ * 3K) it starts at the same point with the same tangent and zero curvature, its next
+ * inflection lies as far along (w scaled by K(k') / K(k)) with the original's tangent there
+ * (mod 2 pi), and half way between it runs opposite to the original (theta + pi): between its
+ * inflections it turns the other way round, through the directions the original does not
+ * take. */
+/* |a - b| mod 2 pi, in [0, pi] */
+static double angle_diff(double a, double b)
+{
+    return fabs(remainder(a - b, 2.0 * M_PI));
+}
+
+START_TEST(test_conjugate_turns_the_other_way_between_the_same_inflections)
+{
+    double worst[4] = {0, 0, 0, 0};
+    unsigned long long seed = 12345u;
+    for (int t = 0; t < 300; t++) {
+        const double u3 = test_uniform(&seed, 0.0, 1.0);
+        const double k = (t % 2 ? -1.0 : 1.0) * test_uniform(&seed, 0.03, 0.99);
+        const double mu = pow(10.0, test_uniform(&seed, -4.0, 4.0));
+        const double K = gsl_sf_ellint_Kcomp(fabs(k), GSL_PREC_DOUBLE), w = sqrt(mu);
+        const double q = (t % 3 == 0 ? 1.0 : t % 3 == 1 ? -1.0 : 3.0) * K;
+        const double half = 2.0 * K / w;             /* inflection to inflection */
+        el_smooth_params p = {u3 - 0.5, 0.25, 6.0 * u3 - 3.0, mu, k, q, 2.0 * half}, c = p;
+        ck_assert_int_eq(el__fit_conjugate(&c), EL_OK);
+        const double s[3] = {0.0, 0.5 * half, half};
+        double xy[2][6], th[2][3], ka[2][3];
+        ck_assert_int_eq(el_smooth_eval(&p, 3, s, xy[0], th[0], ka[0]), EL_OK);
+        ck_assert_int_eq(el_smooth_eval(&c, 3, s, xy[1], th[1], ka[1]), EL_OK);
+        worst[0] = fmax(worst[0], hypot(xy[1][0] - xy[0][0], xy[1][1] - xy[0][1]) * w);
+        worst[1] = fmax(worst[1], fmax(angle_diff(th[1][0], th[0][0]),
+                                       angle_diff(th[1][2], th[0][2])));
+        worst[2] = fmax(worst[2], fmax(fabs(ka[1][0]), fabs(ka[1][2])) / w);
+        worst[3] = fmax(worst[3], angle_diff(th[1][1], th[0][1] + M_PI));
+    }
+    ck_assert_msg(worst[0] <= 1e-12 && worst[1] <= 1e-11 && worst[2] <= 1e-11 && worst[3] <= 1e-11,
+                  "start %.3g, inflection tangents %.3g, curvatures %.3g, mid tangent %.3g",
+                  worst[0], worst[1], worst[2], worst[3]);
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("fit_ends_held");
@@ -234,6 +277,7 @@ static Suite *suite(void)
     tcase_add_test(tc, test_fit_zero_start_curvature_held_in_ends_chart);
     tcase_add_test(tc, test_fit_zero_end_curvature_held_reversed);
     tcase_add_test(tc, test_fit_zero_curvatures_both_ends_met);
+    tcase_add_test(tc, test_conjugate_turns_the_other_way_between_the_same_inflections);
     suite_add_tcase(s, tc);
     return s;
 }
