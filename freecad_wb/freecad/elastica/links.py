@@ -111,7 +111,8 @@ def _element(sketch, i, pos):
 # sub-element the link names (a slot: _slots) is known by its geometry's Tag and its position
 # while the document is open (_tags) and by its geometry index, saved in the
 # property the proxy's ``followed_links`` names (an integer for a one-edge link, a string list
-# 'index' / 'index:start' / 'index:end' for a list): FreeCAD 0.20 gives sketch geometry new
+# 'index' / 'index:start' / 'index:end' for a list or a PropertyLinkSub naming several
+# elements, as a comb's Source): FreeCAD 0.20 gives sketch geometry new
 # Tags when a document is opened, and saves no id of its own. The index is FREE until the slot
 # is first resolved (a new link, a document of a version before), DELETED once its geometry is
 # deleted, or a one-edge link's object (the feature says so until it is relinked).
@@ -140,11 +141,11 @@ def _set_tags(feature, prop, tags):
 
 def _slots(link):
     """The sub-elements a link's value names, in order: [(obj, name)]; whole objects left
-    out. ``link``: a PropertyLinkSub's (obj, [name]) or None, a PropertyLinkSubList's
+    out. ``link``: a PropertyLinkSub's (obj, [name, ...]) or None, a PropertyLinkSubList's
     [(obj, (name, ...)), ...]."""
     if isinstance(link, list):
         return [(obj, s) for obj, subs in link for s in subs if s]
-    return [(link[0], link[1][0])] if link and link[1] and link[1][0] else []
+    return [(link[0], s) for s in link[1] if s] if link else []
 
 
 def _followable(obj, name):
@@ -256,7 +257,7 @@ def _rename(feature, prop, names):
     if isinstance(link, list):
         value = [(obj, tuple(next(it) if s else s for s in subs)) for obj, subs in link]
     else:
-        value = (link[0], [next(it)])
+        value = (link[0], [next(it) if s else s for s in link[1]])
     feature.Proxy._renaming = True          # the same geometry: no new link (link_changed)
     try:
         setattr(feature, prop, value)

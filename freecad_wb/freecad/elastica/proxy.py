@@ -76,12 +76,13 @@ def add_link(obj, kind, name, group, tip):
     add_property(obj, scoped, name, group, tip)
 
 
-def add_geometry_index(obj, name, link):
+def add_geometry_index(obj, name, link, several=False):
     """The hidden property ``name``: the indices of the sketch geometry the link ``link``
     follows (links.followed_elements): an integer for a one-edge link (-1 until the link is
-    first resolved), a string list for a list, one entry per sub-element."""
+    first resolved), a string list for a list or, ``several``, a PropertyLinkSub naming
+    several sub-elements of its object, one entry per sub-element."""
     group = obj.getGroupOfProperty(link)
-    if obj.getTypeIdOfProperty(link).startswith("App::PropertyLinkSubList"):
+    if several or obj.getTypeIdOfProperty(link).startswith("App::PropertyLinkSubList"):
         add_property(obj, "App::PropertyStringList", name, group,
                      f"Index of the sketch geometry of each sub-element of {link}, followed as "
                      "the sketch changes: 'i' (its edge), 'i:start' / 'i:end' (a vertex; -1: "
