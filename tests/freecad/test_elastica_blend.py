@@ -691,6 +691,7 @@ class CombTest(unittest.TestCase):
         sk.addGeometry(__import__("Part").ArcOfCircle(
             __import__("Part").Circle(App.Vector(0, 0, 0), App.Vector(0, 0, 1), 10.0),
             0.0, math.pi / 2), False)
+        comb.Source = (sk, ["Edge1"])                   # the arc it followed is deleted: relinked
         self.doc.recompute()
         centre = S.SKETCH_PLACEMENT.multVec(App.Vector(0, 0, 0))
         teeth = [e.Length for e in comb.Shape.Edges

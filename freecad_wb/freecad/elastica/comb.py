@@ -12,8 +12,10 @@ import FreeCAD as App
 import Part
 
 from .geometry import dedup, el, global_element, global_shape, np
-from .proxy import (FeatureProxy, InputProblem, add_link, add_property, new_feature, read_only,
-                    report)
+from .links import followed_reader
+from .proxy import (FeatureProxy, InputProblem, add_geometry_index, add_link, add_property,
+                    new_feature, read_only, report)
+from .sources import nothing_read
 
 SCALE_SHARE = 0.12    # automatic scale: the longest tooth is this share of the extent
 
@@ -46,10 +48,11 @@ def _edge_teeth(edge, samples):
     return feet, normals, kappas
 
 
-def comb_core(source, subs=(), samples=60, scale=0.0):
+def comb_core(source, subs=(), samples=60, scale=0.0, element=global_element):
     """Teeth of a curvature comb: a list per curve of (foot, tip) vector pairs, and
     the scale used. ``samples`` teeth per curve; ``scale`` 0 = automatic (the longest
-    tooth 12 % of the source's extent)."""
+    tooth 12 % of the source's extent); ``element``: (obj, name) -> its global edge
+    ``name`` (a feature's: the sketch geometry its link follows, links.followed_reader)."""
     if not 2 <= samples <= 5000:
         raise InputProblem(f"Samples = {samples} is not usable: 2 to 5000 teeth per curve")
     if not math.isfinite(scale):
@@ -63,7 +66,7 @@ def comb_core(source, subs=(), samples=60, scale=0.0):
     if stored and all(isinstance(c, el().SmoothElastica) for c in stored[0]):
         per_curve = [_elastica_teeth(c, stored[1], samples) for c in stored[0]]
     else:
-        edges = [global_element(source, s) for s in subs if s.startswith("Edge")] if subs \
+        edges = [element(source, s) for s in subs if s.startswith("Edge")] if subs \
             else shape.Edges
         if not edges:
             raise InputProblem("the comb's source has no edges")
@@ -110,10 +113,14 @@ class CombProxy(FeatureProxy):
     """Curvature comb along a Fit / Blend result or any edges."""
 
     kind = "Comb"
+    # a sketch's edges combed are their geometry, followed as the sketch changes (QA: a comb
+    # of Edge3 and Edge4 combed two other edges once an earlier line was made construction)
+    followed_links = {"Source": "SourceGeometry"}
 
     def setup(self, obj):
         add_link(obj, "App::PropertyLinkSub", "Source", "Comb",
                  "An Elastica result, or an object (and optionally its edges)")
+        add_geometry_index(obj, "SourceGeometry", "Source", several=True)
         add_property(obj, "App::PropertyInteger", "Samples", "Comb",
                      "Teeth per curve (2 to 5000)", 60)
         add_property(obj, "App::PropertyFloat", "Scale", "Comb",
@@ -125,8 +132,9 @@ class CombProxy(FeatureProxy):
     def compute(self, obj):
         """comb_core's (teeth per curve, scale); raises InputProblem."""
         if not obj.Source:
-            raise InputProblem("no source")
-        return comb_core(obj.Source[0], obj.Source[1], obj.Samples, obj.Scale)
+            raise nothing_read("an Elastica result or some edges", "Source")
+        element = followed_reader(obj, "Source")      # renames Source: read it after
+        return comb_core(obj.Source[0], obj.Source[1], obj.Samples, obj.Scale, element)
 
     def apply(self, obj, r):
         teeth, scale = r

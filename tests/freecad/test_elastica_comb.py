@@ -1,0 +1,144 @@
+"""freecadcmd -t tests of the curvature comb's link: the sketch edges combed are their
+geometry, followed as the sketch changes (QA: a comb of Chain.Edge3 and Edge4 combed two
+other edges, status ok, once the helper line Edge1 was made construction or deleted), said
+when deleted or made construction, through Undo, save / reopen and documents made before."""
+import unittest
+
+import FreeCAD as App
+
+import elastica_samples as S
+from freecad.elastica import comb as Co
+from freecad.elastica import fit as Fi
+
+DELETED = ("error: Source: the sketch geometry it followed (Chain.Edge3) was deleted: "
+           "relink Source")
+
+
+class CombLinkTest(unittest.TestCase):
+    def setUp(self):
+        self.doc = S.new_doc("ElasticaCombLink")
+        self.xy, _ = S.keyline_xy(40)
+        # geometry 0 the helper line (Edge1), 1..3 the curve's pieces (Edge2..Edge4)
+        self.sk = S.helper_and_curve_sketch(self.doc, self.xy)
+
+    def tearDown(self):
+        App.closeDocument(self.doc.Name)
+
+    def _comb(self, source, subs):
+        """A comb of ``subs`` of ``source``, recomputed; a fixed scale: the automatic one
+        follows the extent of the whole sketch, which the helper line changes."""
+        comb = Co.make(self.doc, source, subs, Samples=12, Scale=200.0)
+        self.doc.recompute()
+        self.assertEqual(comb.Status, "ok")
+        return comb
+
+    def _same_teeth(self, comb, points):
+        self.assertEqual(comb.Status, "ok")
+        now = [v.Point for v in comb.Shape.Vertexes]
+        self.assertEqual(len(now), len(points))
+        self.assertLess(max((a - b).Length for a, b in zip(now, points)), 1e-9)
+
+    def test_two_edges_follow_their_geometry(self):
+        comb = self._comb(self.sk, ["Edge3", "Edge4"])
+        points = [v.Point for v in comb.Shape.Vertexes]
+        self.sk.toggleConstruction(0)
+        self.doc.recompute()
+        self._same_teeth(comb, points)
+        self.assertEqual(comb.Source[1], ["Edge2", "Edge3"])
+        self.sk.delGeometry(0)
+        self.doc.recompute()
+        self._same_teeth(comb, points)
+        self.assertEqual(comb.Source[1], ["Edge2", "Edge3"])
+        self.assertEqual(list(comb.SourceGeometry), ["1", "2"])
+
+    def test_a_deleted_edge_is_named(self):
+        comb = self._comb(self.sk, ["Edge3", "Edge4"])
+        shape = comb.Shape.copy()
+        self.sk.delGeometry(2)                          # Edge3 itself
+        self.doc.recompute()
+        self.assertEqual(comb.Status, DELETED)
+        self.assertLess(abs(comb.Shape.Length - shape.Length), 1e-9)    # the last comb kept
+        comb.Source = (self.sk, ["Edge3"])              # relinked: the last piece alone
+        self.doc.recompute()
+        self.assertEqual(comb.Status, "ok")
+
+    def test_an_edge_made_construction_is_named(self):
+        comb = self._comb(self.sk, ["Edge3", "Edge4"])
+        points = [v.Point for v in comb.Shape.Vertexes]
+        self.sk.toggleConstruction(3)                   # Edge4 itself
+        self.doc.recompute()
+        self.assertEqual(comb.Status, "error: Source: the sketch geometry it followed "
+                         "(Chain.Edge4) is construction geometry now: make it normal geometry "
+                         "or relink Source")
+        self.sk.toggleConstruction(3)
+        self.doc.recompute()
+        self._same_teeth(comb, points)
+
+    def test_undo_follows_what_was_followed(self):
+        """Transactions as the GUI opens them: the helper line deleted, then Edge3; Undo
+        twice brings the comb back on the same geometry under its first names."""
+        self.doc.UndoMode = 1
+        comb = self._comb(self.sk, ["Edge3", "Edge4"])
+        points = [v.Point for v in comb.Shape.Vertexes]
+        for geo in (0, 1):                              # the helper, then what was Edge3
+            self.doc.openTransaction("delete geometry")
+            self.sk.delGeometry(geo)
+            self.doc.commitTransaction()
+            self.doc.recompute()
+        self.assertEqual(comb.Status, DELETED.replace("Edge3", "Edge2"))    # its name then
+        self.doc.undo()
+        self.doc.recompute()
+        self._same_teeth(comb, points)
+        self.assertEqual(comb.Source[1], ["Edge2", "Edge3"])
+        self.doc.undo()
+        self.doc.recompute()
+        self._same_teeth(comb, points)
+        self.assertEqual(comb.Source[1], ["Edge3", "Edge4"])
+
+    def test_saved_reopened_and_edited_it_follows(self):
+        comb = self._comb(self.sk, ["Edge3", "Edge4"])
+        points = [v.Point for v in comb.Shape.Vertexes]
+        self.sk, comb = S.reopened(self, "comb.FCStd", "Chain", comb.Name)
+        self.sk.toggleConstruction(0)                   # before any recompute: new Tags
+        self.doc.recompute()
+        self._same_teeth(comb, points)
+        self.sk.delGeometry(0)                          # only the sketch recomputed, saved
+        self.sk.recompute()
+        self.sk, comb = S.reopened(self, "comb2.FCStd", "Chain", comb.Name)
+        self.doc.recompute()
+        self._same_teeth(comb, points)
+        self.assertEqual(comb.Source[1], ["Edge2", "Edge3"])
+
+    def test_a_document_of_a_version_before_follows_the_edges_it_names(self):
+        comb = self._comb(self.sk, ["Edge3", "Edge4"])
+        points = [v.Point for v in comb.Shape.Vertexes]
+        comb.removeProperty("SourceGeometry")           # a document made before: no index
+        self.sk, comb = S.reopened(self, "old.FCStd", "Chain", comb.Name)
+        self.assertEqual(list(comb.SourceGeometry), [])
+        self.sk.toggleConstruction(0)
+        self.doc.recompute()
+        self._same_teeth(comb, points)
+        self.assertEqual(list(comb.SourceGeometry), ["2", "3"])
+
+    def test_a_comb_of_a_fit_follows_the_fit(self):
+        """A comb of a whole Elastica result (no edges named) combs its curves as before; its
+        deleted source is said as the other features say it (it said 'no source')."""
+        f = Fi.make(self.doc, [(self.sk, ["Edge2", "Edge3", "Edge4"])], Model="smooth")
+        self.doc.recompute()
+        comb = self._comb(f, [])
+        points = [v.Point for v in comb.Shape.Vertexes]
+        self.sk.toggleConstruction(0)
+        self.doc.recompute()
+        self._same_teeth(comb, points)
+        self.sk, f, comb = S.reopened(self, "fit.FCStd", "Chain", f.Name, comb.Name)
+        self.sk.delGeometry(0)
+        self.doc.recompute()
+        self.assertEqual(f.Status, "converged")
+        self._same_teeth(comb, points)
+        self.assertEqual(comb.Source, (f, []))
+        self.assertEqual(S.status_once_deleted(comb, f), "error: its source was deleted: "
+                         "relink Source (an Elastica result or some edges)")
+
+
+if __name__ == "__main__":
+    unittest.main()
