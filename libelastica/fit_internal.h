@@ -1,7 +1,10 @@
 /*
  * How the fitting code's files meet (not installed):
- *   fit.c            the public entry points: options, normalisation, initial guesses,
- *                    which solver runs, results and distances in input units;
+ *   fit.c            the public entry points and el__fit_run's stages: options,
+ *                    normalisation, charts and map, the kept fit's feet, results and
+ *                    distances in input units, the further runs;
+ *   fit_choose.c     the run's starts (guesses and further starts) and the choice
+ *                    among their fits;
  *   fit_candidate.c  one initial guess solved: Levenberg-Marquardt, then Ipopt where
  *                    rows, bounds or an uncertified point need it;
  *   fit_model.c      the optimiser's parameters: internal parameter vectors, the maps
@@ -140,8 +143,8 @@ typedef struct fit_objective {
      * (fit_lm.c); HUGE_VAL (el__fit_objective_init): never */
     double f_ceiling;
     /* smooth orthogonal: a fit from the paired start that ends above this objective (far
-     * above the data's noise, fit.c) is fitted from its guess's own feet too (fit_candidate.c);
-     * HUGE_VAL (el__fit_objective_init): never */
+     * above the data's noise, fit_choose.c) is fitted from its guess's own feet too
+     * (fit_candidate.c); HUGE_VAL (el__fit_objective_init): never */
     double f_direct;
     /* Levenberg-Marquardt stops once a Gauss-Newton step would lower f by less than
      * lm_tol of itself (fit_lm.c; el__fit_objective_init: 1e-13, the certificate) */
@@ -409,12 +412,12 @@ typedef struct fit_candidate {
     double x[FIT_MAXX], f;
     int status, iters, used_ipopt, ipopt_status;
 } fit_candidate;
-/* A candidate with rows that loops (fit.c's conjugate starts), refitted by Ipopt from where it
- * is from its curve's nearest points (el__fit_feet_start) while that lowers f and meets con
- * and the bounds lo, hi, at most REFEET_ROUNDS times: its feet followed the curve by Newton
- * steps from its start's nearest points and can rest on another pass than the nearest
- * (measured, the conjugate starts of three sine scans held at an inflection: f 0.049 ->
- * 0.017, 0.085 -> 0.010, 0.032 -> 0.007 in 2-3 rounds). *stale: ob's feet are a rejected
+/* A candidate with rows that loops (fit_choose.c's conjugate starts), refitted by Ipopt from
+ * where it is from its curve's nearest points (el__fit_feet_start) while that lowers f and
+ * meets con and the bounds lo, hi, at most REFEET_ROUNDS times: its feet followed the curve
+ * by Newton steps from its start's nearest points and can rest on another pass than the
+ * nearest (measured, the conjugate starts of three sine scans held at an inflection: f 0.049
+ * -> 0.017, 0.085 -> 0.010, 0.032 -> 0.007 in 2-3 rounds). *stale: ob's feet are a rejected
  * refit's. EL_OK, or el__fit_solve_candidate's error. */
 enum { REFEET_ROUNDS = 3 };
 int el__fit_refeet(fit_objective *ob, const el_fit_options *o, const fit_constraints *rows,
@@ -455,6 +458,67 @@ enum { FIT_RUN_LM_ONLY = 1, FIT_RUN_ROWS = 2, FIT_RUN_NO_OTHER = 4, FIT_RUN_POLI
        FIT_RUN_ENDS_HELD = 32, FIT_RUN_NO_CONJUGATE = 64 };
 int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt, int flags,
                 const double *init, fit_out *res, double *dist, double *foot);
+/* One run of el__fit_run: what its stages (fit.c, fit_choose.c) hand on to each other.
+ * Normalised units (the normalisation cx, cy, sc) but for the call's own arrays. */
+enum {
+    FIT_MAXCAND = 6,        /* initial guesses at most (el_guess_*) */
+    FIT_G1_STARTS = 3,      /* G1 family members fitted at most (fit_g1_family.c) */
+    /* fewer points are a sketch's (bench_fit_sparse.py draws 6-59), whose noise figure
+     * holds their curve's bending too (fit_choose.c: ob.f_direct) */
+    FIT_SKETCH_POINTS = 60
+};
+typedef struct fit_run_state {
+    /* the call: el__fit_run's arguments; o the options in force (the caller's or the
+     * defaults; a held start point as x0, y0 fixed) */
+    int model, flags, lm_only;
+    const double *xy, *init;
+    size_t n;
+    const el_fit_options *opt;
+    fit_out *res;
+    el_fit_options o;
+    double cx, cy, sc, norm[3];
+    /* bounds (the model's, the caller's, the constraints'), the constraints (con_rows:
+     * those left to Ipopt's rows) and the distance (enum fit_kind) */
+    double lo[FIT_NP], hi[FIT_NP];
+    fit_constraints con, con_rows;
+    int kind;
+    /* the charts (fit.c, choose_charts): sl the slots of (phi, w or z, k, q), held the
+     * constraint bits a chart holds exactly, staged those held by continuation */
+    int sl[4], ik, jl, chart_ok, held, ends_ok, ends_chart, zero_k0, natural, need_ipopt, staged;
+    double chord[2];
+    fit_map map, free_map;                   /* free_map: the held chart variables free */
+    double xl[FIT_MAXX], xu[FIT_MAXX];       /* the variables' bounds */
+    /* work: fractions t (smooth), scratch, distances and feet d, fs (the caller's or dbuf),
+     * the kept fit's feet before the G1 family members' pass */
+    double *t, *tmp, *dbuf, *d, *fs, *kept_feet;
+    fit_objective ob;
+    int mode;                                /* the smooth fractions' el_param_mode */
+    /* the starts (fit_choose.c): cand[0..ncand), the index of each further start in it
+     * ((size_t)-1: none), the first nconj conjugate and nfamily family starts */
+    double cand[FIT_MAXCAND + 4 + FIT_G1_STARTS][FIT_NP];
+    size_t ncand, free_ci, smooth_ci, natural_ci, nconj, nfamily;
+    int caller_twice, caller_start, free_start, smooth_start, sketch_rows;
+    int natural_ok, natural_evals, deferred, no_polish, polish_run, refit_no_polish;
+    int family_pass, family_won, kept_last;
+    double noise_rms, data_noise, noise;     /* the noise figures (fit_choose.c) */
+    /* the kept fit: its candidate and start, what is known of it (-1: not yet), the
+     * counts; then its curve v, status and the constraint it violates, ok: evaluable */
+    fit_candidate best;
+    double best_init[FIT_NP];
+    int best_strays, best_loops, best_meets, wander_kept;
+    int iters, tried, last_is_best, ipopt_spent;
+    double v[2][FIT_NP];
+    int status, constraint, ok;
+} fit_run_state;
+/* fit.c: whether the points are spaced evenly along the data (the paired distance's
+ * condition, seed 000 (4.6)). */
+int el__fit_evenly_spaced(const double *xy, size_t n);
+/* fit_choose.c: the run's starts: the guesses (or the caller's start), the noise rule, and
+ * the further starts fitted first; EL_OK, else the run's error. */
+int el__fit_starts(fit_run_state *R);
+/* fit_choose.c: every start fitted in turn, the best kept (R->best, best_init), then the G1
+ * ends' family members; EL_OK, else the run's error. */
+int el__fit_choose(fit_run_state *R);
 /* fit_restart.c: el__fit_run (flags as there) on the points in reverse order when the end
  * holds more constraints than the start, else as they are (the public entry points). */
 int el__fit_run_either_way(int model, const double *xy, size_t n, const el_fit_options *opt,

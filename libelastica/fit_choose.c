@@ -1,0 +1,702 @@
+/*
+ * A fit's starts and the choice among their fits (el__fit_run's middle stages, fit.c).
+ * The starts: the initial guesses (guess.c, seed 000 §4.3) or the caller's start, and
+ * further starts some fits take first (the unconstrained fit's curve for held ends, the
+ * natural batten's member, the smooth fit's curve for a discrete fit, the conjugate starts
+ * at a held inflection) or last (the unconstrained or the smooth fit's curve, while every
+ * guess is far from the noise). Each is fitted (fit_candidate.c) in the order of the list,
+ * the next only while the best rms is above both the exact level and 1.5 x the noise level
+ * (el__fit_noise_rms); a fit replaces the kept one by the rules of keep_the_better. Joined
+ * G1 at both ends, the Hermite families' members (fit_g1_family.c) are a second pass.
+ */
+#include "fit_internal.h"
+#include <stdlib.h>
+#include <string.h>
+
+/* a G1 family member is fitted where its own objective is below this multiple of the kept
+ * fit's: its fit comes lower (16 sketched points between nearly collinear lines: a member
+ * at 1.12 x a guess's looping fit reached 0.86 x it, following the points, QA) */
+static const double MEMBER_GAIN = 4.0;
+/* a sketch's free fit with rows is a start where its objective is below this share of the
+ * constrained fits' best (its rms below half theirs: constraints that cost that much are
+ * not the data's own, or the guesses missed their basin) */
+static const double FREE_GAIN = 0.25;
+
+/* The first feet of a fit by distance with feet (orthogonal smooth): the fractions' places
+ * t_i on a curve of the given length. */
+static void first_feet(fit_objective *ob, const double *t, double length)
+{
+    if (fit_has_feet(ob))
+        for (size_t i = 0; i < ob->n; i++) ob->s[i] = t[i] * length;
+}
+
+/* ------------------------------------------------------------ the starts */
+
+/* The initial guesses (el_guess_discrete / el_guess_smooth, up to max_candidates) or the
+ * caller's start, normalised, into cand.
+ * The caller's start with constraints: fitted from its own feet first (caller_start), then
+ * as before, from its held start state (a start-state chart singular on a near-straight
+ * curve: 7 points with 0.2 % noise, G1 at both ends, the first failed the end tangent); the
+ * lower that meets them is kept. From the held start alone, 6 points (5 within the first
+ * fifth of a 130 mm curve, with 0.02 mm noise, and its far end) joined with the true curve's
+ * own end points and tangents ended at rms 3.0 where the true curve, the start, has 0.024
+ * (QA). (And el__fit_follow_points' refit from the paired curve: from the held start alone,
+ * a start point and tangent on 40 uneven points went back to a loop of length 38.8 for
+ * points spanning 10.1, rms 0.067; from its feet 0.090 along them, QA.) */
+static int initial_guesses(fit_run_state *R)
+{
+    const el_fit_options *o = &R->o;
+    const int model = R->model;
+    const double cx = R->cx, cy = R->cy, sc = R->sc;
+    int st;
+    R->caller_twice = o->use_initial && o->constraints && R->kind == FIT_ORTHOGONAL;
+    if (o->use_initial) {
+        for (int j = 0; j < FIT_NP; j++)
+            R->cand[0][j] = el__fit_norm_param(model, j, R->init[j], cx, cy, sc);
+        R->ncand = 1;
+        if (R->caller_twice) {
+            memcpy(R->cand[1], R->cand[0], sizeof R->cand[0]);
+            R->ncand = 2;
+        }
+    } else if (model == FIT_DISCRETE) {
+        el_discrete_params g[FIT_MAXCAND];
+        if ((st = el_guess_discrete(R->xy, R->n, g, FIT_MAXCAND, &R->ncand))) return st;
+        for (size_t c = 0; c < R->ncand; c++) {
+            const double p[FIT_NP] = {g[c].x0, g[c].y0, g[c].h, g[c].phi, g[c].z, g[c].q, g[c].k};
+            for (int j = 0; j < FIT_NP; j++)
+                R->cand[c][j] = el__fit_norm_param(model, j, p[j], cx, cy, sc);
+        }
+    } else {
+        el_smooth_params g[FIT_MAXCAND];
+        if ((st = el_guess_smooth(R->xy, R->n, o->param_mode, g, FIT_MAXCAND, &R->ncand)))
+            return st;
+        for (size_t c = 0; c < R->ncand; c++) {
+            const double p[FIT_NP] = {g[c].x0, g[c].y0, g[c].phi, g[c].mu, g[c].k, g[c].q,
+                                      g[c].length};
+            for (int j = 0; j < FIT_NP; j++)
+                R->cand[c][j] = el__fit_norm_param(model, j, p[j], cx, cy, sc);
+        }
+    }
+    if ((size_t)o->max_candidates < R->ncand) R->ncand = (size_t)o->max_candidates;
+    return EL_OK;
+}
+
+/* The noise figures of the stopping rule: rms per point of both coordinates; a distance to
+ * the curve sees the normal part, 1/sqrt(2) (120 sparse uneven noisy sets: 14 -> 12 worse
+ * than the best basin by > 1 %). Constrained fits keep the plain figure: the rule cannot
+ * know their constraints' cost in rms (278 constrained fit_set.py fits: no rms changed by
+ * > 1e-8, 15 % more candidates, one 4 -> 323 ms); the unconstrained start
+ * (el__fit_unconstrained_start) is tried while above the data's figure.
+ * Smooth: a guess whose fit from the paired start ends this far above the noise
+ * (ob.f_direct) is fitted from its own feet too (fit_candidate.c; measured: from 3 to 10 x
+ * the noise figure, the clustered exact points there reach 4e-14, a sparse uneven loop of
+ * 15 points (test_fit_basin.c) keeps its basin). A free fit of fewer than
+ * FIT_SKETCH_POINTS unevenly spaced points always: the noise figure of a few points spread
+ * along a curve holds its bending (6 points exactly on an elastica, 5 close together and
+ * one far: 3.1e-3, the fit from the paired start 2.3e-3, from the guess's feet 2e-13;
+ * bench_fit_sparse.py's 1100 fits of 6-59 points: no count changed, the free fits' median
+ * time the same). Evenly spaced points' chord fractions are their places: a keyline's
+ * resampled sides (~20-50 vertices) took 1.9 ms instead of 1.1 for the same fits. */
+static void noise_rule(fit_run_state *R)
+{
+    R->noise_rms = el__fit_noise_rms(R->xy, R->n, R->sc);
+    R->data_noise = R->noise_rms * (R->kind == FIT_ORTHOGONAL ? 0.70710678118654752 : 1.0);
+    R->noise = R->o.constraints ? el__fit_noise_plain(R->xy, R->n, R->sc) : R->data_noise;
+    if (R->kind == FIT_ORTHOGONAL)
+        R->ob.f_direct = R->n < FIT_SKETCH_POINTS && !R->o.constraints &&
+                                 !el__fit_evenly_spaced(R->xy, R->n)
+                             ? 0.0 : 0.5 * (5.0 * R->noise) * (5.0 * R->noise);   /* rms^2 / 2 */
+}
+
+/* Which further starts the run may take, and which fits Ipopt polishes. */
+static void start_rules(fit_run_state *R)
+{
+    const el_fit_options *o = &R->o;
+    const int need_ipopt = R->need_ipopt, lm_only = R->lm_only, flags = R->flags;
+    /* The further starts (fit_restart.c) where the fit needs no Ipopt rows: with them each
+     * run is Ipopt's, ~1.5 ms an iteration (a sparse discrete fit with a start tangent took
+     * 1.8 s with them). With rows, a smooth sketch's too (fewer than FIT_SKETCH_POINTS
+     * points; the caller's fit, not one run inside another), whatever its noise figure, when
+     * its free fit is below FREE_GAIN of the best constrained one's objective: a G1-G1 fit of
+     * 6 points exactly on an elastica, whose constraints are its own, ended on a figure-eight
+     * 11 times as long, rms 0.096 where the free fit has 2e-11; one of 7 points on a
+     * near-straight curve, turning by 721 degrees at 6.9 x its true curve's rms
+     * (bench_fit_sparse: no count higher, G1-G1 and G2-G1 fits above their true curve's fit
+     * 1 -> 0 and 2 -> 1; median time of a G1-G1 sketch 4.1 -> 4.9 ms, 7.1 without FREE_GAIN.
+     * Not discrete: its fits there were not worse, and its rows' runs cost three times as
+     * much) */
+    R->sketch_rows = need_ipopt && R->n < FIT_SKETCH_POINTS && R->model == FIT_SMOOTH &&
+                     !(flags & FIT_RUN_INNER);
+    R->free_start = o->constraints && (!need_ipopt || R->sketch_rows) && !o->use_initial &&
+                    !lm_only;
+    /* a discrete fit with rows, a held start state or both ends held: the smooth fit's curve
+     * (el__fit_smooth_start) as a start, fitted from where it is (no held start's
+     * continuation), where nothing holds the smooth fit's parameters to other meanings (fixed
+     * values, bounds, the signed k range; with rows, not for L-BFGS); the first but with held
+     * ends (el__fit_starts) */
+    R->smooth_start = R->model == FIT_DISCRETE && (need_ipopt || R->ends_chart || R->staged) &&
+                      !o->use_initial && !lm_only && (!o->limited_memory || !need_ipopt) &&
+                      !(o->constraints & EL_CONSTRAIN_K) && !(flags & FIT_RUN_ENDS_HELD);
+    /* the caller's (o holds a start point in x0, y0) */
+    for (int j = 0; j < FIT_NP && R->smooth_start; j++)
+        if (R->opt->fixed[j] || isfinite(R->opt->lower[j]) || isfinite(R->opt->upper[j]))
+            R->smooth_start = 0;
+    R->free_ci = (size_t)-1;
+    /* without rows or bounds, Ipopt polishes only in el__fit_fallback's run (FIT_RUN_POLISH):
+     * the fit kept, when Levenberg-Marquardt leaves it uncertified, not every guess and
+     * refit so left. Each polish cost ~1.3 ms an iteration, up to max_iter, and crept along
+     * the valley where Levenberg-Marquardt had: measured on 2 x 150 sparse uneven noisy
+     * sketches (bench_fit_sparse.py's generator, seeds 6 and 7), both models, free: 37
+     * polishes in 15 fits, none certified, 8.9 s of the 9.8 s CPU of the 600 fits; without
+     * them every rms the same to 1 %, every fit certified, 0.8 s. The 504-curve suite:
+     * success the same, every rms the same to 1e-3. With bounds each guess is polished as
+     * before: Levenberg-Marquardt creeps towards an active bound, where Ipopt stops (a k
+     * range excluding the points' k: a guess crept 200 iterations towards its end, and
+     * Ipopt from its point reached it) */
+    int bounded = 0;
+    for (int j = 0; j < R->map.nx; j++) bounded |= isfinite(R->xl[j]) || isfinite(R->xu[j]);
+    /* deferred: this fit's guesses and refits are not polished; its kept fit may be */
+    R->deferred = !lm_only && !need_ipopt && !bounded && !(flags & FIT_RUN_POLISH);
+    R->no_polish = lm_only || R->deferred;   /* with rows Ipopt runs whatever it is */
+    /* el__fit_fallback's run: Ipopt straight from the kept fit (the caller's start), its
+     * feet from its curve, as the polish of a guess was; its refits are not polished */
+    R->polish_run = (flags & FIT_RUN_POLISH) && !lm_only && !need_ipopt && o->use_initial;
+    R->refit_no_polish = R->no_polish || R->polish_run;
+    /* the caller's own start (el_fit_options.use_initial): fitted from its own feet, the
+     * nearest points of its curve, without the paired start, which pairs the points with
+     * their chord fractions and can lead away from it (measured: 6 points exactly on an
+     * elastica, 5 close together and one far: from the true curve rms 2.3e-3, an extra wave
+     * in the gap; from its feet 3e-16). The library's own reruns from a fit, and constrained
+     * fits (their held start moves the curve first), keep that start */
+    R->caller_start = o->use_initial && !(flags & FIT_RUN_INNER) && R->kind == FIT_ORTHOGONAL &&
+                      !o->constraints;
+}
+
+/* Room for m starts before the others (shift_starts), or the room given back. */
+static void shift_starts(fit_run_state *R, size_t m)
+{
+    memmove(R->cand[m], R->cand[0], R->ncand * sizeof R->cand[0]);
+}
+
+static void unshift_starts(fit_run_state *R, size_t m)
+{
+    memmove(R->cand[0], R->cand[m], R->ncand * sizeof R->cand[0]);
+}
+
+/* Held ends: the unconstrained fit's curve turned and scaled onto them is the first start.
+ * The guesses turned and scaled onto the ends can lie far from the points (a set of 23
+ * points near k = 1: all six at 0.24-1.7, two crawling to max_iter, 0.97 s; this start
+ * 0.0106 in 3 iterations), and the guesses' basin need not hold the best fit (smooth, 43
+ * points: rms 1.43 x the drawn curve's at the noise rule, 0.99 x so). */
+static int free_start_for_ends(fit_run_state *R)
+{
+    if (!(R->ends_chart && R->free_start)) return EL_OK;
+    shift_starts(R, 1);
+    const int fst = el__fit_unconstrained_start(R->model, R->xy, R->n, R->opt, R->cx, R->cy, R->sc,
+                                                HUGE_VAL, R->cand[0]);
+    if (fst == EL_ENOMEM) return fst;
+    if (fst == EL_OK) { R->free_ci = 0; R->ncand++; }
+    else unshift_starts(R, 1);
+    R->free_start = 0;
+    return EL_OK;
+}
+
+/* The natural batten (this run of the ends chart with the end curvature 0 too, a row): its
+ * fit is the family's member that fit_natural.c finds, taken as it is (certified along the
+ * family; its iterations the members evaluated), the guesses and Ipopt only where there is
+ * none. Measured on 100 of bench_fit_sparse.py's sketches (seed 5) pinned at their curve's
+ * ends with both curvatures 0, against the former path (this chart's and the start-state
+ * chart's fits by Ipopt from the guesses, the lower kept): fits that stray from their points
+ * 38 -> 6 (their loops and snakes had the lower rms of 27), median CPU 188 -> 32 ms, the
+ * slowest 1.85 -> 0.06 s, none uncertified.
+ * Discrete: the smooth natural batten's curve (el__fit_smooth_start) meets the zero
+ * curvatures at both ends exactly (q = K, q + (n - 1) z = K + 2 m K) and the ends chart
+ * turns and scales it onto the pins: Ipopt from there, the guesses only where it fails.
+ * Measured on the same 100 sketches against the former path (both charts' fits from the
+ * guesses, the lower kept): fits that stray 52 -> 8 (the lower rms of 36 former fits came
+ * from loops wound across the points), median CPU 352 -> 32 ms, the slowest 2.56 -> 0.15 s,
+ * none uncertified. */
+static int natural_start(fit_run_state *R)
+{
+    R->natural_ci = (size_t)-1;
+    R->natural_ok = R->natural_evals = 0;
+    if (!(R->natural && R->ends_chart && (R->model == FIT_DISCRETE || R->ob.rest))) return EL_OK;
+    shift_starts(R, 1);
+    const int nst = R->model == FIT_SMOOTH
+                  ? el__fit_natural_fit(&R->ob, R->noise_rms, R->cand[0], &R->natural_ok,
+                                        &R->natural_evals)
+                  : el__fit_smooth_start(R->xy, R->n, R->opt, FIT_RUN_NO_CONJUGATE, R->cx, R->cy,
+                                         R->sc, R->cand[0]);
+    if (nst == EL_ENOMEM) return nst;
+    if (nst == EL_OK) { R->natural_ci = 0; R->ncand++; }
+    else unshift_starts(R, 1);
+    return EL_OK;
+}
+
+/* A discrete fit's smooth start first. The guesses' fits with a held start tangent or rows
+ * end far from the points (a scribble of 888 self-crossings, 25 x the data's length, at the
+ * lowest objective: its points' distances are searched near their own vertices), or at a
+ * length of 10 for points spanning 5, even from the free fit; from the smooth fit's curve,
+ * 0.0205 at once, as the smooth model's (300 uneven points of an elliptic arc, true start
+ * point and tangent, QA). With rows each guess crept to 2400-4500 Ipopt iterations (2000
+ * points: 26 s). */
+static int smooth_start_first(fit_run_state *R)
+{
+    R->smooth_ci = (size_t)-1;
+    if (!(R->smooth_start && !R->ends_chart)) return EL_OK;
+    shift_starts(R, 1);
+    const int sst = el__fit_smooth_start(R->xy, R->n, R->opt, FIT_RUN_NO_CONJUGATE, R->cx, R->cy,
+                                         R->sc, R->cand[0]);
+    if (sst == EL_ENOMEM) return sst;
+    if (sst == EL_OK) { R->smooth_ci = 0; R->ncand++; }
+    else unshift_starts(R, 1);
+    R->smooth_start = 0;
+    return EL_OK;
+}
+
+/* Held at an inflection (start tangent and zero curvature) with a tangent row at the other
+ * end: the held state's curves whose tangents lie on the guesses' side of the inflection's
+ * cannot reach a row beyond it, and Ipopt stopped off the row from every guess (sine scans
+ * held at both true tangents and a zero end curvature, the points reversed: EL_EDOM on 2 of
+ * 3, the nearly straight curve at 46 x the free fit's rms on the third, QA). First the held
+ * fit's conjugate, turning the other way round (el__fit_conjugate_start), fitted from where
+ * it is, its feet found again (el__fit_refeet): rms 0.100, 0.181, 0.182, where 150 random
+ * starts reach 0.100, 0.171, 0.117. */
+static int conjugate_starts(fit_run_state *R)
+{
+    const int inflection = EL_CONSTRAIN_START_TANGENT | EL_CONSTRAIN_START_CURVATURE;
+    R->nconj = 0;    /* the conjugate starts: the first nconj candidates */
+    if (!((R->held & inflection) == inflection && R->con.start_kappa == 0.0 &&
+          (R->con_rows.mask & EL_CONSTRAIN_END_TANGENT) && !R->o.use_initial && !R->lm_only &&
+          !(R->flags & (FIT_RUN_INNER | FIT_RUN_NO_CONJUGATE))))
+        return EL_OK;
+    const size_t m = R->model == FIT_SMOOTH ? 2 : 1;
+    shift_starts(R, m);
+    /* discrete: the smooth fit that has them, as its smooth start (without them: the
+     * smooth start's continuum limit of the conjugate was 1.75 on #10, this 0.207) */
+    int cst;
+    if (R->model == FIT_SMOOTH) {
+        double conj[2][FIT_NP];
+        cst = el__fit_conjugate_start(R->xy, R->n, R->opt, R->cx, R->cy, R->sc, conj);
+        if (cst == EL_OK) memcpy(R->cand, conj, sizeof conj);
+    } else {
+        cst = el__fit_smooth_start(R->xy, R->n, R->opt, 0, R->cx, R->cy, R->sc, R->cand[0]);
+    }
+    if (cst == EL_ENOMEM) return cst;
+    if (cst == EL_OK) { R->nconj = m; R->ncand += m; }
+    else unshift_starts(R, m);
+    return EL_OK;
+}
+
+/* Joined G1 at both ends (smooth, by distance, nothing else held or bounded): after the
+ * guesses, the members of the Hermite families of those ends nearest the points
+ * (fit_g1_family.c, up to FIT_G1_STARTS: of other families, and one that follows them)
+ * whose objective is below MEMBER_GAIN x the kept fit's (any, where that does not meet the
+ * constraints), each fitted by Ipopt straight from its own feet (the guesses' path,
+ * Levenberg-Marquardt first, where that run does not meet them): a second pass of the
+ * candidates. Measured on 300 sketches of 5-22 points clustered along 10-40 % of a curve
+ * (0-0.5 % noise, 0-2 points elsewhere, its ends and tangents): fits above 1.01 x their
+ * true curve's rms 19 -> 1 (at up to 28 x before), none worse by 1 %, one EL_EDOM fitted;
+ * median CPU 10.7 -> 14.7 ms; bench_fit_sparse.py's G1-G1 sets 1 -> 0 above their true
+ * curve, median 4.4 -> 9.5 ms (the scan's 19 tension solves, their members' distances, up
+ * to 3 Ipopt runs). Fitted among the guesses instead, the members cost 2-4 x the median and
+ * their fits ended in other basins where a guess's reached the true curve's. */
+static void family_rule(fit_run_state *R)
+{
+    const el_fit_options *o = &R->o;
+    const int both = EL_CONSTRAIN_START_POINT | EL_CONSTRAIN_END_POINT;
+    int g1_only = R->model == FIT_SMOOTH && R->kind == FIT_ORTHOGONAL && R->ob.rest &&
+                  !o->use_initial && !R->lm_only && !(R->flags & FIT_RUN_INNER) &&
+                  o->constraints == (both | EL_CONSTRAIN_START_TANGENT | EL_CONSTRAIN_END_TANGENT);
+    for (int j = 0; j < FIT_NP && g1_only; j++)
+        if ((o->fixed[j] && j > 1) || isfinite(R->lo[j]) || isfinite(R->hi[j])) g1_only = 0;
+    R->nfamily = 0;     /* the family members' pass: its candidates are those */
+    R->family_pass = g1_only;
+    R->family_won = R->kept_last = 0;
+}
+
+int el__fit_starts(fit_run_state *R)
+{
+    int st;
+    if ((st = initial_guesses(R))) return st;
+    noise_rule(R);
+    memset(&R->best, 0, sizeof R->best);
+    R->best.f = HUGE_VAL;
+    R->best.status = EL_ENOCONV;
+    R->best_strays = -1;    /* best strays from its points (el__fit_strays_at), once known */
+    R->best_loops = -1;     /* best crosses itself (el__fit_loops), once known */
+    R->wander_kept = 0;     /* keep_the_better (or a sketch's) kept a fit that does not wander */
+    R->best_meets = 0;      /* with rows: best meets the constraints */
+    memcpy(R->best_init, R->cand[0], sizeof R->best_init);
+    R->iters = R->tried = R->last_is_best = R->ipopt_spent = 0;   /* Ipopt runs to max_iter */
+    start_rules(R);
+    if ((st = free_start_for_ends(R)) || (st = natural_start(R)) || (st = smooth_start_first(R)) ||
+        (st = conjugate_starts(R)))
+        return st;
+    family_rule(R);
+    return EL_OK;
+}
+
+/* ------------------------------------------------------------ each start fitted */
+
+/* What the candidate loop does next: go on with this start, skip to the next, stop. */
+enum { GO_ON, GO_SKIP, GO_STOP };
+
+/* One start's fit: r, from the parameters p0 (normalised, its fixed values set);
+ * feet_stale: ob's feet are not r's; strays: r strays from its points (-1: not known);
+ * meets: r meets the constraints (with rows, or the unconstrained start). */
+typedef struct fit_trial {
+    fit_candidate r;
+    double p0[FIT_NP];
+    int feet_stale, strays, meets;
+} fit_trial;
+
+/* The slot after the guesses (every guess far from the noise): one more start, the
+ * unconstrained fit's curve first, then the smooth fit's; *go GO_SKIP where that gave none
+ * and the other may, GO_STOP where none is left. */
+static int add_last_start(fit_run_state *R, int *go)
+{
+    const int use_free = R->free_start;
+    double *slot = R->cand[R->ncand];
+    const double f_below = (R->sketch_rows ? FREE_GAIN : 0.99) * R->best.f;
+    const int fst = use_free
+                  ? el__fit_unconstrained_start(R->model, R->xy, R->n, R->opt, R->cx, R->cy, R->sc,
+                                                f_below, slot)
+                  : el__fit_smooth_start(R->xy, R->n, R->opt, FIT_RUN_NO_CONJUGATE, R->cx, R->cy,
+                                         R->sc, slot);
+    if (fst == EL_ENOMEM) return fst;
+    if (use_free) R->free_start = 0; else R->smooth_start = 0;
+    *go = GO_ON;
+    if (fst) {
+        *go = R->smooth_start ? GO_SKIP : GO_STOP;    /* the smooth start in this slot */
+        return EL_OK;
+    }
+    if (use_free) R->free_ci = R->ncand; else R->smooth_ci = R->ncand;
+    R->ncand++;
+    return EL_OK;
+}
+
+/* A family member whose Ipopt run did not meet the rows (6 points exactly on a curve: to
+ * max_iter at a minimum it could not certify): from it as from a guess,
+ * Levenberg-Marquardt first, kept when that meets them. */
+static int member_as_guess(fit_run_state *R, fit_trial *tr, const double *x0)
+{
+    fit_objective *ob = &R->ob;
+    if (el__fit_meets(ob, &R->map, &R->con, tr->r.x, R->lo, R->hi, R->tmp) ||
+        el__fit_feet_start(ob, x0) != EL_OK)
+        return EL_OK;
+    fit_candidate rb;
+    int st = el__fit_solve_candidate(ob, &R->o, &R->con_rows, R->xl, R->xu, R->need_ipopt,
+                                     R->no_polish, x0, R->best.f, &rb, R->tmp, 0, 1);
+    if (st) return st;
+    rb.iters += tr->r.iters;
+    if (el__fit_meets(ob, &R->map, &R->con, rb.x, R->lo, R->hi, R->tmp)) tr->r = rb;
+    else tr->r.iters = rb.iters;
+    return EL_OK;
+}
+
+/* Smooth: where the continuation's fit is above the noise or strays from the points, the
+ * guess with the held start state set to the constraints directly is fitted too, kept when
+ * lower (with rows: when it meets them and is lower, or the continuation's does not). The
+ * continuation follows the free fit's basin, which need not hold the constrained one
+ * (measured on 2 x 150 sparse noisy sets of each of 7 kinds, from 6 to 59 points: a
+ * G2-start fit, rms 0.039 where its true curve has 0.0117; four G2-start G1-end sets
+ * EL_EDOM that their true curves meet; a G1-G1 set along a loop of length 2.9 at 2.1 x its
+ * true curve's rms, another fit 5 x; none worse. Straying: a start curvature alone, a loop
+ * of length 3.1 at rms 0.0217 within the noise rule, 0.0095 directly). */
+static int direct_held_start(fit_run_state *R, fit_trial *tr, double *x0)
+{
+    fit_objective *ob = &R->ob;
+    const int need_ipopt = R->need_ipopt;
+    fit_candidate *r = &tr->r, rd;
+    first_feet(ob, R->t, tr->p0[6]);
+    el__fit_map_inverse(&R->map, tr->p0, x0);
+    ob->have_base = 0;
+    int st = el__fit_solve_candidate(ob, &R->o, &R->con_rows, R->xl, R->xu, need_ipopt,
+                                     R->no_polish, x0, R->best.f, &rd, R->tmp, 0, 0);
+    if (st) return st;
+    rd.iters += r->iters;
+    const int r_meets = !need_ipopt || el__fit_meets(ob, &R->map, &R->con, r->x, R->lo, R->hi,
+                                                     R->tmp);
+    const int rd_meets = !need_ipopt || el__fit_meets(ob, &R->map, &R->con, rd.x, R->lo, R->hi,
+                                                      R->tmp);
+    const int direct = rd_meets && (!r_meets || rd.f < r->f);
+    R->ipopt_spent += el__fit_ran_out(direct ? r : &rd);   /* the run let go; the kept one later */
+    if (direct) { *r = rd; tr->strays = -1; }
+    else { r->iters = rd.iters; tr->feet_stale = 1; }     /* ob.s: the direct fit's feet */
+    return EL_OK;
+}
+
+/* A start fitted (fit_candidate.c) from x0: a held start state reached by continuation
+ * first (el__fit_held_start) unless the start is a curve's own; a conjugate start's feet
+ * found again (el__fit_refeet); then member_as_guess and direct_held_start. */
+static int solve_start(fit_run_state *R, size_t ci, fit_trial *tr, double *x0, int from_smooth,
+                       int from_curve)
+{
+    fit_objective *ob = &R->ob;
+    fit_candidate *r = &tr->r;
+    int pre = 0, st;
+    if (R->staged && !R->polish_run && !from_smooth && !from_curve) {
+        pre = el__fit_held_start(ob, &R->map, &R->free_map, R->staged, &R->con, R->o.max_iter,
+                                 tr->p0, x0);
+        first_feet(ob, R->t, tr->p0[6]);      /* again (the stages moved them) */
+    }
+    const int near = (R->staged && pre > 0) || R->polish_run ||
+                     (from_smooth && ci == R->natural_ci) || ci < R->nfamily || ci < R->nconj;
+    if ((st = el__fit_solve_candidate(ob, &R->o, &R->con_rows, R->xl, R->xu, R->need_ipopt,
+                                      R->no_polish, x0, R->best.f, r, R->tmp, near,
+                                      R->polish_run || from_curve)))
+        return st;
+    r->iters += pre;
+    if (ci < R->nconj && (st = el__fit_refeet(ob, &R->o, &R->con_rows, &R->con, R->lo, R->hi, R->xl,
+                                              R->xu, R->no_polish, r, &tr->feet_stale, R->tmp)))
+        return st;
+    if (ci < R->nfamily && (st = member_as_guess(R, tr, x0))) return st;
+    if (R->staged && !R->polish_run && !from_curve && R->model == FIT_SMOOTH &&
+        (!(sqrt(2.0 * r->f) <= 1.5 * R->noise && r->status == EL_OK) ||
+         (ob->rest &&
+          (tr->strays = el__fit_strays_at(ob, r->x, R->noise_rms, R->d, R->fs, R->tmp)))))
+        return direct_held_start(R, tr, x0);
+    return EL_OK;
+}
+
+/* Start ci fitted into *tr: its fixed parameters set (the discrete u(s) kept where h is
+ * fixed), turned and scaled onto held ends; *go GO_SKIP where it cannot be evaluated. */
+static int fit_one_start(fit_run_state *R, size_t ci, fit_trial *tr, int *go)
+{
+    fit_objective *ob = &R->ob;
+    const fit_map *map = &R->map;
+    double *p0 = tr->p0, x0[FIT_MAXX];
+    *go = GO_SKIP;
+    memcpy(p0, R->cand[ci], sizeof tr->p0);
+    for (int j = 0; j < FIT_NP; j++) {
+        if (!R->o.fixed[j]) continue;
+        if (R->model == FIT_DISCRETE && j == 2 && !R->o.fixed[4]) p0[4] *= map->fixed[2] / p0[2];
+        p0[j] = map->fixed[j];
+    }
+    if (el__all_finite(p0, FIT_NP)) return EL_OK;
+    el__fit_map_inverse(map, p0, x0);
+    if (R->ends_chart) {       /* the guess turned and scaled onto the ends (its feet too) */
+        double ve[2][FIT_NP];
+        if (el__fit_map_eval(map, x0, ve, NULL)) return EL_OK;
+        memcpy(p0, ve[0], sizeof tr->p0);
+    }
+    first_feet(ob, R->t, p0[6]);
+    /* the natural batten's member */
+    const int family = ci == R->natural_ci && R->model == FIT_SMOOTH;
+    /* the smooth fit's curve */
+    const int from_smooth = (ci == R->natural_ci || ci == R->smooth_ci) && R->model == FIT_DISCRETE;
+    /* a curve's own start (the caller's, or a sketch's free fit with rows): from its feet,
+     * neither the held start's continuation nor the paired start, which moved the free fit
+     * above from its curve onto the same figure-eight */
+    const int from_curve = R->caller_start || (R->caller_twice && ci == 0) || ci < R->nfamily ||
+                           ci < R->nconj ||
+                           (R->sketch_rows && ci == R->free_ci && R->kind == FIT_ORTHOGONAL);
+    if ((R->polish_run || from_curve || family) && ob->rest && el__fit_feet_start(ob, x0))
+        return EL_OK;
+    tr->feet_stale = 0;
+    tr->strays = -1;
+    if (map->nx == 0 || family) {
+        /* nothing to fit, or the natural batten's member (its fit, certified along the
+         * family where Brent's minimiser converged: fit_natural.c) */
+        fit_value fv;
+        if (el__fit_objective_eval(ob, x0, 0, &fv)) return EL_OK;
+        memset(&tr->r, 0, sizeof tr->r);
+        memcpy(tr->r.x, x0, sizeof tr->r.x);
+        tr->r.f = fv.f;
+        tr->r.status = !family || R->natural_ok ? EL_OK : EL_ENOCONV;
+        tr->r.iters = family ? R->natural_evals : 0;
+    } else {
+        int st = solve_start(R, ci, tr, x0, from_smooth, from_curve);
+        if (st) return st;
+    }
+    *go = GO_ON;
+    return EL_OK;
+}
+
+/* ------------------------------------------------------------ the choice */
+
+/* Start ci's fit counted, and kept (R->best) where it is the better.
+ * The unconstrained start only where its fit meets the constraints (where Ipopt could not,
+ * its f is that of the free fit); with rows, a fit that meets them before one that does
+ * not, whatever their f (measured: a discrete G1-G1 sketch of 7 points, whose first guess
+ * ended at Ipopt's max_iter off the end tangent below the f of the three that met it,
+ * failed with EL_EDOM).
+ * A constrained fit that crosses itself or strays from its points (el__fit_wanders) does not
+ * replace one that does neither (a G1 family member: 7 noisy points along a near-straight
+ * curve, a loop in a gap between them, rms 0.84 x the kept fit's, within el__fit_stray's
+ * allowance for a curved arc; el__fit_follow_points' refit of the hull profile above from
+ * the paired curve: its held start's loop below its feet's fit). Not the other way round:
+ * a fit pinned away from clustered points strays by that measure (test_fit_basin.c's
+ * clustered G1 sketch: 28 x its true curve's rms); but one that crosses itself gives way
+ * to one that does not (el__fit_fair_over_loop). */
+static void keep_the_better(fit_run_state *R, size_t ci, fit_trial *tr)
+{
+    fit_objective *ob = &R->ob;
+    const fit_candidate *r = &tr->r;
+    const int need_ipopt = R->need_ipopt, constrained = R->o.constraints && !R->lm_only;
+    R->tried++;
+    R->iters += r->iters;
+    const int r_meets = (need_ipopt || ci == R->free_ci) &&
+                        el__fit_meets(ob, &R->map, &R->con, r->x, R->lo, R->hi, R->tmp);
+    tr->meets = r_meets;
+    R->last_is_best = ci == R->free_ci ? r_meets && r->f < R->best.f
+                    : need_ipopt ? (r_meets && !R->best_meets) ||
+                                       (r_meets == R->best_meets && r->f < R->best.f)
+                    : r->f < R->best.f;
+    if (R->last_is_best && constrained && isfinite(R->best.f) && (R->best_meets || !need_ipopt) &&
+        el__fit_wanders(ob, r->x, &tr->strays, R->noise_rms, R->d, R->fs, R->tmp)) {
+        R->last_is_best = el__fit_wanders(ob, R->best.x, &R->best_strays, R->noise_rms, R->d,
+                                          R->fs, R->tmp);
+        R->wander_kept |= !R->last_is_best;
+    } else if (!R->last_is_best && constrained && (need_ipopt || ci == R->free_ci ? r_meets : 1) &&
+               el__fit_fair_over_loop(ob, r->x, r->f, &tr->strays, R->best.x, R->best.f,
+                                      &R->best_loops, R->noise_rms, R->d, R->fs, R->tmp)) {
+        R->last_is_best = R->wander_kept = 1;
+    }
+    if (R->last_is_best) {
+        R->best = *r;
+        R->best_strays = tr->strays;
+        R->best_meets = r_meets;
+        memcpy(R->best_init, tr->p0, sizeof tr->p0);
+        R->best_loops = -1;
+        R->family_won |= ci < R->nfamily;
+    }
+    R->last_is_best &= !tr->feet_stale;
+}
+
+/* Paired by the spacing test alone, the smooth start's polygon certified and kept: where
+ * its points slip along it (el__fit_slips), the guesses fit a pairing that el__fit_unpaired
+ * replaces (2000 uneven points, G1 at both ends: three guesses' continuations crept
+ * 2400-4500 iterations each, 26 s, before its refit by distance from this one). */
+static int smooth_start_slips(fit_run_state *R)
+{
+    double vs[2][FIT_NP], s2 = 0.0;
+    if (el__fit_map_eval(&R->map, R->best.x, vs, NULL) != EL_OK ||
+        el__fit_curve_distances(&R->ob, R->best.x, vs, 0, R->d, R->fs, R->tmp) != EL_OK)
+        return 0;
+    for (size_t i = 0; i < R->n; i++) s2 += R->d[i] * R->d[i];
+    return el__fit_slips(R->n, vs[0][2], sqrt(s2 / (double)R->n), R->fs);
+}
+
+/* Whether the candidates stop after start ci's fit (GO_STOP), or go on (GO_ON; *ci moved
+ * to the last guess where only the further starts are left). */
+static int stop_rule(fit_run_state *R, size_t *ci, const fit_trial *tr)
+{
+    const int need_ipopt = R->need_ipopt;
+    const fit_candidate *best = &R->best;
+    /* the natural batten's member meets the rows: every fit that does is a member of
+     * the family already searched */
+    if (*ci == R->natural_ci && tr->meets) return GO_STOP;
+    if (*ci == R->smooth_ci && R->last_is_best && best->status == EL_OK && R->kind == FIT_PAIRED &&
+        R->o.distance == EL_DISTANCE_AUTO && !(R->flags & FIT_RUN_INNER) &&
+        (R->best_meets || !need_ipopt) && smooth_start_slips(R))
+        return GO_STOP;
+    const double rms = sqrt(2.0 * best->f);
+    if (rms <= 1e-10 || R->map.nx == 0) return GO_STOP;
+    if (*ci < R->nfamily) return GO_ON;    /* every family member fitted */
+    /* constraint rows: Ipopt's runs that end at max_iter, at most two over the guesses once
+     * one has met the constraints (converged, or the penalty's point); while none has, no
+     * refit after one (the fuzzer's 11 points with end constraints: five runs to max_iter,
+     * 1.3 s; a discrete sketch of 45 points pinned at both ends, every guess to max_iter,
+     * 3.1 s) */
+    if (need_ipopt && (R->ipopt_spent += el__fit_ran_out(&tr->r)) >= 2 &&
+        (best->status == EL_OK || R->best_meets)) {
+        if (!R->smooth_start && !(R->free_start && R->sketch_rows)) return GO_STOP;
+        /* no more guesses; the smooth fit's (or a sketch's free) start next */
+        *ci = R->ncand - 1;
+        return GO_ON;
+    }
+    /* with rows there is no follow_points refit at the end: a fit that strays from its
+     * points (a loop where there is none) is no reason to stop (measured on the sets of
+     * direct_held_start: with the direct start but without this check, a G1-G1 fit of 41
+     * points stopped on a loop of length 3.0 at rms 0.0133, where the next guess reaches
+     * 0.0079 and the true curve, length 1, has 0.0081) */
+    if (need_ipopt && R->kind == FIT_ORTHOGONAL && rms <= 1.5 * R->noise && best->status == EL_OK &&
+        R->best_strays < 0)
+        R->best_strays = el__fit_strays_at(&R->ob, best->x, R->noise_rms, R->d, R->fs, R->tmp);
+    /* a fit where Levenberg-Marquardt stalled uncertified (no step lowers f), whose polish
+     * is deferred (el__fit_fallback after the run), stops too: the polish made it EL_OK here
+     * before (measured: a smooth fit with a start tangent of 45 points, the first guess
+     * stalled at rms 0.68 x the noise figure; without this all five guesses and the
+     * unconstrained start ran, 14 -> 56 ms, for the same fit). Not one that crawled to
+     * max_iter: the next guesses can reach a lower basin (a discrete sketch of 41 points:
+     * 0.0072 by the third guess, where the first crawled to 0.016 within 1.5 x the figure) */
+    const int settled = best->status == EL_OK || (R->deferred && best->status == EL_ENOCONV);
+    if (rms <= 1.5 * R->noise && settled &&
+        !(need_ipopt && R->kind == FIT_ORTHOGONAL && R->best_strays > 0)) {
+        /* held ends: the discrete fit's smooth start too, while above the data's own
+         * figure (the constrained fits' plain noise figure is high on sparse curved
+         * points: a set of 41 points whose polygon ended at 2.7 x its curve's rms, length
+         * 1.22 for 1, within 1.5 of it; the smooth start reaches 0.93 x) */
+        const int more = (R->free_start || (R->smooth_start && R->ends_chart)) &&
+                         (rms > 1.5 * R->data_noise || (R->free_start && R->sketch_rows));
+        if (!more) return GO_STOP;
+        *ci = R->ncand - 1;   /* no more guesses; the unconstrained start next */
+    }
+    return GO_ON;
+}
+
+/* One pass over the starts cand[0..ncand) and then the last one (add_last_start). */
+static int candidate_pass(fit_run_state *R)
+{
+    for (size_t ci = 0; ci < R->ncand + (R->free_start || R->smooth_start); ci++) {
+        int go = GO_ON, st;
+        if (ci == R->ncand) {
+            if ((st = add_last_start(R, &go))) return st;
+            if (go == GO_STOP) break;
+            if (go == GO_SKIP) { ci--; continue; }
+        }
+        fit_trial tr;
+        if ((st = fit_one_start(R, ci, &tr, &go))) return st;
+        if (go == GO_SKIP) continue;
+        keep_the_better(R, ci, &tr);
+        if (stop_rule(R, &ci, &tr) == GO_STOP) break;
+    }
+    return EL_OK;
+}
+
+/* The G1 family members' pass (family_rule): once, after the guesses, the kept fit's feet
+ * saved; the members (el__fit_g1_family_start) as the only starts, R->nfamily of them. */
+static int g1_family_starts(fit_run_state *R)
+{
+    R->family_pass = 0;
+    if (!(R->kept_feet = malloc(sizeof(double) * R->n))) return EL_ENOMEM;
+    memcpy(R->kept_feet, R->ob.s, sizeof(double) * R->n);
+    R->kept_last = R->last_is_best;
+    int nf = FIT_G1_STARTS;
+    const int gst = el__fit_g1_family_start(&R->ob, &R->con, R->noise_rms,
+                                            R->best_meets ? MEMBER_GAIN * R->best.f : HUGE_VAL,
+                                            R->cand, &nf);
+    if (gst == EL_ENOMEM) return gst;
+    R->nfamily = gst ? 0 : (size_t)nf;
+    if (R->nfamily > 0) {
+        R->ncand = R->nfamily;
+        R->free_start = R->smooth_start = 0;
+        R->free_ci = R->natural_ci = (size_t)-1;
+        R->nconj = 0;
+    }
+    return EL_OK;
+}
+
+int el__fit_choose(fit_run_state *R)
+{
+    int st;
+    for (;;) {
+        if ((st = candidate_pass(R))) return st;
+        if (!R->family_pass) break;
+        if ((st = g1_family_starts(R))) return st;
+        if (R->nfamily == 0) break;
+    }
+    if (R->kept_feet && !R->family_won) {     /* the kept fit as the guesses left it */
+        memcpy(R->ob.s, R->kept_feet, sizeof(double) * R->n);
+        R->ob.have_base = 0;
+        R->ob.rest_ok = 0;
+        R->last_is_best = R->kept_last;
+    }
+    if (!isfinite(R->best.f)) {      /* no guess could be evaluated: the first one, unfitted */
+        R->best.status = EL_ENOCONV;
+        el__fit_map_inverse(&R->map, R->best_init, R->best.x);
+    }
+    return EL_OK;
+}
