@@ -28,18 +28,21 @@ class InputError(ValueError):
     """Bad user input (a file that is missing, malformed, or holds unusable points)."""
 
 
-# a number written with a decimal comma (1,5 or -0,25e3): semicolon- or tab-separated files
-# from spreadsheets and digitisers in many locales
+# a number written with a decimal comma (1,5 or -0,25e3): semicolon-, tab- or space-separated
+# files, or quoted between commas, from spreadsheets and digitisers in many locales
 _DECIMAL_COMMA = re.compile(r"[+-]?\d*,\d+(?:[eE][+-]?\d+)?")
+# a whole number: what unquoted decimal commas between commas leave of each half
+_INTEGER = re.compile(r"[+-]?\d+")
 # a header's coordinate names: x, Y, "z [mm]", "x (mm)"
 _AXIS_NAME = re.compile(r"\s*([xyzXYZ])\s*(?:[\[(].*[\])])?\s*")
 
 
 def _parse_text(text: str, name: str) -> np.ndarray:
-    """Rows of numbers separated by semicolons or tabs (with decimal commas or points),
-    commas, or spaces. Blank lines and lines starting with '#' are skipped; one header line
-    of non-numbers (e.g. ``x,y,z``) is allowed as the first data line. Rows of more than 3
-    columns (a scanner's point ids, normals, intensities; a survey's point names) are read
+    """Rows of numbers separated by semicolons, tabs or spaces (with decimal commas or
+    points), or commas (decimal commas quoted, as spreadsheets write them: "1,5","0,25").
+    Blank lines and lines starting with '#' are skipped; one header line of non-numbers
+    (e.g. ``x,y,z``) is allowed as the first data line. Rows of more than 3 columns (a
+    scanner's point ids, normals, intensities; a survey's point names) are read
     when the header names the coordinate columns ``x``, ``y`` and optionally ``z`` (units in
     brackets allowed); a header that names them picks them by name in any case ("id,x,y",
     "y,x", "name,x,y,z"), the other columns need not be numbers."""
@@ -50,48 +53,58 @@ def _parse_text(text: str, name: str) -> np.ndarray:
     delim = None
     if ";" in sample:
         delim = ";"
-    elif "," in sample and _tab_separated_decimal_commas(data_lines[:20]):
+    elif "," in sample and _decimal_commas_between(data_lines[:20], "\t"):
         delim = "\t"
-    elif "," in sample:
+    elif "," in sample and not _decimal_commas_between(data_lines[:20], None):
         delim = ","
+    # csv's quoting rules: a quoted field keeps its commas ("102,697" from a spreadsheet
+    # that writes decimal commas with ',' between the columns)
     reader = (csv.reader(_io.StringIO(text), delimiter=delim) if delim
               else (line.split() for line in text.splitlines()))
     for lineno, fields in enumerate(reader, start=1):
         fields = [f.strip() for f in fields if f.strip() != ""]
         if not fields or fields[0].startswith("#"):
             continue
-        if delim in (";", "\t"):
-            fields = [f.replace(",", ".") if _DECIMAL_COMMA.fullmatch(f) else f for f in fields]
+        # a field holding a comma is a decimal comma whatever the separator: a comma
+        # separator splits unquoted ones, and the others have no comma between columns
+        fields = [f.replace(",", ".") if _DECIMAL_COMMA.fullmatch(f) else f for f in fields]
         if not rows and header is None and not any(_is_number(f) for f in fields):
             header = fields            # a header line
             continue
         rows.append((lineno, fields))
     if not rows:
         raise InputError(f"{name}: no data rows")
+    # unquoted decimal commas between commas split each number in two (102,697,4,576)
+    whole = delim == "," and all(_INTEGER.fullmatch(f) for _, r in rows for f in r)
+    hint = ('; decimal commas? Between commas they must be quoted ("102,697","4,576"), '
+            "or the columns separated by semicolons") if whole else ""
     widths = {len(f) for _, f in rows}
     if len(widths) != 1:
-        raise InputError(f"{name}: rows have different numbers of columns {sorted(widths)}")
+        raise InputError(f"{name}: rows have different numbers of columns {sorted(widths)}{hint}")
     width = widths.pop()
     axes = [m.group(1).lower() if (m := _AXIS_NAME.fullmatch(h)) else None for h in header or []]
     named = len(axes) == width and "x" in axes and "y" in axes and all(axes.count(a) <= 1 for a in "xyz")
     cols = [axes.index(a) for a in "xyz" if a in axes] if named else list(range(width))
     out = np.empty((len(rows), len(cols)))
     for r, (lineno, fields) in enumerate(rows):
-        try:
-            out[r] = [float(fields[c]) for c in cols]
-        except ValueError:
-            raise InputError(f"{name}: line {lineno}: not a number in {','.join(fields)!r}") from None
+        bad = [fields[c] for c in cols if not _is_number(fields[c])]
+        if bad:
+            # the field itself: the fields joined again by commas showed a quoted field's
+            # commas as separators ('102,697,4,576' for "102,697","4,576": QA)
+            raise InputError(f"{name}: line {lineno}: not a number: {bad[0]!r}")
+        out[r] = [float(fields[c]) for c in cols]
     if not named and width > 3:
         raise InputError(f"{name}: {width} columns: name the coordinates x, y (and z) "
-                         "in a header line to read them from more columns, or give 2 or 3")
+                         f"in a header line to read them from more columns, or give 2 or 3{hint}")
     return out
 
 
-def _tab_separated_decimal_commas(lines) -> bool:
-    """Whether lines holding commas are tab-separated numbers with decimal commas (an
-    export as '1,5<TAB>0,25': QA, refused as 'not a number'): every line but a header splits
-    at tabs into numbers, some written with a decimal comma."""
-    rows = [[f.strip() for f in ln.split("\t") if f.strip()] for ln in lines]
+def _decimal_commas_between(lines, sep) -> bool:
+    """Whether lines holding commas are numbers with decimal commas separated by ``sep``
+    (tabs, or None: any whitespace; an export as '1,5<TAB>0,25' or '1,5 0,25': QA, refused
+    as 'not a number'): every line but a header splits at ``sep`` into numbers, some
+    written with a decimal comma."""
+    rows = [[f.strip() for f in ln.split(sep) if f.strip()] for ln in lines]
     rows = rows[1:] if rows and not any(map(_is_number, rows[0])) else rows
     return bool(rows) and all(len(r) > 1 for r in rows) and all(
         _is_number(f) or _DECIMAL_COMMA.fullmatch(f) for r in rows for f in r) and any(
@@ -110,8 +123,8 @@ def read_points(path: PathLike, min_points: int = 3) -> np.ndarray:
     """Read an (n, 2) or (n, 3) float64 array of points from ``path``.
 
     Formats: ``.npy`` (a numeric array of shape (n, 2) or (n, 3)), otherwise text
-    with comma, semicolon or tab (decimal commas allowed with both) or whitespace
-    separated columns,
+    with comma (decimal commas quoted), semicolon, tab or whitespace (decimal commas
+    allowed with these three) separated columns,
     ``#`` comments and an optional header line, which can pick the columns ``x``, ``y``,
     ``z`` out of more. Raises :class:`InputError` for a missing or unreadable file,
     malformed rows, a column count other than 2 or 3 without such a header, NaN/inf

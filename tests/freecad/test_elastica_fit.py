@@ -121,6 +121,18 @@ class FitInputsTest(unittest.TestCase):
         f = Fi.make(self.doc, [], csv_file=path, Model="smooth")
         self._fit_ok(f)
 
+    def test_csv_file_of_quoted_decimal_commas(self):
+        """A spreadsheet's export in a decimal-comma locale with ',' between the columns
+        quotes each number ("102,697","4,576"): read as two fields (refused as 'not a
+        number in '102,697,4,576'', QA)."""
+        path = S.temp_path(self, "quoted.csv")
+        with open(path, "w") as fh:
+            fh.write("x,y,z\n")
+            for v in G.to_3d(S.SKETCH_PLACEMENT, self.xy):
+                fh.write(f'"{v.x:.12f}","{v.y:.12f}","{v.z:.12f}"\n'.replace(".", ","))
+        f = Fi.make(self.doc, [], csv_file=path, Model="smooth")
+        self._fit_ok(f)
+
     def test_keyline_split_at_inflection_is_one_g2_bspline(self):
         """Issue 13 point 4: the keyline is ONE curve in the sketch, G2 at the joint,
         measured on the shape from both sides of the joint's knot."""

@@ -193,6 +193,34 @@ def test_read_points_as_scanners_and_spreadsheets_write_them(tmp_path):
         read_points(tmp_path / "names.csv")
 
 
+def test_read_points_with_quoted_or_spaced_decimal_commas(capsys, tmp_path):
+    """A spreadsheet's export with ',' between the columns quotes its decimal commas
+    ("102,697","4,576": csv's quoting rules keep them one field; refused as 'not a
+    number in '102,697,4,576'', the fields joined again, QA), and a space-separated export
+    writes them bare: both read, by read_points and by `elastica fit`. Unquoted decimal
+    commas between commas are ambiguous: refused, the message saying so; a field that is
+    no number is named as read."""
+    pts = np.array([[102.697, 4.576], [98.1, 15.2], [90.3, 25.9], [79.9, 35.1],
+                    [66.0, 43.3], [50.2, 49.6], [33.4, 53.4], [16.0, 55.2]])
+    files = {
+        "quoted.csv": "x,y\n" + "".join(f'"{x:.3f}","{y:.3f}"\n'.replace(".", ",") for x, y in pts),
+        "spaces.txt": "x y\n" + "".join(f"{x:.3f}  {y:.3f}\n".replace(".", ",") for x, y in pts),
+    }
+    for name, text in files.items():
+        (tmp_path / name).write_text(text)
+        np.testing.assert_array_equal(read_points(tmp_path / name), pts, err_msg=name)
+        r = cli(capsys, "fit", tmp_path / name, "--json", tmp_path / "f.json")
+        assert r.returncode == 0, (name, r.stderr)
+        assert json.loads((tmp_path / "f.json").read_text())["rms"] < 1.0, name
+    (tmp_path / "bare.csv").write_text("x,y\n" + "".join(f"{x:.3f},{y:.3f}\n".replace(".", ",")
+                                                          for x, y in pts))
+    with pytest.raises(InputError, match="decimal commas.* quoted"):
+        read_points(tmp_path / "bare.csv")
+    (tmp_path / "word.csv").write_text('x,y\n"1,5","0,25"\n"2,5",abc\n"3,5","1,0"\n')
+    with pytest.raises(InputError, match="line 3: not a number: 'abc'$"):
+        read_points(tmp_path / "word.csv")
+
+
 # ------------------------------------------------------------------ hermite
 
 def test_hermite_table_json_and_svg(capsys, tmp_path):
