@@ -1565,6 +1565,66 @@ class FitPointOrderTest(unittest.TestCase):
         self.assertLess(max(f.Shape.distToShape(Part.Vertex(p))[0] for p in drawn), 1e-3)
         self.assertLess(max(min((d - p).Length for p in drawn) for d in f.DataPoints), 1e-4)
 
+    # a fair arc of points from (6, 1.9) to (90, -1.2), and a lead-in line ending 6 mm
+    # before its left end (QA's)
+    ARC = [(6, 1.9), (14, 4.5), (27, 7.9), (33, 9.0), (51, 9.2), (60, 7.9), (77, 3.3),
+           (90, -1.2)]
+
+    def _lead_in(self, *more):
+        """A sketch of the lead-in line (Edge1) and the lines ``more`` ((x0, y0, x1, y1))."""
+        sk = self.doc.addObject("Sketcher::SketchObject", "Lines")
+        for x0, y0, x1, y1 in ((-40, -10, 0, 0),) + more:
+            sk.addGeometry(Part.LineSegment(App.Vector(x0, y0, 0), App.Vector(x1, y1, 0)), False)
+        self.doc.recompute()
+        return sk
+
+    def test_a_wire_or_file_drawn_from_its_other_end_faces_its_join_edge(self):
+        """A wire or a file of points drawn right to left, the lead-in line at the left
+        joined G1 as the Start tangent: the points are taken from the end nearer that edge,
+        as points without an order are (QA: a curve 3.6e-12 mm long, rms 53 mm, 'not
+        converged (best curve kept)', no error mark; the warning's 'join the edge's other
+        end' was 41 mm farther). The curve starts on the line's end and fits the points."""
+        sk = self._lead_in()
+        wire = self.doc.addObject("Part::Feature", "Wire")
+        wire.Shape = Part.makePolygon([App.Vector(x, y, 0) for x, y in self.ARC[::-1]])
+        self.doc.recompute()
+        for model in ("smooth", "discrete"):
+            for sources, csv in (([(wire, [])], ""), ([], self._csv(self.ARC[::-1]))):
+                what = (model, csv)
+                f = Fi.make(self.doc, sources, csv_file=csv, Model=model,
+                            StartTangent=(sk, ["Edge1"]), StartContinuity="G1")
+                self.doc.recompute()
+                self.assertIn("converged", f.Status, what)
+                self.assertFalse(f.Status.startswith("not"), what)
+                self.assertLess(travel_ends(f)[0][0].Length, 1e-9, what)      # on (0, 0)
+                self.assertLess((f.DataPoints[0] - App.Vector(6, 1.9, 0)).Length, 1e-9, what)
+                self.assertLess(f.Rms, 0.5, what)
+                self.assertGreater(f.Shape.Length, 80.0, what)
+
+    def test_a_fit_shrunk_to_nothing_is_refused(self):
+        """Start and end edges both by the points' left end, the start one joined G1: no
+        order of the points puts each edge by its end, and the fit shrank to a curve 6e-4
+        mm long for 84 mm of points, rms 53 mm, status converged (QA: 3.6e-12 mm, a shape
+        the 3D view could not mesh, which kept drawing the last curve). Refused, saying
+        which edge is the other end's; the last good curve and its figures are kept."""
+        sk = self._lead_in((-40, 20, 0, 5))
+        wire = self.doc.addObject("Part::Feature", "Wire")
+        wire.Shape = Part.makePolygon([App.Vector(x, y, 0) for x, y in self.ARC[::-1]])
+        self.doc.recompute()
+        f = Fi.make(self.doc, [(wire, [])], Model="smooth", StartTangent=(sk, ["Edge1"]),
+                    EndTangent=(sk, ["Edge2"]))
+        self.doc.recompute()
+        self.assertIn("converged", f.Status)
+        length, rms = f.Shape.Length, f.Rms
+        f.StartContinuity = "G1"
+        self.doc.recompute()
+        self.assertTrue(f.Status.startswith("error: the fit shrank to a curve"), f.Status)
+        self.assertIn("cannot be met along the points", f.Status)
+        self.assertIn("Start join G1: the edge leaves its joined end back along the points",
+                      f.Status)
+        self.assertIn("it lies nearer the points' end: pick it as End tangent", f.Status)
+        self.assertEqual((f.Shape.Length, f.Rms), (length, rms))
+
     def _csv(self, xy):
         path = S.temp_path(self, "points.csv")
         with open(path, "w") as fh:

@@ -120,9 +120,17 @@ def end_constraints(xy, plane, pin_start=False, pin_end=False, start_edge=None, 
         into = plane.Rotation.inverted().multVec(App.Vector(edge.tangentAt(u)) * (-1 if at_end else 1))
         ahead = into.x * forward[0] + into.y * forward[1]
         if ahead < 0 if where == "end" else ahead > 0:
+            # the joined end is the edge's nearer the points' own end: an edge nearer their
+            # other end is the other end's (QA: 'join the edge's other end' was no way out)
+            other = "end" if where == "start" else "start"
+            near = math.hypot(p.x - xy[-1 - i][0], p.y - xy[-1 - i][1]) < \
+                math.hypot(p.x - xy[i][0], p.y - xy[i][1])
+            way_out = (f"it lies nearer the points' {other}: pick it as {other.capitalize()} "
+                       "tangent" if near else "pick an edge that the points continue" if
+                       where == "start" else "pick an edge that continues the points")
             warnings.append(f"{End} join {join}: the edge leaves its joined end back along the "
                             f"points, so the curve turns back into it (a cusp) and loops to do "
-                            f"so: join the edge's other end, or set Tangent only")
+                            f"so: {way_out}, or set Tangent only")
         if join == "G2":
             c[f"{where}_curvature"] = plane_curvature(
                 edge, at_end, (math.cos(angle), math.sin(angle)), plane, f"the {where} edge")
@@ -164,6 +172,11 @@ def _one_piece(xy, model, distance, fixed, constraints, fields):
 # smooth fit of the noisy 330 mm sample S meets 0.05/mm, four times its own end
 # curvature, with rms 9 mm against 0.29 mm free).
 COST_RATIO, COST_FLOOR = 2.0, 1e-4
+# A curve shorter than COLLAPSED times the points' extent fits none of them: end conditions
+# met nowhere near the points shrink a fit to nothing (QA: a start join on a wire drawn
+# from its other end, 4e-12 mm long for 90 mm of points, rms 53 mm, kept as 'not
+# converged' with no error mark, a shape the 3D view cannot mesh, drawing the last one)
+COLLAPSED = 1e-3
 
 
 def _constraint_cost(xy, model, distance, fixed, constraints, rms, fields):
@@ -181,10 +194,28 @@ def _constraint_cost(xy, model, distance, fixed, constraints, rms, fields):
     extent = float(np().ptp(xy, axis=0).max())
     if not (rms > COST_RATIO * free and rms - free > COST_FLOOR * extent):
         return float(free), [], dist
-    named = list(dict.fromkeys(fields[c] for c in CONSTRAINT_FIELDS if c in constraints))
-    return float(free), [f"the end conditions ({', '.join(named)}) raise the rms from "
-                         f"{free:.3g} mm (free ends) to {rms:.3g} mm: check that they match "
+    return float(free), [f"the end conditions ({_named(constraints, fields)}) raise the rms "
+                         f"from {free:.3g} mm (free ends) to {rms:.3g} mm: check that they match "
                          "the data"], dist
+
+
+def _named(constraints, fields):
+    """The fields that set ``constraints`` (constraint_fields), each once, in the panel's order."""
+    return ", ".join(dict.fromkeys(fields[c] for c in CONSTRAINT_FIELDS if c in constraints))
+
+
+def _check_length(bspline, extent, constraints, fields, reversed_joins):
+    """Raise InputProblem for a fitted curve shorter than COLLAPSED times the points'
+    extent (mm), naming the end conditions it gave way to."""
+    n = np()
+    length = polyline_length(bspline.evaluate(n.linspace(*bspline.domain, 65)))
+    if length > COLLAPSED * extent:
+        return
+    why = (f"the end conditions ({_named(constraints, fields)}) cannot be met along the points"
+           if constraints else "check the points")
+    raise InputProblem(f"the fit shrank to a curve {length:.2g} mm long, for points "
+                       f"{extent:.4g} mm across: {why}" +
+                       "".join(f". {w}" for w in reversed_joins[:1]))
 
 
 def _rms(dist):
@@ -453,10 +484,13 @@ def _far_points(data, dist, plane, free=None):
 
 
 def _facing_the_edges(xy, plane, start_edge, end_edge):
-    """Unordered points (sorted along their principal axis, either way) in the order whose
-    start lies nearer the start tangent's edge and whose end nearer the end's: the edges
-    say which end the user means (the axis's sign does not). xy: plane coordinates, and
-    the distance from the plane as a third column if any."""
+    """The points in the direction whose start lies nearer the start tangent's edge and
+    whose end nearer the end's: the edges say which end the user means. Points without an
+    order are sorted along their principal axis, whichever way it points; a wire or a
+    file drawn from the other end runs away from its start edge, which a start join then
+    meets only by turning back (QA: a wire drawn right to left, its lead-in line at the
+    left joined G1, fitted as a curve 4e-12 mm long, rms 53 mm). xy: plane coordinates,
+    and the distance from the plane as a third column if any."""
     def dist(edge, i):
         return edge.distToShape(Part.Vertex(plane.multVec(App.Vector(*map(float, xy[i])))))[0]
 
@@ -531,8 +565,8 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         user = n.column_stack([xy, to_plane(plane, points)[:, 2]])
         order, ordering = file_order(xy) if ordered is None else \
             (None if ordered else curve_order(xy), [])
-        if order is not None:
-            user = _facing_the_edges(user[order], plane, start_edge, end_edge)
+        user = _facing_the_edges(user if order is None else user[order], plane, start_edge,
+                                 end_edge)
         xy = n.ascontiguousarray(user[:, :2])
         constraints, free_rms, warnings, used, reversed_joins = {}, -1.0, [], None, []
         free_dist = None
@@ -561,6 +595,8 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
                 raise InputProblem(f"{exc}. {reversed_joins[0]}") from None
         curves, results, data, feet, dist, rms, max_error, tails = fitted
         bspline = _shape_bspline(model, curves, results, split, tol, degree, tails)
+        _check_length(bspline, float(n.ptp(xy, axis=0).max()), constraints, fields,
+                      reversed_joins)
         if model == "discrete":
             feet, dist = drawn_distances(bspline, data, _foot_parameters(results, split, tails))
             rms, max_error = _rms(dist), float(np().abs(dist).max())
