@@ -1414,14 +1414,35 @@ class FitBadInputTest(unittest.TestCase):
         self.assertIn("Resample = 3 mm leaves 2 points", msg)
         self.assertIn("the polygon jumps where the points double back", msg)
 
-    def test_a_whole_sketch_of_points_and_edges(self):
-        # 15 points and a reference line: the line gave "2 points: a fit needs at least 6"
+    def test_a_whole_sketch_of_points_and_edges_fits_its_points(self):
+        """15 points and a lead-in line in one sketch, as a designer draws them: the points
+        are fitted (the line gave "2 points: a fit needs at least 6"; then the sketch was
+        refused, 'select its points in the 3D view', which a 0.20 sketch's points cannot
+        be, QA), the warning saying the line was left out and how to join it, which then
+        works; with 3 points, the error says how to fit the line instead."""
         sk = S.points_sketch(self.doc, [(x, 0.004 * x * x) for x in range(0, 101, 7)])
         sk.addGeometry(Part.LineSegment(App.Vector(-30, -5, 0), App.Vector(-5, -1, 0)), False)
         self.doc.recompute()
-        msg = self._rejected([(sk, [])])
-        self.assertIn("PointSketch holds 15 points and 1 edge: a fit takes either, not both", msg)
-        self.assertIn("select its points (or its edges)", msg)
+        del C.MESSAGES[:]
+        f = C.fit_sources([(sk, [])], open_panel=False, Model="smooth")
+        self.assertIsNotNone(f, C.MESSAGES)
+        self.assertIn("converged", f.Status)
+        self.assertEqual(len(f.DataPoints), 15)
+        self.assertLess(f.Rms, 0.1)
+        self.assertEqual(f.Warnings[0], "PointSketch: its 15 points are fitted and its edge left "
+                         "out (a fit takes points or edges, not both): pick it as Start or End "
+                         "tangent to join it, or pick it in the 3D view to fit it instead")
+        f.StartTangent, f.StartContinuity = (sk, ["Edge1"]), "G1"
+        self.doc.recompute()
+        self.assertIn("converged", f.Status)
+        joined = S.SKETCH_PLACEMENT.multVec(App.Vector(-5, -1, 0))
+        self.assertLess((travel_ends(f)[0][0] - joined).Length, 1e-9)
+        few = S.points_sketch(self.doc, [(0, 0), (20, 2), (40, 7)], "Few")
+        few.addGeometry(Part.LineSegment(App.Vector(-30, -5, 0), App.Vector(-5, -1, 0)), False)
+        self.doc.recompute()
+        msg = self._rejected([(few, [])])
+        self.assertIn("3 points: a fit needs at least 6. Few: its 3 points are fitted", msg)
+        self.assertIn("or pick it in the 3D view to fit it instead", msg)
 
     def test_separate_chains(self):
         sk = S.two_lines_sketch(self.doc)

@@ -167,8 +167,9 @@ def fit_sources(sources, csv_file="", open_panel=True, **options):
     opts.update(options)
 
     def check():
-        pts, plane, ordered, closed = src_mod.gather_points(sources, csv_file)
-        fit.fit_core(pts, plane, ordered, closed, **fit.core_options(opts))
+        notes = []
+        fit.fit_gathered(src_mod.gather_points(sources, csv_file, notes=notes), notes,
+                         **fit.core_options(opts))
 
     return _check_and_create(
         "Fit elastica", "fit", check,

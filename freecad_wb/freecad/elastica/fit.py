@@ -656,6 +656,20 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
     }
 
 
+def fit_gathered(gathered, notes, **options):
+    """fit_core of gather_points' (points, plane, ordered, closed) with its ``notes`` (what
+    it left out) first among the warnings, or after the error: the way out of an error may
+    be what was left out (a sketch's 4 points fitted, its curve left out)."""
+    try:
+        r = fit_core(*gathered, **options)
+    except InputProblem as exc:
+        if not notes:
+            raise
+        raise InputProblem(f"{exc}. {notes[0]}") from None
+    r["warnings"] = notes + r["warnings"]
+    return r
+
+
 class FitProxy(FeatureProxy):
     """Elastica fitted to sketch edges / vertices, a Points object, a wire or a CSV file."""
 
@@ -769,14 +783,15 @@ class FitProxy(FeatureProxy):
             raise InputProblem(f"SamplesPerEdge = {obj.SamplesPerEdge} is not usable: 4 to 10000")
         # renames Source: read it after; a CSV file is read instead of Source, not its geometry
         element = None if obj.CsvFile else followed_reader(obj, "Source")
-        pts, plane, ordered, closed = gather_points(obj.Source, obj.CsvFile, obj.SamplesPerEdge,
-                                                    link="Source", element=element)
+        notes = []
+        gathered = gather_points(obj.Source, obj.CsvFile, obj.SamplesPerEdge, link="Source",
+                                 element=element, notes=notes)
         edges = {}
         for key, prop in (("start_edge", "StartTangent"), ("end_edge", "EndTangent")):
             edge = followed_edge(obj, prop)
             if edge is not None:
                 edges[key] = edge
-        return fit_core(pts, plane, ordered, closed, **core_options(obj), **edges)
+        return fit_gathered(gathered, notes, **core_options(obj), **edges)
 
     def apply(self, obj, r):
         plc = r["placement"]
@@ -853,6 +868,6 @@ def make(doc, sources=(), csv_file="", **props):
                        CsvFile=csv_file or "", **props)
 
 
-__all__ = ["FitProxy", "fit_core", "core_options", "make", "stored_curves",
+__all__ = ["FitProxy", "fit_core", "fit_gathered", "core_options", "make", "stored_curves",
            "MODELS", "MODEL_NAMES", "DISTANCES", "DISTANCE_NAMES", "CONSTRAINT_FIELDS",
            "CONTINUITIES", "CONTINUITY_NAMES"]

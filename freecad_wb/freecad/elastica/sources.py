@@ -70,11 +70,14 @@ def sample_edges(edges, samples_per_edge):
     return dedup(pts), Part.Wire(ch).isClosed()
 
 
-def gather_points(sources, csv_file="", samples_per_edge=60, link=None, element=None):
+def gather_points(sources, csv_file="", samples_per_edge=60, link=None, element=None,
+                  notes=None):
     """Points of a fit's input, in 3D, with what is known about them; ``link``: the
     feature's property the sources come from (None: a selection; see nothing_read);
     ``element``: the function (obj, name) that reads a picked sub-element (global_element;
-    a feature's: links.followed_reader, its sketch geometry followed).
+    a feature's: links.followed_reader, its sketch geometry followed); ``notes``: a list
+    the user's notes on what was left out are appended to (a whole sketch's edges beside
+    its points).
 
     Returns (points: list[App.Vector], plane: App.Placement or None (a sketch's),
     ordered: True (in curve order), False (none: curve_order's) or None (a file's order,
@@ -101,20 +104,19 @@ def gather_points(sources, csv_file="", samples_per_edge=60, link=None, element=
         if is_sketch(obj):
             sketches.add(obj.Name)
             plane = obj.getGlobalPlacement()
-            if not subs and (obj.Shape.isNull() or not obj.Shape.Edges):
-                pts = sketch_points(obj)          # a sketch of points only
-                if not pts:
-                    raise InputProblem(f"{obj.Label} holds no edges and no points")
+            pts = [] if subs else sketch_points(obj)
+            n_edges = 0 if obj.Shape.isNull() else len(obj.Shape.Edges)
+            if not subs and not pts and not n_edges:
+                raise InputProblem(f"{obj.Label} holds no edges and no points")
+            if pts:
+                # a whole sketch holding points stands for them, as for an Elastic spline: a
+                # 0.20 sketch's shape has no vertices of its points, which cannot be picked,
+                # and its edges can (QA: its points and a lead-in line to join refused, 'select
+                # its points in the 3D view')
                 vertices.extend(pts)
+                if n_edges and notes is not None:
+                    notes.append(_edges_left_out(obj.Label, len(pts), n_edges))
                 continue
-            n_pts = len(sketch_points(obj)) if not subs else 0
-            if n_pts:
-                # which the user means is not ours to guess (the edges gave a line's 2 points)
-                n_edges = len(obj.Shape.Edges)
-                raise InputProblem(
-                    f"{obj.Label} holds {n_pts} point{'s' if n_pts != 1 else ''} and {n_edges} "
-                    f"edge{'s' if n_edges != 1 else ''}: a fit takes either, not both; select "
-                    "its points (or its edges) in the 3D view rather than the whole sketch")
         if obj.isDerivedFrom("Points::Feature"):
             points.extend(global_points(obj))
             continue
@@ -143,6 +145,15 @@ def gather_points(sources, csv_file="", samples_per_edge=60, link=None, element=
         pts, closed = sample_edges(edges, samples_per_edge)
         return pts, plane, True, closed
     return dedup(vertices or points), plane, False, False
+
+
+def _edges_left_out(label, n_pts, n_edges):
+    """The note for a whole sketch's edges left out of a fit of its points."""
+    edges, it, them = (("its edge", "it", "it") if n_edges == 1 else
+                       (f"its {n_edges} edges", "one", "them"))
+    return (f"{label}: its {n_pts} points are fitted and {edges} left out (a fit takes points "
+            f"or edges, not both): pick {it} as Start or End tangent to join it, or pick "
+            f"{them} in the 3D view to fit {them} instead")
 
 
 def wire_points(shape):
