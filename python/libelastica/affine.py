@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Optional, Sequence
+from typing import Optional, Sequence, Tuple
 
 import numpy as np
 
@@ -211,11 +211,12 @@ def _ellipk(k: float) -> float:
 
 def elastica_inflections(curve, margin: float = 1e-9) -> np.ndarray:
     """Arc lengths of the inflections of a SmoothElastica in (0, length): cn(u;k) = 0,
-    u = sqrt(mu) s + q = (2j+1) K(k) for 0 < k < 1; none for k >= 1 or k = 0. A Hermite
-    chain answers for itself (HermiteChain.inflections)."""
+    u = sqrt(mu) s + q = (2j+1) K(k) for 0 < |k| < 1 (the curvature 2 k sqrt(mu) cn(u; k),
+    whose modulus enters as k^2: a curve run backwards has -k); none for |k| >= 1 or k = 0.
+    A Hermite chain answers for itself (HermiteChain.inflections)."""
     if hasattr(curve, "inflections"):
         return curve.inflections(margin)
-    k = as_real(getattr(curve, "k", None), "elastica_inflections: curve.k")
+    k = abs(as_real(getattr(curve, "k", None), "elastica_inflections: curve.k"))
     if not 0.0 < k < 1.0:
         return np.empty(0)
     K = _ellipk(k)
@@ -463,7 +464,8 @@ class G2Quadratic:
     source's tangents are unknown; a quadratic end segment that meets its joint G2
     has no freedom left for the tangent, the error is O(edge)); covers_source: False
     when an end piece next to an inflection was too short to keep, so the splines
-    start / stop at that inflection (§4.4); fit: with ``fit=True`` the FitResult of the
+    start / stop at that inflection (§4.4); ends_covered: (start, end), which of the two
+    ends is kept (covers_source: both); fit: with ``fit=True`` the FitResult of the
     smooth elastica fitted to the points (the source then; its rms / max_error are the
     points' distances to it), else None."""
     bsplines: list
@@ -474,6 +476,7 @@ class G2Quadratic:
     end_tangent_error: Optional[float]
     covers_source: bool
     fit: Optional[object] = None
+    ends_covered: Tuple[bool, bool] = (True, True)
 
     @property
     def npoles(self) -> int:
@@ -574,7 +577,7 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
         total = max(int(samples_per_vertex) * int(n), 4 * (len(bounds) - 1))
         samples = c.points(np.linspace(0.0, c.length, total + 1))
         t_ends = s_ends / c.length * total
-        covers = first == 0 and first + npieces == len(bounds) - 1
+        covers = first == 0, first + npieces == len(bounds) - 1
     else:
         samples = as_points(curve_or_points, "points")
         t_ends = np.concatenate([[ap.t[0]], ap.infl_param, [round(float(ap.t[-1]))]])
@@ -584,7 +587,7 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
         if tangents is not None:
             tan = as_points(tangents, "tangents")
             ends_dir = tan[idx] / np.linalg.norm(tan[idx], axis=1)[:, None]
-        covers = idx[0] == 0 and idx[-1] == len(samples) - 1
+        covers = idx[0] == 0, idx[-1] == len(samples) - 1
     splines, jump, dev, terr = [], 0.0, 0.0, 0.0
     for p in range(npieces):
         a, b = ap.piece_start[p], ap.piece_start[p + 1]
@@ -605,4 +608,5 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                                                 vec[0] * ref[0] + vec[1] * ref[1])))
         splines.append(bs)
     return G2Quadratic(splines, ap, np.asarray(ends), dev, jump,
-                       terr if ends_dir is not None else None, bool(covers))
+                       terr if ends_dir is not None else None, bool(all(covers)),
+                       ends_covered=(bool(covers[0]), bool(covers[1])))

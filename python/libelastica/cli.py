@@ -350,7 +350,8 @@ def cmd_g2quad(args) -> int:
     g = el.g2_quadratic(src, n, fit=args.fit)
     jumps = f"{g.curvature_jump:.2g}"
     rec = {"file": str(source), "edges": int(n), "pieces": len(g.bsplines), "plane": plane,
-           "ends": g.ends, "covers_source": g.covers_source, "deviation": g.deviation,
+           "ends": g.ends, "covers_source": g.covers_source, "ends_covered": g.ends_covered,
+           "deviation": g.deviation,
            "curvature_jump": g.curvature_jump, "end_tangent_error_rad": g.end_tangent_error,
            "polyline": g.polyline.points, "A": g.polyline.A,
            "bsplines": [b.to_dict() for b in g.bsplines]}
@@ -371,9 +372,16 @@ def cmd_g2quad(args) -> int:
         print(f"  starts at ({g.ends[0][0]:.6g}, {g.ends[0][1]:.6g}), ends at "
               f"({g.ends[-1][0]:.6g}, {g.ends[-1][1]:.6g}), exactly on the source")
         if not g.covers_source:
-            print("  warning: an end of the source next to an inflection is left out (too short "
-                  "for 3 edges); noisy points: --fit, or fit first (elastica fit --model smooth "
-                  "--json) and pass the JSON", file=sys.stderr)
+            left = "its start's and its end's pieces beyond their inflections are" \
+                if not any(g.ends_covered) else \
+                f"its {'end' if g.ends_covered[0] else 'start'}'s piece beyond an inflection is"
+            # more edges give a short piece its 3; noise makes inflections of points (QA: the
+            # advice named --fit to a user who had given it, both ends of a fitted arch left out)
+            noisy = "" if g.fit is not None or curve_source else \
+                "; noisy points: --fit, or fit first (elastica fit --model smooth --json) " \
+                "and pass the JSON"
+            print(f"  warning: the source is not covered: {left} left out (too short for 3 of "
+                  f"the {n} edges): more --edges cover it{noisy}", file=sys.stderr)
         print(f"  largest relative curvature jump at a joint: {jumps} (G2)")
         print(f"  largest distance from the source: {g.deviation:.3g}")
         if g.end_tangent_error is not None:

@@ -1,6 +1,7 @@
 """Seed 002: affine arc-length polylines, osculating conics, subdivision, the §4
 approximation of an elastica, and G2 quadratic B-splines (issue 4)."""
 import json
+import math
 
 import numpy as np
 import pytest
@@ -73,6 +74,28 @@ def test_elastica_affine_curvature_matches_finite_differences():
     assert np.allclose(el.elastica_affine_curvature(c, s), el.affine_curvature_exact(k(s), ks, kss),
                        rtol=1e-5)
 
+
+def test_elastica_inflections_are_the_curvatures_sign_changes_for_either_sign_of_k():
+    """Every sign change of the curvature, and only those, over k in +-(0.05..0.97) (a curve
+    run backwards has -k: QA, g2_quadratic of a reversed S found no inflection and raised
+    DomainError), q across periods, mu 1e-4..1e4, 1 to ~6 inflections; the reversed curve's
+    are L - s."""
+    rng = np.random.default_rng(11)
+    for _ in range(300):
+        k = rng.choice([-1, 1]) * rng.uniform(0.05, 0.97)
+        mu = 10.0 ** rng.uniform(-4, 4)
+        K = el.affine._ellipk(abs(k))
+        length = rng.uniform(0.5, 12.0) * K / math.sqrt(mu)
+        c = el.SmoothElastica(1.0, -2.0, rng.uniform(-3, 3), mu, k, rng.uniform(-9, 9), length)
+        s = el.elastica_inflections(c)
+        assert np.all(np.abs(c.curvature(s)) <= 1e-9 * 2 * abs(k) * math.sqrt(mu))
+        grid = np.linspace(0.0, length, 4001)
+        kappa = c.curvature(grid)
+        sure = np.abs(kappa) > 1e-6 * np.max(np.abs(kappa))
+        flips = np.count_nonzero(np.diff(np.sign(kappa[sure])) != 0)
+        assert len(s) == flips, (k, mu, c.q, length, s)
+        assert np.allclose(np.sort(length - el.elastica_inflections(c.reversed())), s,
+                           rtol=0, atol=1e-9 * length)
 
 def test_elastica_inflections_are_zeros_of_curvature():
     c = el.SmoothElastica(0, 0, 0, 2.0, 0.8, 0.4, 9.0)
@@ -384,8 +407,10 @@ def test_g2_quadratic_inflection_next_to_the_end_is_reported():
     K = el.affine._ellipk(0.7)
     c = el.SmoothElastica(0, 0, 0, 1.0, 0.7, K - (L - 0.004), L)   # inflection at s = L - 0.004
     g = el.g2_quadratic(c, 30)
-    assert not g.covers_source and len(g.bsplines) == 1
+    assert not g.covers_source and len(g.bsplines) == 1 and g.ends_covered == (True, False)
     assert np.allclose(_ends(g.bsplines[0])[1], c.points([L - 0.004])[0], atol=1e-12)
+    back = el.g2_quadratic(c.reversed(), 30)
+    assert not back.covers_source and back.ends_covered == (False, True)
 
 
 # QA's S: a 300 mm tile profile with one inflection, and its measured versions
@@ -506,6 +531,29 @@ def test_g2quad_command_from_a_fitted_elastica(tmp_path, capsys):
     assert rec["pieces"] == 3 and rec["end_tangent_error_rad"] < 0.1
     s = np.r_[0.0, el.elastica_inflections(c), c.length]
     assert np.allclose(rec["ends"], c.points(s), atol=1e-12)
+
+
+def test_g2quad_command_says_which_ends_are_left_out_and_what_covers_them(tmp_path, capsys):
+    """QA: 40 points of a scanned arch, `g2quad --fit --edges 24`: the fitted elastica's
+    inflections lie 10 from both ends, both end pieces left out; the warning said 'an end'
+    and advised --fit, which was given. It names both ends and more --edges, which cover
+    them (200: no warning); one end left out is named as such."""
+    rng = np.random.default_rng(8)
+    t = np.linspace(0, 1, 40)
+    src = tmp_path / "arch.csv"
+    np.savetxt(src, np.c_[300 * t, 40 * np.sin(np.pi * t) + rng.normal(0, 0.1, 40)],
+               delimiter=",", fmt="%.4f")
+    out = tmp_path / "arch.json"
+    code, text, err = _g2quad(capsys, src, "--fit", "--edges", 24, "--json", out)
+    rec = json.loads(out.read_text())
+    assert code == 0 and not rec["covers_source"] and rec["ends_covered"] == [False, False]
+    warning = [line for line in err.splitlines() if "warning" in line]
+    assert len(warning) == 1 and "start's and its end's" in warning[0], err
+    assert "--edges" in warning[0] and "--fit" not in warning[0], err
+    code, text, err = _g2quad(capsys, src, "--fit", "--edges", 100)
+    assert code == 0 and "its start's piece" in err and "its end's" not in err, err
+    code, text, err = _g2quad(capsys, src, "--fit", "--edges", 200)
+    assert code == 0 and "warning" not in err, err
 
 
 def test_g2quad_command_fits_measured_points_first(tmp_path, capsys):
