@@ -227,11 +227,14 @@ static inline void isolate_deg(isolation *w, const int n, double a, double b, co
     int changes = 0, unsure = 0, last = 0, cross = 0;
     double bmax = 0.0;
     if (w->full) return;
+    /* without branches (the signs follow no pattern a predictor could learn): s and last
+     * in {-1, 0, 1}, a change where both are nonzero and differ, s last < 0 */
     for (int k = 0; k <= n; k++) {
-        const int s = bc[k] > err ? 1 : bc[k] < -err ? -1 : 0;
-        if (s == 0) unsure = 1;
-        else if (last && s != last) { changes++; cross = k; }
-        if (s) last = s;
+        const int s = (bc[k] > err) - (bc[k] < -err), ch = s * last < 0;
+        unsure |= s == 0;
+        changes += ch;
+        cross = ch ? k : cross;
+        last = s ? s : last;
         bmax = fabs(bc[k]) > bmax ? fabs(bc[k]) : bmax;
     }
     if (!unsure && changes == 0) return;
