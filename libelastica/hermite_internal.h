@@ -25,6 +25,9 @@ typedef struct hprob {
     int hcase;        /* 1, 2, 3 (Theorem 6) */
     double Lmin;      /* lower bound of the length: 1 (tension mode) or L (length mode) */
     double B;         /* kappa_m bound (Theorem 9); < 0: no solution */
+    /* 1 / P2 and 1 / (2 V1) (el__hermite_set_case): (19), (20), (22) multiply by them, a
+     * division fewer on the way from the unknown to the objective */
+    double iP2, i2V1;
 } hprob;
 
 /* Curvature data at both ends and the values derived from it. */

@@ -162,17 +162,17 @@ EL__INLINE int curvdata(const hprob *pr, double x, int b, hstate *st)
         const double w = k0 * k0 - s, C = 0.5 * w * P1 + k0, A = k0 * k0 * V2 + s * (1.0 - V2);
         if (pr->hcase == 2) {
             k1 = C;                                          /* (21) */
-            k0p = (A - C * C) / (2.0 * V1);                  /* (22) */
+            k0p = (A - C * C) * pr->i2V1;                    /* (22) */
         } else {
             const double c0 = 2.0 * V1 * C + A * P2;
             const double disc = V1 * V1 + P2 * c0;           /* (18) */
             if (disc < 0.0) return EL_EDOM;
             const double sq = sqrt(disc);
             /* (19) in the cancellation-free form: b = 0 is (-V1 + sq)/P2, b = 1 is (-V1 - sq)/P2 */
-            if (b == 0) k1 = V1 > 0.0 ? c0 / (V1 + sq) : (-V1 + sq) / P2;
-            else        k1 = V1 < 0.0 ? c0 / (V1 - sq) : (-V1 - sq) / P2;
+            if (b == 0) k1 = V1 > 0.0 ? c0 / (V1 + sq) : (-V1 + sq) * pr->iP2;
+            else        k1 = V1 < 0.0 ? c0 / (V1 - sq) : (-V1 - sq) * pr->iP2;
             /* (20) kappa0' = (kappa1 - C)/P2, or equivalently (15) solved for kappa0' */
-            k0p = fabs(V1) > fabs(P2) ? (A - k1 * k1) / (2.0 * V1) : (k1 - C) / P2;
+            k0p = fabs(V1) > fabs(P2) ? (A - k1 * k1) * pr->i2V1 : (k1 - C) * pr->iP2;
         }
     }
     st->k0 = k0;
@@ -348,7 +348,7 @@ static void slopes_and_grad(const hprob *pr, int have_slopes, hstate *st, curv_g
     const double A = k0 * k0 * V2 + s * (1.0 - V2);             /* as in el__hermite_curvdata */
     const int use15 = pr->hcase == 2 || fabs(V1) > fabs(P2);
     if (!have_slopes) {
-        if (pr->hcase != 3) st->k0p = use15 ? (A - k1 * k1) / (2.0 * V1) : (k1 - C) / P2;
+        if (pr->hcase != 3) st->k0p = use15 ? (A - k1 * k1) * pr->i2V1 : (k1 - C) * pr->iP2;
         st->k1p = st->k0p * V2 + 0.5 * w * V1;                  /* (14) */
     }
     for (int i = 0; i < 2; i++) {
@@ -792,5 +792,8 @@ void el__hermite_set_case(hprob *pr)
         pr->P1 = pr->P1 > 0.0 ? 1.0 : -1.0;
         pr->V2 = pr->V2 > 0.0 ? 1.0 : -1.0;
     }
+    /* infinite where P2 or V1 is 0: no case's formulas then use them */
+    pr->iP2 = 1.0 / pr->P2;
+    pr->i2V1 = 0.5 / pr->V1;
 }
 

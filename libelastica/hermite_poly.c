@@ -425,9 +425,10 @@ int el__hermite_root_branch(const hprob *pr, double x)
     double bd = INFINITY;
     for (int b = 0; b < 2; b++) {
         double k1;
-        if (b == 0) k1 = V1 > 0.0 ? c0 / (V1 + sq) : (-V1 + sq) / P2;    /* (19) */
-        else        k1 = V1 < 0.0 ? c0 / (V1 - sq) : (-V1 - sq) / P2;
-        const double k0p = fabs(V1) > fabs(P2) ? (A - k1 * k1) / (2.0 * V1) : (k1 - C) / P2;  /* (20) */
+        if (b == 0) k1 = V1 > 0.0 ? c0 / (V1 + sq) : (-V1 + sq) * pr->iP2;    /* (19) */
+        else        k1 = V1 < 0.0 ? c0 / (V1 - sq) : (-V1 - sq) * pr->iP2;
+        /* (20) */
+        const double k0p = fabs(V1) > fabs(P2) ? (A - k1 * k1) * pr->i2V1 : (k1 - C) * pr->iP2;
         if (!isfinite(k1) || !isfinite(k0p)) continue;
         const double F1 = -2.0 * k0p;
         const double dd = fabs(sqrt(F1 * F1 + F2 * F2) - s);   /* kappa_m^2 - 2 sigma */
@@ -502,7 +503,7 @@ int el_hermite_analyse(const double P[2], const double V[2], double sigma,
         return EL_EINVAL;
     if (sigma > EL_HERMITE_SIGMA_D2_MAX) return EL_EDOM;   /* the range of el_hermite_solve */
     el__gsl_quiet();
-    hprob pr = {P[0], P[1], V[0], V[1], sigma, 0, 1.0, 0.0};
+    hprob pr = {P[0], P[1], V[0], V[1], sigma, 0, 1.0, 0.0, 0.0, 0.0};   /* set_case: the rest */
     el__hermite_set_case(&pr);
     int rc = el__hermite_kappa_bound(sigma, 1.0, &pr.B);
     if (rc) return rc;
