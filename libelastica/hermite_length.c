@@ -22,7 +22,11 @@
  * What this misses: a piece of C that crosses no seed line (a closed curve, or one
  * whose both ends are singular states, between two lines), a solution where C
  * touches L = Lt without crossing it, and near the separatrix the stretch of C a step
- * passes over onto a branch close beside it whose length the step's test of L admits.
+ * passes over onto a branch close beside it whose length the step's test of L admits;
+ * and the crossings next to a singular state where C branches: between parallel tangents
+ * the whole-period curves leave the straight one (kappa = 0) at sigma |P|^2 = -8 pi^2, a
+ * pitchfork, and a trace toward it ends before L = Lt when Lt is near 1 (1 + 5e-8: none
+ * found); hermite.c adds them in closed form (whole_period_solutions).
  */
 #include "hermite_length_internal.h"
 #include <stdlib.h>
