@@ -180,4 +180,17 @@ typedef struct {
 int el__hermite_chain(const hframe *fr, int mode, double target, double sep, double tol,
                       el_hermite_solution *s);
 
+/* hermite.c's: a curve from its start state (theta, kappa, kappa') at tension sigma, length L
+ * (sep: |F| - sigma when known exactly); a solution's end residual; whether two solutions are
+ * one (length, tension, end curvatures and turning; d the chord). */
+int el__hermite_params_from_state(double x0, double y0, double theta, double kappa,
+                                  double dkappa, double sigma, double L, const double *sep,
+                                  el_smooth_params *p);
+int el__hermite_residual(const hframe *fr, const el_hermite_solution *s, double *res);
+int el__hermite_same_solution(const el_hermite_solution *a, const el_hermite_solution *b,
+                              double d);
+/* hermite_symmetry.c: the solution list closed under the problem's symmetries. */
+int el__hermite_add_images(const hframe *fr, const el_hermite_options *opt, double Ln,
+                           el_hermite_solution **sol, size_t *n, size_t *cap);
+
 #endif
