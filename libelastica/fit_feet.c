@@ -132,14 +132,15 @@ int el__fit_objective_project(fit_objective *o, const double *x)
     int st = el__fit_map_eval(&o->map, x, v, NULL);
     if (st) return st;
     el__fit_feet_range(o, v, 1, &lo, &hi);
-    /* the ends keep their places (their residuals are full vectors) */
-    for (size_t a = 1; a + 1 < o->n; a += FIT_BLOCK) {
-        const size_t m = o->n - 1 - a < FIT_BLOCK ? o->n - 1 - a : FIT_BLOCK;
+    /* the ends paired with the curve's keep their places (their residuals are full vectors) */
+    const size_t first = fit_end_paired(o, 0), stop = o->n - fit_end_paired(o, o->n - 1);
+    for (size_t a = first; a < stop; a += FIT_BLOCK) {
+        const size_t m = stop - a < FIT_BLOCK ? stop - a : FIT_BLOCK;
         if ((st = project_block(o, v, a, m, o->s, lo, hi, NULL, 0))) return st;
     }
     el__fit_feet_range(o, v, 0, &lo, &hi);
-    o->s[0] = lo;
-    o->s[o->n - 1] = hi;
+    if (first) o->s[0] = lo;
+    if (stop < o->n) o->s[o->n - 1] = hi;
     return EL_OK;
 }
 
@@ -193,9 +194,9 @@ int el__fit_feet_start(fit_objective *o, const double *x)
     o->rest_ok = 0;
     size_t moved;
     if (el__fit_feet_elsewhere(o, x, v, d, fs, &moved) == EL_OK) {
-        memcpy(o->s + 1, fs + 1, sizeof(double) * (o->n - 2));
-        o->s[0] = 0.0;
-        o->s[o->n - 1] = v[0][6];
+        memcpy(o->s, fs, sizeof(double) * o->n);
+        if (fit_end_paired(o, 0)) o->s[0] = 0.0;
+        if (fit_end_paired(o, o->n - 1)) o->s[o->n - 1] = v[0][6];
     }
     return EL_OK;
 }

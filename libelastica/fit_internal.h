@@ -15,7 +15,8 @@
  *                    never storing J), foot points and point-to-curve distances;
  *   fit_lm.c         Levenberg-Marquardt and its first-order certificate;
  *   fit_ipopt.c      bounds and constraints through Ipopt (and the fallback);
- *   fit_keyline.c    the keyline as one problem: two curves sharing a G2 joint.
+ *   fit_keyline.c    the keyline as one problem: two curves sharing a G2 joint;
+ *   fit_frame.c      the public fits in the frame of a held tangent.
  * Everything is in normalised coordinates: points P = (xy - c) / sc.
  */
 #ifndef EL_FIT_INTERNAL_H
@@ -163,6 +164,9 @@ typedef struct fit_objective {
     int other_passes;
     /* the points' own polygon crosses itself (el__fit_wanders; 0 until known, then 1: no, 2: yes) */
     int points_cross;
+    /* the held start and end points (input units; NaN where not held: el__fit_objective_init),
+     * the ends of el__fit_stray_held's allowance */
+    double held_ends[4];
     size_t split;                /* discrete keyline: the data index of the joint */
     double *work;                /* block buffers */
     /* discrete orthogonal: the polygon (2n), distances and feet (n each) of the last
@@ -192,6 +196,14 @@ static inline void fit_point(const fit_objective *o, size_t i, double *P)
 {
     P[0] = (o->xy[2 * i] - o->cx) / o->sc;
     P[1] = (o->xy[2 * i + 1] - o->cy) / o->sc;
+}
+/* Whether point g is paired with the curve's end (its residual gamma(0) - P_0 or gamma(L) -
+ * P_{n-1} in full, fit_objective.c): the first and last points, but not where that end point
+ * is held, whose residual would be a constant and the point's distance to the curve unseen
+ * by the fit (there its foot is free, as an interior point's). */
+static inline int fit_end_paired(const fit_objective *o, size_t g)
+{
+    return (g == 0 && isnan(o->held_ends[0])) || (g == o->n - 1 && isnan(o->held_ends[2]));
 }
 /* Newton's iterations for a foot on the smooth curve (fit_feet.c, fit_nearest.c). */
 enum { FIT_NEWTON_MAX = 40 };
@@ -294,6 +306,12 @@ int el__fit_curve_distances(fit_objective *ob, const double *x, double v[2][FIT_
  * -1 when out of memory. scale: the data's size (the fit's normalisation, el__fit_normalisation). */
 #define FIT_STRAY 0.1
 double el__fit_stray(const double *xy, size_t n, const double *fs, double L, double noise, double scale);
+/* fit_refit.c: el__fit_stray of a fit whose start or end point is held (ends: the start and
+ * end points, input units, NaN where not held; NULL: none): the curve from a held end to the
+ * nearest foot is allowed 1.6 times the chord from that end to its point, as between
+ * adjacent feet, instead of none (the constraints' curve there, not the fit's stray). */
+double el__fit_stray_held(const double *xy, size_t n, const double *fs, double L, double noise,
+                          double scale, const double ends[4]);
 /* fit_refit.c: whether the fit by distance at x (ob's map) strays from its points
  * (el__fit_stray > FIT_STRAY; noise: el__fit_noise_rms, normalised); d, fs (n each: ob's
  * rest arrays, or the caller's) overwritten with its distances and feet (input units). */
@@ -485,6 +503,7 @@ typedef struct fit_run_state {
     /* the charts (fit.c, choose_charts): sl the slots of (phi, w or z, k, q), held the
      * constraint bits a chart holds exactly, staged those held by continuation */
     int sl[4], ik, jl, chart_ok, held, ends_ok, ends_chart, zero_k0, natural, need_ipopt, staged;
+    int determined;                          /* as many rows as variables (alloc_work) */
     double chord[2];
     fit_map map, free_map;                   /* free_map: the held chart variables free */
     double xl[FIT_MAXX], xu[FIT_MAXX];       /* the variables' bounds */
@@ -523,6 +542,12 @@ int el__fit_choose(fit_run_state *R);
  * holds more constraints than the start, else as they are (the public entry points). */
 int el__fit_run_either_way(int model, const double *xy, size_t n, const el_fit_options *opt,
                            int flags, const double *init, fit_out *res, double *dist, double *foot);
+/* fit_frame.c: el__fit_run_either_way in the frame of a held start (else end) tangent where
+ * the constraints and fixed parameters are as many as the parameters: the points turned
+ * about the held start point (else the first point) so that tangent is 0, the result turned
+ * back (not where x0, y0 or phi are fixed or bounded). */
+int el__fit_run_framed(int model, const double *xy, size_t n, const el_fit_options *opt, int flags,
+                       const double *init, fit_out *res, double *dist, double *foot);
 /* fit_restart.c: a constrained fit's last start, the unconstrained fit's curve
  * (normalised by cx, cy, sc into v) when its objective is 1 % below best_f; EL_EDOM:
  * none, EL_ENOMEM. */

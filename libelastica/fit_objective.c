@@ -13,7 +13,8 @@
  *              free, so the start slides along the curve until its residual is normal
  *              too: at the optimum the curve begins and ends at the feet of the first
  *              and last points (the tangential part of an end residual is the
- *              derivative of f along that slide).
+ *              derivative of f along that slide). A held end point cannot slide: its
+ *              point is then an interior one (fit_end_paired).
  * Why variable projection with feet carried along, and not the feet as Ipopt variables
  * (the arrow-shaped problem of n + 7 variables): measured on 1000 noisy points
  * (bench/bench_fit.c, fit_orthogonal_formulation: same data, start and objective), the
@@ -55,6 +56,7 @@ int el__fit_objective_init(fit_objective *o, int kind, const fit_map *map, const
     o->f_ceiling = HUGE_VAL;
     o->f_direct = HUGE_VAL;
     o->lm_tol = 1e-13;
+    for (int j = 0; j < 4; j++) o->held_ends[j] = NAN;
     const int feet = map->model == FIT_SMOOTH;
     o->work = malloc(sizeof(double) * (W_SIZE + (feet ? 2 * n : 0)));
     if (!o->work) return EL_ENOMEM;
@@ -576,9 +578,9 @@ static int smooth_orthogonal(fit_objective *o, const double *v, int want, sums *
         for (size_t i = 0; i < m; i++) {
             const size_t g = a + i;
             idx[i] = g;
-            end[i] = g == 0 || g == o->n - 1;
-            s[i] = g == 0 ? 0.0 : g == o->n - 1 ? L
-                 : fit_clamp(o->s[g] + foot_shift(o, 0, o->s[g]), lo, hi);
+            end[i] = fit_end_paired(o, g);
+            s[i] = !end[i] ? fit_clamp(o->s[g] + foot_shift(o, 0, o->s[g]), lo, hi)
+                 : g == 0  ? 0.0 : L;
         }
         ortho_block b = {v, m, s, idx, end, lo, hi, o->rest_foot ? o->rest : NULL};
         int rows = 0;

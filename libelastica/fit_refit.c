@@ -359,6 +359,12 @@ int el__fit_feet_order(const double *fs, size_t *idx, size_t n)
 
 double el__fit_stray(const double *xy, size_t n, const double *fs, double L, double noise, double scale)
 {
+    return el__fit_stray_held(xy, n, fs, L, noise, scale, NULL);
+}
+
+double el__fit_stray_held(const double *xy, size_t n, const double *fs, double L, double noise,
+                          double scale, const double ends[4])
+{
     /* the feet by arc length: read in place where they are in order, else through their
      * indices sorted (8 bytes a point: at 10^6 noisy points half the neighbours swap) */
     int in_order = 1;
@@ -372,7 +378,14 @@ double el__fit_stray(const double *xy, size_t n, const double *fs, double L, dou
      * cheaper than hypot (2 % of a 1000-point smooth fit with hypot) */
     const double is = 1.0 / scale, slack = 4.0 * noise * is;
     const size_t first = idx ? idx[0] : 0, last = idx ? idx[n - 1] : n - 1;
-    double poly = 0.0, stray = fmax(0.0, fs[first] * is - slack) + fmax(0.0, (L - fs[last]) * is - slack);
+    /* a held end's allowance: 1.6 x its chord to the nearest point (none where not held) */
+    double lead = 0.0, tail = 0.0;
+    if (ends && isfinite(ends[0]))
+        lead = 1.6 * hypot(xy[2 * first] - ends[0], xy[2 * first + 1] - ends[1]) * is;
+    if (ends && isfinite(ends[2]))
+        tail = 1.6 * hypot(xy[2 * last] - ends[2], xy[2 * last + 1] - ends[3]) * is;
+    double poly = 0.0, stray = fmax(0.0, fs[first] * is - lead - slack) +
+                               fmax(0.0, (L - fs[last]) * is - tail - slack);
     for (size_t k = 0; k + 1 < n; k++) {
         const size_t a = idx ? idx[k] : k, b = idx ? idx[k + 1] : k + 1;
         const double cx = (xy[2 * b] - xy[2 * a]) * is, cy = (xy[2 * b + 1] - xy[2 * a + 1]) * is;
@@ -391,7 +404,9 @@ int el__fit_strays_at(fit_objective *ob, const double *x, double noise, double *
     ob->rest_ok = 0;     /* d, fs no longer hold an evaluation's points at rest */
     for (size_t i = 0; i < ob->n; i++) fs[i] *= ob->sc;
     const double L = ob->map.model == FIT_SMOOTH ? v[0][6] : (double)(ob->n - 1) * v[0][2];
-    return el__fit_stray(ob->xy, ob->n, fs, L * ob->sc, noise * ob->sc, ob->sc) > FIT_STRAY;
+    const double stray = el__fit_stray_held(ob->xy, ob->n, fs, L * ob->sc, noise * ob->sc, ob->sc,
+                                            ob->held_ends);
+    return stray > FIT_STRAY;
 }
 
 int el__fit_curve_feet(fit_objective *ob, double v[2][FIT_NP], double *x, double *d, double *fs)

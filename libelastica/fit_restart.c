@@ -569,7 +569,8 @@ int el__fit_fallback_unless_loops(int model, const double *xy, size_t n, const e
 static int result_wanders(const double *xy, size_t n, double noise, fit_objective *ob,
                           const double norm[3], const fit_out *res, const double *fs)
 {
-    const double stray = el__fit_stray(xy, n, fs, res->params[6], fmin(noise, res->rms), norm[2]);
+    const double stray = el__fit_stray_held(xy, n, fs, res->params[6], fmin(noise, res->rms),
+                                            norm[2], ob->held_ends);
     return !(stray <= FIT_STRAY) || result_loops(ob, FIT_SMOOTH, norm, res);
 }
 
