@@ -444,7 +444,10 @@ typedef struct el_fit_smooth_result {
  * one that does neither, even at a lower rms (a smooth fit of fewer than 60 points kept
  * that still does either is fitted again from the free fit's curve and the guesses, each
  * from its own feet, and gives way to the lowest that does neither and is at most 1 % of
- * the data's size higher); a discrete fit with rows or a held start state starts first
+ * the data's size higher; one that swings between two points, turning there by over 1.8 rad
+ * more than their polygon and 0.1 of their chord off it, is fitted again with its length at
+ * most 1-1.2 x the polygon's and gives way to the lowest such fit that follows them,
+ * within the same 1 %); a discrete fit with rows or a held start state starts first
  * from the smooth fit's curve (its guesses ended on polygons 25 x the data's length,
  * crossing themselves hundreds of times). Free fits of 6-59 sparse
  * points take up to ~0.1 s of CPU (bench/bench_fit_sparse.py; a few hard sketches up to

@@ -312,6 +312,24 @@ double el__fit_stray(const double *xy, size_t n, const double *fs, double L, dou
  * adjacent feet, instead of none (the constraints' curve there, not the fit's stray). */
 double el__fit_stray_held(const double *xy, size_t n, const double *fs, double L, double noise,
                           double scale, const double ends[4]);
+/* fit_refit.c: how far a smooth fit (p: its parameters, fs: its feet, input units) swings
+ * from its points' polygon where there is no point: over each gap between feet adjacent
+ * along the curve where it turns by more than FIT_GAP_TURN beyond the polygon's turns at the
+ * gap's two points (the sum of |turn|s: a wave, or a bulge out and back), the curve's
+ * farthest distance from the chord of their two points, less 4 noise levels, over that chord;
+ * the largest (0 where the curve cannot be evaluated), -1 when out of memory. Above
+ * FIT_GAP_SAG the fit swings between two points. A fair curve through a gap stays near the
+ * chord and turns there about as its points' polygon does: on sketches of 6-9 points along
+ * cubic paths, noise 0.3 % of their length, their curves' sag at most 0.087 over 2200 of
+ * them; the fits 7-19 mm off a 57 mm gap, 0.12-0.44, turning by 2.6-5.2 rad where the
+ * polygon turned by 0.2-0.8 (2.1-4.4 rad beyond it). The turn spares the curves of few
+ * exact points, which bend by up to 0.2 of a chord where there is no point, as their polygon
+ * does (tests/c/test_fit_basin.c's 6 exact points, a cluster of 5 and one far: sag 0.22,
+ * turning 1.3 rad beyond the polygon's: at FIT_GAP_TURN 1 its fit gave way, rms 1e-16 ->
+ * 2.3e-3). */
+#define FIT_GAP_SAG 0.1
+#define FIT_GAP_TURN 1.8
+double el__fit_gap_sag(const double *xy, size_t n, const double *fs, const double *p, double noise);
 /* fit_refit.c: whether the fit by distance at x (ob's map) strays from its points
  * (el__fit_stray > FIT_STRAY; noise: el__fit_noise_rms, normalised); d, fs (n each: ob's
  * rest arrays, or the caller's) overwritten with its distances and feet (input units). */

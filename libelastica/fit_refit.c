@@ -397,6 +397,55 @@ double el__fit_stray_held(const double *xy, size_t n, const double *fs, double L
     return stray / poly;
 }
 
+/* samples of the curve in each gap between adjacent feet (el__fit_gap_sag), its ends
+ * included: a wave of the gap's length peaks within 1 - cos(pi / 32) of its height between
+ * two of them */
+enum { GAP_SAMPLES = 32, GAP_M = GAP_SAMPLES + 1 };
+
+/* the angle a - b in (-pi, pi] */
+static double turn_between(double a, double b) { return remainder(a - b, 2.0 * M_PI); }
+
+/* |the polygon's turn| at its k-th point in the order idx (0 at its ends) */
+static double polygon_turn(const double *xy, size_t n, const size_t *idx, size_t k)
+{
+    if (k == 0 || k + 1 >= n) return 0.0;
+    const double *P = xy + 2 * idx[k - 1], *Q = xy + 2 * idx[k], *R = xy + 2 * idx[k + 1];
+    return fabs(turn_between(atan2(R[1] - Q[1], R[0] - Q[0]), atan2(Q[1] - P[1], Q[0] - P[0])));
+}
+
+double el__fit_gap_sag(const double *xy, size_t n, const double *fs, const double *p, double noise)
+{
+    const el_smooth_params c = {p[0], p[1], p[2], p[3], p[4], p[5], p[6]};
+    size_t *idx = malloc(sizeof *idx * n);
+    double *s = malloc(sizeof(double) * 4 * GAP_M * (n - 1));
+    if (!idx || !s || el__fit_feet_order(fs, idx, n)) { free(idx); free(s); return -1.0; }
+    double *g = s + GAP_M * (n - 1), *th = g + 2 * GAP_M * (n - 1), worst = 0.0;
+    for (size_t k = 0; k + 1 < n; k++)
+        for (int j = 0; j < GAP_M; j++)
+            s[k * GAP_M + j] = fs[idx[k]] + (fs[idx[k + 1]] - fs[idx[k]]) * j / GAP_SAMPLES;
+    /* a curve that cannot be evaluated there shows no sag (its other tests judge it) */
+    if (el_smooth_eval(&c, GAP_M * (n - 1), s, g, th, NULL)) { free(idx); free(s); return 0.0; }
+    for (size_t k = 0; k + 1 < n; k++) {
+        const double *A = xy + 2 * idx[k], *B = xy + 2 * idx[k + 1], *tk = th + k * GAP_M;
+        const double ux = B[0] - A[0], uy = B[1] - A[1], chord = hypot(ux, uy);
+        /* the curve's turning there beyond the polygon's at the gap's two points */
+        double turn = -polygon_turn(xy, n, idx, k) - polygon_turn(xy, n, idx, k + 1);
+        for (int j = 1; j < GAP_M; j++) turn += fabs(turn_between(tk[j], tk[j - 1]));
+        if (!(chord > 0.0) || !(turn > FIT_GAP_TURN)) continue;
+        double far = 0.0;   /* the farthest sample from the segment A B */
+        for (int j = 1; j < GAP_SAMPLES; j++) {
+            const double *G = g + 2 * (k * GAP_M + j);
+            const double t =
+                fit_clamp(((G[0] - A[0]) * ux + (G[1] - A[1]) * uy) / (chord * chord), 0.0, 1.0);
+            far = fmax(far, hypot(G[0] - A[0] - t * ux, G[1] - A[1] - t * uy));
+        }
+        worst = fmax(worst, (far - 4.0 * noise) / chord);
+    }
+    free(idx);
+    free(s);
+    return worst;
+}
+
 int el__fit_strays_at(fit_objective *ob, const double *x, double noise, double *d, double *fs, double *tmp)
 {
     double v[2][FIT_NP];
