@@ -183,6 +183,16 @@ static void unshift_starts(fit_run_state *R, size_t m)
     memmove(R->cand[0], R->cand[m], R->ncand * sizeof R->cand[0]);
 }
 
+/* After shift_starts(R, 1) and a start computed into cand[0] (status st): kept first, its
+ * index into *ci, or (failed) the starts shifted back; EL_ENOMEM passed on. */
+static int keep_first_start(fit_run_state *R, int st, size_t *ci)
+{
+    if (st == EL_ENOMEM) return st;
+    if (st == EL_OK) { *ci = 0; R->ncand++; }
+    else unshift_starts(R, 1);
+    return EL_OK;
+}
+
 /* Held ends: the unconstrained fit's curve turned and scaled onto them is the first start.
  * The guesses turned and scaled onto the ends can lie far from the points (a set of 23
  * points near k = 1: all six at 0.24-1.7, two crawling to max_iter, 0.97 s; this start
@@ -194,11 +204,8 @@ static int free_start_for_ends(fit_run_state *R)
     shift_starts(R, 1);
     const int fst = el__fit_unconstrained_start(R->model, R->xy, R->n, R->opt, R->cx, R->cy, R->sc,
                                                 HUGE_VAL, R->cand[0]);
-    if (fst == EL_ENOMEM) return fst;
-    if (fst == EL_OK) { R->free_ci = 0; R->ncand++; }
-    else unshift_starts(R, 1);
     R->free_start = 0;
-    return EL_OK;
+    return keep_first_start(R, fst, &R->free_ci);
 }
 
 /* The natural batten (this run of the ends chart with the end curvature 0 too, a row): its
@@ -227,10 +234,7 @@ static int natural_start(fit_run_state *R)
                                         &R->natural_evals)
                   : el__fit_smooth_start(R->xy, R->n, R->opt, FIT_RUN_NO_CONJUGATE, R->cx, R->cy,
                                          R->sc, R->cand[0]);
-    if (nst == EL_ENOMEM) return nst;
-    if (nst == EL_OK) { R->natural_ci = 0; R->ncand++; }
-    else unshift_starts(R, 1);
-    return EL_OK;
+    return keep_first_start(R, nst, &R->natural_ci);
 }
 
 /* A discrete fit's smooth start first. The guesses' fits with a held start tangent or rows
@@ -247,11 +251,8 @@ static int smooth_start_first(fit_run_state *R)
     shift_starts(R, 1);
     const int sst = el__fit_smooth_start(R->xy, R->n, R->opt, FIT_RUN_NO_CONJUGATE, R->cx, R->cy,
                                          R->sc, R->cand[0]);
-    if (sst == EL_ENOMEM) return sst;
-    if (sst == EL_OK) { R->smooth_ci = 0; R->ncand++; }
-    else unshift_starts(R, 1);
     R->smooth_start = 0;
-    return EL_OK;
+    return keep_first_start(R, sst, &R->smooth_ci);
 }
 
 /* Held at an inflection (start tangent and zero curvature) with a tangent row at the other
