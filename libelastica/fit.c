@@ -276,10 +276,7 @@ static int alloc_work(fit_run_state *R, double *dist, double *foot)
      * held end points' own (fit_end_paired, el__fit_stray_held); not more (none meets them but
      * the data's own curve: a fit of all six constraints, from an uncertified one that met them
      * to one off the end curvature, rms 0.0030 -> 0.0035) */
-    const int m = R->con_rows.mask;
-    const int rows = 2 * !!(m & EL_CONSTRAIN_END_POINT) + !!(m & EL_CONSTRAIN_START_TANGENT) +
-                     !!(m & EL_CONSTRAIN_END_TANGENT) + !!(m & EL_CONSTRAIN_START_CURVATURE) +
-                     !!(m & EL_CONSTRAIN_END_CURVATURE);
+    const int rows = fit_conditions(R->con_rows.mask & ~EL_CONSTRAIN_START_POINT);
     R->determined = R->need_ipopt && R->model == FIT_SMOOTH && R->map.ncurves == 1 &&
                     rows == R->map.nx;
     if (R->determined && (R->o.constraints & EL_CONSTRAIN_START_POINT))

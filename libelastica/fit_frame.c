@@ -42,9 +42,7 @@ int el__fit_run_framed(int model, const double *xy, size_t n, const el_fit_optio
     /* as many conditions as parameters (the curves that meet them isolated, the fit's path
      * choosing among them); x0, y0 and phi fixed or bounded by the caller: their values are in
      * the caller's frame */
-    int conds = 2 * !!(bits & EL_CONSTRAIN_START_POINT) + 2 * !!(bits & EL_CONSTRAIN_END_POINT) +
-                !!(bits & EL_CONSTRAIN_START_TANGENT) + !!(bits & EL_CONSTRAIN_END_TANGENT) +
-                !!(bits & EL_CONSTRAIN_START_CURVATURE) + !!(bits & EL_CONSTRAIN_END_CURVATURE);
+    int conds = fit_conditions(bits);
     for (int j = 0; j < FIT_NP && opt; j++) conds += opt->fixed[j] != 0;
     int framed = held && conds == FIT_NP && xy && n >= 4 && isfinite(a) && isfinite(xy[0]) &&
                  isfinite(xy[1]);

@@ -197,6 +197,14 @@ static inline void fit_point(const fit_objective *o, size_t i, double *P)
     P[0] = (o->xy[2 * i] - o->cx) / o->sc;
     P[1] = (o->xy[2 * i + 1] - o->cy) / o->sc;
 }
+/* The conditions an end-constraint mask sets: 2 a held point, 1 a tangent or a curvature
+ * (the length and k ranges none). */
+static inline int fit_conditions(int mask)
+{
+    return 2 * !!(mask & EL_CONSTRAIN_START_POINT) + 2 * !!(mask & EL_CONSTRAIN_END_POINT) +
+           !!(mask & EL_CONSTRAIN_START_TANGENT) + !!(mask & EL_CONSTRAIN_END_TANGENT) +
+           !!(mask & EL_CONSTRAIN_START_CURVATURE) + !!(mask & EL_CONSTRAIN_END_CURVATURE);
+}
 /* Whether point g is paired with the curve's end (its residual gamma(0) - P_0 or gamma(L) -
  * P_{n-1} in full, fit_objective.c): the first and last points, but not where that end point
  * is held, whose residual would be a constant and the point's distance to the curve unseen
