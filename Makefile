@@ -44,7 +44,7 @@ define apt-install
 endef
 
 .PHONY: all deps lib check check-c check-asan check-install check-python check-freecad check-fuzz \
-        check-tsan fuzz fuzz-deps fuzz-coverage bench occt-dev spiro-dev demo gallery install \
+        check-tsan fuzz fuzz-deps fuzz-coverage bench hermite-sets occt-dev spiro-dev demo gallery install \
         freecad-install clean
 
 all: deps lib
@@ -266,6 +266,22 @@ bench: all $(BENCH_BIN) $(BENCH_CXX_BIN)
 	    PYTHONPATH=$(CURDIR)/python $(PYTHON) $$b || echo $$b >> $(BUILD)/bench.failed; done; } | tee $(BUILD)/bench.jsonl
 	@$(PYTHON) bench/readme_figures.py $(BUILD)/bench.jsonl README.md
 	@if [ -s $(BUILD)/bench.failed ]; then echo "make bench: failed (their figures left out):" $$(cat $(BUILD)/bench.failed); exit 1; fi
+
+# The Hermite solution sets of this tree and of git revision OLD on 8 x 1000 fixed problems
+# (bench/sets/): a speed change to the solver must keep every solution (issue 16). Fails
+# when a solution of OLD's is lost; prints the problems that lost or gained one.
+SETS_DIR = $(BUILD)/hermite-sets
+hermite-sets: $(BUILD)/libelastica.a
+	@test -n "$(OLD)" || { echo "make hermite-sets: name the build to compare with, OLD=<git revision>"; exit 1; }
+	@rm -rf $(SETS_DIR) && mkdir -p $(SETS_DIR)/old
+	git archive $(OLD) | tar -x -C $(SETS_DIR)/old
+	$(MAKE) --no-print-directory -C $(SETS_DIR)/old BUILD=build build/libelastica.a
+	$(CC) -I$(SETS_DIR)/old/include $(CFLAGS_BASE) $(DEPS_CFLAGS) bench/sets/hermite_sets.c -o $(SETS_DIR)/dump-old \
+	  $(SETS_DIR)/old/build/libelastica.a $(DEPS_LIBS)
+	$(CC) $(CFLAGS_BASE) $(DEPS_CFLAGS) bench/sets/hermite_sets.c -o $(SETS_DIR)/dump-new $(BUILD)/libelastica.a $(DEPS_LIBS)
+	$(SETS_DIR)/dump-old > $(SETS_DIR)/old.txt
+	$(SETS_DIR)/dump-new > $(SETS_DIR)/new.txt
+	$(PYTHON) bench/sets/compare_sets.py $(SETS_DIR)/old.txt $(SETS_DIR)/new.txt
 
 # headless FreeCAD (freecadcmd) with a throw-away HOME; the report is printed, the full log kept
 demo: all
