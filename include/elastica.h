@@ -857,11 +857,14 @@ enum { EL_HERMITE_SIGMA_D2_MAX = 100000 };
  * loops' distance is carried by the phases instead of the rounded k
  * (hermite_chain.c); the phases are corrected until the chain meets the ends.
  * The pieces are the same elastica up to the rounding of k: position and tangent
- * continuous at the joints, curvature to ~1e-8 of its largest value (kappa' jumps
- * by as little at a loop's joint), and the chain lies within ~5e-10 |p1 - p0| of the
+ * continuous at the joints, curvature to ~1e-8 of kappa_m = 2 |k| sqrt(mu), the loops'
+ * peak (kappa' jumps by as little at a loop's joint; a two-piece chain that would jump
+ * by more, or by more than 5e-8 of its own largest curvature, has its joint moved until
+ * the curvature is continuous), and the chain lies within ~5e-10 |p1 - p0| of the
  * exact curve (against a 90-digit evaluation, sigma |p1-p0|^2 up to 1e4; no
- * el_smooth_params can come closer where 1 - |k| ~ 1e-17). A chain is returned only
- * where one piece cannot meet tol.
+ * el_smooth_params can come closer where 1 - |k| ~ 1e-17); a near-straight chain
+ * (tangents within ~1e-5 rad of the chord) within ~3e-9, its curvature, ~k' kappa_m, a
+ * few % off where k' < 1e-7. A chain is returned only where one piece cannot meet tol.
  * A circular arc (sigma = kappa^2, where the parametrisation needs |k| = inf) is
  * returned with k = 1e4 (counter-clockwise) or -1e4 (clockwise), accurate to ~1e-8
  * only: it appears when opt->tol allows.

@@ -134,6 +134,62 @@ START_TEST(tangents_near_the_chord_give_the_near_straight_curve)
 }
 END_TEST
 
+/* Chains between tangents near the chord (two nearly aligned edges blended at moderate
+ * tension): near-straight curves that pass the saddle, an S (tangents on one side of the
+ * chord, inflectional) or a C (mirrored, a loop chain), whose curvature ~k' kappa_m is far
+ * below the loops' peak kappa_m. Every returned solution meets hermite_check.h's measures,
+ * the joint's curvature jump included. Tangents 1e-8 to 1e-5 rad off the chord, both
+ * signs, sigma |p1 - p0|^2 from 20 to 60 on the unit chord, then densely about the QA
+ * case (parallel, 1e-6 rad, sigma |p1 - p0|^2 = 35) in three frames. Before
+ * hermite_chain.c's G2 joint, 34 of the 680 sparse problems failed it (split_loop's pairs
+ * jumped by up to 0.6 of the chain's largest curvature, 2.8e-8 of kappa_m; 2.3e-7 at
+ * sigma |p1 - p0|^2 = 1000), and 8 of its chains were counted unrepresentable (408 chains
+ * returned, now 416). */
+START_TEST(chains_near_the_chord_meet_the_joint_bound)
+{
+    static const double mags[] = {1e-8, 2e-8, 5e-8, 1e-7, 2e-7, 5e-7, 1e-6, 2e-6, 5e-6, 1e-5};
+    el_hermite_options o;
+    el_hermite_options_defaults(&o);
+    size_t chains = 0, problems = 0;
+    for (size_t m = 0; m < sizeof mags / sizeof mags[0]; m++)
+        for (int s0 = -1; s0 <= 1; s0 += 2)
+            for (int s1 = -1; s1 <= 1; s1 += 2)
+                for (int i = 0; i <= 16; i++) {
+                    const double a0 = s0 * mags[m], a1 = s1 * mags[m];
+                    const double p0[2] = {0, 0}, p1[2] = {1, 0};
+                    const double t0[2] = {cos(a0), sin(a0)}, t1[2] = {cos(a1), sin(a1)};
+                    o.sigma = 20.0 + 2.5 * i;
+                    el_hermite_result r;
+                    ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_OK);
+                    check_result(p0, t0, p1, t1, &r, o.tol);
+                    for (size_t k = 0; k < r.count; k++) chains += r.solutions[k].npieces > 1;
+                    problems++;
+                    el_hermite_result_free(&r);
+                }
+    const size_t sparse = chains;
+    static const double chis[] = {0.0, 0.7, -2.1}, ds[] = {1.0, 0.37, 2.0};
+    for (int j = -10; j <= 10; j++)
+        for (int i = -5; i <= 5; i++)
+            for (int s1 = -1; s1 <= 1; s1 += 2) {
+                const int f = (j + i + 15) % 3;
+                const double a = 1e-6 * (1.0 + 0.01 * j), chi = chis[f], d = ds[f];
+                const double p0[2] = {0.3, -1.7}, p1[2] = {0.3 + d * cos(chi), -1.7 + d * sin(chi)};
+                const double t0[2] = {cos(chi + a), sin(chi + a)}, t1[2] = {cos(chi + s1 * a), sin(chi + s1 * a)};
+                o.sigma = (35.0 + 0.1 * i) / (d * d);
+                el_hermite_result r;
+                ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_OK);
+                check_result(p0, t0, p1, t1, &r, o.tol);
+                for (size_t k = 0; k < r.count; k++) chains += r.solutions[k].npieces > 1;
+                problems++;
+                el_hermite_result_free(&r);
+            }
+    ck_assert_uint_ge(sparse, 400);
+    ck_assert_uint_ge(chains - sparse, 400);
+    printf("chains near the chord: %zu problems, %zu chains (%zu on the sparse grid)\n", problems, chains, sparse);
+}
+END_TEST
+
+
 START_TEST(opposite_and_parallel_tangents)
 {
     /* t1 = -t0 with p1 across (case 3 of Theorem 6) and t1 = t0 (case 2-like) */
@@ -447,6 +503,7 @@ int main(void)
     tcase_add_test(tc, collinear_data_give_the_straight_segment);
     tcase_add_test(tc, nearly_collinear_tangents_give_the_near_straight_curve);
     tcase_add_test(tc, tangents_near_the_chord_give_the_near_straight_curve);
+    tcase_add_test(tc, chains_near_the_chord_meet_the_joint_bound);
     tcase_add_test(tc, opposite_and_parallel_tangents);
     tcase_add_test(tc, circle_is_found_to_its_accuracy);
     tcase_add_test(tc, semicircle_counted_not_dropped);
