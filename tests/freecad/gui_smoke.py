@@ -19,7 +19,8 @@ the warning line), gui_spline_g2.png (a G2 start),
 gui_spline_panel.png, gui_ellblend_panel.png (its warning line), gui_g2quad_panel.png,
 gui_comb_panel.png, gui_blend_no_free_batten.png (the note why by length),
 gui_blend_undo.png and gui_fit_undo.png (Edit > Undo during an edit:
-the panel closed). The outcome goes
+the panel closed); gui_panel_lifecycle.py's gui_close_with_panel.png,
+gui_delete_during_panel.png and gui_keep_needs_copy.png. The outcome goes
 to gui_smoke.result (first line PASS or FAIL); FreeCAD is then ended with os._exit
 because its exit status says nothing about a script. Only APIs present in FreeCAD
 0.20 and 1.0 are used (PySide through FreeCAD's shim)."""
@@ -995,6 +996,10 @@ def run():
     App.closeDocument(empty.Name)
     check(frac > 0.003 and ncol >= 3, f"screenshot {path}: {100 * frac:.2f}% drawn, "
                                       f"{ncol} colours")
+
+    # a panel open while the user deletes, closes the document, or asks to keep nothing
+    import gui_panel_lifecycle
+    gui_panel_lifecycle.run_all(sys.modules[__name__])
 
 
 def main():

@@ -160,6 +160,18 @@ class _Watch:
         if self.mine(doc):
             self.panel.lost("Redo replaced its edit")
 
+    def slotDeletedDocument(self, doc):
+        # File > Close (its GUI document gone, FreeCAD's unsetEdit closed a panel in edit
+        # mode): the panel stayed on the Start page, its OK and Cancel on a deleted document
+        if self.mine(doc):
+            self.panel.lost("its document closed")
+
+    def slotCommitTransaction(self, doc):
+        # a command run while the panel is open commits every pending transaction as it
+        # opens its own (Std_Delete: App::Application::setActiveTransaction)
+        if self.mine(doc):
+            self.panel.committed_by_other()
+
 
 class Panel:
     """Shared machinery: bound fields, the delayed recompute, result text, the undo
@@ -178,6 +190,12 @@ class Panel:
         self.watch = _Watch(self)
         App.addDocumentObserver(self.watch)
         self.created = created          # a command made it: its transaction is still open
+        # the panel's transaction (the command's, or this edit's) and how many of its pieces
+        # another command committed (Cancel undoes them: committed_by_other)
+        self.txn = (doc_undo_top(self.doc) if created and self.doc.HasPendingTransaction
+                    else "") or f"Edit {obj.Label}"
+        self.orphans = 0
+        self.closing = False
         self.enablers = []              # (widget, callable -> bool)
         self.edge_buttons = []          # (edge link property, button, text when empty)
         self.timer = QtCore.QTimer()
@@ -380,11 +398,14 @@ class Panel:
     def output_rows(self, grid, exclude, new_label):
         """Keep the feature or not; copy its B-spline into a sketch (not those in exclude)."""
         self.keep = self.check(grid, "Keep the parametric feature", "_keep",
-                               "Unchecked: OK removes the feature (keep only the sketch copy)",
-                               target=self)
+                               "Unchecked: OK removes the feature and keeps only its copy in the "
+                               "sketch chosen under Copy into (choose one first: without a copy "
+                               "OK would keep nothing)", target=self,
+                               when=lambda: bool(self.copy_target()))
         self.sketch = _narrow(QtGui.QComboBox())
         self.sketch_exclude, self.sketch_new = list(exclude), new_label
         self.offer_sketches()
+        self.sketch.currentIndexChanged.connect(lambda _i: self.refresh_enabled())
         self.row(grid, "Copy into", self.sketch,
                  "OK copies the B-spline into this sketch: a copy, which does not follow later "
                  "edits (the feature does); only sketches in the curve's plane are offered")
@@ -421,6 +442,8 @@ class Panel:
             return
         target = target if target is not None else self.obj
         if getattr(target, prop) != value:
+            if target is not self and not self.doc.HasPendingTransaction:
+                self.doc.openTransaction(self.txn)   # its own was committed by a command
             setattr(target, prop, value)
             self.changed(prop)
             if target is self.obj:
@@ -485,8 +508,16 @@ class Panel:
         self.refresh_enabled()
 
     def refresh_enabled(self):
+        if not self._keep and not self.copy_target():
+            # no copy chosen (or the one chosen no longer offered): OK would keep nothing,
+            # and left an Undo step that did nothing (QA); the feature is kept
+            self.keep.setChecked(True)
         for w, when in self.enablers:
             w.setEnabled(bool(when()))
+
+    def copy_target(self):
+        """Copy into's choice: a sketch's name, '*new*', or '' (no copy)."""
+        return self.sketch.itemData(self.sketch.currentIndex()) if hasattr(self, "sketch") else ""
 
     def result_text(self):
         return f"status: {self.obj.Status}"
@@ -498,7 +529,7 @@ class Panel:
 
     def copy_code(self):
         """Python of OK's copy into a sketch (recorded), or ''."""
-        target = self.sketch.itemData(self.sketch.currentIndex()) if hasattr(self, "sketch") else ""
+        target = self.copy_target()
         if not target:
             return ""
         doc = f"App.getDocument({self.doc.Name!r})"
@@ -510,6 +541,14 @@ class Panel:
             code += f"_sk = {doc}.getObject({target!r})\n"
         return code + (f"elastica_geometry.write_to_sketch({doc}.getObject({self.obj.Name!r}), "
                        "_sk)\n")
+
+    def committed_by_other(self):
+        """A command run during the edit committed the panel's transaction (every command
+        that opens a transaction does: Std_Delete, even when it deletes nothing, for the
+        object in edit refuses deletions): its edits so far are an Undo step of their own,
+        which Cancel undoes, and the next edit opens the transaction again (``set``)."""
+        if not self.closing and doc_undo_top(self.doc) == self.txn:
+            self.orphans += 1
 
     def lost(self, why):
         """The feature left the document, or an undo / redo took the panel's transaction
@@ -523,6 +562,11 @@ class Panel:
     def gone_away(self):
         """The panel closes without OK or Cancel (``lost``)."""
         self.timer.stop()
+        self.closing = True
+        try:
+            App.removeDocumentObserver(self.watch)
+        except Exception:  # already removed
+            pass
         if CURRENT and CURRENT[0] is self:
             App.Console.PrintWarning(f"Elastica: {self.name}: {self.gone or 'undone or deleted'}; "
                                      "its panel closes\n")
@@ -537,6 +581,11 @@ class Panel:
             App.Console.PrintError(f"Elastica: {self.obj.Status}\n")
             return False          # stay open: the user fixes the input or cancels
         code = self.copy_code()
+        if not code and not self._keep:   # refresh_enabled keeps this from happening
+            self.keep.setChecked(True)
+        self.closing = True
+        if code or not self._keep:
+            self.hold()
         if code:
             Gui.doCommandGui(code)
         if not self._keep:
@@ -546,13 +595,32 @@ class Panel:
         self._close()
         return True
 
+    def hold(self):
+        """The panel's transaction open (a command may have committed it)."""
+        if not self.doc.HasPendingTransaction:
+            self.doc.openTransaction(self.txn)
+
     def reject(self):
         self.timer.stop()
         if self.gone:               # nothing of the panel's left to revert
             self.gone_away()
             return True
+        self.closing = True
+        try:
+            App.removeDocumentObserver(self.watch)   # its own undo below closes nothing
+        except Exception:  # already removed
+            pass
         name = self.obj.Name
         self.doc.abortTransaction()
+        # the pieces of the edit another command committed (committed_by_other), while they
+        # are the last Undo steps
+        while self.orphans and doc_undo_top(self.doc) == self.txn:
+            self.doc.undo()
+            self.orphans -= 1
+        if self.orphans:
+            App.Console.PrintWarning(
+                f"Elastica: {name}: Cancel could not revert the edit before "
+                f"'{doc_undo_top(self.doc)}' (Edit > Undo reverts both)\n")
         # without undo (UndoMode 0) the abort keeps a fresh feature: remove it
         if self.created and name in [o.Name for o in self.doc.Objects]:
             self.doc.removeObject(name)
@@ -567,8 +635,17 @@ class Panel:
         except Exception:  # already removed (a second close)
             pass
         Gui.Control.closeDialog()
-        if Gui.ActiveDocument is not None:
-            Gui.ActiveDocument.resetEdit()
+        if self.doc_name in App.listDocuments():    # not a document closed under it
+            gdoc = Gui.getDocument(self.doc_name)
+            if gdoc is not None and gdoc.getInEdit() is not None:
+                gdoc.resetEdit()
+
+
+def doc_undo_top(doc):
+    """The name of a document's last Undo step (its pending transaction's when one is
+    open), or ''."""
+    names = doc.UndoNames
+    return names[0] if names else ""
 
 
 def show_box(box):

@@ -143,8 +143,31 @@ def gather_points(sources, csv_file="", samples_per_edge=60, link=None, element=
         raise InputProblem("select either edges, or vertices, or a Points object, not a mix")
     if edges:
         pts, closed = sample_edges(edges, samples_per_edge)
+        _few_line_points(sources, edges, pts, closed)
         return pts, plane, True, closed
     return dedup(vertices or points), plane, False, False
+
+
+def _is_line(e):
+    return isinstance(e.Curve, Part.Line) or e.Curve.TypeId == "Part::GeomLine"
+
+
+def _few_line_points(sources, edges, pts, closed):
+    """InputProblem naming the straight lines a fit was given when their end points are too
+    few to fit (a sketch of one 30 mm line was refused as '2 points: a fit needs at least 6',
+    points nobody selected, QA)."""
+    from .fit import MIN_POINTS
+    if closed or len(pts) >= MIN_POINTS or not all(_is_line(e) for e in edges):
+        return
+    lines = "one straight line" if len(edges) == 1 else f"{len(edges)} straight lines"
+    size = f" ({sum(e.Length for e in edges):.4g} mm)"
+    whole = [o for o, subs in sources if not _subs(subs)]
+    what = (f"{whole[0].Label} holds {lines}{size}" if len(sources) == 1 and whole else
+            f"the selection is {lines}{size}")
+    raise InputProblem(f"{what}, whose {len(pts)} end points are all a fit gets from "
+                       f"{'it' if len(edges) == 1 else 'them'}: a fit "
+                       f"takes {MIN_POINTS} points or more (sketch points or vertices, a polyline "
+                       f"of {MIN_POINTS - 1} lines or more) or a curved edge, which it samples")
 
 
 def _edges_left_out(label, n_pts, n_edges):
@@ -409,6 +432,23 @@ def object_points(obj, curve_ordered=False):
     return wire_points(shape) or [v.Point for v in shape.Vertexes]
 
 
+_CLOSED_KINDS = {"Part::GeomCircle": "a circle", "Part::GeomEllipse": "an ellipse"}
+
+
+def _closed_curves(obj):
+    """What a whole object is when it is closed curves only, without points of its own
+    ('a circle', '2 closed curves'), else '': its one seam vertex each was taken for the
+    points to go through ('1 point: an elastic spline needs at least 2' for a circle, QA)."""
+    if obj.isDerivedFrom("Points::Feature") or (is_sketch(obj) and sketch_points(obj)):
+        return ""
+    shape = global_shape(obj)
+    if shape.isNull() or not shape.Edges or not all(e.isClosed() for e in shape.Edges):
+        return ""
+    if len(shape.Edges) > 1:
+        return f"{len(shape.Edges)} closed curves"
+    return _CLOSED_KINDS.get(shape.Edges[0].Curve.TypeId, "a closed curve")
+
+
 def gather_vertices(sources, need="four vertices, or a sketch of four points",
                     edge_means_object=False, curve_ordered=False, link=None, element=None):
     """Picked points in selection order, without merging coincident ones: vertices
@@ -432,6 +472,10 @@ def gather_vertices(sources, need="four vertices, or a sketch of four points",
         if edge_means_object and any(s.startswith("Edge") for s in subs):
             subs = []
         if not subs:
+            closed = _closed_curves(obj)
+            if closed:
+                raise InputProblem(f"{obj.Label} holds {closed}, without points to go through: "
+                                   f"select {need}")
             pts.extend(object_points(obj, curve_ordered))
             continue
         for s in subs:

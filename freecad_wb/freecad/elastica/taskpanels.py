@@ -534,8 +534,18 @@ def open_for(obj, created=False, note=""):
             return True
         message(DIALOG_OPEN)
         return False
+    if created:
+        # as Part_Offset2D's panel: the selection the command read is cleared (Delete took
+        # the source sketch away under the new feature)
+        Gui.Selection.clearSelection()
     p = panel(obj, created or bool(getattr(obj.Proxy, "fresh", False)), note=note)
     obj.Proxy.fresh = False
     CURRENT[:] = [p]
     Gui.Control.showDialog(p)
+    gdoc = Gui.getDocument(obj.Document.Name)
+    if created and gdoc.getInEdit() is None:
+        # a command's new feature in edit, as FreeCAD's commands put theirs (setEdit after
+        # making it): Std_Delete deletes nothing then, and closing the document ends the
+        # edit and the panel (the view provider's setEdit finds this panel open)
+        gdoc.setEdit(obj.Name, 0)
     return True

@@ -374,6 +374,10 @@ class ViewProvider:
 
     def unsetEdit(self, vobj, mode=0):
         import FreeCADGui as Gui
+        from .panelbase import CURRENT
+        panel = CURRENT[0] if CURRENT else None
+        if panel is not None and not panel.closing and getattr(panel, "obj", None) is vobj.Object:
+            panel.lost("its edit ended")    # FreeCAD ended it: its document is closing
         Gui.Control.closeDialog()
         return True
 

@@ -1,0 +1,180 @@
+"""The Elastica task panels through what else a user does while one is open, checked
+by the GUI smoke test (gui_smoke.py calls run_all): FreeCAD's own panels
+(Part_Offset2D's) are the model (QA defects of 0.20):
+
+- File > Close (Discard) with a panel open closes the panel (it stayed on the Start
+  page, its Cancel and OK raising ReferenceError on the deleted document);
+- a new feature's panel clears the command's selection and puts the feature in edit,
+  so Delete deletes nothing (it deleted the source sketch under the new feature);
+- Delete during an edit commits the panel's transaction (every command that opens one
+  does): Cancel still reverts the edit (it kept it);
+- 'Keep the parametric feature' cannot be unchecked without a Copy into sketch (OK
+  kept nothing and left an Undo step that did nothing).
+
+Screenshots: gui_close_with_panel.png (the task view empty after the close),
+gui_delete_during_panel.png, gui_keep_needs_copy.png (the Keep box disabled)."""
+import FreeCAD as App
+import FreeCADGui as Gui
+from PySide import QtCore, QtGui
+
+import elastica_samples as S
+
+G = None            # the gui_smoke module (check, wait, screenshot, type_into, double_click)
+
+
+def answer_modal(button, tries=20):
+    """Answer the next modal dialog with ``button`` (gives up after ``tries`` polls, so
+    it never answers a later one); returns the list its text is appended to."""
+    said = []
+
+    def poll(left):
+        w = QtGui.QApplication.activeModalWidget()
+        if w is None:
+            if left:
+                QtCore.QTimer.singleShot(100, lambda: poll(left - 1))
+            return
+        said.append(w.text() if hasattr(w, "text") else w.windowTitle())
+        for b in w.findChildren(QtGui.QAbstractButton):
+            if b.text().replace("&", "") == button:
+                b.click()
+                return
+        w.reject()
+    QtCore.QTimer.singleShot(100, lambda: poll(tries))
+    return said
+
+
+def task_buttons():
+    return [b.text().replace("&", "") for bb in Gui.getMainWindow().findChildren(QtGui.QDialogButtonBox)
+            if bb.isVisible() for b in bb.buttons()]
+
+
+def fit_doc(name):
+    doc = S.new_doc(name)
+    sk = S.points_sketch(doc, S.keyline_xy(14)[0], "Points")
+    Gui.SendMsgToActiveView("ViewFit")
+    return doc, sk
+
+
+def run_fit(doc, sk):
+    from freecad.elastica import taskpanels as T
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(doc.Name, sk.Name)
+    Gui.runCommand("Elastica_Fit")
+    G.wait(300)
+    return T.CURRENT[0] if T.CURRENT else None
+
+
+def close_with_panel(edit):
+    """File > Close, Discard, with a new feature's panel (edit False) or an edit's open."""
+    from freecad.elastica import taskpanels as T
+    what = "an edit panel" if edit else "a new feature's panel"
+    doc, sk = fit_doc("ElasticaClose")
+    panel = run_fit(doc, sk)
+    if edit:
+        panel.accept()
+        G.pump()
+        panel = G.double_click(doc.getObject("ElasticaFit"))
+    G.type_into(panel.step, "3")
+    G.wait()
+    G.check(panel is not None and Gui.Control.activeDialog(), f"close with {what}: panel open")
+    name = doc.Name
+    said = answer_modal("Discard")
+    Gui.runCommand("Std_CloseActiveWindow")
+    G.wait(800)
+    if edit:
+        G.screenshot("gui_close_with_panel.png")
+    G.check(said and name not in App.listDocuments() and not T.CURRENT
+            and not Gui.Control.activeDialog() and not task_buttons(),
+            f"File > Close (Discard) with {what} open closes the panel ({said}, dialog "
+            f"{Gui.Control.activeDialog()}, buttons {task_buttons()})")
+    G.check(panel.gone and panel.reject() is True and panel.accept() is True,
+            f"close with {what}: its Cancel or OK afterwards raises nothing")
+
+
+def delete_during_new_panel():
+    from freecad.elastica import taskpanels as T
+    doc, sk = fit_doc("ElasticaDeleteNew")
+    undo0 = list(doc.UndoNames)
+    panel = run_fit(doc, sk)
+    G.check(not Gui.Selection.getSelectionEx() and Gui.ActiveDocument.getInEdit() is not None,
+            "a new feature's panel clears the selection and puts the feature in edit "
+            f"({[s.ObjectName for s in Gui.Selection.getSelectionEx()]})")
+    Gui.Selection.addSelection(doc.Name, sk.Name)
+    said = answer_modal("Yes", tries=5)
+    Gui.runCommand("Std_Delete")
+    G.wait(700)
+    G.screenshot("gui_delete_during_panel.png")
+    names = [o.Name for o in doc.Objects]
+    G.check(names == ["Points", "ElasticaFit"] and T.CURRENT and T.CURRENT[0] is panel,
+            f"Delete during a new feature's panel deletes nothing ({names}, {said})")
+    panel.reject()
+    G.pump()
+    names = [o.Name for o in doc.Objects]
+    G.check(names == ["Points"] and list(doc.UndoNames) == undo0 and not T.CURRENT,
+            f"Cancel after Delete removes the new feature, nothing else ({names}, "
+            f"{doc.UndoNames})")
+    App.closeDocument(doc.Name)
+
+
+def delete_during_edit():
+    from freecad.elastica import taskpanels as T
+    doc, sk = fit_doc("ElasticaDeleteEdit")
+    run_fit(doc, sk).accept()
+    G.pump()
+    fit = doc.getObject("ElasticaFit")
+    undo0, shape0 = list(doc.UndoNames), round(fit.Shape.Length, 9)
+    panel = G.double_click(fit)
+    G.type_into(panel.step, "4")
+    G.wait()
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(doc.Name, sk.Name)
+    answer_modal("Yes", tries=5)
+    Gui.runCommand("Std_Delete")
+    G.wait(700)
+    G.check([o.Name for o in doc.Objects] == ["Points", "ElasticaFit"] and T.CURRENT,
+            "Delete during an edit deletes nothing")
+    model0 = fit.Model
+    panel.model.setCurrentIndex(1 - panel.model.currentIndex())   # an edit after its commit
+    G.wait()
+    panel.reject()
+    G.pump()
+    G.check(fit.ResampleStep.Value == 0 and fit.Model == model0 and
+            round(fit.Shape.Length, 9) == shape0 and list(doc.UndoNames) == undo0,
+            f"Cancel after Delete during an edit reverts the edit (step {fit.ResampleStep}, "
+            f"model {fit.Model}, undo {doc.UndoNames})")
+    App.closeDocument(doc.Name)
+
+
+def keep_needs_a_copy():
+    doc, sk = fit_doc("ElasticaKeep")
+    panel = run_fit(doc, sk)
+    areas = [a for a in Gui.getMainWindow().findChildren(QtGui.QScrollArea)
+             if a.isVisible() and a.widget() is not None and a.isAncestorOf(panel.form[0])]
+    if areas:
+        areas[0].ensureWidgetVisible(panel.sketch)
+    G.check(panel.sketch.currentIndex() == 0 and not panel.keep.isEnabled(),
+            "Keep the parametric feature is disabled while Copy into is '(no copy)'")
+    G.screenshot("gui_keep_needs_copy.png")
+    panel.keep.setChecked(False)
+    G.check(panel.keep.isChecked(), "Keep cannot be unchecked without a copy")
+    panel.sketch.setCurrentIndex(panel.sketch.findData("*new*"))
+    G.check(panel.keep.isEnabled(), "Keep is enabled once a sketch is chosen to copy into")
+    panel.keep.setChecked(False)
+    panel.sketch.setCurrentIndex(0)
+    G.check(panel.keep.isChecked() and not panel.keep.isEnabled(),
+            "Copy into back at '(no copy)' checks Keep again")
+    panel.accept()
+    G.pump()
+    G.check(doc.getObject("ElasticaFit") is not None and list(doc.UndoNames) == ["Fit elastica"],
+            "OK without a copy keeps the feature")
+    App.closeDocument(doc.Name)
+
+
+def run_all(smoke):
+    global G
+    G = smoke
+    delete_during_new_panel()
+    delete_during_edit()
+    keep_needs_a_copy()
+    close_with_panel(edit=False)
+    close_with_panel(edit=True)
