@@ -5,8 +5,8 @@ from .core import DiscreteElastica, SmoothElastica
 from . import io
 from .fit import (ConstraintError, FitResult, KeylineFit, far_points, far_points_summary, fit,
                   fit_keyline)
-from .prep import (RESAMPLE_MAX_VERTICES, Frame, Frame2D, find_inflection, pca_normalize, plane_fit,
-                   prepare_keyline, resample_equilateral)
+from .prep import (KEYLINE_STEPS, RESAMPLE_MAX_VERTICES, Frame, Frame2D, find_inflection, keyline_runs,
+                   keyline_step, pca_normalize, plane_fit, prepare_keyline, resample_equilateral)
 from .blend import BlendCurve, EllipticBlend, MQBlend, blend_curve, eck_d, eck_omega
 from .hermite import HERMITE_SIGMA_D2_MAX, HermiteChain, HermiteSolutions, hermite, hermite_analyse
 from .spline import ElasticSpline, elastic_spline

@@ -462,7 +462,9 @@ def build_parser() -> argparse.ArgumentParser:
     c.add_argument("--k", dest="k_range", metavar="K|LO,HI",
                    help="the modulus k, or its range (either end may be empty)")
     f.add_argument("--step", type=POSITIVE, metavar="R",
-                   help="resample into an equilateral polygon of segment R first")
+                   help="resample into an equilateral polygon of segment R first (--keyline "
+                        "without it: the polyline through the medians of runs of the points, "
+                        "cut into 100 segments)")
     f.add_argument("--json", metavar="PATH", help="write the result as JSON ('-' = stdout)")
     f.add_argument("--svg", metavar="PATH", help="write the report picture as SVG")
     f.add_argument("--png", metavar="PATH", help="write the report picture as PNG (matplotlib)")

@@ -594,7 +594,9 @@ def _check_keyline_split(polygon, side_points, split: int, keyline_rms: Optional
 def fit_keyline(points, r: Optional[float] = None, model: str = "discrete", side: int = 0,
                 **kwargs) -> KeylineFit:
     """Seed 000 §5 as one problem: plane fit (3D input), equilateral resampling with
-    segment ``r`` (default: 1/100 of the polyline's length), PCA re-normalisation, the
+    segment ``r`` (default None: the polyline through the medians of runs of the points,
+    cut into KEYLINE_STEPS segments, prep.keyline_runs / keyline_step: noise-robust),
+    PCA re-normalisation, the
     inflection estimate, then one G2 curve of two elasticae sharing the joint, its
     tangent and zero curvature there. The joint starts at the refined inflection
     estimate (each side fitted alone, the zeros of their curvature) and moves along the
@@ -614,8 +616,6 @@ def fit_keyline(points, r: Optional[float] = None, model: str = "discrete", side
     if not np.all(np.isfinite(pts)):
         raise ValueError("fit_keyline: points must be finite (no NaN/inf)")
     o = _keyline_options(model, dict(kwargs))
-    if r is None:
-        r = float(np.sum(np.linalg.norm(np.diff(pts, axis=0), axis=1))) / 100.0
     prep = prepare_keyline(pts, r, side)
     a, b = prep.sides()                    # DomainError when there is no inflection
     if len(a) < MIN_SIDE or len(b) < MIN_SIDE:

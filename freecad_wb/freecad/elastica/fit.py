@@ -343,33 +343,22 @@ def _apart(p, q):
     return float(np().hypot(*(p - q))) > 1e-12 * (1.0 + float(np().abs(q).max()))
 
 
-# A split keyline's polygon step where Resample is 0: 1/KEYLINE_STEPS of the points' run,
-# the polyline through their medians in runs of n / KEYLINE_STEPS along their order (and
-# their ends). The polyline through the points themselves is their noise's zigzag: a scan
-# of 20 000 points, 0.3 mm noise, ran 7689 mm along a 330 mm curve (a step of 77 mm: 4
-# segments, the inflection refused); 5000 points, 0.15 mm: 1120 mm (step 11 mm: the
-# discrete fit's rms 0.635 mm, max 7.1, against 0.163 / 0.58 with a step of 3.3 mm).
-KEYLINE_STEPS = 100
-
-
 def _keyline_step(xy):
-    """The default step of a split keyline's polygon (KEYLINE_STEPS) for points xy in
-    their order; up to 2 KEYLINE_STEPS points, 1/KEYLINE_STEPS of their polyline."""
-    n = np()
-    k = max(1, len(xy) // KEYLINE_STEPS)
-    runs = n.median(xy[:len(xy) // k * k].reshape(-1, k, 2), axis=1)
-    return polyline_length(n.vstack([xy[:1], runs, xy[-1:]])) / KEYLINE_STEPS
+    """The default step of a split keyline's polygon, the binding's (el.keyline_step:
+    1/KEYLINE_STEPS of the polyline through the medians of runs of the points, robust
+    to their noise's zigzag); fit_keyline resamples that polyline where Resample is 0."""
+    return el().keyline_step(xy)
 
 
 def _default_step_name(step):
     """What the default step of a split keyline is, for messages."""
-    return (f"the default step, {step:.3g} mm = 1/{KEYLINE_STEPS} of the points' run "
+    return (f"the default step, {step:.3g} mm = 1/{el().KEYLINE_STEPS} of the points' run "
             "through their medians in runs along it")
 
 
 def _keyline(xy, model, step):
     """The keyline of points xy as one G2 curve (el.fit_keyline, its polygon's step
-    ``step``): its two halves as
+    ``step``, None for the binding's default): its two halves as
     the library gives them (plane coordinates, each from the joint outwards, with
     opposite tangents and zero curvature there), the results, and the fitted points,
     feet and signed distances (+ = left of the travel) in the order of travel from
@@ -574,7 +563,7 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
             default = _keyline_step(xy)
             _check_reach(xy, step, [0, -1], default)
             used = step if step > 0 else default
-            fitted = _keyline(xy, model, used)
+            fitted = _keyline(xy, model, step if step > 0 else None)   # None: the default
         else:
             fixed = {}
             if step > 0:
@@ -729,9 +718,9 @@ class FitProxy(FeatureProxy):
             obj.removeProperty("PinEnds")
         add_length(obj, "ResampleStep", "Fit",
                    "Equilateral resampling step (mm) before fitting; 0 keeps the points. A "
-                   "split keyline: the step of its preparation (0 = 1/100 of the points' "
-                   "run, through their medians in runs along it: scan noise does not "
-                   "lengthen it); the discrete one fits that polygon, the smooth one the "
+                   "split keyline: the step of its preparation (0 = the polyline through the "
+                   "medians of runs of the points, cut into 100 segments: scan noise does "
+                   "not lengthen it); the discrete one fits that polygon, the smooth one the "
                    "points themselves", 0.0)
         add_length(obj, "Tolerance", "BSpline",
                    "Largest distance (mm) of the B-spline from the fitted smooth elastica", tol)

@@ -41,8 +41,9 @@ class FitPanel(Panel):
                                     when=lambda: o.Model == "smooth" and not o.SplitAtInflection)
         self.step = self.number(g, "Resample", "ResampleStep", 0.0, 1e6, 0.5, "mm",
                                 "Equilateral resampling step before fitting (mm); 0 keeps the "
-                                "points (a split keyline then uses 1/100 of the points' run, "
-                                "through their medians in runs: scan noise does not lengthen it)")
+                                "points (a split keyline then cuts the polyline through the "
+                                "medians of runs of its points into 100 segments: scan noise "
+                                "does not lengthen it)")
         self.split = self.check(g, "Split at the inflection", "SplitAtInflection",
                                 "Fit a keyline as one G2 curve of two elasticae meeting at its "
                                 "inflection (seed 000 §5); its ends stay free")
