@@ -3,6 +3,7 @@ interpolation, B-splines (Python binding of the C library)."""
 from ._ffi import DomainError, ElasticaError, NotConvergedError, SingularError
 from .core import DiscreteElastica, SmoothElastica
 from . import io
+from .cubic import SPARSE_POINTS, cubic_distances, smooth_fits_better
 from .fit import (ConstraintError, FitResult, KeylineFit, far_points, far_points_summary, fit,
                   fit_keyline)
 from .prep import (KEYLINE_STEPS, RESAMPLE_MAX_VERTICES, Frame, Frame2D, find_inflection, keyline_runs,

@@ -470,7 +470,8 @@ def build_parser() -> argparse.ArgumentParser:
     f.add_argument("--png", metavar="PATH", help="write the report picture as PNG (matplotlib)")
     f.add_argument("--bspline-tol", type=POSITIVE, metavar="TOL",
                    help="add the B-spline of the fitted curve (within TOL for smooth; "
-                        "discrete: the C2 cubic through the vertices, with the end constraints)")
+                        "discrete: the C2 cubic through the vertices, with the end constraints, "
+                        "and the points' distances to it)")
     f.add_argument("--degree", type=DEGREE, default=3, help="B-spline degree 3..7 (default 3)")
     f.add_argument("--max-iter", type=_ranged(int, lo=1), metavar="N",
                    help="Ipopt iterations per start (default 200)")

@@ -92,6 +92,38 @@ def _warn_far_points(path, rec: Dict[str, Any]) -> None:
           "remove them to fit the rest", file=sys.stderr)
 
 
+def _cubic_figures(doc: Dict[str, Any], res, bspline, pts: np.ndarray) -> None:
+    """A discrete fit's exported cubic measured against the points, kept as the document's
+    "bspline_rms" / "bspline_max_error": the fitted points' (one piece), the file's points'
+    in the keyline's plane (a keyline; x''y'' as its B-spline). Its rms / max error are the
+    polygon's, and the C2 cubic through the vertices runs elsewhere between them."""
+    from .nearest import nearest_on
+    if hasattr(res, "prepared"):
+        prep = res.prepared
+        xy = prep.frame.project(pts) if prep.frame is not None else pts[:, :2]
+        d = nearest_on(bspline, np.ascontiguousarray(prep.frame2d.to_local(xy)))[1]
+    else:
+        d = res.cubic_distances(bspline)[1]
+    doc["bspline_rms"] = float(np.sqrt(np.mean(d ** 2)))
+    doc["bspline_max_error"] = float(np.max(np.abs(d)))
+
+
+def _warn_coarse_polygon(path, rec: Dict[str, Any], data: np.ndarray, res) -> None:
+    """A warning on stderr when a discrete fit of few points (el.SPARSE_POINTS) lies far
+    farther from them than the smooth model's curve (el.smooth_fits_better): its polygon,
+    or its exported cubic where that lies farther."""
+    import libelastica as el
+    rms = max(float(res.rms), rec.get("bspline_rms", 0.0))
+    smooth = el.smooth_fits_better(data[:, :2], rms, res.constraints)
+    if smooth is None:
+        return
+    cubic = (f", its B-spline {rec['bspline_rms']:.3g}" if "bspline_rms" in rec else "")
+    print(f"{PROG} fit: warning: {path}: {len(data)} points give the discrete model a polygon "
+          f"of {len(data) - 1} segments, {res.rms:.3g} from them (rms){cubic}, where the smooth "
+          f"model's curve lies {smooth:.3g} from them: use --model smooth for so few points",
+          file=sys.stderr)
+
+
 def _constraints(args, data: np.ndarray) -> Dict[str, Any]:
     """el.fit's constraints from the command line (angles in degrees there)."""
     con: Dict[str, Any] = {}
@@ -191,6 +223,10 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
         else:
             splines.append(res.to_bspline(tol, args.degree))   # a discrete fit's: its ends
             records[0]["bspline"] = splines[0].to_dict()
+        if args.model == "discrete":     # the cubic through the vertices is not the polygon
+            _cubic_figures(doc, kres if args.keyline else res, splines[0], pts)
+    if args.model == "discrete" and not args.keyline:
+        _warn_coarse_polygon(path, records[0], data, res)
     # the DXF gets the curves in the input's coordinates (3D for 3D input)
     splines = [_mapped_bspline(b, to_input) for b in splines]
     _write_fit_outputs(path, args, batch, doc, records, pictures, splines, pts)
@@ -264,7 +300,16 @@ def _print_fit(rec: Dict[str, Any]) -> None:
         print(f"iterations  {rec['iterations']}")
     if rec.get("bspline"):
         _print_bspline(rec["bspline"])
+        _print_cubic(rec, "points")
     print(f"status      {rec['status']}")
+
+
+def _print_cubic(rec: Dict[str, Any], whose: str) -> None:
+    """A discrete fit's B-spline's own distances to the points (_cubic_figures)."""
+    if "bspline_rms" in rec:
+        print(f"            the {whose} lie rms {_fmt(rec['bspline_rms'])}, max "
+              f"{_fmt(rec['bspline_max_error'])} from it (the rms and max error above "
+              "are to the polygon)")
 
 
 def _print_bspline(b: Dict[str, Any], what: str = "") -> None:
@@ -292,6 +337,7 @@ def cmd_fit(args) -> int:
                       f"   (the file's {r['input_points']} points to the keyline, in its plane)")
                 if doc.get("bspline"):
                     _print_bspline(doc["bspline"], "of the keyline: ")
+                    _print_cubic(doc, "file's points")
         return EXIT_OK if all(r["converged"] for r in recs) else EXIT_NOCONV
     progress = _Progress(len(files), args.progress or sys.stderr.isatty())
     rows, all_recs, docs, bad = [], [], [], 0

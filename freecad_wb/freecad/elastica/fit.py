@@ -430,26 +430,12 @@ def _shape_bspline(model, curves, results, split, tol, degree, tails=None):
     return results[0].to_bspline()          # the fit's end constraints on the cubic
 
 
-# A discrete fit of few points is a polygon of as few segments, which cannot follow a
-# curved run of points the smooth model follows (measured on 300 sparse noisy sketches of
-# bench_fit_sparse.py's kind, free ends: with 6-9 points 7 of 19 discrete fits above twice
-# the smooth one's rms, 5 above 4 times; with 10-14 points 5 of 18, with 15-24 3 of 72,
-# with 25 or more none of 191). Below SPARSE_POINTS the smooth fit is run to compare.
-SPARSE_POINTS = 25
-
-
 def _coarse_polygon(xy, constraints, rms):
-    """The warning for a discrete fit of fewer than SPARSE_POINTS points whose polygon
-    lies COST_RATIO times farther from them than the smooth model's curve (and by more
-    than COST_FLOOR of the data's extent), else none."""
-    if len(xy) >= SPARSE_POINTS:
-        return []
-    try:
-        smooth = el().fit(xy, model="smooth", constraints=constraints or None).rms
-    except (ValueError, ArithmeticError, RuntimeError):
-        return []
-    extent = float(np().ptp(xy, axis=0).max())
-    if not (rms > COST_RATIO * smooth and rms - smooth > COST_FLOOR * extent):
+    """The warning for a discrete fit of fewer than el.SPARSE_POINTS points whose cubic
+    lies rms from them where the smooth model's curve lies far nearer
+    (el.smooth_fits_better), else none."""
+    smooth = el().smooth_fits_better(xy, rms, constraints)
+    if smooth is None:
         return []
     return [f"{len(xy)} points give the discrete model a polygon of {len(xy) - 1} segments, "
             f"its cubic {rms:.3g} mm from them (rms), where the smooth model's curve lies {smooth:.3g} mm "

@@ -1,0 +1,61 @@
+"""What a discrete fit's exported B-spline is to the points. A discrete fit's rms,
+max_error and distances are the points' distances to its polygon; FitResult.to_bspline
+exports the C2 cubic through the polygon's vertices, which runs elsewhere between them
+(a 7-click sketch: polygon rms 0.316 / max 0.561, its cubic 0.647 / 1.487, the smooth
+model's curve 0.031). :func:`cubic_distances` measures the points against that cubic;
+:func:`smooth_fits_better` says when few points are better fitted by the smooth model
+(`elastica fit`'s and the FreeCAD Fit feature's warnings)."""
+from __future__ import annotations
+
+from typing import Optional, Tuple
+
+import numpy as np
+
+__all__ = ["SPARSE_POINTS", "SPARSE_RATIO", "SPARSE_FLOOR", "cubic_distances",
+           "smooth_fits_better"]
+
+# A discrete fit of few points is a polygon of as few segments, which cannot follow a
+# curved run of points the smooth model follows (measured on 300 sparse noisy sketches of
+# bench_fit_sparse.py's kind, free ends: with 6-9 points 7 of 19 discrete fits above twice
+# the smooth one's rms, 5 above 4 times; with 10-14 points 5 of 18, with 15-24 3 of 72,
+# with 25 or more none of 191). Below SPARSE_POINTS the smooth fit is run to compare (a
+# smooth fit of so few points takes milliseconds); it fits far better when its rms is
+# below 1 / SPARSE_RATIO of the discrete one's, by more than SPARSE_FLOOR of the extent.
+SPARSE_POINTS = 25
+SPARSE_RATIO = 2.0
+SPARSE_FLOOR = 1e-4
+
+
+def cubic_distances(result, bspline=None) -> Tuple[np.ndarray, np.ndarray]:
+    """The fitted points' nearest points (n, 2) on a discrete FitResult's exported cubic
+    (``bspline``, default ``result.to_bspline()``) and their signed distances (n,), + =
+    left of the travel: what the exported curve is from the points, where ``result.
+    distances`` are the polygon's. Searched from each point's polygon foot (the cubic runs
+    through the vertices by chord length) and over every span that may come nearer."""
+    from .core import DiscreteElastica
+    from .nearest import drawn_distances
+    if not isinstance(result.curve, DiscreteElastica):
+        raise ValueError("cubic_distances: a discrete fit's result is needed (a smooth fit's "
+                         "B-spline is within its tol of the curve its distances are to)")
+    b = result.to_bspline() if bspline is None else bspline
+    pts = np.ascontiguousarray(np.asarray(result.points, dtype=float)[:, :2])
+    return drawn_distances(b, pts, result.foot_s)
+
+
+def smooth_fits_better(points, rms: float, constraints=None) -> Optional[float]:
+    """For a discrete fit of fewer than SPARSE_POINTS ``points`` lying ``rms`` from it
+    (the polygon's, or its cubic's): the smooth model's rms on the same points with the
+    same ``constraints`` when it is below rms / SPARSE_RATIO and rms - SPARSE_FLOOR x the
+    points' extent, else None (also when the smooth fit fails: no verdict)."""
+    from .fit import fit
+    pts = np.asarray(points, dtype=float)
+    if len(pts) >= SPARSE_POINTS:
+        return None
+    try:
+        smooth = fit(pts, model="smooth", constraints=constraints or None).rms
+    except (ValueError, ArithmeticError, RuntimeError):
+        return None
+    extent = float(np.ptp(pts, axis=0).max())
+    if rms > SPARSE_RATIO * smooth and rms - smooth > SPARSE_FLOOR * extent:
+        return float(smooth)
+    return None
