@@ -313,6 +313,13 @@ int el__fit_curve_distances(fit_objective *ob, const double *x, double v[2][FIT_
  * the passes cross, adds nothing). Above FIT_STRAY the fit does not follow its points;
  * -1 when out of memory. scale: the data's size (the fit's normalisation, el__fit_normalisation). */
 #define FIT_STRAY 0.1
+/* Above FIT_COIL a fit coils: one loop round all its points adds at most pi x their enclosing
+ * circle's diameter, <= pi 2/sqrt(3) = 3.63 x their polygon's length, so more curve unaccounted
+ * for passes them again and again (fit_restart.c's lowest_that_follows). */
+#define FIT_COIL 4.0
+/* A coiling fit gives way to one within FIT_COIL_TOL of the data's size above it that does not
+ * coil, even one that swings in a gap (lowest_that_follows); not to a stub far from the points. */
+#define FIT_COIL_TOL 0.1
 double el__fit_stray(const double *xy, size_t n, const double *fs, double L, double noise, double scale);
 /* fit_refit.c: el__fit_stray of a fit whose start or end point is held (ends: the start and
  * end points, input units, NaN where not held; NULL: none): the curve from a held end to the

@@ -568,12 +568,17 @@ int el__fit_fallback_unless_loops(int model, const double *xy, size_t n, const e
  * hid a curve 2.2 x their polygon's length) or crosses itself where their polygon does not;
  * else SWINGS between two of them (el__fit_gap_sag, the same noise); else FOLLOWS. */
 enum { FOLLOWS = 0, STRAYS = 1, SWINGS = 2 };
+static double result_stray(const double *xy, size_t n, double noise, const fit_objective *ob,
+                           const double norm[3], const fit_out *res, const double *fs)
+{
+    return el__fit_stray_held(xy, n, fs, res->params[6], fmin(noise, res->rms), norm[2], ob->held_ends);
+}
+
 static int result_wanders(const double *xy, size_t n, double noise, fit_objective *ob,
                           const double norm[3], const fit_out *res, const double *fs)
 {
     const double level = fmin(noise, res->rms);
-    const double stray = el__fit_stray_held(xy, n, fs, res->params[6], level, norm[2],
-                                            ob->held_ends);
+    const double stray = result_stray(xy, n, noise, ob, norm, res, fs);
     if (!(stray <= FIT_STRAY) || result_loops(ob, FIT_SMOOTH, norm, res)) return STRAYS;
     return el__fit_gap_sag(xy, n, fs, res->params, level) > FIT_GAP_SAG ? SWINGS : FOLLOWS;
 }
@@ -613,6 +618,16 @@ static int follow_run(const double *xy, size_t n, const el_fit_options *go, int 
     return el__fit_run(FIT_SMOOTH, xy, n, &gb, FIT_RUN_INNER, NULL, alt, buf, buf + n);
 }
 
+/* The bounded runs (follow_run) a straying fit *res (feet fs) adds to its starts': all where it
+ * coils (el__fit_stray > FIT_COIL; from every start, one such fit of 14 sketched points under
+ * both end tangents and an end curvature 0 stayed at 8.3 x their polygon's length, where the
+ * fit bounded to 1.2 x follows them), none otherwise. */
+static size_t coil_runs(const double *xy, size_t n, double noise, const fit_objective *ob,
+                        const double norm[3], const fit_out *res, const double *fs)
+{
+    return result_stray(xy, n, noise, ob, norm, res, fs) > FIT_COIL ? NGAP : 0;
+}
+
 /* Each of the ns starts fitted from its own feet (go: use_initial; flags: el__fit_run's),
  * then nb runs of go's constraints with the length bounded (follow_run), the lowest that
  * does not wander (result_wanders) replacing *res (d, fs) when its rms is at most
@@ -625,6 +640,7 @@ static int lowest_that_follows(const double *xy, size_t n, const el_fit_options 
 {
     double *buf = malloc(sizeof(double) * 4 * n);     /* a run's distances and feet, the best's */
     if (!buf) return EL_ENOMEM;
+    const int coils = result_stray(xy, n, noise, ob, norm, res, fs) > FIT_COIL;
     fit_out best, alt;
     best.status = -1;
     int st = EL_OK, iters = 0;
@@ -639,14 +655,19 @@ static int lowest_that_follows(const double *xy, size_t n, const el_fit_options 
         /* a start's fit judged as before the swing rule (el__fit_gap_sag): judged by it too, a
          * fit of 5 points straying along 5.7 x their curve's length stayed, where a start's
          * fit along 1.44 x, which swings, had replaced it */
-        const int wanders = result_wanders(xy, n, noise, ob, norm, &alt, buf + n);
+        /* a coiling fit gives way to one that does not coil, even one that crosses itself
+         * or swings (a figure eight's 14 sketched points: rms 0.026 along 85 x their
+         * polygon's length, where the fair curve crossing itself once has 0.068 along 1.01 x) */
+        const int wanders = !coils ? result_wanders(xy, n, noise, ob, norm, &alt, buf + n)
+                          : result_stray(xy, n, noise, ob, norm, &alt, buf + n) > FIT_COIL ? STRAYS : FOLLOWS;
         if (wanders == STRAYS || (wanders == SWINGS && c >= ns) ||
             (best.status != -1 && !(alt.rms < best.rms)))
             continue;
         best = alt;
         memcpy(buf + 2 * n, buf, sizeof(double) * 2 * n);
     }
-    if (st != EL_ENOMEM && best.status != -1 && best.rms <= res->rms + FIT_SKETCH_TOL * norm[2]) {
+    if (st != EL_ENOMEM && best.status != -1 &&
+        best.rms <= res->rms + (coils ? FIT_COIL_TOL : FIT_SKETCH_TOL) * norm[2]) {
         best.iterations = iters;
         replace_fit(res, &best, buf + 2 * n, n, d, fs);
         *replaced = 1;
@@ -710,7 +731,8 @@ int el__fit_sketch_follows(const double *xy, size_t n, const el_fit_options *opt
     if (add_guesses(xy, n, &go, starts, &ns) == EL_ENOMEM) return EL_ENOMEM;
     go.use_initial = 1;     /* the caller's start: from its own feet (fit.c) */
     return lowest_that_follows(xy, n, &go, FIT_RUN_LM_ONLY, (const double (*)[FIT_NP])starts, ns,
-                               0, noise, ob, norm, res, d, fs, replaced);
+                               coil_runs(xy, n, noise, ob, norm, res, fs), noise, ob, norm, res, d, fs,
+                               replaced);
 }
 
 /* A sketch's constrained smooth fit in *res (d, fs: its distances and feet) that wanders
@@ -745,6 +767,7 @@ int el__fit_sketch_follows_held(const double *xy, size_t n, const el_fit_options
     if (gave_curve(&alt)) { memcpy(starts[0], alt.params, sizeof starts[0]); ns++; }
     go = *opt;
     go.use_initial = 1;     /* each run polished (flags 0) */
-    return lowest_that_follows(xy, n, &go, 0, (const double (*)[FIT_NP])starts, ns, 0, noise, ob,
-                               norm, res, d, fs, &replaced);
+    return lowest_that_follows(xy, n, &go, 0, (const double (*)[FIT_NP])starts, ns,
+                               coil_runs(xy, n, noise, ob, norm, res, fs), noise, ob, norm, res, d, fs,
+                               &replaced);
 }
