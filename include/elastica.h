@@ -407,6 +407,8 @@ typedef struct el_fit_discrete_result {
     int used_ipopt;               /* 1: Ipopt ran for the kept fit (bounds, constraints, fallback) */
     int distance;                 /* the enum el_fit_distance used */
     int constraint;               /* the enum el_fit_constraint bit not met or contradictory, else 0 */
+    long wander_gap;              /* i: the curve wanders between points i and i+1 (below), -1: it
+                                     follows its points (keyline sides: -1, not judged) */
 } el_fit_discrete_result;
 
 typedef struct el_fit_smooth_result {
@@ -415,6 +417,7 @@ typedef struct el_fit_smooth_result {
     double rms, max_error;
     int iterations, candidates, ipopt_status, status, used_ipopt, distance, constraint;
     int param_mode;               /* EL_PARAM_UNIFORM or EL_PARAM_CHORD: paired s_i / first feet */
+    long wander_gap;              /* as el_fit_discrete_result's */
 } el_fit_smooth_result;
 
 /*
@@ -472,6 +475,17 @@ typedef struct el_fit_smooth_result {
  * distances, foot_s (caller-sized, n each, may be NULL): each point's signed distance
  * to the polygon of the vertices (+ = left of it) and its foot as arc length along it
  * from vertex 0, input units; rms and max_error are computed from them.
+ * res->wander_gap: where no refit above follows the points, the fit kept says where it
+ * wanders, its distances small all the same (the points lie on it): i, the gap between
+ * points i and i+1 (where the curve passes them out of order, the gap between two feet
+ * adjacent along it, of points a < b, is the gap b - 1), by the tests above in their order: it strays
+ * (the gap holding the most curve no point accounts for; the noise level of fewer than 60
+ * points the lower of the data's and the fit's rms; a held start or end point allowed the
+ * curve to it as a gap), crosses itself where the points' polygon does not (the gap of
+ * the loop's middle), or, fewer than 60 points, swings between two of them (the first such
+ * gap; the discrete polygon judged at its vertices); else -1. A point added in that gap,
+ * or the length bounded (EL_CONSTRAIN_LENGTH), holds the curve there. Reporting only: the
+ * fit is the same whatever it says.
  * Returns (and stores in res->status):
  *   EL_OK;
  *   EL_ENOCONV / EL_EMAXITER with the best parameters seen;

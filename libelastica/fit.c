@@ -31,6 +31,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <float.h>
+#include <stdint.h>
 
 enum { FEET_ROUNDS = 4, SAMPLED_ROUNDS = 5 };
 /* the sampled refits' stop (settle_feet): a Gauss-Newton step would lower f by less than this */
@@ -665,6 +666,38 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
     return st;
 }
 
+/* The kept fit's gap it wanders in (el__fit_wander_gap) in the caller's points and feet fs
+ * (input units); a start point held (or x0, y0 fixed) or an end point held allows it the
+ * curve to that point (el__fit_stray_held's ends). */
+static long wander_gap(int model, const double *xy, size_t n, const el_fit_options *opt,
+                       const fit_out *fo, const double *fs)
+{
+    double ends[4] = {NAN, NAN, NAN, NAN};
+    if (opt && ((opt->constraints & EL_CONSTRAIN_START_POINT) || (opt->fixed[0] && opt->fixed[1]))) {
+        const int c = opt->constraints & EL_CONSTRAIN_START_POINT;
+        ends[0] = c ? opt->start_point[0] : opt->value[0];
+        ends[1] = c ? opt->start_point[1] : opt->value[1];
+    }
+    if (opt && (opt->constraints & EL_CONSTRAIN_END_POINT)) memcpy(ends + 2, opt->end_point, sizeof opt->end_point);
+    return el__fit_wander_gap(model, xy, n, fo->params, fs, fo->rms, ends);
+}
+
+/* One public fit: el__fit_run_framed with the feet kept for wander_gap where the caller
+ * takes none (-1 for the gap where they cannot be allocated). */
+static int public_fit(int model, const double *xy, size_t n, const el_fit_options *opt,
+                      const double *init, fit_out *fo, double *distances, double *foot_s, long *gap)
+{
+    double *buf = NULL;
+    if (!foot_s && xy && n >= 4 && n < SIZE_MAX / (2 * sizeof(double)))
+        foot_s = buf = malloc(sizeof(double) * n);
+    memset(fo, 0, sizeof *fo);
+    fo->status = -1;
+    const int st = el__fit_run_framed(model, xy, n, opt, 0, init, fo, distances, foot_s);
+    *gap = fo->status != -1 && foot_s ? wander_gap(model, xy, n, opt, fo, foot_s) : -1;
+    free(buf);
+    return st;
+}
+
 /* The public wrappers: the result struct written only once a result exists. */
 int el_fit_discrete(const double *xy, size_t n, const el_fit_options *opt,
                     const el_discrete_params *initial, el_fit_discrete_result *res,
@@ -678,15 +711,14 @@ int el_fit_discrete(const double *xy, size_t n, const el_fit_options *opt,
         memcpy(init, p, sizeof init);
     }
     fit_out fo;
-    memset(&fo, 0, sizeof fo);
-    fo.status = -1;
-    int st = el__fit_run_framed(FIT_DISCRETE, xy, n, opt, 0, initial ? init : NULL, &fo,
-                                distances, foot_s);
+    long gap;
+    const int st = public_fit(FIT_DISCRETE, xy, n, opt, initial ? init : NULL, &fo, distances, foot_s, &gap);
     if (fo.status == -1) {        /* failed before a result existed */
         if (fo.constraint) res->constraint = fo.constraint;
         return st;
     }
     FIT_PUBLISH(res, fo, el_discrete_params);
+    res->wander_gap = gap;
     return fo.status;
 }
 
@@ -702,15 +734,14 @@ int el_fit_smooth(const double *xy, size_t n, const el_fit_options *opt,
         memcpy(init, p, sizeof init);
     }
     fit_out fo;
-    memset(&fo, 0, sizeof fo);
-    fo.status = -1;
-    int st = el__fit_run_framed(FIT_SMOOTH, xy, n, opt, 0, initial ? init : NULL, &fo,
-                                distances, foot_s);
+    long gap;
+    const int st = public_fit(FIT_SMOOTH, xy, n, opt, initial ? init : NULL, &fo, distances, foot_s, &gap);
     if (fo.status == -1) {
         if (fo.constraint) res->constraint = fo.constraint;
         return st;
     }
     FIT_PUBLISH(res, fo, el_smooth_params);
+    res->wander_gap = gap;
     res->param_mode = fo.mode;
     return fo.status;
 }

@@ -345,6 +345,21 @@ double el__fit_stray_held(const double *xy, size_t n, const double *fs, double L
 #define FIT_GAP_SAG 0.1
 #define FIT_GAP_TURN 1.8
 double el__fit_gap_sag(const double *xy, size_t n, const double *fs, const double *p, double noise);
+/* fit_refit.c: the gap between points i and i + 1 (i in 0..n-2; where the curve passes its
+ * points out of order, the gap between two feet adjacent along it, of points a < b, is the
+ * gap b - 1: the curve comes to b from a) that the kept fit (p: its parameters of model,
+ * fs: its feet, rms: its rms, ends: as el__fit_stray_held's; input units) wanders in, by
+ * the tests of the sketch rules
+ * (result_wanders, fit_restart.c), in their order: it strays (el__fit_stray_held above
+ * FIT_STRAY, at the noise level fmin(noise, rms) of fewer than FIT_SKETCH_POINTS points,
+ * else the data's noise): the gap holding the most curve no point accounts for (the ends'
+ * share: the gap next to that end's point); it crosses itself where its points' polygon does
+ * not (el__fit_loops): the gap of its loop's middle; fewer than FIT_SKETCH_POINTS points,
+ * it swings between two of them (el__fit_gap_sag above FIT_GAP_SAG; the discrete model's
+ * polygon judged at its vertices): the first such gap. -1 where it does none of these (or
+ * out of memory). Reporting only (el_fit_*_result.wander_gap): no fit depends on it. */
+long el__fit_wander_gap(int model, const double *xy, size_t n, const double *p, const double *fs, double rms,
+                        const double ends[4]);
 /* fit_refit.c: whether the fit by distance at x (ob's map) strays from its points
  * (el__fit_stray > FIT_STRAY; noise: el__fit_noise_rms, normalised); d, fs (n each: ob's
  * rest arrays, or the caller's) overwritten with its distances and feet (input units). */

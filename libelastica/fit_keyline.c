@@ -613,6 +613,7 @@ int el_fit_keyline_smooth(const double *xy, size_t n, size_t split, const el_fit
     if (k.status == -1 || (st != k.status)) return st;
     FIT_PUBLISH(first, k.side[0], el_smooth_params);
     FIT_PUBLISH(second, k.side[1], el_smooth_params);
+    first->wander_gap = second->wander_gap = -1;
     first->param_mode = second->param_mode = k.side[0].mode;
     return k.status;
 }
@@ -629,6 +630,7 @@ int el_fit_keyline_discrete(const double *xy, size_t n, size_t split, const el_f
     if (k.status == -1 || (st != k.status)) return st;
     FIT_PUBLISH(first, k.side[0], el_discrete_params);
     FIT_PUBLISH(second, k.side[1], el_discrete_params);
+    first->wander_gap = second->wander_gap = -1;
     if (joint) *joint = k.joint;
     return k.status;
 }

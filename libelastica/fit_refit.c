@@ -357,13 +357,25 @@ int el__fit_feet_order(const double *fs, size_t *idx, size_t n)
     return 0;
 }
 
+/* The gap k along the curve (between the feet idx[k], idx[k + 1]; idx NULL: in order) as
+ * the gap i between points i and i + 1 before the later of its two points (i itself where
+ * the curve passes them in order; where it passes points a < b adjacent along it, those
+ * between them lie elsewhere along it, and it comes to b from a: the gap b - 1, b) */
+static long gap_index(const size_t *idx, size_t k)
+{
+    if (!idx) return (long)k;
+    return (long)(idx[k] > idx[k + 1] ? idx[k] : idx[k + 1]) - 1;
+}
+
 double el__fit_stray(const double *xy, size_t n, const double *fs, double L, double noise, double scale)
 {
     return el__fit_stray_held(xy, n, fs, L, noise, scale, NULL);
 }
 
-double el__fit_stray_held(const double *xy, size_t n, const double *fs, double L, double noise,
-                          double scale, const double ends[4])
+/* el__fit_stray_held, and in *at (may be NULL) the gap holding the most of the curve no
+ * point accounts for (named by gap_index) */
+static double stray_at(const double *xy, size_t n, const double *fs, double L, double noise,
+                       double scale, const double ends[4], long *at)
 {
     /* the feet by arc length: read in place where they are in order, else through their
      * indices sorted (8 bytes a point: at 10^6 noisy points half the neighbours swap) */
@@ -384,17 +396,28 @@ double el__fit_stray_held(const double *xy, size_t n, const double *fs, double L
         lead = 1.6 * hypot(xy[2 * first] - ends[0], xy[2 * first + 1] - ends[1]) * is;
     if (ends && isfinite(ends[2]))
         tail = 1.6 * hypot(xy[2 * last] - ends[2], xy[2 * last + 1] - ends[3]) * is;
-    double poly = 0.0, stray = fmax(0.0, fs[first] * is - lead - slack) +
-                               fmax(0.0, (L - fs[last]) * is - tail - slack);
+    const double s0 = fmax(0.0, fs[first] * is - lead - slack), s1 = fmax(0.0, (L - fs[last]) * is - tail - slack);
+    double poly = 0.0, stray = s0 + s1, most = 0.0;
+    /* the ends' share: the gap next to that end's point along the curve */
+    if (at && s0 > most) { most = s0; *at = gap_index(idx, 0); }
+    if (at && s1 > most) { most = s1; *at = gap_index(idx, n - 2); }
     for (size_t k = 0; k + 1 < n; k++) {
         const size_t a = idx ? idx[k] : k, b = idx ? idx[k + 1] : k + 1;
         const double cx = (xy[2 * b] - xy[2 * a]) * is, cy = (xy[2 * b + 1] - xy[2 * a + 1]) * is;
         const double px = (xy[2 * k + 2] - xy[2 * k]) * is, py = (xy[2 * k + 3] - xy[2 * k + 1]) * is;
-        stray += fmax(0.0, (fs[b] - fs[a]) * is - 1.6 * sqrt(cx * cx + cy * cy) - slack);
+        const double sk = fmax(0.0, (fs[b] - fs[a]) * is - 1.6 * sqrt(cx * cx + cy * cy) - slack);
+        stray += sk;
         poly += sqrt(px * px + py * py);
+        if (at && sk > most) { most = sk; *at = gap_index(idx, k); }
     }
     free(idx);
     return stray / poly;
+}
+
+double el__fit_stray_held(const double *xy, size_t n, const double *fs, double L, double noise,
+                          double scale, const double ends[4])
+{
+    return stray_at(xy, n, fs, L, noise, scale, ends, NULL);
 }
 
 /* samples of the curve in each gap between adjacent feet (el__fit_gap_sag), its ends
@@ -413,7 +436,31 @@ static double polygon_turn(const double *xy, size_t n, const size_t *idx, size_t
     return fabs(turn_between(atan2(R[1] - Q[1], R[0] - Q[0]), atan2(Q[1] - P[1], Q[0] - P[0])));
 }
 
-double el__fit_gap_sag(const double *xy, size_t n, const double *fs, const double *p, double noise)
+/* The sag of gap k (between the feet idx[k], idx[k + 1]) as el__fit_gap_sag measures it,
+ * from m samples g (2m) of the curve from foot to foot, ends included, and their tangent
+ * angles th; -HUGE_VAL where the curve turns there by at most FIT_GAP_TURN beyond the
+ * polygon's turns at the gap's two points */
+static double sag_of_gap(const double *xy, size_t n, const size_t *idx, size_t k, const double *g,
+                         const double *th, size_t m, double noise)
+{
+    const double *A = xy + 2 * idx[k], *B = xy + 2 * idx[k + 1];
+    const double ux = B[0] - A[0], uy = B[1] - A[1], chord = hypot(ux, uy);
+    /* the curve's turning there beyond the polygon's at the gap's two points */
+    double turn = -polygon_turn(xy, n, idx, k) - polygon_turn(xy, n, idx, k + 1);
+    for (size_t j = 1; j < m; j++) turn += fabs(turn_between(th[j], th[j - 1]));
+    if (!(chord > 0.0) || !(turn > FIT_GAP_TURN)) return -HUGE_VAL;
+    double far = 0.0;   /* the farthest inner sample from the segment A B */
+    for (size_t j = 1; j + 1 < m; j++) {
+        const double *G = g + 2 * j;
+        const double t = fit_clamp(((G[0] - A[0]) * ux + (G[1] - A[1]) * uy) / (chord * chord), 0.0, 1.0);
+        far = fmax(far, hypot(G[0] - A[0] - t * ux, G[1] - A[1] - t * uy));
+    }
+    return (far - 4.0 * noise) / chord;
+}
+
+/* el__fit_gap_sag, and in *at (may be NULL, else -1 on entry) the first gap along the curve
+ * whose sag is above FIT_GAP_SAG (named by gap_index) */
+static double gap_sag_at(const double *xy, size_t n, const double *fs, const double *p, double noise, long *at)
 {
     const el_smooth_params c = {p[0], p[1], p[2], p[3], p[4], p[5], p[6]};
     size_t *idx = malloc(sizeof *idx * n);
@@ -426,24 +473,63 @@ double el__fit_gap_sag(const double *xy, size_t n, const double *fs, const doubl
     /* a curve that cannot be evaluated there shows no sag (its other tests judge it) */
     if (el_smooth_eval(&c, GAP_M * (n - 1), s, g, th, NULL)) { free(idx); free(s); return 0.0; }
     for (size_t k = 0; k + 1 < n; k++) {
-        const double *A = xy + 2 * idx[k], *B = xy + 2 * idx[k + 1], *tk = th + k * GAP_M;
-        const double ux = B[0] - A[0], uy = B[1] - A[1], chord = hypot(ux, uy);
-        /* the curve's turning there beyond the polygon's at the gap's two points */
-        double turn = -polygon_turn(xy, n, idx, k) - polygon_turn(xy, n, idx, k + 1);
-        for (int j = 1; j < GAP_M; j++) turn += fabs(turn_between(tk[j], tk[j - 1]));
-        if (!(chord > 0.0) || !(turn > FIT_GAP_TURN)) continue;
-        double far = 0.0;   /* the farthest sample from the segment A B */
-        for (int j = 1; j < GAP_SAMPLES; j++) {
-            const double *G = g + 2 * (k * GAP_M + j);
-            const double t =
-                fit_clamp(((G[0] - A[0]) * ux + (G[1] - A[1]) * uy) / (chord * chord), 0.0, 1.0);
-            far = fmax(far, hypot(G[0] - A[0] - t * ux, G[1] - A[1] - t * uy));
-        }
-        worst = fmax(worst, (far - 4.0 * noise) / chord);
+        const double sag = sag_of_gap(xy, n, idx, k, g + 2 * k * GAP_M, th + k * GAP_M, GAP_M, noise);
+        worst = fmax(worst, sag);
+        if (at && *at < 0 && sag > FIT_GAP_SAG) *at = gap_index(idx, k);
     }
     free(idx);
     free(s);
     return worst;
+}
+
+double el__fit_gap_sag(const double *xy, size_t n, const double *fs, const double *p, double noise)
+{
+    return gap_sag_at(xy, n, fs, p, noise, NULL);
+}
+
+/* The point at arc length f (in [0, (n - 1) h]) of the polygon V and its segment's direction,
+ * appended to g, th (*m of them) */
+static void polygon_sample(const double *V, size_t n, double h, double f, double *g, double *th, size_t *m)
+{
+    const size_t j = (size_t)fit_clamp(floor(f / h), 0.0, (double)(n - 2));
+    const double t = (f - (double)j * h) / h, *P = V + 2 * j, dx = P[2] - P[0], dy = P[3] - P[1];
+    g[2 * *m] = P[0] + t * dx;
+    g[2 * *m + 1] = P[1] + t * dy;
+    th[(*m)++] = atan2(dy, dx);
+}
+
+/* el__fit_gap_sag's measure on a discrete fit's polygon V (n vertices, segment h; fs its
+ * feet, arc length from vertex 0): a polygon turns at its vertices alone and lies farthest
+ * from a chord at one, so its samples in a gap are the feet's points and the vertices between
+ * them, each with the direction of the segment that leaves it (their differences: the
+ * vertices' turns). The first gap whose sag is above FIT_GAP_SAG, named by gap_index (-1:
+ * none, or out of memory). */
+static long polygon_swing_gap(const double *xy, size_t n, const double *fs, const double *V, double h,
+                              double noise)
+{
+    size_t *idx = malloc(sizeof *idx * n);
+    double *g = malloc(sizeof(double) * 3 * (n + 2));
+    long at = -1;
+    if (!idx || !g || el__fit_feet_order(fs, idx, n)) { free(idx); free(g); return -1; }
+    double *th = g + 2 * (n + 2);
+    const double L = (double)(n - 1) * h;
+    for (size_t k = 0; k + 1 < n && at < 0; k++) {
+        const double fa = fit_clamp(fs[idx[k]], 0.0, L), fb = fit_clamp(fs[idx[k + 1]], 0.0, L);
+        if (!(fa <= fb)) continue;      /* a NaN foot */
+        size_t m = 0;
+        polygon_sample(V, n, h, fa, g, th, &m);
+        for (size_t i = (size_t)(fa / h) + 1; i + 1 < n && (double)i * h < fb; i++) {
+            const double *Q = V + 2 * i;
+            g[2 * m] = Q[0];
+            g[2 * m + 1] = Q[1];
+            th[m++] = atan2(Q[3] - Q[1], Q[2] - Q[0]);
+        }
+        polygon_sample(V, n, h, fb, g, th, &m);
+        if (sag_of_gap(xy, n, idx, k, g, th, m, noise) > FIT_GAP_SAG) at = gap_index(idx, k);
+    }
+    free(idx);
+    free(g);
+    return at;
 }
 
 int el__fit_strays_at(fit_objective *ob, const double *x, double noise, double *d, double *fs, double *tmp)
@@ -476,8 +562,12 @@ enum { CROSS_CHORDS = 256, POINT_CHORDS = 64 };
 
 /* Whether the polygon through every step-th of the m points p (and the last) crosses
  * itself: two chords, not neighbours, each one's ends on both sides of the other; with
- * span >= 0, the vertices between them spanning more than span (their box's diagonal). */
-static int chords_cross(const double *p, size_t m, size_t step, double span)
+ * span >= 0, the vertices between them spanning more than span (their box's diagonal).
+ * loop (may be NULL): the first crossing's loop, from the first chord's start to the second
+ * chord's end (indices into p). tol > 0: each chord's ends farther than tol from the other's
+ * line (chords that touch or lie on one line within it do not cross: a straight fit's collinear
+ * chords crossed by their rounding); 0: the signs alone. */
+static int chords_cross(const double *p, size_t m, size_t step, double span, size_t loop[2], double tol)
 {
     size_t idx[CROSS_CHORDS + 2], nc = 0;
     for (size_t i = 0; i < m; i += step) idx[nc++] = i;
@@ -495,7 +585,13 @@ static int chords_cross(const double *p, size_t m, size_t step, double span)
             const double s1 = ax * (B[1] - A[1]) - ay * (B[0] - A[0]), s2 = ax * (B1[1] - A[1]) - ay * (B1[0] - A[0]);
             if ((s1 > 0.0) == (s2 > 0.0)) continue;
             const double s3 = bx * (A[1] - B[1]) - by * (A[0] - B[0]), s4 = bx * (A1[1] - B[1]) - by * (A1[0] - B[0]);
-            if ((s3 > 0.0) != (s4 > 0.0)) return 1;
+            if (tol > 0.0 && !(fmin(fabs(s1), fabs(s2)) > tol * hypot(ax, ay) &&
+                               fmin(fabs(s3), fabs(s4)) > tol * hypot(bx, by)))
+                continue;
+            if ((s3 > 0.0) != (s4 > 0.0)) {
+                if (loop) { loop[0] = idx[a]; loop[1] = idx[b + 1]; }
+                return 1;
+            }
         }
     }
     return 0;
@@ -514,7 +610,7 @@ int el__fit_crosses_itself(const fit_objective *ob, const double *x)
         if (el__fit_to_smooth(v[0], &c)) return 0;
         for (int j = 0; j <= CROSS_CHORDS; j++) s[j] = c.length * j / CROSS_CHORDS;
         if (el_smooth_eval(&c, CROSS_CHORDS + 1, s, p, NULL, NULL)) return 0;
-        return chords_cross(p, CROSS_CHORDS + 1, 1, -1.0);
+        return chords_cross(p, CROSS_CHORDS + 1, 1, -1.0, NULL, 0.0);
     }
     const size_t n = ob->n;
     double *V = malloc(sizeof(double) * (2 * n + 2 * (FIT_BLOCK + 2) * (FIT_NP + 1)));
@@ -525,7 +621,7 @@ int el__fit_crosses_itself(const fit_objective *ob, const double *x)
     for (size_t a = 0; a < n && !st; a += FIT_BLOCK)
         st = el__fit_discrete_rows(v[0], &w, n - a < FIT_BLOCK ? n - a : FIT_BLOCK, V + 2 * a, NULL, 0, V + 2 * n);
     const int cross = !st && !el__all_finite(V, 2 * n) &&
-                      chords_cross(V, n, chord_step(n, CROSS_CHORDS), -1.0);
+                      chords_cross(V, n, chord_step(n, CROSS_CHORDS), -1.0, NULL, 0.0);
     free(V);
     return cross;
 }
@@ -542,7 +638,7 @@ int el__fit_loops(fit_objective *ob, const double *x)
     const int cross = el__fit_crosses_itself(ob, x);
     if (cross && !ob->points_cross) {
         const double span = LOOP_NOISE * el__fit_noise_rms(ob->xy, ob->n, ob->sc) * ob->sc;
-        ob->points_cross = 1 + chords_cross(ob->xy, ob->n, chord_step(ob->n, POINT_CHORDS), span);
+        ob->points_cross = 1 + chords_cross(ob->xy, ob->n, chord_step(ob->n, POINT_CHORDS), span, NULL, 0.0);
     }
     return cross && ob->points_cross == 1;
 }
@@ -565,4 +661,63 @@ int el__fit_fair_over_loop(fit_objective *ob, const double *x, double f, int *st
     if (!(f < LOOP_GIVE * best_f)) return 0;
     if (*best_loops < 0) *best_loops = el__fit_loops(ob, best_x);
     return *best_loops && !el__fit_wanders(ob, x, strays, noise, d, fs, tmp);
+}
+
+/* The gap along the curve (feet fs in the order idx) that holds arc length m, named by
+ * gap_index: the first before the first foot, the last beyond the last */
+static long gap_at_length(const size_t *idx, size_t n, const double *fs, double m)
+{
+    size_t k = 0;
+    while (k + 2 < n && !(m <= fs[idx[k + 1]])) k++;
+    return gap_index(idx, k);
+}
+
+/* the crossings el__fit_wander_gap reports: each chord's ends off the other's line by more
+ * than this of the data's size (the curve's points are evaluated to ~1e-13 of it) */
+#define ROUNDING 1e-9
+
+long el__fit_wander_gap(int model, const double *xy, size_t n, const double *p, const double *fs, double rms,
+                        const double ends[4])
+{
+    double cx, cy, sc;
+    if (n < 3 || el__fit_normalisation(xy, n, &cx, &cy, &sc)) return -1;
+    const double noise = el__fit_noise_rms(xy, n, sc) * sc;
+    /* a sketch's level (result_wanders, fit_restart.c), else the data's (fit.c's stray rule) */
+    const double level = n < FIT_SKETCH_POINTS ? fmin(noise, rms) : noise;
+    const double h = p[2], L = model == FIT_SMOOTH ? p[6] : (double)(n - 1) * h;
+    long at = -1;
+    const double stray = stray_at(xy, n, fs, L, level, sc, ends, &at);
+    if (stray > FIT_STRAY) return at;
+    if (!(stray >= 0.0)) return -1;                 /* out of memory */
+    /* the curve's polygon: 256 chords of the smooth curve, the discrete one's vertices */
+    const size_t m = model == FIT_SMOOTH ? CROSS_CHORDS + 1 : n;
+    double *V = malloc(sizeof(double) * 2 * m);
+    size_t *idx = malloc(sizeof *idx * n), loop[2];
+    if (!V || !idx || el__fit_feet_order(fs, idx, n)) { free(V); free(idx); return -1; }
+    int st;
+    if (model == FIT_SMOOTH) {
+        const el_smooth_params c = {p[0], p[1], p[2], p[3], p[4], p[5], p[6]};
+        double s[CROSS_CHORDS + 1];
+        for (size_t j = 0; j < m; j++) s[j] = L * (double)j / CROSS_CHORDS;
+        st = el_smooth_eval(&c, m, s, V, NULL, NULL);
+    } else {
+        const el_discrete_params c = {p[0], p[1], p[2], p[3], p[4], p[5], p[6]};
+        st = el_discrete_eval(&c, n, V);
+    }
+    /* a loop where the points' polygon has none (el__fit_loops): the gap of its middle;
+     * else a sketch's swing between two points (el__fit_gap_sag) */
+    const double ds = model == FIT_SMOOTH ? L / CROSS_CHORDS : h;
+    at = -1;
+    if (st) {
+        /* a curve that cannot be evaluated: judged by its stray alone */
+    } else if (chords_cross(V, m, chord_step(m, CROSS_CHORDS), -1.0, loop, ROUNDING * sc) &&
+               !chords_cross(xy, n, chord_step(n, POINT_CHORDS), LOOP_NOISE * noise, NULL, ROUNDING * sc)) {
+        at = gap_at_length(idx, n, fs, 0.5 * (double)(loop[0] + loop[1]) * ds);
+    } else if (n < FIT_SKETCH_POINTS) {
+        if (model == FIT_SMOOTH) gap_sag_at(xy, n, fs, p, level, &at);
+        else at = polygon_swing_gap(xy, n, fs, V, h, level);
+    }
+    free(V);
+    free(idx);
+    return at;
 }

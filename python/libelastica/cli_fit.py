@@ -3,6 +3,7 @@ JSON, report pictures (SVG/PNG), B-splines and DXF (cli.py builds the parser).""
 from __future__ import annotations
 
 import sys
+import warnings
 from pathlib import Path
 from typing import Any, Dict, List, Optional, Tuple
 
@@ -65,6 +66,8 @@ def _side_record(res, data: np.ndarray, model: str, free=None) -> Dict[str, Any]
            "rms": float(res.rms), "max_error": float(res.max_error),
            "iterations": int(res.iterations), "status": _status_text(res.status),
            "converged": _converged(res)}
+    if getattr(res, "wander_gap", -1) >= 0:     # el.fit's WanderWarning, said by _warn_wanders
+        rec["wander_gap"] = int(res.wander_gap)
     if res.constraints:     # el.fit's (radians): `elastica bspline` keeps a discrete fit's ends
         rec["constraints"] = res.constraints
     if getattr(res, "distances", None) is not None:
@@ -122,6 +125,18 @@ def _warn_coarse_polygon(path, rec: Dict[str, Any], data: np.ndarray, res) -> No
           f"of {len(data) - 1} segments, {res.rms:.3g} from them (rms){cubic}, where the smooth "
           f"model's curve lies {smooth:.3g} from them: use --model smooth for so few points",
           file=sys.stderr)
+
+
+def _warn_wanders(path, rec: Dict[str, Any], data: np.ndarray) -> None:
+    """A warning on stderr naming the gap between two fitted points the curve wanders in
+    (the record's "wander_gap", el.fit's WanderWarning), and what holds it there."""
+    from .fit import wander_summary
+    gap = rec.get("wander_gap", -1)
+    if gap < 0:
+        return
+    side = f" (side {rec['side'] + 1})" if "side" in rec else ""
+    print(f"{PROG} fit: warning: {path}{side}: {wander_summary(gap, data)}: add a point "
+          "between them, or bound the length (--length LO,HI)", file=sys.stderr)
 
 
 def _constraints(args, data: np.ndarray) -> Dict[str, Any]:
@@ -204,15 +219,18 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
             if len(data) < 4:
                 raise InputError(f"{path}: --step {args.step} leaves only {len(data)} points")
         fixed, constraints = _parse_fix(args.fix, data), _constraints(args, data)
-        res = el.fit(data, **_fit_kwargs(args, fixed, constraints))
-        free = None
-        if constraints and getattr(res, "distances", None) is not None:
-            free = el.fit(data, **_fit_kwargs(args, fixed)).distances
+        with warnings.catch_warnings():     # said in the CLI's words (_warn_wanders)
+            warnings.simplefilter("ignore", el.WanderWarning)
+            res = el.fit(data, **_fit_kwargs(args, fixed, constraints))
+            free = None
+            if constraints and getattr(res, "distances", None) is not None:
+                free = el.fit(data, **_fit_kwargs(args, fixed)).distances
         records.append(_side_record(res, data, args.model, free))
         pictures.append((data, res))
-    for rec in records:
+    for rec, (fitted, _) in zip(records, pictures):
         rec.update({"file": str(path), "plane": plane, "step": args.step, **extra_info})
         _warn_far_points(path, rec)
+        _warn_wanders(path, rec, fitted)
     doc = records[0] if len(records) == 1 else {"file": str(path), "sides": records}
     splines = []
     if args.bspline_tol is not None or args.dxf:

@@ -15,6 +15,7 @@ True
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass
 from typing import Mapping, Optional, Union
 
@@ -69,7 +70,10 @@ class FitResult:
     foot, or for a paired fit its paired arc length;
     None for discrete); ``param_mode``: "uniform" or "chord" (smooth: the paired arc
     lengths, or the first feet); ``points``: the fitted points; ``constraints``: the
-    fit's constraints as given (:meth:`to_bspline` keeps the ends' on a discrete curve).
+    fit's constraints as given (:meth:`to_bspline` keeps the ends' on a discrete curve);
+    ``wander_gap``: i where the curve wanders away from its points between points i and
+    i + 1 (it strays there, loops, or swings between them: the C result's ``wander_gap``,
+    :func:`fit` warns of it), -1 where it follows them.
     """
     curve: Curve
     initial: Curve
@@ -87,6 +91,7 @@ class FitResult:
     used_ipopt: bool = False
     points: Optional[np.ndarray] = None
     constraints: Optional[Mapping[str, object]] = None
+    wander_gap: int = -1
 
     @property
     def converged(self) -> bool:
@@ -199,6 +204,35 @@ def far_points_summary(distances, far, unit: str = "", free_distances=None) -> s
     lie = (f"lies {d[far][0]:.3g}{unit}" if len(far) == 1 else
            f"lie {d[far].min():.3g} to {d[far].max():.3g}{unit}")
     return f"{len(far)} of {len(d)} points {lie} {where}, the others within {rest.max():.3g}{unit}"
+
+
+class WanderWarning(RuntimeWarning):
+    """:func:`fit`'s warning that the fitted curve wanders away from its points between
+    two of them (``FitResult.wander_gap``), where their distances do not show it."""
+
+
+def wander_summary(gap: int, points=None, unit: str = "", numbered: bool = True) -> str:
+    """What a warning of a curve that wanders says (:func:`fit`'s, the CLI's and FreeCAD's):
+    "the curve wanders away from its points between points 3 and 4 (counted from 0; at
+    (x, y) and (x, y)): ...". gap: ``FitResult.wander_gap`` (>= 0); points: the fitted
+    points, to name the two's places (unit after each coordinate); numbered False: by their
+    places alone ("between the points at (x, y) and (x, y)"), where the numbers are the
+    fit's order, not the user's."""
+    gap = int(gap)
+    if gap < 0 or (points is None and not numbered):
+        raise ValueError("wander_summary: the gap of a curve that wanders (>= 0) is needed, and "
+                         "the points to name them by their places")
+    places = ""
+    if points is not None:
+        p = as_real_array(points, "wander_summary: points")
+        if p.ndim != 2 or gap + 1 >= len(p):
+            raise ValueError("wander_summary: points (n, 2 or 3) with n > gap + 1 are needed")
+        places = " and ".join("(" + ", ".join(f"{v:.4g}{unit}" for v in p[i]) + ")"
+                              for i in (gap, gap + 1))
+    where = (f"points {gap} and {gap + 1} (counted from 0{'; at ' + places if places else ''})"
+             if numbered else f"the points at {places}")
+    return (f"the curve wanders away from its points between {where}: it loops, strays or swings "
+            "where no point holds it, its distances to the points small all the same")
 
 
 def _pair(value, name: str):
@@ -346,7 +380,8 @@ def _result(model: str, res, st: int, pts: np.ndarray, dist: np.ndarray, foot: n
                      param_mode=_MODE_NAMES.get(int(res.param_mode)) if model == "smooth" else None,
                      distances=dist, foot_s=foot, distance=_DISTANCE_NAMES[int(res.distance)],
                      used_ipopt=bool(res.used_ipopt), points=pts,
-                     constraints=dict(constraints) if constraints else None)
+                     constraints=dict(constraints) if constraints else None,
+                     wander_gap=int(res.wander_gap))
 
 
 def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = None, *,
@@ -374,7 +409,9 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     no point, the points passed out of order) is fitted again from the paired fit and
     replaced when that one follows them, even at a higher rms (free fits and those whose
     constraints are held exactly: the start point and tangent, the smooth start
-    curvature). max_candidates: initial
+    curvature). A fit kept that still loops, strays or swings between two points (its
+    distances small all the same) warns (WanderWarning) naming that gap, also
+    ``FitResult.wander_gap``. max_candidates: initial
     guesses fitted at most (default 6; fitting stops at the first that reaches the
     data's noise level).
     constraints: any of ``{"start_point": (x, y), "end_point": (x, y),
@@ -435,6 +472,10 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
             s = foot.copy()
     if strict and st != lib.EL_OK:
         check(st, "fit")
+    if res.wander_gap >= 0:
+        warnings.warn(f"fit: {wander_summary(res.wander_gap)}: add a point between them to hold it "
+                      "there, or bound the curve's length (constraints={'length': (lo, hi)})",
+                      WanderWarning, stacklevel=2)
     return _result(model, res, st, pts.copy(), dist, foot, s, constraints)
 
 

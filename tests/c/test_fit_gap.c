@@ -7,6 +7,7 @@
 #include "testutil.h"
 #include "fit_internal.h"
 #include <stdio.h>
+#include <string.h>
 
 typedef struct { const char *name; int pinned; double xy[12]; } sketch;
 
@@ -17,7 +18,7 @@ static const sketch SKETCHES[] = {
     {"E", 1, {0.0, -0.08, 67.55, -0.72, 67.76, -0.8, 69.18, -0.21, 80.1, 2.14, 100.0, 10.3}},
     {"F", 1, {0.0, 0.28, 63.26, 0.94, 67.57, 3.14, 72.6, 4.09, 73.7, 4.84, 100.0, 19.56}},
 };
-enum { NP = 6, SAMPLES = 801 };
+enum { NP = 6, SAMPLES = 801, DENSE = 4001 };
 
 /* the distance of q from the polygon of the n points xy */
 static double polygon_distance(const double *q, const double *xy, size_t n)
@@ -30,6 +31,68 @@ static double polygon_distance(const double *q, const double *xy, size_t n)
         best = fmin(best, hypot(q[0] - A[0] - t * ux, q[1] - A[1] - t * uy));
     }
     return best;
+}
+
+/* A sketch whose kept fit swings in its last gap (bench_fit_sparse.py seed 5 case 670: 18
+ * points along a curve of length 1, noise 0.0097; the smooth fit, rms 0.0066, status 0,
+ * turns by 3.3 rad between points 16 and 17, 0.29 of their chord off it) */
+static const double SWING[] = {
+    0.0006418172386133665, -0.009172698423006604, -0.0393050280158322, 0.0888978269240638,
+    -0.04410652357552151, 0.07781816337897415, -0.06945529273743643, 0.13534246980265838,
+    -0.0681711519605496, 0.18711934872776317, -0.08534547502582791, 0.17483787973439557,
+    -0.07971644440404725, 0.19351333159523354, -0.08292744962692104, 0.22925476870406705,
+    -0.11768717301276027, 0.26796689603919843, -0.13233479065612236, 0.33431893963611714,
+    -0.13570815118322452, 0.3441094674465781, -0.11974186746684463, 0.3577549927298168,
+    -0.14291521256031886, 0.39371468126658143, -0.14679271320366788, 0.3947725451877166,
+    -0.15124322533443688, 0.42582445746101916, -0.17995681897253346, 0.500828792412778,
+    -0.1867935999826268, 0.5313171576065319, -0.11944538649982038, 0.960615311034519};
+enum { NSWING = sizeof SWING / sizeof SWING[0] / 2 };
+
+/* |the turn at its k-th point of the path through the points xy in the order o| (0 at its ends) */
+static double path_turn(const double *xy, const size_t *o, size_t n, size_t k)
+{
+    if (k == 0 || k + 1 >= n) return 0.0;
+    const double *P = xy + 2 * o[k - 1], *Q = xy + 2 * o[k], *R = xy + 2 * o[k + 1];
+    return fabs(remainder(atan2(R[1] - Q[1], R[0] - Q[0]) - atan2(Q[1] - P[1], Q[0] - P[0]), 2.0 * M_PI));
+}
+
+/* The first gap between two points adjacent along the smooth curve p (their feet fs adjacent:
+ * a, b, named b - 1 for a < b, as el_fit_smooth names it) where it swings, by DENSE samples
+ * between the two feet: it turns there by more than FIT_GAP_TURN beyond the turns of the
+ * points' path (in the feet's order) at a and b, and comes farther than FIT_GAP_SAG of their
+ * chord plus 4 level from that chord; -1 where none does. *far: the distance of the sample
+ * farthest from the points' polygon (over all gaps), *far_a, *far_b: the feet around it. */
+static long dense_swing_gap(const el_smooth_params *p, const double *xy, size_t n, const double *fs,
+                            double level, double *far, double *far_a, double *far_b)
+{
+    static double s[DENSE], g[2 * DENSE], th[DENSE];
+    size_t o[64];
+    ck_assert(n <= 64);
+    for (size_t i = 0; i < n; i++) {        /* the points by their feet */
+        size_t j = i;
+        for (; j > 0 && fs[o[j - 1]] > fs[i]; j--) o[j] = o[j - 1];
+        o[j] = i;
+    }
+    long first = -1;
+    *far = -1.0;
+    for (size_t k = 0; k + 1 < n; k++) {
+        const size_t a = o[k], b = o[k + 1];
+        for (int j = 0; j < DENSE; j++) s[j] = fs[a] + (fs[b] - fs[a]) * j / (DENSE - 1.0);
+        ck_assert_int_eq(el_smooth_eval(p, DENSE, s, g, th, NULL), EL_OK);
+        const double *A = xy + 2 * a, *B = xy + 2 * b, ux = B[0] - A[0], uy = B[1] - A[1], ch = hypot(ux, uy);
+        double turn = -path_turn(xy, o, n, k) - path_turn(xy, o, n, k + 1), off = 0.0;
+        for (int j = 0; j < DENSE; j++) {
+            double t = ((g[2 * j] - A[0]) * ux + (g[2 * j + 1] - A[1]) * uy) / (ch * ch);
+            t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
+            off = fmax(off, hypot(g[2 * j] - A[0] - t * ux, g[2 * j + 1] - A[1] - t * uy));
+            if (j) turn += fabs(th[j] - th[j - 1]);
+            const double e = polygon_distance(g + 2 * j, xy, n);
+            if (e > *far) { *far = e; *far_a = fs[a]; *far_b = fs[b]; }
+        }
+        if (first < 0 && turn > FIT_GAP_TURN && off > FIT_GAP_SAG * ch + 4.0 * level)
+            first = (long)(a > b ? a : b) - 1;
+    }
+    return first;
 }
 
 /* Each sketch's smooth fit (free, or 'Pin start + Pin end'): between its first and last foot
@@ -62,6 +125,35 @@ START_TEST(test_fit_sparse_sketch_follows_its_gap)
     ck_assert_msg(r.params.length < 1.1 * poly, "%s: length %.1f for a polygon of %.1f", k->name,
                   r.params.length, poly);
     ck_assert_msg(r.rms < 0.6, "%s: rms %.3f", k->name, r.rms);
+    /* it follows its points, and says so: no gap swings by dense samples either */
+    double far, fa, fb;
+    ck_assert_msg(dense_swing_gap(&r.params, k->xy, NP, fs, 0.0, &far, &fa, &fb) == -1, "%s", k->name);
+    ck_assert_msg(r.wander_gap == -1, "%s: wander_gap %ld", k->name, r.wander_gap);
+}
+END_TEST
+
+/* A fit that swings between two points where no refit follows them says where: wander_gap
+ * names the gap the dense samples find swinging (by el__fit_gap_sag's definition, at the
+ * fit's rms as the noise level: the detector's is at most that), the first, and the curve's
+ * farthest sample from the points' polygon, 10 x its rms off it, lies in that gap; its
+ * distances alone do not show it (all within 3 rms) */
+START_TEST(test_fit_that_swings_names_its_gap)
+{
+    el_fit_smooth_result r;
+    double d[NSWING], fs[NSWING], far, fa, fb;
+    ck_assert_int_eq(el_fit_smooth(SWING, NSWING, NULL, NULL, &r, d, fs), EL_OK);
+    const long gap = dense_swing_gap(&r.params, SWING, NSWING, fs, r.rms, &far, &fa, &fb);
+    ck_assert_msg(gap >= 0, "no gap swings (rms %.4g)", r.rms);
+    ck_assert_msg(r.wander_gap == gap, "wander_gap %ld, the dense samples' %ld", r.wander_gap, gap);
+    ck_assert_msg(far > 10.0 * r.rms && fa == fs[gap] && fb == fs[gap + 1],
+                  "farthest %.3g between feet %.4g and %.4g, gap %ld from %.4g to %.4g", far, fa, fb, gap,
+                  fs[gap], fs[gap + 1]);
+    for (int i = 0; i < NSWING; i++) ck_assert_msg(fabs(d[i]) < 3.0 * r.rms, "point %d: %.3g", i, d[i]);
+    /* without the result arrays alike */
+    el_fit_smooth_result r2;
+    ck_assert_int_eq(el_fit_smooth(SWING, NSWING, NULL, NULL, &r2, NULL, NULL), EL_OK);
+    ck_assert_int_eq(r2.wander_gap, r.wander_gap);
+    ck_assert(memcmp(&r2.params, &r.params, sizeof r.params) == 0);
 }
 END_TEST
 
@@ -111,6 +203,27 @@ START_TEST(test_fit_gap_sag_is_its_definition)
 }
 END_TEST
 
+/* Points exactly on a line, fitted exactly by both models (the discrete one paired): they
+ * follow their points (the polygon's collinear chords, crossing by their rounding alone, are
+ * no loop: gap 6 before) */
+START_TEST(test_straight_fit_follows_its_points)
+{
+    enum { N = 25 };
+    double xy[2 * N], d[N], fs[N];
+    for (int i = 0; i < N; i++) {
+        xy[2 * i] = -1.0 + 3.0 * i / (N - 1.0);
+        xy[2 * i + 1] = 0.5 * xy[2 * i] + 1.0;
+    }
+    el_fit_discrete_result rd;
+    ck_assert_int_eq(el_fit_discrete(xy, N, NULL, NULL, &rd, d, fs), EL_OK);
+    ck_assert_msg(rd.rms < 1e-12, "rms %g", rd.rms);
+    ck_assert_int_eq(rd.wander_gap, -1);
+    el_fit_smooth_result rs;
+    ck_assert_int_eq(el_fit_smooth(xy, N, NULL, NULL, &rs, d, fs), EL_OK);
+    ck_assert_int_eq(rs.wander_gap, -1);
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("fit_gap");
@@ -119,6 +232,8 @@ static Suite *suite(void)
     tcase_add_loop_test(tc, test_fit_sparse_sketch_follows_its_gap, 0,
                         (int)(sizeof SKETCHES / sizeof SKETCHES[0]));
     tcase_add_test(tc, test_fit_gap_sag_is_its_definition);
+    tcase_add_test(tc, test_fit_that_swings_names_its_gap);
+    tcase_add_test(tc, test_straight_fit_follows_its_points);
     suite_add_tcase(s, tc);
     return s;
 }

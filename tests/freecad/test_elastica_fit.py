@@ -7,6 +7,7 @@ elastica_samples.KEYLINE), so a correct fit has a tiny error and finds that k.""
 import json
 import math
 import os
+import sys
 import unittest
 
 import FreeCAD as App
@@ -299,6 +300,37 @@ class FitResultTest(unittest.TestCase):
                 self.assertIn("2 of 40 points lie", said[0])
                 top = S.SKETCH_PLACEMENT.multVec(App.Vector(*glitched[25], 0))
                 self.assertIn(f"the farthest at ({top.x:.4g}, {top.y:.4g}, {top.z:.4g})", said[0])
+
+    def test_a_fit_that_swings_between_two_points_is_named(self):
+        """A sketch whose fit hooks away between its last two points (tests/python/fit_data.py's
+        swinging_sketch, every point within 1.6 mm of the curve: no far point shows it): the
+        smooth fit's warning (the panel's result text and the report view show Warnings) names
+        the two points' places and says to add a point between them; with that point added,
+        none for either model."""
+        import numpy as np
+        sys.path.insert(0, os.path.join(S.ROOT, "tests", "python"))
+        try:
+            from fit_data import swinging_sketch
+        finally:
+            sys.path.pop(0)
+        pts = swinging_sketch()
+        held = np.insert(pts, 17, 0.5 * (pts[16] + pts[17]), axis=0)
+        ends = [S.SKETCH_PLACEMENT.multVec(App.Vector(*pts[i], 0)) for i in (16, 17)]
+        places = [f"({v.x:.4g} mm, {v.y:.4g} mm, {v.z:.4g} mm)" for v in ends]
+        for name, xy, swings, models in (("Swings", pts, True, ("smooth",)),
+                                         ("Held", held, False, ("smooth", "discrete"))):
+            for model in models:
+                f = Fi.make(self.doc, [(S.points_sketch(self.doc, xy, name), [])], Model=model)
+                self.doc.recompute()
+                said = [w for w in f.Warnings if "wanders away from its points" in w]
+                if not swings:
+                    self.assertEqual(said, [], (name, model))
+                    continue
+                self.assertEqual(len(said), 1, (model, list(f.Warnings)))
+                # by their places (the fit runs the sketch's points either way)
+                self.assertIn(f"between the points at {' and '.join(places)}", said[0]
+                              .replace(" and ".join(places[::-1]), " and ".join(places)))
+                self.assertIn("add a point between them to hold the curve there", said[0])
 
     def test_fit_keeps_its_points_and_their_feet(self):
         import numpy as np

@@ -54,6 +54,30 @@ def sketched_s(seed: int = 0, n: int = 15, wobble: float = 0.5):
     return np.ascontiguousarray(pts), truth
 
 
+def swinging_sketch():
+    """18 points sketched along 100 mm (bench_fit_sparse.py seed 5 case 670 in mm: uneven,
+    noise 1 mm) whose smooth (status 0) and discrete fits hook away between the last two
+    points, 43 mm apart: the smooth curve 12 mm off their chord, every point within 1.6 mm
+    of it. Returns the points (18, 2)."""
+    return 100.0 * np.array([
+        [0.0006418172386133665, -0.009172698423006604], [-0.0393050280158322, 0.0888978269240638],
+        [-0.04410652357552151, 0.07781816337897415], [-0.06945529273743643, 0.13534246980265838],
+        [-0.0681711519605496, 0.18711934872776317], [-0.08534547502582791, 0.17483787973439557],
+        [-0.07971644440404725, 0.19351333159523354], [-0.08292744962692104, 0.22925476870406705],
+        [-0.11768717301276027, 0.26796689603919843], [-0.13233479065612236, 0.33431893963611714],
+        [-0.13570815118322452, 0.3441094674465781], [-0.11974186746684463, 0.3577549927298168],
+        [-0.14291521256031886, 0.39371468126658143], [-0.14679271320366788, 0.3947725451877166],
+        [-0.15124322533443688, 0.42582445746101916], [-0.17995681897253346, 0.500828792412778],
+        [-0.1867935999826268, 0.5313171576065319], [-0.11944538649982038, 0.960615311034519]])
+
+
+def polygon_distances(q, pts):
+    """Distance of every point q (m, 2) to the polygon of the points pts (n, 2)."""
+    A, AB = pts[:-1], np.diff(pts, axis=0)
+    t = np.clip(np.einsum("mij,ij->mi", q[:, None, :] - A[None], AB) / np.sum(AB * AB, 1), 0.0, 1.0)
+    return np.linalg.norm(q[:, None, :] - A[None] - t[..., None] * AB[None], axis=2).min(axis=1)
+
+
 def curve_distances(curve, pts, samples: int = 20000):
     """Distance of every point to the curve (a SmoothElastica over [0, length]
     or the polygon of a DiscreteElastica), measured independently of the fit:

@@ -540,6 +540,25 @@ def test_fit_keyline_bspline_is_one_curve_through_the_joint(capsys, tmp_path, fa
         assert [d["bspline"] for d in json.loads(r.stdout)["sides"]] == [d["bspline"] for d in out["sides"]]
 
 
+def test_fit_warns_of_a_curve_that_swings_between_two_points(tmp_path):
+    """A sketch whose fit hooks away between its last two points (fit_data.swinging_sketch):
+    one warning on stderr in the command's words, naming the gap, the points' places and
+    what holds the curve there, the exit code 0, the JSON record's "wander_gap"; the sample
+    S, which its fit follows, gives no such warning and no "wander_gap"."""
+    from fit_data import swinging_sketch
+    path = tmp_path / "sketch.csv"
+    np.savetxt(path, swinging_sketch(), delimiter=",", header="x,y", comments="")
+    r = run("fit", path, "--model", "smooth", "--json", "-")
+    assert r.returncode == 0, r.stderr
+    lines = [ln for ln in r.stderr.splitlines() if ln.strip()]
+    assert len(lines) == 1 and lines[0].startswith(f"elastica fit: warning: {path}: "), r.stderr
+    assert ("between points 16 and 17 (counted from 0; at (-18.68, 53.13) and (-11.94, 96.06))"
+            in lines[0] and "add a point between them, or bound the length (--length LO,HI)" in lines[0])
+    assert json.loads(r.stdout)["wander_gap"] == 16
+    r = run("fit", SAMPLE_S, "--json", "-")
+    assert r.returncode == 0 and "wander" not in r.stderr and "wander_gap" not in json.loads(r.stdout)
+
+
 def test_fit_warns_of_points_far_from_the_curve(capsys, tmp_path):
     """Three glitches in a scan: a warning on stderr names them (points 10, 30, 45 of the
     file, their distances), the fit's exit code unchanged, the JSON record lists them as

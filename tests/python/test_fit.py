@@ -1,6 +1,7 @@
 """libelastica.fit / fit_keyline (issue 13): exact recovery, point-to-curve distances
 measured independently, uneven and sketched data, constraints, the G2 keyline, bad input."""
 import math
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -8,7 +9,7 @@ import pytest
 from scipy.special import ellipk
 
 import libelastica as el
-from fit_data import curve_distances, sketched_s, uneven_scan
+from fit_data import curve_distances, polygon_distances, sketched_s, swinging_sketch, uneven_scan
 from keyline_data import keyline_3d
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
@@ -180,6 +181,32 @@ def test_discrete_default_on_uneven_points_reaches_the_noise(seed):
     assert r.status == 0 and r.distance == "orthogonal"
     assert r.rms < el.fit(pts, distance="paired").rms
     assert_distances_measured(r, polyline_length(pts))
+
+
+def test_a_fit_that_swings_between_two_points_warns_naming_the_gap():
+    """A sketch whose fit hooks away between its last two points (fit_data.swinging_sketch:
+    every point within 1.6 mm of the curve, so no far point shows it) warns, naming that gap
+    and what holds the curve there, for both models; wander_gap names it, and the smooth
+    curve's farthest point from the points' polygon (dense samples, nothing of the fit's
+    tests) lies there, 10 x the rms off. With a point added in that gap, and on a sketched
+    S, the fit follows its points: no warning, wander_gap -1."""
+    pts = swinging_sketch()
+    for model in ("discrete", "smooth"):
+        with pytest.warns(el.WanderWarning, match=r"between points 16 and 17 .*add a point between them"):
+            r = el.fit(pts, model=model)
+        assert r.wander_gap == 16
+    assert r.status == 0        # the smooth fit's: converged
+    s = np.linspace(0.0, r.curve.length, 4001)
+    off = polygon_distances(r.curve.points(s), pts)
+    j = int(np.argmax(off))
+    assert r.foot_s[16] < s[j] < r.foot_s[17] and off[j] > 10 * r.rms, (s[j], off[j], r.rms)
+    assert np.abs(r.distances).max() < 3 * r.rms
+    held = np.insert(pts, 17, 0.5 * (pts[16] + pts[17]), axis=0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", el.WanderWarning)
+        for p in (held, sketched_s(seed=0)[0]):
+            for model in ("smooth", "discrete"):
+                assert el.fit(p, model=model).wander_gap == -1
 
 
 def test_far_points_name_the_glitches_of_a_scan():

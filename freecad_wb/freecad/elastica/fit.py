@@ -9,6 +9,7 @@ from __future__ import annotations
 import dataclasses
 import json
 import math
+from warnings import catch_warnings, simplefilter
 
 import FreeCAD as App
 import Part
@@ -155,12 +156,32 @@ def _constraint_problem(exc, fields=CONSTRAINT_FIELDS):
     return InputProblem(f"{field} cannot be met: {why}; free it or change it")
 
 
+def _fit(xy, **options):
+    """el.fit without its WanderWarning: the feature says it in its own words (_wanders)."""
+    with catch_warnings():
+        simplefilter("ignore", el().WanderWarning)
+        return el().fit(xy, **options)
+
+
+def _wanders(result, plane):
+    """The warning for a fit in one piece that wanders away from its points between two of
+    them (FitResult.wander_gap: it loops, strays or swings where no point holds it, their
+    distances small all the same), naming their places (the fit's order of the points is not
+    the user's: no numbers), else none."""
+    if result.wander_gap < 0:
+        return []
+    at = [plane.multVec(App.Vector(float(x), float(y), 0.0)) for x, y in result.points]
+    said = el().wander_summary(result.wander_gap, [(v.x, v.y, v.z) for v in at], " mm",
+                               numbered=False)
+    return [f"{said}: add a point between them to hold the curve there"]
+
+
 def _one_piece(xy, model, distance, fixed, constraints, fields):
     """The fit of points xy in one piece: (curves, results, data, feet, signed distances,
     rms, max error, None) as the library reports them; fields: constraint_fields."""
     try:
-        r = el().fit(xy, model=model, fixed=fixed or None, constraints=constraints or None,
-                     distance=distance if model == "smooth" else None)
+        r = _fit(xy, model=model, fixed=fixed or None, constraints=constraints or None,
+                 distance=distance if model == "smooth" else None)
     except el().ConstraintError as exc:
         raise _constraint_problem(exc, fields) from None
     return [r.curve], [r], xy, r.foot_points(), r.distances, r.rms, r.max_error, None
@@ -184,8 +205,8 @@ def _constraint_cost(xy, model, distance, fixed, constraints, rms, fields):
     distances to that fit, or None); fields: constraint_fields. A discrete fit's distances
     are its drawn cubic's (drawn_distances)."""
     try:
-        r = el().fit(xy, model=model, fixed=fixed or None,
-                     distance=distance if model == "smooth" else None)
+        r = _fit(xy, model=model, fixed=fixed or None,
+                 distance=distance if model == "smooth" else None)
         dist = r.distances if model == "smooth" else \
             drawn_distances(r.to_bspline(), xy, r.foot_s)[1]
         free = r.rms if model == "smooth" else _rms(dist)
@@ -599,7 +620,8 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         warnings = warnings + _left_out(beyond, dist, step, used) + \
             _off_plane(user[:, 2], plane_rms, size) + \
             _far_points(data[~beyond], dist[~beyond], plane,
-                        None if resampled or free_dist is None else free_dist[~beyond])
+                        None if resampled or free_dist is None else free_dist[~beyond]) + \
+            ([] if split else _wanders(results[0], plane))
     except InputProblem:
         raise
     except (ValueError, ArithmeticError, RuntimeError) as exc:
