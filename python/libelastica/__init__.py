@@ -4,7 +4,7 @@ from ._ffi import DomainError, ElasticaError, NotConvergedError, SingularError
 from .core import DiscreteElastica, SmoothElastica
 from . import io
 from .cubic import SPARSE_POINTS, cubic_distances, smooth_fits_better
-from .fit import (ConstraintError, FitResult, KeylineFit, WanderWarning, far_points, far_points_summary,
+from .fit import (ConstraintError, ConvergenceWarning, FitResult, KeylineFit, WanderWarning, far_points, far_points_summary,
                   fit, fit_keyline, wander_summary)
 from .prep import (KEYLINE_STEPS, RESAMPLE_MAX_VERTICES, Frame, Frame2D, find_inflection, keyline_runs,
                    keyline_step, pca_normalize, plane_fit, prepare_keyline, resample_equilateral)

@@ -219,8 +219,9 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
             if len(data) < 4:
                 raise InputError(f"{path}: --step {args.step} leaves only {len(data)} points")
         fixed, constraints = _parse_fix(args.fix, data), _constraints(args, data)
-        with warnings.catch_warnings():     # said in the CLI's words (_warn_wanders)
+        with warnings.catch_warnings():     # said in the CLI's words (_warn_wanders, the status)
             warnings.simplefilter("ignore", el.WanderWarning)
+            warnings.simplefilter("ignore", el.ConvergenceWarning)
             res = el.fit(data, **_fit_kwargs(args, fixed, constraints))
             free = None
             if constraints and getattr(res, "distances", None) is not None:

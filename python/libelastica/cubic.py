@@ -47,12 +47,12 @@ def smooth_fits_better(points, rms: float, constraints=None) -> Optional[float]:
     (the polygon's, or its cubic's): the smooth model's rms on the same points with the
     same ``constraints`` when it is below rms / SPARSE_RATIO and rms - SPARSE_FLOOR x the
     points' extent, else None (also when the smooth fit fails: no verdict)."""
-    from .fit import fit
+    from .fit import quiet_fit
     pts = np.asarray(points, dtype=float)
     if len(pts) >= SPARSE_POINTS:
         return None
     try:
-        smooth = fit(pts, model="smooth", constraints=constraints or None).rms
+        smooth = quiet_fit(pts, model="smooth", constraints=constraints or None).rms
     except (ValueError, ArithmeticError, RuntimeError):
         return None
     extent = float(np.ptp(pts, axis=0).max())

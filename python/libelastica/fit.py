@@ -206,6 +206,11 @@ def far_points_summary(distances, far, unit: str = "", free_distances=None) -> s
     return f"{len(far)} of {len(d)} points {lie} {where}, the others within {rest.max():.3g}{unit}"
 
 
+class ConvergenceWarning(RuntimeWarning):
+    """:func:`fit`'s warning that the fit did not converge (``FitResult.status`` != 0):
+    the best curve seen is returned (``strict=True`` raises NotConvergedError instead)."""
+
+
 class WanderWarning(RuntimeWarning):
     """:func:`fit`'s warning that the fitted curve wanders away from its points between
     two of them (``FitResult.wander_gap``), where their distances do not show it."""
@@ -431,8 +436,8 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     instead of the automatic guess (a smooth fit by distance without constraints: from the
     points' nearest points on it, so points exactly on it give it back); a curve that runs
     against the points' order is run backwards first (the same curve). A fit that does not
-    converge returns the best curve seen with ``status`` != 0 (raises NotConvergedError if
-    ``strict``). Bad input (NaN, too few points, all points equal) raises ValueError /
+    converge returns the best curve seen with ``status`` != 0 and warns (ConvergenceWarning;
+    raises NotConvergedError if ``strict``). Bad input (NaN, too few points, all points equal) raises ValueError /
     ElasticaError subclasses.
     """
     if not isinstance(model, str) or model not in ("discrete", "smooth"):
@@ -472,11 +477,23 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
             s = foot.copy()
     if strict and st != lib.EL_OK:
         check(st, "fit")
+    if st != lib.EL_OK:     # a status 6 went unnoticed unless the caller read it (QA)
+        warnings.warn(f"fit: not converged: {ffi.string(lib.el_strerror(st)).decode()} (status {st}); "
+                      "strict=True raises instead", ConvergenceWarning, stacklevel=2)
     if res.wander_gap >= 0:
         warnings.warn(f"fit: {wander_summary(res.wander_gap)}: add a point between them to hold it "
                       "there, or bound the curve's length (constraints={'length': (lo, hi)})",
                       WanderWarning, stacklevel=2)
     return _result(model, res, st, pts.copy(), dist, foot, s, constraints)
+
+
+def quiet_fit(points, *args, **kwargs) -> FitResult:
+    """:func:`fit` without its warnings (ConvergenceWarning, WanderWarning): for a fit the
+    binding runs to judge another (its status and wander_gap are read where they matter)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ConvergenceWarning)
+        warnings.simplefilter("ignore", WanderWarning)
+        return fit(points, *args, **kwargs)
 
 
 # ------------------------------------------------------------------ keyline
@@ -626,7 +643,7 @@ def _check_keyline_split(polygon, side_points, split: int, keyline_rms: Optional
                           f"{sum(side_points)} points on one side): the points show no inflection a "
                           "keyline can split at; fit them as one curve")
     polygon = np.ascontiguousarray(polygon)
-    one = fit(polygon, model="discrete")
+    one = quiet_fit(polygon, model="discrete")
     kappa = one.curve.curvature()
     if kappa.min() < 0.0 < kappa.max():
         return

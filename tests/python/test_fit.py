@@ -183,6 +183,22 @@ def test_discrete_default_on_uneven_points_reaches_the_noise(seed):
     assert_distances_measured(r, polyline_length(pts))
 
 
+def test_a_fit_that_does_not_converge_warns():
+    """A fit stopped by max_iter returns its best curve with status 6, which went unnoticed
+    unless the caller read it (QA): a ConvergenceWarning says so; strict=True raises; a
+    converged fit warns of nothing."""
+    c = el.SmoothElastica(k=0.7, length=4.0)
+    pts = c.points(np.linspace(0, 4, 40)) + np.random.default_rng(3).normal(0, 0.01, (40, 2))
+    with pytest.warns(el.ConvergenceWarning, match="not converged.*status 6"):
+        r = el.fit(pts, "smooth", max_iter=1)
+    assert r.status == 6
+    with pytest.raises(el.NotConvergedError):
+        el.fit(pts, "smooth", max_iter=1, strict=True)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", el.ConvergenceWarning)
+        assert el.fit(pts, "smooth").status == 0
+
+
 def test_a_fit_that_swings_between_two_points_warns_naming_the_gap():
     """A sketch whose fit hooks away between its last two points (fit_data.swinging_sketch:
     every point within 1.6 mm of the curve, so no far point shows it) warns, naming that gap

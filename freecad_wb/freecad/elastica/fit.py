@@ -160,6 +160,7 @@ def _fit(xy, **options):
     """el.fit without its WanderWarning: the feature says it in its own words (_wanders)."""
     with catch_warnings():
         simplefilter("ignore", el().WanderWarning)
+        simplefilter("ignore", el().ConvergenceWarning)     # its Status says it
         return el().fit(xy, **options)
 
 
