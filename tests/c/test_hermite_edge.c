@@ -134,6 +134,19 @@ START_TEST(tangents_near_the_chord_give_the_near_straight_curve)
 }
 END_TEST
 
+/* The problem's solutions, each checked (check_result): how many are chains. */
+static size_t checked_chains(const double p0[2], const double t0[2], const double p1[2], const double t1[2],
+                             const el_hermite_options *o)
+{
+    el_hermite_result r;
+    ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, o, &r), EL_OK);
+    check_result(p0, t0, p1, t1, &r, o->tol);
+    size_t chains = 0;
+    for (size_t k = 0; k < r.count; k++) chains += r.solutions[k].npieces > 1;
+    el_hermite_result_free(&r);
+    return chains;
+}
+
 /* Chains between tangents near the chord (two nearly aligned edges blended at moderate
  * tension): near-straight curves that pass the saddle, an S (tangents on one side of the
  * chord, inflectional) or a C (mirrored, a loop chain), whose curvature ~k' kappa_m is far
@@ -159,12 +172,8 @@ START_TEST(chains_near_the_chord_meet_the_joint_bound)
                     const double p0[2] = {0, 0}, p1[2] = {1, 0};
                     const double t0[2] = {cos(a0), sin(a0)}, t1[2] = {cos(a1), sin(a1)};
                     o.sigma = 20.0 + 2.5 * i;
-                    el_hermite_result r;
-                    ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_OK);
-                    check_result(p0, t0, p1, t1, &r, o.tol);
-                    for (size_t k = 0; k < r.count; k++) chains += r.solutions[k].npieces > 1;
+                    chains += checked_chains(p0, t0, p1, t1, &o);
                     problems++;
-                    el_hermite_result_free(&r);
                 }
     const size_t sparse = chains;
     static const double chis[] = {0.0, 0.7, -2.1}, ds[] = {1.0, 0.37, 2.0};
@@ -176,12 +185,8 @@ START_TEST(chains_near_the_chord_meet_the_joint_bound)
                 const double p0[2] = {0.3, -1.7}, p1[2] = {0.3 + d * cos(chi), -1.7 + d * sin(chi)};
                 const double t0[2] = {cos(chi + a), sin(chi + a)}, t1[2] = {cos(chi + s1 * a), sin(chi + s1 * a)};
                 o.sigma = (35.0 + 0.1 * i) / (d * d);
-                el_hermite_result r;
-                ck_assert_int_eq(el_hermite_solve(p0, t0, p1, t1, &o, &r), EL_OK);
-                check_result(p0, t0, p1, t1, &r, o.tol);
-                for (size_t k = 0; k < r.count; k++) chains += r.solutions[k].npieces > 1;
+                chains += checked_chains(p0, t0, p1, t1, &o);
                 problems++;
-                el_hermite_result_free(&r);
             }
     ck_assert_uint_ge(sparse, 400);
     ck_assert_uint_ge(chains - sparse, 400);
