@@ -145,23 +145,32 @@ def as_real_array(a, name: str = "values") -> np.ndarray:
     return np.ascontiguousarray(arr, dtype=np.float64)
 
 
-def as_points(a, name: str = "points", dim: Optional[int] = 2) -> np.ndarray:
+def as_points(a, name: str = "points", dim: Optional[int] = 2, min_rows: int = 0) -> np.ndarray:
     """A C-contiguous float64 (n, dim) array (no copy when it already is one);
-    dim None: any number of columns >= 1."""
+    dim None: any number of columns >= 1; at least ``min_rows`` rows, all finite."""
     arr = as_real_array(a, name)
     if arr.ndim != 2 or (dim is not None and arr.shape[1] != dim) or arr.shape[1] < 1:
         want = f"(n, {dim})" if dim is not None else "(n, dim)"
         raise ValueError(f"{name} must have shape {want}, got {arr.shape}")
+    if len(arr) < min_rows:
+        raise invalid(f"{name}: need at least {min_rows} points, got {len(arr)}")
+    if not np.all(np.isfinite(arr)):   # (the C library's EL_EINVAL, with the row named)
+        i, j = (int(v) for v in np.argwhere(~np.isfinite(arr))[0])
+        raise invalid(f"{name} must be finite: point {i} has {float(arr[i, j])} in column {j}")
     return arr
 
 
-def as_vector(a, name: str = "values") -> np.ndarray:
-    """A C-contiguous float64 1-D array (a scalar becomes length 1)."""
+def as_vector(a, name: str = "values", finite: bool = False) -> np.ndarray:
+    """A C-contiguous float64 1-D array (a scalar becomes length 1); finite=True refuses
+    NaN/inf naming the first such entry."""
     arr = as_real_array(a, name)
     if arr.ndim == 0:
         arr = arr.reshape(1)
     if arr.ndim != 1:
         raise ValueError(f"{name} must be one-dimensional, got shape {arr.shape}")
+    if finite and not np.all(np.isfinite(arr)):
+        i = int(np.argmax(~np.isfinite(arr)))
+        raise invalid(f"{name}[{i}] must be finite, got {float(arr[i])}")
     return arr
 
 
@@ -171,7 +180,7 @@ def as_real(x, name: str, *, finite: bool = True) -> float:
     and (finite=True) NaN/inf or an int too large for a double."""
     if type(x) is float:   # the common case, fast
         if finite and not math.isfinite(x):
-            raise ValueError(f"{name}: invalid argument: must be finite, got {x!r}")
+            raise invalid(f"{name} must be finite, got {x!r}")
         return x
     if isinstance(x, np.ndarray):
         if x.ndim != 0:
@@ -186,7 +195,7 @@ def as_real(x, name: str, *, finite: bool = True) -> float:
     except (TypeError, ValueError, OverflowError):
         raise ValueError(f"{name} must be a real number, got {x!r}") from None
     if finite and not math.isfinite(v):
-        raise ValueError(f"{name}: invalid argument: must be finite, got {x!r}")
+        raise invalid(f"{name} must be finite, got {v}")
     return v
 
 
@@ -207,10 +216,66 @@ def as_int(x, name: str, lo: Optional[int] = INT_MIN, hi: Optional[int] = INT_MA
     else:
         raise ValueError(f"{name} must be an integer, got {x!r}")
     if (lo is not None and v < lo) or (hi is not None and v > hi):
-        lo_s = "-inf" if lo is None else str(lo)
-        hi_s = "inf" if hi is None else str(hi)
-        raise ValueError(f"{name} must be in [{lo_s}, {hi_s}], got {v}")
+        raise invalid(f"{name} must be {_int_range(lo, hi)}, got {v}")
     return v
+
+
+def _int_range(lo: Optional[int], hi: Optional[int]) -> str:
+    """'3..7', '>= 2' or '<= 5': a C type's own limit is not worth naming."""
+    lo = None if lo is not None and lo <= INT_MIN else lo
+    hi = None if hi is not None and hi >= INT_MAX else hi
+    if lo is not None and hi is not None:
+        return f"{lo}..{hi}"
+    return f">= {lo}" if lo is not None else f"<= {hi}" if hi is not None else "an integer"
+
+
+def invalid(message: str) -> ElasticaError:
+    """The C library's EL_EINVAL as an exception whose message names the argument, its
+    allowed range and the value given (checked in Python before the call)."""
+    return ElasticaError(lib.EL_EINVAL, message)
+
+
+def as_positive(x, name: str, *, zero: bool = False) -> float:
+    """as_real for a length, a tolerance, a scale: finite and > 0 (>= 0 with zero=True);
+    else ElasticaError (EL_EINVAL) "name must be > 0, got x"."""
+    v = as_real(x, name)
+    if v < 0 or (v == 0 and not zero):
+        raise invalid(f"{name} must be {'>=' if zero else '>'} 0, got {shown(v)}")
+    return v
+
+
+def as_degree(x, name: str) -> int:
+    """A B-spline approximation degree: 3..7 (el_smooth_to_bspline's range)."""
+    d = as_int(x, name, None, None)
+    require(3 <= d <= 7, name, "3..7", d)
+    return d
+
+
+def require(ok: bool, name: str, rule: str, value) -> None:
+    """ElasticaError (EL_EINVAL) "name must be <rule>, got value" unless ok: an argument
+    checked before the C call, so the message names what the C status cannot."""
+    if not ok:
+        raise invalid(f"{name} must be {rule}, got {shown(value)}")
+
+
+def shown(value) -> str:
+    """A value as a message shows it: a real number as short as it reads back exactly
+    (0, -0.001, 0.30000000000000004), anything else by repr."""
+    if not _is_real(value):
+        return repr(value)
+    v = float(value)
+    return f"{v:g}" if float(f"{v:g}") == v or not math.isfinite(v) else repr(v)
+
+
+def warn_if_degrees(angle: float, name: str, stacklevel: int = 3) -> None:
+    """Warn when an angle the binding takes in radians looks like degrees (|angle| > 2 pi:
+    the command line's --start-tangent 90 is degrees, fit's constraints radians)."""
+    if abs(angle) > 2 * math.pi:
+        import warnings
+        warnings.warn(f"{name} = {angle:g}: the binding takes radians (|angle| > 2 pi is "
+                      f"read modulo 2 pi); degrees? use math.radians({angle:g}) (a continuous "
+                      "angle past a full turn, as curve.angle gives on a loop, is fine)",
+                      UserWarning, stacklevel=stacklevel + 1)
 
 
 def as_size(x, name: str, lo: int = 0, hi: int = SIZE_MAX) -> int:

@@ -19,7 +19,7 @@ from typing import Optional, Sequence, Tuple
 import numpy as np
 
 from ._ffi import (DomainError, as_int, as_points, as_real, as_real_array, as_size, as_vector,
-                   bspline_from_c, check, dptr, ffi, lib)
+                   bspline_from_c, check, dptr, ffi, lib, require)
 
 __all__ = ["affine_coords", "affine_length", "affine_curvature", "osculating_conics",
            "OsculatingConics", "chaikin", "lane_riesenfeld", "affine_elements",
@@ -142,6 +142,8 @@ def uniform_bspline(points, degree: Optional[int] = None, clamped: bool = True):
     = points, knots 0..N+degree+1 (all simple). Returns a BSpline."""
     x = as_points(points, "points", None)
     deg = x.shape[1] if degree is None else as_int(degree, "uniform_bspline: degree", 1)
+    require(len(x) >= deg + 1, "uniform_bspline: the number of points",
+            f">= degree + 1 = {deg + 1}", len(x))
     b = ffi.new("el_bspline *")
     check(lib.el_affine_uniform_bspline(x.shape[1], deg, len(x), dptr(x), int(bool(clamped)), b),
           "uniform_bspline")
@@ -189,7 +191,7 @@ def _jacobi(u: float, k: float):
 def elastica_affine_curvature(curve, s) -> np.ndarray:
     """Exact affine curvature of a SmoothElastica at arc lengths s, from
     kappa = 2k sqrt(mu) cn u, kappa' = -2k mu sn dn, kappa'' = -2k mu^(3/2) cn (dn^2 - k^2 sn^2)."""
-    s = as_vector(s, "s")
+    s = as_vector(s, "elastica_affine_curvature: s", finite=True)
     k, mu = as_real(curve.k, "curve.k"), as_real(curve.mu, "curve.mu")
     rm = math.sqrt(mu)
     out = np.empty((3, len(s)))
@@ -289,12 +291,16 @@ def _run(samples: np.ndarray, tangents: Optional[np.ndarray], infl: Sequence[int
     opt.split_inflections = int(bool(split))
     opt.skip = as_int(skip, "affine_polyline: skip", 0)
     opt.skip_frac = as_real(skip_frac, "affine_polyline: skip_frac")
+    require(0 <= opt.skip_frac < 0.5, "affine_polyline: skip_frac", "in [0, 0.5)", skip_frac)
     opt.fit_ends = int(bool(fit_ends))
     opt.optimise = int(bool(optimise))
     opt.max_iter = as_int(max_iter, "affine_polyline: max_iter", 0)
     res = ffi.new("el_affine_result *")
-    infl_arr = (ffi.new("size_t[]", [as_size(i, "affine_polyline: inflections") for i in infl])
-                if len(infl) else ffi.NULL)
+    infl = [as_size(i, "affine_polyline: inflections") for i in infl]
+    require(all(a < b for a, b in zip([0] + infl, infl + [len(samples) - 1])),
+            "affine_polyline: inflections", f"sample indices in 1..{len(samples) - 2}, strictly "
+            "increasing", infl)
+    infl_arr = ffi.new("size_t[]", infl) if len(infl) else ffi.NULL
     tan = dptr(tangents) if tangents is not None else ffi.NULL
     st = lib.el_affine_polyline(len(samples), dptr(samples), tan, len(infl), infl_arr, int(n), opt,
                                 res)

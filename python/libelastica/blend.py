@@ -26,8 +26,8 @@ from typing import Optional
 
 import numpy as np
 
-from ._ffi import (SingularError, as_points, as_real, as_vector, bspline_from_c, check, dptr, ffi,
-                   lib)
+from ._ffi import (DomainError, SingularError, as_points, as_positive, as_real, as_vector,
+                   bspline_from_c, check, dptr, ffi, lib, require)
 
 __all__ = ["EllipticBlend", "MQBlend", "BlendCurve", "blend_curve", "eck_d", "eck_omega"]
 
@@ -35,7 +35,7 @@ _PICK = {"control": lib.EL_BLEND_PICK_CONTROL, "interpolate": lib.EL_BLEND_PICK_
 
 
 def _t(t) -> np.ndarray:
-    return np.linspace(0.0, 1.0, 101) if t is None else as_vector(t, "t")
+    return np.linspace(0.0, 1.0, 101) if t is None else as_vector(t, "t", finite=True)
 
 
 def _four(q, name: str) -> np.ndarray:
@@ -204,7 +204,7 @@ class _Blend:
         NotConvergedError when 256 spans per segment do not reach tol."""
         q, nseg = _composite(q)
         b = ffi.new("el_bspline *")
-        st = lib.el_blend_to_bspline(self._b, nseg, dptr(q), as_real(tol, "to_bspline: tol"), b)
+        st = lib.el_blend_to_bspline(self._b, nseg, dptr(q), as_positive(tol, "to_bspline: tol"), b)
         if st != lib.EL_OK:
             lib.el_bspline_free(b)
             check(st, "to_bspline")
@@ -232,8 +232,9 @@ class EllipticBlend(_Blend):
                 raise ValueError(f"EllipticBlend: m must be >= 0, got {m}")
             k = np.sqrt(m)
         k = as_real(k, "EllipticBlend: k")
+        require(k >= 0, "EllipticBlend: k", ">= 0 (the modulus; m = k^2)", k)
         self._b = ffi.new("el_blend_basis *")
-        st = lib.el_blend_init_elliptic(self._b, k, as_real(d, "EllipticBlend: d"))
+        st = lib.el_blend_init_elliptic(self._b, k, as_positive(d, "EllipticBlend: d"))
         if st == lib.EL_ESINGULAR:
             raise SingularError(st, f"EllipticBlend: k = {k:.6g} (m = {k * k:.6g}) lies in the "
                                 f"singular neighbourhood of K(k) = 2, where the basis is not "
@@ -269,11 +270,10 @@ class MQBlend(_Blend):
     ``d = 1/alpha(c)``, which gives Eck's Omega_i (2.4))."""
 
     def __init__(self, c: float, d: Optional[float] = None):
-        if d is None:
-            d = eck_d(c)
+        c = _nonzero(c, "MQBlend: c")
+        d = eck_d(c) if d is None else as_positive(d, "MQBlend: d")
         self._b = ffi.new("el_blend_basis *")
-        check(lib.el_blend_init_mq(self._b, as_real(c, "MQBlend: c"), as_real(d, "MQBlend: d")),
-              "MQBlend")
+        check(lib.el_blend_init_mq(self._b, c, d), "MQBlend")
 
     @property
     def c(self) -> float:
@@ -286,10 +286,20 @@ class MQBlend(_Blend):
         return MQBlend, (self.c, self.d)
 
 
+def _nonzero(c, name: str) -> float:
+    """The MQ parameter c: c = 0 degenerates the span (the C library's EL_EDOM, named)."""
+    c = as_real(c, name)
+    if c == 0:
+        raise DomainError(lib.EL_EDOM, f"{name} must be nonzero (c = 0: the MQ span "
+                                       "degenerates), got 0")
+    return c
+
+
 def eck_d(c: float) -> float:
     """Eck's end-derivative ``d = 1/alpha(c)`` (2.5)."""
     out = ffi.new("double *")
-    check(lib.el_blend_eck_d(as_real(c, "eck_d: c"), out), "eck_d")
+    c = _nonzero(c, "eck_d: c")
+    check(lib.el_blend_eck_d(c, out), f"eck_d: c = {c:g}")
     return float(out[0])
 
 
@@ -297,8 +307,8 @@ def eck_omega(c: float, t=None) -> np.ndarray:
     """Eck's MQ blending functions Omega_0..Omega_3 (2.4) in closed form, shape (n, 4)."""
     t = _t(t)
     out = np.empty((len(t), 4))
-    check(lib.el_blend_eck_omega(as_real(c, "eck_omega: c"), len(t), dptr(t), dptr(out)),
-          "eck_omega")
+    c = _nonzero(c, "eck_omega: c")
+    check(lib.el_blend_eck_omega(c, len(t), dptr(t), dptr(out)), "eck_omega")
     return out
 
 

@@ -7,8 +7,9 @@ from typing import Any
 
 import numpy as np
 
-from ._ffi import (INT_MAX, DomainError, NotConvergedError, as_int, as_points, as_real, as_vector,
-                   bspline_from_c, check, dptr, ffi, lib)
+from ._ffi import (INT_MAX, DomainError, NotConvergedError, as_degree, as_int, as_points,
+                   as_positive, as_real, as_vector, bspline_from_c, check, dptr, ffi, lib,
+                   require, warn_if_degrees)
 
 
 class BSpline:
@@ -36,7 +37,24 @@ class BSpline:
             raise ValueError("BSpline: mults must be integers, one per knot")
         self.mults = m.astype(np.int64)
         self.max_deviation = as_real(max_deviation, "BSpline: max_deviation", finite=False)
+        self._check()
         self._c()  # validates (EL_EINVAL -> ElasticaError)
+
+    def _check(self):
+        """el_bspline_check's rules, each named with the value that breaks it."""
+        p, kn, m = self.degree, self.knots, self.mults
+        require(len(kn) >= 2, "BSpline: knots", "at least 2 distinct values", kn.tolist())
+        require(np.all(np.isfinite(kn)), "BSpline: knots", "finite", kn.tolist())
+        bad = np.flatnonzero(np.diff(kn) <= 0)
+        require(not len(bad) and np.isfinite(kn[-1] - kn[0]), "BSpline: knots",
+                "strictly increasing", kn[bad[0]:bad[0] + 2].tolist() if len(bad) else kn.tolist())
+        require(1 <= m[0] <= p + 1 and 1 <= m[-1] <= p + 1, "BSpline: end mults",
+                f"1..degree+1 = 1..{p + 1}", [int(m[0]), int(m[-1])])
+        inner = m[1:-1]
+        require(np.all((inner >= 1) & (inner <= p)), "BSpline: interior mults",
+                f"1..degree = 1..{p}", inner.tolist())
+        require(int(m.sum()) == self.npoles + p + 1, "BSpline: sum of mults",
+                f"npoles + degree + 1 = {self.npoles + p + 1}", int(m.sum()))
 
     def __getstate__(self):
         """Without the cffi array of the last C view (it cannot be pickled or copied; _c
@@ -82,7 +100,7 @@ class BSpline:
     def derivative(self, t, order: int = 1) -> np.ndarray:
         """Derivative of the given order (0 = points) at parameters t, shape (len(t), dim)."""
         order = as_int(order, "BSpline.derivative: order", 0)
-        t = as_vector(t, "t")
+        t = as_vector(t, "BSpline: t", finite=True)
         out = np.empty((len(t), self.dim))
         check(lib.el_bspline_derivative(self._c(), int(order), len(t), dptr(t), dptr(out)),
               "BSpline.derivative")
@@ -97,7 +115,9 @@ class BSpline:
 
     def curvature(self, t) -> np.ndarray:
         """Signed curvature det(B', B'')/|B'|^3 of a planar B-spline at t."""
-        t = as_vector(t, "t")
+        t = as_vector(t, "BSpline.curvature: t", finite=True)
+        require(self.dim == 2, "BSpline.curvature: dim", "2 (a planar curve)", self.dim)
+        require(self.degree >= 2, "BSpline.curvature: degree", ">= 2", self.degree)
         out = np.empty(len(t))
         check(lib.el_bspline_curvature(self._c(), len(t), dptr(t), dptr(out)), "BSpline.curvature")
         return out
@@ -160,7 +180,7 @@ def interpolate_c2(points, start=None, end=None) -> BSpline:
     1) or ``{"d2": (x, y)}`` (B'' there: kappa times the unit normal for a curvature), or
     both (a G2 end: a unit tangent and kappa times its left normal give the curvature
     kappa exactly; one more knot, mid-way along that end's span)."""
-    xy = as_points(points, "points")
+    xy = as_points(points, "interpolate_c2: points", min_rows=2)
     s, e = _c2_end(start, "start"), _c2_end(end, "end")
     b = ffi.new("el_bspline *")
     check(lib.el_bspline_interpolate_c2_ends(dptr(xy), len(xy), s, e, b), "interpolate_c2")
@@ -204,6 +224,7 @@ def cubic_through(points, start=None, end=None) -> BSpline:
         kappa = as_real(spec.get("curvature", 0.0), f"cubic_through: {which} curvature")
         if "tangent" in spec:
             a = as_real(spec["tangent"], f"cubic_through: {which} tangent")
+            warn_if_degrees(a, f"cubic_through: {which} tangent", stacklevel=4)
             t = (np.cos(a), np.sin(a))
             return {"d1": t} if "curvature" not in spec else \
                 {"d1": t, "d2": (-kappa * t[1], kappa * t[0])}
@@ -244,8 +265,8 @@ def smooth_to_bspline(curve, tol: float = 1e-6, degree: int = 3) -> BSpline:
     """Clamped degree-3..7 B-spline within ``tol`` (absolute, coordinate units) of a
     SmoothElastica everywhere, parametrised by its arc length; the certified
     distance is ``max_deviation``."""
-    degree = as_int(degree, "to_bspline: degree")
-    tol = as_real(tol, "to_bspline: tol")
+    degree = as_degree(degree, "to_bspline: degree")
+    tol = as_positive(tol, "to_bspline: tol")
     p = ffi.new("el_smooth_params *")
     for name in ("x0", "y0", "phi", "mu", "k", "q", "length"):
         if not hasattr(curve, name):
@@ -301,8 +322,9 @@ def smooth_chain_to_bspline(pieces, tol: float = 1e-6, degree: int = 3) -> BSpli
     arc length from the first piece's start: each piece with exact end point, unit
     tangent and curvature (el_smooth_chain_to_bspline), joined C2. ``max_deviation``
     is the certified distance; NotConvergedError (with it) when tol is not reached."""
-    tol = as_real(tol, "to_bspline: tol")
-    degree = as_int(degree, "to_bspline: degree")
+    tol = as_positive(tol, "to_bspline: tol")
+    degree = as_degree(degree, "to_bspline: degree")
+    require(len(pieces) >= 1, "to_bspline: the number of pieces", ">= 1", len(pieces))
     arr = ffi.new("el_smooth_params[]", len(pieces))
     for i, c in enumerate(pieces):
         for name in ("x0", "y0", "phi", "mu", "k", "q", "length"):

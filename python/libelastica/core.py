@@ -1,14 +1,27 @@
 """Smooth and discrete elasticae (seed 000 (4.3)/(4.4)) over the C library."""
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, fields
 
 import numpy as np
 
-from ._ffi import as_real, as_size, as_vector, check, dptr, ffi, lib
+from ._ffi import as_real, as_size, as_vector, check, dptr, ffi, lib, require
 
 SMOOTH_PARAMS = ("x0", "y0", "phi", "mu", "k", "q", "length")
 DISCRETE_PARAMS = ("x0", "y0", "h", "phi", "z", "q", "k")
+# el_smooth_check's / el_discrete_check's ranges (elastica.h), named in Python's message
+_SMOOTH_RULES = {"mu": (lambda v: v > 0, "> 0"), "length": (lambda v: v >= 0, ">= 0")}
+_DISCRETE_RULES = {"h": (lambda v: v > 0, "> 0"), "k": (lambda v: v >= 0, ">= 0")}
+
+
+def _check_fields(cls: str, p, names, rules) -> None:
+    """ValueError naming the first field of the C params ``p`` that el_*_check refuses."""
+    for n in names:
+        v = getattr(p, n)
+        require(math.isfinite(v), f"{cls}: {n}", "finite", v)
+        if n in rules:
+            require(rules[n][0](v), f"{cls}: {n}", rules[n][1], v)
 
 
 def _finite_params(obj, names):
@@ -51,6 +64,7 @@ class SmoothElastica:
             v = getattr(self, n)
             setattr(p, n, v if type(v) is float else
                     as_real(v, f"SmoothElastica: {n}", finite=False))
+        _check_fields("SmoothElastica", p, SMOOTH_PARAMS, _SMOOTH_RULES)
         return p
 
     @property
@@ -61,7 +75,7 @@ class SmoothElastica:
     def _s(self, s) -> np.ndarray:
         if s is None:
             return np.linspace(0.0, self.length, 101)
-        return as_vector(s, "s")
+        return as_vector(s, "SmoothElastica: s", finite=True)
 
     def _eval(self, s, what: str) -> np.ndarray:
         s = self._s(s)
@@ -174,6 +188,7 @@ class DiscreteElastica:
             setattr(p, name, v if type(v) is float else
                     as_real(v, f"DiscreteElastica: {name}", finite=False))
         self.n = as_size(self.n, "DiscreteElastica: n", lo=2, hi=2 ** 59)
+        _check_fields("DiscreteElastica", p, DISCRETE_PARAMS, _DISCRETE_RULES)
         return p
 
     @property

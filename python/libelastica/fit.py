@@ -21,8 +21,8 @@ from typing import Mapping, Optional, Union
 
 import numpy as np
 
-from ._ffi import (DomainError, NotConvergedError, as_int, as_points, as_real,
-                   as_real_array, check, dptr, ffi, lib)
+from ._ffi import (DomainError, NotConvergedError, as_int, as_points, as_positive, as_real,
+                   as_real_array, check, dptr, ffi, lib, warn_if_degrees)
 from .core import DISCRETE_PARAMS, SMOOTH_PARAMS, DiscreteElastica, SmoothElastica
 
 _MODES = {"auto": 0, "uniform": 1, "chord": 2}
@@ -263,6 +263,8 @@ def _set_constraints(o, model: str, n: int, constraints: Optional[Mapping[str, o
             getattr(o, f"{where}_point")[1] = y
         elif kind in ("angle", "number"):
             v = as_real(value, f"fit: constraint {name!r}")
+            if kind == "angle":   # (stack: _options, fit, its caller)
+                warn_if_degrees(v, f"fit: constraint {name!r}", stacklevel=4)
             setattr(o, f"{where}_{'tangent' if kind == 'angle' else 'curvature'}", v)
         else:
             lo, hi = _pair(value, name)
@@ -584,9 +586,9 @@ def _keyline_options(model: str, kwargs: dict):
         o.fixed[2] = 1
         o.value[2] = v
     if max_iter is not None:
-        o.max_iter = as_int(max_iter, "fit_keyline: max_iter")
+        o.max_iter = as_int(max_iter, "fit_keyline: max_iter", 1)
     if tol is not None:
-        o.tol = as_real(tol, "fit_keyline: tol")
+        o.tol = as_positive(tol, "fit_keyline: tol")
     return o
 
 

@@ -10,7 +10,7 @@ from typing import List, Optional
 
 import numpy as np
 
-from ._ffi import DomainError, as_int, as_real, as_size, as_vector, check, ffi, lib
+from ._ffi import DomainError, as_int, as_real, as_size, as_vector, check, ffi, lib, require
 from .bspline import smooth_chain_to_bspline
 from .core import SMOOTH_PARAMS, SmoothElastica, chain_eval, chain_starts
 
@@ -366,10 +366,17 @@ def hermite_analyse(P, V, sigma: float) -> dict:
     after x(0) = 0, x'(0) = (0, 1), |P| = 1): case of Theorem 6, the kappa_m
     bound, the search intervals (18), the real roots of the polynomial (40)
     with their branch, and the special values (45)."""
-    P, V = _vec2(P, "P"), _vec2(V, "V")
+    P, V = _vec2(P, "hermite_analyse: P"), _vec2(V, "hermite_analyse: V")
+    for name, v in (("P", P), ("V", V)):     # (the normalised data: unit vectors)
+        require(abs(math.hypot(*v) - 1) <= 1e-9, f"hermite_analyse: |{name}|", "1 (to 1e-9)",
+                math.hypot(*v))
+    sigma = as_real(sigma, "hermite_analyse: sigma")
+    if sigma > 1e5:
+        raise DomainError(lib.EL_EDOM, f"hermite_analyse: sigma must be <= 1e5 (el.hermite's "
+                                       f"range), got {sigma:g}")
     a = ffi.new("el_hermite_analysis *")
     check(lib.el_hermite_analyse(ffi.new("double[2]", list(P)), ffi.new("double[2]", list(V)),
-                                 as_real(sigma, "hermite_analyse: sigma"), a), "hermite_analyse")
+                                 sigma, a), "hermite_analyse")
     return {
         "case": int(a.hcase),
         "kappa_bound": float(a.kappa_bound),

@@ -124,7 +124,7 @@ def plane_fit(xyz) -> Tuple[np.ndarray, Frame]:
     maps back). Raises ValueError for bad input, SingularError if all points
     are equal.
     """
-    pts = as_points(xyz, "xyz", 3)
+    pts = as_points(xyz, "plane_fit: xyz", 3, min_rows=3)
     n = pts.shape[0]
     f = ffi.new("el_frame *")
     xy = np.empty((n, 2))
@@ -208,7 +208,7 @@ def pca_normalize(xy) -> Tuple[np.ndarray, Frame2D]:
     """PCA re-normalisation of 2D points (n >= 2, shape (n, 2)), seed 000 §5.3:
     returns the coordinates in the frame of their centroid and first principal
     axis (x''), and the :class:`Frame2D` (``frame.to_parent`` maps back)."""
-    pts = as_points(xy, "xy", 2)
+    pts = as_points(xy, "pca_normalize: xy", 2, min_rows=2)
     f = ffi.new("el_frame2d *")
     out = np.empty_like(pts)
     check(lib.el_pca_normalize(dptr(pts), pts.shape[0], f, dptr(out)), "pca_normalize")
@@ -231,7 +231,7 @@ class Inflection:
 
 def find_inflection_info(xy, side: int = 0) -> Inflection:
     """Like :func:`find_inflection`, returning the full :class:`Inflection`."""
-    pts = as_points(xy, "xy", 2)
+    pts = as_points(xy, "find_inflection: xy", 2, min_rows=4)
     side = as_int(side, "find_inflection: side", -1, 1)
     info = ffi.new("el_inflection *")
     check(lib.el_find_inflection(dptr(pts), pts.shape[0], int(side), info), "find_inflection")

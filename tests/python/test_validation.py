@@ -226,3 +226,103 @@ def test_elliptic_blend_reports_its_basis():
     assert b.condition < 1000 and b.warnings() and "convex hull" in b.warnings()[0]
     with pytest.raises(el.SingularError, match=r"outside \(0\.79932, 0\.80544\)"):
         el.EllipticBlend(m=0.6438)
+
+
+# ------------------------------------------------------------------ named refusals
+#
+# QA: these raised only "invalid argument (NULL, NaN/inf, out of range or too few
+# points)"; each message must name the argument, its allowed range and the value given.
+
+def _fit_result():
+    pts = np.array([[0, 0], [1, 0.2], [2, 0.5], [3, 0.4], [4, 0.1]], float)
+    return el.fit(pts, model="smooth")
+
+
+def _reassigned_mu():
+    c = el.SmoothElastica(k=0.5)
+    c.mu = -2.0
+    return c.points([0.5])
+
+
+POLE = dict(degree=1, poles=[[0, 0], [1, 1]], knots=[0, 1], mults=[2, 2])
+NAMED = {
+    "SmoothElastica.to_bspline tol=0": (lambda: CURVE.to_bspline(tol=0), "tol must be > 0, got 0"),
+    "FitResult.to_bspline tol<0": (lambda: _fit_result().to_bspline(tol=-1e-3),
+                                   "tol must be > 0, got -0.001"),
+    "FitResult.to_bspline degree=2": (lambda: _fit_result().to_bspline(degree=2),
+                                      "degree must be 3..7, got 2"),
+    "SmoothElastica.to_bspline degree=9": (lambda: CURVE.to_bspline(degree=9),
+                                           "degree must be 3..7, got 9"),
+    "smooth_chain_to_bspline []": (lambda: el.smooth_chain_to_bspline([]),
+                                   "number of pieces must be >= 1, got 0"),
+    "ElasticSpline.to_bspline tol=0": (
+        lambda: el.elastic_spline(ARC[::10], tension=0.0).to_bspline(tol=0), "tol must be > 0"),
+    "SmoothElastica mu=-1": (lambda: el.SmoothElastica(mu=-1, k=0.5, length=1),
+                             "SmoothElastica: mu must be > 0, got -1"),
+    "SmoothElastica length=-5": (lambda: el.SmoothElastica(length=-5),
+                                 "SmoothElastica: length must be >= 0, got -5"),
+    "SmoothElastica k=nan": (lambda: el.SmoothElastica(k=float("nan")),
+                             "SmoothElastica: k must be finite, got nan"),
+    "SmoothElastica mu reassigned": (_reassigned_mu, "SmoothElastica: mu must be > 0, got -2"),
+    "SmoothElastica.points nan": (lambda: CURVE.points([0.0, np.nan]),
+                                  "s[1] must be finite, got nan"),
+    "DiscreteElastica h=0": (lambda: el.DiscreteElastica(h=0), "DiscreteElastica: h must be > 0"),
+    "DiscreteElastica k<0": (lambda: el.DiscreteElastica(k=-1), "DiscreteElastica: k must be >= 0"),
+    "BSpline mults": (lambda: el.BSpline(**{**POLE, "mults": [1, 2]}),
+                      "sum of mults must be npoles + degree + 1 = 4, got 3"),
+    "BSpline knots": (lambda: el.BSpline(**{**POLE, "knots": [1, 0]}),
+                      "knots must be strictly increasing"),
+    "BSpline pole nan": (lambda: el.BSpline(**{**POLE, "poles": [[0, 0], [1, np.inf]]}),
+                         "poles must be finite: point 1 has inf in column 1"),
+    "EllipticBlend d=0": (lambda: el.EllipticBlend(k=0.3, d=0), "EllipticBlend: d must be > 0"),
+    "EllipticBlend k<0": (lambda: el.EllipticBlend(k=-0.3), "EllipticBlend: k must be >= 0"),
+    "EllipticBlend.to_bspline tol=0": (
+        lambda: el.EllipticBlend(m=0.3).to_bspline(np.eye(4, 2), tol=0), "tol must be > 0"),
+    "plane_fit 2 points": (lambda: el.plane_fit(np.eye(2, 3)), "need at least 3 points, got 2"),
+    "interpolate_c2 1 point": (lambda: el.interpolate_c2([[0, 0]]), "need at least 2 points"),
+    "fit nan point": (lambda: el.fit(np.r_[ARC[:5], [[np.nan, 1.0]], ARC[5:]]),
+                      "points must be finite: point 5 has nan in column 0"),
+    "fit_keyline tol=0": (lambda: el.fit_keyline(ARC, tol=0), "fit_keyline: tol must be > 0, got 0"),
+    "affine_polyline skip_frac": (lambda: el.affine_polyline(CURVE, 10, skip_frac=0.5),
+                                  "skip_frac must be in [0, 0.5), got 0.5"),
+    "affine_polyline inflections": (lambda: el.affine_polyline(ARC, 10, inflections=[59]),
+                                    "inflections must be sample indices in 1..58"),
+    "uniform_bspline few points": (lambda: el.uniform_bspline(ARC[:3], degree=3),
+                                   "number of points must be >= degree + 1 = 4, got 3"),
+    "pca_normalize 1 point": (lambda: el.pca_normalize(ARC[:1]), "need at least 2 points, got 1"),
+    "find_inflection 3 points": (lambda: el.find_inflection(ARC[:3]),
+                                 "need at least 4 points, got 3"),
+    "hermite_analyse |P|": (lambda: el.hermite_analyse((0, 2), (0, 1), 1.0),
+                            "|P| must be 1 (to 1e-9), got 2"),
+    "BSpline.curvature degree": (lambda: el.BSpline(**POLE).curvature([0.5]),
+                                 "BSpline.curvature: degree must be >= 2, got 1"),
+}
+
+
+@pytest.mark.parametrize("case", sorted(NAMED))
+def test_invalid_arguments_are_named(case):
+    call, said = NAMED[case]
+    with pytest.raises(el.ElasticaError) as exc:
+        call()
+    assert said in str(exc.value) and "NULL" not in str(exc.value)
+    assert exc.value.status == 1      # EL_EINVAL, as the C library would have said
+
+
+@pytest.mark.parametrize("call", [lambda: el.MQBlend(c=0), lambda: el.eck_d(0),
+                                  lambda: el.eck_omega(0.0)])
+def test_mq_parameter_zero_is_named(call):
+    with pytest.raises(el.DomainError, match="c must be nonzero .*got 0"):
+        call()
+
+
+def test_tangent_angle_in_degrees_warns():
+    """The CLI takes degrees, the binding radians: 90 was read as 90 rad in silence."""
+    pts = np.array([[0, 0], [1, 0.2], [2, 0.5], [3, 0.4], [4, 0.1]], float)
+    with pytest.warns(UserWarning, match=r"'start_tangent' = 90: the binding takes radians"):
+        el.fit(pts, model="smooth", constraints={"start_tangent": 90})
+    with pytest.warns(UserWarning, match="end tangent = -400"):
+        el.cubic_through(ARC, end={"tangent": -400})
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        el.fit(pts, model="smooth", constraints={"start_tangent": -6.0, "end_tangent": 0.5})
