@@ -40,8 +40,10 @@ _AXIS_NAME = re.compile(r"\s*([xyzXYZ])\s*(?:[\[(].*[\])])?\s*")
 def _parse_text(text: str, name: str) -> np.ndarray:
     """Rows of numbers separated by semicolons, tabs or spaces (with decimal commas or
     points), or commas (decimal commas quoted, as spreadsheets write them: "1,5","0,25").
-    Blank lines and lines starting with '#' are skipped; one header line of non-numbers
-    (e.g. ``x,y,z``) is allowed as the first data line. Rows of more than 3 columns (a
+    Blank lines and lines starting with '#' are skipped; so are the lines before the first
+    row that holds a number when none of their fields is a number (a title, then a header
+    such as ``x,y,z``: any number of them; a line with a number is never skipped), the last
+    of which is the header. Rows of more than 3 columns (a
     scanner's point ids, normals, intensities; a survey's point names) are read
     when the header names the coordinate columns ``x``, ``y`` and optionally ``z`` (units in
     brackets allowed); a header that names them picks them by name in any case ("id,x,y",
@@ -68,8 +70,8 @@ def _parse_text(text: str, name: str) -> np.ndarray:
         # a field holding a comma is a decimal comma whatever the separator: a comma
         # separator splits unquoted ones, and the others have no comma between columns
         fields = [f.replace(",", ".") if _DECIMAL_COMMA.fullmatch(f) else f for f in fields]
-        if not rows and header is None and not any(_is_number(f) for f in fields):
-            header = fields            # a header line
+        if not rows and not any(_is_number(f) for f in fields):
+            header = fields            # a title or header line: the last one names columns
             continue
         rows.append((lineno, fields))
     if not rows:
@@ -78,10 +80,15 @@ def _parse_text(text: str, name: str) -> np.ndarray:
     whole = delim == "," and all(_INTEGER.fullmatch(f) for _, r in rows for f in r)
     hint = ('; decimal commas? Between commas they must be quoted ("102,697","4,576"), '
             "or the columns separated by semicolons") if whole else ""
-    widths = {len(f) for _, f in rows}
-    if len(widths) != 1:
-        raise InputError(f"{name}: rows have different numbers of columns {sorted(widths)}{hint}")
-    width = widths.pop()
+    counts = {}
+    for _, f in rows:
+        counts[len(f)] = counts.get(len(f), 0) + 1
+    width = max(counts, key=counts.get)     # most rows' number of columns
+    if len(counts) != 1:
+        lineno, f = next((ln, f) for ln, f in rows if len(f) != width)
+        raise InputError(f"{name}: line {lineno}: {len(f)} column{'s' * (len(f) != 1)} where "
+                         f"{counts[width]} of {len(rows)} rows have {width} (an empty cell?)"
+                         f"{hint}")
     axes = [m.group(1).lower() if (m := _AXIS_NAME.fullmatch(h)) else None for h in header or []]
     named = len(axes) == width and "x" in axes and "y" in axes and all(axes.count(a) <= 1 for a in "xyz")
     cols = [axes.index(a) for a in "xyz" if a in axes] if named else list(range(width))
@@ -93,6 +100,9 @@ def _parse_text(text: str, name: str) -> np.ndarray:
             # commas as separators ('102,697,4,576' for "102,697","4,576": QA)
             raise InputError(f"{name}: line {lineno}: not a number: {bad[0]!r}")
         out[r] = [float(fields[c]) for c in cols]
+        if not np.all(np.isfinite(out[r])):
+            raise InputError(f"{name}: line {lineno}: not finite: "
+                             f"{fields[cols[int(np.argmax(~np.isfinite(out[r])))]]!r}")
     if not named and width > 3:
         raise InputError(f"{name}: {width} columns: name the coordinates x, y (and z) "
                          f"in a header line to read them from more columns, or give 2 or 3{hint}")
@@ -105,7 +115,8 @@ def _decimal_commas_between(lines, sep) -> bool:
     as 'not a number'): every line but a header splits at ``sep`` into numbers, some
     written with a decimal comma."""
     rows = [[f.strip() for f in ln.split(sep) if f.strip()] for ln in lines]
-    rows = rows[1:] if rows and not any(map(_is_number, rows[0])) else rows
+    while rows and not any(_is_number(f) or _DECIMAL_COMMA.fullmatch(f) for f in rows[0]):
+        rows = rows[1:]                                   # a title, a header
     return bool(rows) and all(len(r) > 1 for r in rows) and all(
         _is_number(f) or _DECIMAL_COMMA.fullmatch(f) for r in rows for f in r) and any(
         _DECIMAL_COMMA.fullmatch(f) for r in rows for f in r)
@@ -119,16 +130,41 @@ def _is_number(s: str) -> bool:
         return False
 
 
+def _decode(data: bytes, name: str) -> str:
+    """UTF-16 when the file starts with its byte-order mark (Excel's "Unicode text"), else
+    UTF-8 (a BOM dropped), else Windows-1252: what Excel writes on Western European Windows
+    ("x (Länge)" from a German export), latin-1 with a few more characters; every byte
+    but 0x81, 0x8D, 0x8F, 0x90 and 0x9D is one. None of them: InputError naming the line of
+    the first byte that is not text."""
+    if data[:2] in (b"\xff\xfe", b"\xfe\xff"):
+        try:
+            return data.decode("utf-16")
+        except UnicodeDecodeError:
+            raise InputError(f"{name}: starts as UTF-16 but is not UTF-16 text") from None
+    try:
+        return data.decode("utf-8-sig")
+    except UnicodeDecodeError:
+        pass
+    try:
+        return data.decode("cp1252")
+    except UnicodeDecodeError as exc:
+        line = data.count(b"\n", 0, exc.start) + 1
+        raise InputError(f"{name}: line {line}: byte 0x{data[exc.start]:02X} is neither UTF-8 "
+                         "nor Windows-1252 text (save the file as UTF-8 CSV)") from None
+
+
 def read_points(path: PathLike, min_points: int = 3) -> np.ndarray:
     """Read an (n, 2) or (n, 3) float64 array of points from ``path``.
 
     Formats: ``.npy`` (a numeric array of shape (n, 2) or (n, 3)), otherwise text
     with comma (decimal commas quoted), semicolon, tab or whitespace (decimal commas
     allowed with these three) separated columns,
-    ``#`` comments and an optional header line, which can pick the columns ``x``, ``y``,
-    ``z`` out of more. Raises :class:`InputError` for a missing or unreadable file,
-    malformed rows, a column count other than 2 or 3 without such a header, NaN/inf
-    values, fewer than ``min_points`` points, or all points equal.
+    ``#`` comments and optional title and header lines above the data (lines without a
+    number; the last can pick the columns ``x``, ``y``, ``z`` out of more), UTF-8 or else
+    Windows-1252 (:func:`_decode`). Every message about a row names its line.
+    Raises :class:`InputError` for a missing or unreadable file, malformed rows, a
+    column count other than 2 or 3 without such a header, NaN/inf values, fewer than
+    ``min_points`` points, or all points equal.
     """
     p = Path(path)
     name = str(path)
@@ -144,10 +180,11 @@ def read_points(path: PathLike, min_points: int = 3) -> np.ndarray:
         arr = np.asarray(arr, dtype=np.float64)
     else:
         try:
-            text = p.read_text(encoding="utf-8-sig")
-        except (OSError, UnicodeDecodeError) as exc:
-            raise InputError(f"{name}: cannot read as text ({exc.__class__.__name__})") from None
-        arr = _parse_text(text, name)
+            data = p.read_bytes()
+        except OSError as exc:
+            raise InputError(f"{name}: cannot read ({exc.strerror or exc.__class__.__name__})") \
+                from None
+        arr = _parse_text(_decode(data, name), name)
     if arr.ndim != 2 or arr.shape[1] not in (2, 3):
         raise InputError(f"{name}: need 2 or 3 columns (x,y or x,y,z), got shape {arr.shape}")
     if not np.all(np.isfinite(arr)):

@@ -134,6 +134,18 @@ class FitInputsTest(unittest.TestCase):
         f = Fi.make(self.doc, [], csv_file=path, Model="smooth")
         self._fit_ok(f)
 
+    def test_csv_file_of_a_german_excel_export(self):
+        """A title line above a cp1252 header 'x (L\u00e4nge)', semicolons and decimal commas
+        (refused: 'line 2: not a number', then 'cannot read as text', QA): read as its
+        clean UTF-8 version."""
+        path = S.temp_path(self, "excel.csv")
+        rows = "".join(f"{v.x:.12f};{v.y:.12f};{v.z:.12f}\n".replace(".", ",")
+                       for v in G.to_3d(S.SKETCH_PLACEMENT, self.xy))
+        with open(path, "wb") as fh:
+            fh.write(("Profil 7 / Scan\nx (L\u00e4nge);y (H\u00f6he);z\n" + rows).encode("cp1252"))
+        f = Fi.make(self.doc, [], csv_file=path, Model="smooth")
+        self._fit_ok(f)
+
     def test_keyline_split_at_inflection_is_one_g2_bspline(self):
         """Issue 13 point 4: the keyline is ONE curve in the sketch, G2 at the joint,
         measured on the shape from both sides of the joint's knot."""
@@ -1393,7 +1405,11 @@ class FitBadInputTest(unittest.TestCase):
         path = S.temp_path(self, "bad.csv")
         with open(path, "w") as fh:
             fh.write("1,2\n3,x\n")
-        self._rejected([], csv_file=path)
+        self.assertIn("bad.csv: line 2: not a number: 'x'", self._rejected([], csv_file=path))
+        with open(path, "w") as fh:      # an empty cell: its line (QA: 'different numbers of columns')
+            fh.write("1;2\n3;4\n5;\n6;7\n8;9\n10;11\n")
+        self.assertIn("bad.csv: line 3: 1 column where 5 of 6 rows have 2",
+                      self._rejected([], csv_file=path))
 
     def test_resample_step_longer_than_the_points_reach(self):
         xy, _ = S.keyline_xy(20)

@@ -221,6 +221,54 @@ def test_read_points_with_quoted_or_spaced_decimal_commas(capsys, tmp_path):
         read_points(tmp_path / "word.csv")
 
 
+def _rows(n=40):
+    """A German spreadsheet's rows: semicolons and decimal commas."""
+    return [f"{i},5;{i * i / 10:.2f}".replace(".", ",") for i in range(n)]
+
+
+def test_read_points_skips_a_title_and_reads_cp1252(capsys, tmp_path):
+    """QA: a title line above the header was refused ('line 2: not a number: 'x''), a German
+    Excel export's cp1252 header 'x (L\xe4nge)' too ('cannot read as text'); both read to the
+    array of the clean file, by read_points and by `elastica fit`."""
+    clean = tmp_path / "clean.csv"
+    clean.write_text("x;y\n" + "\n".join(_rows()) + "\n")
+    want = read_points(clean)
+    files = {"title.csv": ("Profil 7 / Scan 2026-12-01\nx;y\n" + "\n".join(_rows())).encode(),
+             "cp1252.csv": ("x (L\xe4nge);y (H\xf6he)\n" + "\n".join(_rows())).encode("cp1252"),
+             "both.csv": ("Profil 7 \u2013 Scan\n\nx (L\xe4nge);y (H\xf6he)\n"
+                          + "\n".join(_rows())).encode("cp1252"),
+             "utf16.txt": ("Profil 7\r\nx (L\xe4nge)\ty\r\n"     # Excel's "Unicode text"
+                           + "\r\n".join(r.replace(";", "\t") for r in _rows())).encode("utf-16")}
+    for name, data in files.items():
+        (tmp_path / name).write_bytes(data)
+        np.testing.assert_array_equal(read_points(tmp_path / name), want, err_msg=name)
+    r = cli(capsys, "fit", tmp_path / "both.csv", "--json", tmp_path / "f.json")
+    assert r.returncode == 0, r.stderr
+    # a line with a number is never skipped as a title: refused, naming it
+    (tmp_path / "numeric.csv").write_text("Scan 7;2\nx;y\n" + "\n".join(_rows()))
+    with pytest.raises(InputError, match="numeric.csv: line 1: not a number: 'Scan 7'"):
+        read_points(tmp_path / "numeric.csv")
+
+
+def test_read_points_messages_name_the_line(capsys, tmp_path):
+    """QA: an empty cell said 'rows have different numbers of columns [1, 2]', bytes that
+    are no text 'cannot read as text (UnicodeDecodeError)': each names its line now."""
+    rows = _rows()
+    (tmp_path / "empty.csv").write_text("x;y\n" + "\n".join(rows[:23] + ["23,5;"] + rows[24:]))
+    with pytest.raises(InputError, match=r"empty.csv: line 25: 1 column where 39 of 40 rows "
+                                         r"have 2 \(an empty cell\?\)"):
+        read_points(tmp_path / "empty.csv")
+    r = cli(capsys, "fit", tmp_path / "empty.csv")
+    assert r.returncode == 2 and "line 25" in r.stderr
+    (tmp_path / "binary.csv").write_bytes(("x;y\n" + "\n".join(rows[:5])).encode()
+                                          + b"\n7;\x81\n" + "\n".join(rows[5:]).encode())
+    with pytest.raises(InputError, match="line 7: byte 0x81 is neither UTF-8 nor Windows-1252"):
+        read_points(tmp_path / "binary.csv")
+    (tmp_path / "nan.csv").write_text("x,y\n0,0\n1,nan\n2,1\n3,0\n")
+    with pytest.raises(InputError, match="nan.csv: line 3: not finite: 'nan'"):
+        read_points(tmp_path / "nan.csv")
+
+
 # ------------------------------------------------------------------ hermite
 
 def test_hermite_table_json_and_svg(capsys, tmp_path):
