@@ -19,7 +19,7 @@ from typing import Optional, Sequence, Tuple
 import numpy as np
 
 from ._ffi import (DomainError, as_int, as_points, as_real, as_real_array, as_size, as_vector,
-                   bspline_from_c, check, dptr, ffi, lib, require)
+                   bspline_from_c, check, dptr, ffi, invalid, lib, require)
 
 __all__ = ["affine_coords", "affine_length", "affine_curvature", "osculating_conics",
            "OsculatingConics", "chaikin", "lane_riesenfeld", "affine_elements",
@@ -178,6 +178,10 @@ def affine_curvature_exact(kappa, dkappa, ddkappa) -> np.ndarray:
     + (1/3) kappa^(-5/3) kappa'' (real cube roots; needs kappa != 0)."""
     kappa, dkappa, ddkappa = (as_real_array(a, n) for a, n in
                               ((kappa, "kappa"), (dkappa, "dkappa"), (ddkappa, "ddkappa")))
+    for a, n in ((kappa, "kappa"), (dkappa, "dkappa"), (ddkappa, "ddkappa")):
+        if not np.all(np.isfinite(a)):     # (NaN in, NaN out would pass in silence)
+            raise invalid(f"affine_curvature_exact: {n} must be finite, got "
+                          f"{float(a[~np.isfinite(a)].flat[0])}")
     c = np.cbrt(kappa)
     return c ** 4 - (5.0 / 9.0) * dkappa ** 2 / c ** 8 + ddkappa / (3.0 * c ** 5)
 

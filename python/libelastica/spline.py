@@ -90,6 +90,8 @@ class ElasticSpline:
         """The curvature comb: (n, 2) tips p - scale kappa N at the arc lengths of
         :meth:`points` (teeth outside the bend, as CAD combs are drawn); ``scale``
         defaults to 15 % of the extent over the largest curvature."""
+        if scale is not None:
+            scale = as_real(scale, "ElasticSpline.comb: scale")
         xy, k, th = self.points(n), self.curvature(n), self.angle(n)
         if scale is None:
             ext = float(np.ptp(xy, axis=0).max())

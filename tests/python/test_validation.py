@@ -294,6 +294,12 @@ NAMED = {
                                  "need at least 4 points, got 3"),
     "hermite_analyse |P|": (lambda: el.hermite_analyse((0, 2), (0, 1), 1.0),
                             "|P| must be 1 (to 1e-9), got 2"),
+    "ElasticSpline.comb scale nan": (
+        lambda: el.elastic_spline(ARC[::10], tension=0.0).comb(5, scale=np.nan),
+        "comb: scale must be finite, got nan"),
+    "affine_curvature_exact nan": (
+        lambda: el.affine_curvature_exact([1.0, 2.0], [0.0, np.nan], [1.0, 1.0]),
+        "dkappa must be finite, got nan"),
     "BSpline.curvature degree": (lambda: el.BSpline(**POLE).curvature([0.5]),
                                  "BSpline.curvature: degree must be >= 2, got 1"),
 }
