@@ -24,13 +24,6 @@ def _check_fields(cls: str, p, names, rules) -> None:
             require(rules[n][0](v), f"{cls}: {n}", rules[n][1], v)
 
 
-def _finite_params(obj, names):
-    for n in names:
-        v = getattr(obj, n)
-        if not np.isfinite(v):
-            raise ValueError(f"{type(obj).__name__}: {n} must be finite, got {v}")
-
-
 @dataclass
 class SmoothElastica:
     """A smooth elastica segment: u = sqrt(mu) s + q, sin((theta-phi)/2) = k sn(u;k),
