@@ -676,6 +676,43 @@ static long gap_at_length(const size_t *idx, size_t n, const double *fs, double 
  * than this of the data's size (the curve's points are evaluated to ~1e-13 of it) */
 #define ROUNDING 1e-9
 
+/* The distance of q from the polyline V (m vertices at arc lengths j ds) over the arcs
+ * [a, b]: the segments that meet it. */
+static double stretch_distance(const double *V, size_t m, double ds, double a, double b, const double *q)
+{
+    double best = HUGE_VAL;
+    for (size_t j = 0; j + 1 < m; j++) {
+        if ((double)(j + 1) * ds < a || (double)j * ds > b) continue;
+        const double *A = V + 2 * j, ux = A[2] - A[0], uy = A[3] - A[1], u2 = ux * ux + uy * uy;
+        const double t = u2 > 0.0 ? fit_clamp(((q[0] - A[0]) * ux + (q[1] - A[1]) * uy) / u2, 0.0, 1.0) : 0.0;
+        best = fmin(best, hypot(q[0] - A[0] - t * ux, q[1] - A[1] - t * uy));
+    }
+    return best;
+}
+
+/* A sketch's first gap i whose point i + 1 the curve passes before point i and not after
+ * it as well: its foot behind point i's by more than half their distance and 8 noise levels
+ * (far beyond noise's swap of close points: sketches drawn from a curve in order, noise
+ * 0.1-1 %, swap by up to 4), and the curve between point i's foot and point i + 2's not
+ * within twice its distance from the curve plus 4 noise levels (a point where a loop
+ * crosses itself is near both passes) (QA: 8 clicks fitted at rms 0.14 in the order 0 1 5 4
+ * 3 2 6 7, their feet 36.3, 33.3, 22.9, 22.1 along the curve from point 2 to 5, where the
+ * sorted feet add no unaccounted length); -1 where none. V: the curve's polyline (m
+ * vertices, ds apart). */
+static long passed_back(const double *xy, size_t n, const double *fs, double level, const double *V, size_t m,
+                        double ds)
+{
+    for (size_t i = 0; i + 1 < n; i++) {
+        const double *q = xy + 2 * i + 2;
+        const double chord = hypot(q[0] - xy[2 * i], q[1] - xy[2 * i + 1]);
+        if (!(fs[i] - fs[i + 1] > fmax(0.5 * chord, 8.0 * level))) continue;
+        const double here = stretch_distance(V, m, ds, 0.0, HUGE_VAL, q);
+        const double on = stretch_distance(V, m, ds, fs[i], i + 2 < n ? fs[i + 2] : HUGE_VAL, q);
+        if (!(on <= 2.0 * here + 4.0 * level)) return (long)i;
+    }
+    return -1;
+}
+
 long el__fit_wander_gap(int model, const double *xy, size_t n, const double *p, const double *fs, double rms,
                         const double ends[4])
 {
@@ -710,6 +747,8 @@ long el__fit_wander_gap(int model, const double *xy, size_t n, const double *p, 
     at = -1;
     if (st) {
         /* a curve that cannot be evaluated: judged by its stray alone */
+    } else if (n < FIT_SKETCH_POINTS && (at = passed_back(xy, n, fs, level, V, m, ds)) >= 0) {
+        /* points passed out of order */
     } else if (chords_cross(V, m, chord_step(m, CROSS_CHORDS), -1.0, loop, ROUNDING * sc) &&
                !chords_cross(xy, n, chord_step(n, POINT_CHORDS), LOOP_NOISE * noise, NULL, ROUNDING * sc)) {
         at = gap_at_length(idx, n, fs, 0.5 * (double)(loop[0] + loop[1]) * ds);

@@ -236,8 +236,8 @@ def wander_summary(gap: int, points=None, unit: str = "", numbered: bool = True)
                               for i in (gap, gap + 1))
     where = (f"points {gap} and {gap + 1} (counted from 0{'; at ' + places if places else ''})"
              if numbered else f"the points at {places}")
-    return (f"the curve wanders away from its points between {where}: it loops, strays or swings "
-            "where no point holds it, its distances to the points small all the same")
+    return (f"the curve wanders away from its points between {where}: it loops, strays, swings "
+            "or passes them out of order where no point holds it, its distances to the points small all the same")
 
 
 def _pair(value, name: str):
@@ -416,7 +416,7 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     no point, the points passed out of order) is fitted again from the paired fit and
     replaced when that one follows them, even at a higher rms (free fits and those whose
     constraints are held exactly: the start point and tangent, the smooth start
-    curvature). A fit kept that still loops, strays or swings between two points (its
+    curvature). A fit kept that still loops, strays, swings or passes its points out of order between two (its
     distances small all the same) warns (WanderWarning) naming that gap, also
     ``FitResult.wander_gap``. max_candidates: initial
     guesses fitted at most (default 6; fitting stops at the first that reaches the

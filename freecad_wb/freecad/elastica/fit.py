@@ -166,7 +166,7 @@ def _fit(xy, **options):
 
 def _wanders(result, plane):
     """The warning for a fit in one piece that wanders away from its points between two of
-    them (FitResult.wander_gap: it loops, strays or swings where no point holds it, their
+    them (FitResult.wander_gap: it loops, strays, swings or passes them out of order, their
     distances small all the same), naming their places (the fit's order of the points is not
     the user's: no numbers), else none."""
     if result.wander_gap < 0:
