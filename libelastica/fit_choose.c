@@ -668,7 +668,7 @@ static int g1_family_starts(fit_run_state *R)
     int nf = FIT_G1_STARTS;
     const int gst = el__fit_g1_family_start(&R->ob, &R->con, R->noise_rms,
                                             R->best_meets ? MEMBER_GAIN * R->best.f : HUGE_VAL,
-                                            R->cand, &nf);
+                                            R->cand, &nf, FIT_G1_WAVES);
     if (gst == EL_ENOMEM) return gst;
     R->nfamily = gst ? 0 : (size_t)nf;
     if (R->nfamily > 0) {
@@ -687,11 +687,16 @@ static int g1_family_starts(fit_run_state *R)
  * ended on others (6 points, a start point, tangent and curvature and an end point and
  * tangent held: from curves of rms 0.9756 and 1.0393 that meet them, fits of 0.9964 and
  * 1.0908). Only there (R->determined), its status EL_OK: a point of the first-order condition
- * with the rows' multipliers. EL_OK, or EL_ENOMEM. */
+ * with the rows' multipliers. Elsewhere, where no fit from it met the rows, the start as it
+ * is, EL_ENOCONV: 31 points between nearly collinear lines joined G1 at both ends, from
+ * their tension-0 batten, every fit missed the start tangent and the call failed EL_EDOM
+ * under OpenBLAS's Sandybridge and Prescott kernels and the reference BLAS (met under
+ * SkylakeX, Haswell, Zen and Nehalem). EL_OK, or EL_ENOMEM. */
 static int caller_start_as_is(fit_run_state *R)
 {
     fit_objective *ob = &R->ob;
-    if (!R->caller_twice || !R->determined || !ob->rest || R->map.nx == 0) return EL_OK;
+    if (!R->caller_twice || !ob->rest || R->map.nx == 0) return EL_OK;
+    if (!R->determined && (R->best_meets || !R->need_ipopt)) return EL_OK;
     double p0[FIT_NP], x0[FIT_MAXX], c[FIT_NCON];
     int which[FIT_NCON];
     memcpy(p0, R->cand[0], sizeof p0);
@@ -703,7 +708,7 @@ static int caller_start_as_is(fit_run_state *R)
     memcpy(kept, ob->s, sizeof(double) * R->n);
     fit_value fv;
     const int as_is = !el__fit_feet_start(ob, x0) && !el__fit_objective_eval(ob, x0, 0, &fv) &&
-                      fv.f < R->best.f &&
+                      (fv.f < R->best.f || !R->determined) &&
                       el__fit_meets(ob, &R->map, &R->con, x0, R->lo, R->hi, R->tmp);
     if (as_is) {
         const int rows = el__fit_constraint_rows(ob, &R->con_rows, x0, c, NULL, which, R->tmp);
@@ -711,6 +716,7 @@ static int caller_start_as_is(fit_run_state *R)
         memcpy(R->best.x, x0, sizeof R->best.x);
         R->best.f = fv.f;
         R->best.status = rows == R->map.nx ? EL_OK : EL_ENOCONV;   /* rows < 0: not evaluable */
+        if (!R->determined) R->best.status = EL_ENOCONV;
         memcpy(R->best_init, p0, sizeof p0);
         R->best_meets = R->last_is_best = 1;
         R->best_strays = R->best_loops = -1;

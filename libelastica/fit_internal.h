@@ -530,6 +530,7 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
 enum {
     FIT_MAXCAND = 6,        /* initial guesses at most (el_guess_*) */
     FIT_G1_STARTS = 3,      /* G1 family members fitted at most (fit_g1_family.c) */
+    FIT_G1_WAVES = 8,       /* and waves along nearly collinear ends (fit_g1_family.c) */
     /* fewer points are a sketch's (bench_fit_sparse.py draws 6-59), whose noise figure
      * holds their curve's bending too (fit_choose.c: ob.f_direct) */
     FIT_SKETCH_POINTS = 60
@@ -563,7 +564,7 @@ typedef struct fit_run_state {
     int mode;                                /* the smooth fractions' el_param_mode */
     /* the starts (fit_choose.c): cand[0..ncand), the index of each further start in it
      * ((size_t)-1: none), the first nconj conjugate and nfamily family starts */
-    double cand[FIT_MAXCAND + 4 + FIT_G1_STARTS][FIT_NP];
+    double cand[FIT_MAXCAND + 4 + FIT_G1_STARTS + FIT_G1_WAVES][FIT_NP];
     size_t ncand, free_ci, smooth_ci, natural_ci, nconj, nfamily;
     int caller_twice, caller_start, free_start, smooth_start, sketch_rows;
     int natural_ok, natural_evals, deferred, no_polish, polish_run, refit_no_polish;
@@ -633,10 +634,11 @@ int el__fit_natural_fit(fit_objective *ob, double noise, double *v, int *certifi
  * whose objective is below f_below (the fit's, |r|^2 / 2n): at most *count (in: > 0; out:
  * how many), the lowest objectives of other families (*count - 1) and the lowest that
  * follows the points (el__fit_stray), then the lowest again while there is room
- * (normalised parameters v[j]; noise: el__fit_noise_rms, normalised). EL_EDOM: none,
- * EL_ENOMEM. ob's feet are left at the last member's. */
+ * (normalised parameters v[j]; noise: el__fit_noise_rms, normalised); then, between
+ * nearly collinear ends, up to `waves` small waves along the chord (v[*count] on, *count
+ * counts them too). EL_EDOM: none, EL_ENOMEM. ob's feet are left at the last member's. */
 int el__fit_g1_family_start(fit_objective *ob, const fit_constraints *con, double noise, double f_below,
-                            double (*v)[FIT_NP], int *count);
+                            double (*v)[FIT_NP], int *count, int waves);
 /* fit_natural.c: the moduli bounding the natural batten's family: k* (2E = K, the figure
  * eight) and k_t (lobes j and j + 2 touch). */
 int el__natural_moduli(double *kstar, double *ktouch);
