@@ -1674,8 +1674,12 @@ class FitPointOrderTest(unittest.TestCase):
         """Start and end edges both by the points' left end, the start one joined G1: no
         order of the points puts each edge by its end, and the fit shrank to a curve 6e-4
         mm long for 84 mm of points, rms 53 mm, status converged (QA: 3.6e-12 mm, a shape
-        the 3D view could not mesh, which kept drawing the last curve). Refused, saying
-        which edge is the other end's; the last good curve and its figures are kept."""
+        the 3D view could not mesh, which kept drawing the last curve), or (as the BLAS
+        kernels round Ipopt's path: OpenBLAS's SkylakeX, Nehalem, the reference BLAS) looped
+        away to 750-790 mm at rms 7-10 mm. Shrunk, it is refused, saying which edge is the
+        other end's, and the last good curve and its figures are kept; looped, it is kept
+        with that reason among its warnings, as every fit a reversed join makes loop
+        (test_joins_to_picked_arcs_on_the_shape)."""
         sk = self._lead_in((-40, 20, 0, 5))
         wire = self.doc.addObject("Part::Feature", "Wire")
         wire.Shape = Part.makePolygon([App.Vector(x, y, 0) for x, y in self.ARC[::-1]])
@@ -1687,12 +1691,18 @@ class FitPointOrderTest(unittest.TestCase):
         length, rms = f.Shape.Length, f.Rms
         f.StartContinuity = "G1"
         self.doc.recompute()
-        self.assertTrue(f.Status.startswith("error: the fit shrank to a curve"), f.Status)
-        self.assertIn("cannot be met along the points", f.Status)
-        self.assertIn("Start join G1: the edge leaves its joined end back along the points",
-                      f.Status)
-        self.assertIn("it lies nearer the points' end: pick it as End tangent", f.Status)
-        self.assertEqual((f.Shape.Length, f.Rms), (length, rms))
+        join = "Start join G1: the edge leaves its joined end back along the points"
+        if f.Status.startswith("error"):
+            self.assertTrue(f.Status.startswith("error: the fit shrank to a curve"), f.Status)
+            self.assertIn("cannot be met along the points", f.Status)
+            self.assertIn(join, f.Status)
+            self.assertIn("it lies nearer the points' end: pick it as End tangent", f.Status)
+            self.assertEqual((f.Shape.Length, f.Rms), (length, rms))
+        else:
+            said = [w for w in f.Warnings if join in w]
+            self.assertEqual(len(said), 1, list(f.Warnings))
+            self.assertIn("it lies nearer the points' end: pick it as End tangent", said[0])
+            self.assertGreater(f.Shape.Length, 5 * length, f.Status)
 
     def _csv(self, xy):
         path = S.temp_path(self, "points.csv")
