@@ -184,7 +184,9 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
             raise InputError("--keyline: the joint is the keyline's constraint; end constraints "
                              "and --distance apply to one-piece fits")
         fixed = _parse_fix(args.fix, pts[:, :2], keyline=True)
-        kres = el.fit_keyline(pts, r=args.step, **_fit_kwargs(args, fixed))
+        with warnings.catch_warnings():     # its status said in the CLI's words
+            warnings.simplefilter("ignore", el.ConvergenceWarning)
+            kres = el.fit_keyline(pts, r=args.step, **_fit_kwargs(args, fixed))
         prep = kres.prepared
         plane = _plane_record(prep.frame)
         to_input = prep.to_input

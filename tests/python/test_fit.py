@@ -197,6 +197,13 @@ def test_a_fit_that_does_not_converge_warns():
     with warnings.catch_warnings():
         warnings.simplefilter("error", el.ConvergenceWarning)
         assert el.fit(pts, "smooth").status == 0
+    # a keyline's too (both sides at status 6, silently before)
+    s = np.linspace(0.0, 8.0, 120)
+    tile = el.SmoothElastica(k=0.6, q=-1.2, length=8.0).points(s) + \
+        np.random.default_rng(2).normal(0, 0.02, (120, 2))
+    with pytest.warns(el.ConvergenceWarning, match="fit_keyline: not converged"):
+        kf = el.fit_keyline(tile, model="smooth", max_iter=1)
+    assert kf.first.status != 0
 
 
 def test_a_fit_that_swings_between_two_points_warns_naming_the_gap():

@@ -390,7 +390,9 @@ def _keyline(xy, model, step):
     which stops up to a step short of the points (seed 000 §5.3): their B-spline continues
     each by its recursion to its end point's foot (KeylineFit.ends)."""
     n = np()
-    kf = el().fit_keyline(xy, r=step, model=model)
+    with catch_warnings():                           # its Status says it
+        simplefilter("ignore", el().ConvergenceWarning)
+        kf = el().fit_keyline(xy, r=step, model=model)
     first, second = kf.first, kf.second
     to_plane = kf.prepared.frame2d.to_parent         # the halves live in x''y''
     skip = 1 if model == "discrete" else 0
