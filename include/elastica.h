@@ -481,12 +481,12 @@ typedef struct el_fit_smooth_result {
  * adjacent along it, of points a < b, is the gap b - 1), by the tests above in their order: it strays
  * (the gap holding the most curve no point accounts for; the noise level of fewer than 60
  * points the lower of the data's and the fit's rms; a held start or end point allowed the
- * curve to it as a gap), fewer than 60 points, passes point i + 1 before point i and not
- * after it as well (its foot behind by more than half their distance and 8 noise levels:
- * the first such i), crosses
- * itself where the points' polygon does not (the gap of
- * the loop's middle), or, fewer than 60 points, swings between two of them (the first such
- * gap; the discrete polygon judged at its vertices); else -1. A point added in that gap,
+ * curve to it as a gap); then, fewer than 60 points (a sketch's: more are judged by the
+ * stray test alone, as the fit's own rule), passes point i + 1 before point i and not after
+ * it as well (its foot behind by more than half their distance and 8 noise levels: the
+ * first such i), crosses itself where the points' polygon does not (the gap of the loop's
+ * middle), or swings between two of them (the first such gap; the discrete polygon judged
+ * at its vertices); else -1. A point added in that gap,
  * or the length bounded (EL_CONSTRAIN_LENGTH), holds the curve there. Reporting only: the
  * fit is the same whatever it says.
  * Returns (and stores in res->status):

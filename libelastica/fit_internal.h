@@ -353,10 +353,10 @@ double el__fit_gap_sag(const double *xy, size_t n, const double *fs, const doubl
  * (result_wanders, fit_restart.c), in their order: it strays (el__fit_stray_held above
  * FIT_STRAY, at the noise level fmin(noise, rms) of fewer than FIT_SKETCH_POINTS points,
  * else the data's noise): the gap holding the most curve no point accounts for (the ends'
- * share: the gap next to that end's point); fewer than FIT_SKETCH_POINTS points, it passes
- * point i + 1 before point i and not after it as well (passed_back: the first such i); it crosses itself where its points' polygon does
- * not (el__fit_loops): the gap of its loop's middle; fewer than FIT_SKETCH_POINTS points,
- * it swings between two of them (el__fit_gap_sag above FIT_GAP_SAG; the discrete model's
+ * share: the gap next to that end's point); then, fewer than FIT_SKETCH_POINTS points (more:
+ * the stray test alone), it passes point i + 1 before point i and not after it as well
+ * (passed_back: the first such i), it crosses itself where its points' polygon does not
+ * (el__fit_loops): the gap of its loop's middle, or it swings between two of them (el__fit_gap_sag above FIT_GAP_SAG; the discrete model's
  * polygon judged at its vertices): the first such gap. -1 where it does none of these (or
  * out of memory). Reporting only (el_fit_*_result.wander_gap): no fit depends on it. */
 long el__fit_wander_gap(int model, const double *xy, size_t n, const double *p, const double *fs, double rms,
