@@ -326,6 +326,21 @@ static int by_index(const void *a, const void *b)
  * insertion's nor GSL's comparisons order, by the pairs: NaN last. */
 #define FEET_ORDER_MOVES 32
 #define FEET_PER_BUCKET 16
+/* Insertion of idx (n indices into fs) into the order of their feet, equal feet keeping
+ * their order; stops past budget moves: whether it finished. */
+static int insertion_within(const double *fs, size_t *idx, size_t n, size_t budget)
+{
+    size_t moves = 0;
+    for (size_t k = 1; k < n && moves <= budget; k++) {
+        const size_t t = idx[k];
+        size_t j = k;
+        for (; j > 0 && fs[idx[j - 1]] > fs[t]; j--) idx[j] = idx[j - 1];
+        idx[j] = t;
+        moves += k - j;
+    }
+    return moves <= budget;
+}
+
 /* The feet (no NaN) in n / FEET_PER_BUCKET buckets of equal arc length (their counts 0.5 MiB
  * for 10^6 points, below the fit's peak), each point's index placed in its
  * bucket in index order, then insertion within the buckets: linear where the feet spread
@@ -351,15 +366,7 @@ static int bucket_order(const double *fs, size_t *idx, size_t n, size_t budget)
     for (size_t k = 0; k < n; k++) idx[start[FOOT_BUCKET(k)]++] = k;
 #undef FOOT_BUCKET
     free(start);
-    size_t moves = 0;
-    for (size_t k = 1; k < n && moves <= budget; k++) {
-        const size_t t = idx[k];
-        size_t j = k;
-        for (; j > 0 && fs[idx[j - 1]] > fs[t]; j--) idx[j] = idx[j - 1];
-        idx[j] = t;
-        moves += k - j;
-    }
-    return moves > budget;
+    return !insertion_within(fs, idx, n, budget);
 }
 
 int el__fit_feet_order(const double *fs, size_t *idx, size_t n)
@@ -376,16 +383,8 @@ int el__fit_feet_order(const double *fs, size_t *idx, size_t n)
         return 0;
     }
     const size_t budget = FEET_ORDER_MOVES * n;
-    size_t moves = 0;
     for (size_t k = 0; k < n; k++) idx[k] = k;
-    for (size_t k = 1; k < n && moves <= budget; k++) {
-        const size_t t = idx[k];
-        size_t j = k;
-        for (; j > 0 && fs[idx[j - 1]] > fs[t]; j--) idx[j] = idx[j - 1];
-        idx[j] = t;
-        moves += k - j;
-    }
-    if (moves <= budget) return 0;
+    if (insertion_within(fs, idx, n, budget)) return 0;
     if (!bucket_order(fs, idx, n, budget)) return 0;
     gsl_sort_index(idx, fs, 1, n);
     for (size_t a = 0, b; a < n; a = b) {
