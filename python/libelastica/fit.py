@@ -704,9 +704,6 @@ def fit_keyline(points, r: Optional[float] = None, model: str = "discrete", side
     if n < 7:
         raise ValueError("fit_keyline: fewer than 7 points")
     st, res, idx, dist, foot = _solve_keyline(model, data, split, o)
-    if st != lib.EL_OK:     # as fit's (QA: both sides at status 6, silently)
-        warnings.warn(f"fit_keyline: not converged: {ffi.string(lib.el_strerror(st)).decode()} "
-                      f"(status {st})", ConvergenceWarning, stacklevel=2)
     fits = []
     for c in range(2):
         sp = data[idx[c]]
@@ -734,6 +731,9 @@ def fit_keyline(points, r: Optional[float] = None, model: str = "discrete", side
         inputs = _polyline_distances(local, polygon)
     else:
         inputs, ends = np.abs(dist), None        # the input points themselves were fitted
+    if st != lib.EL_OK:     # as fit's (QA: both sides at status 6, silently); not before a refusal
+        warnings.warn(f"fit_keyline: not converged: {ffi.string(lib.el_strerror(st)).decode()} "
+                      f"(status {st})", ConvergenceWarning, stacklevel=2)
     return KeylineFit(prepared=prep, inflection=infl, first=fits[0], second=fits[1],
                       inflection_estimate=i0, joint=J, input_distances=inputs, ends=ends)
 
