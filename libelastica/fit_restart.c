@@ -631,8 +631,9 @@ static size_t coil_runs(const double *xy, size_t n, double noise, const fit_obje
 /* Each of the ns starts fitted from its own feet (go: use_initial; flags: el__fit_run's),
  * then nb runs of go's constraints with the length bounded (follow_run), the lowest that
  * does not wander (result_wanders) replacing *res (d, fs) when its rms is at most
- * FIT_SKETCH_TOL of the data's size above *res's; *replaced says so. res->status, or
- * EL_ENOMEM. */
+ * FIT_SKETCH_TOL of the data's size above *res's (where *res coils, el__fit_stray above
+ * FIT_COIL: the lowest that does not coil, within FIT_COIL_TOL); *replaced says so.
+ * res->status, or EL_ENOMEM. */
 static int lowest_that_follows(const double *xy, size_t n, const el_fit_options *go, int flags,
                                const double (*starts)[FIT_NP], size_t ns, size_t nb,
                                double noise, fit_objective *ob, const double norm[3],
