@@ -715,8 +715,8 @@ static int caller_start_as_is(fit_run_state *R)
         memset(&R->best, 0, sizeof R->best);
         memcpy(R->best.x, x0, sizeof R->best.x);
         R->best.f = fv.f;
-        R->best.status = rows == R->map.nx ? EL_OK : EL_ENOCONV;   /* rows < 0: not evaluable */
-        if (!R->determined) R->best.status = EL_ENOCONV;
+        /* EL_OK only where the rows are as many as the variables (rows < 0: not evaluable) */
+        R->best.status = R->determined && rows == R->map.nx ? EL_OK : EL_ENOCONV;
         memcpy(R->best_init, p0, sizeof p0);
         R->best_meets = R->last_is_best = 1;
         R->best_strays = R->best_loops = -1;

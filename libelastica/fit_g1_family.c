@@ -60,7 +60,8 @@ static int wave_starts(const fit_constraints *con, double (*v)[FIT_NP], int room
     if (!(dn > 0.0) || !(fabs(e0) <= WAVE_ENDS && fabs(e1) <= WAVE_ENDS)) return 0;
     int nw = 0;
     for (double period = dn; nw < room; period *= 0.70710678118654752, nw++) {
-        /* curvature period 4 K(k) / sqrt(mu), K(0.1) = 1.0047 pi / 2 */
+        /* curvature period 4 K(k) / sqrt(mu), K(k) = pi / 2 (1 + k^2 / 4 + 9 k^4 / 64 + ...):
+         * K(0.1) = 1.00252 pi / 2 (a start: 1.0025) */
         const double sqmu = 2.0 * M_PI * 1.0025 / period;
         const double w[FIT_NP] = {a[0], a[1], con->start_theta, sqmu, WAVE_K, 0.0,
                                   dn * (1.0 + WAVE_K * WAVE_K)};

@@ -14,6 +14,7 @@ from .cli_common import (EXIT_BADINPUT, EXIT_NOCONV, EXIT_OK, PROG, _converged,
                          _finite, _float_list, _fmt, _mapped_bspline, _plane_record, _Progress,
                          _status_text, _table)
 from .cli_outputs import out_path
+from .fit import quiet_fit
 from .io import InputError, curve_to_dict, read_points, write_dxf_spline, write_json
 
 
@@ -221,13 +222,11 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
             if len(data) < 4:
                 raise InputError(f"{path}: --step {args.step} leaves only {len(data)} points")
         fixed, constraints = _parse_fix(args.fix, data), _constraints(args, data)
-        with warnings.catch_warnings():     # said in the CLI's words (_warn_wanders, the status)
-            warnings.simplefilter("ignore", el.WanderWarning)
-            warnings.simplefilter("ignore", el.ConvergenceWarning)
-            res = el.fit(data, **_fit_kwargs(args, fixed, constraints))
-            free = None
-            if constraints and getattr(res, "distances", None) is not None:
-                free = el.fit(data, **_fit_kwargs(args, fixed)).distances
+        # quietly: said in the CLI's words (_warn_wanders, the status)
+        res = quiet_fit(data, **_fit_kwargs(args, fixed, constraints))
+        free = None
+        if constraints and getattr(res, "distances", None) is not None:
+            free = quiet_fit(data, **_fit_kwargs(args, fixed)).distances
         records.append(_side_record(res, data, args.model, free))
         pictures.append((data, res))
     for rec, (fitted, _) in zip(records, pictures):

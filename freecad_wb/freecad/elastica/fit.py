@@ -157,11 +157,11 @@ def _constraint_problem(exc, fields=CONSTRAINT_FIELDS):
 
 
 def _fit(xy, **options):
-    """el.fit without its WanderWarning: the feature says it in its own words (_wanders)."""
-    with catch_warnings():
-        simplefilter("ignore", el().WanderWarning)
-        simplefilter("ignore", el().ConvergenceWarning)     # its Status says it
-        return el().fit(xy, **options)
+    """el.fit without its warnings (the binding's quiet_fit): the feature says them in its own
+    words (_wanders, its Status)."""
+    el()
+    from libelastica.fit import quiet_fit
+    return quiet_fit(xy, **options)
 
 
 def _wanders(result, plane):
