@@ -461,6 +461,8 @@ typedef struct fit_solution {
 int el__fit_lm(fit_objective *o, const double *x, int max_iter, fit_solution *sol);
 /* The first-order condition: g^T H^-1 g <= tol 2f (fit_lm.c), or f at rounding level. */
 int el__fit_first_order(const fit_value *v, int nx, double tol);
+/* The same on the tangent space of met constraint rows of derivative A (m x nx; fit_lm.c). */
+int el__fit_first_order_rows(const fit_value *v, const double *A, int m, int nx, double tol);
 
 /* Constraints (normalised units), the bits of enum el_fit_constraint. */
 typedef struct fit_constraints {

@@ -59,6 +59,34 @@ int el__fit_first_order(const fit_value *v, int nx, double tol)
     return dec <= tol * 2.0 * v->f;
 }
 
+/* The first-order condition on the rows' tangent space (a fit whose constraint rows A x = c
+ * are met): the Gauss-Newton step restricted to A d = 0, by the KKT system
+ * [H A^T; A 0] [d; lambda] = [-g; 0] (H d + A^T lambda = -g, so d^T H d = -g^T d), and
+ * -g^T d <= tol 2f as in el__fit_first_order (twice the decrease the step would bring).
+ * A: m x nx row-major, the rows' derivatives; m = 0 is el__fit_first_order. */
+int el__fit_first_order_rows(const fit_value *v, const double *A, int m, int nx, double tol)
+{
+    if (!(v->f > FIT_EXACT_F)) return 1;
+    const int K = nx + m;
+    double M[(FIT_MAXX + FIT_NCON) * (FIT_MAXX + FIT_NCON)], b[FIT_MAXX + FIT_NCON];
+    int perm[FIT_MAXX + FIT_NCON];
+    if (m < 0 || m > FIT_NCON) return 0;
+    for (int i = 0; i < K; i++)
+        for (int j = 0; j < K; j++) {
+            double e = 0.0;
+            if (i < nx && j < nx) e = v->H[i >= j ? i * nx + j : j * nx + i];   /* lower triangle */
+            else if (i >= nx && j < nx) e = A[(i - nx) * nx + j];
+            else if (i < nx && j >= nx) e = A[(j - nx) * nx + i];
+            M[i * K + j] = e;
+        }
+    for (int i = 0; i < K; i++) b[i] = i < nx ? -v->g[i] : 0.0;
+    if (el__lu_factor(M, K, perm)) return 0;
+    el__lu_solve(M, K, perm, b);
+    double dec = 0.0;
+    for (int j = 0; j < nx; j++) dec -= v->g[j] * b[j];
+    return isfinite(dec) && dec <= tol * 2.0 * v->f;
+}
+
 /* |d|_D = sqrt(sum D_j d_j^2), the step length in the scaled variables. */
 static double scaled_norm(const double *d, const double *D, int nx)
 {

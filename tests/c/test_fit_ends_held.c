@@ -275,10 +275,16 @@ static Suite *suite(void)
     TCase *tc = tcase_create("core");
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, test_fit_zero_start_curvature_held_in_ends_chart);
-    tcase_add_test(tc, test_fit_zero_end_curvature_held_reversed);
     tcase_add_test(tc, test_fit_zero_curvatures_both_ends_met);
     tcase_add_test(tc, test_conjugate_turns_the_other_way_between_the_same_inflections);
     suite_add_tcase(s, tc);
+    /* results that must not depend on OpenBLAS's CPU kernel: make check-c runs this case
+     * again under several (OPENBLAS_CORETYPE; the discrete fit ended EL_ENOCONV under
+     * Nehalem's, Ipopt's restoration failing at the certified point) */
+    TCase *any = tcase_create("any_kernel");
+    tcase_set_timeout(any, 120);
+    tcase_add_test(any, test_fit_zero_end_curvature_held_reversed);
+    suite_add_tcase(s, any);
     return s;
 }
 
