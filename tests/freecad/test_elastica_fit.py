@@ -18,6 +18,7 @@ from elastica_samples import el, travel_ends
 from freecad.elastica import commands as C
 from freecad.elastica import comb as Co
 from freecad.elastica import fit as Fi
+from freecad.elastica import fit_core as Fc
 from freecad.elastica import geometry as G
 from freecad.elastica import links as L
 from freecad.elastica import nearest as Nr
@@ -68,7 +69,7 @@ class FitInputsTest(unittest.TestCase):
         import numpy as np
         for xy in (np.array([(0, 0), (3, 1.6), (6, 2.5), (9, 2.7), (12, 2.2), (15, 1.0),
                              (18, -0.9), (21, -3.2), (24, -5.9)], float), self.xy):
-            r = Fi.fit_core(G.to_3d(S.SKETCH_PLACEMENT, xy), S.SKETCH_PLACEMENT, model="discrete")
+            r = Fc.fit_core(G.to_3d(S.SKETCH_PLACEMENT, xy), S.SKETCH_PLACEMENT, model="discrete")
             curves, b = r["curves"], r["bspline"]
             V = curves[0].points()
             t = np.linspace(*b.domain, 20001)
@@ -1257,7 +1258,7 @@ class FitDistanceTest(unittest.TestCase):
         data = c.points(s) + offset
         start = (s + 0.5 * c.length) % c.length - bs.domain[0]    # feet on the far passes
         feet, dist = Nr.drawn_distances(bs, data, start)
-        edge = Fi.part_bspline(bs, App.Placement()).toShape()
+        edge = G.part_bspline(bs, App.Placement()).toShape()
         part = np.array([edge.distToShape(Part.Vertex(App.Vector(x, y, 0)))[0] for x, y in data])
         self.assertLess(np.abs(np.abs(dist) - part).max(), 1e-9)
         self.assertLess(np.abs(np.hypot(*(feet - data).T) - part).max(), 1e-9)
@@ -1442,9 +1443,9 @@ class FitBadInputTest(unittest.TestCase):
         length = sum(math.hypot(*(q - p)) for p, q in zip(xy[:-1], xy[1:]))
         msg = self._rejected([(S.points_sketch(self.doc, xy), [])], ResampleStep=100.0)
         left = len(el.resample_equilateral(xy, 100.0))
-        self.assertLess(left, Fi.MIN_POINTS)
-        self.assertIn(f"Resample = 100 mm leaves {left} points; a fit needs {Fi.MIN_POINTS}", msg)
-        self.assertIn(f"need a step under {length / (Fi.MIN_POINTS - 1):.4g} mm", msg)
+        self.assertLess(left, Fc.MIN_POINTS)
+        self.assertIn(f"Resample = 100 mm leaves {left} points; a fit needs {Fc.MIN_POINTS}", msg)
+        self.assertIn(f"need a step under {length / (Fc.MIN_POINTS - 1):.4g} mm", msg)
 
     def test_resample_step_too_fine(self):
         xy, _ = S.keyline_xy(20)

@@ -18,7 +18,8 @@ class PackageTest(unittest.TestCase):
         self.assertFalse(os.path.exists(os.path.join(WB, "freecad", "__init__.py")))
         for f in ("__init__.py", "init_gui.py", "commands.py", "features.py", "taskpanels.py",
                   "panelbase.py", "preferences.py", "sources.py", "viewproviders.py",
-                  "geometry.py", "nearest.py", "proxy.py", "fit.py", "blend.py", "spline.py",
+                  "geometry.py", "nearest.py", "proxy.py", "fit.py", "fit_core.py", "fit_ends.py",
+                  "fit_shape.py", "blend.py", "spline.py",
                   "comb.py", "ellblend.py", "g2quad.py"):
             self.assertTrue(os.path.isfile(os.path.join(PKG, f)), f)
 
@@ -29,8 +30,8 @@ class PackageTest(unittest.TestCase):
         import ast
         gui = {"taskpanels", "panelbase", "viewproviders", "commands", "init_gui", "preferences",
                "FreeCADGui", "PySide", "pivy"}
-        for f in ("proxy", "geometry", "nearest", "sources", "fit", "blend", "spline", "comb",
-                  "ellblend", "g2quad"):
+        for f in ("proxy", "geometry", "nearest", "sources", "fit", "fit_core", "fit_ends",
+                  "fit_shape", "blend", "spline", "comb", "ellblend", "g2quad"):
             with open(os.path.join(PKG, f + ".py")) as fh:
                 tree = ast.parse(fh.read())
             names = set()

@@ -158,7 +158,7 @@ def fit_sources(sources, csv_file="", open_panel=True, **options):
     StartContinuity, EndContinuity,
     ResampleStep, Tolerance, Degree. Returns the new feature or None (message
     printed, document unchanged)."""
-    from . import fit, sources as src_mod
+    from . import fit, fit_core, sources as src_mod
     doc = _doc()
     if doc is None:
         return None
@@ -168,8 +168,8 @@ def fit_sources(sources, csv_file="", open_panel=True, **options):
 
     def check():
         notes = []
-        fit.fit_gathered(src_mod.gather_points(sources, csv_file, notes=notes), notes,
-                         **fit.core_options(opts))
+        fit_core.fit_gathered(src_mod.gather_points(sources, csv_file, notes=notes), notes,
+                              **fit.core_options(opts))
 
     return _check_and_create(
         "Fit elastica", "fit", check,

@@ -7,7 +7,8 @@ from .blend import BlendProxy, blend_core, make as make_blend, nearest_ends
 from .comb import CombProxy, comb_core, make as make_comb
 from .ellblend import (EllipticBlendProxy, K_CONVENTIONS, MODES as ELLBLEND_MODES,
                        ellblend_core, make as make_ellblend)
-from .fit import FitProxy, fit_core, make as make_fit
+from .fit import FitProxy, make as make_fit
+from .fit_core import fit_core
 from .geometry import (curve_bspline, link_edge, part_bspline, placement_from_frame, to_3d,
                        to_plane, write_to_sketch)
 from .links import sketch_geo_of_edge

@@ -156,7 +156,7 @@ def _few_line_points(sources, edges, pts, closed):
     """InputProblem naming the straight lines a fit was given when their end points are too
     few to fit (a sketch of one 30 mm line was refused as '2 points: a fit needs at least 6',
     points nobody selected, QA)."""
-    from .fit import MIN_POINTS
+    from .fit_core import MIN_POINTS
     if closed or len(pts) >= MIN_POINTS or not all(_is_line(e) for e in edges):
         return
     lines = "one straight line" if len(edges) == 1 else f"{len(edges)} straight lines"

@@ -13,8 +13,9 @@ from PySide import QtGui
 
 from . import blend as B
 from . import ellblend as E
-from . import fit as F
 from . import spline as Sp
+from .fit_core import DISTANCE_NAMES, DISTANCES, MODEL_NAMES, MODELS
+from .fit_ends import CONTINUITIES, CONTINUITY_NAMES
 from .geometry import is_sketch
 from .panelbase import CURRENT, Panel, _fmt
 
@@ -27,12 +28,12 @@ class FitPanel(Panel):
     def build(self):
         o = self.obj
         g = self.box("Fit elastica")
-        self.model = self.choice(g, "Model", "Model", F.MODELS,
-                                 [F.MODEL_NAMES[m] for m in F.MODELS],
+        self.model = self.choice(g, "Model", "Model", MODELS,
+                                 [MODEL_NAMES[m] for m in MODELS],
                                  "Discrete: the Bobenko-Suris discrete elastica, one vertex per "
                                  "(resampled) point; smooth: the smooth elastica")
-        self.distance = self.choice(g, "Distance", "Distance", F.DISTANCES,
-                                    [F.DISTANCE_NAMES[d] for d in F.DISTANCES],
+        self.distance = self.choice(g, "Distance", "Distance", DISTANCES,
+                                    [DISTANCE_NAMES[d] for d in DISTANCES],
                                     "What the smooth fit minimises: each point's distance to "
                                     "the curve (any spacing), or point i against arc length "
                                     "i L/(n-1) (equilateral data). A discrete fit minimises the "
@@ -82,8 +83,8 @@ class FitPanel(Panel):
                 "to free it (one-piece fits)",
                 when=lambda prop=prop: self.one_piece() or bool(getattr(o, prop)),
                 freed=lambda i=len(self.joins): self.joins[i].setCurrentIndex(0)))
-            join = self.choice(e, f"{text} join", f"{text}Continuity", F.CONTINUITIES,
-                               [F.CONTINUITY_NAMES[c] for c in F.CONTINUITIES],
+            join = self.choice(e, f"{text} join", f"{text}Continuity", CONTINUITIES,
+                               [CONTINUITY_NAMES[c] for c in CONTINUITIES],
                                f"How the curve meets the {text.lower()} tangent's edge: its "
                                "tangent only, or joined to the edge's end: G1 starts there "
                                "with its tangent, G2 with its curvature too (the edge's end in "

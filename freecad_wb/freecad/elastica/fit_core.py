@@ -1,0 +1,483 @@
+"""The Fit elastica's computation, apart from its feature (fit.py): an elastica, or a
+keyline as one G2 curve of two elasticae meeting at its inflection, fitted to 3D points in
+their plane (resampled or not, with the end conditions of fit_ends.py), checked (a curve
+shrunk to nothing, points left out by the resampled polygon, off their plane, far from the
+curve, a fit that wanders between them, end conditions that cost accuracy) and measured:
+the points' distances to the curve drawn (fit_shape.py's B-spline)."""
+from __future__ import annotations
+
+import dataclasses
+import math
+from warnings import catch_warnings, simplefilter
+
+import FreeCAD as App
+
+from .fit_ends import (CONSTRAINT_FIELDS, constraint_fields, constraint_problem, end_constraints,
+                       facing_the_edges, field_names)
+from .fit_shape import foot_parameters, polygon_deviation, shape_bspline
+from .geometry import el, np, plane_coordinates, polyline_length, to_plane
+from .nearest import drawn_distances, nearest_on
+from .proxy import InputProblem, check_degree, check_number, check_tolerance
+from .sources import curve_order, file_order
+
+MIN_POINTS = 6          # fewer points cannot determine the 7 (5 shape) parameters of a fit
+MODELS = ["discrete", "smooth"]
+MODEL_NAMES = {"discrete": "Discrete elastica (Bobenko-Suris)", "smooth": "Smooth elastica"}
+DISTANCES = ["orthogonal", "paired"]
+DISTANCE_NAMES = {"orthogonal": "Point to curve", "paired": "Paired (equilateral data)"}
+
+
+def _status_text(r):
+    st = int(getattr(r, "status", 0))
+    if st == 0:
+        return "converged"
+    from libelastica._ffi import ffi, lib
+    return "not converged (best curve kept): " + ffi.string(lib.el_strerror(st)).decode()
+
+
+def _fit(xy, **options):
+    """el.fit without its warnings (the binding's quiet_fit): the feature says them in its own
+    words (_wanders, its Status)."""
+    el()
+    from libelastica.fit import quiet_fit
+    return quiet_fit(xy, **options)
+
+
+def _wanders(result, plane):
+    """The warning for a fit in one piece that wanders away from its points between two of
+    them (FitResult.wander_gap: it loops, strays, swings or passes them out of order, their
+    distances small all the same), naming their places (the fit's order of the points is not
+    the user's: no numbers), else none."""
+    if result.wander_gap < 0:
+        return []
+    at = [plane.multVec(App.Vector(float(x), float(y), 0.0)) for x, y in result.points]
+    said = el().wander_summary(result.wander_gap, [(v.x, v.y, v.z) for v in at], " mm",
+                               numbered=False)
+    return [f"{said}: add a point between them to hold the curve there"]
+
+
+def _one_piece(xy, model, distance, fixed, constraints, fields):
+    """The fit of points xy in one piece: (curves, results, data, feet, signed distances,
+    rms, max error, None) as the library reports them; fields: constraint_fields."""
+    try:
+        r = _fit(xy, model=model, fixed=fixed or None, constraints=constraints or None,
+                 distance=distance if model == "smooth" else None)
+    except el().ConstraintError as exc:
+        raise constraint_problem(exc, fields) from None
+    return [r.curve], [r], xy, r.foot_points(), r.distances, r.rms, r.max_error, None
+
+
+# End conditions that raise the rms above COST_RATIO times the free-ended fit's (and by
+# more than COST_FLOOR of the data's extent) are worth a warning: a curvature or a
+# tangent far from the data's own is met by a curl or a swing that fits nothing (a
+# smooth fit of the noisy 330 mm sample S meets 0.05/mm, four times its own end
+# curvature, with rms 9 mm against 0.29 mm free).
+COST_RATIO, COST_FLOOR = 2.0, 1e-4
+# A curve shorter than COLLAPSED times the points' extent fits none of them: end conditions
+# met nowhere near the points shrink a fit to nothing (QA: a start join on a wire drawn
+# from its other end, 4e-12 mm long for 90 mm of points, rms 53 mm, kept as 'not
+# converged' with no error mark, a shape the 3D view cannot mesh, drawing the last one)
+COLLAPSED = 1e-3
+
+
+def _constraint_cost(xy, model, distance, fixed, constraints, rms, fields):
+    """(rms of the same fit with free ends, or -1 when it fails; the warnings; the points'
+    distances to that fit, or None); fields: constraint_fields. A discrete fit's distances
+    are its drawn cubic's (drawn_distances)."""
+    try:
+        r = _fit(xy, model=model, fixed=fixed or None,
+                 distance=distance if model == "smooth" else None)
+        dist = r.distances if model == "smooth" else \
+            drawn_distances(r.to_bspline(), xy, r.foot_s)[1]
+        free = r.rms if model == "smooth" else _rms(dist)
+    except (ValueError, ArithmeticError, RuntimeError):
+        return -1.0, [], None
+    extent = float(np().ptp(xy, axis=0).max())
+    if not (rms > COST_RATIO * free and rms - free > COST_FLOOR * extent):
+        return float(free), [], dist
+    return float(free), [f"the end conditions ({field_names(constraints, fields)}) raise the rms "
+                         f"from {free:.3g} mm (free ends) to {rms:.3g} mm: check that they match "
+                         "the data"], dist
+
+
+def _check_length(bspline, extent, constraints, fields, reversed_joins):
+    """Raise InputProblem for a fitted curve shorter than COLLAPSED times the points'
+    extent (mm), naming the end conditions it gave way to."""
+    n = np()
+    length = polyline_length(bspline.evaluate(n.linspace(*bspline.domain, 65)))
+    if length > COLLAPSED * extent:
+        return
+    why = (f"the end conditions ({field_names(constraints, fields)}) cannot be met along the points"
+           if constraints else "check the points")
+    raise InputProblem(f"the fit shrank to a curve {length:.2g} mm long, for points "
+                       f"{extent:.4g} mm across: {why}" +
+                       "".join(f". {w}" for w in reversed_joins[:1]))
+
+
+def _rms(dist):
+    return float(np().sqrt(np().mean(np().square(dist))))
+
+
+def _beyond_the_ends(bspline, feet, dist, extent):
+    """Which points lie beyond the curve's ends (their nearest point on it an end, farther
+    than COST_FLOOR of their extent and COST_RATIO times the others' rms): those a
+    resampled polygon leaves out. An
+    equilateral polygon ends where no point lies a step further on (seed 000 §5.3), so up
+    to a step of the points' run is not fitted, and the curve stops there too."""
+    n = np()
+    ends = bspline.evaluate(n.array(bspline.domain))
+    at_end = n.min(n.linalg.norm(feet[:, None, :] - ends[None, :, :], axis=2), axis=1) \
+        <= 1e-9 * (1.0 + extent)
+    others = _rms(dist[~at_end]) if not at_end.all() else 0.0
+    return at_end & (n.abs(dist) > max(COST_FLOOR * extent, COST_RATIO * others))
+
+
+def _left_out(beyond, dist, step, used=None):
+    """The warning for points a resampled fit left out (_beyond_the_ends), else none.
+    ``used``: the step of a split keyline's polygon (its default where step is 0: a
+    keyline is always resampled, so 0 leaves nothing out only in one piece)."""
+    if not beyond.any():
+        return []
+    d = np().abs(dist[beyond])
+    m = int(beyond.sum())
+    verb = "lies" if m == 1 else "lie"
+    if used is None:
+        setting, way_out = f"Resample = {step:g} mm", "a shorter step leaves less out, 0 none"
+    else:
+        setting = (f"Resample = {step:g} mm" if step else
+                   f"Resample = 0 takes {_default_step_name(used)}")
+        way_out = "a shorter step leaves less out"
+    return [f"{m} of {len(dist)} points {verb} beyond the curve's ends, up to "
+            f"{float(d.max()):.3g} mm from it: the resampled polygon ({setting}) "
+            "stops where no point lies a step further on, and the curve with it; Rms and "
+            f"MaxError include them: {way_out}"]
+
+
+def _off_plane(off, rms, extent):
+    """The warning for points whose distances from their plane (``off``, mm) outweigh the
+    fit's in-plane rms (and above COST_FLOOR of their extent): a plane curve cannot come
+    closer to them than that, else none."""
+    n = np()
+    off_rms = _rms(off)
+    if not (off_rms > rms and off_rms > COST_FLOOR * extent):
+        return []
+    return [f"the points lie up to {float(n.abs(off).max()):.3g} mm (rms {off_rms:.3g} mm) off "
+            f"their plane, the fit's: Rms and MaxError include that (in the plane the curve lies "
+            f"{rms:.3g} mm from them, rms); a plane curve comes no closer"]
+
+
+def _step_advice(length):
+    """What a resampling step of points whose polyline is length long must be below, and
+    the way out."""
+    return (f"the points' polyline is {length:.4g} mm long, so {MIN_POINTS} points need a step "
+            f"under {length / (MIN_POINTS - 1):.4g} mm; 0 fits the points as they are")
+
+
+def _check_reach(xy, step, starts, default=None):
+    """Refuse, in the panel's terms, a resampling step longer than any point lies from
+    the polygon's start (the library's rule: no second vertex). starts: the indices the
+    start may be (one piece: the end of smaller x; a keyline: either end, its own
+    frame decides); ``default``: a split keyline's default step (_keyline_step), the
+    one checked where step is 0."""
+    n = np()
+    reach = max(float(n.max(n.hypot(xy[:, 0] - xy[i, 0], xy[:, 1] - xy[i, 1]))) for i in starts)
+    used = default if default is not None and not step > 0 else step
+    if not used > reach:
+        return
+    beyond = (f"longer than the points reach (all within {reach:.4g} mm of the end the "
+              "polygon starts from)")
+    if default is None:
+        raise InputProblem(f"Resample = {step:g} mm is {beyond}: "
+                           + _step_advice(polyline_length(xy)))
+    if step > 0:
+        zero = f", or 0 for {_default_step_name(default)}" if default <= reach else ""
+        raise InputProblem(f"Resample = {step:g} mm is {beyond}: set a step under "
+                           f"{reach:.4g} mm{zero}")
+    raise InputProblem(f"Resample = 0 takes {_default_step_name(default)}, which is {beyond}: "
+                       f"set a step under {reach:.4g} mm")
+
+
+def _resampled(xy, step):
+    """The points xy resampled into an equilateral polygon of segment step
+    (el.resample_equilateral), at least MIN_POINTS vertices of it."""
+    _check_reach(xy, step, [-1 if xy[-1, 0] < xy[0, 0] else 0])
+    most, length = el().RESAMPLE_MAX_VERTICES, polyline_length(xy)
+    if length / step > most - 1:
+        raise InputProblem(f"Resample = {step:g} mm would cut the points' {length:.4g} mm "
+                           f"polyline into {length / step:.3g} segments, more than {most - 1}: use "
+                           f"a step of at least {length / (most - 1):.4g} mm, or 0 to fit the "
+                           "points as they are")
+    out = el().resample_equilateral(xy, step)
+    if xy[-1, 0] < xy[0, 0]:
+        out = out[::-1].copy()       # it starts from the end of smaller x: the user's order
+    if len(out) < MIN_POINTS:
+        # the vertices are step apart along the way, so few of them from a step short enough
+        # for MIN_POINTS mean the walk jumped ahead: the points double back or pass close to
+        # themselves within the step (seed 000 §5.3 jumps a hairpin narrower than it)
+        why = (_step_advice(length) if step >= length / (MIN_POINTS - 1) else
+               "the polygon jumps where the points double back or pass within the step of "
+               "themselves; 0 fits the points as they are")
+        raise InputProblem(f"Resample = {step:g} mm leaves {len(out)} points; a fit needs "
+                           f"{MIN_POINTS}: {why}")
+    return out
+
+
+def _apart(p, q):
+    """Whether points p and q differ by more than a rounding of their size."""
+    return float(np().hypot(*(p - q))) > 1e-12 * (1.0 + float(np().abs(q).max()))
+
+
+def _keyline_step(xy):
+    """The default step of a split keyline's polygon, the binding's (el.keyline_step:
+    1/KEYLINE_STEPS of the polyline through the medians of runs of the points, robust
+    to their noise's zigzag); fit_keyline resamples that polyline where Resample is 0."""
+    return el().keyline_step(xy)
+
+
+def _default_step_name(step):
+    """What the default step of a split keyline is, for messages."""
+    return (f"the default step, {step:.3g} mm = 1/{el().KEYLINE_STEPS} of the points' run "
+            "through their medians in runs along it")
+
+
+def _keyline(xy, model, step):
+    """The keyline of points xy as one G2 curve (el.fit_keyline, its polygon's step
+    ``step``, None for the binding's default): its two halves as
+    the library gives them (plane coordinates, each from the joint outwards, with
+    opposite tangents and zero curvature there), the results, and the fitted points,
+    feet and signed distances (+ = left of the travel) in the order of travel from
+    the first point, each point once (the discrete joint vertex belongs to both), and a
+    discrete keyline's tails: (its ends in the plane, the length its first half's
+    continuation adds before it), else None. The discrete halves fit the resampled polygon,
+    which stops up to a step short of the points (seed 000 §5.3): their B-spline continues
+    each by its recursion to its end point's foot (KeylineFit.ends)."""
+    n = np()
+    with catch_warnings():                           # its Status says it
+        simplefilter("ignore", el().ConvergenceWarning)
+        kf = el().fit_keyline(xy, r=step, model=model)
+    first, second = kf.first, kf.second
+    to_plane = kf.prepared.frame2d.to_parent         # the halves live in x''y''
+    skip = 1 if model == "discrete" else 0
+    data = to_plane(n.vstack([first.points[::-1], second.points[skip:]]))
+    feet = to_plane(n.vstack([first.foot_points()[::-1], second.foot_points()[skip:]]))
+    dist = n.concatenate([-first.distances[::-1], second.distances[skip:]])
+    halves = [_moved(r.curve, kf.prepared.frame2d) for r in (first, second)]
+    rms = _rms(dist)
+    tails = None
+    if kf.ends is not None:
+        lead = first.curve.continued_to(kf.ends[0])
+        tails = (to_plane(kf.ends), polyline_length(n.vstack([first.curve.points()[-1:], lead])))
+    return halves, [first, second], data, feet, dist, rms, float(n.abs(dist).max()), tails
+
+
+def _moved(curve, frame2d):
+    """The same elastica in the parent coordinates of a (proper, rotation-only)
+    Frame2D: the start point mapped, the tangent angle phi turned by the frame's
+    angle; nothing else changes under a rigid motion."""
+    x0, y0 = frame2d.to_parent(np().array([curve.x0, curve.y0]))
+    turn = math.atan2(frame2d.f1[1], frame2d.f1[0])
+    return dataclasses.replace(curve, x0=float(x0), y0=float(y0), phi=float(curve.phi + turn))
+
+
+def _coarse_polygon(xy, constraints, rms):
+    """The warning for a discrete fit of fewer than el.SPARSE_POINTS points whose cubic
+    lies rms from them where the smooth model's curve lies far nearer
+    (el.smooth_fits_better), else none."""
+    smooth = el().smooth_fits_better(xy, rms, constraints)
+    if smooth is None:
+        return []
+    return [f"{len(xy)} points give the discrete model a polygon of {len(xy) - 1} segments, "
+            f"its cubic {rms:.3g} mm from them (rms), where the smooth model's curve lies {smooth:.3g} mm "
+            "from them: choose Model Smooth elastica for so few points"]
+
+
+def _far_points(data, dist, plane, free=None):
+    """The warning for points far from the fitted curve (el.far_points: glitches of a scan,
+    points of other geometry), naming the farthest's place, else none. data: (n, 3) in the
+    frame ``plane``; free: their distances to the fit with free ends (points held off only
+    by the end conditions are no outliers to remove)."""
+    n = np()
+    far = el().far_points(dist, data, free_distances=free)
+    if not len(far):
+        return []
+    farthest = far[n.argmax(n.abs(n.asarray(dist if free is None else free, dtype=float))[far])]
+    worst = plane.multVec(App.Vector(*map(float, data[farthest])))
+    return [f"{el().far_points_summary(dist, far, ' mm', free)} (the farthest at ({worst.x:.4g}, "
+            f"{worst.y:.4g}, {worst.z:.4g})): outliers? Each pulls the fit towards itself: "
+            "remove them to fit the rest"]
+
+
+def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", split=False,
+             distance="orthogonal", pin_start=False, pin_end=False, start_edge=None,
+             end_edge=None, start_curvature=None, end_curvature=None, start_join="tangent",
+             end_join="tangent", step=0.0, tol=1e-3, degree=3):
+    """Fit elastica(e) to 3D points: in their order (``ordered``), in curve_order's (False)
+    or a file's, kept when a curve's (None: file_order). ``distance``: what the smooth one-piece fit
+    minimises ("orthogonal": point to curve; "paired": point i at arc length
+    i L/(n-1), for equilateral data). ``start_edge`` / ``end_edge``: Part edges whose
+    tangents the curve's ends follow; ``start_curvature`` / ``end_curvature``: 1/mm
+    or None (free); ``start_join`` / ``end_join``: how that end meets its edge
+    (end_constraints). Returns a dict: 'curves' (plane coordinates; a keyline's two
+    halves, each from the joint), 'results', 'bspline', 'placement', 'data' (the
+    user's points, (n, 3) in the frame of the plane: never a resampled polygon), 'feet'
+    (their nearest points on the curve), 'distances' (signed, + = left; in 3D),
+    'measure', 'rms', 'max_error' (point to curve: the library's figures for points it
+    fitted as they are and in its plane, else measured on the curve drawn), 'k',
+    'end_curvatures' (the shape's at its first and last point, 1/mm, + turning left),
+    'status', 'free_rms' (the same fit with free ends; -1 without end conditions or when
+    that fit fails) and 'warnings' (end conditions
+    that cost accuracy; a discrete fit of few points whose polygon the smooth model's
+    curve beats).
+    Raises InputProblem with a user message."""
+    n = np()
+    if model not in MODELS:
+        raise InputProblem(f"unknown model {model!r} (discrete or smooth)")
+    if distance not in DISTANCES:
+        raise InputProblem(f"unknown distance {distance!r} (orthogonal or paired)")
+    if closed:
+        raise InputProblem("the input is a closed curve: an elastica fit needs an open one")
+    if len(points) < MIN_POINTS:
+        raise InputProblem(f"{len(points)} point{'s' if len(points) != 1 else ''}: a fit needs "
+                           f"at least {MIN_POINTS}")
+    step = check_number("Resampling step", step, 0.0, None, "mm")
+    tol = check_tolerance(tol)
+    if model == "smooth":
+        degree = check_degree(degree)
+    ends = dict(pin_start=pin_start, pin_end=pin_end, start_edge=start_edge, end_edge=end_edge,
+                start_curvature=start_curvature, end_curvature=end_curvature,
+                start_join=start_join, end_join=end_join)
+    fields = constraint_fields(start_join, end_join)
+    joins = [f"{w} join {j}" for w, j in (("Start", start_join), ("End", end_join))
+             if j != "tangent"]
+    if start_join == end_join == "G2" and not split:
+        raise InputProblem("G2 joins at both ends are 8 conditions on the 7 parameters of one "
+                           "elastica (met together only by one elastica's own ends): set one "
+                           "join G1 or Tangent only; for a batten through the points joining "
+                           "both edges G2, use Elastic spline (G2 to edge at both ends)")
+    if split:
+        given = dict(start_point=pin_start, end_point=pin_end, start_tangent=start_edge,
+                     end_tangent=end_edge, start_curvature=start_curvature,
+                     end_curvature=end_curvature)
+        chosen = [CONSTRAINT_FIELDS[k] for k, v in given.items()
+                  if v is not None and v is not False] + joins
+        if chosen:
+            raise InputProblem(f"{', '.join(chosen)}: a split keyline is one G2 curve fitted "
+                               "with free ends (the library's keyline fit takes no end "
+                               "conditions); clear them or fit in one piece")
+        if model == "smooth" and distance == "paired":
+            raise InputProblem("a smooth keyline is fitted by point-to-curve distance: set "
+                               "Distance to point to curve, or fit in one piece")
+    try:
+        xy, plane = plane_coordinates(points, plane, flat=None)
+        # the user's points in the fit's frame: plane coordinates and distance from the plane
+        user = n.column_stack([xy, to_plane(plane, points)[:, 2]])
+        order, ordering = file_order(xy) if ordered is None else \
+            (None if ordered else curve_order(xy), [])
+        user = facing_the_edges(user if order is None else user[order], plane, start_edge,
+                                 end_edge)
+        xy = n.ascontiguousarray(user[:, :2])
+        constraints, free_rms, warnings, used, reversed_joins = {}, -1.0, [], None, []
+        free_dist = None
+        if split:
+            default = _keyline_step(xy)
+            _check_reach(xy, step, [0, -1], default)
+            used = step if step > 0 else default
+            fitted = _keyline(xy, model, step if step > 0 else None)   # None: the default
+        else:
+            fixed = {}
+            if step > 0:
+                polygon = _resampled(xy, step)
+                # a pinned end is the user's point, which the polygon stops short of by up
+                # to a step: the data runs on to it, no longer equilateral there
+                pins = [pin_start and _apart(polygon[0], xy[0]),
+                        pin_end and _apart(polygon[-1], xy[-1])]
+                xy = n.vstack([xy[:1]] * pins[0] + [polygon] + [xy[-1:]] * pins[1])
+                if model == "discrete" and not any(pins):
+                    fixed["h"] = step            # the polygon's segment (seed 000 §5.4)
+            constraints, reversed_joins = end_constraints(xy, plane, tol=tol, **ends)
+            try:
+                fitted = _one_piece(xy, model, distance, fixed, constraints, fields)
+            except InputProblem as exc:
+                if not reversed_joins:
+                    raise
+                raise InputProblem(f"{exc}. {reversed_joins[0]}") from None
+        curves, results, data, feet, dist, rms, max_error, tails = fitted
+        bspline = shape_bspline(model, curves, results, split, tol, degree, tails)
+        _check_length(bspline, float(n.ptp(xy, axis=0).max()), constraints, fields,
+                      reversed_joins)
+        if model == "discrete":
+            feet, dist = drawn_distances(bspline, data, foot_parameters(results, split, tails))
+            rms, max_error = _rms(dist), float(np().abs(dist).max())
+        if constraints:
+            free_rms, warnings, free_dist = _constraint_cost(xy, model, distance, fixed,
+                                                             constraints, rms, fields)
+        warnings = ordering + reversed_joins + warnings
+        if model == "discrete" and not split and not step:
+            warnings = warnings + _coarse_polygon(xy, constraints, rms)
+        # the figures are the user's points': where the library fitted a resampled polygon
+        # (whose tail it may leave out), their distances to the curve drawn
+        size = float(n.ptp(user[:, :2], axis=0).max())
+        resampled = data.shape != user[:, :2].shape or \
+            not n.allclose(data, user[:, :2], rtol=0.0, atol=1e-9 * (1.0 + size))
+        beyond = n.zeros(len(user), dtype=bool)
+        if resampled:
+            feet, dist = nearest_on(bspline, n.ascontiguousarray(user[:, :2]))
+            beyond = _beyond_the_ends(bspline, feet, dist, size)
+        # and in 3D: the curve lies in the plane, so a point's distance from the plane adds
+        # to its distance in it (a scan off its plane fits 0.02 mm in it, 0.45 mm in 3D)
+        plane_rms = _rms(dist)
+        dist = n.copysign(n.hypot(dist, user[:, 2]), dist)
+        rms, max_error = _rms(dist), float(n.abs(dist).max())
+        data = user
+        warnings = warnings + _left_out(beyond, dist, step, used) + \
+            _off_plane(user[:, 2], plane_rms, size) + \
+            _far_points(data[~beyond], dist[~beyond], plane,
+                        None if resampled or free_dist is None else free_dist[~beyond]) + \
+            ([] if split else _wanders(results[0], plane))
+    except InputProblem:
+        raise
+    except (ValueError, ArithmeticError, RuntimeError) as exc:
+        if split and "no inflection" in str(exc):
+            # the library's reason (none found; one of noise near an end, or that two
+            # elasticae fit no better than one turning one way), in the panel's terms
+            why = str(exc).split(": ", 1)[-1].replace("fit them as one curve",
+                                                        "fit them without splitting the keyline")
+            raise InputProblem(why) from None
+        raise InputProblem(f"fit failed: {exc}") from None
+    if not (n.all(n.isfinite(dist)) and math.isfinite(rms)):
+        raise InputProblem("fit failed: non-finite error")
+    measure = "point to curve" if model == "smooth" else \
+        "point to curve (the cubic through the polygon's vertices)"
+    if resampled:
+        measure += ", from the points given (not the resampled polygon)"
+    if n.abs(user[:, 2]).max() > 1e-9 * (1.0 + size):
+        measure += ", in 3D (their distance from the fit plane included)"
+    return {
+        "curves": curves, "results": results, "bspline": bspline, "placement": plane,
+        "data": data, "feet": feet, "distances": n.asarray(dist, dtype=float),
+        "measure": measure, "rms": float(rms), "max_error": float(max_error),
+        "k": [float(r.curve.k) for r in results],
+        "end_curvatures": [float(v) for v in bspline.curvature(n.array(bspline.domain))],
+        "bspline_deviation": (float(bspline.max_deviation) if model == "smooth"
+                              else polygon_deviation(bspline, curves)),
+        "status": "; ".join(_status_text(r) for r in results),
+        "free_rms": free_rms, "warnings": warnings,
+    }
+
+
+def fit_gathered(gathered, notes, **options):
+    """fit_core of gather_points' (points, plane, ordered, closed) with its ``notes`` (what
+    it left out) first among the warnings, or after the error: the way out of an error may
+    be what was left out (a sketch's 4 points fitted, its curve left out)."""
+    try:
+        r = fit_core(*gathered, **options)
+    except InputProblem as exc:
+        if not notes:
+            raise
+        raise InputProblem(f"{exc}. {notes[0]}") from None
+    r["warnings"] = notes + r["warnings"]
+    return r
+
+
+__all__ = ["fit_core", "fit_gathered", "MIN_POINTS", "MODELS", "MODEL_NAMES", "DISTANCES",
+           "DISTANCE_NAMES"]
