@@ -538,10 +538,19 @@ static int report_params(fit_run_state *R)
     res->mode = R->mode;
     res->distance = R->kind == FIT_PAIRED ? EL_DISTANCE_PAIRED : EL_DISTANCE_ORTHOGONAL;
     res->constraint = R->constraint;
+    res->seen = (fit_seen){R->xy, R->n, R->sc, R->noise_rms * R->sc, 0};
     return res->status = R->status;
 }
 
 /* ------------------------------------------------------------ further runs */
+
+/* A refit's status st: the fit it may have replaced is no longer the one res->seen found to
+ * follow its points. */
+static int refitted(fit_run_state *R, int st)
+{
+    R->res->seen.follows = 0;
+    return st;
+}
 
 /* A fit by distance without rows that strays from its points: refitted from the paired
  * curve or the other model's fit (el__fit_follow_points); a sketch's free fit that still
@@ -557,13 +566,14 @@ static int follow_the_points(fit_run_state *R, int st)
     const double noise_in = R->noise_rms * R->sc;
     const double stray = el__fit_stray(R->xy, n, R->fs, el__fit_out_length(model, n, R->res),
                                        noise_in, R->sc);
+    R->res->seen.follows = stray >= 0.0 && stray <= FIT_STRAY;     /* for the report */
     /* el__fit_ends_held's run that strays is not kept (the fit it would replace has
      * followed its points already) */
     if (stray > FIT_STRAY && (flags & FIT_RUN_ENDS_HELD))
         st = EL_ENOCONV;
     else if (stray > FIT_STRAY &&
-             (st = el__fit_follow_points(model, R->xy, n, R->opt, flags, noise_in, R->sc, stray,
-                                         R->res, R->d, R->fs)) == EL_OK)
+             (st = refitted(R, el__fit_follow_points(model, R->xy, n, R->opt, flags, noise_in, R->sc,
+                                                     stray, R->res, R->d, R->fs))) == EL_OK)
         st = R->res->status;
     /* keep_the_better kept a fit over a lower one that crosses itself or strays: that one
      * went on (as before the rule) to el__fit_follow_points, whose refit from the paired
@@ -573,14 +583,15 @@ static int follow_the_points(fit_run_state *R, int st)
      * tangent 0.1 rad off the data's, 0.1397 -> 0.1321, 0.1263 -> 0.1246 as before the
      * rule, and 0.1250 -> 0.1217) */
     else if (R->wander_kept && o->constraints && model == FIT_SMOOTH &&
-             (st = el__fit_follow_unless_loops(model, R->xy, n, R->opt, flags, noise_in, stray,
-                                               &R->ob, R->norm, R->res, R->d, R->fs)) == EL_OK)
+             (st = refitted(R, el__fit_follow_unless_loops(model, R->xy, n, R->opt, flags, noise_in,
+                                                           stray, &R->ob, R->norm, R->res, R->d,
+                                                           R->fs))) == EL_OK)
         st = R->res->status;
     /* a sketch's free fit that still wanders: its guesses from their feet (fit_restart.c) */
     if (st != EL_ENOMEM && model == FIT_SMOOTH && !o->constraints && n < FIT_SKETCH_POINTS &&
         !(flags & FIT_RUN_INNER))
-        st = el__fit_sketch_follows(R->xy, n, R->opt, noise_in, &R->ob, R->norm, R->res, R->d,
-                                    R->fs, &R->wander_kept);
+        st = refitted(R, el__fit_sketch_follows(R->xy, n, R->opt, noise_in, &R->ob, R->norm, R->res,
+                                                R->d, R->fs, &R->wander_kept));
     return st;
 }
 
@@ -600,7 +611,7 @@ static int further_runs(fit_run_state *R, int st)
     int unpaired = 0;
     if (R->ok && R->kind == FIT_PAIRED && o->distance == EL_DISTANCE_AUTO && caller_fit &&
         !inner && st != EL_ENOMEM) {
-        st = el__fit_unpaired(model, xy, n, R->opt, R->res, R->d, R->fs);
+        st = refitted(R, el__fit_unpaired(model, xy, n, R->opt, R->res, R->d, R->fs));
         unpaired = R->res->distance == EL_DISTANCE_ORTHOGONAL;   /* its run polished it as needed */
     }
     /* not certified: Ipopt from this one; held ends as its rows */
@@ -608,10 +619,10 @@ static int further_runs(fit_run_state *R, int st)
         const int rows = R->ends_chart ? FIT_RUN_ROWS : FIT_RUN_POLISH;
         /* after the rule that keeps a fit that neither crosses itself nor strays: its polish
          * does not end on a loop either (el__fit_fallback_unless_loops) */
-        st = R->wander_kept
-                 ? el__fit_fallback_unless_loops(model, xy, n, R->opt, rows, &R->ob, R->norm,
-                                                 R->res, R->d, R->fs)
-                 : el__fit_fallback(model, xy, n, R->opt, rows, R->res, R->d, R->fs);
+        st = refitted(R, R->wander_kept
+                             ? el__fit_fallback_unless_loops(model, xy, n, R->opt, rows, &R->ob,
+                                                             R->norm, R->res, R->d, R->fs)
+                             : el__fit_fallback(model, xy, n, R->opt, rows, R->res, R->d, R->fs));
     }
     /* pinned at both ends with a zero start curvature: fitted in the ends chart too, that
      * curvature held there (el__fit_ends_held); with an end curvature other than 0 (a row
@@ -620,14 +631,14 @@ static int further_runs(fit_run_state *R, int st)
     if (R->ends_ok && R->zero_k0 && !R->ends_chart && !R->natural && caller_fit && !inner &&
         st != EL_ENOMEM &&
         (!(o->constraints & EL_CONSTRAIN_END_CURVATURE) || R->con.end_kappa == 0.0 || st != EL_OK))
-        st = el__fit_ends_held(model, xy, n, R->opt, R->res, R->d, R->fs);
+        st = refitted(R, el__fit_ends_held(model, xy, n, R->opt, R->res, R->d, R->fs));
     /* a sketch's constrained fit that wanders: its constraints from other starts (not the
      * natural batten's, whose family was searched whole) */
     if (R->ok && model == FIT_SMOOTH && R->kind == FIT_ORTHOGONAL && o->constraints &&
         n < FIT_SKETCH_POINTS && !R->natural && caller_fit && !inner &&
         (st == EL_OK || st == EL_ENOCONV || st == EL_EMAXITER))
-        st = el__fit_sketch_follows_held(xy, n, R->opt, R->noise_rms * R->sc, &R->ob, R->norm,
-                                         R->res, R->d, R->fs);
+        st = refitted(R, el__fit_sketch_follows_held(xy, n, R->opt, R->noise_rms * R->sc, &R->ob,
+                                                     R->norm, R->res, R->d, R->fs));
     return st;
 }
 
@@ -667,8 +678,8 @@ int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt
 }
 
 /* The kept fit's gap it wanders in (el__fit_wander_gap) in the caller's points and feet fs
- * (input units); a start point held (or x0, y0 fixed) or an end point held allows it the
- * curve to that point (el__fit_stray_held's ends). */
+ * (input units), from what the fit saw (fo->seen); a start point held (or x0, y0 fixed) or an
+ * end point held allows it the curve to that point (el__fit_stray_held's ends). */
 static long wander_gap(int model, const double *xy, size_t n, const el_fit_options *opt,
                        const fit_out *fo, const double *fs)
 {
@@ -679,7 +690,7 @@ static long wander_gap(int model, const double *xy, size_t n, const el_fit_optio
         ends[1] = c ? opt->start_point[1] : opt->value[1];
     }
     if (opt && (opt->constraints & EL_CONSTRAIN_END_POINT)) memcpy(ends + 2, opt->end_point, sizeof opt->end_point);
-    return el__fit_wander_gap(model, xy, n, fo->params, fs, fo->rms, ends);
+    return el__fit_wander_gap(model, xy, n, fo->params, fs, fo->rms, ends, &fo->seen);
 }
 
 /* One public fit: el__fit_run_framed with the feet kept for wander_gap where the caller

@@ -72,6 +72,7 @@ int el__fit_run_framed(int model, const double *xy, size_t n, const el_fit_optio
     const int st = el__fit_run_either_way(model, rxy, n, &fo, flags, init ? p : NULL, res, dist,
                                           foot);
     free(rxy);
+    res->seen.xy = NULL;    /* what it saw was of the turned points */
     if (res->status != -1) {
         from_frame(res->params, o, c, s);
         from_frame(res->initial, o, c, s);

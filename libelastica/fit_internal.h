@@ -345,6 +345,16 @@ double el__fit_stray_held(const double *xy, size_t n, const double *fs, double L
 #define FIT_GAP_SAG 0.1
 #define FIT_GAP_TURN 1.8
 double el__fit_gap_sag(const double *xy, size_t n, const double *fs, const double *p, double noise);
+/* What a fit computed that its report (el__fit_wander_gap) needs again: of the points xy
+ * (n), their scale sc (el__fit_normalisation) and noise, el__fit_noise_rms x sc; follows:
+ * fit.c's stray rule found the fit (its parameters and feet as reported) to follow them
+ * (el__fit_stray at that noise, without held ends, within FIT_STRAY). */
+typedef struct fit_seen {
+    const double *xy;
+    size_t n;
+    double sc, noise;
+    int follows;
+} fit_seen;
 /* fit_refit.c: the gap between points i and i + 1 (i in 0..n-2; where the curve passes its
  * points out of order, the gap between two feet adjacent along it, of points a < b, is the
  * gap b - 1: the curve comes to b from a) that the kept fit (p: its parameters of model,
@@ -358,9 +368,10 @@ double el__fit_gap_sag(const double *xy, size_t n, const double *fs, const doubl
  * (passed_back: the first such i), it crosses itself where its points' polygon does not
  * (el__fit_loops): the gap of its loop's middle, or it swings between two of them (el__fit_gap_sag above FIT_GAP_SAG; the discrete model's
  * polygon judged at its vertices): the first such gap. -1 where it does none of these (or
- * out of memory). Reporting only (el_fit_*_result.wander_gap): no fit depends on it. */
+ * out of memory). Reporting only (el_fit_*_result.wander_gap): no fit depends on it. seen
+ * (may be NULL): what the fit computed of these points and this fit, not computed again. */
 long el__fit_wander_gap(int model, const double *xy, size_t n, const double *p, const double *fs, double rms,
-                        const double ends[4]);
+                        const double ends[4], const fit_seen *seen);
 /* fit_refit.c: whether the fit by distance at x (ob's map) strays from its points
  * (el__fit_stray > FIT_STRAY; noise: el__fit_noise_rms, normalised); d, fs (n each: ob's
  * rest arrays, or the caller's) overwritten with its distances and feet (input units). */
@@ -428,6 +439,7 @@ typedef struct fit_out {
     double rms, max_error;
     double f;    /* the objective (normalised units) of the kept fit (its best candidate) */
     int iterations, candidates, ipopt_status, used_ipopt, status, mode, distance, constraint;
+    fit_seen seen;    /* for the report: el__fit_run sets it, a refit that may replace the fit clears follows */
 } fit_out;
 
 /* Write fit_out fo into the public result *res (el_fit_discrete_result or

@@ -751,20 +751,28 @@ static long passed_back(const double *xy, size_t n, const double *fs, double lev
 }
 
 long el__fit_wander_gap(int model, const double *xy, size_t n, const double *p, const double *fs, double rms,
-                        const double ends[4])
+                        const double ends[4], const fit_seen *seen)
 {
     double cx, cy, sc;
-    if (n < 3 || el__fit_normalisation(xy, n, &cx, &cy, &sc)) return -1;
-    const double noise = el__fit_noise_rms(xy, n, sc) * sc;
+    if (seen && (seen->xy != xy || seen->n != n)) seen = NULL;    /* of other points */
+    if (seen) sc = seen->sc;
+    else if (n < 3 || el__fit_normalisation(xy, n, &cx, &cy, &sc)) return -1;
+    const double noise = seen ? seen->noise : el__fit_noise_rms(xy, n, sc) * sc;
     /* a sketch's level (result_wanders, fit_restart.c), else the data's (fit.c's stray rule) */
     const double level = n < FIT_SKETCH_POINTS ? fmin(noise, rms) : noise;
     const double h = p[2], L = model == FIT_SMOOTH ? p[6] : (double)(n - 1) * h;
     long at = -1;
-    const double stray = stray_at(xy, n, fs, L, level, sc, ends, &at);
-    if (stray > FIT_STRAY) return at;
-    /* out of memory; more points than a sketch's: the stray rule alone, as the fit's (the
-     * crossing test's 256 chords cost a 1000-point fit 40 %) */
-    if (!(stray >= 0.0) || n >= FIT_SKETCH_POINTS) return -1;
+    /* the stray rule, unless the fit's found it follows its points at this level (no held
+     * ends: they change the measure) */
+    const int held = ends && (isfinite(ends[0]) || isfinite(ends[2]));
+    if (!(seen && seen->follows && level == seen->noise && !held)) {
+        const double stray = stray_at(xy, n, fs, L, level, sc, ends, &at);
+        if (stray > FIT_STRAY) return at;
+        if (!(stray >= 0.0)) return -1;     /* out of memory */
+    }
+    /* more points than a sketch's: the stray rule alone, as the fit's (the crossing test's
+     * 256 chords cost a 1000-point fit 40 %) */
+    if (n >= FIT_SKETCH_POINTS) return -1;
     /* the curve's polygon: 256 chords of the smooth curve, the discrete one's vertices */
     const size_t m = model == FIT_SMOOTH ? CROSS_CHORDS + 1 : n;
     double *V = malloc(sizeof(double) * 2 * m);

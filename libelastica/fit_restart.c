@@ -480,6 +480,7 @@ int el__fit_run_either_way(int model, const double *xy, size_t n, const el_fit_o
     for (size_t i = 0; i < n; i++) { rxy[2 * i] = xy[2 * (n - 1 - i)]; rxy[2 * i + 1] = xy[2 * (n - 1 - i) + 1]; }
     int st = el__fit_run(model, rxy, n, &o, flags, NULL, res, dist, foot);
     free(rxy);
+    res->seen.xy = NULL;    /* what it saw was of the reversed points */
     if (res->status == -1) {        /* failed before a result: the bits back */
         for (int a = 0; a < 3; a++)
             if (res->constraint == swap[a][0] || res->constraint == swap[a][1])
