@@ -850,13 +850,21 @@ enum { EL_HERMITE_SIGMA_D2_MAX = 100000 };
  * opt->tol of collinear the straight segment is returned; beyond, the near-straight curve
  * starts from a state next to the saddle (sigma > 0) or the centre (sigma < 0) of the
  * curvature's phase plane, which the solver's unknown resolves only to ~1e-16 absolute:
- * with tangents within 1e-2 rad of the chord and sigma |p1-p0|^2 within [-10, 10] it is
- * also solved from the linear beam (hermite.c, near_straight_solution) and added where
- * the roots missed it; at sigma = 0 a curve whose tangents lie within ~1e-6 rad of the
- * chord is a sliver of a huge elastica that el_smooth_params meets only to ~1e-16 / angle
- * (counted in unrepresentable where that is above tol). Beyond that range it is missed for
- * tangents up to ~1e-8 rad from collinear (sigma |p1-p0|^2 from -10 to 10, and some up to
- * 1e-6), ~1e-7 at 100, ~1e-4 at 1e3-1e4.
+ * with tangents within 1e-2 rad of the chord it is also solved from the linear beam
+ * (hermite_near.c) and added where the roots missed it (none listed twice): for sigma > 0
+ * its root in the separatrix chart, y = ln(|F| - sigma) from the beam, then as one
+ * el_smooth_params or a chain (below); for sigma |p1-p0|^2 in (-8 pi^2, 10] (from the
+ * clamped beam's buckling load, where it stops existing) Newton on its start state. It is
+ * returned only where its end curvatures are those of the root (within 10 %: a chain's are
+ * ~1e-8 kappa_m off), else counted in unrepresentable. Measured (tangents 1e-9 to 1e-2 rad
+ * off the chord, parallel, symmetric and one-sided, both signs; test_hermite_near.c): for
+ * sigma |p1-p0|^2 from 1 to 1e5 it is returned or counted in every problem (counted in 30 %
+ * of them at 1e-9 rad, 8 % at 3e-8, none from 1e-7: no representation meets tol, or its
+ * curvature is not the curve's); below 0 (down to -70) for
+ * tangents from ~1e-8 rad (below, params_from_state's kappa_m^2 = |F| + sigma cancels and
+ * it is missed). At sigma = 0 a curve whose tangents lie within ~1e-6 rad of the chord is a
+ * sliver of a huge elastica that el_smooth_params meets only to ~1e-16 / angle (counted in
+ * unrepresentable where that is above tol).
  * Every solution is verified with el_smooth_eval and returned only if its residual
  * is <= opt->tol (after a Newton polish on the parameters when it misses by a
  * little, then a second one with k held at each of its nearest doubles).

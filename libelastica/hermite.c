@@ -366,133 +366,13 @@ static int straight_solution(const hframe *fr, double sigma, el_hermite_solution
     return EL_OK;
 }
 
-/* Tangents within NEAR_STRAIGHT rad of the chord, the end point ahead, |sigma| |p1 - p0|^2
- * at most NEAR_SIGMA: the near-straight curve, from the linear beam's (the conserved F =
- * (kappa^2 - sigma) T + 2 kappa' N gives kappa'' = (sigma - kappa^2) kappa / 2; linearised
- * kappa'' = sigma kappa / 2: kappa = A f1 + B f2 with f1, f2 = 1, s (sigma = 0), cosh / sinh
- * (sigma > 0), cos / sin (sigma < 0) of sqrt(|sigma| / 2) s), whose slope theta = theta0 +
- * integral kappa ends at theta1 and whose deflection integral theta vanishes at s = d
- * (Simpson's rule, NEAR_SIMPSON intervals), L = d + integral theta^2 / 2; Newton on its
- * start state and length (near_newton), polished (polish, polish_fixed_k). EL_EDOM where it
- * cannot be evaluated (a buckling load makes the linear system singular), else EL_OK with
- * its residual: above tol where the polish fails, or where the parameters cannot carry it
- * (at sigma = 0 the curve is a piece sqrt(mu) L ~ |theta| of a huge elastica, whose closed
- * form loses ~eps / (sqrt(mu) L) to cancellation). Written because the solver's bracketing
- * misses it there: at sigma = 0 with tangents +-a of a shallow arc, for every a from 1e-9 to
- * 3e-4 (QA); of 1500 random such problems (tangents 1e-9 to 1e-2 rad off the chord, sigma
- * |p1 - p0|^2 0 or in [-10, 10]) 411 lacked it, 136 now: 96 at sigma = 0 counted
- * unrepresentable, 40 at other tensions with tangents ~1e-9..1e-8 rad off the chord (the
- * header's limit); none listed twice */
-#define NEAR_STRAIGHT 1e-2
-#define NEAR_SIGMA 10.0
-enum { NEAR_SIMPSON = 64 };
-
-static double near_basis(int j, double sigma, double s)
+/* polish, then polish_fixed_k where it misses tol, and the end curvatures from the curve
+ * (hermite_near.c's near-straight curve at |sigma| |p1 - p0|^2 <= 10) */
+int el__hermite_polish(const hframe *fr, double sigma, double tol, el_hermite_solution *s)
 {
-    const double w = sqrt(0.5 * fabs(sigma)) * s;
-    if (sigma == 0.0) return j ? s : 1.0;
-    if (sigma > 0.0) return j ? sinh(w) : cosh(w);
-    return j ? sin(w) : cos(w);
-}
-
-/* The end conditions' residual (end point / d, end tangent) of the curve from p0, t0 with
- * the start state (kappa0, kappa0') = x[0], x[1] and length x[2] at tension sigma */
-static int near_residual(const hframe *fr, double sigma, const double x[3], double r[3], el_smooth_params *p)
-{
-    double xy[4], th[2];
-    if (el__hermite_params_from_state(fr->p0[0], fr->p0[1], fr->psi0, x[0], x[1], sigma, x[2],
-                                      NULL, p) ||
-        el_smooth_check(p) || el__smooth_ends(p, xy, th))
-        return EL_EDOM;
-    r[0] = (xy[2] - fr->p1[0]) / fr->d;
-    r[1] = (xy[3] - fr->p1[1]) / fr->d;
-    r[2] = el__hermite_wrap_pi(th[1] - fr->psi1);
-    return isfinite(r[0]) && isfinite(r[1]) && isfinite(r[2]) ? EL_OK : EL_EDOM;
-}
-
-/* Newton on the start state and the length from x (the linear beam's), a finite-difference
- * Jacobian each step (steps scale: the state's size, ~theta / d and theta / d^2), while
- * the residual falls; the curve into s->curve */
-static void near_newton(const hframe *fr, double sigma, double scale, double x[3], el_hermite_solution *s)
-{
-    const double d = fr->d, hs[3] = {1e-6 * scale / d, 1e-6 * scale / (d * d), 1e-6 * scale * d};
-    double r[3];
-    el_smooth_params p;
-    if (near_residual(fr, sigma, x, r, &p)) return;
-    double rn = fmax(fabs(r[0]), fmax(fabs(r[1]), fabs(r[2])));
-    s->curve = p;
-    for (int it = 0; it < 12 && rn > 0.0; it++) {
-        double J[9], rp[3], rm[3];
-        for (int c = 0; c < 3; c++) {
-            double xp[3] = {x[0], x[1], x[2]}, xm[3] = {x[0], x[1], x[2]};
-            xp[c] += hs[c];
-            xm[c] -= hs[c];
-            if (near_residual(fr, sigma, xp, rp, &p) || near_residual(fr, sigma, xm, rm, &p)) return;
-            for (int i = 0; i < 3; i++) J[i * 3 + c] = (rp[i] - rm[i]) / (2.0 * hs[c]);
-        }
-        int perm[3];
-        double dx[3] = {-r[0], -r[1], -r[2]};
-        if (el__lu_factor(J, 3, perm)) return;
-        el__lu_solve(J, 3, perm, dx);
-        const double xn[3] = {x[0] + dx[0], x[1] + dx[1], x[2] + dx[2]};
-        double rt[3];
-        if (near_residual(fr, sigma, xn, rt, &p)) return;
-        const double tn = fmax(fabs(rt[0]), fmax(fabs(rt[1]), fabs(rt[2])));
-        if (!(tn < rn)) return;
-        memcpy(x, xn, sizeof xn);
-        memcpy(r, rt, sizeof rt);
-        rn = tn;
-        s->curve = p;
-    }
-}
-
-static int near_straight_solution(const hframe *fr, double sigma, double tol, el_hermite_solution *s)
-{
-    const double d = fr->d, chi = atan2(fr->p1[1] - fr->p0[1], fr->p1[0] - fr->p0[0]);
-    const double t0 = el__hermite_wrap_pi(fr->psi0 - chi), t1 = el__hermite_wrap_pi(fr->psi1 - chi);
-    if (!(fabs(t0) <= NEAR_STRAIGHT && fabs(t1) <= NEAR_STRAIGHT && fabs(sigma) * d * d <= NEAR_SIGMA))
-        return EL_EDOM;
-    /* integral f_j and integral (d - s) f_j over [0, d] (the turning and the deflection) */
-    const double h = d / NEAR_SIMPSON;
-    double I[2][2] = {{0.0, 0.0}, {0.0, 0.0}};
-    for (int i = 0; i <= NEAR_SIMPSON; i++) {
-        const double wt = (i == 0 || i == NEAR_SIMPSON ? 1.0 : i % 2 ? 4.0 : 2.0) * h / 3.0, x = i * h;
-        for (int j = 0; j < 2; j++) {
-            I[0][j] += wt * near_basis(j, sigma, x);
-            I[1][j] += wt * (d - x) * near_basis(j, sigma, x);
-        }
-    }
-    const double det = I[0][0] * I[1][1] - I[0][1] * I[1][0], r0 = t1 - t0, r1 = -t0 * d;
-    if (!(fabs(det) > 0.0)) return EL_EDOM;
-    const double A = (r0 * I[1][1] - I[0][1] * r1) / det, B = (I[0][0] * r1 - I[1][0] * r0) / det;
-    const double g = sqrt(0.5 * fabs(sigma));
-    const double k0 = A, k0p = sigma == 0.0 ? B : B * g;      /* f1'(0) = 0, f2'(0) = 1 or g */
-    /* L = d + integral theta^2 / 2, theta = t0 + integral kappa (the trapezoid's running sum) */
-    double theta = t0, w2 = 0.0, kprev = k0;
-    int turns = 0;     /* kappa's changes of sign inside */
-    for (int i = 1; i <= NEAR_SIMPSON; i++) {
-        const double x = i * h, k = A * near_basis(0, sigma, x) + B * near_basis(1, sigma, x);
-        const double th = theta + 0.5 * h * (kprev + k);
-        turns += i < NEAR_SIMPSON && (k < 0.0) != (kprev < 0.0) && kprev != 0.0;
-        w2 += 0.5 * h * (theta * theta + th * th);
-        theta = th;
-        kprev = k;
-    }
-    memset(s, 0, sizeof *s);
-    s->npieces = 1;
-    s->sigma = sigma;
-    double x[3] = {k0, k0p, d + 0.5 * w2};
-    if (el__hermite_params_from_state(fr->p0[0], fr->p0[1], fr->psi0, x[0], x[1], sigma, x[2],
-                                      NULL, &s->curve))
-        return EL_EDOM;
-    near_newton(fr, sigma, fmax(fabs(t0), fabs(t1)), x, s);
-    s->length = s->curve.length;
-    if (el__hermite_residual(fr, s, &s->residual)) return EL_EDOM;
     polish(fr, EL_HERMITE_TENSION, sigma, s);
     if (s->residual > tol) polish_fixed_k(fr, EL_HERMITE_TENSION, sigma, s);
-    if (end_curvatures(s) || el_smooth_energy(&s->curve, &s->energy)) return EL_EDOM;
-    s->has_inflection = turns > 0;   /* the linear beam's: the polish moves kappa by O(theta^3) */
-    return EL_OK;
+    return end_curvatures(s);
 }
 
 /* The circular arc from (p0, t0) through p1, if it ends with tangent t1: curvature
@@ -643,6 +523,7 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
     const int collinear = fabs(pr.P1) <= opt->tol && pr.P2 > 0.0 && fabs(pr.V1) <= opt->tol && pr.V2 > 0.0;
 
     hrootlist roots = {NULL, 0, 0};
+    size_t nsolver = (size_t)-1;   /* roots from nsolver on: hermite_near.c's */
     int rc;
     double Ln = 0.0;
     if (opt->mode == EL_HERMITE_TENSION) {
@@ -650,6 +531,9 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
         pr.Lmin = 1.0;
         if (pr.sigma > EL_HERMITE_SIGMA_D2_MAX) return EL_EDOM;
         rc = el__hermite_solve_tension(&pr, opt->samples, &roots);
+        /* the near-straight curve next to the saddle, which the bracketing can miss */
+        nsolver = roots.n;
+        if (!rc && !collinear && pr.sigma > 0.0) rc = el__hermite_near_roots(&pr, &roots);
     } else {
         Ln = opt->length / fr.d;
         if (Ln < 1.0 - 1e-12 || !isfinite(Ln)) return EL_EDOM;
@@ -672,7 +556,7 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
     }
     el_hermite_solution nearly;     /* added below unless the roots hold it */
     const int near_ok = opt->mode == EL_HERMITE_TENSION && !collinear &&
-                        near_straight_solution(&fr, opt->sigma, opt->tol, &nearly) == EL_OK;
+                        el__hermite_near_straight(&fr, opt->sigma, opt->tol, &nearly) == EL_OK;
     /* at sigma = 0 not met to tol only by the parameters' resolution: unrepresentable */
     const int near_unrep = near_ok && !(nearly.residual <= opt->tol) && opt->sigma == 0.0 &&
                            nearly.residual <= 1e3 * DBL_EPSILON / (sqrt(nearly.curve.mu) * nearly.curve.length);
@@ -690,7 +574,8 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
     /* found, exact in the solver's variables, but not representable to tol (below) */
     /* (on the stack for the usual few roots: no malloc and free per problem) */
     el_hermite_solution ubuf[8], *unrep = roots.n <= 8 ? ubuf : malloc(roots.n * sizeof *unrep);
-    size_t nunrep = 0;
+    size_t nunrep = 0, near_u = (size_t)-1;   /* near_u: the near-straight root's entry */
+    int near_found = 0;
     if (!unrep) { free(sol); free(roots.v); return EL_ENOMEM; }
     for (size_t i = 0; i < roots.n; i++) {
         el_hermite_solution s;
@@ -704,6 +589,18 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
             polish(&fr, opt->mode, target, &s);
             if (s.residual > opt->tol) polish_fixed_k(&fr, opt->mode, target, &s);
         }
+        /* a near-straight root's chain from the root's curve: the polish can move k off 1 onto
+         * another curve (tangents -+1e-6 rad at sigma |p1 - p0|^2 = 1e4: length 1.11 |p1 - p0|) */
+        if (i >= nsolver && !(s.residual <= opt->tol)) {
+            if (make_solution(&fr, &roots.v[i], &s)) continue;
+            s.sigma = opt->sigma;
+            if (el__hermite_residual(&fr, &s, &s.residual)) continue;
+        }
+        /* (and one whose piece meets the ends but, its k rounded to 1, not its curvature) */
+        if (i >= nsolver && s.residual <= opt->tol && s.npieces == 1) {
+            el_hermite_solution t = s;
+            if (el__hermite_near_check(&fr, &roots.v[i].st, &t)) s.residual = INFINITY;
+        }
         /* near the separatrix a curve through a saddle that one piece cannot carry:
          * the chain split at its saddles (hermite_chain.c) */
         if (!(s.residual <= opt->tol) && representation_limited(&roots.v[i])) {
@@ -711,9 +608,23 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
             const double sep = root_sep(&roots.v[i], &scale) / (fr.d * fr.d);
             const double target = opt->mode == EL_HERMITE_TENSION ? opt->sigma : opt->length;
             el__hermite_chain(&fr, opt->mode, target, sep, opt->tol, &s);
-            if (!(s.residual <= opt->tol)) { unrep[nunrep++] = s; continue; }
+            if (!(s.residual <= opt->tol)) {
+                /* the near-straight curve counted once (its roots on both branches) */
+                if (i >= nsolver && near_u != (size_t)-1) continue;
+                if (i >= nsolver) near_u = nunrep;
+                unrep[nunrep++] = s;
+                continue;
+            }
+        }
+        /* a near-straight curve whose representation's curvature is not its own (below) */
+        if (i >= nsolver && s.residual <= opt->tol && el__hermite_near_check(&fr, &roots.v[i].st, &s)) {
+            if (near_u == (size_t)-1) unrep[near_u = nunrep++] = s;
+            continue;
         }
         if (!(s.residual <= opt->tol)) continue;
+        /* a near-straight root whose chain's correction wandered to another curve */
+        if (i >= nsolver && !(fabs(s.length - roots.v[i].st.L * fr.d) <= 1e-6 * fr.d)) continue;
+        near_found |= i >= nsolver;
         /* a near-straight curve's energy from its parameters: the root's state loses it to
          * cancellation (tangents 1e-4 rad off the chord at sigma |p1 - p0|^2 = 7.3: 2e-5 of
          * it, 7.5e-5 where polished); its few ulps elsewhere are kept as they are */
@@ -722,12 +633,20 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
         for (size_t j = 0; j < n && !dup; j++) {
             if (el__hermite_same_solution(&s, &sol[j], fr.d)) {
                 dup = 1;
-                if (s.residual < sol[j].residual) sol[j] = s;
+                /* a near-straight root replaces the roots' curve only where that one's
+                 * curvature is not the curve's (el__hermite_near_check) */
+                if (i < nsolver) {
+                    if (s.residual < sol[j].residual) sol[j] = s;
+                } else {
+                    el_hermite_solution t = sol[j];
+                    if (el__hermite_near_check(&fr, &roots.v[i].st, &t)) sol[j] = s;
+                }
             }
         }
         if (!dup) sol[n++] = s;
     }
     free(roots.v);
+    if (near_found && near_u != (size_t)-1) unrep[near_u] = unrep[--nunrep];
     size_t nu = (size_t)circle_unrep;
     if (near_ok && (nearly.residual <= opt->tol || near_unrep)) {
         int dup = 0;

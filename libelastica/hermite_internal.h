@@ -8,6 +8,7 @@
  *   hermite_length.c     all solutions for a given length (hermite_length_chart.c: its
  *                        points in the charts; hermite_length_internal.h);
  *   hermite_chain.c      a solution near the separatrix as a chain split at its saddles;
+ *   hermite_near.c       the near-straight solution under tension, from the linear beam;
  *   hermite.c            the public entry points: normalisation, world-frame solutions.
  */
 #ifndef EL_HERMITE_INTERNAL_H
@@ -165,6 +166,18 @@ int el__hermite_solve_length_thorough(hprob *pr, double Lt, int ng, int ns, hroo
  * (|P| = 1; derivation in hermite_length.c, checked in test_hermite_length.c). */
 #define HLEN_SIGMA_E2 130.13
 
+/* The near-straight solution under tension (hermite_near.c): the linear beam between
+ * tangents t0, t1 (rad from the chord, normalised sigma > 0): theta = c + alpha e^(-g s) +
+ * beta e^(-g (1 - s)), g = sqrt(sigma / 2); its start state k0, k0p, length L and
+ * |F| - sigma = side e^lnsep. Its root in the separatrix chart appended to out where the
+ * tangents lie within NEAR_CHORD rad of the chord, the end point ahead (none else). */
+#define NEAR_CHORD 1e-2
+typedef struct { double g, alpha, beta, c, k0, k0p, L, lnsep, amax; int side; } hbeam;
+/* below (max |t0|, |t1|), the beam's states stand for the curve's (O(theta^2) relative) */
+#define NEAR_EXACT 1e-6
+int el__hermite_near_beam(double sigma, double t0, double t1, hbeam *bm);
+int el__hermite_near_roots(const hprob *pr, hrootlist *out);
+
 /* The world frame of a problem: the ends, their tangent angles, d = |p1 - p0|, and
  * rot, the angle that turns the normalised frame into the world's. */
 typedef struct {
@@ -189,6 +202,15 @@ int el__hermite_params_from_state(double x0, double y0, double theta, double kap
 int el__hermite_residual(const hframe *fr, const el_hermite_solution *s, double *res);
 int el__hermite_same_solution(const el_hermite_solution *a, const el_hermite_solution *b,
                               double d);
+/* hermite.c's polish (Newton on the parameters, then with k held at its nearest doubles)
+ * and the end curvatures from the curve; hermite_near.c's near-straight curve from the
+ * world-frame linear beam where |sigma| |p1 - p0|^2 <= 10 (EL_EDOM: none; else EL_OK with
+ * its residual, which can be above tol). */
+int el__hermite_polish(const hframe *fr, double sigma, double tol, el_hermite_solution *s);
+int el__hermite_near_straight(const hframe *fr, double sigma, double tol, el_hermite_solution *s);
+/* hermite_near.c: a near-straight root's solution s checked against the root's state st (its
+ * end curvatures within 10 % of it: EL_OK, with s's end curvatures and inflection set). */
+int el__hermite_near_check(const hframe *fr, const hstate *st, el_hermite_solution *s);
 /* hermite_symmetry.c: the solution list closed under the problem's symmetries. */
 int el__hermite_add_images(const hframe *fr, const el_hermite_options *opt, double Ln,
                            el_hermite_solution **sol, size_t *n, size_t *cap);
