@@ -345,10 +345,14 @@ static int make_solution(const hframe *fr, const hroot *r, el_hermite_solution *
         /* zeros of cn strictly inside: integers n with a < n < b (a zero at an end is no inflection) */
         s->has_inflection = ceil(b) - floor(a) - 1.0 > 0.5;
     }
-    const double sep = st->sep / (d * d);
-    return el__hermite_params_from_state(fr->p0[0], fr->p0[1], fr->psi0, st->k0 / d,
-                                         st->k0p / (d * d), s->sigma, s->length,
-                                         st->has_sep ? &sep : NULL, &s->curve);
+    /* scaled by e = 2^ilogb(d) (exactly; d / e in [1, 2)): |F| - sigma (to 1e-300) would
+     * underflow divided by d^2 (length 1.01 d at d = 1e40: solutions lost) */
+    const double e = ldexp(1.0, ilogb(d)), dn = d / e, dn2 = dn * dn, sep = st->sep / dn2;
+    const int rc = el__hermite_params_from_state(fr->p0[0], fr->p0[1], fr->psi0, st->k0 / dn, st->k0p / dn2,
+                                                 r->sigma / dn2, st->L * dn, st->has_sep ? &sep : NULL, &s->curve);
+    s->curve.mu /= e * e;
+    s->curve.length = s->length;
+    return rc;
 }
 
 static int straight_solution(const hframe *fr, double sigma, el_hermite_solution *s)
@@ -495,10 +499,12 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
     res->solutions = NULL;
     res->unrepresentable = 0;
 
-    /* normalisation (seed 004 §4): p0 = 0, t0 = (0, 1), |p1 - p0| = 1, sigma d^2 */
+    /* normalisation (seed 004 §4): p0 = 0, t0 = (0, 1), |p1 - p0| = 1, sigma d^2. fr too has
+     * p0 = 0, added back at the end: residuals without ulp(|p0|) / d (2e-10 at |p0| = 1e6 d) */
     hframe fr;
-    memcpy(fr.p0, p0, sizeof fr.p0);
-    memcpy(fr.p1, p1, sizeof fr.p1);
+    fr.p0[0] = fr.p0[1] = 0.0;
+    fr.p1[0] = p1[0] - p0[0];
+    fr.p1[1] = p1[1] - p0[1];
     fr.psi0 = atan2(u0[1], u0[0]);
     fr.psi1 = atan2(u1[1], u1[0]);
     fr.d = hypot(p1[0] - p0[0], p1[1] - p0[1]);
@@ -605,7 +611,7 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
          * the chain split at its saddles (hermite_chain.c) */
         if (!(s.residual <= opt->tol) && representation_limited(&roots.v[i])) {
             double scale;
-            const double sep = root_sep(&roots.v[i], &scale) / (fr.d * fr.d);
+            const double dn = fr.d / ldexp(1.0, ilogb(fr.d)), sep = root_sep(&roots.v[i], &scale) / (dn * dn);
             const double target = opt->mode == EL_HERMITE_TENSION ? opt->sigma : opt->length;
             el__hermite_chain(&fr, opt->mode, target, sep, opt->tol, &s);
             if (!(s.residual <= opt->tol)) {
@@ -678,6 +684,12 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
         nu += !dup;
     }
     if (unrep != ubuf) free(unrep);
+    for (size_t i = 0; i < n; i++)          /* p0 back into every piece (fr has p0 = 0) */
+        for (int j = 0; j < sol[i].npieces; j++) {
+            el_smooth_params *pc = j ? &sol[i].rest[j - 1] : &sol[i].curve;
+            pc->x0 += p0[0];
+            pc->y0 += p0[1];
+        }
     /* by energy: insertion sort, stable as glibc's qsort (a merge sort) on the same
      * comparison; the lists are a few solutions long (qsort's indirect calls and
      * buffer cost more than the sort) */

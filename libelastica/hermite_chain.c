@@ -110,10 +110,15 @@ static double maxabs3(const double r[3]) { return fmax(fabs(r[0]), fmax(fabs(r[1
 
 /* Gauss-Newton on the unknowns for the three end conditions (the minimum-norm step
  * J^T (J J^T)^-1 r when there are four unknowns: three pieces), central differences,
- * a step kept only when it reduces the largest end error (halved up to four times). */
+ * a step kept only when it reduces the largest end error (halved up to four times).
+ * The last unknown is taken in the normalised frame's units (length / d, mu d^2), as
+ * the phases are: J J^T squares the columns, and a column of mu ~ 1 / d^2 fell below
+ * the phases' rounding there (the loop of a U at |p1 - p0| = 1e-3: the step missed mu
+ * and the chain stopped at 7e-9, the curve counted unrepresentable). */
 static int correct(const hframe *fr, chain *c, double tol)
 {
     const int m = nunknowns(c);
+    const double xs = c->mode == EL_HERMITE_TENSION ? fr->d : 1.0 / (fr->d * fr->d);
     double x[MAXUNK], r[3];
     get_unknowns(c, x);
     int rc = chain_res(fr, c, x, r);
@@ -129,7 +134,7 @@ static int correct(const hframe *fr, chain *c, double tol)
             int e2 = chain_res(fr, c, x, rm);
             x[j] = v;
             if (e1 || e2) return e1 ? e1 : e2;
-            for (int i = 0; i < 3; i++) J[i * m + j] = (rp[i] - rm[i]) / (2.0 * h);
+            for (int i = 0; i < 3; i++) J[i * m + j] = (rp[i] - rm[i]) / (2.0 * h) * (j == c->n ? xs : 1.0);
         }
         /* (J J^T) y = -r, dx = J^T y (LU) */
         double A[9], y[3], b[3];
@@ -149,6 +154,7 @@ static int correct(const hframe *fr, chain *c, double tol)
         for (int j = 0; j < m; j++) {
             dx[j] = 0.0;
             for (int i = 0; i < 3; i++) dx[j] += J[i * m + j] * y[i];
+            if (j == c->n) dx[j] *= xs;
         }
         int better = 0;
         for (int h = 0; h < 5 && !better; h++) {
@@ -372,7 +378,8 @@ static int build_chain(const hframe *fr, int mode, double target, double sep, do
                        const el_hermite_solution *s, el_hermite_solution *out, double *jump, double *kmax)
 {
     const el_smooth_params *p = &s->curve;
-    const double Fn = 2.0 * p->mu, sigma = s->sigma, km2 = Fn + sigma;
+    /* in sep's frame, scaled by 2^-ilogb(d) (exactly) */
+    const double e2 = ldexp(1.0, 2 * ilogb(fr->d)), Fn = 2.0 * p->mu * e2, sigma = s->sigma * e2, km2 = Fn + sigma;
     if (!(Fn > 0.0) || !(km2 > 0.0) || !(sep != 0.0)) return EL_EDOM;
     chain c;
     memset(&c, 0, sizeof c);

@@ -186,7 +186,8 @@ typedef struct {
 
 /* The solution s (one piece, from the root: its curve, length, scalars), whose curve
  * no single el_smooth_params carries to tol, as a chain split at its saddles
- * (hermite_chain.c): sep = |F| - sigma of the curve (world units, exact), mode and
+ * (hermite_chain.c): sep = |F| - sigma of the curve (exact; in the frame scaled by 2^-ilogb(|p1 - p0|):
+ * divided by |p1 - p0|^2 it can underflow), mode and
  * target as el_hermite_solve's (the given sigma or length). EL_OK with s replaced by
  * the chain when its residual is below s's (s->npieces > 1); EL_EDOM when the curve
  * passes no saddle or the chain cannot be built (s unchanged). */

@@ -589,3 +589,24 @@ def test_near_straight_curve_beyond_the_parameters_is_counted_and_named():
         warnings.simplefilter("error")
         loose = el.hermite((0, 0), t0, (1, 0), t1, tension=0.0, tol=1e-8)
     assert loose[0].energy_value == pytest.approx(4e-12, rel=1e-2) and loose[0].residual <= 1e-8
+
+
+@pytest.mark.parametrize("scale", [1e-9, 1e-3, 1e6, 1e9])
+def test_the_fair_u_is_found_at_every_scale_and_place(scale):
+    # QA: (0, 0) t (1, 0) to (0, 1) t (-1, 0), length 1.05 x the chord: the fair U (energy
+    # 54.9 / chord, a chain near the separatrix) was counted unrepresentable at scales
+    # <= 1e-3 and >= 1e6, and away from the origin the coordinates' rounding cost others
+    ref = el.hermite((0.0, 0.0), (1, 0), (0.0, 1.0), (-1, 0), length=1.05)
+    for off in (0.0, 1e6):
+        p0 = (off * scale, -off * scale)
+        p1 = (p0[0], p0[1] + scale)
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")      # no "unrepresentable" RuntimeWarning
+            s = el.hermite(p0, (1, 0), p1, (-1, 0), length=1.05 * scale)
+        assert s.unrepresentable == 0 and len(s) == len(ref) == 4
+        e = sorted(c.energy_value * scale for c in s)
+        assert e[0] == pytest.approx(54.903, abs=1e-3)
+        assert np.allclose(e, sorted(c.energy_value for c in ref), rtol=1e-8)
+        for c in s:
+            xy = c.points(np.array([0.0, c.length]))
+            assert np.abs(xy - np.array([p0, p1])).max() <= 1e-10 * scale + 4e-16 * abs(off * scale)
