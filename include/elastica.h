@@ -910,8 +910,8 @@ enum { EL_HERMITE_SIGMA_D2_MAX = 100000 };
  * samples + 14 times per piece between split points (at most 65 pieces per branch,
  * two separatrix pieces of 11 samples at most per piece), plus at most 100
  * root-finder iterations per sign change; a chain (near the separatrix) at most 10
- * correction steps of 2 (m + 1) + 5 evaluations of its m + 1 unknowns; length mode solves grid tension problems and at
- * most 1e5 evaluations for the tracing (EL_EMAXITER beyond).
+ * correction steps of 2 (m + 1) + 5 evaluations of its m + 1 unknowns; length mode solves grid tension problems
+ * (with samples / 2, at least 4) and at most 1e5 evaluations for the tracing (EL_EMAXITER beyond).
  * res is overwritten (not freed first). EL_EINVAL leaves res untouched; EL_EMAXITER
  * returns the solutions found; other errors leave it empty (count 0).
  * Errors: EL_EINVAL (NULL, non-finite, zero tangent, mode not one of the two, tol not
