@@ -1063,6 +1063,11 @@ typedef struct el_spline_result {
     double guide_forces[4];    /* the force each exerts on the batten (x, y; units of EI/2,
                               as forces): F of the piece before minus F of the piece after,
                               normal to the batten */
+    int loops;             /* 1: the spline crosses itself where the polygon of its knots does
+                              not, or (tension mode) is longer than 4 x that polygon: it loops
+                              away from its ducks; no fair batten was found at this tension
+                              (spline_fair.c; tension mode follows the family from the taut
+                              batten before it settles for one). 0: it follows its ducks */
 } el_spline_result;
 
 /* Defaults: tension mode, sigma 0, open, natural ends, tol 1e-10, max_iter 60, max_steps 60. */
@@ -1141,7 +1146,13 @@ void el_spline_options_defaults(el_spline_options *opt);
  * tangent ends within 0.05 rad of it, no G2 end) pushed longer: the buckled batten of the
  * ducks projected onto the line (its first mode, either side), moved to the ducks by
  * continuation in their positions, or the path from the free batten where that ends at a
- * lower energy. Tension mode: a solution of the direct Newton longer than 1.5 x the
+ * lower energy. Tension mode: a solution that crosses itself where its ducks' polygon
+ * does not, or is longer than 1.5 x it, is not taken as it is: the family of tension
+ * solutions is followed by pseudo-arclength from the taut batten (sigma h^2 = 40, 10, 4 or
+ * 1 on the mean chord, the first that converges fair) down to sigma, through its folds,
+ * and of those found the one that follows its ducks is kept, then the least
+ * integral kappa^2 + sigma ds (the functional the equations make stationary); where
+ * none follows its ducks, loops is set. Before that: a solution of the direct Newton longer than 1.5 x the
  * ducks' polygon (it winds away from them: loops) is replaced by the free batten pulled
  * to that tension, or the batten brought down from sigma h^2 = 40, where that converges
  * shorter; where neither the direct Newton nor the batten from sigma h^2 = 40 converges,
@@ -1197,7 +1208,9 @@ void el_spline_result_free(el_spline_result *res);
  * of it: each piece by el_smooth_to_bspline_g2 (end point, unit tangent and
  * curvature exact, arc-length parameter), joined with knot multiplicity
  * degree - 2 at the points, so the B-spline is C2 in its parameter, which is
- * the arc length of the spline from point 0 (closed: the joint at point 0 stays
+ * the arc length of the spline from point 0 at the points (between them it is not:
+ * the certified distance is geometric, b(s) and the spline at arc length s can lie
+ * farther apart than tol) (closed: the joint at point 0 stays
  * a clamped end, G2 by the same end conditions). out->max_deviation is the
  * largest certified distance of the pieces (plus the rounding of the joins).
  * Errors: EL_EINVAL (NULL, res empty, tol <= 0, degree outside 3..7, pieces that do

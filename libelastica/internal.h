@@ -322,6 +322,25 @@ int el__spline_solve_buckled(el__spchain *w, int max_steps, double dir, double L
  * buckled batten of the ducks projected onto it, moved to the ducks (spline_path.c). */
 int el__spline_solve_near_line(el__spchain *w, int max_steps, double dir, double Lt);
 
+/* spline_fair.c: 1 when the curve of the m pieces (closed: the last back to the first)
+ * crosses itself where the polygon of their knots does not, else 0; -1: no memory.
+ * el__chain_crosses: the same for the chain w without guide ducks (internal units). */
+int el__spline_crosses(const el_smooth_params *p, size_t m, int closed);
+int el__chain_crosses(const el__spchain *w);
+/* The tension solution in w (st: its status; target: its sigma, internal) where it
+ * wanders or failed: the family from the taut batten followed to target (spline_fair.c). */
+int el__spline_refair(el__spchain *w, int max_steps, int st, double target);
+/* spline_path.c: pseudo-arclength along the tension solutions from the one in w until
+ * the length (by_sigma 0) or sigma (1; 2: sigma at most half way per step) is Lt, then
+ * Newton there; snapshots of a chain's state. */
+int el__spline_follow_family(el__spchain *w, int max_steps, double Lt, int by_sigma);
+void el__snap_save(const el__spchain *w, el__spsnap *s);
+void el__snap_load(el__spchain *w, const el__spsnap *s);
+/* A tension solution longer than EL__SP_WANDER x its ducks' polygon winds away from them;
+ * the high tension (sigma h^2 on the mean chord) continuations start from */
+#define EL__SP_WANDER 1.5
+#define EL__SP_HIGH_SIGMA 40.0
+
 /* G2 ends (spline_guide.c): the guided chain g of the solved sibling w, its G2
  * ends clamped only (g allocated here; free it also on failure); then the end
  * curvatures moved to kg (spline_path.c). */

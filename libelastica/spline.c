@@ -7,7 +7,8 @@
  *   spline_path.c   continuation in sigma, the length mode, the buckled strip,
  *                   the G2 ends' continuation in the end curvatures;
  *   spline_guide.c  G2 ends: the guide ducks (why, and where);
- *   spline_piece.c  one piece: residuals, Jacobians, its state, its start.
+ *   spline_piece.c  one piece: residuals, Jacobians, its state, its start;
+ *   spline_fair.c   does the spline follow its ducks (no self-crossing).
  *
  * Forces (seed 004 (9)-(10)): for the Lagrangian integral kappa^2 + sigma ds
  * with the constraint gamma' = T, the multiplier F_EL satisfies
@@ -495,6 +496,10 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
         double other;
         const int st2 = make_result(sol, xy, n, S, opt->tol, res, &other);
         if (st2) { st = st2; goto done; }
+        /* does it follow its ducks (spline_fair.c)? */
+        const int cr = el__spline_crosses(res->pieces, res->npieces, closed);
+        if (cr < 0) { el_spline_result_free(res); st = EL_ENOMEM; goto done; }
+        res->loops = cr || (!lmode && res->length > 4.0 * Lp);
         if (straight && lmode) { res->sigma = 0.0; goto done; }
         if (straight) goto done;
         /* circle pieces are accepted at what el_smooth_params resolves (header) */

@@ -4,7 +4,9 @@
  *
  * Tension mode: Newton on the chain (spline_chain.c) from its start; if that
  * fails, continuation in sigma from a high tension (sigma h^2 = 40: the pieces
- * are then short and near the polygon) down to sigma.
+ * are then short and near the polygon) down to sigma; a solution that does not follow
+ * its ducks, or none, is then checked against the family followed by pseudo-arclength
+ * from the taut batten (spline_fair.c, el__spline_refair).
  * Length mode: Newton with the length as an equation where it contracts, else
  * pseudo-arclength continuation of the tension solutions in (angles, sigma)
  * from the free batten (follow_length), since neither sigma nor the length
@@ -21,7 +23,7 @@
 
 /* Snapshots: to restore after a failed step, and the two last ones for the
  * secant predictor. */
-static void snap_save(const el__spchain *w, el__spsnap *s)
+void el__snap_save(const el__spchain *w, el__spsnap *s)
 {
     memcpy(s->x, w->x, w->n * sizeof *w->x);
     for (size_t j = 0; j < w->m; j++) {
@@ -31,7 +33,7 @@ static void snap_save(const el__spchain *w, el__spsnap *s)
     s->sigma = w->sigma;
 }
 
-static void snap_load(el__spchain *w, const el__spsnap *s)
+void el__snap_load(el__spchain *w, const el__spsnap *s)
 {
     memcpy(w->x, s->x, w->n * sizeof *w->x);
     for (size_t j = 0; j < w->m; j++) memcpy(w->pc[j].v, s->v + j * EL__NV, sizeof w->pc[j].v);
@@ -47,7 +49,7 @@ static void predict(el__spchain *w, const el__spsnap *a, const el__spsnap *b, do
     for (size_t j = 0; j < w->m; j++) {
         double st[EL__NV];
         for (int i = 0; i < EL__NV; i++) st[i] = b->st[j * EL__NV + i] + f * (b->st[j * EL__NV + i] - a->st[j * EL__NV + i]);
-        if (el__spiece_set_state(&w->pc[j], st)) { snap_load(w, b); return; }
+        if (el__spiece_set_state(&w->pc[j], st)) { el__snap_load(w, b); return; }
     }
 }
 
@@ -69,7 +71,7 @@ static int continuation(el__spchain *w, el__spsnap sv[2], int max_steps, double 
 {
     double t = 0.0, tp = -1.0;
     el__spsnap *cur = &sv[0], *prev = &sv[1];
-    snap_save(w, cur);
+    el__snap_save(w, cur);
     for (int step = 0; step < max_steps; step++) {
         const double tn = fmin(1.0, t + dt);
         const int last = tn >= 1.0;
@@ -83,19 +85,19 @@ static int continuation(el__spchain *w, el__spsnap sv[2], int max_steps, double 
         if (st == EL_OK) {
             if (last) return EL_OK;
             el__spsnap *tmp = prev; prev = cur; cur = tmp;
-            snap_save(w, cur);
+            el__snap_save(w, cur);
             tp = t;
             t = tn;
             dt *= w->iterations - it0 <= 3 ? 2.0 : 1.3;
             continue;
         }
         if (last && w->resid <= EL__SP_NEAR) { w->near = 1; return EL_ENOCONV; }
-        snap_load(w, cur);
+        el__snap_load(w, cur);
         set(w, t, par);
         dt *= 0.5;
         if (dt < 1e-3) break;
     }
-    snap_load(w, cur);
+    el__snap_load(w, cur);
     return EL_ENOCONV;
 }
 
@@ -156,29 +158,53 @@ static double arc_dist(const el__spchain *w, const el__spsnap *a, const el__spsn
  * length), towards the target length, until the length brackets it; then
  * Newton with the length as the border equation from the interpolated state.
  * Step: doubled after an easy success, halved after a failure, at most
- * max_steps steps.
+ * max_steps steps. by_sigma: the target is the tension Lt instead (the gap sigma - Lt,
+ * then Newton at that sigma): the family followed through its folds in sigma, where
+ * continuation in sigma itself turns back or jumps to another branch (follow_sigma).
  */
-static int follow_length(el__spchain *w, int max_steps, double Lt)
+static double family_gap(const el__spchain *w, double target, int by_sigma)
+{
+    return by_sigma ? w->sigma - target : total_length(w) - target;
+}
+
+int el__spline_follow_family(el__spchain *w, int max_steps, double Lt, int by_sigma)
 {
     el__spsnap *sv = w->snap;
     int steps = max_steps;
     el__spsnap *B = &sv[2], *C = &sv[0];   /* the base point and the next one */
     const double rho = 1.0 + fabs(w->sigma);
-    double gb = total_length(w) - Lt, gc;
-    snap_save(w, B);
+    double gb = family_gap(w, Lt, by_sigma), gc;
+    el__snap_save(w, B);
     if (fabs(gb) > 1e-9 * Lt) {
         /* a second point: sigma moved towards the length (a batten is shorter
          * under more tension, but one whose guide ducks end on its end
          * tangents is longer: the other way when the length moved away) */
-        const double s1 = w->sigma + (gb < 0.0 ? -0.05 : 0.05) * rho;
-        if (move_sigma(w, sv, &steps, s1)) return EL_ENOCONV;
-        gc = total_length(w) - Lt;
-        if (fabs(gc) > fabs(gb)) {
-            snap_load(w, B);
+        const double s1 = w->sigma + ((gb < 0.0) != by_sigma ? -0.05 : 0.05) * rho;
+        if (move_sigma(w, sv, &steps, s1)) {
+            /* no solution that way: the start is at a fold in sigma (el__spline_free_batten
+             * stops at one where the family turns back before sigma = 0: t48 of the QA's
+             * random ducks, sigma h^2 0.36, 1.11 x the polygon; every longer length failed).
+             * A point on the other side, and the secant from it through the fold point leads
+             * on past the fold */
+            el__spsnap *T = &sv[1];
+            el__snap_load(w, B);
             if (move_sigma(w, sv, &steps, 2.0 * B->sigma - s1)) return EL_ENOCONV;
-            gc = total_length(w) - Lt;
+            el__snap_save(w, T);
+            gc = gb;
+            gb = family_gap(w, Lt, by_sigma);
+            C = B;
+            B = T;
+            el__snap_load(w, C);
+            el__chain_eval(w, 1);
+        } else {
+            gc = family_gap(w, Lt, by_sigma);
         }
-        snap_save(w, C);
+        if (fabs(gc) > fabs(gb) && C != &sv[2]) {
+            el__snap_load(w, B);
+            if (move_sigma(w, sv, &steps, 2.0 * B->sigma - s1)) return EL_ENOCONV;
+            gc = family_gap(w, Lt, by_sigma);
+        }
+        el__snap_save(w, C);
         double N = arc_dist(w, B, C, rho), h = 2.0 * N;
         while (gc * gb > 0.0 || !(N > 0.0)) {
             if (steps-- <= 0 || !(N > 0.0) || !(h > 1e-9)) return EL_ENOCONV;
@@ -195,16 +221,22 @@ static int follow_length(el__spchain *w, int max_steps, double Lt)
             const int it0 = w->iterations;
             const int st = el__chain_newton(w, EL__SP_STEP_ITER, 1e-3 * EL__SP_NEAR, EL__SP_NEAR);
             w->lmode = 0;
-            if (st) { snap_load(w, C); h *= 0.5; continue; }
-            const double gn = total_length(w) - Lt;
+                    if (st) { el__snap_load(w, C); h *= 0.5; continue; }
+            const double gn = family_gap(w, Lt, by_sigma);
+            if (by_sigma == 2 && fabs(gn - gc) > 0.5 * fabs(gc) && fabs(gn) > 1e-3 * (1.0 + fabs(Lt)) && h > 1e-6) {
+                /* a tension at most half way to the target per step: a longer one can pass
+                 * it twice about a fold unseen (t71: down and back up within one step) */
+                el__snap_load(w, C);
+                h *= 0.5;
+                continue;
+            }
             if (gn * gc <= 0.0) {
                 /* bracketed between C and the new point D: Newton on the length from
                  * the interpolated state; if that fails, a shorter step from C */
                 el__spsnap *D = B;
-                snap_save(w, D);
+                el__snap_save(w, D);
                 predict(w, C, D, gn / (gc - gn));
-                w->lmode = EL__BORDER_LENGTH;
-                w->Lt = Lt;
+                if (by_sigma) w->sigma = Lt; else { w->lmode = EL__BORDER_LENGTH; w->Lt = Lt; }
                 if (el__chain_newton(w, EL__SP_DIRECT_ITER, w->aim, w->tol) == EL_OK) return EL_OK;
                 w->lmode = 0;
                 if (steps-- <= 0) return EL_ENOCONV;
@@ -214,28 +246,30 @@ static int follow_length(el__spchain *w, int max_steps, double Lt)
                 D->sigma = C->sigma + back * (D->sigma - C->sigma);
                 for (size_t i = 0; i < EL__NV * w->m; i++) D->st[i] = C->st[i] + back * (D->st[i] - C->st[i]);
                 N = arc_dist(w, B, C, rho);
-                snap_load(w, C);
+                el__snap_load(w, C);
                 h *= 0.25;
                 continue;
             }
             el__spsnap *tmp = B; B = C; C = tmp;
-            snap_save(w, C);
+            el__snap_save(w, C);
             gb = gc;
             gc = gn;
             N = arc_dist(w, B, C, rho);
             if (w->iterations - it0 <= 3) h *= 2.0;
         }
     }
-    w->lmode = EL__BORDER_LENGTH;
-    w->Lt = Lt;
+    if (by_sigma) w->sigma = Lt; else { w->lmode = EL__BORDER_LENGTH; w->Lt = Lt; }
     return el__chain_newton(w, EL__SP_DIRECT_ITER, w->aim, w->tol);
 }
 
-/* A tension solution longer than WANDER x its ducks' polygon winds away from them; the high
+static int follow_length(el__spchain *w, int max_steps, double Lt)
+{
+    return el__spline_follow_family(w, max_steps, Lt, 0);
+}
+
+/* A tension solution longer than EL__SP_WANDER x its ducks' polygon winds away from them; the high
  * tension (sigma h^2 on the mean chord) the continuations start from where the direct
  * Newton fails */
-#define WANDER 1.5
-#define HIGH_SIGMA 40.0
 
 /* From the tension solution at sigma0 (Newton from the chain's start there, to start_aim,
  * accepted at start_accept) along the tension to target, geometrically in sigma + 1:
@@ -257,17 +291,17 @@ static int from_sigma(el__spchain *w, int max_steps, double sigma0, double targe
 static void pull_from(el__spchain *w, int max_steps, double aim, double accept, double sigma0)
 {
     const double target = w->sigma, was = total_length(w);
-    snap_save(w, &w->snap[2]);
+    el__snap_save(w, &w->snap[2]);
     if (from_sigma(w, max_steps, sigma0, target, aim, accept, aim, accept) || !(total_length(w) < was)) {
-        snap_load(w, &w->snap[2]);
+        el__snap_load(w, &w->snap[2]);
         el__chain_eval(w, 0);
     }
 }
 
-/* A direct solution (at sigma = target) that winds away from its ducks, longer than WANDER
+/* A direct solution (at sigma = target) that winds away from its ducks, longer than EL__SP_WANDER
  * x their polygon: the batten pulled from the free one (sigma = 0) to target instead, or
  * (where the free batten slides off its ducks, or winds too) brought down from sigma h^2 =
- * HIGH_SIGMA, the shortest kept. Measured: 10 sketched ducks of a top hat (polygon 11.9)
+ * EL__SP_HIGH_SIGMA, the shortest kept. Measured: 10 sketched ducks of a top hat (polygon 11.9)
  * at sigma 0.01, 0.043, 0.1: the direct Newton's loops 210, 101, 66 long, crossing
  * themselves, the pulled batten 12.45 as the free one (QA); 120 sketches (waves, steps,
  * zigzags, arcs of 5-13 ducks) at 4 tensions, natural and clamped ends: 331 of 960 longer
@@ -278,9 +312,9 @@ static void unwind(el__spchain *w, int max_steps, double aim, double accept)
 {
     double poly = 0.0;
     for (size_t j = 0; j < w->m; j++) poly += w->pc[j].h;
-    if (w->sigma != 0.0 && total_length(w) > WANDER * poly) pull_from(w, max_steps, aim, accept, 0.0);
-    if (w->sigma < HIGH_SIGMA && total_length(w) > WANDER * poly)
-        pull_from(w, max_steps, aim, accept, HIGH_SIGMA);
+    if (w->sigma != 0.0 && total_length(w) > EL__SP_WANDER * poly) pull_from(w, max_steps, aim, accept, 0.0);
+    if (w->sigma < EL__SP_HIGH_SIGMA && total_length(w) > EL__SP_WANDER * poly)
+        pull_from(w, max_steps, aim, accept, EL__SP_HIGH_SIGMA);
 }
 
 /*
@@ -317,15 +351,17 @@ int el__spline_solve_tension(el__spchain *w, int max_steps, int final)
     if (!st) {
         if (el__chain_newton(w, EL__SP_DIRECT_ITER, aim, accept) == EL_OK) {
             unwind(w, max_steps, aim, accept);
-            return EL_OK;
+            return final ? el__spline_refair(w, max_steps, EL_OK, target) : EL_OK;
         }
         if (final && w->resid <= EL__SP_NEAR) { w->near = 1; return EL_ENOCONV; }
     }
     /* from a high tension on the mean chord (the unit here) */
-    st = from_sigma(w, max_steps, HIGH_SIGMA, target, 1e-3 * EL__SP_NEAR, EL__SP_NEAR, aim, accept);
+    st = from_sigma(w, max_steps, EL__SP_HIGH_SIGMA, target, 1e-3 * EL__SP_NEAR, EL__SP_NEAR, aim, accept);
+    if (final && st == EL_OK) return el__spline_refair(w, max_steps, st, target);
     if (st != EL_ENOCONV || w->near || !final || !(target > 0.0)) return st;
     /* else the free batten pulled to target (FREE_START) */
-    return from_sigma(w, max_steps, 0.0, target, 1e-3 * EL__SP_NEAR, EL__SP_NEAR, aim, accept);
+    st = from_sigma(w, max_steps, 0.0, target, 1e-3 * EL__SP_NEAR, EL__SP_NEAR, aim, accept);
+    return w->near ? st : el__spline_refair(w, max_steps, st, target);
 }
 
 int el__spline_tension_from(el__spchain *w, int max_steps, double sigma)
@@ -379,7 +415,7 @@ int el__spline_solve_length(el__spchain *w, int max_steps, double Lt)
          * these that converges, followed in length as the free one is (9 ducks of a blob,
          * closed: no spline at the lengths its tensions 0.3, 1, 3 give, QA; its tension
          * sigma h^2 = 40 has none either) */
-        const double sigmas[3] = {HIGH_SIGMA, 4.0, 0.4};   /* sigma h^2 on the mean chord */
+        const double sigmas[3] = {EL__SP_HIGH_SIGMA, 4.0, 0.4};   /* sigma h^2 on the mean chord */
         for (int i = 0; i < 3 && st == EL_ENOCONV; i++) {
             w->near = 0;
             w->lmode = 0;
@@ -406,10 +442,10 @@ int el__spline_length_from(el__spchain *w, int max_steps, double Lt)
 {
     if (w->newton_first) {
         el__spsnap *free_batten = &w->snap[2];
-        snap_save(w, free_batten);
+        el__snap_save(w, free_batten);
         if (length_newton(w, Lt) == EL_OK) return EL_OK;
         w->lmode = 0;
-        snap_load(w, free_batten);
+        el__snap_load(w, free_batten);
         el__chain_eval(w, 1);   /* the pieces' states, which follow_length's snapshots keep */
     }
     const int st = follow_length(w, max_steps, Lt);
@@ -680,7 +716,7 @@ int el__spline_solve_near_line(el__spchain *w, int max_steps, double dir, double
         if (sm == EL_ENOMEM) st = sm;
         if (sm || !(chain_energy(w) < low)) continue;
         low = chain_energy(w);
-        snap_save(w, &kept);
+        el__snap_save(w, &kept);
         st = EL_OK;
     }
     set_ducks(w, 1.0, par);   /* the ducks' own chords */
@@ -692,7 +728,7 @@ int el__spline_solve_near_line(el__spchain *w, int max_steps, double dir, double
         if (sl == EL_ENOMEM || (sl == EL_OK && !(chain_energy(w) >= low)) || st) {
             st = sl;
         } else {
-            snap_load(w, &kept);
+            el__snap_load(w, &kept);
             w->lmode = EL__BORDER_LENGTH;
             w->Lt = Lt;
             w->near = 0;

@@ -10,7 +10,7 @@ from .prep import (KEYLINE_STEPS, RESAMPLE_MAX_VERTICES, Frame, Frame2D, find_in
                    keyline_step, pca_normalize, plane_fit, prepare_keyline, resample_equilateral)
 from .blend import BlendCurve, EllipticBlend, MQBlend, blend_curve, eck_d, eck_omega
 from .hermite import HERMITE_SIGMA_D2_MAX, HermiteChain, HermiteSolutions, hermite, hermite_analyse
-from .spline import ElasticSpline, elastic_spline
+from .spline import ElasticSpline, LoopWarning, elastic_spline
 from .bspline import (BSpline, cubic_through, interpolate_c2, keyline_bspline,
                       smooth_chain_to_bspline, smooth_to_bspline)
 from .affine import (AffinePolyline, OsculatingConics, affine_coords, affine_curvature,

@@ -10,6 +10,7 @@ from __future__ import annotations
 import argparse
 import os
 import sys
+import warnings
 from typing import Optional, Sequence
 
 import numpy as np
@@ -271,13 +272,20 @@ def cmd_spline(args) -> int:
             raise InputError(f"--{name}-tangent: a closed curve has no ends")
         ends[name] = None if t is None else (
             t if k is None else {"tangent": t, "curvature": _finite(k, f"--{name}-curvature")})
-    sp = el.elastic_spline(pts, **kw, start=ends["start"], end=ends["end"], closed=args.closed)
+    with warnings.catch_warnings():   # said below, in the CLI's words
+        warnings.simplefilter("ignore", el.LoopWarning)
+        sp = el.elastic_spline(pts, **kw, start=ends["start"], end=ends["end"], closed=args.closed)
+    if sp.loops:
+        print(f"warning: the spline loops away from its ducks (crosses itself where their "
+              f"polygon does not, or is longer than 4 x it: length {sp.length:.6g}); no fair "
+              f"batten was found at tension {sp.tension:.6g}: give a larger --tension or a "
+              f"--length", file=sys.stderr)
     need_b = args.dxf or args.bspline_tol is not None
     b = sp.to_bspline(args.bspline_tol or 1e-6, args.degree) \
         if need_b else None
     rec = {"file": args.file, "points": sp.data.tolist(), "closed": sp.closed, **kw,
            "tension": sp.tension, "length": sp.length, "energy": sp.energy,
-           "max_curvature": sp.max_curvature, "residual": sp.residual,
+           "max_curvature": sp.max_curvature, "residual": sp.residual, "loops": sp.loops,
            "pieces": [curve_to_dict(c) for c in sp.pieces], "guides": sp.guides.tolist(),
            "guide_forces": sp.guide_forces.tolist(), "guide_pieces": sp.guide_pieces,
            "forces": sp.forces.tolist(), "angles": sp.angles.tolist(),
@@ -521,7 +529,9 @@ def build_parser() -> argparse.ArgumentParser:
     sp.add_argument("file", metavar="FILE", help="the points (2 columns)")
     g = sp.add_mutually_exclusive_group()
     g.add_argument("--tension", type=float, default=0.0, metavar="SIGMA",
-                   help="tension sigma >= 0, 1/length^2 (default 0: the free-sliding batten)")
+                   help="tension sigma >= 0 in 1/units^2 of the points (in mm: 1e-6 x the same "
+                        "tension in m); solved up to sigma x (longest span)^2 ~ 100 "
+                        "(default 0: the free-sliding batten)")
     g.add_argument("--length", type=POSITIVE, metavar="L", help="total length (sigma computed)")
     sp.add_argument("--closed", action="store_true", help="a closed curve through the points")
     for name in ("start", "end"):

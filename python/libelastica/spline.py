@@ -6,6 +6,7 @@ whole chain (el_spline_to_bspline).
 """
 from __future__ import annotations
 
+import warnings
 from typing import List, Optional
 
 import numpy as np
@@ -14,7 +15,15 @@ from ._ffi import DomainError, NotConvergedError, as_int, as_points, as_real, ch
 from .bspline import smooth_chain_to_bspline
 from .core import SMOOTH_PARAMS, SmoothElastica, chain_eval, chain_starts
 
-__all__ = ["ElasticSpline", "elastic_spline"]
+__all__ = ["ElasticSpline", "LoopWarning", "elastic_spline"]
+
+
+class LoopWarning(RuntimeWarning):
+    """:func:`elastic_spline`'s warning that the spline returned loops away from its
+    ducks (``ElasticSpline.loops``: it crosses itself where the ducks' polygon does
+    not, or, by tension, is longer than 4 x that polygon): no fair batten was found at
+    that tension (the family from the taut batten folds before it); a larger tension,
+    or a length, gives one."""
 
 
 class ElasticSpline:
@@ -25,7 +34,9 @@ class ElasticSpline:
     - 2 kappa' N in units of EI/2, the batten after a section pulling on the
     batten before it; the duck at an inner knot i holds forces[i-1] - forces[i]),
     ``angles`` and ``curvatures`` at the points, ``max_curvature``, ``residual``
-    (largest end-condition error reached) and ``closed``.
+    (largest end-condition error reached), ``closed`` and ``loops`` (True: it crosses
+    itself where its ducks' polygon does not, or by tension is longer than 4 x it:
+    :class:`LoopWarning`).
 
     The pieces run from knot to knot: the points and, next to each G2 end, its
     guide duck (the ducks that make a G2 end possible at the common tension,
@@ -49,6 +60,7 @@ class ElasticSpline:
         self.max_curvature = float(res.max_curvature)
         self.residual = float(res.residual)
         self.iterations = int(res.iterations)
+        self.loops = bool(res.loops)
         g = int(res.nguides)
         self.guides = np.array(list(res.guides)[:2 * g], dtype=np.float64).reshape(g, 2)
         self.guide_forces = np.array(list(res.guide_forces)[:2 * g], dtype=np.float64).reshape(g, 2)
@@ -101,10 +113,14 @@ class ElasticSpline:
 
     def to_bspline(self, tol: float = 1e-6, degree: int = 3):
         """ONE clamped B-spline (degree 3..7) for the whole spline within ``tol``
-        (coordinate units) of it, parametrised by arc length from point 0: each
+        (coordinate units) of it: every point of the B-spline within ``tol`` of the
+        spline (``max_deviation``, the certified distance, is geometric: from b(t) to
+        the nearest point of the spline). Its parameter runs over [0, length] and is the
+        arc length at the points (the knots); between them it is not: b(s) and the
+        spline at arc length s can lie farther apart than ``tol``. Each
         piece with exact end point, unit tangent and curvature
         (el_spline_to_bspline = el_smooth_chain_to_bspline), joined C2 (so G2) at the
-        points. ``max_deviation`` is the certified distance."""
+        points."""
         return smooth_chain_to_bspline(self.pieces, tol, degree)
 
 
@@ -149,12 +165,14 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
     ``start`` / ``end`` (open curves): None = natural (curvature 0), a tangent
     (tx, ty) = clamped, or {"tangent": (tx, ty), "curvature": k} = G2 to other
     geometry: a G2 end asks one condition more than a batten of given tension
-    can meet, so its end span holds a guide duck, at half its chord (a third and
-    two thirds when both ends of two points are G2), free to move along the
+    can meet, so its end span holds a guide duck, a quarter of its chord from the end
+    (at 1/4 and 3/4 when both ends of two points are G2), free to move along the
     chord's normal (``guides``, ``guide_forces``); the tension stays common.
-    Of the equilibria the batten that follows its ducks is returned: under tension one
-    pulled from the free batten where the direct solve winds into loops (longer than
-    1.5 x the ducks' polygon); pushed longer through ducks near a line, their line's
+    Of the equilibria the batten that follows its ducks is returned: under tension,
+    where the direct solve crosses itself or winds into loops (longer than 1.5 x the
+    ducks' polygon), the family of tension solutions followed from the taut batten,
+    the least integral kappa^2 + sigma ds among those that follow their ducks; where
+    none does, the spline found with ``loops`` True and a :class:`LoopWarning`; pushed longer through ducks near a line, their line's
     buckled batten moved onto them (elastica.h, el_spline_solve).
 
     ``initial`` (open curves): the spline to start from instead of the library's own
@@ -162,12 +180,16 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
     tangent), e.g. the ``el.hermite`` solution a G2 blend between two edges should
     follow: the solve keeps that branch (Newton from it, no other start tried).
 
-    Raises ``ValueError`` for bad input (coincident consecutive points, NaN, ...),
+    Raises ``ValueError`` for bad input (coincident consecutive points, NaN, ``start`` /
+    ``end`` given with ``closed=True``: a closed curve has no ends, ...),
     :class:`DomainError` when no such spline exists (a length not longer than
     the polygon; tension 0 when the free batten would slide off its ducks) and
     :class:`NotConvergedError` when the solver stops short of ``tol`` (its
-    ``spline`` attribute holds the spline reached, if any: very high tension
-    sigma h^2 > ~100 or an arc of a circle resolve only to ~1e-9..1e-7).
+    ``spline`` attribute holds the spline reached, if any: an arc of a circle, or a
+    tension x (longest span)^2 of ~150..300, resolve only to ~1e-10..1e-7, a larger
+    ``tol`` accepts them; beyond ~300 no spline is reached, ``spline`` is None, and
+    the message names that dimensionless tension). ``tension`` is in 1/units^2 of the
+    points: the same batten in mm takes 1e-6 x its tension in m.
     """
     pts = as_points(points, "points")
     if not np.all(np.isfinite(pts)):
@@ -204,6 +226,8 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
                                            f"the polygon through the points ({polygon:.12g})")
         opt.mode, opt.length = lib.EL_SPLINE_LENGTH, L
     opt.closed = 1 if closed else 0
+    if closed and (start is not None or end is not None):
+        raise ValueError("elastic_spline: start/end: a closed curve has no ends")
     if not closed:
         _end(start, "start", opt.start)
         _end(end, "end", opt.end)
@@ -229,15 +253,32 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
     st = lib.el_spline_solve(dptr(pts), n, opt, res)
     try:
         if st == lib.EL_OK:
-            return ElasticSpline(res, pts, closed)
+            sp = ElasticSpline(res, pts, closed)
+            if sp.loops:
+                warnings.warn("elastic_spline: the spline loops away from its ducks (it crosses "
+                              "itself where their polygon does not, or is longer than 4 x it, "
+                              f"{sp.length:.4g}): no fair batten was found at tension "
+                              f"{sp.tension:.4g}; a larger tension, or a length, gives one",
+                              LoopWarning, stacklevel=2)
+            return sp
         if st == lib.EL_EDOM:   # the cases above are checked: the free batten
             raise DomainError(st, "elastic_spline: no free-sliding batten (tension 0) passes "
                                   "these points: it slides off its ducks; give a tension > 0 "
                                   "or a length")
         if st == lib.EL_ENOCONV:
+            why = ""
+            if length is None and sigma > 0.0:
+                # the solver's reach is in the dimensionless tension (elastica.h: Accuracy)
+                sh2 = sigma * float(chords.max()) ** 2
+                if sh2 > 50.0:
+                    why = (f"; tension x (longest span)^2 = {sh2:.3g}, where the solver resolves "
+                           "up to ~100 (residual ~1e-10 at ~150, ~1e-9 at ~300, none beyond); "
+                           "tension is in 1/units^2 of the points (in mm, 1e-6 x the same "
+                           "tension in m)")
             err = NotConvergedError(st, "elastic_spline: did not converge: " + (
                 f"residual {res.residual:.3g} > tol {tol:g} (the spline reached is kept in "
-                "the exception)" if res.npieces else "no spline through the points was reached"))
+                "the exception)" if res.npieces else "no spline through the points was reached")
+                + why)
             err.spline = ElasticSpline(res, pts, closed) if res.npieces else None
             raise err
         check(st, "elastic_spline")   # raises: st is an error

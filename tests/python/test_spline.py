@@ -7,6 +7,7 @@ import json
 import os
 import subprocess
 import sys
+import warnings
 import xml.etree.ElementTree as ET
 
 import numpy as np
@@ -388,3 +389,67 @@ def test_cli_length_mode_on_the_example_ducks(tmp_path):
         assert sum(curve_from_dict(p).length for p in d["pieces"]) == pytest.approx(length, rel=1e-9)
         assert abs(ends[0][1][0]) <= 1e-9 and abs(ends[-1][1][1]) <= 1e-9   # natural ends
         ET.parse(svg)
+
+
+SPIKE = np.array([[0, 0], [1, 0], [1.05, 1], [1.1, 0], [2, 0]], float)
+
+
+def crossings(xy):
+    """Proper self-crossings of a polyline (all pairs of non-adjacent segments)."""
+    a, b, n = xy[:-1], xy[1:], 0
+    for i in range(len(a) - 2):
+        p, r, q, s = a[i], b[i] - a[i], a[i + 2:], b[i + 2:] - a[i + 2:]
+        den = r[0] * s[:, 1] - r[1] * s[:, 0]
+        with np.errstate(all="ignore"):
+            t = ((q[:, 0] - p[0]) * s[:, 1] - (q[:, 1] - p[1]) * s[:, 0]) / den
+            u = ((q[:, 0] - p[0]) * r[1] - (q[:, 1] - p[1]) * r[0]) / den
+        n += int(np.sum((t > 0) & (t < 1) & (u > 0) & (u < 1)))
+    return n
+
+
+def test_tension_mode_is_the_batten_not_a_figure_eight():
+    """QA: the spike ducks at tension 1.25 came back a figure eight (1.51 x the polygon, 2
+    self-crossings) where the batten of 1.25 x the polygon (tension 1.284) follows them.
+    Now the batten: no crossing, no LoopWarning, integral kappa^2 + sigma ds no higher
+    than the length mode's batten at the same tension."""
+    poly = np.sum(np.hypot(*np.diff(SPIKE, axis=0).T))
+    ref = el.elastic_spline(SPIKE, length=1.25 * poly)
+    for sigma in (1.25, ref.tension):
+        with warnings.catch_warnings():
+            warnings.simplefilter("error", el.LoopWarning)
+            sp = el.elastic_spline(SPIKE, tension=sigma)
+        assert not sp.loops and crossings(sp.points(3000)) == 0
+        assert sp.length < 1.3 * poly
+        assert sp.residual <= 1e-10
+    assert sp.energy + sp.tension * sp.length <= (ref.energy + ref.tension * ref.length) * (1 + 1e-9)
+
+
+def test_looping_spline_warns(tmp_path):
+    """Below the least tension the spike's family of battens reaches (~0.63) none follows
+    the ducks: the spline returned crosses itself and says so (LoopWarning, loops; the CLI
+    on stderr). Before: 14.8 x the polygon, 6 crossings, silent."""
+    with pytest.warns(el.LoopWarning, match="loops away from its ducks"):
+        sp = el.elastic_spline(SPIKE, tension=0.125)
+    assert sp.loops and crossings(sp.points(3000)) > 0
+    f = tmp_path / "spike.csv"
+    np.savetxt(f, SPIKE, delimiter=",")
+    r = run("spline", f, "--tension", "0.125")
+    assert r.returncode == 0 and "warning: the spline loops away from its ducks" in r.stderr, r.stderr
+
+
+def test_closed_spline_refuses_ends():
+    """closed=True with start/end: refused as the CLI refuses them (were silently ignored)."""
+    ring = [(1, 0), (0, 1), (-1, 0), (0, -1)]
+    for kw in (dict(start=(0, 1)), dict(end={"tangent": (0, 1), "curvature": 1.0})):
+        with pytest.raises(ValueError, match="a closed curve has no ends"):
+            el.elastic_spline(ring, tension=1.0, closed=True, **kw)
+
+
+def test_high_tension_names_the_dimensionless_tension():
+    """The README's --tension 0.5 on the example ducks in mm: no spline (tension x span^2 ~
+    3e6); the error names that product, the solver's range and the unit."""
+    pts = el.io.read_points(os.path.join(os.path.dirname(__file__), "..", "..", "examples",
+                                         "ducks.csv"), 2) * 1000.0
+    with pytest.raises(el.NotConvergedError, match=r"tension x \(longest span\)\^2 = 2.9\de\+06") as e:
+        el.elastic_spline(pts, tension=0.5)
+    assert "1/units^2" in str(e.value) and e.value.spline is None

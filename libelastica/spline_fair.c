@@ -1,0 +1,249 @@
+/*
+ * Does a spline follow its ducks (spline.c, spline_path.c)? A batten through ducks
+ * whose polygon does not cross itself does not cross itself either; an equilibrium
+ * that does (a figure eight, a loop between two ducks) is another critical point of
+ * integral kappa^2 + sigma ds, not the batten. The curve is sampled (each piece at
+ * 16 points per chord of its length, at least 16) and the polyline's proper
+ * crossings between non-adjacent segments are looked for by a sweep in x (segments
+ * sorted by their least x; a pair is tested only while the boxes overlap in x), so
+ * a fair curve costs O(N log N). Most curves need no samples (tame): a piece of length L
+ * between knots a, b lies in the ellipse |p - a| + |p - b| <= L, so pieces whose
+ * ellipses' boxes do not meet do not cross; and along two joined pieces the tangent
+ * stays within kb L of its angle at the joint (kb = 2 |k| sqrt(mu) >= |kappa|, the
+ * amplitude of kappa = 2 k sqrt(mu) cn), so where 2 kb L < pi on both the pair turns
+ * less than pi: monotone along the bisecting direction, it crosses neither itself nor
+ * its neighbour.
+ */
+#include "internal.h"
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct { double x0, x1; size_t i; } seg_box;
+
+static int by_x0(const void *a, const void *b)
+{
+    const double u = ((const seg_box *)a)->x0, v = ((const seg_box *)b)->x0;
+    return (u > v) - (u < v);
+}
+
+/* sign of the cross product (b - a) x (c - a) */
+static double orient(const double *a, const double *b, const double *c)
+{
+    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+}
+
+/* The polyline xy (np points; closed: the last joins the first) crosses itself
+ * properly (segments that are not neighbours, each strictly through the other):
+ * 1, 0, or EL_ENOMEM as -1. */
+static int polyline_crosses(const double *xy, size_t np, int closed)
+{
+    const size_t ns = closed ? np : np - 1;
+    if (ns < 3) return 0;
+    seg_box *b = malloc(ns * sizeof *b);
+    if (!b) return -1;
+    for (size_t i = 0; i < ns; i++) {
+        const double xa = xy[2 * i], xb = xy[2 * ((i + 1) % np)];
+        b[i].x0 = fmin(xa, xb);
+        b[i].x1 = fmax(xa, xb);
+        b[i].i = i;
+    }
+    qsort(b, ns, sizeof *b, by_x0);
+    int found = 0;
+    for (size_t a = 0; a < ns && !found; a++) {
+        const size_t i = b[a].i;
+        const double *p = xy + 2 * i, *q = xy + 2 * ((i + 1) % np);
+        for (size_t c = a + 1; c < ns && b[c].x0 <= b[a].x1 && !found; c++) {
+            const size_t j = b[c].i, d = i > j ? i - j : j - i;
+            if (d <= 1 || (closed && d == ns - 1)) continue;   /* neighbours share a point */
+            const double *r = xy + 2 * j, *s = xy + 2 * ((j + 1) % np);
+            if (fmax(p[1], q[1]) < fmin(r[1], s[1]) || fmax(r[1], s[1]) < fmin(p[1], q[1])) continue;
+            found = orient(p, q, r) * orient(p, q, s) < 0.0 && orient(r, s, p) * orient(r, s, q) < 0.0;
+        }
+    }
+    free(b);
+    return found;
+}
+
+/* No crossing possible (see above): every piece turns by less than pi / 2 from either
+ * end, and the boxes of the ellipses of pieces that are not neighbours do not meet
+ * (knots: m + 1 points, the last the end of the last piece) */
+static int tame(const el_smooth_params *p, size_t m, const double *knots, int closed)
+{
+    for (size_t j = 0; j < m; j++)
+        if (!(2.0 * fabs(p[j].k) * sqrt(p[j].mu) * p[j].length < 0.5 * M_PI)) return 0;
+    seg_box *b = malloc(m * sizeof *b);
+    double *y = malloc(2 * m * sizeof *y);
+    if (!b || !y) { free(b); free(y); return 0; }
+    for (size_t j = 0; j < m; j++) {
+        const double *a = knots + 2 * j, *e = knots + 2 * (j + 1);
+        const double h = hypot(e[0] - a[0], e[1] - a[1]), L = fmax(p[j].length, h);
+        const double A = 0.5 * L, B = 0.5 * sqrt(L * L - h * h);   /* semi-axes */
+        const double c = h > 0.0 ? (e[0] - a[0]) / h : 1.0, sn = h > 0.0 ? (e[1] - a[1]) / h : 0.0;
+        const double wx = hypot(A * c, B * sn), wy = hypot(A * sn, B * c);
+        const double mx = 0.5 * (a[0] + e[0]), my = 0.5 * (a[1] + e[1]);
+        b[j].x0 = mx - wx; b[j].x1 = mx + wx; b[j].i = j;
+        y[2 * j] = my - wy; y[2 * j + 1] = my + wy;
+    }
+    qsort(b, m, sizeof *b, by_x0);
+    int ok = 1;
+    for (size_t u = 0; u < m && ok; u++)
+        for (size_t v = u + 1; v < m && b[v].x0 <= b[u].x1 && ok; v++) {
+            const size_t i = b[u].i, j = b[v].i, d = i > j ? i - j : j - i;
+            if (d <= 1 || (closed && d == m - 1)) continue;
+            ok = y[2 * i + 1] < y[2 * j] || y[2 * j + 1] < y[2 * i];
+        }
+    free(b);
+    free(y);
+    return ok;
+}
+
+int el__spline_crosses(const el_smooth_params *p, size_t m, int closed)
+{
+    if (m < 2) return 0;
+    /* the ducks' polygon (the knots): where it crosses itself the curve may */
+    double *knots = malloc(2 * (m + 1) * sizeof *knots);
+    if (!knots) return -1;
+    for (size_t j = 0; j < m; j++) { knots[2 * j] = p[j].x0; knots[2 * j + 1] = p[j].y0; }
+    double s1 = p[m - 1].length, end[2];
+    if (el_smooth_eval(&p[m - 1], 1, &s1, end, NULL, NULL)) { free(knots); return 0; }
+    knots[2 * m] = end[0];
+    knots[2 * m + 1] = end[1];
+    const int poly = polyline_crosses(knots, closed ? m : m + 1, closed);
+    if (poly != 0) { free(knots); return poly < 0 ? -1 : 0; }
+    if (tame(p, m, knots, closed)) { free(knots); return 0; }
+    /* samples per piece */
+    size_t total = 0;
+    size_t *cnt = malloc(m * sizeof *cnt);
+    if (!cnt) { free(knots); return -1; }
+    for (size_t j = 0; j < m; j++) {
+        const size_t e = (j + 1) % (closed ? m : m + 1);
+        const double h = hypot(knots[2 * e] - p[j].x0, knots[2 * e + 1] - p[j].y0);
+        const double r = h > 0.0 ? p[j].length / h : 1.0;
+        cnt[j] = r < 64.0 ? 16 * (size_t)ceil(r) : 1024;
+        total += cnt[j];
+    }
+    double *xy = malloc(2 * (total + 1) * sizeof *xy), *s = malloc((1024 + 1) * sizeof *s);
+    int found = -1;
+    if (xy && s) {
+        size_t k = 0;
+        for (size_t j = 0; j < m; j++) {
+            for (size_t i = 0; i < cnt[j]; i++) s[i] = p[j].length * (double)i / (double)cnt[j];
+            if (el_smooth_eval(&p[j], cnt[j], s, xy + 2 * k, NULL, NULL)) { found = 0; break; }
+            k += cnt[j];
+        }
+        if (k == total) {
+            if (!closed) { xy[2 * k] = end[0]; xy[2 * k + 1] = end[1]; k++; }
+            found = polyline_crosses(xy, k, closed);
+        }
+    }
+    free(xy); free(s); free(cnt); free(knots);
+    return found;
+}
+
+int el__chain_crosses(const el__spchain *w)
+{
+    const size_t m = w->m;
+    el_smooth_params *p = malloc(m * sizeof *p);
+    if (!p) return -1;
+    double x = 0.0, y = 0.0;
+    for (size_t j = 0; j < m; j++) {
+        const el__spiece *pc = &w->pc[j];
+        p[j].x0 = x; p[j].y0 = y;
+        p[j].phi = pc->v[EL__SP_PHI]; p[j].mu = exp(pc->v[EL__SP_NU]);
+        p[j].k = pc->v[EL__SP_K]; p[j].q = pc->v[EL__SP_Q]; p[j].length = pc->v[EL__SP_L];
+        x += pc->dx;
+        y += pc->dy;
+    }
+    const int c = el__spline_crosses(p, m, w->closed);
+    free(p);
+    return c;
+}
+
+/* ------------------------------------------------------------------ tension mode */
+
+static double total_length(const el__spchain *w)
+{
+    double L = 0.0;
+    for (size_t j = 0; j < w->m; j++) L += w->pc[j].v[EL__SP_L];
+    return L;
+}
+
+static double chain_energy(const el__spchain *w)
+{
+    double e = 0.0;
+    for (size_t j = 0; j < w->m; j++) e += w->pc[j].energy;
+    return e;
+}
+
+/* Longer than EL__SP_WANDER x its polygon, or crossing itself where the polygon does not
+ * (spline_fair.c): not the batten through its ducks */
+static int wanders(const el__spchain *w)
+{
+    double poly = 0.0;
+    for (size_t j = 0; j < w->m; j++) poly += w->pc[j].h;
+    return total_length(w) > EL__SP_WANDER * poly || el__chain_crosses(w) == 1;
+}
+
+/* integral kappa^2 + sigma ds: the pieces' equations (2 kappa'' + kappa^3 - sigma kappa = 0)
+ * and the joints' (kappa continuous: its first variation in a knot angle, spline.c) make a
+ * tension solution a critical point of it among the curves through the ducks; of two at
+ * one sigma the batten is the lesser */
+static double lagrangian(const el__spchain *w)
+{
+    return chain_energy(w) + w->sigma * total_length(w);
+}
+
+/*
+ * The tension solution in w (st: its status) where it wanders or failed: the family of
+ * tension solutions from the taut batten (sigma h^2 = EL__SP_HIGH_SIGMA on the mean chord, near
+ * the polygon) followed by pseudo-arclength down to target (el__spline_follow_family), through the
+ * folds in sigma where continuation in sigma itself stops or jumps branch (spline_path.c's from_sigma);
+ * kept where the other failed, or does not wander, or has the lower lagrangian. Measured
+ * (QA): spike ducks (0,0),(1,0),(1.05,1),(1.1,0),(2,0) at sigma 1.25 gave a figure eight
+ * 1.51 x the polygon (integral kappa^2 + sigma L = 42.45), now the fair batten (31.8, as
+ * the length mode's at 1.25 x the polygon); t71 of 200 random ducks at the tension of its
+ * length-mode batten gave 5.9 x the polygon, crossing itself, now that batten.
+ */
+int el__spline_refair(el__spchain *w, int max_steps, int st, double target)
+{
+    if (st == EL_ENOMEM || !(target < EL__SP_HIGH_SIGMA) || (st == EL_OK && !wanders(w))) return st;
+    const size_t n = w->n, m = w->m;
+    double *buf = malloc(sizeof(double) * (n + 2 * EL__NV * m));
+    if (!buf) return EL_ENOMEM;
+    el__spsnap best = {buf, buf + n, buf + n + EL__NV * m, 0.0};
+    double low = HUGE_VAL;   /* the best's lagrangian, */
+    int bad = 2;             /* and whether it wanders (2: none yet) */
+    if (st == EL_OK) { el__snap_save(w, &best); low = lagrangian(w); bad = 1; }
+    /* the family followed with the tension's step capped (2), then not (1): each can
+     * step over the other's branch point (t71, t14 need the first, the spike the second);
+     * each from the first of these tensions whose Newton from the start converges to a
+     * batten that does not wander (EL__SP_HIGH_SIGMA itself can fail: t71) */
+    const double from[4] = {EL__SP_HIGH_SIGMA, 10.0, 4.0, 1.0};   /* sigma h^2 on the mean chord */
+    for (int mode = 2; mode >= 1 && bad; mode--) {
+        int sf = EL_ENOCONV;
+        for (int i = 0; i < 4 && from[i] > target && sf == EL_ENOCONV; i++) {
+            w->near = 0;
+            w->lmode = 0;
+            w->sigma = from[i];
+            el__chain_start_angles(w);
+            sf = el__chain_start_pieces(w);
+            if (sf == EL_ENOMEM) break;
+            if (sf || el__chain_newton(w, EL__SP_DIRECT_ITER, 1e-3 * EL__SP_NEAR, EL__SP_NEAR) || wanders(w))
+                sf = EL_ENOCONV;
+            else
+                sf = el__spline_follow_family(w, max_steps, target, mode);
+        }
+        w->lmode = 0;
+        if (sf == EL_ENOMEM) { free(buf); return sf; }
+        if (sf) continue;
+        const int wd = wanders(w);
+        const double lag = lagrangian(w);
+        if (wd < bad || (wd == bad && lag < low)) { el__snap_save(w, &best); bad = wd; low = lag; }
+    }
+    w->near = 0;
+    w->sigma = target;
+    if (bad < 2) { el__snap_load(w, &best); el__chain_eval(w, 0); st = EL_OK; }
+    free(buf);
+    return st;
+}
+
