@@ -81,8 +81,9 @@ static int polyline_crossings(const double *xy, size_t np)
     return c;
 }
 
-/* Self-crossings of the open spline, each piece sampled at 200 points (brute force, an
- * independent count of what spline_fair.c looks for). */
+/* Self-crossings of the spline, each piece sampled at 200 points (brute force, an
+ * independent count of what spline_fair.c looks for; closed: the last sample meets the
+ * first, a shared point, no proper crossing). */
 static int spline_crossings(const el_spline_result *r)
 {
     const size_t per = 200, np = r->npieces * per + 1;
@@ -202,6 +203,28 @@ START_TEST(length_mode_passes_a_fold_in_sigma)
 }
 END_TEST
 
+/* A closed ring of 8 ducks on the unit circle by length: from 1.115 x the polygon every
+ * piece passes the separatrix (k^2 = 1) at once, where Newton stalls; QA: EL_ENOCONV from
+ * 1.15 x. Now solved (the continuation leaps the stall once, after a plain failure). */
+START_TEST(closed_ring_pushed_past_the_separatrix)
+{
+    double xy[16];
+    for (int i = 0; i < 8; i++) { xy[2 * i] = cos(M_PI * i / 4.0); xy[2 * i + 1] = sin(M_PI * i / 4.0); }
+    const double poly = 16.0 * sin(M_PI / 8.0);
+    const double f[] = {1.15, 1.2, 1.3};
+    for (size_t i = 0; i < sizeof f / sizeof f[0]; i++) {
+        el_spline_options o = opts(EL_SPLINE_LENGTH, f[i] * poly);
+        o.closed = 1;
+        el_spline_result r;
+        ck_assert_msg(solve(xy, 8, &o, &r) == EL_OK, "%g x the polygon", f[i]);
+        check_spline(xy, 8, &o, &r, 1e-9);
+        ck_assert_int_eq(spline_crossings(&r), 0);
+        ck_assert_int_eq(r.loops, 0);
+        el_spline_result_free(&r);
+    }
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("spline_fair");
@@ -210,6 +233,7 @@ int main(void)
     tcase_add_test(tc, tension_mode_returns_the_batten_not_a_figure_eight);
     tcase_add_test(tc, looping_splines_are_flagged);
     tcase_add_test(tc, length_mode_passes_a_fold_in_sigma);
+    tcase_add_test(tc, closed_ring_pushed_past_the_separatrix);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }
