@@ -127,6 +127,20 @@ class SplineTest(unittest.TestCase):
         self.doc.recompute()
         self.assertAlmostEqual(s.SplineLength, free.SplineLength, delta=1e-8)
 
+    def test_a_looping_batten_says_so(self):
+        # the QA's spike ducks (mm): at sigma 1.25e-4 / mm^2 (1.25 on the unit) the fair
+        # batten (was a figure eight, silently); below the family's least tension (~0.63e-4)
+        # none follows the ducks, and the Status says the batten loops
+        spike = [(0, 0), (100, 0), (105, 100), (110, 0), (200, 0)]
+        sk = S.points_sketch(self.doc, spike, "Spike")
+        s = self.spline([(sk, [])], Tension=1.25e-4)
+        self.assertNotIn("loops", s.Status)
+        self.assertLess(s.SplineLength, 1.3 * 390.2498439450079)
+        s.Tension = 1.25e-5
+        self.doc.recompute()
+        self.assertTrue(s.Status.startswith("ok") and "loops away from its points" in s.Status,
+                        s.Status)
+
     def test_tension_pulls_the_batten_shorter(self):
         lengths = [self.spline(Tension=t).SplineLength for t in (0.0, 1e-4, 1e-3, 1e-2)]
         self.assertEqual(lengths, sorted(lengths, reverse=True))

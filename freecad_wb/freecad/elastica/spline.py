@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import json
 import math
+import warnings
 
 import FreeCAD as App
 
@@ -77,7 +78,9 @@ def _solve(xy, mode, value, closed, start, end):
     e = el()
     kw = {"tension": value} if mode == "tension" else {"length": value}
     try:
-        return e.elastic_spline(xy, start=start, end=end, closed=closed, **kw), ""
+        with warnings.catch_warnings():   # a looping spline: noted by spline_core
+            warnings.simplefilter("ignore", e.LoopWarning)
+            return e.elastic_spline(xy, start=start, end=end, closed=closed, **kw), ""
     except e.NotConvergedError as exc:
         sp = getattr(exc, "spline", None)
         if sp is not None and sp.residual <= ACCEPTED_RESIDUAL:
@@ -185,6 +188,10 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
     sp, note = _solve(xy, mode, value, closed, *specs)
     if note:
         notes.append(note)
+    if sp.loops:
+        notes.append("the batten loops away from its points (it crosses itself, or is longer "
+                     "than 4 x their polygon): no fair batten at this tension; raise the "
+                     "tension or give a length")
     for j, name in ((0, "first"), (-1, "last")):
         if isinstance(specs[j], dict):     # its force: GuideForces
             notes.append(f"G2 {'start' if j == 0 else 'end'}: a guide duck a quarter into the "
