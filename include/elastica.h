@@ -1153,9 +1153,10 @@ void el_spline_options_defaults(el_spline_options *opt);
  * solutions is followed by pseudo-arclength from the taut batten (sigma h^2 = 40, 10, 4 or
  * 1 on the mean chord, the first that converges fair) down to sigma, through its folds,
  * and of those found the one that follows its ducks is kept, then the least
- * integral kappa^2 + sigma ds (the functional the equations make stationary); where
- * none follows its ducks, loops is set. Before that: a solution of the direct Newton longer than 1.5 x the
- * ducks' polygon (it winds away from them: loops) is replaced by the free batten pulled
+ * integral kappa^2 + sigma ds (the functional the equations make stationary; QA's spike
+ * ducks at sigma 1.25: a figure eight, now the batten); where none follows its ducks,
+ * loops says so (spline_fair.c). Before that: a solution of the direct Newton longer
+ * than 1.5 x the ducks' polygon (it winds away from them) is replaced by the free batten pulled
  * to that tension, or the batten brought down from sigma h^2 = 40, where that converges
  * shorter; where neither the direct Newton nor the batten from sigma h^2 = 40 converges,
  * the free batten pulled to that tension (small tensions: the least-energy Hermite piece
