@@ -530,7 +530,7 @@ def build_parser() -> argparse.ArgumentParser:
     g = sp.add_mutually_exclusive_group()
     g.add_argument("--tension", type=float, default=0.0, metavar="SIGMA",
                    help="tension sigma >= 0 in 1/units^2 of the points (in mm: 1e-6 x the same "
-                        "tension in m); solved up to sigma x (longest span)^2 ~ 100 "
+                        "tension in m); solved up to sigma x (longest span)^2 ~ 300 "
                         "(default 0: the free-sliding batten)")
     g.add_argument("--length", type=POSITIVE, metavar="L", help="total length (sigma computed)")
     sp.add_argument("--closed", action="store_true", help="a closed curve through the points")

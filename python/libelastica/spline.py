@@ -271,10 +271,10 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
                 # the solver's reach is in the dimensionless tension (elastica.h: Accuracy)
                 sh2 = sigma * float(chords.max()) ** 2
                 if sh2 > 50.0:
-                    why = (f"; tension x (longest span)^2 = {sh2:.3g}, where the solver resolves "
-                           "up to ~100 (residual ~1e-10 at ~150, ~1e-9 at ~300, none beyond); "
-                           "tension is in 1/units^2 of the points (in mm, 1e-6 x the same "
-                           "tension in m)")
+                    why = (f"; tension x (longest span)^2 = {sh2:.3g}: the solver resolves it "
+                           "to ~1e-10 up to ~200, ~1e-9 at ~300 (a larger tol accepts that), "
+                           "nothing beyond; tension is in 1/units^2 of the points (in mm, "
+                           "1e-6 x the same tension in m)")
             err = NotConvergedError(st, "elastic_spline: did not converge: " + (
                 f"residual {res.residual:.3g} > tol {tol:g} (the spline reached is kept in "
                 "the exception)" if res.npieces else "no spline through the points was reached")
