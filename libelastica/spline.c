@@ -323,6 +323,20 @@ static int sibling_from_initial(el__spchain *w, const double *xy, const el_splin
     }
     if (w->slot[n - 1] == EL__SLOT_ANGLE) w->x[n - 1] = prev;
     else w->th_end[1] = prev + el__wrap_pi(w->th_end[1] - prev);
+    /* straight (k = 0), J is singular: the line through collinear points is a solution at
+     * every tension (kappa = 0), kept as solve_sibling's; other straight pieces start from
+     * the linearised batten, as in el__spline_bend_ends */
+    int straight = !w->lmode && isfinite(el__chain_eval(w, 0));
+    for (size_t j = 0; j < m && straight; j++)
+        straight = w->pc[j].v[EL__SP_K] == 0.0 && el__max_abs(w->pc[j].R, 4) <= w->aim;
+    for (size_t i = 0; i < n && straight; i++) straight = fabs(w->F[i]) <= w->aim;
+    if (straight) return EL_OK;
+    for (size_t j = 0; j < m; j++) {
+        if (w->pc[j].v[EL__SP_K] != 0.0) continue;
+        el__sptargets t;
+        el__chain_targets(w, j, &t);
+        if (el__spiece_start(&w->pc[j], &t)) return EL_ENOCONV;
+    }
     return el__chain_newton(w, EL__SP_DIRECT_ITER, w->aim, w->tol);
 }
 

@@ -34,6 +34,9 @@
 
 enum { PIECE_ITER = 40 };
 
+/* A straight piece's least tension (units of 1/h^2; piece_from_state). */
+static const double LINE_TENSION = 1e-4;
+
 /* ------------------------------------------------------------------ one el__spiece */
 
 /* theta - phi = 2a, the same branch as el_smooth_eval's: for |k| <= 1,
@@ -212,12 +215,28 @@ static int piece_from_state(el__spiece *pc, double theta, double kappa, double d
     /* a circle or a line: a small force along -T. Its least size keeps |k| <~ 1e4,
      * where a circle is resolved best (the arc differs from it by ~1 / k^2, and
      * the position's cancellation grows as k^2 eps; el_hermite_solve's 1e4) */
+    int line = 0;
     if (!(Fn > 1e-8 * (fabs(s) + kappa * kappa + 1e-300))) {
         Fn = 1e-8 * (fabs(s) + kappa * kappa) + 1e-12;
         Fx = -Fn * T[0];
         Fy = -Fn * T[1];
         kc2 = (Fn - s) / (2.0 * Fn);
         k2 = (Fn + s) / (2.0 * Fn);
+        line = kc2 > 0.0;   /* kappa and s ~ 0 */
+    }
+    /* a line under little or no tension (F ~ 0, k^2 = 1/2 above: it cannot turn
+     * theta pi/2 from phi, the start was pi/2 off) or a straight state (el__spiece_start
+     * on a straight span) under a tension whose mu = s/2 the Jacobian does not resolve
+     * (its columns grow as mu^-1/2 and swamp the length's; Newton stalls below
+     * ~1e-6 / h^2): the separatrix's tail under LINE_TENSION / h^2, the same line;
+     * Newton relaxes the tension (G2 ends bent from a straight free batten) */
+    const double s_line = LINE_TENSION / (pc->h > 0.0 ? pc->h * pc->h : 1.0);
+    if (line || (kappa == 0.0 && dkappa == 0.0 && s > 0.0 && s < s_line)) {
+        Fn = s_line;
+        Fx = -Fn * T[0];
+        Fy = -Fn * T[1];
+        kc2 = 0.0;
+        k2 = 1.0;
     }
     if (!(k2 > 0.0) || !isfinite(k2)) return EL_EDOM;   /* k = 0: a straight piece, no q */
     const double mu = 0.5 * Fn, phi0 = atan2(Fy, Fx);

@@ -183,6 +183,50 @@ START_TEST(collinear_ducks_with_g2_ends)
 }
 END_TEST
 
+/* The free batten (tension 0) bent from a straight sibling: a line then an arc tangent
+ * to it at the same height (the G2 blend whose G1 blend is straight), two arcs there,
+ * collinear ducks; from the line as initial too. A line at no tension has no force
+ * (mu = 0, spline_piece.c): its start was pi/2 off and the solve EL_ENOCONV. The
+ * batten is the limit of the one pulled by a tension of 1e-12. */
+START_TEST(straight_free_batten_bends_to_g2_ends)
+{
+    const double p[] = {-20.0, 10.0, 20.0, 10.0}, line[] = {0.0, 0.0, 1.0, 0.5, 3.0, 1.5, 4.0, 2.0};
+    const double k[][2] = {{0.0, 0.02}, {0.02, 0.02}, {0.0, -0.02}, {0.02, 0.0}};
+    for (size_t c = 0; c < 5; c++)
+        for (int from_line = 0; from_line < 2; from_line++) {
+            const int ducks = c == 4;
+            const double *xy = ducks ? line : p;
+            const size_t n = ducks ? 4 : 2;
+            el_spline_options o = opts(EL_SPLINE_TENSION, 0.0);
+            o.start = ducks ? g2_end(2.0, 1.0, 0.0) : g2_end(1.0, 0.0, k[c][0]);
+            o.end = ducks ? g2_end(2.0, 1.0, 0.2) : g2_end(1.0, 0.0, k[c][1]);
+            el_spline_result straight, r, pulled;
+            if (from_line) {   /* the clamped spline: the line, k = 0 pieces */
+                el_spline_options t = clamped_only(o);
+                ck_assert_int_eq(solve(xy, n, &t, &straight), EL_OK);
+                ck_assert_double_eq(straight.energy, 0.0);
+                o.initial = straight.pieces;
+                o.ninitial = straight.npieces;
+            }
+            const int st = solve(xy, n, &o, &r);
+            ck_assert_msg(st == EL_OK, "case %zu from the line %d: status %d", c, from_line, st);
+            check_spline(xy, n, &o, &r, 1e-9);
+            o.initial = NULL;
+            o.ninitial = 0;
+            equals_tangent_spline_through_guides(xy, &o, &r);
+            ck_assert_double_eq(r.sigma, 0.0);
+            ck_assert_double_gt(r.energy, 0.0);
+            o.sigma = 1e-12;
+            ck_assert_int_eq(solve(xy, n, &o, &pulled), EL_OK);
+            ck_assert_close(r.length, pulled.length, 1e-9 * r.length);
+            ck_assert_close(r.energy, pulled.energy, 1e-7 * r.energy);
+            el_spline_result_free(&pulled);
+            el_spline_result_free(&r);
+            if (from_line) el_spline_result_free(&straight);
+        }
+}
+END_TEST
+
 /* Sign changes of the curvature along the spline (|kappa| above 1e-6 of its largest). */
 static int inflections(const el_spline_result *r)
 {
@@ -364,6 +408,7 @@ int main(void)
     tcase_add_test(tc, steep_g2_ends_under_tension);
     tcase_add_test(tc, two_points_are_the_g2_blend);
     tcase_add_test(tc, collinear_ducks_with_g2_ends);
+    tcase_add_test(tc, straight_free_batten_bends_to_g2_ends);
     tcase_add_test(tc, random_battens_g2_solved_where_tangent_is);
     tcase_add_test(tc, initial_sibling_keeps_its_branch);
     suite_add_tcase(s, tc);
