@@ -74,7 +74,8 @@ FIT_INLINE void density_p(const fit_ws *w, double *g, const int p)
     }
 }
 
-static void density(const fit_ws *w, double *g, double *G)
+/* Returns 1 for a line (g = 0: no scale of its own, the knots uniform). */
+static int density(const fit_ws *w, double *g, double *G)
 {
     if (w->p == 3) density_p(w, g, 3);
     else density_p(w, g, w->p);
@@ -83,6 +84,7 @@ static void density(const fit_ws *w, double *g, double *G)
     mean /= (double)(w->M + 1);
     for (size_t i = 0; i <= w->M; i++) g[i] = mean > 0.0 ? g[i] + 0.05 * mean : 1.0;   /* 0: a line */
     cumulate(w, g, NULL, G);
+    return !(mean > 0.0);
 }
 
 /* G = cumulative integral of g, times the per-grid-point factor cm[i] when cm
@@ -207,6 +209,7 @@ static int smooth_to_bspline(const el_smooth_params *par_in, double tol, int deg
         if ((st = el__approx_grid(&w, (size_t)M0))) goto done;
     }
     size_t Mg = 0;   /* grid size G belongs to */
+    int line = 0;    /* the curve is a line (density) */
     const double ex = 1.0 / (p + 1);
     /* the sampled error a fit must reach; lowered when the certified value
      * (which sees the peaks between grid points) exceeds tol */
@@ -222,11 +225,13 @@ static int smooth_to_bspline(const el_smooth_params *par_in, double tol, int deg
         for (int it = 0; it < 40; it++) {
             if (Mg != w.M) {
                 GROW(G, 2 * (w.M + 1));
-                density(&w, G + w.M + 1, G);
+                line = density(&w, G + w.M + 1, G);
                 Mg = w.M;
             }
             if (N == 0) {
-                double x = ceil(0.19 * G[w.M] / pow(accept, ex));
+                /* a line: any N is exact; its unit density (G = L) gave N ~ L / tol^ex,
+                 * more than the pole limit from L ~ 3e4 tol^ex on */
+                double x = line ? (double)w.nmin : ceil(0.19 * G[w.M] / pow(accept, ex));
                 /* the estimate is good to a factor ~1.5: twice the limit is out of reach */
                 if (!(x <= 2.0 * (double)Nmax)) { st = EL_EDOM; goto done; }
                 N = x < (double)w.nmin ? w.nmin : (x > (double)Nmax ? Nmax : (size_t)x);

@@ -571,6 +571,42 @@ START_TEST(huge_angle_is_approximated_as_the_reduced_one)
 }
 END_TEST
 
+/* Straight and near-straight elasticae at every scale, 1e-6 to 1e9: a few poles within a
+ * designer's tol (1e-3) and a relative one (near-straight: 4 to 26 at 1e-3 on 1e9). A line has no knot density of its own (g = 0);
+ * the unit density stood in, and the pole estimate grew as L / tol^(1/(p+1)): from
+ * L ~ 3e4 at tol 1e-3 it passed the pole limit (EL_EDOM). */
+START_TEST(straight_curves_at_every_scale)
+{
+    for (int e = -6; e <= 9; e++) {
+        const double L = pow(10.0, e);
+        const el_smooth_params curves[3] = {
+            {L, -2.0 * L, 0.7, 1.0 / (L * L), 0.0, 0.0, L},       /* a line */
+            {0.0, 0.0, 0.3, 1.0 / (L * L), 1e-4, 0.5, L},         /* bows ~1e-4 L */
+            {0.0, 0.0, -2.0, 1.0 / (L * L), -1e-7, -1.0, L},      /* ~1e-7 L */
+        };
+        for (int c = 0; c < 3; c++)
+            for (int t = 0; t < 2; t++)
+                for (int degree = 3; degree <= 5; degree += 2)
+                    for (int g2 = 0; g2 < 2; g2++) {
+                        const el_smooth_params *p = &curves[c];
+                        const double tol = t ? 1e-6 * L : 1e-3;
+                        el_bspline b;
+                        const int st = g2 ? el_smooth_to_bspline_g2(p, tol, degree, &b)
+                                          : el_smooth_to_bspline(p, tol, degree, &b);
+                        ck_assert_msg(st == EL_OK, "L %g curve %d tol %g degree %d g2 %d: status %d",
+                                      L, c, tol, degree, g2, st);
+                        /* a line: the fewest its fixed end poles allow */
+                        const size_t most = c ? 40 : (size_t)degree + 3;
+                        ck_assert_msg(b.npoles <= most, "L %g curve %d tol %g: %zu poles", L, c, tol,
+                                      b.npoles);
+                        ck_assert(b.max_deviation <= tol);
+                        ck_assert_double_le(measure(p, &b), tol);
+                        el_bspline_free(&b);
+                    }
+    }
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("bspline");
@@ -590,6 +626,7 @@ int main(void)
     tcase_add_test(tc, test_smooth_to_bspline_bad_input);
     tcase_add_test(tc, test_chain_pieces_must_meet);
     tcase_add_test(tc, huge_angle_is_approximated_as_the_reduced_one);
+    tcase_add_test(tc, straight_curves_at_every_scale);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }
