@@ -347,11 +347,17 @@ def blend_panel(doc, S):
     check(b.Status.startswith("error") and "above" in b.Status and "error" in panel.result.text()
           and b.ViewObject.DrawStyle == "Dashed" and panel.list.count() == 0,
           f"blend: a too short length says which are possible ({b.Status})")
+    check(panel.tension.text() == panel.NO_RESULT and panel.length.text() == "20 mm",
+          f"blend: after the failed solve the greyed tension shows no value, not the last "
+          f"good curve's ({panel.tension.text()!r}, {panel.length.text()!r})")
     check(not panel.accept() and T.CURRENT, "blend panel stays open on an error")
     type_into(panel.length, "70")
     wait()
     check(abs(b.Shape.Length - 70.0) < 1e-2 and b.ViewObject.DrawStyle == "Solid",
           f"blend typed length 70 -> {b.Shape.Length:.4f}")
+    check(panel.tension.text() != panel.NO_RESULT and
+          abs(panel.tension.value() - b.BlendTension) <= 1e-12 * abs(b.BlendTension),
+          f"blend: solved again, the greyed tension shows the curve's ({panel.tension.text()})")
     # typed as in FreeCAD's own boxes: other units, an expression, a decimal comma ("7 cm"
     # was read as 7 mm, "=2*35" ignored)
     for text, mm in (("6.5 cm", 65.0), ("2.75 in", 69.85), ("=2*34", 68.0), ("70,5", 70.5), ("70", 70.0)):

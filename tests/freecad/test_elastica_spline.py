@@ -267,6 +267,27 @@ class SplineTest(unittest.TestCase):
         self.assertLess(c.curvature(c.FirstParameter), 1e-7 * s.MaxCurvature)
         self.check_guides(s, c, ducks[:2], 0.25, 0.0)
 
+    def test_an_end_edge_off_its_point_is_a_warning(self):
+        """G2 to an edge whose end is 2.2 mm from the first duck: the spline takes its
+        direction and curvature but does not join it; said as a warning (Warnings, the
+        Status, the report view), which goes when the edge's end is moved onto the duck."""
+        sk = self.doc.addObject("Sketcher::SketchObject", "Ends")
+        sk.Placement = S.SKETCH_PLACEMENT
+        sk.addGeometry(Part.LineSegment(App.Vector(-40, -2.2, 0), App.Vector(0, -2.2, 0)), False)
+        self.doc.recompute()
+        s = self.spline(StartCondition="G2", StartEdge=(sk, "Edge1"))
+        self.assertEqual(len(s.Warnings), 1, s.Warnings)
+        self.assertIn("2.2 mm from the first point", s.Warnings[0])
+        self.assertIn("does not meet it", s.Warnings[0])
+        self.assertIn("warning: the start edge's end is 2.2 mm", s.Status)
+        line = sk.Shape.Edges[0]
+        self.assertAlmostEqual(s.Shape.Edges[0].distToShape(line)[0], 2.2, delta=1e-9)
+        sk.movePoint(0, 2, App.Vector(0, 0, 0))
+        self.doc.recompute()
+        self.assertEqual((list(s.Warnings), s.Status.startswith("ok")), ([], True), s.Status)
+        self.assertNotIn("warning", s.Status)
+        self.assertLess(s.Shape.Edges[0].distToShape(sk.Shape.Edges[0])[0], 1e-9)
+
     def test_g2_end_that_cannot_be_met_says_so(self):
         sk = self.doc.addObject("Sketcher::SketchObject", "Ends")
         sk.Placement = S.SKETCH_PLACEMENT

@@ -403,6 +403,11 @@ class BlendProxy(FeatureProxy):
             edge = followed_edge(obj, prop)
             if edge is None:
                 raise InputProblem(f"{prop} is empty: a blend needs two edges: link {prop}")
+            if edge.isClosed():   # its seam (parameter 0) is no end to blend from
+                raise InputProblem(f"{prop} ({link[0].Label}.{link[1][0]}) is a closed edge (a "
+                                   f"full {type(edge.Curve).__name__.lower()}): a blend leaves an edge "
+                                   "at an end vertex and it has none; use an arc of it (trim or "
+                                   "split it), or an elastic spline with an end on it")
             out.append(edge)
         return out
 

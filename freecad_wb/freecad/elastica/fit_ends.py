@@ -9,7 +9,7 @@ import math
 import FreeCAD as App
 import Part
 
-from .geometry import np, plane_curvature
+from .geometry import nearest_parameter, np, plane_curvature
 from .proxy import InputProblem, check_number
 
 # the library's constraint names -> the fields that set them (messages name the field)
@@ -29,7 +29,8 @@ def tangent_angle(edge, at, forward, plane):
     n = np()
     a, b = edge.FirstParameter, edge.LastParameter
     at_end = (edge.valueAt(a) - at).Length > (edge.valueAt(b) - at).Length
-    t = plane.Rotation.inverted().multVec(App.Vector(edge.tangentAt(b if at_end else a)))
+    u = nearest_parameter(edge, at) if edge.isClosed() else b if at_end else a   # no ends
+    t = plane.Rotation.inverted().multVec(App.Vector(edge.tangentAt(u)))
     if math.hypot(t.x, t.y) < 1e-9 * max(t.Length, 1e-300):
         raise InputProblem("the tangent edge is perpendicular to the fit plane")
     if t.x * forward[0] + t.y * forward[1] < 0:
@@ -82,6 +83,10 @@ def end_constraints(xy, plane, pin_start=False, pin_end=False, start_edge=None, 
         c[f"{where}_tangent"] = angle
         if join == "tangent":
             continue
+        if edge.isClosed():   # its seam is no end: the join was 28 mm off, the fit looped
+            raise InputProblem(f"{End} join {join}: the {where} edge is closed (a full circle or "
+                               "ellipse), it has no end to join; join an arc of it, or set "
+                               "Tangent only (its tangent nearest the points' end)")
         u = edge.LastParameter if at_end else edge.FirstParameter
         p = plane.inverse().multVec(edge.valueAt(u))
         if abs(p.z) > max(tol, 1e-7 + 1e-9 * extent):   # 1e-7 mm: FreeCAD's Confusion

@@ -134,6 +134,13 @@ def edge_end(edge, at_end):
     return edge.valueAt(u), App.Vector(t).normalize()
 
 
+def nearest_parameter(edge, point):
+    """The parameter of ``edge``'s point nearest ``point`` (Part's distToShape): where a
+    closed edge (a full circle or ellipse: its seam is no end) is joined."""
+    info = edge.distToShape(Part.Vertex(point))[2][0]
+    return float(info[2] if info[0] == "Edge" else info[5])
+
+
 def curvature_vector(edge, u):
     """kappa N of an edge at parameter u (N towards the centre of curvature; the zero
     vector where the edge is straight)."""
@@ -143,12 +150,14 @@ def curvature_vector(edge, u):
         return App.Vector(0, 0, 0)
 
 
-def plane_curvature(edge, at_end, direction, plane, what="the edge"):
-    """The signed curvature, in ``plane``, of ``edge`` at its start or end travelled
-    along the unit plane vector ``direction`` (tx, ty): positive when the curve turns
-    left (counter-clockwise seen from the plane's normal), as the library counts it.
-    InputProblem when the edge curves out of the plane there (no G2 join in it)."""
-    u = edge.LastParameter if at_end else edge.FirstParameter
+def plane_curvature(edge, at_end, direction, plane, what="the edge", u=None):
+    """The signed curvature, in ``plane``, of ``edge`` at its start or end (or at the
+    parameter ``u``) travelled along the unit plane vector ``direction`` (tx, ty):
+    positive when the curve turns left (counter-clockwise seen from the plane's normal),
+    as the library counts it. InputProblem when the edge curves out of the plane there
+    (no G2 join in it)."""
+    if u is None:
+        u = edge.LastParameter if at_end else edge.FirstParameter
     k = plane.Rotation.inverted().multVec(curvature_vector(edge, u))
     if abs(k.z) > 1e-6 * k.Length + 1e-12:
         raise InputProblem(f"{what} curves out of the plane there: no curvature-continuous "

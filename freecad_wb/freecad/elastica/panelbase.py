@@ -383,9 +383,21 @@ class Panel:
     def show_value(box, value):
         """Show a result in a box the user does not edit now (no signal, no selection)."""
         box.blockSignals(True)
+        box.setSpecialValueText("")
         box.setValue(value)
         box.blockSignals(False)
         box.lineEdit().deselect()
+
+    NO_RESULT = "\u2014 (no result)"
+
+    @classmethod
+    def show_no_value(cls, box):
+        """A result box while the solve fails: no value, not the last good curve's (Qt
+        shows the special value text at the minimum; show_value clears it)."""
+        box.blockSignals(True)
+        box.setSpecialValueText(cls.NO_RESULT)
+        box.setValue(box.minimum())
+        box.blockSignals(False)
 
     def bspline_box(self, of, degree_tip, when=None):
         """The B-spline box: Tolerance (decades) and Degree fields (self.tol, self.degree)."""

@@ -15,8 +15,8 @@ import warnings
 import FreeCAD as App
 
 from . import defaults
-from .geometry import (edge_end, el, np, part_bspline, plane_coordinates, plane_curvature,
-                       to_3d)
+from .geometry import (edge_end, el, nearest_parameter, np, part_bspline, plane_coordinates,
+                       plane_curvature, to_3d)
 from .links import followed_edge, followed_reader
 from .proxy import (FeatureProxy, InputProblem, add_enum, add_geometry_index, add_length,
                     add_link, add_property, check_degree, check_number, check_tolerance,
@@ -40,16 +40,22 @@ def end_condition(edge, condition, point, neighbour, arriving):
     inwards) takes from ``edge`` at the edge's end nearest the point: (edge, at_end,
     3D unit direction of travel, gap). The spline leaves a start edge continuing it
     and arrives at an end edge running into it; an edge that does not touch the
-    point only lends its direction, turned to run along the spline."""
-    at_end = (edge_end(edge, True)[0] - point).Length < (edge_end(edge, False)[0] - point).Length
-    p, leaving = edge_end(edge, at_end)
+    point only lends its direction, turned to run along the spline. A closed edge (a
+    full circle or ellipse: its seam is no end) is met at its point nearest the point
+    (u: its parameter there, else None), in the direction that runs along the spline."""
+    u = nearest_parameter(edge, point) if edge.isClosed() else None
+    if u is None:
+        at_end = (edge_end(edge, True)[0] - point).Length < (edge_end(edge, False)[0] - point).Length
+        p, leaving = edge_end(edge, at_end)
+    else:
+        at_end, p, leaving = False, edge.valueAt(u), App.Vector(edge.tangentAt(u)).normalize()
     direction = -leaving if arriving else leaving
     gap = (p - point).Length
-    if gap > 1e-7 * (1.0 + (neighbour - point).Length):
+    if u is not None or gap > 1e-7 * (1.0 + (neighbour - point).Length):
         inward = (point - neighbour) if arriving else (neighbour - point)
         if direction.dot(inward) < 0:
             direction = -direction
-    return {"edge": edge, "at_end": at_end, "direction": direction, "gap": gap,
+    return {"edge": edge, "at_end": at_end, "u": u, "direction": direction, "gap": gap,
             "condition": condition}
 
 
@@ -160,7 +166,7 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
     except (ValueError, ArithmeticError) as exc:
         raise InputProblem(f"no plane through the points: {exc}") from None
     xy = n.ascontiguousarray(loc[:len(pts)])
-    specs, notes, k = [None, None], [], len(pts)
+    specs, notes, warnings, k = [None, None], [], [], len(pts)
     for j, c in enumerate(ends):
         if c is None:
             continue
@@ -170,12 +176,21 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
         what = "the start edge" if j == 0 else "the end edge"
         if c["condition"] == "G2":
             specs[j] = {"tangent": (float(t[0]), float(t[1])),
-                        "curvature": plane_curvature(c["edge"], c["at_end"], t, plane, what)}
+                        "curvature": plane_curvature(c["edge"], c["at_end"], t, plane, what,
+                                                     u=c["u"])}
         else:
             specs[j] = (float(t[0]), float(t[1]))
-        if c["gap"] > 1e-7 * (1.0 + extent):
-            notes.append(f"{what}'s end is {c['gap']:.3g} mm from the "
-                         f"{'first' if j == 0 else 'last'} point (its direction is used)")
+        if c["gap"] > 1e-7 * (1.0 + extent):   # a gap is not a join: said, not moved
+            point = "first" if j == 0 else "last"
+            taken = "direction and curvature" if c["condition"] == "G2" else "direction"
+            if c["u"] is None:
+                where, on = f"{what}'s end", "the edge's end vertex"
+            else:                          # closed: met at its nearest point, not an end
+                where, on, taken = f"{what} (closed)", "a point on the edge", \
+                    f"{taken} at its nearest point"
+            warnings.append(f"{where} is {c['gap']:.3g} mm from the {point} point: the spline "
+                            f"takes its {taken} but does not meet it; to join, make the "
+                            f"{point} point {on} (pick it, or constrain them coincident)")
     if mode == "length":
         polygon = float(n.sum(n.hypot(*n.diff(n.vstack([xy, xy[:1]]) if closed else xy,
                                                axis=0).T)))
@@ -201,7 +216,7 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
     except (ValueError, ArithmeticError, RuntimeError) as exc:
         raise InputProblem(f"B-spline: {_library_message(exc)}") from None
     return {"spline": sp, "bspline": bs, "placement": plane, "forces": duck_forces(sp),
-            "notes": notes}
+            "notes": notes, "warnings": warnings}
 
 
 class SplineProxy(FeatureProxy):
@@ -270,12 +285,15 @@ class SplineProxy(FeatureProxy):
                      "to the batten)")
         add_property(obj, "App::PropertyInteger", "Poles", "Result", "Poles of the B-spline")
         add_property(obj, "App::PropertyString", "Status", "Result", "Outcome of the last solve")
+        add_property(obj, "App::PropertyStringList", "Warnings", "Result",
+                     "What the designer should know: an end edge that the spline does not meet "
+                     "(empty: none)")
         add_property(obj, "App::PropertyString", "Curves", "Result",
                      "The spline's pieces (JSON, plane coordinates)")
         add_property(obj, "App::PropertyPlacement", "Plane", "Result", "The plane of the spline")
         read_only(obj, "SplineLength", "SplineTension", "Energy", "MaxCurvature",
                   "BSplineDeviation", "Ducks", "DuckForces", "GuideDucks", "GuideForces",
-                  "Poles", "Status", "Curves", "Plane")
+                  "Poles", "Status", "Warnings", "Curves", "Plane")
 
     def end_specs(self, obj):
         """(start, end): None or (condition, Part edge) from the end properties."""
@@ -320,7 +338,13 @@ class SplineProxy(FeatureProxy):
         obj.Plane = plc
         from libelastica.io import curve_to_dict
         obj.Curves = json.dumps([curve_to_dict(c) for c in sp.pieces])
-        obj.Status = "; ".join(["ok"] + r["notes"])
+        warnings = r["warnings"]
+        if warnings != list(obj.Warnings):
+            # once per change of the warnings, not on every recompute (as ellblend's)
+            for w in warnings:
+                App.Console.PrintWarning(f"Elastica {obj.Label}: {w}\n")
+            obj.Warnings = warnings
+        obj.Status = "; ".join(["ok"] + [f"warning: {w}" for w in warnings] + r["notes"])
 
     def plane_curves(self, obj):
         from .fit import stored_curves

@@ -266,18 +266,24 @@ class BlendPanel(Panel):
         if o.Descriptions:
             self.list.setCurrentRow(min(o.Solution, len(o.Descriptions) - 1))
         self.list.blockSignals(False)
-        # the field not being solved for shows the value of the curve on screen
-        if o.Descriptions:
-            for box, value, active in ((self.length, o.BlendLength, o.Mode == "length"),
-                                       (self.tension, o.BlendTension, o.Mode == "tension")):
-                if not active:
-                    self.show_value(box, value)
         # a G2 blend is solved for a tension >= 0 (pushed: give a length); a negative one
         # typed before stays, and the feature says why it is refused
         g2_tension = o.Continuity == "G2" and o.Mode == "tension" and o.Tension >= 0
         self.tension.blockSignals(True)
         self.tension.setMinimum(0.0 if g2_tension else -1e6)
         self.tension.blockSignals(False)
+        # the field not being solved for shows the value of the curve on screen; after a
+        # failed solve none (the dashed curve is the last good one's); the field solved
+        # for shows what is asked
+        for box, value, prop in ((self.length, o.BlendLength, "Length"),
+                                 (self.tension, o.BlendTension, "Tension")):
+            if o.Mode == prop.lower():
+                if box.specialValueText():
+                    self.show_value(box, float(getattr(o, prop)))
+            elif o.Descriptions:
+                self.show_value(box, value)
+            else:
+                self.show_no_value(box)
         self.list.setToolTip(self.LIST_TIP + (G2_LIST_TIP if o.Continuity == "G2" else ""))
         super().refresh()
 
@@ -305,6 +311,7 @@ class SplinePanel(Panel):
     def build(self):
         o = self.obj
         g = self.box("Elastic spline")
+        self.warning_row(g)             # an end edge the spline does not meet
         self.mode = self.choice(g, "Solve for", "Mode", Sp.MODES, ["a tension", "a length"],
                                 "A tension (0: the free batten, the fairest curve through the "
                                 "points) or a total length (the tension follows)")
@@ -390,10 +397,12 @@ class SplinePanel(Panel):
         self.tension.blockSignals(False)
         given, shown = (self.tension, self.length) if tension_mode else (self.length, self.tension)
         value = float(getattr(o, "Tension" if tension_mode else "Length"))
-        if given.value() != value:
+        if given.value() != value or given.specialValueText():
             self.show_value(given, value)
         if o.Ducks and not o.Status.startswith("error"):
             self.show_value(shown, o.SplineLength if tension_mode else o.SplineTension)
+        else:   # the dashed curve is the last good one's: no value for the failed solve
+            self.show_no_value(shown)
         super().refresh()
 
     def forces_text(self):

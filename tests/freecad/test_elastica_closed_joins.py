@@ -1,0 +1,99 @@
+"""A closed edge (a full circle or ellipse) picked as a join edge: its seam (parameter
+0) is no end. The spline meets it at its point nearest the end duck; a blend and a fit's
+G1 / G2 join refuse it, naming it; a fit's tangent takes its tangent nearest the points'
+end. (QA: joined at the seam, a spline crossed the circle at 90 degrees, a fit's join
+started 28 mm away and looped, a blend ran seam to seam.) Run with
+`freecadcmd -t test_elastica_closed_joins`."""
+import math
+import unittest
+
+import FreeCAD as App
+import Part
+
+import elastica_samples as S
+from elastica_samples import curvature_vector
+from freecad.elastica import blend as Bl
+from freecad.elastica import fit as Fi
+from freecad.elastica import spline as Sp
+
+V = App.Vector
+
+
+class ClosedJoinTest(unittest.TestCase):
+    def setUp(self):
+        self.doc = S.new_doc("ElasticaClosedJoins")
+        sk = self.doc.addObject("Sketcher::SketchObject", "Closed")
+        sk.Placement = S.SKETCH_PLACEMENT
+        sk.addGeometry(Part.Circle(V(-40, 10, 0), V(0, 0, 1), 20), False)   # seam at (-20, 10)
+        sk.addGeometry(Part.Ellipse(V(40, 10, 0), 25, 12), False)
+        self.doc.recompute()
+        self.sk = sk
+
+    def tearDown(self):
+        App.closeDocument(self.doc.Name)
+
+    def test_a_spline_meets_a_full_circle_and_ellipse_where_its_ducks_are(self):
+        # the first duck on the circle's top, the last on the ellipse's top
+        pts = S.points_sketch(self.doc, [(-40, 30), (-15, 34), (10, 30), (40, 22)], "OnClosed")
+        self.doc.recompute()
+        s = Sp.make(self.doc, [(pts, [])], StartCondition="G2", StartEdge=(self.sk, "Edge1"),
+                    EndCondition="G2", EndEdge=(self.sk, "Edge2"), Tolerance=1e-6)
+        self.doc.recompute()
+        self.assertTrue(s.Status.startswith("ok"), s.Status)
+        self.assertEqual(list(s.Warnings), [])
+        c = s.Shape.Edges[0].Curve
+        for name, u, edge in (("circle", c.FirstParameter, self.sk.Shape.Edges[0]),
+                              ("ellipse", c.LastParameter, self.sk.Shape.Edges[1])):
+            p = c.value(u)
+            self.assertLess(edge.distToShape(Part.Vertex(p))[0], 1e-6, name)
+            ue = edge.Curve.parameter(p)
+            t, te = App.Vector(c.tangent(u)[0]).normalize(), edge.tangentAt(ue).normalize()
+            self.assertLess(1 - abs(t.dot(te)), 1e-12, f"{name}: tangent")
+            k, ke = curvature_vector(c, u), edge.normalAt(ue) * edge.curvatureAt(ue)
+            self.assertLess((k - ke).Length, 1e-6 * ke.Length, f"{name}: curvature vector")
+
+    def test_a_spline_off_a_full_circle_warns_with_its_nearest_point(self):
+        pts = S.points_sketch(self.doc, [(-40, 33), (-15, 34), (10, 30), (40, 22)], "OffClosed")
+        self.doc.recompute()
+        s = Sp.make(self.doc, [(pts, [])], StartCondition="tangent", StartEdge=(self.sk, "Edge1"))
+        self.doc.recompute()
+        self.assertEqual(len(s.Warnings), 1, s.Warnings)
+        self.assertIn("the start edge (closed) is 3 mm from the first point", s.Warnings[0])
+        c = s.Shape.Edges[0].Curve   # the circle's tangent at its top: along the x axis
+        x = S.SKETCH_PLACEMENT.Rotation.multVec(V(1, 0, 0))
+        self.assertLess(1 - abs(App.Vector(c.tangent(c.FirstParameter)[0]).normalize().dot(x)),
+                        1e-12)
+
+    def test_a_blend_refuses_a_closed_edge_naming_it(self):
+        for cont in ("G1", "G2"):
+            b = Bl.make(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"), Continuity=cont)
+            self.doc.recompute()
+            self.assertTrue(b.Status.startswith("error"), b.Status)
+            self.assertIn("Edge1 (Closed.Edge1) is a closed edge (a full circle)", b.Status)
+            self.doc.removeObject(b.Name)
+            self.doc.recompute()
+
+    def test_a_fit_joins_no_closed_edge_but_takes_its_tangent_nearest(self):
+        # points leaving the circle's top to the right
+        xy = [(-40 + 5 * i, 30 + 0.02 * i * i) for i in range(12)]
+        pts = S.points_sketch(self.doc, xy, "Data")
+        self.doc.recompute()
+        for join in ("G1", "G2"):
+            f = Fi.make(self.doc, [(pts, [])], StartTangent=(self.sk, ["Edge1"]),
+                        StartContinuity=join)
+            self.doc.recompute()
+            self.assertTrue(f.Status.startswith("error"), f.Status)
+            self.assertIn(f"Start join {join}: the start edge is closed", f.Status)
+            self.doc.removeObject(f.Name)
+            self.doc.recompute()
+        f = Fi.make(self.doc, [(pts, [])], StartTangent=(self.sk, ["Edge1"]))
+        self.doc.recompute()
+        self.assertFalse(f.Status.startswith("error"), f.Status)
+        e = f.Shape.Edges[0]
+        t = e.tangentAt(e.FirstParameter).normalize()
+        x = S.SKETCH_PLACEMENT.Rotation.multVec(V(1, 0, 0))   # the circle's top, not its seam
+        self.assertLess(math.acos(min(1.0, abs(t.dot(x)))), 1e-9)
+
+
+if __name__ == "__main__":
+    unittest.main()
