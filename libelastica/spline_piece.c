@@ -403,7 +403,12 @@ int el__spiece_start(el__spiece *pc, const el__sptargets *t)
     const double g = 1.0 + wd[1] * wd[1];
     const double theta = c + atan(wd[1]), kappa = wd[2] / pow(g, 1.5);
     const double dkappa = wd[3] / (g * g) - 3.0 * wd[1] * wd[2] * wd[2] / (g * g * g);
-    return piece_from_state(pc, theta, kappa, dkappa, t->s, 0.5 * L, L);
+    /* targets along the chord to rounding (a rotated line: ~1e-16), not compressed: the
+     * line (piece_from_state: the separatrix's tail), as an unrotated one; a bend of
+     * 1e-16 put the piece far down the tail (u ~ 30, not 19), where its parameters do
+     * not resolve the force (the G2 bend from it failed at tensions 0 to 3e-6) */
+    const int line = fabs(al) <= 1e-12 && fabs(be) <= 1e-12 && t->s >= 0.0;
+    return piece_from_state(pc, theta, line ? 0.0 : kappa, line ? 0.0 : dkappa, t->s, 0.5 * L, L);
 }
 
 /* The piece by el_hermite_solve: the least-energy solution with the turning tb - ta. */

@@ -185,21 +185,25 @@ END_TEST
 
 /* The free batten (tension 0) bent from a straight sibling: a line then an arc tangent
  * to it at the same height (the G2 blend whose G1 blend is straight), two arcs there,
- * collinear ducks; from the line as initial too. A line at no tension has no force
- * (mu = 0, spline_piece.c): its start was pi/2 off and the solve EL_ENOCONV. The
- * batten is the limit of the one pulled by a tension of 1e-12. */
+ * turned 0.3 rad (the line to rounding), collinear ducks; from the line as initial too.
+ * A line at no tension has no force (mu = 0, spline_piece.c): its start was pi/2 off
+ * and the solve EL_ENOCONV (turned: also at tensions 1e-7 to 3e-6). The batten is the
+ * limit of the one pulled by a tension of 1e-12. */
 START_TEST(straight_free_batten_bends_to_g2_ends)
 {
-    const double p[] = {-20.0, 10.0, 20.0, 10.0}, line[] = {0.0, 0.0, 1.0, 0.5, 3.0, 1.5, 4.0, 2.0};
+    const double line[] = {0.0, 0.0, 1.0, 0.5, 3.0, 1.5, 4.0, 2.0}, c3 = cos(0.3), s3 = sin(0.3);
+    const double p[] = {-20.0, 10.0, 20.0, 10.0, -20.0 * c3 - 10.0 * s3, -20.0 * s3 + 10.0 * c3,
+                        20.0 * c3 - 10.0 * s3, 20.0 * s3 + 10.0 * c3};
     const double k[][2] = {{0.0, 0.02}, {0.02, 0.02}, {0.0, -0.02}, {0.02, 0.0}};
-    for (size_t c = 0; c < 5; c++)
+    for (size_t c = 0; c < 9; c++)
         for (int from_line = 0; from_line < 2; from_line++) {
-            const int ducks = c == 4;
-            const double *xy = ducks ? line : p;
+            const int ducks = c == 8, turned = c >= 4 && !ducks;
+            const double *xy = ducks ? line : p + 4 * turned;
             const size_t n = ducks ? 4 : 2;
+            const double tx = turned ? c3 : 1.0, ty = turned ? s3 : 0.0;
             el_spline_options o = opts(EL_SPLINE_TENSION, 0.0);
-            o.start = ducks ? g2_end(2.0, 1.0, 0.0) : g2_end(1.0, 0.0, k[c][0]);
-            o.end = ducks ? g2_end(2.0, 1.0, 0.2) : g2_end(1.0, 0.0, k[c][1]);
+            o.start = ducks ? g2_end(2.0, 1.0, 0.0) : g2_end(tx, ty, k[c % 4][0]);
+            o.end = ducks ? g2_end(2.0, 1.0, 0.2) : g2_end(tx, ty, k[c % 4][1]);
             el_spline_result straight, r, pulled;
             if (from_line) {   /* the clamped spline: the line, k = 0 pieces */
                 el_spline_options t = clamped_only(o);
@@ -216,6 +220,12 @@ START_TEST(straight_free_batten_bends_to_g2_ends)
             equals_tangent_spline_through_guides(xy, &o, &r);
             ck_assert_double_eq(r.sigma, 0.0);
             ck_assert_double_gt(r.energy, 0.0);
+            for (int i = 0; i < 3 && !ducks; i++) {   /* small tensions (user units) */
+                el_spline_result r2;
+                o.sigma = (const double[]){1e-7, 1e-6, 3e-6}[i];
+                ck_assert_msg(solve(xy, n, &o, &r2) == EL_OK, "case %zu tension %g", c, o.sigma);
+                el_spline_result_free(&r2);
+            }
             o.sigma = 1e-12;
             ck_assert_int_eq(solve(xy, n, &o, &pulled), EL_OK);
             ck_assert_close(r.length, pulled.length, 1e-9 * r.length);
