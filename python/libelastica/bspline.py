@@ -332,6 +332,14 @@ def smooth_chain_to_bspline(pieces, tol: float = 1e-6, degree: int = 3) -> BSpli
     b = ffi.new("el_bspline *")
     st = lib.el_smooth_chain_to_bspline(arr, len(pieces), tol, degree, b)
     if st == lib.EL_EINVAL and tol > 0 and 3 <= degree <= 7:
+        # a tol below rounding first: the joints' gaps of ~1e-16 failed it and were named
+        # as the cause ("piece 2 does not start where piece 1 ends (gap 9e-16)", QA)
+        floor = [1e-14 * (p.length + abs(p.x0) + abs(p.y0) + abs(p.q) / np.sqrt(p.mu)) for p in arr]
+        worst = int(np.argmax(floor))
+        if tol < floor[worst]:
+            why = _beyond_limits(arr[worst], tol)
+            raise DomainError(lib.EL_EDOM, "to_bspline: " + (
+                why if len(arr) == 1 else f"piece {worst + 1} of {len(arr)}: {why}"))
         _check_joints(pieces, tol)
     if st == lib.EL_EDOM:   # a piece beyond el_smooth_to_bspline's limits: say which and why
         n = len(pieces)

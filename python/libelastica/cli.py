@@ -20,8 +20,8 @@ from .cli_common import (EXIT_BADINPUT, EXIT_INTERNAL, EXIT_NOCONV, EXIT_OK, PRO
                          _input_map, _mapped_bspline, _plane_record, _table)
 from .cli_fit import cmd_fit
 from .cli_outputs import Outputs, check_outputs
-from .io import (InputError, curve_from_dict, curve_to_dict, read_json, read_points,
-                 write_dxf_spline, write_json)
+from .io import (DXF_UNITS, InputError, curve_from_dict, curve_to_dict, read_json,
+                 read_points, write_dxf_spline, write_json)
 
 FIT_EXAMPLES = """examples:
   elastica fit points.csv --svg fit.svg --json fit.json
@@ -38,11 +38,19 @@ input: CSV, whitespace separated text or .npy, 2 columns (x, y) or 3 (x, y, z);
 
 HERMITE_EXAMPLES = """examples:
   elastica hermite 0 0 1 0  1 0 1 0 --tension 10 --svg hermite.svg
-  elastica hermite 0 0 0 1  2 0 0 -1 --length 4 --json -"""
+  elastica hermite 0 0 0 1  2 0 0 -1 --length 4 --json -
+  elastica hermite 0 0 1 0  1 0 1 0 --length 4 --solution 2 --dxf s.dxf --units mm
+
+The solutions are listed by bending energy; the least can belong to a curve that loops:
+'loops' counts its self-crossings, 'crosses itself' marks it (a batten cannot), and the
+fair ones are named under the table (also in the JSON: loops, crosses_itself,
+max_curvature, length). No solution: exit 1 and nothing is written."""
 
 BSPLINE_EXAMPLES = """examples:
   elastica fit points.csv --model smooth --json fit.json
-  elastica bspline fit.json --tol 1e-6 --json spline.json --dxf spline.dxf"""
+  elastica bspline fit.json --tol 1e-6 --json spline.json --dxf spline.dxf
+  elastica hermite 0 0 1 0 1 0 1 0 --length 4 --json h.json && elastica bspline h.json --solution 2
+  elastica spline ducks.csv --json s.json && elastica bspline s.json --dxf s.dxf --units mm"""
 
 BLEND_EXAMPLES = """examples:
   elastica blend 0 0  0.3 0.8  0.7 0.9  1 0 --m 0.3 --d 2 --svg blend.svg
@@ -83,9 +91,31 @@ def _ranged(kind, lo=None, hi=None, above=None, below=None):
 
 POSITIVE = _ranged(float, above=0.0)
 DEGREE = _ranged(int, lo=3, hi=7)
+SOLUTION = _ranged(int, lo=0)
+
+
+def _units_option(parser) -> None:
+    """--units of a command that writes DXF: the drawing's $INSUNITS (io.DXF_UNITS)."""
+    parser.add_argument("--units", choices=tuple(DXF_UNITS), default="none",
+                        help="the DXF's drawing units ($INSUNITS); default none (unitless: "
+                             "CAD takes the numbers as they are)")
 
 
 # ------------------------------------------------------------------ hermite
+
+def _solution_record(i: int, c) -> dict:
+    """One Hermite solution as the JSON and the table show it: what it is (curve, tension,
+    energy, inflection, end curvatures, residual) and what picks the fair one among them
+    (length, loops = self-crossings, crosses_itself, largest curvature: shape.py)."""
+    e = getattr(c, "energy_value", None)
+    loops = c.loops
+    return {"index": i, "curve": curve_to_dict(c), "sigma": getattr(c, "sigma", None),
+            "energy": e if e is not None else c.energy(), "length": c.length,
+            "has_inflection": getattr(c, "has_inflection", None), "loops": loops,
+            "crosses_itself": loops > 0, "max_curvature": c.max_curvature,
+            "kappa0": getattr(c, "kappa0", None), "kappa1": getattr(c, "kappa1", None),
+            "residual": getattr(c, "residual", None)}
+
 
 def cmd_hermite(args) -> int:
     import libelastica as el
@@ -95,28 +125,38 @@ def cmd_hermite(args) -> int:
     kw = {"tension": args.tension} if args.tension is not None else {"length": args.length}
     _finite(next(iter(kw.values())), "--tension/--length")
     sols = el.hermite(p0, t0, p1, t1, **kw)
-    rows, recs = [], []
-    for i, c in enumerate(sols):
-        e = getattr(c, "energy_value", None)
-        rec = {"index": i, "curve": curve_to_dict(c), "sigma": getattr(c, "sigma", None),
-               "energy": e if e is not None else c.energy(),
-               "has_inflection": getattr(c, "has_inflection", None),
-               "kappa0": getattr(c, "kappa0", None), "kappa1": getattr(c, "kappa1", None),
-               "residual": getattr(c, "residual", None)}
-        recs.append(rec)
-        # near the separatrix a chain of pieces ("curve": {"type": "chain", ...}), k its first piece's
-        rows.append([i, rec["sigma"], c.length, c.k, rec["energy"],
-                     "yes" if rec["has_inflection"] else "no", rec["kappa0"], rec["kappa1"],
-                     rec["residual"]])
+    if not sols:      # nothing is written: no file of an empty answer for a script to take
+        print(f"{PROG} hermite: no elastica through these points and tangents", file=sys.stderr)
+        return EXIT_NOCONV
+    if args.solution >= len(sols):
+        raise InputError(f"--solution {args.solution}: there are {len(sols)} solutions "
+                         f"(0 to {len(sols) - 1})")
+    recs = [_solution_record(i, c) for i, c in enumerate(sols)]
+    b = None
+    # every solution's B-spline (G2 ends, as `bspline` makes it of the JSON), the DXF the chosen one's
+    if args.bspline_tol is not None or args.dxf:
+        tol = args.bspline_tol if args.bspline_tol is not None else 1e-6
+        for r, c in zip(recs, sols):
+            r["bspline"] = el.bspline.fitted_bspline(c, tol, args.degree).to_dict()
+        b = el.BSpline.from_dict(recs[args.solution]["bspline"])
     out = {"p0": p0, "t0": t0, "p1": p1, "t1": t1, **kw, "solutions": recs}
     if args.json:
         write_json(out, "-" if args.json == "-" else args.outputs.path(args.json))
     if args.json != "-":
-        if rows:
-            print(_table(["#", "sigma", "length", "k", "energy", "inflection", "kappa0",
-                          "kappa1", "residual"], rows))
-        else:
-            print("no elastica through these points and tangents")
+        # near the separatrix a chain of pieces ("curve": {"type": "chain", ...}), k its first piece's
+        print(_table(["#", "sigma", "length", "k", "energy", "inflection", "loops",
+                      "crosses itself", "max curvature", "kappa0", "kappa1", "residual"],
+                     [[r["index"], r["sigma"], r["length"], c.k, r["energy"],
+                       "yes" if r["has_inflection"] else "no", r["loops"],
+                       "YES" if r["crosses_itself"] else "no", r["max_curvature"], r["kappa0"],
+                       r["kappa1"], r["residual"]] for r, c in zip(recs, sols)]))
+        fair = [r["index"] for r in recs if not r["crosses_itself"]]
+        print(f"by energy; {len(sols) - len(fair)} of {len(sols)} cross themselves (a batten "
+              "cannot): " + (f"the fair ones are {', '.join(map(str, fair))}" if fair else
+                             "none is fair"))
+        if b is not None:
+            print(f"B-spline of solution {args.solution}: degree {b.degree}, {b.npoles} poles, "
+                  f"certified within {b.max_deviation:.3g}")
     for spec in (args.svg, args.png):
         if spec:
             what = f"tension {args.tension:g}" if args.tension is not None else \
@@ -126,7 +166,8 @@ def cmd_hermite(args) -> int:
                 s = np.linspace(0.0, c.length, 400)
                 drawn.append((c.points(s), s, c.curvature(s)))
             pic = curves_picture(drawn, [f"solution {i} (E = {r['energy']:.4g})"
-                                        for i, r in enumerate(recs)],
+                                         + (", crosses itself" if r["crosses_itself"] else "")
+                                         for i, r in enumerate(recs)],
                                  points=np.array([p0, p1]),
                                  title=f"Hermite elasticae, {what}: {len(sols)} solutions",
                                  params=[f"p0 = ({p0[0]:g}, {p0[1]:g}), t0 = ({t0[0]:g}, {t0[1]:g})",
@@ -135,9 +176,9 @@ def cmd_hermite(args) -> int:
                                     + (f" ({len(c.pieces)} pieces)" if hasattr(c, "pieces") else "")
                                     for i, c in enumerate(sols[:12])])
             save_picture(pic, args.outputs.path(spec))
-    if not sols:
-        print(f"{PROG} hermite: no solution", file=sys.stderr)
-        return EXIT_NOCONV
+    if args.dxf:
+        write_dxf_spline(b, args.outputs.path(args.dxf), points=np.array([p0, p1]),
+                         units=args.units)
     return EXIT_OK
 
 
@@ -146,23 +187,50 @@ def cmd_hermite(args) -> int:
 # what `bspline` keeps of each record it reads, so that its own output read again gives
 # the same B-splines in the same coordinates: a keyline's sides, the input's plane and
 # frame, a discrete fit's end constraints
-_READ_AGAIN = ("side", "end", "plane", "frame2d", "constraints")
+_READ_AGAIN = ("side", "end", "plane", "frame2d", "constraints", "closed")
 
 
-def _curve_groups(doc):
+def _hermite_choice(doc, solution: int, name: str):
+    """The record of `hermite --json`'s solution number ``solution`` (its "curve": a smooth
+    elastica or a chain); InputError naming the solutions there are."""
+    sols = doc["solutions"]
+    if not isinstance(sols, list) or not sols:
+        raise InputError(f"{name}: a Hermite JSON without solutions")
+    if solution >= len(sols):
+        raise InputError(f"--solution {solution}: {name} has {len(sols)} solutions "
+                         f"(0 to {len(sols) - 1})")
+    return sols[solution]
+
+
+def _spline_chain(doc, name: str) -> dict:
+    """`spline --json`'s pieces as one record of a chain (one G2 B-spline through all of
+    them, as ElasticSpline.to_bspline makes it), with "closed" kept."""
+    pieces = doc["pieces"]
+    if not isinstance(pieces, list) or not pieces:
+        raise InputError(f"{name}: a spline JSON without pieces")
+    return {"curve": {"type": "chain", "pieces": pieces}, "closed": bool(doc.get("closed"))}
+
+
+def _curve_groups(doc, solution: int = 0, name: str = "JSON"):
     """The curves of a JSON document in groups that make one B-spline each: a keyline
     fit's two sides (records with "side", each from the joint outwards) together, any
     other curve alone (a record, a list of them, a batch's documents, "sides", and
-    `bspline`'s own output of those)."""
+    `bspline`'s own output of those); of a `hermite` JSON its solution number
+    ``solution``; of a `spline` JSON its pieces as one chain."""
     groups = []
     for d in doc if isinstance(doc, list) else [doc]:
         sides = d.get("sides") if isinstance(d, dict) else None
-        if sides is None:
+        if isinstance(d, dict) and "solutions" in d and "curve" not in d:
+            groups.append([_hermite_choice(d, solution, name)])
+        elif isinstance(d, dict) and isinstance(d.get("pieces"), list) and "type" not in d \
+                and "curve" not in d:
+            groups.append([_spline_chain(d, name)])
+        elif sides is None:
             groups.append([d])
         elif len(sides) == 2 and all(isinstance(s, dict) and "side" in s for s in sides):
             groups.append(sides)
         else:
-            groups += _curve_groups(sides)
+            groups += _curve_groups(sides, solution, name)
     return groups
 
 
@@ -172,7 +240,7 @@ def _kept(item) -> dict:
 
 def cmd_bspline(args) -> int:
     import libelastica as el
-    groups = _curve_groups(read_json(args.file))
+    groups = _curve_groups(read_json(args.file), args.solution, args.file)
     out, splines, names = [], [], []
     for items in groups:
         curves = [curve_from_dict(it, name=args.file) for it in items]
@@ -188,7 +256,8 @@ def cmd_bspline(args) -> int:
             b = el.bspline.fitted_bspline(curves[0], args.tol, args.degree,
                                           it.get("constraints") if isinstance(it, dict) else None)
             out.append({"curve": curve_to_dict(curves[0]), **_kept(it), "bspline": b.to_dict()})
-            names.append(type(curves[0]).__name__)
+            names.append(f"chain of {len(curves[0].pieces)} elasticae" if
+                         hasattr(curves[0], "pieces") else type(curves[0]).__name__)
         # the JSON in the curve's coordinates (as the fit record's), the DXF in the input's
         to_input = _input_map(items[0]) if isinstance(items[0], dict) else None
         splines.append(_mapped_bspline(b, to_input))
@@ -202,7 +271,8 @@ def cmd_bspline(args) -> int:
             print(f"{name}: B-spline degree {b.degree}, {b.npoles} poles, "
                   f"{len(b.knots)} knots, {dev}")
     if args.dxf:
-        write_dxf_spline(splines, args.outputs.path(args.dxf))
+        closed = all(isinstance(it, dict) and it.get("closed") for items in groups for it in items)
+        write_dxf_spline(splines, args.outputs.path(args.dxf), units=args.units, closed=closed)
     return EXIT_OK
 
 
@@ -248,7 +318,7 @@ def cmd_blend(args) -> int:
                                        marker="o", line=True, size=4.0))
             save_picture(pic, args.outputs.path(spec))
     if args.dxf:
-        write_dxf_spline(b, args.outputs.path(args.dxf), points=pts)
+        write_dxf_spline(b, args.outputs.path(args.dxf), points=pts, units=args.units)
     return EXIT_OK
 
 
@@ -292,7 +362,7 @@ def cmd_spline(args) -> int:
            "curvatures": sp.curvatures.tolist(),
            "bspline": bspline_to_dict(b) if b is not None else None}
     if args.json:
-        write_json(rec, args.json)
+        write_json(rec, "-" if args.json == "-" else args.outputs.path(args.json))
     if args.json != "-":
         print(_table(["points", "pieces", "tension", "length", "energy", "max curvature",
                       "residual"], [[len(sp.data), len(sp.pieces), sp.tension, sp.length,
@@ -301,7 +371,8 @@ def cmd_spline(args) -> int:
             print(f"B-spline: degree {b.degree}, {len(b.poles)} poles, certified within "
                   f"{b.max_deviation:.3g}")
     if args.dxf:
-        write_dxf_spline(b, args.dxf, points=sp.data)
+        write_dxf_spline(b, args.outputs.path(args.dxf), points=sp.data, units=args.units,
+                         closed=sp.closed)
     for spec in (args.svg, args.png):
         if spec:
             n = max(400, 40 * len(sp.pieces))
@@ -316,7 +387,7 @@ def cmd_spline(args) -> int:
                                          f"length {sp.length:.6g}", f"energy {sp.energy:.6g}",
                                          f"max curvature {sp.max_curvature:.6g}",
                                          f"residual {sp.residual:.2g}"])
-            save_picture(pic, spec)
+            save_picture(pic, args.outputs.path(spec))
     return EXIT_OK
 
 
@@ -367,7 +438,7 @@ def cmd_g2quad(args) -> int:
         rec["fit"] = {"curve": curve_to_dict(g.fit.curve), "rms": g.fit.rms,
                       "max_error": g.fit.max_error, "status": int(g.fit.status)}
     if args.json:
-        write_json(rec, args.json)
+        write_json(rec, "-" if args.json == "-" else args.outputs.path(args.json))
     if args.json != "-":
         pieces = len(g.bsplines)
         split = f"{pieces} pieces split at {pieces - 1} inflection(s)" if pieces > 1 else \
@@ -412,11 +483,11 @@ def cmd_g2quad(args) -> int:
                 Layer(data[::max(1, len(data) // 100)], "source", "#000000", marker="s", size=3.0),
                 Layer(g.polyline.points, "affine arc-length polyline", "#7f7f7f", marker="o",
                       line=True, size=3.0)]
-            save_picture(pic, spec)
+            save_picture(pic, args.outputs.path(spec))
     if args.dxf:
         splines = g.bsplines if frame is None else [
             BSpline(b.degree, frame.to_3d(b.poles), b.knots, b.mults) for b in g.bsplines]
-        write_dxf_spline(splines, args.dxf)
+        write_dxf_spline(splines, args.outputs.path(args.dxf), units=args.units)
     return EXIT_OK
 
 
@@ -484,6 +555,7 @@ def build_parser() -> argparse.ArgumentParser:
     f.add_argument("--max-iter", type=_ranged(int, lo=1), metavar="N",
                    help="Ipopt iterations per start (default 200)")
     f.add_argument("--dxf", metavar="PATH", help="write the B-spline as a DXF SPLINE (ezdxf)")
+    _units_option(f)
     f.add_argument("--progress", action="store_true",
                    help="always draw the batch progress bar (default: when stderr is a terminal)")
     f.set_defaults(func=cmd_fit)
@@ -500,19 +572,35 @@ def build_parser() -> argparse.ArgumentParser:
     h.add_argument("--json", metavar="PATH", help="write the solutions as JSON ('-' = stdout)")
     h.add_argument("--svg", metavar="PATH", help="picture of all solutions (SVG)")
     h.add_argument("--png", metavar="PATH", help="picture of all solutions (PNG, matplotlib)")
+    h.add_argument("--bspline-tol", type=POSITIVE, metavar="TOL",
+                   help="add every solution's B-spline within TOL to the JSON (default 1e-6 "
+                        "with --dxf)")
+    h.add_argument("--degree", type=DEGREE, default=3, help="B-spline degree 3..7 (default 3)")
+    h.add_argument("--solution", type=SOLUTION, default=0, metavar="N",
+                   help="the solution --dxf writes (default 0, the least energy; the table's "
+                        "'crosses itself' column shows the fair ones)")
+    h.add_argument("--dxf", metavar="PATH", help="write that solution's B-spline as a DXF SPLINE "
+                                                 "(ezdxf), p0 and p1 as points")
+    _units_option(h)
     h.set_defaults(func=cmd_hermite)
 
     b = sub.add_parser("bspline", help="B-spline of a fitted curve's JSON",
-                       description="Convert the curve in a JSON written by 'fit --json' into a "
-                                   "B-spline (certified within --tol for a smooth elastica; the "
-                                   "C2 cubic through the vertices for a discrete one; a "
-                                   "keyline's two sides make one B-spline through the joint).",
+                       description="Convert the curve in a JSON written by 'fit --json', "
+                                   "'hermite --json' (one solution: --solution) or 'spline "
+                                   "--json' into a B-spline (certified within --tol for a smooth "
+                                   "elastica, a Hermite solution and a spline's pieces, one "
+                                   "B-spline G2 through its points; the C2 cubic through the "
+                                   "vertices for a discrete one; a keyline's two sides make one "
+                                   "B-spline through the joint).",
                        epilog=BSPLINE_EXAMPLES, formatter_class=raw)
-    b.add_argument("file", metavar="FIT.json")
+    b.add_argument("file", metavar="FIT.json", help="a JSON of fit, hermite, spline or bspline")
+    b.add_argument("--solution", type=SOLUTION, default=0, metavar="N",
+                   help="of a hermite JSON, solution N (default 0, the least energy)")
     b.add_argument("--tol", type=POSITIVE, default=1e-6, help="tolerance (default 1e-6)")
     b.add_argument("--degree", type=DEGREE, default=3, help="degree 3..7 (default 3)")
     b.add_argument("--json", metavar="PATH", help="write the B-spline as JSON ('-' = stdout)")
     b.add_argument("--dxf", metavar="PATH", help="write a DXF SPLINE (needs ezdxf)")
+    _units_option(b)
     b.set_defaults(func=cmd_bspline)
 
     sp = sub.add_parser(
@@ -546,6 +634,7 @@ def build_parser() -> argparse.ArgumentParser:
     sp.add_argument("--svg", metavar="PATH", help="picture with the curvature comb (SVG)")
     sp.add_argument("--png", metavar="PATH", help="picture with the curvature comb (PNG)")
     sp.add_argument("--dxf", metavar="PATH", help="write the B-spline as a DXF SPLINE (ezdxf)")
+    _units_option(sp)
     sp.set_defaults(func=cmd_spline)
 
     e = sub.add_parser("blend", help="elliptic blending curve from four points (seed 003)",
@@ -566,6 +655,7 @@ def build_parser() -> argparse.ArgumentParser:
     e.add_argument("--svg", metavar="PATH", help="picture (SVG)")
     e.add_argument("--png", metavar="PATH", help="picture (PNG, matplotlib)")
     e.add_argument("--dxf", metavar="PATH", help="write the B-spline as a DXF SPLINE (ezdxf)")
+    _units_option(e)
     e.set_defaults(func=cmd_blend)
 
     q = sub.add_parser("g2quad", help="curvature-continuous quadratic B-spline of a curve (seed 002)",
@@ -586,6 +676,7 @@ def build_parser() -> argparse.ArgumentParser:
     q.add_argument("--svg", metavar="PATH", help="picture (SVG)")
     q.add_argument("--png", metavar="PATH", help="picture (PNG, matplotlib)")
     q.add_argument("--dxf", metavar="PATH", help="write the B-splines as DXF SPLINEs (ezdxf)")
+    _units_option(q)
     q.set_defaults(func=cmd_g2quad)
     return p
 

@@ -298,7 +298,7 @@ def _write_fit_outputs(path, args, batch, doc, records, pictures, splines, point
         save_picture(pic, args.outputs.path(out))
     if args.dxf and splines:
         write_dxf_spline(splines, args.outputs.path(out_path(args.dxf, path, ".dxf", batch)),
-                         points=points)
+                         points=points, units=args.units)
 
 
 def _print_fit(rec: Dict[str, Any]) -> None:

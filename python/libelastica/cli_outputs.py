@@ -139,12 +139,20 @@ def check_outputs(args) -> None:
     an output that would replace an input (the same check again at writing)."""
     files = list(getattr(args, "files", None) or [])
     batch = len(files) > 1
+    taken = {}          # output path -> the option that writes it
     for opt, ext in OUTPUT_OPTIONS:
         spec = getattr(args, opt, None)
         if not spec or spec == "-":
             continue
         for source in files or [spec]:
             final = args.outputs.check(out_path(spec, source, ext, batch))
+            # two outputs to one path: the later one replaced the earlier without a word
+            # (--json o.json --dxf o.json exited 0 with a DXF there)
+            key = os.path.abspath(final)
+            if key in taken and taken[key] != opt:
+                raise InputError(f"--{opt} {final}: the same output path is given twice (also "
+                                 f"--{taken[key]}): give each output its own file")
+            taken[key] = opt
             # a picture's format is its name's (the writers choose by it): --svg x.png
             # wrote a PNG without a word
             if opt in ("svg", "png") and final.suffix.lower() != ext:

@@ -7,6 +7,7 @@ from dataclasses import dataclass, fields
 import numpy as np
 
 from ._ffi import as_real, as_size, as_vector, check, dptr, ffi, lib, require
+from .shape import ShapeDescriptors
 
 SMOOTH_PARAMS = ("x0", "y0", "phi", "mu", "k", "q", "length")
 DISCRETE_PARAMS = ("x0", "y0", "h", "phi", "z", "q", "k")
@@ -25,12 +26,13 @@ def _check_fields(cls: str, p, names, rules) -> None:
 
 
 @dataclass
-class SmoothElastica:
+class SmoothElastica(ShapeDescriptors):
     """A smooth elastica segment: u = sqrt(mu) s + q, sin((theta-phi)/2) = k sn(u;k),
     cos((theta-phi)/2) = dn(u;k), curvature 2 k sqrt(mu) cn(u;k), start (x0, y0),
     arc length s in [0, length]. |k| < 1 has inflections, |k| > 1 none (a loop turning
     counter-clockwise for k > 1, clockwise for k < -1), k = 0 is a line; -k is the
-    mirror image in the line through (x0, y0) at angle phi.
+    mirror image in the line through (x0, y0) at angle phi. ``loops``, ``crosses_itself``
+    and ``max_curvature`` describe its shape (shape.py).
 
     >>> c = SmoothElastica(x0=0, y0=0, phi=0, mu=1.0, k=0.8, q=0.0, length=5.0)
     >>> c.points(np.linspace(0, c.length, 100)).shape

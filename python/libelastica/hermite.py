@@ -13,6 +13,7 @@ import numpy as np
 from ._ffi import DomainError, as_int, as_real, as_size, as_vector, check, ffi, lib, require
 from .bspline import smooth_chain_to_bspline
 from .core import SMOOTH_PARAMS, SmoothElastica, chain_eval, chain_starts
+from .shape import ShapeDescriptors
 
 __all__ = ["hermite", "hermite_analyse", "HermiteSolutions", "HermiteChain", "HERMITE_SIGMA_D2_MAX"]
 
@@ -28,7 +29,7 @@ class HermiteSolutions(list):
     complete: bool = True
 
 
-class HermiteChain:
+class HermiteChain(ShapeDescriptors):
     """A Hermite solution near the separatrix (|k| -> 1) that no single
     :class:`SmoothElastica` carries to ``tol`` (one ulp of the double k moves the end of
     a curve through a saddle by ~1e-16 / (1 - |k|)): the same elastica as 2 or 3
@@ -36,7 +37,7 @@ class HermiteChain:
     ends, with its tangent, the first at p0. Evaluation is by arc length over the
     whole curve, like a SmoothElastica's: ``points(s)``, ``angle(s)`` (continuous),
     ``curvature(s)``, ``energy()``, ``to_bspline(tol, degree)`` (one C2 B-spline), and
-    ``length``; ``k`` and ``mu`` are the first piece's (the pieces share |F| = 2 mu and
+    ``length``, ``loops``, ``crosses_itself``, ``max_curvature`` (shape.py); ``k`` and ``mu`` are the first piece's (the pieces share |F| = 2 mu and
     |k| up to its rounding), ``sigma`` the tension; plus the Hermite attributes
     ``energy_value``, ``has_inflection``, ``kappa0``, ``kappa1``, ``residual``.
     """
@@ -266,7 +267,10 @@ def hermite(p0, t0, p1, t1, tension: Optional[float] = None,
 
     - ``sigma``: the tension; ``energy_value``: integral of kappa^2 ds;
     - ``has_inflection``: whether the curvature changes sign;
-    - ``kappa0``, ``kappa1``: curvature at p0 and p1; ``residual``: end error.
+    - ``kappa0``, ``kappa1``: curvature at p0 and p1; ``residual``: end error;
+    - ``length``, and to pick the fair one (the order is by energy, and the least
+      energy can belong to a curve that loops): ``loops`` (self-crossings),
+      ``crosses_itself`` and ``max_curvature`` (largest |kappa|), computed on access.
 
     Every curve runs from ``p0`` (s = 0, tangent ``t0``) to ``p1`` (s = length,
     tangent ``t1``). The sign of ``k`` is the orientation: a loop (``|k| > 1``)

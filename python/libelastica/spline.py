@@ -153,6 +153,19 @@ def _end(spec, name: str, opt_end) -> None:
     opt_end.curvature = float(curvature)
 
 
+def _out_of_range(pts, chords) -> str:
+    """What the library's EL_EINVAL means for points that passed the checks above: outside
+    the range its pieces, Hermite elasticae, are solved in (el_hermite_solve's in elastica.h:
+    coordinates up to 1e100, chords from 1e-100 to 1e100; 1e+-200 got the generic "invalid
+    argument (NULL, NaN/inf, ...)", QA); '' when inside it."""
+    big, lo, hi = float(np.abs(pts).max()), float(chords.min()), float(chords.max())
+    if big <= 1e100 and 1e-100 <= lo and hi <= 1e100:
+        return ""
+    return (f"elastic_spline: coordinates up to {big:.3g}, chords from {lo:.3g} to {hi:.3g}: "
+            "outside the range the solver covers (its pieces are Hermite elasticae: "
+            "coordinates up to 1e100, chords from 1e-100 to 1e100); rescale the points")
+
+
 def elastic_spline(points, tension: Optional[float] = None, length: Optional[float] = None,
                    start=None, end=None, closed: bool = False, *, tol: float = 1e-10,
                    max_iter: int = 60, max_steps: int = 60, initial=None) -> ElasticSpline:
@@ -281,6 +294,10 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
                 + why)
             err.spline = ElasticSpline(res, pts, closed) if res.npieces else None
             raise err
+        if st == lib.EL_EINVAL:
+            why = _out_of_range(pts, chords)
+            if why:
+                raise DomainError(lib.EL_EDOM, why)
         check(st, "elastic_spline")   # raises: st is an error
         raise AssertionError(st)
     finally:

@@ -105,6 +105,34 @@ def test_same_output_twice_is_refused(work, capsys):
 
 
 @pytest.mark.parametrize("args", [
+    ["spline", "a.csv", "--tension", "1", "--json", "o.json", "--dxf", "o.json"],
+    ["spline", "a.csv", "--tension", "1", "--json", "o.svg", "--svg", "./o.svg"],
+    ["hermite", "0", "0", "1", "0", "1", "0", "1", "0", "--length", "4", "--json", "o.dxf",
+     "--dxf", "o.dxf"],
+    ["fit", "a.csv", "--json", "o.dxf", "--dxf", "o.dxf"],
+], ids=lambda a: " ".join(a))
+def test_two_outputs_to_one_path_are_refused(work, capsys, args):
+    """Two outputs to one path: exit 2 naming both options, before anything is written
+    (`spline --json o.json --dxf o.json` exited 0 with the DXF there, QA)."""
+    code, _, err = cli(capsys, *args)
+    assert code == 2 and "given twice" in err and len(err.strip().splitlines()) == 1
+    opts = [a for a in args if a.startswith("--") and a not in ("--tension", "--length")]
+    assert all(o in err for o in opts[-2:])
+    assert sorted(p.name for p in work.iterdir()) == ["a.csv"]
+
+
+def test_hermite_without_a_solution_writes_nothing(work, capsys):
+    """No Hermite solution: exit 1, one line, and no file (a JSON of "solutions": [] and an
+    empty picture were written, QA); to stdout neither."""
+    args = ["hermite", "0", "0", "1", "0", "1", "0", "-1", "0", "--tension", "0"]
+    code, out, err = cli(capsys, *args, "--json", "o.json", "--svg", "o.svg")
+    assert code == 1 and "no elastica" in err and len(err.strip().splitlines()) == 1
+    assert sorted(p.name for p in work.iterdir()) == ["a.csv"]
+    code, out, err = cli(capsys, *args, "--json", "-")
+    assert code == 1 and out == ""
+
+
+@pytest.mark.parametrize("args", [
     ["fit", "a.csv", "--model", "smooth", "--bspline-tol", "1e-6", "--degree", "99999999999999"],
     ["fit", "a.csv", "--max-iter", "99999999999999999999"],
     ["fit", "a.csv", "--step", "1e-9"],

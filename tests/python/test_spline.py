@@ -245,6 +245,33 @@ def test_bad_input_clear_errors(kwargs, exc, text):
         el.elastic_spline(**kwargs)
 
 
+@pytest.mark.parametrize("scale", [1e200, 1e-200])
+def test_points_beyond_the_range_name_it(scale):
+    """Points at 1e+-200 (the library's EL_EINVAL) name the range the pieces are solved in,
+    el_hermite_solve's (coordinates up to 1e100, chords 1e-100..1e100), not the generic
+    "invalid argument (NULL, NaN/inf, ...)"."""
+    P = np.array([[0, 0], [1, 0.5], [2, 0.3], [3, 1.0]]) * scale
+    with pytest.raises(el.DomainError, match=r"chords from 1e-100 to 1e100") as info:
+        el.elastic_spline(P)
+    assert "NULL" not in str(info.value)
+    el.elastic_spline(P / scale * 1e100)       # the range's own end is solved
+
+
+def test_bspline_tol_below_rounding_is_named():
+    """to_bspline(1e-20) of a spline, and --bspline-tol 1e-30: the tolerance below what
+    doubles certify, named with the smallest possible (not "piece 2 does not start where
+    piece 1 ends (gap 9e-16)": the joints' rounding)."""
+    sp = el.elastic_spline([[0, 0], [1, 0.5], [2, 0.3], [3, 1.0]])
+    with pytest.raises(el.DomainError, match="below what double precision resolves") as info:
+        sp.to_bspline(1e-20)
+    assert "does not start" not in str(info.value) and "smallest possible" in str(info.value)
+    ducks = os.path.join(os.path.dirname(__file__), "..", "..", "examples", "ducks.csv")
+    r = subprocess.run([sys.executable, "-m", "libelastica", "spline", ducks,
+                        "--tension", "0.5", "--bspline-tol", "1e-30"], capture_output=True,
+                       text=True, timeout=120)
+    assert r.returncode == 2 and "below what double precision resolves" in r.stderr
+
+
 def test_not_converged_says_what_it_holds():
     """A NotConvergedError says whether a spline was reached (the C text's "best result
     seen returned" is about the C call's result, not a raised exception's)."""

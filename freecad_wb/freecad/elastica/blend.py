@@ -48,31 +48,10 @@ def nearest_ends(e0, e1):
     return best[1], best[2]
 
 
-def self_intersections(xy):
-    """Crossings of a polyline with itself (neighbouring segments excluded): the
-    number of loops a user sees."""
-    n = np()
-    a, b = xy[:-1], xy[1:]
-    # segments i < j - 1 cross when each one's end points lie on both sides of the other
-    def side(p, q, r):
-        return (q[..., 0] - p[..., 0]) * (r[..., 1] - p[..., 1]) - \
-               (q[..., 1] - p[..., 1]) * (r[..., 0] - p[..., 0])
-    A, B = a[:, None], b[:, None]
-    C, D = a[None, :], b[None, :]
-    s1, s2 = side(A, B, C), side(A, B, D)
-    s3, s4 = side(C, D, A), side(C, D, B)
-    cross = (s1 * s2 < 0) & (s3 * s4 < 0)
-    i, j = n.indices(cross.shape)
-    return int(n.count_nonzero(cross & (j > i + 1)))
-
-
 def describe(curve):
-    """(inflections, loops, largest |curvature|) of a SmoothElastica."""
-    n = np()
-    s = n.linspace(0.0, curve.length, 400)
-    kappa = curve.curvature(s)
-    infl = len(el().elastica_inflections(curve))
-    return infl, self_intersections(curve.points(s)), float(n.max(n.abs(kappa)))
+    """(inflections, loops, largest |curvature|) of a SmoothElastica or Hermite chain:
+    the binding's descriptors (libelastica/shape.py), as `elastica hermite` shows them."""
+    return len(el().elastica_inflections(curve)), curve.loops, curve.max_curvature
 
 
 def blend_core(e0, at_end0, e1, at_end1, plane=None, mode="tension", value=0.0):
