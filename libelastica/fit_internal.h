@@ -398,7 +398,7 @@ int el__fit_wanders(fit_objective *ob, const double *x, int *strays, double nois
 int el__fit_fair_over_loop(fit_objective *ob, const double *x, double f, int *strays,
                            const double *best_x, double best_f, int *best_loops, double noise,
                            double *d, double *fs, double *tmp);
-/* fit_refit.c: idx (n entries) the indices 0..n-1 in the order of fs, ties by index;
+/* fit_feet.c: idx (n entries) the indices 0..n-1 in the order of fs, ties by index;
  * 0, or -1 when out of memory (NaN feet far out of order take n pairs of workspace) */
 int el__fit_feet_order(const double *fs, size_t *idx, size_t n);
 /* fit_refit.c: the smooth distances d and feet fs of the points at x (v its parameters,

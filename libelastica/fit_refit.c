@@ -4,7 +4,6 @@
  * (fit.c's refit).
  */
 #include "fit_internal.h"
-#include <gsl/gsl_sort.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -297,101 +296,6 @@ out:
     free(ord);
     free(unproven);
     return st;
-}
-
-typedef struct { double foot; size_t index; } foot_index;
-
-static int by_foot_then_index(const void *a, const void *b)
-{
-    const foot_index *x = a, *y = b;     /* a total order: a NaN foot after every number */
-    if (x->foot < y->foot) return -1;
-    if (x->foot > y->foot) return 1;
-    if (isnan(x->foot) != isnan(y->foot)) return isnan(x->foot) ? 1 : -1;
-    return (x->index > y->index) - (x->index < y->index);
-}
-
-static int by_index(const void *a, const void *b)
-{
-    const size_t x = *(const size_t *)a, y = *(const size_t *)b;
-    return (x > y) - (x < y);
-}
-
-/* Header: by insertion, linear in n where the feet are in order but for a few (qsort
- * cost 4 % of a 1000-point smooth fit); past FEET_ORDER_MOVES moves a point (the feet
- * far out of order, insertion's n^2 / 4 moves: 10^6 noisy points, each foot among ~10^3
- * neighbours) by GSL's heapsort of the indices, in place, then each run of equal feet by
- * index: the same order as insertion's. (qsort on (foot, index) pairs took 16 bytes a
- * point and glibc's merge buffer as much: a 10^6-point smooth fit's peak 65 -> 88 MiB;
- * gsl_sort_index: none, and 255 against 307 ms there.) NaN feet, which neither
- * insertion's nor GSL's comparisons order, by the pairs: NaN last. */
-#define FEET_ORDER_MOVES 32
-#define FEET_PER_BUCKET 16
-/* Insertion of idx (n indices into fs) into the order of their feet, equal feet keeping
- * their order; stops past budget moves: whether it finished. */
-static int insertion_within(const double *fs, size_t *idx, size_t n, size_t budget)
-{
-    size_t moves = 0;
-    for (size_t k = 1; k < n && moves <= budget; k++) {
-        const size_t t = idx[k];
-        size_t j = k;
-        for (; j > 0 && fs[idx[j - 1]] > fs[t]; j--) idx[j] = idx[j - 1];
-        idx[j] = t;
-        moves += k - j;
-    }
-    return moves <= budget;
-}
-
-/* The feet (no NaN) in n / FEET_PER_BUCKET buckets of equal arc length (their counts 0.5 MiB
- * for 10^6 points, below the fit's peak), each point's index placed in its
- * bucket in index order, then insertion within the buckets: linear where the feet spread
- * along the curve, as a fit's do (10^6 noisy points: the heapsort below was ~40 % of the
- * fit, and of the report of where it wanders), the same order as insertion's (equal feet
- * share a bucket, in index order). 1 where insertion passes budget moves (feet piled in
- * a few buckets) or out of memory: the caller sorts otherwise. */
-static int bucket_order(const double *fs, size_t *idx, size_t n, size_t budget)
-{
-    double lo = fs[0], hi = fs[0];
-    for (size_t k = 1; k < n; k++) { lo = fmin(lo, fs[k]); hi = fmax(hi, fs[k]); }
-    if (!(hi > lo)) {
-        for (size_t k = 0; k < n; k++) idx[k] = k;
-        return 0;
-    }
-    const size_t nb = n / FEET_PER_BUCKET + 1;
-    size_t *start = calloc(nb + 1, sizeof *start);
-    if (!start) return 1;
-    const double scale = (double)(nb - 1) / (hi - lo);
-#define FOOT_BUCKET(k) ((size_t)fmin((double)(nb - 1), (fs[k] - lo) * scale))
-    for (size_t k = 0; k < n; k++) start[FOOT_BUCKET(k) + 1]++;
-    for (size_t b = 0; b < nb; b++) start[b + 1] += start[b];
-    for (size_t k = 0; k < n; k++) idx[start[FOOT_BUCKET(k)]++] = k;
-#undef FOOT_BUCKET
-    free(start);
-    return !insertion_within(fs, idx, n, budget);
-}
-
-int el__fit_feet_order(const double *fs, size_t *idx, size_t n)
-{
-    int any_nan = 0;
-    for (size_t k = 0; k < n; k++) any_nan |= isnan(fs[k]);
-    if (any_nan) {
-        foot_index *pairs = malloc(sizeof *pairs * n);
-        if (!pairs) return -1;
-        for (size_t k = 0; k < n; k++) { pairs[k].foot = fs[k]; pairs[k].index = k; }
-        qsort(pairs, n, sizeof *pairs, by_foot_then_index);
-        for (size_t k = 0; k < n; k++) idx[k] = pairs[k].index;
-        free(pairs);
-        return 0;
-    }
-    const size_t budget = FEET_ORDER_MOVES * n;
-    for (size_t k = 0; k < n; k++) idx[k] = k;
-    if (insertion_within(fs, idx, n, budget)) return 0;
-    if (!bucket_order(fs, idx, n, budget)) return 0;
-    gsl_sort_index(idx, fs, 1, n);
-    for (size_t a = 0, b; a < n; a = b) {
-        for (b = a + 1; b < n && fs[idx[b]] == fs[idx[a]]; b++) {}
-        if (b - a > 1) qsort(idx + a, b - a, sizeof *idx, by_index);
-    }
-    return 0;
 }
 
 /* The gap k along the curve (between the feet idx[k], idx[k + 1]; idx NULL: in order) as
