@@ -4,8 +4,8 @@
  * (the same sigma and kappa0) and their count. A second check beside make hermite-sets: a
  * looser trace corrector kept every solution of the sets but missed 4 more of the 138 304
  * solutions of seeds 31337, 777 and 4242 (main misses 2, problems 2947 and 9031 of seed 777).
- *   cc -Iinclude bench/sets/length_recovers_tension.c build/libelastica.a $(pkg-config --libs gsl ipopt) -lm
- *   ./a.out GRID PROBLEMS [SEED]     (6 20000 31337: about 25 s) */
+ * make length-recovers runs it on those three seeds; by hand: build/length-recovers GRID PROBLEMS
+ * [SEED] (6 20000 31337: about 25 s). */
 #include "elastica.h"
 #include <math.h>
 #include <stdio.h>
