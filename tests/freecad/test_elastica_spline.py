@@ -135,11 +135,23 @@ class SplineTest(unittest.TestCase):
         sk = S.points_sketch(self.doc, spike, "Spike")
         s = self.spline([(sk, [])], Tension=1.25e-4)
         self.assertNotIn("loops", s.Status)
+        self.assertEqual(list(s.Warnings), [])
         self.assertLess(s.SplineLength, 1.3 * 390.2498439450079)
-        s.Tension = 1.25e-5
-        self.doc.recompute()
-        self.assertTrue(s.Status.startswith("ok") and "loops away from its points" in s.Status,
-                        s.Status)
+        # a warning as the end-off-edge one (it was a note in the Status only: the panel's
+        # warning row stayed hidden, the report view said nothing): Warnings, the Status,
+        # the report view once per change
+        said, console = [], App.Console.PrintWarning
+        App.Console.PrintWarning = said.append
+        try:
+            for t in (1.25e-5, 1.2e-5):
+                s.Tension = t
+                self.doc.recompute()
+        finally:
+            App.Console.PrintWarning = console
+        self.assertEqual(len(s.Warnings), 1, s.Warnings)
+        self.assertIn("loops away from its points", s.Warnings[0])
+        self.assertTrue(s.Status.startswith("ok; warning: the batten loops away"), s.Status)
+        self.assertEqual([w for w in said if "loops" in w], [f"Elastica {s.Label}: {s.Warnings[0]}\n"])
 
     def test_tension_pulls_the_batten_shorter(self):
         lengths = [self.spline(Tension=t).SplineLength for t in (0.0, 1e-4, 1e-3, 1e-2)]

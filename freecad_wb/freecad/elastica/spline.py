@@ -204,7 +204,7 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
     if note:
         notes.append(note)
     if sp.loops:
-        notes.append("the batten loops away from its points (it crosses itself, or is longer "
+        warnings.append("the batten loops away from its points (it crosses itself, or is longer "
                      "than 4 x their polygon): no fair batten at this tension; raise the "
                      "tension or give a length")
     for j, name in ((0, "first"), (-1, "last")):
