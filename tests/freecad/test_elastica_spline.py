@@ -397,6 +397,29 @@ class SplineTest(unittest.TestCase):
         self.assertAlmostEqual(s.Energy, ref.Energy, delta=1e-9 * ref.Energy)
         self.assertAlmostEqual(s.Shape.Length, ref.Shape.Length, delta=1e-9 * ref.Shape.Length)
 
+    def test_a_sketch_of_ducks_keeps_the_order_drawn(self):
+        """A spike drawn (0,0) (100,0) (105,100) (110,0) (200,0): its ducks in that order (curve
+        order took them as (0,0) (100,0) (110,0) (200,0) (105,100), a 902 mm teardrop at
+        3e-5 / mm^2 with Status ok, QA), and no warning about the order."""
+        spike = [(0, 0), (100, 0), (105, 100), (110, 0), (200, 0)]
+        s = self.spline([(S.points_sketch(self.doc, spike, "Spike"), [])], Tension=1.25e-4)
+        inv = s.Plane.inverse()
+        self.assertEqual([tuple(round(c, 6) for c in inv.multVec(p))[:2] for p in s.Ducks],
+                         [(float(x), float(y)) for x, y in spike])
+        self.assertEqual(list(s.Warnings), [])
+
+    def test_ducks_taken_in_another_order_than_drawn_is_a_warning(self):
+        """The sketch with a duck added last (its polygon as drawn crosses itself) is taken
+        in curve order: the Warnings say so, with the order used and how to choose one."""
+        xy = [(0, 0), (20, 8), (40, 12), (60, 10), (80, 4), (100, -5)]
+        s = self.spline([(S.points_sketch(self.doc, xy[:3] + xy[4:] + [xy[3]], "Late"), [])])
+        self.assertEqual(len(s.Warnings), 1, s.Warnings)
+        self.assertIn("Late's points are taken in the order along them (1, 2, 3, 6, 4, 5), not "
+                      "as drawn", s.Warnings[0])
+        self.assertIn("pick the points one by one in that order", s.Warnings[0])
+        self.assertIn("warning: Late's points are taken", s.Status)
+        self.assertEqual(list(self.spline().Warnings), [])          # DUCKS, in order
+
     def test_a_moved_points_object_is_taken_where_it_is_drawn(self):
         """A Points object moved by its Placement: its points are placed already (the
         workbench placed them again: ducks up to 54.8 mm from the points drawn, QA)."""

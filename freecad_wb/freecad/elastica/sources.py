@@ -413,15 +413,54 @@ def in_curve_order(points):
     return [points[i] for i in curve_order(xy)]
 
 
-def object_points(obj, curve_ordered=False):
+def polygon_crosses(xy):
+    """Whether the polyline through the rows of xy crosses itself (two segments that are
+    not neighbours cross properly; O(n^2) pairs, for a sketch's few ducks)."""
+    n = np()
+    a, b = xy[:-1], xy[1:]
+    if len(a) < 3:
+        return False
+
+    def side(p, q, r):        # (m, m): the side of r[j] of the line p[i] -> q[i]
+        d = q - p
+        return n.sign(d[:, None, 0] * (r[None, :, 1] - p[:, None, 1])
+                      - d[:, None, 1] * (r[None, :, 0] - p[:, None, 0]))
+
+    straddles = side(a, b, a) * side(a, b, b) < 0     # [i, j]: segment j straddles line i
+    return bool(n.any(n.triu(straddles & straddles.T, 2)))
+
+
+def duck_order(obj, pts, said):
+    """A sketch's points as a spline's ducks: in the order drawn (geometry index), the
+    designer's, unless its polygon crosses itself where curve_order's does not (a duck
+    added later between two others, QA: the free batten slid off it); then in curve order,
+    said in ``said``. Curve order alone took a spike's five ducks (0,0) (100,0) (105,100)
+    (110,0) (200,0) as (0,0) (100,0) (110,0) (200,0) (105,100), a 902 mm teardrop (QA)."""
+    if len(pts) < 4:
+        return pts
+    try:
+        xy, _ = el().plane_fit(np().array([tuple(p) for p in pts], dtype=float))
+    except (ValueError, ArithmeticError):
+        return pts
+    order = curve_order(xy)
+    if not polygon_crosses(xy) or polygon_crosses(xy[order]):
+        return pts
+    shown = ", ".join(str(i + 1) for i in order[:12]) + (", ..." if len(order) > 12 else "")
+    said.append(f"{obj.Label}'s points are taken in the order along them ({shown}), not as "
+                "drawn: the polygon through them in the order drawn crosses itself; to "
+                "choose the order, pick the points one by one in that order")
+    return [pts[i] for i in order]
+
+
+def object_points(obj, curve_ordered=False, said=None):
     """The points of a whole object, in order: a sketch's sketch points (else the
-    vertices of its one wire; ``curve_ordered``: in curve order, as a fit takes them), a
-    Points object's points in curve order (in_curve_order), the vertices of a wire along
-    it, else a shape's vertices."""
+    vertices of its one wire; ``curve_ordered``: as a spline's ducks, duck_order, its
+    warning added to the list ``said``), a Points object's points in curve order
+    (in_curve_order), the vertices of a wire along it, else a shape's vertices."""
     if is_sketch(obj):
         pts = sketch_points(obj)
         if pts or obj.Shape.isNull():
-            return in_curve_order(pts) if curve_ordered else pts
+            return duck_order(obj, pts, [] if said is None else said) if curve_ordered else pts
     if obj.isDerivedFrom("Points::Feature"):
         # Points.Points are placed by the object's own Placement (the kernel's transform):
         # a scan moved by it was fitted twice as far (QA); global_points adds its containers'
@@ -450,14 +489,16 @@ def _closed_curves(obj):
 
 
 def gather_vertices(sources, need="four vertices, or a sketch of four points",
-                    edge_means_object=False, curve_ordered=False, link=None, element=None):
+                    edge_means_object=False, curve_ordered=False, link=None, element=None,
+                    said=None):
     """Picked points in selection order, without merging coincident ones: vertices
     of sketches or shapes ('VertexN'), or whole objects (``object_points``: a
     sketch's points, a Points object, a wire's vertices in order). ``need`` says
     what to select when nothing is; ``edge_means_object``: a picked edge stands for
     its whole object (a click on a Draft wire picks one of its edges);
-    ``curve_ordered``: a whole sketch's points in curve order (a spline's ducks; an
-    elliptic blend's control points keep the order they were made in); ``link``: the
+    ``curve_ordered``: a whole sketch's points as a spline's ducks (duck_order, its warning
+    added to the list ``said``; an elliptic blend's control points keep the order they were
+    made in); ``link``: the
     feature's property the sources come from (None: a selection; see nothing_read);
     ``element``: reads a picked vertex (as gather_points'). Returns (points, plane: the sketch
     placement when all come from one sketch, else None)."""
@@ -476,7 +517,7 @@ def gather_vertices(sources, need="four vertices, or a sketch of four points",
             if closed:
                 raise InputProblem(f"{obj.Label} holds {closed}, without points to go through: "
                                    f"select {need}")
-            pts.extend(object_points(obj, curve_ordered))
+            pts.extend(object_points(obj, curve_ordered, said))
             continue
         for s in subs:
             if not s.startswith("Vertex"):

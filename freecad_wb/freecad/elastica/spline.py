@@ -286,8 +286,9 @@ class SplineProxy(FeatureProxy):
         add_property(obj, "App::PropertyInteger", "Poles", "Result", "Poles of the B-spline")
         add_property(obj, "App::PropertyString", "Status", "Result", "Outcome of the last solve")
         add_property(obj, "App::PropertyStringList", "Warnings", "Result",
-                     "What the designer should know: an end edge that the spline does not meet "
-                     "(empty: none)")
+                     "What the designer should know: an end edge that the spline does not meet, "
+                     "a batten that loops away from its points, ducks taken in another order "
+                     "than drawn (empty: none)")
         add_property(obj, "App::PropertyString", "Curves", "Result",
                      "The spline's pieces (JSON, plane coordinates)")
         add_property(obj, "App::PropertyPlacement", "Plane", "Result", "The plane of the spline")
@@ -315,10 +316,14 @@ class SplineProxy(FeatureProxy):
         check_number("Stiffness", obj.Stiffness, 0.0, None, "N mm^2", why="0 shows the duck "
                      "forces in units of EI/2")
         element = followed_reader(obj, "Points")      # renames Points: read it after
+        said = []                                     # ducks taken in another order
         pts, plane = gather_vertices(obj.Points, DUCKS_NEED, edge_means_object=True,
-                                     curve_ordered=True, link="Points", element=element)
-        return spline_core(pts, plane, obj.Mode, obj.Tension, float(obj.Length), obj.Closed,
-                           *self.end_specs(obj), tol=float(obj.Tolerance), degree=obj.Degree)
+                                     curve_ordered=True, link="Points", element=element,
+                                     said=said)
+        r = spline_core(pts, plane, obj.Mode, obj.Tension, float(obj.Length), obj.Closed,
+                        *self.end_specs(obj), tol=float(obj.Tolerance), degree=obj.Degree)
+        r["warnings"] = said + r["warnings"]
+        return r
 
     def apply(self, obj, r):
         sp, plc, bs = r["spline"], r["placement"], r["bspline"]
