@@ -18,6 +18,7 @@ discrete model: its warning line), gui_fit_outliers.png (a scan's two glitches o
 the warning line), gui_spline_g2.png (a G2 start),
 gui_spline_panel.png, gui_ellblend_panel.png (its warning line), gui_g2quad_panel.png,
 gui_comb_panel.png, gui_blend_no_free_batten.png (the note why by length),
+gui_spline_spike.png (the note why at a tension), gui_spline_loops.png (its warning line),
 gui_blend_undo.png and gui_fit_undo.png (Edit > Undo during an edit:
 the panel closed); gui_panel_lifecycle.py's gui_close_with_panel.png,
 gui_delete_during_panel.png and gui_keep_needs_copy.png. The outcome goes
@@ -572,6 +573,40 @@ def spline_panel(doc, S):
     return s
 
 
+def spline_panel_spike(doc, S):
+    """A spike of ducks no free batten passes (QA: the command made nothing, and its
+    message asked for a tension or a length in fields the user could not reach): the
+    feature is made at a tension, its panel opens with the note on the warning line; a
+    lower tension where the batten loops puts that on the warning line (it was in the
+    Status only). Screenshots gui_spline_spike.png, gui_spline_loops.png. Cancel."""
+    from freecad.elastica import panelbase, taskpanels as T
+    sk = S.points_sketch(doc, [(0, 0), (100, 0), (105, 100), (110, 0), (200, 0)], "Spike",
+                         App.Placement(App.Vector(0, 0, -150), App.Rotation()))
+    names = [o.Name for o in doc.Objects]
+    panel = open_panel(doc, "Elastica_Spline", [(sk, "")], "Spline without a free batten")
+    s = panel.obj
+    said = panel.warning[1].text()
+    check(s.Status == "ok" and s.Tension == 6.57e-5 and abs(panel.tension.value() - s.Tension)
+          < 1e-12 and panel.warning[0].isVisible() and "No free batten" in said and
+          "6.57e-05" in said, f"spline without a free batten: made at a tension, the panel "
+          f"says why ({s.Status}; {said})")
+    Gui.Selection.clearSelection()
+    Gui.ActiveDocument.ActiveView.setCameraOrientation(s.Plane.Rotation)
+    panelbase.show_box(s.Shape.BoundBox)
+    screenshot("gui_spline_spike.png")
+    panel.tension.setValue(1.25e-5)
+    wait()
+    said = panel.warning[1].text()
+    check(s.Status.startswith("ok; warning:") and "loops away" in said and
+          panel.warning[0].isVisible(), f"spline that loops: on the warning line ({said})")
+    panelbase.show_box(s.Shape.BoundBox)
+    screenshot("gui_spline_loops.png")
+    panel.reject()
+    pump()
+    check([o.Name for o in doc.Objects] == names and not T.CURRENT,
+          "spline without a free batten: Cancel removes it")
+
+
 # ------------------------------------------------------------------ fit
 
 def fit_panel(doc, S):
@@ -941,6 +976,7 @@ def run():
     doc = S.new_doc("ElasticaSmoke")
     blend = blend_panel(doc, S)
     spline_panel(doc, S)
+    spline_panel_spike(doc, S)
     ksk = fit_panel(doc, S)
     fit_panel_sparse(doc, S)
     fit_panel_far_points(doc, S)

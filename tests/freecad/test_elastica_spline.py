@@ -506,7 +506,7 @@ class SplineTest(unittest.TestCase):
                  ([(self.sk, [])], {"Mode": "length", "Length": 100.0}, "any length above"),
                  ([(self.sk, [])], {"Tension": -1e-3}, "Tension = -0.001"),
                  ([(self.sk, [])], {"Tension": float("nan")}, "Tension = nan"),
-                 ([(zigzag, [])], {}, "slides off"),
+                 ([(zigzag, [])], {"Tension": 0.0}, "slides off"),
                  ([(arch, [])], {"Mode": "length", "Length": 1000.0},
                   f"no equilibrium found at Length = 1000 mm: the solver did not converge; the free "
                   f"batten through these points is {free:.6g} mm long"),
@@ -546,6 +546,29 @@ class SplineTest(unittest.TestCase):
             setattr(s, prop, old)
         self.doc.recompute()
         self.assertTrue(s.Status.startswith("ok"), s.Status)
+
+    def test_no_free_batten_the_command_starts_at_a_tension(self):
+        """The spike's ducks: no free batten passes them. The command made nothing and
+        opened no panel, its message asking for a tension or a length the user could not
+        reach (QA); now the feature is made at the least tension of TENSION_MULTIPLES / P^2
+        whose batten does not loop (10 / (390.2 mm)^2), and the message says so (the
+        panel's warning line: the GUI smoke test)."""
+        spike = [(0, 0), (100, 0), (105, 100), (110, 0), (200, 0)]
+        sk = S.points_sketch(self.doc, spike, "Spike")
+        n0 = len(self.doc.Objects)
+        del C.MESSAGES[:]
+        s = C.spline_sources([(sk, [])], open_panel=False)
+        self.assertIsNotNone(s, C.MESSAGES)
+        self.assertEqual(len(self.doc.Objects), n0 + 1)
+        self.assertEqual((s.Mode, s.Tension), ("tension", 6.57e-5))
+        self.assertEqual((s.Status, list(s.Warnings)), ("ok", []))
+        self.assertLess(s.SplineLength, 1.4 * 390.2498439450079)
+        self.assertTrue(any("no free batten (tension 0) passes these points" in m and
+                            "Tension = 6.57e-05" in m and "give a length" in m
+                            for m in C.MESSAGES), C.MESSAGES)
+        s.Tension = 3.28e-5                    # 5 / P^2: it loops
+        self.doc.recompute()
+        self.assertIn("loops away", " ".join(s.Warnings))
 
     def test_command_records_a_feature(self):
         s = C.spline_sources([(self.sk, [])], open_panel=False, Tension=1e-4)

@@ -266,13 +266,26 @@ def spline_sources(sources, open_panel=True, **options):
     opts.update(options)
 
     def check():
+        """The free batten (the default); where none passes the points, a tension whose
+        batten does not loop (spline.starting_tension): the feature is made at it and its
+        panel opens, where the designer changes it. A mode or tension given: as given."""
         pts, plane = src_mod.gather_vertices(sources, spline.DUCKS_NEED, edge_means_object=True,
                                              curve_ordered=True)
         if "Closed" not in opts:
             opts["Closed"] = len(pts) > 3 and (pts[0] - pts[-1]).Length < 1e-9
-        spline.spline_core(pts, plane, opts.get("Mode", "tension"), opts.get("Tension", 0.0),
-                           opts.get("Length", 0.0), opts["Closed"], tol=opts["Tolerance"],
-                           degree=opts.get("Degree", spline.BSPLINE_DEGREE))
+        degree = opts.get("Degree", spline.BSPLINE_DEGREE)
+        try:
+            spline.spline_core(pts, plane, opts.get("Mode", "tension"), opts.get("Tension", 0.0),
+                               opts.get("Length", 0.0), opts["Closed"], tol=opts["Tolerance"],
+                               degree=degree)
+            return None
+        except spline.NoSpline:
+            if "Mode" in options or "Tension" in options:     # asked for: said as it is
+                raise
+            tension, note = spline.starting_tension(pts, plane, opts["Closed"],
+                                                    opts["Tolerance"], degree)
+        opts["Tension"] = tension
+        return note
 
     return _check_and_create(
         "Elastic spline", "elastic spline", check,

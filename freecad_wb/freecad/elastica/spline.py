@@ -31,6 +31,11 @@ DUCKS_NEED = ("points: sketch points or vertices, a sketch of points, a Points o
               "Draft wire / polyline")
 
 
+class NoSpline(InputProblem):
+    """Good points, but no batten passes them at this tension or length (another tension
+    or length may give one): not bad input."""
+
+
 def _library_message(exc):
     return str(exc).replace("elastic_spline: ", "")
 
@@ -78,7 +83,8 @@ def _tangent_only(spec):
 
 
 def _solve(xy, mode, value, closed, start, end):
-    """el.elastic_spline with the accepted-residual rule; InputProblem for the rest.
+    """el.elastic_spline with the accepted-residual rule; NoSpline when no batten passes the
+    points at this tension or length, InputProblem for the rest.
     When a spline with G2 ends fails, the same with tangent ends is tried: if that
     one exists, the message blames the G2 end (its span found no tension)."""
     e = el()
@@ -117,7 +123,7 @@ def _solve(xy, mode, value, closed, start, end):
                        + "); use a tangent end, or move the point next to it")
         except ValueError:
             pass
-    raise InputProblem(failure)
+    raise NoSpline(failure)
 
 
 def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, closed=False,
@@ -217,6 +223,36 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
         raise InputProblem(f"B-spline: {_library_message(exc)}") from None
     return {"spline": sp, "bspline": bs, "placement": plane, "forces": duck_forces(sp),
             "notes": notes, "warnings": warnings}
+
+
+# sigma P^2 (P: the polygon through the points): where no free batten passes the points,
+# the Elastic spline command starts at the least of these whose batten does not loop (the
+# QA's spike, P = 390 mm: loops up to 5, 1.33 P long at 10; a zigzag: 1.35 P at 1)
+TENSION_MULTIPLES = (1, 2, 5, 10, 20, 50, 100, 200, 500, 1000)
+
+
+def starting_tension(points, plane=None, closed=False, tol=1e-3, degree=BSPLINE_DEGREE):
+    """A tension to start a spline by, where the free batten does not pass the points: the
+    least of TENSION_MULTIPLES / P^2 (3 digits) whose batten does not loop. Returns
+    (tension, note for the user); raises NoSpline when none of them gives one."""
+    pts = list(points) + (list(points[:1]) if closed else [])
+    polygon = sum((b - a).Length for a, b in zip(pts, pts[1:]))
+    for m in TENSION_MULTIPLES:
+        tension = float(f"{m / polygon ** 2:.3g}")
+        try:
+            r = spline_core(points, plane, "tension", tension, closed=closed, tol=tol,
+                            degree=degree)
+        except NoSpline:
+            continue
+        if not r["spline"].loops:
+            return tension, (f"no free batten (tension 0) passes these points (it slides off "
+                             f"its ducks): solved at Tension = {tension:g} 1/mm\u00b2 instead "
+                             f"({m:g} / the {polygon:.4g} mm polygon through them squared, the "
+                             f"least of {TENSION_MULTIPLES[0]:g} to {TENSION_MULTIPLES[-1]:g} "
+                             "whose batten does not loop); change it, or give a length")
+    raise NoSpline("no free batten (tension 0) passes these points (it slides off its ducks), "
+                   f"nor one without loops at {TENSION_MULTIPLES[0]:g} to "
+                   f"{TENSION_MULTIPLES[-1]:g} / the polygon through them squared: give a length")
 
 
 class SplineProxy(FeatureProxy):
@@ -368,4 +404,4 @@ def make(doc, sources=(), **props):
                        Points=[(o, tuple(s) or ("",)) for o, s in sources], **props)
 
 
-__all__ = ["SplineProxy", "spline_core", "make", "duck_forces", "MODES", "END_CONDITIONS"]
+__all__ = ["SplineProxy", "NoSpline", "spline_core", "starting_tension", "make", "duck_forces", "MODES", "END_CONDITIONS"]
