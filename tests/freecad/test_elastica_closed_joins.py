@@ -13,6 +13,7 @@ import Part
 import elastica_samples as S
 from elastica_samples import curvature_vector
 from freecad.elastica import blend as Bl
+from freecad.elastica import commands as C
 from freecad.elastica import fit as Fi
 from freecad.elastica import spline as Sp
 
@@ -72,6 +73,21 @@ class ClosedJoinTest(unittest.TestCase):
             self.assertIn("Edge1 (Closed.Edge1) is a closed edge (a full circle)", b.Status)
             self.doc.removeObject(b.Name)
             self.doc.recompute()
+
+    def test_the_blend_command_refuses_a_closed_edge_with_a_message(self):
+        """QA: the command made an invalid feature, opened its panel on the error, and the
+        report view showed a Python traceback for this input error. Now it is bad input as
+        any other: the message alone, nothing made (a panel could not help: no tension or
+        length gives a circle an end)."""
+        for picks, first in ((("Edge1", "Edge2"), "Edge1 is a closed edge (a full circle)"),
+                             (("Edge2", "Edge1"), "Edge2 is a closed edge (a full ellipse)")):
+            before = S.doc_state(self.doc)
+            del C.MESSAGES[:]
+            self.assertIsNone(C.blend_sources([(self.sk, [p]) for p in picks], open_panel=False))
+            self.assertEqual(C.MESSAGES, [f"Closed.{first}: a blend leaves an edge at an end "
+                                          "vertex and it has none; use an arc of it (trim or "
+                                          "split it), or an elastic spline with an end on it"])
+            self.assertEqual(S.doc_state(self.doc), before)
 
     def test_a_fit_joins_no_closed_edge_but_takes_its_tangent_nearest(self):
         # points leaving the circle's top to the right

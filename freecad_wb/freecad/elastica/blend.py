@@ -37,6 +37,15 @@ class NoBlend(InputProblem):
     tension or length may give one): not bad input."""
 
 
+def check_open(edge, what):
+    """InputProblem when ``edge`` (named ``what``) is closed: its seam (parameter 0) is no
+    end to blend from."""
+    if edge.isClosed():
+        raise InputProblem(f"{what} is a closed edge (a full {type(edge.Curve).__name__.lower()}"
+                           "): a blend leaves an edge at an end vertex and it has none; use an "
+                           "arc of it (trim or split it), or an elastic spline with an end on it")
+
+
 def nearest_ends(e0, e1):
     """(at_end0, at_end1): the pair of ends of two edges closest to each other."""
     best = None
@@ -382,11 +391,7 @@ class BlendProxy(FeatureProxy):
             edge = followed_edge(obj, prop)
             if edge is None:
                 raise InputProblem(f"{prop} is empty: a blend needs two edges: link {prop}")
-            if edge.isClosed():   # its seam (parameter 0) is no end to blend from
-                raise InputProblem(f"{prop} ({link[0].Label}.{link[1][0]}) is a closed edge (a "
-                                   f"full {type(edge.Curve).__name__.lower()}): a blend leaves an edge "
-                                   "at an end vertex and it has none; use an arc of it (trim or "
-                                   "split it), or an elastic spline with an end on it")
+            check_open(edge, f"{prop} ({link[0].Label}.{link[1][0]})")
             out.append(edge)
         return out
 
@@ -494,6 +499,6 @@ def copy_into_sketch(blend, sketch=None):
     return write_to_sketch(blend, sketch or blend.Edge1[0])[0]
 
 
-__all__ = ["BlendProxy", "NoBlend", "blend_core", "starting_length", "g2_blend", "make",
+__all__ = ["BlendProxy", "NoBlend", "check_open", "blend_core", "starting_length", "g2_blend", "make",
            "copy_into_sketch", "nearest_ends",
            "edge_end", "MODES", "CONTINUITIES"]

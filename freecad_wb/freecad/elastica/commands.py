@@ -225,6 +225,8 @@ def blend_sources(sources, open_panel=True):
         same), a length that gives blends (blend.starting_length): the feature is made
         by it and its panel opens, where the designer changes it."""
         e1, e2 = global_element(*edges[0]), global_element(*edges[1])
+        for (obj, sub), e in zip(edges, (e1, e2)):   # bad input: no feature, a message
+            blend.check_open(e, f"{obj.Label}.{sub}")
         a, b = blend.nearest_ends(e1, e2)
         plane = None
         if edges[0][0] == edges[1][0] and is_sketch(edges[0][0]):
