@@ -13,11 +13,14 @@ __all__ = ["self_crossings", "ShapeDescriptors"]
 #: Samples of a curve whose polyline is tested for self-crossings (as FreeCAD's blend
 #: panel always drew and counted them).
 CROSSING_SAMPLES = 400
+#: Rows of segment pairs tested at once by self_crossings.
+CROSSING_BLOCK = 256
 
 
 def self_crossings(xy) -> int:
     """Crossings of a polyline with itself (neighbouring segments excluded): the
-    number of loops a user sees."""
+    number of loops a user sees. The segment pairs in blocks of CROSSING_BLOCK rows, so a
+    polyline of many points (a sketch's ducks) needs O(n) memory, not O(n^2)."""
     xy = np.asarray(xy, dtype=np.float64)
     a, b = xy[:-1], xy[1:]
 
@@ -25,13 +28,16 @@ def self_crossings(xy) -> int:
     def side(p, q, r):
         return (q[..., 0] - p[..., 0]) * (r[..., 1] - p[..., 1]) - \
                (q[..., 1] - p[..., 1]) * (r[..., 0] - p[..., 0])
-    A, B = a[:, None], b[:, None]
     C, D = a[None, :], b[None, :]
-    s1, s2 = side(A, B, C), side(A, B, D)
-    s3, s4 = side(C, D, A), side(C, D, B)
-    cross = (s1 * s2 < 0) & (s3 * s4 < 0)
-    i, j = np.indices(cross.shape)
-    return int(np.count_nonzero(cross & (j > i + 1)))
+    count = 0
+    for i0 in range(0, len(a), CROSSING_BLOCK):
+        A, B = a[i0:i0 + CROSSING_BLOCK, None], b[i0:i0 + CROSSING_BLOCK, None]
+        s1, s2 = side(A, B, C), side(A, B, D)
+        s3, s4 = side(C, D, A), side(C, D, B)
+        cross = (s1 * s2 < 0) & (s3 * s4 < 0)
+        i, j = np.indices(cross.shape)
+        count += int(np.count_nonzero(cross & (j > i + i0 + 1)))
+    return count
 
 
 def _piece_max_curvature(p) -> float:

@@ -413,23 +413,6 @@ def in_curve_order(points):
     return [points[i] for i in curve_order(xy)]
 
 
-def polygon_crosses(xy):
-    """Whether the polyline through the rows of xy crosses itself (two segments that are
-    not neighbours cross properly; O(n^2) pairs, for a sketch's few ducks)."""
-    n = np()
-    a, b = xy[:-1], xy[1:]
-    if len(a) < 3:
-        return False
-
-    def side(p, q, r):        # (m, m): the side of r[j] of the line p[i] -> q[i]
-        d = q - p
-        return n.sign(d[:, None, 0] * (r[None, :, 1] - p[:, None, 1])
-                      - d[:, None, 1] * (r[None, :, 0] - p[:, None, 0]))
-
-    straddles = side(a, b, a) * side(a, b, b) < 0     # [i, j]: segment j straddles line i
-    return bool(n.any(n.triu(straddles & straddles.T, 2)))
-
-
 def duck_order(obj, pts, said):
     """A sketch's points as a spline's ducks: in the order drawn (geometry index), the
     designer's, unless its polygon crosses itself where curve_order's does not (a duck
@@ -443,7 +426,8 @@ def duck_order(obj, pts, said):
     except (ValueError, ArithmeticError):
         return pts
     order = curve_order(xy)
-    if not polygon_crosses(xy) or polygon_crosses(xy[order]):
+    crossings = el().shape.self_crossings     # the binding's (the Hermite table's loops)
+    if not crossings(xy) or crossings(xy[order]):
         return pts
     shown = ", ".join(str(i + 1) for i in order[:12]) + (", ..." if len(order) > 12 else "")
     said.append(f"{obj.Label}'s points are taken in the order along them ({shown}), not as "
