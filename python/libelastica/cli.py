@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import re
 import sys
 import warnings
 from typing import Optional, Sequence
@@ -44,7 +45,10 @@ HERMITE_EXAMPLES = """examples:
 The solutions are listed by bending energy; the least can belong to a curve that loops:
 'loops' counts its self-crossings, 'crosses itself' marks it (a batten cannot), and the
 fair ones are named under the table (also in the JSON: loops, crosses_itself,
-max_curvature, length). No solution: exit 1 and nothing is written."""
+max_curvature, length). Curves that exist but that no smooth parameters meet to --tol are
+counted under the table (and in the JSON's unrepresentable), with the --tol that returns
+them; none is named fair while they are missing. No solution: exit 1 and nothing is
+written."""
 
 BSPLINE_EXAMPLES = """examples:
   elastica fit points.csv --model smooth --json fit.json
@@ -63,7 +67,15 @@ G2QUAD_EXAMPLES = """examples:
 
 
 class _Parser(argparse.ArgumentParser):
-    """argparse with usage errors as ONE line on stderr (exit 2)."""
+    """argparse with usage errors as ONE line on stderr (exit 2), and negative numbers
+    with an exponent taken as numbers."""
+
+    def __init__(self, *a, **kw):
+        super().__init__(*a, **kw)
+        # argparse takes '-1e-8' and '-5e3' for options (its negative-number pattern has no
+        # exponent: `hermite ... 1 -1e-8` failed "arguments are required: V"); no option of
+        # the CLI looks like a number, so every one of them is a number
+        self._negative_number_matcher = re.compile(r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$")
 
     def error(self, message: str):
         self.exit(EXIT_BADINPUT, f"{self.prog}: error: {message}\n")
@@ -96,9 +108,9 @@ SOLUTION = _ranged(int, lo=0)
 
 def _units_option(parser) -> None:
     """--units of a command that writes DXF: the drawing's $INSUNITS (io.DXF_UNITS)."""
-    parser.add_argument("--units", choices=tuple(DXF_UNITS), default="none",
-                        help="the DXF's drawing units ($INSUNITS); default none (unitless: "
-                             "CAD takes the numbers as they are)")
+    parser.add_argument("--units", choices=tuple(DXF_UNITS),
+                        help="the DXF's drawing units ($INSUNITS; needs --dxf); default none "
+                             "(unitless: CAD takes the numbers as they are)")
 
 
 # ------------------------------------------------------------------ hermite
@@ -117,6 +129,18 @@ def _solution_record(i: int, c) -> dict:
             "residual": getattr(c, "residual", None)}
 
 
+def _hermite_tol_advice(p0, t0, p1, t1, kw, tol: float) -> str:
+    """What returns the solutions el.hermite counted unrepresentable at ``tol``: the
+    smallest of 10 x, 100 x ... 1e4 x tol that returns them all (solved again to know)."""
+    import libelastica as el
+    for larger in tol * 10.0 ** np.arange(1, 5):
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", RuntimeWarning)
+            if not el.hermite(p0, t0, p1, t1, **kw, tol=larger).unrepresentable:
+                return f"--tol {larger:.0e} returns them"
+    return f"not even --tol {tol * 1e4:.0e} returns them"
+
+
 def cmd_hermite(args) -> int:
     import libelastica as el
     from .report import curves_picture, save_picture
@@ -124,13 +148,27 @@ def cmd_hermite(args) -> int:
     p0, t0, p1, t1 = v[0:2], v[2:4], v[4:6], v[6:8]
     kw = {"tension": args.tension} if args.tension is not None else {"length": args.length}
     _finite(next(iter(kw.values())), "--tension/--length")
-    sols = el.hermite(p0, t0, p1, t1, **kw)
+    if args.solution is not None and not args.dxf:
+        raise InputError(f"--solution {args.solution} picks the solution --dxf writes: give --dxf "
+                         "too (the table and the JSON have them all)")
+    chosen = args.solution or 0
+    with warnings.catch_warnings(record=True) as caught:   # said below, the CLI's way
+        warnings.simplefilter("always")
+        sols = el.hermite(p0, t0, p1, t1, **kw, tol=args.tol)
+    for w in caught:
+        print(f"{PROG} hermite: warning: {str(w.message).removeprefix('hermite: ')}",
+              file=sys.stderr)
+    missing = sols.unrepresentable
+    advice = _hermite_tol_advice(p0, t0, p1, t1, kw, args.tol) if missing else ""
+    more = f"{missing} more not representable at tol {args.tol:g}: {advice}"
     if not sols:      # nothing is written: no file of an empty answer for a script to take
-        print(f"{PROG} hermite: no elastica through these points and tangents", file=sys.stderr)
+        print(f"{PROG} hermite: no elastica through these points and tangents"
+              + (f" is representable at tol {args.tol:g} ({missing} exist): {advice}"
+                 if missing else ""), file=sys.stderr)
         return EXIT_NOCONV
-    if args.solution >= len(sols):
-        raise InputError(f"--solution {args.solution}: there are {len(sols)} solutions "
-                         f"(0 to {len(sols) - 1})")
+    if chosen >= len(sols):
+        raise InputError(f"--solution {chosen}: there are {len(sols)} solutions "
+                         f"(0 to {len(sols) - 1})" + (f"; {more}" if missing else ""))
     recs = [_solution_record(i, c) for i, c in enumerate(sols)]
     b = None
     # every solution's B-spline (G2 ends, as `bspline` makes it of the JSON), the DXF the chosen one's
@@ -138,8 +176,15 @@ def cmd_hermite(args) -> int:
         tol = args.bspline_tol if args.bspline_tol is not None else 1e-6
         for r, c in zip(recs, sols):
             r["bspline"] = el.bspline.fitted_bspline(c, tol, args.degree).to_dict()
-        b = el.BSpline.from_dict(recs[args.solution]["bspline"])
-    out = {"p0": p0, "t0": t0, "p1": p1, "t1": t1, **kw, "solutions": recs}
+        b = el.BSpline.from_dict(recs[chosen]["bspline"])
+    if args.dxf and recs[chosen]["crosses_itself"]:
+        fair = [r["index"] for r in recs if not r["crosses_itself"]]
+        print(f"{PROG} hermite: warning: --dxf writes solution {chosen}, which crosses itself "
+              f"({recs[chosen]['loops']} loop(s)): a batten cannot take that shape; "
+              + (f"{more}" if missing else f"the fair ones are {', '.join(map(str, fair))} "
+                 "(--solution N)" if fair else "none of the solutions is fair"), file=sys.stderr)
+    out = {"p0": p0, "t0": t0, "p1": p1, "t1": t1, **kw, "tol": args.tol,
+           "unrepresentable": missing, "solutions": recs}
     if args.json:
         write_json(out, "-" if args.json == "-" else args.outputs.path(args.json))
     if args.json != "-":
@@ -151,11 +196,14 @@ def cmd_hermite(args) -> int:
                        "YES" if r["crosses_itself"] else "no", r["max_curvature"], r["kappa0"],
                        r["kappa1"], r["residual"]] for r, c in zip(recs, sols)]))
         fair = [r["index"] for r in recs if not r["crosses_itself"]]
+        # a curve is named fair only when none is missing: the missing may be the fair one
+        # (QA: a near-straight bow's one returned curve, 2.19 x its chord, was called fair)
         print(f"by energy; {len(sols) - len(fair)} of {len(sols)} cross themselves (a batten "
-              "cannot): " + (f"the fair ones are {', '.join(map(str, fair))}" if fair else
-                             "none is fair"))
+              "cannot)" + (f"; {more}: none is named fair while they are missing" if missing
+                           else f": the fair ones are {', '.join(map(str, fair))}" if fair
+                           else ": none is fair"))
         if b is not None:
-            print(f"B-spline of solution {args.solution}: degree {b.degree}, {b.npoles} poles, "
+            print(f"B-spline of solution {chosen}: degree {b.degree}, {b.npoles} poles, "
                   f"certified within {b.max_deviation:.3g}")
     for spec in (args.svg, args.png):
         if spec:
@@ -192,13 +240,22 @@ _READ_AGAIN = ("side", "end", "plane", "frame2d", "constraints", "closed")
 
 def _hermite_choice(doc, solution: int, name: str):
     """The record of `hermite --json`'s solution number ``solution`` (its "curve": a smooth
-    elastica or a chain); InputError naming the solutions there are."""
+    elastica or a chain); InputError naming the solutions there are; a warning naming the
+    fair ones when it crosses itself."""
     sols = doc["solutions"]
     if not isinstance(sols, list) or not sols:
         raise InputError(f"{name}: a Hermite JSON without solutions")
     if solution >= len(sols):
         raise InputError(f"--solution {solution}: {name} has {len(sols)} solutions "
                          f"(0 to {len(sols) - 1})")
+    if isinstance(sols[solution], dict) and sols[solution].get("crosses_itself"):   # as `hermite --dxf`
+        fair = [i for i, r in enumerate(sols) if isinstance(r, dict) and not r.get("crosses_itself")]
+        print(f"{PROG} bspline: warning: {name}'s solution {solution} crosses itself: a batten "
+              "cannot take that shape; " + (f"{doc['unrepresentable']} more were not "
+                                           "representable" if doc.get("unrepresentable") else
+                                           f"the fair ones are {', '.join(map(str, fair))} "
+                                           "(--solution N)" if fair else
+                                           "none of the solutions is fair"), file=sys.stderr)
     return sols[solution]
 
 
@@ -220,7 +277,7 @@ def _curve_groups(doc, solution: int = 0, name: str = "JSON"):
     groups = []
     for d in doc if isinstance(doc, list) else [doc]:
         sides = d.get("sides") if isinstance(d, dict) else None
-        if isinstance(d, dict) and "solutions" in d and "curve" not in d:
+        if _is_hermite(d):
             groups.append([_hermite_choice(d, solution, name)])
         elif isinstance(d, dict) and isinstance(d.get("pieces"), list) and "type" not in d \
                 and "curve" not in d:
@@ -238,9 +295,19 @@ def _kept(item) -> dict:
     return {k: item[k] for k in _READ_AGAIN if k in item} if isinstance(item, dict) else {}
 
 
+def _is_hermite(doc) -> bool:
+    """Whether a JSON document is (or holds) `hermite --json`'s solutions."""
+    return any(isinstance(d, dict) and "solutions" in d and "curve" not in d
+               for d in (doc if isinstance(doc, list) else [doc]))
+
+
 def cmd_bspline(args) -> int:
     import libelastica as el
-    groups = _curve_groups(read_json(args.file), args.solution, args.file)
+    doc = read_json(args.file)
+    if args.solution is not None and not _is_hermite(doc):
+        raise InputError(f"--solution {args.solution}: {args.file} is not a hermite JSON (no "
+                         "solutions to choose from)")
+    groups = _curve_groups(doc, args.solution or 0, args.file)
     out, splines, names = [], [], []
     for items in groups:
         curves = [curve_from_dict(it, name=args.file) for it in items]
@@ -346,10 +413,12 @@ def cmd_spline(args) -> int:
         warnings.simplefilter("ignore", el.LoopWarning)
         sp = el.elastic_spline(pts, **kw, start=ends["start"], end=ends["end"], closed=args.closed)
     if sp.loops:
+        fix = (f"at tension {sp.tension:.6g}: give a larger --tension or a --length"
+               if args.length is None else f"of length {args.length:g} (tension "
+               f"{sp.tension:.6g}): a shorter --length gives one")
         print(f"warning: the spline loops away from its ducks (crosses itself where their "
               f"polygon does not, or is longer than 4 x it: length {sp.length:.6g}); no fair "
-              f"batten was found at tension {sp.tension:.6g}: give a larger --tension or a "
-              f"--length", file=sys.stderr)
+              f"batten was found {fix}", file=sys.stderr)
     need_b = args.dxf or args.bspline_tol is not None
     b = sp.to_bspline(args.bspline_tol or 1e-6, args.degree) \
         if need_b else None
@@ -576,7 +645,11 @@ def build_parser() -> argparse.ArgumentParser:
                    help="add every solution's B-spline within TOL to the JSON (default 1e-6 "
                         "with --dxf)")
     h.add_argument("--degree", type=DEGREE, default=3, help="B-spline degree 3..7 (default 3)")
-    h.add_argument("--solution", type=SOLUTION, default=0, metavar="N",
+    h.add_argument("--tol", type=POSITIVE, default=1e-10,
+                   help="the solutions' end error allowed (default 1e-10); curves no smooth "
+                        "parameters meet to it are counted 'not representable' (a larger "
+                        "--tol returns them)")
+    h.add_argument("--solution", type=SOLUTION, metavar="N",
                    help="the solution --dxf writes (default 0, the least energy; the table's "
                         "'crosses itself' column shows the fair ones)")
     h.add_argument("--dxf", metavar="PATH", help="write that solution's B-spline as a DXF SPLINE "
@@ -594,7 +667,7 @@ def build_parser() -> argparse.ArgumentParser:
                                    "B-spline through the joint).",
                        epilog=BSPLINE_EXAMPLES, formatter_class=raw)
     b.add_argument("file", metavar="FIT.json", help="a JSON of fit, hermite, spline or bspline")
-    b.add_argument("--solution", type=SOLUTION, default=0, metavar="N",
+    b.add_argument("--solution", type=SOLUTION, metavar="N",
                    help="of a hermite JSON, solution N (default 0, the least energy)")
     b.add_argument("--tol", type=POSITIVE, default=1e-6, help="tolerance (default 1e-6)")
     b.add_argument("--degree", type=DEGREE, default=3, help="degree 3..7 (default 3)")

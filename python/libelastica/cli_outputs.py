@@ -157,6 +157,11 @@ def check_outputs(args) -> None:
             # wrote a PNG without a word
             if opt in ("svg", "png") and final.suffix.lower() != ext:
                 raise InputError(f"--{opt} {final}: the picture's file name must end in {ext}")
+    # the DXF's units without a DXF: silently nothing
+    if getattr(args, "units", None) is not None and not getattr(args, "dxf", None):
+        raise InputError(f"--units {args.units} sets the DXF's units: give --dxf too")
+    if hasattr(args, "units") and args.units is None:   # (None: not given) the default
+        args.units = "none"
     if getattr(args, "png", None):
         from .report import have_matplotlib
         if not have_matplotlib():

@@ -385,6 +385,8 @@ def write_dxf_spline(splines, path: PathLike, points: Optional[np.ndarray] = Non
     doc.header["$INSUNITS"] = DXF_UNITS[units]
     if units != "none":
         doc.header["$MEASUREMENT"] = 0 if units in _IMPERIAL else 1
+    elif "$MEASUREMENT" in doc.header:   # ezdxf's new drawing says metric (1): no unit, no system
+        del doc.header["$MEASUREMENT"]
     msp = doc.modelspace()
     for b in splines:
         knots = np.repeat(np.asarray(b.knots, dtype=np.float64), np.asarray(b.mults, dtype=np.int64))

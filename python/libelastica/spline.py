@@ -268,10 +268,14 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
         if st == lib.EL_OK:
             sp = ElasticSpline(res, pts, closed)
             if sp.loops:
+                # length mode: the length asked is what makes it loop (QA: the advice
+                # "a larger tension, or a length" to a user who had given a length)
+                fix = f"tension {sp.tension:.4g}; a larger tension, or a length, gives one" \
+                    if length is None else \
+                    f"length {length:.4g} (tension {sp.tension:.4g}); a shorter length gives one"
                 warnings.warn("elastic_spline: the spline loops away from its ducks (it crosses "
                               "itself where their polygon does not, or is longer than 4 x it, "
-                              f"{sp.length:.4g}): no fair batten was found at tension "
-                              f"{sp.tension:.4g}; a larger tension, or a length, gives one",
+                              f"{sp.length:.4g}): no fair batten was found at {fix}",
                               LoopWarning, stacklevel=2)
             return sp
         if st == lib.EL_EDOM:   # the cases above are checked: the free batten
