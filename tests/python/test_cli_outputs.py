@@ -12,20 +12,10 @@ from pathlib import Path
 
 import pytest
 
-from libelastica.cli import main
+from cli_run import cli
 
 ROOT = Path(__file__).resolve().parents[2]
 SAMPLE = ROOT / "examples" / "sample_2d.csv"
-
-
-def cli(capsys, *args):
-    capsys.readouterr()
-    try:
-        code = main([str(a) for a in args])
-    except SystemExit as exc:
-        code = exc.code
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 def digest(p: Path) -> str:
