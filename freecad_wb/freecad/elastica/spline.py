@@ -172,7 +172,7 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
     except (ValueError, ArithmeticError) as exc:
         raise InputProblem(f"no plane through the points: {exc}") from None
     xy = n.ascontiguousarray(loc[:len(pts)])
-    specs, notes, warnings, k = [None, None], [], [], len(pts)
+    specs, notes, cautions, k = [None, None], [], [], len(pts)
     for j, c in enumerate(ends):
         if c is None:
             continue
@@ -194,7 +194,7 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
             else:                          # closed: met at its nearest point, not an end
                 where, on, taken = f"{what} (closed)", "a point on the edge", \
                     f"{taken} at its nearest point"
-            warnings.append(f"{where} is {c['gap']:.3g} mm from the {point} point: the spline "
+            cautions.append(f"{where} is {c['gap']:.3g} mm from the {point} point: the spline "
                             f"takes its {taken} but does not meet it; to join, make the "
                             f"{point} point {on} (pick it, or constrain them coincident)")
     if mode == "length":
@@ -210,7 +210,7 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
     if note:
         notes.append(note)
     if sp.loops:
-        warnings.append("the batten loops away from its points (it crosses itself, or is longer "
+        cautions.append("the batten loops away from its points (it crosses itself, or is longer "
                      "than 4 x their polygon): no fair batten at this tension; raise the "
                      "tension or give a length")
     for j, name in ((0, "first"), (-1, "last")):
@@ -222,7 +222,7 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
     except (ValueError, ArithmeticError, RuntimeError) as exc:
         raise InputProblem(f"B-spline: {_library_message(exc)}") from None
     return {"spline": sp, "bspline": bs, "placement": plane, "forces": duck_forces(sp),
-            "notes": notes, "warnings": warnings}
+            "notes": notes, "warnings": cautions}
 
 
 # sigma P^2 (P: the polygon through the points): where no free batten passes the points,
@@ -379,13 +379,13 @@ class SplineProxy(FeatureProxy):
         obj.Plane = plc
         from libelastica.io import curve_to_dict
         obj.Curves = json.dumps([curve_to_dict(c) for c in sp.pieces])
-        warnings = r["warnings"]
-        if warnings != list(obj.Warnings):
+        cautions = r["warnings"]
+        if cautions != list(obj.Warnings):
             # once per change of the warnings, not on every recompute (as ellblend's)
-            for w in warnings:
+            for w in cautions:
                 App.Console.PrintWarning(f"Elastica {obj.Label}: {w}\n")
-            obj.Warnings = warnings
-        obj.Status = "; ".join(["ok"] + [f"warning: {w}" for w in warnings] + r["notes"])
+            obj.Warnings = cautions
+        obj.Status = "; ".join(["ok"] + [f"warning: {w}" for w in cautions] + r["notes"])
 
     def plane_curves(self, obj):
         from .fit import stored_curves
