@@ -225,6 +225,51 @@ START_TEST(closed_ring_pushed_past_the_separatrix)
 }
 END_TEST
 
+/* el__spline_crosses (spline_fair.c) against brute force on random open G1 chains of 2-7
+ * pieces, gentle (its bound decides without samples: every piece turning less than pi / 2,
+ * the pieces' ellipses apart) and loopy (it samples): 0 where the knots' polygon crosses
+ * itself, else whether the chain sampled at 200 points a piece crosses itself. Dropping the
+ * bound's turning condition fails it (a loopy piece declared fair); the ellipses' condition
+ * alone decides no case of these chains (dropping it passes). */
+START_TEST(crossing_test_agrees_with_brute_force)
+{
+    unsigned long long st = 2026;
+    int decided[2] = {0, 0};
+    for (int trial = 0; trial < 1000; trial++) {
+        const size_t m = 2 + (size_t)test_uniform(&st, 0.0, 6.0), per = 200, np = m * per + 1;
+        const int gentle = trial % 2;
+        el_smooth_params p[8];
+        double x = 0.0, y = 0.0, th = test_uniform(&st, -M_PI, M_PI), knots[2 * 9];
+        double *xy = malloc(2 * np * sizeof *xy), s[200];
+        ck_assert_ptr_nonnull(xy);
+        for (size_t j = 0; j < m; j++) {
+            el_smooth_params c = {x, y, 0.0, pow(10.0, test_uniform(&st, -1.0, 1.0)),
+                                  test_uniform(&st, -1.5, 1.5), test_uniform(&st, -3.0, 3.0), 0.0};
+            c.length = (gentle ? test_uniform(&st, 0.3, 0.49) : test_uniform(&st, 0.5, 3.0)) * M_PI / (2.0 * sqrt(c.mu) * fmax(fabs(c.k), 0.1));
+            double s0 = 0.0, t0;    /* phi turns the piece about its start: its tangent th there */
+            ck_assert_int_eq(el_smooth_eval(&c, 1, &s0, knots, &t0, NULL), EL_OK);
+            c.phi = th - t0;
+            p[j] = c;
+            for (size_t i = 0; i < per; i++) s[i] = c.length * (double)i / (double)per;
+            ck_assert_int_eq(el_smooth_eval(&c, per, s, xy + 2 * j * per, NULL, NULL), EL_OK);
+            double e[2], te, L = c.length;
+            ck_assert_int_eq(el_smooth_eval(&c, 1, &L, e, &te, NULL), EL_OK);
+            x = e[0]; y = e[1]; th = te;
+        }
+        xy[2 * (np - 1)] = x; xy[2 * (np - 1) + 1] = y;
+        for (size_t j = 0; j < m; j++) { knots[2 * j] = p[j].x0; knots[2 * j + 1] = p[j].y0; }
+        knots[2 * m] = x; knots[2 * m + 1] = y;
+        const int want = polyline_crossings(knots, m + 1) ? 0 : polyline_crossings(xy, np) > 0;
+        const int got = el__spline_crosses(p, m, 0);
+        ck_assert_msg(got == want, "trial %d (%s, %zu pieces): %d, brute force %d", trial,
+                      gentle ? "gentle" : "loopy", m, got, want);
+        decided[want]++;
+        free(xy);
+    }
+    ck_assert_msg(decided[0] > 100 && decided[1] > 100, "%d fair, %d crossing", decided[0], decided[1]);   /* both answers exercised */
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("spline_fair");
@@ -234,6 +279,7 @@ int main(void)
     tcase_add_test(tc, looping_splines_are_flagged);
     tcase_add_test(tc, length_mode_passes_a_fold_in_sigma);
     tcase_add_test(tc, closed_ring_pushed_past_the_separatrix);
+    tcase_add_test(tc, crossing_test_agrees_with_brute_force);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }
