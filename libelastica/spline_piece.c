@@ -195,6 +195,15 @@ static double ellint_F(double psi, double k, double kc2)
     return copysign(F, psi);
 }
 
+/* ellint_F for |psi| < pi/2 given sin psi and cos psi > 0 (cos psi resolved near
+ * pi/2, where psi itself is not): F = sin psi R_F(cos^2 psi, kc2 + k^2 cos^2 psi, 1). */
+static double ellint_F_sc(double sn, double cs, double k, double kc2)
+{
+    double rf, rd;
+    if (!(cs > 0.0) || el__carlson_fd(cs * cs, kc2 + k * k * cs * cs, 1.0, 1.0, &rf, &rd)) return NAN;
+    return sn * rf;
+}
+
 /* Parameters of the elastica of tension s through a state (theta, kappa,
  * kappa') at arc length sm from the piece's start, the start at u = q. */
 static int piece_from_state(el__spiece *pc, double theta, double kappa, double dkappa, double s,
@@ -215,8 +224,9 @@ static int piece_from_state(el__spiece *pc, double theta, double kappa, double d
     /* a circle or a line: a small force along -T. Its least size keeps |k| <~ 1e4,
      * where a circle is resolved best (the arc differs from it by ~1 / k^2, and
      * the position's cancellation grows as k^2 eps; el_hermite_solve's 1e4) */
-    int line = 0;
+    int line = 0, tail = 1;   /* tail: Fn, kc2 and k2 from the state itself */
     if (!(Fn > 1e-8 * (fabs(s) + kappa * kappa + 1e-300))) {
+        tail = 0;
         Fn = 1e-8 * (fabs(s) + kappa * kappa) + 1e-12;
         Fx = -Fn * T[0];
         Fy = -Fn * T[1];
@@ -232,6 +242,7 @@ static int piece_from_state(el__spiece *pc, double theta, double kappa, double d
      * Newton relaxes the tension (G2 ends bent from a straight free batten) */
     const double s_line = LINE_TENSION / (pc->h > 0.0 ? pc->h * pc->h : 1.0);
     if (line || (kappa == 0.0 && dkappa == 0.0 && s > 0.0 && s < s_line)) {
+        tail = 0;
         Fn = s_line;
         Fx = -Fn * T[0];
         Fy = -Fn * T[1];
@@ -265,11 +276,25 @@ static int piece_from_state(el__spiece *pc, double theta, double kappa, double d
     } else {
         const double ka = sqrt(k2);
         k = kappa < 0.0 ? -ka : ka;
-        /* k = 1 exactly: the separatrix, a = +-pi/2 is at u = infinity (a straight
-         * state under tension); start a little inside, on its tail */
-        const double am = ka < 1.0 + 1e-12 ? copysign(fmin(fabs(a), 0.5 * M_PI - 1e-8), a) : a;
-        /* modulus 1/|k|: its complement 1 - 1/k^2 = -kc2 / k^2 */
-        u = ellint_F(k < 0.0 ? -am : am, 1.0 / ka, -kc2 / k2) / ka;
+        /* far down the separatrix's tail (|a| within 1e-8 of pi/2: a nearly straight
+         * piece under tension, kappa ~ 4 sqrt(mu) e^-|u|), u = asinh(tan a) depends on
+         * pi/2 - |a| ~ kappa / (2 sqrt(mu)), which theta - phi0 resolves only to ~1e-16;
+         * clamping it to 1e-8 put a bend there that grows e^{sqrt(mu) L} along the piece
+         * (~1e12 at sigma h^2 = 1600): EL_ENOCONV. cos a from the state instead:
+         * cos^2 a = (1 + cos 2a)/2 = (kappa^2 + P/(Fn + s)) / (2 Fn) (F.T = Fn cos 2a =
+         * kappa^2 - s; Fn - s = P/(Fn + s)), to rounding relative to kappa^2 */
+        const int far = tail && s > 0.0 && ka < 1.0 + 1e-12 && fabs(a) > 0.5 * M_PI - 1e-8;
+        const double c2 = far ? (kappa * kappa + P / (Fn + s)) / (2.0 * Fn) : -1.0;
+        if (c2 > 0.0) {
+            const double ca = sqrt(c2), sa = copysign(sqrt(fmax(0.0, 1.0 - c2)), k < 0.0 ? -a : a);
+            u = (!(ka > 1.0) ? asinh(sa / ca) : ellint_F_sc(sa, ca, 1.0 / ka, -kc2 / k2)) / ka;
+        } else {
+            /* k = 1 exactly: the separatrix, a = +-pi/2 is at u = infinity (a straight
+             * state under tension); start a little inside, on its tail */
+            const double am = ka < 1.0 + 1e-12 ? copysign(fmin(fabs(a), 0.5 * M_PI - 1e-8), a) : a;
+            /* modulus 1/|k|: its complement 1 - 1/k^2 = -kc2 / k^2 */
+            u = ellint_F(k < 0.0 ? -am : am, 1.0 / ka, -kc2 / k2) / ka;
+        }
     }
     if (!isfinite(u)) return EL_EDOM;
     pc->v[EL__SP_PHI] = phi;

@@ -237,6 +237,66 @@ START_TEST(straight_free_batten_bends_to_g2_ends)
 }
 END_TEST
 
+/* A G2 batten between tangents 1e-12 rad apart (ends' curvature 0), pulled to
+ * sigma h^2 = 1600 and 6400, either turn, at h = 1e-3, 40, 4e4, at the origin and
+ * 25000 h from it (QA7 g2_near_collinear): its pieces lie far down the separatrix's
+ * tail (k = +-1, u ~ -35 .. -60), where piece_from_state took u from pi/2 - |a|,
+ * resolved only to ~1e-16, and moved such a state to 1e-8 from pi/2, a bend e^{omega L}
+ * (~1e12) times that at the piece's far end: EL_ENOCONV at 1600 (turning left) and
+ * 6400 (right). The curve is the near-straight beam's: curvature below d omega ~ 1e-10 / h,
+ * its length the chord's to rounding (the excess int y'^2 / 2 ~ d^2 h). */
+START_TEST(near_collinear_g2_ends_under_high_tension)
+{
+    const double d = 1e-12, hs[3] = {1e-3, 40.0, 4e4};
+    for (int c = 0; c < 24; c++) {
+        const double h = hs[c % 3], off = (c / 3) % 2 ? 25000.0 * h : 0.0, sg = (c / 6) % 2 ? -1.0 : 1.0;
+        const double sh2 = c / 12 ? 6400.0 : 1600.0;
+        const double xy[4] = {off - 0.5 * h, off, off + 0.5 * h, off};
+        el_spline_options o = opts(EL_SPLINE_TENSION, sh2 / (h * h));
+        o.start = g2_end(1.0, 0.0, 0.0);
+        o.end = g2_end(cos(d), sg * sin(d), 0.0);
+        el_spline_result r;
+        const int st = solve(xy, 2, &o, &r);
+        ck_assert_msg(st == EL_OK, "h %g offset %g turn %g sigma h^2 %g: status %d", h, off, sg, sh2, st);
+        /* measured on the pieces (el_smooth_eval): from duck to duck through the guides, G1
+         * to 1e-10 rad and G2 to 1e-9 / h, the ends' tangents, curvature 0 at the ends to
+         * 1e-9 / h (check_spline asks 1e-7 of the largest curvature, itself ~1e-12 / h here:
+         * a separatrix's tail has no zero) */
+        ck_assert_uint_eq(r.npieces, 3);
+        ck_assert(r.pieces[0].x0 == xy[0] && r.pieces[0].y0 == xy[1]);
+        double L = 0.0;
+        for (size_t j = 0; j < 3; j++) {
+            const el_smooth_params *p = &r.pieces[j];
+            double a[2], b[2], tha, thb, ka, kb;
+            state_at(p, 0.0, a, &tha, &ka, NULL);
+            state_at(p, p->length, b, &thb, &kb, NULL);
+            const double sig = 2.0 * p->mu * (2.0 * p->k * p->k - 1.0);
+            ck_assert_msg(fabs(sig - o.sigma) <= 1e-12 * o.sigma, "piece %zu tension %g", j, sig);
+            if (j == 0) {
+                ck_assert_msg(fabs(tha) <= 1e-10 && fabs(ka) * h <= 1e-9, "start %g %g", tha, ka);
+            }
+            if (j < 2) {
+                const el_smooth_params *q = &r.pieces[j + 1];
+                double c[2], thc, kc;
+                state_at(q, 0.0, c, &thc, &kc, NULL);
+                ck_assert_msg(hypot(b[0] - q->x0, b[1] - q->y0) <= 1e-10 * h, "gap at guide %zu", j);
+                ck_assert_msg(fabs(thb - thc) <= 1e-10 && fabs(kb - kc) * h <= 1e-9, "joint %zu: %g %g", j,
+                              thb - thc, kb - kc);
+            } else {
+                ck_assert_msg(hypot(b[0] - xy[2], b[1] - xy[3]) <= 1e-10 * h, "misses the end duck");
+                ck_assert_msg(fabs(thb - sg * d) <= 1e-10 && fabs(kb) * h <= 1e-9, "end %g %g", thb, kb);
+            }
+            L += p->length;
+        }
+        ck_assert_msg(r.max_curvature * h <= 1e-9, "max curvature %g x h", r.max_curvature * h);
+        ck_assert_double_eq(r.length, L);
+        ck_assert_msg(fabs(r.length - h) <= 1e-13 * (h + fabs(off)), "length - chord %g", r.length - h);
+        ck_assert_int_eq(r.loops, 0);
+        el_spline_result_free(&r);
+    }
+}
+END_TEST
+
 /* Sign changes of the curvature along the spline (|kappa| above 1e-6 of its largest). */
 static int inflections(const el_spline_result *r)
 {
@@ -419,6 +479,7 @@ int main(void)
     tcase_add_test(tc, two_points_are_the_g2_blend);
     tcase_add_test(tc, collinear_ducks_with_g2_ends);
     tcase_add_test(tc, straight_free_batten_bends_to_g2_ends);
+    tcase_add_test(tc, near_collinear_g2_ends_under_high_tension);
     tcase_add_test(tc, random_battens_g2_solved_where_tangent_is);
     tcase_add_test(tc, initial_sibling_keeps_its_branch);
     suite_add_tcase(s, tc);

@@ -204,6 +204,32 @@ def test_two_points_g2_blend(both):
     assert longer.length == pytest.approx(1.02 * sp.length, rel=1e-10) and longer.tension < 0
 
 
+@pytest.mark.parametrize("turn", [1.0, -1.0])
+def test_g2_blend_of_nearly_collinear_ends_under_high_tension(turn):
+    """The G2 batten between tangents 1e-12 rad apart, ducks 40 apart, pulled to
+    tension 1 and 4 (sigma h^2 = 1600, 6400; QA7 g2_near_collinear raised
+    NotConvergedError: its pieces lie far down the separatrix's tail, spline_piece.c):
+    through both ducks, G1 and G2 at the guides and ends to 1e-9 / h, as straight as
+    the near-straight beam (curvature ~ d sqrt(sigma/2) ~ 1e-12), its length the chord's."""
+    d, h = 1e-12, 40.0
+    for tension in (1.0, 4.0):
+        sp = el.elastic_spline([(-20, 0), (20, 0)], tension=tension,
+                               start={"tangent": (1, 0), "curvature": 0.0},
+                               end={"tangent": (np.cos(d), turn * np.sin(d)), "curvature": 0.0})
+        pieces = sp.pieces
+        assert len(pieces) == 3
+        p0, a0, k0 = one_point(pieces[0], 0.0)
+        assert tuple(p0) == (-20.0, 0.0) and abs(a0) <= 1e-10 and abs(k0) * h <= 1e-9
+        for a, b in zip(pieces[:-1], pieces[1:]):
+            pa, ta, ka = one_point(a, a.length)
+            pb, tb, kb = one_point(b, 0.0)
+            assert np.hypot(*(pa - pb)) <= 1e-10 * h and abs(ta - tb) <= 1e-10 and abs(ka - kb) * h <= 1e-9
+        p1, a1, k1 = one_point(pieces[-1], pieces[-1].length)
+        assert np.hypot(p1[0] - 20.0, p1[1]) <= 1e-10 * h
+        assert abs(a1 - turn * d) <= 1e-10 and abs(k1) * h <= 1e-9
+        assert sp.max_curvature * h <= 1e-9 and abs(sp.length - h) <= 1e-13 * h
+
+
 def test_degenerate_inputs():
     line = np.array([[0, 0], [1, 2], [1.5, 3], [4, 8]], float)
     sp = el.elastic_spline(line, tension=3.0)
