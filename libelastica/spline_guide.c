@@ -44,6 +44,17 @@
  * of the guided system for the end curvatures it has, with no force on the
  * guides. The end curvatures are then moved to the given ones by continuation
  * (spline_path.c), which starts with the whole step.
+ * Under tension. The guides' offsets are set by the end curvatures, not by least energy,
+ * so along a family in sigma they do work: d(integral kappa^2 + sigma ds)/d sigma =
+ * L + sum f . dg/d sigma (f: a guide's force, g: its place), not L (seed 004 (9)-(10) with
+ * moving ducks), and the G2 batten need not shorten when pulled. As sigma h^2 grows a G2
+ * end, its curvature given, has no boundary layer to turn in: the batten leaves it along
+ * its tangent to the guide's line, tending to the polygon through the guides. Measured
+ * (QA9 w5): ends (0, 0) up and (100, 0) down, curvature 0 (two walls), guides on x = 25,
+ * 75: 231 long at sigma 0.0005, 319 at 0.002, 397 at 0.0023, none beyond ~0.0024 (by
+ * length the tension tends to it as the batten rises without end); tilted ends (0.5, 1),
+ * (0.5, -1): 139.5 at 0.002, 150 at 0.05, towards the polygon's 161.8. Each the least
+ * integral kappa^2 + sigma ds of the battens bent from every G1 solution at that sigma.
  */
 #include "internal.h"
 #include <stdlib.h>

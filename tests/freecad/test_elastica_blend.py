@@ -2,6 +2,7 @@
 updates, save / reopen, and bad input (the document must stay unchanged)."""
 import math
 import os
+import re
 import unittest
 
 import FreeCAD as App
@@ -632,6 +633,31 @@ class BlendG2Test(unittest.TestCase):
         self.assertIn("the free G2 batten (tension 0) exists: try a lower tension, or G1",
                       b.Status)
         b.Tension = 0.05
+        self.doc.recompute()
+        self.check_g2(b, sk)
+
+    def test_g2_walls_pulled_say_which_tension_they_reach(self):
+        """Two walls 100 mm apart (QA9 w5), curvature 0 at their tops: held by its guide ducks
+        on x = 25 and 75 mm, the G2 batten rises as it is pulled (231 mm at 0.0005/mm^2, 319 at
+        0.002: the guides do work, d(int kappa^2 + sigma L)/d sigma = L + sum f . dg/d sigma)
+        and from ~0.0024/mm^2 none exists: the error says the tension the battens reach."""
+        sk = self.doc.addObject("Sketcher::SketchObject", "Walls")
+        sk.Placement = S.SKETCH_PLACEMENT
+        for a, c in (((0, 0), (0, 30)), ((100, 30), (100, 0))):
+            sk.addGeometry(Part.LineSegment(App.Vector(*a, 0), App.Vector(*c, 0)), False)
+        self.doc.recompute()
+        b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Continuity="G2", Tension=0.002)
+        self.doc.recompute()
+        self.check_g2(b, sk)
+        b.Tension = 0.003
+        self.doc.recompute()
+        self.assertTrue(b.Status.startswith("error: no G2 blend at tension 0.003 1/mm"), b.Status)
+        found = re.search("G2 battens found by length reach a tension of ([0-9.e-]+) 1/mm",
+                          b.Status)
+        self.assertIsNotNone(found, b.Status)
+        reach = float(found.group(1))
+        self.assertTrue(0.002 < reach < 0.003, reach)     # solved at 0.002, none at 0.003
+        b.Tension = 0.9 * reach
         self.doc.recompute()
         self.check_g2(b, sk)
 

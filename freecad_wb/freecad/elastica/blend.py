@@ -29,7 +29,9 @@ G2_TIP = ("G1: one elastica, tangent to both edges. G2: tangent and curvature co
           "so the G2 blend is the batten between the two ends held by two guide ducks, a "
           "quarter of the way in from each edge and free to move across the line between the "
           "ends (drawn in orange with their forces): one tension throughout, the tension or "
-          "length asked for (0: the free batten), bent from the chosen G1 solution")
+          "length asked for (0: the free batten), bent from the chosen G1 solution. Held by its "
+          "guide ducks, a G2 blend pulled does not straighten as G1 does (it may get longer), "
+          "and beyond some tension there is none: the status says which tension it reaches")
 
 
 class NoBlend(InputProblem):
@@ -208,6 +210,12 @@ def g2_blend(r, i, mode, value, tol, degree):
                     "the free G2 batten (tension 0) exists: try a lower tension, or G1")
         except (ValueError, ArithmeticError, RuntimeError):
             pass
+        reach = g2_tension_reach(pts, ends) if "tension" in kw else None
+        if reach is not None and reach > 0.0:
+            hint += (f"; the G2 battens found by length reach a tension of "
+                     f"{tension_text(reach, float(n.linalg.norm(a1 - a0)))} at most: held by "
+                     "its guide ducks, a G2 blend pulled does not straighten as G1 does, and "
+                     "beyond some tension there is none")
         # not the exception's words about the spline it keeps: nothing is returned here
         solve = "the batten's solve did not converge" if isinstance(exc, e.NotConvergedError) \
             else f"the batten's solve: {str(exc).replace('elastic_spline: ', '', 1)}"
@@ -217,6 +225,31 @@ def g2_blend(r, i, mode, value, tol, degree):
         return sp, sp.to_bspline(tol, degree), note
     except (ValueError, ArithmeticError, RuntimeError) as exc:
         raise InputProblem(f"B-spline failed: {exc}") from None
+
+
+# Lengths (times the distance between the ends) the G2 batten is solved for when none is
+# found at the tension asked: the highest tension among them is said. Along a G2 batten's
+# family the guides do work (d(int kappa^2 + sigma L)/d sigma = L + sum f . dg/d sigma), so
+# pulling need not shorten it: walls 100 mm apart (curvature 0, tangents normal to the line
+# between the ends) rise and lengthen, 231 mm at 0.0005/mm^2, 397 mm at 0.0023; by length
+# 3 x: 0.00185, 4 x: 0.00231, 6 x: 0.00242/mm^2, 10 x: none (QA9 w5).
+G2_REACH_MULTIPLES = (1.25, 1.5, 2.0, 2.5, 3.0, 4.0, 6.0, 10.0)
+
+
+def g2_tension_reach(pts, ends):
+    """The highest tension of the G2 battens between the two points ``pts`` with ``ends``
+    (el.elastic_spline's start/end) solved by length at G2_REACH_MULTIPLES times their
+    distance; None when none is solved."""
+    n, e = np(), el()
+    dist = float(n.linalg.norm(pts[1] - pts[0]))
+    reach = None
+    for m in G2_REACH_MULTIPLES:
+        try:
+            sigma = float(e.elastic_spline(pts, **ends, length=m * dist).tension)
+        except (ValueError, ArithmeticError, RuntimeError):
+            continue
+        reach = sigma if reach is None else max(reach, sigma)
+    return reach
 
 
 def bending_energy(curve):
@@ -499,6 +532,7 @@ def copy_into_sketch(blend, sketch=None):
     return write_to_sketch(blend, sketch or blend.Edge1[0])[0]
 
 
-__all__ = ["BlendProxy", "NoBlend", "check_open", "blend_core", "starting_length", "g2_blend", "make",
+__all__ = ["BlendProxy", "NoBlend", "check_open", "blend_core", "starting_length", "g2_blend",
+           "g2_tension_reach", "make",
            "copy_into_sketch", "nearest_ends",
            "edge_end", "MODES", "CONTINUITIES"]

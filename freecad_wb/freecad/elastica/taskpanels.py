@@ -190,8 +190,9 @@ class BlendPanel(Panel):
                                   when=lambda: o.Mode == "length")
         self.tension = self.number(g, "Tension", "Tension", -1e6, 1e6, self.tension_step(),
                                    "1/mm\u00b2", "Tension sigma (1/mm\u00b2): 0 = free batten, > 0 "
-                                   "pulls the curve straighter, < 0 compresses it. In length mode: "
-                                   "the chosen solution's tension", when=lambda: o.Mode == "tension")
+                                   "pulls the curve straighter (G1; a G2 blend is held by its "
+                                   "guide ducks: see Continuity), < 0 compresses it. In length "
+                                   "mode: the chosen solution's tension", when=lambda: o.Mode == "tension")
         self.end1 = self.check(g, "Leave edge 1 at its end vertex", "AtEnd1",
                                "Checked: from the first edge's end vertex; else its start")
         self.end2 = self.check(g, "Enter edge 2 at its end vertex", "AtEnd2",
