@@ -7,7 +7,10 @@ from .cubic import SPARSE_POINTS, cubic_distances, smooth_fits_better
 from .fit import (ConstraintError, ConvergenceWarning, FitResult, KeylineFit, WanderWarning, far_points, far_points_summary,
                   fit, fit_keyline, wander_summary)
 from .prep import (KEYLINE_STEPS, RESAMPLE_MAX_VERTICES, Frame, Frame2D, find_inflection, keyline_runs,
-                   keyline_step, pca_normalize, plane_fit, prepare_keyline, resample_equilateral)
+                   keyline_step, pca_normalize, plane_fit, prepare_keyline, resample_equilateral,
+                   resampled_polygon, ZIGZAG)
+from .resampled import (RESAMPLE_RATIO, ResampledFit, ResampleWarning, fit_resampled, resample_summary,
+                        resampled_fits_worse, resampled_reference)
 from .blend import BlendCurve, EllipticBlend, MQBlend, blend_curve, eck_d, eck_omega
 from .hermite import HERMITE_SIGMA_D2_MAX, HermiteChain, HermiteSolutions, hermite, hermite_analyse
 from .spline import ElasticSpline, LoopWarning, elastic_spline

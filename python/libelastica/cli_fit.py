@@ -217,8 +217,9 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
         data = xy
         if args.step is not None:
             # the library's rule and message (a positive step the points reach from the
-            # polygon's start), as for --keyline
-            data = el.resample_equilateral(xy, args.step)
+            # polygon's start), as for --keyline; the polygon ends at the points' ends and
+            # follows the medians of their runs where their polyline zigzags (noise)
+            data = el.resampled_polygon(xy, args.step)
             if len(data) < 4:
                 raise InputError(f"{path}: --step {args.step} leaves only {len(data)} points")
         fixed, constraints = _parse_fix(args.fix, data), _constraints(args, data)

@@ -22,7 +22,8 @@ from ._ffi import (DomainError, ElasticaError, as_int, as_points, as_real, as_re
 
 __all__ = ["Frame", "Frame2D", "Inflection", "PreparedKeyline", "plane_fit",
            "resample_equilateral", "RESAMPLE_MAX_VERTICES", "pca_normalize", "find_inflection",
-           "find_inflection_info", "prepare_keyline", "KEYLINE_STEPS", "keyline_runs", "keyline_step"]
+           "find_inflection_info", "prepare_keyline", "KEYLINE_STEPS", "keyline_runs", "keyline_step",
+           "ZIGZAG", "resampled_polygon"]
 
 
 def _c_struct(ctype: str, obj, names) -> object:
@@ -202,6 +203,42 @@ def resample_equilateral(xy, r: float, return_info: bool = False):
     finally:
         lib.el_resample_free(res)
     return (out, info) if return_info else out
+
+
+# A resampled fit's polyline: the points' own, unless it is longer than ZIGZAG times the
+# polyline through the medians of their runs (keyline_runs): then it is their noise's
+# zigzag, and its equilateral polygon runs back and forth along the curve (3000 points,
+# noise 2 % of a 4 m curve: the points' polyline 83 x the medians'; their polygon's fit
+# lay 1.25 x the unresampled fit's rms from the points, the medians' 1.02 x). Below it
+# the points' own (2000 points, noise 0.5 mm: 1.15 x; the medians' chords cost 5 % rms).
+ZIGZAG = 1.5
+
+
+def resampled_polygon(points, step: float) -> np.ndarray:
+    """The polygon a fit of points (n, 2) resampled with segment ``step`` fits, in the
+    points' order: the equilateral polygon (:func:`resample_equilateral`) of their own
+    polyline, or of :func:`keyline_runs` where theirs zigzags (longer than ZIGZAG times
+    that one), ended at the first and last point: the walk stops up to a step short of
+    the far end (seed 000 §5.3), so that point is added (its side shorter), as the first
+    where the medians' walk started elsewhere. A fit then covers the points to their ends."""
+    pts = as_points(points, "resampled_polygon: points", 2, min_rows=2)
+    step = as_real(step, "resampled_polygon: step")
+    src = pts
+    if len(pts) > 2 * KEYLINE_STEPS:
+        runs = keyline_runs(pts)
+        if _length(pts) > ZIGZAG * _length(runs):
+            src = np.ascontiguousarray(runs)
+    poly, info = resample_equilateral(src, step, return_info=True)
+    if info.reversed:
+        poly = poly[::-1]
+    size = 1e-12 * (1.0 + float(np.abs(pts).max()))
+    head = [pts[:1]] if np.hypot(*(poly[0] - pts[0])) > size else []
+    tail = [pts[-1:]] if np.hypot(*(poly[-1] - pts[-1])) > size else []
+    return np.ascontiguousarray(np.vstack(head + [poly] + tail))
+
+
+def _length(xy) -> float:
+    return float(np.sum(np.hypot(*np.diff(xy, axis=0).T)))
 
 
 def pca_normalize(xy) -> Tuple[np.ndarray, Frame2D]:

@@ -1442,7 +1442,7 @@ class FitBadInputTest(unittest.TestCase):
         xy, _ = S.keyline_xy(20)
         length = sum(math.hypot(*(q - p)) for p, q in zip(xy[:-1], xy[1:]))
         msg = self._rejected([(S.points_sketch(self.doc, xy), [])], ResampleStep=100.0)
-        left = len(el.resample_equilateral(xy, 100.0))
+        left = len(el.resampled_polygon(xy, 100.0))     # the fit's: ended at the last point
         self.assertLess(left, Fc.MIN_POINTS)
         self.assertIn(f"Resample = 100 mm leaves {left} points; a fit needs {Fc.MIN_POINTS}", msg)
         self.assertIn(f"need a step under {length / (Fc.MIN_POINTS - 1):.4g} mm", msg)
@@ -1457,10 +1457,11 @@ class FitBadInputTest(unittest.TestCase):
         self.assertGreater(len(el.resample_equilateral(xy, 1.001 * length / (most - 1))), 0.99 * most)
 
     def test_resample_step_across_a_hairpin(self):
-        # out 100 mm and back, 0.5 mm apart: the polygon of step 3 mm jumps across from the start
+        # out 100 mm and back, 0.5 mm apart: the polygon of step 3 mm jumps across from the
+        # start (2 vertices; then the last point, where the fit's polygon ends)
         xy = [(x, 0.0) for x in range(0, 101, 5)] + [(x, 0.5) for x in range(100, -1, -5)]
         msg = self._rejected([(S.polyline_3d(self.doc, xy), [])], ResampleStep=3.0)   # ordered
-        self.assertIn("Resample = 3 mm leaves 2 points", msg)
+        self.assertIn("Resample = 3 mm leaves 3 points", msg)
         self.assertIn("the polygon jumps where the points double back", msg)
 
     def test_a_whole_sketch_of_points_and_edges_fits_its_points(self):

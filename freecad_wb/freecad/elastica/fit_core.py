@@ -199,7 +199,7 @@ def _check_reach(xy, step, starts, default=None):
 
 def _resampled(xy, step):
     """The points xy resampled into an equilateral polygon of segment step
-    (el.resample_equilateral), at least MIN_POINTS vertices of it."""
+    (el.resampled_polygon), at least MIN_POINTS vertices of it."""
     _check_reach(xy, step, [-1 if xy[-1, 0] < xy[0, 0] else 0])
     most, length = el().RESAMPLE_MAX_VERTICES, polyline_length(xy)
     if length / step > most - 1:
@@ -207,9 +207,9 @@ def _resampled(xy, step):
                            f"polyline into {length / step:.3g} segments, more than {most - 1}: use "
                            f"a step of at least {length / (most - 1):.4g} mm, or 0 to fit the "
                            "points as they are")
-    out = el().resample_equilateral(xy, step)
-    if xy[-1, 0] < xy[0, 0]:
-        out = out[::-1].copy()       # it starts from the end of smaller x: the user's order
+    # the library's polygon (el.resampled_polygon): in the user's order, of the medians of
+    # runs where the points' polyline is their noise's zigzag, ended at their end points
+    out = el().resampled_polygon(xy, step)
     if len(out) < MIN_POINTS:
         # the vertices are step apart along the way, so few of them from a step short enough
         # for MIN_POINTS mean the walk jumped ahead: the points double back or pass close to
@@ -222,9 +222,14 @@ def _resampled(xy, step):
     return out
 
 
-def _apart(p, q):
-    """Whether points p and q differ by more than a rounding of their size."""
-    return float(np().hypot(*(p - q))) > 1e-12 * (1.0 + float(np().abs(q).max()))
+def _far_from_resampled(xy, rms, result, polygon, constraints, step):
+    """The warning for a fit of the polygon resampled at step whose points xy lie rms (in
+    their plane) from it, far more than from their own smooth fit (el.resampled_reference:
+    a polygon too coarse for the curve), else none."""
+    ref = el().resampled_reference(xy, rms, polygon, result.curve, constraints or None)
+    if ref is None:
+        return []
+    return [el().resample_summary(step, rms, ref, " mm")]
 
 
 def _keyline_step(xy):
@@ -386,14 +391,10 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         else:
             fixed = {}
             if step > 0:
-                polygon = _resampled(xy, step)
-                # a pinned end is the user's point, which the polygon stops short of by up
-                # to a step: the data runs on to it, no longer equilateral there
-                pins = [pin_start and _apart(polygon[0], xy[0]),
-                        pin_end and _apart(polygon[-1], xy[-1])]
-                xy = n.vstack([xy[:1]] * pins[0] + [polygon] + [xy[-1:]] * pins[1])
-                if model == "discrete" and not any(pins):
-                    fixed["h"] = step            # the polygon's segment (seed 000 §5.4)
+                # it ends at the user's end points (pinned or not); the discrete h is fitted:
+                # the polygon of noisy points is longer than their curve (h held at a 2 mm
+                # step bulged a 4 m scan's curve to rms 13 mm, noise 0.5 mm)
+                xy = _resampled(xy, step)
             constraints, reversed_joins = end_constraints(xy, plane, tol=tol, **ends)
             try:
                 fitted = _one_piece(xy, model, distance, fixed, constraints, fields)
@@ -429,6 +430,9 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         dist = n.copysign(n.hypot(dist, user[:, 2]), dist)
         rms, max_error = _rms(dist), float(n.abs(dist).max())
         data = user
+        if resampled and not split:
+            warnings = warnings + _far_from_resampled(user[:, :2], plane_rms, results[0], xy,
+                                                      constraints, step)
         warnings = warnings + _left_out(beyond, dist, step, used) + \
             _off_plane(user[:, 2], plane_rms, size) + \
             _far_points(data[~beyond], dist[~beyond], plane,

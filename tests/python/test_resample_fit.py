@@ -1,0 +1,99 @@
+"""A fit of a resampled noisy scan is as close to the user's points as their own fit
+(el.fit_resampled, el.resampled_polygon): measured on the points given, both models, steps
+from below the points' spacing to 5 % of the curve's length; or it says how far it lies."""
+import warnings
+
+import numpy as np
+import pytest
+
+import libelastica as el
+from libelastica.fit import quiet_fit
+from libelastica.nearest import nearest_on
+
+REF = el.SmoothElastica(x0=0, y0=0, phi=0.25, mu=1.2e-6, k=0.6, q=0.3, length=4000.0)
+# (points, noise sigma): the QA's scan (0.5 mm, 2 mm apart), 0.1 %, 1 % and 2 % of the size
+SCANS = [(2000, 0.5), (500, 4.0), (200, 40.0), (3000, 80.0)]
+
+
+def scan(n, sigma, seed=1):
+    rng = np.random.default_rng(seed)
+    s = np.sort(rng.uniform(0.0, REF.length, n))            # unevenly spaced
+    return REF.points(s) + rng.normal(0.0, sigma, (n, 2))
+
+
+def rms_to(bspline, xy):
+    return float(np.sqrt(np.mean(nearest_on(bspline, xy)[1] ** 2)))
+
+
+def overshoot(bspline, xy):
+    """How far the points whose nearest curve point is an end run past it, along the end
+    tangent (0 where none does)."""
+    a, b = bspline.domain
+    ends = bspline.evaluate(np.array([a, b]))
+    tan = bspline.derivative(np.array([a, b]), 1)
+    tan = tan / np.hypot(tan[:, 0], tan[:, 1])[:, None]
+    feet = nearest_on(bspline, xy)[0]
+    worst = 0.0
+    for end, t in ((ends[0], -tan[0]), (ends[1], tan[1])):
+        at = np.hypot(*(feet - end).T) <= 1e-9 * REF.length
+        if at.any():
+            worst = max(worst, float(np.max((xy[at] - end) @ t)))
+    return worst
+
+
+@pytest.mark.parametrize("n,sigma", SCANS)
+@pytest.mark.parametrize("model", ["discrete", "smooth"])
+def test_resampled_fit_is_as_close_to_the_points(n, sigma, model):
+    xy = scan(n, sigma)
+    own = rms_to(quiet_fit(xy, model=model).to_bspline(1e-3), xy)
+    spacing = REF.length / n
+    for step in (0.5 * spacing, 2.0 * spacing, 0.01 * REF.length, 0.05 * REF.length):
+        with warnings.catch_warnings(record=True) as said:
+            warnings.simplefilter("always")
+            f = el.fit_resampled(xy, step, model, tol=1e-3)
+        what = f"{model} n={n} sigma={sigma} step={step:g}: rms {f.rms:.4g}, own {own:.4g}"
+        # measured on the user's points, against the curve drawn
+        assert f.rms == pytest.approx(rms_to(f.bspline, xy), rel=1e-9)
+        warned = [w for w in said if issubclass(w.category, el.ResampleWarning)]
+        if f.rms > 1.2 * own:
+            # farther: it says so, with the figures (the points' own smooth fit)
+            assert warned and f.reference_rms is not None, what
+            assert f.reference_rms == pytest.approx(own, rel=0.05), what
+            assert f"{f.rms:.3g}" in str(warned[0].message), what
+        else:
+            assert not warned, what
+        # the curve reaches the points' ends: none runs past them by more than the noise
+        # (4 sigma: the end point's own and its neighbours'; main: 49 mm at 50 mm, sigma 0.5)
+        assert overshoot(f.bspline, xy) <= 4.0 * sigma, what
+
+
+def test_the_qa_scan_at_the_points_spacing():
+    """The QA's case: 2000 points 2 mm apart, noise 0.5 mm, resampled at 2 mm. The polygon
+    runs 4094 mm through the noise; h held at the step bulged the discrete curve to rms 13
+    (and 5 mm: 3.4); fitted, it lies as near as the points' own fit. At 50 mm the polygon
+    stopped up to a step short, and the curve 49 mm from the last points."""
+    xy = scan(2000, 0.5)
+    own = rms_to(quiet_fit(xy, model="discrete").to_bspline(), xy)
+    for step in (2.0, 5.0, 50.0):
+        f = el.fit_resampled(xy, step, "discrete")
+        assert f.rms < 1.15 * own and f.max_error < 2.5, (step, f.rms, f.max_error)
+        assert np.array_equal(f.polygon[[0, -1]], xy[[0, -1]])
+
+
+def test_resampled_polygon_of_a_zigzag_is_the_medians():
+    """Points whose polyline is their noise's zigzag (2 % noise, 3000 points: 83 x the
+    curve) are resampled along the medians of their runs; a clean scan along its own."""
+    noisy, clean = scan(3000, 80.0), scan(3000, 0.0)
+    length = lambda p: float(np.sum(np.hypot(*np.diff(p, axis=0).T)))
+    p = el.resampled_polygon(noisy, 20.0)
+    assert length(p) < 1.3 * REF.length < 0.1 * length(noisy)
+    q = el.resampled_polygon(clean, 20.0)
+    np.testing.assert_array_equal(q[:-1], el.resample_equilateral(clean, 20.0))
+    np.testing.assert_array_equal(q[-1], clean[-1])
+
+
+def test_resampled_polygon_keeps_the_points_order():
+    xy = scan(300, 1.0)[::-1].copy()          # runs from larger x: the walk starts at its end
+    p = el.resampled_polygon(xy, 40.0)
+    np.testing.assert_array_equal(p[[0, -1]], xy[[0, -1]])
+    assert np.all(np.diff(p[:, 0]) < 0)
