@@ -178,6 +178,18 @@ def line_and_arc_sketch(doc, name="LineArc", placement=SKETCH_PLACEMENT):
     return sk
 
 
+def u_profile_sketch(doc, name="Profile", placement=SKETCH_PLACEMENT):
+    """A U profile (QA 9): its bottom (0, 0)-(100, 0) (Edge1), the right wall (100, 0) up
+    to (100, 20) (Edge2) and the left wall (0, 30) down to (0, 0) (Edge3). The walls'
+    nearest ends are their bottoms, already joined by the bottom line."""
+    sk = doc.addObject("Sketcher::SketchObject", name)
+    sk.Placement = placement
+    for a, b in (((0, 0), (100, 0)), ((100, 0), (100, 20)), ((0, 30), (0, 0))):
+        sk.addGeometry(Part.LineSegment(App.Vector(*a, 0), App.Vector(*b, 0)), False)
+    doc.recompute()
+    return sk
+
+
 def arc_sketch(doc, radius=20.0, name="Arc", placement=SKETCH_PLACEMENT):
     """A sketch with one circular arc of the given radius (a quarter turn)."""
     sk = doc.addObject("Sketcher::SketchObject", name)

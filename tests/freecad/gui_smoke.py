@@ -21,7 +21,9 @@ gui_comb_panel.png, gui_blend_no_free_batten.png (the note why by length),
 gui_spline_spike.png (the note why at a tension), gui_spline_loops.png (its warning line),
 gui_blend_undo.png and gui_fit_undo.png (Edit > Undo during an edit:
 the panel closed); gui_panel_lifecycle.py's gui_close_with_panel.png,
-gui_delete_during_panel.png and gui_keep_needs_copy.png. The outcome goes
+gui_delete_during_panel.png and gui_keep_needs_copy.png; gui_blend_panel.py's
+gui_blend_picked_tops.png, gui_blend_ends_by_length.png, gui_blend_bound.png and
+gui_blend_imperial.png. The outcome goes
 to gui_smoke.result (first line PASS or FAIL); FreeCAD is then ended with os._exit
 because its exit status says nothing about a script. Only APIs present in FreeCAD
 0.20 and 1.0 are used (PySide through FreeCAD's shim)."""
@@ -348,7 +350,8 @@ def blend_panel(doc, S):
     check(b.Status.startswith("error") and "above" in b.Status and "error" in panel.result.text()
           and b.ViewObject.DrawStyle == "Dashed" and panel.list.count() == 0,
           f"blend: a too short length says which are possible ({b.Status})")
-    check(panel.tension.text() == panel.NO_RESULT and panel.length.text() == "20 mm",
+    # the length box as typed (no unit added while the user types, as FreeCAD's boxes)
+    check(panel.tension.text() == panel.NO_RESULT and panel.length.text() == "20",
           f"blend: after the failed solve the greyed tension shows no value, not the last "
           f"good curve's ({panel.tension.text()!r}, {panel.length.text()!r})")
     check(not panel.accept() and T.CURRENT, "blend panel stays open on an error")
@@ -653,7 +656,8 @@ def fit_panel(doc, S):
           "converged" in f.Status, f"fit panel: smooth model ({f.Status})")
     t0 = f.Tolerance.Value
     click_arrow(panel.tol, up=True)
-    check(abs(f.Tolerance.Value - 10 * t0) < 1e-12 * t0 and panel.tol.text().startswith(f"{10 * t0:g}"),
+    shown = App.Units.Quantity(panel.tol.text()).Value   # mm, shown in the schema's unit
+    check(abs(f.Tolerance.Value - 10 * t0) < 1e-12 * t0 and abs(shown - 10 * t0) < 1e-9 * t0,
           f"fit: tolerance arrow steps a decade ({t0:g} -> {panel.tol.text()})")
     click_arrow(panel.tol, up=False)
     click_arrow(panel.tol, up=False)
@@ -1042,6 +1046,10 @@ def run():
     # a panel open while the user deletes, closes the document, or asks to keep nothing
     import gui_panel_lifecycle
     gui_panel_lifecycle.run_all(sys.modules[__name__])
+
+    # the blend's picked ends, new ends without a free batten, a bound field, unit schemas
+    import gui_blend_panel
+    gui_blend_panel.run_all(sys.modules[__name__])
 
 
 def main():

@@ -416,6 +416,64 @@ class BlendTest(unittest.TestCase):
         self.doc.recompute()
         self.assertEqual(list(g.Lengths), list(f.Lengths))
 
+    def test_the_command_joins_each_edge_at_its_end_nearer_the_click(self):
+        """A U profile's two walls clicked near their tops are blended from top to top, as
+        Sketcher's trim and fillet read a click (the nearest ends, their bottoms, gave a
+        219 mm U hanging below the profile, QA 9); the recorded command makes the same;
+        a selection without clicks (a script's, PickedPoints (0, 0, 0)) keeps the nearest
+        ends; a click on one wall only takes the other's end nearest it; a point off the
+        edge is no click."""
+        sk = S.u_profile_sketch(self.doc)
+        glob = sk.getGlobalPlacement().multVec
+        right, left = S.sketch_names(sk, [(1, "edge"), (2, "edge")])
+        walls = [(sk, [right]), (sk, [left])]
+        tops = {(sk.Name, right): glob(App.Vector(100, 18, 0)),
+                (sk.Name, left): glob(App.Vector(0, 28, 0))}
+        at_tops, at_bottoms = [(0.0, 30.0, 0.0), (100.0, 20.0, 0.0)], [(0.0, 0.0, 0.0),
+                                                                       (100.0, 0.0, 0.0)]
+
+        def ends(f):
+            self.assertFalse(f.Status.startswith("error"), f.Status)
+            e = f.Shape.Edges[0]
+            return sorted(tuple(round(c, 6) + 0.0 for c in sk.getGlobalPlacement().inverse()
+                                .multVec(e.valueAt(u))) for u in (e.FirstParameter,
+                                                                  e.LastParameter))
+
+        f = C.blend_sources(walls, open_panel=False, picks=tops)
+        self.assertIsNotNone(f, C.MESSAGES)
+        self.assertEqual(ends(f), at_tops)
+        # no free batten joins the tops: by length, 1.5 x their 100.5 mm, as the QA's 151
+        self.assertEqual((f.Mode, f.Length.Value), ("length", 151.0))
+        g = Bl.make(self.doc, (sk, right), (sk, left), at_end1=f.AtEnd1, at_end2=f.AtEnd2,
+                    Mode="length", Length=151.0)
+        self.doc.recompute()                       # the recorded call
+        self.assertEqual(list(g.Lengths), list(f.Lengths))
+        zero = {k: App.Vector() for k in tops}     # a scripted selection: the nearest ends
+        for picks in (None, zero):
+            self.assertEqual(ends(C.blend_sources(walls, open_panel=False, picks=picks)),
+                             at_bottoms)
+        one = {(sk.Name, right): tops[(sk.Name, right)],
+               (sk.Name, left): glob(App.Vector(40, 28, 0))}    # 40 mm off the wall
+        self.assertEqual(ends(C.blend_sources(walls, open_panel=False, picks=one)), at_tops)
+
+    def test_a_click_chooses_the_end_nearer_along_the_edge(self):
+        """Along the edge, not in a straight line: a hook (up 100 mm, over and down to 20
+        mm from its stem) clicked on its stem 60 mm up is nearer its start along it, its
+        end in a straight line."""
+        c = Part.BSplineCurve()
+        c.interpolate([App.Vector(*p, 0) for p in ((0, 0), (0, 50), (0, 100), (10, 112),
+                                                  (20, 100), (20, 80))])
+        hook = c.toShape()
+        click = hook.valueAt(hook.Curve.parameter(App.Vector(0, 60, 0)))
+        u = hook.Curve.parameter(click)
+        start, end = hook.valueAt(hook.FirstParameter), hook.valueAt(hook.LastParameter)
+        self.assertLess(hook.Curve.length(hook.FirstParameter, u), 0.5 * hook.Length)
+        self.assertLess((click - end).Length, (click - start).Length)
+        self.assertIs(Bl.picked_end(hook, click), False)
+        self.assertIs(Bl.picked_end(hook, hook.valueAt(hook.Curve.parameter(
+            App.Vector(20, 90, 0)))), True)
+        self.assertIsNone(Bl.picked_end(hook, App.Vector(60, 60, 0)))   # off the edge
+
     def test_touching_and_noncoplanar_ends_are_rejected(self):
         import Part
         a = self.doc.addObject("Part::Feature", "A")

@@ -10,10 +10,11 @@ from __future__ import annotations
 import json
 
 import FreeCAD as App
+import Part
 
 from . import defaults
-from .geometry import (edge_end, el, global_element, is_sketch, np, part_bspline,
-                       plane_coordinates, plane_curvature, to_3d)
+from .geometry import (edge_end, el, global_element, is_sketch, nearest_parameter, np,
+                       part_bspline, plane_coordinates, plane_curvature, to_3d)
 from .links import followed_edge
 from .proxy import (FeatureProxy, InputProblem, add_enum, add_geometry_index, add_length,
                     add_link, add_property, attach_view, check_degree, check_number,
@@ -57,6 +58,40 @@ def nearest_ends(e0, e1):
             if best is None or d < best[0]:
                 best = (d, a, b)
     return best[1], best[2]
+
+
+# A picked point (Gui.Selection's PickedPoints, global) chooses its edge's end when it lies on
+# the edge: within PICK_NEAR of its length (the view's tessellation of a curve is off it by a
+# fraction of a percent); a scripted selection's (0, 0, 0) is no pick.
+PICK_NEAR = 0.05
+
+
+def picked_end(edge, point):
+    """The end of ``edge`` nearer ``point`` (True: its end vertex), or None when ``point``
+    is no pick on it (None, the scripted (0, 0, 0), or off the edge)."""
+    if point is None or point.Length == 0.0:
+        return None
+    if edge.distToShape(Part.Vertex(point))[0] > PICK_NEAR * edge.Length:
+        return None
+    # along the edge (an arc's far end may be nearer in a straight line)
+    u = nearest_parameter(edge, point)
+    return edge.Curve.length(edge.FirstParameter, u) > 0.5 * edge.Length
+
+
+def chosen_ends(e0, e1, pick0=None, pick1=None):
+    """(at_end0, at_end1): each edge's end nearer where the user clicked it (picked_end), as
+    Sketcher's trim and fillet read a click; an edge without a pick takes its end nearest
+    the other's chosen end; neither picked: the nearest pair of ends (nearest_ends)."""
+    a, b = picked_end(e0, pick0), picked_end(e1, pick1)
+    if a is None and b is None:
+        return nearest_ends(e0, e1)
+    if a is None:
+        p = edge_end(e1, b)[0]
+        a = (edge_end(e0, True)[0] - p).Length < (edge_end(e0, False)[0] - p).Length
+    elif b is None:
+        p = edge_end(e0, a)[0]
+        b = (edge_end(e1, True)[0] - p).Length < (edge_end(e1, False)[0] - p).Length
+    return a, b
 
 
 def describe(curve):
@@ -158,6 +193,16 @@ def starting_length(e0, at_end0, e1, at_end1, plane=None):
                     f"instead, {length:g} mm ({m:g} \u00d7 the {dist:.4g} mm between them, the "
                     f"fairest of {LENGTH_MULTIPLES[0]:g} to {LENGTH_MULTIPLES[-1]:g} \u00d7); "
                     "change it, or solve for a tension > 0")
+
+
+def free_or_length(e0, at_end0, e1, at_end1, plane=None):
+    """None where the free batten (tension 0) joins the ends; else starting_length's
+    (length, note): what the Elastic blend command and its panel start by."""
+    try:
+        blend_core(e0, at_end0, e1, at_end1, plane)
+        return None
+    except NoBlend:
+        return starting_length(e0, at_end0, e1, at_end1, plane)
 
 
 def inflections(pieces):
@@ -428,12 +473,17 @@ class BlendProxy(FeatureProxy):
             out.append(edge)
         return out
 
+    @staticmethod
+    def sketch_plane(obj):
+        """The plane of the edges' sketch when both are in one, else None (found from them)."""
+        if obj.Edge1[0] == obj.Edge2[0] and is_sketch(obj.Edge1[0]):
+            return obj.Edge1[0].getGlobalPlacement()
+        return None
+
     def compute(self, obj):
         """blend_core's dict for the linked edges, plus the chosen solution's B-spline."""
         e1, e2 = self.ends(obj)
-        plane = None
-        if obj.Edge1[0] == obj.Edge2[0] and is_sketch(obj.Edge1[0]):
-            plane = obj.Edge1[0].getGlobalPlacement()
+        plane = self.sketch_plane(obj)
         value = float(obj.Length) if obj.Mode == "length" else obj.Tension
         r = blend_core(e1, obj.AtEnd1, e2, obj.AtEnd2, plane, obj.Mode, value)
         curves = r["curves"]
@@ -532,7 +582,7 @@ def copy_into_sketch(blend, sketch=None):
     return write_to_sketch(blend, sketch or blend.Edge1[0])[0]
 
 
-__all__ = ["BlendProxy", "NoBlend", "check_open", "blend_core", "starting_length", "g2_blend",
-           "g2_tension_reach", "make",
-           "copy_into_sketch", "nearest_ends",
+__all__ = ["BlendProxy", "NoBlend", "check_open", "blend_core", "starting_length",
+           "free_or_length", "g2_blend", "g2_tension_reach", "make", "copy_into_sketch", "nearest_ends",
+           "chosen_ends", "picked_end",
            "edge_end", "MODES", "CONTINUITIES"]

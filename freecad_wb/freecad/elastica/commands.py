@@ -59,6 +59,13 @@ def selection_sources():
     return [(s.Object, list(s.SubElementNames)) for s in Gui.Selection.getSelectionEx()]
 
 
+def selection_picks():
+    """{(object name, subname): the point clicked on it (global)} of the current selection
+    (Gui.Selection's PickedPoints; a scripted selection's are (0, 0, 0): no pick)."""
+    return {(s.Object.Name, n): App.Vector(p) for s in Gui.Selection.getSelectionEx()
+            for n, p in zip(s.SubElementNames, s.PickedPoints)}
+
+
 def _run(code):
     """Execute ``code`` recorded as a GUI command (run directly without the GUI);
     return the last created object."""
@@ -206,8 +213,10 @@ def _two_edges(sources):
     return edges if len(edges) == 2 else None
 
 
-def blend_sources(sources, open_panel=True):
-    """Check two selected edges, create the Blend feature (recorded), open its panel."""
+def blend_sources(sources, open_panel=True, picks=None):
+    """Check two selected edges, create the Blend feature (recorded), open its panel.
+    ``picks``: {(object name, subname): point clicked} (selection_picks): each edge is
+    left at its end nearer the click (blend.chosen_ends); without: the nearest ends."""
     from . import blend
     from .geometry import global_element, is_sketch
     doc = _doc()
@@ -215,7 +224,8 @@ def blend_sources(sources, open_panel=True):
         return None
     edges = _two_edges(sources)
     if edges is None:
-        message("select exactly two edges (their nearest ends are joined)")
+        message("select exactly two edges (each is joined at its end nearer where it was "
+                "clicked)")
         return None
 
     opts = {}
@@ -227,17 +237,17 @@ def blend_sources(sources, open_panel=True):
         e1, e2 = global_element(*edges[0]), global_element(*edges[1])
         for (obj, sub), e in zip(edges, (e1, e2)):   # bad input: no feature, a message
             blend.check_open(e, f"{obj.Label}.{sub}")
-        a, b = blend.nearest_ends(e1, e2)
+        a, b = blend.chosen_ends(e1, e2, *((picks or {}).get((o.Name, sub))
+                                           for o, sub in edges))
+        opts.update(at_end1=a, at_end2=b)
         plane = None
         if edges[0][0] == edges[1][0] and is_sketch(edges[0][0]):
             plane = edges[0][0].getGlobalPlacement()
-        try:
-            blend.blend_core(e1, a, e2, b, plane)
+        start = blend.free_or_length(e1, a, e2, b, plane)
+        if start is None:
             return None
-        except blend.NoBlend:
-            length, note = blend.starting_length(e1, a, e2, b, plane)
-        opts.update(Mode="length", Length=length)
-        return note
+        opts.update(Mode="length", Length=start[0])
+        return start[1]
 
     return _check_and_create(
         "Elastic blend", "blend", check,
@@ -249,9 +259,13 @@ def blend_sources(sources, open_panel=True):
 
 class BlendCommand(_Command):
     pixmap, menu = "blend", "Elastic blend"
-    tip = ("Join the nearest ends of two selected coplanar edges by an elastica: the free "
-           "batten, or every Hermite solution for a tension or a length")
+    tip = ("Join two selected coplanar edges by an elastica, each at its end nearer where "
+           "you clicked it (selected by a script, without a click: their nearest ends): the "
+           "free batten, or every Hermite solution for a tension or a length")
     run = staticmethod(blend_sources)
+
+    def Activated(self):
+        _guarded(lambda sel: blend_sources(sel, picks=selection_picks()))
 
 
 # ------------------------------------------------------------------ elastic spline

@@ -51,8 +51,11 @@ def _in_unit(text, unit):
     Quantity spin boxes read input): '7 cm' in a box of mm is 70, '2.75 in' 69.85,
     '=2*35' 70, '70,5' 70.5 where the decimal separator is a comma. ValueError for text it
     cannot read or a quantity of another kind ('7 kg' for a length)."""
+    body = text[1:] if text.startswith("=") else text
+    if not body.strip():    # FreeCAD reads '' as its 'no value', DBL_MIN: a box emptied
+        raise ValueError(f"{text!r}: not a number or quantity")   # to type in took it
     try:
-        q = App.Units.Quantity(text[1:] if text.startswith("=") else text)
+        q = App.Units.Quantity(body)
     except Exception:      # the parser's errors are of several kinds (syntax, 1/0, ...)
         raise ValueError(f"{text}: not a number or quantity") from None
     if q.Unit == App.Units.Quantity("1").Unit:
@@ -63,11 +66,23 @@ def _in_unit(text, unit):
     return q.Value / ref.Value
 
 
+def user_length(mm):
+    """(factor, unit): a length of ``mm`` millimetres in the user's unit schema (Edit >
+    Preferences > General > Units) is mm / factor unit, as FreeCAD's own Quantity boxes and
+    property editor show it ('5.94 in', '15.1 cm', '1 \u00b5m')."""
+    _, factor, unit = App.Units.Quantity(float(mm), App.Units.Length).getUserPreferred()
+    if not factor or not unit:      # a schema's bare '0' (Building US): its unit of 1 mm
+        _, factor, unit = App.Units.Quantity(1.0, App.Units.Length).getUserPreferred()
+    return float(factor), unit
+
+
 class NumberBox(QtGui.QDoubleSpinBox):
-    """A spin box that shows its value as typed ('0.001', '2.5e-07', not '0.00'),
-    accepts scientific notation, quantities in other units and expressions as FreeCAD's
-    own boxes do ('7 cm', '2.75 in', '=2*35': _in_unit; a plain float read as '7 cm' was
-    taken as 7 mm) and steps by ``singleStep``."""
+    """A spin box that shows its value as typed ('0.001', '2.5e-07', not '0.00'), a length
+    in the user's unit schema (user_length; the value itself stays in mm), accepts
+    scientific notation, quantities in other units and expressions as FreeCAD's own boxes
+    do ('7 cm', '2.75 in', '=2*35': _in_unit; a plain number is in the box's base unit,
+    mm for a length, as in FreeCAD's boxes) and steps by ``singleStep``. The unit is part
+    of the text, not a suffix: a suffix stayed behind what was typed ('7 in mm')."""
 
     unit = ""                            # Qt calls validate() while __init__ runs
 
@@ -77,26 +92,30 @@ class NumberBox(QtGui.QDoubleSpinBox):
         self.setRange(lo, hi)
         self.setSingleStep(step)
         self.setKeyboardTracking(True)
-        self.unit = f" {unit}" if unit else ""
-        self.setSuffix(self.unit)
+        self.unit = unit
         self.setToolTip(tip)
         # as narrow as its minimum, not the width of '-1e+06 1/mm' (its range's text): the
         # Fit panel's Ends box was 216 px wide for it
         self.setSizePolicy(QtGui.QSizePolicy.Preferred, QtGui.QSizePolicy.Fixed)
 
     def textFromValue(self, value):
-        return f"{value:.6g}"
+        if self.unit == "mm":
+            factor, unit = user_length(value)
+            return f"{value / factor:.6g} {unit}"
+        return f"{value:.6g} {self.unit}" if self.unit else f"{value:.6g}"
 
     def _number(self, text):
         t = text.strip()
-        if self.unit and t.endswith(self.unit.strip()):
-            t = t[:-len(self.unit.strip())].strip()
+        if self.unit and t.endswith(self.unit):
+            t = t[:-len(self.unit)].strip()
         try:
             return float(t)
         except ValueError:
-            return _in_unit(t, self.unit.strip())
+            return _in_unit(t, self.unit)
 
     def valueFromText(self, text):
+        if text == self.textFromValue(self.value()):
+            return self.value()          # as shown (rounded in another unit): unchanged
         try:
             return self._number(text)
         except ValueError:
@@ -112,7 +131,18 @@ class NumberBox(QtGui.QDoubleSpinBox):
         return state, text, pos
 
     def fixup(self, text):
-        return self.textFromValue(self.value()) + self.unit
+        return self.textFromValue(self.value())
+
+    def bind_mark(self, expression):
+        """Bound to a property's ``expression``: read-only, FreeCAD's bound-expression
+        mark in the box and the expression in its tooltip, as its own Quantity boxes show
+        a bound property (the panel does not write it: set() skips bound properties)."""
+        self.setReadOnly(True)
+        mark = QtGui.QIcon(":/icons/bound-expression.svg")
+        self.lineEdit().addAction(mark, QtGui.QLineEdit.TrailingPosition)
+        self.setToolTip(f"Bound to the expression ={expression} (read-only here: change or "
+                        "clear it in the property editor's expression dialog, Ctrl+=).\n"
+                        + self.toolTip())
 
 
 class DecadeBox(NumberBox):
@@ -274,9 +304,19 @@ class Panel:
         box.blockSignals(False)
         box.valueChanged.connect(lambda v: self.set(prop, float(v)))
         self.row(grid, label, box, tip)
+        self.mark_bound(box, prop)
         if when:
             self.enablers.append((box, when))
         return box
+
+    def expression(self, prop):
+        """The expression a property of the feature is bound to, or None."""
+        return dict(getattr(self.obj, "ExpressionEngine", [])).get(prop)
+
+    def mark_bound(self, box, prop):
+        expr = self.expression(prop)
+        if expr:
+            box.bind_mark(expr)
 
     def checked_number(self, grid, text, check_prop, prop, lo, hi, step, unit, tip, when=None):
         """A check box (the boolean check_prop) beside a spin box (the float prop), which
@@ -290,6 +330,7 @@ class Panel:
         value.setValue(getattr(self.obj, prop))
         value.blockSignals(False)
         value.valueChanged.connect(lambda v: self.set(prop, float(v)))
+        self.mark_bound(value, prop)
         r = grid.rowCount()
         grid.addWidget(box, r, 0)
         grid.addWidget(value, r, 1)
@@ -453,6 +494,8 @@ class Panel:
         if self.gone:               # closing: no edit outside the panel's transaction
             return
         target = target if target is not None else self.obj
+        if target is self.obj and self.expression(prop):
+            return                  # bound: the expression sets it (the box is read-only)
         if getattr(target, prop) != value:
             if target is not self and not self.doc.HasPendingTransaction:
                 self.doc.openTransaction(self.txn)   # its own was committed by a command

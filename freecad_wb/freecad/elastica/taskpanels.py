@@ -179,6 +179,8 @@ class BlendPanel(Panel):
     def build(self):
         o = self.obj
         self.picked = None              # the user's choice of solution, kept across edits
+        if self.note and o.Mode == "length":
+            self.auto = float(o.Length)  # the command's length (no free batten)
         g = self.box("Elastic blend")
         self.warning_row(g)             # why the command did not start at the free batten
         self.mode = self.choice(g, "Solve for", "Mode", B.MODES, ["a length", "a tension"],
@@ -235,11 +237,66 @@ class BlendPanel(Panel):
             return 1e-4
 
     def changed(self, prop):
+        o = self.obj
         if prop in ("Mode", "AtEnd1", "AtEnd2"):
             self.note = ""              # the command's choice of mode is the user's now
-        if prop == "Mode" and self.obj.Mode == "length" and self.obj.Lengths:
-            # length mode starts from the length of the curve on screen
-            self.obj.Length = self.obj.BlendLength
+        if prop == "Mode":
+            self.auto = None
+            if o.Mode == "length" and o.Lengths:
+                # length mode starts from the length of the curve on screen
+                o.Length = o.BlendLength
+            elif o.Mode == "length" and float(o.Length) == 0.0:
+                self.start_by_length()  # none on screen: where no free batten, the command's
+        elif prop in ("AtEnd1", "AtEnd2"):
+            self.ends_changed()
+
+    auto = None         # the length the command or the panel chose (no free batten), if shown
+
+    def ends_changed(self):
+        """New ends, as the command starts: the free batten where one joins them, else a
+        length (blend.free_or_length, said on the warning line); only where the free batten
+        was asked (Tension 0) or the length shown is the one chosen so (not the user's)."""
+        o = self.obj
+        auto = o.Mode == "length" and self.auto is not None and float(o.Length) == self.auto
+        if not (auto or (o.Mode == "tension" and o.Tension == 0.0)):
+            return
+        if not self.start_by_length() and auto and self.free:
+            self.auto = None
+            o.Mode = "tension"          # Tension is still 0: the free batten
+            self.show_mode()
+
+    free = False        # the last free_or_length found the free batten
+
+    def start_by_length(self):
+        """Length mode at blend.free_or_length's length where no free batten joins the
+        ends (True), the reason on the warning line; False where the free batten exists
+        (self.free) or the ends are bad (the solve says why)."""
+        o = self.obj
+        self.free = False
+        if self.expression("Mode") or self.expression("Length"):
+            return False            # bound: the expressions decide
+        try:
+            e1, e2 = o.Proxy.ends(o)
+            start = B.free_or_length(e1, o.AtEnd1, e2, o.AtEnd2, o.Proxy.sketch_plane(o))
+        except Exception:       # bad ends or none found: the feature's Status says it
+            return False
+        if start is None:
+            self.free = True
+            return False
+        self.auto, self.note = start
+        o.Mode, o.Length = "length", start[0]
+        self.show_mode()
+        return True
+
+    def show_mode(self):
+        """The Solve for and Length fields after the panel set them (no signal)."""
+        o = self.obj
+        self.mode.blockSignals(True)
+        self.mode.setCurrentIndex(B.MODES.index(o.Mode))
+        self.mode.blockSignals(False)
+        given = self.length if o.Mode == "length" else self.tension
+        self.show_value(given, float(getattr(o, "Length" if o.Mode == "length" else "Tension")))
+        self.refresh_enabled()
 
     def update(self):
         super().update()

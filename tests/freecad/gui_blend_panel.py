@@ -1,0 +1,245 @@
+"""The Elastic blend command and its panel as FreeCAD's own tools behave (QA 9), checked by
+the GUI smoke test (gui_smoke.py calls run_all):
+
+- the two edges are joined at the ends nearer where they were clicked (PickedPoints), as
+  Sketcher's trim and fillet read a click: a U profile's walls clicked near their tops
+  were blended at their bottoms, already joined by the profile's bottom line;
+- new ends no free batten joins (AtEnd toggled at tension 0) start by a length, as the
+  command does, said on the warning line, and switching to length mode with no length
+  fills one in: the panel showed an error, then Length 0 and "give a length";
+- a field bound to an expression is read-only and marked (FreeCAD's bound-expression
+  icon, the expression in its tooltip): typing in it showed a value the feature did not
+  take, and OK kept the expression's silently;
+- lengths show in the user's unit schema and take what is typed in any unit: the boxes
+  showed mm under every schema and '7 in mm' while '7 in' was typed.
+
+Screenshots: gui_blend_picked_tops.png, gui_blend_ends_by_length.png,
+gui_blend_bound.png, gui_blend_imperial.png."""
+import FreeCAD as App
+import FreeCADGui as Gui
+from PySide import QtCore, QtGui
+
+import elastica_samples as S
+
+G = None            # the gui_smoke module (check, wait, screenshot, ...)
+
+
+def keys(widget, text):
+    """Type ``text`` key by key into ``widget`` (what has focus gets them)."""
+    for ch in text:
+        for kind in (QtCore.QEvent.KeyPress, QtCore.QEvent.KeyRelease):
+            QtGui.QApplication.sendEvent(widget, QtGui.QKeyEvent(kind, 0, QtCore.Qt.NoModifier, ch))
+    G.pump()
+
+
+def key(widget, k):
+    for kind in (QtCore.QEvent.KeyPress, QtCore.QEvent.KeyRelease):
+        QtGui.QApplication.sendEvent(widget, QtGui.QKeyEvent(kind, k, QtCore.Qt.NoModifier))
+    G.pump()
+
+
+def retype(box, text):
+    """Select all of a spin box's text and type ``text`` (the unit too, if any)."""
+    box.setFocus()
+    G.pump()
+    box.lineEdit().selectAll()
+    key(box.lineEdit(), QtCore.Qt.Key_Delete)
+    keys(box.lineEdit(), text)
+
+
+def profile(doc):
+    sk = S.u_profile_sketch(doc, placement=App.Placement())
+    Gui.SendMsgToActiveView("ViewTop")
+    Gui.SendMsgToActiveView("ViewFit")
+    return sk, S.sketch_names(sk, [(1, "edge"), (2, "edge")])
+
+
+def ends_of(b):
+    e = b.Shape.Edges[0]
+    return sorted(tuple(round(c, 6) + 0.0 for c in e.valueAt(u))
+                  for u in (e.FirstParameter, e.LastParameter))
+
+
+TOPS = [(0.0, 30.0, 0.0), (100.0, 20.0, 0.0)]
+BOTTOMS = [(0.0, 0.0, 0.0), (100.0, 0.0, 0.0)]
+
+
+def picked_ends(doc):
+    """Walls clicked near their tops: blended top to top (by length: no free batten)."""
+    from freecad.elastica import commands as C, taskpanels as T
+    sk, (right, left) = profile(doc)
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(doc.Name, sk.Name, right, 100, 18, 0)
+    Gui.Selection.addSelection(doc.Name, sk.Name, left, 0, 28, 0)
+    del C.MESSAGES[:]
+    Gui.runCommand("Elastica_Blend")
+    G.wait(300)
+    panel = T.CURRENT[0] if T.CURRENT else None
+    G.check(panel is not None, f"picked walls: the blend's panel opens {C.MESSAGES}")
+    b = panel.obj
+    G.check(ends_of(b) == TOPS, f"picked near their tops: blended top to top {ends_of(b)}")
+    G.check(b.Mode == "length" and b.Length.Value == 151.0 and panel.warning[0].isVisible(),
+            f"no free batten joins the tops: by length {b.Length} with the note")
+    G.screenshot("gui_blend_picked_tops.png")
+    panel.accept()
+    G.pump()
+    return sk, right, left
+
+
+def ends_toggled(doc, sk, right, left):
+    """A scripted selection (no click): the bottoms, the free batten; the AtEnd boxes
+    toggled to the tops, where none exists: by length, said; switching back to the free
+    batten's ends: the free batten again."""
+    from freecad.elastica import taskpanels as T
+    panel = G.open_panel(doc, "Elastica_Blend", [(sk, right), (sk, left)], "Scripted blend")
+    b = panel.obj
+    G.check(ends_of(b) == BOTTOMS and b.Mode == "tension" and b.Tension == 0.0,
+            f"a selection without clicks: the nearest ends, the free batten {ends_of(b)}")
+    panel.end1.click()
+    G.wait(600)
+    panel.end2.click()
+    G.wait(900)
+    said = panel.warning[1].text()
+    G.check(ends_of(b) == TOPS and b.Mode == "length" and b.Length.Value == 151.0
+            and not b.Status.startswith("error") and panel.mode.currentIndex() == 0
+            and panel.length.isEnabled() and panel.length.text() == "151 mm",
+            f"ends no free batten joins: by length {b.Length}, box {panel.length.text()!r} "
+            f"({b.Status})")
+    G.check(panel.warning[0].isVisible() and "No free batten" in said and "151 mm" in said,
+            f"ends no free batten joins: the panel says why by length ({said})")
+    G.screenshot("gui_blend_ends_by_length.png")
+    panel.end1.click()
+    G.wait(600)
+    panel.end2.click()
+    G.wait(900)
+    G.check(ends_of(b) == BOTTOMS and b.Mode == "tension" and b.Tension == 0.0 and
+            panel.mode.currentIndex() == 1 and panel.tension.text() == "0 1/mm\u00b2" and
+            not panel.warning[0].isVisible() and not b.Status.startswith("error"),
+            f"back to ends the free batten joins: the free batten again ({b.Mode}, "
+            f"{panel.tension.text()!r}, {b.Status})")
+    # a length of the user's stays when the ends change
+    panel.mode.setCurrentIndex(0)
+    G.wait(600)
+    retype(panel.length, "250")
+    key(panel.length.lineEdit(), QtCore.Qt.Key_Tab)
+    G.wait(600)
+    panel.end1.click()
+    G.wait(900)
+    G.check(b.Mode == "length" and b.Length.Value == 250.0,
+            f"a typed length stays when the ends change ({b.Mode}, {b.Length})")
+    panel.reject()
+    G.pump()
+    # the feature made at the tops by tension 0 (a script): its error; 'a length' fills one
+    doc.openTransaction("script")
+    from freecad.elastica import blend as Bl
+    b = Bl.make(doc, (sk, right), (sk, left), at_end1=None, at_end2=None)
+    b.AtEnd1, b.AtEnd2 = not b.AtEnd1, not b.AtEnd2
+    doc.commitTransaction()
+    doc.recompute()
+    G.check(b.Status.startswith("error"), f"tension 0 at the tops: an error ({b.Status})")
+    Gui.ActiveDocument.setEdit(b.Name)
+    G.wait(300)
+    panel = T.CURRENT[0]
+    panel.mode.setCurrentIndex(0)
+    G.wait(900)
+    G.check(b.Mode == "length" and b.Length.Value == 151.0 and panel.length.text() == "151 mm"
+            and not b.Status.startswith("error") and "No free batten" in panel.warning[1].text(),
+            f"'a length' without one: the command's length, said ({b.Length}, {b.Status})")
+    panel.accept()
+    G.pump()
+    return b
+
+
+def bound_tension(doc, b):
+    """Tension bound to a spreadsheet cell: read-only, marked, kept."""
+    from freecad.elastica import taskpanels as T
+    ss = doc.addObject("Spreadsheet::Sheet", "Spreadsheet")
+    ss.set("A1", "0.001")
+    ss.setAlias("A1", "sigma")
+    doc.recompute()
+    b.Mode = "tension"
+    b.setExpression("Tension", "Spreadsheet.sigma")
+    doc.recompute()
+    Gui.ActiveDocument.setEdit(b.Name)
+    G.wait(300)
+    panel = T.CURRENT[0]
+    box = panel.tension
+    G.check(box.isReadOnly() and "Spreadsheet.sigma" in box.toolTip() and
+            len(box.lineEdit().actions()) == 1,
+            f"a bound tension: read-only, marked, its expression in the tooltip "
+            f"({box.isReadOnly()}, {box.toolTip()[:60]!r})")
+    retype(box, "0.003")
+    key(box.lineEdit(), QtCore.Qt.Key_Tab)
+    G.wait(600)
+    G.check(box.text() == "0.001 1/mm\u00b2" and b.Tension == 0.001,
+            f"typing in a bound box changes nothing ({box.text()!r}, {b.Tension})")
+    Gui.SendMsgToActiveView("ViewTop")
+    G.screenshot("gui_blend_bound.png")
+    panel.accept()
+    G.pump()
+    G.check(b.Tension == 0.001 and dict(b.ExpressionEngine).get("Tension") == "Spreadsheet.sigma",
+            "OK keeps the expression")
+    b.setExpression("Tension", None)
+    doc.recompute()
+
+
+def unit_schemas(doc, b):
+    """Imperial decimal and Building Euro: lengths in inches and centimetres; typed '7 in'
+    stays as typed and sets 177.8 mm; leaving a box without typing changes nothing."""
+    from freecad.elastica import taskpanels as T
+    prefs = App.ParamGet("User parameter:BaseApp/Preferences/Units")
+    old = prefs.GetInt("UserSchema", 0)
+    b.Mode, b.Length = "length", 151.0
+    doc.recompute()
+    try:
+        for schema, length, tol in ((3, "5.94488 in", "3.93701e-05 in"), (4, "15.1 cm",
+                                                                           "0.0001 cm")):
+            prefs.SetInt("UserSchema", schema)
+            App.Units.setSchema(schema)
+            Gui.ActiveDocument.setEdit(b.Name)
+            G.wait(300)
+            panel = T.CURRENT[0]
+            G.check(panel.length.text() == length and panel.tol.text() == tol,
+                    f"schema {schema}: Length {panel.length.text()!r}, Tolerance "
+                    f"{panel.tol.text()!r}")
+            panel.length.setFocus()
+            G.pump()
+            key(panel.length.lineEdit(), QtCore.Qt.Key_Tab)     # leaves it as shown
+            G.wait(400)
+            G.check(b.Length.Value == 151.0 and panel.length.text() == length,
+                    f"schema {schema}: leaving the box keeps 151 mm ({b.Length.Value!r})")
+            if schema == 3:
+                panel.length.setFocus()
+                panel.length.lineEdit().selectAll()
+                key(panel.length.lineEdit(), QtCore.Qt.Key_Delete)
+                G.wait(400)
+                G.check(b.Length.Value == 151.0 and not b.Status.startswith("error"),
+                        f"an emptied box sets nothing (FreeCAD reads '' as 2.2e-308): "
+                        f"{b.Length.Value!r}")
+                retype(panel.length, "7 in")
+                typed = panel.length.text()
+                G.wait(400)
+                G.check(typed == "7 in" and abs(b.Length.Value - 177.8) < 1e-9,
+                        f"typed '7 in': shows {typed!r}, Length {b.Length}")
+                key(panel.length.lineEdit(), QtCore.Qt.Key_Tab)
+                G.wait(400)
+                G.check(panel.length.text() == "7 in" and abs(b.Length.Value - 177.8) < 1e-9,
+                        f"after Tab: {panel.length.text()!r}")
+                Gui.SendMsgToActiveView("ViewTop")
+                G.screenshot("gui_blend_imperial.png")
+            panel.reject()
+            G.pump()
+    finally:
+        prefs.SetInt("UserSchema", old)
+        App.Units.setSchema(old)
+
+
+def run_all(smoke):
+    global G
+    G = smoke
+    doc = S.new_doc("ElasticaBlendPanel")
+    sk, right, left = picked_ends(doc)
+    b = ends_toggled(doc, sk, right, left)
+    bound_tension(doc, b)
+    unit_schemas(doc, b)
+    App.closeDocument(doc.Name)
