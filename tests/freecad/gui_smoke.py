@@ -738,7 +738,7 @@ def fit_panel_ends(doc, f, lines, k0):
     line = lines.Shape.Edges[0]
     t = App.Vector(e.tangentAt(e.FirstParameter)).normalize()
     # resampled (step 2 mm): the pinned end is the last of the points given (DataPoints),
-    # which the equilateral polygon stops short of
+    # where the resampled polygon ends
     pinned = f.DataPoints[-1]
     check(f.StartTangent and f.StartTangent[0] is lines and panel.tangent_buttons[0].text() ==
           f"{lines.Label}.Edge1" and t.cross(line.tangentAt(0)).Length < 1e-9 and
@@ -747,7 +747,8 @@ def fit_panel_ends(doc, f, lines, k0):
     # the line is 0.1 rad off the exact data's start: the warning line says what it costs
     check(f.Warnings and panel.warning[0].isVisible() and "Start tangent" in
           panel.warning[1].text() and f"{f.FreeRms:.3g} mm" in panel.warning[1].text() and
-          f.Rms > 2 * f.FreeRms and not [w for w in f.Warnings if "outliers?" in w],
+          f.Rms > 2 * f.FreeRms and not [w for w in f.Warnings if "outliers?" in w] and
+          not [w for w in f.Warnings if "resampled polygon" in w],
           f"fit: the end conditions' cost on the warning line, no outliers named ({f.Warnings})")
     f.ViewObject.ShowResiduals = True
     view = Gui.ActiveDocument.ActiveView

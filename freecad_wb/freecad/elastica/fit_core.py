@@ -120,8 +120,8 @@ def _rms(dist):
 
 def _beyond_the_ends(bspline, feet, dist, extent):
     """Which points lie beyond the curve's ends (their nearest point on it an end, farther
-    than COST_FLOOR of their extent and COST_RATIO times the others' rms): those a
-    resampled polygon leaves out. An
+    than COST_FLOOR of their extent and COST_RATIO times the others' rms): those a split
+    keyline's resampled polygon leaves out. Its
     equilateral polygon ends where no point lies a step further on (seed 000 §5.3), so up
     to a step of the points' run is not fitted, and the curve stops there too."""
     n = np()
@@ -132,21 +132,20 @@ def _beyond_the_ends(bspline, feet, dist, extent):
     return at_end & (n.abs(dist) > max(COST_FLOOR * extent, COST_RATIO * others))
 
 
-def _left_out(beyond, dist, step, used=None):
-    """The warning for points a resampled fit left out (_beyond_the_ends), else none.
-    ``used``: the step of a split keyline's polygon (its default where step is 0: a
-    keyline is always resampled, so 0 leaves nothing out only in one piece)."""
+def _left_out(beyond, dist, step, used):
+    """The warning for points a split keyline's resampled polygon left out
+    (_beyond_the_ends), else none. ``used``: that polygon's step (its default where step
+    is 0: a keyline is always resampled). One piece fits el.resampled_polygon, which ends
+    at the points' ends: what stops its curve short of them (end conditions, a hook) is
+    what stops the unresampled fit's, and the end conditions' cost says it."""
     if not beyond.any():
         return []
     d = np().abs(dist[beyond])
     m = int(beyond.sum())
     verb = "lies" if m == 1 else "lie"
-    if used is None:
-        setting, way_out = f"Resample = {step:g} mm", "a shorter step leaves less out, 0 none"
-    else:
-        setting = (f"Resample = {step:g} mm" if step else
-                   f"Resample = 0 takes {_default_step_name(used)}")
-        way_out = "a shorter step leaves less out"
+    setting = (f"Resample = {step:g} mm" if step else
+               f"Resample = 0 takes {_default_step_name(used)}")
+    way_out = "a shorter step leaves less out"
     return [f"{m} of {len(dist)} points {verb} beyond the curve's ends, up to "
             f"{float(d.max()):.3g} mm from it: the resampled polygon ({setting}) "
             "stops where no point lies a step further on, and the curve with it; Rms and "
@@ -433,7 +432,7 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         if resampled and not split:
             warnings = warnings + _far_from_resampled(user[:, :2], plane_rms, results[0], xy,
                                                       constraints, step)
-        warnings = warnings + _left_out(beyond, dist, step, used) + \
+        warnings = warnings + (_left_out(beyond, dist, step, used) if split else []) + \
             _off_plane(user[:, 2], plane_rms, size) + \
             _far_points(data[~beyond], dist[~beyond], plane,
                         None if resampled or free_dist is None else free_dist[~beyond]) + \
