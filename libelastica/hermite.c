@@ -60,7 +60,14 @@ int el__hermite_params_from_state(double x0, double y0, double theta, double kap
     p->x0 = x0;
     p->y0 = y0;
     p->length = L;
-    const double km2 = Fn + sigma;
+    /* kappa_m^2 = |F| + sigma; below sigma = 0 next to the centre (kappa, kappa' ~ theta
+     * sqrt|sigma|) that cancels to ~eps |sigma| absolute (tangents 1e-9 rad off the chord at
+     * sigma |p1 - p0|^2 = -10: km2 rounded to 0, the near-straight curve lost): there
+     * (|F|^2 - sigma^2) / (|F| - sigma) = (kappa^2 (kappa^2 - 2 sigma) + 4 kappa'^2) / (|F| - sigma),
+     * a sum of positive terms (|F|^2 from (8)) */
+    double km2 = Fn + sigma;
+    if (sigma < 0.0 && !sep && km2 < 1e-3 * Fn)
+        km2 = (kappa * kappa * (kappa * kappa - 2.0 * sigma) + 4.0 * dkappa * dkappa) / dsep;
     if (!(Fn > 0.0) || !(km2 > 0.0)) return EL_EDOM;
     const double k2 = km2 / (2.0 * Fn), kc2 = dsep / (2.0 * Fn);
     const double h = 0.5 * el__hermite_wrap_pi(theta - atan2(F[1], F[0]));
@@ -526,7 +533,15 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
      * x chart's states lose their relative precision (tangents 1e-9 rad from collinear at
      * sigma |p1 - p0|^2 = 10: f off by 0.3 at the curve's state, the curve lost; 1e-12 at
      * 10 to 1e4 too); within tol the segment is one */
-    const int collinear = fabs(pr.P1) <= opt->tol && pr.P2 > 0.0 && fabs(pr.V1) <= opt->tol && pr.V2 > 0.0;
+    int collinear = fabs(pr.P1) <= opt->tol && pr.P2 > 0.0 && fabs(pr.V1) <= opt->tol && pr.V2 > 0.0;
+    /* ... where the segment meets them: a tangent tol off the chord passes the test above or
+     * not by rounding, and the segment's residual ~tol the check below (tangents 1e-10 rad off
+     * at tol 1e-10: the segment dropped and the near-straight curve not looked for) */
+    if (collinear) {
+        el_hermite_solution line;
+        straight_solution(&fr, 0.0, &line);
+        collinear = !el__hermite_residual(&fr, &line, &line.residual) && line.residual <= opt->tol;
+    }
 
     hrootlist roots = {NULL, 0, 0};
     size_t nsolver = (size_t)-1;   /* roots from nsolver on: hermite_near.c's */
@@ -563,9 +578,15 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
     el_hermite_solution nearly;     /* added below unless the roots hold it */
     const int near_ok = opt->mode == EL_HERMITE_TENSION && !collinear &&
                         el__hermite_near_straight(&fr, opt->sigma, opt->tol, &nearly) == EL_OK;
-    /* at sigma = 0 not met to tol only by the parameters' resolution: unrepresentable */
-    const int near_unrep = near_ok && !(nearly.residual <= opt->tol) && opt->sigma == 0.0 &&
-                           nearly.residual <= 1e3 * DBL_EPSILON / (sqrt(nearly.curve.mu) * nearly.curve.length);
+    /* not met to tol only by the parameters' resolution: unrepresentable. A sliver of a huge
+     * elastica, sqrt(mu) L ~ |theta| at sigma = 0, or ~ sqrt(|sigma|) |p1 - p0| at tensions
+     * below theta^2 / |p1 - p0|^2 (sigma |p1 - p0|^2 = 1e-12 with the bow's tangents -+1e-6
+     * rad), whose closed form loses ~eps / (sqrt(mu) L); or a curve through a saddle, whose
+     * end an ulp of k moves by ~eps / ||k| - 1| (hermite.c's header; k rounded to +-1 with the
+     * bow's tangents -+1e-10 rad at sigma |p1 - p0|^2 = 1e-4: residual 1.2e-8) */
+    const double near_floor = near_ok ? DBL_EPSILON / fmin(sqrt(nearly.curve.mu) * nearly.curve.length,
+                                                           fabs(fabs(nearly.curve.k) - 1.0)) : 0.0;
+    const int near_unrep = near_ok && !(nearly.residual <= opt->tol) && nearly.residual <= 1e3 * near_floor;
     double cc, cL;
     int circle_unrep = 0;
     if (circle_arc(&fr, u0, u1, &cc, &cL) &&
@@ -637,7 +658,12 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
         if (s.npieces == 1 && s.energy * fr.d < 1e-2 && el_smooth_energy(&s.curve, &s.energy)) continue;
         int dup = 0;
         for (size_t j = 0; j < n && !dup; j++) {
-            if (el__hermite_same_solution(&s, &sol[j], fr.d)) {
+            /* (a near-straight root's: the one near-straight curve, told by its length where a
+             * chain's end curvatures are ~1e-3 off a single piece's: tangents 1e-3 rad off the
+             * chord, parallel, sigma |p1 - p0|^2 = 60: listed twice, the chain's curvature
+             * jumping by 3e-3 of its largest at its joint) */
+            if (el__hermite_same_solution(&s, &sol[j], fr.d) ||
+                (i >= nsolver && fabs(s.length - sol[j].length) <= 1e-6 * fr.d)) {
                 dup = 1;
                 /* a near-straight root replaces the roots' curve only where that one's
                  * curvature is not the curve's (el__hermite_near_check) */
@@ -652,12 +678,21 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
         if (!dup) sol[n++] = s;
     }
     free(roots.v);
-    if (near_found && near_u != (size_t)-1) unrep[near_u] = unrep[--nunrep];
+    if (near_found && near_u != (size_t)-1) { unrep[near_u] = unrep[--nunrep]; near_u = (size_t)-1; }
     size_t nu = (size_t)circle_unrep;
     if (near_ok && (nearly.residual <= opt->tol || near_unrep)) {
         int dup = 0;
+        /* (the one near-straight curve: told by its length too, as the near roots' above) */
         for (size_t j = 0; j < n && !dup; j++)
-            dup = el__hermite_same_solution(&nearly, &sol[j], fr.d);
+            dup = el__hermite_same_solution(&nearly, &sol[j], fr.d) ||
+                  fabs(nearly.length - sol[j].length) <= 1e-6 * fr.d;
+        /* (counted once: a near-straight root's curve can be counted below too) */
+        /* (no curve is shorter than its chord: a root that says so is the near-straight
+         * curve's, its length the x chart's rounding: tangents 8e-8 and -4e-8 rad off the
+         * chord at sigma |p1 - p0|^2 = 6.9, L = 0.993 |p1 - p0|) */
+        for (size_t j = 0; j < nunrep && !dup && near_unrep; j++)
+            dup = el__hermite_same_solution(&nearly, &unrep[j], fr.d) ||
+                  fabs(nearly.length - unrep[j].length) <= 1e-6 * fr.d || unrep[j].length < fr.d;
         if (!dup && near_unrep) {
             nu++;
         } else if (!dup) {
@@ -679,6 +714,12 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
         int dup = 0;
         for (size_t j = 0; j < n && !dup; j++)
             dup = el__hermite_same_solution(&unrep[i], &sol[j], fr.d);
+        /* the near-straight root's: the one near-straight curve (the linear beam's is unique),
+         * returned by the roots as one piece, where its own representation (a chain whose
+         * pieces' phi disagree, hermite_chain.c) was refused: its length (the root's, exact)
+         * tells it, not its end curvatures (the refused chain's) */
+        for (size_t j = 0; j < n && !dup && i == near_u; j++)
+            dup = fabs(sol[j].length - unrep[i].length) <= 1e-6 * fr.d;
         for (size_t j = 0; j < i && !dup; j++)
             dup = el__hermite_same_solution(&unrep[i], &unrep[j], fr.d);
         nu += !dup;

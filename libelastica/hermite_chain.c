@@ -32,6 +32,8 @@
 #include <string.h>
 
 enum { MAXPIECES = 3, MAXUNK = MAXPIECES + 1 };
+/* the pieces' force directions agree to this (rad; hermite_check.h's bound) */
+#define CHAIN_PHI 1e-7
 
 /* The chain and the unknowns of its correction: the phase q of every piece and the
  * last piece's length (tension mode) or the common mu (length mode, where the total
@@ -401,6 +403,12 @@ static int build_chain(const hframe *fr, int mode, double target, double sep, do
     for (int i = 0; i < c.n && mode == EL_HERMITE_TENSION; i++)
         c.p[i].mu = target / (2.0 * (2.0 * c.p[i].k * c.p[i].k - 1.0));
     if ((rc = g2 ? g2_joint(fr, &c) : correct(fr, &c, tol))) return rc;
+    /* one elastica: one force F, its direction phi in every piece. set_unknowns places each
+     * piece by the tangent (G1), so a phase the correction moved far turns the piece's F:
+     * on near-straight chains (tangents -1e-6, +1e-6 rad off a chord at 0.3 rad, sigma
+     * |p1 - p0|^2 = 1e5) phi 22.29 and 46.88, 6.3 rad apart mod 2 pi, the ends met */
+    for (int i = 1; i < c.n; i++)
+        if (!(fabs(wrap(c.p[i].phi - c.p[0].phi)) <= CHAIN_PHI)) return EL_EDOM;
     *jump = *kmax = 0.0;
     if (c.n == 2 && (rc = joint_jump(&c, jump, kmax))) return rc;
     /* the result, measured: start of the first piece, end of the last, and the joints */

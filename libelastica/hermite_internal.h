@@ -171,7 +171,9 @@ int el__hermite_solve_length_thorough(hprob *pr, double Lt, int ng, int ns, hroo
  * beta e^(-g (1 - s)), g = sqrt(sigma / 2); its start state k0, k0p, length L and
  * |F| - sigma = side e^lnsep. Its root in the separatrix chart appended to out where the
  * tangents lie within NEAR_CHORD rad of the chord, the end point ahead (none else). */
-#define NEAR_CHORD 1e-2
+/* (1e-2 and the rounding of an angle measured from the chord: chord at 0.3 rad, tangents
+ * 1e-2 rad off it, 0.01000000000000001 from the world's angles: the curve lost) */
+#define NEAR_CHORD (1e-2 + 1e-15)
 typedef struct { double g, alpha, beta, c, k0, k0p, L, lnsep, amax; int side; } hbeam;
 /* below (max |t0|, |t1|), the beam's states stand for the curve's (O(theta^2) relative) */
 #define NEAR_EXACT 1e-6

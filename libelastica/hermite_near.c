@@ -151,7 +151,16 @@ static int near_root(const hprob *pr, int b, const hbeam *bm, hrootlist *out)
      * sigma |p1 - p0|^2 = 30: kappa0 21 % off; ~1e-8: V2 = 1 in doubles, the discriminant of
      * (18) rounds below 0); above, the crossing, or where (17) has no real root the
      * separatrix chart's state */
-    if (bm->amax <= NEAR_EXACT) {
+    /* (and just above NEAR_EXACT where neither gives a state: tangents 1e-6 rad and 0 at
+     * sigma |p1 - p0|^2 = 1e5, the angle 1e-6 + 1 ulp from the world's: the curve lost, its
+     * mirror image found; the beam's states are O(1e-10) relative off there) */
+    int exact = bm->amax <= NEAR_EXACT;
+    if (!exact && near_crossing(pr, b, bm->k0, &c) &&
+        el__hermite_sep_eval(pr, HCHART_X, 0, b, bm->side, ya, pr->sigma, 1.0, &w, &c, NULL, NULL)) {
+        if (!(bm->amax <= 10.0 * NEAR_EXACT)) return EL_OK;
+        exact = 1;
+    }
+    if (exact) {
         if (b) return EL_OK;                      /* one state for both branches */
         const double g2 = bm->g * bm->g, E = exp(-bm->g);
         memset(&c, 0, sizeof c);
@@ -159,9 +168,6 @@ static int near_root(const hprob *pr, int b, const hbeam *bm, hrootlist *out)
         c.k0p = -c.k0 * sqrt(g2 - 0.25 * c.k0 * c.k0);
         c.k1 = bm->g * (bm->beta - bm->alpha * E);
         c.k1p = c.k1 * sqrt(g2 - 0.25 * c.k1 * c.k1);
-    } else if (near_crossing(pr, b, bm->k0, &c) &&
-               el__hermite_sep_eval(pr, HCHART_X, 0, b, bm->side, ya, pr->sigma, 1.0, &w, &c, NULL, NULL)) {
-        return EL_OK;
     }
     if (near_eval(pr, &c, bm->side, ya, &sa) ||
         near_eval(pr, &c, bm->side, yb, &sb))
@@ -237,12 +243,14 @@ int el__hermite_near_roots(const hprob *pr, hrootlist *out)
  * cannot be evaluated (a buckling load makes the linear system singular), else EL_OK with
  * its residual: above tol where the polish fails, or where the parameters cannot carry it
  * (at sigma = 0 the curve is a piece sqrt(mu) L ~ |theta| of a huge elastica, whose closed
- * form loses ~eps / (sqrt(mu) L) to cancellation). Written because the solver's bracketing
+ * form loses ~eps / (sqrt(mu) L) to cancellation; so at |sigma| d^2 below ~theta^2, where
+ * sqrt(mu) L ~ max(|theta|, sqrt(|sigma|) d): hermite.c counts it unrepresentable). Written because the solver's bracketing
  * misses it there: at sigma = 0 with tangents +-a of a shallow arc, for every a from 1e-9 to
  * 3e-4 (QA); of 1500 random such problems (tangents 1e-9 to 1e-2 rad off the chord, sigma
  * |p1 - p0|^2 0 or in [-10, 10]) 411 lacked it, 136 now: 96 at sigma = 0 counted
- * unrepresentable, 40 at other tensions with tangents ~1e-9..1e-8 rad off the chord (the
- * header's limit); none listed twice */
+ * unrepresentable, 40 at other tensions with tangents ~1e-9..1e-8 rad off the chord (below 0:
+ * kappa_m^2 = |F| + sigma cancelled, now taken without, el__hermite_params_from_state); none
+ * listed twice */
 #define NEAR_SIGMA 10.0
 /* the clamped beam's buckling load: theta = c + a sin(w s) + b cos(w s), w = sqrt(-sigma / 2),
  * with theta(0) = theta(d) = int theta = 0 has the solution sin(2 pi s / d) at w d = 2 pi
