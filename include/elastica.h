@@ -43,7 +43,9 @@ enum el_status {
     EL_ENOCONV = 4,    /* iteration did not converge; the best result seen is returned */
     EL_ESINGULAR = 5,  /* singular or degenerate system (collinear data, zero spread, ...) */
     EL_EMAXITER = 6,   /* iteration limit reached; the best result seen is returned */
-    EL_EINTERNAL = 7   /* an internal numerical routine (GSL, Ipopt) failed unexpectedly */
+    EL_EINTERNAL = 7,  /* an internal numerical routine (GSL, Ipopt) failed unexpectedly */
+    EL_ERANGE = 8      /* a target beyond the range of solutions the method reached (the
+                          length of el_spline_solve: el_spline_result's reach says which) */
 };
 
 /* A static, human-readable message for a status (never NULL). */
@@ -1077,6 +1079,11 @@ typedef struct el_spline_result {
                               away from its ducks; no fair batten was found at this tension
                               (spline_fair.c; tension mode follows the family from the taut
                               batten before it settles for one). 0: it follows its ducks */
+    double reach[3];       /* length mode, where the family of tension solutions was followed
+                              (el_spline_solve): the least and the greatest length of the
+                              splines met on it, the greatest of those that do not cross
+                              themselves; all 0 where it was not followed or none was met.
+                              Set on EL_OK, EL_ENOCONV and EL_ERANGE (res otherwise empty) */
 } el_spline_result;
 
 /* Defaults: tension mode, sigma 0, open, natural ends, tol 1e-10, max_iter 60, max_steps 60. */
@@ -1103,7 +1110,12 @@ void el_spline_options_defaults(el_spline_options *opt);
  * continuation in (angles, sigma) until the length is bracketed, then that
  * Newton (where the continuation to sigma = 0 stopped at a fold in sigma, from the
  * fold's other side on: t48 of the QA's random ducks failed at every length from 1.2 x
- * its polygon). Work is bounded: at most max_steps continuation steps of at most
+ * its polygon); where that stalls, the path again leaping once over the stall and with
+ * the length as a coordinate of the path (a fold in sigma where the knot angles stand
+ * still: ducks whose symmetry fixes every tangent, a star, a ring on a circle), the one
+ * that does not cross itself kept, then the least integral kappa^2 (spline_path.c).
+ * A length beyond every spline met following the family is EL_ERANGE, res->reach
+ * giving the lengths met and the longest without a crossing. Work is bounded: at most max_steps continuation steps of at most
  * max_iter Newton iterations (20 for a first attempt, 12 for a step), each with
  * at most 12 step halvings (4 in a continuation step), each O(n); 100 points
  * take about 1.5 ms of CPU, 1000 about 12 ms, in either mode when the length is
@@ -1190,8 +1202,12 @@ void el_spline_options_defaults(el_spline_options *opt);
  *     moves by ~1e-16 / (1 - k^2). The residual is ~1e-10 at sigma h^2 ~ 150 on
  *     the longest span, ~1e-9 at ~300: EL_ENOCONV with that spline in res (raise
  *     tol to 1e-8 to accept it). Natural ends keep their accuracy (each piece's u
- *     is placed with its larger curvature near u = 0). Beyond sigma h^2 ~ 100 on
- *     the mean chord no spline is found (EL_ENOCONV, res empty): a piece's tail
+ *     is placed with its larger curvature near u = 0). Where the direct Newton and the
+ *     continuations fail, Newton from the taut batten's tangents (the chords'
+ *     bisectors, spline_path.c's TAUT_START): on 31 random and hand-placed sets of ducks
+ *     at tension x (longest span)^2 = 100 / 200 / 300 / 500 / 1000, 29 / 26 / 20 / 4 / 1
+ *     solved (to 1e-8; before 18 / 13 / 10 / 2 / 1). Beyond ~300 on the longest span
+ *     mostly no spline is found (EL_ENOCONV, res empty): a piece's tail
  *     multiplies a change at its start by ~exp(sqrt(sigma / 2) h). In length mode
  *     these are lengths within ~1/5 of the free batten's excess over the
  *     polygon's length (0.1 - 0.2 % of it on hand-placed points).
@@ -1205,7 +1221,8 @@ void el_spline_options_defaults(el_spline_options *opt);
  * fails el_smooth_check or starts off its point by more than 1e-6 of its chord), EL_EDOM (length mode with length < the polygon's length;
  * tension 0 when no free-sliding batten is found: continuation from a high
  * tension cannot reach sigma = 0, the family folds back, the batten slides off
- * its ducks), EL_ENOCONV (Newton and continuation did not reach tol; with G2
+ * its ducks), EL_ERANGE (length mode: a length outside res->reach[0..1], the lengths
+ * met following the family; res otherwise empty), EL_ENOCONV (Newton and continuation did not reach tol; with G2
  * ends also when the continuation in the end curvatures stops), EL_ENOMEM,
  * EL_EINTERNAL.
  */

@@ -236,6 +236,8 @@ enum { EL__BORDER_NONE, EL__BORDER_LENGTH, EL__BORDER_ARC };
 /* Newton iterations of a first attempt and of a continuation step (a solve that
  * needs more is better served by smaller steps). */
 enum { EL__SP_DIRECT_ITER = 20, EL__SP_STEP_ITER = 12 };
+/* Newton iterations from the taut batten's start (spline_path.c's TAUT_START). */
+enum { EL__SP_TAUT_ITER = 60 };
 /* Step halvings of a continuation step's Newton (EL__SP_HALVINGS elsewhere). */
 enum { EL__SP_STEP_HALVINGS = 4 };
 /* Residual of a state that is a solution up to what the parametrisation resolves
@@ -281,6 +283,11 @@ typedef struct el__spchain {
     el__spsnap snap[3];
     double *arc_a, *arc_x0;  /* BORDER_ARC: arc_a . (x - arc_x0) + arc_b (sigma - arc_s0) = arc_h */
     double arc_b, arc_s0, arc_h;
+    double arc_c, arc_L0;    /* + arc_c (L - arc_L0) when arc_len (spline_path.c) */
+    int arc_len;             /* el__spline_follow_family: the length a coordinate of its path */
+    double reach[3];         /* length mode: the least and the greatest length of the solutions
+                                el__spline_follow_family met, the greatest of those that do not
+                                cross themselves (0: none met) */
     double resid;            /* max residual of the last evaluation */
     int iterations, max_iter;
     double tol, aim;         /* accepted and aimed-at residual */
@@ -300,6 +307,12 @@ double el__chain_eval(el__spchain *w, int jac);
 int el__chain_newton(el__spchain *w, int cap, double aim, double accept);
 /* The start: knot angles, then every piece (EL_OK, EL_ENOCONV, EL_ENOMEM). */
 void el__chain_start_angles(el__spchain *w);
+/* Tangent angles of the taut batten (sigma -> infinity): the bisectors of the chords,
+ * natural ends along their chord (spline_path.c's TAUT_START). */
+void el__chain_taut_angles(el__spchain *w);
+/* Longer than EL__SP_WANDER x its polygon, or crossing itself where the polygon does not
+ * (spline_fair.c): not the batten through its ducks */
+int el__chain_wanders(const el__spchain *w);
 int el__chain_start_pieces(el__spchain *w);
 /* a - 2 pi j in [-pi, pi]. */
 double el__wrap_pi(double a);
@@ -335,6 +348,11 @@ int el__spline_refair(el__spchain *w, int max_steps, int st, double target);
  * the length (by_sigma 0) or sigma (1; 2: sigma at most half way per step) is Lt, then
  * Newton there; snapshots of a chain's state. */
 int el__spline_follow_family(el__spchain *w, int max_steps, double Lt, int by_sigma);
+/* Follow a one-parameter family from t = 0 (solved, in w) to t = 1, set(w, t, par) moving
+ * the target (spline_path.c) */
+int el__spline_continuation(el__spchain *w, el__spsnap sv[2], int max_steps, double dt,
+                            void (*set)(el__spchain *, double, const double *), const double *par,
+                            double aim, double accept);
 void el__snap_save(const el__spchain *w, el__spsnap *s);
 void el__snap_load(el__spchain *w, const el__spsnap *s);
 /* A tension solution longer than EL__SP_WANDER x its ducks' polygon winds away from them;

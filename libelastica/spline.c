@@ -4,8 +4,9 @@
  *   spline.c        the API: checks, units, the degenerate cases, the result,
  *                   the B-spline of the whole chain;
  *   spline_chain.c  the unknowns and equations, Newton on the whole chain, its start;
- *   spline_path.c   continuation in sigma, the length mode, the buckled strip,
- *                   the G2 ends' continuation in the end curvatures;
+ *   spline_path.c   continuation in sigma, the length mode, the G2 ends'
+ *                   continuation in the end curvatures;
+ *   spline_buckle.c the buckled strip: collinear ducks, ducks near a line;
  *   spline_guide.c  G2 ends: the guide ducks (why, and where);
  *   spline_piece.c  one piece: residuals, Jacobians, its state, its start;
  *   spline_fair.c   does the spline follow its ducks (no self-crossing).
@@ -403,6 +404,15 @@ static int solve_g2(el__spchain *w, el__spchain *g, int sib, int max_steps, cons
     return Lt != 0.0 ? el__spline_length_from(g, max_steps, Lt) : el__spline_tension_from(g, max_steps, sigma_t);
 }
 
+/* The lengths the family followed in length mode met (w or the G2 chain g; spline_path.c's
+ * note_reach) into res->reach, user units; 0 when none was met */
+static int reach_of(const el__spchain *w, const el__spchain *g, double S, el_spline_result *res)
+{
+    const el__spchain *c = g->reach[1] > w->reach[1] ? g : w;
+    for (int i = 0; i < 3; i++) res->reach[i] = c->reach[i] * S;
+    return c->reach[1] > 0.0;
+}
+
 int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *opt,
                            int newton_first, el_spline_result *res)
 {
@@ -514,6 +524,7 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
         const int cr = el__spline_crosses(res->pieces, res->npieces, closed);
         if (cr < 0) { el_spline_result_free(res); st = EL_ENOMEM; goto done; }
         res->loops = cr || (!lmode && res->length > 4.0 * Lp);
+        if (lmode) reach_of(&w, &g, S, res);
         if (straight && lmode) { res->sigma = 0.0; goto done; }
         if (straight) goto done;
         /* circle pieces are accepted at what el_smooth_params resolves (header) */
@@ -521,8 +532,12 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
                  ? EL_OK : EL_ENOCONV;
         goto done;
     }
-    /* no solution found: for sigma = 0 the free-sliding batten slides off its ducks */
+    /* no solution found: for sigma = 0 the free-sliding batten slides off its ducks; a
+     * length beyond those met following the family (REACH) */
     st = !lmode && opt->sigma == 0.0 && !sibling ? EL_EDOM : EL_ENOCONV;
+    if (lmode && reach_of(&w, &g, S, res) &&
+        (opt->length < res->reach[0] * (1.0 - 1e-9) || opt->length > res->reach[1] * (1.0 + 1e-9)))
+        st = EL_ERANGE;
 done:
     el_hermite_result_free(&hermite);
     el__chain_free(&w);

@@ -114,6 +114,7 @@ double el__chain_eval(el__spchain *w, int jac)
     if (w->lmode == EL__BORDER_ARC) {
         double a = w->arc_b * (w->sigma - w->arc_s0) - w->arc_h;
         for (size_t i = 0; i < n; i++) a += w->arc_a[i] * (w->x[i] - w->arc_x0[i]);
+        if (w->arc_len) a += w->arc_c * (Lsum - w->arc_L0);
         w->Gres = a;
         merit += a * a;
         rmax = fmax(rmax, fabs(a));
@@ -235,9 +236,9 @@ static int chain_direction(el__spchain *w, double *ds)
                 sg = (e ? 1.0 : -1.0) * w->ell[r];
                 c = cc[e];
             } else {   /* the length, when it is the border equation */
-                if (w->lmode != EL__BORDER_LENGTH) continue;
+                if (w->lmode != EL__BORDER_LENGTH && !(w->lmode == EL__BORDER_ARC && w->arc_len)) continue;
                 r = SIG;
-                sg = 1.0 / w->Lt;
+                sg = w->lmode == EL__BORDER_ARC ? w->arc_c : 1.0 / w->Lt;
                 c = pc->cL;
             }
             *jac_rhs(w, r) += sg * c[0];
@@ -423,6 +424,23 @@ void el__chain_start_angles(el__spchain *w)
     const double tm = n > 2 ? w->x[n - 2] : w->kind[0] != EL_SPLINE_NATURAL ? w->th_end[0] : c[0];
     if (w->kind[0] == EL_SPLINE_NATURAL) w->x[0] = c[0] - 0.5 * (t1 - c[0]);
     if (w->kind[1] == EL_SPLINE_NATURAL) w->x[n - 1] = c[m - 1] - 0.5 * (tm - c[m - 1]);
+}
+
+void el__chain_taut_angles(el__spchain *w)
+{
+    const size_t n = w->n, m = w->m;
+    el__chain_start_angles(w);   /* the winding, clamped ends, and the unwrapping reference */
+    for (size_t i = 0; i < n; i++) {
+        if (!w->closed && (i == 0 || i == n - 1)) continue;
+        const el__spiece *a = &w->pc[(i + m - 1) % m], *b = &w->pc[i];
+        double tx = a->dx / a->h + b->dx / b->h, ty = a->dy / a->h + b->dy / b->h;
+        if (!(hypot(tx, ty) > 1e-12)) { tx = -a->dy; ty = a->dx; }   /* a reversal */
+        w->x[i] += el__wrap_pi(atan2(ty, tx) - w->x[i]);
+    }
+    if (w->closed) return;
+    if (w->kind[0] == EL_SPLINE_NATURAL) w->x[0] = atan2(w->pc[0].dy, w->pc[0].dx);
+    if (w->kind[1] == EL_SPLINE_NATURAL)
+        w->x[n - 1] = w->x[n - 2] + el__wrap_pi(atan2(w->pc[m - 1].dy, w->pc[m - 1].dx) - w->x[n - 2]);
 }
 
 /* The angles (rad) between the chord and the target tangents of a piece. */

@@ -177,7 +177,7 @@ static double chain_energy(const el__spchain *w)
 
 /* Longer than EL__SP_WANDER x its polygon, or crossing itself where the polygon does not
  * (above): not the batten through its ducks */
-static int wanders(const el__spchain *w)
+int el__chain_wanders(const el__spchain *w)
 {
     double poly = 0.0;
     for (size_t j = 0; j < w->m; j++) poly += w->pc[j].h;
@@ -211,7 +211,7 @@ static double lagrangian(const el__spchain *w)
  */
 int el__spline_refair(el__spchain *w, int max_steps, int st, double target)
 {
-    if (st == EL_ENOMEM || !(target < EL__SP_HIGH_SIGMA) || (st == EL_OK && !wanders(w))) return st;
+    if (st == EL_ENOMEM || !(target < EL__SP_HIGH_SIGMA) || (st == EL_OK && !el__chain_wanders(w))) return st;
     const size_t n = w->n, m = w->m;
     double *buf = malloc(sizeof(double) * (n + 2 * EL__NV * m));
     if (!buf) return EL_ENOMEM;
@@ -233,7 +233,7 @@ int el__spline_refair(el__spchain *w, int max_steps, int st, double target)
             el__chain_start_angles(w);
             sf = el__chain_start_pieces(w);
             if (sf == EL_ENOMEM) break;
-            if (sf || el__chain_newton(w, EL__SP_DIRECT_ITER, 1e-3 * EL__SP_NEAR, EL__SP_NEAR) || wanders(w))
+            if (sf || el__chain_newton(w, EL__SP_DIRECT_ITER, 1e-3 * EL__SP_NEAR, EL__SP_NEAR) || el__chain_wanders(w))
                 sf = EL_ENOCONV;
             else
                 sf = el__spline_follow_family(w, max_steps, target, mode);
@@ -241,7 +241,7 @@ int el__spline_refair(el__spchain *w, int max_steps, int st, double target)
         w->lmode = 0;
         if (sf == EL_ENOMEM) { free(buf); return sf; }
         if (sf) continue;
-        const int wd = wanders(w);
+        const int wd = el__chain_wanders(w);
         const double lag = lagrangian(w);
         if (wd < bad || (wd == bad && lag < low)) { el__snap_save(w, &best); bad = wd; low = lag; }
     }

@@ -17,7 +17,6 @@
 #include "internal.h"
 #include <stdlib.h>
 #include <string.h>
-#include <gsl/gsl_linalg.h>
 
 /* ------------------------------------------------------------------ continuation */
 
@@ -65,9 +64,9 @@ static void predict(el__spchain *w, const el__spsnap *a, const el__spsnap *b, do
  * batten that does not exist) the path ends sooner (a 1000-point zigzag says
  * EL_EDOM in ~1 s, was ~5 s; the results elsewhere are the same).
  */
-static int continuation(el__spchain *w, el__spsnap sv[2], int max_steps, double dt,
-                        void (*set)(el__spchain *, double, const double *), const double *par,
-                        double aim, double accept)
+int el__spline_continuation(el__spchain *w, el__spsnap sv[2], int max_steps, double dt,
+                            void (*set)(el__spchain *, double, const double *), const double *par,
+                            double aim, double accept)
 {
     double t = 0.0, tp = -1.0;
     el__spsnap *cur = &sv[0], *prev = &sv[1];
@@ -108,14 +107,6 @@ static void set_sigma(el__spchain *w, double t, const double *par)
     w->sigma = t >= 1.0 ? par[1] : a * pow(b / a, t) - par[2];
 }
 
-/* L(t) from par[0] (t = 0) to par[1], geometrically in L - par[2] (the polygon's
- * length, near which the bow is small). */
-static void set_length(el__spchain *w, double t, const double *par)
-{
-    const double a = par[0] - par[2], b = par[1] - par[2];
-    w->Lt = t >= 1.0 ? par[1] : par[2] + a * pow(b / a, t);
-}
-
 /* sigma(t) linear from par[0] to par[1]. */
 static void set_sigma_linear(el__spchain *w, double t, const double *par)
 {
@@ -133,18 +124,34 @@ static double total_length(const el__spchain *w)
 static int move_sigma(el__spchain *w, el__spsnap sv[2], int *steps, double sigma)
 {
     const double par[2] = {w->sigma, sigma};
-    const int st = continuation(w, sv, *steps, 1.0, set_sigma_linear, par,
+    const int st = el__spline_continuation(w, sv, *steps, 1.0, set_sigma_linear, par,
                                 1e-3 * EL__SP_NEAR, EL__SP_NEAR);
     (*steps)--;
     return st;
 }
 
+/* The chain's bending energy (its pieces', internal units) */
+static double chain_energy(const el__spchain *w)
+{
+    double e = 0.0;
+    for (size_t j = 0; j < w->m; j++) e += w->pc[j].energy;
+    return e;
+}
+
+static double snap_length(const el__spchain *w, const el__spsnap *a)
+{
+    double L = 0.0;
+    for (size_t j = 0; j < w->m; j++) L += a->v[j * EL__NV + EL__SP_L];
+    return L;
+}
+
 /* Points of the pseudo-arclength path: knot values and sigma, the norm
- * weighting sigma by 1/rho. */
+ * weighting sigma by 1/rho; with w->arc_len also the length (arc_len_coordinate). */
 static double arc_dist(const el__spchain *w, const el__spsnap *a, const el__spsnap *b, double rho)
 {
     double s2 = (b->sigma - a->sigma) * (b->sigma - a->sigma) / (rho * rho);
     for (size_t i = 0; i < w->n; i++) s2 += (b->x[i] - a->x[i]) * (b->x[i] - a->x[i]);
+    if (w->arc_len) { const double dL = snap_length(w, b) - snap_length(w, a); s2 += dL * dL; }
     return sqrt(s2);
 }
 
@@ -167,6 +174,22 @@ static double family_gap(const el__spchain *w, double target, int by_sigma)
     return by_sigma ? w->sigma - target : total_length(w) - target;
 }
 
+/* The lengths met along the family (w->reach), for the error a length beyond them gets
+ * (spline.c); -1 when out of memory */
+static int note_reach(el__spchain *w)
+{
+    const double L = total_length(w);
+    if (w->reach[1] == 0.0) w->reach[0] = w->reach[1] = L;
+    w->reach[0] = fmin(w->reach[0], L);
+    w->reach[1] = fmax(w->reach[1], L);
+    if (L > w->reach[2]) {
+        const int c = el__chain_crosses(w);
+        if (c < 0) return -1;
+        if (!c) w->reach[2] = L;
+    }
+    return 0;
+}
+
 int el__spline_follow_family(el__spchain *w, int max_steps, double Lt, int by_sigma)
 {
     el__spsnap *sv = w->snap;
@@ -174,6 +197,7 @@ int el__spline_follow_family(el__spchain *w, int max_steps, double Lt, int by_si
     el__spsnap *B = &sv[2], *C = &sv[0];   /* the base point and the next one */
     const double rho = 1.0 + fabs(w->sigma);
     double gb = family_gap(w, Lt, by_sigma), gc;
+    if (!by_sigma && note_reach(w)) return EL_ENOMEM;
     el__snap_save(w, B);
     if (fabs(gb) > 1e-9 * Lt) {
         /* a second point: sigma moved towards the length (a batten is shorter
@@ -216,6 +240,10 @@ int el__spline_follow_family(el__spchain *w, int max_steps, double Lt, int by_si
             }
             w->arc_b = (C->sigma - B->sigma) / (N * rho * rho);
             w->arc_s0 = C->sigma;
+            if (w->arc_len) {
+                w->arc_L0 = snap_length(w, C);
+                w->arc_c = (w->arc_L0 - snap_length(w, B)) / N;
+            }
             w->arc_h = h;
             predict(w, B, C, h / N);
             w->lmode = EL__BORDER_ARC;
@@ -230,6 +258,7 @@ int el__spline_follow_family(el__spchain *w, int max_steps, double Lt, int by_si
             }
             hgood = fmax(hgood, h);
             leapt = 0;
+            if (!by_sigma && note_reach(w)) return EL_ENOMEM;
             const double gn = family_gap(w, Lt, by_sigma);
             if (by_sigma == 2 && fabs(gn - gc) > 0.5 * fabs(gc) && fabs(gn) > 1e-3 * (1.0 + fabs(Lt)) && h > 1e-6) {
                 /* a tension at most half way to the target per step: a longer one can pass
@@ -282,16 +311,22 @@ static int follow_length(el__spchain *w, int max_steps, double Lt)
 /* From the tension solution at sigma0 (Newton from the chain's start there, to start_aim,
  * accepted at start_accept) along the tension to target, geometrically in sigma + 1:
  * EL_OK, EL_ENOCONV or EL_ENOMEM */
-static int from_sigma(el__spchain *w, int max_steps, double sigma0, double target, double start_aim,
-                      double start_accept, double aim, double accept)
+static int from_sigma_start(el__spchain *w, int max_steps, double sigma0, double target, double start_aim,
+                            double start_accept, double aim, double accept, int taut)
 {
     w->sigma = sigma0;
-    el__chain_start_angles(w);
+    if (taut) el__chain_taut_angles(w); else el__chain_start_angles(w);
     const int st = el__chain_start_pieces(w);
     if (st) return st == EL_ENOMEM ? st : EL_ENOCONV;
     if (el__chain_newton(w, EL__SP_DIRECT_ITER, start_aim, start_accept) != EL_OK) return EL_ENOCONV;
     const double par[3] = {sigma0, target, 1.0};
-    return continuation(w, w->snap, max_steps, 0.25, set_sigma, par, aim, accept);
+    return el__spline_continuation(w, w->snap, max_steps, 0.25, set_sigma, par, aim, accept);
+}
+
+static int from_sigma(el__spchain *w, int max_steps, double sigma0, double target, double start_aim,
+                      double start_accept, double aim, double accept)
+{
+    return from_sigma_start(w, max_steps, sigma0, target, start_aim, start_accept, aim, accept, 0);
 }
 
 /* The batten pulled from sigma0 to w->sigma (from_sigma), kept when it converges shorter
@@ -346,6 +381,43 @@ static void unwind(el__spchain *w, int max_steps, double aim, double accept)
  * CPU 4.1 -> 6.1 s (failures try one path more); bench_spline unchanged (6.46 ms).
  */
 
+/*
+ * TAUT_START: under a high tension the batten is its ducks' polygon with a boundary layer
+ * at each duck (sinh / cosh, width ~ 1 / sqrt(sigma)), its tangent there the bisector of
+ * the two chords (the layer is symmetric), along the chord at a natural end. The chain's
+ * own start (the circles through three ducks) is far from that, and the pieces' steps
+ * from it are cut to ~1e-3 .. 1e-2 (el__spiece_step_prepare): 20 iterations move the
+ * residual from 7.6 to 7.0, and the continuation from sigma h^2 = 40 (or from the free
+ * batten) stops in steps too short. From the bisectors Newton converges (damped, then
+ * quadratically: 21 iterations at sigma x (longest span)^2 = 200 on 8 random ducks,
+ * hence its own cap). Tried only where every other path failed (no result changes).
+ * Measured on 30 random walks of 4-11 ducks and examples/ducks.csv, tol 1e-8, tension x
+ * (longest span)^2 100 / 200 / 300 / 500 / 1000: solved 18 / 13 / 10 / 2 / 1 -> 29 / 26 /
+ * 20 / 4 / 1 (one more at 100 ended crossing itself: refused). Beyond ~500 the pieces'
+ * own conditioning stops it (elastica.h, Accuracy: a piece's tail multiplies a change at
+ * its start by ~exp(sqrt(sigma / 2) h)).
+ */
+static int taut_start(el__spchain *w, int max_steps, double target, double aim, double accept)
+{
+    if (w->ng || !(target > 0.0)) return EL_ENOCONV;
+    w->near = 0;
+    w->sigma = target;
+    el__chain_taut_angles(w);
+    int st = el__chain_start_pieces(w);
+    if (st) return st == EL_ENOMEM ? st : EL_ENOCONV;
+    st = el__chain_newton(w, EL__SP_TAUT_ITER, aim, accept);
+    if (st && w->resid <= EL__SP_NEAR) w->near = 1;
+    else if (st)   /* else from the taut start at sigma h^2 = EL__SP_HIGH_SIGMA, followed to target */
+        st = from_sigma_start(w, max_steps, EL__SP_HIGH_SIGMA, target, 1e-3 * EL__SP_NEAR, EL__SP_NEAR, aim,
+                              accept, 1);
+    if (st == EL_ENOMEM || (st && !w->near)) return st;
+    /* the taut batten, or nothing: a solution that winds away from its ducks is not it (2 closed
+     * rings of random ducks at sigma h^2 ~ 30 ended crossing themselves) */
+    const int wd = el__chain_wanders(w);
+    if (wd) w->near = 0;
+    return wd ? EL_ENOCONV : st;
+}
+
 /* The tension solution at w->sigma: directly (one that winds away from its ducks: another
  * path to it, unwind), else by continuation from a high tension, else from the free batten.
  * final: to tol (else to EL__SP_NEAR, as a start for the length mode). */
@@ -369,13 +441,14 @@ int el__spline_solve_tension(el__spchain *w, int max_steps, int final)
     if (st != EL_ENOCONV || w->near || !final || !(target > 0.0)) return st;
     /* else the free batten pulled to target (FREE_START) */
     st = from_sigma(w, max_steps, 0.0, target, 1e-3 * EL__SP_NEAR, EL__SP_NEAR, aim, accept);
-    return w->near ? st : el__spline_refair(w, max_steps, st, target);
+    st = w->near ? st : el__spline_refair(w, max_steps, st, target);
+    return st == EL_ENOCONV && !w->near ? taut_start(w, max_steps, target, aim, accept) : st;
 }
 
 int el__spline_tension_from(el__spchain *w, int max_steps, double sigma)
 {
     const double par[2] = {w->sigma, sigma};
-    return continuation(w, w->snap, max_steps, 1.0, set_sigma_linear, par, w->aim, w->tol);
+    return el__spline_continuation(w, w->snap, max_steps, 1.0, set_sigma_linear, par, w->aim, w->tol);
 }
 
 /* Newton in length mode (the length as the border equation, sigma unknown),
@@ -456,29 +529,72 @@ int el__spline_length_from(el__spchain *w, int max_steps, double Lt)
         el__snap_load(w, free_batten);
         el__chain_eval(w, 1);   /* the pieces' states, which follow_length's snapshots keep */
     }
-    /* the start kept for a second attempt (below) */
+    /* the start kept for a second attempt (below), and the first fallback's solution */
     const size_t n = w->n, m = w->m;
-    double *buf = malloc(sizeof(double) * (n + 2 * EL__NV * m));
+    double *buf = malloc(sizeof(double) * 2 * (n + 2 * EL__NV * m));
     if (!buf) return EL_ENOMEM;
     el__spsnap start = {buf, buf + n, buf + n + EL__NV * m, 0.0};
+    double *b2 = buf + n + 2 * EL__NV * m;
+    el__spsnap leapt = {b2, b2 + n, b2 + n + EL__NV * m, 0.0};
     el__snap_save(w, &start);
     int st = follow_length(w, max_steps, Lt);
+    if (st == EL_ENOMEM) { free(buf); return st; }
     if (st == EL_ENOCONV && w->lmode && w->resid <= EL__SP_NEAR) w->near = 1;
     if (st == EL_ENOCONV && !w->near) {
         /* Newton stalls where a piece passes the separatrix (k^2 = 1, its parameters
-         * singular there: K(k) infinite), e.g. all 8 pieces of a closed ring of 8 ducks on
-         * a circle at 1.115 x the polygon (every longer length failed): again, leaping
-         * once over a stall (steps down to 1e-3 of the largest that worked) by 4 x that
-         * step; the predictor interpolates the pieces' states, smooth there. Only after a
-         * failure: leaping where the plain path succeeds changed 6 of 1809 results (QA's
-         * random ducks), to higher energies or failures */
+         * singular there: K(k) infinite): again, leaping once over a stall (steps down to
+         * 1e-3 of the largest that worked) by 4 x that step; the predictor interpolates the
+         * pieces' states, smooth there. Only after a failure: leaping where the plain path
+         * succeeds changed 6 of 1809 results (QA's random ducks), to higher energies or
+         * failures */
         el__snap_load(w, &start);
         w->lmode = 0;
         el__chain_eval(w, 1);
         w->leap = 1;
         st = follow_length(w, max_steps, Lt);
         w->leap = 0;
-        if (st == EL_ENOCONV && w->lmode && w->resid <= EL__SP_NEAR) w->near = 1;
+        if (st == EL_ENOMEM) { free(buf); return st; }
+        int near = st == EL_ENOCONV && w->lmode && w->resid <= EL__SP_NEAR;
+        /* ARC_LEN: the path stalls too where the knot angles stand still along the family
+         * and only the pieces move: ducks with a symmetry that fixes every tangent (a ring of
+         * ducks on a circle, a star), where sigma folds back: the path in (angles, sigma)
+         * turns on the spot. With the length a coordinate of the path it passes the fold.
+         * The star of 10 ducks (radii 20/8, closed) stalled at 1.242 x its polygon (sigma h^2
+         * -19.39; no spline at 1.25..2 x), now reaches 2 x without loops; the ring of 8 ducks
+         * on a circle leapt to a higher mode from 1.25 x (integral kappa^2 221 at 1.25 x, 241
+         * at 1.3 x, 644 at 1.5 x), now 72.9, 85.9, 124.3 on its first mode. Of the two the
+         * one that does not cross itself, then the lower integral kappa^2 (the length is
+         * the same: the functional the length mode makes stationary; the leap's where they
+         * are the same curve) */
+        double e_leap = HUGE_VAL;
+        int c_leap = 2;
+        const int lm = w->lmode;
+        if (st == EL_OK || near) {
+            el__snap_save(w, &leapt);
+            e_leap = chain_energy(w);
+            if (st == EL_OK && (c_leap = el__chain_crosses(w)) < 0) { free(buf); return EL_ENOMEM; }
+        }
+        el__snap_load(w, &start);
+        w->lmode = 0;
+        w->near = 0;
+        el__chain_eval(w, 1);
+        w->arc_len = 1;
+        const int sa = follow_length(w, max_steps, Lt);
+        w->arc_len = 0;
+        if (sa == EL_ENOMEM) { free(buf); return sa; }
+        int ca = 2;
+        if (sa == EL_OK && (ca = el__chain_crosses(w)) < 0) { free(buf); return EL_ENOMEM; }
+        if (sa == EL_OK && (st != EL_OK || ca < c_leap || (ca == c_leap && chain_energy(w) < e_leap * (1.0 - 1e-9)))) {
+            st = EL_OK;
+        } else if (st == EL_OK || near) {   /* the leap's */
+            el__snap_load(w, &leapt);
+            w->lmode = lm;
+            w->Lt = Lt;
+            el__chain_eval(w, 0);
+            w->near = near;
+        } else if (sa == EL_ENOCONV && w->lmode && w->resid <= EL__SP_NEAR) {
+            w->near = 1;
+        }
     }
     free(buf);
     return st;
@@ -508,264 +624,5 @@ int el__spline_bend_ends(el__spchain *w, int max_steps, const double kg[2])
         if (el__spiece_start(&w->pc[j], &t)) return EL_ENOCONV;
     }
     const double par[4] = {w->kg[0], w->kg[1], kg[0], kg[1]};
-    return continuation(w, w->snap, max_steps, 1.0, set_end_curvature, par, w->aim, w->tol);
-}
-
-/* ------------------------------------------------------------------ buckling */
-
-/*
- * A span of chord h under compression, linearised about the line: the
- * deflection w(s) with w'''' + lambda w'' = 0 (2 kappa'' = sigma kappa with
- * kappa = w'', sigma = -2 lambda) and w = 0 at both ducks has end curvatures
- * linear in its end slopes va, vb:
- *   -w''(0) = (s va + c vb) / h,   w''(h) = (c va + s vb) / h,
- * with phi = sqrt(lambda) h and D = 2 - 2 cos phi - phi sin phi,
- *   s = phi (sin phi - phi cos phi) / D,   c = phi (phi - sin phi) / D
- * (Timoshenko's stability functions s and s c; from w = A + B s + C cos + D sin
- * and the four end conditions, checked against that solve; s = 4, c = 2 at
- * phi = 0, the cubic's, and series below phi = 0.1 where D cancels).
- */
-static void span_stiffness(double phi, double *s, double *c)
-{
-    const double p2 = phi * phi;
-    if (phi < 0.1) {
-        *s = 4.0 - 2.0 * p2 / 15.0 - 11.0 * p2 * p2 / 6300.0;
-        *c = 2.0 + p2 / 30.0 + 13.0 * p2 * p2 / 12600.0;
-        return;
-    }
-    const double D = 2.0 - 2.0 * cos(phi) - phi * sin(phi);
-    *s = phi * (sin(phi) - phi * cos(phi)) / D;
-    *c = phi * (phi - sin(phi)) / D;
-}
-
-/* K(lambda) on the free knots i0..i1 (their slopes; the curvature jumps as
- * equations: symmetric tridiagonal, diagonal dg, off-diagonal up); returns the
- * number of its negative eigenvalues (Sylvester: the negative pivots of
- * L D L^T; GSL has no inertia count). */
-static int buckling_matrix(el__spchain *w, size_t i0, size_t i1, double lambda)
-{
-    memset(w->dg, 0, w->n * sizeof *w->dg);
-    memset(w->up, 0, w->n * sizeof *w->up);
-    for (size_t j = 0; j < w->m; j++) {
-        const double h = w->pc[j].h;
-        double s, c;
-        span_stiffness(sqrt(lambda) * h, &s, &c);
-        if (j >= i0 && j <= i1) w->dg[j] += s / h;
-        if (j + 1 >= i0 && j + 1 <= i1) w->dg[j + 1] += s / h;
-        if (j >= i0 && j + 1 <= i1) w->up[j] += c / h;
-    }
-    int neg = 0;
-    double d = 0.0;
-    for (size_t i = i0; i <= i1; i++) {
-        d = i == i0 ? w->dg[i] : w->dg[i] - w->up[i - 1] * w->up[i - 1] / d;
-        if (d == 0.0) d = -1e-300;
-        neg += d < 0.0;
-    }
-    return neg;
-}
-
-/*
- * The first buckling mode of the chain on the line (slopes z at the knots,
- * zero where fixed) and its lambda: the least lambda where K(lambda) is
- * singular, by bisection on the inertia count of K (which gains one negative
- * eigenvalue at each buckling load as lambda grows), between 0 and the clamped
- * load (2 pi / h_max)^2 of the longest span, which bounds it (Rayleigh: that
- * span's clamped mode, zero elsewhere); then the null vector by inverse
- * iteration just below it. The least lambda is the least energy at a given
- * small excess length: integral kappa^2 = 2 lambda (L - Lp) to first order.
- */
-static int buckling_mode(el__spchain *w, size_t i0, size_t i1, double *lambda)
-{
-    double hmax = 0.0;
-    for (size_t j = 0; j < w->m; j++) hmax = fmax(hmax, w->pc[j].h);
-    double lo = 0.0, hi = 4.0 * M_PI * M_PI / (hmax * hmax) * (1.0 - 1e-12);
-    for (int it = 0; it < 60; it++) {
-        const double mid = 0.5 * (lo + hi);
-        if (buckling_matrix(w, i0, i1, mid)) hi = mid; else lo = mid;
-    }
-    *lambda = hi;
-    const size_t nf = i1 - i0 + 1;
-    buckling_matrix(w, i0, i1, hi * (1.0 - 1e-12));
-    for (size_t i = i0; i <= i1; i++) w->z[i] = 1.0;
-    gsl_vector_view d = gsl_vector_view_array(w->dg + i0, nf), b = gsl_vector_view_array(w->b + i0, nf);
-    gsl_vector_view x = gsl_vector_view_array(w->z + i0, nf);
-    for (int it = 0; it < 3; it++) {
-        double norm = 0.0;
-        for (size_t i = i0; i <= i1; i++) norm = fmax(norm, fabs(w->z[i]));
-        for (size_t i = i0; i <= i1; i++) w->b[i] = w->z[i] / norm;
-        if (nf == 1) { w->z[i0] = w->b[i0] / w->dg[i0]; continue; }
-        gsl_vector_view e = gsl_vector_view_array(w->up + i0, nf - 1);
-        if (gsl_linalg_solve_symm_tridiag(&d.vector, &e.vector, &b.vector, &x.vector)) return EL_ENOCONV;
-    }
-    return el__all_finite(w->z + i0, nf) ? EL_ENOCONV : EL_OK;
-}
-
-/*
- * Collinear points, a length Lt longer than the line (Lp): the batten buckles
- * in its first mode (buckling_mode), its largest bow (the first of equal ones)
- * to the left (mirror: to the right), started with the small excess L1 = Lp (1 +
- * 1e-3), less if that makes the mean square slope on a span more than 0.05^2 (where the
- * linearisation is accurate): slopes theta = dir + Theta z with integral w'^2 =
- * 2 (L1 - Lp), sigma = -2 lambda, each piece the linearised batten of its span;
- * then followed in length. Two points clamped at both ends have no free slope:
- * the span's own clamped mode w = A (1 - cos(2 pi s / h)), its start state
- * (dir, A (2 pi / h)^2, 0) with integral w'^2 = A^2 (2 pi / h)^2 h / 2.
- */
-int el__spline_solve_buckled(el__spchain *w, int max_steps, double dir, double Lp, double Lt, int mirror)
-{
-    const size_t n = w->n, m = w->m;
-    double L1 = fmin(Lt, Lp * (1.0 + 1e-3));
-    const size_t i0 = w->slot[0] == EL__SLOT_ANGLE ? 0 : 1;
-    const size_t i1 = w->slot[n - 1] == EL__SLOT_ANGLE ? n - 1 : n - 2;
-    int st = EL_OK;
-    memset(w->z, 0, n * sizeof *w->z);
-    if (i0 <= i1 && i1 < n) {
-        double lambda;
-        if ((st = buckling_mode(w, i0, i1, &lambda))) return st;
-        /* integral w'^2 = -d/dlambda of the span's form (s a^2 + 2 c a b + s b^2) / h,
-         * which is integral w''^2 - lambda integral w'^2 = [w' w''] for a
-         * solution (integrating by parts), stationary in the interior values
-         * (the envelope theorem); by central differences */
-        double g = 0.0, gmax = 0.0, bow = 0.0;
-        for (size_t j = 0; j < m; j++) {
-            const double a = w->z[j], b = w->z[j + 1], h = w->pc[j].h, phi = sqrt(lambda) * h;
-            double form[2];
-            for (int e = 0; e < 2; e++) {
-                double sj, cj;
-                span_stiffness(phi * sqrt(1.0 + (e ? 1e-5 : -1e-5)), &sj, &cj);
-                form[e] = (sj * (a * a + b * b) + 2.0 * cj * a * b) / h;
-            }
-            const double gj = -(form[1] - form[0]) / (2e-5 * lambda);
-            g += gj;
-            gmax = fmax(gmax, gj / h);
-            /* the mid deflection: (a - b) / 2 tan(phi / 4) / sqrt(lambda), from
-             * the symmetric part w = A + C cos(sqrt(lambda) (s - h / 2)) */
-            const double mid = 0.5 * (a - b) * tan(0.25 * phi) * h / phi;
-            if (fabs(mid) > fabs(bow) * (1.0 + 1e-9)) bow = mid;
-        }
-        const double sign = (bow < 0.0) != (mirror != 0) ? -1.0 : 1.0;
-        /* small: a mean square slope at most 0.05^2 on every span (a mode
-         * localised in one long span takes the whole excess there) */
-        const double zmax = el__max_abs(w->z, n);
-        L1 = fmin(L1, Lp + 0.5 * g * 0.05 * 0.05 / gmax);
-        const double Th = sign * sqrt(2.0 * (L1 - Lp) / g);
-        /* far from a localised bow the slopes decay exponentially: at least
-         * 1e-6 of the largest (alternating, as the mode's), so that no piece
-         * starts exactly straight, where its k = 0 leaves q undefined */
-        for (size_t i = 0; i < n; i++) {
-            if (w->slot[i] != EL__SLOT_ANGLE) continue;
-            const double z = w->z[i], floor = 1e-6 * zmax * (i % 2 ? -1.0 : 1.0);
-            w->x[i] = dir + Th * (fabs(z) >= 1e-6 * zmax ? z : floor);
-        }
-        w->sigma = -2.0 * lambda;
-        /* each piece the linearised batten of its span (el__spiece_start), not
-         * corrected alone: near a span's clamped load its bow at fixed sigma
-         * is ill-posed, the length of the whole chain fixes it */
-        for (size_t j = 0; j < m && !st; j++) {
-            el__sptargets t;
-            el__chain_targets(w, j, &t);
-            if (el__spiece_start(&w->pc[j], &t)) st = EL_ENOCONV;
-        }
-    } else {   /* two points, both ends clamped along the line */
-        const double h = w->pc[0].h, om = 2.0 * M_PI / h, A = sqrt(4.0 * (L1 - Lp) / (om * om * h));
-        w->sigma = -2.0 * om * om;
-        const double state[EL__NV] = {w->th_end[0], A * om * om, 0.0, w->sigma, L1};
-        st = el__spiece_set_state(&w->pc[0], state) ? EL_ENOCONV : EL_OK;
-    }
-    w->lmode = EL__BORDER_LENGTH;
-    w->Lt = L1;
-    if (!st) st = el__chain_newton(w, EL__SP_DIRECT_ITER, 1e-3 * EL__SP_NEAR, EL__SP_NEAR);
-    if (!st && Lt > L1) {
-        const double par[3] = {L1, Lt, Lp};
-        st = continuation(w, w->snap, max_steps, 0.25, set_length, par, w->aim, w->tol);
-    }
-    if (st == EL_ENOCONV && w->resid <= EL__SP_NEAR) w->near = 1;
-    return st;
-}
-
-/* The chords at t between the line's (par[0 .. 2m), dx, dy pairs) and the ducks'
- * (par[2m .. 4m)), with their lengths and the knots' half sums of them */
-static void set_ducks(el__spchain *w, double t, const double *par)
-{
-    const size_t m = w->m;
-    const double u = t >= 1.0 ? 1.0 : t, *line = par, *ducks = par + 2 * m;
-    for (size_t j = 0; j < m; j++) {
-        el__spiece *pc = &w->pc[j];
-        pc->dx = line[2 * j] + u * (ducks[2 * j] - line[2 * j]);
-        pc->dy = line[2 * j + 1] + u * (ducks[2 * j + 1] - line[2 * j + 1]);
-        pc->h = hypot(pc->dx, pc->dy);
-    }
-    for (size_t i = 0; i < w->n; i++)   /* as el__spline_solve_paths sets them (open) */
-        w->ell[i] = 0.5 * (w->pc[i > 0 ? i - 1 : 0].h + w->pc[i < m ? i : m - 1].h);
-}
-
-/* The chain's bending energy (its pieces', internal units) */
-static double chain_energy(const el__spchain *w)
-{
-    double e = 0.0;
-    for (size_t j = 0; j < w->m; j++) e += w->pc[j].energy;
-    return e;
-}
-
-/*
- * Ducks near a line (open, no guide ducks; dir: the line's direction, along which
- * every chord advances), a length Lt longer than their polygon: the batten through the
- * ducks projected onto the line buckled to Lt (el__spline_solve_buckled: its first
- * mode), then the ducks moved from there to their places (continuation in their
- * chords), or the length mode's own path (el__spline_solve_length) where that gives a
- * lower energy. Written because the length mode's path from the free batten meets the
- * buckling bifurcation there: 7 ducks on a line with one raised by 1e-9 .. 1e-3 of
- * their 6.6, pushed 5-20 % longer, gave no spline (the line itself buckles); raised
- * by 0.05 .. 0.27, the batten jumped between modes of 2.6 .. 10 x the energy as that
- * duck moved by 0.01 (QA).
- */
-int el__spline_solve_near_line(el__spchain *w, int max_steps, double dir, double Lt)
-{
-    const size_t n = w->n, m = w->m;
-    double *par = malloc(sizeof(double) * (4 * m + n + 2 * EL__NV * m));
-    if (!par) return EL_ENOMEM;
-    el__spsnap kept = {par + 4 * m, par + 4 * m + n, par + 4 * m + n + EL__NV * m, 0.0};
-    const double ux = cos(dir), uy = sin(dir);
-    double Lp = 0.0;
-    for (size_t j = 0; j < m; j++) {
-        const double along = w->pc[j].dx * ux + w->pc[j].dy * uy;
-        par[2 * j] = along * ux;
-        par[2 * j + 1] = along * uy;
-        par[2 * m + 2 * j] = w->pc[j].dx;
-        par[2 * m + 2 * j + 1] = w->pc[j].dy;
-        Lp += along;
-    }
-    /* both mirror images of the mode (the ducks off the line prefer a side), the lower
-     * energy kept */
-    int st = EL_ENOCONV;
-    double low = HUGE_VAL;
-    for (int mirror = 0; mirror < 2 && st != EL_ENOMEM; mirror++) {
-        set_ducks(w, 0.0, par);
-        w->near = 0;
-        int sm = el__spline_solve_buckled(w, max_steps, dir, Lp, Lt, mirror);
-        if (!sm) sm = continuation(w, w->snap, max_steps, 0.25, set_ducks, par, w->aim, w->tol);
-        if (sm == EL_ENOMEM) st = sm;
-        if (sm || !(chain_energy(w) < low)) continue;
-        low = chain_energy(w);
-        el__snap_save(w, &kept);
-        st = EL_OK;
-    }
-    set_ducks(w, 1.0, par);   /* the ducks' own chords */
-    /* the length mode's own path too, kept where it is lower (ducks farther off the line:
-     * 2 of 900 random such problems reached a mode of 1.3-2.7 x its energy from the line) */
-    if (st != EL_ENOMEM) {
-        w->near = 0;
-        const int sl = el__spline_solve_length(w, max_steps, Lt);
-        if (sl == EL_ENOMEM || (sl == EL_OK && !(chain_energy(w) >= low)) || st) {
-            st = sl;
-        } else {
-            el__snap_load(w, &kept);
-            w->lmode = EL__BORDER_LENGTH;
-            w->Lt = Lt;
-            w->near = 0;
-            el__chain_eval(w, 0);
-        }
-    }
-    free(par);
-    return st;
+    return el__spline_continuation(w, w->snap, max_steps, 1.0, set_end_curvature, par, w->aim, w->tol);
 }

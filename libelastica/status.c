@@ -16,6 +16,7 @@ const char *el_strerror(int status)
     case EL_ESINGULAR: return "singular or degenerate input";
     case EL_EMAXITER:  return "iteration limit reached (best result seen returned)";
     case EL_EINTERNAL: return "internal numerical routine failed";
+    case EL_ERANGE:    return "target beyond the range of solutions reached";
     default:           return "unknown status";
     }
 }

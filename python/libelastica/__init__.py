@@ -1,6 +1,6 @@
 """libelastica: Euler's elastica for CAD — exact evaluation, fairing, Hermite
 interpolation, B-splines (Python binding of the C library)."""
-from ._ffi import DomainError, ElasticaError, NotConvergedError, SingularError
+from ._ffi import DomainError, ElasticaError, LengthRangeError, NotConvergedError, SingularError
 from .core import DiscreteElastica, SmoothElastica
 from . import io
 from .cubic import SPARSE_POINTS, cubic_distances, smooth_fits_better

@@ -70,6 +70,12 @@ class NotConvergedError(ElasticaError):
     """An iteration stopped before converging (EL_ENOCONV / EL_EMAXITER)."""
 
 
+class LengthRangeError(NotConvergedError):
+    """A length beyond the splines the solve reached (EL_ERANGE): ``shortest``, ``longest``
+    (the lengths met following the family of splines through the points), ``longest_fair``
+    (the longest of them that does not cross itself, 0 if none) and ``polygon``."""
+
+
 class DomainError(ElasticaError):
     """Valid input outside what the method covers (EL_EDOM)."""
 
@@ -79,6 +85,7 @@ class SingularError(ElasticaError):
 
 
 _ERRORS = {lib.EL_ENOCONV: NotConvergedError, lib.EL_EMAXITER: NotConvergedError,
+           lib.EL_ERANGE: LengthRangeError,
            lib.EL_EDOM: DomainError, lib.EL_ESINGULAR: SingularError}
 
 

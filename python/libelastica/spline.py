@@ -11,7 +11,7 @@ from typing import List, Optional
 
 import numpy as np
 
-from ._ffi import DomainError, NotConvergedError, as_int, as_points, as_real, check, dptr, ffi, lib
+from ._ffi import DomainError, LengthRangeError, NotConvergedError, as_int, as_points, as_real, check, dptr, ffi, lib
 from .bspline import smooth_chain_to_bspline
 from .core import SMOOTH_PARAMS, SmoothElastica, chain_eval, chain_starts
 
@@ -201,7 +201,10 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
     ``spline`` attribute holds the spline reached, if any: an arc of a circle, or a
     tension x (longest span)^2 of ~150..300, resolve only to ~1e-10..1e-7, a larger
     ``tol`` accepts them; beyond ~300 no spline is reached, ``spline`` is None, and
-    the message names that dimensionless tension). ``tension`` is in 1/units^2 of the
+    the message names that dimensionless tension); by length, :class:`LengthRangeError`
+    (a NotConvergedError) where the length lies beyond every spline met following the
+    family of splines through the points, its message and ``shortest``, ``longest``,
+    ``longest_fair`` (without loops) and ``polygon`` saying how far it reached. ``tension`` is in 1/units^2 of the
     points: the same batten in mm takes 1e-6 x its tension in m.
     """
     pts = as_points(points, "points")
@@ -270,9 +273,12 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
             if sp.loops:
                 # length mode: the length asked is what makes it loop (QA: the advice
                 # "a larger tension, or a length" to a user who had given a length)
+                fair = res.reach[2]
                 fix = f"tension {sp.tension:.4g}; a larger tension, or a length, gives one" \
                     if length is None else \
-                    f"length {length:.4g} (tension {sp.tension:.4g}); a shorter length gives one"
+                    f"length {length:.4g} (tension {sp.tension:.4g}); a shorter length gives one" + (
+                        f" (the longest met without loops: {fair / polygon:.4g} x the polygon, "
+                        f"{fair:.6g})" if fair > 0.0 else "")
                 warnings.warn("elastic_spline: the spline loops away from its ducks (it crosses "
                               "itself where their polygon does not, or is longer than 4 x it, "
                               f"{sp.length:.4g}): no fair batten was found at {fix}",
@@ -282,6 +288,21 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
             raise DomainError(st, "elastic_spline: no free-sliding batten (tension 0) passes "
                                   "these points: it slides off its ducks; give a tension > 0 "
                                   "or a length")
+        if st == lib.EL_ERANGE:
+            lo, hi, fair = (float(res.reach[i]) for i in range(3))
+            side = "longest" if L > hi else "shortest"
+            err = LengthRangeError(st, (
+                f"elastic_spline: no spline of length {L:.6g} ({L / polygon:.4g} x the polygon, "
+                f"{polygon:.6g}) was reached: the {side} spline through these points found is "
+                f"{(hi if L > hi else lo) / polygon:.4g} x the polygon ({hi if L > hi else lo:.6g}); "
+                f"the lengths found span {lo / polygon:.4g} .. {hi / polygon:.4g} x" + (
+                    f", without loops up to {fair / polygon:.4g} x ({fair:.6g})" if fair > 0.0
+                    else ", every one with loops")
+                + ("; a shorter one needs a tension beyond the solver's reach (elastica.h: "
+                   "Accuracy)" if L < lo else "")))
+            err.shortest, err.longest, err.longest_fair, err.polygon = lo, hi, fair, polygon
+            err.spline = None
+            raise err
         if st == lib.EL_ENOCONV:
             why = ""
             if length is None and sigma > 0.0:

@@ -393,6 +393,53 @@ START_TEST(closed_length_without_a_free_batten)
 }
 END_TEST
 
+/* TAUT_START (spline_path.c): 6 ducks of a random walk with reversals under tension x
+ * (longest span)^2 = 100, 200, 300: no spline before (the start's pieces stepped ~1e-3 a
+ * Newton iteration, the continuation from sigma h^2 = 40 stalled); now from the taut
+ * batten's tangents. Each G2 at its ducks to 1e-8 (check_spline, on the pieces), and the
+ * polygon's limit approached as a boundary layer of width ~ 1/sqrt(sigma) at each duck:
+ * the length's excess over the polygon and the largest angle between a duck's tangent and
+ * its chords' bisector fall with the tension, the excess about as 1/sqrt(sigma) */
+START_TEST(random_walk_under_high_tension_from_the_taut_start)
+{
+    static const double walk[] = {-0.525, -0.926, 2.168, -1.906, 1.594, -1.869, 2.078, -0.84,
+                                  2.469, -1.713, 2.975, -1.463};
+    const size_t n = 6;
+    double poly = 0.0, hmax = 0.0;
+    for (size_t i = 0; i + 1 < n; i++) {
+        const double h = hypot(walk[2 * i + 2] - walk[2 * i], walk[2 * i + 3] - walk[2 * i + 1]);
+        poly += h;
+        hmax = fmax(hmax, h);
+    }
+    const double sh2[] = {100.0, 200.0, 300.0};
+    double excess[3], dev[3];
+    for (int t = 0; t < 3; t++) {
+        el_spline_options o = opts(EL_SPLINE_TENSION, sh2[t] / (hmax * hmax));
+        o.tol = 1e-9;
+        el_spline_result r;
+        ck_assert_msg(solve(walk, n, &o, &r) == EL_OK, "sigma h^2 %g", sh2[t]);
+        check_spline(walk, n, &o, &r, 1e-8);
+        ck_assert_int_eq(r.loops, 0);
+        excess[t] = r.length / poly - 1.0;
+        dev[t] = 0.0;
+        for (size_t i = 1; i + 1 < n; i++) {
+            const double a = atan2(walk[2 * i + 1] - walk[2 * i - 1], walk[2 * i] - walk[2 * i - 2]);
+            const double b = atan2(walk[2 * i + 3] - walk[2 * i + 1], walk[2 * i + 2] - walk[2 * i]);
+            const double bis = a + 0.5 * wrap(b - a);
+            dev[t] = fmax(dev[t], fabs(wrap(r.angles[i] - bis)));
+        }
+        el_spline_result_free(&r);
+    }
+    for (int t = 1; t < 3; t++) {
+        ck_assert_msg(excess[t] < excess[t - 1] && dev[t] < dev[t - 1], "%g: excess %g dev %g", sh2[t],
+                      excess[t], dev[t]);
+        const double ratio = excess[t - 1] / excess[t], expect = sqrt(sh2[t] / sh2[t - 1]);
+        ck_assert_msg(fabs(ratio / expect - 1.0) < 0.1, "excess ratio %g, sqrt of the tensions' %g", ratio,
+                      expect);
+    }
+}
+END_TEST
+
 static const double scan33[] = {
     0, 0.142, 0.315, 0.182, 0.604, 0.152, 0.866, 0.208, 1.101, 0.364, 1.309, 0.541, 1.494, 0.673,
     1.659, 0.737, 1.809, 0.743, 1.949, 0.71, 2.086, 0.66, 2.225, 0.61, 2.373, 0.579, 2.534, 0.587,
@@ -510,6 +557,7 @@ int main(void)
     tcase_add_test(tc, closed_length_without_a_free_batten);
     tcase_add_test(tc, natural_ends_under_high_tension_reach_tol);
     tcase_add_test(tc, hand_placed_ducks);
+    tcase_add_test(tc, random_walk_under_high_tension_from_the_taut_start);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }

@@ -506,3 +506,72 @@ def test_high_tension_names_the_dimensionless_tension():
     with pytest.raises(el.NotConvergedError, match=r"tension x \(longest span\)\^2 = 2.9\de\+06") as e:
         el.elastic_spline(pts, tension=0.5)
     assert "1/units^2" in str(e.value) and e.value.spline is None
+
+
+def star(n=10, ro=20.0, ri=8.0):
+    a = 2 * np.pi * np.arange(n) / n
+    r = np.where(np.arange(n) % 2, ri, ro)
+    pts = np.column_stack([r * np.cos(a), r * np.sin(a)])
+    return pts, float(np.hypot(*np.diff(np.vstack([pts, pts[:1]]), axis=0).T).sum())
+
+
+@pytest.mark.parametrize("f", [1.25, 1.5, 2.0])
+def test_star_by_length_beyond_the_fold_by_integration(f):
+    """QA: the closed 10-duck star (radii 20/8) by length failed from 1.25 x its polygon ("no
+    spline through the points was reached"). Each piece integrated on its own (the
+    curvature equation at the spline's tension, from its start state) lands on the next
+    duck with the next piece's curvature: G2 splines that exist, found without loops."""
+    pts, poly = star()
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", el.LoopWarning)
+        sp = el.elastic_spline(pts, length=f * poly, closed=True)
+    check(sp, pts, closed=True)
+    assert sp.length == pytest.approx(f * poly, rel=1e-9) and not sp.loops
+    sigma = sp.tension
+    for j, p in enumerate(sp.pieces):
+        h = 1e-6
+        _, th0, k0 = one_point(p, 0.0)
+        dk0 = (one_point(p, h)[2] - k0) / h + h / 2 * 0.5 * (sigma * k0 - k0 ** 3)
+
+        def rhs(_, y):
+            return [np.cos(y[2]), np.sin(y[2]), y[3], y[4], 0.5 * (sigma * y[3] - y[3] ** 3)]
+
+        sol = solve_ivp(rhs, (0.0, p.length), [*pts[j], th0, k0, dk0], rtol=1e-11, atol=1e-12)
+        e = (j + 1) % len(pts)
+        assert np.hypot(*(sol.y[:2, -1] - pts[e])) < 1e-5 * poly
+        assert sol.y[3, -1] == pytest.approx(sp.curvatures[e], abs=1e-5)
+    assert crossings(sp.points(4000)) == 0
+
+
+def test_ring_by_length_keeps_its_first_mode():
+    """QA: 8 ducks on a circle, closed, by length: integral kappa^2 jumped from 58.3 (1.2 x
+    the polygon) to 221 (1.25 x), 241, 644 (1.5 x): a higher buckling mode. Now it grows
+    with the length on the first mode (72.9, 85.9, 124.3)."""
+    a = np.linspace(0, 2 * np.pi, 9)[:-1]
+    ring = np.column_stack([np.cos(a), np.sin(a)])
+    poly = 16 * np.sin(np.pi / 8)
+    e = [el.elastic_spline(ring, length=f * poly, closed=True).energy for f in (1.2, 1.25, 1.3, 1.5)]
+    assert all(b > a for a, b in zip(e, e[1:]))
+    assert e[1] < 1.3 * e[0] and e[2] < 1.2 * e[1] and e[3] < 1.6 * e[2], e
+
+
+def test_length_beyond_reach_names_the_range(tmp_path):
+    """A length beyond every spline the solve met: LengthRangeError (a NotConvergedError),
+    its message and attributes giving the lengths met and the longest without loops;
+    the CLI says the same (exit 1). Before: "no spline through the points was reached"."""
+    pts, poly = star()
+    with pytest.raises(el.LengthRangeError, match=r"the longest spline through these points "
+                       r"found is 5\.\d+ x the polygon") as e:
+        el.elastic_spline(pts, length=6 * poly, closed=True)
+    err = e.value
+    assert isinstance(err, el.NotConvergedError) and err.spline is None
+    assert 1.1 * poly < err.shortest < 1.2 * poly < 2 * poly <= err.longest_fair < err.longest < 6 * poly
+    assert f"without loops up to {err.longest_fair / poly:.4g} x" in str(err)
+    f = tmp_path / "star.csv"
+    np.savetxt(f, pts, delimiter=",")
+    r = run("spline", f, "--closed", "--length", 6 * poly)
+    assert r.returncode == 1 and "the longest spline through these points found is" in r.stderr, r.stderr
+    sq, p4 = star(4, 1.0, 0.4)
+    with pytest.raises(el.LengthRangeError, match="the shortest spline through these points found is "
+                       r".*a shorter one needs a tension beyond the solver's reach"):
+        el.elastic_spline(sq, length=1.02 * p4, closed=True)

@@ -99,7 +99,9 @@ def _solve(xy, mode, value, closed, start, end):
             return sp, (f"resolved to {sp.residual:.1g} only (a piece close to a circular arc, "
                         "or a very high tension)")
         failure = "no equilibrium found: the solver did not converge; try another tension or length"
-        if mode == "length":
+        if isinstance(exc, e.LengthRangeError):   # the lengths reached, in the library's words
+            failure = _library_message(exc)
+        elif mode == "length":
             try:   # the free batten's length, for scale
                 free = e.elastic_spline(xy, start=start, end=end, closed=closed).length
                 failure = (f"no equilibrium found at Length = {value:g} mm: the solver did not "
