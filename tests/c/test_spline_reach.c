@@ -122,6 +122,31 @@ START_TEST(length_beyond_reach_says_how_far)
 }
 END_TEST
 
+/* 8 random ducks closed into a ring with two deep bays (no free batten: EL_EDOM at tension
+ * 0): by length 1.1 and 1.3 x its polygon no spline was reached (no batten under sigma h^2 =
+ * 40, 4 or 0.4 converged from the chain's start to be followed); now from the taut batten's
+ * start (TAUT_START, spline_path.c), followed in length: G2, without loops */
+START_TEST(closed_bays_by_length_from_the_taut_start)
+{
+    static const double bays[] = {0.2353, 0.5589, 0.1218, 1.1909, -0.2192, 1.2372, -0.2647, 0.7511,
+                                  -0.5042, 1.018, -0.3757, 0.3796, -0.5925, -0.6832, 0.0724, -1.0755};
+    double poly = 0.0;
+    for (int i = 0; i < 8; i++) {
+        const int j = (i + 1) % 8;
+        poly += hypot(bays[2 * j] - bays[2 * i], bays[2 * j + 1] - bays[2 * i + 1]);
+    }
+    const double f[] = {1.1, 1.3};
+    for (int i = 0; i < 2; i++) {
+        el_spline_options o = closed_length(f[i] * poly);
+        el_spline_result r;
+        ck_assert_msg(solve(bays, 8, &o, &r) == EL_OK, "%g x", f[i]);
+        check_spline(bays, 8, &o, &r, 1e-9);
+        ck_assert_int_eq(r.loops, 0);
+        el_spline_result_free(&r);
+    }
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("spline_reach");
@@ -130,6 +155,7 @@ int main(void)
     tcase_add_test(tc, star_by_length_passes_the_fold);
     tcase_add_test(tc, ring_by_length_keeps_its_first_mode);
     tcase_add_test(tc, length_beyond_reach_says_how_far);
+    tcase_add_test(tc, closed_bays_by_length_from_the_taut_start);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }
