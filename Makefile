@@ -113,8 +113,8 @@ $(BUILD)/tests/%: tests/c/%.c $(wildcard tests/c/*.h) $(BUILD)/libelastica.a
 # The fit tests' case any_kernel asserts results that must not depend on OpenBLAS's CPU
 # kernel: run again under kernels that gave other results (OPENBLAS_CORETYPE; another BLAS
 # ignores it and runs the case as before).
-KERNEL_TESTS     := test_fit_ends_held
-OPENBLAS_KERNELS := Nehalem Sandybridge Haswell Zen Prescott
+KERNEL_TESTS     := test_fit_ends_held test_fit_rounding
+OPENBLAS_KERNELS := Nehalem Sandybridge Haswell SkylakeX Zen Prescott
 
 check-c: lib $(TEST_BIN)
 	@set -e; for t in $(TEST_BIN); do echo "== $$t"; (cd tests/c && $(CURDIR)/$$t); done

@@ -80,6 +80,110 @@ static int rows_first_order(fit_objective *ob, const fit_constraints *con, const
     return el__fit_first_order_rows(&v, A, m, ob->map.nx, ob->lm_tol);
 }
 
+/* The rows' targets at x (their curve's values there): con's rows with their targets moved
+ * the fraction t of the way from those values to con's own. EL_OK, or EL_EDOM where the curve
+ * cannot be evaluated. */
+static int rows_towards(const fit_objective *ob, const fit_constraints *con, const double *x, double t,
+                        fit_constraints *out, double *tmp)
+{
+    double v[2][FIT_NP];
+    fit_end e[2];
+    if (el__fit_map_eval(&ob->map, x, v, NULL) ||
+        el__fit_end_state(ob->map.model, v[0], ob->n, 0, &e[0], tmp) ||
+        el__fit_end_state(ob->map.model, v[0], ob->n, 1, &e[1], tmp))
+        return EL_EDOM;
+    *out = *con;
+    out->start_theta = e[0].theta + t * remainder(con->start_theta - e[0].theta, 2.0 * M_PI);
+    out->end_theta = e[1].theta + t * remainder(con->end_theta - e[1].theta, 2.0 * M_PI);
+    out->start_kappa = e[0].kappa + t * (con->start_kappa - e[0].kappa);
+    out->end_kappa = e[1].kappa + t * (con->end_kappa - e[1].kappa);
+    for (int c = 0; c < 2; c++) out->end_xy[c] = e[1].xy[c] + t * (con->end_xy[c] - e[1].xy[c]);
+    return EL_OK;
+}
+
+/* The objective's state (its fields, feet and distances at rest) as a fit left it, put back
+ * after another run from the same start that is not kept: the kept fit's later steps then
+ * see exactly what they saw before that run. */
+typedef struct ob_state {
+    fit_objective ob;
+    double *buf;          /* the feet's two arrays, then rest and rest_foot (n each) */
+} ob_state;
+
+static double *feet_block(const fit_objective *ob) { return ob->s < ob->s_next ? ob->s : ob->s_next; }
+
+static int ob_save(const fit_objective *ob, ob_state *k)
+{
+    const size_t n = ob->n;
+    if (!(k->buf = malloc(sizeof(double) * 4 * n))) return EL_ENOMEM;
+    k->ob = *ob;
+    memcpy(k->buf, feet_block(ob), sizeof(double) * 2 * n);
+    if (ob->rest) memcpy(k->buf + 2 * n, ob->rest, sizeof(double) * n);
+    if (ob->rest_foot) memcpy(k->buf + 3 * n, ob->rest_foot, sizeof(double) * n);
+    return EL_OK;
+}
+
+static void ob_restore(fit_objective *ob, const ob_state *k)
+{
+    const size_t n = ob->n;
+    *ob = k->ob;
+    memcpy(feet_block(ob), k->buf, sizeof(double) * 2 * n);
+    if (ob->rest) memcpy(ob->rest, k->buf + 2 * n, sizeof(double) * n);
+    if (ob->rest_foot) memcpy(ob->rest_foot, k->buf + 3 * n, sizeof(double) * n);
+}
+
+/* A start by continuation (el__fit_held_start) far from the rows: Ipopt's one run from it
+ * jumps to them, and the basin it lands in can turn on rounding (a sketch's fit G2-joined at
+ * its start, its end tangent a row 0.41 rad from the continuation's: two minima of rms 2.130
+ * and 2.169 mm, the one or the other after the document's round trip moved the points by
+ * 4e-14, QA). Ipopt in two stages too, to the rows halfway (rows_towards) and then to them,
+ * from the same start (start: the objective as the first run began, x0 its point); the fit
+ * *r is replaced where that one meets the rows and is lower by more than the rounding of f,
+ * else the objective is put back as the first run left it (kept). EL_OK or EL_ENOMEM. */
+static int rows_halfway(fit_objective *ob, const el_fit_options *o, const fit_constraints *con,
+                        const double *xl, const double *xu, const double *x0, const ob_state *start,
+                        fit_candidate *r, double *tmp)
+{
+    const int nx = ob->map.nx;
+    ob_state kept;
+    if (ob_save(ob, &kept)) return EL_ENOMEM;
+    ob_restore(ob, start);
+    ob->f_ceiling = HUGE_VAL;
+    double x[FIT_MAXX];
+    memcpy(x, x0, sizeof(double) * (size_t)nx);
+    fit_constraints half;
+    fit_ipopt_out io;
+    int st = rows_towards(ob, con, x, 0.5, &half, tmp);
+    if (st == EL_OK) st = el__fit_ipopt(ob, xl, xu, &half, o, x, &io, tmp);
+    const int first = st == EL_OK ? io.iters : 0;
+    if (st == EL_OK) st = el__fit_ipopt(ob, xl, xu, con, o, x, &io, tmp);
+    if (st == EL_ENOMEM || st == EL_EINTERNAL) { free(kept.buf); return st; }
+    const int meets = st == EL_OK && rows_violation(ob, con, x, tmp) <= 1e-10;
+    if (meets && (!(rows_violation(ob, con, r->x, tmp) <= 1e-10) || io.f < r->f * (1.0 - 1e-9))) {
+        memcpy(r->x, x, sizeof(double) * (size_t)nx);
+        r->f = io.f;
+        r->ipopt_status = io.ipopt_status;
+        r->status = io.certified ? EL_OK : ipopt_to_status(io.ipopt_status);
+        if (r->status == EL_ENOCONV && rows_first_order(ob, con, r->x, tmp)) r->status = EL_OK;
+        r->iters += first + io.iters;
+    } else {
+        ob_restore(ob, &kept);
+        r->iters += first + (st == EL_OK ? io.iters : 0);
+    }
+    free(kept.buf);
+    memcpy(ob->halfway_x, x0, sizeof(double) * (size_t)nx);
+    ob->halfway_seen = 1;
+    return EL_OK;
+}
+
+/* Whether rows_halfway ran from x (to 1e-9) last: its fit is among the candidates already. */
+static int halfway_ran(const fit_objective *ob, const double *x)
+{
+    int same = ob->halfway_seen;
+    for (int j = 0; j < ob->map.nx && same; j++)
+        same = fabs(x[j] - ob->halfway_x[j]) <= 1e-9 * (1.0 + fabs(x[j]));
+    return same;
+}
+
 int el__fit_solve_candidate(fit_objective *ob, const el_fit_options *o, const fit_constraints *con,
                             const double *xl, const double *xu, int need_ipopt, int no_polish,
                             const double *x0, double best_f, fit_candidate *r, double *tmp, int near_start,
@@ -234,9 +338,23 @@ int el__fit_solve_candidate(fit_objective *ob, const el_fit_options *o, const fi
      * (test_fit_lbfgs.c): two later guesses each ran Ipopt to max_iter from outside the
      * range, 4-9 s each on a polygon far from the points */
     if (o->limited_memory || !need_ipopt) ob->f_ceiling = best_f;
+    /* the continuation's start with rows that leave the fit free (fewer than its variables:
+     * where as many determine it, its curves are isolated, chosen among by other rules; a
+     * 9-point sketch held at 7 conditions went from a coil of 100 x its length, rms 0.0023,
+     * to one of 1.6 x, 0.134): its feet and point kept for rows_halfway */
+    double rc[FIT_NCON];
+    const int halfway = near_start && !warm && need_ipopt && !lm_ok && fit_has_feet(ob) &&
+                        !halfway_ran(ob, x) &&
+                        el__fit_constraint_rows(ob, con, x, rc, NULL, NULL, tmp) < nx;
+    double xstart[FIT_MAXX];
+    ob_state start = {.buf = NULL};
+    if (halfway) {
+        if (ob_save(ob, &start)) return EL_ENOMEM;
+        memcpy(xstart, x, sizeof(double) * (size_t)nx);
+    }
     int st = el__fit_ipopt(ob, xl, xu, need_ipopt ? con : NULL, o, x, &io, tmp);
     ob->f_ceiling = HUGE_VAL;
-    if (st == EL_EINTERNAL || st == EL_ENOMEM) return st;
+    if (st == EL_EINTERNAL || st == EL_ENOMEM) { free(start.buf); return st; }
     if (io.ran) {
         r->used_ipopt = 1;
         r->ipopt_status = io.ipopt_status;
@@ -270,7 +388,9 @@ int el__fit_solve_candidate(fit_objective *ob, const el_fit_options *o, const fi
         r->status = EL_OK;
     /* a zero-residual fit that Ipopt could not certify (its step became tiny) is a fit */
     if (r->status == EL_ENOCONV && r->f <= FIT_EXACT_F) r->status = EL_OK;
-    return EL_OK;
+    if (halfway && st == EL_OK) st = rows_halfway(ob, o, con, xl, xu, xstart, &start, r, tmp);
+    free(start.buf);
+    return st == EL_EINTERNAL || st == EL_ENOMEM ? st : EL_OK;
 }
 
 int el__fit_refeet(fit_objective *ob, const el_fit_options *o, const fit_constraints *rows,

@@ -177,6 +177,10 @@ typedef struct fit_objective {
      * start of a constrained fit); pen NULL: none. pen_tmp: FIT_WORK doubles */
     const struct fit_constraints *pen;
     double pen_rho, *pen_tmp;
+    /* the last start fit_candidate.c's rows_halfway ran from (halfway_seen: there is one):
+     * the guesses' continuations often end at the same point, run from once */
+    double halfway_x[FIT_MAXX];
+    int halfway_seen;
 } fit_objective;
 
 /* f = (1/2n) sum r^2; when want_normal also g = J^T r / n and H = J^T J / n (lower
