@@ -53,6 +53,40 @@ class ClosedJoinTest(unittest.TestCase):
             k, ke = curvature_vector(c, u), edge.normalAt(ue) * edge.curvatureAt(ue)
             self.assertLess((k - ke).Length, 1e-6 * ke.Length, f"{name}: curvature vector")
 
+    def test_a_spline_joined_at_the_seam_by_an_earlier_version_says_it_changed(self):
+        # the rule before 4a0ae84 (the closed edge joined at its seam): the spline as that
+        # workbench stored it, then recomputed by this one, once with the note, then without
+        pts = S.points_sketch(self.doc, [(-40, 30), (-15, 34), (10, 30), (40, 22)], "OnCircle")
+        self.doc.recompute()
+        nearest = Sp.nearest_parameter
+        Sp.nearest_parameter = lambda edge, point: None
+        try:
+            s = Sp.make(self.doc, [(pts, [])], StartCondition="G2", StartEdge=(self.sk, "Edge1"),
+                        Tolerance=1e-6)
+            self.doc.recompute()
+        finally:
+            Sp.nearest_parameter = nearest
+        seam = s.Shape.Length
+        self.assertNotIn("earlier version", s.Status)
+        printed = []
+        warn = App.Console.PrintWarning
+        App.Console.PrintWarning = lambda msg: printed.append(msg)
+        try:
+            s.touch()
+            self.doc.recompute()
+            now = s.Shape.Length
+            self.assertGreater(abs(now - seam), 1.0)
+            self.assertIn("joined to it at its seam by an earlier version", s.Status)
+            self.assertIn(f"(length {seam:.6g} -> {now:.6g} mm)", s.Status)
+            self.assertEqual(len([m for m in printed if "earlier version" in m]), 1, printed)
+            s.touch()
+            self.doc.recompute()
+            self.assertNotIn("earlier version", s.Status)
+            self.assertEqual(len([m for m in printed if "earlier version" in m]), 1, printed)
+            self.assertEqual(s.Shape.Length, now)
+        finally:
+            App.Console.PrintWarning = warn
+
     def test_a_spline_off_a_full_circle_warns_with_its_nearest_point(self):
         pts = S.points_sketch(self.doc, [(-40, 33), (-15, 34), (10, 30), (40, 22)], "OffClosed")
         self.doc.recompute()

@@ -40,15 +40,16 @@ def _library_message(exc):
     return str(exc).replace("elastic_spline: ", "")
 
 
-def end_condition(edge, condition, point, neighbour, arriving):
+def end_condition(edge, condition, point, neighbour, arriving, seam=False):
     """What an end of the spline at ``point`` (3D; ``neighbour`` the next duck
     inwards) takes from ``edge`` at the edge's end nearest the point: (edge, at_end,
     3D unit direction of travel, gap). The spline leaves a start edge continuing it
     and arrives at an end edge running into it; an edge that does not touch the
     point only lends its direction, turned to run along the spline. A closed edge (a
     full circle or ellipse: its seam is no end) is met at its point nearest the point
-    (u: its parameter there, else None), in the direction that runs along the spline."""
-    u = nearest_parameter(edge, point) if edge.isClosed() else None
+    (u: its parameter there, else None), in the direction that runs along the spline;
+    ``seam``: at its seam instead, the rule before 4a0ae84 (seam_changes)."""
+    u = nearest_parameter(edge, point) if edge.isClosed() and not seam else None
     if u is None:
         at_end = (edge_end(edge, True)[0] - point).Length < (edge_end(edge, False)[0] - point).Length
         p, leaving = edge_end(edge, at_end)
@@ -163,6 +164,9 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
             if spec is not None:
                 i, inner = (0, 1) if j == 0 else (-1, -2)
                 ends[j] = end_condition(spec[1], spec[0], pts[i], pts[inner], arriving=j == 1)
+                if ends[j]["u"] is not None:      # the direction the seam's rule took
+                    ends[j]["seam"] = end_condition(spec[1], spec[0], pts[i], pts[inner],
+                                                    arriving=j == 1, seam=True)["direction"]
     # the plane holds the points and the end tangents
     h = extent / max(len(pts) - 1, 1) or 1.0
     probes = [pts[0 if j == 0 else -1] + c["direction"] * h for j, c in enumerate(ends) if c]
@@ -223,8 +227,33 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
         bs = sp.to_bspline(tol, degree)
     except (ValueError, ArithmeticError, RuntimeError) as exc:
         raise InputProblem(f"B-spline: {_library_message(exc)}") from None
+    seams = [(j, c["seam"], c["direction"]) for j, c in enumerate(ends) if c and "seam" in c]
     return {"spline": sp, "bspline": bs, "placement": plane, "forces": duck_forces(sp),
-            "notes": notes, "warnings": cautions}
+            "notes": notes, "warnings": cautions, "seams": seams}
+
+
+def _parallel(a, b):
+    return a.Length > 0.0 and b.Length > 0.0 and a.getAngle(b) <= 1e-6
+
+
+def seam_changes(shape, seams):
+    """The notes for a stored spline (``shape``, before this recompute) joined to a closed
+    edge by the rule before 4a0ae84, at the edge's seam (parameter 0), which this recompute
+    joins at its point nearest the end duck instead (spline_core's 'seams': (end, the
+    seam's direction, the one taken)): its end ran in the seam's direction, not in this
+    one's. Else none."""
+    if shape is None or shape.isNull() or len(shape.Edges) != 1:
+        return []
+    e = shape.Edges[0]
+    out = []
+    for j, seam, now in seams:
+        stored = App.Vector(e.tangentAt(e.FirstParameter if j == 0 else e.LastParameter))
+        if _parallel(stored, seam) and not _parallel(seam, now):
+            out.append(f"the {'start' if j == 0 else 'end'} edge is closed: this spline was "
+                       "joined to it at its seam by an earlier version of the workbench and now "
+                       "meets it at its point nearest the "
+                       f"{'first' if j == 0 else 'last'} point, as a new one does: its shape changed")
+    return out
 
 
 # sigma P^2 (P: the polygon through the points): where no free batten passes the points,
@@ -365,7 +394,14 @@ class SplineProxy(FeatureProxy):
 
     def apply(self, obj, r):
         sp, plc, bs = r["spline"], r["placement"], r["bspline"]
+        old = obj.Shape.copy() if not obj.Shape.isNull() else None
+        changed = seam_changes(old, r.get("seams", []))
         obj.Shape = part_bspline(bs, plc).toShape()
+        if changed:
+            length = f" (length {old.Length:.6g} -> {obj.Shape.Length:.6g} mm)"
+            changed = [w + length for w in changed]
+            for w in changed:                 # once: the next recompute finds the new shape
+                App.Console.PrintWarning(f"Elastica {obj.Label}: {w}\n")
         obj.SplineLength = sp.length
         obj.SplineTension = sp.tension
         obj.Energy = sp.energy
@@ -387,7 +423,7 @@ class SplineProxy(FeatureProxy):
             for w in cautions:
                 App.Console.PrintWarning(f"Elastica {obj.Label}: {w}\n")
             obj.Warnings = cautions
-        obj.Status = "; ".join(["ok"] + [f"warning: {w}" for w in cautions] + r["notes"])
+        obj.Status = "; ".join(["ok"] + [f"warning: {w}" for w in cautions] + changed + r["notes"])
 
     def plane_curves(self, obj):
         from .fit import stored_curves
