@@ -81,6 +81,37 @@ def _side_record(res, data: np.ndarray, model: str, free=None) -> Dict[str, Any]
     return rec
 
 
+def _resampled_record(path, args, xy: np.ndarray, fixed, constraints):
+    """The record of a one-piece --step fit (el.fit_resampled): its figures are the file's
+    points' (in the fit's plane) to the curve drawn (a discrete fit's C2 cubic through its
+    vertices), not the polygon's vertices' to it ("distances_of"; the polygon's own kept as
+    "polygon_rms" / "polygon_max_error"); a constrained fit's outliers judged by the
+    points' distances to the resampled fit without its constraints. Returns the record,
+    the polygon's FitResult and the points' feet."""
+    import libelastica as el
+    with warnings.catch_warnings():     # the ResampleWarning said in the CLI's words
+        warnings.simplefilter("ignore", el.ResampleWarning)
+        rr = el.fit_resampled(xy, args.step, **_fit_kwargs(args, fixed, constraints))
+        free = None
+        if constraints:
+            free = el.fit_resampled(xy, args.step, check=False,
+                                    **_fit_kwargs(args, fixed)).distances
+    res = rr.result
+    rec = _side_record(res, xy, args.model)
+    far = el.far_points(rr.distances, xy, free_distances=free)
+    rec.update(rms=rr.rms, max_error=rr.max_error, fitted_points=int(len(rr.polygon)),
+               polygon_rms=float(res.rms), polygon_max_error=float(res.max_error),
+               distances_of="the file's points (in the fit's plane) to the curve drawn",
+               distances=[float(v) for v in rr.distances],
+               foot_s=[float(v) for v in rr.foot_s], outliers=[int(i) for i in far],
+               resample_reference_rms=rr.reference_rms)
+    if free is not None:
+        rec["free_distances"] = [float(v) for v in free]
+    else:
+        rec.pop("free_distances", None)
+    return rec, res, rr.feet
+
+
 def _warn_far_points(path, rec: Dict[str, Any]) -> None:
     """A warning on stderr naming the points far from the fitted curve (the record's
     "outliers": indices into the fitted points, the file's rows unless resampled)."""
@@ -96,13 +127,17 @@ def _warn_far_points(path, rec: Dict[str, Any]) -> None:
           "remove them to fit the rest", file=sys.stderr)
 
 
-def _cubic_figures(doc: Dict[str, Any], res, bspline, pts: np.ndarray) -> None:
+def _cubic_figures(doc: Dict[str, Any], res, bspline, pts: np.ndarray,
+                   xy: Optional[np.ndarray] = None) -> None:
     """A discrete fit's exported cubic measured against the points, kept as the document's
     "bspline_rms" / "bspline_max_error": the fitted points' (one piece), the file's points'
-    in the keyline's plane (a keyline; x''y'' as its B-spline). Its rms / max error are the
-    polygon's, and the C2 cubic through the vertices runs elsewhere between them."""
+    in the keyline's plane (a keyline; x''y'' as its B-spline) or in the fit's plane (``xy``,
+    a one-piece --step: as its rms, which is already the cubic's). Its rms / max error are
+    the polygon's, and the C2 cubic through the vertices runs elsewhere between them."""
     from .nearest import nearest_on
-    if hasattr(res, "prepared"):
+    if xy is not None:
+        d = nearest_on(bspline, np.ascontiguousarray(xy))[1]
+    elif hasattr(res, "prepared"):
         prep = res.prepared
         xy = prep.frame.project(pts) if prep.frame is not None else pts[:, :2]
         d = nearest_on(bspline, np.ascontiguousarray(prep.frame2d.to_local(xy)))[1]
@@ -176,7 +211,8 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
     import libelastica as el
     pts = read_points(path, min_points=4)
     records: List[Dict[str, Any]] = []
-    pictures = []                       # (data (n,2), FitResult) per record
+    pictures = []       # (points (n,2), FitResult, their feet or None: the fit's) per record
+    fitted = []         # the points each record's fit took (a --step: its polygon's)
     extra_info: Dict[str, Any] = {}
     if args.keyline:
         # seed 000 §5 as one G2 curve: plane fit, resampling (segment --step),
@@ -204,7 +240,8 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
             if kres.ends is not None:    # where a discrete half ends: `elastica bspline` again
                 rec["end"] = [float(v) for v in kres.ends[i]]
             records.append(rec)
-            pictures.append((res.points, res))
+            pictures.append((res.points, res, None))
+            fitted.append(res.points)
         data = prep.polygon
     else:
         plane, to_input = None, None
@@ -223,17 +260,28 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
             if len(data) < 4:
                 raise InputError(f"{path}: --step {args.step} leaves only {len(data)} points")
         fixed, constraints = _parse_fix(args.fix, data), _constraints(args, data)
-        # quietly: said in the CLI's words (_warn_wanders, the status)
-        res = quiet_fit(data, **_fit_kwargs(args, fixed, constraints))
-        free = None
-        if constraints and getattr(res, "distances", None) is not None:
-            free = quiet_fit(data, **_fit_kwargs(args, fixed)).distances
-        records.append(_side_record(res, data, args.model, free))
-        pictures.append((data, res))
-    for rec, (fitted, _) in zip(records, pictures):
+        if args.step is not None:
+            rec, res, feet = _resampled_record(path, args, xy, fixed, constraints)
+            records.append(rec)
+            pictures.append((xy, res, feet))
+            fitted.append(data)
+        else:
+            # quietly: said in the CLI's words (_warn_wanders, the status)
+            res = quiet_fit(data, **_fit_kwargs(args, fixed, constraints))
+            free = None
+            if constraints and getattr(res, "distances", None) is not None:
+                free = quiet_fit(data, **_fit_kwargs(args, fixed)).distances
+            records.append(_side_record(res, data, args.model, free))
+            pictures.append((data, res, None))
+            fitted.append(data)
+    for rec, fitted_pts in zip(records, fitted):
         rec.update({"file": str(path), "plane": plane, "step": args.step, **extra_info})
         _warn_far_points(path, rec)
-        _warn_wanders(path, rec, fitted)
+        _warn_wanders(path, rec, fitted_pts)
+        if rec.get("resample_reference_rms") is not None:
+            from .resampled import resample_summary
+            print(f"{PROG} fit: warning: {path}: " + resample_summary(
+                args.step, rec["rms"], rec["resample_reference_rms"]), file=sys.stderr)
     doc = records[0] if len(records) == 1 else {"file": str(path), "sides": records}
     splines = []
     if args.bspline_tol is not None or args.dxf:
@@ -245,8 +293,10 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
             splines.append(res.to_bspline(tol, args.degree))   # a discrete fit's: its ends
             records[0]["bspline"] = splines[0].to_dict()
         if args.model == "discrete":     # the cubic through the vertices is not the polygon
-            _cubic_figures(doc, kres if args.keyline else res, splines[0], pts)
-    if args.model == "discrete" and not args.keyline:
+            _cubic_figures(doc, kres if args.keyline else res, splines[0], pts,
+                           xy if args.step is not None and not args.keyline else None)
+    if args.model == "discrete" and not args.keyline and args.step is None:
+        # (a --step's polygon is judged by the file's points: the ResampleWarning)
         _warn_coarse_polygon(path, records[0], data, res)
     # the DXF gets the curves in the input's coordinates (3D for 3D input)
     splines = [_mapped_bspline(b, to_input) for b in splines]
@@ -267,12 +317,13 @@ def _write_fit_outputs(path, args, batch, doc, records, pictures, splines, point
         if out is None or not pictures:
             continue
         pic = None
-        for i, ((d, res), rec) in enumerate(zip(pictures, records)):
+        for i, ((d, res, feet), rec) in enumerate(zip(pictures, records)):
             extra = [f"rms = {rec['rms']:.4g}, max error = {rec['max_error']:.4g}",
                      f"iterations = {rec['iterations']}, status = {rec['status']}"]
             if rec.get("plane"):
                 extra.append(f"plane fit rms = {rec['plane']['rms']:.4g}")
-            p = fit_picture(d, res.curve, res.initial, model_points=res.foot_points(),
+            p = fit_picture(d, res.curve, res.initial,
+                            model_points=res.foot_points() if feet is None else feet,
                             title=f"{Path(path).name}: {args.model} elastica fit"
                                   + (" (keyline, x''y'' frame)" if args.keyline else ""),
                             extra=extra)
@@ -310,7 +361,12 @@ def _print_fit(rec: Dict[str, Any]) -> None:
               f"rms distance {rec['plane']['rms']:.4g}")
     if "side" in rec:
         print(f"side        {rec['side'] + 1}")
-    print(f"model       {rec['model']}  ({rec['n_points']} points)")
+    if "fitted_points" in rec:      # --step: the polygon fitted, the file's points measured
+        print(f"model       {rec['model']}  (the {rec['fitted_points']}-vertex polygon at step "
+              f"{_fmt(rec['step'])}; rms, max error: the file's {rec['n_points']} points, "
+              f"the polygon's rms {_fmt(rec['polygon_rms'])})")
+    else:
+        print(f"model       {rec['model']}  ({rec['n_points']} points)")
     if rec.get("curve"):
         print("parameters  " + ", ".join(f"{k}={_fmt(v)}" for k, v in rec["curve"].items()
                                          if k != "type"))
@@ -321,7 +377,8 @@ def _print_fit(rec: Dict[str, Any]) -> None:
         print(f"iterations  {rec['iterations']}")
     if rec.get("bspline"):
         _print_bspline(rec["bspline"])
-        _print_cubic(rec, "points")
+        if "fitted_points" not in rec:     # --step: the rms above is already the cubic's
+            _print_cubic(rec, "points")
     print(f"status      {rec['status']}")
 
 

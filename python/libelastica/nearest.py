@@ -189,10 +189,12 @@ def drawn_distances(bspline, data, t0):
     return _signed(bspline, data, t, P, d2)
 
 
-def nearest_on(bspline, data, seeds=256):
+def nearest_on(bspline, data, seeds=256, with_t=False):
     """Each point's nearest point on a B-spline and its signed distance (+ = left of the
     travel), as drawn_distances, from the nearest of up to ``seeds`` knots spread along
-    it: for points the fit did not use (the user's, where it fitted a resampled polygon)."""
+    it: for points the fit did not use (the user's, where it fitted a resampled polygon).
+    ``with_t``: also each foot's parameter from the spline's start (a fit's to_bspline:
+    the arc length of a smooth curve, of a discrete one's polygon)."""
     n = np()
     t0s, t1s = _spans(bspline)[:2]
     k = n.append(t0s, t1s[-1:])
@@ -203,4 +205,6 @@ def nearest_on(bspline, data, seeds=256):
         d2 = n.sum((data[i:i + 1024, None, :] - K[None, :, :]) ** 2, axis=2)
         start[i:i + 1024] = k[n.argmin(d2, axis=1)]
     t, P, d2 = _nearest_feet(bspline, data, start)
+    if with_t:
+        return _signed(bspline, data, t, P, d2) + (t - bspline.domain[0],)
     return _signed(bspline, data, t, P, d2)

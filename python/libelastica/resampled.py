@@ -42,7 +42,8 @@ class ResampledFit:
     its rms / distances are the polygon's vertices'), ``bspline`` the curve drawn (smooth:
     within tol; discrete: the C2 cubic through its vertices), ``distances`` / ``feet`` the
     points' signed distances (+ = left) to it and their nearest points on it, ``rms`` /
-    ``max_error`` from them; ``reference_rms``: the rms of the points' own smooth fit where
+    ``max_error`` from them, ``foot_s`` each foot's arc length (the B-spline's parameter: a
+    smooth curve's, a discrete one's polygon's, as FitResult.foot_s); ``reference_rms``: the rms of the points' own smooth fit where
     this one lies beyond RESAMPLE_RATIO times it (a warning), else None."""
     result: FitResult
     polygon: np.ndarray
@@ -54,6 +55,7 @@ class ResampledFit:
     rms: float
     max_error: float
     reference_rms: Optional[float] = None
+    foot_s: Optional[np.ndarray] = None
 
     @property
     def curve(self):
@@ -108,7 +110,7 @@ def fit_resampled(points, step: float, model: str = "discrete", *, tol: float = 
                          "needs 4")
     r = quiet_fit(polygon, model=model, **kwargs)
     bspline = r.to_bspline(tol, degree)
-    feet, dist = nearest_on(bspline, pts)
+    feet, dist, foot_s = nearest_on(bspline, pts, with_t=True)
     rms = float(np.sqrt(np.mean(dist ** 2)))
     ref = None
     if check:
@@ -117,7 +119,8 @@ def fit_resampled(points, step: float, model: str = "discrete", *, tol: float = 
             warnings.warn(resample_summary(step, rms, ref), ResampleWarning, stacklevel=2)
     return ResampledFit(result=r, polygon=polygon, points=pts.copy(), step=float(step),
                         bspline=bspline, distances=dist, feet=feet, rms=rms,
-                        max_error=float(np.abs(dist).max()), reference_rms=ref)
+                        max_error=float(np.abs(dist).max()), reference_rms=ref,
+                        foot_s=foot_s)
 
 
 def resample_summary(step: float, rms: float, reference: float, unit: str = "") -> str:
