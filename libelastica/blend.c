@@ -43,6 +43,18 @@ static const double COND_MAX = 1e13;
 static const double HULL_TOL = 1e-12;
 
 static int basis_stats(el_blend_basis *b);
+static int span_at(const el_blend_basis *b, double t, double f[4], double df[4], double d2f[4]);
+static int basis_at(const el_blend_basis *b, double t, double h[4], double dh[4], double d2h[4]);
+
+int el__blend_span_at(const el_blend_basis *b, double t, double f[4], double df[4], double d2f[4])
+{
+    return span_at(b, t, f, df, d2f);
+}
+
+int el__blend_basis_at(const el_blend_basis *b, double t, double h[4], double dh[4], double d2h[4])
+{
+    return basis_at(b, t, h, dh, d2h);
+}
 
 int el__blend_basis_ok(const el_blend_basis *b)
 {
@@ -419,14 +431,20 @@ static int extremum(stat_ctx *c, double *best)
 /* b->basis_min, b->convex_hull, b->lebesgue (b->G set). */
 static int basis_stats(el_blend_basis *b)
 {
-    stat_ctx lo = {b, 0, 1.0, EL_OK}, hi = {b, 1, -1.0, EL_OK};
-    double vmin, vmax;
-    int st = extremum(&lo, &vmin);
+    stat_ctx hi = {b, 1, -1.0, EL_OK};
+    double vmin, tmin, vmax;
+    int st = el__blend_basis_min(b, &vmin, &tmin);   /* exact: blend_hull.c */
     if (st == EL_OK) st = extremum(&hi, &vmax);
     if (st != EL_OK) return st;
     b->basis_min = vmin;
     b->convex_hull = vmin >= -HULL_TOL;
     b->lebesgue = fmax(-vmax, 1.0);   /* sum |h_i| >= sum h_i = 1 */
+    if (!b->convex_hull) {
+        /* a dip the samples miss (next to an end): sum |h_i| there */
+        const double at_min = -stat_fn(tmin, &hi);
+        if (hi.status != EL_OK) return hi.status;
+        b->lebesgue = fmax(b->lebesgue, at_min);
+    }
     return EL_OK;
 }
 

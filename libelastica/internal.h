@@ -157,6 +157,11 @@ int el__bspline_join_c2(const el_bspline *parts, size_t count, el_bspline *out, 
 
 /* Whether b is an initialised basis (a known kind, d finite and positive). */
 int el__blend_basis_ok(const el_blend_basis *b);
+/* span_at / basis_at of blend.c: f_j (h_j) and derivatives at one t; NULL outputs skipped. */
+int el__blend_span_at(const el_blend_basis *b, double t, double f[4], double df[4], double d2f[4]);
+int el__blend_basis_at(const el_blend_basis *b, double t, double h[4], double dh[4], double d2h[4]);
+/* blend_hull.c: the exact min over t in [0, 1] and i of h_i(t), and where (t). */
+int el__blend_basis_min(const el_blend_basis *b, double *vmin, double *tmin);
 /* phi(t) and phi'(t) of one segment with control points q (8 doubles); xy or dxy
  * may be NULL. Errors: those of the basis evaluation. */
 int el__blend_segment_at(const el_blend_basis *b, const double *q, double t, double xy[2], double dxy[2]);
