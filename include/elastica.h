@@ -1837,8 +1837,9 @@ enum el_blend_pick {
  * EL_BLEND_PICK_INTERPOLATE solves sum_j q_j h_j(t_i) = pts_i, with
  * t_i = (chord length from pts_0 to pts_i) / (total chord length).
  * Errors: EL_EINVAL (NULL, NaN/inf, unknown mode), EL_ESINGULAR (coincident
- * consecutive points, or the 4x4 collocation system is singular), EL_EDOM (a
- * control point beyond double's range; q untouched), EL_ENOMEM, EL_EINTERNAL.
+ * consecutive points, or the 4x4 collocation system is singular), EL_EDOM (the
+ * chord lengths or a control point beyond double's range: coordinates near
+ * DBL_MAX; q untouched), EL_ENOMEM, EL_EINTERNAL.
  */
 int el_blend_from_points(const el_blend_basis *b, const double *pts, int mode, double *q);
 
@@ -1863,6 +1864,17 @@ int el_blend_composite_eval(const el_blend_basis *b, size_t nseg, const double *
  */
 int el_blend_composite_through(const el_blend_basis *b, size_t npts, const double *pts,
                                double *q);
+
+/*
+ * The closed C1 composite through npts >= 3 points (pts: 2*npts, the first not
+ * repeated at the end): npts segments, the last from P_{npts-1} back to P_0,
+ * node i at t = i, every tangent T_i = (P_{i+1} - P_{i-1})/2 with the indices
+ * taken cyclically, so the seam at P_0 is a joint like the others (C1; the
+ * open composite's one-sided end tangents leave a corner there). q: 3*npts + 1
+ * points (6*npts + 2 doubles), q_{3 npts} = P_0. Errors as
+ * el_blend_composite_through (EL_EINVAL also for npts < 3).
+ */
+int el_blend_composite_closed(const el_blend_basis *b, size_t npts, const double *pts, double *q);
 
 /*
  * Clamped cubic B-spline approximating the composite curve (nseg >= 1, q as in

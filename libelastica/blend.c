@@ -557,6 +557,7 @@ int el_blend_from_points(const el_blend_basis *b, const double *pts, int mode, d
         if (!(ch > 0.0)) return EL_ESINGULAR;
         tt[i] = tt[i - 1] + ch;
     }
+    if (!isfinite(tt[3])) return EL_EDOM;   /* the chords overflow: coordinates near DBL_MAX */
     for (int i = 1; i < 3; i++) tt[i] /= tt[3];
     tt[3] = 1.0;
     /* collocation H[i][j] = h_j(t_i); H Q = P, solved through H^-1 */
@@ -580,21 +581,22 @@ int el_blend_from_points(const el_blend_basis *b, const double *pts, int mode, d
     return EL_OK;
 }
 
-int el_blend_composite_through(const el_blend_basis *b, size_t npts, const double *pts,
-                               double *q)
+/* Control points of the C1 composite through npts points; closed: one more segment
+ * from the last point back to the first, the tangents wrapped (q: 3 npts + 1 points). */
+static int composite_through(const el_blend_basis *b, size_t npts, const double *pts, int closed,
+                             double *q)
 {
-    if (!el__blend_basis_ok(b) || npts < 2 || !pts || !q || el__too_many(npts, 6, sizeof(double)) ||
-        el__all_finite(pts, 2 * npts))
-        return EL_EINVAL;
     /* the tangents are differences of points: in range when the coordinates are */
     for (size_t i = 0; i < 2 * npts; i++)
         if (fabs(pts[i]) > 1e300) return EL_EDOM;
     const double *P = pts;
-    const size_t last = npts - 1;
+    const size_t last = npts - 1, nq = 3 * (closed ? npts : npts - 1) + 1;
     for (size_t i = 0; i < npts; i++) {
         double T[2];
         for (int c = 0; c < 2; c++) {
-            if (npts == 2)
+            if (closed)   /* Catmull-Rom all round: P_{i+1} - P_{i-1} taken cyclically */
+                T[c] = (P[2 * ((i + 1) % npts) + c] - P[2 * ((i + last) % npts) + c]) / 2.0;
+            else if (npts == 2)
                 T[c] = P[2 + c] - P[c];
             else if (i == 0)
                 T[c] = (-3.0 * P[c] + 4.0 * P[2 + c] - P[4 + c]) / 2.0;
@@ -606,9 +608,28 @@ int el_blend_composite_through(const el_blend_basis *b, size_t npts, const doubl
         /* phi'(0) = d (q_1 - q_0), phi'(1) = d (q_3 - q_2) (2.11) */
         for (int c = 0; c < 2; c++) {
             q[6 * i + c] = P[2 * i + c];
-            if (i < last) q[6 * i + 2 + c] = P[2 * i + c] + T[c] / b->d;
+            if (i < last || closed) q[6 * i + 2 + c] = P[2 * i + c] + T[c] / b->d;
             if (i > 0) q[6 * i - 2 + c] = P[2 * i + c] - T[c] / b->d;
+            else if (closed) q[2 * (nq - 2) + c] = P[c] - T[c] / b->d;
         }
     }
-    return el__all_finite(q, 6 * npts - 4) ? EL_EDOM : EL_OK;   /* T/d beyond range: tiny d */
+    if (closed) { q[2 * (nq - 1)] = P[0]; q[2 * (nq - 1) + 1] = P[1]; }
+    return el__all_finite(q, 2 * nq) ? EL_EDOM : EL_OK;   /* T/d beyond range: tiny d */
+}
+
+int el_blend_composite_through(const el_blend_basis *b, size_t npts, const double *pts,
+                               double *q)
+{
+    if (!el__blend_basis_ok(b) || npts < 2 || !pts || !q || el__too_many(npts, 6, sizeof(double)) ||
+        el__all_finite(pts, 2 * npts))
+        return EL_EINVAL;
+    return composite_through(b, npts, pts, 0, q);
+}
+
+int el_blend_composite_closed(const el_blend_basis *b, size_t npts, const double *pts, double *q)
+{
+    if (!el__blend_basis_ok(b) || npts < 3 || !pts || !q || el__too_many(npts + 1, 6, sizeof(double)) ||
+        el__all_finite(pts, 2 * npts))
+        return EL_EINVAL;
+    return composite_through(b, npts, pts, 1, q);
 }

@@ -29,7 +29,8 @@ import numpy as np
 from ._ffi import (DomainError, SingularError, as_points, as_positive, as_real, as_vector,
                    bspline_from_c, check, dptr, ffi, lib, require)
 
-__all__ = ["EllipticBlend", "MQBlend", "BlendCurve", "blend_curve", "eck_d", "eck_omega"]
+__all__ = ["EllipticBlend", "MQBlend", "BlendCurve", "blend_curve", "eck_d", "eck_omega",
+           "above_one"]
 
 _PICK = {"control": lib.EL_BLEND_PICK_CONTROL, "interpolate": lib.EL_BLEND_PICK_INTERPOLATE}
 
@@ -100,8 +101,9 @@ class _Blend:
         if self.convex_hull:
             return []
         return [f"the basis is negative (down to {self.basis_min:.3g}): the curve can leave "
-                f"the convex hull of its control points, moving up to {self.lebesgue:.3g} "
-                f"times as far as a control point moves (condition {self.condition:.3g})"]
+                f"the convex hull of its control points, moving up to "
+                f"{above_one(self.lebesgue)} times as far as a control point moves "
+                f"(condition {self.condition:.3g})"]
 
     def span(self, t=None, derivative: int = 0) -> np.ndarray:
         """The span functions ``f_j(t)`` (or their 1st/2nd t-derivative), shape (n, 4)."""
@@ -162,6 +164,7 @@ class _Blend:
             if same:
                 raise SingularError(st, f"from_points: points {same[0] + 1} and {same[0] + 2} "
                                         "coincide")
+        _overflow(st, "from_points", pts)
         check(st, "from_points")
         return q
 
@@ -186,15 +189,30 @@ class _Blend:
                                           dptr(dxy) if derivative else ffi.NULL), "evaluate")
         return (xy, dxy) if derivative else xy
 
-    def composite_through(self, points) -> np.ndarray:
+    def composite_through(self, points, closed: bool = False) -> np.ndarray:
         """Control points (3(n-1)+1, 2) of the C1 composite curve through n >= 2 points
-        (node i at t = i, Catmull-Rom tangents, one-sided quadratic ones at the ends)."""
+        (node i at t = i, Catmull-Rom tangents, one-sided quadratic ones at the ends).
+
+        ``closed=True``: the closed curve through n >= 3 distinct points (a last point
+        equal to the first is dropped), one more segment back to the first point and
+        the tangents taken cyclically, so the seam is C1 like the other joints:
+        3n + 1 control points, the last equal to the first."""
         pts = as_points(points, "points")
-        if len(pts) < 2:
-            raise ValueError("composite_through needs at least 2 points")
-        q = np.empty((3 * (len(pts) - 1) + 1, 2))
-        check(lib.el_blend_composite_through(self._b, len(pts), dptr(pts), dptr(q)),
-              "composite_through")
+        if closed:
+            if len(pts) >= 2 and np.array_equal(pts[0], pts[-1]):
+                pts = np.ascontiguousarray(pts[:-1])
+            if len(pts) < 3:
+                raise ValueError(f"composite_through: a closed curve needs at least 3 distinct "
+                                 f"points (got {len(pts)})")
+            q = np.empty((3 * len(pts) + 1, 2))
+            st = lib.el_blend_composite_closed(self._b, len(pts), dptr(pts), dptr(q))
+        else:
+            if len(pts) < 2:
+                raise ValueError("composite_through needs at least 2 points")
+            q = np.empty((3 * (len(pts) - 1) + 1, 2))
+            st = lib.el_blend_composite_through(self._b, len(pts), dptr(pts), dptr(q))
+        _overflow(st, "composite_through", pts)
+        check(st, "composite_through")
         return q
 
     def to_bspline(self, q, tol: float = 1e-6):
@@ -295,6 +313,23 @@ def _nonzero(c, name: str) -> float:
     return c
 
 
+def above_one(x: float) -> str:
+    """x (>= 1) with the digits that show how far above 1 it is (1.002, not 1)."""
+    for p in range(3, 18):
+        txt = f"{x:.{p}g}"
+        if x <= 1.0 or float(txt) > 1.0:
+            return txt
+    return repr(x)
+
+
+def _overflow(st: int, name: str, pts: np.ndarray) -> None:
+    """EL_EDOM from points with coordinates near double's limit: say it is an overflow."""
+    if st == lib.EL_EDOM:
+        raise DomainError(st, f"{name}: overflow: the points' coordinates (up to "
+                              f"{np.abs(pts).max():.3g}) put their distances or the control "
+                              "points beyond double's range (1.8e308): scale them down")
+
+
 def eck_d(c: float) -> float:
     """Eck's end-derivative ``d = 1/alpha(c)`` (2.5)."""
     out = ffi.new("double *")
@@ -317,6 +352,7 @@ class BlendCurve:
     """A (composite) blending-function curve: a basis and 3*nseg + 1 control points."""
     basis: _Blend
     q: np.ndarray
+    closed: bool = False     # made closed: the seam at q[0] is a C1 joint
 
     def __post_init__(self):
         if not isinstance(self.basis, _Blend):
@@ -328,6 +364,25 @@ class BlendCurve:
     def nseg(self) -> int:
         return (len(self.q) - 1) // 3
 
+    def seam_angle(self) -> float:
+        """Where the curve ends at its start (q[-1] = q[0]): the angle (degrees) between
+        its tangents there, 0 for a smooth seam; NaN when it does not close."""
+        if not np.array_equal(self.q[0], self.q[-1]):
+            return float("nan")
+        _, d = self.basis.evaluate_composite(self.q, [0.0, float(self.nseg)], derivative=True)
+        return float(np.degrees(abs(np.arctan2(d[1, 0] * d[0, 1] - d[1, 1] * d[0, 0],
+                                               d[1, 0] * d[0, 0] + d[1, 1] * d[0, 1]))))
+
+    def warnings(self) -> list:
+        """The basis' warnings, and a corner where the curve closes on itself."""
+        out = list(self.basis.warnings())
+        angle = self.seam_angle()
+        if angle > 1e-6:
+            out.append(f"the curve closes on itself with a {angle:.3g} deg corner at its first "
+                       "point (its ends are not a joint); closed=True (CLI: --closed) makes "
+                       "that joint smooth like the others")
+        return out
+
     def points(self, t=None) -> np.ndarray:
         """Points (n, 2) at global parameters t in [0, nseg] (default 101 per segment)."""
         return self.basis.evaluate_composite(self.q, t)
@@ -338,7 +393,7 @@ class BlendCurve:
 
 
 def blend_curve(points, k: Optional[float] = None, d: float = 2.0, mode: str = "interpolate",
-                *, m: Optional[float] = None) -> BlendCurve:
+                *, m: Optional[float] = None, closed: bool = False) -> BlendCurve:
     """An elliptic blending curve from picked points (the CLI / FreeCAD entry point).
 
     Four points: ``mode="interpolate"`` (default) gives the segment through them at
@@ -346,6 +401,10 @@ def blend_curve(points, k: Optional[float] = None, d: float = 2.0, mode: str = "
     than four points with ``mode="interpolate"``: the C1 composite through them
     (:meth:`EllipticBlend.composite_through`); with ``mode="control"`` they must be
     3*nseg + 1 control points. ``k`` is the modulus (default 0.5) or ``m = k^2``.
+    ``closed=True`` (interpolate): the closed C1 composite through the points (>= 3
+    distinct; a repeated first point at the end is dropped), smooth at the seam too.
+    Without it, points that end where they start close with a corner, which
+    :meth:`BlendCurve.warnings` names.
     """
     if k is None and m is None:
         k = 0.5
@@ -353,6 +412,11 @@ def blend_curve(points, k: Optional[float] = None, d: float = 2.0, mode: str = "
     pts = as_points(points, "points")
     if not isinstance(mode, str) or mode not in _PICK:
         raise ValueError(f"mode must be one of {sorted(_PICK)}, got {mode!r}")
+    if closed:
+        if mode != "interpolate":
+            raise ValueError("blend_curve: closed=True passes through the points (mode "
+                             "'interpolate'); control points shape their seam themselves")
+        return BlendCurve(basis, basis.composite_through(pts, closed=True), closed=True)
     if len(pts) == 4:
         return BlendCurve(basis, basis.from_points(pts, mode))
     if mode == "interpolate":

@@ -351,14 +351,14 @@ def cmd_blend(args) -> int:
     v = [_finite(x, "blend coordinates") for x in args.values]
     pts = np.array(v, dtype=np.float64).reshape(4, 2)
     kw = {"m": args.m} if args.m is not None else {"k": args.k if args.k is not None else 0.5}
-    curve = el.blend_curve(pts, d=args.d, mode=args.mode, **kw)
+    curve = el.blend_curve(pts, d=args.d, mode=args.mode, closed=args.closed, **kw)
     xy = curve.points(np.linspace(0.0, curve.nseg, 401))
     s, kappa = polygon_curvature(xy)
     rec = {"k": curve.basis.k, "m": curve.basis.m, "d": curve.basis.d, "mode": args.mode,
            "points": pts, "control_points": curve.q, "basis_min": curve.basis.basis_min,
            "convex_hull": curve.basis.convex_hull, "lebesgue": curve.basis.lebesgue,
-           "condition": curve.basis.condition}
-    for w in curve.basis.warnings():
+           "condition": curve.basis.condition, "closed": curve.closed}
+    for w in curve.warnings():
         print(f"{PROG} blend: warning: {w}", file=sys.stderr)
     b = None
     if args.tol is not None or args.dxf:
@@ -385,7 +385,8 @@ def cmd_blend(args) -> int:
                                        marker="o", line=True, size=4.0))
             save_picture(pic, args.outputs.path(spec))
     if args.dxf:
-        write_dxf_spline(b, args.outputs.path(args.dxf), points=pts, units=args.units)
+        write_dxf_spline(b, args.outputs.path(args.dxf), points=pts, units=args.units,
+                         closed=curve.closed)
     return EXIT_OK
 
 
@@ -723,6 +724,8 @@ def build_parser() -> argparse.ArgumentParser:
     e.add_argument("--d", type=POSITIVE, default=2.0, help="end-derivative parameter > 0 (default 2)")
     e.add_argument("--mode", choices=("interpolate", "control"), default="interpolate",
                    help="pass through the points (default) or use them as control points")
+    e.add_argument("--closed", action="store_true", help="a closed curve through the points, "
+                   "smooth where it closes (a repeated first point is dropped): 3 or 4 segments")
     e.add_argument("--tol", type=POSITIVE, metavar="TOL", help="add the cubic B-spline within TOL")
     e.add_argument("--json", metavar="PATH", help="write the result as JSON ('-' = stdout)")
     e.add_argument("--svg", metavar="PATH", help="picture (SVG)")

@@ -347,6 +347,41 @@ START_TEST(composite_is_c1_through_the_points)
 }
 END_TEST
 
+/* Closed: the seam at P_0 is a joint like the others, C1 in the global parameter
+ * (the open composite through the same points with P_0 repeated has a corner there:
+ * 53.1 deg on a square). */
+START_TEST(closed_composite_is_c1_at_the_seam)
+{
+    el_blend_basis b;
+    ck_assert_int_eq(el_blend_init_elliptic(&b, sqrt(0.3), 2.0), EL_OK);
+    enum { NP = 4 };
+    const double pts[2 * NP + 2] = {0, 0, 1, 0, 1, 1, 0, 1, 0, 0};
+    double q[6 * NP + 2], qo[6 * (NP + 1) - 4];
+    ck_assert_int_eq(el_blend_composite_closed(&b, NP, pts, q), EL_OK);
+    ck_assert_int_eq(el_blend_composite_closed(&b, 2, pts, q), EL_EINVAL);
+    ck_assert_int_eq(el_blend_composite_closed(&b, NP, pts, q), EL_OK);
+    const double e = 1e-9, ends[2] = {0.0, NP};
+    double xy[4], dxy[4];
+    ck_assert_int_eq(el_blend_composite_eval(&b, NP, q, 2, ends, xy, dxy), EL_OK);
+    for (int c = 0; c < 2; c++) {
+        ck_assert_close(xy[c], xy[2 + c], 0.0);      /* closed: ends at P_0 */
+        ck_assert_close(dxy[c], dxy[2 + c], 1e-13);  /* C1 at the seam */
+    }
+    for (int i = 1; i < NP; i++) {
+        double t[3] = {i - e, (double)i, i + e}, p3[6], d3[6];
+        ck_assert_int_eq(el_blend_composite_eval(&b, NP, q, 3, t, p3, d3), EL_OK);
+        ck_assert_close(p3[2], pts[2 * i], 1e-13);
+        ck_assert_close(p3[3], pts[2 * i + 1], 1e-13);
+        for (int c = 0; c < 2; c++) ck_assert_close(d3[c], d3[4 + c], 1e-7);
+    }
+    /* the open one through P_0..P_3, P_0 has the corner */
+    ck_assert_int_eq(el_blend_composite_through(&b, NP + 1, pts, qo), EL_OK);
+    ck_assert_int_eq(el_blend_composite_eval(&b, NP, qo, 2, ends, xy, dxy), EL_OK);
+    const double turn = atan2(dxy[0] * dxy[3] - dxy[1] * dxy[2], dxy[0] * dxy[2] + dxy[1] * dxy[3]);
+    ck_assert_close(fabs(turn) * 180.0 / M_PI, 53.13, 0.01);
+}
+END_TEST
+
 /* Independent clamped B-spline evaluation (de Boor's algorithm on the flat knots). */
 static void deboor(const el_bspline *s, const double *u, double x, double out[2])
 {
@@ -466,6 +501,7 @@ static Suite *suite(void)
     tcase_add_test(tc, bad_input);
     tcase_add_test(tc, from_points_interpolates_at_chord_parameters);
     tcase_add_test(tc, composite_is_c1_through_the_points);
+    tcase_add_test(tc, closed_composite_is_c1_at_the_seam);
     tcase_add_test(tc, to_bspline_within_tolerance);
     tcase_add_test(tc, composite_to_bspline_and_noconv);
     suite_add_tcase(s, tc);

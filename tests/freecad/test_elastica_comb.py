@@ -38,6 +38,19 @@ class CombLinkTest(unittest.TestCase):
         self.assertEqual(len(now), len(points))
         self.assertLess(max((a - b).Length for a, b in zip(now, points)), 1e-9)
 
+    def test_a_negative_scale_is_refused(self):
+        """QA11: Scale = -500 was taken as automatic (status ok), silently."""
+        comb = self._comb(self.sk, ["Edge2"])
+        teeth = [v.Point for v in comb.Shape.Vertexes]
+        comb.Scale = -500.0
+        self.doc.recompute()
+        self.assertTrue(comb.Status.startswith("error: Scale = -500") and ">= 0" in comb.Status,
+                        comb.Status)
+        self.assertEqual(len(comb.Shape.Vertexes), len(teeth))    # the last comb kept
+        comb.Scale = 200.0
+        self.doc.recompute()
+        self._same_teeth(comb, teeth)
+
     def test_two_edges_follow_their_geometry(self):
         comb = self._comb(self.sk, ["Edge3", "Edge4"])
         points = [v.Point for v in comb.Shape.Vertexes]

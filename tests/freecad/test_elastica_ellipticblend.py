@@ -327,6 +327,25 @@ class EllipticBlendTest(unittest.TestCase):
             self.doc.recompute()
             self.assertEqual(len(w.said), 2)
 
+    def test_basis_dip_next_to_the_end_is_warned(self):
+        """QA11: at m = 0.99 (d = 2) the basis dips to -1.05e-6 within 0.008 of t = 1;
+        the feature said ConvexHull with BasisMin 0 and no warning."""
+        self.sk = S.points_sketch(self.doc, HIGH_Q1, "HighQ1")
+        f = El.make(self.doc, [(self.sk, [])], Mode="control", K=0.99, KConvention="parameter")
+        self.doc.recompute()
+        self.assertFalse(f.ConvexHull)
+        self.assertAlmostEqual(f.BasisMin, -1.054e-6, delta=1e-9)
+        self.assertEqual(len(f.Warnings), 1)
+        self.assertIn("moving up to 1.000002 times", f.Warnings[0])
+
+    def test_first_and_last_point_coinciding_is_explained(self):
+        loop = S.points_sketch(self.doc, XY[:3] + [XY[0]], "Loop")
+        del C.MESSAGES[:]
+        self.assertIsNone(C.ellblend_sources([(loop, [])], open_panel=False))
+        self.assertIn("points 1 and 4 coincide: one segment cannot close on itself smoothly",
+                      C.MESSAGES[-1])
+        self.assertIn("closed=True", C.MESSAGES[-1])
+
     def test_ill_conditioned_interpolation_is_warned(self):
         zig = S.points_sketch(self.doc, ZIGZAG, "Zigzag")
         f = El.make(self.doc, [(zig, [])], K=0.3)

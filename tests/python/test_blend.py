@@ -205,3 +205,53 @@ def test_pickle_and_copy_keep_the_basis():
             assert np.array_equal(twin.points(), curve.points())
     c = el.blend_curve(q[:4], m=0.3)
     assert np.array_equal(pickle.loads(pickle.dumps(c)).points(), c.points())
+
+
+@pytest.mark.parametrize("m,want", [(0.99, -1.054e-6), (0.995, -1.428e-7), (0.999, -1.375e-9)])
+def test_convex_hull_flag_sees_the_dips_next_to_the_ends(m, want):
+    # QA11: 64 samples missed these dips (within 0.008 of t = 1) and said convex_hull
+    b = el.EllipticBlend(m=m, d=2.0)
+    t = np.concatenate([np.linspace(0, 1, 20001), 1 - np.geomspace(1e-6, 1e-2, 20001)])
+    h = b.basis(t)
+    assert not b.convex_hull and b.basis_min <= h.min() + 1e-15
+    assert b.basis_min == pytest.approx(want, rel=1e-3)
+    # the warning shows the factor above 1 (1 - 2 basis_min at least), not '1'
+    w = b.warnings()[0]
+    factor = float(w.split("moving up to ")[1].split(" times")[0])
+    assert factor > 1.0 and b.lebesgue >= 1 - 2 * b.basis_min - 1e-15
+
+
+def test_warning_digits_show_the_factor_above_one():
+    assert el.blend.above_one(1.002) == "1.002" and el.blend.above_one(1.0000021) == "1.000002"
+    assert el.blend.above_one(4.2738) == "4.27" and el.blend.above_one(1.0) == "1"
+    assert "up to 1.002 times" in el.EllipticBlend(m=0.9).warnings()[0]
+
+
+@pytest.mark.parametrize("n", [4, 8])
+def test_closed_sequences_close_smoothly_or_say_the_corner(n):
+    th = np.linspace(0, 2 * np.pi, n + 1)
+    pts = np.c_[np.cos(th), np.sin(th)] if n == 8 else np.array(
+        [[0, 0], [1, 0], [1, 1], [0, 1], [0, 0]], float)
+    pts[-1] = pts[0]
+    open_ = el.blend_curve(pts, m=0.3)
+    corner = {4: 53.13, 8: 10.72}[n]
+    assert open_.seam_angle() == pytest.approx(corner, abs=0.01)
+    assert any(f"{corner:.3g} deg corner" in w and "closed=True" in w for w in open_.warnings())
+    for given in (pts, pts[:-1]):     # with or without the repeated first point
+        c = el.blend_curve(given, m=0.3, closed=True)
+        assert c.closed and c.nseg == n and c.warnings() == []
+        assert c.seam_angle() < 1e-9
+        xy, d = c.basis.evaluate_composite(c.q, np.arange(n + 1.0), derivative=True)
+        np.testing.assert_allclose(xy, np.vstack([pts[:-1], pts[:1]]), atol=1e-13)
+        np.testing.assert_allclose(d[-1], d[0], atol=1e-12)     # C1 at the seam
+    with pytest.raises(ValueError, match="at least 3 distinct"):
+        el.blend_curve([[0, 0], [1, 0], [0, 0]], m=0.3, closed=True)
+    with pytest.raises(ValueError, match="interpolate"):
+        el.blend_curve(pts[:4], m=0.3, mode="control", closed=True)
+
+
+def test_overflow_is_named():
+    with pytest.raises(el.DomainError, match="overflow"):
+        el.blend_curve([[0, 0], [1e308, 1], [-1e308, 1], [3, 0]], m=0.3)
+    with pytest.raises(el.DomainError, match="overflow"):
+        el.EllipticBlend(m=0.3).composite_through([[0, 0], [1e308, 1], [-1e308, 1], [3, 0], [4, 4]])

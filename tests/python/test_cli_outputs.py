@@ -234,3 +234,15 @@ def test_option_out_of_range_is_named(work, capsys, args, said):
     code, _, err = cli(capsys, *args)
     assert code == 2 and said in err and "NULL" not in err, err
     assert len(err.strip().splitlines()) == 1
+
+
+def test_blend_closed_and_the_corner_said(work, capsys):
+    square = ["0", "0", "1", "0", "1", "1", "0", "0"]
+    code, out, err = cli(capsys, "blend", *square, "--m", "0.3", "--json", "-")
+    assert code == 0 and "56.6 deg corner" in err and "--closed" in err
+    code, out, err = cli(capsys, "blend", *square, "--m", "0.3", "--closed", "--json", "-")
+    rec = json.loads(out)
+    assert code == 0 and "warning" not in err and rec["closed"] is True
+    assert len(rec["control_points"]) == 10 and rec["control_points"][0] == rec["control_points"][-1]
+    code, _, err = cli(capsys, "blend", "0", "0", "1e308", "1", "-1e308", "1", "3", "0")
+    assert code != 0 and "overflow" in err and "singular" not in err

@@ -57,6 +57,10 @@ def comb_core(source, subs=(), samples=60, scale=0.0, element=global_element):
         raise InputProblem(f"Samples = {samples} is not usable: 2 to 5000 teeth per curve")
     if not math.isfinite(scale):
         raise InputProblem(f"Scale = {scale}: must be a finite number (0 = automatic)")
+    if scale < 0.0:
+        raise InputProblem(f"Scale = {scale:g}: the tooth length per unit curvature must be "
+                           ">= 0 (0 = automatic); the teeth already point to the side the "
+                           "curve turns away from")
     shape = global_shape(source)              # where it is drawn (a sketch in a Body: placed)
     if shape.isNull():
         raise InputProblem("the comb's source has no geometry")

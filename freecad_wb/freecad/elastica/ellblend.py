@@ -75,7 +75,11 @@ def ellblend_core(points, plane=None, mode="interpolate", k=0.5, d=2.0, tol=1e-3
     for i in range(4):
         for j in range(i + 1, 4):
             if (points[i] - points[j]).Length <= 1e-9 * (1.0 + extent):
-                raise InputProblem(f"points {i + 1} and {j + 1} coincide")
+                closing = (i, j) == (0, 3)
+                raise InputProblem(f"points {i + 1} and {j + 1} coincide" + (
+                    ": one segment cannot close on itself smoothly (its ends would meet "
+                    "at a corner); a closed curve: Python's blend_curve(points, "
+                    "closed=True) or `elastica blend --closed`" if closing else ""))
     name = "k" if convention == "modulus" else "m"
     if not (math.isfinite(k) and (0.0 <= k < 1.0)):
         raise InputProblem(f"{name} = {k:g}: the elliptic basis needs 0 <= {name} < 1")
@@ -96,7 +100,7 @@ def ellblend_core(points, plane=None, mode="interpolate", k=0.5, d=2.0, tol=1e-3
     spread, bad_fit = interpolation_warnings(xy, curve, mode)
     return {"curve": curve, "bspline": bs, "placement": plane,
             "control": to_3d(plane, curve.q), "spread": spread,
-            "warnings": list(curve.basis.warnings()) + bad_fit}
+            "warnings": list(curve.warnings()) + bad_fit}
 
 
 class EllipticBlendProxy(FeatureProxy):
