@@ -81,13 +81,14 @@ class _Blend:
     @property
     def basis_min(self) -> float:
         """The smallest value of any blending function on [0, 1] (<= 0; negative: the
-        curve can leave the convex hull of its control points)."""
+        curve can leave the convex hull of its control points), exact to rounding: it
+        finds the dips next to an end that samples miss (-1.05e-6 at m = 0.99, d = 2)."""
         return float(self._b.basis_min)
 
     @property
     def convex_hull(self) -> bool:
-        """Whether every blending function is >= 0 on [0, 1], so that each segment stays
-        inside the convex hull of its control points."""
+        """Whether every blending function is >= 0 on [0, 1] (basis_min >= -1e-12, rounding),
+        so that each segment stays inside the convex hull of its control points."""
         return bool(self._b.convex_hull)
 
     @property
