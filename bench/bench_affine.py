@@ -48,6 +48,16 @@ def main():
                                                                           fit_ends=True))
     pts = el.affine_polyline(loop, 60).points
     timing("quadratic_bspline_n60", lambda: el.quadratic_bspline(pts), repeat=100)
+    # g2_quadratic at many edges: its deviation's nearest-point search (report.closest_points,
+    # branch and bound; 34 s at n = 1000 when every segment was tried for every point)
+    s_curve = el.SmoothElastica(x0=0, y0=0, phi=0, mu=1.0, k=0.8, q=-0.6, length=4.0)
+    for n, repeat in ((1000, 3), (5000, 1)):
+        ts = []
+        for _ in range(repeat):
+            t0 = time.perf_counter()
+            el.g2_quadratic(s_curve, n)
+            ts.append(time.perf_counter() - t0)
+        print(json.dumps({"bench": "g2_quadratic", "n": n, "median_ms": round(1e3 * float(np.median(ts)), 3)}))
 
 
 if __name__ == "__main__":

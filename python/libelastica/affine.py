@@ -13,6 +13,7 @@ piece, ending exactly on the curve's ends and inflections.
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass
 from typing import Optional, Sequence, Tuple
 
@@ -26,7 +27,7 @@ __all__ = ["affine_coords", "affine_length", "affine_curvature", "osculating_con
            "uniform_bspline", "quadratic_bspline", "parabolic_lengths", "AffinePolyline",
            "affine_polyline", "affine_curvature_exact", "elastica_affine_curvature",
            "elastica_inflections", "g2_bspline", "quadratic_joint_curvatures", "G2Quadratic",
-           "g2_quadratic"]
+           "CoverageWarning", "g2_quadratic"]
 
 _KINDS = {"outer": 0, "inner": 1, "middle": 2}
 
@@ -477,7 +478,15 @@ class G2Quadratic:
     start / stop at that inflection (§4.4); ends_covered: (start, end), which of the two
     ends is kept (covers_source: both); fit: with ``fit=True`` the FitResult of the
     smooth elastica fitted to the points (the source then; its rms / max_error are the
-    points' distances to it), else None."""
+    points' distances to it), else None.
+    join_angle / join_curvature_jump: where two pieces meet (at the source's inflections;
+    the pieces are G2 inside, not there) the largest angle (radians) between their tangents
+    and the largest jump of their signed curvature (1/length); 0 with one piece.
+    end_curvature_error: at the source's own ends that the splines reach, the largest
+    relative curvature error |k - k_src| / max(|k|, |k_src|) (curvature_jump's measure;
+    k_src of point data from a cubic fitted to the end's samples); None when neither end is
+    reached. It does not fall with n (~0.29 on an arc): see g2_quadratic.
+    dropped: the source's arc length left out at (start, end) (0, 0 when covers_source)."""
     bsplines: list
     polyline: AffinePolyline
     ends: np.ndarray
@@ -487,6 +496,21 @@ class G2Quadratic:
     covers_source: bool
     fit: Optional[object] = None
     ends_covered: Tuple[bool, bool] = (True, True)
+    join_angle: float = 0.0
+    join_curvature_jump: float = 0.0
+    end_curvature_error: Optional[float] = None
+    dropped: Tuple[float, float] = (0.0, 0.0)
+
+    def g2_summary(self) -> str:
+        """Which joints are G2, in words (the CLI's and FreeCAD's line): the joints inside
+        a piece by curvature_jump; where pieces meet (inflections) by their angle and jump."""
+        inside = f"largest relative curvature jump at a joint inside a piece: " \
+                 f"{self.curvature_jump:.2g} (G2 inside each piece)"
+        if len(self.bsplines) < 2:
+            return inside
+        return (f"{inside}; where the {len(self.bsplines)} pieces meet (inflections): tangents "
+                f"{math.degrees(self.join_angle):.3g} deg apart, curvature jump "
+                f"{self.join_curvature_jump:.3g} (not G2 there)")
 
     @property
     def npoles(self) -> int:
@@ -541,6 +565,52 @@ def _noisy_points_error(exc: DomainError, points: np.ndarray) -> DomainError:
                        "g2quad fit.json`)")
 
 
+class CoverageWarning(RuntimeWarning):
+    """:func:`g2_quadratic`'s warning that its splines leave part of the source out (an end
+    piece next to an inflection too short for 3 edges: ``G2Quadratic.dropped``)."""
+
+
+def _end_curvature(samples: np.ndarray, reverse: bool, tangents=None) -> Optional[float]:
+    """Signed curvature at the first (reverse: the last) of dense samples of a curve, in
+    the direction of travel, from the 8 samples at that end (chord length s): with their
+    tangents, theta'(0) of a cubic theta(s) by least squares (first differences: the
+    samples' rounding counts ~1/s less); without, det(x', x'') / |x'|^3 of x(s), y(s)
+    cubics. None for fewer than 5 samples."""
+    q = samples[::-1] if reverse else samples
+    q = q[:8] - q[0]
+    if len(q) < 5:
+        return None
+    s = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(q, axis=0), axis=1))])
+    if not s[-1] > 0:
+        return None
+    V = np.vander(s / s[-1], 4, increasing=True)
+    if tangents is not None:
+        t = (tangents[::-1] if reverse else tangents)[:8]
+        theta = np.unwrap(np.arctan2(t[:, 1], t[:, 0]))
+        k = np.linalg.lstsq(V, theta - theta[0], rcond=None)[0][1] / s[-1]
+    else:
+        c = np.linalg.lstsq(V, q, rcond=None)[0]
+        d1, d2 = c[1] / s[-1], 2.0 * c[2] / s[-1] ** 2
+        k = (d1[0] * d2[1] - d1[1] * d2[0]) / np.hypot(*d1) ** 3
+    return float(-k if reverse else k)      # (backwards from the end: the sign turns)
+
+
+def _rel_err(a: float, b: float) -> float:
+    m = max(abs(a), abs(b))
+    return abs(a - b) / m if m > 0 else 0.0
+
+
+def _joins(splines) -> Tuple[float, float]:
+    """Largest tangent angle (radians) and signed-curvature jump where consecutive
+    pieces meet."""
+    angle = jump = 0.0
+    for a, b in zip(splines, splines[1:]):
+        ta, tb = a.derivative(a.knots[-1:])[0], b.derivative(b.knots[:1])[0]
+        angle = max(angle, abs(math.atan2(ta[0] * tb[1] - ta[1] * tb[0], ta @ tb)))
+        jump = max(jump, abs(float(a.curvature(a.knots[-1:])[0] - b.curvature(b.knots[:1])[0])))
+    return angle, jump
+
+
 def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents=None,
                  fit: bool = False, **options) -> G2Quadratic:
     """Seed 002 end to end: approximate a SmoothElastica or a sampled curve (N+1, 2)
@@ -556,7 +626,13 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
     (:func:`fit`, point-to-curve distance) and builds from that curve (``fit`` of the
     result: the points' distances to it; ``deviation``: the splines' from it).
     Raises ValueError / DomainError (straight source, n too small, noisy points: the
-    message counts the sign changes of their discrete curvature, ...)."""
+    message counts the sign changes of their discrete curvature, ...); warns
+    (:class:`CoverageWarning`) when part of the source is left out, saying how much.
+    The end curvature does not converge (end_curvature_error ~0.29 at every n on an
+    arc): the polyline's vertices lie on the source, so its uniform spline runs inside it
+    by ~kappa h^2 / 8 (edge h), and the end parabola that bridges from the exact end point
+    to the joint m_2 over ~1.5 h bends differently: on a circle its legs are 0.793 h and
+    h / sqrt 2, so k_end / k = (0.707 / 0.793)^3 = 0.709 (the tangent error is O(h))."""
     is_curve = hasattr(curve_or_points, "curvature") and hasattr(curve_or_points, "length")
     if fit:
         if is_curve or tangents is not None:
@@ -588,6 +664,9 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
         samples = c.points(np.linspace(0.0, c.length, total + 1))
         t_ends = s_ends / c.length * total
         covers = first == 0, first + npieces == len(bounds) - 1
+        k_src = [float(k) for k in c.curvature(np.array([0.0, c.length]))]
+        dropped = float(s_ends[0]), float(c.length - s_ends[-1])
+        length = float(c.length)
     else:
         samples = as_points(curve_or_points, "points")
         t_ends = np.concatenate([[ap.t[0]], ap.infl_param, [round(float(ap.t[-1]))]])
@@ -598,11 +677,17 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
             tan = as_points(tangents, "tangents")
             ends_dir = tan[idx] / np.linalg.norm(tan[idx], axis=1)[:, None]
         covers = idx[0] == 0, idx[-1] == len(samples) - 1
+        tan = None if tangents is None else as_points(tangents, "tangents")
+        k_src = [_end_curvature(samples, False, tan), _end_curvature(samples, True, tan)]
+        seg = np.linalg.norm(np.diff(samples, axis=0), axis=1)
+        dropped = float(seg[:idx[0]].sum()), float(seg[idx[-1]:].sum())
+        length = float(seg.sum())
     splines, jump, dev, terr = [], 0.0, 0.0, 0.0
     for p in range(npieces):
         a, b = ap.piece_start[p], ap.piece_start[p + 1]
+        x = ap.points[a:b + 1]
         try:
-            bs = g2_bspline(ap.points[a:b + 1], ends[p], ends[p + 1])
+            bs = g2_bspline(x, ends[p], ends[p + 1])
         except DomainError as exc:       # an end beside its joint's tangent: noisy points
             if is_curve:
                 raise
@@ -617,6 +702,20 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                 terr = max(terr, abs(math.atan2(vec[0] * ref[1] - vec[1] * ref[0],
                                                 vec[0] * ref[0] + vec[1] * ref[1])))
         splines.append(bs)
+    kerr = [_rel_err(float(b.curvature(b.knots[[j]])[0]), k) for b, j, k, kept in
+            ((splines[0], 0, k_src[0], covers[0]), (splines[-1], -1, k_src[1], covers[1]))
+            if kept and k is not None]
+    if not all(covers):
+        gone = " and ".join(f"{d:.4g} at its {w}" for d, w in zip(dropped, ("start", "end"))
+                            if d > 0)
+        warnings.warn(f"g2_quadratic: the splines leave out {gone} of the source (length "
+                      f"{length:.4g}): an end piece beyond an inflection is too short for 3 of "
+                      f"the {n} edges, so they stop at the inflection; more edges cover it",
+                      CoverageWarning,
+                      stacklevel=2)
+    angle, kjump = _joins(splines)
     return G2Quadratic(splines, ap, np.asarray(ends), dev, jump,
                        terr if ends_dir is not None else None, bool(all(covers)),
-                       ends_covered=(bool(covers[0]), bool(covers[1])))
+                       ends_covered=(bool(covers[0]), bool(covers[1])), join_angle=angle,
+                       join_curvature_jump=kjump,
+                       end_curvature_error=max(kerr) if kerr else None, dropped=dropped)

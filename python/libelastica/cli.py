@@ -18,8 +18,9 @@ import numpy as np
 
 from ._ffi import NotConvergedError
 from .cli_common import (EXIT_BADINPUT, EXIT_INTERNAL, EXIT_NOCONV, EXIT_OK, PROG, _finite,
-                         _input_map, _mapped_bspline, _plane_record, _table)
+                         _input_map, _mapped_bspline, _table)
 from .cli_fit import cmd_fit
+from .cli_g2quad import cmd_g2quad
 from .cli_outputs import Outputs, check_outputs
 from .io import (DXF_UNITS, InputError, curve_from_dict, curve_to_dict, read_json,
                  read_points, write_dxf_spline, write_json)
@@ -458,106 +459,6 @@ def cmd_spline(args) -> int:
                                          f"max curvature {sp.max_curvature:.6g}",
                                          f"residual {sp.residual:.2g}"])
             save_picture(pic, args.outputs.path(spec))
-    return EXIT_OK
-
-
-# ------------------------------------------------------------------ g2quad
-
-def cmd_g2quad(args) -> int:
-    """Seed 002: a curve (points, or a smooth elastica from 'fit --json') -> one G2
-    quadratic B-spline per inflection-free piece, ending exactly on the curve."""
-    import libelastica as el
-    from .bspline import BSpline
-    from .core import SmoothElastica
-    from .report import Layer, curves_picture, save_picture
-    source, frame, plane = args.file, None, None
-    if args.edges is not None and args.edges < 3:
-        raise InputError(f"--edges must be at least 3, got {args.edges}")
-    if args.file.lower().endswith(".json"):
-        doc = read_json(args.file)
-        items = doc.get("sides") if isinstance(doc, dict) and "sides" in doc else [doc]
-        if len(items) != 1:
-            raise InputError(f"{args.file}: {len(items)} curves; give one (e.g. one side's JSON)")
-        curve = curve_from_dict(items[0], name=args.file)
-        src = curve if isinstance(curve, SmoothElastica) else curve.points()
-        if args.fit and src is curve:
-            raise InputError(f"--fit: {args.file} is a fitted smooth elastica already")
-        curve_source = src is curve
-        data = curve.points(np.linspace(0.0, curve.length, 400)) if curve_source else src
-        n = args.edges or 40
-    else:
-        pts = read_points(args.file, min_points=4)
-        if pts.shape[1] == 3:
-            src, frame = el.plane_fit(pts)
-            plane = _plane_record(frame)
-        else:
-            src = pts
-        data, curve_source = src, False
-        # seed 002 §4.2: ~20 samples per vertex; a curve fitted to them (--fit) as a fit's
-        # JSON (QA: 150 points -> 7 edges, the B-spline 0.51 off a fit of rms 0.047)
-        n = args.edges or (40 if args.fit else max(6, (len(src) - 1) // 20))
-    g = el.g2_quadratic(src, n, fit=args.fit)
-    jumps = f"{g.curvature_jump:.2g}"
-    rec = {"file": str(source), "edges": int(n), "pieces": len(g.bsplines), "plane": plane,
-           "ends": g.ends, "covers_source": g.covers_source, "ends_covered": g.ends_covered,
-           "deviation": g.deviation,
-           "curvature_jump": g.curvature_jump, "end_tangent_error_rad": g.end_tangent_error,
-           "polyline": g.polyline.points, "A": g.polyline.A,
-           "bsplines": [b.to_dict() for b in g.bsplines]}
-    if g.fit is not None:      # --fit: the elastica built from, the points' distances to it
-        rec["fit"] = {"curve": curve_to_dict(g.fit.curve), "rms": g.fit.rms,
-                      "max_error": g.fit.max_error, "status": int(g.fit.status)}
-    if args.json:
-        write_json(rec, "-" if args.json == "-" else args.outputs.path(args.json))
-    if args.json != "-":
-        pieces = len(g.bsplines)
-        split = f"{pieces} pieces split at {pieces - 1} inflection(s)" if pieces > 1 else \
-            "1 inflection-free piece"
-        print(f"G2 quadratic B-spline: {split}, {n} edges, {g.npoles} poles (degree 2, "
-              "uniform inside)")
-        if g.fit is not None:
-            print(f"  source: a smooth elastica fitted to the {len(src)} points (--fit), rms "
-                  f"{g.fit.rms:.3g}, max error {g.fit.max_error:.3g} from them")
-        print(f"  starts at ({g.ends[0][0]:.6g}, {g.ends[0][1]:.6g}), ends at "
-              f"({g.ends[-1][0]:.6g}, {g.ends[-1][1]:.6g}), exactly on the source")
-        if not g.covers_source:
-            left = "its start's and its end's pieces beyond their inflections are" \
-                if not any(g.ends_covered) else \
-                f"its {'end' if g.ends_covered[0] else 'start'}'s piece beyond an inflection is"
-            # more edges give a short piece its 3; noise makes inflections of points (QA: the
-            # advice named --fit to a user who had given it, both ends of a fitted arch left out)
-            noisy = "" if g.fit is not None or curve_source else \
-                "; noisy points: --fit, or fit first (elastica fit --model smooth --json) " \
-                "and pass the JSON"
-            print(f"  warning: the source is not covered: {left} left out (too short for 3 of "
-                  f"the {n} edges): more --edges cover it{noisy}", file=sys.stderr)
-        print(f"  largest relative curvature jump at a joint: {jumps} (G2)")
-        print(f"  largest distance from the source: {g.deviation:.3g}")
-        if g.end_tangent_error is not None:
-            print(f"  end tangents off the source's by at most {np.degrees(g.end_tangent_error):.3g} deg")
-    for spec in (args.svg, args.png):
-        if spec:
-            curves = []
-            for b in g.bsplines:
-                u = np.linspace(b.knots[0], b.knots[-1], 200 * (len(b.knots) - 1) + 1)
-                xy, kappa = b(u), b.curvature(u)
-                s = np.r_[0.0, np.cumsum(np.linalg.norm(np.diff(xy, axis=0), axis=1))]
-                curves.append((xy, s + (curves[-1][1][-1] if curves else 0.0), kappa))
-            pic = curves_picture(curves, [f"G2 piece {i + 1}" for i in range(len(curves))],
-                                 title="G2 quadratic B-spline (seed 002)",
-                                 params=[f"{n} edges, {g.npoles} poles",
-                                         f"deviation {g.deviation:.3g}",
-                                         f"curvature jump {jumps}"])
-            pic.layers[:0] = [
-                Layer(data, "source", "#000000", line=True) if curve_source else
-                Layer(data[::max(1, len(data) // 100)], "source", "#000000", marker="s", size=3.0),
-                Layer(g.polyline.points, "affine arc-length polyline", "#7f7f7f", marker="o",
-                      line=True, size=3.0)]
-            save_picture(pic, args.outputs.path(spec))
-    if args.dxf:
-        splines = g.bsplines if frame is None else [
-            BSpline(b.degree, frame.to_3d(b.poles), b.knots, b.mults) for b in g.bsplines]
-        write_dxf_spline(splines, args.outputs.path(args.dxf), units=args.units)
     return EXIT_OK
 
 

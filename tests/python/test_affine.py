@@ -406,10 +406,12 @@ def test_g2_quadratic_inflection_next_to_the_end_is_reported():
     L = 3.0
     K = el.affine._ellipk(0.7)
     c = el.SmoothElastica(0, 0, 0, 1.0, 0.7, K - (L - 0.004), L)   # inflection at s = L - 0.004
-    g = el.g2_quadratic(c, 30)
+    with pytest.warns(el.CoverageWarning, match="0.004 at its end"):
+        g = el.g2_quadratic(c, 30)
     assert not g.covers_source and len(g.bsplines) == 1 and g.ends_covered == (True, False)
     assert np.allclose(_ends(g.bsplines[0])[1], c.points([L - 0.004])[0], atol=1e-12)
-    back = el.g2_quadratic(c.reversed(), 30)
+    with pytest.warns(el.CoverageWarning, match="0.004 at its start"):
+        back = el.g2_quadratic(c.reversed(), 30)
     assert not back.covers_source and back.ends_covered == (False, True)
 
 
@@ -509,7 +511,8 @@ def test_g2quad_command_writes_exact_g2_splines(tmp_path, capsys):
     out = tmp_path / "g2.json"
     code, text, err = _g2quad(capsys, src, "--edges", 30, "--json", out, "--svg", tmp_path / "g2.svg")
     assert code == 0, err
-    assert "2 pieces split at 1 inflection" in text and "(G2)" in text
+    assert "2 pieces split at 1 inflection" in text and "G2 inside each piece" in text
+    assert "not G2 there" in text
     rec = json.loads(out.read_text())
     assert rec["pieces"] == 2 and rec["covers_source"] and rec["curvature_jump"] < 1e-12
     bs = [el.BSpline.from_dict(d) for d in rec["bsplines"]]
