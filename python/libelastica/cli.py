@@ -511,6 +511,9 @@ def build_parser() -> argparse.ArgumentParser:
                    help="the curve's length L, or its range (either end may be empty)")
     c.add_argument("--k", dest="k_range", metavar="K|LO,HI",
                    help="the modulus k, or its range (either end may be empty)")
+    f.add_argument("--order", choices=("given", "curve"), default="given",
+                   help="the points' order along the curve: the file's (default; warned of when "
+                        "it is no curve's) or curve order (el.curve_order: a shuffled scan)")
     f.add_argument("--step", type=POSITIVE, metavar="R",
                    help="resample into an equilateral polygon of segment R first (--keyline "
                         "without it: the polyline through the medians of runs of the points, "

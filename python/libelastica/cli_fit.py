@@ -15,6 +15,7 @@ from .cli_common import (EXIT_BADINPUT, EXIT_NOCONV, EXIT_OK, PROG, _converged,
                          _status_text, _table)
 from .cli_outputs import out_path
 from .fit import quiet_fit
+from .order import order_summary
 from .io import InputError, curve_to_dict, read_points, write_dxf_spline, write_json
 
 
@@ -204,12 +205,29 @@ def _constraints(args, data: np.ndarray) -> Dict[str, Any]:
     return con
 
 
+def _in_order(path, pts: np.ndarray, order: str):
+    """(the points, None) in the file's order, warned of on stderr when that is no curve's
+    (el.out_of_order: a shuffled scan is fitted as a coil through its cloud); --order curve:
+    (the points in el.curve_order's order, its indices)."""
+    import libelastica as el
+    if order == "curve":
+        idx = el.curve_order(pts)
+        return np.ascontiguousarray(pts[idx]), idx
+    o = el.out_of_order(pts)
+    if o.order is not None:
+        print(f"{PROG} fit: warning: {path}: {order_summary(o)}: fitted in the file's "
+              "order, the curve may coil through them; --order curve fits them in curve order",
+              file=sys.stderr)
+    return pts, None
+
+
 def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[str, Any]]:
     """Fit one file; returns one record per fitted curve (two with --keyline) and the
     file's JSON document (the record; a keyline's {"file", "sides", "bspline"}), and
     writes the requested outputs. Raises InputError / ValueError for bad input."""
     import libelastica as el
     pts = read_points(path, min_points=4)
+    pts, order = _in_order(path, pts, getattr(args, "order", "given"))
     records: List[Dict[str, Any]] = []
     pictures = []       # (points (n,2), FitResult, their feet or None: the fit's) per record
     fitted = []         # the points each record's fit took (a --step: its polygon's)
@@ -223,6 +241,7 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
         fixed = _parse_fix(args.fix, pts[:, :2], keyline=True)
         with warnings.catch_warnings():     # its status said in the CLI's words
             warnings.simplefilter("ignore", el.ConvergenceWarning)
+            warnings.simplefilter("ignore", el.OrderWarning)     # _in_order says it
             kres = el.fit_keyline(pts, r=args.step, **_fit_kwargs(args, fixed))
         prep = kres.prepared
         plane = _plane_record(prep.frame)
@@ -276,6 +295,8 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
             fitted.append(data)
     for rec, fitted_pts in zip(records, fitted):
         rec.update({"file": str(path), "plane": plane, "step": args.step, **extra_info})
+        if order is not None:
+            rec["order"] = [int(i) for i in order]
         _warn_far_points(path, rec)
         _warn_wanders(path, rec, fitted_pts)
         if rec.get("resample_reference_rms") is not None:

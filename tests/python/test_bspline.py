@@ -296,6 +296,23 @@ def test_certified_error(name, rel):
     assert np.allclose(b.evaluate([0.0, c.length]), c.points([0.0, c.length]), atol=1e-12 * c.length)
 
 
+# QA10 t3's case: the 30 m sheer line fitted G1 at both ends, 5e6 mm off the origin; at
+# tol = 1e-6 x its 30010 mm extent (printed 0.03) max_deviation 0.0300053 <= 0.0300099
+SHEER_G1 = dict(x0=5000035.668358383, y0=-198810.44502825695, phi=-0.0011582879425357817,
+                mu=1.7327326265752352e-06, k=0.5722687164665601, q=4.485774778969982,
+                length=46060.38365925885)
+
+
+@pytest.mark.parametrize("tol", [0.030009918291026724] + list(np.geomspace(1e-2, 300, 7)))
+def test_certificate_within_tol_far_from_origin(tol):
+    """max_deviation <= tol always (el_smooth_to_bspline certifies or returns EL_EMAXITER),
+    and an upper bound of the distance measured."""
+    c = el.SmoothElastica(**SHEER_G1)
+    b = c.to_bspline(tol=tol)
+    assert 0 < b.max_deviation <= tol
+    assert measured_distance(c, b) <= b.max_deviation * (1 + 1e-6) + 1e-14 * c.length
+
+
 @pytest.mark.parametrize("k", [0.5, 0.99999, 1.0, 1.00001, 2.5])
 @pytest.mark.parametrize("rel", [1e-3, 1e-6, 1e-9])
 @pytest.mark.parametrize("degree", [3, 6])

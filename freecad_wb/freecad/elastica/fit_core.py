@@ -258,6 +258,7 @@ def _keyline(xy, model, step):
     n = np()
     with catch_warnings():                           # its Status says it
         simplefilter("ignore", el().ConvergenceWarning)
+        simplefilter("ignore", el().OrderWarning)    # ordered by fit_core (file_order, curve_order)
         kf = el().fit_keyline(xy, r=step, model=model)
     first, second = kf.first, kf.second
     to_plane = kf.prepared.frame2d.to_parent         # the halves live in x''y''

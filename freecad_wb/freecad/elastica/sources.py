@@ -14,8 +14,7 @@ from __future__ import annotations
 import FreeCAD as App
 import Part
 
-from .geometry import (dedup, el, global_element, global_points, global_shape, is_sketch, np,
-                       polyline_length)
+from .geometry import (dedup, el, global_element, global_points, global_shape, is_sketch, np)
 from .proxy import InputProblem
 
 
@@ -192,212 +191,23 @@ def wire_points(shape):
     return pts
 
 
-# Points from SCAN_POINTS on are a scan's cloud: their noise band is many points wide, and
-# a nearest-neighbour chain zigzags across it and leaves stragglers it joins at the end by
-# long jumps, shorter still than the curve's order (a 300 deg curl of 1500 points, 0.2 mm
-# noise: fitted 580 mm long for 224 mm; 2500 and 8000 points: rms 8.3 mm, not converged).
-# They are ordered along their skeleton (_skeleton_order); fewer points (a sketch's, each
-# its own) by their chain, which takes m^2 distances at once (0.3 MB at SCAN_POINTS).
-SCAN_POINTS = 200
-# The skeleton's cells: about SKELETON_CELLS of them at most (its minimum spanning tree
-# takes their m^2 distances: 0.7 MB), CELL_POINTS points each at least, and NOISE_CELLS
-# times the noise rms wide at least (the band within a cell or two across).
-SKELETON_CELLS, CELL_POINTS, NOISE_CELLS = 300, 8, 4.0
-
-
 def curve_order(xy):
     """The order of points without one of their own (xy: their plane coordinates): the
-    shortest polyline of three, as stored (a sketch's in the order its points were made:
-    the first of equals, so Pin start means the first point made), along their first
-    principal axis, and their nearest-neighbour chain (below SCAN_POINTS) or their order
-    along their skeleton (a scan's cloud, from SCAN_POINTS on). Along the axis suits a
-    scan that does not double back; a curl past 180 deg does (sorted along the axis it
-    zigzags across: a fit's rms 3.6 mm against 6e-7, no free batten through them); one
-    point of a curl added last, the stored order jumps (a fit 338 mm long for 188 mm of
-    curl)."""
-    n = np()
-    xn, _ = el().pca_normalize(xy)
-    orders = [n.arange(len(xy)), n.argsort(xn[:, 0], kind="stable")]
-    orders.append(_chain_order(xy) if len(xy) < SCAN_POINTS else _skeleton_order(xy))
-    return min(orders, key=lambda o: polyline_length(xy[o]))
-
-
-# A file's points in an order whose polyline is more than FILE_ORDER_RATIO times as long as
-# curve_order's are no curve's (a scanner's unsorted export, QA: 800 points of 0.2 mm noise
-# along 200 mm, 54 m back and forth for 318 mm, fitted 1180 mm long at rms 6.9 mm, status
-# converged); a digitiser's in order zigzags across its noise where the skeleton does less:
-# 1.5 to 1.8 times as long for 2000 points of 0.3 to 1 mm noise.
-FILE_ORDER_RATIO = 3.0
+    binding's el.curve_order (a sketch's stored order first among equals, so Pin start
+    means the first point made)."""
+    return el().curve_order(xy)
 
 
 def file_order(xy):
     """(order, warnings) of a file's points (xy: their plane coordinates): (None, []) when
-    the file's order is a curve's, kept exactly, else curve_order's, said in a warning."""
-    order = curve_order(xy)
-    given, curve = polyline_length(xy), polyline_length(xy[order])
-    if not given > FILE_ORDER_RATIO * curve:
+    the file's order is a curve's (el.out_of_order, every point measured), kept exactly,
+    else curve_order's, said in a warning."""
+    o = el().out_of_order(xy, screen=False)
+    if o.order is None:
         return None, []
-    return order, [f"the file's points are not in curve order (their polyline is {given:.4g} mm "
-                   f"long, {given / curve:.3g} times the {curve:.4g} mm of the points in curve "
-                   "order): fitted in curve order, as a Points object's"]
-
-
-def _chain_order(xy):
-    """The points' nearest-neighbour chain: from the closest pair, the nearest point not yet
-    in it joined at whichever end it is nearer, until all are in (O(n^2))."""
-    n = np()
-    m = len(xy)
-    if m < 3:
-        return n.arange(m)
-    d = n.hypot(*(xy[:, None, :] - xy[None, :, :]).transpose(2, 0, 1))
-    n.fill_diagonal(d, n.inf)
-    a, b = n.unravel_index(n.argmin(d), d.shape)
-    chain, free = [int(a), int(b)], n.ones(m, dtype=bool)
-    free[[a, b]] = False
-    while free.any():
-        head, tail = d[chain[0]], d[chain[-1]]
-        i, j = int(n.argmin(n.where(free, head, n.inf))), int(n.argmin(n.where(free, tail, n.inf)))
-        if head[i] < tail[j]:
-            chain.insert(0, i)
-            free[i] = False
-        else:
-            chain.append(j)
-            free[j] = False
-    return n.array(chain)
-
-
-def _skeleton_order(xy):
-    """A scan's cloud (xy, at least SCAN_POINTS points) ordered along its skeleton: the
-    points binned into square cells (_cell_size: SKELETON_CELLS of them at most), the
-    heaviest path of their centroids' minimum spanning tree (_heaviest_path: side branches
-    of the noise band and stray points are left off), the points sorted by where their
-    feet lie along it (_along), then the skeleton redrawn through their medians in runs
-    along that order and the points sorted along it again. Cells narrower than
-    NOISE_CELLS times the points' noise (their median distance from the skeleton) are
-    widened once to that. O(n log n) time, O(n) memory: 1e5 points in about 0.5 s, 50 MB. A
-    skeleton of fewer than 3 cells (the points lie in a cell or two) leaves the stored
-    order."""
-    n = np()
-    m = len(xy)
-    target = max(3, min(SKELETON_CELLS, m // CELL_POINTS))
-    h = _cell_size(xy, target)
-    order = n.arange(m)
-    if not h > 0.0:
-        return order
-    for _ in range(2):
-        cell, cells = _cells(xy, h)
-        count = n.bincount(cell, minlength=cells).astype(float)
-        centroids = n.column_stack([n.bincount(cell, xy[:, 0], cells),
-                                    n.bincount(cell, xy[:, 1], cells)]) / count[:, None]
-        path = _heaviest_path(centroids, count)
-        if len(path) < 3:
-            return order
-        order = _along(xy, centroids[path], cell, centroids)[0]
-        k = max(1, m // len(path))
-        runs = n.median(xy[order[:m // k * k]].reshape(-1, k, 2), axis=1)
-        if len(runs) < 2:
-            return order
-        order, dist = _along(xy, runs, cell, centroids)
-        noise = 1.4826 * float(n.median(dist))     # the rms of normal noise
-        if h >= NOISE_CELLS * noise:
-            break
-        h = NOISE_CELLS * noise
-    return order
-
-
-def _cells(xy, h):
-    """(the index of each point's cell of side h, the number of cells holding points)."""
-    n = np()
-    q = n.floor((xy - xy.min(axis=0)) / h).astype(n.int64)
-    _, cell = n.unique(q[:, 0] * (int(q[:, 1].max()) + 1) + q[:, 1], return_inverse=True)
-    cell = cell.ravel()
-    return cell, int(cell.max()) + 1
-
-
-def _cell_size(xy, target):
-    """The side of square cells of which about ``target`` hold points (a curve's
-    count goes as 1 / side, a cloud's as its square), and never more than 1.5 x target."""
-    h = float(np().ptp(xy, axis=0).max()) / target
-    if not h > 0.0:
-        return h
-    for _ in range(8):
-        cells = _cells(xy, h)[1]
-        if abs(cells - target) <= 0.15 * target:
-            break
-        h *= (cells / target) ** 0.7
-    while _cells(xy, h)[1] > 1.5 * target:
-        h *= 1.25
-    return h
-
-
-def _heaviest_path(nodes, weight):
-    """The path of the nodes' Euclidean minimum spanning tree (Prim, O(m^2)) that holds
-    the most weight (the tree's diameter by node weight: from any node the heaviest path's
-    far end, then from there the heaviest path), as indices from one end to the other.
-    Written here: FreeCAD's Python has numpy, not necessarily scipy's csgraph, and the
-    skeleton's few hundred cells need no more than this."""
-    n = np()
-    m = len(nodes)
-    if m < 3:
-        return n.arange(m)
-    d = n.hypot(*(nodes[:, None, :] - nodes[None, :, :]).transpose(2, 0, 1))
-    near, parent = d[0].copy(), n.zeros(m, dtype=int)
-    free = n.ones(m, dtype=bool)
-    free[0] = False
-    adjacent = [[] for _ in range(m)]
-    for _ in range(m - 1):
-        j = int(n.argmin(n.where(free, near, n.inf)))
-        free[j] = False
-        adjacent[j].append(int(parent[j]))
-        adjacent[parent[j]].append(j)
-        closer = d[j] < near
-        near, parent = n.where(closer, d[j], near), n.where(closer, j, parent)
-
-    def heaviest_from(start):
-        held, came = n.full(m, -1.0), n.full(m, -1)
-        held[start], stack = weight[start], [start]
-        while stack:
-            u = stack.pop()
-            for v in adjacent[u]:
-                if held[v] < 0.0:
-                    held[v], came[v] = held[u] + weight[v], u
-                    stack.append(v)
-        return int(n.argmax(held)), came
-
-    a, _ = heaviest_from(0)
-    b, came = heaviest_from(a)
-    path = [b]
-    while path[-1] != a:
-        path.append(int(came[path[-1]]))
-    return n.array(path)
-
-
-def _along(xy, skeleton, cell, centroids, window=3):
-    """(the points' order along the polyline ``skeleton``, their distances from it): by
-    the arc length of each point's foot on it (its end segments run on beyond its ends),
-    then (the points whose foot is one vertex) along the foot's segment. A point's foot is
-    sought on the 2 x window segments about the vertex nearest its cell's centroid (cells
-    and vertices are about as far apart), O(n)."""
-    n = np()
-    A, D = skeleton[:-1], n.diff(skeleton, axis=0)
-    L2 = n.maximum(n.sum(D * D, axis=1), 1e-300)
-    seg_len = n.sqrt(L2)
-    s0 = n.concatenate([[0.0], n.cumsum(seg_len)])
-    last = len(A) - 1
-    nearest = n.argmin(n.hypot(*(centroids[:, None, :] - skeleton[None, :, :]).transpose(2, 0, 1)),
-                       axis=1)[cell]
-    j = n.clip(nearest[:, None] + n.arange(-window, window), 0, last)     # (n, 2 window)
-    r = xy[:, None, :] - A[j]
-    u = n.clip(n.sum(r * D[j], axis=2) / L2[j], n.where(j == 0, -n.inf, 0.0),
-               n.where(j == last, n.inf, 1.0))
-    e = r - u[:, :, None] * D[j]
-    k = n.argmin(n.sum(e * e, axis=2), axis=1)
-    i = n.arange(len(xy))
-    j, u, e = j[i, k], u[i, k], e[i, k]
-    s = s0[j] + u * seg_len[j]
-    t = n.sum(xy * D[j], axis=1) / seg_len[j]
-    dist = n.hypot(e[:, 0], e[:, 1])
-    return n.lexsort((t, s)), dist
+    return o.order, [f"the file's points are not in curve order (their polyline is {o.given:.4g} mm "
+                     f"long, {o.given / o.along:.3g} times the {o.along:.4g} mm of the points in curve "
+                     "order): fitted in curve order, as a Points object's"]
 
 
 def in_curve_order(points):

@@ -1,0 +1,286 @@
+"""The order of points along the curve they sample, for points without one of their own
+(a scanner's export, a point picker's clicks): :func:`curve_order`, and :func:`out_of_order`,
+whether points given in an order lie in it along a curve. :func:`fit` warns of points that
+do not (OrderWarning) and fits them in curve order with ``order="curve"``; the CLI's and
+FreeCAD's fits use the same two.
+
+>>> import numpy as np, libelastica as el
+>>> t = np.linspace(0, 3, 40); P = np.c_[t, np.sin(t)]
+>>> Q = P[np.random.default_rng(1).permutation(40)]
+>>> el.out_of_order(Q).order is not None, el.out_of_order(P).order is None
+(True, True)
+>>> x = Q[el.curve_order(Q)][:, 0]
+>>> bool((np.diff(x) > 0).all() or (np.diff(x) < 0).all())
+True
+"""
+from __future__ import annotations
+
+from typing import NamedTuple, Optional
+
+import numpy as np
+
+from ._ffi import as_points
+from .prep import pca_normalize, plane_fit
+
+
+def polyline_length(xy) -> float:
+    """The length of the polyline through the rows of xy."""
+    return float(np.sum(np.hypot(*np.diff(xy, axis=0).T)))
+
+
+def _plane_points(points, name: str) -> np.ndarray:
+    pts = as_points(points, f"{name}: points", None)
+    if pts.shape[1] not in (2, 3):
+        raise ValueError(f"{name}: points must have shape (n, 2) or (n, 3), got {pts.shape}")
+    return plane_fit(pts)[0] if pts.shape[1] == 3 else pts
+
+
+# Points from SCAN_POINTS on are a scan's cloud: their noise band is many points wide, and
+# a nearest-neighbour chain zigzags across it and leaves stragglers it joins at the end by
+# long jumps, shorter still than the curve's order (a 300 deg curl of 1500 points, 0.2 mm
+# noise: fitted 580 mm long for 224 mm; 2500 and 8000 points: rms 8.3 mm, not converged).
+# They are ordered along their skeleton (_skeleton_order); fewer points (a sketch's, each
+# its own) by their chain, which takes m^2 distances at once (0.3 MB at SCAN_POINTS).
+SCAN_POINTS = 200
+# The skeleton's cells: about SKELETON_CELLS of them at most (its minimum spanning tree
+# takes their m^2 distances: 0.7 MB), CELL_POINTS points each at least, and NOISE_CELLS
+# times the noise rms wide at least (the band within a cell or two across).
+SKELETON_CELLS, CELL_POINTS, NOISE_CELLS = 300, 8, 4.0
+
+
+def curve_order(points) -> np.ndarray:
+    """The order of points without one of their own (points (n, 2): a scan's cloud, clicks
+    in any order; (n, 3): in their best-fit plane, :func:`plane_fit`), as indices: the
+    shortest polyline of three, as stored (a sketch's in the order its points were made:
+    the first of equals, so Pin start means the first point made), along their first
+    principal axis, and their nearest-neighbour chain (below SCAN_POINTS) or their order
+    along their skeleton (a scan's cloud, from SCAN_POINTS on). Along the axis suits a
+    scan that does not double back; a curl past 180 deg does (sorted along the axis it
+    zigzags across: a fit's rms 3.6 mm against 6e-7, no free batten through them); one
+    point of a curl added last, the stored order jumps (a fit 338 mm long for 188 mm of
+    curl)."""
+    xy = _plane_points(points, "curve_order")
+    if len(xy) < 3:
+        return np.arange(len(xy))
+    xn, _ = pca_normalize(xy)
+    orders = [np.arange(len(xy)), np.argsort(xn[:, 0], kind="stable")]
+    orders.append(_chain_order(xy) if len(xy) < SCAN_POINTS else _skeleton_order(xy))
+    return min(orders, key=lambda o: polyline_length(xy[o]))
+
+
+# Points in an order whose polyline is more than ORDER_RATIO times as long as curve_order's
+# are no curve's (a scanner's unsorted export, QA: 800 points of 0.2 mm noise along 200 mm,
+# 54 m back and forth for 318 mm, fitted 1180 mm long at rms 6.9 mm, status converged); a
+# digitiser's in order zigzags across its noise where the skeleton does less: 1.5 to 1.8
+# times as long for 2000 points of 0.3 to 1 mm noise.
+ORDER_RATIO = 3.0
+
+
+# A fit's check of SCAN_POINTS points or more looks first at the polyline through about
+# SCREEN_POINTS of them, every k-th: a scan in order (its noise wider than its spacing: the
+# QA's 30 m sheer line, its polyline 4.6 times its extent) runs along its curve there, and
+# curve_order's time is spared (the sheer's 2500 points: 37 ms, its fit 3 ms).
+SCREEN_POINTS = 64
+# ... and flags only a polyline that turns more than TURN_PER_VERTEX rad a vertex on average:
+# a coil of few points in order (bench_fit.py's suite: 20 points on 3 pieces of k 4-26, their
+# polyline 3.0-3.1 times curve_order's, which cuts across the loops) turns 0.90-0.98 rad a
+# vertex, all one way; shuffled points about pi/2 (the suite's and QA10's, 3 shuffles each:
+# 1525 flagged, 1.44 rad at least).
+TURN_PER_VERTEX = 1.2
+
+
+class Ordering(NamedTuple):
+    """:func:`out_of_order`'s answer: ``order`` (curve_order's indices, None when the given
+    order is a curve's), ``given`` (the length of the points' polyline in their order),
+    ``along`` (in curve order; nan where not measured: the polyline, or the screen's, within
+    the ratio times the points' extent, which no order's polyline is shorter than)."""
+    order: Optional[np.ndarray]
+    given: float
+    along: float
+
+
+def out_of_order(points, ratio: float = ORDER_RATIO, screen: bool = True) -> Ordering:
+    """Whether points (n, 2 or 3) given in an order are not in order along a curve: their
+    polyline more than ``ratio`` times as long as the one through them in curve order
+    (:func:`curve_order`). Not measured where the polyline is within ``ratio`` times the
+    points' extent, nor (``screen``, SCAN_POINTS points or more) where the polyline
+    through every k-th point, about SCREEN_POINTS of them, is: O(n) time there, else
+    curve_order's (1e5 points: about 0.5 s); ``screen`` also keeps the order of a polyline
+    that turns less than TURN_PER_VERTEX rad a vertex on average (a coil of few points)."""
+    xy = _plane_points(points, "out_of_order")
+    if len(xy) < 3:
+        return Ordering(None, polyline_length(xy), float("nan"))
+    # the extent column by column: numpy's reductions along axis 0 of (n, 2) are far slower
+    given, extent = polyline_length(xy), max(float(np.ptp(xy[:, j].copy())) for j in range(2))
+    step = len(xy) // SCREEN_POINTS if screen and len(xy) >= SCAN_POINTS else 1
+    if not given > ratio * extent or not polyline_length(xy[::step]) > ratio * extent:
+        return Ordering(None, given, float("nan"))
+    order = curve_order(xy)
+    along = polyline_length(xy[order])
+    if screen and given > ratio * along:
+        d = np.diff(xy, axis=0)
+        a = np.arctan2(d[:, 1], d[:, 0])
+        if not np.mean(np.abs(np.angle(np.exp(1j * np.diff(a))))) > TURN_PER_VERTEX:
+            return Ordering(None, given, along)
+    return Ordering(order if given > ratio * along else None, given, along)
+
+
+def order_summary(o: Ordering, unit: str = "") -> str:
+    """What a warning of points out of order says (:func:`fit`'s, fit_keyline's, the CLI's)."""
+    return (f"the points are not in order along a curve: their polyline is {o.given:.4g}{unit} long, "
+            f"{o.given / o.along:.3g} times the {o.along:.4g}{unit} of the points in curve order")
+
+
+def _chain_order(xy):
+    """The points' nearest-neighbour chain: from the closest pair, the nearest point not yet
+    in it joined at whichever end it is nearer, until all are in (O(n^2))."""
+    m = len(xy)
+    if m < 3:
+        return np.arange(m)
+    d = np.hypot(*(xy[:, None, :] - xy[None, :, :]).transpose(2, 0, 1))
+    np.fill_diagonal(d, np.inf)
+    a, b = np.unravel_index(np.argmin(d), d.shape)
+    chain, free = [int(a), int(b)], np.ones(m, dtype=bool)
+    free[[a, b]] = False
+    while free.any():
+        head, tail = d[chain[0]], d[chain[-1]]
+        i, j = int(np.argmin(np.where(free, head, np.inf))), int(np.argmin(np.where(free, tail, np.inf)))
+        if head[i] < tail[j]:
+            chain.insert(0, i)
+            free[i] = False
+        else:
+            chain.append(j)
+            free[j] = False
+    return np.array(chain)
+
+
+def _skeleton_order(xy):
+    """A scan's cloud (xy, at least SCAN_POINTS points) ordered along its skeleton: the
+    points binned into square cells (_cell_size: SKELETON_CELLS of them at most), the
+    heaviest path of their centroids' minimum spanning tree (_heaviest_path: side branches
+    of the noise band and stray points are left off), the points sorted by where their
+    feet lie along it (_along), then the skeleton redrawn through their medians in runs
+    along that order and the points sorted along it again. Cells narrower than
+    NOISE_CELLS times the points' noise (their median distance from the skeleton) are
+    widened once to that. O(n log n) time, O(n) memory: 1e5 points in about 0.5 s, 50 MB. A
+    skeleton of fewer than 3 cells (the points lie in a cell or two) leaves the stored
+    order."""
+    m = len(xy)
+    target = max(3, min(SKELETON_CELLS, m // CELL_POINTS))
+    h = _cell_size(xy, target)
+    order = np.arange(m)
+    if not h > 0.0:
+        return order
+    for _ in range(2):
+        cell, cells = _cells(xy, h)
+        count = np.bincount(cell, minlength=cells).astype(float)
+        centroids = np.column_stack([np.bincount(cell, xy[:, 0], cells),
+                                    np.bincount(cell, xy[:, 1], cells)]) / count[:, None]
+        path = _heaviest_path(centroids, count)
+        if len(path) < 3:
+            return order
+        order = _along(xy, centroids[path], cell, centroids)[0]
+        k = max(1, m // len(path))
+        runs = np.median(xy[order[:m // k * k]].reshape(-1, k, 2), axis=1)
+        if len(runs) < 2:
+            return order
+        order, dist = _along(xy, runs, cell, centroids)
+        noise = 1.4826 * float(np.median(dist))     # the rms of normal noise
+        if h >= NOISE_CELLS * noise:
+            break
+        h = NOISE_CELLS * noise
+    return order
+
+
+def _cells(xy, h):
+    """(the index of each point's cell of side h, the number of cells holding points)."""
+    q = np.floor((xy - xy.min(axis=0)) / h).astype(np.int64)
+    _, cell = np.unique(q[:, 0] * (int(q[:, 1].max()) + 1) + q[:, 1], return_inverse=True)
+    cell = cell.ravel()
+    return cell, int(cell.max()) + 1
+
+
+def _cell_size(xy, target):
+    """The side of square cells of which about ``target`` hold points (a curve's
+    count goes as 1 / side, a cloud's as its square), and never more than 1.5 x target."""
+    h = float(np.ptp(xy, axis=0).max()) / target
+    if not h > 0.0:
+        return h
+    for _ in range(8):
+        cells = _cells(xy, h)[1]
+        if abs(cells - target) <= 0.15 * target:
+            break
+        h *= (cells / target) ** 0.7
+    while _cells(xy, h)[1] > 1.5 * target:
+        h *= 1.25
+    return h
+
+
+def _heaviest_path(nodes, weight):
+    """The path of the nodes' Euclidean minimum spanning tree (Prim, O(m^2)) that holds
+    the most weight (the tree's diameter by node weight: from any node the heaviest path's
+    far end, then from there the heaviest path), as indices from one end to the other.
+    Written here: FreeCAD's Python has numpy, not necessarily scipy's csgraph, and the
+    skeleton's few hundred cells need no more than this."""
+    m = len(nodes)
+    if m < 3:
+        return np.arange(m)
+    d = np.hypot(*(nodes[:, None, :] - nodes[None, :, :]).transpose(2, 0, 1))
+    near, parent = d[0].copy(), np.zeros(m, dtype=int)
+    free = np.ones(m, dtype=bool)
+    free[0] = False
+    adjacent = [[] for _ in range(m)]
+    for _ in range(m - 1):
+        j = int(np.argmin(np.where(free, near, np.inf)))
+        free[j] = False
+        adjacent[j].append(int(parent[j]))
+        adjacent[parent[j]].append(j)
+        closer = d[j] < near
+        near, parent = np.where(closer, d[j], near), np.where(closer, j, parent)
+
+    def heaviest_from(start):
+        held, came = np.full(m, -1.0), np.full(m, -1)
+        held[start], stack = weight[start], [start]
+        while stack:
+            u = stack.pop()
+            for v in adjacent[u]:
+                if held[v] < 0.0:
+                    held[v], came[v] = held[u] + weight[v], u
+                    stack.append(v)
+        return int(np.argmax(held)), came
+
+    a, _ = heaviest_from(0)
+    b, came = heaviest_from(a)
+    path = [b]
+    while path[-1] != a:
+        path.append(int(came[path[-1]]))
+    return np.array(path)
+
+
+def _along(xy, skeleton, cell, centroids, window=3):
+    """(the points' order along the polyline ``skeleton``, their distances from it): by
+    the arc length of each point's foot on it (its end segments run on beyond its ends),
+    then (the points whose foot is one vertex) along the foot's segment. A point's foot is
+    sought on the 2 x window segments about the vertex nearest its cell's centroid (cells
+    and vertices are about as far apart), O(n)."""
+    A, D = skeleton[:-1], np.diff(skeleton, axis=0)
+    L2 = np.maximum(np.sum(D * D, axis=1), 1e-300)
+    seg_len = np.sqrt(L2)
+    s0 = np.concatenate([[0.0], np.cumsum(seg_len)])
+    last = len(A) - 1
+    nearest = np.argmin(np.hypot(*(centroids[:, None, :] - skeleton[None, :, :]).transpose(2, 0, 1)),
+                       axis=1)[cell]
+    j = np.clip(nearest[:, None] + np.arange(-window, window), 0, last)     # (n, 2 window)
+    r = xy[:, None, :] - A[j]
+    u = np.clip(np.sum(r * D[j], axis=2) / L2[j], np.where(j == 0, -np.inf, 0.0),
+               np.where(j == last, np.inf, 1.0))
+    e = r - u[:, :, None] * D[j]
+    k = np.argmin(np.sum(e * e, axis=2), axis=1)
+    i = np.arange(len(xy))
+    j, u, e = j[i, k], u[i, k], e[i, k]
+    s = s0[j] + u * seg_len[j]
+    t = np.sum(xy * D[j], axis=1) / seg_len[j]
+    dist = np.hypot(e[:, 0], e[:, 1])
+    return np.lexsort((t, s)), dist
+
+
