@@ -155,6 +155,29 @@ static int circle_piece(const el_smooth_params *p, double tol)
     return p->length > 0.0 && 64.0 * DBL_EPSILON * (1.0 + umax) * (1.0 + fabs(p->k)) > tol * w * p->length;
 }
 
+/* What one ulp of k moves on a piece near the separatrix (1 - k^2 -> 0: a nearly
+ * straight run under tension), in the residual's units. Its first integral
+ * kappa^2 = 4 mu (c^2 - (1 - k^2)), c = cos((theta - phi)/2) = dn(u) (seed 000 (4.2),
+ * kappa = 2 k sqrt(mu) cn), has 1 - k^2 only in steps of delta = 2|k| ulp(k):
+ * - curvature: a sinh boundary layer kappa = A e^{-w s} + B e^{w (s - L)} has
+ *   A B proportional to 1 - k^2, so with A set by one end, B (the other end's
+ *   curvature) is known to delta / |1 - k^2| of itself: that times kappa_max h;
+ *   at k = 1 exactly (1 - k^2 below delta) all of it, kappa_max h;
+ * - angle: at fixed kappa, c^2 moves by delta, so c by sqrt(c^2 + delta) - c
+ *   (<= delta / 2c, <= sqrt(delta)) and theta = phi + 2 acos(c) by twice that, c at
+ *   the better resolved end.
+ * The sum of both (the solver cannot choose where the step lands); a joint's
+ * jump carries both its pieces' (make_result). ~eps for a piece away from the
+ * separatrix; |k| > 1 (past it): the same expression with |1 - k^2|. */
+static double separatrix_bound(const el_smooth_params *p, const double th[2], double kmax, double h)
+{
+    const double ka = fabs(p->k);
+    if (!(ka > 0.0) || !isfinite(ka)) return 0.0;
+    const double delta = 2.0 * ka * (nextafter(ka, INFINITY) - ka), kp2 = fabs(1.0 - ka * ka);
+    const double c = fmax(fabs(cos(0.5 * (th[0] - p->phi))), fabs(cos(0.5 * (th[1] - p->phi))));
+    return fmin(1.0, delta / fmax(kp2, delta)) * kmax * h + 2.0 * delta / (sqrt(c * c + delta) + c);
+}
+
 /* Knot i's position in user units (xy: the points, S: the unit): a point, or a
  * guide duck at its chord fraction plus its offset along the span's normal. */
 static void knot_position(const el__spchain *w, const double *xy, double S, size_t i, double *p)
@@ -174,9 +197,10 @@ static void knot_position(const el__spchain *w, const double *xy, double S, size
 }
 
 /* Fill res from the solved chain (original units), measuring the residual;
- * *other: the part of it from joints and ends without a circle piece. */
+ * *other: the part of it from joints and ends without a circle piece or a piece
+ * whose separatrix_bound exceeds tol; *sep: the largest such bound (0: none). */
 static int make_result(const el__spchain *w, const double *xy, size_t npoints, double S, double tol,
-                       el_spline_result *res, double *other)
+                       el_spline_result *res, double *other, double *sep)
 {
     const size_t n = w->n, m = w->m;
     el_spline_result r;
@@ -189,12 +213,17 @@ static int make_result(const el__spchain *w, const double *xy, size_t npoints, d
     r.curvatures = malloc(npoints * sizeof *r.curvatures);
     double *ends = malloc(2 * m * sizeof *ends);   /* theta, kappa at each piece's end */
     double *knot = malloc(4 * n * sizeof *knot);   /* positions, then theta, kappa at each knot */
-    if (!r.pieces || !r.forces || !r.angles || !r.curvatures || !ends || !knot) {
+    double *bnd = malloc(m * sizeof *bnd);         /* each piece's separatrix_bound */
+    char *unres = malloc(m);                       /* 1: a circle piece or one past tol's bound */
+    if (!r.pieces || !r.forces || !r.angles || !r.curvatures || !ends || !knot || !bnd || !unres) {
         el_spline_result_free(&r);
         free(ends);
         free(knot);
+        free(bnd);
+        free(unres);
         return EL_ENOMEM;
     }
+    *sep = 0.0;
     double *kth = knot + 2 * n, *kka = knot + 3 * n;
     for (size_t i = 0; i < n; i++) knot_position(w, xy, S, i, knot + 2 * i);
     double resid = 0.0, rest = 0.0;
@@ -214,12 +243,18 @@ static int make_result(const el__spchain *w, const double *xy, size_t npoints, d
         const double s2[2] = {0.0, p->length};
         double pt[4], th[2], ka[2];
         const int st = el_smooth_eval(p, 2, s2, pt, th, ka);
-        if (st) { el_spline_result_free(&r); free(ends); free(knot); return st; }
+        if (st) { el_spline_result_free(&r); free(ends); free(knot); free(bnd); free(unres); return st; }
         const double *e = knot + 2 * ((j + 1) % n);
         const double h = hypot(e[0] - p->x0, e[1] - p->y0);
         const double rp = hypot(pt[2] - e[0], pt[3] - e[1]) / h;
+        const double kmax = piece_max_curvature(p, pc->Kq, ka[0], ka[1]);
+        /* a circle piece is judged by the circle rule alone */
+        const int circle = circle_piece(p, tol);
+        bnd[j] = circle ? 0.0 : separatrix_bound(p, th, kmax, h);
+        if (bnd[j] > tol) *sep = fmax(*sep, bnd[j]);
+        unres[j] = circle || bnd[j] > tol;
         resid = fmax(resid, rp);
-        if (!circle_piece(p, tol)) rest = fmax(rest, rp);
+        if (!unres[j]) rest = fmax(rest, rp);
         kth[j] = th[0];
         kka[j] = ka[0];
         ends[2 * j] = th[1];
@@ -232,7 +267,7 @@ static int make_result(const el__spchain *w, const double *xy, size_t npoints, d
         r.forces[2 * j + 1] = a * T[1] - 2.0 * dk * T[0];
         r.energy += pc->energy / S;
         r.length += p->length;
-        r.max_curvature = fmax(r.max_curvature, piece_max_curvature(p, pc->Kq, ka[0], ka[1]));
+        r.max_curvature = fmax(r.max_curvature, kmax);
     }
     /* the joints and the end conditions; the points' angles and curvatures */
     for (size_t i = 0, pt = 0; i < n; i++) {
@@ -246,11 +281,15 @@ static int make_result(const el__spchain *w, const double *xy, size_t npoints, d
             if (w->kind[e] == EL_SPLINE_G2) ri = fabs(kap - w->kg[e] / S) * lr;
             if (w->kind[e] != EL_SPLINE_NATURAL)
                 ri = fmax(ri, fabs(el__wrap_pi(kth[i] - w->th_end[e])));
-            circle = circle_piece(&r.pieces[i == 0 ? 0 : m - 1], tol);
+            const size_t j = i == 0 ? 0 : m - 1;
+            circle = unres[j];
+            if (bnd[j] > tol) *sep = fmax(*sep, bnd[j]);
         } else {
             const size_t jm = (i + m - 1) % m;
             ri = fmax(fabs(el__wrap_pi(ends[2 * jm] - kth[i])), fabs(ends[2 * jm + 1] - kka[i]) * lr);
-            circle = circle_piece(&r.pieces[jm], tol) || circle_piece(&r.pieces[i % m], tol);
+            circle = unres[jm] || unres[i % m];
+            /* a joint's jump: both pieces' steps */
+            if (bnd[jm] > tol || bnd[i % m] > tol) *sep = fmax(*sep, bnd[jm] + bnd[i % m]);
         }
         resid = fmax(resid, ri);
         if (!circle) rest = fmax(rest, ri);
@@ -270,12 +309,15 @@ static int make_result(const el__spchain *w, const double *xy, size_t npoints, d
     r.nguides = (size_t)w->ng;
     free(ends);
     free(knot);
+    free(bnd);
+    free(unres);
     if (w->lmode == EL__BORDER_LENGTH) {
         const double rl = fabs(r.length - w->Lt * S) / (w->Lt * S);
         resid = fmax(resid, rl);
         rest = fmax(rest, rl);
     }
     r.residual = resid;
+    r.resolution = *sep;
     *other = rest;
     r.iterations = w->iterations;
     *res = r;
@@ -517,8 +559,8 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
     }
     if (st == EL_ENOMEM) goto done;
     if (!st || sol->near) {   /* a solution, or one to what the parametrisation resolves */
-        double other;
-        const int st2 = make_result(sol, xy, n, S, opt->tol, res, &other);
+        double other, sep;
+        const int st2 = make_result(sol, xy, n, S, opt->tol, res, &other, &sep);
         if (st2) { st = st2; goto done; }
         /* does it follow its ducks (spline_fair.c)? */
         const int cr = el__spline_crosses(res->pieces, res->npieces, closed);
@@ -527,8 +569,10 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
         if (lmode) reach_of(&w, &g, S, res);
         if (straight && lmode) { res->sigma = 0.0; goto done; }
         if (straight) goto done;
-        /* circle pieces are accepted at what el_smooth_params resolves (header) */
-        st = res->residual <= opt->tol || (other <= opt->tol && res->residual <= EL__SP_CIRCLE_RESID)
+        /* circle pieces and pieces near the separatrix are accepted at what
+         * el_smooth_params resolves (header); the latter within their bound */
+        st = res->residual <= opt->tol ||
+             (other <= opt->tol && res->residual <= EL__SP_CIRCLE_RESID && (sep == 0.0 || res->residual <= sep))
                  ? EL_OK : EL_ENOCONV;
         goto done;
     }

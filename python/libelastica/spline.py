@@ -34,7 +34,10 @@ class ElasticSpline:
     - 2 kappa' N in units of EI/2, the batten after a section pulling on the
     batten before it; the duck at an inner knot i holds forces[i-1] - forces[i]),
     ``angles`` and ``curvatures`` at the points, ``max_curvature``, ``residual``
-    (largest end-condition error reached), ``closed`` and ``loops`` (True: it crosses
+    (largest end-condition error reached: position / chord, tangent angle, curvature
+    jump x local chord; the G2 error of a G2 end too), ``resolution`` (0, or where pieces
+    nearly straight under tension resolve less than ``tol``: the residual double
+    precision allows them, within which ``residual`` is accepted), ``closed`` and ``loops`` (True: it crosses
     itself where its ducks' polygon does not, or by tension is longer than 4 x it:
     :class:`LoopWarning`).
 
@@ -59,6 +62,7 @@ class ElasticSpline:
         self.energy = float(res.energy)
         self.max_curvature = float(res.max_curvature)
         self.residual = float(res.residual)
+        self.resolution = float(res.resolution)
         self.iterations = int(res.iterations)
         self.loops = bool(res.loops)
         g = int(res.nguides)
@@ -313,6 +317,10 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
                            "to ~1e-10 up to ~200, ~1e-9 at ~300 (a larger tol accepts that), "
                            "nothing beyond; tension is in 1/units^2 of the points (in mm, "
                            "1e-6 x the same tension in m)")
+            if res.npieces and res.resolution > 0.0:
+                # pieces near the separatrix: accepted within what a double resolves (elastica.h)
+                why = (f"; its pieces nearly straight under tension resolve only "
+                       f"{min(res.resolution, 1e-7):.3g} in double precision, and it exceeds that") + why
             err = NotConvergedError(st, "elastic_spline: did not converge: " + (
                 f"residual {res.residual:.3g} > tol {tol:g} (the spline reached is kept in "
                 "the exception)" if res.npieces else "no spline through the points was reached")

@@ -297,6 +297,80 @@ START_TEST(near_collinear_g2_ends_under_high_tension)
 }
 END_TEST
 
+/*
+ * G2 blends between nearly collinear edges whose pieces lie near the separatrix
+ * (QA7 g2_near_collinear: EL_ENOCONV with residuals 2e-10 .. 5e-8 > tol): 1 - k^2 of
+ * 1e-9 .. 0 a double k resolves in steps of 2.2e-16, so the residual reachable is the
+ * header's resolution (spline.c separatrix_bound). Accepted within it, and the G2
+ * error measured on the pieces (el_smooth_eval: gaps / h, tangent jumps, curvature
+ * jumps x h, the ends' tangents and curvatures) is within it too and below 1e-7. At the
+ * rule's boundary: d = 1e-9 at sigma h^2 = 0.16 reaches 5.55e-9 against its 5.46e-9,
+ * refused with the spline and its resolution in res.
+ */
+START_TEST(near_collinear_g2_accepted_within_resolution)
+{
+    const double hs[3] = {1e-3, 40.0, 4e4};
+    const double cases[6][2] = {{1e-9, 1600.0}, {-1e-9, 16.0}, {1e-6, 160.0}, {-1e-6, 16.0},
+                                {1e-2, 1600.0}, {-0.1, 1600.0}};   /* d, sigma h^2 */
+    for (int c = 0; c < 12; c++) {
+        const double h = hs[c % 3], off = c % 2 ? 25000.0 * h : 0.0;
+        const double d = cases[c % 6][0], sh2 = cases[c % 6][1];
+        const double xy[4] = {off - 0.5 * h, off, off + 0.5 * h, off};
+        el_spline_options o = opts(EL_SPLINE_TENSION, sh2 / (h * h));
+        o.start = g2_end(1.0, 0.0, 0.0);
+        o.end = g2_end(cos(d), sin(d), 0.0);
+        el_spline_result r;
+        const int st = solve(xy, 2, &o, &r);
+        ck_assert_msg(st == EL_OK, "h %g offset %g d %g sigma h^2 %g: status %d", h, off, d, sh2, st);
+        ck_assert_uint_eq(r.npieces, 3);
+        ck_assert_msg(r.residual > o.tol && r.residual <= r.resolution && r.residual <= 1e-7,
+                      "d %g: residual %g resolution %g", d, r.residual, r.resolution);
+        /* in the residual's units: gaps / chord, angles, curvature jumps x the local chord
+         * (the mean of the two pieces' chords; at an end, its piece's); and x h */
+        double ch[3], err = 0.0, jump = 0.0, th_prev = 0.0, k_prev = 0.0, at[2], th, ka;
+        for (size_t j = 0; j < 3; j++)
+            ch[j] = j < 2 ? hypot(r.pieces[j + 1].x0 - r.pieces[j].x0, r.pieces[j + 1].y0 - r.pieces[j].y0)
+                          : hypot(xy[2] - r.pieces[j].x0, xy[3] - r.pieces[j].y0);
+        for (size_t j = 0; j < 3; j++) {
+            const el_smooth_params *p = &r.pieces[j];
+            state_at(p, 0.0, at, &th, &ka, NULL);
+            const double ell = j == 0 ? ch[0] : 0.5 * (ch[j - 1] + ch[j]);
+            err = fmax(err, fmax(fabs(wrap(th - th_prev)), fabs(ka - k_prev) * ell));
+            jump = fmax(jump, fabs(ka - k_prev) * h);
+            if (j > 0) {
+                double e[2], te, kae;
+                state_at(&r.pieces[j - 1], r.pieces[j - 1].length, e, &te, &kae, NULL);
+                err = fmax(err, hypot(e[0] - p->x0, e[1] - p->y0) / ch[j - 1]);
+            }
+            state_at(p, p->length, at, &th_prev, &k_prev, NULL);
+        }
+        err = fmax(err, fmax(hypot(at[0] - xy[2], at[1] - xy[3]) / ch[2],
+                             fmax(fabs(wrap(th_prev - d)), fabs(k_prev) * ch[2])));
+        jump = fmax(jump, fabs(k_prev) * h);
+        ck_assert_msg(err <= fmin(r.resolution, 1e-7) && jump <= 1e-6, "d %g h %g: G2 error %g (x h %g) "
+                      "resolution %g", d, h, err, jump, r.resolution);
+        ck_assert_int_eq(r.loops, 0);
+        el_spline_result_free(&r);
+    }
+    /* the boundary: beyond its resolution, refused, the spline kept */
+    const double xy[4] = {-20.0, 0.0, 20.0, 0.0};
+    el_spline_options o = opts(EL_SPLINE_TENSION, 0.16 / 1600.0);
+    o.start = g2_end(1.0, 0.0, 0.0);
+    o.end = g2_end(cos(1e-9), sin(1e-9), 0.0);
+    el_spline_result r;
+    ck_assert_int_eq(solve(xy, 2, &o, &r), EL_ENOCONV);
+    ck_assert_uint_eq(r.npieces, 3);
+    ck_assert_msg(r.resolution > o.tol && r.residual > r.resolution && r.residual <= 1e-7,
+                  "residual %g resolution %g", r.residual, r.resolution);
+    el_spline_result_free(&r);
+    /* a tol above the residual: accepted as any spline, nothing past tol to report */
+    o.tol = 1e-8;
+    ck_assert_int_eq(solve(xy, 2, &o, &r), EL_OK);
+    ck_assert(r.residual <= o.tol && r.resolution == 0.0);
+    el_spline_result_free(&r);
+}
+END_TEST
+
 /* Sign changes of the curvature along the spline (|kappa| above 1e-6 of its largest). */
 static int inflections(const el_spline_result *r)
 {
@@ -480,6 +554,7 @@ int main(void)
     tcase_add_test(tc, collinear_ducks_with_g2_ends);
     tcase_add_test(tc, straight_free_batten_bends_to_g2_ends);
     tcase_add_test(tc, near_collinear_g2_ends_under_high_tension);
+    tcase_add_test(tc, near_collinear_g2_accepted_within_resolution);
     tcase_add_test(tc, random_battens_g2_solved_where_tangent_is);
     tcase_add_test(tc, initial_sibling_keeps_its_branch);
     suite_add_tcase(s, tc);

@@ -650,6 +650,29 @@ class BlendG2Test(unittest.TestCase):
             self.assertLess(c.curvature(u), 1e-9)
         self.assertEqual(b.BlendTension, 1e-4)                          # the given tension
 
+    def test_g2_blend_of_nearly_collinear_lines_pulled_says_its_g2_error(self):
+        """Lines 0.01 rad apart, ends 40 mm apart, pulled at tension 1/mm^2 (QA7
+        g2_near_collinear: 'no G2 blend ... did not converge', residual 1.6e-9): the
+        batten's pieces are nearly straight under tension, resolved by a double only to
+        ~1e-6; the blend is made G2 and its Status says the G2 error reached."""
+        d = 0.01
+        sk = self.doc.addObject("Sketcher::SketchObject", "NearLines")
+        sk.Placement = S.SKETCH_PLACEMENT
+        sk.addGeometry(Part.LineSegment(App.Vector(-60, 0, 0), App.Vector(-20, 0, 0)), False)
+        sk.addGeometry(Part.LineSegment(App.Vector(20, 0, 0),
+                                        App.Vector(20 + 40 * math.cos(d), 40 * math.sin(d), 0)), False)
+        self.doc.recompute()
+        b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Continuity="G2", Tension=1.0)
+        self.doc.recompute()
+        c = self.check_g2(b, sk)
+        m = re.search(r"G2 to ([0-9.e+-]+) \(nearly straight under tension: double precision "
+                      r"resolves its pieces to ([0-9.e+-]+)", b.Status)
+        self.assertIsNotNone(m, b.Status)
+        self.assertLess(1e-10, float(m.group(1)))
+        self.assertLessEqual(float(m.group(1)), min(float(m.group(2)), 1e-7))
+        self.assertEqual(b.BlendTension, 1.0)
+        self.assertLess(abs(b.BlendLength - c.length()), 1e-6)
+
     def test_g2_blend_re_solves_when_an_edge_moves(self):
         sk = two_arcs_sketch(self.doc)
         b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Continuity="G2")

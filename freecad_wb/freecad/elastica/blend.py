@@ -541,7 +541,10 @@ class BlendProxy(FeatureProxy):
                           f"{sp.length:.4g} mm, tension {tension_text(sp.tension, sp.length)}"
                           f"{free}; energy {sp.energy:.3g}/mm, max curvature "
                           f"{sp.max_curvature:.3g}/mm, {bends}"
-                          f"; guide ducks' forces {forces} (1/mm\u00b2 \u00d7 EI/2)")
+                          f"; guide ducks' forces {forces} (1/mm\u00b2 \u00d7 EI/2)"
+                          + (f"; G2 to {sp.residual:.2g} (nearly straight under tension: double "
+                             f"precision resolves its pieces to {sp.resolution:.2g}, the library's "
+                             "tolerance is 1e-10)" if sp.residual > 1e-10 else ""))
         else:
             obj.Status = f"solution {i + 1} of {len(curves)}{followed}"
 
