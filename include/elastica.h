@@ -1463,7 +1463,9 @@ typedef struct el_affine_options {
                               (affine length cbrt|A| along f~), the simple construction of
                               Craizer et al. the paper improves on (for comparison) */
     int max_iter;          /* golden-section iterations (default 100) */
-    double t1_tol;         /* stop when the t1 bracket is shorter (sample units, 1e-10) */
+    double t1_tol;         /* stop when the t1 bracket is shorter (sample units, 1e-10); the
+                              result is then polished by Gauss-Newton on psi's residuals,
+                              so t1 moves with the input as its conditioning says */
 } el_affine_options;
 
 void el_affine_options_defaults(el_affine_options *opt);

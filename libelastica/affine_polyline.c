@@ -214,6 +214,71 @@ static double piece_psi_built(const piece *P)
     return sum;
 }
 
+/* The residuals r_j = k_{j+1} - k_j of psi = sum r_j^2 (the same range), into r; their count. */
+static size_t piece_resid_built(const piece *P, double *r)
+{
+    size_t m = P->m, nr = 0;
+    if (m < 4) return 0;
+    size_t lo = 1 + (size_t)P->skip_lo;
+    if (m < 3 + (size_t)P->skip_hi + lo) return 0;
+    size_t hi = m - 3 - (size_t)P->skip_hi;
+    double kprev = 0.0;
+    for (size_t j = lo; j <= hi + 1; j++) {
+        double vm[2], vp[2];
+        edge(P->xy, j - 1, vm);
+        edge(P->xy, j + 1, vp);
+        double k = 2.0 - det2(vm[0], vm[1], vp[0], vp[1]) / P->A;
+        if (j > lo) r[nr++] = k - kprev;
+        kprev = k;
+    }
+    return nr;
+}
+
+/* Polish the golden-section minimiser by Gauss-Newton on the residuals: comparing
+ * values of psi locates its minimum only to ~sqrt(eps) of the bracket, and which side
+ * wins a comparison there is decided by rounding, so inputs moved by 1e-13 moved t1 (and
+ * every vertex) by ~1e-8; the root of sum r_j r_j' = 0 moves by what the problem's
+ * conditioning says (~eps |r| / |r'|). r' by central differences (step 1e-6 sample units:
+ * the vertices are C^1 in t1). A step is taken only while it stays within the bracket
+ * half-width `w` and psi does not rise by more than its rounding. */
+static double piece_polish(piece *P, double t, double w)
+{
+    size_t cap = P->m + 1;
+    double *buf = malloc(3 * cap * sizeof *buf);
+    if (!buf) return t;
+    double *r = buf, *rp = buf + cap, *rm = buf + 2 * cap;
+    const double d = 1e-6;
+    for (int it = 0; it < 4; it++) {
+        if (piece_build(P, t + d)) break;
+        size_t np_ = piece_resid_built(P, rp);
+        if (piece_build(P, t - d)) break;
+        size_t nm = piece_resid_built(P, rm);
+        if (piece_build(P, t)) break;
+        size_t n0 = piece_resid_built(P, r);
+        if (n0 == 0 || np_ != n0 || nm != n0) break;
+        double g = 0.0, H = 0.0, psi0 = 0.0;
+        for (size_t i = 0; i < n0; i++) {
+            double dr = (rp[i] - rm[i]) / (2.0 * d);
+            g += r[i] * dr;
+            H += dr * dr;
+            psi0 += r[i] * r[i];
+        }
+        if (!(H > 0.0) || !isfinite(g)) break;
+        double step = -g / H;
+        if (!(fabs(step) <= w)) break;
+        double tn = t + step;
+        if (piece_build(P, tn)) break;
+        size_t n1 = piece_resid_built(P, r);
+        double psi1 = 0.0;
+        for (size_t i = 0; i < n1; i++) psi1 += r[i] * r[i];
+        if (n1 != n0 || !(psi1 <= psi0 * (1.0 + 1e-8) + 1e-300)) break;
+        t = tn;
+        if (fabs(step) <= 1e-15 * fmax(1.0, fabs(t))) break;
+    }
+    free(buf);
+    return t;
+}
+
 static double psi_fn(double t1, void *params)
 {
     piece *P = params;
@@ -259,6 +324,7 @@ static int piece_optimise(piece *P, double t1_init, const el_affine_options *o, 
             }
             best_t = gsl_min_fminimizer_x_minimum(s);
             gsl_min_fminimizer_free(s);
+            best_t = piece_polish(P, best_t, h);
         }
     }
     int st = piece_build(P, best_t);
