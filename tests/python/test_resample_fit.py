@@ -97,3 +97,51 @@ def test_resampled_polygon_keeps_the_points_order():
     p = el.resampled_polygon(xy, 40.0)
     np.testing.assert_array_equal(p[[0, -1]], xy[[0, -1]])
     assert np.all(np.diff(p[:, 0]) < 0)
+
+
+def qa_scan(k, lam, sigma_of_size, seed=7):
+    """The QA's 400 ordered points along a 1 m elastica, noise a share of its size."""
+    curve = el.SmoothElastica(x0=0.0, y0=0.0, phi=0.3, mu=(1.0 / lam) ** 2, k=k, q=0.5,
+                              length=1000.0)
+    size = float(np.ptp(curve.points(np.linspace(0.0, 1000.0, 2001)), axis=0).max())
+    rng = np.random.default_rng(seed)
+    s = np.sort(rng.uniform(0.0, curve.length, 400))
+    return curve.points(s) + rng.normal(0.0, sigma_of_size * size, (400, 2))
+
+
+@pytest.mark.parametrize("model", ["smooth", "discrete"])
+def test_the_warning_compares_with_the_points_own_fit(model):
+    """The QA's curly 1 m elastica (k 0.9, lambda 150 mm), noise 0.5 % of its size: its
+    resampled fits lie ~165 mm off, and the warning's 'own fit' is el.fit's of the points
+    (what they get unresampled, rms ~2.4), not the fit started from the resampled curve
+    (main: 9-53 mm, 3-18 x)."""
+    xy = qa_scan(0.9, 150.0, 0.005)
+    own = el.fit(xy).rms
+    assert own == pytest.approx(quiet_fit(xy, model="smooth").rms, rel=0.01)
+    for step in (5.0, 20.0, 50.0):
+        with warnings.catch_warnings(record=True) as said:
+            warnings.simplefilter("always")
+            f = el.fit_resampled(xy, step, model)
+        what = f"{model} step {step:g}: rms {f.rms:.4g}, reference {f.reference_rms}, own {own:.4g}"
+        warned = [w for w in said if issubclass(w.category, el.ResampleWarning)]
+        assert warned and f.reference_rms is not None, what
+        assert f.reference_rms == pytest.approx(own, rel=0.01), what
+        assert f.rms / f.reference_rms > 20.0, what
+        assert f"their own fit's {f.reference_rms:.3g}" in str(warned[0].message), what
+        # FreeCAD's call (fit_core._far_from_resampled) gives the same reference
+        assert el.resampled_reference(xy, f.rms, f.polygon, f.curve) == f.reference_rms, what
+
+
+def test_the_gentle_scan_keeps_its_warning():
+    """The QA's gentle case (k 0.5, lambda 400 mm, noise 0.5 mm, step 50), right before:
+    the discrete fit warned at 1.20 x their own fit's 0.465 mm, the smooth one not."""
+    xy = qa_scan(0.5, 400.0, 0.5 / 888.0)
+    own = el.fit(xy).rms
+    with warnings.catch_warnings(record=True) as said:
+        warnings.simplefilter("always")
+        d = el.fit_resampled(xy, 50.0, "discrete")
+        s = el.fit_resampled(xy, 50.0, "smooth")
+    assert d.reference_rms == pytest.approx(own, rel=0.01)
+    assert 1.2 < d.rms / d.reference_rms < 1.3
+    assert s.reference_rms is None
+    assert len([w for w in said if issubclass(w.category, el.ResampleWarning)]) == 1
