@@ -72,8 +72,10 @@ class NotConvergedError(ElasticaError):
 
 class LengthRangeError(NotConvergedError):
     """A length beyond the splines the solve reached (EL_ERANGE): ``shortest``, ``longest``
-    (the lengths met following the family of splines through the points), ``longest_fair``
-    (the longest of them that does not cross itself, 0 if none) and ``polygon``."""
+    (the least and greatest lengths met on the one family of splines the solver followed:
+    the range it met, not a bound on the splines through the points; others, e.g. tension
+    mode's, may be shorter or longer), ``longest_fair`` (the longest of them that does not
+    cross itself, 0 if none) and ``polygon``."""
 
 
 class DomainError(ElasticaError):

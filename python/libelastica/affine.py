@@ -484,8 +484,11 @@ class G2Quadratic:
     the pieces are G2 inside, not there) the largest angle (radians) between their tangents
     and the largest jump of their signed curvature (1/length); 0 with one piece.
     end_curvature_error: at the source's own ends that the splines reach, the largest
-    relative curvature error |k - k_src| / max(|k|, |k_src|) (curvature_jump's measure;
-    k_src of point data from a cubic fitted to the end's samples); None when neither end is
+    curvature error relative to the source's curvature scale, |k - k_src| / max(|k_src|,
+    max |kappa| of the source over that end piece's span) (of point data: k_src from a
+    cubic fitted to the end's samples, the maximum of their three-point curvature; at an
+    end of zero curvature, e.g. an inflection, |k - k_src| / max(|k|, |k_src|) read ~1 at
+    every n); None when neither end is
     reached. ~1e-12 where the end vertex could be placed (see g2_quadratic), else what the
     uniform construction gives (~0.29 on an arc at any n).
     dropped: the source's arc length left out at (start, end) (0, 0 when covers_source)."""
@@ -668,9 +671,23 @@ def _matched_ends(x: np.ndarray, start, end, k_start: Optional[float],
     return y
 
 
-def _rel_err(a: float, b: float) -> float:
-    m = max(abs(a), abs(b))
+def _rel_err(a: float, b: float, scale: float = 0.0) -> float:
+    """|a - b| / max(|a|, |b|) (scale 0), or |a - b| / max(|b|, scale): relative to the
+    source's curvature scale (end_curvature_error; QA13: near an end of zero curvature the
+    first read ~1 whatever the size of the error)."""
+    m = max(abs(a), abs(b)) if scale <= 0.0 else max(abs(b), scale)
     return abs(a - b) / m if m > 0 else 0.0
+
+
+def _menger_max(x: np.ndarray) -> float:
+    """Largest discrete (three-point) curvature of sampled points, 0 for fewer than 3."""
+    if len(x) < 3:
+        return 0.0
+    a, b = x[1:-1] - x[:-2], x[2:] - x[1:-1]
+    cross = np.abs(a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0])
+    den = np.linalg.norm(a, axis=1) * np.linalg.norm(b, axis=1) * np.linalg.norm(x[2:] - x[:-2], axis=1)
+    ok = den > 0
+    return float(np.max(2.0 * cross[ok] / den[ok])) if ok.any() else 0.0
 
 
 def _joins(splines) -> Tuple[float, float]:
@@ -783,8 +800,15 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                 terr = max(terr, abs(math.atan2(vec[0] * ref[1] - vec[1] * ref[0],
                                                 vec[0] * ref[0] + vec[1] * ref[1])))
         splines.append(bs)
-    kerr = [_rel_err(float(b.curvature(b.knots[[j]])[0]), k) for b, j, k, kept in
-            ((splines[0], 0, k_src[0], covers[0]), (splines[-1], -1, k_src[1], covers[1]))
+    # the source's curvature scale over each end piece's span: max |kappa| there
+    if is_curve:
+        kscale = [float(np.max(np.abs(c.curvature(np.linspace(s_ends[p], s_ends[p + 1], 201)))))
+                  for p in (0, npieces - 1)]
+    else:
+        kscale = [_menger_max(samples[idx[p]:idx[p + 1] + 1]) for p in (0, npieces - 1)]
+    kerr = [_rel_err(float(b.curvature(b.knots[[j]])[0]), k, ks) for b, j, k, ks, kept in
+            ((splines[0], 0, k_src[0], kscale[0], covers[0]),
+             (splines[-1], -1, k_src[1], kscale[1], covers[1]))
             if kept and k is not None]
     if not all(covers):
         gone = " and ".join(f"{d:.4g} at its {w}" for d, w in zip(dropped, ("start", "end"))

@@ -391,9 +391,12 @@ def _print_fit(rec: Dict[str, Any]) -> None:
     if rec.get("curve"):
         print("parameters  " + ", ".join(f"{k}={_fmt(v)}" for k, v in rec["curve"].items()
                                          if k != "type"))
-        how = {"orthogonal": "point-to-curve", "paired": "point-to-curve; fitted paired"}.get(
-            rec.get("distance"), "")
-        print(f"rms         {_fmt(rec['rms'])}" + (f"   ({how} distances)" if how else ""))
+        if "fitted_points" in rec:   # --step: whatever distance fitted the polygon (QA13)
+            how = "point-to-curve: the file's points to the curve drawn"
+        else:
+            how = {"orthogonal": "point-to-curve distances",
+                   "paired": "point-to-curve distances; fitted paired"}.get(rec.get("distance"), "")
+        print(f"rms         {_fmt(rec['rms'])}" + (f"   ({how})" if how else ""))
         print(f"max error   {_fmt(rec['max_error'])}")
         print(f"iterations  {rec['iterations']}")
     if rec.get("bspline"):

@@ -97,7 +97,8 @@ def cmd_g2quad(args) -> int:
             print(f"  end tangents off the source's by at most {np.degrees(g.end_tangent_error):.3g} deg")
         if g.end_curvature_error is not None:
             print(f"  end curvature off the source's by at most {g.end_curvature_error:.3g} "
-                  "(relative)")
+                  "(relative to the source's curvature scale: |k - k_src| / max(|k_src|, "
+                  "max |kappa| of the source over the end piece))")
     for spec in (args.svg, args.png):
         if spec:
             curves = []

@@ -208,8 +208,10 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
     the message names that dimensionless tension); by length, :class:`LengthRangeError`
     (a NotConvergedError) where the length lies beyond every spline met following the
     family of splines through the points, its message and ``shortest``, ``longest``,
-    ``longest_fair`` (without loops) and ``polygon`` saying how far it reached. ``tension`` is in 1/units^2 of the
-    points: the same batten in mm takes 1e-6 x its tension in m.
+    ``longest_fair`` (without loops) and ``polygon`` saying how far that one family reached
+    (the range it met, not a bound: other splines may be shorter or longer; tension mode
+    reaches others, and a spline's ``pieces`` as ``initial`` start length mode on their
+    family). ``tension`` is in 1/units^2 of the points: the same batten in mm takes 1e-6 x its tension in m.
     """
     pts = as_points(points, "points")
     if not np.all(np.isfinite(pts)):
@@ -295,15 +297,21 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
         if st == lib.EL_ERANGE:
             lo, hi, fair = (float(res.reach[i]) for i in range(3))
             side = "longest" if L > hi else "shortest"
+            # reach is what the one family the solver followed met (elastica.h), not a
+            # bound on the splines through the points: QA13's 8-point walk met one spline
+            # (11.28 x) while tension mode gives fair ones of 1.03 .. 1.8 x
             err = LengthRangeError(st, (
                 f"elastic_spline: no spline of length {L:.6g} ({L / polygon:.4g} x the polygon, "
-                f"{polygon:.6g}) was reached: the {side} spline through these points found is "
-                f"{(hi if L > hi else lo) / polygon:.4g} x the polygon ({hi if L > hi else lo:.6g}); "
-                f"the lengths found span {lo / polygon:.4g} .. {hi / polygon:.4g} x" + (
+                f"{polygon:.6g}) was reached: the family of splines the solver followed "
+                f"(continuation in the tension) met lengths {lo / polygon:.4g} .. "
+                f"{hi / polygon:.4g} x the polygon ({lo:.6g} .. {hi:.6g})" + (
                     f", without loops up to {fair / polygon:.4g} x ({fair:.6g})" if fair > 0.0
                     else ", every one with loops")
-                + ("; a shorter one needs a tension beyond the solver's reach (elastica.h: "
-                   "Accuracy)" if L < lo else "")))
+                + f"; the {side} it met is not a bound: other splines through these points may "
+                "exist; tension mode reaches others (a larger tension gives a shorter "
+                "spline; the solver resolves tension x (longest span)^2 up to ~300, "
+                "elastica.h: Accuracy), and its pieces as initial= start length mode on "
+                "their family"))
             err.shortest, err.longest, err.longest_fair, err.polygon = lo, hi, fair, polygon
             err.spline = None
             raise err

@@ -508,7 +508,7 @@ class SplineTest(unittest.TestCase):
                  ([(zigzag, [])], {"Tension": 0.0}, "slides off"),
                  ([(arch, [])], {"Mode": "length", "Length": 1000.0},
                   "no spline of length 1000 (10.13 x the polygon, 98.7456) was reached: the "
-                  "longest spline through these points found is "),
+                  "family of splines the solver followed "),
                  ([(self.sk, ["Vertex9"])], {}, "has no")]
         for sources, opts, words in cases:
             del C.MESSAGES[:]

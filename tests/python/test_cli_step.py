@@ -70,6 +70,9 @@ def test_step_reports_the_files_points(scan, tmp_path, capsys, model, step):
     code, text, err = cli(capsys, "fit", path, "--step", step, "--model", model)
     line = next(ln for ln in text.splitlines() if ln.startswith("rms "))
     assert float(line.split()[1]) == pytest.approx(own_rms, rel=1e-5), text
+    # and says what it is (QA13: "(point-to-curve; fitted paired distances)" at 5 and 60)
+    assert "(point-to-curve: the file's points to the curve drawn)" in line, line
+    assert "paired" not in line, line
 
 
 def test_a_coarse_step_says_its_points_lie_far(scan, tmp_path, capsys):
@@ -83,3 +86,6 @@ def test_a_coarse_step_says_its_points_lie_far(scan, tmp_path, capsys):
     assert rec["rms"] > 4 * rec["resample_reference_rms"] > 4 * 3.5, rec["rms"]
     assert "resampled at 600 lies" in err and "a shorter step, or none, fits them closer" in err
     assert f"{rec['rms']:.3g} from them (rms)" in err, err
+    line = next(ln for ln in cli(capsys, "fit", path, "--step", "600")[1].splitlines()
+                if ln.startswith("rms "))
+    assert "(point-to-curve: the file's points to the curve drawn)" in line, line

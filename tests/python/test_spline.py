@@ -611,8 +611,8 @@ def test_length_beyond_reach_names_the_range(tmp_path):
     its message and attributes giving the lengths met and the longest without loops;
     the CLI says the same (exit 1). Before: "no spline through the points was reached"."""
     pts, poly = star()
-    with pytest.raises(el.LengthRangeError, match=r"the longest spline through these points "
-                       r"found is 5\.\d+ x the polygon") as e:
+    with pytest.raises(el.LengthRangeError, match=r"the family of splines the solver followed "
+                       r"\(continuation in the tension\) met lengths 1\.\d+ \.\. 5\.\d+ x the polygon") as e:
         el.elastic_spline(pts, length=6 * poly, closed=True)
     err = e.value
     assert isinstance(err, el.NotConvergedError) and err.spline is None
@@ -621,8 +621,34 @@ def test_length_beyond_reach_names_the_range(tmp_path):
     f = tmp_path / "star.csv"
     np.savetxt(f, pts, delimiter=",")
     r = run("spline", f, "--closed", "--length", 6 * poly)
-    assert r.returncode == 1 and "the longest spline through these points found is" in r.stderr, r.stderr
+    assert r.returncode == 1 and "the family of splines the solver followed" in r.stderr, r.stderr
     sq, p4 = star(4, 1.0, 0.4)
-    with pytest.raises(el.LengthRangeError, match="the shortest spline through these points found is "
-                       r".*a shorter one needs a tension beyond the solver's reach"):
+    with pytest.raises(el.LengthRangeError, match=r"the shortest it met is not a bound: other splines "
+                       r".*tension mode reaches others"):
         el.elastic_spline(sq, length=1.02 * p4, closed=True)
+
+
+def test_length_range_is_what_the_family_met_not_a_bound():
+    """QA13: an 8-point random walk raised at every length 1.05 .. 15 x its polygon "the
+    lengths found span 11.28 .. 11.28 x" and "a shorter one needs a tension beyond the
+    solver's reach", while tension mode gives fair splines of 1.03 .. 1.8 x (sigma h^2
+    300 .. 1): the range is only what the one family followed met. The message says that
+    and points to tension mode, and the tension-mode splines it points to exist."""
+    P = np.cumsum(np.random.default_rng(1).normal(0, 10, (8, 2)), axis=0)
+    d = np.hypot(*np.diff(P, axis=0).T)
+    poly, h = d.sum(), d.max()
+    with pytest.raises(el.LengthRangeError) as e:
+        el.elastic_spline(P, length=1.2 * poly)
+    m, err = str(e.value), e.value
+    assert "beyond the solver's reach" not in m and "the lengths found span" not in m, m
+    assert "the family of splines the solver followed" in m and "not a bound" in m, m
+    assert "tension mode reaches others" in m, m
+    assert err.shortest > 10 * poly   # the attributes are kept: the range that family met
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        sp = el.elastic_spline(P, tension=10.0 / h ** 2)
+    assert sp.loops == 0 and sp.length < 1.2 * poly < err.shortest
+    # and the start it suggests reaches the length asked
+    assert "as initial= start length mode" in m, m
+    r = el.elastic_spline(P, length=1.2 * poly, initial=sp.pieces)
+    assert r.loops == 0 and r.length == pytest.approx(1.2 * poly, rel=1e-9)

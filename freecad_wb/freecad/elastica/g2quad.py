@@ -100,8 +100,9 @@ class G2QuadProxy(FeatureProxy):
         add_property(obj, "App::PropertyFloat", "EndTangentError", "Result",
                      "Largest angle between a piece's end tangent and the source's (degrees)")
         add_property(obj, "App::PropertyFloat", "EndCurvatureError", "Result",
-                     "Largest relative error |k - k_source| / max(|k|, |k_source|) of the "
-                     "curvature at the source's ends (0 when neither is reached): ~1e-12 where "
+                     "Largest error of the curvature at the source's ends relative to the "
+                     "source's curvature scale, |k - k_source| / max(|k_source|, max |kappa| of "
+                     "the source over the end piece) (0 when neither is reached): ~1e-12 where "
                      "the end vertex could be placed for it, else the uniform end's (~0.29 on an "
                      "arc; few edges for the turning): continuing G2 from an end meets that jump")
         add_property(obj, "App::PropertyInteger", "Pieces", "Result",

@@ -564,7 +564,8 @@ class G2QuadPanel(Panel):
                 + (f"where the pieces meet: tangents {o.JoinAngle:.2g}\u00b0 apart, curvature "
                    f"jump {o.JoinCurvatureJump:.2g}/mm (not G2 there)<br>" if o.Pieces > 1 else "")
                 + f"end tangents off by {o.EndTangentError:.2g}\u00b0, end curvature by "
-                f"{getattr(o, 'EndCurvatureError', 0.0):.2g} (relative)<br>{o.Status}")
+                f"{getattr(o, 'EndCurvatureError', 0.0):.2g} (relative to the source's largest curvature "
+                f"over the end piece)<br>{o.Status}")
 
 
 class CombPanel(Panel):
