@@ -21,7 +21,7 @@ from .affine import (AffinePolyline, OsculatingConics, affine_coords, affine_cur
                      affine_curvature_exact, affine_elements, affine_length, affine_polyline,
                      chaikin, elastica_affine_curvature, elastica_inflections, lane_riesenfeld,
                      osculating_conics, parabolic_lengths, quadratic_bspline, uniform_bspline,
-                     CoverageWarning, G2Quadratic, g2_bspline, g2_quadratic,
-                     quadratic_joint_curvatures)
+                     g2_bspline, quadratic_joint_curvatures)
+from .g2quad import CoverageWarning, G2Quadratic, g2_quadratic
 
 __version__ = "0.1.0"

@@ -1,0 +1,385 @@
+"""One curvature-continuous quadratic B-spline per inflection-free piece of a curve
+(seed 002 §4-5): :func:`g2_quadratic` and its result :class:`G2Quadratic`, built on the
+affine arc-length polylines of affine.py; the ends matched to the source's curvature, the
+reports (deviation, joints, end errors, what is left out).
+"""
+from __future__ import annotations
+
+import dataclasses
+import math
+import warnings
+from dataclasses import dataclass
+from typing import Optional, Tuple
+
+import numpy as np
+
+from ._ffi import DomainError, as_points
+from .affine import (AffinePolyline, affine_polyline, elastica_inflections, g2_bspline,
+                     quadratic_joint_curvatures)
+
+__all__ = ["G2Quadratic", "CoverageWarning", "g2_quadratic"]
+
+
+@dataclass
+class G2Quadratic:
+    """Result of :func:`g2_quadratic`.
+
+    bsplines: one curvature-continuous quadratic B-spline per inflection-free piece,
+    piece p running exactly from ends[p] to ends[p+1] (the source's ends and its
+    inflection points); polyline: the affine arc-length polyline (seed 002 §4) they
+    come from; deviation: the largest distance of the splines from the source (its
+    sample polyline); curvature_jump: the largest relative curvature jump at any
+    joint inside a piece (0 up to rounding: G2); end_tangent_error: the largest angle
+    (radians) between a piece's end tangent and the source's there (None when the
+    source's tangents are unknown; a quadratic end segment that meets its joint G2
+    has no freedom left for the tangent, the error is O(edge)); covers_source: False
+    when an end piece next to an inflection was too short to keep, so the splines
+    start / stop at that inflection (§4.4); ends_covered: (start, end), which of the two
+    ends is kept (covers_source: both); fit: with ``fit=True`` the FitResult of the
+    smooth elastica fitted to the points (the source then; its rms / max_error are the
+    points' distances to it), else None.
+    join_angle / join_curvature_jump: where two pieces meet (at the source's inflections;
+    the pieces are G2 inside, not there) the largest angle (radians) between their tangents
+    and the largest jump of their signed curvature (1/length); 0 with one piece.
+    end_curvature_error: at the source's own ends that the splines reach, the largest
+    curvature error relative to the source's curvature scale, |k - k_src| / max(|k_src|,
+    max |kappa| of the source over that end piece's span) (of point data: k_src from a
+    cubic fitted to the end's samples, the maximum of their three-point curvature; at an
+    end of zero curvature, e.g. an inflection, |k - k_src| / max(|k|, |k_src|) read ~1 at
+    every n); None when neither end is
+    reached. ~1e-12 where the end vertex could be placed (see g2_quadratic), else what the
+    uniform construction gives (~0.29 on an arc at any n).
+    dropped: the source's arc length left out at (start, end) (0, 0 when covers_source)."""
+    bsplines: list
+    polyline: AffinePolyline
+    ends: np.ndarray
+    deviation: float
+    curvature_jump: float
+    end_tangent_error: Optional[float]
+    covers_source: bool
+    fit: Optional[object] = None
+    ends_covered: Tuple[bool, bool] = (True, True)
+    join_angle: float = 0.0
+    join_curvature_jump: float = 0.0
+    end_curvature_error: Optional[float] = None
+    dropped: Tuple[float, float] = (0.0, 0.0)
+
+    def g2_summary(self) -> str:
+        """Which joints are G2, in words (the CLI's and FreeCAD's line): the joints inside
+        a piece by curvature_jump; where pieces meet (inflections) by their angle and jump."""
+        inside = f"largest relative curvature jump at a joint inside a piece: " \
+                 f"{self.curvature_jump:.2g} (G2 inside each piece)"
+        if len(self.bsplines) < 2:
+            return inside
+        return (f"{inside}; where the {len(self.bsplines)} pieces meet (inflections): tangents "
+                f"{math.degrees(self.join_angle):.3g} deg apart, curvature jump "
+                f"{self.join_curvature_jump:.3g} (not G2 there)")
+
+    @property
+    def npoles(self) -> int:
+        return int(sum(b.npoles for b in self.bsplines))
+
+
+def _spline_deviation(bs, samples: np.ndarray, lo: float, hi: float) -> float:
+    """Largest distance of one piece's spline from the source polyline ``samples``,
+    sample range [lo, hi] (f~ parameters; 16 points per knot span)."""
+    from .report import closest_points
+    K = np.asarray(bs.knots)
+    u = np.concatenate([np.linspace(a, b, 16, endpoint=False) for a, b in zip(K[:-1], K[1:])]
+                       + [K[-1:]])
+    xy = bs(u)
+    a, b = max(0, int(math.floor(lo)) - 1), min(len(samples), int(math.ceil(hi)) + 2)
+    src = samples[a:b]
+    worst = 0.0
+    for chunk in range(0, len(xy), 256):    # bounded memory: 256 points x the piece's samples
+        p = xy[chunk:chunk + 256]
+        worst = max(worst, float(np.max(np.linalg.norm(closest_points(p, src) - p, axis=1))))
+    return worst
+
+
+def _sign_changes(points: np.ndarray) -> int:
+    """How often the discrete curvature det(x_i - x_{i-1}, x_{i+1} - x_i) of the points
+    changes sign (zeros skipped): a curve's inflections, and as many again as noise or
+    rounding adds (801 samples of an S: 1 exact, 19 rounded to 1e-4, 245 to 1e-3)."""
+    d = np.diff(points, axis=0)
+    a = np.sign(d[:-1, 0] * d[1:, 1] - d[:-1, 1] * d[1:, 0])
+    a = a[a != 0]
+    return int(np.count_nonzero(a[1:] != a[:-1]))
+
+
+# More sign changes of the points' discrete curvature than a piecewise-convex profile's few
+# inflections: noise (_sign_changes), named as such in g2_quadratic's DomainError.
+NOISY_SIGN_CHANGES = 3
+
+
+def _noisy_points_error(exc: DomainError, points: np.ndarray) -> DomainError:
+    """g2_quadratic's DomainError for point data: the cause, how noisy the points are, and
+    the way out (fit=True)."""
+    flips = _sign_changes(points)
+    why = str(exc)
+    if flips > NOISY_SIGN_CHANGES:   # the C status's list of causes is beside the point
+        why = (f"{why.split(':')[0]}: the points are too noisy for the construction: their "
+               f"discrete curvature changes sign {flips} times over {len(points)} points; its "
+               "affine arc length takes their second and third differences (seed 002 (1), "
+               "(15)), so it needs a piecewise-convex curve to high accuracy")
+    return DomainError(exc.status, f"{why}; fit=True (`elastica g2quad FILE --fit`) fits one "
+                       "smooth elastica to the points first and builds from it, or pass a fitted "
+                       "SmoothElastica (`elastica fit --model smooth --json`, then `elastica "
+                       "g2quad fit.json`)")
+
+
+class CoverageWarning(RuntimeWarning):
+    """:func:`g2_quadratic`'s warning that its splines leave part of the source out (an end
+    piece next to an inflection too short for 3 edges: ``G2Quadratic.dropped``)."""
+
+
+def _end_curvature(samples: np.ndarray, reverse: bool, tangents=None) -> Optional[float]:
+    """Signed curvature at the first (reverse: the last) of dense samples of a curve, in
+    the direction of travel, from the 8 samples at that end (chord length s): with their
+    tangents, theta'(0) of a cubic theta(s) by least squares (first differences: the
+    samples' rounding counts ~1/s less); without, det(x', x'') / |x'|^3 of x(s), y(s)
+    cubics. None for fewer than 5 samples."""
+    q = samples[::-1] if reverse else samples
+    q = q[:8] - q[0]
+    if len(q) < 5:
+        return None
+    s = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(q, axis=0), axis=1))])
+    if not s[-1] > 0:
+        return None
+    V = np.vander(s / s[-1], 4, increasing=True)
+    if tangents is not None:
+        t = (tangents[::-1] if reverse else tangents)[:8]
+        theta = np.unwrap(np.arctan2(t[:, 1], t[:, 0]))
+        k = np.linalg.lstsq(V, theta - theta[0], rcond=None)[0][1] / s[-1]
+    else:
+        c = np.linalg.lstsq(V, q, rcond=None)[0]
+        d1, d2 = c[1] / s[-1], 2.0 * c[2] / s[-1] ** 2
+        k = (d1[0] * d2[1] - d1[1] * d2[0]) / np.hypot(*d1) ** 3
+    return float(-k if reverse else k)      # (backwards from the end: the sign turns)
+
+
+def _start_curvature(bs) -> float:
+    """Curvature at the start of a clamped quadratic B-spline: det(b1-b0, b2-b1) / (2|b1-b0|^3)
+    of its first Bezier segment (b2 the joint of poles 1, 2)."""
+    P, K = bs.poles, bs.knots
+    j = ((K[2] - K[1]) * P[1] + (K[1] - K[0]) * P[2]) / (K[2] - K[0])
+    d0, d1 = P[1] - P[0], j - P[1]
+    return float((d0[0] * d1[1] - d0[1] * d1[0]) / (2.0 * np.linalg.norm(d0) ** 3))
+
+
+def _match_start(x: np.ndarray, start, end, kappa: float) -> Optional[np.ndarray]:
+    """The polyline x (>= 6 vertices) with x_1 moved so that g2_bspline(x, start, end) starts
+    with curvature kappa, or None (no such place within 0.5..1.5 x its edge).
+    Why: the vertices lie on the source, so the uniform spline runs inside it by ~kappa h^2/8
+    and the end parabola (start, c, m_2) bridging to it over ~1.5 h ends with ~0.71 kappa on
+    a circle (legs 0.793 h and h/sqrt 2: (0.707/0.793)^3). x_1 slides on the line
+    det(x_2 - x_1, v_2) = A (v_1 = t u + (A/|v_2|) w, u = v_2/|v_2|, det(w, u) = 1), which keeps
+    A_2 = A and so every joint G2; t moves m_2, v_1 and the end parabola's legs, and the root
+    of its start curvature - kappa is taken nearest the polyline's own t (bisection)."""
+    v2 = x[3] - x[2]
+    A = float(v2[1] * (x[2] - x[1])[0] - v2[0] * (x[2] - x[1])[1])
+    n2 = float(np.hypot(*v2))
+    u = v2 / n2
+    w = np.array([u[1], -u[0]])
+    t0 = float((x[2] - x[1]) @ u)
+
+    def f(t):
+        y = x.copy()
+        y[1] = x[2] - (t * u + (A / n2) * w)
+        try:
+            return _start_curvature(g2_bspline(y, start, end)) - kappa, y
+        except DomainError:
+            return math.nan, y
+    ts = t0 * np.linspace(0.5, 1.5, 41)
+    fs = np.array([f(t)[0] for t in ts])
+    ok = np.isfinite(fs[:-1]) & np.isfinite(fs[1:]) & (np.sign(fs[:-1]) != np.sign(fs[1:]))
+    if not ok.any():
+        return None
+    i = int(np.nonzero(ok)[0][np.argmin(np.abs(np.nonzero(ok)[0] - 20))])
+    lo, hi, flo = ts[i], ts[i + 1], fs[i]
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        fm = f(mid)[0]
+        if not math.isfinite(fm):
+            return None
+        if np.sign(fm) == np.sign(flo):
+            lo, flo = mid, fm
+        else:
+            hi = mid
+    return f(lo if abs(flo) <= abs(f(hi)[0]) else hi)[1]
+
+
+def _matched_ends(x: np.ndarray, start, end, k_start: Optional[float],
+                  k_end: Optional[float]) -> np.ndarray:
+    """The piece's polyline with x_1 / x_{m-1} moved so its G2 spline's ends have the
+    curvatures k_start / k_end (None, 0 or no such place: that end as it was). The two
+    moves are independent for m >= 5 (x_1 depends on x_2, x_3 only; x_{m-1} on x_{m-2},
+    x_{m-3}); fewer vertices are left as they are."""
+    if len(x) < 6:
+        return x
+    y = x.copy()
+    if k_start:
+        z = _match_start(x, start, end, k_start)
+        if z is not None:
+            y[1] = z[1]
+    if k_end:     # the same at the end, travelled backwards (its curvature changes sign)
+        z = _match_start(x[::-1].copy(), end, start, -k_end)
+        if z is not None:
+            y[-2] = z[1]
+    return y
+
+
+def _rel_err(a: float, b: float, scale: float = 0.0) -> float:
+    """|a - b| / max(|a|, |b|) (scale 0), or |a - b| / max(|b|, scale): relative to the
+    source's curvature scale (end_curvature_error; QA13: near an end of zero curvature the
+    first read ~1 whatever the size of the error)."""
+    m = max(abs(a), abs(b)) if scale <= 0.0 else max(abs(b), scale)
+    return abs(a - b) / m if m > 0 else 0.0
+
+
+def _menger_max(x: np.ndarray) -> float:
+    """Largest discrete (three-point) curvature of sampled points, 0 for fewer than 3."""
+    if len(x) < 3:
+        return 0.0
+    a, b = x[1:-1] - x[:-2], x[2:] - x[1:-1]
+    cross = np.abs(a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0])
+    den = np.linalg.norm(a, axis=1) * np.linalg.norm(b, axis=1) * np.linalg.norm(x[2:] - x[:-2], axis=1)
+    ok = den > 0
+    return float(np.max(2.0 * cross[ok] / den[ok])) if ok.any() else 0.0
+
+
+def _joins(splines) -> Tuple[float, float]:
+    """Largest tangent angle (radians) and signed-curvature jump where consecutive
+    pieces meet."""
+    angle = jump = 0.0
+    for a, b in zip(splines, splines[1:]):
+        ta, tb = a.derivative(a.knots[-1:])[0], b.derivative(b.knots[:1])[0]
+        angle = max(angle, abs(math.atan2(ta[0] * tb[1] - ta[1] * tb[0], ta @ tb)))
+        jump = max(jump, abs(float(a.curvature(a.knots[-1:])[0] - b.curvature(b.knots[:1])[0])))
+    return angle, jump
+
+
+def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents=None,
+                 fit: bool = False, **options) -> G2Quadratic:
+    """Seed 002 end to end: approximate a SmoothElastica or a sampled curve (N+1, 2)
+    by an affine arc-length polyline with n edges (:func:`affine_polyline`, each
+    piece's A adjusted so its last vertex lands on the piece end), then build one
+    curvature-continuous uniform quadratic B-spline per inflection-free piece that
+    ends exactly on the source: at its end points and at its inflections
+    (:func:`g2_bspline`; only the two end segments of a piece are not uniform).
+    ``tangents`` (N+1, 2) of point data sharpen the replacement curve and give the
+    end tangent error; ``options`` go to :func:`affine_polyline`.
+    Measured points are rarely accurate enough for the construction (801 samples of a
+    300 mm S rounded to 1e-4 mm fail): ``fit=True`` fits one smooth elastica to them
+    (:func:`fit`, point-to-curve distance) and builds from that curve (``fit`` of the
+    result: the points' distances to it; ``deviation``: the splines' from it).
+    Raises ValueError / DomainError (straight source, n too small, noisy points: the
+    message counts the sign changes of their discrete curvature, ...); warns
+    (:class:`CoverageWarning`) when part of the source is left out, saying how much.
+    The ends' curvature is the source's (end_curvature_error ~1e-12): the uniform end
+    parabola from the exact end point ends with ~0.71 x it at every n (the polyline's
+    vertices lie on the source, the spline runs inside it by ~kappa h^2/8, and the parabola
+    bridging over ~1.5 h bends differently), so each end piece's x_1 (x_{m-1}) is moved
+    along the line that keeps A_2 = A, to where the end parabola starts with the source's
+    curvature (_match_start; the polyline returned has it). The bridge then shows as a dip
+    inside: on an arc the curvature along the spline stays within 7.5 % of the source's
+    (0.71 at the ends before) at every n; where no such place exists (few edges for the
+    turning: 6 on a k = 1.5 elastica) the end is left uniform and the error says so."""
+    is_curve = hasattr(curve_or_points, "curvature") and hasattr(curve_or_points, "length")
+    if fit:
+        if is_curve or tangents is not None:
+            raise ValueError("g2_quadratic: fit=True fits point data (without tangents); "
+                             "a curve is built from as it is")
+        from .fit import fit as fit_points
+        fitted = fit_points(as_points(curve_or_points, "points"), model="smooth")
+        g = g2_quadratic(fitted.curve, n, samples_per_vertex, **options)
+        g.fit = fitted
+        return g
+    options.setdefault("fit_ends", True)
+    try:
+        ap = affine_polyline(curve_or_points, n, samples_per_vertex=samples_per_vertex,
+                             tangents=None if is_curve else tangents, **options)
+    except DomainError as exc:
+        if is_curve:
+            raise
+        raise _noisy_points_error(exc, as_points(curve_or_points, "points")) from None
+    npieces = len(ap.A)
+    if is_curve:
+        c = curve_or_points
+        bounds = np.concatenate([[0.0], elastica_inflections(c), [c.length]])
+        first = int(np.argmin(np.abs(bounds - ap.s[0])))
+        s_ends = bounds[first:first + npieces + 1]
+        ends = c.points(s_ends)
+        theta = c.angle(s_ends)
+        ends_dir = np.c_[np.cos(theta), np.sin(theta)]
+        total = max(int(samples_per_vertex) * int(n), 4 * (len(bounds) - 1))
+        samples = c.points(np.linspace(0.0, c.length, total + 1))
+        t_ends = s_ends / c.length * total
+        covers = first == 0, first + npieces == len(bounds) - 1
+        k_src = [float(k) for k in c.curvature(np.array([0.0, c.length]))]
+        dropped = float(s_ends[0]), float(c.length - s_ends[-1])
+        length = float(c.length)
+    else:
+        samples = as_points(curve_or_points, "points")
+        t_ends = np.concatenate([[ap.t[0]], ap.infl_param, [round(float(ap.t[-1]))]])
+        idx = t_ends.astype(int)
+        ends = samples[idx]
+        ends_dir = None
+        if tangents is not None:
+            tan = as_points(tangents, "tangents")
+            ends_dir = tan[idx] / np.linalg.norm(tan[idx], axis=1)[:, None]
+        covers = idx[0] == 0, idx[-1] == len(samples) - 1
+        tan = None if tangents is None else as_points(tangents, "tangents")
+        k_src = [_end_curvature(samples, False, tan), _end_curvature(samples, True, tan)]
+        seg = np.linalg.norm(np.diff(samples, axis=0), axis=1)
+        dropped = float(seg[:idx[0]].sum()), float(seg[idx[-1]:].sum())
+        length = float(seg.sum())
+    splines, jump, dev, terr = [], 0.0, 0.0, 0.0
+    poly = ap.points.copy()
+    for p in range(npieces):
+        a, b = ap.piece_start[p], ap.piece_start[p + 1]
+        x = _matched_ends(ap.points[a:b + 1], ends[p], ends[p + 1],
+                          k_src[0] if p == 0 and covers[0] else None,
+                          k_src[1] if p == npieces - 1 and covers[1] else None)
+        poly[a:b + 1] = x
+        try:
+            bs = g2_bspline(x, ends[p], ends[p + 1])
+        except DomainError as exc:       # an end beside its joint's tangent: noisy points
+            if is_curve:
+                raise
+            raise _noisy_points_error(exc, samples) from None
+        kl, kr = quadratic_joint_curvatures(bs)
+        if len(kl):
+            jump = max(jump, float(np.max(np.abs(kl - kr) / np.maximum(np.abs(kl), np.abs(kr)))))
+        dev = max(dev, _spline_deviation(bs, samples, t_ends[p], t_ends[p + 1]))
+        if ends_dir is not None:
+            d = bs.derivative(np.array([bs.knots[0], bs.knots[-1]]))
+            for vec, ref in ((d[0], ends_dir[p]), (d[1], ends_dir[p + 1])):
+                terr = max(terr, abs(math.atan2(vec[0] * ref[1] - vec[1] * ref[0],
+                                                vec[0] * ref[0] + vec[1] * ref[1])))
+        splines.append(bs)
+    # the source's curvature scale over each end piece's span: max |kappa| there
+    if is_curve:
+        kscale = [float(np.max(np.abs(c.curvature(np.linspace(s_ends[p], s_ends[p + 1], 201)))))
+                  for p in (0, npieces - 1)]
+    else:
+        kscale = [_menger_max(samples[idx[p]:idx[p + 1] + 1]) for p in (0, npieces - 1)]
+    kerr = [_rel_err(float(b.curvature(b.knots[[j]])[0]), k, ks) for b, j, k, ks, kept in
+            ((splines[0], 0, k_src[0], kscale[0], covers[0]),
+             (splines[-1], -1, k_src[1], kscale[1], covers[1]))
+            if kept and k is not None]
+    if not all(covers):
+        gone = " and ".join(f"{d:.4g} at its {w}" for d, w in zip(dropped, ("start", "end"))
+                            if d > 0)
+        warnings.warn(f"g2_quadratic: the splines leave out {gone} of the source (length "
+                      f"{length:.4g}): an end piece beyond an inflection is too short for 3 of "
+                      f"the {n} edges, so they stop at the inflection; more edges cover it",
+                      CoverageWarning,
+                      stacklevel=2)
+    angle, kjump = _joins(splines)
+    ap = dataclasses.replace(ap, points=poly)
+    return G2Quadratic(splines, ap, np.asarray(ends), dev, jump,
+                       terr if ends_dir is not None else None, bool(all(covers)),
+                       ends_covered=(bool(covers[0]), bool(covers[1])), join_angle=angle,
+                       join_curvature_jump=kjump,
+                       end_curvature_error=max(kerr) if kerr else None, dropped=dropped)
