@@ -234,6 +234,91 @@ def unit_schemas(doc, b):
         App.Units.setSchema(old)
 
 
+def tension_mode_and_g2_reach(doc, sk, right, left):
+    """QA12: 'a tension' after a blend by length kept the length mode's tension (it reset
+    Tension to 0, which the panel had just said no batten joins these ends at); a G2 blend
+    pulled beyond its reach names a tension that solves (it said 0.00177 to 3 digits, and
+    0.00176823 failed as "no G2 blend at tension 0.00177")."""
+    from freecad.elastica import taskpanels as T
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(doc.Name, sk.Name, right, 100, 18, 0)
+    Gui.Selection.addSelection(doc.Name, sk.Name, left, 0, 28, 0)
+    Gui.runCommand("Elastica_Blend")
+    G.wait(300)
+    panel = T.CURRENT[0]
+    b = panel.obj
+    sigma, length = b.BlendTension, b.BlendLength
+    panel.mode.setCurrentIndex(1)
+    G.wait(900)
+    G.check(b.Mode == "tension" and sigma != 0.0 and b.Tension == sigma and
+            not b.Status.startswith("error") and abs(b.BlendLength - length) < 1e-6 and
+            panel.tension.text() != "0 1/mm\u00b2",
+            f"'a tension' keeps the length mode's tension {sigma} ({b.Tension}, "
+            f"{panel.tension.text()!r}, {b.Status})")
+    G.screenshot("gui_blend_tension_kept.png")
+    panel.continuity.setCurrentIndex(1)
+    G.wait(900)
+    retype(panel.tension, "0.003")
+    key(panel.tension.lineEdit(), QtCore.Qt.Key_Tab)
+    G.wait(900)
+    import re
+    found = re.search("largest tension a G2 batten was found at is about ([0-9.e-]+) 1/mm",
+                      b.Status)
+    G.check(b.Status.startswith("error: no G2 blend at tension 0.003 1/mm") and found,
+            f"G2 beyond its reach: the largest tension found said ({b.Status})")
+    Gui.SendMsgToActiveView("ViewTop")
+    G.screenshot("gui_blend_g2_reach.png")
+    if found:
+        retype(panel.tension, found.group(1))
+        key(panel.tension.lineEdit(), QtCore.Qt.Key_Tab)
+        G.wait(900)
+        G.check(b.Tension == float(found.group(1)) and b.Status.startswith("G2 from"),
+                f"the tension said, typed: a G2 blend ({b.Tension}, {b.Status})")
+        G.screenshot("gui_blend_g2_reach_typed.png")
+    panel.reject()
+    G.pump()
+
+
+def bound_length_toggled(doc, sk, right, left):
+    """QA12: Length bound to a spreadsheet, the free batten (tension 0) asked and the ends
+    toggled to ones no free batten joins: length mode at the bound length (the binding
+    stays), said on the warning line; it stayed at tension 0 with the bare error."""
+    from freecad.elastica import taskpanels as T
+    ss = doc.addObject("Spreadsheet::Sheet", "LenSheet")
+    ss.set("A1", "=160 mm")
+    ss.setAlias("A1", "len")
+    doc.recompute()
+    panel = G.open_panel(doc, "Elastica_Blend", [(sk, right), (sk, left)], "Bound length")
+    b = panel.obj
+    panel.accept()
+    G.pump()
+    b.setExpression("Length", "LenSheet.len")
+    doc.recompute()
+    G.check(b.Mode == "tension" and b.Tension == 0.0 and ends_of(b) == BOTTOMS,
+            f"the free batten at the bottoms, Length bound ({b.Mode}, {ends_of(b)})")
+    Gui.ActiveDocument.setEdit(b.Name)
+    G.wait(300)
+    panel = T.CURRENT[0]
+    panel.end1.click()
+    G.wait(600)
+    panel.end2.click()
+    G.wait(900)
+    said = panel.warning[1].text()
+    G.check(ends_of(b) == TOPS and b.Mode == "length" and b.Length.Value == 160.0 and
+            panel.mode.currentIndex() == 0 and not b.Status.startswith("error") and
+            dict(b.ExpressionEngine).get("Length") == "LenSheet.len",
+            f"bound Length, ends no free batten joins: by the bound length ({b.Mode}, "
+            f"{b.Length}, {b.ExpressionEngine}, {b.Status})")
+    G.check(panel.warning[0].isVisible() and "No free batten" in said and "LenSheet.len" in said
+            and "160 mm" in said, f"bound Length: the panel says why by length ({said})")
+    Gui.SendMsgToActiveView("ViewTop")
+    G.screenshot("gui_blend_bound_length_toggled.png")
+    panel.accept()
+    G.pump()
+    G.check(b.Mode == "length" and dict(b.ExpressionEngine).get("Length") == "LenSheet.len",
+            f"OK keeps the binding ({b.Mode}, {b.ExpressionEngine})")
+
+
 def run_all(smoke):
     global G
     G = smoke
@@ -242,4 +327,6 @@ def run_all(smoke):
     b = ends_toggled(doc, sk, right, left)
     bound_tension(doc, b)
     unit_schemas(doc, b)
+    tension_mode_and_g2_reach(doc, sk, right, left)
+    bound_length_toggled(doc, sk, right, left)
     App.closeDocument(doc.Name)

@@ -122,6 +122,21 @@ class G2QuadTest(unittest.TestCase):
         self.assertLess(max(errs), 1e-4)
         self.assertAlmostEqual(q.EndCurvatureError, max(errs), delta=1e-4)
 
+    def test_panel_shows_no_end_curvature_error_until_computed(self):
+        """QA12: the panel of an object not recomputed yet said "end curvature by 0
+        (relative)" (the unset EndCurvatureError); it says "-" until computed."""
+        import types
+        from freecad.elastica import taskpanels as T
+        q = Q.make(self.doc, [(self.sk, ["Edge1"])], Edges=24)
+        text = T.G2QuadPanel.result_text(types.SimpleNamespace(obj=q))
+        self.assertIn("end curvature by -<br>", text)
+        self.assertNotIn("end curvature by 0", text)
+        self.doc.recompute()
+        self.assertEqual(q.Status, "ok")
+        text = T.G2QuadPanel.result_text(types.SimpleNamespace(obj=q))
+        self.assertIn(f"end curvature by {q.EndCurvatureError:.2g} (relative to the source's "
+                      "largest curvature over the end piece)<br>", text)
+
     def test_more_edges_come_closer(self):
         q = Q.make(self.doc, [(self.sk, [])], Edges=20)
         self.doc.recompute()

@@ -8,6 +8,7 @@ edges; writing it into a sketch is a copy."""
 from __future__ import annotations
 
 import json
+import math
 
 import FreeCAD as App
 import Part
@@ -244,8 +245,9 @@ def g2_blend(r, i, mode, value, tol, degree):
             if sibling is not None:
                 note = f" (solution {i + 1} did not bend to G2: from the library's own start)"
     except (ValueError, ArithmeticError, RuntimeError) as exc:
+        dist = float(n.linalg.norm(a1 - a0))
         asked = (f"of length {value:g} mm" if "length" in kw else
-                 f"at tension {tension_text(kw['tension'], float(n.linalg.norm(a1 - a0)))}")
+                 f"at tension {tension_text(kw['tension'], dist, G2_TENSION_DIGITS)}")
         hint = "pick another tension or length, or G1"
         try:
             free = e.elastic_spline(n.vstack([a0, a1]), **ends).length
@@ -257,10 +259,10 @@ def g2_blend(r, i, mode, value, tol, degree):
             pass
         reach = g2_tension_reach(pts, ends) if "tension" in kw else None
         if reach is not None and reach > 0.0:
-            hint += (f"; the G2 battens found by length reach a tension of "
-                     f"{tension_text(reach, float(n.linalg.norm(a1 - a0)))} at most: held by "
-                     "its guide ducks, a G2 blend pulled does not straighten as G1 does, and "
-                     "beyond some tension there is none")
+            hint += (f"; the largest tension a G2 batten was found at is about "
+                     f"{tension_text(reach, dist, G2_TENSION_DIGITS)} "
+                     "(there can be gaps below it): held by its guide ducks, a G2 blend pulled "
+                     "does not straighten as G1 does, and beyond some tension there is none")
         # not the exception's words about the spline it keeps: nothing is returned here
         solve = "the batten's solve did not converge" if isinstance(exc, e.NotConvergedError) \
             else f"the batten's solve: {str(exc).replace('elastic_spline: ', '', 1)}"
@@ -282,19 +284,35 @@ G2_REACH_MULTIPLES = (1.25, 1.5, 2.0, 2.5, 3.0, 4.0, 6.0, 10.0)
 
 
 def g2_tension_reach(pts, ends):
-    """The highest tension of the G2 battens between the two points ``pts`` with ``ends``
-    (el.elastic_spline's start/end) solved by length at G2_REACH_MULTIPLES times their
-    distance; None when none is solved."""
+    """The highest tension, rounded down to G2_TENSION_DIGITS (else fewer) significant
+    digits, at which a G2 batten between the two points ``pts`` with ``ends`` (el.elastic_spline's start/end)
+    is solved by that tension (as a blend with no previous solution is), among the
+    tensions of those solved by length at G2_REACH_MULTIPLES times their distance; None
+    when none is. (QA12: by length 0.0017682x/mm^2, yet none solved at 0.00176823, one at
+    0.00176 and 0.00177: the tensions solved are not an interval; the one said solved.)"""
     n, e = np(), el()
     dist = float(n.linalg.norm(pts[1] - pts[0]))
-    reach = None
+    found = []
     for m in G2_REACH_MULTIPLES:
         try:
             sigma = float(e.elastic_spline(pts, **ends, length=m * dist).tension)
         except (ValueError, ArithmeticError, RuntimeError):
             continue
-        reach = sigma if reach is None else max(reach, sigma)
-    return reach
+        if sigma > 0.0:
+            found.append(floor_digits(sigma))
+    tried = set()
+    for sigma in sorted(found, reverse=True):
+        for digits in range(G2_TENSION_DIGITS, 1, -1):   # rounded down further if none there
+            t = floor_digits(sigma, digits)
+            if t in tried:
+                continue
+            tried.add(t)
+            try:
+                e.elastic_spline(pts, **ends, tension=t)
+                return t
+            except (ValueError, ArithmeticError, RuntimeError):
+                continue
+    return None
 
 
 def bending_energy(curve):
@@ -346,10 +364,22 @@ def plural(n, word):
     return f"{n} {word}{'' if n == 1 else 's'}"
 
 
-def tension_text(sigma, length):
-    """sigma in 1/mm^2 (the unit of the Tension fields), rounding noise (below 1e-9 of
-    the scale 1/length^2) shown as 0."""
-    return f"{0.0 if abs(sigma) * length ** 2 < 1e-9 else sigma:.3g} 1/mm\u00b2"
+def tension_text(sigma, length, digits=3):
+    """sigma in 1/mm^2 (the unit of the Tension fields) to ``digits`` significant digits,
+    rounding noise (below 1e-9 of the scale 1/length^2) shown as 0."""
+    return f"{0.0 if abs(sigma) * length ** 2 < 1e-9 else sigma:.{digits}g} 1/mm\u00b2"
+
+
+# Significant digits of the tensions the G2 error messages give: 3 told 0.00176823 (none
+# found) from 0.00177 (solved) as the same "0.00177" (QA12).
+G2_TENSION_DIGITS = 6
+
+
+def floor_digits(x, digits=G2_TENSION_DIGITS):
+    """x > 0 rounded DOWN to ``digits`` significant digits (the float of its %g text)."""
+    q = 10.0 ** (math.floor(math.log10(x)) - digits + 1)
+    y = float(f"{math.floor(x / q) * q:.{digits}g}")
+    return y if y <= x else float(f"{(math.floor(x / q) - 1) * q:.{digits}g}")
 
 
 def solution_text(i, length, energy, infl, loops, kmax):

@@ -247,6 +247,11 @@ class BlendPanel(Panel):
                 o.Length = o.BlendLength
             elif o.Mode == "length" and float(o.Length) == 0.0:
                 self.start_by_length()  # none on screen: where no free batten, the command's
+            elif o.Mode == "tension" and o.Lengths and not self.expression("Tension"):
+                # and tension mode from the tension of the curve on screen: not 0, which
+                # may have no batten (QA12: reset to 0 after "no free batten joins these ends")
+                o.Tension = o.BlendTension
+                self.show_mode()
         elif prop in ("AtEnd1", "AtEnd2"):
             self.ends_changed()
 
@@ -273,8 +278,6 @@ class BlendPanel(Panel):
         (self.free) or the ends are bad (the solve says why)."""
         o = self.obj
         self.free = False
-        if self.expression("Mode") or self.expression("Length"):
-            return False            # bound: the expressions decide
         try:
             e1, e2 = o.Proxy.ends(o)
             start = B.free_or_length(e1, o.AtEnd1, e2, o.AtEnd2, o.Proxy.sketch_plane(o))
@@ -283,6 +286,17 @@ class BlendPanel(Panel):
         if start is None:
             self.free = True
             return False
+        if self.expression("Mode") or self.expression("Length"):
+            # the expressions decide the values; a bound Length is one to solve for (the
+            # binding stays), not a free batten that does not exist (QA12)
+            if self.expression("Mode"):
+                return False
+            o.Mode, self.auto = "length", float(o.Length)   # chosen here: ends_changed redoes it
+            self.note = (f"No free batten (tension 0) joins these ends: solved for the length "
+                         f"Length is bound to ({self.expression('Length')}), "
+                         f"{float(o.Length):.4g} mm")
+            self.show_mode()
+            return True
         self.auto, self.note = start
         o.Mode, o.Length = "length", start[0]
         self.show_mode()
@@ -558,14 +572,18 @@ class G2QuadPanel(Panel):
 
     def result_text(self):
         o = self.obj
+        # "-" until computed: a missing EndCurvatureError (a document from before it) or an
+        # object not recomputed yet (no poles) is not an error of 0 (QA12)
+        ek = getattr(o, "EndCurvatureError", None)
+        ek = (f"{ek:.2g} (relative to the source's largest curvature over the end piece)"
+              if ek is not None and o.Poles > 0 else "-")
         return (f"{o.Pieces} piece{'s' if o.Pieces != 1 else ''} (split at inflections), "
                 f"{o.Poles} poles, degree 2<br>distance from the source: {_fmt(o.Deviation)}<br>"
                 f"curvature jump at joints inside the pieces: {o.CurvatureJump:.1g} (G2)<br>"
                 + (f"where the pieces meet: tangents {o.JoinAngle:.2g}\u00b0 apart, curvature "
                    f"jump {o.JoinCurvatureJump:.2g}/mm (not G2 there)<br>" if o.Pieces > 1 else "")
                 + f"end tangents off by {o.EndTangentError:.2g}\u00b0, end curvature by "
-                f"{getattr(o, 'EndCurvatureError', 0.0):.2g} (relative to the source's largest curvature "
-                f"over the end piece)<br>{o.Status}")
+                f"{ek}<br>{o.Status}")
 
 
 class CombPanel(Panel):
