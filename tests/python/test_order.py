@@ -124,3 +124,22 @@ def test_keyline_of_a_shuffled_scan_warns():
     with warnings.catch_warnings():
         warnings.simplefilter("error", el.OrderWarning)
         el.fit_keyline(P)
+
+
+def test_a_noisy_coil_in_order_is_screened_without_curve_order(monkeypatch):
+    """A dense noisy scan of a curve longer than 3 x its extent (an orbital elastica's
+    coil) passes the length screen however ordered; its screen's turning is a curve's, so
+    out_of_order answers without curve_order (bench_fit.py's 1000 points on k = 1.3 paid
+    its 16 ms in a 1 ms fit), and the same points shuffled still are flagged."""
+    from libelastica import order as O
+    rng = np.random.default_rng(7)
+    t = np.linspace(0.0, 6.0 * np.pi, 1000)
+    coil = np.c_[np.cos(t) * (1 + 0.05 * t), np.sin(t) * (1 + 0.05 * t)]
+    pts = coil + rng.normal(0.0, 0.01, coil.shape)
+    assert O.polyline_length(pts[::len(pts) // O.SCREEN_POINTS]) > 3.0 * np.ptp(pts, axis=0).max()
+    calls = []
+    real = O.curve_order
+    monkeypatch.setattr(O, "curve_order", lambda xy: calls.append(1) or real(xy))
+    assert O.out_of_order(pts).order is None
+    assert not calls
+    assert O.out_of_order(pts[rng.permutation(len(pts))]).order is not None
