@@ -95,7 +95,8 @@ class Ordering(NamedTuple):
     """:func:`out_of_order`'s answer: ``order`` (curve_order's indices, None when the given
     order is a curve's), ``given`` (the length of the points' polyline in their order),
     ``along`` (in curve order; nan where not measured: the polyline, or the screen's, within
-    the ratio times the points' extent, which no order's polyline is shorter than)."""
+    the ratio times the points' extent, which no order's polyline is shorter than; ``given``
+    too where the screen answered)."""
     order: Optional[np.ndarray]
     given: float
     along: float
@@ -114,14 +115,19 @@ def out_of_order(points, ratio: float = ORDER_RATIO, screen: bool = True) -> Ord
         return Ordering(None, polyline_length(xy), float("nan"))
     # the extent from the columns' copy: numpy's reductions along axis 0 of (n, 2) are far slower
     cols = xy.T.copy()
-    given, extent = polyline_length(xy), float((cols.max(axis=1) - cols.min(axis=1)).max())
+    extent = float((cols.max(axis=1) - cols.min(axis=1)).max())
     step = len(xy) // SCREEN_POINTS if screen and len(xy) >= SCAN_POINTS else 1
-    if not given > ratio * extent or not polyline_length(xy[::step]) > ratio * extent:
-        return Ordering(None, given, float("nan"))
-    # a screen that turns as a curve does (a coil, a spiral: longer than ratio times its
-    # extent however ordered) is in order too: shuffled points' screen turns ~pi/2 a vertex
-    # (bench_fit.py's 1000 noisy points on k = 1.3 paid curve_order's 16 ms in a 1 ms fit)
-    if step > 1 and not _turn_per_vertex(xy[::step]) > TURN_PER_VERTEX:
+    # the screen first (every k-th point; no longer than the polyline): a screen within the
+    # ratio, or one that turns as a curve does (a coil, a spiral: longer than ratio times
+    # its extent however ordered; shuffled points' screen turns ~pi/2 a vertex), answers in
+    # order without the whole polyline's length (given nan) nor curve_order (bench_fit.py's
+    # 1000 noisy points on k = 1.3 paid its 16 ms in a 1 ms fit; el.fit runs this each time)
+    if step > 1:
+        sc = xy[::step]
+        if not polyline_length(sc) > ratio * extent or not _turn_per_vertex(sc) > TURN_PER_VERTEX:
+            return Ordering(None, float("nan"), float("nan"))
+    given = polyline_length(xy)
+    if not given > ratio * extent:
         return Ordering(None, given, float("nan"))
     order = curve_order(xy)
     along = polyline_length(xy[order])
