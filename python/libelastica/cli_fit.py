@@ -15,6 +15,7 @@ from .cli_common import (EXIT_BADINPUT, EXIT_NOCONV, EXIT_OK, PROG, _converged,
                          _status_text, _table)
 from .cli_outputs import out_path
 from .fit import quiet_fit
+from .fit_cost import cost_summary, costly
 from .order import order_summary
 from .io import InputError, curve_to_dict, read_points, write_dxf_spline, write_json
 
@@ -87,16 +88,19 @@ def _resampled_record(path, args, xy: np.ndarray, fixed, constraints):
     points' (in the fit's plane) to the curve drawn (a discrete fit's C2 cubic through its
     vertices), not the polygon's vertices' to it ("distances_of"; the polygon's own kept as
     "polygon_rms" / "polygon_max_error"); a constrained fit's outliers judged by the
-    points' distances to the resampled fit without its constraints. Returns the record,
-    the polygon's FitResult and the points' feet."""
+    points' distances to the resampled fit without its constraints, their cost by the
+    one with free ends (_end_conditions). Returns the record, the polygon's FitResult and
+    the points' feet."""
     import libelastica as el
     with warnings.catch_warnings():     # the ResampleWarning said in the CLI's words
         warnings.simplefilter("ignore", el.ResampleWarning)
         rr = el.fit_resampled(xy, args.step, **_fit_kwargs(args, fixed, constraints))
-        free = None
+        free = loose = None             # loose: free ends, nothing fixed
+        if constraints or fixed:
+            loose = el.fit_resampled(xy, args.step, check=False, **_fit_kwargs(args, {}))
         if constraints:
-            free = el.fit_resampled(xy, args.step, check=False,
-                                    **_fit_kwargs(args, fixed)).distances
+            free = (loose if not fixed else el.fit_resampled(
+                xy, args.step, check=False, **_fit_kwargs(args, fixed))).distances
     res = rr.result
     rec = _side_record(res, xy, args.model)
     far = el.far_points(rr.distances, xy, free_distances=free)
@@ -110,7 +114,29 @@ def _resampled_record(path, args, xy: np.ndarray, fixed, constraints):
         rec["free_distances"] = [float(v) for v in free]
     else:
         rec.pop("free_distances", None)
+    _end_conditions(rec, rr.rms, loose.rms if loose is not None else None, xy, constraints, fixed)
     return rec, res, rr.feet
+
+
+def _end_conditions(rec: Dict[str, Any], rms: float, free_rms: Optional[float], points: np.ndarray,
+                    constraints: Dict[str, Any], fixed: Dict[str, float]) -> None:
+    """What the end conditions cost, in the record: "free_rms", the same fit's with free
+    ends and nothing fixed (like with like: the points' distances to the curves fitted, a
+    --step's to the curves drawn), and where they raise the rms beyond el.costly's ratio,
+    "end_condition_warning" (said by _warn_end_conditions; el.fit's EndConditionWarning)."""
+    if free_rms is None:
+        return
+    rec["free_rms"] = float(free_rms)
+    if costly(rms, free_rms, float(np.ptp(points[:, :2], axis=0).max())):
+        held = [f"--{c.replace('_', '-')}" for c in constraints] + \
+            ([f"--fix {','.join(fixed)}"] if fixed else [])
+        rec["end_condition_warning"] = cost_summary(", ".join(held), free_rms, rms)
+
+
+def _warn_end_conditions(path, rec: Dict[str, Any]) -> None:
+    """A warning on stderr when the end conditions raise the rms (_end_conditions)."""
+    if rec.get("end_condition_warning"):
+        print(f"{PROG} fit: warning: {path}: {rec['end_condition_warning']}", file=sys.stderr)
 
 
 def _warn_far_points(path, rec: Dict[str, Any]) -> None:
@@ -285,18 +311,23 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
             pictures.append((xy, res, feet))
             fitted.append(data)
         else:
-            # quietly: said in the CLI's words (_warn_wanders, the status)
-            res = quiet_fit(data, **_fit_kwargs(args, fixed, constraints))
+            # quietly: said in the CLI's words (_warn_wanders, _warn_end_conditions, the status)
+            res = quiet_fit(data, check_ends=True, **_fit_kwargs(args, fixed, constraints))
             free = None
             if constraints and getattr(res, "distances", None) is not None:
-                free = quiet_fit(data, **_fit_kwargs(args, fixed)).distances
+                # el.fit's fit with free ends, where nothing is fixed (--fix: held there too)
+                free = (res.free if res.free is not None and not fixed else
+                        quiet_fit(data, **_fit_kwargs(args, fixed))).distances
             records.append(_side_record(res, data, args.model, free))
+            _end_conditions(records[-1], res.rms, res.free.rms if res.free is not None else None,
+                            data, constraints, fixed)
             pictures.append((data, res, None))
             fitted.append(data)
     for rec, fitted_pts in zip(records, fitted):
         rec.update({"file": str(path), "plane": plane, "step": args.step, **extra_info})
         if order is not None:
             rec["order"] = [int(i) for i in order]
+        _warn_end_conditions(path, rec)
         _warn_far_points(path, rec)
         _warn_wanders(path, rec, fitted_pts)
         if rec.get("resample_reference_rms") is not None:

@@ -24,6 +24,7 @@ import numpy as np
 from ._ffi import (DomainError, NotConvergedError, as_int, as_points, as_positive, as_real,
                    as_real_array, check, dptr, ffi, lib, warn_if_degrees)
 from .core import DISCRETE_PARAMS, SMOOTH_PARAMS, DiscreteElastica, SmoothElastica
+from .fit_cost import EndConditionWarning, checked_ends
 from .order import curve_order, order_summary, out_of_order
 
 _MODES = {"auto": 0, "uniform": 1, "chord": 2}
@@ -76,7 +77,8 @@ class FitResult:
     ``wander_gap``: i where the curve wanders away from its points between points i and
     i + 1 (it strays there, loops, or swings between them: the C result's ``wander_gap``,
     :func:`fit` warns of it), -1 where it follows them; ``order``: fitted with
-    ``order="curve"``, the indices of the caller's points in ``points``' order, else None.
+    ``order="curve"``, the indices of the caller's points in ``points``' order, else None;
+    ``free``: the fit with free ends where :func:`fit` checked what its end conditions cost.
     """
     curve: Curve
     initial: Curve
@@ -96,6 +98,7 @@ class FitResult:
     constraints: Optional[Mapping[str, object]] = None
     wander_gap: int = -1
     order: Optional[np.ndarray] = None
+    free: Optional["FitResult"] = None
 
     @property
     def converged(self) -> bool:
@@ -407,8 +410,8 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
         constraints: Optional[Mapping[str, object]] = None, distance: Optional[str] = None,
         bounds: Optional[Mapping[str, tuple]] = None, tol: Optional[float] = None,
         max_iter: Optional[int] = None, limited_memory: bool = False,
-        max_candidates: Optional[int] = None, param: str = "auto",
-        initial: Optional[Curve] = None, strict: bool = False, order: str = "given") -> FitResult:
+        max_candidates: Optional[int] = None, param: str = "auto", initial: Optional[Curve] = None,
+        strict: bool = False, order: str = "given", check_ends: bool = True) -> FitResult:
     """Fit an elastica to the points (n, 2), n >= 4, in their order along the curve.
 
     model: "discrete" (a polygon of n vertices, one per point) or "smooth". distance:
@@ -460,7 +463,8 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     against the points' order is run backwards first (the same curve). A fit that does not
     converge returns the best curve seen with ``status`` != 0 and warns (ConvergenceWarning;
     raises NotConvergedError if ``strict``). Bad input (NaN, too few points, all points equal) raises ValueError /
-    ElasticaError subclasses.
+    ElasticaError subclasses. check_ends: with constraints or fixed, fit with free ends too
+    (``FitResult.free``) and warn (EndConditionWarning, fit_cost.py) where they cost accuracy.
     """
     if not isinstance(model, str) or model not in ("discrete", "smooth"):
         raise ValueError(f"fit: model must be 'discrete' or 'smooth', got {model!r}")
@@ -518,16 +522,21 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
         warnings.warn(f"fit: {wander_summary(res.wander_gap)}: add a point between them to hold it "
                       "there, or bound the curve's length (constraints={'length': (lo, hi)})",
                       WanderWarning, stacklevel=2)
-    return _result(model, res, st, pts.copy(), dist, foot, s, constraints, idx)
+    r = _result(model, res, st, pts.copy(), dist, foot, s, constraints, idx)
+    if check_ends and (constraints or fixed):
+        r = checked_ends(r, fixed, dict(model=model, distance=distance, bounds=bounds, tol=tol, max_iter=max_iter,
+                         limited_memory=limited_memory, max_candidates=max_candidates, param=param))
+    return r
 
 
 def quiet_fit(points, *args, **kwargs) -> FitResult:
-    """:func:`fit` without its warnings (ConvergenceWarning, WanderWarning): for a fit the
-    binding runs to judge another (its status and wander_gap are read where they matter)."""
+    """:func:`fit` without its warnings (ConvergenceWarning, WanderWarning, EndConditionWarning), check_ends
+    off unless asked: for a fit judging another, or said in its caller's words (status, wander_gap, free)."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ConvergenceWarning)
         warnings.simplefilter("ignore", WanderWarning)
-        return fit(points, *args, **kwargs)
+        warnings.simplefilter("ignore", EndConditionWarning)
+        return fit(points, *args, **dict(dict(check_ends=False), **kwargs))
 
 
 # ------------------------------------------------------------------ keyline

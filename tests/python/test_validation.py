@@ -331,4 +331,7 @@ def test_tangent_angle_in_degrees_warns():
     import warnings
     with warnings.catch_warnings():
         warnings.simplefilter("error")
-        el.fit(pts, model="smooth", constraints={"start_tangent": -6.0, "end_tangent": 0.5})
+        # (check_ends off: 5 points fitted exactly with free ends, held there at a cost
+        # el.fit warns of, rightly: an EndConditionWarning, no word of degrees)
+        el.fit(pts, model="smooth", constraints={"start_tangent": -6.0, "end_tangent": 0.5},
+               check_ends=False)

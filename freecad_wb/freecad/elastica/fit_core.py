@@ -58,21 +58,17 @@ def _wanders(result, plane):
 
 def _one_piece(xy, model, distance, fixed, constraints, fields):
     """The fit of points xy in one piece: (curves, results, data, feet, signed distances,
-    rms, max error, None) as the library reports them; fields: constraint_fields."""
+    rms, max error, None) as the library reports them, its result's ``free`` the fit with
+    free ends where there are end conditions (el.fit's check_ends); fields:
+    constraint_fields."""
     try:
         r = _fit(xy, model=model, fixed=fixed or None, constraints=constraints or None,
-                 distance=distance if model == "smooth" else None)
+                 distance=distance if model == "smooth" else None, check_ends=True)
     except el().ConstraintError as exc:
         raise constraint_problem(exc, fields) from None
     return [r.curve], [r], xy, r.foot_points(), r.distances, r.rms, r.max_error, None
 
 
-# End conditions that raise the rms above COST_RATIO times the free-ended fit's (and by
-# more than COST_FLOOR of the data's extent) are worth a warning: a curvature or a
-# tangent far from the data's own is met by a curl or a swing that fits nothing (a
-# smooth fit of the noisy 330 mm sample S meets 0.05/mm, four times its own end
-# curvature, with rms 9 mm against 0.29 mm free).
-COST_RATIO, COST_FLOOR = 2.0, 1e-4
 # A curve shorter than COLLAPSED times the points' extent fits none of them: end conditions
 # met nowhere near the points shrink a fit to nothing (QA: a start join on a wire drawn
 # from its other end, 4e-12 mm long for 90 mm of points, rms 53 mm, kept as 'not
@@ -80,24 +76,23 @@ COST_RATIO, COST_FLOOR = 2.0, 1e-4
 COLLAPSED = 1e-3
 
 
-def _constraint_cost(xy, model, distance, fixed, constraints, rms, fields):
-    """(rms of the same fit with free ends, or -1 when it fails; the warnings; the points'
-    distances to that fit, or None); fields: constraint_fields. A discrete fit's distances
-    are its drawn cubic's (drawn_distances)."""
+def _constraint_cost(result, model, constraints, rms, fields):
+    """(rms of the same fit with free ends, or -1 when it failed; the warnings; the points'
+    distances to that fit, or None): the binding's rule (el.costly) on the free fit el.fit
+    made (result.free, check_ends); fields: constraint_fields. rms: the fit's as shown, a
+    discrete fit's its drawn cubic's, and so the free fit's (drawn_distances)."""
+    r, xy = result.free, result.points
+    if r is None:
+        return -1.0, [], None
     try:
-        r = _fit(xy, model=model, fixed=fixed or None,
-                 distance=distance if model == "smooth" else None)
         dist = r.distances if model == "smooth" else \
             drawn_distances(r.to_bspline(), xy, r.foot_s)[1]
         free = r.rms if model == "smooth" else _rms(dist)
     except (ValueError, ArithmeticError, RuntimeError):
         return -1.0, [], None
-    extent = float(np().ptp(xy, axis=0).max())
-    if not (rms > COST_RATIO * free and rms - free > COST_FLOOR * extent):
+    if not el().costly(rms, free, float(np().ptp(xy, axis=0).max())):
         return float(free), [], dist
-    return float(free), [f"the end conditions ({field_names(constraints, fields)}) raise the rms "
-                         f"from {free:.3g} mm (free ends) to {rms:.3g} mm: check that they match "
-                         "the data"], dist
+    return float(free), [el().cost_summary(field_names(constraints, fields), free, rms, " mm")], dist
 
 
 def _check_length(bspline, extent, constraints, fields, reversed_joins):
@@ -120,7 +115,7 @@ def _rms(dist):
 
 def _beyond_the_ends(bspline, feet, dist, extent):
     """Which points lie beyond the curve's ends (their nearest point on it an end, farther
-    than COST_FLOOR of their extent and COST_RATIO times the others' rms): those a split
+    than el.COST_FLOOR of their extent and el.COST_RATIO times the others' rms): those a split
     keyline's resampled polygon leaves out. Its
     equilateral polygon ends where no point lies a step further on (seed 000 §5.3), so up
     to a step of the points' run is not fitted, and the curve stops there too."""
@@ -129,7 +124,7 @@ def _beyond_the_ends(bspline, feet, dist, extent):
     at_end = n.min(n.linalg.norm(feet[:, None, :] - ends[None, :, :], axis=2), axis=1) \
         <= 1e-9 * (1.0 + extent)
     others = _rms(dist[~at_end]) if not at_end.all() else 0.0
-    return at_end & (n.abs(dist) > max(COST_FLOOR * extent, COST_RATIO * others))
+    return at_end & (n.abs(dist) > max(el().COST_FLOOR * extent, el().COST_RATIO * others))
 
 
 def _left_out(beyond, dist, step, used):
@@ -154,11 +149,11 @@ def _left_out(beyond, dist, step, used):
 
 def _off_plane(off, rms, extent):
     """The warning for points whose distances from their plane (``off``, mm) outweigh the
-    fit's in-plane rms (and above COST_FLOOR of their extent): a plane curve cannot come
+    fit's in-plane rms (and above el.COST_FLOOR of their extent): a plane curve cannot come
     closer to them than that, else none."""
     n = np()
     off_rms = _rms(off)
-    if not (off_rms > rms and off_rms > COST_FLOOR * extent):
+    if not (off_rms > rms and off_rms > el().COST_FLOOR * extent):
         return []
     return [f"the points lie up to {float(n.abs(off).max()):.3g} mm (rms {off_rms:.3g} mm) off "
             f"their plane, the fit's: Rms and MaxError include that (in the plane the curve lies "
@@ -410,8 +405,8 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
             feet, dist = drawn_distances(bspline, data, foot_parameters(results, split, tails))
             rms, max_error = _rms(dist), float(np().abs(dist).max())
         if constraints:
-            free_rms, warnings, free_dist = _constraint_cost(xy, model, distance, fixed,
-                                                             constraints, rms, fields)
+            free_rms, warnings, free_dist = _constraint_cost(results[0], model, constraints, rms,
+                                                             fields)
         warnings = ordering + reversed_joins + warnings
         if model == "discrete" and not split and not step:
             warnings = warnings + _coarse_polygon(xy, constraints, rms)

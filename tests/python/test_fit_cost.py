@@ -1,0 +1,122 @@
+"""What end conditions cost (fit_cost.py): el.fit held to a tangent, a curvature or a fixed
+parameter far from the data's own warns (EndConditionWarning, with the rms of the same fit
+with free ends, FitResult.free), held to the data's own says nothing; `elastica fit` says
+it on stderr and in its JSON. The data: fit_data.uneven_scan, 175 noisy points of a 120 mm
+S, spacing 1:6 with two gaps."""
+from __future__ import annotations
+
+import json
+import warnings
+
+import numpy as np
+import pytest
+
+import libelastica as el
+from libelastica.fit import quiet_fit
+
+from cli_run import cli
+from fit_data import uneven_scan
+
+
+@pytest.fixture(scope="module")
+def scan():
+    pts, _ = uneven_scan(seed=0)
+    own = el.fit(pts, model="smooth")       # the data's own end conditions: its free fit's
+    return pts, own
+
+
+def fitted(pts, **kw):
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        r = el.fit(pts, **kw)
+    return r, [w for w in caught if issubclass(w.category, el.EndConditionWarning)]
+
+
+@pytest.mark.parametrize("model", ["smooth", "discrete"])
+@pytest.mark.parametrize("held", ["tangent", "curvature", "fixed start"])
+def test_end_conditions_far_from_the_datas_are_warned_with_both_figures(scan, model, held):
+    """The start tangent 0.3 rad off the data's, a natural (zero curvature) start where the
+    data curve at 0.056/mm, the start point fixed 3 mm off: rms 0.61 / 2.5 / 0.82 against
+    0.151 with free ends, each warned, naming what was held, with both figures."""
+    pts, own = scan
+    if held == "fixed start":
+        kw, name = dict(fixed={"x0": pts[0, 0] + 3.0, "y0": pts[0, 1]}), "fixed x0, fixed y0"
+    else:
+        value = own.curve.angle([0.0])[0] + 0.3 if held == "tangent" else 0.0
+        kw, name = dict(constraints={f"start_{held}": value}), f"start_{held}"
+    r, said = fitted(pts, model=model, **kw)
+    assert r.free is not None and r.free.constraints is None
+    assert r.free.rms == pytest.approx(el.fit(pts, model=model).rms, rel=1e-12)
+    assert r.rms > 3.0 * r.free.rms, (r.rms, r.free.rms)
+    assert len(said) == 1, [str(w.message) for w in said]
+    w = said[0]
+    assert (w.message.rms, w.message.free_rms) == (r.rms, r.free.rms)
+    assert f"({name})" in str(w.message) and f"{r.free.rms:.3g}" in str(w.message)
+    assert w.filename == __file__           # the caller's line, as fit's other warnings
+    assert el.end_condition_cost(r) == r.free.rms
+
+
+@pytest.mark.parametrize("model", ["smooth", "discrete"])
+def test_the_datas_own_end_conditions_are_silent(scan, model):
+    """The free fit's own start tangent and curvature held: no warning, the same rms
+    within 2 %, and the free fit kept for the caller."""
+    pts, own = scan
+    con = {"start_tangent": own.curve.angle([0.0])[0],
+           "start_curvature": own.curve.curvature([0.0])[0]}
+    r, said = fitted(pts, model=model, constraints=con)
+    assert said == []
+    assert r.free is not None and r.rms < 1.02 * r.free.rms
+    assert el.end_condition_cost(r) is None
+
+
+def test_check_ends_false_and_quiet_fit_fit_no_free_curve(scan):
+    """check_ends=False skips the free fit; so does the binding's quiet_fit unless asked
+    (a fit judging another needs none), which then keeps quiet about it."""
+    pts, own = scan
+    con = {"start_curvature": 0.0}
+    r, said = fitted(pts, model="smooth", constraints=con, check_ends=False)
+    assert (r.free, said) == (None, [])
+    assert quiet_fit(pts, model="smooth", constraints=con).free is None
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        q = quiet_fit(pts, model="smooth", constraints=con, check_ends=True)
+    assert q.free is not None and el.end_condition_cost(q) == q.free.rms
+    r, said = fitted(pts, model="smooth")       # nothing held: nothing to check
+    assert (r.free, said) == (None, [])
+
+
+def test_the_rule(scan):
+    """Above COST_RATIO times the free rms and by more than COST_FLOOR of the extent."""
+    assert (el.COST_RATIO, el.COST_FLOOR) == (2.0, 1e-4)
+    assert el.costly(2.1, 1.0, 100.0) and not el.costly(1.9, 1.0, 100.0)
+    assert not el.costly(2.1e-3, 1e-3, 100.0)       # 1.1e-3 of 100: under the floor
+    assert el.cost_summary("Start curvature", 0.29, 9.0, " mm") == (
+        "the end conditions (Start curvature) raise the rms from 0.29 mm (free ends) to 9 mm: "
+        "check that they match the data")
+
+
+@pytest.mark.parametrize("step", [None, "1"])
+@pytest.mark.parametrize("model", ["smooth", "discrete"])
+def test_cli_says_it_and_writes_it(scan, tmp_path, capsys, model, step):
+    """`elastica fit --start-tangent` 17 degrees off the data's warns on stderr, naming the
+    option, and writes "free_rms" and the warning in its JSON; the data's own tangent:
+    "free_rms" alone. With --step the figures are the file's points' to the curves drawn."""
+    pts, own = scan
+    path = tmp_path / "scan.csv"
+    np.savetxt(path, pts, delimiter=",", header="x,y", comments="")
+    deg = float(np.degrees(own.curve.angle([0.0])[0]))
+    extra = ["--step", step] if step else []
+    for off, warned in ((17.0, True), (0.0, False)):
+        out = tmp_path / f"fit{off}.json"
+        code, _, err = cli(capsys, "fit", path, "--model", model, "--start-tangent", deg + off,
+                           "--json", out, *extra)
+        assert code == 0, err
+        rec = json.loads(out.read_text())
+        said = [line for line in err.splitlines() if "the end conditions" in line]
+        if warned:
+            assert rec["rms"] > 3.0 * rec["free_rms"], (rec["rms"], rec["free_rms"])
+            assert said == [f"elastica fit: warning: {path}: {rec['end_condition_warning']}"]
+            assert "(--start-tangent)" in said[0] and f"{rec['free_rms']:.3g}" in said[0]
+        else:
+            assert rec["rms"] < 1.05 * rec["free_rms"]
+            assert (said, "end_condition_warning" in rec) == ([], False)
