@@ -278,3 +278,28 @@ def travel_ends(f):
             k *= 1.0 if t.cross(App.Vector(c.normal(u))).dot(up) > 0 else -1.0
         out.append((c.value(u), t, k))
     return out
+
+
+def console_output(run):
+    """What FreeCAD's console prints (its C++ observers write to the process's stdout and
+    stderr, not to Python's sys.stdout) while ``run()`` runs: (text, run's result)."""
+    import os
+    import sys
+    import tempfile
+    sys.stdout.flush()
+    sys.stderr.flush()
+    saved = [os.dup(1), os.dup(2)]
+    with tempfile.TemporaryFile() as f:
+        os.dup2(f.fileno(), 1)
+        os.dup2(f.fileno(), 2)
+        try:
+            result = run()
+        finally:
+            sys.stdout.flush()
+            sys.stderr.flush()
+            os.dup2(saved[0], 1)
+            os.dup2(saved[1], 2)
+            for fd in saved:
+                os.close(fd)
+        f.seek(0)
+        return f.read().decode("utf-8", "replace"), result

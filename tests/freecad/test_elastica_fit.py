@@ -268,12 +268,17 @@ class FitParametricTest(unittest.TestCase):
         before = self.fit.Shape.copy()
         for i in range(len(self.xy) - 1, 2, -1):      # leave 3 points
             self.sk.delGeometry(i)
-        self.doc.recompute()
+        said, _ = S.console_output(self.doc.recompute)
         self.assertTrue(self.fit.Status.startswith("error"), self.fit.Status)
         self.assertIn("3 points", self.fit.Status)
         # in error as FreeCAD's own features are (the tree's mark), its last shape kept
         self.assertIn("Invalid", self.fit.State)
         self.assertFalse(self.fit.isValid())
+        self.assertIn("3 points", self.fit.getStatusString())
+        # the message once, as a FreeCAD feature's, without a Python traceback after it
+        self.assertEqual(said.count(self.fit.Status[len("error: "):]), 1, said)
+        self.assertNotIn("Traceback", said)
+        self.assertNotIn("RecomputeError", said)
         self.assertLess(abs(self.fit.Shape.Length - before.Length), 1e-12)
         for x, y in self.xy[3:]:
             self.sk.addGeometry(Part.Point(App.Vector(x, y, 0)), False)

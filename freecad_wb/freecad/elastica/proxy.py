@@ -12,6 +12,7 @@ attached through ``VIEW_HOOK``, which the GUI (init_gui) sets.
 from __future__ import annotations
 
 import math
+import sys
 
 import FreeCAD as App
 
@@ -25,6 +26,26 @@ class InputProblem(ValueError):
 
 class RecomputeError(App.Base.FreeCADError):
     """A feature's failed recompute, raised to FreeCAD (FeatureProxy.execute)."""
+
+
+def raise_reported(msg):
+    """Fail a recompute whose message is already in the report view, without the Python
+    traceback FreeCAD prints for an exception out of a Python feature's execute (0.20:
+    FeaturePythonImp::execute -> Base::PyException::ThrowException -> ReportException).
+    The exception carries FreeCAD's own exception dictionary, as its C++ exceptions cross
+    Python (Base::Exception::getPyObject), with 'breported' set: PyException then takes it
+    as reported and prints nothing, and FeaturePythonT::execute still returns its message
+    as the feature's error (State 'Invalid', the tree's error mark, getStatusString()).
+    Only an un-normalised exception keeps the dictionary (PyErr_SetObject; Python 3.12
+    normalises at once): elsewhere RecomputeError, traceback and all."""
+    if sys.version_info < (3, 12):
+        import ctypes
+        set_object = ctypes.pythonapi.PyErr_SetObject
+        set_object.argtypes = [ctypes.py_object, ctypes.py_object]
+        set_object.restype = None
+        # ctypes raises the error the call set, as it stands (PyDLL checks PyErr_Occurred)
+        set_object(App.Base.FreeCADError, {"swhat": msg, "sErrMsg": msg, "breported": True})
+    raise RecomputeError(msg)
 
 
 def add_property(obj, kind, name, group, tip, value=None):
@@ -194,9 +215,9 @@ class FeatureProxy:
 
     def execute(self, obj):
         """compute, then apply; a failure is said in one line (report), the last good shape
-        kept (drawn dashed), and raised to FreeCAD, which marks the feature in error as its
-        own (the tree's error mark, "Recompute failed!", its dependents not recomputed), at
-        the cost of a three-line traceback after that line in the report view."""
+        kept (drawn dashed), and raised to FreeCAD as reported (raise_reported: no
+        traceback), which marks the feature in error as its own (the tree's error mark,
+        "Recompute failed!", its dependents not recomputed)."""
         try:
             r = self.compute(obj)
         except InputProblem as exc:
@@ -208,7 +229,7 @@ class FeatureProxy:
             return
         report(obj, msg)
         self.on_error(obj)
-        raise RecomputeError(f"Elastica {obj.Label}: {msg}")
+        raise_reported(f"Elastica {obj.Label}: {msg}")
 
     def setup(self, obj):
         pass
