@@ -225,13 +225,82 @@ def unit_schemas(doc, b):
                 G.wait(400)
                 G.check(panel.length.text() == "7 in" and abs(b.Length.Value - 177.8) < 1e-9,
                         f"after Tab: {panel.length.text()!r}")
+                imperial_texts_and_steps(b, panel)
                 Gui.SendMsgToActiveView("ViewTop")
                 G.screenshot("gui_blend_imperial.png")
+                failed_quietly(b, panel)
+                G.screenshot("gui_blend_failed.png")
+            if schema == 4:
+                before = b.Length.Value
+                panel.length.setFocus()
+                key(panel.length.lineEdit(), QtCore.Qt.Key_Up)
+                G.wait(400)
+                G.check(abs(b.Length.Value - before - 10.0) < 1e-9,
+                        f"Building Euro: Up steps 1 cm as FreeCAD's Quantity boxes "
+                        f"({before} -> {b.Length.Value})")
             panel.reject()
             G.pump()
     finally:
         prefs.SetInt("UserSchema", old)
         App.Units.setSchema(old)
+
+
+def imperial_texts_and_steps(b, panel):
+    """Imperial decimal (QA12): the Tension box, the solutions and the result line in
+    inches (they said mm and 1/mm\u00b2); a plain '6' is 6 in and the arrows step 1 in, as
+    FreeCAD 0.20's own Quantity boxes under that schema (a Gui::QuantitySpinBox measured
+    there: '6' over '5.94 in' gave 152.4 mm, Up from it +25.4 mm; here '6' was 6 mm and Up
+    +1 mm)."""
+    tension = panel.tension.text()
+    G.check(tension.endswith(" 1/in\u00b2") and
+            tension == f"{panel.tension.value() * 25.4 ** 2:.6g} 1/in\u00b2",
+            f"the Tension box in 1/in\u00b2: {tension!r} ({panel.tension.value()} 1/mm\u00b2)")
+    rows = [panel.list.item(i).text() for i in range(panel.list.count())]
+    G.check(rows and all(" in, " in r and "/in" in r and "mm" not in r for r in rows),
+            f"the solutions in inches: {rows[:2]}")
+    G.check("mm" not in panel.result.text(), f"the result line: {panel.result.text()!r}")
+    retype(panel.length, "6")
+    G.wait(400)
+    G.check(abs(b.Length.Value - 152.4) < 1e-9,
+            f"a plain '6' over inches is 6 in: Length {b.Length}")
+    key(panel.length.lineEdit(), QtCore.Qt.Key_Tab)
+    G.wait(300)
+    panel.length.setFocus()
+    key(panel.length.lineEdit(), QtCore.Qt.Key_Up)
+    G.wait(400)
+    G.check(abs(b.Length.Value - 177.8) < 1e-9 and panel.length.text() == "7 in",
+            f"Up steps 1 in: Length {b.Length}, box {panel.length.text()!r}")
+    key(panel.length.lineEdit(), QtCore.Qt.Key_Down)
+    key(panel.length.lineEdit(), QtCore.Qt.Key_Down)
+    G.wait(400)
+    G.check(abs(b.Length.Value - 127.0) < 1e-9, f"Down twice: 5 in ({b.Length})")
+
+
+def report_text():
+    """The report view's text (FreeCAD's Gui::DockWnd::ReportOutput)."""
+    for w in Gui.getMainWindow().findChildren(QtGui.QTextEdit):
+        if type(w).__name__ == "ReportOutput" or w.objectName() == "Report view" or \
+                "ReportOutput" in w.metaObject().className():
+            return w.toPlainText()
+    return None
+
+
+def failed_quietly(b, panel):
+    """A failed recompute says its message in the report view as FreeCAD's own features
+    do, without the Python traceback that followed it (QA12 gui/g2_4_schema3.png), and
+    the feature is still marked in error (the tree's mark), its last shape kept."""
+    shape = b.Shape.copy()
+    before = report_text()
+    retype(panel.length, "1 in")              # shorter than the ends are apart
+    G.wait(800)
+    after = report_text()
+    said = after[len(before):] if before is not None and after is not None else None
+    G.check(b.Status.startswith("error") and "Invalid" in b.State and not b.isValid()
+            and abs(b.Shape.Length - shape.Length) < 1e-9,
+            f"a failed recompute marks the feature (State {b.State}, {b.Status[:60]!r})")
+    G.check(said is not None and "is not longer than" in said and "Traceback" not in said
+            and "RecomputeError" not in said,
+            f"the report view says the message alone: {said!r}")
 
 
 def tension_mode_and_g2_reach(doc, sk, right, left):

@@ -1052,6 +1052,10 @@ def run():
     import gui_blend_panel
     gui_blend_panel.run_all(sys.modules[__name__])
 
+    # the spline's and the fit's edge buttons read where the edge was clicked
+    import gui_edge_clicks
+    gui_edge_clicks.run_all(sys.modules[__name__])
+
 
 def main():
     ok = True

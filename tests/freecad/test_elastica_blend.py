@@ -621,6 +621,39 @@ class BlendG2Test(unittest.TestCase):
         self.assertEqual((list(b.GuideDucks), b.Status), ([], "solution 1 of %d" % len(b.Lengths)))
         self.assertAlmostEqual(b.Shape.Length, g1.length, delta=1e-3)
 
+    def test_texts_follow_the_unit_schema(self):
+        """Under Imperial decimal the solutions, the Status and the error messages give
+        lengths in inches, curvatures per inch and tensions in 1/in\u00b2 (they said mm and
+        1/mm\u00b2 under every schema, beside boxes showing inches); Standard stays mm."""
+        sk = two_arcs_sketch(self.doc)
+        b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Continuity="G2", Mode="length")
+        self.doc.recompute()
+        mm_status = b.Status
+        self.assertIn(" mm, tension 0 1/mm\u00b2", mm_status)
+        schema = App.Units.getSchema()
+        try:
+            App.Units.setSchema(3)                 # Imperial decimal (in/lb)
+            b.Length = 1.05 * b.BlendLength
+            self.doc.recompute()
+            L, sigma = b.BlendLength, b.BlendTension
+            self.assertIn(f"length {L / 25.4:.4g} in, tension {sigma * 25.4 ** 2:.3g} 1/in\u00b2",
+                          b.Status)
+            self.assertNotIn("mm", b.Status)
+            self.assertTrue(all(f"{length / 25.4:.4g} in, " in text and "/in" in text
+                                and "mm" not in text
+                                for length, text in zip(b.Lengths, b.Descriptions)),
+                            list(b.Descriptions))
+            b.Length = 61.95
+            self.doc.recompute()
+            self.assertIn("error", b.Status)
+            self.assertIn(f"of length {61.95 / 25.4:.6g} in", b.Status)
+            self.assertNotIn("mm", b.Status)
+        finally:
+            App.Units.setSchema(schema)
+        b.Length = 0.0
+        self.doc.recompute()
+        self.assertEqual(b.Status, mm_status)
+
     def test_g2_blend_by_length(self):
         """Length mode: the G2 batten of that length (a pushed one, longer than free);
         0 = the free G2 batten; a length the G2 batten cannot reach says which can."""

@@ -672,6 +672,38 @@ class FitConstraintTest(unittest.TestCase):
                 ahead = f.DataPoints[len(f.DataPoints) // 2] - travel_ends(f)[i][0]
                 self.assertGreater(got.dot(ahead) * (1 if i == 0 else -1), 0, (model, prop))
 
+    def test_a_tangent_edge_is_followed_at_the_end_chosen(self):
+        """StartTangentAt: the end of the start tangent's edge whose tangent the fit
+        follows, the vertex nearer where the edge was clicked in the panel
+        (Panel.pick_edge); 'nearest' (a script's, every document before) keeps the end
+        nearest the data's start. An arc turning 0.3 rad, its end vertex 5 mm before the
+        first point: each end's own tangent, on the shape."""
+        d = self.xy[0] - self.xy[3]
+        a = math.atan2(d[1], d[0])
+        u = App.Vector(math.cos(a), math.sin(a), 0)
+        p = App.Vector(*self.xy[0], 0) + u * 5.0
+        r = 30.0
+        centre = p + App.Vector(-u.y, u.x, 0) * r
+        arcs = self.doc.addObject("Sketcher::SketchObject", "TangentArc")
+        arcs.Placement = S.SKETCH_PLACEMENT
+        t0 = math.atan2(p.y - centre.y, p.x - centre.x)
+        arcs.addGeometry(Part.ArcOfCircle(Part.Circle(centre, App.Vector(0, 0, 1), r), t0,
+                                          t0 + 0.3), False)
+        self.doc.recompute()
+        arc = arcs.Shape.Edges[0]
+        got = {}
+        for at in ("nearest", "start vertex", "end vertex"):
+            f = self._fit("smooth", StartTangent=(arcs, ["Edge1"]), StartTangentAt=at)
+            got[at] = travel_ends(f)[0][1]
+        for at, w in (("start vertex", arc.FirstParameter), ("end vertex", arc.LastParameter)):
+            want = App.Vector(arc.tangentAt(w)).normalize()
+            self.assertLess(got[at].cross(want).Length, 1e-9, at)
+        near = "start vertex" if (arc.Vertexes[0].Point - S.SKETCH_PLACEMENT.multVec(
+            App.Vector(*self.xy[0], 0))).Length < (arc.Vertexes[1].Point - S.SKETCH_PLACEMENT.multVec(
+                App.Vector(*self.xy[0], 0))).Length else "end vertex"
+        self.assertLess((got["nearest"] - got[near]).Length, 1e-9)
+        self.assertGreater(got["start vertex"].getAngle(got["end vertex"]), 0.29)
+
     def test_end_curvatures_on_the_shape(self):
         """Values near the data's own end curvatures (0.012 and -0.0124 1/mm): the
         smooth B-spline carries them exactly; a discrete fit's cubic carries its

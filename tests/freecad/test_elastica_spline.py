@@ -279,6 +279,34 @@ class SplineTest(unittest.TestCase):
         self.assertLess(c.curvature(c.FirstParameter), 1e-7 * s.MaxCurvature)
         self.check_guides(s, c, ducks[:2], 0.25, 0.0)
 
+    def test_an_end_edge_is_joined_at_the_end_chosen(self):
+        """StartEdgeAt: the end of the start edge the spline takes its tangent from, the
+        vertex nearer where the edge was clicked in the panel (Panel.pick_edge); 'nearest'
+        (a script's, and every document before) keeps the end nearest the first point.
+        An arc ending at the first duck: at its start vertex (clicked there) the spline
+        takes that end's tangent, 1 rad turned, and says the end is off the point."""
+        sk = self.doc.addObject("Sketcher::SketchObject", "Ends")
+        sk.Placement = S.SKETCH_PLACEMENT
+        r = 30.0
+        sk.addGeometry(Part.ArcOfCircle(Part.Circle(App.Vector(0, -r, 0), App.Vector(0, 0, 1), r),
+                                        0.5 * math.pi, 0.5 * math.pi + 1.0), False)
+        self.doc.recompute()
+        arc = sk.Shape.Edges[0]
+        self.assertLess((arc.Vertexes[0].Point - self.global_ducks()[0]).Length, 1e-9)
+        starts = {}
+        for at in ("nearest", "start vertex", "end vertex"):
+            s = self.spline(StartCondition="tangent", StartEdge=(sk, "Edge1"), StartEdgeAt=at,
+                            Tension=1e-4)
+            c = s.Shape.Edges[0].Curve
+            starts[at] = (App.Vector(c.tangent(c.FirstParameter)[0]).normalize(), list(s.Warnings))
+        for at, u in (("start vertex", arc.FirstParameter), ("end vertex", arc.LastParameter)):
+            t = arc.tangentAt(u).normalize()
+            self.assertLess(starts[at][0].cross(t).Length, 1e-9, at)
+        self.assertLess((starts["nearest"][0] - starts["start vertex"][0]).Length, 1e-12)
+        self.assertEqual(starts["nearest"][1], [])
+        self.assertGreater(starts["end vertex"][0].getAngle(starts["start vertex"][0]), 0.9)
+        self.assertIn("from the first point", " ".join(starts["end vertex"][1]))
+
     def test_an_end_edge_off_its_point_is_a_warning(self):
         """G2 to an edge whose end is 2.2 mm from the first duck: the spline takes its
         direction and curvature but does not join it; said as a warning (Warnings, the

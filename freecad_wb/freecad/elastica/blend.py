@@ -17,6 +17,7 @@ from . import defaults
 from .geometry import (edge_end, el, global_element, is_sketch, nearest_parameter, np,
                        part_bspline, plane_coordinates, plane_curvature, to_3d)
 from .links import followed_edge
+from .units import length_text, length_unit, per_length, tension_text, tension_unit
 from .proxy import (FeatureProxy, InputProblem, add_enum, add_geometry_index, add_length,
                     add_link, add_property, attach_view, check_degree, check_number,
                     check_tolerance, read_only)
@@ -131,10 +132,13 @@ def blend_core(e0, at_end0, e1, at_end1, plane=None, mode="tension", value=0.0):
         tol = max(1e-10, 1e-7 / dist)
         if mode == "tension":
             if value * dist * dist > e.HERMITE_SIGMA_D2_MAX:
-                raise InputProblem(f"Tension = {value:g}/mm^2 is too high for ends {dist:.6g} mm "
-                                   f"apart: the solver covers tension times distance^2 up to "
-                                   f"{e.HERMITE_SIGMA_D2_MAX:g}, here a tension of at most "
-                                   f"{e.HERMITE_SIGMA_D2_MAX / dist ** 2:.4g}/mm^2")
+                per, u = length_unit()
+                per *= per
+                raise InputProblem(f"Tension = {value * per:g}/{u}^2 is too high for ends "
+                                   f"{length_text(dist, 6)} apart: the solver covers tension "
+                                   f"times distance^2 up to {e.HERMITE_SIGMA_D2_MAX:g}, here a "
+                                   "tension of at most "
+                                   f"{e.HERMITE_SIGMA_D2_MAX / dist ** 2 * per:.4g}/{u}^2")
             sols = e.hermite(a0, t0, a1, t1, tension=value, tol=tol)
         else:
             if value == 0.0:                      # the free batten's own length
@@ -143,8 +147,9 @@ def blend_core(e0, at_end0, e1, at_end1, plane=None, mode="tension", value=0.0):
                     raise NoBlend("no free batten joins these ends: give a length")
                 value = float(free[0].length)
             if value <= dist:
-                raise InputProblem(f"length {value:.6g} mm is not longer than the {dist:.6g} mm "
-                                   f"between the ends: any length above {dist:.6g} mm is possible")
+                raise InputProblem(f"length {length_text(value, 6)} is not longer than the "
+                                   f"{length_text(dist, 6)} between the ends: any length above "
+                                   f"{length_text(dist, 6)} is possible")
             sols = e.hermite(a0, t0, a1, t1, length=value, tol=tol)
     except InputProblem:
         raise
@@ -191,7 +196,8 @@ def starting_length(e0, at_end0, e1, at_end1, plane=None):
                       f"{', '.join(f'{m:g}' for m in LENGTH_MULTIPLES)} times their distance")
     _, m, length = best
     return length, (f"no free batten (tension 0) joins these ends: solved for a length "
-                    f"instead, {length:g} mm ({m:g} \u00d7 the {dist:.4g} mm between them, the "
+                    f"instead, {length_text(length, 6)} ({m:g} \u00d7 the {length_text(dist, 4)} "
+                    "between them, the "
                     f"fairest of {LENGTH_MULTIPLES[0]:g} to {LENGTH_MULTIPLES[-1]:g} \u00d7); "
                     "change it, or solve for a tension > 0")
 
@@ -246,12 +252,13 @@ def g2_blend(r, i, mode, value, tol, degree):
                 note = f" (solution {i + 1} did not bend to G2: from the library's own start)"
     except (ValueError, ArithmeticError, RuntimeError) as exc:
         dist = float(n.linalg.norm(a1 - a0))
-        asked = (f"of length {value:g} mm" if "length" in kw else
+        asked = (f"of length {length_text(value, 6)}" if "length" in kw else
                  f"at tension {tension_text(kw['tension'], dist, G2_TENSION_DIGITS)}")
         hint = "pick another tension or length, or G1"
         try:
             free = e.elastic_spline(n.vstack([a0, a1]), **ends).length
-            hint = (f"the free G2 batten (tension 0) is {free:.4g} mm long; pulled it gets at "
+            hint = (f"the free G2 batten (tension 0) is {length_text(free, 4)} long; pulled it "
+                    "gets at "
                     "most 1-2 % shorter, pushed longer: try a length from there, or G1"
                     if "length" in kw else
                     "the free G2 batten (tension 0) exists: try a lower tension, or G1")
@@ -259,15 +266,17 @@ def g2_blend(r, i, mode, value, tol, degree):
             pass
         reach = g2_tension_reach(pts, ends) if "tension" in kw else None
         if reach is not None and reach > 0.0:
+            per, unit = tension_unit()    # rounded down in the unit shown: typed back, it
+            shown = reach if per == 1.0 else floor_digits(reach * per)     # is within reach
             hint += (f"; the largest tension a G2 batten was found at is about "
-                     f"{tension_text(reach, dist, G2_TENSION_DIGITS)} "
+                     f"{shown:.{G2_TENSION_DIGITS}g} {unit} "
                      "(there can be gaps below it): held by its guide ducks, a G2 blend pulled "
                      "does not straighten as G1 does, and beyond some tension there is none")
         # not the exception's words about the spline it keeps: nothing is returned here
         solve = "the batten's solve did not converge" if isinstance(exc, e.NotConvergedError) \
             else f"the batten's solve: {str(exc).replace('elastic_spline: ', '', 1)}"
         raise InputProblem(f"no G2 blend {asked} ({solve}); the edges' curvatures are "
-                           f"{k0:.3g} and {k1:.3g}/mm; {hint}") from None
+                           f"{k0 * length_unit()[0]:.3g} and {per_length(k1)}; {hint}") from None
     try:
         return sp, sp.to_bspline(tol, degree), note
     except (ValueError, ArithmeticError, RuntimeError) as exc:
@@ -364,12 +373,6 @@ def plural(n, word):
     return f"{n} {word}{'' if n == 1 else 's'}"
 
 
-def tension_text(sigma, length, digits=3):
-    """sigma in 1/mm^2 (the unit of the Tension fields) to ``digits`` significant digits,
-    rounding noise (below 1e-9 of the scale 1/length^2) shown as 0."""
-    return f"{0.0 if abs(sigma) * length ** 2 < 1e-9 else sigma:.{digits}g} 1/mm\u00b2"
-
-
 # Significant digits of the tensions the G2 error messages give: 3 told 0.00176823 (none
 # found) from 0.00177 (solved) as the same "0.00177" (QA12).
 G2_TENSION_DIGITS = 6
@@ -383,8 +386,9 @@ def floor_digits(x, digits=G2_TENSION_DIGITS):
 
 
 def solution_text(i, length, energy, infl, loops, kmax):
-    return (f"{i + 1}: {length:.4g} mm, energy {energy:.3g}/mm, {plural(infl, 'inflection')}, "
-            f"{plural(loops, 'loop')}, max curvature {kmax:.3g}/mm")
+    return (f"{i + 1}: {length_text(length, 4)}, energy {per_length(energy)}, "
+            f"{plural(infl, 'inflection')}, {plural(loops, 'loop')}, max curvature "
+            f"{per_length(kmax)}")
 
 
 class BlendProxy(FeatureProxy):
@@ -562,16 +566,18 @@ class BlendProxy(FeatureProxy):
         obj.BlendLength = float(sp.length if sp else curves[i].length)
         obj.BlendTension = float(sp.tension if sp else getattr(curves[i], "sigma", 0.0))
         if sp:
-            forces = ", ".join(f"{float(np().hypot(*f)):.3g}" for f in sp.guide_forces)
+            per, unit = tension_unit()   # forces in 1/length^2 x EI/2, as the tension
+            forces = ", ".join(f"{float(np().hypot(*f)) * per:.3g}" for f in sp.guide_forces)
             bends = plural(inflections(sp.pieces), "inflection")
             free = " (free batten)" if tension_text(sp.tension, sp.length).startswith("0 ") \
                 else ""
             # "; " parts: the panel shows one a line
             obj.Status = (f"G2 from solution {i + 1} of {len(curves)}{followed}{r['g2_note']}; length "
-                          f"{sp.length:.4g} mm, tension {tension_text(sp.tension, sp.length)}"
-                          f"{free}; energy {sp.energy:.3g}/mm, max curvature "
-                          f"{sp.max_curvature:.3g}/mm, {bends}"
-                          f"; guide ducks' forces {forces} (1/mm\u00b2 \u00d7 EI/2)"
+                          f"{length_text(sp.length, 4)}, tension "
+                          f"{tension_text(sp.tension, sp.length)}{free}; energy "
+                          f"{per_length(sp.energy)}, max curvature "
+                          f"{per_length(sp.max_curvature)}, {bends}"
+                          f"; guide ducks' forces {forces} ({unit} \u00d7 EI/2)"
                           + (f"; G2 to {sp.residual:.2g} (nearly straight under tension: double "
                              f"precision resolves its pieces to {sp.resolution:.2g}, the library's "
                              "tolerance is 1e-10)" if sp.residual > 1e-10 else ""))

@@ -17,8 +17,8 @@ from .fit_core import DISTANCES, MODELS, fit_gathered
 from .fit_ends import CONTINUITIES
 from .geometry import el, part_bspline, to_3d
 from .links import followed_edge, followed_reader
-from .proxy import (FeatureProxy, InputProblem, add_enum, add_geometry_index, add_length,
-                    add_link, add_property, new_feature, read_only)
+from .proxy import (FeatureProxy, InputProblem, add_edge_end, add_enum, add_geometry_index,
+                    add_length, add_link, add_property, edge_end_choice, new_feature, read_only)
 from .sources import gather_points
 
 
@@ -57,13 +57,17 @@ class FitProxy(FeatureProxy):
         add_property(obj, "App::PropertyBool", "PinEnd", "Fit",
                      "The curve ends exactly at the last data point (one-piece fits)", False)
         add_link(obj, "App::PropertyLinkSub", "StartTangent", "Fit",
-                 "An edge whose tangent (at its end nearest the data's start, projected "
-                 "into the fit plane) the curve follows there (one-piece fits; empty: free)")
+                 "An edge whose tangent (at the end StartTangentAt says: nearest = its end "
+                 "nearest the data's start; projected into the fit plane) the curve follows "
+                 "there (one-piece fits; empty: free)")
         add_link(obj, "App::PropertyLinkSub", "EndTangent", "Fit",
-                 "An edge whose tangent (at its end nearest the data's end, projected into "
-                 "the fit plane) the curve follows there (one-piece fits; empty: free)")
+                 "An edge whose tangent (at the end EndTangentAt says: nearest = its end "
+                 "nearest the data's end; projected into the fit plane) the curve follows "
+                 "there (one-piece fits; empty: free)")
         for link, index in self.followed_links.items():
             add_geometry_index(obj, index, link)
+        for link in ("StartTangent", "EndTangent"):
+            add_edge_end(obj, f"{link}At", "Fit", link)
         for where in ("Start", "End"):
             add_enum(obj, f"{where}Continuity", "Fit",
                      f"How the curve meets its {where}Tangent edge: tangent = follows its "
@@ -139,10 +143,11 @@ class FitProxy(FeatureProxy):
         gathered = gather_points(obj.Source, obj.CsvFile, obj.SamplesPerEdge, link="Source",
                                  element=element, notes=notes)
         edges = {}
-        for key, prop in (("start_edge", "StartTangent"), ("end_edge", "EndTangent")):
+        for key, prop in (("start", "StartTangent"), ("end", "EndTangent")):
             edge = followed_edge(obj, prop)
             if edge is not None:
-                edges[key] = edge
+                edges[f"{key}_edge"] = edge
+                edges[f"{key}_at"] = edge_end_choice(obj, f"{prop}At")
         return fit_gathered(gathered, notes, **core_options(obj), **edges)
 
     def apply(self, obj, r):

@@ -310,12 +310,13 @@ def _far_points(data, dist, plane, free=None):
 def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", split=False,
              distance="orthogonal", pin_start=False, pin_end=False, start_edge=None,
              end_edge=None, start_curvature=None, end_curvature=None, start_join="tangent",
-             end_join="tangent", step=0.0, tol=1e-3, degree=3):
+             end_join="tangent", step=0.0, tol=1e-3, degree=3, start_at=None, end_at=None):
     """Fit elastica(e) to 3D points: in their order (``ordered``), in curve_order's (False)
     or a file's, kept when a curve's (None: file_order). ``distance``: what the smooth one-piece fit
     minimises ("orthogonal": point to curve; "paired": point i at arc length
     i L/(n-1), for equilateral data). ``start_edge`` / ``end_edge``: Part edges whose
-    tangents the curve's ends follow; ``start_curvature`` / ``end_curvature``: 1/mm
+    tangents the curve's ends follow (``start_at`` / ``end_at``: at which end, as
+    fit_ends.tangent_angle); ``start_curvature`` / ``end_curvature``: 1/mm
     or None (free); ``start_join`` / ``end_join``: how that end meets its edge
     (end_constraints). Returns a dict: 'curves' (plane coordinates; a keyline's two
     halves, each from the joint), 'results', 'bspline', 'placement', 'data' (the
@@ -345,7 +346,7 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         degree = check_degree(degree)
     ends = dict(pin_start=pin_start, pin_end=pin_end, start_edge=start_edge, end_edge=end_edge,
                 start_curvature=start_curvature, end_curvature=end_curvature,
-                start_join=start_join, end_join=end_join)
+                start_join=start_join, end_join=end_join, start_at=start_at, end_at=end_at)
     fields = constraint_fields(start_join, end_join)
     joins = [f"{w} join {j}" for w, j in (("Start", start_join), ("End", end_join))
              if j != "tangent"]

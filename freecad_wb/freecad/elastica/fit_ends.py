@@ -22,13 +22,15 @@ CONTINUITIES = ["tangent", "G1", "G2"]
 CONTINUITY_NAMES = {"tangent": "Tangent only", "G1": "G1", "G2": "G2"}
 
 
-def tangent_angle(edge, at, forward, plane):
+def tangent_angle(edge, at, forward, plane, at_end=None):
     """(angle, at_end): the angle in ``plane`` of ``edge``'s tangent at its end nearest
-    to ``at`` (projected into the plane), signed so it points along ``forward`` (a plane
-    vector), and whether that end is the edge's last."""
+    to ``at`` (``at_end`` True / False: at its end / start vertex, the end clicked; projected
+    into the plane), signed so it points along ``forward`` (a plane vector), and whether
+    that end is the edge's last."""
     n = np()
     a, b = edge.FirstParameter, edge.LastParameter
-    at_end = (edge.valueAt(a) - at).Length > (edge.valueAt(b) - at).Length
+    if at_end is None:
+        at_end = (edge.valueAt(a) - at).Length > (edge.valueAt(b) - at).Length
     u = nearest_parameter(edge, at) if edge.isClosed() else b if at_end else a   # no ends
     t = plane.Rotation.inverted().multVec(App.Vector(edge.tangentAt(u)))
     if math.hypot(t.x, t.y) < 1e-9 * max(t.Length, 1e-300):
@@ -40,7 +42,7 @@ def tangent_angle(edge, at, forward, plane):
 
 def end_constraints(xy, plane, pin_start=False, pin_end=False, start_edge=None, end_edge=None,
                     start_curvature=None, end_curvature=None, start_join="tangent",
-                    end_join="tangent", tol=1e-3):
+                    end_join="tangent", tol=1e-3, start_at=None, end_at=None):
     """el.fit's constraints for plane points xy (in their order): pinned ends at the
     first / last point, tangents of Part edges at their ends nearest those points
     (the direction of travel), curvatures (1/mm, + turning left seen from the plane's
@@ -62,8 +64,9 @@ def end_constraints(xy, plane, pin_start=False, pin_end=False, start_edge=None, 
     extent = float(np().ptp(xy, axis=0).max())
     # the direction of travel near each end: over an eighth of the points (noise-proof)
     m = max(1, len(xy) // 8)
-    for where, edge, join, i, forward in (("start", start_edge, start_join, 0, xy[m] - xy[0]),
-                                          ("end", end_edge, end_join, -1, xy[-1] - xy[-1 - m])):
+    for where, edge, join, i, forward, which in (
+            ("start", start_edge, start_join, 0, xy[m] - xy[0], start_at),
+            ("end", end_edge, end_join, -1, xy[-1] - xy[-1 - m], end_at)):
         End = where.capitalize()
         if join not in CONTINUITIES:
             raise InputProblem(f"{End}Continuity = {join!r}: one of {', '.join(CONTINUITIES)}")
@@ -79,7 +82,7 @@ def end_constraints(xy, plane, pin_start=False, pin_end=False, start_edge=None, 
         if edge is None:
             continue
         at = plane.multVec(App.Vector(float(xy[i][0]), float(xy[i][1]), 0.0))
-        angle, at_end = tangent_angle(edge, at, forward, plane)
+        angle, at_end = tangent_angle(edge, at, forward, plane, which)
         c[f"{where}_tangent"] = angle
         if join == "tangent":
             continue

@@ -13,7 +13,8 @@ from PySide import QtCore, QtGui
 
 from . import icon
 from .geometry import is_sketch, sketch_curves
-from .proxy import InputProblem
+from .proxy import EDGE_ENDS, InputProblem
+from .units import length_text, length_unit, tension_unit, user_length
 
 CURRENT = []        # the open panel, if any (scripts and the GUI smoke test drive it)
 DELAY_MS = 150      # recompute after this pause in editing
@@ -46,10 +47,11 @@ _PARSED_UNIT = {"mm": "mm", "1/mm": "1/mm", "1/mm\u00b2": "1/mm^2", "mm\u00b2": 
                 "N\u00b7mm\u00b2": "N*mm^2"}
 
 
-def _in_unit(text, unit):
+def _in_unit(text, unit, plain=1.0):
     """The number a typed quantity is in the box's unit, by FreeCAD's own parser (as its
     Quantity spin boxes read input): '7 cm' in a box of mm is 70, '2.75 in' 69.85,
-    '=2*35' 70, '70,5' 70.5 where the decimal separator is a comma. ValueError for text it
+    '=2*35' 70, '70,5' 70.5 where the decimal separator is a comma (a number without a unit
+    times ``plain``: the box's factor of the unit it shows). ValueError for text it
     cannot read or a quantity of another kind ('7 kg' for a length)."""
     body = text[1:] if text.startswith("=") else text
     if not body.strip():    # FreeCAD reads '' as its 'no value', DBL_MIN: a box emptied
@@ -59,32 +61,25 @@ def _in_unit(text, unit):
     except Exception:      # the parser's errors are of several kinds (syntax, 1/0, ...)
         raise ValueError(f"{text}: not a number or quantity") from None
     if q.Unit == App.Units.Quantity("1").Unit:
-        return q.Value
+        return q.Value * plain
     ref = App.Units.Quantity(f"1 {_PARSED_UNIT.get(unit, '?')}") if unit else None
     if ref is None or q.Unit != ref.Unit:
         raise ValueError(f"{text}: not a quantity in {unit or 'plain numbers'}")
     return q.Value / ref.Value
 
 
-def user_length(mm):
-    """(factor, unit): a length of ``mm`` millimetres in the user's unit schema (Edit >
-    Preferences > General > Units) is mm / factor unit, as FreeCAD's own Quantity boxes and
-    property editor show it ('5.94 in', '15.1 cm', '1 \u00b5m')."""
-    _, factor, unit = App.Units.Quantity(float(mm), App.Units.Length).getUserPreferred()
-    if not factor or not unit:      # a schema's bare '0' (Building US): its unit of 1 mm
-        _, factor, unit = App.Units.Quantity(1.0, App.Units.Length).getUserPreferred()
-    return float(factor), unit
-
-
 class NumberBox(QtGui.QDoubleSpinBox):
-    """A spin box that shows its value as typed ('0.001', '2.5e-07', not '0.00'), a length
-    in the user's unit schema (user_length; the value itself stays in mm), accepts
-    scientific notation, quantities in other units and expressions as FreeCAD's own boxes
-    do ('7 cm', '2.75 in', '=2*35': _in_unit; a plain number is in the box's base unit,
-    mm for a length, as in FreeCAD's boxes) and steps by ``singleStep``. The unit is part
+    """A spin box that shows its value as typed ('0.001', '2.5e-07', not '0.00'), a length,
+    curvature or tension in the user's unit schema (units.py; the value itself stays in mm,
+    1/mm, 1/mm^2), accepts scientific notation, quantities in other units and expressions as
+    FreeCAD's own boxes do ('7 cm', '2.75 in', '=2*35': _in_unit) and steps by
+    ``singleStep``. As FreeCAD 0.20's Gui::QuantitySpinBox (measured under each schema), a
+    plain number is in the unit the box shows ('6' in a box showing '5.94 in' is 6 in) and a
+    length box's arrows step ``singleStep`` of that unit (1 in, 1 cm, 1 m). The unit is part
     of the text, not a suffix: a suffix stayed behind what was typed ('7 in mm')."""
 
     unit = ""                            # Qt calls validate() while __init__ runs
+    typing = None                        # the unit shown when the designer began to type
 
     def __init__(self, lo, hi, step, unit="", tip=""):
         super().__init__()
@@ -98,20 +93,43 @@ class NumberBox(QtGui.QDoubleSpinBox):
         # Fit panel's Ends box was 216 px wide for it
         self.setSizePolicy(QtGui.QSizePolicy.Preferred, QtGui.QSizePolicy.Fixed)
 
-    def textFromValue(self, value):
+    def shown(self, value):
+        """(factor, unit): the box shows ``value`` as value / factor unit."""
         if self.unit == "mm":
-            factor, unit = user_length(value)
-            return f"{value / factor:.6g} {unit}"
-        return f"{value:.6g} {self.unit}" if self.unit else f"{value:.6g}"
+            return user_length(value)
+        if self.unit == "1/mm":
+            factor, unit = length_unit()
+            return 1.0 / factor, f"1/{unit}"
+        if self.unit == "1/mm\u00b2":
+            factor, unit = tension_unit()
+            return 1.0 / factor, unit
+        return 1.0, self.unit
+
+    def textFromValue(self, value):
+        factor, unit = self.shown(value)
+        return f"{value / factor:.6g} {unit}" if unit else f"{value:.6g}"
+
+    def focusInEvent(self, event):
+        self.typing = self.shown(self.value())     # '6' typed over '5.94 in' is 6 in
+        super().focusInEvent(event)
+
+    def focusOutEvent(self, event):
+        self.typing = None
+        super().focusOutEvent(event)
 
     def _number(self, text):
         t = text.strip()
-        if self.unit and t.endswith(self.unit):
-            t = t[:-len(self.unit)].strip()
+        factor, unit = self.typing or self.shown(self.value())
+        for u, f in ((unit, factor), (self.unit, 1.0)):
+            if u and t.endswith(u):
+                try:
+                    return float(t[:-len(u)].strip()) * f
+                except ValueError:
+                    pass
         try:
-            return float(t)
+            return float(t) * factor        # a plain number: in the unit shown
         except ValueError:
-            return _in_unit(t, self.unit)
+            return _in_unit(t, self.unit, factor)
 
     def valueFromText(self, text):
         if text == self.textFromValue(self.value()):
@@ -120,6 +138,13 @@ class NumberBox(QtGui.QDoubleSpinBox):
             return self._number(text)
         except ValueError:
             return self.value()
+
+    def stepBy(self, steps):
+        if self.unit != "mm":           # tensions, curvatures: the problem's own scale
+            return super().stepBy(steps)
+        factor, _ = self.shown(self.value())
+        self.setValue(self.value() + steps * self.singleStep() * factor)
+        self.selectAll()
 
     def validate(self, text, pos):
         try:
@@ -395,13 +420,20 @@ class Panel:
         return btn
 
     def pick_edge(self, prop, picked=None, freed=None):
+        """Link the selected edge to ``prop`` (free it if linked); a feature that joins an
+        end of it (its ``prop + 'At'``, proxy.EDGE_ENDS) joins the end nearer where the edge
+        was clicked, as the Elastic blend command does (blend.picked_end); a scripted
+        selection (no click) keeps the nearest end."""
+        at = prop + "At"
         if getattr(self.obj, prop):
             self.set(prop, None)
+            if at in self.obj.PropertiesList:
+                self.set(at, "nearest")
             if freed:
                 freed()
         else:
-            sel = [(s.Object, n) for s in Gui.Selection.getSelectionEx()
-                   for n in s.SubElementNames if n.startswith("Edge")]
+            sel = [(s.Object, n, App.Vector(p)) for s in Gui.Selection.getSelectionEx()
+                   for n, p in zip(s.SubElementNames, s.PickedPoints) if n.startswith("Edge")]
             if not sel:
                 self.result.setText("<b style='color:#b00'>select an edge first</b>")
                 return
@@ -410,6 +442,11 @@ class Panel:
                 self.result.setText("<b style='color:#b00'>pick an edge of another object "
                                     f"({sel[0][0].Label} depends on this feature)</b>")
                 return
+            if at in self.obj.PropertiesList:
+                from .blend import picked_end
+                from .geometry import global_element
+                end = picked_end(global_element(sel[0][0], sel[0][1]), sel[0][2])
+                self.set(at, "nearest" if end is None else EDGE_ENDS[1 + bool(end)])
             self.set(prop, (sel[0][0], [sel[0][1]]))
             if picked:
                 picked()
@@ -718,4 +755,7 @@ def show_box(box):
 
 
 def _fmt(v, unit="mm"):
+    """A value to 3 digits with its unit; a length (mm) in the user's schema (length_text)."""
+    if unit == "mm":
+        return length_text(v)
     return f"{float(v):.3g} {unit}".strip()

@@ -120,6 +120,25 @@ def add_geometry_index(obj, name, link, several=False):
                         "links follow in this session: {link: its slots' Tags}", 2 | 4 | 8)
 
 
+# Which end of an edge a feature joins (spline ends, fit tangents): the end nearest the points'
+# end (a script's choice), or the vertex nearer where the designer clicked the edge in the
+# panel (Gui.Selection's PickedPoints, as the Elastic blend reads a click: blend.picked_end)
+EDGE_ENDS = ["nearest", "start vertex", "end vertex"]
+
+
+def add_edge_end(obj, name, group, link):
+    """The enumeration ``name`` (EDGE_ENDS) saying which end of the edge ``link`` is joined."""
+    add_enum(obj, name, group, f"Which end of {link} is joined: nearest (the end nearest the "
+             "points' end), or its start / end vertex (the end nearer where the edge was "
+             "clicked when picked in the panel)", EDGE_ENDS, "nearest")
+
+
+def edge_end_choice(obj, name):
+    """None (the nearest end), False (the edge's start vertex) or True (its end vertex)."""
+    value = getattr(obj, name, "nearest")
+    return None if value == "nearest" else value == "end vertex"
+
+
 def add_enum(obj, name, group, tip, values, value=None):
     """An enumeration property; when it has no values yet (new object) they are
     set, and the current one to value (default: the first)."""

@@ -18,9 +18,10 @@ from . import defaults
 from .geometry import (edge_end, el, nearest_parameter, np, part_bspline, plane_coordinates,
                        plane_curvature, to_3d)
 from .links import followed_edge, followed_reader
-from .proxy import (FeatureProxy, InputProblem, add_enum, add_geometry_index, add_length,
-                    add_link, add_property, check_degree, check_number, check_tolerance,
-                    new_feature, read_only)
+from .units import length_text, tension_text, user_length
+from .proxy import (FeatureProxy, InputProblem, add_edge_end, add_enum, add_geometry_index,
+                    add_length, add_link, add_property, check_degree, check_number,
+                    check_tolerance, edge_end_choice, new_feature, read_only)
 from .sources import gather_vertices
 
 MODES = ["tension", "length"]
@@ -40,7 +41,7 @@ def _library_message(exc):
     return str(exc).replace("elastic_spline: ", "")
 
 
-def end_condition(edge, condition, point, neighbour, arriving, seam=False):
+def end_condition(edge, condition, point, neighbour, arriving, seam=False, at_end=None):
     """What an end of the spline at ``point`` (3D; ``neighbour`` the next duck
     inwards) takes from ``edge`` at the edge's end nearest the point: (edge, at_end,
     3D unit direction of travel, gap). The spline leaves a start edge continuing it
@@ -48,10 +49,14 @@ def end_condition(edge, condition, point, neighbour, arriving, seam=False):
     point only lends its direction, turned to run along the spline. A closed edge (a
     full circle or ellipse: its seam is no end) is met at its point nearest the point
     (u: its parameter there, else None), in the direction that runs along the spline;
-    ``seam``: at its seam instead, the rule before 4a0ae84 (seam_changes)."""
+    ``seam``: at its seam instead, the rule before 4a0ae84 (seam_changes). ``at_end``
+    (open edges): True / False joins its end / start vertex (the end clicked), None the
+    end nearest the point."""
     u = nearest_parameter(edge, point) if edge.isClosed() and not seam else None
     if u is None:
-        at_end = (edge_end(edge, True)[0] - point).Length < (edge_end(edge, False)[0] - point).Length
+        if at_end is None:
+            at_end = (edge_end(edge, True)[0] - point).Length < \
+                (edge_end(edge, False)[0] - point).Length
         p, leaving = edge_end(edge, at_end)
     else:
         at_end, p, leaving = False, edge.valueAt(u), App.Vector(edge.tangentAt(u)).normalize()
@@ -133,7 +138,8 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
                 start=None, end=None, tol=1e-3, degree=BSPLINE_DEGREE):
     """The elastic spline through 3D ``points`` (in ``plane``, a sketch's placement,
     when they lie in it, else their best plane). ``start`` / ``end``: None (natural)
-    or (condition 'tangent' / 'G2', Part edge). Tension mode: ``tension`` >= 0
+    or (condition 'tangent' / 'G2', Part edge[, at_end: which end, end_condition]).
+    Tension mode: ``tension`` >= 0
     (1/mm^2; 0 = the free batten); length mode: ``length`` mm (0 = the free
     batten's length). Returns a dict: 'spline' (el.ElasticSpline, plane
     coordinates), 'bspline', 'placement', 'forces' (duck_forces), 'notes'.
@@ -163,7 +169,8 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
         for j, spec in enumerate((start, end)):
             if spec is not None:
                 i, inner = (0, 1) if j == 0 else (-1, -2)
-                ends[j] = end_condition(spec[1], spec[0], pts[i], pts[inner], arriving=j == 1)
+                ends[j] = end_condition(spec[1], spec[0], pts[i], pts[inner], arriving=j == 1,
+                                        at_end=spec[2] if len(spec) > 2 else None)
                 if ends[j]["u"] is not None:      # the direction the seam's rule took
                     ends[j]["seam"] = end_condition(spec[1], spec[0], pts[i], pts[inner],
                                                     arriving=j == 1, seam=True)["direction"]
@@ -200,7 +207,8 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
             else:                          # closed: met at its nearest point, not an end
                 where, on, taken = f"{what} (closed)", "a point on the edge", \
                     f"{taken} at its nearest point"
-            cautions.append(f"{where} is {c['gap']:.3g} mm from the {point} point: the spline "
+            cautions.append(f"{where} is {length_text(c['gap'])} from the {point} point: the "
+                            "spline "
                             f"takes its {taken} but does not meet it; to join, make the "
                             f"{point} point {on} (pick it, or constrain them coincident)")
     if mode == "length":
@@ -277,8 +285,9 @@ def starting_tension(points, plane=None, closed=False, tol=1e-3, degree=BSPLINE_
             continue
         if not r["spline"].loops:
             return tension, (f"no free batten (tension 0) passes these points (it slides off "
-                             f"its ducks): solved at Tension = {tension:g} 1/mm\u00b2 instead "
-                             f"({m:g} / the {polygon:.4g} mm polygon through them squared, the "
+                             f"its ducks): solved at Tension = {tension_text(tension, polygon, 6)} "
+                             f"instead ({m:g} / the {length_text(polygon, 4)} polygon through "
+                             "them squared, the "
                              f"least of {TENSION_MULTIPLES[0]:g} to {TENSION_MULTIPLES[-1]:g} "
                              "whose batten does not loop); change it, or give a length")
     raise NoSpline("no free batten (tension 0) passes these points (it slides off its ducks), "
@@ -316,9 +325,10 @@ class SplineProxy(FeatureProxy):
                      "into that end's span, free to move across it, holds the batten there)",
                      END_CONDITIONS, "natural")
             add_link(obj, "App::PropertyLinkSub", f"{end}Edge", "Spline",
-                     f"The edge the {which} point follows (tangent or G2) at its end "
-                     f"nearest that point")
+                     f"The edge the {which} point follows (tangent or G2) at the end "
+                     f"{end}EdgeAt says (nearest: its end nearest that point)")
             add_geometry_index(obj, f"{end}EdgeGeometry", f"{end}Edge")
+            add_edge_end(obj, f"{end}EdgeAt", "Spline", f"{end}Edge")
         add_property(obj, "App::PropertyFloat", "Stiffness", "Spline",
                      "Bending stiffness EI of the batten (N mm^2): the duck forces in newtons; "
                      "0 = in units of EI/2 (1/mm^2)", 0.0)
@@ -364,7 +374,7 @@ class SplineProxy(FeatureProxy):
                   "Poles", "Status", "Warnings", "Curves", "Plane")
 
     def end_specs(self, obj):
-        """(start, end): None or (condition, Part edge) from the end properties."""
+        """(start, end): None or (condition, Part edge, at_end) from the end properties."""
         out = []
         for end in ("Start", "End"):
             cond, link = getattr(obj, f"{end}Condition"), getattr(obj, f"{end}Edge")
@@ -376,7 +386,7 @@ class SplineProxy(FeatureProxy):
             if edge is None:
                 raise InputProblem(f"{end}Condition = {cond} needs an edge: pick one "
                                    f"({end.lower()} edge)")
-            out.append((cond, edge))
+            out.append((cond, edge, edge_end_choice(obj, f"{end}EdgeAt")))
         return out
 
     def compute(self, obj):
@@ -398,7 +408,9 @@ class SplineProxy(FeatureProxy):
         changed = seam_changes(old, r.get("seams", []))
         obj.Shape = part_bspline(bs, plc).toShape()
         if changed:
-            length = f" (length {old.Length:.6g} -> {obj.Shape.Length:.6g} mm)"
+            factor, unit = user_length(max(old.Length, obj.Shape.Length))
+            length = (f" (length {old.Length / factor:.6g} -> "
+                      f"{obj.Shape.Length / factor:.6g} {unit})")
             changed = [w + length for w in changed]
             for w in changed:                 # once: the next recompute finds the new shape
                 App.Console.PrintWarning(f"Elastica {obj.Label}: {w}\n")

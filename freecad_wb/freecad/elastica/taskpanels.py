@@ -18,6 +18,7 @@ from .fit_core import DISTANCE_NAMES, DISTANCES, MODEL_NAMES, MODELS
 from .fit_ends import CONTINUITIES, CONTINUITY_NAMES
 from .geometry import is_sketch
 from .panelbase import CURRENT, Panel, _fmt
+from .units import length_text, length_unit, per_length, tension_unit
 
 
 
@@ -79,8 +80,9 @@ class FitPanel(Panel):
             self.tangent_buttons.append(self.edge_button(
                 e, f"{text} tangent", prop,
                 f"{text} tangent: select an edge and click to follow its tangent (at its end "
-                f"nearest the data's {text.lower()}, projected into the fit plane); click again "
-                "to free it (one-piece fits)",
+                f"nearer where you clicked the edge; selected by a script, at its end nearest "
+                f"the data's {text.lower()}; projected into the fit plane); click again to free "
+                "it (one-piece fits)",
                 when=lambda prop=prop: self.one_piece() or bool(getattr(o, prop)),
                 freed=lambda i=len(self.joins): self.joins[i].setCurrentIndex(0)))
             join = self.choice(e, f"{text} join", f"{text}Continuity", CONTINUITIES,
@@ -149,8 +151,8 @@ class FitPanel(Panel):
         if len(o.EndCurvatures) == 2:
             # rounding noise (below 1e-9 of 1/length: a natural end's) shown as 0
             size = o.Shape.Length if not o.Shape.isNull() else 0.0
-            ends = "<br>end \u03ba {:.4g}, {:.4g}/mm".format(
-                *(0.0 if abs(k) * size < 1e-9 else k for k in o.EndCurvatures))
+            k0, k1 = (0.0 if abs(k) * size < 1e-9 else k for k in o.EndCurvatures)
+            ends = f"<br>end \u03ba {k0 * length_unit()[0]:.4g}, {per_length(k1, 4)}"
         return (f"{n} points, {o.ErrorMeasure}:<br>rms {_fmt(o.Rms)}, max {_fmt(o.MaxError)}"
                 f"<br>{curve}k = {ks}{ends}<br>{bs}<br>{o.Status}")
 
@@ -294,7 +296,7 @@ class BlendPanel(Panel):
             o.Mode, self.auto = "length", float(o.Length)   # chosen here: ends_changed redoes it
             self.note = (f"No free batten (tension 0) joins these ends: solved for the length "
                          f"Length is bound to ({self.expression('Length')}), "
-                         f"{float(o.Length):.4g} mm")
+                         f"{length_text(float(o.Length), 4)}")
             self.show_mode()
             return True
         self.auto, self.note = start
@@ -329,11 +331,20 @@ class BlendPanel(Panel):
             self.obj.Solution = row
             self.update()
 
+    def descriptions(self):
+        """Every solution in words, in the unit schema of now (Descriptions: of the last
+        recompute's)."""
+        o = self.obj
+        data = [o.Lengths, o.Energies, o.Inflections, o.Loops, o.MaxCurvatures]
+        if any(len(d) != len(o.Descriptions) for d in data):
+            return list(o.Descriptions)
+        return [B.solution_text(j, *d) for j, d in enumerate(zip(*data))]
+
     def refresh(self):
         o = self.obj
         self.list.blockSignals(True)
         self.list.clear()
-        for text in o.Descriptions:
+        for text in self.descriptions():
             self.list.addItem(text)
         if o.Descriptions:
             self.list.setCurrentRow(min(o.Solution, len(o.Descriptions) - 1))
@@ -409,7 +420,9 @@ class SplinePanel(Panel):
                                 "duck in that end's span, drawn in orange, holds it)", when=is_open)
             btn = self.edge_button(ends, f"{end} edge", f"{end}Edge",
                                    f"Select an edge, then click: the {which} point follows it "
-                                   "(at its end nearest the point); click again to free it",
+                                   "(at its end nearer where you clicked the edge; selected by "
+                                   "a script, at its end nearest the point); click again to "
+                                   "free it",
                                    empty="pick an edge", when=is_open,
                                    picked=lambda e=end: self.edge_picked(e))
             self.ends.append((combo, btn))
@@ -483,7 +496,8 @@ class SplinePanel(Panel):
         if not forces:
             return ""
         ei = o.Stiffness
-        unit, scale = ("N", 0.5 * ei) if ei > 0 else ("1/mm\u00b2 \u00d7 EI/2", 1.0)
+        per, per_unit = tension_unit()
+        unit, scale = ("N", 0.5 * ei) if ei > 0 else (f"{per_unit} \u00d7 EI/2", per)
         order = sorted(range(len(forces)), key=lambda i: -forces[i])[:self.MAX_DUCK_LINES]
         more = len(forces) - len(order)
         items = ", ".join(f"{i + 1}: {forces[i] * scale:.3g}" for i in sorted(order))
@@ -494,13 +508,13 @@ class SplinePanel(Panel):
 
     def result_text(self):
         o = self.obj
-        radius = f" (radius {1 / o.MaxCurvature:.3g} mm)" if o.MaxCurvature > 0 else ""
+        radius = f" (radius {_fmt(1 / o.MaxCurvature)})" if o.MaxCurvature > 0 else ""
         notes = o.Status.split("; ")[1:]
         tension = B.tension_text(o.SplineTension, o.SplineLength)
         lines = [f"length {_fmt(o.SplineLength)}, tension {tension}"
                  + (" (free batten)" if tension.startswith("0 ") else ""),
-                 f"energy \u222b\u03ba\u00b2 {o.Energy:.4g}/mm, max curvature "
-                 f"{o.MaxCurvature:.3g}/mm{radius}",
+                 f"energy \u222b\u03ba\u00b2 {per_length(o.Energy, 4)}, max curvature "
+                 f"{per_length(o.MaxCurvature)}{radius}",
                  self.forces_text(),
                  f"B-spline: {o.Poles} poles, degree {o.Degree}, within "
                  f"{_fmt(o.BSplineDeviation)}"] + notes
@@ -581,7 +595,8 @@ class G2QuadPanel(Panel):
                 f"{o.Poles} poles, degree 2<br>distance from the source: {_fmt(o.Deviation)}<br>"
                 f"curvature jump at joints inside the pieces: {o.CurvatureJump:.1g} (G2)<br>"
                 + (f"where the pieces meet: tangents {o.JoinAngle:.2g}\u00b0 apart, curvature "
-                   f"jump {o.JoinCurvatureJump:.2g}/mm (not G2 there)<br>" if o.Pieces > 1 else "")
+                   f"jump {per_length(o.JoinCurvatureJump, 2)} (not G2 there)<br>"
+                   if o.Pieces > 1 else "")
                 + f"end tangents off by {o.EndTangentError:.2g}\u00b0, end curvature by "
                 f"{ek}<br>{o.Status}")
 

@@ -1,0 +1,126 @@
+"""The spline's and the fit's edge buttons read where the edge was clicked, as the Elastic
+blend command does (QA: they took the end nearest the points whatever was clicked), checked
+by the GUI smoke test (gui_smoke.py calls run_all): an arc clicked near its end vertex is
+followed there (StartEdgeAt / StartTangentAt 'end vertex'), near its start vertex there,
+and a scripted selection (no click) keeps the nearest end. Screenshot:
+gui_spline_end_clicked.png."""
+import math
+
+import FreeCAD as App
+import FreeCADGui as Gui
+
+import elastica_samples as S
+
+G = None            # the gui_smoke module (check, wait, screenshot, ...)
+DUCKS = [(0, 0), (30, 10), (60, 5), (90, 20), (120, 0)]
+
+
+def arc_at_first_duck(doc):
+    """An arc of radius 30 starting at the first duck and turning 1 rad away from it."""
+    import Part
+    sk = doc.addObject("Sketcher::SketchObject", "EndArc")
+    sk.Placement = S.SKETCH_PLACEMENT
+    sk.addGeometry(Part.ArcOfCircle(Part.Circle(App.Vector(0, -30, 0), App.Vector(0, 0, 1), 30.0),
+                                    0.5 * math.pi, 0.5 * math.pi + 1.0), False)
+    doc.recompute()
+    return sk
+
+
+def click(doc, sk, fraction):
+    """Select the arc as a click at ``fraction`` of it does (its PickedPoints); None: as a
+    script does, without a point."""
+    Gui.Selection.clearSelection()
+    if fraction is None:
+        Gui.Selection.addSelection(doc.Name, sk.Name, "Edge1")
+        return
+    e = sk.Shape.Edges[0]
+    p = e.valueAt(e.FirstParameter + fraction * (e.LastParameter - e.FirstParameter))
+    Gui.Selection.addSelection(doc.Name, sk.Name, "Edge1", p.x, p.y, p.z)
+
+
+def start_tangent(feature):
+    c = feature.Shape.Edges[0].Curve
+    return App.Vector(c.tangent(c.FirstParameter)[0]).normalize()
+
+
+def arc_tangent(sk, at_end):
+    e = sk.Shape.Edges[0]
+    return App.Vector(e.tangentAt(e.LastParameter if at_end else e.FirstParameter)).normalize()
+
+
+def edge_button_clicks(doc, feature, button, prop, arc):
+    """Click the edge button with the arc clicked near its end, its start, and selected by
+    a script: ``prop + 'At'`` and the feature's start tangent follow."""
+    for fraction, want in ((0.9, "end vertex"), (0.1, "start vertex"), (None, "nearest")):
+        click(doc, arc, fraction)
+        button.click()
+        G.wait(800)
+        t = start_tangent(feature)
+        at_end = want == "end vertex"
+        G.check(getattr(feature, prop + "At") == want and
+                t.cross(arc_tangent(arc, at_end)).Length < 1e-6,
+                f"{feature.Label}: the arc clicked at {fraction} -> {prop}At "
+                f"{getattr(feature, prop + 'At')!r}, start tangent "
+                f"{math.degrees(t.getAngle(arc_tangent(arc, at_end))):.3g} deg off its {want}'s")
+        if fraction == 0.9 and prop == "StartEdge":
+            G.screenshot("gui_spline_end_clicked.png")
+        button.click()                      # free it: back to the nearest end
+        G.wait(600)
+        G.check(getattr(feature, prop + "At") == "nearest" and not getattr(feature, prop),
+                f"{feature.Label}: freed, {prop}At {getattr(feature, prop + 'At')!r}")
+
+
+def run_all(smoke):
+    global G
+    G = smoke
+    from freecad.elastica import fit as Fi, spline as Sp, taskpanels as T
+    doc = S.new_doc("ElasticaEdgeClicks")
+    ducks = S.points_sketch(doc, DUCKS, "Ducks")
+    arc = arc_at_first_duck(doc)
+    Gui.SendMsgToActiveView("ViewFit")
+    s = Sp.make(doc, [(ducks, [])], Tension=1e-4)
+    doc.recompute()
+    Gui.ActiveDocument.setEdit(s.Name)
+    G.wait(400)
+    panel = T.CURRENT[0]
+    edge_button_clicks(doc, s, panel.ends[0][1], "StartEdge", arc)
+    panel.reject()
+    G.wait(300)
+    xy, _ = S.keyline_xy(40)
+    pts = S.points_sketch(doc, xy, "FitPoints")
+    f = Fi.make(doc, [(pts, [])], Model="smooth")
+    doc.recompute()
+    arc2 = doc.addObject("Sketcher::SketchObject", "FitArc")
+    arc2.Placement = S.SKETCH_PLACEMENT
+    import Part
+    import numpy as np
+    d = xy[0] - xy[3]
+    a = math.atan2(d[1], d[0])
+    u = App.Vector(math.cos(a), math.sin(a), 0)
+    p = App.Vector(*map(float, xy[0]), 0) + u * 5.0
+    centre = p + App.Vector(-u.y, u.x, 0) * 30.0
+    t0 = math.atan2(p.y - centre.y, p.x - centre.x)
+    arc2.addGeometry(Part.ArcOfCircle(Part.Circle(centre, App.Vector(0, 0, 1), 30.0), t0, t0 + 0.3),
+                     False)
+    doc.recompute()
+    del np
+    Gui.ActiveDocument.setEdit(f.Name)
+    G.wait(400)
+    panel = T.CURRENT[0]
+    for fraction, want in ((0.9, "end vertex"), (0.1, "start vertex"), (None, "nearest")):
+        click(doc, arc2, fraction)
+        panel.tangent_buttons[0].click()
+        G.wait(1500)
+        G.check(f.StartTangentAt == want and not f.Status.startswith("error"),
+                f"fit: the arc clicked at {fraction} -> StartTangentAt {f.StartTangentAt!r} "
+                f"({f.Status[:60]!r})")
+        if want != "nearest":
+            t = App.Vector(start_tangent(f))
+            G.check(t.cross(arc_tangent(arc2, want == "end vertex")).Length < 1e-6,
+                    f"fit: its start follows the arc's {want} tangent")
+        panel.tangent_buttons[0].click()
+        G.wait(800)
+    panel.reject()
+    G.wait(300)
+    Gui.Selection.clearSelection()
+    App.closeDocument(doc.Name)
