@@ -40,10 +40,11 @@ def raise_reported(msg):
     normalises at once): elsewhere RecomputeError, traceback and all."""
     if sys.version_info < (3, 12):
         import ctypes
-        set_object = ctypes.pythonapi.PyErr_SetObject
-        set_object.argtypes = [ctypes.py_object, ctypes.py_object]
-        set_object.restype = None
-        # ctypes raises the error the call set, as it stands (PyDLL checks PyErr_Occurred)
+        # a prototype of its own (not ctypes.pythonapi's shared function object, whose
+        # argtypes other code may set); a PYFUNCTYPE call raises the error it set, as it
+        # stands (it checks PyErr_Occurred)
+        set_object = ctypes.PYFUNCTYPE(None, ctypes.py_object, ctypes.py_object)(
+            ("PyErr_SetObject", ctypes.pythonapi))
         set_object(App.Base.FreeCADError, {"swhat": msg, "sErrMsg": msg, "breported": True})
     raise RecomputeError(msg)
 
