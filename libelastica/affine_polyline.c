@@ -127,6 +127,7 @@ typedef struct piece {
     double x0[2];       /* fixed first vertex */
     int skip_lo, skip_hi;
     double *xy, *t;     /* workspace m+1 points / parameters */
+    double *r;          /* workspace 3 (m+1) residuals: psi's, then polish's r(t +- d) */
 } piece;
 
 static void arc_eval(const arc *a, double tau, double out[2])
@@ -194,27 +195,8 @@ static int piece_build(piece *P, double t1)
     return EL_OK;
 }
 
-/* psi = sum (k_{j+1} - k_j)^2 over the allowed local range, k_j = 2 - B_j / A (4). */
-static double piece_psi_built(const piece *P)
-{
-    size_t m = P->m;
-    if (m < 4) return 0.0;
-    size_t lo = 1 + (size_t)P->skip_lo;
-    if (m < 3 + (size_t)P->skip_hi + lo) return 0.0;
-    size_t hi = m - 3 - (size_t)P->skip_hi;
-    double sum = 0.0, kprev = 0.0;
-    for (size_t j = lo; j <= hi + 1; j++) {
-        double vm[2], vp[2];
-        edge(P->xy, j - 1, vm);
-        edge(P->xy, j + 1, vp);
-        double k = 2.0 - det2(vm[0], vm[1], vp[0], vp[1]) / P->A;
-        if (j > lo) sum += (k - kprev) * (k - kprev);
-        kprev = k;
-    }
-    return sum;
-}
-
-/* The residuals r_j = k_{j+1} - k_j of psi = sum r_j^2 (the same range), into r; their count. */
+/* The residuals r_j = k_{j+1} - k_j over the allowed local range, k_j = 2 - B_j / A (4),
+ * into r (room for m + 1); their count. */
 static size_t piece_resid_built(const piece *P, double *r)
 {
     size_t m = P->m, nr = 0;
@@ -234,6 +216,19 @@ static size_t piece_resid_built(const piece *P, double *r)
     return nr;
 }
 
+static double sum_sq(const double *r, size_t n)
+{
+    double sum = 0.0;
+    for (size_t i = 0; i < n; i++) sum += r[i] * r[i];
+    return sum;
+}
+
+/* psi = sum r_j^2 (4), the residuals in the piece's workspace P->r. */
+static double piece_psi_built(piece *P)
+{
+    return sum_sq(P->r, piece_resid_built(P, P->r));
+}
+
 /* Polish the golden-section minimiser by Gauss-Newton on the residuals: comparing
  * values of psi locates its minimum only to ~sqrt(eps) of the bracket, and which side
  * wins a comparison there is decided by rounding, so inputs moved by 1e-13 moved t1 (and
@@ -244,9 +239,7 @@ static size_t piece_resid_built(const piece *P, double *r)
 static double piece_polish(piece *P, double t, double w)
 {
     size_t cap = P->m + 1;
-    double *buf = malloc(3 * cap * sizeof *buf);
-    if (!buf) return t;
-    double *r = buf, *rp = buf + cap, *rm = buf + 2 * cap;
+    double *r = P->r, *rp = P->r + cap, *rm = P->r + 2 * cap;
     const double d = 1e-6;
     for (int it = 0; it < 4; it++) {
         if (piece_build(P, t + d)) break;
@@ -269,13 +262,11 @@ static double piece_polish(piece *P, double t, double w)
         double tn = t + step;
         if (piece_build(P, tn)) break;
         size_t n1 = piece_resid_built(P, r);
-        double psi1 = 0.0;
-        for (size_t i = 0; i < n1; i++) psi1 += r[i] * r[i];
+        double psi1 = sum_sq(r, n1);
         if (n1 != n0 || !(psi1 <= psi0 * (1.0 + 1e-8) + 1e-300)) break;
         t = tn;
         if (fabs(step) <= 1e-15 * fmax(1.0, fabs(t))) break;
     }
-    free(buf);
     return t;
 }
 
@@ -294,6 +285,9 @@ static int piece_optimise(piece *P, double t1_init, const el_affine_options *o, 
     double lo = (double)P->Ta, hi = fmin(lo + 2.0 * (t1_init - lo), (double)P->Tb);
     int optimisable = o->optimise && P->m >= 4 + (size_t)P->skip_lo + (size_t)P->skip_hi;
     double best_t = t1_init;
+    int st = EL_OK;
+    P->r = malloc(3 * (P->m + 1) * sizeof *P->r);
+    if (!P->r) return EL_ENOMEM;
     if (optimisable && hi > lo) {
         enum { G = 24 };
         double tg[G + 1], fg[G + 1];
@@ -310,27 +304,25 @@ static int piece_optimise(piece *P, double t1_init, const el_affine_options *o, 
         if (gbest < G && fg[gbest] < fg[gbest - 1] && fg[gbest] < fg[gbest + 1] && fg[gbest] < 1e300) {
             el__gsl_quiet();
             gsl_min_fminimizer *s = gsl_min_fminimizer_alloc(gsl_min_fminimizer_goldensection);
-            if (!s) return EL_ENOMEM;
             gsl_function F = {psi_fn, P};
-            if (gsl_min_fminimizer_set_with_values(s, &F, tg[gbest], fg[gbest], tg[gbest - 1],
-                                                   fg[gbest - 1], tg[gbest + 1], fg[gbest + 1])) {
-                gsl_min_fminimizer_free(s);
-                return EL_EINTERNAL;
-            }
-            for (int it = 0; it < o->max_iter; it++) {
+            if (!s) st = EL_ENOMEM;
+            else if (gsl_min_fminimizer_set_with_values(s, &F, tg[gbest], fg[gbest], tg[gbest - 1],
+                                                        fg[gbest - 1], tg[gbest + 1], fg[gbest + 1]))
+                st = EL_EINTERNAL;
+            for (int it = 0; !st && it < o->max_iter; it++) {
                 if (gsl_min_fminimizer_iterate(s)) break;
                 double a = gsl_min_fminimizer_x_lower(s), b = gsl_min_fminimizer_x_upper(s);
                 if (b - a < o->t1_tol) break;
             }
-            best_t = gsl_min_fminimizer_x_minimum(s);
+            if (!st) best_t = piece_polish(P, gsl_min_fminimizer_x_minimum(s), h);
             gsl_min_fminimizer_free(s);
-            best_t = piece_polish(P, best_t, h);
         }
     }
-    int st = piece_build(P, best_t);
-    if (st) return st;
-    *psi = piece_psi_built(P);
-    return EL_OK;
+    if (!st) st = piece_build(P, best_t);
+    if (!st) *psi = piece_psi_built(P);
+    free(P->r);
+    P->r = NULL;
+    return st;
 }
 
 /* A = sign (S/m)^3 given: t1 from the affine length cbrt|A| along f~, then optimised. */
@@ -532,6 +524,7 @@ int el_affine_polyline(size_t nsamples, const double *samples, const double *tan
         P.skip_hi = P.Tb < N ? l : 0;
         P.xy = work_xy;
         P.t = work_t;
+        P.r = NULL;                         /* piece_optimise's */
         double psi = 0.0;
         st = piece_solve(&P, &o, &psi);
         if (st) break;
