@@ -341,6 +341,9 @@ int el__spline_solve_buckled(el__spchain *w, int max_steps, double dir, double L
  * buckled batten of the ducks projected onto it, moved to the ducks (spline_path.c). */
 int el__spline_solve_near_line(el__spchain *w, int max_steps, double dir, double Lt);
 
+/* spline.c: what one ulp of a piece's k moves its end state by near the separatrix, in
+ * the residual's units (th: its end angles, kmax: its max |kappa|, h: its chord). */
+double el__spline_separatrix_bound(const el_smooth_params *p, const double th[2], double kmax, double h);
 /* spline_fair.c: 1 when the curve of the m pieces (closed: the last back to the first)
  * crosses itself where the polygon of their knots does not, else 0; -1: no memory.
  * el__chain_crosses: the same for the chain w without guide ducks (internal units). */

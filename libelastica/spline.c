@@ -169,7 +169,7 @@ static int circle_piece(const el_smooth_params *p, double tol)
  * The sum of both (the solver cannot choose where the step lands); a joint's
  * jump carries both its pieces' (make_result). ~eps for a piece away from the
  * separatrix; |k| > 1 (past it): the same expression with |1 - k^2|. */
-static double separatrix_bound(const el_smooth_params *p, const double th[2], double kmax, double h)
+double el__spline_separatrix_bound(const el_smooth_params *p, const double th[2], double kmax, double h)
 {
     const double ka = fabs(p->k);
     if (!(ka > 0.0) || !isfinite(ka)) return 0.0;
@@ -250,7 +250,7 @@ static int make_result(const el__spchain *w, const double *xy, size_t npoints, d
         const double kmax = piece_max_curvature(p, pc->Kq, ka[0], ka[1]);
         /* a circle piece is judged by the circle rule alone */
         const int circle = circle_piece(p, tol);
-        bnd[j] = circle ? 0.0 : separatrix_bound(p, th, kmax, h);
+        bnd[j] = circle ? 0.0 : el__spline_separatrix_bound(p, th, kmax, h);
         if (bnd[j] > tol) *sep = fmax(*sep, bnd[j]);
         unres[j] = circle || bnd[j] > tol;
         resid = fmax(resid, rp);

@@ -301,7 +301,7 @@ END_TEST
  * G2 blends between nearly collinear edges whose pieces lie near the separatrix
  * (QA7 g2_near_collinear: EL_ENOCONV with residuals 2e-10 .. 5e-8 > tol): 1 - k^2 of
  * 1e-9 .. 0 a double k resolves in steps of 2.2e-16, so the residual reachable is the
- * header's resolution (spline.c separatrix_bound). Accepted within it, and the G2
+ * header's resolution (spline.c el__spline_separatrix_bound). Accepted within it, and the G2
  * error measured on the pieces (el_smooth_eval: gaps / h, tangent jumps, curvature
  * jumps x h, the ends' tangents and curvatures) is within it too and below 1e-7. At the
  * rule's boundary: d = 1e-9 at sigma h^2 = 0.16 reaches 5.55e-9 against its 5.46e-9,
@@ -368,6 +368,72 @@ START_TEST(near_collinear_g2_accepted_within_resolution)
     ck_assert_int_eq(solve(xy, 2, &o, &r), EL_OK);
     ck_assert(r.residual <= o.tol && r.resolution == 0.0);
     el_spline_result_free(&r);
+}
+END_TEST
+
+/*
+ * The identity behind the resolution (spline.c el__spline_separatrix_bound): its bound
+ * on a piece near the separatrix is what one ulp of k moves the piece's end states by,
+ * in the residual's units (angles, curvature x chord). On the pieces of G2 blends
+ * between edges d apart (d = 1e-9 .. 0.3 rad, sigma h^2 = 16 .. 1600), each with
+ * 1 - k^2 < 1e-6, k is stepped one ulp each way (x0, y0, phi, mu, q, length kept) and
+ * the ends re-evaluated: each move is within the piece's bound (measured: bound /
+ * move >= 1.61), and the largest bound of a blend (its resolution) within 5 times
+ * its largest move (measured <= 3.97; single pieces reach ~1200 where the far end is
+ * flat: the bound takes kappa_max h for the far end's curvature). Steps onto or past
+ * |k| = 1, and pieces at |k| = 1 exactly, are left out: there the neighbouring double
+ * is a different curve (k = 1 - ulp turns at u = K ~ 19, k = 1 + ulp rotates) and the
+ * bound's "all of kappa_max h" applies, not a one-ulp move.
+ */
+START_TEST(separatrix_bound_is_one_ulp_of_k)
+{
+    const double ds[] = {1e-9, -1e-9, 1e-8, -1e-7, 1e-6, -1e-6, 1e-5, -1e-4, 1e-3, 1e-2, -0.03, -0.1, 0.3};
+    const double sh2s[3] = {16.0, 160.0, 1600.0}, h = 40.0, xy[4] = {-0.5 * h, 0.0, 0.5 * h, 0.0};
+    int pieces = 0, blends = 0;
+    for (size_t c = 0; c < 3 * sizeof ds / sizeof *ds; c++) {
+        const double d = ds[c / 3], sh2 = sh2s[c % 3];
+        el_spline_options o = opts(EL_SPLINE_TENSION, sh2 / (h * h));
+        o.start = g2_end(1.0, 0.0, 0.0);
+        o.end = g2_end(cos(d), sin(d), 0.0);
+        el_spline_result r;
+        solve(xy, 2, &o, &r);
+        double bmax = 0.0, mmax = 0.0;
+        for (size_t j = 0; j < r.npieces; j++) {
+            const el_smooth_params *p = &r.pieces[j];
+            if (!(1.0 - p->k * p->k < 1e-6) || fabs(p->k) == 1.0) continue;
+            enum { NS = 2001 };
+            double s[NS], ka[NS], pt[4], th[2], ke[2], kmax = 0.0;
+            for (int i = 0; i < NS; i++) s[i] = p->length * i / (NS - 1.0);
+            ck_assert_int_eq(el_smooth_eval(p, NS, s, NULL, NULL, ka), EL_OK);
+            for (int i = 0; i < NS; i++) kmax = fmax(kmax, fabs(ka[i]));
+            const double se[2] = {0.0, p->length};
+            ck_assert_int_eq(el_smooth_eval(p, 2, se, pt, th, ke), EL_OK);
+            const double hc = hypot(pt[2] - pt[0], pt[3] - pt[1]);
+            const double b = el__spline_separatrix_bound(p, th, kmax, hc);
+            double move = 0.0;
+            for (int sg = -1; sg <= 1; sg += 2) {
+                el_smooth_params q = *p;
+                q.k = nextafter(p->k, sg * INFINITY);
+                if (fabs(q.k) >= 1.0) continue;
+                double pq[4], tq[2], kq[2];
+                ck_assert_int_eq(el_smooth_eval(&q, 2, se, pq, tq, kq), EL_OK);
+                for (int e = 0; e < 2; e++)
+                    move = fmax(move, fmax(fabs(tq[e] - th[e]), fabs(kq[e] - ke[e]) * hc));
+            }
+            ck_assert_msg(move > 0.0 && move <= b, "d %g sigma h^2 %g piece %zu (1 - k^2 %g): one ulp of k "
+                          "moves %g, bound %g", d, sh2, j, 1.0 - p->k * p->k, move, b);
+            bmax = fmax(bmax, b);
+            mmax = fmax(mmax, move);
+            pieces++;
+        }
+        if (mmax > 0.0) {
+            ck_assert_msg(bmax <= 5.0 * mmax, "d %g sigma h^2 %g: largest bound %g, largest move %g", d, sh2,
+                          bmax, mmax);
+            blends++;
+        }
+        el_spline_result_free(&r);
+    }
+    ck_assert_msg(pieces >= 45 && blends >= 15, "%d pieces of %d blends checked", pieces, blends);
 }
 END_TEST
 
@@ -555,6 +621,7 @@ int main(void)
     tcase_add_test(tc, straight_free_batten_bends_to_g2_ends);
     tcase_add_test(tc, near_collinear_g2_ends_under_high_tension);
     tcase_add_test(tc, near_collinear_g2_accepted_within_resolution);
+    tcase_add_test(tc, separatrix_bound_is_one_ulp_of_k);
     tcase_add_test(tc, random_battens_g2_solved_where_tangent_is);
     tcase_add_test(tc, initial_sibling_keeps_its_branch);
     suite_add_tcase(s, tc);
