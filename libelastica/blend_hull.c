@@ -26,16 +26,23 @@ static const double PRUNE = 1e-17;
 /* h_i, h_i' at t, with the span's f_1, f_2 and f_1'', f_2'' there (for the ranges). */
 typedef struct knot { double t, h, dh, f[2], d2f[2]; } knot;
 
-/* S(s) = (1 + m) s - 2 m s^3 over s in [lo, hi] (subset of [0, 1]). */
+/* S(s) = (1 + m) s - 2 m s^3 = -sn'' where sn = s: sn'' = -sn (dn^2 + m cn^2) with
+ * dn^2 = 1 - m s^2, cn^2 = 1 - s^2. */
+double el__blend_sn_S(double m, double s)
+{
+    return (1.0 + m) * s - 2.0 * m * s * s * s;
+}
+
+/* S over s in [lo, hi] (subset of [0, 1]). */
 static void s_range(double m, double lo, double hi, double *smin, double *smax)
 {
-    const double a = (1.0 + m) * lo - 2.0 * m * lo * lo * lo;
-    const double b = (1.0 + m) * hi - 2.0 * m * hi * hi * hi;
+    const double a = el__blend_sn_S(m, lo);
+    const double b = el__blend_sn_S(m, hi);
     *smin = fmin(a, b);                      /* concave: least at an end */
     *smax = fmax(a, b);
     if (m > 0.0) {
         const double s = sqrt((1.0 + m) / (6.0 * m));   /* S'(s) = 0 */
-        if (s > lo && s < hi) *smax = (1.0 + m) * s - 2.0 * m * s * s * s;
+        if (s > lo && s < hi) *smax = el__blend_sn_S(m, s);
     }
 }
 

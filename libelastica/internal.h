@@ -162,6 +162,8 @@ int el__blend_span_at(const el_blend_basis *b, double t, double f[4], double df[
 int el__blend_basis_at(const el_blend_basis *b, double t, double h[4], double dh[4], double d2h[4]);
 /* blend_hull.c: the exact min over t in [0, 1] and i of h_i(t), and where (t). */
 int el__blend_basis_min(const el_blend_basis *b, double *vmin, double *tmin);
+/* blend_hull.c: -sn'' as a function of s = sn(u; m): S(s) = (1 + m) s - 2 m s^3. */
+double el__blend_sn_S(double m, double s);
 /* phi(t) and phi'(t) of one segment with control points q (8 doubles); xy or dxy
  * may be NULL. Errors: those of the basis evaluation. */
 int el__blend_segment_at(const el_blend_basis *b, const double *q, double t, double xy[2], double dxy[2]);
