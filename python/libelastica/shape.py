@@ -13,14 +13,16 @@ __all__ = ["self_crossings", "ShapeDescriptors"]
 #: Samples of a curve whose polyline is tested for self-crossings (as FreeCAD's blend
 #: panel always drew and counted them).
 CROSSING_SAMPLES = 400
-#: Rows of segment pairs tested at once by self_crossings.
-CROSSING_BLOCK = 256
+#: Segments per run in self_crossings: the runs whose bounding boxes overlap are tested
+#: pairwise (a run's segments against the other's).
+CROSSING_BLOCK = 64
 
 
 def self_crossings(xy) -> int:
     """Crossings of a polyline with itself (neighbouring segments excluded): the
-    number of loops a user sees. The segment pairs in blocks of CROSSING_BLOCK rows, so a
-    polyline of many points (a sketch's ducks) needs O(n) memory, not O(n^2)."""
+    number of loops a user sees. The segments in runs of CROSSING_BLOCK, and only pairs
+    of runs whose bounding boxes overlap tested, so a polyline of many points (a sketch's
+    ducks, a long composite curve) needs O(n) memory and about O(n) time, not O(n^2)."""
     xy = np.asarray(xy, dtype=np.float64)
     a, b = xy[:-1], xy[1:]
 
@@ -28,15 +30,21 @@ def self_crossings(xy) -> int:
     def side(p, q, r):
         return (q[..., 0] - p[..., 0]) * (r[..., 1] - p[..., 1]) - \
                (q[..., 1] - p[..., 1]) * (r[..., 0] - p[..., 0])
-    C, D = a[None, :], b[None, :]
+    starts = np.arange(0, len(a), CROSSING_BLOCK)
+    lo = np.array([xy[i:i + CROSSING_BLOCK + 1].min(0) for i in starts]).reshape(-1, 2)
+    hi = np.array([xy[i:i + CROSSING_BLOCK + 1].max(0) for i in starts]).reshape(-1, 2)
+    # runs r <= c whose boxes overlap (apart: no segment of one crosses the other's)
+    near = ~((lo[:, None] > hi[None]).any(2) | (lo[None] > hi[:, None]).any(2))
     count = 0
-    for i0 in range(0, len(a), CROSSING_BLOCK):
+    for r, c in zip(*np.nonzero(np.triu(near))):
+        i0, j0 = starts[r], starts[c]
         A, B = a[i0:i0 + CROSSING_BLOCK, None], b[i0:i0 + CROSSING_BLOCK, None]
+        C, D = a[None, j0:j0 + CROSSING_BLOCK], b[None, j0:j0 + CROSSING_BLOCK]
         s1, s2 = side(A, B, C), side(A, B, D)
         s3, s4 = side(C, D, A), side(C, D, B)
         cross = (s1 * s2 < 0) & (s3 * s4 < 0)
         i, j = np.indices(cross.shape)
-        count += int(np.count_nonzero(cross & (j > i + i0 + 1)))
+        count += int(np.count_nonzero(cross & (j + j0 > i + i0 + 1)))
     return count
 
 

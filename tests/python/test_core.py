@@ -162,3 +162,43 @@ def test_reversed_is_the_same_curve_backwards(k):
         turn = np.remainder(r.angle(s) - c.angle(c.length - s), 2 * np.pi)
         assert np.abs(turn - np.pi).max() < 1e-12
     assert r.reversed().points(np.array([0.0]))[0] == pytest.approx(c.points(np.array([0.0]))[0], abs=1e-12)
+
+
+def test_self_crossings_counts_every_pair_across_runs():
+    """shape.self_crossings tests only the runs of segments whose bounding boxes overlap:
+    the same count as every pair of segments tested (random walks, clouds, wobbly loops
+    and rounded ones with touching and collinear segments, over many runs)."""
+    from libelastica.shape import CROSSING_BLOCK, self_crossings
+
+    def every_pair(xy):
+        a, b = xy[:-1], xy[1:]
+        def side(p, q, r):
+            return (q[..., 0] - p[..., 0]) * (r[..., 1] - p[..., 1]) - \
+                   (q[..., 1] - p[..., 1]) * (r[..., 0] - p[..., 0])
+        A, B, C, D = a[:, None], b[:, None], a[None], b[None]
+        cross = (side(A, B, C) * side(A, B, D) < 0) & (side(C, D, A) * side(C, D, B) < 0)
+        i, j = np.indices(cross.shape)
+        return int(np.count_nonzero(cross & (j > i + 1)))
+
+    rng = np.random.default_rng(7)
+    total = 0
+    for trial in range(60):
+        n = int(rng.integers(2, 10 * CROSSING_BLOCK))
+        if trial % 3 == 0:
+            xy = rng.normal(size=(n, 2)).cumsum(0)
+        elif trial % 3 == 1:
+            xy = rng.normal(size=(n, 2))
+        else:
+            t = np.linspace(0, rng.uniform(1, 30), n)
+            xy = np.c_[np.cos(t) * (1 + 0.3 * np.sin(5 * t)), np.sin(2 * t)]
+        if trial % 4 == 0:
+            xy = np.round(xy, 1)
+        want = every_pair(xy)
+        assert self_crossings(xy) == want, (trial, n)
+        total += want
+    assert total > 10000
+    # a run's last segment reaching far out of its other points, crossed in the next run
+    rng2 = np.random.default_rng(8)
+    xy = np.vstack([rng2.uniform(0, 1, (CROSSING_BLOCK, 2)), [[100, 0.5], [50, 10], [50, -10]],
+                    [50, -10] + rng2.uniform(0, 1, (CROSSING_BLOCK, 2))])
+    assert self_crossings(xy) == every_pair(xy) >= 1
