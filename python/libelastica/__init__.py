@@ -14,7 +14,8 @@ from .prep import (KEYLINE_STEPS, RESAMPLE_MAX_VERTICES, Frame, Frame2D, find_in
                    resampled_polygon, ZIGZAG)
 from .resampled import (RESAMPLE_RATIO, ResampledFit, ResampleWarning, fit_resampled, resample_summary,
                         resampled_fits_worse, resampled_reference)
-from .blend import BlendCurve, EllipticBlend, MQBlend, blend_curve, eck_d, eck_omega
+from .blend import (SPREAD_MAX, BlendCurve, BlendLoopWarning, ConditionWarning, EllipticBlend, MQBlend,
+                    blend_curve, eck_d, eck_omega)
 from .hermite import HERMITE_SIGMA_D2_MAX, HermiteChain, HermiteSolutions, hermite, hermite_analyse
 from .spline import ElasticSpline, LoopWarning, elastic_spline
 from .bspline import (BSpline, cubic_through, interpolate_c2, keyline_bspline,

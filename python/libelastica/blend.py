@@ -21,6 +21,7 @@ example "(k, d) = (0.3, 2)" is ``EllipticBlend(m=0.3, d=2)`` (modulus
 """
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass
 from typing import Optional
 
@@ -28,9 +29,35 @@ import numpy as np
 
 from ._ffi import (DomainError, SingularError, as_points, as_positive, as_real, as_vector,
                    bspline_from_c, check, dptr, ffi, lib, require)
+from .shape import self_crossings
+from .spline import LoopWarning
 
 __all__ = ["EllipticBlend", "MQBlend", "BlendCurve", "blend_curve", "eck_d", "eck_omega",
-           "above_one"]
+           "above_one", "ConditionWarning", "BlendLoopWarning", "SPREAD_MAX"]
+
+#: Through the points, the control points solve a collocation system; when they spread
+#: more than this many times as far as the points (:meth:`BlendCurve.spread`), the solve
+#: amplifies every move of a point that much and the curve swings far outside them (the
+#: Z (0, 0), (40, 40), (0, 40), (40, 0) at k = 0.7: 30 times, the curve 2.9 times the
+#: points' size; at k = 0 the same Z gives 7.1 and 1.04): the interpolation is
+#: ill-conditioned.
+SPREAD_MAX = 20.0
+#: Samples per segment of the polyline tested for self-crossings (:meth:`BlendCurve.loops`).
+LOOP_SAMPLES = 101
+
+
+class ConditionWarning(RuntimeWarning):
+    """:func:`blend_curve`'s warning that the interpolation through the points is
+    ill-conditioned: the control points lie more than :data:`SPREAD_MAX` times as far
+    apart as the points (:meth:`BlendCurve.spread`), so a point's move moves the curve
+    that much more, and the curve swings far outside the points."""
+
+
+class BlendLoopWarning(LoopWarning):
+    """:func:`blend_curve`'s warning that the curve crosses itself where the polygon of
+    its points does not (:meth:`BlendCurve.loops`): a loop between two points much
+    closer together than their neighbours (the Catmull-Rom tangents there are those of
+    the long chords), or a wide swing of an ill-conditioned interpolation."""
 
 _PICK = {"control": lib.EL_BLEND_PICK_CONTROL, "interpolate": lib.EL_BLEND_PICK_INTERPOLATE}
 
@@ -348,18 +375,27 @@ def eck_omega(c: float, t=None) -> np.ndarray:
     return out
 
 
+def _diameter(xy: np.ndarray) -> float:
+    """The largest distance between two rows of xy (n, 2), in blocks of 256 rows."""
+    return max(float(np.hypot(*(xy[i:i + 256, None] - xy[None]).transpose(2, 0, 1)).max())
+               for i in range(0, len(xy), 256))
+
+
 @dataclass
 class BlendCurve:
     """A (composite) blending-function curve: a basis and 3*nseg + 1 control points."""
     basis: _Blend
     q: np.ndarray
     closed: bool = False     # made closed: the seam at q[0] is a C1 joint
+    through: Optional[np.ndarray] = None   # the points it interpolates (blend_curve's)
 
     def __post_init__(self):
         if not isinstance(self.basis, _Blend):
             raise ValueError(f"BlendCurve: basis must be an EllipticBlend or MQBlend, got "
                              f"{type(self.basis).__name__}")
         self.q, _ = _composite(self.q)
+        if self.through is not None:
+            self.through = as_points(self.through, "through")
 
     @property
     def nseg(self) -> int:
@@ -374,15 +410,56 @@ class BlendCurve:
         return float(np.degrees(abs(np.arctan2(d[1, 0] * d[0, 1] - d[1, 1] * d[0, 0],
                                                d[1, 0] * d[0, 0] + d[1, 1] * d[0, 1]))))
 
+    def spread(self) -> float:
+        """How many times as far apart as the points it interpolates (``through``) the
+        control points lie (diameters): what a point's move is amplified by; 1 without
+        such points (control points given)."""
+        if self.through is None:
+            return 1.0
+        return _diameter(self.q) / _diameter(self.through)
+
+    def loops(self) -> int:
+        """Self-crossings of the curve (its polyline of LOOP_SAMPLES points per segment)
+        beyond those of the polygon of the points it interpolates (closed: back to the
+        first): 0 for a curve that follows its points; 0 without such points."""
+        if self.through is None:
+            return 0
+        poly = np.vstack([self.through, self.through[:1]]) if self.closed else self.through
+        xy = self.points(np.linspace(0.0, self.nseg, (LOOP_SAMPLES - 1) * self.nseg + 1))
+        return max(0, self_crossings(xy) - self_crossings(poly))
+
+    def _interpolation_warnings(self) -> list:
+        """(category, text) of an ill-conditioned interpolation and of loops."""
+        out = []
+        spread = self.spread()
+        if spread > SPREAD_MAX:
+            swing = _diameter(self.points()) / _diameter(self.through)
+            out.append((ConditionWarning,
+                        f"the interpolation is ill-conditioned: the control points lie up to "
+                        f"{spread:.3g} times as far apart as the points and the curve spans "
+                        f"{swing:.3g} times their size; a smaller k, other points or control "
+                        "points give a tamer curve"))
+        loops = self.loops()
+        if loops:
+            times = "once" if loops == 1 else f"{loops} times"
+            out.append((BlendLoopWarning,
+                        f"the curve loops: it crosses itself {times} where the polygon of its "
+                        "points does not (between two points much closer together than their "
+                        "neighbours, or where it swings wide); points spaced more evenly give "
+                        "a fair curve"))
+        return out
+
     def warnings(self) -> list:
-        """The basis' warnings, and a corner where the curve closes on itself."""
+        """The basis' warnings, a corner where the curve closes on itself, an
+        ill-conditioned interpolation (:class:`ConditionWarning`) and loops
+        (:class:`BlendLoopWarning`), in words."""
         out = list(self.basis.warnings())
         angle = self.seam_angle()
         if angle > 1e-6:
             out.append(f"the curve closes on itself with a {angle:.3g} deg corner at its first "
                        "point (its ends are not a joint); closed=True (CLI: --closed) makes "
                        "that joint smooth like the others")
-        return out
+        return out + [text for _, text in self._interpolation_warnings()]
 
     def points(self, t=None) -> np.ndarray:
         """Points (n, 2) at global parameters t in [0, nseg] (default 101 per segment)."""
@@ -406,6 +483,11 @@ def blend_curve(points, k: Optional[float] = None, d: float = 2.0, mode: str = "
     distinct; a repeated first point at the end is dropped), smooth at the seam too.
     Without it, points that end where they start close with a corner, which
     :meth:`BlendCurve.warnings` names.
+
+    Through the points, warns :class:`ConditionWarning` when the control points spread
+    more than :data:`SPREAD_MAX` times as far as the points, and :class:`BlendLoopWarning`
+    when the curve crosses itself where the points' polygon does not; both are in
+    :meth:`BlendCurve.warnings` too.
     """
     if k is None and m is None:
         k = 0.5
@@ -417,9 +499,16 @@ def blend_curve(points, k: Optional[float] = None, d: float = 2.0, mode: str = "
         if mode != "interpolate":
             raise ValueError("blend_curve: closed=True passes through the points (mode "
                              "'interpolate'); control points shape their seam themselves")
-        return BlendCurve(basis, basis.composite_through(pts, closed=True), closed=True)
-    if len(pts) == 4:
-        return BlendCurve(basis, basis.from_points(pts, mode))
-    if mode == "interpolate":
-        return BlendCurve(basis, basis.composite_through(pts))
-    return BlendCurve(basis, pts)
+        if len(pts) >= 2 and np.array_equal(pts[0], pts[-1]):
+            pts = pts[:-1]
+        curve = BlendCurve(basis, basis.composite_through(pts, closed=True), closed=True,
+                           through=pts)
+    elif mode == "control":
+        curve = BlendCurve(basis, basis.from_points(pts, mode) if len(pts) == 4 else pts)
+    elif len(pts) == 4:
+        curve = BlendCurve(basis, basis.from_points(pts, mode), through=pts)
+    else:
+        curve = BlendCurve(basis, basis.composite_through(pts), through=pts)
+    for category, text in curve._interpolation_warnings():
+        warnings.warn(text, category, stacklevel=2)
+    return curve

@@ -352,14 +352,18 @@ def cmd_blend(args) -> int:
     v = [_finite(x, "blend coordinates") for x in args.values]
     pts = np.array(v, dtype=np.float64).reshape(4, 2)
     kw = {"m": args.m} if args.m is not None else {"k": args.k if args.k is not None else 0.5}
-    curve = el.blend_curve(pts, d=args.d, mode=args.mode, closed=args.closed, **kw)
+    with warnings.catch_warnings():   # said below with the basis', in the CLI's words
+        warnings.simplefilter("ignore", el.ConditionWarning)
+        warnings.simplefilter("ignore", el.BlendLoopWarning)
+        curve = el.blend_curve(pts, d=args.d, mode=args.mode, closed=args.closed, **kw)
     xy = curve.points(np.linspace(0.0, curve.nseg, 401))
     s, kappa = polygon_curvature(xy)
     rec = {"k": curve.basis.k, "m": curve.basis.m, "d": curve.basis.d, "mode": args.mode,
            "points": pts, "control_points": curve.q, "basis_min": curve.basis.basis_min,
            "convex_hull": curve.basis.convex_hull, "lebesgue": curve.basis.lebesgue,
-           "condition": curve.basis.condition, "closed": curve.closed}
-    for w in curve.warnings():
+           "condition": curve.basis.condition, "closed": curve.closed,
+           "spread": curve.spread(), "loops": curve.loops(), "warnings": curve.warnings()}
+    for w in rec["warnings"]:
         print(f"{PROG} blend: warning: {w}", file=sys.stderr)
     b = None
     if args.tol is not None or args.dxf:

@@ -9,6 +9,7 @@ points in interpolate mode, from q0 to q3 with the picked control points otherwi
 import math
 import os
 import unittest
+import warnings
 
 import FreeCAD as App
 import Part
@@ -352,11 +353,11 @@ class EllipticBlendTest(unittest.TestCase):
         with _Warnings() as w:
             self.doc.recompute()
             self.assertEqual(f.Status, "ok")
-            self.assertTrue(f.ConvexHull and not f.Warnings and f.Spread < El.SPREAD_MAX)
+            self.assertTrue(f.ConvexHull and not f.Warnings and f.Spread < G.el().SPREAD_MAX)
             f.K = 0.7                       # the basis keeps the hull, the collocation does not
             self.doc.recompute()
             self.assertTrue(f.ConvexHull)
-            self.assertGreater(f.Spread, El.SPREAD_MAX)
+            self.assertGreater(f.Spread, G.el().SPREAD_MAX)
             self.assertEqual(len(f.Warnings), 1)
             self.assertIn("ill-conditioned", f.Warnings[0])
             self.assertEqual(len(w.said), 1)
@@ -370,6 +371,22 @@ class EllipticBlendTest(unittest.TestCase):
             f.Mode = "control"              # the points as control points: no collocation
             self.doc.recompute()
             self.assertEqual((f.Status, f.Spread, list(f.Warnings)), ("ok", 1.0, []))
+
+    def test_looping_interpolation_is_warned_as_in_python(self):
+        """The library's rule and words (BlendCurve.warnings): points whose interpolation
+        at m = 0.52 spreads 40 times and loops; each said once, no Python warning leaks."""
+        pts = [(0.0, 0.0), (30.0, 80.0), (70.0, 90.0), (100.0, 0.0)]
+        sk = S.points_sketch(self.doc, pts, "Looping")
+        f = El.make(self.doc, [(sk, [])], K=0.52, KConvention="parameter")
+        with _Warnings() as w, warnings.catch_warnings():
+            warnings.simplefilter("error")
+            self.doc.recompute()
+        want = G.el().blend_curve(pts, m=0.52)
+        self.assertEqual(len(f.Warnings), 2)
+        self.assertIn("ill-conditioned", f.Warnings[0])
+        self.assertIn("the curve loops", f.Warnings[1])
+        self.assertAlmostEqual(f.Spread / want.spread(), 1.0, places=9)
+        self.assertEqual(len(w.said), 2)
 
     def test_warnings_kept_when_reopened(self):
         f = El.make(self.doc, [(self.sk, [])], Mode="control", K=0.62, KConvention="parameter")

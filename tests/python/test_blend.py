@@ -2,6 +2,8 @@
 
 References are independent of the C library: scipy's Jacobi functions and K(m),
 and Eck's control-point relation (2.6) inverted with numpy."""
+import warnings
+
 import numpy as np
 import pytest
 from scipy.optimize import brentq
@@ -255,3 +257,56 @@ def test_overflow_is_named():
         el.blend_curve([[0, 0], [1e308, 1], [-1e308, 1], [3, 0]], m=0.3)
     with pytest.raises(el.DomainError, match="overflow"):
         el.EllipticBlend(m=0.3).composite_through([[0, 0], [1e308, 1], [-1e308, 1], [3, 0], [4, 4]])
+
+
+ZIGZAG = [(0.0, 0.0), (40.0, 40.0), (0.0, 40.0), (40.0, 0.0)]   # a Z of four points
+
+
+def _diameter(xy):
+    xy = np.asarray(xy, float)
+    return float(np.hypot(*(xy[:, None] - xy[None]).transpose(2, 0, 1)).max())
+
+
+def test_ill_conditioned_interpolation_warns_with_its_figure():
+    """Through a Z at k = 0.7 the collocation puts the control points 30 times as far
+    apart as the points and the curve swings far outside them: ConditionWarning, with
+    the spread and the swing; at k = 0.3, and as control points, nothing to say."""
+    with pytest.warns(el.ConditionWarning, match="ill-conditioned") as rec:
+        c = el.blend_curve(ZIGZAG, k=0.7)
+    spread = _diameter(c.q) / _diameter(ZIGZAG)
+    assert c.spread() == pytest.approx(spread, rel=1e-12) and spread > el.SPREAD_MAX
+    assert f"{spread:.3g} times as far apart" in str(rec[0].message)
+    swing = _diameter(c.points(np.linspace(0, 1, 2001))) / _diameter(ZIGZAG)
+    assert swing > 2.0 and f"spans {swing:.3g} times" in str(rec[0].message)
+    assert any("ill-conditioned" in w for w in c.warnings())
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        tame = el.blend_curve(ZIGZAG, k=0.3)
+        assert tame.spread() < el.SPREAD_MAX and tame.warnings() == []
+        given = el.blend_curve(ZIGZAG, k=0.7, mode="control")
+        assert given.spread() == 1.0 and given.warnings() == []
+
+
+def test_closed_blend_looping_between_close_points_warns():
+    """QA13: five points, two of them 1.4 apart among chords of 60 to 100, closed: the
+    curve loops between the close ones without a word. Now BlendLoopWarning (a
+    LoopWarning), and loops() counts it; evenly spaced points say nothing."""
+    pts = np.array([[0, 0], [100, 0], [101, 1], [50, 60], [-3, 20]], float)
+    for given, closed in ((pts, True), (np.vstack([pts, pts[:1]]), False)):
+        with pytest.warns(el.BlendLoopWarning, match="crosses itself once"):
+            c = el.blend_curve(given, closed=closed)
+        assert issubclass(el.BlendLoopWarning, el.LoopWarning) and c.loops() == 1
+        # the loop is there: the segment between the close points crosses its own start
+        xy = c.points(np.linspace(1.0, 2.0, 20001))
+        assert el.shape.self_crossings(xy) == 1 and np.ptp(xy[:, 0]) > 10.0
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        for n in (3, 5, 8):
+            th = 2 * np.pi * np.arange(n) / n
+            c = el.blend_curve(np.c_[np.cos(th), np.sin(th)] * 50, closed=True)
+            assert c.loops() == 0
+        bow_tie = el.blend_curve([[0, 0], [10, 0], [0, 10], [10, 10]], closed=True)
+        assert bow_tie.loops() == 0     # crosses itself once, where its closing edge does
+        assert el.shape.self_crossings(bow_tie.points(np.linspace(0, 4, 4001))) == 1
+        spiral = np.linspace(0.5, 6 * np.pi, 60)
+        assert el.blend_curve(np.c_[spiral * np.cos(spiral), spiral * np.sin(spiral)]).loops() == 0

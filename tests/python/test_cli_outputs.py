@@ -246,3 +246,17 @@ def test_blend_closed_and_the_corner_said(work, capsys):
     assert len(rec["control_points"]) == 10 and rec["control_points"][0] == rec["control_points"][-1]
     code, _, err = cli(capsys, "blend", "0", "0", "1e308", "1", "-1e308", "1", "3", "0")
     assert code != 0 and "overflow" in err and "singular" not in err
+
+
+def test_blend_says_an_ill_conditioned_interpolation_and_its_loop(work, capsys):
+    """The points of the QA repro at m = 0.52: control points 40 times as far apart as
+    the points, the curve 3.16 times their size and crossing itself. The CLI said
+    nothing (FreeCAD warned); now one line each, in its words, the figures in the JSON."""
+    code, out, err = cli(capsys, "blend", "0", "0", "0.3", "0.8", "0.7", "0.9", "1", "0",
+                         "--m", "0.52", "--json", "-")
+    rec = json.loads(out)
+    assert code == 0 and rec["spread"] > 20 and rec["loops"] == 1
+    lines = err.strip().splitlines()
+    assert len(lines) == 2 and all(x.startswith("elastica blend: warning: ") for x in lines), err
+    assert f"lie up to {rec['spread']:.3g} times as far apart" in lines[0] and "loops" in lines[1]
+    assert rec["warnings"] == [x.removeprefix("elastica blend: warning: ") for x in lines]

@@ -13,6 +13,7 @@ report view when they change."""
 from __future__ import annotations
 
 import math
+import warnings
 
 import FreeCAD as App
 
@@ -25,35 +26,6 @@ from .sources import gather_vertices
 
 MODES = ["interpolate", "control"]
 K_CONVENTIONS = ["modulus", "parameter"]
-# Through the points, the control points solve a 4x4 collocation system; when they
-# spread more than this many times as far as the points, the solve amplifies every
-# move of a point that much and the curve swings far outside them (a Z of four
-# points at k = 0.7: 43 times, the curve 4 times the points' size; at k = 0 the
-# same Z gives 10 and 1.4): the interpolation is ill-conditioned.
-SPREAD_MAX = 20.0
-
-
-def diameter(xy):
-    """The largest distance between two of the points (n, 2)."""
-    n = np()
-    return float(n.max(n.hypot(*(xy[:, None, :] - xy[None, :, :]).transpose(2, 0, 1))))
-
-
-def interpolation_warnings(xy, curve, mode):
-    """(spread, [warning]): how many times as far apart as the picked points xy the
-    control points lie (1 with mode 'control'), and the warning when over SPREAD_MAX."""
-    if mode != "interpolate":
-        return 1.0, []
-    spread = diameter(curve.q) / diameter(xy)
-    if spread <= SPREAD_MAX:
-        return spread, []
-    swing = diameter(curve.points()) / diameter(xy)
-    return spread, [f"the interpolation is ill-conditioned: the control points lie up to "
-                    f"{spread:.3g} times as far apart as the points and the curve spans "
-                    f"{swing:.3g} times their size; a smaller k, other points or control "
-                    "points give a tamer curve"]
-
-
 def ellblend_core(points, plane=None, mode="interpolate", k=0.5, d=2.0, tol=1e-3,
                   convention="modulus"):
     """The elliptic blending-function curve of four coplanar 3D points.
@@ -63,8 +35,9 @@ def ellblend_core(points, plane=None, mode="interpolate", k=0.5, d=2.0, tol=1e-3
     'parameter' m = k^2 (the paper's 'k'); ``d`` the end-derivative parameter.
     Returns a dict with 'curve' (libelastica BlendCurve, plane coordinates),
     'bspline' (certified within ``tol``), 'placement', 'control' (3D control
-    points), 'spread' (control points' diameter / points', 1 for control points),
-    'warnings' (the basis' and the interpolation's, in words). Raises InputProblem."""
+    points), 'spread' (control points' diameter / points', 1 for control points:
+    BlendCurve.spread, warned above libelastica's SPREAD_MAX), 'warnings' (the basis'
+    and the interpolation's, in words: BlendCurve.warnings). Raises InputProblem."""
     if len(points) != 4:
         raise InputProblem(f"{len(points)} points: an elliptic blend needs exactly four")
     if mode not in MODES:
@@ -88,7 +61,10 @@ def ellblend_core(points, plane=None, mode="interpolate", k=0.5, d=2.0, tol=1e-3
     try:
         xy, plane = plane_coordinates(points, plane, flat=1e-6, what="four points")
         kw = {"k": float(k)} if convention == "modulus" else {"m": float(k)}
-        curve = el().blend_curve(np().ascontiguousarray(xy), d=float(d), mode=mode, **kw)
+        with warnings.catch_warnings():     # in curve.warnings(), said once by the feature
+            warnings.simplefilter("ignore", el().ConditionWarning)
+            warnings.simplefilter("ignore", el().BlendLoopWarning)
+            curve = el().blend_curve(np().ascontiguousarray(xy), d=float(d), mode=mode, **kw)
         bs = curve.to_bspline(float(tol))
     except InputProblem:
         raise
@@ -97,10 +73,9 @@ def ellblend_core(points, plane=None, mode="interpolate", k=0.5, d=2.0, tol=1e-3
         if "singular" in str(exc).lower() and "K(k) = 2" not in str(exc):
             hint = " (in interpolate mode: the points may be degenerate)"
         raise InputProblem(f"elliptic blend failed: {exc}{hint}") from None
-    spread, bad_fit = interpolation_warnings(xy, curve, mode)
     return {"curve": curve, "bspline": bs, "placement": plane,
-            "control": to_3d(plane, curve.q), "spread": spread,
-            "warnings": list(curve.warnings()) + bad_fit}
+            "control": to_3d(plane, curve.q), "spread": curve.spread(),
+            "warnings": curve.warnings()}
 
 
 class EllipticBlendProxy(FeatureProxy):
@@ -146,7 +121,8 @@ class EllipticBlendProxy(FeatureProxy):
                      "1000, k near 0.80241, are refused)")
         add_property(obj, "App::PropertyFloat", "Spread", "Result",
                      "Through the points: how many times as far apart as the points the "
-                     "control points lie (over 20: ill-conditioned); 1 for control points")
+                     f"control points lie (over {el().SPREAD_MAX:g}: ill-conditioned); 1 for "
+                     "control points")
         add_property(obj, "App::PropertyStringList", "Warnings", "Result",
                      "What the designer should know about this basis (empty: none)")
         add_property(obj, "App::PropertyString", "Status", "Result", "Outcome of the last update")
