@@ -350,7 +350,11 @@ def cmd_blend(args) -> int:
     import libelastica as el
     from .report import curves_picture, polygon_curvature, save_picture
     v = [_finite(x, "blend coordinates") for x in args.values]
-    pts = np.array(v, dtype=np.float64).reshape(4, 2)
+    fewest = 3 if args.closed else 4
+    if len(v) % 2 or len(v) < 2 * fewest:
+        raise InputError(f"the points come as x y pairs, at least {fewest} of them"
+                         f"{' with --closed' if args.closed else ''}: got {len(v)} numbers")
+    pts = np.array(v, dtype=np.float64).reshape(-1, 2)
     kw = {"m": args.m} if args.m is not None else {"k": args.k if args.k is not None else 0.5}
     with warnings.catch_warnings():   # said below with the basis', in the CLI's words
         warnings.simplefilter("ignore", el.ConditionWarning)
@@ -619,11 +623,15 @@ def build_parser() -> argparse.ArgumentParser:
     _units_option(sp)
     sp.set_defaults(func=cmd_spline)
 
-    e = sub.add_parser("blend", help="elliptic blending curve from four points (seed 003)",
+    e = sub.add_parser("blend", help="elliptic blending curve through points (seed 003)",
                        description="An elliptic blending curve (basis {1-t, sn((1-t)K), sn(Kt), "
-                                   "t}) through four points, or with them as control points.",
+                                   "t}) through four points or more (a closed one with --closed), or with "
+                                   "them as control points.",
                        epilog=BLEND_EXAMPLES, formatter_class=raw)
-    e.add_argument("values", nargs=8, type=float, metavar="V", help="x0 y0 x1 y1 x2 y2 x3 y3")
+    e.add_argument("values", nargs="+", type=float, metavar="V",
+                   help="x0 y0 x1 y1 x2 y2 x3 y3 ...: four points (one segment), more (the C1 "
+                        "composite through them; --mode control: 3 n + 1 control points), or "
+                        "3 and more with --closed")
     km = e.add_mutually_exclusive_group()
     km.add_argument("--k", type=_ranged(float, lo=0.0, below=1.0),
                     help="elliptic modulus k in [0, 1) (default 0.5)")

@@ -340,6 +340,31 @@ def test_svg_without_matplotlib(capsys, monkeypatch, tmp_path):
 
 # ------------------------------------------------------------------ blend
 
+def test_blend_takes_more_points_and_closed_ones(capsys):
+    """`blend` took exactly four points (nargs=8): the closed blend and the composite through
+    five points that el.blend_curve makes were out of the CLI's reach, and ten numbers gave
+    argparse's 'unrecognized arguments: -3 20'."""
+    pts = np.array([[0, 0], [100, 0], [101, 1], [50, 60], [-3, 20]], float)
+    r = cli(capsys, "blend", *pts.ravel(), "--closed", "--json", "-")
+    rec = json.loads(r.stdout)
+    with pytest.warns(el.BlendLoopWarning):
+        curve = el.blend_curve(pts, closed=True)
+    assert r.returncode == 0 and rec["closed"] is True
+    assert np.array_equal(np.asarray(rec["control_points"]), curve.q)
+    assert rec["loops"] == curve.loops() == 1 and "loops" in r.stderr    # two close points
+    r = cli(capsys, "blend", *pts.ravel(), "--json", "-")
+    with pytest.warns(el.BlendLoopWarning):
+        open_curve = el.blend_curve(pts)
+    assert r.returncode == 0 and np.array_equal(np.asarray(json.loads(r.stdout)["control_points"]),
+                                                open_curve.q)
+    r = cli(capsys, "blend", *pts[:3].ravel(), "--closed", "--json", "-")
+    assert r.returncode == 0 and json.loads(r.stdout)["closed"] is True
+    for args in (pts.ravel()[:9], pts[:3].ravel()):      # odd count; 3 points, open
+        r = cli(capsys, "blend", *args)
+        assert_one_line_error(r)
+        assert "x y pairs" in r.stderr and f"got {len(args)} numbers" in r.stderr
+
+
 def test_blend_interpolates_the_four_points(capsys):
     pts = np.array([[0, 0], [0.3, 0.8], [0.7, 0.9], [1, 0]], dtype=float)
     r = cli(capsys, "blend", *pts.ravel(), "--m", "0.3", "--d", "2", "--tol", "1e-7", "--json", "-")
