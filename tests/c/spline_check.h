@@ -1,6 +1,7 @@
-/* Shared by the elastic-spline tests (test_spline.c, test_spline_length.c): the
- * properties issue 14 lists, checked on a result (check_spline), a designer's
- * sketch, and the energy of the Hermite pieces through given knot angles. */
+/* Shared by the elastic-spline tests (test_spline*.c): the properties issue 14 lists,
+ * checked on a result (check_spline), the options of a closed spline, the unit ring of 8
+ * ducks, a designer's sketch, and the energy of the Hermite pieces through given knot
+ * angles. */
 #ifndef SPLINE_CHECK_H
 #define SPLINE_CHECK_H
 #include "testutil.h"
@@ -173,6 +174,26 @@ static inline el_spline_options opts(int mode, double v)
     if (mode == EL_SPLINE_TENSION) o.sigma = v;
     else o.length = v;
     return o;
+}
+
+/* options of a closed spline (as opts) */
+static inline el_spline_options closed_opts(int mode, double v)
+{
+    el_spline_options o = opts(mode, v);
+    o.closed = 1;
+    return o;
+}
+
+static inline el_spline_options closed_length(double L)
+{
+    return closed_opts(EL_SPLINE_LENGTH, L);
+}
+
+/* 8 ducks on the unit circle, a closed ring (xy: 16); returns its polygon's length */
+static inline double unit_ring8(double *xy)
+{
+    for (int i = 0; i < 8; i++) { xy[2 * i] = cos(M_PI * i / 4.0); xy[2 * i + 1] = sin(M_PI * i / 4.0); }
+    return 16.0 * sin(M_PI / 8.0);
 }
 
 /* hand-placed, unevenly spaced points of a fair curve (a designer's sketch) */

@@ -284,8 +284,7 @@ START_TEST(closed_curves)
     const double sq[] = {0, 0, 1, 0, 1, 1, 0, 1, 0, 0};   /* a repeated first point is dropped */
     const double sig[] = {0.0, 0.5, 3.0};
     for (size_t i = 0; i < 3; i++) {
-        el_spline_options o = opts(EL_SPLINE_TENSION, sig[i]);
-        o.closed = 1;
+        el_spline_options o = closed_opts(EL_SPLINE_TENSION, sig[i]);
         el_spline_result r;
         ck_assert_int_eq(solve(xy, 12, &o, &r), EL_OK);
         ck_assert_uint_eq(r.npieces, 12);
@@ -299,8 +298,7 @@ START_TEST(closed_curves)
         for (size_t j = 1; j < 4; j++) ck_assert_close(r.pieces[j].length, r.pieces[0].length, 1e-9);
         el_spline_result_free(&r);
     }
-    el_spline_options o = opts(EL_SPLINE_LENGTH, 10.0);
-    o.closed = 1;
+    el_spline_options o = closed_length(10.0);
     el_spline_result r;
     ck_assert_int_eq(solve(xy, 12, &o, &r), EL_OK);
     check_spline(xy, 12, &o, &r, 1e-9);

@@ -209,12 +209,10 @@ END_TEST
 START_TEST(closed_ring_pushed_past_the_separatrix)
 {
     double xy[16];
-    for (int i = 0; i < 8; i++) { xy[2 * i] = cos(M_PI * i / 4.0); xy[2 * i + 1] = sin(M_PI * i / 4.0); }
-    const double poly = 16.0 * sin(M_PI / 8.0);
+    const double poly = unit_ring8(xy);
     const double f[] = {1.15, 1.2, 1.3};
     for (size_t i = 0; i < sizeof f / sizeof f[0]; i++) {
-        el_spline_options o = opts(EL_SPLINE_LENGTH, f[i] * poly);
-        o.closed = 1;
+        el_spline_options o = closed_length(f[i] * poly);
         el_spline_result r;
         ck_assert_msg(solve(xy, 8, &o, &r) == EL_OK, "%g x the polygon", f[i]);
         check_spline(xy, 8, &o, &r, 1e-9);

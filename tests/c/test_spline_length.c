@@ -378,12 +378,10 @@ START_TEST(closed_length_without_a_free_batten)
                                   -2.3464, 0.2071, -2.4051, -0.9101, -0.3182, -2.1825, 0.9045, -1.8066};
     const double sigma[] = {0.3, 1.0, 3.0};
     for (size_t i = 0; i < 3; i++) {
-        el_spline_options o = opts(EL_SPLINE_TENSION, sigma[i]);
-        o.closed = 1;
+        el_spline_options o = closed_opts(EL_SPLINE_TENSION, sigma[i]);
         el_spline_result t, l;
         ck_assert_int_eq(solve(blob, 9, &o, &t), EL_OK);
-        el_spline_options ol = opts(EL_SPLINE_LENGTH, t.length);
-        ol.closed = 1;
+        el_spline_options ol = closed_length(t.length);
         ck_assert_msg(solve(blob, 9, &ol, &l) == EL_OK, "length %g (tension %g)", t.length, sigma[i]);
         check_spline(blob, 9, &ol, &l, 1e-9);
         ck_assert_close(l.sigma, sigma[i], 1e-6 * sigma[i]);

@@ -23,13 +23,6 @@ static double star(double *xy, int n, double ro, double ri)
     return poly;
 }
 
-static el_spline_options closed_length(double L)
-{
-    el_spline_options o = opts(EL_SPLINE_LENGTH, L);
-    o.closed = 1;
-    return o;
-}
-
 /* QA: the closed 10-duck star (radii 20/8) by length failed from 1.25 x its polygon (no
  * spline reached: the path stalled at 1.242 x, sigma h^2 -19.39, where sigma folds back and
  * the knot angles, fixed by the symmetry, do not move). The splines exist: each length
@@ -67,8 +60,7 @@ END_TEST
 START_TEST(ring_by_length_keeps_its_first_mode)
 {
     double xy[16];
-    for (int i = 0; i < 8; i++) { xy[2 * i] = cos(M_PI * i / 4); xy[2 * i + 1] = sin(M_PI * i / 4); }
-    const double poly = 16.0 * sin(M_PI / 8);
+    const double poly = unit_ring8(xy);
     el_spline_options o = closed_length(1.2 * poly);
     el_spline_result r;
     ck_assert_int_eq(solve(xy, 8, &o, &r), EL_OK);
