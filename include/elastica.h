@@ -1117,6 +1117,12 @@ void el_spline_options_defaults(el_spline_options *opt);
  * the length as a coordinate of the path (a fold in sigma where the knot angles stand
  * still: ducks whose symmetry fixes every tangent, a star, a ring on a circle), the one
  * that does not cross itself kept, then the least integral kappa^2 (spline_path.c).
+ * Where none of that reaches the length: tension mode's splines at sigma h^2 = 40 x 2^j
+ * on the mean chord (down to j = -16, or up to 6 while they converge) until two bracket
+ * it, the bracket narrowed along either's family by continuation in sigma, then the
+ * length as above, the one that does not cross itself kept (spline_bracket.c: QA13's
+ * 8-point walk, without a free batten, reached no length 1.03 .. 15 x its polygon; now
+ * every one that its tensions sigma h^2 = 0.01 .. 200 give, at those tensions).
  * A length beyond every spline met following the family is EL_ERANGE, res->reach
  * giving the lengths met and the longest without a crossing. Work is bounded: at most max_steps continuation steps of at most
  * max_iter Newton iterations (20 for a first attempt, 12 for a step), each with

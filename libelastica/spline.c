@@ -6,6 +6,8 @@
  *   spline_chain.c  the unknowns and equations, Newton on the whole chain, its start;
  *   spline_path.c   continuation in sigma, the length mode, the G2 ends'
  *                   continuation in the end curvatures;
+ *   spline_bracket.c length mode from tension mode's splines that bracket the length,
+ *                   where following the family failed;
  *   spline_buckle.c the buckled strip: collinear ducks, ducks near a line;
  *   spline_guide.c  G2 ends: the guide ducks (why, and where);
  *   spline_piece.c  one piece: residuals, Jacobians, its state, its start;
@@ -407,9 +409,11 @@ static int solve_sibling(el__spchain *w, const double *xy, size_t n, const el_sp
     if (!lmode) return el__spline_solve_tension(w, opt->max_steps, 1);
     if (straight_line(xy, n, opt, &dir))   /* longer than the line */
         return el__spline_solve_buckled(w, opt->max_steps, dir, Lp / S, opt->length / S, 0);
-    if (near_line(xy, n, opt, &dir))       /* buckled near it, or from the free batten */
-        return el__spline_solve_near_line(w, opt->max_steps, dir, opt->length / S);
-    return el__spline_solve_length(w, opt->max_steps, opt->length / S);
+    const int st = near_line(xy, n, opt, &dir)   /* buckled near it, or from the free batten */
+                       ? el__spline_solve_near_line(w, opt->max_steps, dir, opt->length / S)
+                       : el__spline_solve_length(w, opt->max_steps, opt->length / S);
+    /* neither reached the length: from the tension solutions that bracket it (spline_bracket.c) */
+    return st == EL_ENOCONV && !w->near ? el__spline_length_by_tension(w, opt->max_steps, opt->length / S) : st;
 }
 
 /*

@@ -298,8 +298,9 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
             lo, hi, fair = (float(res.reach[i]) for i in range(3))
             side = "longest" if L > hi else "shortest"
             # reach is what the one family the solver followed met (elastica.h), not a
-            # bound on the splines through the points: QA13's 8-point walk met one spline
-            # (11.28 x) while tension mode gives fair ones of 1.03 .. 1.8 x
+            # bound on the splines through the points (QA13's 8-point walk met one spline,
+            # 11.28 x, while tension mode gives fair ones of 1.03 .. 1.8 x: now reached from
+            # tension mode's splines, spline_bracket.c)
             err = LengthRangeError(st, (
                 f"elastic_spline: no spline of length {L:.6g} ({L / polygon:.4g} x the polygon, "
                 f"{polygon:.6g}) was reached: the family of splines the solver followed "
@@ -308,7 +309,9 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
                     f", without loops up to {fair / polygon:.4g} x ({fair:.6g})" if fair > 0.0
                     else ", every one with loops")
                 + f"; the {side} it met is not a bound: other splines through these points may "
-                "exist; tension mode reaches others (a larger tension gives a shorter "
+                "exist (the solver also started from tension mode's splines at tension x "
+                "(mean chord)^2 6e-4 .. 2560, none of them around this length); tension mode "
+                "reaches others (a larger tension gives a shorter "
                 "spline; the solver resolves tension x (longest span)^2 up to ~300, "
                 "elastica.h: Accuracy), and its pieces as initial= start length mode on "
                 "their family"))

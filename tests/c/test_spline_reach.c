@@ -1,7 +1,8 @@
 /* Elastic splines (issue 14) by length where the family of tension solutions folds in
  * sigma with the knot angles standing still (ducks whose symmetry fixes every tangent: a
- * star, a ring on a circle), and lengths beyond the splines the solve reaches (EL_ERANGE
- * with the lengths it met, el_spline_result's reach). */
+ * star, a ring on a circle), lengths that only tension mode's splines lead to (spline_bracket.c),
+ * and lengths beyond the splines the solve reaches (EL_ERANGE with the lengths it met,
+ * el_spline_result's reach). */
 #include "spline_check.h"
 #include <stdio.h>
 #include <stdlib.h>
@@ -82,6 +83,63 @@ START_TEST(ring_by_length_keeps_its_first_mode)
 }
 END_TEST
 
+/* QA13's 8-point random walk (numpy default_rng(1), normal(0, 10) steps; no free batten: it
+ * slides off its ducks) */
+static const double walk8[] = {3.45584192064786, 8.216181435011583, 6.760212682481731, -4.815390881032027,
+                               15.813771349212908, -0.35164515739191415, 10.444238995610057, 5.459535884571617,
+                               14.089962957470814, 8.400860851126875, 14.374185370628782, 13.867990717251345,
+                               7.009644500612112, 12.238891237320818, 2.18845137381233, 18.227353363667092};
+/* 12 random ducks closed into a ring (QA's ring77: no free batten, and no batten under
+ * sigma h^2 = 40, 4 or 0.4 from the chain's start) */
+static const double ring77[] = {1.114871201483529, 0.06296179947823506, 0.5268930130627169, 0.14471682098931363,
+                                0.7002262459798201, 0.22878727946245084, 1.171136186509111, 0.7625165256147413,
+                                -0.6232201739649377, 0.0006386487226305472, -1.0328428299768375, -0.02805207981902149,
+                                -0.4487961745896451, -0.31801768649958634, -0.7908416001295514, -1.202444892387523,
+                                -0.31667086307954834, -0.592213679706269, -0.09621596250118901, -0.9049211859109808,
+                                -0.08974183254317604, -1.042927207910349, 0.9393609599573067, -0.7763458991267597};
+
+/* Every length a tension-mode spline has is reached by length mode: tensions sigma x
+ * (longest span)^2 over 0.03 .. 200 on the walk (QA13: no length 1.03 .. 15 x its polygon
+ * was reached, tension mode gives 1.04 .. 7.9 x), a designer's sketch and the unit ring
+ * (reached before too), 0.3 .. 40 on ring77 (none reached, 1.23 .. 12.7 x); each length asked
+ * back is met, G2 through every duck (check_spline); on the walk, the sketch and the ring it
+ * is the same spline (its tension) */
+START_TEST(length_mode_reaches_the_lengths_of_tension_mode)
+{
+    double ring[16];
+    unit_ring8(ring);
+    const struct { const double *xy; size_t n; int closed, same; double sh2[10]; } c[] = {
+        {walk8, 8, 0, 1, {0.03, 0.1, 0.3, 1.0, 3.0, 10.0, 30.0, 100.0, 200.0, 0.0}},
+        {sketch, NSKETCH, 0, 1, {0.03, 0.3, 3.0, 30.0, 200.0, 0.0}},
+        {ring, 8, 1, 1, {0.03, 0.3, 3.0, 30.0, 200.0, 0.0}},
+        {ring77, 12, 1, 0, {0.3, 1.0, 3.0, 10.0, 40.0, 0.0}},
+    };
+    for (size_t k = 0; k < sizeof c / sizeof c[0]; k++) {
+        const size_t n = c[k].n, m = c[k].closed ? n : n - 1;
+        double h = 0.0;
+        for (size_t j = 0; j < m; j++) {
+            const size_t e = (j + 1) % n;
+            h = fmax(h, hypot(c[k].xy[2 * e] - c[k].xy[2 * j], c[k].xy[2 * e + 1] - c[k].xy[2 * j + 1]));
+        }
+        for (size_t i = 0; c[k].sh2[i] > 0.0; i++) {
+            el_spline_options o = opts(EL_SPLINE_TENSION, c[k].sh2[i] / (h * h));
+            o.closed = c[k].closed;
+            el_spline_result t, l;
+            ck_assert_msg(solve(c[k].xy, n, &o, &t) == EL_OK, "set %zu tension %g", k, c[k].sh2[i]);
+            el_spline_options ol = opts(EL_SPLINE_LENGTH, t.length);
+            ol.closed = c[k].closed;
+            ck_assert_msg(solve(c[k].xy, n, &ol, &l) == EL_OK, "set %zu: length %g of tension %g", k, t.length,
+                          c[k].sh2[i]);
+            check_spline(c[k].xy, n, &ol, &l, 1e-9);
+            if (c[k].same) ck_assert_msg(fabs(l.sigma - t.sigma) <= 1e-6 * t.sigma, "set %zu: tension %.9g, asked %.9g",
+                                         k, l.sigma * h * h, c[k].sh2[i]);
+            el_spline_result_free(&t);
+            el_spline_result_free(&l);
+        }
+    }
+}
+END_TEST
+
 /* A length beyond every spline the solve met: EL_ERANGE, with the least and greatest
  * lengths met (reach[0..1]) around the free batten's and the longest without a crossing
  * (reach[2]); the star at 6 x its polygon (it met 1.118 .. 5.49 x, fair up to 2.16 x),
@@ -146,6 +204,7 @@ int main(void)
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, star_by_length_passes_the_fold);
     tcase_add_test(tc, ring_by_length_keeps_its_first_mode);
+    tcase_add_test(tc, length_mode_reaches_the_lengths_of_tension_mode);
     tcase_add_test(tc, length_beyond_reach_says_how_far);
     tcase_add_test(tc, closed_bays_by_length_from_the_taut_start);
     suite_add_tcase(s, tc);

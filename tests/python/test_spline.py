@@ -628,27 +628,23 @@ def test_length_beyond_reach_names_the_range(tmp_path):
         el.elastic_spline(sq, length=1.02 * p4, closed=True)
 
 
-def test_length_range_is_what_the_family_met_not_a_bound():
-    """QA13: an 8-point random walk raised at every length 1.05 .. 15 x its polygon "the
-    lengths found span 11.28 .. 11.28 x" and "a shorter one needs a tension beyond the
-    solver's reach", while tension mode gives fair splines of 1.03 .. 1.8 x (sigma h^2
-    300 .. 1): the range is only what the one family followed met. The message says that
-    and points to tension mode, and the tension-mode splines it points to exist."""
+def test_walk_by_length_reaches_the_lengths_of_tension_mode():
+    """QA13: an 8-point random walk (no free batten) raised LengthRangeError at every length
+    1.05 .. 15 x its polygon (the one family followed met 11.28 x only) while tension mode
+    gives fair splines of 1.03 .. 1.8 x (sigma h^2 300 .. 1). Now length mode starts from
+    tension mode's splines that bracket the length (spline_bracket.c): each tension's length
+    asked back is that spline (its tension, fair), and the QA's lengths are met."""
     P = np.cumsum(np.random.default_rng(1).normal(0, 10, (8, 2)), axis=0)
     d = np.hypot(*np.diff(P, axis=0).T)
     poly, h = d.sum(), d.max()
-    with pytest.raises(el.LengthRangeError) as e:
-        el.elastic_spline(P, length=1.2 * poly)
-    m, err = str(e.value), e.value
-    assert "beyond the solver's reach" not in m and "the lengths found span" not in m, m
-    assert "the family of splines the solver followed" in m and "not a bound" in m, m
-    assert "tension mode reaches others" in m, m
-    assert err.shortest > 10 * poly   # the attributes are kept: the range that family met
-    with warnings.catch_warnings():
-        warnings.simplefilter("error")
-        sp = el.elastic_spline(P, tension=10.0 / h ** 2)
-    assert sp.loops == 0 and sp.length < 1.2 * poly < err.shortest
-    # and the start it suggests reaches the length asked
-    assert "as initial= start length mode" in m, m
-    r = el.elastic_spline(P, length=1.2 * poly, initial=sp.pieces)
-    assert r.loops == 0 and r.length == pytest.approx(1.2 * poly, rel=1e-9)
+    for sh2 in (1.0, 10.0, 100.0):
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")
+            sp = el.elastic_spline(P, tension=sh2 / h ** 2)
+            r = el.elastic_spline(P, length=sp.length)
+        assert sp.loops == 0 and r.loops == 0
+        assert r.length == pytest.approx(sp.length, rel=1e-9)
+        assert r.tension == pytest.approx(sp.tension, rel=1e-6), (sh2, r.tension * h ** 2)
+    for f in (1.05, 1.2, 2.0, 5.0, 12.0, 15.0):
+        r = el.elastic_spline(P, length=f * poly)
+        assert r.length == pytest.approx(f * poly, rel=1e-9), f
