@@ -1124,7 +1124,8 @@ void el_spline_options_defaults(el_spline_options *opt);
  * 8-point walk, without a free batten, reached no length 1.03 .. 15 x its polygon; now
  * every one that its tensions sigma h^2 = 0.01 .. 200 give, at those tensions).
  * A length beyond every spline met following the family is EL_ERANGE, res->reach
- * giving the lengths met and the longest without a crossing. Work is bounded: at most max_steps continuation steps of at most
+ * giving the lengths met and the longest without a crossing. Work is bounded: at most
+ * max_steps continuation steps (4 x in LONG_PATH, below) of at most
  * max_iter Newton iterations (20 for a first attempt, 12 for a step), each with
  * at most 12 step halvings (4 in a continuation step), each O(n); 100 points
  * take about 1.5 ms of CPU, 1000 about 12 ms, in either mode when the length is
@@ -1234,7 +1235,12 @@ void el_spline_options_defaults(el_spline_options *opt);
  *     continuations fail, Newton from the taut batten's tangents (the chords'
  *     bisectors, spline_path.c's TAUT_START): on 31 random and hand-placed sets of ducks
  *     at tension x (longest span)^2 = 100 / 200 / 300 / 500 / 1000, 29 / 26 / 20 / 4 / 1
- *     solved (to 1e-8; before 18 / 13 / 10 / 2 / 1). Beyond ~300 on the longest span
+ *     solved (to 1e-8; before 18 / 13 / 10 / 2 / 1). Where that fails too, the
+ *     continuation from sigma h^2 = 40 again with 4 x max_steps (spline_path.c's
+ *     LONG_PATH: it crawls there and ran out of steps): on 23 random walks and
+ *     sketches at 300 / 450 / 500 / 700 / 1000, 19 / 11 / 8 / 2 / 0 solved without
+ *     loops (to 1e-8; before 17 / 3 / 1 / 0 / 0; examples/ducks.csv at 450 and 500 to
+ *     2.5e-8, 3.6e-8, within its resolution). Beyond ~500 on the longest span
  *     mostly no spline is found (EL_ENOCONV, res empty): a piece's tail
  *     multiplies a change at its start by ~exp(sqrt(sigma / 2) h). In length mode
  *     these are lengths within ~1/5 of the free batten's excess over the

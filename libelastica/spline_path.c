@@ -418,6 +418,19 @@ static int taut_start(el__spchain *w, int max_steps, double target, double aim, 
     return wd ? EL_ENOCONV : st;
 }
 
+/*
+ * LONG_PATH: under a high tension the continuation from sigma h^2 = EL__SP_HIGH_SIGMA to
+ * the target crawls (a piece's tail multiplies a change at its start by ~exp(sqrt(sigma /
+ * 2) h): Newton's steps are cut, continuation steps fail and halve) and runs out of steps
+ * before it gets there: examples/ducks.csv at sigma x (longest span)^2 = 450 and 500 (on
+ * the mean chord ~150, 170) had no spline at the default 60 steps; with 4 x as many (200
+ * suffice) they are solved within their resolution (residual 2.5e-8, 3.6e-8; elastica.h:
+ * Accuracy), 700 at no budget. On 23 random walks and sketches at 300 / 450 / 500 / 700:
+ * 17 / 3 / 1 / 0 -> 19 / 11 / 8 / 2 solved without loops (tol 1e-8), the failures' CPU
+ * ~2 x. Tried last, where every other path failed (no result changes).
+ */
+enum { LONG_PATH = 4 };
+
 /* The tension solution at w->sigma: directly (one that winds away from its ducks: another
  * path to it, unwind), else by continuation from a high tension, else from the free batten.
  * final: to tol (else to EL__SP_NEAR, as a start for the length mode). */
@@ -442,7 +455,13 @@ int el__spline_solve_tension(el__spchain *w, int max_steps, int final)
     /* else the free batten pulled to target (FREE_START) */
     st = from_sigma(w, max_steps, 0.0, target, 1e-3 * EL__SP_NEAR, EL__SP_NEAR, aim, accept);
     st = w->near ? st : el__spline_refair(w, max_steps, st, target);
-    return st == EL_ENOCONV && !w->near ? taut_start(w, max_steps, target, aim, accept) : st;
+    if (st == EL_ENOCONV && !w->near) st = taut_start(w, max_steps, target, aim, accept);
+    /* above the high tension, last: its continuation again with LONG_PATH x the steps */
+    if (st == EL_ENOCONV && !w->near && target > EL__SP_HIGH_SIGMA) {
+        const int steps = max_steps < 1000 / LONG_PATH ? LONG_PATH * max_steps : 1000;
+        st = from_sigma(w, steps, EL__SP_HIGH_SIGMA, target, 1e-3 * EL__SP_NEAR, EL__SP_NEAR, aim, accept);
+    }
+    return st;
 }
 
 int el__spline_tension_from(el__spchain *w, int max_steps, double sigma)

@@ -325,8 +325,9 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
                 sh2 = sigma * float(chords.max()) ** 2
                 if sh2 > 50.0:
                     why = (f"; tension x (longest span)^2 = {sh2:.3g}: the solver resolves it "
-                           "to ~1e-10 up to ~200, ~1e-9 at ~300 (a larger tol accepts that), "
-                           "nothing beyond; tension is in 1/units^2 of the points (in mm, "
+                           "to ~1e-10 up to ~200, ~1e-9 at ~300, ~3e-8 at ~500 (a larger tol "
+                           "accepts that), mostly nothing beyond; tension is in 1/units^2 of the "
+                           "points (in mm, "
                            "1e-6 x the same tension in m)")
             if res.npieces and res.resolution > 0.0:
                 # pieces near the separatrix: accepted within what a double resolves (elastica.h)
