@@ -203,9 +203,9 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
     the polygon; tension 0 when the free batten would slide off its ducks) and
     :class:`NotConvergedError` when the solver stops short of ``tol`` (its
     ``spline`` attribute holds the spline reached, if any: an arc of a circle, or a
-    tension x (longest span)^2 of ~150..300, resolve only to ~1e-10..1e-7, a larger
-    ``tol`` accepts them; beyond ~300 no spline is reached, ``spline`` is None, and
-    the message names that dimensionless tension); by length, :class:`LengthRangeError`
+    tension x (longest span)^2 of ~150..500, resolve only to ~1e-10..1e-7, a larger
+    ``tol`` accepts them; beyond ~300 .. 500 mostly no spline is reached, ``spline`` is
+    None, and the message names that dimensionless tension); by length, :class:`LengthRangeError`
     (a NotConvergedError) where the length lies beyond every spline met following the
     family of splines through the points, its message and ``shortest``, ``longest``,
     ``longest_fair`` (without loops) and ``polygon`` saying how far that one family reached
@@ -312,7 +312,7 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
                 "exist (the solver also started from tension mode's splines at tension x "
                 "(mean chord)^2 6e-4 .. 2560, none of them around this length); tension mode "
                 "reaches others (a larger tension gives a shorter "
-                "spline; the solver resolves tension x (longest span)^2 up to ~300, "
+                "spline; the solver resolves tension x (longest span)^2 up to ~300 .. 500, "
                 "elastica.h: Accuracy), and its pieces as initial= start length mode on "
                 "their family"))
             err.shortest, err.longest, err.longest_fair, err.polygon = lo, hi, fair, polygon
