@@ -1082,7 +1082,9 @@ typedef struct el_spline_result {
     double reach[3];       /* length mode, where the family of tension solutions was followed
                               (el_spline_solve): the least and the greatest length of the
                               splines met on it, the greatest of those that do not cross
-                              themselves; all 0 where it was not followed or none was met.
+                              themselves (where none was followed: of tension mode's splines
+                              met looking for a bracket, spline_bracket.c); all 0 where none
+                              was met.
                               Set on EL_OK, EL_ENOCONV and EL_ERANGE (res otherwise empty) */
     double resolution;     /* the residual double precision allows this spline's pieces near
                               the separatrix (Accuracy, el_spline_solve), where that exceeds

@@ -133,6 +133,8 @@ int el__spline_length_by_tension(el__spchain *w, int max_steps, double Lt)
     el__spsnap kept = {buf + 2 * ns, buf + 2 * ns + n, buf + 2 * ns + n + EL__NV * m, 0.0};
     double len[2] = {0.0, 0.0};
     int have[2] = {0, 0};
+    /* the rungs' lengths: the least, the greatest, the greatest not crossing itself (REACH) */
+    double met[3] = {HUGE_VAL, 0.0, 0.0};
     /* down from the taut batten until a rung says which way (up, from above it, when the
      * first is longer than Lt) */
     double sigma = EL__SP_HIGH_SIGMA, top = EL__SP_HIGH_SIGMA * (double)(1 << LADDER_UP);
@@ -144,6 +146,13 @@ int el__spline_length_by_tension(el__spchain *w, int max_steps, double Lt)
         if (r) {
             const double L = total_length(w);
             const int side = L >= Lt ? 0 : 1;
+            met[0] = fmin(met[0], L);
+            met[1] = fmax(met[1], L);
+            if (L > met[2]) {
+                const int c = el__chain_crosses(w);
+                if (c < 0) { free(buf); return EL_ENOMEM; }
+                if (!c) met[2] = L;
+            }
             el__snap_save(w, &end[side]);   /* the last on its side: the nearest to the other */
             len[side] = L;
             have[side] = 1;
@@ -177,6 +186,11 @@ int el__spline_length_by_tension(el__spchain *w, int max_steps, double Lt)
             st = best == 1 ? EL_ENOCONV : EL_OK;
         }
     }
+    /* REACH: where no family was followed (w->reach empty: ring77, its tension mode's fair
+     * splines ending at 1.11 x its polygon, said "no spline reached" at 1.1 x), the lengths
+     * of the rungs, for the EL_ERANGE a length beyond them gets (spline.c) */
+    if (st != EL_OK && st != EL_ENOMEM && !w->near && w->reach[1] == 0.0 && met[1] > 0.0)
+        for (int i = 0; i < 3; i++) w->reach[i] = met[i];
     free(buf);
     return st;
 }

@@ -172,6 +172,28 @@ START_TEST(length_beyond_reach_says_how_far)
 }
 END_TEST
 
+/* Where no family was followed (ring77: no free batten, no batten under tension from the
+ * chain's start) a length shorter than every tension-mode spline the solve met: EL_ERANGE
+ * with those splines' lengths (tension mode's fair ones end at 1.11 x the polygon, sigma h^2
+ * ~150 on the longest span); before: EL_ENOCONV, "no spline reached", reach empty */
+START_TEST(length_beyond_the_tension_splines_met)
+{
+    double poly = 0.0;
+    for (int i = 0; i < 12; i++) {
+        const int j = (i + 1) % 12;
+        poly += hypot(ring77[2 * j] - ring77[2 * i], ring77[2 * j + 1] - ring77[2 * i + 1]);
+    }
+    el_spline_options o = closed_length(1.1 * poly);
+    el_spline_result r;
+    ck_assert_int_eq(solve(ring77, 12, &o, &r), EL_ERANGE);
+    ck_assert_int_eq((int)r.npieces, 0);
+    ck_assert_msg(r.reach[0] > 1.1 * poly && r.reach[0] < 1.2 * poly, "shortest %g", r.reach[0] / poly);
+    ck_assert_msg(r.reach[1] >= r.reach[0] && r.reach[2] >= r.reach[0] && r.reach[2] <= r.reach[1],
+                  "reach %g %g %g", r.reach[0] / poly, r.reach[1] / poly, r.reach[2] / poly);
+    el_spline_result_free(&r);
+}
+END_TEST
+
 /* 8 random ducks closed into a ring with two deep bays (no free batten: EL_EDOM at tension
  * 0): by length 1.1 and 1.3 x its polygon no spline was reached (no batten under sigma h^2 =
  * 40, 4 or 0.4 converged from the chain's start to be followed); now from the taut batten's
@@ -206,6 +228,7 @@ int main(void)
     tcase_add_test(tc, ring_by_length_keeps_its_first_mode);
     tcase_add_test(tc, length_mode_reaches_the_lengths_of_tension_mode);
     tcase_add_test(tc, length_beyond_reach_says_how_far);
+    tcase_add_test(tc, length_beyond_the_tension_splines_met);
     tcase_add_test(tc, closed_bays_by_length_from_the_taut_start);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
