@@ -18,7 +18,7 @@
  * returns). `make fuzz` checks this on every entry point.
  *
  * Sections follow the files in libelastica/: status, jacobi, smooth,
- * discrete, guess, fit, prep, hermite, spline, affine, bspline, blend.
+ * discrete, guess, fit, prep, order, hermite, spline, affine, bspline, blend.
  *
  * This header is parsed by the Python binding (cffi cdef) after the
  * preprocessor lines are removed: no macros inside declarations.
@@ -738,6 +738,37 @@ typedef struct el_inflection {
  * EL_ENOMEM. *out untouched on error.
  */
 int el_find_inflection(const double *xy, size_t n, int side, el_inflection *out);
+
+/* ------------------------------------------------------------------- order */
+
+/*
+ * The screen of a check of points' order (the binding's out_of_order: points whose
+ * polyline is many times their extent, its sides turning about pi/2 a vertex, are
+ * no curve's): what the polyline through n points xy (2n) measures, in O(n).
+ * extent: max over x and y of (largest - smallest coordinate), over all n points;
+ * length and turn: of the polyline through every step-th point (xy[0], xy[step],
+ * xy[2 step], ...: m = (n - 1) / step + 1 of them), its length sum |d_i|
+ * (d_i = p_{i+1} - p_i; step 1: the whole polyline's) and its mean |turn| a
+ * vertex, (1/(m-2)) sum |atan2(d_i x d_{i+1}, d_i . d_{i+1})| (rad, in [0, pi]).
+ * Sums are pairwise, in numpy's order (the binding's former numpy formulas, bit for
+ * bit but the turn's atan2: within a few ulps of numpy's vectorised one). Computed
+ * as written, no rescaling: coordinates beyond ~1e154 give +inf lengths (the
+ * squares overflow) and may give a NaN turn.
+ */
+typedef struct el_order_screen_result {
+    double extent;      /* units */
+    double length;      /* the step-th points' polyline (units; 0 for m = 1) */
+    double turn;        /* its mean |turn| a vertex (rad); NaN for m < 3 or not asked */
+} el_order_screen_result;
+
+/*
+ * Screen the polyline xy (2n, n >= 1) through every step-th point (step >= 1) into
+ * *out as above; turn != 0 measures the turn (else NaN: it costs an atan2 a vertex).
+ * No allocation. Errors: EL_EINVAL (NULL, n = 0, step = 0, NaN/inf). *out
+ * untouched on error.
+ */
+int el_order_screen(const double *xy, size_t n, size_t step, int turn,
+                    el_order_screen_result *out);
 
 
 /* ------------------------------------------------------------------- hermite */

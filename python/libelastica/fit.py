@@ -25,7 +25,7 @@ from ._ffi import (DomainError, NotConvergedError, as_int, as_points, as_positiv
                    as_real_array, check, dptr, ffi, lib, warn_if_degrees)
 from .core import DISCRETE_PARAMS, SMOOTH_PARAMS, DiscreteElastica, SmoothElastica
 from .fit_cost import EndConditionWarning, checked_ends
-from .order import curve_order, order_summary, out_of_order
+from .order import curve_order, order_summary, ordering, out_of_order
 
 _MODES = {"auto": 0, "uniform": 1, "chord": 2}
 _MODE_NAMES = {v: k for k, v in _MODES.items()}
@@ -479,7 +479,7 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
         idx = curve_order(pts)
         pts = np.ascontiguousarray(pts[idx])
     else:
-        unordered = out_of_order(pts)
+        unordered = ordering(pts)
     kind = SmoothElastica if model == "smooth" else DiscreteElastica
     if initial is not None and not isinstance(initial, kind):
         raise ValueError(f"fit: initial must be a {kind.__name__} for the {model} model, got "

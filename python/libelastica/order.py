@@ -19,7 +19,7 @@ from typing import NamedTuple, Optional
 
 import numpy as np
 
-from ._ffi import as_points
+from ._ffi import as_points, check, dptr, ffi, lib
 from .prep import pca_normalize, plane_fit
 
 
@@ -110,38 +110,43 @@ def out_of_order(points, ratio: float = ORDER_RATIO, screen: bool = True) -> Ord
     through every k-th point, about SCREEN_POINTS of them, is: O(n) time there, else
     curve_order's (1e5 points: about 0.5 s); ``screen`` also keeps the order of a polyline
     that turns less than TURN_PER_VERTEX rad a vertex on average (a coil of few points)."""
-    xy = _plane_points(points, "out_of_order")
-    if len(xy) < 3:
+    return ordering(_plane_points(points, "out_of_order"), ratio, screen)
+
+
+def ordering(xy, ratio: float = ORDER_RATIO, screen: bool = True) -> Ordering:
+    """:func:`out_of_order` of points xy already checked (as_points: (n, 2) float64,
+    C-contiguous, finite): fit's, which has checked them."""
+    n = len(xy)
+    if n < 3:
         return Ordering(None, polyline_length(xy), float("nan"))
-    # the extent from the columns' copy: numpy's reductions along axis 0 of (n, 2) are far slower
-    cols = xy.T.copy()
-    extent = float((cols.max(axis=1) - cols.min(axis=1)).max())
-    step = len(xy) // SCREEN_POINTS if screen and len(xy) >= SCAN_POINTS else 1
+    step = n // SCREEN_POINTS if screen and n >= SCAN_POINTS else 1
     # the screen first (every k-th point; no longer than the polyline): a screen within the
     # ratio, or one that turns as a curve does (a coil, a spiral: longer than ratio times
     # its extent however ordered; shuffled points' screen turns ~pi/2 a vertex), answers in
     # order without the whole polyline's length (given nan) nor curve_order (bench_fit.py's
     # 1000 noisy points on k = 1.3 paid its 16 ms in a 1 ms fit; el.fit runs this each time)
+    sc = _screen(xy, step, step > 1)
     if step > 1:
-        sc = xy[::step]
-        if not polyline_length(sc) > ratio * extent or not _turn_per_vertex(sc) > TURN_PER_VERTEX:
+        if not sc.length > ratio * sc.extent or not sc.turn > TURN_PER_VERTEX:
             return Ordering(None, float("nan"), float("nan"))
-    given = polyline_length(xy)
-    if not given > ratio * extent:
+        given = _screen(xy, 1, False).length
+    else:
+        given = sc.length
+    if not given > ratio * sc.extent:
         return Ordering(None, given, float("nan"))
     order = curve_order(xy)
     along = polyline_length(xy[order])
-    if screen and given > ratio * along and not _turn_per_vertex(xy) > TURN_PER_VERTEX:
+    if screen and given > ratio * along and not _screen(xy, 1, True).turn > TURN_PER_VERTEX:
         return Ordering(None, given, along)
     return Ordering(order if given > ratio * along else None, given, along)
 
 
-def _turn_per_vertex(xy) -> float:
-    """The mean |turn| (rad) at the vertices of the polyline xy."""
-    d = xy[1:] - xy[:-1]
-    a, b = d[:-1], d[1:]
-    return float(np.mean(np.abs(np.arctan2(a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0],
-                                           np.einsum("ij,ij->i", a, b)))))
+def _screen(xy, step: int, turn: bool):
+    """el_order_screen of the polyline through every step-th point of xy (as_points'):
+    the points' extent, its length and (turn) its mean |turn| a vertex, rad."""
+    out = ffi.new("el_order_screen_result *")
+    check(lib.el_order_screen(dptr(xy), len(xy), step, turn, out), "out_of_order")
+    return out
 
 
 def order_summary(o: Ordering, unit: str = "") -> str:
