@@ -326,7 +326,8 @@ def _options(model: str, n: int, fixed: Optional[Mapping[str, float]], bounds, t
             raise ValueError(f"fit: distance must be one of {tuple(_DISTANCES)}, got {distance!r}")
         o.distance = _DISTANCES[distance]
     o.use_initial = 1 if initial is not None else 0
-    _check_option_ranges(o, model, names)
+    if fixed or bounds or tol is not None or max_iter is not None or max_candidates is not None:
+        _check_option_ranges(o, model, names)   # (el_fit_options_defaults' are in range)
     _set_constraints(o, model, n, constraints)
     return o
 
@@ -376,15 +377,17 @@ def _raise_constraint(status: int, constraint: int, conditions: int) -> None:
     raise ConstraintError(status, msg, name)
 
 
-def _make_curve(model: str, p, n: int) -> Curve:
+def _make_curve(model: str, p, n: int, ptr=None) -> Curve:
     """The curve of the C parameters p (a struct of C doubles, read as floats), checked
-    by the model's C check on p itself, as the constructor checks the struct it builds
-    from the same floats; the constructor's conversions and second struct are left out
-    (measured: a third of el.fit's Python time after a 1000-point fit).
-    test_fit_result_curves_are_constructed_ones compares with the constructor."""
+    by the model's C check on p itself (ptr: p's address, when the caller has it), as the
+    constructor checks the struct it builds from the same floats; the constructor's
+    conversions and second struct are left out (measured: a third of el.fit's Python time
+    after a 1000-point fit). test_fit_result_curves_are_constructed_ones compares with the
+    constructor."""
     discrete = model == "discrete"
     cls, names = (DiscreteElastica, DISCRETE_PARAMS) if discrete else (SmoothElastica, SMOOTH_PARAMS)
-    check((lib.el_discrete_check if discrete else lib.el_smooth_check)(ffi.addressof(p)), cls.__name__)
+    check((lib.el_discrete_check if discrete else lib.el_smooth_check)(
+        ffi.addressof(p) if ptr is None else ptr), cls.__name__)
     curve = object.__new__(cls)
     curve.__dict__.update({k: getattr(p, k) for k in names})
     if discrete:
@@ -392,18 +395,38 @@ def _make_curve(model: str, p, n: int) -> Curve:
     return curve
 
 
+# The addresses of a fit result's params and initial: a cast of its pointer, where
+# ffi.addressof (Python in cffi) cost 5 % of el.fit's Python time
+_PARAMS = {m: (ffi.typeof(f"el_{m}_params *"),
+               ffi.offsetof(f"el_fit_{m}_result", "params"), ffi.offsetof(f"el_fit_{m}_result", "initial"))
+           for m in ("discrete", "smooth")}
+_BYTES = ffi.typeof("char *")
+
+
 def _result(model: str, res, st: int, pts: np.ndarray, dist: np.ndarray, foot: np.ndarray,
             s: Optional[np.ndarray] = None, constraints=None, order=None) -> FitResult:
     n = len(pts)
-    return FitResult(curve=_make_curve(model, res.params, n), initial=_make_curve(model, res.initial, n),
-                     rms=float(res.rms), max_error=float(res.max_error),
-                     iterations=int(res.iterations), status=int(st),
-                     ipopt_status=int(res.ipopt_status), candidates=int(res.candidates), s=s,
-                     param_mode=_MODE_NAMES.get(int(res.param_mode)) if model == "smooth" else None,
-                     distances=dist, foot_s=foot, distance=_DISTANCE_NAMES[int(res.distance)],
-                     used_ipopt=bool(res.used_ipopt), points=pts,
-                     constraints=dict(constraints) if constraints else None,
-                     wander_gap=int(res.wander_gap), order=order)
+    ptr, a, b = _PARAMS[model]
+    base = ffi.cast(_BYTES, res)
+    return _fit_result(curve=_make_curve(model, res.params, n, ffi.cast(ptr, base + a)),
+                       initial=_make_curve(model, res.initial, n, ffi.cast(ptr, base + b)),
+                       rms=float(res.rms), max_error=float(res.max_error),
+                       iterations=int(res.iterations), status=int(st),
+                       ipopt_status=int(res.ipopt_status), candidates=int(res.candidates), s=s,
+                       param_mode=_MODE_NAMES.get(int(res.param_mode)) if model == "smooth" else None,
+                       distances=dist, foot_s=foot, distance=_DISTANCE_NAMES[int(res.distance)],
+                       used_ipopt=bool(res.used_ipopt), points=pts,
+                       constraints=dict(constraints) if constraints else None,
+                       wander_gap=int(res.wander_gap), order=order)
+
+
+def _fit_result(**fields) -> FitResult:
+    """FitResult(**fields) of every one of its fields, without the frozen dataclass's
+    __init__ (an object.__setattr__ a field: a sixth of el.fit's Python time); the same
+    object (test_fit.py test_fit_result_is_a_constructed_one)."""
+    r = object.__new__(FitResult)
+    r.__dict__.update(fields)
+    return r
 
 
 def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = None, *,

@@ -1122,6 +1122,25 @@ def test_fit_result_curves_are_constructed_ones(model):
                                           made.points() if model == "discrete" else made.points(None))
 
 
+@pytest.mark.parametrize("model", ["discrete", "smooth"])
+def test_fit_result_is_a_constructed_one(model):
+    """fit.py builds its FitResult without the frozen dataclass's __init__ (_fit_result):
+    it must be the object the constructor makes of the same fields (every field set, in
+    the constructor's order, none other; frozen; replace() and repr work)."""
+    import dataclasses
+    pts, _ = sketched_s(seed=3, n=60, wobble=0.2)
+    for order in ("given", "curve"):
+        r = el.fit(pts, model=model, order=order)
+        names = [f.name for f in dataclasses.fields(el.FitResult)]
+        assert list(vars(r)) == names and type(r) is el.FitResult
+        made = el.FitResult(**{k: getattr(r, k) for k in names})
+        assert vars(made).keys() == vars(r).keys()
+        assert all(getattr(made, k) is getattr(r, k) for k in names)
+        assert repr(made) == repr(r) and vars(dataclasses.replace(r)).keys() == vars(r).keys()
+        with pytest.raises(dataclasses.FrozenInstanceError):
+            r.rms = 0.0
+
+
 @pytest.mark.parametrize("distance", ["paired", "orthogonal"])
 def test_discrete_distances_with_pruned_segments_match_brute_force(distance):
     """The discrete report leaves out segments provably farther than the distance so far
