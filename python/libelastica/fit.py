@@ -14,6 +14,7 @@ True
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 import warnings
 from dataclasses import dataclass
@@ -420,12 +421,17 @@ def _result(model: str, res, st: int, pts: np.ndarray, dist: np.ndarray, foot: n
                        wander_gap=int(res.wander_gap), order=order)
 
 
-def _fit_result(**fields) -> FitResult:
-    """FitResult(**fields) of every one of its fields, without the frozen dataclass's
-    __init__ (an object.__setattr__ a field: a sixth of el.fit's Python time); the same
-    object (test_fit.py test_fit_result_is_a_constructed_one)."""
+_RESULT_FIELDS = tuple(f.name for f in dataclasses.fields(FitResult))
+_RESULT_DEFAULTS = {f.name: f.default for f in dataclasses.fields(FitResult)
+                    if f.default is not dataclasses.MISSING}
+
+
+def _fit_result(**given) -> FitResult:
+    """FitResult(**given) without the frozen dataclass's __init__ (an object.__setattr__ a
+    field: a sixth of el.fit's Python time): every field set in its order, the defaults
+    where not given; the same object (test_fit.py test_fit_result_is_a_constructed_one)."""
     r = object.__new__(FitResult)
-    r.__dict__.update(fields)
+    r.__dict__.update({k: given[k] if k in given else _RESULT_DEFAULTS[k] for k in _RESULT_FIELDS})
     return r
 
 
