@@ -333,7 +333,8 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
         if rec.get("resample_reference_rms") is not None:
             from .resampled import resample_summary
             print(f"{PROG} fit: warning: {path}: " + resample_summary(
-                args.step, rec["rms"], rec["resample_reference_rms"]), file=sys.stderr)
+                args.step, rec["rms"], rec["resample_reference_rms"],
+                extent=float(np.ptp(fitted_pts, axis=0).max())), file=sys.stderr)
     doc = records[0] if len(records) == 1 else {"file": str(path), "sides": records}
     splines = []
     if args.bspline_tol is not None or args.dxf:

@@ -81,10 +81,15 @@ def resampled_fits_worse(points, rms: float, start=None, constraints=None) -> Op
     if not fits:
         return None
     own = min(fits)
-    extent = float(np.ptp(pts, axis=0).max())
+    extent = _extent(pts)
     if rms > RESAMPLE_RATIO * own and rms - own > RESAMPLE_FLOOR * extent:
         return float(own)
     return None
+
+
+def _extent(points) -> float:
+    """The points' extent: their bounding box's longer side (RESAMPLE_FLOOR's scale)."""
+    return float(np.ptp(np.asarray(points, dtype=float), axis=0).max())
 
 
 def resampled_reference(points, rms: float, polygon, curve, constraints=None) -> Optional[float]:
@@ -125,15 +130,22 @@ def fit_resampled(points, step: float, model: str = "discrete", *, tol: float = 
     if check:
         ref = resampled_reference(pts, rms, polygon, r.curve, kwargs.get("constraints"))
         if ref is not None:
-            warnings.warn(resample_summary(step, rms, ref), ResampleWarning, stacklevel=2)
+            warnings.warn(resample_summary(step, rms, ref, extent=_extent(pts)), ResampleWarning,
+                          stacklevel=2)
     return ResampledFit(result=r, polygon=polygon, points=pts.copy(), step=float(step),
                         bspline=bspline, distances=dist, feet=feet, rms=rms,
                         max_error=float(np.abs(dist).max()), reference_rms=ref,
                         foot_s=foot_s)
 
 
-def resample_summary(step: float, rms: float, reference: float, unit: str = "") -> str:
-    """What the warning of a resampled fit far from its points says (Python's, FreeCAD's)."""
-    return (f"the curve fitted to the points resampled at {step:g}{unit} lies {rms:.3g}{unit} "
-            f"from them (rms), {rms / reference:.2f} x their own fit's {reference:.3g}{unit}: "
-            "a shorter step, or none, fits them closer")
+def resample_summary(step: float, rms: float, reference: float, unit: str = "",
+                     extent: Optional[float] = None) -> str:
+    """What the warning of a resampled fit far from its points says (Python's, FreeCAD's).
+    Given the points' ``extent``, a reference below RESAMPLE_FLOOR of it (their own fit
+    passes through them: rounding) is said in length, not as a ratio to it."""
+    far = f"the curve fitted to the points resampled at {step:g}{unit} lies {rms:.3g}{unit} "
+    if extent is not None and reference < RESAMPLE_FLOOR * extent:
+        return far + ("from them (rms), where their own fit passes through them: a shorter "
+                      "step, or none, fits them closer")
+    return far + (f"from them (rms), {rms / reference:.2f} x their own fit's {reference:.3g}{unit}: "
+                  "a shorter step, or none, fits them closer")

@@ -145,3 +145,25 @@ def test_the_gentle_scan_keeps_its_warning():
     assert 1.2 < d.rms / d.reference_rms < 1.3
     assert s.reference_rms is None
     assert len([w for w in said if issubclass(w.category, el.ResampleWarning)]) == 1
+
+
+def test_a_reference_at_rounding_level_is_said_in_length():
+    """Noise-free points on an elastica: their own fit passes through them (rms ~1e-13), so
+    the warning says how far the resampled curve lies, not a ratio to rounding noise (was
+    '15225662200331.79 x their own fit's 7.74e-14'); a reference above RESAMPLE_FLOOR of
+    the extent keeps its ratio."""
+    from libelastica.resampled import RESAMPLE_FLOOR
+    c = el.SmoothElastica(x0=0, y0=0, phi=0, mu=1e-3, k=0.8, q=0.0, length=150.0)
+    pts = c.points(np.linspace(0, c.length, 60))
+    with warnings.catch_warnings(record=True) as said:
+        warnings.simplefilter("always")
+        f = el.fit_resampled(pts, step=20.0, model="discrete")
+    warned = [str(w.message) for w in said if issubclass(w.category, el.ResampleWarning)]
+    extent = float(np.ptp(pts, axis=0).max())
+    assert f.reference_rms is not None and f.reference_rms < RESAMPLE_FLOOR * extent
+    assert len(warned) == 1, warned
+    assert f"lies {f.rms:.3g} from them (rms), where their own fit passes through them" \
+        in warned[0], warned
+    assert " x their own fit" not in warned[0], warned
+    kept = el.resample_summary(20.0, 1.5, 1.0, " mm", extent=extent)
+    assert "1.50 x their own fit's 1 mm" in kept, kept
