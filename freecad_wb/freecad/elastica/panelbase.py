@@ -670,8 +670,9 @@ class Panel:
             return True
         self.flush()
         if self.obj.Status.startswith("error"):
-            App.Console.PrintError(f"Elastica: {self.obj.Status}\n")
-            return False          # stay open: the user fixes the input or cancels
+            # the recompute that failed said it in the report view (proxy.report), the
+            # panel's status line shows it: stay open, the user fixes the input or cancels
+            return False
         code = self.copy_code()
         if not code and not self._keep:   # refresh_enabled keeps this from happening
             self.keep.setChecked(True)
