@@ -192,6 +192,7 @@ def unit_schemas(doc, b):
     b.Mode, b.Length = "length", 151.0
     doc.recompute()
     try:
+        said_in_the_schema_of_now(doc, b, prefs)
         for schema, length, tol in ((3, "5.94488 in", "3.93701e-05 in"), (4, "15.1 cm",
                                                                            "0.0001 cm")):
             prefs.SetInt("UserSchema", schema)
@@ -243,6 +244,34 @@ def unit_schemas(doc, b):
     finally:
         prefs.SetInt("UserSchema", old)
         App.Units.setSchema(old)
+
+
+def said_in_the_schema_of_now(doc, b, prefs):
+    """A G2 blend recomputed under Standard, its panel opened under Imperial decimal: the
+    Status lines (length, tension, energy, curvature, guide forces) in inches without a
+    recompute (they kept mm until the next edit)."""
+    from freecad.elastica import taskpanels as T
+    prefs.SetInt("UserSchema", 0)
+    App.Units.setSchema(0)
+    b.Continuity = "G2"
+    doc.recompute()
+    before = b.Status
+    prefs.SetInt("UserSchema", 3)
+    App.Units.setSchema(3)
+    Gui.ActiveDocument.setEdit(b.Name)
+    G.wait(300)
+    panel = T.CURRENT[0]
+    text = panel.result.text()
+    G.check(before.startswith("G2") and " mm" in before and b.Status == before
+            and "mm" not in text and " in, tension " in text and "/in" in text,
+            f"a panel opened after a schema change says the Status in inches: {text!r}")
+    G.screenshot("gui_blend_said_again.png")
+    panel.reject()
+    G.pump()
+    prefs.SetInt("UserSchema", 0)
+    App.Units.setSchema(0)
+    b.Continuity = "G1"
+    doc.recompute()
 
 
 def imperial_texts_and_steps(b, panel):

@@ -654,6 +654,46 @@ class BlendG2Test(unittest.TestCase):
         self.doc.recompute()
         self.assertEqual(b.Status, mm_status)
 
+    def test_status_said_again_in_the_schema_of_now(self):
+        """A panel opened after a schema change shows the Status in the new schema without
+        a recompute (proxy.said, what the panels show): the G2 Status line and an error's
+        lengths as a recompute under that schema writes them (they kept the schema of the
+        last recompute: mm beside boxes in inches); saved and reopened too."""
+        from freecad.elastica.proxy import said
+        sk = two_arcs_sketch(self.doc)
+        b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Continuity="G2", Mode="length")
+        schema = App.Units.getSchema()
+        try:
+            for length, what in ((0.0, "G2 from solution"), (61.95, "error: no G2 blend")):
+                App.Units.setSchema(0)
+                b.Length = length
+                self.doc.recompute()
+                mm_status = b.Status
+                self.assertTrue(mm_status.startswith(what) and " mm" in mm_status, mm_status)
+                App.Units.setSchema(3)             # Imperial decimal: no recompute yet
+                shown = said(b, "Status")
+                self.assertEqual(b.Status, mm_status)
+                b.touch()
+                self.doc.recompute()               # what a recompute under it writes
+                self.assertEqual(shown, b.Status)
+                self.assertNotIn("mm", shown)
+                self.assertIn(" in", shown)
+                App.Units.setSchema(0)
+                self.assertEqual(said(b, "Status"), mm_status)
+            import tempfile
+            with tempfile.TemporaryDirectory() as tmp:
+                path = os.path.join(tmp, "said.FCStd")
+                self.doc.saveAs(path)
+                name, label = self.doc.Name, b.Label
+                App.closeDocument(name)
+                self.doc = App.openDocument(path)
+                b = self.doc.getObjectsByLabel(label)[0]
+                App.Units.setSchema(3)
+                self.assertIn(f"no G2 blend of length {61.95 / 25.4:.6g} in", said(b, "Status"))
+                self.assertNotIn("mm", said(b, "Status"))
+        finally:
+            App.Units.setSchema(schema)
+
     def test_g2_blend_by_length(self):
         """Length mode: the G2 batten of that length (a pushed one, longer than free);
         0 = the free G2 batten; a length the G2 batten cannot reach says which can."""

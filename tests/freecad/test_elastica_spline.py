@@ -322,6 +322,19 @@ class SplineTest(unittest.TestCase):
         self.assertIn("warning: the start edge's end is 2.2 mm", s.Status)
         line = sk.Shape.Edges[0]
         self.assertAlmostEqual(s.Shape.Edges[0].distToShape(line)[0], 2.2, delta=1e-9)
+        # the panel's warning and status lines (proxy.said) in a schema changed since
+        # (they kept the mm of the recompute)
+        from freecad.elastica.proxy import said
+        schema = App.Units.getSchema()
+        try:
+            App.Units.setSchema(3)
+            inches = f"{2.2 / 25.4:.3g} in from the first point"
+            self.assertIn(inches, said(s, "Warnings")[0])
+            self.assertIn(f"warning: the start edge's end is {inches}", said(s, "Status"))
+            self.assertNotIn("mm", said(s, "Status"))
+        finally:
+            App.Units.setSchema(schema)
+        self.assertEqual(said(s, "Warnings"), list(s.Warnings))
         sk.movePoint(0, 2, App.Vector(0, 0, 0))
         self.doc.recompute()
         self.assertEqual((list(s.Warnings), s.Status.startswith("ok")), ([], True), s.Status)

@@ -17,10 +17,12 @@ from . import defaults
 from .geometry import (edge_end, el, global_element, is_sketch, nearest_parameter, np,
                        part_bspline, plane_coordinates, plane_curvature, to_3d)
 from .links import followed_edge
-from .units import length_text, length_unit, per_length, tension_text, tension_unit
+from .units import (floor_digits, length_mark, length_text, length_unit_mark, per_area_mark,
+                    per_length, per_length_mark, reach_mark, tension_mark, tension_text,
+                    tension_unit_mark)
 from .proxy import (FeatureProxy, InputProblem, add_enum, add_geometry_index, add_length,
                     add_link, add_property, attach_view, check_degree, check_number,
-                    check_tolerance, read_only)
+                    check_tolerance, read_only, set_said)
 
 MODES = ["length", "tension"]
 CONTINUITIES = ["G1", "G2"]
@@ -132,13 +134,12 @@ def blend_core(e0, at_end0, e1, at_end1, plane=None, mode="tension", value=0.0):
         tol = max(1e-10, 1e-7 / dist)
         if mode == "tension":
             if value * dist * dist > e.HERMITE_SIGMA_D2_MAX:
-                per, u = length_unit()
-                per *= per
-                raise InputProblem(f"Tension = {value * per:g}/{u}^2 is too high for ends "
-                                   f"{length_text(dist, 6)} apart: the solver covers tension "
-                                   f"times distance^2 up to {e.HERMITE_SIGMA_D2_MAX:g}, here a "
-                                   "tension of at most "
-                                   f"{e.HERMITE_SIGMA_D2_MAX / dist ** 2 * per:.4g}/{u}^2")
+                u = length_unit_mark()
+                raise InputProblem(f"Tension = {per_area_mark(value, 6)}/{u}^2 is too high for "
+                                   f"ends {length_mark(dist, 6)} apart: the solver covers "
+                                   "tension times distance^2 up to "
+                                   f"{e.HERMITE_SIGMA_D2_MAX:g}, here a tension of at most "
+                                   f"{per_area_mark(e.HERMITE_SIGMA_D2_MAX / dist ** 2, 4)}/{u}^2")
             sols = e.hermite(a0, t0, a1, t1, tension=value, tol=tol)
         else:
             if value == 0.0:                      # the free batten's own length
@@ -147,9 +148,9 @@ def blend_core(e0, at_end0, e1, at_end1, plane=None, mode="tension", value=0.0):
                     raise NoBlend("no free batten joins these ends: give a length")
                 value = float(free[0].length)
             if value <= dist:
-                raise InputProblem(f"length {length_text(value, 6)} is not longer than the "
-                                   f"{length_text(dist, 6)} between the ends: any length above "
-                                   f"{length_text(dist, 6)} is possible")
+                raise InputProblem(f"length {length_mark(value, 6)} is not longer than the "
+                                   f"{length_mark(dist, 6)} between the ends: any length above "
+                                   f"{length_mark(dist, 6)} is possible")
             sols = e.hermite(a0, t0, a1, t1, length=value, tol=tol)
     except InputProblem:
         raise
@@ -252,12 +253,12 @@ def g2_blend(r, i, mode, value, tol, degree):
                 note = f" (solution {i + 1} did not bend to G2: from the library's own start)"
     except (ValueError, ArithmeticError, RuntimeError) as exc:
         dist = float(n.linalg.norm(a1 - a0))
-        asked = (f"of length {length_text(value, 6)}" if "length" in kw else
-                 f"at tension {tension_text(kw['tension'], dist, G2_TENSION_DIGITS)}")
+        asked = (f"of length {length_mark(value, 6)}" if "length" in kw else
+                 f"at tension {tension_mark(kw['tension'], dist, G2_TENSION_DIGITS)}")
         hint = "pick another tension or length, or G1"
         try:
             free = e.elastic_spline(n.vstack([a0, a1]), **ends).length
-            hint = (f"the free G2 batten (tension 0) is {length_text(free, 4)} long; pulled it "
+            hint = (f"the free G2 batten (tension 0) is {length_mark(free, 4)} long; pulled it "
                     "gets at "
                     "most 1-2 % shorter, pushed longer: try a length from there, or G1"
                     if "length" in kw else
@@ -266,17 +267,17 @@ def g2_blend(r, i, mode, value, tol, degree):
             pass
         reach = g2_tension_reach(pts, ends) if "tension" in kw else None
         if reach is not None and reach > 0.0:
-            per, unit = tension_unit()    # rounded down in the unit shown: typed back, it
-            shown = reach if per == 1.0 else floor_digits(reach * per)     # is within reach
+            # rounded down in the unit shown: typed back, it is within reach
             hint += (f"; the largest tension a G2 batten was found at is about "
-                     f"{shown:.{G2_TENSION_DIGITS}g} {unit} "
+                     f"{reach_mark(reach, G2_TENSION_DIGITS)} "
                      "(there can be gaps below it): held by its guide ducks, a G2 blend pulled "
                      "does not straighten as G1 does, and beyond some tension there is none")
         # not the exception's words about the spline it keeps: nothing is returned here
         solve = "the batten's solve did not converge" if isinstance(exc, e.NotConvergedError) \
             else f"the batten's solve: {str(exc).replace('elastic_spline: ', '', 1)}"
         raise InputProblem(f"no G2 blend {asked} ({solve}); the edges' curvatures are "
-                           f"{k0 * length_unit()[0]:.3g} and {per_length(k1)}; {hint}") from None
+                           f"{per_length_mark(k0, 3, unit=False)} and {per_length_mark(k1)}; "
+                           f"{hint}") from None
     try:
         return sp, sp.to_bspline(tol, degree), note
     except (ValueError, ArithmeticError, RuntimeError) as exc:
@@ -308,7 +309,7 @@ def g2_tension_reach(pts, ends):
         except (ValueError, ArithmeticError, RuntimeError):
             continue
         if sigma > 0.0:
-            found.append(floor_digits(sigma))
+            found.append(floor_digits(sigma, G2_TENSION_DIGITS))
     tried = set()
     for sigma in sorted(found, reverse=True):
         for digits in range(G2_TENSION_DIGITS, 1, -1):   # rounded down further if none there
@@ -376,13 +377,6 @@ def plural(n, word):
 # Significant digits of the tensions the G2 error messages give: 3 told 0.00176823 (none
 # found) from 0.00177 (solved) as the same "0.00177" (QA12).
 G2_TENSION_DIGITS = 6
-
-
-def floor_digits(x, digits=G2_TENSION_DIGITS):
-    """x > 0 rounded DOWN to ``digits`` significant digits (the float of its %g text)."""
-    q = 10.0 ** (math.floor(math.log10(x)) - digits + 1)
-    y = float(f"{math.floor(x / q) * q:.{digits}g}")
-    return y if y <= x else float(f"{(math.floor(x / q) - 1) * q:.{digits}g}")
 
 
 def solution_text(i, length, energy, infl, loops, kmax):
@@ -566,21 +560,23 @@ class BlendProxy(FeatureProxy):
         obj.BlendLength = float(sp.length if sp else curves[i].length)
         obj.BlendTension = float(sp.tension if sp else getattr(curves[i], "sigma", 0.0))
         if sp:
-            per, unit = tension_unit()   # forces in 1/length^2 x EI/2, as the tension
-            forces = ", ".join(f"{float(np().hypot(*f)) * per:.3g}" for f in sp.guide_forces)
+            # forces in 1/length^2 x EI/2, as the tension; marks: said in the schema of now
+            # when the panel opens (proxy.said)
+            forces = ", ".join(per_area_mark(float(np().hypot(*f))) for f in sp.guide_forces)
             bends = plural(inflections(sp.pieces), "inflection")
             free = " (free batten)" if tension_text(sp.tension, sp.length).startswith("0 ") \
                 else ""
             # "; " parts: the panel shows one a line
-            obj.Status = (f"G2 from solution {i + 1} of {len(curves)}{followed}{r['g2_note']}; length "
-                          f"{length_text(sp.length, 4)}, tension "
-                          f"{tension_text(sp.tension, sp.length)}{free}; energy "
-                          f"{per_length(sp.energy)}, max curvature "
-                          f"{per_length(sp.max_curvature)}, {bends}"
-                          f"; guide ducks' forces {forces} ({unit} \u00d7 EI/2)"
-                          + (f"; G2 to {sp.residual:.2g} (nearly straight under tension: double "
-                             f"precision resolves its pieces to {sp.resolution:.2g}, the library's "
-                             "tolerance is 1e-10)" if sp.residual > 1e-10 else ""))
+            set_said(obj, "Status", (
+                f"G2 from solution {i + 1} of {len(curves)}{followed}{r['g2_note']}; length "
+                f"{length_mark(sp.length, 4)}, tension "
+                f"{tension_mark(sp.tension, sp.length)}{free}; energy "
+                f"{per_length_mark(sp.energy)}, max curvature "
+                f"{per_length_mark(sp.max_curvature)}, {bends}"
+                f"; guide ducks' forces {forces} ({tension_unit_mark()} \u00d7 EI/2)"
+                + (f"; G2 to {sp.residual:.2g} (nearly straight under tension: double "
+                   f"precision resolves its pieces to {sp.resolution:.2g}, the library's "
+                   "tolerance is 1e-10)" if sp.residual > 1e-10 else "")))
         else:
             obj.Status = f"solution {i + 1} of {len(curves)}{followed}"
 

@@ -10,12 +10,15 @@ import FreeCADGui as Gui
 
 from . import defaults, icon, library_problem
 from .proxy import InputProblem
+from .units import say
 
 MESSAGES = []   # the last messages shown (tests read them); at most 50 kept
 
 
 def message(text, error=True):
-    """Report-view message (and the status bar), never an exception."""
+    """Report-view message (and the status bar), never an exception; its marks (a
+    feature's message) said in the unit schema (units.say)."""
+    text = say(text)
     MESSAGES.append(text)
     del MESSAGES[:-50]
     (App.Console.PrintError if error else App.Console.PrintMessage)(f"Elastica: {text}\n")

@@ -13,7 +13,7 @@ from PySide import QtCore, QtGui
 
 from . import icon
 from .geometry import is_sketch, sketch_curves
-from .proxy import EDGE_ENDS, InputProblem
+from .proxy import EDGE_ENDS, InputProblem, said as said_now
 from .units import length_text, length_unit, tension_unit, user_length
 
 CURRENT = []        # the open panel, if any (scripts and the GUI smoke test drive it)
@@ -318,7 +318,8 @@ class Panel:
     def warnings(self):
         """What the warning line says (a list of sentences; none: hidden): the command's
         note, then the feature's Warnings, capitalised."""
-        said = ([self.note] if self.note else []) + list(getattr(self.obj, "Warnings", []))
+        said = ([self.note] if self.note else []) + (
+            said_now(self.obj, "Warnings") if "Warnings" in self.obj.PropertiesList else [])
         return [w[0].upper() + w[1:] for w in said]
 
     def number(self, grid, label, prop, lo, hi, step, unit, tip, decade=False, when=None):
@@ -588,7 +589,7 @@ class Panel:
         """Result text (the error in red) and which fields apply."""
         o = self.obj
         if o.Status.startswith("error"):
-            self.result.setText(f"<b style='color:#b00'>{o.Status}</b>")
+            self.result.setText(f"<b style='color:#b00'>{said_now(o, 'Status')}</b>")
         else:
             self.result.setText(self.result_text())
         if hasattr(self, "sketch"):
@@ -612,7 +613,7 @@ class Panel:
         return self.sketch.itemData(self.sketch.currentIndex()) if hasattr(self, "sketch") else ""
 
     def result_text(self):
-        return f"status: {self.obj.Status}"
+        return f"status: {said_now(self.obj, 'Status')}"
 
     # ---------------------------------------------------------------- OK / Cancel
 

@@ -16,6 +16,8 @@ import sys
 
 import FreeCAD as App
 
+from .units import say
+
 VERSION = 3             # of the proxies' saved state (3: lengths typed with units)
 VIEW_HOOK = []          # [attach(obj), restored(obj)] set by init_gui: view providers
 
@@ -188,11 +190,38 @@ def check_degree(value, lo=3, hi=7, name="Degree"):
 
 
 def report(obj, msg, error=True):
-    """The message in the report view and, as 'error: ...', in obj.Status."""
+    """The message in the report view and, as 'error: ...', in obj.Status (its marks said
+    in the schema of now, units.say; kept for said())."""
     (App.Console.PrintError if error else App.Console.PrintWarning)(
-        f"Elastica {obj.Label}: {msg}\n")
+        f"Elastica {obj.Label}: {say(msg)}\n")
     if "Status" in obj.PropertiesList:
-        obj.Status = f"error: {msg}" if error else msg
+        set_said(obj, "Status", f"error: {msg}" if error else msg)
+
+
+def set_said(obj, prop, marked):
+    """Set the text (or list of texts) property ``prop`` to ``marked`` said in the schema of
+    now (units.say), keeping the marked text for said()."""
+    value = say(marked)
+    old = getattr(obj, prop)
+    if (list(old) if isinstance(old, (list, tuple)) else old) != value:   # unchanged: untouched
+        setattr(obj, prop, value)
+    proxy = getattr(obj, "Proxy", None)
+    if proxy is not None:
+        if not isinstance(getattr(proxy, "_said", None), dict):
+            proxy._said = {}
+        proxy._said[prop] = [value, list(marked) if isinstance(marked, (list, tuple)) else marked]
+
+
+def said(obj, prop):
+    """The text property ``prop`` in the user's schema of now: its marked text said again
+    where the property still holds what set_said wrote (a schema changed since the
+    recompute), else the property as it stands."""
+    value = getattr(obj, prop)
+    kept = (getattr(getattr(obj, "Proxy", None), "_said", None) or {}).get(prop)
+    now = list(value) if isinstance(value, (list, tuple)) else value
+    if kept and kept[0] == now:
+        return say(kept[1])
+    return now
 
 
 def new_feature(doc, name, proxy_class, **props):
@@ -249,7 +278,7 @@ class FeatureProxy:
             return
         report(obj, msg)
         self.on_error(obj)
-        raise_reported(f"Elastica {obj.Label}: {msg}")
+        raise_reported(f"Elastica {obj.Label}: {say(msg)}")
 
     def setup(self, obj):
         pass
@@ -291,10 +320,13 @@ class FeatureProxy:
             state["exact"] = {p: repr(float(getattr(obj, p))) for p in self._float_props(obj)}
         except Exception:  # no object (yet) / being deleted: nothing exact to keep
             pass
+        if getattr(self, "_said", None):
+            state["said"] = self._said
         return state
 
     def __setstate__(self, state):
         self._exact = dict((state or {}).get("exact") or {})
+        self._said = dict((state or {}).get("said") or {})
         return None
 
     def dumps(self):

@@ -18,10 +18,10 @@ from . import defaults
 from .geometry import (edge_end, el, nearest_parameter, np, part_bspline, plane_coordinates,
                        plane_curvature, to_3d)
 from .links import followed_edge, followed_reader
-from .units import length_text, tension_text, user_length
+from .units import length_mark, length_text, say, tension_text, user_length
 from .proxy import (FeatureProxy, InputProblem, add_edge_end, add_enum, add_geometry_index,
                     add_length, add_link, add_property, check_degree, check_number,
-                    check_tolerance, edge_end_choice, new_feature, read_only)
+                    check_tolerance, edge_end_choice, new_feature, read_only, set_said)
 from .sources import gather_vertices
 
 MODES = ["tension", "length"]
@@ -207,7 +207,7 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
             else:                          # closed: met at its nearest point, not an end
                 where, on, taken = f"{what} (closed)", "a point on the edge", \
                     f"{taken} at its nearest point"
-            cautions.append(f"{where} is {length_text(c['gap'])} from the {point} point: the "
+            cautions.append(f"{where} is {length_mark(c['gap'])} from the {point} point: the "
                             "spline "
                             f"takes its {taken} but does not meet it; to join, make the "
                             f"{point} point {on} (pick it, or constrain them coincident)")
@@ -429,13 +429,14 @@ class SplineProxy(FeatureProxy):
         obj.Plane = plc
         from libelastica.io import curve_to_dict
         obj.Curves = json.dumps([curve_to_dict(c) for c in sp.pieces])
-        cautions = r["warnings"]
-        if cautions != list(obj.Warnings):
+        cautions = r["warnings"]          # marked (units.say): said again in a panel
+        if say(cautions) != list(obj.Warnings):
             # once per change of the warnings, not on every recompute (as ellblend's)
-            for w in cautions:
+            for w in say(cautions):
                 App.Console.PrintWarning(f"Elastica {obj.Label}: {w}\n")
-            obj.Warnings = cautions
-        obj.Status = "; ".join(["ok"] + [f"warning: {w}" for w in cautions] + changed + r["notes"])
+        set_said(obj, "Warnings", cautions)
+        set_said(obj, "Status", "; ".join(["ok"] + [f"warning: {w}" for w in cautions] + changed
+                                          + r["notes"]))
 
     def plane_curves(self, obj):
         from .fit import stored_curves

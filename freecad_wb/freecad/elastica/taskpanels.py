@@ -17,7 +17,7 @@ from . import spline as Sp
 from .fit_core import DISTANCE_NAMES, DISTANCES, MODEL_NAMES, MODELS
 from .fit_ends import CONTINUITIES, CONTINUITY_NAMES
 from .geometry import is_sketch
-from .panelbase import CURRENT, Panel, _fmt
+from .panelbase import CURRENT, Panel, _fmt, said_now
 from .units import length_text, length_unit, per_length, tension_unit
 
 
@@ -154,7 +154,7 @@ class FitPanel(Panel):
             k0, k1 = (0.0 if abs(k) * size < 1e-9 else k for k in o.EndCurvatures)
             ends = f"<br>end \u03ba {k0 * length_unit()[0]:.4g}, {per_length(k1, 4)}"
         return (f"{n} points, {o.ErrorMeasure}:<br>rms {_fmt(o.Rms)}, max {_fmt(o.MaxError)}"
-                f"<br>{curve}k = {ks}{ends}<br>{bs}<br>{o.Status}")
+                f"<br>{curve}k = {ks}{ends}<br>{bs}<br>{said_now(o, 'Status')}")
 
     def refresh(self):
         """As every panel's; a G2 join's curvature field (disabled) shows the edge's, the
@@ -375,7 +375,7 @@ class BlendPanel(Panel):
 
     def result_text(self):
         o = self.obj
-        return "<br>".join(o.Status.split("; ") +
+        return "<br>".join(said_now(o, 'Status').split("; ") +
                            [f"B-spline: {o.Poles} poles, degree {o.Degree}"])
 
     def copy_code(self):
@@ -509,7 +509,7 @@ class SplinePanel(Panel):
     def result_text(self):
         o = self.obj
         radius = f" (radius {_fmt(1 / o.MaxCurvature)})" if o.MaxCurvature > 0 else ""
-        notes = o.Status.split("; ")[1:]
+        notes = said_now(o, 'Status').split("; ")[1:]
         tension = B.tension_text(o.SplineTension, o.SplineLength)
         lines = [f"length {_fmt(o.SplineLength)}, tension {tension}"
                  + (" (free batten)" if tension.startswith("0 ") else ""),
@@ -598,7 +598,7 @@ class G2QuadPanel(Panel):
                    f"jump {per_length(o.JoinCurvatureJump, 2)} (not G2 there)<br>"
                    if o.Pieces > 1 else "")
                 + f"end tangents off by {o.EndTangentError:.2g}\u00b0, end curvature by "
-                f"{ek}<br>{o.Status}")
+                f"{ek}<br>{said_now(o, 'Status')}")
 
 
 class CombPanel(Panel):
@@ -616,7 +616,7 @@ class CombPanel(Panel):
         self.row(g, "", self.result)
 
     def result_text(self):
-        return f"scale {self.obj.UsedScale:.4g} mm\u00b2; {self.obj.Status}"
+        return f"scale {self.obj.UsedScale:.4g} mm\u00b2; {said_now(self.obj, 'Status')}"
 
 
 PANELS = {"Fit": FitPanel, "Blend": BlendPanel, "Spline": SplinePanel,

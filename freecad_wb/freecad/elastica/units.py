@@ -4,6 +4,9 @@ mm (and 1/mm, 1/mm^2), the text the designer reads follows the schema ('5.94 in'
 tension '0.409 1/in²'). No GUI: features' Status lines use it too."""
 from __future__ import annotations
 
+import math
+import re
+
 import FreeCAD as App
 
 # the schema's unit of a length of this size names 'the' length unit of the schema, for
@@ -59,3 +62,83 @@ def tension_text(sigma, length, digits=3):
     rounding noise (below 1e-9 of the scale 1/length^2) shown as 0."""
     factor, unit = tension_unit()
     return f"{0.0 if abs(sigma) * length ** 2 < 1e-9 else sigma * factor:.{digits}g} {unit}"
+
+
+# ------------------------------------------------------------------ texts said again
+# A text a recompute writes (Status, Warnings) may hold its figures as marks: say() writes
+# each in the schema of now, so a panel opened after a schema change says the stored text
+# again in the new one without a recompute (proxy.said keeps the marked text).
+_MARK = re.compile("\x01([LKkTNUuR])([^\x02]*)\x02")
+
+
+def length_mark(mm, digits=3):
+    """A length (mm) written by say() as length_text writes it."""
+    return f"\x01L{float(mm)!r}|{digits}\x02"
+
+
+def per_length_mark(value, digits=3, unit=True):
+    """A quantity per length (1/mm) written by say() as per_length writes it (``unit``
+    False: the number alone, in the same unit)."""
+    return f"\x01{'K' if unit else 'k'}{float(value)!r}|{digits}\x02"
+
+
+def tension_mark(sigma, length, digits=3):
+    """A tension (1/mm^2) written by say() as tension_text writes it."""
+    return f"\x01T{float(sigma)!r}|{float(length)!r}|{digits}\x02"
+
+
+def per_area_mark(value, digits=3):
+    """A number per length squared (1/mm^2) written by say() in 1/unit^2 of the schema,
+    without its unit (tension_unit_mark says it)."""
+    return f"\x01N{float(value)!r}|{digits}\x02"
+
+
+def length_unit_mark():
+    """The schema's length unit as the parser reads it ('mm', 'in'), written by say()."""
+    return "\x01u\x02"
+
+
+def tension_unit_mark():
+    """The tension unit ('1/mm\u00b2', '1/in\u00b2'), written by say()."""
+    return "\x01U\x02"
+
+
+def reach_mark(sigma, digits):
+    """A tension (1/mm^2) that can be typed back: rounded DOWN to ``digits`` in the unit
+    say() writes it in, with the unit (a reach typed back stays within reach)."""
+    return f"\x01R{float(sigma)!r}|{digits}\x02"
+
+
+def floor_digits(x, digits):
+    """x > 0 rounded DOWN to ``digits`` significant digits (the float of its %g text)."""
+    q = 10.0 ** (math.floor(math.log10(x)) - digits + 1)
+    y = float(f"{math.floor(x / q) * q:.{digits}g}")
+    return y if y <= x else float(f"{(math.floor(x / q) - 1) * q:.{digits}g}")
+
+
+def _said(match):
+    kind, args = match.group(1), match.group(2).split("|")
+    if kind == "L":
+        return length_text(float(args[0]), int(args[1]))
+    if kind == "K":
+        return per_length(float(args[0]), int(args[1]))
+    if kind == "k":
+        return f"{float(args[0]) * length_unit()[0]:.{int(args[1])}g}"
+    if kind == "T":
+        return tension_text(float(args[0]), float(args[1]), int(args[2]))
+    if kind == "N":
+        return f"{float(args[0]) * tension_unit()[0]:.{int(args[1])}g}"
+    if kind == "u":
+        return length_unit()[1]
+    if kind == "R":
+        per, unit = tension_unit()
+        shown = float(args[0]) if per == 1.0 else floor_digits(float(args[0]) * per, int(args[1]))
+        return f"{shown:.{int(args[1])}g} {unit}"
+    return tension_unit()[1]
+
+
+def say(text):
+    """``text`` (or a list of texts) with its marks written in the user's schema of now."""
+    if isinstance(text, (list, tuple)):
+        return [say(t) for t in text]
+    return _MARK.sub(_said, text)
