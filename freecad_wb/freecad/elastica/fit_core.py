@@ -223,7 +223,8 @@ def _far_from_resampled(xy, rms, result, polygon, constraints, step):
     ref = el().resampled_reference(xy, rms, polygon, result.curve, constraints or None)
     if ref is None:
         return []
-    return [el().resample_summary(step, rms, ref, " mm", extent=float(np.ptp(xy, axis=0).max()))]
+    extent = float(np().ptp(xy, axis=0).max())
+    return [el().resample_summary(step, rms, ref, " mm", extent=extent)]
 
 
 def _keyline_step(xy):
