@@ -284,6 +284,10 @@ def imperial_texts_and_steps(b, panel):
     G.check(tension.endswith(" 1/in\u00b2") and
             tension == f"{panel.tension.value() * 25.4 ** 2:.6g} 1/in\u00b2",
             f"the Tension box in 1/in\u00b2: {tension!r} ({panel.tension.value()} 1/mm\u00b2)")
+    tips = (panel.length.toolTip(), panel.tension.toolTip(), panel.tol.toolTip())
+    G.check("(in)" in tips[0] and "(1/in\u00b2)" in tips[1] and "(in)" in tips[2]
+            and not any("mm" in t for t in tips),
+            f"the boxes' tooltips name the units they show: {[t[:40] for t in tips]}")
     rows = [panel.list.item(i).text() for i in range(panel.list.count())]
     G.check(rows and all(" in, " in r and "/in" in r and "mm" not in r for r in rows),
             f"the solutions in inches: {rows[:2]}")

@@ -64,6 +64,61 @@ class FitMeasureTest(unittest.TestCase):
         self.assertNotIn("3D", f.ErrorMeasure)
         self.assertLess(f.Rms, 1e-3)
 
+    def test_warnings_follow_the_unit_schema(self):
+        """Noise-free points fitted resampled: the warning says the curve's rms in length
+        where their own fit passes through them (it said '1.5e+13 x their own fit's
+        7.74e-14 mm'); under Imperial decimal it and the errors give lengths in inches
+        (they said mm beside boxes in inches), and a panel opened after a schema change
+        says them in the new one (proxy.said)."""
+        import numpy as np
+        import libelastica as el
+        from freecad.elastica.proxy import said
+        c = el.SmoothElastica(x0=0, y0=0, phi=0, mu=1e-3, k=0.8, q=0.0, length=150.0)
+        sk = S.points_sketch(self.doc, c.points(np.linspace(0, c.length, 60)))
+        f = Fi.make(self.doc, [(sk, [])], Model="discrete", ResampleStep=20.0)
+        self.doc.recompute()
+        warned = [w for w in f.Warnings if "resampled at" in w]
+        self.assertEqual(len(warned), 1, list(f.Warnings))
+        self.assertIn(f"resampled at 20 mm lies {f.Rms:.3g} mm from them (rms), where their "
+                      "own fit passes through them", warned[0])
+        schema = App.Units.getSchema()
+        try:
+            App.Units.setSchema(3)
+            shown = said(f, "Warnings")
+            # the library's 3 digits in mm, in inches (to 3 digits of those)
+            inches = float(f"{f.Rms:.3g}") / 25.4
+            self.assertIn(f"resampled at 0.787 in lies {inches:.3g} in from them", shown[0])
+            f.touch()
+            self.doc.recompute()                   # what a recompute under Imperial writes
+            self.assertEqual(list(f.Warnings), shown)
+            self.assertFalse([w for w in f.Warnings if "mm" in w], list(f.Warnings))
+            f.ResampleStep = 300.0                 # longer than the points reach
+            self.doc.recompute()
+            self.assertTrue(f.Status.startswith("error: Resample = 11.8 in is"), f.Status)
+            self.assertNotIn("mm", f.Status)
+            App.Units.setSchema(0)
+            self.assertTrue(said(f, "Status").startswith("error: Resample = 300 mm is"),
+                            said(f, "Status"))
+        finally:
+            App.Units.setSchema(schema)
+
+    def test_length_property_docs_name_no_unit(self):
+        """The length properties (App::PropertyDistance) show their value in the user's
+        schema in the property editor: their documentation says no '(mm)' beside it."""
+        from freecad.elastica import blend as Bl, ellblend as Eb, spline as Sp
+        sk = S.points_sketch(self.doc, [(0, 0), (30, 10), (60, 5), (90, 20)])
+        lines = S.two_lines_sketch(self.doc)
+        made = {"fit": Fi.make(self.doc, [(sk, [])]),
+                "spline": Sp.make(self.doc, [(sk, [])]),
+                "ellblend": Eb.make(self.doc, [(sk, [])]),
+                "blend": Bl.make(self.doc, (lines, "Edge1"), (lines, "Edge2"))}
+        self.assertTrue(all(any(o.getTypeIdOfProperty(p) == "App::PropertyDistance"
+                                for p in o.PropertiesList) for o in made.values()))
+        for what, obj in made.items():
+            for prop in obj.PropertiesList:
+                if obj.getTypeIdOfProperty(prop) == "App::PropertyDistance":
+                    self.assertNotIn("(mm", obj.getDocumentationOfProperty(prop), (what, prop))
+
     def test_a_resampled_fit_is_measured_from_the_points_given(self):
         # 15 points, the last at x = 98: an equilateral polygon of 5 mm stops 3.7 mm short;
         # the library's resampled polygon (el.resampled_polygon) ends at the last point, so

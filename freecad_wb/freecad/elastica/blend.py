@@ -406,7 +406,7 @@ class BlendProxy(FeatureProxy):
         add_enum(obj, "Mode", "Blend", "Solve for a given tension (default: 0, the free "
                  "batten) or a given arc length", MODES, "tension")
         add_length(obj, "Length", "Blend",
-                   "Arc length of the blend in length mode (mm); 0 = the length of the "
+                   "Arc length of the blend in length mode; 0 = the length of the "
                    "lowest-energy free batten", 0.0)
         add_property(obj, "App::PropertyFloat", "Tension", "Blend",
                      "Tension sigma in tension mode (1/mm^2; 0 = free batten, negative = "
@@ -417,7 +417,7 @@ class BlendProxy(FeatureProxy):
                      "edit of the blend's parameters; a picked one follows its shape when the "
                      "edges move (the lowest where that shape is gone)", 0)
         add_length(obj, "Tolerance", "BSpline",
-                   "Largest distance (mm) of the B-spline from the elastica", tol)
+                   "Largest distance of the B-spline from the elastica", tol)
         add_property(obj, "App::PropertyInteger", "Degree", "BSpline",
                      "Degree of the B-spline (3 to 7; high degrees need few poles)",
                      BSPLINE_DEGREE)

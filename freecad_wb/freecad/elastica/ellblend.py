@@ -102,7 +102,7 @@ class EllipticBlendProxy(FeatureProxy):
                      "End-derivative parameter d > 0: the curve leaves q0 with velocity "
                      "d (q1 - q0) and ends with d (q3 - q2)", 2.0)
         add_length(obj, "Tolerance", "BSpline",
-                   "Largest distance (mm) of the B-spline from the blending curve", defaults()[0])
+                   "Largest distance of the B-spline from the blending curve", defaults()[0])
         add_property(obj, "App::PropertyFloat", "BSplineDeviation", "Result",
                      "Certified distance of the B-spline from the blending curve (mm)")
         add_property(obj, "App::PropertyVectorList", "ControlPoints", "Result",

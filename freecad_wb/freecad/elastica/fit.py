@@ -18,8 +18,10 @@ from .fit_ends import CONTINUITIES
 from .geometry import el, part_bspline, to_3d
 from .links import followed_edge, followed_reader
 from .proxy import (FeatureProxy, InputProblem, add_edge_end, add_enum, add_geometry_index,
-                    add_length, add_link, add_property, edge_end_choice, new_feature, read_only)
+                    add_length, add_link, add_property, edge_end_choice, new_feature, read_only,
+                    set_said)
 from .sources import gather_points
+from .units import mm_marked, say
 
 
 class FitProxy(FeatureProxy):
@@ -84,13 +86,13 @@ class FitProxy(FeatureProxy):
         if "PinEnds" in obj.PropertiesList:            # documents of version 1
             obj.removeProperty("PinEnds")
         add_length(obj, "ResampleStep", "Fit",
-                   "Equilateral resampling step (mm) before fitting; 0 keeps the points. A "
+                   "Equilateral resampling step before fitting; 0 keeps the points. A "
                    "split keyline: the step of its preparation (0 = the polyline through the "
                    "medians of runs of the points, cut into 100 segments: scan noise does "
                    "not lengthen it); the discrete one fits that polygon, the smooth one the "
                    "points themselves", 0.0)
         add_length(obj, "Tolerance", "BSpline",
-                   "Largest distance (mm) of the B-spline from the fitted smooth elastica", tol)
+                   "Largest distance of the B-spline from the fitted smooth elastica", tol)
         add_property(obj, "App::PropertyInteger", "Degree", "BSpline",
                      "Degree of the B-spline (3 to 7) of a smooth fit; a discrete fit's vertices "
                      "are joined by the C2 cubic through them (natural at free ends)", deg)
@@ -165,13 +167,15 @@ class FitProxy(FeatureProxy):
         obj.Distances = [float(d) for d in r["distances"]]
         from libelastica.io import curve_to_dict
         obj.Curves = json.dumps([curve_to_dict(c) for c in r["curves"]])
-        obj.Status = r["status"] or "ok"
+        # lengths in the unit schema, said again when a panel opens (proxy.said)
+        set_said(obj, "Status", mm_marked(r["status"] or "ok"))
         obj.FreeRms = r["free_rms"]
-        if r["warnings"] != list(obj.Warnings):
+        warnings = mm_marked(r["warnings"])
+        if say(warnings) != list(obj.Warnings):
             # once per change of the warnings, not on every recompute of the same fit
-            for w in r["warnings"]:
+            for w in say(warnings):
                 App.Console.PrintWarning(f"Elastica {obj.Label}: {w}\n")
-            obj.Warnings = r["warnings"]
+        set_said(obj, "Warnings", warnings)
 
     def plane_curves(self, obj):
         """(curves, placement) of the last successful fit, or None: the curves along

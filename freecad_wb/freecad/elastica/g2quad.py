@@ -14,8 +14,9 @@ import Part
 from .geometry import bspline_edges, el, np, plane_coordinates, plane_curvature, to_3d
 from .links import followed_reader
 from .proxy import (FeatureProxy, InputProblem, add_geometry_index, add_link, add_property,
-                    new_feature, read_only)
+                    new_feature, read_only, set_said)
 from .sources import gather_edges, sample_chain
+from .units import length_mark
 
 SAMPLES_PER_VERTEX = 20     # seed 002 §4.2: |p| ~ 20 |x|
 
@@ -133,10 +134,10 @@ class G2QuadProxy(FeatureProxy):
         obj.Poles = g.npoles
         obj.Polyline = to_3d(plc, g.polyline.points)
         obj.Plane = plc
-        gone = " + ".join(f"{d:.4g} mm" for d in g.dropped if d > 0)
-        obj.Status = "ok" if g.covers_source else (
+        gone = " + ".join(length_mark(d, 4) for d in g.dropped if d > 0)
+        set_said(obj, "Status", "ok" if g.covers_source else (
             f"ok, but an end of the source next to an inflection is left out ({gone} of its "
-            "length; too short for 3 edges): more edges cover it")
+            "length; too short for 3 edges): more edges cover it"))
 
 
 def make(doc, sources=(), **props):

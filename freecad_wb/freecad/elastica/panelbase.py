@@ -14,7 +14,7 @@ from PySide import QtCore, QtGui
 from . import icon
 from .geometry import is_sketch, sketch_curves
 from .proxy import EDGE_ENDS, InputProblem, said as said_now
-from .units import length_text, length_unit, tension_unit, user_length
+from .units import length_text, length_unit, tension_unit, unit_names, user_length
 
 CURRENT = []        # the open panel, if any (scripts and the GUI smoke test drive it)
 DELAY_MS = 150      # recompute after this pause in editing
@@ -324,6 +324,7 @@ class Panel:
 
     def number(self, grid, label, prop, lo, hi, step, unit, tip, decade=False, when=None):
         """A spin box bound live to the float property prop."""
+        tip = unit_names(tip)           # '(mm)' in the tooltip: the unit the box shows
         box = (DecadeBox if decade else NumberBox)(lo, hi, step, unit, tip)
         box.blockSignals(True)
         box.setValue(float(getattr(self.obj, prop)))
@@ -347,6 +348,7 @@ class Panel:
     def checked_number(self, grid, text, check_prop, prop, lo, hi, step, unit, tip, when=None):
         """A check box (the boolean check_prop) beside a spin box (the float prop), which
         applies only while the box is checked: an optional value."""
+        tip = unit_names(tip)
         box = QtGui.QCheckBox(text)
         box.setChecked(bool(getattr(self.obj, check_prop)))
         box.setToolTip(tip)

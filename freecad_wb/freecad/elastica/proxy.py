@@ -16,7 +16,7 @@ import sys
 
 import FreeCAD as App
 
-from .units import say
+from .units import mm_marked, say
 
 VERSION = 3             # of the proxies' saved state (3: lengths typed with units)
 VIEW_HOOK = []          # [attach(obj), restored(obj)] set by init_gui: view providers
@@ -192,6 +192,7 @@ def check_degree(value, lo=3, hi=7, name="Degree"):
 def report(obj, msg, error=True):
     """The message in the report view and, as 'error: ...', in obj.Status (its marks said
     in the schema of now, units.say; kept for said())."""
+    msg = mm_marked(msg)          # '<number> mm' in the schema's length unit
     (App.Console.PrintError if error else App.Console.PrintWarning)(
         f"Elastica {obj.Label}: {say(msg)}\n")
     if "Status" in obj.PropertiesList:
@@ -278,7 +279,7 @@ class FeatureProxy:
             return
         report(obj, msg)
         self.on_error(obj)
-        raise_reported(f"Elastica {obj.Label}: {say(msg)}")
+        raise_reported(f"Elastica {obj.Label}: {say(mm_marked(msg))}")
 
     def setup(self, obj):
         pass

@@ -313,7 +313,7 @@ class SplineProxy(FeatureProxy):
                      "Tension sigma in tension mode (1/mm^2, >= 0): 0 = the free batten, "
                      "larger pulls the batten straighter between the ducks", 0.0)
         add_length(obj, "Length", "Spline",
-                   "Total length in length mode (mm), longer than the polygon through the "
+                   "Total length in length mode, longer than the polygon through the "
                    "points; 0 = the free batten's length", 0.0)
         add_property(obj, "App::PropertyBool", "Closed", "Spline",
                      "A closed batten through the points (the end conditions do not apply)",
@@ -333,7 +333,7 @@ class SplineProxy(FeatureProxy):
                      "Bending stiffness EI of the batten (N mm^2): the duck forces in newtons; "
                      "0 = in units of EI/2 (1/mm^2)", 0.0)
         add_length(obj, "Tolerance", "BSpline",
-                   "Largest distance (mm) of the B-spline from the elastic spline", tol)
+                   "Largest distance of the B-spline from the elastic spline", tol)
         add_property(obj, "App::PropertyInteger", "Degree", "BSpline",
                      "Degree of the B-spline (3 to 7): one B-spline, G2 at the points",
                      BSPLINE_DEGREE)

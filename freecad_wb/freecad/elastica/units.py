@@ -64,11 +64,23 @@ def tension_text(sigma, length, digits=3):
     return f"{0.0 if abs(sigma) * length ** 2 < 1e-9 else sigma * factor:.{digits}g} {unit}"
 
 
+def unit_names(text):
+    """``text`` (a tooltip) with '(mm', '(1/mm' and '(1/mm²' naming the schema's units,
+    those the boxes show ('(in)', '(1/in)', '(1/in²)' under Imperial decimal)."""
+    unit = length_unit()[1]
+    return re.sub("\\((1/)?mm(\u00b2)?", lambda m: f"({m.group(1) or ''}{unit}{m.group(2) or ''}",
+                  text)
+
+
 # ------------------------------------------------------------------ texts said again
 # A text a recompute writes (Status, Warnings) may hold its figures as marks: say() writes
 # each in the schema of now, so a panel opened after a schema change says the stored text
 # again in the new one without a recompute (proxy.said keeps the marked text).
-_MARK = re.compile("\x01([LKkTNUuR])([^\x02]*)\x02")
+_MARK = re.compile("\x01([LKkTNUuRMm])([^\x02]*)\x02")
+# a length written '<number> mm' (the library's messages take a unit to write after their
+# figures): not '1/mm', 'mm^2', 'N mm^2'
+_NUM = r"(-?(?:\d+\.?\d*|\.\d+)(?:e[+-]?\d+)?)"
+_MM = re.compile(rf"(?<![\w.\-])(?:{_NUM} to )?{_NUM} mm(?![\w^\u00b2/])")   # '9.05 to 16 mm' too
 
 
 def length_mark(mm, digits=3):
@@ -116,6 +128,24 @@ def floor_digits(x, digits):
     return y if y <= x else float(f"{(math.floor(x / q) - 1) * q:.{digits}g}")
 
 
+def mm_marked(text):
+    """``text`` (or a list of texts) with each '<number> mm' marked: say() writes it in the
+    schema's length unit (length_unit: one unit through a message, to as many significant
+    digits as written, at least 3), and as written under a schema of mm."""
+    if isinstance(text, (list, tuple)):
+        return [mm_marked(t) for t in text]
+    return _MM.sub(lambda m: (f"\x01m{m.group(1)}\x02 to " if m.group(1) else "")
+                   + f"\x01M{m.group(2)}\x02", text)
+
+
+def _in_length_unit(written, with_unit=True):
+    factor, unit = length_unit()
+    if factor == 1.0 and unit == "mm":
+        return f"{written} mm" if with_unit else written
+    digits = max(3, len(re.sub(r"e.*|[^0-9]", "", written).lstrip("0")))
+    return f"{float(written) / factor:.{digits}g}" + (f" {unit}" if with_unit else "")
+
+
 def _said(match):
     kind, args = match.group(1), match.group(2).split("|")
     if kind == "L":
@@ -130,6 +160,8 @@ def _said(match):
         return f"{float(args[0]) * tension_unit()[0]:.{int(args[1])}g}"
     if kind == "u":
         return length_unit()[1]
+    if kind in "Mm":
+        return _in_length_unit(args[0], kind == "M")
     if kind == "R":
         per, unit = tension_unit()
         shown = float(args[0]) if per == 1.0 else floor_digits(float(args[0]) * per, int(args[1]))
