@@ -318,6 +318,18 @@ class FitResultTest(unittest.TestCase):
                 self.assertIn("2 of 40 points lie", said[0])
                 top = S.SKETCH_PLACEMENT.multVec(App.Vector(*glitched[25], 0))
                 self.assertIn(f"the farthest at ({top.x:.4g}, {top.y:.4g}, {top.z:.4g})", said[0])
+                # under Imperial decimal (a panel opened after the change: proxy.said) the
+                # figures and the place in inches (the place stayed in mm)
+                from freecad.elastica.proxy import said as said_now
+                schema = App.Units.getSchema()
+                try:
+                    App.Units.setSchema(3)
+                    inch = [w for w in said_now(f, "Warnings") if "outliers?" in w][0]
+                finally:
+                    App.Units.setSchema(schema)
+                place = ", ".join(f"{float(f'{v:.4g}') / 25.4:.4g}" for v in (top.x, top.y))
+                self.assertIn(f"the farthest at ({place}, ", inch)
+                self.assertNotIn("mm", inch)
 
     def test_a_fit_that_swings_between_two_points_is_named(self):
         """A sketch whose fit hooks away between its last two points (tests/python/fit_data.py's

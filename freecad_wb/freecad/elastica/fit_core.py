@@ -19,6 +19,7 @@ from .geometry import el, np, plane_coordinates, polyline_length, to_plane
 from .nearest import drawn_distances, nearest_on
 from .proxy import InputProblem, check_degree, check_number, check_tolerance
 from .sources import curve_order, file_order
+from .units import coordinate_mark
 
 MIN_POINTS = 6          # fewer points cannot determine the 7 (5 shape) parameters of a fit
 MODELS = ["discrete", "smooth"]
@@ -303,9 +304,9 @@ def _far_points(data, dist, plane, free=None):
         return []
     farthest = far[n.argmax(n.abs(n.asarray(dist if free is None else free, dtype=float))[far])]
     worst = plane.multVec(App.Vector(*map(float, data[farthest])))
-    return [f"{el().far_points_summary(dist, far, ' mm', free)} (the farthest at ({worst.x:.4g}, "
-            f"{worst.y:.4g}, {worst.z:.4g})): outliers? Each pulls the fit towards itself: "
-            "remove them to fit the rest"]
+    at = ", ".join(coordinate_mark(v) for v in (worst.x, worst.y, worst.z))   # units.say
+    return [f"{el().far_points_summary(dist, far, ' mm', free)} (the farthest at ({at})): "
+            "outliers? Each pulls the fit towards itself: remove them to fit the rest"]
 
 
 def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", split=False,

@@ -138,6 +138,12 @@ def mm_marked(text):
                    + f"\x01M{m.group(2)}\x02", text)
 
 
+def coordinate_mark(mm, digits=4):
+    """A coordinate (mm) without its unit, written by say() in the schema's length unit (a
+    message names the unit once, or the schema's: '(219.9, -101.6, -87.72)')."""
+    return f"\x01m{float(mm):.{digits}g}\x02"
+
+
 def _in_length_unit(written, with_unit=True):
     factor, unit = length_unit()
     if factor == 1.0 and unit == "mm":
