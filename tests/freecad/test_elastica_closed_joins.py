@@ -78,6 +78,15 @@ class ClosedJoinTest(unittest.TestCase):
             self.assertGreater(abs(now - seam), 1.0)
             self.assertIn("joined to it at its seam by an earlier version", s.Status)
             self.assertIn(f"(length {seam:.6g} -> {now:.6g} mm)", s.Status)
+            from freecad.elastica.proxy import said   # a panel opened under Imperial decimal
+            schema = App.Units.getSchema()
+            try:
+                App.Units.setSchema(3)
+                inches = said(s, "Status")
+            finally:
+                App.Units.setSchema(schema)
+            self.assertIn(f"(length {float(f'{seam:.6g}') / 25.4:.6g} -> "
+                          f"{float(f'{now:.6g}') / 25.4:.6g} in)", inches)
             self.assertEqual(len([m for m in printed if "earlier version" in m]), 1, printed)
             s.touch()
             self.doc.recompute()

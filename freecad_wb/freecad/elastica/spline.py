@@ -18,7 +18,8 @@ from . import defaults
 from .geometry import (edge_end, el, nearest_parameter, np, part_bspline, plane_coordinates,
                        plane_curvature, to_3d)
 from .links import followed_edge, followed_reader
-from .units import length_mark, length_text, say, tension_text, user_length
+from .units import (coordinate_mark, length_mark, length_text, length_unit_mark, say,
+                    tension_text)
 from .proxy import (FeatureProxy, InputProblem, add_edge_end, add_enum, add_geometry_index,
                     add_length, add_link, add_property, check_degree, check_number,
                     check_tolerance, edge_end_choice, new_feature, read_only, set_said)
@@ -407,13 +408,12 @@ class SplineProxy(FeatureProxy):
         old = obj.Shape.copy() if not obj.Shape.isNull() else None
         changed = seam_changes(old, r.get("seams", []))
         obj.Shape = part_bspline(bs, plc).toShape()
-        if changed:
-            factor, unit = user_length(max(old.Length, obj.Shape.Length))
-            length = (f" (length {old.Length / factor:.6g} -> "
-                      f"{obj.Shape.Length / factor:.6g} {unit})")
+        if changed:                       # marks: in the schema's length unit (units.say)
+            length = (f" (length {coordinate_mark(old.Length, 6)} -> "
+                      f"{coordinate_mark(obj.Shape.Length, 6)} {length_unit_mark()})")
             changed = [w + length for w in changed]
             for w in changed:                 # once: the next recompute finds the new shape
-                App.Console.PrintWarning(f"Elastica {obj.Label}: {w}\n")
+                App.Console.PrintWarning(f"Elastica {obj.Label}: {say(w)}\n")
         obj.SplineLength = sp.length
         obj.SplineTension = sp.tension
         obj.Energy = sp.energy
