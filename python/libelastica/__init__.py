@@ -4,8 +4,9 @@ from ._ffi import DomainError, ElasticaError, LengthRangeError, NotConvergedErro
 from .core import DiscreteElastica, SmoothElastica
 from . import io
 from .cubic import SPARSE_POINTS, cubic_distances, smooth_fits_better
-from .fit import (ConstraintError, ConvergenceWarning, FitResult, KeylineFit, OrderWarning, WanderWarning, far_points, far_points_summary,
-                  fit, fit_keyline, wander_summary)
+from .fit import (ConstraintError, ConvergenceWarning, FitResult, OrderWarning, WanderWarning, far_points,
+                  far_points_summary, fit, wander_summary)
+from .keyline import KeylineFit, fit_keyline
 from .fit_cost import (COST_FLOOR, COST_RATIO, EndConditionWarning, cost_summary, costly,
                        end_condition_cost)
 from .order import ORDER_RATIO, Ordering, curve_order, out_of_order
