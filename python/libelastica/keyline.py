@@ -1,0 +1,273 @@
+"""The keyline pipeline (seed 000 §5): a keyline fitted as one G2 curve of two elasticae
+that start at its inflection with opposite tangents and zero curvature (:func:`fit_keyline`,
+:class:`KeylineFit`); the single-curve fit is :mod:`libelastica.fit`'s."""
+from __future__ import annotations
+
+import warnings
+from dataclasses import dataclass
+from typing import Optional
+
+import numpy as np
+
+from ._ffi import (DomainError, as_int, as_positive, as_real, as_real_array, check, dptr, ffi,
+                   lib)
+from .fit import (_MODE_NAMES, ConvergenceWarning, FitResult, OrderWarning, _make_curve,
+                  quiet_fit)
+from .order import order_summary, out_of_order
+
+@dataclass(frozen=True)
+class KeylineFit:
+    """Result of :func:`fit_keyline`: the prepared keyline (``prepared``, a
+    PreparedKeyline: polygon in x''y'' coordinates, frames), and the keyline as one
+    G2 curve of two elasticae that start at the joint (the inflection) with opposite
+    tangents and zero curvature: ``first`` (joint -> first point) and ``second``
+    (joint -> last point), FitResults in x''y'' coordinates whose ``points`` are the
+    points of that side (from the joint outwards). ``joint``: the joint (x''y'');
+    ``inflection``: the polygon vertex nearest it; ``inflection_estimate``: the
+    RDP-style estimate of the preparation (``prepared.inflection``) the fit started from.
+    """
+    prepared: object
+    inflection: int
+    first: FitResult
+    second: FitResult
+    inflection_estimate: Optional[int] = None
+    joint: Optional[np.ndarray] = None
+    # each input point's distance (in its plane) to the keyline: the polygon of both
+    # discrete halves, or the smooth curve the points themselves were fitted to; the
+    # sides' rms / max_error are the fitted points' (a discrete keyline's: the resampled
+    # polygon's vertices, paired: 0.116 / 0.277 where the file's points lie 0.132 / 0.344)
+    input_distances: Optional[np.ndarray] = None
+    # discrete: where the keyline ends (2, 2), the feet of the input's end points on the
+    # halves continued by their recursion (the polygon stops up to a step short, §5.3)
+    ends: Optional[np.ndarray] = None
+
+    @property
+    def input_rms(self) -> float:
+        return float(np.sqrt(np.mean(self.input_distances ** 2)))
+
+    @property
+    def input_max_error(self) -> float:
+        return float(np.max(self.input_distances))
+
+    def side_points(self, which: str = "second", input_coords: bool = True) -> np.ndarray:
+        """The fitted model points of one side (paired vertices or feet), in the
+        input's coordinates (3D for 3D input) or in x''y''."""
+        r = self.first if which == "first" else self.second
+        pts = r.model_points()
+        return self.prepared.to_input(pts) if input_coords else pts
+
+    def to_bspline(self, tol: float = 1e-6, degree: int = 3):
+        """The keyline as ONE B-spline for CAD (x''y'' coordinates, as its halves), from
+        the first point to the last through the joint: :func:`keyline_bspline` (smooth:
+        within ``tol``, G2 at the joint exactly; discrete: the C2 cubic through both
+        halves' vertices)."""
+        from .bspline import keyline_bspline
+        return keyline_bspline(self.first.curve, self.second.curve, tol, degree, self.ends)
+
+
+def _polyline_distances(points, vertices, chunk_pairs: int = 1 << 21) -> np.ndarray:
+    """Each point's distance to the polyline through vertices (m >= 2), every segment
+    looked at (no order assumed), points taken in chunks of chunk_pairs / (m - 1)."""
+    ax, ay = vertices[:-1, 0], vertices[:-1, 1]
+    dx, dy = np.diff(vertices[:, 0]), np.diff(vertices[:, 1])
+    inv = 1.0 / np.maximum(dx * dx + dy * dy, 1e-300)
+    out = np.empty(len(points))
+    step = max(1, chunk_pairs // len(ax))
+    for i in range(0, len(points), step):     # x and y apart: a third of the temporaries
+        wx = points[i:i + step, 0, None] - ax
+        wy = points[i:i + step, 1, None] - ay
+        u = np.clip((wx * dx + wy * dy) * inv, 0.0, 1.0)
+        wx -= u * dx
+        wy -= u * dy
+        out[i:i + step] = np.sqrt(np.min(wx * wx + wy * wy, axis=1))
+    return out
+
+
+def _keyline_options(model: str, kwargs: dict):
+    fixed = dict(kwargs.pop("fixed", None) or {})
+    max_iter, tol = kwargs.pop("max_iter", None), kwargs.pop("tol", None)
+    if kwargs:
+        raise ValueError(f"fit_keyline: unknown arguments {sorted(kwargs)} (the keyline is one "
+                         "G2 curve: fixed={'h': ...} (discrete), max_iter and tol apply)")
+    o = ffi.new("el_fit_options *")
+    lib.el_fit_options_defaults(o)
+    for name, value in fixed.items():
+        if model != "discrete" or name != "h":
+            raise ValueError(f"fit_keyline: only the discrete h can be fixed (both sides), "
+                             f"got {name!r}: the joint's G2 conditions tie the other parameters")
+        v = as_real(value, "fit_keyline: fixed h")
+        if not v > 0:
+            raise ValueError(f"fit_keyline: fixed h must be > 0, got {value!r}")
+        o.fixed[2] = 1
+        o.value[2] = v
+    if max_iter is not None:
+        o.max_iter = as_int(max_iter, "fit_keyline: max_iter", 1)
+    if tol is not None:
+        o.tol = as_positive(tol, "fit_keyline: tol")
+    return o
+
+
+# A keyline is checked against one elastica through all its points: where that one turns
+# one way and the keyline does not halve its rms (KEYLINE_GAIN), the points show no
+# inflection. Measured on 60 noisy arcs (radius 50, turning 0.3-3 rad, noise 0.05-1 % of the
+# length, both models): the estimate split 112 of the 120 at an inflection of noise, 74
+# within 3 vertices of an end (a ValueError then), 38 fitted, at 0.96 to 74 x the one-piece
+# rms (47.5 for 0.64); on 600 keylines of keyline_data.py (inflection at 15 % to 85 % of the
+# length) the one-piece fit turned one way 50 times, the keyline at most 0.19 x its rms
+# (where it turns both ways, it may fit sparse noisy sides better than the keyline: no
+# verdict). A side left with fewer than MIN_SIDE points (the joint slid to an end) is no
+# keyline either.
+KEYLINE_GAIN = 0.5
+MIN_SIDE = 4
+
+
+def _solve_keyline(model: str, data, split: int, o):
+    """el_fit_keyline_{model} of data split at vertex / point split: (status, the two
+    results, each side's indices into data from the joint outwards, distances, feet)."""
+    n = len(data)
+    dist, foot, sides = np.empty(n), np.empty(n), np.empty(n, dtype=np.intc)
+    res = [ffi.new(f"el_fit_{model}_result *") for _ in range(2)]
+    if model == "discrete":
+        joint = ffi.new("size_t *")
+        st = lib.el_fit_keyline_discrete(dptr(data), n, split, o, res[0], res[1], joint, dptr(dist),
+                                         dptr(foot), ffi.cast("int *", ffi.from_buffer(sides)))
+    else:
+        st = lib.el_fit_keyline_smooth(dptr(data), n, split, o, res[0], res[1], dptr(dist),
+                                       dptr(foot), ffi.cast("int *", ffi.from_buffer(sides)))
+    if st == lib.EL_EDOM:     # el_fit_keyline_*: a side is not inflectional
+        raise DomainError(lib.EL_EDOM, "fit_keyline: a side of the joint fit is not "
+                          "inflectional: the points show no inflection a keyline can split "
+                          "at; fit them as one curve")
+    if st not in (lib.EL_OK, lib.EL_ENOCONV, lib.EL_EMAXITER):
+        check(st, "fit_keyline")
+    if model == "discrete":
+        js = int(joint[0])
+        idx = [np.arange(js, -1, -1), np.arange(js, n)]
+    else:
+        idx = [np.nonzero(sides == c)[0] for c in range(2)]
+        idx = [i[np.argsort(foot[i], kind="stable")] for i in idx]      # from the joint outwards
+    return st, res, idx, dist, foot
+
+
+def _check_keyline_split(polygon, side_points, split: int, keyline_rms: Optional[float] = None) -> None:
+    """DomainError when the keyline's joint slid to an end or its two elasticae do not fit
+    the points twice as well as one elastica turning one way (an inflection of noise). The
+    verdict is the data's, by the discrete model on the prepared polygon: keyline_rms, its
+    discrete keyline's (fitted here from the vertex split when None: the smooth one-piece
+    fit of an S of 1000 points took 37 ms, where the smooth keyline takes 3)."""
+    if min(side_points) < MIN_SIDE:
+        raise DomainError(lib.EL_EDOM, f"fit_keyline: the joint slid to an end ({min(side_points)} of "
+                          f"{sum(side_points)} points on one side): the points show no inflection a "
+                          "keyline can split at; fit them as one curve")
+    polygon = np.ascontiguousarray(polygon)
+    one = quiet_fit(polygon, model="discrete")
+    kappa = one.curve.curvature()
+    if kappa.min() < 0.0 < kappa.max():
+        return
+    if keyline_rms is None:
+        o = ffi.new("el_fit_options *")
+        lib.el_fit_options_defaults(o)
+        _, _, _, dist, _ = _solve_keyline("discrete", polygon, split, o)
+        keyline_rms = float(np.sqrt(np.mean(dist ** 2)))
+    if keyline_rms > KEYLINE_GAIN * one.rms:
+        raise DomainError(lib.EL_EDOM, f"fit_keyline: no inflection the points show: two elasticae "
+                          f"joined at one fit them at rms {keyline_rms:.3g}, one elastica turning one way "
+                          f"at {one.rms:.3g}; fit them as one curve")
+
+
+def fit_keyline(points, r: Optional[float] = None, model: str = "discrete", side: int = 0,
+                **kwargs) -> KeylineFit:
+    """Seed 000 §5 as one problem: plane fit (3D input), equilateral resampling with
+    segment ``r`` (default None: the polyline through the medians of runs of the points,
+    cut into KEYLINE_STEPS segments, prep.keyline_runs / keyline_step: noise-robust),
+    PCA re-normalisation, the
+    inflection estimate, then one G2 curve of two elasticae sharing the joint, its
+    tangent and zero curvature there. The joint starts at the refined inflection
+    estimate (each side fitted alone, the zeros of their curvature) and moves along the
+    data: smooth, the points themselves (in x''y'') are fitted by orthogonal distance,
+    each point on either side; discrete, the polygon's vertex i pairs with vertex i of
+    its side and the split vertex moves while the fit improves; h is free on both sides
+    (§5.4, Table 1) or held with ``fixed={"h": r}``. ``max_iter``, ``tol`` apply.
+    Raises DomainError when the points show no inflection: none found, or one of their
+    noise (the joint within MIN_SIDE points of an end, or two elasticae fitting the
+    polygon less than twice as well as one turning one way: _check_keyline_split)."""
+    from .prep import prepare_keyline
+    if model not in ("discrete", "smooth"):
+        raise ValueError(f"fit_keyline: model must be 'discrete' or 'smooth', got {model!r}")
+    pts = as_real_array(points, "fit_keyline: points")
+    if pts.ndim != 2 or pts.shape[1] not in (2, 3) or len(pts) < 4:
+        raise ValueError("fit_keyline: points must have shape (n, 2) or (n, 3), n >= 4")
+    if not np.all(np.isfinite(pts)):
+        raise ValueError("fit_keyline: points must be finite (no NaN/inf)")
+    unordered = out_of_order(pts)    # resampled along their polyline: a cloud's is no curve's
+    if unordered.order is not None:
+        warnings.warn(f"fit_keyline: {order_summary(unordered)}: resampled in their order; "
+                      "fit points[el.curve_order(points)]", OrderWarning, stacklevel=2)
+    o = _keyline_options(model, dict(kwargs))
+    prep = prepare_keyline(pts, r, side)
+    a, b = prep.sides()                    # DomainError when there is no inflection
+    if len(a) < MIN_SIDE or len(b) < MIN_SIDE:
+        raise DomainError(lib.EL_EDOM, f"fit_keyline: the inflection estimate lies {min(len(a), len(b)) - 1} "
+                          f"segment(s) from an end of the {len(prep.polygon) - 1}: no inflection a keyline "
+                          "can split at (noise near an end of points that turn one way?); fit them as one curve")
+    i0 = int(prep.inflection)
+    if model == "discrete":
+        data = np.ascontiguousarray(prep.polygon)
+        split = i0
+    else:
+        xy = prep.frame.project(pts) if prep.frame is not None else pts[:, :2]
+        data = np.ascontiguousarray(prep.frame2d.to_local(xy))
+        split = int(np.argmin(np.linalg.norm(data - prep.polygon[i0], axis=1)))
+        split = min(max(split, 3), len(data) - 4)
+    n = len(data)
+    if n < 7:
+        raise ValueError("fit_keyline: fewer than 7 points")
+    st, res, idx, dist, foot = _solve_keyline(model, data, split, o)
+    fits = []
+    for c in range(2):
+        sp = data[idx[c]]
+        s = foot[idx[c]].copy() if model == "smooth" else None
+        fits.append(FitResult(
+            curve=_make_curve(model, res[c].params, len(idx[c])),
+            initial=_make_curve(model, res[c].initial, len(idx[c])),
+            rms=float(res[c].rms), max_error=float(res[c].max_error),
+            iterations=int(res[c].iterations), status=int(st), ipopt_status=int(res[c].ipopt_status),
+            candidates=1, s=s, param_mode=_MODE_NAMES.get(int(res[c].param_mode)) if model == "smooth" else None,
+            # per side: + = left of that side's curve, which runs away from the joint
+            distances=dist[idx[c]] * (-1.0 if c == 0 else 1.0), foot_s=foot[idx[c]].copy(),
+            distance="orthogonal" if model == "smooth" else "paired",
+            used_ipopt=bool(res[c].used_ipopt), points=sp))
+    _check_keyline_split(prep.polygon, [len(f.points) for f in fits], i0,
+                         float(np.sqrt(np.mean(dist ** 2))) if model == "discrete" else None)
+    J = np.array([fits[1].curve.x0, fits[1].curve.y0])
+    infl = int(np.argmin(np.linalg.norm(prep.polygon - J, axis=1)))
+    if model == "discrete":
+        xy = prep.frame.project(pts) if prep.frame is not None else pts[:, :2]
+        local = prep.frame2d.to_local(xy)
+        tails, ends = _keyline_tails([f.curve for f in fits], local[[0, -1]])
+        polygon = np.vstack([tails[0][::-1], fits[0].curve.points()[::-1],
+                             fits[1].curve.points()[1:], tails[1]])
+        inputs = _polyline_distances(local, polygon)
+    else:
+        inputs, ends = np.abs(dist), None        # the input points themselves were fitted
+    if st != lib.EL_OK:     # as fit's (QA: both sides at status 6, silently); not before a refusal
+        warnings.warn(f"fit_keyline: not converged: {ffi.string(lib.el_strerror(st)).decode()} "
+                      f"(status {st})", ConvergenceWarning, stacklevel=2)
+    return KeylineFit(prepared=prep, inflection=infl, first=fits[0], second=fits[1],
+                      inflection_estimate=i0, joint=J, input_distances=inputs, ends=ends)
+
+
+def _keyline_tails(halves, end_points):
+    """Each discrete half continued to the foot of the input's end point nearer its far
+    end (DiscreteElastica.continued_to), and those feet (2, 2): the halves fit the
+    resampled polygon, which stops up to a step short of the points (seed 000 §5.3)."""
+    tails, ends = [], []
+    for c in halves:
+        far = c.points()[-1]
+        e = end_points[int(np.argmin(np.linalg.norm(end_points - far, axis=1)))]
+        tails.append(c.continued_to(e))
+        ends.append(tails[-1][-1] if len(tails[-1]) else far)
+    return tails, np.array(ends)
+
+
+__all__ = ["KeylineFit", "fit_keyline"]
