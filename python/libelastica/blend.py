@@ -29,7 +29,7 @@ import numpy as np
 
 from ._ffi import (DomainError, SingularError, as_points, as_positive, as_real, as_vector,
                    bspline_from_c, check, dptr, ffi, lib, require)
-from .shape import self_crossings
+from .shape import crossing_pairs, self_crossings
 from .spline import LoopWarning
 
 __all__ = ["EllipticBlend", "MQBlend", "BlendCurve", "blend_curve", "eck_d", "eck_omega",
@@ -44,6 +44,8 @@ __all__ = ["EllipticBlend", "MQBlend", "BlendCurve", "blend_curve", "eck_d", "ec
 SPREAD_MAX = 20.0
 #: Samples per segment of the polyline tested for self-crossings (:meth:`BlendCurve.loops`).
 LOOP_SAMPLES = 101
+#: Loops a warning names by place (the widest); it says how many more there are.
+LOOPS_NAMED = 3
 
 
 class ConditionWarning(RuntimeWarning):
@@ -428,6 +430,71 @@ class BlendCurve:
         xy = self.points(np.linspace(0.0, self.nseg, (LOOP_SAMPLES - 1) * self.nseg + 1))
         return max(0, self_crossings(xy) - self_crossings(poly))
 
+    def loop_places(self) -> list:
+        """Where the curve loops, widest first: one dict per pair of points between which
+        the curve (its polyline of LOOP_SAMPLES points per segment) crosses itself where no
+        crossing of the points' polygon (matched by its segments) accounts for it, with
+        ``between`` [i, j] the points (as given, counted from 0) the loop lies between,
+        ``width`` the loop's largest width, ``chord`` the distance from point i to point j
+        and ``beside`` the chords before i and after j (None at an open end). Empty without
+        points it interpolates. Noisy points whose polygon crosses itself may give more
+        places than :meth:`loops` counts."""
+        if self.through is None:
+            return []
+        pts, ns = self.through, LOOP_SAMPLES - 1
+        n, npoly = len(pts), len(self.through) - (0 if self.closed else 1)
+        xy = self.points(np.linspace(0.0, self.nseg, ns * self.nseg + 1))
+        if self.nseg == npoly:     # a composite: node i at t = i
+            at = np.arange(npoly + 1) * ns
+        else:                      # one segment through 4 points: their nearest samples
+            d = np.hypot(*(xy[None] - pts[:, None]).transpose(2, 0, 1))
+            at = np.maximum.accumulate(np.argmin(d, axis=1))
+
+        def seg(sample):           # the polygon's segment (points s, s + 1) of a sample
+            return int(np.clip(np.searchsorted(at, sample, side="right") - 1, 0, npoly - 1))
+
+        poly = np.vstack([pts, pts[:1]]) if self.closed else pts
+        unmatched = {tuple(p) for p in crossing_pairs(poly).tolist()}
+        chord = np.hypot(*np.diff(poly, axis=0).T)
+        out = []
+        for i, j in crossing_pairs(xy).tolist():
+            if (seg(i), seg(j)) in unmatched:      # the polygon crosses itself there too
+                unmatched.discard((seg(i), seg(j)))
+                continue
+            if self.closed and 2 * (j - i) > len(xy):   # the loop through the seam
+                loop, a, b = np.vstack([xy[j + 1:], xy[:i + 1]]), seg(j), (seg(i) + 1) % n
+            else:
+                loop, a, b = xy[i + 1:j + 1], seg(i), seg(j) + 1
+            before = chord[a - 1] if a > 0 else (chord[-1] if self.closed else None)
+            after = chord[b % npoly] if self.closed or b < npoly else None
+            out.append({"between": [a, b % n], "width": _diameter(loop),
+                        "chord": float(np.hypot(*(pts[b % n] - pts[a]))),
+                        "beside": [None if c is None else float(c) for c in (before, after)]})
+        widest = {}                # one place per pair of points: its widest loop
+        for p in sorted(out, key=lambda p: -p["width"]):
+            widest.setdefault(tuple(p["between"]), p)
+        return list(widest.values())
+
+    def _loop_text(self, loops: int) -> str:
+        """The loop warning: how many, the widest LOOPS_NAMED by their points and sizes."""
+        times = "once" if loops == 1 else f"{loops} times"
+        places = self.loop_places()
+        said = []
+        for k, p in enumerate(places[:LOOPS_NAMED]):
+            beside = " and ".join(f"{c:.3g}" for c in p["beside"] if c is not None)
+            said.append(f"between points {p['between'][0]} and {p['between'][1]} ("
+                        + ("counted from 0; " if k == 0 else "")
+                        + f"chord {p['chord']:.3g}" + (f" beside {beside}" if beside else "")
+                        + f", a loop {p['width']:.2g} wide)")
+        more = len(places) - len(said)
+        where = (", ".join(said[:-1]) + " and " + said[-1] if len(said) > 1 else
+                 "".join(said)) + (f", and {more} more" if more > 0 else "")
+        if not where:
+            where = ("between two points much closer together than their neighbours, or where "
+                     "it swings wide")
+        return (f"the curve loops: it crosses itself {times} where the polygon of its points "
+                f"does not; it loops {where}; points spaced more evenly there give a fair curve")
+
     def _interpolation_warnings(self) -> list:
         """(category, text) of an ill-conditioned interpolation and of loops."""
         out = []
@@ -441,12 +508,7 @@ class BlendCurve:
                         "points give a tamer curve"))
         loops = self.loops()
         if loops:
-            times = "once" if loops == 1 else f"{loops} times"
-            out.append((BlendLoopWarning,
-                        f"the curve loops: it crosses itself {times} where the polygon of its "
-                        "points does not (between two points much closer together than their "
-                        "neighbours, or where it swings wide); points spaced more evenly give "
-                        "a fair curve"))
+            out.append((BlendLoopWarning, self._loop_text(loops)))
         return out
 
     def warnings(self) -> list:
@@ -475,8 +537,9 @@ def blend_curve(points, k: Optional[float] = None, d: float = 2.0, mode: str = "
     """An elliptic blending curve from picked points (the CLI / FreeCAD entry point).
 
     Four points: ``mode="interpolate"`` (default) gives the segment through them at
-    chord-length parameters, ``mode="control"`` uses them as control points. More
-    than four points with ``mode="interpolate"``: the C1 composite through them
+    chord-length parameters, ``mode="control"`` uses them as control points. Three, or
+    more than four, points with ``mode="interpolate"``: the C1 composite through them
+    (3 points: 2 segments; fewer than 3 raise ValueError)
     (:meth:`EllipticBlend.composite_through`); with ``mode="control"`` they must be
     3*nseg + 1 control points. ``k`` is the modulus (default 0.5) or ``m = k^2``.
     ``closed=True`` (interpolate): the closed C1 composite through the points (>= 3
@@ -486,7 +549,8 @@ def blend_curve(points, k: Optional[float] = None, d: float = 2.0, mode: str = "
 
     Through the points, warns :class:`ConditionWarning` when the control points spread
     more than :data:`SPREAD_MAX` times as far as the points, and :class:`BlendLoopWarning`
-    when the curve crosses itself where the points' polygon does not; both are in
+    when the curve crosses itself where the points' polygon does not (naming the points
+    each loop lies between and its width: :meth:`BlendCurve.loop_places`); both are in
     :meth:`BlendCurve.warnings` too.
     """
     if k is None and m is None:
@@ -495,6 +559,8 @@ def blend_curve(points, k: Optional[float] = None, d: float = 2.0, mode: str = "
     pts = as_points(points, "points")
     if not isinstance(mode, str) or mode not in _PICK:
         raise ValueError(f"mode must be one of {sorted(_PICK)}, got {mode!r}")
+    if mode == "interpolate" and len(pts) < 3:
+        raise ValueError(f"blend_curve: at least 3 points to pass through, got {len(pts)}")
     if closed:
         if mode != "interpolate":
             raise ValueError("blend_curve: closed=True passes through the points (mode "

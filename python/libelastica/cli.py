@@ -350,10 +350,11 @@ def cmd_blend(args) -> int:
     import libelastica as el
     from .report import curves_picture, polygon_curvature, save_picture
     v = [_finite(x, "blend coordinates") for x in args.values]
-    fewest = 3 if args.closed else 4
+    fewest = 4 if args.mode == "control" else 3     # as el.blend_curve takes them
     if len(v) % 2 or len(v) < 2 * fewest:
         raise InputError(f"the points come as x y pairs, at least {fewest} of them"
-                         f"{' with --closed' if args.closed else ''}: got {len(v)} numbers")
+                         f"{' with --mode control' if args.mode == 'control' else ''}: "
+                         f"got {len(v)} numbers")
     pts = np.array(v, dtype=np.float64).reshape(-1, 2)
     kw = {"m": args.m} if args.m is not None else {"k": args.k if args.k is not None else 0.5}
     with warnings.catch_warnings():   # said below with the basis', in the CLI's words
@@ -366,7 +367,8 @@ def cmd_blend(args) -> int:
            "points": pts, "control_points": curve.q, "basis_min": curve.basis.basis_min,
            "convex_hull": curve.basis.convex_hull, "lebesgue": curve.basis.lebesgue,
            "condition": curve.basis.condition, "closed": curve.closed,
-           "spread": curve.spread(), "loops": curve.loops(), "warnings": curve.warnings()}
+           "spread": curve.spread(), "loops": curve.loops(),
+           "loop_places": curve.loop_places(), "warnings": curve.warnings()}
     for w in rec["warnings"]:
         print(f"{PROG} blend: warning: {w}", file=sys.stderr)
     b = None
@@ -625,13 +627,13 @@ def build_parser() -> argparse.ArgumentParser:
 
     e = sub.add_parser("blend", help="elliptic blending curve through points (seed 003)",
                        description="An elliptic blending curve (basis {1-t, sn((1-t)K), sn(Kt), "
-                                   "t}) through four points or more (a closed one with --closed), or with "
-                                   "them as control points.",
+                                   "t}) through three points or more (a closed one with "
+                                   "--closed), or with them as control points.",
                        epilog=BLEND_EXAMPLES, formatter_class=raw)
     e.add_argument("values", nargs="+", type=float, metavar="V",
-                   help="x0 y0 x1 y1 x2 y2 x3 y3 ...: four points (one segment), more (the C1 "
-                        "composite through them; --mode control: 3 n + 1 control points), or "
-                        "3 and more with --closed")
+                   help="x0 y0 x1 y1 x2 y2 ...: four points (one segment), three or more "
+                        "than four (the C1 composite through them, open or --closed); --mode "
+                        "control: 3 n + 1 control points")
     km = e.add_mutually_exclusive_group()
     km.add_argument("--k", type=_ranged(float, lo=0.0, below=1.0),
                     help="elliptic modulus k in [0, 1) (default 0.5)")

@@ -8,7 +8,7 @@ import math
 
 import numpy as np
 
-__all__ = ["self_crossings", "ShapeDescriptors"]
+__all__ = ["self_crossings", "crossing_pairs", "ShapeDescriptors"]
 
 #: Samples of a curve whose polyline is tested for self-crossings (as FreeCAD's blend
 #: panel always drew and counted them).
@@ -20,9 +20,16 @@ CROSSING_BLOCK = 64
 
 def self_crossings(xy) -> int:
     """Crossings of a polyline with itself (neighbouring segments excluded): the
-    number of loops a user sees. The segments in runs of CROSSING_BLOCK, and only pairs
-    of runs whose bounding boxes overlap tested, so a polyline of many points (a sketch's
-    ducks, a long composite curve) needs O(n) memory and about O(n) time, not O(n^2)."""
+    number of loops a user sees (see :func:`crossing_pairs`)."""
+    return len(crossing_pairs(xy))
+
+
+def crossing_pairs(xy) -> np.ndarray:
+    """Where a polyline crosses itself: (count, 2) segment indices i < j - 1 whose
+    segments xy[i]-xy[i+1] and xy[j]-xy[j+1] cross, sorted by i. The segments in runs of
+    CROSSING_BLOCK, and only pairs of runs whose bounding boxes overlap tested, so a
+    polyline of many points (a sketch's ducks, a long composite curve) needs O(n) memory
+    and about O(n) time, not O(n^2)."""
     xy = np.asarray(xy, dtype=np.float64)
     a, b = xy[:-1], xy[1:]
 
@@ -35,7 +42,7 @@ def self_crossings(xy) -> int:
     hi = np.array([xy[i:i + CROSSING_BLOCK + 1].max(0) for i in starts]).reshape(-1, 2)
     # runs r <= c whose boxes overlap (apart: no segment of one crosses the other's)
     near = ~((lo[:, None] > hi[None]).any(2) | (lo[None] > hi[:, None]).any(2))
-    count = 0
+    found = []
     for r, c in zip(*np.nonzero(np.triu(near))):
         i0, j0 = starts[r], starts[c]
         A, B = a[i0:i0 + CROSSING_BLOCK, None], b[i0:i0 + CROSSING_BLOCK, None]
@@ -44,8 +51,10 @@ def self_crossings(xy) -> int:
         s3, s4 = side(C, D, A), side(C, D, B)
         cross = (s1 * s2 < 0) & (s3 * s4 < 0)
         i, j = np.indices(cross.shape)
-        count += int(np.count_nonzero(cross & (j + j0 > i + i0 + 1)))
-    return count
+        i, j = np.nonzero(cross & (j + j0 > i + i0 + 1))   # the pairs' local indices
+        found.append(np.c_[i + i0, j + j0])
+    out = np.vstack(found) if found else np.empty((0, 2), dtype=np.intp)
+    return out[np.lexsort((out[:, 1], out[:, 0]))].astype(np.intp)
 
 
 def _piece_max_curvature(p) -> float:

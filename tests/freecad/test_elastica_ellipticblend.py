@@ -385,6 +385,8 @@ class EllipticBlendTest(unittest.TestCase):
         self.assertEqual(len(f.Warnings), 2)
         self.assertIn("ill-conditioned", f.Warnings[0])
         self.assertIn("the curve loops", f.Warnings[1])
+        self.assertIn("between points 0 and 3 (counted from 0; chord 100", f.Warnings[1])
+        self.assertEqual(list(f.Warnings), want.warnings())     # where, and the loop's width
         self.assertAlmostEqual(f.Spread / want.spread(), 1.0, places=9)
         self.assertEqual(len(w.said), 2)
 

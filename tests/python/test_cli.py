@@ -343,7 +343,8 @@ def test_svg_without_matplotlib(capsys, monkeypatch, tmp_path):
 def test_blend_takes_more_points_and_closed_ones(capsys):
     """`blend` took exactly four points (nargs=8): the closed blend and the composite through
     five points that el.blend_curve makes were out of the CLI's reach, and ten numbers gave
-    argparse's 'unrecognized arguments: -3 20'."""
+    argparse's 'unrecognized arguments: -3 20'. Three open points, which el.blend_curve
+    takes, were refused; the loop warning now names where the curve loops."""
     pts = np.array([[0, 0], [100, 0], [101, 1], [50, 60], [-3, 20]], float)
     r = cli(capsys, "blend", *pts.ravel(), "--closed", "--json", "-")
     rec = json.loads(r.stdout)
@@ -352,6 +353,7 @@ def test_blend_takes_more_points_and_closed_ones(capsys):
     assert r.returncode == 0 and rec["closed"] is True
     assert np.array_equal(np.asarray(rec["control_points"]), curve.q)
     assert rec["loops"] == curve.loops() == 1 and "loops" in r.stderr    # two close points
+    assert rec["loop_places"][0]["between"] == [1, 2] and "between points 1 and 2" in r.stderr
     r = cli(capsys, "blend", *pts.ravel(), "--json", "-")
     with pytest.warns(el.BlendLoopWarning):
         open_curve = el.blend_curve(pts)
@@ -359,7 +361,10 @@ def test_blend_takes_more_points_and_closed_ones(capsys):
                                                 open_curve.q)
     r = cli(capsys, "blend", *pts[:3].ravel(), "--closed", "--json", "-")
     assert r.returncode == 0 and json.loads(r.stdout)["closed"] is True
-    for args in (pts.ravel()[:9], pts[:3].ravel()):      # odd count; 3 points, open
+    r = cli(capsys, "blend", *pts[:3].ravel(), "--json", "-")    # 3 open points: 2 segments
+    assert r.returncode == 0 and np.array_equal(np.asarray(json.loads(r.stdout)["control_points"]),
+                                                el.blend_curve(pts[:3]).q)
+    for args in (pts.ravel()[:9], pts[:2].ravel()):      # odd count; 2 points
         r = cli(capsys, "blend", *args)
         assert_one_line_error(r)
         assert "x y pairs" in r.stderr and f"got {len(args)} numbers" in r.stderr
