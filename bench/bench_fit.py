@@ -415,6 +415,39 @@ def constrained(quick):
                               "used_ipopt": r.used_ipopt}))
 
 
+def wrong_conditions(quick):
+    """End conditions the data do not share (a designer's wrong value, el.fit's
+    EndConditionWarning): the 2000-point noisy scan of a 4 m elastica (noise 0.5 mm) and
+    every 11th of its points held at 4 x the data's start curvature, and at a start
+    tangent 0.3 rad off; CPU ms (fastest of a few runs, one at 2000 points) of the held
+    fit against the free one, with rms, status and iterations (the deterministic proxy)."""
+    ref = el.SmoothElastica(x0=0, y0=0, phi=0.25, mu=1.2e-6, k=0.6, q=0.3, length=4000.0)
+    rng = np.random.default_rng(1)
+    s = np.sort(rng.uniform(0, 4000, 2000))
+    scan = ref.points(s) + rng.normal(0, 0.5, (2000, 2))
+    k0 = float(ref.curvature(np.array([s[0]]))[0])
+    cases = [("start curvature 4 x the data's", {"start_curvature": 4 * k0 + 1e-3}),
+             ("start tangent 0.3 rad off", {"start_tangent": float(ref.angle(np.array([s[0]]))[0]) + 0.3})]
+    for pts in ((scan[::11],) if quick else (scan[::11], scan)):
+        reps = 1 if len(pts) > 1000 else (2 if quick else 3)
+        for name, con in cases:
+            for model in ("smooth", "discrete"):
+                t_c = t_f = np.inf
+                for _ in range(reps):
+                    with warnings.catch_warnings():     # (a held fit that strays says so)
+                        warnings.simplefilter("ignore")
+                        c0 = time.process_time()
+                        r = el.fit(pts, model=model, constraints=con, check_ends=False)
+                        t_c = min(t_c, time.process_time() - c0)
+                    c0 = time.process_time()
+                    f = el.fit(pts, model=model)
+                    t_f = min(t_f, time.process_time() - c0)
+                print(json.dumps({"bench": "fit_wrong_conditions", "case": name, "model": model, "n": len(pts),
+                                  "cpu_ms": round(1e3 * t_c, 1), "free_cpu_ms": round(1e3 * t_f, 2),
+                                  "rms": round(r.rms, 4), "free_rms": round(f.rms, 4), "status": r.status,
+                                  "iterations": r.iterations}))
+
+
 def discrete_uneven(quick):
     """The discrete model's default on unevenly spaced points (a 175-point scan of spacing
     1:6 with two gaps, noise 0.15; 42 points of two densities with a gap, noise 0.2):
@@ -448,6 +481,7 @@ def main():
     lbfgs_ratio(rows, quick)
     breakdown(rows)
     constrained(quick)
+    wrong_conditions(quick)
     discrete_uneven(quick)
 
 
