@@ -51,7 +51,7 @@ static el_smooth_params member_of(int m, double k, double L, double phi, double 
 /* Whether the polygon of ns samples of p crosses itself (segments not adjacent) */
 static int crosses_itself(const el_smooth_params *p, size_t ns)
 {
-    double *s = malloc(sizeof(double) * ns), *xy = malloc(sizeof(double) * 2 * ns);
+    double *s = calloc(ns, sizeof(double)), *xy = malloc(sizeof(double) * 2 * ns);
     ck_assert(s && xy);
     for (size_t i = 0; i < ns; i++) s[i] = p->length * (double)i / (double)(ns - 1);
     ck_assert_int_eq(el_smooth_eval(p, ns, s, xy, NULL, NULL), EL_OK);

@@ -11,6 +11,16 @@
 #define M_PI 3.14159265358979323846
 #endif
 
+/* Check's ck_assert_msg (and every ck_assert_* built on it) writes a checkpoint at each
+ * assertion that passes, one write(2) each: 15 M of them in make check-c (loops asserting
+ * per point), ~40 % of its CPU time and more under ASan. Here a passing assertion records
+ * nothing; a failing one calls Check's _ck_assert_failed exactly as check.h does (same
+ * file, line, expression, message). Only a crash or a timeout is located less closely: at
+ * the test's start (or its last mark_point()) instead of its last passing assertion. */
+#undef ck_assert_msg
+#define ck_assert_msg(expr, ...) \
+    ((expr) ? (void)0 : _ck_assert_failed(__FILE__, __LINE__, "Assertion '"#expr"' failed" , ## __VA_ARGS__))
+
 /* |a - b| <= tol, with a message naming both values. */
 #define ck_assert_close(a, b, tol) do { \
     double _a = (a), _b = (b), _t = (tol); \
