@@ -43,7 +43,8 @@ define apt-install
 	fi
 endef
 
-.PHONY: all deps lib check check-c check-asan check-install check-python check-freecad check-fuzz \
+.PHONY: all deps lib check check-stages check-c check-asan check-asan-fuzz check-install check-python \
+        check-python-sys check-python-path check-freecad check-fuzz \
         check-tsan fuzz fuzz-deps fuzz-coverage bench hermite-sets length-recovers occt-dev spiro-dev demo gallery install \
         freecad-install clean
 
@@ -127,19 +128,32 @@ check-asan: deps
 	  EXTRA_CFLAGS="-O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
 	  ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=halt_on_error=1 check-c
 
-check-python: lib
+# under FreeCAD's Python and under the python3 first on PATH (when it is another one)
+check-python: check-python-sys check-python-path
+check-python-sys: lib
 	cd tests/python && LIBELASTICA_PATH=$(CURDIR)/$(BUILD)/libelastica.so PYTHONPATH=$(CURDIR)/python \
 	  $(SYSPYTHON) -m pytest -q -p no:cacheprovider .
+check-python-path: lib
 	@if [ "$$(command -v $(PYTHON))" != "$(SYSPYTHON)" ]; then \
 	  cd tests/python && LIBELASTICA_PATH=$(CURDIR)/$(BUILD)/libelastica.so PYTHONPATH=$(CURDIR)/python \
 	  $(PYTHON) -m pytest -q -p no:cacheprovider . ; fi
 
 check-freecad: lib
 	@if [ -d tests/freecad ] && ls tests/freecad/test_*.py >/dev/null 2>&1; then \
-	  $(MAKE) --no-print-directory -f tests/freecad/freecad.mk BUILD=$(BUILD); fi
+	  $(MAKE) --no-print-directory -j1 -f tests/freecad/freecad.mk BUILD=$(BUILD); fi
 
-check: all check-c check-asan check-fuzz check-tsan check-install check-python check-freecad
+# The stages are independent once the library is built: make check runs them CHECK_JOBS (the
+# cores) at a time, each stage's output printed whole when it ends (-Otarget). The fuzz
+# driver links build/asan's library, so check-fuzz follows check-asan rather than build it
+# beside it; FreeCAD's tests (one HOME) run one after another (-j1 above).
+CHECK_JOBS ?= $(shell nproc 2>/dev/null || echo 2)
+check: deps
+	@$(MAKE) --no-print-directory -j$(CHECK_JOBS) -Otarget check-stages
 	@echo "make check: all tests passed"
+
+check-stages: lib check-c check-asan-fuzz check-tsan check-install check-python check-freecad
+check-asan-fuzz: check-asan lib
+	@$(MAKE) --no-print-directory check-fuzz
 
 # ------------------------------------------------------------------ fuzzing, ThreadSanitizer
 
