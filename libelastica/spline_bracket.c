@@ -164,6 +164,37 @@ int el__spline_length_by_tension(el__spchain *w, int max_steps, double Lt)
         }
         sigma = up == 1 ? 2.0 * sigma : 0.5 * sigma;
     }
+    /* up without a bracket: a rung solved from scratch can land on another family (QA14's
+     * 14 sketched clicks: 40 -> 13.0716, 80 -> 14.3157, longer, 160 none), so again from the
+     * taut batten, each rung by continuation in sigma from the last (its family) */
+    if (up == 1 && !have[1]) {
+        const double STEP = 1.189207115002721;   /* 2^(1/4) */
+        const int r0 = tension_at(w, max_steps, EL__SP_HIGH_SIGMA);
+        if (r0 < 0) { free(buf); return EL_ENOMEM; }
+        if (r0 && total_length(w) >= Lt) {   /* the bracket's long end on this family */
+            el__snap_save(w, &end[0]);
+            len[0] = total_length(w);
+        }
+        for (sigma = EL__SP_HIGH_SIGMA; r0 && len[0] == total_length(w) && sigma < top;) {
+            const double par[2] = {sigma, STEP * sigma};
+            const int sc = el__spline_continuation(w, w->snap, max_steps, 1.0, set_sigma, par,
+                                                   1e-3 * EL__SP_NEAR, EL__SP_NEAR);
+            if (sc == EL_ENOMEM) { free(buf); return EL_ENOMEM; }
+            if (sc) break;
+            sigma = par[1];
+            w->lmode = 0;
+            w->near = 0;
+            if (!isfinite(el__chain_eval(w, 1))) break;
+            const double L = total_length(w);
+            const int side = L >= Lt ? 0 : 1;
+            met[0] = fmin(met[0], L);
+            if (side == 0 && L > len[0]) break;   /* not shorter: not the family's way */
+            el__snap_save(w, &end[side]);
+            len[side] = L;
+            have[side] = 1;
+            if (side) break;
+        }
+    }
     /* the ways from the rungs (from_state) until one reaches a spline that does not cross
      * itself; else the first that crosses itself, else the first near one */
     int st = EL_ENOCONV, best = 0;
