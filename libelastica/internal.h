@@ -334,8 +334,9 @@ int el__spline_solve_length(el__spchain *w, int max_steps, double Lt);
 int el__spline_free_batten(el__spchain *w, int max_steps);
 int el__spline_length_from(el__spchain *w, int max_steps, double Lt);
 /* spline_bracket.c: length mode from the tension solutions (tension mode's, at a ladder of
- * tensions) that bracket the length Lt, where the paths above failed. */
-int el__spline_length_by_tension(el__spchain *w, int max_steps, double Lt);
+ * tensions) that bracket the length Lt, where the paths above failed; least: of the near
+ * splines reached, the one of least residual (else the first). */
+int el__spline_length_by_tension(el__spchain *w, int max_steps, double Lt, int least);
 /* From the tension solution in w to the one at sigma (internal units), by continuation
  * in sigma, to w->tol. */
 int el__spline_tension_from(el__spchain *w, int max_steps, double sigma);

@@ -120,7 +120,7 @@ static int rank(el__spchain *w, int st)
     return c < 0 ? -1 : 3 - c;
 }
 
-int el__spline_length_by_tension(el__spchain *w, int max_steps, double Lt)
+int el__spline_length_by_tension(el__spchain *w, int max_steps, double Lt, int least)
 {
     if (!(Lt > 0.0)) return EL_ENOCONV;
     const size_t n = w->n, m = w->m, ns = n + 2 * EL__NV * m;
@@ -198,6 +198,7 @@ int el__spline_length_by_tension(el__spchain *w, int max_steps, double Lt)
     /* the ways from the rungs (from_state) until one reaches a spline that does not cross
      * itself; else the first that crosses itself, else the first near one */
     int st = EL_ENOCONV, best = 0;
+    double kept_resid = HUGE_VAL;
     if (have[0] && have[1]) {
         const int first = fabs(len[0] - Lt) <= fabs(len[1] - Lt) ? 0 : 1;   /* the nearer in length */
         for (int k = 0; k < 4 && best < 3; k++) {
@@ -206,7 +207,11 @@ int el__spline_length_by_tension(el__spchain *w, int max_steps, double Lt)
             st = from_state(w, max_steps, Lt, end[1 - e].sigma, len[1 - e], k >= 2);
             const int r = rank(w, st);
             if (r < 0) { st = EL_ENOMEM; break; }
-            if (r > best) { el__snap_save(w, &kept); best = r; }
+            if (r > best || (least && r == 1 && best == 1 && w->resid < kept_resid)) {
+                el__snap_save(w, &kept);
+                best = r;
+                kept_resid = w->resid;
+            }
         }
         if (st != EL_ENOMEM && best > 0) {
             el__snap_load(w, &kept);

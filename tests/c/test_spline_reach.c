@@ -155,6 +155,38 @@ START_TEST(length_mode_reaches_the_lengths_of_tension_mode)
 }
 END_TEST
 
+/* QA14's t10 sheer (11 ducks near a parabola, trial 13) at sigma h^2 300: tension mode's
+ * spline is accepted within its resolution (1.04e-9 at tol 1e-10); by its length the
+ * bracket kept the first near spline reached (1.1e-7, tension 2.093), refused: now the
+ * one of least residual, the same spline */
+static const double sheer11[] = {
+    0.0059601927122216744, 0.89528330050807747, 11.873368879273762, 0.05301503539094142,
+    12.963401402077901, 0.029719266170520307, 13.747880900795289, 0.027293166633681403,
+    14.107167855382293, 0.025335729151174973, 14.857339456439643, 0.042465596151814111,
+    18.02667326142161, 0.095491601262073358, 19.618661659577143, 0.16477833967726552,
+    21.985243089798658, 0.29589228743172724, 22.791543795204891, 0.35729583961134848,
+    30.014058874357215, 1.1574038780693228
+};
+
+START_TEST(length_mode_keeps_the_nearest_of_the_bracket)
+{
+    double h = 0.0;
+    for (size_t j = 0; j + 1 < 11; j++)
+        h = fmax(h, hypot(sheer11[2 * j + 2] - sheer11[2 * j], sheer11[2 * j + 3] - sheer11[2 * j + 1]));
+    el_spline_options o = opts(EL_SPLINE_TENSION, 300.0 / (h * h));
+    el_spline_result t, l;
+    ck_assert_int_eq(solve(sheer11, 11, &o, &t), EL_OK);
+    el_spline_options ol = opts(EL_SPLINE_LENGTH, t.length);
+    ck_assert_int_eq(solve(sheer11, 11, &ol, &l), EL_OK);
+    ck_assert_msg(l.residual <= fmax(ol.tol, fmin(l.resolution, 1e-7)), "residual %g", l.residual);
+    ck_assert_msg(fabs(l.length - t.length) <= 1e-9 * t.length, "length %.12g", l.length);
+    ck_assert_msg(fabs(l.sigma - t.sigma) <= 1e-6 * t.sigma, "tension %.9g of %.9g", l.sigma, t.sigma);
+    ck_assert_int_eq(l.loops, 0);
+    el_spline_result_free(&t);
+    el_spline_result_free(&l);
+}
+END_TEST
+
 /* A length beyond every spline the solve met: EL_ERANGE, with the least and greatest
  * lengths met (reach[0..1]) around the free batten's and the longest without a crossing
  * (reach[2]); the star at 6 x its polygon (it met 1.118 .. 5.49 x, fair up to 2.16 x),
@@ -242,6 +274,7 @@ int main(void)
     tcase_add_test(tc, star_by_length_passes_the_fold);
     tcase_add_test(tc, ring_by_length_keeps_its_first_mode);
     tcase_add_test(tc, length_mode_reaches_the_lengths_of_tension_mode);
+    tcase_add_test(tc, length_mode_keeps_the_nearest_of_the_bracket);
     tcase_add_test(tc, length_beyond_reach_says_how_far);
     tcase_add_test(tc, length_beyond_the_tension_splines_met);
     tcase_add_test(tc, closed_bays_by_length_from_the_taut_start);
