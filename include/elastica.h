@@ -1120,6 +1120,10 @@ typedef struct el_spline_result {
     double resolution;     /* the residual double precision allows this spline's pieces near
                               the separatrix (Accuracy, el_spline_solve), where that exceeds
                               tol: the largest piece's bound; 0: none past tol */
+    double ladder[2];      /* length mode: the least and greatest tension (1/units^2) of
+                              tension mode's splines reached looking for two that bracket
+                              the length (spline_bracket.c); 0 where it did not run or
+                              reached none. Set where reach is */
 } el_spline_result;
 
 /* Defaults: tension mode, sigma 0, open, natural ends, tol 1e-10, max_iter 60, max_steps 60. */
@@ -1156,8 +1160,10 @@ void el_spline_options_defaults(el_spline_options *opt);
  * length as above, the one that does not cross itself kept (spline_bracket.c: QA13's
  * 8-point walk, without a free batten, reached no length 1.03 .. 15 x its polygon; now
  * every one that its tensions sigma h^2 = 0.01 .. 200 give, at those tensions).
- * A length beyond every spline met following the family is EL_ERANGE, res->reach
- * giving the lengths met and the longest without a crossing. Work is bounded: at most
+ * A length not reached where splines were met following the family is EL_ERANGE, res->reach
+ * giving the lengths met and the longest without a crossing, res->ladder the tensions
+ * of tension mode's splines met looking for a bracket (a length within the lengths met
+ * too: QA14's sketch at sigma h^2 450 said EL_ENOCONV, "no spline reached"). Work is bounded: at most
  * max_steps continuation steps (4 x in LONG_PATH, below) of at most
  * max_iter Newton iterations (20 for a first attempt, 12 for a step), each with
  * at most 12 step halvings (4 in a continuation step), each O(n); 100 points
@@ -1289,8 +1295,9 @@ void el_spline_options_defaults(el_spline_options *opt);
  * fails el_smooth_check or starts off its point by more than 1e-6 of its chord), EL_EDOM (length mode with length < the polygon's length;
  * tension 0 when no free-sliding batten is found: continuation from a high
  * tension cannot reach sigma = 0, the family folds back, the batten slides off
- * its ducks), EL_ERANGE (length mode: a length outside res->reach[0..1], the lengths
- * met following the family; res otherwise empty), EL_ENOCONV (Newton and continuation did not reach tol; with G2
+ * its ducks), EL_ERANGE (length mode: no spline of the length reached where splines of
+ * res->reach[0..1] were met following the family, mostly a length outside them;
+ * res otherwise empty), EL_ENOCONV (Newton and continuation did not reach tol; with G2
  * ends also when the continuation in the end curvatures stops), EL_ENOMEM,
  * EL_EINTERNAL.
  */

@@ -295,6 +295,8 @@ typedef struct el__spchain {
     double reach[3];         /* length mode: the least and the greatest length of the solutions
                                 el__spline_follow_family met, the greatest of those that do not
                                 cross themselves (0: none met) */
+    double ladder[2];        /* spline_bracket.c: the least and greatest sigma of tension
+                                mode's splines its ladder reached (0: none) */
     double resid;            /* max residual of the last evaluation */
     int iterations, max_iter;
     double tol, aim;         /* accepted and aimed-at residual */

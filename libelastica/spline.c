@@ -456,6 +456,7 @@ static int reach_of(const el__spchain *w, const el__spchain *g, double S, el_spl
 {
     const el__spchain *c = g->reach[1] > w->reach[1] ? g : w;
     for (int i = 0; i < 3; i++) res->reach[i] = c->reach[i] * S;
+    for (int i = 0; i < 2; i++) res->ladder[i] = w->ladder[i] / (S * S);
     return c->reach[1] > 0.0;
 }
 
@@ -624,9 +625,7 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
     /* no solution found: for sigma = 0 the free-sliding batten slides off its ducks; a
      * length beyond those met following the family (REACH) */
     st = !lmode && opt->sigma == 0.0 && !sibling ? EL_EDOM : EL_ENOCONV;
-    if (lmode && reach_of(&w, &g, S, res) &&
-        (opt->length < res->reach[0] * (1.0 - 1e-9) || opt->length > res->reach[1] * (1.0 + 1e-9)))
-        st = EL_ERANGE;
+    if (lmode && reach_of(&w, &g, S, res)) st = EL_ERANGE;   /* within reach too (QA14) */
 done:
     el_hermite_result_free(&hermite);
     el__chain_free(&w);

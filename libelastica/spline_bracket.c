@@ -50,6 +50,13 @@ static int tension_at(el__spchain *w, int max_steps, double sigma)
     return ok && isfinite(el__chain_eval(w, 1));
 }
 
+/* a rung at sigma reached: into w->ladder */
+static void note_rung(el__spchain *w, double sigma)
+{
+    w->ladder[0] = w->ladder[0] > 0.0 ? fmin(w->ladder[0], sigma) : sigma;
+    w->ladder[1] = fmax(w->ladder[1], sigma);
+}
+
 /* sigma(t) geometrically from par[0] (t = 0) to par[1] */
 static void set_sigma(el__spchain *w, double t, const double *par)
 {
@@ -145,6 +152,7 @@ int el__spline_length_by_tension(el__spchain *w, int max_steps, double Lt, int l
         if (r < 0) { free(buf); return EL_ENOMEM; }
         if (r) {
             const double L = total_length(w);
+            note_rung(w, sigma);
             const int side = L >= Lt ? 0 : 1;
             met[0] = fmin(met[0], L);
             met[1] = fmax(met[1], L);
@@ -171,6 +179,7 @@ int el__spline_length_by_tension(el__spchain *w, int max_steps, double Lt, int l
         const double STEP = 1.189207115002721;   /* 2^(1/4) */
         const int r0 = tension_at(w, max_steps, EL__SP_HIGH_SIGMA);
         if (r0 < 0) { free(buf); return EL_ENOMEM; }
+        if (r0) note_rung(w, EL__SP_HIGH_SIGMA);
         if (r0 && total_length(w) >= Lt) {   /* the bracket's long end on this family */
             el__snap_save(w, &end[0]);
             len[0] = total_length(w);
@@ -182,6 +191,7 @@ int el__spline_length_by_tension(el__spchain *w, int max_steps, double Lt, int l
             if (sc == EL_ENOMEM) { free(buf); return EL_ENOMEM; }
             if (sc) break;
             sigma = par[1];
+            note_rung(w, sigma);
             w->lmode = 0;
             w->near = 0;
             if (!isfinite(el__chain_eval(w, 1))) break;

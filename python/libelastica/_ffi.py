@@ -71,7 +71,7 @@ class NotConvergedError(ElasticaError):
 
 
 class LengthRangeError(NotConvergedError):
-    """A length beyond the splines the solve reached (EL_ERANGE): ``shortest``, ``longest``
+    """A length the solve did not reach, mostly beyond the splines it met (EL_ERANGE): ``shortest``, ``longest``
     (the least and greatest lengths met on the one family of splines the solver followed:
     the range it met, not a bound on the splines through the points; others, e.g. tension
     mode's, may be shorter or longer), ``longest_fair`` (the longest of them that does not

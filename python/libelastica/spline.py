@@ -170,6 +170,14 @@ def _out_of_range(pts, chords) -> str:
             "coordinates up to 1e100, chords from 1e-100 to 1e100); rescale the points")
 
 
+def _digits_apart(x, *others):
+    """Significant digits (4 .. 12) that write x apart from each of others that differs."""
+    for d in range(4, 13):
+        if all(f"{x:.{d}g}" != f"{y:.{d}g}" for y in others if y != x):
+            return d
+    return 12
+
+
 def elastic_spline(points, tension: Optional[float] = None, length: Optional[float] = None,
                    start=None, end=None, closed: bool = False, *, tol: float = 1e-10,
                    max_iter: int = 60, max_steps: int = 60, initial=None) -> ElasticSpline:
@@ -202,12 +210,15 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
     :class:`DomainError` when no such spline exists (a length not longer than
     the polygon; tension 0 when the free batten would slide off its ducks) and
     :class:`NotConvergedError` when the solver stops short of ``tol`` (its
-    ``spline`` attribute holds the spline reached, if any: an arc of a circle, or a
-    tension x (longest span)^2 of ~150..500, resolve only to ~1e-10..1e-7, a larger
-    ``tol`` accepts them; beyond ~300 .. 500 mostly no spline is reached, ``spline`` is
-    None, and the message names that dimensionless tension); by length, :class:`LengthRangeError`
-    (a NotConvergedError) where the length lies beyond every spline met following the
-    family of splines through the points, its message and ``shortest``, ``longest``,
+    ``spline`` attribute holds the spline reached, if any: an arc of a circle, or
+    pieces nearly straight under tension, resolve only to ~1e-10..1e-7; the message names
+    the dimensionless tension x (longest span)^2: on 24 random sketches, sheers and ovals
+    (QA14) all solve up to 100, 22 at 200, 19 at 300 (to ~1e-9), 5 at 450, and tol 1e-7
+    instead of 1e-10 solves no more of them at 450 (the rest reach nothing, or stay at
+    ~2e-7 .. 6e-7 on nearly straight runs)); by length, :class:`LengthRangeError`
+    (a NotConvergedError) where no spline of the length was reached though splines were
+    met following the family of splines through the points (mostly a length beyond
+    them), its message and ``shortest``, ``longest``,
     ``longest_fair`` (without loops) and ``polygon`` saying how far that one family reached
     (the range it met, not a bound: other splines may be shorter or longer; tension mode
     reaches others, and a spline's ``pieces`` as ``initial`` start length mode on their
@@ -296,24 +307,34 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
                                   "or a length")
         if st == lib.EL_ERANGE:
             lo, hi, fair = (float(res.reach[i]) for i in range(3))
+            within = lo <= L <= hi
             side = "longest" if L > hi else "shortest"
             # reach is what the one family the solver followed met (elastica.h), not a
             # bound on the splines through the points (QA13's 8-point walk met one spline,
             # 11.28 x, while tension mode gives fair ones of 1.03 .. 1.8 x: now reached from
-            # tension mode's splines, spline_bracket.c)
+            # tension mode's splines, spline_bracket.c); the ratios to as many digits as
+            # tell L from the nearest length met (QA14: "1.004 x" for both)
+            d = _digits_apart(L / polygon, lo / polygon, hi / polygon)
+            lad = [float(res.ladder[i]) for i in range(2)]
+            span2 = float(chords.max()) ** 2
+            ladder = (f"the solver also started from tension mode's splines, reached at "
+                      f"tension {lad[0]:.3g} .. {lad[1]:.3g} (x (longest span)^2 "
+                      f"{lad[0] * span2:.3g} .. {lad[1] * span2:.3g}), none of them brought to "
+                      "this length" if lad[1] > 0.0 else
+                      "tension mode's splines the solver also tried did not bracket this length")
             err = LengthRangeError(st, (
-                f"elastic_spline: no spline of length {L:.6g} ({L / polygon:.4g} x the polygon, "
-                f"{polygon:.6g}) was reached: the family of splines the solver followed "
-                f"(continuation in the tension) met lengths {lo / polygon:.4g} .. "
-                f"{hi / polygon:.4g} x the polygon ({lo:.6g} .. {hi:.6g})" + (
-                    f", without loops up to {fair / polygon:.4g} x ({fair:.6g})" if fair > 0.0
-                    else ", every one with loops")
-                + f"; the {side} it met is not a bound: other splines through these points may "
-                "exist (the solver also started from tension mode's splines at tension x "
-                "(mean chord)^2 6e-4 .. 2560, none of them around this length); tension mode "
+                f"elastic_spline: no spline of length {L:.{d + 2}g} ({L / polygon:.{d}g} x the "
+                f"polygon, {polygon:.6g}) was reached: the family of splines the solver followed "
+                f"(continuation in the tension) met lengths {lo / polygon:.{d}g} .. "
+                f"{hi / polygon:.{d}g} x the polygon ({lo:.{d + 2}g} .. {hi:.{d + 2}g})" + (
+                    f", without loops up to {fair / polygon:.{d}g} x ({fair:.{d + 2}g})"
+                    if fair > 0.0 else ", every one with loops")
+                + (" around it, yet not this one" if within else
+                   f"; the {side} it met is not a bound") +
+                f": other splines through these points may exist ({ladder}); tension mode "
                 "reaches others (a larger tension gives a shorter "
-                "spline; the solver resolves tension x (longest span)^2 up to ~300 .. 500, "
-                "elastica.h: Accuracy), and its pieces as initial= start length mode on "
+                "spline; by tension x (longest span)^2 it solves all of 24 random sketches up "
+                "to 100, 19 at 300, 5 at 450, elastica.h: Accuracy), and its pieces as initial= start length mode on "
                 "their family"))
             err.shortest, err.longest, err.longest_fair, err.polygon = lo, hi, fair, polygon
             err.spline = None
@@ -324,9 +345,10 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
                 # the solver's reach is in the dimensionless tension (elastica.h: Accuracy)
                 sh2 = sigma * float(chords.max()) ** 2
                 if sh2 > 50.0:
-                    why = (f"; tension x (longest span)^2 = {sh2:.3g}: the solver resolves it "
-                           "to ~1e-10 up to ~200, ~1e-9 at ~300, ~3e-8 at ~500 (a larger tol "
-                           "accepts that), mostly nothing beyond; tension is in 1/units^2 of the "
+                    why = (f"; tension x (longest span)^2 = {sh2:.3g}: of 24 random sketches, "
+                           "sheers and ovals the solver solves all up to 100, 22 at 200, 19 at "
+                           "300 (to ~1e-9), 5 at 450, whether tol is 1e-10 or 1e-7 (nearly "
+                           "straight runs stay at ~2e-7 .. 6e-7); tension is in 1/units^2 of the "
                            "points (in mm, "
                            "1e-6 x the same tension in m)")
             if res.npieces and res.resolution > 0.0:

@@ -626,6 +626,19 @@ def test_length_beyond_reach_names_the_range(tmp_path):
     with pytest.raises(el.LengthRangeError, match=r"the shortest it met is not a bound: other splines "
                        r".*tension mode reaches others"):
         el.elastic_spline(sq, length=1.02 * p4, closed=True)
+    # QA14: the tensions named are those of tension mode's splines the solver reached
+    # (before: "6e-4 .. 2560", the ladder's ends, as if all solved)
+    with pytest.raises(el.LengthRangeError, match=r"tension mode's splines, reached at tension "
+                       r"[0-9.e+]+ \.\. [0-9.e+]+ \(x \(longest span\)\^2 40 \.\. 320\)"):
+        el.elastic_spline(sq, length=1.025 * p4, closed=True)
+
+
+def test_length_range_ratios_tell_the_lengths_apart():
+    """QA14: the asked length and the shortest met both printed "1.004 x the polygon";
+    the ratios get the digits that tell them apart."""
+    from libelastica.spline import _digits_apart
+    assert _digits_apart(239.588 / 238.552, 239.615 / 238.552, 241.859 / 238.552) == 5
+    assert _digits_apart(1.02, 1.035, 1.139) == 4
 
 
 def test_walk_by_length_reaches_the_lengths_of_tension_mode():
