@@ -26,6 +26,7 @@ import numpy as np
 from ._ffi import (DomainError, NotConvergedError, as_int, as_points, as_real,
                    as_real_array, check, dptr, ffi, lib, warn_if_degrees)
 from .core import DISCRETE_PARAMS, SMOOTH_PARAMS, DiscreteElastica, SmoothElastica
+from ._text import LengthFormat, lengths
 from .fit_cost import EndConditionWarning, checked_ends
 from .order import curve_order, order_summary, ordering
 
@@ -194,12 +195,14 @@ def far_points(distances, points, factor: float = OUTLIER_FACTOR,
     return np.sort(order[:steps[-1] + 1]) if len(steps) else np.empty(0, dtype=np.intp)
 
 
-def far_points_summary(distances, far, unit: str = "", free_distances=None) -> str:
+def far_points_summary(distances, far, unit: str = "", free_distances=None,
+                       length: Optional[LengthFormat] = None) -> str:
     """What a warning of far points says (the CLI's and FreeCAD's): how many of the points
     lie how far from the curve and how near the others are, "3 of 60 points lie 9.05 to 16
-    from the curve, the others within 1.69" (``unit`` after the distances, e.g. " mm");
-    far: their indices (:func:`far_points`), at least one. ``free_distances`` (a constrained
-    fit's, as far_points took them): the figures are from the fit with free ends, where the
+    from the curve, the others within 1.69" (``unit`` after the distances, e.g. " mm", or
+    ``length(value, digits)`` writing each: cost_summary's); far: their indices
+    (:func:`far_points`), at least one. ``free_distances`` (a constrained fit's, as
+    far_points took them): the figures are from the fit with free ends, where the
     far points stand apart (from the constrained curve a glitch 6 off lay 2.34, "the others
     within 2.56": the constraint's cost)."""
     where = "from the curve"
@@ -209,10 +212,10 @@ def far_points_summary(distances, far, unit: str = "", free_distances=None) -> s
     far = np.asarray(far, dtype=np.intp)
     if d.ndim != 1 or far.ndim != 1 or not len(far) or len(far) >= len(d):
         raise ValueError("far_points_summary: distances (n,) and 1 to n - 1 indices of far points are needed")
-    rest = np.delete(d, far)
-    lie = (f"lies {d[far][0]:.3g}{unit}" if len(far) == 1 else
-           f"lie {d[far].min():.3g} to {d[far].max():.3g}{unit}")
-    return f"{len(far)} of {len(d)} points {lie} {where}, the others within {rest.max():.3g}{unit}"
+    rest, fmt = np.delete(d, far), lengths(unit, length)
+    lie = (f"lies {fmt(d[far][0], 3)}" if len(far) == 1 else
+           f"lie {fmt(d[far].min(), 3, False)} to {fmt(d[far].max(), 3)}")
+    return f"{len(far)} of {len(d)} points {lie} {where}, the others within {fmt(rest.max(), 3)}"
 
 
 class ConvergenceWarning(RuntimeWarning):
@@ -233,13 +236,14 @@ class OrderWarning(WanderWarning):
     fits them in curve order."""
 
 
-def wander_summary(gap: int, points=None, unit: str = "", numbered: bool = True) -> str:
+def wander_summary(gap: int, points=None, unit: str = "", numbered: bool = True,
+                   length: Optional[LengthFormat] = None) -> str:
     """What a warning of a curve that wanders says (:func:`fit`'s, the CLI's and FreeCAD's):
     "the curve wanders away from its points between points 3 and 4 (counted from 0; at
     (x, y) and (x, y)): ...". gap: ``FitResult.wander_gap`` (>= 0); points: the fitted
-    points, to name the two's places (unit after each coordinate); numbered False: by their
-    places alone ("between the points at (x, y) and (x, y)"), where the numbers are the
-    fit's order, not the user's."""
+    points, to name the two's places (unit after each coordinate, or ``length(value, digits)``
+    writing each: cost_summary's); numbered False: by their places alone ("between the
+    points at (x, y) and (x, y)"), where the numbers are the fit's order, not the user's."""
     gap = int(gap)
     if gap < 0 or (points is None and not numbered):
         raise ValueError("wander_summary: the gap of a curve that wanders (>= 0) is needed, and "
@@ -249,7 +253,8 @@ def wander_summary(gap: int, points=None, unit: str = "", numbered: bool = True)
         p = as_real_array(points, "wander_summary: points")
         if p.ndim != 2 or gap + 1 >= len(p):
             raise ValueError("wander_summary: points (n, 2 or 3) with n > gap + 1 are needed")
-        places = " and ".join("(" + ", ".join(f"{v:.4g}{unit}" for v in p[i]) + ")"
+        fmt = lengths(unit, length)
+        places = " and ".join("(" + ", ".join(fmt(v, 4) for v in p[i]) + ")"
                               for i in (gap, gap + 1))
     where = (f"points {gap} and {gap + 1} (counted from 0{'; at ' + places if places else ''})"
              if numbered else f"the points at {places}")

@@ -17,6 +17,8 @@ from typing import Iterable, Mapping, Optional
 
 import numpy as np
 
+from ._text import LengthFormat, lengths
+
 __all__ = ["COST_RATIO", "COST_FLOOR", "EndConditionWarning", "costly", "cost_summary",
            "end_condition_cost", "held_names"]
 
@@ -46,11 +48,14 @@ def costly(rms: float, free_rms: float, extent: float) -> bool:
     return rms > COST_RATIO * free_rms and rms - free_rms > COST_FLOOR * extent
 
 
-def cost_summary(held: str, free_rms: float, rms: float, unit: str = "") -> str:
+def cost_summary(held: str, free_rms: float, rms: float, unit: str = "",
+                 length: Optional[LengthFormat] = None) -> str:
     """What the warning says (Python's, the CLI's, FreeCAD's): ``held`` names the end
-    conditions in the caller's terms, ``unit`` follows each figure (e.g. " mm")."""
-    return (f"the end conditions ({held}) raise the rms from {free_rms:.3g}{unit} (free ends) to "
-            f"{rms:.3g}{unit}: check that they match the data")
+    conditions in the caller's terms, ``unit`` follows each figure (e.g. " mm"), or
+    ``length(value, digits)`` writes each (FreeCAD's: in the user's unit schema)."""
+    fmt = lengths(unit, length)
+    return (f"the end conditions ({held}) raise the rms from {fmt(free_rms, 3)} (free ends) to "
+            f"{fmt(rms, 3)}: check that they match the data")
 
 
 def held_names(constraints: Optional[Mapping[str, object]],

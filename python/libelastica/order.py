@@ -20,6 +20,7 @@ from typing import NamedTuple, Optional
 import numpy as np
 
 from ._ffi import as_points, check, dptr, ffi, lib
+from ._text import LengthFormat, lengths
 from .prep import pca_normalize, plane_fit
 
 
@@ -149,10 +150,12 @@ def _screen(xy, step: int, turn: bool):
     return out
 
 
-def order_summary(o: Ordering, unit: str = "") -> str:
-    """What a warning of points out of order says (:func:`fit`'s, fit_keyline's, the CLI's)."""
-    return (f"the points are not in order along a curve: their polyline is {o.given:.4g}{unit} long, "
-            f"{o.given / o.along:.3g} times the {o.along:.4g}{unit} of the points in curve order")
+def order_summary(o: Ordering, unit: str = "", length: Optional[LengthFormat] = None) -> str:
+    """What a warning of points out of order says (:func:`fit`'s, fit_keyline's, the CLI's):
+    ``unit`` after each length, or ``length(value, digits)`` writing each (cost_summary's)."""
+    fmt = lengths(unit, length)
+    return (f"the points are not in order along a curve: their polyline is {fmt(o.given, 4)} long, "
+            f"{o.given / o.along:.3g} times the {fmt(o.along, 4)} of the points in curve order")
 
 
 def _chain_order(xy):

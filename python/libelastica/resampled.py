@@ -17,6 +17,7 @@ from typing import Optional
 import numpy as np
 
 from ._ffi import as_points, as_positive
+from ._text import LengthFormat, lengths
 from .fit import FitResult, quiet_fit
 from .prep import resampled_polygon
 
@@ -139,13 +140,15 @@ def fit_resampled(points, step: float, model: str = "discrete", *, tol: float = 
 
 
 def resample_summary(step: float, rms: float, reference: float, unit: str = "",
-                     extent: Optional[float] = None) -> str:
+                     extent: Optional[float] = None, length: Optional[LengthFormat] = None) -> str:
     """What the warning of a resampled fit far from its points says (Python's, FreeCAD's).
     Given the points' ``extent``, a reference below RESAMPLE_FLOOR of it (their own fit
-    passes through them: rounding) is said in length, not as a ratio to it."""
-    far = f"the curve fitted to the points resampled at {step:g}{unit} lies {rms:.3g}{unit} "
+    passes through them: rounding) is said in length, not as a ratio to it. ``unit``
+    follows each length, or ``length(value, digits)`` writes each (cost_summary's)."""
+    fmt = lengths(unit, length)
+    far = f"the curve fitted to the points resampled at {fmt(step, None)} lies {fmt(rms, 3)} "
     if extent is not None and reference < RESAMPLE_FLOOR * extent:
         return far + ("from them (rms), where their own fit passes through them: a shorter "
                       "step, or none, fits them closer")
-    return far + (f"from them (rms), {rms / reference:.2f} x their own fit's {reference:.3g}{unit}: "
+    return far + (f"from them (rms), {rms / reference:.2f} x their own fit's {fmt(reference, 3)}: "
                   "a shorter step, or none, fits them closer")

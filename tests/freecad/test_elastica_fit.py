@@ -327,7 +327,7 @@ class FitResultTest(unittest.TestCase):
                     inch = [w for w in said_now(f, "Warnings") if "outliers?" in w][0]
                 finally:
                     App.Units.setSchema(schema)
-                place = ", ".join(f"{float(f'{v:.4g}') / 25.4:.4g}" for v in (top.x, top.y))
+                place = ", ".join(f"{v / 25.4:.4g}" for v in (top.x, top.y))   # exact, in inches
                 self.assertIn(f"the farthest at ({place}, ", inch)
                 self.assertNotIn("mm", inch)
 

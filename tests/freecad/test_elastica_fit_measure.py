@@ -68,8 +68,8 @@ class FitMeasureTest(unittest.TestCase):
         """Noise-free points fitted resampled: the warning says the curve's rms in length
         where their own fit passes through them (it said '1.5e+13 x their own fit's
         7.74e-14 mm'); under Imperial decimal it and the errors give lengths in inches
-        (they said mm beside boxes in inches), and a panel opened after a schema change
-        says them in the new one (proxy.said)."""
+        (they said mm beside boxes in inches) from the exact figures, not the mm text's, and
+        a panel opened after a schema change says them in the new one (proxy.said)."""
         import numpy as np
         import libelastica as el
         from freecad.elastica.proxy import said
@@ -85,9 +85,9 @@ class FitMeasureTest(unittest.TestCase):
         try:
             App.Units.setSchema(3)
             shown = said(f, "Warnings")
-            # the library's 3 digits in mm, in inches (to 3 digits of those)
-            inches = float(f"{f.Rms:.3g}") / 25.4
-            self.assertIn(f"resampled at 0.787 in lies {inches:.3g} in from them", shown[0])
+            # the exact rms in inches (it said 0.0465 in: 1.18 mm, the mm text's, / 25.4)
+            self.assertEqual(f"{f.Rms / 25.4:.3g}", "0.0464")
+            self.assertIn("resampled at 0.787 in lies 0.0464 in from them", shown[0])
             f.touch()
             self.doc.recompute()                   # what a recompute under Imperial writes
             self.assertEqual(list(f.Warnings), shown)

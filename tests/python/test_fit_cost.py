@@ -120,3 +120,23 @@ def test_cli_says_it_and_writes_it(scan, tmp_path, capsys, model, step):
         else:
             assert rec["rms"] < 1.05 * rec["free_rms"]
             assert (said, "end_condition_warning" in rec) == ([], False)
+
+
+def test_summaries_take_a_length_formatter():
+    """The summaries FreeCAD shows write each length by the caller's formatter (FreeCAD's:
+    the exact value in the user's unit schema, not the mm text's 3 digits converted)."""
+    inch = lambda v, digits=None, with_unit=True: \
+        f"{v / 25.4:.{digits or 3}g}" + (" in" if with_unit else "")
+    assert el.cost_summary("Start curvature", 0.29, 1.1787, length=inch) == (
+        "the end conditions (Start curvature) raise the rms from 0.0114 in (free ends) to "
+        "0.0464 in: check that they match the data")
+    assert el.resample_summary(20.0, 1.1787, 1e-13, extent=150.0, length=inch).startswith(
+        "the curve fitted to the points resampled at 0.787 in lies 0.0464 in from them")
+    d = [1.0, 1.2, 9.05, 1.1, 16.0, 1.69, 0.5]
+    assert el.far_points_summary(d, [2, 4], length=inch) == (
+        "2 of 7 points lie 0.356 to 0.63 in from the curve, the others within 0.0665 in")
+    assert "(3.937 in, 0 in) and (7.874 in, 0 in)" in el.wander_summary(
+        0, [(100.0, 0.0), (200.0, 0.0), (300.0, 0.0)], length=inch)
+    # the default is today's text
+    assert el.far_points_summary(d, [2, 4], " mm") == (
+        "2 of 7 points lie 9.05 to 16 mm from the curve, the others within 1.69 mm")

@@ -21,7 +21,7 @@ from .proxy import (FeatureProxy, InputProblem, add_edge_end, add_enum, add_geom
                     add_length, add_link, add_property, edge_end_choice, new_feature, read_only,
                     set_said)
 from .sources import gather_points
-from .units import mm_marked, say
+from .units import say
 
 
 class FitProxy(FeatureProxy):
@@ -167,10 +167,10 @@ class FitProxy(FeatureProxy):
         obj.Distances = [float(d) for d in r["distances"]]
         from libelastica.io import curve_to_dict
         obj.Curves = json.dumps([curve_to_dict(c) for c in r["curves"]])
-        # lengths in the unit schema, said again when a panel opens (proxy.said)
-        set_said(obj, "Status", mm_marked(r["status"] or "ok"))
+        # lengths marked (units.exact_mark), said again when a panel opens (proxy.said)
+        set_said(obj, "Status", r["status"] or "ok")
         obj.FreeRms = r["free_rms"]
-        warnings = mm_marked(r["warnings"])
+        warnings = r["warnings"]
         if say(warnings) != list(obj.Warnings):
             # once per change of the warnings, not on every recompute of the same fit
             for w in say(warnings):

@@ -19,7 +19,7 @@ from .geometry import el, np, plane_coordinates, polyline_length, to_plane
 from .nearest import drawn_distances, nearest_on
 from .proxy import InputProblem, check_degree, check_number, check_tolerance
 from .sources import curve_order, file_order
-from .units import coordinate_mark
+from .units import coordinate_mark, exact_mark
 
 MIN_POINTS = 6          # fewer points cannot determine the 7 (5 shape) parameters of a fit
 MODELS = ["discrete", "smooth"]
@@ -52,8 +52,8 @@ def _wanders(result, plane):
     if result.wander_gap < 0:
         return []
     at = [plane.multVec(App.Vector(float(x), float(y), 0.0)) for x, y in result.points]
-    said = el().wander_summary(result.wander_gap, [(v.x, v.y, v.z) for v in at], " mm",
-                               numbered=False)
+    said = el().wander_summary(result.wander_gap, [(v.x, v.y, v.z) for v in at],
+                               numbered=False, length=exact_mark)
     return [f"{said}: add a point between them to hold the curve there"]
 
 
@@ -93,7 +93,8 @@ def _constraint_cost(result, model, constraints, rms, fields):
         return -1.0, [], None
     if not el().costly(rms, free, float(np().ptp(xy, axis=0).max())):
         return float(free), [], dist
-    return float(free), [el().cost_summary(field_names(constraints, fields), free, rms, " mm")], dist
+    return float(free), [el().cost_summary(field_names(constraints, fields), free, rms,
+                                                length=exact_mark)], dist
 
 
 def _check_length(bspline, extent, constraints, fields, reversed_joins):
@@ -139,11 +140,11 @@ def _left_out(beyond, dist, step, used):
     d = np().abs(dist[beyond])
     m = int(beyond.sum())
     verb = "lies" if m == 1 else "lie"
-    setting = (f"Resample = {step:g} mm" if step else
+    setting = (f"Resample = {exact_mark(step)}" if step else
                f"Resample = 0 takes {_default_step_name(used)}")
     way_out = "a shorter step leaves less out"
     return [f"{m} of {len(dist)} points {verb} beyond the curve's ends, up to "
-            f"{float(d.max()):.3g} mm from it: the resampled polygon ({setting}) "
+            f"{exact_mark(d.max(), 3)} from it: the resampled polygon ({setting}) "
             "stops where no point lies a step further on, and the curve with it; Rms and "
             f"MaxError include them: {way_out}"]
 
@@ -156,9 +157,10 @@ def _off_plane(off, rms, extent):
     off_rms = _rms(off)
     if not (off_rms > rms and off_rms > el().COST_FLOOR * extent):
         return []
-    return [f"the points lie up to {float(n.abs(off).max()):.3g} mm (rms {off_rms:.3g} mm) off "
+    return [f"the points lie up to {exact_mark(n.abs(off).max(), 3)} "
+            f"(rms {exact_mark(off_rms, 3)}) off "
             f"their plane, the fit's: Rms and MaxError include that (in the plane the curve lies "
-            f"{rms:.3g} mm from them, rms); a plane curve comes no closer"]
+            f"{exact_mark(rms, 3)} from them, rms); a plane curve comes no closer"]
 
 
 def _step_advice(length):
@@ -225,7 +227,7 @@ def _far_from_resampled(xy, rms, result, polygon, constraints, step):
     if ref is None:
         return []
     extent = float(np().ptp(xy, axis=0).max())
-    return [el().resample_summary(step, rms, ref, " mm", extent=extent)]
+    return [el().resample_summary(step, rms, ref, extent=extent, length=exact_mark)]
 
 
 def _keyline_step(xy):
@@ -237,7 +239,7 @@ def _keyline_step(xy):
 
 def _default_step_name(step):
     """What the default step of a split keyline is, for messages."""
-    return (f"the default step, {step:.3g} mm = 1/{el().KEYLINE_STEPS} of the points' run "
+    return (f"the default step, {exact_mark(step, 3)} = 1/{el().KEYLINE_STEPS} of the points' run "
             "through their medians in runs along it")
 
 
@@ -289,7 +291,8 @@ def _coarse_polygon(xy, constraints, rms):
     if smooth is None:
         return []
     return [f"{len(xy)} points give the discrete model a polygon of {len(xy) - 1} segments, "
-            f"its cubic {rms:.3g} mm from them (rms), where the smooth model's curve lies {smooth:.3g} mm "
+            f"its cubic {exact_mark(rms, 3)} from them (rms), where the smooth model's curve lies "
+            f"{exact_mark(smooth, 3)} "
             "from them: choose Model Smooth elastica for so few points"]
 
 
@@ -305,7 +308,8 @@ def _far_points(data, dist, plane, free=None):
     farthest = far[n.argmax(n.abs(n.asarray(dist if free is None else free, dtype=float))[far])]
     worst = plane.multVec(App.Vector(*map(float, data[farthest])))
     at = ", ".join(coordinate_mark(v) for v in (worst.x, worst.y, worst.z))   # units.say
-    return [f"{el().far_points_summary(dist, far, ' mm', free)} (the farthest at ({at})): "
+    said = el().far_points_summary(dist, far, free_distances=free, length=exact_mark)
+    return [f"{said} (the farthest at ({at})): "
             "outliers? Each pulls the fit towards itself: remove them to fit the rest"]
 
 

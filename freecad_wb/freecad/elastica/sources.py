@@ -16,6 +16,7 @@ import Part
 
 from .geometry import (dedup, el, global_element, global_points, global_shape, is_sketch, np)
 from .proxy import InputProblem
+from .units import exact_mark
 
 
 def _subs(subs):
@@ -205,8 +206,9 @@ def file_order(xy):
     o = el().out_of_order(xy, screen=False)
     if o.order is None:
         return None, []
-    return o.order, [f"the file's points are not in curve order (their polyline is {o.given:.4g} mm "
-                     f"long, {o.given / o.along:.3g} times the {o.along:.4g} mm of the points in curve "
+    return o.order, [f"the file's points are not in curve order (their polyline is "
+                     f"{exact_mark(o.given, 4)} long, {o.given / o.along:.3g} times the "
+                     f"{exact_mark(o.along, 4)} of the points in curve "
                      "order): fitted in curve order, as a Points object's"]
 
 

@@ -76,7 +76,7 @@ def unit_names(text):
 # A text a recompute writes (Status, Warnings) may hold its figures as marks: say() writes
 # each in the schema of now, so a panel opened after a schema change says the stored text
 # again in the new one without a recompute (proxy.said keeps the marked text).
-_MARK = re.compile("\x01([LKkTNUuRMm])([^\x02]*)\x02")
+_MARK = re.compile("\x01([LKkTNUuRMmEe])([^\x02]*)\x02")
 # a length written '<number> mm' (the library's messages take a unit to write after their
 # figures): not '1/mm', 'mm^2', 'N mm^2'
 _NUM = r"(-?(?:\d+\.?\d*|\.\d+)(?:e[+-]?\d+)?)"
@@ -140,8 +140,29 @@ def mm_marked(text):
 
 def coordinate_mark(mm, digits=4):
     """A coordinate (mm) without its unit, written by say() in the schema's length unit (a
-    message names the unit once, or the schema's: '(219.9, -101.6, -87.72)')."""
-    return f"\x01m{float(mm):.{digits}g}\x02"
+    message names the unit once, or the schema's: '(219.9, -101.6, -87.72)'), from its
+    exact value (exact_mark)."""
+    return exact_mark(mm, digits, with_unit=False)
+
+
+def exact_mark(mm, digits=None, with_unit=True):
+    """A length (mm) written by say() in the schema's length unit from its exact value, to
+    ``digits`` significant digits (None: as '%g' writes it in mm, at least 3 in another
+    unit), under a schema of mm as f'{mm:.{digits}g} mm'; ``with_unit`` False: the number
+    alone. The binding's summaries take it as their ``length`` formatter."""
+    shown = "" if digits is None else int(digits)
+    return f"\x01{'E' if with_unit else 'e'}{float(mm)!r}|{shown}\x02"
+
+
+def _exact(args, with_unit):
+    value, digits = float(args[0]), args[1]
+    factor, unit = length_unit()
+    if factor == 1.0 and unit == "mm":
+        text = f"{value:g}" if not digits else f"{value:.{int(digits)}g}"
+    else:
+        written = re.sub(r"e.*|[^0-9]", "", f"{value:g}").lstrip("0")   # '%g's digits
+        text = f"{value / factor:.{int(digits) if digits else max(3, len(written))}g}"
+    return text + (f" {unit}" if with_unit else "")
 
 
 def _in_length_unit(written, with_unit=True):
@@ -168,6 +189,8 @@ def _said(match):
         return length_unit()[1]
     if kind in "Mm":
         return _in_length_unit(args[0], kind == "M")
+    if kind in "Ee":
+        return _exact(args, kind == "E")
     if kind == "R":
         per, unit = tension_unit()
         shown = float(args[0]) if per == 1.0 else floor_digits(float(args[0]) * per, int(args[1]))
