@@ -29,6 +29,7 @@ import numpy as np
 
 from ._ffi import (DomainError, SingularError, as_points, as_positive, as_real, as_vector,
                    bspline_from_c, check, dptr, ffi, lib, require)
+from ._text import LengthFormat, lengths
 from .shape import crossing_pairs, self_crossings
 from .spline import LoopWarning
 
@@ -475,17 +476,20 @@ class BlendCurve:
             widest.setdefault(tuple(p["between"]), p)
         return list(widest.values())
 
-    def _loop_text(self, loops: int) -> str:
-        """The loop warning: how many, the widest LOOPS_NAMED by their points and sizes."""
+    def _loop_text(self, loops: int, length: Optional[LengthFormat] = None) -> str:
+        """The loop warning: how many, the widest LOOPS_NAMED by their points and sizes
+        (numbers alone, by ``length(value, digits, False)`` where given)."""
+        fmt = lengths("", length)
         times = "once" if loops == 1 else f"{loops} times"
         places = self.loop_places()
         said = []
         for k, p in enumerate(places[:LOOPS_NAMED]):
-            beside = " and ".join(f"{c:.3g}" for c in p["beside"] if c is not None)
+            beside = " and ".join(fmt(c, 3, False) for c in p["beside"] if c is not None)
             said.append(f"between points {p['between'][0]} and {p['between'][1]} ("
                         + ("counted from 0; " if k == 0 else "")
-                        + f"chord {p['chord']:.3g}" + (f" beside {beside}" if beside else "")
-                        + f", a loop {p['width']:.2g} wide)")
+                        + f"chord {fmt(p['chord'], 3, False)}"
+                        + (f" beside {beside}" if beside else "")
+                        + f", a loop {fmt(p['width'], 2, False)} wide)")
         more = len(places) - len(said)
         where = (", ".join(said[:-1]) + " and " + said[-1] if len(said) > 1 else
                  "".join(said)) + (f", and {more} more" if more > 0 else "")
@@ -495,8 +499,9 @@ class BlendCurve:
         return (f"the curve loops: it crosses itself {times} where the polygon of its points "
                 f"does not; it loops {where}; points spaced more evenly there give a fair curve")
 
-    def _interpolation_warnings(self) -> list:
-        """(category, text) of an ill-conditioned interpolation and of loops."""
+    def _interpolation_warnings(self, length: Optional[LengthFormat] = None) -> list:
+        """(category, text) of an ill-conditioned interpolation and of loops (``length``:
+        _loop_text's)."""
         out = []
         spread = self.spread()
         if spread > SPREAD_MAX:
@@ -508,20 +513,22 @@ class BlendCurve:
                         "points give a tamer curve"))
         loops = self.loops()
         if loops:
-            out.append((BlendLoopWarning, self._loop_text(loops)))
+            out.append((BlendLoopWarning, self._loop_text(loops, length)))
         return out
 
-    def warnings(self) -> list:
+    def warnings(self, length: Optional[LengthFormat] = None) -> list:
         """The basis' warnings, a corner where the curve closes on itself, an
         ill-conditioned interpolation (:class:`ConditionWarning`) and loops
-        (:class:`BlendLoopWarning`), in words."""
+        (:class:`BlendLoopWarning`), in words; ``length(value, digits, with_unit)`` writes
+        the loops' places and sizes (default: the numbers alone; FreeCAD's: in the user's
+        unit schema)."""
         out = list(self.basis.warnings())
         angle = self.seam_angle()
         if angle > 1e-6:
             out.append(f"the curve closes on itself with a {angle:.3g} deg corner at its first "
                        "point (its ends are not a joint); closed=True (CLI: --closed) makes "
                        "that joint smooth like the others")
-        return out + [text for _, text in self._interpolation_warnings()]
+        return out + [text for _, text in self._interpolation_warnings(length)]
 
     def points(self, t=None) -> np.ndarray:
         """Points (n, 2) at global parameters t in [0, nseg] (default 101 per segment)."""

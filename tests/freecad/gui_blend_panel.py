@@ -107,6 +107,7 @@ def ends_toggled(doc, sk, right, left):
             f"({b.Status})")
     G.check(panel.warning[0].isVisible() and "No free batten" in said and "151 mm" in said,
             f"ends no free batten joins: the panel says why by length ({said})")
+    note_said_again(panel)
     G.screenshot("gui_blend_ends_by_length.png")
     panel.end1.click()
     G.wait(600)
@@ -274,6 +275,48 @@ def said_in_the_schema_of_now(doc, b, prefs):
     doc.recompute()
 
 
+def note_said_again(panel):
+    """The panel's note (why by length) follows a schema change without a recompute: in
+    inches from the exact lengths under Imperial decimal (it kept '151 mm')."""
+    before, old = panel.obj.Status, App.Units.getSchema()
+    App.Units.setSchema(3)
+    try:
+        panel.refresh()
+        said = panel.warning[1].text()
+        G.check("instead, 5.94488 in (1.5 \u00d7 the 3.957 in between" in said and "mm" not in said
+                and panel.obj.Status == before, f"the note said again in inches: {said!r}")
+    finally:
+        App.Units.setSchema(old)
+        panel.refresh()
+
+
+def comb_in_the_schema(doc, b):
+    """A comb's panel opened under Imperial decimal: its scale line and box in in\u00b2
+    (they said mm\u00b2)."""
+    from freecad.elastica import comb as Cm, taskpanels as T
+    comb = Cm.make(doc, b)
+    doc.recompute()
+    prefs = App.ParamGet("User parameter:BaseApp/Preferences/Units")
+    old = prefs.GetInt("UserSchema", 0)
+    prefs.SetInt("UserSchema", 3)
+    App.Units.setSchema(3)
+    try:
+        Gui.ActiveDocument.setEdit(comb.Name)
+        G.wait(300)
+        panel = T.CURRENT[0]
+        text, box = panel.result.text(), panel.scale.text()
+        want = f"scale {comb.UsedScale / 25.4 ** 2:.4g} in\u00b2; ok"
+        G.check(text == want and box == "0 in\u00b2", f"comb under Imperial: {text!r} "
+                f"(want {want!r}), Scale box {box!r}")
+        G.screenshot("gui_comb_imperial.png")
+        panel.reject()
+        G.pump()
+    finally:
+        prefs.SetInt("UserSchema", old)
+        App.Units.setSchema(old)
+    doc.removeObject(comb.Name)
+
+
 def imperial_texts_and_steps(b, panel):
     """Imperial decimal (QA12): the Tension box, the solutions and the result line in
     inches (they said mm and 1/mm\u00b2); a plain '6' is 6 in and the arrows step 1 in, as
@@ -437,6 +480,7 @@ def run_all(smoke):
     b = ends_toggled(doc, sk, right, left)
     bound_tension(doc, b)
     unit_schemas(doc, b)
+    comb_in_the_schema(doc, b)
     tension_mode_and_g2_reach(doc, sk, right, left)
     bound_length_toggled(doc, sk, right, left)
     App.closeDocument(doc.Name)

@@ -197,7 +197,7 @@ def starting_length(e0, at_end0, e1, at_end1, plane=None):
                       f"{', '.join(f'{m:g}' for m in LENGTH_MULTIPLES)} times their distance")
     _, m, length = best
     return length, (f"no free batten (tension 0) joins these ends: solved for a length "
-                    f"instead, {length_text(length, 6)} ({m:g} \u00d7 the {length_text(dist, 4)} "
+                    f"instead, {length_mark(length, 6)} ({m:g} \u00d7 the {length_mark(dist, 4)} "
                     "between them, the "
                     f"fairest of {LENGTH_MULTIPLES[0]:g} to {LENGTH_MULTIPLES[-1]:g} \u00d7); "
                     "change it, or solve for a tension > 0")

@@ -21,8 +21,10 @@ from . import defaults
 from .geometry import el, np, part_bspline, plane_coordinates, to_3d
 from .links import followed_reader
 from .proxy import (FeatureProxy, InputProblem, add_enum, add_geometry_index, add_length,
-                    add_link, add_property, check_number, check_tolerance, new_feature, read_only)
+                    add_link, add_property, check_number, check_tolerance, new_feature, read_only,
+                    set_said)
 from .sources import gather_vertices
+from .units import exact_mark, say
 
 MODES = ["interpolate", "control"]
 K_CONVENTIONS = ["modulus", "parameter"]
@@ -75,7 +77,7 @@ def ellblend_core(points, plane=None, mode="interpolate", k=0.5, d=2.0, tol=1e-3
         raise InputProblem(f"elliptic blend failed: {exc}{hint}") from None
     return {"curve": curve, "bspline": bs, "placement": plane,
             "control": to_3d(plane, curve.q), "spread": curve.spread(),
-            "warnings": curve.warnings()}
+            "warnings": curve.warnings(length=exact_mark)}     # said by units.say
 
 
 class EllipticBlendProxy(FeatureProxy):
@@ -148,13 +150,13 @@ class EllipticBlendProxy(FeatureProxy):
         obj.Lebesgue = float(basis.lebesgue)
         obj.Condition = float(basis.condition)
         obj.Spread = float(r["spread"])
-        warnings = r["warnings"]
-        if warnings != list(obj.Warnings):
+        warnings = r["warnings"]                # lengths marked: said again by a panel
+        if say(warnings) != list(obj.Warnings):
             # once per change of the warnings, not on every recompute of the same basis
-            for w in warnings:
+            for w in say(warnings):
                 App.Console.PrintWarning(f"Elastica {obj.Label}: {w}\n")
-            obj.Warnings = warnings
-        obj.Status = "; ".join(["ok"] + [f"warning: {w}" for w in warnings])
+        set_said(obj, "Warnings", warnings)
+        set_said(obj, "Status", "; ".join(["ok"] + [f"warning: {w}" for w in warnings]))
 
 
 def make(doc, sources=(), **props):

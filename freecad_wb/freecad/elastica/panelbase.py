@@ -14,7 +14,7 @@ from PySide import QtCore, QtGui
 from . import icon
 from .geometry import is_sketch, sketch_curves
 from .proxy import EDGE_ENDS, InputProblem, said as said_now
-from .units import length_text, length_unit, tension_unit, unit_names, user_length
+from .units import length_text, length_unit, say, tension_unit, unit_names, user_length
 
 CURRENT = []        # the open panel, if any (scripts and the GUI smoke test drive it)
 DELAY_MS = 150      # recompute after this pause in editing
@@ -103,6 +103,9 @@ class NumberBox(QtGui.QDoubleSpinBox):
         if self.unit == "1/mm\u00b2":
             factor, unit = tension_unit()
             return 1.0 / factor, unit
+        if self.unit == "mm\u00b2":               # the comb's scale
+            factor, unit = length_unit()
+            return factor * factor, f"{unit}\u00b2"
         return 1.0, self.unit
 
     def textFromValue(self, value):
@@ -318,7 +321,7 @@ class Panel:
     def warnings(self):
         """What the warning line says (a list of sentences; none: hidden): the command's
         note, then the feature's Warnings, capitalised."""
-        said = ([self.note] if self.note else []) + (
+        said = ([say(self.note)] if self.note else []) + (      # its marks in the schema of now
             said_now(self.obj, "Warnings") if "Warnings" in self.obj.PropertiesList else [])
         return [w[0].upper() + w[1:] for w in said]
 

@@ -18,8 +18,7 @@ from . import defaults
 from .geometry import (edge_end, el, nearest_parameter, np, part_bspline, plane_coordinates,
                        plane_curvature, to_3d)
 from .links import followed_edge, followed_reader
-from .units import (coordinate_mark, length_mark, length_text, length_unit_mark, say,
-                    tension_text)
+from .units import coordinate_mark, length_mark, length_unit_mark, say, tension_mark
 from .proxy import (FeatureProxy, InputProblem, add_edge_end, add_enum, add_geometry_index,
                     add_length, add_link, add_property, check_degree, check_number,
                     check_tolerance, edge_end_choice, new_feature, read_only, set_said)
@@ -274,7 +273,8 @@ TENSION_MULTIPLES = (1, 2, 5, 10, 20, 50, 100, 200, 500, 1000)
 def starting_tension(points, plane=None, closed=False, tol=1e-3, degree=BSPLINE_DEGREE):
     """A tension to start a spline by, where the free batten does not pass the points: the
     least of TENSION_MULTIPLES / P^2 (3 digits) whose batten does not loop. Returns
-    (tension, note for the user); raises NoSpline when none of them gives one."""
+    (tension, note for the user: its figures marked, units.say); raises NoSpline when none
+    of them gives one."""
     pts = list(points) + (list(points[:1]) if closed else [])
     polygon = sum((b - a).Length for a, b in zip(pts, pts[1:]))
     for m in TENSION_MULTIPLES:
@@ -286,8 +286,8 @@ def starting_tension(points, plane=None, closed=False, tol=1e-3, degree=BSPLINE_
             continue
         if not r["spline"].loops:
             return tension, (f"no free batten (tension 0) passes these points (it slides off "
-                             f"its ducks): solved at Tension = {tension_text(tension, polygon, 6)} "
-                             f"instead ({m:g} / the {length_text(polygon, 4)} polygon through "
+                             f"its ducks): solved at Tension = {tension_mark(tension, polygon, 6)} "
+                             f"instead ({m:g} / the {length_mark(polygon, 4)} polygon through "
                              "them squared, the "
                              f"least of {TENSION_MULTIPLES[0]:g} to {TENSION_MULTIPLES[-1]:g} "
                              "whose batten does not loop); change it, or give a length")

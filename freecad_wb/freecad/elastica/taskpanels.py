@@ -18,7 +18,7 @@ from .fit_core import DISTANCE_NAMES, DISTANCES, MODEL_NAMES, MODELS
 from .fit_ends import CONTINUITIES, CONTINUITY_NAMES
 from .geometry import is_sketch
 from .panelbase import CURRENT, Panel, _fmt, said_now
-from .units import length_text, length_unit, per_length, tension_unit
+from .units import area_text, length_mark, length_unit, per_length, tension_unit
 
 
 
@@ -296,7 +296,7 @@ class BlendPanel(Panel):
             o.Mode, self.auto = "length", float(o.Length)   # chosen here: ends_changed redoes it
             self.note = (f"No free batten (tension 0) joins these ends: solved for the length "
                          f"Length is bound to ({self.expression('Length')}), "
-                         f"{length_text(float(o.Length), 4)}")
+                         f"{length_mark(float(o.Length), 4)}")
             self.show_mode()
             return True
         self.auto, self.note = start
@@ -616,7 +616,7 @@ class CombPanel(Panel):
         self.row(g, "", self.result)
 
     def result_text(self):
-        return f"scale {self.obj.UsedScale:.4g} mm\u00b2; {said_now(self.obj, 'Status')}"
+        return f"scale {area_text(self.obj.UsedScale)}; {said_now(self.obj, 'Status')}"
 
 
 PANELS = {"Fit": FitPanel, "Blend": BlendPanel, "Spline": SplinePanel,

@@ -64,6 +64,13 @@ def tension_text(sigma, length, digits=3):
     return f"{0.0 if abs(sigma) * length ** 2 < 1e-9 else sigma * factor:.{digits}g} {unit}"
 
 
+def area_text(value, digits=4):
+    """A length squared (mm^2: the comb's scale) in the square of the schema's length unit
+    ('12.5 mm\u00b2', '0.0194 in\u00b2')."""
+    factor, unit = length_unit()
+    return f"{float(value) / factor ** 2:.{digits}g} {unit}\u00b2"
+
+
 def unit_names(text):
     """``text`` (a tooltip) with '(mm', '(1/mm' and '(1/mm²' naming the schema's units,
     those the boxes show ('(in)', '(1/in)', '(1/in²)' under Imperial decimal)."""
