@@ -143,3 +143,28 @@ def test_a_noisy_coil_in_order_is_screened_without_curve_order(monkeypatch):
     assert O.out_of_order(pts).order is None
     assert not calls
     assert O.out_of_order(pts[rng.permutation(len(pts))]).order is not None
+
+
+def test_a_noisy_scan_in_order_whose_screen_turns_is_cleared_by_its_run_means(monkeypatch):
+    """1000 points on a discrete elastica of k = 8 (a loop and more) in order, 1.5 % noise:
+    the polyline through every step-th point turns 1.43 rad a vertex, past
+    TURN_PER_VERTEX, but the one through the means of runs of step points 0.39 rad, so
+    out_of_order answers without curve_order (which finds them in order: 2.0 x); the same
+    points shuffled still are flagged."""
+    from libelastica import order as O
+    n = 1000
+    c = el.DiscreteElastica(x0=0, y0=0, h=1.0 / n, phi=0.3, z=0.7 / (n - 1), q=0.5, k=8.0, n=n)
+    P = c.points()
+    L = O.polyline_length(P)
+    pts = P + np.random.default_rng(0).normal(0, 0.015 * L / np.sqrt(2), P.shape)
+    step = n // O.SCREEN_POINTS
+    assert O.polyline_length(pts[::step]) > 3.0 * np.ptp(pts, axis=0).max()
+    assert O._screen(np.ascontiguousarray(pts), step, True).turn > O.TURN_PER_VERTEX
+    assert O.out_of_order(pts, screen=False).order is None
+    calls = []
+    real = O.curve_order
+    monkeypatch.setattr(O, "curve_order", lambda xy: calls.append(1) or real(xy))
+    o = O.out_of_order(pts)
+    assert o.order is None and np.isnan(o.given) and not calls
+    Q = pts[np.random.default_rng(1).permutation(n)]
+    assert O.out_of_order(Q).order is not None and calls
