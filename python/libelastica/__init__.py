@@ -7,8 +7,9 @@ from .cubic import SPARSE_POINTS, cubic_distances, smooth_fits_better
 from .fit import (ConstraintError, ConvergenceWarning, FitResult, OrderWarning, WanderWarning, far_points,
                   far_points_summary, fit, wander_summary)
 from .keyline import KeylineFit, fit_keyline
-from .fit_cost import (COST_FLOOR, COST_RATIO, EndConditionWarning, cost_summary, costly,
-                       end_condition_cost)
+from .fit_cost import (COST_FLOOR, COST_RATIO, END_POINTS, END_SPAN, EndConditionWarning,
+                       cost_summary, costly, end_condition_cost, end_costs, held_ends,
+                       local_cost_summary)
 from .order import ORDER_RATIO, Ordering, curve_order, out_of_order
 from .prep import (KEYLINE_STEPS, RESAMPLE_MAX_VERTICES, Frame, Frame2D, find_inflection, keyline_runs,
                    keyline_step, pca_normalize, plane_fit, prepare_keyline, resample_equilateral,

@@ -69,6 +69,75 @@ def test_the_datas_own_end_conditions_are_silent(scan, model):
     assert el.end_condition_cost(r) is None
 
 
+@pytest.fixture(scope="module")
+def dense_scan():
+    """400 points of the same S at noise 0.5 mm: a held end's damage stays near it."""
+    return uneven_scan(seed=0, noise=0.5, n=400)
+
+
+def near_rms(r, end):
+    """Both fits' rms over the points within END_SPAN of the free fit's run from ``end``."""
+    s = r.free.foot_s
+    t = (s - s.min()) / np.ptp(s)
+    near = t <= el.END_SPAN if end == "start" else t >= 1.0 - el.END_SPAN
+    return tuple(float(np.sqrt(np.mean(d[near] ** 2))) for d in (r.distances, r.free.distances))
+
+
+@pytest.mark.parametrize("model", ["smooth", "discrete"])
+@pytest.mark.parametrize("end", ["start", "end"])
+def test_a_wrong_tangent_whose_damage_is_near_its_end_is_warned_naming_it(dense_scan, model, end):
+    """The start (end) tangent 0.3 rad off the truth: rms 1.52 (1.86) x free overall, under
+    COST_RATIO, but 1.23 against 0.48 (1.66 against 0.53) over the tenth of the points
+    nearest that end: warned, naming the end, with both local figures."""
+    pts, truth = dense_scan
+    angle = truth.angle([0.0 if end == "start" else truth.length])[0] + 0.3
+    r, said = fitted(pts, model=model, constraints={f"{end}_tangent": angle})
+    extent = float(np.ptp(pts, axis=0).max())
+    assert not el.costly(r.rms, r.free.rms, extent), (r.rms, r.free.rms)
+    local, free_local = near_rms(r, end)
+    assert local > 2.3 * free_local, (local, free_local)
+    assert len(said) == 1, [str(w.message) for w in said]
+    w = said[0].message
+    assert (w.end, w.local_rms, w.free_local_rms) == (end, local, free_local)
+    assert (w.rms, w.free_rms, w.held) == (r.rms, r.free.rms, (f"{end}_tangent",))
+    assert f"({end}_tangent) raise the rms near the {end} " in str(w)
+    assert f"from {free_local:.3g} (free ends) to {local:.3g}:" in str(w)
+    assert said[0].filename == __file__
+    assert el.end_condition_cost(r) == r.free.rms
+    assert el.end_costs([end], r.free.foot_s, r.distances, r.free.distances, extent) == \
+        [(end, local, free_local)]
+
+
+@pytest.mark.parametrize("model", ["smooth", "discrete"])
+def test_the_true_ends_held_on_noisy_data_are_silent(dense_scan, model):
+    """The truth's tangents and curvatures at both ends held on the same noisy points:
+    within 2 % of the free fit near each end, and no warning."""
+    pts, truth = dense_scan
+    t0, t1 = truth.angle([0.0, truth.length])
+    k0, k1 = truth.curvature([0.0, truth.length])
+    con = dict(start_tangent=t0, end_tangent=t1, start_curvature=k0, end_curvature=k1)
+    r, said = fitted(pts, model=model, constraints=con)
+    assert said == []
+    for end in ("start", "end"):
+        local, free_local = near_rms(r, end)
+        assert local < 1.02 * free_local, (end, local, free_local)
+    assert el.end_condition_cost(r) is None
+
+
+def test_which_ends_are_held_and_how_few_points_decide_nothing():
+    """Constraints name their end; fixed x0, y0, phi, kappa0 are the start's, a shape
+    parameter neither's. Fewer than END_POINTS points near an end: no local verdict."""
+    assert el.held_ends({"end_curvature": 0.0, "length": (1, 2)}, None) == ["end"]
+    assert el.held_ends({"end_point": (0, 0)}, {"phi": 0.1}) == ["start", "end"]
+    assert el.held_ends(None, {"k": 0.5}) == []
+    s = np.linspace(0.0, 1.0, 101)         # 11 points within END_SPAN of each end, 5 off
+    d, free = np.where(s < 0.045, 1.0, 0.1), np.full(101, 0.1)
+    assert el.end_costs(["start", "end"], s, d, free, 1.0) == \
+        [("start", pytest.approx(np.sqrt((5 + 6 * 0.01) / 11)), pytest.approx(0.1))]
+    few = np.linspace(0.0, 1.0, 51)        # 6 points near each end
+    assert el.end_costs(["start"], few, np.where(few < 0.05, 1.0, 0.1), np.full(51, 0.1), 1.0) == []
+
+
 def test_check_ends_false_and_quiet_fit_fit_no_free_curve(scan):
     """check_ends=False skips the free fit; so does the binding's quiet_fit unless asked
     (a fit judging another needs none), which then keeps quiet about it."""
