@@ -77,24 +77,29 @@ def _one_piece(xy, model, distance, fixed, constraints, fields):
 COLLAPSED = 1e-3
 
 
-def _constraint_cost(result, model, constraints, rms, fields):
+def _constraint_cost(result, model, constraints, rms, dist, fields):
     """(rms of the same fit with free ends, or -1 when it failed; the warnings; the points'
-    distances to that fit, or None): the binding's rule (el.costly) on the free fit el.fit
-    made (result.free, check_ends); fields: constraint_fields. rms: the fit's as shown, a
-    discrete fit's its drawn cubic's, and so the free fit's (drawn_distances)."""
+    distances to that fit, or None): the binding's rule (el.costly overall, el.end_costs
+    near each held end) on the free fit el.fit made (result.free, check_ends); fields:
+    constraint_fields. rms, dist: the fit's as shown, a discrete fit's its drawn cubic's,
+    and so the free fit's (drawn_distances)."""
     r, xy = result.free, result.points
     if r is None:
         return -1.0, [], None
     try:
-        dist = r.distances if model == "smooth" else \
+        free_dist = r.distances if model == "smooth" else \
             drawn_distances(r.to_bspline(), xy, r.foot_s)[1]
-        free = r.rms if model == "smooth" else _rms(dist)
+        free = r.rms if model == "smooth" else _rms(free_dist)
     except (ValueError, ArithmeticError, RuntimeError):
         return -1.0, [], None
-    if not el().costly(rms, free, float(np().ptp(xy, axis=0).max())):
-        return float(free), [], dist
-    return float(free), [el().cost_summary(field_names(constraints, fields), free, rms,
-                                                length=exact_mark)], dist
+    extent = float(np().ptp(xy, axis=0).max())
+    held = field_names(constraints, fields)
+    if el().costly(rms, free, extent):
+        return float(free), [el().cost_summary(held, free, rms, length=exact_mark)], free_dist
+    near = el().end_costs(el().held_ends(constraints, None), r.foot_s, dist, free_dist, extent)
+    said = [el().local_cost_summary(held, end, near_free, near_rms, length=exact_mark)
+            for end, near_rms, near_free in near[:1]]
+    return float(free), said, free_dist
 
 
 def _check_length(bspline, extent, constraints, fields, reversed_joins):
@@ -413,7 +418,7 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
             rms, max_error = _rms(dist), float(np().abs(dist).max())
         if constraints:
             free_rms, warnings, free_dist = _constraint_cost(results[0], model, constraints, rms,
-                                                             fields)
+                                                             dist, fields)
         warnings = ordering + reversed_joins + warnings
         if model == "discrete" and not split and not step:
             warnings = warnings + _coarse_polygon(xy, constraints, rms)
