@@ -15,7 +15,7 @@ from .cli_common import (EXIT_BADINPUT, EXIT_NOCONV, EXIT_OK, PROG, _converged,
                          _status_text, _table)
 from .cli_outputs import out_path
 from .fit import quiet_fit
-from .fit_cost import cost_summary, costly
+from .fit_cost import cost_summary, costly, end_costs, held_ends, local_cost_summary
 from .order import order_summary
 from .io import InputError, curve_to_dict, read_points, write_dxf_spline, write_json
 
@@ -114,23 +114,34 @@ def _resampled_record(path, args, xy: np.ndarray, fixed, constraints):
         rec["free_distances"] = [float(v) for v in free]
     else:
         rec.pop("free_distances", None)
-    _end_conditions(rec, rr.rms, loose.rms if loose is not None else None, xy, constraints, fixed)
+    _end_conditions(rec, rr.rms, loose.rms if loose is not None else None, xy, constraints, fixed,
+                    (rr.distances, loose.distances, loose.foot_s) if loose is not None else None)
     return rec, res, rr.feet
 
 
 def _end_conditions(rec: Dict[str, Any], rms: float, free_rms: Optional[float], points: np.ndarray,
-                    constraints: Dict[str, Any], fixed: Dict[str, float]) -> None:
+                    constraints: Dict[str, Any], fixed: Dict[str, float], near=None) -> None:
     """What the end conditions cost, in the record: "free_rms", the same fit's with free
     ends and nothing fixed (like with like: the points' distances to the curves fitted, a
     --step's to the curves drawn), and where they raise the rms beyond el.costly's ratio,
+    overall or near a held end (``near``: the fit's distances, the free fit's and its feet'
+    arc lengths, for el.end_costs; then "end_condition_near": end, rms, free_rms there),
     "end_condition_warning" (said by _warn_end_conditions; el.fit's EndConditionWarning)."""
     if free_rms is None:
         return
     rec["free_rms"] = float(free_rms)
-    if costly(rms, free_rms, float(np.ptp(points[:, :2], axis=0).max())):
-        held = [f"--{c.replace('_', '-')}" for c in constraints] + \
-            ([f"--fix {','.join(fixed)}"] if fixed else [])
-        rec["end_condition_warning"] = cost_summary(", ".join(held), free_rms, rms)
+    extent = float(np.ptp(points[:, :2], axis=0).max())
+    held = ", ".join([f"--{c.replace('_', '-')}" for c in constraints] +
+                     ([f"--fix {','.join(fixed)}"] if fixed else []))
+    if costly(rms, free_rms, extent):
+        rec["end_condition_warning"] = cost_summary(held, free_rms, rms)
+        return
+    local = end_costs(held_ends(constraints, fixed), near[2], near[0], near[1], extent) \
+        if near is not None else []
+    if local:
+        end, near_rms, near_free = local[0]
+        rec["end_condition_near"] = {"end": end, "rms": near_rms, "free_rms": near_free}
+        rec["end_condition_warning"] = local_cost_summary(held, end, near_free, near_rms)
 
 
 def _warn_end_conditions(path, rec: Dict[str, Any]) -> None:
@@ -319,8 +330,10 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
                 free = (res.free if res.free is not None and not fixed else
                         quiet_fit(data, **_fit_kwargs(args, fixed))).distances
             records.append(_side_record(res, data, args.model, free))
-            _end_conditions(records[-1], res.rms, res.free.rms if res.free is not None else None,
-                            data, constraints, fixed)
+            lf = res.free
+            _end_conditions(records[-1], res.rms, lf.rms if lf is not None else None, data,
+                            constraints, fixed,
+                            (res.distances, lf.distances, lf.foot_s) if lf is not None else None)
             pictures.append((data, res, None))
             fitted.append(data)
     for rec, fitted_pts in zip(records, fitted):

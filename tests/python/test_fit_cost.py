@@ -209,3 +209,26 @@ def test_summaries_take_a_length_formatter():
     # the default is today's text
     assert el.far_points_summary(d, [2, 4], " mm") == (
         "2 of 7 points lie 9.05 to 16 mm from the curve, the others within 1.69 mm")
+
+
+@pytest.mark.parametrize("step", [None, "1"])
+@pytest.mark.parametrize("model", ["smooth", "discrete"])
+def test_cli_says_a_cost_near_the_start(dense_scan, tmp_path, capsys, model, step):
+    """`elastica fit --start-tangent` 17 degrees off the truth's on the 400 noisy points:
+    under 2 x overall, warned near the start, "end_condition_near" in its JSON."""
+    pts, truth = dense_scan
+    path = tmp_path / "scan.csv"
+    np.savetxt(path, pts, delimiter=",", header="x,y", comments="")
+    deg = float(np.degrees(truth.angle([0.0])[0])) + 17.0
+    out = tmp_path / "fit.json"
+    extra = ["--step", step] if step else []
+    code, _, err = cli(capsys, "fit", path, "--model", model, "--start-tangent", deg,
+                       "--json", out, *extra)
+    assert code == 0, err
+    rec = json.loads(out.read_text())
+    near = rec["end_condition_near"]
+    assert rec["rms"] < 2.0 * rec["free_rms"] and near["rms"] > 2.0 * near["free_rms"], rec
+    said = [line for line in err.splitlines() if "the end conditions" in line]
+    assert said == [f"elastica fit: warning: {path}: {rec['end_condition_warning']}"]
+    assert "(--start-tangent) raise the rms near the start " in said[0]
+    assert f"from {near['free_rms']:.3g} (free ends) to {near['rms']:.3g}:" in said[0]
