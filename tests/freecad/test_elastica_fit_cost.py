@@ -2,10 +2,9 @@
 decision and figures are the binding's (el.costly on the free fit el.fit makes with its
 check_ends, FitResult.free), and that one fit with free ends serves the warning and the
 far points: fit_core fits the points free once, resampled or not."""
+import math
 import sys
 import unittest
-
-import math
 
 import FreeCAD as App
 import numpy as np
@@ -56,7 +55,6 @@ class FitCostTest(unittest.TestCase):
                     f"{r['free_rms']:.3g} mm (free ends) to {rms}"), said[0])
                 self.assertTrue(said[0].endswith(" mm: check that they match the data"), said[0])
 
-
     def test_a_wrong_tangent_costly_near_its_end_only_is_warned_naming_it(self):
         """300 noisy points (0.5 mm) of a 120 mm S, the start following an edge 0.3 rad off
         its tangent: rms 1.46 x free overall, 2.84 x over the tenth of the points nearest
@@ -75,7 +73,7 @@ class FitCostTest(unittest.TestCase):
                                     start).toShape()
             for model in ("smooth", "discrete"):
                 r = fit_core(points, model=model, start_edge=edge)
-                said = [w for w in r["warnings"] if "the end conditions" in w]
+                said = [w for w in say(r["warnings"]) if "the end conditions" in w]
                 self.assertLess(r["rms"], 2.0 * r["free_rms"], (off, model))
                 if not off:
                     self.assertEqual(said, [], model)

@@ -199,6 +199,10 @@ def test_summaries_take_a_length_formatter():
     assert el.cost_summary("Start curvature", 0.29, 1.1787, length=inch) == (
         "the end conditions (Start curvature) raise the rms from 0.0114 in (free ends) to "
         "0.0464 in: check that they match the data")
+    assert el.local_cost_summary("Start tangent", "start", 0.29, 1.1787, length=inch) == (
+        "the end conditions (Start tangent) raise the rms near the start (the first 10% of "
+        "the points' run from it) from 0.0114 in (free ends) to 0.0464 in: check that they "
+        "match the data")
     assert el.resample_summary(20.0, 1.1787, 1e-13, extent=150.0, length=inch).startswith(
         "the curve fitted to the points resampled at 0.787 in lies 0.0464 in from them")
     d = [1.0, 1.2, 9.05, 1.1, 16.0, 1.69, 0.5]
