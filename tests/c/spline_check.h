@@ -9,6 +9,21 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* The length of the polygon through the n points xy, and its longest side. */
+static inline double polygon_length(const double *xy, size_t n)
+{
+    double L = 0.0;
+    for (size_t i = 0; i + 1 < n; i++) L += hypot(xy[2 * i + 2] - xy[2 * i], xy[2 * i + 3] - xy[2 * i + 1]);
+    return L;
+}
+
+static inline double longest_side(const double *xy, size_t n)
+{
+    double h = 0.0;
+    for (size_t i = 0; i + 1 < n; i++) h = fmax(h, hypot(xy[2 * i + 2] - xy[2 * i], xy[2 * i + 3] - xy[2 * i + 1]));
+    return h;
+}
+
 static inline double wrap(double a) { return a - 2.0 * M_PI * nearbyint(a / (2.0 * M_PI)); }
 
 /* Point, tangent angle, curvature and kappa' (central difference) of a piece at s. */
@@ -66,7 +81,7 @@ static inline void check_spline(const double *xy, size_t n, const el_spline_opti
     const size_t nk = result_knots(xy, o, r, kxy, pt);
     double ext = 0.0;
     for (size_t i = 0; i < r->npoints; i++) ext = fmax(ext, fmax(fabs(xy[2 * i]), fabs(xy[2 * i + 1])));
-    for (size_t j = 0; j + 1 < n; j++) ext = fmax(ext, hypot(xy[2 * j + 2] - xy[2 * j], xy[2 * j + 3] - xy[2 * j + 1]));
+    ext = fmax(ext, longest_side(xy, n));
     const double kmax = r->max_curvature;
     double E = 0.0, L = 0.0, kseen = 0.0;
     for (size_t j = 0; j < m; j++) {

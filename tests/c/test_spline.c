@@ -195,9 +195,7 @@ START_TEST(tension_mode_follows_its_ducks)
     };
     const double c[] = {0.01, 0.043, 0.1, 1.0, 10.0};
     for (size_t k = 0; k < sizeof sets / sizeof sets[0]; k++) {
-        double poly = 0.0;
-        for (size_t i = 0; i + 1 < sets[k].n; i++)
-            poly += hypot(sets[k].xy[2 * i + 2] - sets[k].xy[2 * i], sets[k].xy[2 * i + 3] - sets[k].xy[2 * i + 1]);
+        const double poly = polygon_length(sets[k].xy, sets[k].n);
         for (size_t j = 0; j < sizeof c / sizeof c[0]; j++) {
             el_spline_options o = opts(EL_SPLINE_TENSION, c[j] / (sets[k].extent * sets[k].extent));
             el_spline_result r;
@@ -463,9 +461,7 @@ END_TEST
  * its resolution (residual <= 1e-7, elastica.h: Accuracy), pulled shorter than at 300 */
 START_TEST(taut_batten_under_a_high_tension)
 {
-    double h = 0.0;
-    for (size_t j = 0; j + 1 < NSKETCH; j++)
-        h = fmax(h, hypot(sketch[2 * j + 2] - sketch[2 * j], sketch[2 * j + 3] - sketch[2 * j + 1]));
+    const double h = longest_side(sketch, NSKETCH);
     const double sh2[] = {300.0, 450.0, 500.0};
     double prev = HUGE_VAL;
     for (size_t i = 0; i < 3; i++) {

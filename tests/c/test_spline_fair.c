@@ -55,12 +55,6 @@ static const double T103[] = {
 
 #define NPTS(a) (sizeof (a) / (2 * sizeof (a)[0]))
 
-static double polygon(const double *xy, size_t n)
-{
-    double L = 0.0;
-    for (size_t i = 0; i + 1 < n; i++) L += hypot(xy[2 * i + 2] - xy[2 * i], xy[2 * i + 3] - xy[2 * i + 1]);
-    return L;
-}
 
 /* proper crossings of segments a-b and c-d */
 static int cross(const double *a, const double *b, const double *c, const double *d)
@@ -121,7 +115,7 @@ static void tension_is_the_batten(const double *xy, size_t n, double L, int cros
     check_spline(xy, n, &t, &rt, 1e-9);
     ck_assert_int_eq(rt.loops, 0);
     ck_assert_int_le(spline_crossings(&rt), crossings);
-    ck_assert_double_lt(rt.length, 1.5 * polygon(xy, n));
+    ck_assert_double_lt(rt.length, 1.5 * polygon_length(xy, n));
     ck_assert_double_le(lagrangian(&rt), lagrangian(&rl) * (1.0 + 1e-9));
     el_spline_result_free(&rl);
     el_spline_result_free(&rt);
@@ -134,7 +128,7 @@ static void tension_is_the_batten(const double *xy, size_t n, double L, int cros
  * times, its polygon once) did not converge at its length-mode batten's tension. */
 START_TEST(tension_mode_returns_the_batten_not_a_figure_eight)
 {
-    tension_is_the_batten(SPIKE, NPTS(SPIKE), 1.25 * polygon(SPIKE, NPTS(SPIKE)), 0);
+    tension_is_the_batten(SPIKE, NPTS(SPIKE), 1.25 * polygon_length(SPIKE, NPTS(SPIKE)), 0);
     tension_is_the_batten(T71, NPTS(T71), 5.768397377494129, 0);
     tension_is_the_batten(T14, NPTS(T14), 11.471080387236745, 3);
     ck_assert_int_eq(polyline_crossings(T14, NPTS(T14)), 1);   /* the ducks loop: crossings allowed */
@@ -145,7 +139,7 @@ START_TEST(tension_mode_returns_the_batten_not_a_figure_eight)
     check_spline(SPIKE, NPTS(SPIKE), &t, &r, 1e-9);
     ck_assert_int_eq(spline_crossings(&r), 0);
     ck_assert_int_eq(r.loops, 0);
-    ck_assert_double_lt(r.length, 1.3 * polygon(SPIKE, NPTS(SPIKE)));
+    ck_assert_double_lt(r.length, 1.3 * polygon_length(SPIKE, NPTS(SPIKE)));
     ck_assert_double_lt(lagrangian(&r), 31.6);   /* 42.45 before; the batten of 1.25 x: 31.68 at 1.284 */
     el_spline_result_free(&r);
 }
@@ -166,7 +160,7 @@ START_TEST(looping_splines_are_flagged)
         el_spline_result r;
         ck_assert_int_eq(solve(c[i].xy, c[i].n, &t, &r), EL_OK);
         check_spline(c[i].xy, c[i].n, &t, &r, 1e-9);
-        const int wanders = spline_crossings(&r) > 0 || r.length > 4.0 * polygon(c[i].xy, c[i].n);
+        const int wanders = spline_crossings(&r) > 0 || r.length > 4.0 * polygon_length(c[i].xy, c[i].n);
         ck_assert_int_eq(r.loops, wanders);
         ck_assert_int_eq(r.loops, i < 4);
         el_spline_result_free(&r);
@@ -189,8 +183,8 @@ START_TEST(length_mode_passes_a_fold_in_sigma)
 {
     const struct { const double *xy; size_t n; double L; } c[] = {
         {T48, NPTS(T48), 18.781464988423473}, {T103, NPTS(T103), 7.76764725229403},
-        {HAIRPIN, NPTS(HAIRPIN), 1.55 * polygon(HAIRPIN, NPTS(HAIRPIN))}, {SPIKE, NPTS(SPIKE), 1.40 * polygon(SPIKE, NPTS(SPIKE))},
-        {T48, NPTS(T48), 1.3 * polygon(T48, NPTS(T48))}};
+        {HAIRPIN, NPTS(HAIRPIN), 1.55 * polygon_length(HAIRPIN, NPTS(HAIRPIN))}, {SPIKE, NPTS(SPIKE), 1.40 * polygon_length(SPIKE, NPTS(SPIKE))},
+        {T48, NPTS(T48), 1.3 * polygon_length(T48, NPTS(T48))}};
     for (size_t i = 0; i < sizeof c / sizeof c[0]; i++) {
         el_spline_options o = opts(EL_SPLINE_LENGTH, c[i].L);
         el_spline_result r;

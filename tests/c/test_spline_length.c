@@ -16,9 +16,7 @@ START_TEST(length_mode_meets_the_length_and_the_tension_mode)
     ck_assert_int_eq(solve(sketch, NSKETCH, &t, &r0), EL_OK);
     const double Lfree = r0.length;
     el_spline_result_free(&r0);
-    double polygon = 0.0;
-    for (int i = 0; i + 1 < NSKETCH; i++)
-        polygon += hypot(sketch[2 * i + 2] - sketch[2 * i], sketch[2 * i + 3] - sketch[2 * i + 1]);
+    const double polygon = polygon_length(sketch, NSKETCH);
     const double Ls[] = {Lfree * 1.002, Lfree, Lfree * 0.999, polygon + 0.3 * (Lfree - polygon)};
     for (size_t i = 0; i < sizeof Ls / sizeof Ls[0]; i++) {
         el_spline_options o = opts(EL_SPLINE_LENGTH, Ls[i]);
@@ -346,8 +344,7 @@ START_TEST(ducks_near_a_line_buckle_in_their_first_mode)
     for (size_t r = 0; r < 3; r++)
         for (int k = 0; k < 2; k++) {
             xy[7] = raise[r];
-            double poly = 0.0;
-            for (int i = 0; i < 6; i++) poly += hypot(xy[2 * i + 2] - xy[2 * i], xy[2 * i + 3] - xy[2 * i + 1]);
+            const double poly = polygon_length(xy, 7);
             el_spline_options o = opts(EL_SPLINE_LENGTH, (k ? 1.2 : 1.05) * poly);
             el_spline_result res;
             ck_assert_msg(solve(xy, 7, &o, &res) == EL_OK, "raised by %g, %g x", raise[r], k ? 1.2 : 1.05);
@@ -403,12 +400,7 @@ START_TEST(random_walk_under_high_tension_from_the_taut_start)
     static const double walk[] = {-0.525, -0.926, 2.168, -1.906, 1.594, -1.869, 2.078, -0.84,
                                   2.469, -1.713, 2.975, -1.463};
     const size_t n = 6;
-    double poly = 0.0, hmax = 0.0;
-    for (size_t i = 0; i + 1 < n; i++) {
-        const double h = hypot(walk[2 * i + 2] - walk[2 * i], walk[2 * i + 3] - walk[2 * i + 1]);
-        poly += h;
-        hmax = fmax(hmax, h);
-    }
+    const double poly = polygon_length(walk, n), hmax = longest_side(walk, n);
     const double sh2[] = {100.0, 200.0, 300.0};
     double excess[3], dev[3];
     for (int t = 0; t < 3; t++) {
@@ -447,8 +439,7 @@ static const double scan33[] = {
 
 START_TEST(natural_ends_under_high_tension_reach_tol)
 {
-    double Lp = 0.0;
-    for (int i = 0; i + 1 < 33; i++) Lp += hypot(scan33[2 * i + 2] - scan33[2 * i], scan33[2 * i + 3] - scan33[2 * i + 1]);
+    const double Lp = polygon_length(scan33, 33);
     const double hm = Lp / 32.0, sh2[] = {40.0, 55.0, 70.0};
     for (size_t c = 0; c < 3; c++) {
         el_spline_options o = opts(EL_SPLINE_TENSION, sh2[c] / (hm * hm));
@@ -502,8 +493,7 @@ START_TEST(hand_placed_ducks)
     for (size_t c = 0; c < 2; c++) {
         const double *xy = cases[c].xy;
         const size_t n = cases[c].n;
-        double Lp = 0.0;
-        for (size_t i = 0; i + 1 < n; i++) Lp += hypot(xy[2 * i + 2] - xy[2 * i], xy[2 * i + 3] - xy[2 * i + 1]);
+        const double Lp = polygon_length(xy, n);
         const double sig[2] = {0.0, cases[c].sigma};
         double Lfree = 0.0;
         for (int t = 0; t < 2; t++) {

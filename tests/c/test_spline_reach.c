@@ -170,9 +170,7 @@ static const double sheer11[] = {
 
 START_TEST(length_mode_keeps_the_nearest_of_the_bracket)
 {
-    double h = 0.0;
-    for (size_t j = 0; j + 1 < 11; j++)
-        h = fmax(h, hypot(sheer11[2 * j + 2] - sheer11[2 * j], sheer11[2 * j + 3] - sheer11[2 * j + 1]));
+    const double h = longest_side(sheer11, 11);
     el_spline_options o = opts(EL_SPLINE_TENSION, 300.0 / (h * h));
     el_spline_result t, l;
     ck_assert_int_eq(solve(sheer11, 11, &o, &t), EL_OK);
