@@ -157,8 +157,9 @@ int el__hermite_roots_push(hrootlist *l, const hroot *r);
  * (hermite_length.c): samples per search interval ns, sigma lines ng. */
 int el__hermite_solve_tension(hprob *pr, int ns, hrootlist *out);
 /* The same for the length mode's seed lines: the same roots with fewer samples of the
- * separatrix pieces where the objective is affine there (hermite_tension.c). */
-int el__hermite_seed_tension(hprob *pr, int ns, hrootlist *out);
+ * separatrix pieces where the objective is affine there (hermite_tension.c), those pieces
+ * searched only above sep_sigma (at least SEP_SIGMA; below, the x chart's roots). */
+int el__hermite_seed_tension(hprob *pr, int ns, double sep_sigma, hrootlist *out);
 int el__hermite_solve_length(hprob *pr, double Lt, int ng, int ns, hrootlist *out);
 /* The same with every trace followed as far as the former search did (the tests' reference). */
 int el__hermite_solve_length_thorough(hprob *pr, double Lt, int ng, int ns, hrootlist *out);

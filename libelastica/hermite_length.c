@@ -658,14 +658,21 @@ static int trace(tracer *T, int origin, double dir)
  * top line is the one that matters most: it meets both arms of the curves that carry
  * the pairs born near the top (two loops near the separatrix, sigma (Lt - 1)^2 near
  * 128, one loop near 60; on the bench's 1000 problems 460 of its 3660 seeds are passed
- * by no trace from below, and their traces find 605 of the 3494 solutions); below it the lines are spread evenly, a little closer
- * towards the bottom (LINE_POWER), where a tension solve is cheap (no separatrix
- * pieces): on the bench's 1000 problems 15k, 22k, 30k, 98k, 116k and 249k instructions
- * per problem from the bottom line up, 530k in all, 5.4 times the tension-mode solve of
- * the same problems (98k; the whole length-mode solve 1454k), so the lines alone exceed
- * issue 16's target of 4 times; their samples matter little (ns 4 instead of 12: 3 %
- * fewer in all), the top line's separatrix pieces do (without them above sigma 1000: 24
- * of the 3494 solutions lost). */
+ * by no trace from below, and their traces find 605 of the 3494 solutions); below it the
+ * lines are spread evenly, a little closer towards the bottom (LINE_POWER), where a
+ * tension solve is cheap (no separatrix pieces); without the line below the top, or at
+ * power 0.5, make length-recovers loses solutions. The separatrix pieces (separatrix_end:
+ * roots within 1e-3 sigma of |F| = sigma, in y = ln(|F| - sigma)) are searched only above
+ * LINE_SEP_SIGMA, below it the x chart's roots alone, as the tension mode's below
+ * SEP_SIGMA (100): between 100 and 300 they cost more than the rest of the line (the top
+ * line of the median problems, L / |p1 - p0| ~ 2, lies there) and the seeds they add lie
+ * on pieces of C the other seeds' traces meet: the same solutions in make hermite-sets,
+ * of 12 000 random problems with L / |p1 - p0| in [1.4, 2.6] and of make
+ * length-recovers' 138 304; above (at 1000) one solution of the sets was lost, and
+ * without them above 1000, 24 of the bench's 3494. The lines cost 346k instructions per
+ * bench problem (4.2 tension-mode solves of 83k; 404k with the pieces down to 100), the
+ * traces 569k. */
+#define LINE_SEP_SIGMA 300.0
 static int seeds(tracer *T, int nl, int ns)
 {
     const hprob *pr = T->pr;
@@ -678,7 +685,8 @@ static int seeds(tracer *T, int nl, int ns)
         q.sigma = sinh(T->tlo + (T->thi - T->tlo) * frac);
         q.Lmin = 1.0;
         l.n = 0;
-        if ((rc = (T->lean_seeds ? el__hermite_seed_tension : el__hermite_solve_tension)(&q, ns, &l))) break;
+        rc = T->lean_seeds ? el__hermite_seed_tension(&q, ns, LINE_SEP_SIGMA, &l) : el__hermite_solve_tension(&q, ns, &l);
+        if (rc) break;
         for (size_t i = 0; i < l.n && !rc; i++) {
             if (T->nseed == cap) {
                 cap = cap ? 2 * cap : 16;

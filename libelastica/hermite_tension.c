@@ -717,8 +717,10 @@ static int piece_class(const hprob *pr, int b, double a, double c)
 
 static int nbranches(const hprob *pr) { return pr->hcase == 1 ? 2 : pr->hcase == 2 ? 1 : 4; }
 
-/* All roots of the objectives for fixed sigma (seed 004 §4); lean: solve_sep_piece. */
-static int solve_tension(hprob *pr, int ns, int lean, hrootlist *out)
+/* All roots of the objectives for fixed sigma (seed 004 §4); lean: solve_sep_piece; the
+ * separatrix pieces (separatrix_end) only above sep_sigma (SEP_SIGMA but for the length
+ * mode's seed lines), the x chart covering the whole piece below. */
+static int solve_tension(hprob *pr, int ns, int lean, double sep_sigma, hrootlist *out)
 {
     int rc = el__hermite_kappa_bound(pr->sigma, pr->Lmin, &pr->B);
     if (rc || pr->B < 0.0) return rc;
@@ -764,8 +766,9 @@ static int solve_tension(hprob *pr, int ns, int lean, hrootlist *out)
             const double bb = pts[i + 1].x;
             /* separatrix crossings at the ends: the pieces next to them in y (above) */
             double xa = a, xb = bb;
-            if (a_sep && (rc = separatrix_end(pr, b, a, 1.0, bb - a, lean, out, &xa))) return rc;
-            if (pts[i + 1].soft == SPLIT_SEP && (rc = separatrix_end(pr, b, bb, -1.0, bb - xa, lean, out, &xb))) return rc;
+            const int sep = pr->sigma > sep_sigma;
+            if (a_sep && sep && (rc = separatrix_end(pr, b, a, 1.0, bb - a, lean, out, &xa))) return rc;
+            if (pts[i + 1].soft == SPLIT_SEP && sep && (rc = separatrix_end(pr, b, bb, -1.0, bb - xa, lean, out, &xb))) return rc;
             /* samples in proportion to the piece's share of the domain, at least 2 */
             const int m = 1 + (int)ceil(ns * (bb - a) / (2.0 * X));
             c.sep_lo = a_sep && xa == a ? a : NAN;
@@ -777,6 +780,9 @@ static int solve_tension(hprob *pr, int ns, int lean, hrootlist *out)
 }
 
 
-int el__hermite_solve_tension(hprob *pr, int ns, hrootlist *out) { return solve_tension(pr, ns, 0, out); }
+int el__hermite_solve_tension(hprob *pr, int ns, hrootlist *out) { return solve_tension(pr, ns, 0, SEP_SIGMA, out); }
 
-int el__hermite_seed_tension(hprob *pr, int ns, hrootlist *out) { return solve_tension(pr, ns, 1, out); }
+int el__hermite_seed_tension(hprob *pr, int ns, double sep_sigma, hrootlist *out)
+{
+    return solve_tension(pr, ns, 1, fmax(sep_sigma, SEP_SIGMA), out);
+}

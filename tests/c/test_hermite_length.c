@@ -410,7 +410,7 @@ START_TEST(length_mode_seed_lines_find_every_tension_root)
         pq = pr;
         hrootlist full = {NULL, 0, 0}, lean = {NULL, 0, 0};
         ck_assert_int_eq(el__hermite_solve_tension(&pr, 12, &full), EL_OK);
-        ck_assert_int_eq(el__hermite_seed_tension(&pq, 12, &lean), EL_OK);
+        ck_assert_int_eq(el__hermite_seed_tension(&pq, 12, SEP_SIGMA, &lean), EL_OK);
         for (size_t j = 0; j < full.n; j++) {
             ck_assert_msg(root_listed(&full.v[j], &lean), "problem %d sigma %g: root %zu (kappa0 %g, sep %g) lost", i,
                           pr.sigma, j, full.v[j].st.k0, full.v[j].st.has_sep ? full.v[j].st.sep : NAN);
