@@ -685,7 +685,7 @@ static int seeds(tracer *T, int nl, int ns)
         q.sigma = sinh(T->tlo + (T->thi - T->tlo) * frac);
         q.Lmin = 1.0;
         l.n = 0;
-        rc = T->lean_seeds ? el__hermite_seed_tension(&q, ns, LINE_SEP_SIGMA, &l) : el__hermite_solve_tension(&q, ns, &l);
+        rc = T->lean_seeds ? el__hermite_seed_tension(&q, ns, T->line_sep, &l) : el__hermite_solve_tension(&q, ns, &l);
         if (rc) break;
         for (size_t i = 0; i < l.n && !rc; i++) {
             if (T->nseed == cap) {
@@ -748,7 +748,8 @@ static int seeds(tracer *T, int nl, int ns)
 static int lean_line_samples(int ns) { return ns / 2 > 4 ? ns / 2 : 4; }
 
 static int solve_length(hprob *pr, double Lt, int nl, int ns, double long_curves, double line_power,
-                        int lean_seeds, int retrace, int newton_seeds, int chord_start, hrootlist *out)
+                        int lean_seeds, int retrace, int newton_seeds, int chord_start, double line_sep,
+                        hrootlist *out)
 {
     double slo, shi;
     sigma_range(Lt, &slo, &shi);
@@ -768,6 +769,7 @@ static int solve_length(hprob *pr, double Lt, int nl, int ns, double long_curves
     T.retrace = retrace;
     T.newton_seeds = newton_seeds;
     T.chord_start = chord_start;
+    T.line_sep = line_sep;
     int rc = seeds(&T, nl, lean_seeds ? lean_line_samples(ns) : ns);
     for (int i = 0; i < T.nseed && !rc; i++) {
         if (T.visited[i]) continue;
@@ -785,25 +787,30 @@ static int solve_length(hprob *pr, double Lt, int nl, int ns, double long_curves
  * lean_line_samples(ns) bracketing samples each. */
 int el__hermite_solve_length(hprob *pr, double Lt, int nl, int ns, hrootlist *out)
 {
-    return solve_length(pr, Lt, nl, ns, LONG_CURVES, LINE_POWER, 1, 0, 0, 0, out);
+    return solve_length(pr, Lt, nl, ns, LONG_CURVES, LINE_POWER, 1, 0, 0, 0, LINE_SEP_SIGMA, out);
 }
 
 int el__hlen_solve_retracing(hprob *pr, double Lt, int nl, int ns, hrootlist *out)
 {
-    return solve_length(pr, Lt, nl, ns, LONG_CURVES, LINE_POWER, 1, 1, 0, 0, out);
+    return solve_length(pr, Lt, nl, ns, LONG_CURVES, LINE_POWER, 1, 1, 0, 0, LINE_SEP_SIGMA, out);
 }
 
 int el__hlen_solve_newton_seeds(hprob *pr, double Lt, int nl, int ns, hrootlist *out)
 {
-    return solve_length(pr, Lt, nl, ns, LONG_CURVES, LINE_POWER, 1, 0, 1, 0, out);
+    return solve_length(pr, Lt, nl, ns, LONG_CURVES, LINE_POWER, 1, 0, 1, 0, LINE_SEP_SIGMA, out);
 }
 
 int el__hlen_solve_chord_start(hprob *pr, double Lt, int nl, int ns, hrootlist *out)
 {
-    return solve_length(pr, Lt, nl, ns, LONG_CURVES, LINE_POWER, 1, 0, 0, 1, out);
+    return solve_length(pr, Lt, nl, ns, LONG_CURVES, LINE_POWER, 1, 0, 0, 1, LINE_SEP_SIGMA, out);
+}
+
+int el__hlen_solve_line_pieces(hprob *pr, double Lt, int nl, int ns, hrootlist *out)
+{
+    return solve_length(pr, Lt, nl, ns, LONG_CURVES, LINE_POWER, 1, 0, 0, 0, SEP_SIGMA, out);
 }
 
 int el__hermite_solve_length_thorough(hprob *pr, double Lt, int nl, int ns, hrootlist *out)
 {
-    return solve_length(pr, Lt, nl, ns, LONG_CURVES_THOROUGH, LINE_POWER_THOROUGH, 0, 1, 0, 0, out);
+    return solve_length(pr, Lt, nl, ns, LONG_CURVES_THOROUGH, LINE_POWER_THOROUGH, 0, 1, 0, 0, SEP_SIGMA, out);
 }

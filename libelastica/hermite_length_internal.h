@@ -49,6 +49,7 @@ typedef struct {
     int retrace;          /* follow a trace through seeds other traces visited (step_events) */
     int newton_seeds;     /* every seed line crossing by Newton (seed_by_interpolation's plain counterpart) */
     int chord_start;      /* the crossings' Newton from the chord (hermite_start's plain counterpart) */
+    double line_sep;      /* the seed lines' separatrix pieces above this sigma (LINE_SEP_SIGMA) */
     hrootlist *out;
 } tracer;
 
@@ -61,6 +62,10 @@ int el__hlen_solve_newton_seeds(hprob *pr, double Lt, int nl, int ns, hrootlist 
 /* el__hermite_solve_length with the Newton of every L = Lt crossing started on the step's
  * chord (hermite_start's plain counterpart, for test_hermite_length.c) */
 int el__hlen_solve_chord_start(hprob *pr, double Lt, int nl, int ns, hrootlist *out);
+
+/* el__hermite_solve_length with the seed lines' separatrix pieces above SEP_SIGMA, as the
+ * tension mode's (LINE_SEP_SIGMA's plain counterpart, for test_hermite_length.c) */
+int el__hlen_solve_line_pieces(hprob *pr, double Lt, int nl, int ns, hrootlist *out);
 
 /* sinh to a few ulps, faster than libm's (the tracer's coordinates are asinh of the chart's) */
 double el__hlen_sinh(double x);

@@ -189,6 +189,15 @@ START_TEST(length_mode_matches_seeds_as_newton_does)
 }
 END_TEST
 
+/* The seed lines without their separatrix pieces below LINE_SEP_SIGMA (300) against the
+ * lines with them above SEP_SIGMA (100), as the tension mode's (el__hlen_solve_line_pieces):
+ * the top line lies between for Lt in [1.66, 2.14], a quarter of kinds 0, 3 and 4. */
+START_TEST(length_mode_lines_skip_separatrix_pieces_below_300)
+{
+    same_solutions_as("length_mode_lines_skip_separatrix_pieces_below_300", 3141, el__hlen_solve_line_pieces);
+}
+END_TEST
+
 /* Two problems on which the predictor bent by the curvature of C lost a solution the
  * tangent predictor found, when first tried (the step's crossing Newton reached the
  * neighbour of a close pair and took it for the bracketed one; a trace left the range
@@ -472,6 +481,7 @@ int main(void)
     tcase_add_test(tc, length_mode_stops_at_seeds_other_traces_visited);
     tcase_add_test(tc, length_mode_matches_seeds_as_newton_does);
     tcase_add_test(tc, length_mode_starts_crossings_on_the_cubic_as_on_the_chord);
+    tcase_add_test(tc, length_mode_lines_skip_separatrix_pieces_below_300);
     tcase_add_test(tc, length_mode_finds_the_solutions_a_bent_predictor_lost);
     tcase_add_test(tc, length_mode_finds_the_solutions_a_cubic_predictor_lost);
     tcase_add_test(tc, length_mode_halves_a_bracket_along_C);
