@@ -652,26 +652,20 @@ static int trace(tracer *T, int origin, double dir)
     return EL_OK;
 }
 
-/* The seed lines: every tension solution on nl lines over the sigma range in
- * t = asinh(sigma) (hermite_tension.c), ns samples each: both ends of the range and,
- * between them, lines at the fractions 1 - (1 - j / (nl - 1))^T->line_power of it. The
- * top line is the one that matters most: it meets both arms of the curves that carry
- * the pairs born near the top (two loops near the separatrix, sigma (Lt - 1)^2 near
- * 128, one loop near 60; on the bench's 1000 problems 460 of its 3660 seeds are passed
- * by no trace from below, and their traces find 605 of the 3494 solutions); below it the
- * lines are spread evenly, a little closer towards the bottom (LINE_POWER), where a
- * tension solve is cheap (no separatrix pieces); without the line below the top, or at
- * power 0.5, make length-recovers loses solutions. The separatrix pieces (separatrix_end:
- * roots within 1e-3 sigma of |F| = sigma, in y = ln(|F| - sigma)) are searched only above
- * LINE_SEP_SIGMA, below it the x chart's roots alone, as the tension mode's below
- * SEP_SIGMA (100): between 100 and 300 they cost more than the rest of the line (the top
- * line of the median problems, L / |p1 - p0| ~ 2, lies there) and the seeds they add lie
- * on pieces of C the other seeds' traces meet: the same solutions in make hermite-sets,
- * of 12 000 random problems with L / |p1 - p0| in [1.4, 2.6] and of make
- * length-recovers' 138 304; above (at 1000) one solution of the sets was lost, and
- * without them above 1000, 24 of the bench's 3494. The lines cost 346k instructions per
- * bench problem (4.2 tension-mode solves of 83k; 404k with the pieces down to 100), the
- * traces 569k. */
+/* The seed lines: every tension solution on nl lines over the sigma range in t = asinh(sigma)
+ * (hermite_tension.c), ns samples each: both ends of the range and, between them, lines at the
+ * fractions 1 - (1 - j / (nl - 1))^T->line_power of it. The top line meets both arms of the
+ * curves that carry the pairs born near the top (two loops near the separatrix, sigma (Lt - 1)^2
+ * near 128; on the bench's problems its traces alone find 605 of the 3494 solutions); below
+ * it the lines lie a little closer towards the bottom, where a tension solve is cheap (without
+ * the line below the top, or at power 0.5, make length-recovers loses solutions). The lines'
+ * separatrix pieces (separatrix_end) are searched only above LINE_SEP_SIGMA (the x chart's
+ * roots alone below, as the tension mode's below SEP_SIGMA = 100): between 100 and 300, where
+ * the median problems' top line lies, they cost more than the rest of the line and their seeds
+ * lie on pieces of C other seeds' traces meet (the same solutions in make hermite-sets, of
+ * 12 000 random problems with L / |p1 - p0| in [1.4, 2.6] and of make length-recovers' 138 304;
+ * at 1000 the sets lost one; el__hlen_solve_line_pieces). The lines cost 346k instructions per
+ * bench problem (4.2 tension solves; 404k with the pieces down to 100), the traces 569k. */
 #define LINE_SEP_SIGMA 300.0
 static int seeds(tracer *T, int nl, int ns)
 {
