@@ -11,10 +11,11 @@ the GUI smoke test (gui_smoke.py calls run_all):
   icon, the expression in its tooltip): typing in it showed a value the feature did not
   take, and OK kept the expression's silently;
 - lengths show in the user's unit schema and take what is typed in any unit: the boxes
-  showed mm under every schema and '7 in mm' while '7 in' was typed.
+  showed mm under every schema and '7 in mm' while '7 in' was typed; a plain number is
+  in the unit the box shows now, after its arrows changed it ('12' over '10 m').
 
 Screenshots: gui_blend_picked_tops.png, gui_blend_ends_by_length.png,
-gui_blend_bound.png, gui_blend_imperial.png."""
+gui_blend_bound.png, gui_blend_imperial.png, gui_blend_typed_after_step.png."""
 import FreeCAD as App
 import FreeCADGui as Gui
 from PySide import QtCore, QtGui
@@ -245,6 +246,53 @@ def unit_schemas(doc, b):
     finally:
         prefs.SetInt("UserSchema", old)
         App.Units.setSchema(old)
+
+
+def typed_after_a_step(doc, b):
+    """A number typed after the arrows changed the unit a box shows is in the unit shown
+    now, as FreeCAD 0.20's Gui::QuantitySpinBox reads it (measured: '12' after Up took
+    '9999.00 mm' to '10.00 m' is 12000 mm): the Length box read it in the unit shown when
+    it got focus (12 mm), the Tolerance box too (Down from '1 \u00b5m' to '100 nm', '200'
+    was 200 \u00b5m)."""
+    from freecad.elastica import taskpanels as T
+    b.Mode, b.Length, b.Tolerance = "length", 9999.0, 0.001
+    doc.recompute()
+    Gui.ActiveDocument.setEdit(b.Name)
+    G.wait(300)
+    panel = T.CURRENT[0]
+    try:
+        panel.length.setFocus()
+        G.pump()
+        key(panel.length.lineEdit(), QtCore.Qt.Key_Up)
+        G.wait(400)
+        shown = panel.length.text()
+        G.check(shown == "10 m" and b.Length.Value == 10000.0,
+                f"Up from 9999 mm: {shown!r}, Length {b.Length}")
+        panel.length.lineEdit().selectAll()
+        key(panel.length.lineEdit(), QtCore.Qt.Key_Delete)
+        keys(panel.length.lineEdit(), "12")
+        G.wait(400)
+        G.check(b.Length.Value == 12000.0, f"'12' over '10 m' is 12 m: Length {b.Length}")
+        key(panel.length.lineEdit(), QtCore.Qt.Key_Tab)      # '12' read in m stays shown
+        G.wait(300)
+        retype(panel.length, "20")
+        G.wait(400)
+        G.check(b.Length.Value == 20000.0, f"'20' over that '12' is 20 m: Length {b.Length}")
+        panel.tol.setFocus()
+        G.pump()
+        key(panel.tol.lineEdit(), QtCore.Qt.Key_Down)
+        G.wait(300)
+        shown = panel.tol.text()
+        panel.tol.lineEdit().selectAll()
+        key(panel.tol.lineEdit(), QtCore.Qt.Key_Delete)
+        keys(panel.tol.lineEdit(), "200")
+        G.wait(400)
+        G.check(shown == "100 nm" and abs(b.Tolerance.Value - 2e-4) < 1e-15,
+                f"'200' over {shown!r} is 200 nm: Tolerance {b.Tolerance}")
+        G.screenshot("gui_blend_typed_after_step.png")
+    finally:
+        panel.reject()
+        G.pump()
 
 
 def said_in_the_schema_of_now(doc, b, prefs):
@@ -480,6 +528,7 @@ def run_all(smoke):
     b = ends_toggled(doc, sk, right, left)
     bound_tension(doc, b)
     unit_schemas(doc, b)
+    typed_after_a_step(doc, b)
     comb_in_the_schema(doc, b)
     tension_mode_and_g2_reach(doc, sk, right, left)
     bound_length_toggled(doc, sk, right, left)

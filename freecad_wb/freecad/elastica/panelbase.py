@@ -74,12 +74,13 @@ class NumberBox(QtGui.QDoubleSpinBox):
     1/mm, 1/mm^2), accepts scientific notation, quantities in other units and expressions as
     FreeCAD's own boxes do ('7 cm', '2.75 in', '=2*35': _in_unit) and steps by
     ``singleStep``. As FreeCAD 0.20's Gui::QuantitySpinBox (measured under each schema), a
-    plain number is in the unit the box shows ('6' in a box showing '5.94 in' is 6 in) and a
-    length box's arrows step ``singleStep`` of that unit (1 in, 1 cm, 1 m). The unit is part
-    of the text, not a suffix: a suffix stayed behind what was typed ('7 in mm')."""
+    plain number is in the unit the box shows, that of the text it last wrote ('6' in a box
+    showing '5.94 in' is 6 in; '12' after Up took '9999 mm' to '10 m' is 12 m), and a length
+    box's arrows step ``singleStep`` of that unit (1 in, 1 cm, 1 m). The unit is part of the
+    text, not a suffix: a suffix stayed behind what was typed ('7 in mm')."""
 
     unit = ""                            # Qt calls validate() while __init__ runs
-    typing = None                        # the unit shown when the designer began to type
+    written = None                       # (factor, unit) of the text the box last wrote
 
     def __init__(self, lo, hi, step, unit="", tip=""):
         super().__init__()
@@ -112,17 +113,25 @@ class NumberBox(QtGui.QDoubleSpinBox):
         factor, unit = self.shown(value)
         return f"{value / factor:.6g} {unit}" if unit else f"{value:.6g}"
 
-    def focusInEvent(self, event):
-        self.typing = self.shown(self.value())     # '6' typed over '5.94 in' is 6 in
-        super().focusInEvent(event)
+    def _wrote(self):
+        """The box may have written its text (a value set, an arrow step, focus):
+        when the text is its own text of its value, a number typed next is in its unit; a
+        text being typed is not ('6' typed over '5.94 in' is 6 in, '62' too). (Qt writes the
+        text with the line edit's signals blocked: its textChanged says nothing.)"""
+        if self.lineEdit().text() == self.textFromValue(self.value()):
+            self.written = self.shown(self.value())
 
-    def focusOutEvent(self, event):
-        self.typing = None
-        super().focusOutEvent(event)
+    def setValue(self, value):
+        super().setValue(value)
+        self._wrote()
+
+    def focusInEvent(self, event):
+        super().focusInEvent(event)
+        self._wrote()
 
     def _number(self, text):
         t = text.strip()
-        factor, unit = self.typing or self.shown(self.value())
+        factor, unit = self.written or self.shown(self.value())
         for u, f in ((unit, factor), (self.unit, 1.0)):
             if u and t.endswith(u):
                 try:
@@ -144,7 +153,8 @@ class NumberBox(QtGui.QDoubleSpinBox):
 
     def stepBy(self, steps):
         if self.unit != "mm":           # tensions, curvatures: the problem's own scale
-            return super().stepBy(steps)
+            super().stepBy(steps)
+            return self._wrote()
         factor, _ = self.shown(self.value())
         self.setValue(self.value() + steps * self.singleStep() * factor)
         self.selectAll()
