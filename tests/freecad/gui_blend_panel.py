@@ -15,7 +15,8 @@ the GUI smoke test (gui_smoke.py calls run_all):
   in the unit the box shows now, after its arrows changed it ('12' over '10 m').
 
 Screenshots: gui_blend_picked_tops.png, gui_blend_ends_by_length.png,
-gui_blend_bound.png, gui_blend_imperial.png, gui_blend_typed_after_step.png."""
+gui_blend_bound.png, gui_blend_imperial.png, gui_blend_typed_after_step.png,
+gui_blend_said_after_undo.png."""
 import FreeCAD as App
 import FreeCADGui as Gui
 from PySide import QtCore, QtGui
@@ -195,6 +196,7 @@ def unit_schemas(doc, b):
     doc.recompute()
     try:
         said_in_the_schema_of_now(doc, b, prefs)
+        said_after_undo(doc, b, prefs)
         for schema, length, tol in ((3, "5.94488 in", "3.93701e-05 in"), (4, "15.1 cm",
                                                                            "0.0001 cm")):
             prefs.SetInt("UserSchema", schema)
@@ -321,6 +323,48 @@ def said_in_the_schema_of_now(doc, b, prefs):
     App.Units.setSchema(0)
     b.Continuity = "G1"
     doc.recompute()
+
+
+def said_after_undo(doc, b, prefs):
+    """Edit > Undo of a panel's edit under Imperial decimal, the blend recomputed under
+    Standard before it: the panel opened next says the Status of the state undone to in
+    inches, as a recompute writes it (it said the stored 'length ... mm')."""
+    from freecad.elastica import taskpanels as T
+    prefs.SetInt("UserSchema", 0)
+    App.Units.setSchema(0)
+    b.Continuity, b.Mode, b.Length = "G2", "length", 151.0
+    doc.recompute()
+    doc.commitTransaction()
+    stored = b.Status
+    prefs.SetInt("UserSchema", 3)
+    App.Units.setSchema(3)
+    try:
+        Gui.ActiveDocument.setEdit(b.Name)
+        G.wait(300)
+        panel = T.CURRENT[0]
+        retype(panel.length, "7 in")
+        G.wait(400)
+        panel.accept()
+        G.pump()
+        Gui.runCommand("Std_Undo")
+        G.wait(300)
+        Gui.ActiveDocument.setEdit(b.Name)
+        G.wait(300)
+        panel = T.CURRENT[0]
+        text = panel.result.text()
+        G.screenshot("gui_blend_said_after_undo.png")
+        panel.reject()
+        G.pump()
+        b.touch()
+        doc.recompute()
+        G.check(b.Length.Value == 151.0 and " mm" in stored and "mm" not in text
+                and b.Status.replace("; ", "<br>") in text, f"after Undo the panel says {text!r} (a recompute: "
+                f"{b.Status!r}; stored {stored!r})")
+    finally:
+        prefs.SetInt("UserSchema", 0)
+        App.Units.setSchema(0)
+        b.Continuity = "G1"
+        doc.recompute()
 
 
 def note_said_again(panel):

@@ -67,6 +67,73 @@ class SaidNotesTest(unittest.TestCase):
         App.Units.setSchema(0)
         self.assertEqual(said(f, "Warnings"), before)
 
+    def g2_blend_edited_under_imperial(self):
+        """A G2 blend recomputed under Standard, then edited (Length 250 mm) and recomputed
+        under Imperial decimal, each in an Undo step; returns (blend, its Status before the
+        edit, as a recompute under Imperial writes it)."""
+        self.doc.UndoMode = 1
+        sk = S.two_lines_sketch(self.doc)
+        self.doc.openTransaction("Blend")
+        b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Continuity="G2", Mode="length")
+        self.doc.recompute()
+        self.doc.commitTransaction()
+        App.Units.setSchema(3)
+        b.touch()
+        self.doc.recompute()
+        before = b.Status
+        App.Units.setSchema(0)
+        b.touch()
+        self.doc.recompute()
+        self.assertIn("length 49.86 mm", b.Status)
+        App.Units.setSchema(3)
+        self.doc.openTransaction("Edit")
+        b.Length = 250.0
+        self.doc.recompute()
+        self.doc.commitTransaction()
+        self.assertIn("length 9.843 in", b.Status)
+        return b, before
+
+    def test_undo_says_the_state_undone_to_in_the_schema_of_now(self):
+        """Edit > Undo restores the Status of the state before, as stored: said in the schema
+        of now, as a recompute of that state writes it (the marked texts lived in the proxy,
+        which Undo does not restore: a panel said 'length 49.86 mm' beside boxes in inches);
+        Redo says the edit's again."""
+        from freecad.elastica.proxy import SAID
+        b, before = self.g2_blend_edited_under_imperial()
+        edited = b.Status
+        self.doc.undo()
+        self.assertEqual(b.Length.Value, 0.0)
+        self.assertIn("length 49.86 mm", b.Status)         # as stored, under Standard
+        self.assertEqual(said(b, "Status"), before)
+        self.assertIn("length 1.963 in", before)
+        self.doc.redo()
+        self.assertEqual(said(b, "Status"), edited)
+        self.assertEqual(b.getEditorMode(SAID), ["Hidden"])
+
+    def test_a_document_made_before_says_its_texts_again(self):
+        """A document saved before the marked texts had their property (the proxy's state
+        kept them): reopened, its Status said in the schema of now, and kept in SAID."""
+        import json
+        import os
+        import tempfile
+        from freecad.elastica.proxy import SAID
+        sk = S.two_lines_sketch(self.doc)
+        b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Continuity="G2")
+        self.doc.recompute()
+        b.Proxy._said = json.loads(getattr(b, SAID))
+        b.removeProperty(SAID)
+        with tempfile.TemporaryDirectory() as tmp:
+            path = os.path.join(tmp, "before.FCStd")
+            self.doc.saveAs(path)
+            name, label = self.doc.Name, b.Label
+            App.closeDocument(name)
+            self.doc = App.openDocument(path)
+        b = self.doc.getObjectsByLabel(label)[0]
+        App.Units.setSchema(3)
+        self.assertIn("length 1.963 in", said(b, "Status"))
+        self.assertEqual(list(json.loads(getattr(b, SAID))), ["Status"])
+        self.assertFalse(b.Proxy._said)
+
     def test_comb_scale_in_the_schema(self):
         """The comb panel's 'scale ... mm\u00b2' line in the square of the schema's unit."""
         from freecad.elastica.units import area_text

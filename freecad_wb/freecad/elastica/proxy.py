@@ -11,6 +11,7 @@ attached through ``VIEW_HOOK``, which the GUI (init_gui) sets.
 """
 from __future__ import annotations
 
+import json
 import math
 import sys
 
@@ -199,18 +200,49 @@ def report(obj, msg, error=True):
         set_said(obj, "Status", f"error: {msg}" if error else msg)
 
 
+# The marked texts behind the said ones (set_said), in a hidden property beside them, so that
+# Undo and Redo restore both together (a proxy's own state is no part of a transaction: after
+# an Undo the panel said the older Status as stored, in the schema of its recompute), and a
+# file keeps them: JSON {prop: [said text, marked text]} (its escapes keep the marks'
+# control characters out of the file's XML).
+SAID = "SaidTexts"
+
+
+def add_said(obj):
+    """The hidden property SAID (output: setting it touches nothing); a document saved
+    before it kept the marked texts in the proxy's state ('said'): they move there."""
+    if SAID in obj.PropertiesList:
+        return
+    obj.addProperty("App::PropertyString", SAID, "Result", "The texts of Status and Warnings "
+                    "with their figures marked, said again in the unit schema of now", 4 | 8)
+    proxy = getattr(obj, "Proxy", None)
+    old = getattr(proxy, "_said", None)
+    if old:
+        setattr(obj, SAID, json.dumps(old, sort_keys=True))
+        proxy._said = {}
+
+
+def _kept(obj):
+    text = getattr(obj, SAID, "") if SAID in obj.PropertiesList else ""
+    return json.loads(text) if text else dict(getattr(getattr(obj, "Proxy", None), "_said", None)
+                                              or {})
+
+
 def set_said(obj, prop, marked):
     """Set the text (or list of texts) property ``prop`` to ``marked`` said in the schema of
-    now (units.say), keeping the marked text for said()."""
+    now (units.say), keeping the marked text for said() (in SAID)."""
     value = say(marked)
     old = getattr(obj, prop)
     if (list(old) if isinstance(old, (list, tuple)) else old) != value:   # unchanged: untouched
         setattr(obj, prop, value)
-    proxy = getattr(obj, "Proxy", None)
-    if proxy is not None:
-        if not isinstance(getattr(proxy, "_said", None), dict):
-            proxy._said = {}
-        proxy._said[prop] = [value, list(marked) if isinstance(marked, (list, tuple)) else marked]
+    kept = _kept(obj)
+    kept[prop] = [value, list(marked) if isinstance(marked, (list, tuple)) else marked]
+    if SAID in obj.PropertiesList:
+        text = json.dumps(kept, sort_keys=True)
+        if getattr(obj, SAID) != text:
+            setattr(obj, SAID, text)
+    elif getattr(obj, "Proxy", None) is not None:      # not an Elastica feature's: its proxy
+        obj.Proxy._said = kept
 
 
 def said(obj, prop):
@@ -218,7 +250,7 @@ def said(obj, prop):
     where the property still holds what set_said wrote (a schema changed since the
     recompute), else the property as it stands."""
     value = getattr(obj, prop)
-    kept = (getattr(getattr(obj, "Proxy", None), "_said", None) or {}).get(prop)
+    kept = _kept(obj).get(prop)
     now = list(value) if isinstance(value, (list, tuple)) else value
     if kept and kept[0] == now:
         return say(kept[1])
@@ -260,6 +292,7 @@ class FeatureProxy:
         self._exact = {}
         obj.Proxy = self
         self.setup(obj)
+        add_said(obj)
 
     # ---------------------------------------------------------------- recompute
 
@@ -321,7 +354,7 @@ class FeatureProxy:
             state["exact"] = {p: repr(float(getattr(obj, p))) for p in self._float_props(obj)}
         except Exception:  # no object (yet) / being deleted: nothing exact to keep
             pass
-        if getattr(self, "_said", None):
+        if getattr(self, "_said", None):       # a document before SAID, not restored yet
             state["said"] = self._said
         return state
 
@@ -343,6 +376,7 @@ class FeatureProxy:
             self.setup(obj)           # properties added by newer versions
         finally:
             self._restoring = False
+        add_said(obj)
         from .links import remember_followed
         remember_followed(obj)
         changed = False
