@@ -102,6 +102,30 @@ class FitMeasureTest(unittest.TestCase):
         finally:
             App.Units.setSchema(schema)
 
+    def test_errors_give_exact_lengths_in_the_schema(self):
+        """The Resample errors write their lengths by the exact value in the schema's unit
+        (units.exact_mark), not their 4-digit mm text converted afterwards: points reaching
+        31.355792 mm = 1.23448 in from their start, refused a 5000 mm step under Imperial
+        decimal, are 'all within 1.234 in' (the text '31.36 mm' converted said 1.235 in);
+        under Standard the text is as before."""
+        reach = 1.23448 * 25.4
+        xy = [(reach * i / 19, 2.0 * math.sin(math.pi * i / 19)) for i in range(20)]
+        f = Fi.make(self.doc, [(S.points_sketch(self.doc, xy), [])], ResampleStep=5000.0)
+        schema = App.Units.getSchema()
+        try:
+            App.Units.setSchema(0)
+            self.doc.recompute()
+            self.assertIn("error: Resample = 5000 mm is longer than the points reach (all "
+                          "within 31.36 mm of the end", f.Status)
+            App.Units.setSchema(3)
+            f.touch()
+            self.doc.recompute()
+            self.assertIn("error: Resample = 196.9 in is longer than the points reach (all "
+                          "within 1.234 in of the end", f.Status)
+            self.assertNotIn("mm", f.Status)
+        finally:
+            App.Units.setSchema(schema)
+
     def test_length_property_docs_name_no_unit(self):
         """The length properties (App::PropertyDistance) show their value in the user's
         schema in the property editor: their documentation says no '(mm)' beside it."""

@@ -111,8 +111,8 @@ def _check_length(bspline, extent, constraints, fields, reversed_joins):
         return
     why = (f"the end conditions ({field_names(constraints, fields)}) cannot be met along the points"
            if constraints else "check the points")
-    raise InputProblem(f"the fit shrank to a curve {length:.2g} mm long, for points "
-                       f"{extent:.4g} mm across: {why}" +
+    raise InputProblem(f"the fit shrank to a curve {exact_mark(length, 2)} long, for points "
+                       f"{exact_mark(extent, 4)} across: {why}" +
                        "".join(f". {w}" for w in reversed_joins[:1]))
 
 
@@ -171,8 +171,9 @@ def _off_plane(off, rms, extent):
 def _step_advice(length):
     """What a resampling step of points whose polyline is length long must be below, and
     the way out."""
-    return (f"the points' polyline is {length:.4g} mm long, so {MIN_POINTS} points need a step "
-            f"under {length / (MIN_POINTS - 1):.4g} mm; 0 fits the points as they are")
+    return (f"the points' polyline is {exact_mark(length, 4)} long, so {MIN_POINTS} points need "
+            f"a step under {exact_mark(length / (MIN_POINTS - 1), 4)}; 0 fits the points as they "
+            "are")
 
 
 def _check_reach(xy, step, starts, default=None):
@@ -186,17 +187,17 @@ def _check_reach(xy, step, starts, default=None):
     used = default if default is not None and not step > 0 else step
     if not used > reach:
         return
-    beyond = (f"longer than the points reach (all within {reach:.4g} mm of the end the "
-              "polygon starts from)")
+    beyond = (f"longer than the points reach (all within {exact_mark(reach, 4)} of the end "
+              "the polygon starts from)")
     if default is None:
-        raise InputProblem(f"Resample = {step:g} mm is {beyond}: "
+        raise InputProblem(f"Resample = {exact_mark(step)} is {beyond}: "
                            + _step_advice(polyline_length(xy)))
     if step > 0:
         zero = f", or 0 for {_default_step_name(default)}" if default <= reach else ""
-        raise InputProblem(f"Resample = {step:g} mm is {beyond}: set a step under "
-                           f"{reach:.4g} mm{zero}")
+        raise InputProblem(f"Resample = {exact_mark(step)} is {beyond}: set a step under "
+                           f"{exact_mark(reach, 4)}{zero}")
     raise InputProblem(f"Resample = 0 takes {_default_step_name(default)}, which is {beyond}: "
-                       f"set a step under {reach:.4g} mm")
+                       f"set a step under {exact_mark(reach, 4)}")
 
 
 def _resampled(xy, step):
@@ -205,10 +206,11 @@ def _resampled(xy, step):
     _check_reach(xy, step, [-1 if xy[-1, 0] < xy[0, 0] else 0])
     most, length = el().RESAMPLE_MAX_VERTICES, polyline_length(xy)
     if length / step > most - 1:
-        raise InputProblem(f"Resample = {step:g} mm would cut the points' {length:.4g} mm "
-                           f"polyline into {length / step:.3g} segments, more than {most - 1}: use "
-                           f"a step of at least {length / (most - 1):.4g} mm, or 0 to fit the "
-                           "points as they are")
+        raise InputProblem(f"Resample = {exact_mark(step)} would cut the points' "
+                           f"{exact_mark(length, 4)} polyline into {length / step:.3g} segments, "
+                           f"more than {most - 1}: use a step of at least "
+                           f"{exact_mark(length / (most - 1), 4)}, or 0 to fit the points as "
+                           "they are")
     # the library's polygon (el.resampled_polygon): in the user's order, of the medians of
     # runs where the points' polyline is their noise's zigzag, ended at their end points
     out = el().resampled_polygon(xy, step)
@@ -219,8 +221,8 @@ def _resampled(xy, step):
         why = (_step_advice(length) if step >= length / (MIN_POINTS - 1) else
                "the polygon jumps where the points double back or pass within the step of "
                "themselves; 0 fits the points as they are")
-        raise InputProblem(f"Resample = {step:g} mm leaves {len(out)} points; a fit needs "
-                           f"{MIN_POINTS}: {why}")
+        raise InputProblem(f"Resample = {exact_mark(step)} leaves {len(out)} points; a fit "
+                           f"needs {MIN_POINTS}: {why}")
     return out
 
 
