@@ -478,18 +478,18 @@ class BlendCurve:
 
     def _loop_text(self, loops: int, length: Optional[LengthFormat] = None) -> str:
         """The loop warning: how many, the widest LOOPS_NAMED by their points and sizes
-        (numbers alone, by ``length(value, digits, False)`` where given)."""
+        (by ``length(value, digits)`` where given, with its unit; else numbers alone)."""
         fmt = lengths("", length)
         times = "once" if loops == 1 else f"{loops} times"
         places = self.loop_places()
         said = []
         for k, p in enumerate(places[:LOOPS_NAMED]):
-            beside = " and ".join(fmt(c, 3, False) for c in p["beside"] if c is not None)
+            beside = " and ".join(fmt(c, 3) for c in p["beside"] if c is not None)
             said.append(f"between points {p['between'][0]} and {p['between'][1]} ("
                         + ("counted from 0; " if k == 0 else "")
-                        + f"chord {fmt(p['chord'], 3, False)}"
+                        + f"chord {fmt(p['chord'], 3)}"
                         + (f" beside {beside}" if beside else "")
-                        + f", a loop {fmt(p['width'], 2, False)} wide)")
+                        + f", a loop {fmt(p['width'], 2)} wide)")
         more = len(places) - len(said)
         where = (", ".join(said[:-1]) + " and " + said[-1] if len(said) > 1 else
                  "".join(said)) + (f", and {more} more" if more > 0 else "")

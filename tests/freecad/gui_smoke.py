@@ -22,8 +22,9 @@ gui_spline_spike.png (the note why at a tension), gui_spline_loops.png (its warn
 gui_blend_undo.png and gui_fit_undo.png (Edit > Undo during an edit:
 the panel closed); gui_panel_lifecycle.py's gui_close_with_panel.png,
 gui_delete_during_panel.png and gui_keep_needs_copy.png; gui_blend_panel.py's
-gui_blend_picked_tops.png, gui_blend_ends_by_length.png, gui_blend_bound.png and
-gui_blend_imperial.png. The outcome goes
+gui_blend_picked_tops.png, gui_blend_ends_by_length.png, gui_blend_bound.png,
+gui_blend_imperial.png and the others its docstring names; gui_schema_texts.py's
+gui_ellblend_loop_imperial.png. The outcome goes
 to gui_smoke.result (first line PASS or FAIL); FreeCAD is then ended with os._exit
 because its exit status says nothing about a script. Only APIs present in FreeCAD
 0.20 and 1.0 are used (PySide through FreeCAD's shim)."""
@@ -1055,6 +1056,10 @@ def run():
     # the spline's and the fit's edge buttons read where the edge was clicked
     import gui_edge_clicks
     gui_edge_clicks.run_all(sys.modules[__name__])
+
+    # texts in the unit schema: the elliptic blend's loop sizes
+    import gui_schema_texts
+    gui_schema_texts.run_all(sys.modules[__name__])
 
 
 def main():

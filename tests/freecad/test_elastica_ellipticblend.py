@@ -385,8 +385,11 @@ class EllipticBlendTest(unittest.TestCase):
         self.assertEqual(len(f.Warnings), 2)
         self.assertIn("ill-conditioned", f.Warnings[0])
         self.assertIn("the curve loops", f.Warnings[1])
-        self.assertIn("between points 0 and 3 (counted from 0; chord 100", f.Warnings[1])
-        self.assertEqual(list(f.Warnings), want.warnings())     # where, and the loop's width
+        self.assertIn("between points 0 and 3 (counted from 0; chord 100 mm", f.Warnings[1])
+        # where, and the loop's width, in the schema's length unit (they had none)
+        from libelastica._text import lengths
+        self.assertEqual(list(f.Warnings), want.warnings(length=lengths(" mm")))
+        self.assertRegex(f.Warnings[1], r"a loop [0-9.]+ mm wide\)")
         self.assertAlmostEqual(f.Spread / want.spread(), 1.0, places=9)
         self.assertEqual(len(w.said), 2)
 

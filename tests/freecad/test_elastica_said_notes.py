@@ -52,7 +52,8 @@ class SaidNotesTest(unittest.TestCase):
     def test_elliptic_blend_loop_said_again(self):
         """A looping interpolation recomputed under Standard: its panel opened under
         Imperial decimal says the loop's chord and width in inches (they kept mm's
-        figures: 'chord 100'), from the exact figures; back in mm under Standard."""
+        figures: 'chord 100'), from the exact figures, with the unit (they had none:
+        'chord 3.94, a loop 1.3 wide'); back in mm under Standard."""
         pts = [(0.0, 0.0), (30.0, 80.0), (70.0, 90.0), (100.0, 0.0)]
         sk = S.points_sketch(self.doc, pts, "Looping")
         f = El.make(self.doc, [(sk, [])], K=0.52, KConvention="parameter")
@@ -61,7 +62,9 @@ class SaidNotesTest(unittest.TestCase):
         self.assertIn("between points 0 and 3 (counted from 0; chord 100", before[1])
         App.Units.setSchema(3)
         shown = said(f, "Warnings")
-        self.assertIn("between points 0 and 3 (counted from 0; chord 3.94", shown[1])
+        self.assertIn("between points 0 and 3 (counted from 0; chord 3.94 in", shown[1])
+        self.assertRegex(shown[1], r"a loop [0-9.]+ in wide\)")
+        self.assertNotIn("mm", shown[1])
         self.assertEqual(shown[0], before[0])           # ratios: no length
         self.assertEqual(said(f, "Status"), "; ".join(["ok"] + [f"warning: {w}" for w in shown]))
         App.Units.setSchema(0)
