@@ -10,6 +10,7 @@ import os
 import shutil
 import sys
 import tempfile
+import unittest
 
 import FreeCAD as App
 import Part
@@ -60,6 +61,24 @@ def new_doc(name):
         if d.Name == name:
             App.closeDocument(name)
     return App.newDocument(name)
+
+
+class DocTest(unittest.TestCase):
+    """A test in a new document of its own, ``doc_name``, closed after it (as self.doc is
+    then: a test may reopen it); under the unit schema ``schema`` where set (the user's
+    restored after it). Subclasses with more to set up call super().setUp() first."""
+
+    doc_name = "ElasticaTest"
+    schema = None
+
+    def setUp(self):
+        if self.schema is not None:
+            self.addCleanup(App.Units.setSchema, App.Units.getSchema())
+            App.Units.setSchema(self.schema)
+        self.doc = new_doc(self.doc_name)
+
+    def tearDown(self):
+        App.closeDocument(self.doc.Name)
 
 
 def bspline_sketch(doc, xy, name="KeylineSketch", placement=SKETCH_PLACEMENT):

@@ -3,7 +3,6 @@ updates, save / reopen, and bad input (the document must stay unchanged)."""
 import math
 import os
 import re
-import unittest
 
 import FreeCAD as App
 import Part
@@ -19,13 +18,12 @@ def _edge(obj, name):
     return obj.Shape.getElement(name)
 
 
-class BlendTest(unittest.TestCase):
-    def setUp(self):
-        self.doc = S.new_doc("ElasticaBlendTest")
-        self.sk = S.two_lines_sketch(self.doc)
+class BlendTest(S.DocTest):
+    doc_name = "ElasticaBlendTest"
 
-    def tearDown(self):
-        App.closeDocument(self.doc.Name)
+    def setUp(self):
+        super().setUp()
+        self.sk = S.two_lines_sketch(self.doc)
 
     def _check_g1(self, blend):
         """The blend starts at Edge1's end leaving along it and ends at Edge2's start
@@ -537,14 +535,9 @@ def second_arc(r2):
     return Part.ArcOfCircle(Part.Circle(centre, App.Vector(0, 0, 1), r2), a, a + 1.0)
 
 
-class BlendG2Test(unittest.TestCase):
+class BlendG2Test(S.DocTest):
     """Continuity G2: the blend meets both edges with their tangent and curvature."""
-
-    def setUp(self):
-        self.doc = S.new_doc("ElasticaBlendG2Test")
-
-    def tearDown(self):
-        App.closeDocument(self.doc.Name)
+    doc_name = "ElasticaBlendG2Test"
 
     def check_g2(self, b, sk):
         """The blend's ends: on the edges' ends, with their tangent and curvature
@@ -816,12 +809,8 @@ class BlendG2Test(unittest.TestCase):
         self.check_g2(b, sk)
 
 
-class CombTest(unittest.TestCase):
-    def setUp(self):
-        self.doc = S.new_doc("ElasticaCombTest")
-
-    def tearDown(self):
-        App.closeDocument(self.doc.Name)
+class CombTest(S.DocTest):
+    doc_name = "ElasticaCombTest"
 
     def test_comb_of_an_arc_has_equal_radial_teeth(self):
         r = 20.0

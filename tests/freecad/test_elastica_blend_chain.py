@@ -14,16 +14,15 @@ from freecad.elastica import blend as Bl
 from freecad.elastica import geometry as G
 
 
-class BlendChainTest(unittest.TestCase):
+class BlendChainTest(S.DocTest):
+    doc_name = "ElasticaBlendChainTest"
+
     def setUp(self):
-        self.doc = S.new_doc("ElasticaBlendChainTest")
+        super().setUp()
         self.sk = S.two_lines_sketch(self.doc)
         a, b = G.link_edge(self.sk, "", 0), G.link_edge(self.sk, "", 1)
         self.pa, self.da = a.valueAt(a.LastParameter), a.tangentAt(a.LastParameter)
         self.pb, self.db = b.valueAt(b.FirstParameter), b.tangentAt(b.FirstParameter)
-
-    def tearDown(self):
-        App.closeDocument(self.doc.Name)
 
     def _check_shape(self, blend):
         """The B-spline shape ends on the edges' ends, tangent to them."""

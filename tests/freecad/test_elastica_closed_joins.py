@@ -20,18 +20,17 @@ from freecad.elastica import spline as Sp
 V = App.Vector
 
 
-class ClosedJoinTest(unittest.TestCase):
+class ClosedJoinTest(S.DocTest):
+    doc_name = "ElasticaClosedJoins"
+
     def setUp(self):
-        self.doc = S.new_doc("ElasticaClosedJoins")
+        super().setUp()
         sk = self.doc.addObject("Sketcher::SketchObject", "Closed")
         sk.Placement = S.SKETCH_PLACEMENT
         sk.addGeometry(Part.Circle(V(-40, 10, 0), V(0, 0, 1), 20), False)   # seam at (-20, 10)
         sk.addGeometry(Part.Ellipse(V(40, 10, 0), 25, 12), False)
         self.doc.recompute()
         self.sk = sk
-
-    def tearDown(self):
-        App.closeDocument(self.doc.Name)
 
     def test_a_spline_meets_a_full_circle_and_ellipse_where_its_ducks_are(self):
         # the first duck on the circle's top, the last on the ellipse's top

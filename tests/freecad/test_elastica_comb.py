@@ -4,8 +4,6 @@ other edges, status ok, once the helper line Edge1 was made construction or dele
 when deleted or made construction, through Undo, save / reopen and documents made before."""
 import unittest
 
-import FreeCAD as App
-
 import elastica_samples as S
 from freecad.elastica import comb as Co
 from freecad.elastica import fit as Fi
@@ -14,15 +12,14 @@ DELETED = ("error: Source: the sketch geometry it followed (Chain.Edge3) was del
            "relink Source")
 
 
-class CombLinkTest(unittest.TestCase):
+class CombLinkTest(S.DocTest):
+    doc_name = "ElasticaCombLink"
+
     def setUp(self):
-        self.doc = S.new_doc("ElasticaCombLink")
+        super().setUp()
         self.xy, _ = S.keyline_xy(40)
         # geometry 0 the helper line (Edge1), 1..3 the curve's pieces (Edge2..Edge4)
         self.sk = S.helper_and_curve_sketch(self.doc, self.xy)
-
-    def tearDown(self):
-        App.closeDocument(self.doc.Name)
 
     def _comb(self, source, subs):
         """A comb of ``subs`` of ``source``, recomputed; a fixed scale: the automatic one

@@ -59,9 +59,11 @@ def sample(shape, n=60):
     return [tuple(p) for e in shape.Edges for p in e.discretize(n)]
 
 
-class ContainerTest(unittest.TestCase):
+class ContainerTest(S.DocTest):
+    doc_name = "ElasticaContainer"
+
     def setUp(self):
-        self.doc = S.new_doc("ElasticaContainer")
+        super().setUp()
         self.body = self.doc.addObject("PartDesign::Body", "Body")
         self.body.Placement = BODY_PLACEMENT
         sk = self.body.newObject("Sketcher::SketchObject", "Sketch")
@@ -74,9 +76,6 @@ class ContainerTest(unittest.TestCase):
         sk.addGeometry(Part.LineSegment(App.Vector(0, -60, 0), App.Vector(0, -20, 0)), False)
         self.sk = sk
         self.doc.recompute()
-
-    def tearDown(self):
-        App.closeDocument(self.doc.Name)
 
     def drawn(self, sketch=None):
         """The sketch's shape where the 3D view draws it: placed by the Body."""

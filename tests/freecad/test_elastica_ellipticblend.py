@@ -8,7 +8,6 @@ The shape is checked against the library's own blending curve: through the four
 points in interpolate mode, from q0 to q3 with the picked control points otherwise."""
 import math
 import os
-import unittest
 import warnings
 
 import FreeCAD as App
@@ -74,14 +73,13 @@ def _vertices(doc, pts3d, prefix="P"):
     return out
 
 
-class EllipticBlendTest(unittest.TestCase):
+class EllipticBlendTest(S.DocTest):
+    doc_name = "ElasticaEllBlendTest"
+
     def setUp(self):
-        self.doc = S.new_doc("ElasticaEllBlendTest")
+        super().setUp()
         self.sk = S.points_sketch(self.doc, XY)
         self.pts = [S.SKETCH_PLACEMENT.multVec(App.Vector(x, y, 0)) for x, y in XY]
-
-    def tearDown(self):
-        App.closeDocument(self.doc.Name)
 
     def _ok(self, obj):
         # "ok", or "ok; warning: ..." with each of its Warnings

@@ -8,7 +8,6 @@ import json
 import math
 import os
 import sys
-import unittest
 
 import FreeCAD as App
 import Part
@@ -26,13 +25,12 @@ from freecad.elastica import nearest as Nr
 K_TRUE = S.KEYLINE["k"]
 
 
-class FitInputsTest(unittest.TestCase):
-    def setUp(self):
-        self.doc = S.new_doc("ElasticaFitTest")
-        self.xy, self.curve = S.keyline_xy(40)
+class FitInputsTest(S.DocTest):
+    doc_name = "ElasticaFitTest"
 
-    def tearDown(self):
-        App.closeDocument(self.doc.Name)
+    def setUp(self):
+        super().setUp()
+        self.xy, self.curve = S.keyline_xy(40)
 
     def _fit_ok(self, obj, rms=1e-3, k_tol=1e-3):
         self.doc.recompute()
@@ -212,16 +210,15 @@ class FitInputsTest(unittest.TestCase):
         self.assertEqual(int(sum(kap[1:] * kap[:-1] < 0)), 1)
 
 
-class FitParametricTest(unittest.TestCase):
+class FitParametricTest(S.DocTest):
+    doc_name = "ElasticaFitParam"
+
     def setUp(self):
-        self.doc = S.new_doc("ElasticaFitParam")
+        super().setUp()
         self.xy, _ = S.keyline_xy(30)
         self.sk = S.points_sketch(self.doc, self.xy)
         self.fit = Fi.make(self.doc, [(self.sk, [])], Model="smooth")
         self.doc.recompute()
-
-    def tearDown(self):
-        App.closeDocument(self.doc.Name)
 
     def test_moving_a_sketch_point_changes_the_fit(self):
         before = self.fit.Shape.copy()
@@ -287,16 +284,14 @@ class FitParametricTest(unittest.TestCase):
         self.assertFalse(self.fit.Status.startswith("error"), self.fit.Status)
 
 
-class FitResultTest(unittest.TestCase):
+class FitResultTest(S.DocTest):
     """What a fit keeps and shows: its points and their feet, pinning, B-splines."""
+    doc_name = "ElasticaFitResult"
 
     def setUp(self):
-        self.doc = S.new_doc("ElasticaFitResult")
+        super().setUp()
         self.xy, self.curve = S.keyline_xy(40)
         self.sk = S.points_sketch(self.doc, self.xy)
-
-    def tearDown(self):
-        App.closeDocument(self.doc.Name)
 
     def test_points_far_from_the_curve_are_named(self):
         """Two glitches in 40 noisy sketch points: the fit's warning counts them, gives
@@ -581,14 +576,15 @@ def inflection_start_xy(n=40, noise=0.0, seed=1):
     return xy + np.random.default_rng(seed).normal(0.0, noise, xy.shape), c
 
 
-class FitConstraintTest(unittest.TestCase):
+class FitConstraintTest(S.DocTest):
     """Issue 13 point 3 in FreeCAD: each end condition, set alone by its property,
     holds on the feature's B-spline to 1e-9 (positions in mm, angles in rad,
     curvatures in 1/mm), for noisy points on which the free fit misses it."""
+    doc_name = "ElasticaFitConstraints"
 
     def setUp(self):
         import numpy as np
-        self.doc = S.new_doc("ElasticaFitConstraints")
+        super().setUp()
         self._data(1.0)
 
     def _data(self, scale):
@@ -607,9 +603,6 @@ class FitConstraintTest(unittest.TestCase):
             self.lines.addGeometry(Part.LineSegment(p, p + App.Vector(math.cos(a), math.sin(a),
                                                                       0) * 30.0 * scale), False)
         self.doc.recompute()
-
-    def tearDown(self):
-        App.closeDocument(self.doc.Name)
 
     def _fit(self, model, **props):
         f = Fi.make(self.doc, [(self.sk, [])], **dict(dict(Model=model, Tolerance=1e-6), **props))
@@ -1009,18 +1002,16 @@ class FitConstraintTest(unittest.TestCase):
             self.assertLess(np.abs(turn - np.pi).max(), 1e-12)
 
 
-class FitEdgeLinkTest(unittest.TestCase):
+class FitEdgeLinkTest(S.DocTest):
     """A tangent edge linked in a sketch is its geometry, followed as the sketch changes (QA:
     StartTangent = Edges.Edge2, the lead-in, joined G1; the helper line Edge1 made construction
     or deleted, and the fit joined the run-out line instead: it started at (60, -5), not
     (-2, 0), status converged)."""
+    doc_name = "ElasticaFitEdgeLink"
 
     def setUp(self):
-        self.doc = S.new_doc("ElasticaFitEdgeLink")
+        super().setUp()
         self.sk, self.pts = S.lead_in_sketches(self.doc)
-
-    def tearDown(self):
-        App.closeDocument(self.doc.Name)
 
     def _fit(self):
         f = Fi.make(self.doc, [(self.pts, [])], Model="smooth", StartTangent=(self.sk, ["Edge2"]),
@@ -1137,17 +1128,15 @@ class FitEdgeLinkTest(unittest.TestCase):
         self._joins_the_lead_in(f, 1)
 
 
-class FitSourceLinkTest(unittest.TestCase):
+class FitSourceLinkTest(S.DocTest):
     """Edges and vertices picked in a sketch for Source are their geometry, followed as the
     sketch changes (QA: a fit of Chain.Edge2 and Edge3 fitted Edge3 and Edge4 once the helper
     line Edge1 was made construction, status converged)."""
+    doc_name = "ElasticaFitSourceLink"
 
     def setUp(self):
-        self.doc = S.new_doc("ElasticaFitSourceLink")
+        super().setUp()
         self.xy, _ = S.keyline_xy(40)
-
-    def tearDown(self):
-        App.closeDocument(self.doc.Name)
 
     def _same_points(self, f, points):
         self.assertEqual(f.Status, "converged")
@@ -1237,22 +1226,20 @@ class FitSourceLinkTest(unittest.TestCase):
         self.assertEqual(f.Source[0][1], ("Edge1", "Edge2"))
 
 
-class FitDistanceTest(unittest.TestCase):
+class FitDistanceTest(S.DocTest):
     """Issue 13 point 2 in FreeCAD: Rms, MaxError and Distances are point-to-curve figures
     (the library's; a discrete fit's to its drawn cubic) and equal Part's own distance of
     each point to the shape."""
+    doc_name = "ElasticaFitDistances"
 
     def setUp(self):
         import numpy as np
-        self.doc = S.new_doc("ElasticaFitDistances")
+        super().setUp()
         # unevenly spaced (1:6) noisy points with a gap, as a scan gives them
         _, c = S.keyline_xy(2)
         t = np.concatenate([np.linspace(0, 0.3, 30) ** 1.0, np.linspace(0.45, 1.0, 12)])
         self.xy = c.points(t * c.length) + np.random.default_rng(5).normal(0, 0.2, (42, 2))
         self.sk = S.points_sketch(self.doc, self.xy, "Uneven")
-
-    def tearDown(self):
-        App.closeDocument(self.doc.Name)
 
     def _check_distances(self, f, shape, tol):
         import numpy as np
@@ -1347,21 +1334,16 @@ class FitDistanceTest(unittest.TestCase):
 
 
 
-class FitSparseTest(unittest.TestCase):
+class FitSparseTest(S.DocTest):
     """A sketch of few points: the discrete model's polygon of as few segments cannot
     follow their curve, so the feature warns, naming both rms figures and the smooth
     model, which follows them (and is not warned of); 40 points give no such warning."""
+    doc_name = "ElasticaFitSparse"
 
     # 7 points at uneven places along 100 mm of an elastica turning by 0.66 rad, noise
     # 0.02 mm: discrete rms 0.098 mm, smooth 0.0045 mm
     XY7 = [[10.007, 5.016], [16.543, 11.151], [28.999, 29.244], [34.834, 43.041],
            [41.322, 66.133], [44.22, 78.81], [48.429, 95.26]]
-
-    def setUp(self):
-        self.doc = S.new_doc("ElasticaFitSparse")
-
-    def tearDown(self):
-        App.closeDocument(self.doc.Name)
 
     def _fit(self, sk, model):
         f = Fi.make(self.doc, [(sk, [])], Model=model)
@@ -1382,12 +1364,8 @@ class FitSparseTest(unittest.TestCase):
         self.assertEqual(list(dense.Warnings), [])
 
 
-class FitBadInputTest(unittest.TestCase):
-    def setUp(self):
-        self.doc = S.new_doc("ElasticaFitBad")
-
-    def tearDown(self):
-        App.closeDocument(self.doc.Name)
+class FitBadInputTest(S.DocTest):
+    doc_name = "ElasticaFitBad"
 
     def _rejected(self, sources, csv_file="", **options):
         before = S.doc_state(self.doc)
@@ -1557,16 +1535,11 @@ class FitBadInputTest(unittest.TestCase):
 
 
 
-class FitPointOrderTest(unittest.TestCase):
+class FitPointOrderTest(S.DocTest):
     """Points without an order of their own (a sketch of points) run along their principal
     axis unless the order they were made in gives a polyline no longer: a curl past 180
     degrees doubles back along its axis (sorted there it zigzags and fits 3.6 mm rms)."""
-
-    def setUp(self):
-        self.doc = S.new_doc("ElasticaFitOrder")
-
-    def tearDown(self):
-        App.closeDocument(self.doc.Name)
+    doc_name = "ElasticaFitOrder"
 
     def _fit(self, xy):
         f = Fi.make(self.doc, [(S.points_sketch(self.doc, xy), [])], Model="smooth")

@@ -17,12 +17,8 @@ def measured(f, points):
     return [f.Shape.distToShape(Part.Vertex(p))[0] for p in points]
 
 
-class FitMeasureTest(unittest.TestCase):
-    def setUp(self):
-        self.doc = S.new_doc("ElasticaFitMeasure")
-
-    def tearDown(self):
-        App.closeDocument(self.doc.Name)
+class FitMeasureTest(S.DocTest):
+    doc_name = "ElasticaFitMeasure"
 
     def _check_figures(self, f, points, delta):
         """Rms, MaxError, Distances and DataPoints are the points' own, in 3D."""

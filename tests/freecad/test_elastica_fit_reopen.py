@@ -16,12 +16,8 @@ from freecad.elastica import fit as Fi
 V = App.Vector
 
 
-class FitReopenTest(unittest.TestCase):
-    def setUp(self):
-        self.doc = S.new_doc("ElasticaFitReopen")
-
-    def tearDown(self):
-        App.closeDocument(self.doc.Name)
+class FitReopenTest(S.DocTest):
+    doc_name = "ElasticaFitReopen"
 
     def test_a_g2_joined_fit_is_the_same_after_reopening(self):
         sk = self.doc.addObject("Sketcher::SketchObject", "Drawn")

@@ -2,7 +2,6 @@
 largest tension found, to 6 significant digits and rounded down to one that solved; a
 tension asked named to 6 digits (split from test_elastica_blend.py, over 800 lines)."""
 import re
-import unittest
 
 import FreeCAD as App
 import Part
@@ -11,12 +10,8 @@ import elastica_samples as S
 from freecad.elastica import blend as Bl
 
 
-class G2ReachTest(unittest.TestCase):
-    def setUp(self):
-        self.doc = S.new_doc("ElasticaG2ReachTest")
-
-    def tearDown(self):
-        App.closeDocument(self.doc.Name)
+class G2ReachTest(S.DocTest):
+    doc_name = "ElasticaG2ReachTest"
 
     def test_g2_reach_said_is_one_that_solves_told_apart_from_its_neighbours(self):
         """QA12 (U walls, tops): the reach was said to 3 digits, "0.00177 at most"; the

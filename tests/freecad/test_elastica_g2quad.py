@@ -3,7 +3,6 @@ curve with an inflection, one curvature-continuous quadratic B-spline per piece,
 ending exactly on the source; its reported deviation; parametric updates;
 save / reopen; bad input (a message, the document unchanged)."""
 import os
-import unittest
 
 import FreeCAD as App
 import Part
@@ -24,14 +23,13 @@ def plane_bspline(edge, plane):
     return el.BSpline(c.Degree, poles, c.getKnots(), c.getMultiplicities())
 
 
-class G2QuadTest(unittest.TestCase):
+class G2QuadTest(S.DocTest):
+    doc_name = "ElasticaG2Quad"
+
     def setUp(self):
-        self.doc = S.new_doc("ElasticaG2Quad")
+        super().setUp()
         self.xy, self.curve = S.keyline_xy(40)
         self.sk = S.bspline_sketch(self.doc, self.xy)
-
-    def tearDown(self):
-        App.closeDocument(self.doc.Name)
 
     def test_a_picked_edge_follows_its_geometry(self):
         """QA: the G2 quadratic of Chain.Edge3 approximated Edge4 once the helper line Edge1 was

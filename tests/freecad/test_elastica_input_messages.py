@@ -11,12 +11,8 @@ import elastica_samples as S
 from freecad.elastica import commands as C
 
 
-class InputMessageTest(unittest.TestCase):
-    def setUp(self):
-        self.doc = S.new_doc("ElasticaInputMessages")
-
-    def tearDown(self):
-        App.closeDocument(self.doc.Name)
+class InputMessageTest(S.DocTest):
+    doc_name = "ElasticaInputMessages"
 
     def rejected(self, make, sources):
         """The one message of a command refusing ``sources``, the document unchanged."""

@@ -11,15 +11,9 @@ from freecad.elastica.proxy import said
 from freecad.elastica.units import say
 
 
-class SaidNotesTest(unittest.TestCase):
-    def setUp(self):
-        self.doc = S.new_doc("ElasticaSaidNotesTest")
-        self.schema = App.Units.getSchema()
-        App.Units.setSchema(0)
-
-    def tearDown(self):
-        App.Units.setSchema(self.schema)
-        App.closeDocument(self.doc.Name)
+class SaidNotesTest(S.DocTest):
+    doc_name = "ElasticaSaidNotesTest"
+    schema = 0
 
     def test_starting_tension_note_follows_the_schema(self):
         """The spike's ducks (no free batten): the note made under Standard, said under

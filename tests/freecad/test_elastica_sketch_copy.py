@@ -14,16 +14,15 @@ from freecad.elastica import geometry as G
 from freecad.elastica.proxy import InputProblem
 
 
-class CopyIntoSketchTest(unittest.TestCase):
+class CopyIntoSketchTest(S.DocTest):
+    doc_name = "ElasticaSketchCopy"
+
     def setUp(self):
-        self.doc = S.new_doc("ElasticaSketchCopy")
+        super().setUp()
         xy = [(x, 10 * math.sin(x / 30.0)) for x in range(0, 100, 10)]
         self.fit = Fi.make(self.doc, [(S.points_sketch(self.doc, xy), [])], Model="smooth")
         self.doc.recompute()
         self.assertFalse(self.fit.Status.startswith("error"), self.fit.Status)
-
-    def tearDown(self):
-        App.closeDocument(self.doc.Name)
 
     def _sketch(self, placement, name):
         sk = self.doc.addObject("Sketcher::SketchObject", name)

@@ -39,13 +39,12 @@ def library_spline(feature, **kw):
     return el.elastic_spline(xy, **kw)
 
 
-class SplineTest(unittest.TestCase):
-    def setUp(self):
-        self.doc = S.new_doc("ElasticaSplineTest")
-        self.sk = S.points_sketch(self.doc, DUCKS, "Ducks")
+class SplineTest(S.DocTest):
+    doc_name = "ElasticaSplineTest"
 
-    def tearDown(self):
-        App.closeDocument(self.doc.Name)
+    def setUp(self):
+        super().setUp()
+        self.sk = S.points_sketch(self.doc, DUCKS, "Ducks")
 
     def spline(self, sources=None, **props):
         s = Sp.make(self.doc, sources or [(self.sk, [])], **props)
