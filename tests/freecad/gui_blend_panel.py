@@ -12,11 +12,12 @@ the GUI smoke test (gui_smoke.py calls run_all):
   take, and OK kept the expression's silently;
 - lengths show in the user's unit schema and take what is typed in any unit: the boxes
   showed mm under every schema and '7 in mm' while '7 in' was typed; a plain number is
-  in the unit the box shows now, after its arrows changed it ('12' over '10 m').
+  in the unit the box shows now, after its arrows changed it ('12' over '10 m'); under
+  Building US lengths in feet and inches as FreeCAD writes them ('6"', '1\' 3/4"').
 
 Screenshots: gui_blend_picked_tops.png, gui_blend_ends_by_length.png,
 gui_blend_bound.png, gui_blend_imperial.png, gui_blend_typed_after_step.png,
-gui_blend_said_after_undo.png."""
+gui_blend_building_us.png, gui_blend_said_after_undo.png."""
 import FreeCAD as App
 import FreeCADGui as Gui
 from PySide import QtCore, QtGui
@@ -197,8 +198,9 @@ def unit_schemas(doc, b):
     try:
         said_in_the_schema_of_now(doc, b, prefs)
         said_after_undo(doc, b, prefs)
-        for schema, length, tol in ((3, "5.94488 in", "3.93701e-05 in"), (4, "15.1 cm",
-                                                                           "0.0001 cm")):
+        for schema, length, tol in ((3, "5.94488 in", "3.93701e-05 in"),
+                                    (4, "15.1 cm", "0.0001 cm"),
+                                    (5, '6"', "3.93701e-05 in")):
             prefs.SetInt("UserSchema", schema)
             App.Units.setSchema(schema)
             Gui.ActiveDocument.setEdit(b.Name)
@@ -243,11 +245,43 @@ def unit_schemas(doc, b):
                 G.check(abs(b.Length.Value - before - 10.0) < 1e-9,
                         f"Building Euro: Up steps 1 cm as FreeCAD's Quantity boxes "
                         f"({before} -> {b.Length.Value})")
+            if schema == 5:
+                building_us_feet_inches(b, panel)
             panel.reject()
             G.pump()
     finally:
         prefs.SetInt("UserSchema", old)
         App.Units.setSchema(old)
+
+
+def building_us_feet_inches(b, panel):
+    """Building US: the Length box in feet and inches as FreeCAD 0.20's own Quantity boxes
+    and property editor write it (measured: 300 mm '11+3/4"', Up '1\' 3/4"'; 151 mm '6"');
+    it showed decimal inches ('5.94488 in'). Leaving it keeps 151 mm (the text is to 1/8
+    in), Up steps 1 in, a typed '1\' 3/4"' is read, a plain '12' is 12 in, as there."""
+    G.check(App.Units.Quantity(151.0, App.Units.Length).UserString == '6"',
+            "FreeCAD writes 151 mm as 6\" under Building US")
+    panel.length.setFocus()
+    G.pump()
+    key(panel.length.lineEdit(), QtCore.Qt.Key_Up)
+    G.wait(400)
+    want = App.Units.Quantity(176.4, App.Units.Length).UserString
+    G.check(abs(b.Length.Value - 176.4) < 1e-9 and panel.length.text() == want,
+            f"Building US: Up steps 1 in ({b.Length}), shows {panel.length.text()!r} "
+            f"(FreeCAD: {want!r})")
+    retype(panel.length, "1' 3/4\"")
+    G.wait(400)
+    G.check(abs(b.Length.Value - 323.85) < 1e-9, f"typed 1' 3/4\": Length {b.Length}")
+    key(panel.length.lineEdit(), QtCore.Qt.Key_Tab)
+    G.wait(300)
+    retype(panel.length, "12")
+    G.wait(400)
+    G.check(abs(b.Length.Value - 304.8) < 1e-9, f"a plain '12' is 12 in: Length {b.Length}")
+    key(panel.length.lineEdit(), QtCore.Qt.Key_Tab)
+    G.wait(300)
+    G.check(panel.length.text() == App.Units.Quantity(304.8, App.Units.Length).UserString,
+            f"after Tab, as FreeCAD writes 12 in: {panel.length.text()!r}")
+    G.screenshot("gui_blend_building_us.png")
 
 
 def typed_after_a_step(doc, b):

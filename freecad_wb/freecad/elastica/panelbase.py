@@ -14,7 +14,8 @@ from PySide import QtCore, QtGui
 from . import icon
 from .geometry import is_sketch, sketch_curves
 from .proxy import EDGE_ENDS, InputProblem, said as said_now
-from .units import length_text, length_unit, say, tension_unit, unit_names, user_length
+from .units import (feet_inches, length_text, length_unit, say, tension_unit, unit_names,
+                    user_length)
 
 CURRENT = []        # the open panel, if any (scripts and the GUI smoke test drive it)
 DELAY_MS = 150      # recompute after this pause in editing
@@ -110,6 +111,9 @@ class NumberBox(QtGui.QDoubleSpinBox):
         return 1.0, self.unit
 
     def textFromValue(self, value):
+        written = feet_inches(value) if self.unit == "mm" else None
+        if written:                      # Building US: feet and inches, as FreeCAD's boxes
+            return written
         factor, unit = self.shown(value)
         return f"{value / factor:.6g} {unit}" if unit else f"{value:.6g}"
 

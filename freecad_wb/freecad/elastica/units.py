@@ -35,6 +35,17 @@ def length_text(mm, digits=3):
     return f"{float(mm) / factor:.{digits}g} {unit}"
 
 
+def feet_inches(mm):
+    """A length (mm) as FreeCAD writes it under a schema of feet and inches (Building US:
+    its Quantity boxes and property editor show 151 mm as '6"', 3000 mm as
+    '9\' 10+1/8"', to 1/8 in), or None under another schema and where that text rounds a
+    length to 0 (a tolerance of 0.001 mm is '0': its boxes keep decimal inches)."""
+    if "ft-in" not in App.Units.listSchemas(App.Units.getSchema()):
+        return None
+    text = App.Units.Quantity(float(mm), App.Units.Length).UserString
+    return None if float(mm) and text.strip("-") == "0" else text
+
+
 def length_unit():
     """(factor, name): the schema's length unit (REFERENCE_MM), named as the unit parser
     reads it ('in' where the schema writes '"')."""
