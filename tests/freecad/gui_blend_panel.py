@@ -18,6 +18,8 @@ the GUI smoke test (gui_smoke.py calls run_all):
 Screenshots: gui_blend_picked_tops.png, gui_blend_ends_by_length.png,
 gui_blend_bound.png, gui_blend_imperial.png, gui_blend_typed_after_step.png,
 gui_blend_building_us.png, gui_blend_said_after_undo.png."""
+import os
+
 import FreeCAD as App
 import FreeCADGui as Gui
 from PySide import QtCore, QtGui
@@ -86,7 +88,54 @@ def picked_ends(doc):
     G.screenshot("gui_blend_picked_tops.png")
     panel.accept()
     G.pump()
+    note_kept(doc, b)
     return sk, right, left
+
+
+def note_kept(doc, b):
+    """The command's note (why by length) is kept with the feature: the panel opened again
+    says it, after a save and reopen too, while Mode and Length are the command's (it lived
+    only while the command's panel was open); once the designer chose tension mode, not."""
+    from freecad.elastica import taskpanels as T
+
+    def reopened_note():
+        Gui.ActiveDocument.setEdit(b.Name)
+        G.wait(300)
+        panel = T.CURRENT[0]
+        return panel, (panel.warning[1].text() if panel.warning[0].isVisible() else "")
+
+    panel, said = reopened_note()
+    G.check("No free batten (tension 0) joins these ends: solved for a length instead, 151 mm"
+            in said, f"the note said again in a panel opened later: {said!r}")
+    G.screenshot("gui_blend_note_kept.png")
+    panel.reject()
+    G.pump()
+    path = os.path.join(G.OUT, "gui_note_kept.FCStd")
+    doc.saveCopy(path)                                  # this document stays as it is
+    name = b.Name
+    doc2 = App.openDocument(path)
+    Gui.SendMsgToActiveView("ViewFit")
+    b2 = doc2.getObject(name)
+    Gui.ActiveDocument.setEdit(b2.Name)
+    G.wait(300)
+    panel = T.CURRENT[0]
+    said = panel.warning[1].text() if panel.warning[0].isVisible() else ""
+    G.check("solved for a length instead, 151 mm" in said, f"and after reopening: {said!r}")
+    panel.mode.setCurrentIndex(1)                     # a tension: the designer's choice now
+    G.wait(400)
+    G.check(b2.Mode == "tension" and not panel.warning[0].isVisible(),
+            f"tension mode: no note ({b2.Mode})")
+    panel.accept()
+    G.pump()
+    Gui.ActiveDocument.setEdit(b2.Name)
+    G.wait(300)
+    panel = T.CURRENT[0]
+    G.check(not panel.warning[0].isVisible(), f"nor later: {panel.warning[1].text()!r}")
+    panel.reject()
+    G.pump()
+    App.closeDocument(doc2.Name)
+    G.pump()
+    G.check(Gui.ActiveDocument.Document is doc, "back in the profile's document")
 
 
 def ends_toggled(doc, sk, right, left):

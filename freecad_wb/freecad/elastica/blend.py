@@ -390,6 +390,7 @@ class BlendProxy(FeatureProxy):
 
     kind = "Blend"
     followed_links = {"Edge1": "SketchGeometry1", "Edge2": "SketchGeometry2"}
+    note_props = ("Mode", "Length")     # solved for a length where no free batten joins
 
     def setup(self, obj):
         tol, _, _ = defaults()

@@ -9,7 +9,7 @@ import FreeCAD as App
 import FreeCADGui as Gui
 
 from . import defaults, icon, library_problem
-from .proxy import InputProblem
+from .proxy import InputProblem, keep_note
 from .units import say
 
 MESSAGES = []   # the last messages shown (tests read them); at most 50 kept
@@ -121,6 +121,7 @@ def _check_and_create(title, what, check, code, open_panel):
     obj = _create(doc, title, code() if callable(code) else code, keep_open=panel)
     if obj is not None and note:
         message(f"{obj.Label}: {note}", error=False)
+        keep_note(obj, note)            # its panel says it later too, while it holds
     if panel and obj is not None:
         from . import taskpanels
         taskpanels.open_for(obj, created=True, note=note or "")

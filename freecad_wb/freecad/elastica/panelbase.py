@@ -13,7 +13,8 @@ from PySide import QtCore, QtGui
 
 from . import icon
 from .geometry import is_sketch, sketch_curves
-from .proxy import EDGE_ENDS, InputProblem, said as said_now
+from .proxy import (EDGE_ENDS, InputProblem, keep_note, kept_note, note_changes,
+                    said as said_now)
 from .units import (feet_inches, length_text, length_unit, say, tension_unit, unit_names,
                     user_length)
 
@@ -253,10 +254,27 @@ class Panel:
     title = ""
     icon_name = "elastica"
     gone = ""           # why the panel lost its feature or its transaction (``lost``)
+    _note = ""
+
+    @property
+    def note(self):
+        """Why the command (or the panel) chose the values it did: the warning line's first
+        sentence, kept with the feature (proxy.keep_note, in the panel's transaction) with
+        the values it explains, so a panel opened later says it while they hold."""
+        return self._note
+
+    @note.setter
+    def note(self, text):
+        self._note = text
+        if not self.gone and note_changes(self.obj, text):
+            self.hold()
+            keep_note(self.obj, text)
 
     def __init__(self, obj, created=True, note=""):
         self.obj = obj
-        self.note = note                # why the command chose what it did (warning line)
+        # why the command chose what it did (warning line): given by the command, or kept
+        # with the feature while its values hold (proxy.keep_note)
+        self._note = note or kept_note(obj)
         self.doc = obj.Document
         self.name, self.doc_name = obj.Name, obj.Document.Name
         self.watch = _Watch(self)

@@ -257,6 +257,53 @@ def said(obj, prop):
     return now
 
 
+# Why a command chose the values it did (the blend's length where no free batten joins the
+# ends, the spline's tension where the free batten loops), in a hidden property saved and
+# undone with the feature, beside the values it explains: a panel opened later says it while
+# they still hold (it lived only while the command's panel was open). JSON {"note": marked
+# text, "values": {prop: value}}, the props a proxy's note_props.
+NOTE = "StartNote"
+
+
+def add_note(obj):
+    """The hidden property NOTE of a feature whose proxy has note_props."""
+    if NOTE not in obj.PropertiesList and getattr(obj.Proxy, "note_props", ()):
+        obj.addProperty("App::PropertyString", NOTE, "Result", "Why the command chose the "
+                        "values it did, while they hold (its panel says it)", 4 | 8)
+
+
+def _note_values(obj):
+    def value(v):
+        if hasattr(v, "Value"):         # a length (Quantity)
+            return float(v.Value)
+        return float(v) if isinstance(v, (int, float)) else str(v)
+    return {p: value(getattr(obj, p)) for p in obj.Proxy.note_props}
+
+
+def _note_text(obj, note):
+    return json.dumps({"note": note, "values": _note_values(obj)}, sort_keys=True) if note else ""
+
+
+def note_changes(obj, note):
+    """Whether keep_note(obj, note) would change what the feature keeps."""
+    return NOTE in obj.PropertiesList and getattr(obj, NOTE) != _note_text(obj, note)
+
+
+def keep_note(obj, note):
+    """Keep ``note`` (marked text; '' forgets it) with the values of note_props it explains."""
+    if note_changes(obj, note):
+        setattr(obj, NOTE, _note_text(obj, note))
+
+
+def kept_note(obj):
+    """The note kept (keep_note) while the values it explains still hold, else ''."""
+    text = getattr(obj, NOTE, "") if NOTE in obj.PropertiesList else ""
+    if not text:
+        return ""
+    kept = json.loads(text)
+    return kept["note"] if kept["values"] == _note_values(obj) else ""
+
+
 def new_feature(doc, name, proxy_class, **props):
     """A Part::FeaturePython ``name`` in ``doc`` with a ``proxy_class`` proxy, its
     properties set in the order given, and its view provider (GUI)."""
@@ -282,6 +329,7 @@ class FeatureProxy:
     (raises InputProblem) and apply (writes the result)."""
 
     kind = ""
+    note_props = ()     # the properties a command's note explains (keep_note)
     # {link property: the property of the sketch geometry indices it follows}: a sketch edge's or
     # vertex's name shifts as the sketch changes, its geometry is followed
     # (links.followed_elements)
@@ -293,6 +341,7 @@ class FeatureProxy:
         obj.Proxy = self
         self.setup(obj)
         add_said(obj)
+        add_note(obj)
 
     # ---------------------------------------------------------------- recompute
 
@@ -377,6 +426,7 @@ class FeatureProxy:
         finally:
             self._restoring = False
         add_said(obj)
+        add_note(obj)
         from .links import remember_followed
         remember_followed(obj)
         changed = False

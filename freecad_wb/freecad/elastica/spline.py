@@ -300,6 +300,7 @@ class SplineProxy(FeatureProxy):
     """The elastic spline through the linked points."""
 
     kind = "Spline"
+    note_props = ("Mode", "Tension")    # a tension where the free batten loops
     followed_links = {"Points": "PointsGeometry", "StartEdge": "StartEdgeGeometry",
                       "EndEdge": "EndEdgeGeometry"}
 

@@ -299,8 +299,8 @@ class BlendPanel(Panel):
                          f"{length_mark(float(o.Length), 4)}")
             self.show_mode()
             return True
-        self.auto, self.note = start
         o.Mode, o.Length = "length", start[0]
+        self.auto, self.note = start        # kept with the values it explains: after them
         self.show_mode()
         return True
 
