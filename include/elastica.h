@@ -458,7 +458,8 @@ typedef struct el_fit_smooth_result {
  * points take up to ~0.1 s of CPU (bench/bench_fit_sparse.py; a few hard sketches up to
  * ~0.8 s), those with Ipopt's rows up to ~1 s. With Ipopt's rows, its iterations over
  * the guesses (once one meets the constraints) and the refits of one fit stop at twice
- * opt->max_iter.
+ * opt->max_iter, at once opt->max_iter where a held start state's continuation ends far
+ * from the free fit (over 10 x its rms: conditions the data do not share).
  * Solver: Levenberg-Marquardt, its result certified by the first-order condition
  * (the residual vector orthogonal to every column of the Jacobian to 1e-8, or zero to
  * rounding); Ipopt runs only for bounds that are active, constraints it cannot hold

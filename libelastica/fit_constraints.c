@@ -134,7 +134,9 @@ int el__fit_meets(fit_objective *ob, const fit_map *map, const fit_constraints *
  * discrete, a zero curvature); else (a discrete curvature (3.4)) the chart value that
  * would meet it on the free fit's curve (kappa0 = (n-1) h kappa), a start near the
  * constraint for Ipopt's row. x: out's variables on return (p0's when nothing could be
- * fitted). Returns the iterations.
+ * fitted); fs: the free fit's f and the last stage's (0, 0 where a stage failed: the
+ * measure of conditions the data do not share, fit_choose.c's unshared). Returns the
+ * iterations.
  */
 /* stages: HELD_STAGES, more where the tangent turns by more than HELD_TURN a stage (measured:
  * 62 points along a loop, a start tangent 1 rad from the free fit's: four stages of 0.25
@@ -147,7 +149,8 @@ enum { HELD_STAGES = 4, HELD_STAGES_MAX = 32 };
  * 0.031 so, the start-state chart's fit 0.040) */
 #define HELD_ASINH 1.0
 int el__fit_held_start(fit_objective *ob, const fit_map *out, const fit_map *free_map, int bits,
-                      const fit_constraints *con, int max_iter, const double *p0, double *x)
+                      const fit_constraints *con, int max_iter, const double *p0, double *x,
+                      double *fs)
 {
     const int model = free_map->model;
     const int sl[2] = {model == FIT_DISCRETE ? 3 : 2, model == FIT_DISCRETE ? 4 : 3};
@@ -156,6 +159,7 @@ int el__fit_held_start(fit_objective *ob, const fit_map *out, const fit_map *fre
     const fit_map saved = ob->map;
     int iters = 0;
     fit_solution sol;
+    fs[0] = fs[1] = 0.0;
     el__fit_map_inverse(out, p0, x);
     ob->map = *free_map;
     ob->have_base = 0;
@@ -166,6 +170,7 @@ int el__fit_held_start(fit_objective *ob, const fit_map *out, const fit_map *fre
         return 0;
     }
     iters += sol.iters;
+    const double f_free = sol.val.f;
     fit_map stage = *free_map;
     stage.nx = 0;
     for (int j = 0; j < free_map->nx; j++) {
@@ -194,6 +199,7 @@ int el__fit_held_start(fit_objective *ob, const fit_map *out, const fit_map *fre
         if (el__fit_lm(ob, xs, max_iter, &sol) != EL_OK || el__fit_map_eval(&stage, sol.x, v, NULL)) break;
         iters += sol.iters;
         el__fit_map_inverse(out, v[0], x);
+        if (k == stages) { fs[0] = f_free; fs[1] = sol.val.f; }
     }
     ob->map = saved;
     ob->have_base = 0;

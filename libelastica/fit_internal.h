@@ -594,6 +594,7 @@ typedef struct fit_run_state {
     double best_init[FIT_NP];
     int best_strays, best_loops, best_meets, wander_kept;
     int iters, tried, last_is_best, ipopt_spent;
+    int unshared;         /* a held start's continuation ended far above its free fit (fit_choose.c) */
     double v[2][FIT_NP];
     int status, constraint, ok;
 } fit_run_state;
@@ -751,9 +752,11 @@ int el__fit_violated(const fit_objective *ob, const fit_constraints *con, const 
 int el__fit_meets(fit_objective *ob, const fit_map *map, const fit_constraints *con,
                   const double *x, const double *lo, const double *hi, double *tmp);
 /* A start for a fit with a start tangent or curvature (bits) by continuation in the
- * start-state chart; x: out's variables. Returns the iterations spent. */
+ * start-state chart; x: out's variables; fs: the free fit's f and the last stage's (0, 0
+ * where a stage failed). Returns the iterations spent. */
 int el__fit_held_start(fit_objective *ob, const fit_map *out, const fit_map *free_map, int bits,
-                       const fit_constraints *con, int max_iter, const double *p0, double *x);
+                       const fit_constraints *con, int max_iter, const double *p0, double *x,
+                       double *fs);
 /* How many of one end's constraints a fit would hold exactly at its start (weighted). */
 int el__fit_held_score(const el_fit_options *o, int model, int at_end);
 /* p (input units, n points) replaced by the same curve run backwards, canonical. */

@@ -236,3 +236,22 @@ def test_cli_says_a_cost_near_the_start(dense_scan, tmp_path, capsys, model, ste
     assert said == [f"elastica fit: warning: {path}: {rec['end_condition_warning']}"]
     assert "(--start-tangent) raise the rms near the start " in said[0]
     assert f"from {near['free_rms']:.3g} (free ends) to {near['rms']:.3g}:" in said[0]
+
+
+def test_a_fit_held_to_a_wrong_curvature_stops_its_later_starts():
+    """A discrete fit held at 4 x the data's start curvature (bench_fit.py wrong_conditions:
+    every 11th point of the 2000-point scan of a 4 m elastica, noise 0.5 mm): its held start's
+    continuation ends hundreds of times the free fit's rms away (conditions the data do not
+    share), and once one start's Ipopt run has spent max_iter with a fit that meets the
+    curvature, no later start runs (fit_choose.c, unshared). With max_iter 30 every start's run
+    spends it: one start fitted, where before the next one ran 30 iterations more to a higher
+    fit (the same rms either way under the default, Haswell, SkylakeX, Zen, Sandybridge and
+    Prescott kernels)."""
+    ref = el.SmoothElastica(x0=0, y0=0, phi=0.25, mu=1.2e-6, k=0.6, q=0.3, length=4000.0)
+    rng = np.random.default_rng(1)
+    s = np.sort(rng.uniform(0, 4000, 2000))
+    pts = (ref.points(s) + rng.normal(0, 0.5, (2000, 2)))[::11]
+    k0 = float(ref.curvature(np.array([s[0]]))[0])
+    r = el.fit(pts, model="discrete", constraints={"start_curvature": 4 * k0 + 1e-3}, check_ends=False,
+               max_iter=30)
+    assert r.candidates == 1       # (a fit that misses the curvature raises ConstraintError)
