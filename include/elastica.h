@@ -1161,7 +1161,12 @@ void el_spline_options_defaults(el_spline_options *opt);
  * the length falls: a rung solved afresh can leave the family, QA14's sketch at 80), the bracket narrowed along either's family by continuation in sigma, then the
  * length as above, the one that does not cross itself kept (spline_bracket.c: QA13's
  * 8-point walk, without a free batten, reached no length 1.03 .. 15 x its polygon; now
- * every one that its tensions sigma h^2 = 0.01 .. 200 give, at those tensions).
+ * every one that its tensions sigma h^2 = 0.01 .. 200 give, at those tensions); where each
+ * of those crosses itself, the same from the rungs that do not and from 7 finer rungs
+ * between the bracket's two. A spline by length that crosses itself (loops) where its
+ * ducks' polygon does not is tried so too, and kept (loops 1) only where no fair one is
+ * reached (ring77 at the length of its fair spline at sigma h^2 20 on the longest span:
+ * one crossing itself at 35.7 before).
  * A length not reached where splines were met following the family is EL_ERANGE, res->reach
  * giving the lengths met and the longest without a crossing, res->ladder the tensions
  * of tension mode's splines met looking for a bracket (a length within the lengths met
@@ -1283,7 +1288,11 @@ void el_spline_options_defaults(el_spline_options *opt);
  *     loops (to 1e-8; before 17 / 3 / 1 / 0 / 0; examples/ducks.csv at 450 and 500 to
  *     2.5e-8, 3.6e-8, within its resolution). Beyond ~500 on the longest span
  *     mostly no spline is found (EL_ENOCONV, res empty): a piece's tail
- *     multiplies a change at its start by ~exp(sqrt(sigma / 2) h). In length mode
+ *     multiplies a change at its start by ~exp(sqrt(sigma / 2) h): its modulus k is
+ *     within ~exp(-sqrt(sigma / 2) h) of 1 (examples/ducks.csv's longest span: 1 - k^2 =
+ *     -7e-9 at sigma h^2 500), its far end known to ~4.4e-16 / |1 - k^2| of its curvature
+ *     (resolution 1.2e-7 at 450, 2.9e-7 at 500, 4e-7 at 520, none reached from 560). The
+ *     Python binding's error then names the largest tension that solves. In length mode
  *     these are lengths within ~1/5 of the free batten's excess over the
  *     polygon's length (0.1 - 0.2 % of it on hand-placed points).
  * res is overwritten (not freed first): on EL_OK it holds the spline (residual

@@ -607,7 +607,11 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
         /* a near spline short of tol: from the tension splines that bracket the length
          * (spline_bracket.c; QA14's sheer at sigma h^2 300: 1.1e-7 at tol 1e-10 where
          * tension mode's spline is within 1.04e-9) */
-        if (st == EL_ENOCONV && lmode && sol == &w && !opt->initial) {
+        /* a spline by length that crosses itself where its ducks' polygon does not: the
+         * bracket's (spline_bracket.c) where it reaches one that does not (ring77 at the
+         * length of its fair spline at sigma h^2 20: a crossing one at 35.7) */
+        if ((st == EL_ENOCONV || (st == EL_OK && cr)) && lmode && sol == &w && !opt->initial) {
+            const int st0 = st;
             el_spline_result r2;
             st = by_tension_again(&w, xy, n, opt, S, &r2);
             if (st == EL_OK) {
@@ -617,7 +621,7 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
             } else if (st == EL_ENOMEM) {
                 el_spline_result_free(res);
             } else {
-                st = EL_ENOCONV;
+                st = st0;   /* the crossing one, res->loops saying so */
             }
         }
         goto done;

@@ -16,7 +16,11 @@
  * 100. On 3300 random problems (300 walks, sketches, rings, ducks near a line, tangent and
  * G2 ends; 5 tensions, 6 lengths 1.001 .. 4 x) 80 failures by length solved, the 3219 other
  * results bit for bit the same; the 323 lengths still beyond reach take ~2 x the CPU to say
- * so (22 -> 44 ms each).
+ * so (22 -> 44 ms each). FAIR_RUNGS (below): of 923 problems (27 sets of ducks: walks, a
+ * sketch, rings, a star, examples/ducks.csv; 13 tensions, their lengths and 9 lengths 1.001
+ * .. 3 x) 4 lengths that gave a spline crossing itself now give a fair one (ring77 at 1.27,
+ * 1.39, 1.5 x, ring41 at 1.5 x), the 919 others bit for bit the same; the 75 that still
+ * cross themselves take ~4 x the CPU to say so (32 -> 122 ms each), the rest as before.
  */
 #include "internal.h"
 #include <stdlib.h>
@@ -127,19 +131,84 @@ static int rank(el__spchain *w, int st)
     return c < 0 ? -1 : 3 - c;
 }
 
+/*
+ * FAIR_RUNGS: the ways from the rungs that do not cross themselves (fair[e], hfair[e]; the
+ * other end: its side's fair rung, else its rung), where the ways from the bracket's own
+ * rungs reached only splines crossing themselves: ring77 (12 closed ducks) at the length
+ * of its fair spline at sigma h^2 20 on the longest span (2.75 on the mean chord, 1.266 x
+ * its polygon) had rungs 10 (fair, 1.152 x), 5 (crossing, 1.260 x) and 2.5 (crossing,
+ * 1.562 x), and the family through each crosses itself at that length (sigma h^2 35.7).
+ * Into kept (its rank *best) where a way ranks higher. The status of the last way.
+ */
+static int fair_ways(el__spchain *w, int max_steps, double Lt, const el__spsnap end[2], const double len[2],
+                     const el__spsnap fair[2], const double flen[2], const int hfair[2], el__spsnap *kept,
+                     int *best)
+{
+    int st = EL_ENOCONV;
+    for (int k = 0; k < 4 && *best < 3; k++) {
+        const int e = k % 2;
+        const int ofair = hfair[1 - e] && fair[1 - e].sigma != end[1 - e].sigma;
+        if (!hfair[e] || (fair[e].sigma == end[e].sigma && !ofair)) continue;   /* a way tried */
+        el__snap_load(w, &fair[e]);
+        const el__spsnap *o = hfair[1 - e] ? &fair[1 - e] : &end[1 - e];
+        st = from_state(w, max_steps, Lt, o->sigma, hfair[1 - e] ? flen[1 - e] : len[1 - e], k >= 2);
+        const int r = rank(w, st);
+        if (r < 0) return EL_ENOMEM;
+        if (r > *best) { el__snap_save(w, kept); *best = r; }
+    }
+    return st;
+}
+
+/*
+ * FINE_RUNGS: tension mode's splines at FINE - 1 tensions between the bracket's rungs
+ * (geometrically), each solved afresh: one that does not cross itself replaces its side's
+ * fair rung where its length is nearer Lt. Tension mode's fair branches can lie between
+ * two rungs: ring77's at sigma h^2 19 .. 27.5 on the longest span (1.296 .. 1.227 x),
+ * between rungs crossing themselves at 18.2 and 36.4. 1 where a rung was replaced, 0 where
+ * none, -1 out of memory.
+ */
+enum { FINE = 8 };
+#define NEAR_RUNG 2.01   /* a rung of the ladder (x 2) and rounding */
+static int fine_rungs(el__spchain *w, int max_steps, double Lt, const el__spsnap end[2], el__spsnap fair[2],
+                      double flen[2], int hfair[2])
+{
+    const double s0 = end[0].sigma, s1 = end[1].sigma;
+    if (!(s0 > 0.0) || !(s1 > 0.0)) return 0;
+    int fresh = 0;
+    for (int j = 1; j < FINE; j++) {
+        const double sigma = s0 * pow(s1 / s0, (double)j / FINE);
+        const int r = tension_at(w, max_steps, sigma);
+        if (r < 0) return -1;
+        if (!r) continue;
+        note_rung(w, sigma);
+        const double L = total_length(w);
+        const int side = L >= Lt ? 0 : 1, c = el__chain_crosses(w);
+        if (c < 0) return -1;
+        if (c || (hfair[side] && fabs(flen[side] - Lt) <= fabs(L - Lt))) continue;
+        el__snap_save(w, &fair[side]);
+        flen[side] = L;
+        hfair[side] = 1;
+        fresh = 1;
+    }
+    return fresh;
+}
+
 int el__spline_length_by_tension(el__spchain *w, int max_steps, double Lt, int least)
 {
     if (!(Lt > 0.0)) return EL_ENOCONV;
     const size_t n = w->n, m = w->m, ns = n + 2 * EL__NV * m;
-    double *buf = malloc(3 * ns * sizeof *buf);
+    double *buf = malloc(5 * ns * sizeof *buf);
     if (!buf) return EL_ENOMEM;
     /* the bracket: end[0] longer than Lt (a lower tension), end[1] shorter; kept: the
      * best spline reached from them */
     el__spsnap end[2] = {{buf, buf + n, buf + n + EL__NV * m, 0.0},
                          {buf + ns, buf + ns + n, buf + ns + n + EL__NV * m, 0.0}};
     el__spsnap kept = {buf + 2 * ns, buf + 2 * ns + n, buf + 2 * ns + n + EL__NV * m, 0.0};
-    double len[2] = {0.0, 0.0};
-    int have[2] = {0, 0};
+    /* FAIR_RUNGS: the last rung on each side that does not cross itself */
+    el__spsnap fair[2] = {{buf + 3 * ns, buf + 3 * ns + n, buf + 3 * ns + n + EL__NV * m, 0.0},
+                          {buf + 4 * ns, buf + 4 * ns + n, buf + 4 * ns + n + EL__NV * m, 0.0}};
+    double len[2] = {0.0, 0.0}, flen[2] = {0.0, 0.0};
+    int have[2] = {0, 0}, hfair[2] = {0, 0};
     /* the rungs' lengths: the least, the greatest, the greatest not crossing itself (REACH) */
     double met[3] = {HUGE_VAL, 0.0, 0.0};
     /* down from the taut batten until a rung says which way (up, from above it, when the
@@ -156,10 +225,13 @@ int el__spline_length_by_tension(el__spchain *w, int max_steps, double Lt, int l
             const int side = L >= Lt ? 0 : 1;
             met[0] = fmin(met[0], L);
             met[1] = fmax(met[1], L);
-            if (L > met[2]) {
-                const int c = el__chain_crosses(w);
-                if (c < 0) { free(buf); return EL_ENOMEM; }
-                if (!c) met[2] = L;
+            const int c = el__chain_crosses(w);
+            if (c < 0) { free(buf); return EL_ENOMEM; }
+            if (!c) {
+                met[2] = fmax(met[2], L);
+                el__snap_save(w, &fair[side]);
+                flen[side] = L;
+                hfair[side] = 1;
             }
             el__snap_save(w, &end[side]);   /* the last on its side: the nearest to the other */
             len[side] = L;
@@ -199,6 +271,9 @@ int el__spline_length_by_tension(el__spchain *w, int max_steps, double Lt, int l
             const int side = L >= Lt ? 0 : 1;
             met[0] = fmin(met[0], L);
             if (side == 0 && L > len[0]) break;   /* not shorter: not the family's way */
+            const int c = el__chain_crosses(w);
+            if (c < 0) { free(buf); return EL_ENOMEM; }
+            if (!c) { el__snap_save(w, &fair[side]); flen[side] = L; hfair[side] = 1; }
             el__snap_save(w, &end[side]);
             len[side] = L;
             have[side] = 1;
@@ -222,6 +297,20 @@ int el__spline_length_by_tension(el__spchain *w, int max_steps, double Lt, int l
                 best = r;
                 kept_resid = w->resid;
             }
+        }
+        /* FAIR_RUNGS: where the ways reached splines crossing themselves and none that does
+         * not, the same ways from the rungs that do not cross themselves, then from finer
+         * rungs between the bracket's two (FINE_RUNGS); only where the ladder's fair splines
+         * reach the bracket (a fair rung on its long side, or its short side's within a rung
+         * of it): beyond them (ring77 at 3 .. 22 x its polygon) the search costs 2-5 x the
+         * CPU to end crossing itself all the same */
+        const int near_fair =
+            best == 2 && (hfair[0] || (hfair[1] && fair[1].sigma <= NEAR_RUNG * end[1].sigma));
+        if (st != EL_ENOMEM && near_fair) st = fair_ways(w, max_steps, Lt, end, len, fair, flen, hfair, &kept, &best);
+        if (st != EL_ENOMEM && near_fair && best < 3) {
+            const int fresh = fine_rungs(w, max_steps, Lt, end, fair, flen, hfair);
+            if (fresh < 0) st = EL_ENOMEM;
+            else if (fresh) st = fair_ways(w, max_steps, Lt, end, len, fair, flen, hfair, &kept, &best);
         }
         if (st != EL_ENOMEM && best > 0) {
             el__snap_load(w, &kept);

@@ -185,6 +185,28 @@ START_TEST(length_mode_keeps_the_nearest_of_the_bracket)
 }
 END_TEST
 
+/* ring77 at the length of its fair tension-mode spline at sigma h^2 = 20 (longest side, 1.266 x
+ * its polygon): by length the solve returned a spline of that length crossing itself (sigma h^2
+ * 35.7, loops 1), the family through every rung of the bracket crossing itself there; now the
+ * fair one, from the finer rungs that do not cross themselves (spline_bracket.c FAIR_RUNGS) */
+START_TEST(length_mode_prefers_the_fair_spline)
+{
+    const double h = fmax(longest_side(ring77, 12), hypot(ring77[22] - ring77[0], ring77[23] - ring77[1]));
+    el_spline_options o = closed_opts(EL_SPLINE_TENSION, 20.0 / (h * h));
+    el_spline_result t, l;
+    ck_assert_int_eq(solve(ring77, 12, &o, &t), EL_OK);
+    ck_assert_int_eq(t.loops, 0);
+    el_spline_options ol = closed_length(t.length);
+    ck_assert_int_eq(solve(ring77, 12, &ol, &l), EL_OK);
+    check_spline(ring77, 12, &ol, &l, 1e-9);
+    ck_assert_msg(l.loops == 0, "crosses itself at sigma h^2 %.6g", l.sigma * h * h);
+    ck_assert_msg(fabs(l.sigma - t.sigma) <= 1e-6 * t.sigma, "tension %.9g of %.9g", l.sigma * h * h, 20.0);
+    ck_assert_msg(fabs(l.energy - t.energy) <= 1e-6 * t.energy, "energy %.9g of %.9g", l.energy, t.energy);
+    el_spline_result_free(&t);
+    el_spline_result_free(&l);
+}
+END_TEST
+
 /* A length beyond every spline the solve met: EL_ERANGE, with the least and greatest
  * lengths met (reach[0..1]) around the free batten's and the longest without a crossing
  * (reach[2]); the star at 6 x its polygon (it met 1.118 .. 5.49 x, fair up to 2.16 x),
@@ -276,6 +298,7 @@ int main(void)
     tcase_add_test(tc, length_beyond_reach_says_how_far);
     tcase_add_test(tc, length_beyond_the_tension_splines_met);
     tcase_add_test(tc, closed_bays_by_length_from_the_taut_start);
+    tcase_add_test(tc, length_mode_prefers_the_fair_spline);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }
