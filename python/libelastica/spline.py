@@ -115,6 +115,33 @@ class ElasticSpline:
         normal = np.column_stack([-np.sin(th), np.cos(th)])
         return xy - scale * k[:, None] * normal
 
+    def crossings(self, per_piece: int = 64) -> List[tuple]:
+        """Where the spline crosses itself: the pairs (i, j), i < j, of points between
+        which its two crossing stretches run (stretch i from point i to point i + 1, the last
+        of a closed spline back to point 0; a G2 end's guide duck inside its stretch), each
+        pair once, sorted; [] for a spline that does not cross itself. Its pieces sampled
+        at ``per_piece`` points each (shape.crossing_pairs)."""
+        from .shape import crossing_pairs
+        m = len(self.pieces)
+        t = np.linspace(0.0, 1.0, int(per_piece) + 1)[:-1]
+        xy = [p.points(t * p.length) for p in self.pieces]
+        xy.append(self.pieces[0].points(np.zeros(1)) if self.closed else
+                  self.pieces[-1].points(np.full(1, self.pieces[-1].length)))
+        piece = np.repeat(np.arange(m), len(t))   # the piece of each sample segment
+        # the point each piece starts after: its index less the guide ducks before it
+        point = np.array([j - sum(g <= j for g in self.guide_pieces) for j in range(m)])
+        pairs = {tuple(sorted((int(point[piece[a]]), int(point[piece[b]]))))
+                 for a, b in crossing_pairs(np.vstack(xy))}
+        return sorted(pairs)
+
+    def crossing_text(self) -> str:
+        """The crossings in words (counted from 0), for the loop warnings."""
+        n = len(self.data)
+        said = [f"within the span from point {i} to {(i + 1) % n}" if i == j else
+                f"where the spans from point {i} to {(i + 1) % n} and from point {j} to "
+                f"{(j + 1) % n} cross" for i, j in self.crossings()]
+        return ", ".join(said[:3]) + (f" and {len(said) - 3} more" if len(said) > 3 else "")
+
     def to_bspline(self, tol: float = 1e-6, degree: int = 3):
         """ONE clamped B-spline (degree 3..7) for the whole spline within ``tol``
         (coordinate units) of it: every point of the B-spline within ``tol`` of the
@@ -170,6 +197,54 @@ def _out_of_range(pts, chords) -> str:
             "coordinates up to 1e100, chords from 1e-100 to 1e100); rescale the points")
 
 
+# Tension x (longest span)^2 from which a failure in tension mode is looked at as the limit
+# of what double precision resolves (elastica.h, Accuracy): below it other causes dominate
+STIFF_SH2 = 300.0
+
+
+def _largest_tension(pts, n, opt, sigma, span2) -> tuple:
+    """Where tension mode failed at a high tension: the largest tension it solves here
+    (without loops), tension x (longest span)^2 = min(asked, 1024) x 2^(-j/4) down to 100,
+    then 3 bisections in log above it, and why none above it: its nearly straight runs'
+    elliptic modulus k is within ~exp(-sqrt(sigma / 2) h) of 1 (a boundary layer at each
+    duck), a double k resolves 1 - k^2 only in steps of 2 |k| ulp(k) ~ 4.4e-16, so the far
+    layer's curvature only to ~4.4e-16 / |1 - k^2| of itself (the separatrix bound,
+    ``resolution``), which grows ~2.3 x per +50 (examples/ducks.csv: 1.2e-7 at 450, 2.9e-7
+    at 500, 4e-7 at 520, none at 560 and above, where Newton's steps fall below the
+    noise). (tension, its text), (None, '') when none of those solves either."""
+    def solves(sh2):
+        o = ffi.new("el_spline_options *", opt[0])
+        o.sigma = sh2 / span2
+        r = ffi.new("el_spline_result *")
+        st = lib.el_spline_solve(dptr(pts), n, o, r)
+        out = (float(r.resolution), min(abs(1.0 - r.pieces[j].k ** 2) for j in range(r.npieces))) \
+            if st == lib.EL_OK and not r.loops else None
+        lib.el_spline_result_free(r)
+        return out
+    top = min(sigma * span2, 1024.0)
+    for j in range(1, 4 * 4):   # down to top / 16, at least 100
+        lo = top * 2.0 ** (-j / 4.0)
+        if lo < 100.0:
+            return None, ""
+        got = solves(lo)
+        if got:
+            break
+    hi = lo * 2.0 ** 0.25
+    for _ in range(3):
+        mid = (lo * hi) ** 0.5
+        g = solves(mid)
+        lo, hi, got = (mid, hi, g) if g else (lo, mid, got)
+    resolution, kp2 = got
+    return lo / span2, (f"; the largest tension solved here is ~{lo / span2:.3g} (x (longest span)^2 = "
+            f"{lo:.3g}): beyond it the nearly straight runs between the ducks are pieces "
+            f"whose elliptic modulus k lies within ~exp(-sqrt(tension / 2) x span) of 1 "
+            f"(|1 - k^2| = {kp2:.2g} there), which a double resolves only in steps of "
+            f"~4.4e-16, so the far end of such a piece is known only to ~4.4e-16 / |1 - k^2| "
+            f"of its curvature (its resolution there {resolution:.2g}, a residual within the "
+            f"lesser of it and 1e-7 accepted; ~2.3 x per +50 of tension x span^2): give a "
+            f"tension up to it")
+
+
 def _digits_apart(x, *others):
     """Significant digits (4 .. 12) that write x apart from each of others that differs."""
     for d in range(4, 13):
@@ -215,7 +290,12 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
     the dimensionless tension x (longest span)^2: on 24 random sketches, sheers and ovals
     (QA14) all solve up to 100, 22 at 200, 19 at 300 (to ~1e-9), 5 at 450, and tol 1e-7
     instead of 1e-10 solves no more of them at 450 (the rest reach nothing, or stay at
-    ~2e-7 .. 6e-7 on nearly straight runs)); by length, :class:`LengthRangeError`
+    ~2e-7 .. 6e-7 on nearly straight runs); from tension x (longest span)^2 = 300 on, where
+    none was accepted, its ``largest_tension`` (else None) and message name the largest
+    tension that solves these points (a few solves below the one asked: ~0.3-0.5 s) and why
+    none above it: the modulus k of the nearly straight runs' pieces is then within
+    ~exp(-sqrt(tension / 2) span) of 1, which a double resolves only in steps of ~4.4e-16);
+    by length, :class:`LengthRangeError`
     (a NotConvergedError) where no spline of the length was reached though splines were
     met following the family of splines through the points (mostly a length beyond
     them), its message and ``shortest``, ``longest``,
@@ -296,9 +376,12 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
                     f"length {length:.4g} (tension {sp.tension:.4g}); a shorter length gives one" + (
                         f" (the longest met without loops: {fair / polygon:.4g} x the polygon, "
                         f"{fair:.6g})" if fair > 0.0 else "")
+                where = sp.crossing_text()
                 warnings.warn("elastic_spline: the spline loops away from its ducks (it crosses "
                               "itself where their polygon does not, or is longer than 4 x it, "
-                              f"{sp.length:.4g}): no fair batten was found at {fix}",
+                              f"{sp.length:.4g}" + (f"; it crosses itself {where}, points counted from 0"
+                                                    if where else "") +
+                              f"): no fair batten was found at {fix}",
                               LoopWarning, stacklevel=2)
             return sp
         if st == lib.EL_EDOM:   # the cases above are checked: the free batten
@@ -340,7 +423,7 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
             err.spline = None
             raise err
         if st == lib.EL_ENOCONV:
-            why = ""
+            why, largest = "", None
             if length is None and sigma > 0.0:
                 # the solver's reach is in the dimensionless tension (elastica.h: Accuracy)
                 sh2 = sigma * float(chords.max()) ** 2
@@ -351,6 +434,9 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
                            "straight runs stay at ~2e-7 .. 6e-7); tension is in 1/units^2 of the "
                            "points (in mm, "
                            "1e-6 x the same tension in m)")
+                if sh2 >= STIFF_SH2:
+                    largest, text = _largest_tension(pts, n, opt, sigma, float(chords.max()) ** 2)
+                    why += text
             if res.npieces and res.resolution > 0.0:
                 # pieces near the separatrix: accepted within what a double resolves (elastica.h)
                 why = (f"; its pieces nearly straight under tension resolve only "
@@ -360,6 +446,7 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
                 "the exception)" if res.npieces else "no spline through the points was reached")
                 + why)
             err.spline = ElasticSpline(res, pts, closed) if res.npieces else None
+            err.largest_tension = largest
             raise err
         if st == lib.EL_EINVAL:
             why = _out_of_range(pts, chords)

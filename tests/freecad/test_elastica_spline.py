@@ -16,6 +16,16 @@ from freecad.elastica import commands as C
 from freecad.elastica import spline as Sp
 
 DUCKS = [(0, 0), (30, 10), (60, 5), (90, 20), (120, 0)]     # a hand-placed batten (mm)
+# QA's ring77: 12 random ducks closed into a ring (tests/c/test_spline_reach.c's ring77)
+RING77 = [(1.114871201483529, 0.06296179947823506), (0.5268930130627169, 0.14471682098931363),
+          (0.7002262459798201, 0.22878727946245084), (1.171136186509111, 0.7625165256147413),
+          (-0.6232201739649377, 0.0006386487226305472), (-1.0328428299768375, -0.02805207981902149),
+          (-0.4487961745896451, -0.31801768649958634), (-0.7908416001295514, -1.202444892387523),
+          (-0.31667086307954834, -0.592213679706269), (-0.09621596250118901, -0.9049211859109808),
+          (-0.08974183254317604, -1.042927207910349), (0.9393609599573067, -0.7763458991267597)]
+with open(os.path.join(S.ROOT, "examples", "ducks.csv")) as f:
+    EXAMPLE_DUCKS = [tuple(map(float, line.split(",")[:2])) for line in f
+                     if line.strip() and line[0] not in "#xX"]
 
 
 def duck_parameters(curve, ducks):
@@ -151,6 +161,47 @@ class SplineTest(S.DocTest):
         self.assertIn("loops away from its points", s.Warnings[0])
         self.assertTrue(s.Status.startswith("ok; warning: the batten loops away"), s.Status)
         self.assertEqual([w for w in said if "loops" in w], [f"Elastica {s.Label}: {s.Warnings[0]}\n"])
+
+    def test_a_looping_batten_says_where(self):
+        # the spike below its fair family's least tension: the warning names the spans
+        # where the batten crosses itself (it said only that it loops)
+        spike = [(0, 0), (100, 0), (105, 100), (110, 0), (200, 0)]
+        s = self.spline([(S.points_sketch(self.doc, spike, "Spike"), [])], Tension=1.25e-5)
+        self.assertEqual(len(s.Warnings), 1, s.Warnings)
+        self.assertIn("it crosses itself within the span from point 1 to 2, where the spans "
+                      "from point 1 to 2 and from point 2 to 3 cross, points counted from 0",
+                      s.Warnings[0])
+
+    def test_closed_length_gives_the_fair_batten(self):
+        # QA's ring77 (12 random ducks closed into a ring, x 100 mm) at the length of its
+        # fair batten at tension x (longest side)^2 = 20: by that Length the feature drew a
+        # batten crossing itself (tension x side^2 35.7) with a loop warning; now the fair one
+        ring = [(100 * x, 100 * y) for x, y in RING77]
+        sk = S.points_sketch(self.doc, ring, "Ring77")
+        h = max(math.dist(a, b) for a, b in zip(ring, ring[1:] + ring[:1]))
+        fair = self.spline([(sk, [])], Closed=True, Tension=20.0 / h ** 2)
+        self.assertEqual(list(fair.Warnings), [])
+        s = self.spline([(sk, [])], Closed=True, Mode="length", Length=fair.SplineLength)
+        self.assertEqual(list(s.Warnings), [], s.Status)
+        self.assertAlmostEqual(s.SplineTension * h ** 2, 20.0, delta=2e-5)
+        self.assertAlmostEqual(s.Energy, fair.Energy, delta=1e-6 * fair.Energy)
+
+    def test_too_high_a_tension_names_the_largest_that_solves(self):
+        # examples/ducks.csv (x 100 mm) at tension x (longest span)^2 = 700: no batten (its
+        # nearly straight spans are more than a double resolves); the error names the
+        # largest tension that solves these points (about 520 / span^2), which does
+        ducks = [(100 * x, 100 * y) for x, y in EXAMPLE_DUCKS]
+        sk = S.points_sketch(self.doc, ducks, "Taut")
+        h = max(math.dist(a, b) for a, b in zip(ducks, ducks[1:]))
+        s = Sp.make(self.doc, [(sk, [])], Tension=700.0 / h ** 2)
+        self.doc.recompute()
+        self.assertTrue(s.Status.startswith("error"), s.Status)
+        self.assertIn("the largest tension that solves these points is about", s.Status)
+        said = float(s.Status.split("is about ")[1].split()[0])
+        self.assertTrue(450.0 <= said * h ** 2 <= 560.0, s.Status)
+        s.Tension = said
+        self.doc.recompute()
+        self.assertTrue(s.Status.startswith("ok"), s.Status)
 
     def test_tension_pulls_the_batten_shorter(self):
         lengths = [self.spline(Tension=t).SplineLength for t in (0.0, 1e-4, 1e-3, 1e-2)]

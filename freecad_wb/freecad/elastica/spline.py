@@ -105,7 +105,16 @@ def _solve(xy, mode, value, closed, start, end):
             return sp, (f"resolved to {sp.residual:.1g} only (a piece close to a circular arc, "
                         "or a very high tension)")
         failure = "no equilibrium found: the solver did not converge; try another tension or length"
-        if isinstance(exc, e.LengthRangeError):   # the lengths reached, in the library's words
+        largest = getattr(exc, "largest_tension", None)
+        if largest:   # beyond what a double resolves (the binding's search, elastica.h Accuracy)
+            span = max(math.hypot(b[0] - a[0], b[1] - a[1])
+                       for a, b in zip(xy, list(xy[1:]) + (list(xy[:1]) if closed else [])))
+            failure = (f"no equilibrium found at Tension = {tension_mark(value, span, 6)}: "
+                       f"the largest tension that solves these points is about "
+                       f"{tension_mark(largest, span, 3)}; above it the nearly straight spans "
+                       "between the points are more than double precision resolves (the "
+                       "elliptic modulus of their pieces too near 1): give a tension up to it")
+        elif isinstance(exc, e.LengthRangeError):   # the lengths reached, in the library's words
             failure = _library_message(exc)
         elif mode == "length":
             try:   # the free batten's length, for scale
@@ -224,9 +233,13 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
     if note:
         notes.append(note)
     if sp.loops:
+        where = sp.crossing_text()   # the places, as the library's LoopWarning says them
         cautions.append("the batten loops away from its points (it crosses itself, or is longer "
-                     "than 4 x their polygon): no fair batten at this tension; raise the "
-                     "tension or give a length")
+                     "than 4 x their polygon" + (f"; it crosses itself {where}, points counted "
+                                                 "from 0" if where else "") +
+                     "): no fair batten at this " + ("tension; raise the tension or give a length"
+                                                     if mode == "tension" else
+                                                     "length; give a shorter length or a tension"))
     for j, name in ((0, "first"), (-1, "last")):
         if isinstance(specs[j], dict):     # its force: GuideForces
             notes.append(f"G2 {'start' if j == 0 else 'end'}: a guide duck a quarter into the "

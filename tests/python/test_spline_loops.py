@@ -1,0 +1,57 @@
+"""Elastic splines that cross themselves (issue 14): length mode prefers the fair spline of
+the length asked, and the LoopWarning says where a spline returned crosses itself."""
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+import pytest
+
+import libelastica as el
+from libelastica.shape import self_crossings
+
+# QA's ring77: 12 random ducks closed into a ring (tests/c/test_spline_reach.c's ring77)
+RING77 = np.array([
+    [1.114871201483529, 0.06296179947823506], [0.5268930130627169, 0.14471682098931363],
+    [0.7002262459798201, 0.22878727946245084], [1.171136186509111, 0.7625165256147413],
+    [-0.6232201739649377, 0.0006386487226305472], [-1.0328428299768375, -0.02805207981902149],
+    [-0.4487961745896451, -0.31801768649958634], [-0.7908416001295514, -1.202444892387523],
+    [-0.31667086307954834, -0.592213679706269], [-0.09621596250118901, -0.9049211859109808],
+    [-0.08974183254317604, -1.042927207910349], [0.9393609599573067, -0.7763458991267597]])
+SPIKE = np.array([[0, 0], [1, 0], [1.05, 1], [1.1, 0], [2, 0]], float)
+
+
+def _longest_side(p, closed):
+    q = np.vstack([p, p[:1]]) if closed else p
+    return float(np.hypot(*np.diff(q, axis=0).T).max())
+
+
+def test_length_mode_prefers_the_fair_spline():
+    """ring77 at the length of its fair spline at tension x (longest side)^2 = 20 (1.266 x
+    its polygon): by that length the solve returned a spline crossing itself (20 -> 35.7,
+    LoopWarning) though the fair one exists; now that one, silent."""
+    h = _longest_side(RING77, True)
+    fair = el.elastic_spline(RING77, tension=20.0 / h**2, closed=True)
+    assert not fair.loops
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", el.LoopWarning)
+        sp = el.elastic_spline(RING77, length=fair.length, closed=True)
+    assert not sp.loops and self_crossings(sp.points(4000)) == 0
+    assert sp.tension * h**2 == pytest.approx(20.0, rel=1e-6)
+    assert sp.energy == pytest.approx(fair.energy, rel=1e-6)
+    assert sp.length == pytest.approx(fair.length, rel=1e-12)
+
+
+def test_loop_warning_names_the_crossing():
+    """The spike's ducks below the least tension its fair family reaches: the spline returned
+    loops within the span from duck 1 to 2 and across the next span; the warning says where
+    (it named only the length before), and crossings() gives the spans."""
+    with pytest.warns(el.LoopWarning, match=r"it crosses itself within the span from point 1 to 2, "
+                                            r"where the spans from point 1 to 2 and from point 2 to 3 "
+                                            r"cross, points counted from 0"):
+        sp = el.elastic_spline(SPIKE, tension=0.125)
+    assert sp.crossings() == [(1, 1), (1, 2)]
+    # the spans named are where the samples cross: each crossing's segments lie in them
+    assert self_crossings(sp.points(3000)) > 0
+    fair = el.elastic_spline(SPIKE, tension=2.0)
+    assert not fair.loops and fair.crossings() == []
