@@ -1232,7 +1232,10 @@ void el_spline_options_defaults(el_spline_options *opt);
  * and of those found the one that follows its ducks is kept, then the least
  * integral kappa^2 + sigma ds (the functional the equations make stationary; QA's spike
  * ducks at sigma 1.25: a figure eight, now the batten); where none follows its ducks,
- * loops says so (spline_fair.c). Before that: a solution of the direct Newton longer
+ * loops says so (spline_fair.c); at sigma h^2 <= 40 on the mean chord first from tension
+ * mode's fair solutions at 0.9, 1.1, 0.75, 1.3 x sigma, by continuation in sigma (spline_path.c
+ * NEIGHBOURS: QA's ring77 looped at sigma h^2 95 .. 120 on its longest side and reached
+ * nothing at 200, fair at 90 and 150). Before that: a solution of the direct Newton longer
  * than 1.5 x the ducks' polygon (it winds away from them) is replaced by the free batten pulled
  * to that tension, or the batten brought down from sigma h^2 = 40, where that converges
  * shorter; where neither the direct Newton nor the batten from sigma h^2 = 40 converges,

@@ -302,6 +302,7 @@ typedef struct el__spchain {
     double tol, aim;         /* accepted and aimed-at residual */
     int near;                /* the state is a solution to what the parametrisation resolves */
     int leap;                /* el__spline_follow_family: leap once over a stall (spline_path.c) */
+    int neighbours;          /* el__spline_solve_tension: from fair nearby tensions (spline_path.c) */
 } el__spchain;
 
 /* The workspace for n knots and m pieces (zeroed, n, m set); free it also on failure. */

@@ -406,7 +406,12 @@ static int solve_sibling(el__spchain *w, const double *xy, size_t n, const el_sp
         *straight = 1;
         return EL_OK;
     }
-    if (!lmode) return el__spline_solve_tension(w, opt->max_steps, 1);
+    if (!lmode) {
+        w->neighbours = 1;
+        const int st = el__spline_solve_tension(w, opt->max_steps, 1);
+        w->neighbours = 0;
+        return st;
+    }
     if (straight_line(xy, n, opt, &dir))   /* longer than the line */
         return el__spline_solve_buckled(w, opt->max_steps, dir, Lp / S, opt->length / S, 0);
     const int st = near_line(xy, n, opt, &dir)   /* buckled near it, or from the free batten */

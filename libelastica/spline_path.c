@@ -434,7 +434,7 @@ enum { LONG_PATH = 4 };
 /* The tension solution at w->sigma: directly (one that winds away from its ducks: another
  * path to it, unwind), else by continuation from a high tension, else from the free batten.
  * final: to tol (else to EL__SP_NEAR, as a start for the length mode). */
-int el__spline_solve_tension(el__spchain *w, int max_steps, int final)
+static int solve_tension_once(el__spchain *w, int max_steps, int final)
 {
     const double target = w->sigma;
     const double aim = final ? w->aim : 1e-3 * EL__SP_NEAR, accept = final ? w->tol : EL__SP_NEAR;
@@ -461,6 +461,72 @@ int el__spline_solve_tension(el__spchain *w, int max_steps, int final)
         const int steps = max_steps < 1000 / LONG_PATH ? LONG_PATH * max_steps : 1000;
         st = from_sigma(w, steps, EL__SP_HIGH_SIGMA, target, 1e-3 * EL__SP_NEAR, EL__SP_NEAR, aim, accept);
     }
+    return st;
+}
+
+/*
+ * NEIGHBOURS (tension mode's own solve only, w->neighbours): where the tension solution
+ * loops away from its ducks (loops_away) or none was reached, tension mode's fair solutions at nearby tensions (x NEAR_TENSIONS, each solved
+ * as above) followed by continuation in sigma to the tension asked: the paths from the
+ * taut batten and the free batten jump family or stop at folds between fair branches
+ * (ring77: fair at sigma h^2 90 and 150 on the longest span, looping at 95 .. 120). The
+ * first that reaches it without wandering is kept; else the first result, as it was.
+ */
+static const double NEAR_TENSIONS[] = {0.9, 1.1, 0.75, 1.3};
+
+/* Loops away from its ducks as el_spline_result's loops says (crossing itself where its
+ * polygon does not, or longer than 4 x it: a batten longer than EL__SP_WANDER x that is
+ * no reason to look further); -1 out of memory */
+static int loops_away(const el__spchain *w)
+{
+    double poly = 0.0;
+    for (size_t j = 0; j < w->m; j++) poly += w->pc[j].h;
+    return total_length(w) > 4.0 * poly ? 1 : el__chain_crosses(w);
+}
+
+int el__spline_solve_tension(el__spchain *w, int max_steps, int final)
+{
+    const double target = w->sigma;
+    int st = solve_tension_once(w, max_steps, final);
+    if (!final || !w->neighbours || w->near || !(target > 0.0) || target > EL__SP_HIGH_SIGMA ||
+        (st != EL_OK && st != EL_ENOCONV))
+        return st;
+    const int la = st == EL_OK ? loops_away(w) : 1;
+    if (la <= 0) return la < 0 ? EL_ENOMEM : st;
+    const size_t n = w->n, m = w->m;
+    double *buf = malloc(sizeof(double) * (n + 2 * EL__NV * m));
+    if (!buf) return EL_ENOMEM;
+    el__spsnap first = {buf, buf + n, buf + n + EL__NV * m, 0.0};
+    if (st == EL_OK) el__snap_save(w, &first);
+    w->neighbours = 0;
+    int found = 0;
+    for (size_t i = 0; i < sizeof NEAR_TENSIONS / sizeof NEAR_TENSIONS[0] && !found; i++) {
+        w->near = 0;
+        w->lmode = 0;
+        w->sigma = target * NEAR_TENSIONS[i];
+        const int sn = solve_tension_once(w, max_steps, 1);
+        if (sn == EL_ENOMEM) { st = sn; break; }
+        if (sn != EL_OK || w->near) continue;
+        int l = loops_away(w);
+        if (l < 0) { st = EL_ENOMEM; break; }
+        if (l) continue;
+        const double par[2] = {w->sigma, target};
+        const int sc = el__spline_continuation(w, w->snap, max_steps, 1.0, set_sigma_linear, par, w->aim, w->tol);
+        if (sc == EL_ENOMEM) { st = sc; break; }
+        if (sc != EL_OK) continue;
+        if ((l = loops_away(w)) < 0) { st = EL_ENOMEM; break; }
+        found = !l;
+    }
+    w->neighbours = 1;
+    w->near = 0;
+    w->lmode = 0;
+    if (found) {
+        st = EL_OK;
+    } else if (st != EL_ENOMEM) {
+        w->sigma = target;
+        if (st == EL_OK) { el__snap_load(w, &first); el__chain_eval(w, 0); }
+    }
+    free(buf);
     return st;
 }
 

@@ -216,6 +216,16 @@ static const double sketch[] = {0.0, 0.0, 0.7, 0.45, 1.1, 0.62, 2.6, 0.9, 3.0, 0
                                 4.8, 0.2, 5.5, -0.3, 7.9, -0.6, 8.2, -0.55};
 enum { NSKETCH = 9 };
 
+/* 12 random ducks closed into a ring (QA's ring77: no free batten, and no batten under
+ * sigma h^2 = 40, 4 or 0.4 from the chain's start) */
+static const double ring77[] = {1.114871201483529, 0.06296179947823506, 0.5268930130627169, 0.14471682098931363,
+                                0.7002262459798201, 0.22878727946245084, 1.171136186509111, 0.7625165256147413,
+                                -0.6232201739649377, 0.0006386487226305472, -1.0328428299768375, -0.02805207981902149,
+                                -0.4487961745896451, -0.31801768649958634, -0.7908416001295514, -1.202444892387523,
+                                -0.31667086307954834, -0.592213679706269, -0.09621596250118901, -0.9049211859109808,
+                                -0.08974183254317604, -1.042927207910349, 0.9393609599573067, -0.7763458991267597};
+
+
 /* E(angles) = sum of integral kappa^2 + sigma ds over the Hermite pieces through
  * the points with those tangent angles; its derivative in the angle at point i
  * is 2 (kappa_i^- - kappa_i^+) (the first variation's boundary terms), zero at

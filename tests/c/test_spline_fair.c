@@ -145,6 +145,36 @@ START_TEST(tension_mode_returns_the_batten_not_a_figure_eight)
 }
 END_TEST
 
+/* Tension mode where its paths from the taut and the free batten jump family or stop at a
+ * fold: QA's ring77 (closed) looped at sigma h^2 95 .. 120 on the longest side (1.39 x its
+ * polygon, fair at 90 and 150) and reached nothing at 200. Now from the fair solutions at
+ * nearby tensions (spline_path.c NEIGHBOURS): G2, no crossing, shorter as the tension
+ * grows (one family) */
+START_TEST(tension_mode_from_fair_neighbours)
+{
+    const struct { const double *xy; size_t n; int closed; double sh2[6]; } c[] = {
+        {ring77, 12, 1, {90.0, 100.0, 120.0, 150.0, 200.0, 0.0}},
+    };
+    for (size_t k = 0; k < sizeof c / sizeof c[0]; k++) {
+        const size_t n = c[k].n;
+        double h = longest_side(c[k].xy, n);
+        if (c[k].closed) h = fmax(h, hypot(c[k].xy[2 * n - 2] - c[k].xy[0], c[k].xy[2 * n - 1] - c[k].xy[1]));
+        double prev = HUGE_VAL;
+        for (size_t i = 0; c[k].sh2[i] > 0.0; i++) {
+            el_spline_options o = opts(EL_SPLINE_TENSION, c[k].sh2[i] / (h * h));
+            o.closed = c[k].closed;
+            el_spline_result r;
+            ck_assert_msg(solve(c[k].xy, n, &o, &r) == EL_OK, "set %zu at %g", k, c[k].sh2[i]);
+            check_spline(c[k].xy, n, &o, &r, 1e-9);
+            ck_assert_msg(spline_crossings(&r) == 0 && r.loops == 0, "set %zu at %g crosses itself", k, c[k].sh2[i]);
+            ck_assert_msg(r.length < prev, "set %zu at %g: length %g after %g", k, c[k].sh2[i], r.length, prev);
+            prev = r.length;
+            el_spline_result_free(&r);
+        }
+    }
+}
+END_TEST
+
 /* Below the least tension of the family from the taut batten (spike: sigma ~0.629, by
  * the length mode's sigma over 1.35 .. 1.40 x the polygon; hairpin ~0.136) no batten
  * follows the ducks: the spline found is flagged (loops), and loops is 1 exactly where the
@@ -272,6 +302,7 @@ int main(void)
     tcase_add_test(tc, length_mode_passes_a_fold_in_sigma);
     tcase_add_test(tc, closed_ring_pushed_past_the_separatrix);
     tcase_add_test(tc, crossing_test_agrees_with_brute_force);
+    tcase_add_test(tc, tension_mode_from_fair_neighbours);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }
