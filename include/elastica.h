@@ -1158,7 +1158,8 @@ void el_spline_options_defaults(el_spline_options *opt);
  * Where none of that reaches the length: tension mode's splines at sigma h^2 = 40 x 2^j
  * on the mean chord (down to j = -16, or up to 6 while they converge) until two bracket
  * it (up without a bracket, again from 40 by continuation in sigma, x 2^(1/4) a step, while
- * the length falls: a rung solved afresh can leave the family, QA14's sketch at 80), the bracket narrowed along either's family by continuation in sigma, then the
+ * the length falls: a rung solved afresh can leave the family, QA14's sketch at 80; where 40
+ * has no solution, from the bracket's long rung: ring77 at 1.1 x its polygon), the bracket narrowed along either's family by continuation in sigma, then the
  * length as above, the one that does not cross itself kept (spline_bracket.c: QA13's
  * 8-point walk, without a free batten, reached no length 1.03 .. 15 x its polygon; now
  * every one that its tensions sigma h^2 = 0.01 .. 200 give, at those tensions); where each

@@ -256,7 +256,18 @@ int el__spline_length_by_tension(el__spchain *w, int max_steps, double Lt, int l
             el__snap_save(w, &end[0]);
             len[0] = total_length(w);
         }
-        for (sigma = EL__SP_HIGH_SIGMA; r0 && len[0] == total_length(w) && sigma < top;) {
+        /* TAUT_FAILS: no taut batten (ring77: none at 40, its fair rung at 20 of 1.116 x its
+         * polygon longer than 1.1 x, 80 none): from the long end's rung up its family */
+        const int r1 = !r0 && have[0];
+        sigma = EL__SP_HIGH_SIGMA;
+        if (r1) {
+            el__snap_load(w, &end[0]);
+            w->lmode = 0;
+            w->near = 0;
+            sigma = end[0].sigma;
+        }
+        if (r1 && !isfinite(el__chain_eval(w, 1))) sigma = top;
+        for (; (r0 || r1) && len[0] == total_length(w) && sigma < top;) {
             const double par[2] = {sigma, STEP * sigma};
             const int sc = el__spline_continuation(w, w->snap, max_steps, 1.0, set_sigma, par,
                                                    1e-3 * EL__SP_NEAR, EL__SP_NEAR);

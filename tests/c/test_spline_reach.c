@@ -233,22 +233,39 @@ END_TEST
 
 /* Where no family was followed (ring77: no free batten, no batten under tension from the
  * chain's start) a length shorter than every tension-mode spline the solve met: EL_ERANGE
- * with those splines' lengths (tension mode's fair ones end at 1.11 x the polygon, sigma h^2
- * ~150 on the longest span); before: EL_ENOCONV, "no spline reached", reach empty */
+ * with those splines' lengths (tension mode's fair ones reached by length end at ~1.07 x
+ * the polygon, sigma h^2 ~480 on the longest span); before: EL_ENOCONV, "no spline
+ * reached", reach empty. At 1.1 x (EL_ERANGE before TAUT_FAILS, spline_bracket.c: no
+ * taut batten at sigma h^2 40 on the mean chord, the ladder's rung at 20 longer) the fair
+ * spline of that length, on tension mode's family: its tension gives it back */
 START_TEST(length_beyond_the_tension_splines_met)
 {
-    double poly = 0.0;
+    double poly = 0.0, h = 0.0;
     for (int i = 0; i < 12; i++) {
         const int j = (i + 1) % 12;
-        poly += hypot(ring77[2 * j] - ring77[2 * i], ring77[2 * j + 1] - ring77[2 * i + 1]);
+        const double c = hypot(ring77[2 * j] - ring77[2 * i], ring77[2 * j + 1] - ring77[2 * i + 1]);
+        poly += c;
+        h = fmax(h, c);
     }
-    el_spline_options o = closed_length(1.1 * poly);
+    el_spline_options o = closed_length(1.05 * poly);
     el_spline_result r;
     ck_assert_int_eq(solve(ring77, 12, &o, &r), EL_ERANGE);
     ck_assert_int_eq((int)r.npieces, 0);
-    ck_assert_msg(r.reach[0] > 1.1 * poly && r.reach[0] < 1.2 * poly, "shortest %g", r.reach[0] / poly);
+    ck_assert_msg(r.reach[0] > 1.05 * poly && r.reach[0] < 1.2 * poly, "shortest %g", r.reach[0] / poly);
     ck_assert_msg(r.reach[1] >= r.reach[0] && r.reach[2] >= r.reach[0] && r.reach[2] <= r.reach[1],
                   "reach %g %g %g", r.reach[0] / poly, r.reach[1] / poly, r.reach[2] / poly);
+    el_spline_result_free(&r);
+    o = closed_length(1.1 * poly);
+    ck_assert_int_eq(solve(ring77, 12, &o, &r), EL_OK);
+    check_spline(ring77, 12, &o, &r, 1e-9);
+    ck_assert_int_eq(r.loops, 0);
+    ck_assert_msg(r.sigma * h * h > 150.0 && r.sigma * h * h < 300.0, "sigma h^2 %g", r.sigma * h * h);
+    el_spline_options t = closed_opts(EL_SPLINE_TENSION, r.sigma);
+    el_spline_result rt;
+    ck_assert_int_eq(solve(ring77, 12, &t, &rt), EL_OK);
+    ck_assert_msg(fabs(rt.length - 1.1 * poly) <= 1e-8 * poly, "tension mode's length %.12g x", rt.length / poly);
+    ck_assert_int_eq(rt.loops, 0);
+    el_spline_result_free(&rt);
     el_spline_result_free(&r);
 }
 END_TEST
