@@ -358,6 +358,8 @@ double el__spline_separatrix_bound(const el_smooth_params *p, const double th[2]
  * el__chain_crosses: the same for the chain w without guide ducks (internal units). */
 int el__spline_crosses(const el_smooth_params *p, size_t m, int closed);
 int el__chain_crosses(const el__spchain *w);
+/* The knots' polygon crosses itself (then el__chain_crosses says 0); -1 out of memory */
+int el__chain_polygon_crosses(const el__spchain *w);
 /* The tension solution in w (st: its status; target: its sigma, internal) where it
  * wanders or failed: the family from the taut batten followed to target (spline_fair.c). */
 int el__spline_refair(el__spchain *w, int max_steps, int st, double target);

@@ -140,6 +140,21 @@ int el__spline_crosses(const el_smooth_params *p, size_t m, int closed)
     return found;
 }
 
+int el__chain_polygon_crosses(const el__spchain *w)
+{
+    const size_t m = w->m, np = w->closed ? m : m + 1;
+    double *knots = malloc(2 * np * sizeof *knots);
+    if (!knots) return -1;
+    knots[0] = knots[1] = 0.0;
+    for (size_t j = 0; j + 1 < np; j++) {
+        knots[2 * j + 2] = knots[2 * j] + w->pc[j].dx;
+        knots[2 * j + 3] = knots[2 * j + 1] + w->pc[j].dy;
+    }
+    const int c = polyline_crosses(knots, np, w->closed);
+    free(knots);
+    return c;
+}
+
 int el__chain_crosses(const el__spchain *w)
 {
     const size_t m = w->m;

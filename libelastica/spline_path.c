@@ -466,7 +466,8 @@ static int solve_tension_once(el__spchain *w, int max_steps, int final)
 
 /*
  * NEIGHBOURS (tension mode's own solve only, w->neighbours): where the tension solution
- * loops away from its ducks (loops_away) or none was reached, tension mode's fair solutions at nearby tensions (x NEAR_TENSIONS, each solved
+ * loops away from its ducks (loops_away) or none was reached, their polygon not crossing
+ * itself, tension mode's fair solutions at nearby tensions (x NEAR_TENSIONS, each solved
  * as above) followed by continuation in sigma to the tension asked: the paths from the
  * taut batten and the free batten jump family or stop at folds between fair branches
  * (ring77: fair at sigma h^2 90 and 150 on the longest span, looping at 95 .. 120). The
@@ -493,6 +494,10 @@ int el__spline_solve_tension(el__spchain *w, int max_steps, int final)
         return st;
     const int la = st == EL_OK ? loops_away(w) : 1;
     if (la <= 0) return la < 0 ? EL_ENOMEM : st;
+    /* ducks whose polygon crosses itself: loops cannot be told (QA's rw15 at sigma h^2 5 came
+     * back crossing itself 11 times, in a span too) */
+    const int pc = el__chain_polygon_crosses(w);
+    if (pc) return pc < 0 ? EL_ENOMEM : st;
     const size_t n = w->n, m = w->m;
     double *buf = malloc(sizeof(double) * (n + 2 * EL__NV * m));
     if (!buf) return EL_ENOMEM;
