@@ -709,6 +709,16 @@ static int public_fit(int model, const double *xy, size_t n, const el_fit_option
     return st;
 }
 
+/* A kept fit that Ipopt stopped at the iteration cap (Maximum_Iterations_Exceeded, -1) and
+ * that misses a constraint: the cap, not the constraint, stopped it (EL_EMAXITER, the
+ * constraint still named; --max-iter 1 on a feasible start curvature was refused as
+ * impossible, EL_EDOM, QA). At the public wrappers only: the runs inside read EL_EDOM. */
+static void capped_not_impossible(fit_out *fo)
+{
+    if (fo->status == EL_EDOM && fo->constraint && fo->used_ipopt && fo->ipopt_status == -1)
+        fo->status = EL_EMAXITER;
+}
+
 /* The public wrappers: the result struct written only once a result exists. */
 int el_fit_discrete(const double *xy, size_t n, const el_fit_options *opt,
                     const el_discrete_params *initial, el_fit_discrete_result *res,
@@ -728,6 +738,7 @@ int el_fit_discrete(const double *xy, size_t n, const el_fit_options *opt,
         if (fo.constraint) res->constraint = fo.constraint;
         return st;
     }
+    capped_not_impossible(&fo);
     FIT_PUBLISH(res, fo, el_discrete_params);
     res->wander_gap = gap;
     return fo.status;
@@ -751,6 +762,7 @@ int el_fit_smooth(const double *xy, size_t n, const el_fit_options *opt,
         if (fo.constraint) res->constraint = fo.constraint;
         return st;
     }
+    capped_not_impossible(&fo);
     FIT_PUBLISH(res, fo, el_smooth_params);
     res->wander_gap = gap;
     res->param_mode = fo.mode;

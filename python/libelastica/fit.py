@@ -499,7 +499,9 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     converge returns the best curve seen with ``status`` != 0 and warns (ConvergenceWarning;
     raises NotConvergedError if ``strict``). Bad input (NaN, too few points, all points equal) raises ValueError /
     ElasticaError subclasses. check_ends: with constraints or fixed, fit with free ends too
-    (``FitResult.free``) and warn (EndConditionWarning, fit_cost.py) where they cost accuracy.
+    (``FitResult.free``) and warn (EndConditionWarning, fit_cost.py) where they cost accuracy;
+    that free fit is not capped by ``max_iter`` (a capped one misprices the ends: 10.2 for
+    9.24, QA).
     """
     if not isinstance(model, str) or model not in ("discrete", "smooth"):
         raise ValueError(f"fit: model must be 'discrete' or 'smooth', got {model!r}")
@@ -559,7 +561,7 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
                       WanderWarning, stacklevel=2)
     r = _result(model, res, st, pts.copy(), dist, foot, s, constraints, idx)
     if check_ends and (constraints or fixed):
-        r = checked_ends(r, fixed, dict(model=model, distance=distance, bounds=bounds, tol=tol, max_iter=max_iter,
+        r = checked_ends(r, fixed, dict(model=model, distance=distance, bounds=bounds, tol=tol,
                          limited_memory=limited_memory, max_candidates=max_candidates, param=param))
     return r
 
