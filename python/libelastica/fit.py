@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import numbers
 import warnings
 from dataclasses import dataclass
 from typing import Mapping, Optional, Union
@@ -270,6 +271,12 @@ def _pair(value, name: str):
     return a, b
 
 
+def _is_number(value) -> bool:
+    """A real number (Python's or numpy's, a 0-d array), not a pair."""
+    return (isinstance(value, numbers.Real) and not isinstance(value, bool)) or \
+        (isinstance(value, np.ndarray) and value.ndim == 0)
+
+
 def _set_constraints(o, model: str, n: int, constraints: Optional[Mapping[str, object]]):
     """Fill the constraint fields of the C options from the dict."""
     for name, value in (constraints or {}).items():
@@ -288,13 +295,15 @@ def _set_constraints(o, model: str, n: int, constraints: Optional[Mapping[str, o
             if kind == "angle":   # (stack: _options, fit, its caller)
                 warn_if_degrees(v, f"fit: constraint {name!r}", stacklevel=4)
             setattr(o, f"{where}_{'tangent' if kind == 'angle' else 'curvature'}", v)
-        else:
-            lo, hi = _pair(value, name)
+        else:   # "length": L alone is (L, L), the CLI's --length L
+            lo, hi = (value, value) if name == "length" and _is_number(value) else _pair(value, name)
             lo = (0.0 if name == "length" else -math.inf) if lo is None else lo
             hi = math.inf if hi is None else hi
             if math.isnan(lo) or math.isnan(hi) or lo > hi or (name == "length" and lo < 0):
-                raise ValueError(f"fit: constraint {name!r} must be a range (lo, hi) with "
-                                 f"{'0 <= ' if name == 'length' else ''}lo <= hi, got {value!r}")
+                raise ValueError(f"fit: constraint {name!r} must be "
+                                 f"{'a length L >= 0 or ' if name == 'length' else ''}a range "
+                                 f"(lo, hi) with {'0 <= ' if name == 'length' else ''}lo <= hi, "
+                                 f"got {value!r}")
             rng = o.length_range if name == "length" else o.k_range
             rng[0], rng[1] = lo, hi
         o.constraints |= bit
@@ -483,7 +492,8 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     "start_tangent": angle, "end_tangent": angle, "start_curvature": kappa,
     "end_curvature": kappa, "length": (lo, hi), "k": (lo, hi)}`` (angles in radians,
     the direction of travel from the first point to the last; curvature signed, +
-    turning left, 0 an inflection; ranges with None for no limit), met to 1e-10 of the
+    turning left, 0 an inflection; ranges with None for no limit; ``"length": L``, one
+    number, is the exact length (L, L), as the CLI's --length), met to 1e-10 of the
     data's size or ConstraintError naming the one that cannot be met. The discrete
     model's tangent at vertex j is theta_j = phi + 2 a(q + j z), the tangent of the
     smooth elastica with its phi, k, q and mu = 1 at s = j z (segment j runs at the mean

@@ -784,6 +784,23 @@ def test_constraint_errors_name_the_constraint():
 
 
 @pytest.mark.parametrize("model", ["smooth", "discrete"])
+def test_a_single_length_is_the_exact_length(model):
+    """constraints={"length": L}, one number as the CLI's --length L, is the range (L, L)
+    ("must be a pair" before, QA): the same fit, to the bit; a negative or NaN one refused."""
+    pts, _ = sketched_s(seed=8, n=20)
+    L = 1.05 * polyline_length(pts)
+    pair = el.fit(pts, model=model, constraints={"length": (L, L)}, check_ends=False)
+    for one in (L, np.float64(L), np.array(L)):
+        r = el.fit(pts, model=model, constraints={"length": one}, check_ends=False)
+        assert r.status == pair.status and r.rms == pair.rms
+        assert r.constraints["length"] is one
+    assert abs(pair.curve.length - L) <= 1e-10 * L if model == "smooth" else pair.status == 0
+    for bad in (-1.0, float("nan")):
+        with pytest.raises(ValueError, match="a length L >= 0 or a range"):
+            el.fit(pts, model=model, constraints={"length": bad})
+
+
+@pytest.mark.parametrize("model", ["smooth", "discrete"])
 def test_overdetermined_ends_say_so(model):
     """Point, tangent and curvature at both ends (a G2 join of two edges) are 8 equations
     on an elastica's 7 parameters: the free fit's own end values with the first and last
