@@ -1773,7 +1773,9 @@ int el_smooth_to_bspline_g2(const el_smooth_params *p, double tol, int degree, e
  * each piece by el_smooth_to_bspline_g2, joined with knot multiplicity degree - 2,
  * so the B-spline is C2 in its parameter, the arc length from the first piece's
  * start. out->max_deviation is the largest certified distance of the pieces plus
- * the rounding of the joins (and what a joint's curvature mismatch costs).
+ * the rounding of the joins (and what a joint's curvature mismatch costs); when that
+ * sum alone exceeds tol the pieces are fitted again within tol less twice the joins'
+ * rounding (at most twice).
  * Errors: EL_EINVAL (NULL, n = 0, tol <= 0, degree outside 3..7, a piece
  * el_smooth_check refuses, or one that does not start within tol of where the one
  * before ends, its tangent within tol / (the shorter piece's length) of that end's),

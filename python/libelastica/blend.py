@@ -27,7 +27,8 @@ from typing import Optional
 
 import numpy as np
 
-from ._ffi import (DomainError, SingularError, as_points, as_positive, as_real, as_vector,
+from ._ffi import (DomainError, NotConvergedError, SingularError, as_points, as_positive, as_real,
+                   as_vector,
                    bspline_from_c, check, dptr, ffi, lib, require)
 from ._text import LengthFormat, lengths
 from .shape import crossing_pairs, self_crossings
@@ -246,14 +247,33 @@ class _Blend:
         check(st, "composite_through")
         return q
 
-    def to_bspline(self, q, tol: float = 1e-6):
-        """A clamped cubic :class:`BSpline` within ``tol`` of the curve with control points
-        q (4 points, or 3*nseg + 1 for a composite), in the same parameter; its
-        ``max_deviation`` is the certified max_t |phi(t) - B(t)|. Raises
-        NotConvergedError when 256 spans per segment do not reach tol."""
+    def to_bspline(self, q, tol: Optional[float] = None):
+        """A clamped cubic :class:`BSpline` within ``tol`` (default 1e-6 of the curve's
+        length) of the curve with control points q (4 points, or 3*nseg + 1 for a
+        composite), in the same parameter; its ``max_deviation`` is the certified
+        max_t |phi(t) - B(t)|. Raises NotConvergedError (with the tol that is reached)
+        when 256 spans per segment do not reach tol, DomainError (with the smallest
+        possible) for a tol below what the coordinates resolve."""
+        from .bspline import at_least, default_tol
         q, nseg = _composite(q)
+        if tol is None:
+            xy = self.evaluate_composite(q)
+            tol = default_tol(None, np.sum(np.hypot(*np.diff(xy, axis=0).T)))
+        tol = as_positive(tol, "to_bspline: tol")
         b = ffi.new("el_bspline *")
-        st = lib.el_blend_to_bspline(self._b, nseg, dptr(q), as_positive(tol, "to_bspline: tol"), b)
+        st = lib.el_blend_to_bspline(self._b, nseg, dptr(q), tol, b)
+        if st == lib.EL_ENOCONV:    # "did not converge" told nothing to do (QA)
+            dev = float(b.max_deviation)
+            lib.el_bspline_free(b)
+            raise NotConvergedError(st, f"to_bspline: tolerance {tol:.6g} not reached with 256 "
+                                    f"spans a segment: the best B-spline found is certified "
+                                    f"within {dev:.6g}; raise tol to {at_least(dev)} or more "
+                                    "(it is reached), or give more points (shorter segments)")
+        floor = 64.0 * np.finfo(float).eps * max(self.lebesgue, 1.0) * float(np.max(np.abs(q)))
+        if st == lib.EL_EDOM and tol < floor:
+            raise DomainError(st, f"to_bspline: tol = {tol:.3g} is below what double precision "
+                              f"resolves for these coordinates; the smallest possible is 64 eps "
+                              f"max(lebesgue, 1) max|q| = {at_least(floor)}")
         if st != lib.EL_OK:
             lib.el_bspline_free(b)
             check(st, "to_bspline")
@@ -534,8 +554,9 @@ class BlendCurve:
         """Points (n, 2) at global parameters t in [0, nseg] (default 101 per segment)."""
         return self.basis.evaluate_composite(self.q, t)
 
-    def to_bspline(self, tol: float = 1e-6):
-        """Clamped cubic BSpline within tol (see :meth:`EllipticBlend.to_bspline`)."""
+    def to_bspline(self, tol: Optional[float] = None):
+        """Clamped cubic BSpline within tol, default 1e-6 of the curve's length (see
+        :meth:`EllipticBlend.to_bspline`)."""
         return self.basis.to_bspline(self.q, tol)
 
 

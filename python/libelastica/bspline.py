@@ -12,6 +12,27 @@ from ._ffi import (INT_MAX, DomainError, NotConvergedError, as_degree, as_int, a
                    require, warn_if_degrees)
 
 
+RELATIVE_TOL = 1e-6
+"""Every to_bspline's default tolerance: 1e-6 of the curve's length (README's rule), so the
+default works at any scale (1e-6 absolute failed at 1e6 coordinates, QA)."""
+
+
+def default_tol(tol, length: float, what: str = "to_bspline") -> float:
+    """``tol`` (> 0) as given, or :data:`RELATIVE_TOL` times ``length`` when None (1e-6
+    for a curve of length 0, which any tol fits)."""
+    if tol is None:
+        length = float(length)
+        return RELATIVE_TOL * length if length > 0.0 and np.isfinite(length) else RELATIVE_TOL
+    return as_positive(tol, f"{what}: tol")
+
+
+def at_least(x: float) -> str:
+    """x written with 3 significant digits, rounded up (a tol that reaches x, which "%.3g"
+    can write as the tol that missed it: "tolerance 1e-06 not reached (certified 1e-06)", QA)."""
+    e = 10.0 ** (np.floor(np.log10(x)) - 2) if x > 0.0 else 1.0
+    return f"{np.ceil(x / e * (1.0 - 1e-12)) * e:.3g}"
+
+
 class BSpline:
     """A non-rational B-spline curve: degree, poles (n, dim), distinct knots with
     multiplicities (FreeCAD/OpenCASCADE convention), and ``max_deviation``, the
@@ -187,9 +208,9 @@ def interpolate_c2(points, start=None, end=None) -> BSpline:
     return bspline_from_c(b)
 
 
-def fitted_bspline(curve, tol: float = 1e-6, degree: int = 3, constraints=None) -> BSpline:
+def fitted_bspline(curve, tol=None, degree: int = 3, constraints=None) -> BSpline:
     """The B-spline of a fitted curve for CAD: a smooth elastica's (or a Hermite chain's)
-    within ``tol``, certified, its end points, unit tangents and curvatures exact
+    within ``tol`` (default 1e-6 of its length), certified, its end points, unit tangents and curvatures exact
     (:func:`smooth_chain_to_bspline`: G2 ends, so end curvature constraints hold on it;
     SmoothElastica.to_bspline keeps the tangents only); a discrete one's C2 cubic through
     its vertices (:func:`cubic_through`) with the end tangents and curvatures among the
@@ -237,11 +258,11 @@ def cubic_through(points, start=None, end=None) -> BSpline:
     return interpolate_c2(xy, start=condition(start, "start"), end=condition(end, "end"))
 
 
-def keyline_bspline(first, second, tol: float = 1e-6, degree: int = 3, ends=None) -> BSpline:
+def keyline_bspline(first, second, tol=None, degree: int = 3, ends=None) -> BSpline:
     """ONE B-spline of a keyline's two halves, each running from the joint outwards (as
     :func:`fit_keyline` gives them), from the first half's far end through the joint to
     the second's: smooth halves, the chain of the first reversed and the second
-    (:func:`smooth_chain_to_bspline`: within ``tol``, the joint's point, tangent and zero
+    (:func:`smooth_chain_to_bspline`: within ``tol``, default 1e-6 of their length, the joint's point, tangent and zero
     curvature exact); discrete ones, the C2 cubic through the vertices of both (the joint
     once), natural at the far ends (``tol``, ``degree`` unused), each half continued to
     the foot of its end point in ``ends`` (two points or None: KeylineFit.ends) by
@@ -261,12 +282,12 @@ def keyline_bspline(first, second, tol: float = 1e-6, degree: int = 3, ends=None
                      f"needed, got {type(first).__name__} and {type(second).__name__}")
 
 
-def smooth_to_bspline(curve, tol: float = 1e-6, degree: int = 3) -> BSpline:
-    """Clamped degree-3..7 B-spline within ``tol`` (absolute, coordinate units) of a
-    SmoothElastica everywhere, parametrised by its arc length; the certified
-    distance is ``max_deviation``."""
+def smooth_to_bspline(curve, tol=None, degree: int = 3) -> BSpline:
+    """Clamped degree-3..7 B-spline within ``tol`` (absolute, coordinate units; default
+    1e-6 of the curve's length) of a SmoothElastica everywhere, parametrised by its arc
+    length; the certified distance is ``max_deviation``."""
     degree = as_degree(degree, "to_bspline: degree")
-    tol = as_positive(tol, "to_bspline: tol")
+    tol = default_tol(tol, getattr(curve, "length", 0.0))
     p = ffi.new("el_smooth_params *")
     for name in ("x0", "y0", "phi", "mu", "k", "q", "length"):
         if not hasattr(curve, name):
@@ -277,9 +298,17 @@ def smooth_to_bspline(curve, tol: float = 1e-6, degree: int = 3) -> BSpline:
     if st == lib.EL_EDOM:
         raise DomainError(st, "to_bspline: " + _beyond_limits(p, tol))
     if st == lib.EL_EMAXITER:   # the best spline is in b: free it before raising
+        dev = float(b.max_deviation)
         lib.el_bspline_free(b)
+        raise NotConvergedError(st, _not_reached(tol, dev))
     check(st, "to_bspline")
     return bspline_from_c(b)
+
+
+def _not_reached(tol: float, dev: float) -> str:
+    """A tol the certified distance dev exceeds, said with the tol that reaches it."""
+    return (f"to_bspline: tolerance {tol:.6g} not reached: the best B-spline found is "
+            f"certified within {dev:.6g}; raise tol to {at_least(dev)} or more")
 
 
 def _beyond_limits(p, tol: float) -> str:
@@ -291,7 +320,7 @@ def _beyond_limits(p, tol: float) -> str:
     if tol < floor:
         return (f"tol = {tol:.3g} is below what double precision resolves for this curve; "
                 f"the smallest possible is 1e-14 (length + |x0| + |y0| + |q|/sqrt(mu)) = "
-                f"{floor:.3g}")
+                f"{at_least(floor)}")
     if turn > limit:
         return (f"the curve turns through up to {turn:.3g} rad (2 |k| sqrt(mu) length); "
                 f"at most {limit} rad can be followed with {limit} poles: split it into "
@@ -316,13 +345,15 @@ def _check_joints(pieces, tol):
                              f"meet within tol = {tol:g}")
 
 
-def smooth_chain_to_bspline(pieces, tol: float = 1e-6, degree: int = 3) -> BSpline:
-    """ONE clamped degree-3..7 B-spline within ``tol`` of a chain of SmoothElastica
-    pieces that meet G2 (each starting where the one before ends), parametrised by
-    arc length from the first piece's start: each piece with exact end point, unit
-    tangent and curvature (el_smooth_chain_to_bspline), joined C2. ``max_deviation``
-    is the certified distance; NotConvergedError (with it) when tol is not reached."""
-    tol = as_positive(tol, "to_bspline: tol")
+def smooth_chain_to_bspline(pieces, tol=None, degree: int = 3) -> BSpline:
+    """ONE clamped degree-3..7 B-spline within ``tol`` (default 1e-6 of the chain's length)
+    of a chain of SmoothElastica pieces that meet G2 (each starting where the one before
+    ends), parametrised by arc length from the first piece's start: each piece with exact
+    end point, unit tangent and curvature (el_smooth_chain_to_bspline), joined C2.
+    ``max_deviation`` is the certified distance; NotConvergedError (with it and the tol
+    that reaches it) when tol is not reached, DomainError (with the smallest possible)
+    below what double precision resolves."""
+    tol = default_tol(tol, sum(float(getattr(c, "length", 0.0)) for c in pieces))
     degree = as_degree(degree, "to_bspline: degree")
     require(len(pieces) >= 1, "to_bspline: the number of pieces", ">= 1", len(pieces))
     arr = ffi.new("el_smooth_params[]", len(pieces))
@@ -349,7 +380,6 @@ def smooth_chain_to_bspline(pieces, tol: float = 1e-6, degree: int = 3) -> BSpli
     if st == lib.EL_EMAXITER:
         dev = float(b.max_deviation)
         lib.el_bspline_free(b)
-        raise NotConvergedError(st, f"to_bspline: tolerance {tol:g} not reached "
-                                    f"(certified {dev:.3g}); raise tol")
+        raise NotConvergedError(st, _not_reached(tol, dev))
     check(st, "to_bspline")
     return bspline_from_c(b)

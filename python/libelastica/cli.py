@@ -18,7 +18,7 @@ import numpy as np
 
 from ._ffi import NotConvergedError
 from .cli_common import (EXIT_BADINPUT, EXIT_INTERNAL, EXIT_NOCONV, EXIT_OK, PROG, _finite,
-                         _input_map, _mapped_bspline, _table)
+                         _input_map, _mapped_bspline, _table, tol_option)
 from .cli_fit import cmd_fit
 from .cli_g2quad import cmd_g2quad
 from .cli_outputs import Outputs, check_outputs
@@ -174,9 +174,9 @@ def cmd_hermite(args) -> int:
     b = None
     # every solution's B-spline (G2 ends, as `bspline` makes it of the JSON), the DXF the chosen one's
     if args.bspline_tol is not None or args.dxf:
-        tol = args.bspline_tol if args.bspline_tol is not None else 1e-6
-        for r, c in zip(recs, sols):
-            r["bspline"] = el.bspline.fitted_bspline(c, tol, args.degree).to_dict()
+        for r, c in zip(recs, sols):    # tol None: 1e-6 of each solution's length
+            with tol_option("--bspline-tol"):
+                r["bspline"] = el.bspline.fitted_bspline(c, args.bspline_tol, args.degree).to_dict()
         b = el.BSpline.from_dict(recs[chosen]["bspline"])
     if args.dxf and recs[chosen]["crosses_itself"]:
         fair = [r["index"] for r in recs if not r["crosses_itself"]]
@@ -314,15 +314,17 @@ def cmd_bspline(args) -> int:
         curves = [curve_from_dict(it, name=args.file) for it in items]
         if len(curves) == 2:           # a keyline: ONE B-spline through its joint
             ends = [it.get("end") if isinstance(it, dict) else None for it in items]
-            b = el.keyline_bspline(curves[0], curves[1], args.tol, args.degree,
-                                   None if None in ends else ends)
+            with tol_option("--tol"):
+                b = el.keyline_bspline(curves[0], curves[1], args.tol, args.degree,
+                                       None if None in ends else ends)
             out.append({"sides": [{"curve": curve_to_dict(c), **_kept(it)} for c, it in zip(curves, items)],
                         "bspline": b.to_dict()})
             names.append(f"keyline of two {type(curves[0]).__name__}")
         else:
             it = items[0]
-            b = el.bspline.fitted_bspline(curves[0], args.tol, args.degree,
-                                          it.get("constraints") if isinstance(it, dict) else None)
+            with tol_option("--tol"):
+                b = el.bspline.fitted_bspline(curves[0], args.tol, args.degree,
+                                              it.get("constraints") if isinstance(it, dict) else None)
             out.append({"curve": curve_to_dict(curves[0]), **_kept(it), "bspline": b.to_dict()})
             names.append(f"chain of {len(curves[0].pieces)} elasticae" if
                          hasattr(curves[0], "pieces") else type(curves[0]).__name__)
@@ -373,7 +375,8 @@ def cmd_blend(args) -> int:
         print(f"{PROG} blend: warning: {w}", file=sys.stderr)
     b = None
     if args.tol is not None or args.dxf:
-        b = curve.to_bspline(args.tol if args.tol is not None else 1e-6)
+        with tol_option("--tol"):    # None: 1e-6 of the curve's length
+            b = curve.to_bspline(args.tol)
         rec["bspline"] = b.to_dict()
     if args.json:
         write_json(rec, "-" if args.json == "-" else args.outputs.path(args.json))
@@ -432,8 +435,10 @@ def cmd_spline(args) -> int:
               f"polygon does not, or is longer than 4 x it: length {sp.length:.6g}); no fair "
               f"batten was found {fix}", file=sys.stderr)
     need_b = args.dxf or args.bspline_tol is not None
-    b = sp.to_bspline(args.bspline_tol or 1e-6, args.degree) \
-        if need_b else None
+    b = None
+    if need_b:
+        with tol_option("--bspline-tol"):    # None: 1e-6 of the spline's length
+            b = sp.to_bspline(args.bspline_tol, args.degree)
     rec = {"file": args.file, "points": sp.data.tolist(), "closed": sp.closed, **kw,
            "tension": sp.tension, "length": sp.length, "energy": sp.energy,
            "max_curvature": sp.max_curvature, "residual": sp.residual, "loops": sp.loops,
@@ -532,7 +537,8 @@ def build_parser() -> argparse.ArgumentParser:
     f.add_argument("--svg", metavar="PATH", help="write the report picture as SVG")
     f.add_argument("--png", metavar="PATH", help="write the report picture as PNG (matplotlib)")
     f.add_argument("--bspline-tol", type=POSITIVE, metavar="TOL",
-                   help="add the B-spline of the fitted curve (within TOL for smooth; "
+                   help="add the B-spline of the fitted curve (within TOL for smooth, default "
+                        "1e-6 of its length with --dxf; "
                         "discrete: the C2 cubic through the vertices, with the end constraints, "
                         "and the points' distances to it)")
     f.add_argument("--degree", type=DEGREE, default=3, help="B-spline degree 3..7 (default 3)")
@@ -558,7 +564,7 @@ def build_parser() -> argparse.ArgumentParser:
     h.add_argument("--png", metavar="PATH", help="picture of all solutions (PNG, matplotlib)")
     h.add_argument("--bspline-tol", type=POSITIVE, metavar="TOL",
                    help="add every solution's B-spline within TOL to the JSON (default 1e-6 "
-                        "with --dxf)")
+                        "of its length with --dxf)")
     h.add_argument("--degree", type=DEGREE, default=3, help="B-spline degree 3..7 (default 3)")
     h.add_argument("--tol", type=POSITIVE, default=1e-10,
                    help="the solutions' end error allowed (default 1e-10); curves no smooth "
@@ -584,7 +590,7 @@ def build_parser() -> argparse.ArgumentParser:
     b.add_argument("file", metavar="FIT.json", help="a JSON of fit, hermite, spline or bspline")
     b.add_argument("--solution", type=SOLUTION, metavar="N",
                    help="of a hermite JSON, solution N (default 0, the least energy)")
-    b.add_argument("--tol", type=POSITIVE, default=1e-6, help="tolerance (default 1e-6)")
+    b.add_argument("--tol", type=POSITIVE, help="tolerance (default 1e-6 of the curve's length)")
     b.add_argument("--degree", type=DEGREE, default=3, help="degree 3..7 (default 3)")
     b.add_argument("--json", metavar="PATH", help="write the B-spline as JSON ('-' = stdout)")
     b.add_argument("--dxf", metavar="PATH", help="write a DXF SPLINE (needs ezdxf)")
@@ -616,7 +622,8 @@ def build_parser() -> argparse.ArgumentParser:
         sp.add_argument(f"--{name}-curvature", type=float, metavar="K",
                         help=f"and its curvature: G2 to other geometry (needs --{name}-tangent)")
     sp.add_argument("--bspline-tol", type=POSITIVE, metavar="TOL",
-                    help="add the B-spline within TOL to the JSON (default 1e-6 with --dxf)")
+                    help="add the B-spline within TOL to the JSON (default 1e-6 of its length "
+                         "with --dxf)")
     sp.add_argument("--degree", type=DEGREE, default=3, help="B-spline degree 3..7 (default 3)")
     sp.add_argument("--json", metavar="PATH", help="write the spline as JSON ('-' = stdout)")
     sp.add_argument("--svg", metavar="PATH", help="picture with the curvature comb (SVG)")
@@ -644,7 +651,8 @@ def build_parser() -> argparse.ArgumentParser:
                    help="pass through the points (default) or use them as control points")
     e.add_argument("--closed", action="store_true", help="a closed curve through the points, "
                    "smooth where it closes (a repeated first point is dropped): 3 or 4 segments")
-    e.add_argument("--tol", type=POSITIVE, metavar="TOL", help="add the cubic B-spline within TOL")
+    e.add_argument("--tol", type=POSITIVE, metavar="TOL", help="add the cubic B-spline within TOL "
+                   "(default 1e-6 of the curve's length with --dxf)")
     e.add_argument("--json", metavar="PATH", help="write the result as JSON ('-' = stdout)")
     e.add_argument("--svg", metavar="PATH", help="picture (SVG)")
     e.add_argument("--png", metavar="PATH", help="picture (PNG, matplotlib)")

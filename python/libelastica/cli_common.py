@@ -4,11 +4,24 @@ batch progress bar, a fitted curve's B-spline and a plane's record."""
 from __future__ import annotations
 
 import sys
+from contextlib import contextmanager
 from typing import Any, Dict, List, Optional, Sequence
 
 import numpy as np
 
 from .io import InputError
+
+
+@contextmanager
+def tol_option(option: str):
+    """A B-spline's tol not reached (NotConvergedError, exit 1) or below what doubles
+    resolve (DomainError, exit 2) said with the option that sets it (QA: "raise tol" named
+    no option)."""
+    from ._ffi import DomainError, NotConvergedError
+    try:
+        yield
+    except (NotConvergedError, DomainError) as exc:
+        raise type(exc)(exc.status, f"{exc} ({option} sets tol)") from None
 
 EXIT_OK, EXIT_NOCONV, EXIT_BADINPUT, EXIT_INTERNAL = 0, 1, 2, 3
 

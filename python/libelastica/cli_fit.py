@@ -12,7 +12,7 @@ import numpy as np
 from ._ffi import NotConvergedError
 from .cli_common import (EXIT_BADINPUT, EXIT_NOCONV, EXIT_OK, PROG, _converged,
                          _finite, _float_list, _fmt, _mapped_bspline, _plane_record, _Progress,
-                         _status_text, _table)
+                         _status_text, _table, tol_option)
 from .cli_outputs import out_path
 from .fit import quiet_fit
 from .fit_cost import cost_summary, costly, end_costs, held_ends, local_cost_summary
@@ -351,12 +351,14 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
     doc = records[0] if len(records) == 1 else {"file": str(path), "sides": records}
     splines = []
     if args.bspline_tol is not None or args.dxf:
-        tol = args.bspline_tol if args.bspline_tol is not None else 1e-6     # > 0: the parser's
+        tol = args.bspline_tol      # > 0: the parser's; None: 1e-6 of the curve's length
         if args.keyline:       # ONE B-spline through the joint (x''y'', as the sides)
-            splines.append(kres.to_bspline(tol, args.degree))
+            with tol_option("--bspline-tol"):
+                splines.append(kres.to_bspline(tol, args.degree))
             doc["bspline"] = splines[0].to_dict()
         else:
-            splines.append(res.to_bspline(tol, args.degree))   # a discrete fit's: its ends
+            with tol_option("--bspline-tol"):   # a discrete fit's: its ends
+                splines.append(res.to_bspline(tol, args.degree))
             records[0]["bspline"] = splines[0].to_dict()
         if args.model == "discrete":     # the cubic through the vertices is not the polygon
             _cubic_figures(doc, kres if args.keyline else res, splines[0], pts,

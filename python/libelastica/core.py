@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, fields
+from typing import Optional
 
 import numpy as np
 
@@ -116,9 +117,9 @@ class SmoothElastica(ShapeDescriptors):
         check(lib.el_smooth_reverse(self._c(), out), "SmoothElastica.reversed")
         return SmoothElastica(**{n: float(getattr(out, n)) for n in SMOOTH_PARAMS})
 
-    def to_bspline(self, tol: float = 1e-6, degree: int = 3):
+    def to_bspline(self, tol: Optional[float] = None, degree: int = 3):
         """Clamped non-rational B-spline of the given degree (3..7) within ``tol`` (absolute,
-        coordinate units) of this segment everywhere, parametrised by arc length on
+        coordinate units; default 1e-6 of its length) of this segment everywhere, parametrised by arc length on
         [0, length]; the certified distance is its ``max_deviation`` (bspline.py)."""
         from .bspline import smooth_to_bspline
         return smooth_to_bspline(self, tol, degree)

@@ -108,9 +108,9 @@ class FitResult:
     def converged(self) -> bool:
         return self.status == lib.EL_OK
 
-    def to_bspline(self, tol: float = 1e-6, degree: int = 3):
+    def to_bspline(self, tol: Optional[float] = None, degree: int = 3):
         """The fitted curve as one B-spline for CAD: a smooth elastica's within ``tol``
-        (certified; its end points, tangents and curvatures exact, so the constraints hold
+        (default 1e-6 of its length; certified; its end points, tangents and curvatures exact, so the constraints hold
         on it); a discrete one's C2 cubic through its vertices (:func:`cubic_through`)
         with the fit's constrained end tangents and curvatures (G2 where both), natural
         ends elsewhere (``tol`` and ``degree`` unused, ``max_deviation`` -1). That cubic

@@ -95,9 +95,9 @@ class HermiteChain(ShapeDescriptors):
                 out.append(self._starts[i])
         return np.sort(np.array(out, dtype=float))
 
-    def to_bspline(self, tol: float = 1e-6, degree: int = 3):
-        """ONE clamped B-spline (degree 3..7) within ``tol`` (coordinate units) of the
-        whole curve, parametrised by arc length from p0 (el_smooth_chain_to_bspline:
+    def to_bspline(self, tol: Optional[float] = None, degree: int = 3):
+        """ONE clamped B-spline (degree 3..7) within ``tol`` (coordinate units; default
+        1e-6 of its length) of the whole curve, parametrised by arc length from p0 (el_smooth_chain_to_bspline:
         each piece G2 at its ends, joined C2); ``max_deviation`` is the certified distance."""
         return smooth_chain_to_bspline(self.pieces, tol, degree)
 

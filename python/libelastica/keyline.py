@@ -56,10 +56,10 @@ class KeylineFit:
         pts = r.model_points()
         return self.prepared.to_input(pts) if input_coords else pts
 
-    def to_bspline(self, tol: float = 1e-6, degree: int = 3):
+    def to_bspline(self, tol: Optional[float] = None, degree: int = 3):
         """The keyline as ONE B-spline for CAD (x''y'' coordinates, as its halves), from
         the first point to the last through the joint: :func:`keyline_bspline` (smooth:
-        within ``tol``, G2 at the joint exactly; discrete: the C2 cubic through both
+        within ``tol``, default 1e-6 of its length, G2 at the joint exactly; discrete: the C2 cubic through both
         halves' vertices)."""
         from .bspline import keyline_bspline
         return keyline_bspline(self.first.curve, self.second.curve, tol, degree, self.ends)

@@ -142,9 +142,9 @@ class ElasticSpline:
                 f"{(j + 1) % n} cross" for i, j in self.crossings()]
         return ", ".join(said[:3]) + (f" and {len(said) - 3} more" if len(said) > 3 else "")
 
-    def to_bspline(self, tol: float = 1e-6, degree: int = 3):
+    def to_bspline(self, tol: Optional[float] = None, degree: int = 3):
         """ONE clamped B-spline (degree 3..7) for the whole spline within ``tol``
-        (coordinate units) of it: every point of the B-spline within ``tol`` of the
+        (coordinate units; default 1e-6 of its length) of it: every point of the B-spline within ``tol`` of the
         spline (``max_deviation``, the certified distance, is geometric: from b(t) to
         the nearest point of the spline). Its parameter runs over [0, length] and is the
         arc length at the points (the knots); between them it is not: b(s) and the

@@ -420,3 +420,62 @@ def test_pickle_and_copy_keep_the_curve():
     twin = pickle.loads(pickle.dumps(b))
     del b
     assert np.array_equal(twin.evaluate(t), want)
+
+
+def _km(scale):
+    t = np.linspace(0.0, 1.0, 50)
+    return scale * np.c_[t, 0.3 * np.sin(3.0 * t)]
+
+
+@pytest.mark.parametrize("scale", [1.0, 1e3, 1e6])
+def test_every_default_tol_is_1e6_of_the_length(scale):
+    """Every to_bspline's default is 1e-6 of the curve's length (README's rule), so it
+    works at any scale: at 1e6 (1 km in mm) the spline's and the blend's absolute 1e-6
+    failed ("not reached (certified 1e-06)", "did not converge", QA). The default gives
+    the B-spline of that explicit tol, bit for bit."""
+    xy = _km(scale)
+    sp = el.elastic_spline(xy, tension=0)
+    blend = el.blend_curve(scale * np.array([(0, 0), (1, 1), (2, 1), (3, 0)], float))
+    bxy = blend.points()
+    smooth = el.fit(xy[::5], model="smooth")
+    tile = el.SmoothElastica(k=0.6, q=-1.2, length=8.0).points(np.linspace(0, 8.0, 120)) + \
+        np.random.default_rng(2).normal(0, 0.02, (120, 2))
+    kl = el.fit_keyline(scale * tile, model="smooth")
+    hc = el.hermite((0, 0), (1, 0), (scale, 0), (1, 0), length=1.2 * scale)[0]
+    cases = [(sp.to_bspline, sp.length), (smooth.to_bspline, smooth.curve.length),
+             (smooth.curve.to_bspline, smooth.curve.length),
+             (kl.to_bspline, kl.first.curve.length + kl.second.curve.length),
+             (hc.to_bspline, hc.length),
+             (blend.to_bspline, np.sum(np.hypot(*np.diff(bxy, axis=0).T)))]
+    for make, length in cases:
+        b = make()
+        assert 0.0 <= b.max_deviation <= 1e-6 * length
+        same = make(1e-6 * length)
+        assert np.array_equal(b.poles, same.poles) and np.array_equal(b.knots, same.knots)
+
+
+def test_tols_that_cannot_be_met_say_what_can():
+    """An explicit tol: at 1e6, 1e-6 is met now (the joins' rounding within the budget);
+    below the rounding floor DomainError names the smallest possible; a blend's tol that
+    256 spans a segment do not reach names the tol that is reached (it is)."""
+    sp = el.elastic_spline(_km(1e6), tension=0)
+    assert sp.to_bspline(1e-6).max_deviation <= 1e-6
+    with pytest.raises(el.DomainError, match=r"the smallest possible is .* = 1\.69e-08$"):
+        sp.to_bspline(1e-9)
+    blend = el.blend_curve(1e5 * np.array([(0, 0), (1, 1), (2, 1), (3, 0)], float))
+    with pytest.raises(el.NotConvergedError, match="raise tol to ([0-9.e-]+) or more") as e:
+        blend.to_bspline(1e-6)
+    reached = float(e.value.args[0].split("raise tol to ")[1].split()[0])
+    assert 1e-6 < reached and blend.to_bspline(reached).max_deviation <= reached
+    with pytest.raises(el.DomainError, match="the smallest possible is"):
+        blend.to_bspline(1e-12)
+
+
+def test_a_missed_tol_is_never_written_as_the_tol():
+    """The tol that reaches a certified distance, 3 digits rounded up: 1.00027e-6 was
+    written "1e-06", the tol it missed (QA)."""
+    from libelastica.bspline import at_least
+    assert at_least(1.0002726489768743e-06) == "1.01e-06"
+    assert at_least(2.27004e-06) == "2.28e-06" and at_least(2.27e-05) == "2.27e-05"
+    for x in np.geomspace(1e-12, 1e3, 997):
+        assert float(at_least(x)) >= x

@@ -535,7 +535,7 @@ def test_fit_keyline_bspline_is_one_curve_through_the_joint(capsys, tmp_path, fa
     f = {k: np.array(v) for k, v in doc["sides"][0]["frame2d"].items()}   # x''y'' -> input
     to_input = f["origin"] + np.outer(b.poles[:, 0], f["f1"]) + np.outer(b.poles[:, 1], f["f2"])
     np.testing.assert_allclose(np.array(ctrl)[:, :2], to_input, rtol=0, atol=1e-9 * b.domain[1])
-    r = cli(capsys, "bspline", tmp_path / "k.json", "--json", "-")
+    r = cli(capsys, "bspline", tmp_path / "k.json", "--tol", "1e-6", "--json", "-")
     assert r.returncode == 0, r.stderr
     again = json.loads(r.stdout)
     assert len(again["sides"]) == 2

@@ -5,6 +5,7 @@ and closed flag, each re-read with ezdxf."""
 from __future__ import annotations
 
 import json
+import re
 import math
 
 import numpy as np
@@ -107,8 +108,9 @@ def test_hermite_dxf_is_the_chosen_solution(capsys, tmp_path):
     assert all(0 < r["bspline"]["max_deviation"] <= 1e-7 for r in recs)
     code, _, _ = cli(capsys, "hermite", *EXAMPLE, "--dxf", tmp_path / "h0.dxf")
     (spl,) = ezdxf.readfile(str(tmp_path / "h0.dxf")).modelspace().query("SPLINE")
-    np.testing.assert_allclose(np.array([tuple(p)[:2] for p in spl.control_points]),
-                               fitted_bspline(sols[0], 1e-6, 3).poles, rtol=0, atol=1e-15)
+    np.testing.assert_allclose(np.array([tuple(p)[:2] for p in spl.control_points]),   # default:
+                               fitted_bspline(sols[0], 1e-6 * sols[0].length, 3).poles,  # 1e-6 of
+                               rtol=0, atol=1e-15)                                   # the length
 
 
 def test_bspline_of_a_hermite_json(capsys, tmp_path):
@@ -120,7 +122,8 @@ def test_bspline_of_a_hermite_json(capsys, tmp_path):
         code, out, err = cli(capsys, "bspline", tmp_path / "h.json", *args, "--json", "-")
         assert code == 0, err
         b = el.BSpline.from_dict(json.loads(out)["bspline"])
-        np.testing.assert_allclose(b.poles, fitted_bspline(sols[i], 1e-6, 3).poles, rtol=0, atol=1e-15)
+        np.testing.assert_allclose(b.poles, fitted_bspline(sols[i], 1e-6 * sols[i].length, 3).poles,
+                                   rtol=0, atol=1e-15)     # the default: 1e-6 of the length
     code, _, err = cli(capsys, "bspline", tmp_path / "h.json", "--solution", "4", "--json",
                        tmp_path / "b.json")
     assert code == 2 and "4 solutions (0 to 3)" in err and len(err.strip().splitlines()) == 1
@@ -145,7 +148,8 @@ def test_bspline_of_a_spline_json_and_the_dxf_closed_flag(capsys, tmp_path, clos
                          tmp_path / "b.dxf")
     assert code == 0, err
     b = el.BSpline.from_dict(json.loads(out)["bspline"])
-    np.testing.assert_allclose(b.poles, sp.to_bspline(1e-6, 3).poles, rtol=0, atol=1e-12)
+    np.testing.assert_allclose(b.poles, sp.to_bspline(1e-6 * sp.length, 3).poles, rtol=0,
+                               atol=1e-12)                 # the default: 1e-6 of the length
     for name in ("s.dxf", "b.dxf"):
         doc = ezdxf.readfile(str(tmp_path / name))
         assert not doc.audit().errors
@@ -167,3 +171,30 @@ def test_dxf_units_are_the_users(capsys, tmp_path, units, code):
     doc = ezdxf.readfile(str(tmp_path / "e.dxf"))
     assert doc.header["$INSUNITS"] == code
     assert doc.header["$MEASUREMENT"] == (0 if units == "in" else 1)
+
+
+def test_dxf_at_large_coordinates_and_tols_that_cannot_be_met(capsys, tmp_path):
+    """`spline --dxf` of 50 points 1 km long in mm and `blend --dxf` 300 m long: written,
+    the default tol 1e-6 of the length (exit 1 before: "tolerance 1e-06 not reached
+    (certified 1e-06); raise tol", "did not converge", QA); a tol that cannot be met says
+    what can and names its option (exit 1 not reached, 2 below the rounding floor),
+    nothing written."""
+    ezdxf = pytest.importorskip("ezdxf")
+    t = np.linspace(0.0, 1.0, 50)
+    np.savetxt(tmp_path / "km.csv", 1e6 * np.c_[t, 0.3 * np.sin(3.0 * t)], delimiter=",")
+    blend = ["0", "0", "1e5", "1e5", "2e5", "1e5", "3e5", "0"]
+    for args in (["spline", tmp_path / "km.csv", "--tension", "0"], ["blend", *blend]):
+        code, _, err = cli(capsys, *args, "--json", tmp_path / "ok.json", "--dxf", tmp_path / "ok.dxf")
+        assert code == 0, err
+        rec = json.loads((tmp_path / "ok.json").read_text())
+        assert 0 < rec["bspline"]["max_deviation"] <= 1e-6 * (rec.get("length") or 3.6e5)
+        assert len(ezdxf.readfile(str(tmp_path / "ok.dxf")).modelspace().query("SPLINE")) == 1
+    for args, code_, said in (
+            (["spline", tmp_path / "km.csv", "--tension", "0", "--bspline-tol", "1e-9"], 2,
+             r"the smallest possible is .* = 1\.69e-08 \(--bspline-tol sets tol\)"),
+            (["blend", *blend, "--tol", "1e-6"], 1,
+             r"raise tol to 2\.28e-06 or more .*\(--tol sets tol\)"),
+            (["blend", *blend, "--tol", "1e-12"], 2, r"the smallest possible is .*\(--tol sets tol\)")):
+        code, _, err = cli(capsys, *args, "--json", tmp_path / "no.json", "--dxf", tmp_path / "no.dxf")
+        assert code == code_ and re.search(said, err) and len(err.strip().splitlines()) == 1, err
+        assert not (tmp_path / "no.json").exists() and not (tmp_path / "no.dxf").exists()

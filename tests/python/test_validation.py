@@ -80,7 +80,7 @@ def test_smooth_elastica_bad_scalars(field, value):
 def test_scalar_arguments_raise_value_error(value):
     calls = [
         lambda: el.DiscreteElastica(h=value),
-        lambda: CURVE.to_bspline(tol=value),
+        lambda: CURVE.to_bspline(tol=value if value is not None else "x"),   # None: default
         lambda: CURVE.to_bspline(degree=value),
         lambda: el.resample_equilateral(ARC, value),
         lambda: el.hermite((0, 0), (0, 1), (2, 0), (0, -1), tension=value),
@@ -95,7 +95,7 @@ def test_scalar_arguments_raise_value_error(value):
         lambda: el.fit(ARC, fixed={"x0": value}),
         lambda: el.affine_polyline(ARC, value),
         lambda: el.chaikin(ARC, value),
-        lambda: el.smooth_to_bspline(CURVE, value),
+        lambda: el.smooth_to_bspline(CURVE, value if value is not None else "x"),   # None: default
         lambda: el.BSpline(degree=value, poles=[[0, 0], [1, 1]], knots=[0, 1], mults=[2, 2]),
     ]
     for call in calls:
