@@ -1203,7 +1203,12 @@ void el_spline_options_defaults(el_spline_options *opt);
  * guides are placed on it (it is then a solution for its own end curvatures,
  * with no force on the guides) and the end curvatures moved to the given ones
  * by continuation. Length mode: the sibling of that length bent at that length,
- * else the free batten's sibling bent and followed in length. With initial,
+ * else the free batten's sibling bent and followed in length. Tension mode, where
+ * none is found so (no sibling at that tension: at sigma = 0 the clamped free batten
+ * of two walls slides off its ducks, the guided one does not), the length whose G2
+ * batten (as length mode finds it) has that tension: a ladder of 1.02 .. 10 x the
+ * polygon brackets it, GSL's Brent narrows it, Newton at the tension finishes
+ * (spline_g2_tension.c; not with initial). With initial,
  * the sibling is Newton's from it (no other start is tried). A G2 batten is
  * hardly shorter under tension than free (its guides end up on the end
  * tangents: 1-2 % at most, some get longer): a length below that is not found

@@ -384,6 +384,14 @@ void el__snap_load(el__spchain *w, const el__spsnap *s);
  * curvatures moved to kg (spline_path.c). */
 int el__guides_setup(el__spchain *g, const el__spchain *w);
 int el__spline_bend_ends(el__spchain *w, int max_steps, const double kg[2]);
+/* spline_g2_tension.c: tension mode's G2 batten at sigma (internal units) by its length: a
+ * ladder of multiples of Lp (the polygon's length, internal) brackets the length whose G2
+ * batten has that tension, Brent narrows it, Newton at sigma finishes, in g. solve(ctx, L,
+ * &sigma): the G2 batten of length L into g, as length mode finds it (EL_OK, or a status).
+ * EL_OK, EL_ENOCONV (g->near: within EL__SP_NEAR), EL_ENOMEM. */
+typedef int (*el__g2_length_solve)(void *ctx, double L, double *sigma);
+int el__spline_g2_tension_by_length(el__spchain *g, el__g2_length_solve solve, void *ctx, double Lp,
+                                    double sigma);
 
 /* el_spline_solve; newton_first = 0: length mode by the continuation alone
  * (follow_length, the plain counterpart of the Newton attempts), for the tests. */

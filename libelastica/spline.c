@@ -455,6 +455,44 @@ static int solve_g2(el__spchain *w, el__spchain *g, int sib, int max_steps, cons
     return Lt != 0.0 ? el__spline_length_from(g, max_steps, Lt) : el__spline_tension_from(g, max_steps, sigma_t);
 }
 
+/* Tension mode's G2 batten by its length (spline_g2_tension.c): one solve by length as
+ * el__spline_solve_paths's (solve_sibling, then solve_g2), into the sibling w and the
+ * guided chain g */
+typedef struct {
+    el__spchain *w, *g;
+    const double *xy, *kg;
+    size_t n;
+    const el_spline_options *opt;
+    double Lp, S;
+} g2_length;
+
+static int g2_at_length(void *par, double L, double *sigma)
+{
+    const g2_length *c = par;
+    el__spchain *w = c->w, *g = c->g;
+    el_spline_options o = *c->opt;
+    o.mode = EL_SPLINE_LENGTH;
+    o.length = L * c->S;
+    o.initial = NULL;
+    o.ninitial = 0;
+    el__chain_free(g);
+    memset(g, 0, sizeof *g);
+    w->lmode = EL__BORDER_LENGTH;
+    w->sigma = 1.0;
+    w->Lt = L;
+    w->near = 0;
+    memset(w->reach, 0, sizeof w->reach);
+    memset(w->ladder, 0, sizeof w->ladder);
+    int straight;
+    int st = solve_sibling(w, c->xy, c->n, &o, c->Lp, c->S, &straight);
+    if (st == EL_ENOMEM || st == EL_EINVAL) return st;
+    st = solve_g2(w, g, st, o.max_steps, c->kg, L, NAN);
+    if (st == EL_ENOMEM) return st;
+    if (st && !g->near) return EL_ENOCONV;
+    *sigma = g->sigma;
+    return EL_OK;
+}
+
 /* The lengths the family followed in length mode met (w or the G2 chain g; spline_path.c's
  * note_reach) into res->reach, user units; 0 when none was met */
 static int reach_of(const el__spchain *w, const el__spchain *g, double S, el_spline_result *res)
@@ -593,6 +631,11 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
         st = solve_g2(&w, &g, st, opt->max_steps, kg, lmode && !opt->initial ? opt->length / S : 0.0,
                       lmode || opt->initial ? NAN : opt->sigma * S * S);
         sol = &g;
+        /* none at that tension: the length whose G2 batten has it (spline_g2_tension.c) */
+        if (st && st != EL_ENOMEM && !g.near && !lmode && !opt->initial) {
+            g2_length c = {&w, &g, xy, kg, n, opt, Lp, S};
+            st = el__spline_g2_tension_by_length(&g, g2_at_length, &c, Lp / S, opt->sigma * S * S);
+        }
     }
     if (st == EL_ENOMEM) goto done;
     if (!st || sol->near) {   /* a solution, or one to what the parametrisation resolves */

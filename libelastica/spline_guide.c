@@ -43,7 +43,9 @@
  * in two sub-arcs of the same elastica: the sibling is then an exact solution
  * of the guided system for the end curvatures it has, with no force on the
  * guides. The end curvatures are then moved to the given ones by continuation
- * (spline_path.c), which starts with the whole step.
+ * (spline_path.c), which starts with the whole step. Tension mode where that finds
+ * none (no G1 sibling at that tension: walls at sigma 0): by the length whose G2 batten
+ * has the tension (spline_g2_tension.c).
  * Under tension. The guides' offsets are set by the end curvatures, not by least energy,
  * so along a family in sigma they do work: d(integral kappa^2 + sigma ds)/d sigma =
  * L + sum f . dg/d sigma (f: a guide's force, g: its place), not L (seed 004 (9)-(10) with

@@ -609,6 +609,42 @@ START_TEST(initial_sibling_keeps_its_branch)
 }
 END_TEST
 
+/*
+ * Tension mode where bending the G1 sibling's ends cannot start (spline_g2_tension.c): two
+ * walls at heights 35 and 30, 100 apart (start up, end down, curvature 0: a G2 blend to
+ * straight edges). At tension 0 the clamped free batten slides off its ducks (no G1
+ * sibling) but the guided one exists: by length its tension crosses 0 between 219 and 219.5
+ * (QA). Solved at tension 0 exactly (was EL_EDOM), the batten length mode gives back at its
+ * length (tension 0 to 1e-12 x d^-2, the same energy); a line to an arc likewise.
+ */
+START_TEST(walls_at_tension_zero_are_solved_by_length)
+{
+    const double p[] = {100.0, 35.0, 0.0, 30.0};
+    const double kend[] = {0.0, 0.01};   /* walls; the end an arc of radius 100 */
+    for (size_t c = 0; c < 2; c++) {
+        el_spline_options o = opts(EL_SPLINE_TENSION, 0.0);
+        o.start = g2_end(0.0, 1.0, 0.0);
+        o.end = g2_end(0.0, -1.0, kend[c]);
+        el_spline_result r;
+        const int st = solve(p, 2, &o, &r);
+        ck_assert_msg(st == EL_OK, "case %zu: status %d", c, st);
+        ck_assert(r.sigma == 0.0);
+        check_spline(p, 2, &o, &r, 1e-9);
+        ck_assert_uint_eq(r.npieces, 3);
+        if (c == 0) ck_assert(r.length > 219.0 && r.length < 219.5);
+        el_spline_options ol = o;
+        ol.mode = EL_SPLINE_LENGTH;
+        ol.length = r.length;
+        el_spline_result rl;
+        ck_assert_int_eq(solve(p, 2, &ol, &rl), EL_OK);
+        ck_assert_msg(fabs(rl.sigma) * 1e4 <= 1e-12, "case %zu: by length sigma %g", c, rl.sigma);
+        ck_assert_close(rl.energy, r.energy, 1e-9 * r.energy);
+        el_spline_result_free(&rl);
+        el_spline_result_free(&r);
+    }
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("spline_g2");
@@ -624,6 +660,7 @@ int main(void)
     tcase_add_test(tc, separatrix_bound_is_one_ulp_of_k);
     tcase_add_test(tc, random_battens_g2_solved_where_tangent_is);
     tcase_add_test(tc, initial_sibling_keeps_its_branch);
+    tcase_add_test(tc, walls_at_tension_zero_are_solved_by_length);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }

@@ -204,6 +204,43 @@ def test_two_points_g2_blend(both):
     assert longer.length == pytest.approx(1.02 * sp.length, rel=1e-10) and longer.tension < 0
 
 
+@pytest.mark.parametrize("height", [5.0, 20.0, -50.0])
+def test_g2_walls_at_tension_zero(height):
+    """QA: two walls joined by a free batten, G2 (curvature 0) at both ends. The clamped
+    free batten slides off its ducks, yet the guided one exists (by length its tension
+    crosses 0: 219 -> -1.6e-5, 219.5 -> +7e-6 for a height 5): tension 0 gives it (was
+    DomainError), the batten length mode gives back at its length."""
+    p = np.array([[100.0, 30.0 + height], [0.0, 30.0]])
+    ends = {"start": {"tangent": (0, 1), "curvature": 0.0}, "end": {"tangent": (0, -1), "curvature": 0.0}}
+    sp = el.elastic_spline(p, tension=0.0, **ends)
+    check(sp, p)
+    assert sp.tension == 0.0 and len(sp.guides) == 2
+    if height == 5.0:
+        assert 219.0 < sp.length < 219.5
+    by_length = el.elastic_spline(p, length=sp.length, **ends)
+    assert abs(by_length.tension) * 100.0 ** 2 <= 1e-8
+    assert by_length.energy == pytest.approx(sp.energy, rel=1e-9)
+
+
+@pytest.mark.parametrize("tension", [1e-4, 1e-3])
+def test_g2_tilted_walls_beyond_reach_give_no_batten_at_another_tension(tension):
+    """Tilted walls 200 apart (15 and 20 deg): by length the G2 batten's tension stays below
+    ~4e-5 up to 6 x the distance, so at 1e-4 and 1e-3 there is none; the search by length
+    must not hand back a batten of its ladder (its tension 3.6e-5) as one at the tension."""
+    a, b = np.radians(15), np.radians(20)
+    p = np.array([[200.0, 50.0], [0.0, 0.0]])
+    ends = {"start": {"tangent": (np.sin(a), np.cos(a)), "curvature": 0.0},
+            "end": {"tangent": (np.sin(b), -np.cos(b)), "curvature": 0.0}}
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            sp = el.elastic_spline(p, tension=tension, **ends)
+    except el.NotConvergedError:
+        return
+    check(sp, p)
+    assert sp.tension == tension
+
+
 @pytest.mark.parametrize("turn", [1.0, -1.0])
 def test_g2_blend_of_nearly_collinear_ends_under_high_tension(turn):
     """The G2 batten between tangents 1e-12 rad apart, ducks 40 apart, pulled to
