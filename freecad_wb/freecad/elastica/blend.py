@@ -104,14 +104,15 @@ def describe(curve):
     return len(el().elastica_inflections(curve)), curve.loops, curve.max_curvature
 
 
-def blend_core(e0, at_end0, e1, at_end1, plane=None, mode="tension", value=0.0):
+def blend_core(e0, at_end0, e1, at_end1, plane=None, mode="tension", value=0.0, none_ok=False):
     """All elastic Hermite curves from the chosen end of e0 to the chosen end of e1.
 
     The blend leaves e0 in its tangent direction and enters e1 along it. ``mode``
     'tension' (value = sigma, 1/mm^2) or 'length' (value = arc length in mm; 0 = the
     length of the lowest-energy free batten). Returns a dict with 'curves' (sorted
     by energy, plane coordinates), 'energies' (total_energy at the tension; bending energy
-    by length), 'placement', 'distance'. Raises InputProblem."""
+    by length), 'placement', 'distance'. Raises InputProblem; NoBlend where no curve joins
+    the ends, unless ``none_ok`` ('curves' then empty: a G2 blend needs none, below)."""
     p0, d0 = edge_end(e0, at_end0)
     p1, d1 = edge_end(e1, at_end1)
     d1 = -d1                       # arriving at e1: pointing into it
@@ -156,7 +157,7 @@ def blend_core(e0, at_end0, e1, at_end1, plane=None, mode="tension", value=0.0):
         raise
     except (ValueError, ArithmeticError, RuntimeError) as exc:
         raise InputProblem(f"Hermite problem failed: {exc}") from None
-    if not sols:
+    if not sols and not none_ok:
         raise NoBlend("no elastic curve joins these ends with this "
                       + ("length" if mode == "length" else "tension"))
     # under tension the curve minimises the bending energy plus sigma times its length:
@@ -241,7 +242,9 @@ def g2_blend(r, i, mode, value, tol, degree):
     kw = {"length": value} if mode == "length" and value > 0 else \
         {"tension": value if mode == "tension" else 0.0}
     pts, note = n.vstack([a0, a1]), ""
-    sibling = r["curves"][i] if mode == "tension" or value > 0 else None
+    # no G1 solution (walls at tension 0: the clamped free batten slides off its ducks, the
+    # guided one exists): the library's own start, which solves it by length then
+    sibling = r["curves"][i] if r["curves"] and (mode == "tension" or value > 0) else None
     try:
         try:   # the chosen G1 solution as the sibling (a chain of pieces cannot be one)
             if not isinstance(sibling, e.SmoothElastica):
@@ -514,11 +517,12 @@ class BlendProxy(FeatureProxy):
         e1, e2 = self.ends(obj)
         plane = self.sketch_plane(obj)
         value = float(obj.Length) if obj.Mode == "length" else obj.Tension
-        r = blend_core(e1, obj.AtEnd1, e2, obj.AtEnd2, plane, obj.Mode, value)
+        g2 = obj.Continuity == "G2"
+        r = blend_core(e1, obj.AtEnd1, e2, obj.AtEnd2, plane, obj.Mode, value, none_ok=g2)
         curves = r["curves"]
         i, r["gone"] = self._followed_solution(obj, curves, r["energies"])
         r["solution"] = i
-        if not 0 <= i < len(curves):
+        if curves and not 0 <= i < len(curves):
             raise InputProblem(f"Solution = {i}: there are {len(curves)} solutions "
                                f"(0 to {len(curves) - 1})")
         tol, degree = check_tolerance(float(obj.Tolerance)), check_degree(obj.Degree)
@@ -568,8 +572,10 @@ class BlendProxy(FeatureProxy):
             free = " (free batten)" if tension_text(sp.tension, sp.length).startswith("0 ") \
                 else ""
             # "; " parts: the panel shows one a line
+            start = f"G2 from solution {i + 1} of {len(curves)}{followed}{r['g2_note']}" \
+                if curves else "G2 from the library's own start (no G1 solution at this tension)"
             set_said(obj, "Status", (
-                f"G2 from solution {i + 1} of {len(curves)}{followed}{r['g2_note']}; length "
+                f"{start}; length "
                 f"{length_mark(sp.length, 4)}, tension "
                 f"{tension_mark(sp.tension, sp.length)}{free}; energy "
                 f"{per_length_mark(sp.energy)}, max curvature "
