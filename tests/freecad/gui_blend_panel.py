@@ -247,9 +247,12 @@ def unit_schemas(doc, b):
     try:
         said_in_the_schema_of_now(doc, b, prefs)
         said_after_undo(doc, b, prefs)
-        for schema, length, tol in ((3, "5.94488 in", "3.93701e-05 in"),
+        # the Tolerance's 0.001 mm as FreeCAD's boxes write numbers, fixed, to its digits
+        # ('3.93701e-05 in' before; a Gui::QuantitySpinBox shows '0.00 in'), 151 mm as its
+        # '5.94 in' (it showed '5.94488 in')
+        for schema, length, tol in ((3, "5.94 in", "0.0000394 in"),
                                     (4, "15.1 cm", "0.0001 cm"),
-                                    (5, '6"', "3.93701e-05 in")):
+                                    (5, '6"', "0.0000394 in")):
             prefs.SetInt("UserSchema", schema)
             App.Units.setSchema(schema)
             Gui.ActiveDocument.setEdit(b.Name)

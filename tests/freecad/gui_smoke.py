@@ -746,8 +746,10 @@ def fit_panel_ends(doc, f, lines, k0):
           (e.valueAt(e.LastParameter) - pinned).Length < 1e-9,
           f"fit: start tangent from a picked edge, end pinned ({f.Status})")
     # the line is 0.1 rad off the exact data's start: the warning line says what it costs
+    # (the free rms in the unit FreeCAD's Standard schema picks for it: µm below 0.1 mm)
+    free = f"{f.FreeRms:.3g} mm" if f.FreeRms >= 0.1 else f"{f.FreeRms * 1e3:.3g} µm"
     check(f.Warnings and panel.warning[0].isVisible() and "Start tangent" in
-          panel.warning[1].text() and f"{f.FreeRms:.3g} mm" in panel.warning[1].text() and
+          panel.warning[1].text() and free in panel.warning[1].text() and
           f.Rms > 2 * f.FreeRms and not [w for w in f.Warnings if "outliers?" in w] and
           not [w for w in f.Warnings if "resampled polygon" in w],
           f"fit: the end conditions' cost on the warning line, no outliers named ({f.Warnings})")

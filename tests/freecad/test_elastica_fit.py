@@ -1358,7 +1358,9 @@ class FitSparseTest(S.DocTest):
         self.assertLess(s.Rms, 0.1 * d.Rms)
         self.assertEqual(len(d.Warnings), 1, list(d.Warnings))
         w = d.Warnings[0]
-        for part in ("7 points", "6 segments", f"{d.Rms:.3g} mm", f"{s.Rms:.3g} mm", "Smooth elastica"):
+        # each length in the unit FreeCAD's Standard schema picks for it: below 0.1 mm, µm
+        smooth = f"{s.Rms:.3g} mm" if s.Rms >= 0.1 else f"{s.Rms * 1e3:.3g} µm"
+        for part in ("7 points", "6 segments", f"{d.Rms:.3g} mm", smooth, "Smooth elastica"):
             self.assertIn(part, w)
         dense = self._fit(S.points_sketch(self.doc, S.keyline_xy(40)[0], "Dense"), "discrete")
         self.assertEqual(list(dense.Warnings), [])
@@ -1479,7 +1481,10 @@ class FitBadInputTest(S.DocTest):
         length = sum(math.hypot(*(q - p)) for p, q in zip(xy[:-1], xy[1:]))
         most = el.RESAMPLE_MAX_VERTICES
         msg = self._rejected([(S.points_sketch(self.doc, xy), [])], ResampleStep=1e-5)
-        self.assertIn(f"more than {most - 1}: use a step of at least {length / (most - 1):.4g} mm", msg)
+        # 0.0003298 mm in the unit FreeCAD's Standard schema picks for it: nm
+        self.assertLess(length / (most - 1), 1e-3)
+        self.assertIn(f"more than {most - 1}: use a step of at least "
+                      f"{length / (most - 1) * 1e6:.4g} nm", msg)
         # the library's own limit: a step just above it is taken
         self.assertGreater(len(el.resample_equilateral(xy, 1.001 * length / (most - 1))), 0.99 * most)
 

@@ -15,8 +15,8 @@ from . import icon
 from .geometry import is_sketch, sketch_curves
 from .proxy import (EDGE_ENDS, InputProblem, keep_note, kept_note, note_changes,
                     said as said_now)
-from .units import (feet_inches, length_text, length_unit, say, tension_unit, unit_names,
-                    user_length)
+from .units import (box_text, feet_inches, length_text, length_unit, say, tension_unit,
+                    unit_names, user_length)
 
 CURRENT = []        # the open panel, if any (scripts and the GUI smoke test drive it)
 DELAY_MS = 150      # recompute after this pause in editing
@@ -71,7 +71,8 @@ def _in_unit(text, unit, plain=1.0):
 
 
 class NumberBox(QtGui.QDoubleSpinBox):
-    """A spin box that shows its value as typed ('0.001', '2.5e-07', not '0.00'), a length,
+    """A spin box that shows its value as typed ('0.001', '2.5e-07', not '0.00'; a length as
+    units.box_text writes it: '0.0000394 in', not '3.93701e-05 in'), a length,
     curvature or tension in the user's unit schema (units.py; the value itself stays in mm,
     1/mm, 1/mm^2), accepts scientific notation, quantities in other units and expressions as
     FreeCAD's own boxes do ('7 cm', '2.75 in', '=2*35': _in_unit) and steps by
@@ -112,9 +113,8 @@ class NumberBox(QtGui.QDoubleSpinBox):
         return 1.0, self.unit
 
     def textFromValue(self, value):
-        written = feet_inches(value) if self.unit == "mm" else None
-        if written:                      # Building US: feet and inches, as FreeCAD's boxes
-            return written
+        if self.unit == "mm":            # Building US: feet and inches, as FreeCAD's boxes
+            return feet_inches(value) or box_text(value)
         factor, unit = self.shown(value)
         return f"{value / factor:.6g} {unit}" if unit else f"{value:.6g}"
 

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import math
 import re
+from decimal import Decimal
 
 import FreeCAD as App
 
@@ -44,6 +45,24 @@ def feet_inches(mm):
         return None
     text = App.Units.Quantity(float(mm), App.Units.Length).UserString
     return None if float(mm) and text.strip("-") == "0" else text
+
+
+def box_text(mm):
+    """A length (mm) as a length box shows it: in the unit the schema picks for it
+    (user_length, as Gui::QuantitySpinBox), to the significant digits of its '%.6g' text in
+    mm (at least 3 in another unit, as the messages: 151 mm '5.94 in', 7 in '7 in'), in
+    fixed notation as FreeCAD's boxes write numbers ('0.0000394 in' for 0.001 mm, where
+    they write '0.00 in'), an exponent only below 1e-6 (where FreeCAD's Imperial decimal
+    schema turns to scientific notation)."""
+    value = float(mm)
+    shown = user_length(value)
+    written = f"{value:.6g}"
+    whole = math.floor(math.log10(abs(value) / shown[0])) + 1 if value else 0
+    digits = None if whole <= 3 else min(6, whole)     # 1 km: '39370 in', not '39400 in'
+    text = _written_in(value, written, digits, shown)
+    if "e" in text and abs(float(text)) >= 1e-6:
+        text = format(Decimal(text), "f")
+    return f"{text} {shown[1]}"
 
 
 def length_unit():
@@ -95,6 +114,7 @@ def unit_names(text):
 # each in the schema of now, so a panel opened after a schema change says the stored text
 # again in the new one without a recompute (proxy.said keeps the marked text).
 _MARK = re.compile("\x01([LKkTNUuRMmEe])([^\x02]*)\x02")
+_RANGE = re.compile("\x01([em])([^\x02]*)\x02 to \x01([EM])([^\x02]*)\x02")
 # a length written '<number> mm' (the library's messages take a unit to write after their
 # figures): not '1/mm', 'mm^2', 'N mm^2'
 _NUM = r"(-?(?:\d+\.?\d*|\.\d+)(?:e[+-]?\d+)?)"
@@ -148,8 +168,8 @@ def floor_digits(x, digits):
 
 def mm_marked(text):
     """``text`` (or a list of texts) with each '<number> mm' marked: say() writes it in the
-    schema's length unit (length_unit: one unit through a message, to as many significant
-    digits as written, at least 3), and as written under a schema of mm."""
+    unit the schema picks for it (user_length, as exact_mark), to as many significant digits
+    as written (at least 3), and as written where that unit is mm."""
     if isinstance(text, (list, tuple)):
         return [mm_marked(t) for t in text]
     return _MM.sub(lambda m: (f"\x01m{m.group(1)}\x02 to " if m.group(1) else "")
@@ -164,31 +184,53 @@ def coordinate_mark(mm, digits=4):
 
 
 def exact_mark(mm, digits=None, with_unit=True):
-    """A length (mm) written by say() in the schema's length unit from its exact value, to
-    ``digits`` significant digits (None: as '%g' writes it in mm, at least 3 in another
-    unit), under a schema of mm as f'{mm:.{digits}g} mm'; ``with_unit`` False: the number
-    alone. The binding's summaries take it as their ``length`` formatter."""
+    """A length (mm) written by say() from its exact value in the unit FreeCAD's schema picks
+    for it (user_length: '0.496 mm', '0.1192 m' under MKS), to ``digits`` significant digits
+    (None: as '%g' writes it in mm, at least 3 in another unit), in mm as
+    f'{mm:.{digits}g} mm'; ``with_unit`` False: the number alone, in the schema's length
+    unit (a message names it once), or a range's ('9.05 to 16 mm': the unit of its end).
+    The binding's summaries take it as their ``length`` formatter."""
     shown = "" if digits is None else int(digits)
     return f"\x01{'E' if with_unit else 'e'}{float(mm)!r}|{shown}\x02"
 
 
-def _exact(args, with_unit):
+def _written_in(value, written, digits, shown):
+    """``value`` (mm; ``written``: its text in mm) as a number in ``shown`` = (factor, unit):
+    under mm as written (to ``digits`` when given), else to ``digits`` significant digits
+    (None: written's, at least 3)."""
+    factor, unit = shown
+    if factor == 1.0 and unit == "mm":
+        return written if not digits else f"{value:.{int(digits)}g}"
+    n = int(digits) if digits else max(3, len(re.sub(r"e.*|[^0-9]", "", written).lstrip("0")))
+    return f"{value / factor:.{n}g}"
+
+
+def _exact(args, with_unit, shown=None):
+    """An exact mark (E, e): with its unit in the unit FreeCAD's schema picks for its value
+    (getUserPreferred: '0.496 mm' and '0.12 m' under MKS), without it in ``shown`` (a
+    range's unit) or the schema's length unit (a message names it once)."""
     value, digits = float(args[0]), args[1]
-    factor, unit = length_unit()
-    if factor == 1.0 and unit == "mm":
-        text = f"{value:g}" if not digits else f"{value:.{int(digits)}g}"
-    else:
-        written = re.sub(r"e.*|[^0-9]", "", f"{value:g}").lstrip("0")   # '%g's digits
-        text = f"{value / factor:.{int(digits) if digits else max(3, len(written))}g}"
-    return text + (f" {unit}" if with_unit else "")
+    shown = shown or (user_length(value) if with_unit else length_unit())
+    return _written_in(value, f"{value:g}", digits, shown) + (f" {shown[1]}" if with_unit else "")
 
 
-def _in_length_unit(written, with_unit=True):
-    factor, unit = length_unit()
-    if factor == 1.0 and unit == "mm":
-        return f"{written} mm" if with_unit else written
-    digits = max(3, len(re.sub(r"e.*|[^0-9]", "", written).lstrip("0")))
-    return f"{float(written) / factor:.{digits}g}" + (f" {unit}" if with_unit else "")
+def _in_length_unit(written, with_unit=True, shown=None):
+    """A '<number> mm' mark (M, m) as _exact writes it, to as many digits as written."""
+    value = float(written)
+    shown = shown or (user_length(value) if with_unit else length_unit())
+    return _written_in(value, written, None, shown) + (f" {shown[1]}" if with_unit else "")
+
+
+def _range(match):
+    """'<low> to <high> unit' (far points' '9.05 to 16 mm'): both in the unit of the one
+    written with its unit."""
+    (low_kind, low), (high_kind, high) = match.group(1, 2), match.group(3, 4)
+    low, high = low.split("|"), high.split("|")
+    shown = user_length(float(high[0]))
+    said = (_exact(low, False, shown) if low_kind == "e" else
+            _in_length_unit(low[0], False, shown))
+    return said + " to " + (_exact(high, True, shown) if high_kind == "E" else
+                            _in_length_unit(high[0], True, shown))
 
 
 def _said(match):
@@ -220,4 +262,4 @@ def say(text):
     """``text`` (or a list of texts) with its marks written in the user's schema of now."""
     if isinstance(text, (list, tuple)):
         return [say(t) for t in text]
-    return _MARK.sub(_said, text)
+    return _MARK.sub(_said, _RANGE.sub(_range, text))
