@@ -129,7 +129,9 @@ int el__fit_meets(fit_objective *ob, const fit_map *map, const fit_constraints *
  * HELD_STAGES stages, each fitted by Levenberg-Marquardt from the last, so the fit
  * follows the basin of the unconstrained one instead of starting from the guess with
  * its start state replaced (measured: a noise-free S forced to start at an inflection,
- * rms 4.2 or 8.0 from the guesses, 1.44 by continuation). The targets are the
+ * rms 4.2 or 8.0 from the guesses, 1.44 by continuation); none (0) where the free fit and
+ * the first stage both crawl to max_iter uncertified (crawled) and nothing but the start
+ * is held. The targets are the
  * constraints where the chart holds them exactly (the tangent; smooth, the curvature;
  * discrete, a zero curvature); else (a discrete curvature (3.4)) the chart value that
  * would meet it on the free fit's curve (kappa0 = (n-1) h kappa), a start near the
@@ -148,6 +150,22 @@ enum { HELD_STAGES = 4, HELD_STAGES_MAX = 32 };
  * to other basins (measured: 59 points, discrete, a zero start curvature: rms 0.197 linearly,
  * 0.031 so, the start-state chart's fit 0.040) */
 #define HELD_ASINH 1.0
+/* Levenberg-Marquardt ran to max_iter and did not reach the first-order condition. The free
+ * fit and the first stage so, and the continuation follows no basin: the next stages crawl
+ * too (measured: QA15's 1365-point sheer scan, paired, held at its first point and a tangent
+ * 0.8 rad off the data's: the free fit crawls towards k = 1, then 32 stages to max_iter on
+ * each of six guesses, 35268 evaluations, 10 s, for the fit the direct starts reach in 1731).
+ * Not a free fit alone, nor later stages: among stages that stall, as on sparse sketches,
+ * such a continuation still found the lower basin (bench_fit_sparse.py seed 5 case 7, G2
+ * start 0.3 rad off: 0.0601, 0.0657 without it). Only where the start state is all that is
+ * held (start_only): with end rows the continuation's end is Ipopt's start, and a crawled
+ * one was the better on 2 of 3 sketches (seed 5 case 27, seed 6 cases 29 and 35, G2 start
+ * 0.3 rad off, G1 end: 0.0270, 0.00044, 0.0202 against 0.0402, 0.00076, 0.0184). */
+static int crawled(const fit_solution *sol, int max_iter)
+{
+    return !sol->certified && sol->iters >= max_iter;
+}
+
 int el__fit_held_start(fit_objective *ob, const fit_map *out, const fit_map *free_map, int bits,
                       const fit_constraints *con, int max_iter, const double *p0, double *x,
                       double *fs)
@@ -171,6 +189,9 @@ int el__fit_held_start(fit_objective *ob, const fit_map *out, const fit_map *fre
     }
     iters += sol.iters;
     const double f_free = sol.val.f;
+    const int crawling = crawled(&sol, max_iter);
+    const int start_only = !(con->mask & ~(EL_CONSTRAIN_START_POINT | EL_CONSTRAIN_START_TANGENT |
+                                           EL_CONSTRAIN_START_CURVATURE));
     fit_map stage = *free_map;
     stage.nx = 0;
     for (int j = 0; j < free_map->nx; j++) {
@@ -198,6 +219,11 @@ int el__fit_held_start(fit_objective *ob, const fit_map *out, const fit_map *fre
         el__fit_map_inverse(&stage, v[0], xs);
         if (el__fit_lm(ob, xs, max_iter, &sol) != EL_OK || el__fit_map_eval(&stage, sol.x, v, NULL)) break;
         iters += sol.iters;
+        if (k == 1 && start_only && crawling && crawled(&sol, max_iter)) {
+            ob->map = saved;      /* the free fit and the first stage crawled: no start */
+            ob->have_base = 0;
+            return 0;
+        }
         el__fit_map_inverse(out, v[0], x);
         if (k == stages) { fs[0] = f_free; fs[1] = sol.val.f; }
     }

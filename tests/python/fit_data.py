@@ -54,6 +54,24 @@ def sketched_s(seed: int = 0, n: int = 15, wobble: float = 0.5):
     return np.ascontiguousarray(pts), truth
 
 
+def sheer_scan(n: int = 1500, seed: int = 1):
+    """A scanned sheer line (QA15's sheer1500.csv for n = 1500): a smooth elastica 30 m
+    long in mm, points denser at the bow, none between 40 and 50 % of the length, 2 mm
+    noise along the normal and 5 outliers of 50-200 mm (n = 1500: 1365 points).
+    Returns (points (m, 2), the SmoothElastica)."""
+    rng = np.random.default_rng(seed)
+    c = el.SmoothElastica(x0=0, y0=0, phi=0.12, mu=1 / 9000.0 ** 2, k=0.35, q=-1.2, length=30000.0)
+    s = np.sort(rng.uniform(0, 1, n) ** 1.3) * c.length
+    s[0], s[-1] = 0.0, c.length
+    s = s[~((s > 0.4 * c.length) & (s < 0.5 * c.length))]
+    th = c.angle(s)
+    nrm = np.c_[-np.sin(th), np.cos(th)]
+    xy = c.points(s) + nrm * rng.normal(0, 2.0, len(s))[:, None]
+    idx = rng.choice(np.arange(10, len(s) - 10), 5, replace=False)
+    xy[idx] += nrm[idx] * rng.uniform(50, 200, 5)[:, None] * rng.choice([-1, 1], 5)[:, None]
+    return np.ascontiguousarray(xy), c
+
+
 def swinging_sketch():
     """18 points sketched along 100 mm (bench_fit_sparse.py seed 5 case 670 in mm: uneven,
     noise 1 mm) whose smooth (status 0) and discrete fits hook away between the last two
