@@ -1,7 +1,6 @@
 """freecadcmd -t tests of the Elastic blend and Curvature comb cores, parametric
 updates, save / reopen, and bad input (the document must stay unchanged)."""
 import math
-import os
 import re
 
 import FreeCAD as App
@@ -673,17 +672,10 @@ class BlendG2Test(S.DocTest):
                 self.assertIn(" in", shown)
                 App.Units.setSchema(0)
                 self.assertEqual(said(b, "Status"), mm_status)
-            import tempfile
-            with tempfile.TemporaryDirectory() as tmp:
-                path = os.path.join(tmp, "said.FCStd")
-                self.doc.saveAs(path)
-                name, label = self.doc.Name, b.Label
-                App.closeDocument(name)
-                self.doc = App.openDocument(path)
-                b = self.doc.getObjectsByLabel(label)[0]
-                App.Units.setSchema(3)
-                self.assertIn(f"no G2 blend of length {61.95 / 25.4:.6g} in", said(b, "Status"))
-                self.assertNotIn("mm", said(b, "Status"))
+            (b,) = S.reopened(self, "said.FCStd", b.Name)
+            App.Units.setSchema(3)
+            self.assertIn(f"no G2 blend of length {61.95 / 25.4:.6g} in", said(b, "Status"))
+            self.assertNotIn("mm", said(b, "Status"))
         finally:
             App.Units.setSchema(schema)
 

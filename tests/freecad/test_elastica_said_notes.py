@@ -111,21 +111,13 @@ class SaidNotesTest(S.DocTest):
         """A document saved before the marked texts had their property (the proxy's state
         kept them): reopened, its Status said in the schema of now, and kept in SAID."""
         import json
-        import os
-        import tempfile
         from freecad.elastica.proxy import SAID
         sk = S.two_lines_sketch(self.doc)
         b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Continuity="G2")
         self.doc.recompute()
         b.Proxy._said = json.loads(getattr(b, SAID))
         b.removeProperty(SAID)
-        with tempfile.TemporaryDirectory() as tmp:
-            path = os.path.join(tmp, "before.FCStd")
-            self.doc.saveAs(path)
-            name, label = self.doc.Name, b.Label
-            App.closeDocument(name)
-            self.doc = App.openDocument(path)
-        b = self.doc.getObjectsByLabel(label)[0]
+        (b,) = S.reopened(self, "before.FCStd", b.Name)
         App.Units.setSchema(3)
         self.assertIn("length 1.963 in", said(b, "Status"))
         self.assertEqual(list(json.loads(getattr(b, SAID))), ["Status"])
