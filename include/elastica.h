@@ -1107,7 +1107,9 @@ typedef struct el_spline_result {
                               as forces): F of the piece before minus F of the piece after,
                               normal to the batten */
     int loops;             /* 1: the spline crosses itself where the polygon of its knots does
-                              not, or (tension mode) is longer than 4 x that polygon: it loops
+                              not (where that polygon crosses itself: between two pieces with
+                              no crossing of the polygon between their spans or a neighbour
+                              of each), or (tension mode) is longer than 4 x that polygon: it loops
                               away from its ducks; no fair batten was found at this tension
                               (spline_fair.c; tension mode follows the family from the taut
                               batten before it settles for one). 0: it follows its ducks */

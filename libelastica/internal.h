@@ -358,6 +358,12 @@ double el__spline_separatrix_bound(const el_smooth_params *p, const double th[2]
  * el__chain_crosses: the same for the chain w without guide ducks (internal units). */
 int el__spline_crosses(const el_smooth_params *p, size_t m, int closed);
 int el__chain_crosses(const el__spchain *w);
+/* 1 when the curve of the m pieces loops away from its knots (el_spline_result's loops):
+ * as el__spline_crosses where their polygon does not cross itself; where it does, a
+ * crossing of the curve between pieces (i, j) with none of the polygon's between i +- 1
+ * and j +- 1 and, i and j not neighbours, no other of the curve's between i and j +- 1
+ * or i +- 1 and j (a lens, not a loop); -1: no memory. */
+int el__spline_loops(const el_smooth_params *p, size_t m, int closed);
 /* The knots' polygon crosses itself (then el__chain_crosses says 0); -1 out of memory */
 int el__chain_polygon_crosses(const el__spchain *w);
 /* The tension solution in w (st: its status; target: its sigma, internal) where it

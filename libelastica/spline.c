@@ -524,7 +524,7 @@ static int by_tension_again(el__spchain *w, const double *xy, size_t n, const el
     if (st && !w->near) return EL_ENOCONV;
     double other, sep;
     if ((st = make_result(w, xy, n, S, opt->tol, r, &other, &sep))) return st;
-    const int cr = el__spline_crosses(r->pieces, r->npieces, opt->closed);
+    const int cr = el__spline_loops(r->pieces, r->npieces, opt->closed);
     st = cr < 0 ? EL_ENOMEM : cr ? EL_ENOCONV : accepted(r, opt->tol, other, sep);
     if (st) el_spline_result_free(r);
     return st;
@@ -643,7 +643,7 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
         const int st2 = make_result(sol, xy, n, S, opt->tol, res, &other, &sep);
         if (st2) { st = st2; goto done; }
         /* does it follow its ducks (spline_fair.c)? */
-        const int cr = el__spline_crosses(res->pieces, res->npieces, closed);
+        const int cr = el__spline_loops(res->pieces, res->npieces, closed);
         if (cr < 0) { el_spline_result_free(res); st = EL_ENOMEM; goto done; }
         res->loops = cr || (!lmode && res->length > 4.0 * Lp);
         if (lmode) reach_of(&w, &g, S, res);

@@ -97,24 +97,74 @@ static int tame(const el_smooth_params *p, size_t m, const double *knots, int cl
     return ok;
 }
 
-int el__spline_crosses(const el_smooth_params *p, size_t m, int closed)
+/* All proper crossings of the polyline xy as polyline_crosses finds one: *np_out pairs
+ * (i, j) of segment indices in pairs (malloc'ed, the caller frees; NULL for none);
+ * 0 or EL_ENOMEM as -1. */
+static int polyline_crossings(const double *xy, size_t np, int closed, size_t **pairs, size_t *np_out)
 {
-    if (m < 2) return 0;
-    /* the ducks' polygon (the knots): where it crosses itself the curve may */
+    *pairs = NULL;
+    *np_out = 0;
+    const size_t ns = closed ? np : np - 1;
+    if (ns < 3) return 0;
+    seg_box *b = malloc(ns * sizeof *b);
+    if (!b) return -1;
+    for (size_t i = 0; i < ns; i++) {
+        const double xa = xy[2 * i], xb = xy[2 * ((i + 1) % np)];
+        b[i].x0 = fmin(xa, xb);
+        b[i].x1 = fmax(xa, xb);
+        b[i].i = i;
+    }
+    qsort(b, ns, sizeof *b, by_x0);
+    size_t cap = 0, cnt = 0, *out = NULL;
+    for (size_t a = 0; a < ns; a++) {
+        const size_t i = b[a].i;
+        const double *p = xy + 2 * i, *q = xy + 2 * ((i + 1) % np);
+        for (size_t c = a + 1; c < ns && b[c].x0 <= b[a].x1; c++) {
+            const size_t j = b[c].i, d = i > j ? i - j : j - i;
+            if (d <= 1 || (closed && d == ns - 1)) continue;
+            const double *r = xy + 2 * j, *s = xy + 2 * ((j + 1) % np);
+            if (fmax(p[1], q[1]) < fmin(r[1], s[1]) || fmax(r[1], s[1]) < fmin(p[1], q[1])) continue;
+            if (!(orient(p, q, r) * orient(p, q, s) < 0.0 && orient(r, s, p) * orient(r, s, q) < 0.0)) continue;
+            if (cnt == cap) {
+                cap = cap ? 2 * cap : 16;
+                size_t *t = realloc(out, 2 * cap * sizeof *t);
+                if (!t) { free(out); free(b); return -1; }
+                out = t;
+            }
+            out[2 * cnt] = i < j ? i : j;
+            out[2 * cnt + 1] = i < j ? j : i;
+            cnt++;
+        }
+    }
+    free(b);
+    *pairs = out;
+    *np_out = cnt;
+    return 0;
+}
+
+/* The knots of the m pieces (m + 1 points, the last the end of the last piece, also in
+ * end): malloc'ed, NULL where out of memory or the end is not evaluated (*bad 1). */
+static double *knots_of(const el_smooth_params *p, size_t m, double end[2], int *bad)
+{
+    *bad = 0;
     double *knots = malloc(2 * (m + 1) * sizeof *knots);
-    if (!knots) return -1;
+    if (!knots) return NULL;
     for (size_t j = 0; j < m; j++) { knots[2 * j] = p[j].x0; knots[2 * j + 1] = p[j].y0; }
-    double s1 = p[m - 1].length, end[2];
-    if (el_smooth_eval(&p[m - 1], 1, &s1, end, NULL, NULL)) { free(knots); return 0; }
+    double s1 = p[m - 1].length;
+    if (el_smooth_eval(&p[m - 1], 1, &s1, end, NULL, NULL)) { free(knots); *bad = 1; return NULL; }
     knots[2 * m] = end[0];
     knots[2 * m + 1] = end[1];
-    const int poly = polyline_crosses(knots, closed ? m : m + 1, closed);
-    if (poly != 0) { free(knots); return poly < 0 ? -1 : 0; }
-    if (tame(p, m, knots, closed)) { free(knots); return 0; }
-    /* samples per piece */
+    return knots;
+}
+
+/* The curve sampled (each piece at 16 points per chord of its length, at least 16; its
+ * end appended where open): *k points, cnt[j] of piece j; malloc'ed xy (NULL: no
+ * memory, or not evaluated: *bad 1) */
+static double *sampled(const el_smooth_params *p, size_t m, int closed, const double *knots,
+                       const double end[2], size_t *cnt, size_t *k, int *bad)
+{
+    *bad = 0;
     size_t total = 0;
-    size_t *cnt = malloc(m * sizeof *cnt);
-    if (!cnt) { free(knots); return -1; }
     for (size_t j = 0; j < m; j++) {
         const size_t e = (j + 1) % (closed ? m : m + 1);
         const double h = hypot(knots[2 * e] - p[j].x0, knots[2 * e + 1] - p[j].y0);
@@ -123,21 +173,89 @@ int el__spline_crosses(const el_smooth_params *p, size_t m, int closed)
         total += cnt[j];
     }
     double *xy = malloc(2 * (total + 1) * sizeof *xy), *s = malloc((1024 + 1) * sizeof *s);
-    int found = -1;
-    if (xy && s) {
-        size_t k = 0;
-        for (size_t j = 0; j < m; j++) {
-            for (size_t i = 0; i < cnt[j]; i++) s[i] = p[j].length * (double)i / (double)cnt[j];
-            if (el_smooth_eval(&p[j], cnt[j], s, xy + 2 * k, NULL, NULL)) { found = 0; break; }
-            k += cnt[j];
+    if (!xy || !s) { free(xy); free(s); return NULL; }
+    *k = 0;
+    for (size_t j = 0; j < m; j++) {
+        for (size_t i = 0; i < cnt[j]; i++) s[i] = p[j].length * (double)i / (double)cnt[j];
+        if (el_smooth_eval(&p[j], cnt[j], s, xy + 2 * *k, NULL, NULL)) {
+            free(xy); free(s); *bad = 1; return NULL;
         }
-        if (k == total) {
-            if (!closed) { xy[2 * k] = end[0]; xy[2 * k + 1] = end[1]; k++; }
-            found = polyline_crosses(xy, k, closed);
-        }
+        *k += cnt[j];
     }
-    free(xy); free(s); free(cnt); free(knots);
+    if (!closed) { xy[2 * *k] = end[0]; xy[2 * *k + 1] = end[1]; (*k)++; }
+    free(s);
+    return xy;
+}
+
+int el__spline_crosses(const el_smooth_params *p, size_t m, int closed)
+{
+    if (m < 2) return 0;
+    /* the ducks' polygon (the knots): where it crosses itself the curve may */
+    double end[2];
+    int bad;
+    double *knots = knots_of(p, m, end, &bad);
+    if (!knots) return bad ? 0 : -1;
+    const int poly = polyline_crosses(knots, closed ? m : m + 1, closed);
+    if (poly != 0) { free(knots); return poly < 0 ? -1 : 0; }
+    if (tame(p, m, knots, closed)) { free(knots); return 0; }
+    size_t *cnt = malloc(m * sizeof *cnt), k = 0;
+    if (!cnt) { free(knots); return -1; }
+    double *xy = sampled(p, m, closed, knots, end, cnt, &k, &bad);
+    const int found = xy ? polyline_crosses(xy, k, closed) : bad ? 0 : -1;
+    free(xy); free(cnt); free(knots);
     return found;
+}
+
+/* pieces i and j are within one of each other (closed: around) */
+static int near_piece(size_t i, size_t j, size_t m, int closed)
+{
+    const size_t d = i > j ? i - j : j - i;
+    return d <= 1 || (closed && d + 1 >= m);
+}
+
+int el__spline_loops(const el_smooth_params *p, size_t m, int closed)
+{
+    if (m < 2) return 0;
+    double end[2];
+    int bad;
+    double *knots = knots_of(p, m, end, &bad);
+    if (!knots) return bad ? 0 : -1;
+    size_t *pp = NULL, npp = 0;
+    if (polyline_crossings(knots, closed ? m : m + 1, closed, &pp, &npp)) { free(knots); return -1; }
+    if (npp == 0) { free(knots); return el__spline_crosses(p, m, closed); }   /* as it was */
+    /* the polygon crosses itself: the curve's crossings, in pieces, against the polygon's */
+    size_t *cnt = malloc(m * sizeof *cnt), k = 0, *sp = NULL, nsp = 0;
+    double *xy = cnt ? sampled(p, m, closed, knots, end, cnt, &k, &bad) : NULL;
+    int loops = xy ? 0 : bad ? 0 : -1;
+    if (xy && polyline_crossings(xy, k, closed, &sp, &nsp)) loops = -1;
+    if (xy && loops == 0 && nsp > 0) {
+        size_t *piece = malloc(k * sizeof *piece);   /* the piece of each sample segment */
+        if (!piece) loops = -1;
+        for (size_t j = 0, a = 0; loops == 0 && j < m; j++)
+            for (size_t i = 0; i < cnt[j]; i++) piece[a++] = j;
+        for (size_t c = 0; loops == 0 && c < nsp; c++) { sp[2 * c] = piece[sp[2 * c]]; sp[2 * c + 1] = piece[sp[2 * c + 1]]; }
+        for (size_t c = 0; loops == 0 && c < nsp; c++) {
+            /* a crossing of pieces (i, j) with none of the polygon's between the same pieces
+             * or a neighbour of each (a crossing slid past a duck) ... */
+            const size_t i = sp[2 * c], j = sp[2 * c + 1];
+            int matched = 0;
+            for (size_t v = 0; v < npp && !matched; v++)
+                matched = (near_piece(i, pp[2 * v], m, closed) && near_piece(j, pp[2 * v + 1], m, closed)) ||
+                          (near_piece(i, pp[2 * v + 1], m, closed) && near_piece(j, pp[2 * v], m, closed));
+            /* ... nor, between pieces that are not neighbours, a second crossing beside it
+             * (i or j the same, the other within one: a duck passed on its other side,
+             * the two crossings bounding a lens, no loop); neighbours crossing loop */
+            for (size_t u = 0; u < nsp && !matched && !near_piece(i, j, m, closed); u++) {
+                const size_t a = sp[2 * u], b = sp[2 * u + 1];
+                matched = u != c && !near_piece(a, b, m, closed) &&
+                          ((a == i && near_piece(b, j, m, closed)) || (b == j && near_piece(a, i, m, closed)));
+            }
+            loops = !matched;
+        }
+        free(piece);
+    }
+    free(sp); free(pp); free(xy); free(cnt); free(knots);
+    return loops;
 }
 
 int el__chain_polygon_crosses(const el__spchain *w)

@@ -21,8 +21,9 @@ __all__ = ["ElasticSpline", "LoopWarning", "elastic_spline"]
 class LoopWarning(RuntimeWarning):
     """:func:`elastic_spline`'s warning that the spline returned loops away from its
     ducks (``ElasticSpline.loops``: it crosses itself where the ducks' polygon does
-    not, or, by tension, is longer than 4 x that polygon): no fair batten was found at
-    that tension (the family from the taut batten folds before it); a larger tension,
+    not (a polygon that crosses itself: between spans whose polygon's segments, or their
+    neighbours, do not cross), or, by tension, is longer than 4 x that polygon): no fair
+    batten was found at that tension (the family from the taut batten folds before it); a larger tension,
     or a length, gives one."""
 
 
@@ -135,11 +136,15 @@ class ElasticSpline:
         return sorted(pairs)
 
     def crossing_text(self) -> str:
-        """The crossings in words (counted from 0), for the loop warnings."""
+        """The crossings in words (counted from 0), for the loop warnings; those between
+        spans whose segments of the points' polygon do not cross first."""
+        from .shape import crossing_pairs
         n = len(self.data)
+        poly = self.data if not self.closed else np.vstack([self.data, self.data[:1]])
+        own = {tuple(int(v) for v in p) for p in crossing_pairs(poly)}
         said = [f"within the span from point {i} to {(i + 1) % n}" if i == j else
                 f"where the spans from point {i} to {(i + 1) % n} and from point {j} to "
-                f"{(j + 1) % n} cross" for i, j in self.crossings()]
+                f"{(j + 1) % n} cross" for i, j in sorted(self.crossings(), key=lambda c: c in own)]
         return ", ".join(said[:3]) + (f" and {len(said) - 3} more" if len(said) > 3 else "")
 
     def to_bspline(self, tol: Optional[float] = None, degree: int = 3):

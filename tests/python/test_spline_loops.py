@@ -82,3 +82,36 @@ def test_no_silent_loops_where_the_polygon_crosses():
         except el.NotConvergedError:
             continue
         assert not any(i == j for i, j in sp.crossings()), (sh2, sp.crossings())
+
+
+def test_loops_where_the_polygon_crosses():
+    """rw15's polygon crosses itself (spans 3-5, 3-6, 3-7, 4-6, 4-7), and loops was 0 for
+    every spline of it; at tension x (longest span)^2 = 10 the spline crosses itself also
+    between spans 6 and 7 (a loop around duck 7), which no crossing of the polygon matches:
+    loops and a LoopWarning now say so."""
+    from libelastica.shape import crossing_pairs
+    h = _longest_side(RW15, False)
+    assert crossing_pairs(RW15).tolist() == [[3, 5], [3, 6], [3, 7], [4, 6], [4, 7]]
+    with pytest.warns(el.LoopWarning, match="from point 6 to 7 and from point 7 to 8"):
+        sp = el.elastic_spline(RW15, tension=10.0 / h**2)
+    assert sp.loops and (6, 7) in sp.crossings()
+
+
+def test_a_figure_eight_that_follows_its_polygon_is_fair():
+    """Ducks on a figure eight (open, and closed): the polygon crosses itself once and so does
+    each spline, between the same spans; no LoopWarning. rw15 at tension x (longest
+    span)^2 = 20: its spline crosses only where its polygon does, silent too."""
+    t = np.linspace(0.0, 2.0 * np.pi, 9) + 0.3
+    eight = np.c_[3.0 * np.sin(t), 1.6 * np.sin(t) * np.cos(t)]
+    t = np.linspace(0.0, 2.0 * np.pi, 12, endpoint=False) + 0.3
+    ring = np.c_[3.0 * np.sin(t), 1.6 * np.sin(t) * np.cos(t)]
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", el.LoopWarning)
+        for pts, closed, pair in ((eight, False, (3, 7)), (ring, True, (5, 11))):
+            h = _longest_side(pts, closed)
+            for sh2 in (0.5, 10.0, 50.0):
+                sp = el.elastic_spline(pts, tension=sh2 / h**2, closed=closed)
+                assert not sp.loops and sp.crossings() == [pair], (closed, sh2)
+        h = _longest_side(RW15, False)
+        sp = el.elastic_spline(RW15, tension=20.0 / h**2)
+    assert not sp.loops and sp.crossings() == [(3, 7), (4, 6), (4, 7)]
