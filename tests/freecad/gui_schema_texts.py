@@ -3,9 +3,13 @@ run_all):
 
 - the elliptic blend's loop warning gives its chords and loop width in the schema's length
   unit, as every other text: under any schema they were bare numbers ('chord 3.94, a loop
-  1.3 wide' beside boxes in inches).
+  1.3 wide' beside boxes in inches);
+- the Fit panel's result line gives the B-spline's deviation in plain decimals, as its
+  Tolerance box ('0.0000394 in'): it said 'B-spline within 2.27e-05 in'.
 
-Screenshot: gui_ellblend_loop_imperial.png."""
+Screenshots: gui_ellblend_loop_imperial.png, gui_fit_result_imperial.png."""
+import re
+
 import FreeCAD as App
 import FreeCADGui as Gui
 
@@ -44,9 +48,38 @@ def ellblend_loop_in_the_schema(doc):
         App.Units.setSchema(old)
 
 
+def fit_result_in_plain_decimals(doc):
+    """The sample S curve's 40 points fitted under Imperial decimal: the result line's
+    lengths (rms 0.0000442 in: below 1e-4 in, where '%.3g' turns to an exponent) in plain
+    decimals, as the Tolerance box beside them ('0.0000394 in')."""
+    prefs = App.ParamGet("User parameter:BaseApp/Preferences/Units")
+    old = prefs.GetInt("UserSchema", 0)
+    prefs.SetInt("UserSchema", 3)
+    App.Units.setSchema(3)
+    try:
+        sk = S.points_sketch(doc, S.keyline_xy(40)[0], "Keyline")
+        panel = G.open_panel(doc, "Elastica_Fit", [(sk, "")], "Fit elastica")
+        G.wait()
+        said = panel.result.text()
+        lengths = re.findall(r"(-?[0-9.][0-9.e+-]*) in\b", said)
+        G.screenshot("gui_fit_result_imperial.png")
+        G.check(not panel.obj.Status.startswith("error") and len(lengths) >= 3
+                and not any("e" in x for x in lengths)
+                and 0 < min(float(x) for x in lengths) < 1e-4
+                and panel.tol.text() == "0.0000394 in",
+                f"the Fit result line in plain decimals: {said!r}, "
+                f"Tolerance {panel.tol.text()!r}")
+        panel.reject()
+        G.pump()
+    finally:
+        prefs.SetInt("UserSchema", old)
+        App.Units.setSchema(old)
+
+
 def run_all(smoke):
     global G
     G = smoke
     doc = S.new_doc("ElasticaSchemaTexts")
     ellblend_loop_in_the_schema(doc)
+    fit_result_in_plain_decimals(doc)
     App.closeDocument(doc.Name)

@@ -24,7 +24,7 @@ the panel closed); gui_panel_lifecycle.py's gui_close_with_panel.png,
 gui_delete_during_panel.png and gui_keep_needs_copy.png; gui_blend_panel.py's
 gui_blend_picked_tops.png, gui_blend_ends_by_length.png, gui_blend_bound.png,
 gui_blend_imperial.png and the others its docstring names; gui_schema_texts.py's
-gui_ellblend_loop_imperial.png. The outcome goes
+gui_ellblend_loop_imperial.png, gui_fit_result_imperial.png. The outcome goes
 to gui_smoke.result (first line PASS or FAIL); FreeCAD is then ended with os._exit
 because its exit status says nothing about a script. Only APIs present in FreeCAD
 0.20 and 1.0 are used (PySide through FreeCAD's shim)."""

@@ -6,6 +6,7 @@ spline's, by length_text, '3.25 mm': one workbench, two rules."""
 import re
 import sys
 import unittest
+from decimal import Decimal
 
 import FreeCAD as App
 import numpy as np
@@ -39,15 +40,14 @@ class UnitsPerValueTest(unittest.TestCase):
     def assert_written(self, text, mm, at_least=3):
         """``text`` ('<number> <unit>') is ``mm`` in the unit FreeCAD picks for it, rounded
         correctly to the digits it shows (as many as '%g' writes in mm, at least 3, where
-        the unit is not mm)."""
+        the unit is not mm), in whichever notation."""
         m = FIGURE.fullmatch(text)
         self.assertIsNotNone(m, text)
         factor, unit = preferred(mm)
         self.assertEqual(m.group(2), unit, (text, mm, App.Units.getSchema()))
         shown = float(m.group(1))
         n = max(at_least, digits(f"{mm:g}")) if factor != 1.0 else digits(f"{mm:g}")
-        self.assertEqual(m.group(1).lstrip("-0."), f"{mm / factor:.{n}g}".lstrip("-0."),
-                         (text, mm))
+        self.assertEqual(Decimal(m.group(1)), Decimal(f"{mm / factor:.{n}g}"), (text, mm))
         self.assertAlmostEqual(shown * factor, mm, delta=abs(mm) * 10.0 ** (1 - n))
 
     def test_marked_lengths_take_the_unit_freecad_picks_for_each(self):

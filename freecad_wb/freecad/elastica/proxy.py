@@ -17,7 +17,7 @@ import sys
 
 import FreeCAD as App
 
-from .units import mm_marked, say
+from .units import exact_mark, mm_marked, say
 
 VERSION = 3             # of the proxies' saved state (3: lengths typed with units)
 VIEW_HOOK = []          # [attach(obj), restored(obj)] set by init_gui: view providers
@@ -162,18 +162,23 @@ def check_number(name, value, lo=None, hi=None, unit="", lo_open=False, why=""):
     """``value`` as a float, or InputProblem saying what was typed and what is
     possible (NaN, infinities and out-of-range values are never clamped)."""
     v = float(value)
-    rng = ""
-    if lo is not None and hi is not None:
-        rng = f"{'(' if lo_open else '['}{lo:g}, {hi:g}]"
-    elif lo is not None:
-        rng = f"{'>' if lo_open else '>='} {lo:g}"
     ok = math.isfinite(v) and (lo is None or (v > lo if lo_open else v >= lo)) \
         and (hi is None or v <= hi)
-    if not ok:
-        raise InputProblem(f"{name} = {v:g}{' ' + unit if unit else ''} is not usable: it must "
-                           f"be {rng or 'finite'}{' ' + unit if unit and rng else ''}"
-                           + (f" ({why})" if why else ""))
-    return v
+    if ok:
+        return v
+    # a length (finite) from its exact value in the unit FreeCAD picks for it, each bound too
+    # (units.exact_mark): not its '%g' text in mm said again by mm_marked (rounded twice)
+    mark = unit == "mm"
+    said = exact_mark if mark else (lambda x: f"{x:g}")
+    rng = ""
+    if lo is not None and hi is not None:
+        rng = f"{'(' if lo_open else '['}{said(lo)}, {said(hi)}]"
+    elif lo is not None:
+        rng = f"{'>' if lo_open else '>='} {said(lo)}"
+    typed = said(v) if mark and math.isfinite(v) else f"{v:g}{' ' + unit if unit else ''}"
+    raise InputProblem(f"{name} = {typed} is not usable: it must be {rng or 'finite'}"
+                       f"{' ' + unit if unit and rng and not mark else ''}"
+                       + (f" ({why})" if why else ""))
 
 
 def check_tolerance(value, name="Tolerance"):

@@ -29,11 +29,21 @@ def user_length(mm):
     return float(factor), unit
 
 
+def plain(number):
+    """A number's '%g' text in fixed notation, as FreeCAD's boxes write numbers and
+    box_text the lengths ('0.0000227' for '2.27e-05', '1230' for '1.23e+03'), to the same
+    significant digits; an exponent kept below 1e-6 (where FreeCAD's Imperial decimal
+    schema turns to scientific notation)."""
+    if "e" in number and abs(float(number)) >= 1e-6:
+        return format(Decimal(number), "f")
+    return number
+
+
 def length_text(mm, digits=3):
-    """A length (mm) as text in the user's schema, to ``digits`` significant digits
-    ('151 mm', '5.94 in')."""
+    """A length (mm) as text in the user's schema, to ``digits`` significant digits, in
+    fixed notation as the length boxes (plain: '151 mm', '5.94 in', '0.0000227 in')."""
     factor, unit = user_length(mm)
-    return f"{float(mm) / factor:.{digits}g} {unit}"
+    return f"{plain(f'{float(mm) / factor:.{digits}g}')} {unit}"
 
 
 def feet_inches(mm):
@@ -59,10 +69,7 @@ def box_text(mm):
     written = f"{value:.6g}"
     whole = math.floor(math.log10(abs(value) / shown[0])) + 1 if value else 0
     digits = None if whole <= 3 else min(6, whole)     # 1 km: '39370 in', not '39400 in'
-    text = _written_in(value, written, digits, shown)
-    if "e" in text and abs(float(text)) >= 1e-6:
-        text = format(Decimal(text), "f")
-    return f"{text} {shown[1]}"
+    return f"{_written_in(value, written, digits, shown)} {shown[1]}"
 
 
 def length_unit():
@@ -197,12 +204,12 @@ def exact_mark(mm, digits=None, with_unit=True):
 def _written_in(value, written, digits, shown):
     """``value`` (mm; ``written``: its text in mm) as a number in ``shown`` = (factor, unit):
     under mm as written (to ``digits`` when given), else to ``digits`` significant digits
-    (None: written's, at least 3)."""
+    (None: written's, at least 3); in fixed notation (plain)."""
     factor, unit = shown
     if factor == 1.0 and unit == "mm":
-        return written if not digits else f"{value:.{int(digits)}g}"
+        return plain(written if not digits else f"{value:.{int(digits)}g}")
     n = int(digits) if digits else max(3, len(re.sub(r"e.*|[^0-9]", "", written).lstrip("0")))
-    return f"{value / factor:.{n}g}"
+    return plain(f"{value / factor:.{n}g}")
 
 
 def _exact(args, with_unit, shown=None):

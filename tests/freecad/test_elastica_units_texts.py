@@ -1,0 +1,88 @@
+"""freecadcmd -t tests of the lengths in the workbench's texts, written as its length boxes
+write them (units.plain): in the unit FreeCAD's schema picks for each value, from the exact
+value (a check's typed length is not its '%g' text in mm said again: rounded twice), in
+fixed notation down to 1e-6 of the unit (the Fit panel said 'B-spline within 2.27e-05 in'
+under Imperial decimal beside a Tolerance box of '0.0000394 in')."""
+import sys
+import unittest
+
+import FreeCAD as App
+
+from freecad.elastica import units as U
+from freecad.elastica.proxy import InputProblem, check_number, check_tolerance
+
+STANDARD, MKS, IMPERIAL_DECIMAL = 0, 1, 3
+
+
+def reported(check, *args, **kw):
+    """The text report() writes for the InputProblem ``check`` raises (mm_marked, say)."""
+    try:
+        check(*args, **kw)
+    except InputProblem as exc:
+        return U.say(U.mm_marked(str(exc)))
+    raise AssertionError(f"{check.__name__}{args} raised nothing")
+
+
+class UnitsTextsTest(unittest.TestCase):
+    def setUp(self):
+        self.schema = App.Units.getSchema()
+
+    def tearDown(self):
+        App.Units.setSchema(self.schema)
+
+    def test_a_checked_length_is_rounded_once(self):
+        """Resampling step = -0.0012345678 mm under Imperial decimal: -0.000048605 in, its
+        value / 25.4 to 6 digits; on the old code '-4.86051e-05 in', the '-0.00123457 mm'
+        of '%g' divided again (a last digit off, and an exponent)."""
+        App.Units.setSchema(IMPERIAL_DECIMAL)
+        text = reported(check_number, "Resampling step", -0.0012345678, 0.0, None, "mm")
+        self.assertEqual(text, "Resampling step = -0.000048605 in is not usable: it must be "
+                               ">= 0 in", text)
+        self.assertEqual(f"{-0.0012345678 / 25.4:.6g}", "-4.8605e-05")
+        App.Units.setSchema(MKS)
+        self.assertEqual(reported(check_number, "Length", -12345.6789, 0.0, None, "mm"),
+                         "Length = -12.3457 m is not usable: it must be >= 0 m")   # FreeCAD's 0 m
+        App.Units.setSchema(STANDARD)          # as before
+        self.assertEqual(reported(check_number, "Length", -2.5, 0.0, None, "mm"),
+                         "Length = -2.5 mm is not usable: it must be >= 0 mm")
+        self.assertEqual(reported(check_number, "Length", float("nan"), 0.0, None, "mm"),
+                         "Length = nan mm is not usable: it must be >= 0 mm")
+        self.assertEqual(reported(check_number, "Tension", -1.0, 0.0, None, "1/mm^2"),
+                         "Tension = -1 1/mm^2 is not usable: it must be >= 0 1/mm^2")
+
+    def test_the_tolerance_check_says_its_bound_exactly(self):
+        """check_tolerance's bound 1e-9 mm and a typed 1.2345678e-10 mm in the unit FreeCAD
+        picks for each, from the exact values (old: '4.86051e-12 in', rounded twice)."""
+        App.Units.setSchema(IMPERIAL_DECIMAL)
+        text = reported(check_tolerance, 1.2345678e-10)
+        self.assertTrue(text.startswith(f"Tolerance = {1.2345678e-10 / 25.4:.6g} in is not "
+                                        f"usable: it must be >= {1e-9 / 25.4:.3g} in ("), text)
+
+    def test_result_line_lengths_are_plain_decimals(self):
+        """A result line's length (length_text: 'B-spline within ...') in the unit FreeCAD
+        picks for the value, in fixed notation as the boxes: 0.000577 mm is '0.0000227 in'
+        under Imperial decimal (was '2.27e-05 in') and '577 nm' under Standard;
+        1234 mm '1230 mm' (was '1.23e+03 mm'); below 1e-6 of the unit an exponent."""
+        App.Units.setSchema(IMPERIAL_DECIMAL)
+        self.assertEqual(U.length_text(0.000577), "0.0000227 in")
+        self.assertEqual(U.length_text(151.0), "5.94 in")
+        self.assertEqual(U.say(U.exact_mark(0.0004)), "0.0000157 in")
+        self.assertEqual(U.say(U.length_mark(0.000577)), "0.0000227 in")
+        self.assertEqual(U.length_text(1e-5), f"{1e-5 / 25.4:.3g} in")      # 3.94e-07 in
+        App.Units.setSchema(STANDARD)
+        self.assertEqual(U.length_text(0.000577), "577 nm")
+        self.assertEqual(U.length_text(0.0227), "22.7 \u00b5m")
+        self.assertEqual(U.length_text(1234.0), "1230 mm")
+        self.assertEqual(U.length_text(1234.0, 4), "1234 mm")
+        self.assertEqual(U.length_text(151.0), "151 mm")                       # as before
+        for schema in range(8):
+            App.Units.setSchema(schema)
+            for mm in (1e-4, 0.000577, 0.01, 0.5, 151.0, 1234.0, 9999.0, 2.5e6):
+                with self.subTest(schema=schema, mm=mm):
+                    number = U.length_text(mm).split(" ")[0]
+                    for text in (number, U.say(U.exact_mark(mm)).split(" ")[0]):
+                        self.assertEqual("e" in text, abs(float(text)) < 1e-6, text)
+
+
+if __name__ == "__main__":
+    unittest.main(argv=sys.argv[:1])
