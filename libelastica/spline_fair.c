@@ -32,11 +32,15 @@ static double orient(const double *a, const double *b, const double *c)
     return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
 }
 
-/* The polyline xy (np points; closed: the last joins the first) crosses itself
- * properly (segments that are not neighbours, each strictly through the other):
- * 1, 0, or EL_ENOMEM as -1. */
-static int polyline_crosses(const double *xy, size_t np, int closed)
+/* The proper crossings of the polyline xy (np points; closed: the last joins the first):
+ * segments that are not neighbours, each strictly through the other, found by the sweep
+ * in x; pairs (i, j), i < j, of segment indices into *pairs where pairs is not NULL
+ * (malloc'ed, the caller frees; NULL for none), *cnt of them, stopping at the first where
+ * first is set. 0, or EL_ENOMEM as -1. */
+static int sweep_crossings(const double *xy, size_t np, int closed, int first, size_t **pairs, size_t *cnt)
 {
+    if (pairs) *pairs = NULL;
+    *cnt = 0;
     const size_t ns = closed ? np : np - 1;
     if (ns < 3) return 0;
     seg_box *b = malloc(ns * sizeof *b);
@@ -48,20 +52,39 @@ static int polyline_crosses(const double *xy, size_t np, int closed)
         b[i].i = i;
     }
     qsort(b, ns, sizeof *b, by_x0);
-    int found = 0;
-    for (size_t a = 0; a < ns && !found; a++) {
+    size_t cap = 0, *out = NULL;
+    for (size_t a = 0; a < ns && !(first && *cnt); a++) {
         const size_t i = b[a].i;
         const double *p = xy + 2 * i, *q = xy + 2 * ((i + 1) % np);
-        for (size_t c = a + 1; c < ns && b[c].x0 <= b[a].x1 && !found; c++) {
+        for (size_t c = a + 1; c < ns && b[c].x0 <= b[a].x1 && !(first && *cnt); c++) {
             const size_t j = b[c].i, d = i > j ? i - j : j - i;
             if (d <= 1 || (closed && d == ns - 1)) continue;   /* neighbours share a point */
             const double *r = xy + 2 * j, *s = xy + 2 * ((j + 1) % np);
             if (fmax(p[1], q[1]) < fmin(r[1], s[1]) || fmax(r[1], s[1]) < fmin(p[1], q[1])) continue;
-            found = orient(p, q, r) * orient(p, q, s) < 0.0 && orient(r, s, p) * orient(r, s, q) < 0.0;
+            if (!(orient(p, q, r) * orient(p, q, s) < 0.0 && orient(r, s, p) * orient(r, s, q) < 0.0)) continue;
+            if (pairs) {
+                if (*cnt == cap) {
+                    cap = cap ? 2 * cap : 16;
+                    size_t *t = realloc(out, 2 * cap * sizeof *t);
+                    if (!t) { free(out); free(b); *cnt = 0; return -1; }
+                    out = t;
+                }
+                out[2 * *cnt] = i < j ? i : j;
+                out[2 * *cnt + 1] = i < j ? j : i;
+            }
+            (*cnt)++;
         }
     }
     free(b);
-    return found;
+    if (pairs) *pairs = out;
+    return 0;
+}
+
+/* The polyline xy crosses itself (sweep_crossings): 1, 0, or EL_ENOMEM as -1. */
+static int polyline_crosses(const double *xy, size_t np, int closed)
+{
+    size_t cnt;
+    return sweep_crossings(xy, np, closed, 1, NULL, &cnt) ? -1 : cnt > 0;
 }
 
 /* No crossing possible (see above): every piece turns by less than pi / 2 from either
@@ -95,51 +118,6 @@ static int tame(const el_smooth_params *p, size_t m, const double *knots, int cl
     free(b);
     free(y);
     return ok;
-}
-
-/* All proper crossings of the polyline xy as polyline_crosses finds one: *np_out pairs
- * (i, j) of segment indices in pairs (malloc'ed, the caller frees; NULL for none);
- * 0 or EL_ENOMEM as -1. */
-static int polyline_crossings(const double *xy, size_t np, int closed, size_t **pairs, size_t *np_out)
-{
-    *pairs = NULL;
-    *np_out = 0;
-    const size_t ns = closed ? np : np - 1;
-    if (ns < 3) return 0;
-    seg_box *b = malloc(ns * sizeof *b);
-    if (!b) return -1;
-    for (size_t i = 0; i < ns; i++) {
-        const double xa = xy[2 * i], xb = xy[2 * ((i + 1) % np)];
-        b[i].x0 = fmin(xa, xb);
-        b[i].x1 = fmax(xa, xb);
-        b[i].i = i;
-    }
-    qsort(b, ns, sizeof *b, by_x0);
-    size_t cap = 0, cnt = 0, *out = NULL;
-    for (size_t a = 0; a < ns; a++) {
-        const size_t i = b[a].i;
-        const double *p = xy + 2 * i, *q = xy + 2 * ((i + 1) % np);
-        for (size_t c = a + 1; c < ns && b[c].x0 <= b[a].x1; c++) {
-            const size_t j = b[c].i, d = i > j ? i - j : j - i;
-            if (d <= 1 || (closed && d == ns - 1)) continue;
-            const double *r = xy + 2 * j, *s = xy + 2 * ((j + 1) % np);
-            if (fmax(p[1], q[1]) < fmin(r[1], s[1]) || fmax(r[1], s[1]) < fmin(p[1], q[1])) continue;
-            if (!(orient(p, q, r) * orient(p, q, s) < 0.0 && orient(r, s, p) * orient(r, s, q) < 0.0)) continue;
-            if (cnt == cap) {
-                cap = cap ? 2 * cap : 16;
-                size_t *t = realloc(out, 2 * cap * sizeof *t);
-                if (!t) { free(out); free(b); return -1; }
-                out = t;
-            }
-            out[2 * cnt] = i < j ? i : j;
-            out[2 * cnt + 1] = i < j ? j : i;
-            cnt++;
-        }
-    }
-    free(b);
-    *pairs = out;
-    *np_out = cnt;
-    return 0;
 }
 
 /* The knots of the m pieces (m + 1 points, the last the end of the last piece, also in
@@ -221,13 +199,13 @@ int el__spline_loops(const el_smooth_params *p, size_t m, int closed)
     double *knots = knots_of(p, m, end, &bad);
     if (!knots) return bad ? 0 : -1;
     size_t *pp = NULL, npp = 0;
-    if (polyline_crossings(knots, closed ? m : m + 1, closed, &pp, &npp)) { free(knots); return -1; }
+    if (sweep_crossings(knots, closed ? m : m + 1, closed, 0, &pp, &npp)) { free(knots); return -1; }
     if (npp == 0) { free(knots); return el__spline_crosses(p, m, closed); }   /* as it was */
     /* the polygon crosses itself: the curve's crossings, in pieces, against the polygon's */
     size_t *cnt = malloc(m * sizeof *cnt), k = 0, *sp = NULL, nsp = 0;
     double *xy = cnt ? sampled(p, m, closed, knots, end, cnt, &k, &bad) : NULL;
     int loops = xy ? 0 : bad ? 0 : -1;
-    if (xy && polyline_crossings(xy, k, closed, &sp, &nsp)) loops = -1;
+    if (xy && sweep_crossings(xy, k, closed, 0, &sp, &nsp)) loops = -1;
     if (xy && loops == 0 && nsp > 0) {
         size_t *piece = malloc(k * sizeof *piece);   /* the piece of each sample segment */
         if (!piece) loops = -1;
