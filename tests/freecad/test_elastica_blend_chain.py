@@ -4,7 +4,6 @@ every solution gives a shape joining the edges tangentially, is described, store
 and survives save / reopen."""
 import json
 import math
-import os
 import unittest
 
 import FreeCAD as App

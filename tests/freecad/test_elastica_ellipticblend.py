@@ -7,7 +7,6 @@ said once in the report view, cleared.
 The shape is checked against the library's own blending curve: through the four
 points in interpolate mode, from q0 to q3 with the picked control points otherwise."""
 import math
-import os
 import warnings
 
 import FreeCAD as App

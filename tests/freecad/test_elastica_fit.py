@@ -583,7 +583,6 @@ class FitConstraintTest(S.DocTest):
     doc_name = "ElasticaFitConstraints"
 
     def setUp(self):
-        import numpy as np
         super().setUp()
         self._data(1.0)
 

@@ -2,7 +2,6 @@
 curve with an inflection, one curvature-continuous quadratic B-spline per piece,
 ending exactly on the source; its reported deviation; parametric updates;
 save / reopen; bad input (a message, the document unchanged)."""
-import os
 
 import FreeCAD as App
 import Part

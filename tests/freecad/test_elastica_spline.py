@@ -11,7 +11,7 @@ import FreeCAD as App
 import Part
 
 import elastica_samples as S
-from elastica_samples import curvature_vector, el, sides
+from elastica_samples import curvature_vector, sides
 from freecad.elastica import commands as C
 from freecad.elastica import spline as Sp
 

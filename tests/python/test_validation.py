@@ -2,7 +2,6 @@
 ElasticaError subclass) at every public entry, never TypeError, OverflowError,
 AttributeError or a silent conversion; complex, datetime and float16 input is
 refused; requests past the C library's limits say what is possible."""
-import datetime
 from decimal import Decimal
 from fractions import Fraction
 

@@ -8,7 +8,6 @@ edges; writing it into a sketch is a copy."""
 from __future__ import annotations
 
 import json
-import math
 
 import FreeCAD as App
 import Part
