@@ -131,6 +131,19 @@ static int rank(el__spchain *w, int st)
     return c < 0 ? -1 : 3 - c;
 }
 
+/* The spline in w (length L, on side of the bracket) kept as its side's fair rung where it
+ * does not cross itself (FAIR_RUNGS): el__chain_crosses's answer, -1 out of memory */
+static int keep_if_fair(el__spchain *w, double L, int side, el__spsnap fair[2], double flen[2], int hfair[2])
+{
+    const int c = el__chain_crosses(w);
+    if (c == 0) {
+        el__snap_save(w, &fair[side]);
+        flen[side] = L;
+        hfair[side] = 1;
+    }
+    return c;
+}
+
 /*
  * FAIR_RUNGS: the ways from the rungs that do not cross themselves (fair[e], hfair[e]; the
  * other end: its side's fair rung, else its rung), where the ways from the bracket's own
@@ -225,14 +238,9 @@ int el__spline_length_by_tension(el__spchain *w, int max_steps, double Lt, int l
             const int side = L >= Lt ? 0 : 1;
             met[0] = fmin(met[0], L);
             met[1] = fmax(met[1], L);
-            const int c = el__chain_crosses(w);
+            const int c = keep_if_fair(w, L, side, fair, flen, hfair);
             if (c < 0) { free(buf); return EL_ENOMEM; }
-            if (!c) {
-                met[2] = fmax(met[2], L);
-                el__snap_save(w, &fair[side]);
-                flen[side] = L;
-                hfair[side] = 1;
-            }
+            if (!c) met[2] = fmax(met[2], L);
             el__snap_save(w, &end[side]);   /* the last on its side: the nearest to the other */
             len[side] = L;
             have[side] = 1;
@@ -282,9 +290,7 @@ int el__spline_length_by_tension(el__spchain *w, int max_steps, double Lt, int l
             const int side = L >= Lt ? 0 : 1;
             met[0] = fmin(met[0], L);
             if (side == 0 && L > len[0]) break;   /* not shorter: not the family's way */
-            const int c = el__chain_crosses(w);
-            if (c < 0) { free(buf); return EL_ENOMEM; }
-            if (!c) { el__snap_save(w, &fair[side]); flen[side] = L; hfair[side] = 1; }
+            if (keep_if_fair(w, L, side, fair, flen, hfair) < 0) { free(buf); return EL_ENOMEM; }
             el__snap_save(w, &end[side]);
             len[side] = L;
             have[side] = 1;
