@@ -474,11 +474,7 @@ def comb_in_the_schema(doc, b):
     from freecad.elastica import comb as Cm, taskpanels as T
     comb = Cm.make(doc, b)
     doc.recompute()
-    prefs = App.ParamGet("User parameter:BaseApp/Preferences/Units")
-    old = prefs.GetInt("UserSchema", 0)
-    prefs.SetInt("UserSchema", 3)
-    App.Units.setSchema(3)
-    try:
+    with G.user_schema(3):
         Gui.ActiveDocument.setEdit(comb.Name)
         G.wait(300)
         panel = T.CURRENT[0]
@@ -489,9 +485,6 @@ def comb_in_the_schema(doc, b):
         G.screenshot("gui_comb_imperial.png")
         panel.reject()
         G.pump()
-    finally:
-        prefs.SetInt("UserSchema", old)
-        App.Units.setSchema(old)
     doc.removeObject(comb.Name)
 
 

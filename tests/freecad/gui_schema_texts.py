@@ -21,11 +21,7 @@ G = None            # the gui_smoke module (check, wait, screenshot, open_panel,
 def ellblend_loop_in_the_schema(doc):
     """Points whose interpolation at m = 0.52 loops, the panel open under Imperial decimal:
     its warning line says the loop's place and size in inches."""
-    prefs = App.ParamGet("User parameter:BaseApp/Preferences/Units")
-    old = prefs.GetInt("UserSchema", 0)
-    prefs.SetInt("UserSchema", 3)
-    App.Units.setSchema(3)
-    try:
+    with G.user_schema(3):
         sk = S.points_sketch(doc, [(0.0, 0.0), (30.0, 80.0), (70.0, 90.0), (100.0, 0.0)],
                              "Looping")
         panel = G.open_panel(doc, "Elastica_EllipticBlend", [(sk, "")], "Elliptic blend curve")
@@ -43,20 +39,13 @@ def ellblend_loop_in_the_schema(doc):
                 f"the loop warning in inches: {said!r}")
         panel.reject()
         G.pump()
-    finally:
-        prefs.SetInt("UserSchema", old)
-        App.Units.setSchema(old)
 
 
 def fit_result_in_plain_decimals(doc):
     """The sample S curve's 40 points fitted under Imperial decimal: the result line's
     lengths (rms 0.0000442 in: below 1e-4 in, where '%.3g' turns to an exponent) in plain
     decimals, as the Tolerance box beside them ('0.0000394 in')."""
-    prefs = App.ParamGet("User parameter:BaseApp/Preferences/Units")
-    old = prefs.GetInt("UserSchema", 0)
-    prefs.SetInt("UserSchema", 3)
-    App.Units.setSchema(3)
-    try:
+    with G.user_schema(3):
         sk = S.points_sketch(doc, S.keyline_xy(40)[0], "Keyline")
         panel = G.open_panel(doc, "Elastica_Fit", [(sk, "")], "Fit elastica")
         G.wait()
@@ -71,9 +60,6 @@ def fit_result_in_plain_decimals(doc):
                 f"Tolerance {panel.tol.text()!r}")
         panel.reject()
         G.pump()
-    finally:
-        prefs.SetInt("UserSchema", old)
-        App.Units.setSchema(old)
 
 
 def run_all(smoke):

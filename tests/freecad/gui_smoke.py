@@ -33,6 +33,7 @@ import os
 import sys
 import time
 import traceback
+from contextlib import contextmanager
 
 import FreeCAD as App
 import FreeCADGui as Gui
@@ -49,6 +50,21 @@ def check(cond, what):
     lines.append(("ok   " if cond else "FAIL ") + what)
     if not cond:
         raise AssertionError(what)
+
+
+@contextmanager
+def user_schema(schema):
+    """The unit schema ``schema`` as a user sets it (the preference the panels read and the
+    running schema), the user's restored after the block."""
+    prefs = App.ParamGet("User parameter:BaseApp/Preferences/Units")
+    old = prefs.GetInt("UserSchema", 0)
+    prefs.SetInt("UserSchema", schema)
+    App.Units.setSchema(schema)
+    try:
+        yield
+    finally:
+        prefs.SetInt("UserSchema", old)
+        App.Units.setSchema(old)
 
 
 def pump(n=5):
