@@ -224,21 +224,22 @@ static void isolate8(isolation *w, double a, double b, const double *bc, double 
 static inline void isolate_deg(isolation *w, const int n, double a, double b, const double *bc, double err,
                                int depth)
 {
-    int changes = 0, unsure = 0, last = 0, cross = 0;
-    double bmax = 0.0;
     if (w->full) return;
-    /* without branches (the signs follow no pattern a predictor could learn): s and last
-     * in {-1, 0, 1}, a change where both are nonzero and differ, s last < 0 */
+    /* the signs as bit masks, without branches (they follow no pattern a predictor could
+     * learn): pos, neg, bit k for bc[k] > err, < -err; unsure: a sign rounding leaves open
+     * (neither bit). With every sign sure, bit j of pos ^ (pos >> 1) is a change between
+     * k = j and j + 1: none (return), one (cross, the k after it), or more (halve). */
+    unsigned pos = 0, neg = 0;
     for (int k = 0; k <= n; k++) {
-        const int s = (bc[k] > err) - (bc[k] < -err), ch = s * last < 0;
-        unsure |= s == 0;
-        changes += ch;
-        cross = ch ? k : cross;
-        last = s ? s : last;
-        bmax = fabs(bc[k]) > bmax ? fabs(bc[k]) : bmax;
+        pos |= (unsigned)(bc[k] > err) << k;
+        neg |= (unsigned)(bc[k] < -err) << k;
     }
-    if (!unsure && changes == 0) return;
-    if (!unsure && changes == 1) {
+    const unsigned all = (2u << n) - 1u, ch = (pos ^ (pos >> 1)) & (all >> 1);
+    const int unsure = (pos | neg) != all;
+    if (!unsure && ch == 0) return;
+    if (!unsure && (ch & (ch - 1u)) == 0) {
+        int cross = 1;
+        for (unsigned c = ch; !(c & 1u); c >>= 1) cross++;
         const double t = (cross - bc[cross] / (bc[cross] - bc[cross - 1])) / n;
         add_root(w, bracketed_root(w->c, n, a, b, bc[0], a + t * (b - a), w->tol));
         return;
@@ -251,7 +252,8 @@ static inline void isolate_deg(isolation *w, const int n, double a, double b, co
             if (w->nroots == 0 || r[i] > w->roots[w->nroots - 1]) add_root(w, r[i]);
         return;
     }
-    double bl[9], br[9];
+    double bl[9], br[9], bmax = 0.0;
+    for (int k = 0; k <= n; k++) bmax = fabs(bc[k]) > bmax ? fabs(bc[k]) : bmax;
     bernstein_halves(bc, n, bmax, bl, br, &err);
     const double m = 0.5 * (a + b);
     if (n == 8) {
