@@ -124,7 +124,8 @@ static void half_angle(double S, double C, double iR, double *sh, double *ch)
 
 double el__hermite_wrap_pi(double a) /* into (-pi, pi] */
 {
-    a = fmod(a, 2.0 * M_PI);
+    /* fmod is exact: below 2 pi in size it returns a itself, so the call only above */
+    if (!(fabs(a) < 2.0 * M_PI)) a = fmod(a, 2.0 * M_PI);
     if (a <= -M_PI) a += 2.0 * M_PI;
     if (a > M_PI) a -= 2.0 * M_PI;
     return a;
