@@ -9,10 +9,13 @@ by the GUI smoke test (gui_smoke.py calls run_all): FreeCAD's own panels
 - Delete during an edit commits the panel's transaction (every command that opens one
   does): Cancel still reverts the edit (it kept it);
 - 'Keep the parametric feature' cannot be unchecked without a Copy into sketch (OK
-  kept nothing and left an Undo step that did nothing).
+  kept nothing and left an Undo step that did nothing);
+- Cancel on the panel of a feature in error leaves the Undo stack as it was (it left
+  an 'Edit <Label>' step that undid nothing).
 
 Screenshots: gui_close_with_panel.png (the task view empty after the close),
-gui_delete_during_panel.png, gui_keep_needs_copy.png (the Keep box disabled)."""
+gui_delete_during_panel.png, gui_keep_needs_copy.png (the Keep box disabled),
+gui_failed_blend_panel.png (a failed blend's panel: its error)."""
 import FreeCAD as App
 import FreeCADGui as Gui
 from PySide import QtCore, QtGui
@@ -170,9 +173,54 @@ def keep_needs_a_copy():
     App.closeDocument(doc.Name)
 
 
+def cancel_on_failed_feature():
+    """Cancel, touching nothing, on the panel of a healthy blend and of one a sketch edit
+    broke: the Undo stack as before, and the user's one Undo reverts that edit. The failed
+    blend's recompute after the abort left an 'Edit <Label>' step that undid nothing
+    visible (QA16 F3: FreeCAD keeps an untouched transaction's name pending)."""
+    from freecad.elastica import blend as B
+    doc = S.new_doc("ElasticaCancelFailed")
+    sk = S.two_lines_sketch(doc)
+    doc.openTransaction("Elastic blend")
+    b = B.make(doc, (sk, "Edge1"), (sk, "Edge2"))
+    doc.commitTransaction()
+    doc.recompute()
+    Gui.SendMsgToActiveView("ViewFit")
+    undo0 = list(doc.UndoNames)
+    G.double_click(b).reject()
+    G.pump()
+    status0 = b.Status
+    G.check(not status0.startswith("error") and list(doc.UndoNames) == undo0,
+            f"Cancel on a healthy blend's panel leaves the Undo stack ({doc.UndoNames})")
+    doc.openTransaction("Move line")
+    sk.movePoint(1, 1, App.Vector(40, 0, 0))      # onto the first line's end: no blend
+    doc.commitTransaction()
+    doc.recompute()
+    undo1 = list(doc.UndoNames)
+    panel = G.double_click(b)
+    G.wait()
+    G.screenshot("gui_failed_blend_panel.png")
+    failed = b.Status.startswith("error") and "coincide" in b.Status
+    panel.reject()
+    G.pump()
+    G.check(failed and list(doc.UndoNames) == undo1 == ["Move line"] + undo0
+            and not doc.HasPendingTransaction and App.getActiveTransaction() is None,
+            f"Cancel on a failed blend's panel leaves the Undo stack ({doc.UndoNames} vs "
+            f"{undo1}; {b.Status[:60]})")
+    Gui.runCommand("Std_Undo")
+    G.pump()
+    doc.recompute()
+    start = sk.getPoint(1, 1)
+    G.check(b.Status == status0 and (start - App.Vector(80, 25, 0)).Length < 1e-9
+            and list(doc.UndoNames) == undo0,
+            f"then one Undo reverts the sketch edit (blend {b.Status[:40]}, line from {start})")
+    App.closeDocument(doc.Name)
+
+
 def run_all(smoke):
     global G
     G = smoke
+    cancel_on_failed_feature()
     delete_during_new_panel()
     delete_during_edit()
     keep_needs_a_copy()

@@ -743,6 +743,11 @@ class Panel:
             pass
         name = self.obj.Name
         self.doc.abortTransaction()
+        # an edit that changed nothing has no transaction to abort, and FreeCAD keeps its name
+        # pending (App.getActiveTransaction): a failed feature's recompute below became an
+        # Undo step 'Edit <Label>' that undid nothing visible (QA16 F3)
+        if (App.getActiveTransaction() or ("",))[0] == self.txn:
+            App.closeActiveTransaction(True)
         # the pieces of the edit another command committed (committed_by_other), while they
         # are the last Undo steps
         while self.orphans and doc_undo_top(self.doc) == self.txn:
