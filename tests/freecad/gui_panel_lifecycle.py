@@ -200,7 +200,7 @@ def cancel_on_failed_feature():
     panel = G.double_click(b)
     G.wait()
     G.screenshot("gui_failed_blend_panel.png")
-    failed = b.Status.startswith("error") and "coincide" in b.Status
+    failed = b.Status.startswith("error") and "coincide" in G.error_line(panel)
     panel.reject()
     G.pump()
     G.check(failed and list(doc.UndoNames) == undo1 == ["Move line"] + undo0

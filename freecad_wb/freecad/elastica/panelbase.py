@@ -21,6 +21,7 @@ from .units import (box_text, feet_inches, length_text, length_unit, say, tensio
 CURRENT = []        # the open panel, if any (scripts and the GUI smoke test drive it)
 DELAY_MS = 150      # recompute after this pause in editing
 WARNING_RGB = "#b36200"   # the amber of FreeCAD's report-view warnings, dark enough to read
+ERROR_RGB = "#b00"
 
 
 def _sketches(doc, exclude=()):
@@ -254,6 +255,7 @@ class Panel:
     title = ""
     icon_name = "elastica"
     gone = ""           # why the panel lost its feature or its transaction (``lost``)
+    error = None        # the error line at the top of the first box (``box``)
     _note = ""
 
     @property
@@ -312,6 +314,8 @@ class Panel:
         w.setWindowIcon(QtGui.QIcon(icon(self.icon_name)))
         grid = QtGui.QGridLayout(w)
         grid.setColumnStretch(1, 1)
+        if not self.form:   # a failed solve says why first, as Sketcher's solver messages
+            self.error = self.message_row(grid, QtGui.QStyle.SP_MessageBoxCritical, ERROR_RGB)
         self.form.append(w)
         return grid
 
@@ -332,23 +336,27 @@ class Panel:
     def warning_row(self, grid):
         """A warning line (hidden while there is nothing to say): the standard warning
         icon and amber text, as FreeCAD's dialogs and report view show warnings."""
+        self.warning = self.message_row(grid, QtGui.QStyle.SP_MessageBoxWarning, WARNING_RGB)
+        return self.warning[0]
+
+    def message_row(self, grid, sign_icon, rgb):
+        """A hidden row of its own: a standard icon and wrapped text in ``rgb``; (row, text)."""
         w = QtGui.QWidget()
         lay = QtGui.QHBoxLayout(w)
         lay.setContentsMargins(0, 0, 0, 0)
         sign = QtGui.QLabel()
         size = w.style().pixelMetric(QtGui.QStyle.PM_SmallIconSize)
-        sign.setPixmap(w.style().standardIcon(QtGui.QStyle.SP_MessageBoxWarning).pixmap(size))
+        sign.setPixmap(w.style().standardIcon(sign_icon).pixmap(size))
         sign.setAlignment(QtCore.Qt.AlignTop)
         text = QtGui.QLabel()
         text.setWordWrap(True)
         text.setTextInteractionFlags(QtCore.Qt.TextSelectableByMouse)
-        text.setStyleSheet(f"color: {WARNING_RGB}")
+        text.setStyleSheet(f"color: {rgb}")
         lay.addWidget(sign)
         lay.addWidget(text, 1)
         self.row(grid, "", w)
         w.setVisible(False)
-        self.warning = (w, text)
-        return w
+        return w, text
 
     def warnings(self):
         """What the warning line says (a list of sentences; none: hidden): the command's
@@ -623,12 +631,13 @@ class Panel:
         show_box(box)
 
     def refresh(self):
-        """Result text (the error in red) and which fields apply."""
+        """Result text (an error on the error line, at the top) and which fields apply."""
         o = self.obj
-        if o.Status.startswith("error"):
-            self.result.setText(f"<b style='color:#b00'>{said_now(o, 'Status')}</b>")
-        else:
-            self.result.setText(self.result_text())
+        failed = o.Status.startswith("error")
+        if self.error is not None:
+            self.error[1].setText(said_now(o, "Status") if failed else "")
+            self.error[0].setVisible(failed)
+        self.result.setText("" if failed else self.result_text())
         if hasattr(self, "sketch"):
             self.offer_sketches()
         if self.warning is not None:
