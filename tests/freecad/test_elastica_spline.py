@@ -431,6 +431,62 @@ class SplineTest(S.DocTest):
                         1e-6 * s.MaxCurvature)
         self.assertAlmostEqual(sum(s.DuckForces, App.Vector()).Length, 0.0, delta=1e-15)
 
+    def test_a_wire_closed_later_closes_the_spline(self):
+        """A spline on an open Draft wire follows the wire's Closed, as the command does at
+        creation: the closed batten the command gives on the closed wire, then the open one
+        again. It kept Closed off: an open batten through the first point twice (QA16 P5)."""
+        import Draft
+        ring = [(40 * math.cos(a), 25 * math.sin(a)) for a in
+                [2 * math.pi * i / 7 for i in range(7)]]
+        wire = Draft.make_wire(self.global_ducks(ring), closed=False, face=False)
+        self.doc.recompute()
+        s = self.spline([(wire, [])])
+        self.assertFalse(s.Closed)
+        open_length = s.Shape.Length
+        wire.Closed = True
+        self.doc.recompute()
+        self.assertTrue(s.Closed and s.Status.startswith("ok") and
+                        "wire is closed: the spline follows it" in s.Status, s.Status)
+        made = C.spline_sources([(wire, [])], open_panel=False)    # the command's
+        self.doc.recompute()
+        self.assertTrue(made.Closed and made.Tension == s.Tension == 0.0, made.Status)
+        self.assertEqual(s.Shape.Length, made.Shape.Length)
+        self.assertEqual(len(s.Ducks), 7)
+        wire.Closed = False
+        self.doc.recompute()
+        self.assertTrue(not s.Closed and "wire is open" in s.Status, s.Status)
+        self.assertEqual(s.Shape.Length, open_length)
+
+    def test_an_open_batten_through_a_closed_wire_says_its_corner(self):
+        """Closed turned off on a closed wire's spline stays off (the designer's), and the
+        open batten's corner where its ends meet is a warning with its angle, measured on
+        the shape; where none passes, the error says the points close (QA16 P5: 'ok', no
+        warning, a 71.5 deg corner; or 'slides off its ducks' alone)."""
+        import Draft
+        oval = [(60 * math.cos(t), 35 * math.sin(t)) for t in
+                [i * 2 * math.pi / 6 + 0.1 for i in range(6)]]
+        wire = Draft.make_wire(self.global_ducks(oval), closed=True, face=False)
+        self.doc.recompute()
+        s = self.spline([(wire, [])])
+        self.assertTrue(s.Closed)
+        s.Closed = False
+        self.doc.recompute()
+        s.touch()
+        self.doc.recompute()
+        self.assertFalse(s.Closed)
+        said = [w for w in s.Warnings if "end where they start" in w and "set Closed" in w]
+        self.assertEqual(len(said), 1, list(s.Warnings))
+        e = s.Shape.Edges[0]
+        self.assertLess((e.valueAt(e.FirstParameter) - e.valueAt(e.LastParameter)).Length, 1e-9)
+        corner = math.degrees(e.tangentAt(e.FirstParameter).getAngle(e.tangentAt(e.LastParameter)))
+        self.assertIn(f"at a {corner:.3g} deg corner", said[0])
+        self.assertGreater(corner, 1.0)
+        zigzag = [(0, 0), (30, 12), (60, 40), (75, 30), (90, 5), (120, -10), (150, -12)]
+        wire.Points = self.global_ducks(zigzag + zigzag[:1])   # no open batten passes
+        self.doc.recompute()
+        self.assertTrue(s.Status.startswith("error: the points end where they start") and
+                        "set Closed" in s.Status, s.Status)
+
     # ------------------------------------------------------------------ sources
 
     def test_every_kind_of_source(self):

@@ -292,7 +292,7 @@ def spline_sources(sources, open_panel=True, **options):
         pts, plane = src_mod.gather_vertices(sources, spline.DUCKS_NEED, edge_means_object=True,
                                              curve_ordered=True)
         if "Closed" not in opts:
-            opts["Closed"] = len(pts) > 3 and (pts[0] - pts[-1]).Length < 1e-9
+            opts["Closed"] = spline.ends_at_start(pts)     # the feature follows it after
         degree = opts.get("Degree", spline.BSPLINE_DEGREE)
         try:
             spline.spline_core(pts, plane, opts.get("Mode", "tension"), opts.get("Tension", 0.0),

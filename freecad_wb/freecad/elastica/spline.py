@@ -143,6 +143,15 @@ def _solve(xy, mode, value, closed, start, end):
     raise NoSpline(failure)
 
 
+def ends_at_start(points):
+    """Whether more than three 3D points end where they start: a closed wire's vertices
+    (its first again), or picks back to the first."""
+    if len(points) <= 3:
+        return False
+    extent = max((a - points[0]).Length for a in points)
+    return (points[0] - points[-1]).Length <= 1e-9 * (1.0 + extent)
+
+
 def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, closed=False,
                 start=None, end=None, tol=1e-3, degree=BSPLINE_DEGREE):
     """The elastic spline through 3D ``points`` (in ``plane``, a sketch's placement,
@@ -163,7 +172,8 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
     extent = max(((a - pts[0]).Length for a in pts), default=0.0)
     if len(pts) > 1 and not extent > 0.0:        # all of them, counted before the drop below
         raise InputProblem(f"the {len(pts)} points coincide")
-    if closed and len(pts) > 3 and (pts[0] - pts[-1]).Length <= 1e-9 * (1.0 + extent):
+    returns = ends_at_start(pts)
+    if closed and returns:
         pts = pts[:-1]                     # a closed wire's first vertex, repeated
     need = 3 if closed else 2
     if len(pts) < need:
@@ -229,9 +239,23 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
         elif value <= polygon:
             raise InputProblem(f"Length = {value:.6g} mm is not longer than the polygon through "
                                f"the points ({polygon:.6g} mm): any length above it is possible")
-    sp, note = _solve(xy, mode, value, closed, *specs)
+    returns = returns and not closed      # an open batten through the first point twice
+    try:
+        sp, note = _solve(xy, mode, value, closed, *specs)
+    except NoSpline as exc:
+        if returns:
+            raise NoSpline(f"the points end where they start (a closed wire) but Closed is off, "
+                           f"so an open batten must pass the first point twice: {exc}; or set "
+                           "Closed for a closed batten") from None
+        raise
     if note:
         notes.append(note)
+    if returns:                           # its two ends meet at a corner: never silent
+        a = sp.angle(2)
+        corner = abs(math.degrees(math.remainder(float(a[-1] - a[0]), 2 * math.pi)))
+        cautions.append(f"the points end where they start (a closed wire) but Closed is off: "
+                        f"the open batten's ends meet at the first point at a {corner:.3g} deg "
+                        "corner; set Closed for a closed batten through them")
     if sp.loops:
         where = sp.crossing_text()   # the places, as the library's LoopWarning says them
         cautions.append("the batten loops away from its points (it crosses itself, or is longer "
@@ -331,8 +355,12 @@ class SplineProxy(FeatureProxy):
                    "Total length in length mode, longer than the polygon through the "
                    "points; 0 = the free batten's length", 0.0)
         add_property(obj, "App::PropertyBool", "Closed", "Spline",
-                     "A closed batten through the points (the end conditions do not apply)",
-                     False)
+                     "A closed batten through the points (the end conditions do not apply); "
+                     "follows the points' wire when it is closed or opened", False)
+        add_property(obj, "App::PropertyBool", "SourceClosed", "Spline",
+                     "Whether the points ended where they start (a closed wire's) at the last "
+                     "recompute: Closed follows a change of it (follow_source)", obj.Closed)
+        obj.setEditorMode("SourceClosed", 2)
         for end, which in (("Start", "first"), ("End", "last")):
             add_enum(obj, f"{end}Condition", "Spline",
                      f"At the {which} point: natural (curvature 0, a free end), tangent to "
@@ -412,10 +440,35 @@ class SplineProxy(FeatureProxy):
         pts, plane = gather_vertices(obj.Points, DUCKS_NEED, edge_means_object=True,
                                      curve_ordered=True, link="Points", element=element,
                                      said=said)
-        r = spline_core(pts, plane, obj.Mode, obj.Tension, float(obj.Length), obj.Closed,
-                        *self.end_specs(obj), tol=float(obj.Tolerance), degree=obj.Degree)
+        followed = self.follow_source(obj, pts)
+        try:
+            r = spline_core(pts, plane, obj.Mode, obj.Tension, float(obj.Length), obj.Closed,
+                            *self.end_specs(obj), tol=float(obj.Tolerance), degree=obj.Degree)
+        except InputProblem as exc:
+            if followed:
+                raise type(exc)(f"{followed}: {exc}") from None
+            raise
         r["warnings"] = said + r["warnings"]
+        if followed:                  # said once, as it happens (an error says it in its line)
+            App.Console.PrintWarning(f"Elastica {obj.Label}: {followed}\n")
+            r["notes"].insert(0, followed)
         return r
+
+    @staticmethod
+    def follow_source(obj, points):
+        """Closed follows the points' wire, as the command sets it for a closed one: where
+        they have come to end where they start (the wire closed) or no longer (opened) since
+        the last recompute, Closed is set to match (a closed Draft wire gave an open batten
+        through its first point twice: a corner, or no batten). The note saying so, or ''."""
+        returns = ends_at_start(points)
+        if returns == obj.SourceClosed:
+            return ""
+        obj.SourceClosed = returns
+        if obj.Closed == returns:
+            return ""
+        obj.Closed = returns
+        return (f"its points' wire is {'closed' if returns else 'open'}: the spline follows "
+                f"it (Closed = {returns})")
 
     def apply(self, obj, r):
         sp, plc, bs = r["spline"], r["placement"], r["bspline"]
@@ -469,4 +522,5 @@ def make(doc, sources=(), **props):
                        Points=[(o, tuple(s) or ("",)) for o, s in sources], **props)
 
 
-__all__ = ["SplineProxy", "NoSpline", "spline_core", "starting_tension", "make", "duck_forces", "MODES", "END_CONDITIONS"]
+__all__ = ["SplineProxy", "NoSpline", "spline_core", "starting_tension", "make", "duck_forces",
+           "ends_at_start", "MODES", "END_CONDITIONS"]
