@@ -57,6 +57,22 @@ class InputMessageTest(S.DocTest):
         msg = self.rejected(C.ellblend_sources, [(circ, [])])
         self.assertIn("Circle holds a circle, without points to go through: select four", msg)
 
+    def test_a_command_failing_before_any_change_leaves_no_undo_step(self):
+        # abortTransaction has nothing to abort then and FreeCAD kept the name pending: the
+        # user's next change became an Undo step named after the failed command
+        self.doc.UndoMode = 1
+        box = self.doc.addObject("App::FeaturePython", "Box")
+        box.addProperty("App::PropertyFloat", "X")
+        del C.MESSAGES[:]
+        self.assertIsNone(C._create(self.doc, "Elastic spline", "raise RuntimeError('boom')"))
+        self.assertIn("Elastic spline failed: RuntimeError: boom", C.MESSAGES[0])
+        self.assertFalse(App.getActiveTransaction())
+        self.doc.openTransaction("Set X")
+        box.X = 5.0
+        self.doc.commitTransaction()
+        self.assertEqual(self.doc.UndoNames[:1], ["Set X"])
+        self.assertNotIn("Elastic spline", self.doc.UndoNames)
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -9,7 +9,7 @@ import FreeCAD as App
 import FreeCADGui as Gui
 
 from . import defaults, icon, library_problem
-from .proxy import InputProblem, keep_note
+from .proxy import InputProblem, abort_transaction, keep_note
 from .units import say
 
 MESSAGES = []   # the last messages shown (tests read them); at most 50 kept
@@ -87,7 +87,7 @@ def _create(doc, title, code, keep_open=False):
     try:
         obj = _run(code)
     except Exception as exc:
-        doc.abortTransaction()
+        abort_transaction(doc, title)
         for o in list(doc.Objects):          # without undo (freecadcmd) abort keeps them
             if o.Name not in names:
                 doc.removeObject(o.Name)

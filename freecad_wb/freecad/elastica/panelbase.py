@@ -13,8 +13,8 @@ from PySide import QtCore, QtGui
 
 from . import icon
 from .geometry import is_sketch, sketch_curves
-from .proxy import (EDGE_ENDS, InputProblem, keep_note, kept_note, note_changes,
-                    said as said_now)
+from .proxy import (EDGE_ENDS, InputProblem, abort_transaction, keep_note, kept_note,
+                    note_changes, said as said_now)
 from .units import (box_text, feet_inches, length_text, length_unit, say, tension_unit,
                     unit_names, user_length)
 
@@ -751,12 +751,9 @@ class Panel:
         except Exception:  # already removed
             pass
         name = self.obj.Name
-        self.doc.abortTransaction()
-        # an edit that changed nothing has no transaction to abort, and FreeCAD keeps its name
-        # pending (App.getActiveTransaction): a failed feature's recompute below became an
-        # Undo step 'Edit <Label>' that undid nothing visible (QA16 F3)
-        if (App.getActiveTransaction() or ("",))[0] == self.txn:
-            App.closeActiveTransaction(True)
+        # closed even when the edit changed nothing: a failed feature's recompute below
+        # would become an Undo step 'Edit <Label>' that undid nothing visible (QA16 F3)
+        abort_transaction(self.doc, self.txn)
         # the pieces of the edit another command committed (committed_by_other), while they
         # are the last Undo steps
         while self.orphans and doc_undo_top(self.doc) == self.txn:

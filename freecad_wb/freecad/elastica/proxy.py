@@ -309,6 +309,16 @@ def kept_note(obj):
     return kept["note"] if kept["values"] == _note_values(obj) else ""
 
 
+def abort_transaction(doc, name):
+    """Abort ``doc``'s transaction ``name``. One that changed nothing has no document
+    transaction to abort and FreeCAD keeps its name pending (App.getActiveTransaction):
+    the next change, a recompute or the user's, would become an Undo step under it
+    (QA16 F3), so the pending name is closed too."""
+    doc.abortTransaction()
+    if (App.getActiveTransaction() or ("",))[0] == name:
+        App.closeActiveTransaction(True)
+
+
 def new_feature(doc, name, proxy_class, **props):
     """A Part::FeaturePython ``name`` in ``doc`` with a ``proxy_class`` proxy, its
     properties set in the order given, and its view provider (GUI)."""
