@@ -1243,7 +1243,10 @@ void el_spline_options_defaults(el_spline_options *opt);
  * loops says so (spline_fair.c); at sigma h^2 <= 40 on the mean chord first from tension
  * mode's fair solutions at 0.9, 1.1, 0.75, 1.3 x sigma, by continuation in sigma (spline_path.c
  * NEIGHBOURS: QA's ring77 looped at sigma h^2 95 .. 120 on its longest side and reached
- * nothing at 200, fair at 90 and 150). Before that: a solution of the direct Newton longer
+ * nothing at 200, fair at 90 and 150), and where nothing was reached, from those that loop
+ * (the least integral kappa^2 + sigma ds of those reaching sigma, loops 1: QA's rw15 at
+ * sigma h^2 2 .. 5, where every spline found loops). Every search judges "follows its ducks"
+ * by loops' own rule, a polygon that crosses itself included. Before that: a solution of the direct Newton longer
  * than 1.5 x the ducks' polygon (it winds away from them) is replaced by the free batten pulled
  * to that tension, or the batten brought down from sigma h^2 = 40, where that converges
  * shorter; where neither the direct Newton nor the batten from sigma h^2 = 40 converges,

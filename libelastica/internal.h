@@ -320,8 +320,8 @@ void el__chain_start_angles(el__spchain *w);
 /* Tangent angles of the taut batten (sigma -> infinity): the bisectors of the chords,
  * natural ends along their chord (spline_path.c's TAUT_START). */
 void el__chain_taut_angles(el__spchain *w);
-/* Longer than EL__SP_WANDER x its polygon, or crossing itself where the polygon does not
- * (spline_fair.c): not the batten through its ducks */
+/* Longer than EL__SP_WANDER x its polygon, or looping as el_spline_result's loops says
+ * (el__chain_crosses, spline_fair.c): not the batten through its ducks */
 int el__chain_wanders(const el__spchain *w);
 int el__chain_start_pieces(el__spchain *w);
 /* a - 2 pi j in [-pi, pi]. */
@@ -354,8 +354,10 @@ int el__spline_solve_near_line(el__spchain *w, int max_steps, double dir, double
  * the residual's units (th: its end angles, kmax: its max |kappa|, h: its chord). */
 double el__spline_separatrix_bound(const el_smooth_params *p, const double th[2], double kmax, double h);
 /* spline_fair.c: 1 when the curve of the m pieces (closed: the last back to the first)
- * crosses itself where the polygon of their knots does not, else 0; -1: no memory.
- * el__chain_crosses: the same for the chain w without guide ducks (internal units). */
+ * crosses itself where the polygon of their knots does not, else 0 (0 where that polygon
+ * crosses itself); -1: no memory.
+ * el__chain_crosses: el__spline_loops (below) for the chain w without guide ducks (internal
+ * units): the one rule the solver's searches and el_spline_result's loops share. */
 int el__spline_crosses(const el_smooth_params *p, size_t m, int closed);
 int el__chain_crosses(const el__spchain *w);
 /* 1 when the curve of the m pieces loops away from its knots (el_spline_result's loops):
@@ -364,8 +366,6 @@ int el__chain_crosses(const el__spchain *w);
  * and j +- 1 and, i and j not neighbours, no other of the curve's between i and j +- 1
  * or i +- 1 and j (a lens, not a loop); -1: no memory. */
 int el__spline_loops(const el_smooth_params *p, size_t m, int closed);
-/* The knots' polygon crosses itself (then el__chain_crosses says 0); -1 out of memory */
-int el__chain_polygon_crosses(const el__spchain *w);
 /* The tension solution in w (st: its status; target: its sigma, internal) where it
  * wanders or failed: the family from the taut batten followed to target (spline_fair.c). */
 int el__spline_refair(el__spchain *w, int max_steps, int st, double target);

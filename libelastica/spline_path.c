@@ -466,14 +466,21 @@ static int solve_tension_once(el__spchain *w, int max_steps, int final)
 
 /*
  * NEIGHBOURS (tension mode's own solve only, w->neighbours): where the tension solution
- * loops away from its ducks (loops_away) or none was reached, their polygon not crossing
- * itself, tension mode's fair solutions at nearby tensions (x NEAR_TENSIONS, each solved
- * as above) followed by continuation in sigma to the tension asked: the paths from the
- * taut batten and the free batten jump family or stop at folds between fair branches
- * (ring77: fair at sigma h^2 90 and 150 on the longest span, looping at 95 .. 120). The
- * first that reaches it without wandering is kept; else the first result, as it was.
+ * loops away from its ducks (loops_away) or none was reached, tension mode's fair
+ * solutions at nearby tensions (x NEAR_TENSIONS, each solved as above) followed by
+ * continuation in sigma to the tension asked: the paths from the taut batten and the free
+ * batten jump family or stop at folds between fair branches (ring77: fair at sigma h^2 90
+ * and 150 on the longest span, looping at 95 .. 120). The first that reaches it without
+ * looping is kept; else the first result, as it was. Where none was reached, the
+ * neighbours that loop are followed too (a second pass, so the first is as it was) and of
+ * those reaching it the least integral kappa^2 + sigma ds kept, loops and all
+ * (el_spline_result's loops says so): QA's
+ * rw15 (a polygon crossing itself 5 times) at sigma h^2 2 .. 5 on the longest span, where
+ * every spline found loops round duck 7 (fair ones only from ~18 up) and no path reached
+ * one.
  */
 static const double NEAR_TENSIONS[] = {0.9, 1.1, 0.75, 1.3};
+enum { NNEAR = sizeof NEAR_TENSIONS / sizeof NEAR_TENSIONS[0] };
 
 /* Loops away from its ducks as el_spline_result's loops says (crossing itself where its
  * polygon does not, or longer than 4 x it: a batten longer than EL__SP_WANDER x that is
@@ -485,6 +492,24 @@ static int loops_away(const el__spchain *w)
     return total_length(w) > 4.0 * poly ? 1 : el__chain_crosses(w);
 }
 
+/* The neighbour i solved (its loops_away into *l) and followed to target: EL_OK there,
+ * EL_ENOMEM, else EL_ENOCONV (loopy: follow one that loops too, else *l 1 stops) */
+static int from_neighbour(el__spchain *w, int max_steps, double target, size_t i, int loopy, int *l)
+{
+    w->near = 0;
+    w->lmode = 0;
+    w->sigma = target * NEAR_TENSIONS[i];
+    *l = 0;
+    const int sn = solve_tension_once(w, max_steps, 1);
+    if (sn == EL_ENOMEM) return sn;
+    if (sn != EL_OK || w->near) return EL_ENOCONV;
+    if ((*l = loops_away(w)) < 0) return EL_ENOMEM;
+    if (*l && !loopy) return EL_ENOCONV;
+    const double par[2] = {w->sigma, target};
+    const int sc = el__spline_continuation(w, w->snap, max_steps, 1.0, set_sigma_linear, par, w->aim, w->tol);
+    return sc == EL_ENOMEM || sc == EL_OK ? sc : EL_ENOCONV;
+}
+
 int el__spline_solve_tension(el__spchain *w, int max_steps, int final)
 {
     const double target = w->sigma;
@@ -494,33 +519,32 @@ int el__spline_solve_tension(el__spchain *w, int max_steps, int final)
         return st;
     const int la = st == EL_OK ? loops_away(w) : 1;
     if (la <= 0) return la < 0 ? EL_ENOMEM : st;
-    /* ducks whose polygon crosses itself: loops cannot be told (QA's rw15 at sigma h^2 5 came
-     * back crossing itself 11 times, in a span too) */
-    const int pc = el__chain_polygon_crosses(w);
-    if (pc) return pc < 0 ? EL_ENOMEM : st;
     const size_t n = w->n, m = w->m;
     double *buf = malloc(sizeof(double) * (n + 2 * EL__NV * m));
     if (!buf) return EL_ENOMEM;
     el__spsnap first = {buf, buf + n, buf + n + EL__NV * m, 0.0};
     if (st == EL_OK) el__snap_save(w, &first);
     w->neighbours = 0;
-    int found = 0;
-    for (size_t i = 0; i < sizeof NEAR_TENSIONS / sizeof NEAR_TENSIONS[0] && !found; i++) {
-        w->near = 0;
-        w->lmode = 0;
-        w->sigma = target * NEAR_TENSIONS[i];
-        const int sn = solve_tension_once(w, max_steps, 1);
-        if (sn == EL_ENOMEM) { st = sn; break; }
-        if (sn != EL_OK || w->near) continue;
-        int l = loops_away(w);
-        if (l < 0) { st = EL_ENOMEM; break; }
-        if (l) continue;
-        const double par[2] = {w->sigma, target};
-        const int sc = el__spline_continuation(w, w->snap, max_steps, 1.0, set_sigma_linear, par, w->aim, w->tol);
+    int found = 0, looped[NNEAR] = {0};
+    for (size_t i = 0; i < NNEAR && !found; i++) {
+        const int sc = from_neighbour(w, max_steps, target, i, 0, &looped[i]);
         if (sc == EL_ENOMEM) { st = sc; break; }
         if (sc != EL_OK) continue;
-        if ((l = loops_away(w)) < 0) { st = EL_ENOMEM; break; }
+        const int l = loops_away(w);
+        if (l < 0) { st = EL_ENOMEM; break; }
         found = !l;
+    }
+    /* none reached: the neighbours that loop, followed to the tension asked; of those
+     * reaching it the least integral kappa^2 + sigma ds (spline_fair.c's lagrangian) */
+    int kept = 0;
+    double low = HUGE_VAL;
+    for (size_t i = 0; i < NNEAR && !found && st == EL_ENOCONV; i++) {
+        if (!looped[i]) continue;
+        int l;
+        const int sc = from_neighbour(w, max_steps, target, i, 1, &l);
+        if (sc == EL_ENOMEM) { st = sc; break; }
+        const double lag = chain_energy(w) + target * total_length(w);
+        if (sc == EL_OK && lag < low) { el__snap_save(w, &first); low = lag; kept = 1; }
     }
     w->neighbours = 1;
     w->near = 0;
@@ -529,7 +553,7 @@ int el__spline_solve_tension(el__spchain *w, int max_steps, int final)
         st = EL_OK;
     } else if (st != EL_ENOMEM) {
         w->sigma = target;
-        if (st == EL_OK) { el__snap_load(w, &first); el__chain_eval(w, 0); }
+        if (st == EL_OK || kept) { el__snap_load(w, &first); el__chain_eval(w, 0); st = EL_OK; }
     }
     free(buf);
     return st;

@@ -70,18 +70,46 @@ def test_loop_warning_names_the_crossing():
     assert not fair.loops and fair.crossings() == []
 
 
-def test_no_silent_loops_where_the_polygon_crosses():
-    """rw15's polygon crosses itself, so loops cannot flag a spline of it; at tension x
-    (longest span)^2 = 5 tension mode's path from nearby tensions (NEIGHBOURS) found one
-    crossing itself 11 times, with loops inside spans 3 and 6, returned silently: that path
-    is not taken for such ducks (NotConvergedError, as before it)."""
+def test_where_every_spline_loops_the_looping_one_is_flagged():
+    """rw15 at tension x (longest span)^2 2 and 5: every spline the solver meets there loops
+    round duck 7 (fair ones from ~18 up; by length fair only up to ~1.3 x the polygon), and
+    the solve said NotConvergedError 'no spline through the points was reached'. Now the
+    solver's searches judge candidates by the loop flag's own rule, and from nearby tensions
+    the looping spline is reached: returned with loops and a LoopWarning naming the loop
+    inside the span from duck 7 to 8."""
     h = _longest_side(RW15, False)
     for sh2 in (2.0, 5.0):
-        try:
+        with pytest.warns(el.LoopWarning, match="within the span from point 7 to 8"):
             sp = el.elastic_spline(RW15, tension=sh2 / h**2)
-        except el.NotConvergedError:
-            continue
-        assert not any(i == j for i, j in sp.crossings()), (sh2, sp.crossings())
+        assert sp.loops and (7, 7) in sp.crossings(), sh2
+        assert sp.residual <= 1e-10
+        assert np.allclose([p.x0 for p in sp.pieces], RW15[:-1, 0], atol=1e-9)
+
+
+# two random walks whose polygons cross themselves twice: C61 closed, W24 open
+C61 = np.array([
+    [0.38180803501383476, 2.4398859075439776], [0.47618295239741615, 1.9800329434256925],
+    [0.6291614671336277, 0.6247011316098365], [1.1151455047432144, 0.5288874932557548],
+    [1.4597446087350046, 0.9031227259018499], [0.4149537020418681, 2.233444365107266],
+    [-0.5857171642742549, 3.135806800429161], [-2.1647929001981887, 3.5216840742559627],
+    [-2.970357052340864, 3.5789286985380633], [-3.607071378437203, 1.4104536167684292]])
+
+
+def test_a_spline_that_follows_its_crossing_polygon_is_unwarned():
+    """C61's closed polygon crosses itself between spans 0 and 4 and 5 and 9; at tension x
+    (longest span)^2 100 the solver returned a spline 1.33 x the polygon looping round duck
+    9 (LoopWarning): its searches took every spline of such ducks as fair. Judged by the
+    loop flag's rule they reach the one crossing only where its polygon does, 1.056 x."""
+    from libelastica.shape import crossing_pairs
+    q = np.vstack([C61, C61[:1]])
+    assert crossing_pairs(q).tolist() == [[0, 4], [5, 9]]
+    h = _longest_side(C61, True)
+    poly = float(np.hypot(*np.diff(q, axis=0).T).sum())
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", el.LoopWarning)
+        sp = el.elastic_spline(C61, tension=100.0 / h**2, closed=True)
+    assert not sp.loops and sp.crossings() == [(0, 4), (5, 9)]
+    assert sp.length < 1.1 * poly
 
 
 def test_loops_where_the_polygon_crosses():
