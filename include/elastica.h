@@ -1127,6 +1127,13 @@ typedef struct el_spline_result {
                               tension mode's splines reached looking for two that bracket
                               the length (spline_bracket.c); 0 where it did not run or
                               reached none. Set where reach is */
+    double largest[3];     /* tension mode, EL_ENOCONV at sigma x (longest span h)^2 >= 300:
+                              the largest tension (1/units^2) that solves these points without
+                              loops, sigma h^2 = min(asked, 1024) x 2^(-j/4) down to 100 then 3
+                              bisections in log above it (up to 18 solves, ~0.3-0.5 s;
+                              spline_limit.c), that spline's resolution and the least |1 - k^2|
+                              of its pieces (why none above it: Accuracy, el_spline_solve);
+                              all 0 where not looked for or none solves */
 } el_spline_result;
 
 /* Defaults: tension mode, sigma 0, open, natural ends, tol 1e-10, max_iter 60, max_steps 60. */
@@ -1305,8 +1312,9 @@ void el_spline_options_defaults(el_spline_options *opt);
  *     multiplies a change at its start by ~exp(sqrt(sigma / 2) h): its modulus k is
  *     within ~exp(-sqrt(sigma / 2) h) of 1 (examples/ducks.csv's longest span: 1 - k^2 =
  *     -7e-9 at sigma h^2 500), its far end known to ~4.4e-16 / |1 - k^2| of its curvature
- *     (resolution 1.2e-7 at 450, 2.9e-7 at 500, 4e-7 at 520, none reached from 560). The
- *     Python binding's error then names the largest tension that solves. In length mode
+ *     (resolution 1.2e-7 at 450, 2.9e-7 at 500, 4e-7 at 520, none reached from 560).
+ *     res->largest then holds the largest tension that solves (spline_limit.c), which the
+ *     Python binding's error names. In length mode
  *     these are lengths within ~1/5 of the free batten's excess over the
  *     polygon's length (0.1 - 0.2 % of it on hand-placed points).
  * res is overwritten (not freed first): on EL_OK it holds the spline (residual

@@ -350,6 +350,11 @@ int el__spline_solve_buckled(el__spchain *w, int max_steps, double dir, double L
  * buckled batten of the ducks projected onto it, moved to the ducks (spline_path.c). */
 int el__spline_solve_near_line(el__spchain *w, int max_steps, double dir, double Lt);
 
+/* spline_limit.c: where tension mode failed at sigma h^2 >= EL__SP_STIFF_SH2 on the
+ * longest span h, the largest tension (user units) that solves without loops, its spline's
+ * resolution and least |1 - k^2| (el_spline_result's largest), all 0 where not looked for
+ * or none of sigma h^2 >= 100 solves; EL_OK or EL_ENOMEM */
+int el__spline_largest(const double *xy, size_t n, const el_spline_options *opt, double largest[3]);
 /* spline.c: what one ulp of a piece's k moves its end state by near the separatrix, in
  * the residual's units (th: its end angles, kmax: its max |kappa|, h: its chord). */
 double el__spline_separatrix_bound(const el_smooth_params *p, const double th[2], double kmax, double h);
@@ -384,6 +389,9 @@ void el__snap_load(el__spchain *w, const el__spsnap *s);
  * the high tension (sigma h^2 on the mean chord) continuations start from */
 #define EL__SP_WANDER 1.5
 #define EL__SP_HIGH_SIGMA 40.0
+/* sigma h^2 on the longest span from which a tension mode failure is looked at as the
+ * limit of what a double resolves (spline_limit.c): below it other causes dominate */
+#define EL__SP_STIFF_SH2 300.0
 
 /* G2 ends (spline_guide.c): the guided chain g of the solved sibling w, its G2
  * ends clamped only (g allocated here; free it also on failure); then the end

@@ -329,7 +329,13 @@ static int make_result(const el__spchain *w, const double *xy, size_t npoints, d
 int el_spline_solve(const double *xy, size_t n, const el_spline_options *opt,
                     el_spline_result *res)
 {
-    return el__spline_solve_paths(xy, n, opt, 1, res);
+    const int st = el__spline_solve_paths(xy, n, opt, 1, res);
+    if (st != EL_ENOCONV) return st;
+    /* a high tension that fails: the largest that solves (spline_limit.c) */
+    double largest[3];
+    if (el__spline_largest(xy, n, opt, largest)) { el_spline_result_free(res); return EL_ENOMEM; }
+    for (int i = 0; i < 3; i++) res->largest[i] = largest[i];
+    return st;
 }
 
 /*

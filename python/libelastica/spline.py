@@ -202,45 +202,15 @@ def _out_of_range(pts, chords) -> str:
             "coordinates up to 1e100, chords from 1e-100 to 1e100); rescale the points")
 
 
-# Tension x (longest span)^2 from which a failure in tension mode is looked at as the limit
-# of what double precision resolves (elastica.h, Accuracy): below it other causes dominate
-STIFF_SH2 = 300.0
-
-
-def _largest_tension(pts, n, opt, sigma, span2) -> tuple:
-    """Where tension mode failed at a high tension: the largest tension it solves here
-    (without loops), tension x (longest span)^2 = min(asked, 1024) x 2^(-j/4) down to 100,
-    then 3 bisections in log above it, and why none above it: its nearly straight runs'
-    elliptic modulus k is within ~exp(-sqrt(sigma / 2) h) of 1 (a boundary layer at each
-    duck), a double k resolves 1 - k^2 only in steps of 2 |k| ulp(k) ~ 4.4e-16, so the far
-    layer's curvature only to ~4.4e-16 / |1 - k^2| of itself (the separatrix bound,
-    ``resolution``), which grows ~2.3 x per +50 (examples/ducks.csv: 1.2e-7 at 450, 2.9e-7
-    at 500, 4e-7 at 520, none at 560 and above, where Newton's steps fall below the
-    noise). (tension, its text), (None, '') when none of those solves either."""
-    def solves(sh2):
-        o = ffi.new("el_spline_options *", opt[0])
-        o.sigma = sh2 / span2
-        r = ffi.new("el_spline_result *")
-        st = lib.el_spline_solve(dptr(pts), n, o, r)
-        out = (float(r.resolution), min(abs(1.0 - r.pieces[j].k ** 2) for j in range(r.npieces))) \
-            if st == lib.EL_OK and not r.loops else None
-        lib.el_spline_result_free(r)
-        return out
-    top = min(sigma * span2, 1024.0)
-    for j in range(1, 4 * 4):   # down to top / 16, at least 100
-        lo = top * 2.0 ** (-j / 4.0)
-        if lo < 100.0:
-            return None, ""
-        got = solves(lo)
-        if got:
-            break
-    hi = lo * 2.0 ** 0.25
-    for _ in range(3):
-        mid = (lo * hi) ** 0.5
-        g = solves(mid)
-        lo, hi, got = (mid, hi, g) if g else (lo, mid, got)
-    resolution, kp2 = got
-    return lo / span2, (f"; the largest tension solved here is ~{lo / span2:.3g} (x (longest span)^2 = "
+def _largest_text(res, span2) -> tuple:
+    """Where tension mode failed at a high tension, the library's search for the largest
+    tension that solves these points without loops (el_spline_result's largest,
+    spline_limit.c): (tension, its text), (None, '') where it did not look or found none."""
+    sigma, resolution, kp2 = (float(res.largest[i]) for i in range(3))
+    if not sigma > 0.0:
+        return None, ""
+    lo = sigma * span2
+    return sigma, (f"; the largest tension solved here is ~{sigma:.3g} (x (longest span)^2 = "
             f"{lo:.3g}): beyond it the nearly straight runs between the ducks are pieces "
             f"whose elliptic modulus k lies within ~exp(-sqrt(tension / 2) x span) of 1 "
             f"(|1 - k^2| = {kp2:.2g} there), which a double resolves only in steps of "
@@ -297,7 +267,8 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
     instead of 1e-10 solves no more of them at 450 (the rest reach nothing, or stay at
     ~2e-7 .. 6e-7 on nearly straight runs); from tension x (longest span)^2 = 300 on, where
     none was accepted, its ``largest_tension`` (else None) and message name the largest
-    tension that solves these points (a few solves below the one asked: ~0.3-0.5 s) and why
+    tension that solves these points (the library's search, el_spline_result's largest: a
+    few solves below the one asked, ~0.3-0.5 s) and why
     none above it: the modulus k of the nearly straight runs' pieces is then within
     ~exp(-sqrt(tension / 2) span) of 1, which a double resolves only in steps of ~4.4e-16);
     by length, :class:`LengthRangeError`
@@ -439,9 +410,8 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
                            "straight runs stay at ~2e-7 .. 6e-7); tension is in 1/units^2 of the "
                            "points (in mm, "
                            "1e-6 x the same tension in m)")
-                if sh2 >= STIFF_SH2:
-                    largest, text = _largest_tension(pts, n, opt, sigma, float(chords.max()) ** 2)
-                    why += text
+                largest, text = _largest_text(res, float(chords.max()) ** 2)
+                why += text
             if res.npieces and res.resolution > 0.0:
                 # pieces near the separatrix: accepted within what a double resolves (elastica.h)
                 why = (f"; its pieces nearly straight under tension resolve only "

@@ -478,6 +478,32 @@ START_TEST(taut_batten_under_a_high_tension)
 }
 END_TEST
 
+/* Beyond what a double resolves (the sketch at sigma x (longest span)^2 1000: EL_ENOCONV,
+ * res empty) the solve gives the largest tension that solves the ducks (res->largest,
+ * spline_limit.c; before, only the Python binding looked for it, with up to 18 solves of
+ * its own): ~520, where the longest span's piece has |1 - k^2| ~ 5e-9 and a resolution of
+ * ~4e-7, and that tension solves without loops within it; nothing where the solve succeeds,
+ * nor by length */
+START_TEST(too_high_a_tension_gives_the_largest_that_solves)
+{
+    const double h = longest_side(sketch, NSKETCH);
+    el_spline_options o = opts(EL_SPLINE_TENSION, 1000.0 / (h * h));
+    el_spline_result r;
+    ck_assert_int_eq(solve(sketch, NSKETCH, &o, &r), EL_ENOCONV);
+    const double largest = r.largest[0];
+    ck_assert_msg(largest * h * h >= 450.0 && largest * h * h <= 560.0, "largest sigma h^2 %g", largest * h * h);
+    ck_assert_msg(r.largest[1] > 1e-7 && r.largest[1] < 1e-6, "resolution %g", r.largest[1]);
+    ck_assert_msg(r.largest[2] > 1e-10 && r.largest[2] < 1e-7, "|1 - k^2| %g", r.largest[2]);
+    el_spline_result_free(&r);
+    o.sigma = largest;
+    ck_assert_int_eq(solve(sketch, NSKETCH, &o, &r), EL_OK);
+    ck_assert_int_eq(r.loops, 0);
+    ck_assert_double_le(r.residual, 1e-7);
+    ck_assert(r.largest[0] == 0.0 && r.largest[1] == 0.0 && r.largest[2] == 0.0);
+    el_spline_result_free(&r);
+}
+END_TEST
+
 START_TEST(bad_input_and_clear_statuses)
 {
     el_spline_options o = opts(EL_SPLINE_TENSION, 1.0);
@@ -669,6 +695,7 @@ int main(void)
     tcase_add_test(tc, many_points);
     tcase_add_test(tc, free_batten_that_does_not_exist);
     tcase_add_test(tc, taut_batten_under_a_high_tension);
+    tcase_add_test(tc, too_high_a_tension_gives_the_largest_that_solves);
     tcase_add_test(tc, bad_input_and_clear_statuses);
     tcase_add_test(tc, bspline_is_one_g2_curve_within_tol);
     tcase_add_test(tc, smooth_to_bspline_g2_has_exact_ends);

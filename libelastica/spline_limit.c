@@ -1,0 +1,71 @@
+/*
+ * The largest tension that solves (el_spline_result's largest; elastica.h, Accuracy):
+ * where tension mode fails (EL_ENOCONV) at sigma h^2 >= EL__SP_STIFF_SH2 on the longest
+ * span h, the failure is looked at as the limit of what a double resolves: the nearly
+ * straight runs' pieces have their modulus k within ~exp(-sqrt(sigma / 2) h) of 1, a
+ * double k resolves 1 - k^2 only in steps of 2 |k| ulp(k) ~ 4.4e-16, so the far boundary
+ * layer's curvature only to ~4.4e-16 / |1 - k^2| of itself (the separatrix bound,
+ * resolution), ~2.3 x per +50 of sigma h^2 (examples/ducks.csv: 1.2e-7 at 450, 2.9e-7 at
+ * 500, 4e-7 at 520, none from 560). The search: sigma h^2 = min(asked, 1024) x 2^(-j/4),
+ * j = 1, 2, ..., down to 100, the first that solves without loops, then 3 bisections in
+ * log above it (at most 18 solves; was the Python binding's, which now reads the result).
+ */
+#include "internal.h"
+
+/* Tension mode at sigma h^2 = sh2 (h2: h^2): 1 where it solves without loops, with that
+ * spline's resolution and least |1 - k^2| over its pieces in got; 0 where not; -1 out of
+ * memory */
+static int solves(const double *xy, size_t n, const el_spline_options *opt, double h2, double sh2,
+                  double got[2])
+{
+    el_spline_options o = *opt;
+    o.sigma = sh2 / h2;
+    el_spline_result r;
+    const int st = el__spline_solve_paths(xy, n, &o, 1, &r);
+    if (st == EL_ENOMEM) return -1;
+    const int ok = st == EL_OK && !r.loops;
+    if (ok) {
+        double kp2 = HUGE_VAL;
+        for (size_t j = 0; j < r.npieces; j++) kp2 = fmin(kp2, fabs(1.0 - r.pieces[j].k * r.pieces[j].k));
+        got[0] = r.resolution;
+        got[1] = kp2;
+    }
+    el_spline_result_free(&r);
+    return ok;
+}
+
+int el__spline_largest(const double *xy, size_t n, const el_spline_options *opt, double largest[3])
+{
+    largest[0] = largest[1] = largest[2] = 0.0;
+    if (opt->mode != EL_SPLINE_TENSION || !(opt->sigma > 0.0)) return EL_OK;
+    const int closed = opt->closed;
+    if (closed && xy[0] == xy[2 * n - 2] && xy[1] == xy[2 * n - 1]) n--;   /* as el_spline_solve */
+    double h = 0.0;
+    for (size_t j = 0; j + (closed ? 0 : 1) < n; j++) {
+        const size_t e = (j + 1) % n;
+        h = fmax(h, hypot(xy[2 * e] - xy[2 * j], xy[2 * e + 1] - xy[2 * j + 1]));
+    }
+    const double h2 = h * h, asked = opt->sigma * h2;
+    if (!(asked >= EL__SP_STIFF_SH2)) return EL_OK;
+    const double top = fmin(asked, 1024.0);
+    double lo = top, got[2] = {0.0, 0.0};
+    int ok = 0;
+    for (int j = 1; j < 16 && !ok; j++) {
+        lo = top * pow(2.0, -(double)j / 4.0);
+        if (lo < 100.0) return EL_OK;
+        if ((ok = solves(xy, n, opt, h2, lo, got)) < 0) return EL_ENOMEM;
+    }
+    if (!ok) return EL_OK;
+    double hi = lo * pow(2.0, 0.25);
+    for (int i = 0; i < 3; i++) {
+        const double mid = pow(lo * hi, 0.5);
+        double g[2];
+        const int s = solves(xy, n, opt, h2, mid, g);
+        if (s < 0) return EL_ENOMEM;
+        if (s) { lo = mid; got[0] = g[0]; got[1] = g[1]; } else hi = mid;
+    }
+    largest[0] = lo / h2;
+    largest[1] = got[0];
+    largest[2] = got[1];
+    return EL_OK;
+}
