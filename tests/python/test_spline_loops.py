@@ -86,6 +86,28 @@ def test_where_every_spline_loops_the_looping_one_is_flagged():
         assert np.allclose([p.x0 for p in sp.pieces], RW15[:-1, 0], atol=1e-9)
 
 
+# QA's rw3: 7 ducks whose polygon does not cross, ducks 2 and 4 0.79 apart beside spans of
+# 5 .. 17 (a turn of 171 degrees at duck 3): every spline found loops
+RW3 = np.array([
+    [13.525923883954862, 2.6961943657305354], [9.96683320319754, -7.6710872791900417],
+    [4.253892293326146, -5.9684728814908343], [3.0360744530749209, -10.684577215358207],
+    [4.9664251426859281, -6.3139600363014399], [18.495344105922491, -16.693455581918279],
+    [25.276196270935831, -10.696206765695049]])
+
+
+def test_where_the_polygon_does_not_cross_the_looping_one_is_flagged_too():
+    """rw3 at tension x (longest span)^2 1: NotConvergedError 'no spline through the points
+    was reached' though at 10 and 100 the spline found loops and says so. Where nothing
+    is reached, the family from a taut start refused for looping is followed too (refair's
+    loose pass): a looping spline of 5 x the polygon, flagged, with the LoopWarning, as at
+    10."""
+    h = _longest_side(RW3, False)
+    for sh2 in (1.0, 10.0):
+        with pytest.warns(el.LoopWarning):
+            sp = el.elastic_spline(RW3, tension=sh2 / h**2)
+        assert sp.loops and sp.residual <= 1e-10, sh2
+
+
 # two random walks whose polygons cross themselves twice: C61 closed, W24 open
 C61 = np.array([
     [0.38180803501383476, 2.4398859075439776], [0.47618295239741615, 1.9800329434256925],
