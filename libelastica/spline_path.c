@@ -474,10 +474,9 @@ static int solve_tension_once(el__spchain *w, int max_steps, int final)
  * looping is kept; else the first result, as it was. Where none was reached, the
  * neighbours that loop are followed too (a second pass, so the first is as it was) and of
  * those reaching it the least integral kappa^2 + sigma ds kept, loops and all
- * (el_spline_result's loops says so): QA's
- * rw15 (a polygon crossing itself 5 times) at sigma h^2 2 .. 5 on the longest span, where
- * every spline found loops round duck 7 (fair ones only from ~18 up) and no path reached
- * one.
+ * (el_spline_result's loops says so): QA's rw15 (a polygon crossing itself 5 times) at
+ * sigma h^2 2 .. 5 on the longest span, where every spline found loops round duck 7 (fair
+ * ones only from ~18 up) and no path reached one.
  */
 static const double NEAR_TENSIONS[] = {0.9, 1.1, 0.75, 1.3};
 enum { NNEAR = sizeof NEAR_TENSIONS / sizeof NEAR_TENSIONS[0] };
