@@ -17,7 +17,8 @@ class PackageTest(unittest.TestCase):
     def test_namespace_layout(self):
         self.assertFalse(os.path.exists(os.path.join(WB, "freecad", "__init__.py")))
         for f in ("__init__.py", "init_gui.py", "commands.py", "features.py", "taskpanels.py",
-                  "panelbase.py", "preferences.py", "sources.py", "viewproviders.py",
+                  "panelbase.py", "spinboxes.py", "preferences.py", "sources.py",
+                  "viewproviders.py",
                   "geometry.py", "nearest.py", "proxy.py", "fit.py", "fit_core.py", "fit_ends.py",
                   "fit_shape.py", "blend.py", "spline.py",
                   "comb.py", "ellblend.py", "g2quad.py"):
@@ -28,8 +29,8 @@ class PackageTest(unittest.TestCase):
         modules (and what they share) import neither GUI modules nor Qt; the GUI
         reaches them, never the other way (view providers come through a hook)."""
         import ast
-        gui = {"taskpanels", "panelbase", "viewproviders", "commands", "init_gui", "preferences",
-               "FreeCADGui", "PySide", "pivy"}
+        gui = {"taskpanels", "panelbase", "spinboxes", "viewproviders", "commands", "init_gui",
+               "preferences", "FreeCADGui", "PySide", "pivy"}
         for f in ("proxy", "geometry", "nearest", "sources", "fit", "fit_core", "fit_ends",
                   "fit_shape", "blend", "spline", "comb", "ellblend", "g2quad"):
             with open(os.path.join(PKG, f + ".py")) as fh:

@@ -1,9 +1,8 @@
 """The machinery of the Elastica task panels, modelled on FreeCAD's own Part and
 Sketcher panels: ``Panel`` (fields bound live to a feature's properties, the
 delayed recompute, enabled fields, result text, the view kept on the feature, OK
-and Cancel through the document's undo transaction) and its spin boxes
-(``NumberBox`` shows values as typed, ``DecadeBox`` steps by factors of 10). The
-panels of the features are in taskpanels.py."""
+and Cancel through the document's undo transaction); its spin boxes are in
+spinboxes.py, the panels of the features in taskpanels.py."""
 from __future__ import annotations
 
 import FreeCAD as App
@@ -15,8 +14,8 @@ from . import icon
 from .geometry import is_sketch, sketch_curves
 from .proxy import (EDGE_ENDS, InputProblem, abort_transaction, keep_note, kept_note,
                     note_changes, said as said_now)
-from .units import (box_text, feet_inches, length_text, length_unit, say, tension_unit,
-                    unit_names, user_length)
+from .spinboxes import DecadeBox, NumberBox
+from .units import length_text, say, unit_names
 
 CURRENT = []        # the open panel, if any (scripts and the GUI smoke test drive it)
 DELAY_MS = 150      # recompute after this pause in editing
@@ -43,157 +42,6 @@ def _buttons(*names):
         return int(flags)
     except TypeError:          # PySide6 enums: the flag value
         return flags.value
-
-
-# a box's unit as FreeCAD's unit parser writes it (App.Units.Quantity)
-_PARSED_UNIT = {"mm": "mm", "1/mm": "1/mm", "1/mm\u00b2": "1/mm^2", "mm\u00b2": "mm^2",
-                "N\u00b7mm\u00b2": "N*mm^2"}
-
-
-def _in_unit(text, unit, plain=1.0):
-    """The number a typed quantity is in the box's unit, by FreeCAD's own parser (as its
-    Quantity spin boxes read input): '7 cm' in a box of mm is 70, '2.75 in' 69.85,
-    '=2*35' 70, '70,5' 70.5 where the decimal separator is a comma (a number without a unit
-    times ``plain``: the box's factor of the unit it shows). ValueError for text it
-    cannot read or a quantity of another kind ('7 kg' for a length)."""
-    body = text[1:] if text.startswith("=") else text
-    if not body.strip():    # FreeCAD reads '' as its 'no value', DBL_MIN: a box emptied
-        raise ValueError(f"{text!r}: not a number or quantity")   # to type in took it
-    try:
-        q = App.Units.Quantity(body)
-    except Exception:      # the parser's errors are of several kinds (syntax, 1/0, ...)
-        raise ValueError(f"{text}: not a number or quantity") from None
-    if q.Unit == App.Units.Quantity("1").Unit:
-        return q.Value * plain
-    ref = App.Units.Quantity(f"1 {_PARSED_UNIT.get(unit, '?')}") if unit else None
-    if ref is None or q.Unit != ref.Unit:
-        raise ValueError(f"{text}: not a quantity in {unit or 'plain numbers'}")
-    return q.Value / ref.Value
-
-
-class NumberBox(QtGui.QDoubleSpinBox):
-    """A spin box that shows its value as typed ('0.001', '2.5e-07', not '0.00'; a length as
-    units.box_text writes it: '0.0000394 in', not '3.93701e-05 in'), a length,
-    curvature or tension in the user's unit schema (units.py; the value itself stays in mm,
-    1/mm, 1/mm^2), accepts scientific notation, quantities in other units and expressions as
-    FreeCAD's own boxes do ('7 cm', '2.75 in', '=2*35': _in_unit) and steps by
-    ``singleStep``. As FreeCAD 0.20's Gui::QuantitySpinBox (measured under each schema), a
-    plain number is in the unit the box shows, that of the text it last wrote ('6' in a box
-    showing '5.94 in' is 6 in; '12' after Up took '9999 mm' to '10 m' is 12 m), and a length
-    box's arrows step ``singleStep`` of that unit (1 in, 1 cm, 1 m). The unit is part of the
-    text, not a suffix: a suffix stayed behind what was typed ('7 in mm')."""
-
-    unit = ""                            # Qt calls validate() while __init__ runs
-    written = None                       # (factor, unit) of the text the box last wrote
-
-    def __init__(self, lo, hi, step, unit="", tip=""):
-        super().__init__()
-        self.setDecimals(30)             # the box must not round 1e-7 to 0
-        self.setRange(lo, hi)
-        self.setSingleStep(step)
-        self.setKeyboardTracking(True)
-        self.unit = unit
-        self.setToolTip(tip)
-        # as narrow as its minimum, not the width of '-1e+06 1/mm' (its range's text): the
-        # Fit panel's Ends box was 216 px wide for it
-        self.setSizePolicy(QtGui.QSizePolicy.Preferred, QtGui.QSizePolicy.Fixed)
-
-    def shown(self, value):
-        """(factor, unit): the box shows ``value`` as value / factor unit."""
-        if self.unit == "mm":
-            return user_length(value)
-        if self.unit == "1/mm":
-            factor, unit = length_unit()
-            return 1.0 / factor, f"1/{unit}"
-        if self.unit == "1/mm\u00b2":
-            factor, unit = tension_unit()
-            return 1.0 / factor, unit
-        if self.unit == "mm\u00b2":               # the comb's scale
-            factor, unit = length_unit()
-            return factor * factor, f"{unit}\u00b2"
-        return 1.0, self.unit
-
-    def textFromValue(self, value):
-        if self.unit == "mm":            # Building US: feet and inches, as FreeCAD's boxes
-            return feet_inches(value) or box_text(value)
-        factor, unit = self.shown(value)
-        return f"{value / factor:.6g} {unit}" if unit else f"{value:.6g}"
-
-    def _wrote(self):
-        """The box may have written its text (a value set, an arrow step, focus):
-        when the text is its own text of its value, a number typed next is in its unit; a
-        text being typed is not ('6' typed over '5.94 in' is 6 in, '62' too). (Qt writes the
-        text with the line edit's signals blocked: its textChanged says nothing.)"""
-        if self.lineEdit().text() == self.textFromValue(self.value()):
-            self.written = self.shown(self.value())
-
-    def setValue(self, value):
-        super().setValue(value)
-        self._wrote()
-
-    def focusInEvent(self, event):
-        super().focusInEvent(event)
-        self._wrote()
-
-    def _number(self, text):
-        t = text.strip()
-        factor, unit = self.written or self.shown(self.value())
-        for u, f in ((unit, factor), (self.unit, 1.0)):
-            if u and t.endswith(u):
-                try:
-                    return float(t[:-len(u)].strip()) * f
-                except ValueError:
-                    pass
-        try:
-            return float(t) * factor        # a plain number: in the unit shown
-        except ValueError:
-            return _in_unit(t, self.unit, factor)
-
-    def valueFromText(self, text):
-        if text == self.textFromValue(self.value()):
-            return self.value()          # as shown (rounded in another unit): unchanged
-        try:
-            return self._number(text)
-        except ValueError:
-            return self.value()
-
-    def stepBy(self, steps):
-        if self.unit != "mm":           # tensions, curvatures: the problem's own scale
-            super().stepBy(steps)
-            return self._wrote()
-        factor, _ = self.shown(self.value())
-        self.setValue(self.value() + steps * self.singleStep() * factor)
-        self.selectAll()
-
-    def validate(self, text, pos):
-        try:
-            v = self._number(text)
-            ok = self.minimum() <= v <= self.maximum()
-            state = QtGui.QValidator.Acceptable if ok else QtGui.QValidator.Intermediate
-        except ValueError:
-            state = QtGui.QValidator.Intermediate
-        return state, text, pos
-
-    def fixup(self, text):
-        return self.textFromValue(self.value())
-
-    def bind_mark(self, expression):
-        """Bound to a property's ``expression``: read-only, FreeCAD's bound-expression
-        mark in the box and the expression in its tooltip, as its own Quantity boxes show
-        a bound property (the panel does not write it: set() skips bound properties)."""
-        self.setReadOnly(True)
-        mark = QtGui.QIcon(":/icons/bound-expression.svg")
-        self.lineEdit().addAction(mark, QtGui.QLineEdit.TrailingPosition)
-        self.setToolTip(f"Bound to the expression ={expression} (read-only here: change or "
-                        "clear it in the property editor's expression dialog, Ctrl+=).\n"
-                        + self.toolTip())
-
-
-class DecadeBox(NumberBox):
-    """A tolerance: each arrow step (or wheel notch) multiplies or divides by 10."""
-
-    def stepBy(self, steps):
-        self.setValue(self.value() * 10.0 ** steps)
 
 
 class _Watch:

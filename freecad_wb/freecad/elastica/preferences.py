@@ -13,7 +13,7 @@ class PreferencePage:
 
     def __init__(self, parent=None):
         from PySide import QtGui
-        from .panelbase import DecadeBox
+        from .spinboxes import DecadeBox
         self.form = QtGui.QWidget(parent)
         self.form.setWindowTitle("Elastica")
         layout = QtGui.QFormLayout(self.form)
