@@ -13,9 +13,11 @@ the GUI smoke test (gui_smoke.py calls run_all):
 - lengths show in the user's unit schema and take what is typed in any unit: the boxes
   showed mm under every schema and '7 in mm' while '7 in' was typed; a plain number is
   in the unit the box shows now, after its arrows changed it ('12' over '10 m'); under
-  Building US lengths in feet and inches as FreeCAD writes them ('6"', '1\' 3/4"').
+  Building US lengths in feet and inches as FreeCAD writes them ('6"', '1\' 3/4"');
+- the command's note (why by length) follows the length: typed over, it goes (it named the
+  old length beside the new curve).
 
-Screenshots: gui_blend_picked_tops.png, gui_blend_ends_by_length.png,
+Screenshots: gui_blend_picked_tops.png, gui_blend_note_typed.png, gui_blend_ends_by_length.png,
 gui_blend_bound.png, gui_blend_imperial.png, gui_blend_typed_after_step.png,
 gui_blend_building_us.png, gui_blend_said_after_undo.png."""
 import os
@@ -86,10 +88,31 @@ def picked_ends(doc):
     G.check(b.Mode == "length" and b.Length.Value == 151.0 and panel.warning[0].isVisible(),
             f"no free batten joins the tops: by length {b.Length} with the note")
     G.screenshot("gui_blend_picked_tops.png")
+    note_follows_the_length(panel)
     panel.accept()
     G.pump()
     note_kept(doc, b)
     return sk, right, left
+
+
+def note_follows_the_length(panel):
+    """The note names the length the command chose ('solved for a length instead, 151 mm'):
+    a length typed over it ends it once the curve is built with the new one, as in a panel
+    opened later (it stayed, naming 151 mm beside a 200 mm curve); the length typed back, the
+    note holds again. Screenshot gui_blend_note_typed.png."""
+    b = panel.obj
+    retype(panel.length, "200 mm")
+    G.wait(400)
+    said = panel.warning[1].text() if panel.warning[0].isVisible() else ""
+    G.screenshot("gui_blend_note_typed.png")
+    G.check(b.Length.Value == 200.0 and not b.Status.startswith("error") and
+            "151 mm" not in said and "No free batten" not in said,
+            f"a length typed over the command's: its note goes ({b.Length}, {said!r})")
+    retype(panel.length, "151 mm")
+    G.wait(400)
+    G.check(b.Length.Value == 151.0 and panel.warning[0].isVisible() and
+            "solved for a length instead, 151 mm" in panel.warning[1].text(),
+            f"the command's length typed back: its note again ({panel.warning[1].text()!r})")
 
 
 def note_kept(doc, b):

@@ -13,7 +13,7 @@ from PySide import QtCore, QtGui
 from . import icon
 from .geometry import is_sketch, sketch_curves
 from .proxy import (EDGE_ENDS, InputProblem, abort_transaction, keep_note, kept_note,
-                    note_changes, said as said_now)
+                    note_changes, note_values, said as said_now)
 from .spinboxes import DecadeBox, NumberBox
 from .units import length_text, say, unit_names
 
@@ -104,18 +104,19 @@ class Panel:
     icon_name = "elastica"
     gone = ""           # why the panel lost its feature or its transaction (``lost``)
     error = None        # the error line at the top of the first box (``box``)
-    _note = ""
+    _note, _note_for = "", None
 
     @property
     def note(self):
         """Why the command (or the panel) chose the values it did: the warning line's first
         sentence, kept with the feature (proxy.keep_note, in the panel's transaction) with
-        the values it explains, so a panel opened later says it while they hold."""
-        return self._note
+        the values it explains, and said while they hold, as by a panel opened later (a
+        length typed over the one it named left it naming the old one)."""
+        return self._note if note_values(self.obj) == self._note_for else ""
 
     @note.setter
     def note(self, text):
-        self._note = text
+        self._note, self._note_for = text, note_values(self.obj)
         if not self.gone and note_changes(self.obj, text):
             self.hold()
             keep_note(self.obj, text)
@@ -124,7 +125,7 @@ class Panel:
         self.obj = obj
         # why the command chose what it did (warning line): given by the command, or kept
         # with the feature while its values hold (proxy.keep_note)
-        self._note = note or kept_note(obj)
+        self._note, self._note_for = note or kept_note(obj), note_values(obj)
         self.doc = obj.Document
         self.name, self.doc_name = obj.Name, obj.Document.Name
         self.watch = _Watch(self)

@@ -277,7 +277,8 @@ def add_note(obj):
                         "values it did, while they hold (its panel says it)", 4 | 8)
 
 
-def _note_values(obj):
+def note_values(obj):
+    """The values of the feature's note_props, as keep_note keeps them beside a note."""
     def value(v):
         if hasattr(v, "Value"):         # a length (Quantity)
             return float(v.Value)
@@ -286,7 +287,7 @@ def _note_values(obj):
 
 
 def _note_text(obj, note):
-    return json.dumps({"note": note, "values": _note_values(obj)}, sort_keys=True) if note else ""
+    return json.dumps({"note": note, "values": note_values(obj)}, sort_keys=True) if note else ""
 
 
 def note_changes(obj, note):
@@ -306,7 +307,7 @@ def kept_note(obj):
     if not text:
         return ""
     kept = json.loads(text)
-    return kept["note"] if kept["values"] == _note_values(obj) else ""
+    return kept["note"] if kept["values"] == note_values(obj) else ""
 
 
 def abort_transaction(doc, name):
