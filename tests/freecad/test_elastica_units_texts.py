@@ -2,14 +2,17 @@
 write them (units.plain): in the unit FreeCAD's schema picks for each value, from the exact
 value (a check's typed length is not its '%g' text in mm said again: rounded twice), in
 fixed notation down to 1e-6 of the unit (the Fit panel said 'B-spline within 2.27e-05 in'
-under Imperial decimal beside a Tolerance box of '0.0000394 in')."""
+under Imperial decimal beside a Tolerance box of '0.0000394 in'); a measured length at
+rounding noise as FreeCAD writes it at its precision ('0 mm', not '1.82e-11 mm')."""
+import re
 import sys
 import unittest
 
 import FreeCAD as App
 
-from freecad.elastica import units as U
-from freecad.elastica.proxy import InputProblem, check_number, check_tolerance
+import elastica_samples as S
+from freecad.elastica import fit as Fi, units as U
+from freecad.elastica.proxy import InputProblem, check_number, check_tolerance, said
 
 STANDARD, MKS, IMPERIAL_DECIMAL = 0, 1, 3
 
@@ -82,6 +85,50 @@ class UnitsTextsTest(unittest.TestCase):
                     number = U.length_text(mm).split(" ")[0]
                     for text in (number, U.say(U.exact_mark(mm)).split(" ")[0]):
                         self.assertEqual("e" in text, abs(float(text)) < 1e-6, text)
+
+
+def zero_unit():
+    """The unit FreeCAD's schema of now writes a length of 0 in ('0.00 mm', '0.00 in')."""
+    return App.Units.Quantity(0.0, App.Units.Length).getUserPreferred()[2]
+
+
+class MeasuredTextsTest(S.DocTest):
+    doc_name = "ElasticaMeasuredTexts"
+    schema = STANDARD          # (the user's restored after each test)
+
+    def test_rounding_noise_is_written_as_freecad_writes_it(self):
+        """Seven points on the sample elastica fitted by the discrete model: its warning in
+        the panel (proxy.said, figures) says the smooth model's curve lies '0 mm' from them,
+        as FreeCAD writes a length under its Confusion (1e-7 mm) at its precision ('0.00
+        mm'; '0 in' under Imperial decimal): it said 'lies 1.82e-11 mm'. The Warnings
+        property (and the report view) keep the figure; a measured length from 1e-7 mm on
+        is written as before, and an input (exact_mark: a tolerance of 1e-9 mm) as it is."""
+        xy, _ = S.keyline_xy(7)
+        f = Fi.make(self.doc, [(S.points_sketch(self.doc, xy, "Seven"), [])], Model="discrete")
+        self.doc.recompute()
+        self.assertIn("converged", f.Status)
+        kept = [w for w in f.Warnings if "Smooth elastica" in w]
+        self.assertEqual(len(kept), 1, list(f.Warnings))
+        figure = re.search("the smooth model's curve lies (\\S+) mm from them", kept[0])
+        self.assertTrue(figure and 0.0 < float(figure.group(1)) < 1e-7, kept[0])
+        for schema, zero in ((STANDARD, "0 mm"), (IMPERIAL_DECIMAL, "0 in")):
+            App.Units.setSchema(schema)
+            panel = [w for w in said(f, "Warnings", figures=True) if "Smooth elastica" in w]
+            self.assertIn(f"the smooth model's curve lies {zero} from them", panel[0])
+        for schema in range(8):
+            App.Units.setSchema(schema)
+            with self.subTest(schema=schema):
+                zero = f"0 {zero_unit()}"
+                for noise in (1.82e-11, -7.1e-15, 0.0, 9.99e-8):
+                    self.assertEqual(U.figure_text(noise), zero)
+                    self.assertEqual(U.say(U.figure_mark(noise, 3), figures=True), zero)
+                    self.assertEqual(U.say(U.figure_mark(noise, 3)),
+                                     U.say(U.exact_mark(noise, 3)))
+                for mm in (1e-7, 0.000577, 151.0):
+                    self.assertEqual(U.figure_text(mm), U.length_text(mm))
+                    self.assertEqual(U.say(U.figure_mark(mm, 3), figures=True),
+                                     U.say(U.exact_mark(mm, 3)))
+                self.assertNotEqual(U.say(U.exact_mark(1e-9), figures=True), zero)
 
 
 if __name__ == "__main__":

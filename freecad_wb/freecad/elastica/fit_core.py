@@ -19,7 +19,7 @@ from .geometry import el, np, plane_coordinates, polyline_length, to_plane
 from .nearest import drawn_distances, nearest_on
 from .proxy import InputProblem, check_degree, check_number, check_tolerance
 from .sources import curve_order, file_order
-from .units import coordinate_mark, exact_mark
+from .units import coordinate_mark, exact_mark, figure_mark
 
 MIN_POINTS = 6          # fewer points cannot determine the 7 (5 shape) parameters of a fit
 MODELS = ["discrete", "smooth"]
@@ -95,9 +95,9 @@ def _constraint_cost(result, model, constraints, rms, dist, fields):
     extent = float(np().ptp(xy, axis=0).max())
     held = field_names(constraints, fields)
     if el().costly(rms, free, extent):
-        return float(free), [el().cost_summary(held, free, rms, length=exact_mark)], free_dist
+        return float(free), [el().cost_summary(held, free, rms, length=figure_mark)], free_dist
     near = el().end_costs(el().held_ends(constraints, None), r.foot_s, dist, free_dist, extent)
-    said = [el().local_cost_summary(held, end, near_free, near_rms, length=exact_mark)
+    said = [el().local_cost_summary(held, end, near_free, near_rms, length=figure_mark)
             for end, near_rms, near_free in near[:1]]
     return float(free), said, free_dist
 
@@ -149,7 +149,7 @@ def _left_out(beyond, dist, step, used):
                f"Resample = 0 takes {_default_step_name(used)}")
     way_out = "a shorter step leaves less out"
     return [f"{m} of {len(dist)} points {verb} beyond the curve's ends, up to "
-            f"{exact_mark(d.max(), 3)} from it: the resampled polygon ({setting}) "
+            f"{figure_mark(d.max(), 3)} from it: the resampled polygon ({setting}) "
             "stops where no point lies a step further on, and the curve with it; Rms and "
             f"MaxError include them: {way_out}"]
 
@@ -162,10 +162,10 @@ def _off_plane(off, rms, extent):
     off_rms = _rms(off)
     if not (off_rms > rms and off_rms > el().COST_FLOOR * extent):
         return []
-    return [f"the points lie up to {exact_mark(n.abs(off).max(), 3)} "
-            f"(rms {exact_mark(off_rms, 3)}) off "
+    return [f"the points lie up to {figure_mark(n.abs(off).max(), 3)} "
+            f"(rms {figure_mark(off_rms, 3)}) off "
             f"their plane, the fit's: Rms and MaxError include that (in the plane the curve lies "
-            f"{exact_mark(rms, 3)} from them, rms); a plane curve comes no closer"]
+            f"{figure_mark(rms, 3)} from them, rms); a plane curve comes no closer"]
 
 
 def _step_advice(length):
@@ -298,8 +298,8 @@ def _coarse_polygon(xy, constraints, rms):
     if smooth is None:
         return []
     return [f"{len(xy)} points give the discrete model a polygon of {len(xy) - 1} segments, "
-            f"its cubic {exact_mark(rms, 3)} from them (rms), where the smooth model's curve lies "
-            f"{exact_mark(smooth, 3)} "
+            f"its cubic {figure_mark(rms, 3)} from them (rms), where the smooth model's curve lies "
+            f"{figure_mark(smooth, 3)} "
             "from them: choose Model Smooth elastica for so few points"]
 
 
@@ -315,7 +315,7 @@ def _far_points(data, dist, plane, free=None):
     farthest = far[n.argmax(n.abs(n.asarray(dist if free is None else free, dtype=float))[far])]
     worst = plane.multVec(App.Vector(*map(float, data[farthest])))
     at = ", ".join(coordinate_mark(v) for v in (worst.x, worst.y, worst.z))   # units.say
-    said = el().far_points_summary(dist, far, free_distances=free, length=exact_mark)
+    said = el().far_points_summary(dist, far, free_distances=free, length=figure_mark)
     return [f"{said} (the farthest at ({at})): "
             "outliers? Each pulls the fit towards itself: remove them to fit the rest"]
 

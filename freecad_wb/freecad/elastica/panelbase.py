@@ -13,7 +13,7 @@ from PySide import QtCore, QtGui
 from . import icon
 from .geometry import is_sketch, sketch_curves
 from .proxy import (EDGE_ENDS, InputProblem, abort_transaction, keep_note, kept_note,
-                    note_changes, note_values, said as said_now)
+                    note_changes, note_values, said as said_kept)
 from .spinboxes import DecadeBox, NumberBox
 from .units import length_text, say, unit_names
 
@@ -21,6 +21,12 @@ CURRENT = []        # the open panel, if any (scripts and the GUI smoke test dri
 DELAY_MS = 150      # recompute after this pause in editing
 WARNING_RGB = "#b36200"   # the amber of FreeCAD's report-view warnings, dark enough to read
 ERROR_RGB = "#b00"
+
+
+def said_now(obj, prop):
+    """A feature's text property as its panel says it (proxy.said): in the schema of now,
+    a measured length at rounding noise as 0 (the property and the report view keep it)."""
+    return said_kept(obj, prop, figures=True)
 
 
 def _sketches(doc, exclude=()):

@@ -250,15 +250,15 @@ def set_said(obj, prop, marked):
         obj.Proxy._said = kept
 
 
-def said(obj, prop):
+def said(obj, prop, figures=False):
     """The text property ``prop`` in the user's schema of now: its marked text said again
     where the property still holds what set_said wrote (a schema changed since the
-    recompute), else the property as it stands."""
+    recompute), else the property as it stands; ``figures``: as a panel says it (units.say)."""
     value = getattr(obj, prop)
     kept = _kept(obj).get(prop)
     now = list(value) if isinstance(value, (list, tuple)) else value
     if kept and kept[0] == now:
-        return say(kept[1])
+        return say(kept[1], figures)
     return now
 
 

@@ -18,7 +18,7 @@ from .fit_core import DISTANCE_NAMES, DISTANCES, MODEL_NAMES, MODELS
 from .fit_ends import CONTINUITIES, CONTINUITY_NAMES
 from .geometry import is_sketch
 from .panelbase import CURRENT, Panel, _fmt, said_now
-from .units import area_text, length_mark, length_unit, per_length, tension_unit
+from .units import area_text, figure_text, length_mark, length_unit, per_length, tension_unit
 
 
 
@@ -142,10 +142,11 @@ class FitPanel(Panel):
         ks = ", ".join(f"{k:.4g}" for k in o.K)
         n = len(o.DataPoints)
         if o.Model == "smooth":
-            bs = f"B-spline within {_fmt(o.BSplineDeviation)} (degree {o.Degree})"
+            bs = f"B-spline within {figure_text(o.BSplineDeviation)} (degree {o.Degree})"
         else:
             # what the drawn curve adds to the polygon's distances
-            bs = f"B-spline: the C2 cubic through the vertices, up to {_fmt(o.BSplineDeviation)} off the polygon"
+            bs = ("B-spline: the C2 cubic through the vertices, up to "
+                  f"{figure_text(o.BSplineDeviation)} off the polygon")
         curve = "one G2 curve of two elasticae, " if len(o.K) == 2 else ""
         ends = ""
         if len(o.EndCurvatures) == 2:
@@ -153,7 +154,9 @@ class FitPanel(Panel):
             size = o.Shape.Length if not o.Shape.isNull() else 0.0
             k0, k1 = (0.0 if abs(k) * size < 1e-9 else k for k in o.EndCurvatures)
             ends = f"<br>end \u03ba {k0 * length_unit()[0]:.4g}, {per_length(k1, 4)}"
-        return (f"{n} points, {o.ErrorMeasure}:<br>rms {_fmt(o.Rms)}, max {_fmt(o.MaxError)}"
+        # measured lengths: rounding noise as 0 (figure_text; the properties keep the figures)
+        return (f"{n} points, {o.ErrorMeasure}:<br>rms {figure_text(o.Rms)}, "
+                f"max {figure_text(o.MaxError)}"
                 f"<br>{curve}k = {ks}{ends}<br>{bs}<br>{said_now(o, 'Status')}")
 
     def refresh(self):
@@ -517,7 +520,7 @@ class SplinePanel(Panel):
                  f"{per_length(o.MaxCurvature)}{radius}",
                  self.forces_text(),
                  f"B-spline: {o.Poles} poles, degree {o.Degree}, within "
-                 f"{_fmt(o.BSplineDeviation)}"] + notes
+                 f"{figure_text(o.BSplineDeviation)}"] + notes
         return "<br>".join(line for line in lines if line)
 
 
@@ -559,7 +562,7 @@ class EllipticBlendPanel(Panel):
     def result_text(self):
         o = self.obj
         hull = "stays inside" if o.ConvexHull else "can leave"
-        return (f"B-spline within {_fmt(o.BSplineDeviation)} of the curve (tolerance "
+        return (f"B-spline within {figure_text(o.BSplineDeviation)} of the curve (tolerance "
                 f"{_fmt(o.Tolerance)})<br>basis min {o.BasisMin:.3g}, condition "
                 f"{o.Condition:.3g}: the curve {hull} the hull of its control points"
                 + (f"<br>control points {o.Spread:.3g} times as far apart as the points"
@@ -592,7 +595,8 @@ class G2QuadPanel(Panel):
         ek = (f"{ek:.2g} (relative to the source's largest curvature over the end piece)"
               if ek is not None and o.Poles > 0 else "-")
         return (f"{o.Pieces} piece{'s' if o.Pieces != 1 else ''} (split at inflections), "
-                f"{o.Poles} poles, degree 2<br>distance from the source: {_fmt(o.Deviation)}<br>"
+                f"{o.Poles} poles, degree 2<br>distance from the source: "
+                f"{figure_text(o.Deviation)}<br>"
                 f"curvature jump at joints inside the pieces: {o.CurvatureJump:.1g} (G2)<br>"
                 + (f"where the pieces meet: tangents {o.JoinAngle:.2g}\u00b0 apart, curvature "
                    f"jump {per_length(o.JoinCurvatureJump, 2)} (not G2 there)<br>"

@@ -9,6 +9,7 @@ import re
 from decimal import Decimal
 
 import FreeCAD as App
+import Part
 
 # the schema's unit of a length of this size names 'the' length unit of the schema, for
 # quantities per length (curvature, energy) and per length squared (tension): mm under
@@ -44,6 +45,20 @@ def length_text(mm, digits=3):
     fixed notation as the length boxes (plain: '151 mm', '5.94 in', '0.0000227 in')."""
     factor, unit = user_length(mm)
     return f"{plain(f'{float(mm) / factor:.{digits}g}')} {unit}"
+
+
+def noise(mm):
+    """Whether a measured length (mm: an rms, a distance, a B-spline's deviation) is below
+    FreeCAD's Confusion (Part.Precision.confusion(), 1e-7 mm: points nearer are one point to
+    FreeCAD and OpenCASCADE), rounding noise at the document's precision."""
+    return abs(float(mm)) < Part.Precision.confusion()
+
+
+def figure_text(mm, digits=3):
+    """A measured length (mm) as a panel says it: as length_text writes it, rounding noise
+    (noise) as FreeCAD writes it, a 0 in its unit for 0 ('0 mm', '0 in': its '0.00 mm',
+    '0.00 in'), not '1.2e-11 mm' (the feature's property keeps the figure)."""
+    return length_text(0.0 if noise(mm) else mm, digits)
 
 
 def feet_inches(mm):
@@ -190,15 +205,24 @@ def coordinate_mark(mm, digits=4):
     return exact_mark(mm, digits, with_unit=False)
 
 
-def exact_mark(mm, digits=None, with_unit=True):
+def exact_mark(mm, digits=None, with_unit=True, figure=False):
     """A length (mm) written by say() from its exact value in the unit FreeCAD's schema picks
     for it (user_length: '0.496 mm', '0.1192 m' under MKS), to ``digits`` significant digits
     (None: as '%g' writes it in mm, at least 3 in another unit), in mm as
     f'{mm:.{digits}g} mm'; ``with_unit`` False: the number alone, in the schema's length
-    unit (a message names it once), or a range's ('9.05 to 16 mm': the unit of its end).
+    unit (a message names it once), or a range's ('9.05 to 16 mm': the unit of its end);
+    ``figure``: a measured length, whose rounding noise say(figures=True) writes as 0
+    (figure_text).
     The binding's summaries take it as their ``length`` formatter."""
     shown = "" if digits is None else int(digits)
-    return f"\x01{'E' if with_unit else 'e'}{float(mm)!r}|{shown}\x02"
+    return f"\x01{'E' if with_unit else 'e'}{float(mm)!r}|{shown}{'|f' if figure else ''}\x02"
+
+
+def figure_mark(mm, digits=None, with_unit=True):
+    """A measured length (mm) written by say() as exact_mark, its rounding noise as 0 in a
+    panel (say(figures=True): figure_text): the binding's summaries of distances take it as
+    their ``length``."""
+    return exact_mark(mm, digits, with_unit, figure=True)
 
 
 def _written_in(value, written, digits, shown):
@@ -212,11 +236,14 @@ def _written_in(value, written, digits, shown):
     return plain(f"{value / factor:.{n}g}")
 
 
-def _exact(args, with_unit, shown=None):
+def _exact(args, with_unit, shown=None, figures=False):
     """An exact mark (E, e): with its unit in the unit FreeCAD's schema picks for its value
     (getUserPreferred: '0.496 mm' and '0.12 m' under MKS), without it in ``shown`` (a
-    range's unit) or the schema's length unit (a message names it once)."""
+    range's unit) or the schema's length unit (a message names it once); ``figures``: a
+    measured length (figure_mark) at rounding noise as 0."""
     value, digits = float(args[0]), args[1]
+    if figures and args[2:] == ["f"] and noise(value):
+        value = 0.0
     shown = shown or (user_length(value) if with_unit else length_unit())
     return _written_in(value, f"{value:g}", digits, shown) + (f" {shown[1]}" if with_unit else "")
 
@@ -228,19 +255,19 @@ def _in_length_unit(written, with_unit=True, shown=None):
     return _written_in(value, written, None, shown) + (f" {shown[1]}" if with_unit else "")
 
 
-def _range(match):
+def _range(match, figures=False):
     """'<low> to <high> unit' (far points' '9.05 to 16 mm'): both in the unit of the one
     written with its unit."""
     (low_kind, low), (high_kind, high) = match.group(1, 2), match.group(3, 4)
     low, high = low.split("|"), high.split("|")
     shown = user_length(float(high[0]))
-    said = (_exact(low, False, shown) if low_kind == "e" else
+    said = (_exact(low, False, shown, figures) if low_kind == "e" else
             _in_length_unit(low[0], False, shown))
-    return said + " to " + (_exact(high, True, shown) if high_kind == "E" else
+    return said + " to " + (_exact(high, True, shown, figures) if high_kind == "E" else
                             _in_length_unit(high[0], True, shown))
 
 
-def _said(match):
+def _said(match, figures=False):
     kind, args = match.group(1), match.group(2).split("|")
     if kind == "L":
         return length_text(float(args[0]), int(args[1]))
@@ -257,7 +284,7 @@ def _said(match):
     if kind in "Mm":
         return _in_length_unit(args[0], kind == "M")
     if kind in "Ee":
-        return _exact(args, kind == "E")
+        return _exact(args, kind == "E", figures=figures)
     if kind == "R":
         per, unit = tension_unit()
         shown = float(args[0]) if per == 1.0 else floor_digits(float(args[0]) * per, int(args[1]))
@@ -265,8 +292,10 @@ def _said(match):
     return tension_unit()[1]
 
 
-def say(text):
-    """``text`` (or a list of texts) with its marks written in the user's schema of now."""
+def say(text, figures=False):
+    """``text`` (or a list of texts) with its marks written in the user's schema of now;
+    ``figures`` (a panel's): measured lengths (figure_mark) at rounding noise as 0, where
+    the report view and the properties keep the figures."""
     if isinstance(text, (list, tuple)):
-        return [say(t) for t in text]
-    return _MARK.sub(_said, _RANGE.sub(_range, text))
+        return [say(t, figures) for t in text]
+    return _MARK.sub(lambda m: _said(m, figures), _RANGE.sub(lambda m: _range(m, figures), text))
