@@ -260,8 +260,9 @@ def bound_tension(doc, b):
 
 
 def unit_schemas(doc, b):
-    """Imperial decimal and Building Euro: lengths in inches and centimetres; typed '7 in'
-    stays as typed and sets 177.8 mm; leaving a box without typing changes nothing."""
+    """US customary, Imperial decimal and Building Euro: lengths in inches (and thou, FreeCAD's
+    marks '"' and 'thou' under US customary) and centimetres; typed '7 in' stays as typed
+    and sets 177.8 mm; leaving a box without typing changes nothing."""
     from freecad.elastica import taskpanels as T
     prefs = App.ParamGet("User parameter:BaseApp/Preferences/Units")
     old = prefs.GetInt("UserSchema", 0)
@@ -273,7 +274,8 @@ def unit_schemas(doc, b):
         # the Tolerance's 0.001 mm as FreeCAD's boxes write numbers, fixed, to its digits
         # ('3.93701e-05 in' before; a Gui::QuantitySpinBox shows '0.00 in'), 151 mm as its
         # '5.94 in' (it showed '5.94488 in')
-        for schema, length, tol in ((3, "5.94 in", "0.0000394 in"),
+        for schema, length, tol in ((2, '5.94 "', "0.0394 thou"),   # US customary: FreeCAD's marks
+                                    (3, "5.94 in", "0.0000394 in"),
                                     (4, "15.1 cm", "0.0001 cm"),
                                     (5, '6"', "0.0000394 in")):
             prefs.SetInt("UserSchema", schema)

@@ -8,10 +8,13 @@ run_all):
   Tolerance box ('0.0000394 in'): it said 'B-spline within 2.27e-05 in';
 - a measured length at rounding noise (below FreeCAD's Confusion, 1e-7 mm) as FreeCAD
   writes it, 0: the fit of points on an elastica said 'rms 1.2e-11 mm, max 2.24e-11 mm',
-  the elliptic blend of points in line 'B-spline within 7.11e-15 mm'.
+  the elliptic blend of points in line 'B-spline within 7.11e-15 mm';
+- under US customary the Fit panel's warning names the far points' place with its unit,
+  '"' as FreeCAD writes inches there: it gave the place bare after '0.974 thou', read as
+  thou.
 
 Screenshots: gui_ellblend_loop_imperial.png, gui_fit_result_imperial.png,
-gui_fit_rounding_noise.png, gui_ellblend_rounding_noise.png."""
+gui_fit_rounding_noise.png, gui_ellblend_rounding_noise.png, gui_fit_outliers_us.png."""
 import re
 
 import FreeCAD as App
@@ -103,6 +106,29 @@ def rounding_noise_as_zero(doc):
     G.pump()
 
 
+def far_place_in_us_customary(doc):
+    """40 points on the sample curve, noise 1 \u00b5m, two glitches 0.15 and 0.25 mm off,
+    fitted under US customary: the warning line gives their distances in thou, as FreeCAD
+    writes lengths under 2.54 mm there, and the farthest's place in inches, named '"'."""
+    import numpy as np
+    with G.user_schema(2):
+        xy, _ = S.keyline_xy(40)
+        xy = xy + np.random.default_rng(4).normal(0.0, 0.001, xy.shape) + [0.0, -160.0]
+        xy[[10, 25]] += [[0.12, -0.09], [-0.20, 0.15]]
+        sk = S.points_sketch(doc, xy, "FineScan")
+        panel = G.open_panel(doc, "Elastica_Fit", [(sk, "")], "Fit elastica")
+        panel.model.setCurrentIndex(1)                       # smooth
+        G.wait(600)
+        said = panel.warning[1].text()
+        G.screenshot("gui_fit_outliers_us.png")
+        G.check(panel.warning[0].isVisible() and "outliers?" in said
+                and re.search(r"lie [0-9.]+ to [0-9.]+ thou from the curve", said)
+                and re.search(r'\(the farthest at \(-?[0-9.]+, -?[0-9.]+, -?[0-9.]+\) "\)', said),
+                f"US customary: the far points in thou, their place in inches named: {said!r}")
+        panel.reject()
+        G.pump()
+
+
 def run_all(smoke):
     global G
     G = smoke
@@ -110,4 +136,5 @@ def run_all(smoke):
     ellblend_loop_in_the_schema(doc)
     fit_result_in_plain_decimals(doc)
     rounding_noise_as_zero(doc)
+    far_place_in_us_customary(doc)
     App.closeDocument(doc.Name)

@@ -82,9 +82,12 @@ class ClosedJoinTest(S.DocTest):
             try:
                 App.Units.setSchema(3)
                 inches = said(s, "Status")
+                App.Units.setSchema(2)          # US customary: '"', as FreeCAD writes inches
+                marked = said(s, "Status")      # there and this text its other lengths
             finally:
                 App.Units.setSchema(schema)
             self.assertIn(f"(length {seam / 25.4:.6g} -> {now / 25.4:.6g} in)", inches)   # exact
+            self.assertIn(f'(length {seam / 25.4:.6g} -> {now / 25.4:.6g} ")', marked)
             self.assertEqual(len([m for m in printed if "earlier version" in m]), 1, printed)
             s.touch()
             self.doc.recompute()

@@ -3,18 +3,20 @@ write them (units.plain): in the unit FreeCAD's schema picks for each value, fro
 value (a check's typed length is not its '%g' text in mm said again: rounded twice), in
 fixed notation down to 1e-6 of the unit (the Fit panel said 'B-spline within 2.27e-05 in'
 under Imperial decimal beside a Tolerance box of '0.0000394 in'); a measured length at
-rounding noise as FreeCAD writes it at its precision ('0 mm', not '1.82e-11 mm')."""
+rounding noise as FreeCAD writes it at its precision ('0 mm', not '1.82e-11 mm'); numbers
+written without their unit followed by it."""
 import re
 import sys
 import unittest
 
 import FreeCAD as App
+import numpy as np
 
 import elastica_samples as S
 from freecad.elastica import fit as Fi, units as U
 from freecad.elastica.proxy import InputProblem, check_number, check_tolerance, said
 
-STANDARD, MKS, IMPERIAL_DECIMAL = 0, 1, 3
+STANDARD, MKS, US_CUSTOMARY, IMPERIAL_DECIMAL = 0, 1, 2, 3
 
 
 def reported(check, *args, **kw):
@@ -129,6 +131,27 @@ class MeasuredTextsTest(S.DocTest):
                     self.assertEqual(U.say(U.figure_mark(mm, 3), figures=True),
                                      U.say(U.exact_mark(mm, 3)))
                 self.assertNotEqual(U.say(U.exact_mark(1e-9), figures=True), zero)
+
+    def test_a_place_names_its_unit(self):
+        """40 scanned points, noise 1 \u00b5m, two glitches 0.1 and 0.2 mm off: the warning
+        gives the farthest's place with its unit, the schema's length unit as FreeCAD writes
+        it after a number. Without it the place read in the unit named last: 'the others
+        within 24.7 \u00b5m (the farthest at (232.7, 24.03, -13.55))' under Standard (mm read
+        as \u00b5m), '0.974 thou (... (9.161, ...))' under US customary (inches as thou),
+        '2.56 mm (... (0.2128, ...))' under MKS (metres as mm)."""
+        xy, _ = S.keyline_xy(40)
+        xy = xy + np.random.default_rng(4).normal(0.0, 0.001, xy.shape)
+        xy[[10, 25]] += [[0.12, -0.09], [-0.20, 0.15]]
+        f = Fi.make(self.doc, [(S.points_sketch(self.doc, xy, "Glitches"), [])], Model="smooth")
+        self.doc.recompute()
+        top = S.SKETCH_PLACEMENT.multVec(App.Vector(*xy[25], 0))
+        for schema, unit, factor in ((STANDARD, "mm", 1.0), (MKS, "m", 1000.0),
+                                     (US_CUSTOMARY, '"', 25.4), (IMPERIAL_DECIMAL, "in", 25.4)):
+            App.Units.setSchema(schema)
+            said_now = [w for w in said(f, "Warnings") if "outliers?" in w]
+            self.assertEqual(len(said_now), 1, list(f.Warnings))
+            place = ", ".join(f"{v / factor:.4g}" for v in (top.x, top.y, top.z))
+            self.assertIn(f"(the farthest at ({place}) {unit}): ", said_now[0])
 
 
 if __name__ == "__main__":

@@ -19,7 +19,7 @@ from .geometry import el, np, plane_coordinates, polyline_length, to_plane
 from .nearest import drawn_distances, nearest_on
 from .proxy import InputProblem, check_degree, check_number, check_tolerance
 from .sources import curve_order, file_order
-from .units import coordinate_mark, exact_mark, figure_mark
+from .units import coordinate_mark, exact_mark, figure_mark, length_unit_mark
 
 MIN_POINTS = 6          # fewer points cannot determine the 7 (5 shape) parameters of a fit
 MODELS = ["discrete", "smooth"]
@@ -316,7 +316,8 @@ def _far_points(data, dist, plane, free=None):
     worst = plane.multVec(App.Vector(*map(float, data[farthest])))
     at = ", ".join(coordinate_mark(v) for v in (worst.x, worst.y, worst.z))   # units.say
     said = el().far_points_summary(dist, far, free_distances=free, length=figure_mark)
-    return [f"{said} (the farthest at ({at})): "
+    # the place's unit named: after '... within 24.7 \u00b5m' its mm read as \u00b5m
+    return [f"{said} (the farthest at ({at}) {length_unit_mark(written=True)}): "
             "outliers? Each pulls the fit towards itself: remove them to fit the rest"]
 
 

@@ -477,7 +477,7 @@ class SplineProxy(FeatureProxy):
         obj.Shape = part_bspline(bs, plc).toShape()
         if changed:                       # marks: in the schema's length unit (units.say)
             length = (f" (length {coordinate_mark(old.Length, 6)} -> "
-                      f"{coordinate_mark(obj.Shape.Length, 6)} {length_unit_mark()})")
+                      f"{coordinate_mark(obj.Shape.Length, 6)} {length_unit_mark(written=True)})")
             changed = [w + length for w in changed]
             for w in changed:                 # once: the next recompute finds the new shape
                 App.Console.PrintWarning(f"Elastica {obj.Label}: {say(w)}\n")

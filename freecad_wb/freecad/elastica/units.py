@@ -135,7 +135,7 @@ def unit_names(text):
 # A text a recompute writes (Status, Warnings) may hold its figures as marks: say() writes
 # each in the schema of now, so a panel opened after a schema change says the stored text
 # again in the new one without a recompute (proxy.said keeps the marked text).
-_MARK = re.compile("\x01([LKkTNUuRMmEe])([^\x02]*)\x02")
+_MARK = re.compile("\x01([LKkTNUuwRMmEe])([^\x02]*)\x02")
 _RANGE = re.compile("\x01([em])([^\x02]*)\x02 to \x01([EM])([^\x02]*)\x02")
 # a length written '<number> mm' (the library's messages take a unit to write after their
 # figures): not '1/mm', 'mm^2', 'N mm^2'
@@ -165,9 +165,11 @@ def per_area_mark(value, digits=3):
     return f"\x01N{float(value)!r}|{digits}\x02"
 
 
-def length_unit_mark():
-    """The schema's length unit as the parser reads it ('mm', 'in'), written by say()."""
-    return "\x01u\x02"
+def length_unit_mark(written=False):
+    """The schema's length unit as the parser reads it ('mm', 'in': in '/in^2'), written by
+    say(); ``written``: as FreeCAD writes it after a number, as the lengths beside it ('"'
+    under US customary): the unit of numbers written without theirs (coordinate_mark)."""
+    return "\x01w\x02" if written else "\x01u\x02"
 
 
 def tension_unit_mark():
@@ -199,9 +201,9 @@ def mm_marked(text):
 
 
 def coordinate_mark(mm, digits=4):
-    """A coordinate (mm) without its unit, written by say() in the schema's length unit (a
-    message names the unit once, or the schema's: '(219.9, -101.6, -87.72)'), from its
-    exact value (exact_mark)."""
+    """A coordinate (mm) without its unit, written by say() in the schema's length unit (the
+    message names it after them, length_unit_mark(written=True): '(219.9, -101.6, -87.72)
+    mm'), from its exact value (exact_mark)."""
     return exact_mark(mm, digits, with_unit=False)
 
 
@@ -281,6 +283,8 @@ def _said(match, figures=False):
         return f"{float(args[0]) * tension_unit()[0]:.{int(args[1])}g}"
     if kind == "u":
         return length_unit()[1]
+    if kind == "w":
+        return user_length(REFERENCE_MM)[1]
     if kind in "Mm":
         return _in_length_unit(args[0], kind == "M")
     if kind in "Ee":
