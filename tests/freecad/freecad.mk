@@ -18,6 +18,8 @@ FC_ENV     = HOME=$(FCHOME) LIBELASTICA_PATH=$(CURDIR)/$(BUILD)/libelastica.so \
              PYTHONPATH=$(CURDIR)/python:$(CURDIR)/tests/freecad \
              QTWEBENGINE_DISABLE_SANDBOX=1 ELASTICA_TEST_OUT=$(CURDIR)/$(FCDIR) TMPDIR=$(FCHOME)/tmp
 TIMEOUT   ?= 150
+# the GUI smoke drives every panel (275 checks): ~150 s on a loaded 2-core machine
+GUI_TIMEOUT ?= 450
 
 .PHONY: all fc-home fc-tests fc-gui fc-demo fc-gallery fc-addon
 all: fc-tests fc-addon fc-gui
@@ -60,7 +62,7 @@ fc-demo: fc-home
 fc-gui: fc-home fc-demo
 	@echo "== freecad (GUI, xvfb-run -a) tests/freecad/gui_smoke.py"
 	@rm -f $(FCDIR)/gui_smoke.result $(FCDIR)/gui_*.png
-	@rc=0; env $(FC_ENV) timeout $(TIMEOUT) xvfb-run -a -s "-screen 0 1280x1024x24" \
+	@rc=0; env $(FC_ENV) timeout $(GUI_TIMEOUT) xvfb-run -a -s "-screen 0 1280x1024x24" \
 	  freecad $(CURDIR)/tests/freecad/gui_smoke.py > $(FCDIR)/gui_smoke.log 2>&1 || rc=$$?; \
 	if [ $$rc -ne 0 ] || [ "$$(head -n 1 $(FCDIR)/gui_smoke.result 2>/dev/null)" != "PASS" ]; then \
 	  tail -n 40 $(FCDIR)/gui_smoke.log; cat $(FCDIR)/gui_smoke.result 2>/dev/null; \
