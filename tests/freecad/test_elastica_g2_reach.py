@@ -1,6 +1,7 @@
 """freecadcmd -t tests of what a G2 blend pulled beyond its reach says (QA12): the
 largest tension found, to 6 significant digits and rounded down to one that solved; a
 tension asked named to 6 digits (split from test_elastica_blend.py, over 800 lines)."""
+import math
 import re
 
 import FreeCAD as App
@@ -39,3 +40,29 @@ class G2ReachTest(S.DocTest):
         self.doc.recompute()
         self.assertTrue(b.Status.startswith("error: no G2 blend at tension 0.00300123 1/mm"),
                         b.Status)
+
+    def test_below_the_reach_the_error_says_a_batten_can_be_missed(self):
+        """QA16 F5: an arc of radius 20 mm (from the origin heading +x, 90 deg) into a line from
+        (90, 60) heading +x: a free G2 batten exists (230 mm, by an independent shooting solve)
+        but the solver does not reach it, and the error said "the largest tension a G2 batten
+        was found at is about 0.03 (there can be gaps below it)", as if tension 0 should work.
+        Now, where it fails below the tension reached, it says a batten can be missed."""
+        sk = self.doc.addObject("Sketcher::SketchObject", "ArcLine")
+        r = 20.0
+        sk.addGeometry(Part.ArcOfCircle(Part.Circle(App.Vector(0, r, 0), App.Vector(0, 0, 1), r),
+                                        -math.pi / 2, 0.0), False)
+        sk.addGeometry(Part.LineSegment(App.Vector(90, 60, 0), App.Vector(150, 60, 0)), False)
+        self.doc.recompute()
+        b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Continuity="G2", Tension=0.0)
+        self.doc.recompute()
+        if "Invalid" not in b.State:    # the solver reaches it: then it joins G2
+            self.assertAlmostEqual(b.BlendTension, 0.0, delta=1e-12)
+            return
+        self.assertNotIn("gaps below it", b.Status)
+        found = re.search("G2 battens were found at tensions up to about ([0-9.e-]+) 1/mm\u00b2, "
+                          "but none at this one: the solver bends the G1 blend into G2 and can "
+                          "miss a batten that exists", b.Status)
+        self.assertIsNotNone(found, b.Status)
+        b.Tension = float(found.group(1))    # the tension said solves
+        self.doc.recompute()
+        self.assertEqual(b.State, ["Up-to-date"], b.Status)

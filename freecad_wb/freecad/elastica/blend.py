@@ -268,7 +268,16 @@ def g2_blend(r, i, mode, value, tol, degree):
         except (ValueError, ArithmeticError, RuntimeError):
             pass
         reach = g2_tension_reach(pts, ends) if "tension" in kw else None
-        if reach is not None and reach > 0.0:
+        if reach is not None and reach > kw.get("tension", 0.0):
+            # below the reach the solver's paths missed one: QA16's arc of radius 18-23 mm
+            # into a line has a free G2 batten (230 mm at 20 mm, found by an independent
+            # shooting solve) that bending the G1 blend does not reach past a fold; "(there
+            # can be gaps below it)" read as if the tension asked should work
+            hint = (f"G2 battens were found at tensions up to about "
+                    f"{reach_mark(reach, G2_TENSION_DIGITS)}, but none at this one: the "
+                    "solver bends the G1 blend into G2 and can miss a batten that exists; "
+                    "try another tension up to that, a length, or G1")
+        elif reach is not None and reach > 0.0:
             # rounded down in the unit shown: typed back, it is within reach
             hint += (f"; the largest tension a G2 batten was found at is about "
                      f"{reach_mark(reach, G2_TENSION_DIGITS)} "
