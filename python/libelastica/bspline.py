@@ -143,6 +143,12 @@ class BSpline:
         check(lib.el_bspline_curvature(self._c(), len(t), dptr(t), dptr(out)), "BSpline.curvature")
         return out
 
+    def mapped(self, fn) -> "BSpline":
+        """This B-spline with its poles mapped by ``fn`` ((n, dim) -> (n, dim')), knots
+        kept: an affine fn maps the curve exactly; an isometry (a rotation and shift, a
+        plane's embedding in 3D: PreparedKeyline.to_input) keeps max_deviation too."""
+        return BSpline(self.degree, fn(self.poles), self.knots, self.mults, self.max_deviation)
+
     # -- serialisation ------------------------------------------------------
     def to_dict(self) -> dict[str, Any]:
         """A JSON-ready dict (lists and numbers)."""
@@ -265,7 +271,7 @@ def keyline_bspline(first, second, tol=None, degree: int = 3, ends=None) -> BSpl
     (:func:`smooth_chain_to_bspline`: within ``tol``, default 1e-6 of their length, the joint's point, tangent and zero
     curvature exact); discrete ones, the C2 cubic through the vertices of both (the joint
     once), natural at the far ends (``tol``, ``degree`` unused), each half continued to
-    the foot of its end point in ``ends`` (two points or None: KeylineFit.ends) by
+    the foot of its end point in ``ends`` (two points or None: KeylineFit.ends_local) by
     DiscreteElastica.continued_to. Two separate cubics would each leave the joint with
     its own end tangent."""
     from .core import DiscreteElastica, SmoothElastica

@@ -312,13 +312,16 @@ def cmd_bspline(args) -> int:
     out, splines, names = [], [], []
     for items in groups:
         curves = [curve_from_dict(it, name=args.file) for it in items]
+        # the DXF in the input's coordinates; the JSON in the curve's (as the fit record's),
+        # a keyline's in the input's (as `fit --keyline`'s, KeylineFit.to_bspline's)
+        to_input = _input_map(items[0]) if isinstance(items[0], dict) else None
         if len(curves) == 2:           # a keyline: ONE B-spline through its joint
             ends = [it.get("end") if isinstance(it, dict) else None for it in items]
             with tol_option("--tol"):
                 b = el.keyline_bspline(curves[0], curves[1], args.tol, args.degree,
                                        None if None in ends else ends)
             out.append({"sides": [{"curve": curve_to_dict(c), **_kept(it)} for c, it in zip(curves, items)],
-                        "bspline": b.to_dict()})
+                        "bspline": _mapped_bspline(b, to_input).to_dict()})
             names.append(f"keyline of two {type(curves[0]).__name__}")
         else:
             it = items[0]
@@ -328,8 +331,6 @@ def cmd_bspline(args) -> int:
             out.append({"curve": curve_to_dict(curves[0]), **_kept(it), "bspline": b.to_dict()})
             names.append(f"chain of {len(curves[0].pieces)} elasticae" if
                          hasattr(curves[0], "pieces") else type(curves[0]).__name__)
-        # the JSON in the curve's coordinates (as the fit record's), the DXF in the input's
-        to_input = _input_map(items[0]) if isinstance(items[0], dict) else None
         splines.append(_mapped_bspline(b, to_input))
     result = out[0] if len(out) == 1 else {"sides": out}
     if args.json:

@@ -137,11 +137,9 @@ def _input_map(rec: Dict[str, Any]):
 
 
 def _mapped_bspline(b, to_input):
-    """The BSpline b with its poles mapped by to_input (an affine map: the curve maps
-    exactly); b itself when to_input is None."""
-    from .bspline import BSpline
-    return b if to_input is None else BSpline(b.degree, to_input(b.poles), b.knots, b.mults,
-                                              b.max_deviation)
+    """The BSpline b with its poles mapped by to_input (BSpline.mapped: an isometry, the
+    curve maps exactly); b itself when to_input is None."""
+    return b if to_input is None else b.mapped(to_input)
 
 
 def _plane_record(frame) -> Optional[Dict[str, Any]]:

@@ -286,15 +286,17 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
         extra_info = {"input_rms": kres.input_rms, "input_max_error": kres.input_max_error,
                       "input_points": len(pts),
                       "inflection_index": int(kres.inflection),
-                      "inflection_point": prep.to_input(kres.joint),
-                      "step": prep.r, "coordinates": "x''y'' (PCA frame of the resampled polygon)",
+                      "inflection_point": kres.joint,
+                      "step": prep.r, "coordinates": "x''y'' (PCA frame of the resampled polygon; frame2d "
+                                     "maps it to the input's, where the bspline and "
+                                     "inflection_point are)",
                       "frame2d": {"origin": prep.frame2d.origin, "f1": prep.frame2d.f1,
                                   "f2": prep.frame2d.f2}}
         for i, res in enumerate((kres.first, kres.second)):
             rec = _side_record(res, res.points, args.model)
             rec["side"] = i
-            if kres.ends is not None:    # where a discrete half ends: `elastica bspline` again
-                rec["end"] = [float(v) for v in kres.ends[i]]
+            if kres.ends_local is not None:   # where a discrete half ends (x''y'', as its
+                rec["end"] = [float(v) for v in kres.ends_local[i]]     # curve): `bspline` again
             records.append(rec)
             pictures.append((res.points, res, None))
             fitted.append(res.points)
@@ -352,10 +354,9 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
     splines = []
     if args.bspline_tol is not None or args.dxf:
         tol = args.bspline_tol      # > 0: the parser's; None: 1e-6 of the curve's length
-        if args.keyline:       # ONE B-spline through the joint (x''y'', as the sides)
+        if args.keyline:       # ONE B-spline through the joint (x''y'', as the sides, here)
             with tol_option("--bspline-tol"):
-                splines.append(kres.to_bspline(tol, args.degree))
-            doc["bspline"] = splines[0].to_dict()
+                splines.append(kres.to_bspline(tol, args.degree, input_coords=False))
         else:
             with tol_option("--bspline-tol"):   # a discrete fit's: its ends
                 splines.append(res.to_bspline(tol, args.degree))
@@ -366,8 +367,11 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
     if args.model == "discrete" and not args.keyline and args.step is None:
         # (a --step's polygon is judged by the file's points: the ResampleWarning)
         _warn_coarse_polygon(path, records[0], data, res)
-    # the DXF gets the curves in the input's coordinates (3D for 3D input)
+    # the DXF gets the curves in the input's coordinates (3D for 3D input), and so does a
+    # keyline's JSON (KeylineFit.to_bspline's); a one-piece record's is the curve's
     splines = [_mapped_bspline(b, to_input) for b in splines]
+    if args.keyline and splines:
+        doc["bspline"] = splines[0].to_dict()
     _write_fit_outputs(path, args, batch, doc, records, pictures, splines, pts)
     return records, doc
 

@@ -3,6 +3,8 @@ that start at its inflection with opposite tangents and zero curvature (:func:`f
 :class:`KeylineFit`); the single-curve fit is :mod:`libelastica.fit`'s."""
 from __future__ import annotations
 
+import dataclasses
+import math
 import warnings
 from dataclasses import dataclass
 from typing import Optional
@@ -17,14 +19,20 @@ from .order import order_summary, out_of_order
 
 @dataclass(frozen=True)
 class KeylineFit:
-    """Result of :func:`fit_keyline`: the prepared keyline (``prepared``, a
-    PreparedKeyline: polygon in x''y'' coordinates, frames), and the keyline as one
-    G2 curve of two elasticae that start at the joint (the inflection) with opposite
-    tangents and zero curvature: ``first`` (joint -> first point) and ``second``
-    (joint -> last point), FitResults in x''y'' coordinates whose ``points`` are the
-    points of that side (from the joint outwards). ``joint``: the joint (x''y'');
-    ``inflection``: the polygon vertex nearest it; ``inflection_estimate``: the
-    RDP-style estimate of the preparation (``prepared.inflection``) the fit started from.
+    """Result of :func:`fit_keyline`, the keyline as one G2 curve of two elasticae that
+    start at the joint (the inflection) with opposite tangents and zero curvature.
+
+    In the input's coordinates (3D for 3D input), as `elastica fit --keyline` and FreeCAD
+    write them: :meth:`to_bspline`, ``joint`` (where the halves meet), ``ends`` (discrete:
+    where the keyline ends), :meth:`side_points`; :meth:`side_curve` in the input's plane.
+    In the fit's own frame x''y'' (``prepared``'s PCA frame: centroid at the origin,
+    rotated; ``to_input`` maps it back): ``first`` (joint -> the polygon's first vertex)
+    and ``second`` (joint -> its last; the resampling may run the points backwards), the
+    sides' FitResults, whose ``points`` are the points of that side (from the joint
+    outwards); ``joint_local``, ``ends_local``; ``prepared`` (a
+    PreparedKeyline: polygon, frames). ``inflection``: the polygon vertex nearest the joint;
+    ``inflection_estimate``: the RDP-style estimate of the preparation
+    (``prepared.inflection``) the fit started from.
     """
     prepared: object
     inflection: int
@@ -37,9 +45,11 @@ class KeylineFit:
     # sides' rms / max_error are the fitted points' (a discrete keyline's: the resampled
     # polygon's vertices, paired: 0.116 / 0.277 where the file's points lie 0.132 / 0.344)
     input_distances: Optional[np.ndarray] = None
-    # discrete: where the keyline ends (2, 2), the feet of the input's end points on the
+    # discrete: where the keyline ends (2, dim), the feet of the input's end points on the
     # halves continued by their recursion (the polygon stops up to a step short, §5.3)
     ends: Optional[np.ndarray] = None
+    joint_local: Optional[np.ndarray] = None      # joint, ends in x''y'' (the sides' frame)
+    ends_local: Optional[np.ndarray] = None
 
     @property
     def input_rms(self) -> float:
@@ -49,20 +59,44 @@ class KeylineFit:
     def input_max_error(self) -> float:
         return float(np.max(self.input_distances))
 
+    def to_input(self, xy) -> np.ndarray:
+        """x''y'' points (the sides' frame) in the input's coordinates (PreparedKeyline.to_input)."""
+        return self.prepared.to_input(xy)
+
     def side_points(self, which: str = "second", input_coords: bool = True) -> np.ndarray:
         """The fitted model points of one side (paired vertices or feet), in the
         input's coordinates (3D for 3D input) or in x''y''."""
-        r = self.first if which == "first" else self.second
-        pts = r.model_points()
-        return self.prepared.to_input(pts) if input_coords else pts
+        pts = self._side(which).model_points()
+        return self.to_input(pts) if input_coords else pts
 
-    def to_bspline(self, tol: Optional[float] = None, degree: int = 3):
-        """The keyline as ONE B-spline for CAD (x''y'' coordinates, as its halves), from
-        the first point to the last through the joint: :func:`keyline_bspline` (smooth:
-        within ``tol``, default 1e-6 of its length, G2 at the joint exactly; discrete: the C2 cubic through both
-        halves' vertices)."""
+    def side_curve(self, which: str = "second", input_coords: bool = True):
+        """The elastica of one side (from the joint outwards), moved into the input's
+        coordinates (3D input: its plane's x'y', which ``prepared.frame.to_3d`` maps), or
+        as fitted in x''y'' (``input_coords=False``): the start point mapped, phi turned by
+        the frame's angle (x''y'' is a rotation and shift of the plane, Frame2D)."""
+        c = self._side(which).curve
+        if not input_coords:
+            return c
+        f = self.prepared.frame2d
+        x0, y0 = f.to_parent(np.array([c.x0, c.y0]))
+        turn = math.atan2(f.f1[1], f.f1[0])
+        return dataclasses.replace(c, x0=float(x0), y0=float(y0), phi=float(c.phi + turn))
+
+    def _side(self, which: str) -> FitResult:
+        if which not in ("first", "second"):
+            raise ValueError(f"KeylineFit: which must be 'first' or 'second', got {which!r}")
+        return self.first if which == "first" else self.second
+
+    def to_bspline(self, tol: Optional[float] = None, degree: int = 3, input_coords: bool = True):
+        """The keyline as ONE B-spline for CAD, from the first point to the last through
+        the joint: :func:`keyline_bspline` of the halves (smooth: within ``tol``, default
+        1e-6 of its length, G2 at the joint exactly; discrete: the C2 cubic through both
+        halves' vertices, to ``ends``), in the input's coordinates (3D poles for 3D input:
+        the x''y'' B-spline's poles mapped by :meth:`to_input`, exact) as `elastica fit
+        --keyline --dxf` and FreeCAD write it, or in x''y'' (``input_coords=False``)."""
         from .bspline import keyline_bspline
-        return keyline_bspline(self.first.curve, self.second.curve, tol, degree, self.ends)
+        b = keyline_bspline(self.first.curve, self.second.curve, tol, degree, self.ends_local)
+        return b.mapped(self.to_input) if input_coords else b
 
 
 def _polyline_distances(points, vertices, chunk_pairs: int = 1 << 21) -> np.ndarray:
@@ -188,6 +222,8 @@ def fit_keyline(points, r: Optional[float] = None, model: str = "discrete", side
     each point on either side; discrete, the polygon's vertex i pairs with vertex i of
     its side and the split vertex moves while the fit improves; h is free on both sides
     (§5.4, Table 1) or held with ``fixed={"h": r}``. ``max_iter``, ``tol`` apply.
+    The result's B-spline, joint and ends are in the input's coordinates, its sides'
+    FitResults in the PCA frame x''y'' (:class:`KeylineFit`).
     Raises DomainError when the points show no inflection: none found, or one of their
     noise (the joint within MIN_SIDE points of an end, or two elasticae fitting the
     polygon less than twice as well as one turning one way: _check_keyline_split)."""
@@ -254,7 +290,9 @@ def fit_keyline(points, r: Optional[float] = None, model: str = "discrete", side
         warnings.warn(f"fit_keyline: not converged: {ffi.string(lib.el_strerror(st)).decode()} "
                       f"(status {st})", ConvergenceWarning, stacklevel=2)
     return KeylineFit(prepared=prep, inflection=infl, first=fits[0], second=fits[1],
-                      inflection_estimate=i0, joint=J, input_distances=inputs, ends=ends)
+                      inflection_estimate=i0, joint=prep.to_input(J), input_distances=inputs,
+                      ends=None if ends is None else prep.to_input(ends), joint_local=J,
+                      ends_local=ends)
 
 
 def _keyline_tails(halves, end_points):

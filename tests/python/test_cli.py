@@ -498,8 +498,8 @@ def test_fit_keyline_3d(capsys, tmp_path):
 def test_fit_keyline_bspline_is_one_curve_through_the_joint(capsys, tmp_path, fake_ezdxf, model):
     """--keyline with --bspline-tol / --dxf writes ONE B-spline from the first point to the
     last through the joint (two natural cubics of a discrete keyline each left the joint
-    with its own tangent): the document's "bspline", the DXF's one SPLINE (in the input's
-    coordinates); discrete, through every vertex of both sides, the joint once, to each
+    with its own tangent): the document's "bspline" and the DXF's one SPLINE, in the input's
+    coordinates (the sides' curves: x''y'', "frame2d"); discrete, through every vertex of both sides, the joint once, to each
     side's "end"; smooth,
     on both halves to its certified deviation, the joint's tangent and zero curvature
     exact; `elastica bspline` of the fit's JSON gives the same B-spline."""
@@ -509,7 +509,9 @@ def test_fit_keyline_bspline_is_one_curve_through_the_joint(capsys, tmp_path, fa
     assert "B-spline    of the keyline" in r.stdout
     doc = json.loads((tmp_path / "k.json").read_text())
     assert all("bspline" not in side for side in doc["sides"])
-    b = el.BSpline.from_dict(doc["bspline"])
+    b_in = el.BSpline.from_dict(doc["bspline"])
+    f = {k: np.array(v) for k, v in doc["sides"][0]["frame2d"].items()}   # input -> x''y''
+    b = b_in.mapped(lambda p: (p - f["origin"]) @ np.c_[f["f1"], f["f2"]])
     first, second = (el.io.curve_from_dict(side["curve"]) for side in doc["sides"])
     if model == "discrete":      # each half continued to its "end" (KeylineFit.ends)
         tails = [c.continued_to(side["end"]) for c, side in zip((first, second), doc["sides"])]
@@ -532,14 +534,12 @@ def test_fit_keyline_bspline_is_one_curve_through_the_joint(capsys, tmp_path, fa
         assert u[0] * np.sin(a) - u[1] * np.cos(a) == pytest.approx(0.0, abs=1e-12)
         assert abs(b.curvature([first.length])[0]) <= 1e-9 * np.max(np.abs(b.curvature(s1)))
     (_, ctrl, _, _, _), = [c for c in fake_ezdxf if c[0] == "spline"]
-    f = {k: np.array(v) for k, v in doc["sides"][0]["frame2d"].items()}   # x''y'' -> input
-    to_input = f["origin"] + np.outer(b.poles[:, 0], f["f1"]) + np.outer(b.poles[:, 1], f["f2"])
-    np.testing.assert_allclose(np.array(ctrl)[:, :2], to_input, rtol=0, atol=1e-9 * b.domain[1])
+    np.testing.assert_allclose(np.array(ctrl)[:, :2], b_in.poles, rtol=0, atol=1e-9 * b.domain[1])
     r = cli(capsys, "bspline", tmp_path / "k.json", "--tol", "1e-6", "--json", "-")
     assert r.returncode == 0, r.stderr
     again = json.loads(r.stdout)
     assert len(again["sides"]) == 2
-    np.testing.assert_allclose(el.BSpline.from_dict(again["bspline"]).poles, b.poles, rtol=0,
+    np.testing.assert_allclose(el.BSpline.from_dict(again["bspline"]).poles, b_in.poles, rtol=0,
                                atol=1e-12 * b.domain[1])
     if model == "discrete":      # a batch's JSON: each file's document, as one file's
         r = cli(capsys, "fit", SAMPLE_S, SAMPLE_S, "--keyline", "--bspline-tol", "1e-6",

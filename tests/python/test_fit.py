@@ -867,32 +867,38 @@ def test_keyline_one_g2_curve(model, seed):
     for side in ("first", "second"):
         r = getattr(kf, side)
         assert r.status == 0
-        assert np.allclose(r.curve.params[:2], kf.joint)
+        assert np.allclose(r.curve.params[:2], kf.joint_local)
         assert r.rms <= 1.5 * kl.noise, (side, r.rms / kl.noise)
         # each point's distance is its distance to the keyline (the nearer side)
         d = np.minimum(*(curve_distances(c, r.points)[0] for c in (kf.first.curve, kf.second.curve)))
         np.testing.assert_allclose(np.abs(r.distances), d, rtol=0, atol=1e-9 * kl.length)
     assert _off_truth(kf, kl) <= 0.5 * kl.noise
-    J3 = kf.prepared.to_input(kf.joint)
-    assert np.linalg.norm(J3 - kl.inflection_xyz) <= 1.0 * kf.prepared.r
+    assert np.linalg.norm(kf.joint - kl.inflection_xyz) <= 1.0 * kf.prepared.r
 
 
 @pytest.mark.parametrize("model", ["discrete", "smooth"])
 def test_keyline_to_bspline_runs_through_the_joint(model):
     """KeylineFit.to_bspline is ONE B-spline from the first side's far end through the
-    joint to the second's (x''y''; a discrete side's end continued to KeylineFit.ends);
-    keyline_bspline refuses halves of two models."""
+    joint to the second's (input_coords=False: x''y'', a discrete side's end continued to
+    KeylineFit.ends_local; by default the same in the 3D scan's coordinates, through
+    KeylineFit.joint to KeylineFit.ends); keyline_bspline refuses halves of two models."""
     kl = keyline_3d(seed=0, noise=1e-3)
     kf = el.fit_keyline(kl.xyz, model=model)
-    b = kf.to_bspline(1e-6 * kl.length)
+    b = kf.to_bspline(1e-6 * kl.length, input_coords=False)
     a, c = kf.first.curve, kf.second.curve
-    ends = kf.ends if model == "discrete" else [a.points([a.length])[0], c.points([c.length])[0]]
+    ends = kf.ends_local if model == "discrete" else [a.points([a.length])[0], c.points([c.length])[0]]
     np.testing.assert_allclose(b(np.array(b.domain)), ends, rtol=0, atol=1e-9 * kl.length)
     # the joint at its parameter: the first side's arc length, or its polygon's length
     t = a.length if model == "smooth" else \
-        np.sum(np.linalg.norm(np.diff(np.vstack([a.points(), a.continued_to(kf.ends[0])]),
+        np.sum(np.linalg.norm(np.diff(np.vstack([a.points(), a.continued_to(kf.ends_local[0])]),
                                       axis=0), axis=1))
-    np.testing.assert_allclose(b([t])[0], kf.joint, rtol=0, atol=1e-9 * kl.length)
+    np.testing.assert_allclose(b([t])[0], kf.joint_local, rtol=0, atol=1e-9 * kl.length)
+    b3 = kf.to_bspline(1e-6 * kl.length)
+    assert b3.dim == 3 and b3 == b.mapped(kf.to_input)
+    np.testing.assert_allclose(b3([t])[0], kf.joint, rtol=0, atol=1e-9 * kl.length)
+    assert np.linalg.norm(kf.joint - kl.inflection_xyz) <= kf.prepared.r
+    if model == "discrete":
+        np.testing.assert_allclose(b3(np.array(b.domain)), kf.ends, rtol=0, atol=1e-9 * kl.length)
     other = el.fit_keyline(kl.xyz, model="smooth" if model == "discrete" else "discrete")
     with pytest.raises(ValueError, match="two SmoothElastica or two DiscreteElastica"):
         el.keyline_bspline(a, other.second.curve)
@@ -939,8 +945,7 @@ def test_keyline_bundled_sample():
         kf = el.fit_keyline(xyz, model=model)
         assert _g2(kf)[1] <= 1e-12
         poly3 = kf.prepared.to_input(kf.prepared.polygon)
-        J3 = kf.prepared.to_input(kf.joint)
-        assert np.linalg.norm(J3 - truth) <= 2.0 * kf.prepared.r
+        assert np.linalg.norm(kf.joint - truth) <= 2.0 * kf.prepared.r
         assert np.linalg.norm(poly3[kf.inflection_estimate] - truth) > 2.0 * kf.prepared.r
         for r in (kf.first, kf.second):
             assert r.rms <= 0.2 and r.status == 0
@@ -982,7 +987,7 @@ def test_keyline_input_distances_are_the_files_points(model):
     dense, gap = [], 0.0      # samples of the halves, and the largest gap between two
     for i, half in enumerate((kf.first.curve, kf.second.curve)):
         if model == "discrete":
-            V = np.vstack([half.points(), half.continued_to(kf.ends[i])])
+            V = np.vstack([half.points(), half.continued_to(kf.ends_local[i])])
             t = np.linspace(0, 1, 400)[:, None]
             dense += [V[j] + t * (V[j + 1] - V[j]) for j in range(len(V) - 1)]
             gap = max(gap, half.h / 399)
@@ -1013,14 +1018,13 @@ def test_discrete_keyline_reaches_the_scans_ends():
     P = c.points(s) + rng.normal(0, noise, (250, 2))
     smooth = el.fit_keyline(P, model="smooth")
     kf = el.fit_keyline(P, model="discrete")
-    loc = kf.prepared.frame2d.to_local(P)
     b = kf.to_bspline()
     B = b(np.array(b.domain))
-    assert np.all(np.linalg.norm(B - loc[[0, -1]], axis=1) <= 3 * noise)
+    assert np.all(np.linalg.norm(B - P[[0, -1]], axis=1) <= 3 * noise)
     np.testing.assert_allclose(B, kf.ends, rtol=0, atol=1e-9 * 300)
     assert max(kf.input_distances[[0, -1]]) <= 3 * noise
     assert kf.input_max_error <= 1.2 * smooth.input_max_error
-    tail = kf.second.curve.continued_to(kf.ends[1])     # the step the polygon left out
+    tail = kf.second.curve.continued_to(kf.ends_local[1])     # the step the polygon left out
     assert len(tail) == 1 and np.linalg.norm(tail[0] - kf.second.curve.points()[-1]) < kf.prepared.r
     assert _g2(kf)[1] <= 1e-12       # the joint untouched
 
@@ -1057,7 +1061,7 @@ def test_fit_keyline_of_a_noisy_arc_finds_no_inflection(model):
     for frac in (0.15, 0.85):
         kl = keyline_3d(seed=2, noise=1e-3, frac_left=frac)
         f = el.fit_keyline(kl.xyz, model=model)
-        assert np.linalg.norm(f.prepared.to_input(f.joint) - kl.inflection_xyz) < 0.02 * 300
+        assert np.linalg.norm(f.joint - kl.inflection_xyz) < 0.02 * 300
 
 
 # ------------------------------------------------------------------ bad input

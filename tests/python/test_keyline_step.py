@@ -47,7 +47,7 @@ SCANS = [(n, noise, seed) for n in (1500, 3000) for noise in (0.005, 0.01) for s
 def test_default_step_finds_the_tile_inflection(n, noise, seed, model):
     pts = tile_scan(n, noise, seed)
     kf = el.fit_keyline(pts, model=model)
-    joint = kf.prepared.to_input(kf.joint)
+    joint = kf.joint
     assert abs(arc_length_on_tile(joint) - S_INFLECTION) < JOINT_TOL
     # the polygon has about KEYLINE_STEPS segments (90-100 here; 2-8 of the zigzag's length
     # on main; the walk cuts corners of what noise the medians keep)

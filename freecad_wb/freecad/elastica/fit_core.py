@@ -6,7 +6,6 @@ curve, a fit that wanders between them, end conditions that cost accuracy) and m
 the points' distances to the curve drawn (fit_shape.py's B-spline)."""
 from __future__ import annotations
 
-import dataclasses
 import math
 from warnings import catch_warnings, simplefilter
 
@@ -267,27 +266,18 @@ def _keyline(xy, model, step):
         simplefilter("ignore", el().OrderWarning)    # ordered by fit_core (file_order, curve_order)
         kf = el().fit_keyline(xy, r=step, model=model)
     first, second = kf.first, kf.second
-    to_plane = kf.prepared.frame2d.to_parent         # the halves live in x''y''
+    to_plane = kf.to_input                           # the sides' results live in x''y''
     skip = 1 if model == "discrete" else 0
     data = to_plane(n.vstack([first.points[::-1], second.points[skip:]]))
     feet = to_plane(n.vstack([first.foot_points()[::-1], second.foot_points()[skip:]]))
     dist = n.concatenate([-first.distances[::-1], second.distances[skip:]])
-    halves = [_moved(r.curve, kf.prepared.frame2d) for r in (first, second)]
+    halves = [kf.side_curve(which) for which in ("first", "second")]   # in the plane
     rms = _rms(dist)
     tails = None
     if kf.ends is not None:
-        lead = first.curve.continued_to(kf.ends[0])
-        tails = (to_plane(kf.ends), polyline_length(n.vstack([first.curve.points()[-1:], lead])))
+        lead = first.curve.continued_to(kf.ends_local[0])
+        tails = (kf.ends, polyline_length(n.vstack([first.curve.points()[-1:], lead])))
     return halves, [first, second], data, feet, dist, rms, float(n.abs(dist).max()), tails
-
-
-def _moved(curve, frame2d):
-    """The same elastica in the parent coordinates of a (proper, rotation-only)
-    Frame2D: the start point mapped, the tangent angle phi turned by the frame's
-    angle; nothing else changes under a rigid motion."""
-    x0, y0 = frame2d.to_parent(np().array([curve.x0, curve.y0]))
-    turn = math.atan2(frame2d.f1[1], frame2d.f1[0])
-    return dataclasses.replace(curve, x0=float(x0), y0=float(y0), phi=float(curve.phi + turn))
 
 
 def _coarse_polygon(xy, constraints, rms):
