@@ -544,7 +544,8 @@ def build_parser() -> argparse.ArgumentParser:
                         "and the points' distances to it)")
     f.add_argument("--degree", type=DEGREE, default=3, help="B-spline degree 3..7 (default 3)")
     f.add_argument("--max-iter", type=_ranged(int, lo=1), metavar="N",
-                   help="Ipopt iterations per start (default 200)")
+                   help="iterations per start, of Levenberg-Marquardt and of Ipopt "
+                        "where it runs (default 200)")
     f.add_argument("--dxf", metavar="PATH", help="write the B-spline as a DXF SPLINE (ezdxf)")
     _units_option(f)
     f.add_argument("--progress", action="store_true",

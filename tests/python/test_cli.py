@@ -642,9 +642,13 @@ def test_bspline_of_a_fit_json_writes_the_dxf_in_the_inputs_coordinates(capsys, 
 
 
 def test_fit_not_converged_exit_1(capsys):
+    """--max-iter caps Levenberg-Marquardt too: a free smooth fit (no Ipopt) stops at 1
+    and exits 1; `fit --help` says so (it said "Ipopt iterations per start", QA16 P1)."""
     r = cli(capsys, "fit", SAMPLE_S, "--model", "smooth", "--max-iter", "1")
     assert r.returncode == 1, (r.stdout, r.stderr)
     assert "status" in r.stdout and "ok" not in r.stdout.split("status")[-1]
+    said = " ".join(cli(capsys, "fit", "--help").stdout.split("--max-iter N")[-1].split()[:12])
+    assert "Levenberg-Marquardt" in said and "Ipopt" in said, said
 
 
 def test_fit_npy_and_bspline_roundtrip(capsys, tmp_path):
