@@ -65,7 +65,14 @@ $(BUILD)/.deps-ok: Makefile
 	fi
 	@mkdir -p $(BUILD) && touch $@
 
-lib: $(BUILD)/libelastica.so $(BUILD)/libelastica.a
+lib: $(BUILD)/libelastica.so $(BUILD)/libelastica.a $(BUILD)/_elastica_abi.py
+
+# The binding's declarations pre-parsed by cffi (out-of-line ABI module, pure Python:
+# python/libelastica/_cdef.py), beside the library: the binding loads them instead of
+# parsing the header at every start (~40 ms and pycparser's import). Debian's cffi 1.15
+# and PyPI's 2.0 write the same bytes, and either Python loads the other's.
+$(BUILD)/_elastica_abi.py: include/elastica.h python/libelastica/_cdef.py | $(BUILD)/.deps-ok
+	$(PYTHON) python/libelastica/_cdef.py include/elastica.h $@
 
 # The Hermite solver's hot path (its objective, root finding, the elliptic integrals and
 # Jacobi functions under it) at -O3 and with sqrt not setting errno (no libm call per

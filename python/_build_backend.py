@@ -7,7 +7,9 @@ an isolated build. This backend uses only the standard library:
 
 * build_wheel: compiles ../libelastica/*.c (or csrc/ in an sdist) with $CC and
   `pkg-config --cflags --libs gsl ipopt` into libelastica/libelastica.so, copies
-  ../include/elastica.h beside it, and zips the package, the metadata from
+  ../include/elastica.h beside it with its declarations pre-parsed by cffi
+  (libelastica/_cdef.py; skipped when this interpreter has no cffi: the package then
+  parses the header at import), and zips the package, the metadata from
   pyproject.toml and the `elastica` console script into a wheel. The library is
   found by libelastica/_ffi.py next to the package first (unless LIBELASTICA_PATH
   is set). With LIBELASTICA_SKIP_BUILD=1 no library is bundled (pure wheel): the
@@ -36,6 +38,7 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 PKG = "libelastica"
 SONAME = "libelastica.so.0"
+ABI_FILE = "_elastica_abi.py"          # libelastica/_cdef.py's FILE
 
 try:
     import tomllib
@@ -140,6 +143,17 @@ def _build_library(outdir: Path) -> Path:
     return so
 
 
+def _abi_module(header: Path):
+    """The header's declarations pre-parsed (libelastica/_cdef.py) by this interpreter's
+    cffi, or None when it has none. Run with -E: pip's build isolation hides the
+    interpreter's site-packages (through PYTHONPATH), where cffi, a dependency, is."""
+    with tempfile.TemporaryDirectory(prefix="libelastica-abi-") as tmp:
+        out = Path(tmp) / ABI_FILE
+        r = subprocess.run([sys.executable, "-E", str(HERE / PKG / "_cdef.py"), str(header), str(out)],
+                           capture_output=True, text=True)
+        return out.read_bytes() if r.returncode == 0 else None
+
+
 # ------------------------------------------------------------------ wheel writing
 
 def _record_line(arcname: str, data: bytes) -> str:
@@ -175,7 +189,7 @@ def _package_files() -> dict:
     files = {}
     for p in sorted((HERE / PKG).rglob("*")):
         if p.is_file() and "__pycache__" not in p.parts and p.suffix not in (".pyc", ".so"):
-            if p.name == "elastica.h":
+            if p.name in ("elastica.h", ABI_FILE):
                 continue               # a stale copy; the build adds the tree's own
             files[p.relative_to(HERE).as_posix()] = p.read_bytes()
     return files
@@ -204,6 +218,9 @@ def build_wheel(wheel_directory, config_settings=None, metadata_directory=None):
     _, inc = _c_sources()
     if inc is not None:
         files[f"{PKG}/elastica.h"] = (inc / "elastica.h").read_bytes()
+        abi = _abi_module(inc / "elastica.h")
+        if abi is not None:
+            files[f"{PKG}/{ABI_FILE}"] = abi
     if os.environ.get("LIBELASTICA_SKIP_BUILD"):
         return _write_wheel(wheel_directory, "py3-none-any", files)
     with tempfile.TemporaryDirectory(prefix="libelastica-build-") as tmp:

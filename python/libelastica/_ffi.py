@@ -1,10 +1,12 @@
 """Private: load libelastica's shared library with cffi (ABI mode).
 
 The declarations come from the one public header, include/elastica.h, with its
-preprocessor lines removed, so they are never retyped by hand. The header is
-found next to this package (installed copy) or in the source tree; the
-library through LIBELASTICA_PATH, a bundled copy, the source tree's build/,
-or the system loader (pkg-config install).
+preprocessor lines removed, so they are never retyped by hand (_cdef.py): pre-parsed
+by the build (cffi's out-of-line module beside the library or in the package) when
+that module was made from this header, else parsed now. The header is found next to
+this package (installed copy) or in the source tree; the library through
+LIBELASTICA_PATH, a bundled copy, the source tree's build/, or the system loader
+(pkg-config install).
 """
 from __future__ import annotations
 
@@ -12,12 +14,12 @@ import decimal
 import math
 import numbers
 import os
-import re
 from pathlib import Path
 from typing import Optional
 
 import numpy as np
-from cffi import FFI
+
+from . import _cdef
 
 _HERE = Path(__file__).resolve().parent
 _SRC_ROOT = _HERE.parent.parent
@@ -30,21 +32,23 @@ def _find(candidates):
     return None
 
 
-def _header_text() -> str:
+def _header() -> str:
     path = _find([_HERE / "elastica.h", _SRC_ROOT / "include" / "elastica.h",
                   "/usr/local/include/elastica.h", "/usr/include/elastica.h"])
     if path is None:
         raise ImportError("libelastica: elastica.h not found (reinstall the package)")
-    text = Path(path).read_text()
-    text = re.sub(r"#ifdef __cplusplus.*?#endif", "", text, flags=re.S)
-    return "\n".join(line for line in text.splitlines() if not line.lstrip().startswith("#"))
+    return path
 
 
-def _load(ffi: FFI):
+def _library() -> Optional[str]:
+    """The library's file, None for the system loader's."""
     env = os.environ.get("LIBELASTICA_PATH")
     if env and not Path(env).is_file():
         raise ImportError(f"libelastica: LIBELASTICA_PATH={env} is not a file")
-    path = env or _find([_HERE / "libelastica.so", _SRC_ROOT / "build" / "libelastica.so"])
+    return env or _find([_HERE / "libelastica.so", _SRC_ROOT / "build" / "libelastica.so"])
+
+
+def _load(ffi, path: Optional[str]):
     try:
         return ffi.dlopen(path or "libelastica.so.0")
     except OSError as exc:
@@ -53,9 +57,11 @@ def _load(ffi: FFI):
             "source tree, set LIBELASTICA_PATH, or `make install`") from exc
 
 
-ffi = FFI()
-ffi.cdef(_header_text())
-lib = _load(ffi)
+_LIBRARY = _library()
+# pre-parsed in the package (wheel), else beside the library (make lib); CDEF_MODULE:
+# the module used, None when the header was parsed (~40 ms more)
+ffi, CDEF_MODULE = _cdef.declarations(_header(), [_HERE] + ([Path(_LIBRARY).parent] if _LIBRARY else []))
+lib = _load(ffi, _LIBRARY)
 
 
 class ElasticaError(ValueError):

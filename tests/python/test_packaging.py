@@ -1,6 +1,7 @@
 """`pip install ./python` into a fresh venv: the wheel compiles the C library from
 the source tree and bundles it, so the installed package imports and fits with no
-LIBELASTICA_PATH and no source tree on sys.path. Offline: the in-tree build
+LIBELASTICA_PATH and no source tree on sys.path, and its declarations pre-parsed by cffi
+(libelastica/_cdef.py) so that it starts without parsing the header. Offline: the in-tree build
 backend has no build requirements, and --no-index --no-deps keeps pip off the
 network (numpy/cffi come from the interpreter's own site-packages)."""
 from __future__ import annotations
@@ -20,6 +21,8 @@ import libelastica as el
 pkg = Path(el.__file__).resolve().parent
 assert Path(sys.prefix).resolve() in pkg.parents, pkg          # the installed copy
 assert (pkg / "libelastica.so").is_file() and (pkg / "elastica.h").is_file()
+assert el._ffi.CDEF_MODULE == str(pkg / "_elastica_abi.py")     # the header pre-parsed
+assert "pycparser" not in sys.modules                          # (not parsed at import)
 c = el.SmoothElastica(x0=0, y0=0, phi=0, mu=1.0, k=0.8, q=0.0, length=3.0)
 s = np.linspace(0, 3, 40)
 pts = c.points(s)

@@ -1,0 +1,93 @@
+"""Private: the C declarations the binding uses, from the one public header.
+
+``cdef_text`` is include/elastica.h without its preprocessor lines, as cffi's cdef
+takes it. Parsing it costs every start ~40 ms (and pycparser's import), so the build
+(``make lib``, the wheel) also writes it pre-parsed: cffi's out-of-line ABI module
+(``set_source(name, None)``, pure Python, no C compiler), which records the CRC-32 of
+the text it was made from. ``declarations`` takes such a module only when that digest
+is the header's and this interpreter's cffi accepts its format (``_cffi_backend`` checks
+the version the module states): else it parses the header as before.
+
+Standard library only at import (the binding imports it on every start); cffi's parser
+is imported by ``write_module`` alone. As a script, without the package (so without the
+C library): ``python _cdef.py HEADER OUT.py``.
+"""
+from __future__ import annotations
+
+import importlib.util
+import re
+import sys
+import zlib
+from pathlib import Path
+
+MODULE = "_elastica_abi"             # the pre-parsed module's name
+FILE = MODULE + ".py"                # beside the library (make lib) or in the package (wheel)
+_DIGEST = "CDEF_CRC32"               # the text's digest, a name of the module
+
+
+def cdef_text(header) -> str:
+    """The header as a cdef: the C++ guard and every preprocessor line removed
+    (DESIGN.md: no macros in declarations)."""
+    text = Path(header).read_text()
+    text = re.sub(r"#ifdef __cplusplus.*?#endif", "", text, flags=re.S)
+    return "\n".join(line for line in text.splitlines() if not line.lstrip().startswith("#"))
+
+
+def digest(text: str) -> int:
+    """The text's CRC-32: tells a module made from another header (an edit since the
+    build), not a forgery; hashlib's import would cost a start 5 % of numpy's."""
+    return zlib.crc32(text.encode())
+
+
+def load_module(path: Path, text: str):
+    """The FFI of the pre-parsed module at path when it was made from ``text``; None when
+    there is none, it is another header's, or this cffi refuses its format."""
+    if not path.is_file():
+        return None
+    spec = importlib.util.spec_from_file_location(f"libelastica.{MODULE}", path)
+    module = importlib.util.module_from_spec(spec)
+    try:
+        spec.loader.exec_module(module)
+    except ImportError:              # _cffi_backend: "... has unknown version"
+        return None
+    return module.ffi if getattr(module, _DIGEST, None) == digest(text) else None
+
+
+def declarations(header, folders):
+    """(ffi, path of the pre-parsed module used or None): the first of ``folders`` whose
+    module was made from ``header``, else the header parsed now (the same declarations)."""
+    text = cdef_text(header)
+    for folder in dict.fromkeys(Path(f) for f in folders):
+        ffi = load_module(folder / FILE, text)
+        if ffi is not None:
+            return ffi, str(folder / FILE)
+    from cffi import FFI
+    ffi = FFI()
+    ffi.cdef(text)
+    return ffi, None
+
+
+def write_module(header, out) -> None:
+    """Write the pre-parsed module of ``header`` to ``out`` (replaced whole, never left
+    half written)."""
+    import os
+    import tempfile
+    from cffi import FFI, __version__
+    text = cdef_text(header)
+    builder = FFI()
+    builder.cdef(text)
+    builder.set_source(MODULE, None)
+    out = Path(out)
+    with tempfile.TemporaryDirectory(dir=out.parent) as tmp:
+        code = Path(builder.compile(tmpdir=tmp, verbose=False)).read_text()
+        part = Path(tmp) / "part"
+        part.write_text(f"# libelastica's declarations (include/elastica.h), parsed by cffi {__version__}:\n"
+                        f"# written by _cdef.py; used only where {_DIGEST} is the header's.\n"
+                        f"{_DIGEST} = {digest(text)!r}\n{code}")
+        os.replace(part, out)
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 3:
+        sys.exit("usage: python _cdef.py HEADER OUT.py")
+    write_module(sys.argv[1], sys.argv[2])
