@@ -299,7 +299,8 @@ static int alloc_work(fit_run_state *R, double *dist, double *foot)
 /* ------------------------------------------------------------ the kept fit's feet */
 
 /* The kept curve (R->best) evaluated: its parameters v, the feet of a fit that has none of
- * its own from the fractions, the constraint it violates (status EL_EDOM then). */
+ * its own from the fractions, the constraint it violates (status EL_EDOM then, FIT_ECAPPED
+ * where its Ipopt run stopped at max_iter: Maximum_Iterations_Exceeded, -1). */
 static void evaluate_kept(fit_run_state *R)
 {
     fit_objective *ob = &R->ob;
@@ -309,7 +310,7 @@ static void evaluate_kept(fit_run_state *R)
     if (R->ok && ob->s && !(R->last_is_best && fit_has_feet(ob)))   /* else the fit's own feet */
         for (size_t i = 0; i < R->n; i++) ob->s[i] = R->t[i] * R->v[0][6];
     if (R->ok && (R->constraint = el__fit_violated(ob, &R->con, R->v[0], R->lo, R->hi, R->tmp)))
-        R->status = EL_EDOM;
+        R->status = R->best.used_ipopt && R->best.ipopt_status == -1 ? FIT_ECAPPED : EL_EDOM;
 }
 
 /* Whether the kept fit's nearest points (R->d, fs) lie elsewhere than its feet: by more
@@ -709,16 +710,6 @@ static int public_fit(int model, const double *xy, size_t n, const el_fit_option
     return st;
 }
 
-/* A kept fit that Ipopt stopped at the iteration cap (Maximum_Iterations_Exceeded, -1) and
- * that misses a constraint: the cap, not the constraint, stopped it (EL_EMAXITER, the
- * constraint still named; --max-iter 1 on a feasible start curvature was refused as
- * impossible, EL_EDOM, QA). At the public wrappers only: the runs inside read EL_EDOM. */
-static void capped_not_impossible(fit_out *fo)
-{
-    if (fo->status == EL_EDOM && fo->constraint && fo->used_ipopt && fo->ipopt_status == -1)
-        fo->status = EL_EMAXITER;
-}
-
 /* The public wrappers: the result struct written only once a result exists. */
 int el_fit_discrete(const double *xy, size_t n, const el_fit_options *opt,
                     const el_discrete_params *initial, el_fit_discrete_result *res,
@@ -738,7 +729,7 @@ int el_fit_discrete(const double *xy, size_t n, const el_fit_options *opt,
         if (fo.constraint) res->constraint = fo.constraint;
         return st;
     }
-    capped_not_impossible(&fo);
+    fo.status = fit_public_status(fo.status);
     FIT_PUBLISH(res, fo, el_discrete_params);
     res->wander_gap = gap;
     return fo.status;
@@ -762,7 +753,7 @@ int el_fit_smooth(const double *xy, size_t n, const el_fit_options *opt,
         if (fo.constraint) res->constraint = fo.constraint;
         return st;
     }
-    capped_not_impossible(&fo);
+    fo.status = fit_public_status(fo.status);
     FIT_PUBLISH(res, fo, el_smooth_params);
     res->wander_gap = gap;
     res->param_mode = fo.mode;

@@ -527,6 +527,14 @@ int el__fit_solve_candidate(fit_objective *ob, const el_fit_options *o, const fi
  * (the model's Jacobian order); *iters += the iterations; foot: as el_fit_smooth's. */
 int el__fit_start(int model, const double *xy, size_t n, const el_fit_options *opt, double *v, int *mode,
                   int *iters, double *foot);
+/* A run's status (fit_out.status, el__fit_run's return) for a kept fit that misses a
+ * constraint (res->constraint names it) after its Ipopt run stopped at max_iter: the cap,
+ * not the constraint, stopped it. Inside, no fit (as EL_EDOM: not EL_OK, EL_ENOCONV or
+ * EL_EMAXITER); the public wrappers return it as EL_EMAXITER, the constraint still named
+ * (--max-iter 1 on a feasible start curvature was refused as impossible, EL_EDOM, QA). */
+enum { FIT_ECAPPED = 256 };
+static inline int fit_public_status(int st) { return st == FIT_ECAPPED ? EL_EMAXITER : st; }
+
 /* One fit of the points (fit.c): el_fit_discrete / el_fit_smooth into *res (status -1
  * until a result exists), opt NULL = defaults, init the caller's initial parameters
  * (opt->use_initial); flags: FIT_RUN_LM_ONLY, no Ipopt fallback and no further start
