@@ -6,7 +6,8 @@
  *
  * f and its gradient J^T r / n from el__fit_objective_eval (the feet projected at every
  * evaluation, from those of the line search's base: f is a function of x along a
- * search); the constraints (end point, tangent directions, curvatures at the ends) with
+ * search; the discrete model by distance: f alone at the line search's trial points,
+ * ensure); the constraints (end point, tangent directions, curvatures at the ends) with
  * their analytic Jacobians from el__fit_end_state; the Hessian of the Lagrangian by
  * differences of its analytic gradient (cb_h). A tangent direction alpha is the
  * constraint sin(theta - alpha) = 0, smooth everywhere; the reversed direction
@@ -56,7 +57,7 @@ typedef struct ipctx {
     const fit_constraints *con;
     int nx, m, limited_memory;
     double xkey[FIT_MAXX];
-    int have;
+    int have, have_normal;  /* val at xkey, with g and H */
     fit_value val;
     double best_f, best_x[FIT_MAXX];
     int iters;
@@ -71,9 +72,15 @@ typedef struct ipctx {
     int free;               /* L-BFGS without constraint rows or bounds: cb_iter stops it */
 } ipctx;
 
-static int ensure(ipctx *c, const double *x)
+/* The objective at x into c->val (with g and H when normal). Only f where that is the same
+ * number without them: the discrete model by distance (its f from the polygon's
+ * distances, computed before the Jacobian; the line search's trial points, most of the
+ * evaluations, need no more). The smooth feet and the paired walk: always in full. */
+static int ensure(ipctx *c, const double *x, int normal)
 {
-    if (c->have && !memcmp(c->xkey, x, sizeof(double) * (size_t)c->nx)) return EL_OK;
+    if (c->have && (c->have_normal || !normal) && !memcmp(c->xkey, x, sizeof(double) * (size_t)c->nx))
+        return EL_OK;
+    const int want = normal || !c->o->poly;
     c->have = 0;
     /* every evaluation projects the feet from the same start, those of the point whose
      * gradient Ipopt took last (the line search's base): projected from the last trial's
@@ -83,10 +90,11 @@ static int ensure(ipctx *c, const double *x)
      * with L-BFGS, EL_ENOCONV after 246 iterations, 1.9 s; anchored EL_OK after 78,
      * 0.4 s, rms 1.012 of the exact Hessian's instead of 1.074) */
     if (c->have_anchor) memcpy(c->o->s, c->anchor, sizeof(double) * c->o->n);
-    int st = el__fit_objective_eval(c->o, x, 1, &c->val);
+    int st = el__fit_objective_eval(c->o, x, want, &c->val);
     if (st) return st;
     memcpy(c->xkey, x, sizeof(double) * (size_t)c->nx);
     c->have = 1;
+    c->have_normal = want;
     if (c->val.f < c->best_f) {
         c->best_f = c->val.f;
         memcpy(c->best_x, x, sizeof(double) * (size_t)c->nx);
@@ -166,7 +174,7 @@ static Bool cb_f(Index n, Number *x, Bool new_x, Number *obj, UserDataPtr ud)
 {
     (void)n; (void)new_x;
     ipctx *c = ud;
-    if (ensure(c, x)) return FALSE;
+    if (ensure(c, x, 0)) return FALSE;
     *obj = c->val.f;
     return isfinite(*obj) ? TRUE : FALSE;
 }
@@ -175,7 +183,7 @@ static Bool cb_grad(Index n, Number *x, Bool new_x, Number *g, UserDataPtr ud)
 {
     (void)n; (void)new_x;
     ipctx *c = ud;
-    if (ensure(c, x)) return FALSE;
+    if (ensure(c, x, 1)) return FALSE;
     if (c->anchor) { memcpy(c->anchor, c->o->s, sizeof(double) * c->o->n); c->have_anchor = 1; }
     if (c->limited_memory) {
         memcpy(c->gx, x, sizeof(double) * (size_t)c->nx);
@@ -226,8 +234,14 @@ static int lagrangian_gradient(ipctx *c, const double *x, double of, const doubl
                                double *gl)
 {
     fit_value v;
-    if (el__fit_objective_eval(c->o, x, 1, &v)) return 0;
-    for (int i = 0; i < c->nx; i++) gl[i] = of * v.g[i];
+    /* at x: the cached objective where it is the same number (the discrete model's:
+     * a function of x alone, unlike the smooth feet, which ensure moves first) */
+    const fit_value *pv = &v;
+    if (!fit_has_feet(c->o) && c->have && c->have_normal && !memcmp(c->xkey, x, sizeof(double) * (size_t)c->nx))
+        pv = &c->val;
+    else if (el__fit_objective_eval(c->o, x, 1, &v))
+        return 0;
+    for (int i = 0; i < c->nx; i++) gl[i] = of * pv->g[i];
     if (m > 0) {
         double cv[FIT_NCON], J[FIT_NCON * FIT_MAXX];
         if (el__fit_constraint_rows(c->o, c->con, x, cv, J, NULL, c->tmp) != m) return 0;
@@ -263,7 +277,7 @@ static Bool cb_h(Index n, Number *x, Bool new_x, Number obj_factor, Index m, Num
         c->have = 0;        /* the objective's cache was overwritten */
     }
     if (!exact) {
-        if (ensure(c, x)) return FALSE;
+        if (ensure(c, x, 1)) return FALSE;
         for (Index i = 0; i < n * n; i++) H[i] += obj_factor * c->val.H[i];
     }
     Index e = 0;
