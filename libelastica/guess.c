@@ -181,11 +181,11 @@ static double noise_frame(const double *xy, size_t n, double sc, size_t cap, dou
     return sqrt(2.0 * med / 0.45493642311957283);
 }
 
-double el__fit_noise_rms(const double *xy, size_t n, double sc)
+/* The smaller figure, d the stencils' buffer (NOISE_SAMPLES or n - 3 doubles) */
+static int check_points(const double *xy, size_t n, size_t nmin);
+
+static double noise_rms(const double *xy, size_t n, double sc, double *d)
 {
-    if (n < 4) return 0.0;
-    double *d = malloc(sizeof(double) * (n - 3 < NOISE_SAMPLES ? n - 3 : NOISE_SAMPLES));
-    if (!d) return 0.0;
     const double plain = noise_plain(xy, n, sc, d);
     double frame = n >= 6 ? noise_frame(xy, n, sc, FRAME_PROBE, d) : HUGE_VAL;
     /* beyond the probe's FRAME_PROBE stencils all of them only where the probe is below half
@@ -193,8 +193,31 @@ double el__fit_noise_rms(const double *xy, size_t n, double sc)
      * (report_drv.c's 42 1000-point fits: +0.2 % instructions; all stencils: +3.8 %) */
     if (n - 5 > FRAME_PROBE)
         frame = frame < 0.5 * plain ? noise_frame(xy, n, sc, NOISE_SAMPLES, d) : HUGE_VAL;
-    free(d);
     return fmin(plain, frame);
+}
+
+double el__fit_noise_rms(const double *xy, size_t n, double sc)
+{
+    if (n < 4) return 0.0;
+    double *d = malloc(sizeof(double) * (n - 3 < NOISE_SAMPLES ? n - 3 : NOISE_SAMPLES));
+    if (!d) return 0.0;
+    const double nu = noise_rms(xy, n, sc, d);
+    free(d);
+    return nu;
+}
+
+/* The figure as a distance to the curve: its normal part, 1/sqrt(2) of the rms per point. */
+int el_fit_noise(const double *xy, size_t n, double *noise)
+{
+    double cx, cy, sc;
+    int st;
+    if (check_points(xy, n, 4) || !noise) return EL_EINVAL;
+    if ((st = el__fit_normalisation(xy, n, &cx, &cy, &sc))) return st;
+    double *d = malloc(sizeof(double) * (n - 3 < NOISE_SAMPLES ? n - 3 : NOISE_SAMPLES));
+    if (!d) return EL_ENOMEM;
+    *noise = noise_rms(xy, n, sc, d) * sc * 0.70710678118654752;
+    free(d);
+    return EL_OK;
 }
 
 /* The plain figure alone (fit.c's stop rule for a constrained fit). */

@@ -7,6 +7,7 @@ from .cubic import SPARSE_POINTS, cubic_distances, smooth_fits_better
 from .fit import (ConstraintError, ConvergenceWarning, FitResult, OrderWarning, WanderWarning, far_points,
                   far_points_summary, fit, wander_summary)
 from .keyline import KeylineFit, fit_keyline
+from .misfit import MISFIT_RATIO, Misfit, MisfitWarning, misfit, misfit_summary, noise_level
 from .fit_cost import (COST_FLOOR, COST_RATIO, END_POINTS, END_SPAN, EndConditionWarning,
                        cost_summary, costly, end_condition_cost, end_costs, held_ends,
                        local_cost_summary)

@@ -83,14 +83,15 @@ def _side_record(res, data: np.ndarray, model: str, free=None) -> Dict[str, Any]
     return rec
 
 
-def _resampled_record(path, args, xy: np.ndarray, fixed, constraints):
+def _resampled_record(path, args, xy: np.ndarray, fixed, constraints, numbered: bool = True):
     """The record of a one-piece --step fit (el.fit_resampled): its figures are the file's
     points' (in the fit's plane) to the curve drawn (a discrete fit's C2 cubic through its
     vertices), not the polygon's vertices' to it ("distances_of"; the polygon's own kept as
     "polygon_rms" / "polygon_max_error"); a constrained fit's outliers judged by the
     points' distances to the resampled fit without its constraints, their cost by the
-    one with free ends (_end_conditions). Returns the record, the polygon's FitResult and
-    the points' feet."""
+    one with free ends (_end_conditions), whether they are one elastica (_misfit) by the
+    points' distances to it (numbered: the file's order). Returns the record, the polygon's
+    FitResult and the points' feet."""
     import libelastica as el
     with warnings.catch_warnings():     # the ResampleWarning said in the CLI's words
         warnings.simplefilter("ignore", el.ResampleWarning)
@@ -116,6 +117,7 @@ def _resampled_record(path, args, xy: np.ndarray, fixed, constraints):
         rec.pop("free_distances", None)
     _end_conditions(rec, rr.rms, loose.rms if loose is not None else None, xy, constraints, fixed,
                     (rr.distances, loose.distances, loose.foot_s) if loose is not None else None)
+    rec.update(_misfit(path, el.misfit(xy, (rr if loose is None else loose).distances), xy, numbered))
     return rec, res, rr.feet
 
 
@@ -213,6 +215,20 @@ def _warn_wanders(path, rec: Dict[str, Any], data: np.ndarray) -> None:
           "between them, or bound the length (--length LO,HI)", file=sys.stderr)
 
 
+def _misfit(path, m, points: np.ndarray, numbered: bool, what: str = "one elastica") -> Dict[str, Any]:
+    """Points far farther from the fit than their own noise (el.misfit's Misfit m, or
+    None): a warning on stderr naming the likely corner (a row of ``points``; by its place
+    alone where not ``numbered``: the fit's order is not the file's), and the record's
+    "misfit" (rms, noise, ratio, corner, parts)."""
+    if m is None:
+        return {}
+    from .misfit import misfit_summary
+    print(f"{PROG} fit: warning: {path}: {misfit_summary(m, points, numbered=numbered, what=what)}",
+          file=sys.stderr)
+    return {"misfit": {"rms": m.rms, "noise": m.noise, "ratio": m.ratio, "corner": m.corner,
+                       "parts": list(m.parts) if m.parts else None}}
+
+
 def _constraints(args, data: np.ndarray) -> Dict[str, Any]:
     """el.fit's constraints from the command line (angles in degrees there)."""
     con: Dict[str, Any] = {}
@@ -279,6 +295,7 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
         with warnings.catch_warnings():     # its status said in the CLI's words
             warnings.simplefilter("ignore", el.ConvergenceWarning)
             warnings.simplefilter("ignore", el.OrderWarning)     # _in_order says it
+            warnings.simplefilter("ignore", el.MisfitWarning)    # _misfit says it
             kres = el.fit_keyline(pts, r=args.step, **_fit_kwargs(args, fixed))
         prep = kres.prepared
         plane = _plane_record(prep.frame)
@@ -291,7 +308,8 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
                                      "maps it to the input's, where the bspline and "
                                      "inflection_point are)",
                       "frame2d": {"origin": prep.frame2d.origin, "f1": prep.frame2d.f1,
-                                  "f2": prep.frame2d.f2}}
+                                  "f2": prep.frame2d.f2},
+                      **_misfit(path, kres.misfit, pts, order is None, "one keyline")}
         for i, res in enumerate((kres.first, kres.second)):
             rec = _side_record(res, res.points, args.model)
             rec["side"] = i
@@ -319,19 +337,22 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
                 raise InputError(f"{path}: --step {args.step} leaves only {len(data)} points")
         fixed, constraints = _parse_fix(args.fix, data), _constraints(args, data)
         if args.step is not None:
-            rec, res, feet = _resampled_record(path, args, xy, fixed, constraints)
+            rec, res, feet = _resampled_record(path, args, xy, fixed, constraints, order is None)
             records.append(rec)
             pictures.append((xy, res, feet))
             fitted.append(data)
         else:
-            # quietly: said in the CLI's words (_warn_wanders, _warn_end_conditions, the status)
-            res = quiet_fit(data, check_ends=True, **_fit_kwargs(args, fixed, constraints))
+            # quietly: said in the CLI's words (_warn_wanders, _warn_end_conditions, _misfit,
+            # the status)
+            res = quiet_fit(data, check_ends=True, check_misfit=True,
+                            **_fit_kwargs(args, fixed, constraints))
             free = None
             if constraints and getattr(res, "distances", None) is not None:
                 # el.fit's fit with free ends, where nothing is fixed (--fix: held there too)
                 free = (res.free if res.free is not None and not fixed else
                         quiet_fit(data, **_fit_kwargs(args, fixed))).distances
             records.append(_side_record(res, data, args.model, free))
+            records[-1].update(_misfit(path, res.misfit, pts, order is None))
             lf = res.free
             _end_conditions(records[-1], res.rms, lf.rms if lf is not None else None, data,
                             constraints, fixed,

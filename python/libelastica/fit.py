@@ -29,6 +29,7 @@ from ._ffi import (DomainError, NotConvergedError, as_int, as_points, as_real,
 from .core import DISCRETE_PARAMS, SMOOTH_PARAMS, DiscreteElastica, SmoothElastica
 from ._text import LengthFormat, lengths
 from .fit_cost import EndConditionWarning, checked_ends
+from .misfit import MisfitWarning, _verdict, misfit_summary
 from .order import curve_order, order_summary, ordering
 
 _MODES = {"auto": 0, "uniform": 1, "chord": 2}
@@ -82,7 +83,10 @@ class FitResult:
     i + 1 (it strays there, loops, or swings between them: the C result's ``wander_gap``,
     :func:`fit` warns of it), -1 where it follows them; ``order``: fitted with
     ``order="curve"``, the indices of the caller's points in ``points``' order, else None;
-    ``free``: the fit with free ends where :func:`fit` checked what its end conditions cost.
+    ``free``: the fit with free ends where :func:`fit` checked what its end conditions cost;
+    ``misfit``: where :func:`fit` judged it (``check_misfit``) and found it far farther from
+    the points than their noise, a :class:`libelastica.misfit.Misfit` (the points are not one
+    elastica; its ``corner``), else None.
     """
     curve: Curve
     initial: Curve
@@ -103,6 +107,7 @@ class FitResult:
     wander_gap: int = -1
     order: Optional[np.ndarray] = None
     free: Optional["FitResult"] = None
+    misfit: Optional[object] = None
 
     @property
     def converged(self) -> bool:
@@ -455,7 +460,8 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
         bounds: Optional[Mapping[str, tuple]] = None, tol: Optional[float] = None,
         max_iter: Optional[int] = None, limited_memory: bool = False,
         max_candidates: Optional[int] = None, param: str = "auto", initial: Optional[Curve] = None,
-        strict: bool = False, order: str = "given", check_ends: bool = True) -> FitResult:
+        strict: bool = False, order: str = "given", check_ends: bool = True,
+        check_misfit: bool = True) -> FitResult:
     """Fit an elastica to the points (n, 2), n >= 4, in their order along the curve.
 
     model: "discrete" (a polygon of n vertices, one per point) or "smooth". distance:
@@ -511,7 +517,11 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     ElasticaError subclasses. check_ends: with constraints or fixed, fit with free ends too
     (``FitResult.free``) and warn (EndConditionWarning, fit_cost.py) where they cost accuracy;
     that free fit is not capped by ``max_iter`` (a capped one misprices the ends: 10.2 for
-    9.24, QA).
+    9.24, QA). check_misfit: judge the fit (with end conditions or bounds: the free fit,
+    where check_ends made one; not a fit asked to be paired) against the points' own noise
+    (:func:`libelastica.misfit.misfit`) and warn (MisfitWarning, ``FitResult.misfit``) where
+    it lies far above it: the points are not one elastica (a corner, named where one stands
+    out).
     """
     if not isinstance(model, str) or model not in ("discrete", "smooth"):
         raise ValueError(f"fit: model must be 'discrete' or 'smooth', got {model!r}")
@@ -573,17 +583,37 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     if check_ends and (constraints or fixed):
         r = checked_ends(r, fixed, dict(model=model, distance=distance, bounds=bounds, tol=tol,
                          limited_memory=limited_memory, max_candidates=max_candidates, param=param))
+    if check_misfit and distance != "paired":     # asked for, its rms is the pairing's
+        r = _judged(r, constraints or fixed or bounds)
     return r
 
 
+def _judged(r: FitResult, held) -> FitResult:
+    """r with its ``misfit`` (:func:`libelastica.misfit.misfit`, its points as fitted) and a
+    MisfitWarning where it lies far above the points' noise; held (end conditions, fixed
+    parameters): judged by the free fit (their cost is EndConditionWarning's), none where
+    there is none."""
+    judged = r.free if held else r
+    if judged is None or judged.distances is None:
+        return r
+    m = _verdict(judged.points, judged.distances, judged.rms)
+    if m is None:
+        return r
+    said = misfit_summary(m, judged.points, numbered=judged.order is None)   # curve order: by place
+    warnings.warn(f"fit: {said}", MisfitWarning, stacklevel=3)
+    return dataclasses.replace(r, misfit=m)
+
+
 def quiet_fit(points, *args, **kwargs) -> FitResult:
-    """:func:`fit` without its warnings (ConvergenceWarning, WanderWarning, EndConditionWarning), check_ends
-    off unless asked: for a fit judging another, or said in its caller's words (status, wander_gap, free)."""
+    """:func:`fit` without its warnings (ConvergenceWarning, WanderWarning, EndConditionWarning,
+    MisfitWarning), check_ends and check_misfit off unless asked: for a fit judging another, or
+    said in its caller's words (status, wander_gap, free, misfit)."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ConvergenceWarning)
         warnings.simplefilter("ignore", WanderWarning)
         warnings.simplefilter("ignore", EndConditionWarning)
-        return fit(points, *args, **dict(dict(check_ends=False), **kwargs))
+        warnings.simplefilter("ignore", MisfitWarning)
+        return fit(points, *args, **dict(dict(check_ends=False, check_misfit=False), **kwargs))
 
 
 __all__ = ["ConstraintError", "FitResult", "fit", "NotConvergedError"]

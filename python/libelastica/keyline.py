@@ -15,6 +15,7 @@ from ._ffi import (DomainError, as_int, as_positive, as_real, as_real_array, che
                    lib)
 from .fit import (_MODE_NAMES, ConvergenceWarning, FitResult, OrderWarning, _make_curve,
                   quiet_fit)
+from .misfit import MisfitWarning, misfit, misfit_summary
 from .order import order_summary, out_of_order
 
 @dataclass(frozen=True)
@@ -50,6 +51,9 @@ class KeylineFit:
     ends: Optional[np.ndarray] = None
     joint_local: Optional[np.ndarray] = None      # joint, ends in x''y'' (the sides' frame)
     ends_local: Optional[np.ndarray] = None
+    # the input points far farther from the keyline than their own noise: not one keyline
+    # (libelastica.misfit.Misfit; its corner an index into the input points), else None
+    misfit: Optional[object] = None
 
     @property
     def input_rms(self) -> float:
@@ -226,7 +230,9 @@ def fit_keyline(points, r: Optional[float] = None, model: str = "discrete", side
     FitResults in the PCA frame x''y'' (:class:`KeylineFit`).
     Raises DomainError when the points show no inflection: none found, or one of their
     noise (the joint within MIN_SIDE points of an end, or two elasticae fitting the
-    polygon less than twice as well as one turning one way: _check_keyline_split)."""
+    polygon less than twice as well as one turning one way: _check_keyline_split). Warns
+    (MisfitWarning, ``misfit``) where the points lie far farther from the keyline than their
+    own noise (:func:`libelastica.misfit.misfit`: a corner, which no G2 joint fits)."""
     from .prep import prepare_keyline
     if model not in ("discrete", "smooth"):
         raise ValueError(f"fit_keyline: model must be 'discrete' or 'smooth', got {model!r}")
@@ -285,14 +291,19 @@ def fit_keyline(points, r: Optional[float] = None, model: str = "discrete", side
                              fits[1].curve.points()[1:], tails[1]])
         inputs = _polyline_distances(local, polygon)
     else:
-        inputs, ends = np.abs(dist), None        # the input points themselves were fitted
+        inputs, ends, local = np.abs(dist), None, data    # the input points themselves were fitted
+    # the points' noise against the keyline's distances to them (a held h: its own cost)
+    m = misfit(local, inputs) if not kwargs.get("fixed") else None
+    if m is not None:
+        said = misfit_summary(m, what="one keyline (its joint is an inflection, G2)")
+        warnings.warn(f"fit_keyline: {said}", MisfitWarning, stacklevel=2)
     if st != lib.EL_OK:     # as fit's (QA: both sides at status 6, silently); not before a refusal
         warnings.warn(f"fit_keyline: not converged: {ffi.string(lib.el_strerror(st)).decode()} "
                       f"(status {st})", ConvergenceWarning, stacklevel=2)
     return KeylineFit(prepared=prep, inflection=infl, first=fits[0], second=fits[1],
                       inflection_estimate=i0, joint=prep.to_input(J), input_distances=inputs,
                       ends=None if ends is None else prep.to_input(ends), joint_local=J,
-                      ends_local=ends)
+                      ends_local=ends, misfit=m)
 
 
 def _keyline_tails(halves, end_points):

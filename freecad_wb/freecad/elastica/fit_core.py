@@ -264,6 +264,7 @@ def _keyline(xy, model, step):
     with catch_warnings():                           # its Status says it
         simplefilter("ignore", el().ConvergenceWarning)
         simplefilter("ignore", el().OrderWarning)    # ordered by fit_core (file_order, curve_order)
+        simplefilter("ignore", el().MisfitWarning)   # fit_core's _misfit says it
         kf = el().fit_keyline(xy, r=step, model=model)
     first, second = kf.first, kf.second
     to_plane = kf.to_input                           # the sides' results live in x''y''
@@ -309,6 +310,21 @@ def _far_points(data, dist, plane, free=None):
     # the place's unit named: after '... within 24.7 \u00b5m' its mm read as \u00b5m
     return [f"{said} (the farthest at ({at}) {length_unit_mark(written=True)}): "
             "outliers? Each pulls the fit towards itself: remove them to fit the rest"]
+
+
+def _misfit(xy, dist, plane, split):
+    """The warning for points far farther from the fit than their own noise (el.misfit: they
+    are not one elastica, or keyline), naming the likely corner's place, else none. xy (n, 2)
+    in the frame ``plane``, dist: their distances to the curve in it (None: not judged)."""
+    if dist is None:
+        return []
+    m = el().misfit(np().ascontiguousarray(xy, dtype=float), np().asarray(dist, dtype=float))
+    if m is None:
+        return []
+    at = [plane.multVec(App.Vector(float(x), float(y), 0.0)) for x, y in xy]
+    said = el().misfit_summary(m, [(v.x, v.y, v.z) for v in at], numbered=False, length=exact_mark,
+                               what="one keyline" if split else "one elastica")
+    return [said]
 
 
 def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", split=False,
@@ -427,6 +443,13 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         # and in 3D: the curve lies in the plane, so a point's distance from the plane adds
         # to its distance in it (a scan off its plane fits 0.02 mm in it, 0.45 mm in 3D)
         plane_rms = _rms(dist)
+        # judged by the library's fit of the points it fitted (a resampled polygon's: the
+        # drawn curve's distances to the points carry the step's cost, said apart), without
+        # end conditions (their cost is said apart: the free fit); a keyline's by the points'
+        judged = None if split or (model == "smooth" and distance == "paired") else \
+            results[0].free if constraints else results[0]
+        misfit = _misfit(user[:, :2], dist, plane, True) if split else \
+            _misfit(judged.points, judged.distances, plane, False) if judged is not None else []
         dist = n.copysign(n.hypot(dist, user[:, 2]), dist)
         rms, max_error = _rms(dist), float(n.abs(dist).max())
         data = user
@@ -437,7 +460,7 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
             _off_plane(user[:, 2], plane_rms, size) + \
             _far_points(data[~beyond], dist[~beyond], plane,
                         None if resampled or free_dist is None else free_dist[~beyond]) + \
-            ([] if split else _wanders(results[0], plane))
+            ([] if split else _wanders(results[0], plane)) + misfit
     except InputProblem:
         raise
     except (ValueError, ArithmeticError, RuntimeError) as exc:

@@ -1,0 +1,245 @@
+"""Points that are not one elastica: a fit whose distances lie far above the points' own
+noise level (:func:`noise_level`, from the points alone), and where the likely corner is.
+
+QA: a straight run meeting an elastica at a 35-degree corner (400 points, noise 0.3) was
+fitted at rms 10.9 with no word; split by hand at the corner, 0.28 and 0.31. :func:`misfit`
+says so (:func:`fit` warns :class:`MisfitWarning`) and names the corner.
+
+>>> import numpy as np, libelastica as el
+>>> rng = np.random.default_rng(1)
+>>> c = el.SmoothElastica(x0=0, y0=0, phi=0.3, mu=1e-4, k=0.8, q=0.2, length=200)
+>>> P = c.points(np.linspace(0, 200, 100)) + rng.normal(0, 0.1, (100, 2))
+>>> print(el.misfit(P, el.fit(P, model="smooth").distances))
+None
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Optional, Tuple
+
+import numpy as np
+
+from ._ffi import as_points, check, dptr, ffi, lib
+from ._text import LengthFormat, lengths
+
+__all__ = ["MISFIT_RATIO", "MisfitWarning", "Misfit", "noise_level", "window_noise", "misfit",
+           "misfit_summary"]
+
+# A fit's rms over the points' noise level (no verdict where el.far_points names glitches:
+# they pull the fit, and are said apart). Measured (rms / noise_level, 692 fits, both
+# models): noisy elasticae at most 1.32 (bench_fit.py's 504-curve suite, fit_data.py's uneven
+# scans at 4 noise levels and sketches of 15 and 30 points, examples/, QA's hand-drawn stroke
+# 1.05; el_fit_noise alone: up to 2.1 on sketches). Noise-free points are far above their
+# noise wherever they are no elastica, and the rms must also exceed MISFIT_FLOOR of their
+# extent: the discrete polygon on a smooth elastica's points 9.4 x, 8e-6 of it; a G2 fit's
+# free fit to a sketched B-spline edge (test_elastica_fit_reopen.py) 33 x, 0.07 mm on 80 mm,
+# 8.7e-4. Not one elastica: keylines of two elasticae (keyline_data.py) fitted as one 6.1 to
+# 15 x at noise 0.05, 2.1e-3 of the extent (0.3: 2.1-2.4 x), QA's ship line with a 35-degree
+# corner 24 x, 1.1e-2; a tile's outline 37 x, 3.7e-2.
+MISFIT_RATIO = 4.0
+MISFIT_FLOOR = 1e-3
+MISFIT_MIN_POINTS = 20
+# The corner: a point where the tangents of quadratics fitted to the CORNER_WINDOW-th of the
+# points before it and after it turn most (up to CORNER_CANDIDATES such peaks), kept when the
+# two parts split there fit each within MISFIT_RATIO x the noise and their curves turn there
+# by more than CORNER_TURN. Measured: QA's ship line, the peak at point 162 of the corner's
+# 160, the parts at 0.6 x the noise, turning 48.6 degrees (its corner's 48.7); the tile, no
+# split whose parts both fit; keylines (keyline_data.py, two elasticae joined G2, noise 0.05,
+# fitted as one elastica): parts that fit, turning 0.1-7.8 degrees (no corner).
+CORNER_TURN = np.radians(15.0)
+CORNER_WINDOW = 25
+CORNER_CANDIDATES = 3
+CORNER_MIN_SIDE = 10
+CORNER_SAMPLES = 2000
+
+
+class MisfitWarning(RuntimeWarning):
+    """:func:`fit`'s warning that the fitted curve lies far farther from the points than
+    their own noise (:func:`misfit`): they are not one elastica (a corner, two curves, a
+    shape of more than one piece), and where a corner stands out, where."""
+
+
+@dataclass(frozen=True)
+class Misfit:
+    """:func:`misfit`'s verdict: ``rms``, the fit's;
+    ``noise``, the points' noise level (:func:`noise_level`); ``ratio`` = rms / noise;
+    ``corner``: the index of the likely corner, -1 where none stands out; ``parts``: the rms
+    of the two parts split there (smooth fits), else None."""
+    rms: float
+    noise: float
+    ratio: float
+    corner: int = -1
+    parts: Optional[Tuple[float, float]] = None
+
+
+def noise_level(points) -> float:
+    """The points' own noise level (n >= 4, (n, 2)): the rms of a point's distance to the
+    smooth curve under it, from the points alone (no fit): the larger of el_fit_noise's
+    (third differences) and, from WINDOW_POINTS points on, :func:`window_noise`'s."""
+    pts = as_points(points, "noise_level: points", 2)
+    return max(_noise(pts), window_noise(pts))
+
+
+def _noise(pts: np.ndarray) -> float:
+    """el_fit_noise of checked points (C-contiguous float64, (n, 2))."""
+    out = ffi.new("double *")
+    check(lib.el_fit_noise(dptr(pts), len(pts), out), "noise_level")
+    return float(out[0])
+
+
+# Noise correlated from point to point (a polygon resampled along noisy points, smoothed
+# data) cancels in third differences: equilateral polygons of fit_data.py's noisy scans
+# (0.15) measured 0.024-0.061 there, 0.094-0.22 by cubics through WINDOW_POINTS points (the
+# scans themselves: 0.14-0.19 either way), their fits' rms 0.13-0.53 (a gap's chord).
+WINDOW_POINTS = 15
+WINDOW_SAMPLES = 4096
+# the median of a chi-square of WINDOW_POINTS - 4 degrees over its mean
+_WINDOW_MEDIAN = 0.9401
+
+
+def window_noise(points) -> float:
+    """The rms of a point's distance to the smooth curve under it from cubics y(x) fitted in
+    the principal frame of windows of WINDOW_POINTS consecutive points (up to WINDOW_SAMPLES
+    of them, evenly spread): their residuals' mean square per degree of freedom, the median
+    over the windows; 0 for fewer points. A curve that bends within a window raises it."""
+    from numpy.lib.stride_tricks import sliding_window_view
+    P = as_points(points, "window_noise: points", 2)
+    m = WINDOW_POINTS
+    if len(P) < m:
+        return 0.0
+    at = np.unique(np.linspace(0, len(P) - m, min(WINDOW_SAMPLES, len(P) - m + 1)).astype(int))
+    W = sliding_window_view(P, m, axis=0).transpose(0, 2, 1)[at]
+    C = W - W.mean(axis=1, keepdims=True)
+    u = np.linalg.eigh(np.einsum("kmi,kmj->kij", C, C))[1][:, :, 1]     # principal direction
+    x = np.einsum("kmi,ki->km", C, u)
+    y = C[:, :, 1] * u[:, [0]] - C[:, :, 0] * u[:, [1]]
+    t = x / np.maximum(np.abs(x).max(axis=1, keepdims=True), np.finfo(float).tiny)
+    A = np.stack([np.ones_like(t), t, t * t, t ** 3], -1)
+    ok = np.linalg.cond(np.einsum("kmi,kmj->kij", A, A)) < 1e12      # not folded onto a point
+    if not np.any(ok):
+        return 0.0
+    A, y = A[ok], y[ok]
+    c = np.linalg.solve(np.einsum("kmi,kmj->kij", A, A), np.einsum("kmi,km->ki", A, y)[..., None])
+    r = y - np.einsum("kmi,ki->km", A, c[..., 0])
+    return float(np.sqrt(np.median(np.sum(r * r, axis=1) / (m - 4)) / _WINDOW_MEDIAN))
+
+
+def _rms_near(distances, points) -> float:
+    from .fit import far_points
+    d = np.abs(np.asarray(distances, dtype=float))
+    return float(np.sqrt(np.mean(np.delete(d, far_points(d, points)) ** 2)))
+
+
+def _turns(P: np.ndarray, w: int):
+    """At points w .. n-w-1: the angle between the tangents there of the quadratics (in chord
+    length) fitted to the w + 1 points ending there and the w + 1 starting there."""
+    from numpy.lib.stride_tricks import sliding_window_view
+    s = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(P, axis=0).T))])
+    S, X = sliding_window_view(s, w + 1), sliding_window_view(P, w + 1, axis=0)
+
+    def tangent(at):
+        t = S - S[:, [at]]
+        t = t / np.maximum(np.abs(t).max(axis=1, keepdims=True), 1e-300)
+        A = np.stack([np.ones_like(t), t, t * t], -1)
+        c = np.linalg.solve(np.einsum("mki,mkj->mij", A, A), np.einsum("mki,mck->mic", A, X))
+        return c[:, 1, :]
+    left, right = tangent(w)[:-w - 1], tangent(0)[w:-1]
+    i = np.arange(w, len(P) - w)
+    cross = left[:, 0] * right[:, 1] - left[:, 1] * right[:, 0]
+    return i, np.abs(np.arctan2(cross, np.sum(left * right, axis=1)))
+
+
+def _corner(pts: np.ndarray, noise: float):
+    """The likely corner of points that are not one elastica: (index, the two parts' rms)
+    or (-1, None). Each candidate's parts are fitted by the smooth model (their rms, far
+    points left out; the turn between the first's end tangent and the second's start)."""
+    from .fit import quiet_fit
+    step = max(1, -(-len(pts) // CORNER_SAMPLES))
+    P = pts[::step]
+    w = max(6, len(P) // CORNER_WINDOW)
+    if len(P) < 2 * w + 3:
+        return -1, None
+    i, a = _turns(P, w)
+    peaks = []
+    for j in np.argsort(-a, kind="stable"):
+        if all(abs(int(i[j]) - p) > w for p in peaks):
+            peaks.append(int(i[j]))
+        if len(peaks) == CORNER_CANDIDATES:
+            break
+    best = (-1, None, np.inf)
+    for p in peaks:
+        c = p * step
+        if min(c + 1, len(pts) - c) < CORNER_MIN_SIDE:
+            continue
+        parts, fits = [], []
+        for side in (pts[:c + 1], pts[c:]):
+            try:
+                fits.append(quiet_fit(side, model="smooth"))
+            except (ValueError, ArithmeticError, RuntimeError):
+                break
+            parts.append(_rms_near(fits[-1].distances, side))
+        if len(parts) < 2:
+            continue
+        a, b = fits[0].curve, fits[1].curve
+        turn = np.angle(np.exp(1j * (b.angle(np.zeros(1))[0] - a.angle(np.full(1, a.length))[0])))
+        if abs(turn) > CORNER_TURN and max(parts) <= MISFIT_RATIO * noise and max(parts) < best[2]:
+            best = (c, (parts[0], parts[1]), max(parts))
+    return best[0], best[1]
+
+
+def misfit(points, distances, corner: bool = True) -> Optional[Misfit]:
+    """Whether a fit lies far farther from its points than their own noise: their rms above
+    MISFIT_RATIO x :func:`noise_level` and MISFIT_FLOOR of the points' extent
+    (MISFIT_MIN_POINTS points at least; none of them far, :func:`far_points`); then a
+    :class:`Misfit` (with ``corner``: where the points turn most and the two parts split
+    there each fit within MISFIT_RATIO x the noise, their curves turning there by more than
+    CORNER_TURN; two smooth fits per candidate), else None.
+    points (n, 2): the fitted points; distances (n,): theirs to the curve."""
+    pts = as_points(points, "misfit: points", 2)
+    d = np.asarray(distances, dtype=float)
+    if d.shape != (len(pts),):
+        raise ValueError("misfit: distances (n,) for points (n, 2) are needed")
+    return _verdict(pts, d, float(np.sqrt(np.mean(d * d))), corner)
+
+
+def _verdict(pts: np.ndarray, d: np.ndarray, rms_all: float, corner: bool = True) -> Optional[Misfit]:
+    """misfit of checked points (as _noise's) and their distances' rms (a fit's own, el.fit's
+    path: 0.011 ms of a 1000-point discrete fit's 0.5 where it is silent)."""
+    if len(pts) < MISFIT_MIN_POINTS:
+        return None
+    noise = _noise(pts)
+    if not rms_all > MISFIT_RATIO * noise:    # the window figure only raises the noise
+        return None
+    from .fit import far_points
+    if len(far_points(d, pts)):               # glitches pull the fit: said apart, refit without
+        return None
+    noise = max(noise, window_noise(pts))
+    rms, extent = rms_all, float(np.max(np.ptp(pts, axis=0)))
+    if not (rms > MISFIT_RATIO * noise and rms > MISFIT_FLOOR * extent):
+        return None
+    at, parts = _corner(pts, noise) if corner else (-1, None)
+    return Misfit(rms, noise, rms / noise if noise > 0 else np.inf, at, parts)
+
+
+def misfit_summary(m: Misfit, points=None, unit: str = "", numbered: bool = True,
+                   length: Optional[LengthFormat] = None, what: str = "one elastica") -> str:
+    """What a warning of points that are not one elastica says (:func:`fit`'s, the CLI's and
+    FreeCAD's): "the curve lies 10.9 from the points (rms), 24 x their own noise (0.456): they
+    are not one elastica; a corner at point 162 (counted from 0; at (x, y))? Split there, the
+    two parts fit at rms 0.28 and 0.31". points: the fitted points, to name the corner's
+    place; ``unit``, ``length`` as :func:`wander_summary`'s; numbered False: by its place
+    alone, where the numbers are the fit's order, not the user's; what: the model ("one
+    keyline" for :func:`fit_keyline`'s)."""
+    fmt = lengths(unit, length)
+    said = (f"the curve lies {fmt(m.rms, 3)} from the points (rms), {m.ratio:.3g} x their own "
+            f"noise ({fmt(m.noise, 3)}): they are not {what}")
+    if m.corner < 0:
+        return said + " (a corner, or curves of more than one piece: fit each alone)"
+    place = ""
+    if points is not None:
+        p = np.asarray(points, dtype=float)[m.corner]
+        place = "(" + ", ".join(fmt(v, 4) for v in p) + ")"
+    where = (f"at point {m.corner} (counted from 0{'; at ' + place if place else ''})"
+             if numbered or not place else f"at {place}")
+    return (said + f"; a corner {where}? Split there, the two parts fit at rms "
+            f"{fmt(m.parts[0], 3)} and {fmt(m.parts[1], 3)}")
