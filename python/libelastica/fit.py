@@ -86,7 +86,7 @@ class FitResult:
     ``free``: the fit with free ends where :func:`fit` checked what its end conditions cost;
     ``misfit``: where :func:`fit` judged it (``check_misfit``) and found it far farther from
     the points than their noise, a :class:`libelastica.misfit.Misfit` (the points are not one
-    elastica; its ``corner``), else None.
+    elastica; its ``corner`` an index into ``points``), else None.
     """
     curve: Curve
     initial: Curve

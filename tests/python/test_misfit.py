@@ -81,6 +81,28 @@ def test_corner_is_warned_and_named(model):
     assert max(m.parts) < 0.35
 
 
+@pytest.mark.parametrize("jump", [0.0, 20.0])
+def test_a_corner_is_a_tangent_jump(jump):
+    """Two elasticae (150 + 119 uneven points, noise 0.2) joined tangent to tangent (their
+    curvature jumps) or at a 20-degree corner: both warned (44-49 x), only the corner named,
+    at the join (point 149 / 150), the parts within CORNER_TURN of each other there not."""
+    for seed in (1, 2):
+        rng = np.random.default_rng(seed)
+        A = el.SmoothElastica(x0=-500, y0=0, phi=0.1, mu=1 / 400 ** 2, k=0.5, q=0.5, length=500)
+        end, th = A.points(np.array([500.0]))[0], A.angle(np.array([500.0]))[0]
+        shape = dict(mu=1 / 250 ** 2, k=1.3, q=0.1, length=400)
+        off = el.SmoothElastica(x0=0, y0=0, phi=0, **shape).angle(np.zeros(1))[0]
+        B = el.SmoothElastica(x0=end[0], y0=end[1], phi=th - off + np.radians(jump), **shape)
+        P = np.r_[A.points(np.sort(rng.uniform(0, 500, 150))),
+                  B.points(np.sort(rng.uniform(0, 400, 120)))[1:]] + rng.normal(0, 0.2, (269, 2))
+        r, said = _fit(P, model="smooth")
+        assert len(said) == 1 and r.misfit.ratio > 30
+        if jump:
+            assert abs(r.misfit.corner - 149.5) <= 1, r.misfit
+        else:
+            assert r.misfit.corner == -1, r.misfit
+
+
 @pytest.mark.parametrize("model", ["smooth", "discrete"])
 def test_outline_is_warned_without_a_corner(model):
     r, said = _fit(tile_outline(), model=model)
