@@ -543,7 +543,9 @@ int el_fit_smooth(const double *xy, size_t n, const el_fit_options *opt,
  * 0.9-1.1 x it on dense scans, 0.5-2.1 x on sketches of 15-30 points, whose bending enters
  * it (bench/bench_fit.py's 504 curves, tests/python/fit_data.py's sets); points along a curve
  * that is not one elastica lie farther from its fit: a line meeting an elastica at a corner,
- * 400 points, noise 0.3: rms 10.9 = 24 x this figure (the binding's MisfitWarning, from 4 x).
+ * 400 points, noise 0.3: rms 10.9 = 24 x this figure (the binding's MisfitWarning, from 4 x
+ * the larger of this figure and its cubics through 15 points, which see noise correlated from
+ * point to point: a polygon resampled along noisy points, 4-6 x below the noise here).
  * Errors: EL_EINVAL (NULL, n < 4, NaN/inf), EL_ESINGULAR (all points equal), EL_EDOM (the
  * data's scale outside what double precision represents), EL_ENOMEM; *noise untouched.
  */

@@ -181,9 +181,9 @@ static double noise_frame(const double *xy, size_t n, double sc, size_t cap, dou
     return sqrt(2.0 * med / 0.45493642311957283);
 }
 
-/* The smaller figure, d the stencils' buffer (NOISE_SAMPLES or n - 3 doubles) */
 static int check_points(const double *xy, size_t n, size_t nmin);
 
+/* The smaller figure, d the stencils' buffer (NOISE_SAMPLES or n - 3 doubles). */
 static double noise_rms(const double *xy, size_t n, double sc, double *d)
 {
     const double plain = noise_plain(xy, n, sc, d);
