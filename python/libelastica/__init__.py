@@ -20,7 +20,7 @@ from .resampled import (RESAMPLE_RATIO, ResampledFit, ResampleWarning, fit_resam
 from .blend import (SPREAD_MAX, BlendCurve, BlendLoopWarning, ConditionWarning, EllipticBlend, MQBlend,
                     blend_curve, eck_d, eck_omega)
 from .hermite import HERMITE_SIGMA_D2_MAX, HermiteChain, HermiteSolutions, hermite, hermite_analyse
-from .spline import ElasticSpline, LoopWarning, elastic_spline
+from .spline import DoublesBackError, ElasticSpline, LoopWarning, elastic_spline
 from .bspline import (BSpline, cubic_through, interpolate_c2, keyline_bspline,
                       smooth_chain_to_bspline, smooth_to_bspline)
 from .affine import (AffinePolyline, OsculatingConics, affine_coords, affine_curvature,

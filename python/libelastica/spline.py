@@ -11,11 +11,30 @@ from typing import List, Optional
 
 import numpy as np
 
-from ._ffi import DomainError, LengthRangeError, NotConvergedError, as_int, as_points, as_real, check, dptr, ffi, lib
+from ._ffi import (DomainError, LengthRangeError, NotConvergedError, as_int, as_points, as_real,
+                   as_vector, check, dptr, ffi, lib)
 from .bspline import smooth_chain_to_bspline
 from .core import SMOOTH_PARAMS, SmoothElastica, chain_eval, chain_starts
 
-__all__ = ["ElasticSpline", "LoopWarning", "elastic_spline"]
+__all__ = ["DoublesBackError", "ElasticSpline", "LoopWarning", "back_steps", "elastic_spline"]
+
+# A back-step (back_steps) shorter than this fraction of the points' extent is below any
+# feature a batten through them is drawn to: every back-step of the splines the tests and
+# QA sketches solve is >= 0.06 of it, scan jitter's <= 0.014 (QA16 handdrawn.csv, 55 of
+# them; shipline.csv <= 0.002, 14)
+BACK_STEP = 0.02
+# this many or more: noise no batten follows, refused before the solve (windows of 30-160
+# of those points with 3 or more: none of 24 gave a spline without loops at tension 0,
+# 10 or 100 / polygon^2, length 1.05 or 1.5 x it; with 1 to 3, some solve by length
+# 1.05 x); fewer are named where the solve fails
+BACK_STEPS_MANY = 5
+
+
+class DoublesBackError(DomainError):
+    """:func:`elastic_spline`'s error for points that double back on themselves within
+    their noise (``places``: :func:`back_steps`, at least BACK_STEPS_MANY of them):
+    a batten through them must turn back and forth at each; fair them
+    (:func:`libelastica.fit`) or thin them instead."""
 
 
 class LoopWarning(RuntimeWarning):
@@ -88,25 +107,45 @@ class ElasticSpline:
             raise ValueError(f"ElasticSpline: n must be >= 2, got {n}")
         return np.linspace(0.0, self.length, int(n))
 
-    def _eval(self, s: np.ndarray, what: str) -> np.ndarray:
-        return chain_eval(self.pieces, self._starts, s, what, clip=True)
+    def _at(self, where) -> np.ndarray:
+        """The arc lengths ``where`` names: a count n (a scalar) as :meth:`arclengths`, or
+        arc lengths along the spline (1-D, from point 0, within [0, length])."""
+        if np.ndim(where) == 0:
+            if isinstance(where, (float, np.floating)) and not float(where).is_integer():
+                raise TypeError(f"ElasticSpline: a scalar is the number of points (n >= 2), got "
+                                f"{where!r}; for arc lengths along the spline pass an array "
+                                "(e.g. [s]), as SmoothElastica.points(s) takes")
+            return self.arclengths(where)
+        s = as_vector(where, "ElasticSpline: s", finite=True)
+        slack = 1e-12 * self.length   # rounding of a computed length
+        bad = np.flatnonzero((s < -slack) | (s > self.length + slack))
+        if len(bad):
+            raise ValueError(f"ElasticSpline: arc length s[{bad[0]}] = {float(s[bad[0]])!r} "
+                             f"is outside the spline, [0, {self.length!r}]")
+        return np.clip(s, 0.0, self.length)
 
-    def points(self, n: int = 200) -> np.ndarray:
-        """(n, 2) points at n arc lengths equally spaced over the whole spline."""
-        return self._eval(self.arclengths(n), "points")
+    def _eval(self, where, what: str) -> np.ndarray:
+        return chain_eval(self.pieces, self._starts, self._at(where), what, clip=True)
 
-    def curvature(self, n: int = 200) -> np.ndarray:
-        """Signed curvature at the same n arc lengths as :meth:`points`."""
-        return self._eval(self.arclengths(n), "curvature")
+    def points(self, n=200) -> np.ndarray:
+        """(n, 2) points at n arc lengths equally spaced over the whole spline; or, given
+        an array of arc lengths s along the spline (from point 0, in [0, length]), the
+        points there (as SmoothElastica.points(s))."""
+        return self._eval(n, "points")
 
-    def angle(self, n: int = 200) -> np.ndarray:
-        """Tangent angle (rad, continuous) at the same n arc lengths as :meth:`points`."""
-        return self._eval(self.arclengths(n), "angle")
+    def curvature(self, n=200) -> np.ndarray:
+        """Signed curvature at the same n arc lengths as :meth:`points` (or at arc lengths s)."""
+        return self._eval(n, "curvature")
 
-    def comb(self, n: int = 200, scale: Optional[float] = None) -> np.ndarray:
+    def angle(self, n=200) -> np.ndarray:
+        """Tangent angle (rad, continuous) at the same n arc lengths as :meth:`points` (or
+        at arc lengths s)."""
+        return self._eval(n, "angle")
+
+    def comb(self, n=200, scale: Optional[float] = None) -> np.ndarray:
         """The curvature comb: (n, 2) tips p - scale kappa N at the arc lengths of
-        :meth:`points` (teeth outside the bend, as CAD combs are drawn); ``scale``
-        defaults to 15 % of the extent over the largest curvature."""
+        :meth:`points` (n, or arc lengths s; teeth outside the bend, as CAD combs are
+        drawn); ``scale`` defaults to 15 % of the extent over the largest curvature."""
         if scale is not None:
             scale = as_real(scale, "ElasticSpline.comb: scale")
         xy, k, th = self.points(n), self.curvature(n), self.angle(n)
@@ -158,6 +197,29 @@ class ElasticSpline:
         (el_spline_to_bspline = el_smooth_chain_to_bspline), joined C2 (so G2) at the
         points."""
         return smooth_chain_to_bspline(self.pieces, tol, degree)
+
+
+def back_steps(points, closed: bool = False) -> List[int]:
+    """Where the polygon through ``points`` goes forward, back and forward again (a Z)
+    within a span too short to be drawn: the indices i whose span from point i to point
+    i + 1 turns by more than 90 deg from both the span before and the span after it, and
+    is shorter than BACK_STEP of the points' extent (the larger side of their bounding
+    box). Scan points whose jitter exceeds their spacing do this; a batten through them
+    must turn back and forth at each."""
+    pts = as_points(points, "points")
+    q = np.vstack([pts[-1:], pts, pts[:2]]) if closed else pts   # closed: every span inside
+    d = np.diff(q, axis=0)
+    if len(d) < 3:
+        return []
+    back = np.einsum("ij,ij->i", d[:-1], d[1:]) < 0.0          # span j+1 turns back from j
+    short = np.hypot(*d.T) < BACK_STEP * float(np.ptp(pts, axis=0).max())
+    k = np.flatnonzero(back[:-1] & back[1:] & short[1:-1]) + 1   # spans of q
+    return [int(i) - 1 if closed else int(i) for i in k]
+
+
+def _back_step_text(places, n) -> str:
+    said = ", ".join(f"{i} to {(i + 1) % n}" for i in places[:4])
+    return said + (f" and {len(places) - 4} more" if len(places) > 4 else "")
 
 
 def _end(spec, name: str, opt_end) -> None:
@@ -258,7 +320,10 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
     Raises ``ValueError`` for bad input (coincident consecutive points, NaN, ``start`` /
     ``end`` given with ``closed=True``: a closed curve has no ends, ...),
     :class:`DomainError` when no such spline exists (a length not longer than
-    the polygon; tension 0 when the free batten would slide off its ducks) and
+    the polygon; tension 0 when the free batten would slide off its ducks; points that
+    double back within their noise, :class:`DoublesBackError`: BACK_STEPS_MANY or more
+    :func:`back_steps`, refused before solving, naming them; fewer are named in the error
+    where no spline is found) and
     :class:`NotConvergedError` when the solver stops short of ``tol`` (its
     ``spline`` attribute holds the spline reached, if any: an arc of a circle, or
     pieces nearly straight under tension, resolve only to ~1e-10..1e-7; the message names
@@ -338,6 +403,24 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
             for k in SMOOTH_PARAMS:
                 setattr(arr[i], k, float(getattr(p, k)))
         opt.initial, opt.ninitial = arr, len(pieces)
+    places = back_steps(pts, closed)
+    if len(places) >= BACK_STEPS_MANY:   # noise: refused before a solve that cannot succeed
+        err = DoublesBackError(lib.EL_EDOM, (
+            f"elastic_spline: the points double back on themselves {len(places)} times, as "
+            "scan points do where their jitter exceeds their spacing: the polygon runs back "
+            "against both neighbouring spans from point " + _back_step_text(places, n) +
+            f" (counted from 0; spans under {BACK_STEP:g} of the points' extent): a batten "
+            "through them must turn back and forth at each, at every tension and length "
+            "(the free batten slides off, under tension it loops); fair "
+            "the points with el.fit (`elastica fit`) instead, or thin them to points farther "
+            "apart than their noise"))
+        err.places = places
+        raise err
+    # fewer: named where no spline is found (a likely cause, not a proven one)
+    hint = (f"; their polygon doubles back (runs back against both neighbouring spans, one "
+            f"under {BACK_STEP:g} of the points' extent) from point {_back_step_text(places, n)} "
+            "(counted from 0), where a batten must turn back and forth: for scan points, fair them "
+            "(el.fit, `elastica fit`) or thin them") if places else ""
     res = ffi.new("el_spline_result *")
     st = lib.el_spline_solve(dptr(pts), n, opt, res)
     try:
@@ -362,8 +445,8 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
             return sp
         if st == lib.EL_EDOM:   # the cases above are checked: the free batten
             raise DomainError(st, "elastic_spline: no free-sliding batten (tension 0) passes "
-                                  "these points: it slides off its ducks; give a tension > 0 "
-                                  "or a length")
+                                  "these points: it slides off its ducks" + hint +
+                                  ("; else" if hint else ";") + " give a tension > 0 or a length")
         if st == lib.EL_ERANGE:
             lo, hi, fair = (float(res.reach[i]) for i in range(3))
             within = lo <= L <= hi
@@ -394,7 +477,7 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
                 "reaches others (a larger tension gives a shorter "
                 "spline; by tension x (longest span)^2 it solves all of 24 random sketches up "
                 "to 100, 19 at 300, 5 at 450, elastica.h: Accuracy), and its pieces as initial= start length mode on "
-                "their family"))
+                "their family" + hint))
             err.shortest, err.longest, err.longest_fair, err.polygon = lo, hi, fair, polygon
             err.spline = None
             raise err
@@ -419,7 +502,7 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
             err = NotConvergedError(st, "elastic_spline: did not converge: " + (
                 f"residual {res.residual:.3g} > tol {tol:g} (the spline reached is kept in "
                 "the exception)" if res.npieces else "no spline through the points was reached")
-                + why)
+                + why + hint)
             err.spline = ElasticSpline(res, pts, closed) if res.npieces else None
             err.largest_tension = largest
             raise err

@@ -663,6 +663,34 @@ class SplineTest(S.DocTest):
             self.assertTrue(C.MESSAGES and words in C.MESSAGES[-1], (words, C.MESSAGES))
             self.assertEqual(S.doc_state(self.doc), before, words)
 
+    def test_points_that_double_back_say_so(self):
+        """QA16 F4: a hand-drawn stroke as a wire (300 points of a 120 deg arc, jitter 0.35 mm
+        larger than the spacing where the hand slowed): the command said 'no free batten
+        ... (it slides off its ducks), nor one without loops at 1 to 1000 / the polygon
+        through them squared: give a length' after ten solves; it now names where the
+        points double back and points to the fit, by tension or length alike."""
+        import numpy
+        n = 300
+        speed = numpy.interp(numpy.linspace(0, 1, n - 1), [0, .3, .5, .7, 1],
+                             [1, 1, 1 / 30, 1, 1])
+        t = numpy.concatenate([[0.0], numpy.cumsum(speed)])
+        t *= math.radians(120) / t[-1]
+        xy = numpy.column_stack([100 * numpy.sin(t), 100 * (1 - numpy.cos(t))]) + \
+            numpy.random.default_rng(16).normal(0.0, 0.35, (n, 2))
+        wire = self.doc.addObject("Part::Feature", "Stroke")
+        wire.Shape = Part.makePolygon([App.Vector(x, y, 0) for x, y in xy])
+        self.doc.recompute()
+        before = S.doc_state(self.doc)
+        for opts in ({}, {"Tension": 0.01}, {"Mode": "length", "Length": 400.0}):
+            del C.MESSAGES[:]
+            self.assertIsNone(C.spline_sources([(wire, [])], open_panel=False, **opts), opts)
+            said = C.MESSAGES[-1]
+            self.assertIn("the points double back on themselves 46 times", said)
+            self.assertIn("from point 8 to 9, 16 to 17", said)
+            self.assertIn("Fit elastica command", said)
+            self.assertNotIn("give a length", said)
+            self.assertEqual(S.doc_state(self.doc), before)
+
     def test_a_deleted_source_is_named(self):
         """QA: a feature whose source was deleted said 'nothing selected: select ...', the
         command's words."""

@@ -109,6 +109,26 @@ def test_sampling_matches_one_point_evaluation():
     assert comb.shape == (157, 2) and np.all(np.isfinite(comb))
 
 
+def test_points_at_arc_lengths_as_the_smooth_curve():
+    """QA16 P2: an array of arc lengths along the spline (as SmoothElastica.points(s) takes)
+    gives the points there; a count still gives equally spaced ones; a scalar that is no
+    count, or s outside [0, length], says what it takes."""
+    sp = el.elastic_spline(SKETCH, tension=0.5)
+    s = np.array([0.0, 0.3, sp.pieces[0].length, 4.2, sp.length])
+    starts = np.concatenate([[0.0], np.cumsum([p.length for p in sp.pieces])])
+    for i, si in enumerate(s):
+        j = min(np.searchsorted(starts, si, side="right") - 1, len(sp.pieces) - 1)
+        a, t, kk = one_point(sp.pieces[j], min(si - starts[j], sp.pieces[j].length))
+        assert np.array_equal(sp.points(s)[i], a) and sp.curvature(s)[i] == kk
+        assert sp.angle(list(s))[i] == t
+    assert np.array_equal(sp.points(5), sp.points(sp.arclengths(5)))
+    assert sp.comb(s).shape == (5, 2)
+    with pytest.raises(TypeError, match="arc lengths along the spline pass an array"):
+        sp.points(2.5)
+    with pytest.raises(ValueError, match="outside the spline"):
+        sp.points([sp.length * 1.01])
+
+
 def test_forces_constant_and_ducks_push_normal():
     sigma = 1.5
     sp = el.elastic_spline(SKETCH, tension=sigma)

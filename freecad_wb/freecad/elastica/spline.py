@@ -37,6 +37,11 @@ class NoSpline(InputProblem):
     or length may give one): not bad input."""
 
 
+class DoublesBack(NoSpline):
+    """Points that double back within their noise (el.DoublesBackError): no tension or
+    length gives a batten through them that does not loop."""
+
+
 def _library_message(exc):
     return str(exc).replace("elastic_spline: ", "")
 
@@ -124,6 +129,9 @@ def _solve(xy, mode, value, closed, start, end):
                            "long: try a length nearer it")
             except ValueError:
                 pass
+    except e.DoublesBackError as exc:   # the same at every tension and length
+        raise DoublesBack(f"{_library_message(exc)}; in FreeCAD the Fit elastica command "
+                          "fairs them") from None
     except e.DomainError as exc:
         failure = _library_message(exc)
     except (ValueError, ArithmeticError, RuntimeError) as exc:
@@ -244,7 +252,7 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
         sp, note = _solve(xy, mode, value, closed, *specs)
     except NoSpline as exc:
         if returns:
-            raise NoSpline(f"the points end where they start (a closed wire) but Closed is off, "
+            raise type(exc)(f"the points end where they start (a closed wire) but Closed is off, "
                            f"so an open batten must pass the first point twice: {exc}; or set "
                            "Closed for a closed batten") from None
         raise
@@ -319,6 +327,8 @@ def starting_tension(points, plane=None, closed=False, tol=1e-3, degree=BSPLINE_
         try:
             r = spline_core(points, plane, "tension", tension, closed=closed, tol=tol,
                             degree=degree)
+        except DoublesBack:
+            raise
         except NoSpline:
             continue
         if not r["spline"].loops:
