@@ -196,38 +196,40 @@ static double noise_rms(const double *xy, size_t n, double sc, double *d)
     return fmin(plain, frame);
 }
 
+/* One of the figures (plain alone, or as noise_rms picks) with its stencils' buffer */
+static int noise_figure(const double *xy, size_t n, double sc, int plain_only, double *figure)
+{
+    double *d = malloc(sizeof(double) * (n - 3 < NOISE_SAMPLES ? n - 3 : NOISE_SAMPLES));
+    if (!d) return EL_ENOMEM;
+    *figure = plain_only ? noise_plain(xy, n, sc, d) : noise_rms(xy, n, sc, d);
+    free(d);
+    return EL_OK;
+}
+
 double el__fit_noise_rms(const double *xy, size_t n, double sc)
 {
-    if (n < 4) return 0.0;
-    double *d = malloc(sizeof(double) * (n - 3 < NOISE_SAMPLES ? n - 3 : NOISE_SAMPLES));
-    if (!d) return 0.0;
-    const double nu = noise_rms(xy, n, sc, d);
-    free(d);
+    double nu = 0.0;        /* 0 also without memory */
+    if (n >= 4) noise_figure(xy, n, sc, 0, &nu);
     return nu;
 }
 
 /* The figure as a distance to the curve: its normal part, 1/sqrt(2) of the rms per point. */
 int el_fit_noise(const double *xy, size_t n, double *noise)
 {
-    double cx, cy, sc;
+    double cx, cy, sc, nu;
     int st;
     if (check_points(xy, n, 4) || !noise) return EL_EINVAL;
     if ((st = el__fit_normalisation(xy, n, &cx, &cy, &sc))) return st;
-    double *d = malloc(sizeof(double) * (n - 3 < NOISE_SAMPLES ? n - 3 : NOISE_SAMPLES));
-    if (!d) return EL_ENOMEM;
-    *noise = noise_rms(xy, n, sc, d) * sc * 0.70710678118654752;
-    free(d);
+    if ((st = noise_figure(xy, n, sc, 0, &nu))) return st;
+    *noise = nu * sc * 0.70710678118654752;
     return EL_OK;
 }
 
 /* The plain figure alone (fit.c's stop rule for a constrained fit). */
 double el__fit_noise_plain(const double *xy, size_t n, double sc)
 {
-    if (n < 4) return 0.0;
-    double *d = malloc(sizeof(double) * (n - 3 < NOISE_SAMPLES ? n - 3 : NOISE_SAMPLES));
-    if (!d) return 0.0;
-    const double plain = noise_plain(xy, n, sc, d);
-    free(d);
+    double plain = 0.0;
+    if (n >= 4) noise_figure(xy, n, sc, 1, &plain);
     return plain;
 }
 
