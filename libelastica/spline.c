@@ -333,7 +333,8 @@ int el_spline_solve(const double *xy, size_t n, const el_spline_options *opt,
     if (st != EL_ENOCONV) return st;
     /* a high tension that fails: the largest that solves (spline_limit.c) */
     double largest[3];
-    if (el__spline_largest(xy, n, opt, largest)) { el_spline_result_free(res); return EL_ENOMEM; }
+    int nsolves;
+    if (el__spline_largest(xy, n, opt, largest, &nsolves)) { el_spline_result_free(res); return EL_ENOMEM; }
     for (int i = 0; i < 3; i++) res->largest[i] = largest[i];
     return st;
 }

@@ -8,7 +8,13 @@
  * resolution), ~2.3 x per +50 of sigma h^2 (examples/ducks.csv: 1.2e-7 at 450, 2.9e-7 at
  * 500, 4e-7 at 520, none from 560). The search: sigma h^2 = min(asked, 1024) x 2^(-j/4),
  * j = 1, 2, ..., down to 100, the first that solves without loops, then 3 bisections in
- * log above it (at most 18 solves; was the Python binding's, which now reads the result).
+ * log above it (was the Python binding's, which now reads the result). The rungs are not
+ * tried from the top down but from the one just below LIKELY (the limit mostly lies at
+ * sigma h^2 ~400 .. 560: the separatrix bound above), up until two in a row fail, else
+ * down to the first that solves: a rung above the limit costs a whole failing solve (a G2
+ * one's search by length too, ~5 x a tension solve). The same rung as from the top where
+ * none solves above two failing in a row (above the limit the ladder is not monotone where
+ * pieces reach k = 1 exactly and solve at a resolution > 1: F ok F ok ok on three of 62).
  */
 #include "internal.h"
 
@@ -34,9 +40,14 @@ static int solves(const double *xy, size_t n, const el_spline_options *opt, doub
     return ok;
 }
 
-int el__spline_largest(const double *xy, size_t n, const el_spline_options *opt, double largest[3])
+/* Where the rungs are first tried: the one just below (sigma h^2 on the longest span) */
+#define LIKELY 510.0
+
+int el__spline_largest(const double *xy, size_t n, const el_spline_options *opt, double largest[3],
+                       int *nsolves)
 {
     largest[0] = largest[1] = largest[2] = 0.0;
+    *nsolves = 0;
     if (opt->mode != EL_SPLINE_TENSION || !(opt->sigma > 0.0)) return EL_OK;
     const int closed = opt->closed;
     if (closed && xy[0] == xy[2 * n - 2] && xy[1] == xy[2 * n - 1]) n--;   /* as el_spline_solve */
@@ -48,20 +59,33 @@ int el__spline_largest(const double *xy, size_t n, const el_spline_options *opt,
     const double h2 = h * h, asked = opt->sigma * h2;
     if (!(asked >= EL__SP_STIFF_SH2)) return EL_OK;
     const double top = fmin(asked, 1024.0);
-    double lo = top, got[2] = {0.0, 0.0};
-    int ok = 0;
-    for (int j = 1; j < 16 && !ok; j++) {
-        lo = top * pow(2.0, -(double)j / 4.0);
-        if (lo < 100.0) return EL_OK;
-        if ((ok = solves(xy, n, opt, h2, lo, got)) < 0) return EL_ENOMEM;
+    /* rung j: top x 2^(-j/4), j = 1 .. jmax (>= 100); j0: the first at or below LIKELY */
+    int jmax = 15;
+    while (jmax >= 1 && top * pow(2.0, -(double)jmax / 4.0) < 100.0) jmax--;
+    if (jmax < 1) return EL_OK;
+    int j0 = 1;
+    while (j0 < jmax && top * pow(2.0, -(double)j0 / 4.0) > LIKELY) j0++;
+    /* up from j0 until two rungs in a row fail (the highest that solved: best), else down
+     * from below j0 to the first that solves */
+    double got[2] = {0.0, 0.0}, g[2];
+    int best = 0, fails = 0, s;
+    for (int j = j0; j >= 1 && fails < 2; j--) {
+        (*nsolves)++;
+        if ((s = solves(xy, n, opt, h2, top * pow(2.0, -(double)j / 4.0), g)) < 0) return EL_ENOMEM;
+        fails = s ? 0 : fails + 1;
+        if (s) { best = j; got[0] = g[0]; got[1] = g[1]; }
     }
-    if (!ok) return EL_OK;
-    double hi = lo * pow(2.0, 0.25);
+    for (int j = j0 + 1; !best && j <= jmax; j++) {
+        (*nsolves)++;
+        if ((s = solves(xy, n, opt, h2, top * pow(2.0, -(double)j / 4.0), got)) < 0) return EL_ENOMEM;
+        if (s) best = j;
+    }
+    if (!best) return EL_OK;
+    double lo = top * pow(2.0, -(double)best / 4.0), hi = lo * pow(2.0, 0.25);
     for (int i = 0; i < 3; i++) {
         const double mid = pow(lo * hi, 0.5);
-        double g[2];
-        const int s = solves(xy, n, opt, h2, mid, g);
-        if (s < 0) return EL_ENOMEM;
+        (*nsolves)++;
+        if ((s = solves(xy, n, opt, h2, mid, g)) < 0) return EL_ENOMEM;
         if (s) { lo = mid; got[0] = g[0]; got[1] = g[1]; } else hi = mid;
     }
     largest[0] = lo / h2;

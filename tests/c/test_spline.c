@@ -478,6 +478,50 @@ START_TEST(taut_batten_under_a_high_tension)
 }
 END_TEST
 
+/* The search for the largest tension (spline_limit.c) tries the rungs sigma h^2 = top x
+ * 2^(-j/4) near where the limit lies first, not from the top down: the same rung as from
+ * the top (every rung above it fails: checked here one by one), in fewer tension solves.
+ * The sketch at 1000 (top-down: 841 .. 595 fail, 500 solves, then 3 bisections: 7 solves;
+ * here 500, 595, 707, then the 3: 6) and QA16's 7 ducks with a G2 start at sigma h^2 17450
+ * (top 1024: 861 .. 431 fail, 362 solves: 9 solves, the failing G2 ones each with its
+ * search by length; here 431, 512, 362 and the 3: 6) */
+static void check_largest_rung(const double *xy, size_t n, const el_spline_options *o, int most)
+{
+    const double h = longest_side(xy, n), top = fmin(o->sigma * h * h, 1024.0);
+    double largest[3];
+    int nsolves = -1;
+    ck_assert_int_eq(el__spline_largest(xy, n, o, largest, &nsolves), EL_OK);
+    const double sh2 = largest[0] * h * h;
+    ck_assert_msg(nsolves >= 4 && nsolves <= most, "%d solves", nsolves);
+    int j = 1;
+    while (top * pow(2.0, -(double)j / 4.0) > sh2 * (1.0 + 1e-12)) j++;
+    const double rung = top * pow(2.0, -(double)j / 4.0);
+    ck_assert_msg(sh2 >= rung * (1.0 - 1e-12) && sh2 < rung * pow(2.0, 0.25), "sigma h^2 %g, rung %g", sh2, rung);
+    for (int i = 1; i < j; i++) {   /* every rung above fails (or loops) */
+        el_spline_options q = *o;
+        q.sigma = top * pow(2.0, -(double)i / 4.0) / (h * h);
+        el_spline_result r;
+        const int st = el__spline_solve_paths(xy, n, &q, 1, &r);
+        ck_assert_msg(st != EL_OK || r.loops, "rung %g solves", q.sigma * h * h);
+        el_spline_result_free(&r);
+    }
+}
+
+START_TEST(the_largest_tension_is_searched_near_the_limit_first)
+{
+    const double h = longest_side(sketch, NSKETCH);
+    el_spline_options o = opts(EL_SPLINE_TENSION, 1000.0 / (h * h));
+    check_largest_rung(sketch, NSKETCH, &o, 6);
+    static const double qa16[] = {-70, 3, -85, 12, -95, 25, -98, 40, -93, 58, -80, 70, -62, 75};
+    o = opts(EL_SPLINE_TENSION, 50.0);
+    o.start.kind = EL_SPLINE_G2;
+    o.start.tangent[0] = -1.0;
+    o.start.tangent[1] = 0.0;
+    o.start.curvature = 0.0;
+    check_largest_rung(qa16, 7, &o, 6);
+}
+END_TEST
+
 /* Beyond what a double resolves (the sketch at sigma x (longest span)^2 1000: EL_ENOCONV,
  * res empty) the solve gives the largest tension that solves the ducks (res->largest,
  * spline_limit.c; before, only the Python binding looked for it, with up to 18 solves of
@@ -696,6 +740,7 @@ int main(void)
     tcase_add_test(tc, free_batten_that_does_not_exist);
     tcase_add_test(tc, taut_batten_under_a_high_tension);
     tcase_add_test(tc, too_high_a_tension_gives_the_largest_that_solves);
+    tcase_add_test(tc, the_largest_tension_is_searched_near_the_limit_first);
     tcase_add_test(tc, bad_input_and_clear_statuses);
     tcase_add_test(tc, bspline_is_one_g2_curve_within_tol);
     tcase_add_test(tc, smooth_to_bspline_g2_has_exact_ends);
