@@ -64,14 +64,43 @@ static void predict(el__spchain *w, const el__spsnap *a, const el__spsnap *b, do
  * batten that does not exist) the path ends sooner (a 1000-point zigzag says
  * EL_EDOM in ~1 s, was ~5 s; the results elsewhere are the same).
  */
-int el__spline_continuation(el__spchain *w, el__spsnap sv[2], int max_steps, double dt,
-                            void (*set)(el__spchain *, double, const double *), const double *par,
-                            double aim, double accept)
+/* Where a continuation ran out of steps after a step that succeeded: its two snapshots
+ * and t, dt, to go on from (LONG_PATH), the same steps as taking them all again (the
+ * predictor rebuilds the chain from the snapshots) */
+typedef struct {
+    el__spsnap cur, prev;
+    double t, tp, dt;
+    int steps, valid;
+} cont_rest;
+
+static void snap_copy(const el__spchain *w, el__spsnap *d, const el__spsnap *s)
+{
+    memcpy(d->x, s->x, w->n * sizeof *d->x);
+    memcpy(d->v, s->v, EL__NV * w->m * sizeof *d->v);
+    memcpy(d->st, s->st, EL__NV * w->m * sizeof *d->st);
+    d->sigma = s->sigma;
+}
+
+/* el__spline_continuation; rest (or NULL): gone on from where it is valid, kept where the
+ * steps run out */
+static int follow(el__spchain *w, el__spsnap sv[2], int max_steps, double dt,
+                  void (*set)(el__spchain *, double, const double *), const double *par,
+                  double aim, double accept, cont_rest *rest)
 {
     double t = 0.0, tp = -1.0;
     el__spsnap *cur = &sv[0], *prev = &sv[1];
-    el__snap_save(w, cur);
-    for (int step = 0; step < max_steps; step++) {
+    int step = 0;
+    if (rest && rest->valid) {
+        snap_copy(w, cur, &rest->cur);
+        snap_copy(w, prev, &rest->prev);
+        t = rest->t; tp = rest->tp; dt = rest->dt; step = rest->steps;
+        rest->valid = 0;
+        el__snap_load(w, cur);
+        set(w, t, par);
+    } else {
+        el__snap_save(w, cur);
+    }
+    for (; step < max_steps; step++) {
         const double tn = fmin(1.0, t + dt);
         const int last = tn >= 1.0;
         if (tp >= 0.0) predict(w, prev, cur, (tn - t) / (t - tp));
@@ -96,8 +125,21 @@ int el__spline_continuation(el__spchain *w, el__spsnap sv[2], int max_steps, dou
         dt *= 0.5;
         if (dt < 1e-3) break;
     }
+    if (rest && step == max_steps && tp >= 0.0) {
+        snap_copy(w, &rest->cur, cur);
+        snap_copy(w, &rest->prev, prev);
+        rest->t = t; rest->tp = tp; rest->dt = dt; rest->steps = step;
+        rest->valid = 1;
+    }
     el__snap_load(w, cur);
     return EL_ENOCONV;
+}
+
+int el__spline_continuation(el__spchain *w, el__spsnap sv[2], int max_steps, double dt,
+                            void (*set)(el__spchain *, double, const double *), const double *par,
+                            double aim, double accept)
+{
+    return follow(w, sv, max_steps, dt, set, par, aim, accept, NULL);
 }
 
 /* sigma(t) between par[0] (t = 0) and par[1] geometrically in sigma + par[2]. */
@@ -312,21 +354,23 @@ static int follow_length(el__spchain *w, int max_steps, double Lt)
  * accepted at start_accept) along the tension to target, geometrically in sigma + 1:
  * EL_OK, EL_ENOCONV or EL_ENOMEM */
 static int from_sigma_start(el__spchain *w, int max_steps, double sigma0, double target, double start_aim,
-                            double start_accept, double aim, double accept, int taut)
+                            double start_accept, double aim, double accept, int taut, cont_rest *rest)
 {
+    const double par[3] = {sigma0, target, 1.0};
+    if (rest && rest->valid)   /* where its first try ran out of steps */
+        return follow(w, w->snap, max_steps, 0.25, set_sigma, par, aim, accept, rest);
     w->sigma = sigma0;
     if (taut) el__chain_taut_angles(w); else el__chain_start_angles(w);
     const int st = el__chain_start_pieces(w);
     if (st) return st == EL_ENOMEM ? st : EL_ENOCONV;
     if (el__chain_newton(w, EL__SP_DIRECT_ITER, start_aim, start_accept) != EL_OK) return EL_ENOCONV;
-    const double par[3] = {sigma0, target, 1.0};
-    return el__spline_continuation(w, w->snap, max_steps, 0.25, set_sigma, par, aim, accept);
+    return follow(w, w->snap, max_steps, 0.25, set_sigma, par, aim, accept, rest);
 }
 
 static int from_sigma(el__spchain *w, int max_steps, double sigma0, double target, double start_aim,
                       double start_accept, double aim, double accept)
 {
-    return from_sigma_start(w, max_steps, sigma0, target, start_aim, start_accept, aim, accept, 0);
+    return from_sigma_start(w, max_steps, sigma0, target, start_aim, start_accept, aim, accept, 0, NULL);
 }
 
 /* The batten pulled from sigma0 to w->sigma (from_sigma), kept when it converges shorter
@@ -409,7 +453,7 @@ static int taut_start(el__spchain *w, int max_steps, double target, double aim, 
     if (st && w->resid <= EL__SP_NEAR) w->near = 1;
     else if (st)   /* else from the taut start at sigma h^2 = EL__SP_HIGH_SIGMA, followed to target */
         st = from_sigma_start(w, max_steps, EL__SP_HIGH_SIGMA, target, 1e-3 * EL__SP_NEAR, EL__SP_NEAR, aim,
-                              accept, 1);
+                              accept, 1, NULL);
     if (st == EL_ENOMEM || (st && !w->near)) return st;
     /* the taut batten, or nothing: a solution that winds away from its ducks is not it (2 closed
      * rings of random ducks at sigma h^2 ~ 30 ended crossing themselves) */
@@ -427,9 +471,35 @@ static int taut_start(el__spchain *w, int max_steps, double target, double aim, 
  * suffice) they are solved within their resolution (residual 2.5e-8, 3.6e-8; elastica.h:
  * Accuracy), 700 at no budget. On 23 random walks and sketches at 300 / 450 / 500 / 700:
  * 17 / 3 / 1 / 0 -> 19 / 11 / 8 / 2 solved without loops (tol 1e-8), the failures' CPU
- * ~2 x. Tried last, where every other path failed (no result changes).
+ * ~2 x. Tried last, where every other path failed (no result changes). It goes on from
+ * where the first continuation from EL__SP_HIGH_SIGMA ran out of steps (cont_rest: its two
+ * snapshots, t and dt), instead of taking those steps again to the same state: every
+ * failing rung near the limit ran out of them there.
  */
 enum { LONG_PATH = 4 };
+
+/* solve_tension_once's paths after its direct Newton (rest: LONG_PATH going on from where
+ * the first continuation ran out of steps, or NULL) */
+static int from_paths(el__spchain *w, int max_steps, int final, double aim, double accept, cont_rest *rest)
+{
+    const double target = w->sigma;
+    /* from a high tension on the mean chord (the unit here) */
+    int st = from_sigma_start(w, max_steps, EL__SP_HIGH_SIGMA, target, 1e-3 * EL__SP_NEAR, EL__SP_NEAR, aim,
+                              accept, 0, rest);
+    if (final && st == EL_OK) return el__spline_refair(w, max_steps, st, target);
+    if (st != EL_ENOCONV || w->near || !final || !(target > 0.0)) return st;
+    /* else the free batten pulled to target (FREE_START) */
+    st = from_sigma(w, max_steps, 0.0, target, 1e-3 * EL__SP_NEAR, EL__SP_NEAR, aim, accept);
+    st = w->near ? st : el__spline_refair(w, max_steps, st, target);
+    if (st == EL_ENOCONV && !w->near) st = taut_start(w, max_steps, target, aim, accept);
+    /* above the high tension, last: its continuation again with LONG_PATH x the steps */
+    if (st == EL_ENOCONV && !w->near && target > EL__SP_HIGH_SIGMA) {
+        const int steps = max_steps < 1000 / LONG_PATH ? LONG_PATH * max_steps : 1000;
+        st = from_sigma_start(w, steps, EL__SP_HIGH_SIGMA, target, 1e-3 * EL__SP_NEAR, EL__SP_NEAR, aim, accept,
+                              0, rest);
+    }
+    return st;
+}
 
 /* The tension solution at w->sigma: directly (one that winds away from its ducks: another
  * path to it, unwind), else by continuation from a high tension, else from the free batten.
@@ -448,19 +518,15 @@ static int solve_tension_once(el__spchain *w, int max_steps, int final)
         }
         if (final && w->resid <= EL__SP_NEAR) { w->near = 1; return EL_ENOCONV; }
     }
-    /* from a high tension on the mean chord (the unit here) */
-    st = from_sigma(w, max_steps, EL__SP_HIGH_SIGMA, target, 1e-3 * EL__SP_NEAR, EL__SP_NEAR, aim, accept);
-    if (final && st == EL_OK) return el__spline_refair(w, max_steps, st, target);
-    if (st != EL_ENOCONV || w->near || !final || !(target > 0.0)) return st;
-    /* else the free batten pulled to target (FREE_START) */
-    st = from_sigma(w, max_steps, 0.0, target, 1e-3 * EL__SP_NEAR, EL__SP_NEAR, aim, accept);
-    st = w->near ? st : el__spline_refair(w, max_steps, st, target);
-    if (st == EL_ENOCONV && !w->near) st = taut_start(w, max_steps, target, aim, accept);
-    /* above the high tension, last: its continuation again with LONG_PATH x the steps */
-    if (st == EL_ENOCONV && !w->near && target > EL__SP_HIGH_SIGMA) {
-        const int steps = max_steps < 1000 / LONG_PATH ? LONG_PATH * max_steps : 1000;
-        st = from_sigma(w, steps, EL__SP_HIGH_SIGMA, target, 1e-3 * EL__SP_NEAR, EL__SP_NEAR, aim, accept);
-    }
+    if (!final || !(target > EL__SP_HIGH_SIGMA)) return from_paths(w, max_steps, final, aim, accept, NULL);
+    /* LONG_PATH may follow the first continuation: its state where it runs out of steps */
+    const size_t nx = w->n, nv = EL__NV * w->m, ns = nx + 2 * nv;
+    double *rb = malloc(2 * ns * sizeof *rb);
+    if (!rb) return EL_ENOMEM;
+    cont_rest rest = {{rb, rb + nx, rb + nx + nv, 0.0}, {rb + ns, rb + ns + nx, rb + ns + nx + nv, 0.0},
+                      0.0, 0.0, 0.0, 0, 0};
+    st = from_paths(w, max_steps, final, aim, accept, &rest);
+    free(rb);
     return st;
 }
 
