@@ -648,6 +648,9 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
     if (!st || sol->near) {   /* a solution, or one to what the parametrisation resolves */
         double other, sep;
         const int st2 = make_result(sol, xy, n, S, opt->tol, res, &other, &sep);
+        /* EL_EINVAL: a near chain of pieces el_smooth_params cannot hold (a failed search's
+         * NaN, QA16's shipline rows 179..246 by length): none reached, not bad input */
+        if (st2 == EL_EINVAL) { memset(res, 0, sizeof *res); goto none; }
         if (st2) { st = st2; goto done; }
         /* does it follow its ducks (spline_fair.c)? */
         const int cr = el__spline_loops(res->pieces, res->npieces, closed);
@@ -683,6 +686,7 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
     }
     /* no solution found: for sigma = 0 the free-sliding batten slides off its ducks; a
      * length beyond those met following the family (REACH) */
+none:
     st = !lmode && opt->sigma == 0.0 && !sibling ? EL_EDOM : EL_ENOCONV;
     if (lmode && reach_of(&w, &g, S, res)) st = EL_ERANGE;   /* within reach too (QA14) */
 done:

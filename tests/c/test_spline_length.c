@@ -532,6 +532,59 @@ START_TEST(hand_placed_ducks)
 }
 END_TEST
 
+/* QA16's shipline.csv rows 179..246 (68 points doubling back): by length the search's near
+ * chain held a piece el_smooth_params cannot, and the valid input was EL_EINVAL; now the
+ * status of a search that reached no spline (EL_ENOCONV, or EL_ERANGE with the reach) */
+static const double shipline[] = {
+    25.1319,33.9972, 25.1285,34.5080, 25.1319,34.1866,
+    25.7770,34.8537, 26.2724,35.9926, 27.0896,36.7320,
+    30.1841,42.1815, 33.6682,49.5295, 36.4448,53.6620,
+    39.8851,59.4761, 40.1023,60.9480, 39.9068,62.2924,
+    40.5781,62.6377, 49.6806,83.9767, 52.4531,90.0752,
+    52.2259,89.7099, 52.8481,92.5453, 52.9551,94.9552,
+    53.4644,94.8512, 55.5306,100.1636, 57.2213,107.5007,
+    60.4759,115.7312, 59.5193,117.8512, 60.9387,119.1679,
+    60.7133,119.9707, 60.7878,119.9187, 60.2864,120.9258,
+    61.3975,125.1030, 62.5121,126.4591, 62.0078,126.3428,
+    63.6356,133.7255, 63.1522,134.2041, 64.3849,136.1374,
+    64.2055,138.9321, 64.4315,142.6488, 65.7650,144.3611,
+    65.1494,145.0180, 65.7649,147.8331, 65.7906,148.3318,
+    66.1534,149.4939, 66.1605,151.6041, 66.8765,152.7984,
+    66.7214,156.2468, 67.0598,157.2369, 66.8418,158.2853,
+    66.8846,158.8856, 67.1235,164.5165, 67.4181,166.7247,
+    68.6777,173.8210, 68.5540,175.4377, 68.7536,177.5000,
+    68.3943,179.0177, 68.7415,184.1481, 69.3458,189.1715,
+    69.3874,205.1982, 68.8388,204.7826, 68.9278,205.6881,
+    69.3292,207.4017, 68.9414,209.2027, 69.4916,210.5697,
+    69.1520,210.6092, 69.2456,212.7728, 68.8315,220.1622,
+    68.8345,222.3818, 68.2973,223.1170, 68.2918,228.4374,
+    67.5244,236.2058, 67.4128,239.5596,
+};
+
+START_TEST(shipline_by_length_is_not_einval)
+{
+    const size_t n = sizeof shipline / sizeof shipline[0] / 2;
+    ck_assert_uint_eq(n, 68);
+    double poly = 0.0;
+    for (size_t i = 0; i + 1 < n; i++)
+        poly += hypot(shipline[2 * i + 2] - shipline[2 * i], shipline[2 * i + 3] - shipline[2 * i + 1]);
+    const double f[2] = {1.05, 1.5};
+    for (int j = 0; j < 2; j++) {
+        el_spline_options o;
+        el_spline_options_defaults(&o);
+        o.mode = EL_SPLINE_LENGTH;
+        o.length = f[j] * poly;
+        el_spline_result r;
+        const int st = el_spline_solve(shipline, n, &o, &r);
+        ck_assert_int_ne(st, EL_EINVAL);
+        ck_assert(st == EL_OK || st == EL_ENOCONV || st == EL_ERANGE);
+        if (st == EL_OK) ck_assert_double_eq_tol(r.length, o.length, 1e-8 * o.length);
+        if (st == EL_ERANGE) ck_assert(r.reach[1] > 0.0);
+        el_spline_result_free(&r);
+    }
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("spline_length");
@@ -546,6 +599,8 @@ int main(void)
     tcase_add_test(tc, natural_ends_under_high_tension_reach_tol);
     tcase_add_test(tc, hand_placed_ducks);
     tcase_add_test(tc, random_walk_under_high_tension_from_the_taut_start);
+    tcase_add_test(tc, shipline_by_length_is_not_einval);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }
+
