@@ -550,12 +550,14 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
     if (closed && n < 3) return EL_EINVAL;
     const size_t m = closed ? n : n - 1;
     /* chords; coincident consecutive points are invalid */
-    double Lp = 0.0, scale = 0.0;
+    double Lp = 0.0, scale = 0.0, hmin = INFINITY, hmax = 0.0;
     for (size_t i = 0; i < n; i++) scale = fmax(scale, fmax(fabs(xy[2 * i]), fabs(xy[2 * i + 1])));
     for (size_t j = 0; j < m; j++) {
         const size_t e = (j + 1) % n;
         const double h = hypot(xy[2 * e] - xy[2 * j], xy[2 * e + 1] - xy[2 * j + 1]);
         if (!(h > 4.0 * DBL_EPSILON * scale) || !isfinite(h)) return EL_EINVAL;
+        hmin = fmin(hmin, h);
+        hmax = fmax(hmax, h);
         Lp += h;
     }
     if (!isfinite(Lp)) return EL_EINVAL;
@@ -649,8 +651,9 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
         double other, sep;
         const int st2 = make_result(sol, xy, n, S, opt->tol, res, &other, &sep);
         /* EL_EINVAL: a near chain of pieces el_smooth_params cannot hold (a failed search's
-         * NaN, QA16's shipline rows 179..246 by length): none reached, not bad input */
-        if (st2 == EL_EINVAL) { memset(res, 0, sizeof *res); goto none; }
+         * NaN, QA16's shipline rows 179..246 by length): none reached, not bad input, where
+         * the points are in el_hermite_solve's range (coordinates to 1e100, chords 1e-100..1e100) */
+        if (st2 == EL_EINVAL && scale <= 1e100 && hmin >= 1e-100 && hmax <= 1e100) { memset(res, 0, sizeof *res); goto none; }
         if (st2) { st = st2; goto done; }
         /* does it follow its ducks (spline_fair.c)? */
         const int cr = el__spline_loops(res->pieces, res->npieces, closed);
