@@ -1348,9 +1348,8 @@ void el_spline_options_defaults(el_spline_options *opt);
  * its ducks), EL_ERANGE (length mode: no spline of the length reached where splines of
  * res->reach[0..1] were met following the family, mostly a length outside them;
  * res otherwise empty), EL_ENOCONV (Newton and continuation did not reach tol; with G2
- * ends also when the continuation in the end curvatures stops; a search ending on pieces
- * el_smooth_check refuses, for points within el_hermite_solve's range: EL_EINVAL
- * beyond it), EL_ENOMEM,
+ * ends also when the continuation in the end curvatures stops; a search ending near a chain
+ * with a piece of non-positive length or non-finite unknowns), EL_ENOMEM,
  * EL_EINTERNAL.
  */
 int el_spline_solve(const double *xy, size_t n, const el_spline_options *opt,

@@ -198,6 +198,18 @@ static void knot_position(const el__spchain *w, const double *xy, double S, size
     p[1] = a[1] + gd->f * (a[3] - a[1]) + d * gd->ny;
 }
 
+/* Whether every piece of the chain is one: finite unknowns and a positive length. */
+static int pieces_drawn(const el__spchain *w)
+{
+    for (size_t j = 0; j < w->m; j++) {
+        const double *v = w->pc[j].v;
+        for (int i = 0; i < EL__NV; i++)
+            if (!isfinite(v[i])) return 0;
+        if (!(v[EL__SP_L] > 0.0)) return 0;
+    }
+    return 1;
+}
+
 /* Fill res from the solved chain (original units), measuring the residual;
  * *other: the part of it from joints and ends without a circle piece or a piece
  * whose separatrix_bound exceeds tol; *sep: the largest such bound (0: none). */
@@ -550,14 +562,12 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
     if (closed && n < 3) return EL_EINVAL;
     const size_t m = closed ? n : n - 1;
     /* chords; coincident consecutive points are invalid */
-    double Lp = 0.0, scale = 0.0, hmin = INFINITY, hmax = 0.0;
+    double Lp = 0.0, scale = 0.0;
     for (size_t i = 0; i < n; i++) scale = fmax(scale, fmax(fabs(xy[2 * i]), fabs(xy[2 * i + 1])));
     for (size_t j = 0; j < m; j++) {
         const size_t e = (j + 1) % n;
         const double h = hypot(xy[2 * e] - xy[2 * j], xy[2 * e + 1] - xy[2 * j + 1]);
         if (!(h > 4.0 * DBL_EPSILON * scale) || !isfinite(h)) return EL_EINVAL;
-        hmin = fmin(hmin, h);
-        hmax = fmax(hmax, h);
         Lp += h;
     }
     if (!isfinite(Lp)) return EL_EINVAL;
@@ -647,13 +657,12 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
         }
     }
     if (st == EL_ENOMEM) goto done;
-    if (!st || sol->near) {   /* a solution, or one to what the parametrisation resolves */
+    /* a solution, or one to what the parametrisation resolves: a near chain only of pieces
+     * (a failed search's may hold a negative length: QA16's shipline rows 179..246 by
+     * length, -6.81, which make_result refused as EL_EINVAL for valid points) */
+    if (!st || (sol->near && pieces_drawn(sol))) {
         double other, sep;
         const int st2 = make_result(sol, xy, n, S, opt->tol, res, &other, &sep);
-        /* EL_EINVAL: a near chain of pieces el_smooth_params cannot hold (a failed search's
-         * NaN, QA16's shipline rows 179..246 by length): none reached, not bad input, where
-         * the points are in el_hermite_solve's range (coordinates to 1e100, chords 1e-100..1e100) */
-        if (st2 == EL_EINVAL && scale <= 1e100 && hmin >= 1e-100 && hmax <= 1e100) { memset(res, 0, sizeof *res); goto none; }
         if (st2) { st = st2; goto done; }
         /* does it follow its ducks (spline_fair.c)? */
         const int cr = el__spline_loops(res->pieces, res->npieces, closed);
@@ -689,7 +698,6 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
     }
     /* no solution found: for sigma = 0 the free-sliding batten slides off its ducks; a
      * length beyond those met following the family (REACH) */
-none:
     st = !lmode && opt->sigma == 0.0 && !sibling ? EL_EDOM : EL_ENOCONV;
     if (lmode && reach_of(&w, &g, S, res)) st = EL_ERANGE;   /* within reach too (QA14) */
 done:
