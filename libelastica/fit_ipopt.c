@@ -74,14 +74,19 @@ typedef struct ipctx {
     int free;               /* L-BFGS without constraint rows or bounds: cb_iter stops it */
 } ipctx;
 
+/* Whether c->val holds the objective at x (with g and H when normal). */
+static int cached(const ipctx *c, const double *x, int normal)
+{
+    return c->have && (c->have_normal || !normal) && !memcmp(c->xkey, x, sizeof(double) * (size_t)c->nx);
+}
+
 /* The objective at x into c->val (with g and H when normal). Only f where that is the same
  * number without them: the discrete model by distance (its f from the polygon's
  * distances, computed before the Jacobian; the line search's trial points, most of the
  * evaluations, need no more). The smooth feet and the paired walk: always in full. */
 static int ensure(ipctx *c, const double *x, int normal)
 {
-    if (c->have && (c->have_normal || !normal) && !memcmp(c->xkey, x, sizeof(double) * (size_t)c->nx))
-        return EL_OK;
+    if (cached(c, x, normal)) return EL_OK;
     const int want = normal || !c->o->poly;
     c->have = 0;
     /* every evaluation projects the feet from the same start, those of the point whose
@@ -250,7 +255,7 @@ static int lagrangian_gradient(ipctx *c, const double *x, double of, const doubl
     /* at x: the cached objective where it is the same number (the discrete model's:
      * a function of x alone, unlike the smooth feet, which ensure moves first) */
     const fit_value *pv = &v;
-    if (!fit_has_feet(c->o) && c->have && c->have_normal && !memcmp(c->xkey, x, sizeof(double) * (size_t)c->nx))
+    if (!fit_has_feet(c->o) && cached(c, x, 1))
         pv = &c->val;
     else if (el__fit_objective_eval(c->o, x, 1, &v))
         return 0;
