@@ -206,24 +206,13 @@ static int fine_rungs(el__spchain *w, int max_steps, double Lt, const el__spsnap
     return fresh;
 }
 
-int el__spline_length_by_tension(el__spchain *w, int max_steps, double Lt, int least)
+/* The rungs: end[0] longer than Lt (a lower tension), end[1] shorter (have[e]: reached);
+ * fair[e]: the last on each side that does not cross itself (FAIR_RUNGS); met: the rungs'
+ * lengths, the least, the greatest, the greatest not crossing itself (REACH). -1 out of
+ * memory, else 0 */
+static int ladder(el__spchain *w, int max_steps, double Lt, el__spsnap end[2], double len[2], int have[2],
+                  el__spsnap fair[2], double flen[2], int hfair[2], double met[3])
 {
-    if (!(Lt > 0.0)) return EL_ENOCONV;
-    const size_t n = w->n, m = w->m, ns = n + 2 * EL__NV * m;
-    double *buf = malloc(5 * ns * sizeof *buf);
-    if (!buf) return EL_ENOMEM;
-    /* the bracket: end[0] longer than Lt (a lower tension), end[1] shorter; kept: the
-     * best spline reached from them */
-    el__spsnap end[2] = {{buf, buf + n, buf + n + EL__NV * m, 0.0},
-                         {buf + ns, buf + ns + n, buf + ns + n + EL__NV * m, 0.0}};
-    el__spsnap kept = {buf + 2 * ns, buf + 2 * ns + n, buf + 2 * ns + n + EL__NV * m, 0.0};
-    /* FAIR_RUNGS: the last rung on each side that does not cross itself */
-    el__spsnap fair[2] = {{buf + 3 * ns, buf + 3 * ns + n, buf + 3 * ns + n + EL__NV * m, 0.0},
-                          {buf + 4 * ns, buf + 4 * ns + n, buf + 4 * ns + n + EL__NV * m, 0.0}};
-    double len[2] = {0.0, 0.0}, flen[2] = {0.0, 0.0};
-    int have[2] = {0, 0}, hfair[2] = {0, 0};
-    /* the rungs' lengths: the least, the greatest, the greatest not crossing itself (REACH) */
-    double met[3] = {HUGE_VAL, 0.0, 0.0};
     /* down from the taut batten until a rung says which way (up, from above it, when the
      * first is longer than Lt) */
     double sigma = EL__SP_HIGH_SIGMA, top = EL__SP_HIGH_SIGMA * (double)(1 << LADDER_UP);
@@ -231,7 +220,7 @@ int el__spline_length_by_tension(el__spchain *w, int max_steps, double Lt, int l
     int up = -1;
     while (sigma >= bottom && sigma <= top) {
         const int r = tension_at(w, max_steps, sigma);
-        if (r < 0) { free(buf); return EL_ENOMEM; }
+        if (r < 0) return -1;
         if (r) {
             const double L = total_length(w);
             note_rung(w, sigma);
@@ -239,7 +228,7 @@ int el__spline_length_by_tension(el__spchain *w, int max_steps, double Lt, int l
             met[0] = fmin(met[0], L);
             met[1] = fmax(met[1], L);
             const int c = keep_if_fair(w, L, side, fair, flen, hfair);
-            if (c < 0) { free(buf); return EL_ENOMEM; }
+            if (c < 0) return -1;
             if (!c) met[2] = fmax(met[2], L);
             el__snap_save(w, &end[side]);   /* the last on its side: the nearest to the other */
             len[side] = L;
@@ -258,7 +247,7 @@ int el__spline_length_by_tension(el__spchain *w, int max_steps, double Lt, int l
     if (up == 1 && !have[1]) {
         const double STEP = 1.189207115002721;   /* 2^(1/4) */
         const int r0 = tension_at(w, max_steps, EL__SP_HIGH_SIGMA);
-        if (r0 < 0) { free(buf); return EL_ENOMEM; }
+        if (r0 < 0) return -1;
         if (r0) note_rung(w, EL__SP_HIGH_SIGMA);
         if (r0 && total_length(w) >= Lt) {   /* the bracket's long end on this family */
             el__snap_save(w, &end[0]);
@@ -279,7 +268,7 @@ int el__spline_length_by_tension(el__spchain *w, int max_steps, double Lt, int l
             const double par[2] = {sigma, STEP * sigma};
             const int sc = el__spline_continuation(w, w->snap, max_steps, 1.0, set_sigma, par,
                                                    1e-3 * EL__SP_NEAR, EL__SP_NEAR);
-            if (sc == EL_ENOMEM) { free(buf); return EL_ENOMEM; }
+            if (sc == EL_ENOMEM) return -1;
             if (sc) break;
             sigma = par[1];
             note_rung(w, sigma);
@@ -290,12 +279,49 @@ int el__spline_length_by_tension(el__spchain *w, int max_steps, double Lt, int l
             const int side = L >= Lt ? 0 : 1;
             met[0] = fmin(met[0], L);
             if (side == 0 && L > len[0]) break;   /* not shorter: not the family's way */
-            if (keep_if_fair(w, L, side, fair, flen, hfair) < 0) { free(buf); return EL_ENOMEM; }
+            if (keep_if_fair(w, L, side, fair, flen, hfair) < 0) return -1;
             el__snap_save(w, &end[side]);
             len[side] = L;
             have[side] = 1;
             if (side) break;
         }
+    }
+    return 0;
+}
+
+int el__spline_length_by_tension(el__spchain *w, int max_steps, double Lt, int least)
+{
+    if (!(Lt > 0.0)) return EL_ENOCONV;
+    const size_t n = w->n, m = w->m, ns = n + 2 * EL__NV * m;
+    double *buf = malloc(5 * ns * sizeof *buf);
+    if (!buf) return EL_ENOMEM;
+    /* the bracket: end[0] longer than Lt (a lower tension), end[1] shorter; kept: the
+     * best spline reached from them */
+    el__spsnap end[2] = {{buf, buf + n, buf + n + EL__NV * m, 0.0},
+                         {buf + ns, buf + ns + n, buf + ns + n + EL__NV * m, 0.0}};
+    el__spsnap kept = {buf + 2 * ns, buf + 2 * ns + n, buf + 2 * ns + n + EL__NV * m, 0.0};
+    /* FAIR_RUNGS: the last rung on each side that does not cross itself */
+    el__spsnap fair[2] = {{buf + 3 * ns, buf + 3 * ns + n, buf + 3 * ns + n + EL__NV * m, 0.0},
+                          {buf + 4 * ns, buf + 4 * ns + n, buf + 4 * ns + n + EL__NV * m, 0.0}};
+    double len[2] = {0.0, 0.0}, flen[2] = {0.0, 0.0};
+    int have[2] = {0, 0}, hfair[2] = {0, 0};
+    /* the rungs' lengths: the least, the greatest, the greatest not crossing itself (REACH) */
+    double met[3] = {HUGE_VAL, 0.0, 0.0};
+    if (ladder(w, max_steps, Lt, end, len, have, fair, flen, hfair, met)) { free(buf); return EL_ENOMEM; }
+    /* NEIGHBOURS_RUNGS: no bracket, again with tension mode's NEIGHBOURS at each rung (spline_path.c:
+     * the solve el_spline_solve makes at that tension); its rungs and lengths kept only where
+     * it reaches a spline (below) */
+    double met0[3] = {0.0, 0.0, 0.0}, ladder0[2] = {0.0, 0.0};
+    const int again = !(have[0] && have[1]);
+    if (again) {
+        memcpy(met0, met, sizeof met0);
+        memcpy(ladder0, w->ladder, sizeof ladder0);
+        have[0] = have[1] = hfair[0] = hfair[1] = 0;
+        len[0] = len[1] = flen[0] = flen[1] = 0.0;
+        w->neighbours = 1;
+        const int r = ladder(w, max_steps, Lt, end, len, have, fair, flen, hfair, met);
+        w->neighbours = 0;
+        if (r) { free(buf); return EL_ENOMEM; }
     }
     /* the ways from the rungs (from_state) until one reaches a spline that does not cross
      * itself; else the first that crosses itself, else the first near one */
@@ -337,6 +363,10 @@ int el__spline_length_by_tension(el__spchain *w, int max_steps, double Lt, int l
             w->near = best == 1;
             st = best == 1 ? EL_ENOCONV : EL_OK;
         }
+    }
+    if (again && st != EL_OK && st != EL_ENOMEM && !w->near) {   /* as without NEIGHBOURS_RUNGS */
+        memcpy(met, met0, sizeof met0);
+        memcpy(w->ladder, ladder0, sizeof ladder0);
     }
     /* REACH: where no family was followed (w->reach empty: ring77, its tension mode's fair
      * splines ending at 1.11 x its polygon, said "no spline reached" at 1.1 x), the lengths

@@ -585,6 +585,44 @@ START_TEST(shipline_by_length_is_not_einval)
 }
 END_TEST
 
+/* Its lengths 1.5 and 2 x the polygon: splines exist there (loops round its doubling back,
+ * found from tension mode's at sigma h^2 = 1.75 (1.565 x) and 1 (2.096 x) on the mean chord
+ * as opt.initial: sigma h^2 2.1098, 1.1516), where the search ended on a chain with a piece
+ * of length -2.05 (a secant predictor's, now refused by el__spiece_set_state) and then none
+ * (the bracket's rungs: NEIGHBOURS_RUNGS). The same spline as from the initial pieces. */
+START_TEST(shipline_by_length_reaches_its_looping_splines)
+{
+    const size_t n = sizeof shipline / sizeof shipline[0] / 2;
+    const double poly = polygon_length(shipline, n), S = poly / (double)(n - 1);
+    const double f[2] = {1.5, 2.0}, sh2[2] = {1.75, 1.0};
+    for (int j = 0; j < 2; j++) {
+        el_spline_options o;
+        el_spline_options_defaults(&o);
+        o.sigma = sh2[j] / (S * S);
+        el_spline_result t;
+        ck_assert_int_eq(el_spline_solve(shipline, n, &o, &t), EL_OK);
+        o.mode = EL_SPLINE_LENGTH;
+        o.length = f[j] * poly;
+        el_spline_result a, b;
+        ck_assert_msg(el_spline_solve(shipline, n, &o, &a) == EL_OK, "%g x", f[j]);
+        o.initial = t.pieces;
+        o.ninitial = t.npieces;
+        ck_assert_int_eq(el_spline_solve(shipline, n, &o, &b), EL_OK);
+        o.initial = NULL;
+        o.ninitial = 0;
+        check_spline(shipline, n, &o, &a, 1e-8);
+        ck_assert_double_eq_tol(a.length, o.length, 1e-8 * o.length);
+        for (size_t i = 0; i < a.npieces; i++) ck_assert(a.pieces[i].length > 0.0);
+        ck_assert_double_eq_tol(a.sigma, b.sigma, 1e-6 * fabs(b.sigma));
+        ck_assert_double_eq_tol(a.energy, b.energy, 1e-6 * b.energy);
+        ck_assert_int_eq(a.loops, 1);
+        el_spline_result_free(&a);
+        el_spline_result_free(&b);
+        el_spline_result_free(&t);
+    }
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("spline_length");
@@ -600,6 +638,7 @@ int main(void)
     tcase_add_test(tc, hand_placed_ducks);
     tcase_add_test(tc, random_walk_under_high_tension_from_the_taut_start);
     tcase_add_test(tc, shipline_by_length_is_not_einval);
+    tcase_add_test(tc, shipline_by_length_reaches_its_looping_splines);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }
