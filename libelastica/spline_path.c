@@ -441,7 +441,7 @@ static void unwind(el__spchain *w, int max_steps, double aim, double accept)
  * own conditioning stops it (elastica.h, Accuracy: a piece's tail multiplies a change at
  * its start by ~exp(sqrt(sigma / 2) h)).
  */
-static int taut_start(el__spchain *w, int max_steps, double target, double aim, double accept)
+static int taut_start(el__spchain *w, int max_steps, double target, double aim, double accept, int loose)
 {
     if (w->ng || !(target > 0.0)) return EL_ENOCONV;
     w->near = 0;
@@ -456,8 +456,11 @@ static int taut_start(el__spchain *w, int max_steps, double target, double aim, 
                               accept, 1, NULL);
     if (st == EL_ENOMEM || (st && !w->near)) return st;
     /* the taut batten, or nothing: a solution that winds away from its ducks is not it (2 closed
-     * rings of random ducks at sigma h^2 ~ 30 ended crossing themselves) */
-    const int wd = el__chain_wanders(w);
+     * rings of random ducks at sigma h^2 ~ 30 ended crossing themselves); loose (TAUT_LOOPS): one
+     * that loops is kept unless longer than 4 x its polygon (el_spline_result's loops says so) */
+    double poly = 0.0;
+    for (size_t j = 0; j < w->m; j++) poly += w->pc[j].h;
+    const int wd = loose ? total_length(w) > 4.0 * poly : el__chain_wanders(w);
     if (wd) w->near = 0;
     return wd ? EL_ENOCONV : st;
 }
@@ -491,7 +494,7 @@ static int from_paths(el__spchain *w, int max_steps, int final, double aim, doub
     /* else the free batten pulled to target (FREE_START) */
     st = from_sigma(w, max_steps, 0.0, target, 1e-3 * EL__SP_NEAR, EL__SP_NEAR, aim, accept);
     st = w->near ? st : el__spline_refair(w, max_steps, st, target);
-    if (st == EL_ENOCONV && !w->near) st = taut_start(w, max_steps, target, aim, accept);
+    if (st == EL_ENOCONV && !w->near) st = taut_start(w, max_steps, target, aim, accept, 0);
     /* above the high tension, last: its continuation again with LONG_PATH x the steps */
     if (st == EL_ENOCONV && !w->near && target > EL__SP_HIGH_SIGMA) {
         const int steps = max_steps < 1000 / LONG_PATH ? LONG_PATH * max_steps : 1000;
@@ -575,13 +578,27 @@ static int from_neighbour(el__spchain *w, int max_steps, double target, size_t i
     return sc == EL_ENOMEM || sc == EL_OK ? sc : EL_ENOCONV;
 }
 
+/*
+ * TAUT_LOOPS (tension mode's own solve, where every path failed): the taut start's solution
+ * that loops, which taut_start refuses as a start, is the answer, flagged by the result's
+ * loops. QA's random walks 46, 193, 195 (10 ducks, the polygon crossing itself) at sigma x
+ * (longest span)^2 = 100 said EL_ENOCONV once the searches took the result's loop rule
+ * (el__chain_crosses = el__spline_loops): every spline they reached loops.
+ */
+static int taut_loops(el__spchain *w, int max_steps, double target)
+{
+    w->lmode = 0;
+    const int st = taut_start(w, max_steps, target, w->aim, w->tol, 1);
+    return st == EL_OK || w->near ? st : EL_ENOCONV;
+}
+
 int el__spline_solve_tension(el__spchain *w, int max_steps, int final)
 {
     const double target = w->sigma;
     int st = solve_tension_once(w, max_steps, final);
-    if (!final || !w->neighbours || w->near || !(target > 0.0) || target > EL__SP_HIGH_SIGMA ||
-        (st != EL_OK && st != EL_ENOCONV))
+    if (!final || !w->neighbours || w->near || !(target > 0.0) || (st != EL_OK && st != EL_ENOCONV))
         return st;
+    if (target > EL__SP_HIGH_SIGMA) return st == EL_ENOCONV ? taut_loops(w, max_steps, target) : st;
     const int la = st == EL_OK ? loops_away(w) : 1;
     if (la <= 0) return la < 0 ? EL_ENOMEM : st;
     const size_t n = w->n, m = w->m;
@@ -621,6 +638,7 @@ int el__spline_solve_tension(el__spchain *w, int max_steps, int final)
         if (st == EL_OK || kept) { el__snap_load(w, &first); el__chain_eval(w, 0); st = EL_OK; }
     }
     free(buf);
+    if (st == EL_ENOCONV) st = taut_loops(w, max_steps, target);
     return st;
 }
 
@@ -687,7 +705,7 @@ int el__spline_solve_length(el__spchain *w, int max_steps, double Lt)
              * that failed at every length 1.02 .. 2 x now solve from 1.1 x (8 of their 12
              * lengths; those past ~1.5 x mostly loop, and say so) */
             w->lmode = 0;
-            st = taut_start(w, max_steps, EL__SP_HIGH_SIGMA, 1e-3 * EL__SP_NEAR, EL__SP_NEAR);
+            st = taut_start(w, max_steps, EL__SP_HIGH_SIGMA, 1e-3 * EL__SP_NEAR, EL__SP_NEAR, 0);
             w->near = 0;
         }
     }

@@ -74,6 +74,25 @@ static const double C61[] = {
     1.4597446087350046, 0.9031227259018499, 0.4149537020418681, 2.233444365107266,
     -0.5857171642742549, 3.135806800429161, -2.1647929001981887, 3.5216840742559627,
     -2.970357052340864, 3.5789286985380633, -3.607071378437203, 1.4104536167684292};
+/* QA's random walks 46, 193 (closed) and 195 (open), 10 ducks each, their polygons crossing */
+static const double W46[] = {
+    1.4630367216161897, -2.0781686760077038, -0.28000147601851011, -3.2668280261235325,
+    -0.39423801885342447, -0.82685124463046167, -0.0028710464580961603, 0.38122409704974225,
+    -0.22491039715453151, -2.0824996672493388, -2.5385487565952518, -1.0638804315764752,
+    -2.3536892140899512, -2.3623795993891559, -1.2363685320899696, -3.9013345749367332,
+    -0.102126408887105, -2.4499937252707591, -0.86694978444342086, -3.5581107633362654};
+static const double W193[] = {
+    -1.444579455982179, -0.72834054972569928, -1.0955597615848276, 0.3946695150564149,
+    -1.6380415975573603, 0.033223806732663452, -1.8554352067390965, -0.14068122546689246,
+    -2.8408042148150043, -0.62233725230133852, -2.6681512345021887, -0.56215797561187919,
+    -2.689002742559488, -1.6082641981260353, -3.2801730556704021, -2.3627384995881506,
+    -2.2768000724361208, -0.95831179246111198, -1.9796069075479599, 0.58625293742157569};
+static const double W195[] = {
+    -0.082717286186916608, -0.10981988702183919, -0.092111522621079328, 0.52370598219431075,
+    -0.34096468652080325, 0.22307202008853744, 1.3446396285959792, 1.2548564777568829,
+    1.2221014983808096, 0.29676165937896448, 0.74989614475876976, 0.64589213034570458,
+    1.5580087836740706, 3.00547391561269, 1.290838328550113, 3.135077262549578,
+    0.91831103958187965, 3.1969070203072287, 0.52263293343873762, 2.1232702313491565};
 
 #define NPTS(a) (sizeof (a) / (2 * sizeof (a)[0]))
 
@@ -352,6 +371,34 @@ START_TEST(crossing_polygons_searched_by_the_loop_rule)
 }
 END_TEST
 
+/* TAUT_LOOPS (spline_path.c): W46, W193, W195 at sigma h^2 100 (longest side), where every
+ * spline the searches reached loops, said EL_ENOCONV (the taut start refused its looping
+ * solution by the result's loop rule): now the taut start's, a spline through the ducks at
+ * that tension, flagged. */
+START_TEST(where_every_spline_loops_the_taut_one_is_flagged)
+{
+    const struct { const double *xy; size_t n; int closed; } c[] = {
+        {W46, NPTS(W46), 1}, {W193, NPTS(W193), 1}, {W195, NPTS(W195), 0}};
+    for (size_t k = 0; k < sizeof c / sizeof c[0]; k++) {
+        const size_t n = c[k].n;
+        double h = longest_side(c[k].xy, n), poly = polygon_length(c[k].xy, n);
+        if (c[k].closed) {
+            const double e = hypot(c[k].xy[2 * n - 2] - c[k].xy[0], c[k].xy[2 * n - 1] - c[k].xy[1]);
+            h = fmax(h, e);
+            poly += e;
+        }
+        el_spline_options o = opts(EL_SPLINE_TENSION, 100.0 / (h * h));
+        o.closed = c[k].closed;
+        el_spline_result r;
+        ck_assert_msg(solve(c[k].xy, n, &o, &r) == EL_OK, "set %zu", k);
+        check_spline(c[k].xy, n, &o, &r, 1e-9);
+        ck_assert_msg(r.loops == 1, "set %zu: loops %d", k, r.loops);
+        ck_assert_msg(r.length < 1.5 * poly, "set %zu: %g x the polygon", k, r.length / poly);
+        el_spline_result_free(&r);
+    }
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("spline_fair");
@@ -364,6 +411,7 @@ int main(void)
     tcase_add_test(tc, crossing_test_agrees_with_brute_force);
     tcase_add_test(tc, tension_mode_from_fair_neighbours);
     tcase_add_test(tc, crossing_polygons_searched_by_the_loop_rule);
+    tcase_add_test(tc, where_every_spline_loops_the_taut_one_is_flagged);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }
