@@ -227,8 +227,8 @@ double el__max_abs(const double *v, size_t n);
  * end (angle fixed) the offset of its guide duck along its span's normal. */
 enum { EL__SLOT_ANGLE, EL__SLOT_FIXED, EL__SLOT_GUIDE };
 /* Unknowns beyond the tridiagonal knot system (spline_chain.c): the guide
- * offsets (at most two) and sigma. */
-enum { EL__MAX_BORDER = 3 };
+ * offsets (at most two), sigma and the bend parameter (spline_g2_bend.c). */
+enum { EL__MAX_BORDER = 4 };
 
 /* A guide duck of a G2 end (spline_guide.c): knot `knot` on the span from point
  * `pa` to pa + 1, at the fraction f of its chord plus x[slot] times the span's
@@ -292,6 +292,10 @@ typedef struct el__spchain {
     double arc_b, arc_s0, arc_h;
     double arc_c, arc_L0;    /* + arc_c (L - arc_L0) when arc_len (spline_path.c) */
     int arc_len;             /* el__spline_follow_family: the length a coordinate of its path */
+    int bend;                /* spline_g2_bend.c: tau unknown, kg = bend_k + tau bend_dk, the border
+                                equation arc_a . (x - arc_x0) + bend_c (tau - bend_t0) = arc_h */
+    double tau, dtau, bend_k[2], bend_dk[2], bend_c, bend_t0, Bres;
+    int bent_arc;            /* el__spline_bend_ends reached kg only by that path */
     double reach[3];         /* length mode: the least and the greatest length of the solutions
                                 el__spline_follow_family met, the greatest of those that do not
                                 cross themselves (0: none met) */
@@ -386,6 +390,8 @@ int el__spline_continuation(el__spchain *w, el__spsnap sv[2], int max_steps, dou
                             double aim, double accept);
 void el__snap_save(const el__spchain *w, el__spsnap *s);
 void el__snap_load(el__spchain *w, const el__spsnap *s);
+/* The chain set to the state f x (b - a) beyond b (secant predictor; b itself if a piece state is invalid). */
+void el__snap_predict(el__spchain *w, const el__spsnap *a, const el__spsnap *b, double f);
 /* A tension solution longer than EL__SP_WANDER x its ducks' polygon winds away from them;
  * the high tension (sigma h^2 on the mean chord) continuations start from */
 #define EL__SP_WANDER 1.5
@@ -396,9 +402,13 @@ void el__snap_load(el__spchain *w, const el__spsnap *s);
 
 /* G2 ends (spline_guide.c): the guided chain g of the solved sibling w, its G2
  * ends clamped only (g allocated here; free it also on failure); then the end
- * curvatures moved to kg (spline_path.c). */
+ * curvatures moved to kg (spline_g2_bend.c; arc: past folds). */
 int el__guides_setup(el__spchain *g, const el__spchain *w);
-int el__spline_bend_ends(el__spchain *w, int max_steps, const double kg[2]);
+int el__spline_bend_ends(el__spchain *w, int max_steps, const double kg[2], int arc);
+/* spline_g2_bend.c: of two solved guided chains, whether b is as fair as a (no self-crossing
+ * before one, then integral kappa^2 + sigma ds (length mode: kappa^2) within 1e-9 of a's or
+ * lower); -1: no memory. */
+int el__g2_fairer(const el__spchain *a, const el__spchain *b);
 /* spline_g2_tension.c: tension mode's G2 batten at sigma (internal units) by its length: a
  * ladder of multiples of Lp (the polygon's length, internal) brackets the length whose G2
  * batten has that tension, Brent narrows it, Newton at sigma finishes, in g. solve(ctx, L,

@@ -4,8 +4,8 @@
  *   spline.c        the API: checks, units, the degenerate cases, the result,
  *                   the B-spline of the whole chain;
  *   spline_chain.c  the unknowns and equations, Newton on the whole chain, its start;
- *   spline_path.c   continuation in sigma, the length mode, the G2 ends'
- *                   continuation in the end curvatures;
+ *   spline_path.c   continuation in sigma, the length mode;
+ *   spline_g2_bend.c G2 ends: the end curvatures bent from the G1 sibling's, past folds;
  *   spline_bracket.c length mode from tension mode's splines that bracket the length,
  *                   where following the family failed;
  *   spline_buckle.c the buckled strip: collinear ducks, ducks near a line;
@@ -453,25 +453,38 @@ static int solve_sibling(el__spchain *w, const double *xy, size_t n, const el_sp
  * ends of a taut sibling can fail where the free batten bends them (the ducks
  * of examples/ducks.csv, start tangent (0, 1) with curvature -0.5, end (0, 1)
  * with 0.3: EL_ENOCONV from sigma = 0.05, converged at 0).
+ * fair: the bends pass folds (spline_g2_bend.c), and one reached so is compared with the
+ * free batten's path, the fairer kept; 0 (the rungs of tension mode's search by length,
+ * which is compared so itself): as before, neither.
  */
 static int solve_g2(el__spchain *w, el__spchain *g, int sib, int max_steps, const double kg[2],
-                    double Lt, double sigma_t)
+                    double Lt, double sigma_t, int fair)
 {
     int st = sib;
     if (!st || w->near) {
         st = el__guides_setup(g, w);
-        if (!st) st = el__spline_bend_ends(g, max_steps, kg);
-        if (!st || g->near) return st;
+        if (!st) st = el__spline_bend_ends(g, max_steps, kg, fair);
+        if ((!st && !g->bent_arc) || g->near) return st;
     }
     if (st == EL_ENOMEM || (Lt == 0.0 && !(isfinite(sigma_t) && sigma_t != 0.0))) return st;
-    el__chain_free(g);
+    /* reached through a fold (spline_g2_bend.c): the path below too, the fairer kept */
+    el__spchain first = *g;
+    const int arc = !st;
+    if (!arc) el__chain_free(&first);
     memset(g, 0, sizeof *g);
     w->near = 0;
-    if ((st = el__spline_free_batten(w, max_steps))) return st;
-    if ((st = el__guides_setup(g, w))) return st;
-    if ((st = el__spline_bend_ends(g, max_steps, kg)) && !g->near) return st;
-    g->near = 0;
-    return Lt != 0.0 ? el__spline_length_from(g, max_steps, Lt) : el__spline_tension_from(g, max_steps, sigma_t);
+    if (!(st = el__spline_free_batten(w, max_steps)) && !(st = el__guides_setup(g, w))) {
+        if (!(st = el__spline_bend_ends(g, max_steps, kg, fair)) || g->near) {
+            g->near = 0;
+            st = Lt != 0.0 ? el__spline_length_from(g, max_steps, Lt) : el__spline_tension_from(g, max_steps, sigma_t);
+        }
+    }
+    if (!arc) return st;
+    const int f = st || g->near ? 0 : el__g2_fairer(&first, g);
+    if (f < 0 || st == EL_ENOMEM) { el__chain_free(&first); return EL_ENOMEM; }
+    if (!f) { el__chain_free(g); *g = first; return EL_OK; }
+    el__chain_free(&first);
+    return EL_OK;
 }
 
 /* Tension mode's G2 batten by its length (spline_g2_tension.c): one solve by length as
@@ -505,7 +518,7 @@ static int g2_at_length(void *par, double L, double *sigma)
     int straight;
     int st = solve_sibling(w, c->xy, c->n, &o, c->Lp, c->S, &straight);
     if (st == EL_ENOMEM || st == EL_EINVAL) return st;
-    st = solve_g2(w, g, st, o.max_steps, c->kg, L, NAN);
+    st = solve_g2(w, g, st, o.max_steps, c->kg, L, NAN, 0);
     if (st == EL_ENOMEM) return st;
     if (st && !g->near) return EL_ENOCONV;
     *sigma = g->sigma;
@@ -648,12 +661,22 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
     if (st != EL_ENOMEM && !closed && (w.kind[0] == EL_SPLINE_G2 || w.kind[1] == EL_SPLINE_G2)) {
         /* from an initial sibling: its branch only (no free batten's) */
         st = solve_g2(&w, &g, st, opt->max_steps, kg, lmode && !opt->initial ? opt->length / S : 0.0,
-                      lmode || opt->initial ? NAN : opt->sigma * S * S);
+                      lmode || opt->initial ? NAN : opt->sigma * S * S, 1);
         sol = &g;
-        /* none at that tension: the length whose G2 batten has it (spline_g2_tension.c) */
-        if (st && st != EL_ENOMEM && !g.near && !lmode && !opt->initial) {
+        /* none at that tension: the length whose G2 batten has it (spline_g2_tension.c);
+         * one reached through a fold (spline_g2_bend.c): that too, the fairer kept */
+        const int arc = !st && g.bent_arc;
+        if (((st && st != EL_ENOMEM && !g.near) || arc) && !lmode && !opt->initial) {
+            el__spchain first = g;
+            if (arc) memset(&g, 0, sizeof g);
             g2_length c = {&w, &g, xy, kg, n, opt, Lp, S};
             st = el__spline_g2_tension_by_length(&g, g2_at_length, &c, Lp / S, opt->sigma * S * S);
+            if (arc) {
+                const int f = st || g.near ? 0 : el__g2_fairer(&first, &g);
+                if (f < 0 || st == EL_ENOMEM) { el__chain_free(&first); st = EL_ENOMEM; goto done; }
+                if (!f) { el__chain_free(&g); g = first; g.near = 0; } else el__chain_free(&first);
+                st = EL_OK;
+            }
         }
     }
     if (st == EL_ENOMEM) goto done;

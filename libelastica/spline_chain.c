@@ -89,6 +89,8 @@ double el__chain_eval(el__spchain *w, int jac)
 {
     const size_t n = w->n, m = w->m;
     double merit = 0.0, rmax = 0.0, Lsum = 0.0;
+    if (w->bend)
+        for (int e = 0; e < 2; e++) w->kg[e] = w->bend_k[e] + w->tau * w->bend_dk[e];
     guide_chords(w);
     for (size_t j = 0; j < m; j++) {
         el__sptargets t;
@@ -122,6 +124,13 @@ double el__chain_eval(el__spchain *w, int jac)
         w->Gres = (Lsum - w->Lt) / w->Lt;
         merit += w->Gres * w->Gres * w->gscale * w->gscale;
         rmax = fmax(rmax, fabs(w->Gres));
+    }
+    if (w->bend) {
+        double a = w->bend_c * (w->tau - w->bend_t0) - w->arc_h;
+        for (size_t i = 0; i < n; i++) a += w->arc_a[i] * (w->x[i] - w->arc_x0[i]);
+        w->Bres = a;
+        merit += a * a;
+        rmax = fmax(rmax, fabs(a));
     }
     w->resid = rmax;
     return isfinite(merit) ? merit : INFINITY;
@@ -206,8 +215,9 @@ static double det_lead(const double *S, int k)
 static int chain_direction(el__spchain *w, double *ds)
 {
     const size_t n = w->n, m = w->m;
-    const int nb = w->ng + (w->lmode != 0);
+    const int nb = w->ng + (w->lmode != 0) + (w->bend != 0);
     const long SIG = -1 - w->ng;   /* sigma's column and border row */
+    const long TAU = -1 - w->ng - (w->lmode != 0);   /* the bend parameter's */
     memset(w->dg, 0, n * sizeof *w->dg);
     memset(w->up, 0, n * sizeof *w->up);
     memset(w->lo, 0, n * sizeof *w->lo);
@@ -220,6 +230,13 @@ static int chain_direction(el__spchain *w, double *ds)
         if (w->slot[i] != EL__SLOT_ANGLE) w->dg[i] = 1.0;   /* x_i is not in T */
     }
     if (w->lmode) w->bg[w->ng] = -w->Gres;
+    if (w->bend) {   /* kg enters the end knots' rows (el__chain_eval); the pseudo-arclength row */
+        w->bg[-1 - TAU] = -w->Bres;
+        if (w->slot[0] != EL__SLOT_FIXED) jac_add(w, 0, TAU, w->ell[0] * w->bend_dk[0]);
+        if (w->slot[n - 1] != EL__SLOT_FIXED) jac_add(w, (long)n - 1, TAU, -w->ell[n - 1] * w->bend_dk[1]);
+        for (size_t i = 0; i < n; i++) jac_add(w, TAU, (long)i, w->arc_a[i]);
+        jac_add(w, TAU, TAU, w->bend_c);
+    }
     for (size_t j = 0; j < m; j++) {
         const el__spiece *pc = &w->pc[j];
         el__sptargets t;
@@ -272,7 +289,7 @@ static int chain_direction(el__spchain *w, double *ds)
         }
     if (w->lmode) {   /* sigma's Schur complement: d(border residual)/d sigma along the solutions */
         const double dg = det_lead(S, w->ng);
-        w->den = dg != 0.0 ? det_lead(S, nb) / dg : 0.0;
+        w->den = dg != 0.0 ? det_lead(S, w->ng + 1) / dg : 0.0;
     }
     double lu[EL__MAX_BORDER * EL__MAX_BORDER];
     int perm[EL__MAX_BORDER];
@@ -284,7 +301,8 @@ static int chain_direction(el__spchain *w, double *ds)
         for (size_t i = 0; i < n; i++) w->y[i] -= w->bz[a * n + i] * dz[a];
     for (int g = 0; g < w->ng; g++) w->y[w->guide[g].slot] = dz[g];
     if (w->lmode) *ds = dz[w->ng];
-    if (!isfinite(*ds) || el__all_finite(w->y, n)) return EL_ESINGULAR;
+    w->dtau = w->bend ? dz[-1 - TAU] : 0.0;
+    if (!isfinite(*ds) || !isfinite(w->dtau) || el__all_finite(w->y, n)) return EL_ESINGULAR;
     return EL_OK;
 }
 
@@ -364,7 +382,7 @@ int el__chain_newton(el__spchain *w, int cap, double aim, double accept)
                         (dg != 0.0 ? pc->D[4][i] * dg : 0.0);
             al = el__spiece_step_prepare(pc, dv, &w->ps[j], al);
         }
-        const double sigma0 = w->sigma;
+        const double sigma0 = w->sigma, tau0 = w->tau;
         int ok = 0;
         double mnew = INFINITY;
         /* already accepted: a step that does not help is rounding, not worth halving */
@@ -372,6 +390,7 @@ int el__chain_newton(el__spchain *w, int cap, double aim, double accept)
         for (int hv = 0; hv <= halvings; hv++, al *= 0.5) {
             for (size_t i = 0; i < n; i++) w->x[i] = w->xs[i] + al * w->y[i];
             w->sigma = sigma0 + al * ds;
+            if (w->bend) w->tau = tau0 + al * w->dtau;
             int bad = 0;
             for (size_t j = 0; j < m && !bad; j++) bad = el__spiece_step_apply(&w->pc[j], &w->ps[j], al);
             mnew = bad ? INFINITY : el__chain_eval(w, 1);
@@ -381,6 +400,7 @@ int el__chain_newton(el__spchain *w, int cap, double aim, double accept)
         if (!ok) {   /* restore the last accepted state */
             memcpy(w->x, w->xs, n * sizeof *w->x);
             w->sigma = sigma0;
+            w->tau = tau0;
             for (size_t j = 0; j < m; j++) memcpy(w->pc[j].v, w->ps[j].v0, sizeof w->pc[j].v);
             el__chain_eval(w, 1);
             break;

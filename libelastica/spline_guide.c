@@ -43,7 +43,7 @@
  * in two sub-arcs of the same elastica: the sibling is then an exact solution
  * of the guided system for the end curvatures it has, with no force on the
  * guides. The end curvatures are then moved to the given ones by continuation
- * (spline_path.c), which starts with the whole step. Tension mode where that finds
+ * (spline_g2_bend.c), which starts with the whole step and passes folds by pseudo-arclength. Tension mode where that finds
  * none (no G1 sibling at that tension: walls at sigma 0): by the length whose G2 batten
  * has the tension (spline_g2_tension.c).
  * Under tension. The guides' offsets are set by the end curvatures, not by least energy,

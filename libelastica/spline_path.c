@@ -52,6 +52,11 @@ static void predict(el__spchain *w, const el__spsnap *a, const el__spsnap *b, do
     }
 }
 
+void el__snap_predict(el__spchain *w, const el__spsnap *a, const el__spsnap *b, double f)
+{
+    predict(w, a, b, f);
+}
+
 /*
  * Follow a one-parameter family from t = 0 (solved, in w) to t = 1: set(w, t)
  * moves the target (sigma or length); each step starts from the secant
@@ -803,31 +808,4 @@ int el__spline_length_from(el__spchain *w, int max_steps, double Lt)
     }
     free(buf);
     return st;
-}
-/* ------------------------------------------------------------------ G2 ends */
-
-/* The end curvatures kg from par[0..1] (t = 0) to par[2..3], linearly. */
-static void set_end_curvature(el__spchain *w, double t, const double *par)
-{
-    for (int e = 0; e < 2; e++) w->kg[e] = t >= 1.0 ? par[2 + e] : par[e] + t * (par[2 + e] - par[e]);
-}
-
-/*
- * G2 ends: from the guided G1 sibling in w (el__guides_setup: a solution for
- * its own end curvatures w->kg) to the end curvatures kg, by continuation in
- * them (the whole step first), at the tension or length of w. A straight
- * sibling's pieces (k = 0, where q is undefined and J singular) start from the
- * linearised batten first. Already there (kg equal to the sibling's): EL_OK.
- */
-int el__spline_bend_ends(el__spchain *w, int max_steps, const double kg[2])
-{
-    if (w->kg[0] == kg[0] && w->kg[1] == kg[1]) return EL_OK;
-    for (size_t j = 0; j < w->m; j++) {
-        if (w->pc[j].v[EL__SP_K] != 0.0) continue;
-        el__sptargets t;
-        el__chain_targets(w, j, &t);
-        if (el__spiece_start(&w->pc[j], &t)) return EL_ENOCONV;
-    }
-    const double par[4] = {w->kg[0], w->kg[1], kg[0], kg[1]};
-    return el__spline_continuation(w, w->snap, max_steps, 1.0, set_end_curvature, par, w->aim, w->tol);
 }

@@ -645,6 +645,62 @@ START_TEST(walls_at_tension_zero_are_solved_by_length)
 }
 END_TEST
 
+/*
+ * A G2 blend past folds of its family in the end curvature (spline_g2_bend.c): from the
+ * end (R, R) of a 90 deg arc of radius R (heading +y, curvature 1/R) to a line from
+ * (90, 60) heading +x. The G1 sibling starts with curvature 0.040 at R = 20; bent towards
+ * 1/20 the family folds at 0.0402 and 0.0355 and passes 1/20 at the free batten, length
+ * 230.05, bending 0.1749 (QA16's independent shooting solver, DOP853 at 1e-12). Was
+ * EL_ENOCONV for R = 18 .. 23 at tension 0, at every tension 1e-5 .. 1e-3 at R = 20, and
+ * by length from 197.5 (EL_ERANGE).
+ */
+START_TEST(g2_blend_past_folds_in_the_end_curvature)
+{
+    for (int R = 18; R <= 23; R++) {
+        const double p[] = {R, R, 90.0, 60.0};
+        el_spline_options o = opts(EL_SPLINE_TENSION, 0.0);
+        o.start = g2_end(0.0, 1.0, 1.0 / R);
+        o.end = g2_end(1.0, 0.0, 0.0);
+        el_spline_result r;
+        const int st = solve(p, 2, &o, &r);
+        ck_assert_msg(st == EL_OK, "R %d: status %d", R, st);
+        check_spline(p, 2, &o, &r, 1e-9);
+        ck_assert(!r.loops);
+        if (R == 20) {
+            ck_assert_msg(fabs(r.length - 230.05) < 0.01, "length %.4f", r.length);
+            ck_assert_msg(fabs(r.energy - 0.17488) < 1e-4, "energy %.5f", r.energy);
+        }
+        el_spline_result_free(&r);
+    }
+    const double p[] = {20.0, 20.0, 90.0, 60.0};
+    const double sigmas[] = {1e-5, 1e-4, 1e-3};
+    for (size_t i = 0; i < 3; i++) {
+        el_spline_options o = opts(EL_SPLINE_TENSION, sigmas[i]);
+        o.start = g2_end(0.0, 1.0, 0.05);
+        o.end = g2_end(1.0, 0.0, 0.0);
+        el_spline_result r;
+        const int st = solve(p, 2, &o, &r);
+        ck_assert_msg(st == EL_OK, "sigma %g: status %d", sigmas[i], st);
+        check_spline(p, 2, &o, &r, 1e-9);
+        ck_assert(r.length > 230.05);   /* pulled along the free batten's family */
+        el_spline_result_free(&r);
+    }
+    const double lengths[] = {202.5, 230.05, 255.0};
+    for (size_t i = 0; i < 3; i++) {
+        el_spline_options o = opts(EL_SPLINE_LENGTH, lengths[i]);
+        o.start = g2_end(0.0, 1.0, 0.05);
+        o.end = g2_end(1.0, 0.0, 0.0);
+        el_spline_result r;
+        const int st = solve(p, 2, &o, &r);
+        ck_assert_msg(st == EL_OK, "length %g: status %d", lengths[i], st);
+        check_spline(p, 2, &o, &r, 1e-9);
+        ck_assert(!r.loops);
+        if (i == 1) ck_assert_msg(fabs(r.sigma) < 1e-6, "sigma %g", r.sigma);
+        el_spline_result_free(&r);
+    }
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("spline_g2");
@@ -661,6 +717,7 @@ int main(void)
     tcase_add_test(tc, random_battens_g2_solved_where_tangent_is);
     tcase_add_test(tc, initial_sibling_keeps_its_branch);
     tcase_add_test(tc, walls_at_tension_zero_are_solved_by_length);
+    tcase_add_test(tc, g2_blend_past_folds_in_the_end_curvature);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }

@@ -718,3 +718,21 @@ def test_walk_by_length_reaches_the_lengths_of_tension_mode():
     for f in (1.05, 1.2, 2.0, 5.0, 12.0, 15.0):
         r = el.elastic_spline(P, length=f * poly)
         assert r.length == pytest.approx(f * poly, rel=1e-9), f
+
+
+@pytest.mark.parametrize("radius", [18.0, 20.0, 23.0])
+def test_g2_blend_past_folds_in_the_end_curvature(radius):
+    """The FreeCAD G2 blend from the end of a 90-deg arc of radius R (from the origin heading +x)
+    to a line from (90, 60) heading +x, free batten: the family bent from the G1 sibling's end
+    curvature folds before 1/R (libelastica/spline_g2_bend.c); NotConvergedError before. At R = 20
+    the free G2 batten of an independent shooting solver: length 230.05, bending 0.1749."""
+    pts = np.array([[radius, radius], [90.0, 60.0]])
+    sp = el.elastic_spline(pts, tension=0.0, start={"tangent": (0.0, 1.0), "curvature": 1.0 / radius},
+                           end={"tangent": (1.0, 0.0), "curvature": 0.0})
+    assert sp.tension == 0.0 and not sp.loops
+    assert sp.curvatures[0] == pytest.approx(1.0 / radius, rel=1e-7)
+    assert abs(sp.curvatures[-1]) <= 1e-9
+    assert np.allclose(sp.points([0.0, sp.length]), pts, atol=1e-8)
+    if radius == 20.0:
+        assert sp.length == pytest.approx(230.05, abs=0.01)
+        assert sp.energy == pytest.approx(0.17488, abs=1e-4)
