@@ -312,8 +312,8 @@ def cmd_bspline(args) -> int:
     out, splines, names = [], [], []
     for items in groups:
         curves = [curve_from_dict(it, name=args.file) for it in items]
-        # the DXF in the input's coordinates; the JSON in the curve's (as the fit record's),
-        # a keyline's in the input's (as `fit --keyline`'s, KeylineFit.to_bspline's)
+        # the DXF and the JSON in the input's coordinates (as `fit`'s; a 3D one-piece
+        # record's x'y' one as "bspline_local", a keyline's as KeylineFit.to_bspline's)
         to_input = _input_map(items[0]) if isinstance(items[0], dict) else None
         if len(curves) == 2:           # a keyline: ONE B-spline through its joint
             ends = [it.get("end") if isinstance(it, dict) else None for it in items]
@@ -328,7 +328,9 @@ def cmd_bspline(args) -> int:
             with tol_option("--tol"):
                 b = el.bspline.fitted_bspline(curves[0], args.tol, args.degree,
                                               it.get("constraints") if isinstance(it, dict) else None)
-            out.append({"curve": curve_to_dict(curves[0]), **_kept(it), "bspline": b.to_dict()})
+            out.append({"curve": curve_to_dict(curves[0]), **_kept(it),
+                        "bspline": _mapped_bspline(b, to_input).to_dict(),
+                        **({"bspline_local": b.to_dict()} if to_input is not None else {})})
             names.append(f"chain of {len(curves[0].pieces)} elasticae" if
                          hasattr(curves[0], "pieces") else type(curves[0]).__name__)
         splines.append(_mapped_bspline(b, to_input))

@@ -381,18 +381,21 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
         else:
             with tol_option("--bspline-tol"):   # a discrete fit's: its ends
                 splines.append(res.to_bspline(tol, args.degree))
-            records[0]["bspline"] = splines[0].to_dict()
         if args.model == "discrete":     # the cubic through the vertices is not the polygon
             _cubic_figures(doc, kres if args.keyline else res, splines[0], pts,
                            xy if args.step is not None and not args.keyline else None)
     if args.model == "discrete" and not args.keyline and args.step is None:
         # (a --step's polygon is judged by the file's points: the ResampleWarning)
         _warn_coarse_polygon(path, records[0], data, res)
-    # the DXF gets the curves in the input's coordinates (3D for 3D input), and so does a
-    # keyline's JSON (KeylineFit.to_bspline's); a one-piece record's is the curve's
-    splines = [_mapped_bspline(b, to_input) for b in splines]
-    if args.keyline and splines:
-        doc["bspline"] = splines[0].to_dict()
+    # the DXF and the JSON get the curves in the input's coordinates (3D for 3D input; a
+    # keyline's as KeylineFit.to_bspline's); a 3D one-piece record keeps the fitted plane's
+    # x'y' one (the curve's) as "bspline_local"
+    mapped = [_mapped_bspline(b, to_input) for b in splines]
+    if splines:
+        doc["bspline"] = mapped[0].to_dict()
+        if to_input is not None and not args.keyline:
+            doc["bspline_local"] = splines[0].to_dict()
+    splines = mapped
     _write_fit_outputs(path, args, batch, doc, records, pictures, splines, pts)
     return records, doc
 
