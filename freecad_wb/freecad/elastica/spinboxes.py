@@ -4,10 +4,12 @@ tension in the user's unit schema (units.py), and reads quantities in any unit a
 expressions; ``DecadeBox`` steps by factors of 10 (tolerances)."""
 from __future__ import annotations
 
+import math
+
 import FreeCAD as App
 from PySide import QtGui
 
-from .units import box_text, feet_inches, length_unit, tension_unit, user_length
+from .units import box_text, feet_inches, length_unit, plain, tension_unit, user_length
 
 
 # a box's unit as FreeCAD's unit parser writes it (App.Units.Quantity)
@@ -38,7 +40,9 @@ def _in_unit(text, unit, plain=1.0):
 
 class NumberBox(QtGui.QDoubleSpinBox):
     """A spin box that shows its value as typed ('0.001', '2.5e-07', not '0.00'; a length as
-    units.box_text writes it: '0.0000394 in', not '3.93701e-05 in'), a length,
+    units.box_text writes it: '0.0000394 in', not '3.93701e-05 in'; any other in fixed
+    notation: a tension or curvature to 4 digits, its whole part kept, the value unrounded:
+    Tension '0.00001515 1/mm²', not '1.51519e-05'), a length,
     curvature or tension in the user's unit schema (units.py; the value itself stays in mm,
     1/mm, 1/mm^2), accepts scientific notation, quantities in other units and expressions as
     FreeCAD's own boxes do ('7 cm', '2.75 in', '=2*35': _in_unit) and steps by
@@ -81,8 +85,11 @@ class NumberBox(QtGui.QDoubleSpinBox):
     def textFromValue(self, value):
         if self.unit == "mm":            # Building US: feet and inches, as FreeCAD's boxes
             return feet_inches(value) or box_text(value)
-        factor, unit = self.shown(value)
-        return f"{value / factor:.6g} {unit}" if unit else f"{value:.6g}"
+        factor, unit = self.shown(value)     # fixed notation, as box_text the lengths; a
+        x = value / factor                   # quantity to 4 digits, its whole part kept (the
+        whole = math.floor(math.log10(abs(x))) + 1 if x else 0     # value stays: valueFromText)
+        number = plain(f"{x:.{max(4, min(6, whole)) if unit else 6}g}")
+        return f"{number} {unit}" if unit else number       # '0.00001515 1/mm²'
 
     def _wrote(self):
         """The box may have written its text (a value set, an arrow step, focus):
