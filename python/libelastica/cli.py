@@ -17,6 +17,7 @@ from typing import Optional, Sequence
 import numpy as np
 
 from ._ffi import NotConvergedError
+from ._interrupt import interruptible
 from .cli_common import (EXIT_BADINPUT, EXIT_INTERNAL, EXIT_NOCONV, EXIT_OK, PROG, _finite,
                          _input_map, _mapped_bspline, _table, tol_option)
 from .cli_fit import cmd_fit
@@ -696,7 +697,8 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     try:
         try:
             check_outputs(args)
-            status = args.func(args)
+            with interruptible():       # Ctrl-C during a C fit: at once, not when it returns
+                status = args.func(args)
             args.outputs.commit()
             return status
         except NotConvergedError as exc:

@@ -26,6 +26,7 @@ import numpy as np
 
 from ._ffi import (DomainError, NotConvergedError, as_int, as_points, as_real,
                    as_real_array, check, dptr, ffi, lib, warn_if_degrees)
+from ._interrupt import call
 from .core import DISCRETE_PARAMS, SMOOTH_PARAMS, DiscreteElastica, SmoothElastica
 from ._text import LengthFormat, lengths
 from .fit_cost import EndConditionWarning, checked_ends
@@ -550,8 +551,8 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     smooth = model == "smooth"
     res = ffi.new(f"el_fit_{model}_result *")
     dist, foot = np.empty(n), np.empty(n)
-    st = (lib.el_fit_smooth if smooth else lib.el_fit_discrete)(dptr(pts), n, o, init, res,
-                                                               dptr(dist), dptr(foot))
+    st = call(lib.el_fit_smooth if smooth else lib.el_fit_discrete, dptr(pts), n, o, init, res,
+              dptr(dist), dptr(foot), keep=(pts, dist, foot, initial))     # Ctrl-C: the CLI's
     if st == lib.EL_EINVAL and not np.all(np.isfinite(pts)):   # checked here, off the common path
         raise ValueError("fit: points must be finite (no NaN/inf)")
     if res.constraint and st in (lib.EL_EINVAL, lib.EL_EDOM):

@@ -13,6 +13,7 @@ import numpy as np
 
 from ._ffi import (DomainError, as_int, as_positive, as_real, as_real_array, check, dptr, ffi,
                    lib)
+from ._interrupt import call
 from .fit import (_MODE_NAMES, ConvergenceWarning, FitResult, OrderWarning, _make_curve,
                   quiet_fit)
 from .misfit import MisfitWarning, misfit, misfit_summary
@@ -167,11 +168,12 @@ def _solve_keyline(model: str, data, split: int, o):
     res = [ffi.new(f"el_fit_{model}_result *") for _ in range(2)]
     if model == "discrete":
         joint = ffi.new("size_t *")
-        st = lib.el_fit_keyline_discrete(dptr(data), n, split, o, res[0], res[1], joint, dptr(dist),
-                                         dptr(foot), ffi.cast("int *", ffi.from_buffer(sides)))
+        st = call(lib.el_fit_keyline_discrete, dptr(data), n, split, o, res[0], res[1], joint,
+                  dptr(dist), dptr(foot), ffi.cast("int *", ffi.from_buffer(sides)),
+                  keep=(data, dist, foot, sides))      # Ctrl-C: the CLI's (_interrupt)
     else:
-        st = lib.el_fit_keyline_smooth(dptr(data), n, split, o, res[0], res[1], dptr(dist),
-                                       dptr(foot), ffi.cast("int *", ffi.from_buffer(sides)))
+        st = call(lib.el_fit_keyline_smooth, dptr(data), n, split, o, res[0], res[1], dptr(dist),
+                  dptr(foot), ffi.cast("int *", ffi.from_buffer(sides)), keep=(data, dist, foot, sides))
     if st == lib.EL_EDOM:     # el_fit_keyline_*: a side is not inflectional
         raise DomainError(lib.EL_EDOM, "fit_keyline: a side of the joint fit is not "
                           "inflectional: the points show no inflection a keyline can split "

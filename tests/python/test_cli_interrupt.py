@@ -1,0 +1,77 @@
+"""Ctrl-C during `elastica fit`'s C fit ends the command there: exit 130, "interrupted",
+nothing written, no traceback. It used to take effect only when the C fit returned (a
+2000-point fit: seconds later): the C call now runs in a worker thread the command waits on
+(libelastica._interrupt), and the wait is what SIGINT interrupts."""
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+import time
+
+import numpy as np
+import pytest
+
+import libelastica as el
+from libelastica._interrupt import call, interruptible
+
+
+def _threads(pid: int) -> int:
+    try:
+        return len(os.listdir(f"/proc/{pid}/task"))
+    except FileNotFoundError:
+        return 0
+
+
+@pytest.mark.skipif(not os.path.isdir("/proc/self/task"), reason="needs Linux /proc")
+@pytest.mark.parametrize("model", ["discrete", "smooth"])
+def test_sigint_during_the_c_fit(tmp_path, model):
+    """SIGINT sent while the C fit runs (its worker thread alive: the process has two threads,
+    OpenBLAS held to one) ends the process while that fit still runs: the worker is then
+    still in C, so the process exits with two threads' work undone; exit 130, no output
+    file, one line on stderr."""
+    rng = np.random.default_rng(1)
+    c = el.SmoothElastica(x0=0, y0=0, phi=0, mu=1.0, k=0.8, q=0.0, length=5.0)
+    P = c.points(np.sort(rng.uniform(0, 5, 2000))) + rng.normal(0, 0.01, (2000, 2))
+    np.savetxt(tmp_path / "p.csv", P, delimiter=",")
+    env = dict(os.environ, OPENBLAS_NUM_THREADS="1", OMP_NUM_THREADS="1")
+    proc = subprocess.Popen([sys.executable, "-m", "libelastica", "fit", str(tmp_path / "p.csv"),
+                             "--model", model, "--json", str(tmp_path / "f.json")],
+                            env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    while proc.poll() is None and _threads(proc.pid) < 2:     # the C fit's worker started
+        time.sleep(0.005)
+    assert proc.poll() is None, "the fit ended before its C call was seen in a worker"
+    proc.send_signal(signal.SIGINT)
+    out, err = proc.communicate(timeout=120)
+    assert proc.returncode == 130, err
+    assert err.strip() == "elastica: interrupted", err
+    assert out == "" and sorted(p.name for p in tmp_path.iterdir()) == ["p.csv"]
+
+
+def test_call_returns_at_keyboardinterrupt_while_the_worker_runs():
+    """In the main thread inside interruptible(), call() raises the KeyboardInterrupt while
+    fn still runs (here: waits for an event set only afterwards); outside, fn runs in the
+    caller's thread; fn's own exception comes through."""
+    import threading
+    release, started = threading.Event(), threading.Event()
+
+    def blocked():
+        started.set()
+        release.wait(60)
+        return "done"
+
+    def interrupt():
+        started.wait(60)
+        signal.raise_signal(signal.SIGINT)      # to this thread: the main thread's handler runs
+
+    threading.Thread(target=interrupt, daemon=True).start()
+    with interruptible(), pytest.raises(KeyboardInterrupt):
+        call(blocked)
+    assert not release.is_set()
+    release.set()
+    assert call(threading.current_thread) is threading.current_thread()    # no worker outside
+    with interruptible():
+        assert call(threading.current_thread) is not threading.current_thread()
+        with pytest.raises(ZeroDivisionError):
+            call(lambda: 1 / 0)
