@@ -10,24 +10,15 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from scipy.interpolate import BSpline as ScipyBSpline
-from scipy.spatial import cKDTree
 
 import libelastica as el
 from libelastica.cli_common import _input_map
 from libelastica.io import read_points
 from libelastica.nearest import nearest_on
 from test_cli import cli
+from test_keyline_frame import _on      # a point's distance to a B-spline, by scipy
 
 EX = Path(__file__).resolve().parents[2] / "examples"
-
-
-def _on(b, points, samples: int = 400001):
-    """Each point's distance to the B-spline b (any dimension), densely sampled by scipy,
-    and the samples' largest spacing (the distances are within it)."""
-    t = b.flat_knots()
-    Q = ScipyBSpline(t, b.poles, b.degree)(np.linspace(t[b.degree], t[-b.degree - 1], samples))
-    return cKDTree(Q).query(points)[0], float(np.max(np.linalg.norm(np.diff(Q, axis=0), axis=1)))
 
 
 @pytest.mark.parametrize("name,model", [("sample_3d.txt", "smooth"), ("sample_3d.txt", "discrete"),
