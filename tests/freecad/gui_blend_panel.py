@@ -521,7 +521,7 @@ def imperial_texts_and_steps(b, panel):
     +1 mm)."""
     tension = panel.tension.text()
     G.check(tension.endswith(" 1/in\u00b2") and
-            tension == f"{panel.tension.value() * 25.4 ** 2:.6g} 1/in\u00b2",
+            tension == f"{panel.tension.value() * 25.4 ** 2:.4g} 1/in\u00b2" and "e" not in tension,
             f"the Tension box in 1/in\u00b2: {tension!r} ({panel.tension.value()} 1/mm\u00b2)")
     tips = (panel.length.toolTip(), panel.tension.toolTip(), panel.tol.toolTip())
     G.check("(in)" in tips[0] and "(1/in\u00b2)" in tips[1] and "(in)" in tips[2]

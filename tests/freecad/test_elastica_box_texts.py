@@ -44,14 +44,16 @@ class BoxTextsTest(unittest.TestCase):
         self.assertEqual(self.shown("", 1234567.0 / 4), "308642")                  # no '3.08642e+05'
         self.assertEqual(self.shown("N\u00b7mm\u00b2", 1234567.0 / 4), "308642 N\u00b7mm\u00b2")   # whole
         self.assertEqual(self.shown("", 0.0012345678), "0.00123457")               # a tolerance: 6
+        # a range's end as before (Qt sizes a box by its range's texts: the panels' widths)
+        self.assertEqual(self.shown("1/mm", -1e6), "-1e+06 1/mm")
         App.Units.setSchema(IMPERIAL_DECIMAL)       # 1/in^2: 645.16 x the value in 1/mm^2
         text = self.shown("1/mm\u00b2", 1.515190123e-05)
         self.assertEqual(text, "0.009775 1/in\u00b2")     # 0.00977540 to 4 digits
         self.assertEqual(self.shown("1/mm", 1.5e-05), "0.000381 1/in")
 
     def test_exponent_below_a_millionth(self):
-        """Below 1e-6 of the unit, an exponent (as box_text: FreeCAD's Imperial decimal
-        schema turns to it there, and 0.0000000x is unreadable)."""
+        """Below 1e-6 of the unit an exponent (as box_text: FreeCAD's Imperial decimal
+        schema turns to it there, and 0.0000000x is unreadable), and from 1e6."""
         App.Units.setSchema(STANDARD)
         self.assertEqual(self.shown("1/mm\u00b2", 2.7e-07), "2.7e-07 1/mm\u00b2")
         self.assertEqual(self.shown("", 2.5e-07), "2.5e-07")

@@ -41,8 +41,8 @@ def _in_unit(text, unit, plain=1.0):
 class NumberBox(QtGui.QDoubleSpinBox):
     """A spin box that shows its value as typed ('0.001', '2.5e-07', not '0.00'; a length as
     units.box_text writes it: '0.0000394 in', not '3.93701e-05 in'; any other in fixed
-    notation: a tension or curvature to 4 digits, its whole part kept, the value unrounded:
-    Tension '0.00001515 1/mm²', not '1.51519e-05'), a length,
+    notation from 1e-6 to 1e6: a tension or curvature to 4 digits, its whole part kept, the
+    value unrounded: Tension '0.00001515 1/mm²', not '1.51519e-05'), a length,
     curvature or tension in the user's unit schema (units.py; the value itself stays in mm,
     1/mm, 1/mm^2), accepts scientific notation, quantities in other units and expressions as
     FreeCAD's own boxes do ('7 cm', '2.75 in', '=2*35': _in_unit) and steps by
@@ -88,8 +88,10 @@ class NumberBox(QtGui.QDoubleSpinBox):
         factor, unit = self.shown(value)     # fixed notation, as box_text the lengths; a
         x = value / factor                   # quantity to 4 digits, its whole part kept (the
         whole = math.floor(math.log10(abs(x))) + 1 if x else 0     # value stays: valueFromText)
-        number = plain(f"{x:.{max(4, min(6, whole)) if unit else 6}g}")
-        return f"{number} {unit}" if unit else number       # '0.00001515 1/mm²'
+        number = f"{x:.{max(4, min(6, whole)) if unit else 6}g}"   # '0.00001515 1/mm²'
+        if abs(x) < 1e6:                     # '1e+06': Qt sizes the box by its range's texts
+            number = plain(number)
+        return f"{number} {unit}" if unit else number
 
     def _wrote(self):
         """The box may have written its text (a value set, an arrow step, focus):
