@@ -475,23 +475,39 @@ class BlendProxy(FeatureProxy):
     def onChanged(self, obj, prop):
         if prop in self.followed_links and not self.link_changed(obj, prop):
             return                  # restored, or renamed following its sketch geometry
+        if "Restore" in obj.State:
+            return
+        # the designer's pick (property editor, panel, macro): shown as picked, never read as
+        # an edge move (the edges of a reopened file differ from the saved solve's by an ulp)
+        if prop == "Solution" and not obj.Document.Transacting \
+                and not getattr(self, "_setting", False):
+            self._picked = True
         # a new problem: its lowest-energy solution (the panel re-applies a user's pick)
-        if prop in ("Mode", "Length", "Tension", "AtEnd1", "AtEnd2", "Edge1", "Edge2") \
-                and "Restore" not in obj.State:
+        if prop in ("Mode", "Length", "Tension", "AtEnd1", "AtEnd2", "Edge1", "Edge2"):
             self._new_problem = True
             if getattr(obj, "Solution", 0) != 0:
-                obj.Solution = 0
+                self.set_solution(obj, 0)
+
+    def set_solution(self, obj, i):
+        """obj.Solution = i written by the feature itself (no pick of the designer's)."""
+        self._setting = True
+        try:
+            obj.Solution = i
+        finally:
+            self._setting = False
 
     def _followed_solution(self, obj, curves, energies):
-        """obj.Solution; a picked one (not 0, the lowest energy) after the edges moved (other
-        solutions, no parameter edited: an edit picks the lowest energy), the solution of the
+        """obj.Solution where the designer just picked it or an edit reset it; a picked one
+        (not 0, the lowest energy) after the edges moved (other solutions, no parameter
+        edited: an edit picks the lowest energy), the solution of the
         shape shown (nearest_shape), or the lowest-energy one where that shape is gone: the
         index of a picked one names another curve, or none, once solutions appear or vanish.
         Returns (index, whether the shape shown is gone)."""
         new_problem, self._new_problem = getattr(self, "_new_problem", False), False
+        picked, self._picked = getattr(self, "_picked", False), False
         same = [(float(c.length), e) for c, e in zip(curves, energies)] == \
             list(zip(obj.Lengths, obj.Energies))
-        shown = None if new_problem or same or obj.Solution == 0 or not obj.Lengths \
+        shown = None if new_problem or picked or same or obj.Solution == 0 or not obj.Lengths \
             else self.plane_curves(obj)                # the last good solve's curve
         if shown is None:
             return obj.Solution, False
@@ -550,7 +566,7 @@ class BlendProxy(FeatureProxy):
             f" (the lowest energy: solution {obj.Solution + 1}'s shape is gone with the edges' "
             "move)" if r["gone"] else f" (solution {obj.Solution + 1} before the edges moved)")
         if followed:
-            obj.Solution = i
+            self.set_solution(obj, i)
         obj.Shape = part_bspline(r["bspline"], r["placement"]).toShape()
         described = [describe(c) for c in curves]
         obj.Lengths = [float(c.length) for c in curves]
