@@ -1,6 +1,7 @@
 """G2 quadratic B-spline (seed 002): a picked edge or sketch curve -> an affine
 arc-length polyline -> one curvature-continuous uniform quadratic B-spline per
-inflection-free piece, ending exactly on the source's ends and inflections; its
+inflection-free piece, ending exactly on the source's ends and inflections (at the
+source's ends with its tangent and curvature too, from 7 edges per end piece); its
 distance from the source, the largest curvature jump at a joint, the end
 tangent and curvature errors are shown."""
 from __future__ import annotations
@@ -99,7 +100,12 @@ class G2QuadProxy(FeatureProxy):
         add_property(obj, "App::PropertyFloat", "JoinCurvatureJump", "Result",
                      "Largest jump of the signed curvature where two pieces meet (1/mm)")
         add_property(obj, "App::PropertyFloat", "EndTangentError", "Result",
-                     "Largest angle between a piece's end tangent and the source's (degrees)")
+                     "Largest angle between a piece's end tangent and the source's (degrees), "
+                     "at the source's ends or its inflections (the ends: SourceEndTangentError)")
+        add_property(obj, "App::PropertyFloat", "SourceEndTangentError", "Result",
+                     "Largest angle between the B-spline's tangent and the source's at the "
+                     "source's own ends (degrees): ~1e-11 where an end piece has 7 edges or "
+                     "more (a G1 join of the source stays G1), else O(1/Edges)")
         add_property(obj, "App::PropertyFloat", "EndCurvatureError", "Result",
                      "Largest error of the curvature at the source's ends relative to the "
                      "source's curvature scale, |k - k_source| / max(|k_source|, max |kappa| of "
@@ -114,7 +120,7 @@ class G2QuadProxy(FeatureProxy):
         add_property(obj, "App::PropertyString", "Status", "Result", "Outcome of the last update")
         add_property(obj, "App::PropertyPlacement", "Plane", "Result", "The plane of the curve")
         read_only(obj, "Deviation", "CurvatureJump", "JoinAngle", "JoinCurvatureJump",
-                  "EndTangentError", "EndCurvatureError", "Pieces", "Poles", "Polyline", "Status", "Plane")
+                  "EndTangentError", "SourceEndTangentError", "EndCurvatureError", "Pieces", "Poles", "Polyline", "Status", "Plane")
 
     def compute(self, obj):
         element = followed_reader(obj, "Source")      # renames Source: read it after
@@ -128,6 +134,7 @@ class G2QuadProxy(FeatureProxy):
         obj.Deviation = float(g.deviation)
         obj.CurvatureJump = float(g.curvature_jump)
         obj.EndTangentError = math.degrees(g.end_tangent_error or 0.0)
+        obj.SourceEndTangentError = math.degrees(g.source_end_tangent_error or 0.0)
         obj.EndCurvatureError = float(g.end_curvature_error or 0.0)
         obj.Pieces = len(g.bsplines)
         obj.JoinAngle, obj.JoinCurvatureJump = _joins(edges, plc)
