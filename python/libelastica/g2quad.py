@@ -85,13 +85,17 @@ class G2Quadratic:
         return int(sum(b.npoles for b in self.bsplines))
 
 
-def _spline_deviation(bs, samples: np.ndarray, lo: float, hi: float) -> float:
+def _spline_deviation(bs, samples: np.ndarray, lo: float, hi: float, spans=None) -> float:
     """Largest distance of one piece's spline from the source polyline ``samples``,
-    sample range [lo, hi] (f~ parameters; 16 points per knot span)."""
+    sample range [lo, hi] (f~ parameters; 16 points per knot span); ``spans``: only the
+    knot spans i with spans[0] <= i < spans[1] (the last knot with the last span)."""
     from .report import closest_points
     K = np.asarray(bs.knots)
-    u = np.concatenate([np.linspace(a, b, 16, endpoint=False) for a, b in zip(K[:-1], K[1:])]
-                       + [K[-1:]])
+    i0, i1 = spans if spans is not None else (0, len(K) - 1)
+    if i1 <= i0:
+        return 0.0
+    u = np.concatenate([np.linspace(K[i], K[i + 1], 16, endpoint=False) for i in range(i0, i1)]
+                       + ([K[-1:]] if i1 == len(K) - 1 else []))
     xy = bs(u)
     a, b = max(0, int(math.floor(lo)) - 1), min(len(samples), int(math.ceil(hi)) + 2)
     src = samples[a:b]
@@ -441,7 +445,13 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
             if is_curve:
                 raise
             raise _noisy_points_error(exc, samples) from None
-        pdev = _spline_deviation(bs, samples, t_ends[p], t_ends[p + 1])
+        # (spans 0..2 / the last 3 are the ones _matched_ends' moves of x_1, x_2 change)
+        nspan = len(bs.knots) - 1
+        mid = (3, nspan - 3) if nspan >= 6 else (0, 0)
+        parts = [(0, nspan)] if mid == (0, 0) else [(0, 3), (nspan - 3, nspan)]
+        pmid = _spline_deviation(bs, samples, t_ends[p], t_ends[p + 1], mid)
+        pdev = max([pmid] + [_spline_deviation(bs, samples, t_ends[p], t_ends[p + 1], q)
+                             for q in parts])
         if ends_dir is not None and (first or last):
             # the source's end tangents held too, unless that takes the piece farther from
             # the source (a loop at 12 edges: 0.0277 against 0.0214, its ends 8.8 deg off)
@@ -450,7 +460,8 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                                ends_dir[p] if first else None, ends_dir[p + 1] if last else None)
             if not np.array_equal(xt, x):
                 bt = g2_bspline(xt, ends[p], ends[p + 1])
-                tdev = _spline_deviation(bt, samples, t_ends[p], t_ends[p + 1])
+                tdev = max([pmid] + [_spline_deviation(bt, samples, t_ends[p], t_ends[p + 1], q)
+                                     for q in parts])
                 if tdev <= pdev * (1.0 + 1e-6):      # (1e-12 apart by rounding alone)
                     x, bs, pdev = xt, bt, tdev
         poly[a:b + 1] = x
