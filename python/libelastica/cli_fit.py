@@ -203,15 +203,30 @@ def _warn_coarse_polygon(path, rec: Dict[str, Any], data: np.ndarray, res) -> No
           file=sys.stderr)
 
 
-def _warn_wanders(path, rec: Dict[str, Any], data: np.ndarray) -> None:
+def _by_file_row(rec: Dict[str, Any], order: np.ndarray) -> None:
+    """A record of the file's points fitted in curve order (--order curve: ``order``, their
+    file rows in it) put in the file's order: its per-point lists ("distances", "foot_s",
+    "free_distances") row by row, its "outliers" the file's rows (QA17: the glitch at row 126
+    was named as point 100, its place in curve order, a good point's row)."""
+    for key in ("distances", "foot_s", "free_distances"):
+        if len(rec.get(key) or ()) == len(order):
+            v = np.empty(len(order))
+            v[order] = rec[key]
+            rec[key] = [float(x) for x in v]
+    if rec.get("outliers"):
+        rec["outliers"] = sorted(int(order[i]) for i in rec["outliers"])
+
+
+def _warn_wanders(path, rec: Dict[str, Any], data: np.ndarray, numbered: bool = True) -> None:
     """A warning on stderr naming the gap between two fitted points the curve wanders in
-    (the record's "wander_gap", el.fit's WanderWarning), and what holds it there."""
+    (the record's "wander_gap", el.fit's WanderWarning), and what holds it there; by their
+    places alone where not ``numbered`` (--order curve: the fit's order is not the file's)."""
     from .fit import wander_summary
     gap = rec.get("wander_gap", -1)
     if gap < 0:
         return
     side = f" (side {rec['side'] + 1})" if "side" in rec else ""
-    print(f"{PROG} fit: warning: {path}{side}: {wander_summary(gap, data)}: add a point "
+    print(f"{PROG} fit: warning: {path}{side}: {wander_summary(gap, data, numbered=numbered)}: add a point "
           "between them, or bound the length (--length LO,HI)", file=sys.stderr)
 
 
@@ -363,9 +378,11 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
         rec.update({"file": str(path), "plane": plane, "step": args.step, **extra_info})
         if order is not None:
             rec["order"] = [int(i) for i in order]
+            if not args.keyline:
+                _by_file_row(rec, order)
         _warn_end_conditions(path, rec)
         _warn_far_points(path, rec)
-        _warn_wanders(path, rec, fitted_pts)
+        _warn_wanders(path, rec, fitted_pts, order is None)
         if rec.get("resample_reference_rms") is not None:
             from .resampled import resample_summary
             print(f"{PROG} fit: warning: {path}: " + resample_summary(

@@ -114,6 +114,29 @@ def test_cli_warns_of_a_shuffled_file_and_orders_it(capsys, tmp_path):
     assert sorted(doc["order"]) == list(range(len(Q))) and doc["curve"]["length"] < 400
 
 
+@pytest.mark.parametrize("step", [None, 1.0])
+def test_cli_in_curve_order_names_the_file_rows(capsys, tmp_path, step):
+    """QA17 W2b: a shuffled scan with one glitch 2.0 off its curve at file row 126, fitted
+    --order curve: the CLI named point 100 (the glitch's place in curve order, a good
+    point's row) and its JSON "distances" were in curve order."""
+    c = el.SmoothElastica(0, 0, 0.2, 0.01, 0.7, 0.3, 100.0)
+    rng = np.random.default_rng(4)
+    P = c.points(np.linspace(0, 100, 200)) + rng.normal(0, 0.05, (200, 2))
+    d = P[101] - P[99]
+    P[100] += 2.0 * np.array([-d[1], d[0]]) / np.hypot(*d)
+    perm = rng.permutation(200)
+    Q, row = P[perm], int(np.flatnonzero(perm == 100)[0])
+    f, out = tmp_path / "scan.csv", tmp_path / "fit.json"
+    np.savetxt(f, Q, delimiter=",")
+    code, _, err = cli(capsys, "fit", f, "--model", "smooth", "--order", "curve", "--json", out,
+                       *(("--step", step) if step else ()))
+    doc = json.loads(out.read_text())
+    assert code == 0 and doc["outliers"] == [row] and f"(points {row}, counted" in err
+    dist = np.abs(doc["distances"])
+    assert int(np.argmax(dist)) == row and 1.5 < dist[row] < 2.5
+    assert np.all(np.delete(dist, row) < 0.3)
+
+
 def test_keyline_of_a_shuffled_scan_warns():
     P = tile_scan()
     with pytest.warns(el.OrderWarning, match="curve_order"):
