@@ -8,6 +8,8 @@ solution), 2 bad input (one line on stderr, no traceback).
 from __future__ import annotations
 
 import argparse
+import contextlib
+import io
 import os
 import re
 import sys
@@ -188,7 +190,7 @@ def cmd_hermite(args) -> int:
     out = {"p0": p0, "t0": t0, "p1": p1, "t1": t1, **kw, "tol": args.tol,
            "unrepresentable": missing, "solutions": recs}
     if args.json:
-        write_json(out, "-" if args.json == "-" else args.outputs.path(args.json))
+        write_json(out, args.outputs.path(args.json))
     if args.json != "-":
         # near the separatrix a chain of pieces ("curve": {"type": "chain", ...}), k its first piece's
         print(_table(["#", "sigma", "length", "k", "energy", "inflection", "loops",
@@ -337,7 +339,7 @@ def cmd_bspline(args) -> int:
         splines.append(_mapped_bspline(b, to_input))
     result = out[0] if len(out) == 1 else {"sides": out}
     if args.json:
-        write_json(result, "-" if args.json == "-" else args.outputs.path(args.json))
+        write_json(result, args.outputs.path(args.json))
     if args.json != "-":
         for name, b in zip(names, splines):
             dev = (f"max deviation {b.max_deviation:.3g}" if b.max_deviation >= 0 else
@@ -383,7 +385,7 @@ def cmd_blend(args) -> int:
             b = curve.to_bspline(args.tol)
         rec["bspline"] = b.to_dict()
     if args.json:
-        write_json(rec, "-" if args.json == "-" else args.outputs.path(args.json))
+        write_json(rec, args.outputs.path(args.json))
     if args.json != "-":
         print(f"elliptic blend: k = {curve.basis.k:.6g} (m = {curve.basis.m:.6g}), "
               f"d = {curve.basis.d:.6g}, K = {curve.basis.K:.6g}")
@@ -452,7 +454,7 @@ def cmd_spline(args) -> int:
            "curvatures": sp.curvatures.tolist(),
            "bspline": bspline_to_dict(b) if b is not None else None}
     if args.json:
-        write_json(rec, "-" if args.json == "-" else args.outputs.path(args.json))
+        write_json(rec, args.outputs.path(args.json))
     if args.json != "-":
         print(_table(["points", "pieces", "tension", "length", "energy", "max curvature",
                       "residual"], [[len(sp.data), len(sp.pieces), sp.tension, sp.length,
@@ -685,19 +687,39 @@ def build_parser() -> argparse.ArgumentParser:
     q.add_argument("--dxf", metavar="PATH", help="write the B-splines as DXF SPLINEs (ezdxf)")
     _units_option(q)
     q.set_defaults(func=cmd_g2quad)
+    for sp_ in (f, h, b, sp, e, q):
+        _dash_help(sp_)
     return p
+
+
+def _dash_help(parser) -> None:
+    """'-' in every subcommand's --help: an output to standard output (the report then not
+    printed), an input from standard input (QA17: --dxf - wrote a file named '-')."""
+    for a in parser._actions:
+        if a.dest in ("json", "svg", "png", "dxf") and a.help:
+            a.help = a.help.replace(" ('-' = stdout)", "") + (
+                "; '-': standard output, if it is not a terminal" if a.dest == "png" else
+                "; '-': standard output") + " (the report is then not printed)"
+        elif a.dest in ("file", "files") and a.help:
+            a.help += "; '-': standard input (once)"
 
 
 def main(argv: Optional[Sequence[str]] = None) -> int:
     """Run the ``elastica`` command; returns the exit status (0, 1 or 2)."""
     parser = build_parser()
     args = parser.parse_args(argv)
-    args.outputs = Outputs(list(getattr(args, "files", None) or []) + [getattr(args, "file", None)]
-                            + list(getattr(args, "inputs", None) or []))
+    inputs = list(getattr(args, "files", None) or []) + [getattr(args, "file", None)] \
+        + list(getattr(args, "inputs", None) or [])
+    args.outputs = Outputs(inputs)
     try:
         try:
+            if inputs.count("-") > 1:   # standard input can be read once
+                raise InputError("'-' (standard input) is given more than once: give it once")
             check_outputs(args)
-            with interruptible():       # Ctrl-C during a C fit: at once, not when it returns
+            # Ctrl-C during a C fit: at once, not when it returns; an output on stdout: the
+            # report is not printed (as --json - never printed it)
+            with interruptible(), (contextlib.redirect_stdout(io.StringIO()) if args.to_stdout
+                                   else contextlib.nullcontext()):
                 status = args.func(args)
             args.outputs.commit()
             return status
@@ -705,9 +727,16 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
             args.outputs.abort()
             print(f"{PROG} {args.command}: {exc}", file=sys.stderr)   # it says what did not converge
             return EXIT_NOCONV
-        except BaseException:
+        except BaseException as exc:
+            msg = args.outputs.explain(" ".join(str(exc).split()))   # names no temporary
             args.outputs.abort()
+            if isinstance(exc, (InputError, ValueError, OSError, OverflowError)) and \
+                    not isinstance(exc, BrokenPipeError):
+                raise InputError(msg or type(exc).__name__) from None
             raise
+    except BrokenPipeError:     # `elastica ... --dxf - | head`: the reader is gone
+        sys.stdout = open(os.devnull, "w")     # (and Python's flush at exit says nothing)
+        return EXIT_OK
     except (InputError, ValueError, OSError, OverflowError) as exc:
         msg = " ".join(str(exc).split()) or type(exc).__name__
         print(f"{PROG} {args.command}: {msg}", file=sys.stderr)

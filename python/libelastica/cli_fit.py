@@ -518,7 +518,7 @@ def cmd_fit(args) -> int:
     if not batch:
         recs, doc = fit_file(files[0], args, batch=False)
         if args.json == "-":
-            write_json(doc, "-")
+            write_json(doc, args.outputs.path(args.json))
         else:
             for i, r in enumerate(recs):
                 if i:
@@ -559,7 +559,7 @@ def cmd_fit(args) -> int:
         progress.step(Path(f).name)
     if args.json and "{stem}" not in args.json and (args.json == "-" or args.json.endswith(".json")):
         # each file's document, as one file's JSON holds it (a keyline's two sides together)
-        write_json(docs, "-" if args.json == "-" else args.outputs.path(args.json))
+        write_json(docs, args.outputs.path(args.json))
     if args.json != "-":
         print(_table(["file", "model", "k", "rms", "max error", "status"], rows))
     n_noconv = sum(1 for r in all_recs if not r["converged"]) - bad

@@ -66,7 +66,7 @@ def cmd_g2quad(args) -> int:
         rec["fit"] = {"curve": curve_to_dict(g.fit.curve), "rms": g.fit.rms,
                       "max_error": g.fit.max_error, "status": int(g.fit.status)}
     if args.json:
-        write_json(rec, "-" if args.json == "-" else args.outputs.path(args.json))
+        write_json(rec, args.outputs.path(args.json))
     if args.json != "-":
         pieces = len(g.bsplines)
         split = f"{pieces} pieces split at {pieces - 1} inflection(s)" if pieces > 1 else \
@@ -76,8 +76,10 @@ def cmd_g2quad(args) -> int:
         if g.fit is not None:
             print(f"  source: a smooth elastica fitted to the {len(src)} points (--fit), rms "
                   f"{g.fit.rms:.3g}, max error {g.fit.max_error:.3g} from them")
-        print(f"  starts at ({g.ends[0][0]:.6g}, {g.ends[0][1]:.6g}), ends at "
-              f"({g.ends[-1][0]:.6g}, {g.ends[-1][1]:.6g}), exactly on the source")
+        # in the input's coordinates, as the DXF (QA17 P6: 3D points printed the plane's 2D)
+        ends = [g.ends[0], g.ends[-1]] if frame is None else frame.to_3d(np.array([g.ends[0], g.ends[-1]]))
+        start, end = (", ".join(f"{v:.6g}" for v in e) for e in ends)
+        print(f"  starts at ({start}), ends at ({end}), exactly on the source")
         if not g.covers_source:
             left = "its start's and its end's pieces beyond their inflections are" \
                 if not any(g.ends_covered) else \

@@ -6,20 +6,35 @@ leaves nothing behind)."""
 from __future__ import annotations
 
 import os
+import shutil
 import stat
+import sys
 import tempfile
 from pathlib import Path
 from typing import List, Optional, Sequence
 
 from .io import InputError
 
-def out_path(spec: Optional[str], source: str, ext: str, batch: bool) -> Optional[Path]:
+class ToStdout(str):
+    """An output option given as '-': standard output. Equal to "-"; knows the option
+    (for messages) and the format's suffix (the writers choose the format by it)."""
+
+    def __new__(cls, option: str, ext: str):
+        obj = super().__new__(cls, "-")
+        obj.option, obj.ext = option, ext
+        return obj
+
+
+def out_path(spec: Optional[str], source: str, ext: str, batch: bool):
     """Output path for one input: spec itself, spec with {stem} filled in, or (batch,
-    no {stem}) a directory spec/ holding <stem><ext>. Nothing is created here:
-    :class:`Outputs` makes the directories when the file is written."""
+    no {stem}) a directory spec/ holding <stem><ext>; '-' (standard output) as it is.
+    Nothing is created here: :class:`Outputs` makes the directories when the file is
+    written."""
     if not spec:
         return None
-    stem = Path(source).stem
+    if spec == "-":
+        return spec
+    stem = "stdin" if source == "-" else Path(source).stem
     if "{stem}" in spec:
         return Path(spec.replace("{stem}", stem))
     if batch:
@@ -48,6 +63,8 @@ class Outputs:
       still choose the format by it); :meth:`commit` renames them all into place
       only when every one was written, :meth:`abort` removes them (and the
       directories made for them): a failing output leaves nothing behind.
+    - '-' (:class:`ToStdout`) is standard output: written to a temporary in a directory of
+      its own and copied to stdout at commit (nothing on stdout when the command fails).
 
     A subcommand names its input files ``file`` / ``files`` (or sets ``args.inputs``)
     and writes with ``path = args.outputs.path(target)`` then ``write_x(..., path)``.
@@ -58,9 +75,12 @@ class Outputs:
         self._staged: List[tuple] = []      # (temporary, final)
         self._finals: set = set()
         self._made: List[Path] = []         # directories created, deepest last
+        self._stdout_dir: Optional[str] = None
 
     def check(self, target) -> Path:
         """Refuse target when it is an input or already an output of this command."""
+        if target == "-":
+            return target
         final = Path(target)
         if final.is_dir():
             raise InputError(f"{final}: is a directory; give a file name")
@@ -78,7 +98,15 @@ class Outputs:
         return final
 
     def path(self, target) -> Path:
-        """A temporary to write ``target``'s content to (renamed at commit)."""
+        """A temporary to write ``target``'s content to (renamed at commit; '-': copied to
+        standard output)."""
+        if target == "-":
+            if self._stdout_dir is None:
+                self._stdout_dir = tempfile.mkdtemp(prefix="elastica-stdout.")
+            tmp = Path(self._stdout_dir) / f"{len(self._staged)}{getattr(target, 'ext', '.tmp')}"
+            tmp.touch()
+            self._staged.append((tmp, target))
+            return tmp
         final = self.check(target)
         self._finals.add(os.path.abspath(final))
         missing = []
@@ -113,9 +141,29 @@ class Outputs:
 
     def commit(self) -> None:
         for tmp, final in self._staged:
-            os.chmod(tmp, _mode_for(final))
-            os.replace(tmp, final)
+            if final == "-":
+                sys.stdout.flush()
+                with open(tmp, "rb") as src:
+                    shutil.copyfileobj(src, sys.stdout.buffer)
+                sys.stdout.buffer.flush()
+            else:
+                os.chmod(tmp, _mode_for(final))
+                os.replace(tmp, final)
         self._staged = []
+        self._drop_stdout_dir()
+
+    def explain(self, message: str) -> str:
+        """message with each temporary's name replaced by what the user gave (the file,
+        or '--OPTION -'): an error names no temporary."""
+        for tmp, final in self._staged:
+            name = f"--{final.option} -" if final == "-" and hasattr(final, "option") else str(final)
+            message = message.replace(str(tmp), name)
+        return message
+
+    def _drop_stdout_dir(self) -> None:
+        if self._stdout_dir is not None:
+            shutil.rmtree(self._stdout_dir, ignore_errors=True)
+            self._stdout_dir = None
 
     def abort(self) -> None:
         for tmp, _ in self._staged:
@@ -123,6 +171,7 @@ class Outputs:
                 tmp.unlink()
             except OSError:
                 pass
+        self._drop_stdout_dir()
         for d in reversed(self._made):
             try:
                 d.rmdir()
@@ -140,9 +189,25 @@ def check_outputs(args) -> None:
     files = list(getattr(args, "files", None) or [])
     batch = len(files) > 1
     taken = {}          # output path -> the option that writes it
+    to_stdout = []
     for opt, ext in OUTPUT_OPTIONS:
         spec = getattr(args, opt, None)
-        if not spec or spec == "-":
+        if spec == "-":
+            # '-' is standard output for every format (--dxf - wrote a file named '-',
+            # --svg - failed naming a temporary: QA17)
+            if batch and opt != "json":
+                raise InputError(f"--{opt} -: {len(files)} input files make {len(files)} "
+                                 f"{opt.upper()}s; give a file name (or '{{stem}}.{ext[1:]}')")
+            if opt == "png" and sys.stdout.isatty():
+                raise InputError("--png -: standard output is a terminal; redirect it "
+                                 "(> picture.png) or give a file name")
+            to_stdout.append(opt)
+            if len(to_stdout) > 1:
+                raise InputError(f"--{to_stdout[0]} - and --{opt} -: one output can go to "
+                                 "standard output; give the other a file name")
+            setattr(args, opt, ToStdout(opt, ext))
+            continue
+        if not spec:
             continue
         for source in files or [spec]:
             final = args.outputs.check(out_path(spec, source, ext, batch))
@@ -157,6 +222,7 @@ def check_outputs(args) -> None:
             # wrote a PNG without a word
             if opt in ("svg", "png") and final.suffix.lower() != ext:
                 raise InputError(f"--{opt} {final}: the picture's file name must end in {ext}")
+    args.to_stdout = bool(to_stdout)
     # the DXF's units without a DXF: silently nothing
     if getattr(args, "units", None) is not None and not getattr(args, "dxf", None):
         raise InputError(f"--units {args.units} sets the DXF's units: give --dxf too")

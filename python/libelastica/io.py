@@ -71,7 +71,8 @@ def _parse_text(text: str, name: str) -> np.ndarray:
         # a field holding a comma is a decimal comma whatever the separator: a comma
         # separator splits unquoted ones, and the others have no comma between columns
         fields = [f.replace(",", ".") if _DECIMAL_COMMA.fullmatch(f) else f for f in fields]
-        if not rows and not any(_is_number(f) for f in fields):
+        if not rows and not any(_is_number(f) for f in fields) and \
+                not all(_is_number(w) for f in fields for w in f.split()):   # '1.5 2.5' at ','
             header = fields            # a title or header line: the last one names columns
             continue
         rows.append((lineno, fields))
@@ -87,6 +88,14 @@ def _parse_text(text: str, name: str) -> np.ndarray:
     width = max(counts, key=counts.get)     # most rows' number of columns
     if len(counts) != 1:
         lineno, f = next((ln, f) for ln, f in rows if len(f) != width)
+        # '1.5 2.5' among '1.5,2.5' rows: the separator, not an empty cell (QA17 P2)
+        spaced = [ln for ln, f in rows if len(f) == 1 and len(f[0].split()) > 1
+                  and all(map(_is_number, f[0].split()))]
+        if delim and spaced:
+            sep = {"\t": "tabs"}.get(delim, f"'{delim}'")
+            raise InputError(f"{name}: line {spaced[0]}: mixed separators: {len(spaced)} of "
+                             f"{len(rows)} rows separate their columns by spaces, the others "
+                             f"by {sep}; use one separator throughout")
         raise InputError(f"{name}: line {lineno}: {len(f)} column{'s' * (len(f) != 1)} where "
                          f"{counts[width]} of {len(rows)} rows have {width} (an empty cell?)"
                          f"{hint}")
@@ -154,6 +163,27 @@ def _decode(data: bytes, name: str) -> str:
                          "nor Windows-1252 text (save the file as UTF-8 CSV)") from None
 
 
+_NPY_MAGIC = b"\x93NUMPY"
+
+
+def _read_bytes(path: PathLike) -> bytes:
+    """The bytes of an input: '-' is standard input; a pipe or device (/dev/stdin, a
+    shell's <(...)) is read as a file is. InputError when missing or unreadable."""
+    import sys
+    if str(path) == "-":
+        return sys.stdin.buffer.read()
+    p = Path(path)
+    if not p.exists():
+        raise InputError(f"{path}: no such file")
+    if p.is_dir():
+        raise InputError(f"{path}: is a directory; give a file")
+    try:
+        return p.read_bytes()
+    except OSError as exc:
+        raise InputError(f"{path}: cannot read ({exc.strerror or exc.__class__.__name__})") \
+            from None
+
+
 def read_points(path: PathLike, min_points: int = 3) -> np.ndarray:
     """Read an (n, 2) or (n, 3) float64 array of points from ``path``.
 
@@ -167,24 +197,17 @@ def read_points(path: PathLike, min_points: int = 3) -> np.ndarray:
     column count other than 2 or 3 without such a header, NaN/inf values, fewer than
     ``min_points`` points, or all points equal.
     """
-    p = Path(path)
-    name = str(path)
-    if not p.is_file():
-        raise InputError(f"{name}: no such file")
-    if p.suffix.lower() == ".npy":
+    name = "standard input" if str(path) == "-" else str(path)
+    data = _read_bytes(path)
+    if data.startswith(_NPY_MAGIC) or (str(path) != "-" and Path(path).suffix.lower() == ".npy"):
         try:
-            arr = np.load(p, allow_pickle=False)
+            arr = np.load(_io.BytesIO(data), allow_pickle=False)
         except Exception as exc:   # numpy raises several types for corrupt files
             raise InputError(f"{name}: not a readable .npy file ({exc})") from None
         if not np.issubdtype(arr.dtype, np.number):
             raise InputError(f"{name}: .npy array is not numeric (dtype {arr.dtype})")
         arr = np.asarray(arr, dtype=np.float64)
     else:
-        try:
-            data = p.read_bytes()
-        except OSError as exc:
-            raise InputError(f"{name}: cannot read ({exc.strerror or exc.__class__.__name__})") \
-                from None
         arr = _parse_text(_decode(data, name), name)
     if arr.ndim != 2 or arr.shape[1] not in (2, 3):
         raise InputError(f"{name}: need 2 or 3 columns (x,y or x,y,z), got shape {arr.shape}")
@@ -292,12 +315,12 @@ def write_json(obj: Any, path: PathLike) -> None:
 
 
 def read_json(path: PathLike) -> Any:
-    """Read a JSON file; InputError when missing or malformed."""
-    p = Path(path)
-    if not p.is_file():
-        raise InputError(f"{path}: no such file")
+    """Read a JSON file ('-': standard input); InputError when missing or malformed."""
+    data = _read_bytes(path)
+    if str(path) == "-":
+        path = "standard input"
     try:
-        return json.loads(p.read_text())
+        return json.loads(data.decode("utf-8-sig"))
     except (ValueError, UnicodeDecodeError) as exc:
         raise InputError(f"{path}: not valid JSON ({exc})") from None
 

@@ -249,13 +249,56 @@ def have_matplotlib() -> bool:
     return True
 
 
+MAX_MARKS = 2000        # markers (and residual segments) per point set a picture draws
+MAX_VERTICES = 10000    # vertices per polyline (a g2quad of 50 edges: 10^4, drawn whole)
+
+
+def _every(n: int, most: int) -> np.ndarray:
+    """Indices of at most ``most`` of n items, evenly along them, first and last kept."""
+    return np.unique(np.linspace(0, n - 1, most).round().astype(np.intp))
+
+
+def thinned(pic: Picture) -> Picture:
+    """The picture as it is visible (QA17 S1: 10^5 points drew 10^5 markers and residual
+    segments, 38 MB of SVG in 11.6 s): each point set at most MAX_MARKS markers chosen
+    evenly along it (residual segments with the data, the first layer), each polyline at
+    most MAX_VERTICES vertices; a parameter line says how many were drawn. Pictures
+    within these bounds are returned as they are."""
+    def thin(xy, line):
+        if len(xy) > (MAX_VERTICES if line else MAX_MARKS):
+            return xy[_every(len(xy), MAX_VERTICES if line else MAX_MARKS)]
+        return xy
+
+    big = [len(L.xy) for L in pic.layers if len(L.xy) > (MAX_VERTICES if L.line and not L.marker
+                                                          else MAX_MARKS)]
+    res = pic.residuals
+    if res is not None and len(res[0]) > MAX_MARKS:
+        big.append(len(res[0]))
+        keep = _every(len(res[0]), MAX_MARKS)
+        res = (res[0][keep], res[1][keep])
+    graphs = []
+    for g in pic.graphs:
+        line = g.line and not g.marker
+        if len(g.s) > (MAX_VERTICES if line else MAX_MARKS):
+            keep = _every(len(g.s), MAX_VERTICES if line else MAX_MARKS)
+            g = Graph(g.s[keep], g.kappa[keep], g.label, g.color, g.marker, g.line, g.primary)
+        graphs.append(g)
+    if not big:
+        return pic
+    layers = [Layer(thin(L.xy, L.line and not L.marker), L.label, L.color, L.marker, L.line,
+                    L.size) for L in pic.layers]
+    return Picture(pic.title, layers, res, graphs,
+                   pic.params + [f"drawn: at most {MAX_MARKS} of the {max(big)} points, evenly"])
+
+
 def save_picture(pic: Picture, path: PathLike) -> str:
-    """Write the picture to ``path`` (.svg or .png, chosen by the suffix); returns
-    the back end used ('matplotlib' or 'svg'). PNG without matplotlib raises
-    InputError (one line, for the command line)."""
+    """Write the picture to ``path`` (.svg or .png, chosen by the suffix), thinned to what
+    is visible (:func:`thinned`); returns the back end used ('matplotlib' or 'svg'). PNG
+    without matplotlib raises InputError (one line, for the command line)."""
     suffix = Path(path).suffix.lower()
     if suffix not in (".svg", ".png"):
         raise InputError(f"{path}: picture must end in .svg or .png")
+    pic = thinned(pic)
     if have_matplotlib():
         _save_matplotlib(pic, path)
         return "matplotlib"
