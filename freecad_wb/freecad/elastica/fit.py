@@ -9,6 +9,7 @@ fit_shape.py)."""
 from __future__ import annotations
 
 import json
+import os
 
 import FreeCAD as App
 
@@ -36,7 +37,12 @@ class FitProxy(FeatureProxy):
         add_link(obj, "App::PropertyLinkSubList", "Source", "Input",
                  "Sketch edges or vertices, a Points object, or a wire / 3D polyline to fit")
         add_property(obj, "App::PropertyFile", "CsvFile", "Input",
-                     "A CSV / text file of x,y[,z] points (mm), used instead of Source when set")
+                     "A CSV / text file of x,y[,z] points (mm), used instead of Source when set; "
+                     "read again at a recompute once it changed on disk (its modification "
+                     "time or size)")
+        if "CsvStamp" not in obj.PropertiesList:     # hidden output: setting it touches nothing
+            obj.addProperty("App::PropertyString", "CsvStamp", "Input", "The CSV file's "
+                            "modification time (ns) and size when it was last read", 4 | 8)
         add_property(obj, "App::PropertyInteger", "SamplesPerEdge", "Input",
                      "Points sampled on each curved source edge (4 to 10000)", 60)
         add_enum(obj, "Model", "Fit",
@@ -141,6 +147,7 @@ class FitProxy(FeatureProxy):
             raise InputProblem(f"SamplesPerEdge = {obj.SamplesPerEdge} is not usable: 4 to 10000")
         # renames Source: read it after; a CSV file is read instead of Source, not its geometry
         element = None if obj.CsvFile else followed_reader(obj, "Source")
+        stamp = csv_stamp(obj.CsvFile) if obj.CsvFile else ""   # before it is read
         notes = []
         gathered = gather_points(obj.Source, obj.CsvFile, obj.SamplesPerEdge, link="Source",
                                  element=element, notes=notes)
@@ -150,7 +157,17 @@ class FitProxy(FeatureProxy):
             if edge is not None:
                 edges[f"{key}_edge"] = edge
                 edges[f"{key}_at"] = edge_end_choice(obj, f"{prop}At")
-        return fit_gathered(gathered, notes, **core_options(obj), **edges)
+        r = fit_gathered(gathered, notes, **core_options(obj), **edges)
+        r["csv_stamp"] = stamp
+        return r
+
+    def mustExecute(self, obj):
+        """A recompute reads the CSV file again once it changed on disk (QA17 P10: the old
+        points kept, State up to date, until the feature was touched), as FreeCAD asks a
+        feature whether it must execute besides its touched properties
+        (FeaturePythonImp::mustExecute)."""
+        return bool(obj.CsvFile) and "CsvStamp" in obj.PropertiesList and \
+            csv_stamp(obj.CsvFile) != obj.CsvStamp
 
     def apply(self, obj, r):
         plc = r["placement"]
@@ -167,6 +184,12 @@ class FitProxy(FeatureProxy):
         obj.Distances = [float(d) for d in r["distances"]]
         from libelastica.io import curve_to_dict
         obj.Curves = json.dumps([curve_to_dict(c) for c in r["curves"]])
+        old = getattr(obj, "CsvStamp", "")
+        if r["csv_stamp"] and old and r["csv_stamp"] != old and "Restore" not in obj.State:
+            App.Console.PrintMessage(f"Elastica {obj.Label}: {obj.CsvFile} changed on disk: "
+                                     "read again\n")
+        if "CsvStamp" in obj.PropertiesList and obj.CsvStamp != r["csv_stamp"]:
+            obj.CsvStamp = r["csv_stamp"]
         # lengths marked (units.exact_mark), said again when a panel opens (proxy.said)
         set_said(obj, "Status", r["status"] or "ok")
         obj.FreeRms = r["free_rms"]
@@ -186,6 +209,15 @@ class FitProxy(FeatureProxy):
             first, second = stored[0]
             return [first.reversed(), second], stored[1]
         return stored
+
+
+def csv_stamp(path):
+    """'modification time (ns) size' of the file at ``path``, '' where it cannot be read."""
+    try:
+        st = os.stat(path)
+    except OSError:
+        return ""
+    return f"{st.st_mtime_ns} {st.st_size}"
 
 
 def stored_curves(obj):
