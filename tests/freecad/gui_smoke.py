@@ -985,6 +985,14 @@ def g2quad_panel(doc, ksk):
     check(all(min((a - b).Length for b in mine) < 1e-9 for a in ends),
           "G2 quadratic ends exactly on the source's ends")
     screenshot("gui_g2quad_panel.png")
+    type_into(panel.edges, "3")             # QA17 M2: too few to cover the S, an error
+    wait()
+    check("Edges = 3 leaves out" in error_line(panel) and "covers it" in error_line(panel)
+          and "Invalid" in q.State, f"G2 quadratic: Edges 3 names the Edges that cover "
+          f"({error_line(panel)})")
+    type_into(panel.edges, "25")
+    wait()
+    check(q.Status == "ok" and not error_line(panel), "G2 quadratic: Edges 25 again")
     check(panel.accept(), "G2 quadratic panel accepts")
 
 

@@ -258,3 +258,29 @@ class G2QuadTest(S.DocTest):
         q = C.g2quad_sources([(self.sk, ["Edge1"])], open_panel=False, Edges=12)
         self.assertIsNotNone(q)
         self.assertEqual((q.Proxy.kind, q.Edges, q.Status), ("G2Quad", 12, "ok"))
+
+    def test_a_result_leaving_the_source_out_is_an_error(self):
+        """QA17 M2: Edges = 3 on this S said 'ok, but an end ... is left out (165 mm ...)',
+        half the source dropped and the feature drawn as valid. Now an error naming the
+        Edges that cover it (4 and 5 find no affine polyline here, 6 covers), the last
+        result kept as it was (nothing of the partial one written), and the command
+        refuses it."""
+        q = Q.make(self.doc, [(self.sk, ["Edge1"])], Edges=24)
+        self.doc.recompute()
+        kept = (q.Shape.Length, q.Poles, q.Deviation, q.EndTangentError, list(q.Polyline))
+        q.Edges = 3
+        self.doc.recompute()
+        self.assertIn("Invalid", q.State)
+        self.assertRegex(q.Status, r"^error: Edges = 3 leaves out 165 mm of the source "
+                         r"beyond an inflection \(too short for 3 edges\): Edges = 6 covers it$")
+        self.assertEqual((q.Shape.Length, q.Poles, q.Deviation, q.EndTangentError,
+                          list(q.Polyline)), kept)
+        q.Edges = 6                     # what it named covers the source
+        self.doc.recompute()
+        self.assertEqual(q.Status, "ok")
+        src = self.sk.Shape.Edges[0]
+        for end in (src.Vertexes[0].Point, src.Vertexes[-1].Point):
+            self.assertLess(q.Shape.distToShape(Part.Vertex(end))[0], 1e-9)
+        del C.MESSAGES[:]
+        self.assertIsNone(C.g2quad_sources([(self.sk, ["Edge1"])], open_panel=False, Edges=3))
+        self.assertIn("Edges = 6 covers it", C.MESSAGES[-1])

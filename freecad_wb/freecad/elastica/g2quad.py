@@ -37,6 +37,41 @@ def g2quad_core(edges, plane=None, nedges=24):
                            "chain") from None
     if closed:
         raise InputProblem("the source is a closed curve: pick an open one (split it first)")
+    g, plane = _g2quad(edges, plane, n)
+    if not g.covers_source:     # QA17 M2: half an S drawn as a valid result
+        gone = " + ".join(length_mark(d, 4) for d in g.dropped if d > 0)
+        more = _covering_edges(edges, plane, n)
+        raise InputProblem(f"Edges = {n} leaves out {gone} of the source beyond an inflection "
+                           "(too short for 3 edges): " + (
+                               f"Edges = {more} covers it" if more else
+                               f"none up to Edges = {min(COVER_SEARCH * n, 5000)} tried "
+                               "covers it"))
+    return {"result": g, "placement": plane}
+
+
+# the largest Edges tried for one that covers the source: this many times the given Edges
+COVER_SEARCH = 4
+
+
+def _covering_edges(edges, plane, n):
+    """The fewest Edges above ``n`` whose B-splines cover the source, or None: each of the
+    next 16 counts, then steps of 1/4 up to COVER_SEARCH n (and 5000). Not monotone: a
+    count between can fail (a stretch without affine arc length)."""
+    top = min(COVER_SEARCH * n, 5000)
+    tries = list(range(n + 1, min(n + 16, top) + 1))
+    while tries and tries[-1] < top:
+        tries.append(min(top, tries[-1] + max(1, tries[-1] // 4)))
+    for m in tries:
+        try:
+            if _g2quad(edges, plane, m)[0].covers_source:
+                return m
+        except InputProblem:
+            continue
+    return None
+
+
+def _g2quad(edges, plane, n):
+    """(libelastica G2Quadratic of the chain with n edges, the plane); raises InputProblem."""
     pts, tangents = sample_chain(edges, SAMPLES_PER_VERTEX * n)
     try:
         xy, plane = plane_coordinates(pts, plane, flat=1e-6, what="source edges")
@@ -56,7 +91,7 @@ def g2quad_core(edges, plane=None, nedges=24):
                            "throughout") from None
     except (ValueError, ArithmeticError, RuntimeError) as exc:
         raise InputProblem(f"G2 quadratic B-spline failed: {exc}") from None
-    return {"result": g, "placement": plane}
+    return g, plane
 
 
 def _joins(edges, plane):
@@ -88,7 +123,9 @@ class G2QuadProxy(FeatureProxy):
         add_geometry_index(obj, "SourceGeometry", "Source")
         add_property(obj, "App::PropertyInteger", "Edges", "G2 quadratic",
                      "Edges of the affine arc-length polyline (3 to 5000): the B-splines have "
-                     "about as many poles; the distance from the source falls like 1/Edges^2", 24)
+                     "about as many poles; the distance from the source falls like 1/Edges^2. "
+                     "Each inflection-free piece needs 3: fewer, which would leave an end of "
+                     "the source out, is an error naming the Edges that cover it", 24)
         add_property(obj, "App::PropertyFloat", "Deviation", "Result",
                      "Largest distance of the B-splines from the source (mm)")
         add_property(obj, "App::PropertyFloat", "CurvatureJump", "Result",
@@ -141,10 +178,7 @@ class G2QuadProxy(FeatureProxy):
         obj.Poles = g.npoles
         obj.Polyline = to_3d(plc, g.polyline.points)
         obj.Plane = plc
-        gone = " + ".join(length_mark(d, 4) for d in g.dropped if d > 0)
-        set_said(obj, "Status", "ok" if g.covers_source else (
-            f"ok, but an end of the source next to an inflection is left out ({gone} of its "
-            "length; too short for 3 edges): more edges cover it"))
+        set_said(obj, "Status", "ok")       # g2quad_core refuses what leaves the source out
 
 
 def make(doc, sources=(), **props):

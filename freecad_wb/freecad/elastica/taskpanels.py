@@ -577,7 +577,9 @@ class G2QuadPanel(Panel):
         g = self.box("G2 quadratic B-spline")
         self.edges = self.integer(g, "Edges", "Edges", 3, 5000,
                                   "Edges of the affine arc-length polyline: about as many poles; "
-                                  "the distance from the source falls like 1/Edges\u00b2")
+                                  "the distance from the source falls like 1/Edges\u00b2; "
+                                  "each inflection-free piece needs 3 (fewer is an error "
+                                  "naming the Edges that cover the source)")
         self.polyline = self.check(g, "Show the polyline", "ShowPolyline",
                                    "The affine arc-length polyline: the control polygon inside "
                                    "each piece", target=self.obj.ViewObject)
