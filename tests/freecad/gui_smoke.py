@@ -968,6 +968,32 @@ def ellblend_panel(doc, S):
           "elliptic blend B-spline copied into a new sketch")
 
 
+def ellblend_closed_panel(doc, S):
+    """QA17 P5: five points through which the feature makes the C1 composite, Closed."""
+    psk = S.points_sketch(doc, [(0, -60), (20, -25), (55, -20), (80, -55), (40, -80)],
+                          "FivePoints")
+    panel = open_panel(doc, "Elastica_EllipticBlend", [(psk, "")], "Elliptic blend curve")
+    e = panel.obj
+    check(e.Status == "ok" and not e.Shape.Edges[0].isClosed() and panel.closed.isEnabled()
+          and not panel.d.isEnabled(), f"elliptic blend through five points ({e.Status})")
+    panel.closed.click()                    # a mouse click on the check box
+    wait()
+    edge = e.Shape.Edges[0]
+    check(e.Closed and e.Status == "ok" and edge.isClosed() and
+          e.ViewObject.Proxy.overlay_counts() == (16, 15),
+          f"elliptic blend panel: Closed closes the curve through five points ({e.Status})")
+    from freecad.elastica.panelbase import show_box
+    show_box(App.BoundBox(e.Shape.BoundBox))
+    screenshot("gui_ellblend_closed.png")
+    panel.mode.setCurrentIndex(1)           # five control points: no blend, said
+    wait()
+    check(not panel.closed.isEnabled() and "5 control points" in error_line(panel) and
+          "3 n + 1" in error_line(panel),
+          f"elliptic blend: control points disable Closed ({error_line(panel)})")
+    panel.reject()
+    pump()
+
+
 def g2quad_panel(doc, ksk):
     panel = open_panel(doc, "Elastica_G2Quad", [(ksk, "Edge1")], "G2 quadratic B-spline")
     q = panel.obj
@@ -1033,6 +1059,7 @@ def run():
     fit_panel_sparse(doc, S)
     fit_panel_far_points(doc, S)
     ellblend_panel(doc, S)
+    ellblend_closed_panel(doc, S)
     g2quad_panel(doc, ksk)
     comb_panel(doc, blend)
 

@@ -136,10 +136,13 @@ class EllipticBlendTest(S.DocTest):
         f = El.make(self.doc, [(self.sk, [])], K=0.3, KConvention="parameter", D=1.5)
         self.doc.recompute()
         self._ok(f)
-        curve = el.blend_curve(np.array(XY), m=0.3, d=1.5)
-        on = G.to_3d(S.SKETCH_PLACEMENT, curve.points(np.linspace(0, 1, 41)))
-        self.assertLess(S.distance_to_shape([tuple(p) for p in on], f.Shape),
-                        f.BSplineDeviation + 1e-9)
+        # through the points D is not used (QA17 P4): the curve of any d, described by the
+        # basis (and control points) of d = 2
+        for d in (1.5, 2.0):
+            curve = el.blend_curve(np.array(XY), m=0.3, d=d)
+            on = G.to_3d(S.SKETCH_PLACEMENT, curve.points(np.linspace(0, 1, 41)))
+            self.assertLess(S.distance_to_shape([tuple(p) for p in on], f.Shape),
+                            f.BSplineDeviation + 1e-9)
         for q, q3 in zip(G.to_3d(S.SKETCH_PLACEMENT, curve.q), f.ControlPoints):
             self.assertLess((q - q3).Length, 1e-9)
         # interpolate mode: the inner control points are not the picked points
@@ -242,8 +245,9 @@ class EllipticBlendTest(S.DocTest):
         before = S.doc_state(self.doc)
         cases = [
             ([], {}, "nothing selected"),
-            ([(three, [])], {}, "3 points"),
-            ([(five, [])], {}, "5 points"),
+            ([(three, [])], {"Mode": "control"}, "3 control points"),
+            ([(five, [])], {"Mode": "control"}, "5 control points"),
+            ([(three, [])], {"Mode": "control", "Closed": True}, "3 control points"),
             ([(same, [])], {}, "coincide"),
             ([(same, [])], {"Mode": "control"}, "coincide"),
             ([(v, ["Vertex1"]) for v in skew], {}, "not coplanar"),
@@ -251,7 +255,7 @@ class EllipticBlendTest(S.DocTest):
             ([(self.sk, [])], {"K": 1.0}, "0 <= k < 1"),
             ([(self.sk, [])], {"K": -0.2}, "0 <= k < 1"),
             ([(self.sk, [])], {"K": 1.5, "KConvention": "parameter"}, "0 <= m < 1"),
-            ([(self.sk, [])], {"D": 0.0}, "d = 0"),
+            ([(self.sk, [])], {"D": 0.0, "Mode": "control"}, "d = 0"),
         ]
         for sources, opts, text in cases:
             del C.MESSAGES[:]
@@ -265,7 +269,7 @@ class EllipticBlendTest(S.DocTest):
         f = El.make(self.doc, [(self.sk, [])])
         self.doc.recompute()
         self.assertEqual(S.status_once_deleted(f, self.sk), "error: its source was deleted: "
-                         "relink Points (four vertices, or a sketch of four points)")
+                         "relink Points (vertices in order, or a sketch of points)")
 
     def test_bad_property_keeps_shape_and_reports(self):
         f = El.make(self.doc, [(self.sk, [])])
@@ -340,9 +344,9 @@ class EllipticBlendTest(S.DocTest):
         loop = S.points_sketch(self.doc, XY[:3] + [XY[0]], "Loop")
         del C.MESSAGES[:]
         self.assertIsNone(C.ellblend_sources([(loop, [])], open_panel=False))
-        self.assertIn("points 1 and 4 coincide: one segment cannot close on itself smoothly",
+        self.assertIn("points 1 and 4 coincide: an open curve cannot close on itself smoothly",
                       C.MESSAGES[-1])
-        self.assertIn("closed=True", C.MESSAGES[-1])
+        self.assertIn("set Closed", C.MESSAGES[-1])
 
     def test_ill_conditioned_interpolation_is_warned(self):
         zig = S.points_sketch(self.doc, ZIGZAG, "Zigzag")
@@ -406,3 +410,62 @@ class EllipticBlendTest(S.DocTest):
             f.touch()
             self.doc.recompute()
         self.assertEqual((list(f.Warnings), w.said), (warnings, []))
+
+    def test_d_is_not_used_through_the_points(self):
+        """QA17 P4: through the points D changed nothing in the curve, yet D = 5 added
+        'warning: the basis is negative' to Status; the property editor took it while the
+        panel greyed it out. Now read-only there, and no warning from it."""
+        f = El.make(self.doc, [(self.sk, [])], D=5.0)
+        self.doc.recompute()
+        self._ok(f)
+        self.assertEqual((f.Status, list(f.Warnings)), ("ok", []))
+        self.assertIn("ReadOnly", f.getEditorMode("D"))
+        length = f.Shape.Length
+        f.D = 2.0
+        self.doc.recompute()
+        self.assertAlmostEqual(f.Shape.Length, length, delta=1e-9 * length)
+        f.Mode, f.D = "control", 5.0        # control points: D shapes the curve, and warns
+        self.doc.recompute()
+        self.assertEqual(f.getEditorMode("D"), [])
+        self.assertIn("ReadOnly", f.getEditorMode("Closed"))
+        self.assertTrue(f.Status.startswith("ok; warning: the basis is negative"), f.Status)
+        f.Closed = True                     # not used by control points either
+        self.doc.recompute()
+        self.assertTrue(f.Status.startswith("ok; warning: the basis"), f.Status)
+        self.assertFalse(f.Shape.Edges[0].isClosed())
+
+    def test_three_five_and_closed_points_are_the_librarys_composite(self):
+        """QA17 P5: the feature took exactly four points and had no Closed, while the CLI
+        and blend_curve make the C1 composite through 3 or more, open or closed."""
+        import numpy as np
+        import libelastica as el
+        five = XY + [(60.0, -30.0)]
+        pts = [S.SKETCH_PLACEMENT.multVec(App.Vector(x, y, 0)) for x, y in five]
+        for xy in (five[:3], five):
+            for closed in (False, True):
+                sk = S.points_sketch(self.doc, xy, f"P{len(xy)}{int(closed)}")
+                f = El.make(self.doc, [(sk, [])], Closed=closed)
+                self.doc.recompute()
+                self.assertEqual(f.Status, "ok", (len(xy), closed))
+                curve = el.blend_curve(np.array(xy), closed=closed)
+                on = G.to_3d(S.SKETCH_PLACEMENT, curve.points(
+                    np.linspace(0, curve.nseg, 40 * curve.nseg + 1)))
+                self.assertLess(S.distance_to_shape([tuple(p) for p in on], f.Shape),
+                                f.BSplineDeviation + 1e-9)
+                self.assertEqual(len(f.ControlPoints), 3 * curve.nseg + 1)
+                e = f.Shape.Edges[0]
+                for p in pts[:len(xy)]:
+                    self.assertLess(e.distToShape(Part.Vertex(p))[0], f.Tolerance.Value + 1e-9)
+                self.assertEqual(e.isClosed(), closed)
+                if closed:     # smooth at the seam: one tangent
+                    t0 = e.tangentAt(e.FirstParameter).normalize()
+                    t1 = e.tangentAt(e.LastParameter).normalize()
+                    self.assertGreater(t0.dot(t1), 1 - 1e-9)
+        # seven control points: two segments
+        seven = S.points_sketch(self.doc, five + [(90.0, -50.0), (120.0, -20.0)], "Seven")
+        f = El.make(self.doc, [(seven, [])], Mode="control")
+        self.doc.recompute()
+        self.assertEqual(f.Status, "ok")
+        e = f.Shape.Edges[0]
+        self.assertLess((e.valueAt(e.LastParameter) -
+                         S.SKETCH_PLACEMENT.multVec(App.Vector(120, -20, 0))).Length, 1e-7)

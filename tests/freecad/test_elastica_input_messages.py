@@ -55,7 +55,8 @@ class InputMessageTest(S.DocTest):
         self.assertNotIn("1 point", msg)
         self.assertIn("Circle holds a circle, without points to go through: select points", msg)
         msg = self.rejected(C.ellblend_sources, [(circ, [])])
-        self.assertIn("Circle holds a circle, without points to go through: select four", msg)
+        self.assertIn("Circle holds a circle, without points to go through: select vertices in "
+                      "order", msg)
 
     def test_a_command_failing_before_any_change_leaves_no_undo_step(self):
         # abortTransaction has nothing to abort then and FreeCAD kept the name pending: the

@@ -325,9 +325,9 @@ class SplineCommand(_Command):
 # ------------------------------------------------------------------ elliptic blend
 
 def ellblend_sources(sources, open_panel=True, **options):
-    """Check four picked points, create the elliptic blend curve (recorded), open its
-    task panel. ``options`` set Mode (interpolate / control), K, KConvention (modulus /
-    parameter), D, Tolerance."""
+    """Check the picked points, create the elliptic blend curve (recorded), open its
+    task panel. ``options`` set Mode (interpolate / control), Closed, K, KConvention
+    (modulus / parameter), D, Tolerance."""
     from . import ellblend, sources as src_mod
     doc = _doc()
     if doc is None:
@@ -339,7 +339,7 @@ def ellblend_sources(sources, open_panel=True, **options):
     def check():
         pts, plane = src_mod.gather_vertices(sources)
         ellblend.ellblend_core(pts, plane, opts["Mode"], opts["K"], opts["D"], opts["Tolerance"],
-                               opts["KConvention"])
+                               opts["KConvention"], opts.get("Closed", False))
 
     return _check_and_create(
         "Elliptic blend curve", "elliptic blend", check,
@@ -350,9 +350,10 @@ def ellblend_sources(sources, open_panel=True, **options):
 
 class EllipticBlendCommand(_Command):
     pixmap, menu = "ellblend", "Elliptic blend curve"
-    tip = ("A curve with Jacobi elliptic blending functions through four picked "
-           "coplanar points (or with them as control points); select four vertices "
-           "in order, or a sketch of four points")
+    tip = ("A curve with Jacobi elliptic blending functions through picked coplanar "
+           "points (or with them as control points): four make one segment, three or "
+           "more a smooth chain of segments, open or closed; select vertices in order, "
+           "or a sketch of points")
     run = staticmethod(ellblend_sources)
 
 

@@ -284,7 +284,7 @@ def _closed_curves(obj):
     return _CLOSED_KINDS.get(shape.Edges[0].Curve.TypeId, "a closed curve")
 
 
-def gather_vertices(sources, need="four vertices, or a sketch of four points",
+def gather_vertices(sources, need="vertices in order, or a sketch of points",
                     edge_means_object=False, curve_ordered=False, link=None, element=None,
                     said=None):
     """Picked points in selection order, without merging coincident ones: vertices

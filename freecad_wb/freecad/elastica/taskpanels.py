@@ -532,8 +532,12 @@ class EllipticBlendPanel(Panel):
         g = self.box("Elliptic blend curve")
         self.mode = self.choice(g, "Points", "Mode", E.MODES,
                                 ["on the curve", "control points"],
-                                "On the curve: the curve passes through the four points; control "
-                                "points: they shape it like a Bezier polygon")
+                                "On the curve: the curve passes through the points (three or "
+                                "more; four make one segment); control points: they shape it "
+                                "like a Bezier polygon (3 n + 1 for n segments)")
+        self.closed = self.check(g, "Closed", "Closed",
+                                 "Through the points: the curve closes back to the first point, "
+                                 "smooth there too", when=lambda: self.obj.Mode == "interpolate")
         self.conv = self.choice(g, "Elliptic", "KConvention", E.K_CONVENTIONS,
                                 ["modulus k", "parameter m = k\u00b2"],
                                 "How K is read: the modulus k, or the parameter m = k\u00b2 (the "
@@ -553,7 +557,7 @@ class EllipticBlendPanel(Panel):
         self.row(r, "", self.result)
         self.warning_row(r)
         self.show_q = self.check(r, "Show the control polygon", "ShowControlPolygon",
-                                 "The control points q0..q3 and their polygon: with a negative "
+                                 "The control points and their polygon: with a negative "
                                  "basis the curve can leave their convex hull",
                                  target=self.obj.ViewObject)
         out = self.box("Output")

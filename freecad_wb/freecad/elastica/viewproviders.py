@@ -262,7 +262,7 @@ class ViewProvider:
             props = [("ShowPolyline", "The affine arc-length polyline (the B-spline's "
                                       "control polygon inside each piece)", True)]
         elif kind == "EllipticBlend":
-            props = [("ShowControlPolygon", "The control points q0..q3 and their polygon (a "
+            props = [("ShowControlPolygon", "The control points and their polygon (a "
                                             "basis with negative functions lets the curve "
                                             "leave their convex hull)", True)]
         elif kind == "Spline":
