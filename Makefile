@@ -9,7 +9,7 @@ PYTHON       ?= python3
 SYSPYTHON    ?= /usr/bin/python3
 CC           ?= cc
 
-CFLAGS_BASE  := -std=c99 -Wall -Wextra -Werror -O2 -fPIC -Iinclude
+CFLAGS_BASE  := -std=c99 -Wall -Wextra -Werror -O2 -fPIC -Iinclude -I$(BUILD)/include
 DEPS_CFLAGS   = $(shell pkg-config --cflags gsl ipopt 2>/dev/null)
 DEPS_LIBS     = $(shell pkg-config --libs gsl ipopt 2>/dev/null) -lm -pthread
 CHECK_LIBS    = $(shell pkg-config --libs check 2>/dev/null)
@@ -73,6 +73,14 @@ lib: $(BUILD)/libelastica.so $(BUILD)/libelastica.a $(BUILD)/_elastica_abi.py
 # and PyPI's 2.0 write the same bytes, and either Python loads the other's.
 $(BUILD)/_elastica_abi.py: include/elastica.h python/libelastica/_cdef.py | $(BUILD)/.deps-ok
 	$(PYTHON) python/libelastica/_cdef.py include/elastica.h $@
+
+# EL_ABI_DIGEST, the CRC-32 of the header's declarations (the digest above), which
+# el_abi_digest returns (libelastica/abi.c): the binding and C programs (elastica_abi.h
+# is installed) check at start that the library was built from their header.
+$(BUILD)/include/elastica_abi.h: include/elastica.h python/libelastica/_cdef.py | $(BUILD)/.deps-ok
+	@mkdir -p $(dir $@)
+	$(PYTHON) python/libelastica/_cdef.py --abi include/elastica.h $@
+$(BUILD)/obj/abi.o: $(BUILD)/include/elastica_abi.h
 
 # The Hermite solver's hot path (its objective, root finding, the elliptic integrals and
 # Jacobi functions under it) at -O3 and with sqrt not setting errno (no libm call per
@@ -357,7 +365,7 @@ freecad-install: lib
 
 install: lib
 	install -d $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/include
-	install -m 644 include/elastica.h $(DESTDIR)$(PREFIX)/include/
+	install -m 644 include/elastica.h $(BUILD)/include/elastica_abi.h $(DESTDIR)$(PREFIX)/include/
 	install -m 755 $(BUILD)/libelastica.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/
 	ln -sf libelastica.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/$(SONAME)
 	ln -sf $(SONAME) $(DESTDIR)$(PREFIX)/lib/libelastica.so

@@ -1,9 +1,14 @@
 /* The README's C example, built by `make check` against the installed library. */
 #include <elastica.h>
+#include <elastica_abi.h> /* EL_ABI_DIGEST: the installed header's */
 #include <stdio.h>
 
 int main(void)
 {
+    if (el_abi_digest() != EL_ABI_DIGEST) { /* a library built from another elastica.h */
+        fprintf(stderr, "libelastica %s was built from another elastica.h: rebuild this program\n", el_version());
+        return 1;
+    }
     el_smooth_params p = {.x0 = 0, .y0 = 0, .phi = 0, .mu = 1.0, .k = 0.8, .q = 0, .length = 5};
     double s[100], xy[200], jac[100 * 2 * 7], energy;
     for (int i = 0; i < 100; i++) s[i] = p.length * i / 99.0;

@@ -54,6 +54,19 @@ const char *el_strerror(int status);
 /* Library version as "MAJOR.MINOR.PATCH" (static string). */
 const char *el_version(void);
 
+/*
+ * The header the library was built from: the CRC-32 (zlib's) of this header's
+ * declarations, i.e. the file without its C++ guard and preprocessor lines, as
+ * the Python binding's cffi reads it. A library built from another header lays out
+ * its structs otherwise (a struct that grew is written past its end by the library).
+ * The build writes the same number to elastica_abi.h (installed beside this file):
+ *     #include <elastica_abi.h>
+ *     if (el_abi_digest() != EL_ABI_DIGEST) ... this program and the loaded library
+ *         disagree: rebuild the program against the library's header;
+ * the Python binding compares it with its own header's at import (ImportError).
+ */
+unsigned long el_abi_digest(void);
+
 /* ------------------------------------------------------------------ jacobi */
 
 /*

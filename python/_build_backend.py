@@ -124,9 +124,12 @@ def _build_library(outdir: Path) -> Path:
                            "set LIBELASTICA_SKIP_BUILD=1 and LIBELASTICA_PATH to use an installed "
                            "library")
     cc = shlex.split(os.environ.get("CC", "cc"))
-    cflags = ["-std=c99", "-O2", "-fPIC", f"-I{inc}", f"-I{src}"] + _pkg_config("--cflags")
     objdir = outdir / "obj"
     objdir.mkdir(parents=True, exist_ok=True)
+    # elastica_abi.h: the header's digest, which the library's el_abi_digest returns (abi.c)
+    subprocess.run([sys.executable, "-E", str(HERE / PKG / "_cdef.py"), "--abi", str(inc / "elastica.h"),
+                    str(objdir / "elastica_abi.h")], check=True)
+    cflags = ["-std=c99", "-O2", "-fPIC", f"-I{inc}", f"-I{src}", f"-I{objdir}"] + _pkg_config("--cflags")
 
     def compile_one(c: Path) -> Path:
         obj = objdir / (c.stem + ".o")

@@ -6,11 +6,13 @@ takes it. Parsing it costs every start ~40 ms (and pycparser's import), so the b
 (``set_source(name, None)``, pure Python, no C compiler), which records the CRC-32 of
 the text it was made from. ``declarations`` takes such a module only when that digest
 is the header's and this interpreter's cffi accepts its format (``_cffi_backend`` checks
-the version the module states): else it parses the header as before.
+the version the module states): else it parses the header as before. The same digest,
+compiled into the library (``abi_header``: elastica_abi.h, el_abi_digest), tells at import
+whether the library was built from the header the binding read.
 
 Standard library only at import (the binding imports it on every start); cffi's parser
 is imported by ``write_module`` alone. As a script, without the package (so without the
-C library): ``python _cdef.py HEADER OUT.py``.
+C library): ``python _cdef.py HEADER OUT.py``, ``python _cdef.py --abi HEADER OUT.h``.
 """
 from __future__ import annotations
 
@@ -54,17 +56,27 @@ def load_module(path: Path, text: str):
 
 
 def declarations(header, folders):
-    """(ffi, path of the pre-parsed module used or None): the first of ``folders`` whose
-    module was made from ``header``, else the header parsed now (the same declarations)."""
+    """(ffi, path of the pre-parsed module used or None, the declarations' digest): the
+    first of ``folders`` whose module was made from ``header``, else the header parsed
+    now (the same declarations)."""
     text = cdef_text(header)
+    crc = digest(text)
     for folder in dict.fromkeys(Path(f) for f in folders):
         ffi = load_module(folder / FILE, text)
         if ffi is not None:
-            return ffi, str(folder / FILE)
+            return ffi, str(folder / FILE), crc
     from cffi import FFI
     ffi = FFI()
     ffi.cdef(text)
-    return ffi, None
+    return ffi, None, crc
+
+
+def abi_header(header, out) -> None:
+    """Write elastica_abi.h: EL_ABI_DIGEST, the digest of ``header``'s declarations,
+    which libelastica/abi.c returns from el_abi_digest (the header says how to check)."""
+    Path(out).write_text(f"/* Written by the build (python/libelastica/_cdef.py --abi) from elastica.h. */\n"
+                         f"#ifndef ELASTICA_ABI_H\n#define ELASTICA_ABI_H\n"
+                         f"#define EL_ABI_DIGEST 0x{digest(cdef_text(header)):08x}UL\n#endif\n")
 
 
 def write_module(header, out) -> None:
@@ -88,6 +100,9 @@ def write_module(header, out) -> None:
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3:
-        sys.exit("usage: python _cdef.py HEADER OUT.py")
-    write_module(sys.argv[1], sys.argv[2])
+    if len(sys.argv) == 4 and sys.argv[1] == "--abi":
+        abi_header(sys.argv[2], sys.argv[3])
+    elif len(sys.argv) == 3:
+        write_module(sys.argv[1], sys.argv[2])
+    else:
+        sys.exit("usage: python _cdef.py HEADER OUT.py | python _cdef.py --abi HEADER OUT.h")

@@ -6,7 +6,9 @@ by the build (cffi's out-of-line module beside the library or in the package) wh
 that module was made from this header, else parsed now. The header is found next to
 this package (installed copy) or in the source tree; the library through
 LIBELASTICA_PATH, a bundled copy, the source tree's build/, or the system loader
-(pkg-config install).
+(pkg-config install). At import the library must have been built from the header the
+declarations come from (its el_abi_digest is the header's): cffi lays out every struct
+by that header, and a library built from another writes past them.
 """
 from __future__ import annotations
 
@@ -57,11 +59,32 @@ def _load(ffi, path: Optional[str]):
             "source tree, set LIBELASTICA_PATH, or `make install`") from exc
 
 
+def _check_abi(lib, header: str, library: Optional[str], digest: int) -> None:
+    """ImportError naming both files unless the library was built from ``header``
+    (el_abi_digest, the CRC-32 of its declarations, is ``digest``: _cdef.py)."""
+    try:
+        built = lib.el_abi_digest()
+    except AttributeError:           # a library older than el_abi_digest
+        built = None
+    if built == digest:
+        return
+    where = library or "libelastica.so.0 (the system loader's)"
+    said = ("has no el_abi_digest (older than this binding)" if built is None else
+            f"was built from another elastica.h (digest {built:#010x})")
+    raise ImportError(
+        f"libelastica: the C library {where} {said}, not from the header this binding "
+        f"read, {header} (digest {digest:#010x}): its structs would be laid out otherwise. "
+        f"Rebuild the library from that header (`make lib` in its source tree, or "
+        f"reinstall the Python package), or set LIBELASTICA_PATH to the library built with it")
+
+
 _LIBRARY = _library()
+_HEADER = _header()
 # pre-parsed in the package (wheel), else beside the library (make lib); CDEF_MODULE:
 # the module used, None when the header was parsed (~40 ms more)
-ffi, CDEF_MODULE = _cdef.declarations(_header(), [_HERE] + ([Path(_LIBRARY).parent] if _LIBRARY else []))
+ffi, CDEF_MODULE, _DIGEST = _cdef.declarations(_HEADER, [_HERE] + ([Path(_LIBRARY).parent] if _LIBRARY else []))
 lib = _load(ffi, _LIBRARY)
+_check_abi(lib, _HEADER, _LIBRARY, _DIGEST)
 
 
 class ElasticaError(ValueError):

@@ -59,6 +59,34 @@ class PackageTest(unittest.TestCase):
         from freecad.elastica import library_problem
         self.assertEqual(library_problem(), "")
 
+    def test_mismatched_library_is_a_message(self):
+        """A library built from another elastica.h than the binding's (a stub whose
+        el_abi_digest is not the header's): the workbench's message names both files and
+        the command, instead of FreeCAD dying of a struct written past its end."""
+        import shutil
+        import subprocess
+        import sys as _sys
+        import tempfile
+        with tempfile.TemporaryDirectory() as tmp:
+            so = os.path.join(tmp, "libelastica.so")
+            with open(os.path.join(tmp, "other.c"), "w") as f:
+                f.write("unsigned long el_abi_digest(void) { return 1; }\n")
+            cc = shutil.which("cc")
+            if cc is None:
+                self.skipTest("no C compiler")
+            subprocess.run([cc, "-shared", "-fPIC", os.path.join(tmp, "other.c"), "-o", so], check=True)
+            env = dict(os.environ, LIBELASTICA_PATH=so,
+                       PYTHONPATH=os.pathsep.join([WB, os.path.join(S.ROOT, "python")]))
+            py = "/usr/bin/python3" if os.path.exists("/usr/bin/python3") else _sys.executable
+            out = subprocess.run([py, "-c", "from freecad.elastica import library_problem; "
+                                  "print(library_problem())"], env=env, capture_output=True,
+                                 text=True, timeout=60)
+        self.assertEqual(out.returncode, 0, out.stderr)
+        self.assertIn("does not match the binding", out.stdout)
+        self.assertIn(so, out.stdout)
+        self.assertIn(os.path.join(S.ROOT, "include", "elastica.h"), out.stdout)
+        self.assertIn(f"make -C {S.ROOT} freecad-install", out.stdout)
+
     def test_package_xml(self):
         """The Addon Manager reads the repository root's package.xml; its workbench's
         subdirectory is the folder FreeCAD must put on sys.path (freecad_wb)."""

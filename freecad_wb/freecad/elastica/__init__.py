@@ -46,7 +46,9 @@ def ensure_binding():
 
 def library_problem():
     """'' when the libelastica binding loads, else a message naming the exact
-    command that builds the C library (for this source tree)."""
+    command that builds the C library (for this source tree): the library is missing,
+    or was built from another elastica.h than the binding's (the binding's ImportError
+    names both files)."""
     try:
         ensure_binding()
         return ""
@@ -54,7 +56,8 @@ def library_problem():
         src = _SRC_ROOT if os.path.isfile(os.path.join(_SRC_ROOT, "Makefile")) else ""
         how = (f"run  make -C {src} freecad-install  (or  make -C {src} lib)" if src else
                "install the libelastica Python package and its C library")
-        return f"the libelastica library is missing ({exc}); {how}, then restart FreeCAD"
+        what = "is missing" if "another elastica.h" not in str(exc) else "does not match the binding"
+        return f"the libelastica library {what} ({exc}); {how}, then restart FreeCAD"
 
 
 def defaults():
