@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import contextlib
 import contextvars
+import os
+import sys
 import threading
 
 # whether the calls of this context may run in a worker (the context's, not global: a
@@ -26,11 +28,39 @@ def interruptible():
         _WORKER.reset(token)
 
 
-def _run(fn, args, keep, out):
+class CallInterrupted(KeyboardInterrupt):
+    """Ctrl-C while a worker's C call runs (:func:`call`); ``running()``: whether it still
+    does."""
+
+    def __init__(self, done: threading.Event):
+        super().__init__()
+        self._done = done
+
+    def running(self) -> bool:
+        return not self._done.is_set()
+
+
+def end_if_a_call_runs(exc: BaseException, status: int) -> None:
+    """After a KeyboardInterrupt: where its worker is still in the C call, end the process
+    now with ``status`` (stdio flushed, nothing else run): exit's teardown of the libraries
+    under the running call crashed it (SIGSEGV in the fit, Debian's Python 3.11.2).
+    Returns when no call runs."""
+    if isinstance(exc, CallInterrupted) and exc.running():
+        for stream in (sys.stdout, sys.stderr):
+            try:
+                stream.flush()
+            except (OSError, ValueError):
+                pass
+        os._exit(status)
+
+
+def _run(fn, args, keep, out, done):
     try:
         out.append((True, fn(*args)))
     except BaseException as exc:       # raised again in the caller's thread
         out.append((False, exc))
+    finally:
+        done.set()
 
 
 def call(fn, *args, keep=()):
@@ -41,11 +71,16 @@ def call(fn, *args, keep=()):
     if not _WORKER.get() or threading.current_thread() is not threading.main_thread():
         return fn(*args)
     out: list = []
-    worker = threading.Thread(target=_run, args=(fn, args, keep, out), daemon=True,
+    done = threading.Event()    # (not Thread.is_alive: a join interrupted by Ctrl-C makes it
+    #                              False while the thread runs, Python 3.11.2)
+    worker = threading.Thread(target=_run, args=(fn, args, keep, out, done), daemon=True,
                               name="libelastica C call")
     worker.start()
-    while worker.is_alive():    # KeyboardInterrupt here: the worker keeps fn, args, keep
-        worker.join(0.05)       # (woken each 50 ms: a SIGINT another thread took is seen)
+    try:
+        while not done.wait(0.05):  # (woken each 50 ms: a SIGINT another thread took is seen)
+            pass
+    except KeyboardInterrupt:       # the worker keeps fn, args, keep
+        raise CallInterrupted(done) from None
     ok, value = out[0]
     if not ok:
         raise value

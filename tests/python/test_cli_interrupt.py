@@ -31,13 +31,19 @@ def test_sigint_during_the_c_fit(tmp_path, model):
     OpenBLAS held to one) ends the process while that fit still runs: the worker is then
     still in C, so the process exits with two threads' work undone; exit 130, no output
     file, one line on stderr."""
+    # a fit that runs seconds, not milliseconds (a plain 2000-point fit takes ~5 ms, so the
+    # worker could end between two polls): held to a start curvature 4 x the scan's, which
+    # Ipopt works at (3 s smooth, 12 s discrete, measured)
     rng = np.random.default_rng(1)
-    c = el.SmoothElastica(x0=0, y0=0, phi=0, mu=1.0, k=0.8, q=0.0, length=5.0)
-    P = c.points(np.sort(rng.uniform(0, 5, 2000))) + rng.normal(0, 0.01, (2000, 2))
+    c = el.SmoothElastica(x0=0, y0=0, phi=0.25, mu=1.2e-6, k=0.6, q=0.3, length=4000.0)
+    s = np.sort(rng.uniform(0, 4000, 2000))
+    P = c.points(s) + rng.normal(0, 0.5, (2000, 2))
+    wrong = 4.0 * float(c.curvature(s[:1])[0]) + 1e-3
     np.savetxt(tmp_path / "p.csv", P, delimiter=",")
     env = dict(os.environ, OPENBLAS_NUM_THREADS="1", OMP_NUM_THREADS="1")
     proc = subprocess.Popen([sys.executable, "-m", "libelastica", "fit", str(tmp_path / "p.csv"),
-                             "--model", model, "--json", str(tmp_path / "f.json")],
+                             "--model", model, "--start-curvature", repr(wrong),
+                             "--json", str(tmp_path / "f.json")],
                             env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     while proc.poll() is None and _threads(proc.pid) < 2:     # the C fit's worker started
         time.sleep(0.005)
