@@ -5,7 +5,7 @@ import importlib as _importlib
 from ._ffi import DomainError, ElasticaError, LengthRangeError, NotConvergedError, SingularError
 from .core import DiscreteElastica, SmoothElastica
 from . import io
-from .cubic import SPARSE_POINTS, cubic_distances, smooth_fits_better
+from .cubic import SPARSE_POINTS, SparseWarning, cubic_distances, smooth_fits_better
 from .fit import (ConstraintError, ConvergenceWarning, FitResult, OrderWarning, WanderWarning, far_points,
                   far_points_summary, fit, wander_summary)
 from .misfit import MISFIT_RATIO, Misfit, MisfitWarning, misfit, misfit_summary, noise_level

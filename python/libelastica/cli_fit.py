@@ -203,6 +203,16 @@ def _warn_coarse_polygon(path, rec: Dict[str, Any], data: np.ndarray, res) -> No
           file=sys.stderr)
 
 
+def _warn_sparse_keyline(path, kres, n: int) -> None:
+    """A warning on stderr when a discrete keyline of few points (el.SPARSE_POINTS) lies
+    far farther from them than the smooth keyline (KeylineFit.sparse, el.SparseWarning)."""
+    if kres.sparse is None:
+        return
+    print(f"{PROG} fit: warning: {path}: the discrete keyline lies {kres.input_rms:.3g} from "
+          f"the {n} points (rms), where the smooth keyline lies {kres.sparse:.3g} from them: "
+          "use --model smooth for so few points", file=sys.stderr)
+
+
 def _by_file_row(rec: Dict[str, Any], order: np.ndarray) -> None:
     """A record of the file's points fitted in curve order (--order curve: ``order``, their
     file rows in it) put in the file's order: its per-point lists ("distances", "foot_s",
@@ -311,7 +321,9 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
             warnings.simplefilter("ignore", el.ConvergenceWarning)
             warnings.simplefilter("ignore", el.OrderWarning)     # _in_order says it
             warnings.simplefilter("ignore", el.MisfitWarning)    # _misfit says it
+            warnings.simplefilter("ignore", el.SparseWarning)    # _warn_sparse_keyline says it
             kres = el.fit_keyline(pts, r=args.step, **_fit_kwargs(args, fixed))
+        _warn_sparse_keyline(path, kres, len(pts))
         prep = kres.prepared
         plane = _plane_record(prep.frame)
         to_input = prep.to_input

@@ -7,11 +7,12 @@ model's curve 0.031). :func:`cubic_distances` measures the points against that c
 (`elastica fit`'s and the FreeCAD Fit feature's warnings)."""
 from __future__ import annotations
 
+import warnings
 from typing import Optional, Tuple
 
 import numpy as np
 
-__all__ = ["SPARSE_POINTS", "SPARSE_RATIO", "SPARSE_FLOOR", "cubic_distances",
+__all__ = ["SPARSE_POINTS", "SPARSE_RATIO", "SPARSE_FLOOR", "SparseWarning", "cubic_distances",
            "smooth_fits_better"]
 
 # A discrete fit of few points is a polygon of as few segments, which cannot follow a
@@ -24,6 +25,12 @@ __all__ = ["SPARSE_POINTS", "SPARSE_RATIO", "SPARSE_FLOOR", "cubic_distances",
 SPARSE_POINTS = 25
 SPARSE_RATIO = 2.0
 SPARSE_FLOOR = 1e-4
+
+
+class SparseWarning(UserWarning):
+    """:func:`libelastica.fit_keyline`'s warning that a discrete keyline of fewer than
+    SPARSE_POINTS points lies far farther from them than the smooth keyline
+    (:func:`smooth_fits_better`; ``KeylineFit.sparse``): use model="smooth"."""
 
 
 def cubic_distances(result, bspline=None) -> Tuple[np.ndarray, np.ndarray]:
@@ -42,17 +49,25 @@ def cubic_distances(result, bspline=None) -> Tuple[np.ndarray, np.ndarray]:
     return drawn_distances(b, pts, result.foot_s)
 
 
-def smooth_fits_better(points, rms: float, constraints=None) -> Optional[float]:
+def smooth_fits_better(points, rms: float, constraints=None, keyline=None) -> Optional[float]:
     """For a discrete fit of fewer than SPARSE_POINTS ``points`` lying ``rms`` from it
     (the polygon's, or its cubic's): the smooth model's rms on the same points with the
     same ``constraints`` when it is below rms / SPARSE_RATIO and rms - SPARSE_FLOOR x the
-    points' extent, else None (also when the smooth fit fails: no verdict)."""
+    points' extent, else None (also when the smooth fit fails: no verdict). ``keyline``:
+    a discrete keyline's rms (KeylineFit.input_rms), compared with the smooth keyline's,
+    fit_keyline(points, model="smooth", **keyline) (keyline: its r and side)."""
     from .fit import quiet_fit
     pts = np.asarray(points, dtype=float)
     if len(pts) >= SPARSE_POINTS:
         return None
     try:
-        smooth = quiet_fit(pts, model="smooth", constraints=constraints or None).rms
+        if keyline is None:
+            smooth = quiet_fit(pts, model="smooth", constraints=constraints or None).rms
+        else:
+            from .keyline import fit_keyline
+            with warnings.catch_warnings():   # its verdict only
+                warnings.simplefilter("ignore")
+                smooth = fit_keyline(pts, model="smooth", **keyline).input_rms
     except (ValueError, ArithmeticError, RuntimeError):
         return None
     extent = float(np.ptp(pts, axis=0).max())

@@ -14,6 +14,7 @@ import numpy as np
 from ._ffi import (DomainError, as_int, as_positive, as_real, as_real_array, check, dptr, ffi,
                    lib)
 from ._interrupt import call
+from .cubic import SPARSE_POINTS, SparseWarning, smooth_fits_better
 from .fit import (_MODE_NAMES, ConvergenceWarning, FitResult, OrderWarning, _make_curve,
                   quiet_fit)
 from .misfit import MisfitWarning, misfit, misfit_summary
@@ -55,6 +56,9 @@ class KeylineFit:
     # the input points far farther from the keyline than their own noise: not one keyline
     # (libelastica.misfit.Misfit; its corner an index into the input points), else None
     misfit: Optional[object] = None
+    # a discrete keyline of fewer than SPARSE_POINTS points far farther from them than the
+    # smooth keyline: the smooth keyline's input_rms (SparseWarning), else None
+    sparse: Optional[float] = None
 
     @property
     def input_rms(self) -> float:
@@ -227,14 +231,17 @@ def fit_keyline(points, r: Optional[float] = None, model: str = "discrete", side
     data: smooth, the points themselves (in x''y'') are fitted by orthogonal distance,
     each point on either side; discrete, the polygon's vertex i pairs with vertex i of
     its side and the split vertex moves while the fit improves; h is free on both sides
-    (§5.4, Table 1) or held with ``fixed={"h": r}``. ``max_iter``, ``tol`` apply.
+    (§5.4, Table 1) or held with ``fixed={"h": r}``. ``model``: "discrete" (default) or
+    "smooth", as above. ``max_iter``, ``tol`` apply.
     The result's B-spline, joint and ends are in the input's coordinates, its sides'
     FitResults in the PCA frame x''y'' (:class:`KeylineFit`).
     Raises DomainError when the points show no inflection: none found, or one of their
     noise (the joint within MIN_SIDE points of an end, or two elasticae fitting the
     polygon less than twice as well as one turning one way: _check_keyline_split). Warns
     (MisfitWarning, ``misfit``) where the points lie far farther from the keyline than their
-    own noise (:func:`libelastica.misfit.misfit`: a corner, which no G2 joint fits)."""
+    own noise (:func:`libelastica.misfit.misfit`: a corner, which no G2 joint fits), and
+    (SparseWarning, ``sparse``) where a discrete keyline of fewer than SPARSE_POINTS points
+    lies far farther from them than the smooth keyline (:func:`smooth_fits_better`)."""
     from .prep import prepare_keyline
     if model not in ("discrete", "smooth"):
         raise ValueError(f"fit_keyline: model must be 'discrete' or 'smooth', got {model!r}")
@@ -299,13 +306,22 @@ def fit_keyline(points, r: Optional[float] = None, model: str = "discrete", side
     if m is not None:
         said = misfit_summary(m, what="one keyline (its joint is an inflection, G2)")
         warnings.warn(f"fit_keyline: {said}", MisfitWarning, stacklevel=2)
+    sparse = None
+    if model == "discrete":   # a polygon resampled from few points cuts their bends (QA17 W4)
+        rms = float(np.sqrt(np.mean(inputs ** 2)))
+        sparse = smooth_fits_better(pts, rms, keyline={"r": r, "side": side})
+        if sparse is not None:
+            warnings.warn(f"fit_keyline: the discrete keyline lies {rms:.3g} from the {len(pts)} "
+                          f"points (rms), the smooth keyline {sparse:.3g}: fewer than "
+                          f"{SPARSE_POINTS} points resample to a polygon that cuts their bends; "
+                          "use model='smooth'", SparseWarning, stacklevel=2)
     if st != lib.EL_OK:     # as fit's (QA: both sides at status 6, silently); not before a refusal
         warnings.warn(f"fit_keyline: not converged: {ffi.string(lib.el_strerror(st)).decode()} "
                       f"(status {st})", ConvergenceWarning, stacklevel=2)
     return KeylineFit(prepared=prep, inflection=infl, first=fits[0], second=fits[1],
                       inflection_estimate=i0, joint=prep.to_input(J), input_distances=inputs,
                       ends=None if ends is None else prep.to_input(ends), joint_local=J,
-                      ends_local=ends, misfit=m)
+                      ends_local=ends, misfit=m, sparse=sparse)
 
 
 def _keyline_tails(halves, end_points):

@@ -5,6 +5,7 @@ few points that the smooth model fits far better draw a warning naming --model s
 from __future__ import annotations
 
 import json
+import warnings
 
 import numpy as np
 import pytest
@@ -105,3 +106,34 @@ def test_cli_keyline_states_the_bsplines_distances(capsys, tmp_path):
     # not the keyline's polygon figures (those of the "keyline rms" line)
     assert doc["bspline_rms"] != doc["sides"][0]["input_rms"]
     assert f"the file's points lie rms {doc['bspline_rms']:.6g}" in r.stdout
+
+
+def s_sketch(n):
+    """QA17 W4's sketch (b1_keyline_sparse.py, b1_s8.csv): n points on an S, noise 0.3."""
+    c = el.SmoothElastica(x0=0.0, y0=0.0, phi=-1.028, mu=(1.0 / 105.0) ** 2, k=0.65, q=0.25,
+                          length=330.0)
+    return c.points(np.linspace(0, c.length, n)) + np.random.default_rng(n).normal(0, 0.3, (n, 2))
+
+
+def test_sparse_discrete_keyline_warns_as_the_one_piece_fit(capsys, tmp_path):
+    """QA17 W4: a discrete keyline of 8 points on an S lay rms 1.457 from them (the smooth
+    keyline 0.042) without a word, where the one-piece fit's CLI warns: fit_keyline warns
+    (SparseWarning, KeylineFit.sparse the smooth keyline's rms), `elastica fit --keyline`
+    says it on stderr; the smooth keyline, and 24 points (1.1 x), draw none."""
+    P = s_sketch(8)
+    smooth = el.fit_keyline(P, model="smooth")
+    with pytest.warns(el.SparseWarning, match="use model='smooth'"):
+        kf = el.fit_keyline(P)
+    assert kf.input_rms > 10 * smooth.input_rms and kf.sparse == smooth.input_rms
+    assert smooth.sparse is None
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", el.SparseWarning)
+        assert el.fit_keyline(s_sketch(24)).sparse is None
+    path = tmp_path / "s8.csv"
+    np.savetxt(path, P, delimiter=",", header="x,y", comments="")
+    r = cli(capsys, "fit", path, "--keyline")
+    assert r.returncode == 0 and "SparseWarning" not in r.stderr
+    assert (f"the discrete keyline lies {kf.input_rms:.3g} from the 8 points (rms), where the "
+            f"smooth keyline lies {smooth.input_rms:.3g} from them: use --model smooth") in r.stderr
+    r = cli(capsys, "fit", path, "--keyline", "--model", "smooth")
+    assert r.returncode == 0 and "warning" not in r.stderr

@@ -265,6 +265,7 @@ def _keyline(xy, model, step):
         simplefilter("ignore", el().ConvergenceWarning)
         simplefilter("ignore", el().OrderWarning)    # ordered by fit_core (file_order, curve_order)
         simplefilter("ignore", el().MisfitWarning)   # fit_core's _misfit says it
+        simplefilter("ignore", el().SparseWarning)   # fit_core's _coarse_keyline says it
         kf = el().fit_keyline(xy, r=step, model=model)
     first, second = kf.first, kf.second
     to_plane = kf.to_input                           # the sides' results live in x''y''
@@ -292,6 +293,18 @@ def _coarse_polygon(xy, constraints, rms):
             f"its cubic {figure_mark(rms, 3)} from them (rms), where the smooth model's curve lies "
             f"{figure_mark(smooth, 3)} "
             "from them: choose Model Smooth elastica for so few points"]
+
+
+def _coarse_keyline(xy, step, rms):
+    """The warning for a discrete keyline of fewer than el.SPARSE_POINTS points whose cubic
+    lies rms from them where the smooth keyline lies far nearer (el.smooth_fits_better,
+    el.SparseWarning's verdict), else none."""
+    smooth = el().smooth_fits_better(xy, rms, keyline={"r": step})
+    if smooth is None:
+        return []
+    return [f"the discrete keyline of {len(xy)} points lies {figure_mark(rms, 3)} from them "
+            f"(rms), where the smooth keyline lies {figure_mark(smooth, 3)} from them: their "
+            "resampled polygon cuts their bends; choose Model Smooth elastica for so few points"]
 
 
 def _far_points(data, dist, plane, free=None):
@@ -443,6 +456,8 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         # and in 3D: the curve lies in the plane, so a point's distance from the plane adds
         # to its distance in it (a scan off its plane fits 0.02 mm in it, 0.45 mm in 3D)
         plane_rms = _rms(dist)
+        if model == "discrete" and split:   # the user's points to the keyline drawn
+            warnings = warnings + _coarse_keyline(xy, step if step > 0 else None, plane_rms)
         # judged by the library's fit of the points it fitted (a resampled polygon's: the
         # drawn curve's distances to the points carry the step's cost, said apart), without
         # end conditions (their cost is said apart: the free fit); a keyline's by the points'
