@@ -155,9 +155,14 @@ def as_real_array(a, name: str = "values") -> np.ndarray:
     nested lists of them, and object arrays of real numbers (Fraction, Decimal).
     Refused with ValueError: complex (the imaginary part would be dropped),
     datetime/timedelta, float16 (3 significant digits), booleans, strings,
-    None and other objects."""
+    None and other objects, and masked arrays with a masked value (numpy's asarray
+    keeps the masked data: the mask would be ignored)."""
     if isinstance(a, np.ndarray):
         arr = a
+        if np.ma.is_masked(a):   # (asarray would keep the masked values)
+            raise ValueError(f"{name} is a masked array with masked values (the mask would be "
+                             "ignored): drop them first, e.g. np.ma.compress_rows(P) for points, "
+                             "a.compressed() for a 1-D array")
     else:
         try:
             arr = np.asarray(a)

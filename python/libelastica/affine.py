@@ -390,9 +390,10 @@ def affine_polyline(curve_or_points, n: int, samples_per_vertex: int = 20,
                                          max_iter, skip_frac, fit_ends, optimise)
         j = np.clip(np.floor(t).astype(int), 0, len(s_samp) - 2)
         s = s_samp[j] + (t - j) * (s_samp[j + 1] - s_samp[j])
-        for _ in range(3):   # project the vertices onto the elastica (Newton on the foot point)
-            th = c.angle(s)
-            s = s + np.einsum("ij,ij->i", pts - c.points(s), np.c_[np.cos(th), np.sin(th)])
+        for _ in range(3):   # project the vertices onto the elastica (Newton on the foot
+            th = c.angle(s, extrapolate=True)   # point; the last may lie past its end)
+            s = s + np.einsum("ij,ij->i", pts - c.points(s, extrapolate=True),
+                              np.c_[np.cos(th), np.sin(th)])
         return AffinePolyline(pts, t, s, ps, A, psi, ip, S)
     samples = as_points(curve_or_points, "points")
     if len(samples) < 4:

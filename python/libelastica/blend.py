@@ -29,7 +29,7 @@ import numpy as np
 
 from ._ffi import (DomainError, NotConvergedError, SingularError, as_points, as_positive, as_real,
                    as_vector,
-                   bspline_from_c, check, dptr, ffi, lib, require)
+                   bspline_from_c, check, dptr, ffi, lib, require, shown)
 from ._text import LengthFormat, lengths
 from .shape import crossing_pairs, self_crossings
 from .spline import LoopWarning
@@ -302,6 +302,10 @@ class EllipticBlend(_Blend):
             k = np.sqrt(m)
         k = as_real(k, "EllipticBlend: k")
         require(k >= 0, "EllipticBlend: k", ">= 0 (the modulus; m = k^2)", k)
+        if k >= 1.0:   # (el_blend_init_elliptic's EL_EDOM: K(k) is infinite at k = 1)
+            given = f"m = {shown(m)}" if m is not None else f"k = {shown(k)}"
+            raise DomainError(lib.EL_EDOM, f"EllipticBlend: {given}: the elliptic basis needs "
+                              "0 <= k < 1 (m = k^2 < 1)")
         self._b = ffi.new("el_blend_basis *")
         st = lib.el_blend_init_elliptic(self._b, k, as_positive(d, "EllipticBlend: d"))
         if st == lib.EL_ESINGULAR:
@@ -569,7 +573,9 @@ def blend_curve(points, k: Optional[float] = None, d: float = 2.0, mode: str = "
     more than four, points with ``mode="interpolate"``: the C1 composite through them
     (3 points: 2 segments; fewer than 3 raise ValueError)
     (:meth:`EllipticBlend.composite_through`); with ``mode="control"`` they must be
-    3*nseg + 1 control points. ``k`` is the modulus (default 0.5) or ``m = k^2``.
+    3*nseg + 1 control points. ``k`` is the modulus, 0 <= k < 1 (default 0.5), or
+    ``m = k^2``. ``d`` > 0: the basis's end-derivative parameter (default 2.0,
+    :class:`EllipticBlend`).
     ``closed=True`` (interpolate): the closed C1 composite through the points (>= 3
     distinct; a repeated first point at the end is dropped), smooth at the seam too.
     Without it, points that end where they start close with a corner, which

@@ -7,7 +7,7 @@ from typing import Optional
 
 import numpy as np
 
-from ._ffi import as_real, as_size, as_vector, check, dptr, ffi, lib, require
+from ._ffi import as_int, as_real, as_size, as_vector, check, dptr, ffi, invalid, lib, require
 from .shape import ShapeDescriptors
 
 SMOOTH_PARAMS = ("x0", "y0", "phi", "mu", "k", "q", "length")
@@ -68,13 +68,14 @@ class SmoothElastica(ShapeDescriptors):
         """The parameter vector (x0, y0, phi, mu, k, q, length) of the Jacobian."""
         return np.array([getattr(self, n) for n in SMOOTH_PARAMS])
 
-    def _s(self, s) -> np.ndarray:
-        if s is None:
-            return np.linspace(0.0, self.length, 101)
-        return as_vector(s, "SmoothElastica: s", finite=True)
+    def _eval(self, s, what: str, extrapolate: bool = False) -> np.ndarray:
+        s, scalar = arc_lengths(101 if s is None else s, self.length, "SmoothElastica",
+                                extrapolate)
+        out = self._at(s, what)
+        return out[0] if scalar else out
 
-    def _eval(self, s, what: str) -> np.ndarray:
-        s = self._s(s)
+    def _at(self, s: np.ndarray, what: str) -> np.ndarray:
+        """Values at the float64 arc lengths ``s`` as given (a chain's pieces: chain_eval)."""
         shape = (len(s), 2) if what == "xy" else (len(s),)
         out = np.empty(shape)
         args = {"xy": ffi.NULL, "theta": ffi.NULL, "kappa": ffi.NULL}
@@ -83,17 +84,22 @@ class SmoothElastica(ShapeDescriptors):
                                  args["kappa"]), "SmoothElastica")
         return out
 
-    def points(self, s=None) -> np.ndarray:
-        """Points gamma(s), shape (n, 2), at arc lengths s (default: 101 samples of [0, length])."""
-        return self._eval(s, "xy")
+    def points(self, s=None, extrapolate: bool = False) -> np.ndarray:
+        """Points gamma(s), shape (n, 2), at arc lengths s in [0, length] (floats, an array;
+        a float or 0-d array gives shape (2,)); an int n: n equally spaced over [0, length]
+        (default 101). s outside [0, length]: ValueError (:func:`arc_lengths`), unless
+        ``extrapolate``: the elastica (4.3) continued past its ends (a foot point's Newton
+        step may need it)."""
+        return self._eval(s, "xy", extrapolate)
 
-    def angle(self, s=None) -> np.ndarray:
-        """Tangent angle theta(s) (radians, continuous in s)."""
-        return self._eval(s, "theta")
+    def angle(self, s=None, extrapolate: bool = False) -> np.ndarray:
+        """Tangent angle theta(s) (radians, continuous in s); s as :meth:`points` takes it."""
+        return self._eval(s, "theta", extrapolate)
 
-    def curvature(self, s=None) -> np.ndarray:
-        """Signed curvature kappa(s) (positive = turning counter-clockwise)."""
-        return self._eval(s, "kappa")
+    def curvature(self, s=None, extrapolate: bool = False) -> np.ndarray:
+        """Signed curvature kappa(s) (positive = turning counter-clockwise); s as
+        :meth:`points` takes it."""
+        return self._eval(s, "kappa", extrapolate)
 
     def energy(self) -> float:
         """Bending energy: the integral of kappa^2 over [0, length]."""
@@ -103,12 +109,13 @@ class SmoothElastica(ShapeDescriptors):
 
     def jacobian(self, s=None) -> np.ndarray:
         """d gamma(s_i) / d p, shape (n, 2, 7), p = (x0, y0, phi, mu, k, q, length); the length
-        column holds s/length fixed (d/dL gamma(t L) = t T)."""
-        s = self._s(s)
+        column holds s/length fixed (d/dL gamma(t L) = t T); s as :meth:`points` takes it
+        (a float: shape (2, 7))."""
+        s, scalar = arc_lengths(101 if s is None else s, self.length, "SmoothElastica")
         jac = np.empty((len(s), 2, 7))
         check(lib.el_smooth_jacobian(self._c(), len(s), dptr(s), ffi.NULL, dptr(jac)),
               "SmoothElastica.jacobian")
-        return jac
+        return jac[0] if scalar else jac
 
     def reversed(self) -> "SmoothElastica":
         """The same segment run backwards (el_smooth_reverse): it starts at this one's end
@@ -125,9 +132,32 @@ class SmoothElastica(ShapeDescriptors):
         return smooth_to_bspline(self, tol, degree)
 
 
+def arc_lengths(where, length: float, cls: str, extrapolate: bool = False):
+    """(s, scalar): the arc lengths a curve's points/angle/curvature(where) evaluate at,
+    one rule for every curve of arc length [0, length]: an int n (Python or numpy
+    integer) is a count, n >= 2 equally spaced; a float or an array (0-d included) holds
+    arc lengths, each within [0, length] (1e-12 length of rounding allowed), else
+    ValueError naming the range (``extrapolate``: any finite s, the elastica continued past
+    its ends); scalar: a float or 0-d array (numpy's shapes: (2,), ())."""
+    if isinstance(where, (int, np.integer)) and not isinstance(where, (bool, np.bool_)):
+        n = as_int(where, f"{cls}: the number of points n", 2, None)
+        return np.linspace(0.0, length, n), False
+    scalar = type(where) is float or np.ndim(where) == 0
+    s = as_vector(where, f"{cls}: s", finite=True)
+    slack = 1e-12 * length   # (the rounding of a computed length)
+    if not extrapolate and len(s) and (s.min() < -slack or s.max() > length + slack):
+        i = int(np.argmax((s < -slack) | (s > length + slack)))
+        raise invalid(f"{cls}: arc length {'s' if scalar else f's[{i}]'} = {float(s[i])!r} is "
+                      f"outside the curve, [0, {length!r}] (an int n asks for n points)")
+    return s, scalar
+
+
 def chain_starts(pieces) -> np.ndarray:
     """The arc length at which each piece of a chain starts, then the chain's length."""
     return np.concatenate([[0.0], np.cumsum([p.length for p in pieces])])
+
+
+_WHAT = {"points": "xy", "angle": "theta", "curvature": "kappa"}
 
 
 def chain_eval(pieces, starts, s, what: str, offsets=None, clip: bool = False) -> np.ndarray:
@@ -143,7 +173,7 @@ def chain_eval(pieces, starts, s, what: str, offsets=None, clip: bool = False) -
         local = s[sel] - starts[i]
         if clip:
             local = np.clip(local, 0.0, pieces[i].length)
-        out[sel] = getattr(pieces[i], what)(local)
+        out[sel] = pieces[i]._at(local, _WHAT[what])
         if offsets is not None:
             out[sel] += offsets[i]
     return out

@@ -494,7 +494,10 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     ``points``, ``distances`` and ``foot_s`` in it, ``FitResult.order`` its indices).
     max_candidates: initial
     guesses fitted at most (default 6; fitting stops at the first that reaches the
-    data's noise level).
+    data's noise level). max_iter: Ipopt iterations per initial guess (default 200).
+    tol: Ipopt's tol on the normalised problem (default 1e-12). limited_memory: True runs
+    the paper's setting, Ipopt with its L-BFGS Hessian (for comparison; the default,
+    False, is the library's exact-Hessian path; README: "limited_memory=True").
     constraints: any of ``{"start_point": (x, y), "end_point": (x, y),
     "start_tangent": angle, "end_tangent": angle, "start_curvature": kappa,
     "end_curvature": kappa, "length": (lo, hi), "k": (lo, hi)}`` (angles in radians,
@@ -526,7 +529,12 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     """
     if not isinstance(model, str) or model not in ("discrete", "smooth"):
         raise ValueError(f"fit: model must be 'discrete' or 'smooth', got {model!r}")
-    pts = as_points(points, "points", 2)
+    pts = as_real_array(points, "points")
+    if pts.ndim == 2 and pts.shape[1] == 3:   # what the CLI and FreeCAD do with 3D points
+        raise ValueError(f"fit: points must have shape (n, 2), got {pts.shape}: 3D points are "
+                         "fitted in their plane, xy, frame = el.plane_fit(points), then "
+                         "el.fit(xy) (frame.to_3d maps back), or el.fit_keyline(points)")
+    pts = as_points(pts, "points", 2)
     n = pts.shape[0]
     if n < 4:
         raise ValueError(f"fit: need at least 4 points, got {n}")

@@ -13,7 +13,7 @@ from typing import Optional, Tuple
 
 import numpy as np
 
-from ._ffi import DomainError, as_points
+from ._ffi import DomainError, as_points, as_size
 from .affine import (AffinePolyline, affine_polyline, elastica_inflections, g2_bspline,
                      quadratic_joint_curvatures)
 
@@ -384,6 +384,7 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
     k = 1.5 loop at 12 edges); the curvature then departs up to ~10 % from an arc's just
     inside the ends (7.4 % with the curvature alone)."""
     is_curve = hasattr(curve_or_points, "curvature") and hasattr(curve_or_points, "length")
+    n = as_size(n, "g2_quadratic: n (the polyline's edges)", 3)   # the user's call named
     if fit:
         if is_curve or tangents is not None:
             raise ValueError("g2_quadratic: fit=True fits point data (without tangents); "

@@ -12,7 +12,7 @@ import numpy as np
 
 from ._ffi import DomainError, as_int, as_real, as_size, as_vector, check, ffi, lib, require
 from .bspline import smooth_chain_to_bspline
-from .core import SMOOTH_PARAMS, SmoothElastica, chain_eval, chain_starts
+from .core import SMOOTH_PARAMS, SmoothElastica, arc_lengths, chain_eval, chain_starts
 from .shape import ShapeDescriptors
 
 __all__ = ["hermite", "hermite_analyse", "HermiteSolutions", "HermiteChain", "HERMITE_SIGMA_D2_MAX"]
@@ -59,26 +59,26 @@ class HermiteChain(ShapeDescriptors):
         return (f"HermiteChain({len(self.pieces)} pieces, k={self.k:.17g}, mu={self.mu:.6g}, "
                 f"length={self.length:.6g})")
 
-    def _s(self, s) -> np.ndarray:
-        if s is None:
-            return np.linspace(0.0, self.length, 101)
-        return as_vector(s, "s")
+    def _eval(self, s, what: str, extrapolate: bool = False) -> np.ndarray:
+        s, scalar = arc_lengths(101 if s is None else s, self.length, "HermiteChain",
+                                extrapolate)
+        out = chain_eval(self.pieces, self._starts, s, what,
+                         self._turns if what == "angle" else None)
+        return out[0] if scalar else out
 
-    def _eval(self, s, what: str) -> np.ndarray:
-        return chain_eval(self.pieces, self._starts, self._s(s), what,
-                          self._turns if what == "angle" else None)
+    def points(self, s=None, extrapolate: bool = False) -> np.ndarray:
+        """Points at arc lengths s from p0, shape (n, 2), as SmoothElastica.points takes s
+        (an int n: n equally spaced, default 101; a float: shape (2,); within [0, length]
+        unless ``extrapolate``: the end pieces continued)."""
+        return self._eval(s, "points", extrapolate)
 
-    def points(self, s=None) -> np.ndarray:
-        """Points at arc lengths s from p0, shape (n, 2) (default: 101 samples of [0, length])."""
-        return self._eval(s, "points")
-
-    def angle(self, s=None) -> np.ndarray:
+    def angle(self, s=None, extrapolate: bool = False) -> np.ndarray:
         """Tangent angle theta(s) (radians, continuous in s)."""
-        return self._eval(s, "angle")
+        return self._eval(s, "angle", extrapolate)
 
-    def curvature(self, s=None) -> np.ndarray:
+    def curvature(self, s=None, extrapolate: bool = False) -> np.ndarray:
         """Signed curvature kappa(s)."""
-        return self._eval(s, "curvature")
+        return self._eval(s, "curvature", extrapolate)
 
     def energy(self) -> float:
         """Bending energy: the integral of kappa^2 over the whole curve."""
@@ -259,13 +259,21 @@ def hermite(p0, t0, p1, t1, tension: Optional[float] = None,
 
     Give exactly one of ``tension`` (sigma, 1/length^2; any real, negative is
     compression) or ``length`` (the arc length; sigma is then computed).
+    ``tol``: the accepted end residual (position / |p1 - p0| and tangent angle, rad;
+    default 1e-10). ``samples``: bracketing samples over the whole search interval
+    (4..1000, default 12; more finds close pairs of solutions). ``grid``: length mode's
+    tension lines whose solutions start the tracing (1..256, default 6).
+    ``max_solutions``: at most this many solutions are kept, the lowest energy first
+    (>= 1, default 64). (el_hermite_options, elastica.h.)
 
     Returns a :class:`HermiteSolutions` list of :class:`SmoothElastica` (near the
     separatrix, where no single one meets ``tol``, a :class:`HermiteChain` of two or
     three pieces of the same elastica, evaluated the same way); each carries extra
     attributes:
 
-    - ``sigma``: the tension; ``energy_value``: integral of kappa^2 ds;
+    - ``sigma``: the tension; ``energy_value``: integral of kappa^2 ds as the solve
+      computed it (the list's order; ``energy()``, every curve's method, integrates the
+      same again: use it for any curve, ``energy_value`` to read the solve's figure);
     - ``has_inflection``: whether the curvature changes sign;
     - ``kappa0``, ``kappa1``: curvature at p0 and p1; ``residual``: end error;
     - ``length``, and to pick the fair one (the order is by energy, and the least

@@ -14,7 +14,7 @@ import numpy as np
 from ._ffi import (DomainError, LengthRangeError, NotConvergedError, as_int, as_points, as_real,
                    as_vector, check, dptr, ffi, lib)
 from .bspline import smooth_chain_to_bspline
-from .core import SMOOTH_PARAMS, SmoothElastica, chain_eval, chain_starts
+from .core import SMOOTH_PARAMS, SmoothElastica, arc_lengths, chain_eval, chain_starts
 
 __all__ = ["DoublesBackError", "ElasticSpline", "LoopWarning", "back_steps", "elastic_spline"]
 
@@ -107,30 +107,18 @@ class ElasticSpline:
             raise ValueError(f"ElasticSpline: n must be >= 2, got {n}")
         return np.linspace(0.0, self.length, int(n))
 
-    def _at(self, where) -> np.ndarray:
-        """The arc lengths ``where`` names: a count n (a scalar) as :meth:`arclengths`, or
-        arc lengths along the spline (1-D, from point 0, within [0, length])."""
-        if np.ndim(where) == 0:
-            if isinstance(where, (float, np.floating)) and not float(where).is_integer():
-                raise TypeError(f"ElasticSpline: a scalar is the number of points (n >= 2), got "
-                                f"{where!r}; for arc lengths along the spline pass an array "
-                                "(e.g. [s]), as SmoothElastica.points(s) takes")
-            return self.arclengths(where)
-        s = as_vector(where, "ElasticSpline: s", finite=True)
-        slack = 1e-12 * self.length   # rounding of a computed length
-        bad = np.flatnonzero((s < -slack) | (s > self.length + slack))
-        if len(bad):
-            raise ValueError(f"ElasticSpline: arc length s[{bad[0]}] = {float(s[bad[0]])!r} "
-                             f"is outside the spline, [0, {self.length!r}]")
-        return np.clip(s, 0.0, self.length)
-
     def _eval(self, where, what: str) -> np.ndarray:
-        return chain_eval(self.pieces, self._starts, self._at(where), what, clip=True)
+        """At ``where`` by :func:`core.arc_lengths`'s rule: an int n equally spaced, or arc
+        lengths (floats, arrays) along the spline from point 0, within [0, length]."""
+        s, scalar = arc_lengths(where, self.length, "ElasticSpline")
+        out = chain_eval(self.pieces, self._starts, np.clip(s, 0.0, self.length), what,
+                         clip=True)
+        return out[0] if scalar else out
 
     def points(self, n=200) -> np.ndarray:
-        """(n, 2) points at n arc lengths equally spaced over the whole spline; or, given
-        an array of arc lengths s along the spline (from point 0, in [0, length]), the
-        points there (as SmoothElastica.points(s))."""
+        """(n, 2) points at n (an int) arc lengths equally spaced over the whole spline; or,
+        given arc lengths s along the spline (floats, an array; from point 0, in [0, length]),
+        the points there, as SmoothElastica.points(s) (a float: shape (2,))."""
         return self._eval(n, "points")
 
     def curvature(self, n=200) -> np.ndarray:
@@ -148,6 +136,8 @@ class ElasticSpline:
         drawn); ``scale`` defaults to 15 % of the extent over the largest curvature."""
         if scale is not None:
             scale = as_real(scale, "ElasticSpline.comb: scale")
+        if np.ndim(n) == 0 and not isinstance(n, (int, np.integer)):   # one arc length
+            return self.comb(np.reshape(n, 1), scale)[0]
         xy, k, th = self.points(n), self.curvature(n), self.angle(n)
         if scale is None:
             ext = float(np.ptp(xy, axis=0).max())
@@ -290,6 +280,18 @@ def _digits_apart(x, *others):
     return 12
 
 
+def _coinciding_text(pts: np.ndarray) -> str:
+    """'; points 1 and 3 coincide ...' for points that are not neighbours yet equal (the
+    neighbours' are refused), named where no spline is found (QA17 P3); else ''."""
+    _, first, inverse = np.unique(pts, axis=0, return_index=True, return_inverse=True)
+    twice = np.flatnonzero(first[inverse.ravel()] != np.arange(len(pts)))
+    if not len(twice):
+        return ""
+    pairs = [f"{first[inverse.ravel()[j]]} and {j}" for j in twice[:3]]
+    return (f"; points {', '.join(pairs)}{' and more' if len(twice) > 3 else ''} coincide "
+            "(counted from 0): a batten through one place twice must cross itself there")
+
+
 def elastic_spline(points, tension: Optional[float] = None, length: Optional[float] = None,
                    start=None, end=None, closed: bool = False, *, tol: float = 1e-10,
                    max_iter: int = 60, max_steps: int = 60, initial=None) -> ElasticSpline:
@@ -316,6 +318,12 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
     start, n - 1 SmoothElastica through the points with these ends (G2 ends only
     tangent), e.g. the ``el.hermite`` solution a G2 blend between two edges should
     follow: the solve keeps that branch (Newton from it, no other start tried).
+
+    ``tol``: the accepted end-condition residual (1e-14..1e-3, default 1e-10; see
+    ``ElasticSpline.residual``). ``max_iter``: Newton iterations per solve (1..1000,
+    default 60); ``max_steps``: continuation steps of each family followed (1..1000,
+    default 60): raise them where a solve stops short (NotConvergedError).
+    (el_spline_options, elastica.h.)
 
     Raises ``ValueError`` for bad input (coincident consecutive points, NaN, ``start`` /
     ``end`` given with ``closed=True``: a closed curve has no ends, ...),
@@ -421,6 +429,7 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
             f"under {BACK_STEP:g} of the points' extent) from point {_back_step_text(places, n)} "
             "(counted from 0), where a batten must turn back and forth: for scan points, fair them "
             "(el.fit, `elastica fit`) or thin them") if places else ""
+    hint += _coinciding_text(pts)
     res = ffi.new("el_spline_result *")
     st = lib.el_spline_solve(dptr(pts), n, opt, res)
     try:

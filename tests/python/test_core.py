@@ -54,7 +54,7 @@ def test_smooth_geometry_from_python():
     assert abs(theta[0] - (c.phi + 2 * math.asin(c.k * 0.0))) < 1e-15
     energy = np.sum((kappa[1:] ** 2 + kappa[:-1] ** 2) / 2 * np.diff(s))
     assert abs(c.energy() - energy) < 1e-5 * energy
-    assert c.points(2.5).shape == (1, 2)              # scalars are accepted
+    assert c.points(2.5).shape == (2,)                # a scalar s: one point (QA17 W3)
     assert c.points().shape == (101, 2)               # default sampling of [0, length]
 
 

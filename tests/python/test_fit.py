@@ -562,7 +562,7 @@ def _ends(c):
     # the vertex tangents theta_j = phi + 2 a(q + j z): the smooth elastica's of the same
     # phi, k, q at u = q + j z (mu = 1: s = j z)
     vt = el.SmoothElastica(x0=0, y0=0, phi=c.phi, mu=1.0, k=c.k, q=c.q, length=1.0)
-    th = vt.angle(np.array([0.0, (c.n - 1) * c.z]))
+    th = vt.angle(np.array([0.0, (c.n - 1) * c.z]), extrapolate=True)   # (the formula at s = j z)
     # curvature at the end vertices of the curve extended by one vertex
     ext = el.DiscreteElastica(x0=0, y0=0, h=c.h, phi=c.phi, z=c.z, q=c.q - c.z, k=c.k, n=c.n + 2)
     kap = ext.curvature()

@@ -198,7 +198,7 @@ def _period_of_curve(c):
     """Period of the curvature of a returned curve, from kappa and kappa' at s = 0
     (finite differences of the evaluated curvature) and its sigma."""
     h = 1e-5 / max(1.0, abs(c.kappa0))
-    k = c.curvature([-h, 0.0, h])
+    k = c.curvature([-h, 0.0, h], extrapolate=True)   # (a central difference at s = 0)
     return _period(k[1], (k[2] - k[0]) / (2 * h), c.sigma)[0]
 
 

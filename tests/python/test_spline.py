@@ -111,8 +111,8 @@ def test_sampling_matches_one_point_evaluation():
 
 def test_points_at_arc_lengths_as_the_smooth_curve():
     """QA16 P2: an array of arc lengths along the spline (as SmoothElastica.points(s) takes)
-    gives the points there; a count still gives equally spaced ones; a scalar that is no
-    count, or s outside [0, length], says what it takes."""
+    gives the points there; a count (an int) still gives equally spaced ones; s outside
+    [0, length] says what it takes."""
     sp = el.elastic_spline(SKETCH, tension=0.5)
     s = np.array([0.0, 0.3, sp.pieces[0].length, 4.2, sp.length])
     starts = np.concatenate([[0.0], np.cumsum([p.length for p in sp.pieces])])
@@ -123,9 +123,8 @@ def test_points_at_arc_lengths_as_the_smooth_curve():
         assert sp.angle(list(s))[i] == t
     assert np.array_equal(sp.points(5), sp.points(sp.arclengths(5)))
     assert sp.comb(s).shape == (5, 2)
-    with pytest.raises(TypeError, match="arc lengths along the spline pass an array"):
-        sp.points(2.5)
-    with pytest.raises(ValueError, match="outside the spline"):
+    assert np.array_equal(sp.points(2.5), sp.points([2.5])[0])   # a float is an arc length
+    with pytest.raises(ValueError, match="outside the curve"):
         sp.points([sp.length * 1.01])
 
 
@@ -718,6 +717,20 @@ def test_walk_by_length_reaches_the_lengths_of_tension_mode():
     for f in (1.05, 1.2, 2.0, 5.0, 12.0, 15.0):
         r = el.elastic_spline(P, length=f * poly)
         assert r.length == pytest.approx(f * poly, rel=1e-9), f
+
+
+def test_coinciding_points_not_neighbours_are_named():
+    """QA17 P3 (cli/dup2.txt): duck 1 = duck 3 gave only "it slides off its ducks", where
+    neighbours that coincide are named; such points are named where no spline is found,
+    and are no refusal: a batten may pass one place twice (crossing itself there)."""
+    P = np.array([[0, 0], [1, 1], [2, 0], [1, 1], [4, 0]], float)
+    with pytest.raises(el.DomainError, match=r"slides off its ducks; points 1 and 3 coincide "
+                                             r"\(counted from 0\)"):
+        el.elastic_spline(P)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", el.LoopWarning)
+        sp = el.elastic_spline(P, tension=1.0)
+    assert np.abs(sp.points(sum(p.length for p in sp.pieces[:3])) - P[3]).max() < 1e-8
 
 
 @pytest.mark.parametrize("radius", [18.0, 20.0, 23.0])

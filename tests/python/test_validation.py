@@ -23,6 +23,8 @@ BAD_ARRAYS = {
     "strings": np.array([["1", "2"]] * 60),
     "objects": np.array([[None, 1.0]] * 60, dtype=object),
     "ragged": [[0.0, 1.0], [2.0]],
+    # a masked point (QA17 W1: np.asarray kept it, fitted as if unmasked)
+    "masked": np.ma.masked_array(ARC, mask=np.isin(np.arange(120).reshape(60, 2), [21])),
 }
 
 POINT_ENTRIES = {
@@ -301,6 +303,11 @@ NAMED = {
         "dkappa must be finite, got nan"),
     "BSpline.curvature degree": (lambda: el.BSpline(**POLE).curvature([0.5]),
                                  "BSpline.curvature: degree must be >= 2, got 1"),
+    # QA17 M2: the user's call and parameter, not affine_polyline's
+    "g2_quadratic n=2": (lambda: el.g2_quadratic(ARC, 2, fit=True),
+                         "g2_quadratic: n (the polyline's edges) must be >= 3, got 2"),
+    "SmoothElastica.points s > length": (lambda: CURVE.points([1.0, 6.0]),
+                                         "arc length s[1] = 6.0 is outside the curve, [0, 5.0]"),
 }
 
 
@@ -334,3 +341,46 @@ def test_tangent_angle_in_degrees_warns():
         # el.fit warns of, rightly: an EndConditionWarning, no word of degrees)
         el.fit(pts, model="smooth", constraints={"start_tangent": -6.0, "end_tangent": 0.5},
                check_ends=False)
+
+
+def test_masked_points_are_refused_naming_the_fix():
+    """QA17 W1: el.fit(np.ma.masked_array) fitted the masked glitch point (rms 4.51 where
+    0.148 without it): a masked value is refused, naming np.ma.compress_rows; a masked
+    array with nothing masked is its data."""
+    P = el.SmoothElastica(k=0.6, q=-1.2, length=8.0).points(np.linspace(0, 8.0, 40))
+    glitch = P.copy()
+    glitch[10] = [1e3, -1e3]
+    mask = np.zeros(P.shape, bool)
+    mask[10] = True
+    masked = np.ma.masked_array(glitch, mask=mask)
+    for call in (lambda a: el.fit(a, model="smooth"), lambda a: el.fit_keyline(a),
+                 lambda a: el.elastic_spline(a[::5], tension=1.0)):
+        with pytest.raises(ValueError, match=r"masked array .*np\.ma\.compress_rows"):
+            call(masked)
+    with pytest.raises(ValueError, match="masked"):
+        CURVE.points(np.ma.masked_array([1.0, 2.0], mask=[False, True]))
+    kept = el.fit(np.ma.compress_rows(masked), model="smooth")
+    assert kept.rms < 1e-6
+    nothing = np.ma.masked_array(P, mask=np.zeros(P.shape, bool))
+    assert el.fit(nothing, model="smooth").rms == el.fit(P, model="smooth").rms
+
+
+def test_elliptic_modulus_one_is_named():
+    """QA17 M2: k = 1.0 said "input outside the domain the method covers"."""
+    for call, said in ((lambda: el.blend_curve([(0, 0), (1, 1), (2, 0), (3, 1)], k=1.0), "k = 1"),
+                       (lambda: el.EllipticBlend(m=1.2), "m = 1.2")):
+        with pytest.raises(el.DomainError, match=f"EllipticBlend: {said}: the elliptic basis "
+                                                 r"needs 0 <= k < 1"):
+            call()
+
+
+def test_3d_points_to_fit_name_the_plane_fit():
+    """QA17 P1: el.fit of (n, 3) points said only "must have shape (n, 2)"; the way the CLI
+    and FreeCAD fit them (in their plane) is named, and works as named."""
+    xyz = np.c_[ARC, 0.5 * ARC[:, 0] + 2.0]
+    with pytest.raises(ValueError, match=r"shape \(n, 2\), got \(60, 3\): .*el\.plane_fit"
+                                         r"\(points\).*el\.fit_keyline"):
+        el.fit(xyz)
+    xy, frame = el.plane_fit(xyz)
+    r = el.fit(xy, model="smooth")
+    assert r.rms < 1e-3 and np.allclose(frame.to_3d(xy), xyz, atol=1e-12)
