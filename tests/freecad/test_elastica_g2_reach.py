@@ -66,3 +66,27 @@ class G2ReachTest(S.DocTest):
         b.Tension = float(found.group(1))    # the tension said solves
         self.doc.recompute()
         self.assertEqual(b.State, ["Up-to-date"], b.Status)
+
+    def test_g2_by_length_that_fails_names_lengths_that_solve(self):
+        """QA17 M1: line into an arc 75 mm apart (the command's 113 mm, G1) switched to G2:
+        "no G2 blend of length 113 mm ...; pick another tension or length, or G1", and the
+        designer guessed (80 .. 130 mm fail; the family followed folds at 135.5 mm by an
+        independent shooting solve). Now it names the lengths at which G2 blends were found,
+        and each of them, typed back, solves."""
+        sk = S.line_and_arc_sketch(self.doc)
+        b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Mode="length", Length=113,
+                    Continuity="G2")
+        self.doc.recompute()
+        self.assertIn("Invalid", b.State, b.Status)
+        self.assertTrue(b.Status.startswith("error: no G2 blend of length 113 mm"), b.Status)
+        found = re.search(r"G2 blends were found at the lengths ([0-9., mm]+) \(tried: 1.25 to "
+                          "10 \u00d7 the 75 mm between the ends\\): try one of those, or G1",
+                          b.Status)
+        self.assertIsNotNone(found, b.Status)
+        lengths = [float(t) for t in re.findall(r"([0-9.]+) mm", found.group(1))]
+        self.assertGreaterEqual(len(lengths), 2, b.Status)
+        for length in (lengths[0], lengths[-1]):
+            b.Length = length
+            self.doc.recompute()
+            self.assertEqual(b.State, ["Up-to-date"], (length, b.Status))
+            self.assertAlmostEqual(b.BlendLength, length, delta=1e-9 * length)

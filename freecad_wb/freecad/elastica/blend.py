@@ -266,7 +266,8 @@ def g2_blend(r, i, mode, value, tol, degree):
                     if "length" in kw else
                     "the free G2 batten (tension 0) exists: try a lower tension, or G1")
         except (ValueError, ArithmeticError, RuntimeError):
-            pass
+            if "length" in kw:   # QA17 M1: which lengths do give one, not a guess
+                hint = g2_lengths_hint(pts, ends, dist)
         reach = g2_tension_reach(pts, ends) if "tension" in kw else None
         if reach is not None and reach > kw.get("tension", 0.0):
             # below the reach the solver's paths missed one: QA16's arc of radius 18-23 mm
@@ -296,12 +297,42 @@ def g2_blend(r, i, mode, value, tol, degree):
 
 
 # Lengths (times the distance between the ends) the G2 batten is solved for when none is
-# found at the tension asked: the highest tension among them is said. Along a G2 batten's
+# found at the tension asked (the highest tension among them is said) or at the length
+# asked (those that solved, to 3 digits, are said). Along a G2 batten's
 # family the guides do work (d(int kappa^2 + sigma L)/d sigma = L + sum f . dg/d sigma), so
 # pulling need not shorten it: walls 100 mm apart (curvature 0, tangents normal to the line
 # between the ends) rise and lengthen, 231 mm at 0.0005/mm^2, 397 mm at 0.0023; by length
 # 3 x: 0.00185, 4 x: 0.00231, 6 x: 0.00242/mm^2, 10 x: none (QA9 w5).
 G2_REACH_MULTIPLES = (1.25, 1.5, 2.0, 2.5, 3.0, 4.0, 6.0, 10.0)
+
+
+def g2_by_length(pts, ends, lengths):
+    """[(length, tension)] of the G2 battens between the two points ``pts`` with ``ends``
+    (el.elastic_spline's start/end) solved by each of ``lengths`` (mm), as a blend with no
+    previous solution is; those not solved left out."""
+    e, found = el(), []
+    for length in lengths:
+        try:
+            found.append((length, float(e.elastic_spline(pts, **ends, length=length).tension)))
+        except (ValueError, ArithmeticError, RuntimeError):
+            continue
+    return found
+
+
+def g2_lengths_hint(pts, ends, dist):
+    """What a G2 blend by length that failed (and no free G2 batten) says to try: the
+    lengths of G2_REACH_MULTIPLES times ``dist`` (3 digits: typed back, each solves) at
+    which one was found. QA17 M1 (line into an arc 75 mm apart): none at 80 .. 130 mm, the
+    family followed folds at 135.5 mm (an independent shooting solve); 150 .. 300 found."""
+    lengths = [float(f"{m * dist:.3g}") for m in G2_REACH_MULTIPLES]
+    found = [length for length, _ in g2_by_length(pts, ends, lengths)]
+    span = (f"{G2_REACH_MULTIPLES[0]:g} to {G2_REACH_MULTIPLES[-1]:g} \u00d7 the "
+            f"{length_mark(dist, 4)} between the ends")
+    if not found:
+        return f"none was found at {span} either: pick a tension, or G1"
+    said = ", ".join(length_mark(length, 3) for length in found)
+    return (f"G2 blends were found at the lengths {said} (tried: {span}): "
+            "try one of those, or G1")
 
 
 def g2_tension_reach(pts, ends):
@@ -313,14 +344,8 @@ def g2_tension_reach(pts, ends):
     0.00176 and 0.00177: the tensions solved are not an interval; the one said solved.)"""
     n, e = np(), el()
     dist = float(n.linalg.norm(pts[1] - pts[0]))
-    found = []
-    for m in G2_REACH_MULTIPLES:
-        try:
-            sigma = float(e.elastic_spline(pts, **ends, length=m * dist).tension)
-        except (ValueError, ArithmeticError, RuntimeError):
-            continue
-        if sigma > 0.0:
-            found.append(floor_digits(sigma, G2_TENSION_DIGITS))
+    found = [floor_digits(sigma, G2_TENSION_DIGITS) for _, sigma in
+             g2_by_length(pts, ends, [m * dist for m in G2_REACH_MULTIPLES]) if sigma > 0.0]
     tried = set()
     for sigma in sorted(found, reverse=True):
         for digits in range(G2_TENSION_DIGITS, 1, -1):   # rounded down further if none there
