@@ -24,6 +24,12 @@ def _threads(pid: int) -> int:
         return 0
 
 
+def _sigint_default():
+    """The child's SIGINT as a terminal gives it: make runs from a background job (nohup,
+    CI) hand it SIGINT ignored, which Python then keeps (no KeyboardInterrupt at all)."""
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+
+
 @pytest.mark.skipif(not os.path.isdir("/proc/self/task"), reason="needs Linux /proc")
 @pytest.mark.parametrize("model", ["discrete", "smooth"])
 def test_sigint_during_the_c_fit(tmp_path, model):
@@ -44,7 +50,8 @@ def test_sigint_during_the_c_fit(tmp_path, model):
     proc = subprocess.Popen([sys.executable, "-m", "libelastica", "fit", str(tmp_path / "p.csv"),
                              "--model", model, "--start-curvature", repr(wrong),
                              "--json", str(tmp_path / "f.json")],
-                            env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+                            env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            preexec_fn=_sigint_default)
     while proc.poll() is None and _threads(proc.pid) < 2:     # the C fit's worker started
         time.sleep(0.005)
     assert proc.poll() is None, "the fit ended before its C call was seen in a worker"
@@ -72,8 +79,12 @@ def test_call_returns_at_keyboardinterrupt_while_the_worker_runs():
         signal.raise_signal(signal.SIGINT)      # to this thread: the main thread's handler runs
 
     threading.Thread(target=interrupt, daemon=True).start()
-    with interruptible(), pytest.raises(KeyboardInterrupt):
-        call(blocked)
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)   # (ignored under nohup)
+    try:
+        with interruptible(), pytest.raises(KeyboardInterrupt):
+            call(blocked)
+    finally:
+        signal.signal(signal.SIGINT, previous)
     assert not release.is_set()
     release.set()
     assert call(threading.current_thread) is threading.current_thread()    # no worker outside
