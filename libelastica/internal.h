@@ -381,13 +381,25 @@ int el__spline_loops(const el_smooth_params *p, size_t m, int closed);
 int el__spline_refair(el__spchain *w, int max_steps, int st, double target);
 /* spline_path.c: pseudo-arclength along the tension solutions from the one in w until
  * the length (by_sigma 0) or sigma (1; 2: sigma at most half way per step) is Lt, then
- * Newton there; snapshots of a chain's state. */
+ * Newton there. Snapshots of a chain's state (spline_continuation.c). */
 int el__spline_follow_family(el__spchain *w, int max_steps, double Lt, int by_sigma);
 /* Follow a one-parameter family from t = 0 (solved, in w) to t = 1, set(w, t, par) moving
- * the target (spline_path.c) */
+ * the target (spline_continuation.c) */
 int el__spline_continuation(el__spchain *w, el__spsnap sv[2], int max_steps, double dt,
                             void (*set)(el__spchain *, double, const double *), const double *par,
                             double aim, double accept);
+/* Where a continuation ran out of steps after a step that succeeded: its two snapshots
+ * and t, dt, to go on from (spline_path.c's LONG_PATH) */
+typedef struct {
+    el__spsnap cur, prev;
+    double t, tp, dt;
+    int steps, valid;
+} el__cont_rest;
+/* el__spline_continuation; rest (or NULL): gone on from where it is valid, kept where the
+ * steps run out */
+int el__spline_follow(el__spchain *w, el__spsnap sv[2], int max_steps, double dt,
+                      void (*set)(el__spchain *, double, const double *), const double *par,
+                      double aim, double accept, el__cont_rest *rest);
 void el__snap_save(const el__spchain *w, el__spsnap *s);
 void el__snap_load(el__spchain *w, const el__spsnap *s);
 /* The chain set to the state f x (b - a) beyond b (secant predictor; b itself if a piece state is invalid). */

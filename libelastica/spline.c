@@ -4,7 +4,8 @@
  *   spline.c        the API: checks, units, the degenerate cases, the result,
  *                   the B-spline of the whole chain;
  *   spline_chain.c  the unknowns and equations, Newton on the whole chain, its start;
- *   spline_path.c   continuation in sigma, the length mode;
+ *   spline_path.c   the paths to tension mode's solution, the length mode;
+ *   spline_continuation.c continuation along a family: snapshots, predictor, steps;
  *   spline_g2_bend.c G2 ends: the end curvatures bent from the G1 sibling's, past folds;
  *   spline_bracket.c length mode from tension mode's splines that bracket the length,
  *                   where following the family failed;

@@ -18,135 +18,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* ------------------------------------------------------------------ continuation */
-
-/* Snapshots: to restore after a failed step, and the two last ones for the
- * secant predictor. */
-void el__snap_save(const el__spchain *w, el__spsnap *s)
-{
-    memcpy(s->x, w->x, w->n * sizeof *w->x);
-    for (size_t j = 0; j < w->m; j++) {
-        memcpy(s->v + j * EL__NV, w->pc[j].v, sizeof w->pc[j].v);
-        memcpy(s->st + j * EL__NV, w->pc[j].st, sizeof w->pc[j].st);
-    }
-    s->sigma = w->sigma;
-}
-
-void el__snap_load(el__spchain *w, const el__spsnap *s)
-{
-    memcpy(w->x, s->x, w->n * sizeof *w->x);
-    for (size_t j = 0; j < w->m; j++) memcpy(w->pc[j].v, s->v + j * EL__NV, sizeof w->pc[j].v);
-    w->sigma = s->sigma;
-}
-
-/* The state at f = (t - tb)/(tb - ta) beyond b on the line through a and b
- * (knot values, sigma, el__spiece states); b itself if a piece state is invalid. */
-static void predict(el__spchain *w, const el__spsnap *a, const el__spsnap *b, double f)
-{
-    for (size_t i = 0; i < w->n; i++) w->x[i] = b->x[i] + f * (b->x[i] - a->x[i]);
-    w->sigma = b->sigma + f * (b->sigma - a->sigma);
-    for (size_t j = 0; j < w->m; j++) {
-        double st[EL__NV];
-        for (int i = 0; i < EL__NV; i++) st[i] = b->st[j * EL__NV + i] + f * (b->st[j * EL__NV + i] - a->st[j * EL__NV + i]);
-        if (el__spiece_set_state(&w->pc[j], st)) { el__snap_load(w, b); return; }
-    }
-}
-
-void el__snap_predict(el__spchain *w, const el__spsnap *a, const el__spsnap *b, double f)
-{
-    predict(w, a, b, f);
-}
-
-/*
- * Follow a one-parameter family from t = 0 (solved, in w) to t = 1: set(w, t)
- * moves the target (sigma or length); each step starts from the secant
- * predictor of the last two solutions and is corrected by Newton to EL__SP_NEAR
- * (the last one to aim, accepted at accept). The first step is dt; it doubles
- * after an easy success, grows by 1.3 after a slow one and halves after a
- * failure (state restored); at most max_steps steps, giving up below 1e-3.
- * A step whose Newton needs more than EL__SP_STEP_HALVINGS halvings fails: a
- * shorter step serves better, and where none does (a fold in t: the free
- * batten that does not exist) the path ends sooner (a 1000-point zigzag says
- * EL_EDOM in ~1 s, was ~5 s; the results elsewhere are the same).
- */
-/* Where a continuation ran out of steps after a step that succeeded: its two snapshots
- * and t, dt, to go on from (LONG_PATH), the same steps as taking them all again (the
- * predictor rebuilds the chain from the snapshots) */
-typedef struct {
-    el__spsnap cur, prev;
-    double t, tp, dt;
-    int steps, valid;
-} cont_rest;
-
-static void snap_copy(const el__spchain *w, el__spsnap *d, const el__spsnap *s)
-{
-    memcpy(d->x, s->x, w->n * sizeof *d->x);
-    memcpy(d->v, s->v, EL__NV * w->m * sizeof *d->v);
-    memcpy(d->st, s->st, EL__NV * w->m * sizeof *d->st);
-    d->sigma = s->sigma;
-}
-
-/* el__spline_continuation; rest (or NULL): gone on from where it is valid, kept where the
- * steps run out */
-static int follow(el__spchain *w, el__spsnap sv[2], int max_steps, double dt,
-                  void (*set)(el__spchain *, double, const double *), const double *par,
-                  double aim, double accept, cont_rest *rest)
-{
-    double t = 0.0, tp = -1.0;
-    el__spsnap *cur = &sv[0], *prev = &sv[1];
-    int step = 0;
-    if (rest && rest->valid) {
-        snap_copy(w, cur, &rest->cur);
-        snap_copy(w, prev, &rest->prev);
-        t = rest->t; tp = rest->tp; dt = rest->dt; step = rest->steps;
-        rest->valid = 0;
-        el__snap_load(w, cur);
-        set(w, t, par);
-    } else {
-        el__snap_save(w, cur);
-    }
-    for (; step < max_steps; step++) {
-        const double tn = fmin(1.0, t + dt);
-        const int last = tn >= 1.0;
-        if (tp >= 0.0) predict(w, prev, cur, (tn - t) / (t - tp));
-        set(w, tn, par);
-        const int it0 = w->iterations;
-        w->halvings = EL__SP_STEP_HALVINGS;
-        const int st = last ? el__chain_newton(w, EL__SP_STEP_ITER, aim, accept)
-                            : el__chain_newton(w, EL__SP_STEP_ITER, 1e-3 * EL__SP_NEAR, EL__SP_NEAR);
-        w->halvings = EL__SP_HALVINGS;
-        if (st == EL_OK) {
-            if (last) return EL_OK;
-            el__spsnap *tmp = prev; prev = cur; cur = tmp;
-            el__snap_save(w, cur);
-            tp = t;
-            t = tn;
-            dt *= w->iterations - it0 <= 3 ? 2.0 : 1.3;
-            continue;
-        }
-        if (last && w->resid <= EL__SP_NEAR) { w->near = 1; return EL_ENOCONV; }
-        el__snap_load(w, cur);
-        set(w, t, par);
-        dt *= 0.5;
-        if (dt < 1e-3) break;
-    }
-    if (rest && step == max_steps && tp >= 0.0) {
-        snap_copy(w, &rest->cur, cur);
-        snap_copy(w, &rest->prev, prev);
-        rest->t = t; rest->tp = tp; rest->dt = dt; rest->steps = step;
-        rest->valid = 1;
-    }
-    el__snap_load(w, cur);
-    return EL_ENOCONV;
-}
-
-int el__spline_continuation(el__spchain *w, el__spsnap sv[2], int max_steps, double dt,
-                            void (*set)(el__spchain *, double, const double *), const double *par,
-                            double aim, double accept)
-{
-    return follow(w, sv, max_steps, dt, set, par, aim, accept, NULL);
-}
-
 /* sigma(t) between par[0] (t = 0) and par[1] geometrically in sigma + par[2]. */
 static void set_sigma(el__spchain *w, double t, const double *par)
 {
@@ -292,7 +163,7 @@ int el__spline_follow_family(el__spchain *w, int max_steps, double Lt, int by_si
                 w->arc_c = (w->arc_L0 - snap_length(w, B)) / N;
             }
             w->arc_h = h;
-            predict(w, B, C, h / N);
+            el__snap_predict(w, B, C, h / N);
             w->lmode = EL__BORDER_ARC;
             const int it0 = w->iterations;
             const int st = el__chain_newton(w, EL__SP_STEP_ITER, 1e-3 * EL__SP_NEAR, EL__SP_NEAR);
@@ -319,7 +190,7 @@ int el__spline_follow_family(el__spchain *w, int max_steps, double Lt, int by_si
                  * the interpolated state; if that fails, a shorter step from C */
                 el__spsnap *D = B;
                 el__snap_save(w, D);
-                predict(w, C, D, gn / (gc - gn));
+                el__snap_predict(w, C, D, gn / (gc - gn));
                 if (by_sigma) w->sigma = Lt; else { w->lmode = EL__BORDER_LENGTH; w->Lt = Lt; }
                 if (el__chain_newton(w, EL__SP_DIRECT_ITER, w->aim, w->tol) == EL_OK) return EL_OK;
                 w->lmode = 0;
@@ -359,17 +230,17 @@ static int follow_length(el__spchain *w, int max_steps, double Lt)
  * accepted at start_accept) along the tension to target, geometrically in sigma + 1:
  * EL_OK, EL_ENOCONV or EL_ENOMEM */
 static int from_sigma_start(el__spchain *w, int max_steps, double sigma0, double target, double start_aim,
-                            double start_accept, double aim, double accept, int taut, cont_rest *rest)
+                            double start_accept, double aim, double accept, int taut, el__cont_rest *rest)
 {
     const double par[3] = {sigma0, target, 1.0};
     if (rest && rest->valid)   /* where its first try ran out of steps */
-        return follow(w, w->snap, max_steps, 0.25, set_sigma, par, aim, accept, rest);
+        return el__spline_follow(w, w->snap, max_steps, 0.25, set_sigma, par, aim, accept, rest);
     w->sigma = sigma0;
     if (taut) el__chain_taut_angles(w); else el__chain_start_angles(w);
     const int st = el__chain_start_pieces(w);
     if (st) return st == EL_ENOMEM ? st : EL_ENOCONV;
     if (el__chain_newton(w, EL__SP_DIRECT_ITER, start_aim, start_accept) != EL_OK) return EL_ENOCONV;
-    return follow(w, w->snap, max_steps, 0.25, set_sigma, par, aim, accept, rest);
+    return el__spline_follow(w, w->snap, max_steps, 0.25, set_sigma, par, aim, accept, rest);
 }
 
 static int from_sigma(el__spchain *w, int max_steps, double sigma0, double target, double start_aim,
@@ -480,7 +351,7 @@ static int taut_start(el__spchain *w, int max_steps, double target, double aim, 
  * Accuracy), 700 at no budget. On 23 random walks and sketches at 300 / 450 / 500 / 700:
  * 17 / 3 / 1 / 0 -> 19 / 11 / 8 / 2 solved without loops (tol 1e-8), the failures' CPU
  * ~2 x. Tried last, where every other path failed (no result changes). It goes on from
- * where the first continuation from EL__SP_HIGH_SIGMA ran out of steps (cont_rest: its two
+ * where the first continuation from EL__SP_HIGH_SIGMA ran out of steps (el__cont_rest: its two
  * snapshots, t and dt), instead of taking those steps again to the same state: every
  * failing rung near the limit ran out of them there.
  */
@@ -488,7 +359,7 @@ enum { LONG_PATH = 4 };
 
 /* solve_tension_once's paths after its direct Newton (rest: LONG_PATH going on from where
  * the first continuation ran out of steps, or NULL) */
-static int from_paths(el__spchain *w, int max_steps, int final, double aim, double accept, cont_rest *rest)
+static int from_paths(el__spchain *w, int max_steps, int final, double aim, double accept, el__cont_rest *rest)
 {
     const double target = w->sigma;
     /* from a high tension on the mean chord (the unit here) */
@@ -531,7 +402,7 @@ static int solve_tension_once(el__spchain *w, int max_steps, int final)
     const size_t nx = w->n, nv = EL__NV * w->m, ns = nx + 2 * nv;
     double *rb = malloc(2 * ns * sizeof *rb);
     if (!rb) return EL_ENOMEM;
-    cont_rest rest = {{rb, rb + nx, rb + nx + nv, 0.0}, {rb + ns, rb + ns + nx, rb + ns + nx + nv, 0.0},
+    el__cont_rest rest = {{rb, rb + nx, rb + nx + nv, 0.0}, {rb + ns, rb + ns + nx, rb + ns + nx + nv, 0.0},
                       0.0, 0.0, 0.0, 0, 0};
     st = from_paths(w, max_steps, final, aim, accept, &rest);
     free(rb);

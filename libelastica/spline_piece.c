@@ -307,7 +307,7 @@ static int piece_from_state(el__spiece *pc, double theta, double kappa, double d
 
 int el__spiece_set_state(el__spiece *pc, const double *st)
 {
-    /* no piece of length <= 0: a secant predictor past one (spline_path.c's predict)
+    /* no piece of length <= 0: a secant predictor past one (spline_continuation.c's predict)
      * ended a continuation on a chain through one, -2.05 long (QA16's ship line) */
     if (!(st[4] > 0.0)) return EL_EDOM;
     return piece_from_state(pc, st[0], st[1], st[2], st[3], 0.0, st[4]);
