@@ -333,6 +333,10 @@ double el__wrap_pi(double a);
 
 /* The tension solution at w->sigma (final: to w->tol, else to EL__SP_NEAR). */
 int el__spline_solve_tension(el__spchain *w, int max_steps, int final);
+/* Its NEIGHBOURS (spline_path.c) after the plain solve at target (w->neighbours 0, final)
+ * gave st and the chain in w (w->near): el__spline_solve_tension's status with neighbours
+ * (spline_bracket.c's NEIGHBOURS_RUNGS, from the plain solves its first ladder made). */
+int el__spline_tension_neighbours(el__spchain *w, int max_steps, int st, double target);
 /* Length mode: the solution of total length Lt (internal units): from the
  * start, else from the free batten (el__spline_free_batten: sigma = 0, or as
  * near as continuation gets) by el__spline_length_from (its tension solution

@@ -39,14 +39,61 @@ static double total_length(const el__spchain *w)
     return L;
 }
 
-/* Tension mode's solution at sigma into w (el__spline_solve_tension, to tol): 1 when one
- * was reached (or one to what the parametrisation resolves), 0 when none, -1 out of memory */
-static int tension_at(el__spchain *w, int max_steps, double sigma)
+/* RUNG_MEMO: the first ladder's solves (without NEIGHBOURS), each rung's status and chain
+ * (where one was reached), from which the second ladder's solve at that rung goes on
+ * (el__spline_tension_neighbours: NEIGHBOURS begins with that same solve) instead of making
+ * it again; its results bit for bit the same. At most one a rung (40 x 2^-16 .. 2^6). */
+enum { MEMO = LADDER_UP + LADDER_DOWN + 1 };
+typedef struct {
+    int n;
+    double sigma[MEMO], resid[MEMO], den[MEMO], gres[MEMO];
+    int st[MEMO], near[MEMO];
+    el__spsnap s[MEMO];
+} rung_memo;
+
+static void memo_save(el__spchain *w, rung_memo *mm, int st)
+{
+    const int i = mm->n++;
+    mm->sigma[i] = w->sigma;
+    mm->st[i] = st;
+    mm->near[i] = w->near;
+    mm->resid[i] = w->resid;
+    mm->den[i] = w->den;
+    mm->gres[i] = w->Gres;
+    if (st == EL_OK || w->near) el__snap_save(w, &mm->s[i]);
+}
+
+static void memo_load(el__spchain *w, const rung_memo *mm, int i)
+{
+    if (mm->st[i] == EL_OK || mm->near[i]) {
+        el__snap_load(w, &mm->s[i]);
+        for (size_t j = 0; j < w->m; j++) memcpy(w->pc[j].st, mm->s[i].st + j * EL__NV, sizeof w->pc[j].st);
+    }
+    w->sigma = mm->sigma[i];
+    w->near = mm->near[i];
+    w->resid = mm->resid[i];
+    w->den = mm->den[i];
+    w->Gres = mm->gres[i];
+}
+
+/* Tension mode's solution at sigma into w (el__spline_solve_tension, to tol; mm: the
+ * RUNG_MEMO, or NULL): 1 when one was reached (or one to what the parametrisation
+ * resolves), 0 when none, -1 out of memory */
+static int tension_at(el__spchain *w, int max_steps, double sigma, rung_memo *mm)
 {
     w->lmode = 0;
     w->near = 0;
     w->sigma = sigma;
-    const int st = el__spline_solve_tension(w, max_steps, 1);
+    int i = 0;
+    while (mm && i < mm->n && mm->sigma[i] != sigma) i++;
+    int st;
+    if (mm && w->neighbours && i < mm->n) {
+        memo_load(w, mm, i);
+        st = el__spline_tension_neighbours(w, max_steps, mm->st[i], sigma);
+    } else {
+        st = el__spline_solve_tension(w, max_steps, 1);
+        if (mm && !w->neighbours && i == mm->n && i < MEMO && st != EL_ENOMEM) memo_save(w, mm, st);
+    }
     if (st == EL_ENOMEM) return -1;
     const int ok = st == EL_OK || w->near;
     w->near = 0;
@@ -190,7 +237,7 @@ static int fine_rungs(el__spchain *w, int max_steps, double Lt, const el__spsnap
     int fresh = 0;
     for (int j = 1; j < FINE; j++) {
         const double sigma = s0 * pow(s1 / s0, (double)j / FINE);
-        const int r = tension_at(w, max_steps, sigma);
+        const int r = tension_at(w, max_steps, sigma, NULL);
         if (r < 0) return -1;
         if (!r) continue;
         note_rung(w, sigma);
@@ -211,7 +258,7 @@ static int fine_rungs(el__spchain *w, int max_steps, double Lt, const el__spsnap
  * lengths, the least, the greatest, the greatest not crossing itself (REACH). -1 out of
  * memory, else 0 */
 static int ladder(el__spchain *w, int max_steps, double Lt, el__spsnap end[2], double len[2], int have[2],
-                  el__spsnap fair[2], double flen[2], int hfair[2], double met[3])
+                  el__spsnap fair[2], double flen[2], int hfair[2], double met[3], rung_memo *mm)
 {
     /* down from the taut batten until a rung says which way (up, from above it, when the
      * first is longer than Lt) */
@@ -219,7 +266,7 @@ static int ladder(el__spchain *w, int max_steps, double Lt, el__spsnap end[2], d
     double bottom = EL__SP_HIGH_SIGMA / (double)(1 << LADDER_DOWN);
     int up = -1;
     while (sigma >= bottom && sigma <= top) {
-        const int r = tension_at(w, max_steps, sigma);
+        const int r = tension_at(w, max_steps, sigma, mm);
         if (r < 0) return -1;
         if (r) {
             const double L = total_length(w);
@@ -246,7 +293,7 @@ static int ladder(el__spchain *w, int max_steps, double Lt, el__spsnap end[2], d
      * taut batten, each rung by continuation in sigma from the last (its family) */
     if (up == 1 && !have[1]) {
         const double STEP = 1.189207115002721;   /* 2^(1/4) */
-        const int r0 = tension_at(w, max_steps, EL__SP_HIGH_SIGMA);
+        const int r0 = tension_at(w, max_steps, EL__SP_HIGH_SIGMA, mm);
         if (r0 < 0) return -1;
         if (r0) note_rung(w, EL__SP_HIGH_SIGMA);
         if (r0 && total_length(w) >= Lt) {   /* the bracket's long end on this family */
@@ -293,8 +340,14 @@ int el__spline_length_by_tension(el__spchain *w, int max_steps, double Lt, int l
 {
     if (!(Lt > 0.0)) return EL_ENOCONV;
     const size_t n = w->n, m = w->m, ns = n + 2 * EL__NV * m;
-    double *buf = malloc(5 * ns * sizeof *buf);
+    double *buf = malloc((5 + MEMO) * ns * sizeof *buf);
     if (!buf) return EL_ENOMEM;
+    rung_memo mm;
+    mm.n = 0;
+    for (int i = 0; i < MEMO; i++) {
+        double *b = buf + (5 + i) * ns;
+        mm.s[i] = (el__spsnap){b, b + n, b + n + EL__NV * m, 0.0};
+    }
     /* the bracket: end[0] longer than Lt (a lower tension), end[1] shorter; kept: the
      * best spline reached from them */
     el__spsnap end[2] = {{buf, buf + n, buf + n + EL__NV * m, 0.0},
@@ -307,10 +360,10 @@ int el__spline_length_by_tension(el__spchain *w, int max_steps, double Lt, int l
     int have[2] = {0, 0}, hfair[2] = {0, 0};
     /* the rungs' lengths: the least, the greatest, the greatest not crossing itself (REACH) */
     double met[3] = {HUGE_VAL, 0.0, 0.0};
-    if (ladder(w, max_steps, Lt, end, len, have, fair, flen, hfair, met)) { free(buf); return EL_ENOMEM; }
+    if (ladder(w, max_steps, Lt, end, len, have, fair, flen, hfair, met, &mm)) { free(buf); return EL_ENOMEM; }
     /* NEIGHBOURS_RUNGS: no bracket, again with tension mode's NEIGHBOURS at each rung (spline_path.c:
-     * the solve el_spline_solve makes at that tension); its rungs and lengths kept only where
-     * it reaches a spline (below) */
+     * the solve el_spline_solve makes at that tension; from the first ladder's solve at the rungs
+     * it made, RUNG_MEMO); its rungs and lengths kept only where it reaches a spline (below) */
     double met0[3] = {0.0, 0.0, 0.0}, ladder0[2] = {0.0, 0.0};
     const int again = !(have[0] && have[1]);
     if (again) {
@@ -319,7 +372,7 @@ int el__spline_length_by_tension(el__spchain *w, int max_steps, double Lt, int l
         have[0] = have[1] = hfair[0] = hfair[1] = 0;
         len[0] = len[1] = flen[0] = flen[1] = 0.0;
         w->neighbours = 1;
-        const int r = ladder(w, max_steps, Lt, end, len, have, fair, flen, hfair, met);
+        const int r = ladder(w, max_steps, Lt, end, len, have, fair, flen, hfair, met, &mm);
         w->neighbours = 0;
         if (r) { free(buf); return EL_ENOMEM; }
     }

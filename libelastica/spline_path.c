@@ -471,9 +471,13 @@ static int taut_loops(el__spchain *w, int max_steps, double target)
 int el__spline_solve_tension(el__spchain *w, int max_steps, int final)
 {
     const double target = w->sigma;
-    int st = solve_tension_once(w, max_steps, final);
-    if (!final || !w->neighbours || w->near || !(target > 0.0) || (st != EL_OK && st != EL_ENOCONV))
-        return st;
+    const int st = solve_tension_once(w, max_steps, final);
+    return final && w->neighbours ? el__spline_tension_neighbours(w, max_steps, st, target) : st;
+}
+
+int el__spline_tension_neighbours(el__spchain *w, int max_steps, int st, double target)
+{
+    if (w->near || !(target > 0.0) || (st != EL_OK && st != EL_ENOCONV)) return st;
     if (target > EL__SP_HIGH_SIGMA) return st == EL_ENOCONV ? taut_loops(w, max_steps, target) : st;
     const int la = st == EL_OK ? loops_away(w) : 1;
     if (la <= 0) return la < 0 ? EL_ENOMEM : st;
