@@ -417,11 +417,11 @@ static int solve_tension_once(el__spchain *w, int max_steps, int final)
  * batten jump family or stop at folds between fair branches (ring77: fair at sigma h^2 90
  * and 150 on the longest span, looping at 95 .. 120). The first that reaches it without
  * looping is kept; else the first result, as it was. Where none was reached, the
- * neighbours that loop are followed too (a second pass, so the first is as it was) and of
- * those reaching it the least integral kappa^2 + sigma ds kept, loops and all
- * (el_spline_result's loops says so): QA's rw15 (a polygon crossing itself 5 times) at
- * sigma h^2 2 .. 5 on the longest span, where every spline found loops round duck 7 (fair
- * ones only from ~18 up) and no path reached one.
+ * neighbours that loop are followed too (a second pass from the first's solutions, so the
+ * first is as it was) and of those reaching it the least integral kappa^2 + sigma ds kept,
+ * loops and all (el_spline_result's loops says so): QA's rw15 (a polygon crossing itself 5
+ * times) at sigma h^2 2 .. 5 on the longest span, where every spline found loops round duck
+ * 7 (fair ones only from ~18 up) and no path reached one.
  */
 static const double NEAR_TENSIONS[] = {0.9, 1.1, 0.75, 1.3};
 enum { NNEAR = sizeof NEAR_TENSIONS / sizeof NEAR_TENSIONS[0] };
@@ -437,18 +437,26 @@ static int loops_away(const el__spchain *w)
 }
 
 /* The neighbour i solved (its loops_away into *l) and followed to target: EL_OK there,
- * EL_ENOMEM, else EL_ENOCONV (loopy: follow one that loops too, else *l 1 stops) */
-static int from_neighbour(el__spchain *w, int max_steps, double target, size_t i, int loopy, int *l)
+ * EL_ENOMEM, else EL_ENOCONV (loopy: follow one that loops too, from its solution kept in
+ * *nb by the pass that was not loopy; else *l 1 stops, its solution into *nb) */
+static int from_neighbour(el__spchain *w, int max_steps, double target, size_t i, int loopy, int *l,
+                          el__spsnap *nb)
 {
     w->near = 0;
     w->lmode = 0;
     w->sigma = target * NEAR_TENSIONS[i];
     *l = 0;
-    const int sn = solve_tension_once(w, max_steps, 1);
-    if (sn == EL_ENOMEM) return sn;
-    if (sn != EL_OK || w->near) return EL_ENOCONV;
-    if ((*l = loops_away(w)) < 0) return EL_ENOMEM;
-    if (*l && !loopy) return EL_ENOCONV;
+    if (loopy) {   /* the same solve again would reach the same solution (a fresh start) */
+        el__snap_load(w, nb);
+        for (size_t j = 0; j < w->m; j++) memcpy(w->pc[j].st, nb->st + j * EL__NV, sizeof w->pc[j].st);
+        *l = 1;
+    } else {
+        const int sn = solve_tension_once(w, max_steps, 1);
+        if (sn == EL_ENOMEM) return sn;
+        if (sn != EL_OK || w->near) return EL_ENOCONV;
+        if ((*l = loops_away(w)) < 0) return EL_ENOMEM;
+        if (*l) { el__snap_save(w, nb); return EL_ENOCONV; }
+    }
     const double par[2] = {w->sigma, target};
     const int sc = el__spline_continuation(w, w->snap, max_steps, 1.0, set_sigma_linear, par, w->aim, w->tol);
     return sc == EL_ENOMEM || sc == EL_OK ? sc : EL_ENOCONV;
@@ -482,14 +490,17 @@ int el__spline_tension_neighbours(el__spchain *w, int max_steps, int st, double 
     const int la = st == EL_OK ? loops_away(w) : 1;
     if (la <= 0) return la < 0 ? EL_ENOMEM : st;
     const size_t n = w->n, m = w->m;
-    double *buf = malloc(sizeof(double) * (n + 2 * EL__NV * m));
+    const size_t ns = n + 2 * EL__NV * m;
+    double *buf = malloc(sizeof(double) * (1 + NNEAR) * ns);
     if (!buf) return EL_ENOMEM;
-    el__spsnap first = {buf, buf + n, buf + n + EL__NV * m, 0.0};
+    el__spsnap first = {buf, buf + n, buf + n + EL__NV * m, 0.0}, nb[NNEAR];
+    for (size_t i = 0; i < NNEAR; i++) nb[i] = (el__spsnap){buf + (1 + i) * ns, buf + (1 + i) * ns + n,
+                                                            buf + (1 + i) * ns + n + EL__NV * m, 0.0};
     if (st == EL_OK) el__snap_save(w, &first);
     w->neighbours = 0;
     int found = 0, looped[NNEAR] = {0};
     for (size_t i = 0; i < NNEAR && !found; i++) {
-        const int sc = from_neighbour(w, max_steps, target, i, 0, &looped[i]);
+        const int sc = from_neighbour(w, max_steps, target, i, 0, &looped[i], &nb[i]);
         if (sc == EL_ENOMEM) { st = sc; break; }
         if (sc != EL_OK) continue;
         const int l = loops_away(w);
@@ -503,7 +514,7 @@ int el__spline_tension_neighbours(el__spchain *w, int max_steps, int st, double 
     for (size_t i = 0; i < NNEAR && !found && st == EL_ENOCONV; i++) {
         if (!looped[i]) continue;
         int l;
-        const int sc = from_neighbour(w, max_steps, target, i, 1, &l);
+        const int sc = from_neighbour(w, max_steps, target, i, 1, &l, &nb[i]);
         if (sc == EL_ENOMEM) { st = sc; break; }
         const double lag = chain_energy(w) + target * total_length(w);
         if (sc == EL_OK && lag < low) { el__snap_save(w, &first); low = lag; kept = 1; }
