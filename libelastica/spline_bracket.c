@@ -42,7 +42,9 @@ static double total_length(const el__spchain *w)
 /* RUNG_MEMO: the first ladder's solves (without NEIGHBOURS), each rung's status and chain
  * (where one was reached), from which the second ladder's solve at that rung goes on
  * (el__spline_tension_neighbours: NEIGHBOURS begins with that same solve) instead of making
- * it again; its results bit for bit the same. At most one a rung (40 x 2^-16 .. 2^6). */
+ * it again, and which serves the first ladder's own second solve at the taut batten (up
+ * without a bracket); its results bit for bit the same. At most one a rung (40 x 2^-16 ..
+ * 2^6). */
 enum { MEMO = LADDER_UP + LADDER_DOWN + 1 };
 typedef struct {
     int n;
@@ -87,9 +89,9 @@ static int tension_at(el__spchain *w, int max_steps, double sigma, rung_memo *mm
     int i = 0;
     while (mm && i < mm->n && mm->sigma[i] != sigma) i++;
     int st;
-    if (mm && w->neighbours && i < mm->n) {
+    if (mm && i < mm->n) {
         memo_load(w, mm, i);
-        st = el__spline_tension_neighbours(w, max_steps, mm->st[i], sigma);
+        st = w->neighbours ? el__spline_tension_neighbours(w, max_steps, mm->st[i], sigma) : mm->st[i];
     } else {
         st = el__spline_solve_tension(w, max_steps, 1);
         if (mm && !w->neighbours && i == mm->n && i < MEMO && st != EL_ENOMEM) memo_save(w, mm, st);
