@@ -75,8 +75,9 @@ def call(fn, *args, keep=()):
     #                              False while the thread runs, Python 3.11.2)
     worker = threading.Thread(target=_run, args=(fn, args, keep, out, done), daemon=True,
                               name="libelastica C call")
-    worker.start()
     try:
+        worker.start()              # (its wait for the thread's start is interruptible too:
+        #                              Ctrl-C there found the call running, under load)
         while not done.wait(0.05):  # (woken each 50 ms: a SIGINT another thread took is seen)
             pass
     except KeyboardInterrupt:       # the worker keeps fn, args, keep
