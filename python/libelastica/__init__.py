@@ -2,6 +2,7 @@
 interpolation, B-splines (Python binding of the C library)."""
 import importlib as _importlib
 
+from . import _entry   # first: Ctrl-C while the elastica command imports (only then) exits 130
 from ._ffi import DomainError, ElasticaError, LengthRangeError, NotConvergedError, SingularError
 from .core import DiscreteElastica, SmoothElastica
 from . import io
@@ -35,7 +36,7 @@ _LAZY = {name: module for module, names in {
                "chaikin", "elastica_affine_curvature", "elastica_inflections", "lane_riesenfeld",
                "osculating_conics", "parabolic_lengths", "quadratic_bspline", "uniform_bspline",
                "g2_bspline", "quadratic_joint_curvatures"),
-    "g2quad": ("CoverageWarning", "G2Quadratic", "g2_quadratic"),
+    "g2quad": ("CoverageError", "CoverageWarning", "G2Quadratic", "covering_edges", "g2_quadratic"),
 }.items() for name in names}
 # the submodules `import libelastica` always gave as attributes
 _SUBMODULES = ("affine", "blend", "bspline", "core", "cubic", "fit_cost", "g2quad", "io", "keyline",

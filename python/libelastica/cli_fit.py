@@ -71,6 +71,8 @@ def _side_record(res, data: np.ndarray, model: str, free=None) -> Dict[str, Any]
            "converged": _converged(res)}
     if getattr(res, "wander_gap", -1) >= 0:     # el.fit's WanderWarning, said by _warn_wanders
         rec["wander_gap"] = int(res.wander_gap)
+        # the two points' rows (the file's under --order curve: _by_file_row)
+        rec["wander_points"] = [int(res.wander_gap), int(res.wander_gap) + 1]
     if res.constraints:     # el.fit's (radians): `elastica bspline` keeps a discrete fit's ends
         rec["constraints"] = res.constraints
     if getattr(res, "distances", None) is not None:
@@ -217,7 +219,9 @@ def _by_file_row(rec: Dict[str, Any], order: np.ndarray) -> None:
     """A record of the file's points fitted in curve order (--order curve: ``order``, their
     file rows in it) put in the file's order: its per-point lists ("distances", "foot_s",
     "free_distances") row by row, its "outliers" the file's rows (QA17: the glitch at row 126
-    was named as point 100, its place in curve order, a good point's row)."""
+    was named as point 100, its place in curve order, a good point's row); the gap the
+    curve wanders in by its two points' rows ("wander_points"; "wander_gap", a curve-order
+    index, dropped)."""
     for key in ("distances", "foot_s", "free_distances"):
         if len(rec.get(key) or ()) == len(order):
             v = np.empty(len(order))
@@ -225,14 +229,18 @@ def _by_file_row(rec: Dict[str, Any], order: np.ndarray) -> None:
             rec[key] = [float(x) for x in v]
     if rec.get("outliers"):
         rec["outliers"] = sorted(int(order[i]) for i in rec["outliers"])
+    if "wander_gap" in rec:     # a gap in curve order: its two points, rows apart in the file
+        gap = rec.pop("wander_gap")
+        rec["wander_points"] = [int(order[gap]), int(order[gap + 1])]
 
 
-def _warn_wanders(path, rec: Dict[str, Any], data: np.ndarray, numbered: bool = True) -> None:
-    """A warning on stderr naming the gap between two fitted points the curve wanders in
-    (the record's "wander_gap", el.fit's WanderWarning), and what holds it there; by their
-    places alone where not ``numbered`` (--order curve: the fit's order is not the file's)."""
+def _warn_wanders(path, rec: Dict[str, Any], data: np.ndarray, numbered: bool = True,
+                  gap: int = -1) -> None:
+    """A warning on stderr naming the gap ``gap`` between two fitted points (of ``data``)
+    the curve wanders in (the record's "wander_gap" before _by_file_row, el.fit's
+    WanderWarning), and what holds it there; by their places alone where not ``numbered``
+    (--order curve: the fit's order is not the file's)."""
     from .fit import wander_summary
-    gap = rec.get("wander_gap", -1)
     if gap < 0:
         return
     side = f" (side {rec['side'] + 1})" if "side" in rec else ""
@@ -388,13 +396,14 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
             fitted.append(data)
     for rec, fitted_pts in zip(records, fitted):
         rec.update({"file": str(path), "plane": plane, "step": args.step, **extra_info})
+        gap = rec.get("wander_gap", -1)      # in the fit's order, as fitted_pts
         if order is not None:
             rec["order"] = [int(i) for i in order]
             if not args.keyline:
                 _by_file_row(rec, order)
         _warn_end_conditions(path, rec)
         _warn_far_points(path, rec)
-        _warn_wanders(path, rec, fitted_pts, order is None)
+        _warn_wanders(path, rec, fitted_pts, order is None, gap)
         if rec.get("resample_reference_rms") is not None:
             from .resampled import resample_summary
             print(f"{PROG} fit: warning: {path}: " + resample_summary(

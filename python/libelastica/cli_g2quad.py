@@ -4,14 +4,11 @@ a smooth elastica from ``fit --json``), with their distance from it, which joint
 tangent and curvature errors."""
 from __future__ import annotations
 
-import sys
-import warnings
-
 import numpy as np
 
 from .cli_common import EXIT_OK, _plane_record
-from .io import (InputError, curve_from_dict, curve_to_dict, read_json, read_points,
-                 write_dxf_spline, write_json)
+from .io import (InputError, curve_from_dict, curve_to_dict, looks_like_json, read_input,
+                 read_json, read_points, write_dxf_spline, write_json)
 
 __all__ = ["cmd_g2quad"]
 
@@ -26,8 +23,10 @@ def cmd_g2quad(args) -> int:
     source, frame, plane = args.file, None, None
     if args.edges is not None and args.edges < 3:
         raise InputError(f"--edges must be at least 3, got {args.edges}")
-    if args.file.lower().endswith(".json"):
-        doc = read_json(args.file)
+    # '-': points or a JSON (a fit's, piped: fit --json - | g2quad -), told by its first byte
+    given = read_input("-") if args.file == "-" else None
+    if args.file.lower().endswith(".json") or (given is not None and looks_like_json(given)):
+        doc = read_json(args.file, data=given)
         items = doc.get("sides") if isinstance(doc, dict) and "sides" in doc else [doc]
         if len(items) != 1:
             raise InputError(f"{args.file}: {len(items)} curves; give one (e.g. one side's JSON)")
@@ -39,7 +38,7 @@ def cmd_g2quad(args) -> int:
         data = curve.points(np.linspace(0.0, curve.length, 400)) if curve_source else src
         n = args.edges or 40
     else:
-        pts = read_points(args.file, min_points=4)
+        pts = read_points(args.file, min_points=4, data=given)
         if pts.shape[1] == 3:
             src, frame = el.plane_fit(pts)
             plane = _plane_record(frame)
@@ -49,9 +48,11 @@ def cmd_g2quad(args) -> int:
         # seed 002 §4.2: ~20 samples per vertex; a curve fitted to them (--fit) as a fit's
         # JSON (QA: 150 points -> 7 edges, the B-spline 0.51 off a fit of rms 0.047)
         n = args.edges or (40 if args.fit else max(6, (len(src) - 1) // 20))
-    with warnings.catch_warnings():   # said below, in the CLI's words
-        warnings.simplefilter("ignore", el.CoverageWarning)
+    try:
         g = el.g2_quadratic(src, n, fit=args.fit)
+    except el.CoverageError as exc:     # an error, nothing written (as FreeCAD's feature)
+        raise InputError(_coverage_message(exc, n, args.edges is None,
+                                           exc.result.fit is not None or curve_source)) from None
     jumps = f"{g.curvature_jump:.2g}"
     rec = {"file": str(source), "edges": int(n), "pieces": len(g.bsplines), "plane": plane,
            "ends": g.ends, "covers_source": g.covers_source, "ends_covered": g.ends_covered,
@@ -80,19 +81,6 @@ def cmd_g2quad(args) -> int:
         ends = [g.ends[0], g.ends[-1]] if frame is None else frame.to_3d(np.array([g.ends[0], g.ends[-1]]))
         start, end = (", ".join(f"{v:.6g}" for v in e) for e in ends)
         print(f"  starts at ({start}), ends at ({end}), exactly on the source")
-        if not g.covers_source:
-            left = "its start's and its end's pieces beyond their inflections are" \
-                if not any(g.ends_covered) else \
-                f"its {'end' if g.ends_covered[0] else 'start'}'s piece beyond an inflection is"
-            # more edges give a short piece its 3; noise makes inflections of points (QA: the
-            # advice named --fit to a user who had given it, both ends of a fitted arch left out)
-            noisy = "" if g.fit is not None or curve_source else \
-                "; noisy points: --fit, or fit first (elastica fit --model smooth --json) " \
-                "and pass the JSON"
-            gone = " + ".join(f"{d:.4g}" for d in g.dropped if d > 0)
-            print(f"  warning: the source is not covered: {left} left out ({gone} of its "
-                  f"length; too short for 3 of the {n} edges): more --edges cover "
-                  f"it{noisy}", file=sys.stderr)
         print(f"  {g.g2_summary()}")
         print(f"  largest distance from the source: {g.deviation:.3g}")
         if g.end_tangent_error is not None:
@@ -125,3 +113,22 @@ def cmd_g2quad(args) -> int:
             BSpline(b.degree, frame.to_3d(b.poles), b.knots, b.mults) for b in g.bsplines]
         write_dxf_spline(splines, args.outputs.path(args.dxf), units=args.units)
     return EXIT_OK
+
+
+def _coverage_message(exc, n: int, default: bool, smooth: bool) -> str:
+    """el.g2_quadratic's CoverageError in the CLI's words: which ends are left out, how
+    much, and the fewest --edges that cover them (el.covering_edges, FreeCAD's too)."""
+    g = exc.result
+    left = "its start's and its end's pieces beyond their inflections" \
+        if not any(g.ends_covered) else \
+        f"its {'end' if g.ends_covered[0] else 'start'}'s piece beyond an inflection"
+    gone = " + ".join(f"{d:.4g}" for d in g.dropped if d > 0)
+    given = f"{n} edges (the default for these points) leave" if default else \
+        f"--edges {n} leaves"
+    more = f"--edges {exc.edges} covers it" if exc.edges else \
+        f"none of --edges {n + 1} to {exc.tried} covers it (try more)"
+    # noise makes inflections of points (QA: the advice named --fit to a user who had given it)
+    noisy = "" if smooth else "; noisy points: --fit, or fit first (elastica fit --model " \
+        "smooth --json) and pass the JSON"
+    return (f"{given} out {left} ({gone} of the source's length; too short for 3 "
+            f"edges): {more}{noisy}")

@@ -17,7 +17,7 @@ from ._ffi import DomainError, as_points, as_size
 from .affine import (AffinePolyline, affine_polyline, elastica_inflections, g2_bspline,
                      quadratic_joint_curvatures)
 
-__all__ = ["G2Quadratic", "CoverageWarning", "g2_quadratic"]
+__all__ = ["G2Quadratic", "CoverageError", "CoverageWarning", "covering_edges", "g2_quadratic"]
 
 
 @dataclass
@@ -138,8 +138,49 @@ def _noisy_points_error(exc: DomainError, points: np.ndarray) -> DomainError:
 
 
 class CoverageWarning(RuntimeWarning):
-    """:func:`g2_quadratic`'s warning that its splines leave part of the source out (an end
-    piece next to an inflection too short for 3 edges: ``G2Quadratic.dropped``)."""
+    """:func:`g2_quadratic`'s warning (``partial=True``) that its splines leave part of the
+    source out (an end piece next to an inflection too short for 3 edges:
+    ``G2Quadratic.dropped``)."""
+
+
+class CoverageError(ValueError):
+    """:func:`g2_quadratic`'s error that its splines would leave part of the source out
+    (an end piece next to an inflection too short for 3 edges). result: that partial
+    G2Quadratic (its ``dropped``); edges: the fewest edges found that cover the source
+    (:func:`covering_edges`), or None; tried: the largest count tried."""
+
+    def __init__(self, message: str, result: "G2Quadratic", edges: Optional[int], tried: int):
+        super().__init__(message)
+        self.result, self.edges, self.tried = result, edges, tried
+
+
+# covering_edges tries counts up to this many times the given one (and MAX_EDGES)
+COVER_SEARCH = 4
+MAX_EDGES = 5000
+
+
+def cover_search_limit(n: int) -> int:
+    """The largest edge count :func:`covering_edges` tries above ``n``."""
+    return min(COVER_SEARCH * int(n), MAX_EDGES)
+
+
+def covering_edges(build, n: int, errors=(ValueError, ArithmeticError)) -> Optional[int]:
+    """The fewest edge counts above ``n`` whose G2 quadratic covers the source, or None:
+    ``build(m)`` gives the G2Quadratic of m edges (raising one of ``errors`` where m has
+    none); tries each of the next 16 counts, then steps of 1/4 up to
+    :func:`cover_search_limit`. Not monotone: a count between can fail (a stretch without
+    affine arc length: the 330 mm S covered at 3 and 6 edges, not 4 or 5)."""
+    top = cover_search_limit(n)
+    tries = list(range(n + 1, min(n + 16, top) + 1))
+    while tries and tries[-1] < top:
+        tries.append(min(top, tries[-1] + max(1, tries[-1] // 4)))
+    for m in tries:
+        try:
+            if build(m).covers_source:
+                return m
+        except errors:
+            continue
+    return None
 
 
 def _end_curvature(samples: np.ndarray, reverse: bool, tangents=None) -> Optional[float]:
@@ -352,7 +393,7 @@ def _joins(splines) -> Tuple[float, float]:
 
 
 def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents=None,
-                 fit: bool = False, **options) -> G2Quadratic:
+                 fit: bool = False, partial: bool = False, **options) -> G2Quadratic:
     """Seed 002 end to end: approximate a SmoothElastica or a sampled curve (N+1, 2)
     by an affine arc-length polyline with n edges (:func:`affine_polyline`, each
     piece's A adjusted so its last vertex lands on the piece end), then build one
@@ -366,8 +407,11 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
     (:func:`fit`, point-to-curve distance) and builds from that curve (``fit`` of the
     result: the points' distances to it; ``deviation``: the splines' from it).
     Raises ValueError / DomainError (straight source, n too small, noisy points: the
-    message counts the sign changes of their discrete curvature, ...); warns
-    (:class:`CoverageWarning`) when part of the source is left out, saying how much.
+    message counts the sign changes of their discrete curvature, ...), and
+    :class:`CoverageError` when the splines would leave part of the source out (an end
+    piece beyond an inflection too short for 3 edges), naming how much and the fewest
+    edges that cover it (:func:`covering_edges`); ``partial=True`` returns that result
+    instead (``covers_source`` False, ``dropped``) with a :class:`CoverageWarning`.
     The ends' curvature is the source's (end_curvature_error ~1e-12): the uniform end
     parabola from the exact end point ends with ~0.71 x it at every n (the polyline's
     vertices lie on the source, the spline runs inside it by ~kappa h^2/8, and the parabola
@@ -391,7 +435,11 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                              "a curve is built from as it is")
         from .fit import fit as fit_points
         fitted = fit_points(as_points(curve_or_points, "points"), model="smooth")
-        g = g2_quadratic(fitted.curve, n, samples_per_vertex, **options)
+        try:
+            g = g2_quadratic(fitted.curve, n, samples_per_vertex, partial=partial, **options)
+        except CoverageError as exc:
+            exc.result.fit = fitted
+            raise
         g.fit = fitted
         return g
     options.setdefault("fit_ends", True)
@@ -489,19 +537,29 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
             ((splines[0], 0, k_src[0], kscale[0], covers[0]),
              (splines[-1], -1, k_src[1], kscale[1], covers[1]))
             if kept and k is not None]
+    angle, kjump = _joins(splines)
+    ap = dataclasses.replace(ap, points=poly)
+    g = G2Quadratic(splines, ap, np.asarray(ends), dev, jump,
+                    terr if ends_dir is not None else None, bool(all(covers)),
+                    ends_covered=(bool(covers[0]), bool(covers[1])), join_angle=angle,
+                    join_curvature_jump=kjump,
+                    end_curvature_error=max(kerr) if kerr else None, dropped=dropped,
+                    source_end_tangent_error=max(serr) if serr else None)
     if not all(covers):
         gone = " and ".join(f"{d:.4g} at its {w}" for d, w in zip(dropped, ("start", "end"))
                             if d > 0)
-        warnings.warn(f"g2_quadratic: the splines leave out {gone} of the source (length "
-                      f"{length:.4g}): an end piece beyond an inflection is too short for 3 of "
-                      f"the {n} edges, so they stop at the inflection; more edges cover it",
-                      CoverageWarning,
-                      stacklevel=2)
-    angle, kjump = _joins(splines)
-    ap = dataclasses.replace(ap, points=poly)
-    return G2Quadratic(splines, ap, np.asarray(ends), dev, jump,
-                       terr if ends_dir is not None else None, bool(all(covers)),
-                       ends_covered=(bool(covers[0]), bool(covers[1])), join_angle=angle,
-                       join_curvature_jump=kjump,
-                       end_curvature_error=max(kerr) if kerr else None, dropped=dropped,
-                       source_end_tangent_error=max(serr) if serr else None)
+        what = (f"g2_quadratic: the splines leave out {gone} of the source (length "
+                f"{length:.4g}): an end piece beyond an inflection is too short for 3 of the "
+                f"{n} edges, so they stop at the inflection")
+        if partial:
+            warnings.warn(f"{what}; more edges cover it", CoverageWarning, stacklevel=2)
+            return g
+        with warnings.catch_warnings():     # the counts tried: said by the error
+            warnings.simplefilter("ignore", CoverageWarning)
+            more = covering_edges(lambda m: g2_quadratic(
+                curve_or_points, m, samples_per_vertex, tangents, partial=True, **options), n)
+        top = cover_search_limit(n)
+        raise CoverageError(f"{what}: " + (f"n = {more} covers it" if more else
+                                           f"none of n = {n + 1} to {top} covers it (try more)")
+                            + " (partial=True keeps this result)", g, more, top)
+    return g

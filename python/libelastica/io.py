@@ -18,9 +18,9 @@ from typing import Any, Dict, Optional, Union
 
 import numpy as np
 
-__all__ = ["InputError", "read_points", "curve_to_dict", "curve_from_dict", "bspline_to_dict",
-           "bspline_from_dict", "write_json", "read_json", "write_dxf_spline", "have_ezdxf",
-           "DXF_UNITS"]
+__all__ = ["InputError", "read_input", "looks_like_json", "read_points", "curve_to_dict",
+           "curve_from_dict", "bspline_to_dict", "bspline_from_dict", "write_json", "read_json",
+           "write_dxf_spline", "have_ezdxf", "DXF_UNITS"]
 
 PathLike = Union[str, Path]
 
@@ -184,7 +184,21 @@ def _read_bytes(path: PathLike) -> bytes:
             from None
 
 
-def read_points(path: PathLike, min_points: int = 3) -> np.ndarray:
+def read_input(path: PathLike) -> bytes:
+    """The bytes of an input ('-': standard input, read once), for :func:`read_points` or
+    :func:`read_json` to parse (``data=``) after :func:`looks_like_json` chose."""
+    return _read_bytes(path)
+
+
+def looks_like_json(data: bytes) -> bool:
+    """Whether an input's bytes are JSON (an object or array) rather than points: their
+    first non-blank byte (after a UTF-8 BOM) is '{' or '[', which no points file starts with."""
+    head = data[3:] if data.startswith(b"\xef\xbb\xbf") else data
+    head = head.lstrip()
+    return head[:1] in (b"{", b"[")
+
+
+def read_points(path: PathLike, min_points: int = 3, data: Optional[bytes] = None) -> np.ndarray:
     """Read an (n, 2) or (n, 3) float64 array of points from ``path``.
 
     Formats: ``.npy`` (a numeric array of shape (n, 2) or (n, 3)), otherwise text
@@ -195,10 +209,11 @@ def read_points(path: PathLike, min_points: int = 3) -> np.ndarray:
     Windows-1252 (:func:`_decode`). Every message about a row names its line.
     Raises :class:`InputError` for a missing or unreadable file, malformed rows, a
     column count other than 2 or 3 without such a header, NaN/inf values, fewer than
-    ``min_points`` points, or all points equal.
+    ``min_points`` points, or all points equal. ``data``: the input's bytes read already
+    (:func:`read_input`), ``path`` then naming it.
     """
     name = "standard input" if str(path) == "-" else str(path)
-    data = _read_bytes(path)
+    data = _read_bytes(path) if data is None else data
     if data.startswith(_NPY_MAGIC) or (str(path) != "-" and Path(path).suffix.lower() == ".npy"):
         try:
             arr = np.load(_io.BytesIO(data), allow_pickle=False)
@@ -314,9 +329,10 @@ def write_json(obj: Any, path: PathLike) -> None:
         Path(path).write_text(text)
 
 
-def read_json(path: PathLike) -> Any:
-    """Read a JSON file ('-': standard input); InputError when missing or malformed."""
-    data = _read_bytes(path)
+def read_json(path: PathLike, data: Optional[bytes] = None) -> Any:
+    """Read a JSON file ('-': standard input; ``data``: its bytes read already, by
+    :func:`read_input`); InputError when missing or malformed."""
+    data = _read_bytes(path) if data is None else data
     if str(path) == "-":
         path = "standard input"
     try:

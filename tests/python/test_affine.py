@@ -410,11 +410,11 @@ def test_g2_quadratic_inflection_next_to_the_end_is_reported():
     K = el.affine._ellipk(0.7)
     c = el.SmoothElastica(0, 0, 0, 1.0, 0.7, K - (L - 0.004), L)   # inflection at s = L - 0.004
     with pytest.warns(el.CoverageWarning, match="0.004 at its end"):
-        g = el.g2_quadratic(c, 30)
+        g = el.g2_quadratic(c, 30, partial=True)
     assert not g.covers_source and len(g.bsplines) == 1 and g.ends_covered == (True, False)
     assert np.allclose(_ends(g.bsplines[0])[1], c.points([L - 0.004])[0], atol=1e-12)
     with pytest.warns(el.CoverageWarning, match="0.004 at its start"):
-        back = el.g2_quadratic(c.reversed(), 30)
+        back = el.g2_quadratic(c.reversed(), 30, partial=True)
     assert not back.covers_source and back.ends_covered == (False, True)
 
 
@@ -539,25 +539,32 @@ def test_g2quad_command_from_a_fitted_elastica(tmp_path, capsys):
     assert np.allclose(rec["ends"], c.points(s), atol=1e-12)
 
 
-def test_g2quad_command_says_which_ends_are_left_out_and_what_covers_them(tmp_path, capsys):
+def test_g2quad_command_refuses_a_result_that_leaves_ends_out(tmp_path, capsys):
     """QA: 40 points of a scanned arch, `g2quad --fit --edges 24`: the fitted elastica's
-    inflections lie 10 from both ends, both end pieces left out; the warning said 'an end'
-    and advised --fit, which was given. It names both ends and more --edges, which cover
-    them (200: no warning); one end left out is named as such."""
+    inflections lie 10 from both ends, both end pieces left out; the CLI warned, exit 0,
+    and wrote the partial splines (FreeCAD's feature makes it an error). Now an error
+    (exit 2, nothing written) naming both ends, how much, and the fewest --edges that cover
+    them (el.covering_edges, FreeCAD's search; none up to 4 x 24 here), without advising
+    --fit, which was given; one end left out is named as such; 200 covers both."""
     rng = np.random.default_rng(8)
     t = np.linspace(0, 1, 40)
     src = tmp_path / "arch.csv"
     np.savetxt(src, np.c_[300 * t, 40 * np.sin(np.pi * t) + rng.normal(0, 0.1, 40)],
                delimiter=",", fmt="%.4f")
-    out = tmp_path / "arch.json"
-    code, text, err = _g2quad(capsys, src, "--fit", "--edges", 24, "--json", out)
-    rec = json.loads(out.read_text())
-    assert code == 0 and not rec["covers_source"] and rec["ends_covered"] == [False, False]
-    warning = [line for line in err.splitlines() if "warning" in line]
-    assert len(warning) == 1 and "start's and its end's" in warning[0], err
-    assert "--edges" in warning[0] and "--fit" not in warning[0], err
-    code, text, err = _g2quad(capsys, src, "--fit", "--edges", 100)
-    assert code == 0 and "its start's piece" in err and "its end's" not in err, err
+    out, dxf = tmp_path / "arch.json", tmp_path / "arch.dxf"
+    code, text, err = _g2quad(capsys, src, "--fit", "--edges", 24, "--json", out, "--dxf", dxf)
+    assert code == 2 and not out.exists() and not dxf.exists(), err
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("elastica g2quad: --edges 24 leaves out its "
+                                                   "start's and its end's pieces"), err
+    assert "10.31 + 11.48" in lines[0] and "none of --edges 25 to 96 covers it" in lines[0], err
+    assert "--fit" not in lines[0] and "Traceback" not in err, err
+    code, text, err = _g2quad(capsys, src, "--fit", "--edges", 100, "--json", out)
+    assert code == 2 and not out.exists(), err
+    assert "its start's piece" in err and "its end's" not in err, err
+    assert "--edges 101 covers it" in err, err
+    code, text, err = _g2quad(capsys, src, "--fit", "--edges", 101, "--json", out)
+    assert code == 0 and json.loads(out.read_text())["covers_source"] and err == "", err
     code, text, err = _g2quad(capsys, src, "--fit", "--edges", 200)
     assert code == 0 and "warning" not in err, err
 

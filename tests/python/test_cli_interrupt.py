@@ -92,3 +92,57 @@ def test_call_returns_at_keyboardinterrupt_while_the_worker_runs():
         assert call(threading.current_thread) is not threading.current_thread()
         with pytest.raises(ZeroDivisionError):
             call(lambda: 1 / 0)
+
+
+_HOOK = """import signal, sys
+class _InterruptAt:     # SIGINT to this process as it starts importing the module named
+    def find_spec(self, name, path=None, target=None):
+        if name == {module!r}:
+            signal.raise_signal(signal.SIGINT)
+        return None
+sys.meta_path.insert(0, _InterruptAt())
+"""
+
+
+def _command(tmp_path, how: str):
+    """The argv of the elastica command started as ``how``: "-m" (python -m libelastica) or
+    "script" (the console script pip writes from pyproject.toml's [project.scripts])."""
+    if how == "-m":
+        return [sys.executable, "-m", "libelastica"]
+    import tomllib
+    root = os.path.join(os.path.dirname(__file__), "..", "..")
+    with open(os.path.join(root, "python", "pyproject.toml"), "rb") as f:
+        target = tomllib.load(f)["project"]["scripts"]["elastica"]
+    module, func = target.split(":")
+    script = tmp_path / "bin" / "elastica"
+    script.parent.mkdir()
+    script.write_text(f"import sys\nfrom {module} import {func}\nsys.exit({func}())\n")
+    return [sys.executable, str(script)]
+
+
+@pytest.mark.parametrize("how", ["-m", "script"])
+@pytest.mark.parametrize("module", ["libelastica._ffi", "libelastica.cli"])
+def test_sigint_while_the_command_imports(tmp_path, how, module):
+    """SIGINT while the command still imports (numpy, cffi, the library: most of its 0.1 s
+    start-up; here raised as the import of ``module`` starts, by a sitecustomize) ends it as
+    Ctrl-C later does: exit 130, "elastica: interrupted", nothing written. Before: a
+    KeyboardInterrupt traceback, killed by SIGINT."""
+    (tmp_path / "hook").mkdir()
+    (tmp_path / "hook" / "sitecustomize.py").write_text(_HOOK.format(module=module))
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join(
+        [str(tmp_path / "hook")] + [p for p in os.environ.get("PYTHONPATH", "").split(os.pathsep) if p]))
+    sample = os.path.join(os.path.dirname(__file__), "..", "..", "examples", "sample_2d.csv")
+    out = tmp_path / "f.json"
+    r = subprocess.run(_command(tmp_path, how) + ["fit", sample, "--json", str(out)], env=env,
+                       capture_output=True, text=True, timeout=120)
+    assert r.returncode == 130 and r.stderr.strip() == "elastica: interrupted", r.stderr
+    assert r.stdout == "" and not out.exists()
+
+
+def test_a_program_importing_the_package_keeps_pythons_sigint():
+    """Only the command's process gets the start-up handler: a program (here -c) that
+    imports libelastica keeps Python's KeyboardInterrupt."""
+    r = subprocess.run([sys.executable, "-c", "import signal, libelastica\n"
+                        "print(signal.getsignal(signal.SIGINT) is signal.default_int_handler)"],
+                       capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0 and r.stdout.strip() == "True", r.stderr

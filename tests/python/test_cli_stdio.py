@@ -188,3 +188,24 @@ def test_mixed_separators_are_named(work, capsys):
     assert code == 2
     assert "mixed separators" in err and "line 1" in err, err
     assert f"of {len(pts)} rows" in err and "empty cell" not in err
+
+
+def test_g2quad_reads_a_fits_json_on_standard_input(work, monkeypatch, capsysbinary):
+    """`elastica fit a.csv --json - | elastica g2quad -`: '-' was read as points only ("standard
+    input: line 61: not a number: ']'"); JSON on standard input is now read as a .json file
+    is (the same record but for "file"), and points there as before."""
+    code, fit, err = binary(capsysbinary, "fit", "a.csv", "--model", "smooth", "--json", "-")
+    assert code == 0, err
+    (work / "fit.json").write_bytes(fit)
+    code, filed, err = binary(capsysbinary, "g2quad", "fit.json", "--json", "-")
+    assert code == 0, err
+    stdin(monkeypatch, fit)
+    code, piped, err = binary(capsysbinary, "g2quad", "-", "--json", "-")
+    assert code == 0 and err == "", err
+    a, b = json.loads(filed), json.loads(piped)
+    assert b.pop("file") == "-" and a.pop("file") == "fit.json" and a == b
+    stdin(monkeypatch, SAMPLE.read_bytes())
+    code, pts, err = binary(capsysbinary, "g2quad", "-", "--json", "-")
+    code2, pts_file, _ = binary(capsysbinary, "g2quad", "a.csv", "--json", "-")
+    a, b = json.loads(pts), json.loads(pts_file)
+    assert code == code2 == 0 and a.pop("file") == "-" and b.pop("file") == "a.csv" and a == b

@@ -69,12 +69,22 @@ def test_g2_quadratic_reports_the_kink_where_pieces_meet():
 
 
 @pytest.mark.parametrize("n", [3, 4])
-def test_g2_quadratic_warns_how_much_it_leaves_out(n):
-    """QA: with 3..4 edges the S's splines stop at the inflection, 1.405 short, and
-    Python said nothing (covers_source=False only). A CoverageWarning names the length."""
+def test_g2_quadratic_refuses_to_leave_part_out(n):
+    """With 3..4 edges the S's splines stop at the inflection, 1.405 short; Python warned
+    and returned them (as the CLI wrote them), where FreeCAD's feature is in error. Now a
+    CoverageError names the length and the fewest edges that cover (6: 4 does not, 5 has
+    no affine polyline; the search tries each count), the partial result on it;
+    partial=True returns it with the CoverageWarning; a count that covers does neither."""
     gone = S_CURVE.length - el.elastica_inflections(S_CURVE)[0]
+    with pytest.raises(el.CoverageError, match=f"{gone:.4g} at its end.*n = 6 covers it") as exc:
+        el.g2_quadratic(S_CURVE, n)
+    assert isinstance(exc.value, ValueError) and exc.value.edges == 6
+    assert not exc.value.result.covers_source and exc.value.result.dropped[1] == pytest.approx(gone)
+    assert el.g2_quadratic(S_CURVE, 6).covers_source
+    with pytest.raises(el.DomainError):
+        el.g2_quadratic(S_CURVE, 5)
     with pytest.warns(el.CoverageWarning, match=f"{gone:.4g} at its end"):
-        g = el.g2_quadratic(S_CURVE, n)
+        g = el.g2_quadratic(S_CURVE, n, partial=True)
     assert not g.covers_source and g.dropped == pytest.approx((0.0, gone), abs=1e-12)
     with warnings.catch_warnings():
         warnings.simplefilter("error", el.CoverageWarning)
@@ -201,7 +211,9 @@ def test_g2quad_command_says_where_it_is_not_g2(tmp_path, capsys):
     assert rec["end_curvature_error"] < 1.0
     assert "relative to the source's curvature scale" in text
     code, text, err = _g2quad(capsys, src, "--edges", 3)
-    assert code == 0 and "left out (1.4 of its length" in err, err
+    # an end left out is an error naming the --edges that cover it (test_affine's arch)
+    assert code == 2 and "--edges 3 leaves out its end's piece" in err, err
+    assert "(1.4 of the source's length" in err and "--edges 6 covers it" in err, err
 
 
 def test_polyline_moves_with_rounding_of_its_input_only_as_its_conditioning_says():

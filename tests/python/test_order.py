@@ -137,6 +137,30 @@ def test_cli_in_curve_order_names_the_file_rows(capsys, tmp_path, step):
     assert np.all(np.delete(dist, row) < 0.3)
 
 
+def test_cli_in_curve_order_names_the_wander_gaps_file_rows(capsys, tmp_path):
+    """The sketch whose fit swings between its points 16 and 17 (fit_data.swinging_sketch),
+    its rows shuffled and fitted --order curve: the JSON's "wander_gap" was 16, a place in
+    curve order (the file's rows 16 and 17 are other points); now "wander_points" names the
+    two points' file rows (the warning's places), and in file order (the sketch as drawn)
+    the gap's two rows, beside "wander_gap" as before."""
+    from fit_data import swinging_sketch
+    P = swinging_sketch()
+    perm = np.random.default_rng(3).permutation(len(P))
+    rows = [int(np.flatnonzero(perm == i)[0]) for i in (16, 17)]
+    assert rows != [16, 17]
+    f, out = tmp_path / "sketch.csv", tmp_path / "fit.json"
+    np.savetxt(f, P[perm], delimiter=",", header="x,y", comments="")
+    code, _, err = cli(capsys, "fit", f, "--model", "smooth", "--order", "curve", "--json", out)
+    doc = json.loads(out.read_text())
+    assert code == 0 and doc["wander_points"] == rows and "wander_gap" not in doc, err
+    places = " and ".join(f"({P[perm][r][0]:.4g}, {P[perm][r][1]:.4g})" for r in rows)
+    assert f"between the points at {places}" in err, err
+    np.savetxt(f, P, delimiter=",", header="x,y", comments="")
+    code, _, err = cli(capsys, "fit", f, "--model", "smooth", "--json", out)
+    doc = json.loads(out.read_text())
+    assert code == 0 and doc["wander_gap"] == 16 and doc["wander_points"] == [16, 17], err
+
+
 def test_keyline_of_a_shuffled_scan_warns():
     P = tile_scan()
     with pytest.warns(el.OrderWarning, match="curve_order"):

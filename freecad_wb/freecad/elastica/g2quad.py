@@ -40,34 +40,15 @@ def g2quad_core(edges, plane=None, nedges=24):
     g, plane = _g2quad(edges, plane, n)
     if not g.covers_source:     # QA17 M2: half an S drawn as a valid result
         gone = " + ".join(length_mark(d, 4) for d in g.dropped if d > 0)
-        more = _covering_edges(edges, plane, n)
+        # the binding's search (el.g2_quadratic's CoverageError's), the chain sampled per count
+        more = el().covering_edges(lambda m: _g2quad(edges, plane, m)[0], n,
+                                   errors=(InputProblem,))
         raise InputProblem(f"Edges = {n} leaves out {gone} of the source beyond an inflection "
                            "(too short for 3 edges): " + (
                                f"Edges = {more} covers it" if more else
-                               f"none up to Edges = {min(COVER_SEARCH * n, 5000)} tried "
+                               f"none up to Edges = {el().g2quad.cover_search_limit(n)} tried "
                                "covers it"))
     return {"result": g, "placement": plane}
-
-
-# the largest Edges tried for one that covers the source: this many times the given Edges
-COVER_SEARCH = 4
-
-
-def _covering_edges(edges, plane, n):
-    """The fewest Edges above ``n`` whose B-splines cover the source, or None: each of the
-    next 16 counts, then steps of 1/4 up to COVER_SEARCH n (and 5000). Not monotone: a
-    count between can fail (a stretch without affine arc length)."""
-    top = min(COVER_SEARCH * n, 5000)
-    tries = list(range(n + 1, min(n + 16, top) + 1))
-    while tries and tries[-1] < top:
-        tries.append(min(top, tries[-1] + max(1, tries[-1] // 4)))
-    for m in tries:
-        try:
-            if _g2quad(edges, plane, m)[0].covers_source:
-                return m
-        except InputProblem:
-            continue
-    return None
 
 
 def _g2quad(edges, plane, n):
@@ -77,9 +58,9 @@ def _g2quad(edges, plane, n):
         xy, plane = plane_coordinates(pts, plane, flat=1e-6, what="source edges")
         rot = plane.Rotation.inverted()
         tan = np().array([tuple(rot.multVec(App.Vector(*t)))[:2] for t in tangents])
-        with warnings.catch_warnings():   # the Status says what is left out
+        with warnings.catch_warnings():   # g2quad_core says what is left out
             warnings.simplefilter("ignore", el().CoverageWarning)
-            g = el().g2_quadratic(xy, n, tangents=tan)
+            g = el().g2_quadratic(xy, n, tangents=tan, partial=True)
     except InputProblem:
         raise
     except el().DomainError as exc:
