@@ -45,16 +45,21 @@ class PackageTest(unittest.TestCase):
                         names |= {a.name for a in node.names}
             self.assertFalse(names & gui, (f, names & gui))
 
-    def test_missing_library_names_the_command(self):
+    def _library_problem_with(self, so):
+        """The workbench's library_problem() in a fresh Python given LIBELASTICA_PATH=so."""
         import subprocess
         import sys as _sys
-        env = dict(os.environ, LIBELASTICA_PATH="/nonexistent/libelastica.so",
+        env = dict(os.environ, LIBELASTICA_PATH=so,
                    PYTHONPATH=os.pathsep.join([WB, os.path.join(S.ROOT, "python")]))
         py = "/usr/bin/python3" if os.path.exists("/usr/bin/python3") else _sys.executable
         out = subprocess.run([py, "-c", "from freecad.elastica import library_problem; "
                               "print(library_problem())"], env=env, capture_output=True,
                              text=True, timeout=60)
         self.assertEqual(out.returncode, 0, out.stderr)
+        return out
+
+    def test_missing_library_names_the_command(self):
+        out = self._library_problem_with("/nonexistent/libelastica.so")
         self.assertIn(f"make -C {S.ROOT} freecad-install", out.stdout)
         from freecad.elastica import library_problem
         self.assertEqual(library_problem(), "")
@@ -65,7 +70,6 @@ class PackageTest(unittest.TestCase):
         the command, instead of FreeCAD dying of a struct written past its end."""
         import shutil
         import subprocess
-        import sys as _sys
         import tempfile
         with tempfile.TemporaryDirectory() as tmp:
             so = os.path.join(tmp, "libelastica.so")
@@ -75,13 +79,7 @@ class PackageTest(unittest.TestCase):
             if cc is None:
                 self.skipTest("no C compiler")
             subprocess.run([cc, "-shared", "-fPIC", os.path.join(tmp, "other.c"), "-o", so], check=True)
-            env = dict(os.environ, LIBELASTICA_PATH=so,
-                       PYTHONPATH=os.pathsep.join([WB, os.path.join(S.ROOT, "python")]))
-            py = "/usr/bin/python3" if os.path.exists("/usr/bin/python3") else _sys.executable
-            out = subprocess.run([py, "-c", "from freecad.elastica import library_problem; "
-                                  "print(library_problem())"], env=env, capture_output=True,
-                                 text=True, timeout=60)
-        self.assertEqual(out.returncode, 0, out.stderr)
+            out = self._library_problem_with(so)
         self.assertIn("does not match the binding", out.stdout)
         self.assertIn(so, out.stdout)
         self.assertIn(os.path.join(S.ROOT, "include", "elastica.h"), out.stdout)
