@@ -134,7 +134,7 @@ def test_sigint_while_the_command_imports(tmp_path, how, module):
     sample = os.path.join(os.path.dirname(__file__), "..", "..", "examples", "sample_2d.csv")
     out = tmp_path / "f.json"
     r = subprocess.run(_command(tmp_path, how) + ["fit", sample, "--json", str(out)], env=env,
-                       capture_output=True, text=True, timeout=120)
+                       capture_output=True, text=True, timeout=120, preexec_fn=_sigint_default)
     assert r.returncode == 130 and r.stderr.strip() == "elastica: interrupted", r.stderr
     assert r.stdout == "" and not out.exists()
 
@@ -144,5 +144,5 @@ def test_a_program_importing_the_package_keeps_pythons_sigint():
     imports libelastica keeps Python's KeyboardInterrupt."""
     r = subprocess.run([sys.executable, "-c", "import signal, libelastica\n"
                         "print(signal.getsignal(signal.SIGINT) is signal.default_int_handler)"],
-                       capture_output=True, text=True, timeout=120)
+                       capture_output=True, text=True, timeout=120, preexec_fn=_sigint_default)
     assert r.returncode == 0 and r.stdout.strip() == "True", r.stderr
