@@ -9,7 +9,7 @@ import os
 import signal
 import sys
 
-INTERRUPTED = 130       # as cli.main's: 128 + SIGINT
+INTERRUPTED = 130       # 128 + SIGINT: the exit status of every Ctrl-C (cli.main too)
 
 
 def _is_command() -> bool:

@@ -19,6 +19,7 @@ from typing import Optional, Sequence
 import numpy as np
 
 from ._ffi import NotConvergedError
+from ._entry import INTERRUPTED
 from ._interrupt import end_if_a_call_runs, interruptible
 from .cli_common import (EXIT_BADINPUT, EXIT_INTERNAL, EXIT_NOCONV, EXIT_OK, PROG, _finite,
                          _input_map, _mapped_bspline, _table, tol_option)
@@ -743,8 +744,8 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
         return EXIT_BADINPUT
     except KeyboardInterrupt as exc:
         print(f"{PROG}: interrupted", file=sys.stderr)
-        end_if_a_call_runs(exc, 130)    # (the outputs are aborted above)
-        return 130
+        end_if_a_call_runs(exc, INTERRUPTED)    # (the outputs are aborted above)
+        return INTERRUPTED
     except Exception as exc:   # a bug: one line unless ELASTICA_DEBUG asks for the traceback
         if os.environ.get("ELASTICA_DEBUG"):
             raise
