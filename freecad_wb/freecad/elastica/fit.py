@@ -166,6 +166,7 @@ class FitProxy(FeatureProxy):
         points kept, State up to date, until the feature was touched), as FreeCAD asks a
         feature whether it must execute besides its touched properties
         (FeaturePythonImp::mustExecute)."""
+        # (FreeCAD may ask before onDocumentRestored's setup added CsvStamp to an old file's)
         return bool(obj.CsvFile) and "CsvStamp" in obj.PropertiesList and \
             csv_stamp(obj.CsvFile) != obj.CsvStamp
 
@@ -184,11 +185,11 @@ class FitProxy(FeatureProxy):
         obj.Distances = [float(d) for d in r["distances"]]
         from libelastica.io import curve_to_dict
         obj.Curves = json.dumps([curve_to_dict(c) for c in r["curves"]])
-        old = getattr(obj, "CsvStamp", "")
+        old = obj.CsvStamp     # (setup added it, at creation or restore)
         if r["csv_stamp"] and old and r["csv_stamp"] != old and "Restore" not in obj.State:
             App.Console.PrintMessage(f"Elastica {obj.Label}: {obj.CsvFile} changed on disk: "
                                      "read again\n")
-        if "CsvStamp" in obj.PropertiesList and obj.CsvStamp != r["csv_stamp"]:
+        if old != r["csv_stamp"]:
             obj.CsvStamp = r["csv_stamp"]
         # lengths marked (units.exact_mark), said again when a panel opens (proxy.said)
         set_said(obj, "Status", r["status"] or "ok")

@@ -259,13 +259,14 @@ def _keyline(xy, model, step):
     discrete keyline's tails: (its ends in the plane, the length its first half's
     continuation adds before it), else None. The discrete halves fit the resampled polygon,
     which stops up to a step short of the points (seed 000 §5.3): their B-spline continues
-    each by its recursion to its end point's foot (KeylineFit.ends)."""
+    each by its recursion to its end point's foot (KeylineFit.ends). Returned with the
+    sparse verdict of fit_keyline (KeylineFit.sparse: the smooth keyline's rms, or None)."""
     n = np()
     with catch_warnings():                           # its Status says it
         simplefilter("ignore", el().ConvergenceWarning)
         simplefilter("ignore", el().OrderWarning)    # ordered by fit_core (file_order, curve_order)
         simplefilter("ignore", el().MisfitWarning)   # fit_core's _misfit says it
-        simplefilter("ignore", el().SparseWarning)   # fit_core's _coarse_keyline says it
+        simplefilter("ignore", el().SparseWarning)   # fit_core's _coarse_keyline says it (kf.sparse)
         kf = el().fit_keyline(xy, r=step, model=model)
     first, second = kf.first, kf.second
     to_plane = kf.to_input                           # the sides' results live in x''y''
@@ -279,7 +280,7 @@ def _keyline(xy, model, step):
     if kf.ends is not None:
         lead = first.curve.continued_to(kf.ends_local[0])
         tails = (kf.ends, polyline_length(n.vstack([first.curve.points()[-1:], lead])))
-    return halves, [first, second], data, feet, dist, rms, float(n.abs(dist).max()), tails
+    return (halves, [first, second], data, feet, dist, rms, float(n.abs(dist).max()), tails), kf.sparse
 
 
 def _coarse_polygon(xy, constraints, rms):
@@ -295,11 +296,10 @@ def _coarse_polygon(xy, constraints, rms):
             "from them: choose Model Smooth elastica for so few points"]
 
 
-def _coarse_keyline(xy, step, rms):
+def _coarse_keyline(xy, smooth, rms):
     """The warning for a discrete keyline of fewer than el.SPARSE_POINTS points whose cubic
-    lies rms from them where the smooth keyline lies far nearer (el.smooth_fits_better,
-    el.SparseWarning's verdict), else none."""
-    smooth = el().smooth_fits_better(xy, rms, keyline={"r": step})
+    lies rms from them where the smooth keyline lies far nearer, smooth: its rms where
+    fit_keyline found so (KeylineFit.sparse, el.SparseWarning's verdict), else None: none."""
     if smooth is None:
         return []
     return [f"the discrete keyline of {len(xy)} points lies {figure_mark(rms, 3)} from them "
@@ -411,12 +411,12 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
                                  end_edge)
         xy = n.ascontiguousarray(user[:, :2])
         constraints, free_rms, warnings, used, reversed_joins = {}, -1.0, [], None, []
-        free_dist = None
+        free_dist, keyline_sparse = None, None
         if split:
             default = _keyline_step(xy)
             _check_reach(xy, step, [0, -1], default)
             used = step if step > 0 else default
-            fitted = _keyline(xy, model, step if step > 0 else None)   # None: the default
+            fitted, keyline_sparse = _keyline(xy, model, step if step > 0 else None)   # None: the default
         else:
             fixed = {}
             if step > 0:
@@ -457,7 +457,7 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         # to its distance in it (a scan off its plane fits 0.02 mm in it, 0.45 mm in 3D)
         plane_rms = _rms(dist)
         if model == "discrete" and split:   # the user's points to the keyline drawn
-            warnings = warnings + _coarse_keyline(xy, step if step > 0 else None, plane_rms)
+            warnings = warnings + _coarse_keyline(xy, keyline_sparse, plane_rms)
         # judged by the library's fit of the points it fitted (a resampled polygon's: the
         # drawn curve's distances to the points carry the step's cost, said apart), without
         # end conditions (their cost is said apart: the free fit); a keyline's by the points'

@@ -607,10 +607,10 @@ class G2QuadPanel(Panel):
                 + (f"where the pieces meet: tangents {o.JoinAngle:.2g}\u00b0 apart, curvature "
                    f"jump {per_length(o.JoinCurvatureJump, 2)} (not G2 there)<br>"
                    if o.Pieces > 1 else "")
-                + f"tangent off the source's at its ends by "
-                f"{getattr(o, 'SourceEndTangentError', o.EndTangentError):.2g}\u00b0"
+                + f"tangent off the source's at its ends by {o.SourceEndTangentError:.2g}\u00b0"
                 + (f", at any piece's end (the inflections) by at most "
-                   f"{o.EndTangentError:.2g}\u00b0" if o.Pieces > 1 else "") + f"; end curvature by {ek}<br>{said_now(o, 'Status')}")
+                   f"{o.EndTangentError:.2g}\u00b0" if o.Pieces > 1 else "")
+                + f"; end curvature by {ek}<br>{said_now(o, 'Status')}")
 
 
 class CombPanel(Panel):
