@@ -432,6 +432,7 @@ double el__fit_denorm_param(int model, int j, double v, double cx, double cy, do
  * spacing (guess.c); _plain: the plain differences alone (equal spacing). */
 double el__fit_noise_rms(const double *xy, size_t n, double sc);
 double el__fit_noise_plain(const double *xy, size_t n, double sc);
+int el__fit_check_points(const double *xy, size_t n, size_t nmin);
 
 /* ------------------------------------------------------------------ results */
 

@@ -153,7 +153,7 @@ int el_fit_noise(const double *xy, size_t n, double *noise)
 {
     double cx, cy, sc, nu;
     int st;
-    if (!xy || n < 4 || !noise || el__all_finite(xy, 2 * n)) return EL_EINVAL;
+    if (el__fit_check_points(xy, n, 4) || !noise) return EL_EINVAL;
     if ((st = el__fit_normalisation(xy, n, &cx, &cy, &sc))) return st;
     if ((st = noise_figure(xy, n, sc, 0, &nu))) return st;
     *noise = nu * sc * 0.70710678118654752;

@@ -98,7 +98,8 @@ double el__fit_denorm_param(int model, int j, double v, double cx, double cy, do
     return v;
 }
 
-static int check_points(const double *xy, size_t n, size_t nmin)
+/* EL_EINVAL unless xy holds n >= nmin finite points (the fit's entry points' test) */
+int el__fit_check_points(const double *xy, size_t n, size_t nmin)
 {
     if (!xy || n < nmin) return EL_EINVAL;
     return el__all_finite(xy, 2 * n) ? EL_EINVAL : EL_OK;
@@ -194,7 +195,7 @@ static double fractions_next(fractions *f)
 
 int el_fit_fractions(const double *xy, size_t n, int mode, double *t, int *mode_used)
 {
-    if (check_points(xy, n, 2) || !t || mode < EL_PARAM_AUTO || mode > EL_PARAM_CHORD)
+    if (el__fit_check_points(xy, n, 2) || !t || mode < EL_PARAM_AUTO || mode > EL_PARAM_CHORD)
         return EL_EINVAL;
     points p = {xy, n, 0.0, 0.0, 1.0};
     int st = el__fit_normalisation(xy, n, &p.cx, &p.cy, &p.sc);
@@ -594,7 +595,7 @@ static void to_internal(int model, const cguess *g, size_t n, double *v)
 static int guess_run(int model, const double *xy, size_t n, int mode, void *cand, size_t cap,
                      size_t *count)
 {
-    if (check_points(xy, n, 4) || !cand || cap == 0 || !count) return EL_EINVAL;
+    if (el__fit_check_points(xy, n, 4) || !cand || cap == 0 || !count) return EL_EINVAL;
     if (mode < EL_PARAM_AUTO || mode > EL_PARAM_CHORD) return EL_EINVAL;
     el__gsl_quiet();
     points p = {xy, n, 0.0, 0.0, 1.0};
