@@ -441,6 +441,16 @@ static int solve_sibling(el__spchain *w, const double *xy, size_t n, const el_sp
     return st == EL_ENOCONV && !w->near ? el__spline_length_by_tension(w, opt->max_steps, opt->length / S, 0) : st;
 }
 
+/* Of a G2 batten reached through a fold (first) and the one by the other path (g, its
+ * status st), the fairer (el__g2_fairer) into g, the other freed: EL_OK, or EL_ENOMEM */
+static int keep_fairer(el__spchain *first, el__spchain *g, int st)
+{
+    const int f = st || g->near ? 0 : el__g2_fairer(first, g);
+    if (f < 0 || st == EL_ENOMEM) { el__chain_free(first); return EL_ENOMEM; }
+    if (!f) { el__chain_free(g); *g = *first; g->near = 0; } else el__chain_free(first);
+    return EL_OK;
+}
+
 /*
  * G2 ends (spline_guide.c): from the sibling w (its G2 ends clamped only;
  * sib: the status of its solve) into g, the guides placed on it and the end
@@ -481,11 +491,7 @@ static int solve_g2(el__spchain *w, el__spchain *g, int sib, int max_steps, cons
         }
     }
     if (!arc) return st;
-    const int f = st || g->near ? 0 : el__g2_fairer(&first, g);
-    if (f < 0 || st == EL_ENOMEM) { el__chain_free(&first); return EL_ENOMEM; }
-    if (!f) { el__chain_free(g); *g = first; return EL_OK; }
-    el__chain_free(&first);
-    return EL_OK;
+    return keep_fairer(&first, g, st);
 }
 
 /* Tension mode's G2 batten by its length (spline_g2_tension.c): one solve by length as
@@ -672,12 +678,7 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
             if (arc) memset(&g, 0, sizeof g);
             g2_length c = {&w, &g, xy, kg, n, opt, Lp, S};
             st = el__spline_g2_tension_by_length(&g, g2_at_length, &c, Lp / S, opt->sigma * S * S);
-            if (arc) {
-                const int f = st || g.near ? 0 : el__g2_fairer(&first, &g);
-                if (f < 0 || st == EL_ENOMEM) { el__chain_free(&first); st = EL_ENOMEM; goto done; }
-                if (!f) { el__chain_free(&g); g = first; g.near = 0; } else el__chain_free(&first);
-                st = EL_OK;
-            }
+            if (arc) st = keep_fairer(&first, &g, st);
         }
     }
     if (st == EL_ENOMEM) goto done;
