@@ -40,6 +40,12 @@ static int solves(const double *xy, size_t n, const el_spline_options *opt, doub
     return ok;
 }
 
+/* Rung j of the ladder from top: top x 2^(-j/4) */
+static double rung(double top, int j)
+{
+    return top * pow(2.0, -(double)j / 4.0);
+}
+
 /* Where the rungs are first tried: the one just below (sigma h^2 on the longest span) */
 #define LIKELY 510.0
 
@@ -61,27 +67,27 @@ int el__spline_largest(const double *xy, size_t n, const el_spline_options *opt,
     const double top = fmin(asked, 1024.0);
     /* rung j: top x 2^(-j/4), j = 1 .. jmax (>= 100); j0: the first at or below LIKELY */
     int jmax = 15;
-    while (jmax >= 1 && top * pow(2.0, -(double)jmax / 4.0) < 100.0) jmax--;
+    while (jmax >= 1 && rung(top, jmax) < 100.0) jmax--;
     if (jmax < 1) return EL_OK;
     int j0 = 1;
-    while (j0 < jmax && top * pow(2.0, -(double)j0 / 4.0) > LIKELY) j0++;
+    while (j0 < jmax && rung(top, j0) > LIKELY) j0++;
     /* up from j0 until two rungs in a row fail (the highest that solved: best), else down
      * from below j0 to the first that solves */
     double got[2] = {0.0, 0.0}, g[2];
     int best = 0, fails = 0, s;
     for (int j = j0; j >= 1 && fails < 2; j--) {
         (*nsolves)++;
-        if ((s = solves(xy, n, opt, h2, top * pow(2.0, -(double)j / 4.0), g)) < 0) return EL_ENOMEM;
+        if ((s = solves(xy, n, opt, h2, rung(top, j), g)) < 0) return EL_ENOMEM;
         fails = s ? 0 : fails + 1;
         if (s) { best = j; got[0] = g[0]; got[1] = g[1]; }
     }
     for (int j = j0 + 1; !best && j <= jmax; j++) {
         (*nsolves)++;
-        if ((s = solves(xy, n, opt, h2, top * pow(2.0, -(double)j / 4.0), got)) < 0) return EL_ENOMEM;
+        if ((s = solves(xy, n, opt, h2, rung(top, j), got)) < 0) return EL_ENOMEM;
         if (s) best = j;
     }
     if (!best) return EL_OK;
-    double lo = top * pow(2.0, -(double)best / 4.0), hi = lo * pow(2.0, 0.25);
+    double lo = rung(top, best), hi = lo * pow(2.0, 0.25);
     for (int i = 0; i < 3; i++) {
         const double mid = pow(lo * hi, 0.5);
         (*nsolves)++;
