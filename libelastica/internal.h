@@ -406,6 +406,7 @@ int el__spline_follow(el__spchain *w, el__spsnap sv[2], int max_steps, double dt
                       double aim, double accept, el__cont_rest *rest);
 void el__snap_save(const el__spchain *w, el__spsnap *s);
 void el__snap_load(el__spchain *w, const el__spsnap *s);
+void el__snap_load_states(el__spchain *w, const el__spsnap *s);
 /* The chain set to the state f x (b - a) beyond b (secant predictor; b itself if a piece state is invalid). */
 void el__snap_predict(el__spchain *w, const el__spsnap *a, const el__spsnap *b, double f);
 /* A tension solution longer than EL__SP_WANDER x its ducks' polygon winds away from them;

@@ -67,10 +67,7 @@ static void memo_save(el__spchain *w, rung_memo *mm, int st)
 
 static void memo_load(el__spchain *w, const rung_memo *mm, int i)
 {
-    if (mm->st[i] == EL_OK || mm->near[i]) {
-        el__snap_load(w, &mm->s[i]);
-        for (size_t j = 0; j < w->m; j++) memcpy(w->pc[j].st, mm->s[i].st + j * EL__NV, sizeof w->pc[j].st);
-    }
+    if (mm->st[i] == EL_OK || mm->near[i]) el__snap_load_states(w, &mm->s[i]);
     w->sigma = mm->sigma[i];
     w->near = mm->near[i];
     w->resid = mm->resid[i];

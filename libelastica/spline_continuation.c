@@ -25,6 +25,13 @@ void el__snap_load(el__spchain *w, const el__spsnap *s)
     w->sigma = s->sigma;
 }
 
+/* el__snap_load, and each piece's el__spiece state from the snapshot */
+void el__snap_load_states(el__spchain *w, const el__spsnap *s)
+{
+    el__snap_load(w, s);
+    for (size_t j = 0; j < w->m; j++) memcpy(w->pc[j].st, s->st + j * EL__NV, sizeof w->pc[j].st);
+}
+
 /* The state at f = (t - tb)/(tb - ta) beyond b on the line through a and b
  * (knot values, sigma, el__spiece states); b itself if a piece state is invalid. */
 static void predict(el__spchain *w, const el__spsnap *a, const el__spsnap *b, double f)

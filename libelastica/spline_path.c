@@ -447,8 +447,7 @@ static int from_neighbour(el__spchain *w, int max_steps, double target, size_t i
     w->sigma = target * NEAR_TENSIONS[i];
     *l = 0;
     if (loopy) {   /* the same solve again would reach the same solution (a fresh start) */
-        el__snap_load(w, nb);
-        for (size_t j = 0; j < w->m; j++) memcpy(w->pc[j].st, nb->st + j * EL__NV, sizeof w->pc[j].st);
+        el__snap_load_states(w, nb);
         *l = 1;
     } else {
         const int sn = solve_tension_once(w, max_steps, 1);
