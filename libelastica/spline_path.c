@@ -38,6 +38,14 @@ static double total_length(const el__spchain *w)
     return L;
 }
 
+/* Longer than 4 x its ducks' polygon (el_spline_result's loops says so) */
+static int too_long(const el__spchain *w)
+{
+    double poly = 0.0;
+    for (size_t j = 0; j < w->m; j++) poly += w->pc[j].h;
+    return total_length(w) > 4.0 * poly;
+}
+
 /* From the tension solution in w to the one at sigma (to EL__SP_NEAR); EL_OK or EL_ENOCONV. */
 static int move_sigma(el__spchain *w, el__spsnap sv[2], int *steps, double sigma)
 {
@@ -334,9 +342,7 @@ static int taut_start(el__spchain *w, int max_steps, double target, double aim, 
     /* the taut batten, or nothing: a solution that winds away from its ducks is not it (2 closed
      * rings of random ducks at sigma h^2 ~ 30 ended crossing themselves); loose (TAUT_LOOPS): one
      * that loops is kept unless longer than 4 x its polygon (el_spline_result's loops says so) */
-    double poly = 0.0;
-    for (size_t j = 0; j < w->m; j++) poly += w->pc[j].h;
-    const int wd = loose ? total_length(w) > 4.0 * poly : el__chain_wanders(w);
+    const int wd = loose ? too_long(w) : el__chain_wanders(w);
     if (wd) w->near = 0;
     return wd ? EL_ENOCONV : st;
 }
@@ -431,9 +437,7 @@ enum { NNEAR = sizeof NEAR_TENSIONS / sizeof NEAR_TENSIONS[0] };
  * no reason to look further); -1 out of memory */
 static int loops_away(const el__spchain *w)
 {
-    double poly = 0.0;
-    for (size_t j = 0; j < w->m; j++) poly += w->pc[j].h;
-    return total_length(w) > 4.0 * poly ? 1 : el__chain_crosses(w);
+    return too_long(w) ? 1 : el__chain_crosses(w);
 }
 
 /* The neighbour i solved (its loops_away into *l) and followed to target: EL_OK there,
