@@ -701,6 +701,65 @@ START_TEST(g2_blend_past_folds_in_the_end_curvature)
 }
 END_TEST
 
+/*
+ * The bend parameter's Jacobian column (spline_chain.c chain_direction; spline_g2_bend.c
+ * bend_arc): kg = bend_k + tau bend_dk enters the end knots' rows of el__chain_eval as
+ * (kg[0] - kappa0) ell[0] and (kappa1 - kg[1]) ell[n-1], the pseudo-arclength row as
+ * bend_c (tau - bend_t0). On a solved guided chain (two points, G2 ends) with bend = 1,
+ * the column the Newton step assembles (bcol / bmat) equals the central difference of
+ * the residuals in tau, every knot row and the border row.
+ */
+START_TEST(bend_parameter_column_matches_finite_differences)
+{
+    el__spchain w, g;
+    memset(&w, 0, sizeof w);
+    memset(&g, 0, sizeof g);
+    ck_assert_int_eq(el__chain_alloc(&w, 2, 1), EL_OK);
+    w.tol = 1e-10; w.max_iter = 60; w.aim = 1e-11; w.sigma = 1.0;
+    w.pc[0].dx = 1.0; w.pc[0].dy = 0.0; w.pc[0].h = 1.0;
+    const double th[2] = {0.4, -0.3};
+    for (int e = 0; e < 2; e++) {
+        w.ell[e] = 1.0;
+        w.kind[e] = EL_SPLINE_G2;
+        w.th_end[e] = th[e];
+        w.x[e] = th[e];
+        w.slot[e] = EL__SLOT_FIXED;   /* clamped in the sibling */
+    }
+    ck_assert_int_eq(el__chain_start_pieces(&w), EL_OK);
+    ck_assert_int_eq(el__chain_newton(&w, 60, w.aim, w.tol), EL_OK);
+    ck_assert_int_eq(el__guides_setup(&g, &w), EL_OK);
+    ck_assert_int_eq(el__chain_newton(&g, 60, g.aim, g.tol), EL_OK);
+    const size_t n = g.n;
+    /* as bend_arc sets it up: from the sibling's end curvatures towards others */
+    for (int e = 0; e < 2; e++) g.bend_k[e] = g.kg[e];
+    g.bend_dk[0] = 0.8;
+    g.bend_dk[1] = -0.5;
+    for (size_t i = 0; i < n; i++) { g.arc_a[i] = 0.1 * (double)(i + 1); g.arc_x0[i] = g.x[i]; }
+    g.bend_c = 0.6; g.bend_t0 = 0.0; g.arc_h = 1e-3; g.tau = 0.0;
+    g.bend = 1;
+    double F[2][8], B[2];
+    ck_assert(n + 1 <= 8);
+    for (int sgn = 0; sgn < 2; sgn++) {
+        g.tau = sgn ? 1e-7 : -1e-7;
+        ck_assert(isfinite(el__chain_eval(&g, 0)));
+        memcpy(F[sgn], g.F, n * sizeof *g.F);
+        B[sgn] = g.Bres;
+    }
+    g.tau = 0.0;
+    el__chain_newton(&g, 1, 0.0, 0.0);   /* one step: assembles the Jacobian at tau = 0 */
+    const int cb = g.ng + (g.lmode != 0);   /* tau's border index */
+    for (size_t r = 0; r <= n; r++) {
+        const int rb = r == n ? cb : g.border[r];
+        const double col = rb < 0 ? g.bcol[cb * n + r] : g.bmat[rb * EL__MAX_BORDER + cb];
+        const double fd = r == n ? (B[1] - B[0]) / 2e-7 : (F[1][r] - F[0][r]) / 2e-7;
+        ck_assert_msg(fabs(fd - col) <= 1e-6 * (1.0 + fabs(fd)), "row %zu: column %.10g vs fd %.10g", r, col, fd);
+        if (r == 0 || r == n - 1 || r == n) ck_assert(fabs(fd) > 0.1);   /* kg and tau do enter there */
+    }
+    el__chain_free(&g);
+    el__chain_free(&w);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("spline_g2");
@@ -718,6 +777,7 @@ int main(void)
     tcase_add_test(tc, initial_sibling_keeps_its_branch);
     tcase_add_test(tc, walls_at_tension_zero_are_solved_by_length);
     tcase_add_test(tc, g2_blend_past_folds_in_the_end_curvature);
+    tcase_add_test(tc, bend_parameter_column_matches_finite_differences);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }
