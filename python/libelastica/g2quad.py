@@ -494,14 +494,17 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
             if is_curve:
                 raise
             raise _noisy_points_error(exc, samples) from None
-        # (spans 0..2 / the last 3 are the ones _matched_ends' moves of x_1, x_2 change)
-        nspan = len(bs.knots) - 1
-        mid = (3, nspan - 3) if nspan >= 6 else (0, 0)
-        parts = [(0, nspan)] if mid == (0, 0) else [(0, 3), (nspan - 3, nspan)]
-        pmid = _spline_deviation(bs, samples, t_ends[p], t_ends[p + 1], mid)
-        pdev = max([pmid] + [_spline_deviation(bs, samples, t_ends[p], t_ends[p + 1], q)
-                             for q in parts])
-        if ends_dir is not None and (first or last):
+        if ends_dir is None or not (first or last):
+            pdev = _spline_deviation(bs, samples, t_ends[p], t_ends[p + 1])
+        else:
+            # (spans 0..2 / the last 3 are the ones _matched_ends' moves of x_1, x_2 change:
+            # the middle one measured once for both candidates)
+            nspan = len(bs.knots) - 1
+            mid = (3, nspan - 3) if nspan >= 6 else (0, 0)
+            parts = [(0, nspan)] if mid == (0, 0) else [(0, 3), (nspan - 3, nspan)]
+            pmid = _spline_deviation(bs, samples, t_ends[p], t_ends[p + 1], mid)
+            pdev = max([pmid] + [_spline_deviation(bs, samples, t_ends[p], t_ends[p + 1], q)
+                                 for q in parts])
             # the source's end tangents held too, unless that takes the piece farther from
             # the source (a loop at 12 edges: 0.0277 against 0.0214, its ends 8.8 deg off)
             xt = _matched_ends(ap.points[a:b + 1], ends[p], ends[p + 1],
