@@ -78,7 +78,12 @@ def noise_level(points) -> float:
     (third differences) and, from WINDOW_POINTS points on, :func:`window_noise`'s, of them
     and of every k-th of them (_spread_noise)."""
     pts = as_points(points, "noise_level: points", 2)
-    return max(_noise(pts), window_noise(pts), _spread_noise(pts))
+    return _noise_level(pts, _noise(pts))
+
+
+def _noise_level(pts: np.ndarray, plain: float) -> float:
+    """noise_level of checked points whose _noise is ``plain``."""
+    return max(plain, window_noise(pts), _spread_noise(pts))
 
 
 def _noise(pts: np.ndarray) -> float:
@@ -230,7 +235,7 @@ def _verdict(pts: np.ndarray, d: np.ndarray, rms_all: float, corner: bool = True
     from .fit import far_points
     if len(far_points(d, pts)):               # glitches pull the fit: said apart, refit without
         return None
-    noise = max(noise, window_noise(pts), _spread_noise(pts))
+    noise = _noise_level(pts, noise)
     rms, extent = rms_all, float(np.max(np.ptp(pts, axis=0)))
     if not (rms > MISFIT_RATIO * noise and rms > MISFIT_FLOOR * extent):
         return None
