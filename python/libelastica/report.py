@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import math
 import os
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import List, Optional, Sequence, Tuple, Union
 from xml.sax.saxutils import escape
@@ -264,29 +264,26 @@ def thinned(pic: Picture) -> Picture:
     evenly along it (residual segments with the data, the first layer), each polyline at
     most MAX_VERTICES vertices; a parameter line says how many were drawn. Pictures
     within these bounds are returned as they are."""
-    def thin(xy, line):
-        if len(xy) > (MAX_VERTICES if line else MAX_MARKS):
-            return xy[_every(len(xy), MAX_VERTICES if line else MAX_MARKS)]
-        return xy
+    def most(item) -> int:       # a Layer's or Graph's limit: vertices of a bare line, else marks
+        return MAX_VERTICES if item.line and not item.marker else MAX_MARKS
 
-    big = [len(L.xy) for L in pic.layers if len(L.xy) > (MAX_VERTICES if L.line and not L.marker
-                                                          else MAX_MARKS)]
+    def thin(item, *fields):     # the item with its arrays ``fields`` cut to most(item)
+        n = len(getattr(item, fields[0]))
+        if n <= most(item):
+            return item
+        keep = _every(n, most(item))
+        return replace(item, **{f: getattr(item, f)[keep] for f in fields})
+
+    big = [len(L.xy) for L in pic.layers if len(L.xy) > most(L)]
     res = pic.residuals
     if res is not None and len(res[0]) > MAX_MARKS:
         big.append(len(res[0]))
         keep = _every(len(res[0]), MAX_MARKS)
         res = (res[0][keep], res[1][keep])
-    graphs = []
-    for g in pic.graphs:
-        line = g.line and not g.marker
-        if len(g.s) > (MAX_VERTICES if line else MAX_MARKS):
-            keep = _every(len(g.s), MAX_VERTICES if line else MAX_MARKS)
-            g = Graph(g.s[keep], g.kappa[keep], g.label, g.color, g.marker, g.line, g.primary)
-        graphs.append(g)
     if not big:
         return pic
-    layers = [Layer(thin(L.xy, L.line and not L.marker), L.label, L.color, L.marker, L.line,
-                    L.size) for L in pic.layers]
+    layers = [thin(L, "xy") for L in pic.layers]
+    graphs = [thin(g, "s", "kappa") for g in pic.graphs]
     return Picture(pic.title, layers, res, graphs,
                    pic.params + [f"drawn: at most {MAX_MARKS} of the {max(big)} points, evenly"])
 
