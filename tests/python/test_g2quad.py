@@ -154,6 +154,16 @@ def test_g2_quadratic_holds_the_sources_end_tangents(n, source):
     assert all(joint_jump(b) < 1e-9 for b in g.bsplines)
     if n == 24:
         assert g.deviation < 0.181
+    # x_1, x_2 slid (_slid, _hold_start) keep the end pieces affine arc-length polylines:
+    # A_i = det(v_i, v_{i+1}) the piece's A but at the end edge (_match_start frees it),
+    # to 1e-12 of |v_i| |v_{i+1}| (det's rounding: A / |v|^2 ~ 2e-3 at 1000 edges)
+    P = g.polyline
+    v = np.diff(P.points, axis=0)
+    A = v[:-1, 0] * v[1:, 1] - v[:-1, 1] * v[1:, 0]
+    scale = np.linalg.norm(v[:-1], axis=1) * np.linalg.norm(v[1:], axis=1)
+    (a0, b0), (a1, b1) = P.piece_start[:2], P.piece_start[-2:]
+    for held, A_piece in ((slice(a0 + 1, b0 - 1), P.A[0]), (slice(a1, b1 - 2), P.A[-1])):
+        assert np.all(np.abs(A[held] - A_piece) <= 1e-12 * scale[held]), (n, held)
 
 
 def test_end_curvature_error_is_relative_to_the_curvature_scale():
