@@ -166,9 +166,11 @@ def _decode(data: bytes, name: str) -> str:
 _NPY_MAGIC = b"\x93NUMPY"
 
 
-def _read_bytes(path: PathLike) -> bytes:
-    """The bytes of an input: '-' is standard input; a pipe or device (/dev/stdin, a
-    shell's <(...)) is read as a file is. InputError when missing or unreadable."""
+def read_input(path: PathLike) -> bytes:
+    """The bytes of an input: '-' is standard input (read once); a pipe or device
+    (/dev/stdin, a shell's <(...)) is read as a file is. InputError when missing or
+    unreadable. For :func:`read_points` or :func:`read_json` to parse (``data=``) after
+    :func:`looks_like_json` chose."""
     import sys
     if str(path) == "-":
         return sys.stdin.buffer.read()
@@ -182,12 +184,6 @@ def _read_bytes(path: PathLike) -> bytes:
     except OSError as exc:
         raise InputError(f"{path}: cannot read ({exc.strerror or exc.__class__.__name__})") \
             from None
-
-
-def read_input(path: PathLike) -> bytes:
-    """The bytes of an input ('-': standard input, read once), for :func:`read_points` or
-    :func:`read_json` to parse (``data=``) after :func:`looks_like_json` chose."""
-    return _read_bytes(path)
 
 
 def looks_like_json(data: bytes) -> bool:
@@ -213,7 +209,7 @@ def read_points(path: PathLike, min_points: int = 3, data: Optional[bytes] = Non
     (:func:`read_input`), ``path`` then naming it.
     """
     name = "standard input" if str(path) == "-" else str(path)
-    data = _read_bytes(path) if data is None else data
+    data = read_input(path) if data is None else data
     if data.startswith(_NPY_MAGIC) or (str(path) != "-" and Path(path).suffix.lower() == ".npy"):
         try:
             arr = np.load(_io.BytesIO(data), allow_pickle=False)
@@ -332,7 +328,7 @@ def write_json(obj: Any, path: PathLike) -> None:
 def read_json(path: PathLike, data: Optional[bytes] = None) -> Any:
     """Read a JSON file ('-': standard input; ``data``: its bytes read already, by
     :func:`read_input`); InputError when missing or malformed."""
-    data = _read_bytes(path) if data is None else data
+    data = read_input(path) if data is None else data
     if str(path) == "-":
         path = "standard input"
     try:

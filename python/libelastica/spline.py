@@ -12,7 +12,7 @@ from typing import List, Optional
 import numpy as np
 
 from ._ffi import (DomainError, LengthRangeError, NotConvergedError, as_int, as_points, as_real,
-                   as_vector, check, dptr, ffi, lib)
+                   check, dptr, ffi, lib)
 from .bspline import smooth_chain_to_bspline
 from .core import SMOOTH_PARAMS, SmoothElastica, arc_lengths, chain_eval, chain_starts
 
