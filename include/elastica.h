@@ -8,14 +8,16 @@
  * may be called from several threads at once.
  *
  * GSL's error handler: GSL reports errors through one process-wide handler
- * that aborts by default. The library turns it off (gsl_set_error_handler_off)
- * once, at its first GSL call, and checks the status of every GSL call itself,
- * mapping failures to EL_ codes; it validates arguments before GSL sees them,
- * so GSL has no error to report on any input (the fuzzer installs a handler
- * and counts every call of it as a finding). A program that installs its own
- * handler afterwards keeps it: it would be called only for an allocation
- * failure inside GSL (the function then returns EL_ENOMEM if the handler
- * returns). `make fuzz` checks this on every entry point.
+ * that aborts by default. At its first GSL call the library turns that default
+ * off (gsl_set_error_handler_off) once, and checks the status of every GSL call
+ * itself, mapping failures to EL_ codes; it validates arguments before GSL sees
+ * them, so GSL has no error to report on any input (the fuzzer installs a
+ * handler and counts every call of it as a finding). A program's own handler,
+ * installed before or after the first call, stays in place: it would be called
+ * only for an allocation failure inside GSL (the function then returns
+ * EL_ENOMEM if the handler returns). A program that wants GSL's abort back for
+ * its own GSL calls sets gsl_set_error_handler(NULL) after the library's first
+ * call. `make fuzz` checks this on every entry point.
  *
  * Sections follow the files in libelastica/: status, jacobi, smooth,
  * discrete, guess, fit, prep, order, hermite, spline, affine, bspline, blend.

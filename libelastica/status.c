@@ -25,11 +25,17 @@ const char *el_version(void) { return "0.1.0"; }
 
 static pthread_once_t gsl_quiet_once = PTHREAD_ONCE_INIT;
 
-static void gsl_handler_off(void) { gsl_set_error_handler_off(); }
+/* GSL has no getter for its handler: switching it off returns the one in place,
+ * and a program's own (non-NULL) handler goes back at once. */
+static void gsl_handler_off(void)
+{
+    gsl_error_handler_t *callers = gsl_set_error_handler_off();
+    if (callers) gsl_set_error_handler(callers);
+}
 
-/* GSL's error handler is process-wide and aborts by default: switch it off once,
- * race-free, before the library's first GSL call; every GSL status is then
- * mapped to an EL_ code by the caller. */
+/* GSL's error handler is process-wide and aborts by default (NULL): switch it
+ * off once, race-free, before the library's first GSL call, unless the program
+ * installed its own; every GSL status is then mapped to an EL_ code by the caller. */
 void el__gsl_quiet(void) { pthread_once(&gsl_quiet_once, gsl_handler_off); }
 
 int el__all_finite(const double *v, size_t n)
