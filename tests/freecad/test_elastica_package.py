@@ -45,6 +45,42 @@ class PackageTest(unittest.TestCase):
                         names |= {a.name for a in node.names}
             self.assertFalse(names & gui, (f, names & gui))
 
+    def test_the_binding_is_imported_through_ensure_binding_only(self):
+        """Only ensure_binding puts the source tree's python/ on sys.path: a workbench
+        module importing libelastica directly works only after something else called it
+        (QA18: a document reopened in a fresh FreeCAD printed 7 ModuleNotFoundErrors)."""
+        import ast
+        for f in sorted(os.listdir(PKG)):
+            if not f.endswith(".py") or f == "__init__.py":
+                continue
+            with open(os.path.join(PKG, f)) as fh:
+                tree = ast.parse(fh.read())
+            for node in ast.walk(tree):
+                names = ([a.name for a in node.names] if isinstance(node, ast.Import) else
+                         [node.module or ""] if isinstance(node, ast.ImportFrom) else [])
+                if any(n.split(".")[0] == "libelastica" for n in names):
+                    self.fail(f"{f}:{node.lineno} imports the binding directly")
+
+    def test_a_reopened_fit_reads_its_curves_in_a_fresh_freecad(self):
+        """The view provider's first call on a restored fit (stored_curves) in a FreeCAD
+        whose sys.path has not got the binding yet: the workbench finds it, as a user's."""
+        import subprocess
+        import FreeCAD as App
+        from freecad.elastica import fit as Fi
+        doc = S.new_doc("ElasticaFresh")
+        self.addCleanup(App.closeDocument, doc.Name)
+        f = Fi.make(doc, [(S.points_sketch(doc, S.keyline_xy()[0]), [])], Model="smooth")
+        doc.recompute()
+        path = S.temp_path(self, "fresh.FCStd")
+        doc.saveAs(path)
+        env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+        code = ("import FreeCAD as App; d = App.openDocument(%r); "
+                "from freecad.elastica import fit; c = fit.stored_curves(d.getObject(%r)); "
+                "print('STORED', len(c[0]), type(c[0][0]).__name__)" % (path, f.Name))
+        out = subprocess.run(["freecadcmd", "-c", code], env=env, capture_output=True,
+                             text=True, timeout=120)
+        self.assertIn("STORED 1 SmoothElastica", out.stdout, out.stdout + out.stderr)
+
     def _library_problem_with(self, so):
         """The workbench's library_problem() in a fresh Python given LIBELASTICA_PATH=so."""
         import subprocess

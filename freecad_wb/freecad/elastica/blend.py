@@ -13,8 +13,9 @@ import FreeCAD as App
 import Part
 
 from . import defaults
-from .geometry import (edge_end, el, global_element, is_sketch, nearest_parameter, np,
-                       part_bspline, plane_coordinates, plane_curvature, to_3d)
+from .geometry import (binding_module, edge_end, el, global_element, is_sketch,
+                       nearest_parameter, np, part_bspline, plane_coordinates, plane_curvature,
+                       to_3d)
 from .links import followed_edge
 from .units import (floor_digits, length_mark, length_text, length_unit_mark, per_area_mark,
                     per_length, per_length_mark, reach_mark, tension_mark, tension_text,
@@ -604,7 +605,7 @@ class BlendProxy(FeatureProxy):
                             enumerate(zip(obj.Lengths, obj.Energies, described))]
         obj.Poles = int(r["bspline"].npoles)
         obj.Plane = r["placement"]
-        from libelastica.io import curve_to_dict
+        curve_to_dict = binding_module("io").curve_to_dict
         sp = r.get("g2")
         obj.Curves = json.dumps([curve_to_dict(c) for c in (sp.pieces if sp else [curves[i]])])
         plc = r["placement"]

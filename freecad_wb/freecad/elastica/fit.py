@@ -16,7 +16,7 @@ import FreeCAD as App
 from . import defaults
 from .fit_core import DISTANCES, MODELS, fit_gathered
 from .fit_ends import CONTINUITIES
-from .geometry import el, part_bspline, to_3d
+from .geometry import binding_module, el, part_bspline, to_3d
 from .links import followed_edge, followed_reader
 from .proxy import (FeatureProxy, InputProblem, add_edge_end, add_enum, add_geometry_index,
                     add_length, add_link, add_property, edge_end_choice, new_feature, read_only,
@@ -183,7 +183,7 @@ class FitProxy(FeatureProxy):
         obj.DataPoints = [plc.multVec(App.Vector(*map(float, p))) for p in r["data"]]
         obj.FootPoints = to_3d(plc, r["feet"])
         obj.Distances = [float(d) for d in r["distances"]]
-        from libelastica.io import curve_to_dict
+        curve_to_dict = binding_module("io").curve_to_dict
         obj.Curves = json.dumps([curve_to_dict(c) for c in r["curves"]])
         old = obj.CsvStamp     # (setup added it, at creation or restore)
         if r["csv_stamp"] and old and r["csv_stamp"] != old and "Restore" not in obj.State:
@@ -225,7 +225,7 @@ def stored_curves(obj):
     """(curves, plane) from a feature's Curves JSON, or None."""
     if not getattr(obj, "Curves", ""):
         return None
-    from libelastica.io import curve_from_dict
+    curve_from_dict = binding_module("io").curve_from_dict
     try:
         return [curve_from_dict(d) for d in json.loads(obj.Curves)], obj.Plane
     except ValueError:

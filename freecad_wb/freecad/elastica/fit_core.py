@@ -14,7 +14,7 @@ import FreeCAD as App
 from .fit_ends import (CONSTRAINT_FIELDS, constraint_fields, constraint_problem, end_constraints,
                        facing_the_edges, field_names)
 from .fit_shape import foot_parameters, polygon_deviation, shape_bspline
-from .geometry import el, np, plane_coordinates, polyline_length, to_plane
+from .geometry import binding_module, el, np, plane_coordinates, polyline_length, to_plane
 from .nearest import drawn_distances, nearest_on
 from .proxy import InputProblem, check_degree, check_number, check_tolerance
 from .sources import curve_order, file_order
@@ -31,16 +31,14 @@ def _status_text(r):
     st = int(getattr(r, "status", 0))
     if st == 0:
         return "converged"
-    from libelastica._ffi import ffi, lib
-    return "not converged (best curve kept): " + ffi.string(lib.el_strerror(st)).decode()
+    c = binding_module("_ffi")
+    return "not converged (best curve kept): " + c.ffi.string(c.lib.el_strerror(st)).decode()
 
 
 def _fit(xy, **options):
     """el.fit without its warnings (the binding's quiet_fit): the feature says them in its own
     words (_wanders, its Status)."""
-    el()
-    from libelastica.fit import quiet_fit
-    return quiet_fit(xy, **options)
+    return binding_module("fit").quiet_fit(xy, **options)
 
 
 def _wanders(result, plane):

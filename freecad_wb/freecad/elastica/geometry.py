@@ -3,6 +3,8 @@ plane coordinates of 3D points (the sketch's plane or a fitted one), Part
 B-splines of library B-splines, and writing results into sketches."""
 from __future__ import annotations
 
+import importlib
+
 import FreeCAD as App
 import Part
 
@@ -13,6 +15,14 @@ from .proxy import InputProblem
 def el():
     """The libelastica binding (imported on first use)."""
     return ensure_binding()
+
+
+def binding_module(name):
+    """The binding's submodule ``libelastica.<name>``, the binding imported first: only
+    ensure_binding puts the source tree's python/ on sys.path (a document reopened in a
+    fresh FreeCAD draws its features before anything else imported the binding)."""
+    ensure_binding()
+    return importlib.import_module("libelastica." + name)
 
 
 def np():
@@ -173,8 +183,7 @@ def curve_bspline(curve, tol, degree):
     e = el()
     if isinstance(curve, e.SmoothElastica):
         return curve.to_bspline(tol=tol, degree=degree)
-    from libelastica.bspline import interpolate_c2
-    return interpolate_c2(curve.points())
+    return binding_module("bspline").interpolate_c2(curve.points())
 
 
 def chain_bspline(pieces, tol, degree, keyline=False, ends=None):

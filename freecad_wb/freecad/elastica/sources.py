@@ -14,7 +14,8 @@ from __future__ import annotations
 import FreeCAD as App
 import Part
 
-from .geometry import (dedup, el, global_element, global_points, global_shape, is_sketch, np)
+from .geometry import (binding_module, dedup, el, global_element, global_points, global_shape,
+                       is_sketch, np)
 from .proxy import InputProblem
 from .units import exact_mark
 
@@ -84,7 +85,7 @@ def gather_points(sources, csv_file="", samples_per_edge=60, link=None, element=
     which may be no curve's: file_order), closed: bool)."""
     el()
     if csv_file:
-        from libelastica.io import read_points
+        read_points = binding_module("io").read_points
         try:
             arr = read_points(csv_file, min_points=1)
         except ValueError as exc:

@@ -15,8 +15,8 @@ import warnings
 import FreeCAD as App
 
 from . import defaults
-from .geometry import (edge_end, el, nearest_parameter, np, part_bspline, plane_coordinates,
-                       plane_curvature, to_3d)
+from .geometry import (binding_module, edge_end, el, nearest_parameter, np, part_bspline,
+                       plane_coordinates, plane_curvature, to_3d)
 from .links import followed_edge, followed_reader
 from .units import coordinate_mark, length_mark, length_unit_mark, say, tension_mark
 from .proxy import (FeatureProxy, InputProblem, add_edge_end, add_enum, add_geometry_index,
@@ -507,7 +507,7 @@ class SplineProxy(FeatureProxy):
                           for x, y in r["forces"]]
         obj.Poles = int(bs.npoles)
         obj.Plane = plc
-        from libelastica.io import curve_to_dict
+        curve_to_dict = binding_module("io").curve_to_dict
         obj.Curves = json.dumps([curve_to_dict(c) for c in sp.pieces])
         cautions = r["warnings"]          # marked (units.say): said again in a panel
         if say(cautions) != list(obj.Warnings):
