@@ -19,10 +19,15 @@ int main(void)
         fprintf(stderr, "%s\n", el_strerror(st));
         return 1;
     }
+    el_bspline b = {0};          /* certified B-spline (EL_EMAXITER: the best one, honest) */
+    st = el_smooth_to_bspline(&p, 1e-6, 3, &b);
+    const size_t npoles = b.npoles;
+    el_bspline_free(&b);                                   /* whatever the status: b was zeroed */
+    if (st != EL_OK) return 1;
     el_discrete_params d = {.x0 = 0, .y0 = 0, .h = 0.1, .phi = 0, .z = 0.1, .q = 0, .k = 0.8};
     double v[100];
     if ((st = el_discrete_eval(&d, 50, v)) != EL_OK) return 1;
-    printf("libelastica %s: end point (%.6f, %.6f), energy %.6f, last vertex (%.6f, %.6f)\n",
-           el_version(), xy[198], xy[199], energy, v[98], v[99]);
+    printf("libelastica %s: end point (%.6f, %.6f), energy %.6f, B-spline of %zu poles, last vertex (%.6f, %.6f)\n",
+           el_version(), xy[198], xy[199], energy, npoles, v[98], v[99]);
     return 0;
 }
