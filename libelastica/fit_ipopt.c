@@ -72,6 +72,8 @@ typedef struct ipctx {
     double last_f, recent[LBFGS_RATE_SPAN];     /* cb_iter's stall and rate tests */
     int flat, n_iter, max_iter;
     int free;               /* L-BFGS without constraint rows or bounds: cb_iter stops it */
+    double rows_x[FIT_MAXX], rows[FIT_NCON];    /* the constraint rows at rows_x (keep_rows) */
+    int have_rows;
 } ipctx;
 
 /* Whether c->val holds the objective at x (with g and H when normal). */
@@ -177,6 +179,18 @@ int el__fit_constraint_rows(const fit_objective *o, const fit_constraints *con, 
     return rows;
 }
 
+/* The rows el__fit_constraint_rows returned (rows of them) at x, kept for cb_grad at the
+ * same x; 1 when there are c->m. */
+static int keep_rows(ipctx *c, const double *x, int rows, const double *cv)
+{
+    c->have_rows = rows == c->m;
+    if (c->have_rows) {
+        memcpy(c->rows_x, x, sizeof(double) * (size_t)c->nx);
+        memcpy(c->rows, cv, sizeof(double) * (size_t)c->m);
+    }
+    return c->have_rows;
+}
+
 static Bool cb_f(Index n, Number *x, Bool new_x, Number *obj, UserDataPtr ud)
 {
     (void)n; (void)new_x;
@@ -188,14 +202,17 @@ static Bool cb_f(Index n, Number *x, Bool new_x, Number *obj, UserDataPtr ud)
 
 static Bool cb_grad(Index n, Number *x, Bool new_x, Number *g, UserDataPtr ud)
 {
-    (void)n; (void)new_x;
+    (void)n;
     ipctx *c = ud;
     if (ensure(c, x, 1)) return FALSE;
     if (c->anchor) { memcpy(c->anchor, c->o->s, sizeof(double) * c->o->n); c->have_anchor = 1; }
     if (c->m > 0 && !fit_has_feet(c->o) && c->val.f < c->feas_f) {
         /* an iterate (Ipopt takes the gradient of each) within constr_viol_tol of the rows */
         double cv[FIT_NCON], worst = 0.0;
-        if (el__fit_constraint_rows(c->o, c->con, x, cv, NULL, NULL, c->tmp) == c->m) {
+        /* the rows cb_g or cb_jac_g computed at this x (keep_rows), if Ipopt asked for them first */
+        const int kept = !new_x && c->have_rows && !memcmp(c->rows_x, x, sizeof(double) * (size_t)c->nx);
+        if (kept) memcpy(cv, c->rows, sizeof(double) * (size_t)c->m);
+        if (kept || el__fit_constraint_rows(c->o, c->con, x, cv, NULL, NULL, c->tmp) == c->m) {
             for (int r = 0; r < c->m; r++) worst = fmax(worst, fabs(cv[r]));
             if (worst <= FIT_ROWS_TOL) {
                 c->feas_f = c->val.f;
@@ -218,7 +235,7 @@ static Bool cb_g(Index n, Number *x, Bool new_x, Index m, Number *g, UserDataPtr
     ipctx *c = ud;
     if (m == 0) return TRUE;
     /* (every value handed to Ipopt finite: MUMPS crashes on inf in its matrix) */
-    return el__fit_constraint_rows(c->o, c->con, x, g, NULL, NULL, c->tmp) == m &&
+    return keep_rows(c, x, el__fit_constraint_rows(c->o, c->con, x, g, NULL, NULL, c->tmp), g) &&
            !el__all_finite(g, (size_t)m);
 }
 
@@ -234,7 +251,7 @@ static Bool cb_jac_g(Index n, Number *x, Bool new_x, Index m, Index nele, Index 
         return TRUE;
     }
     double cv[FIT_NCON];
-    return el__fit_constraint_rows(c->o, c->con, x, cv, values, NULL, c->tmp) == m &&
+    return keep_rows(c, x, el__fit_constraint_rows(c->o, c->con, x, cv, values, NULL, c->tmp), cv) &&
            !el__all_finite(values, (size_t)m * (size_t)n);
 }
 
