@@ -359,11 +359,12 @@ int el__spline_solve_buckled(el__spchain *w, int max_steps, double dir, double L
 int el__spline_solve_near_line(el__spchain *w, int max_steps, double dir, double Lt);
 
 /* spline_limit.c: where tension mode failed at sigma h^2 >= EL__SP_STIFF_SH2 on the
- * longest span h, the largest tension (user units) that solves without loops, its spline's
- * resolution and least |1 - k^2| (el_spline_result's largest), all 0 where not looked for
- * or none of sigma h^2 >= 100 solves; *nsolves: the tension solves it made; EL_OK or EL_ENOMEM */
-int el__spline_largest(const double *xy, size_t n, const el_spline_options *opt, double largest[3],
-                       int *nsolves);
+ * longest span h (user units: the solve's, el_spline_solve), the largest tension (user
+ * units) that solves without loops, its spline's resolution and least |1 - k^2|
+ * (el_spline_result's largest), all 0 where not looked for or none of sigma h^2 >= 100
+ * solves; *nsolves: the tension solves it made; EL_OK or EL_ENOMEM */
+int el__spline_largest(const double *xy, size_t n, const el_spline_options *opt, double h,
+                       double largest[3], int *nsolves);
 /* spline.c: what one ulp of a piece's k moves its end state by near the separatrix, in
  * the residual's units (th: its end angles, kmax: its max |kappa|, h: its chord). */
 double el__spline_separatrix_bound(const el_smooth_params *p, const double th[2], double kmax, double h);

@@ -339,19 +339,6 @@ static int make_result(const el__spchain *w, const double *xy, size_t npoints, d
     return EL_OK;
 }
 
-int el_spline_solve(const double *xy, size_t n, const el_spline_options *opt,
-                    el_spline_result *res)
-{
-    const int st = el__spline_solve_paths(xy, n, opt, 1, res);
-    if (st != EL_ENOCONV) return st;
-    /* a high tension that fails: the largest that solves (spline_limit.c) */
-    double largest[3];
-    int nsolves;
-    if (el__spline_largest(xy, n, opt, largest, &nsolves)) { el_spline_result_free(res); return EL_ENOMEM; }
-    for (int i = 0; i < 3; i++) res->largest[i] = largest[i];
-    return st;
-}
-
 /*
  * The sibling from the caller's pieces (opt->initial): each piece's parameters
  * in the internal units, phi moved by whole turns so that the angles continue
@@ -569,8 +556,10 @@ static int by_tension_again(el__spchain *w, const double *xy, size_t n, const el
     return st;
 }
 
-int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *opt,
-                           int newton_first, el_spline_result *res)
+/* el__spline_solve_paths, with the longest span h (user units) into *longest once the
+ * chords are valid (el__spline_largest's h) */
+static int solve_paths(const double *xy, size_t n, const el_spline_options *opt, int newton_first,
+                       el_spline_result *res, double *longest)
 {
     if (!res) return EL_EINVAL;
     memset(res, 0, sizeof *res);
@@ -582,14 +571,16 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
     if (closed && n < 3) return EL_EINVAL;
     const size_t m = closed ? n : n - 1;
     /* chords; coincident consecutive points are invalid */
-    double Lp = 0.0, scale = 0.0;
+    double Lp = 0.0, scale = 0.0, hmax = 0.0;
     for (size_t i = 0; i < n; i++) scale = fmax(scale, fmax(fabs(xy[2 * i]), fabs(xy[2 * i + 1])));
     for (size_t j = 0; j < m; j++) {
         const size_t e = (j + 1) % n;
         const double h = hypot(xy[2 * e] - xy[2 * j], xy[2 * e + 1] - xy[2 * j + 1]);
         if (!(h > 4.0 * DBL_EPSILON * scale) || !isfinite(h)) return EL_EINVAL;
         Lp += h;
+        hmax = fmax(hmax, h);
     }
+    *longest = hmax;
     if (!isfinite(Lp)) return EL_EINVAL;
     const int lmode = opt->mode == EL_SPLINE_LENGTH;
     if (lmode && opt->length < Lp * (1.0 - 1e-14)) return EL_EDOM;
@@ -729,6 +720,27 @@ done:
     el_hermite_result_free(&hermite);
     el__chain_free(&w);
     el__chain_free(&g);
+    return st;
+}
+
+int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *opt,
+                           int newton_first, el_spline_result *res)
+{
+    double h;
+    return solve_paths(xy, n, opt, newton_first, res, &h);
+}
+
+int el_spline_solve(const double *xy, size_t n, const el_spline_options *opt,
+                    el_spline_result *res)
+{
+    double h = 0.0;
+    const int st = solve_paths(xy, n, opt, 1, res, &h);
+    if (st != EL_ENOCONV) return st;
+    /* a high tension that fails: the largest that solves (spline_limit.c) */
+    double largest[3];
+    int nsolves;
+    if (el__spline_largest(xy, n, opt, h, largest, &nsolves)) { el_spline_result_free(res); return EL_ENOMEM; }
+    for (int i = 0; i < 3; i++) res->largest[i] = largest[i];
     return st;
 }
 

@@ -49,19 +49,12 @@ static double rung(double top, int j)
 /* Where the rungs are first tried: the one just below (sigma h^2 on the longest span) */
 #define LIKELY 510.0
 
-int el__spline_largest(const double *xy, size_t n, const el_spline_options *opt, double largest[3],
-                       int *nsolves)
+int el__spline_largest(const double *xy, size_t n, const el_spline_options *opt, double h,
+                       double largest[3], int *nsolves)
 {
     largest[0] = largest[1] = largest[2] = 0.0;
     *nsolves = 0;
     if (opt->mode != EL_SPLINE_TENSION || !(opt->sigma > 0.0)) return EL_OK;
-    const int closed = opt->closed;
-    if (closed && xy[0] == xy[2 * n - 2] && xy[1] == xy[2 * n - 1]) n--;   /* as el_spline_solve */
-    double h = 0.0;
-    for (size_t j = 0; j + (closed ? 0 : 1) < n; j++) {
-        const size_t e = (j + 1) % n;
-        h = fmax(h, hypot(xy[2 * e] - xy[2 * j], xy[2 * e + 1] - xy[2 * j + 1]));
-    }
     const double h2 = h * h, asked = opt->sigma * h2;
     if (!(asked >= EL__SP_STIFF_SH2)) return EL_OK;
     const double top = fmin(asked, 1024.0);
