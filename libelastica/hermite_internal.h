@@ -5,8 +5,9 @@
  *   hermite_tension.c    all solutions for a given tension (seed 004 §4);
  *   hermite_poly.c       the polynomials (18), (40), (45), their real roots, the separatrix
  *                        crossings and the analysis (el_hermite_analyse);
- *   hermite_length.c     all solutions for a given length (hermite_length_chart.c: its
- *                        points in the charts; hermite_length_internal.h);
+ *   hermite_length.c     all solutions for a given length (hermite_length_trace.c: its
+ *                        tracing; hermite_length_chart.c: its points in the charts;
+ *                        hermite_length_internal.h);
  *   hermite_chain.c      a solution near the separatrix as a chain split at its saddles;
  *   hermite_near.c       the near-straight solution under tension, from the linear beam;
  *   hermite.c            the public entry points: normalisation, world-frame solutions.

@@ -1,7 +1,9 @@
 /*
- * Internal declarations of the length mode's two files:
- *   hermite_length.c        the tracing of the curves of tension solutions (C) and the
- *                           solutions of the given length on them;
+ * Internal declarations of the length mode's three files:
+ *   hermite_length.c        the search: the sigma range, the seed lines (tension solutions
+ *                           that start the tracing) and the traces from each seed;
+ *   hermite_length_trace.c  the tracing of a curve of tension solutions (C) from a seed and
+ *                           the solutions of the given length on it;
  *   hermite_length_chart.c  the points of C in the charts of the curvature data and the
  *                           passage from one chart to another.
  */
@@ -52,6 +54,11 @@ typedef struct {
     double line_sep;      /* the seed lines' separatrix pieces above this sigma (LINE_SEP_SIGMA) */
     hrootlist *out;
 } tracer;
+
+/* Follow C from seed number origin in the direction dir (+-1 along its tangent): its
+ * solutions (L = Lt) into T->out, the seeds it passes marked visited
+ * (hermite_length_trace.c). */
+int el__hlen_trace(tracer *T, int origin, double dir);
 
 /* el__hermite_solve_length with every trace followed through the seeds other traces
  * visited (step_events' plain counterpart, for test_hermite_length.c) */
