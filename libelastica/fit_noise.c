@@ -48,22 +48,24 @@ static double noise_plain(const double *xy, size_t n, double sc, double *d)
  * slope of y(x), small: the frame is nearly the tangent); e^2 has mean sigma^2 = rms^2 / 2
  * and median 0.454936 of that (a chi-square of one degree). On equal spacing w is
  * (-1, 3, -3, 1) (measured: within 1.05x of the truth on dense curves, 0.1 % and 1 %
- * noise, uniform, random or sketched spacing; 1.07x on 20 random points, 0.1 %). */
-static double noise_frame(const double *xy, size_t n, double sc, size_t cap, double *d)
+ * noise, uniform, random or sketched spacing; 1.07x on 20 random points, 0.1 %).
+ * The n points are every k-th of xy (point i at xy + 2 k i). */
+static double noise_frame(const double *xy, size_t n, size_t k, double sc, size_t cap, double *d)
 {
-    const size_t span = n - 5, m = span < cap ? span : cap;
+    const size_t span = n - 5, m = span < cap ? span : cap, step = 2 * k;
     const double inv = 1.0 / sc;
     size_t cnt = 0;
     for (size_t a = 0; a < m; a++) {
         const size_t i = 2 + a * span / m;
-        const double *o = xy + 2 * (i - 1);
+        const double *lo = xy + step * (i - 2), *o = lo + step, *hi = o + 4 * step;
         /* the frame's direction U unnormalised: e scales as |U| (y as |U|, w as |U|^3) */
-        const double ux = (xy[2 * (i + 3)] - xy[2 * (i - 2)]) * inv, uy = (xy[2 * (i + 3) + 1] - xy[2 * (i - 2) + 1]) * inv;
+        const double ux = (hi[0] - lo[0]) * inv, uy = (hi[1] - lo[1]) * inv;
         const double u2 = ux * ux + uy * uy;
         if (!(u2 > 0.0) || !isfinite(u2)) continue;
         double x[4], y[4];
-        for (int j = 0; j < 4; j++) {
-            const double dx = (o[2 * j] - o[0]) * inv, dy = (o[2 * j + 1] - o[1]) * inv;
+        const double *q = o;
+        for (int j = 0; j < 4; j++, q += step) {
+            const double dx = (q[0] - o[0]) * inv, dy = (q[1] - o[1]) * inv;
             x[j] = dx * ux + dy * uy;
             y[j] = dy * ux - dx * uy;
         }
@@ -93,39 +95,26 @@ static double noise_frame(const double *xy, size_t n, double sc, size_t cap, dou
     return sqrt(2.0 * med / 0.45493642311957283);
 }
 
-
-/* The frame figure of every k-th point, k = n / SPREAD_POINTS (noise_rms's check); -1
- * without memory. */
-static double noise_spread(const double *xy, size_t n, double sc, double *d)
-{
-    const size_t k = n / SPREAD_POINTS, m = n / k;
-    double *s = malloc(sizeof(double) * 2 * m);
-    if (!s) return -1.0;
-    for (size_t i = 0; i < m; i++) { s[2 * i] = xy[2 * i * k]; s[2 * i + 1] = xy[2 * i * k + 1]; }
-    const double wide = noise_frame(s, m, sc, NOISE_SAMPLES, d);
-    free(s);
-    return wide;
-}
-
 /* The smaller figure, d the stencils' buffer (NOISE_SAMPLES or n - 3 doubles). */
 static double noise_rms(const double *xy, size_t n, double sc, double *d)
 {
     const double plain = noise_plain(xy, n, sc, d);
-    double frame = n >= 6 ? noise_frame(xy, n, sc, FRAME_PROBE, d) : HUGE_VAL;
+    double frame = n >= 6 ? noise_frame(xy, n, 1, sc, FRAME_PROBE, d) : HUGE_VAL;
     /* beyond the probe's FRAME_PROBE stencils all of them only where the probe is below half
      * of plain: equally spaced data keep the plain figure to the bit at the probe's cost
      * (report_drv.c's 42 1000-point fits: +0.2 % instructions; all stencils: +3.8 %) */
     if (n - 5 > FRAME_PROBE)
-        frame = frame < 0.5 * plain ? noise_frame(xy, n, sc, NOISE_SAMPLES, d) : HUGE_VAL;
+        frame = frame < 0.5 * plain ? noise_frame(xy, n, 1, sc, NOISE_SAMPLES, d) : HUGE_VAL;
     /* points sorted along their curve (a dense scan in curve order, the spacing far below
      * the noise) lie nearly in line along it, scattered across: each stencil's chord runs
      * across the band, its cubic along the scatter, and the frame sees a fraction of the
      * noise (1e5 points, noise 0.05: 0.0014). The stencils of every k-th point span the
      * band: where their figure exceeds the plain one and SPREAD_CONFIRM x the frame's, it
      * is taken (noise-free curves: far below the plain figure; noisy uneven scans: about
-     * the frame's). */
+     * the frame's). k = n / SPREAD_POINTS, read in place. */
     if (frame < plain && n >= 2 * SPREAD_POINTS) {
-        const double wide = noise_spread(xy, n, sc, d);
+        const size_t k = n / SPREAD_POINTS;
+        const double wide = noise_frame(xy, n / k, k, sc, NOISE_SAMPLES, d);
         if (wide > SPREAD_CONFIRM * frame && wide > plain) return wide;
     }
     return fmin(plain, frame);
