@@ -592,18 +592,27 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     if check_ends and (constraints or fixed):
         r = checked_ends(r, fixed, dict(model=model, distance=distance, bounds=bounds, tol=tol,
                          limited_memory=limited_memory, max_candidates=max_candidates, param=param))
-    if check_misfit and distance != "paired":     # asked for, its rms is the pairing's
-        r = _judged(r, constraints or fixed or bounds)
+    if check_misfit:
+        r = _judged(r, judged_fit(r, constraints or fixed or bounds, distance))
     return r
 
 
-def _judged(r: FitResult, held) -> FitResult:
-    """r with its ``misfit`` (:func:`libelastica.misfit.misfit`, its points as fitted) and a
-    MisfitWarning where it lies far above the points' noise; held (end conditions, fixed
-    parameters): judged by the free fit (their cost is EndConditionWarning's), none where
-    there is none."""
+def judged_fit(r: FitResult, held, distance: Optional[str] = None) -> Optional[FitResult]:
+    """The fit whose misfit :func:`fit` judges (check_misfit; FreeCAD's fit judges the same):
+    r, or where it holds something (held: its end conditions, fixed parameters or bounds,
+    any truthy value) the fit with free ends it made (``r.free``: their cost is
+    EndConditionWarning's); None where there is none, it has no distances, or the fit was
+    asked to be paired (distance: :func:`fit`'s argument; its rms is the pairing's)."""
+    if distance == "paired":
+        return None
     judged = r.free if held else r
-    if judged is None or judged.distances is None:
+    return None if judged is None or judged.distances is None else judged
+
+
+def _judged(r: FitResult, judged: Optional[FitResult]) -> FitResult:
+    """r with its ``misfit`` (:func:`libelastica.misfit.misfit` of judged, :func:`judged_fit`,
+    its points as fitted) and a MisfitWarning where it lies far above the points' noise."""
+    if judged is None:
         return r
     m = _verdict(judged.points, judged.distances, judged.rms)
     if m is None:

@@ -83,6 +83,23 @@ def test_corner_is_warned_and_named(model):
     assert max(m.parts) < 0.35
 
 
+def test_judged_fit_is_the_fit_el_fit_judges():
+    """With an end condition el.fit judges the fit with free ends (their cost is
+    EndConditionWarning's), without one the fit itself, asked to be paired none: judged_fit
+    names it, for FreeCAD's Fit to judge the same one."""
+    from libelastica.fit import judged_fit
+    P = ship_line()
+    held = {"start_point": (float(P[0, 0]), float(P[0, 1]) + 20.0)}
+    r, said = _fit(P, model="smooth", constraints=held)
+    j = judged_fit(r, held)
+    assert j is r.free and j is not None and len(said) == 1
+    m = el.misfit(j.points, j.distances)
+    assert m.corner == r.misfit.corner and np.isclose(m.rms, r.misfit.rms, rtol=1e-12)
+    assert judged_fit(r, None) is r and judged_fit(r, held, "paired") is None
+    free, _ = _fit(P, model="smooth")
+    assert judged_fit(free, {}) is free and judged_fit(free, held) is None   # no free fit made
+
+
 @pytest.mark.parametrize("jump", [0.0, 20.0])
 def test_a_corner_is_a_tangent_jump(jump):
     """Two elasticae (150 + 119 uneven points, noise 0.2) joined tangent to tangent (their

@@ -41,6 +41,19 @@ def _fit(xy, **options):
     return binding_module("fit").quiet_fit(xy, **options)
 
 
+def _judged_fit(result, held, distance):
+    """The fit whose misfit el.fit judges (the binding's judged_fit)."""
+    el()
+    from libelastica.fit import judged_fit
+    return judged_fit(result, held, distance)
+
+
+def _distance(model, distance):
+    """The distance el.fit is asked for: the panel's for the smooth model, the library's
+    choice for the discrete one."""
+    return distance if model == "smooth" else None
+
+
 def _wanders(result, plane):
     """The warning for a fit in one piece that wanders away from its points between two of
     them (FitResult.wander_gap: it loops, strays, swings or passes them out of order, their
@@ -61,7 +74,7 @@ def _one_piece(xy, model, distance, fixed, constraints, fields):
     constraint_fields."""
     try:
         r = _fit(xy, model=model, fixed=fixed or None, constraints=constraints or None,
-                 distance=distance if model == "smooth" else None, check_ends=True)
+                 distance=_distance(model, distance), check_ends=True)
     except el().ConstraintError as exc:
         raise constraint_problem(exc, fields) from None
     return [r.curve], [r], xy, r.foot_points(), r.distances, r.rms, r.max_error, None
@@ -457,10 +470,10 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         if model == "discrete" and split:   # the user's points to the keyline drawn
             warnings = warnings + _coarse_keyline(xy, keyline_sparse, plane_rms)
         # judged by the library's fit of the points it fitted (a resampled polygon's: the
-        # drawn curve's distances to the points carry the step's cost, said apart), without
-        # end conditions (their cost is said apart: the free fit); a keyline's by the points'
-        judged = None if split or (model == "smooth" and distance == "paired") else \
-            results[0].free if constraints else results[0]
+        # drawn curve's distances to the points carry the step's cost, said apart), the one
+        # el.fit judges (judged_fit: without end conditions, their cost said apart; none
+        # where asked to be paired); a keyline's by the points'
+        judged = None if split else _judged_fit(results[0], constraints, _distance(model, distance))
         misfit = _misfit(user[:, :2], dist, plane, True) if split else \
             _misfit(judged.points, judged.distances, plane, False) if judged is not None else []
         dist = n.copysign(n.hypot(dist, user[:, 2]), dist)
