@@ -19,7 +19,7 @@ import warnings
 import FreeCAD as App
 
 from . import defaults
-from .geometry import el, np, part_bspline, plane_coordinates, to_3d
+from .geometry import el, ends_meet, np, part_bspline, plane_coordinates, to_3d
 from .links import followed_reader
 from .proxy import (FeatureProxy, InputProblem, add_enum, add_geometry_index, add_length,
                     add_link, add_property, check_number, check_tolerance, new_feature, read_only,
@@ -46,7 +46,7 @@ def _check_points(points, mode, closed):
     if n == 4 and not closed:
         pairs = [(i, j) for i in range(4) for j in range(i + 1, 4)]
     else:       # the composite: consecutive points (closed: the repeated first one dropped)
-        if closed and (points[0] - points[-1]).Length <= 1e-9 * (1.0 + extent):
+        if closed and ends_meet(points):
             points = points[:-1]
         pairs = [(i, i + 1) for i in range(len(points) - 1)] + (
             [(0, len(points) - 1)] if closed else [])

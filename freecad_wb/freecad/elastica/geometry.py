@@ -35,6 +35,19 @@ def polyline_length(xy):
     return float(np().sum(np().hypot(*np().diff(xy, axis=0).T)))
 
 
+def ends_meet(points):
+    """Whether three or more 3D points (mm) end where they start: the last within FreeCAD's
+    Precision.confusion() (1e-7 mm: a closed sketch's ends meet to it, Part closes a wire
+    through them) of the first, plus 1e-9 of their extent (as fit_ends' and sketch_curves'
+    Confusion: never less than points coincide to, ellblend's pairs)."""
+    if len(points) < 3:
+        return False
+    box = App.BoundBox()
+    for p in points:
+        box.add(p)
+    return (points[0] - points[-1]).Length <= Part.Precision.confusion() + 1e-9 * box.DiagonalLength
+
+
 def is_sketch(obj):
     return obj is not None and obj.isDerivedFrom("Sketcher::SketchObject")
 

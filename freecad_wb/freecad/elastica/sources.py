@@ -14,8 +14,8 @@ from __future__ import annotations
 import FreeCAD as App
 import Part
 
-from .geometry import (binding_module, dedup, el, global_element, global_points, global_shape,
-                       is_sketch, np)
+from .geometry import (binding_module, dedup, el, ends_meet, global_element, global_points,
+                       global_shape, is_sketch, np)
 from .proxy import InputProblem
 from .units import exact_mark
 
@@ -91,7 +91,7 @@ def gather_points(sources, csv_file="", samples_per_edge=60, link=None, element=
         except ValueError as exc:
             raise InputProblem(str(exc)) from None
         pts = [App.Vector(*(list(map(float, r)) + [0.0] * (3 - len(r)))) for r in arr]
-        closed = len(pts) > 2 and (pts[0] - pts[-1]).Length < 1e-9
+        closed = ends_meet(pts)
         return pts, None, None, closed
     if not sources:
         raise nothing_read("sketch edges or vertices, a Points object, a wire, or give a CSV "

@@ -15,7 +15,7 @@ import warnings
 import FreeCAD as App
 
 from . import defaults
-from .geometry import (binding_module, edge_end, el, nearest_parameter, np, part_bspline,
+from .geometry import (binding_module, edge_end, el, ends_meet, nearest_parameter, np, part_bspline,
                        plane_coordinates, plane_curvature, to_3d)
 from .links import followed_edge, followed_reader
 from .units import coordinate_mark, length_mark, length_unit_mark, say, tension_mark
@@ -155,12 +155,9 @@ def _solve(xy, mode, value, closed, start, end):
 
 
 def ends_at_start(points):
-    """Whether more than three 3D points end where they start: a closed wire's vertices
-    (its first again), or picks back to the first."""
-    if len(points) <= 3:
-        return False
-    extent = max((a - points[0]).Length for a in points)
-    return (points[0] - points[-1]).Length <= 1e-9 * (1.0 + extent)
+    """Whether more than three 3D points end where they start (geometry.ends_meet): a closed
+    wire's vertices (its first again), or picks back to the first."""
+    return len(points) > 3 and ends_meet(points)
 
 
 def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, closed=False,
