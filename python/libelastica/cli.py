@@ -486,6 +486,13 @@ def cmd_spline(args) -> int:
 
 # ------------------------------------------------------------------ parser
 
+# '-' in each output's and input's help (QA17: --dxf - wrote a file named '-'): an output to
+# standard output, the report then not printed; an input from standard input
+_TO_STDOUT = "; '-': standard output (the report is then not printed)"
+_PNG_TO_STDOUT = "; '-': standard output, if it is not a terminal (the report is then not printed)"
+_FROM_STDIN = "; '-': standard input (once)"
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser of the ``elastica`` command."""
     p = _Parser(prog=PROG, formatter_class=argparse.RawDescriptionHelpFormatter,
@@ -507,7 +514,8 @@ def build_parser() -> argparse.ArgumentParser:
                        description="Fit a discrete (seed 000) or smooth elastica to measured "
                                    "points; several files run as a batch with a summary table.",
                        epilog=FIT_EXAMPLES, formatter_class=raw)
-    f.add_argument("files", nargs="+", metavar="FILE", help="point files (2 or 3 columns)")
+    f.add_argument("files", nargs="+", metavar="FILE",
+                   help="point files (2 or 3 columns)" + _FROM_STDIN)
     f.add_argument("--model", choices=("discrete", "smooth"), default="discrete",
                    help="elastica model (default: discrete)")
     f.add_argument("--keyline", action="store_true",
@@ -540,9 +548,10 @@ def build_parser() -> argparse.ArgumentParser:
                    help="resample into an equilateral polygon of segment R first (--keyline "
                         "without it: the polyline through the medians of runs of the points, "
                         "cut into 100 segments)")
-    f.add_argument("--json", metavar="PATH", help="write the result as JSON ('-' = stdout)")
-    f.add_argument("--svg", metavar="PATH", help="write the report picture as SVG")
-    f.add_argument("--png", metavar="PATH", help="write the report picture as PNG (matplotlib)")
+    f.add_argument("--json", metavar="PATH", help="write the result as JSON" + _TO_STDOUT)
+    f.add_argument("--svg", metavar="PATH", help="write the report picture as SVG" + _TO_STDOUT)
+    f.add_argument("--png", metavar="PATH",
+                   help="write the report picture as PNG (matplotlib)" + _PNG_TO_STDOUT)
     f.add_argument("--bspline-tol", type=POSITIVE, metavar="TOL",
                    help="add the B-spline of the fitted curve (within TOL for smooth, default "
                         "1e-6 of its length with --dxf; "
@@ -552,7 +561,8 @@ def build_parser() -> argparse.ArgumentParser:
     f.add_argument("--max-iter", type=_ranged(int, lo=1), metavar="N",
                    help="iterations per start, of Levenberg-Marquardt and of Ipopt "
                         "where it runs (default 200)")
-    f.add_argument("--dxf", metavar="PATH", help="write the B-spline as a DXF SPLINE (ezdxf)")
+    f.add_argument("--dxf", metavar="PATH",
+                   help="write the B-spline as a DXF SPLINE (ezdxf)" + _TO_STDOUT)
     _units_option(f)
     f.add_argument("--progress", action="store_true",
                    help="always draw the batch progress bar (default: when stderr is a terminal)")
@@ -567,9 +577,10 @@ def build_parser() -> argparse.ArgumentParser:
     g = h.add_mutually_exclusive_group(required=True)
     g.add_argument("--tension", type=float, metavar="SIGMA", help="tension sigma")
     g.add_argument("--length", type=POSITIVE, metavar="L", help="arc length")
-    h.add_argument("--json", metavar="PATH", help="write the solutions as JSON ('-' = stdout)")
-    h.add_argument("--svg", metavar="PATH", help="picture of all solutions (SVG)")
-    h.add_argument("--png", metavar="PATH", help="picture of all solutions (PNG, matplotlib)")
+    h.add_argument("--json", metavar="PATH", help="write the solutions as JSON" + _TO_STDOUT)
+    h.add_argument("--svg", metavar="PATH", help="picture of all solutions (SVG)" + _TO_STDOUT)
+    h.add_argument("--png", metavar="PATH",
+                   help="picture of all solutions (PNG, matplotlib)" + _PNG_TO_STDOUT)
     h.add_argument("--bspline-tol", type=POSITIVE, metavar="TOL",
                    help="add every solution's B-spline within TOL to the JSON (default 1e-6 "
                         "of its length with --dxf)")
@@ -582,7 +593,7 @@ def build_parser() -> argparse.ArgumentParser:
                    help="the solution --dxf writes (default 0, the least energy; the table's "
                         "'crosses itself' column shows the fair ones)")
     h.add_argument("--dxf", metavar="PATH", help="write that solution's B-spline as a DXF SPLINE "
-                                                 "(ezdxf), p0 and p1 as points")
+                                                 "(ezdxf), p0 and p1 as points" + _TO_STDOUT)
     _units_option(h)
     h.set_defaults(func=cmd_hermite)
 
@@ -595,13 +606,14 @@ def build_parser() -> argparse.ArgumentParser:
                                    "vertices for a discrete one; a keyline's two sides make one "
                                    "B-spline through the joint).",
                        epilog=BSPLINE_EXAMPLES, formatter_class=raw)
-    b.add_argument("file", metavar="FIT.json", help="a JSON of fit, hermite, spline or bspline")
+    b.add_argument("file", metavar="FIT.json",
+                   help="a JSON of fit, hermite, spline or bspline" + _FROM_STDIN)
     b.add_argument("--solution", type=SOLUTION, metavar="N",
                    help="of a hermite JSON, solution N (default 0, the least energy)")
     b.add_argument("--tol", type=POSITIVE, help="tolerance (default 1e-6 of the curve's length)")
     b.add_argument("--degree", type=DEGREE, default=3, help="degree 3..7 (default 3)")
-    b.add_argument("--json", metavar="PATH", help="write the B-spline as JSON ('-' = stdout)")
-    b.add_argument("--dxf", metavar="PATH", help="write a DXF SPLINE (needs ezdxf)")
+    b.add_argument("--json", metavar="PATH", help="write the B-spline as JSON" + _TO_STDOUT)
+    b.add_argument("--dxf", metavar="PATH", help="write a DXF SPLINE (needs ezdxf)" + _TO_STDOUT)
     _units_option(b)
     b.set_defaults(func=cmd_bspline)
 
@@ -616,7 +628,7 @@ def build_parser() -> argparse.ArgumentParser:
                "  elastica spline ducks.csv --start-tangent 1 0 --start-curvature 0.2\n\n"
                "input: CSV, whitespace separated text or .npy, 2 columns (x, y)",
         formatter_class=raw)
-    sp.add_argument("file", metavar="FILE", help="the points (2 columns)")
+    sp.add_argument("file", metavar="FILE", help="the points (2 columns)" + _FROM_STDIN)
     g = sp.add_mutually_exclusive_group()
     g.add_argument("--tension", type=float, default=0.0, metavar="SIGMA",
                    help="tension sigma >= 0 in 1/units^2 of the points (in mm: 1e-6 x the same "
@@ -633,10 +645,13 @@ def build_parser() -> argparse.ArgumentParser:
                     help="add the B-spline within TOL to the JSON (default 1e-6 of its length "
                          "with --dxf)")
     sp.add_argument("--degree", type=DEGREE, default=3, help="B-spline degree 3..7 (default 3)")
-    sp.add_argument("--json", metavar="PATH", help="write the spline as JSON ('-' = stdout)")
-    sp.add_argument("--svg", metavar="PATH", help="picture with the curvature comb (SVG)")
-    sp.add_argument("--png", metavar="PATH", help="picture with the curvature comb (PNG)")
-    sp.add_argument("--dxf", metavar="PATH", help="write the B-spline as a DXF SPLINE (ezdxf)")
+    sp.add_argument("--json", metavar="PATH", help="write the spline as JSON" + _TO_STDOUT)
+    sp.add_argument("--svg", metavar="PATH",
+                    help="picture with the curvature comb (SVG)" + _TO_STDOUT)
+    sp.add_argument("--png", metavar="PATH",
+                    help="picture with the curvature comb (PNG)" + _PNG_TO_STDOUT)
+    sp.add_argument("--dxf", metavar="PATH",
+                    help="write the B-spline as a DXF SPLINE (ezdxf)" + _TO_STDOUT)
     _units_option(sp)
     sp.set_defaults(func=cmd_spline)
 
@@ -661,10 +676,11 @@ def build_parser() -> argparse.ArgumentParser:
                    "smooth where it closes (a repeated first point is dropped): 3 or 4 segments")
     e.add_argument("--tol", type=POSITIVE, metavar="TOL", help="add the cubic B-spline within TOL "
                    "(default 1e-6 of the curve's length with --dxf)")
-    e.add_argument("--json", metavar="PATH", help="write the result as JSON ('-' = stdout)")
-    e.add_argument("--svg", metavar="PATH", help="picture (SVG)")
-    e.add_argument("--png", metavar="PATH", help="picture (PNG, matplotlib)")
-    e.add_argument("--dxf", metavar="PATH", help="write the B-spline as a DXF SPLINE (ezdxf)")
+    e.add_argument("--json", metavar="PATH", help="write the result as JSON" + _TO_STDOUT)
+    e.add_argument("--svg", metavar="PATH", help="picture (SVG)" + _TO_STDOUT)
+    e.add_argument("--png", metavar="PATH", help="picture (PNG, matplotlib)" + _PNG_TO_STDOUT)
+    e.add_argument("--dxf", metavar="PATH",
+                   help="write the B-spline as a DXF SPLINE (ezdxf)" + _TO_STDOUT)
     _units_option(e)
     e.set_defaults(func=cmd_blend)
 
@@ -675,34 +691,22 @@ def build_parser() -> argparse.ArgumentParser:
                                    "B-spline per inflection-free piece, ending exactly on the "
                                    "curve's ends and inflections.",
                        epilog=G2QUAD_EXAMPLES, formatter_class=raw)
-    q.add_argument("file", metavar="FILE", help="points (a dense sampling: ~20 per edge) or FIT.json")
+    q.add_argument("file", metavar="FILE",
+                   help="points (a dense sampling: ~20 per edge) or FIT.json" + _FROM_STDIN)
     q.add_argument("--edges", type=int, metavar="N",
                    help="polyline edges (default: points/20, at least 6; 40 for a fit or --fit)")
     q.add_argument("--fit", action="store_true",
                    help="fit one smooth elastica to the points first and build from it: "
                         "measured or rounded points (the construction takes their second and "
                         "third differences)")
-    q.add_argument("--json", metavar="PATH", help="write the result as JSON ('-' = stdout)")
-    q.add_argument("--svg", metavar="PATH", help="picture (SVG)")
-    q.add_argument("--png", metavar="PATH", help="picture (PNG, matplotlib)")
-    q.add_argument("--dxf", metavar="PATH", help="write the B-splines as DXF SPLINEs (ezdxf)")
+    q.add_argument("--json", metavar="PATH", help="write the result as JSON" + _TO_STDOUT)
+    q.add_argument("--svg", metavar="PATH", help="picture (SVG)" + _TO_STDOUT)
+    q.add_argument("--png", metavar="PATH", help="picture (PNG, matplotlib)" + _PNG_TO_STDOUT)
+    q.add_argument("--dxf", metavar="PATH",
+                   help="write the B-splines as DXF SPLINEs (ezdxf)" + _TO_STDOUT)
     _units_option(q)
     q.set_defaults(func=cmd_g2quad)
-    for sp_ in (f, h, b, sp, e, q):
-        _dash_help(sp_)
     return p
-
-
-def _dash_help(parser) -> None:
-    """'-' in every subcommand's --help: an output to standard output (the report then not
-    printed), an input from standard input (QA17: --dxf - wrote a file named '-')."""
-    for a in parser._actions:
-        if a.dest in ("json", "svg", "png", "dxf") and a.help:
-            a.help = a.help.replace(" ('-' = stdout)", "") + (
-                "; '-': standard output, if it is not a terminal" if a.dest == "png" else
-                "; '-': standard output") + " (the report is then not printed)"
-        elif a.dest in ("file", "files") and a.help:
-            a.help += "; '-': standard input (once)"
 
 
 def main(argv: Optional[Sequence[str]] = None) -> int:
