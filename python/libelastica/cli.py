@@ -192,24 +192,23 @@ def cmd_hermite(args) -> int:
            "unrepresentable": missing, "solutions": recs}
     if args.json:
         write_json(out, args.outputs.path(args.json))
-    if args.json != "-":
-        # near the separatrix a chain of pieces ("curve": {"type": "chain", ...}), k its first piece's
-        print(_table(["#", "sigma", "length", "k", "energy", "inflection", "loops",
-                      "crosses itself", "max curvature", "kappa0", "kappa1", "residual"],
-                     [[r["index"], r["sigma"], r["length"], c.k, r["energy"],
-                       "yes" if r["has_inflection"] else "no", r["loops"],
-                       "YES" if r["crosses_itself"] else "no", r["max_curvature"], r["kappa0"],
-                       r["kappa1"], r["residual"]] for r, c in zip(recs, sols)]))
-        fair = [r["index"] for r in recs if not r["crosses_itself"]]
-        # a curve is named fair only when none is missing: the missing may be the fair one
-        # (QA: a near-straight bow's one returned curve, 2.19 x its chord, was called fair)
-        print(f"by energy; {len(sols) - len(fair)} of {len(sols)} cross themselves (a batten "
-              "cannot)" + (f"; {more}: none is named fair while they are missing" if missing
-                           else f": the fair ones are {', '.join(map(str, fair))}" if fair
-                           else ": none is fair"))
-        if b is not None:
-            print(f"B-spline of solution {chosen}: degree {b.degree}, {b.npoles} poles, "
-                  f"certified within {b.max_deviation:.3g}")
+    # near the separatrix a chain of pieces ("curve": {"type": "chain", ...}), k its first piece's
+    print(_table(["#", "sigma", "length", "k", "energy", "inflection", "loops",
+                  "crosses itself", "max curvature", "kappa0", "kappa1", "residual"],
+                 [[r["index"], r["sigma"], r["length"], c.k, r["energy"],
+                   "yes" if r["has_inflection"] else "no", r["loops"],
+                   "YES" if r["crosses_itself"] else "no", r["max_curvature"], r["kappa0"],
+                   r["kappa1"], r["residual"]] for r, c in zip(recs, sols)]))
+    fair = [r["index"] for r in recs if not r["crosses_itself"]]
+    # a curve is named fair only when none is missing: the missing may be the fair one
+    # (QA: a near-straight bow's one returned curve, 2.19 x its chord, was called fair)
+    print(f"by energy; {len(sols) - len(fair)} of {len(sols)} cross themselves (a batten "
+          "cannot)" + (f"; {more}: none is named fair while they are missing" if missing
+                       else f": the fair ones are {', '.join(map(str, fair))}" if fair
+                       else ": none is fair"))
+    if b is not None:
+        print(f"B-spline of solution {chosen}: degree {b.degree}, {b.npoles} poles, "
+              f"certified within {b.max_deviation:.3g}")
     for spec in (args.svg, args.png):
         if spec:
             what = f"tension {args.tension:g}" if args.tension is not None else \
@@ -341,12 +340,11 @@ def cmd_bspline(args) -> int:
     result = out[0] if len(out) == 1 else {"sides": out}
     if args.json:
         write_json(result, args.outputs.path(args.json))
-    if args.json != "-":
-        for name, b in zip(names, splines):
-            dev = (f"max deviation {b.max_deviation:.3g}" if b.max_deviation >= 0 else
-                   "interpolates the vertices (deviation between them not certified)")
-            print(f"{name}: B-spline degree {b.degree}, {b.npoles} poles, "
-                  f"{len(b.knots)} knots, {dev}")
+    for name, b in zip(names, splines):
+        dev = (f"max deviation {b.max_deviation:.3g}" if b.max_deviation >= 0 else
+               "interpolates the vertices (deviation between them not certified)")
+        print(f"{name}: B-spline degree {b.degree}, {b.npoles} poles, "
+              f"{len(b.knots)} knots, {dev}")
     if args.dxf:
         closed = all(isinstance(it, dict) and it.get("closed") for items in groups for it in items)
         write_dxf_spline(splines, args.outputs.path(args.dxf), units=args.units, closed=closed)
@@ -387,13 +385,12 @@ def cmd_blend(args) -> int:
         rec["bspline"] = b.to_dict()
     if args.json:
         write_json(rec, args.outputs.path(args.json))
-    if args.json != "-":
-        print(f"elliptic blend: k = {curve.basis.k:.6g} (m = {curve.basis.m:.6g}), "
-              f"d = {curve.basis.d:.6g}, K = {curve.basis.K:.6g}")
-        print(_table(["control point", "x", "y"], [[i, q[0], q[1]] for i, q in enumerate(curve.q)]))
-        if b is not None:
-            print(f"B-spline: degree {b.degree}, {b.npoles} poles, max deviation "
-                  f"{b.max_deviation:.3g}")
+    print(f"elliptic blend: k = {curve.basis.k:.6g} (m = {curve.basis.m:.6g}), "
+          f"d = {curve.basis.d:.6g}, K = {curve.basis.K:.6g}")
+    print(_table(["control point", "x", "y"], [[i, q[0], q[1]] for i, q in enumerate(curve.q)]))
+    if b is not None:
+        print(f"B-spline: degree {b.degree}, {b.npoles} poles, max deviation "
+              f"{b.max_deviation:.3g}")
     for spec in (args.svg, args.png):
         if spec:
             pic = curves_picture([(xy, s, kappa)], ["blend curve"], points=pts,
@@ -456,13 +453,12 @@ def cmd_spline(args) -> int:
            "bspline": bspline_to_dict(b) if b is not None else None}
     if args.json:
         write_json(rec, args.outputs.path(args.json))
-    if args.json != "-":
-        print(_table(["points", "pieces", "tension", "length", "energy", "max curvature",
-                      "residual"], [[len(sp.data), len(sp.pieces), sp.tension, sp.length,
-                                     sp.energy, sp.max_curvature, sp.residual]]))
-        if b is not None:
-            print(f"B-spline: degree {b.degree}, {len(b.poles)} poles, certified within "
-                  f"{b.max_deviation:.3g}")
+    print(_table(["points", "pieces", "tension", "length", "energy", "max curvature",
+                  "residual"], [[len(sp.data), len(sp.pieces), sp.tension, sp.length,
+                                 sp.energy, sp.max_curvature, sp.residual]]))
+    if b is not None:
+        print(f"B-spline: degree {b.degree}, {len(b.poles)} poles, certified within "
+              f"{b.max_deviation:.3g}")
     if args.dxf:
         write_dxf_spline(b, args.outputs.path(args.dxf), points=sp.data, units=args.units,
                          closed=sp.closed)

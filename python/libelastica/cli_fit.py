@@ -581,8 +581,7 @@ def cmd_fit(args) -> int:
     if args.json and "{stem}" not in args.json and (args.json == "-" or args.json.endswith(".json")):
         # each file's document, as one file's JSON holds it (a keyline's two sides together)
         write_json(docs, args.outputs.path(args.json))
-    if args.json != "-":
-        print(_table(["file", "model", "k", "rms", "max error", "status"], rows))
+    print(_table(["file", "model", "k", "rms", "max error", "status"], rows))
     n_noconv = sum(1 for r in all_recs if not r["converged"]) - bad
     if bad:
         print(f"{PROG}: {bad} of {len(files)} files had bad input", file=sys.stderr)

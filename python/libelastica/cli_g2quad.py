@@ -68,27 +68,26 @@ def cmd_g2quad(args) -> int:
                       "max_error": g.fit.max_error, "status": int(g.fit.status)}
     if args.json:
         write_json(rec, args.outputs.path(args.json))
-    if args.json != "-":
-        pieces = len(g.bsplines)
-        split = f"{pieces} pieces split at {pieces - 1} inflection(s)" if pieces > 1 else \
-            "1 inflection-free piece"
-        print(f"G2 quadratic B-spline: {split}, {n} edges, {g.npoles} poles (degree 2, "
-              "uniform inside)")
-        if g.fit is not None:
-            print(f"  source: a smooth elastica fitted to the {len(src)} points (--fit), rms "
-                  f"{g.fit.rms:.3g}, max error {g.fit.max_error:.3g} from them")
-        # in the input's coordinates, as the DXF (QA17 P6: 3D points printed the plane's 2D)
-        ends = [g.ends[0], g.ends[-1]] if frame is None else frame.to_3d(np.array([g.ends[0], g.ends[-1]]))
-        start, end = (", ".join(f"{v:.6g}" for v in e) for e in ends)
-        print(f"  starts at ({start}), ends at ({end}), exactly on the source")
-        print(f"  {g.g2_summary()}")
-        print(f"  largest distance from the source: {g.deviation:.3g}")
-        if g.end_tangent_error is not None:
-            print(f"  end tangents off the source's by at most {np.degrees(g.end_tangent_error):.3g} deg")
-        if g.end_curvature_error is not None:
-            print(f"  end curvature off the source's by at most {g.end_curvature_error:.3g} "
-                  "(relative to the source's curvature scale: |k - k_src| / max(|k_src|, "
-                  "max |kappa| of the source over the end piece))")
+    pieces = len(g.bsplines)
+    split = f"{pieces} pieces split at {pieces - 1} inflection(s)" if pieces > 1 else \
+        "1 inflection-free piece"
+    print(f"G2 quadratic B-spline: {split}, {n} edges, {g.npoles} poles (degree 2, "
+          "uniform inside)")
+    if g.fit is not None:
+        print(f"  source: a smooth elastica fitted to the {len(src)} points (--fit), rms "
+              f"{g.fit.rms:.3g}, max error {g.fit.max_error:.3g} from them")
+    # in the input's coordinates, as the DXF (QA17 P6: 3D points printed the plane's 2D)
+    ends = [g.ends[0], g.ends[-1]] if frame is None else frame.to_3d(np.array([g.ends[0], g.ends[-1]]))
+    start, end = (", ".join(f"{v:.6g}" for v in e) for e in ends)
+    print(f"  starts at ({start}), ends at ({end}), exactly on the source")
+    print(f"  {g.g2_summary()}")
+    print(f"  largest distance from the source: {g.deviation:.3g}")
+    if g.end_tangent_error is not None:
+        print(f"  end tangents off the source's by at most {np.degrees(g.end_tangent_error):.3g} deg")
+    if g.end_curvature_error is not None:
+        print(f"  end curvature off the source's by at most {g.end_curvature_error:.3g} "
+              "(relative to the source's curvature scale: |k - k_src| / max(|k_src|, "
+              "max |kappa| of the source over the end piece))")
     for spec in (args.svg, args.png):
         if spec:
             curves = []
