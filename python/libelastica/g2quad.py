@@ -329,37 +329,37 @@ def _hold_start(x: np.ndarray, start, end, kappa: float, tangent) -> Optional[np
 
 
 def _matched_ends(x: np.ndarray, start, end, k_start: Optional[float],
-                  k_end: Optional[float], t_start=None, t_end=None) -> np.ndarray:
+                  k_end: Optional[float], t_start=None,
+                  t_end=None) -> Tuple[np.ndarray, np.ndarray]:
     """The piece's polyline with x_1 / x_{m-1} moved so its G2 spline's ends have the
-    curvatures k_start / k_end (None, 0 or no such place: that end as it was), and where
-    the unit tangents t_start / t_end are given and m >= 7, x_1, x_2 / x_{m-1}, x_{m-2}
-    moved so they have those tangents too (_hold_start; no such place: the curvature
-    alone). The two ends' moves are independent for m >= 5 (x_1 depends on x_2, x_3 only;
-    x_{m-1} on x_{m-2}, x_{m-3}), for m >= 7 with x_2, x_{m-2} moved (on x_3, x_4 / x_{m-3},
-    x_{m-4}); fewer vertices are left as they are."""
+    curvatures k_start / k_end (None, 0 or no such place: that end as it was); and that
+    polyline with, where the unit tangents t_start / t_end are given and m >= 7, x_1, x_2 /
+    x_{m-1}, x_{m-2} moved instead so they have those tangents too (_hold_start; no such
+    place: the curvature alone), each end's moves found once for both. The two ends' moves
+    are independent for m >= 5 (x_1 depends on x_2, x_3 only; x_{m-1} on x_{m-2}, x_{m-3}),
+    for m >= 7 with x_2, x_{m-2} moved (on x_3, x_4 / x_{m-3}, x_{m-4}); fewer vertices are
+    left as they are."""
     if len(x) < 6:
-        return x
-    y = x.copy()
+        return x, x
+    y, held = x.copy(), x.copy()
     if k_start:
+        z = _match_start(x, start, end, k_start)
+        if z is not None:
+            y[1] = held[1] = z[1]
         z = _hold_start(x, start, end, k_start, t_start) \
             if t_start is not None and len(x) >= 8 else None
         if z is not None:
-            y[1:3] = z[1:3]
-        else:
-            z = _match_start(x, start, end, k_start)
-            if z is not None:
-                y[1] = z[1]
+            held[1:3] = z[1:3]
     if k_end:     # the same at the end, travelled backwards (its curvature changes sign)
         r = x[::-1].copy()
+        z = _match_start(r, end, start, -k_end)
+        if z is not None:
+            y[-2] = held[-2] = z[1]
         z = _hold_start(r, end, start, -k_end, -np.asarray(t_end)) \
             if t_end is not None and len(x) >= 8 else None
         if z is not None:
-            y[-3:-1] = z[2:0:-1]
-        else:
-            z = _match_start(r, end, start, -k_end)
-            if z is not None:
-                y[-2] = z[1]
-    return y
+            held[-3:-1] = z[2:0:-1]
+    return y, held
 
 
 def _rel_err(a: float, b: float, scale: float = 0.0) -> float:
@@ -486,15 +486,18 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
     for p in range(npieces):
         a, b = ap.piece_start[p], ap.piece_start[p + 1]
         first, last = p == 0 and covers[0], p == npieces - 1 and covers[1]
-        x = _matched_ends(ap.points[a:b + 1], ends[p], ends[p + 1],
-                          k_src[0] if first else None, k_src[1] if last else None)
+        held = ends_dir is not None and (first or last)
+        x, xt = _matched_ends(ap.points[a:b + 1], ends[p], ends[p + 1],
+                              k_src[0] if first else None, k_src[1] if last else None,
+                              ends_dir[p] if held and first else None,
+                              ends_dir[p + 1] if held and last else None)
         try:
             bs = g2_bspline(x, ends[p], ends[p + 1])
         except DomainError as exc:       # an end beside its joint's tangent: noisy points
             if is_curve:
                 raise
             raise _noisy_points_error(exc, samples) from None
-        if ends_dir is None or not (first or last):
+        if not held:
             pdev = _spline_deviation(bs, samples, t_ends[p], t_ends[p + 1])
         else:
             # (spans 0..2 / the last 3 are the ones _matched_ends' moves of x_1, x_2 change:
@@ -507,9 +510,6 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                                  for q in parts])
             # the source's end tangents held too, unless that takes the piece farther from
             # the source (a loop at 12 edges: 0.0277 against 0.0214, its ends 8.8 deg off)
-            xt = _matched_ends(ap.points[a:b + 1], ends[p], ends[p + 1],
-                               k_src[0] if first else None, k_src[1] if last else None,
-                               ends_dir[p] if first else None, ends_dir[p + 1] if last else None)
             if not np.array_equal(xt, x):
                 bt = g2_bspline(xt, ends[p], ends[p + 1])
                 tdev = max([pmid] + [_spline_deviation(bt, samples, t_ends[p], t_ends[p + 1], q)
