@@ -118,6 +118,21 @@ def _spread_noise(pts: np.ndarray) -> float:
     return window_noise(pts[::k]) if k >= 2 else 0.0
 
 
+def _polyfits(t: np.ndarray, Y: np.ndarray, degree: int, max_cond: Optional[float] = None):
+    """Least-squares polynomials of degree 2 or 3 in t, batched (windows of points): t (k, m)
+    the parameters, Y (k, m, c) the values, by the normal equations. Returns the design
+    matrices A (k', m, degree + 1) of 1, t, t^2 (, t^3), the coefficients (k', degree + 1,
+    c), lowest power first, and which windows are fitted: with max_cond, the k' whose normal
+    matrix's condition number is below it (a boolean mask), else all (None)."""
+    A = np.stack([np.ones_like(t), t, t * t, t ** 3][:degree + 1], -1)
+    ok = None
+    if max_cond is not None:
+        ok = np.linalg.cond(np.einsum("kmi,kmj->kij", A, A)) < max_cond
+        A, Y = A[ok], Y[ok]
+    c = np.linalg.solve(np.einsum("kmi,kmj->kij", A, A), np.einsum("kmi,kmc->kic", A, Y))
+    return A, c, ok
+
+
 def window_noise(points) -> float:
     """The rms of a point's distance to the smooth curve under it from cubics y(x) fitted in
     the principal frame of windows of WINDOW_POINTS consecutive points (up to WINDOW_SAMPLES
@@ -135,13 +150,10 @@ def window_noise(points) -> float:
     x = np.einsum("kmi,ki->km", C, u)
     y = C[:, :, 1] * u[:, [0]] - C[:, :, 0] * u[:, [1]]
     t = x / np.maximum(np.abs(x).max(axis=1, keepdims=True), np.finfo(float).tiny)
-    A = np.stack([np.ones_like(t), t, t * t, t ** 3], -1)
-    ok = np.linalg.cond(np.einsum("kmi,kmj->kij", A, A)) < 1e12      # not folded onto a point
+    A, c, ok = _polyfits(t, y[..., None], 3, max_cond=1e12)     # not folded onto a point
     if not np.any(ok):
         return 0.0
-    A, y = A[ok], y[ok]
-    c = np.linalg.solve(np.einsum("kmi,kmj->kij", A, A), np.einsum("kmi,km->ki", A, y)[..., None])
-    r = y - np.einsum("kmi,ki->km", A, c[..., 0])
+    r = y[ok] - np.einsum("kmi,ki->km", A, c[..., 0])
     return float(np.sqrt(np.median(np.sum(r * r, axis=1) / (m - 4)) / _WINDOW_MEDIAN))
 
 
@@ -161,9 +173,7 @@ def _turns(P: np.ndarray, w: int):
     def tangent(at):
         t = S - S[:, [at]]
         t = t / np.maximum(np.abs(t).max(axis=1, keepdims=True), 1e-300)
-        A = np.stack([np.ones_like(t), t, t * t], -1)
-        c = np.linalg.solve(np.einsum("mki,mkj->mij", A, A), np.einsum("mki,mck->mic", A, X))
-        return c[:, 1, :]
+        return _polyfits(t, X.transpose(0, 2, 1), 2)[1][:, 1, :]
     left, right = tangent(w)[:-w - 1], tangent(0)[w:-1]
     i = np.arange(w, len(P) - w)
     cross = left[:, 0] * right[:, 1] - left[:, 1] * right[:, 0]
