@@ -43,9 +43,7 @@ def _fit(xy, **options):
 
 def _judged_fit(result, held, distance):
     """The fit whose misfit el.fit judges (the binding's judged_fit)."""
-    el()
-    from libelastica.fit import judged_fit
-    return judged_fit(result, held, distance)
+    return binding_module("fit").judged_fit(result, held, distance)
 
 
 def _distance(model, distance):
