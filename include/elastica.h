@@ -1152,7 +1152,8 @@ typedef struct el_spline_result {
                               splines met on it, the greatest of those that do not cross
                               themselves (where none was followed: of tension mode's splines
                               met looking for a bracket, spline_bracket.c); all 0 where none
-                              was met.
+                              was met. Tension mode with G2 ends, EL_ENOCONV: reach[0],
+                              reach[1] the lengths of ladder's two G2 battens (below).
                               Set on EL_OK, EL_ENOCONV and EL_ERANGE (res otherwise empty) */
     double resolution;     /* the residual double precision allows this spline's pieces near
                               the separatrix (Accuracy, el_spline_solve), where that exceeds
@@ -1160,7 +1161,11 @@ typedef struct el_spline_result {
     double ladder[2];      /* length mode: the least and greatest tension (1/units^2) of
                               tension mode's splines reached looking for two that bracket
                               the length (spline_bracket.c); 0 where it did not run or
-                              reached none. Set where reach is */
+                              reached none. Set where reach is. Tension mode with G2 ends,
+                              EL_ENOCONV: of the G2 battens met (the free batten's family
+                              followed in tension, the search by length; spline_g2_tension.c)
+                              the greatest tension below the one asked and the least above
+                              it (reach: their lengths; 0 where none) */
     double largest[3];     /* tension mode, EL_ENOCONV at sigma x (longest span h)^2 >= 300:
                               the largest tension (1/units^2) that solves these points without
                               loops, sigma h^2 = min(asked, 1024) x 2^(-j/4) down to 100 then 3

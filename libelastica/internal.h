@@ -307,6 +307,8 @@ typedef struct el__spchain {
     int near;                /* the state is a solution to what the parametrisation resolves */
     int leap;                /* el__spline_follow_family: leap once over a stall (spline_path.c) */
     int neighbours;          /* el__spline_solve_tension: from fair nearby tensions (spline_path.c) */
+    int plain;               /* el__spline_length_from: the plain follow only, no retries (spline.c's
+                                FREE_FAMILY comparison) */
 } el__spchain;
 
 /* The workspace for n knots and m pieces (zeroed, n, m set); free it also on failure. */
@@ -431,10 +433,11 @@ int el__g2_fairer(const el__spchain *a, const el__spchain *b);
  * ladder of multiples of Lp (the polygon's length, internal) brackets the length whose G2
  * batten has that tension, Brent narrows it, Newton at sigma finishes, in g. solve(ctx, L,
  * &sigma): the G2 batten of length L into g, as length mode finds it (EL_OK, or a status).
- * EL_OK, EL_ENOCONV (g->near: within EL__SP_NEAR), EL_ENOMEM. */
+ * EL_OK, EL_ENOCONV (g->near: within EL__SP_NEAR), EL_ENOMEM. nearest: the tension of the
+ * rung nearest sigma below it, its length, the same above it (internal units; NAN: none). */
 typedef int (*el__g2_length_solve)(void *ctx, double L, double *sigma);
 int el__spline_g2_tension_by_length(el__spchain *g, el__g2_length_solve solve, void *ctx, double Lp,
-                                    double sigma);
+                                    double sigma, double nearest[4]);
 
 /* el_spline_solve; newton_first = 0: length mode by the continuation alone
  * (follow_length, the plain counterpart of the Newton attempts), for the tests. */

@@ -17,6 +17,14 @@
  * solved before bit for bit the same (this runs only where they failed); 9 of the 104 new
  * ones loop (said so). CPU of a search: 0.08 .. 0.26 s (median 0.15), and as much where it
  * finds none (was 3 ms): most of it the ladder's short lengths, where length mode fails.
+ * NO_TENSION: where none is found, the rungs' tensions nearest the one asked, below and above,
+ * and their lengths, for the error (el_spline_result's ladder and reach; spline.c keeps the
+ * nearer of these and where the free batten's family followed in tension stopped). A 90 deg
+ * arc of radius 20 from the origin into a line from (90, 60) heading +x at tension 0.003 or
+ * 0.01: an independent shooting solver's continuation of its three free battens (230, 143, 156
+ * long: their branches meet, both sheets) spans tensions -4.43e-3 .. 1.708e-3 (the top 207
+ * long), the next family by length 0.023 .. 0.074 (QA): none found between; the error names
+ * 1.70e-3 (length 208) and 0.0305 (161), was "no spline through the points was reached".
  */
 #include "internal.h"
 #include <gsl/gsl_errno.h>
@@ -97,14 +105,21 @@ static int narrow(el__spchain *g, gap_problem *p, double lo, double flo, double 
 }
 
 int el__spline_g2_tension_by_length(el__spchain *g, el__g2_length_solve solve, void *ctx, double Lp,
-                                    double sigma)
+                                    double sigma, double nearest[4])
 {
     gap_problem p = {solve, ctx, sigma, NAN, NAN, EL_OK, {{NAN, NAN}, {NAN, NAN}}};
     double L0 = NAN, f0 = NAN;   /* the last rung solved, its gap */
+    for (int i = 0; i < 4; i++) nearest[i] = NAN;
     for (int i = 0; i < NLADDER; i++) {
         const double L = LADDER[i] * Lp, f = gap(L, &p);
         if (p.status == EL_ENOMEM) return EL_ENOMEM;
         if (p.status) continue;
+        /* the rungs' tensions nearest the target below and above it (NO_TENSION) */
+        const int up = f > 0.0;
+        if (!(fabs(f) >= fabs(nearest[2 * up] - sigma))) {
+            nearest[2 * up] = sigma + f;
+            nearest[2 * up + 1] = L;
+        }
         /* g->near only as polish sets it (a near batten by length is not one at sigma) */
         g->near = 0;
         int st = EL_ENOCONV;

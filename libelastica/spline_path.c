@@ -639,7 +639,7 @@ int el__spline_length_from(el__spchain *w, int max_steps, double Lt)
     int st = follow_length(w, max_steps, Lt);
     if (st == EL_ENOMEM) { free(buf); return st; }
     if (st == EL_ENOCONV && w->lmode && w->resid <= EL__SP_NEAR) w->near = 1;
-    if (st == EL_ENOCONV && !w->near) {
+    if (st == EL_ENOCONV && !w->near && !w->plain) {
         /* Newton stalls where a piece passes the separatrix (k^2 = 1, its parameters
          * singular there: K(k) infinite): again, leaping once over a stall (steps down to
          * 1e-3 of the largest that worked) by 4 x that step; the predictor interpolates the

@@ -702,6 +702,73 @@ START_TEST(g2_blend_past_folds_in_the_end_curvature)
 END_TEST
 
 /*
+ * By length a G2 blend follows the G2 free batten's family (spline.c's FREE_FAMILY): the arc
+ * of radius 20 into the line from (90, 60) heading +x (as above) at lengths 167.5 .. 227.5 is
+ * on the lower sheet of the family through the free batten (230.05 long; QA16's shooting
+ * solver: the sheet folds at 164.6, sigma -3.6e-3 there, rising to 0 at the free batten):
+ * sigma < 0 rising with the length, the bending rising from 0.1556 to 0.1749. At 180 the
+ * shooting solver's batten (/tmp/g2band/l180.py, DOP853 at 1e-12): sigma -1.5206e-3, bending
+ * 0.16044. Bending a sibling at a fixed length hopped branches: 0.217 (sigma +0.026) at 175,
+ * 0.411 (-0.0049) at 180, 0.219 (+0.024) at 182.5.
+ */
+START_TEST(g2_blend_by_length_follows_the_free_family)
+{
+    const double p[] = {20.0, 20.0, 90.0, 60.0};
+    double prev_e = 0.155, prev_s = -3.7e-3;
+    for (double L = 167.5; L <= 227.6; L += 2.5) {
+        el_spline_options o = opts(EL_SPLINE_LENGTH, L);
+        o.start = g2_end(0.0, 1.0, 0.05);
+        o.end = g2_end(1.0, 0.0, 0.0);
+        el_spline_result r;
+        const int st = solve(p, 2, &o, &r);
+        ck_assert_msg(st == EL_OK, "length %g: status %d", L, st);
+        check_spline(p, 2, &o, &r, 1e-9);
+        ck_assert(!r.loops);
+        ck_assert_msg(r.sigma < 0.0 && r.sigma > prev_s, "length %g: sigma %g after %g", L, r.sigma, prev_s);
+        ck_assert_msg(r.energy > prev_e && r.energy < 0.1749, "length %g: bending %.5f after %.5f", L, r.energy,
+                      prev_e);
+        if (L == 180.0) {
+            ck_assert_msg(fabs(r.sigma + 1.5206e-3) < 1e-7, "sigma %.6g", r.sigma);
+            ck_assert_msg(fabs(r.energy - 0.16044) < 1e-5, "bending %.6f", r.energy);
+        }
+        prev_e = r.energy;
+        prev_s = r.sigma;
+        el_spline_result_free(&r);
+    }
+}
+END_TEST
+
+/*
+ * A G2 blend by a tension none was found for (spline_g2_tension.c's NO_TENSION): the arc of
+ * radius 20 into the line from (90, 60) heading +x (as above) at tension 0.003 and 0.01. An
+ * independent shooting solver's continuation (/tmp/g2branch_work/exist) of the three free
+ * battens (230, 143, 156 long: their branches meet, folds at 9.2e-4 and 1.708e-3) spans
+ * tensions -4.43e-3 .. 1.708e-3 (the top 207 long); the next family by length 0.023 .. 0.074
+ * (QA): none found at 0.003 or 0.01. EL_ENOCONV, the result naming the G2 battens met nearest
+ * below and above (ladder, reach: their lengths): the free family near its top (1.70e-3 of the
+ * independent 1.708e-3) and one of the next family's, at least 0.023. Was EL_ENOCONV with
+ * none named.
+ */
+START_TEST(g2_blend_without_the_tension_names_the_nearest)
+{
+    const double p[] = {20.0, 20.0, 90.0, 60.0};
+    const double sigmas[] = {0.003, 0.01};
+    for (size_t i = 0; i < 2; i++) {
+        el_spline_options o = opts(EL_SPLINE_TENSION, sigmas[i]);
+        o.start = g2_end(0.0, 1.0, 0.05);
+        o.end = g2_end(1.0, 0.0, 0.0);
+        el_spline_result r;
+        ck_assert_int_eq(solve(p, 2, &o, &r), EL_ENOCONV);
+        ck_assert_msg(r.ladder[0] > 1.6e-3 && r.ladder[0] < 1.75e-3, "sigma %g: below %g", sigmas[i], r.ladder[0]);
+        ck_assert_msg(r.reach[0] > 200.0 && r.reach[0] < 215.0, "its length %g", r.reach[0]);
+        ck_assert_msg(r.ladder[1] >= 0.023 && r.ladder[1] <= 0.074, "sigma %g: above %g", sigmas[i], r.ladder[1]);
+        ck_assert_msg(r.reach[1] > 90.0, "its length %g", r.reach[1]);
+        el_spline_result_free(&r);
+    }
+}
+END_TEST
+
+/*
  * The bend parameter's Jacobian column (spline_chain.c chain_direction; spline_g2_bend.c
  * bend_arc): kg = bend_k + tau bend_dk enters the end knots' rows of el__chain_eval as
  * (kg[0] - kappa0) ell[0] and (kappa1 - kg[1]) ell[n-1], the pseudo-arclength row as
@@ -777,6 +844,8 @@ int main(void)
     tcase_add_test(tc, initial_sibling_keeps_its_branch);
     tcase_add_test(tc, walls_at_tension_zero_are_solved_by_length);
     tcase_add_test(tc, g2_blend_past_folds_in_the_end_curvature);
+    tcase_add_test(tc, g2_blend_by_length_follows_the_free_family);
+    tcase_add_test(tc, g2_blend_without_the_tension_names_the_nearest);
     tcase_add_test(tc, bend_parameter_column_matches_finite_differences);
     suite_add_tcase(s, tc);
     return test_run_suite(s);

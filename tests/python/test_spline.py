@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import subprocess
 import sys
 import warnings
@@ -221,6 +222,49 @@ def test_two_points_g2_blend(both):
                                length=1.02 * sp.length)
     check(longer, p)
     assert longer.length == pytest.approx(1.02 * sp.length, rel=1e-10) and longer.tension < 0
+
+
+def test_g2_blend_dragged_by_length_stays_on_its_family():
+    """A designer drags the length of a G2 blend: a 90 deg arc of radius 20 from the origin
+    into a line from (90, 60) heading +x. From 170 to 200 the blend stays on the family of
+    the G2 free batten (230.05 long at tension 0): tension negative and rising, bending rising
+    smoothly towards the free batten's 0.1749 (QA16's shooting solver at 180: tension
+    -1.5206e-3, bending 0.16044). Was another branch's, erratic: bending 0.217 / 0.411 / 0.219
+    at 177.5 / 180 / 182.5."""
+    p = np.array([[20.0, 20.0], [90.0, 60.0]])
+    ends = {"start": {"tangent": (0, 1), "curvature": 0.05}, "end": {"tangent": (1, 0), "curvature": 0.0}}
+    lengths = np.arange(170.0, 200.1, 2.5)
+    sps = [el.elastic_spline(p, length=L, **ends) for L in lengths]
+    for sp in sps:
+        check(sp, p)
+        assert not sp.loops
+    e = np.array([sp.energy for sp in sps])
+    sigma = np.array([sp.tension for sp in sps])
+    assert np.all(sigma < 0.0) and np.all(np.diff(sigma) > 0.0)
+    assert np.all(np.diff(e) > 0.0) and np.all(np.diff(e) < 1e-3) and e[-1] < 0.1749
+    at180 = sps[4]
+    assert at180.tension == pytest.approx(-1.5206e-3, abs=1e-7)
+    assert at180.energy == pytest.approx(0.16044, abs=1e-5)
+
+
+@pytest.mark.parametrize("sigma", [0.003, 0.01])
+def test_g2_blend_without_the_tension_says_which_it_met(sigma):
+    """The same blend at a tension none was found for (an independent shooting solver: the free
+    batten's family reaches 1.708e-3 at most; the next family 0.023 .. 0.074): the error names
+    the tensions of the G2 blends met nearest below and above, and their lengths (was 'no
+    spline through the points was reached' alone)."""
+    p = np.array([[20.0, 20.0], [90.0, 60.0]])
+    ends = {"start": {"tangent": (0, 1), "curvature": 0.05}, "end": {"tangent": (1, 0), "curvature": 0.0}}
+    with pytest.raises(el.NotConvergedError) as exc:
+        el.elastic_spline(p, tension=sigma, **ends)
+    msg = str(exc.value)
+    m = re.search(r"with G2 ends the solver reached blends of tension up to (\S+) \(length (\S+)\) "
+                  r"and from (\S+) \(length (\S+)\), none at (\S+):", msg)
+    assert m, msg
+    below, l_below, above, l_above = (float(m.group(i)) for i in range(1, 5))
+    assert 1.6e-3 < below < 1.75e-3 and 200.0 < l_below < 215.0
+    assert 0.023 <= above <= 0.074 and l_above > 90.0 and m.group(5) == f"{sigma:g}"
+    assert "or a length" in msg and "tension x (longest span)^2" not in msg
 
 
 @pytest.mark.parametrize("height", [5.0, 20.0, -50.0])
