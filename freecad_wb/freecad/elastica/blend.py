@@ -1,8 +1,8 @@
 """Elastic blend: every elastic Hermite curve (seed 004) from an end of one edge to
 an end of another, by tension (default: tension 0, the free batten) or by length;
-each solution described (length, energy, inflections, loops, largest curvature);
-the chosen one (lowest energy unless the user picked another) as a B-spline of
-few poles; or, Continuity G2, the elastic spline between the two ends that also
+each solution described (length, energy, inflections, loops, which way it turns,
+largest curvature); the chosen one (lowest energy unless the user picked another) as a
+B-spline of few poles; or, Continuity G2, the elastic spline between the two ends that also
 meets both edges' curvature (two guide ducks hold it). The feature follows its
 edges; writing it into a sketch is a copy."""
 from __future__ import annotations
@@ -18,8 +18,8 @@ from .geometry import (binding_module, edge_end, el, global_element, is_sketch,
                        to_3d)
 from .links import followed_edge
 from .units import (floor_digits, length_mark, length_text, length_unit_mark, per_area_mark,
-                    per_length, per_length_mark, reach_mark, tension_mark, tension_text,
-                    tension_unit_mark)
+                    per_length, per_length_mark, reach_mark, tension_mark, tension_or_zero,
+                    tension_text, tension_unit_mark)
 from .proxy import (FeatureProxy, InputProblem, add_enum, add_geometry_index, add_length,
                     add_link, add_property, attach_view, check_degree, check_number,
                     check_tolerance, read_only, set_said)
@@ -28,7 +28,7 @@ MODES = ["length", "tension"]
 CONTINUITIES = ["G1", "G2"]
 BSPLINE_DEGREE = 5          # a blend's B-spline: few poles at the preference tolerance
 RESULT_LISTS = ("Lengths", "Energies", "Tensions", "Inflections", "Loops", "MaxCurvatures",
-                "Descriptions")
+                "Turns", "Descriptions")
 G2_TIP = ("G1: one elastica, tangent to both edges. G2: tangent and curvature continuous at "
           "both joins. One elastica cannot meet both curvatures (8 conditions, 7 parameters), "
           "so the G2 blend is the batten between the two ends held by two guide ducks, a "
@@ -393,18 +393,38 @@ def turning(chain, samples=129):
 SAME_SHAPE = 1.0
 
 
-def nearest_shape(before, curves):
+def total_turn(chain):
+    """The total turn (rad, + counter-clockwise seen from the plane's normal) of a chain of
+    curves: each one's angle at its end less at its start (continuous along a curve, its
+    loops' full turns included), summed."""
+    return float(sum(c.angle([float(c.length)])[0] - c.angle([0.0])[0] for c in chain))
+
+
+def nearest_shape(shown, curves):
     """The index of the curve whose turning (tangent angle along its normalised length) is
-    nearest ``before`` (the turning of the curve shown), a common turn of the whole aside,
-    when it is within SAME_SHAPE, else None: the same solution, followed as the edges move,
-    where an index names another curve, or none, once solutions appear or vanish."""
+    nearest that of ``shown`` (the chain of curves shown), a common turn of the whole
+    aside, when it is within SAME_SHAPE and the curve turns as many times, else None: the
+    same solution, followed as the edges move, where an index names another curve, or
+    none, once solutions appear or vanish.
+
+    Every solution's total turn is the ends' tangent angle difference plus a whole number
+    of turns (2 pi m), and along one solution as the edges move m stays: the curve followed
+    turns within pi of the one shown. The rms alone let through a curve whose turning
+    differs by a full turn over a short stretch (QA18gui F1: a clockwise loop turning
+    -5.38 rad followed into an S turning -0.25, rms 0.955). Inflections and loops are no
+    such invariant: they enter at an end or as the ends cross (a loop followed goes from
+    no self-crossing to one, test_elastica_blend_pick)."""
     n = np()
-    gaps = []
-    for c in curves:
+    before, turn = turning(shown), total_turn(shown)
+    best, j = None, None
+    for i, c in enumerate(curves):
+        if abs(total_turn([c]) - turn) >= n.pi:
+            continue
         d = turning([c]) - before
-        gaps.append(float(n.sqrt(n.mean((d - d.mean()) ** 2))))
-    j = int(n.argmin(gaps))
-    return j if gaps[j] <= SAME_SHAPE else None
+        gap = float(n.sqrt(n.mean((d - d.mean()) ** 2)))
+        if best is None or gap < best:
+            best, j = gap, i
+    return j if best is not None and best <= SAME_SHAPE else None
 
 
 def plural(n, word):
@@ -416,10 +436,33 @@ def plural(n, word):
 G2_TENSION_DIGITS = 6
 
 
-def solution_text(i, length, energy, infl, loops, kmax):
+def turn_text(turn):
+    """', turns 308\u00b0 clockwise' for a total turn (rad) of half a turn or more, which way
+    seen from the plane's normal (a sketch's: as the Sketcher shows it), else '': a loop
+    and its mirror image told apart (QA18gui F1)."""
+    if turn is None or abs(turn) < np().pi:
+        return ""
+    return (f", turns {abs(np().degrees(turn)):.0f}\u00b0 "
+            f"{'counter-clockwise' if turn > 0 else 'clockwise'}")
+
+
+def solution_text(i, length, energy, infl, loops, kmax, turn=None):
     return (f"{i + 1}: {length_text(length, 4)}, energy {per_length(energy)}, "
-            f"{plural(infl, 'inflection')}, {plural(loops, 'loop')}, max curvature "
-            f"{per_length(kmax)}")
+            f"{plural(infl, 'inflection')}, {plural(loops, 'loop')}{turn_text(turn)}, "
+            f"max curvature {per_length(kmax)}")
+
+
+def descriptions(obj):
+    """Every solution of a blend in words, in the unit schema of now (its Descriptions: of
+    the last recompute's)."""
+    n = len(obj.Descriptions)
+    data = [obj.Lengths, obj.Energies, obj.Inflections, obj.Loops, obj.MaxCurvatures]
+    if any(len(d) != n for d in data):
+        return list(obj.Descriptions)
+    turns = getattr(obj, "Turns", [])
+    if len(turns) != n:             # a file saved before Turns, not recomputed yet
+        turns = [None] * n
+    return [solution_text(j, *d) for j, d in enumerate(zip(*data, turns))]
 
 
 class BlendProxy(FeatureProxy):
@@ -473,6 +516,10 @@ class BlendProxy(FeatureProxy):
                      "Self-crossings (loops) of every solution")
         add_property(obj, "App::PropertyFloatList", "MaxCurvatures", "Result",
                      "Largest |curvature| of every solution (1/mm)")
+        add_property(obj, "App::PropertyFloatList", "Turns", "Result",
+                     "Total turn of every solution (rad, + counter-clockwise seen from the "
+                     "Plane's normal): a picked solution is followed as the edges move only "
+                     "into one turning as many times")
         add_property(obj, "App::PropertyStringList", "Descriptions", "Result",
                      "Every solution in words")
         if "SpanTensions" in obj.PropertiesList:   # version 1: the G2 end spans' own tensions
@@ -537,7 +584,7 @@ class BlendProxy(FeatureProxy):
             else self.plane_curves(obj)                # the last good solve's curve
         if shown is None:
             return obj.Solution, False
-        j = nearest_shape(turning(shown[0]), curves)
+        j = nearest_shape(shown[0], curves)
         return (0, True) if j is None else (j, False)
 
     def ends(self, obj):
@@ -597,12 +644,14 @@ class BlendProxy(FeatureProxy):
         described = [describe(c) for c in curves]
         obj.Lengths = [float(c.length) for c in curves]
         obj.Energies = r["energies"]
-        obj.Tensions = [float(getattr(c, "sigma", 0.0)) for c in curves]
+        # rounding noise as 0: by the free batten's own length, not 1.1e-16/mm^2 (F9)
+        obj.Tensions = [tension_or_zero(getattr(c, "sigma", 0.0), c.length) for c in curves]
         obj.Inflections = [d[0] for d in described]
         obj.Loops = [d[1] for d in described]
         obj.MaxCurvatures = [d[2] for d in described]
-        obj.Descriptions = [solution_text(j, L, E, *d) for j, (L, E, d) in
-                            enumerate(zip(obj.Lengths, obj.Energies, described))]
+        obj.Turns = [total_turn([c]) for c in curves]
+        obj.Descriptions = [solution_text(j, L, E, *d, t) for j, (L, E, d, t) in
+                            enumerate(zip(obj.Lengths, obj.Energies, described, obj.Turns))]
         obj.Poles = int(r["bspline"].npoles)
         obj.Plane = r["placement"]
         curve_to_dict = binding_module("io").curve_to_dict
@@ -613,7 +662,7 @@ class BlendProxy(FeatureProxy):
         obj.GuideForces = [plc.Rotation.multVec(App.Vector(float(x), float(y), 0.0))
                            for x, y in (sp.guide_forces if sp else [])]
         obj.BlendLength = float(sp.length if sp else curves[i].length)
-        obj.BlendTension = float(sp.tension if sp else getattr(curves[i], "sigma", 0.0))
+        obj.BlendTension = tension_or_zero(sp.tension, sp.length) if sp else obj.Tensions[i]
         if sp:
             # forces in 1/length^2 x EI/2, as the tension; marks: said in the schema of now
             # when the panel opens (proxy.said)

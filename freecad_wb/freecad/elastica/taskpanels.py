@@ -335,13 +335,7 @@ class BlendPanel(Panel):
             self.update()
 
     def descriptions(self):
-        """Every solution in words, in the unit schema of now (Descriptions: of the last
-        recompute's)."""
-        o = self.obj
-        data = [o.Lengths, o.Energies, o.Inflections, o.Loops, o.MaxCurvatures]
-        if any(len(d) != len(o.Descriptions) for d in data):
-            return list(o.Descriptions)
-        return [B.solution_text(j, *d) for j, d in enumerate(zip(*data))]
+        return B.descriptions(self.obj)
 
     def refresh(self):
         o = self.obj

@@ -108,12 +108,23 @@ def tension_unit():
     return factor * factor, f"1/{unit}\u00b2"
 
 
+# A tension below this fraction of a curve's scale 1/length^2 is rounding noise: 0 (a blend
+# by the free batten's own length solves to |sigma| ~ 1e-16/mm^2, QA18gui F9)
+TENSION_NOISE = 1e-9
+
+
+def tension_or_zero(sigma, length):
+    """sigma (1/mm^2), or 0.0 where it is rounding noise (TENSION_NOISE) for a curve of
+    ``length`` (mm)."""
+    return 0.0 if abs(sigma) * length ** 2 < TENSION_NOISE else float(sigma)
+
+
 def tension_text(sigma, length, digits=3):
     """sigma (1/mm^2) in 1/length^2 of the user's unit schema, as the Tension fields show it
     ('0.000634 1/mm\u00b2', '0.409 1/in\u00b2'), to ``digits`` significant digits,
-    rounding noise (below 1e-9 of the scale 1/length^2) shown as 0."""
+    rounding noise (tension_or_zero) shown as 0."""
     factor, unit = tension_unit()
-    return f"{0.0 if abs(sigma) * length ** 2 < 1e-9 else sigma * factor:.{digits}g} {unit}"
+    return f"{tension_or_zero(sigma, length) * factor:.{digits}g} {unit}"
 
 
 def area_text(value, digits=4):
