@@ -10,6 +10,9 @@
 
 /* stencils at most (evenly spread), the frame's probe, every k-th point's check (noise_rms) */
 enum { NOISE_SAMPLES = 65536, FRAME_PROBE = 32, SPREAD_POINTS = 1000, SPREAD_CONFIRM = 2 };
+/* noise_rms's sorted-points test: every k-th point's figure over the plain one, and the
+ * every 2k-th's over the k-th's */
+static const double SPREAD_SORTED = 1.4, SPREAD_SAME = 2.0;
 
 /* Noise level of the points (rms per point), the smaller of two estimates (both from
  * third differences, in which a smooth curve's turning cancels; second differences carry
@@ -111,11 +114,24 @@ static double noise_rms(const double *xy, size_t n, double sc, double *d)
      * noise (1e5 points, noise 0.05: 0.0014). The stencils of every k-th point span the
      * band: where their figure exceeds the plain one and SPREAD_CONFIRM x the frame's, it
      * is taken (noise-free curves: far below the plain figure; noisy uneven scans: about
-     * the frame's). k = n / SPREAD_POINTS, read in place. */
-    if (frame < plain && n >= 2 * SPREAD_POINTS) {
+     * the frame's). Less dense (4e3 and 1e4 points there: spacing 0.5 and 0.2 x the noise)
+     * the frame sees most of the noise and stays above half the plain figure, which sees
+     * its part across alone: a chi-square of one degree read as two, sqrt(0.455 / 1.386) =
+     * 0.57 of it. So the figure of every k-th point is also taken where it exceeds the
+     * plain one SPREAD_SORTED x and is noise, the same at every 2k-th point (a smooth
+     * curve's cubic term grows 8 x). Measured on the 504-curve suite's 5000-point sets
+     * (noise 0.1 and 1 %): in their order the k-th points' figure is 0.93-1.18 x the plain
+     * one; in curve order, where taken, 1.62-2.38 x, the 2k-th's 0.80-1.43 x the k-th's;
+     * noise-free, the 2k-th's 7.9-8.1 x. A polygon resampled densely along noisy points
+     * (noise correlated from vertex to vertex, which third differences cancel) is taken
+     * too: 4164 vertices at noise 0.5, 0.035 -> 0.34. k = n / SPREAD_POINTS, read in place. */
+    if (n >= 2 * SPREAD_POINTS) {
         const size_t k = n / SPREAD_POINTS;
         const double wide = noise_frame(xy, n / k, k, sc, NOISE_SAMPLES, d);
-        if (wide > SPREAD_CONFIRM * frame && wide > plain) return wide;
+        if (frame < plain && wide > SPREAD_CONFIRM * frame && wide > plain) return wide;
+        if (wide > SPREAD_SORTED * plain &&
+            noise_frame(xy, n / (2 * k), 2 * k, sc, NOISE_SAMPLES, d) < SPREAD_SAME * wide)
+            return wide;
     }
     return fmin(plain, frame);
 }
