@@ -191,11 +191,9 @@ def _cubic_figures(doc: Dict[str, Any], res, bspline, pts: np.ndarray,
 
 def _warn_coarse_polygon(path, rec: Dict[str, Any], data: np.ndarray, res) -> None:
     """A warning on stderr when a discrete fit of few points (el.SPARSE_POINTS) lies far
-    farther from them than the smooth model's curve (el.smooth_fits_better): its polygon,
-    or its exported cubic where that lies farther."""
-    import libelastica as el
-    rms = max(float(res.rms), rec.get("bspline_rms", 0.0))
-    smooth = el.smooth_fits_better(data[:, :2], rms, res.constraints)
+    farther from them than the smooth model's curve: el.fit's verdict (FitResult.sparse,
+    el.SparseWarning)."""
+    smooth = res.sparse
     if smooth is None:
         return
     cubic = (f", its B-spline {rec['bspline_rms']:.3g}" if "bspline_rms" in rec else "")
@@ -379,7 +377,7 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
         else:
             # quietly: said in the CLI's words (_warn_wanders, _warn_end_conditions, _misfit,
             # the status)
-            res = quiet_fit(data, check_ends=True, check_misfit=True,
+            res = quiet_fit(data, check_ends=True, check_misfit=True, check_sparse=True,
                             **_fit_kwargs(args, fixed, constraints))
             free = None
             if constraints and getattr(res, "distances", None) is not None:

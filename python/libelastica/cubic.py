@@ -4,7 +4,8 @@ exports the C2 cubic through the polygon's vertices, which runs elsewhere betwee
 (a 7-click sketch: polygon rms 0.316 / max 0.561, its cubic 0.647 / 1.487, the smooth
 model's curve 0.031). :func:`cubic_distances` measures the points against that cubic;
 :func:`smooth_fits_better` says when few points are better fitted by the smooth model
-(`elastica fit`'s and the FreeCAD Fit feature's warnings)."""
+(el.fit's and fit_keyline's SparseWarning, which `elastica fit` and the FreeCAD Fit
+feature say in their words)."""
 from __future__ import annotations
 
 import warnings
@@ -28,9 +29,10 @@ SPARSE_FLOOR = 1e-4
 
 
 class SparseWarning(UserWarning):
-    """:func:`libelastica.fit_keyline`'s warning that a discrete keyline of fewer than
-    SPARSE_POINTS points lies far farther from them than the smooth keyline
-    (:func:`smooth_fits_better`; ``KeylineFit.sparse``): use model="smooth"."""
+    """:func:`libelastica.fit`'s and :func:`libelastica.fit_keyline`'s warning that a
+    discrete fit or keyline of fewer than SPARSE_POINTS points lies far farther from them
+    than the smooth model's (:func:`smooth_fits_better`; ``FitResult.sparse``,
+    ``KeylineFit.sparse``): use model="smooth"."""
 
 
 def cubic_distances(result, bspline=None) -> Tuple[np.ndarray, np.ndarray]:

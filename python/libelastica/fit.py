@@ -28,6 +28,7 @@ from ._ffi import (DomainError, NotConvergedError, as_int, as_points, as_real,
                    as_real_array, check, dptr, ffi, lib, warn_if_degrees)
 from ._interrupt import call
 from .core import DISCRETE_PARAMS, SMOOTH_PARAMS, DiscreteElastica, SmoothElastica
+from .cubic import SPARSE_POINTS, SparseWarning, smooth_fits_better
 from ._text import LengthFormat, lengths
 from .fit_cost import EndConditionWarning, checked_ends
 from .misfit import MisfitWarning, _verdict, misfit_summary
@@ -87,7 +88,9 @@ class FitResult:
     ``free``: the fit with free ends where :func:`fit` checked what its end conditions cost;
     ``misfit``: where :func:`fit` judged it (``check_misfit``) and found it far farther from
     the points than their noise, a :class:`libelastica.misfit.Misfit` (the points are not one
-    elastica; its ``corner`` an index into ``points``), else None.
+    elastica; its ``corner`` an index into ``points``), else None; ``sparse``: where
+    :func:`fit` checked it (``check_sparse``), a discrete fit of fewer than SPARSE_POINTS
+    points far farther from them than the smooth model's fit: that fit's rms, else None.
     """
     curve: Curve
     initial: Curve
@@ -109,6 +112,7 @@ class FitResult:
     order: Optional[np.ndarray] = None
     free: Optional["FitResult"] = None
     misfit: Optional[object] = None
+    sparse: Optional[float] = None
 
     @property
     def converged(self) -> bool:
@@ -462,7 +466,7 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
         max_iter: Optional[int] = None, limited_memory: bool = False,
         max_candidates: Optional[int] = None, param: str = "auto", initial: Optional[Curve] = None,
         strict: bool = False, order: str = "given", check_ends: bool = True,
-        check_misfit: bool = True) -> FitResult:
+        check_misfit: bool = True, check_sparse: bool = True) -> FitResult:
     """Fit an elastica to the points (n, 2), n >= 4, in their order along the curve.
 
     model: "discrete" (a polygon of n vertices, one per point) or "smooth". distance:
@@ -525,7 +529,11 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     where check_ends made one; not a fit asked to be paired) against the points' own noise
     (:func:`libelastica.misfit.misfit`) and warn (MisfitWarning, ``FitResult.misfit``) where
     it lies far above it: the points are not one elastica (a corner, named where one stands
-    out).
+    out). check_sparse: a discrete fit of fewer than SPARSE_POINTS points (a polygon of as
+    few segments, which cuts their bends) is compared with the smooth model's fit of them
+    with the same constraints (:func:`smooth_fits_better`, on the larger of the polygon's
+    rms and its exported cubic's, :meth:`FitResult.cubic_distances`) and warns
+    (SparseWarning, ``FitResult.sparse``) where that one lies far nearer.
     """
     if not isinstance(model, str) or model not in ("discrete", "smooth"):
         raise ValueError(f"fit: model must be 'discrete' or 'smooth', got {model!r}")
@@ -594,7 +602,29 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
                          limited_memory=limited_memory, max_candidates=max_candidates, param=param))
     if check_misfit:
         r = _judged(r, judged_fit(r, constraints or fixed or bounds, distance))
+    if check_sparse and not smooth and n < SPARSE_POINTS:
+        r = _sparse(r, constraints)
     return r
+
+
+def _sparse(r: FitResult, constraints) -> FitResult:
+    """r with its ``sparse`` (:func:`smooth_fits_better` on the larger of its polygon's rms
+    and its exported cubic's, the same constraints) and a SparseWarning where the smooth
+    model's fit lies far nearer the points; r where it does not."""
+    try:
+        cubic = float(np.sqrt(np.mean(r.cubic_distances()[1] ** 2)))
+    except (ValueError, ArithmeticError, RuntimeError):
+        cubic = 0.0
+    rms = max(float(r.rms), cubic)
+    smooth = smooth_fits_better(r.points, rms, constraints)
+    if smooth is None:
+        return r
+    n = len(r.points)
+    warnings.warn(f"fit: the discrete model's polygon of {n - 1} segments lies {r.rms:.3g} from "
+                  f"the {n} points (rms), its cubic {cubic:.3g}, the smooth model's curve "
+                  f"{smooth:.3g}: fewer than {SPARSE_POINTS} points; use model='smooth'",
+                  SparseWarning, stacklevel=3)
+    return dataclasses.replace(r, sparse=smooth)
 
 
 def judged_fit(r: FitResult, held, distance: Optional[str] = None) -> Optional[FitResult]:
@@ -624,14 +654,17 @@ def _judged(r: FitResult, judged: Optional[FitResult]) -> FitResult:
 
 def quiet_fit(points, *args, **kwargs) -> FitResult:
     """:func:`fit` without its warnings (ConvergenceWarning, WanderWarning, EndConditionWarning,
-    MisfitWarning), check_ends and check_misfit off unless asked: for a fit judging another, or
-    said in its caller's words (status, wander_gap, free, misfit)."""
+    MisfitWarning, SparseWarning), check_ends, check_misfit and check_sparse off unless asked:
+    for a fit judging another, or said in its caller's words (status, wander_gap, free,
+    misfit, sparse)."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ConvergenceWarning)
         warnings.simplefilter("ignore", WanderWarning)
         warnings.simplefilter("ignore", EndConditionWarning)
         warnings.simplefilter("ignore", MisfitWarning)
-        return fit(points, *args, **dict(dict(check_ends=False, check_misfit=False), **kwargs))
+        warnings.simplefilter("ignore", SparseWarning)
+        return fit(points, *args, **dict(dict(check_ends=False, check_misfit=False,
+                                              check_sparse=False), **kwargs))
 
 
 __all__ = ["ConstraintError", "FitResult", "fit", "NotConvergedError"]

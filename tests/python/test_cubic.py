@@ -60,6 +60,33 @@ def test_smooth_fits_better_on_few_points_only():
     assert el.smooth_fits_better(d.points(), 100.0) is None
 
 
+def test_fit_of_few_points_warns_where_the_smooth_model_fits_far_better():
+    """The one-piece discrete fit of few points: el.fit says what the CLI and FreeCAD said
+    (SparseWarning, FitResult.sparse the smooth fit's rms), on the larger of its polygon's
+    rms and its cubic's (CLICKS: 0.316, 0.647; smooth 0.031), its constraints kept; points
+    the polygon fits (a discrete elastica's), the smooth model, check_sparse=False and
+    quiet_fit draw none."""
+    smooth = el.fit(CLICKS, model="smooth").rms
+    with pytest.warns(el.SparseWarning, match="use model='smooth'") as w:
+        r = el.fit(CLICKS)
+    assert len(w) == 1 and r.sparse == smooth
+    cubic = np.sqrt(np.mean(r.cubic_distances()[1] ** 2))
+    assert f"{r.rms:.3g}" in str(w[0].message) and f"{cubic:.3g}" in str(w[0].message)
+    held = {"start_tangent": 0.0}
+    with pytest.warns(el.SparseWarning):
+        rc = el.fit(CLICKS, constraints=held)
+    assert rc.sparse == el.fit(CLICKS, model="smooth", constraints=held).rms
+    d = el.DiscreteElastica(x0=0, y0=0, h=1.0, phi=0.2, z=0.15, q=0.3, k=0.8, n=12)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", el.SparseWarning)
+        assert el.fit(d.points()).sparse is None
+        assert el.fit(CLICKS, model="smooth").sparse is None
+        assert el.fit(CLICKS, check_sparse=False).sparse is None
+        from libelastica.fit import quiet_fit
+        assert quiet_fit(CLICKS).sparse is None
+        assert quiet_fit(CLICKS, check_sparse=True).sparse == smooth
+
+
 def test_cli_states_the_bsplines_own_distances_and_points_to_smooth(capsys, tmp_path):
     path = tmp_path / "clicks.csv"
     np.savetxt(path, CLICKS, delimiter=",", header="x,y", comments="")
@@ -74,6 +101,8 @@ def test_cli_states_the_bsplines_own_distances_and_points_to_smooth(capsys, tmp_
             "from it") in r.stdout
     assert "use --model smooth" in r.stderr
     assert f"where the smooth model's curve lies {el.fit(CLICKS, model='smooth').rms:.3g}" in r.stderr
+    # said once, in the CLI's words (el.fit's SparseWarning not printed as well)
+    assert r.stderr.count("warning") == 1 and "SparseWarning" not in r.stderr
     # the smooth model's B-spline is within its tol: nothing to add, nothing to warn
     r = cli(capsys, "fit", path, "--model", "smooth", "--bspline-tol", "1e-3")
     assert r.returncode == 0 and "lie rms" not in r.stdout and "warning" not in r.stderr

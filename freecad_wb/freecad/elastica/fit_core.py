@@ -72,7 +72,8 @@ def _one_piece(xy, model, distance, fixed, constraints, fields):
     constraint_fields."""
     try:
         r = _fit(xy, model=model, fixed=fixed or None, constraints=constraints or None,
-                 distance=_distance(model, distance), check_ends=True)
+                 distance=_distance(model, distance), check_ends=True,
+                 check_sparse=True)
     except el().ConstraintError as exc:
         raise constraint_problem(exc, fields) from None
     return [r.curve], [r], xy, r.foot_points(), r.distances, r.rms, r.max_error, None
@@ -292,11 +293,11 @@ def _keyline(xy, model, step):
     return (halves, [first, second], data, feet, dist, rms, float(n.abs(dist).max()), tails), kf.sparse
 
 
-def _coarse_polygon(xy, constraints, rms):
-    """The warning for a discrete fit of fewer than el.SPARSE_POINTS points whose cubic
-    lies rms from them where the smooth model's curve lies far nearer
-    (el.smooth_fits_better), else none."""
-    smooth = el().smooth_fits_better(xy, rms, constraints)
+def _coarse_polygon(xy, result, rms):
+    """The warning for a discrete fit (``result``) of fewer than el.SPARSE_POINTS points whose
+    cubic lies rms from them where the smooth model's curve lies far nearer (el.fit's
+    verdict, FitResult.sparse), else none."""
+    smooth = result.sparse
     if smooth is None:
         return []
     return [f"{len(xy)} points give the discrete model a polygon of {len(xy) - 1} segments, "
@@ -452,7 +453,7 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
                                                              dist, fields)
         warnings = ordering + reversed_joins + warnings
         if model == "discrete" and not split and not step:
-            warnings = warnings + _coarse_polygon(xy, constraints, rms)
+            warnings = warnings + _coarse_polygon(xy, results[0], rms)
         # the figures are the user's points': where the library fitted a resampled polygon
         # (whose tail it may leave out), their distances to the curve drawn
         size = float(n.ptp(user[:, :2], axis=0).max())
