@@ -246,7 +246,12 @@ class AffinePolyline:
     """Result of :func:`affine_polyline`.
 
     points (n+1, 2); t: parameters on the replacement curve f~ (f~(j) = sample j);
-    s: arc lengths of the vertices' foot points on the elastica (None for point data);
+    s: arc lengths of the vertices' foot points on the elastica (None for point data): the
+    vertices lie on it, x_i = f(t_i) (seed 002 §4), s in [0, length], but for a last vertex
+    past its end (t beyond f~'s last sample: the paper's A = (S/n)^3 lands it near the end,
+    fit_ends=True on it), which lies on f~'s last parabola continued, not on the curve: its
+    s is its foot's on the elastica continued, above length (curve.points(s,
+    extrapolate=True));
     piece_start: first vertex of each inflection-free piece (+ the last vertex);
     A: signed area constant per piece; psi: minimised sum (delta k)^2 per piece;
     infl_param: inflections (f~ parameters); S_total: affine length of f~."""
@@ -394,6 +399,11 @@ def affine_polyline(curve_or_points, n: int, samples_per_vertex: int = 20,
             th = c.angle(s, extrapolate=True)   # point; the last may lie past its end)
             s = s + np.einsum("ij,ij->i", pts - c.points(s, extrapolate=True),
                               np.c_[np.cos(th), np.sin(th)])
+        # a vertex on f~ (t up to its last sample, within fit_ends' landing, 1e-7 of a
+        # sample) is on the curve: its foot in [0, length], not the Newton's rounding past
+        # the end (fit_ends, 60 edges: 2.4e-11 past it, so that curve.points(s) raised)
+        on = t <= len(s_samp) - 1 + 1e-7
+        s = np.where(on, np.clip(s, 0.0, c.length), np.maximum(s, 0.0))
         return AffinePolyline(pts, t, s, ps, A, psi, ip, S)
     samples = as_points(curve_or_points, "points")
     if len(samples) < 4:
