@@ -560,7 +560,9 @@ def report_text():
 def failed_quietly(b, panel):
     """A failed recompute says its message in the report view as FreeCAD's own features
     do, without the Python traceback that followed it (QA12 gui/g2_4_schema3.png), and
-    the feature is still marked in error (the tree's mark), its last shape kept."""
+    the feature is still marked in error (the tree's mark), its last shape kept. The
+    panel's live preview says it on the panel's error line only (QA18gui F6: the report
+    view popped up with it at every prefix typed); OK says it in the report view once."""
     shape = b.Shape.copy()
     before = report_text()
     retype(panel.length, "1 in")              # shorter than the ends are apart
@@ -570,17 +572,25 @@ def failed_quietly(b, panel):
     G.check(b.Status.startswith("error") and "Invalid" in b.State and not b.isValid()
             and abs(b.Shape.Length - shape.Length) < 1e-9,
             f"a failed recompute marks the feature (State {b.State}, {b.Status[:60]!r})")
-    G.check(said is not None and "is not longer than" in said and "Traceback" not in said
-            and "RecomputeError" not in said,
-            f"the report view says the message alone: {said!r}")
-    # OK on the feature in error keeps the panel open and says nothing more: the message
-    # is in the report view once (it printed it a second time, 'Elastica: error: ...')
+    G.check(said == "" and "is not longer than" in G.error_line(panel),
+            f"the preview says it on the panel's error line only: {said!r}")
+    # OK on the feature in error keeps the panel open and says it in the report view once,
+    # the message alone
     stays = not panel.accept()
-    G.pump()
+    G.wait(300)
     again = report_text()
     more = again[len(after):] if after is not None and again is not None else None
-    G.check(stays and more is not None and "is not longer than" not in more,
-            f"OK on a feature in error repeats nothing: {more!r}")
+    G.check(stays and more is not None and more.count("is not longer than") == 1
+            and "Traceback" not in more and "RecomputeError" not in more,
+            f"OK on a feature in error says the message alone, once: {more!r}")
+    # a document's recompute (its edges moved, Recompute): the message alone too
+    b.touch()
+    b.Document.recompute()
+    G.wait(300)
+    last = report_text()[len(again):]
+    G.check("is not longer than" in last and "Traceback" not in last
+            and "RecomputeError" not in last,
+            f"the report view says the message alone: {last!r}")
 
 
 def tension_mode_and_g2_reach(doc, sk, right, left):

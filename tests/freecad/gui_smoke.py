@@ -24,7 +24,8 @@ the panel closed); gui_panel_lifecycle.py's gui_close_with_panel.png,
 gui_delete_during_panel.png and gui_keep_needs_copy.png; gui_blend_panel.py's
 gui_blend_picked_tops.png, gui_blend_ends_by_length.png, gui_blend_bound.png,
 gui_blend_imperial.png and the others its docstring names; gui_schema_texts.py's
-gui_ellblend_loop_imperial.png, gui_fit_result_imperial.png. The outcome goes
+gui_ellblend_loop_imperial.png, gui_fit_result_imperial.png; gui_fc_behaviour.py's, which
+its docstring names. The outcome goes
 to gui_smoke.result (first line PASS or FAIL); FreeCAD is then ended with os._exit
 because its exit status says nothing about a script. Only APIs present in FreeCAD
 0.20 and 1.0 are used (PySide through FreeCAD's shim)."""
@@ -74,10 +75,13 @@ def pump(n=5):
 
 
 def wait(ms=400):
-    """Let time pass with the event loop running (the panels' delayed recompute)."""
+    """Let time pass with the event loop running (the panels' delayed recompute), and the
+    open panel's pending recompute run (a typed value waits panelbase.TYPING_MS)."""
     from PySide import QtGui
+    from freecad.elastica import taskpanels as T
     end = time.time() + ms / 1000.0
-    while time.time() < end:
+    while time.time() < end or (T.CURRENT and T.CURRENT[0].timer.isActive()
+                                and time.time() < end + 5.0):
         QtGui.QApplication.processEvents()
         time.sleep(0.01)
 
@@ -1133,6 +1137,10 @@ def run():
     # texts in the unit schema: the elliptic blend's loop sizes
     import gui_schema_texts
     gui_schema_texts.run_all(sys.modules[__name__])
+
+    # typing, wrong selections, the Model box, a sketch double-clicked: as FreeCAD's own
+    import gui_fc_behaviour
+    gui_fc_behaviour.run_all(sys.modules[__name__])
 
 
 def main():

@@ -18,7 +18,10 @@ from .spinboxes import DecadeBox, NumberBox
 from .units import length_text, say, unit_names
 
 CURRENT = []        # the open panel, if any (scripts and the GUI smoke test drive it)
-DELAY_MS = 150      # recompute after this pause in editing
+DELAY_MS = 150      # recompute after this pause in editing (arrows, wheel, choices)
+# and after this one in typing: a person types a key in about 250 ms, and every prefix of a
+# number was solved ('1', '15', '150'); Enter or leaving the box solves at once
+TYPING_MS = 600
 WARNING_RGB = "#b36200"   # the amber of FreeCAD's report-view warnings, dark enough to read
 ERROR_RGB = "#b00"
 
@@ -228,6 +231,7 @@ class Panel:
         box.setValue(float(getattr(self.obj, prop)))
         box.blockSignals(False)
         box.valueChanged.connect(lambda v: self.set(prop, float(v)))
+        self.typed_in(box)
         self.row(grid, label, box, tip)
         self.mark_bound(box, prop)
         if when:
@@ -256,6 +260,7 @@ class Panel:
         value.setValue(getattr(self.obj, prop))
         value.blockSignals(False)
         value.valueChanged.connect(lambda v: self.set(prop, float(v)))
+        self.typed_in(value)
         self.mark_bound(value, prop)
         r = grid.rowCount()
         grid.addWidget(box, r, 0)
@@ -273,10 +278,28 @@ class Panel:
         box.blockSignals(False)
         box.setKeyboardTracking(True)
         box.valueChanged.connect(lambda v: self.set(prop, int(v)))
+        self.typed_in(box)
         self.row(grid, label, box, tip)
         if when:
             self.enablers.append((box, when))
         return box
+
+    _typed = False      # the value being set was typed (typed_in)
+
+    def typed_in(self, box):
+        """A spin box's typed text waits TYPING_MS (its textEdited comes just before its
+        valueChanged), its arrows DELAY_MS; Enter or focus out (editingFinished: the value
+        stands, as FreeCAD's boxes without keyboard tracking take it) solves now."""
+        edit = box.findChild(QtGui.QLineEdit)
+
+        def typed(_text):
+            self._typed = True
+            QtCore.QTimer.singleShot(0, self._typed_done)   # a text that set no value
+        edit.textEdited.connect(typed)
+        box.editingFinished.connect(self.flush)
+
+    def _typed_done(self):
+        self._typed = False
 
     def check(self, grid, text, prop, tip, when=None, target=None, at=None):
         """A check box bound live to the boolean property prop (of ``target``, default
@@ -440,7 +463,8 @@ class Panel:
             setattr(target, prop, value)
             self.changed(prop)
             if target is self.obj:
-                self.timer.start()
+                self.timer.start(TYPING_MS if self._typed else DELAY_MS)
+        self._typed = False
         self.refresh_enabled()
 
     def changed(self, prop):
@@ -453,8 +477,24 @@ class Panel:
             self.update()
 
     def update(self):
+        """The live preview: the feature first, alone and quiet (proxy.report), as FreeCAD's
+        own panels recompute their feature (TaskFeatureParameters::recomputeFeature): a
+        failure is said on the panel's error line only. A document recompute printed it
+        with 'Recompute failed!', which popped the report view up, for every prefix of a
+        number typed that could not be solved. Its dependents follow a success (a document
+        recompute marks them so after a feature: Document::recompute)."""
+        o = self.obj
         try:
-            self.doc.recompute()
+            o.Proxy.previewing = True
+            try:
+                ok = o.recompute()
+            finally:
+                o.Proxy.previewing = False
+            if ok:
+                o.purgeTouched()        # not solved twice
+                for d in o.InList:
+                    d.touch()
+                self.doc.recompute()
         except Exception as exc:  # never let a preview escape
             App.Console.PrintError(f"Elastica: {exc}\n")
         self.refresh()
@@ -572,8 +612,10 @@ class Panel:
             return True
         self.flush()
         if self.obj.Status.startswith("error"):
-            # the recompute that failed said it in the report view (proxy.report), the
-            # panel's status line shows it: stay open, the user fixes the input or cancels
+            # the preview said it on the panel's error line only: OK says it in the report
+            # view too, and the panel stays open, the user fixes the input or cancels
+            App.Console.PrintError(f"Elastica {self.obj.Label}: "
+                                   f"{said_kept(self.obj, 'Status').removeprefix('error: ')}\n")
             return False
         code = self.copy_code()
         if not code and not self._keep:   # refresh_enabled keeps this from happening

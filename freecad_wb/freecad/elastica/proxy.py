@@ -196,11 +196,14 @@ def check_degree(value, lo=3, hi=7, name="Degree"):
 
 
 def report(obj, msg, error=True):
-    """The message in the report view and, as 'error: ...', in obj.Status (its marks said
-    in the schema of now, units.say; kept for said())."""
+    """The message in the report view (not during a panel's live preview) and, as
+    'error: ...', in obj.Status (its marks said in the schema of now, units.say; kept for
+    said())."""
     msg = mm_marked(msg)          # '<number> mm' in the schema's length unit
-    (App.Console.PrintError if error else App.Console.PrintWarning)(
-        f"Elastica {obj.Label}: {say(msg)}\n")
+    if not getattr(getattr(obj, "Proxy", None), "previewing", False):
+        # a panel's live preview says it on its error line only (panelbase.Panel.update)
+        (App.Console.PrintError if error else App.Console.PrintWarning)(
+            f"Elastica {obj.Label}: {say(msg)}\n")
     if "Status" in obj.PropertiesList:
         set_said(obj, "Status", f"error: {msg}" if error else msg)
 
