@@ -4,7 +4,10 @@
 - F6: a number typed at a person's pace (250 ms a key) is solved once, not at every
   prefix ('1', '15', '150'), and a value that cannot be solved is said on the panel's
   error line only: no red report-view lines and 'Recompute failed!' (which popped the
-  report view up) while typing; OK says it in the report view, the panel stays open.
+  report view up) while typing; OK says it in the report view, the panel stays open;
+- F7: with nothing selected the commands are greyed out (Part_Offset2D), the blend until
+  two edges are (Part_Section, Part_Fuse); a selection a command cannot use opens
+  FreeCAD's modal 'Wrong selection' box (Part_RuledSurface), no report-view line.
 
 Screenshot: gui_typing_error_line.png (a typed length too short: the error line)."""
 
@@ -98,7 +101,84 @@ def typing_pace():
     App.closeDocument(doc.Name)
 
 
+def answering_modals(found):
+    """Poll for modal dialogs until stopped: their (title, text) appended to ``found``,
+    each answered OK. Returns the timer (stop it)."""
+    def poll():
+        w = QtGui.QApplication.activeModalWidget()
+        if w is None:
+            return
+        found.append((w.windowTitle(), w.text() if hasattr(w, "text") else ""))
+        for b in w.findChildren(QtGui.QAbstractButton):
+            if b.text().replace("&", "") == "OK":
+                b.click()
+                return
+        w.reject()
+    timer = QtCore.QTimer()
+    timer.timeout.connect(poll)
+    timer.start(100)
+    return timer
+
+
+ELASTICA = ("Elastica_Fit", "Elastica_Blend", "Elastica_Spline", "Elastica_EllipticBlend",
+            "Elastica_G2Quad", "Elastica_Comb")
+
+
+def active(names):
+    return {n: Gui.Command.get(n).isActive() for n in names}
+
+
+def select(doc, picks):
+    Gui.Selection.clearSelection()
+    for obj, sub in picks:
+        if sub:
+            Gui.Selection.addSelection(doc.Name, obj.Name, sub)
+        else:
+            Gui.Selection.addSelection(doc.Name, obj.Name)
+    G.pump()
+
+
+def wrong_selection():
+    doc = S.new_doc("ElasticaWrongSelection")
+    box = doc.addObject("Part::Box", "Box")
+    sk = S.two_lines_sketch(doc)
+    doc.recompute()
+    select(doc, [])
+    now = active(ELASTICA + ("Elastica_FitCsv",))
+    G.check(not any(now[n] for n in ELASTICA) and now["Elastica_FitCsv"],
+            f"F7: nothing selected: the commands are greyed out as Part_Offset2D (the CSV fit, "
+            f"which asks for its file, is not) {now}")
+    select(doc, [(sk, "Edge1")])
+    one = active(["Elastica_Blend", "Elastica_G2Quad"])
+    select(doc, [(sk, "Edge1"), (sk, "Edge2")])
+    two = active(["Elastica_Blend"])
+    G.check(not one["Elastica_Blend"] and one["Elastica_G2Quad"] and two["Elastica_Blend"],
+            f"F7: the blend is greyed out until two edges are selected, as Part_Section "
+            f"(one edge: {one}, two: {two})")
+    from freecad.elastica import commands as C
+    found = []
+    timer = answering_modals(found)
+    try:
+        for name in ("Elastica_Fit", "Elastica_Spline", "Elastica_EllipticBlend",
+                     "Elastica_G2Quad", "Elastica_Comb"):
+            del found[:]
+            del C.MESSAGES[:]
+            select(doc, [(box, "Face1")])
+            before, r0 = S.doc_state(doc), len(report_text())
+            Gui.runCommand(name)
+            G.wait(400)
+            said = report_text()[r0:].strip()
+            G.check(len(found) == 1 and found[0][0] == "Wrong selection" and "Face1" in found[0][1]
+                    and not said and S.doc_state(doc) == before and not Gui.Control.activeDialog(),
+                    f"F7: {name} on a box's face: FreeCAD's modal 'Wrong selection' box "
+                    f"({found}), no report-view line ({said!r}), the document unchanged")
+    finally:
+        timer.stop()
+    App.closeDocument(doc.Name)
+
+
 def run_all(smoke):
     global G
     G = smoke
     typing_pace()
+    wrong_selection()

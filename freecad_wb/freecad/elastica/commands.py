@@ -1,8 +1,10 @@
 """GUI commands of the Elastica workbench. Thin: read the selection, check it with
-the feature's core (so bad input leaves the document untouched and only prints a
-message), create the feature through ``Gui.doCommandGui`` (recorded in the Python
-console and macros) inside an undo transaction, and open its task panel, whose
-OK commits the transaction and Cancel aborts it."""
+the feature's core (so bad input leaves the document untouched: a script gets a
+message, a toolbar command FreeCAD's own modal 'Wrong selection' box; a command whose
+selection cannot fit is greyed out), create the feature through
+``Gui.doCommandGui`` (recorded in the Python console and macros) inside an undo
+transaction, and open its task panel, whose OK commits the transaction and Cancel
+aborts it."""
 from __future__ import annotations
 
 import FreeCAD as App
@@ -28,14 +30,28 @@ def message(text, error=True):
         pass
 
 
+def wrong_selection(text):
+    """Input a command cannot use, as FreeCAD's own commands say it (Part_RuledSurface,
+    the Sketcher's constraints): a modal 'Wrong selection' box, not a red report-view
+    line (which popped the report view up); without the GUI a message."""
+    if not App.GuiUp:
+        return message(text)
+    from PySide import QtGui
+    text = say(text)
+    MESSAGES.append(text)
+    del MESSAGES[:-50]
+    QtGui.QMessageBox.warning(Gui.getMainWindow(), "Wrong selection", text[:1].upper() + text[1:])
+
+
 def _guarded(command):
-    """Run ``command(selection)``; whatever goes wrong becomes a message."""
+    """Run ``command(selection, wrong=wrong_selection)`` (a toolbar command); whatever goes
+    wrong otherwise becomes a message."""
     problem = library_problem()
     if problem:
         message(problem)
         return None
     try:
-        return command(selection_sources())
+        return command(selection_sources(), wrong=wrong_selection)
     except Exception as exc:
         message(f"{type(exc).__name__}: {exc}")
         return None
@@ -98,8 +114,9 @@ def _create(doc, title, code, keep_open=False):
     return obj
 
 
-def _check_and_create(title, what, check, code, open_panel):
-    """Run ``check()`` (the feature's core on the input; InputProblem = bad input),
+def _check_and_create(title, what, check, code, open_panel, wrong=message):
+    """Run ``check()`` (the feature's core on the input; InputProblem = bad input, said by
+    ``wrong``),
     then create the feature by the recorded ``code`` (a string, or a function giving
     it after the check) and open its task panel. ``check`` may return a note (why the
     command chose other values than the usual defaults): said in the report view and at
@@ -111,7 +128,7 @@ def _check_and_create(title, what, check, code, open_panel):
     try:
         note = check()
     except InputProblem as exc:
-        message(str(exc))
+        wrong(str(exc))
         return None
     except Exception as exc:  # anything unexpected: report, never escape
         message(f"{what} failed: {type(exc).__name__}: {exc}")
@@ -143,18 +160,29 @@ def dialog_open():
 DIALOG_OPEN = "a task dialog is open: finish it (OK or Cancel) first"
 
 
+def _selected_edges():
+    return sum(n.startswith("Edge") for s in Gui.Selection.getSelectionEx()
+               for n in s.SubElementNames)
+
+
 class _Command:
-    """A toolbar command: ``run(selection)``, guarded; active with a document and no task
-    dialog open (as FreeCAD's own commands that open one: a second panel replaced the
-    first without its OK or Cancel, and left a sketch in edit mode)."""
+    """A toolbar command: ``run(selection, wrong=...)``, guarded; active with a document, no
+    task dialog open (as FreeCAD's own commands that open one: a second panel replaced the
+    first without its OK or Cancel, and left a sketch in edit mode) and a selection it may
+    take (``fits``: something selected, as Part_Offset2D; a selection it cannot use opens
+    the 'Wrong selection' box, as Part_RuledSurface's)."""
 
     pixmap = menu = tip = ""
 
     def GetResources(self):
         return {"Pixmap": icon(self.pixmap), "MenuText": self.menu, "ToolTip": self.tip}
 
+    @staticmethod
+    def fits():
+        return bool(Gui.Selection.getSelection())
+
     def IsActive(self):
-        return App.ActiveDocument is not None and not dialog_open()
+        return App.ActiveDocument is not None and not dialog_open() and self.fits()
 
     def Activated(self):
         _guarded(type(self).run)
@@ -162,13 +190,13 @@ class _Command:
 
 # ------------------------------------------------------------------ fit
 
-def fit_sources(sources, csv_file="", open_panel=True, **options):
+def fit_sources(sources, csv_file="", open_panel=True, wrong=message, **options):
     """Check the fit input, create the Fit feature (recorded), open its task panel.
     ``options`` override the preferences: Model, Distance, SplitAtInflection, PinStart,
     PinEnd, UseStartCurvature, StartCurvature, UseEndCurvature, EndCurvature,
     StartContinuity, EndContinuity,
-    ResampleStep, Tolerance, Degree. Returns the new feature or None (message
-    printed, document unchanged)."""
+    ResampleStep, Tolerance, Degree. Returns the new feature or None (``wrong`` said why,
+    document unchanged)."""
     from . import fit, fit_core, sources as src_mod
     doc = _doc()
     if doc is None:
@@ -186,7 +214,7 @@ def fit_sources(sources, csv_file="", open_panel=True, **options):
         "Fit elastica", "fit", check,
         "from freecad.elastica import fit as elastica_fit\n"
         f"_fit = elastica_fit.make({_ref_doc(doc)}, {_src(sources)}, csv_file={csv_file!r}, "
-        f"{_kw(opts)})\n{_ref_doc(doc)}.recompute()", open_panel)
+        f"{_kw(opts)})\n{_ref_doc(doc)}.recompute()", open_panel, wrong)
 
 
 class FitCommand(_Command):
@@ -201,13 +229,14 @@ class FitCsvCommand(_Command):
     pixmap, menu = "fit_csv", "Fit elastica to CSV file..."
     tip = ("Fit an elastica to x,y[,z] points read from a CSV / text file "
            "(3D points are plane-fitted)")
+    fits = staticmethod(lambda: True)       # it asks for its file
 
     def Activated(self):
         from PySide import QtGui
         path, _ = QtGui.QFileDialog.getOpenFileName(
             Gui.getMainWindow(), "Points to fit", "", "Point files (*.csv *.txt *.xyz);;All (*)")
         if path:
-            _guarded(lambda _sel: fit_sources([], csv_file=path))
+            _guarded(lambda _sel, wrong: fit_sources([], csv_file=path, wrong=wrong))
 
 
 # ------------------------------------------------------------------ blend
@@ -217,7 +246,7 @@ def _two_edges(sources):
     return edges if len(edges) == 2 else None
 
 
-def blend_sources(sources, open_panel=True, picks=None):
+def blend_sources(sources, open_panel=True, picks=None, wrong=message):
     """Check two selected edges, create the Blend feature (recorded), open its panel.
     ``picks``: {(object name, subname): point clicked} (selection_picks): each edge is
     left at its end nearer the click (blend.chosen_ends); without: the nearest ends."""
@@ -228,8 +257,8 @@ def blend_sources(sources, open_panel=True, picks=None):
         return None
     edges = _two_edges(sources)
     if edges is None:
-        message("select exactly two edges (each is joined at its end nearer where it was "
-                "clicked)")
+        wrong("select exactly two edges (each is joined at its end nearer where it was "
+              "clicked)")
         return None
 
     opts = {}
@@ -258,7 +287,7 @@ def blend_sources(sources, open_panel=True, picks=None):
         lambda: "from freecad.elastica import blend as elastica_blend\n"
         f"_blend = elastica_blend.make({_ref_doc(doc)}, ({_ref(edges[0][0])}, {edges[0][1]!r}), "
         f"({_ref(edges[1][0])}, {edges[1][1]!r}){', ' + _kw(opts) if opts else ''})\n"
-        f"{_ref_doc(doc)}.recompute()", open_panel)
+        f"{_ref_doc(doc)}.recompute()", open_panel, wrong)
 
 
 class BlendCommand(_Command):
@@ -268,13 +297,18 @@ class BlendCommand(_Command):
            "free batten, or every Hermite solution for a tension or a length")
     run = staticmethod(blend_sources)
 
+    @staticmethod
+    def fits():
+        """Two edges selected, as Part_Section and Part_Fuse wait for two shapes."""
+        return _selected_edges() == 2
+
     def Activated(self):
-        _guarded(lambda sel: blend_sources(sel, picks=selection_picks()))
+        _guarded(lambda sel, wrong: blend_sources(sel, picks=selection_picks(), wrong=wrong))
 
 
 # ------------------------------------------------------------------ elastic spline
 
-def spline_sources(sources, open_panel=True, **options):
+def spline_sources(sources, open_panel=True, wrong=message, **options):
     """Check the picked points, create the Elastic spline (recorded), open its task
     panel. ``options`` set Mode, Tension, Length, Closed (default: closed when the
     points are a closed wire's), Tolerance, Degree, ..."""
@@ -311,7 +345,7 @@ def spline_sources(sources, open_panel=True, **options):
         "Elastic spline", "elastic spline", check,
         lambda: "from freecad.elastica import spline as elastica_spline\n"
         f"_spline = elastica_spline.make({_ref_doc(doc)}, {_src(sources)}, {_kw(opts)})\n"
-        f"{_ref_doc(doc)}.recompute()", open_panel)
+        f"{_ref_doc(doc)}.recompute()", open_panel, wrong)
 
 
 class SplineCommand(_Command):
@@ -324,7 +358,7 @@ class SplineCommand(_Command):
 
 # ------------------------------------------------------------------ elliptic blend
 
-def ellblend_sources(sources, open_panel=True, **options):
+def ellblend_sources(sources, open_panel=True, wrong=message, **options):
     """Check the picked points, create the elliptic blend curve (recorded), open its
     task panel. ``options`` set Mode (interpolate / control), Closed, K, KConvention
     (modulus / parameter), D, Tolerance."""
@@ -345,7 +379,7 @@ def ellblend_sources(sources, open_panel=True, **options):
         "Elliptic blend curve", "elliptic blend", check,
         "from freecad.elastica import ellblend as elastica_ellblend\n"
         f"_ellblend = elastica_ellblend.make({_ref_doc(doc)}, {_src(sources)}, {_kw(opts)})\n"
-        f"{_ref_doc(doc)}.recompute()", open_panel)
+        f"{_ref_doc(doc)}.recompute()", open_panel, wrong)
 
 
 class EllipticBlendCommand(_Command):
@@ -359,7 +393,7 @@ class EllipticBlendCommand(_Command):
 
 # ------------------------------------------------------------------ G2 quadratic
 
-def g2quad_sources(sources, open_panel=True, **options):
+def g2quad_sources(sources, open_panel=True, wrong=message, **options):
     """Check the picked curve, create the G2 quadratic B-spline (recorded), open its panel."""
     from . import g2quad, sources as src_mod
     doc = _doc()
@@ -376,7 +410,7 @@ def g2quad_sources(sources, open_panel=True, **options):
         "G2 quadratic B-spline", "G2 quadratic B-spline", check,
         "from freecad.elastica import g2quad as elastica_g2quad\n"
         f"_g2 = elastica_g2quad.make({_ref_doc(doc)}, {_src(sources)}, {_kw(opts)})\n"
-        f"{_ref_doc(doc)}.recompute()", open_panel)
+        f"{_ref_doc(doc)}.recompute()", open_panel, wrong)
 
 
 class G2QuadCommand(_Command):
@@ -388,23 +422,24 @@ class G2QuadCommand(_Command):
 
 # ------------------------------------------------------------------ comb
 
-def comb_sources(sources):
-    """Curvature combs of the selected results / edges (recorded)."""
+def comb_sources(sources, wrong=message):
+    """Curvature combs of the selected results / edges (recorded); ``wrong`` says why one
+    cannot be made."""
     from . import comb
     doc = App.ActiveDocument
     if doc is None or not sources:
-        message("select an Elastica result or some edges")
+        wrong("select an Elastica result or some edges")
         return []
     made = []
     for obj, subs in sources:
         other = [s for s in subs if not s.startswith("Edge")]
         if other:      # as the other commands refuse a face (it combed every edge of its object)
-            message(f"{obj.Label}.{other[0]}: select edges or the whole object, not {other[0]}")
+            wrong(f"{obj.Label}.{other[0]}: select edges or the whole object, not {other[0]}")
             continue
         try:
             comb.comb_core(obj, subs, 8)
         except InputProblem as exc:
-            message(f"{obj.Label}: {exc}")
+            wrong(f"{obj.Label}: {exc}")
             continue
         except Exception as exc:
             message(f"{obj.Label}: comb failed: {type(exc).__name__}: {exc}")
