@@ -7,9 +7,12 @@
   report view up) while typing; OK says it in the report view, the panel stays open;
 - F7: with nothing selected the commands are greyed out (Part_Offset2D), the blend until
   two edges are (Part_Section, Part_Fuse); a selection a command cannot use opens
-  FreeCAD's modal 'Wrong selection' box (Part_RuledSurface), no report-view line.
+  FreeCAD's modal 'Wrong selection' box (Part_RuledSurface), no report-view line;
+- F8: the Fit panel's Model box shows its item whole ('Discrete elastica (' was cut), the
+  full name in the item's tooltip, the preference page the same names.
 
-Screenshot: gui_typing_error_line.png (a typed length too short: the error line)."""
+Screenshots: gui_typing_error_line.png (a typed length too short: the error line),
+gui_fit_model_names.png (the Model box)."""
 
 import time
 from contextlib import contextmanager
@@ -177,8 +180,47 @@ def wrong_selection():
     App.closeDocument(doc.Name)
 
 
+def model_names():
+    from freecad.elastica import fit_core, preferences as P
+    doc = S.new_doc("ElasticaModelNames")
+    sk = S.points_sketch(doc, S.keyline_xy(14)[0], "Points")
+    panel = G.open_panel(doc, "Elastica_Fit", [(sk, "")], "Fit for its model names")
+    G.wait(300)
+    combo = panel.model
+    cut = []
+    for i in range(combo.count()):
+        combo.blockSignals(True)
+        combo.setCurrentIndex(i)
+        combo.blockSignals(False)
+        G.pump()
+        opt = QtGui.QStyleOptionComboBox()
+        combo.initStyleOption(opt)
+        field = combo.style().subControlRect(QtGui.QStyle.CC_ComboBox, opt,
+                                             QtGui.QStyle.SC_ComboBoxEditField, combo)
+        need = combo.fontMetrics().boundingRect(combo.itemText(i)).width()
+        if need > field.width():
+            cut.append((combo.itemText(i), need, field.width()))
+        if i == 0:
+            G.screenshot("gui_fit_model_names.png")
+    combo.blockSignals(True)
+    combo.setCurrentIndex(fit_core.MODELS.index(panel.obj.Model))
+    combo.blockSignals(False)
+    tips = [combo.itemData(i, QtCore.Qt.ToolTipRole) for i in range(combo.count())]
+    page = P.PreferencePage()
+    names = [page.model.itemText(i) for i in range(page.model.count())]
+    G.check(not cut, f"F8: the Fit panel's Model box shows its items whole (cut: {cut})")
+    G.check(tips[0] and tips[0].startswith("Discrete elastica (Bobenko-Suris)")
+            and names == [combo.itemText(i) for i in range(combo.count())],
+            f"F8: the full name in each item's tooltip ({tips}); the preference page names the "
+            f"models as the panel ({names})")
+    panel.reject()
+    G.pump()
+    App.closeDocument(doc.Name)
+
+
 def run_all(smoke):
     global G
     G = smoke
     typing_pace()
     wrong_selection()
+    model_names()

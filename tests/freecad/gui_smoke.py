@@ -683,7 +683,10 @@ def fit_panel(doc, S):
           "-1 mm" not in panel.result.text(),
           "fit panel shows point-to-curve rms, max error, k, end curvatures, the B-spline (no "
           f"'-1 mm'): {panel.result.text()}")
-    check(panel.model.currentText().startswith("Discrete elastica"), "fit: human model names")
+    from PySide import QtCore
+    check(panel.model.currentText() == "Discrete" and panel.model.itemData(
+        0, QtCore.Qt.ToolTipRole).startswith("Discrete elastica"),
+        "fit: human model names (short, in full in the tooltip: gui_fc_behaviour)")
     check(not panel.degree.isEnabled() and not panel.tol.isEnabled() and
           not panel.distance.isEnabled(),
           "fit, discrete model: B-spline degree, tolerance and distance disabled")

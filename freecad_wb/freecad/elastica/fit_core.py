@@ -21,8 +21,13 @@ from .sources import curve_order, file_order
 from .units import coordinate_mark, exact_mark, figure_mark, length_unit_mark
 
 MIN_POINTS = 6          # fewer points cannot determine the 7 (5 shape) parameters of a fit
+# the models, their names as the Fit panel's and the preference page's Model boxes show
+# them (short: the Combo View leaves the box 110 px, which cut "Discrete elastica (" off)
+# and in full (the items' tooltips)
 MODELS = ["discrete", "smooth"]
-MODEL_NAMES = {"discrete": "Discrete elastica (Bobenko-Suris)", "smooth": "Smooth elastica"}
+MODEL_NAMES = {"discrete": "Discrete", "smooth": "Smooth"}
+MODEL_TIPS = {"discrete": "Discrete elastica (Bobenko-Suris): one vertex per (resampled) point",
+              "smooth": "Smooth elastica"}
 DISTANCES = ["orthogonal", "paired"]
 DISTANCE_NAMES = {"orthogonal": "Point to curve", "paired": "Paired (equilateral data)"}
 
@@ -531,5 +536,5 @@ def fit_gathered(gathered, notes, **options):
     return r
 
 
-__all__ = ["fit_core", "fit_gathered", "MIN_POINTS", "MODELS", "MODEL_NAMES", "DISTANCES",
-           "DISTANCE_NAMES"]
+__all__ = ["fit_core", "fit_gathered", "MIN_POINTS", "MODELS", "MODEL_NAMES", "MODEL_TIPS",
+           "DISTANCES", "DISTANCE_NAMES"]

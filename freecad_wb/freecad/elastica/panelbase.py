@@ -318,10 +318,13 @@ class Panel:
             self.enablers.append((box, when))
         return box
 
-    def choice(self, grid, label, prop, values, texts, tip, when=None):
-        """A combo box bound live to the enumeration property prop."""
+    def choice(self, grid, label, prop, values, texts, tip, when=None, tips=()):
+        """A combo box bound live to the enumeration property prop (``tips``: each item's
+        tooltip, its text in full)."""
         box = _narrow(QtGui.QComboBox())
         box.addItems(list(texts))
+        for i, item_tip in enumerate(tips):
+            box.setItemData(i, item_tip, QtCore.Qt.ToolTipRole)
         box.setCurrentIndex(list(values).index(getattr(self.obj, prop)))
         box.currentIndexChanged.connect(lambda i: self.set(prop, values[i]))
         self.row(grid, label, box, tip)

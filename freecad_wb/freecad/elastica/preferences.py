@@ -4,15 +4,14 @@ User parameter:BaseApp/Preferences/Mod/Elastica."""
 import FreeCAD as App
 
 from . import PREF_PATH, defaults
-
-MODELS = [("discrete", "Discrete elastica (Bobenko-Suris)"), ("smooth", "Smooth elastica")]
+from .fit_core import MODEL_NAMES, MODEL_TIPS, MODELS
 
 
 class PreferencePage:
     """A Python preference page: ``form`` plus loadSettings / saveSettings."""
 
     def __init__(self, parent=None):
-        from PySide import QtGui
+        from PySide import QtCore, QtGui
         from .spinboxes import DecadeBox
         self.form = QtGui.QWidget(parent)
         self.form.setWindowTitle("Elastica")
@@ -26,7 +25,9 @@ class PreferencePage:
         self.degree.setToolTip("Degree of the B-splines of smooth fits (3 to 7)")
         layout.addRow("Default B-spline degree", self.degree)
         self.model = QtGui.QComboBox()
-        self.model.addItems([text for _, text in MODELS])
+        for i, m in enumerate(MODELS):
+            self.model.addItem(MODEL_NAMES[m])
+            self.model.setItemData(i, MODEL_TIPS[m], QtCore.Qt.ToolTipRole)
         self.model.setToolTip("The model new fits start with")
         layout.addRow("Default fit model", self.model)
 
@@ -34,13 +35,13 @@ class PreferencePage:
         tol, deg, model = defaults()
         self.tol.setValue(tol)
         self.degree.setValue(deg)
-        self.model.setCurrentIndex([m for m, _ in MODELS].index(model))
+        self.model.setCurrentIndex(MODELS.index(model))
 
     def saveSettings(self):
         p = App.ParamGet(PREF_PATH)
         p.SetFloat("Tolerance", float(self.tol.value()))
         p.SetInt("Degree", int(self.degree.value()))
-        p.SetString("Model", MODELS[self.model.currentIndex()][0])
+        p.SetString("Model", MODELS[self.model.currentIndex()])
 
 
 def register():

@@ -14,7 +14,7 @@ from PySide import QtGui
 from . import blend as B
 from . import ellblend as E
 from . import spline as Sp
-from .fit_core import DISTANCE_NAMES, DISTANCES, MODEL_NAMES, MODELS
+from .fit_core import DISTANCE_NAMES, DISTANCES, MODEL_NAMES, MODEL_TIPS, MODELS
 from .fit_ends import CONTINUITIES, CONTINUITY_NAMES
 from .geometry import is_sketch
 from .panelbase import CURRENT, Panel, _fmt, said_now
@@ -32,7 +32,8 @@ class FitPanel(Panel):
         self.model = self.choice(g, "Model", "Model", MODELS,
                                  [MODEL_NAMES[m] for m in MODELS],
                                  "Discrete: the Bobenko-Suris discrete elastica, one vertex per "
-                                 "(resampled) point; smooth: the smooth elastica")
+                                 "(resampled) point; smooth: the smooth elastica",
+                                 tips=[MODEL_TIPS[m] for m in MODELS])
         self.distance = self.choice(g, "Distance", "Distance", DISTANCES,
                                     [DISTANCE_NAMES[d] for d in DISTANCES],
                                     "What the smooth fit minimises: each point's distance to "
