@@ -9,10 +9,13 @@
   two edges are (Part_Section, Part_Fuse); a selection a command cannot use opens
   FreeCAD's modal 'Wrong selection' box (Part_RuledSurface), no report-view line;
 - F8: the Fit panel's Model box shows its item whole ('Discrete elastica (' was cut), the
-  full name in the item's tooltip, the preference page the same names.
+  full name in the item's tooltip, the preference page the same names;
+- F4: the source sketch double-clicked while a panel is open opens the Sketcher (the
+  panel closes, its edits kept), as over PartDesign Pad's panel: it needed a second
+  double-click.
 
 Screenshots: gui_typing_error_line.png (a typed length too short: the error line),
-gui_fit_model_names.png (the Model box)."""
+gui_fit_model_names.png (the Model box), gui_sketch_over_panel.png (the Sketcher open)."""
 
 import time
 from contextlib import contextmanager
@@ -218,9 +221,43 @@ def model_names():
     App.closeDocument(doc.Name)
 
 
+def sketch_during_panel(new):
+    """The source sketch double-clicked (its view provider's setEdit) while the blend's
+    panel is open, a tension typed: a new blend's (``new``) or an edit's."""
+    from freecad.elastica import taskpanels as T
+    doc = S.new_doc("ElasticaSketchOverPanel")
+    sk = S.two_lines_sketch(doc)
+    panel = G.open_panel(doc, "Elastica_Blend", [(sk, "Edge1"), (sk, "Edge2")], "Blend")
+    b = panel.obj
+    if not new:
+        panel.accept()
+        G.pump()
+        panel = G.double_click(b)
+    panel.mode.setCurrentIndex(1)               # a tension
+    G.wait(300)
+    G.type_into(panel.tension, "0.001")
+    G.wait(800)
+    Gui.getDocument(doc.Name).setEdit(sk.Name)
+    G.wait(800)
+    ine = Gui.getDocument(doc.Name).getInEdit()
+    what = "a new blend's" if new else "an edit's"
+    if not new:
+        G.screenshot("gui_sketch_over_panel.png")
+    G.check(ine is not None and ine.Object is sk and Gui.Control.activeDialog() and not T.CURRENT
+            and abs(b.Tension - 0.001) < 1e-15,
+            f"F4: the source sketch double-clicked over {what} panel opens the Sketcher (in "
+            f"edit: {ine.Object.Name if ine else None}), the panel closed, its tension kept "
+            f"({b.Tension})")
+    Gui.getDocument(doc.Name).resetEdit()
+    G.pump()
+    App.closeDocument(doc.Name)
+
+
 def run_all(smoke):
     global G
     G = smoke
     typing_pace()
     wrong_selection()
     model_names()
+    sketch_during_panel(new=True)
+    sketch_during_panel(new=False)

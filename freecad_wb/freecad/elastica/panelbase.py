@@ -670,12 +670,18 @@ class Panel:
         self._close()
         return True
 
+    dialog_closed = False   # its edit ended (the view provider's unsetEdit closed it)
+
     def _close(self):
         CURRENT[:] = []
         try:
             App.removeDocumentObserver(self.watch)
         except Exception:  # already removed (a second close)
             pass
+        if self.dialog_closed:
+            # the edit that ended it may be another's now (a sketch double-clicked): its
+            # dialog and edit mode stay (this closed the Sketcher as it opened)
+            return
         Gui.Control.closeDialog()
         if self.doc_name in App.listDocuments():    # not a document closed under it
             gdoc = Gui.getDocument(self.doc_name)

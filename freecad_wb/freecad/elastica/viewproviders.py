@@ -377,7 +377,10 @@ class ViewProvider:
         from .panelbase import CURRENT
         panel = CURRENT[0] if CURRENT else None
         if panel is not None and not panel.closing and getattr(panel, "obj", None) is vobj.Object:
-            panel.lost("its edit ended")    # FreeCAD ended it: its document is closing
+            # FreeCAD ended it: its document is closing, or another object's edit starts
+            # (a sketch double-clicked: the Sketcher opens, as it does over a Pad's panel)
+            panel.lost("its edit ended")
+            panel.dialog_closed = True      # its later close leaves the next edit's alone
         Gui.Control.closeDialog()
         return True
 
