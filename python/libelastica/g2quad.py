@@ -280,7 +280,11 @@ def _hold_start(x: np.ndarray, start, end, kappa: float, tangent) -> Optional[np
     (s, t) from the polyline's own, finite-difference Jacobian, backtracking; no root with
     |s| <= 0.5, t within 0.5..1.5 x its own). Two end vertices give the two freedoms one
     (_match_start) lacks: the end parabola keeps the source's tangent too (QA17 P4: 0.68
-    deg off at 24 edges, a kink where the source joined a line G1)."""
+    deg off at 24 edges, a kink where the source joined a line G1). Worked relative to
+    x_0 (QA18 W3: at a GIS offset (5e5, 5e6) the poles' differences carried ~ulp(5e6)/edge
+    ~2e-9 rad, above the 1e-9 accepted, and the end fell back: 0.9 deg off)."""
+    origin = x[0].copy()
+    x, start, end = x - origin, np.asarray(start) - origin, np.asarray(end) - origin
     u = (x[3] - x[2]) / np.hypot(*(x[3] - x[2]))
     t0 = float((x[2] - x[1]) @ u)
     scale = np.array([1.0, abs(t0)])
@@ -303,7 +307,7 @@ def _hold_start(x: np.ndarray, start, end, kappa: float, tangent) -> Optional[np
         if r is None:
             return None
         if np.max(np.abs(r)) < 1e-12:
-            return y
+            return y + origin
         J = np.empty((2, 2))
         for j in range(2):
             dz = np.zeros(2)
@@ -325,7 +329,7 @@ def _hold_start(x: np.ndarray, start, end, kappa: float, tangent) -> Optional[np
         else:
             break                           # no step improves: rounding's floor, or none
         z, r, y = z + lam * step, r2, y2
-    return y if np.max(np.abs(r)) < 1e-9 else None     # rounding: ~1e-10 at 1000 edges
+    return y + origin if np.max(np.abs(r)) < 1e-9 else None   # rounding: ~1e-10 at 1000 edges
 
 
 def _matched_ends(x: np.ndarray, start, end, k_start: Optional[float],
