@@ -31,6 +31,7 @@ from ._ffi import (DomainError, NotConvergedError, SingularError, as_points, as_
                    as_vector,
                    bspline_from_c, check, dptr, ffi, lib, require, shown)
 from ._text import LengthFormat, lengths
+from .core import arc_lengths
 from .shape import crossing_pairs, self_crossings
 from .spline import LoopWarning
 
@@ -555,8 +556,16 @@ class BlendCurve:
         return out + [text for _, text in self._interpolation_warnings(length)]
 
     def points(self, t=None) -> np.ndarray:
-        """Points (n, 2) at global parameters t in [0, nseg] (default 101 per segment)."""
-        return self.basis.evaluate_composite(self.q, t)
+        """Points (n, 2) by the rule every curve's points take (:func:`core.arc_lengths`),
+        over the curve's own parameter t in [0, nseg] (segment s runs over [s, s + 1]), not
+        arc length: an int n gives n points at equal steps of t; floats or an array are
+        values of t (a float or 0-d array: shape (2,)); t outside [0, nseg] raises
+        ValueError. Default: 100 steps per segment (100 nseg + 1 points)."""
+        if t is None:
+            return self.basis.evaluate_composite(self.q)
+        t, scalar = arc_lengths(t, float(self.nseg), "BlendCurve.points", param="parameter t")
+        xy = self.basis.evaluate_composite(self.q, t)
+        return xy[0] if scalar else xy
 
     def to_bspline(self, tol: Optional[float] = None):
         """Clamped cubic BSpline within tol, default 1e-6 of the curve's length (see

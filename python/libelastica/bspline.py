@@ -118,30 +118,57 @@ class BSpline:
         return np.repeat(self.knots, self.mults)
 
     # -- evaluation -----------------------------------------------------------
+    # evaluate / derivative / curvature take B-spline parameters t in the domain (knots[0],
+    # knots[-1]), not arc lengths, and an int is a parameter there too, not a count (the
+    # curves' points(n) rule, core.arc_lengths, is for arc length): n samples are
+    # b.evaluate(np.linspace(*b.domain, n)). A scalar t (a float, an int, a 0-d array)
+    # gives one value without the leading axis, as the curves' points(2.0) gives (2,).
+    def _params(self, t, who: str):
+        """(t as a vector, scalar): the parameters ``who`` evaluates at, each within the
+        domain (the C library's 1e-12 slack), else DomainError naming ``who``, the value
+        and the domain."""
+        scalar = np.ndim(t) == 0
+        t = as_vector(t, f"{who}: t", finite=True)
+        a, z = self.domain
+        slack = 1e-12 * (abs(a) + abs(z) + (z - a))     # (el_bspline_derivative's)
+        out = (t < a - slack) | (t > z + slack)
+        if out.any():
+            i = int(np.argmax(out))
+            raise DomainError(lib.EL_EDOM, f"{who}: parameter {'t' if scalar else f't[{i}]'} = "
+                              f"{float(t[i])!r} is outside the B-spline's domain [{a!r}, {z!r}] "
+                              "(parameters, not arc lengths; an int is a parameter too)")
+        return t, scalar
+
     def derivative(self, t, order: int = 1) -> np.ndarray:
-        """Derivative of the given order (0 = points) at parameters t, shape (len(t), dim)."""
-        order = as_int(order, "BSpline.derivative: order", 0)
-        t = as_vector(t, "BSpline: t", finite=True)
+        """Derivative of the given order (0 = points) at parameters t in :attr:`domain`,
+        shape (len(t), dim); a scalar t (float, int or 0-d): shape (dim,)."""
+        return self._derivative(t, order, "BSpline.derivative")
+
+    def _derivative(self, t, order, who: str) -> np.ndarray:
+        order = as_int(order, f"{who}: order", 0)
+        t, scalar = self._params(t, who)
         out = np.empty((len(t), self.dim))
         check(lib.el_bspline_derivative(self._c(), int(order), len(t), dptr(t), dptr(out)),
-              "BSpline.derivative")
-        return out
+              who)
+        return out[0] if scalar else out
 
     def evaluate(self, t) -> np.ndarray:
-        """Points B(t), shape (len(t), dim)."""
-        return self.derivative(t, 0)
+        """Points B(t) at parameters t in :attr:`domain` (not arc lengths: an int is a
+        parameter, not a count), shape (len(t), dim); a scalar t: shape (dim,)."""
+        return self._derivative(t, 0, "BSpline.evaluate")
 
     def __call__(self, t) -> np.ndarray:
-        return self.evaluate(t)
+        return self._derivative(t, 0, "BSpline")
 
     def curvature(self, t) -> np.ndarray:
-        """Signed curvature det(B', B'')/|B'|^3 of a planar B-spline at t."""
-        t = as_vector(t, "BSpline.curvature: t", finite=True)
+        """Signed curvature det(B', B'')/|B'|^3 of a planar B-spline at parameters t in
+        :attr:`domain`, shape (len(t),); a scalar t: shape ()."""
+        t, scalar = self._params(t, "BSpline.curvature")
         require(self.dim == 2, "BSpline.curvature: dim", "2 (a planar curve)", self.dim)
         require(self.degree >= 2, "BSpline.curvature: degree", ">= 2", self.degree)
         out = np.empty(len(t))
         check(lib.el_bspline_curvature(self._c(), len(t), dptr(t), dptr(out)), "BSpline.curvature")
-        return out
+        return out[0] if scalar else out
 
     def mapped(self, fn) -> "BSpline":
         """This B-spline with its poles mapped by ``fn`` ((n, dim) -> (n, dim')), knots

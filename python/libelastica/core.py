@@ -132,23 +132,27 @@ class SmoothElastica(ShapeDescriptors):
         return smooth_to_bspline(self, tol, degree)
 
 
-def arc_lengths(where, length: float, cls: str, extrapolate: bool = False):
+def arc_lengths(where, length: float, cls: str, extrapolate: bool = False,
+                param: str = "arc length s"):
     """(s, scalar): the arc lengths a curve's points/angle/curvature(where) evaluate at,
     one rule for every curve of arc length [0, length]: an int n (Python or numpy
     integer) is a count, n >= 2 equally spaced; a float or an array (0-d included) holds
     arc lengths, each within [0, length] (1e-12 length of rounding allowed), else
     ValueError naming the range (``extrapolate``: any finite s, the elastica continued past
-    its ends); scalar: a float or 0-d array (numpy's shapes: (2,), ())."""
+    its ends); scalar: a float or 0-d array (numpy's shapes: (2,), ()). ``param``: what
+    the values are and their name, for a curve whose natural parameter is not arc length
+    (BlendCurve's "parameter t" over [0, nseg])."""
     if isinstance(where, (int, np.integer)) and not isinstance(where, (bool, np.bool_)):
         n = as_int(where, f"{cls}: the number of points n", 2, None)
         return np.linspace(0.0, length, n), False
     scalar = type(where) is float or np.ndim(where) == 0
-    s = as_vector(where, f"{cls}: s", finite=True)
+    what, name = param.rsplit(" ", 1)
+    s = as_vector(where, f"{cls}: {name}", finite=True)
     slack = 1e-12 * length   # (the rounding of a computed length)
     if not extrapolate and len(s) and (s.min() < -slack or s.max() > length + slack):
         i = int(np.argmax((s < -slack) | (s > length + slack)))
-        raise invalid(f"{cls}: arc length {'s' if scalar else f's[{i}]'} = {float(s[i])!r} is "
-                      f"outside the curve, [0, {length!r}] (an int n asks for n points)")
+        raise invalid(f"{cls}: {what} {name if scalar else f'{name}[{i}]'} = {float(s[i])!r} "
+                      f"is outside the curve, [0, {length!r}] (an int n asks for n points)")
     return s, scalar
 
 

@@ -63,3 +63,50 @@ def test_extrapolate_continues_the_elastica():
     assert np.array_equal(CURVE.points(s, extrapolate=True), longer.points(s))
     assert np.array_equal(CURVE.angle(s, extrapolate=True), longer.angle(s))
     assert np.array_equal(CURVE.curvature(s, extrapolate=True), longer.curvature(s))
+
+
+def _blends():
+    return [el.blend_curve(DUCKS[:4], k=0.3), el.blend_curve(DUCKS, k=0.3),
+            el.blend_curve(DUCKS[:4], k=0.3, closed=True)]
+
+
+@pytest.mark.parametrize("blend", _blends(), ids=["segment", "composite", "closed"])
+def test_a_blend_curve_takes_the_rule_over_its_parameter(blend):
+    """QA18 M4: BlendCurve.points(5) gave ONE point at t = 5 (extrapolated), points(-0.1)
+    and points(1e9) points off the curve, a float shape (1, 2). Its parameter t in [0, nseg]
+    (not arc length) now takes the curves' rule: an int a count, a scalar shape (2,), t
+    outside raises naming the range."""
+    T = float(blend.nseg)
+    for n in (2, 5, np.int64(7)):
+        assert np.array_equal(blend.points(n), blend.points(np.linspace(0, T, int(n))))
+    for t in (0.5 * T, np.float64(0.5 * T), np.array(0.5 * T)):
+        p = blend.points(t)
+        assert p.shape == (2,) and np.array_equal(p, blend.points([0.5 * T])[0])
+    for t in (-0.1, 1e9, [0.0, T + 0.5], np.array(-1.0)):
+        with pytest.raises(ValueError, match=r"BlendCurve.points: parameter t.* is outside "
+                                             r"the curve, \[0, "):
+            blend.points(t)
+    with pytest.raises(ValueError, match="n must be >= 2, got 1"):
+        blend.points(1)
+    assert blend.points().shape == (100 * blend.nseg + 1, 2)      # the default, as before
+    assert blend.points([0.0, T, T * (1 + 1e-15)]).shape == (3, 2)
+
+
+def test_a_bspline_takes_parameters_and_a_scalar_gives_one_value():
+    """QA18 M4: BSpline.evaluate(2.0) gave shape (1, 2) where the curves' points(2.0) give
+    (2,). Its t are B-spline parameters in its domain, an int too (not a count, unlike the
+    curves': n samples are evaluate(np.linspace(*domain, n))); outside raises naming the
+    method called and the domain (QA18 M3: it said 'BSpline.derivative', no domain)."""
+    b = CURVE.to_bspline()
+    for t in (2.0, np.float64(2.0), np.array(2.0), 2):
+        assert b.evaluate(t).shape == (2,) and b(t).shape == (2,)
+        assert np.array_equal(b.evaluate(t), b.evaluate([2.0])[0])
+        assert np.array_equal(b.derivative(t, 2), b.derivative([2.0], 2)[0])
+        assert np.shape(b.curvature(t)) == () and b.curvature(t) == b.curvature([2.0])[0]
+    lo, hi = b.domain
+    for method in ("evaluate", "derivative", "curvature"):
+        for t, where in ((hi + 1.0, "t"), ([lo, -1.0], r"t\[1\]"), (int(hi) + 1, "t")):
+            with pytest.raises(el.DomainError, match=rf"BSpline.{method}: parameter {where} = "
+                                                     rf".* outside the B-spline's domain "
+                                                     rf"\[{lo!r}, {hi!r}\]"):
+                getattr(b, method)(t)
