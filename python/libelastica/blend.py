@@ -601,7 +601,7 @@ def blend_curve(points, k: Optional[float] = None, d: float = 2.0, mode: str = "
     basis = EllipticBlend(k, d, m=m)
     pts = as_points(points, "points")
     if not isinstance(mode, str) or mode not in _PICK:
-        raise ValueError(f"mode must be one of {sorted(_PICK)}, got {mode!r}")
+        raise ValueError(f"blend_curve: mode must be one of {sorted(_PICK)}, got {mode!r}")
     if mode == "interpolate" and len(pts) < 3:
         raise ValueError(f"blend_curve: at least 3 points to pass through, got {len(pts)}")
     if closed:

@@ -232,7 +232,9 @@ def fit_keyline(points, r: Optional[float] = None, model: str = "discrete", side
     each point on either side; discrete, the polygon's vertex i pairs with vertex i of
     its side and the split vertex moves while the fit improves; h is free on both sides
     (§5.4, Table 1) or held with ``fixed={"h": r}``. ``model``: "discrete" (default) or
-    "smooth", as above. ``max_iter``, ``tol`` apply.
+    "smooth", as above. ``side``: where the inflection estimate's step (1) takes its
+    second point (:func:`find_inflection`): +1 the last point, -1 the first, 0 automatic.
+    ``max_iter``, ``tol`` apply.
     The result's B-spline, joint and ends are in the input's coordinates, its sides'
     FitResults in the PCA frame x''y'' (:class:`KeylineFit`).
     Raises DomainError when the points show no inflection: none found, or one of their
@@ -254,6 +256,9 @@ def fit_keyline(points, r: Optional[float] = None, model: str = "discrete", side
     if unordered.order is not None:
         warnings.warn(f"fit_keyline: {order_summary(unordered)}: resampled in their order; "
                       "fit points[el.curve_order(points)]", OrderWarning, stacklevel=2)
+    side = as_int(side, "fit_keyline: side (-1 the first point, +1 the last, 0 automatic)", -1, 1)
+    if r is not None:
+        r = as_positive(r, "fit_keyline: r (the resampling segment, None: automatic)")
     o = _keyline_options(model, dict(kwargs))
     prep = prepare_keyline(pts, r, side)
     a, b = prep.sides()                    # DomainError when there is no inflection

@@ -77,7 +77,7 @@ def noise_level(points) -> float:
     smooth curve under it, from the points alone (no fit): the larger of el_fit_noise's
     (third differences) and, from WINDOW_POINTS points on, :func:`window_noise`'s, of them
     and of every k-th of them (_spread_noise)."""
-    pts = as_points(points, "noise_level: points", 2)
+    pts = as_points(points, "noise_level: points", 2, 4)    # (third differences)
     return _noise_level(pts, _noise(pts))
 
 

@@ -384,3 +384,25 @@ def test_3d_points_to_fit_name_the_plane_fit():
     xy, frame = el.plane_fit(xyz)
     r = el.fit(xy, model="smooth")
     assert r.rms < 1e-3 and np.allclose(frame.to_3d(xy), xyz, atol=1e-12)
+
+
+S_POINTS = el.SmoothElastica(x0=0, y0=0, phi=-0.5, mu=1.0, k=0.8, q=-1.0, length=6.0).points(60)
+
+
+@pytest.mark.parametrize("call, said", [
+    (lambda: el.fit_keyline(S_POINTS, side=3),
+     r"^fit_keyline: side \(-1 the first point, \+1 the last, 0 automatic\) must be -1\.\.1, "
+     r"got 3$"),
+    (lambda: el.fit_keyline(S_POINTS, r=-1),
+     r"^fit_keyline: r \(the resampling segment, None: automatic\) must be > 0, got -1$"),
+    (lambda: el.noise_level(S_POINTS[:3]), r"^noise_level: points: need at least 4 points, got 3$"),
+    (lambda: el.blend_curve(S_POINTS[::15], mode="x"),
+     r"^blend_curve: mode must be one of \['control', 'interpolate'\], got 'x'$"),
+], ids=["fit_keyline side", "fit_keyline r", "noise_level", "blend_curve mode"])
+def test_messages_name_the_function_called(call, said):
+    """QA18 M3: these named another function than the one called (find_inflection,
+    resample_equilateral), none (blend_curve) or the C library's generic text (noise_level:
+    "invalid argument (NULL, NaN/inf, out of range or too few points)"); each now names the
+    function called, the argument and what it takes."""
+    with pytest.raises(ValueError, match=said):
+        call()
