@@ -21,6 +21,7 @@ import numpy as np
 
 from ._ffi import (DomainError, as_int, as_points, as_real, as_real_array, as_size, as_vector,
                    bspline_from_c, check, dptr, ffi, invalid, lib, require)
+from ._values import ValueEquality
 
 __all__ = ["affine_coords", "affine_length", "affine_curvature", "osculating_conics",
            "OsculatingConics", "chaikin", "lane_riesenfeld", "affine_elements",
@@ -66,8 +67,8 @@ def affine_curvature(polyline) -> np.ndarray:
     return k
 
 
-@dataclass
-class OsculatingConics:
+@dataclass(eq=False)
+class OsculatingConics(ValueEquality):
     """Discrete osculating conics (Theorem 2) of the quadruples x_{i-1}..x_{i+2}.
 
     coef[i] = (a, b, c, d, e, f) of a x^2 + b x y + c y^2 + d x + e y + f = 0;
@@ -241,8 +242,8 @@ def elastica_inflections(curve, margin: float = 1e-9) -> np.ndarray:
 
 # ------------------------------------------------------------------ §4: approximation
 
-@dataclass
-class AffinePolyline:
+@dataclass(eq=False)
+class AffinePolyline(ValueEquality):
     """Result of :func:`affine_polyline`.
 
     points (n+1, 2); t: parameters on the replacement curve f~ (f~(j) = sample j);

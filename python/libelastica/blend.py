@@ -31,6 +31,7 @@ from ._ffi import (DomainError, NotConvergedError, SingularError, as_points, as_
                    as_vector,
                    bspline_from_c, check, dptr, ffi, lib, require, shown)
 from ._text import LengthFormat, lengths
+from ._values import ValueEquality
 from .core import arc_lengths
 from .shape import crossing_pairs, self_crossings
 from .spline import LoopWarning
@@ -85,10 +86,17 @@ def _composite(q, name: str = "q") -> tuple[np.ndarray, int]:
     return q, (len(q) - 1) // 3
 
 
-class _Blend:
-    """Common part of the MQ and elliptic bases (one el_blend_basis)."""
+class _Blend(ValueEquality):
+    """Common part of the MQ and elliptic bases (one el_blend_basis); == and hash by the
+    parameters (those __reduce__ rebuilds it from)."""
 
     _b = None
+
+    def _values(self):
+        return self.__reduce__()[1]
+
+    def __hash__(self) -> int:
+        return hash((type(self), self._values()))
 
     def __repr__(self) -> str:
         return f"{type(self).__name__}({self._args()})"
@@ -409,8 +417,8 @@ def _diameter(xy: np.ndarray) -> float:
                for i in range(0, len(xy), 256))
 
 
-@dataclass
-class BlendCurve:
+@dataclass(eq=False)
+class BlendCurve(ValueEquality):
     """A (composite) blending-function curve: a basis and 3*nseg + 1 control points."""
     basis: _Blend
     q: np.ndarray

@@ -30,6 +30,7 @@ from ._interrupt import call
 from .core import DISCRETE_PARAMS, SMOOTH_PARAMS, DiscreteElastica, SmoothElastica
 from .cubic import SPARSE_POINTS, SparseWarning, smooth_fits_better
 from ._text import LengthFormat, lengths
+from ._values import ValueEquality
 from .fit_cost import EndConditionWarning, checked_ends
 from .misfit import MisfitWarning, _verdict, misfit_summary
 from .order import curve_order, order_summary, ordering
@@ -59,8 +60,8 @@ class ConstraintError(DomainError):
         self.constraint = constraint
 
 
-@dataclass(frozen=True)
-class FitResult:
+@dataclass(frozen=True, eq=False, unsafe_hash=True)   # (hash: as before)
+class FitResult(ValueEquality):
     """Result of :func:`fit`.
 
     ``curve``: the fitted elastica (a DiscreteElastica with ``n`` = the number of

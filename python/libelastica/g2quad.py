@@ -14,14 +14,15 @@ from typing import Optional, Tuple
 import numpy as np
 
 from ._ffi import DomainError, as_points, as_size
+from ._values import ValueEquality
 from .affine import (AffinePolyline, affine_polyline, elastica_inflections, g2_bspline,
                      quadratic_joint_curvatures)
 
 __all__ = ["G2Quadratic", "CoverageError", "CoverageWarning", "covering_edges", "g2_quadratic"]
 
 
-@dataclass
-class G2Quadratic:
+@dataclass(eq=False)
+class G2Quadratic(ValueEquality):
     """Result of :func:`g2_quadratic`.
 
     bsplines: one curvature-continuous quadratic B-spline per inflection-free piece,

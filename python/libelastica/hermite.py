@@ -11,6 +11,7 @@ from typing import List, Optional
 import numpy as np
 
 from ._ffi import DomainError, as_int, as_real, as_size, as_vector, check, ffi, lib, require
+from ._values import ValueEquality
 from .bspline import smooth_chain_to_bspline
 from .core import SMOOTH_PARAMS, SmoothElastica, arc_lengths, chain_eval, chain_starts
 from .shape import ShapeDescriptors
@@ -29,7 +30,7 @@ class HermiteSolutions(list):
     complete: bool = True
 
 
-class HermiteChain(ShapeDescriptors):
+class HermiteChain(ValueEquality, ShapeDescriptors):
     """A Hermite solution near the separatrix (|k| -> 1) that no single
     :class:`SmoothElastica` carries to ``tol`` (one ulp of the double k moves the end of
     a curve through a saddle by ~1e-16 / (1 - |k|)): the same elastica as 2 or 3

@@ -14,14 +14,15 @@ import numpy as np
 from ._ffi import (DomainError, as_int, as_positive, as_real, as_real_array, check, dptr, ffi,
                    lib)
 from ._interrupt import call
+from ._values import ValueEquality
 from .cubic import SPARSE_POINTS, SparseWarning, smooth_fits_better
 from .fit import (_MODE_NAMES, ConvergenceWarning, FitResult, OrderWarning, _make_curve,
                   quiet_fit)
 from .misfit import MisfitWarning, misfit, misfit_summary
 from .order import order_summary, out_of_order
 
-@dataclass(frozen=True)
-class KeylineFit:
+@dataclass(frozen=True, eq=False, unsafe_hash=True)   # (hash: as before)
+class KeylineFit(ValueEquality):
     """Result of :func:`fit_keyline`, the keyline as one G2 curve of two elasticae that
     start at the joint (the inflection) with opposite tangents and zero curvature.
 

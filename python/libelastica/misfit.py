@@ -21,6 +21,7 @@ import numpy as np
 
 from ._ffi import as_points, check, dptr, ffi, lib
 from ._text import LengthFormat, lengths
+from ._values import ValueEquality
 
 __all__ = ["MISFIT_RATIO", "MisfitWarning", "Misfit", "noise_level", "window_noise", "misfit",
            "misfit_summary"]
@@ -59,8 +60,8 @@ class MisfitWarning(RuntimeWarning):
     shape of more than one piece), and where a corner stands out, where."""
 
 
-@dataclass(frozen=True)
-class Misfit:
+@dataclass(frozen=True, eq=False, unsafe_hash=True)   # (hash: as before)
+class Misfit(ValueEquality):
     """:func:`misfit`'s verdict: ``rms``, the fit's;
     ``noise``, the points' noise level (:func:`noise_level`); ``ratio`` = rms / noise;
     ``corner``: the index of the likely corner, -1 where none stands out; ``parts``: the rms

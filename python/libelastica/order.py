@@ -21,6 +21,7 @@ import numpy as np
 
 from ._ffi import as_points, check, dptr, ffi, lib
 from ._text import LengthFormat, lengths
+from ._values import same
 from .prep import pca_normalize, plane_fit
 
 
@@ -105,6 +106,17 @@ class Ordering(NamedTuple):
     order: Optional[np.ndarray]
     given: float
     along: float
+
+    def __eq__(self, other):      # by value (_values.same: along nan equals nan)
+        if type(other) is not type(self):
+            return NotImplemented
+        return same(tuple(self), tuple(other))
+
+    def __ne__(self, other):
+        eq = self.__eq__(other)
+        return eq if eq is NotImplemented else not eq
+
+    __hash__ = tuple.__hash__
 
 
 def out_of_order(points, ratio: float = ORDER_RATIO, screen: bool = True) -> Ordering:

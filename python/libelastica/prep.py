@@ -19,6 +19,7 @@ import numpy as np
 
 from ._ffi import (DomainError, ElasticaError, as_int, as_points, as_real, as_real_array, check,
                    dptr, ffi, lib)
+from ._values import ValueEquality
 
 __all__ = ["Frame", "Frame2D", "Inflection", "PreparedKeyline", "plane_fit",
            "resample_equilateral", "RESAMPLE_MAX_VERTICES", "pca_normalize", "find_inflection",
@@ -53,8 +54,8 @@ def _points(a, name: str, dim: int) -> np.ndarray:
     return as_points(arr, name, dim)
 
 
-@dataclass(frozen=True)
-class Frame:
+@dataclass(frozen=True, eq=False, unsafe_hash=True)   # (hash: as before)
+class Frame(ValueEquality):
     """Orthonormal frame of a PCA plane fit (seed 000 §5.3).
 
     ``origin`` is the centroid, ``e1`` the first principal axis (x', pointing
@@ -95,8 +96,8 @@ class Frame:
         return (xy, z) if return_z else xy
 
 
-@dataclass(frozen=True)
-class Frame2D:
+@dataclass(frozen=True, eq=False, unsafe_hash=True)   # (hash: as before)
+class Frame2D(ValueEquality):
     """2D PCA frame (seed 000 §5.3, x''y''): ``origin`` the centroid, ``f1`` the
     first principal axis with f1.x > 0, ``f2`` = f1 turned by +90 degrees
     (so f2.y > 0), ``eigenvalues`` decreasing."""
@@ -138,8 +139,8 @@ def plane_fit(xyz) -> Tuple[np.ndarray, Frame]:
     return xy, frame
 
 
-@dataclass(frozen=True)
-class Resampled:
+@dataclass(frozen=True, eq=False, unsafe_hash=True)   # (hash: as before)
+class Resampled(ValueEquality):
     """Details of an equilateral resampling: ``s`` the arc-length position of each
     vertex along the input (from the start end), ``reversed`` True when the walk
     started at the input's last point, ``remainder`` the input length left after
@@ -253,8 +254,8 @@ def pca_normalize(xy) -> Tuple[np.ndarray, Frame2D]:
                         f2=np.array(list(f.f2)), eigenvalues=np.array(list(f.mu)))
 
 
-@dataclass(frozen=True)
-class Inflection:
+@dataclass(frozen=True, eq=False, unsafe_hash=True)   # (hash: as before)
+class Inflection(ValueEquality):
     """RDP-style inflection estimate (seed 000 §5.3 steps (1)-(4)): ``index`` the
     estimated vertex (point P+2 of step (4)), ``neighbor`` the adjacent vertex
     (the curvature changes sign on the edge between them), ``apex`` point 3,
@@ -288,8 +289,8 @@ def find_inflection(xy, side: int = 0) -> int:
     return find_inflection_info(xy, side).index
 
 
-@dataclass(frozen=True)
-class PreparedKeyline:
+@dataclass(frozen=True, eq=False, unsafe_hash=True)   # (hash: as before)
+class PreparedKeyline(ValueEquality):
     """The §5.3 pipeline's result (see :func:`prepare_keyline`).
 
     ``polygon`` (m, 2): the equilateral polygon in x''y'' coordinates (segment

@@ -18,6 +18,7 @@ import numpy as np
 
 from ._ffi import as_points, as_positive
 from ._text import LengthFormat, lengths
+from ._values import ValueEquality
 from .fit import FitResult, quiet_fit
 from .prep import resampled_polygon
 
@@ -37,8 +38,8 @@ class ResampleWarning(RuntimeWarning):
     far farther from the points than their own fit (``ResampledFit.reference_rms``)."""
 
 
-@dataclass(frozen=True)
-class ResampledFit:
+@dataclass(frozen=True, eq=False, unsafe_hash=True)   # (hash: as before)
+class ResampledFit(ValueEquality):
     """Result of :func:`fit_resampled`: ``result`` the fit of the ``polygon`` (a FitResult:
     its rms / distances are the polygon's vertices'), ``bspline`` the curve drawn (smooth:
     within tol; discrete: the C2 cubic through its vertices), ``distances`` / ``feet`` the

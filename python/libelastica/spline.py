@@ -13,6 +13,7 @@ import numpy as np
 
 from ._ffi import (DomainError, LengthRangeError, NotConvergedError, as_int, as_points, as_real,
                    check, dptr, ffi, lib)
+from ._values import ValueEquality
 from .bspline import smooth_chain_to_bspline
 from .core import SMOOTH_PARAMS, SmoothElastica, arc_lengths, chain_eval, chain_starts
 
@@ -46,7 +47,7 @@ class LoopWarning(RuntimeWarning):
     or a length, gives one."""
 
 
-class ElasticSpline:
+class ElasticSpline(ValueEquality):
     """An elastic spline: ``pieces`` (SmoothElastica from knot to knot, see below;
     closed: the last from the last point back to the first),
     ``tension`` (sigma, 1/length^2), ``length``, ``energy`` (integral of kappa^2 ds),
