@@ -13,7 +13,7 @@ import numbers
 
 import numpy as np
 
-__all__ = ["ValueEquality", "same"]
+__all__ = ["ValueEquality", "field_summary", "same"]
 
 
 def same(a, b) -> bool:
@@ -70,3 +70,18 @@ class ValueEquality:
         return eq if eq is NotImplemented else not eq
 
     __hash__ = None
+
+
+def field_summary(obj, head: str = "") -> str:
+    """A dataclass's repr in a line (QA18 P4: FitResult's printed every array, ~10 kB):
+    ``head`` first, then each field, an array as its shape ('<(160, 2) array>'), a float
+    as %.6g, a nested result by its own repr."""
+    def one(v):
+        if isinstance(v, np.ndarray):
+            return f"<{v.shape} array>" if v.size > 4 else np.array2string(v, separator=", ")
+        if isinstance(v, float):
+            return f"{v:.6g}"
+        return repr(v)
+    items = [head] if head else []
+    items += [f"{f.name}={one(getattr(obj, f.name))}" for f in dataclasses.fields(obj)]
+    return f"{type(obj).__name__}({', '.join(items)})"

@@ -21,7 +21,7 @@ import numpy as np
 
 from ._ffi import (DomainError, as_int, as_points, as_real, as_real_array, as_size, as_vector,
                    bspline_from_c, check, dptr, ffi, invalid, lib, require)
-from ._values import ValueEquality
+from ._values import ValueEquality, field_summary
 
 __all__ = ["affine_coords", "affine_length", "affine_curvature", "osculating_conics",
            "OsculatingConics", "chaikin", "lane_riesenfeld", "affine_elements",
@@ -79,6 +79,9 @@ class OsculatingConics(ValueEquality):
     center: np.ndarray
     coef: np.ndarray
     kappa: np.ndarray
+
+    def __repr__(self) -> str:
+        return field_summary(self)
 
 
 def osculating_conics(polyline, kind: str = "middle") -> OsculatingConics:
@@ -259,6 +262,9 @@ class AffinePolyline(ValueEquality):
     points: np.ndarray
     t: np.ndarray
     s: Optional[np.ndarray]
+
+    def __repr__(self) -> str:
+        return field_summary(self)
     piece_start: np.ndarray
     A: np.ndarray
     psi: np.ndarray

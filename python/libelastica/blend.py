@@ -437,6 +437,11 @@ class BlendCurve(ValueEquality):
     def nseg(self) -> int:
         return (len(self.q) - 1) // 3
 
+    def __repr__(self) -> str:
+        through = "" if self.through is None else f", through {len(self.through)} points"
+        return (f"BlendCurve({self.basis!r}, {self.nseg} segment(s){through}"
+                f"{', closed' if self.closed else ''})")
+
     def seam_angle(self) -> float:
         """Where the curve ends at its start (q[-1] = q[0]): the angle (degrees) between
         its tangents there, 0 for a smooth seam; NaN when it does not close."""

@@ -119,6 +119,15 @@ class FitResult(ValueEquality):
     def converged(self) -> bool:
         return self.status == lib.EL_OK
 
+    def __repr__(self) -> str:
+        """A summary (the arrays are the data's size: print them by name)."""
+        n = next((len(a) for a in (self.points, self.distances) if a is not None), None)
+        state = "converged" if self.converged else f"not converged (status {self.status})"
+        kind = "smooth" if type(self.curve).__name__ == "SmoothElastica" else "discrete"
+        return (f"FitResult({kind}, {n} points, {self.distance}, rms {self.rms:.3g}, max "
+                f"{self.max_error:.3g}, {state}{', misfit' if self.misfit is not None else ''}, "
+                f"curve={self.curve!r})")
+
     def to_bspline(self, tol: Optional[float] = None, degree: int = 3):
         """The fitted curve as one B-spline for CAD: a smooth elastica's within ``tol``
         (default 1e-6 of its length; certified; its end points, tangents and curvatures exact, so the constraints hold

@@ -85,6 +85,15 @@ class G2Quadratic(ValueEquality):
     def npoles(self) -> int:
         return int(sum(b.npoles for b in self.bsplines))
 
+    def __repr__(self) -> str:
+        """A summary (the splines and polyline: print them by name)."""
+        tan = "" if self.end_tangent_error is None else \
+            f", end_tangent_error {self.end_tangent_error:.3g}"
+        return (f"G2Quadratic({len(self.bsplines)} piece(s), {len(self.polyline.points) - 1} "
+                f"edges, {self.npoles} poles, deviation {self.deviation:.3g}, curvature_jump "
+                f"{self.curvature_jump:.2g}{tan}"
+                f"{'' if self.covers_source else f', leaves out {self.dropped}'})")
+
 
 def _spline_deviation(bs, samples: np.ndarray, lo: float, hi: float, spans=None) -> float:
     """Largest distance of one piece's spline from the source polyline ``samples``,

@@ -61,6 +61,17 @@ class KeylineFit(ValueEquality):
     # smooth keyline: the smooth keyline's input_rms (SparseWarning), else None
     sparse: Optional[float] = None
 
+    def __repr__(self) -> str:
+        """A summary (the arrays are the data's size: print them by name)."""
+        kind = "smooth" if type(self.first.curve).__name__ == "SmoothElastica" else "discrete"
+        n = len(self.input_distances) if self.input_distances is not None else None
+        rms = f", input rms {self.input_rms:.3g}" if n else ""
+        state = "converged" if self.first.converged and self.second.converged else \
+            f"not converged (status {self.first.status or self.second.status})"
+        return (f"KeylineFit({kind}, {n} points, inflection at vertex {self.inflection}{rms}, "
+                f"sides rms {self.first.rms:.3g} / {self.second.rms:.3g}, {state}"
+                f"{', misfit' if self.misfit is not None else ''})")
+
     @property
     def input_rms(self) -> float:
         return float(np.sqrt(np.mean(self.input_distances ** 2)))

@@ -19,7 +19,7 @@ import numpy as np
 
 from ._ffi import (DomainError, ElasticaError, as_int, as_points, as_real, as_real_array, check,
                    dptr, ffi, lib)
-from ._values import ValueEquality
+from ._values import ValueEquality, field_summary
 
 __all__ = ["Frame", "Frame2D", "Inflection", "PreparedKeyline", "plane_fit",
            "resample_equilateral", "RESAMPLE_MAX_VERTICES", "pca_normalize", "find_inflection",
@@ -148,6 +148,9 @@ class Resampled(ValueEquality):
     s: np.ndarray
     reversed: bool
     remainder: float
+
+    def __repr__(self) -> str:
+        return field_summary(self)
 
 
 #: The most vertices resample_equilateral builds (EL_RESAMPLE_MAX_VERTICES): a segment r
@@ -305,6 +308,9 @@ class PreparedKeyline(ValueEquality):
     frame: "Frame | None"
     frame2d: Frame2D
     rms_out_of_plane: float
+
+    def __repr__(self) -> str:
+        return field_summary(self)
 
     def to_input(self, xy) -> np.ndarray:
         """Map x''y'' points (n, 2) (or one point) back to the input's coordinates:

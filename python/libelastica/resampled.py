@@ -18,7 +18,7 @@ import numpy as np
 
 from ._ffi import as_points, as_positive
 from ._text import LengthFormat, lengths
-from ._values import ValueEquality
+from ._values import ValueEquality, field_summary
 from .fit import FitResult, quiet_fit
 from .prep import resampled_polygon
 
@@ -57,6 +57,9 @@ class ResampledFit(ValueEquality):
     rms: float
     max_error: float
     reference_rms: Optional[float] = None
+
+    def __repr__(self) -> str:
+        return field_summary(self)
     foot_s: Optional[np.ndarray] = None
 
     @property
