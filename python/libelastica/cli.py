@@ -21,6 +21,7 @@ import numpy as np
 from ._ffi import NotConvergedError
 from ._entry import INTERRUPTED
 from ._interrupt import end_if_a_call_runs, interruptible
+from ._text import coordinates
 from .cli_common import (EXIT_BADINPUT, EXIT_INTERNAL, EXIT_NOCONV, EXIT_OK, PROG, _finite,
                          _input_map, _mapped_bspline, _table, tol_option)
 from .cli_fit import cmd_fit
@@ -213,6 +214,7 @@ def cmd_hermite(args) -> int:
         if spec:
             what = f"tension {args.tension:g}" if args.tension is not None else \
                 f"length {args.length:g}"
+            chord = float(np.hypot(*(np.asarray(p1, float) - np.asarray(p0, float))))
             drawn = []
             for c in sols:             # every solution runs p0 -> p1 (k < -1: clockwise loop)
                 s = np.linspace(0.0, c.length, 400)
@@ -222,8 +224,8 @@ def cmd_hermite(args) -> int:
                                          for i, r in enumerate(recs)],
                                  points=np.array([p0, p1]),
                                  title=f"Hermite elasticae, {what}: {len(sols)} solutions",
-                                 params=[f"p0 = ({p0[0]:g}, {p0[1]:g}), t0 = ({t0[0]:g}, {t0[1]:g})",
-                                         f"p1 = ({p1[0]:g}, {p1[1]:g}), t1 = ({t1[0]:g}, {t1[1]:g})"]
+                                 params=[f"p0 = ({coordinates(p0, chord)}), t0 = ({t0[0]:g}, {t0[1]:g})",
+                                         f"p1 = ({coordinates(p1, chord)}), t1 = ({t1[0]:g}, {t1[1]:g})"]
                                  + [f"#{i}: k={c.k:.4g} L={c.length:.4g}"
                                     + (f" ({len(c.pieces)} pieces)" if hasattr(c, "pieces") else "")
                                     for i, c in enumerate(sols[:12])])

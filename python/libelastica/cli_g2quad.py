@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ._text import coordinates
 from .cli_common import EXIT_OK, _plane_record
 from .io import (InputError, curve_from_dict, curve_to_dict, looks_like_json, read_input,
                  read_json, read_points, write_dxf_spline, write_json)
@@ -78,7 +79,8 @@ def cmd_g2quad(args) -> int:
               f"{g.fit.rms:.3g}, max error {g.fit.max_error:.3g} from them")
     # in the input's coordinates, as the DXF (QA17 P6: 3D points printed the plane's 2D)
     ends = [g.ends[0], g.ends[-1]] if frame is None else frame.to_3d(np.array([g.ends[0], g.ends[-1]]))
-    start, end = (", ".join(f"{v:.6g}" for v in e) for e in ends)
+    size = float(np.ptp(g.polyline.points, axis=0).max())
+    start, end = (coordinates(e, size) for e in ends)     # (QA18 P1: %g wrote 500000, 5e+06)
     print(f"  starts at ({start}), ends at ({end}), exactly on the source")
     print(f"  {g.g2_summary()}")
     print(f"  largest distance from the source: {g.deviation:.3g}")

@@ -21,6 +21,7 @@ from xml.sax.saxutils import escape
 
 import numpy as np
 
+from ._text import coordinates
 from .io import InputError
 
 __all__ = ["Layer", "Graph", "Picture", "fit_picture", "curves_picture", "save_picture",
@@ -157,7 +158,9 @@ def _curve_params(curve) -> List[str]:
     d = curve_to_dict(curve)
     kind = d.pop("type")
     n = d.pop("n", None)
-    items = [f"{k} = {v:.6g}" for k, v in d.items()]
+    size = d.get("length") or d.get("h", 0.0) * max((n or 2) - 1, 1)
+    items = [f"{k} = {coordinates(v, size) if k in ('x0', 'y0') else f'{v:.6g}'}"
+             for k, v in d.items()]
     head = f"{kind} elastica" + (f", n = {n}" if n is not None else "")
     return [head] + [", ".join(items[i:i + 3]) for i in range(0, len(items), 3)]
 
