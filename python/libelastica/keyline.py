@@ -44,7 +44,9 @@ class KeylineFit(ValueEquality):
     second: FitResult
     inflection_estimate: Optional[int] = None
     joint: Optional[np.ndarray] = None
-    # each input point's distance (in its plane) to the keyline: the polygon of both
+    # each input point's signed distance (in its plane; + left of the keyline's direction of
+    # travel, first point to last, as FitResult.distances; np.abs for the plain distances)
+    # to the keyline: the polygon of both
     # discrete halves, or the smooth curve the points themselves were fitted to; the
     # sides' rms / max_error are the fitted points' (a discrete keyline's: the resampled
     # polygon's vertices, paired: 0.116 / 0.277 where the file's points lie 0.132 / 0.344)
@@ -78,7 +80,7 @@ class KeylineFit(ValueEquality):
 
     @property
     def input_max_error(self) -> float:
-        return float(np.max(self.input_distances))
+        return float(np.max(np.abs(self.input_distances)))
 
     def to_input(self, xy) -> np.ndarray:
         """x''y'' points (the sides' frame) in the input's coordinates (PreparedKeyline.to_input)."""
@@ -120,9 +122,11 @@ class KeylineFit(ValueEquality):
         return b.mapped(self.to_input) if input_coords else b
 
 
-def _polyline_distances(points, vertices, chunk_pairs: int = 1 << 21) -> np.ndarray:
+def _polyline_distances(points, vertices, chunk_pairs: int = 1 << 21,
+                        signed: bool = False) -> np.ndarray:
     """Each point's distance to the polyline through vertices (m >= 2), every segment
-    looked at (no order assumed), points taken in chunks of chunk_pairs / (m - 1)."""
+    looked at (no order assumed), points taken in chunks of chunk_pairs / (m - 1);
+    ``signed``: + left of the nearest segment's direction (vertex i to i + 1), - right."""
     ax, ay = vertices[:-1, 0], vertices[:-1, 1]
     dx, dy = np.diff(vertices[:, 0]), np.diff(vertices[:, 1])
     inv = 1.0 / np.maximum(dx * dx + dy * dy, 1e-300)
@@ -134,7 +138,13 @@ def _polyline_distances(points, vertices, chunk_pairs: int = 1 << 21) -> np.ndar
         u = np.clip((wx * dx + wy * dy) * inv, 0.0, 1.0)
         wx -= u * dx
         wy -= u * dy
-        out[i:i + step] = np.sqrt(np.min(wx * wx + wy * wy, axis=1))
+        d2 = wx * wx + wy * wy
+        out[i:i + step] = np.sqrt(np.min(d2, axis=1))
+        if signed:
+            j = np.argmin(d2, axis=1)
+            rows = np.arange(len(j))
+            left = dx[j] * wy[rows, j] - dy[j] * wx[rows, j] >= 0.0
+            out[i:i + step] = np.where(left, out[i:i + step], -out[i:i + step])
     return out
 
 
@@ -315,9 +325,12 @@ def fit_keyline(points, r: Optional[float] = None, model: str = "discrete", side
         tails, ends = _keyline_tails([f.curve for f in fits], local[[0, -1]])
         polygon = np.vstack([tails[0][::-1], fits[0].curve.points()[::-1],
                              fits[1].curve.points()[1:], tails[1]])
-        inputs = _polyline_distances(local, polygon)
+        inputs = _polyline_distances(local, polygon, signed=True)
+        # (+ left of the input's travel: the resampling may walk from its last point)
+        if np.linalg.norm(local[0] - polygon[0]) > np.linalg.norm(local[0] - polygon[-1]):
+            inputs = -inputs
     else:
-        inputs, ends, local = np.abs(dist), None, data    # the input points themselves were fitted
+        inputs, ends, local = dist.copy(), None, data    # the input points themselves were fitted
     # the points' noise against the keyline's distances to them (a held h: its own cost)
     m = misfit(local, inputs) if not kwargs.get("fixed") else None
     if m is not None:

@@ -997,11 +997,32 @@ def test_keyline_input_distances_are_the_files_points(model):
     Q = np.vstack(dense)
     d = np.array([np.min(np.linalg.norm(Q - p, axis=1)) for p in xy])    # >= the distance
     assert len(kf.input_distances) == len(pts)
-    assert np.all(kf.input_distances <= d + 1e-9) and np.all(d - kf.input_distances <= 0.5 * gap)
+    a = np.abs(kf.input_distances)      # (signed: test_keyline_input_distances_are_signed)
+    assert np.all(a <= d + 1e-9) and np.all(d - a <= 0.5 * gap)
     assert kf.input_rms == pytest.approx(np.sqrt(np.mean(d ** 2)), abs=0.5 * gap)
     assert kf.input_max_error == pytest.approx(d.max(), abs=0.5 * gap)
     if model == "discrete":
         assert kf.input_max_error > 1.2 * max(kf.first.max_error, kf.second.max_error)
+
+
+@pytest.mark.parametrize("model", ["discrete", "smooth"])
+@pytest.mark.parametrize("direction", ["forward", "reversed"])
+def test_keyline_input_distances_are_signed(model, direction):
+    """QA18 P5: KeylineFit.input_distances were unsigned (np.abs) where FitResult.distances,
+    the C keyline's and the CLI's JSON are signed, + left of the direction of travel (point
+    0 to n - 1): points alternately 0.05 left and right of an S get the sign of their side,
+    either way round; their magnitudes, input_rms and input_max_error as before."""
+    c = el.SmoothElastica(x0=0, y0=0, phi=0.2, mu=0.04, k=0.75, q=-0.9, length=30.0)
+    s = np.linspace(0, 30, 200)
+    th = c.angle(s)
+    off = np.where(np.arange(200) % 2 == 0, 0.05, -0.05)
+    P = c.points(s) + off[:, None] * np.c_[-np.sin(th), np.cos(th)]
+    if direction == "reversed":
+        P, off = P[::-1].copy(), -off[::-1]
+    kf = el.fit_keyline(P, model=model)
+    assert np.array_equal(np.sign(kf.input_distances), np.sign(off))
+    d = np.abs(kf.input_distances)
+    assert kf.input_max_error == d.max() and kf.input_rms == np.sqrt(np.mean(d ** 2))
 
 
 def test_discrete_keyline_reaches_the_scans_ends():
@@ -1022,7 +1043,7 @@ def test_discrete_keyline_reaches_the_scans_ends():
     B = b(np.array(b.domain))
     assert np.all(np.linalg.norm(B - P[[0, -1]], axis=1) <= 3 * noise)
     np.testing.assert_allclose(B, kf.ends, rtol=0, atol=1e-9 * 300)
-    assert max(kf.input_distances[[0, -1]]) <= 3 * noise
+    assert max(np.abs(kf.input_distances[[0, -1]])) <= 3 * noise
     assert kf.input_max_error <= 1.2 * smooth.input_max_error
     tail = kf.second.curve.continued_to(kf.ends_local[1])     # the step the polygon left out
     assert len(tail) == 1 and np.linalg.norm(tail[0] - kf.second.curve.points()[-1]) < kf.prepared.r
