@@ -532,7 +532,11 @@ int el_fit_discrete(const double *xy, size_t n, const el_fit_options *opt,
  * (opt->distance): minimise the sum of squared distances of the points to the curve
  * over the curve's parameters and each point's foot on it; the first and last points
  * are tied to gamma(0) and gamma(length) by full residual vectors, and since the start
- * and the length are free the curve begins and ends at their feet. Paired
+ * and the length are free the curve begins and ends at their feet. A free fit (no
+ * constraints, fixed parameters or bounds) where three or more other points lie beyond
+ * an end (their feet at it: a scan dense there, its first point inside the cloud) is
+ * fitted again with the ends tied to the points farthest along the curve instead, and that
+ * fit returned when its rms is lower. Paired
  * (EL_DISTANCE_PAIRED): point i at arc length t_i length (el_fit_fractions with
  * opt->param_mode); the reported distances are point-to-curve distances either way.
  * The optimiser works over every real k (the sign of k is the orientation, smooth

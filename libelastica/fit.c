@@ -272,7 +272,13 @@ static int alloc_work(fit_run_state *R, double *dist, double *foot)
     if ((st = el__fit_objective_init(&R->ob, R->kind, &R->map, R->xy, n, R->cx, R->cy, R->sc,
                                      R->t)))
         return st;
-    R->ob.exact_ends = R->o.constraints != 0;
+    R->ob.exact_ends = R->o.constraints != 0 || (R->flags & FIT_RUN_FREE_ENDS);
+    /* free ends: the first and last points' feet free, as a held end point's (fit_end_paired) */
+    if (R->flags & FIT_RUN_FREE_ENDS)
+        for (int j = 0; j < 2; j++) {
+            R->ob.held_ends[j] = R->xy[j];
+            R->ob.held_ends[2 + j] = R->xy[2 * (n - 1) + (size_t)j];
+        }
     /* as many rows as variables: the curves that meet the constraints are isolated, and the
      * held end points' own (fit_end_paired, el__fit_stray_held); not more (none meets them but
      * the data's own curve: a fit of all six constraints, from an uncertified one that met them
@@ -704,7 +710,8 @@ static int public_fit(int model, const double *xy, size_t n, const el_fit_option
         foot_s = buf = malloc(sizeof(double) * n);
     memset(fo, 0, sizeof *fo);
     fo->status = -1;
-    const int st = el__fit_run_framed(model, xy, n, opt, 0, init, fo, distances, foot_s);
+    int st = el__fit_run_framed(model, xy, n, opt, 0, init, fo, distances, foot_s);
+    if (model == FIT_SMOOTH && fo->status != -1) st = el__fit_free_ends(xy, n, opt, st, fo, distances, foot_s);
     *gap = fo->status != -1 && foot_s ? wander_gap(model, xy, n, opt, fo, foot_s) : -1;
     free(buf);
     return st;

@@ -547,9 +547,10 @@ static inline int fit_public_status(int st) { return st == FIT_ECAPPED ? EL_EMAX
  * (el__fit_follow_points'), whose result the outer one polishes if it keeps it;
  * FIT_RUN_ENDS_HELD, pinned at both ends with a zero start curvature: the ends chart with
  * that curvature held (el__fit_ends_held's run); FIT_RUN_NO_CONJUGATE, without the conjugate
- * starts (el__fit_smooth_start's run: the discrete fit has its own). */
+ * starts (el__fit_smooth_start's run: the discrete fit has its own); FIT_RUN_FREE_ENDS, smooth by
+ * distance with no point tied to an end (el__fit_free_ends' first run). */
 enum { FIT_RUN_LM_ONLY = 1, FIT_RUN_ROWS = 2, FIT_RUN_NO_OTHER = 4, FIT_RUN_POLISH = 8, FIT_RUN_INNER = 16,
-       FIT_RUN_ENDS_HELD = 32, FIT_RUN_NO_CONJUGATE = 64 };
+       FIT_RUN_ENDS_HELD = 32, FIT_RUN_NO_CONJUGATE = 64, FIT_RUN_FREE_ENDS = 128 };
 int el__fit_run(int model, const double *xy, size_t n, const el_fit_options *opt, int flags,
                 const double *init, fit_out *res, double *dist, double *foot);
 /* One run of el__fit_run: what its stages (fit.c, fit_choose.c) hand on to each other.
@@ -729,6 +730,13 @@ int el__fit_slips(size_t n, double h, double rms, const double *fs);
  * where it gave no fit that meets the constraints; res->status, or EL_ENOMEM. */
 int el__fit_ends_held(int model, const double *xy, size_t n, const el_fit_options *opt, fit_out *res, double *d,
                       double *fs);
+/* fit_ends.c: a public smooth fit by distance without constraints, fixed parameters or
+ * bounds (*res, status st, its distances d (may be NULL) and feet fs, input units) whose feet
+ * pile up at an end, fitted again from its curve with its ends free (FIT_RUN_FREE_ENDS) and
+ * tied to the points farthest along it each way, kept while its rms is lower; the status of
+ * the fit kept, or EL_ENOMEM. */
+int el__fit_free_ends(const double *xy, size_t n, const el_fit_options *opt, int st, fit_out *res,
+                      double *d, double *fs);
 
 /* Ipopt from x (in place; the best point seen on return) with bounds xl, xu (+-HUGE_VAL:
  * none) and constraints con (NULL: none). */
