@@ -443,8 +443,9 @@ class BlendCurve(ValueEquality):
                 f"{', closed' if self.closed else ''})")
 
     def seam_angle(self) -> float:
-        """Where the curve ends at its start (q[-1] = q[0]): the angle (degrees) between
-        its tangents there, 0 for a smooth seam; NaN when it does not close."""
+        """Where the curve ends at its start (q[-1] = q[0]): the angle between its tangents
+        there in DEGREES (0..180; the binding's other angles are radians), 0 for a smooth
+        seam; NaN when it does not close."""
         if not np.array_equal(self.q[0], self.q[-1]):
             return float("nan")
         _, d = self.basis.evaluate_composite(self.q, [0.0, float(self.nseg)], derivative=True)

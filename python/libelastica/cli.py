@@ -24,7 +24,7 @@ from ._interrupt import end_if_a_call_runs, interruptible
 from ._text import coordinates
 from .cli_common import (EXIT_BADINPUT, EXIT_INTERNAL, EXIT_NOCONV, EXIT_OK, PROG, _finite,
                          _input_map, _mapped_bspline, _table, tol_option)
-from .cli_fit import cmd_fit
+from .cli_fit import cmd_fit, fit_constraints
 from .cli_g2quad import cmd_g2quad
 from .cli_outputs import Outputs, check_outputs
 from .io import (DXF_UNITS, InputError, curve_from_dict, curve_to_dict, read_json,
@@ -331,8 +331,8 @@ def cmd_bspline(args) -> int:
         else:
             it = items[0]
             with tol_option("--tol"):
-                b = el.bspline.fitted_bspline(curves[0], args.tol, args.degree,
-                                              it.get("constraints") if isinstance(it, dict) else None)
+                b = el.bspline.fitted_bspline(curves[0], args.tol, args.degree, fit_constraints(
+                    it.get("constraints") if isinstance(it, dict) else None))
             out.append({"curve": curve_to_dict(curves[0]), **_kept(it),
                         "bspline": _mapped_bspline(b, to_input).to_dict(),
                         **({"bspline_local": b.to_dict()} if to_input is not None else {})})
@@ -450,7 +450,7 @@ def cmd_spline(args) -> int:
            "max_curvature": sp.max_curvature, "residual": sp.residual, "loops": sp.loops,
            "pieces": [curve_to_dict(c) for c in sp.pieces], "guides": sp.guides.tolist(),
            "guide_forces": sp.guide_forces.tolist(), "guide_pieces": sp.guide_pieces,
-           "forces": sp.forces.tolist(), "angles": sp.angles.tolist(),
+           "forces": sp.forces.tolist(), "angles_rad": sp.angles.tolist(),
            "curvatures": sp.curvatures.tolist(),
            "bspline": bspline_to_dict(b) if b is not None else None}
     if args.json:
@@ -520,7 +520,7 @@ def build_parser() -> argparse.ArgumentParser:
                    help="split at the estimated inflection and fit each side (seed 000 §5)")
     f.add_argument("--fix", metavar="NAMES",
                    help="parameters held fixed: 'x0,y0' (start at the first point) or "
-                        "'x0=0,y0=0,phi=0'")
+                        "'x0=0,y0=0,phi=0' (phi in radians, as the JSON's curve)")
     f.add_argument("--distance", choices=("orthogonal", "paired"),
                    help="what is minimised: the points' distances to the curve or polygon "
                         "(default; the discrete model on equally spaced points: paired) or "
@@ -546,7 +546,8 @@ def build_parser() -> argparse.ArgumentParser:
                    help="resample into an equilateral polygon of segment R first (--keyline "
                         "without it: the polyline through the medians of runs of the points, "
                         "cut into 100 segments)")
-    f.add_argument("--json", metavar="PATH", help="write the result as JSON" + _TO_STDOUT)
+    f.add_argument("--json", metavar="PATH", help="write the result as JSON (angles in "
+                   "radians: a curve's phi, constraints' *_tangent_rad)" + _TO_STDOUT)
     f.add_argument("--svg", metavar="PATH", help="write the report picture as SVG" + _TO_STDOUT)
     f.add_argument("--png", metavar="PATH",
                    help="write the report picture as PNG (matplotlib)" + _PNG_TO_STDOUT)
@@ -575,7 +576,8 @@ def build_parser() -> argparse.ArgumentParser:
     g = h.add_mutually_exclusive_group(required=True)
     g.add_argument("--tension", type=float, metavar="SIGMA", help="tension sigma")
     g.add_argument("--length", type=POSITIVE, metavar="L", help="arc length")
-    h.add_argument("--json", metavar="PATH", help="write the solutions as JSON" + _TO_STDOUT)
+    h.add_argument("--json", metavar="PATH", help="write the solutions as JSON (each curve's phi "
+                   "in radians)" + _TO_STDOUT)
     h.add_argument("--svg", metavar="PATH", help="picture of all solutions (SVG)" + _TO_STDOUT)
     h.add_argument("--png", metavar="PATH",
                    help="picture of all solutions (PNG, matplotlib)" + _PNG_TO_STDOUT)
@@ -643,7 +645,8 @@ def build_parser() -> argparse.ArgumentParser:
                     help="add the B-spline within TOL to the JSON (default 1e-6 of its length "
                          "with --dxf)")
     sp.add_argument("--degree", type=DEGREE, default=3, help="B-spline degree 3..7 (default 3)")
-    sp.add_argument("--json", metavar="PATH", help="write the spline as JSON" + _TO_STDOUT)
+    sp.add_argument("--json", metavar="PATH", help="write the spline as JSON (angles in radians: "
+                    "angles_rad, each piece's phi)" + _TO_STDOUT)
     sp.add_argument("--svg", metavar="PATH",
                     help="picture with the curvature comb (SVG)" + _TO_STDOUT)
     sp.add_argument("--png", metavar="PATH",

@@ -74,8 +74,8 @@ def _side_record(res, data: np.ndarray, model: str, free=None) -> Dict[str, Any]
         rec["wander_gap"] = int(res.wander_gap)
         # the two points' rows (the file's under --order curve: _by_file_row)
         rec["wander_points"] = [int(res.wander_gap), int(res.wander_gap) + 1]
-    if res.constraints:     # el.fit's (radians): `elastica bspline` keeps a discrete fit's ends
-        rec["constraints"] = res.constraints
+    if res.constraints:     # `elastica bspline` keeps a discrete fit's ends (fit_constraints)
+        rec["constraints"] = constraints_record(res.constraints)
     if getattr(res, "distances", None) is not None:
         # point-to-curve distances (+ = left of the curve) and each foot's arc length
         rec.update(distance=res.distance, distances=[float(v) for v in res.distances],
@@ -84,6 +84,21 @@ def _side_record(res, data: np.ndarray, model: str, free=None) -> Dict[str, Any]
         if free is not None:
             rec["free_distances"] = [float(v) for v in free]
     return rec
+
+
+def constraints_record(con) -> Dict[str, Any]:
+    """el.fit's constraints as the JSON writes them: a tangent's angle under
+    "start_tangent_rad" / "end_tangent_rad" (radians, as el.fit holds it; --start-tangent
+    takes degrees), the others under el.fit's names."""
+    return {(f"{k}_rad" if k.endswith("_tangent") else k): v for k, v in con.items()}
+
+
+def fit_constraints(rec) -> Optional[Dict[str, Any]]:
+    """el.fit's constraints of a JSON record's "constraints" (:func:`constraints_record`'s;
+    a tangent without "_rad", as written before the unit was named, is radians too)."""
+    if not isinstance(rec, dict):
+        return None
+    return {(k[:-4] if k.endswith("_tangent_rad") else k): v for k, v in rec.items()}
 
 
 def _resampled_record(path, args, xy: np.ndarray, fixed, constraints, numbered: bool = True):
@@ -505,7 +520,7 @@ def _print_fit(rec: Dict[str, Any]) -> None:
         size = cur.get("length") or cur.get("h", 0.0) * max(cur.get("n", 2) - 1, 1)
         print("parameters  " + ", ".join(
             f"{k}={coordinates(v, size) if k in ('x0', 'y0') else _fmt(v)}"
-            for k, v in cur.items() if k != "type"))
+            + (" rad" if k == "phi" else "") for k, v in cur.items() if k != "type"))
         if "fitted_points" in rec:   # --step: whatever distance fitted the polygon (QA13)
             how = "point-to-curve: the file's points to the curve drawn"
         else:

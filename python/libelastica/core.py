@@ -32,7 +32,8 @@ class SmoothElastica(ShapeDescriptors):
     cos((theta-phi)/2) = dn(u;k), curvature 2 k sqrt(mu) cn(u;k), start (x0, y0),
     arc length s in [0, length]. |k| < 1 has inflections, |k| > 1 none (a loop turning
     counter-clockwise for k > 1, clockwise for k < -1), k = 0 is a line; -k is the
-    mirror image in the line through (x0, y0) at angle phi. ``loops``, ``crosses_itself``
+    mirror image in the line through (x0, y0) at angle phi (radians, as every angle of the
+    binding: theta from :meth:`angle` too). ``loops``, ``crosses_itself``
     and ``max_curvature`` describe its shape (shape.py).
 
     >>> c = SmoothElastica(x0=0, y0=0, phi=0, mu=1.0, k=0.8, q=0.0, length=5.0)
@@ -187,7 +188,8 @@ def chain_eval(pieces, starts, s, what: str, offsets=None, clip: bool = False) -
 class DiscreteElastica:
     """A Bobenko–Suris discrete elastica: n vertices, segments of length h, potential
     sin((theta_n-phi)/2) = k sn(z n + q; k), cos((theta_n-phi)/2) = dn(z n + q; k),
-    segment angle (theta_n + theta_{n+1})/2, first vertex (x0, y0).
+    segment angle (theta_n + theta_{n+1})/2, first vertex (x0, y0); phi and theta in
+    radians.
 
     >>> d = DiscreteElastica(x0=0, y0=0, h=0.1, phi=0, z=0.1, q=0.0, k=0.8, n=50)
     >>> d.points().shape

@@ -81,7 +81,8 @@ class FitResult(ValueEquality):
     foot, or for a paired fit its paired arc length;
     None for discrete); ``param_mode``: "uniform" or "chord" (smooth: the paired arc
     lengths, or the first feet); ``points``: the fitted points; ``constraints``: the
-    fit's constraints as given (:meth:`to_bspline` keeps the ends' on a discrete curve);
+    fit's constraints as given (tangents in radians; :meth:`to_bspline` keeps the ends' on a
+    discrete curve);
     ``wander_gap``: i where the curve wanders away from its points between points i and
     i + 1 (it strays there, loops, or swings between them: the C result's ``wander_gap``,
     :func:`fit` warns of it), -1 where it follows them; ``order``: fitted with

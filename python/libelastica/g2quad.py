@@ -34,7 +34,7 @@ class G2Quadratic(ValueEquality):
     (radians) between a piece's end tangent and the source's there (None when the
     source's tangents are unknown; O(edge) at the inflections, where a quadratic end
     segment that meets its joint G2 has no freedom left for the tangent);
-    source_end_tangent_error: the same at the source's own ends that the splines reach
+    source_end_tangent_error: the same (radians) at the source's own ends that the splines reach
     (~1e-13: x_1, x_2 placed for the tangent and the curvature, see g2_quadratic; O(edge)
     where that is not done: an end piece of fewer than 7 edges, or a farther spline);
     covers_source: False
@@ -43,7 +43,7 @@ class G2Quadratic(ValueEquality):
     ends is kept (covers_source: both); fit: with ``fit=True`` the FitResult of the
     smooth elastica fitted to the points (the source then; its rms / max_error are the
     points' distances to it), else None.
-    join_angle / join_curvature_jump: where two pieces meet (at the source's inflections;
+    join_angle (radians) / join_curvature_jump: where two pieces meet (at the source's inflections;
     the pieces are G2 inside, not there) the largest angle (radians) between their tangents
     and the largest jump of their signed curvature (1/length); 0 with one piece.
     end_curvature_error: at the source's own ends that the splines reach, the largest

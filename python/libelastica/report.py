@@ -160,7 +160,7 @@ def _curve_params(curve) -> List[str]:
     n = d.pop("n", None)
     size = d.get("length") or d.get("h", 0.0) * max((n or 2) - 1, 1)
     items = [f"{k} = {coordinates(v, size) if k in ('x0', 'y0') else f'{v:.6g}'}"
-             for k, v in d.items()]
+             + (" rad" if k == "phi" else "") for k, v in d.items()]
     head = f"{kind} elastica" + (f", n = {n}" if n is not None else "")
     return [head] + [", ".join(items[i:i + 3]) for i in range(0, len(items), 3)]
 

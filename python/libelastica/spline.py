@@ -54,8 +54,8 @@ class ElasticSpline(ValueEquality):
     ``forces`` ((npieces, 2): each piece's constant force F = (sigma - kappa^2) T
     - 2 kappa' N in units of EI/2, the batten after a section pulling on the
     batten before it; the duck at an inner knot i holds forces[i-1] - forces[i]),
-    ``angles`` and ``curvatures`` at the points, ``max_curvature``, ``residual``
-    (largest end-condition error reached: position / chord, tangent angle, curvature
+    ``angles`` (tangent angles, radians) and ``curvatures`` at the points, ``max_curvature``,
+    ``residual`` (largest end-condition error reached: position / chord, tangent angle in radians, curvature
     jump x local chord; the G2 error of a G2 end too), ``resolution`` (0, or where pieces
     nearly straight under tension resolve less than ``tol``: the residual double
     precision allows them, within which ``residual`` is accepted), ``closed`` and ``loops`` (True: it crosses

@@ -32,3 +32,22 @@ def test_hermite_says_which_energy():
     assert "energy()" in doc
     c = el.hermite((0, 0), (1, 0), (2, 0), (0, 1), tension=1.0)[0]
     assert abs(c.energy() - c.energy_value) <= 1e-9 * c.energy_value
+
+
+# every attribute / method of the binding that holds or returns an angle, and the unit its
+# docstring must name (QA18 P2: SmoothElastica's phi and ElasticSpline.angles had none)
+ANGLES = [(el.SmoothElastica, "phi", "radians"), (el.SmoothElastica.angle, "theta", "radians"),
+          (el.DiscreteElastica, "phi", "radians"), (el.HermiteChain.angle, "theta", "radians"),
+          (el.ElasticSpline, "angles", "radians"), (el.ElasticSpline.angle, "angle", "rad"),
+          (el.G2Quadratic, "end_tangent_error", "radians"), (el.G2Quadratic, "join_angle", "radians"),
+          (el.G2Quadratic, "source_end_tangent_error", "radians"),
+          (el.BlendCurve.seam_angle, "angle", "DEGREES"), (el.FitResult, "constraints", "radians")]
+
+
+@pytest.mark.parametrize("obj, name, unit", ANGLES, ids=lambda v: getattr(v, "__qualname__", v))
+def test_every_angle_names_its_unit(obj, name, unit):
+    """The sentence of the docstring naming the angle names its unit too (seam_angle, the
+    one in degrees, says so loudly)."""
+    doc = " ".join((inspect.getdoc(obj) or "").split())
+    sentences = [s for s in re.split(r"(?<=[.;])\s", doc) if re.search(rf"\b{name}\b", s)]
+    assert any(re.search(rf"\b{unit}\b", s) for s in sentences), (name, sentences)

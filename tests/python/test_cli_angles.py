@@ -1,0 +1,92 @@
+"""Every angle the CLI writes names its unit (QA18 P2): `fit --start-tangent 12` (degrees)
+was written back as "constraints": {"start_tangent": 0.2094} (radians, unnamed), a spline's
+tangent angles as "angles", and the report's phi had no unit."""
+from __future__ import annotations
+
+import json
+import re
+from pathlib import Path
+
+import numpy as np
+
+import libelastica as el
+from cli_run import cli
+
+EX = Path(__file__).resolve().parents[2] / "examples"
+SAMPLE_S = EX / "sample_s_curve.csv"
+
+
+def _free_end_angles(capsys):
+    """The start and end tangent angles (degrees) of the sample's free smooth fit: end
+    conditions it meets."""
+    c = el.io.curve_from_dict(json.loads(cli(capsys, "fit", SAMPLE_S, "--model", "smooth",
+                                             "--json", "-")[1]))
+    return tuple(float(a) for a in np.degrees(c.angle([0.0, c.length])))
+
+
+def _unnamed_angles(doc, path=""):
+    """Keys of numbers (or lists of them) that hold an angle (their name says angle or
+    tangent) without "_rad" / "_deg"."""
+    out = []
+    if isinstance(doc, dict):
+        for k, v in doc.items():
+            numeric = isinstance(v, (int, float)) and not isinstance(v, bool) or (
+                isinstance(v, list) and v and all(isinstance(x, (int, float)) for x in v))
+            if numeric and re.search(r"angle|tangent", k) and not re.search(r"_(rad|deg)$", k):
+                out.append(f"{path}.{k}")
+            out += _unnamed_angles(v, f"{path}.{k}")
+    elif isinstance(doc, list):
+        for i, v in enumerate(doc):
+            out += _unnamed_angles(v, f"{path}[{i}]")
+    return out
+
+
+def test_every_angle_in_the_json_names_its_unit(capsys, tmp_path):
+    a0, a1 = _free_end_angles(capsys)
+    code, out, err = cli(capsys, "fit", SAMPLE_S, "--start-tangent", a0, "--end-tangent", a1,
+                         "--bspline-tol", "1e-6", "--json", tmp_path / "f.json")
+    assert code == 0, err
+    fit = json.loads((tmp_path / "f.json").read_text())
+    assert fit["constraints"] == {"start_tangent_rad": np.radians(a0), "end_tangent_rad": np.radians(a1)}
+    code, out, err = cli(capsys, "spline", EX / "ducks.csv", "--json", tmp_path / "s.json")
+    assert code == 0, err
+    spline = json.loads((tmp_path / "s.json").read_text())
+    sp = el.elastic_spline(el.io.read_points(EX / "ducks.csv"), tension=0.0)
+    assert np.array_equal(spline["angles_rad"], sp.angles)
+    code, out, err = cli(capsys, "g2quad", tmp_path / "f.json", "--edges", "24",
+                         "--json", tmp_path / "g.json")
+    assert code == 0, err
+    code, out, err = cli(capsys, "bspline", tmp_path / "f.json", "--json", tmp_path / "b.json")
+    assert code == 0, err
+    for name in ("f", "s", "g", "b"):
+        doc = json.loads((tmp_path / f"{name}.json").read_text())
+        assert not _unnamed_angles(doc), (name, _unnamed_angles(doc))
+
+
+def test_bspline_reads_the_tangent_in_radians_under_either_key(capsys, tmp_path):
+    """`elastica bspline` of a discrete fit's JSON keeps its end tangents (start_tangent_rad),
+    and of one written before the unit was named (start_tangent, radians) the same."""
+    a0 = _free_end_angles(capsys)[0]
+    code, out, err = cli(capsys, "fit", SAMPLE_S, "--start-tangent", a0, "--json", tmp_path / "f.json")
+    assert code == 0, err
+    doc = json.loads((tmp_path / "f.json").read_text())
+    old = dict(doc, constraints={"start_tangent": doc["constraints"]["start_tangent_rad"]})
+    (tmp_path / "old.json").write_text(json.dumps(old))
+    splines = []
+    for name in ("f", "old"):
+        code, out, err = cli(capsys, "bspline", tmp_path / f"{name}.json", "--json", "-")
+        assert code == 0, err
+        splines.append(el.BSpline.from_dict(json.loads(out)["bspline"]))
+    assert np.array_equal(splines[0].poles, splines[1].poles)
+    d = splines[0].derivative(np.array(splines[0].domain[:1]), 1)[0]
+    assert abs(np.degrees(np.arctan2(d[1], d[0])) - a0) < 1e-9
+
+
+def test_the_report_names_phis_unit(capsys, tmp_path):
+    code, out, err = cli(capsys, "fit", SAMPLE_S, "--model", "smooth", "--svg", tmp_path / "f.svg")
+    assert code == 0, err
+    phi = re.search(r"phi=(\S+) rad,", out)
+    assert phi, out
+    doc = json.loads(cli(capsys, "fit", SAMPLE_S, "--model", "smooth", "--json", "-")[1])
+    assert float(phi.group(1)) == float(f"{doc['curve']['phi']:.6g}")
+    assert re.search(r"phi = \S+ rad", (tmp_path / "f.svg").read_text())
