@@ -51,7 +51,7 @@ def affine_coords(polyline) -> tuple[np.ndarray, np.ndarray]:
 
 
 def affine_length(polyline) -> float:
-    """Affine length L2 = sum cbrt(A_i) (3)."""
+    """Affine length L2 = sum cbrt(A_i) (3) of a ``polyline`` ((n, 2), n >= 3 vertices)."""
     x = _pts(polyline, 3)
     out = ffi.new("double *")
     check(lib.el_affine_length(len(x), dptr(x), out), "affine_length")
@@ -73,7 +73,8 @@ class OsculatingConics(ValueEquality):
 
     coef[i] = (a, b, c, d, e, f) of a x^2 + b x y + c y^2 + d x + e y + f = 0;
     type +1 ellipse / 0 parabola / -1 hyperbola; center = affine evolute point (5);
-    kappa = smooth affine curvature (7)."""
+    kappa = smooth affine curvature (7); ``kind``: "outer", "inner" or "middle", as asked
+    of :func:`osculating_conics`."""
     kind: str
     type: np.ndarray
     center: np.ndarray
@@ -85,7 +86,8 @@ class OsculatingConics(ValueEquality):
 
 
 def osculating_conics(polyline, kind: str = "middle") -> OsculatingConics:
-    """The outer, inner or middle osculating conics of an affine arc-length polyline."""
+    """The outer, inner or middle (``kind``, default "middle") osculating conics of an
+    affine arc-length ``polyline`` ((n, 2), n >= 4 vertices): one per quadruple."""
     if not isinstance(kind, str) or kind not in _KINDS:
         raise ValueError(f"kind must be one of {sorted(_KINDS)}, got {kind!r}")
     x = _pts(polyline, 4)
@@ -100,7 +102,8 @@ def osculating_conics(polyline, kind: str = "middle") -> OsculatingConics:
 
 
 def chaikin(polyline, iterations: int = 1) -> np.ndarray:
-    """Chaikin subdivision (§2.5), `iterations` times; keeps L2, maps A to A/8."""
+    """Chaikin subdivision (§2.5) of a ``polyline`` ((n, 2)), `iterations` times (default 1);
+    keeps L2, maps A to A/8."""
     x = _pts(polyline, 2)
     iterations = as_int(iterations, "chaikin: iterations", 0)
     if (len(x) - 1) * 2.0 ** iterations > 1e8:
@@ -167,7 +170,8 @@ def quadratic_bspline(polyline, clamped: bool = True):
 
 
 def parabolic_lengths(samples) -> np.ndarray:
-    """Signed affine lengths (15) of the parabolic arcs of the replacement curve (§4.2)."""
+    """Signed affine lengths (15) of the parabolic arcs of the replacement curve (§4.2)
+    through ``samples`` ((N+1, 2), N >= 2: the curve's sample points)."""
     p = _pts(samples, 3)
     S = np.empty(len(p) - 1)
     check(lib.el_affine_parabolic_lengths(len(p), dptr(p), dptr(S)), "parabolic_lengths")
@@ -179,7 +183,8 @@ def parabolic_lengths(samples) -> np.ndarray:
 def affine_curvature_exact(kappa, dkappa, ddkappa) -> np.ndarray:
     """Smooth affine curvature of a planar curve from its Euclidean curvature and its
     arc-length derivatives: k = kappa^(4/3) - (5/9) kappa^(-8/3) kappa'^2
-    + (1/3) kappa^(-5/3) kappa'' (real cube roots; needs kappa != 0)."""
+    + (1/3) kappa^(-5/3) kappa'' (real cube roots; needs kappa != 0): ``kappa``, ``dkappa`` =
+    kappa' and ``ddkappa`` = kappa'' (1/length, 1/length^2, 1/length^3), arrays of one shape."""
     kappa, dkappa, ddkappa = (as_real_array(a, n) for a, n in
                               ((kappa, "kappa"), (dkappa, "dkappa"), (ddkappa, "ddkappa")))
     for a, n in ((kappa, "kappa"), (dkappa, "dkappa"), (ddkappa, "ddkappa")):
@@ -197,7 +202,7 @@ def _jacobi(u: float, k: float):
 
 
 def elastica_affine_curvature(curve, s) -> np.ndarray:
-    """Exact affine curvature of a SmoothElastica at arc lengths s, from
+    """Exact affine curvature of a SmoothElastica ``curve`` at arc lengths s, from
     kappa = 2k sqrt(mu) cn u, kappa' = -2k mu sn dn, kappa'' = -2k mu^(3/2) cn (dn^2 - k^2 sn^2)."""
     s = as_vector(s, "elastica_affine_curvature: s", finite=True)
     k, mu = as_real(curve.k, "curve.k"), as_real(curve.mu, "curve.mu")
@@ -223,7 +228,9 @@ def elastica_inflections(curve, margin: float = 1e-9) -> np.ndarray:
     """Arc lengths of the inflections of a SmoothElastica in (0, length): cn(u;k) = 0,
     u = sqrt(mu) s + q = (2j+1) K(k) for 0 < |k| < 1 (the curvature 2 k sqrt(mu) cn(u; k),
     whose modulus enters as k^2: a curve run backwards has -k); none for |k| >= 1 or k = 0.
-    A Hermite chain answers for itself (HermiteChain.inflections)."""
+    A Hermite chain answers for itself (HermiteChain.inflections). ``curve``: a
+    SmoothElastica or HermiteChain; ``margin``: inflections within margin x length of an
+    end are left out (default 1e-9: the ends themselves)."""
     if hasattr(curve, "inflections"):
         return curve.inflections(margin)
     k = abs(as_real(getattr(curve, "k", None), "elastica_inflections: curve.k"))
@@ -295,7 +302,9 @@ class AffinePolyline(ValueEquality):
         return idx, k / np.cbrt(areas) ** 2
 
     def bspline(self, clamped: bool = True):
-        """The uniform quadratic B-spline of the polyline (G2 inside every piece)."""
+        """The uniform quadratic B-spline of the polyline (G2 inside every piece); ``clamped``
+        as :func:`quadratic_bspline`'s (True, default: from the first edge's midpoint to the
+        last's; False: the vertices as poles, simple knots)."""
         return quadratic_bspline(self.points, clamped=clamped)
 
 
@@ -354,7 +363,8 @@ def affine_polyline(curve_or_points, n: int, samples_per_vertex: int = 20,
     vertices next to each inflection (skip_frac > 0 keeps k_i A^(-2/3) converging as n grows).
     fit_ends=True adjusts each piece's A until its last vertex lands on the inflection / the
     curve's end (§4.4 "redone with adjusted A"); by default A = (S/n)^3 as in the paper.
-    optimise=False keeps t1 at its start value (the simple construction, for comparison).
+    optimise=False keeps t1 at its start value (the simple construction, for comparison);
+    max_iter: the golden-section iterations on t1 (default 100, >= 0; Gauss-Newton then polishes).
 
     curve_or_points: a SmoothElastica (sampled with samples_per_vertex * n arcs, its
     inflections taken exactly from the parameters and made sample points) or point data
@@ -468,7 +478,8 @@ def _quadratic_beziers(bs) -> np.ndarray:
 def quadratic_joint_curvatures(bs) -> tuple[np.ndarray, np.ndarray]:
     """Curvature just before and just after every interior joint of a clamped
     quadratic B-spline, (left, right), from its Bezier segments: a segment (b0, b1,
-    b2) has curvature det(b1-b0, b2-b1) / (2|b1-b0|^3) at b0 and / (2|b2-b1|^3) at b2.
+    b2) has curvature det(b1-b0, b2-b1) / (2|b1-b0|^3) at b0 and / (2|b2-b1|^3) at b2
+    (``bs``: the BSpline, degree 2, clamped).
     G2 means left == right."""
     B = _quadratic_beziers(bs)
     d0, d1 = B[:, 1] - B[:, 0], B[:, 2] - B[:, 1]

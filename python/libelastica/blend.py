@@ -403,7 +403,8 @@ def eck_d(c: float) -> float:
 
 
 def eck_omega(c: float, t=None) -> np.ndarray:
-    """Eck's MQ blending functions Omega_0..Omega_3 (2.4) in closed form, shape (n, 4)."""
+    """Eck's MQ blending functions Omega_0..Omega_3 (2.4) in closed form, shape (n, 4), of
+    the MQ parameter ``c`` (nonzero) at ``t`` (n,) (default 101 points over [0, 1])."""
     t = _t(t)
     out = np.empty((len(t), 4))
     c = _nonzero(c, "eck_omega: c")
@@ -419,7 +420,10 @@ def _diameter(xy: np.ndarray) -> float:
 
 @dataclass(eq=False)
 class BlendCurve(ValueEquality):
-    """A (composite) blending-function curve: a basis and 3*nseg + 1 control points."""
+    """A (composite) blending-function curve: a ``basis`` (EllipticBlend or MQBlend) and
+    ``q``, its 3*nseg + 1 control points ((3 nseg + 1, 2)); ``closed``: made closed (default
+    False; the seam at q[0] a C1 joint); ``through``: the points it interpolates
+    (:func:`blend_curve`'s, (m, 2)), else None."""
     basis: _Blend
     q: np.ndarray
     closed: bool = False     # made closed: the seam at q[0] is a C1 joint

@@ -185,7 +185,8 @@ class BSpline:
 
     @classmethod
     def from_dict(cls, d: dict[str, Any]) -> "BSpline":
-        """Inverse of :meth:`to_dict`."""
+        """Inverse of :meth:`to_dict`: the BSpline of its dict ``d`` (degree, poles, knots,
+        mults; max_deviation optional, -1 when absent)."""
         try:
             return cls(degree=d["degree"], poles=d["poles"], knots=d["knots"], mults=d["mults"],
                        max_deviation=d.get("max_deviation", -1.0))
@@ -228,8 +229,9 @@ def _c2_end(spec, name: str):
 
 
 def interpolate_c2(points, start=None, end=None) -> BSpline:
-    """The C2 cubic B-spline through the vertices of a polyline (n >= 2), chord-length
-    parametrised (knots at the cumulative chord lengths). Each end is natural (B'' = 0,
+    """The C2 cubic B-spline through the vertices ``points`` of a polyline ((n, 2), n >= 2),
+    chord-length parametrised (knots at the cumulative chord lengths). Each end, ``start``
+    and ``end``, is natural (B'' = 0,
     None), or ``{"d1": (x, y)}`` (B' there: a unit tangent clamps the direction at speed
     1) or ``{"d2": (x, y)}`` (B'' there: kappa times the unit normal for a curvature), or
     both (a G2 end: a unit tangent and kappa times its left normal give the curvature
@@ -261,8 +263,9 @@ def fitted_bspline(curve, tol=None, degree: int = 3, constraints=None) -> BSplin
 
 
 def cubic_through(points, start=None, end=None) -> BSpline:
-    """The C2 cubic through a polygon's vertices (a discrete elastica's B-spline) with the
-    end conditions of a fit's constraints: each end None (natural, curvature 0) or a dict
+    """The C2 cubic through a polygon's vertices ``points`` ((n, 2), n >= 2; a discrete
+    elastica's B-spline) with the end conditions of a fit's constraints: each end,
+    ``start`` and ``end``, None (natural, curvature 0) or a dict
     of ``"tangent"`` (the unit tangent's angle, rad, in the direction of travel: clamped,
     speed 1) and / or ``"curvature"`` (signed, + turning left: kappa times the end
     segment's left normal as B'', the curvature kappa where the speed is ~1; with a

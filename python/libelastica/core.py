@@ -94,12 +94,13 @@ class SmoothElastica(ShapeDescriptors):
         return self._eval(s, "xy", extrapolate)
 
     def angle(self, s=None, extrapolate: bool = False) -> np.ndarray:
-        """Tangent angle theta(s) (radians, continuous in s); s as :meth:`points` takes it."""
+        """Tangent angle theta(s) (radians, continuous in s); s and ``extrapolate`` as
+        :meth:`points` takes them."""
         return self._eval(s, "theta", extrapolate)
 
     def curvature(self, s=None, extrapolate: bool = False) -> np.ndarray:
-        """Signed curvature kappa(s) (positive = turning counter-clockwise); s as
-        :meth:`points` takes it."""
+        """Signed curvature kappa(s) (1/length, positive = turning counter-clockwise); s and
+        ``extrapolate`` as :meth:`points` takes them."""
         return self._eval(s, "kappa", extrapolate)
 
     def energy(self) -> float:

@@ -73,7 +73,8 @@ class FitResult(ValueEquality):
     ``rms`` / ``max_error``: from ``distances`` (input units); ``distance``:
     "orthogonal" (what was minimised: the points' distances to the curve / polygon)
     or "paired" (point i <-> vertex i, seed 000 (4.6), the discrete default on equally
-    spaced points; or the smooth paired arc lengths); ``iterations``; ``status``: 0 when
+    spaced points; or the smooth paired arc lengths); ``iterations``; ``candidates``: the
+    initial guesses fitted (fit's max_candidates at most); ``status``: 0 when
     converged, else the C status (EL_ENOCONV / EL_EMAXITER: ``curve`` is the best
     seen); ``ipopt_status`` / ``used_ipopt``: whether Ipopt ran for the kept fit
     (bounds, constraints, its polish when left uncertified) and its return code;
@@ -157,7 +158,8 @@ class FitResult(ValueEquality):
         return self.curve.points(self.s)
 
     def outliers(self, factor: Optional[float] = None, free_distances=None) -> np.ndarray:
-        """Indices of the points far from the fitted curve (:func:`far_points`;
+        """Indices of the points far from the fitted curve (:func:`far_points`: beyond
+        ``factor`` times their typical distance, default OUTLIER_FACTOR = 6;
         ``free_distances``: a constrained fit's points' distances without its constraints)."""
         return far_points(self.distances, self.points,
                           OUTLIER_FACTOR if factor is None else factor, free_distances)

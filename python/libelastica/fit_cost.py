@@ -64,7 +64,8 @@ def costly(rms: float, free_rms: float, extent: float) -> bool:
 def cost_summary(held: str, free_rms: float, rms: float, unit: str = "",
                  length: Optional[LengthFormat] = None) -> str:
     """What the warning says (Python's, the CLI's, FreeCAD's): ``held`` names the end
-    conditions in the caller's terms, ``unit`` follows each figure (e.g. " mm"), or
+    conditions in the caller's terms, ``free_rms`` / ``rms`` the fit's with free ends and
+    held (input units), ``unit`` follows each figure (e.g. " mm"), or
     ``length(value, digits)`` writes each (FreeCAD's: in the user's unit schema)."""
     fmt = lengths(unit, length)
     return (f"the end conditions ({held}) raise the rms from {fmt(free_rms, 3)} (free ends) to "
@@ -74,7 +75,7 @@ def cost_summary(held: str, free_rms: float, rms: float, unit: str = "",
 def local_cost_summary(held: str, end: str, free_rms: float, rms: float, unit: str = "",
                        length: Optional[LengthFormat] = None) -> str:
     """What the warning says where the cost is near one ``end`` (:func:`end_costs`);
-    ``unit`` / ``length`` as :func:`cost_summary`'s."""
+    ``held``, ``free_rms``, ``rms`` (there), ``unit`` / ``length`` as :func:`cost_summary`'s."""
     fmt = lengths(unit, length)
     return (f"the end conditions ({held}) raise the rms near the {end} (the first "
             f"{END_SPAN:.0%} of the points' run from it) from {fmt(free_rms, 3)} (free ends) to "
@@ -96,7 +97,9 @@ def end_costs(ends: Iterable[str], foot_s, distances, free_distances, extent: fl
     """[(end, rms, free rms)] for each of ``ends`` where the end conditions cost accuracy
     near it (:func:`costly` on both fits' rms over its points): the points within END_SPAN
     of their run along the free fit (``foot_s``, its arc lengths of their feet) from that
-    end, where they are END_POINTS or more. Distances like with like (:func:`costly`)."""
+    end, where they are END_POINTS or more. Distances like with like (:func:`costly`):
+    ``distances`` the held fit's, ``free_distances`` the free fit's (both (n,), the same
+    points); ``extent`` the points' largest bounding-box side (costly's floor)."""
     s = np.asarray(foot_s, dtype=float)
     d, f = np.asarray(distances, dtype=float), np.asarray(free_distances, dtype=float)
     run = float(np.ptp(s)) if s.size else 0.0

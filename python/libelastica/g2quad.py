@@ -408,7 +408,8 @@ def _joins(splines) -> Tuple[float, float]:
 
 def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents=None,
                  fit: bool = False, partial: bool = False, **options) -> G2Quadratic:
-    """Seed 002 end to end: approximate a SmoothElastica or a sampled curve (N+1, 2)
+    """Seed 002 end to end: approximate ``curve_or_points``, a SmoothElastica (sampled with
+    ``samples_per_vertex`` x n arcs, default 20) or a sampled curve (N+1, 2),
     by an affine arc-length polyline with n edges (:func:`affine_polyline`, each
     piece's A adjusted so its last vertex lands on the piece end), then build one
     curvature-continuous uniform quadratic B-spline per inflection-free piece that

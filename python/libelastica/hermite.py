@@ -25,7 +25,7 @@ class HermiteSolutions(list):
     of curves that exist but that neither one set of smooth parameters nor a chain of
     them meets to ``tol`` (see the header's el_hermite_solve), and ``complete``: False
     when length mode stopped at its work limit (the solutions found so far, with a
-    RuntimeWarning)."""
+    RuntimeWarning). Built like a list, from an ``iterable`` of the solutions."""
     unrepresentable: int = 0
     complete: bool = True
 
@@ -40,7 +40,8 @@ class HermiteChain(ValueEquality, ShapeDescriptors):
     ``curvature(s)``, ``energy()``, ``to_bspline(tol, degree)`` (one C2 B-spline), and
     ``length``, ``loops``, ``crosses_itself``, ``max_curvature`` (shape.py); ``k`` and ``mu`` are the first piece's (the pieces share |F| = 2 mu and
     |k| up to its rounding), ``sigma`` the tension; plus the Hermite attributes
-    ``energy_value``, ``has_inflection``, ``kappa0``, ``kappa1``, ``residual``.
+    ``energy_value``, ``has_inflection``, ``kappa0``, ``kappa1``, ``residual`` (the keyword
+    ``attrs`` el.hermite passes, set as given).
     """
 
     def __init__(self, pieces: List[SmoothElastica], **attrs):
@@ -74,11 +75,13 @@ class HermiteChain(ValueEquality, ShapeDescriptors):
         return self._eval(s, "points", extrapolate)
 
     def angle(self, s=None, extrapolate: bool = False) -> np.ndarray:
-        """Tangent angle theta(s) (radians, continuous in s)."""
+        """Tangent angle theta(s) (radians, continuous in s); s and ``extrapolate`` as
+        :meth:`points` takes them."""
         return self._eval(s, "angle", extrapolate)
 
     def curvature(self, s=None, extrapolate: bool = False) -> np.ndarray:
-        """Signed curvature kappa(s)."""
+        """Signed curvature kappa(s) (1/length, + turning left); s and ``extrapolate`` as
+        :meth:`points` takes them."""
         return self._eval(s, "curvature", extrapolate)
 
     def energy(self) -> float:
@@ -87,7 +90,8 @@ class HermiteChain(ValueEquality, ShapeDescriptors):
 
     def inflections(self, margin: float = 1e-9) -> np.ndarray:
         """Arc lengths of the inflections in (0, length): the pieces' own, and the
-        joints of an inflectional curve (its saddles are its inflections, kappa = 0)."""
+        joints of an inflectional curve (its saddles are its inflections, kappa = 0);
+        ``margin`` as :func:`elastica_inflections`' (default 1e-9 of each piece's length)."""
         from .affine import elastica_inflections
         out = []
         for i, p in enumerate(self.pieces):
@@ -378,7 +382,9 @@ def hermite_analyse(P, V, sigma: float) -> dict:
     """Diagnostics of the normalised tension problem of seed 004 §4-5 (data
     after x(0) = 0, x'(0) = (0, 1), |P| = 1): case of Theorem 6, the kappa_m
     bound, the search intervals (18), the real roots of the polynomial (40)
-    with their branch, and the special values (45)."""
+    with their branch, and the special values (45). ``P`` = x(L) and ``V`` = x'(L), unit
+    2-vectors (to 1e-9), ``sigma`` the tension (<= 1e5, el.hermite's range), in the
+    normalised units (|P| = 1)."""
     P, V = _vec2(P, "hermite_analyse: P"), _vec2(V, "hermite_analyse: V")
     for name, v in (("P", P), ("V", V)):     # (the normalised data: unit vectors)
         require(abs(math.hypot(*v) - 1) <= 1e-9, f"hermite_analyse: |{name}|", "1 (to 1e-9)",

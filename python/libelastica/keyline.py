@@ -36,7 +36,12 @@ class KeylineFit(ValueEquality):
     outwards); ``joint_local``, ``ends_local``; ``prepared`` (a
     PreparedKeyline: polygon, frames). ``inflection``: the polygon vertex nearest the joint;
     ``inflection_estimate``: the RDP-style estimate of the preparation
-    (``prepared.inflection``) the fit started from.
+    (``prepared.inflection``) the fit started from; ``input_distances``: each input
+    point's signed distance (in its plane, + left of the keyline's direction of travel) to
+    the keyline (``input_rms``, ``input_max_error``); ``misfit``: a :class:`libelastica.misfit.Misfit` where the
+    input points lie far farther from it than their noise, else None; ``sparse``: a
+    discrete keyline of few points far from them, the smooth keyline's input_rms
+    (SparseWarning), else None.
     """
     prepared: object
     inflection: int
@@ -83,12 +88,14 @@ class KeylineFit(ValueEquality):
         return float(np.max(np.abs(self.input_distances)))
 
     def to_input(self, xy) -> np.ndarray:
-        """x''y'' points (the sides' frame) in the input's coordinates (PreparedKeyline.to_input)."""
+        """x''y'' points ``xy`` (the sides' frame, (n, 2)) in the input's coordinates
+        (PreparedKeyline.to_input)."""
         return self.prepared.to_input(xy)
 
     def side_points(self, which: str = "second", input_coords: bool = True) -> np.ndarray:
-        """The fitted model points of one side (paired vertices or feet), in the
-        input's coordinates (3D for 3D input) or in x''y''."""
+        """The fitted model points of one side, ``which`` "first" or "second" (default)
+        (paired vertices or feet), in the input's coordinates (3D for 3D input;
+        ``input_coords`` True, default) or in x''y'' (False)."""
         pts = self._side(which).model_points()
         return self.to_input(pts) if input_coords else pts
 
@@ -116,7 +123,8 @@ class KeylineFit(ValueEquality):
         1e-6 of its length, G2 at the joint exactly; discrete: the C2 cubic through both
         halves' vertices, to ``ends``), in the input's coordinates (3D poles for 3D input:
         the x''y'' B-spline's poles mapped by :meth:`to_input`, exact) as `elastica fit
-        --keyline --dxf` and FreeCAD write it, or in x''y'' (``input_coords=False``)."""
+        --keyline --dxf` and FreeCAD write it, or in x''y'' (``input_coords=False``).
+        ``degree``: the smooth B-spline's, 3..7 (default 3; discrete: a cubic always)."""
         from .bspline import keyline_bspline
         b = keyline_bspline(self.first.curve, self.second.curve, tol, degree, self.ends_local)
         return b.mapped(self.to_input) if input_coords else b

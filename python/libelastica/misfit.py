@@ -257,9 +257,10 @@ def _verdict(pts: np.ndarray, d: np.ndarray, rms_all: float, corner: bool = True
 def misfit_summary(m: Misfit, points=None, unit: str = "", numbered: bool = True,
                    length: Optional[LengthFormat] = None, what: str = "one elastica") -> str:
     """What a warning of points that are not one elastica says (:func:`fit`'s, the CLI's and
-    FreeCAD's): "the curve lies 10.9 from the points (rms), 24 x their own noise (0.456): they
-    are not one elastica; a corner at point 162 (counted from 0; at (x, y))? Split there, the
-    two parts fit at rms 0.28 and 0.31". points: the fitted points, to name the corner's
+    FreeCAD's), of :func:`misfit`'s verdict ``m``: "the curve lies 10.9 from the points
+    (rms), 24 x their own noise (0.456): they are not one elastica; a corner at point 162
+    (counted from 0; at (x, y))? Split there, the two parts fit at rms 0.28 and 0.31".
+    points: the fitted points, to name the corner's
     place; ``unit``, ``length`` as :func:`wander_summary`'s; numbered False: by its place
     alone, where the numbers are the fit's order, not the user's; what: the model ("one
     keyline" for :func:`fit_keyline`'s)."""

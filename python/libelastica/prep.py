@@ -79,11 +79,11 @@ class Frame(ValueEquality):
         return _c_struct("el_frame *", self, ("origin", "e1", "e2", "e3"))
 
     def to_3d(self, xy) -> np.ndarray:
-        """Map plane coordinates (n, 2) (or one point (2,)) to 3D: origin + x' e1 + y' e2."""
+        """Map plane coordinates ``xy`` (n, 2) (or one point (2,)) to 3D: origin + x' e1 + y' e2."""
         return _map_points(lib.el_frame_to_3d, self, xy, 2, 3, "Frame.to_3d")
 
     def project(self, xyz, return_z: bool = False):
-        """Plane coordinates (n, 2) of 3D points (n, 3); with ``return_z`` also the
+        """Plane coordinates (n, 2) of 3D points ``xyz`` (n, 3); with ``return_z`` also the
         signed distances z' (n,) from the plane."""
         single = np.ndim(xyz) == 1
         pts = _points(xyz, "xyz", 3)
@@ -110,16 +110,16 @@ class Frame2D(ValueEquality):
         return _c_struct("el_frame2d *", self, ("origin", "f1", "f2"))
 
     def to_local(self, xy) -> np.ndarray:
-        """Parent (x'y') coordinates -> this frame's x''y'' coordinates."""
+        """Parent (x'y') coordinates ``xy`` ((n, 2) or (2,)) -> this frame's x''y'' coordinates."""
         return _map_points(lib.el_frame2d_to_local, self, xy, 2, 2, "Frame2D.to_local")
 
     def to_parent(self, xy) -> np.ndarray:
-        """This frame's x''y'' coordinates -> parent (x'y') coordinates."""
+        """This frame's x''y'' coordinates ``xy`` ((n, 2) or (2,)) -> parent (x'y') coordinates."""
         return _map_points(lib.el_frame2d_to_parent, self, xy, 2, 2, "Frame2D.to_parent")
 
 
 def plane_fit(xyz) -> Tuple[np.ndarray, Frame]:
-    """PCA plane fit of a 3D polyline (n >= 3 points, shape (n, 3)).
+    """PCA plane fit of a 3D polyline ``xyz`` (n >= 3 points, shape (n, 3)).
 
     Returns ``(xy, frame)``: the (n, 2) coordinates x', y' of the points
     projected on the fitted plane, and the :class:`Frame` (``frame.to_3d(xy)``
@@ -246,7 +246,7 @@ def _length(xy) -> float:
 
 
 def pca_normalize(xy) -> Tuple[np.ndarray, Frame2D]:
-    """PCA re-normalisation of 2D points (n >= 2, shape (n, 2)), seed 000 §5.3:
+    """PCA re-normalisation of 2D points ``xy`` (n >= 2, shape (n, 2)), seed 000 §5.3:
     returns the coordinates in the frame of their centroid and first principal
     axis (x''), and the :class:`Frame2D` (``frame.to_parent`` maps back)."""
     pts = as_points(xy, "pca_normalize: xy", 2, min_rows=2)

@@ -45,8 +45,10 @@ class ResampledFit(ValueEquality):
     within tol; discrete: the C2 cubic through its vertices), ``distances`` / ``feet`` the
     points' signed distances (+ = left) to it and their nearest points on it, ``rms`` /
     ``max_error`` from them, ``foot_s`` each foot's arc length (the B-spline's parameter: a
-    smooth curve's, a discrete one's polygon's, as FitResult.foot_s); ``reference_rms``: the rms of the points' own smooth fit where
-    this one lies beyond RESAMPLE_RATIO times it (a warning), else None."""
+    smooth curve's, a discrete one's polygon's, as FitResult.foot_s); ``points`` the
+    points measured, ``step`` the resampling segment length asked; ``reference_rms``: the
+    rms of the points' own smooth fit where this one lies beyond RESAMPLE_RATIO times it
+    (a warning), else None."""
     result: FitResult
     polygon: np.ndarray
     points: np.ndarray
@@ -100,7 +102,8 @@ def _extent(points) -> float:
 def resampled_reference(points, rms: float, polygon, curve, constraints=None) -> Optional[float]:
     """:func:`resampled_fits_worse` of a fit of the resampled ``polygon`` whose ``curve``
     lies ``rms`` from ``points``: the points' own smooth fit, el.fit's or, where better, the
-    one from that curve (smooth) or from the smooth fit of the polygon (discrete)."""
+    one from that curve (smooth) or from the smooth fit of the polygon (discrete), all held
+    to the fit's ``constraints`` (el.fit's, or None)."""
     from .core import SmoothElastica
     start = curve if isinstance(curve, SmoothElastica) else None
     if start is None:
@@ -116,7 +119,8 @@ def fit_resampled(points, step: float, model: str = "discrete", *, tol: float = 
     """Fit an elastica to points (n, 2) through their polygon resampled with segment ``step``
     (:func:`resampled_polygon`; the discrete edge h fitted unless ``fixed`` holds it) and
     measure it on the points: their distances to the curve drawn (``tol``, ``degree``: the
-    smooth B-spline's). ``kwargs`` go to :func:`fit` (constraints, fixed, distance, ...).
+    smooth B-spline's). ``model``: "discrete" (default) or "smooth", as :func:`fit`'s;
+    ``kwargs`` go to :func:`fit` (constraints, fixed, distance, ...).
     ``check``: compare with the points' own smooth fit and warn (ResampleWarning) where
     the resampled one lies beyond RESAMPLE_RATIO times its rms (a shorter step, or none,
     fits the points closer)."""
@@ -145,7 +149,8 @@ def fit_resampled(points, step: float, model: str = "discrete", *, tol: float = 
 
 def resample_summary(step: float, rms: float, reference: float, unit: str = "",
                      extent: Optional[float] = None, length: Optional[LengthFormat] = None) -> str:
-    """What the warning of a resampled fit far from its points says (Python's, FreeCAD's).
+    """What the warning of a resampled fit far from its points says (Python's, FreeCAD's):
+    resampled at ``step``, lying ``rms`` from them, against their own fit's ``reference``.
     Given the points' ``extent``, a reference below RESAMPLE_FLOOR of it (their own fit
     passes through them: rounding) is said in length, not as a ratio to it. ``unit``
     follows each length, or ``length(value, digits)`` writes each (cost_summary's)."""

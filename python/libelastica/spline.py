@@ -68,7 +68,8 @@ class ElasticSpline(ValueEquality):
     first), ``guide_forces`` ((g, 2): the force each exerts on the batten,
     normal to it, units of EI/2 as ``forces``) and ``guide_pieces`` (the index
     of the piece each starts). Without G2 ends piece i runs from point i to
-    point i+1.
+    point i+1. Made by :func:`elastic_spline` (``res``: the C el_spline_result read, the
+    ``points`` and ``closed`` it was asked for).
     """
 
     def __init__(self, res, points: np.ndarray, closed: bool):
