@@ -315,13 +315,18 @@ int el_guess_smooth(const double *xy, size_t n, int mode, el_smooth_params *cand
 /*
  * How a fit measures the distance of a point to the model (el_fit_options.distance):
  *   EL_DISTANCE_AUTO        orthogonal, but paired for the discrete model on equally
- *                           spaced points (the mean segment of runs of max(3, (n-1)/16)
+ *                           spaced points (the mean segment of runs of w = max(3, (n-1)/16)
  *                           segments within 1.3 x of each other: an equilateral polygon,
- *                           e.g. el_resample_equilateral's, or samples at equal steps)
- *                           where the paired fit's points stay at their vertices: where
- *                           they slip along the polygon by more than 1.3 x their distance
- *                           from it (rms; a slowly changing step, points at random
- *                           places), fitted again by distance from that fit;
+ *                           e.g. el_resample_equilateral's, or samples at equal steps) in
+ *                           one pass (no point whose chords to the points 1..w back and on
+ *                           point opposite ways: a scan passed back and forth) where the
+ *                           paired fit's points stay at their vertices: where they slip
+ *                           along the polygon by more than 1.3 x their distance from it
+ *                           (rms; a slowly changing step, points at random places), fitted
+ *                           again by distance from that fit; where their mean slip over w
+ *                           points steps by more than half a vertex and 4 x its noise (a
+ *                           point missing from, or doubled in, the scan), fitted by
+ *                           distance afresh, as EL_DISTANCE_ORTHOGONAL fits them;
  *   EL_DISTANCE_ORTHOGONAL  the distance of each point to the curve (smooth) or to the
  *                           polygon of the n vertices (discrete), its foot free; the
  *                           smooth curve starts and ends at the feet of the first and last

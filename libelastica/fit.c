@@ -39,33 +39,6 @@ static const double LOOSE_TOL = 1e-5;
 
 /* ------------------------------------------------------------ the problem */
 
-/* Whether the points are spaced evenly along the data: the mean segment of every run
- * of w = max(3, (n-1)/16) consecutive segments within 1.3 x of each other's (a run's
- * mean evens out the noise of scanned samples taken at equal steps, not a change of
- * density or a gap). The discrete model's paired distance (seed 000 (4.6)) is meant
- * for such data (an equilateral polygon, el_resample_equilateral's, or equal steps); on
- * other points (sketched, scanned unevenly, with gaps) a vertex is not where its point
- * is, and the paired fit is far from the points (measured: 42 points of two densities,
- * noise 0.2: paired rms 12.4, orthogonal 0.15; a 175-point scan of spacing 1:6 with
- * two gaps, noise 0.15: 4.2 and 0.15). */
-/* Even spacing in this sense is necessary for the pairing, not sufficient: a slow change of
- * spacing, or points at random places (every run as dense as the next), pass it, and the
- * paired fit is then judged by its points' slip along the polygon (el__fit_unpaired). */
-int el__fit_evenly_spaced(const double *xy, size_t n)
-{
-    const size_t m = n - 1, w = m / 16 > 3 ? m / 16 : 3;
-    if (m < w) return 1;
-    double run = 0.0, lo = HUGE_VAL, hi = 0.0;
-    for (size_t i = 0; i < m; i++) {
-        run += hypot(xy[2 * i + 2] - xy[2 * i], xy[2 * i + 3] - xy[2 * i + 1]);
-        if (i >= w)
-            run -= hypot(xy[2 * (i - w) + 2] - xy[2 * (i - w)],
-                         xy[2 * (i - w) + 3] - xy[2 * (i - w) + 1]);
-        if (i + 1 >= w) { lo = fmin(lo, run); hi = fmax(hi, run); }
-    }
-    return hi <= 1.3 * lo;
-}
-
 /* The options in force (the caller's or the defaults), the input checked and its
  * normalisation (centroid at the origin, rms radius 1); a held start point is x0, y0
  * fixed. EL_OK, else the run's status (res->constraint naming a bad constraint). */
@@ -162,8 +135,8 @@ static void choose_charts(fit_run_state *R)
     const int model = R->model, flags = R->flags, ik = R->ik;
     R->kind = o->distance == EL_DISTANCE_PAIRED ? FIT_PAIRED
             : o->distance == EL_DISTANCE_ORTHOGONAL ? FIT_ORTHOGONAL
-            : model == FIT_SMOOTH || !el__fit_evenly_spaced(R->xy, R->n) ? FIT_ORTHOGONAL
-            : FIT_PAIRED;
+            : model == FIT_SMOOTH || !el__fit_evenly_spaced(R->xy, R->n) || el__fit_retrace(R->xy, R->n)
+                ? FIT_ORTHOGONAL : FIT_PAIRED;
     const int sl[4] = {model == FIT_DISCRETE ? 3 : 2, model == FIT_DISCRETE ? 4 : 3, ik, 5};
     memcpy(R->sl, sl, sizeof sl);
     R->chart_ok = 1;

@@ -608,9 +608,11 @@ typedef struct fit_run_state {
     double v[2][FIT_NP];
     int status, constraint, ok;
 } fit_run_state;
-/* fit.c: whether the points are spaced evenly along the data (the paired distance's
- * condition, seed 000 (4.6)). */
+/* fit_pairing.c: whether the points are spaced evenly along the data (the paired
+ * distance's condition, seed 000 (4.6)); the first point where they turn back and run
+ * back over a stretch (a retraced scan: not one pass), 0 where none does. */
 int el__fit_evenly_spaced(const double *xy, size_t n);
+size_t el__fit_retrace(const double *xy, size_t n);
 /* fit_choose.c: the run's starts: the guesses (or the caller's start), the noise rule, and
  * the further starts fitted first; EL_OK, else the run's error. */
 int el__fit_starts(fit_run_state *R);
@@ -717,13 +719,17 @@ int el__fit_fallback(int model, const double *xy, size_t n, const el_fit_options
                      double *d, double *fs);
 /* fit_restart.c: a discrete fit paired by the spacing test alone (*res, d, fs) whose points
  * slip along its polygon from their vertices, fitted again by distance to the polygon from
- * its result, which replaces it when lower; res->status, or EL_ENOMEM. */
+ * its result; whose points jump a vertex (el__fit_skips), fitted by distance afresh (the
+ * fit distance="orthogonal" gives); the refit replaces it when lower; res->status, or
+ * EL_ENOMEM. */
 int el__fit_unpaired(int model, const double *xy, size_t n, const el_fit_options *opt, fit_out *res, double *d,
                      double *fs);
-/* fit_restart.c: whether the points slip along a paired fit's polygon (segment h, their
+/* fit_pairing.c: whether the points slip along a paired fit's polygon (segment h, their
  * feet fs and rms distance to it, one units) by more than PAIRING_SLIP times their
- * distance (el__fit_unpaired's test). */
+ * distance; whether their mean slip steps by PAIRING_STEP vertices or more from one
+ * stretch of points to the next (el__fit_unpaired's tests). */
 int el__fit_slips(size_t n, double h, double rms, const double *fs);
+int el__fit_skips(size_t n, double h, double rms, const double *fs);
 /* fit_restart.c: a fit pinned at both ends with a zero start curvature (*res, d, fs, from the
  * start-state chart with the end point as Ipopt's rows) fitted again in the ends chart with
  * that curvature held (FIT_RUN_ENDS_HELD), which replaces it when certified and lower or

@@ -277,40 +277,34 @@ static int rerun_from(int model, const double *xy, size_t n, const el_fit_option
     return el__fit_run(model, xy, n, &ro, flags, res->params, alt, *buf, *buf + n);
 }
 
-/* The paired fit's points slip along its polygon by more than PAIRING_SLIP times their
- * distance from it (rms of foot arc length - i h against the rms distance, beyond 1e-4 of
- * the polygon's length: a fit without noise differs from its points by the model's O(h^2)
- * along the polygon more than across): the points are not where their vertices are, and
- * pairing them pulled the polygon (the spacing test passes points whose step grows slowly,
- * or dense points at random places). Measured, paired fits and their points, noise 0.1:
- * equal steps slip 1.0-1.25 x their distance (noise-free: 3.6 x, below the floor); a step
- * growing by 5 % end to end 2.2-2.5 x (rms 0.19 where the distance to the polygon gives
- * 0.101), by 10 % 2.4 x (0.44 for 0.093, k 0.79 for 0.70), by 25 % over 20 points 1.5 x
- * (the pull moves the polygon across too: 1.22 for 0.079); 10 000 points at random places
- * 3.1 x (0.14 for 0.099). */
-#define PAIRING_SLIP 1.3
-
-int el__fit_slips(size_t n, double h, double rms, const double *fs)
+/* el__fit_run by distance to the curve from the options' own starts (a paired fit's points
+ * as distance="orthogonal" fits them): as rerun_from. */
+static int rerun_afresh(int model, const double *xy, size_t n, const el_fit_options *opt, fit_out *alt,
+                        double **buf)
 {
-    /* in units of the segment h (slips squared in input units underflowed at 1e-160, points
-     * staying paired at 5e9 x the orthogonal fit's rms, and overflowed at 1e160) */
-    double su = 0.0;
-    for (size_t i = 0; i < n; i++) {
-        const double u = fs[i] / h - (double)i;
-        su += u * u;
-    }
-    return sqrt(su / (double)n) > PAIRING_SLIP * (rms / h) + 1e-4 * (double)(n - 1);
+    el_fit_options ro;
+    if (opt) ro = *opt; else el_fit_options_defaults(&ro);
+    ro.distance = EL_DISTANCE_ORTHOGONAL;
+    memset(alt, 0, sizeof *alt);
+    alt->status = -1;
+    *buf = malloc(sizeof(double) * 2 * n);
+    if (!*buf) return EL_ENOMEM;
+    return el__fit_run(model, xy, n, &ro, 0, NULL, alt, *buf, *buf + n);
 }
 
 int el__fit_unpaired(int model, const double *xy, size_t n, const el_fit_options *opt, fit_out *res, double *d,
                      double *fs)
 {
-    if (!el__fit_slips(n, res->params[2], res->rms, fs)) return res->status;
+    const double h = res->params[2];
+    const int slips = el__fit_slips(n, h, res->rms, fs);
+    if (!slips && !el__fit_skips(n, h, res->rms, fs)) return res->status;
     fit_out alt;
     double *buf;
-    const int st = rerun_from(model, xy, n, opt, EL_DISTANCE_ORTHOGONAL, 0, res, &alt, &buf);
+    /* slipping: from this fit's curve; a skipped vertex: afresh, as distance="orthogonal" */
+    const int st = slips ? rerun_from(model, xy, n, opt, EL_DISTANCE_ORTHOGONAL, 0, res, &alt, &buf)
+                         : rerun_afresh(model, xy, n, opt, &alt, &buf);
     if (st != EL_ENOMEM && alt.status != -1 && alt.rms < res->rms) {
-        memcpy(alt.initial, res->initial, sizeof alt.initial);
+        if (slips) memcpy(alt.initial, res->initial, sizeof alt.initial);
         replace_fit(res, &alt, buf, n, d, fs);
     }
     free(buf);

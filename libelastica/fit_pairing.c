@@ -1,0 +1,119 @@
+/*
+ * Whether points may be paired with a discrete curve's vertices (seed 000 (4.6)), the
+ * choice of distance="auto": before the fit, the points spaced evenly along one pass of
+ * the data (el__fit_evenly_spaced, el__fit_retrace); after a paired fit, its points where
+ * their vertices are along its polygon (el__fit_slips, el__fit_skips; el__fit_unpaired in
+ * fit_restart.c refits where they are not).
+ */
+#include "fit_internal.h"
+#include <math.h>
+
+/* Whether the points are spaced evenly along the data: the mean segment of every run
+ * of w = max(3, (n-1)/16) consecutive segments within 1.3 x of each other's (a run's
+ * mean evens out the noise of scanned samples taken at equal steps, not a change of
+ * density or a gap). The discrete model's paired distance (seed 000 (4.6)) is meant
+ * for such data (an equilateral polygon, el_resample_equilateral's, or equal steps); on
+ * other points (sketched, scanned unevenly, with gaps) a vertex is not where its point
+ * is, and the paired fit is far from the points (measured: 42 points of two densities,
+ * noise 0.2: paired rms 12.4, orthogonal 0.15; a 175-point scan of spacing 1:6 with
+ * two gaps, noise 0.15: 4.2 and 0.15). */
+/* Even spacing in this sense is necessary for the pairing, not sufficient: a slow change of
+ * spacing, or points at random places (every run as dense as the next), pass it, and the
+ * paired fit is then judged by its points' slip along the polygon (el__fit_unpaired). */
+int el__fit_evenly_spaced(const double *xy, size_t n)
+{
+    const size_t m = n - 1, w = m / 16 > 3 ? m / 16 : 3;
+    if (m < w) return 1;
+    double run = 0.0, lo = HUGE_VAL, hi = 0.0;
+    for (size_t i = 0; i < m; i++) {
+        run += hypot(xy[2 * i + 2] - xy[2 * i], xy[2 * i + 3] - xy[2 * i + 1]);
+        if (i >= w)
+            run -= hypot(xy[2 * (i - w) + 2] - xy[2 * (i - w)],
+                         xy[2 * (i - w) + 3] - xy[2 * (i - w) + 1]);
+        if (i + 1 >= w) { lo = fmin(lo, run); hi = fmax(hi, run); }
+    }
+    return hi <= 1.3 * lo;
+}
+
+/* The first point where the data turn back on themselves and run back over a stretch (a
+ * scan passed back and forth): a vertex i whose chords to the points k back and k on
+ * point opposite ways (dot < 0) at every k = 1..w, w = max(3, (n-1)/16); 0 where none
+ * does. Evenly spaced all the same, such points are not one pass: the paired polygon must
+ * retrace them (QA18's 188 points scanned s 0 -> 12 -> 8 -> 30, noise 0.05: paired rms
+ * 1.14, refitted by distance from it 0.50, length 63 for 30; the orthogonal fit 0.050;
+ * the apex found in 60 of 60 draws, noise 0.02-0.1). A smooth curve's polygon turns by
+ * less than 90 degrees at a vertex (k = 1); a regular polygon that turns more has k = 3's
+ * chords forward again. Over the whole w only: a noise cloud (points far closer than
+ * their noise) turns so at a few k near its ends (10 of bench_fit.py's 5000-point sets). */
+size_t el__fit_retrace(const double *xy, size_t n)
+{
+    const size_t w = (n - 1) / 16 > 3 ? (n - 1) / 16 : 3;
+    for (size_t i = w; i + w < n; i++) {
+        size_t k = 1;
+        for (; k <= w; k++) {
+            const double *p = xy + 2 * i, *a = p - 2 * k, *b = p + 2 * k;
+            if ((p[0] - a[0]) * (b[0] - p[0]) + (p[1] - a[1]) * (b[1] - p[1]) >= 0.0) break;
+        }
+        if (k > w) return i;
+    }
+    return 0;
+}
+
+/* The paired fit's points slip along its polygon by more than PAIRING_SLIP times their
+ * distance from it (rms of foot arc length - i h against the rms distance, beyond 1e-4 of
+ * the polygon's length: a fit without noise differs from its points by the model's O(h^2)
+ * along the polygon more than across): the points are not where their vertices are, and
+ * pairing them pulled the polygon (the spacing test passes points whose step grows slowly,
+ * or dense points at random places). Measured, paired fits and their points, noise 0.1:
+ * equal steps slip 1.0-1.25 x their distance (noise-free: 3.6 x, below the floor); a step
+ * growing by 5 % end to end 2.2-2.5 x (rms 0.19 where the distance to the polygon gives
+ * 0.101), by 10 % 2.4 x (0.44 for 0.093, k 0.79 for 0.70), by 25 % over 20 points 1.5 x
+ * (the pull moves the polygon across too: 1.22 for 0.079); 10 000 points at random places
+ * 3.1 x (0.14 for 0.099). */
+#define PAIRING_SLIP 1.3
+
+int el__fit_slips(size_t n, double h, double rms, const double *fs)
+{
+    /* in units of the segment h (slips squared in input units underflowed at 1e-160, points
+     * staying paired at 5e9 x the orthogonal fit's rms, and overflowed at 1e160) */
+    double su = 0.0;
+    for (size_t i = 0; i < n; i++) {
+        const double u = fs[i] / h - (double)i;
+        su += u * u;
+    }
+    return sqrt(su / (double)n) > PAIRING_SLIP * (rms / h) + 1e-4 * (double)(n - 1);
+}
+
+
+/* The paired fit's points jump a vertex: the mean slip (foot arc length / h - i) of the w
+ * = max(3, (n-1)/16) points from some point g on differs from the w points' before it by
+ * more than PAIRING_STEP vertices and 4 x its noise sqrt(2 / w) rms / h (a point missing
+ * from, or doubled in, an evenly spaced scan; the spacing test's runs move by 1 / w for
+ * it, less than their noise). Only where a step of one vertex stands that far above the
+ * noise: points far closer than their noise are a cloud whose feet spread otherwise (two
+ * of bench_fit's 5000-point sets, rms 35 h: steps of 11 vertices, 4.1 x). Measured on
+ * QA18's scans (200 points, spacing 0.15, noise 0.05, 4 x noise 0.54; 20 draws each):
+ * without dropouts the largest step 0.28-0.43 vertex; with 1, 2 or 4 single-point
+ * dropouts the largest 0.62-1.61, the paired fits that pass the spacing test at 1.03-1.22
+ * x the orthogonal fit's rms. */
+#define PAIRING_STEP 0.5
+
+int el__fit_skips(size_t n, double h, double rms, const double *fs)
+{
+    const size_t w = (n - 1) / 16 > 3 ? (n - 1) / 16 : 3;
+    const double wd = (double)w, noise = 4.0 * sqrt(2.0 / wd) * rms / h;
+    if (n < 2 * w || !(noise <= 1.0)) return 0;
+    double before = 0.0, after = 0.0, top = 0.0;
+    for (size_t i = 0; i < w; i++) {
+        before += fs[i] / h - (double)i;
+        after += fs[i + w] / h - (double)(i + w);
+    }
+    for (size_t g = w;; g++) {      /* before: points g-w..g-1, after: g..g+w-1 */
+        top = fmax(top, fabs(after - before));
+        if (g + w >= n) break;
+        const double ug = fs[g] / h - (double)g;
+        before += ug - (fs[g - w] / h - (double)(g - w));
+        after += fs[g + w] / h - (double)(g + w) - ug;
+    }
+    return top / wd > fmax(PAIRING_STEP, noise);
+}

@@ -1,0 +1,119 @@
+/* The discrete fit's distance="auto" pairs vertex i with point i only where the points are
+ * one pass at equal steps (fit_pairing.c). QA18: a scan passed back and forth over part of
+ * its length (s 0 -> 12 -> 8 -> 30) is evenly spaced but not one pass: paired, its polygon
+ * retraced and the refit by distance from it stayed there (rms 0.50, 10 x the noise, length
+ * 63 for 30, status ok); an evenly spaced scan with single points missing was paired across
+ * the gaps (rms up to 1.22 x the orthogonal fit's, status ok, no warning). Both now fit as
+ * distance="orthogonal" does; evenly spaced scans without dropouts stay paired. */
+#include "testutil.h"
+#include <string.h>
+
+/* QA18's curve: length 30, one inflection */
+static const el_smooth_params TRUTH = {0.0, 0.0, 0.1, 0.04, 0.75, -0.9, 30.0};
+enum { MAXN = 200 };
+
+/* the points of TRUTH at the n arc lengths s, each coordinate + noise N(0, 1), seeded */
+static void scan(const double *s, size_t n, double noise, unsigned long long seed, double *xy)
+{
+    ck_assert_int_eq(el_smooth_eval(&TRUTH, n, s, xy, NULL, NULL), EL_OK);
+    unsigned long long st = (seed + 1) * 0x9E3779B97F4A7C15ULL;
+    for (size_t i = 0; i < 2 * n; i++) xy[i] += noise * test_normal(&st);
+}
+
+/* the default fit and distance="orthogonal"'s of the n points xy */
+static void fit_both(const double *xy, size_t n, el_fit_discrete_result *autofit, el_fit_discrete_result *orth)
+{
+    el_fit_options o;
+    el_fit_options_defaults(&o);
+    const int st = el_fit_discrete(xy, n, &o, NULL, autofit, NULL, NULL);
+    ck_assert_msg(st == EL_OK || st == EL_EMAXITER, "status %d", st);
+    o.distance = EL_DISTANCE_ORTHOGONAL;
+    ck_assert_int_eq(el_fit_discrete(xy, n, &o, NULL, orth, NULL, NULL), EL_OK);
+}
+
+/* back and forth: 60 points on s 0..12, 19 back to 8, 109 on to 30, noise 0.05 (spacing
+ * 0.2 both ways). Main, 16 of 200 draws paired by the spacing test (the others not), each
+ * refitted by distance from its retraced polygon: rms 1.08-1.11 and length 34 (status 6
+ * or 0), or a hairball of length 965-2929 at rms 0.08-0.15; these three: 0.080 (1143),
+ * 1.098 (33.9), 0.113 (965) */
+START_TEST(test_back_and_forth_scan_is_not_paired)
+{
+    double s[188], xy[2 * 188];
+    size_t n = 0;
+    for (int i = 0; i < 60; i++) s[n++] = 12.0 * i / 59.0;
+    for (int i = 1; i < 20; i++) s[n++] = 12.0 - 4.0 * i / 19.0;
+    for (int i = 1; i < 110; i++) s[n++] = 8.0 + 22.0 * i / 109.0;
+    ck_assert_uint_eq(n, 188);
+    const unsigned long long seeds[] = {18, 42, 47};
+    scan(s, n, 0.05, seeds[_i], xy);
+    el_fit_discrete_result a, b;
+    fit_both(xy, n, &a, &b);
+    const double length = a.params.h * (double)(n - 1);     /* n vertices */
+    ck_assert_int_eq(a.distance, EL_DISTANCE_ORTHOGONAL);
+    ck_assert_msg(a.rms < 1.2 * 0.05 && fabs(length - 30.0) < 0.5, "draw %d: rms %g, length %g (truth 30)",
+                  _i, a.rms, length);
+    ck_assert_int_eq(a.status, EL_OK);
+    ck_assert_msg(a.rms <= b.rms * (1.0 + 1e-6), "draw %d: rms %.9g, orthogonal %.9g", _i, a.rms, b.rms);
+}
+END_TEST
+
+/* 200 points at equal steps of 0.15 along the curve, noise 0.05, the points drop[0..nd-1]
+ * left out */
+static size_t dropout_scan(const int *drop, int nd, unsigned long long seed, double *xy)
+{
+    double s[MAXN];
+    size_t n = 0;
+    for (int i = 0; i < MAXN; i++) {
+        int out = 0;
+        for (int j = 0; j < nd; j++) out |= drop[j] == i;
+        if (!out) s[n++] = 30.0 * i / (MAXN - 1.0);
+    }
+    scan(s, n, 0.05, seed, xy);
+    return n;
+}
+
+/* one or two single-point dropouts, draws that main paired at 1.03-1.18 x the orthogonal
+ * fit's rms (the points' mean slip stepping by 0.91-1.04 vertex at a dropout, 0.51-0.62
+ * the threshold) */
+static const struct { int drop[2], nd; unsigned long long seed; } DROPOUTS[] = {
+    {{68, -1}, 1, 11}, {{74, -1}, 1, 51}, {{73, -1}, 1, 79},
+    {{169, 95}, 2, 60}, {{156, 183}, 2, 73}, {{73, 105}, 2, 79},
+};
+
+START_TEST(test_dropouts_are_not_paired)
+{
+    double xy[2 * MAXN];
+    const size_t n = dropout_scan(DROPOUTS[_i].drop, DROPOUTS[_i].nd, DROPOUTS[_i].seed, xy);
+    el_fit_discrete_result a, b;
+    fit_both(xy, n, &a, &b);
+    ck_assert_int_eq(a.distance, EL_DISTANCE_ORTHOGONAL);
+    ck_assert_msg(a.rms <= b.rms * (1.0 + 1e-6), "case %d: rms %.9g, orthogonal %.9g", _i, a.rms, b.rms);
+}
+END_TEST
+
+/* the same scans without dropouts: paired, as before (draws whose spacing passes the
+ * test, paired at 1.002-1.009 x the orthogonal fit's rms) */
+START_TEST(test_even_scans_stay_paired)
+{
+    double xy[2 * MAXN];
+    const unsigned long long seeds[] = {3, 11, 12};
+    const size_t n = dropout_scan(NULL, 0, seeds[_i], xy);
+    el_fit_discrete_result a, b;
+    fit_both(xy, n, &a, &b);
+    ck_assert_int_eq(a.distance, EL_DISTANCE_PAIRED);
+}
+END_TEST
+
+static Suite *suite(void)
+{
+    Suite *s = suite_create("fit_pairing");
+    TCase *tc = tcase_create("core");
+    tcase_set_timeout(tc, 60);
+    tcase_add_loop_test(tc, test_back_and_forth_scan_is_not_paired, 0, 3);
+    tcase_add_loop_test(tc, test_dropouts_are_not_paired, 0, (int)(sizeof DROPOUTS / sizeof DROPOUTS[0]));
+    tcase_add_loop_test(tc, test_even_scans_stay_paired, 0, 3);
+    suite_add_tcase(s, tc);
+    return s;
+}
+
+int main(void) { return test_run_suite(suite()); }

@@ -1,0 +1,71 @@
+"""The discrete fit's default distance pairs vertex i with point i only where the points are
+one pass at equal steps (libelastica/fit_pairing.c). QA18: a scan passed back and forth
+over part of its length was paired, its polygon retraced, and the refit by distance from
+that polygon stayed there (rms 0.49, length 63 for 30, a MisfitWarning naming a false
+corner); a scan with single points missing was paired across the gaps (rms up to 1.22 x
+the orthogonal fit's, no warning). Both now fit as distance="orthogonal" does; scans at
+equal steps without dropouts stay paired."""
+import warnings
+
+import numpy as np
+import pytest
+
+import libelastica as el
+
+TRUTH = dict(x0=0, y0=0, phi=0.1, mu=0.04, k=0.75, q=-0.9, length=30.0)
+NOISE = 0.05
+
+
+def _truth():
+    return el.SmoothElastica(**TRUTH)
+
+
+def _fit_warned(P, **kw):
+    with warnings.catch_warnings(record=True) as w:
+        warnings.simplefilter("always")
+        r = el.fit(P, **kw)
+    return r, [x for x in w if issubclass(x.category, (el.MisfitWarning, el.WanderWarning))]
+
+
+# s 0 -> 12, back to 8, on to 30: 188 points 0.2 apart both ways. Main: seed 3 rms 0.487,
+# length 63.2, status 0, a MisfitWarning (a corner at point 164) and a WanderWarning;
+# seed 23 rms 1.097, length 34.1, status 6 (7 of 60 seeds so)
+@pytest.mark.parametrize("seed", [3, 23])
+def test_back_and_forth_scan_fits_as_orthogonal(seed):
+    s = np.r_[np.linspace(0, 12, 60), np.linspace(12, 8, 20)[1:], np.linspace(8, 30, 110)[1:]]
+    P = _truth().points(s) + NOISE * np.random.default_rng(seed).standard_normal((len(s), 2))
+    r, warned = _fit_warned(P)
+    o = _fit_warned(P, distance="orthogonal")[0]
+    length = r.curve.h * (r.curve.n - 1)
+    assert r.status == 0 and r.distance == "orthogonal"
+    assert r.rms < 1.2 * NOISE and abs(length - 30.0) < 0.5, (r.rms, length)
+    assert r.rms <= o.rms * (1 + 1e-6), (r.rms, o.rms)
+    assert not warned, [str(x.message) for x in warned]
+
+
+def _dropout_scan(seed, ndrop):
+    """QA18's scan: 200 points at equal steps along the curve, ndrop single points left out
+    (between points 10 and 190), noise 0.05."""
+    rng = np.random.default_rng(seed)
+    keep = np.ones(200, bool)
+    keep[rng.choice(np.arange(10, 190), ndrop, replace=False)] = False
+    return _truth().points(np.linspace(0, 30, 200)[keep]) + NOISE * rng.standard_normal((keep.sum(), 2))
+
+
+# main paired these at 1.223, 1.127 (two dropouts) and 1.057, 1.064 (one) x the orthogonal
+# fit's rms, silently
+@pytest.mark.parametrize("seed, ndrop", [(1003, 2), (1008, 2), (1003, 1), (1018, 1)])
+def test_dropouts_fit_as_orthogonal(seed, ndrop):
+    P = _dropout_scan(seed, ndrop)
+    r = el.fit(P)
+    o = el.fit(P, distance="orthogonal")
+    assert r.distance == "orthogonal"
+    assert r.rms <= o.rms * (1 + 1e-6), (r.rms, o.rms)
+
+
+# the same scans without dropouts that the spacing test passes: paired as before, at
+# 1.001-1.010 x the orthogonal fit's rms
+@pytest.mark.parametrize("seed", [1000, 1007, 1014])
+def test_even_scans_stay_paired(seed):
+    r = el.fit(_dropout_scan(seed, 0))
+    assert r.distance == "paired"
