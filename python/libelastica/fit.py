@@ -33,7 +33,7 @@ from ._text import LengthFormat, lengths
 from ._values import ValueEquality
 from .fit_cost import EndConditionWarning, checked_ends
 from .misfit import MisfitWarning, _verdict, misfit_summary
-from .order import curve_order, order_summary, ordering
+from .order import curve_order, order_summary, ordering, retrace_summary, run_back
 
 _MODES = {"auto": 0, "uniform": 1, "chord": 2}
 _MODE_NAMES = {v: k for k, v in _MODES.items()}
@@ -257,7 +257,8 @@ class OrderWarning(WanderWarning):
     cloud: :func:`out_of_order`): the curve passes them in their order, and may coil
     through their noise band at a lower rms than the true curve's (QA: a 30 m line's 2500
     points shuffled, fitted 1.1 km long at rms 20.6 mm against 30.0 mm); ``order="curve"``
-    fits them in curve order."""
+    fits them in curve order. Also points in order that run back over part of the curve (a
+    scan passed back and forth: :func:`libelastica.order.run_back`), named."""
 
 
 def wander_summary(gap: int, points=None, unit: str = "", numbered: bool = True,
@@ -610,6 +611,10 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
         warnings.warn(f"fit: {wander_summary(res.wander_gap)}: add a point between them to hold it "
                       "there, or bound the curve's length (constraints={'length': (lo, hi)})",
                       WanderWarning, stacklevel=2)
+    elif res.distance != _DISTANCES["paired"]:
+        back = run_back(pts, foot, res.rms)
+        if back is not None:
+            warnings.warn(f"fit: {retrace_summary(back)}", OrderWarning, stacklevel=2)
     r = _result(model, res, st, pts.copy(), dist, foot, s, constraints, idx)
     if check_ends and (constraints or fixed):
         r = checked_ends(r, fixed, dict(model=model, distance=distance, bounds=bounds, tol=tol,

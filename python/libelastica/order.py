@@ -187,6 +187,64 @@ def order_summary(o: Ordering, unit: str = "", length: Optional[LengthFormat] = 
             f"{o.given / o.along:.3g} times the {fmt(o.along, 4)} of the points in curve order")
 
 
+class Retrace(NamedTuple):
+    """:func:`run_back`'s answer: the points ``first``..``last`` (counted from 0) run back along
+    the fitted curve, from arc length ``s_first`` to ``s_last`` (< s_first)."""
+    first: int
+    last: int
+    s_first: float
+    s_last: float
+
+
+def run_back(points, foot_s, rms: float) -> Optional[Retrace]:
+    """Where points (n, 2) in order along a curve turn and run back over it (a scan passed
+    back and forth), from a fit's feet ``foot_s`` (n,) and rms: the largest fall of their
+    mean over runs of w = max(3, (n-1)/16) consecutive points (which evens out the feet's
+    jitter along the curve, about the noise, by sqrt(w)) below the highest mean before it,
+    where it exceeds 5 x rms and 2 x the feet's median step (sketched points without
+    noise); its first and last points those of the feet's highest and lowest within w of
+    the two runs' middles, at least w apart, where the points turn back: their chords to
+    the points k before and k after the first point opposite (dot < 0) at every k up to w
+    (the discrete fit's test, fit_pairing.c; feet that fall only by landing on another
+    pass of a curve that loops near itself, or on a noise cloud's jitter, are no turn: 64
+    of bench_fit.py's 441 default fits fall so, none turns). None where no mean falls so. Measured: QA18's scan passed s 0 -> 12 -> 8 -> 30
+    (188 points, noise 0.05) named as points 59 to 78, its fall 80 x rms; 60 evenly spaced
+    scans in order (200 points, spacing 0.15, noise 0.05, 0-2 dropouts), both models: no
+    fall at all."""
+    s = np.asarray(foot_s, dtype=float)
+    n = len(s)
+    w = max(3, (n - 1) // 16)
+    if n < 2 * w:
+        return None
+    c = np.concatenate(([0.0], np.cumsum(s)))
+    m = (c[w:] - c[:-w]) / w                               # m[j]: points j..j+w-1
+    fall = np.maximum.accumulate(m) - m
+    j = int(np.argmax(fall))
+    if not (fall[j] > 5.0 * rms and fall[j] > 2.0 * float(np.median(np.abs(np.diff(s))))):
+        return None
+    i = int(np.argmax(m[:j + 1]))
+    a0, b0 = max(i + w // 2 - w, 0), min(j + w // 2 + w, n - 1)
+    first = a0 + int(np.argmax(s[a0:i + w // 2 + w + 1]))
+    last = first + int(np.argmin(s[first:b0 + 1]))
+    if last - first < w or first < w or first + w >= n:
+        return None
+    k = np.arange(1, w + 1)
+    P = np.asarray(points, dtype=float)
+    back, on = P[first] - P[first - k], P[first + k] - P[first]
+    if not np.all(np.einsum("ij,ij->i", back, on) < 0.0):
+        return None
+    return Retrace(first, last, float(s[first]), float(s[last]))
+
+
+def retrace_summary(r: Retrace, unit: str = "", length: Optional[LengthFormat] = None) -> str:
+    """What a warning of points that run back says (:func:`fit`'s, the CLI's)."""
+    fmt = lengths(unit, length)
+    return (f"points {r.first} to {r.last} (counted from 0) run back along the curve, from its "
+            f"arc length {fmt(r.s_first, 4)} to {fmt(r.s_last, 4)}, and the points after them "
+            "pass there again (a scan passed back and forth?): the curve passes there once, "
+            "fitted by its distance to each point")
+
+
 def _chain_order(xy):
     """The points' nearest-neighbour chain: from the closest pair, the nearest point not yet
     in it joined at whichever end it is nearer, until all are in (O(n^2))."""

@@ -5,12 +5,14 @@ that polygon stayed there (rms 0.49, length 63 for 30, a MisfitWarning naming a 
 corner); a scan with single points missing was paired across the gaps (rms up to 1.22 x
 the orthogonal fit's, no warning). Both now fit as distance="orthogonal" does; scans at
 equal steps without dropouts stay paired."""
+import re
 import warnings
 
 import numpy as np
 import pytest
 
 import libelastica as el
+from cli_run import cli
 
 TRUTH = dict(x0=0, y0=0, phi=0.1, mu=0.04, k=0.75, q=-0.9, length=30.0)
 NOISE = 0.05
@@ -29,7 +31,8 @@ def _fit_warned(P, **kw):
 
 # s 0 -> 12, back to 8, on to 30: 188 points 0.2 apart both ways. Main: seed 3 rms 0.487,
 # length 63.2, status 0, a MisfitWarning (a corner at point 164) and a WanderWarning;
-# seed 23 rms 1.097, length 34.1, status 6 (7 of 60 seeds so)
+# seed 23 rms 1.097, length 34.1, status 6 (7 of 60 seeds so); neither named the points
+# that run back
 @pytest.mark.parametrize("seed", [3, 23])
 def test_back_and_forth_scan_fits_as_orthogonal(seed):
     s = np.r_[np.linspace(0, 12, 60), np.linspace(12, 8, 20)[1:], np.linspace(8, 30, 110)[1:]]
@@ -40,7 +43,11 @@ def test_back_and_forth_scan_fits_as_orthogonal(seed):
     assert r.status == 0 and r.distance == "orthogonal"
     assert r.rms < 1.2 * NOISE and abs(length - 30.0) < 0.5, (r.rms, length)
     assert r.rms <= o.rms * (1 + 1e-6), (r.rms, o.rms)
-    assert not warned, [str(x.message) for x in warned]
+    # said once, where it happens: the points that run back (59..78 as drawn), not a corner
+    said = [str(x.message) for x in warned]
+    assert len(said) == 1 and warned[0].category is el.OrderWarning, said
+    m = re.match(r"fit: points (\d+) to (\d+) \(counted from 0\) run back along the curve", said[0])
+    assert m and abs(int(m[1]) - 59) <= 2 and abs(int(m[2]) - 78) <= 2, said
 
 
 def _dropout_scan(seed, ndrop):
@@ -57,15 +64,29 @@ def _dropout_scan(seed, ndrop):
 @pytest.mark.parametrize("seed, ndrop", [(1003, 2), (1008, 2), (1003, 1), (1018, 1)])
 def test_dropouts_fit_as_orthogonal(seed, ndrop):
     P = _dropout_scan(seed, ndrop)
-    r = el.fit(P)
+    r, warned = _fit_warned(P)
     o = el.fit(P, distance="orthogonal")
     assert r.distance == "orthogonal"
     assert r.rms <= o.rms * (1 + 1e-6), (r.rms, o.rms)
+    assert not warned, [str(x.message) for x in warned]     # in order: nothing runs back
 
 
 # the same scans without dropouts that the spacing test passes: paired as before, at
 # 1.001-1.010 x the orthogonal fit's rms
 @pytest.mark.parametrize("seed", [1000, 1007, 1014])
 def test_even_scans_stay_paired(seed):
-    r = el.fit(_dropout_scan(seed, 0))
-    assert r.distance == "paired"
+    r, warned = _fit_warned(_dropout_scan(seed, 0))
+    assert r.distance == "paired" and not warned
+
+
+def test_cli_names_the_points_that_run_back(capsys, tmp_path):
+    """`elastica fit` says it in its own words (its fits are quiet): once, the points named."""
+    s = np.r_[np.linspace(0, 12, 60), np.linspace(12, 8, 20)[1:], np.linspace(8, 30, 110)[1:]]
+    P = _truth().points(s) + NOISE * np.random.default_rng(3).standard_normal((len(s), 2))
+    path = tmp_path / "backforth.csv"
+    np.savetxt(path, P, delimiter=",")
+    code, out, err = cli(capsys, "fit", path)
+    assert code == 0 and "fitted paired" not in out
+    said = [line for line in err.splitlines() if "run back along the curve" in line]
+    assert len(said) == 1 and re.search(r"points (5[7-9]|6[01]) to (7[6-9]|80) \(counted from 0\)", said[0]), err
+    assert "corner" not in err and "wanders" not in err, err
