@@ -157,9 +157,8 @@ double el__fit_out_length(int model, size_t n, const fit_out *r)
     return model == FIT_SMOOTH ? r->params[6] : (double)(n - 1) * r->params[2];
 }
 
-/* *res (d, fs its distances and feet) replaced by the refit alt (buf: its distances, then
- * its feet), the iterations and candidates of both counted. */
-static void replace_fit(fit_out *res, fit_out *alt, const double *buf, size_t n, double *d, double *fs)
+/* el__fit_replace: fit_internal.h */
+void el__fit_replace(fit_out *res, fit_out *alt, const double *buf, size_t n, double *d, double *fs)
 {
     memcpy(d, buf, sizeof(double) * n);
     memcpy(fs, buf + n, sizeof(double) * n);
@@ -216,7 +215,7 @@ int el__fit_follow_points(int model, const double *xy, size_t n, const el_fit_op
     if (refit_stray >= 0.0 && (refit_stray <= FIT_STRAY || refit_stray < 0.5 * stray)) {
         fo.iterations += paired.iterations;
         fo.candidates += paired.candidates;
-        replace_fit(res, &fo, buf, n, d, fs);
+        el__fit_replace(res, &fo, buf, n, d, fs);
         follows = refit_stray <= FIT_STRAY;
     }
     /* a free fit that nothing near follows as closely as it strays (the paired refit strays
@@ -252,7 +251,7 @@ int el__fit_follow_points(int model, const double *xy, size_t n, const el_fit_op
             if (other_stray >= 0.0 && other_stray <= FIT_STRAY && fo.rms < res->rms) {
                 fo.iterations += other.iterations;
                 fo.candidates += other.candidates;
-                replace_fit(res, &fo, buf, n, d, fs);
+                el__fit_replace(res, &fo, buf, n, d, fs);
             }
         }
     }
@@ -305,7 +304,7 @@ int el__fit_unpaired(int model, const double *xy, size_t n, const el_fit_options
                          : rerun_afresh(model, xy, n, opt, &alt, &buf);
     if (st != EL_ENOMEM && alt.status != -1 && alt.rms < res->rms) {
         if (slips) memcpy(alt.initial, res->initial, sizeof alt.initial);
-        replace_fit(res, &alt, buf, n, d, fs);
+        el__fit_replace(res, &alt, buf, n, d, fs);
     }
     free(buf);
     return st == EL_ENOMEM ? st : res->status;
@@ -329,7 +328,7 @@ int el__fit_fallback(int model, const double *xy, size_t n, const el_fit_options
     const int lower = !(flags & FIT_RUN_ROWS) && (st == EL_ENOCONV || st == EL_EMAXITER) && alt.f < res->f;
     if (st == EL_OK || lower) {
         memcpy(alt.initial, res->initial, sizeof alt.initial);
-        replace_fit(res, &alt, buf, n, d, fs);
+        el__fit_replace(res, &alt, buf, n, d, fs);
     } else if (st != EL_ENOMEM) {
         st = res->status;
     }
@@ -364,7 +363,7 @@ int el__fit_ends_held(int model, const double *xy, size_t n, const el_fit_option
     /* lower, or where the first fit gave none that meets the constraints (an uncertified one
      * that does is kept when lower: it is the better fit, only its certificate is missing) */
     const int none = res->status != EL_OK && res->status != EL_ENOCONV && res->status != EL_EMAXITER;
-    if (st == EL_OK && (none || alt.rms < res->rms)) replace_fit(res, &alt, buf, n, d, fs);
+    if (st == EL_OK && (none || alt.rms < res->rms)) el__fit_replace(res, &alt, buf, n, d, fs);
     free(buf);
     return st == EL_ENOMEM ? st : res->status;
 }
@@ -665,7 +664,7 @@ static int lowest_that_follows(const double *xy, size_t n, const el_fit_options 
     if (st != EL_ENOMEM && best.status != -1 &&
         best.rms <= res->rms + (coils ? FIT_COIL_TOL : FIT_SKETCH_TOL) * norm[2]) {
         best.iterations = iters;
-        replace_fit(res, &best, buf + 2 * n, n, d, fs);
+        el__fit_replace(res, &best, buf + 2 * n, n, d, fs);
         *replaced = 1;
     }
     free(buf);
