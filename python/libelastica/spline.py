@@ -345,7 +345,10 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
     tension that solves these points (the library's search, el_spline_result's largest: a
     few solves below the one asked, ~0.3-0.5 s) and why
     none above it: the modulus k of the nearly straight runs' pieces is then within
-    ~exp(-sqrt(tension / 2) span) of 1, which a double resolves only in steps of ~4.4e-16);
+    ~exp(-sqrt(tension / 2) span) of 1, which a double resolves only in steps of ~4.4e-16;
+    with G2 ends by tension, its ``g2_met`` (below, above) names the G2 battens met nearest
+    the tension asked, each (tension, length) or None (el_spline_result's ladder, reach),
+    as its message does);
     by length, :class:`LengthRangeError`
     (a NotConvergedError) where no spline of the length was reached though splines were
     met following the family of splines through the points (mostly a length beyond
@@ -526,6 +529,8 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
                 + why + hint)
             err.spline = ElasticSpline(res, pts, closed) if res.npieces else None
             err.largest_tension = largest
+            err.g2_met = tuple(m if m[1] > 0.0 and length is None and sigma > 0.0 else None
+                               for m in g2)
             raise err
         if st == lib.EL_EINVAL:
             why = _out_of_range(pts, chords)

@@ -621,8 +621,7 @@ def tension_mode_and_g2_reach(doc, sk, right, left):
     key(panel.tension.lineEdit(), QtCore.Qt.Key_Tab)
     G.wait(900)
     import re
-    found = re.search("largest tension a G2 batten was found at is about ([0-9.e-]+) 1/mm",
-                      b.Status)
+    found = re.search("the solver reached battens of tension up to ([0-9.e-]+) 1/mm", b.Status)
     G.check(b.Status.startswith("error: no G2 blend at tension 0.003 1/mm") and found,
             f"G2 beyond its reach: the largest tension found said ({b.Status})")
     Gui.SendMsgToActiveView("ViewTop")

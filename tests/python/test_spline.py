@@ -265,6 +265,9 @@ def test_g2_blend_without_the_tension_says_which_it_met(sigma):
     assert 1.6e-3 < below < 1.75e-3 and 200.0 < l_below < 215.0
     assert 0.023 <= above <= 0.074 and l_above > 90.0 and m.group(5) == f"{sigma:g}"
     assert "or a length" in msg and "tension x (longest span)^2" not in msg
+    # the same figures, for a program to say them in its own units (FreeCAD's workbench)
+    (t0, L0), (t1, L1) = exc.value.g2_met
+    assert (f"{t0:.3g}", f"{L0:.5g}", f"{t1:.3g}", f"{L1:.5g}") == m.group(1, 2, 3, 4)
 
 
 @pytest.mark.parametrize("height", [5.0, 20.0, -50.0])

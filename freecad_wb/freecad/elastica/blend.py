@@ -17,6 +17,7 @@ from .geometry import (binding_module, edge_end, el, global_element, is_sketch,
                        nearest_parameter, np, part_bspline, plane_coordinates, plane_curvature,
                        to_3d)
 from .links import followed_edge
+from .spline import g2_met_hint
 from .units import (floor_digits, length_mark, length_text, length_unit_mark, per_area_mark,
                     per_length, per_length_mark, reach_mark, tension_mark, tension_or_zero,
                     tension_text, tension_unit_mark)
@@ -258,33 +259,11 @@ def g2_blend(r, i, mode, value, tol, degree):
         dist = float(n.linalg.norm(a1 - a0))
         asked = (f"of length {length_mark(value, 6)}" if "length" in kw else
                  f"at tension {tension_mark(kw['tension'], dist, G2_TENSION_DIGITS)}")
-        hint = "pick another tension or length, or G1"
-        try:
-            free = e.elastic_spline(n.vstack([a0, a1]), **ends).length
-            hint = (f"the free G2 batten (tension 0) is {length_mark(free, 4)} long; pulled it "
-                    "gets at "
-                    "most 1-2 % shorter, pushed longer: try a length from there, or G1"
-                    if "length" in kw else
-                    "the free G2 batten (tension 0) exists: try a lower tension, or G1")
-        except (ValueError, ArithmeticError, RuntimeError):
-            if "length" in kw:   # QA17 M1: which lengths do give one, not a guess
-                hint = g2_lengths_hint(pts, ends, dist)
-        reach = g2_tension_reach(pts, ends) if "tension" in kw else None
-        if reach is not None and reach > kw.get("tension", 0.0):
-            # below the reach the solver's paths missed one: QA16's arc of radius 18-23 mm
-            # into a line has a free G2 batten (230 mm at 20 mm, found by an independent
-            # shooting solve) that bending the G1 blend does not reach past a fold; "(there
-            # can be gaps below it)" read as if the tension asked should work
-            hint = (f"G2 battens were found at tensions up to about "
-                    f"{reach_mark(reach, G2_TENSION_DIGITS)}, but none at this one: the "
-                    "solver bends the G1 blend into G2 and can miss a batten that exists; "
-                    "try another tension up to that, a length, or G1")
-        elif reach is not None and reach > 0.0:
-            # rounded down in the unit shown: typed back, it is within reach
-            hint += (f"; the largest tension a G2 batten was found at is about "
-                     f"{reach_mark(reach, G2_TENSION_DIGITS)} "
-                     "(there can be gaps below it): held by its guide ducks, a G2 blend pulled "
-                     "does not straighten as G1 does, and beyond some tension there is none")
+        # by tension, the G2 battens the library met nearest it (the binding's g2_met)
+        hint = g2_met_hint(getattr(exc, "g2_met", None), lambda t: g2_solves(pts, ends, t),
+                           "give a tension it reached, a length, or G1") \
+            if "tension" in kw else None
+        hint = hint or g2_failure_hint(pts, ends, kw, dist)
         # not the exception's words about the spline it keeps: nothing is returned here
         solve = "the batten's solve did not converge" if isinstance(exc, e.NotConvergedError) \
             else f"the batten's solve: {str(exc).replace('elastic_spline: ', '', 1)}"
@@ -295,6 +274,51 @@ def g2_blend(r, i, mode, value, tol, degree):
         return sp, sp.to_bspline(tol, degree), note
     except (ValueError, ArithmeticError, RuntimeError) as exc:
         raise InputProblem(f"B-spline failed: {exc}") from None
+
+
+def g2_solves(pts, ends, tension):
+    """Whether a G2 batten between the two points ``pts`` with ``ends`` (el.elastic_spline's
+    start/end) is solved by ``tension``, as a blend with no previous solution is."""
+    try:
+        return el().elastic_spline(pts, **ends, tension=tension) is not None
+    except (ValueError, ArithmeticError, RuntimeError):
+        return False
+
+
+def g2_failure_hint(pts, ends, kw, dist):
+    """What a G2 blend between ``pts`` with ``ends`` that failed by ``kw`` (el.elastic_spline's
+    tension= or length=; ``dist`` between the ends) says to try, where the library names no
+    G2 batten met nearest the tension: the free G2 batten's length, the lengths that solve
+    (g2_lengths_hint) or the highest tension found (g2_tension_reach)."""
+    n, e = np(), el()
+    hint = "pick another tension or length, or G1"
+    try:
+        free = e.elastic_spline(n.vstack(pts), **ends).length
+        hint = (f"the free G2 batten (tension 0) is {length_mark(free, 4)} long; pulled it "
+                "gets at "
+                "most 1-2 % shorter, pushed longer: try a length from there, or G1"
+                if "length" in kw else
+                "the free G2 batten (tension 0) exists: try a lower tension, or G1")
+    except (ValueError, ArithmeticError, RuntimeError):
+        if "length" in kw:   # QA17 M1: which lengths do give one, not a guess
+            hint = g2_lengths_hint(pts, ends, dist)
+    reach = g2_tension_reach(pts, ends) if "tension" in kw else None
+    if reach is not None and reach > kw.get("tension", 0.0):
+        # below the reach the solver's paths missed one: QA16's arc of radius 18-23 mm
+        # into a line has a free G2 batten (230 mm at 20 mm, found by an independent
+        # shooting solve) that bending the G1 blend does not reach past a fold; "(there
+        # can be gaps below it)" read as if the tension asked should work
+        hint = (f"G2 battens were found at tensions up to about "
+                f"{reach_mark(reach, G2_TENSION_DIGITS)}, but none at this one: the "
+                "solver bends the G1 blend into G2 and can miss a batten that exists; "
+                "try another tension up to that, a length, or G1")
+    elif reach is not None and reach > 0.0:
+        # rounded down in the unit shown: typed back, it is within reach
+        hint += (f"; the largest tension a G2 batten was found at is about "
+                 f"{reach_mark(reach, G2_TENSION_DIGITS)} "
+                 "(there can be gaps below it): held by its guide ducks, a G2 blend pulled "
+                 "does not straighten as G1 does, and beyond some tension there is none")
+    return hint
 
 
 # Lengths (times the distance between the ends) the G2 batten is solved for when none is

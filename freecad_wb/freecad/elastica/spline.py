@@ -18,7 +18,8 @@ from . import defaults
 from .geometry import (binding_module, edge_end, el, ends_meet, nearest_parameter, np, part_bspline,
                        plane_coordinates, plane_curvature, to_3d)
 from .links import followed_edge, followed_reader
-from .units import coordinate_mark, length_mark, length_unit_mark, say, tension_mark
+from .units import (ceil_digits, coordinate_mark, floor_digits, length_mark, length_unit_mark,
+                    reach_mark, say, tension_mark)
 from .proxy import (FeatureProxy, InputProblem, add_edge_end, add_enum, add_geometry_index,
                     add_length, add_link, add_property, check_degree, check_number,
                     check_tolerance, edge_end_choice, new_feature, read_only, set_said)
@@ -89,6 +90,36 @@ def duck_forces(sp):
     return n.delete(n.vstack([-f[:1], f[:-1] - f[1:], f[-1:]]), sp.guide_pieces, axis=0)
 
 
+# Significant digits a tension of a G2 batten met is said to: the first that, typed back,
+# solves (the arc of radius 20 mm into a line, by tension 0.003: 0.00171 as the binding
+# says it does not; 0.001707 does)
+G2_MET_DIGITS = (4, 6)
+
+
+def g2_met_hint(met, solves, advice="give a tension it reached, or a length"):
+    """Where no G2 batten was found at the tension asked: the library's G2 battens met
+    nearest it (el.NotConvergedError's g2_met: below, above, each (tension, length) or
+    None), each tension rounded down (below) or up (above) to the first of G2_MET_DIGITS
+    at which ``solves(tension)``, with its length, then ``advice``; None where it met none
+    of tension > 0."""
+    said = []
+    for j, m in enumerate(met or ()):
+        if m is None or not m[0] > 0.0:     # a negative tension cannot be asked of a G2 end
+            continue
+        rounded = ceil_digits if j else floor_digits
+        for digits in G2_MET_DIGITS:
+            tension = rounded(m[0], digits)
+            if solves(tension):
+                break
+        said.append(f"{'from' if j else 'up to'} {reach_mark(tension, digits, up=j == 1)} "
+                    f"(length {length_mark(m[1], 4)})")
+    if not said:
+        return None
+    return ("with G2 ends the solver reached battens of tension " + " and ".join(said) +
+            ", none at this one" + (" (between such tensions there may be none)"
+                                    if len(said) == 2 else "") + f": {advice}")
+
+
 def _tangent_only(spec):
     return spec["tangent"] if isinstance(spec, dict) else spec
 
@@ -96,15 +127,26 @@ def _tangent_only(spec):
 def _solve(xy, mode, value, closed, start, end):
     """el.elastic_spline with the accepted-residual rule; NoSpline when no batten passes the
     points at this tension or length, InputProblem for the rest.
-    When a spline with G2 ends fails, the same with tangent ends is tried: if that
-    one exists, the message blames the G2 end (its span found no tension)."""
+    When a spline with G2 ends fails by tension, the message names the G2 battens the
+    library met nearest it (g2_met_hint); where it met none, the same with tangent ends is
+    tried: if that one exists, the message blames the G2 end (its span found no tension)."""
     e = el()
     kw = {"tension": value} if mode == "tension" else {"length": value}
-    largest = None
-    try:
+    largest = met = None
+
+    def solve(**by):
         with warnings.catch_warnings():   # a looping spline: noted by spline_core
             warnings.simplefilter("ignore", e.LoopWarning)
-            return e.elastic_spline(xy, start=start, end=end, closed=closed, **kw), ""
+            return e.elastic_spline(xy, start=start, end=end, closed=closed, **by)
+
+    def solves(tension):
+        try:
+            return solve(tension=tension) is not None
+        except (ValueError, ArithmeticError, RuntimeError):
+            return False
+
+    try:
+        return solve(**kw), ""
     except e.NotConvergedError as exc:
         sp = getattr(exc, "spline", None)
         if sp is not None and sp.residual <= ACCEPTED_RESIDUAL:
@@ -112,9 +154,12 @@ def _solve(xy, mode, value, closed, start, end):
                         "or a very high tension)")
         failure = "no equilibrium found: the solver did not converge; try another tension or length"
         largest = getattr(exc, "largest_tension", None)
-        if largest:   # beyond what a double resolves (the binding's search, elastica.h Accuracy)
-            span = max(math.hypot(b[0] - a[0], b[1] - a[1])
-                       for a, b in zip(xy, list(xy[1:]) + (list(xy[:1]) if closed else [])))
+        span = max(math.hypot(b[0] - a[0], b[1] - a[1])
+                   for a, b in zip(xy, list(xy[1:]) + (list(xy[:1]) if closed else [])))
+        met = None if largest else g2_met_hint(getattr(exc, "g2_met", None), solves)
+        if met:       # G2 ends: the tensions of the G2 battens met (the binding's g2_met)
+            failure = f"no equilibrium found at Tension = {tension_mark(value, span, 6)}: {met}"
+        elif largest:   # beyond what a double resolves (the binding's search, elastica.h Accuracy)
             failure = (f"no equilibrium found at Tension = {tension_mark(value, span, 6)}: "
                        f"the largest tension that solves these points is about "
                        f"{tension_mark(largest, span, 3)}; above it the nearly straight spans "
@@ -139,7 +184,7 @@ def _solve(xy, mode, value, closed, start, end):
         raise InputProblem(f"elastic spline failed: {_library_message(exc)}") from None
     # a G2 batten with a largest tension exists below it: its end is not what fails (and the
     # tangent batten's solve would search its own largest, as long again: QA16 S1)
-    if any(isinstance(s, dict) for s in (start, end)) and not largest:
+    if any(isinstance(s, dict) for s in (start, end)) and not largest and not met:
         try:
             e.elastic_spline(xy, start=_tangent_only(start), end=_tangent_only(end),
                              closed=closed, **kw)

@@ -146,7 +146,7 @@ def unit_names(text):
 # A text a recompute writes (Status, Warnings) may hold its figures as marks: say() writes
 # each in the schema of now, so a panel opened after a schema change says the stored text
 # again in the new one without a recompute (proxy.said keeps the marked text).
-_MARK = re.compile("\x01([LKkTNUuwRMmEe])([^\x02]*)\x02")
+_MARK = re.compile("\x01([LKkTNUuwRrMmEe])([^\x02]*)\x02")
 _RANGE = re.compile("\x01([em])([^\x02]*)\x02 to \x01([EM])([^\x02]*)\x02")
 # a length written '<number> mm' (the library's messages take a unit to write after their
 # figures): not '1/mm', 'mm^2', 'N mm^2'
@@ -188,10 +188,11 @@ def tension_unit_mark():
     return "\x01U\x02"
 
 
-def reach_mark(sigma, digits):
-    """A tension (1/mm^2) that can be typed back: rounded DOWN to ``digits`` in the unit
-    say() writes it in, with the unit (a reach typed back stays within reach)."""
-    return f"\x01R{float(sigma)!r}|{digits}\x02"
+def reach_mark(sigma, digits, up=False):
+    """A tension (1/mm^2) that can be typed back: rounded DOWN (``up``: up, the least of a
+    range above) to ``digits`` in the unit say() writes it in, with the unit (a reach typed
+    back stays within reach)."""
+    return f"\x01{'r' if up else 'R'}{float(sigma)!r}|{digits}\x02"
 
 
 def floor_digits(x, digits):
@@ -199,6 +200,13 @@ def floor_digits(x, digits):
     q = 10.0 ** (math.floor(math.log10(x)) - digits + 1)
     y = float(f"{math.floor(x / q) * q:.{digits}g}")
     return y if y <= x else float(f"{(math.floor(x / q) - 1) * q:.{digits}g}")
+
+
+def ceil_digits(x, digits):
+    """x > 0 rounded UP to ``digits`` significant digits (the float of its %g text)."""
+    q = 10.0 ** (math.floor(math.log10(x)) - digits + 1)
+    y = float(f"{math.ceil(x / q) * q:.{digits}g}")
+    return y if y >= x else float(f"{(math.ceil(x / q) + 1) * q:.{digits}g}")
 
 
 def mm_marked(text):
@@ -300,9 +308,10 @@ def _said(match, figures=False):
         return _in_length_unit(args[0], kind == "M")
     if kind in "Ee":
         return _exact(args, kind == "E", figures=figures)
-    if kind == "R":
+    if kind in "Rr":
         per, unit = tension_unit()
-        shown = float(args[0]) if per == 1.0 else floor_digits(float(args[0]) * per, int(args[1]))
+        rounded = floor_digits if kind == "R" else ceil_digits
+        shown = float(args[0]) if per == 1.0 else rounded(float(args[0]) * per, int(args[1]))
         return f"{shown:.{int(args[1])}g} {unit}"
     return tension_unit()[1]
 
