@@ -25,7 +25,7 @@ gui_delete_during_panel.png and gui_keep_needs_copy.png; gui_blend_panel.py's
 gui_blend_picked_tops.png, gui_blend_ends_by_length.png, gui_blend_bound.png,
 gui_blend_imperial.png and the others its docstring names; gui_schema_texts.py's
 gui_ellblend_loop_imperial.png, gui_fit_result_imperial.png; gui_fc_behaviour.py's, which
-its docstring names. The outcome goes
+its docstring names; gui_recording.py's gui_recorded_blend.png. The outcome goes
 to gui_smoke.result (first line PASS or FAIL); FreeCAD is then ended with os._exit
 because its exit status says nothing about a script. Only APIs present in FreeCAD
 0.20 and 1.0 are used (PySide through FreeCAD's shim)."""
@@ -1095,7 +1095,7 @@ def run():
     page.saveSettings()
     check(defaults() == old, "preference page restores")
 
-    # the commands were recorded (Gui.doCommandGui): they show in the Python console
+    # the commands were recorded (Gui.doCommand): they show in the Python console
     from PySide import QtGui
     consoles = [w for w in Gui.getMainWindow().findChildren(QtGui.QPlainTextEdit)
                 if "elastica_blend.make" in w.toPlainText()]
@@ -1140,6 +1140,10 @@ def run():
     # typing, wrong selections, the Model box, a sketch double-clicked: as FreeCAD's own
     import gui_fc_behaviour
     gui_fc_behaviour.run_all(sys.modules[__name__])
+
+    # a panel's OK records the properties its edit changed: replayed, the same blend
+    import gui_recording
+    gui_recording.run_all(sys.modules[__name__])
 
 
 def main():

@@ -495,6 +495,7 @@ class BlendProxy(FeatureProxy):
     kind = "Blend"
     followed_links = {"Edge1": "SketchGeometry1", "Edge2": "SketchGeometry2"}
     note_props = ("Mode", "Length")     # solved for a length where no free batten joins
+    SET_AFTER = ("Solution",)           # recorded last: an edit of the problem resets it
 
     def setup(self, obj):
         tol, _, _ = defaults()

@@ -2,8 +2,9 @@
 the feature's core (so bad input leaves the document untouched: a script gets a
 message, a toolbar command FreeCAD's own modal 'Wrong selection' box; a command whose
 selection cannot fit is greyed out), create the feature through
-``Gui.doCommandGui`` (recorded in the Python console and macros) inside an undo
-transaction, and open its task panel, whose OK commits the transaction and Cancel
+``Gui.doCommand`` (recorded in the Python console and macros) inside an undo
+transaction, and open its task panel, whose OK records the properties the edit changed
+and commits the transaction, and Cancel
 aborts it."""
 from __future__ import annotations
 
@@ -86,10 +87,11 @@ def selection_picks():
 
 
 def _run(code):
-    """Execute ``code`` recorded as a GUI command (run directly without the GUI);
-    return the last created object."""
+    """Execute ``code`` recorded as a document command (run directly without the GUI):
+    in the Python console and a recorded macro (Gui.doCommandGui's lines are comments
+    there: a macro replayed made nothing); return the last created object."""
     if App.GuiUp:
-        Gui.doCommandGui(code)
+        Gui.doCommand(code)
     else:
         exec(code, {"App": App, "FreeCAD": App})
     return getattr(App.ActiveDocument, "ActiveObject", None)
@@ -465,6 +467,11 @@ COMMANDS = {"Elastica_Fit": FitCommand, "Elastica_FitCsv": FitCsvCommand,
 
 
 def register():
+    # FreeCAD names a command's module after the file that calls Gui.addCommand and writes
+    # 'import <it>' into a macro recorded as the command runs: 'import commands', no module
+    # outside this package, so a recorded macro stopped at its first line; added by code
+    # named FreeCADGui, the macro imports FreeCADGui
+    add = compile("Gui.addCommand(name, command)", "FreeCADGui", "exec")
     for name, cls in COMMANDS.items():
-        Gui.addCommand(name, cls())
+        exec(add, {"Gui": Gui, "name": name, "command": cls()})
     return list(COMMANDS)

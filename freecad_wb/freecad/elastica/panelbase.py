@@ -14,6 +14,7 @@ from . import icon
 from .geometry import is_sketch, sketch_curves
 from .proxy import (EDGE_ENDS, InputProblem, abort_transaction, keep_note, kept_note,
                     note_changes, note_values, said as said_kept)
+from .recording import edit_lines, edit_state
 from .spinboxes import DecadeBox, NumberBox
 from .units import length_text, say, unit_names
 
@@ -132,6 +133,7 @@ class Panel:
 
     def __init__(self, obj, created=True, note=""):
         self.obj = obj
+        self.opened_with = edit_state(obj)      # OK records what the edit changed
         # why the command chose what it did (warning line): given by the command, or kept
         # with the feature while its values hold (proxy.keep_note)
         self._note, self._note_for = note or kept_note(obj), note_values(obj)
@@ -624,12 +626,22 @@ class Panel:
         if not code and not self._keep:   # refresh_enabled keeps this from happening
             self.keep.setChecked(True)
         self.closing = True
-        if code or not self._keep:
+        # the properties the edit changed, set again by the lines recorded (Gui.doCommand:
+        # a macro replays them; doCommandGui's are comments there), as FreeCAD's own panels
+        # do at OK; the view's as Gui lines (comments in a macro, as FreeCAD records them)
+        edits, view_edits = edit_lines(self.obj, self.opened_with)
+        if code or not self._keep or edits:
             self.hold()
+        for line in edits:
+            Gui.doCommand(line)
+        if edits:       # solved before a copy of it is made, in a macro replayed too
+            Gui.doCommand(f"App.getDocument({self.doc.Name!r}).recompute()")
+        for line in view_edits:
+            Gui.doCommandGui(line)
         if code:
-            Gui.doCommandGui(code)
+            Gui.doCommand(code)
         if not self._keep:
-            Gui.doCommandGui(f"App.getDocument({self.doc.Name!r}).removeObject({self.obj.Name!r})")
+            Gui.doCommand(f"App.getDocument({self.doc.Name!r}).removeObject({self.obj.Name!r})")
         self.doc.recompute()
         self.doc.commitTransaction()
         self._close()
