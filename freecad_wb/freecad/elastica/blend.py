@@ -17,7 +17,7 @@ from .geometry import (binding_module, edge_end, el, global_element, is_sketch,
                        nearest_parameter, np, part_bspline, plane_coordinates, plane_curvature,
                        to_3d)
 from .links import followed_edge
-from .spline import g2_met_hint
+from .spline import g2_met_hint, g2_solves
 from .units import (floor_digits, length_mark, length_text, length_unit_mark, per_area_mark,
                     per_length, per_length_mark, reach_mark, tension_mark, tension_or_zero,
                     tension_text, tension_unit_mark)
@@ -260,7 +260,8 @@ def g2_blend(r, i, mode, value, tol, degree):
         asked = (f"of length {length_mark(value, 6)}" if "length" in kw else
                  f"at tension {tension_mark(kw['tension'], dist, G2_TENSION_DIGITS)}")
         # by tension, the G2 battens the library met nearest it (the binding's g2_met)
-        hint = g2_met_hint(getattr(exc, "g2_met", None), lambda t: g2_solves(pts, ends, t),
+        hint = g2_met_hint(getattr(exc, "g2_met", None),
+                           lambda t: e.elastic_spline(pts, **ends, tension=t),
                            "give a tension it reached, a length, or G1") \
             if "tension" in kw else None
         hint = hint or g2_failure_hint(pts, ends, kw, dist)
@@ -274,15 +275,6 @@ def g2_blend(r, i, mode, value, tol, degree):
         return sp, sp.to_bspline(tol, degree), note
     except (ValueError, ArithmeticError, RuntimeError) as exc:
         raise InputProblem(f"B-spline failed: {exc}") from None
-
-
-def g2_solves(pts, ends, tension):
-    """Whether a G2 batten between the two points ``pts`` with ``ends`` (el.elastic_spline's
-    start/end) is solved by ``tension``, as a blend with no previous solution is."""
-    try:
-        return el().elastic_spline(pts, **ends, tension=tension) is not None
-    except (ValueError, ArithmeticError, RuntimeError):
-        return False
 
 
 def g2_failure_hint(pts, ends, kw, dist):
@@ -372,17 +364,18 @@ def g2_tension_reach(pts, ends):
     found = [floor_digits(sigma, G2_TENSION_DIGITS) for _, sigma in
              g2_by_length(pts, ends, [m * dist for m in G2_REACH_MULTIPLES]) if sigma > 0.0]
     tried = set()
+
+    def solve(tension):
+        return e.elastic_spline(pts, **ends, tension=tension)
+
     for sigma in sorted(found, reverse=True):
         for digits in range(G2_TENSION_DIGITS, 1, -1):   # rounded down further if none there
             t = floor_digits(sigma, digits)
             if t in tried:
                 continue
             tried.add(t)
-            try:
-                e.elastic_spline(pts, **ends, tension=t)
+            if g2_solves(solve, t):
                 return t
-            except (ValueError, ArithmeticError, RuntimeError):
-                continue
     return None
 
 

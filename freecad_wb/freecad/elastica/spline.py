@@ -96,12 +96,20 @@ def duck_forces(sp):
 G2_MET_DIGITS = (4, 6)
 
 
-def g2_met_hint(met, solves, advice="give a tension it reached, or a length"):
+def g2_solves(solve, tension):
+    """Whether ``solve(tension)`` (an el.elastic_spline by that tension) gives a batten."""
+    try:
+        return solve(tension) is not None
+    except (ValueError, ArithmeticError, RuntimeError):
+        return False
+
+
+def g2_met_hint(met, solve, advice="give a tension it reached, or a length"):
     """Where no G2 batten was found at the tension asked: the library's G2 battens met
     nearest it (el.NotConvergedError's g2_met: below, above, each (tension, length) or
     None), each tension rounded down (below) or up (above) to the first of G2_MET_DIGITS
-    at which ``solves(tension)``, with its length, then ``advice``; None where it met none
-    of tension > 0."""
+    that ``solve(tension)`` solves (g2_solves), with its length, then ``advice``; None
+    where it met none of tension > 0."""
     said = []
     for j, m in enumerate(met or ()):
         if m is None or not m[0] > 0.0:     # a negative tension cannot be asked of a G2 end
@@ -109,7 +117,7 @@ def g2_met_hint(met, solves, advice="give a tension it reached, or a length"):
         rounded = ceil_digits if j else floor_digits
         for digits in G2_MET_DIGITS:
             tension = rounded(m[0], digits)
-            if solves(tension):
+            if g2_solves(solve, tension):
                 break
         said.append(f"{'from' if j else 'up to'} {reach_mark(tension, digits, up=j == 1)} "
                     f"(length {length_mark(m[1], 4)})")
@@ -139,12 +147,6 @@ def _solve(xy, mode, value, closed, start, end):
             warnings.simplefilter("ignore", e.LoopWarning)
             return e.elastic_spline(xy, start=start, end=end, closed=closed, **by)
 
-    def solves(tension):
-        try:
-            return solve(tension=tension) is not None
-        except (ValueError, ArithmeticError, RuntimeError):
-            return False
-
     try:
         return solve(**kw), ""
     except e.NotConvergedError as exc:
@@ -154,9 +156,11 @@ def _solve(xy, mode, value, closed, start, end):
                         "or a very high tension)")
         failure = "no equilibrium found: the solver did not converge; try another tension or length"
         largest = getattr(exc, "largest_tension", None)
-        span = max(math.hypot(b[0] - a[0], b[1] - a[1])
-                   for a, b in zip(xy, list(xy[1:]) + (list(xy[:1]) if closed else [])))
-        met = None if largest else g2_met_hint(getattr(exc, "g2_met", None), solves)
+        met = None if largest else g2_met_hint(getattr(exc, "g2_met", None),
+                                                 lambda t: solve(tension=t))
+        if met or largest:
+            span = max(math.hypot(b[0] - a[0], b[1] - a[1])
+                       for a, b in zip(xy, list(xy[1:]) + (list(xy[:1]) if closed else [])))
         if met:       # G2 ends: the tensions of the G2 battens met (the binding's g2_met)
             failure = f"no equilibrium found at Tension = {tension_mark(value, span, 6)}: {met}"
         elif largest:   # beyond what a double resolves (the binding's search, elastica.h Accuracy)
