@@ -9,7 +9,7 @@ import math
 import FreeCAD as App
 import Part
 
-from .geometry import nearest_parameter, np, plane_curvature
+from .geometry import confusion, nearest_parameter, np, plane_curvature
 from .proxy import InputProblem, check_number
 
 # the library's constraint names -> the fields that set them (messages name the field)
@@ -92,7 +92,7 @@ def end_constraints(xy, plane, pin_start=False, pin_end=False, start_edge=None, 
                                "Tangent only (its tangent nearest the points' end)")
         u = edge.LastParameter if at_end else edge.FirstParameter
         p = plane.inverse().multVec(edge.valueAt(u))
-        if abs(p.z) > max(tol, 1e-7 + 1e-9 * extent):   # 1e-7 mm: FreeCAD's Confusion
+        if abs(p.z) > max(tol, confusion(extent)):
             raise InputProblem(f"the {where} edge's end lies {abs(p.z):.3g} mm off the fit plane, "
                                f"more than the Tolerance {tol:g} mm: no {join} join in it "
                                "(Tangent only follows its direction)")

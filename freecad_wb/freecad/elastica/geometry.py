@@ -35,17 +35,23 @@ def polyline_length(xy):
     return float(np().sum(np().hypot(*np().diff(xy, axis=0).T)))
 
 
+def confusion(extent):
+    """The distance (mm) below which points of geometry ``extent`` mm across are one point:
+    FreeCAD's Precision.confusion() (1e-7 mm: a closed sketch's ends meet to it, Part closes
+    a wire through them) plus 1e-9 of the extent (never less than points coincide to,
+    ellblend's pairs)."""
+    return Part.Precision.confusion() + 1e-9 * extent
+
+
 def ends_meet(points):
-    """Whether three or more 3D points (mm) end where they start: the last within FreeCAD's
-    Precision.confusion() (1e-7 mm: a closed sketch's ends meet to it, Part closes a wire
-    through them) of the first, plus 1e-9 of their extent (as fit_ends' and sketch_curves'
-    Confusion: never less than points coincide to, ellblend's pairs)."""
+    """Whether three or more 3D points (mm) end where they start: the last within
+    confusion() of their extent of the first."""
     if len(points) < 3:
         return False
     box = App.BoundBox()
     for p in points:
         box.add(p)
-    return (points[0] - points[-1]).Length <= Part.Precision.confusion() + 1e-9 * box.DiagonalLength
+    return (points[0] - points[-1]).Length <= confusion(box.DiagonalLength)
 
 
 def is_sketch(obj):
@@ -283,7 +289,7 @@ def sketch_curves(feature, sketch):
     # a B-spline lies in the hull of its poles: all of them in the plane put it there
     extent = max((p - poles[0]).Length for p in poles)
     off = max(abs(p.z) for p in poles)
-    if off > 1e-7 + 1e-9 * extent:          # 1e-7 mm: FreeCAD's Confusion
+    if off > confusion(extent):
         raise InputProblem(f"{sketch.Label} does not lie in the plane of {feature.Label} (its "
                            f"curve reaches {off:.3g} mm off the sketch's plane): copy it into a "
                            "sketch in the curve's plane, or a new one")
