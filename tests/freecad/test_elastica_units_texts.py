@@ -8,6 +8,7 @@ written without their unit followed by it."""
 import re
 import sys
 import unittest
+from decimal import Decimal
 
 import FreeCAD as App
 import numpy as np
@@ -62,6 +63,24 @@ class UnitsTextsTest(unittest.TestCase):
         text = reported(check_tolerance, 1.2345678e-10)
         self.assertTrue(text.startswith(f"Tolerance = {1.2345678e-10 / 25.4:.6g} in is not "
                                         f"usable: it must be >= {1e-9 / 25.4:.3g} in ("), text)
+
+    def test_rounding_to_digits_brackets_the_value(self):
+        """floor_digits(x, d) <= x <= ceil_digits(x, d), each of at most d significant
+        digits (its %g text is itself), one unit of the d-th digit apart at most; for
+        values of 1e-12 .. 1e12 of either sign and reaches typed back (0.001707, 0.03046)."""
+        rng = np.random.default_rng(5)
+        xs = [float(x) for x in 10.0 ** rng.uniform(-12, 12, 400)]
+        xs += [0.001707, 0.03046, 0.0017068, 1.0, 9.999999999, 12345.0, 0.1 + 0.2]
+        for x in xs + [-x for x in xs]:
+            for d in range(1, 9):
+                lo, hi = U.floor_digits(x, d), U.ceil_digits(x, d)
+                what = (x, d, lo, hi)
+                self.assertTrue(lo <= x <= hi, what)
+                for y in (lo, hi):
+                    self.assertEqual(float(f"{y:.{d}g}"), y, what)
+                unit = Decimal(10) ** (Decimal(abs(x)).adjusted() - d + 1)
+                self.assertLessEqual(Decimal(hi) - Decimal(lo),   # floats of decimals: 1e-15
+                                     unit + Decimal(abs(x)) * Decimal("1e-15"), what)
 
     def test_result_line_lengths_are_plain_decimals(self):
         """A result line's length (length_text: 'B-spline within ...') in the unit FreeCAD

@@ -196,17 +196,15 @@ def reach_mark(sigma, digits, up=False):
 
 
 def floor_digits(x, digits):
-    """x > 0 rounded DOWN to ``digits`` significant digits (the float of its %g text)."""
-    q = 10.0 ** (math.floor(math.log10(x)) - digits + 1)
+    """x != 0 rounded DOWN to ``digits`` significant digits (the float of its %g text)."""
+    q = 10.0 ** (math.floor(math.log10(abs(x))) - digits + 1)
     y = float(f"{math.floor(x / q) * q:.{digits}g}")
     return y if y <= x else float(f"{(math.floor(x / q) - 1) * q:.{digits}g}")
 
 
 def ceil_digits(x, digits):
-    """x > 0 rounded UP to ``digits`` significant digits (the float of its %g text)."""
-    q = 10.0 ** (math.floor(math.log10(x)) - digits + 1)
-    y = float(f"{math.ceil(x / q) * q:.{digits}g}")
-    return y if y >= x else float(f"{(math.ceil(x / q) + 1) * q:.{digits}g}")
+    """x != 0 rounded UP to ``digits`` significant digits (the float of its %g text)."""
+    return -floor_digits(-x, digits)
 
 
 def mm_marked(text):
