@@ -13,6 +13,7 @@ import FreeCADGui as Gui
 
 from . import defaults, icon, library_problem
 from .proxy import InputProblem, abort_transaction, keep_note
+from .recording import _ref
 from .units import say
 
 MESSAGES = []   # the last messages shown (tests read them); at most 50 kept
@@ -56,10 +57,6 @@ def _guarded(command):
     except Exception as exc:
         message(f"{type(exc).__name__}: {exc}")
         return None
-
-
-def _ref(obj):
-    return f"App.getDocument({obj.Document.Name!r}).getObject({obj.Name!r})"
 
 
 def _ref_doc(doc):

@@ -15,8 +15,9 @@ _SKIPPED_TYPES = ("App::PropertyPythonObject", "Part::PropertyPartShape")
 _SKIPPED_STATUS = ("ReadOnly", "Hidden", "Output", "Transient", "NoRecompute")
 
 
-def _ref(obj):
-    return f"App.getDocument({obj.Document.Name!r}).getObject({obj.Name!r})"
+def _ref(obj, holder="App"):
+    """Python naming ``obj`` (``holder`` "Gui": its view) in its document."""
+    return f"{holder}.getDocument({obj.Document.Name!r}).getObject({obj.Name!r})"
 
 
 def code_of(value):
@@ -95,9 +96,7 @@ def edit_lines(obj, before):
     after = tuple(getattr(getattr(obj, "Proxy", None), "SET_AFTER", ()))
     changed = [k for k in now if now[k] is not None and before.get(k) != now[k]]
     changed.sort(key=lambda k: (k[1] in after, after.index(k[1]) if k[1] in after else 0))
-    doc, name = obj.Document.Name, obj.Name
     lines = {"App": [], "Gui": []}
     for holder, prop in changed:
-        lines[holder].append(f"{holder}.getDocument({doc!r}).getObject({name!r}).{prop} = "
-                             f"{now[(holder, prop)]}")
+        lines[holder].append(f"{_ref(obj, holder)}.{prop} = {now[(holder, prop)]}")
     return lines["App"], lines["Gui"]
