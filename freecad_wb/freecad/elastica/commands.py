@@ -19,12 +19,18 @@ from .units import say
 MESSAGES = []   # the last messages shown (tests read them); at most 50 kept
 
 
-def message(text, error=True):
-    """Report-view message (and the status bar), never an exception; its marks (a
-    feature's message) said in the unit schema (units.say)."""
+def _kept(text):
+    """``text`` with its marks said in the unit schema (units.say), kept in MESSAGES."""
     text = say(text)
     MESSAGES.append(text)
     del MESSAGES[:-50]
+    return text
+
+
+def message(text, error=True):
+    """Report-view message (and the status bar), never an exception; its marks (a
+    feature's message) said in the unit schema (units.say)."""
+    text = _kept(text)
     (App.Console.PrintError if error else App.Console.PrintMessage)(f"Elastica: {text}\n")
     try:
         Gui.getMainWindow().statusBar().showMessage(f"Elastica: {text}", 8000)
@@ -39,9 +45,7 @@ def wrong_selection(text):
     if not App.GuiUp:
         return message(text)
     from PySide import QtGui
-    text = say(text)
-    MESSAGES.append(text)
-    del MESSAGES[:-50]
+    text = _kept(text)
     QtGui.QMessageBox.warning(Gui.getMainWindow(), "Wrong selection", text[:1].upper() + text[1:])
 
 
