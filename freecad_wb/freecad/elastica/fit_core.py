@@ -46,11 +46,6 @@ def _fit(xy, **options):
     return binding_module("fit").quiet_fit(xy, **options)
 
 
-def _judged_fit(result, held, distance):
-    """The fit whose misfit el.fit judges (the binding's judged_fit)."""
-    return binding_module("fit").judged_fit(result, held, distance)
-
-
 def _distance(model, distance):
     """The distance el.fit is asked for: the panel's for the smooth model, the library's
     choice for the discrete one."""
@@ -298,11 +293,10 @@ def _keyline(xy, model, step):
     return (halves, [first, second], data, feet, dist, rms, float(n.abs(dist).max()), tails), kf.sparse
 
 
-def _coarse_polygon(xy, result, rms):
-    """The warning for a discrete fit (``result``) of fewer than el.SPARSE_POINTS points whose
-    cubic lies rms from them where the smooth model's curve lies far nearer (el.fit's
-    verdict, FitResult.sparse), else none."""
-    smooth = result.sparse
+def _coarse_polygon(xy, smooth, rms):
+    """The warning for a discrete fit of fewer than el.SPARSE_POINTS points whose cubic lies
+    rms from them where the smooth model's curve lies far nearer, smooth: its rms where
+    el.fit found so (FitResult.sparse, its verdict), else None: none."""
     if smooth is None:
         return []
     return [f"{len(xy)} points give the discrete model a polygon of {len(xy) - 1} segments, "
@@ -458,7 +452,7 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
                                                              dist, fields)
         warnings = ordering + reversed_joins + warnings
         if model == "discrete" and not split and not step:
-            warnings = warnings + _coarse_polygon(xy, results[0], rms)
+            warnings = warnings + _coarse_polygon(xy, results[0].sparse, rms)
         # the figures are the user's points': where the library fitted a resampled polygon
         # (whose tail it may leave out), their distances to the curve drawn
         size = float(n.ptp(user[:, :2], axis=0).max())
@@ -477,7 +471,8 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         # drawn curve's distances to the points carry the step's cost, said apart), the one
         # el.fit judges (judged_fit: without end conditions, their cost said apart; none
         # where asked to be paired); a keyline's by the points'
-        judged = None if split else _judged_fit(results[0], constraints, _distance(model, distance))
+        judged = None if split else binding_module("fit").judged_fit(
+            results[0], constraints, _distance(model, distance))
         misfit = _misfit(user[:, :2], dist, plane, True) if split else \
             _misfit(judged.points, judged.distances, plane, False) if judged is not None else []
         dist = n.copysign(n.hypot(dist, user[:, 2]), dist)
