@@ -282,6 +282,20 @@ def doc_state(doc):
     return out
 
 
+# a feature's results a recorded edit, replayed, must give again (recording's tests)
+RECORDED_RESULTS = {"ElasticaBlend": ("BlendTension", "BlendLength", "Solution", "Status"),
+                    "ElasticaSpline": ("SplineTension", "SplineLength", "Energy", "Status")}
+
+
+def taken(obj):
+    """What a feature's replay is compared by: its name, the properties a panel edits
+    (recording.edit_state), its results (RECORDED_RESULTS) and its B-spline's poles."""
+    from freecad.elastica.recording import edit_state
+    return {"name": obj.Name, "state": edit_state(obj),
+            "results": {p: getattr(obj, p) for p in RECORDED_RESULTS[obj.Name]},
+            "poles": [tuple(p) for p in obj.Shape.Edges[0].Curve.getPoles()]}
+
+
 def travel_ends(f):
     """[(point, unit tangent, signed curvature)] at the start and the end of a fit's
     one B-spline, in the direction of travel (first point -> last), from Part's curve

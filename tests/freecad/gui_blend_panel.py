@@ -548,15 +548,6 @@ def imperial_texts_and_steps(b, panel):
     G.check(abs(b.Length.Value - 127.0) < 1e-9, f"Down twice: 5 in ({b.Length})")
 
 
-def report_text():
-    """The report view's text (FreeCAD's Gui::DockWnd::ReportOutput)."""
-    for w in Gui.getMainWindow().findChildren(QtGui.QTextEdit):
-        if type(w).__name__ == "ReportOutput" or w.objectName() == "Report view" or \
-                "ReportOutput" in w.metaObject().className():
-            return w.toPlainText()
-    return None
-
-
 def failed_quietly(b, panel):
     """A failed recompute says its message in the report view as FreeCAD's own features
     do, without the Python traceback that followed it (QA12 gui/g2_4_schema3.png), and
@@ -564,11 +555,11 @@ def failed_quietly(b, panel):
     panel's live preview says it on the panel's error line only (QA18gui F6: the report
     view popped up with it at every prefix typed); OK says it in the report view once."""
     shape = b.Shape.copy()
-    before = report_text()
+    before = G.report_text()
     retype(panel.length, "1 in")              # shorter than the ends are apart
     G.wait(800)
-    after = report_text()
-    said = after[len(before):] if before is not None and after is not None else None
+    after = G.report_text()
+    said = after[len(before):] if G.report_view() is not None else None
     G.check(b.Status.startswith("error") and "Invalid" in b.State and not b.isValid()
             and abs(b.Shape.Length - shape.Length) < 1e-9,
             f"a failed recompute marks the feature (State {b.State}, {b.Status[:60]!r})")
@@ -578,8 +569,8 @@ def failed_quietly(b, panel):
     # the message alone
     stays = not panel.accept()
     G.wait(300)
-    again = report_text()
-    more = again[len(after):] if after is not None and again is not None else None
+    again = G.report_text()
+    more = again[len(after):] if G.report_view() is not None else None
     G.check(stays and more is not None and more.count("is not longer than") == 1
             and "Traceback" not in more and "RecomputeError" not in more,
             f"OK on a feature in error says the message alone, once: {more!r}")
@@ -587,7 +578,7 @@ def failed_quietly(b, panel):
     b.touch()
     b.Document.recompute()
     G.wait(300)
-    last = report_text()[len(again):]
+    last = G.report_text()[len(again):]
     G.check("is not longer than" in last and "Traceback" not in last
             and "RecomputeError" not in last,
             f"the report view says the message alone: {last!r}")

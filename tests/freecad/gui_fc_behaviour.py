@@ -30,14 +30,6 @@ G = None            # the gui_smoke module (check, wait, screenshot, open_panel,
 KEY_GAP_MS = 250    # a person's pace
 
 
-def report_text():
-    """The report view's text."""
-    for w in Gui.getMainWindow().findChildren(QtGui.QTextEdit):
-        if "ReportOutput" in w.metaObject().className():
-            return w.toPlainText()
-    return ""
-
-
 def slow_type(box, text):
     """Type ``text`` into a spin box a key every KEY_GAP_MS, as a person does (the event
     loop running between keys; G.wait would wait for the panel's pending recompute)."""
@@ -78,11 +70,11 @@ def typing_pace():
     b = panel.obj
     panel.mode.setCurrentIndex(0)           # a length
     G.wait(600)
-    r0 = len(report_text())
+    r0 = len(G.report_text())
     with counting_solves(b) as solves:
         slow_type(panel.length, "150")
         G.wait(1000)              # a pause: the value stands
-    said = report_text()[r0:].strip()
+    said = G.report_text()[r0:].strip()
     G.check(solves == [b.Name] and b.Length.Value == 150.0 and not b.Status.startswith("error")
             and not said,
             f"F6: '150' typed at {KEY_GAP_MS} ms a key: solved once ({solves}), not at every "
@@ -90,40 +82,21 @@ def typing_pace():
     slow_type(panel.length, "15")           # shorter than the gap between the ends
     G.wait(1000)              # a pause: the value stands
     line = G.error_line(panel)
-    said = report_text()[r0:].strip()
+    said = G.report_text()[r0:].strip()
     G.screenshot("gui_typing_error_line.png")
     G.check(b.Status.startswith("error") and "15 mm" in line and not said,
             f"F6: a typed length that cannot be solved: on the panel's error line ({line!r}) "
             f"only, not in the report view ({said!r})")
-    r1 = len(report_text())
+    r1 = len(G.report_text())
     accepted = panel.accept()
     G.wait(300)                             # the report view takes it from an event
-    said = report_text()[r1:].strip()
+    said = G.report_text()[r1:].strip()
     G.check(not accepted and T.CURRENT and T.CURRENT[0] is panel and said.count("\n") == 0
             and "Elastica ElasticaBlend: length 15 mm" in said and "Recompute failed" not in said,
             f"F6: OK on it says it once in the report view ({said!r}); the panel stays open")
     panel.reject()
     G.pump()
     App.closeDocument(doc.Name)
-
-
-def answering_modals(found):
-    """Poll for modal dialogs until stopped: their (title, text) appended to ``found``,
-    each answered OK. Returns the timer (stop it)."""
-    def poll():
-        w = QtGui.QApplication.activeModalWidget()
-        if w is None:
-            return
-        found.append((w.windowTitle(), w.text() if hasattr(w, "text") else ""))
-        for b in w.findChildren(QtGui.QAbstractButton):
-            if b.text().replace("&", "") == "OK":
-                b.click()
-                return
-        w.reject()
-    timer = QtCore.QTimer()
-    timer.timeout.connect(poll)
-    timer.start(100)
-    return timer
 
 
 ELASTICA = ("Elastica_Fit", "Elastica_Blend", "Elastica_Spline", "Elastica_EllipticBlend",
@@ -134,52 +107,46 @@ def active(names):
     return {n: Gui.Command.get(n).isActive() for n in names}
 
 
-def select(doc, picks):
-    Gui.Selection.clearSelection()
-    for obj, sub in picks:
-        if sub:
-            Gui.Selection.addSelection(doc.Name, obj.Name, sub)
-        else:
-            Gui.Selection.addSelection(doc.Name, obj.Name)
-    G.pump()
-
-
 def wrong_selection():
     doc = S.new_doc("ElasticaWrongSelection")
     box = doc.addObject("Part::Box", "Box")
     sk = S.two_lines_sketch(doc)
     doc.recompute()
-    select(doc, [])
+    G.select(doc, [])
+    G.pump()
     now = active(ELASTICA + ("Elastica_FitCsv",))
     G.check(not any(now[n] for n in ELASTICA) and now["Elastica_FitCsv"],
             f"F7: nothing selected: the commands are greyed out as Part_Offset2D (the CSV fit, "
             f"which asks for its file, is not) {now}")
-    select(doc, [(sk, "Edge1")])
+    G.select(doc, [(sk, "Edge1")])
+    G.pump()
     one = active(["Elastica_Blend", "Elastica_G2Quad"])
-    select(doc, [(sk, "Edge1"), (sk, "Edge2")])
+    G.select(doc, [(sk, "Edge1"), (sk, "Edge2")])
+    G.pump()
     two = active(["Elastica_Blend"])
     G.check(not one["Elastica_Blend"] and one["Elastica_G2Quad"] and two["Elastica_Blend"],
             f"F7: the blend is greyed out until two edges are selected, as Part_Section "
             f"(one edge: {one}, two: {two})")
     from freecad.elastica import commands as C
-    found = []
-    timer = answering_modals(found)
+    polling = [True]
+    found = G.answer_modal("OK", keep=lambda: polling)
     try:
         for name in ("Elastica_Fit", "Elastica_Spline", "Elastica_EllipticBlend",
                      "Elastica_G2Quad", "Elastica_Comb"):
             del found[:]
             del C.MESSAGES[:]
-            select(doc, [(box, "Face1")])
-            before, r0 = S.doc_state(doc), len(report_text())
+            G.select(doc, [(box, "Face1")])
+            G.pump()
+            before, r0 = S.doc_state(doc), len(G.report_text())
             Gui.runCommand(name)
             G.wait(400)
-            said = report_text()[r0:].strip()
+            said = G.report_text()[r0:].strip()
             G.check(len(found) == 1 and found[0][0] == "Wrong selection" and "Face1" in found[0][1]
                     and not said and S.doc_state(doc) == before and not Gui.Control.activeDialog(),
                     f"F7: {name} on a box's face: FreeCAD's modal 'Wrong selection' box "
                     f"({found}), no report-view line ({said!r}), the document unchanged")
     finally:
-        timer.stop()
+        polling.clear()
     App.closeDocument(doc.Name)
 
 

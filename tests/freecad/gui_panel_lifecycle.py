@@ -18,32 +18,11 @@ gui_delete_during_panel.png, gui_keep_needs_copy.png (the Keep box disabled),
 gui_failed_blend_panel.png (a failed blend's panel: its error)."""
 import FreeCAD as App
 import FreeCADGui as Gui
-from PySide import QtCore, QtGui
+from PySide import QtGui
 
 import elastica_samples as S
 
 G = None            # the gui_smoke module (check, wait, screenshot, type_into, double_click)
-
-
-def answer_modal(button, tries=20):
-    """Answer the next modal dialog with ``button`` (gives up after ``tries`` polls, so
-    it never answers a later one); returns the list its text is appended to."""
-    said = []
-
-    def poll(left):
-        w = QtGui.QApplication.activeModalWidget()
-        if w is None:
-            if left:
-                QtCore.QTimer.singleShot(100, lambda: poll(left - 1))
-            return
-        said.append(w.text() if hasattr(w, "text") else w.windowTitle())
-        for b in w.findChildren(QtGui.QAbstractButton):
-            if b.text().replace("&", "") == button:
-                b.click()
-                return
-        w.reject()
-    QtCore.QTimer.singleShot(100, lambda: poll(tries))
-    return said
 
 
 def task_buttons():
@@ -81,7 +60,7 @@ def close_with_panel(edit):
     G.wait()
     G.check(panel is not None and Gui.Control.activeDialog(), f"close with {what}: panel open")
     name = doc.Name
-    said = answer_modal("Discard")
+    said = G.answer_modal("Discard")
     Gui.runCommand("Std_CloseActiveWindow")
     G.wait(800)
     if edit:
@@ -103,7 +82,7 @@ def delete_during_new_panel():
             "a new feature's panel clears the selection and puts the feature in edit "
             f"({[s.ObjectName for s in Gui.Selection.getSelectionEx()]})")
     Gui.Selection.addSelection(doc.Name, sk.Name)
-    said = answer_modal("Yes", tries=5)
+    said = G.answer_modal("Yes", tries=5)
     Gui.runCommand("Std_Delete")
     G.wait(700)
     G.screenshot("gui_delete_during_panel.png")
@@ -131,7 +110,7 @@ def delete_during_edit():
     G.wait()
     Gui.Selection.clearSelection()
     Gui.Selection.addSelection(doc.Name, sk.Name)
-    answer_modal("Yes", tries=5)
+    G.answer_modal("Yes", tries=5)
     Gui.runCommand("Std_Delete")
     G.wait(700)
     G.check([o.Name for o in doc.Objects] == ["Points", "ElasticaFit"] and T.CURRENT,

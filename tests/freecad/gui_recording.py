@@ -17,13 +17,6 @@ import elastica_samples as S
 G = None            # the gui_smoke module (check, wait, screenshot, ...)
 
 
-def _taken(obj):
-    from freecad.elastica.recording import edit_state
-    return {"state": edit_state(obj), "Solution": obj.Solution, "Status": obj.Status,
-            "BlendTension": obj.BlendTension, "BlendLength": obj.BlendLength,
-            "poles": [tuple(p) for p in obj.Shape.Edges[0].Curve.getPoles()]}
-
-
 def run_all(smoke):
     global G
     G = smoke
@@ -44,10 +37,10 @@ def run_all(smoke):
         G.wait(900)
         G.check(b.Tension == 0.001 and b.Solution == 1,
                 f"the blend edited ({b.Tension}, {b.Status})")
-        shown = _taken(b)
+        shown = S.taken(b)
         panel.accept()
         G.pump()
-        G.check(_taken(b) == shown, "OK leaves the blend as the panel showed it "
+        G.check(S.taken(b) == shown, "OK leaves the blend as the panel showed it "
                                     f"({b.Solution}, {b.Status})")
         panel = G.double_click(b)          # an edit of the existing blend: Degree 6
         panel.degree.setValue(6)
@@ -73,14 +66,14 @@ def run_all(smoke):
     console = "\n".join(w.toPlainText() for w in Gui.getMainWindow().findChildren(
         QtGui.QPlainTextEdit) if "PythonConsole" in w.metaObject().className())
     G.check(all(line in console for line in lines), "the lines show in the Python console")
-    was = _taken(b)
+    was = S.taken(b)
     App.closeDocument(name)
     doc = S.new_doc(name)
     S.two_lines_sketch(doc)
     exec("\n".join(recorded), {"App": App, "FreeCAD": App, "Gui": Gui})
     doc.recompute()
     again = doc.getObject(blend)
-    G.check(again is not None and _taken(again) == was,
+    G.check(again is not None and S.taken(again) == was,
             "the recorded lines replayed make the same blend "
-            f"({again and again.Status} / {was['Status']})")
+            f"({again and again.Status} / {was['results']['Status']})")
     App.closeDocument(name)

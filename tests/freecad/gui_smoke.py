@@ -194,15 +194,64 @@ def error_line(panel):
     return text.text()
 
 
-def run_on(doc, command, picks):
-    """Select picks ([(object, subelement or "")]) and run command; the number of
-    document objects before."""
+def select(doc, picks):
+    """Select picks ([(object, subelement or "")]) of ``doc``, nothing else."""
     Gui.Selection.clearSelection()
     for obj, sub in picks:
         if sub:
             Gui.Selection.addSelection(doc.Name, obj.Name, sub)
         else:
             Gui.Selection.addSelection(doc.Name, obj.Name)
+
+
+def report_view():
+    """FreeCAD's report view (Gui::DockWnd::ReportOutput), None where none is found."""
+    from PySide import QtGui
+    for w in Gui.getMainWindow().findChildren(QtGui.QTextEdit):
+        if type(w).__name__ == "ReportOutput" or w.objectName() == "Report view" or \
+                "ReportOutput" in w.metaObject().className():
+            return w
+    return None
+
+
+def report_text():
+    """The report view's text ("" where none is found: report_view)."""
+    view = report_view()
+    return view.toPlainText() if view is not None else ""
+
+
+def answer_modal(button, tries=20, keep=None):
+    """Answer the next modal dialog with ``button`` (else close it), polling every 100 ms;
+    gives up after ``tries`` polls, so it never answers a later one. ``keep`` (a callable):
+    every modal dialog is answered, the polling going on while keep() is true. Returns the
+    list each dialog's (title, text) is appended to."""
+    from PySide import QtCore, QtGui
+    said = []
+
+    def poll(left):
+        if keep is not None and not keep():
+            return
+        w = QtGui.QApplication.activeModalWidget()
+        if w is not None:
+            said.append((w.windowTitle(), w.text() if hasattr(w, "text") else ""))
+            for b in w.findChildren(QtGui.QAbstractButton):
+                if b.text().replace("&", "") == button:
+                    b.click()
+                    break
+            else:
+                w.reject()
+            if keep is None:
+                return
+        if left or keep is not None:
+            QtCore.QTimer.singleShot(100, lambda: poll(left - 1))
+    QtCore.QTimer.singleShot(100, lambda: poll(tries))
+    return said
+
+
+def run_on(doc, command, picks):
+    """Select picks ([(object, subelement or "")]) and run command; the number of
+    document objects before."""
+    select(doc, picks)
     n0 = len(doc.Objects)
     Gui.runCommand(command)
     pump()

@@ -9,9 +9,6 @@ import elastica_samples as S
 from freecad.elastica import commands as C
 from freecad.elastica.recording import code_of, edit_lines, edit_state
 
-RESULTS = {"ElasticaBlend": ("BlendTension", "BlendLength", "Solution", "Status"),
-           "ElasticaSpline": ("SplineTension", "SplineLength", "Energy", "Status")}
-
 
 class RecordingTest(S.DocTest):
     doc_name = "ElasticaRecordingTest"
@@ -48,12 +45,6 @@ class RecordingTest(S.DocTest):
             self.assertEqual(getattr(got, prop), value, prop)
         self.assertEqual([tuple(p) for p in got.Shape.Edges[0].Curve.getPoles()], obj["poles"])
 
-    @staticmethod
-    def taken(obj):
-        return {"name": obj.Name, "state": edit_state(obj),
-                "results": {p: getattr(obj, p) for p in RESULTS[obj.Name]},
-                "poles": [tuple(p) for p in obj.Shape.Edges[0].Curve.getPoles()]}
-
     def test_blend_edits_replay_to_the_same_blend(self):
         """QA18gui F5: a blend made, Tension 0.001 typed, solution 2 picked, Degree 6: the
         console held the make() line only, so a macro replayed gave the free batten,
@@ -80,7 +71,7 @@ class RecordingTest(S.DocTest):
         self.assertEqual(lines, [f"{ref}.Degree = 6", f"{ref}.Tension = 0.001",
                                  f"{ref}.Solution = 1"])
         self.assertEqual(view, [])
-        was = self.taken(b)
+        was = S.taken(b)
         self.check_same(was, self.replayed(S.two_lines_sketch, code, lines))
 
     def test_spline_edits_replay_to_the_same_spline(self):
@@ -101,7 +92,7 @@ class RecordingTest(S.DocTest):
         lines, _ = edit_lines(s, before)
         self.assertEqual(sorted(line.split(" = ")[0].rsplit(".", 1)[1] for line in lines),
                          ["Length", "Mode", "Tolerance"], lines)
-        was = self.taken(s)
+        was = S.taken(s)
         self.check_same(was, self.replayed(source, code, lines))
 
     def test_values_are_written_to_evaluate_back(self):
