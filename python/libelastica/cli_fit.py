@@ -262,17 +262,14 @@ def _warn_wanders(path, rec: Dict[str, Any], data: np.ndarray, numbered: bool = 
           "between them, or bound the length (--length LO,HI)", file=sys.stderr)
 
 
-def _warn_retrace(path, rec: Dict[str, Any], data: np.ndarray) -> None:
+def _warn_retrace(path, rec: Dict[str, Any], back) -> None:
     """A warning on stderr naming the points that run back along the curve (el.fit's
-    OrderWarning of a scan passed back and forth): a one-piece fit by distance, in the
-    file's order, that does not wander (its warning is said)."""
-    from .order import retrace_summary, run_back
-    if "side" in rec or rec.get("wander_gap", -1) >= 0 or rec.get("distance") in (None, "paired"):
+    OrderWarning of a scan passed back and forth, ``FitResult.retrace``: back): a one-piece
+    fit in the file's order (its caller's gates: no --step, no --order curve)."""
+    from .order import retrace_summary
+    if "side" in rec or back is None:
         return
-    foot = np.asarray(rec.get("foot_s", ()), dtype=float)
-    back = run_back(data[:, :2], foot, rec["rms"]) if len(foot) == len(data) else None
-    if back is not None:
-        print(f"{PROG} fit: warning: {path}: {retrace_summary(back)}", file=sys.stderr)
+    print(f"{PROG} fit: warning: {path}: {retrace_summary(back)}", file=sys.stderr)
 
 
 def _misfit(path, m, points: np.ndarray, numbered: bool, what: str = "one elastica") -> Dict[str, Any]:
@@ -432,7 +429,7 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
         _warn_far_points(path, rec)
         _warn_wanders(path, rec, fitted_pts, order is None, gap)
         if order is None and args.step is None:
-            _warn_retrace(path, rec, fitted_pts)
+            _warn_retrace(path, rec, res.retrace)
         if rec.get("resample_reference_rms") is not None:
             from .resampled import resample_summary
             print(f"{PROG} fit: warning: {path}: " + resample_summary(

@@ -33,7 +33,7 @@ from ._text import LengthFormat, lengths
 from ._values import ValueEquality
 from .fit_cost import EndConditionWarning, checked_ends
 from .misfit import MisfitWarning, _verdict, misfit_summary
-from .order import curve_order, order_summary, ordering, retrace_summary, run_back
+from .order import Retrace, curve_order, order_summary, ordering, retrace_summary, run_back
 
 _MODES = {"auto": 0, "uniform": 1, "chord": 2}
 _MODE_NAMES = {v: k for k, v in _MODES.items()}
@@ -93,7 +93,9 @@ class FitResult(ValueEquality):
     the points than their noise, a :class:`libelastica.misfit.Misfit` (the points are not one
     elastica; its ``corner`` an index into ``points``), else None; ``sparse``: where
     :func:`fit` checked it (``check_sparse``), a discrete fit of fewer than SPARSE_POINTS
-    points far farther from them than the smooth model's fit: that fit's rms, else None.
+    points far farther from them than the smooth model's fit: that fit's rms, else None;
+    ``retrace``: where :func:`fit` warned of points that run back along the curve (an
+    OrderWarning), the :class:`libelastica.order.Retrace` it named, else None.
     """
     curve: Curve
     initial: Curve
@@ -116,6 +118,7 @@ class FitResult(ValueEquality):
     free: Optional["FitResult"] = None
     misfit: Optional[object] = None
     sparse: Optional[float] = None
+    retrace: Optional[Retrace] = None
 
     @property
     def converged(self) -> bool:
@@ -444,7 +447,8 @@ _BYTES = ffi.typeof("char *")
 
 
 def _result(model: str, res, st: int, pts: np.ndarray, dist: np.ndarray, foot: np.ndarray,
-            s: Optional[np.ndarray] = None, constraints=None, order=None) -> FitResult:
+            s: Optional[np.ndarray] = None, constraints=None, order=None,
+            retrace: Optional[Retrace] = None) -> FitResult:
     n = len(pts)
     ptr, a, b = _PARAMS[model]
     base = ffi.cast(_BYTES, res)
@@ -457,7 +461,7 @@ def _result(model: str, res, st: int, pts: np.ndarray, dist: np.ndarray, foot: n
                        distances=dist, foot_s=foot, distance=_DISTANCE_NAMES[int(res.distance)],
                        used_ipopt=bool(res.used_ipopt), points=pts,
                        constraints=dict(constraints) if constraints else None,
-                       wander_gap=int(res.wander_gap), order=order)
+                       wander_gap=int(res.wander_gap), order=order, retrace=retrace)
 
 
 _RESULT_FIELDS = tuple(f.name for f in dataclasses.fields(FitResult))
@@ -603,6 +607,7 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     if st != lib.EL_OK:     # a status 6 went unnoticed unless the caller read it (QA)
         warnings.warn(f"fit: not converged: {ffi.string(lib.el_strerror(st)).decode()} (status {st}); "
                       "strict=True raises instead", ConvergenceWarning, stacklevel=2)
+    back = None
     if unordered is not None and unordered.order is not None:
         warnings.warn(f"fit: {order_summary(unordered)}: fitted in their order, the curve may coil "
                       "through them; order='curve' fits them in curve order (el.curve_order)",
@@ -615,7 +620,7 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
         back = run_back(pts, foot, res.rms)
         if back is not None:
             warnings.warn(f"fit: {retrace_summary(back)}", OrderWarning, stacklevel=2)
-    r = _result(model, res, st, pts.copy(), dist, foot, s, constraints, idx)
+    r = _result(model, res, st, pts.copy(), dist, foot, s, constraints, idx, back)
     if check_ends and (constraints or fixed):
         r = checked_ends(r, fixed, dict(model=model, distance=distance, bounds=bounds, tol=tol,
                          limited_memory=limited_memory, max_candidates=max_candidates, param=param))

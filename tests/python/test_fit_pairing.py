@@ -48,6 +48,8 @@ def test_back_and_forth_scan_fits_as_orthogonal(seed):
     assert len(said) == 1 and warned[0].category is el.OrderWarning, said
     m = re.match(r"fit: points (\d+) to (\d+) \(counted from 0\) run back along the curve", said[0])
     assert m and abs(int(m[1]) - 59) <= 2 and abs(int(m[2]) - 78) <= 2, said
+    # kept in the result (the CLI's quiet fit says it from there)
+    assert r.retrace is not None and (r.retrace.first, r.retrace.last) == (int(m[1]), int(m[2]))
 
 
 def _dropout_scan(seed, ndrop):
@@ -69,6 +71,7 @@ def test_dropouts_fit_as_orthogonal(seed, ndrop):
     assert r.distance == "orthogonal"
     assert r.rms <= o.rms * (1 + 1e-6), (r.rms, o.rms)
     assert not warned, [str(x.message) for x in warned]     # in order: nothing runs back
+    assert r.retrace is None
 
 
 # the same scans without dropouts that the spacing test passes: paired as before, at
