@@ -498,19 +498,21 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
         if st == lib.EL_ENOCONV:
             why, largest = "", None
             g2 = [(float(res.ladder[i]), float(res.reach[i])) for i in range(2)]
-            if length is None and sigma > 0.0 and (g2[0][1] > 0.0 or g2[1][1] > 0.0):
-                # G2 ends: the G2 battens met nearest this tension (elastica.h: ladder)
-                met = " and ".join(f"{'up to' if i == 0 else 'from'} {t:.3g} (length {Lg:.5g})"
-                                   for i, (t, Lg) in enumerate(g2) if Lg > 0.0)
-                why = (f"; with G2 ends the solver reached blends of tension {met}, none at "
+            by_tension = length is None and sigma > 0.0
+            # G2 ends: the G2 battens met nearest this tension (elastica.h: ladder), or None
+            met = tuple(m if by_tension and m[1] > 0.0 else None for m in g2)
+            if met[0] or met[1]:
+                said = " and ".join(f"{'up to' if i == 0 else 'from'} {t:.3g} (length {Lg:.5g})"
+                                    for i, (t, Lg) in enumerate(g2) if met[i])
+                why = (f"; with G2 ends the solver reached blends of tension {said}, none at "
                        f"{sigma:g}: the families of G2 blends need not cover every tension "
                        "(between such tensions there may be none), so give a tension it "
                        "reached, or a length")
-            if length is None and sigma > 0.0:
+            if by_tension:
                 # the solver's reach is in the dimensionless tension (elastica.h: Accuracy);
                 # not where it reached a G2 blend of a higher tension
                 sh2 = sigma * float(chords.max()) ** 2
-                if sh2 > 50.0 and not g2[1][1] > 0.0:
+                if sh2 > 50.0 and met[1] is None:
                     why = (f"; tension x (longest span)^2 = {sh2:.3g}: of 24 random sketches, "
                            "sheers and ovals the solver solves all up to 100, 22 at 200, 19 at "
                            "300 (to ~1e-9), 5 at 450, whether tol is 1e-10 or 1e-7 (nearly "
@@ -529,8 +531,7 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
                 + why + hint)
             err.spline = ElasticSpline(res, pts, closed) if res.npieces else None
             err.largest_tension = largest
-            err.g2_met = tuple(m if m[1] > 0.0 and length is None and sigma > 0.0 else None
-                               for m in g2)
+            err.g2_met = met
             raise err
         if st == lib.EL_EINVAL:
             why = _out_of_range(pts, chords)
