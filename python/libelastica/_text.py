@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 import math
-from typing import Callable, Optional
+from typing import Any, Callable, List, Mapping, Optional, Tuple
 
 # length(value, digits, with_unit=True) -> text: ``digits`` significant digits (None: as
 # '%g' writes them); with_unit False: the number alone ('9.05 to 16 mm')
@@ -28,3 +28,13 @@ def coordinates(values, extent: float, digits: int = 6) -> str:
     if extent > 0 and math.isfinite(extent) and big > extent:
         extra = int(math.ceil(math.log10(big / extent)))
     return ", ".join(f"{v:.{min(17, digits + extra)}g}" for v in vals)
+
+
+def curve_values(d: Mapping[str, Any]) -> List[Tuple[str, str]]:
+    """(name, text) of a curve's parameters (io.curve_to_dict's dict, its "type" left out):
+    x0, y0 by :func:`coordinates` to the digits of the curve's size (its length, or
+    h (n - 1)), " rad" after phi, floats to 6 digits, others (n) as they print."""
+    size = d.get("length") or d.get("h", 0.0) * max(d.get("n", 2) - 1, 1)
+    return [(k, (coordinates(v, size) if k in ("x0", "y0") else
+                 f"{v:.6g}" if isinstance(v, float) else str(v)) + (" rad" if k == "phi" else ""))
+            for k, v in d.items() if k != "type"]

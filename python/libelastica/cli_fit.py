@@ -10,7 +10,7 @@ from typing import Any, Dict, List, Optional, Tuple
 import numpy as np
 
 from ._ffi import NotConvergedError
-from ._text import coordinates
+from ._text import curve_values
 from .cli_common import (EXIT_BADINPUT, EXIT_NOCONV, EXIT_OK, PROG, _converged,
                          _finite, _float_list, _fmt, _mapped_bspline, _plane_record, _Progress,
                          _status_text, _table, tol_option)
@@ -528,11 +528,8 @@ def _print_fit(rec: Dict[str, Any]) -> None:
     else:
         print(f"model       {rec['model']}  ({rec['n_points']} points)")
     if rec.get("curve"):
-        cur = rec["curve"]     # the start to the curve's size's digits (QA18 P1)
-        size = cur.get("length") or cur.get("h", 0.0) * max(cur.get("n", 2) - 1, 1)
-        print("parameters  " + ", ".join(
-            f"{k}={coordinates(v, size) if k in ('x0', 'y0') else _fmt(v)}"
-            + (" rad" if k == "phi" else "") for k, v in cur.items() if k != "type"))
+        # the start to the curve's size's digits (QA18 P1)
+        print("parameters  " + ", ".join(f"{k}={text}" for k, text in curve_values(rec["curve"])))
         if "fitted_points" in rec:   # --step: whatever distance fitted the polygon (QA13)
             how = "point-to-curve: the file's points to the curve drawn"
         else:

@@ -21,7 +21,7 @@ from xml.sax.saxutils import escape
 
 import numpy as np
 
-from ._text import coordinates
+from ._text import curve_values
 from .io import InputError
 
 __all__ = ["Layer", "Graph", "Picture", "fit_picture", "curves_picture", "save_picture",
@@ -156,12 +156,9 @@ def _curve_samples(curve, n: int = 400):
 def _curve_params(curve) -> List[str]:
     from .io import curve_to_dict
     d = curve_to_dict(curve)
-    kind = d.pop("type")
-    n = d.pop("n", None)
-    size = d.get("length") or d.get("h", 0.0) * max((n or 2) - 1, 1)
-    items = [f"{k} = {coordinates(v, size) if k in ('x0', 'y0') else f'{v:.6g}'}"
-             + (" rad" if k == "phi" else "") for k, v in d.items()]
-    head = f"{kind} elastica" + (f", n = {n}" if n is not None else "")
+    n = d.get("n")
+    items = [f"{k} = {text}" for k, text in curve_values(d) if k != "n"]
+    head = f"{d['type']} elastica" + (f", n = {n}" if n is not None else "")
     return [head] + [", ".join(items[i:i + 3]) for i in range(0, len(items), 3)]
 
 
