@@ -128,7 +128,7 @@ class FitResult(ValueEquality):
         """A summary (the arrays are the data's size: print them by name)."""
         n = next((len(a) for a in (self.points, self.distances) if a is not None), None)
         state = "converged" if self.converged else f"not converged (status {self.status})"
-        kind = "smooth" if type(self.curve).__name__ == "SmoothElastica" else "discrete"
+        kind = "smooth" if isinstance(self.curve, SmoothElastica) else "discrete"
         return (f"FitResult({kind}, {n} points, {self.distance}, rms {self.rms:.3g}, max "
                 f"{self.max_error:.3g}, {state}{', misfit' if self.misfit is not None else ''}, "
                 f"curve={self.curve!r})")

@@ -15,6 +15,7 @@ from ._ffi import (DomainError, as_int, as_positive, as_real, as_real_array, che
                    lib)
 from ._interrupt import call
 from ._values import ValueEquality
+from .core import SmoothElastica
 from .cubic import SPARSE_POINTS, SparseWarning, smooth_fits_better
 from .fit import (_MODE_NAMES, ConvergenceWarning, FitResult, OrderWarning, _make_curve,
                   quiet_fit)
@@ -70,7 +71,7 @@ class KeylineFit(ValueEquality):
 
     def __repr__(self) -> str:
         """A summary (the arrays are the data's size: print them by name)."""
-        kind = "smooth" if type(self.first.curve).__name__ == "SmoothElastica" else "discrete"
+        kind = "smooth" if isinstance(self.first.curve, SmoothElastica) else "discrete"
         n = len(self.input_distances) if self.input_distances is not None else None
         rms = f", input rms {self.input_rms:.3g}" if n else ""
         state = "converged" if self.first.converged and self.second.converged else \
