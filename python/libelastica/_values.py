@@ -49,7 +49,7 @@ def same(a, b) -> bool:
 
 
 class ValueEquality:
-    """Mixin: == and != by :func:`same` over :meth:`_values` (a dataclass's fields; else
+    """Mixin: == (and so !=) by :func:`same` over :meth:`_values` (a dataclass's fields; else
     the instance's attributes but private caches); unhashable (results are mutable or hold
     arrays)."""
 
@@ -64,10 +64,6 @@ class ValueEquality:
         if type(other) is not type(self):
             return NotImplemented
         return same(self._values(), other._values())
-
-    def __ne__(self, other):
-        eq = self.__eq__(other)
-        return eq if eq is NotImplemented else not eq
 
     __hash__ = None
 

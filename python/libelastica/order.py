@@ -21,7 +21,7 @@ import numpy as np
 
 from ._ffi import as_points, check, dptr, ffi, lib
 from ._text import LengthFormat, lengths
-from ._values import same
+from ._values import ValueEquality
 from .prep import pca_normalize, plane_fit
 
 
@@ -107,10 +107,10 @@ class Ordering(NamedTuple):
     given: float
     along: float
 
-    def __eq__(self, other):      # by value (_values.same: along nan equals nan)
-        if type(other) is not type(self):
-            return NotImplemented
-        return same(tuple(self), tuple(other))
+    def _values(self):
+        return tuple(self)
+
+    __eq__ = ValueEquality.__eq__      # by value (_values.same: along nan equals nan)
 
     def __ne__(self, other):
         eq = self.__eq__(other)
