@@ -81,8 +81,7 @@ class OsculatingConics(ValueEquality):
     coef: np.ndarray
     kappa: np.ndarray
 
-    def __repr__(self) -> str:
-        return field_summary(self)
+    __repr__ = field_summary
 
 
 def osculating_conics(polyline, kind: str = "middle") -> OsculatingConics:
@@ -269,14 +268,13 @@ class AffinePolyline(ValueEquality):
     points: np.ndarray
     t: np.ndarray
     s: Optional[np.ndarray]
-
-    def __repr__(self) -> str:
-        return field_summary(self)
     piece_start: np.ndarray
     A: np.ndarray
     psi: np.ndarray
     infl_param: np.ndarray
     S_total: float
+
+    __repr__ = field_summary
 
     def quadruples(self) -> tuple[np.ndarray, np.ndarray]:
         """Indices i of the quadruples x_{i-1}..x_{i+2} lying inside one piece, and their A."""

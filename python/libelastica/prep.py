@@ -149,8 +149,7 @@ class Resampled(ValueEquality):
     reversed: bool
     remainder: float
 
-    def __repr__(self) -> str:
-        return field_summary(self)
+    __repr__ = field_summary
 
 
 #: The most vertices resample_equilateral builds (EL_RESAMPLE_MAX_VERTICES): a segment r
@@ -309,8 +308,7 @@ class PreparedKeyline(ValueEquality):
     frame2d: Frame2D
     rms_out_of_plane: float
 
-    def __repr__(self) -> str:
-        return field_summary(self)
+    __repr__ = field_summary
 
     def to_input(self, xy) -> np.ndarray:
         """Map x''y'' points (n, 2) (or one point) back to the input's coordinates:

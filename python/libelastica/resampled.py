@@ -59,10 +59,9 @@ class ResampledFit(ValueEquality):
     rms: float
     max_error: float
     reference_rms: Optional[float] = None
-
-    def __repr__(self) -> str:
-        return field_summary(self)
     foot_s: Optional[np.ndarray] = None
+
+    __repr__ = field_summary
 
     @property
     def curve(self):
