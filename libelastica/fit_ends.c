@@ -125,13 +125,14 @@ static int run_free(const double *xy, size_t n, const el_fit_options *ro, const 
 {
     const double *af = buf + n;
     int st = run_tied(xy, n, ro, FIT_RUN_FREE_ENDS, res->params, 0, n - 1, alt, buf, pxy);
+    if (st == EL_ENOMEM) return st;
+    if (!gave_curve(st)) return EL_EDOM;      /* no feet in af to scan */
     size_t lo = 0, hi = 0;
     for (size_t i = 1; i < n; i++) {
         if (af[i] < af[lo]) lo = i;
         if (af[i] > af[hi]) hi = i;
     }
-    if (st == EL_ENOMEM) return st;
-    if (!gave_curve(st) || !(af[hi] > af[lo]) || cut(alt->params, af[lo], af[hi])) return EL_EDOM;
+    if (!(af[hi] > af[lo]) || cut(alt->params, af[lo], af[hi])) return EL_EDOM;
     double p[FIT_NP];
     memcpy(p, alt->params, sizeof p);
     return run_tied(xy, n, ro, 0, p, lo, hi, alt, buf, pxy);
