@@ -46,19 +46,18 @@ static size_t piled(const double *fs, size_t n, double L, size_t e)
 
 /* The points lo, hi farthest back and forward along the curve p (input units, feet fs):
  * each point's foot, or for a foot held at an end the end's arc length plus the point's
- * offset along the end's tangent. EL_OK or el_smooth_eval's error. */
+ * offset along the end's tangent. EL_OK or el__smooth_ends' error. */
 static int extremes(const double *p, const double *xy, const double *fs, size_t n, size_t *lo, size_t *hi)
 {
     const el_smooth_params c = {p[0], p[1], p[2], p[3], p[4], p[5], p[6]};
-    const double s[2] = {0.0, p[6]};
     double g[4], th[2];
-    const int st = el_smooth_eval(&c, 2, s, g, th, NULL);
+    const int st = el__smooth_ends(&c, g, th);
     if (st) return st;
     double a = HUGE_VAL, b = -HUGE_VAL;
     for (size_t i = 0; i < n; i++) {
         const int e = fs[i] <= 0.0 ? 0 : fs[i] >= p[6] ? 1 : -1;
         const double at = e < 0 ? fs[i]
-                        : s[e] + cos(th[e]) * (xy[2 * i] - g[2 * e]) + sin(th[e]) * (xy[2 * i + 1] - g[2 * e + 1]);
+                        : (e ? p[6] : 0.0) + cos(th[e]) * (xy[2 * i] - g[2 * e]) + sin(th[e]) * (xy[2 * i + 1] - g[2 * e + 1]);
         if (at < a) { a = at; *lo = i; }
         if (at > b) { b = at; *hi = i; }
     }
