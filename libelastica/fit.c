@@ -621,7 +621,8 @@ static int further_runs(fit_run_state *R, int st)
                                                      R->norm, R->res, R->d, R->fs));
     /* rows where bounds or fixed values keep the start-state chart off: the guesses all end in
      * the unconstrained fit's basin; Ipopt's L-BFGS path from each guess too, the lower kept
-     * (fit_paths.c), unless the fit is within 1.5 x the noise figure (the candidates' stop) */
+     * (fit_restart.c, el__fit_other_path), unless the fit is within 1.5 x the noise figure
+     * (the candidates' stop) */
     if (R->ok && R->need_ipopt && !R->chart_ok && !o->limited_memory && caller_fit && !inner &&
         st != EL_ENOMEM && !(R->res->rms <= 1.5 * R->noise * R->sc && st == EL_OK))
         st = refitted(R, el__fit_other_path(model, xy, n, R->opt, R->res, R->d, R->fs));

@@ -16,8 +16,7 @@
  *   fit_lm.c         Levenberg-Marquardt and its first-order certificate;
  *   fit_ipopt.c      bounds and constraints through Ipopt (and the fallback);
  *   fit_keyline.c    the keyline as one problem: two curves sharing a G2 joint;
- *   fit_frame.c      the public fits in the frame of a held tangent;
- *   fit_paths.c      rows with the start-state chart off: the L-BFGS path too.
+ *   fit_frame.c      the public fits in the frame of a held tangent.
  * Everything is in normalised coordinates: points P = (xy - c) / sc.
  */
 #ifndef EL_FIT_INTERNAL_H
@@ -747,12 +746,18 @@ int el__fit_free_ends(const double *xy, size_t n, const el_fit_options *opt, int
 /* fit_restart.c: *res (d, fs its distances and feet) replaced by the refit alt (buf: its
  * distances, then its feet), the iterations and candidates of both counted. */
 void el__fit_replace(fit_out *res, fit_out *alt, const double *buf, size_t n, double *d, double *fs);
-/* fit_paths.c: a fit with constraint rows whose start-state chart is off (bounds or fixed
+/* fit_restart.c: a fit with constraint rows whose start-state chart is off (bounds or fixed
  * values on its slots) fitted again by the other optimiser (Ipopt's L-BFGS from each guess),
- * which replaces *res (d, fs) when it meets the constraints at a lower rms; res->status, or
- * EL_ENOMEM. */
+ * which replaces *res (d, fs) when it meets the constraints at a lower rms (by more than 1e-9
+ * of it); res->status, or EL_ENOMEM. */
 int el__fit_other_path(int model, const double *xy, size_t n, const el_fit_options *opt, fit_out *res,
                        double *d, double *fs);
+/* fit_restart.c: the fit of the points afresh (el__fit_run with opt, flags | FIT_RUN_INNER),
+ * which replaces *res (d, fs) when certified (EL_OK) and its rms is below res->rms (1 -
+ * margin), or where *res is no curve; res->status, or EL_ENOMEM (el__fit_ends_held,
+ * el__fit_other_path). */
+int el__fit_refit_lower(int model, const double *xy, size_t n, const el_fit_options *opt, int flags, double margin,
+                        fit_out *res, double *d, double *fs);
 
 /* Ipopt from x (in place; the best point seen on return) with bounds xl, xu (+-HUGE_VAL:
  * none) and constraints con (NULL: none). */

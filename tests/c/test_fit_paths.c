@@ -1,9 +1,10 @@
 /* A fit whose start tangent is an Ipopt row (mu bounded: the start-state chart is off) ends
- * at least as low as Ipopt's L-BFGS path finds for the same call (fit_paths.c). QA18 M5: 200
- * points on y = sin x, x in [0, 3], held to start tangent 0.9 and end curvature 0.1 with mu in
- * [0.01, 0.3]: the exact path's guesses all ended at rms 0.0931 (the unconstrained fit's
- * basin), L-BFGS from the first guess at 0.0678 under OpenBLAS's SkylakeX kernel (0.0931
- * under Haswell, Zen, Sandybridge, Prescott: which basin L-BFGS reaches turns on rounding). */
+ * at least as low as Ipopt's L-BFGS path finds for the same call (fit_restart.c,
+ * el__fit_other_path). QA18 M5: 200 points on y = sin x, x in [0, 3], held to start tangent
+ * 0.9 and end curvature 0.1 with mu in [0.01, 0.3]: the exact path's guesses all ended at rms
+ * 0.0931 (the unconstrained fit's basin), L-BFGS from the first guess at 0.0678 under
+ * OpenBLAS's SkylakeX kernel (0.0931 under Haswell, Zen, Sandybridge, Prescott: which basin
+ * L-BFGS reaches turns on rounding). */
 #include "testutil.h"
 #include <elastica.h>
 #include <math.h>
