@@ -259,36 +259,22 @@ int el__fit_follow_points(int model, const double *xy, size_t n, const el_fit_op
     return st == EL_ENOMEM ? st : EL_OK;
 }
 
-/* el__fit_run from *res's curve (the caller's start) with the options opt, the distance
- * measure replaced unless distance < 0: its result into *alt, its distances and feet into
- * *buf (2 n, the caller frees it); EL_ENOMEM (*buf NULL), else el__fit_run's status. */
+/* el__fit_run from *res's curve (the caller's start; res NULL: the options' own starts) with
+ * the options opt, the distance measure replaced unless distance < 0: its result into *alt,
+ * its distances and feet into *buf (2 n, the caller frees it); EL_ENOMEM (*buf NULL), else
+ * el__fit_run's status. */
 static int rerun_from(int model, const double *xy, size_t n, const el_fit_options *opt, int distance, int flags,
                       const fit_out *res, fit_out *alt, double **buf)
 {
     el_fit_options ro;
     if (opt) ro = *opt; else el_fit_options_defaults(&ro);
     if (distance >= 0) ro.distance = distance;
-    ro.use_initial = 1;
+    if (res) ro.use_initial = 1;
     memset(alt, 0, sizeof *alt);
     alt->status = -1;
     *buf = malloc(sizeof(double) * 2 * n);
     if (!*buf) return EL_ENOMEM;
-    return el__fit_run(model, xy, n, &ro, flags, res->params, alt, *buf, *buf + n);
-}
-
-/* el__fit_run by distance to the curve from the options' own starts (a paired fit's points
- * as distance="orthogonal" fits them): as rerun_from. */
-static int rerun_afresh(int model, const double *xy, size_t n, const el_fit_options *opt, fit_out *alt,
-                        double **buf)
-{
-    el_fit_options ro;
-    if (opt) ro = *opt; else el_fit_options_defaults(&ro);
-    ro.distance = EL_DISTANCE_ORTHOGONAL;
-    memset(alt, 0, sizeof *alt);
-    alt->status = -1;
-    *buf = malloc(sizeof(double) * 2 * n);
-    if (!*buf) return EL_ENOMEM;
-    return el__fit_run(model, xy, n, &ro, 0, NULL, alt, *buf, *buf + n);
+    return el__fit_run(model, xy, n, &ro, flags, res ? res->params : NULL, alt, *buf, *buf + n);
 }
 
 int el__fit_unpaired(int model, const double *xy, size_t n, const el_fit_options *opt, fit_out *res, double *d,
@@ -300,8 +286,7 @@ int el__fit_unpaired(int model, const double *xy, size_t n, const el_fit_options
     fit_out alt;
     double *buf;
     /* slipping: from this fit's curve; a skipped vertex: afresh, as distance="orthogonal" */
-    const int st = slips ? rerun_from(model, xy, n, opt, EL_DISTANCE_ORTHOGONAL, 0, res, &alt, &buf)
-                         : rerun_afresh(model, xy, n, opt, &alt, &buf);
+    const int st = rerun_from(model, xy, n, opt, EL_DISTANCE_ORTHOGONAL, 0, slips ? res : NULL, &alt, &buf);
     if (st != EL_ENOMEM && alt.status != -1 && alt.rms < res->rms) {
         if (slips) memcpy(alt.initial, res->initial, sizeof alt.initial);
         el__fit_replace(res, &alt, buf, n, d, fs);
