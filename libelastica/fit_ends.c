@@ -147,13 +147,9 @@ static int keep_lower(fit_out *res, int *st, fit_out *alt, int ast, const double
     if (!took || alt->status != ast || !(alt->rms < res->rms)) return 0;
     const int gain = alt->rms < (1.0 - FREE_ENDS_GAIN) * res->rms;
     memcpy(alt->initial, res->initial, sizeof alt->initial);
-    alt->iterations += res->iterations;
-    alt->candidates += res->candidates;
     alt->seen = res->seen;
     alt->seen.follows = 0;
-    if (d) memcpy(d, buf, sizeof(double) * n);
-    memcpy(fs, buf + n, sizeof(double) * n);
-    *res = *alt;
+    el__fit_replace(res, alt, buf, n, d, fs);
     *st = ast;
     return 1 + gain;
 }

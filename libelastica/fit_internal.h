@@ -743,8 +743,8 @@ int el__fit_ends_held(int model, const double *xy, size_t n, const el_fit_option
  * the fit kept, or EL_ENOMEM. */
 int el__fit_free_ends(const double *xy, size_t n, const el_fit_options *opt, int st, fit_out *res,
                       double *d, double *fs);
-/* fit_restart.c: *res (d, fs its distances and feet) replaced by the refit alt (buf: its
- * distances, then its feet), the iterations and candidates of both counted. */
+/* fit_restart.c: *res (d, fs its distances and feet; d may be NULL) replaced by the refit alt
+ * (buf: its distances, then its feet), the iterations and candidates of both counted. */
 void el__fit_replace(fit_out *res, fit_out *alt, const double *buf, size_t n, double *d, double *fs);
 /* fit_restart.c: a fit with constraint rows whose start-state chart is off (bounds or fixed
  * values on its slots) fitted again by the other optimiser (Ipopt's L-BFGS from each guess),

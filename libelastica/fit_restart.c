@@ -160,7 +160,7 @@ double el__fit_out_length(int model, size_t n, const fit_out *r)
 /* el__fit_replace: fit_internal.h */
 void el__fit_replace(fit_out *res, fit_out *alt, const double *buf, size_t n, double *d, double *fs)
 {
-    memcpy(d, buf, sizeof(double) * n);
+    if (d) memcpy(d, buf, sizeof(double) * n);
     memcpy(fs, buf + n, sizeof(double) * n);
     alt->iterations += res->iterations;
     alt->candidates += res->candidates;
