@@ -615,8 +615,7 @@ static int further_runs(fit_run_state *R, int st)
     /* a sketch's constrained fit that wanders: its constraints from other starts (not the
      * natural batten's, whose family was searched whole) */
     if (R->ok && model == FIT_SMOOTH && R->kind == FIT_ORTHOGONAL && o->constraints &&
-        n < FIT_SKETCH_POINTS && !R->natural && caller_fit && !inner &&
-        (st == EL_OK || st == EL_ENOCONV || st == EL_EMAXITER))
+        n < FIT_SKETCH_POINTS && !R->natural && caller_fit && !inner && fit_gave_curve(st))
         st = refitted(R, el__fit_sketch_follows_held(xy, n, R->opt, R->noise_rms * R->sc, &R->ob,
                                                      R->norm, R->res, R->d, R->fs));
     /* rows where bounds or fixed values keep the start-state chart off: the guesses all end in

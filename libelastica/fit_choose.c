@@ -138,9 +138,7 @@ static void start_rules(fit_run_state *R)
                       !o->use_initial && !lm_only && (!o->limited_memory || !need_ipopt) &&
                       !(o->constraints & EL_CONSTRAIN_K) && !(flags & FIT_RUN_ENDS_HELD);
     /* the caller's (o holds a start point in x0, y0) */
-    for (int j = 0; j < FIT_NP && R->smooth_start; j++)
-        if (R->opt->fixed[j] || isfinite(R->opt->lower[j]) || isfinite(R->opt->upper[j]))
-            R->smooth_start = 0;
+    R->smooth_start = R->smooth_start && fit_options_unbounded(R->opt);
     R->free_ci = (size_t)-1;
     /* without rows or bounds, Ipopt polishes only in el__fit_fallback's run (FIT_RUN_POLISH):
      * the fit kept, when Levenberg-Marquardt leaves it uncertified, not every guess and

@@ -91,9 +91,6 @@ static void swap_points(double *xy, double *a, double *b, size_t i, size_t j)
     if (b) { const double t = b[i]; b[i] = b[j]; b[j] = t; }
 }
 
-/* a run's result is a curve (converged, or the best seen) */
-static int gave_curve(int st) { return st == EL_OK || st == EL_ENOCONV || st == EL_EMAXITER; }
-
 /* The fit from the curve p (options ro) of the points with lo and hi moved first and last
  * (pxy: 2n), into *alt, its distances and feet into buf (2n, the caller's order); flags:
  * el__fit_run's. Its status. */
@@ -125,7 +122,7 @@ static int run_free(const double *xy, size_t n, const el_fit_options *ro, const 
     const double *af = buf + n;
     int st = run_tied(xy, n, ro, FIT_RUN_FREE_ENDS, res->params, 0, n - 1, alt, buf, pxy);
     if (st == EL_ENOMEM) return st;
-    if (!gave_curve(st)) return EL_EDOM;      /* no feet in af to scan */
+    if (!fit_gave_curve(st)) return EL_EDOM;      /* no feet in af to scan */
     size_t lo = 0, hi = 0;
     for (size_t i = 1; i < n; i++) {
         if (af[i] < af[lo]) lo = i;
@@ -143,7 +140,7 @@ static int run_free(const double *xy, size_t n, const el_fit_options *ro, const 
 static int keep_lower(fit_out *res, int *st, fit_out *alt, int ast, const double *buf, size_t n, double *d,
                       double *fs)
 {
-    const int took = ast == EL_OK || (*st != EL_OK && gave_curve(ast));
+    const int took = ast == EL_OK || (*st != EL_OK && fit_gave_curve(ast));
     if (!took || alt->status != ast || !(alt->rms < res->rms)) return 0;
     const int gain = alt->rms < (1.0 - FREE_ENDS_GAIN) * res->rms;
     memcpy(alt->initial, res->initial, sizeof alt->initial);
@@ -159,11 +156,9 @@ int el__fit_free_ends(const double *xy, size_t n, const el_fit_options *opt, int
 {
     el_fit_options ro;
     if (opt) ro = *opt; else el_fit_options_defaults(&ro);
-    int go = fs && res->distance == EL_DISTANCE_ORTHOGONAL && !ro.constraints && gave_curve(st) &&
-             st == res->status;
-    for (int j = 0; j < FIT_NP && go; j++)
-        go = !ro.fixed[j] && !isfinite(ro.lower[j]) && !isfinite(ro.upper[j]);
-    if (!go) return st;
+    if (!(fs && res->distance == EL_DISTANCE_ORTHOGONAL && !ro.constraints && fit_gave_curve(st) &&
+          st == res->status && fit_options_unbounded(&ro)))
+        return st;
     ro.use_initial = 1;
     ro.distance = EL_DISTANCE_ORTHOGONAL;
     double *buf = NULL;

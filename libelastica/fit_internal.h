@@ -42,6 +42,18 @@ enum fit_model { FIT_DISCRETE = 0, FIT_SMOOTH = 1 };
  * hypot, which costs several times as much in the per-point loops). */
 static inline double fit_norm(double x, double y) { return sqrt(x * x + y * y); }
 
+/* A run's status st gave a curve: converged, or the best seen (not an error, nor a
+ * constraint it could not meet). */
+static inline int fit_gave_curve(int st) { return st == EL_OK || st == EL_ENOCONV || st == EL_EMAXITER; }
+
+/* Nothing fixed or bounded in the options' FIT_NP slots. */
+static inline int fit_options_unbounded(const el_fit_options *o)
+{
+    for (int j = 0; j < FIT_NP; j++)
+        if (o->fixed[j] || isfinite(o->lower[j]) || isfinite(o->upper[j])) return 0;
+    return 1;
+}
+
 /*
  * Internal parameters of one curve (normalised coordinates):
  *   discrete v = (x0, y0, h, phi, z, q, k) with -1 < k < 0 allowed: the curve of

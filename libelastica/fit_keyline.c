@@ -221,7 +221,7 @@ static int fit_side(int model, const double *xy, size_t n, size_t split, int dir
     double p[FIT_NP];
     int st = el__fit_start(model, pts, m, &so, p, mode, iters, foot);
     free(pts);
-    if (st != EL_OK && st != EL_ENOCONV && st != EL_EMAXITER) return st;
+    if (!fit_gave_curve(st)) return st;
     for (int j = 0; j < FIT_NP; j++) sf->v[j] = el__fit_norm_param(model, j, p[j], cx, cy, sc);
     if (foot)
         for (size_t j = 0; j < m; j++) foot[j] /= sc;
@@ -309,7 +309,7 @@ static int whole_start(int model, const double *xy, size_t n, size_t split, cons
         wo.distance = EL_DISTANCE_PAIRED;
         wo.param_mode = EL_PARAM_CHORD;
         st = el__fit_start(model, sub, m, &wo, p, &mode, iters, sfeet);
-        if (st == EL_OK || st == EL_ENOCONV || st == EL_EMAXITER) {
+        if (fit_gave_curve(st)) {
             for (size_t j = 0; j + 1 < m; j++) {
                 const size_t a = whole_index(j, m, n), b = whole_index(j + 1, m, n);
                 for (size_t i = a; i <= b; i++)
@@ -317,13 +317,13 @@ static int whole_start(int model, const double *xy, size_t n, size_t split, cons
             }
         }
         free(sub);
-        if (st != EL_OK && st != EL_ENOCONV && st != EL_EMAXITER) return st == EL_ENOMEM ? st : EL_OK;
+        if (!fit_gave_curve(st)) return st == EL_ENOMEM ? st : EL_OK;
     } else {
         wo.distance = EL_DISTANCE_PAIRED;
         if (map->fixed_h > 0.0) { wo.fixed[2] = 1; wo.value[2] = o->value[2]; }
         int mode;
         st = el__fit_start(model, xy, n, &wo, p, &mode, iters, NULL);
-        if (st != EL_OK && st != EL_ENOCONV && st != EL_EMAXITER) return st == EL_ENOMEM ? st : EL_OK;
+        if (!fit_gave_curve(st)) return st == EL_ENOMEM ? st : EL_OK;
     }
     side_fit sf;
     for (int j = 0; j < FIT_NP; j++) sf.v[j] = el__fit_norm_param(model, j, p[j], cx, cy, sc);

@@ -8,6 +8,9 @@
 #include "fit_internal.h"
 #include <math.h>
 
+/* w = max(3, (n-1)/16): the run of segments or points each test averages over */
+static size_t pairing_window(size_t n) { return (n - 1) / 16 > 3 ? (n - 1) / 16 : 3; }
+
 /* Whether the points are spaced evenly along the data: the mean segment of every run
  * of w = max(3, (n-1)/16) consecutive segments within 1.3 x of each other's (a run's
  * mean evens out the noise of scanned samples taken at equal steps, not a change of
@@ -22,7 +25,7 @@
  * paired fit is then judged by its points' slip along the polygon (el__fit_unpaired). */
 int el__fit_evenly_spaced(const double *xy, size_t n)
 {
-    const size_t m = n - 1, w = m / 16 > 3 ? m / 16 : 3;
+    const size_t m = n - 1, w = pairing_window(n);
     if (m < w) return 1;
     double run = 0.0, lo = HUGE_VAL, hi = 0.0;
     for (size_t i = 0; i < m; i++) {
@@ -47,7 +50,7 @@ int el__fit_evenly_spaced(const double *xy, size_t n)
  * their noise) turns so at a few k near its ends (10 of bench_fit.py's 5000-point sets). */
 size_t el__fit_retrace(const double *xy, size_t n)
 {
-    const size_t w = (n - 1) / 16 > 3 ? (n - 1) / 16 : 3;
+    const size_t w = pairing_window(n);
     for (size_t i = w; i + w < n; i++) {
         size_t k = 1;
         for (; k <= w; k++) {
@@ -100,7 +103,7 @@ int el__fit_slips(size_t n, double h, double rms, const double *fs)
 
 int el__fit_skips(size_t n, double h, double rms, const double *fs)
 {
-    const size_t w = (n - 1) / 16 > 3 ? (n - 1) / 16 : 3;
+    const size_t w = pairing_window(n);
     const double wd = (double)w, noise = 4.0 * sqrt(2.0 / wd) * rms / h;
     if (n < 2 * w || !(noise <= 1.0)) return 0;
     double before = 0.0, after = 0.0, top = 0.0;

@@ -13,13 +13,6 @@
 
 /* ------------------------------------------------------------ further starts */
 
-/* A fit's result is a curve: converged, or the best seen (not an error, nor a
- * constraint it could not meet). */
-static int gave_curve(const fit_out *r)
-{
-    return r->status == EL_OK || r->status == EL_ENOCONV || r->status == EL_EMAXITER;
-}
-
 /* A constrained fit's last start, when every guess ended far above the noise: the fit
  * without the constraints (the caller's fixed parameters and bounds kept), whose curve
  * lies in the data's basin, normalised into v. The guesses are started with the
@@ -39,7 +32,7 @@ int el__fit_unconstrained_start(int model, const double *xy, size_t n, const el_
     fo.status = -1;
     const int st = el__fit_run(model, xy, n, &f, FIT_RUN_LM_ONLY, NULL, &fo, NULL, NULL);    /* a start: no Ipopt */
     if (st == EL_ENOMEM) return st;
-    if (!gave_curve(&fo) || !(fo.f < f_below))
+    if (!fit_gave_curve(fo.status) || !(fo.f < f_below))
         return EL_EDOM;
     for (int j = 0; j < FIT_NP; j++) v[j] = el__fit_norm_param(model, j, fo.params[j], cx, cy, sc);
     return el__all_finite(v, FIT_NP) ? EL_EDOM : EL_OK;
@@ -82,7 +75,7 @@ int el__fit_smooth_start(const double *xy, size_t n, const el_fit_options *opt, 
     fo.status = -1;
     const int st = el__fit_run_either_way(FIT_SMOOTH, xy, n, &so, flags, NULL, &fo, NULL, NULL);
     if (st == EL_ENOMEM) return st;
-    if (!gave_curve(&fo)) return EL_EDOM;
+    if (!fit_gave_curve(fo.status)) return EL_EDOM;
     double p[FIT_NP];
     continuum_limit(FIT_DISCRETE, n, fo.params, p);
     for (int j = 0; j < FIT_NP; j++) v[j] = el__fit_norm_param(FIT_DISCRETE, j, p[j], cx, cy, sc);
@@ -133,7 +126,7 @@ int el__fit_conjugate_start(const double *xy, size_t n, const el_fit_options *op
     const int st = el__fit_run(FIT_SMOOTH, xy, n, &f, FIT_RUN_LM_ONLY | FIT_RUN_INNER, NULL, &fo,
                                NULL, NULL);
     if (st == EL_ENOMEM) return st;
-    if (!gave_curve(&fo)) return EL_EDOM;
+    if (!fit_gave_curve(fo.status)) return EL_EDOM;
     el_smooth_params c = {fo.params[0], fo.params[1], fo.params[2], fo.params[3], fo.params[4],
                           fo.params[5], fo.params[6]};
     const double chord = chord_of(&c);
@@ -189,7 +182,7 @@ int el__fit_follow_points(int model, const double *xy, size_t n, const el_fit_op
     paired.status = -1;
     int st = el__fit_run(model, xy, n, &po, FIT_RUN_INNER, NULL, &paired, NULL, NULL);
     if (st == EL_ENOMEM) return st;
-    if (!gave_curve(&paired) && po.constraints) {
+    if (!fit_gave_curve(paired.status) && po.constraints) {
         /* no paired curve meets the held constraints: the unconstrained fit by distance,
          * which follows the points, as the start */
         po.constraints = 0;
@@ -199,7 +192,7 @@ int el__fit_follow_points(int model, const double *xy, size_t n, const el_fit_op
         if ((st = el__fit_run(model, xy, n, &po, FIT_RUN_INNER, NULL, &paired, NULL, NULL)) == EL_ENOMEM) return st;
         po.constraints = opt->constraints;
     }
-    if (!gave_curve(&paired)) return EL_OK;
+    if (!fit_gave_curve(paired.status)) return EL_OK;
     double *buf = malloc(sizeof(double) * 2 * n);
     if (!buf) return EL_ENOMEM;
     po.distance = EL_DISTANCE_ORTHOGONAL;
@@ -208,7 +201,7 @@ int el__fit_follow_points(int model, const double *xy, size_t n, const el_fit_op
     fo.status = -1;
     st = el__fit_run(model, xy, n, &po, FIT_RUN_INNER, paired.params, &fo, buf, buf + n);
     /* the refit's own stray; -1 (out of memory) and a refit without a curve: not kept */
-    const double refit_stray = st != EL_ENOMEM && gave_curve(&fo)
+    const double refit_stray = st != EL_ENOMEM && fit_gave_curve(fo.status)
         ? el__fit_stray(xy, n, buf + n, el__fit_out_length(model, n, &fo), noise, scale) : -1.0;
     const double stray_rms = res->rms;    /* the fit that strays */
     int follows = stray <= FIT_STRAY;     /* *res follows its points */
@@ -228,9 +221,9 @@ int el__fit_follow_points(int model, const double *xy, size_t n, const el_fit_op
      * 45 orientations by the smooth model and 38 by the discrete, up to 0.045 at the others,
      * the paired refit that follows the points 3.6 x the straying fit's; with this start
      * 0.0090 at 42 by both models. 150 random sketches: no rms changed) */
-    int other_ok = st != EL_ENOMEM && !po.constraints && !(flags & FIT_RUN_NO_OTHER) && (!follows || res->rms > stray_rms);
-    for (int j = 0; j < FIT_NP && other_ok; j++)     /* the parameters mean other things in the other model */
-        other_ok = !po.fixed[j] && !isfinite(po.lower[j]) && !isfinite(po.upper[j]);
+    /* (fixed values and bounds: the parameters mean other things in the other model) */
+    const int other_ok = st != EL_ENOMEM && !po.constraints && !(flags & FIT_RUN_NO_OTHER) &&
+                         (!follows || res->rms > stray_rms) && fit_options_unbounded(&po);
     if (other_ok) {
         el_fit_options oo = po;
         oo.distance = EL_DISTANCE_AUTO;
@@ -240,13 +233,13 @@ int el__fit_follow_points(int model, const double *xy, size_t n, const el_fit_op
         other.status = -1;
         st = el__fit_run(model == FIT_SMOOTH ? FIT_DISCRETE : FIT_SMOOTH, xy, n, &oo, FIT_RUN_NO_OTHER | FIT_RUN_INNER,
                          NULL, &other, NULL, NULL);
-        if (st != EL_ENOMEM && gave_curve(&other)) {
+        if (st != EL_ENOMEM && fit_gave_curve(other.status)) {
             double p[FIT_NP];
             continuum_limit(model, n, other.params, p);
             memset(&fo, 0, sizeof fo);
             fo.status = -1;
             st = el__fit_run(model, xy, n, &po, FIT_RUN_INNER, p, &fo, buf, buf + n);
-            const double other_stray = st != EL_ENOMEM && gave_curve(&fo)
+            const double other_stray = st != EL_ENOMEM && fit_gave_curve(fo.status)
                 ? el__fit_stray(xy, n, buf + n, el__fit_out_length(model, n, &fo), noise, scale) : -1.0;
             if (other_stray >= 0.0 && other_stray <= FIT_STRAY && fo.rms < res->rms) {
                 fo.iterations += other.iterations;
@@ -377,8 +370,8 @@ int el__fit_refit_lower(int model, const double *xy, size_t n, const el_fit_opti
     const int st = el__fit_run(model, xy, n, opt, flags | FIT_RUN_INNER, NULL, &alt, buf, buf + n);
     /* lower, or where the first fit gave none that meets the constraints (an uncertified one
      * that does is kept when lower: it is the better fit, only its certificate is missing) */
-    const int none = res->status != EL_OK && res->status != EL_ENOCONV && res->status != EL_EMAXITER;
-    if (st == EL_OK && (none || alt.rms < res->rms * (1.0 - margin))) el__fit_replace(res, &alt, buf, n, d, fs);
+    if (st == EL_OK && (!fit_gave_curve(res->status) || alt.rms < res->rms * (1.0 - margin)))
+        el__fit_replace(res, &alt, buf, n, d, fs);
     free(buf);
     return st == EL_ENOMEM ? st : res->status;
 }
@@ -461,8 +454,7 @@ int el__fit_run_either_way(int model, const double *xy, size_t n, const el_fit_o
 {
     int plain = !opt || !xy || n < 4 || opt->use_initial || (model == FIT_SMOOTH && (opt->constraints & EL_CONSTRAIN_K)) ||
                 el__fit_held_score(opt, model, 1) <= el__fit_held_score(opt, model, 0);
-    for (int j = 0; j < FIT_NP && !plain; j++)
-        plain = opt->fixed[j] || isfinite(opt->lower[j]) || isfinite(opt->upper[j]);
+    plain = plain || !fit_options_unbounded(opt);
     if (plain && opt && opt->use_initial && init && xy && n >= 4) {   /* run as the points */
         double p[FIT_NP];
         memcpy(p, init, sizeof p);
@@ -661,7 +653,7 @@ static int lowest_that_follows(const double *xy, size_t n, const el_fit_options 
         iters += alt.iterations;
         /* a bounded run left unconverged is not kept (its fair fits of 6 points pinned at both
          * ends stalled, EL_ENOCONV or EL_EMAXITER, where the tighter bound's converged) */
-        if (st == EL_ENOMEM || !gave_curve(&alt) || (c >= ns && alt.status != EL_OK)) continue;
+        if (st == EL_ENOMEM || !fit_gave_curve(alt.status) || (c >= ns && alt.status != EL_OK)) continue;
         /* a start's fit judged as before the swing rule (el__fit_gap_sag): judged by it too, a
          * fit of 5 points straying along 5.7 x their curve's length stayed, where a start's
          * fit along 1.44 x, which swings, had replaced it */
@@ -772,9 +764,9 @@ int el__fit_sketch_follows_held(const double *xy, size_t n, const el_fit_options
     memset(&alt, 0, sizeof alt);
     alt.status = -1;
     if (el__fit_run(FIT_SMOOTH, xy, n, &go, 0, NULL, &alt, NULL, NULL) == EL_ENOMEM ||
-        add_guesses(xy, n, &go, starts + gave_curve(&alt), &ns) == EL_ENOMEM)
+        add_guesses(xy, n, &go, starts + fit_gave_curve(alt.status), &ns) == EL_ENOMEM)
         return EL_ENOMEM;
-    if (gave_curve(&alt)) { memcpy(starts[0], alt.params, sizeof starts[0]); ns++; }
+    if (fit_gave_curve(alt.status)) { memcpy(starts[0], alt.params, sizeof starts[0]); ns++; }
     go = *opt;
     go.use_initial = 1;     /* each run polished (flags 0) */
     return lowest_that_follows(xy, n, &go, 0, (const double (*)[FIT_NP])starts, ns,
