@@ -64,9 +64,8 @@ static int extremes(const double *p, const double *xy, const double *fs, size_t 
     return a < b ? EL_OK : EL_EDOM;
 }
 
-/* The smooth curve p (input units) cut to [a, b] of its arc length: the start moved to
- * gamma(a) with q + sqrt(mu) a (u = sqrt(mu) s + q, seed 000 (4.2)), the length b - a. */
-static int cut(double *p, double a, double b)
+/* el__fit_cut: fit_internal.h */
+int el__fit_cut(double *p, double a, double b)
 {
     const el_smooth_params c = {p[0], p[1], p[2], p[3], p[4], p[5], p[6]};
     double xy[2];
@@ -128,7 +127,7 @@ static int run_free(const double *xy, size_t n, const el_fit_options *ro, const 
         if (af[i] < af[lo]) lo = i;
         if (af[i] > af[hi]) hi = i;
     }
-    if (!(af[hi] > af[lo]) || cut(alt->params, af[lo], af[hi])) return EL_EDOM;
+    if (!(af[hi] > af[lo]) || el__fit_cut(alt->params, af[lo], af[hi])) return EL_EDOM;
     double p[FIT_NP];
     memcpy(p, alt->params, sizeof p);
     return run_tied(xy, n, ro, 0, p, lo, hi, alt, buf, pxy);

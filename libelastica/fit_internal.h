@@ -755,6 +755,11 @@ int el__fit_ends_held(int model, const double *xy, size_t n, const el_fit_option
  * the fit kept, or EL_ENOMEM. */
 int el__fit_free_ends(const double *xy, size_t n, const el_fit_options *opt, int st, fit_out *res,
                       double *d, double *fs);
+/* fit_ends.c: the smooth curve p (FIT_NP, el_smooth_params' order) cut to [a, b] of its arc
+ * length: the start moved to gamma(a) with q + sqrt(mu) a (u = sqrt(mu) s + q, seed 000
+ * (4.2)), the length b - a, so that the cut curve at s is gamma(a + s) (tests/c/
+ * test_fit_cut.c). EL_OK or el_smooth_eval's error (p unchanged). */
+int el__fit_cut(double *p, double a, double b);
 /* fit_restart.c: *res (d, fs its distances and feet; d may be NULL) replaced by the refit alt
  * (buf: its distances, then its feet), the iterations and candidates of both counted. */
 void el__fit_replace(fit_out *res, fit_out *alt, const double *buf, size_t n, double *d, double *fs);
