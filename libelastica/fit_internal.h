@@ -42,16 +42,15 @@ enum fit_model { FIT_DISCRETE = 0, FIT_SMOOTH = 1 };
  * hypot, which costs several times as much in the per-point loops). */
 static inline double fit_norm(double x, double y) { return sqrt(x * x + y * y); }
 
-/* A run's status st gave a curve: converged, or the best seen (not an error, nor a
- * constraint it could not meet). */
+/* a run's status st gave a curve: converged or the best seen (not an error, nor unmet rows) */
 static inline int fit_gave_curve(int st) { return st == EL_OK || st == EL_ENOCONV || st == EL_EMAXITER; }
 
-/* Nothing fixed or bounded in the options' FIT_NP slots. */
+/* nothing fixed or bounded in the options' FIT_NP slots */
 static inline int fit_options_unbounded(const el_fit_options *o)
 {
-    for (int j = 0; j < FIT_NP; j++)
-        if (o->fixed[j] || isfinite(o->lower[j]) || isfinite(o->upper[j])) return 0;
-    return 1;
+    int j = 0;
+    while (j < FIT_NP && !o->fixed[j] && !isfinite(o->lower[j]) && !isfinite(o->upper[j])) j++;
+    return j == FIT_NP;
 }
 
 /*
@@ -755,10 +754,9 @@ int el__fit_ends_held(int model, const double *xy, size_t n, const el_fit_option
  * the fit kept, or EL_ENOMEM. */
 int el__fit_free_ends(const double *xy, size_t n, const el_fit_options *opt, int st, fit_out *res,
                       double *d, double *fs);
-/* fit_ends.c: the smooth curve p (FIT_NP, el_smooth_params' order) cut to [a, b] of its arc
- * length: the start moved to gamma(a) with q + sqrt(mu) a (u = sqrt(mu) s + q, seed 000
- * (4.2)), the length b - a, so that the cut curve at s is gamma(a + s) (tests/c/
- * test_fit_cut.c). EL_OK or el_smooth_eval's error (p unchanged). */
+/* fit_ends.c: the smooth curve p cut to [a, b] of its arc length, gamma_cut(s) = gamma(a + s)
+ * (test_fit_cut.c): start gamma(a), q + sqrt(mu) a (seed 000 (4.2)), length b - a. EL_OK or
+ * el_smooth_eval's error (p unchanged). */
 int el__fit_cut(double *p, double a, double b);
 /* fit_restart.c: *res (d, fs its distances and feet; d may be NULL) replaced by the refit alt
  * (buf: its distances, then its feet), the iterations and candidates of both counted. */
@@ -769,10 +767,9 @@ void el__fit_replace(fit_out *res, fit_out *alt, const double *buf, size_t n, do
  * of it); res->status, or EL_ENOMEM. */
 int el__fit_other_path(int model, const double *xy, size_t n, const el_fit_options *opt, fit_out *res,
                        double *d, double *fs);
-/* fit_restart.c: the fit of the points afresh (el__fit_run with opt, flags | FIT_RUN_INNER),
- * which replaces *res (d, fs) when certified (EL_OK) and its rms is below res->rms (1 -
- * margin), or where *res is no curve; res->status, or EL_ENOMEM (el__fit_ends_held,
- * el__fit_other_path). */
+/* fit_restart.c: el__fit_run afresh (opt, flags | FIT_RUN_INNER), which replaces *res (d, fs)
+ * when certified and below res->rms (1 - margin), or where *res is no curve; res->status, or
+ * EL_ENOMEM (el__fit_ends_held, el__fit_other_path). */
 int el__fit_refit_lower(int model, const double *xy, size_t n, const el_fit_options *opt, int flags, double margin,
                         fit_out *res, double *d, double *fs);
 
