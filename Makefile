@@ -117,7 +117,9 @@ $(BUILD)/libelastica.so: $(LIB_OBJ) libelastica/exports.map
 	ln -sf libelastica.so.$(VERSION) $(BUILD)/$(SONAME)
 	ln -sf $(SONAME) $@
 
+# made afresh: ar r keeps the members of objects whose sources were deleted
 $(BUILD)/libelastica.a: $(LIB_OBJ)
+	rm -f $@
 	ar rcs $@ $^
 
 # ------------------------------------------------------------------ tests
