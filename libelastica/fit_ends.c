@@ -18,15 +18,19 @@
  * kept when certified as the fit was and of lower rms; the rounds go on while one lowers it
  * by FREE_ENDS_GAIN. A fit without such a pile is not touched (one count of its feet).
  * Measured: QA's 40 draws of such scans (s ~ u^1.5 .. u^4), smooth rms / the truth's on the
- * same points 0.894-0.997 (before: 0.941-1.707, 14 above 1); bench_fit.py's 252 smooth fits
- * (per_cell 21): 50 piled, each lower (by up to 18 %), the 202 others bit-identical.
+ * same points 0.894-0.997 (before: 0.941-1.707, 14 above 1); bench_fit.py's smooth fits, whose
+ * noise piles a few feet (below one in FREE_ENDS_SHARE), untouched.
  */
 #include "fit_internal.h"
 #include <stdlib.h>
 #include <string.h>
 
-/* points other than the end's own with their foot at that end that start the refit */
-enum { FREE_ENDS_PILE = 3 };
+/* points other than the end's own with their foot at that end that start the refit: at
+ * least FREE_ENDS_PILE and one in FREE_ENDS_SHARE of all (noise alone piles a few: on
+ * bench_fit.py's noisy 1000- and 5000-point smooth fits up to 8 of 1000 and 67 of 5000, whose
+ * refits cost 5 x a fit and took 22 MiB more at 10^6 points for a lower rms by < 1e-3 of
+ * it; QA's scans dense at one end pile 8..56 of 200) */
+enum { FREE_ENDS_PILE = 3, FREE_ENDS_SHARE = 50 };
 /* rounds at most: each from the last one's fit, tied to its extremes, while that lowers the
  * rms (on a 1000-point scan, noise 1 %, 9 rounds crept to the optimum, 0.056338 -> 0.056019,
  * where L-BFGS's free run reached it at once) */
@@ -165,7 +169,8 @@ int el__fit_free_ends(const double *xy, size_t n, const el_fit_options *opt, int
     for (int round = 0; round < FREE_ENDS_ROUNDS; round++) {
         const double L = res->params[6];
         size_t lo = 0, hi = n - 1;
-        if ((!round && piled(fs, n, L, 0) < FREE_ENDS_PILE && piled(fs, n, L, n - 1) < FREE_ENDS_PILE) ||
+        const size_t pile = n / FREE_ENDS_SHARE > FREE_ENDS_PILE ? n / FREE_ENDS_SHARE : FREE_ENDS_PILE;
+        if ((!round && piled(fs, n, L, 0) < pile && piled(fs, n, L, n - 1) < pile) ||
             extremes(res->params, xy, fs, n, &lo, &hi) || (round && lo == was[0] && hi == was[1]))
             break;
         if (!buf && !(buf = malloc(sizeof(double) * 4 * n))) return EL_ENOMEM;
