@@ -563,10 +563,9 @@ int el_fit_smooth(const double *xy, size_t n, const el_fit_options *opt,
  * point's distance to the smooth curve under it (its normal part: sigma for noise of sigma
  * per coordinate), input units; the median over up to 65536 third differences, in which a
  * smooth curve's turning cancels, in the frame of each stencil's chord where the spacing is
- * uneven, of every k-th point where they see more noise and span the noise band, k doubled
- * until they do (points sorted along their curve, spacing below the noise: a dense scan in
- * curve order, 0.85-1.15 x the noise at spacing 1/100 .. 2 x it; a polygon resampled densely
- * along noisy points) (the figure el_fit_* stop at, 1.5 x it). The fit's rms on noisy elasticae is
+ * uneven, of every (n / 1000)-th point where they see more noise (2000 points or more
+ * sorted along their curve, spacing below the noise: a dense scan in curve order; a
+ * polygon resampled densely along noisy points) (the figure el_fit_* stop at, 1.5 x it). The fit's rms on noisy elasticae is
  * 0.9-1.1 x it on dense scans, 0.5-2.1 x on sketches of 15-30 points, whose bending enters
  * it (bench/bench_fit.py's 504 curves, tests/python/fit_data.py's sets); points along a curve
  * that is not one elastica lie farther from its fit: a line meeting an elastica at a corner,

@@ -8,17 +8,11 @@
 #include <stdlib.h>
 #include <gsl/gsl_statistics_double.h>
 
-/* stencils at most (evenly spread), the frame's probe */
-enum { NOISE_SAMPLES = 65536, FRAME_PROBE = 32 };
-/* spread_noise's search of the stride k: stencils of its probes, and at least at a stride
- * taken; the chords' span of the band (SPREAD_SPAN x the figure's noise, rms per point /
- * sqrt 2, and SPREAD_ALONG x the half stride's chords), the figure's growth from the half
- * stride's taken for noise (SPREAD_GROW), the chords' shrinking that ends the search
- * (SPREAD_BACK), the probe's figure over the smaller one that has all stencils looked at
- * (SPREAD_LOOK) and their figure's that is taken (SPREAD_TAKE) */
-enum { SPREAD_PROBE = 256, SPREAD_MIN = 200 };
-static const double SPREAD_SPAN = 14.0, SPREAD_ALONG = 1.8, SPREAD_GROW = 1.5, SPREAD_BACK = 0.8,
-                    SPREAD_LOOK = 1.1, SPREAD_TAKE = 1.25;
+/* stencils at most (evenly spread), the frame's probe, every k-th point's check (noise_rms) */
+enum { NOISE_SAMPLES = 65536, FRAME_PROBE = 32, SPREAD_POINTS = 1000, SPREAD_CONFIRM = 2 };
+/* noise_rms's sorted-points test: every k-th point's figure over the plain one, and the
+ * every 2k-th's over the k-th's */
+static const double SPREAD_SORTED = 1.4, SPREAD_SAME = 2.0;
 
 /* Noise level of the points (rms per point), the smaller of two estimates (both from
  * third differences, in which a smooth curve's turning cancels; second differences carry
@@ -58,19 +52,15 @@ static double noise_plain(const double *xy, size_t n, double sc, double *d)
  * and median 0.454936 of that (a chi-square of one degree). On equal spacing w is
  * (-1, 3, -3, 1) (measured: within 1.05x of the truth on dense curves, 0.1 % and 1 %
  * noise, uniform, random or sketched spacing; 1.07x on 20 random points, 0.1 %).
- * The stencils are of every k-th point (P_b, P_{b+k} .. P_{b+5k}, b evenly spread over the
- * n - 5k starts); with chord, d holds 2 cap doubles and *chord is the median of the chords
- * |P_{b+5k} - P_b| (normalised). */
-static double noise_frame(const double *xy, size_t n, size_t k, double sc, size_t cap, double *d,
-                          double *chord)
+ * The n points are every k-th of xy (point i at xy + 2 k i). */
+static double noise_frame(const double *xy, size_t n, size_t k, double sc, size_t cap, double *d)
 {
-    const size_t span = n - 5 * k, m = span < cap ? span : cap, step = 2 * k;
+    const size_t span = n - 5, m = span < cap ? span : cap, step = 2 * k;
     const double inv = 1.0 / sc;
-    double *u2s = d + cap;
     size_t cnt = 0;
     for (size_t a = 0; a < m; a++) {
-        const size_t b = a * span / m;
-        const double *lo = xy + 2 * b, *o = lo + step, *hi = o + 4 * step;
+        const size_t i = 2 + a * span / m;
+        const double *lo = xy + step * (i - 2), *o = lo + step, *hi = o + 4 * step;
         /* the frame's direction U unnormalised: e scales as |U| (y as |U|, w as |U|^3) */
         const double ux = (hi[0] - lo[0]) * inv, uy = (hi[1] - lo[1]) * inv;
         const double u2 = ux * ux + uy * uy;
@@ -101,71 +91,55 @@ static double noise_frame(const double *xy, size_t n, size_t k, double sc, size_
             num += wj * y[j];
             w2 += wj * wj;
         }
-        if (chord) u2s[cnt] = u2;
         d[cnt++] = num * num / (w2 * u2);
     }
-    if (chord) *chord = 0.0;
     if (cnt == 0) return HUGE_VAL;
-    if (chord) *chord = sqrt(gsl_stats_median(u2s, 1, cnt));
     const double med = gsl_stats_median(d, 1, cnt);
     return sqrt(2.0 * med / 0.45493642311957283);
 }
 
-/* The frame figure of every k-th point where it is the noise's and exceeds the smaller
- * figure fig SPREAD_TAKE x, else fig. Points sorted along their curve (a dense scan in curve
- * order: spacing h far below the noise sigma) lie nearly in line along it, scattered across:
- * stencils of consecutive points run across the band and see a fraction of the noise (1e5
- * points along 3 units, noise 0.05: 0.0017), plain third differences the part across alone
- * (0.57 of it). Stencils of every k-th point span the band once 5 k h is well above sigma:
- * the stride doubles (k = 2, 4, ..., SPREAD_MIN stencils at least) until their chords span
- * the band (inside it they stay ~sigma while the figure grows ~2 x per doubling; short of
- * SPREAD_SPAN the order's error along the curve still lifts the figure, 1.1-1.4 x at chords
- * of 3-6 sigma in el.curve_order's) and the figure has stopped growing (a curve's cubic term
- * grows 8 x, pure noise's is stable; noise correlated from point to point, a polygon
- * resampled densely along noisy points, grows until the stride passes its correlation).
- * Each stride is judged by a probe of SPREAD_PROBE stencils. Measured (noise 0.05, spacing
- * 1/100 .. 2 x it, 1000 .. 1e5 points, in their order, sorted by a noisy key or in
- * el.curve_order): 0.90-1.10 x the noise, 0.85-1.15 at 4000 points and spacing 1/100 (the
- * stride taken, 256, leaves few stencils apart); given order, where the plain figure is the
- * noise's, no stride's is taken (bench_fit.py's 504 curves: the same figures, but for 12
- * noise-free 5000-point sets that the every (n / 1000)-th point's check took their curve's
- * cubic term at for noise, 128 x their figure now; their fits unchanged). */
-static double spread_noise(const double *xy, size_t n, double sc, double fig, double *d)
-{
-    double f0, c0, f1, c1;
-    if (n < 10 + SPREAD_MIN) return fig;
-    f0 = noise_frame(xy, n, 1, sc, SPREAD_PROBE, d, &c0);
-    for (size_t k = 2; 5 * k + SPREAD_MIN <= n; k *= 2, f0 = f1, c0 = c1) {
-        f1 = noise_frame(xy, n, k, sc, SPREAD_PROBE, d, &c1);
-        if (!(c1 >= SPREAD_BACK * c0)) return fig;      /* past a turn: a loop's, no band's */
-        const int spans = c1 >= SPREAD_ALONG * c0 && c1 >= SPREAD_SPAN * 0.70710678118654752 * f1;
-        if (!(spans && f1 < SPREAD_GROW * f0)) continue;
-        if (!(f1 > SPREAD_LOOK * fig)) return fig;
-        const double wide = noise_frame(xy, n, k, sc, NOISE_SAMPLES, d, NULL);
-        return wide > SPREAD_TAKE * fig && isfinite(wide) ? wide : fig;
-    }
-    return fig;
-}
-
-/* The smaller figure (or spread_noise's), d the stencils' buffer (NOISE_SAMPLES or n - 3
- * doubles, 2 SPREAD_PROBE at least). */
+/* The smaller figure, d the stencils' buffer (NOISE_SAMPLES or n - 3 doubles). */
 static double noise_rms(const double *xy, size_t n, double sc, double *d)
 {
     const double plain = noise_plain(xy, n, sc, d);
-    double frame = n >= 6 ? noise_frame(xy, n, 1, sc, FRAME_PROBE, d, NULL) : HUGE_VAL;
+    double frame = n >= 6 ? noise_frame(xy, n, 1, sc, FRAME_PROBE, d) : HUGE_VAL;
     /* beyond the probe's FRAME_PROBE stencils all of them only where the probe is below half
      * of plain: equally spaced data keep the plain figure to the bit at the probe's cost
      * (report_drv.c's 42 1000-point fits: +0.2 % instructions; all stencils: +3.8 %) */
     if (n - 5 > FRAME_PROBE)
-        frame = frame < 0.5 * plain ? noise_frame(xy, n, 1, sc, NOISE_SAMPLES, d, NULL) : HUGE_VAL;
-    return spread_noise(xy, n, sc, fmin(plain, frame), d);
+        frame = frame < 0.5 * plain ? noise_frame(xy, n, 1, sc, NOISE_SAMPLES, d) : HUGE_VAL;
+    /* points sorted along their curve (a dense scan in curve order, the spacing far below
+     * the noise) lie nearly in line along it, scattered across: each stencil's chord runs
+     * across the band, its cubic along the scatter, and the frame sees a fraction of the
+     * noise (1e5 points, noise 0.05: 0.0014). The stencils of every k-th point span the
+     * band: where their figure exceeds the plain one and SPREAD_CONFIRM x the frame's, it
+     * is taken (noise-free curves: far below the plain figure; noisy uneven scans: about
+     * the frame's). Less dense (4e3 and 1e4 points there: spacing 0.5 and 0.2 x the noise)
+     * the frame sees most of the noise and stays above half the plain figure, which sees
+     * its part across alone: a chi-square of one degree read as two, sqrt(0.455 / 1.386) =
+     * 0.57 of it. So the figure of every k-th point is also taken where it exceeds the
+     * plain one SPREAD_SORTED x and is noise, the same at every 2k-th point (a smooth
+     * curve's cubic term grows 8 x). Measured on the 504-curve suite's 5000-point sets
+     * (noise 0.1 and 1 %): in their order the k-th points' figure is 0.93-1.18 x the plain
+     * one; in curve order, where taken, 1.62-2.38 x, the 2k-th's 0.80-1.43 x the k-th's;
+     * noise-free, the 2k-th's 7.9-8.1 x. A polygon resampled densely along noisy points
+     * (noise correlated from vertex to vertex, which third differences cancel) is taken
+     * too: 4164 vertices at noise 0.5, 0.035 -> 0.34. k = n / SPREAD_POINTS, read in place. */
+    if (n >= 2 * SPREAD_POINTS) {
+        const size_t k = n / SPREAD_POINTS;
+        const double wide = noise_frame(xy, n / k, k, sc, NOISE_SAMPLES, d);
+        if (frame < plain && wide > SPREAD_CONFIRM * frame && wide > plain) return wide;
+        if (wide > SPREAD_SORTED * plain &&
+            noise_frame(xy, n / (2 * k), 2 * k, sc, NOISE_SAMPLES, d) < SPREAD_SAME * wide)
+            return wide;
+    }
+    return fmin(plain, frame);
 }
 
 /* One of the figures (plain alone, or as noise_rms picks) with its stencils' buffer */
 static int noise_figure(const double *xy, size_t n, double sc, int plain_only, double *figure)
 {
-    const size_t m = n - 3 < NOISE_SAMPLES ? n - 3 : NOISE_SAMPLES;
-    double *d = malloc(sizeof(double) * (m > 2 * SPREAD_PROBE ? m : 2 * SPREAD_PROBE));
+    double *d = malloc(sizeof(double) * (n - 3 < NOISE_SAMPLES ? n - 3 : NOISE_SAMPLES));
     if (!d) return EL_ENOMEM;
     *figure = plain_only ? noise_plain(xy, n, sc, d) : noise_rms(xy, n, sc, d);
     free(d);

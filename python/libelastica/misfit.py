@@ -76,15 +76,15 @@ class Misfit(ValueEquality):
 def noise_level(points) -> float:
     """The points' own noise level (n >= 4, (n, 2)): the rms of a point's distance to the
     smooth curve under it, from the points alone (no fit): the larger of el_fit_noise's
-    (third differences; of every k-th point where the points are denser than their noise and
-    sorted along their curve) and, from WINDOW_POINTS points on, :func:`window_noise`'s."""
+    (third differences) and, from WINDOW_POINTS points on, :func:`window_noise`'s, of them
+    and of every k-th of them (_spread_noise)."""
     pts = as_points(points, "noise_level: points", 2, 4)    # (third differences)
     return _noise_level(pts, _noise(pts))
 
 
 def _noise_level(pts: np.ndarray, plain: float) -> float:
     """noise_level of checked points whose _noise is ``plain``."""
-    return max(plain, window_noise(pts))
+    return max(plain, window_noise(pts), _spread_noise(pts))
 
 
 def _noise(pts: np.ndarray) -> float:
@@ -106,12 +106,17 @@ _WINDOW_MEDIAN = 0.9401
 
 # Points sorted along their curve (curve_order's of a dense scan, its spacing far below the
 # noise) are nearly in line along it and scattered across it: windows of consecutive points
-# run across the band and see a fraction of the noise (one elastica, noise 0.05, curve order:
-# 3e4 points 0.015, 1e5 0.0045). el_fit_noise's figure is then that of every k-th point, the
-# stride doubled until its stencils span the band (fit_noise.c's spread_noise): 0.85-1.15 x
-# the noise at spacing 1/100 .. 2 x it. window_noise of every (n // 2000)-th point, which
-# noise_level also took before, was at most 1.017 x the larger of the two (1000 .. 6e4 points
-# at spacing 1/200 .. 2 x the noise, in their order, sorted by a noisy key, in curve order).
+# are narrower along the curve than across, their cubics run across the band and see a
+# fraction of the noise (el_fit_noise's stencils likewise). Measured on one elastica, noise
+# 0.05, curve order (its given order 0.050 either way): 3e4 points 0.0055 and 0.015, 1e5
+# 0.0014 and 0.0045; window_noise of every (n // SPREAD_POINTS)-th point: 0.050, 0.049.
+SPREAD_POINTS = 2000
+
+
+def _spread_noise(pts: np.ndarray) -> float:
+    """window_noise of every k-th point, k = n // SPREAD_POINTS (0 below 2 x SPREAD_POINTS)."""
+    k = len(pts) // SPREAD_POINTS
+    return window_noise(pts[::k]) if k >= 2 else 0.0
 
 
 def _polyfits(t: np.ndarray, Y: np.ndarray, degree: int, max_cond: Optional[float] = None):
