@@ -7,7 +7,7 @@
  * at least as good as the truth by its own measure, the point-to-curve rms (the truth's from
  * 60001 samples of it, nearest by brute force: independent of the fit), and span its points:
  * its feet from 0 to its length. fit_ends.c refits such fits with their ends free. */
-#include "testutil.h"
+#include "sketch_check.h"
 
 enum { NPTS = 200, NSAMPLES = 60001 };
 static const el_smooth_params TRUTH = {0.0, 0.0, 0.1, 0.04, 0.75, -0.9, 30.0};
@@ -15,7 +15,6 @@ static const el_smooth_params TRUTH = {0.0, 0.0, 0.1, 0.04, 0.75, -0.9, 30.0};
 /* The scan (dense at the start, or at the end), its points' rms distance to the truth. */
 static double scan(double p, int dense_end, unsigned long long seed, double *xy)
 {
-    static double S[NSAMPLES], T[2 * NSAMPLES];
     double s[NPTS];
     for (size_t i = 0; i < NPTS; i++) {
         const double u = pow((double)i / (NPTS - 1), p);
@@ -24,18 +23,7 @@ static double scan(double p, int dense_end, unsigned long long seed, double *xy)
     ck_assert_int_eq(el_smooth_eval(&TRUTH, NPTS, s, xy, NULL, NULL), EL_OK);
     unsigned long long rng = seed;
     for (size_t i = 0; i < 2 * NPTS; i++) xy[i] += 0.05 * test_normal(&rng);
-    for (size_t j = 0; j < NSAMPLES; j++) S[j] = 30.0 * (double)j / (NSAMPLES - 1);
-    ck_assert_int_eq(el_smooth_eval(&TRUTH, NSAMPLES, S, T, NULL, NULL), EL_OK);
-    double s2 = 0.0;
-    for (size_t i = 0; i < NPTS; i++) {
-        double best = HUGE_VAL;
-        for (size_t j = 0; j < NSAMPLES; j++) {
-            const double dx = T[2 * j] - xy[2 * i], dy = T[2 * j + 1] - xy[2 * i + 1];
-            best = fmin(best, dx * dx + dy * dy);
-        }
-        s2 += best;
-    }
-    return sqrt(s2 / NPTS);
+    return sampled_rms(xy, NPTS, &TRUTH, NSAMPLES);
 }
 
 typedef struct scan_case { double p; int dense_end; unsigned long long seed; } scan_case;
