@@ -645,6 +645,18 @@ START_TEST(walls_at_tension_zero_are_solved_by_length)
 }
 END_TEST
 
+/* The G2 blend from the end of an arc of radius 20 (at (20, 20) heading +y, curvature 0.05)
+ * into the line from (90, 60) heading +x, by tension or length v (the tests below): its
+ * status, o and r as solve's. */
+static const double ARC_LINE[] = {20.0, 20.0, 90.0, 60.0};
+static int arc_into_line(int mode, double v, el_spline_options *o, el_spline_result *r)
+{
+    *o = opts(mode, v);
+    o->start = g2_end(0.0, 1.0, 0.05);
+    o->end = g2_end(1.0, 0.0, 0.0);
+    return solve(ARC_LINE, 2, o, r);
+}
+
 /*
  * A G2 blend past folds of its family in the end curvature (spline_g2_bend.c): from the
  * end (R, R) of a 90 deg arc of radius R (heading +y, curvature 1/R) to a line from
@@ -672,28 +684,23 @@ START_TEST(g2_blend_past_folds_in_the_end_curvature)
         }
         el_spline_result_free(&r);
     }
-    const double p[] = {20.0, 20.0, 90.0, 60.0};
     const double sigmas[] = {1e-5, 1e-4, 1e-3};
     for (size_t i = 0; i < 3; i++) {
-        el_spline_options o = opts(EL_SPLINE_TENSION, sigmas[i]);
-        o.start = g2_end(0.0, 1.0, 0.05);
-        o.end = g2_end(1.0, 0.0, 0.0);
+        el_spline_options o;
         el_spline_result r;
-        const int st = solve(p, 2, &o, &r);
+        const int st = arc_into_line(EL_SPLINE_TENSION, sigmas[i], &o, &r);
         ck_assert_msg(st == EL_OK, "sigma %g: status %d", sigmas[i], st);
-        check_spline(p, 2, &o, &r, 1e-9);
+        check_spline(ARC_LINE, 2, &o, &r, 1e-9);
         ck_assert(r.length > 230.05);   /* pulled along the free batten's family */
         el_spline_result_free(&r);
     }
     const double lengths[] = {202.5, 230.05, 255.0};
     for (size_t i = 0; i < 3; i++) {
-        el_spline_options o = opts(EL_SPLINE_LENGTH, lengths[i]);
-        o.start = g2_end(0.0, 1.0, 0.05);
-        o.end = g2_end(1.0, 0.0, 0.0);
+        el_spline_options o;
         el_spline_result r;
-        const int st = solve(p, 2, &o, &r);
+        const int st = arc_into_line(EL_SPLINE_LENGTH, lengths[i], &o, &r);
         ck_assert_msg(st == EL_OK, "length %g: status %d", lengths[i], st);
-        check_spline(p, 2, &o, &r, 1e-9);
+        check_spline(ARC_LINE, 2, &o, &r, 1e-9);
         ck_assert(!r.loops);
         if (i == 1) ck_assert_msg(fabs(r.sigma) < 1e-6, "sigma %g", r.sigma);
         el_spline_result_free(&r);
@@ -713,16 +720,13 @@ END_TEST
  */
 START_TEST(g2_blend_by_length_follows_the_free_family)
 {
-    const double p[] = {20.0, 20.0, 90.0, 60.0};
     double prev_e = 0.155, prev_s = -3.7e-3;
     for (double L = 167.5; L <= 227.6; L += 2.5) {
-        el_spline_options o = opts(EL_SPLINE_LENGTH, L);
-        o.start = g2_end(0.0, 1.0, 0.05);
-        o.end = g2_end(1.0, 0.0, 0.0);
+        el_spline_options o;
         el_spline_result r;
-        const int st = solve(p, 2, &o, &r);
+        const int st = arc_into_line(EL_SPLINE_LENGTH, L, &o, &r);
         ck_assert_msg(st == EL_OK, "length %g: status %d", L, st);
-        check_spline(p, 2, &o, &r, 1e-9);
+        check_spline(ARC_LINE, 2, &o, &r, 1e-9);
         ck_assert(!r.loops);
         ck_assert_msg(r.sigma < 0.0 && r.sigma > prev_s, "length %g: sigma %g after %g", L, r.sigma, prev_s);
         ck_assert_msg(r.energy > prev_e && r.energy < 0.1749, "length %g: bending %.5f after %.5f", L, r.energy,
@@ -751,14 +755,11 @@ END_TEST
  */
 START_TEST(g2_blend_without_the_tension_names_the_nearest)
 {
-    const double p[] = {20.0, 20.0, 90.0, 60.0};
     const double sigmas[] = {0.003, 0.01};
     for (size_t i = 0; i < 2; i++) {
-        el_spline_options o = opts(EL_SPLINE_TENSION, sigmas[i]);
-        o.start = g2_end(0.0, 1.0, 0.05);
-        o.end = g2_end(1.0, 0.0, 0.0);
+        el_spline_options o;
         el_spline_result r;
-        ck_assert_int_eq(solve(p, 2, &o, &r), EL_ENOCONV);
+        ck_assert_int_eq(arc_into_line(EL_SPLINE_TENSION, sigmas[i], &o, &r), EL_ENOCONV);
         ck_assert_msg(r.ladder[0] > 1.6e-3 && r.ladder[0] < 1.75e-3, "sigma %g: below %g", sigmas[i], r.ladder[0]);
         ck_assert_msg(r.reach[0] > 200.0 && r.reach[0] < 215.0, "its length %g", r.reach[0]);
         ck_assert_msg(r.ladder[1] >= 0.023 && r.ladder[1] <= 0.074, "sigma %g: above %g", sigmas[i], r.ladder[1]);
