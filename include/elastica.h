@@ -563,9 +563,11 @@ int el_fit_smooth(const double *xy, size_t n, const el_fit_options *opt,
  * point's distance to the smooth curve under it (its normal part: sigma for noise of sigma
  * per coordinate), input units; the median over up to 65536 third differences, in which a
  * smooth curve's turning cancels, in the frame of each stencil's chord where the spacing is
- * uneven, of every (n / 1000)-th point where they see more noise (2000 points or more
- * sorted along their curve, spacing below the noise: a dense scan in curve order; a
- * polygon resampled densely along noisy points) (the figure el_fit_* stop at, 1.5 x it). The fit's rms on noisy elasticae is
+ * uneven, of every k-th point where they see more noise (points sorted along their curve,
+ * spacing below the noise: a dense scan in curve order, k doubled until their stencils span
+ * the noise band, 0.85-1.15 x the noise at spacing 1/100 .. 2 x it; a polygon resampled
+ * densely along noisy points) (el_fit_* stop at 1.5 x the figure of consecutive points and
+ * every (n / 1000)-th point, which is this one but on such sorted scans). The fit's rms on noisy elasticae is
  * 0.9-1.1 x it on dense scans, 0.5-2.1 x on sketches of 15-30 points, whose bending enters
  * it (bench/bench_fit.py's 504 curves, tests/python/fit_data.py's sets); points along a curve
  * that is not one elastica lie farther from its fit: a line meeting an elastica at a corner,
@@ -576,6 +578,16 @@ int el_fit_smooth(const double *xy, size_t n, const el_fit_options *opt,
  * data's scale outside what double precision represents), EL_ENOMEM; *noise untouched.
  */
 int el_fit_noise(const double *xy, size_t n, double *noise);
+
+/*
+ * el_fit_noise's figure of consecutive points' stencils alone: never above el_fit_noise's
+ * (the same on evenly and unevenly spaced points in their order; below it on points sorted
+ * densely along their curve, or resampled densely along noisy points), at a fraction of its
+ * cost, so that a verdict raised only where a fit's rms is far above the noise can test this
+ * figure first and pay for el_fit_noise's only where this one raises it. Errors as
+ * el_fit_noise's.
+ */
+int el_fit_noise_quick(const double *xy, size_t n, double *noise);
 
 /*
  * A keyline as one problem (seed 000 §5.4, one G2 curve): two elasticae that start at

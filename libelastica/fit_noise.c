@@ -1,6 +1,7 @@
 /*
- * The points' own noise level, without a fit: el_fit_noise (the header) and the fit's
- * stopping rule, guesses and misfit check (el__fit_noise_rms, el__fit_noise_plain).
+ * The points' own noise level, without a fit: el_fit_noise, el_fit_noise_quick (the
+ * header) and the fit's stopping rule, guesses and misfit check (el__fit_noise_rms,
+ * el__fit_noise_plain).
  * GSL has no noise estimator for unevenly spaced curve samples (its gsl_stats_* give the
  * medians used here), hence these third-difference figures.
  */
@@ -13,6 +14,15 @@ enum { NOISE_SAMPLES = 65536, FRAME_PROBE = 32, SPREAD_POINTS = 1000, SPREAD_CON
 /* noise_rms's sorted-points test: every k-th point's figure over the plain one, and the
  * every 2k-th's over the k-th's */
 static const double SPREAD_SORTED = 1.4, SPREAD_SAME = 2.0;
+/* spread_noise's search of the stride k: stencils of its probes, and at least at a stride
+ * taken; the chords' span of the band (SPREAD_SPAN x the figure's noise, rms per point /
+ * sqrt 2, and SPREAD_ALONG x the half stride's chords), the figure's growth from the half
+ * stride's taken for noise (SPREAD_GROW), the chords' shrinking that ends the search
+ * (SPREAD_BACK), the probe's figure over the smaller one that has all stencils looked at
+ * (SPREAD_LOOK) and their figure's that is taken (SPREAD_TAKE) */
+enum { SPREAD_PROBE = 256, SPREAD_MIN = 200 };
+static const double SPREAD_SPAN = 14.0, SPREAD_ALONG = 1.8, SPREAD_GROW = 1.5, SPREAD_BACK = 0.8,
+                    SPREAD_LOOK = 1.1, SPREAD_TAKE = 1.25;
 
 /* Noise level of the points (rms per point), the smaller of two estimates (both from
  * third differences, in which a smooth curve's turning cancels; second differences carry
@@ -52,54 +62,90 @@ static double noise_plain(const double *xy, size_t n, double sc, double *d)
  * and median 0.454936 of that (a chi-square of one degree). On equal spacing w is
  * (-1, 3, -3, 1) (measured: within 1.05x of the truth on dense curves, 0.1 % and 1 %
  * noise, uniform, random or sketched spacing; 1.07x on 20 random points, 0.1 %).
- * The n points are every k-th of xy (point i at xy + 2 k i). */
-static double noise_frame(const double *xy, size_t n, size_t k, double sc, size_t cap, double *d)
+ * One stencil: P_b, P_{b+k} .. P_{b+5k} from lo = P_b, step = 2 k doubles; e^2 in *e2 and
+ * the chord's |U|^2 (normalised) in *u2; 0 where it is no sample (a repeated point,
+ * coincident abscissae). */
+EL__INLINE int frame_stencil(const double *lo, size_t step, double inv, double *e2, double *u2)
 {
-    const size_t span = n - 5, m = span < cap ? span : cap, step = 2 * k;
-    const double inv = 1.0 / sc;
-    size_t cnt = 0;
-    for (size_t a = 0; a < m; a++) {
-        const size_t i = 2 + a * span / m;
-        const double *lo = xy + step * (i - 2), *o = lo + step, *hi = o + 4 * step;
-        /* the frame's direction U unnormalised: e scales as |U| (y as |U|, w as |U|^3) */
-        const double ux = (hi[0] - lo[0]) * inv, uy = (hi[1] - lo[1]) * inv;
-        const double u2 = ux * ux + uy * uy;
-        if (!(u2 > 0.0) || !isfinite(u2)) continue;
-        double x[4], y[4];
-        const double *q = o;
-        for (int j = 0; j < 4; j++, q += step) {
-            const double dx = (q[0] - o[0]) * inv, dy = (q[1] - o[1]) * inv;
-            x[j] = dx * ux + dy * uy;
-            y[j] = dy * ux - dx * uy;
-        }
-        const double d01 = x[1] - x[0], d02 = x[2] - x[0], d03 = x[3] - x[0];
-        const double d12 = x[2] - x[1], d13 = x[3] - x[1], d23 = x[3] - x[2];
-        /* a point repeated (a pen at rest, a scanner's duplicate) is no independent sample:
-         * its copies' difference, the limit of w at coincident abscissae, is 0 */
-        if ((d01 == 0.0 && y[1] == y[0]) || (d02 == 0.0 && y[2] == y[0]) || (d03 == 0.0 && y[3] == y[0]) ||
-            (d12 == 0.0 && y[2] == y[1]) || (d13 == 0.0 && y[3] == y[1]) || (d23 == 0.0 && y[3] == y[2]))
-            continue;
-        const double w[4] = {d12 * d13 * d23, -d02 * d03 * d23, d01 * d03 * d13, -d01 * d02 * d12};
-        double wmax = 0.0;
-        for (int j = 0; j < 4; j++)
-            if (fabs(w[j]) > wmax) wmax = fabs(w[j]);
-        if (!(wmax > 0.0) || !isfinite(wmax)) continue;      /* abscissae coincident in two pairs or three */
-        const double r = 1.0 / wmax;
-        double num = 0.0, w2 = 0.0;
-        for (int j = 0; j < 4; j++) {
-            const double wj = w[j] * r;
-            num += wj * y[j];
-            w2 += wj * wj;
-        }
-        d[cnt++] = num * num / (w2 * u2);
+    const double *o = lo + step, *hi = o + 4 * step;
+    /* the frame's direction U unnormalised: e scales as |U| (y as |U|, w as |U|^3) */
+    const double ux = (hi[0] - lo[0]) * inv, uy = (hi[1] - lo[1]) * inv;
+    *u2 = ux * ux + uy * uy;
+    if (!(*u2 > 0.0) || !isfinite(*u2)) return 0;
+    double x[4], y[4];
+    const double *q = o;
+    for (int j = 0; j < 4; j++, q += step) {
+        const double dx = (q[0] - o[0]) * inv, dy = (q[1] - o[1]) * inv;
+        x[j] = dx * ux + dy * uy;
+        y[j] = dy * ux - dx * uy;
     }
+    const double d01 = x[1] - x[0], d02 = x[2] - x[0], d03 = x[3] - x[0];
+    const double d12 = x[2] - x[1], d13 = x[3] - x[1], d23 = x[3] - x[2];
+    /* a point repeated (a pen at rest, a scanner's duplicate) is no independent sample:
+     * its copies' difference, the limit of w at coincident abscissae, is 0 */
+    if ((d01 == 0.0 && y[1] == y[0]) || (d02 == 0.0 && y[2] == y[0]) || (d03 == 0.0 && y[3] == y[0]) ||
+        (d12 == 0.0 && y[2] == y[1]) || (d13 == 0.0 && y[3] == y[1]) || (d23 == 0.0 && y[3] == y[2]))
+        return 0;
+    const double w[4] = {d12 * d13 * d23, -d02 * d03 * d23, d01 * d03 * d13, -d01 * d02 * d12};
+    double wmax = 0.0;
+    for (int j = 0; j < 4; j++)
+        if (fabs(w[j]) > wmax) wmax = fabs(w[j]);
+    if (!(wmax > 0.0) || !isfinite(wmax)) return 0;      /* abscissae coincident in two pairs or three */
+    const double r = 1.0 / wmax;
+    double num = 0.0, w2 = 0.0;
+    for (int j = 0; j < 4; j++) {
+        const double wj = w[j] * r;
+        num += wj * y[j];
+        w2 += wj * wj;
+    }
+    *e2 = num * num / (w2 * *u2);
+    return 1;
+}
+
+/* The figure from d's cnt stencils (HUGE_VAL: none). */
+static double frame_figure(double *d, size_t cnt)
+{
     if (cnt == 0) return HUGE_VAL;
     const double med = gsl_stats_median(d, 1, cnt);
     return sqrt(2.0 * med / 0.45493642311957283);
 }
 
-/* The smaller figure, d the stencils' buffer (NOISE_SAMPLES or n - 3 doubles). */
-static double noise_rms(const double *xy, size_t n, double sc, double *d)
+/* The frame figure of n points that are every k-th of xy (point i at xy + 2 k i). */
+static double noise_frame(const double *xy, size_t n, size_t k, double sc, size_t cap, double *d)
+{
+    const size_t span = n - 5, m = span < cap ? span : cap, step = 2 * k;
+    const double inv = 1.0 / sc;
+    size_t cnt = 0;
+    double u2;
+    for (size_t a = 0; a < m; a++) {
+        const size_t i = 2 + a * span / m;
+        cnt += frame_stencil(xy + step * (i - 2), step, inv, d + cnt, &u2);
+    }
+    return frame_figure(d, cnt);
+}
+
+/* The frame figure of stencils of every k-th point from every start b (P_b .. P_{b+5k}, up
+ * to cap starts evenly spread over the n - 5k), with *chord the median of their chords
+ * |P_{b+5k} - P_b| (normalised); d holds 2 min(n - 5k, cap) doubles. */
+static double noise_stride(const double *xy, size_t n, size_t k, double sc, size_t cap, double *d,
+                           double *chord)
+{
+    const size_t span = n - 5 * k, m = span < cap ? span : cap;
+    const double inv = 1.0 / sc;
+    double *u2s = d + m;
+    size_t cnt = 0;
+    for (size_t a = 0; a < m; a++) {
+        const size_t b = a * span / m;
+        if (frame_stencil(xy + 2 * b, 2 * k, inv, d + cnt, u2s + cnt)) cnt++;
+    }
+    *chord = cnt ? sqrt(gsl_stats_median(u2s, 1, cnt)) : 0.0;
+    return frame_figure(d, cnt);
+}
+
+/* The smaller figure, d the stencils' buffer (NOISE_SAMPLES or n - 3 doubles); local: that
+ * of consecutive points alone (*small, where asked, either way), without the check of every
+ * k-th point below. */
+static double noise_rms(const double *xy, size_t n, double sc, double *d, int local, double *small)
 {
     const double plain = noise_plain(xy, n, sc, d);
     double frame = n >= 6 ? noise_frame(xy, n, 1, sc, FRAME_PROBE, d) : HUGE_VAL;
@@ -108,6 +154,8 @@ static double noise_rms(const double *xy, size_t n, double sc, double *d)
      * (report_drv.c's 42 1000-point fits: +0.2 % instructions; all stencils: +3.8 %) */
     if (n - 5 > FRAME_PROBE)
         frame = frame < 0.5 * plain ? noise_frame(xy, n, 1, sc, NOISE_SAMPLES, d) : HUGE_VAL;
+    if (small) *small = fmin(plain, frame);
+    if (local) return fmin(plain, frame);
     /* points sorted along their curve (a dense scan in curve order, the spacing far below
      * the noise) lie nearly in line along it, scattered across: each stencil's chord runs
      * across the band, its cubic along the scatter, and the frame sees a fraction of the
@@ -136,12 +184,54 @@ static double noise_rms(const double *xy, size_t n, double sc, double *d)
     return fmin(plain, frame);
 }
 
-/* One of the figures (plain alone, or as noise_rms picks) with its stencils' buffer */
-static int noise_figure(const double *xy, size_t n, double sc, int plain_only, double *figure)
+/* The figure of stencils of every k-th point where their chords span the noise band: that
+ * figure where it exceeds small, the smaller figure of consecutive points, SPREAD_TAKE x,
+ * else fig (noise_rms's); el_fit_noise's (the fit's own uses, el__fit_noise_rms, keep fig:
+ * a figure too low there only lets a fit run on). Points sorted along their curve (a dense
+ * scan in curve order: spacing h far below the noise sigma) lie nearly in line along it,
+ * scattered across: stencils of consecutive points run across the band and see a fraction
+ * of the noise (1e5 points along 3 units, noise 0.05: 0.0013), the plain figure the part
+ * across alone (0.57 of it), and noise_rms's every (n / 1000)-th point is still inside the
+ * band on a short curve. Stencils of every k-th point span it once 5 k h is well above
+ * sigma: the stride doubles (k = 2, 4, ..., SPREAD_MIN stencils at least) until their
+ * chords span the band (inside it they stay ~sigma while the figure grows ~2 x per
+ * doubling; short of SPREAD_SPAN the order's error along the curve still lifts the figure,
+ * 1.1-1.4 x in el.curve_order's) and the figure has stopped growing (a curve's cubic term
+ * grows 8 x, pure noise's is stable; noise correlated from point to point, a polygon
+ * resampled densely along noisy points, grows until the stride passes its correlation).
+ * Each stride is judged by a probe of SPREAD_PROBE stencils (545802a's search). */
+static double spread_noise(const double *xy, size_t n, double sc, double small, double fig, double *d)
 {
-    double *d = malloc(sizeof(double) * (n - 3 < NOISE_SAMPLES ? n - 3 : NOISE_SAMPLES));
+    double f0, c0, f1, c1;
+    if (n < 10 + SPREAD_MIN) return fig;
+    f0 = noise_stride(xy, n, 1, sc, SPREAD_PROBE, d, &c0);
+    for (size_t k = 2; 5 * k + SPREAD_MIN <= n; k *= 2, f0 = f1, c0 = c1) {
+        f1 = noise_stride(xy, n, k, sc, SPREAD_PROBE, d, &c1);
+        if (!(c1 >= SPREAD_BACK * c0)) return fig;      /* past a turn: a loop's, no band's */
+        const int spans = c1 >= SPREAD_ALONG * c0 && c1 >= SPREAD_SPAN * 0.70710678118654752 * f1;
+        if (!(spans && f1 < SPREAD_GROW * f0)) continue;
+        if (!(f1 > SPREAD_LOOK * small)) return fig;
+        const double wide = noise_stride(xy, n, k, sc, NOISE_SAMPLES, d, &c1);
+        return wide > SPREAD_TAKE * small && isfinite(wide) ? wide : fig;
+    }
+    return fig;
+}
+
+/* the fit's figure (noise_rms), consecutive points' alone, the plain one, el_fit_noise's */
+enum { FIGURE_FIT, FIGURE_LOCAL, FIGURE_PLAIN, FIGURE_SPREAD };
+
+/* One of the figures with its stencils' buffer */
+static int noise_figure(const double *xy, size_t n, double sc, int which, double *figure)
+{
+    const size_t m = n - 3 < NOISE_SAMPLES ? n - 3 : NOISE_SAMPLES;
+    const size_t need = which == FIGURE_SPREAD ? 2 * (m > SPREAD_PROBE ? m : SPREAD_PROBE) : m;
+    double *d = malloc(sizeof(double) * need), small;
     if (!d) return EL_ENOMEM;
-    *figure = plain_only ? noise_plain(xy, n, sc, d) : noise_rms(xy, n, sc, d);
+    if (which == FIGURE_PLAIN)
+        *figure = noise_plain(xy, n, sc, d);
+    else
+        *figure = noise_rms(xy, n, sc, d, which == FIGURE_LOCAL, &small);
+    if (which == FIGURE_SPREAD) *figure = spread_noise(xy, n, sc, small, *figure, d);
     free(d);
     return EL_OK;
 }
@@ -149,26 +239,36 @@ static int noise_figure(const double *xy, size_t n, double sc, int plain_only, d
 double el__fit_noise_rms(const double *xy, size_t n, double sc)
 {
     double nu = 0.0;        /* 0 also without memory */
-    if (n >= 4) noise_figure(xy, n, sc, 0, &nu);
+    if (n >= 4) noise_figure(xy, n, sc, FIGURE_FIT, &nu);
     return nu;
 }
 
 /* The figure as a distance to the curve: its normal part, 1/sqrt(2) of the rms per point. */
-int el_fit_noise(const double *xy, size_t n, double *noise)
+static int public_noise(const double *xy, size_t n, int which, double *noise)
 {
     double cx, cy, sc, nu;
     int st;
     if (el__fit_check_points(xy, n, 4) || !noise) return EL_EINVAL;
     if ((st = el__fit_normalisation(xy, n, &cx, &cy, &sc))) return st;
-    if ((st = noise_figure(xy, n, sc, 0, &nu))) return st;
+    if ((st = noise_figure(xy, n, sc, which, &nu))) return st;
     *noise = nu * sc * 0.70710678118654752;
     return EL_OK;
+}
+
+int el_fit_noise(const double *xy, size_t n, double *noise)
+{
+    return public_noise(xy, n, FIGURE_SPREAD, noise);
+}
+
+int el_fit_noise_quick(const double *xy, size_t n, double *noise)
+{
+    return public_noise(xy, n, FIGURE_LOCAL, noise);
 }
 
 /* The plain figure alone (fit.c's stop rule for a constrained fit). */
 double el__fit_noise_plain(const double *xy, size_t n, double sc)
 {
     double plain = 0.0;
-    if (n >= 4) noise_figure(xy, n, sc, 1, &plain);
+    if (n >= 4) noise_figure(xy, n, sc, FIGURE_PLAIN, &plain);
     return plain;
 }

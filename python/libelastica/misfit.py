@@ -76,8 +76,9 @@ class Misfit(ValueEquality):
 def noise_level(points) -> float:
     """The points' own noise level (n >= 4, (n, 2)): the rms of a point's distance to the
     smooth curve under it, from the points alone (no fit): the larger of el_fit_noise's
-    (third differences) and, from WINDOW_POINTS points on, :func:`window_noise`'s, of them
-    and of every k-th of them (_spread_noise)."""
+    (third differences; of every k-th point on points sorted densely along their curve)
+    and, from WINDOW_POINTS points on, :func:`window_noise`'s, of them and of every k-th of
+    them (_spread_noise)."""
     pts = as_points(points, "noise_level: points", 2, 4)    # (third differences)
     return _noise_level(pts, _noise(pts))
 
@@ -87,10 +88,13 @@ def _noise_level(pts: np.ndarray, plain: float) -> float:
     return max(plain, window_noise(pts), _spread_noise(pts))
 
 
-def _noise(pts: np.ndarray) -> float:
-    """el_fit_noise of checked points (C-contiguous float64, (n, 2))."""
+def _noise(pts: np.ndarray, quick: bool = False) -> float:
+    """el_fit_noise of checked points (C-contiguous float64, (n, 2)); quick:
+    el_fit_noise_quick's (consecutive points alone: never above it, lower on points sorted
+    densely along a short curve)."""
     out = ffi.new("double *")
-    check(lib.el_fit_noise(dptr(pts), len(pts), out), "noise_level")
+    check((lib.el_fit_noise_quick if quick else lib.el_fit_noise)(dptr(pts), len(pts), out),
+          "noise_level")
     return float(out[0])
 
 
@@ -107,9 +111,10 @@ _WINDOW_MEDIAN = 0.9401
 # Points sorted along their curve (curve_order's of a dense scan, its spacing far below the
 # noise) are nearly in line along it and scattered across it: windows of consecutive points
 # are narrower along the curve than across, their cubics run across the band and see a
-# fraction of the noise (el_fit_noise's stencils likewise). Measured on one elastica, noise
-# 0.05, curve order (its given order 0.050 either way): 3e4 points 0.0055 and 0.015, 1e5
-# 0.0014 and 0.0045; window_noise of every (n // SPREAD_POINTS)-th point: 0.050, 0.049.
+# fraction of the noise (el_fit_noise_quick's stencils likewise; el_fit_noise's take every
+# k-th point, k doubled until they span the band). Measured on one elastica, noise 0.05,
+# curve order (its given order 0.050 either way): 3e4 points 0.0055 and 0.015, 1e5 0.0014
+# and 0.0045; window_noise of every (n // SPREAD_POINTS)-th point: 0.050, 0.049.
 SPREAD_POINTS = 2000
 
 
@@ -237,11 +242,17 @@ def misfit(points, distances, corner: bool = True) -> Optional[Misfit]:
 
 def _verdict(pts: np.ndarray, d: np.ndarray, rms_all: float, corner: bool = True) -> Optional[Misfit]:
     """misfit of checked points (as _noise's) and their distances' rms (a fit's own, el.fit's
-    path: 0.011 ms of a 1000-point discrete fit's 0.5 where it is silent)."""
+    path: 0.011 ms of a 1000-point discrete fit's 0.5 where it is silent). Its first test
+    takes el_fit_noise_quick's figure, never above el_fit_noise's: el_fit_noise's stride
+    search (twice the instructions) runs only where that test is passed."""
     if len(pts) < MISFIT_MIN_POINTS:
         return None
+    # the window figure and el_fit_noise's stride search (points sorted densely along a
+    # short curve) only raise el_fit_noise_quick's figure: both paid only where it is passed
+    if not rms_all > MISFIT_RATIO * _noise(pts, quick=True):
+        return None
     noise = _noise(pts)
-    if not rms_all > MISFIT_RATIO * noise:    # the window figure only raises the noise
+    if not rms_all > MISFIT_RATIO * noise:
         return None
     from .fit import far_points
     if len(far_points(d, pts)):               # glitches pull the fit: said apart, refit without
