@@ -251,7 +251,9 @@ static int public_noise(const double *xy, size_t n, int which, double *noise)
     if (el__fit_check_points(xy, n, 4) || !noise) return EL_EINVAL;
     if ((st = el__fit_normalisation(xy, n, &cx, &cy, &sc))) return st;
     if ((st = noise_figure(xy, n, sc, which, &nu))) return st;
-    *noise = nu * sc * 0.70710678118654752;
+    const double figure = nu * sc * 0.70710678118654752;
+    if (!isfinite(figure)) return EL_EDOM;      /* points spread near DBL_MAX: it overflows */
+    *noise = figure;
     return EL_OK;
 }
 

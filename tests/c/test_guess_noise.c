@@ -267,6 +267,11 @@ START_TEST(test_noise_public)
     ck_assert_int_eq(el_fit_noise(same, 4, &keep), EL_ESINGULAR);
     xy[5] = NAN;
     ck_assert_int_eq(el_fit_noise(xy, N, &keep), EL_EINVAL);
+    /* points spread near DBL_MAX (the fuzz's): the figure overflows, EL_EDOM, untouched */
+    const double huge[12] = {1e-8, -6.7, -3.1, 5e-324, -8.1, -1.7976931348623157e308,
+                             -3.8, 1e300, -2.4, 3.0, 8.5, -3.9};
+    ck_assert_int_eq(el_fit_noise(huge, 6, &keep), EL_EDOM);
+    ck_assert_int_eq(el_fit_noise_quick(huge, 6, &keep), EL_EDOM);
     ck_assert(keep == 42.0);
 }
 END_TEST
