@@ -3,7 +3,8 @@ measured points, solve Hermite problems, convert fitted curves to B-splines and
 make elliptic blending curves, with JSON, SVG/PNG report pictures and DXF.
 
 Exit status: 0 success, 1 a fit did not converge (or a Hermite problem has no
-solution), 2 bad input (one line on stderr, no traceback).
+solution), 2 bad input (one line on stderr, no traceback), 3 an internal error (a bug:
+one line, ELASTICA_DEBUG=1 for the traceback; a batch fits its other files first).
 """
 from __future__ import annotations
 
@@ -501,7 +502,7 @@ def build_parser() -> argparse.ArgumentParser:
                        "  elastica bspline fit.json --tol 1e-6 --dxf fit.dxf\n"
                        "  elastica blend 0 0 0.3 0.8 0.7 0.9 1 0 --svg blend.svg\n"
                        "  elastica COMMAND --help   (more examples)\n\n"
-                       "exit status: 0 ok, 1 fit did not converge / no solution, 2 bad input")
+                       "exit status: 0 ok, 1 fit did not converge / no solution, 2 bad input, 3 internal error")
     from . import __version__
     p.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
     sub = p.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
@@ -711,7 +712,7 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv: Optional[Sequence[str]] = None) -> int:
-    """Run the ``elastica`` command; returns the exit status (0, 1 or 2)."""
+    """Run the ``elastica`` command; returns the exit status (0, 1, 2 or 3)."""
     parser = build_parser()
     args = parser.parse_args(argv)
     inputs = list(getattr(args, "files", None) or []) + [getattr(args, "file", None)] \

@@ -2,6 +2,7 @@
 JSON, report pictures (SVG/PNG), B-splines and DXF (cli.py builds the parser)."""
 from __future__ import annotations
 
+import os
 import sys
 import warnings
 from pathlib import Path
@@ -11,7 +12,7 @@ import numpy as np
 
 from ._ffi import NotConvergedError
 from ._text import curve_values
-from .cli_common import (EXIT_BADINPUT, EXIT_NOCONV, EXIT_OK, PROG, _converged,
+from .cli_common import (EXIT_BADINPUT, EXIT_INTERNAL, EXIT_NOCONV, EXIT_OK, PROG, _converged,
                          _finite, _float_list, _fmt, _mapped_bspline, _plane_record, _Progress,
                          _status_text, _table, tol_option)
 from .cli_outputs import out_path
@@ -581,7 +582,7 @@ def cmd_fit(args) -> int:
                     _print_cubic(doc, "file's points")
         return EXIT_OK if all(r["converged"] for r in recs) else EXIT_NOCONV
     progress = _Progress(len(files), args.progress or sys.stderr.isatty())
-    rows, all_recs, docs, bad = [], [], [], 0
+    rows, all_recs, docs, bad, internal = [], [], [], 0, 0
     for f in files:
         mark = args.outputs.mark()
         progress.clear()        # the file's warnings on a line of their own
@@ -597,6 +598,14 @@ def cmd_fit(args) -> int:
             recs = [{"file": f, "model": args.model, "curve": None, "rms": None,
                      "max_error": None, "status": f"bad input: {exc}", "converged": False}]
             doc = recs[0]
+        except Exception as exc:    # a bug met on one file: the other files are still fitted
+            if os.environ.get("ELASTICA_DEBUG"):
+                raise
+            args.outputs.rollback(mark)
+            internal += 1
+            recs = [{"file": f, "model": args.model, "curve": None, "rms": None, "max_error": None,
+                     "status": f"internal error: {type(exc).__name__}: {exc}", "converged": False}]
+            doc = recs[0]
         for r in recs:
             name = f if "side" not in r else f"{f} [{r['side'] + 1}]"
             k = r["curve"]["k"] if r.get("curve") else None
@@ -608,7 +617,11 @@ def cmd_fit(args) -> int:
         # each file's document, as one file's JSON holds it (a keyline's two sides together)
         write_json(docs, args.outputs.path(args.json))
     print(_table(["file", "model", "k", "rms", "max error", "status"], rows))
-    n_noconv = sum(1 for r in all_recs if not r["converged"]) - bad
+    n_noconv = sum(1 for r in all_recs if not r["converged"]) - bad - internal
+    if internal:
+        print(f"{PROG}: {internal} of {len(files)} files met an internal error (a bug: please "
+              "report it; ELASTICA_DEBUG=1 for a traceback)", file=sys.stderr)
+        return EXIT_INTERNAL
     if bad:
         print(f"{PROG}: {bad} of {len(files)} files had bad input", file=sys.stderr)
         return EXIT_BADINPUT

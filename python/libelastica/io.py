@@ -38,6 +38,18 @@ _INTEGER = re.compile(r"[+-]?\d+")
 _AXIS_NAME = re.compile(r"\s*([xyzXYZ])\s*(?:[\[(].*[\])])?\s*")
 
 
+def _split_fields(lines, delim: Optional[str], name: str) -> list:
+    """Each line's fields: by csv's rules at delim, else at whitespace. csv's own errors
+    (a field past its size limit: no point file's) as InputError naming the line."""
+    if not delim:
+        return [line.split() for line in lines]
+    reader = csv.reader(lines, delimiter=delim)
+    try:
+        return list(reader)
+    except csv.Error as exc:
+        raise InputError(f"{name}: line {reader.line_num}: {exc}") from None
+
+
 def _parse_text(text: str, name: str) -> np.ndarray:
     """Rows of numbers separated by semicolons, tabs or spaces (with decimal commas or
     points), or commas (decimal commas quoted, as spreadsheets write them: "1,5","0,25").
@@ -51,7 +63,8 @@ def _parse_text(text: str, name: str) -> np.ndarray:
     "y,x", "name,x,y,z"), the other columns need not be numbers."""
     rows = []       # (line number, fields)
     header = None
-    data_lines = [ln for ln in text.splitlines() if ln.strip() and not ln.lstrip().startswith("#")]
+    lines = text.splitlines()
+    data_lines = [ln for ln in lines if ln.strip() and not ln.lstrip().startswith("#")]
     sample = "\n".join(data_lines[:20])
     delim = None
     if ";" in sample:
@@ -61,10 +74,9 @@ def _parse_text(text: str, name: str) -> np.ndarray:
     elif "," in sample and not _decimal_commas_between(data_lines[:20], None):
         delim = ","
     # csv's quoting rules: a quoted field keeps its commas ("102,697" from a spreadsheet
-    # that writes decimal commas with ',' between the columns)
-    reader = (csv.reader(_io.StringIO(text), delimiter=delim) if delim
-              else (line.split() for line in text.splitlines()))
-    for lineno, fields in enumerate(reader, start=1):
+    # that writes decimal commas with ',' between the columns); lines end at any line end
+    # (CR alone: classic Mac and some instruments' exports)
+    for lineno, fields in enumerate(_split_fields(lines, delim, name), start=1):
         fields = [f.strip() for f in fields if f.strip() != ""]
         if not fields or fields[0].startswith("#"):
             continue

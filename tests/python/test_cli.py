@@ -269,6 +269,48 @@ def test_read_points_messages_name_the_line(capsys, tmp_path):
         read_points(tmp_path / "nan.csv")
 
 
+def test_read_points_at_any_line_end(capsys, tmp_path):
+    """QA19 M0: a file whose lines end in CR alone (classic Mac, some instruments' exports)
+    stopped `elastica fit` with "internal error: ... new-line character seen in unquoted
+    field", exit 3, and a batch holding it wrote nothing for its good files. Read like the
+    same rows ending in LF, at every separator; csv's own errors name the line."""
+    rows = _rows()
+    for sep in (";", ","):
+        body = [r if sep == ";" else '"' + r.replace(";", '","') + '"' for r in rows]
+        (tmp_path / "lf.csv").write_text("x" + sep + "y\n" + "\n".join(body) + "\n")
+        (tmp_path / "cr.csv").write_bytes(("x" + sep + "y\r" + "\r".join(body) + "\r").encode())
+        np.testing.assert_array_equal(read_points(tmp_path / "cr.csv"),
+                                      read_points(tmp_path / "lf.csv"), err_msg=sep)
+    r = cli(capsys, "fit", SAMPLE_2D, tmp_path / "cr.csv", "--json", "-")
+    assert r.returncode == 0, r.stderr
+    assert all(rec["converged"] for rec in json.loads(r.stdout))
+    (tmp_path / "long.csv").write_text("x,y\n0,0\n1," + "1" * 200000 + "\n2,4\n3,9\n")
+    with pytest.raises(InputError, match=r"long.csv: line 3: field larger than field limit"):
+        read_points(tmp_path / "long.csv")
+
+
+def test_fit_batch_goes_on_past_an_internal_error(capsys, tmp_path, monkeypatch):
+    """QA19 M0: an internal error (a bug) met on one file of a batch ended the whole batch
+    with nothing written for the files before and after it; now that file's row says
+    "internal error", the others are fitted and written, and the exit status is 3."""
+    import libelastica.cli_fit as cli_fit
+    real = cli_fit.fit_file
+
+    def broken(f, args, batch=False):
+        if Path(f).name == "bug.csv":
+            raise RuntimeError("a bug")
+        return real(f, args, batch=batch)
+    monkeypatch.setattr(cli_fit, "fit_file", broken)
+    (tmp_path / "bug.csv").write_text(SAMPLE_2D.read_text())
+    r = cli(capsys, "fit", SAMPLE_2D, tmp_path / "bug.csv", SAMPLE_S,
+            "--json", tmp_path / "out" / "{stem}.json")
+    assert r.returncode == 3, r.stderr
+    assert "1 of 3 files met an internal error" in r.stderr
+    assert "internal error: RuntimeError: a bug" in r.stdout
+    assert sorted(p.name for p in (tmp_path / "out").iterdir()) == ["sample_2d.json",
+                                                                    "sample_s_curve.json"]
+
+
 # ------------------------------------------------------------------ hermite
 
 def test_hermite_table_json_and_svg(capsys, tmp_path):
