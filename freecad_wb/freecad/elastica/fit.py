@@ -14,6 +14,7 @@ import os
 import FreeCAD as App
 
 from . import defaults
+from .containers import link_properties
 from .fit_core import DISTANCES, MODELS, fit_gathered
 from .fit_ends import CONTINUITIES
 from .geometry import binding_module, el, part_bspline, to_3d
@@ -161,14 +162,20 @@ class FitProxy(FeatureProxy):
         r["csv_stamp"] = stamp
         return r
 
+    def read_links(self, obj):
+        """The links a recompute reads (containers.read_objects): not Source when a CSV
+        file is read instead."""
+        return [p for p in link_properties(obj) if not (p == "Source" and obj.CsvFile)]
+
     def mustExecute(self, obj):
         """A recompute reads the CSV file again once it changed on disk (QA17 P10: the old
         points kept, State up to date, until the feature was touched), as FreeCAD asks a
         feature whether it must execute besides its touched properties
-        (FeaturePythonImp::mustExecute)."""
+        (FeaturePythonImp::mustExecute); and FeatureProxy's reasons."""
         # (FreeCAD may ask before onDocumentRestored's setup added CsvStamp to an old file's)
-        return bool(obj.CsvFile) and "CsvStamp" in obj.PropertiesList and \
-            csv_stamp(obj.CsvFile) != obj.CsvStamp
+        return super().mustExecute(obj) or (
+            bool(obj.CsvFile) and "CsvStamp" in obj.PropertiesList and
+            csv_stamp(obj.CsvFile) != obj.CsvStamp)
 
     def apply(self, obj, r):
         plc = r["placement"]

@@ -17,6 +17,7 @@ import sys
 
 import FreeCAD as App
 
+from .containers import add_containers, follow_containers, restore_containers, watch_groups
 from .units import exact_mark, mm_marked, say
 
 VERSION = 3             # of the proxies' saved state (3: lengths typed with units)
@@ -361,6 +362,8 @@ class FeatureProxy:
         self.setup(obj)
         add_said(obj)
         add_note(obj)
+        add_containers(obj)
+        watch_groups()
 
     # ---------------------------------------------------------------- recompute
 
@@ -368,7 +371,11 @@ class FeatureProxy:
         """compute, then apply; a failure is said in one line (report), the last good shape
         kept (drawn dashed), and raised to FreeCAD as reported (raise_reported: no
         traceback), which marks the feature in error as its own (the tree's error mark,
-        "Recompute failed!", its dependents not recomputed)."""
+        "Recompute failed!", its dependents not recomputed). What it reads may have moved
+        into or out of a container since: its link to them is set first
+        (containers.follow_containers)."""
+        follow_containers(obj)
+        self._unplaced = False
         try:
             r = self.compute(obj)
         except InputProblem as exc:
@@ -384,6 +391,12 @@ class FeatureProxy:
 
     def setup(self, obj):
         pass
+
+    def mustExecute(self, obj):
+        """Whether a recompute must execute the feature, touched or not (FreeCAD asks,
+        FeaturePythonImp::mustExecute): a document saved before its link to the containers
+        of what it reads, which reads through one (containers.restore_containers)."""
+        return bool(getattr(self, "_unplaced", False))
 
     def on_error(self, obj):
         """Called after a failed recompute (the message is in Status already)."""
@@ -460,4 +473,6 @@ class FeatureProxy:
         if changed:
             obj.purgeTouched()
         self._exact = {}
+        self._unplaced = restore_containers(obj)
+        watch_groups()
         attach_view(obj, restored=True)   # a document made without the GUI, opened in it

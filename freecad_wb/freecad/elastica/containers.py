@@ -1,0 +1,126 @@
+"""The containers a feature reads its sources through, linked so that moving them
+recomputes it.
+
+A feature reads a sketch, a Points object or an edge where the 3D view draws it
+(geometry.global_shape: the placement of the PartDesign Bodies and App::Parts holding it
+applied), but its links name only the object: a Body moved or turned left the feature
+where it was, Up-to-date, through Ctrl+R, a forced recompute and a reopen (QA19gui F1:
+70 to 151 mm off). FreeCAD recomputes an object when one it links to is recomputed
+(Document::recompute marks the InList of each object it recomputed), and a container
+moved is recomputed; so each feature keeps the hidden link list CONTAINERS to the
+containers (nested ones too) of what it reads, as FreeCAD's own dependencies are links.
+The link is of global scope (proxy.add_link: the features are at document level, the
+containers anywhere); a hidden-scope link (App::PropertyLinkListHidden) is no dependency
+in 0.20 (not in the OutList), so it would not do. A container that depends on the
+feature (one holding it) is left out: linking it would close a cycle. Objects moved into
+or out of a container (its Group changed: the tree's drag and drop, addObject) change
+both at once, before any recompute (GroupWatch).
+"""
+from __future__ import annotations
+
+import FreeCAD as App
+
+CONTAINERS = "Containers"
+
+
+def add_containers(obj):
+    """The hidden link list CONTAINERS (output: setting it, in execute, touches nothing).
+    Whether it was added (a new feature, or a document saved before it)."""
+    if CONTAINERS in obj.PropertiesList:
+        return False
+    obj.addProperty("App::PropertyLinkListGlobal", CONTAINERS, "Input",
+                    "The Bodies / Parts holding what the feature reads: moving one recomputes "
+                    "it (set at each recompute)", 4 | 8)
+    return True
+
+
+def _objects(value):
+    """The document objects of a link property's value: an object, (object, subs), or a
+    list of either."""
+    if isinstance(value, App.DocumentObject):
+        return [value]
+    if isinstance(value, tuple) and value and isinstance(value[0], App.DocumentObject):
+        return [value[0]]
+    if isinstance(value, list):
+        return [o for v in value for o in _objects(v)]
+    return []
+
+
+def link_properties(obj):
+    """The names of ``obj``'s link properties but CONTAINERS."""
+    return [p for p in obj.PropertiesList
+            if obj.getTypeIdOfProperty(p).startswith("App::PropertyLink") and p != CONTAINERS]
+
+
+def read_objects(obj):
+    """The objects ``obj`` reads: those of the link properties its proxy's read_links
+    names, or of every one (link_properties)."""
+    proxy = getattr(obj, "Proxy", None)
+    names = proxy.read_links(obj) if hasattr(proxy, "read_links") else link_properties(obj)
+    return [o for p in names for o in _objects(getattr(obj, p, None))]
+
+
+def containers_of(obj):
+    """The containers placing what ``obj`` reads, innermost first, each once; those
+    depending on ``obj`` (holding it: a cycle) left out."""
+    out = []
+    for o in read_objects(obj):
+        parent = o.getParentGeoFeatureGroup()
+        while parent is not None:
+            if parent not in out:
+                out.append(parent)
+            parent = parent.getParentGeoFeatureGroup()
+    if out:
+        depending = set(obj.InListRecursive) | {obj}
+        out = [c for c in out if c not in depending]
+    return out
+
+
+def follow_containers(obj):
+    """Link CONTAINERS to the containers of what ``obj`` reads (containers_of), when it
+    does not already. Whether it changed."""
+    if CONTAINERS not in obj.PropertiesList:
+        return False
+    now = containers_of(obj)
+    if list(getattr(obj, CONTAINERS)) == now:
+        return False
+    setattr(obj, CONTAINERS, now)
+    return True
+
+
+def restore_containers(obj):
+    """On reopening: a document saved before CONTAINERS gets it linked. Whether the
+    feature reads through a container then: it may have been saved after its container
+    moved, in the wrong place, and must be recomputed (FeatureProxy.mustExecute: a touch
+    here would not last, the document purges it once restored)."""
+    added = add_containers(obj)
+    return follow_containers(obj) and added
+
+
+class GroupWatch:
+    """A document observer: when a container's Group changes, every feature of its document
+    links the containers of now (follow_containers) and, if they changed, is touched (what
+    it reads is placed otherwise: a sketch moved into a Body), before any recompute: a
+    feature moved into a container it linked would close a cycle, and FreeCAD would
+    recompute nothing ('The graph must be a DAG'). Not while a document is restored or
+    undone (the links are restored with it)."""
+
+    def slotChangedObject(self, obj, prop):
+        if prop != "Group" or not obj.hasExtension("App::GeoFeatureGroupExtension"):
+            return
+        doc = obj.Document
+        if doc.Restoring or doc.Transacting or "Restore" in obj.State:
+            return
+        for f in doc.Objects:
+            if CONTAINERS in f.PropertiesList and follow_containers(f):
+                f.touch()
+
+
+WATCH = []              # the one GroupWatch, added to FreeCAD once (watch_groups)
+
+
+def watch_groups():
+    """Add the GroupWatch to FreeCAD's document observers, once."""
+    if not WATCH:
+        WATCH.append(GroupWatch())
+        App.addDocumentObserver(WATCH[0])
