@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import math
 import re
-from decimal import Decimal
+from decimal import ROUND_CEILING, ROUND_FLOOR, Decimal
 
 import FreeCAD as App
 import Part
@@ -195,16 +195,21 @@ def reach_mark(sigma, digits, up=False):
     return f"\x01{'r' if up else 'R'}{float(sigma)!r}|{digits}\x02"
 
 
+def _to_digits(x, digits, rounding):
+    """x != 0 rounded (decimal ``rounding``) to ``digits`` significant digits of its shortest
+    decimal (repr): a digit x has is kept (0.001707 / 1e-9 is 1706999.9999999998 in floats)."""
+    exact = Decimal(repr(float(x)))
+    return float(exact.quantize(Decimal(1).scaleb(exact.adjusted() - digits + 1), rounding))
+
+
 def floor_digits(x, digits):
     """x != 0 rounded DOWN to ``digits`` significant digits (the float of its %g text)."""
-    q = 10.0 ** (math.floor(math.log10(abs(x))) - digits + 1)
-    y = float(f"{math.floor(x / q) * q:.{digits}g}")
-    return y if y <= x else float(f"{(math.floor(x / q) - 1) * q:.{digits}g}")
+    return _to_digits(x, digits, ROUND_FLOOR)
 
 
 def ceil_digits(x, digits):
     """x != 0 rounded UP to ``digits`` significant digits (the float of its %g text)."""
-    return -floor_digits(-x, digits)
+    return _to_digits(x, digits, ROUND_CEILING)
 
 
 def mm_marked(text):
