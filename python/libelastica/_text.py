@@ -18,16 +18,19 @@ def lengths(unit: str = "", length: Optional[LengthFormat] = None) -> LengthForm
         (f"{v:g}" if digits is None else f"{v:.{digits}g}") + (unit if with_unit else "")
 
 
-def coordinates(values, extent: float, digits: int = 6) -> str:
+def coordinates(values, extent: float, digits: int = 6,
+                length: Optional[LengthFormat] = None) -> str:
     """Coordinates written with ``digits`` significant digits of the curve's ``extent`` (its
     size), however far they lie from the origin: %g's 6 digits wrote x0 = 499999.97636 of a
-    10-long curve as 500000, 0.024 off, 2/3 of its fit's rms (QA18 P1). ', '-joined."""
+    10-long curve as 500000, 0.024 off, 2/3 of its fit's rms (QA18 P1). ', '-joined, each
+    by ``length(value, digits)`` where given (the summaries' formatter: :func:`lengths`)."""
     vals = [float(v) for v in (values if hasattr(values, "__len__") else [values])]
     big = max([abs(v) for v in vals if math.isfinite(v)] + [0.0])
     extra = 0
     if extent > 0 and math.isfinite(extent) and big > extent:
         extra = int(math.ceil(math.log10(big / extent)))
-    return ", ".join(f"{v:.{min(17, digits + extra)}g}" for v in vals)
+    n = min(17, digits + extra)
+    return ", ".join(f"{v:.{n}g}" if length is None else length(v, n) for v in vals)
 
 
 def curve_values(d: Mapping[str, Any]) -> List[Tuple[str, str]]:

@@ -29,7 +29,7 @@ from ._ffi import (DomainError, NotConvergedError, as_int, as_points, as_real,
 from ._interrupt import call
 from .core import DISCRETE_PARAMS, SMOOTH_PARAMS, DiscreteElastica, SmoothElastica
 from .cubic import SPARSE_POINTS, SparseWarning, smooth_fits_better
-from ._text import LengthFormat, lengths
+from ._text import LengthFormat, coordinates, lengths
 from ._values import ValueEquality
 from .fit_cost import EndConditionWarning, checked_ends
 from .misfit import MisfitWarning, _verdict, misfit_summary
@@ -269,9 +269,10 @@ def wander_summary(gap: int, points=None, unit: str = "", numbered: bool = True,
     """What a warning of a curve that wanders says (:func:`fit`'s, the CLI's and FreeCAD's):
     "the curve wanders away from its points between points 3 and 4 (counted from 0; at
     (x, y) and (x, y)): ...". gap: ``FitResult.wander_gap`` (>= 0); points: the fitted
-    points, to name the two's places (unit after each coordinate, or ``length(value, digits)``
-    writing each: cost_summary's); numbered False: by their places alone ("between the
-    points at (x, y) and (x, y)"), where the numbers are the fit's order, not the user's."""
+    points, to name the two's places (4 digits of their size: the CLI's coordinates; unit
+    after each coordinate, or ``length(value, digits)`` writing each: cost_summary's);
+    numbered False: by their places alone ("between the points at (x, y) and (x, y)"),
+    where the numbers are the fit's order, not the user's."""
     gap = int(gap)
     if gap < 0 or (points is None and not numbered):
         raise ValueError("wander_summary: the gap of a curve that wanders (>= 0) is needed, and "
@@ -282,8 +283,8 @@ def wander_summary(gap: int, points=None, unit: str = "", numbered: bool = True,
         if p.ndim != 2 or gap + 1 >= len(p):
             raise ValueError("wander_summary: points (n, 2 or 3) with n > gap + 1 are needed")
         fmt = lengths(unit, length)
-        places = " and ".join("(" + ", ".join(fmt(v, 4) for v in p[i]) + ")"
-                              for i in (gap, gap + 1))
+        size = float(np.ptp(p, axis=0).max())        # coordinates to the points' size
+        places = " and ".join(f"({coordinates(p[i], size, 4, fmt)})" for i in (gap, gap + 1))
     where = (f"points {gap} and {gap + 1} (counted from 0{'; at ' + places if places else ''})"
              if numbered else f"the points at {places}")
     return (f"the curve wanders away from its points between {where}: it loops, strays, swings "

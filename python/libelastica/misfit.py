@@ -20,7 +20,7 @@ from typing import Optional, Tuple
 import numpy as np
 
 from ._ffi import as_points, check, dptr, ffi, lib
-from ._text import LengthFormat, lengths
+from ._text import LengthFormat, coordinates, lengths
 from ._values import ValueEquality
 
 __all__ = ["MISFIT_RATIO", "MisfitWarning", "Misfit", "noise_level", "window_noise", "misfit",
@@ -271,10 +271,10 @@ def misfit_summary(m: Misfit, points=None, unit: str = "", numbered: bool = True
     FreeCAD's), of :func:`misfit`'s verdict ``m``: "the curve lies 10.9 from the points
     (rms), 24 x their own noise (0.456): they are not one elastica; a corner at point 162
     (counted from 0; at (x, y))? Split there, the two parts fit at rms 0.28 and 0.31".
-    points: the fitted points, to name the corner's
-    place; ``unit``, ``length`` as :func:`wander_summary`'s; numbered False: by its place
-    alone, where the numbers are the fit's order, not the user's; what: the model ("one
-    keyline" for :func:`fit_keyline`'s)."""
+    points: the fitted points, to name the corner's place (4 digits of their size however
+    far from the origin: the CLI's coordinates); ``unit``, ``length`` as
+    :func:`wander_summary`'s; numbered False: by its place alone, where the numbers are the
+    fit's order, not the user's; what: the model ("one keyline" for :func:`fit_keyline`'s)."""
     fmt = lengths(unit, length)
     said = (f"the curve lies {fmt(m.rms, 3)} from the points (rms), {m.ratio:.3g} x their own "
             f"noise ({fmt(m.noise, 3)}): they are not {what}")
@@ -282,8 +282,8 @@ def misfit_summary(m: Misfit, points=None, unit: str = "", numbered: bool = True
         return said + " (a corner, or curves of more than one piece: fit each alone)"
     place = ""
     if points is not None:
-        p = np.asarray(points, dtype=float)[m.corner]
-        place = "(" + ", ".join(fmt(v, 4) for v in p) + ")"
+        p = np.asarray(points, dtype=float)
+        place = f"({coordinates(p[m.corner], float(np.ptp(p, axis=0).max()), 4, fmt)})"
     where = (f"at point {m.corner} (counted from 0{'; at ' + place if place else ''})"
              if numbered or not place else f"at {place}")
     return (said + f"; a corner {where}? Split there, the two parts fit at rms "

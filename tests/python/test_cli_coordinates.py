@@ -1,6 +1,6 @@
 """The CLI's text report writes coordinates to the curve's size, however far from the origin
 (QA18 P1: 'x0=500000, y0=5e+06' for x0 = 499999.97636, 0.024 off on a 16-long fit of rms
-0.034; g2quad 'starts at (500000, 5e+06)')."""
+0.034; g2quad 'starts at (500000, 5e+06)'), and the binding's summaries name places so."""
 from __future__ import annotations
 
 import json
@@ -59,3 +59,26 @@ def test_coordinates_add_digits_for_the_offset_only():
     assert coordinates([499999.97636, 4999999.99333], 16.3) == "499999.97636, 4999999.99333"
     assert coordinates([-0.0236447123, 1.5], 16.3) == "-0.0236447, 1.5"   # as %.6g
     assert coordinates([1e-7], 1e-6) == "1e-07"
+
+
+def _place(text, pattern):
+    return [np.array(_numbers(g)) for g in re.search(pattern, text).groups()]
+
+
+def test_summaries_name_places_to_the_points_size():
+    """misfit_summary's corner and wander_summary's two points at QA18's GIS offset, by the
+    CLI's helper (coordinates): they read '(5e+05, 5e+06)', 4 digits of the offset (main);
+    now within 1e-4 of the points' size (4 digits of it), and as before at the origin."""
+    from test_misfit import ship_line
+    P = ship_line()
+    with pytest.warns(el.MisfitWarning):
+        m = el.misfit(P, el.fit(P, model="smooth").distances)
+    size = np.ptp(P, axis=0).max()
+    at = r"at point \d+ \(counted from 0; at \(([^)]*)\)\)"
+    assert _place(el.misfit_summary(m, P), at)[0].tolist() == [
+        float(f"{v:.4g}") for v in P[m.corner]]                   # at the origin: as before
+    said = el.misfit_summary(m, P + OFFSET)
+    assert np.abs(_place(said, at)[0] - (P + OFFSET)[m.corner]).max() < 1e-4 * size, said
+    said = el.wander_summary(3, P + OFFSET)
+    for got, want in zip(_place(said, r"at \(([^)]*)\) and \(([^)]*)\)\)"), (P + OFFSET)[3:5]):
+        assert np.abs(got - want).max() < 1e-4 * size, said
