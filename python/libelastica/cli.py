@@ -23,8 +23,8 @@ from ._ffi import NotConvergedError
 from ._entry import INTERRUPTED
 from ._interrupt import end_if_a_call_runs, interruptible
 from ._text import coordinates
-from .cli_common import (EXIT_BADINPUT, EXIT_INTERNAL, EXIT_NOCONV, EXIT_OK, PROG, _finite,
-                         _input_map, _mapped_bspline, _table, tol_option)
+from .cli_common import (ANGLE_UNITS, EXIT_BADINPUT, EXIT_INTERNAL, EXIT_NOCONV, EXIT_OK, PROG,
+                         _finite, _input_map, _mapped_bspline, _table, angle, tol_option)
 from .cli_fit import cmd_fit, fit_constraints
 from .cli_g2quad import cmd_g2quad
 from .cli_outputs import Outputs, check_outputs
@@ -37,12 +37,14 @@ FIT_EXAMPLES = """examples:
   elastica fit keyline_3d.csv --keyline --step 5 --svg keyline.svg   (3D: plane fit first)
   elastica fit a.csv b.csv c.npy --json 'out/{stem}.json' --svg out/   (batch + summary)
   elastica fit points.csv --fix x0,y0          (start pinned to the first data point)
-  elastica fit points.csv --fix x0=0,y0=0,phi=0
+  elastica fit points.csv --fix x0=0,y0=0,phi=30     (phi in degrees; phi=0.5rad: radians)
   elastica fit sketch.csv --model smooth --start-point first --end-point last --start-tangent 90
   elastica fit scan.csv --model smooth --distance paired   (point i at arc length i L/(n-1))
 
 input: CSV, whitespace separated text or .npy, 2 columns (x, y) or 3 (x, y, z);
-'#' comments and one header line are allowed."""
+'#' comments and one header line are allowed.
+angles (--fix phi, --start-tangent, --end-tangent): degrees, or radians with 'rad' after
+the number ('0.5rad'); the JSON writes them in radians (phi, *_tangent_rad)."""
 
 HERMITE_EXAMPLES = """examples:
   elastica hermite 0 0 1 0  1 0 1 0 --tension 10 --svg hermite.svg
@@ -82,7 +84,8 @@ class _Parser(argparse.ArgumentParser):
         # argparse takes '-1e-8' and '-5e3' for options (its negative-number pattern has no
         # exponent: `hermite ... 1 -1e-8` failed "arguments are required: V"); no option of
         # the CLI looks like a number, so every one of them is a number
-        self._negative_number_matcher = re.compile(r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$")
+        self._negative_number_matcher = re.compile(r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?"
+                                                   r"\s*(deg|rad)?$", re.IGNORECASE)
 
     def error(self, message: str):
         self.exit(EXIT_BADINPUT, f"{self.prog}: error: {message}\n")
@@ -111,6 +114,14 @@ def _ranged(kind, lo=None, hi=None, above=None, below=None):
 POSITIVE = _ranged(float, above=0.0)
 DEGREE = _ranged(int, lo=3, hi=7)
 SOLUTION = _ranged(int, lo=0)
+
+
+def ANGLE(text: str) -> float:
+    """An argparse type: cli_common.angle (degrees, or '0.5rad'), in radians."""
+    try:
+        return angle(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r}: an angle is needed ({ANGLE_UNITS})") from None
 
 
 def _units_option(parser) -> None:
@@ -521,7 +532,8 @@ def build_parser() -> argparse.ArgumentParser:
                    help="split at the estimated inflection and fit each side (seed 000 §5)")
     f.add_argument("--fix", metavar="NAMES",
                    help="parameters held fixed: 'x0,y0' (start at the first point) or "
-                        "'x0=0,y0=0,phi=0' (phi in radians, as the JSON's curve)")
+                        "'x0=0,y0=0,phi=30' (phi in degrees as every angle of the command "
+                        "line, or phi=0.5rad; the JSON's curve holds it in radians)")
     f.add_argument("--distance", choices=("orthogonal", "paired"),
                    help="what is minimised: the points' distances to the curve or polygon "
                         "(default; the discrete model on equally spaced points: paired) or "
@@ -530,9 +542,10 @@ def build_parser() -> argparse.ArgumentParser:
                              "the one that cannot be met)")
     c.add_argument("--start-point", metavar="X,Y|first", help="the curve starts here")
     c.add_argument("--end-point", metavar="X,Y|last", help="the curve ends here")
-    c.add_argument("--start-tangent", type=float, metavar="DEG",
-                   help="tangent direction at the start (degrees, the direction of travel)")
-    c.add_argument("--end-tangent", type=float, metavar="DEG", help="tangent direction at the end")
+    c.add_argument("--start-tangent", type=ANGLE, metavar="DEG",
+                   help="tangent direction at the start (the direction of travel): " + ANGLE_UNITS)
+    c.add_argument("--end-tangent", type=ANGLE, metavar="DEG",
+                   help="tangent direction at the end (degrees, or '0.5rad')")
     c.add_argument("--start-curvature", type=float, metavar="K",
                    help="curvature at the start (1/units, + turning left; 0: a free end)")
     c.add_argument("--end-curvature", type=float, metavar="K", help="curvature at the end")

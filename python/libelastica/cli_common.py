@@ -3,6 +3,7 @@ statuses and program name, numbers and tables for the terminal, argument checks,
 batch progress bar, a fitted curve's B-spline and a plane's record."""
 from __future__ import annotations
 
+import re
 import sys
 from contextlib import contextmanager
 from typing import Any, Dict, List, Optional, Sequence
@@ -55,6 +56,23 @@ def _float_list(text: str, n: int, what: str) -> List[float]:
     if len(vals) != n or not all(np.isfinite(vals)):
         raise InputError(f"{what}: expected {n} finite comma-separated numbers, got {text!r}")
     return vals
+
+
+ANGLE_UNITS = "degrees, or radians with 'rad' after the number ('0.5rad')"
+_ANGLE = re.compile(r"\s*(\S+?)\s*(deg|rad)?\s*", re.IGNORECASE)
+
+
+def angle(text: str) -> float:
+    """An angle of the command line in radians (what el.fit takes): degrees, as every angle
+    the user types ('30', '30deg'), or radians with 'rad' after it ('0.5rad'); ValueError
+    when it is no finite number."""
+    m = _ANGLE.fullmatch(text)
+    if m is None:
+        raise ValueError(f"no angle: {text!r}")
+    v = float(m.group(1))
+    if not np.isfinite(v):
+        raise ValueError(f"no finite angle: {text!r}")
+    return v if (m.group(2) or "").lower() == "rad" else np.radians(v)
 
 
 def _finite(x: float, what: str) -> float:

@@ -12,9 +12,9 @@ import numpy as np
 
 from ._ffi import NotConvergedError
 from ._text import curve_values
-from .cli_common import (EXIT_BADINPUT, EXIT_INTERNAL, EXIT_NOCONV, EXIT_OK, PROG, _converged,
-                         _finite, _float_list, _fmt, _mapped_bspline, _plane_record, _Progress,
-                         _status_text, _table, tol_option)
+from .cli_common import (ANGLE_UNITS, EXIT_BADINPUT, EXIT_INTERNAL, EXIT_NOCONV, EXIT_OK, PROG,
+                         _converged, _finite, _float_list, _fmt, _mapped_bspline, _plane_record,
+                         _Progress, _status_text, _table, angle, tol_option)
 from .cli_outputs import out_path
 from .fit import quiet_fit
 from .fit_cost import cost_summary, costly, end_costs, held_ends, local_cost_summary
@@ -23,8 +23,9 @@ from .io import InputError, curve_to_dict, read_points, write_dxf_spline, write_
 
 
 def _parse_fix(spec: Optional[str], data: np.ndarray, keyline: bool = False) -> Dict[str, float]:
-    """--fix 'x0,y0' (the start pinned to the first data point) or 'x0=1,y0=2,phi=0'
-    (explicit values). With --keyline, x0/y0 are already pinned at the inflection, so
+    """--fix 'x0,y0' (the start pinned to the first data point) or 'x0=1,y0=2,phi=30'
+    (explicit values; phi in degrees, or '0.5rad', as every angle of the command line: held
+    in radians). With --keyline, x0/y0 are already pinned at the inflection, so
     bare 'x0'/'y0' are dropped."""
     fixed: Dict[str, float] = {}
     for item in (spec or "").split(","):
@@ -33,7 +34,12 @@ def _parse_fix(spec: Optional[str], data: np.ndarray, keyline: bool = False) -> 
             continue
         name, _, value = item.partition("=")
         name = name.strip()
-        if value:
+        if value and name == "phi":
+            try:
+                fixed[name] = angle(value)
+            except ValueError:
+                raise InputError(f"--fix: phi={value!r} is not an angle ({ANGLE_UNITS})") from None
+        elif value:
             try:
                 fixed[name] = _finite(float(value), f"--fix {name}")
             except ValueError:
@@ -288,7 +294,7 @@ def _misfit(path, m, points: np.ndarray, numbered: bool, what: str = "one elasti
 
 
 def _constraints(args, data: np.ndarray) -> Dict[str, Any]:
-    """el.fit's constraints from the command line (angles in degrees there)."""
+    """el.fit's constraints from the command line (its angles read in radians by cli.ANGLE)."""
     con: Dict[str, Any] = {}
     for end, idx, word in (("start", 0, "first"), ("end", -1, "last")):
         spec = getattr(args, f"{end}_point")
@@ -297,7 +303,7 @@ def _constraints(args, data: np.ndarray) -> Dict[str, Any]:
                                    else tuple(_float_list(spec, 2, f"--{end}-point")))
         ang = getattr(args, f"{end}_tangent")
         if ang is not None:
-            con[f"{end}_tangent"] = np.radians(_finite(ang, f"--{end}-tangent"))
+            con[f"{end}_tangent"] = ang          # radians (cli.ANGLE)
         kap = getattr(args, f"{end}_curvature")
         if kap is not None:
             con[f"{end}_curvature"] = _finite(kap, f"--{end}-curvature")

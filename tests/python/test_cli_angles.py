@@ -11,6 +11,8 @@ import numpy as np
 
 import libelastica as el
 from cli_run import cli
+from libelastica.cli import build_parser
+from libelastica.cli_fit import _parse_fix
 
 EX = Path(__file__).resolve().parents[2] / "examples"
 SAMPLE_S = EX / "sample_s_curve.csv"
@@ -90,3 +92,31 @@ def test_the_report_names_phis_unit(capsys, tmp_path):
     doc = json.loads(cli(capsys, "fit", SAMPLE_S, "--model", "smooth", "--json", "-")[1])
     assert float(phi.group(1)) == float(f"{doc['curve']['phi']:.6g}")
     assert re.search(r"phi = \S+ rad", (tmp_path / "f.svg").read_text())
+
+
+def test_every_angle_typed_is_in_degrees(capsys):
+    """`--fix phi=30` was 30 radians beside --start-tangent's degrees: every angle of the
+    command line is now degrees, or radians with 'rad' after it; the JSON keeps radians."""
+    def fitted(*opts):
+        code, out, err = cli(capsys, "fit", SAMPLE_S, "--model", "smooth", *opts, "--json", "-")
+        assert code == 0, err
+        return json.loads(out)
+    assert fitted("--fix", "phi=30")["curve"]["phi"] == np.radians(30.0)
+    assert _parse_fix("x0,phi=-30deg", np.zeros((2, 2))) == {"x0": 0.0, "phi": np.radians(-30.0)}
+    assert fitted("--fix", "phi=0.5rad")["curve"]["phi"] == 0.5
+    a0 = _free_end_angles(capsys)[0]
+    want = fitted("--start-tangent", a0)
+    rad = float(np.radians(a0))
+    for typed in (f"{a0!r}deg", f"{rad!r}rad", f"{rad!r} RAD"):
+        got = fitted("--start-tangent", typed)
+        assert got["constraints"] == want["constraints"] and got["curve"] == want["curve"], typed
+    args = build_parser().parse_args(["fit", "p.csv", "--end-tangent", "-30deg"])
+    assert args.end_tangent == np.radians(-30.0)
+    for opts, said in ((["--fix", "phi=30grad"], "--fix: phi='30grad' is not an angle (degrees"),
+                       (["--start-tangent", "nan"], "argument --start-tangent: 'nan': an angle is "
+                                                    "needed (degrees")):
+        code, _, err = cli(capsys, "fit", SAMPLE_S, *opts)
+        assert code == 2 and said in err, err
+    helped = " ".join(cli(capsys, "fit", "--help")[1].split())
+    assert "'x0=0,y0=0,phi=30' (phi in degrees as every angle of the command line" in helped
+    assert "angles (--fix phi, --start-tangent, --end-tangent): degrees" in helped
