@@ -10,6 +10,7 @@ import numpy as np
 from ._ffi import (INT_MAX, DomainError, NotConvergedError, as_degree, as_int, as_points,
                    as_positive, as_real, as_vector, bspline_from_c, check, dptr, ffi, lib,
                    require, warn_if_degrees)
+from .core import within
 
 
 RELATIVE_TOL = 1e-6
@@ -126,18 +127,11 @@ class BSpline:
     def _params(self, t, who: str):
         """(t as a vector, scalar): the parameters ``who`` evaluates at, each within the
         domain (the C library's 1e-12 slack), else DomainError naming ``who``, the value
-        and the domain."""
-        scalar = np.ndim(t) == 0
-        t = as_vector(t, f"{who}: t", finite=True)
-        a, z = self.domain
-        slack = 1e-12 * (abs(a) + abs(z) + (z - a))     # (el_bspline_derivative's)
-        out = (t < a - slack) | (t > z + slack)
-        if out.any():
-            i = int(np.argmax(out))
-            raise DomainError(lib.EL_EDOM, f"{who}: parameter {'t' if scalar else f't[{i}]'} = "
-                              f"{float(t[i])!r} is outside the B-spline's domain [{a!r}, {z!r}] "
-                              "(parameters, not arc lengths; an int is a parameter too)")
-        return t, scalar
+        and the domain (core.within: the curves' arc-length rule, an int a parameter)."""
+        a, z = self.domain              # (el_bspline_derivative's slack)
+        return within(t, a, z, who, "parameter t", 1e-12 * (abs(a) + abs(z) + (z - a)),
+                      "the B-spline's domain", "parameters, not arc lengths; an int is a "
+                      "parameter too", lambda said: DomainError(lib.EL_EDOM, said))
 
     def derivative(self, t, order: int = 1) -> np.ndarray:
         """Derivative of the given order (0 = points) at parameters t in :attr:`domain`,

@@ -15,6 +15,8 @@ DISCRETE_PARAMS = ("x0", "y0", "h", "phi", "z", "q", "k")
 # el_smooth_check's / el_discrete_check's ranges (elastica.h), named in Python's message
 _SMOOTH_RULES = {"mu": (lambda v: v > 0, "> 0"), "length": (lambda v: v >= 0, ">= 0")}
 _DISCRETE_RULES = {"h": (lambda v: v > 0, "> 0"), "k": (lambda v: v >= 0, ">= 0")}
+# the method that evaluates each of el_smooth_eval's outputs (named in its messages)
+_METHOD = {"xy": "points", "theta": "angle", "kappa": "curvature"}
 
 
 def _check_fields(cls: str, p, names, rules) -> None:
@@ -70,8 +72,8 @@ class SmoothElastica(ShapeDescriptors):
         return np.array([getattr(self, n) for n in SMOOTH_PARAMS])
 
     def _eval(self, s, what: str, extrapolate: bool = False) -> np.ndarray:
-        s, scalar = arc_lengths(101 if s is None else s, self.length, "SmoothElastica",
-                                extrapolate)
+        s, scalar = arc_lengths(101 if s is None else s, self.length,
+                                f"SmoothElastica.{_METHOD[what]}", extrapolate)
         out = self._at(s, what)
         return out[0] if scalar else out
 
@@ -113,7 +115,8 @@ class SmoothElastica(ShapeDescriptors):
         """d gamma(s_i) / d p, shape (n, 2, 7), p = (x0, y0, phi, mu, k, q, length); the length
         column holds s/length fixed (d/dL gamma(t L) = t T); s as :meth:`points` takes it
         (a float: shape (2, 7))."""
-        s, scalar = arc_lengths(101 if s is None else s, self.length, "SmoothElastica")
+        s, scalar = arc_lengths(101 if s is None else s, self.length,
+                                "SmoothElastica.jacobian")
         jac = np.empty((len(s), 2, 7))
         check(lib.el_smooth_jacobian(self._c(), len(s), dptr(s), ffi.NULL, dptr(jac)),
               "SmoothElastica.jacobian")
@@ -141,20 +144,31 @@ def arc_lengths(where, length: float, cls: str, extrapolate: bool = False,
     integer) is a count, n >= 2 equally spaced; a float or an array (0-d included) holds
     arc lengths, each within [0, length] (1e-12 length of rounding allowed), else
     ValueError naming the range (``extrapolate``: any finite s, the elastica continued past
-    its ends); scalar: a float or 0-d array (numpy's shapes: (2,), ()). ``param``: what
-    the values are and their name, for a curve whose natural parameter is not arc length
-    (BlendCurve's "parameter t" over [0, nseg])."""
+    its ends); scalar: a float or 0-d array (numpy's shapes: (2,), ()). ``cls``: the
+    method called, named in the messages; ``param``: what the values are and their name,
+    for a curve whose natural parameter is not arc length (BlendCurve's "parameter t" over
+    [0, nseg])."""
     if isinstance(where, (int, np.integer)) and not isinstance(where, (bool, np.bool_)):
         n = as_int(where, f"{cls}: the number of points n", 2, None)
         return np.linspace(0.0, length, n), False
+    return within(where, 0, length, cls, param, None if extrapolate else 1e-12 * length,
+                  "the curve,", "an int n asks for n points")
+
+
+def within(where, lo: float, hi: float, who: str, param: str, slack: Optional[float],
+           place: str, hint: str, error=invalid):
+    """(values, scalar): ``where`` (a float, an array, 0-d included: scalar) as a finite
+    float64 vector, each within [lo, hi] give or take ``slack`` (None: any), else
+    ``error(message)`` naming ``who``, the value and the range: "{who}: parameter t[1] =
+    -1.0 is outside {place} [lo, hi] ({hint})". arc_lengths' rule, and BSpline's over
+    its domain (an int a parameter there)."""
     scalar = type(where) is float or np.ndim(where) == 0
     what, name = param.rsplit(" ", 1)
-    s = as_vector(where, f"{cls}: {name}", finite=True)
-    slack = 1e-12 * length   # (the rounding of a computed length)
-    if not extrapolate and len(s) and (s.min() < -slack or s.max() > length + slack):
-        i = int(np.argmax((s < -slack) | (s > length + slack)))
-        raise invalid(f"{cls}: {what} {name if scalar else f'{name}[{i}]'} = {float(s[i])!r} "
-                      f"is outside the curve, [0, {length!r}] (an int n asks for n points)")
+    s = as_vector(where, f"{who}: {name}", finite=True)
+    if slack is not None and len(s) and (s.min() < lo - slack or s.max() > hi + slack):
+        i = int(np.argmax((s < lo - slack) | (s > hi + slack)))
+        raise error(f"{who}: {what} {name if scalar else f'{name}[{i}]'} = {float(s[i])!r} "
+                    f"is outside {place} [{lo!r}, {hi!r}] ({hint})")
     return s, scalar
 
 

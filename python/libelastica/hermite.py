@@ -62,7 +62,7 @@ class HermiteChain(ValueEquality, ShapeDescriptors):
                 f"length={self.length:.6g})")
 
     def _eval(self, s, what: str, extrapolate: bool = False) -> np.ndarray:
-        s, scalar = arc_lengths(101 if s is None else s, self.length, "HermiteChain",
+        s, scalar = arc_lengths(101 if s is None else s, self.length, f"HermiteChain.{what}",
                                 extrapolate)
         out = chain_eval(self.pieces, self._starts, s, what,
                          self._turns if what == "angle" else None)

@@ -112,7 +112,7 @@ class ElasticSpline(ValueEquality):
     def _eval(self, where, what: str) -> np.ndarray:
         """At ``where`` by :func:`core.arc_lengths`'s rule: an int n equally spaced, or arc
         lengths (floats, arrays) along the spline from point 0, within [0, length]."""
-        s, scalar = arc_lengths(where, self.length, "ElasticSpline")
+        s, scalar = arc_lengths(where, self.length, f"ElasticSpline.{what}")
         out = chain_eval(self.pieces, self._starts, np.clip(s, 0.0, self.length), what,
                          clip=True)
         return out[0] if scalar else out

@@ -54,6 +54,22 @@ def test_outside_the_curve_is_refused_naming_the_range(curve):
     assert curve.points([0.0, L, L * (1 + 1e-15)]).shape == (3, 2)
 
 
+@pytest.mark.parametrize("curve", curves(), ids=lambda c: type(c).__name__)
+def test_a_refusal_names_the_method_called(curve):
+    """The arc-length messages named the class ('SmoothElastica: arc length s = 10.0 is
+    outside the curve'), where the rest of the binding's name the method called (19c2aab:
+    'BSpline.curvature: parameter t ...')."""
+    L, cls = curve.length, type(curve).__name__
+    methods = ["points", "angle", "curvature"] + (["jacobian"] if cls == "SmoothElastica" else [])
+    for method in methods:
+        with pytest.raises(ValueError, match=rf"^{cls}\.{method}: arc length s = {2 * L!r} is "
+                                             r"outside the curve, \[0, "):
+            getattr(curve, method)(2 * L)
+        with pytest.raises(ValueError, match=rf"^{cls}\.{method}: the number of points n must "
+                                             "be >= 2, got 1"):
+            getattr(curve, method)(1)
+
+
 def test_extrapolate_continues_the_elastica():
     """extrapolate=True keeps the formula past the ends (affine_polyline's Newton step on
     a foot point past the end uses it): the same points as the longer curve's."""
