@@ -36,7 +36,8 @@ _LAZY = {name: module for module, names in {
                "chaikin", "elastica_affine_curvature", "elastica_inflections", "lane_riesenfeld",
                "osculating_conics", "parabolic_lengths", "quadratic_bspline", "uniform_bspline",
                "g2_bspline", "quadratic_joint_curvatures"),
-    "g2quad": ("CoverageError", "CoverageWarning", "G2Quadratic", "covering_edges", "g2_quadratic"),
+    "g2quad": ("CoverageError", "CoverageWarning", "EndTangentWarning", "G2Quadratic",
+               "covering_edges", "g2_quadratic"),
 }.items() for name in names}
 # the submodules `import libelastica` always gave as attributes
 _SUBMODULES = ("affine", "blend", "bspline", "core", "cubic", "fit_cost", "g2quad", "io", "keyline",

@@ -4,10 +4,13 @@ a smooth elastica from ``fit --json``), with their distance from it, which joint
 tangent and curvature errors."""
 from __future__ import annotations
 
+import sys
+import warnings
+
 import numpy as np
 
 from ._text import coordinates
-from .cli_common import EXIT_OK, _plane_record
+from .cli_common import EXIT_OK, PROG, _plane_record
 from .io import (InputError, curve_from_dict, curve_to_dict, looks_like_json, read_input,
                  read_json, read_points, write_dxf_spline, write_json)
 
@@ -50,10 +53,18 @@ def cmd_g2quad(args) -> int:
         # JSON (QA: 150 points -> 7 edges, the B-spline 0.51 off a fit of rms 0.047)
         n = args.edges or (40 if args.fit else max(6, (len(src) - 1) // 20))
     try:
-        g = el.g2_quadratic(src, n, fit=args.fit)
+        with warnings.catch_warnings(record=True) as caught:    # said below, the CLI's way
+            warnings.simplefilter("always", el.EndTangentWarning)
+            g = el.g2_quadratic(src, n, fit=args.fit)
     except el.CoverageError as exc:     # an error, nothing written (as FreeCAD's feature)
         raise InputError(_coverage_message(exc, n, args.edges is None,
                                            exc.result.fit is not None or curve_source)) from None
+    for w in caught:
+        if issubclass(w.category, el.EndTangentWarning):      # 'g2_quadratic (n edges): ...'
+            print(f"{PROG} g2quad: warning: {str(w.message).partition('): ')[2]}",
+                  file=sys.stderr)
+        else:                                                 # as before: Python's own
+            warnings.showwarning(w.message, w.category, w.filename, w.lineno)
     jumps = f"{g.curvature_jump:.2g}"
     rec = {"file": str(source), "edges": int(n), "pieces": len(g.bsplines), "plane": plane,
            "ends": g.ends, "covers_source": g.covers_source, "ends_covered": g.ends_covered,

@@ -18,7 +18,8 @@ from ._values import ValueEquality
 from .affine import (AffinePolyline, affine_polyline, elastica_inflections, g2_bspline,
                      quadratic_joint_curvatures)
 
-__all__ = ["G2Quadratic", "CoverageError", "CoverageWarning", "covering_edges", "g2_quadratic"]
+__all__ = ["G2Quadratic", "CoverageError", "CoverageWarning", "EndTangentWarning", "covering_edges",
+           "g2_quadratic"]
 
 
 @dataclass(eq=False)
@@ -151,6 +152,17 @@ class CoverageWarning(RuntimeWarning):
     """:func:`g2_quadratic`'s warning (``partial=True``) that its splines leave part of the
     source out (an end piece next to an inflection too short for 3 edges:
     ``G2Quadratic.dropped``)."""
+
+
+class EndTangentWarning(RuntimeWarning):
+    """:func:`g2_quadratic`'s warning that an end of the source whose tangent it tried to
+    hold (_hold_start: an end piece of 7 edges or more, the source's tangent known) is not
+    held: ``misses`` ((end, angle in radians), ...) with end "start" / "end", as
+    ``G2Quadratic.source_end_tangent_error`` reads them."""
+
+    def __init__(self, message: str = "", misses: Tuple[Tuple[str, float], ...] = ()):
+        super().__init__(message)
+        self.misses = tuple(misses)
 
 
 class CoverageError(ValueError):
@@ -344,7 +356,7 @@ def _hold_start(x: np.ndarray, start, end, kappa: float, tangent) -> Optional[np
 
 def _matched_ends(x: np.ndarray, start, end, k_start: Optional[float],
                   k_end: Optional[float], t_start=None,
-                  t_end=None) -> Tuple[np.ndarray, np.ndarray]:
+                  t_end=None) -> Tuple[np.ndarray, np.ndarray, list]:
     """The piece's polyline with x_1 / x_{m-1} moved so its G2 spline's ends have the
     curvatures k_start / k_end (None, 0 or no such place: that end as it was); and that
     polyline with, where the unit tangents t_start / t_end are given and m >= 7, x_1, x_2 /
@@ -352,9 +364,11 @@ def _matched_ends(x: np.ndarray, start, end, k_start: Optional[float],
     place: the curvature alone), each end's moves found once for both. The two ends' moves
     are independent for m >= 5 (x_1 depends on x_2, x_3 only; x_{m-1} on x_{m-2}, x_{m-3}),
     for m >= 7 with x_2, x_{m-2} moved (on x_3, x_4 / x_{m-3}, x_{m-4}); fewer vertices are
-    left as they are."""
+    left as they are. Third: whether each end's tangent was held, [start, end] (None: not
+    tried)."""
+    tried = [None, None]
     if len(x) < 6:
-        return x, x
+        return x, x, tried
     y, held = x.copy(), x.copy()
     if k_start:
         z = _match_start(x, start, end, k_start)
@@ -364,6 +378,8 @@ def _matched_ends(x: np.ndarray, start, end, k_start: Optional[float],
             if t_start is not None and len(x) >= 8 else None
         if z is not None:
             held[1:3] = z[1:3]
+        if t_start is not None and len(x) >= 8:
+            tried[0] = z is not None
     if k_end:     # the same at the end, travelled backwards (its curvature changes sign)
         r = x[::-1].copy()
         z = _match_start(r, end, start, -k_end)
@@ -373,7 +389,9 @@ def _matched_ends(x: np.ndarray, start, end, k_start: Optional[float],
             if t_end is not None and len(x) >= 8 else None
         if z is not None:
             held[-3:-1] = z[2:0:-1]
-    return y, held
+        if t_end is not None and len(x) >= 8:
+            tried[1] = z is not None
+    return y, held, tried
 
 
 def _rel_err(a: float, b: float, scale: float = 0.0) -> float:
@@ -496,13 +514,13 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
         seg = np.linalg.norm(np.diff(samples, axis=0), axis=1)
         dropped = float(seg[:idx[0]].sum()), float(seg[idx[-1]:].sum())
         length = float(seg.sum())
-    splines, jump, dev, terr, serr = [], 0.0, 0.0, 0.0, []
+    splines, jump, dev, terr, serr, missed = [], 0.0, 0.0, 0.0, [], []
     poly = ap.points.copy()
     for p in range(npieces):
         a, b = ap.piece_start[p], ap.piece_start[p + 1]
         first, last = p == 0 and covers[0], p == npieces - 1 and covers[1]
         held = ends_dir is not None and (first or last)
-        x, xt = _matched_ends(ap.points[a:b + 1], ends[p], ends[p + 1],
+        x, xt, tried = _matched_ends(ap.points[a:b + 1], ends[p], ends[p + 1],
                               k_src[0] if first else None, k_src[1] if last else None,
                               ends_dir[p] if held and first else None,
                               ends_dir[p + 1] if held and last else None)
@@ -531,6 +549,10 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                                      for q in parts])
                 if tdev <= pdev * (1.0 + 1e-6):      # (1e-12 apart by rounding alone)
                     x, bs, pdev = xt, bt, tdev
+                else:                                # held ends given up: said as missed
+                    farther = (f"holding it takes the spline farther from the source "
+                               f"({tdev:.3g} against {pdev:.3g})")
+                    tried = [farther if t else t for t in tried]
         poly[a:b + 1] = x
         kl, kr = quadratic_joint_curvatures(bs)
         if len(kl):
@@ -538,12 +560,17 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
         dev = max(dev, pdev)
         if ends_dir is not None:
             d = bs.derivative(np.array([bs.knots[0], bs.knots[-1]]))
-            for vec, ref, own in ((d[0], ends_dir[p], first), (d[1], ends_dir[p + 1], last)):
+            for vec, ref, own, j in ((d[0], ends_dir[p], first, 0),
+                                     (d[1], ends_dir[p + 1], last, 1)):
                 err = abs(math.atan2(vec[0] * ref[1] - vec[1] * ref[0],
                                      vec[0] * ref[0] + vec[1] * ref[1]))
                 terr = max(terr, err)
                 if own:
                     serr.append(err)
+                    if tried[j] is not None and tried[j] is not True:
+                        missed.append((("start", "end")[j], err, tried[j] or
+                                       "no G2 end found that holds it with the source's "
+                                       "curvature"))
         splines.append(bs)
     # the source's curvature scale over each end piece's span: max |kappa| there
     if is_curve:
@@ -563,6 +590,12 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                     join_curvature_jump=kjump,
                     end_curvature_error=max(kerr) if kerr else None, dropped=dropped,
                     source_end_tangent_error=max(serr) if serr else None)
+    if missed:
+        said = "; ".join(f"the spline's {end} tangent is {math.degrees(err):.3g} deg off the "
+                         f"source's: {why}" for end, err, why in missed)
+        warnings.warn(EndTangentWarning(f"g2_quadratic ({n} edges): {said}",
+                                        tuple((end, err) for end, err, _ in missed)),
+                      stacklevel=2)
     if not all(covers):
         gone = " and ".join(f"{d:.4g} at its {w}" for d, w in zip(dropped, ("start", "end"))
                             if d > 0)
@@ -574,6 +607,7 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
             return g
         with warnings.catch_warnings():     # the counts tried: said by the error
             warnings.simplefilter("ignore", CoverageWarning)
+            warnings.simplefilter("ignore", EndTangentWarning)
             more = covering_edges(lambda m: g2_quadratic(
                 curve_or_points, m, samples_per_vertex, tangents, partial=True, **options), n)
         top = cover_search_limit(n)

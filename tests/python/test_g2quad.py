@@ -256,6 +256,46 @@ def test_polyline_moves_with_rounding_of_its_input_only_as_its_conditioning_says
     assert np.median(ratios) < 2.0, ratios
 
 
+@pytest.mark.parametrize("n, why", [(10, "no G2 end found that holds it"),
+                                    (12, "holding it takes the spline farther from the source")])
+def test_an_end_tangent_not_held_is_warned(n, why):
+    """_hold_start said nothing where it could not hold the source's end tangent: a k = 2.1
+    elastica at 10 edges ends 22 / 24 deg off the source's tangents (no G2 end holds them),
+    at 12 edges 17 / 18 deg (the held ends stray farther: given up), silently. Now an
+    EndTangentWarning names each end and its angle, as scipy reads the spline's."""
+    c = el.SmoothElastica(x0=0, y0=0, phi=-0.45, mu=1.0, k=2.1, q=0.25, length=3.0)
+    with pytest.warns(el.EndTangentWarning) as caught:
+        g = el.g2_quadratic(c, n)
+    (w,) = [x.message for x in caught if isinstance(x.message, el.EndTangentWarning)]
+    th = c.angle(np.array([0.0, c.length]))
+    assert [end for end, _ in w.misses] == ["start", "end"]
+    for (end, err), b, j in zip(w.misses, (g.bsplines[0], g.bsplines[-1]), (0, 1)):
+        t, _ = _end_state(b, j == 1)
+        assert err == pytest.approx(abs(np.angle(np.exp(1j * (math.atan2(t[1], t[0]) - th[j])))),
+                                    rel=1e-9, abs=1e-12)
+        assert err > math.radians(15.0)
+        assert f"the spline's {end} tangent is {math.degrees(err):.3g} deg off the source's: " \
+               f"{why}" in str(w)
+    assert max(err for _, err in w.misses) == g.source_end_tangent_error
+    with warnings.catch_warnings():             # held: silent
+        warnings.simplefilter("error", el.EndTangentWarning)
+        assert el.g2_quadratic(KEYLINE, 24).source_end_tangent_error < 1e-9
+
+
+def test_the_cli_says_an_end_tangent_not_held(tmp_path, capsys):
+    """`elastica g2quad` says the EndTangentWarning as its warnings ('elastica g2quad:
+    warning: ...', one line on stderr), not as Python's 'file:line: EndTangentWarning'."""
+    from cli_run import cli
+    c = el.SmoothElastica(x0=0, y0=0, phi=-0.45, mu=1.0, k=2.1, q=0.25, length=3.0)
+    (tmp_path / "c.json").write_text(json.dumps({"curve": el.io.curve_to_dict(c)}))
+    code, out, err = cli(capsys, "g2quad", tmp_path / "c.json", "--edges", "10")
+    with pytest.warns(el.EndTangentWarning) as caught:
+        el.g2_quadratic(c, 10)
+    said = str(caught[0].message).replace("g2_quadratic (10 edges): ", "")
+    assert code == 0 and err == f"elastica g2quad: warning: {said}\n", err
+    assert cli(capsys, "g2quad", tmp_path / "c.json", "--edges", "48")[2] == ""
+
+
 @pytest.mark.parametrize("n", [24, 48])
 def test_g2_quadratic_holds_the_end_tangents_at_a_gis_offset(n):
     """QA18 W3: the same curve 10 long moved to (5e5, 5e6) lost its end-tangent hold (0.9

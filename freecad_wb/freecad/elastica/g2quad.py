@@ -60,6 +60,8 @@ def _g2quad(edges, plane, n):
         tan = np().array([tuple(rot.multVec(App.Vector(*t)))[:2] for t in tangents])
         with warnings.catch_warnings():   # g2quad_core says what is left out
             warnings.simplefilter("ignore", el().CoverageWarning)
+            # (an end tangent not held: its figure is SourceEndTangentError's)
+            warnings.simplefilter("ignore", el().EndTangentWarning)
             g = el().g2_quadratic(xy, n, tangents=tan, partial=True)
     except InputProblem:
         raise
