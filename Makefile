@@ -131,7 +131,7 @@ $(BUILD)/tests/%: tests/c/%.c $(wildcard tests/c/*.h) $(BUILD)/libelastica.a
 # The fit tests' case any_kernel asserts results that must not depend on OpenBLAS's CPU
 # kernel: run again under kernels that gave other results (OPENBLAS_CORETYPE; another BLAS
 # ignores it and runs the case as before).
-KERNEL_TESTS     := test_fit_ends_held test_fit_rounding
+KERNEL_TESTS     := test_fit_ends_held test_fit_rounding test_fit_keyline_ends
 OPENBLAS_KERNELS := Nehalem Sandybridge Haswell SkylakeX Zen Prescott
 
 check-c: lib $(TEST_BIN)

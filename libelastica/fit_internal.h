@@ -754,6 +754,9 @@ int el__fit_ends_held(int model, const double *xy, size_t n, const el_fit_option
  * the fit kept, or EL_ENOMEM. */
 int el__fit_free_ends(const double *xy, size_t n, const el_fit_options *opt, int st, fit_out *res,
                       double *d, double *fs);
+/* fit_keyline_ends.c: a smooth keyline (*sol, ob) whose feet pile at a far end refitted tied to
+ * the points farthest along it; *sol and ob's feet replaced where lower. EL_OK or EL_ENOMEM. */
+int el__fit_keyline_ends(fit_objective *ob, int max_iter, fit_solution *sol, int *iters);
 /* fit_ends.c: the smooth curve p cut to [a, b] of its arc length, gamma_cut(s) = gamma(a + s)
  * (test_fit_cut.c): start gamma(a), q + sqrt(mu) a (seed 000 (4.2)), length b - a. EL_OK or
  * el_smooth_eval's error (p unchanged). */

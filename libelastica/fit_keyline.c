@@ -482,6 +482,7 @@ static int keyline_run(int model, const double *xy, size_t n, size_t split, cons
             }
         }
     }
+    if (model == FIT_SMOOTH && (st = el__fit_keyline_ends(&ob, o.max_iter, &sol, &iters))) goto done;
     int certified = sol.certified, used_ipopt = 0, ipopt_status = 0;
     if (!certified) {
         fit_ipopt_out io;
