@@ -213,11 +213,12 @@ def fit_sources(sources, csv_file="", open_panel=True, wrong=message, **options)
         fit_core.fit_gathered(src_mod.gather_points(sources, csv_file, notes=notes), notes,
                               **fit.core_options(opts))
 
-    return _check_and_create(
-        "Fit elastica", "fit", check,
-        "from freecad.elastica import fit as elastica_fit\n"
-        f"_fit = elastica_fit.make({_ref_doc(doc)}, {_src(sources)}, csv_file={csv_file!r}, "
-        f"{_kw(opts)})\n{_ref_doc(doc)}.recompute()", open_panel, wrong)
+    with fit_core.fitted_once():        # the check's fit is the new feature's first
+        return _check_and_create(
+            "Fit elastica", "fit", check,
+            "from freecad.elastica import fit as elastica_fit\n"
+            f"_fit = elastica_fit.make({_ref_doc(doc)}, {_src(sources)}, csv_file={csv_file!r}, "
+            f"{_kw(opts)})\n{_ref_doc(doc)}.recompute()", open_panel, wrong)
 
 
 class FitCommand(_Command):

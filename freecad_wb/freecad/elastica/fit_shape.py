@@ -29,17 +29,24 @@ def polygon_deviation(bspline, curves, samples=32):
     V = curves[0].points() if len(curves) == 1 else n.vstack([curves[0].points()[::-1], curves[1].points()[1:]])
     c = n.concatenate([[0.0], n.cumsum(n.linalg.norm(n.diff(V, axis=0), axis=1))])
     k = n.unique(bspline.knots)
-    t = n.concatenate([n.linspace(a, b, samples, endpoint=False)
-                       for a, b in zip(k[:-1], k[1:])] + [k[-1:]])
-    P = bspline.evaluate(t)
+    # each span's np.linspace(a, b, samples, endpoint=False), its arithmetic, at once
+    step = (k[1:] - k[:-1]) / samples
+    t = n.concatenate([(n.arange(samples) * step[:, None] + k[:-1, None]).ravel(), k[-1:]])
+    px, py = bspline.evaluate(t).T
     j = n.clip(n.searchsorted(c, t) - 1, 0, len(V) - 2)
+    # each sample's squared distance to its segment and the two beside it, by columns (a
+    # 50 000-point fit's 1.6 M samples: 2.0 s as (n, 2) rows, 0.4 s so); sqrt at the end
+    X, Y = V[:, 0], V[:, 1]
+    DX, DY = n.diff(X), n.diff(Y)
+    DD = n.maximum(DX * DX + DY * DY, 1e-300)
     best = n.full(len(t), n.inf)
     for dj in (-1, 0, 1):
         i = n.clip(j + dj, 0, len(V) - 2)
-        A, D = V[i], V[i + 1] - V[i]
-        u = n.clip(n.sum((P - A) * D, axis=1) / n.maximum(n.sum(D * D, axis=1), 1e-300), 0.0, 1.0)
-        best = n.minimum(best, n.linalg.norm(P - (A + u[:, None] * D), axis=1))
-    return float(best.max())
+        ax, ay, dx, dy = X[i], Y[i], DX[i], DY[i]
+        u = n.clip(((px - ax) * dx + (py - ay) * dy) / DD[i], 0.0, 1.0)
+        ex, ey = px - (ax + u * dx), py - (ay + u * dy)
+        n.minimum(best, ex * ex + ey * ey, out=best)
+    return float(n.sqrt(best.max()))
 
 
 def shape_bspline(model, curves, results, split, tol, degree, tails=None):
