@@ -512,9 +512,11 @@ class BlendProxy(FeatureProxy):
                      "compression)", 0.0)
         add_enum(obj, "Continuity", "Blend", G2_TIP, CONTINUITIES, "G1")
         add_property(obj, "App::PropertyInteger", "Solution", "Blend",
-                     "Which solution, by bending energy (0 = the lowest); reset to 0 by every "
-                     "edit of the blend's parameters; a picked one follows its shape when the "
-                     "edges move (the lowest where that shape is gone)", 0)
+                     "Which solution, by bending energy (0 = the lowest, the list's and "
+                     "Status's solution 1); reset to 0 by every edit of the blend's "
+                     "parameters; a picked one follows its shape when the edges move (the "
+                     "lowest where that shape is gone); bound to an expression, only it sets "
+                     "Solution", 0)
         add_length(obj, "Tolerance", "BSpline",
                    "Largest distance of the B-spline from the elastica", tol)
         add_property(obj, "App::PropertyInteger", "Degree", "BSpline",
@@ -579,8 +581,17 @@ class BlendProxy(FeatureProxy):
             if getattr(obj, "Solution", 0) != 0:
                 self.set_solution(obj, 0)
 
+    @staticmethod
+    def solution_bound(obj):
+        """The expression Solution is bound to (a cell), or None: then only it writes
+        Solution (FreeCAD's rule), never the feature's reset or follow (QA19gui F6)."""
+        return dict(getattr(obj, "ExpressionEngine", [])).get("Solution")
+
     def set_solution(self, obj, i):
-        """obj.Solution = i written by the feature itself (no pick of the designer's)."""
+        """obj.Solution = i written by the feature itself (no pick of the designer's);
+        not where Solution is bound to an expression."""
+        if self.solution_bound(obj):
+            return
         self._setting = True
         try:
             obj.Solution = i
@@ -603,6 +614,10 @@ class BlendProxy(FeatureProxy):
         if shown is None:
             return obj.Solution, False
         j = nearest_shape(shown[0], curves)
+        if self.solution_bound(obj):
+            # kept as its expression says; where the shape shown went, said (apply)
+            self._bound_moved = j
+            return obj.Solution, False
         return (0, True) if j is None else (j, False)
 
     def ends(self, obj):
@@ -635,11 +650,14 @@ class BlendProxy(FeatureProxy):
         g2 = obj.Continuity == "G2"
         r = blend_core(e1, obj.AtEnd1, e2, obj.AtEnd2, plane, obj.Mode, value, none_ok=g2)
         curves = r["curves"]
+        self._bound_moved = False
         i, r["gone"] = self._followed_solution(obj, curves, r["energies"])
-        r["solution"] = i
+        r["solution"], r["bound_moved"] = i, self._bound_moved
         if curves and not 0 <= i < len(curves):
-            raise InputProblem(f"Solution = {i}: there are {len(curves)} solutions "
-                               f"(0 to {len(curves) - 1})")
+            # in the numbering the list and Status show (from 1) as well as the property's
+            raise InputProblem(f"Solution = {i} names solution {i + 1}: there are "
+                               f"{len(curves)} solutions (Solution 0 to {len(curves) - 1} "
+                               f"for solutions 1 to {len(curves)})")
         tol, degree = check_tolerance(float(obj.Tolerance)), check_degree(obj.Degree)
         if obj.Continuity == "G2":
             r["g2"], r["bspline"], r["g2_note"] = g2_blend(r, i, obj.Mode, value, tol, degree)
@@ -658,6 +676,12 @@ class BlendProxy(FeatureProxy):
             "move)" if r["gone"] else f" (solution {obj.Solution + 1} before the edges moved)")
         if followed:
             self.set_solution(obj, i)
+        moved = r.get("bound_moved", False)
+        if moved is not False and moved != i:
+            # bound: the expression's solution kept, the shape shown before named
+            followed = (f" (Solution kept as {self.solution_bound(obj)} says: the shape shown "
+                        "before is " + (f"solution {moved + 1} now" if moved is not None
+                                        else "gone with the edges' move") + ")")
         obj.Shape = part_bspline(r["bspline"], r["placement"]).toShape()
         described = [describe(c) for c in curves]
         obj.Lengths = [float(c.length) for c in curves]
