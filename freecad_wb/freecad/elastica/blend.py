@@ -22,8 +22,8 @@ from .units import (floor_digits, length_mark, length_text, length_unit_mark, pe
                     per_length, per_length_mark, reach_mark, tension_mark, tension_or_zero,
                     tension_text, tension_unit_mark)
 from .proxy import (FeatureProxy, InputProblem, add_enum, add_geometry_index, add_length,
-                    add_link, add_property, attach_view, check_degree, check_number,
-                    check_tolerance, read_only, set_said)
+                    add_link, add_property, attach_view, check_bound_per_area, check_degree,
+                    check_number, check_tolerance, read_only, set_said)
 
 MODES = ["length", "tension"]
 CONTINUITIES = ["G1", "G2"]
@@ -646,6 +646,8 @@ class BlendProxy(FeatureProxy):
         """blend_core's dict for the linked edges, plus the chosen solution's B-spline."""
         e1, e2 = self.ends(obj)
         plane = self.sketch_plane(obj)
+        if obj.Mode == "tension":
+            check_bound_per_area(obj, "Tension")
         value = float(obj.Length) if obj.Mode == "length" else obj.Tension
         g2 = obj.Continuity == "G2"
         r = blend_core(e1, obj.AtEnd1, e2, obj.AtEnd2, plane, obj.Mode, value, none_ok=g2)
