@@ -22,8 +22,8 @@ from .units import (floor_digits, length_mark, length_text, length_unit_mark, pe
                     per_length, per_length_mark, reach_mark, tension_mark, tension_or_zero,
                     tension_text, tension_unit_mark)
 from .proxy import (FeatureProxy, InputProblem, add_enum, add_geometry_index, add_length,
-                    add_link, add_property, attach_view, check_bound_per_area, check_degree,
-                    check_number, check_tolerance, read_only, set_said)
+                    add_link, add_per_area, add_property, attach_view, check_bound_per_area,
+                    check_degree, check_number, check_tolerance, read_only, set_said)
 
 MODES = ["length", "tension"]
 CONTINUITIES = ["G1", "G2"]
@@ -507,7 +507,7 @@ class BlendProxy(FeatureProxy):
         add_length(obj, "Length", "Blend",
                    "Arc length of the blend in length mode; 0 = the length of the "
                    "lowest-energy free batten", 0.0)
-        add_property(obj, "App::PropertyFloat", "Tension", "Blend",
+        add_per_area(obj, "Tension", "Blend",
                      "Tension sigma in tension mode (1/mm^2; 0 = free batten, negative = "
                      "compression)", 0.0)
         add_enum(obj, "Continuity", "Blend", G2_TIP, CONTINUITIES, "G1")
@@ -553,7 +553,7 @@ class BlendProxy(FeatureProxy):
         add_property(obj, "App::PropertyFloat", "BlendLength", "Result",
                      "Length of the blend on screen (mm): the chosen solution's, or the G2 "
                      "batten's")
-        add_property(obj, "App::PropertyFloat", "BlendTension", "Result",
+        add_per_area(obj, "BlendTension", "Result",
                      "Tension of the blend on screen (1/mm^2): the chosen solution's, or the "
                      "G2 batten's")
         add_property(obj, "App::PropertyInteger", "Poles", "Result", "Poles of the B-spline")
@@ -568,8 +568,8 @@ class BlendProxy(FeatureProxy):
     def onChanged(self, obj, prop):
         if prop in self.followed_links and not self.link_changed(obj, prop):
             return                  # restored, or renamed following its sketch geometry
-        if "Restore" in obj.State:
-            return
+        if "Restore" in obj.State or getattr(self, "_restoring", False):
+            return                  # (onDocumentRestored's setup: add_per_area's bounds)
         # the designer's pick (property editor, panel, macro): shown as picked, never read as
         # an edge move (the edges of a reopened file differ from the saved solve's by an ulp)
         if prop == "Solution" and not obj.Document.Transacting \

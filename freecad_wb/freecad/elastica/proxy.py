@@ -84,6 +84,39 @@ def add_length(obj, name, group, tip, value=None):
     add_property(obj, LENGTH, name, group, tip, value)
 
 
+# A tension (1/mm^2) the designer types is an App::PropertyPrecision: FreeCAD's property
+# view shows a float property with 2 decimals (0.001 as "0.00", QA19gui F10), a precision one
+# with 16 (FreeCAD 0.20 has no typed property of 1/length^2). Its bounds are opened to every
+# double (its own, [0, max], clamp a compression to 0) and set again on restore: a file keeps
+# no bounds.
+PER_AREA = "App::PropertyPrecision"
+_ANY = (-sys.float_info.max, sys.float_info.max, 1e-4)     # bounds, arrows' step
+
+
+def add_per_area(obj, name, group, tip, value=0.0):
+    """A tension property (PER_AREA). Documents of version 3 stored it as
+    App::PropertyFloat: that property is replaced, its value and expression kept, the
+    object untouched (as on every restore, its bounds set again)."""
+    expression = None
+    touched = "Touched" in obj.State
+    if name in obj.PropertiesList:
+        value = float(getattr(obj, name))
+        if obj.getTypeIdOfProperty(name) != PER_AREA:
+            expression = dict(obj.ExpressionEngine).get(name)
+            if expression:
+                obj.setExpression(name, None)
+            obj.removeProperty(name)
+            obj.addProperty(PER_AREA, name, group, tip)
+    else:
+        obj.addProperty(PER_AREA, name, group, tip)
+        touched = True
+    setattr(obj, name, (value,) + _ANY)
+    if expression:
+        obj.setExpression(name, expression)
+    if not touched:
+        obj.purgeTouched()
+
+
 # What a feature reads is linked with global scope (App::PropertyLinkSubGlobal, ...), as
 # Draft's path array links its path: a feature at document level reads a sketch inside a
 # PartDesign Body or an App::Part, which a link of local scope may not reach (FreeCAD
@@ -444,7 +477,8 @@ class FeatureProxy:
     # ---------------------------------------------------------------- save / restore
 
     def _float_props(self, obj):
-        return [p for p in obj.PropertiesList if obj.getTypeIdOfProperty(p) in ("App::PropertyFloat", LENGTH)]
+        return [p for p in obj.PropertiesList
+                if obj.getTypeIdOfProperty(p) in ("App::PropertyFloat", LENGTH, PER_AREA)]
 
     def __getstate__(self):
         state = {"kind": self.kind, "version": VERSION}

@@ -21,8 +21,9 @@ from .links import followed_edge, followed_reader
 from .units import (ceil_digits, coordinate_mark, floor_digits, length_mark, length_unit_mark,
                     reach_mark, say, tension_mark)
 from .proxy import (FeatureProxy, InputProblem, add_edge_end, add_enum, add_geometry_index,
-                    add_length, add_link, add_property, check_bound_per_area, check_degree,
-                    check_number, check_tolerance, edge_end_choice, new_feature, read_only, set_said)
+                    add_length, add_link, add_per_area, add_property, check_bound_per_area,
+                    check_degree, check_number, check_tolerance, edge_end_choice, new_feature,
+                    read_only, set_said)
 from .sources import gather_vertices
 
 MODES = ["tension", "length"]
@@ -407,7 +408,7 @@ class SplineProxy(FeatureProxy):
         add_geometry_index(obj, "PointsGeometry", "Points")
         add_enum(obj, "Mode", "Spline", "Solve for a given tension (default 0: the free "
                  "batten) or a given total length (the tension follows)", MODES, "tension")
-        add_property(obj, "App::PropertyFloat", "Tension", "Spline",
+        add_per_area(obj, "Tension", "Spline",
                      "Tension sigma in tension mode (1/mm^2, >= 0): 0 = the free batten, "
                      "larger pulls the batten straighter between the ducks", 0.0)
         add_length(obj, "Length", "Spline",
@@ -446,7 +447,10 @@ class SplineProxy(FeatureProxy):
                 ("Energy", "Bending energy: the integral of kappa^2 ds (1/mm)"),
                 ("MaxCurvature", "Largest |curvature| (1/mm)"),
                 ("BSplineDeviation", "Certified distance of the B-spline from the spline (mm)")):
-            add_property(obj, "App::PropertyFloat", name, "Result", tip)
+            if name == "SplineTension":
+                add_per_area(obj, name, "Result", tip)
+            else:
+                add_property(obj, "App::PropertyFloat", name, "Result", tip)
         if "SpanTensions" in obj.PropertiesList:   # version 1: a G2 end span's own tension
             obj.removeProperty("SpanTensions")
         add_property(obj, "App::PropertyVectorList", "Ducks", "Result",
