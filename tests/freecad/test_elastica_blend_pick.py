@@ -63,7 +63,8 @@ class BlendPickTest(S.DocTest):
         b.Solution = 99
         self.doc.recompute()
         self.assertEqual(b.Solution, 99)
-        self.assertEqual(b.Status, "error: Solution = 99: there are 4 solutions (0 to 3)")
+        self.assertEqual(b.Status, "error: Solution = 99 names solution 100: there are 4 "
+                                   "solutions (Solution 0 to 3 for solutions 1 to 4)")
 
 
 class BlendLoopFollowTest(S.DocTest):

@@ -264,6 +264,14 @@ def blend_sources(sources, open_panel=True, picks=None, wrong=message):
         wrong("select exactly two edges (each is joined at its end nearer where it was "
               "clicked)")
         return None
+    docs = [o.Document for o, _ in edges]
+    if any(d != doc for d in docs):
+        # the blend links both edges (App::PropertyLinkSub: no external object)
+        where = " and ".join(dict.fromkeys(f"'{d.Label}'" for d in docs))
+        wrong(f"the two edges are in {'documents ' if len(set(docs)) > 1 else 'document '}"
+              f"{where}: a blend links both edges, so they must be in one document, the "
+              f"active one ('{doc.Label}'); copy an edge into it (Edit > Copy, Paste)")
+        return None
 
     opts = {}
 
@@ -296,9 +304,10 @@ def blend_sources(sources, open_panel=True, picks=None, wrong=message):
 
 class BlendCommand(_Command):
     pixmap, menu = "blend", "Elastic blend"
-    tip = ("Join two selected coplanar edges by an elastica, each at its end nearer where "
-           "you clicked it (selected by a script, without a click: their nearest ends): the "
-           "free batten, or every Hermite solution for a tension or a length")
+    tip = ("Join two selected coplanar edges of the active document by an elastica, each "
+           "at its end nearer where you clicked it (selected by a script, without a click: "
+           "their nearest ends): the free batten, or every Hermite solution for a tension or "
+           "a length")
     run = staticmethod(blend_sources)
 
     @staticmethod

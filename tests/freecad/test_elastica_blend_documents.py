@@ -1,0 +1,56 @@
+"""freecadcmd -t test of a blend asked between edges of two documents (QA19gui F5): the
+command says in words that both edges must be in one document, the active one (it printed
+FreeCAD's raw exception dict, 'PropertyLinkSub does not support external object'), and
+leaves both documents unchanged."""
+import unittest
+
+import FreeCAD as App
+
+from freecad.elastica import commands as C
+
+
+class BlendDocumentsTest(unittest.TestCase):
+    def setUp(self):
+        self.a, self.b = App.newDocument("BlendDocA"), App.newDocument("BlendDocB")
+        self.la = self._line(self.a, "LA", (0, 0, 0), (40, 0, 0))
+        self.lb = self._line(self.b, "LB", (80, 25, 0), (120, 35, 0))
+        self.lb2 = self._line(self.b, "LB2", (0, 0, 0), (40, 0, 0))
+        App.setActiveDocument(self.a.Name)
+
+    def tearDown(self):
+        for d in (self.a, self.b):
+            App.closeDocument(d.Name)
+
+    @staticmethod
+    def _line(doc, name, p, q):
+        line = doc.addObject("Part::Line", name)
+        line.X1, line.Y1, line.Z1 = p
+        line.X2, line.Y2, line.Z2 = q
+        doc.recompute()
+        return line
+
+    def _said(self, sources):
+        said = []
+        before = [len(d.Objects) for d in (self.a, self.b)]
+        made = C.blend_sources(sources, open_panel=False, wrong=said.append)
+        self.assertIsNone(made)
+        self.assertEqual([len(d.Objects) for d in (self.a, self.b)], before)
+        return said
+
+    def test_two_documents_are_refused_in_words(self):
+        said = self._said([(self.la, ["Edge1"]), (self.lb, ["Edge1"])])
+        a, b = self.a.Label, self.b.Label
+        self.assertEqual(said, [f"the two edges are in documents '{a}' and '{b}': a blend "
+                                "links both edges, so they must be in one document, the active "
+                                f"one ('{a}'); copy an edge into it (Edit > Copy, Paste)"])
+
+    def test_edges_of_another_document_than_the_active_one_too(self):
+        said = self._said([(self.lb2, ["Edge1"]), (self.lb, ["Edge1"])])
+        a, b = self.a.Label, self.b.Label
+        self.assertEqual(said, [f"the two edges are in document '{b}': a blend links both "
+                                "edges, so they must be in one document, the active one "
+                                f"('{a}'); copy an edge into it (Edit > Copy, Paste)"])
+
+
+if __name__ == "__main__":
+    unittest.main()
