@@ -573,13 +573,31 @@ class Panel:
             return ""
         doc = f"App.getDocument({self.doc.Name!r})"
         code = "from freecad.elastica import geometry as elastica_geometry\n"
-        if target == "*new*":
+        body = self.sources_body() if target == "*new*" else None
+        if body is not None:
+            # in the sources' Body, as Sketcher's new sketch in the active Body: it moves
+            # with the Body (QA19gui F8); its placement is the Body's own
+            code += (f"_body = {doc}.getObject({body.Name!r})\n"
+                     "_sk = _body.newObject('Sketcher::SketchObject', 'ElasticaSketch')\n"
+                     "_sk.Placement = _body.getGlobalPlacement().inverse().multiply("
+                     f"{doc}.getObject({self.obj.Name!r}).Plane)\n")
+        elif target == "*new*":
             code += (f"_sk = {doc}.addObject('Sketcher::SketchObject', 'ElasticaSketch')\n"
                      f"_sk.Placement = {doc}.getObject({self.obj.Name!r}).Plane\n")
         else:
             code += f"_sk = {doc}.getObject({target!r})\n"
         return code + (f"elastica_geometry.write_to_sketch({doc}.getObject({self.obj.Name!r}), "
                        "_sk)\n")
+
+    def sources_body(self):
+        """The PartDesign Body holding the first of the feature's sources in one (a sketch
+        in a Body), or None."""
+        for name in getattr(self, "sketch_exclude", ()):
+            src = self.doc.getObject(name)
+            parent = src.getParentGeoFeatureGroup() if src is not None else None
+            if parent is not None and parent.isDerivedFrom("PartDesign::Body"):
+                return parent
+        return None
 
     def committed_by_other(self):
         """A command run during the edit committed the panel's transaction (every command
