@@ -35,7 +35,7 @@ def run_all(smoke):
         G.wait(900)
         panel.list.setCurrentRow(1)
         G.wait(900)
-        G.check(b.Tension == 0.001 and b.Solution == 1,
+        G.check(b.Tension == 0.001 and b.Solution == 2,
                 f"the blend edited ({b.Tension}, {b.Status})")
         shown = S.taken(b)
         panel.accept()
@@ -58,7 +58,7 @@ def run_all(smoke):
     G.screenshot("gui_recorded_blend.png")
     ref = f"App.getDocument({name!r}).getObject({blend!r})"
     lines = [line for code in recorded for line in code.splitlines() if line.startswith(ref)]
-    G.check(lines == [f"{ref}.Tension = 0.001", f"{ref}.Solution = 1", f"{ref}.Degree = 6"],
+    G.check(lines == [f"{ref}.Tension = 0.001", f"{ref}.Solution = 2", f"{ref}.Degree = 6"],
             f"OK records the properties each edit changed, once: {lines}")
     G.check(any("elastica_blend.make(" in code for code in recorded) and
             not any("elastica_blend.make(" in code for code in skipped),

@@ -397,7 +397,7 @@ def blend_panel(doc, S):
     panel = open_panel(doc, "Elastica_Blend", [(sk, "Edge1"), (sk, "Edge2")], "Elastic blend")
     b = panel.obj
     fits_combo_view(panel, "blend")
-    check(b.Mode == "tension" and b.Tension == 0.0 and b.Solution == 0 and not
+    check(b.Mode == "tension" and b.Tension == 0.0 and b.Solution == 1 and not
           b.Status.startswith("error"), "blend default: the free batten (tension 0)")
     check(list(b.Energies) == sorted(b.Energies) and panel.list.count() == len(b.Lengths) >= 1,
           f"blend panel lists {panel.list.count()} solutions, lowest energy first")
@@ -410,15 +410,15 @@ def blend_panel(doc, S):
     check(b.Poles <= 12, f"blend B-spline has few poles ({b.Poles})")
     click_arrow(panel.tension, up=True)
     wait()
-    check(b.Tension > 0 and b.Solution == 0 and panel.list.count() == len(b.Lengths),
+    check(b.Tension > 0 and b.Solution == 1 and panel.list.count() == len(b.Lengths),
           f"blend: an arrow click raises the tension to {b.Tension:g} and re-solves")
     if panel.list.count() > 1:
         panel.list.setCurrentRow(1)            # the user picks the second solution
         pump()
-        check(b.Solution == 1, "blend: picking a solution uses it")
+        check(b.Solution == 2, "blend: picking a solution uses it (the list's 2: Solution 2)")
         click_arrow(panel.tension, up=True)
         wait()
-        check(b.Solution == 1 or len(b.Lengths) < 2, "blend: the user's pick survives an edit")
+        check(b.Solution == 2 or len(b.Lengths) < 2, "blend: the user's pick survives an edit")
     panel.continuity.setCurrentIndex(1)         # G2 by tension: >= 0 only
     wait()
     check(b.Continuity == "G2" and not b.Status.startswith("error") and

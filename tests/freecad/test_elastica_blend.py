@@ -99,7 +99,7 @@ class BlendTest(S.DocTest):
         self.assertGreaterEqual(n, 1)
         self.assertEqual(b.Energies, sorted(b.Energies))   # sorted by bending energy
         for i in range(n):
-            b.Solution = i
+            b.Solution = i + 1                         # as the list numbers them
             self.doc.recompute()
             self.assertEqual(b.Status, f"solution {i + 1} of {n}")
             self._check_g1(b)
@@ -160,7 +160,7 @@ class BlendTest(S.DocTest):
         b = Bl.make(self.doc, (sk, "Edge2"), (sk, "Edge3"))
         self.doc.recompute()
         self.assertEqual(b.Status, "solution 1 of 2")
-        b.Solution = 1
+        b.Solution = 2
         self.doc.recompute()
         shape = b.Shape.copy()
         for change in (lambda: sk.toggleConstruction(0), lambda: sk.delGeometry(0)):
@@ -187,7 +187,7 @@ class BlendTest(S.DocTest):
         import numpy as np
         b = Bl.make(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"))
         self.doc.recompute()
-        self.assertEqual((b.Mode, b.Tension, b.Solution), ("tension", 0.0, 0))
+        self.assertEqual((b.Mode, b.Tension, b.Solution), ("tension", 0.0, 1))
         self.assertEqual(list(b.Energies), sorted(b.Energies))
         curves, _ = b.Proxy.plane_curves(b)
         # every free batten of these ends (the library directly): none has less energy
@@ -239,7 +239,7 @@ class BlendTest(S.DocTest):
                      "Descriptions"):
             self.assertEqual(len(getattr(b, name)), n, name)
         for i in range(n):
-            b.Solution = i
+            b.Solution = i + 1
             self.doc.recompute()
             c = b.Proxy.plane_curves(b)[0][0]
             s = np.linspace(0, c.length, 2001)
@@ -252,7 +252,7 @@ class BlendTest(S.DocTest):
         self.assertIn(1, list(b.Loops))        # at 70 mm one solution loops once
         # a loop is a self-crossing: the curve turns by more than a full turn there
         i = list(b.Loops).index(1)
-        b.Solution = i
+        b.Solution = i + 1
         self.doc.recompute()
         c = b.Proxy.plane_curves(b)[0][0]
         self.assertGreater(abs(c.angle([c.length])[0] - c.angle([0.0])[0]), 2 * math.pi * 0.5)
@@ -272,7 +272,7 @@ class BlendTest(S.DocTest):
         """A picked solution stays the shape shown as an edge moves (its index may change
         when solutions appear or vanish); where that shape is gone, the lowest-energy one
         is shown and the status says so (it was 'error: Solution = 3: there are 3
-        solutions', and on the way the index named another curve)."""
+        solutions' (counted from 0), and on the way the index named another curve)."""
         import numpy as np
         b = Bl.make(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"), Mode="length", Length=90.0)
         self.doc.recompute()
@@ -283,12 +283,12 @@ class BlendTest(S.DocTest):
             self.doc.recompute()
             self.assertTrue(b.Status.startswith("solution"), (y, b.Status))
             if "gone" in b.Status:
-                self.assertEqual(b.Solution, 0)
+                self.assertEqual(b.Solution, 1)
                 return
             d = Bl.turning(b.Proxy.plane_curves(b)[0]) - shown
             self.assertLess(float(np.sqrt(np.mean((d - d.mean()) ** 2))), Bl.SAME_SHAPE, (y, b.Status))
 
-        for pick, ys in ((3, (30, 35, 40, 60, 80)), (2, (30, 40, 20))):
+        for pick, ys in ((4, (30, 35, 40, 60, 80)), (3, (30, 40, 20))):
             self.sk.movePoint(1, 1, App.Vector(80, 25, 0))
             self.doc.recompute()
             b.Solution = pick
@@ -296,34 +296,34 @@ class BlendTest(S.DocTest):
             for y in ys:
                 move(y)
         self.assertIn("gone", b.Status)
-        # the solution picked at y = 35 is index 4 of 7 (the edges parallel: symmetric pairs);
-        # at 36 the same shape is index 2 of 4
+        # the solution picked at y = 35 is solution 5 of 7 (the edges parallel: symmetric
+        # pairs); at 36 the same shape is solution 3 of 4
         self.sk.movePoint(1, 1, App.Vector(80, 35, 0))
         self.doc.recompute()
-        b.Solution = 4
+        b.Solution = 5
         self.doc.recompute()
         move(36)
-        self.assertEqual(b.Solution, 2)
+        self.assertEqual(b.Solution, 3)
         self.assertIn("(solution 5 before the edges moved)", b.Status)
         # a parameter edit still picks the lowest energy
-        b.Solution = 2
+        b.Solution = 3
         self.doc.recompute()
         b.Length = 91.0
         self.doc.recompute()
-        self.assertEqual(b.Solution, 0)
+        self.assertEqual(b.Solution, 1)
 
     def test_editing_selects_the_lowest_energy_again(self):
         b = Bl.make(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"), Mode="length", Length=70.0)
         self.doc.recompute()
-        b.Solution = 1
+        b.Solution = 2
         self.doc.recompute()
         b.Length = "7.2 cm"                    # a length with its unit, as FreeCAD's own
-        self.assertEqual((b.Length.Value, b.Solution), (72.0, 0))
-        b.Solution = 7
+        self.assertEqual((b.Length.Value, b.Solution), (72.0, 1))
+        b.Solution = 8
         self.doc.recompute()
         self.assertTrue(b.Status.startswith("error"))
-        self.assertIn("Solution = 7", b.Status)
-        self.assertEqual(b.Solution, 7)
+        self.assertIn("Solution = 8", b.Status)
+        self.assertEqual(b.Solution, 8)
 
     def test_copy_into_sketch_is_a_plain_copy_and_the_feature_follows(self):
         b = Bl.make(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"))

@@ -1,7 +1,9 @@
-"""freecadcmd -t test of a blend's Solution bound to a Spreadsheet cell (QA19gui F6): FreeCAD's
+"""freecadcmd -t test of a blend's Solution bound to a Spreadsheet cell (QA19gui F6): it counts
+as the panel's list and Status do, from 1 (a cell's 2 picked the list's '3: ...'); FreeCAD's
 rule, a bound property is written by its expression only: neither an edit of the blend's
-parameters (which resets a picked Solution to 0) nor its follow of a picked shape as the
-edges move writes it; an index out of range is refused in both numberings."""
+parameters (which resets a picked Solution to 1) nor its follow of a picked shape as the
+edges move writes it; a document of version 3 (Solution from 0) opens with its value and
+expression one up."""
 import unittest
 
 import FreeCAD as App
@@ -14,7 +16,7 @@ class BoundSolutionTest(unittest.TestCase):
     def setUp(self):
         self.doc = S.new_doc("BlendBound")
         self.cell = self.doc.addObject("Spreadsheet::Sheet", "Spreadsheet")
-        self.cell.set("A1", "2")
+        self.cell.set("A1", "3")
         self.sk = S.two_lines_sketch(self.doc)
         self.b = blend.make(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"), Mode="tension",
                             Tension=0.001)
@@ -28,28 +30,54 @@ class BoundSolutionTest(unittest.TestCase):
 
     def test_the_cell_picks_and_an_edit_does_not_reset_it(self):
         b = self.b
-        self.assertEqual((b.Solution, b.Status), (2, "solution 3 of 4"))
+        self.assertEqual((b.Solution, b.Status), (3, "solution 3 of 4"))   # main: 4 of 4
         self.assertAlmostEqual(b.Shape.Length, b.Lengths[2], delta=1e-3)
-        b.Tension = 0.0011                 # main: reset to 0 over the cell's 2
-        self.assertEqual(b.Solution, 2)
+        b.Tension = 0.0011                 # main: reset to 0 over the cell's value
+        self.assertEqual(b.Solution, 3)
         self.doc.recompute()
-        self.assertEqual(b.Solution, 2)
+        self.assertEqual(b.Solution, 3)
         self.assertEqual(dict(b.ExpressionEngine)["Solution"], "Spreadsheet.A1")
 
     def test_an_edge_move_keeps_the_bound_index_and_says_why_it_is_refused(self):
         b = self.b
         self.sk.movePoint(1, 1, App.Vector(85, 28, 0))      # two solutions left
         self.doc.recompute()
-        # main: Solution 0 written over the cell's 2, "solution 1 of 2"
-        self.assertEqual(b.Solution, 2)
+        # main: Solution 0 written over the cell's value, "solution 1 of 2"
+        self.assertEqual(b.Solution, 3)
         self.assertIn("Invalid", b.State)
-        self.assertEqual(b.Status, "error: Solution = 2 names solution 3: there are 2 "
-                                   "solutions (Solution 0 to 1 for solutions 1 to 2)")
-        self.cell.set("A1", "1")
+        self.assertEqual(b.Status, "error: Solution = 3: there are 2 solutions (1 to 2)")
+        self.cell.set("A1", "2")
         self.doc.recompute()
-        self.assertEqual((b.Solution, b.Status), (1, "solution 2 of 2"))
+        self.assertEqual((b.Solution, b.Status), (2, "solution 2 of 2"))
         self.assertNotIn("Invalid", b.State)
 
+    def test_a_document_counting_from_0_opens_counting_from_1(self):
+        """As FreeCAD restores a version-3 proxy (its state) and calls onDocumentRestored:
+        the values and expression version 3 saved (Solution 2 and 'Spreadsheet.A1 - 1' for
+        the list's solution 3; Solution 1 for its solution 2)."""
+        other = blend.make(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"), Mode="tension",
+                           Tension=0.001)
+        self.doc.recompute()
+        other.Solution = 2
+        self.doc.recompute()
+        self.assertEqual((self.b.Status, other.Status), ("solution 3 of 4", "solution 2 of 4"))
+        shapes = [f.Shape.Length for f in (self.b, other)]
+        self.b.setExpression("Solution", "Spreadsheet.A1 - 1")
+        self.b.Solution, other.Solution = 2, 1
+        for f in (self.b, other):
+            f.purgeTouched()
+            f.Proxy.__setstate__(dict(f.Proxy.__getstate__(), version=3))
+            f.Proxy.onDocumentRestored(f)
+            self.assertNotIn("Touched", f.State, f.Label)
+        self.assertEqual(dict(self.b.ExpressionEngine)["Solution"], "Spreadsheet.A1 - 1 + 1")
+        self.assertEqual((self.b.Solution, other.Solution), (3, 2))
+        for f in (self.b, other):                       # once: not again
+            f.Proxy.onDocumentRestored(f)
+            f.touch()
+        self.doc.recompute()
+        self.assertEqual((self.b.Solution, self.b.Status), (3, "solution 3 of 4"))
+        self.assertEqual((other.Solution, other.Status), (2, "solution 2 of 4"))
+        self.assertEqual([f.Shape.Length for f in (self.b, other)], shapes)
 
 if __name__ == "__main__":
     unittest.main()

@@ -46,7 +46,7 @@ class BlendChainTest(S.DocTest):
         self.assertEqual(len(b.Descriptions), n)
         kinds = []
         for i in range(n):
-            b.Solution = i
+            b.Solution = i + 1
             self.doc.recompute()
             self.assertFalse(b.Status.startswith("error"), b.Status)
             self._check_shape(b)
@@ -57,7 +57,7 @@ class BlendChainTest(S.DocTest):
             self.assertTrue(math.isfinite(c.energy()))
         self.assertIn("chain", kinds)
         # a chain stored, saved and reopened: the same curve and shape
-        b.Solution = kinds.index("chain")
+        b.Solution = kinds.index("chain") + 1
         self.doc.recompute()
         stored, bname = b.Curves, b.Name
         path = S.temp_path(self, "blend_chain.FCStd")

@@ -34,15 +34,15 @@ class BlendPickTest(S.DocTest):
         return Bl.bending_energy(b.Proxy.plane_curves(b)[0][0])
 
     def test_a_pick_after_reopening_is_shown_and_follows_the_edges(self):
-        """It was: Solution = 2 -> Solution 0, 'solution 1 of 4 (solution 3 before the
-        edges moved)' and solution 1's shape drawn, though no edge moved. The pick then
+        """It was (counted from 0): Solution = 2 -> Solution 0, 'solution 1 of 4 (solution 3
+        before the edges moved)' and solution 1's shape drawn, though no edge moved. The pick then
         follows its shape as the arc moves (1, 5, 20 mm), and where that is gone (60 mm
         more) the lowest energy is shown."""
         import numpy as np
         b, sk = self.reopened()
-        b.Solution = 2
+        b.Solution = 3
         self.doc.recompute()
-        self.assertEqual((b.Solution, b.Status), (2, "solution 3 of 4"))
+        self.assertEqual((b.Solution, b.Status), (3, "solution 3 of 4"))
         self.assertAlmostEqual(self.shown_energy(b), b.Energies[2], delta=1e-6 * b.Energies[2])
         for dx in (1, 5, 20, 60):
             shown = Bl.turning(b.Proxy.plane_curves(b)[0])
@@ -50,10 +50,10 @@ class BlendPickTest(S.DocTest):
             sk.movePoint(1, 3, App.Vector(c.x + dx, c.y, 0))
             self.doc.recompute()
             if dx < 60:
-                self.assertEqual((b.Solution, b.Status), (2, "solution 3 of 4"), dx)
+                self.assertEqual((b.Solution, b.Status), (3, "solution 3 of 4"), dx)
                 d = Bl.turning(b.Proxy.plane_curves(b)[0]) - shown
                 self.assertLess(float(np.sqrt(np.mean((d - d.mean()) ** 2))), Bl.SAME_SHAPE)
-        self.assertEqual((b.Solution, b.Status), (0, "solution 1 of 4 (the lowest energy: "
+        self.assertEqual((b.Solution, b.Status), (1, "solution 1 of 4 (the lowest energy: "
                                                      "solution 3's shape is gone with the "
                                                      "edges' move)"))
 
@@ -63,8 +63,7 @@ class BlendPickTest(S.DocTest):
         b.Solution = 99
         self.doc.recompute()
         self.assertEqual(b.Solution, 99)
-        self.assertEqual(b.Status, "error: Solution = 99 names solution 100: there are 4 "
-                                   "solutions (Solution 0 to 3 for solutions 1 to 4)")
+        self.assertEqual(b.Status, "error: Solution = 99: there are 4 solutions (1 to 4)")
 
 
 class BlendLoopFollowTest(S.DocTest):
@@ -92,7 +91,7 @@ class BlendLoopFollowTest(S.DocTest):
         self.b = C.blend_sources([(fit, ["Edge1"]), (line, ["Edge1"])], open_panel=False)
         self.b.Mode, self.b.Tension = "tension", 0.0002
         self.doc.recompute()
-        self.b.Solution = 1
+        self.b.Solution = 2
         self.doc.recompute()
         self.last = len(xy) - 1
         self.start = App.Vector(self.sk.Geometry[self.last].X, self.sk.Geometry[self.last].Y, 0)
@@ -115,18 +114,18 @@ class BlendLoopFollowTest(S.DocTest):
         (a clockwise loop turning -6.6 rad is missing, its mirror +5.97 returned), so here
         the clockwise loop leaves the solutions as it turns past -2 pi; the counter-
         clockwise loop then listed is never shown for it."""
-        same = [i for i, t in enumerate(self.b.Turns) if abs(t - turn) < math.pi]
+        same = [i + 1 for i, t in enumerate(self.b.Turns) if abs(t - turn) < math.pi]
         if same:
             self.assertIn(self.b.Solution, same, self.b.Status)
             self.assertNotIn("gone", self.b.Status)
             self.assertLess(abs(self.shown_turn() - turn), change)
         else:
             self.assertEqual((self.b.Solution, self.b.Status),
-                             (0, "solution 1 of 4 (the lowest energy: solution 2's shape is "
+                             (1, "solution 1 of 4 (the lowest energy: solution 2's shape is "
                                  "gone with the edges' move)"))
         mirror = [i for i, t in enumerate(self.b.Turns) if t > math.pi]
         self.assertEqual(len(mirror), 1, list(self.b.Turns))
-        self.assertNotEqual(self.b.Solution, mirror[0])
+        self.assertNotEqual(self.b.Solution, mirror[0] + 1)
         self.assertIn("1 loop, turns ", self.b.Descriptions[mirror[0]])
         self.assertIn("\u00b0 counter-clockwise,", self.b.Descriptions[mirror[0]])
         return same
@@ -148,7 +147,7 @@ class BlendLoopFollowTest(S.DocTest):
         turn, loops = self.shown_turn(), []
         for step, length in zip(((5, 8), (10, 12), (15, 18)), (452.4, 451.9, 453.9)):
             self.move(*step)
-            self.assertEqual((self.b.Solution, self.b.Status), (1, "solution 2 of 4"), step)
+            self.assertEqual((self.b.Solution, self.b.Status), (2, "solution 2 of 4"), step)
             self.assertAlmostEqual(self.b.Lengths[1], length, delta=0.05)
             self.assertLess(abs(self.shown_turn() - turn), 0.3)
             turn = self.shown_turn()

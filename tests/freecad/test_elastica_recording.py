@@ -62,14 +62,14 @@ class RecordingTest(S.DocTest):
         b.Tension = 0.001
         self.doc.recompute()
         self.assertGreater(len(b.Lengths), 1, b.Status)
-        b.Solution = 1
+        b.Solution = 2                  # as the list numbers it
         b.Degree = 6
         self.doc.recompute()
         self.assertTrue(b.Status.startswith("solution 2 of"), b.Status)
         lines, view = edit_lines(b, before)
         ref = f"App.getDocument({self.doc.Name!r}).getObject({b.Name!r})"
         self.assertEqual(lines, [f"{ref}.Degree = 6", f"{ref}.Tension = 0.001",
-                                 f"{ref}.Solution = 1"])
+                                 f"{ref}.Solution = 2"])
         self.assertEqual(view, [])
         was = S.taken(b)
         self.check_same(was, self.replayed(S.two_lines_sketch, code, lines))

@@ -23,7 +23,7 @@ from .units import (floor_digits, length_mark, length_text, length_unit_mark, pe
                     tension_text, tension_unit_mark)
 from .proxy import (FeatureProxy, InputProblem, add_enum, add_geometry_index, add_length,
                     add_link, add_per_area, add_property, attach_view, check_bound_per_area,
-                    check_degree, check_number, check_tolerance, read_only, set_said)
+                    check_degree, check_number, check_tolerance, read_only, set_said, VERSION)
 
 MODES = ["length", "tension"]
 CONTINUITIES = ["G1", "G2"]
@@ -512,11 +512,11 @@ class BlendProxy(FeatureProxy):
                      "compression)", 0.0)
         add_enum(obj, "Continuity", "Blend", G2_TIP, CONTINUITIES, "G1")
         add_property(obj, "App::PropertyInteger", "Solution", "Blend",
-                     "Which solution, by bending energy (0 = the lowest, the list's and "
-                     "Status's solution 1); reset to 0 by every edit of the blend's "
+                     "Which solution, by bending energy, as the panel's list and Status "
+                     "number them (1 = the lowest); reset to 1 by every edit of the blend's "
                      "parameters; a picked one follows its shape when the edges move (the "
                      "lowest where that shape is gone); bound to an expression, only it sets "
-                     "Solution", 0)
+                     "Solution", 1)
         add_length(obj, "Tolerance", "BSpline",
                    "Largest distance of the B-spline from the elastica", tol)
         add_property(obj, "App::PropertyInteger", "Degree", "BSpline",
@@ -562,8 +562,23 @@ class BlendProxy(FeatureProxy):
                      "The blend's elastica(e) (JSON, plane coordinates): the chosen solution, "
                      "or the G2 blend's pieces")
         add_property(obj, "App::PropertyPlacement", "Plane", "Result", "The plane of the blend")
+        if getattr(self, "_version", VERSION) < 4:       # a file's Solution counted from 0
+            self._version = VERSION
+            self._from_one(obj)
         read_only(obj, *RESULT_LISTS, "GuideDucks", "GuideForces", "BlendLength",
                   "BlendTension", "Poles", "Status", "Curves", "Plane")
+
+    @staticmethod
+    def _from_one(obj):
+        """A document of version <= 3 counted Solution from 0: its value one up, an
+        expression's '(...) + 1' (its cell keeps naming the same solution), untouched."""
+        touched = "Touched" in obj.State
+        expression = dict(obj.ExpressionEngine).get("Solution")
+        if expression:
+            obj.setExpression("Solution", f"({expression}) + 1")
+        obj.Solution = obj.Solution + 1
+        if not touched:
+            obj.purgeTouched()
 
     def onChanged(self, obj, prop):
         if prop in self.followed_links and not self.link_changed(obj, prop):
@@ -578,8 +593,8 @@ class BlendProxy(FeatureProxy):
         # a new problem: its lowest-energy solution (the panel re-applies a user's pick)
         if prop in ("Mode", "Length", "Tension", "AtEnd1", "AtEnd2", "Edge1", "Edge2"):
             self._new_problem = True
-            if getattr(obj, "Solution", 0) != 0:
-                self.set_solution(obj, 0)
+            if getattr(obj, "Solution", 1) != 1:
+                self.set_solution(obj, 1)
 
     @staticmethod
     def solution_bound(obj):
@@ -588,7 +603,7 @@ class BlendProxy(FeatureProxy):
         return dict(getattr(obj, "ExpressionEngine", [])).get("Solution")
 
     def set_solution(self, obj, i):
-        """obj.Solution = i written by the feature itself (no pick of the designer's);
+        """obj.Solution = i (from 1) written by the feature itself (no pick of the designer's);
         not where Solution is bound to an expression."""
         if self.solution_bound(obj):
             return
@@ -599,8 +614,8 @@ class BlendProxy(FeatureProxy):
             self._setting = False
 
     def _followed_solution(self, obj, curves, energies):
-        """obj.Solution where the designer just picked it or an edit reset it; a picked one
-        (not 0, the lowest energy) after the edges moved (other solutions, no parameter
+        """The index (from 0) of obj.Solution (from 1) where the designer just picked it or
+        an edit reset it; a picked one (not 1, the lowest energy) after the edges moved (other solutions, no parameter
         edited: an edit picks the lowest energy), the solution of the
         shape shown (nearest_shape), or the lowest-energy one where that shape is gone: the
         index of a picked one names another curve, or none, once solutions appear or vanish.
@@ -609,15 +624,15 @@ class BlendProxy(FeatureProxy):
         picked, self._picked = getattr(self, "_picked", False), False
         same = [(float(c.length), e) for c, e in zip(curves, energies)] == \
             list(zip(obj.Lengths, obj.Energies))
-        shown = None if new_problem or picked or same or obj.Solution == 0 or not obj.Lengths \
+        shown = None if new_problem or picked or same or obj.Solution == 1 or not obj.Lengths \
             else self.plane_curves(obj)                # the last good solve's curve
         if shown is None:
-            return obj.Solution, False
+            return obj.Solution - 1, False
         j = nearest_shape(shown[0], curves)
         if self.solution_bound(obj):
             # kept as its expression says; where the shape shown went, said (apply)
             self._bound_moved = j
-            return obj.Solution, False
+            return obj.Solution - 1, False
         return (0, True) if j is None else (j, False)
 
     def ends(self, obj):
@@ -656,10 +671,8 @@ class BlendProxy(FeatureProxy):
         i, r["gone"] = self._followed_solution(obj, curves, r["energies"])
         r["solution"], r["bound_moved"] = i, self._bound_moved
         if curves and not 0 <= i < len(curves):
-            # in the numbering the list and Status show (from 1) as well as the property's
-            raise InputProblem(f"Solution = {i} names solution {i + 1}: there are "
-                               f"{len(curves)} solutions (Solution 0 to {len(curves) - 1} "
-                               f"for solutions 1 to {len(curves)})")
+            raise InputProblem(f"Solution = {i + 1}: there are {len(curves)} solutions "
+                               f"(1 to {len(curves)})")
         tol, degree = check_tolerance(float(obj.Tolerance)), check_degree(obj.Degree)
         if obj.Continuity == "G2":
             r["g2"], r["bspline"], r["g2_note"] = g2_blend(r, i, obj.Mode, value, tol, degree)
@@ -673,11 +686,11 @@ class BlendProxy(FeatureProxy):
 
     def apply(self, obj, r):
         curves, i = r["curves"], r["solution"]
-        followed = "" if i == obj.Solution and not r["gone"] else (
-            f" (the lowest energy: solution {obj.Solution + 1}'s shape is gone with the edges' "
-            "move)" if r["gone"] else f" (solution {obj.Solution + 1} before the edges moved)")
+        followed = "" if i == obj.Solution - 1 and not r["gone"] else (
+            f" (the lowest energy: solution {obj.Solution}'s shape is gone with the edges' "
+            "move)" if r["gone"] else f" (solution {obj.Solution} before the edges moved)")
         if followed:
-            self.set_solution(obj, i)
+            self.set_solution(obj, i + 1)
         moved = r.get("bound_moved", False)
         if moved is not False and moved != i:
             # bound: the expression's solution kept, the shape shown before named

@@ -20,7 +20,8 @@ import FreeCAD as App
 from .containers import add_containers, follow_containers, restore_containers, watch_groups
 from .units import exact_mark, mm_marked, say
 
-VERSION = 3             # of the proxies' saved state (3: lengths typed with units)
+VERSION = 4             # of the proxies' saved state (3: lengths typed with units;
+                        # 4: a blend's Solution counts from 1, as its list)
 VIEW_HOOK = []          # [attach(obj), restored(obj)] set by init_gui: view providers
 
 
@@ -492,6 +493,7 @@ class FeatureProxy:
         return state
 
     def __setstate__(self, state):
+        self._version = int((state or {}).get("version") or 1)    # of the file's proxy
         self._exact = dict((state or {}).get("exact") or {})
         self._said = dict((state or {}).get("said") or {})
         return None

@@ -322,7 +322,7 @@ class BlendPanel(Panel):
         super().update()
         o = self.obj
         if self.picked and not o.Status.startswith("error") and o.Solution != self.picked \
-                and self.picked < len(o.Lengths) and not B.BlendProxy.solution_bound(o):
+                and self.picked <= len(o.Lengths) and not B.BlendProxy.solution_bound(o):
             o.Solution = self.picked            # the user's pick survives the edit
             super().update()
 
@@ -333,9 +333,9 @@ class BlendPanel(Panel):
         if B.BlendProxy.solution_bound(self.obj):      # its expression picks (F6)
             self.refresh()
             return
-        if row >= 0 and row != self.obj.Solution:
-            self.picked = row
-            self.obj.Solution = row
+        if row >= 0 and row + 1 != self.obj.Solution:      # Solution counts from 1
+            self.picked = row + 1
+            self.obj.Solution = row + 1
             self.update()
 
     def descriptions(self):
@@ -348,7 +348,7 @@ class BlendPanel(Panel):
         for text in self.descriptions():
             self.list.addItem(text)
         if o.Descriptions:
-            self.list.setCurrentRow(min(o.Solution, len(o.Descriptions) - 1))
+            self.list.setCurrentRow(max(0, min(o.Solution - 1, len(o.Descriptions) - 1)))
         self.list.blockSignals(False)
         # a G2 blend is solved for a tension >= 0 (pushed: give a length); a negative one
         # typed before stays, and the feature says why it is refused
