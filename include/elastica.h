@@ -1194,6 +1194,13 @@ typedef struct el_spline_result {
                               spline_limit.c), that spline's resolution and the least |1 - k^2|
                               of its pieces (why none above it: Accuracy, el_spline_solve);
                               all 0 where not looked for or none solves */
+    int slides;            /* tension 0, EL_EDOM: 1 where a batten through the points was found
+                              but is no minimum, an unstable equilibrium (its second variation
+                              reduced to the knot angles has a negative eigenvalue,
+                              spline_stable.c): it slides off its ducks at span slide_span (from
+                              point slide_span to slide_span + 1, counted from 0: the span whose
+                              length grows most along that mode); 0 otherwise */
+    size_t slide_span;
 } el_spline_result;
 
 /* Defaults: tension mode, sigma 0, open, natural ends, tol 1e-10, max_iter 60, max_steps 60. */
@@ -1388,7 +1395,7 @@ void el_spline_options_defaults(el_spline_options *opt);
  * fails el_smooth_check or starts off its point by more than 1e-6 of its chord), EL_EDOM (length mode with length < the polygon's length;
  * tension 0 when no free-sliding batten is found: continuation from a high
  * tension cannot reach sigma = 0, the family folds back, the batten slides off
- * its ducks), EL_ERANGE (length mode: no spline of the length reached where splines of
+ * its ducks; or the one found is no minimum and would slide off: res->slides), EL_ERANGE (length mode: no spline of the length reached where splines of
  * res->reach[0..1] were met following the family, mostly a length outside them;
  * res otherwise empty), EL_ENOCONV (Newton and continuation did not reach tol; with G2
  * ends also when the continuation in the end curvatures stops; a search ending near a chain

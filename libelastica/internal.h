@@ -367,6 +367,11 @@ int el__spline_solve_near_line(el__spchain *w, int max_steps, double dir, double
  * solves; *nsolves: the tension solves it made; EL_OK or EL_ENOMEM */
 int el__spline_largest(const double *xy, size_t n, const el_spline_options *opt, double h,
                        double largest[3], int *nsolves);
+/* spline_stable.c: the number of negative eigenvalues of the second variation of a solved
+ * open chain in tension mode without guide ducks, reduced to its knot angles (0 otherwise);
+ * where > 0, *lmin its least eigenvalue (internal units) and *span the span lengthening most
+ * along its vector. Re-evaluates the chain with its Jacobians; its Newton work arrays used. */
+int el__spline_unstable(el__spchain *w, double *lmin, size_t *span);
 /* spline.c: what one ulp of a piece's k moves its end state by near the separatrix, in
  * the residual's units (th: its end angles, kmax: its max |kappa|, h: its chord). */
 double el__spline_separatrix_bound(const el_smooth_params *p, const double th[2], double kmax, double h);

@@ -13,6 +13,7 @@
  *   spline_guide.c  G2 ends: the guide ducks (why, and where);
  *   spline_piece.c  one piece: residuals, Jacobians, its state, its start;
  *   spline_fair.c   does the spline follow its ducks (no self-crossing).
+ *   spline_stable.c is the free batten a minimum (its second variation at the knots).
  *
  * Forces (seed 004 (9)-(10)): for the Lagrangian integral kappa^2 + sigma ds
  * with the constraint gamma' = T, the multiplier F_EL satisfies
@@ -720,6 +721,18 @@ static int solve_paths(const double *xy, size_t n, const el_spline_options *opt,
         /* circle pieces and pieces near the separatrix are accepted at what
          * el_smooth_params resolves (header); the latter within their bound */
         st = accepted(res, opt->tol, other, sep);
+        /* the free batten found is no minimum: it slides off its ducks (spline_stable.c;
+         * QA19: 5 ducks turning 163-172 deg, one negative eigenvalue each) */
+        if (!st && !lmode && opt->sigma == 0.0 && sol == &w) {
+            double lmin;
+            size_t span;
+            if (el__spline_unstable(&w, &lmin, &span) > 0) {
+                el_spline_result_free(res);
+                res->slides = 1;
+                res->slide_span = span;
+                st = EL_EDOM;
+            }
+        }
         /* a near spline short of tol: from the tension splines that bracket the length
          * (spline_bracket.c; QA14's sheer at sigma h^2 300: 1.1e-7 at tol 1e-10 where
          * tension mode's spline is within 1.04e-9) */

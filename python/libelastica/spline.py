@@ -458,8 +458,12 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
                               LoopWarning, stacklevel=2)
             return sp
         if st == lib.EL_EDOM:   # the cases above are checked: the free batten
+            # res.slides: one was found but is no minimum (elastica.h), its span named
+            where = (f" (the one through them is an unstable equilibrium, no minimum: it slides "
+                     f"off at the span from point {res.slide_span} to {res.slide_span + 1}, "
+                     "counted from 0)") if res.slides else ""
             raise DomainError(st, "elastic_spline: no free-sliding batten (tension 0) passes "
-                                  "these points: it slides off its ducks" + hint +
+                                  "these points: it slides off its ducks" + where + hint +
                                   ("; else" if hint else ";") + " give a tension > 0 or a length")
         if st == lib.EL_ERANGE:
             lo, hi, fair = (float(res.reach[i]) for i in range(3))
