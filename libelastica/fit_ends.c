@@ -1,6 +1,6 @@
 /*
  * A free smooth fit whose feet pile up at an end, fitted again with its ends free and tied
- * to the points farthest along it (fit_internal.h, el__fit_free_ends).
+ * to the points farthest along it (fit_ends.h, el__fit_free_ends).
  *
  * The smooth fit by distance ties its first and last points to gamma(0) and gamma(L) by
  * full residual vectors (fit_objective.c), so the curve begins and ends at their feet. On a
@@ -9,35 +9,21 @@
  * to its end point (their feet held at s = 0), and the fit is not the least-squares one
  * (measured, QA: 200 points along a 30-long elastica at s ~ u^4, noise 0.05: rms 0.0899,
  * the true curve's 0.0527, 57 feet at s = 0; the same points with point 0 swapped with point
- * 10: 0.0503). Where such feet pile up (FREE_ENDS_PILE points or more but the end point
+ * 10: 0.0503). Where such feet pile up (PILE_LEAST points or more but the end point
  * itself at either end), the fit runs again from its curve: first with no point tied
  * (run_free), its curve cut to its feet's range and tied from there to the points at its
  * ends; else, and then in further rounds from the fit kept, on the points reordered so that
  * the first and last are those farthest back and forward along it (a point beyond an end by
  * its tangential offset from that end), which the tie then lets the curve reach. Each is
  * kept when certified as the fit was and of lower rms; the rounds go on while one lowers it
- * by FREE_ENDS_GAIN. A fit without such a pile is not touched (one count of its feet).
+ * by PILE_GAIN. A fit without such a pile is not touched (one count of its feet).
  * Measured: QA's 40 draws of such scans (s ~ u^1.5 .. u^4), smooth rms / the truth's on the
  * same points 0.894-0.997 (before: 0.941-1.707, 14 above 1); bench_fit.py's smooth fits, whose
- * noise piles a few feet (below one in FREE_ENDS_SHARE), untouched.
+ * noise piles a few feet (below one in PILE_SHARE), untouched.
  */
-#include "fit_internal.h"
+#include "fit_ends.h"
 #include <stdlib.h>
 #include <string.h>
-
-/* points other than the end's own with their foot at that end that start the refit: at
- * least FREE_ENDS_PILE and one in FREE_ENDS_SHARE of all (noise alone piles a few: on
- * bench_fit.py's noisy 1000- and 5000-point smooth fits up to 8 of 1000 and 67 of 5000, whose
- * refits cost 5 x a fit and took 22 MiB more at 10^6 points for a lower rms by < 1e-3 of
- * it; QA's scans dense at one end pile 8..56 of 200) */
-enum { FREE_ENDS_PILE = 3, FREE_ENDS_SHARE = 50 };
-/* rounds at most: each from the last one's fit, tied to its extremes, while that lowers the
- * rms (on a 1000-point scan, noise 1 %, 9 rounds crept to the optimum, 0.056338 -> 0.056019,
- * where L-BFGS's free run reached it at once) */
-enum { FREE_ENDS_ROUNDS = 10 };
-/* and while a round lowers it by this much of itself (the rounds crept on a 5000-point cloud
- * of three noisy loops: 11 fits of ~230 iterations each, the last five together 0.06 %) */
-static const double FREE_ENDS_GAIN = 1e-4;
 
 /* The points but end point e (0 or n-1) whose feet fs are at that end of [0, L]. */
 static size_t piled(const double *fs, size_t n, double L, size_t e)
@@ -68,7 +54,7 @@ static int extremes(const double *p, const double *xy, const double *fs, size_t 
     return a < b ? EL_OK : EL_EDOM;
 }
 
-/* el__fit_cut: fit_internal.h */
+/* el__fit_cut: fit_ends.h */
 int el__fit_cut(double *p, double a, double b)
 {
     const el_smooth_params c = {p[0], p[1], p[2], p[3], p[4], p[5], p[6]};
@@ -80,18 +66,6 @@ int el__fit_cut(double *p, double a, double b)
     p[5] += sqrt(p[3]) * a;
     p[6] = b - a;
     return EL_OK;
-}
-
-/* Points i and j of xy (and of the n-arrays a, b, may be NULL) swapped. */
-static void swap_points(double *xy, double *a, double *b, size_t i, size_t j)
-{
-    for (int c = 0; c < 2; c++) {
-        const double t = xy[2 * i + c];
-        xy[2 * i + c] = xy[2 * j + c];
-        xy[2 * j + c] = t;
-    }
-    if (a) { const double t = a[i]; a[i] = a[j]; a[j] = t; }
-    if (b) { const double t = b[i]; b[i] = b[j]; b[j] = t; }
 }
 
 /* The fit from the curve p (options ro) of the points with lo and hi moved first and last
@@ -139,13 +113,13 @@ static int run_free(const double *xy, size_t n, const el_fit_options *ro, const 
 
 /* An alternative alt (status ast) replaces *res (status *st; d, fs its distances and feet)
  * where it is a fit as good as its status and of lower rms; buf: alt's distances and feet.
- * 0: not replaced, 1: replaced, 2: replaced and lower by FREE_ENDS_GAIN of its rms. */
+ * 0: not replaced, 1: replaced, 2: replaced and lower by PILE_GAIN of its rms. */
 static int keep_lower(fit_out *res, int *st, fit_out *alt, int ast, const double *buf, size_t n, double *d,
                       double *fs)
 {
     const int took = ast == EL_OK || (*st != EL_OK && fit_gave_curve(ast));
     if (!took || alt->status != ast || !(alt->rms < res->rms)) return 0;
-    const int gain = alt->rms < (1.0 - FREE_ENDS_GAIN) * res->rms;
+    const int gain = alt->rms < (1.0 - PILE_GAIN) * res->rms;
     memcpy(alt->initial, res->initial, sizeof alt->initial);
     alt->seen = res->seen;
     alt->seen.follows = 0;
@@ -166,10 +140,10 @@ int el__fit_free_ends(const double *xy, size_t n, const el_fit_options *opt, int
     ro.distance = EL_DISTANCE_ORTHOGONAL;
     double *buf = NULL;
     size_t was[2] = {0, n - 1};          /* the points the last round tied */
-    for (int round = 0; round < FREE_ENDS_ROUNDS; round++) {
+    for (int round = 0; round < PILE_ROUNDS; round++) {
         const double L = res->params[6];
         size_t lo = 0, hi = n - 1;
-        const size_t pile = n / FREE_ENDS_SHARE > FREE_ENDS_PILE ? n / FREE_ENDS_SHARE : FREE_ENDS_PILE;
+        const size_t pile = fit_ends_pile(n);
         if ((!round && piled(fs, n, L, 0) < pile && piled(fs, n, L, n - 1) < pile) ||
             extremes(res->params, xy, fs, n, &lo, &hi) || (round && lo == was[0] && hi == was[1]))
             break;
@@ -189,7 +163,7 @@ int el__fit_free_ends(const double *xy, size_t n, const el_fit_options *opt, int
             was[0] = lo;
             was[1] = hi;
         }
-        if (kept < 2) break;        /* none, or lower by less than FREE_ENDS_GAIN */
+        if (kept < 2) break;        /* none, or lower by less than PILE_GAIN */
     }
     free(buf);
     return st;

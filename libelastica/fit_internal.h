@@ -747,20 +747,6 @@ int el__fit_skips(size_t n, double h, double rms, const double *fs);
  * where it gave no fit that meets the constraints; res->status, or EL_ENOMEM. */
 int el__fit_ends_held(int model, const double *xy, size_t n, const el_fit_options *opt, fit_out *res, double *d,
                       double *fs);
-/* fit_ends.c: a public smooth fit by distance without constraints, fixed parameters or
- * bounds (*res, status st, its distances d (may be NULL) and feet fs, input units) whose feet
- * pile up at an end, fitted again from its curve with its ends free (FIT_RUN_FREE_ENDS) and
- * tied to the points farthest along it each way, kept while its rms is lower; the status of
- * the fit kept, or EL_ENOMEM. */
-int el__fit_free_ends(const double *xy, size_t n, const el_fit_options *opt, int st, fit_out *res,
-                      double *d, double *fs);
-/* fit_keyline_ends.c: a smooth keyline (*sol, ob) whose feet pile at a far end refitted tied to
- * the points farthest along it; *sol and ob's feet replaced where lower. EL_OK or EL_ENOMEM. */
-int el__fit_keyline_ends(fit_objective *ob, int max_iter, fit_solution *sol, int *iters);
-/* fit_ends.c: the smooth curve p cut to [a, b] of its arc length, gamma_cut(s) = gamma(a + s)
- * (test_fit_cut.c): start gamma(a), q + sqrt(mu) a (seed 000 (4.2)), length b - a. EL_OK or
- * el_smooth_eval's error (p unchanged). */
-int el__fit_cut(double *p, double a, double b);
 /* fit_restart.c: *res (d, fs its distances and feet; d may be NULL) replaced by the refit alt
  * (buf: its distances, then its feet), the iterations and candidates of both counted. */
 void el__fit_replace(fit_out *res, fit_out *alt, const double *buf, size_t n, double *d, double *fs);

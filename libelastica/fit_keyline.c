@@ -28,6 +28,7 @@
  * inflection leaves a side of a few points, whose fit alone lands at |k| ~ 1.
  */
 #include "fit_internal.h"
+#include "fit_ends.h"
 #include <stdlib.h>
 #include <string.h>
 #include <float.h>

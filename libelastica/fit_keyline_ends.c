@@ -1,6 +1,6 @@
 /*
  * A smooth keyline whose feet pile up at a far end, fitted again tied to the points
- * farthest along each side (fit_internal.h, el__fit_keyline_ends).
+ * farthest along each side (fit_ends.h, el__fit_keyline_ends).
  *
  * The smooth keyline ties point 0 to the first side's far end and point n-1 to the
  * second's by full residual vectors (fit_objective.c keyline_smooth), as the plain smooth
@@ -9,26 +9,21 @@
  * beyond it count their distance to its end (measured: 200 points along a 20-long
  * elastica at s ~ u^4, noise 0.05: rms 1.81 x the true curve's, 60 feet at the far end).
  * The objective's feet reach 5 % past each far end (el__fit_feet_range), so those points
- * cost nothing there while the tie holds the length. Where one point in KEYLINE_SHARE (and
- * 3) piles at a far end, the points farthest along each side on the curves continued
+ * cost nothing there while the tie holds the length. Where one point in PILE_SHARE (and
+ * PILE_LEAST) piles at a far end, the points farthest along each side on the curves continued
  * (KEYLINE_REACH) are moved to the ends of a copy of the points, each side is cut to that
  * point's foot (the joint stays), and Levenberg-Marquardt fits the keyline tied to them.
  * That fit replaces the first where certified (or the first was not) and of lower rms
  * (every point's distance to the curve, as reported), in rounds while the rms falls by
- * KEYLINE_GAIN. Measured on 40 scans dense at one end (200 points along a 20-long elastica
+ * PILE_GAIN. Measured on 40 scans dense at one end (200 points along a 20-long elastica
  * at s ~ u^1.5 .. u^4, noise 0.05): keyline rms / the true curve's 0.885-0.990 (before:
  * 0.934-1.812, 13 above 1). A keyline without such a pile is not touched (one count of its
  * feet).
  */
-#include "fit_internal.h"
+#include "fit_ends.h"
 #include <stdlib.h>
 #include <string.h>
 
-/* as fit_ends.c's FREE_ENDS_PILE and FREE_ENDS_SHARE */
-enum { KEYLINE_PILE = 3, KEYLINE_SHARE = 50 };
-/* as fit_ends.c's FREE_ENDS_ROUNDS and FREE_ENDS_GAIN */
-enum { KEYLINE_ROUNDS = 10 };
-static const double KEYLINE_GAIN = 1e-4;
 /* the curves continued to this multiple of their lengths to find the points farthest along */
 static const double KEYLINE_REACH = 1.5;
 
@@ -42,17 +37,6 @@ static int sum_sq(fit_objective *o, const double *x, double *d, double *fs, int 
     for (size_t i = 0; i < o->n; i++) a += d[i] * d[i];
     *s2 = a;
     return EL_OK;
-}
-
-/* Points i and j of xy (2 each) and of the n-array a swapped. */
-static void swap2(double *xy, double *a, size_t i, size_t j)
-{
-    for (int c = 0; c < 2; c++) {
-        const double t = xy[2 * i + c];
-        xy[2 * i + c] = xy[2 * j + c];
-        xy[2 * j + c] = t;
-    }
-    const double t = a[i]; a[i] = a[j]; a[j] = t;
 }
 
 /* The keyline fitted from x with the points farthest along its sides, measured on its curves
@@ -84,8 +68,8 @@ static int tied_at_extremes(fit_objective *ob, const double *x0, int max_iter, d
     x[8] = fs[hi];
     memcpy(pxy, ob->xy, sizeof(double) * 2 * n);
     for (size_t i = 0; i < n; i++) sig[i] = sd[i] ? fs[i] : -fs[i];
-    swap2(pxy, sig, 0, lo);
-    swap2(pxy, sig, n - 1, hi);
+    swap_points(pxy, sig, NULL, 0, lo);
+    swap_points(pxy, sig, NULL, n - 1, hi);
     fit_objective o2;
     if ((st = el__fit_objective_init(&o2, FIT_KEYLINE, &ob->map, pxy, n, ob->cx, ob->cy, ob->sc, NULL)))
         return st;
@@ -98,8 +82,8 @@ static int tied_at_extremes(fit_objective *ob, const double *x0, int max_iter, d
         if (sum_sq(&o2, t->x, d, fs, sd, &a) == EL_OK) {
             *s2 = a;
             for (size_t i = 0; i < n; i++) sig[i] = sd[i] ? fs[i] : -fs[i];
-            swap2(pxy, sig, n - 1, hi);     /* back to the caller's order */
-            swap2(pxy, sig, 0, lo);
+            swap_points(pxy, sig, NULL, n - 1, hi);     /* back to the caller's order */
+            swap_points(pxy, sig, NULL, 0, lo);
         }
     }
     el__fit_objective_free(&o2);
@@ -109,33 +93,29 @@ static int tied_at_extremes(fit_objective *ob, const double *x0, int max_iter, d
 int el__fit_keyline_ends(fit_objective *ob, int max_iter, fit_solution *sol, int *iters)
 {
     const size_t n = ob->n;
-    if (ob->map.model != FIT_SMOOTH || ob->map.nx != 9) return EL_OK;
-    double v[2][FIT_NP];
-    if (el__fit_map_eval(&ob->map, sol->x, v, NULL)) return EL_OK;
-    double *buf = malloc(sizeof(double) * 7 * n);
+    if (ob->map.nx != 9) return EL_OK;     /* the smooth keyline (fit_keyline.c calls it for it alone) */
+    const double L[2] = {sol->x[5], sol->x[8]};     /* the sides' lengths, as tied_at_extremes */
+    double *buf = malloc(sizeof(double) * 6 * n);
     int *sd = malloc(sizeof(int) * n);
     if (!buf || !sd) { free(buf); free(sd); return EL_ENOMEM; }
-    double *d = buf, *fs = buf + n, *keep = buf + 2 * n, *pxy = buf + 3 * n, *sig = buf + 5 * n;
+    double *d = buf, *fs = buf + n, *pxy = buf + 2 * n, *sig = buf + 4 * n;
     int st = EL_OK;
     double base;
     if (sum_sq(ob, sol->x, d, fs, sd, &base)) goto done;
     size_t pile[2] = {0, 0};
     for (size_t i = 1; i + 1 < n; i++)
-        if (fs[i] >= v[sd[i]][6]) pile[sd[i]]++;
-    const size_t least = n / KEYLINE_SHARE > KEYLINE_PILE ? n / KEYLINE_SHARE : KEYLINE_PILE;
+        if (fs[i] >= L[sd[i]]) pile[sd[i]]++;
+    const size_t least = fit_ends_pile(n);
     if (pile[0] < least && pile[1] < least) goto done;
-    memcpy(keep, ob->s, sizeof(double) * n);
-    for (int round = 0; round < KEYLINE_ROUNDS; round++) {
+    for (int round = 0; round < PILE_ROUNDS; round++) {
         fit_solution t;
         double s2;
         int same;
         st = tied_at_extremes(ob, sol->x, max_iter, pxy, sig, d, fs, sd, &t, &s2, iters, &same);
-        memcpy(ob->s, keep, sizeof(double) * n);    /* el__fit_feet_distances starts from them */
         if (st || same || !(s2 > 0.0 && s2 < base && (t.certified || !sol->certified))) break;
-        const int gain = s2 < (1.0 - KEYLINE_GAIN) * base;
+        const int gain = s2 < (1.0 - PILE_GAIN) * base;
         *sol = t;
         base = s2;
-        memcpy(keep, sig, sizeof(double) * n);
         memcpy(ob->s, sig, sizeof(double) * n);
         if (!gain) break;
     }

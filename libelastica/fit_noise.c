@@ -125,8 +125,8 @@ static double noise_frame(const double *xy, size_t n, size_t k, double sc, size_
 }
 
 /* The frame figure of stencils of every k-th point from every start b (P_b .. P_{b+5k}, up
- * to cap starts evenly spread over the n - 5k), with *chord the median of their chords
- * |P_{b+5k} - P_b| (normalised); d holds 2 min(n - 5k, cap) doubles. */
+ * to cap starts evenly spread over the n - 5k), with *chord (where asked) the median of their
+ * chords |P_{b+5k} - P_b| (normalised); d holds 2 min(n - 5k, cap) doubles. */
 static double noise_stride(const double *xy, size_t n, size_t k, double sc, size_t cap, double *d,
                            double *chord)
 {
@@ -138,13 +138,13 @@ static double noise_stride(const double *xy, size_t n, size_t k, double sc, size
         const size_t b = a * span / m;
         if (frame_stencil(xy + 2 * b, 2 * k, inv, d + cnt, u2s + cnt)) cnt++;
     }
-    *chord = cnt ? sqrt(gsl_stats_median(u2s, 1, cnt)) : 0.0;
+    if (chord) *chord = cnt ? sqrt(gsl_stats_median(u2s, 1, cnt)) : 0.0;
     return frame_figure(d, cnt);
 }
 
 /* The smaller figure, d the stencils' buffer (NOISE_SAMPLES or n - 3 doubles); local: that
- * of consecutive points alone (*small, where asked, either way), without the check of every
- * k-th point below. */
+ * of consecutive points alone (*small either way), without the check of every k-th point
+ * below. */
 static double noise_rms(const double *xy, size_t n, double sc, double *d, int local, double *small)
 {
     const double plain = noise_plain(xy, n, sc, d);
@@ -154,8 +154,8 @@ static double noise_rms(const double *xy, size_t n, double sc, double *d, int lo
      * (report_drv.c's 42 1000-point fits: +0.2 % instructions; all stencils: +3.8 %) */
     if (n - 5 > FRAME_PROBE)
         frame = frame < 0.5 * plain ? noise_frame(xy, n, 1, sc, NOISE_SAMPLES, d) : HUGE_VAL;
-    if (small) *small = fmin(plain, frame);
-    if (local) return fmin(plain, frame);
+    *small = fmin(plain, frame);
+    if (local) return *small;
     /* points sorted along their curve (a dense scan in curve order, the spacing far below
      * the noise) lie nearly in line along it, scattered across: each stencil's chord runs
      * across the band, its cubic along the scatter, and the frame sees a fraction of the
@@ -211,7 +211,7 @@ static double spread_noise(const double *xy, size_t n, double sc, double small, 
         const int spans = c1 >= SPREAD_ALONG * c0 && c1 >= SPREAD_SPAN * 0.70710678118654752 * f1;
         if (!(spans && f1 < SPREAD_GROW * f0)) continue;
         if (!(f1 > SPREAD_LOOK * small)) return fig;
-        const double wide = noise_stride(xy, n, k, sc, NOISE_SAMPLES, d, &c1);
+        const double wide = noise_stride(xy, n, k, sc, NOISE_SAMPLES, d, NULL);
         return wide > SPREAD_TAKE * small && isfinite(wide) ? wide : fig;
     }
     return fig;

@@ -4,7 +4,7 @@
  * [0, b - a], for moduli below and above 1 (inflectional and not), either orientation,
  * several phases, scales and cut points. */
 #include "testutil.h"
-#include "fit_internal.h"
+#include "fit_ends.h"
 #include <math.h>
 
 START_TEST(test_cut_is_the_same_curve)
