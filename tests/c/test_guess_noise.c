@@ -290,32 +290,43 @@ static int cmp_keyed(const void *a, const void *b)
     return cmp_double(&((const keyed *)a)->key, &((const keyed *)b)->key);
 }
 
+enum { NMAX = 100000 };
+
+/* The n points xy of a curve (arc lengths s, tangent angles th) with noise 0.05 on each
+ * coordinate from rng (in place: the given order), the same points sorted by s + the noise's
+ * tangential part into sorted, and el_fit_noise's figures of both, *given and *along. */
+static void noisy_sorted_along(size_t n, const double *s, const double *th, unsigned long long *rng, double *xy,
+                               double *sorted, double *given, double *along)
+{
+    static keyed k[NMAX];
+    ck_assert(n <= NMAX);
+    for (size_t i = 0; i < n; i++) {
+        const double ex = 0.05 * test_normal(rng), ey = 0.05 * test_normal(rng);
+        xy[2 * i] += ex;
+        xy[2 * i + 1] += ey;
+        k[i] = (keyed){s[i] + ex * cos(th[i]) + ey * sin(th[i]), i};
+    }
+    qsort(k, n, sizeof k[0], cmp_keyed);
+    for (size_t i = 0; i < n; i++) {
+        sorted[2 * i] = xy[2 * k[i].i];
+        sorted[2 * i + 1] = xy[2 * k[i].i + 1];
+    }
+    ck_assert_int_eq(el_fit_noise(xy, n, given), EL_OK);
+    ck_assert_int_eq(el_fit_noise(sorted, n, along), EL_OK);
+}
+
 START_TEST(test_noise_sorted_along)
 {
-    enum { NMAX = 30000 };
     const size_t ns[] = {4000, 10000, 30000};
     unsigned long long rng = 11;
     static double xy[2 * NMAX], sorted[2 * NMAX], s[NMAX], th[NMAX];
-    static keyed k[NMAX];
     for (size_t a = 0; a < sizeof ns / sizeof ns[0]; a++) {
         const size_t n = ns[a];
         for (size_t i = 0; i < n; i++) s[i] = 100.0 * (double)i / (double)(n - 1);
         const el_smooth_params c = {0.0, 0.0, 0.2, 0.01, 0.7, 0.3, 100.0};
         ck_assert_int_eq(el_smooth_eval(&c, n, s, xy, th, NULL), EL_OK);
-        for (size_t i = 0; i < n; i++) {
-            const double ex = 0.05 * test_normal(&rng), ey = 0.05 * test_normal(&rng);
-            xy[2 * i] += ex;
-            xy[2 * i + 1] += ey;
-            k[i] = (keyed){s[i] + ex * cos(th[i]) + ey * sin(th[i]), i};
-        }
-        qsort(k, n, sizeof k[0], cmp_keyed);
-        for (size_t i = 0; i < n; i++) {
-            sorted[2 * i] = xy[2 * k[i].i];
-            sorted[2 * i + 1] = xy[2 * k[i].i + 1];
-        }
         double given, along;
-        ck_assert_int_eq(el_fit_noise(xy, n, &given), EL_OK);
-        ck_assert_int_eq(el_fit_noise(sorted, n, &along), EL_OK);
+        noisy_sorted_along(n, s, th, &rng, xy, sorted, &given, &along);
         ck_assert_msg(fabs(given / 0.05 - 1.0) <= 0.05, "n %zu given order: %.4f", n, given);
         ck_assert_msg(fabs(along / 0.05 - 1.0) <= 0.15, "n %zu sorted along: %.4f", n, along);
     }
@@ -330,11 +341,9 @@ END_TEST
  * arc; now within 15 %. */
 START_TEST(test_noise_sorted_short_dense)
 {
-    enum { NMAX = 100000 };
     const double ratios[] = {0.01, 0.02, 0.05, 0.2, 0.5, 1.0, 2.0};
     unsigned long long rng = 23;
     static double xy[2 * NMAX], sorted[2 * NMAX], s[NMAX], th[NMAX];
-    static keyed k[NMAX];
     for (size_t a = 0; a <= sizeof ratios / sizeof ratios[0]; a++) {
         const int arc = a == sizeof ratios / sizeof ratios[0];
         const size_t n = arc ? NMAX : 3000;
@@ -349,20 +358,8 @@ START_TEST(test_noise_sorted_short_dense)
             }
         else
             ck_assert_int_eq(el_smooth_eval(&c, n, s, xy, th, NULL), EL_OK);
-        for (size_t i = 0; i < n; i++) {
-            const double ex = 0.05 * test_normal(&rng), ey = 0.05 * test_normal(&rng);
-            xy[2 * i] += ex;
-            xy[2 * i + 1] += ey;
-            k[i] = (keyed){s[i] + ex * cos(th[i]) + ey * sin(th[i]), i};
-        }
-        qsort(k, n, sizeof k[0], cmp_keyed);
-        for (size_t i = 0; i < n; i++) {
-            sorted[2 * i] = xy[2 * k[i].i];
-            sorted[2 * i + 1] = xy[2 * k[i].i + 1];
-        }
         double given, along;
-        ck_assert_int_eq(el_fit_noise(xy, n, &given), EL_OK);
-        ck_assert_int_eq(el_fit_noise(sorted, n, &along), EL_OK);
+        noisy_sorted_along(n, s, th, &rng, xy, sorted, &given, &along);
         ck_assert_msg(fabs(given / 0.05 - 1.0) <= 0.10, "n %zu length %g given order: %.4f", n, len, given);
         ck_assert_msg(fabs(along / 0.05 - 1.0) <= 0.15, "n %zu length %g sorted along: %.4f", n, len, along);
         /* el_fit_noise_quick: consecutive points alone, never above (a verdict's first test) */
