@@ -24,7 +24,8 @@ from ._entry import INTERRUPTED
 from ._interrupt import end_if_a_call_runs, interruptible
 from ._text import coordinates
 from .cli_common import (ANGLE_UNITS, EXIT_BADINPUT, EXIT_INTERNAL, EXIT_NOCONV, EXIT_OK, PROG,
-                         _finite, _input_map, _mapped_bspline, _table, angle, tol_option)
+                         _finite, _input_map, _mapped_bspline, _table, angle, thousands,
+                         thousands_option, tol_option)
 from .cli_fit import cmd_fit, fit_constraints
 from .cli_g2quad import cmd_g2quad
 from .cli_outputs import Outputs, check_outputs
@@ -42,7 +43,9 @@ FIT_EXAMPLES = """examples:
   elastica fit scan.csv --model smooth --distance paired   (point i at arc length i L/(n-1))
 
 input: CSV, whitespace separated text or .npy, 2 columns (x, y) or 3 (x, y, z);
-'#' comments and one header line are allowed.
+'#' comments and one header line are allowed. ';' or tab separated files may have decimal
+commas, and thousands grouped by '.' (1.250,5; 980;1.000) where the file shows it: else
+--thousands . or --thousands none says which.
 angles (--fix phi, --start-tangent, --end-tangent): degrees, or radians with 'rad' after
 the number ('0.5rad'); the JSON writes them in radians (phi, *_tangent_rad)."""
 
@@ -428,7 +431,7 @@ def cmd_spline(args) -> int:
     import libelastica as el
     from .io import bspline_to_dict
     from .report import curves_picture, save_picture
-    pts = read_points(args.file, min_points=2)
+    pts = read_points(args.file, min_points=2, thousands=thousands(args))
     if pts.shape[1] != 2:
         raise InputError(f"{args.file}: an elastic spline needs 2 columns (x, y), got 3")
     kw = {"tension": args.tension} if args.length is None else {"length": args.length}
@@ -526,6 +529,7 @@ def build_parser() -> argparse.ArgumentParser:
                        epilog=FIT_EXAMPLES, formatter_class=raw)
     f.add_argument("files", nargs="+", metavar="FILE",
                    help="point files (2 or 3 columns)" + _FROM_STDIN)
+    thousands_option(f)
     f.add_argument("--model", choices=("discrete", "smooth"), default="discrete",
                    help="elastica model (default: discrete)")
     f.add_argument("--keyline", action="store_true",
@@ -643,6 +647,7 @@ def build_parser() -> argparse.ArgumentParser:
                "input: CSV, whitespace separated text or .npy, 2 columns (x, y)",
         formatter_class=raw)
     sp.add_argument("file", metavar="FILE", help="the points (2 columns)" + _FROM_STDIN)
+    thousands_option(sp)
     g = sp.add_mutually_exclusive_group()
     g.add_argument("--tension", type=float, default=0.0, metavar="SIGMA",
                    help="tension sigma >= 0 in 1/units^2 of the points (in mm: 1e-6 x the same "
@@ -708,6 +713,7 @@ def build_parser() -> argparse.ArgumentParser:
                        epilog=G2QUAD_EXAMPLES, formatter_class=raw)
     q.add_argument("file", metavar="FILE",
                    help="points (a dense sampling: ~20 per edge) or FIT.json" + _FROM_STDIN)
+    thousands_option(q)
     q.add_argument("--edges", type=int, metavar="N",
                    help="polyline edges (default: points/20, at least 6; 40 for a fit or --fit)")
     q.add_argument("--fit", action="store_true",

@@ -165,3 +165,18 @@ def _plane_record(frame) -> Optional[Dict[str, Any]]:
         return None
     return {"origin": frame.origin, "normal": frame.e3, "e1": frame.e1, "e2": frame.e2,
             "rms": frame.rms}
+
+
+def thousands_option(parser) -> None:
+    """--thousands of a command that reads point files (io.read_points' thousands)."""
+    parser.add_argument("--thousands", choices=(".", "none"),
+                        help="';' or tab separated files: '.' groups thousands (980;1.250 is "
+                             "980, 1250: Excel's #.##0 with decimal commas), or none (1.250 is "
+                             "1.25); default: what the file shows, a file that does not show "
+                             "it refused")
+
+
+def thousands(args) -> Optional[str]:
+    """io.read_points' thousands from --thousands: '.', '' (none) or None (the file decides)."""
+    t = getattr(args, "thousands", None)
+    return None if t is None else ("" if t == "none" else t)

@@ -14,7 +14,8 @@ from ._ffi import NotConvergedError
 from ._text import curve_values
 from .cli_common import (ANGLE_UNITS, EXIT_BADINPUT, EXIT_INTERNAL, EXIT_NOCONV, EXIT_OK, PROG,
                          _converged, _finite, _float_list, _fmt, _mapped_bspline, _plane_record,
-                         _Progress, _status_text, _table, angle, tol_option)
+                         _Progress, _status_text, _table, angle, thousands,
+                         tol_option)
 from .cli_outputs import out_path
 from .fit import quiet_fit
 from .fit_cost import cost_summary, costly, end_costs, held_ends, local_cost_summary
@@ -343,7 +344,7 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
     file's JSON document (the record; a keyline's {"file", "sides", "bspline"}), and
     writes the requested outputs. Raises InputError / ValueError for bad input."""
     import libelastica as el
-    pts = read_points(path, min_points=4)
+    pts = read_points(path, min_points=4, thousands=thousands(args))
     pts, order = _in_order(path, pts, getattr(args, "order", "given"))
     records: List[Dict[str, Any]] = []
     pictures = []       # (points (n,2), FitResult, their feet or None: the fit's) per record

@@ -10,7 +10,7 @@ import warnings
 import numpy as np
 
 from ._text import coordinates
-from .cli_common import EXIT_OK, PROG, _plane_record
+from .cli_common import EXIT_OK, PROG, _plane_record, thousands
 from .io import (InputError, curve_from_dict, curve_to_dict, looks_like_json, read_input,
                  read_json, read_points, write_dxf_spline, write_json)
 
@@ -42,7 +42,7 @@ def cmd_g2quad(args) -> int:
         data = curve.points(np.linspace(0.0, curve.length, 400)) if curve_source else src
         n = args.edges or 40
     else:
-        pts = read_points(args.file, min_points=4, data=given)
+        pts = read_points(args.file, min_points=4, data=given, thousands=thousands(args))
         if pts.shape[1] == 3:
             src, frame = el.plane_fit(pts)
             plane = _plane_record(frame)
@@ -59,6 +59,11 @@ def cmd_g2quad(args) -> int:
     except el.CoverageError as exc:     # an error, nothing written (as FreeCAD's feature)
         raise InputError(_coverage_message(exc, n, args.edges is None,
                                            exc.result.fit is not None or curve_source)) from None
+    except el.DomainError as exc:       # too few edges for an elastica: the count that works
+        if getattr(exc, "edges", None) is None:
+            raise
+        raise InputError(str(exc).replace(f"n = {exc.edges} works", f"--edges {exc.edges} "
+                                          "works")) from None
     for w in caught:
         if issubclass(w.category, el.EndTangentWarning):      # 'g2_quadratic (n edges): ...'
             print(f"{PROG} g2quad: warning: {str(w.message).partition('): ')[2]}",

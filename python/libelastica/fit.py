@@ -561,7 +561,9 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     if pts.ndim == 2 and pts.shape[1] == 3:   # what the CLI and FreeCAD do with 3D points
         raise ValueError(f"fit: points must have shape (n, 2), got {pts.shape}: 3D points are "
                          "fitted in their plane, xy, frame = el.plane_fit(points), then "
-                         "el.fit(xy) (frame.to_3d maps back), or el.fit_keyline(points)")
+                         "el.fit(xy) (frame.to_3d maps back), or el.fit_keyline(points); a third "
+                         "column that is no coordinate (an id, an intensity): pass "
+                         "points[:, :2]")
     pts = as_points(pts, "points", 2)
     n = pts.shape[0]
     if n < 4:

@@ -148,6 +148,39 @@ def _noisy_points_error(exc: DomainError, points: np.ndarray) -> DomainError:
                        "g2quad fit.json`)")
 
 
+def _elastica_domain_error(exc: DomainError, c, n: int, build, options) -> DomainError:
+    """g2_quadratic's DomainError for an elastica: which of the C status's causes it is (an
+    inflection with split_inflections off, a straight line, else too few edges) and, for
+    too few, the fewest count that works (:func:`covering_edges`; ``edges``: it or None)."""
+    infl = len(elastica_inflections(c))
+    if infl and not options.get("split_inflections", True):
+        why = (f"g2_quadratic: the elastica has {infl} inflection{'s' * (infl > 1)} and "
+               "split_inflections=False")
+        more = None
+    elif not np.any(c.curvature(np.linspace(0.0, c.length, 101))):
+        why = "g2_quadratic: the elastica is straight (no affine arc length: seed 002 (1))"
+        more = None
+    else:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", CoverageWarning)
+            warnings.simplefilter("ignore", EndTangentWarning)
+            more = covering_edges(build, n, errors=(ValueError, ArithmeticError))
+        pieces = f"{infl + 1} inflection-free pieces, " if infl else ""
+        why = (f"g2_quadratic: {n} edges are too few for the elastica's turning ({pieces}"
+               f"{_turning(c):.3g} rad of tangent turning: about 3 edges per piece and per turn at least); " +
+               (f"n = {more} works, the fewest above {n}" if more else
+                f"no count up to {cover_search_limit(n)} works"))
+    err = DomainError(exc.status, why)
+    err.edges = more
+    return err
+
+
+def _turning(c) -> float:
+    """The total turning of an elastica's tangent, int |kappa| ds (sampled densely)."""
+    s = np.linspace(0.0, c.length, 4001)
+    return float(np.sum(np.abs(np.diff(np.unwrap(c.angle(s))))))
+
+
 class CoverageWarning(RuntimeWarning):
     """:func:`g2_quadratic`'s warning (``partial=True``) that its splines leave part of the
     source out (an end piece next to an inflection too short for 3 edges:
@@ -481,7 +514,9 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                              tangents=None if is_curve else tangents, **options)
     except DomainError as exc:
         if is_curve:
-            raise
+            raise _elastica_domain_error(exc, curve_or_points, n, lambda m: g2_quadratic(
+                curve_or_points, m, samples_per_vertex, partial=True, **options),
+                options) from None
         raise _noisy_points_error(exc, as_points(curve_or_points, "points")) from None
     npieces = len(ap.A)
     if is_curve:

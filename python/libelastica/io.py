@@ -36,6 +36,11 @@ _DECIMAL_COMMA = re.compile(r"[+-]?\d*,\d+(?:[eE][+-]?\d+)?")
 _INTEGER = re.compile(r"[+-]?\d+")
 # a header's coordinate names: x, Y, "z [mm]", "x (mm)"
 _AXIS_NAME = re.compile(r"\s*([xyzXYZ])\s*(?:[\[(].*[\])])?\s*")
+# a number with '.' grouping its thousands, a decimal comma after it or not: 1.250, -12.345.678,
+# 1.234,567 (Excel's #.##0 in a decimal-comma locale, saved as ';' or tab separated text)
+_GROUPED = re.compile(r"[+-]?[1-9]\d{0,2}(?:\.\d{3})+(?:,\d+)?")
+# the form a decimal point can also give: one dot, 1 to 3 digits before it, 3 after
+_GROUPED_OR_POINT = re.compile(r"[+-]?[1-9]\d{0,2}\.\d{3}")
 
 
 def _split_fields(lines, delim: Optional[str], name: str) -> list:
@@ -50,7 +55,7 @@ def _split_fields(lines, delim: Optional[str], name: str) -> list:
         raise InputError(f"{name}: line {reader.line_num}: {exc}") from None
 
 
-def _parse_text(text: str, name: str) -> np.ndarray:
+def _parse_text(text: str, name: str, thousands: Optional[str] = None) -> np.ndarray:
     """Rows of numbers separated by semicolons, tabs or spaces (with decimal commas or
     points), or commas (decimal commas quoted, as spreadsheets write them: "1,5","0,25").
     Blank lines and lines starting with '#' are skipped; so are the lines before the first
@@ -60,7 +65,8 @@ def _parse_text(text: str, name: str) -> np.ndarray:
     scanner's point ids, normals, intensities; a survey's point names) are read
     when the header names the coordinate columns ``x``, ``y`` and optionally ``z`` (units in
     brackets allowed); a header that names them picks them by name in any case ("id,x,y",
-    "y,x", "name,x,y,z"), the other columns need not be numbers."""
+    "y,x", "name,x,y,z"), the other columns need not be numbers. Thousands grouped by '.'
+    (:func:`_thousands`) are read as such in ';' and tab separated files that show it."""
     rows = []       # (line number, fields)
     header = None
     lines = text.splitlines()
@@ -76,20 +82,31 @@ def _parse_text(text: str, name: str) -> np.ndarray:
     # csv's quoting rules: a quoted field keeps its commas ("102,697" from a spreadsheet
     # that writes decimal commas with ',' between the columns); lines end at any line end
     # (CR alone: classic Mac and some instruments' exports)
+    split = []
     for lineno, fields in enumerate(_split_fields(lines, delim, name), start=1):
         fields = [f.strip() for f in fields if f.strip() != ""]
-        if not fields or fields[0].startswith("#"):
-            continue
+        if fields and not fields[0].startswith("#"):
+            split.append((lineno, fields))
+    if _thousands(split, "\t" if delim is None and "\t" in sample else delim, thousands, name):
+        split = [(ln, [f.replace(".", "").replace(",", ".") if _GROUPED.fullmatch(f) else f
+                       for f in fields]) for ln, fields in split]
+    skipped = None      # the first line skipped as a title or header
+    for lineno, fields in split:
         # a field holding a comma is a decimal comma whatever the separator: a comma
         # separator splits unquoted ones, and the others have no comma between columns
         fields = [f.replace(",", ".") if _DECIMAL_COMMA.fullmatch(f) else f for f in fields]
         if not rows and not any(_is_number(f) for f in fields) and \
                 not all(_is_number(w) for f in fields for w in f.split()):   # '1.5 2.5' at ','
             header = fields            # a title or header line: the last one names columns
+            skipped = skipped or (lineno, fields)
             continue
         rows.append((lineno, fields))
     if not rows:
-        raise InputError(f"{name}: no data rows")
+        shown = (delim or " ").join(skipped[1]) if skipped else ""
+        why = (f" (line {skipped[0]}, {shown[:40] + '...' * (len(shown) > 40)!r}, and every "
+               "line after it skipped as a title or header: no field read as a number)"
+               ) if skipped else ""
+        raise InputError(f"{name}: no data rows{why}")
     # unquoted decimal commas between commas split each number in two (102,697,4,576)
     whole = delim == "," and all(_INTEGER.fullmatch(f) for _, r in rows for f in r)
     hint = ('; decimal commas? Between commas they must be quoted ("102,697","4,576"), '
@@ -129,6 +146,47 @@ def _parse_text(text: str, name: str) -> np.ndarray:
         raise InputError(f"{name}: {width} columns: name the coordinates x, y (and z) "
                          f"in a header line to read them from more columns, or give 2 or 3{hint}")
     return out
+
+
+def _thousands(split, delim, thousands: Optional[str], name: str) -> bool:
+    """Whether '.' groups thousands in the fields of ``split`` ((line, fields) rows).
+    ``thousands``: '.' yes, '' no, None: what the file shows, in ';' and tab separated
+    files (the decimal-comma locales' separators) holding a field of the grouped form
+    (_GROUPED): no when some field is a number the grouping cannot write (0.125, 1.5,
+    -0.250, 1234.5, 1e3, an integer 1000 or more without a dot); yes when some field
+    has a decimal comma, two dots (1.234.567), or a column holds both plain integers and
+    1.250's (980 above 1.000: Excel's #.##0). Else the file does not decide: InputError
+    naming the first such field's line."""
+    if thousands is not None:
+        if thousands not in (".", ""):
+            raise InputError(f"thousands: '.' or '' (none), got {thousands!r}")
+        return thousands == "."
+    if delim not in (";", "\t"):
+        return False
+    grouped = [(ln, f) for ln, r in split for f in r if _GROUPED.fullmatch(f)]
+    if not grouped:
+        return False
+    plain_cols, dotted_cols, shows = set(), set(), False
+    for _, r in split:
+        for c, f in enumerate(r):
+            if _INTEGER.fullmatch(f):
+                if abs(int(f)) >= 1000:
+                    return False                    # #.##0 would write 1.000
+                plain_cols.add(c)
+            elif _GROUPED_OR_POINT.fullmatch(f):
+                dotted_cols.add(c)
+            elif _GROUPED.fullmatch(f) or _DECIMAL_COMMA.fullmatch(f):
+                shows = True                        # 1.234.567, 1.250,0, 1,5
+            elif _is_number(f):
+                return False                        # a decimal point: 0.125, 1.5, 1e3
+    if shows or plain_cols & dotted_cols:
+        return True
+    ln, f = grouped[0]
+    raise InputError(
+        f"{name}: line {ln}: {f!r} is {float(f)!r} or {int(f.replace('.', ''))}: the file "
+        "does not show whether '.' is a decimal point or groups thousands; say which "
+        "(command line: --thousands . or --thousands none; read_points(thousands='.') or "
+        "thousands=''), or write the numbers with decimals")
 
 
 def _decimal_commas_between(lines, sep) -> bool:
@@ -206,7 +264,8 @@ def looks_like_json(data: bytes) -> bool:
     return head[:1] in (b"{", b"[")
 
 
-def read_points(path: PathLike, min_points: int = 3, data: Optional[bytes] = None) -> np.ndarray:
+def read_points(path: PathLike, min_points: int = 3, data: Optional[bytes] = None,
+                thousands: Optional[str] = None) -> np.ndarray:
     """Read an (n, 2) or (n, 3) float64 array of points from ``path``.
 
     Formats: ``.npy`` (a numeric array of shape (n, 2) or (n, 3)), otherwise text
@@ -219,6 +278,14 @@ def read_points(path: PathLike, min_points: int = 3, data: Optional[bytes] = Non
     column count other than 2 or 3 without such a header, NaN/inf values, fewer than
     ``min_points`` points, or all points equal. ``data``: the input's bytes read already
     (:func:`read_input`), ``path`` then naming it.
+
+    Thousands: ';' and tab separated files from decimal-comma locales may group thousands
+    by '.' (Excel's ``#.##0``: ``980;1.250`` is 980, 1250). Such a file is read grouped
+    where it shows it (a decimal comma ``1.250,5``, a ``1.234.567``, or a column holding
+    both ``980`` and ``1.000``); it is read with decimal points where a field shows that
+    (``0.125``, ``1.5``, ``1234``); one that does not decide (every number ``d.ddd``) is
+    refused naming the line. ``thousands='.'`` reads dots as grouping, ``thousands=''``
+    as decimal points, whatever the file.
     """
     name = "standard input" if str(path) == "-" else str(path)
     data = read_input(path) if data is None else data
@@ -231,7 +298,7 @@ def read_points(path: PathLike, min_points: int = 3, data: Optional[bytes] = Non
             raise InputError(f"{name}: .npy array is not numeric (dtype {arr.dtype})")
         arr = np.asarray(arr, dtype=np.float64)
     else:
-        arr = _parse_text(_decode(data, name), name)
+        arr = _parse_text(_decode(data, name), name, thousands)
     if arr.ndim != 2 or arr.shape[1] not in (2, 3):
         raise InputError(f"{name}: need 2 or 3 columns (x,y or x,y,z), got shape {arr.shape}")
     if not np.all(np.isfinite(arr)):

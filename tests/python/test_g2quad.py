@@ -317,3 +317,20 @@ def test_g2_quadratic_holds_the_end_tangents_at_a_gis_offset(n):
         err = abs(np.angle(np.exp(1j * (math.atan2(t[1], t[0]) - th[j]))))
         assert err < bound, (n, at_end, err, bound)
     assert g.source_end_tangent_error < bound
+
+
+def test_too_few_edges_for_an_elastica_names_the_count(tmp_path, capsys):
+    """QA19 M4: too few edges for an elastica's turning raised the C status's three causes
+    under an internal name; now the cause and the fewest count that works (CLI: --edges)."""
+    c = el.SmoothElastica(x0=0, y0=0, phi=0.2, mu=0.05, k=0.8, q=0, length=110)
+    with pytest.raises(el.DomainError) as info:
+        el.g2_quadratic(c, 24)
+    msg = str(info.value)
+    assert msg.startswith("g2_quadratic: 24 edges are too few") and "affine_polyline" not in msg
+    m = info.value.edges
+    assert f"n = {m} works" in msg and el.g2_quadratic(c, m).covers_source
+    from libelastica.cli import main
+    from libelastica.io import curve_to_dict, write_json
+    write_json(curve_to_dict(c), tmp_path / "c.json")
+    assert main(["g2quad", str(tmp_path / "c.json"), "--edges", "24"]) == 2
+    assert f"--edges {m} works" in capsys.readouterr().err

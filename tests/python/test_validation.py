@@ -386,6 +386,16 @@ def test_3d_points_to_fit_name_the_plane_fit():
     assert r.rms < 1e-3 and np.allclose(frame.to_3d(xy), xyz, atol=1e-12)
 
 
+def test_three_columns_to_fit_name_both_ways():
+    """QA19 P3: a third column that is an id or an intensity got only the plane-fit advice
+    (which fits it as z); the other way is named too, and works as named."""
+    pts = np.c_[ARC, np.arange(len(ARC))]
+    with pytest.raises(ValueError, match=r"el\.plane_fit\(points\).*an id, an intensity.*"
+                                         r"points\[:, :2\]"):
+        el.fit(pts)
+    assert el.fit(pts[:, :2], model="smooth").rms < 1e-3
+
+
 S_POINTS = el.SmoothElastica(x0=0, y0=0, phi=-0.5, mu=1.0, k=0.8, q=-1.0, length=6.0).points(60)
 
 

@@ -1,0 +1,69 @@
+"""Point files whose thousands are grouped by '.' (Excel's #.##0 in a decimal-comma locale,
+saved as ';' or tab separated text): read grouped where the file shows it, read with decimal
+points where a field shows that, refused naming the line where nothing decides (QA19 W1, P2)."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from libelastica.cli import main
+from libelastica.io import InputError, read_points
+
+
+def _read(tmp_path, text, **kw):
+    p = tmp_path / "p.csv"
+    p.write_text(text)
+    return read_points(p, min_points=1, **kw)
+
+
+@pytest.mark.parametrize("text, want", [
+    # a column crossing 1000 (QA19 c6: read 1.000 as 1.0, rms 10.34 for 0.53)
+    ("x;y\n980;1.250\n990;1.262\n1.000;1.270\n1.010;1.281\n",
+     [[980, 1250], [990, 1262], [1000, 1270], [1010, 1281]]),
+    ("x\ty\n980\t1.250\n1.000\t1.270\n", [[980, 1250], [1000, 1270]]),
+    # decimal commas after the groups (QA19 P2: 'not a number: 1.250,0'; all rows: 'no data rows')
+    ("x;y\n980,5;1.250,0\n1.000,5;1.270,5\n", [[980.5, 1250], [1000.5, 1270.5]]),
+    ("x;y\n1.000,017;2.000,680\n1.005,357;2.004,199\n", [[1000.017, 2000.68], [1005.357, 2004.199]]),
+    # a decimal comma elsewhere, two dots
+    ("1,5;1.250\n2,5;1.300\n", [[1.5, 1250], [2.5, 1300]]),
+    ("1.234.567;-2.000\n1.234.568;2.000\n", [[1234567, -2000], [1234568, 2000]]),
+])
+def test_grouped_where_the_file_shows_it(tmp_path, text, want):
+    assert np.array_equal(_read(tmp_path, text), np.array(want, dtype=float))
+
+
+@pytest.mark.parametrize("text, want", [
+    # instrument exports with 3 decimals: a field the grouping cannot write decides
+    ("0.125;1.250\n0.250;1.500\n", [[0.125, 1.25], [0.25, 1.5]]),
+    ("1.250;-0.500\n2.000;1.000\n", [[1.25, -0.5], [2.0, 1.0]]),
+    ("1.250;1.5\n2.000;3.25\n", [[1.25, 1.5], [2.0, 3.25]]),
+    ("1.250;1234\n2.000;5\n", [[1.25, 1234], [2.0, 5]]),
+    ("1.250;1e3\n2.000;2.000\n", [[1.25, 1000], [2.0, 2.0]]),
+    # other separators: never grouped
+    ("1.250,2.000\n1.000,3.000\n", [[1.25, 2.0], [1.0, 3.0]]),
+    ("1.250 2.000\n1.000 3.000\n", [[1.25, 2.0], [1.0, 3.0]]),
+])
+def test_decimal_points_read_as_before(tmp_path, text, want):
+    assert np.array_equal(_read(tmp_path, text), np.array(want, dtype=float))
+
+
+def test_undecided_file_refused_naming_the_line(tmp_path, capsys):
+    """QA19 c5: every value >= 1000 written 1.000 was read / 1000, silently."""
+    text = "x;y\n1.000;2.001\n1.005;2.004\n1.010;2.011\n1.020;2.030\n"
+    with pytest.raises(InputError, match=r"p\.csv: line 2: '1\.000' is 1\.0 or 1000: .*"
+                                         r"--thousands \..*thousands=''"):
+        _read(tmp_path, text)
+    assert _read(tmp_path, text, thousands=".")[1].tolist() == [1005, 2004]
+    assert _read(tmp_path, text, thousands="")[1].tolist() == [1.005, 2.004]
+    # the CLI: refused with exit 2, read with --thousands
+    p = tmp_path / "p.csv"
+    assert main(["fit", str(p)]) == 2
+    assert "line 2: '1.000' is 1.0 or 1000" in capsys.readouterr().err
+    assert main(["fit", str(p), "--thousands", ".", "--json", str(tmp_path / "f.json")]) == 0
+
+
+def test_no_data_rows_names_the_first_skipped_line(tmp_path):
+    """QA19 P2: a file of rows without a number said 'no data rows' naming no line."""
+    with pytest.raises(InputError, match=r"no data rows \(line 2, 'x;y', and every line after "
+                                         r"it skipped as a title or header"):
+        _read(tmp_path, "# comment\nx;y\n1.2.3;4.5.6\n")
