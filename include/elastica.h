@@ -322,8 +322,11 @@ int el_guess_smooth(const double *xy, size_t n, int mode, el_smooth_params *cand
  *                           point opposite ways: a scan passed back and forth) where the
  *                           paired fit's points stay at their vertices: where they slip
  *                           along the polygon by more than 1.3 x their distance from it
- *                           (rms; a slowly changing step, points at random places), fitted
- *                           again by distance from that fit; where their mean slip over w
+ *                           (rms; a slowly changing step, points at random places) or, a
+ *                           fit without constraints or fixed values, by more than a segment
+ *                           and 1.3 x the noise across it (the distances' point-to-point
+ *                           part: dense points at random places, whose pull on the polygon
+ *                           raises the rms), fitted again by distance from that fit; where their mean slip over w
  *                           points steps by more than half a vertex and 4 x its noise (a
  *                           point missing from, or doubled in, the scan), fitted by
  *                           distance afresh, as EL_DISTANCE_ORTHOGONAL fits them;

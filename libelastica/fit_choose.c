@@ -602,7 +602,7 @@ static int smooth_start_slips(fit_run_state *R)
         el__fit_curve_distances(&R->ob, R->best.x, vs, 0, R->d, R->fs, R->tmp) != EL_OK)
         return 0;
     for (size_t i = 0; i < R->n; i++) s2 += R->d[i] * R->d[i];
-    return el__fit_slips(R->n, vs[0][2], sqrt(s2 / (double)R->n), R->fs);
+    return el__fit_slips(R->n, vs[0][2], sqrt(s2 / (double)R->n), NULL, R->fs);
 }
 
 /* Whether the candidates stop after start ci's fit (GO_STOP), or go on (GO_ON; *ci moved

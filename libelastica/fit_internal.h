@@ -736,10 +736,10 @@ int el__fit_fallback(int model, const double *xy, size_t n, const el_fit_options
 int el__fit_unpaired(int model, const double *xy, size_t n, const el_fit_options *opt, fit_out *res, double *d,
                      double *fs);
 /* fit_pairing.c: whether the points slip along a paired fit's polygon (segment h, their
- * feet fs and rms distance to it, one units) by more than PAIRING_SLIP times their
- * distance; whether their mean slip steps by PAIRING_STEP vertices or more from one
+ * feet fs and rms distance to it, one units; a free fit's distances d, else NULL) by more
+ * than PAIRING_SLIP times the noise across it; whether their mean slip steps by PAIRING_STEP vertices or more from one
  * stretch of points to the next (el__fit_unpaired's tests). */
-int el__fit_slips(size_t n, double h, double rms, const double *fs);
+int el__fit_slips(size_t n, double h, double rms, const double *d, const double *fs);
 int el__fit_skips(size_t n, double h, double rms, const double *fs);
 /* fit_restart.c: a fit pinned at both ends with a zero start curvature (*res, d, fs, from the
  * start-state chart with the end point as Ipopt's rows) fitted again in the ends chart with

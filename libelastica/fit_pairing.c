@@ -75,7 +75,18 @@ size_t el__fit_retrace(const double *xy, size_t n)
  * 3.1 x (0.14 for 0.099). */
 #define PAIRING_SLIP 1.3
 
-int el__fit_slips(size_t n, double h, double rms, const double *fs)
+/* d (NULL: not read), a free fit's distances: the noise across is then also read from their
+ * point-to-point part (the rms of d_i - d_{i-1} over sqrt 2, up by 3 x its sampling error
+ * 0.87 / sqrt n). The pull is smooth along the polygon: it leaves the differences, while it
+ * raises the rms and lowers the slip. Points at random places denser than their noise are
+ * pulled so (QA's 50 000 along 600, noise 0.2: slip 35 h, rms 25 h, the differences' 16.6 h
+ * = the noise; judged by the rms they stayed paired at 1.53 x the orthogonal fit's rms from
+ * 45 000 points on, where that walk, L / sqrt(6 n), nears the noise). Only where the slip
+ * exceeds a segment and the rms, and not with constraints or fixed values (callers pass
+ * NULL): there the curve's misfit is smooth too (a start pinned off the data: slip 0.13 h;
+ * a noise-free S forced to an inflection: 1.27 h and the differences' 0.92 h for an rms of
+ * 1.05 h; test_misfit's corner of two arms: 31.7 h for an rms of 60 h). */
+int el__fit_slips(size_t n, double h, double rms, const double *d, const double *fs)
 {
     /* in units of the segment h (slips squared in input units underflowed at 1e-160, points
      * staying paired at 5e9 x the orthogonal fit's rms, and overflowed at 1e160) */
@@ -84,7 +95,15 @@ int el__fit_slips(size_t n, double h, double rms, const double *fs)
         const double u = fs[i] / h - (double)i;
         su += u * u;
     }
-    return sqrt(su / (double)n) > PAIRING_SLIP * (rms / h) + 1e-4 * (double)(n - 1);
+    const double slip = sqrt(su / (double)n), least = 1e-4 * (double)(n - 1);
+    if (slip > PAIRING_SLIP * (rms / h) + least) return 1;
+    if (!d || !(slip > 1.0) || !(slip > rms / h)) return 0;
+    double sd = 0.0;
+    for (size_t i = 1; i < n; i++) {
+        const double e = (d[i] - d[i - 1]) / h;
+        sd += e * e;
+    }
+    return slip > PAIRING_SLIP * sqrt(sd / (2.0 * (double)(n - 1))) * (1.0 + 3.0 / sqrt((double)n)) + least;
 }
 
 

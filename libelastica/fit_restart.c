@@ -274,7 +274,8 @@ int el__fit_unpaired(int model, const double *xy, size_t n, const el_fit_options
                      double *fs)
 {
     const double h = res->params[2];
-    const int slips = el__fit_slips(n, h, res->rms, fs);
+    const int free_fit = !opt || (!opt->constraints && fit_options_unbounded(opt));   /* NULL: defaults */
+    const int slips = el__fit_slips(n, h, res->rms, free_fit ? d : NULL, fs);
     if (!slips && !el__fit_skips(n, h, res->rms, fs)) return res->status;
     fit_out alt;
     double *buf;

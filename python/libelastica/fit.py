@@ -499,8 +499,9 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     equilateral polygon, e.g. from :func:`resample_equilateral`, or samples at equal
     steps: runs of max(3, (n-1)/16) segments of means within 1.3 x) in one pass (not a
     scan passed back and forth) whose paired fit keeps each point at its vertex (they
-    slip along the polygon by at most 1.3 x their distance from it, rms, and skip no
-    vertex, as at a point missing from the scan): paired.
+    slip along the polygon by at most 1.3 x their distance from it, rms, a free fit's
+    points by at most a segment or 1.3 x the noise across it, as dense points at random
+    places do not, and skip no vertex, as at a point missing from the scan): paired.
     Sketched or unevenly scanned points need no resampling. A fit by distance to the
     curve follows the points: one that strays from them (a loop or a pass where there is
     no point, the points passed out of order) is fitted again from the paired fit and

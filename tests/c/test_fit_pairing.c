@@ -6,6 +6,7 @@
  * the gaps (rms up to 1.22 x the orthogonal fit's, status ok, no warning). Both now fit as
  * distance="orthogonal" does; evenly spaced scans without dropouts stay paired. */
 #include "testutil.h"
+#include <stdlib.h>
 #include <string.h>
 
 /* QA18's curve: length 30, one inflection */
@@ -104,6 +105,41 @@ START_TEST(test_even_scans_stay_paired)
 }
 END_TEST
 
+/* QA19's scan: points at random places along an elastica of length 600 (phi 0.2, mu 1e-4,
+ * k 0.8, q 0.3), denser than their noise. The spacing test passes them and the paired fit
+ * pulls its polygon across to keep them near their vertices, which the slip test read
+ * against that inflated rms: main paired these at 1.91 (3000 points, noise 1), 1.70 (5000,
+ * 1), 1.20 and 1.16 (3000, 2) x the orthogonal fit's rms, silently (QA's 50 000 points,
+ * noise 0.2: 1.53 x). */
+static int by_value(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static const struct { size_t n; double noise; unsigned long long seed; } RANDOM_PLACES[] = {
+    {3000, 1.0, 2}, {5000, 1.0, 6}, {3000, 2.0, 9}, {3000, 2.0, 10},
+};
+
+START_TEST(test_random_places_fit_as_orthogonal)
+{
+    const el_smooth_params truth = {0.0, 0.0, 0.2, 1e-4, 0.8, 0.3, 600.0};
+    const size_t n = RANDOM_PLACES[_i].n;
+    double *s = malloc(n * sizeof *s), *xy = malloc(2 * n * sizeof *xy);
+    ck_assert(s && xy);
+    unsigned long long st = (RANDOM_PLACES[_i].seed + 1) * 0x9E3779B97F4A7C15ULL;
+    for (size_t i = 0; i < n; i++) s[i] = test_uniform(&st, 0.0, truth.length);
+    qsort(s, n, sizeof *s, by_value);
+    ck_assert_int_eq(el_smooth_eval(&truth, n, s, xy, NULL, NULL), EL_OK);
+    for (size_t i = 0; i < 2 * n; i++) xy[i] += RANDOM_PLACES[_i].noise * test_normal(&st);
+    el_fit_discrete_result a, b;
+    fit_both(xy, n, &a, &b);
+    ck_assert_msg(a.rms <= 1.05 * b.rms, "case %d: rms %.6g, orthogonal %.6g", _i, a.rms, b.rms);
+    free(s);
+    free(xy);
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("fit_pairing");
@@ -112,6 +148,8 @@ static Suite *suite(void)
     tcase_add_loop_test(tc, test_back_and_forth_scan_is_not_paired, 0, 3);
     tcase_add_loop_test(tc, test_dropouts_are_not_paired, 0, (int)(sizeof DROPOUTS / sizeof DROPOUTS[0]));
     tcase_add_loop_test(tc, test_even_scans_stay_paired, 0, 3);
+    tcase_add_loop_test(tc, test_random_places_fit_as_orthogonal, 0,
+                        (int)(sizeof RANDOM_PLACES / sizeof RANDOM_PLACES[0]));
     suite_add_tcase(s, tc);
     return s;
 }
