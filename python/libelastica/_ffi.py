@@ -22,6 +22,7 @@ from typing import Optional
 import numpy as np
 
 from . import _cdef
+from ._columns import table_points
 
 _HERE = Path(__file__).resolve().parent
 _SRC_ROOT = _HERE.parent.parent
@@ -188,13 +189,33 @@ def as_real_array(a, name: str = "values") -> np.ndarray:
     return np.ascontiguousarray(arr, dtype=np.float64)
 
 
+def as_point_array(a, name: str = "points", dim: Optional[int] = None) -> np.ndarray:
+    """:func:`as_real_array` of points: every public function taking points converts them
+    here (or in :func:`as_points`). A table with named columns (a DataFrame, a structured
+    array) gives its x, y (and z: ``dim`` 3, or None when present) by name, as the command
+    line reads a header (_columns.py)."""
+    if type(a) is not np.ndarray or a.dtype.names:
+        a = table_points(a, name, dim)
+    return as_real_array(a, name)
+
+
+def transpose_hint(shape, dims=(2,)) -> str:
+    """The advice for coordinates given as rows ((2, n) for (n, 2): el.fit((x, y)), QA19
+    P1); never applied silently (n = 2 is ambiguous); '' for any other shape."""
+    if len(shape) != 2 or shape[0] not in dims or shape[1] in dims:
+        return ""
+    return f" (pass np.column_stack(({', '.join('xyz'[:shape[0]])})), or points.T)"
+
+
 def as_points(a, name: str = "points", dim: Optional[int] = 2, min_rows: int = 0) -> np.ndarray:
     """A C-contiguous float64 (n, dim) array (no copy when it already is one);
-    dim None: any number of columns >= 1; at least ``min_rows`` rows, all finite."""
-    arr = as_real_array(a, name)
+    dim None: any number of columns >= 1; at least ``min_rows`` rows, all finite.
+    Tables are read by their columns' names (:func:`as_point_array`)."""
+    arr = as_point_array(a, name, dim)
     if arr.ndim != 2 or (dim is not None and arr.shape[1] != dim) or arr.shape[1] < 1:
         want = f"(n, {dim})" if dim is not None else "(n, dim)"
-        raise ValueError(f"{name} must have shape {want}, got {arr.shape}")
+        raise ValueError(f"{name} must have shape {want}, got {arr.shape}"
+                         f"{transpose_hint(arr.shape, (dim,)) if dim in (2, 3) else ''}")
     if len(arr) < min_rows:
         raise invalid(f"{name}: need at least {min_rows} points, got {len(arr)}")
     # (the C library's EL_EINVAL, with the row named) .all(), not np.all: its Python

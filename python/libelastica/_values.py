@@ -13,6 +13,8 @@ import numbers
 
 import numpy as np
 
+from ._portable import PortablePickle
+
 __all__ = ["ValueEquality", "field_summary", "same"]
 
 
@@ -48,10 +50,10 @@ def same(a, b) -> bool:
         return False
 
 
-class ValueEquality:
+class ValueEquality(PortablePickle):
     """Mixin: == (and so !=) by :func:`same` over :meth:`_values` (a dataclass's fields; else
     the instance's attributes but private caches); unhashable (results are mutable or hold
-    arrays)."""
+    arrays). Pickles cross numpy versions (_portable.py)."""
 
     __slots__ = ()
 

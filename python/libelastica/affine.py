@@ -22,6 +22,7 @@ import numpy as np
 from ._ffi import (DomainError, as_int, as_points, as_real, as_real_array, as_size, as_vector,
                    bspline_from_c, check, dptr, ffi, invalid, lib, require)
 from ._values import ValueEquality, field_summary
+from .core import DiscreteElastica
 
 __all__ = ["affine_coords", "affine_length", "affine_curvature", "osculating_conics",
            "OsculatingConics", "chaikin", "lane_riesenfeld", "affine_elements",
@@ -374,6 +375,9 @@ def affine_polyline(curve_or_points, n: int, samples_per_vertex: int = 20,
     fine polylines need (their error grows like h^3/H^4 otherwise). Raises ValueError /
     DomainError (inflection with split_inflections=False, n too small) on bad input."""
     n = as_size(n, "affine_polyline: n", 3)
+    if isinstance(curve_or_points, DiscreteElastica):   # (a polygon, though it has a length)
+        raise ValueError("affine_polyline: a DiscreteElastica is a polygon, not a curve to "
+                         "sample: pass its vertices, curve.points(), or a SmoothElastica")
     if n > lib.EL_AFFINE_MAX_EDGES:   # bounded work, and before sampling n points
         raise DomainError(lib.EL_EDOM, f"affine_polyline: n = {n} edges asked; at most "
                           f"{lib.EL_AFFINE_MAX_EDGES} (EL_AFFINE_MAX_EDGES) are built")

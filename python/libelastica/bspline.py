@@ -10,6 +10,7 @@ import numpy as np
 from ._ffi import (INT_MAX, DomainError, NotConvergedError, as_degree, as_int, as_points,
                    as_positive, as_real, as_vector, bspline_from_c, check, dptr, ffi, lib,
                    require, warn_if_degrees)
+from ._portable import PortablePickle
 from .core import within
 
 
@@ -34,7 +35,7 @@ def at_least(x: float) -> str:
     return f"{np.ceil(x / e * (1.0 - 1e-12)) * e:.3g}"
 
 
-class BSpline:
+class BSpline(PortablePickle):
     """A non-rational B-spline curve: degree, poles (n, dim), distinct knots with
     multiplicities (FreeCAD/OpenCASCADE convention), and ``max_deviation``, the
     certified distance to the curve it approximates (0 exact, -1 unknown).

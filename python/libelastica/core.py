@@ -7,7 +7,9 @@ from typing import Optional
 
 import numpy as np
 
-from ._ffi import as_int, as_real, as_size, as_vector, check, dptr, ffi, invalid, lib, require
+from ._ffi import (DomainError, as_int, as_real, as_size, as_vector, check, dptr, ffi, invalid,
+                   lib, require)
+from ._portable import PortablePickle
 from .shape import ShapeDescriptors
 
 SMOOTH_PARAMS = ("x0", "y0", "phi", "mu", "k", "q", "length")
@@ -29,7 +31,7 @@ def _check_fields(cls: str, p, names, rules) -> None:
 
 
 @dataclass
-class SmoothElastica(ShapeDescriptors):
+class SmoothElastica(PortablePickle, ShapeDescriptors):
     """A smooth elastica segment: u = sqrt(mu) s + q, sin((theta-phi)/2) = k sn(u;k),
     cos((theta-phi)/2) = dn(u;k), curvature 2 k sqrt(mu) cn(u;k), start (x0, y0),
     arc length s in [0, length]. |k| < 1 has inflections, |k| > 1 none (a loop turning
@@ -200,11 +202,13 @@ def chain_eval(pieces, starts, s, what: str, offsets=None, clip: bool = False) -
 
 
 @dataclass
-class DiscreteElastica:
+class DiscreteElastica(PortablePickle):
     """A Bobenko–Suris discrete elastica: n vertices, segments of length h, potential
     sin((theta_n-phi)/2) = k sn(z n + q; k), cos((theta_n-phi)/2) = dn(z n + q; k),
     segment angle (theta_n + theta_{n+1})/2, first vertex (x0, y0); phi and theta in
-    radians.
+    radians. ``points``, ``angle`` and ``curvature`` take the one rule of every curve
+    (:func:`arc_lengths`) along the polygon, of ``length`` (n - 1) h: the vertices' own
+    values interpolated linearly in arc length; without an argument, the vertices'.
 
     >>> d = DiscreteElastica(x0=0, y0=0, h=0.1, phi=0, z=0.1, q=0.0, k=0.8, n=50)
     >>> d.points().shape
@@ -243,12 +247,65 @@ class DiscreteElastica:
         """The parameter vector (x0, y0, h, phi, z, q, k) of the Jacobian (seed 000 (4.5))."""
         return np.array([getattr(self, name) for name in DISCRETE_PARAMS])
 
-    def points(self) -> np.ndarray:
-        """The n vertices, shape (n, 2)."""
+    @property
+    def length(self) -> float:
+        """The polygon's length, (n - 1) h: vertex i lies at arc length s = i h."""
+        return (self.n - 1) * self.h
+
+    def _along(self, s, values: np.ndarray, method: str) -> np.ndarray:
+        """The vertices' ``values`` interpolated linearly along the polygon's arc length at
+        ``s`` by :func:`arc_lengths`' rule (QA19 M1: every curve's points, angle and
+        curvature take one rule)."""
+        s, scalar = arc_lengths(s, self.length, f"DiscreteElastica.{method}")
+        t = s / self.h
+        i = np.clip(np.floor(t), 0, self.n - 2).astype(np.intp)
+        f = t - i
+        if values.ndim == 2:
+            f = f[:, None]
+        out = (1.0 - f) * values[i] + f * values[i + 1]
+        return out[0] if scalar else out
+
+    def points(self, s=None) -> np.ndarray:
+        """The n vertices, shape (n, 2); given ``s``, points on the polygon by the rule every
+        curve's points take (:func:`arc_lengths`): an int m, m points equally spaced along
+        it; floats or an array, arc lengths in [0, length] (a float: shape (2,))."""
         p = self._c()
         out = np.empty((self.n, 2))
         check(lib.el_discrete_eval(p, self.n, dptr(out)), "DiscreteElastica")
-        return out
+        return out if s is None else self._along(s, out, "points")
+
+    def angle(self, s=None) -> np.ndarray:
+        """The potential theta_i at the n vertices (radians, continuous: a loop's turns
+        counted), sin((theta_i - phi)/2) = k sn(z i + q; k), cos = dn (seed 000 (4.4));
+        each segment's direction is its ends' mean, (theta_i + theta_{i+1})/2. Given ``s``
+        (as :meth:`points` takes it), theta interpolated linearly along the polygon: at a
+        segment's midpoint, the segment's direction."""
+        u = self.z * np.arange(self.n, dtype=np.float64)   # (4.3) at mu = 1, s = z i: u_i
+        smooth = SmoothElastica(x0=0.0, y0=0.0, phi=self.phi, mu=1.0, k=self.k, q=self.q,
+                                length=float(abs(u[-1])))
+        try:
+            theta = smooth._at(u, "theta")
+        except DomainError:        # |z| (n - 1) below what (4.3)'s closed form resolves
+            half = np.empty(self.n)
+            val = ffi.new("el_jacobi *")
+            for i, ui in enumerate(u):
+                check(lib.el_jacobi_eval(float(ui) + self.q, self.k, val, ffi.NULL, ffi.NULL),
+                      "DiscreteElastica.angle")
+                half[i] = math.atan2(self.k * val.sn, val.dn)
+            theta = self.phi + 2.0 * np.unwrap(half, period=2.0 * math.pi)
+        return theta if s is None else self._along(s, theta, "angle")
+
+    def vertex_curvature(self) -> np.ndarray:
+        """The discrete curvature (2/h) tan(K_i/2) at all n vertices (seed 000 (3.4)): the
+        interior ones' as :meth:`curvature`, the ends' of the polygon continued one vertex
+        past each by its own recursion (u_{-1} = q - z, u_n = z n + q)."""
+        ends = np.empty(2)
+        for j, q in enumerate((self.q - self.z, self.q + (self.n - 2) * self.z)):
+            p = self._c()   # the 3 vertices around vertex 0, vertex n - 1: their middle's
+            p.q = q
+            check(lib.el_discrete_curvature(p, 3, dptr(ends[j:])), "DiscreteElastica")
+        inner = self.curvature() if self.n >= 3 else np.empty(0)
+        return np.concatenate([ends[:1], inner, ends[1:]])
 
     def continued_to(self, point) -> np.ndarray:
         """The polygon continued past its last vertex by its own recursion (seed 000 (4.4),
@@ -272,8 +329,12 @@ class DiscreteElastica:
                 return tail if t <= 1e-3 else np.vstack([tail, W[j] + t * (W[j + 1] - W[j])])
         return np.empty((0, 2))        # the point beyond the continuation's reach: none
 
-    def curvature(self) -> np.ndarray:
-        """Discrete curvature (2/h) tan(K/2) at the n-2 interior vertices (seed 000 (3.4))."""
+    def curvature(self, s=None) -> np.ndarray:
+        """Discrete curvature (2/h) tan(K/2) at the n-2 interior vertices (seed 000 (3.4));
+        given ``s`` (as :meth:`points` takes it), :meth:`vertex_curvature` interpolated
+        linearly along the polygon."""
+        if s is not None:
+            return self._along(s, self.vertex_curvature(), "curvature")
         p = self._c()
         if self.n < 3:
             raise ValueError("DiscreteElastica.curvature needs n >= 3")

@@ -24,7 +24,7 @@ from typing import Mapping, Optional, Union
 
 import numpy as np
 
-from ._ffi import (DomainError, NotConvergedError, as_int, as_points, as_real,
+from ._ffi import (DomainError, NotConvergedError, as_int, as_point_array, as_points, as_real,
                    as_real_array, check, dptr, ffi, lib, warn_if_degrees)
 from ._interrupt import call
 from .core import DISCRETE_PARAMS, SMOOTH_PARAMS, DiscreteElastica, SmoothElastica
@@ -200,7 +200,7 @@ def far_points(distances, points, factor: float = OUTLIER_FACTOR,
     (a length held short of the data's left its two end points 2.2 off, the others within
     0.5: no glitches, the constraint's cost)."""
     d = np.abs(as_real_array(distances, "far_points: distances"))
-    pts = as_real_array(points, "far_points: points")
+    pts = as_point_array(points, "far_points: points")
     if d.ndim != 1 or pts.ndim != 2 or len(pts) != len(d):
         raise ValueError("far_points: distances (n,) and points (n, 2 or 3) are needed")
     if free_distances is not None:
@@ -558,7 +558,7 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     """
     if not isinstance(model, str) or model not in ("discrete", "smooth"):
         raise ValueError(f"fit: model must be 'discrete' or 'smooth', got {model!r}")
-    pts = as_real_array(points, "points")
+    pts = as_point_array(points, "points")
     if pts.ndim == 2 and pts.shape[1] == 3:   # what the CLI and FreeCAD do with 3D points
         raise ValueError(f"fit: points must have shape (n, 2), got {pts.shape}: 3D points are "
                          "fitted in their plane, xy, frame = el.plane_fit(points), then "

@@ -11,6 +11,7 @@ from typing import List, Optional
 import numpy as np
 
 from ._ffi import DomainError, as_int, as_real, as_size, as_vector, check, ffi, lib, require
+from ._portable import PortablePickle
 from ._values import ValueEquality
 from .bspline import smooth_chain_to_bspline
 from .core import SMOOTH_PARAMS, SmoothElastica, arc_lengths, chain_eval, chain_starts
@@ -19,7 +20,7 @@ from .shape import ShapeDescriptors
 __all__ = ["hermite", "hermite_analyse", "HermiteSolutions", "HermiteChain", "HERMITE_SIGMA_D2_MAX"]
 
 
-class HermiteSolutions(list):
+class HermiteSolutions(PortablePickle, list):
     """The solutions of :func:`hermite` (a list of :class:`SmoothElastica`, or of
     :class:`HermiteChain` near the separatrix), with ``unrepresentable``: the number
     of curves that exist but that neither one set of smooth parameters nor a chain of

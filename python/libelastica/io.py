@@ -18,6 +18,8 @@ from typing import Any, Dict, Optional, Union
 
 import numpy as np
 
+from ._columns import axis_of
+
 __all__ = ["InputError", "read_input", "looks_like_json", "read_points", "curve_to_dict",
            "curve_from_dict", "bspline_to_dict", "bspline_from_dict", "write_json", "read_json",
            "write_dxf_spline", "have_ezdxf", "DXF_UNITS"]
@@ -34,8 +36,6 @@ class InputError(ValueError):
 _DECIMAL_COMMA = re.compile(r"[+-]?\d*,\d+(?:[eE][+-]?\d+)?")
 # a whole number: what unquoted decimal commas between commas leave of each half
 _INTEGER = re.compile(r"[+-]?\d+")
-# a header's coordinate names: x, Y, "z [mm]", "x (mm)"
-_AXIS_NAME = re.compile(r"\s*([xyzXYZ])\s*(?:[\[(].*[\])])?\s*")
 # a number with '.' grouping its thousands, a decimal comma after it or not: 1.250, -12.345.678,
 # 1.234,567 (Excel's #.##0 in a decimal-comma locale, saved as ';' or tab separated text)
 _GROUPED = re.compile(r"[+-]?[1-9]\d{0,2}(?:\.\d{3})+(?:,\d+)?")
@@ -128,7 +128,7 @@ def _parse_text(text: str, name: str, thousands: Optional[str] = None) -> np.nda
         raise InputError(f"{name}: line {lineno}: {len(f)} column{'s' * (len(f) != 1)} where "
                          f"{counts[width]} of {len(rows)} rows have {width} (an empty cell?)"
                          f"{hint}")
-    axes = [m.group(1).lower() if (m := _AXIS_NAME.fullmatch(h)) else None for h in header or []]
+    axes = [axis_of(h) for h in header or []]     # the binding's tables use the same names
     named = len(axes) == width and "x" in axes and "y" in axes and all(axes.count(a) <= 1 for a in "xyz")
     cols = [axes.index(a) for a in "xyz" if a in axes] if named else list(range(width))
     out = np.empty((len(rows), len(cols)))

@@ -11,8 +11,8 @@ from typing import Optional
 
 import numpy as np
 
-from ._ffi import (DomainError, as_int, as_positive, as_real, as_real_array, check, dptr, ffi,
-                   lib)
+from ._ffi import (DomainError, as_int, as_point_array, as_positive, as_real, check,
+                   dptr, ffi, lib, transpose_hint)
 from ._interrupt import call
 from ._values import ValueEquality
 from .core import SmoothElastica
@@ -278,9 +278,10 @@ def fit_keyline(points, r: Optional[float] = None, model: str = "discrete", side
     from .prep import prepare_keyline
     if model not in ("discrete", "smooth"):
         raise ValueError(f"fit_keyline: model must be 'discrete' or 'smooth', got {model!r}")
-    pts = as_real_array(points, "fit_keyline: points")
+    pts = as_point_array(points, "fit_keyline: points")
     if pts.ndim != 2 or pts.shape[1] not in (2, 3) or len(pts) < 4:
-        raise ValueError("fit_keyline: points must have shape (n, 2) or (n, 3), n >= 4")
+        raise ValueError("fit_keyline: points must have shape (n, 2) or (n, 3), n >= 4, got "
+                         f"{pts.shape}{transpose_hint(pts.shape, (2, 3))}")
     if not np.all(np.isfinite(pts)):
         raise ValueError("fit_keyline: points must be finite (no NaN/inf)")
     unordered = out_of_order(pts)    # resampled along their polyline: a cloud's is no curve's

@@ -19,7 +19,8 @@ from typing import NamedTuple, Optional
 
 import numpy as np
 
-from ._ffi import as_points, check, dptr, ffi, lib
+from ._ffi import as_points, check, dptr, ffi, lib, transpose_hint
+from ._portable import PortableTuple
 from ._text import LengthFormat, lengths
 from ._values import ValueEquality
 from .prep import pca_normalize, plane_fit
@@ -35,7 +36,8 @@ def polyline_length(xy) -> float:
 def _plane_points(points, name: str) -> np.ndarray:
     pts = as_points(points, f"{name}: points", None)
     if pts.shape[1] not in (2, 3):
-        raise ValueError(f"{name}: points must have shape (n, 2) or (n, 3), got {pts.shape}")
+        raise ValueError(f"{name}: points must have shape (n, 2) or (n, 3), got {pts.shape}"
+                         f"{transpose_hint(pts.shape, (2, 3))}")
     return plane_fit(pts)[0] if pts.shape[1] == 3 else pts
 
 
@@ -117,6 +119,8 @@ class Ordering(NamedTuple):
         return eq if eq is NotImplemented else not eq
 
     __hash__ = tuple.__hash__
+    # pickles that cross numpy versions (_portable.py), copies as before
+    __reduce__, __copy__, __deepcopy__ = PortableTuple.reduce, PortableTuple.copy, PortableTuple.deepcopy
 
 
 def out_of_order(points, ratio: float = ORDER_RATIO, screen: bool = True) -> Ordering:
@@ -194,6 +198,8 @@ class Retrace(NamedTuple):
     last: int
     s_first: float
     s_last: float
+
+    __reduce__, __copy__, __deepcopy__ = PortableTuple.reduce, PortableTuple.copy, PortableTuple.deepcopy
 
 
 def run_back(points, foot_s, rms: float) -> Optional[Retrace]:

@@ -17,8 +17,8 @@ from typing import Tuple
 
 import numpy as np
 
-from ._ffi import (DomainError, ElasticaError, as_int, as_points, as_real, as_real_array, check,
-                   dptr, ffi, lib)
+from ._ffi import (DomainError, ElasticaError, as_int, as_point_array, as_points, as_real,
+                   check, dptr, ffi, lib, transpose_hint)
 from ._values import ValueEquality, field_summary
 
 __all__ = ["Frame", "Frame2D", "Inflection", "PreparedKeyline", "plane_fit",
@@ -48,7 +48,7 @@ def _map_points(fn, frame, a, din: int, dout: int, what: str) -> np.ndarray:
 
 def _points(a, name: str, dim: int) -> np.ndarray:
     """(n, dim) float64 C-contiguous; a single point (dim,) is accepted as (1, dim)."""
-    arr = as_real_array(a, name)
+    arr = as_point_array(a, name, dim)
     if arr.ndim == 1 and arr.shape[0] == dim:
         arr = arr[None, :]
     return as_points(arr, name, dim)
@@ -345,9 +345,10 @@ def keyline_runs(points) -> np.ndarray:
     coordinate-wise medians of runs of n // KEYLINE_STEPS consecutive points (the last
     n mod that left out), between the first and the last point; (m, d) for points (n, d)
     in their order (up to 2 KEYLINE_STEPS points: the points themselves)."""
-    pts = as_real_array(points, "keyline_runs: points")
+    pts = as_point_array(points, "keyline_runs: points")
     if pts.ndim != 2 or pts.shape[1] not in (2, 3) or len(pts) < 2:
-        raise ValueError("keyline_runs: points must have shape (n, 2) or (n, 3), n >= 2")
+        raise ValueError("keyline_runs: points must have shape (n, 2) or (n, 3), n >= 2, got "
+                         f"{pts.shape}{transpose_hint(pts.shape, (2, 3))}")
     k = max(1, len(pts) // KEYLINE_STEPS)
     if k == 1:
         return pts.copy()
@@ -370,7 +371,7 @@ def prepare_keyline(points, r=None, side: int = 0) -> PreparedKeyline:
     ``inflection`` is None when the polygon shows none, e.g. a convex arc).
     ``r`` None: the default, :func:`keyline_runs` of the (plane) points resampled
     with segment :func:`keyline_step` of them."""
-    pts = as_real_array(points, "points")
+    pts = as_point_array(points, "points")
     frame, rms = None, 0.0
     if pts.ndim == 2 and pts.shape[1] == 3:
         xy, frame = plane_fit(pts)

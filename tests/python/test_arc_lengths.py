@@ -1,8 +1,9 @@
 """One rule for the arc lengths every curve's points / angle / curvature take (QA17 W3):
 an int n is a count, n equally spaced over [0, length]; a float or an array (0-d
 included) holds arc lengths, a scalar giving numpy's shapes ((2,), ()); s outside
-[0, length] raises naming the range, the same for SmoothElastica, HermiteChain and
-ElasticSpline (SmoothElastica / HermiteChain continue past the ends with extrapolate=True).
+[0, length] raises naming the range, the same for SmoothElastica, HermiteChain,
+ElasticSpline and DiscreteElastica (along its polygon: QA19 M1), SmoothElastica /
+HermiteChain continuing past the ends with extrapolate=True.
 """
 from __future__ import annotations
 
@@ -12,13 +13,14 @@ import pytest
 import libelastica as el
 
 CURVE = el.SmoothElastica(x0=1, y0=2, phi=0.3, mu=1.0, k=0.8, q=0.1, length=5.0)
+POLYGON = el.DiscreteElastica(x0=1, y0=2, h=0.1, phi=0.3, z=0.1, q=0.1, k=0.8, n=50)
 DUCKS = np.array([[0, 0], [2, 1], [4, 0], [6, -1], [8, 0]], float)
 
 
 def curves():
     chain = next(c for c in el.hermite((0, 0), (1, 0), (1, 0.2), (1, 0.1), tension=1500.0)
                  if isinstance(c, el.HermiteChain))
-    return [CURVE, chain, el.elastic_spline(DUCKS, tension=0.5)]
+    return [CURVE, chain, el.elastic_spline(DUCKS, tension=0.5), POLYGON]
 
 
 @pytest.mark.parametrize("curve", curves(), ids=lambda c: type(c).__name__)
@@ -126,3 +128,77 @@ def test_a_bspline_takes_parameters_and_a_scalar_gives_one_value():
                                                      rf".* outside the B-spline's domain "
                                                      rf"\[{lo!r}, {hi!r}\]"):
                 getattr(b, method)(t)
+
+
+# every class of the binding with the rule's methods, and one of it (a new curve class
+# must be added here: test_every_curve_class_is_walked)
+RULE = ("points", "angle", "curvature")
+WALK = {"SmoothElastica": lambda: CURVE, "DiscreteElastica": lambda: POLYGON,
+        "HermiteChain": lambda: curves()[1], "ElasticSpline": lambda: curves()[2],
+        "BlendCurve": lambda: el.blend_curve(DUCKS, k=0.3),
+        "fit's default": lambda: el.fit(POLYGON.points()).curve}
+OTHER_RULE = {"BSpline"}      # B-spline parameters, an int not a count (test above)
+
+
+def test_every_curve_class_is_walked():
+    found = {name for name in el.__all__ if isinstance(getattr(el, name), type)
+             and any(callable(getattr(getattr(el, name), m, None)) for m in RULE)}
+    assert found - OTHER_RULE == set(WALK) - {"fit's default"}
+
+
+@pytest.mark.parametrize("name", sorted(WALK))
+def test_every_curve_takes_an_int_an_array_a_scalar(name):
+    """QA19 M1: the default fit's curve, a DiscreteElastica, broke the rule: points(200) a
+    TypeError, no angle, curvature(0.5) a TypeError."""
+    curve = WALK[name]()
+    end = float(curve.nseg) if isinstance(curve, el.BlendCurve) else curve.length
+    methods = [m for m in RULE if callable(getattr(curve, m, None))]
+    assert methods == (["points"] if isinstance(curve, el.BlendCurve) else list(RULE))
+    for m in methods:
+        f = getattr(curve, m)
+        tail = (2,) if m == "points" else ()
+        assert f(7).shape == (7,) + tail
+        assert f(np.array([0.0, 0.3 * end, end])).shape == (3,) + tail
+        assert np.shape(f(0.3 * end)) == tail
+        assert np.array_equal(f(0.3 * end), f([0.3 * end])[0])
+
+
+def test_a_polygon_along_its_arc_length():
+    """DiscreteElastica along its polygon (length (n - 1) h, vertex i at s = i h): its points
+    on the segments, its potential theta_i (seed 000 (4.4)) and its vertices' curvature
+    (2/h) tan(K/2) (3.4) interpolated linearly; a segment's midpoint has the segment's
+    direction, (theta_i + theta_{i+1})/2."""
+    d, h = POLYGON, POLYGON.h
+    V, theta = d.points(), d.angle()
+    assert d.length == (d.n - 1) * h and theta.shape == (d.n,)
+    assert np.allclose(d.points(np.arange(d.n) * h), V, atol=1e-14, rtol=0)
+    mid = (np.arange(d.n - 1) + 0.5) * h
+    assert np.allclose(d.points(mid), (V[:-1] + V[1:]) / 2, atol=1e-14, rtol=0)
+    seg = np.diff(V, axis=0)
+    assert np.allclose(d.angle(mid), np.unwrap(np.arctan2(seg[:, 1], seg[:, 0])), atol=1e-13,
+                       rtol=0)
+    kappa = d.vertex_curvature()
+    assert np.array_equal(kappa[1:-1], d.curvature())
+    # (3.4) from the potential: K_i = (theta_{i+1} - theta_{i-1}) / 2
+    assert np.allclose(kappa[1:-1], 2 / h * np.tan((theta[2:] - theta[:-2]) / 4), rtol=1e-12)
+    # the ends': the interior vertices of the polygon continued one vertex past each end
+    longer = el.DiscreteElastica(**{**vars(d), "q": d.q - d.z, "n": d.n + 2})
+    assert np.allclose(kappa, longer.curvature(), rtol=1e-12, atol=0)
+    assert np.allclose(d.curvature(np.arange(d.n) * h), kappa, rtol=1e-12, atol=1e-14)
+    assert np.allclose(d.curvature(mid), (kappa[:-1] + kappa[1:]) / 2, rtol=1e-12)
+    assert d.points().shape == (d.n, 2) and d.curvature().shape == (d.n - 2,)   # as before
+
+
+@pytest.mark.parametrize("k, z", [(1.5, 0.3), (2.5, -0.4), (0.8, 1e-16), (0.6, 0.0)])
+def test_a_polygon_potential_is_continuous(k, z):
+    """A loop's (k > 1) potential counts its turns (continuous, as SmoothElastica.angle);
+    a step z too small for the smooth closed form (1e-16, 0) still gives the potential."""
+    d = el.DiscreteElastica(x0=0, y0=0, h=0.2, phi=0.4, z=z, q=0.3, k=k, n=80)
+    theta = d.angle()
+    assert np.all(np.abs(np.diff(theta)) < np.pi)
+    seg = np.diff(d.points(), axis=0)
+    assert np.allclose(np.angle(np.exp(1j * ((theta[:-1] + theta[1:]) / 2
+                                            - np.arctan2(seg[:, 1], seg[:, 0])))), 0,
+                       atol=1e-13)
+    if abs(k * z) > 0.1:
+        assert abs(theta[-1] - theta[0]) > 2 * np.pi    # turns counted, not wrapped

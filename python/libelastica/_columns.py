@@ -1,0 +1,68 @@
+"""Private: points from a table with named columns (QA19 W1: el.fit(DataFrame) read the
+columns by position, so a frame ['y', 'x'] was fitted mirrored). A pandas DataFrame, a
+numpy structured or record array, or any object with ``columns`` and ``table[name]``
+(duck-typed: pandas is never imported) gives its coordinates by name: ``x``, ``y`` and
+``z``, any case, a unit allowed ("x [mm]", "Y (m)"), the names the command line reads in a
+header (io.py: one table, :data:`AXIS_NAME`). Columns labelled by position only (integers,
+a DataFrame built from an array) are read by position, as any array is.
+"""
+from __future__ import annotations
+
+import re
+from typing import List, Optional
+
+import numpy as np
+
+# a coordinate column's name: x, Y, "z [mm]", "x (mm)" (a CSV header's too: io.py)
+AXIS_NAME = re.compile(r"\s*([xyzXYZ])\s*(?:[\[(].*[\])])?\s*")
+
+
+def axis_of(label) -> Optional[str]:
+    """'x', 'y' or 'z' for a column name that names that coordinate, else None."""
+    m = AXIS_NAME.fullmatch(label) if isinstance(label, str) else None
+    return m.group(1).lower() if m else None
+
+
+def column_labels(a) -> Optional[List]:
+    """A table's column labels (a structured dtype's field names, a DataFrame-like
+    ``columns``), None for anything else (arrays, lists)."""
+    if isinstance(a, np.ndarray):
+        return list(a.dtype.names) if a.dtype.names else None
+    cols = getattr(a, "columns", None)
+    if cols is None or isinstance(cols, (str, bytes)) or not hasattr(a, "__getitem__"):
+        return None
+    try:
+        return list(cols)
+    except TypeError:
+        return None
+
+
+def table_points(a, name: str = "points", dim: Optional[int] = 2):
+    """``a`` itself unless it is a table with named columns; then its x, y columns, and z
+    where ``dim`` is 3 (required) or None (when present), as one (n, 2 or 3) array. A table
+    whose names hold no x and y, or name one twice, or (``dim`` 2) hold a z, raises
+    ValueError naming its columns and what is expected."""
+    labels = column_labels(a)
+    if labels is None or dim not in (2, 3, None) or all(
+            isinstance(v, (int, np.integer)) and not isinstance(v, (bool, np.bool_))
+            for v in labels):
+        return a
+    axes = {}
+    for label in labels:
+        axis = axis_of(label)
+        if axis in axes:
+            raise ValueError(f"{name}: the table's columns {labels!r} name {axis} twice "
+                             f"({axes[axis]!r}, {label!r}); keep one")
+        if axis:
+            axes[axis] = label
+    want = "x, y, z" if dim == 3 else "x, y" if dim == 2 else "x, y (and z)"
+    if "x" not in axes or "y" not in axes or (dim == 3 and "z" not in axes):
+        raise ValueError(f"{name}: a table's coordinates are read by name, {want} (any case, "
+                         f"a unit allowed: 'x [mm]'); its columns are {labels!r}: rename "
+                         "them, or pass an array of the coordinates in that order")
+    if dim == 2 and "z" in axes:
+        raise ValueError(f"{name}: the table's columns {labels!r} hold 3D points (x, y, z); "
+                         "this takes x, y: select those two columns, or fit 3D points in "
+                         "their plane (el.plane_fit)")
+    picked = [axes[c] for c in "xyz" if c in axes and (c != "z" or dim != 2)]
+    return np.column_stack([np.asarray(a[label]) for label in picked])
