@@ -16,6 +16,7 @@ import Part
 
 import elastica_samples as S
 from freecad.elastica import commands as C
+from freecad.elastica import containers
 
 BODY = App.Placement(App.Vector(100, -50, 30), App.Rotation(App.Vector(1, 1, 0), 35))
 OFFSET = App.Placement(App.Vector(10, 5, 0), App.Rotation(App.Vector(0, 0, 1), 25))
@@ -187,8 +188,8 @@ class ContainerMoveTest(S.DocTest):
                 f.removeProperty("Containers")          # as documents saved before had none
         self.body.Placement = moved(BODY)
         self.doc.recompute()
-        stale = max((a - b).Length for f, sk in made[:1] for a, b in zip(in_sketch(f, sk),
-                                                                         before[0]))
+        f, sk = made[0]
+        stale = max((a - b).Length for a, b in zip(in_sketch(f, sk), before[0]))
         self.assertGreater(stale, 10.0)                # the old document's fault, as saved
         reopened = S.reopened(self, "before_containers.FCStd", *[n for pair in names
                                                                   for n in pair])
@@ -221,10 +222,7 @@ class ContainerMoveTest(S.DocTest):
     def test_a_sketch_moved_into_a_placed_body_is_read_there(self):
         """A sketch at document level moved into the Body after a feature read it: the
         feature reads it placed by the Body, and follows the Body from then on."""
-        sk = self.doc.addObject("Sketcher::SketchObject", "Loose")
-        for x, y in PTS:
-            sk.addGeometry(Part.Point(App.Vector(x, y, 0)), False)
-        self.doc.recompute()
+        sk = S.points_sketch(self.doc, PTS, "Loose", App.Placement())
         spline = C.spline_sources([(sk, [])], open_panel=False)
         self.doc.recompute()
         self.body.addObject(sk)
@@ -234,6 +232,35 @@ class ContainerMoveTest(S.DocTest):
         self.body.Placement = moved(BODY)
         self.doc.recompute()
         self.assertLess(S.distance_to_shape(drawn(sk, PTS), spline.Shape), FOLLOWS)
+
+    def test_a_group_change_relinks_only_the_features_it_concerns(self):
+        """A Body's Group changing (Body.newObject, a sketch dropped in) links again the
+        features reading what moved in or out, not the others: containers_of
+        (InListRecursive) ran for every feature of the document at every change."""
+        fit = C.fit_sources([(self.dots(), [])], open_panel=False, Model="smooth")
+        other = self.doc.addObject("PartDesign::Body", "Other")
+        other.Placement = moved(BODY)
+        theirs = other.newObject("Sketcher::SketchObject", "Theirs")
+        for x, y in PTS:
+            theirs.addGeometry(Part.Point(App.Vector(x, y, 0)), False)
+        loose = S.points_sketch(self.doc, PTS, "Loose", App.Placement())
+        blend = C.ellblend_sources([(theirs, [])], open_panel=False)
+        spline = C.spline_sources([(loose, [])], open_panel=False)
+        self.doc.recompute()
+        asked = []
+        real = containers.containers_of
+        self.addCleanup(setattr, containers, "containers_of", real)
+        containers.containers_of = lambda obj: asked.append(obj.Name) or real(obj)
+        other.newObject("Sketcher::SketchObject", "New")
+        self.assertEqual(asked, [], "Body.newObject")
+        other.addObject(loose)
+        self.assertEqual(asked, [spline.Name], "a sketch moved into a Body")
+        self.assertEqual([list(f.Containers) for f in (fit, blend, spline)],
+                         [[self.body], [other], [other]])
+        out, _ = S.console_output(self.doc.recompute)
+        self.assertEqual(printed(out), [])
+        self.assertLess(S.distance_to_shape(drawn(loose, PTS), spline.Shape), FOLLOWS)
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -54,9 +54,10 @@ def link_properties(obj):
 
 def read_objects(obj):
     """The objects ``obj`` reads: those of the link properties its proxy's read_links
-    names, or of every one (link_properties)."""
+    names (FeatureProxy.read_links), or of every one (link_properties) when its proxy did
+    not load (None: its module missing)."""
     proxy = getattr(obj, "Proxy", None)
-    names = proxy.read_links(obj) if hasattr(proxy, "read_links") else link_properties(obj)
+    names = link_properties(obj) if proxy is None else proxy.read_links(obj)
     return [o for p in names for o in _objects(getattr(obj, p, None))]
 
 
@@ -98,29 +99,45 @@ def restore_containers(obj):
 
 
 class GroupWatch:
-    """A document observer: when a container's Group changes, every feature of its document
-    links the containers of now (follow_containers) and, if they changed, is touched (what
-    it reads is placed otherwise: a sketch moved into a Body), before any recompute: a
+    """A document observer: when a container's Group changes, the features it concerns
+    link the containers of now (follow_containers) and, if they changed, are touched (what
+    they read is placed otherwise: a sketch moved into a Body), before any recompute: a
     feature moved into a container it linked would close a cycle, and FreeCAD would
-    recompute nothing ('The graph must be a DAG'). Not while a document is restored or
-    undone (the links are restored with it)."""
+    recompute nothing ('The graph must be a DAG'). The features concerned are an object
+    moved in or out, those it depends on (its contents too) and those linking one of
+    these (reading it): only their containers or the containers depending on them change;
+    not every feature at every Body.newObject. Not while a document is restored or undone
+    (the links are restored with it)."""
+
+    def __init__(self):
+        self.before = {}        # {container: its Group before the change under way}
+
+    def slotBeforeChangeObject(self, obj, prop):
+        if _group_changing(obj, prop):
+            self.before[obj] = list(obj.Group)
 
     def slotChangedObject(self, obj, prop):
-        if prop != "Group" or not obj.hasExtension("App::GeoFeatureGroupExtension"):
+        if not _group_changing(obj, prop):
             return
-        doc = obj.Document
-        if doc.Restoring or doc.Transacting or "Restore" in obj.State:
+        moved = set(self.before.pop(obj, ())) ^ set(obj.Group)
+        if not moved:
             return
-        for f in doc.Objects:
-            if CONTAINERS in f.PropertiesList and follow_containers(f):
+        # and what they depend on: getDependentObjects without DepSort takes the cycle a
+        # feature moved into a container it links has just closed (OutListRecursive raises)
+        reach = set(App.getDependentObjects(list(moved)))
+        concerned = reach.union(*(o.InList for o in reach))     # and what links them
+        for f in obj.Document.Objects:
+            if f in concerned and follow_containers(f):
                 f.touch()
 
 
-WATCH = []              # the one GroupWatch, added to FreeCAD once (watch_groups)
+def _group_changing(obj, prop):
+    """Whether ``prop`` is the Group of a container (App::GeoFeatureGroupExtension: a Body,
+    a Part), neither restored nor undone."""
+    if prop != "Group" or not obj.hasExtension("App::GeoFeatureGroupExtension"):
+        return False
+    doc = obj.Document
+    return not (doc.Restoring or doc.Transacting or "Restore" in obj.State)
 
 
-def watch_groups():
-    """Add the GroupWatch to FreeCAD's document observers, once."""
-    if not WATCH:
-        WATCH.append(GroupWatch())
-        App.addDocumentObserver(WATCH[0])
+App.addDocumentObserver(GroupWatch())        # once: Python imports a module once

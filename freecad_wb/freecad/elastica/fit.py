@@ -14,7 +14,6 @@ import os
 import FreeCAD as App
 
 from . import defaults
-from .containers import link_properties
 from .fit_core import DISTANCES, MODELS, fit_gathered
 from .fit_ends import CONTINUITIES
 from .geometry import binding_module, el, part_bspline, to_3d
@@ -165,7 +164,7 @@ class FitProxy(FeatureProxy):
     def read_links(self, obj):
         """The links a recompute reads (containers.read_objects): not Source when a CSV
         file is read instead."""
-        return [p for p in link_properties(obj) if not (p == "Source" and obj.CsvFile)]
+        return [p for p in super().read_links(obj) if not (p == "Source" and obj.CsvFile)]
 
     def mustExecute(self, obj):
         """A recompute reads the CSV file again once it changed on disk (QA17 P10: the old

@@ -17,7 +17,7 @@ import sys
 
 import FreeCAD as App
 
-from .containers import add_containers, follow_containers, restore_containers, watch_groups
+from .containers import add_containers, follow_containers, link_properties, restore_containers
 from .units import exact_mark, mm_marked, say
 
 VERSION = 4             # of the proxies' saved state (3: lengths typed with units;
@@ -415,7 +415,6 @@ class FeatureProxy:
         add_said(obj)
         add_note(obj)
         add_containers(obj)
-        watch_groups()
 
     # ---------------------------------------------------------------- recompute
 
@@ -452,6 +451,11 @@ class FeatureProxy:
 
     def on_error(self, obj):
         """Called after a failed recompute (the message is in Status already)."""
+
+    def read_links(self, obj):
+        """The link properties a recompute reads (containers.read_objects: the containers
+        placing their objects are linked): every one but Containers."""
+        return link_properties(obj)
 
     def onBeforeChange(self, obj, prop):
         if prop in self.followed_links:
@@ -528,5 +532,4 @@ class FeatureProxy:
             obj.purgeTouched()
         self._exact = {}
         self._unplaced = restore_containers(obj)
-        watch_groups()
         attach_view(obj, restored=True)   # a document made without the GUI, opened in it
