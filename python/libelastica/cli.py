@@ -549,7 +549,7 @@ def build_parser() -> argparse.ArgumentParser:
     c.add_argument("--start-tangent", type=ANGLE, metavar="DEG",
                    help="tangent direction at the start (the direction of travel): " + ANGLE_UNITS)
     c.add_argument("--end-tangent", type=ANGLE, metavar="DEG",
-                   help="tangent direction at the end (degrees, or '0.5rad')")
+                   help="tangent direction at the end: " + ANGLE_UNITS)
     c.add_argument("--start-curvature", type=float, metavar="K",
                    help="curvature at the start (1/units, + turning left; 0: a free end)")
     c.add_argument("--end-curvature", type=float, metavar="K", help="curvature at the end")

@@ -593,25 +593,26 @@ def cmd_fit(args) -> int:
     for f in files:
         mark = args.outputs.mark()
         progress.clear()        # the file's warnings on a line of their own
+
+        def failed(status: str):
+            """The file's one record (its row and its JSON document): its outputs undone."""
+            args.outputs.rollback(mark)
+            return [{"file": f, "model": args.model, "curve": None, "rms": None,
+                     "max_error": None, "status": status, "converged": False}]
         try:
             recs, doc = fit_file(f, args, batch=True)
         except NotConvergedError as exc:
-            args.outputs.rollback(mark)
-            recs = [{"file": f, "model": args.model, "curve": None, "rms": None,
-                     "max_error": None, "status": f"not converged: {exc}", "converged": False}]
+            recs = failed(f"not converged: {exc}")
+            doc = recs[0]
         except (InputError, ValueError) as exc:
-            args.outputs.rollback(mark)
             bad += 1
-            recs = [{"file": f, "model": args.model, "curve": None, "rms": None,
-                     "max_error": None, "status": f"bad input: {exc}", "converged": False}]
+            recs = failed(f"bad input: {exc}")
             doc = recs[0]
         except Exception as exc:    # a bug met on one file: the other files are still fitted
             if os.environ.get("ELASTICA_DEBUG"):
                 raise
-            args.outputs.rollback(mark)
             internal += 1
-            recs = [{"file": f, "model": args.model, "curve": None, "rms": None, "max_error": None,
-                     "status": f"internal error: {type(exc).__name__}: {exc}", "converged": False}]
+            recs = failed(f"internal error: {type(exc).__name__}: {exc}")
             doc = recs[0]
         for r in recs:
             name = f if "side" not in r else f"{f} [{r['side'] + 1}]"

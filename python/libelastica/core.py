@@ -17,8 +17,8 @@ DISCRETE_PARAMS = ("x0", "y0", "h", "phi", "z", "q", "k")
 # el_smooth_check's / el_discrete_check's ranges (elastica.h), named in Python's message
 _SMOOTH_RULES = {"mu": (lambda v: v > 0, "> 0"), "length": (lambda v: v >= 0, ">= 0")}
 _DISCRETE_RULES = {"h": (lambda v: v > 0, "> 0"), "k": (lambda v: v >= 0, ">= 0")}
-# the method that evaluates each of el_smooth_eval's outputs (named in its messages)
-_METHOD = {"xy": "points", "theta": "angle", "kappa": "curvature"}
+# el_smooth_eval's output that each evaluating method asks for (_at's ``what``)
+_WHAT = {"points": "xy", "angle": "theta", "curvature": "kappa"}
 
 
 def _check_fields(cls: str, p, names, rules) -> None:
@@ -75,8 +75,8 @@ class SmoothElastica(PortablePickle, ShapeDescriptors):
 
     def _eval(self, s, what: str, extrapolate: bool = False) -> np.ndarray:
         s, scalar = arc_lengths(101 if s is None else s, self.length,
-                                f"SmoothElastica.{_METHOD[what]}", extrapolate)
-        out = self._at(s, what)
+                                f"SmoothElastica.{what}", extrapolate)
+        out = self._at(s, _WHAT[what])
         return out[0] if scalar else out
 
     def _at(self, s: np.ndarray, what: str) -> np.ndarray:
@@ -95,17 +95,17 @@ class SmoothElastica(PortablePickle, ShapeDescriptors):
         (default 101). s outside [0, length]: ValueError (:func:`arc_lengths`), unless
         ``extrapolate``: the elastica (4.3) continued past its ends (a foot point's Newton
         step may need it)."""
-        return self._eval(s, "xy", extrapolate)
+        return self._eval(s, "points", extrapolate)
 
     def angle(self, s=None, extrapolate: bool = False) -> np.ndarray:
         """Tangent angle theta(s) (radians, continuous in s); s and ``extrapolate`` as
         :meth:`points` takes them."""
-        return self._eval(s, "theta", extrapolate)
+        return self._eval(s, "angle", extrapolate)
 
     def curvature(self, s=None, extrapolate: bool = False) -> np.ndarray:
         """Signed curvature kappa(s) (1/length, positive = turning counter-clockwise); s and
         ``extrapolate`` as :meth:`points` takes them."""
-        return self._eval(s, "kappa", extrapolate)
+        return self._eval(s, "curvature", extrapolate)
 
     def energy(self) -> float:
         """Bending energy: the integral of kappa^2 over [0, length]."""
@@ -139,21 +139,21 @@ class SmoothElastica(PortablePickle, ShapeDescriptors):
         return smooth_to_bspline(self, tol, degree)
 
 
-def arc_lengths(where, length: float, cls: str, extrapolate: bool = False,
+def arc_lengths(where, length: float, who: str, extrapolate: bool = False,
                 param: str = "arc length s"):
     """(s, scalar): the arc lengths a curve's points/angle/curvature(where) evaluate at,
     one rule for every curve of arc length [0, length]: an int n (Python or numpy
     integer) is a count, n >= 2 equally spaced; a float or an array (0-d included) holds
     arc lengths, each within [0, length] (1e-12 length of rounding allowed), else
     ValueError naming the range (``extrapolate``: any finite s, the elastica continued past
-    its ends); scalar: a float or 0-d array (numpy's shapes: (2,), ()). ``cls``: the
+    its ends); scalar: a float or 0-d array (numpy's shapes: (2,), ()). ``who``: the
     method called, named in the messages; ``param``: what the values are and their name,
     for a curve whose natural parameter is not arc length (BlendCurve's "parameter t" over
     [0, nseg])."""
     if isinstance(where, (int, np.integer)) and not isinstance(where, (bool, np.bool_)):
-        n = as_int(where, f"{cls}: the number of points n", 2, None)
+        n = as_int(where, f"{who}: the number of points n", 2, None)
         return np.linspace(0.0, length, n), False
-    return within(where, 0, length, cls, param, None if extrapolate else 1e-12 * length,
+    return within(where, 0, length, who, param, None if extrapolate else 1e-12 * length,
                   "the curve,", "an int n asks for n points")
 
 
@@ -177,9 +177,6 @@ def within(where, lo: float, hi: float, who: str, param: str, slack: Optional[fl
 def chain_starts(pieces) -> np.ndarray:
     """The arc length at which each piece of a chain starts, then the chain's length."""
     return np.concatenate([[0.0], np.cumsum([p.length for p in pieces])])
-
-
-_WHAT = {"points": "xy", "angle": "theta", "curvature": "kappa"}
 
 
 def chain_eval(pieces, starts, s, what: str, offsets=None, clip: bool = False) -> np.ndarray:

@@ -29,10 +29,10 @@ from ._ffi import (DomainError, NotConvergedError, as_int, as_point_array, as_po
 from ._interrupt import call
 from .core import DISCRETE_PARAMS, SMOOTH_PARAMS, DiscreteElastica, SmoothElastica
 from .cubic import SPARSE_POINTS, SparseWarning, smooth_fits_better
-from ._text import LengthFormat, coordinates, lengths
+from ._text import LengthFormat, lengths
 from ._values import ValueEquality
 from .fit_cost import EndConditionWarning, checked_ends
-from .misfit import MisfitWarning, _verdict, misfit_summary
+from .misfit import MisfitWarning, _places, _verdict, misfit_summary
 from .order import Retrace, curve_order, order_summary, ordering, retrace_summary, run_back
 
 _MODES = {"auto": 0, "uniform": 1, "chord": 2}
@@ -282,9 +282,7 @@ def wander_summary(gap: int, points=None, unit: str = "", numbered: bool = True,
         p = as_real_array(points, "wander_summary: points")
         if p.ndim != 2 or gap + 1 >= len(p):
             raise ValueError("wander_summary: points (n, 2 or 3) with n > gap + 1 are needed")
-        fmt = lengths(unit, length)
-        size = float(np.ptp(p, axis=0).max())        # coordinates to the points' size
-        places = " and ".join(f"({coordinates(p[i], size, 4, fmt)})" for i in (gap, gap + 1))
+        places = " and ".join(_places(p, (gap, gap + 1), lengths(unit, length)))
     where = (f"points {gap} and {gap + 1} (counted from 0{'; at ' + places if places else ''})"
              if numbered else f"the points at {places}")
     return (f"the curve wanders away from its points between {where}: it loops, strays, swings "

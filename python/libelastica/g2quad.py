@@ -198,6 +198,10 @@ class EndTangentWarning(RuntimeWarning):
         self.misses = tuple(misses)
 
 
+# EndTangentWarning's reason where _hold_start found no end holding the source's tangent
+NO_G2_END = "no G2 end found that holds it with the source's curvature"
+
+
 class CoverageError(ValueError):
     """:func:`g2_quadratic`'s error that its splines would leave part of the source out
     (an end piece next to an inflection too short for 3 edges). result: that partial
@@ -399,32 +403,30 @@ def _matched_ends(x: np.ndarray, start, end, k_start: Optional[float],
     for m >= 7 with x_2, x_{m-2} moved (on x_3, x_4 / x_{m-3}, x_{m-4}); fewer vertices are
     left as they are. Third: whether each end's tangent was held, [start, end] (None: not
     tried)."""
-    tried = [None, None]
+    holds = [None, None]
     if len(x) < 6:
-        return x, x, tried
+        return x, x, holds
     y, held = x.copy(), x.copy()
     if k_start:
         z = _match_start(x, start, end, k_start)
         if z is not None:
             y[1] = held[1] = z[1]
-        z = _hold_start(x, start, end, k_start, t_start) \
-            if t_start is not None and len(x) >= 8 else None
-        if z is not None:
-            held[1:3] = z[1:3]
         if t_start is not None and len(x) >= 8:
-            tried[0] = z is not None
+            z = _hold_start(x, start, end, k_start, t_start)
+            if z is not None:
+                held[1:3] = z[1:3]
+            holds[0] = z is not None
     if k_end:     # the same at the end, travelled backwards (its curvature changes sign)
         r = x[::-1].copy()
         z = _match_start(r, end, start, -k_end)
         if z is not None:
             y[-2] = held[-2] = z[1]
-        z = _hold_start(r, end, start, -k_end, -np.asarray(t_end)) \
-            if t_end is not None and len(x) >= 8 else None
-        if z is not None:
-            held[-3:-1] = z[2:0:-1]
         if t_end is not None and len(x) >= 8:
-            tried[1] = z is not None
-    return y, held, tried
+            z = _hold_start(r, end, start, -k_end, -np.asarray(t_end))
+            if z is not None:
+                held[-3:-1] = z[2:0:-1]
+            holds[1] = z is not None
+    return y, held, holds
 
 
 def _rel_err(a: float, b: float, scale: float = 0.0) -> float:
@@ -555,10 +557,11 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
         a, b = ap.piece_start[p], ap.piece_start[p + 1]
         first, last = p == 0 and covers[0], p == npieces - 1 and covers[1]
         held = ends_dir is not None and (first or last)
-        x, xt, tried = _matched_ends(ap.points[a:b + 1], ends[p], ends[p + 1],
+        x, xt, holds = _matched_ends(ap.points[a:b + 1], ends[p], ends[p + 1],
                               k_src[0] if first else None, k_src[1] if last else None,
                               ends_dir[p] if held and first else None,
                               ends_dir[p + 1] if held and last else None)
+        gave_up = None          # why the held ends were given up, if they were
         try:
             bs = g2_bspline(x, ends[p], ends[p + 1])
         except DomainError as exc:       # an end beside its joint's tangent: noisy points
@@ -585,9 +588,8 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                 if tdev <= pdev * (1.0 + 1e-6):      # (1e-12 apart by rounding alone)
                     x, bs, pdev = xt, bt, tdev
                 else:                                # held ends given up: said as missed
-                    farther = (f"holding it takes the spline farther from the source "
+                    gave_up = (f"holding it takes the spline farther from the source "
                                f"({tdev:.3g} against {pdev:.3g})")
-                    tried = [farther if t else t for t in tried]
         poly[a:b + 1] = x
         kl, kr = quadratic_joint_curvatures(bs)
         if len(kl):
@@ -602,10 +604,9 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                 terr = max(terr, err)
                 if own:
                     serr.append(err)
-                    if tried[j] is not None and tried[j] is not True:
-                        missed.append((("start", "end")[j], err, tried[j] or
-                                       "no G2 end found that holds it with the source's "
-                                       "curvature"))
+                    why = {True: gave_up, False: NO_G2_END}.get(holds[j])
+                    if why:
+                        missed.append((("start", "end")[j], err, why))
         splines.append(bs)
     # the source's curvature scale over each end piece's span: max |kappa| there
     if is_curve:

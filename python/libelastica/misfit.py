@@ -265,6 +265,14 @@ def _verdict(pts: np.ndarray, d: np.ndarray, rms_all: float, corner: bool = True
     return Misfit(rms, noise, rms / noise if noise > 0 else np.inf, at, parts)
 
 
+def _places(points: np.ndarray, rows, fmt: LengthFormat) -> list:
+    """"(x, y)" of each of ``points[rows]``, 4 digits of the points' size however far from
+    the origin (the CLI's coordinates): a warning's places (misfit_summary's, fit.py's
+    wander_summary's)."""
+    size = float(np.ptp(points, axis=0).max())
+    return [f"({coordinates(points[i], size, 4, fmt)})" for i in rows]
+
+
 def misfit_summary(m: Misfit, points=None, unit: str = "", numbered: bool = True,
                    length: Optional[LengthFormat] = None, what: str = "one elastica") -> str:
     """What a warning of points that are not one elastica says (:func:`fit`'s, the CLI's and
@@ -280,10 +288,7 @@ def misfit_summary(m: Misfit, points=None, unit: str = "", numbered: bool = True
             f"noise ({fmt(m.noise, 3)}): they are not {what}")
     if m.corner < 0:
         return said + " (a corner, or curves of more than one piece: fit each alone)"
-    place = ""
-    if points is not None:
-        p = np.asarray(points, dtype=float)
-        place = f"({coordinates(p[m.corner], float(np.ptp(p, axis=0).max()), 4, fmt)})"
+    place = "" if points is None else _places(np.asarray(points, dtype=float), [m.corner], fmt)[0]
     where = (f"at point {m.corner} (counted from 0{'; at ' + place if place else ''})"
              if numbered or not place else f"at {place}")
     return (said + f"; a corner {where}? Split there, the two parts fit at rms "

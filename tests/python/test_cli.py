@@ -311,6 +311,33 @@ def test_fit_batch_goes_on_past_an_internal_error(capsys, tmp_path, monkeypatch)
                                                                     "sample_s_curve.json"]
 
 
+def test_fit_batch_records_a_file_that_did_not_converge(capsys, tmp_path, monkeypatch):
+    """A batch's file whose fit raised NotConvergedError left ``doc`` unset: a first file so
+    ended the batch in an UnboundLocalError (exit 3), a later one put the file before's
+    document in the batch's JSON in its place; now its document is its failure record, as
+    bad input's and a bug's are."""
+    import libelastica.cli_fit as cli_fit
+    from libelastica._ffi import lib
+    real = cli_fit.fit_file
+
+    def stuck(f, args, batch=False):
+        if Path(f).name.startswith("stuck"):
+            raise el.NotConvergedError(lib.EL_ENOCONV, "no convergence here")
+        return real(f, args, batch=batch)
+    monkeypatch.setattr(cli_fit, "fit_file", stuck)
+    for name in ("stuck1.csv", "stuck2.csv"):
+        (tmp_path / name).write_text(SAMPLE_2D.read_text())
+    files = [tmp_path / "stuck1.csv", SAMPLE_2D, tmp_path / "stuck2.csv"]
+    r = cli(capsys, "fit", *files, "--json", tmp_path / "all.json")
+    assert r.returncode == 1, r.stderr
+    assert r.stdout.count("not converged: no convergence here") == 2
+    docs = json.loads((tmp_path / "all.json").read_text())
+    assert [d["file"] for d in docs] == [str(f) for f in files]
+    for d in (docs[0], docs[2]):
+        assert d["status"] == "not converged: no convergence here" and d["curve"] is None
+    assert docs[1]["curve"] is not None
+
+
 # ------------------------------------------------------------------ hermite
 
 def test_hermite_table_json_and_svg(capsys, tmp_path):
