@@ -367,11 +367,23 @@ int el__spline_solve_near_line(el__spchain *w, int max_steps, double dir, double
  * solves; *nsolves: the tension solves it made; EL_OK or EL_ENOMEM */
 int el__spline_largest(const double *xy, size_t n, const el_spline_options *opt, double h,
                        double largest[3], int *nsolves);
+/* spline_stable.c: the Hessian of the chain's energy sum_j (E_j + sigma L_j) in its knot
+ * angles, H = 2 (d kappa^- / d theta - d kappa^+ / d theta), into w->dg (diagonal) and w->up
+ * (up[i]: H[i][i + 1]), every knot's (fixed ones too); from the pieces' c0, c1, so the chain
+ * evaluated with its Jacobians (el__chain_eval(w, 1)) at a solution. */
+void el__spline_hessian(el__spchain *w);
 /* spline_stable.c: the number of negative eigenvalues of the second variation of a solved
  * open chain in tension mode without guide ducks, reduced to its knot angles (0 otherwise);
- * where > 0, *lmin its least eigenvalue (internal units) and *span the span lengthening most
- * along its vector. Re-evaluates the chain with its Jacobians; its Newton work arrays used. */
-int el__spline_unstable(el__spchain *w, double *lmin, size_t *span);
+ * where > 0, *span the span lengthening most along the least one's vector. Re-evaluates the
+ * chain with its Jacobians; its Newton work arrays used. */
+int el__spline_unstable(el__spchain *w, size_t *span);
+/* spline_buckle.c: the number of negative eigenvalues of T - shift I, T symmetric
+ * tridiagonal on rows i0..i1 (diagonal dg, off-diagonal up[i] = T[i][i + 1]) */
+int el__tridiag_negatives(const double *dg, const double *up, size_t i0, size_t i1, double shift);
+/* spline_buckle.c: inverse iteration on w->dg, w->up (rows i0..i1, positive definite near
+ * singular): three solves from 1, normalised by the max norm, into w->z[i0..i1] (w->b its
+ * work); EL_OK, or EL_ENOCONV where a solve fails (w->z as it left) or z is not finite. */
+int el__tridiag_inverse_iter(el__spchain *w, size_t i0, size_t i1);
 /* spline.c: what one ulp of a piece's k moves its end state by near the separatrix, in
  * the residual's units (th: its end angles, kmax: its max |kappa|, h: its chord). */
 double el__spline_separatrix_bound(const el_smooth_params *p, const double th[2], double kmax, double h);

@@ -722,11 +722,11 @@ static int solve_paths(const double *xy, size_t n, const el_spline_options *opt,
          * el_smooth_params resolves (header); the latter within their bound */
         st = accepted(res, opt->tol, other, sep);
         /* the free batten found is no minimum: it slides off its ducks (spline_stable.c;
-         * QA19: 5 ducks turning 163-172 deg, one negative eigenvalue each) */
-        if (!st && !lmode && opt->sigma == 0.0 && sol == &w) {
-            double lmin;
+         * QA19: 5 ducks turning 163-172 deg, one negative eigenvalue each); a chain solved for
+         * its length (length mode) is passed over there */
+        if (!st && opt->sigma == 0.0 && sol == &w) {
             size_t span;
-            if (el__spline_unstable(&w, &lmin, &span) > 0) {
+            if (el__spline_unstable(&w, &span) > 0) {
                 el_spline_result_free(res);
                 res->slides = 1;
                 res->slide_span = span;

@@ -44,10 +44,42 @@ static void span_stiffness(double phi, double *s, double *c)
     *c = phi * (phi - sin(phi)) / D;
 }
 
+/* Sylvester's law of inertia: the negative pivots of L D L^T (GSL has no inertia count) */
+int el__tridiag_negatives(const double *dg, const double *up, size_t i0, size_t i1, double shift)
+{
+    int neg = 0;
+    double d = 0.0;
+    for (size_t i = i0; i <= i1; i++) {
+        d = i == i0 ? dg[i] - shift : dg[i] - shift - up[i - 1] * up[i - 1] / d;
+        if (d == 0.0) d = -1e-300;
+        neg += d < 0.0;
+    }
+    return neg;
+}
+
+/* Three steps of inverse iteration from z = 1 (GSL's symmetric tridiagonal solve) */
+int el__tridiag_inverse_iter(el__spchain *w, size_t i0, size_t i1)
+{
+    const size_t nf = i1 - i0 + 1;
+    double *z = w->z + i0, *b = w->b + i0;
+    if (nf == 1) {   /* the three steps z = (z / |z|) / dg from 1 end exactly at 1 / dg */
+        z[0] = 1.0 / w->dg[i0];
+        return isfinite(z[0]) ? EL_OK : EL_ENOCONV;
+    }
+    for (size_t i = 0; i < nf; i++) z[i] = 1.0;
+    gsl_vector_view d = gsl_vector_view_array(w->dg + i0, nf), e = gsl_vector_view_array(w->up + i0, nf - 1);
+    gsl_vector_view bv = gsl_vector_view_array(b, nf), x = gsl_vector_view_array(z, nf);
+    for (int it = 0; it < 3; it++) {
+        const double norm = el__max_abs(z, nf);
+        for (size_t i = 0; i < nf; i++) b[i] = z[i] / norm;
+        if (gsl_linalg_solve_symm_tridiag(&d.vector, &e.vector, &bv.vector, &x.vector)) return EL_ENOCONV;
+    }
+    return el__all_finite(z, nf) ? EL_ENOCONV : EL_OK;
+}
+
 /* K(lambda) on the free knots i0..i1 (their slopes; the curvature jumps as
  * equations: symmetric tridiagonal, diagonal dg, off-diagonal up); returns the
- * number of its negative eigenvalues (Sylvester: the negative pivots of
- * L D L^T; GSL has no inertia count). */
+ * number of its negative eigenvalues (el__tridiag_negatives). */
 static int buckling_matrix(el__spchain *w, size_t i0, size_t i1, double lambda)
 {
     memset(w->dg, 0, w->n * sizeof *w->dg);
@@ -60,14 +92,7 @@ static int buckling_matrix(el__spchain *w, size_t i0, size_t i1, double lambda)
         if (j + 1 >= i0 && j + 1 <= i1) w->dg[j + 1] += s / h;
         if (j >= i0 && j + 1 <= i1) w->up[j] += c / h;
     }
-    int neg = 0;
-    double d = 0.0;
-    for (size_t i = i0; i <= i1; i++) {
-        d = i == i0 ? w->dg[i] : w->dg[i] - w->up[i - 1] * w->up[i - 1] / d;
-        if (d == 0.0) d = -1e-300;
-        neg += d < 0.0;
-    }
-    return neg;
+    return el__tridiag_negatives(w->dg, w->up, i0, i1, 0.0);
 }
 
 /*
@@ -90,20 +115,8 @@ static int buckling_mode(el__spchain *w, size_t i0, size_t i1, double *lambda)
         if (buckling_matrix(w, i0, i1, mid)) hi = mid; else lo = mid;
     }
     *lambda = hi;
-    const size_t nf = i1 - i0 + 1;
     buckling_matrix(w, i0, i1, hi * (1.0 - 1e-12));
-    for (size_t i = i0; i <= i1; i++) w->z[i] = 1.0;
-    gsl_vector_view d = gsl_vector_view_array(w->dg + i0, nf), b = gsl_vector_view_array(w->b + i0, nf);
-    gsl_vector_view x = gsl_vector_view_array(w->z + i0, nf);
-    for (int it = 0; it < 3; it++) {
-        double norm = 0.0;
-        for (size_t i = i0; i <= i1; i++) norm = fmax(norm, fabs(w->z[i]));
-        for (size_t i = i0; i <= i1; i++) w->b[i] = w->z[i] / norm;
-        if (nf == 1) { w->z[i0] = w->b[i0] / w->dg[i0]; continue; }
-        gsl_vector_view e = gsl_vector_view_array(w->up + i0, nf - 1);
-        if (gsl_linalg_solve_symm_tridiag(&d.vector, &e.vector, &b.vector, &x.vector)) return EL_ENOCONV;
-    }
-    return el__all_finite(w->z + i0, nf) ? EL_ENOCONV : EL_OK;
+    return el__tridiag_inverse_iter(w, i0, i1);
 }
 
 /*
@@ -125,7 +138,7 @@ int el__spline_solve_buckled(el__spchain *w, int max_steps, double dir, double L
     const size_t i1 = w->slot[n - 1] == EL__SLOT_ANGLE ? n - 1 : n - 2;
     int st = EL_OK;
     memset(w->z, 0, n * sizeof *w->z);
-    if (i0 <= i1 && i1 < n) {
+    if (i0 <= i1) {
         double lambda;
         if ((st = buckling_mode(w, i0, i1, &lambda))) return st;
         /* integral w'^2 = -d/dlambda of the span's form (s a^2 + 2 c a b + s b^2) / h,

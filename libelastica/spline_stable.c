@@ -16,47 +16,39 @@
  * eigenvalue: moving the angles along its vector lowers the energy, the batten leaves
  * its ducks (a free one, sigma = 0: a span grows without bound, as a polyline of the
  * same ducks minimised from it does, QA19 W2). Inertia by Sylvester's law (the negative
- * pivots of L D L^T, as spline_buckle.c's buckling_matrix); the least eigenvalue by
- * bisection on that count and its vector by inverse iteration (GSL's symmetric
- * tridiagonal solve), the span named the one whose length grows most along it
- * (relative to its length: dL = cL . d theta).
+ * pivots of L D L^T: el__tridiag_negatives, spline_buckle.c); the least eigenvalue by
+ * bisection on that count and its vector by inverse iteration (el__tridiag_inverse_iter),
+ * the span named the one whose length grows most along it (relative to its length:
+ * dL = cL . d theta).
  * Not tested here: a span unstable for its own end data (a conjugate point inside a
  * span), which H cannot see.
  */
 #include "internal.h"
-#include <gsl/gsl_linalg.h>
 
-/* Negative pivots of H - shift I on the free knots i0..i1 (dg, up: H) */
-static int negatives(const double *dg, const double *up, size_t i0, size_t i1, double shift)
+/* H of the header: E_j's 2 x 2 Hessian from piece j's c0, c1 summed at its two knots */
+void el__spline_hessian(el__spchain *w)
 {
-    int neg = 0;
-    double d = 0.0;
-    for (size_t i = i0; i <= i1; i++) {
-        d = i == i0 ? dg[i] - shift : dg[i] - shift - up[i - 1] * up[i - 1] / d;
-        if (d == 0.0) d = -1e-300;
-        neg += d < 0.0;
-    }
-    return neg;
-}
-
-int el__spline_unstable(el__spchain *w, double *lmin, size_t *span)
-{
-    const size_t n = w->n, m = w->m;
-    *lmin = 0.0;
-    *span = 0;
-    if (w->closed || w->ng || w->lmode || n < 2 || !isfinite(el__chain_eval(w, 1))) return 0;
-    double *dg = w->dg, *up = w->up, *z = w->z, *b = w->b;
-    for (size_t i = 0; i < n; i++) dg[i] = up[i] = z[i] = 0.0;
-    for (size_t j = 0; j < m; j++) {   /* E_j's Hessian in (ta, tb), at knots j, j + 1 */
+    double *dg = w->dg, *up = w->up;
+    for (size_t i = 0; i < w->n; i++) dg[i] = up[i] = 0.0;
+    for (size_t j = 0; j < w->m; j++) {   /* E_j's Hessian in (ta, tb), at knots j, j + 1 */
         const el__spiece *pc = &w->pc[j];
         dg[j] -= 2.0 * pc->c0[1];
         dg[j + 1] += 2.0 * pc->c1[2];
         up[j] = pc->c1[1] - pc->c0[2];   /* the mean of its two equal entries */
     }
+}
+
+int el__spline_unstable(el__spchain *w, size_t *span)
+{
+    const size_t n = w->n, m = w->m;
+    *span = 0;
+    if (w->closed || w->ng || w->lmode || n < 2 || !isfinite(el__chain_eval(w, 1))) return 0;
+    el__spline_hessian(w);
+    double *dg = w->dg, *up = w->up, *z = w->z;
     const size_t i0 = w->slot[0] == EL__SLOT_ANGLE ? 0 : 1;
     const size_t i1 = w->slot[n - 1] == EL__SLOT_ANGLE ? n - 1 : n - 2;
-    if (i0 > i1 || i1 >= n) return 0;
-    const int neg = negatives(dg, up, i0, i1, 0.0);
+    if (i0 > i1) return 0;
+    const int neg = el__tridiag_negatives(dg, up, i0, i1, 0.0);
     if (!neg) return 0;
     /* the least eigenvalue: between Gershgorin's bound and 0 */
     double lo = 0.0, hi = 0.0;
@@ -64,22 +56,15 @@ int el__spline_unstable(el__spchain *w, double *lmin, size_t *span)
         lo = fmin(lo, dg[i] - (i > i0 ? fabs(up[i - 1]) : 0.0) - (i < i1 ? fabs(up[i]) : 0.0));
     for (int it = 0; it < 100 && hi - lo > 1e-14 * (fabs(lo) + fabs(hi)); it++) {
         const double mid = 0.5 * (lo + hi);
-        if (negatives(dg, up, i0, i1, mid)) hi = mid; else lo = mid;
+        if (el__tridiag_negatives(dg, up, i0, i1, mid)) hi = mid; else lo = mid;
     }
-    *lmin = 0.5 * (lo + hi);
-    /* its vector: inverse iteration just below it (H - shift I positive definite) */
-    const size_t nf = i1 - i0 + 1;
+    /* its vector: inverse iteration just below it (H - shift I positive definite); one
+     * free knot is its own */
     const double shift = lo - 1e-6 * fabs(lo);
-    for (size_t i = i0; i <= i1; i++) { z[i] = 1.0; dg[i] -= shift; }
-    gsl_vector_view d = gsl_vector_view_array(dg + i0, nf), bv = gsl_vector_view_array(b + i0, nf);
-    gsl_vector_view x = gsl_vector_view_array(z + i0, nf);
-    for (int it = 0; it < 3; it++) {
-        const double norm = el__max_abs(z + i0, nf);
-        for (size_t i = i0; i <= i1; i++) b[i] = z[i] / norm;
-        if (nf == 1) { z[i0] = 1.0; break; }
-        gsl_vector_view e = gsl_vector_view_array(up + i0, nf - 1);
-        if (gsl_linalg_solve_symm_tridiag(&d.vector, &e.vector, &bv.vector, &x.vector)) break;
-    }
+    for (size_t i = 0; i < n; i++) z[i] = 0.0;
+    for (size_t i = i0; i <= i1; i++) dg[i] -= shift;
+    if (i0 == i1) z[i0] = 1.0;
+    else el__tridiag_inverse_iter(w, i0, i1);
     double most = -1.0;
     for (size_t j = 0; j < m; j++) {
         const el__spiece *pc = &w->pc[j];

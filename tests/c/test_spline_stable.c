@@ -1,6 +1,7 @@
 /* The free batten (tension 0) that is an equilibrium but no minimum (spline_stable.c):
  * EL_EDOM with el_spline_result's slides and the span that slides; stable ones as before. */
 #include "spline_check.h"
+#include <gsl/gsl_eigen.h>
 #include <stdio.h>
 
 /* 5 ducks: two along +x, a tip at (10, 0), then two going back at deg degrees from the
@@ -82,6 +83,104 @@ START_TEST(a_tension_is_not_judged)
 }
 END_TEST
 
+/* The open chain through the n <= 8 points xy at tension sigma (internal units, the mean
+ * chord 1), natural ends, solved (as test_spline_g2's bend_parameter_column test builds one) */
+static void solved_chain(el__spchain *w, const double *xy, size_t n, double sigma)
+{
+    const size_t m = n - 1;
+    memset(w, 0, sizeof *w);
+    ck_assert_int_eq(el__chain_alloc(w, n, m), EL_OK);
+    const double S = polygon_length(xy, n) / (double)m;
+    w->tol = 1e-12; w->max_iter = 200; w->aim = 1e-14; w->sigma = sigma;
+    for (size_t j = 0; j < m; j++) {
+        el__spiece *pc = &w->pc[j];
+        pc->dx = (xy[2 * j + 2] - xy[2 * j]) / S;
+        pc->dy = (xy[2 * j + 3] - xy[2 * j + 1]) / S;
+        pc->h = hypot(pc->dx, pc->dy);
+    }
+    for (size_t i = 0; i < n; i++) {
+        w->ell[i] = 0.5 * (w->pc[i > 0 ? i - 1 : 0].h + w->pc[i < m ? i : m - 1].h);
+        w->slot[i] = EL__SLOT_ANGLE;
+    }
+    el__chain_start_angles(w);
+    ck_assert_int_eq(el__chain_start_pieces(w), EL_OK);
+    ck_assert_int_eq(el__chain_newton(w, 200, w->aim, w->tol), EL_OK);
+}
+
+/* E(theta) = sum_j E_j + sigma L_j, each piece re-solved for the knot angles x */
+static double chain_energy_at(el__spchain *w, const double *x, const double *v0)
+{
+    double E = 0.0;
+    memcpy(w->x, x, w->n * sizeof *x);
+    for (size_t j = 0; j < w->m; j++) {
+        el__spiece *pc = &w->pc[j];
+        memcpy(pc->v, v0 + EL__NV * j, sizeof pc->v);
+        el__sptargets t;
+        el__chain_targets(w, j, &t);
+        ck_assert_int_eq(el__spiece_newton(pc, &t, 1e-14), EL_OK);
+        E += pc->energy + w->sigma * pc->v[EL__SP_L];
+    }
+    return E;
+}
+
+/*
+ * el__spline_hessian is the Hessian of E(theta) = sum_j integral kappa^2 + sigma ds of the
+ * spans' Hermite elasticae in the knot angles: against its central second differences at
+ * step e = 1e-4 (each span re-solved by el__spiece_newton to 1e-14), whose truncation
+ * (e^2 E^(4) / 6 ~ 1e-8 |H|) and rounding (eps E / e^2 ~ 1e-7) errors lie far below
+ * 1e-5 max |H| (measured: 4e-8 of it). The 150-deg turn and the irregular ducks (stable) and
+ * the sharp 170-deg ducks (unstable, QA19 W2) at tension 0, the sharp ones at sigma 0.3 too.
+ * The least eigenvalue (GSL's symmetric eigensolver on the dense H): negative for the sharp
+ * free batten only.
+ */
+START_TEST(hessian_is_the_second_difference_of_the_energy)
+{
+    const double sharp[10] = {0, 0, 5, 0, 10, 0.3, 5.5, 1.2, 0.5, 1.6};
+    const double t150[10] = {0, 0, 5, 0, 9.5, 1.0, 6.5, 3.5, 2.5, 5.5};
+    const double irregular[10] = {0, 0, 3.1, 1.2, 7.9, 1.6, 10.2, 0.4, 15.0, -1.9};
+    const double *xy[4] = {t150, irregular, sharp, sharp};
+    const double sigma[4] = {0.0, 0.0, 0.0, 0.3};
+    const int unstable[4] = {0, 0, 1, 0};
+    const size_t n = 5;
+    for (int c = 0; c < 4; c++) {
+        el__spchain w;
+        solved_chain(&w, xy[c], n, sigma[c]);
+        ck_assert(isfinite(el__chain_eval(&w, 1)));
+        el__spline_hessian(&w);
+        double x0[5], v0[EL__NV * 4], H[25];
+        memcpy(x0, w.x, sizeof x0);
+        for (size_t j = 0; j < w.m; j++) memcpy(v0 + EL__NV * j, w.pc[j].v, sizeof w.pc[j].v);
+        for (size_t i = 0; i < n; i++)
+            for (size_t k = 0; k < n; k++)
+                H[i * n + k] = i == k ? w.dg[i] : k == i + 1 ? w.up[i] : i == k + 1 ? w.up[k] : 0.0;
+        const double e = 1e-4, hmax = el__max_abs(H, n * n);
+        double worst = 0.0;
+        for (size_t i = 0; i < n; i++)
+            for (size_t k = 0; k < n; k++) {
+                double f[4], x[5];
+                for (int a = 0; a < 4; a++) {
+                    memcpy(x, x0, sizeof x);
+                    x[i] += a & 1 ? e : -e;
+                    x[k] += a & 2 ? e : -e;
+                    f[a] = chain_energy_at(&w, x, v0);
+                }
+                const double fd = (f[3] - f[2] - f[1] + f[0]) / (4.0 * e * e);
+                worst = fmax(worst, fabs(fd - H[i * n + k]));
+            }
+        ck_assert_msg(worst <= 1e-5 * hmax, "case %d: |H - fd| %g of %g", c, worst, hmax);
+        gsl_eigen_symm_workspace *ws = gsl_eigen_symm_alloc(n);
+        gsl_vector *ev = gsl_vector_alloc(n);
+        gsl_matrix_view Hm = gsl_matrix_view_array(H, n, n);
+        ck_assert_int_eq(gsl_eigen_symm(&Hm.matrix, ev, ws), 0);
+        const double lmin = gsl_vector_min(ev);
+        ck_assert_msg(unstable[c] ? lmin < 0.0 : lmin > 0.0, "case %d: least eigenvalue %g", c, lmin);
+        gsl_vector_free(ev);
+        gsl_eigen_symm_free(ws);
+        el__chain_free(&w);
+    }
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("spline_stable");
@@ -90,6 +189,7 @@ int main(void)
     tcase_add_test(tc, unstable_free_batten_slides_off);
     tcase_add_test(tc, stable_free_battens_are_solved);
     tcase_add_test(tc, a_tension_is_not_judged);
+    tcase_add_test(tc, hessian_is_the_second_difference_of_the_energy);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }
