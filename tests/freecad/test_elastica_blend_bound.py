@@ -4,12 +4,16 @@ rule, a bound property is written by its expression only: neither an edit of the
 parameters (which resets a picked Solution to 1) nor its follow of a picked shape as the
 edges move writes it; a document of version 3 (Solution from 0) opens with its value and
 expression one up."""
+import base64
+import json
+import re
 import unittest
 
 import FreeCAD as App
 
 import elastica_samples as S
 from freecad.elastica import blend
+from test_elastica_fit import rewrite_document
 
 
 class BoundSolutionTest(unittest.TestCase):
@@ -52,9 +56,10 @@ class BoundSolutionTest(unittest.TestCase):
         self.assertNotIn("Invalid", b.State)
 
     def test_a_document_counting_from_0_opens_counting_from_1(self):
-        """As FreeCAD restores a version-3 proxy (its state) and calls onDocumentRestored:
-        the values and expression version 3 saved (Solution 2 and 'Spreadsheet.A1 - 1' for
-        the list's solution 3; Solution 1 for its solution 2)."""
+        """A file as version 3 saved it (its proxies' version 3; Solution 2 and
+        'Spreadsheet.A1 - 1' for the list's solution 3, Solution 1 for its solution 2),
+        reopened: counting from 1, its expression kept naming the cell's solution,
+        untouched."""
         other = blend.make(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"), Mode="tension",
                            Tension=0.001)
         self.doc.recompute()
@@ -62,22 +67,55 @@ class BoundSolutionTest(unittest.TestCase):
         self.doc.recompute()
         self.assertEqual((self.b.Status, other.Status), ("solution 3 of 4", "solution 2 of 4"))
         shapes = [f.Shape.Length for f in (self.b, other)]
-        self.b.setExpression("Solution", "Spreadsheet.A1 - 1")
-        self.b.Solution, other.Solution = 2, 1
-        for f in (self.b, other):
-            f.purgeTouched()
-            f.Proxy.__setstate__(dict(f.Proxy.__getstate__(), version=3))
-            f.Proxy.onDocumentRestored(f)
+        names = (self.b.Name, other.Name)
+        path = S.temp_path(self, "saved.FCStd")
+        self.doc.saveAs(path)
+        App.closeDocument(self.doc.Name)
+        old = path.replace("saved", "older")
+        rewrite_document(path, old, self._as_version_3)
+        self.doc = App.openDocument(old)
+        b, other = (self.doc.getObject(n) for n in names)
+        for f in (b, other):
             self.assertNotIn("Touched", f.State, f.Label)
-        self.assertEqual(dict(self.b.ExpressionEngine)["Solution"], "Spreadsheet.A1 - 1 + 1")
-        self.assertEqual((self.b.Solution, other.Solution), (3, 2))
-        for f in (self.b, other):                       # once: not again
-            f.Proxy.onDocumentRestored(f)
+        self.assertEqual(dict(b.ExpressionEngine)["Solution"], "Spreadsheet.A1 - 1 + 1")
+        self.assertEqual((b.Solution, other.Solution), (3, 2))
+        for f in (b, other):
             f.touch()
         self.doc.recompute()
-        self.assertEqual((self.b.Solution, self.b.Status), (3, "solution 3 of 4"))
+        self.assertEqual((b.Solution, b.Status), (3, "solution 3 of 4"))
         self.assertEqual((other.Solution, other.Status), (2, "solution 2 of 4"))
-        self.assertEqual([f.Shape.Length for f in (self.b, other)], shapes)
+        for f, length in zip((b, other), shapes):     # the reopened edges' ulps
+            self.assertAlmostEqual(f.Shape.Length, length, delta=1e-12 * length)
+        path = S.temp_path(self, "again.FCStd")         # once: saved counting from 1
+        self.doc.saveAs(path)
+        App.closeDocument(self.doc.Name)
+        self.doc = App.openDocument(path)
+        b, other = (self.doc.getObject(n) for n in names)
+        self.assertEqual((b.Solution, other.Solution), (3, 2))
+        self.assertEqual(dict(b.ExpressionEngine)["Solution"], "Spreadsheet.A1 - 1 + 1")
+
+    def _as_version_3(self, text):
+        """Document.xml as version 3 wrote it: the blends' proxies of version 3, Solution
+        (and its expression) counting from 0."""
+        def proxy(m):
+            state = json.loads(base64.b64decode(m.group(1)))
+            self.assertEqual(state["version"], 4)
+            state["version"] = 3
+            return m.group(0).replace(m.group(1), base64.b64encode(
+                json.dumps(state).encode()).decode())
+
+        def solution(m):
+            return m.group(1) + str(int(m.group(2)) - 1) + '"'
+        text, n = re.subn(r'<Python value="([^"]*)" encoded="yes" '
+                          r'module="freecad.elastica.blend"', proxy, text)
+        self.assertEqual(n, 2)
+        text, n = re.subn(r'(<Property name="Solution" type="App::PropertyInteger"[^>]*>\s*'
+                          r'<Integer value=")(\d+)"', solution, text)
+        self.assertEqual(n, 2)
+        old = '<Expression path="Solution" expression="Spreadsheet.A1"/>'
+        self.assertEqual(text.count(old), 1)
+        return text.replace(old, old.replace("A1", "A1 - 1"))
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -1,11 +1,13 @@
 """freecadcmd -t test of a blend asked between edges of two documents (QA19gui F5): the
 command says in words that both edges must be in one document, the active one (it printed
 FreeCAD's raw exception dict, 'PropertyLinkSub does not support external object'), and
-leaves both documents unchanged."""
+leaves both documents unchanged; so do the other commands that link what they read (an
+elastic spline through another document's points printed the same raw exception)."""
 import unittest
 
 import FreeCAD as App
 
+import elastica_samples as S
 from freecad.elastica import commands as C
 
 
@@ -29,10 +31,10 @@ class BlendDocumentsTest(unittest.TestCase):
         doc.recompute()
         return line
 
-    def _said(self, sources):
+    def _said(self, sources, command=C.blend_sources):
         said = []
         before = [len(d.Objects) for d in (self.a, self.b)]
-        made = C.blend_sources(sources, open_panel=False, wrong=said.append)
+        made = command(sources, open_panel=False, wrong=said.append)
         self.assertIsNone(made)
         self.assertEqual([len(d.Objects) for d in (self.a, self.b)], before)
         return said
@@ -50,6 +52,18 @@ class BlendDocumentsTest(unittest.TestCase):
         self.assertEqual(said, [f"the two edges are in document '{b}': a blend links both "
                                 "edges, so they must be in one document, the active one "
                                 f"('{a}'); copy an edge into it (Edit > Copy, Paste)"])
+
+    def test_a_spline_through_another_documents_points_too(self):
+        pts = S.points_sketch(self.b, S.keyline_xy(8)[0])
+        self.b.recompute()
+        App.setActiveDocument(self.a.Name)
+        said = self._said([(pts, [])], C.spline_sources)
+        a, b = self.a.Label, self.b.Label
+        # main: no word said, FreeCAD's 'PropertyLinkSubList does not support external
+        # object' printed
+        self.assertEqual(said, [f"the selection is in document '{b}': the new feature links "
+                                "what it reads, so that must be in the active document "
+                                f"('{a}'); copy it there (Edit > Copy, Paste)"])
 
 
 if __name__ == "__main__":

@@ -22,8 +22,9 @@ from .units import (floor_digits, length_mark, length_text, length_unit_mark, pe
                     per_length, per_length_mark, reach_mark, tension_mark, tension_or_zero,
                     tension_text, tension_unit_mark)
 from .proxy import (FeatureProxy, InputProblem, add_enum, add_geometry_index, add_length,
-                    add_link, add_per_area, add_property, attach_view, check_bound_per_area,
-                    check_degree, check_number, check_tolerance, read_only, set_said, VERSION)
+                    add_link, add_per_area, add_property, attach_view, bound_expression,
+                    check_bound_per_area, check_degree, check_number, check_tolerance,
+                    read_only, set_said, VERSION)
 
 MODES = ["length", "tension"]
 CONTINUITIES = ["G1", "G2"]
@@ -571,14 +572,11 @@ class BlendProxy(FeatureProxy):
     @staticmethod
     def _from_one(obj):
         """A document of version <= 3 counted Solution from 0: its value one up, an
-        expression's '(...) + 1' (its cell keeps naming the same solution), untouched."""
-        touched = "Touched" in obj.State
-        expression = dict(obj.ExpressionEngine).get("Solution")
+        expression's '(...) + 1' (its cell keeps naming the same solution)."""
+        expression = bound_expression(obj, "Solution")
         if expression:
             obj.setExpression("Solution", f"({expression}) + 1")
         obj.Solution = obj.Solution + 1
-        if not touched:
-            obj.purgeTouched()
 
     def onChanged(self, obj, prop):
         if prop in self.followed_links and not self.link_changed(obj, prop):
@@ -596,16 +594,11 @@ class BlendProxy(FeatureProxy):
             if getattr(obj, "Solution", 1) != 1:
                 self.set_solution(obj, 1)
 
-    @staticmethod
-    def solution_bound(obj):
-        """The expression Solution is bound to (a cell), or None: then only it writes
-        Solution (FreeCAD's rule), never the feature's reset or follow (QA19gui F6)."""
-        return dict(getattr(obj, "ExpressionEngine", [])).get("Solution")
-
     def set_solution(self, obj, i):
         """obj.Solution = i (from 1) written by the feature itself (no pick of the designer's);
-        not where Solution is bound to an expression."""
-        if self.solution_bound(obj):
+        not where Solution is bound to an expression (a cell): then only it writes Solution
+        (FreeCAD's rule), never the feature's reset or follow (QA19gui F6)."""
+        if bound_expression(obj, "Solution"):
             return
         self._setting = True
         try:
@@ -619,7 +612,9 @@ class BlendProxy(FeatureProxy):
         edited: an edit picks the lowest energy), the solution of the
         shape shown (nearest_shape), or the lowest-energy one where that shape is gone: the
         index of a picked one names another curve, or none, once solutions appear or vanish.
-        Returns (index, whether the shape shown is gone)."""
+        Returns (index, whether the shape shown is gone, moved): moved, where Solution is
+        bound to an expression (kept as it says), the index of the shape shown now (None:
+        gone), else False."""
         new_problem, self._new_problem = getattr(self, "_new_problem", False), False
         picked, self._picked = getattr(self, "_picked", False), False
         same = [(float(c.length), e) for c, e in zip(curves, energies)] == \
@@ -627,13 +622,12 @@ class BlendProxy(FeatureProxy):
         shown = None if new_problem or picked or same or obj.Solution == 1 or not obj.Lengths \
             else self.plane_curves(obj)                # the last good solve's curve
         if shown is None:
-            return obj.Solution - 1, False
+            return obj.Solution - 1, False, False
         j = nearest_shape(shown[0], curves)
-        if self.solution_bound(obj):
+        if bound_expression(obj, "Solution"):
             # kept as its expression says; where the shape shown went, said (apply)
-            self._bound_moved = j
-            return obj.Solution - 1, False
-        return (0, True) if j is None else (j, False)
+            return obj.Solution - 1, False, j
+        return (0, True, False) if j is None else (j, False, False)
 
     def ends(self, obj):
         """The two linked edges (global), or InputProblem."""
@@ -667,9 +661,8 @@ class BlendProxy(FeatureProxy):
         g2 = obj.Continuity == "G2"
         r = blend_core(e1, obj.AtEnd1, e2, obj.AtEnd2, plane, obj.Mode, value, none_ok=g2)
         curves = r["curves"]
-        self._bound_moved = False
-        i, r["gone"] = self._followed_solution(obj, curves, r["energies"])
-        r["solution"], r["bound_moved"] = i, self._bound_moved
+        i, r["gone"], r["bound_moved"] = self._followed_solution(obj, curves, r["energies"])
+        r["solution"] = i
         if curves and not 0 <= i < len(curves):
             raise InputProblem(f"Solution = {i + 1}: there are {len(curves)} solutions "
                                f"(1 to {len(curves)})")
@@ -691,10 +684,10 @@ class BlendProxy(FeatureProxy):
             "move)" if r["gone"] else f" (solution {obj.Solution} before the edges moved)")
         if followed:
             self.set_solution(obj, i + 1)
-        moved = r.get("bound_moved", False)
+        moved = r["bound_moved"]
         if moved is not False and moved != i:
             # bound: the expression's solution kept, the shape shown before named
-            followed = (f" (Solution kept as {self.solution_bound(obj)} says: the shape shown "
+            followed = (f" (Solution kept as {bound_expression(obj, 'Solution')} says: the shape shown "
                         "before is " + (f"solution {moved + 1} now" if moved is not None
                                         else "gone with the edges' move") + ")")
         obj.Shape = part_bspline(r["bspline"], r["placement"]).toShape()

@@ -155,6 +155,22 @@ def _doc():
     return doc
 
 
+def _in_active_document(objs, doc, wrong, said=None):
+    """Whether every object of ``objs`` is in ``doc``, the active one, where the feature is
+    made: it links them, and FreeCAD 0.20's links take no object of another document (its
+    raw exception, 'PropertyLinkSubList does not support external object'); else ``wrong``
+    says so in words (``said(where)``, where = "document(s) '...'") and False."""
+    docs = [o.Document for o in objs]
+    if all(d == doc for d in docs):
+        return True
+    where = (("documents " if len(set(docs)) > 1 else "document ")
+             + " and ".join(dict.fromkeys(f"'{d.Label}'" for d in docs)))
+    wrong(said(where) if said else
+          f"the selection is in {where}: the new feature links what it reads, so that must be "
+          f"in the active document ('{doc.Label}'); copy it there (Edit > Copy, Paste)")
+    return False
+
+
 def dialog_open():
     """A task dialog is open (ours or FreeCAD's, e.g. the Sketcher's edit)."""
     return bool(App.GuiUp and Gui.Control.activeDialog())
@@ -202,7 +218,7 @@ def fit_sources(sources, csv_file="", open_panel=True, wrong=message, **options)
     document unchanged)."""
     from . import fit, fit_core, sources as src_mod
     doc = _doc()
-    if doc is None:
+    if doc is None or not _in_active_document([o for o, _ in sources], doc, wrong):
         return None
     tol, deg, model = defaults()
     opts = {"Model": model, "Tolerance": tol, "Degree": deg}
@@ -264,13 +280,11 @@ def blend_sources(sources, open_panel=True, picks=None, wrong=message):
         wrong("select exactly two edges (each is joined at its end nearer where it was "
               "clicked)")
         return None
-    docs = [o.Document for o, _ in edges]
-    if any(d != doc for d in docs):
-        # the blend links both edges (App::PropertyLinkSub: no external object)
-        where = " and ".join(dict.fromkeys(f"'{d.Label}'" for d in docs))
-        wrong(f"the two edges are in {'documents ' if len(set(docs)) > 1 else 'document '}"
-              f"{where}: a blend links both edges, so they must be in one document, the "
-              f"active one ('{doc.Label}'); copy an edge into it (Edit > Copy, Paste)")
+    if not _in_active_document(
+            [o for o, _ in edges], doc, wrong,
+            lambda where: f"the two edges are in {where}: a blend links both edges, so they "
+            f"must be in one document, the active one ('{doc.Label}'); copy an edge into it "
+            "(Edit > Copy, Paste)"):
         return None
 
     opts = {}
@@ -327,7 +341,7 @@ def spline_sources(sources, open_panel=True, wrong=message, **options):
     points are a closed wire's), Tolerance, Degree, ..."""
     from . import spline, sources as src_mod
     doc = _doc()
-    if doc is None:
+    if doc is None or not _in_active_document([o for o, _ in sources], doc, wrong):
         return None
     opts = {"Tolerance": defaults()[0]}
     opts.update(options)
@@ -377,7 +391,7 @@ def ellblend_sources(sources, open_panel=True, wrong=message, **options):
     (modulus / parameter), D, Tolerance."""
     from . import ellblend, sources as src_mod
     doc = _doc()
-    if doc is None:
+    if doc is None or not _in_active_document([o for o, _ in sources], doc, wrong):
         return None
     opts = {"Mode": "interpolate", "K": 0.5, "KConvention": "modulus", "D": 2.0,
             "Tolerance": defaults()[0]}
@@ -410,7 +424,7 @@ def g2quad_sources(sources, open_panel=True, wrong=message, **options):
     """Check the picked curve, create the G2 quadratic B-spline (recorded), open its panel."""
     from . import g2quad, sources as src_mod
     doc = _doc()
-    if doc is None:
+    if doc is None or not _in_active_document([o for o, _ in sources], doc, wrong):
         return None
     opts = {"Edges": 24}
     opts.update(options)

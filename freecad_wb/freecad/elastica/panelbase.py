@@ -11,9 +11,10 @@ import Part
 from PySide import QtCore, QtGui
 
 from . import icon
+from .containers import CONTAINERS
 from .geometry import is_sketch, sketch_curves
-from .proxy import (EDGE_ENDS, InputProblem, abort_transaction, keep_note, kept_note,
-                    note_changes, note_values, said as said_kept)
+from .proxy import (EDGE_ENDS, InputProblem, abort_transaction, bound_expression, keep_note,
+                    kept_note, note_changes, note_values, said as said_kept)
 from .recording import edit_lines, edit_state
 from .spinboxes import DecadeBox, NumberBox
 from .units import length_text, say, unit_names
@@ -242,7 +243,7 @@ class Panel:
 
     def expression(self, prop):
         """The expression a property of the feature is bound to, or None."""
-        return dict(getattr(self.obj, "ExpressionEngine", [])).get(prop)
+        return bound_expression(self.obj, prop)
 
     def mark_bound(self, box, prop):
         expr = self.expression(prop)
@@ -591,12 +592,10 @@ class Panel:
 
     def sources_body(self):
         """The PartDesign Body holding the first of the feature's sources in one (a sketch
-        in a Body), or None."""
-        for name in getattr(self, "sketch_exclude", ()):
-            src = self.doc.getObject(name)
-            parent = src.getParentGeoFeatureGroup() if src is not None else None
-            if parent is not None and parent.isDerivedFrom("PartDesign::Body"):
-                return parent
+        in a Body), or None: the first in its containers (innermost first)."""
+        for c in getattr(self.obj, CONTAINERS, ()):
+            if c.isDerivedFrom("PartDesign::Body"):
+                return c
         return None
 
     def committed_by_other(self):

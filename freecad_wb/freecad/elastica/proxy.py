@@ -69,20 +69,30 @@ def add_property(obj, kind, name, group, tip, value=None):
 LENGTH = "App::PropertyDistance"
 
 
+def bound_expression(obj, name):
+    """The expression property ``name`` of ``obj`` is bound to, or None."""
+    return dict(getattr(obj, "ExpressionEngine", [])).get(name)
+
+
+def _take_out(obj, name):
+    """Remove property ``name`` (to be added again with another type): its (value,
+    expression)."""
+    value, expression = float(getattr(obj, name)), bound_expression(obj, name)
+    if expression:
+        obj.setExpression(name, None)
+    obj.removeProperty(name)
+    return value, expression
+
+
 def add_length(obj, name, group, tip, value=None):
     """A length property (LENGTH). Documents of version 2 stored it as App::PropertyFloat:
     that property is replaced, its value and expression kept."""
+    expression = None
     if name in obj.PropertiesList and obj.getTypeIdOfProperty(name) == "App::PropertyFloat":
-        value = float(getattr(obj, name))
-        expression = dict(obj.ExpressionEngine).get(name)
-        if expression:
-            obj.setExpression(name, None)
-        obj.removeProperty(name)
-        add_property(obj, LENGTH, name, group, tip, value)
-        if expression:
-            obj.setExpression(name, expression)
-        return
+        value, expression = _take_out(obj, name)
     add_property(obj, LENGTH, name, group, tip, value)
+    if expression:
+        obj.setExpression(name, expression)
 
 
 # A tension (1/mm^2) the designer types is an App::PropertyPrecision: FreeCAD's property
@@ -96,26 +106,19 @@ _ANY = (-sys.float_info.max, sys.float_info.max, 1e-4)     # bounds, arrows' ste
 
 def add_per_area(obj, name, group, tip, value=0.0):
     """A tension property (PER_AREA). Documents of version 3 stored it as
-    App::PropertyFloat: that property is replaced, its value and expression kept, the
-    object untouched (as on every restore, its bounds set again)."""
+    App::PropertyFloat: that property is replaced, its value and expression kept (as on
+    every restore, its bounds set again)."""
     expression = None
-    touched = "Touched" in obj.State
-    if name in obj.PropertiesList:
-        value = float(getattr(obj, name))
-        if obj.getTypeIdOfProperty(name) != PER_AREA:
-            expression = dict(obj.ExpressionEngine).get(name)
-            if expression:
-                obj.setExpression(name, None)
-            obj.removeProperty(name)
-            obj.addProperty(PER_AREA, name, group, tip)
-    else:
+    if name not in obj.PropertiesList:
         obj.addProperty(PER_AREA, name, group, tip)
-        touched = True
+    elif obj.getTypeIdOfProperty(name) != PER_AREA:
+        value, expression = _take_out(obj, name)
+        obj.addProperty(PER_AREA, name, group, tip)
+    else:
+        value = float(getattr(obj, name))
     setattr(obj, name, (value,) + _ANY)
     if expression:
         obj.setExpression(name, expression)
-    if not touched:
-        obj.purgeTouched()
 
 
 # What a feature reads is linked with global scope (App::PropertyLinkSubGlobal, ...), as
@@ -217,11 +220,11 @@ def check_number(name, value, lo=None, hi=None, unit="", lo_open=False, why=""):
 
 
 def check_bound_per_area(obj, name):
-    """InputProblem where property ``name`` (a tension, a PropertyFloat in 1/mm^2) is bound
-    to an expression whose unit is not 1/length^2: FreeCAD gives a float property the
+    """InputProblem where property ``name`` (a tension, a PER_AREA in 1/mm^2) is bound
+    to an expression whose unit is not 1/length^2: FreeCAD gives a precision property the
     value and drops the unit (a cell's '=5 mm' read as 5 1/mm^2, QA19gui F9); a plain
     number is taken in 1/mm^2."""
-    expr = dict(getattr(obj, "ExpressionEngine", [])).get(name)
+    expr = bound_expression(obj, name)
     if not expr:
         return
     try:

@@ -322,7 +322,7 @@ class BlendPanel(Panel):
         super().update()
         o = self.obj
         if self.picked and not o.Status.startswith("error") and o.Solution != self.picked \
-                and self.picked <= len(o.Lengths) and not B.BlendProxy.solution_bound(o):
+                and self.picked <= len(o.Lengths) and not self.expression("Solution"):
             o.Solution = self.picked            # the user's pick survives the edit
             super().update()
 
@@ -330,7 +330,7 @@ class BlendPanel(Panel):
         return [link[0] for link in (self.obj.Edge1, self.obj.Edge2) if link]
 
     def pick(self, row):
-        if B.BlendProxy.solution_bound(self.obj):      # its expression picks (F6)
+        if self.expression("Solution"):      # its expression picks (F6)
             self.refresh()
             return
         if row >= 0 and row + 1 != self.obj.Solution:      # Solution counts from 1
