@@ -28,7 +28,24 @@ __all__ = ["affine_coords", "affine_length", "affine_curvature", "osculating_con
            "OsculatingConics", "chaikin", "lane_riesenfeld", "affine_elements",
            "uniform_bspline", "quadratic_bspline", "parabolic_lengths", "AffinePolyline",
            "affine_polyline", "affine_curvature_exact", "elastica_affine_curvature",
-           "elastica_inflections", "g2_bspline", "quadratic_joint_curvatures"]
+           "elastica_inflections", "g2_bspline", "quadratic_joint_curvatures", "EdgeCountError"]
+
+
+class EdgeCountError(DomainError):
+    """The DomainError of :func:`affine_polyline` (and :func:`g2_quadratic`) for an elastica
+    with too few edges for its turning. cause: what is wrong, without the function's name;
+    edges: the fewest count above n that works (g2_quadratic: :func:`covering_edges`), or
+    None (none found, or affine_polyline, which does not search)."""
+
+    def __init__(self, status: int, message: str, cause: str, edges: Optional[int] = None):
+        super().__init__(status, message)
+        self.cause, self.edges = cause, edges
+
+
+def _turning(c) -> float:
+    """The total turning of an elastica's tangent, int |kappa| ds (sampled densely)."""
+    s = np.linspace(0.0, c.length, 4001)
+    return float(np.sum(np.abs(np.diff(np.unwrap(c.angle(s))))))
 
 _KINDS = {"outer": 0, "inner": 1, "middle": 2}
 
@@ -373,7 +390,8 @@ def affine_polyline(curve_or_points, n: int, samples_per_vertex: int = 20,
     exact_tangents=True (default) its exact tangents, or for points the given `tangents`
     (N+1, 2): its deviation is then O(h^4) instead of O(h^3), which the k_i A^(-2/3) of
     fine polylines need (their error grows like h^3/H^4 otherwise). Raises ValueError /
-    DomainError (inflection with split_inflections=False, n too small) on bad input."""
+    DomainError (inflection with split_inflections=False, a straight elastica; n too small
+    for an elastica: :class:`EdgeCountError`) on bad input."""
     n = as_size(n, "affine_polyline: n", 3)
     if isinstance(curve_or_points, DiscreteElastica):   # (a polygon, though it has a length)
         raise ValueError("affine_polyline: a DiscreteElastica is a polygon, not a curve to "
@@ -390,8 +408,13 @@ def affine_polyline(curve_or_points, n: int, samples_per_vertex: int = 20,
         if not c.length > 0:
             raise ValueError("the elastica has zero length")
         infl_s = elastica_inflections(c)
-        if len(infl_s) and not split_inflections:
-            raise DomainError(lib.EL_EDOM, "affine_polyline: the elastica has an inflection")
+        infl = len(infl_s)     # the C status's causes named (seed 002 (1), §4.4)
+        if infl and not split_inflections:
+            raise DomainError(lib.EL_EDOM, f"affine_polyline: the elastica has {infl} "
+                              f"inflection{'s' * (infl > 1)} and split_inflections=False")
+        if not np.any(c.curvature(np.linspace(0.0, c.length, 101))):
+            raise DomainError(lib.EL_EDOM, "affine_polyline: the elastica is straight (no "
+                              "affine arc length: seed 002 (1))")
         bounds = np.concatenate([[0.0], infl_s, [c.length]])
         total = max(samples_per_vertex * n, 4 * (len(bounds) - 1))
         lens = np.diff(bounds)
@@ -410,8 +433,15 @@ def affine_polyline(curve_or_points, n: int, samples_per_vertex: int = 20,
         if exact_tangents:
             theta = c.angle(s_samp)
             tangents = np.ascontiguousarray(np.c_[np.cos(theta), np.sin(theta)])
-        pts, t, ps, A, psi, ip, S = _run(samples, tangents, idx, n, split_inflections, skip,
-                                         max_iter, skip_frac, fit_ends, optimise)
+        try:
+            pts, t, ps, A, psi, ip, S = _run(samples, tangents, idx, n, split_inflections, skip,
+                                             max_iter, skip_frac, fit_ends, optimise)
+        except DomainError as exc:      # the one cause left
+            pieces = f"{infl + 1} inflection-free pieces, " if infl else ""
+            cause = (f"{n} edges are too few for the elastica's turning ({pieces}"
+                     f"{_turning(c):.3g} rad of tangent turning: about 3 edges per piece and "
+                     "per turn at least)")
+            raise EdgeCountError(exc.status, f"affine_polyline: {cause}", cause) from None
         j = np.clip(np.floor(t).astype(int), 0, len(s_samp) - 2)
         s = s_samp[j] + (t - j) * (s_samp[j + 1] - s_samp[j])
         for _ in range(3):   # project the vertices onto the elastica (Newton on the foot

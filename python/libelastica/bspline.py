@@ -88,7 +88,7 @@ class BSpline(PortablePickle):
     def _c(self):
         """An el_bspline pointing into this object's arrays (valid while self lives)."""
         b = ffi.new("el_bspline *")
-        self._cmults = ffi.new("int[]", np.asarray(self.mults).tolist())
+        self._cmults = ffi.new("int[]", self.mults.tolist())
         b.degree = self.degree
         b.dim = self.poles.shape[1]
         b.npoles = self.poles.shape[0]

@@ -59,11 +59,11 @@ def cmd_g2quad(args) -> int:
     except el.CoverageError as exc:     # an error, nothing written (as FreeCAD's feature)
         raise InputError(_coverage_message(exc, n, args.edges is None,
                                            exc.result.fit is not None or curve_source)) from None
-    except el.DomainError as exc:       # too few edges for an elastica: the count that works
-        if getattr(exc, "edges", None) is None:
+    except el.EdgeCountError as exc:    # too few edges for an elastica: the count that works
+        if exc.edges is None:
             raise
-        raise InputError(str(exc).replace(f"n = {exc.edges} works", f"--edges {exc.edges} "
-                                          "works")) from None
+        raise InputError(f"g2_quadratic: {exc.cause}; --edges {exc.edges} works, the fewest "
+                         f"above {n}") from None
     for w in caught:
         if issubclass(w.category, el.EndTangentWarning):      # 'g2_quadratic (n edges): ...'
             print(f"{PROG} g2quad: warning: {str(w.message).partition('): ')[2]}",

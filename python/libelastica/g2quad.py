@@ -15,8 +15,8 @@ import numpy as np
 
 from ._ffi import DomainError, as_points, as_size
 from ._values import ValueEquality
-from .affine import (AffinePolyline, affine_polyline, elastica_inflections, g2_bspline,
-                     quadratic_joint_curvatures)
+from .affine import (AffinePolyline, EdgeCountError, affine_polyline, elastica_inflections,
+                     g2_bspline, quadratic_joint_curvatures)
 
 __all__ = ["G2Quadratic", "CoverageError", "CoverageWarning", "EndTangentWarning", "covering_edges",
            "g2_quadratic"]
@@ -148,37 +148,16 @@ def _noisy_points_error(exc: DomainError, points: np.ndarray) -> DomainError:
                        "g2quad fit.json`)")
 
 
-def _elastica_domain_error(exc: DomainError, c, n: int, build, options) -> DomainError:
-    """g2_quadratic's DomainError for an elastica: which of the C status's causes it is (an
-    inflection with split_inflections off, a straight line, else too few edges) and, for
-    too few, the fewest count that works (:func:`covering_edges`; ``edges``: it or None)."""
-    infl = len(elastica_inflections(c))
-    if infl and not options.get("split_inflections", True):
-        why = (f"g2_quadratic: the elastica has {infl} inflection{'s' * (infl > 1)} and "
-               "split_inflections=False")
-        more = None
-    elif not np.any(c.curvature(np.linspace(0.0, c.length, 101))):
-        why = "g2_quadratic: the elastica is straight (no affine arc length: seed 002 (1))"
-        more = None
-    else:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", CoverageWarning)
-            warnings.simplefilter("ignore", EndTangentWarning)
-            more = covering_edges(build, n, errors=(ValueError, ArithmeticError))
-        pieces = f"{infl + 1} inflection-free pieces, " if infl else ""
-        why = (f"g2_quadratic: {n} edges are too few for the elastica's turning ({pieces}"
-               f"{_turning(c):.3g} rad of tangent turning: about 3 edges per piece and per turn at least); " +
-               (f"n = {more} works, the fewest above {n}" if more else
-                f"no count up to {cover_search_limit(n)} works"))
-    err = DomainError(exc.status, why)
-    err.edges = more
-    return err
-
-
-def _turning(c) -> float:
-    """The total turning of an elastica's tangent, int |kappa| ds (sampled densely)."""
-    s = np.linspace(0.0, c.length, 4001)
-    return float(np.sum(np.abs(np.diff(np.unwrap(c.angle(s))))))
+def _edge_count_error(exc: EdgeCountError, n: int, build) -> EdgeCountError:
+    """affine_polyline's EdgeCountError in g2_quadratic's name, with the fewest count
+    that works (:func:`covering_edges` of ``build``) or None."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", CoverageWarning)
+        warnings.simplefilter("ignore", EndTangentWarning)
+        more = covering_edges(build, n)
+    return EdgeCountError(exc.status, f"g2_quadratic: {exc.cause}; " + (
+        f"n = {more} works, the fewest above {n}" if more else
+        f"no count up to {cover_search_limit(n)} works"), exc.cause, more)
 
 
 class CoverageWarning(RuntimeWarning):
@@ -460,7 +439,8 @@ def _joins(splines) -> Tuple[float, float]:
 
 
 def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents=None,
-                 fit: bool = False, partial: bool = False, **options) -> G2Quadratic:
+                 fit: bool = False, partial: bool = False, *, _plain: bool = False,
+                 **options) -> G2Quadratic:
     """Seed 002 end to end: approximate ``curve_or_points``, a SmoothElastica (sampled with
     ``samples_per_vertex`` x n arcs, default 20) or a sampled curve (N+1, 2),
     by an affine arc-length polyline with n edges (:func:`affine_polyline`, each
@@ -474,8 +454,10 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
     300 mm S rounded to 1e-4 mm fail): ``fit=True`` fits one smooth elastica to them
     (:func:`fit`, point-to-curve distance) and builds from that curve (``fit`` of the
     result: the points' distances to it; ``deviation``: the splines' from it).
-    Raises ValueError / DomainError (straight source, n too small, noisy points: the
-    message counts the sign changes of their discrete curvature, ...), and
+    Raises ValueError / DomainError (straight source, noisy points: the message counts
+    the sign changes of their discrete curvature, ...; n too small for an elastica:
+    :class:`EdgeCountError`, with the fewest count that works; ``_plain``, private: as
+    affine_polyline raised it, for the search's builds), and
     :class:`CoverageError` when the splines would leave part of the source out (an end
     piece beyond an inflection too short for 3 edges), naming how much and the fewest
     edges that cover it (:func:`covering_edges`); ``partial=True`` returns that result
@@ -514,11 +496,14 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
     try:
         ap = affine_polyline(curve_or_points, n, samples_per_vertex=samples_per_vertex,
                              tangents=None if is_curve else tangents, **options)
-    except DomainError as exc:
+    except EdgeCountError as exc:   # (covering_edges' builds, _plain: as it is)
+        if _plain:
+            raise
+        raise _edge_count_error(exc, n, lambda m: g2_quadratic(
+            curve_or_points, m, samples_per_vertex, partial=True, _plain=True, **options)) from None
+    except DomainError as exc:      # an elastica's other causes: affine_polyline's words
         if is_curve:
-            raise _elastica_domain_error(exc, curve_or_points, n, lambda m: g2_quadratic(
-                curve_or_points, m, samples_per_vertex, partial=True, **options),
-                options) from None
+            raise
         raise _noisy_points_error(exc, as_points(curve_or_points, "points")) from None
     npieces = len(ap.A)
     if is_curve:
@@ -645,7 +630,8 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
             warnings.simplefilter("ignore", CoverageWarning)
             warnings.simplefilter("ignore", EndTangentWarning)
             more = covering_edges(lambda m: g2_quadratic(
-                curve_or_points, m, samples_per_vertex, tangents, partial=True, **options), n)
+                curve_or_points, m, samples_per_vertex, tangents, partial=True, _plain=True,
+                **options), n)
         top = cover_search_limit(n)
         raise CoverageError(f"{what}: " + (f"n = {more} covers it" if more else
                                            f"none of n = {n + 1} to {top} covers it (try more)")

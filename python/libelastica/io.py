@@ -90,7 +90,7 @@ def _parse_text(text: str, name: str, thousands: Optional[str] = None) -> np.nda
     if _thousands(split, "\t" if delim is None and "\t" in sample else delim, thousands, name):
         split = [(ln, [f.replace(".", "").replace(",", ".") if _GROUPED.fullmatch(f) else f
                        for f in fields]) for ln, fields in split]
-    skipped = None      # the first line skipped as a title or header
+    skipped = None      # the number of the first line skipped as a title or header
     for lineno, fields in split:
         # a field holding a comma is a decimal comma whatever the separator: a comma
         # separator splits unquoted ones, and the others have no comma between columns
@@ -98,14 +98,15 @@ def _parse_text(text: str, name: str, thousands: Optional[str] = None) -> np.nda
         if not rows and not any(_is_number(f) for f in fields) and \
                 not all(_is_number(w) for f in fields for w in f.split()):   # '1.5 2.5' at ','
             header = fields            # a title or header line: the last one names columns
-            skipped = skipped or (lineno, fields)
+            skipped = skipped or lineno
             continue
         rows.append((lineno, fields))
     if not rows:
-        shown = (delim or " ").join(skipped[1]) if skipped else ""
-        why = (f" (line {skipped[0]}, {shown[:40] + '...' * (len(shown) > 40)!r}, and every "
-               "line after it skipped as a title or header: no field read as a number)"
-               ) if skipped else ""
+        why = ""
+        if skipped:
+            shown = lines[skipped - 1].strip()
+            why = (f" (line {skipped}, {shown[:40] + '...' * (len(shown) > 40)!r}, and every "
+                   "line after it skipped as a title or header: no field read as a number)")
         raise InputError(f"{name}: no data rows{why}")
     # unquoted decimal commas between commas split each number in two (102,697,4,576)
     whole = delim == "," and all(_INTEGER.fullmatch(f) for _, r in rows for f in r)
@@ -152,26 +153,26 @@ def _thousands(split, delim, thousands: Optional[str], name: str) -> bool:
     """Whether '.' groups thousands in the fields of ``split`` ((line, fields) rows).
     ``thousands``: '.' yes, '' no, None: what the file shows, in ';' and tab separated
     files (the decimal-comma locales' separators) holding a field of the grouped form
-    (_GROUPED): no when some field is a number the grouping cannot write (0.125, 1.5,
-    -0.250, 1234.5, 1e3, an integer 1000 or more without a dot); yes when some field
-    has a decimal comma, two dots (1.234.567), or a column holds both plain integers and
-    1.250's (980 above 1.000: Excel's #.##0). Else the file does not decide: InputError
-    naming the first such field's line."""
+    (_GROUPED): no when some field is a number the grouping cannot write with a decimal
+    point (0.125, 1.5, -0.250, 1234.5, 1e3); else yes when some field has a decimal comma
+    or two dots (1.234.567: only grouping writes them, whatever an id column beside holds);
+    else no when some field is an integer 1000 or more without a dot; yes when a column
+    holds both plain integers and 1.250's (980 above 1.000: Excel's #.##0). Else the file
+    does not decide: InputError naming the first such field's line."""
     if thousands is not None:
         if thousands not in (".", ""):
             raise InputError(f"thousands: '.' or '' (none), got {thousands!r}")
         return thousands == "."
     if delim not in (";", "\t"):
         return False
-    grouped = [(ln, f) for ln, r in split for f in r if _GROUPED.fullmatch(f)]
-    if not grouped:
+    first = next(((ln, f) for ln, r in split for f in r if _GROUPED.fullmatch(f)), None)
+    if first is None:
         return False
-    plain_cols, dotted_cols, shows = set(), set(), False
+    plain_cols, dotted_cols, shows, big = set(), set(), False, False
     for _, r in split:
         for c, f in enumerate(r):
             if _INTEGER.fullmatch(f):
-                if abs(int(f)) >= 1000:
-                    return False                    # #.##0 would write 1.000
+                big = big or abs(int(f)) >= 1000    # #.##0 would write 1.000
                 plain_cols.add(c)
             elif _GROUPED_OR_POINT.fullmatch(f):
                 dotted_cols.add(c)
@@ -179,9 +180,13 @@ def _thousands(split, delim, thousands: Optional[str], name: str) -> bool:
                 shows = True                        # 1.234.567, 1.250,0, 1,5
             elif _is_number(f):
                 return False                        # a decimal point: 0.125, 1.5, 1e3
-    if shows or plain_cols & dotted_cols:
+    if shows:
         return True
-    ln, f = grouped[0]
+    if big:
+        return False
+    if plain_cols & dotted_cols:
+        return True
+    ln, f = first
     raise InputError(
         f"{name}: line {ln}: {f!r} is {float(f)!r} or {int(f.replace('.', ''))}: the file "
         "does not show whether '.' is a decimal point or groups thousands; say which "

@@ -336,3 +336,54 @@ def test_too_few_edges_for_an_elastica_names_the_count(tmp_path, capsys):
     write_json(curve_to_dict(c), tmp_path / "c.json")
     assert main(["g2quad", str(tmp_path / "c.json"), "--edges", "24"]) == 2
     assert f"--edges {m} works" in capsys.readouterr().err
+    assert isinstance(info.value, el.EdgeCountError) and info.value.cause in msg
+
+
+def test_affine_polyline_names_an_elastica_s_causes():
+    """Review of 7882e4c..51525a7: g2_quadratic re-derived which of the C status's causes
+    affine_polyline met; affine_polyline names them for an elastica now (an inflection
+    with split_inflections off, a straight one, else too few edges: EdgeCountError), and
+    g2_quadratic adds the count that works to the same cause."""
+    c = el.SmoothElastica(x0=0, y0=0, phi=0.2, mu=0.05, k=0.8, q=0, length=110)
+    with pytest.raises(el.EdgeCountError) as info:
+        el.affine_polyline(c, 24)
+    cause = info.value.cause
+    assert str(info.value) == f"affine_polyline: {cause}" and info.value.edges is None
+    assert cause.startswith("24 edges are too few") and "7 inflection-free pieces" in cause
+    with pytest.raises(el.EdgeCountError) as info:
+        el.g2_quadratic(c, 24)
+    assert info.value.cause == cause and info.value.edges == 26
+    assert str(info.value) == f"g2_quadratic: {cause}; n = 26 works, the fewest above 24"
+    s = el.SmoothElastica(0, 0, 0, 1, 0.7, 0.3, 6.0)
+    for call in (el.affine_polyline, el.g2_quadratic):
+        with pytest.raises(el.DomainError, match="the elastica has 2 inflections and "
+                                                 "split_inflections=False$"):
+            call(s, 30, split_inflections=False)
+        with pytest.raises(el.DomainError, match=r"the elastica is straight \(no affine"):
+            call(el.SmoothElastica(0, 0, 0.3, 1.0, 0.0, 0.0, 3.0), 10)
+
+
+def test_too_few_edges_search_builds_each_count_once(monkeypatch):
+    """Review of 7882e4c..51525a7: the search for a working count rebuilt through the error
+    path at every level, 2^(26 - n) builds (n = 16: 9.3 s, n = 12: 110 s). Now one
+    affine_polyline per count tried: n = 12 and 13..26 (a cap stops main's recursion)."""
+    from libelastica import g2quad
+
+    class Runaway(RuntimeError):
+        pass
+
+    calls = []
+    real = g2quad.affine_polyline
+
+    def counted(*args, **kwargs):
+        calls.append(args[1])
+        if len(calls) > 100:
+            raise Runaway(len(calls))
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(g2quad, "affine_polyline", counted)
+    c = el.SmoothElastica(x0=0, y0=0, phi=0.2, mu=0.05, k=0.8, q=0, length=110)
+    with pytest.raises(el.DomainError, match="12 edges are too few") as info:
+        el.g2_quadratic(c, 12)
+    assert info.value.edges == 26
+    assert sorted(calls) == list(range(12, 27))

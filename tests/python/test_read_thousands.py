@@ -47,6 +47,18 @@ def test_decimal_points_read_as_before(tmp_path, text, want):
     assert np.array_equal(_read(tmp_path, text), np.array(want, dtype=float))
 
 
+@pytest.mark.parametrize("text", [
+    "id;x;y\n999;1.250,5;2.000,0\n1000;1.260,5;2.010,0\n1001;1.270,5;2.020,0\n",
+    "x;y;n\n1.250,5;2.000,0;5\n1.260,5;2.010,0;1500\n1.270,5;2.020,0;7\n",
+])
+def test_grouped_beside_an_integer_of_1000_or_more(tmp_path, text):
+    """Review of 7882e4c..51525a7: an integer >= 1000 in any column (an id, a count) made
+    the file 'not grouped' before a field only grouping writes (1.250,5) was looked at:
+    refused 'not a number: '1.250,5''. Such a field now decides first."""
+    want = [[1250.5, 2000.0], [1260.5, 2010.0], [1270.5, 2020.0]]
+    assert np.array_equal(_read(tmp_path, text), np.array(want))
+
+
 def test_undecided_file_refused_naming_the_line(tmp_path, capsys):
     """QA19 c5: every value >= 1000 written 1.000 was read / 1000, silently."""
     text = "x;y\n1.000;2.001\n1.005;2.004\n1.010;2.011\n1.020;2.030\n"
@@ -67,3 +79,6 @@ def test_no_data_rows_names_the_first_skipped_line(tmp_path):
     with pytest.raises(InputError, match=r"no data rows \(line 2, 'x;y', and every line after "
                                          r"it skipped as a title or header"):
         _read(tmp_path, "# comment\nx;y\n1.2.3;4.5.6\n")
+    # the file's own line, as written (main: the fields joined again, 'x;y')
+    with pytest.raises(InputError, match=r"no data rows \(line 1, '\"x\" ; \"y\"', and"):
+        _read(tmp_path, '"x" ; "y"\n1.2.3;4.5.6\n')
