@@ -37,32 +37,43 @@ def column_labels(a) -> Optional[List]:
         return None
 
 
+def axis_columns(labels) -> Optional[List[int]]:
+    """The positions of the x, y (and z) columns among ``labels``, in that order; None
+    when they name no x or no y, or one of x, y, z twice (the command line's header rule
+    too: io.py)."""
+    axes = [axis_of(label) for label in labels]
+    if "x" not in axes or "y" not in axes or any(axes.count(c) > 1 for c in "xyz"):
+        return None
+    return [axes.index(c) for c in "xyz" if c in axes]
+
+
 def table_points(a, name: str = "points", dim: Optional[int] = 2):
     """``a`` itself unless it is a table with named columns; then its x, y columns, and z
     where ``dim`` is 3 (required) or None (when present), as one (n, 2 or 3) array. A table
     whose names hold no x and y, or name one twice, or (``dim`` 2) hold a z, raises
     ValueError naming its columns and what is expected."""
     labels = column_labels(a)
-    if labels is None or dim not in (2, 3, None) or all(
+    if labels is None or all(
             isinstance(v, (int, np.integer)) and not isinstance(v, (bool, np.bool_))
             for v in labels):
         return a
-    axes = {}
-    for label in labels:
-        axis = axis_of(label)
-        if axis in axes:
-            raise ValueError(f"{name}: the table's columns {labels!r} name {axis} twice "
-                             f"({axes[axis]!r}, {label!r}); keep one")
-        if axis:
-            axes[axis] = label
-    want = "x, y, z" if dim == 3 else "x, y" if dim == 2 else "x, y (and z)"
-    if "x" not in axes or "y" not in axes or (dim == 3 and "z" not in axes):
+    cols = axis_columns(labels)
+    if cols is None:
+        axes = {}
+        for label in labels:
+            axis = axis_of(label)
+            if axis in axes:
+                raise ValueError(f"{name}: the table's columns {labels!r} name {axis} twice "
+                                 f"({axes[axis]!r}, {label!r}); keep one")
+            if axis:
+                axes[axis] = label
+    if cols is None or (dim == 3 and len(cols) < 3):
+        want = "x, y, z" if dim == 3 else "x, y" if dim == 2 else "x, y (and z)"
         raise ValueError(f"{name}: a table's coordinates are read by name, {want} (any case, "
                          f"a unit allowed: 'x [mm]'); its columns are {labels!r}: rename "
                          "them, or pass an array of the coordinates in that order")
-    if dim == 2 and "z" in axes:
+    if dim == 2 and len(cols) == 3:
         raise ValueError(f"{name}: the table's columns {labels!r} hold 3D points (x, y, z); "
                          "this takes x, y: select those two columns, or fit 3D points in "
                          "their plane (el.plane_fit)")
-    picked = [axes[c] for c in "xyz" if c in axes and (c != "z" or dim != 2)]
-    return np.column_stack([np.asarray(a[label]) for label in picked])
+    return np.column_stack([np.asarray(a[labels[i]]) for i in cols])

@@ -215,7 +215,7 @@ def as_points(a, name: str = "points", dim: Optional[int] = 2, min_rows: int = 0
     if arr.ndim != 2 or (dim is not None and arr.shape[1] != dim) or arr.shape[1] < 1:
         want = f"(n, {dim})" if dim is not None else "(n, dim)"
         raise ValueError(f"{name} must have shape {want}, got {arr.shape}"
-                         f"{transpose_hint(arr.shape, (dim,)) if dim in (2, 3) else ''}")
+                         f"{transpose_hint(arr.shape, (dim,))}")
     if len(arr) < min_rows:
         raise invalid(f"{name}: need at least {min_rows} points, got {len(arr)}")
     # (the C library's EL_EINVAL, with the row named) .all(), not np.all: its Python

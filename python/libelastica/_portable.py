@@ -70,20 +70,26 @@ class _Tuple(_Array):
     __slots__ = ()
 
     def __reduce__(self):
-        return type(self.a), tuple(portable(x) for x in self.a)
+        return PortableTuple.reduce(self.a)
 
 
-def _restore(cls, state, items=None):
-    """An instance of ``cls`` with ``state`` (and a list's ``items``), as pickle's default
-    does: no __init__, __setstate__ when the class has one, else its __dict__ updated."""
-    obj = cls.__new__(cls)
-    if items:
-        obj.extend(items)
+def _set_state(obj, state):
+    """``state`` into ``obj`` as pickle's default does: __setstate__ when the class has
+    one, else its __dict__ updated; nothing for None."""
     if state is not None:
         if hasattr(obj, "__setstate__"):
             obj.__setstate__(state)
         else:
             obj.__dict__.update(state)
+
+
+def _restore(cls, state, items=None):
+    """An instance of ``cls`` with ``state`` (and a list's ``items``), as pickle's default
+    does: no __init__."""
+    obj = cls.__new__(cls)
+    if items:
+        obj.extend(items)
+    _set_state(obj, state)
     return obj
 
 
@@ -108,7 +114,8 @@ class PortablePickle:
     """Mixin: pickle by the instance's state (``__getstate__``'s, else its attributes; a
     list's items too) with numpy arrays and scalars in plain form (:func:`portable`), so
     the pickle loads under numpy 1.x and 2.x alike. A class that defines its own
-    ``__reduce__`` (by parameters: blend.py's bases) keeps it, for copies too."""
+    ``__reduce__`` (by parameters: blend.py's bases) keeps it, and copies by it where it
+    sets ``__copy__ = __deepcopy__ = None`` (copy's default then)."""
 
     __slots__ = ()
 
@@ -121,28 +128,14 @@ class PortablePickle:
         items = portable(list(self)) if isinstance(self, list) else None
         return _restore, (type(self), portable(self._pickled_state()), items)
 
-    def _own_reduce(self):
-        return type(self).__reduce__ is not PortablePickle.__reduce__
-
     def __copy__(self):
-        if self._own_reduce():
-            f, args = self.__reduce__()[:2]
-            return f(*args)
         return _restore(type(self), copy.copy(self._pickled_state()),
                         list(self) if isinstance(self, list) else None)
 
     def __deepcopy__(self, memo):
-        if self._own_reduce():
-            f, args = self.__reduce__()[:2]
-            return f(*copy.deepcopy(args, memo))
         new = _restore(type(self), None)
         memo[id(self)] = new
         if isinstance(self, list):
             new.extend(copy.deepcopy(list(self), memo))
-        state = copy.deepcopy(self._pickled_state(), memo)
-        if state is not None:
-            if hasattr(new, "__setstate__"):
-                new.__setstate__(state)
-            else:
-                new.__dict__.update(state)
+        _set_state(new, copy.deepcopy(self._pickled_state(), memo))
         return new

@@ -367,6 +367,15 @@ def _run(samples: np.ndarray, tangents: Optional[np.ndarray], infl: Sequence[int
     return pts, t, ps, A, psi, ip, S
 
 
+def _is_curve(c, name: str) -> bool:
+    """Whether ``c`` is a curve to sample (it has a curvature and a length) rather than
+    points; a DiscreteElastica, which has both, is refused naming ``name``: a polygon."""
+    if isinstance(c, DiscreteElastica):
+        raise ValueError(f"{name}: a DiscreteElastica is a polygon, not a curve to sample: "
+                         "pass its vertices, curve.points(), or a SmoothElastica")
+    return hasattr(c, "curvature") and hasattr(c, "length")
+
+
 def affine_polyline(curve_or_points, n: int, samples_per_vertex: int = 20,
                     split_inflections: bool = True, skip: int = 2, max_iter: int = 100,
                     inflections: Optional[Sequence[int]] = None, exact_tangents: bool = True,
@@ -393,9 +402,7 @@ def affine_polyline(curve_or_points, n: int, samples_per_vertex: int = 20,
     DomainError (inflection with split_inflections=False, a straight elastica; n too small
     for an elastica: :class:`EdgeCountError`) on bad input."""
     n = as_size(n, "affine_polyline: n", 3)
-    if isinstance(curve_or_points, DiscreteElastica):   # (a polygon, though it has a length)
-        raise ValueError("affine_polyline: a DiscreteElastica is a polygon, not a curve to "
-                         "sample: pass its vertices, curve.points(), or a SmoothElastica")
+    is_curve = _is_curve(curve_or_points, "affine_polyline")
     if n > lib.EL_AFFINE_MAX_EDGES:   # bounded work, and before sampling n points
         raise DomainError(lib.EL_EDOM, f"affine_polyline: n = {n} edges asked; at most "
                           f"{lib.EL_AFFINE_MAX_EDGES} (EL_AFFINE_MAX_EDGES) are built")
@@ -403,7 +410,7 @@ def affine_polyline(curve_or_points, n: int, samples_per_vertex: int = 20,
     if samples_per_vertex * n > 10 ** 8:
         raise ValueError(f"affine_polyline: {samples_per_vertex} samples per vertex for {n} "
                          "vertices are more than 1e8 samples")
-    if hasattr(curve_or_points, "curvature") and hasattr(curve_or_points, "length"):
+    if is_curve:
         c = curve_or_points
         if not c.length > 0:
             raise ValueError("the elastica has zero length")

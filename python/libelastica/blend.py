@@ -91,6 +91,7 @@ class _Blend(ValueEquality):
     parameters (those __reduce__ rebuilds it from)."""
 
     _b = None
+    __copy__ = __deepcopy__ = None   # copy by __reduce__ (the parameters), as pickle does
 
     def _values(self):
         return self.__reduce__()[1]

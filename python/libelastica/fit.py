@@ -279,7 +279,7 @@ def wander_summary(gap: int, points=None, unit: str = "", numbered: bool = True,
                          "the points to name them by their places")
     places = ""
     if points is not None:
-        p = as_real_array(points, "wander_summary: points")
+        p = as_point_array(points, "wander_summary: points")
         if p.ndim != 2 or gap + 1 >= len(p):
             raise ValueError("wander_summary: points (n, 2 or 3) with n > gap + 1 are needed")
         places = " and ".join(_places(p, (gap, gap + 1), lengths(unit, length)))

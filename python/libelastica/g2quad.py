@@ -15,8 +15,8 @@ import numpy as np
 
 from ._ffi import DomainError, as_points, as_size
 from ._values import ValueEquality
-from .affine import (AffinePolyline, EdgeCountError, affine_polyline, elastica_inflections,
-                     g2_bspline, quadratic_joint_curvatures)
+from .affine import (AffinePolyline, EdgeCountError, _is_curve, affine_polyline,
+                     elastica_inflections, g2_bspline, quadratic_joint_curvatures)
 
 __all__ = ["G2Quadratic", "CoverageError", "CoverageWarning", "EndTangentWarning", "covering_edges",
            "g2_quadratic"]
@@ -477,7 +477,7 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
     joint, unless that spline strays farther from the source (then the curvature alone, a
     k = 1.5 loop at 12 edges); the curvature then departs up to ~10 % from an arc's just
     inside the ends (7.4 % with the curvature alone)."""
-    is_curve = hasattr(curve_or_points, "curvature") and hasattr(curve_or_points, "length")
+    is_curve = _is_curve(curve_or_points, "g2_quadratic")
     n = as_size(n, "g2_quadratic: n (the polyline's edges)", 3)   # the user's call named
     if fit:
         if is_curve or tangents is not None:

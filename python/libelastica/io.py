@@ -18,7 +18,7 @@ from typing import Any, Dict, Optional, Union
 
 import numpy as np
 
-from ._columns import axis_of
+from ._columns import axis_columns
 
 __all__ = ["InputError", "read_input", "looks_like_json", "read_points", "curve_to_dict",
            "curve_from_dict", "bspline_to_dict", "bspline_from_dict", "write_json", "read_json",
@@ -129,9 +129,9 @@ def _parse_text(text: str, name: str, thousands: Optional[str] = None) -> np.nda
         raise InputError(f"{name}: line {lineno}: {len(f)} column{'s' * (len(f) != 1)} where "
                          f"{counts[width]} of {len(rows)} rows have {width} (an empty cell?)"
                          f"{hint}")
-    axes = [axis_of(h) for h in header or []]     # the binding's tables use the same names
-    named = len(axes) == width and "x" in axes and "y" in axes and all(axes.count(a) <= 1 for a in "xyz")
-    cols = [axes.index(a) for a in "xyz" if a in axes] if named else list(range(width))
+    # by the header's names, as the binding's tables are; else by position
+    named = axis_columns(header) if header is not None and len(header) == width else None
+    cols = named if named is not None else list(range(width))
     out = np.empty((len(rows), len(cols)))
     for r, (lineno, fields) in enumerate(rows):
         bad = [fields[c] for c in cols if not _is_number(fields[c])]
@@ -143,7 +143,7 @@ def _parse_text(text: str, name: str, thousands: Optional[str] = None) -> np.nda
         if not np.all(np.isfinite(out[r])):
             raise InputError(f"{name}: line {lineno}: not finite: "
                              f"{fields[cols[int(np.argmax(~np.isfinite(out[r])))]]!r}")
-    if not named and width > 3:
+    if named is None and width > 3:
         raise InputError(f"{name}: {width} columns: name the coordinates x, y (and z) "
                          f"in a header line to read them from more columns, or give 2 or 3{hint}")
     return out

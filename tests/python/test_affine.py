@@ -485,6 +485,20 @@ def test_g2_quadratic_of_rounded_points_fits_first(decimals):
         el.g2_quadratic(QA_S, 30, fit=True)
 
 
+def test_a_discrete_elastica_is_refused_as_a_polygon():
+    """A DiscreteElastica (the default fit's curve) has a curvature and a length but is a
+    polygon: affine_polyline and g2_quadratic, fit=True too (which said "fit=True fits point
+    data", though it was given no curve to build from), refuse it naming the call."""
+    d = el.DiscreteElastica(x0=0, y0=0, h=0.1, phi=0.2, z=0.1, q=0.0, k=0.8, n=50)
+    calls = {"affine_polyline": lambda: el.affine_polyline(d, 12),
+             "g2_quadratic": lambda: el.g2_quadratic(d, 12),
+             "g2_quadratic fit=True": lambda: el.g2_quadratic(d, 12, fit=True)}
+    for what, call in calls.items():
+        with pytest.raises(ValueError, match=rf"^{what.split()[0]}: a DiscreteElastica is a "
+                           r"polygon.*curve\.points\(\)"):
+            call()
+
+
 def test_g2_quadratic_of_a_noisy_scan_fits_first():
     """QA's 250-point scan (0.2 mm noise) failed as the rounded samples did; fit=True builds
     the two pieces within the noise of the points: each point's distance to the splines is

@@ -31,18 +31,10 @@ class Table:
         return self._cols[name]
 
 
-def structured(**cols):
-    a = np.empty(len(next(iter(cols.values()))), dtype=[(n, type(c[0]) if not isinstance(
-        c[0], np.generic) else c.dtype) for n, c in cols.items()])
-    for n, c in cols.items():
-        a[n] = c
-    return a
-
-
 def tables(**cols):
     """The same columns as a duck table, a structured array and a record array."""
-    s = structured(**cols)
-    return {"duck": Table(**cols), "structured": s, "record": s.view(np.recarray)}
+    r = np.rec.fromarrays(list(cols.values()), names=list(cols))
+    return {"duck": Table(**cols), "structured": r.view(np.ndarray), "record": r}
 
 
 # every public function taking points, called on them (a table, or the (n, 2) array)
@@ -67,6 +59,7 @@ CALLS = {
     "interpolate_c2": lambda p: el.interpolate_c2(p).poles,
     "g2_quadratic": lambda p: el.g2_quadratic(p, 20),
     "affine_polyline": lambda p: el.affine_polyline(p, 6).points,
+    "wander_summary": lambda p: el.wander_summary(2, p),
 }
 
 

@@ -8,6 +8,7 @@ pickle is loaded by the other one, which writes it back for this one to compare.
 from __future__ import annotations
 
 import copy
+import functools
 import io
 import os
 import pickle
@@ -21,7 +22,9 @@ import pytest
 
 import libelastica as el
 from libelastica._portable import PortablePickle
-from pickle_objects import objects
+import pickle_objects
+
+objects = functools.lru_cache(maxsize=None)(pickle_objects.objects)   # (built once: ~0.5 s)
 
 HERE = Path(__file__).resolve().parent
 
