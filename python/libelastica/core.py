@@ -296,13 +296,11 @@ class DiscreteElastica(PortablePickle):
         """The discrete curvature (2/h) tan(K_i/2) at all n vertices (seed 000 (3.4)): the
         interior ones' as :meth:`curvature`, the ends' of the polygon continued one vertex
         past each by its own recursion (u_{-1} = q - z, u_n = z n + q)."""
-        ends = np.empty(2)
-        for j, q in enumerate((self.q - self.z, self.q + (self.n - 2) * self.z)):
-            p = self._c()   # the 3 vertices around vertex 0, vertex n - 1: their middle's
-            p.q = q
-            check(lib.el_discrete_curvature(p, 3, dptr(ends[j:])), "DiscreteElastica")
-        inner = self.curvature() if self.n >= 3 else np.empty(0)
-        return np.concatenate([ends[:1], inner, ends[1:]])
+        p = self._c()   # that polygon of n + 2 vertices: its interior n
+        p.q = self.q - self.z
+        out = np.empty(self.n)
+        check(lib.el_discrete_curvature(p, self.n + 2, dptr(out)), "DiscreteElastica")
+        return out
 
     def continued_to(self, point) -> np.ndarray:
         """The polygon continued past its last vertex by its own recursion (seed 000 (4.4),
