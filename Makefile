@@ -27,9 +27,9 @@ SONAME       := libelastica.so.$(SOVERSION)
 # Debian packages (Debian 12 / Ubuntu) the project needs; `make deps` installs the missing ones.
 APT_PKGS := build-essential pkg-config libgsl-dev coinor-libipopt-dev check \
             python3-cffi python3-numpy python3-pytest python3-scipy python3-mpmath \
-            python3-matplotlib python3-ezdxf python3-venv python3-pip freecad xvfb
+            python3-matplotlib python3-ezdxf python3-pandas python3-venv python3-pip freecad xvfb
 # Python packages for the python3 first on PATH (when it is not Debian's).
-PIP_PKGS := numpy cffi pytest scipy ezdxf matplotlib
+PIP_PKGS := numpy cffi pytest scipy ezdxf matplotlib pandas
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 # $(call apt-install,PACKAGES): install those of PACKAGES that are missing (targets that
@@ -59,7 +59,7 @@ $(BUILD)/.deps-ok: Makefile
 	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
 	fi
 	@if [ "$$(command -v $(PYTHON))" != "$(SYSPYTHON)" ] && \
-	   ! $(PYTHON) -c "import numpy, cffi, pytest, scipy, ezdxf, matplotlib" 2>/dev/null; then \
+	   ! $(PYTHON) -c "import numpy, cffi, pytest, scipy, ezdxf, matplotlib, pandas" 2>/dev/null; then \
 	  echo "make deps: pip install $(PIP_PKGS) into $$(command -v $(PYTHON))"; \
 	  $(PYTHON) -m pip install -q $(PIP_PKGS); \
 	fi

@@ -3,7 +3,7 @@ them by position, so a frame ['y', 'x'] was fitted mirrored, silently, and ['x',
 'intensity'] was refused as 3D points): x, y (and z), any case, a unit allowed, the names
 the command line reads in a header; a table naming none is refused naming its columns.
 Numpy structured / record arrays and any object with ``columns`` and ``table[name]`` (a
-duck, so this runs where pandas is missing); pandas itself where installed. And (QA19 P1)
+duck), and pandas' own DataFrames (make deps installs pandas for both Pythons). And (QA19 P1)
 coordinates given as rows, (2, n), are refused with the advice to stack them as columns.
 """
 from __future__ import annotations
@@ -140,7 +140,7 @@ def test_positional_columns_are_read_by_position():
 
 
 def test_pandas_frames():
-    pd = pytest.importorskip("pandas")
+    import pandas as pd
     want = el.fit(P, model="smooth")
     assert el.fit(pd.DataFrame({"y": Y, "x": X}), model="smooth").curve == want.curve
     assert el.fit(pd.DataFrame({"x": X, "y": Y, "intensity": 1.0}), model="smooth").curve \
