@@ -13,7 +13,7 @@ from typing import Optional, Tuple
 
 import numpy as np
 
-from ._ffi import DomainError, as_points, as_size
+from ._ffi import DomainError, as_points, as_size, lib
 from ._values import ValueEquality
 from .affine import (AffinePolyline, EdgeCountError, _is_curve, affine_polyline,
                      elastica_inflections, g2_bspline, quadratic_joint_curvatures)
@@ -158,6 +158,17 @@ def _edge_count_error(exc: EdgeCountError, n: int, build) -> EdgeCountError:
     return EdgeCountError(exc.status, f"g2_quadratic: {exc.cause}; " + (
         f"n = {more} works, the fewest above {n}" if more else
         f"no count up to {cover_search_limit(n)} works"), exc.cause, more)
+
+
+def _past_the_end(t: np.ndarray, nsamples: int, n: int) -> str:
+    """g2_quadratic's reason for points whose polyline did not land on their last sample:
+    its vertices ran on along f~'s last parabola continued (seed 002 §4.3), fit_ends'
+    adjusted A found no landing: too few edges for the turning."""
+    past = int(np.sum(t > nsamples - 1))
+    return (f"g2_quadratic: {n} edges are too few for the points' turning (about 3 per turn "
+            f"of the tangent at least): the affine polyline ran past their end, {past} of its "
+            f"vertices beyond their last sample (the last at {float(t[-1]):.1f} of "
+            f"{nsamples - 1}); pass more edges")
 
 
 class CoverageWarning(RuntimeWarning):
@@ -523,6 +534,8 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
         length = float(c.length)
     else:
         samples = as_points(curve_or_points, "points")
+        if round(float(ap.t[-1])) > len(samples) - 1:   # t: sample indices, f~(j) = p_j
+            raise DomainError(lib.EL_EDOM, _past_the_end(ap.t, len(samples), n))
         t_ends = np.concatenate([[ap.t[0]], ap.infl_param, [round(float(ap.t[-1]))]])
         idx = t_ends.astype(int)
         ends = samples[idx]

@@ -387,3 +387,22 @@ def test_too_few_edges_search_builds_each_count_once(monkeypatch):
         el.g2_quadratic(c, 12)
     assert info.value.edges == 26
     assert sorted(calls) == list(range(12, 27))
+
+
+
+def test_too_few_edges_for_sampled_points_is_a_domain_error():
+    """400 samples of an elastica turning 4.2 times at 8 edges: fit_ends found no A landing
+    the polyline on the last sample, its vertices ran on along f~'s last parabola to t =
+    546.5, and g2_quadratic indexed the samples with it (IndexError); now a DomainError
+    naming the count, with or without tangents, partial or not. 16 edges cover it."""
+    c = el.SmoothElastica(x0=0, y0=0, phi=0.1258, mu=1, k=2.425, q=0.9756, length=5.7357)
+    s = np.linspace(0, c.length, 400)
+    pts, th = c.points(s), c.angle(s)
+    tan = np.column_stack((np.cos(th), np.sin(th)))
+    for tangents in (tan, None):
+        for partial in (True, False):
+            with pytest.raises(el.DomainError, match="8 edges are too few .* ran past their end"):
+                el.g2_quadratic(pts, 8, partial=partial, tangents=tangents)
+    with warnings.catch_warnings():      # (its ends 38 deg off: 4 edges a turn)
+        warnings.simplefilter("ignore", el.EndTangentWarning)
+        assert el.g2_quadratic(pts, 16, tangents=tan).covers_source
