@@ -54,6 +54,15 @@ def sketched_s(seed: int = 0, n: int = 15, wobble: float = 0.5):
     return np.ascontiguousarray(pts), truth
 
 
+def dense_end_scan(curve, p: float, end: str, seed: int, n: int = 200, noise: float = 0.05):
+    """A scan dense at one end (QA18's draws): n points along ``curve`` at s = L u^p (end
+    "start"; "end": mirrored, dense at s = L), noise per coordinate."""
+    rng = np.random.default_rng(seed)
+    u = np.linspace(0, 1, n) ** p
+    s = curve.length * (u if end == "start" else 1 - u[::-1])
+    return curve.points(s) + noise * rng.standard_normal((n, 2))
+
+
 def sheer_scan(n: int = 1500, seed: int = 1):
     """A scanned sheer line (QA15's sheer1500.csv for n = 1500): a smooth elastica 30 m
     long in mm, points denser at the bow, none between 40 and 50 % of the length, 2 mm

@@ -11,16 +11,13 @@ import numpy as np
 import pytest
 
 import libelastica as el
-from fit_data import curve_distances
+from fit_data import curve_distances, dense_end_scan
 
 TRUTH = el.SmoothElastica(x0=0, y0=0, phi=0.1, mu=0.04, k=0.75, q=-0.9, length=30.0)
 
 
 def dense_scan(p, end, seed):
-    rng = np.random.default_rng(seed)
-    u = np.linspace(0, 1, 200) ** p
-    s = 30 * (u if end == "start" else 1 - u[::-1])
-    return TRUTH.points(s) + 0.05 * rng.standard_normal((200, 2))
+    return dense_end_scan(TRUTH, p, end, seed)
 
 
 # QA's draws that main fitted above the truth (its ratio): 1.35, 1.71, 1.09, 1.11 x
