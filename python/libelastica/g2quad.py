@@ -203,14 +203,17 @@ class CoverageError(ValueError):
         self.result, self.edges, self.tried = result, edges, tried
 
 
-# covering_edges tries counts up to this many times the given one (and MAX_EDGES)
+# covering_edges tries counts up to this many times the given one, at least up to
+# COVER_SEARCH_LEAST (a few edges given for a curve that turns several times: 6 for 26), and
+# not past MAX_EDGES
 COVER_SEARCH = 4
+COVER_SEARCH_LEAST = 64
 MAX_EDGES = 5000
 
 
 def cover_search_limit(n: int) -> int:
     """The largest edge count :func:`covering_edges` tries above ``n``."""
-    return min(COVER_SEARCH * int(n), MAX_EDGES)
+    return min(max(COVER_SEARCH * int(n), COVER_SEARCH_LEAST), MAX_EDGES)
 
 
 def covering_edges(build, n: int, errors=(ValueError, ArithmeticError)) -> Optional[int]:

@@ -339,6 +339,18 @@ def test_too_few_edges_for_an_elastica_names_the_count(tmp_path, capsys):
     assert isinstance(info.value, el.EdgeCountError) and info.value.cause in msg
 
 
+def test_a_few_edges_for_a_turning_elastica_still_name_the_count():
+    """QA19 (review): 6 edges for an elastica that needs 26 said "no count up to 24 works"
+    (the search stopped at 4 n): it searches at least up to 64 edges, so the count is named."""
+    c = el.SmoothElastica(x0=0, y0=0, phi=0.2, mu=0.05, k=0.8, q=0, length=110)
+    for n in (6, 12):
+        with pytest.raises(el.EdgeCountError) as info:
+            el.g2_quadratic(c, n)
+        m = info.value.edges
+        assert m is not None and f"n = {m} works" in str(info.value), str(info.value)
+        assert el.g2_quadratic(c, m).covers_source
+
+
 def test_affine_polyline_names_an_elastica_s_causes():
     """Review of 7882e4c..51525a7: g2_quadratic re-derived which of the C status's causes
     affine_polyline met; affine_polyline names them for an elastica now (an inflection
