@@ -1673,7 +1673,9 @@ typedef struct el_affine_result {
  * while opt->split_inflections = 0, or inside a piece the caller gave as
  * inflection-free; n too small for the pieces; a straight piece;
  * the construction left the curve: n too small for the curve, e.g. fewer than
- * about 3 vertices per turn of the tangent; n > EL_AFFINE_MAX_EDGES, refused
+ * about 3 vertices per turn of the tangent; with fit_ends, no A lands a piece's
+ * last vertex within half a sample of the piece end with none before it past
+ * the end; n > EL_AFFINE_MAX_EDGES, refused
  * at once; samples out of range (above), or a tangent whose largest component
  * is outside [1e-150, 1e150] and not 0); EL_ENOMEM; EL_EINTERNAL (GSL).
  * Cost: about (opt->max_iter + 25) (n + nsamples) steps (x 30 with fit_ends).

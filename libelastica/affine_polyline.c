@@ -341,6 +341,16 @@ static int piece_solve(piece *P, const el_affine_options *o, double *psi)
     return piece_optimise(P, t1, o, psi);
 }
 
+/* fit_ends' landing (§4.4): no vertex past the piece end Tb, the last within half a
+ * sample of it. Else the vertices ran on along the last parabola continued (§4.3), up
+ * to next_vertex's bound: too few edges for the turning. */
+static int piece_landed(const piece *P)
+{
+    for (size_t i = 1; i < P->m; i++)
+        if (P->t[i] > (double)P->Tb) return 0;
+    return !(P->t[P->m] > (double)P->Tb + 0.5);
+}
+
 /* ------------------------------------------------------------ §4: the driver */
 
 void el_affine_options_defaults(el_affine_options *opt)
@@ -547,6 +557,7 @@ int el_affine_polyline(size_t nsamples, const double *samples, const double *tan
             }
             P.A = A0 * exp(bestl);
             st = piece_solve(&P, &o, &psi);
+            if (!st && !piece_landed(&P)) st = EL_EDOM;   /* no A lands it: n too small */
             if (st) break;
         }
         for (size_t i = 1; i <= P.m; i++) {

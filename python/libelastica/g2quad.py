@@ -161,9 +161,9 @@ def _edge_count_error(exc: EdgeCountError, n: int, build) -> EdgeCountError:
 
 
 def _past_the_end(t: np.ndarray, nsamples: int, n: int) -> str:
-    """g2_quadratic's reason for points whose polyline did not land on their last sample:
-    its vertices ran on along f~'s last parabola continued (seed 002 §4.3), fit_ends'
-    adjusted A found no landing: too few edges for the turning."""
+    """g2_quadratic's reason for points whose polyline ran past their last sample: its
+    vertices ran on along f~'s last parabola continued (seed 002 §4.3): too few edges for
+    the turning (with fit_ends, C's EL_EDOM; ``t`` then of the paper's A)."""
     past = int(np.sum(t > nsamples - 1))
     return (f"g2_quadratic: {n} edges are too few for the points' turning (about 3 per turn "
             f"of the tangent at least): the affine polyline ran past their end, {past} of its "
@@ -518,7 +518,16 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
     except DomainError as exc:      # an elastica's other causes: affine_polyline's words
         if is_curve:
             raise
-        raise _noisy_points_error(exc, as_points(curve_or_points, "points")) from None
+        points = as_points(curve_or_points, "points")
+        if options["fit_ends"]:     # no landing on the last sample (C's EL_EDOM)? The
+            try:                    # paper's A then shows the polyline running past it
+                ap = affine_polyline(points, n, tangents=tangents,
+                                     **dict(options, fit_ends=False))
+            except DomainError:
+                ap = None
+            if ap is not None and round(float(ap.t[-1])) > len(points) - 1:
+                raise DomainError(exc.status, _past_the_end(ap.t, len(points), n)) from None
+        raise _noisy_points_error(exc, points) from None
     npieces = len(ap.A)
     if is_curve:
         c = curve_or_points

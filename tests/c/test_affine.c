@@ -454,6 +454,39 @@ START_TEST(test_polyline_ellipse)
 }
 END_TEST
 
+/* fit_ends on a circle turning 4.2 times, E samples with exact tangents: 6 edges (< 3 a
+ * turn) find no A landing the last vertex on the last sample, and the vertices ran on
+ * along the last parabola continued, to t = 202 of 159 (EL_OK): now EL_EDOM, res
+ * untouched. 13 edges land on it. */
+START_TEST(test_polyline_fit_ends_past_the_end)
+{
+    enum { E = 160 };
+    static double q[2 * E], tan[2 * E];
+    for (int j = 0; j < E; j++) {
+        double a = 2.0 * M_PI * 4.2 * j / (E - 1);
+        q[2 * j] = cos(a);
+        q[2 * j + 1] = sin(a);
+        tan[2 * j] = -sin(a);
+        tan[2 * j + 1] = cos(a);
+    }
+    el_affine_options o;
+    el_affine_options_defaults(&o);
+    o.fit_ends = 1;
+    el_affine_result r, r0;
+    memset(&r, 0xa5, sizeof r);
+    r0 = r;
+    for (int with_tan = 0; with_tan < 2; with_tan++) {
+        const double *T = with_tan ? tan : NULL;
+        ck_assert_int_eq(el_affine_polyline(E, q, T, 0, NULL, 6, &o, &r), EL_EDOM);
+        ck_assert(memcmp(&r, &r0, sizeof r) == 0);
+        ck_assert_int_eq(el_affine_polyline(E, q, T, 0, NULL, 13, &o, &r), EL_OK);
+        ck_assert_close(r.t[13], (double)(E - 1), 1e-6);
+        el_affine_result_free(&r);
+        memset(&r, 0xa5, sizeof r);
+    }
+}
+END_TEST
+
 /* E samples of y = sin x over [0.4, 2 pi - 0.4]: an S curve, inflection x = pi at E/2. */
 static void sine_samples(int E, double *q)
 {
@@ -679,6 +712,7 @@ int main(void)
     tcase_add_test(tc, test_parabolic_lengths);
     tcase_add_test(tc, test_polyline_ellipse);
     tcase_add_test(tc, test_polyline_inflection);
+    tcase_add_test(tc, test_polyline_fit_ends_past_the_end);
     tcase_add_test(tc, test_g2_bspline_exact_ends);
     tcase_add_test(tc, test_g2_bspline_pieces_of_a_curve);
     tcase_add_test(tc, test_bad_input);

@@ -656,3 +656,18 @@ def test_g2quad_command_bad_input(tmp_path, capsys):
     for args in ((line,), (line, "--edges", "2"), (tmp_path / "missing.csv",)):
         code, text, err = _g2quad(capsys, *args)
         assert code == 2 and len(err.strip().splitlines()) == 1 and "Traceback" not in err, err
+
+
+def test_fit_ends_past_the_curve_end_is_an_edge_count_error():
+    """An elastica turning 4.2 times at 8 edges: fit_ends found no A landing the last vertex
+    on the last sample, and the C returned success with vertices run on along f~'s last
+    parabola (t up to 218.9 of 160 samples, feet s out of order); g2_quadratic then built
+    from them (deviation 8.97, only EndTangentWarnings). Now C's EL_EDOM: EdgeCountError."""
+    c = el.SmoothElastica(x0=0.0, y0=0.0, phi=0.1258, mu=1.0, k=2.425, q=0.9756,
+                          length=5.7357)
+    with pytest.raises(el.EdgeCountError, match="8 edges are too few for the elastica"):
+        el.affine_polyline(c, 8, fit_ends=True)
+    with pytest.raises(el.EdgeCountError, match="g2_quadratic: 8 edges are too few"):
+        el.g2_quadratic(c, 8, partial=True)
+    ap = el.affine_polyline(c, 16, fit_ends=True)     # lands: on the curve, in order
+    assert ap.t[-1] == pytest.approx(20 * 16, abs=1e-6) and np.all(np.diff(ap.s) > 0)
