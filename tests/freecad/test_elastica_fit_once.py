@@ -1,6 +1,7 @@
 """freecadcmd -t test that the Fit command fits its input once: its check's fit is the new
 feature's first recompute's (QA19gui F3: a 50 000-point Points object was fitted twice, the
-GUI frozen 16 s), while every later recompute fits again."""
+GUI frozen 16 s), handed to the new feature's proxy (no module state), while a later
+recompute of other input fits again."""
 import unittest
 
 import FreeCAD as App
@@ -43,24 +44,49 @@ class FitOnceTest(unittest.TestCase):
             self.assertEqual(f.Rms, again["rms"])
             self.assertEqual(f.BSplineDeviation, again["bspline_deviation"])
             self.assertEqual(list(f.Distances), [float(d) for d in again["distances"]])
-            # a recompute after the command fits again (nothing kept from it)
+            # a recompute of the same input fits nothing (kept.py), one of another fits
             del self.calls[:]
             f.touch()
             self.doc.recompute()
-            self.assertEqual(self.calls, [model])
+            self.assertEqual(self.calls, [])
             self.assertEqual(f.Rms, again["rms"])
+            f.Tolerance = 2e-4
+            self.doc.recompute()
+            self.assertEqual(self.calls, [model])
 
     def test_a_changed_input_is_fitted_not_the_checked_one(self):
-        """Within the command's block a different input is fitted anew."""
+        """A check's fit is taken for its own input alone: other points or options fit."""
         pts = [App.Vector(x, 0.01 * x * x, 0) for x in range(0, 60, 3)]
         other = [App.Vector(x, 0.012 * x * x, 0) for x in range(0, 60, 3)]
-        with core.fitted_once():
-            a = core.fit_gathered((pts, None, True, False), [])
-            b = core.fit_gathered((other, None, True, False), [])
-            c = core.fit_gathered((pts, None, True, False), [], model="smooth")
+        checked = core.check_fit((pts, None, True, False), [])
+        a = core.fit_gathered((pts, None, True, False), [], checked)
+        self.assertEqual(len(self.calls), 1)
+        b = core.fit_gathered((other, None, True, False), [], checked)
+        c = core.fit_gathered((pts, None, True, False), [], checked, model="smooth")
         self.assertEqual(len(self.calls), 3)
+        self.assertEqual(a["rms"], checked[1]["rms"])
         self.assertNotEqual(a["rms"], b["rms"])
         self.assertNotEqual(a["bspline_deviation"], c["bspline_deviation"])
+
+    def test_the_check_is_handed_to_its_feature(self):
+        """The check's fit goes to the feature it was made for, on its proxy, before its first
+        recompute, which takes it (main: a module dict, fit_core._ONCE, while the command
+        ran)."""
+        from freecad.elastica import fit
+        seen, compute = [], fit.FitProxy.compute
+
+        def spy(proxy, obj):
+            seen.append(getattr(proxy, "checked", None))
+            return compute(proxy, obj)
+        fit.FitProxy.compute = spy
+        try:
+            f = C.fit_sources([(self._points(), [])], open_panel=False, Model="smooth")
+        finally:
+            fit.FitProxy.compute = compute
+        self.assertEqual(len(seen), 1)
+        self.assertIsNotNone(seen[0])
+        self.assertEqual(seen[0][1]["rms"], f.Rms)
+        self.assertIsNone(getattr(f.Proxy, "checked", None))     # taken: kept nowhere
 
     def _gathered(self, f):
         from freecad.elastica import fit, sources

@@ -579,6 +579,7 @@ class BlendProxy(FeatureProxy):
         obj.Solution = obj.Solution + 1
 
     def onChanged(self, obj, prop):
+        self.drop_kept(obj, prop)
         if prop in self.followed_links and not self.link_changed(obj, prop):
             return                  # restored, or renamed following its sketch geometry
         if "Restore" in obj.State or getattr(self, "_restoring", False):

@@ -98,13 +98,21 @@ def _run(code):
     return getattr(App.ActiveDocument, "ActiveObject", None)
 
 
-def _create(doc, title, code, keep_open=False):
+def _create(doc, title, code, keep_open=False, prepare=None):
     """``_run(code)`` in an undo transaction (left open for a task panel when
-    ``keep_open``); on failure the transaction is undone and nothing is left."""
+    ``keep_open``); on failure the transaction is undone and nothing is left. ``code`` may be
+    (creation, recompute), run apart with ``prepare(obj)`` between them (obj: the object
+    created)."""
     doc.openTransaction(title)
     names = {o.Name for o in doc.Objects}
     try:
-        obj = _run(code)
+        if isinstance(code, tuple):
+            obj = _run(code[0])
+            if prepare is not None and obj is not None:
+                prepare(obj)
+            obj = _run(code[1]) or obj
+        else:
+            obj = _run(code)
     except Exception as exc:
         abort_transaction(doc, title)
         for o in list(doc.Objects):          # without undo (freecadcmd) abort keeps them
@@ -117,14 +125,14 @@ def _create(doc, title, code, keep_open=False):
     return obj
 
 
-def _check_and_create(title, what, check, code, open_panel, wrong=message):
+def _check_and_create(title, what, check, code, open_panel, wrong=message, prepare=None):
     """Run ``check()`` (the feature's core on the input; InputProblem = bad input, said by
     ``wrong``),
     then create the feature by the recorded ``code`` (a string, or a function giving
     it after the check) and open its task panel. ``check`` may return a note (why the
     command chose other values than the usual defaults): said in the report view and at
     the top of the panel. Returns the new feature or None (message printed, document
-    unchanged)."""
+    unchanged). ``prepare``: _create's, given the object created before its recompute."""
     if open_panel and dialog_open():
         message(DIALOG_OPEN)
         return None
@@ -138,7 +146,8 @@ def _check_and_create(title, what, check, code, open_panel, wrong=message):
         return None
     doc = App.ActiveDocument
     panel = open_panel and App.GuiUp
-    obj = _create(doc, title, code() if callable(code) else code, keep_open=panel)
+    obj = _create(doc, title, code() if callable(code) else code, keep_open=panel,
+                  prepare=prepare)
     if obj is not None and note:
         message(f"{obj.Label}: {note}", error=False)
         keep_note(obj, note)            # its panel says it later too, while it holds
@@ -224,17 +233,24 @@ def fit_sources(sources, csv_file="", open_panel=True, wrong=message, **options)
     opts = {"Model": model, "Tolerance": tol, "Degree": deg}
     opts.update(options)
 
+    checked = []
+
     def check():
         notes = []
-        fit_core.fit_gathered(src_mod.gather_points(sources, csv_file, notes=notes), notes,
-                              **fit.core_options(opts))
+        checked.append(fit_core.check_fit(
+            src_mod.gather_points(sources, csv_file, notes=notes), notes,
+            **fit.core_options(opts)))
 
-    with fit_core.fitted_once():        # the check's fit is the new feature's first
-        return _check_and_create(
-            "Fit elastica", "fit", check,
-            "from freecad.elastica import fit as elastica_fit\n"
-            f"_fit = elastica_fit.make({_ref_doc(doc)}, {_src(sources)}, csv_file={csv_file!r}, "
-            f"{_kw(opts)})\n{_ref_doc(doc)}.recompute()", open_panel, wrong)
+    def prepare(obj):
+        """The check's fit is the new feature's first recompute's (fit_core.fit_gathered
+        takes it where the feature reads the same input)."""
+        obj.Proxy.checked = checked[-1]
+
+    return _check_and_create(
+        "Fit elastica", "fit", check,
+        ("from freecad.elastica import fit as elastica_fit\n"
+         f"_fit = elastica_fit.make({_ref_doc(doc)}, {_src(sources)}, csv_file={csv_file!r}, "
+         f"{_kw(opts)})", f"{_ref_doc(doc)}.recompute()"), open_panel, wrong, prepare)
 
 
 class FitCommand(_Command):

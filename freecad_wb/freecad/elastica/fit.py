@@ -157,7 +157,9 @@ class FitProxy(FeatureProxy):
             if edge is not None:
                 edges[f"{key}_edge"] = edge
                 edges[f"{key}_at"] = edge_end_choice(obj, f"{prop}At")
-        r = fit_gathered(gathered, notes, **core_options(obj), **edges)
+        # a command's check of this input (commands.fit_sources): its fit, once
+        checked, self.checked = getattr(self, "checked", None), None
+        r = fit_gathered(gathered, notes, checked, **core_options(obj), **edges)
         r["csv_stamp"] = stamp
         return r
 

@@ -7,7 +7,6 @@ the points' distances to the curve drawn (fit_shape.py's B-spline)."""
 from __future__ import annotations
 
 import math
-from contextlib import contextmanager
 from warnings import catch_warnings, simplefilter
 
 import FreeCAD as App
@@ -518,24 +517,9 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
     }
 
 
-_ONCE = {}     # while fitted_once's block runs: "on", and "fit": (input key, fit_core's dict)
-
-
-@contextmanager
-def fitted_once():
-    """While the block runs, fit_gathered fits an input once: a Fit command's check and its
-    new feature's first recompute read the same points (a 50 000-point scan was fitted
-    twice, 2 x 9.6 s); emptied when the block ends, so a later recompute fits again."""
-    _ONCE.clear()
-    _ONCE["on"] = True
-    try:
-        yield
-    finally:
-        _ONCE.clear()
-
-
-def _input_key(gathered, options):
-    """What fit_core's result depends on, comparable with ==; None: not kept (edges)."""
+def gathered_key(gathered, options):
+    """What fit_core's result depends on, comparable with ==: gather_points' (points, plane,
+    ordered, closed) and fit_core's options; None: not compared (tangent edges)."""
     if options.get("start_edge") is not None or options.get("end_edge") is not None:
         return None
     points, plane, ordered, closed = gathered
@@ -544,25 +528,38 @@ def _input_key(gathered, options):
             sorted(options.items()))
 
 
-def fit_gathered(gathered, notes, **options):
-    """fit_core of gather_points' (points, plane, ordered, closed) with its ``notes`` (what
-    it left out) first among the warnings, or after the error: the way out of an error may
-    be what was left out (a sketch's 4 points fitted, its curve left out)."""
-    key = _input_key(gathered, options) if _ONCE else None
+def _fitted(gathered, notes, options):
+    """fit_core's dict; after its error, the first of the ``notes`` (what gather_points left
+    out): the way out of an error may be what was left out (a sketch's 4 points fitted,
+    its curve left out)."""
     try:
-        if key is not None and "fit" in _ONCE and _ONCE["fit"][0] == key:
-            r = dict(_ONCE["fit"][1])
-        else:
-            r = fit_core(*gathered, **options)
-            if key is not None:
-                _ONCE["fit"] = (key, dict(r))
+        return fit_core(*gathered, **options)
     except InputProblem as exc:
         if not notes:
             raise
         raise InputProblem(f"{exc}. {notes[0]}") from None
+
+
+def check_fit(gathered, notes, **options):
+    """A command's check of its input: (gathered_key, fit_core's dict), for fit_gathered's
+    ``checked`` (the new feature's first recompute); raises InputProblem as fit_gathered."""
+    return gathered_key(gathered, options), _fitted(gathered, notes, options)
+
+
+def fit_gathered(gathered, notes, checked=None, **options):
+    """fit_core of gather_points' (points, plane, ordered, closed) with its ``notes`` (what
+    it left out) first among the warnings, or after the error (_fitted). ``checked``: a
+    command's check (check_fit), whose fit is taken where its input is this one: the Fit
+    command's check and its new feature's first recompute read the same points (a 50 000-
+    point scan was fitted twice, 2 x 9.6 s, QA19gui F3)."""
+    key = gathered_key(gathered, options) if checked is not None else None
+    if key is not None and checked[0] == key:
+        r = dict(checked[1])
+    else:
+        r = _fitted(gathered, notes, options)
     r["warnings"] = notes + r["warnings"]
     return r
 
 
-__all__ = ["fit_core", "fit_gathered", "MIN_POINTS", "MODELS", "MODEL_NAMES", "MODEL_TIPS",
+__all__ = ["fit_core", "fit_gathered", "check_fit", "MIN_POINTS", "MODELS", "MODEL_NAMES", "MODEL_TIPS",
            "DISTANCES", "DISTANCE_NAMES"]

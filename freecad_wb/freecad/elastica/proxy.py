@@ -18,6 +18,7 @@ import sys
 import FreeCAD as App
 
 from .containers import add_containers, follow_containers, link_properties, restore_containers
+from .kept import input_key, is_input
 from .units import exact_mark, mm_marked, say
 
 VERSION = 4             # of the proxies' saved state (3: lengths typed with units;
@@ -309,6 +310,16 @@ def set_said(obj, prop, marked):
         obj.Proxy._said = kept
 
 
+def resay(obj):
+    """The texts set_said wrote, said again in the unit schema of now where the properties
+    still hold them (as a recompute's apply says them)."""
+    for prop, (value, marked) in _kept(obj).items():
+        if prop in obj.PropertiesList:
+            now = getattr(obj, prop)
+            if (list(now) if isinstance(now, (list, tuple)) else now) == value:
+                set_said(obj, prop, marked)
+
+
 def said(obj, prop, figures=False):
     """The text property ``prop`` in the user's schema of now: its marked text said again
     where the property still holds what set_said wrote (a schema changed since the
@@ -396,6 +407,12 @@ def attach_view(obj, restored=False):
         VIEW_HOOK[1 if restored else 0](obj)
 
 
+# properties whose change outside a recompute leaves its outcome standing (drop_kept): the
+# label, the visibility, the links to the containers (their placements are in the key), a
+# command's note
+KEEPING = frozenset(("Label", "Label2", "Visibility", "Proxy", "Containers", NOTE))
+
+
 class FeatureProxy:
     """Common state handling. Pickled state: kind, version and the exact values of
     the float properties (a FreeCAD file keeps 16 decimals of a float property:
@@ -427,21 +444,52 @@ class FeatureProxy:
         traceback), which marks the feature in error as its own (the tree's error mark,
         "Recompute failed!", its dependents not recomputed). What it reads may have moved
         into or out of a container since: its link to them is set first
-        (containers.follow_containers)."""
+        (containers.follow_containers). Where nothing the outcome depends on changed since
+        the last recompute (kept.input_key: a Pad of its sketch's Body changed, which
+        recomputes the Body and so the feature), that outcome stands: the shape and
+        results on the feature (their texts said again in the unit schema of now), or the
+        error said again; no library is called."""
         follow_containers(obj)
         self._unplaced = False
+        self._executing = True            # what it sets is its outcome (drop_kept)
+        try:
+            msg = self._outcome(obj)
+            if msg is None:
+                return
+            report(obj, msg)
+            self.on_error(obj)
+        finally:
+            self._executing = False
+        raise_reported(f"Elastica {obj.Label}: {say(mm_marked(msg))}")
+
+    def _outcome(self, obj):
+        """The kept outcome where the key holds (its texts said again), else compute and
+        apply; the failure's message or None."""
+        last = getattr(self, "_kept", None)
+        if last is not None and last[0] is not None and last[0] == input_key(obj):
+            if last[1] is None:
+                resay(obj)
+            return last[1]
+        self._kept = None
+        msg = self._computed(obj)
+        if msg is None:
+            self._kept = (input_key(obj), None)
+        return msg
+
+    def _computed(self, obj):
+        """compute and apply: None, or the failure's message (kept where it is the input's,
+        an InputProblem, not a bug's)."""
         try:
             r = self.compute(obj)
         except InputProblem as exc:
             msg = str(exc)
         except Exception as exc:  # a bug or a kernel error: report it, keep the shape
-            msg = f"{type(exc).__name__}: {exc}"
+            return f"{type(exc).__name__}: {exc}"
         else:
             self.apply(obj, r)
-            return
-        report(obj, msg)
-        self.on_error(obj)
-        raise_reported(f"Elastica {obj.Label}: {say(mm_marked(msg))}")
+            return None
+        self._kept = (input_key(obj), msg)
+        return msg
 
     def setup(self, obj):
         pass
@@ -468,6 +516,15 @@ class FeatureProxy:
     def onChanged(self, obj, prop):
         if prop in self.followed_links:
             self.link_changed(obj, prop)
+        self.drop_kept(obj, prop)
+
+    def drop_kept(self, obj, prop):
+        """Forget the kept outcome (execute) when a result is set by anything but the
+        feature's own recompute (Undo, Redo, a document restored: an outcome of other
+        input). Subclasses overriding onChanged call it."""
+        if not getattr(self, "_executing", False) and getattr(self, "_kept", None) is not None \
+                and prop not in KEEPING and (prop == "Shape" or not is_input(obj, prop)):
+            self._kept = None
 
     def link_changed(self, obj, prop):
         """Whether the link ``prop`` that changed names other geometry than it followed

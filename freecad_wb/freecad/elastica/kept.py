@@ -1,0 +1,114 @@
+"""A feature's last outcome, kept on its proxy while what it depends on holds, so that a
+recompute that changed none of it calls no library.
+
+A feature links the containers (Bodies, App::Parts) placing what it reads
+(containers.py), so FreeCAD executes it whenever anything in such a container is
+recomputed: a Pad's length changed refitted a 50 000-point scan (5-7 s, the GUI frozen).
+Its outcome depends on its own input properties and on the geometry it reads where the 3D
+view draws it; ``input_key`` digests both, and FeatureProxy.execute reuses the last outcome
+(the shape and results already on the feature, or the error) while the key is the one left
+by the last recompute. A placement of a container changed, a sketch edited, a property
+typed: another key, computed again.
+
+The key is taken after the recompute (its ``compute`` may rename a link following its
+sketch's geometry, a spline's Closed follow its wire, a blend's Solution follow its shape:
+their next recompute starts from there). The outcome lives on the proxy only (no module
+state): it is no part of the file (a reopened document computes), nor of a copy, and is
+dropped when anything but the feature's own recompute sets its results (Undo, Redo restore
+them with an older outcome): FeatureProxy.onChanged.
+"""
+from __future__ import annotations
+
+import hashlib
+import io
+import os
+import zipfile
+
+import FreeCAD as App
+
+from .containers import CONTAINERS, read_objects
+
+# properties of the feature that are no input: FreeCAD's own (its label, its visibility, its
+# shape and the shape's placement), the proxy, the links to the containers (their placements
+# are in the read objects' own: _object_key); and the group "Result" (outputs, said texts)
+NOT_INPUT = frozenset(("Label", "Label2", "Visibility", "Placement", "Shape", "Proxy",
+                       CONTAINERS))
+RESULT_GROUP = "Result"
+# what an object read holds its geometry in (a sketch's Geometry: construction edges and
+# vertices too; a Points object's Points; a Part feature's Shape; an Elastica feature's curves)
+_CONTENT = ("Geometry", "Points", "Shape", "Curves", "Plane")
+
+
+def is_input(obj, prop):
+    """Whether property ``prop`` of the feature ``obj`` is one its outcome depends on."""
+    return prop not in NOT_INPUT and obj.getGroupOfProperty(prop) != RESULT_GROUP
+
+
+def _stable(value):
+    """``value`` as a comparable, exactly written Python value (repr of floats: every bit)."""
+    if isinstance(value, App.DocumentObject):
+        return ("object", value.Document.Name, value.Name)
+    if isinstance(value, (list, tuple)):
+        return tuple(_stable(v) for v in value)
+    if isinstance(value, App.Units.Quantity):
+        return ("quantity", repr(float(value.Value)), str(value.Unit))
+    if isinstance(value, App.Placement):
+        return ("placement", tuple(repr(v) for v in value.toMatrix().A))
+    if isinstance(value, App.Vector):
+        return ("vector", repr(value.x), repr(value.y), repr(value.z))
+    if isinstance(value, float):
+        return repr(value)
+    if value is None or isinstance(value, (bool, int, str)):
+        return value
+    return repr(value)
+
+
+def _content(obj, prop):
+    """Property ``prop`` of ``obj`` as FreeCAD saves it (its XML and its binary file: a
+    shape's BRep, a point cloud's floats), without the zip's dates (dumpPropertyContent
+    wraps them in a zip stamped with the time of the call)."""
+    with zipfile.ZipFile(io.BytesIO(bytes(obj.dumpPropertyContent(prop)))) as z:
+        return b"".join(i.filename.encode() + b"\0" + z.read(i.filename) for i in z.infolist())
+
+
+def _object_key(obj, h):
+    """Feed ``h`` with where ``obj`` is drawn: its global placement (its containers' and its
+    own) and its geometry (_CONTENT); an object without any of it (an App::Link) by its
+    shape in global coordinates."""
+    from .geometry import container_placement, global_shape     # (geometry imports proxy)
+    plc = obj.getGlobalPlacement() if hasattr(obj, "getGlobalPlacement") else \
+        container_placement(obj)
+    h.update(repr((obj.Document.Name, obj.Name, _stable(plc))).encode())
+    props = [p for p in _CONTENT if p in obj.PropertiesList]
+    for p in props:
+        h.update(p.encode() + b"\0" + _content(obj, p))
+    if not props:
+        h.update(global_shape(obj).exportBrepToString().encode())
+
+
+def input_key(obj):
+    """A digest of what the outcome of ``obj``'s recompute depends on: its input properties
+    (is_input; its expressions, and the date and size of a file it names) and the geometry of
+    the objects it reads (containers.read_objects) in global coordinates. None where it
+    cannot be taken (a link to an object being deleted): the feature computes."""
+    h = hashlib.sha256()
+    try:
+        for p in sorted(obj.PropertiesList):
+            if not is_input(obj, p):
+                continue
+            value = getattr(obj, p)
+            h.update(repr((p, _stable(value))).encode())
+            if obj.getTypeIdOfProperty(p) == "App::PropertyFile" and value:
+                try:
+                    st = os.stat(value)
+                    h.update(repr((st.st_mtime_ns, st.st_size)).encode())
+                except OSError:
+                    h.update(b"no file")
+        for o in read_objects(obj):
+            _object_key(o, h)
+    except Exception:      # whatever cannot be read: no key, the feature computes
+        return None
+    return h.hexdigest()
+
+
+__all__ = ["input_key", "is_input", "NOT_INPUT"]

@@ -1,0 +1,246 @@
+"""freecadcmd -t tests of what a recompute computes. Every feature links the containers
+placing what it reads (containers.py), so FreeCAD executes it whenever anything in its
+Body is recomputed: a Pad's length changed refitted every fit of the Body's sketches (a
+50 000-point scan: 5-7 s, the GUI frozen). A feature whose inputs (its properties, the
+geometry it reads where it is drawn) did not change keeps its outcome and calls no library
+(kept.py); a Body moved, a source point dragged, a property typed compute again, once.
+The calls are counted where they are made: each feature class's compute, fit_core, and
+the binding's el.fit, which every library fit goes through."""
+import sys
+import unittest
+
+import FreeCAD as App
+import Part
+
+import elastica_samples as S
+from freecad.elastica import blend, comb, ellblend, fit, fit_core, g2quad, spline
+from freecad.elastica import commands as C
+
+from test_elastica_container_moves import BODY, PTS, in_sketch, moved
+
+PROXIES = (fit.FitProxy, spline.SplineProxy, ellblend.EllipticBlendProxy, g2quad.G2QuadProxy,
+           comb.CombProxy, blend.BlendProxy)
+FOLLOWS = 1e-9          # mm: a feature that follows its sketch, in the sketch's coordinates
+
+
+def samples(shape):
+    """Points along every edge of ``shape`` (exact: two shapes alike give the same)."""
+    return [tuple(p) for e in shape.Edges for p in e.discretize(Number=25)]
+
+
+class KeptTest(S.DocTest):
+    doc_name = "ElasticaKept"
+
+    def setUp(self):
+        super().setUp()
+        self.computed, self.fits, self.cores = [], [], []
+        for cls in PROXIES:
+            self.spy(cls, "compute", lambda f, self_, obj, *a: (self.computed.append(obj.Name),
+                                                                f(self_, obj, *a))[1])
+        self.spy(sys.modules["libelastica.fit"], "fit",
+                 lambda f, *a, **k: (self.fits.append(1), f(*a, **k))[1])
+        self.spy(fit_core, "fit_core",
+                 lambda f, *a, **k: (self.cores.append(k.get("model")), f(*a, **k))[1])
+        self.body = self.doc.addObject("PartDesign::Body", "Body")
+        self.body.Placement = BODY
+        self.doc.recompute()
+
+    def spy(self, owner, name, wrapper):
+        """owner.name replaced by wrapper(original, ...) until the test ends."""
+        original = getattr(owner, name)
+        setattr(owner, name, lambda *a, **k: wrapper(original, *a, **k))
+        self.addCleanup(setattr, owner, name, original)
+
+    def clear(self):
+        del self.computed[:], self.fits[:], self.cores[:]
+
+    def sketch(self, name, plane="XZ_Plane"):
+        sk = self.body.newObject("Sketcher::SketchObject", name)
+        sk.Support = (next(o for o in self.body.Origin.OriginFeatures if o.Role == plane), [""])
+        sk.MapMode = "FlatFace"
+        return sk
+
+    def pad(self):
+        """A Pad of a rectangle in the Body (the solid the designer models beside)."""
+        base = self.sketch("Base", "XY_Plane")
+        corners = [(-200, -200), (-140, -200), (-140, -160), (-200, -160)]
+        for (x0, y0), (x1, y1) in zip(corners, corners[1:] + corners[:1]):
+            base.addGeometry(Part.LineSegment(App.Vector(x0, y0, 0), App.Vector(x1, y1, 0)))
+        pad = self.body.newObject("PartDesign::Pad", "Pad")
+        pad.Profile = base
+        pad.Length = 30
+        return pad
+
+    def every_feature(self):
+        """[(feature, its sketch)]: fit (smooth and discrete), spline, elliptic blend, G2
+        quadratic, comb and blend, from sketches in the Body beside a Pad."""
+        self.pad_ = self.pad()
+        dots = self.sketch("Dots")
+        for x, y in PTS:
+            dots.addGeometry(Part.Point(App.Vector(x, y, 0)), False)
+        curve = self.sketch("Curve")
+        bs = Part.BSplineCurve()
+        bs.interpolate([App.Vector(x, y, 0) for x, y in PTS])
+        curve.addGeometry(bs, False)
+        lines = self.sketch("Lines")
+        lines.addGeometry(Part.LineSegment(App.Vector(0, 0, 0), App.Vector(40, 0, 0)), False)
+        lines.addGeometry(Part.LineSegment(App.Vector(80, 25, 0), App.Vector(120, 35, 0)),
+                          False)
+        self.doc.recompute()
+        App.setActiveDocument(self.doc.Name)
+        said = []
+        made = [(C.fit_sources([(dots, [])], False, Model="smooth", wrong=said.append), dots),
+                (C.fit_sources([(curve, ["Edge1"])], False, Model="discrete",
+                               wrong=said.append), curve),
+                (C.spline_sources([(dots, [])], False, wrong=said.append), dots),
+                (C.ellblend_sources([(dots, [])], False, wrong=said.append), dots),
+                (C.g2quad_sources([(curve, ["Edge1"])], False, Edges=96, wrong=said.append),
+                 curve),
+                (C.blend_sources([(lines, ["Edge1"]), (lines, ["Edge2"])], False,
+                                 wrong=said.append), lines)]
+        C.comb_sources([(curve, ["Edge1"])], wrong=said.append)
+        made.append((next(o for o in self.doc.Objects if o.Name.startswith("ElasticaComb")),
+                     curve))
+        made[-1][0].Scale = 500.0
+        self.doc.recompute()
+        for f, _ in made:
+            self.assertIsNotNone(f, said)
+            self.assertFalse(f.Status.startswith("error"), f"{f.Name}: {f.Status}")
+        return made
+
+    def assertUnchanged(self, made, before, what):
+        for f, _ in made:
+            self.assertEqual(f.State, ["Up-to-date"], f"{f.Name} {what}")
+            self.assertEqual(samples(f.Shape), before[f.Name], f"{f.Name} {what}: shape changed")
+
+    def test_a_pad_change_in_the_body_computes_no_feature(self):
+        """A Pad's length changed: the Body recomputes, and so every feature linking it; none
+        calls the library (main: each computed, both fits fitted)."""
+        made = self.every_feature()
+        before = {f.Name: samples(f.Shape) for f, _ in made}
+        volume = self.pad_.Shape.Volume
+        for length in (45.0, 12.5):
+            self.clear()
+            self.pad_.Length = length
+            self.doc.recompute()
+            self.assertAlmostEqual(self.pad_.Shape.Volume, volume * length / 30.0, 6)
+            self.assertEqual(self.computed, [], f"Pad {length} mm")
+            self.assertEqual((self.fits, self.cores), ([], []), f"Pad {length} mm")
+            self.assertUnchanged(made, before, f"Pad {length} mm")
+        # nothing touched, a forced recompute of every object: the same
+        self.clear()
+        for f, _ in made:
+            f.touch()
+        self.doc.recompute()
+        self.assertEqual((self.computed, self.fits), ([], []))
+        self.assertUnchanged(made, before, "touched")
+
+    def test_a_body_moved_computes_each_feature_once_where_it_is_drawn(self):
+        made = self.every_feature()
+        before = [in_sketch(f, sk) for f, sk in made]
+        self.clear()
+        self.body.Placement = moved(BODY)
+        self.doc.recompute()
+        self.assertEqual(sorted(self.computed), sorted(f.Name for f, _ in made))
+        self.assertEqual(self.cores, ["smooth", "discrete"])
+        for (f, sk), old in zip(made, before):
+            off = max((a - b).Length for a, b in zip(in_sketch(f, sk), old))
+            self.assertLess(off, FOLLOWS, f"{f.Name}: {off:.3g} mm from where it was on its "
+                                          "sketch")
+        self.clear()
+        self.pad_.Length = 50
+        self.doc.recompute()
+        self.assertEqual(self.computed, [])
+
+    def test_a_source_point_dragged_computes_its_readers_once(self):
+        """A point of the Dots sketch moved: the fit, spline and elliptic blend reading it
+        compute once (the fit fitted once); the G2 quadratic, comb, blend and the discrete fit
+        of other sketches not at all (main: all of them)."""
+        made = self.every_feature()
+        dots = made[0][1]
+        readers = {f.Name for f, sk in made if sk == dots}
+        before = {f.Name: samples(f.Shape) for f, _ in made}
+        self.clear()
+        x, y = PTS[5]
+        dots.movePoint(5, 1, App.Vector(x, y + 1.5, 0))
+        self.doc.recompute()
+        self.assertEqual(sorted(self.computed), sorted(readers))
+        self.assertEqual(self.cores, ["smooth"])
+        self.assertGreater(len(self.fits), 0)
+        for f, _ in made:
+            self.assertEqual(samples(f.Shape) == before[f.Name], f.Name not in readers, f.Name)
+        self.clear()
+        self.doc.recompute()
+        self.pad_.Length = 20
+        self.doc.recompute()
+        self.assertEqual((self.computed, self.fits), ([], []))
+
+    def test_a_property_typed_computes_again(self):
+        made = self.every_feature()
+        f = made[0][0]
+        self.clear()
+        f.Tolerance = 1e-4
+        self.doc.recompute()
+        self.assertEqual(self.computed, [f.Name])
+        self.assertEqual(f.Tolerance.Value, 1e-4)
+        self.assertLessEqual(f.BSplineDeviation, 1e-4)
+
+    def test_a_failed_fit_stays_failed_without_fitting(self):
+        """An error kept: a Pad change says it again (the feature stays in error, its shape
+        the last good one) without fitting."""
+        made = self.every_feature()
+        f = made[0][0]
+        shape = samples(f.Shape)
+        f.Degree = 12
+        self.doc.recompute()
+        self.assertIn("Invalid", f.State)
+        status = f.Status
+        self.assertTrue(status.startswith("error: Degree = 12"), status)
+        self.clear()
+        self.pad_.Length = 33
+        self.doc.recompute()
+        self.assertEqual(self.computed, [])
+        self.assertIn("Invalid", f.State)
+        self.assertEqual(f.Status, status)
+        self.assertEqual(samples(f.Shape), shape)
+        f.Degree = 5
+        self.doc.recompute()
+        self.assertEqual(f.State, ["Up-to-date"])
+        self.assertEqual(self.computed, [f.Name])
+
+    def test_undo_and_the_same_edit_again_computes_the_edit(self):
+        """Undo restores an older outcome on the feature: the one kept is dropped, so the
+        edit made again computes (it must not take the undone outcome for the edit's)."""
+        self.doc.UndoMode = 1
+        made = self.every_feature()
+        f, dots = made[0]
+        original = samples(f.Shape)
+        x, y = PTS[5]
+        self.doc.openTransaction("drag")
+        dots.movePoint(5, 1, App.Vector(x, y + 3.0, 0))
+        self.doc.recompute()
+        self.doc.commitTransaction()
+        dragged = samples(f.Shape)
+        self.assertNotEqual(dragged, original)
+        self.doc.undo()
+        self.assertEqual(samples(f.Shape), original)
+        self.clear()
+        dots.movePoint(5, 1, App.Vector(x, y + 3.0, 0))
+        self.doc.recompute()
+        self.assertEqual(self.cores, ["smooth"])
+        self.assertEqual(samples(f.Shape), dragged)
+
+    def test_a_reopened_document_computes(self):
+        """The outcome is kept on the proxy, never in the file: a reopened document's forced
+        recompute fits."""
+        made = self.every_feature()
+        name = made[0][0].Name
+        f, = S.reopened(self, "kept.FCStd", name)
+        self.clear()
+        f.touch()
+        self.doc.recompute()
+        self.assertEqual(self.cores, ["smooth"])
+
+
+if __name__ == "__main__":
+    unittest.main()
