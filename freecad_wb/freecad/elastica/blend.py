@@ -13,6 +13,7 @@ import FreeCAD as App
 import Part
 
 from . import defaults
+from .containers import set_shape
 from .geometry import (binding_module, edge_end, el, global_element, is_sketch,
                        nearest_parameter, np, part_bspline, plane_coordinates, plane_curvature,
                        to_3d)
@@ -691,7 +692,7 @@ class BlendProxy(FeatureProxy):
             followed = (f" (Solution kept as {bound_expression(obj, 'Solution')} says: the shape shown "
                         "before is " + (f"solution {moved + 1} now" if moved is not None
                                         else "gone with the edges' move") + ")")
-        obj.Shape = part_bspline(r["bspline"], r["placement"]).toShape()
+        set_shape(obj, part_bspline(r["bspline"], r["placement"]).toShape())
         described = [describe(c) for c in curves]
         obj.Lengths = [float(c.length) for c in curves]
         obj.Energies = r["energies"]

@@ -11,6 +11,7 @@ import math
 import FreeCAD as App
 import Part
 
+from .containers import set_shape
 from .geometry import dedup, el, global_element, global_shape, np
 from .links import followed_reader
 from .proxy import (FeatureProxy, InputProblem, add_geometry_index, add_link, add_property,
@@ -151,7 +152,7 @@ class CombProxy(FeatureProxy):
         if not shapes:
             report(obj, "the source is straight: zero curvature everywhere")
             return
-        obj.Shape = Part.makeCompound(shapes)
+        set_shape(obj, Part.makeCompound(shapes))
         obj.UsedScale = scale
         obj.Status = "ok"
 

@@ -98,6 +98,66 @@ def restore_containers(obj):
     return follow_containers(obj) and added
 
 
+# ---------------------------------------------------------------- where a feature is drawn
+
+# A feature's results are global (it reads its sources where they are drawn), but FreeCAD
+# draws a Part::Feature's Shape, and its view provider's nodes, under the placements of
+# the App::Parts / Bodies holding it (its Shape is local to them, as a Part::Box's in a
+# Part): a feature moved into a placed Part was drawn off by the Part's placement (QA). Its
+# Shape is written in its holder's coordinates (set_shape), its overlays drawn so
+# (to_holder), and a holder moved since makes it execute again (moved_holder): what it
+# reads may lie outside the holder, which it cannot link (the holder depends on it).
+
+def holder_placement(obj):
+    """The global placement of the container holding ``obj`` (its innermost App::Part or
+    Body, getGlobalPlacement: nested ones composed), under which FreeCAD draws it; the
+    identity at document level."""
+    parent = obj.getParentGeoFeatureGroup() if hasattr(obj, "getParentGeoFeatureGroup") \
+        else None
+    return App.Placement() if parent is None else parent.getGlobalPlacement()
+
+
+def _key(plc):
+    return tuple(plc.Base) + tuple(plc.Rotation.Q)
+
+
+def set_shape(obj, shape):
+    """Set ``obj.Shape`` to ``shape``, given in global coordinates, in the coordinates of
+    its holder (holder_placement): drawn where it is; remembered for moved_holder. At
+    document level the shape as given (bit for bit)."""
+    plc = holder_placement(obj)
+    if not plc.isIdentity():
+        shape = shape.copy()
+        shape.transformShape(plc.inverse().toMatrix(), True)     # copied: the geometry moved
+    obj.Shape = shape
+    proxy = getattr(obj, "Proxy", None)
+    if proxy is not None:
+        proxy._held = _key(plc)
+
+
+def remember_holder(obj):
+    """Take ``obj``'s Shape as set where its holder is now (a document reopened)."""
+    proxy = getattr(obj, "Proxy", None)
+    if proxy is not None:
+        proxy._held = _key(holder_placement(obj))
+
+
+def to_holder(obj, points):
+    """Global points in the coordinates ``obj``'s view is drawn in (its holder's)."""
+    plc = holder_placement(obj)
+    if plc.isIdentity():
+        return list(points)
+    inv = plc.inverse()
+    return [inv.multVec(p) for p in points]
+
+
+def moved_holder(obj):
+    """Whether ``obj``'s holder is placed otherwise than when its Shape was set (set_shape;
+    unknown, as after a reopen: no)."""
+    held = getattr(getattr(obj, "Proxy", None), "_held", None)
+    return held is not None and held != _key(holder_placement(obj))
+
+
 class GroupWatch:
     """A document observer: when a container's Group changes, the features it concerns
     link the containers of now (follow_containers) and, if they changed, are touched (what
@@ -127,7 +187,8 @@ class GroupWatch:
         reach = set(App.getDependentObjects(list(moved)))
         concerned = reach.union(*(o.InList for o in reach))     # and what links them
         for f in obj.Document.Objects:
-            if f in concerned and follow_containers(f):
+            # (a feature moved in or out is drawn under other placements: moved_holder)
+            if f in concerned and (follow_containers(f) or (f in moved and moved_holder(f))):
                 f.touch()
 
 

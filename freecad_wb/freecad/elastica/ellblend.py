@@ -19,6 +19,7 @@ import warnings
 import FreeCAD as App
 
 from . import defaults
+from .containers import set_shape
 from .geometry import el, ends_meet, np, part_bspline, plane_coordinates, to_3d
 from .links import followed_reader
 from .proxy import (FeatureProxy, InputProblem, add_enum, add_geometry_index, add_length,
@@ -194,7 +195,7 @@ class EllipticBlendProxy(FeatureProxy):
                              obj.KConvention, obj.Closed)
 
     def apply(self, obj, r):
-        obj.Shape = part_bspline(r["bspline"], r["placement"]).toShape()
+        set_shape(obj, part_bspline(r["bspline"], r["placement"]).toShape())
         obj.BSplineDeviation = float(r["bspline"].max_deviation)
         obj.ControlPoints = r["control"]
         obj.Plane = r["placement"]

@@ -14,6 +14,7 @@ import os
 import FreeCAD as App
 
 from . import defaults
+from .containers import set_shape
 from .fit_core import DISTANCES, MODELS, fit_gathered
 from .fit_ends import CONTINUITIES
 from .geometry import binding_module, el, part_bspline, to_3d
@@ -180,7 +181,7 @@ class FitProxy(FeatureProxy):
 
     def apply(self, obj, r):
         plc = r["placement"]
-        obj.Shape = part_bspline(r["bspline"], plc).toShape()
+        set_shape(obj, part_bspline(r["bspline"], plc).toShape())
         obj.Rms = r["rms"]
         obj.MaxError = r["max_error"]
         obj.ErrorMeasure = r["measure"]

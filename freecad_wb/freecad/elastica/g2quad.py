@@ -12,6 +12,7 @@ import warnings
 import FreeCAD as App
 import Part
 
+from .containers import set_shape
 from .geometry import bspline_edges, el, np, plane_coordinates, plane_curvature, to_3d
 from .links import followed_reader
 from .proxy import (FeatureProxy, InputProblem, add_geometry_index, add_link, add_property,
@@ -150,7 +151,7 @@ class G2QuadProxy(FeatureProxy):
     def apply(self, obj, r):
         g, plc = r["result"], r["placement"]
         edges = bspline_edges(g.bsplines, plc)
-        obj.Shape = Part.Wire(edges) if len(edges) > 1 else edges[0]
+        set_shape(obj, Part.Wire(edges) if len(edges) > 1 else edges[0])
         obj.Deviation = float(g.deviation)
         obj.CurvatureJump = float(g.curvature_jump)
         obj.EndTangentError = math.degrees(g.end_tangent_error or 0.0)

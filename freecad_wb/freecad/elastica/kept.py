@@ -26,7 +26,7 @@ import zipfile
 
 import FreeCAD as App
 
-from .containers import CONTAINERS, read_objects
+from .containers import CONTAINERS, holder_placement, read_objects
 
 # properties of the feature that are no input: FreeCAD's own (its label, its visibility, its
 # shape and the shape's placement), the proxy, the links to the containers (their placements
@@ -88,8 +88,9 @@ def _object_key(obj, h):
 
 def input_key(obj):
     """A digest of what the outcome of ``obj``'s recompute depends on: its input properties
-    (is_input; its expressions, and the date and size of a file it names) and the geometry of
-    the objects it reads (containers.read_objects) in global coordinates. None where it
+    (is_input; its expressions, and the date and size of a file it names), the placement of
+    the container holding it (containers.holder_placement) and the geometry of the objects it
+    reads (containers.read_objects) in global coordinates. None where it
     cannot be taken (a link to an object being deleted): the feature computes."""
     h = hashlib.sha256()
     try:
@@ -104,6 +105,9 @@ def input_key(obj):
                     h.update(repr((st.st_mtime_ns, st.st_size)).encode())
                 except OSError:
                     h.update(b"no file")
+        # where its Shape is drawn: written in its container's coordinates (set_shape), it is
+        # written again once that container moved
+        h.update(repr(("holder", _stable(holder_placement(obj)))).encode())
         for o in read_objects(obj):
             _object_key(o, h)
     except Exception:      # whatever cannot be read: no key, the feature computes

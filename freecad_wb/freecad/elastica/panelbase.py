@@ -12,7 +12,7 @@ from PySide import QtCore, QtGui
 
 from . import icon
 from .containers import CONTAINERS
-from .geometry import is_sketch, sketch_curves
+from .geometry import global_shape, is_sketch, sketch_curves
 from .proxy import (EDGE_ENDS, InputProblem, abort_transaction, bound_expression, keep_note,
                     kept_note, note_changes, note_values, said as said_kept)
 from .recording import edit_lines, edit_state
@@ -519,13 +519,13 @@ class Panel:
         others = self.view_objects()
         if others is None or self.obj.Shape.isNull() or Gui.ActiveDocument is None:
             return
-        bb = self.obj.Shape.BoundBox
+        bb = global_shape(self.obj).BoundBox     # where drawn: a Part's placement applied
         if self.view_box is not None and self.view_box.isInside(bb) and \
                 bb.DiagonalLength >= 0.25 * self.view_box.DiagonalLength:
             return
         box = App.BoundBox(bb)
         for o in others:
-            shape = getattr(o, "Shape", None)
+            shape = global_shape(o) if hasattr(o, "Shape") else None
             if shape is not None and not shape.isNull():
                 box.add(shape.BoundBox)
         self.view_box = box

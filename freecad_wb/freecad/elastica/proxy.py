@@ -17,12 +17,14 @@ import sys
 
 import FreeCAD as App
 
-from .containers import add_containers, follow_containers, link_properties, restore_containers
+from .containers import (add_containers, follow_containers, holder_placement, link_properties,
+                         moved_holder, remember_holder, restore_containers)
 from .kept import input_key, is_input
 from .units import exact_mark, mm_marked, say
 
-VERSION = 4             # of the proxies' saved state (3: lengths typed with units;
-                        # 4: a blend's Solution counts from 1, as its list)
+VERSION = 5             # of the proxies' saved state (3: lengths typed with units;
+                        # 4: a blend's Solution counts from 1, as its list; 5: a Shape in
+                        # its container's coordinates, containers.set_shape)
 VIEW_HOOK = []          # [attach(obj), restored(obj)] set by init_gui: view providers
 
 
@@ -497,8 +499,11 @@ class FeatureProxy:
     def mustExecute(self, obj):
         """Whether a recompute must execute the feature, touched or not (FreeCAD asks,
         FeaturePythonImp::mustExecute): a document saved before its link to the containers
-        of what it reads, which reads through one (containers.restore_containers)."""
-        return bool(getattr(self, "_unplaced", False))
+        of what it reads, which reads through one (containers.restore_containers), or
+        before its Shape was local to a placed container holding it (VERSION 5); the
+        container holding it moved since its Shape was set (containers.moved_holder: what it
+        reads may lie outside, where it stayed)."""
+        return bool(getattr(self, "_unplaced", False)) or moved_holder(obj)
 
     def on_error(self, obj):
         """Called after a failed recompute (the message is in Status already)."""
@@ -570,6 +575,7 @@ class FeatureProxy:
 
     def onDocumentRestored(self, obj):
         self.Object = obj
+        version = getattr(self, "_version", VERSION)      # of the file (setup may set it)
         self._restoring = True        # the links it replaces (add_link) are no new links
         try:
             self.setup(obj)           # properties added by newer versions
@@ -592,4 +598,8 @@ class FeatureProxy:
             obj.purgeTouched()
         self._exact = {}
         self._unplaced = restore_containers(obj)
+        if version < 5 and not holder_placement(obj).isIdentity():
+            self._unplaced = True         # its Shape saved global: drawn off by the holder
+        else:
+            remember_holder(obj)          # saved where it was drawn: a move from here on
         attach_view(obj, restored=True)   # a document made without the GUI, opened in it

@@ -15,6 +15,7 @@ import warnings
 import FreeCAD as App
 
 from . import defaults
+from .containers import set_shape
 from .geometry import (binding_module, edge_end, el, ends_meet, nearest_parameter, np, part_bspline,
                        plane_coordinates, plane_curvature, to_3d)
 from .links import followed_edge, followed_reader
@@ -539,7 +540,7 @@ class SplineProxy(FeatureProxy):
         sp, plc, bs = r["spline"], r["placement"], r["bspline"]
         old = obj.Shape.copy() if not obj.Shape.isNull() else None
         changed = seam_changes(old, r.get("seams", []))
-        obj.Shape = part_bspline(bs, plc).toShape()
+        set_shape(obj, part_bspline(bs, plc).toShape())
         if changed:                       # marks: in the schema's length unit (units.say)
             length = (f" (length {coordinate_mark(old.Length, 6)} -> "
                       f"{coordinate_mark(obj.Shape.Length, 6)} {length_unit_mark(written=True)})")

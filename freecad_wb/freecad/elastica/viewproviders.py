@@ -15,6 +15,7 @@ from __future__ import annotations
 import FreeCAD as App
 
 from . import icon
+from .containers import to_holder
 
 PALETTE = [("red", (0.84, 0.15, 0.16)), ("blue", (0.12, 0.47, 0.71)),
            ("green", (0.17, 0.63, 0.17)), ("purple", (0.58, 0.40, 0.74)),
@@ -333,6 +334,9 @@ class ViewProvider:
         if getattr(self, "_overlay", None) is None:
             return
         for g, (rgb, markers, segments) in zip(self._groups, overlay_content(vobj)):
+            # global points, drawn under the placement of the container holding the feature
+            # (as its Shape: containers.set_shape)
+            markers, segments = to_holder(vobj.Object, markers), to_holder(vobj.Object, segments)
             g["colour"].rgb.setValue(*rgb)
             g["coords"].point.setNum(0)
             g["coords"].point.setValues(0, len(markers), [tuple(p) for p in markers])
