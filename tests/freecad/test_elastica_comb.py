@@ -4,6 +4,8 @@ other edges, status ok, once the helper line Edge1 was made construction or dele
 when deleted or made construction, through Undo, save / reopen and documents made before."""
 import unittest
 
+import FreeCAD as App
+
 import elastica_samples as S
 from freecad.elastica import comb as Co
 from freecad.elastica import fit as Fi
@@ -148,6 +150,52 @@ class CombLinkTest(S.DocTest):
         self.assertEqual(comb.Source, (f, []))
         self.assertEqual(S.status_once_deleted(comb, f), "error: its source was deleted: "
                          "relink Source (an Elastica result or some edges)")
+
+
+
+class CombScaleTest(S.DocTest):
+    """The automatic scale does not change as the curve turns (QA: 12 % of the axis-aligned
+    box's diagonal, 1361.8 for a curve and 1351.7 for it turned 45 deg)."""
+    doc_name = "ElasticaCombScale"
+
+    TURNS = [App.Placement(),
+             App.Placement(App.Vector(0, 0, 0), App.Rotation(App.Vector(0, 0, 1), 45)),
+             App.Placement(App.Vector(300, -40, 25), App.Rotation(App.Vector(0, 0, 1), 17)),
+             App.Placement(App.Vector(-50, 80, 10), App.Rotation(App.Vector(1, 0.4, 0.2), 35))]
+
+    def _combs(self, make_source):
+        """(UsedScale, teeth in the source's plane coordinates) of the automatic comb of
+        ``make_source(placement, name)`` at each of TURNS."""
+        out = []
+        for i, plc in enumerate(self.TURNS):
+            source, subs = make_source(plc, f"Turned{i}")
+            comb = Co.make(self.doc, source, subs, Samples=30)
+            self.doc.recompute()
+            self.assertEqual(comb.Status, "ok")
+            inv = plc.inverse()
+            out.append((comb.UsedScale, [inv.multVec(v.Point) for v in comb.Shape.Vertexes]))
+        return out
+
+    def assertTurnFree(self, combs):
+        scale0, teeth0 = combs[0]
+        for scale, teeth in combs[1:]:
+            self.assertLess(abs(scale - scale0), 1e-9 * scale0, (scale, scale0))
+            self.assertLess(max((a - b).Length for a, b in zip(teeth, teeth0)), 1e-7)
+
+    def test_a_sketch_edge_turned_has_the_same_comb(self):
+        xy, _ = S.keyline_xy(40)
+        self.assertTurnFree(self._combs(
+            lambda plc, name: (S.bspline_sketch(self.doc, xy, name, plc), ["Edge1"])))
+
+    def test_a_fit_turned_has_the_same_comb(self):
+        xy, _ = S.keyline_xy(40)
+
+        def fit(plc, name):
+            f = Fi.make(self.doc, [(S.points_sketch(self.doc, xy, name, plc), [])],
+                        Model="smooth")
+            self.doc.recompute()
+            return f, []
+        self.assertTurnFree(self._combs(fit))
 
 
 if __name__ == "__main__":

@@ -99,11 +99,9 @@ class ContainerMoveTest(S.DocTest):
                 (C.blend_sources([(lines, ["Edge1"]), (lines, ["Edge2"])], False,
                                  wrong=said.append), lines)]
         C.comb_sources([(curve, ["Edge1"])], wrong=said.append)
-        comb = next(o for o in self.doc.Objects if o.Name.startswith("ElasticaComb"))
-        # a scale of its own: the automatic one follows the extent of the source's
-        # axis-aligned bounding box, which turning the Body changes
-        comb.Scale = 500.0
-        made.append((comb, curve))
+        # at the automatic scale, which turning the Body changes no more (comb.shape_extent)
+        made.append((next(o for o in self.doc.Objects if o.Name.startswith("ElasticaComb")),
+                     curve))
         self.doc.recompute()
         for f, _ in made:
             self.assertIsNotNone(f, said)

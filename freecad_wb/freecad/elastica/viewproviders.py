@@ -190,13 +190,23 @@ def _guide_overlay(obj, size, arrows=True, big=None):
     return (GUIDE_RGB, guides, _force_arrows(obj, guides, forces, size, big) if arrows else [])
 
 
+def _extent(obj):
+    """The size of a feature's shape, whatever its orientation (comb.shape_extent): what
+    its comb and arrows are scaled to (the axis-aligned box's diagonal changed as the
+    feature turned)."""
+    if obj.Shape.isNull():
+        return 0.0
+    from .comb import shape_extent
+    return shape_extent(obj.Shape)
+
+
 def _spline_overlay(vobj, rgb):
     """Ducks (markers), the curvature comb (teeth and envelope), the duck forces
     (arrows) of an elastic spline, and its guide ducks (G2 ends) apart, in orange."""
     obj = vobj.Object
     ducks = list(obj.Ducks) if getattr(vobj, "ShowDucks", True) else []
     comb, arrows = [], []
-    size = obj.Shape.BoundBox.DiagonalLength if not obj.Shape.isNull() else 0.0
+    size = _extent(obj)
     stored = obj.Proxy.plane_curves(obj) if getattr(vobj, "ShowComb", True) else None
     if stored and size > 0:
         from .comb import chain_teeth
@@ -237,8 +247,7 @@ def overlay_content(vobj):
         q = list(obj.ControlPoints) if getattr(vobj, "ShowControlPolygon", True) else []
         return [(_lighter(rgb), q, [p for a, b in zip(q, q[1:]) for p in (a, b)])]
     if kind == "Blend":      # G2: its guide ducks; two arrows alone, twice a spline's
-        size = obj.Shape.BoundBox.DiagonalLength if not obj.Shape.isNull() else 0.0
-        return [_guide_overlay(obj, 2.0 * size)]
+        return [_guide_overlay(obj, 2.0 * _extent(obj))]
     return []
 
 
