@@ -22,7 +22,7 @@ from .links import followed_edge, followed_reader
 from .proxy import (FeatureProxy, InputProblem, add_edge_end, add_enum, add_geometry_index,
                     add_length, add_link, add_property, edge_end_choice, new_feature, read_only,
                     set_said)
-from .sources import gather_points
+from .sources import THOUSANDS, gather_points
 from .units import say
 
 
@@ -44,6 +44,12 @@ class FitProxy(FeatureProxy):
         if "CsvStamp" not in obj.PropertiesList:     # hidden output: setting it touches nothing
             obj.addProperty("App::PropertyString", "CsvStamp", "Input", "The CSV file's "
                             "modification time (ns) and size when it was last read", 4 | 8)
+        add_enum(obj, "Thousands", "Input",
+                 "How CsvFile groups thousands, as the command line's --thousands: auto = "
+                 "what the file shows (';' and tab separated files of decimal-comma locales: "
+                 "1.250,5 or 980;1.000 group by '.'; a file that does not show it is "
+                 "refused); . = '.' groups thousands (1.250 is 1250); none = '.' is a "
+                 "decimal point (1.250 is 1.25)", list(THOUSANDS), "auto")
         add_property(obj, "App::PropertyInteger", "SamplesPerEdge", "Input",
                      "Points sampled on each curved source edge (4 to 10000)", 60)
         add_enum(obj, "Model", "Fit",
@@ -151,7 +157,8 @@ class FitProxy(FeatureProxy):
         stamp = csv_stamp(obj.CsvFile) if obj.CsvFile else ""   # before it is read
         notes = []
         gathered = gather_points(obj.Source, obj.CsvFile, obj.SamplesPerEdge, link="Source",
-                                 element=element, notes=notes)
+                                 element=element, notes=notes,
+                                 thousands=THOUSANDS[obj.Thousands])
         edges = {}
         for key, prop in (("start", "StartTangent"), ("end", "EndTangent")):
             edge = followed_edge(obj, prop)

@@ -11,6 +11,8 @@ obj.Shape (a fit of a sketch edge in a Body at z = 100 tilted 30 deg lay 89 mm f
 edge drawn, its plane being the sketch's global placement)."""
 from __future__ import annotations
 
+import re
+
 import FreeCAD as App
 import Part
 
@@ -71,14 +73,22 @@ def sample_edges(edges, samples_per_edge):
     return dedup(pts), Part.Wire(ch).isClosed()
 
 
+# a CSV fit's Thousands property: its values and read_points' thousands for each
+THOUSANDS = {"auto": None, ".": ".", "none": ""}
+THOUSANDS_HINT = "(the fit's Thousands property: . or none)"
+_CLI_THOUSANDS = re.compile(r"\(command line: --thousands[^()]*(\([^()]*\)[^()]*)*\)")
+
+
 def gather_points(sources, csv_file="", samples_per_edge=60, link=None, element=None,
-                  notes=None):
+                  notes=None, thousands=None):
     """Points of a fit's input, in 3D, with what is known about them; ``link``: the
     feature's property the sources come from (None: a selection; see nothing_read);
     ``element``: the function (obj, name) that reads a picked sub-element (global_element;
     a feature's: links.followed_reader, its sketch geometry followed); ``notes``: a list
     the user's notes on what was left out are appended to (a whole sketch's edges beside
-    its points).
+    its points); ``thousands``: how a CSV file groups thousands, read_points' (None: the
+    file decides, '.', '' none; a file that does not show it is refused naming ``link``'s
+    feature's Thousands property, THOUSANDS).
 
     Returns (points: list[App.Vector], plane: App.Placement or None (a sketch's),
     ordered: True (in curve order), False (none: curve_order's) or None (a file's order,
@@ -87,9 +97,11 @@ def gather_points(sources, csv_file="", samples_per_edge=60, link=None, element=
     if csv_file:
         read_points = binding_module("io").read_points
         try:
-            arr = read_points(csv_file, min_points=1)
+            arr = read_points(csv_file, min_points=1, thousands=thousands)
         except ValueError as exc:
-            raise InputProblem(str(exc)) from None
+            # the library's way out names its own options (--thousands, read_points'
+            # thousands=): here it is the fit's property
+            raise InputProblem(_CLI_THOUSANDS.sub(THOUSANDS_HINT, str(exc))) from None
         pts = [App.Vector(*(list(map(float, r)) + [0.0] * (3 - len(r)))) for r in arr]
         closed = ends_meet(pts)
         return pts, None, None, closed

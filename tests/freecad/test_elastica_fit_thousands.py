@@ -1,0 +1,63 @@
+"""freecadcmd -t test: a fit of a ';' separated point file whose numbers do not show whether
+'.' groups thousands (every one d.ddd: Excel's #.##0 in a decimal-comma locale, or three
+decimals) is refused naming the fit's Thousands property (it named the command line's
+--thousands and read_points' thousands=, which the workbench has not: QA), and read as the
+property says: '.' groups thousands, none reads decimal points, auto what the file shows."""
+import math
+import unittest
+
+import elastica_samples as S
+from freecad.elastica import fit as Fi
+
+XS = range(1, 10)
+
+
+def _ys(x):
+    return 2.0 + 0.5 * math.sin(x)
+
+
+class FitThousandsTest(S.DocTest):
+    doc_name = "ElasticaFitThousands"
+
+    def assertPoints(self, f, xy):
+        """The fit's DataPoints are ``xy`` (to 1e-9 mm: they pass through its plane)."""
+        self.assertEqual(len(f.DataPoints), len(xy))
+        for p, (x, y) in zip(f.DataPoints, xy):
+            self.assertLess(max(abs(p.x - x), abs(p.y - y), abs(p.z)), 1e-9, (p, x, y))
+
+    def _file(self, rows):
+        path = S.temp_path(self, "scan.csv")
+        with open(path, "w") as fh:
+            fh.write("x;y\n" + "".join(f"{r}\n" for r in rows))
+        return path
+
+    def test_an_ambiguous_file_names_the_property_and_reads_as_it_says(self):
+        path = self._file(f"{x}.000;{_ys(x):.3f}" for x in XS)
+        f = Fi.make(self.doc, [], csv_file=path, Model="smooth")
+        self.assertEqual(f.getEnumerationsOfProperty("Thousands"), ["auto", ".", "none"])
+        self.assertEqual(f.Thousands, "auto")
+        self.doc.recompute()
+        self.assertTrue(f.Status.startswith("error") and "Thousands property" in f.Status,
+                        f.Status)
+        self.assertNotIn("--thousands", f.Status)
+        self.assertNotIn("read_points", f.Status)
+        f.Thousands = "."
+        self.doc.recompute()
+        self.assertFalse(f.Status.startswith("error"), f.Status)
+        self.assertPoints(f, [(1000.0 * x, float(f"{_ys(x):.3f}") * 1000) for x in XS])
+        f.Thousands = "none"
+        self.doc.recompute()
+        self.assertFalse(f.Status.startswith("error"), f.Status)
+        self.assertPoints(f, [(float(x), float(f"{_ys(x):.3f}")) for x in XS])
+
+    def test_auto_reads_what_the_file_shows(self):
+        """A decimal comma shows the grouping (1.000,5): auto reads it so, as the command
+        line does."""
+        path = self._file(f"{x}.000,5;{x * x},25" for x in XS)
+        f = Fi.make(self.doc, [], csv_file=path, Model="smooth")
+        self.doc.recompute()
+        self.assertFalse(f.Status.startswith("error"), f.Status)
+        self.assertPoints(f, [(1000.0 * x + 0.5, x * x + 0.25) for x in XS])
+
+if __name__ == "__main__":
+    unittest.main()
