@@ -1194,6 +1194,11 @@ def run():
     import gui_recording
     gui_recording.run_all(sys.modules[__name__])
 
+    # a bound field's f(x) mark opens the expression editor; a fit in a placed Part drawn on
+    # its points
+    import gui_part_marks
+    gui_part_marks.run_all(sys.modules[__name__])
+
 
 def main():
     ok = True

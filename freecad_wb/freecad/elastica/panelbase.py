@@ -248,7 +248,44 @@ class Panel:
     def mark_bound(self, box, prop):
         expr = self.expression(prop)
         if expr:
+            box.bind_mark(expr, lambda: self.edit_expression(box, prop))
+
+    def edit_expression(self, box, prop):
+        """FreeCAD's expression editor (Gui::Dialog::DlgExpressionInput) on ``prop``, as the
+        f(x) mark of its own boxes opens it (a Pad's Length): its OK sets the expression,
+        its Clear removes it, in the panel's transaction (Cancel undoes it); then the box
+        follows (expression_edited). FreeCAD 0.20's Python has no call that opens the
+        dialog (openFormulaDialog is no slot): a hidden Gui::QuantitySpinBox bound to the
+        property (Gui.ExpressionBinding) is sent '=', on which FreeCAD's boxes open it."""
+        helper = Gui.UiLoader().createWidget("Gui::QuantitySpinBox", box)
+        helper.setGeometry(box.rect())          # the dialog opens over the box
+        helper.hide()
+        self._binding = Gui.ExpressionBinding(helper)
+        self._binding.bind(self.obj, prop)
+        QtGui.QApplication.sendEvent(helper, QtGui.QKeyEvent(
+            QtCore.QEvent.KeyPress, QtCore.Qt.Key_Equal, QtCore.Qt.NoModifier, "="))
+        dialog = helper.findChild(QtGui.QDialog)
+        if dialog is None:
+            helper.deleteLater()
+            return
+        # after the helper's own slot (connected first) has set the expression
+        dialog.finished.connect(lambda _result: QtCore.QTimer.singleShot(
+            0, lambda: self.expression_edited(box, prop, helper)))
+
+    def expression_edited(self, box, prop, helper):
+        """The expression editor closed: the box marked with the expression of now, or
+        writable again without one, and the preview recomputed with its value."""
+        helper.deleteLater()
+        if self.gone:
+            return
+        expr = self.expression(prop)
+        if expr:
             box.bind_mark(expr)
+        else:
+            box.unbind_mark()
+        self.obj.touch()
+        self.update()
+        self.show_value(box, float(getattr(self.obj, prop)))
 
     def checked_number(self, grid, text, check_prop, prop, lo, hi, step, unit, tip, when=None):
         """A check box (the boolean check_prop) beside a spin box (the float prop), which

@@ -151,16 +151,31 @@ class NumberBox(QtGui.QDoubleSpinBox):
     def fixup(self, text):
         return self.textFromValue(self.value())
 
-    def bind_mark(self, expression):
+    _mark = None                         # the bound-expression mark's action (bind_mark)
+
+    def bind_mark(self, expression, edit=None):
         """Bound to a property's ``expression``: read-only, FreeCAD's bound-expression
         mark in the box and the expression in its tooltip, as its own Quantity boxes show
-        a bound property (the panel does not write it: set() skips bound properties)."""
+        a bound property (the panel does not write it: set() skips bound properties).
+        ``edit``: what clicking the mark does (FreeCAD's expression editor,
+        panelbase.Panel.edit_expression), as the f(x) mark of FreeCAD's boxes."""
+        if self._mark is None:
+            self._tip = self.toolTip()
+            self._mark = self.lineEdit().addAction(QtGui.QIcon(":/icons/bound-expression.svg"),
+                                                   QtGui.QLineEdit.TrailingPosition)
+            if edit is not None:
+                self._mark.triggered.connect(edit)
         self.setReadOnly(True)
-        mark = QtGui.QIcon(":/icons/bound-expression.svg")
-        self.lineEdit().addAction(mark, QtGui.QLineEdit.TrailingPosition)
-        self.setToolTip(f"Bound to the expression ={expression} (read-only here: change or "
-                        "clear it in the property editor's expression dialog, Ctrl+=).\n"
-                        + self.toolTip())
+        self.setToolTip(f"Bound to the expression ={expression} (read-only here: click its "
+                        "f(x) mark to change or clear it).\n" + self._tip)
+
+    def unbind_mark(self):
+        """No longer bound (its expression cleared): writable, unmarked, its own tooltip."""
+        if self._mark is not None:
+            self.lineEdit().removeAction(self._mark)
+            self._mark = None
+            self.setReadOnly(False)
+            self.setToolTip(self._tip)
 
 
 class DecadeBox(NumberBox):

@@ -1,0 +1,121 @@
+"""Display checks of the GUI smoke test (gui_smoke.py calls run_all):
+
+- a bound field's f(x) mark opens FreeCAD's expression editor, as a Pad's Length's does
+  (it did nothing): its OK sets the expression (the box shows its value, marked), its
+  Clear removes it (the box writable again, unmarked), and the panel's Cancel undoes both;
+- a fit moved into a placed App::Part is drawn on its points, its overlay (the fitted
+  points' markers) too: its Shape was global, drawn again under the Part's placement.
+
+Screenshots: gui_expression_editor.png (the editor open over the Tension box),
+gui_fit_in_placed_part.png (the fit, its markers and its points, the Part moved and turned)."""
+import math
+
+import FreeCAD as App
+import FreeCADGui as Gui
+from PySide import QtGui
+
+import elastica_samples as S
+
+G = None            # the gui_smoke module (check, wait, screenshot, ...)
+PTS = [(x, 25 * math.sin(x / 40.0) + 0.002 * x * x) for x in range(0, 130, 10)]
+
+
+def _editor(box):
+    """FreeCAD's expression editor open over ``box``, or None."""
+    found = [d for d in box.findChildren(QtGui.QDialog)
+             if d.metaObject().className() == "Gui::Dialog::DlgExpressionInput"
+             and d.isVisible()]
+    return found[0] if found else None
+
+
+def expression_mark(doc):
+    """The spline's Tension bound to a spreadsheet cell; its mark clicked."""
+    from freecad.elastica import commands as C, taskpanels as T
+    ss = doc.addObject("Spreadsheet::Sheet", "Sheet")
+    ss.set("A1", "0.001")
+    ss.setAlias("A1", "sigma")
+    dots = S.points_sketch(doc, PTS, "MarkDots", App.Placement())
+    App.setActiveDocument(doc.Name)
+    sp = C.spline_sources([(dots, [])], open_panel=False)
+    sp.setExpression("Tension", "Sheet.sigma")
+    doc.recompute()
+    G.check(abs(sp.Tension - 0.001) < 1e-15, f"the bound tension ({sp.Tension})")
+    Gui.ActiveDocument.setEdit(sp.Name)
+    G.wait(300)
+    panel = T.CURRENT[0]
+    box = panel.tension
+    marks = box.lineEdit().actions()
+    G.check(box.isReadOnly() and len(marks) == 1 and _editor(box) is None,
+            "a bound Tension: read-only, marked, no editor open yet")
+    marks[0].trigger()
+    G.pump(10)
+    editor = _editor(box)
+    G.check(editor is not None, "its f(x) mark opens FreeCAD's expression editor")
+    line = editor.findChild(QtGui.QLineEdit, "expression")
+    G.check(line is not None and line.text() == "Sheet.sigma",
+            f"the editor holds the expression ({line.text() if line else None!r})")
+    line.setText("Sheet.sigma * 3")
+    G.pump(10)
+    G.screenshot("gui_expression_editor.png")
+    editor.findChild(QtGui.QPushButton, "okBtn").click()
+    G.wait(600)
+    G.check(dict(sp.ExpressionEngine).get("Tension") == "Sheet.sigma * 3"
+            and abs(sp.Tension - 0.003) < 1e-15 and box.text() == "0.003 1/mm\u00b2"
+            and box.isReadOnly() and "Sheet.sigma * 3" in box.toolTip()
+            and len(box.lineEdit().actions()) == 1,
+            f"its OK binds the new expression, the box shows it ({box.text()!r}, "
+            f"{sp.Tension}, {dict(sp.ExpressionEngine)})")
+    box.lineEdit().actions()[0].trigger()
+    G.pump(10)
+    editor = _editor(box)
+    G.check(editor is not None, "the mark opens the editor again")
+    editor.findChild(QtGui.QPushButton, "discardBtn").click()
+    G.wait(600)
+    G.check("Tension" not in dict(sp.ExpressionEngine) and not box.isReadOnly()
+            and len(box.lineEdit().actions()) == 0 and "Bound" not in box.toolTip(),
+            f"its Clear unbinds: the box writable, unmarked ({dict(sp.ExpressionEngine)})")
+    panel.reject()
+    G.wait(300)
+    G.check(dict(sp.ExpressionEngine).get("Tension") == "Sheet.sigma"
+            and abs(sp.Tension - 0.001) < 1e-15,
+            f"Cancel undoes the panel's expression edits ({dict(sp.ExpressionEngine)}, "
+            f"{sp.Tension})")
+
+
+def fit_in_placed_part(doc):
+    """A fit and its overlay in a Part moved and turned, against its points as drawn."""
+    from freecad.elastica import commands as C
+    dots = S.points_sketch(doc, PTS, "PartDots", App.Placement())
+    App.setActiveDocument(doc.Name)
+    fit = C.fit_sources([(dots, [])], open_panel=False, Model="smooth")
+    doc.recompute()
+    part = doc.addObject("App::Part", "Part")
+    part.Placement = App.Placement(App.Vector(80, -60, 30), App.Rotation(App.Vector(1, 1, 0), 50))
+    part.addObject(fit)
+    doc.recompute()
+    G.pump(10)
+    plc = part.getGlobalPlacement()
+    shape = fit.Shape.copy()
+    shape.transformShape(plc.toMatrix(), True)
+    drawn = [dots.getGlobalPlacement().multVec(App.Vector(x, y, 0)) for x, y in PTS]
+    off = S.distance_to_shape([tuple(p) for p in drawn], shape)
+    G.check(off < 0.5, f"a fit in a placed Part is drawn on its points ({off:.3g} mm)")
+    # the markers: the overlay's coordinates, under the Part's placement, are the points
+    group = fit.ViewObject.Proxy._groups[0]
+    marks = [plc.multVec(App.Vector(*group["coords"].point[i].getValue()))
+             for i in range(group["points"].numPoints.getValue())]
+    worst = max(min((m - p).Length for p in drawn) for m in marks) if marks else 1e9
+    G.check(len(marks) == len(PTS) and worst < 1e-4,
+            f"its point markers are drawn on the points ({len(marks)}, {worst:.3g} mm)")
+    Gui.ActiveDocument.ActiveView.viewIsometric()
+    Gui.SendMsgToActiveView("ViewFit")
+    G.screenshot("gui_fit_in_placed_part.png")
+
+
+def run_all(smoke):
+    global G
+    G = smoke
+    doc = S.new_doc("ElasticaPartMarks")
+    expression_mark(doc)
+    fit_in_placed_part(doc)
+    App.closeDocument(doc.Name)
