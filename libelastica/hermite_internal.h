@@ -66,6 +66,24 @@ int el__hermite_shape_eval_to(const hprob *pr, double qs, double fine_below, hst
 /* f alone in the x chart: el__hermite_curvdata then el__hermite_shape_eval's st.f, the same
  * bits (test_hermite_tension.c); NAN and the status where they fail. */
 int el__hermite_x_objective(const hprob *pr, double x, int b, double qs, double *f);
+/* el__hermite_x_objective at the n abscissae x[0..n) (hermite_lanes.c), two at a time:
+ * the same bits, NAN where it fails. */
+void el__hermite_x_objectives(const hprob *pr, const double *x, int n, int b, double qs, double *f);
+/* A piece of a branch searched in the x chart (hermite_tension.c): its ends, the separatrix
+ * crossings at them (NAN: none), its sample count ns (ns + 1 samples), its kind of curve
+ * (CLASS_*). */
+typedef struct { double a, b, sep_lo, sep_hi; int ns, cls; } hpiece;
+/* cos(pi / ns) for ns < HERMITE_NCOS, cached per solve in cosn (NAN: not yet) */
+#define HERMITE_NCOS 32
+#define HERMITE_GATHER_MAX 1024
+/* The bracketing samples of the np pieces (hermite_lanes.c): piece i's ns + 1 abscissae
+ * (Chebyshev spacing, the ends nudged inside: the split points are where the objective is
+ * singular or not differentiable) at xs + off[i], room free places after each (the sum of
+ * ns + 1 + room at most HERMITE_GATHER_MAX), off[i] = -1 for a piece too narrow to sample;
+ * the objective there with Carlson's precision qs into fs, by el__hermite_x_objectives on
+ * the samples of all pieces of one kind of curve together. */
+void el__hermite_sample_pieces(const hprob *pr, int b, const hpiece *pc, int np, int room, double qs, double *cosn,
+                               double *xs, double *fs, int *off);
 int el__hermite_full_eval(const hprob *pr, double x, int b, hstate *st);
 void el__hermite_set_case(hprob *pr);
 /* el__hermite_full_eval with the gradient of L, E and f (and sigma, and |F| - sigma)

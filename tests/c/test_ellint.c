@@ -3,6 +3,7 @@
  * argument ranges the library uses and beyond. */
 #include "testutil.h"
 #include "internal.h"
+#include "lanes.h"
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_sf_ellint.h>
 #include <stdio.h>
@@ -120,6 +121,58 @@ START_TEST(carlson_fast_loop_is_plain_loop)
 END_TEST
 
 /* K = R_F(0, k'^2, 1), D = R_D(0, k'^2, 1) / 3 (DLMF 19.25.1), k from 0 to 1 - 1e-15. */
+/* el__carlson_fd2 (two argument pairs side by side, hermite_lanes.c's samples) against
+ * el__carlson_fd lane by lane: the same bits, and ok where it gives EL_OK, over the
+ * objective's arguments (x = cos^2 in [0, 1], y = k'^2 + k^2 x) at every k including
+ * k -> 1 and k'^2 -> 0, arguments over 600 decades, pairs whose lanes stop after different
+ * numbers of duplication steps, and bad arguments (negative, both 0, NaN, infinite, a sum
+ * beyond DBL_MAX) beside good ones, at the coarse and the full precision. */
+START_TEST(carlson_two_lanes_equal_the_scalar)
+{
+    unsigned long long st = 99;
+    /* (and 1e308 twice: their sum beyond DBL_MAX; one such value beside 0 is left out, where
+     * the scalar loop does not end either: 80 times its deviation overflows) */
+    static const double bad[] = {-1e-300, -1.0, 0.0, NAN, INFINITY, 1e308};
+    long nok = 0, nbad = 0;
+    for (int t = 0; t < 200000; t++) {
+        double x[2], y[2];
+        for (int l = 0; l < 2; l++) {
+            const int kind = (int)test_uniform(&st, 0.0, 4.0);
+            if (kind == 0) {                    /* the objective's: cos^2, k'^2 + k^2 cos^2 */
+                const double c2 = test_uniform(&st, 0.0, 1.0), kc2 = pow(10.0, test_uniform(&st, -300.0, 0.0));
+                x[l] = t % 7 == 0 ? 0.0 : c2;
+                y[l] = kc2 + (1.0 - kc2) * x[l];
+            } else if (kind == 1) {             /* wide */
+                x[l] = pow(10.0, test_uniform(&st, -300.0, 300.0));
+                y[l] = pow(10.0, test_uniform(&st, -300.0, 300.0));
+            } else if (kind == 2) {             /* near 1: few steps */
+                x[l] = 1.0 + test_uniform(&st, -1e-3, 1e-3);
+                y[l] = 1.0 + test_uniform(&st, -1e-3, 1e-3);
+            } else {                            /* bad, or 0 beside a positive */
+                const int i = (int)test_uniform(&st, 0.0, 5.0), j = (int)test_uniform(&st, 0.0, 5.0);
+                x[l] = t % 11 == 0 ? bad[5] : bad[i];
+                y[l] = t % 11 == 0 ? bad[5] : t % 3 ? bad[j] : test_uniform(&st, 0.0, 2.0);
+            }
+        }
+        const double qs = t % 2 ? 1.0 : 0.1;
+        el_d2 rf2, rd2;
+        el_m2 ok2;
+        el__carlson_fd2((el_d2){x[0], x[1]}, (el_d2){y[0], y[1]}, qs, &rf2, &rd2, &ok2);
+        for (int l = 0; l < 2; l++) {
+            double rf, rd;
+            const int rc = el__carlson_fd(x[l], y[l], 1.0, qs, &rf, &rd);
+            ck_assert_msg((rc == EL_OK) == (ok2[l] != 0), "(%g, %g): status %d, ok %lld", x[l], y[l], rc, ok2[l]);
+            if (rc) { nbad++; continue; }
+            const double a = rf2[l], b = rd2[l];
+            ck_assert_msg(memcmp(&a, &rf, sizeof a) == 0 && memcmp(&b, &rd, sizeof b) == 0,
+                          "(%.17g, %.17g) qs %g: R_F %.17g / %.17g, R_D %.17g / %.17g", x[l], y[l], qs, a, rf, b, rd);
+            nok++;
+        }
+    }
+    ck_assert_msg(nok > 200000 && nbad > 100000, "%ld ok, %ld bad", nok, nbad);   /* both outcomes covered */
+}
+END_TEST
+
 START_TEST(complete_integrals_match_gsl)
 {
     gsl_set_error_handler_off();
@@ -193,6 +246,7 @@ int main(void)
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, carlson_matches_gsl);
     tcase_add_test(tc, carlson_fast_loop_is_plain_loop);
+    tcase_add_test(tc, carlson_two_lanes_equal_the_scalar);
     tcase_add_test(tc, complete_integrals_match_gsl);
     tcase_add_test(tc, carlson_rejects_bad_arguments);
     suite_add_tcase(s, tc);

@@ -635,6 +635,49 @@ START_TEST(x_objective_and_class_equal_the_plain_evaluation)
 }
 END_TEST
 
+/* el__hermite_x_objectives (hermite_lanes.c: the bracketing samples two at a time) against
+ * el__hermite_x_objective one by one: the same bits (NAN where it fails), at the coarse
+ * and the full precision, on every branch of the six families' problems (cases 1, 2 and
+ * 3), on runs of 1 to 9 abscissae across [-1.1 B, 1.1 B]: pairs of two inflectional, two
+ * non-inflectional, mixed (left to the scalar evaluation) and failing lanes, odd counts. */
+START_TEST(x_objectives_equal_the_scalar_objective)
+{
+    unsigned long long st = 1701;
+    long nsame = 0, nfail = 0, ninfl = 0, nnon = 0;
+    for (int family = 0; family < 6; family++)
+        for (int t = 0; t < 60; t++) {
+            double p1[2], t1[2], sigma;
+            draw(&st, family, p1, t1, &sigma);
+            hprob pr = normalised_problem(p1, t1, sigma);
+            if (t % 10 == 0) {   /* case 3: P2 = 0, V1 = 0 */
+                pr.P1 = 1.0; pr.P2 = 0.0; pr.V1 = 0.0; pr.V2 = t % 20 ? 1.0 : -1.0;
+                el__hermite_set_case(&pr);
+            }
+            if (el__hermite_kappa_bound(pr.sigma, pr.Lmin, &pr.B) || pr.B < 0.0) continue;
+            for (int b = 0; b < 4; b++)
+                for (int r = 0; r < 60; r++) {
+                    double x[9], f[9];
+                    const int n = 1 + (int)test_uniform(&st, 0.0, 9.0);
+                    const double c = pr.B * test_uniform(&st, -1.1, 1.1), w = pr.B * pow(10.0, test_uniform(&st, -6.0, 0.0));
+                    for (int i = 0; i < n; i++) x[i] = c + w * test_uniform(&st, -1.0, 1.0);
+                    const double qs = r % 2 ? 1.0 : 0.1;
+                    el__hermite_x_objectives(&pr, x, n, b, qs, f);
+                    for (int i = 0; i < n; i++) {
+                        double g;
+                        hstate hs;
+                        el__hermite_x_objective(&pr, x[i], b, qs, &g);
+                        if (isnan(g)) { ck_assert(isnan(f[i])); nfail++; continue; }
+                        ck_assert_msg(memcmp(&f[i], &g, sizeof g) == 0, "x %.17g b %d: %.17g, %.17g", x[i], b, f[i], g);
+                        nsame++;
+                        if (!el__hermite_curvdata(&pr, x[i], b, &hs) && !el__hermite_shape_eval(&pr, qs, &hs))
+                            hs.infl ? ninfl++ : nnon++;
+                    }
+                }
+        }
+    ck_assert(nsame > 100000 && nfail > 10000 && ninfl > 10000 && nnon > 10000);   /* every outcome covered */
+}
+END_TEST
+
 /* el__smooth_ends (the end-residual checks' evaluation, smooth.c) against
  * el_smooth_eval at s = 0 and s = length: the same status and, where EL_OK, the same bits,
  * over curves of every kind: |k| < 1, near and at 1, > 1 (theta's branch), k = 0 and
@@ -679,6 +722,7 @@ int main(void)
     tcase_add_loop_test(tc, tension_roots_exact_and_equal_to_the_bisection, 0, 6);
     tcase_add_test(tc, steep_root_next_to_a_close_pair_is_kept);
     tcase_add_test(tc, x_objective_and_class_equal_the_plain_evaluation);
+    tcase_add_test(tc, x_objectives_equal_the_scalar_objective);
     tcase_add_test(tc, smooth_ends_equal_el_smooth_eval);
     tcase_add_test(tc, kappa_bound_bounds_the_period_tightly);
     tcase_add_test(tc, kappa_bound_equals_the_plain_brent);
