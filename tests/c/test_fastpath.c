@@ -411,8 +411,9 @@ static void discrete_reference(const el_discrete_params *p, size_t n, double *xy
 {
     const double k = p->k, h = p->h, c = cos(p->phi), s = sin(p->phi);
     double x = p->x0, y = p->y0, dz[2] = {0, 0}, dq[2] = {0, 0}, dk[2] = {0, 0};
-    el_jacobi a, ak, b, bk, before;
+    el_jacobi a, ak, b, bk, before, zv;
     require(el_jacobi_eval(p->q, k, &a, NULL, &ak) == EL_OK, "el_jacobi_eval failed");
+    require(el_jacobi_eval(p->z, k, &zv, NULL, NULL) == EL_OK, "el_jacobi_eval failed");
     before = a;
     for (size_t i = 0; i < n; i++) {
         double *rx = jac + 14 * i, *ry = rx + 7;
@@ -423,7 +424,9 @@ static void discrete_reference(const el_discrete_params *p, size_t n, double *xy
         xy[2 * i] = x; xy[2 * i + 1] = y;
         if (i + 1 == n) break;
         require(el_jacobi_eval(p->q + p->z * (double)(i + 1), k, &b, NULL, &bk) == EL_OK, "el_jacobi_eval failed");
-        if (i >= 1) { /* interior vertex i: K_i = a_{i+1} - a_{i-1} */
+        if (i >= 1 && fabs(zv.dn) >= DBL_MIN) /* interior vertex i: tan(K_i/2) = k sn(z) cn(u_i) / dn(z) */
+            kappa[i - 1] = 2.0 / h * (k * zv.sn / zv.dn * a.cn);
+        else if (i >= 1) { /* K_i = a_{i+1} - a_{i-1} (discrete.c where dn(z) underflows) */
             const double sinK = k * (b.sn * before.dn - b.dn * before.sn), cosK = b.dn * before.dn + k * k * b.sn * before.sn;
             kappa[i - 1] = 2.0 / h * sinK / (1.0 + cosK);
         }
