@@ -87,7 +87,9 @@ def _parse_text(text: str, name: str, thousands: Optional[str] = None) -> np.nda
         fields = [f.strip() for f in fields if f.strip() != ""]
         if fields and not fields[0].startswith("#"):
             split.append((lineno, fields))
-    if _thousands(split, "\t" if delim is None and "\t" in sample else delim, thousands, name):
+    tsep = "\t" if delim is None and "\t" in sample else delim
+    if _thousands(_coordinate_fields(split) if thousands is None and tsep in (";", "\t") else split,
+                  tsep, thousands, name):
         split = [(ln, [f.replace(".", "").replace(",", ".") if _GROUPED.fullmatch(f) else f
                        for f in fields]) for ln, fields in split]
     skipped = None      # the number of the first line skipped as a title or header
@@ -149,8 +151,36 @@ def _parse_text(text: str, name: str, thousands: Optional[str] = None) -> np.nda
     return out
 
 
+def _coordinate_fields(split) -> list:
+    """The fields of ``split``'s data rows ((line, fields) rows) in the columns that become
+    coordinates, as :func:`_parse_text` picks them: the rows from the first holding a number
+    (a decimal comma or '.'-grouped field counts: 1,5, 1.250,5, 1.234.567), the columns the
+    header above names x, y (z), else all of them. An id, a date, a count beside the
+    coordinates then neither blocks nor flips :func:`_thousands`' decision."""
+    def numeric(f):
+        return _is_number(f) or bool(_DECIMAL_COMMA.fullmatch(f) or _GROUPED.fullmatch(f))
+    header, rows = None, []
+    for lineno, fields in split:
+        if not rows and not any(map(numeric, fields)) and \
+                not all(_is_number(w) for f in fields for w in f.split()):
+            header = fields
+            continue
+        rows.append((lineno, fields))
+    if not rows:
+        return split
+    counts = {}
+    for _, f in rows:
+        counts[len(f)] = counts.get(len(f), 0) + 1
+    width = max(counts, key=counts.get)
+    cols = axis_columns(header) if header is not None and len(header) == width else None
+    if cols is None:
+        return rows
+    return [(ln, [f[c] for c in cols if c < len(f)]) for ln, f in rows]
+
+
 def _thousands(split, delim, thousands: Optional[str], name: str) -> bool:
-    """Whether '.' groups thousands in the fields of ``split`` ((line, fields) rows).
+    """Whether '.' groups thousands in the fields of ``split`` ((line, fields) rows: the
+    coordinate columns' alone, :func:`_coordinate_fields`).
     ``thousands``: '.' yes, '' no, None: what the file shows, in ';' and tab separated
     files (the decimal-comma locales' separators) holding a field of the grouped form
     (_GROUPED): no when some field is a number the grouping cannot write with a decimal
@@ -289,7 +319,8 @@ def read_points(path: PathLike, min_points: int = 3, data: Optional[bytes] = Non
     where it shows it (a decimal comma ``1.250,5``, a ``1.234.567``, or a column holding
     both ``980`` and ``1.000``); it is read with decimal points where a field shows that
     (``0.125``, ``1.5``, ``1234``); one that does not decide (every number ``d.ddd``) is
-    refused naming the line. ``thousands='.'`` reads dots as grouping, ``thousands=''``
+    refused naming the line. Only the columns read as coordinates decide (an id, a date
+    or a count beside them, ``1.001`` or ``20240517``, does not). ``thousands='.'`` reads dots as grouping, ``thousands=''``
     as decimal points, whatever the file.
     """
     name = "standard input" if str(path) == "-" else str(path)

@@ -82,3 +82,31 @@ def test_no_data_rows_names_the_first_skipped_line(tmp_path):
     # the file's own line, as written (main: the fields joined again, 'x;y')
     with pytest.raises(InputError, match=r"no data rows \(line 1, '\"x\" ; \"y\"', and"):
         _read(tmp_path, '"x" ; "y"\n1.2.3;4.5.6\n')
+
+
+@pytest.mark.parametrize("text, want", [
+    # an id column of 1.001's (part numbers) beside coordinates under 1000: refused before
+    # ("'1.001' is 1.001 or 1001"), though no coordinate is written d.ddd
+    ("id;x;y\n1.001;12;30\n1.002;15;34\n1.003;19;37\n", [[12, 30], [15, 34], [19, 37]]),
+    ("Nr\ty\tx\n1.001\t30\t12\n1.002\t34\t15\n", [[12, 30], [15, 34]]),
+    # a date column (yyyymmdd: an integer >= 1000) made a grouped x column read 1.000 as 1.0
+    ("date;x;y\n20240517;980;5\n20240517;1.000;7\n20240518;1.020;9\n",
+     [[980, 5], [1000, 7], [1020, 9]]),
+    # a 1.5 in a weight column decided 'decimal points' for a grouped x column
+    ("x;y;w\n980;5;1.5\n1.000;7;2.5\n1.020;9;0.5\n", [[980, 5], [1000, 7], [1020, 9]]),
+])
+def test_columns_beside_the_coordinates_do_not_decide(tmp_path, text, want):
+    """Only the columns read as coordinates decide whether '.' groups thousands: an id, a
+    date, a count beside them neither blocks the reading nor flips it."""
+    assert np.array_equal(_read(tmp_path, text), np.array(want, dtype=float))
+
+
+def test_an_id_column_does_not_decide_for_undecided_coordinates(tmp_path):
+    """An id column of 1.234.567's (only grouping writes them) read coordinates all written
+    d.ddd as grouped (1250 for what may be 1.25): they alone do not decide, so the file is
+    refused naming the line, as without the id column."""
+    text = "id;x;y\n1.234.567;1.250;2.000\n1.234.568;1.500;2.250\n"
+    with pytest.raises(InputError, match=r"line 2: '1\.250' is 1\.25 or 1250"):
+        _read(tmp_path, text)
+    assert np.array_equal(_read(tmp_path, text, thousands="."), [[1250, 2000], [1500, 2250]])
+    assert np.array_equal(_read(tmp_path, text, thousands=""), [[1.25, 2.0], [1.5, 2.25]])
