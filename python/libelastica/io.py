@@ -320,8 +320,8 @@ def read_points(path: PathLike, min_points: int = 3, data: Optional[bytes] = Non
     both ``980`` and ``1.000``); it is read with decimal points where a field shows that
     (``0.125``, ``1.5``, ``1234``); one that does not decide (every number ``d.ddd``) is
     refused naming the line. Only the columns read as coordinates decide (an id, a date
-    or a count beside them, ``1.001`` or ``20240517``, does not). ``thousands='.'`` reads dots as grouping, ``thousands=''``
-    as decimal points, whatever the file.
+    or a count beside them, ``1.001`` or ``20240517``, does not). ``thousands='.'`` reads
+    dots as grouping, ``thousands=''`` as decimal points, whatever the file.
     """
     name = "standard input" if str(path) == "-" else str(path)
     data = read_input(path) if data is None else data
