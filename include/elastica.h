@@ -1615,8 +1615,9 @@ typedef struct el_affine_options {
                               converging away from the inflections. */
     int fit_ends;          /* 1: adjust each piece's A (secant on log|A|, t1 re-optimised
                               each time) until its last vertex lands on the piece end
-                              (inflection or curve end), as §4.4 allows; 0 (default): the
-                              paper's A = (S/n)^3, the last vertex lands near the end */
+                              (inflection or curve end), the polyline's end within half a
+                              sample (none: EL_EDOM), as §4.4 allows; 0 (default): the paper's
+                              A = (S/n)^3, the last vertex lands near the end */
     int optimise;          /* 1 (default): t1 minimises psi; 0: t1 stays at its start value
                               (affine length cbrt|A| along f~), the simple construction of
                               Craizer et al. the paper improves on (for comparison) */
@@ -1677,7 +1678,12 @@ typedef struct el_affine_result {
  * the construction left the curve: n too small for the curve, e.g. fewer than
  * about 3 vertices per turn of the tangent; with fit_ends, no A lands a piece's
  * last vertex within half a sample of the piece end with none before it past
- * the end; n > EL_AFFINE_MAX_EDGES, refused
+ * the end (past it: the vertices ran on along f~'s last parabola continued), or
+ * the polyline's last vertex more than half a sample short of its end (the last
+ * sample, or the inflection where the end piece is left out: n edges cannot turn
+ * as far, e.g. 8 on a circle turning 4.2 times end at t = 99.7 of 159; an inner
+ * piece may end short of its inflection: the next starts at that vertex);
+ * n > EL_AFFINE_MAX_EDGES, refused
  * at once; samples out of range (above), or a tangent whose largest component
  * is outside [1e-150, 1e150] and not 0); EL_ENOMEM; EL_EINTERNAL (GSL).
  * Cost: about (opt->max_iter + 25) (n + nsamples) steps (x 30 with fit_ends).

@@ -376,6 +376,26 @@ def _is_curve(c, name: str) -> bool:
     return hasattr(c, "curvature") and hasattr(c, "length")
 
 
+def _curve_samples(c, infl_s: np.ndarray, n: int, samples_per_vertex: int):
+    """affine_polyline's samples of an elastica: the arc lengths s of f~'s samples (f~(j) =
+    c(s[j])), about samples_per_vertex x n, >= 3 per inflection-free piece, each inflection
+    (``infl_s``) a sample; and those samples' indices (f~'s inflections). The curve's end is
+    f~'s t = len(s) - 1."""
+    bounds = np.concatenate([[0.0], infl_s, [c.length]])
+    total = max(samples_per_vertex * n, 4 * (len(bounds) - 1))
+    lens = np.diff(bounds)
+    counts = np.maximum(3, np.round(total * lens / c.length).astype(int))
+    s_parts, idx = [], []
+    start = 0
+    for p in range(len(lens)):
+        seg = np.linspace(bounds[p], bounds[p + 1], counts[p] + 1)
+        s_parts.append(seg if p == 0 else seg[1:])
+        start += counts[p]
+        if p + 1 < len(lens):
+            idx.append(start)
+    return np.concatenate(s_parts), idx
+
+
 def affine_polyline(curve_or_points, n: int, samples_per_vertex: int = 20,
                     split_inflections: bool = True, skip: int = 2, max_iter: int = 100,
                     inflections: Optional[Sequence[int]] = None, exact_tangents: bool = True,
@@ -422,19 +442,7 @@ def affine_polyline(curve_or_points, n: int, samples_per_vertex: int = 20,
         if not np.any(c.curvature(np.linspace(0.0, c.length, 101))):
             raise DomainError(lib.EL_EDOM, "affine_polyline: the elastica is straight (no "
                               "affine arc length: seed 002 (1))")
-        bounds = np.concatenate([[0.0], infl_s, [c.length]])
-        total = max(samples_per_vertex * n, 4 * (len(bounds) - 1))
-        lens = np.diff(bounds)
-        counts = np.maximum(3, np.round(total * lens / c.length).astype(int))
-        s_parts, idx = [], []
-        start = 0
-        for p in range(len(lens)):
-            seg = np.linspace(bounds[p], bounds[p + 1], counts[p] + 1)
-            s_parts.append(seg if p == 0 else seg[1:])
-            start += counts[p]
-            if p + 1 < len(lens):
-                idx.append(start)
-        s_samp = np.concatenate(s_parts)
+        s_samp, idx = _curve_samples(c, infl_s, n, samples_per_vertex)
         samples = np.ascontiguousarray(c.points(s_samp))
         tangents = None
         if exact_tangents:

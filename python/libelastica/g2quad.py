@@ -15,7 +15,7 @@ import numpy as np
 
 from ._ffi import DomainError, as_points, as_size, lib
 from ._values import ValueEquality
-from .affine import (AffinePolyline, EdgeCountError, _is_curve, affine_polyline,
+from .affine import (AffinePolyline, EdgeCountError, _curve_samples, _is_curve, affine_polyline,
                      elastica_inflections, g2_bspline, quadratic_joint_curvatures)
 
 __all__ = ["G2Quadratic", "CoverageError", "CoverageWarning", "EndTangentWarning", "covering_edges",
@@ -40,7 +40,9 @@ class G2Quadratic(ValueEquality):
     where that is not done: an end piece of fewer than 7 edges, or a farther spline);
     covers_source: False
     when an end piece next to an inflection was too short to keep, so the splines
-    start / stop at that inflection (§4.4); ends_covered: (start, end), which of the two
+    start / stop at that inflection (§4.4), or (fit_ends=False) when the polyline's last
+    vertex stops more than half a sample short of the source's end, so the splines stop
+    there (the paper's A need not reach it; fit_ends=True lands it or raises); ends_covered: (start, end), which of the two
     ends is kept (covers_source: both); fit: with ``fit=True`` the FitResult of the
     smooth elastica fitted to the points (the source then; its rms / max_error are the
     points' distances to it), else None.
@@ -160,15 +162,42 @@ def _edge_count_error(exc: EdgeCountError, n: int, build) -> EdgeCountError:
         f"no count up to {cover_search_limit(n)} works"), exc.cause, more)
 
 
-def _past_the_end(t: np.ndarray, nsamples: int, n: int) -> str:
+def _past_the_end(t: np.ndarray, nsamples: int, n: int, landing: bool = False) -> str:
     """g2_quadratic's reason for points whose polyline ran past their last sample: its
     vertices ran on along f~'s last parabola continued (seed 002 §4.3): too few edges for
-    the turning (with fit_ends, C's EL_EDOM; ``t`` then of the paper's A)."""
+    the turning (``landing``: fit_ends found no A landing it, C's EL_EDOM, ``t`` of the
+    paper's A, said as such: fit_ends' own best may have stopped short)."""
     past = int(np.sum(t > nsamples - 1))
+    which = ("no A lands the affine polyline on their last sample, and the paper's A = "
+             "(S/n)^3 ran past their end" if landing else "the affine polyline ran past their end")
     return (f"g2_quadratic: {n} edges are too few for the points' turning (about 3 per turn "
-            f"of the tangent at least): the affine polyline ran past their end, {past} of its "
+            f"of the tangent at least): {which}, {past} of its "
             f"vertices beyond their last sample (the last at {float(t[-1]):.1f} of "
             f"{nsamples - 1}); pass more edges")
+
+
+def _short_of_the_end(t: np.ndarray, nsamples: int, n: int) -> str:
+    """g2_quadratic's reason for points whose polyline fit_ends could not land (C's EL_EDOM)
+    and whose paper's A (``t``) stops short of their last sample: n edges of the largest
+    area the turning allows end before it (8 on a circle turning 4.2 times: 2.7 turns)."""
+    return (f"g2_quadratic: {n} edges are too few for the points' turning (about 3 per turn "
+            f"of the tangent at least): no A lands the affine polyline on their last sample, "
+            f"it stops short of it (the paper's A = (S/n)^3: its last vertex at "
+            f"{float(t[-1]):.1f} of {nsamples - 1}); pass more edges")
+
+
+def _left_out(dropped, length: float, n: int, inflection: bool, short: Optional[str]) -> str:
+    """g2_quadratic's words for splines that leave part of the source out (CoverageWarning,
+    CoverageError): how much, at which end, and why: an end piece beyond an inflection too
+    short for 3 edges (``inflection``: the splines stop at the inflection), and / or
+    ``short``, the polyline's own stop short of the end (fit_ends=False: the paper's A need
+    not reach it)."""
+    gone = " and ".join(f"{d:.4g} at its {w}" for d, w in zip(dropped, ("start", "end"))
+                        if d > 0)
+    why = ([f"an end piece beyond an inflection is too short for 3 of the {n} edges, so "
+            "they stop at the inflection"] if inflection else []) + ([short] if short else [])
+    return (f"g2_quadratic: the splines leave out {gone} of the source (length {length:.4g}): "
+            + "; ".join(why))
 
 
 class CoverageWarning(RuntimeWarning):
@@ -526,21 +555,38 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
             except DomainError:
                 ap = None
             if ap is not None and round(float(ap.t[-1])) > len(points) - 1:
-                raise DomainError(exc.status, _past_the_end(ap.t, len(points), n)) from None
+                raise DomainError(exc.status, _past_the_end(ap.t, len(points), n, True)) from None
+            if ap is not None and round(float(ap.t[-1])) < len(points) - 1:
+                raise DomainError(exc.status, _short_of_the_end(ap.t, len(points), n)) from None
         raise _noisy_points_error(exc, points) from None
     npieces = len(ap.A)
+    short = None        # why the polyline stops short of the source's end, if it does
     if is_curve:
         c = curve_or_points
-        bounds = np.concatenate([[0.0], elastica_inflections(c), [c.length]])
+        infl_s = elastica_inflections(c)
+        bounds = np.concatenate([[0.0], infl_s, [c.length]])
         first = int(np.argmin(np.abs(bounds - ap.s[0])))
-        s_ends = bounds[first:first + npieces + 1]
+        s_ends = bounds[first:first + npieces + 1].copy()
+        # its last vertex more than half a sample short of its piece end (f~'s t, as the
+        # points' round(t) below and C's fit_ends landing): the paper's A (fit_ends=False)
+        # stopped there, and the splines stop with it (they ran on to the end before, over
+        # one stretched end parabola: a 4.3-turn elastica at 10 edges, its vertices to s =
+        # 4.0 of 5.74, deviation 0.151, covers_source True)
+        s_samp, infl_t = _curve_samples(c, infl_s, n, samples_per_vertex)
+        t_end = ([0] + list(infl_t) + [len(s_samp) - 1])[first + npieces]
+        if float(ap.t[-1]) < t_end - 0.5:
+            s_ends[-1] = float(ap.s[-1])
+            short = (f"the polyline stops short of its end, its last vertex at s = "
+                     f"{s_ends[-1]:.4g} (the paper's A = (S/n)^3, fit_ends=False, need not "
+                     "reach it; fit_ends=True lands it or names the count)")
         ends = c.points(s_ends)
         theta = c.angle(s_ends)
         ends_dir = np.c_[np.cos(theta), np.sin(theta)]
         total = max(int(samples_per_vertex) * int(n), 4 * (len(bounds) - 1))
         samples = c.points(np.linspace(0.0, c.length, total + 1))
         t_ends = s_ends / c.length * total
-        covers = first == 0, first + npieces == len(bounds) - 1
+        covers = first == 0, first + npieces == len(bounds) - 1 and short is None
+        inflection = first > 0 or first + npieces < len(bounds) - 1
         k_src = [float(k) for k in c.curvature(np.array([0.0, c.length]))]
         dropped = float(s_ends[0]), float(c.length - s_ends[-1])
         length = float(c.length)
@@ -556,6 +602,11 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
             tan = as_points(tangents, "tangents")
             ends_dir = tan[idx] / np.linalg.norm(tan[idx], axis=1)[:, None]
         covers = idx[0] == 0, idx[-1] == len(samples) - 1
+        if not covers[1] and not options["fit_ends"]:   # (fit_ends lands every piece end)
+            short = (f"the polyline stops at sample {idx[-1]} of {len(samples) - 1}: an end "
+                     f"piece beyond an inflection too short for 3 of the {n} edges, or the "
+                     "paper's A = (S/n)^3 (fit_ends=False) stopping short of the end")
+        inflection = not covers[0] or (not covers[1] and short is None)
         tan = None if tangents is None else as_points(tangents, "tangents")
         k_src = [_end_curvature(samples, False, tan), _end_curvature(samples, True, tan)]
         seg = np.linalg.norm(np.diff(samples, axis=0), axis=1)
@@ -643,11 +694,7 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                                         tuple((end, err) for end, err, _ in missed)),
                       stacklevel=2)
     if not all(covers):
-        gone = " and ".join(f"{d:.4g} at its {w}" for d, w in zip(dropped, ("start", "end"))
-                            if d > 0)
-        what = (f"g2_quadratic: the splines leave out {gone} of the source (length "
-                f"{length:.4g}): an end piece beyond an inflection is too short for 3 of the "
-                f"{n} edges, so they stop at the inflection")
+        what = _left_out(dropped, length, n, inflection, short)
         if partial:
             warnings.warn(f"{what}; more edges cover it", CoverageWarning, stacklevel=2)
             return g

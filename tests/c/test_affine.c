@@ -487,6 +487,54 @@ START_TEST(test_polyline_fit_ends_past_the_end)
 }
 END_TEST
 
+/* fit_ends short of the end: E samples (with and without their exact tangents) of a circle
+ * turning 4.2 times, and of an elastica turning 4.3 times (k = 2.425 > 1: no inflection,
+ * curvature 2.0 .. 4.85). Too few edges for the turning: on the circle A's edges turn at
+ * most ~2 pi / 3 each (det(v, v') peaks there), so no A reaches the end, and the secant's
+ * best stopped short, EL_OK: the circle at 8..12 edges ended at t = 99.7, 105.1, 117.4,
+ * 130.9, 148.9 of 159, the elastica at 10..14 edges at t = 94.1 .. 146.5 (111.1 .. 154.5
+ * with tangents). Now EL_EDOM, res untouched, as past the end; 16 edges land on both. */
+START_TEST(test_polyline_fit_ends_short_of_the_end)
+{
+    enum { E = 160 };
+    static double q[2][2 * E], tan[2][2 * E];
+    el_smooth_params ep = {0.0, 0.0, 0.1258, 1.0, 2.425, 0.9756, 5.7357};
+    double s[E], theta[E];
+    for (int j = 0; j < E; j++) {
+        double a = 2.0 * M_PI * 4.2 * j / (E - 1);
+        q[0][2 * j] = cos(a);
+        q[0][2 * j + 1] = sin(a);
+        tan[0][2 * j] = -sin(a);
+        tan[0][2 * j + 1] = cos(a);
+        s[j] = ep.length * j / (E - 1);
+    }
+    ck_assert_int_eq(el_smooth_eval(&ep, E, s, q[1], theta, NULL), EL_OK);
+    for (int j = 0; j < E; j++) {
+        tan[1][2 * j] = cos(theta[j]);
+        tan[1][2 * j + 1] = sin(theta[j]);
+    }
+    const size_t few[2] = {8, 10};      /* the first short count: circle, elastica */
+    el_affine_options o;
+    el_affine_options_defaults(&o);
+    o.fit_ends = 1;
+    el_affine_result r, r0;
+    for (int curve = 0; curve < 2; curve++) {
+        for (int with_tan = 0; with_tan < 2; with_tan++) {
+            const double *T = with_tan ? tan[curve] : NULL;
+            for (size_t n = few[curve]; n < few[curve] + 5; n++) {
+                memset(&r, 0xa5, sizeof r);
+                r0 = r;
+                ck_assert_int_eq(el_affine_polyline(E, q[curve], T, 0, NULL, n, &o, &r), EL_EDOM);
+                ck_assert(memcmp(&r, &r0, sizeof r) == 0);
+            }
+            ck_assert_int_eq(el_affine_polyline(E, q[curve], T, 0, NULL, 16, &o, &r), EL_OK);
+            ck_assert_close(r.t[16], (double)(E - 1), 1e-6);
+            el_affine_result_free(&r);
+        }
+    }
+}
+END_TEST
+
 /* E samples of y = sin x over [0.4, 2 pi - 0.4]: an S curve, inflection x = pi at E/2. */
 static void sine_samples(int E, double *q)
 {
@@ -713,6 +761,7 @@ int main(void)
     tcase_add_test(tc, test_polyline_ellipse);
     tcase_add_test(tc, test_polyline_inflection);
     tcase_add_test(tc, test_polyline_fit_ends_past_the_end);
+    tcase_add_test(tc, test_polyline_fit_ends_short_of_the_end);
     tcase_add_test(tc, test_g2_bspline_exact_ends);
     tcase_add_test(tc, test_g2_bspline_pieces_of_a_curve);
     tcase_add_test(tc, test_bad_input);

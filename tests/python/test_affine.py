@@ -2,6 +2,7 @@
 approximation of an elastica, and G2 quadratic B-splines (issue 4)."""
 import json
 import math
+import warnings
 
 import numpy as np
 import pytest
@@ -671,3 +672,47 @@ def test_fit_ends_past_the_curve_end_is_an_edge_count_error():
         el.g2_quadratic(c, 8, partial=True)
     ap = el.affine_polyline(c, 16, fit_ends=True)     # lands: on the curve, in order
     assert ap.t[-1] == pytest.approx(20 * 16, abs=1e-6) and np.all(np.diff(ap.s) > 0)
+
+
+def test_fit_ends_short_of_the_curve_end_is_an_edge_count_error():
+    """The elastica turning 4.3 times at 10 to 14 edges: fit_ends found no A landing the last
+    vertex on the curve's end, and the secant's best stopped short of it (10 edges: t =
+    139.8 of 200, s = 4.0 of 5.74), returned as success; g2_quadratic then ran its last
+    parabola on to the end (deviation 0.151, covers_source True), and at 8 edges named
+    "n = 10 works" from it. Now C's EL_EDOM: EdgeCountError, and the count g2_quadratic
+    names lands on the end."""
+    c = el.SmoothElastica(x0=0.0, y0=0.0, phi=0.1258, mu=1.0, k=2.425, q=0.9756,
+                          length=5.7357)
+    for n in (10, 11, 13, 14):
+        with pytest.raises(el.EdgeCountError, match=f"{n} edges are too few for the elastica"):
+            el.affine_polyline(c, n, fit_ends=True)
+    for n in (8, 10):
+        with pytest.raises(el.EdgeCountError, match=f"g2_quadratic: {n} edges are too few") as info:
+            el.g2_quadratic(c, n, partial=True)
+        m = info.value.edges
+        ap = el.affine_polyline(c, m, fit_ends=True)     # the count named lands on the end
+        assert ap.t[-1] == pytest.approx(20 * m, abs=1e-6) and ap.s[-1] == pytest.approx(c.length)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", el.EndTangentWarning)
+            assert el.g2_quadratic(c, m).covers_source
+
+
+def test_fit_ends_short_of_the_points_end_is_a_domain_error():
+    """160 points of a circle turning 4.2 times (with and without tangents), 8 to 12 edges:
+    A's edges turn at most ~2 pi / 3 each on a circle, so no A reaches the end, and the
+    polyline fit_ends returned stopped short (8 edges: t = 99.7 of 159), g2_quadratic's
+    CoverageError blaming an inflection the circle does not have. Now affine_polyline's
+    DomainError, and g2_quadratic's says no A lands it, the count too few (and where the
+    paper's A, rebuilt to say so, ends: here past the end)."""
+    a = 2 * np.pi * 4.2 * np.arange(160) / 159
+    pts, tan = np.c_[np.cos(a), np.sin(a)], np.c_[-np.sin(a), np.cos(a)]
+    for tangents in (None, tan):
+        for n in range(8, 13):
+            with pytest.raises(el.DomainError):
+                el.affine_polyline(pts, n, tangents=tangents, fit_ends=True)
+        for partial in (True, False):
+            with pytest.raises(el.DomainError, match="8 edges are too few for the points' "
+                               "turning .*: no A lands the affine polyline on their last"):
+                el.g2_quadratic(pts, 8, tangents=tangents, partial=partial)
+        assert el.affine_polyline(pts, 13, tangents=tangents, fit_ends=True).t[-1] == \
+            pytest.approx(159, abs=1e-6)

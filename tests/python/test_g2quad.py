@@ -418,3 +418,35 @@ def test_too_few_edges_for_sampled_points_is_a_domain_error():
     with warnings.catch_warnings():      # (its ends 38 deg off: 4 edges a turn)
         warnings.simplefilter("ignore", el.EndTangentWarning)
         assert el.g2_quadratic(pts, 16, tangents=tan).covers_source
+
+
+def test_paper_a_short_of_the_end_does_not_cover_the_source():
+    """fit_ends=False (the paper's A = (S/n)^3, which need not land): on this elastica 16 and
+    20 edges stop 1.5 and 2.2 samples short of the end (s = 6.525, 6.519 of 6.5555), and
+    g2_quadratic ran the last parabola on to the end and said covers_source True; now the
+    splines stop with the polyline, covers_source False, the end's dropped the rest, and
+    without partial a CoverageError saying why (of points, as before, with the reason: no
+    inflection). 12 edges land within half a sample (t = 239.7 of 240): covered."""
+    c = el.SmoothElastica(x0=35.2, y0=-24.2, phi=1.986, mu=0.3245, k=0.8919, q=2.99,
+                          length=6.5555)
+    assert not len(el.elastica_inflections(c))
+    for n in (16, 20):
+        with pytest.warns(el.CoverageWarning, match="polyline stops short of its end"):
+            g = el.g2_quadratic(c, n, partial=True, fit_ends=False)
+        s_end = g.polyline.s[-1]
+        assert not g.covers_source and g.ends_covered == (True, False)
+        assert c.length - s_end > 0.5 * c.length / (20 * n)
+        assert g.dropped == pytest.approx((0.0, c.length - s_end))
+        last = g.bsplines[-1]
+        assert np.allclose(last(last.knots[-1:])[0], c.points([s_end])[0], atol=1e-9)
+    with pytest.raises(el.CoverageError, match="stops short of its end"):
+        el.g2_quadratic(c, 16, fit_ends=False)
+    with warnings.catch_warnings():     # (its end tangent 4.9 deg off)
+        warnings.simplefilter("ignore", el.EndTangentWarning)
+        assert el.g2_quadratic(c, 12, fit_ends=False).covers_source
+    s = np.linspace(0, c.length, 400)
+    th = c.angle(s)
+    with pytest.warns(el.CoverageWarning, match="paper's A .* stopping short"):
+        g = el.g2_quadratic(c.points(s), 16, tangents=np.c_[np.cos(th), np.sin(th)],
+                            partial=True, fit_ends=False)
+    assert not g.covers_source
