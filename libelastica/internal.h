@@ -190,6 +190,8 @@ typedef struct el__spiece {
     double D[5][EL__NV];         /* J^{-1} R, J^{-1} e2, J^{-1} e3, h^2 J^{-1} e4 and, next to a
                                     guide duck, J^{-1} (gn / h, 0, 0, 0) (its end moved along gn) */
     double c0[5], c1[5], cL[5];  /* g0 . D[r], g1 . D[r], D[r][L] */
+    double jv[EL__NV], jh;       /* v and h where D[1..3], c0, c1, cL were last computed */
+    int jac_ok;                  /* 1: they were, and jv, jh say where (el__spiece_jac_current) */
 } el__spiece;
 
 /* A piece's Newton step (el__spiece_step_prepare). */
@@ -208,6 +210,10 @@ typedef struct el__sptargets {
 /* Residuals, end angles and curvatures, state, energy; with jac also M, the LU
  * of J and the eliminated columns D with c0, c1, cL. EL_EDOM, EL_ESINGULAR. */
 int el__spiece_eval(el__spiece *pc, const el__sptargets *t, int jac);
+/* 1 when the piece's D[1..3], c0[1..3], c1[1..3], cL[1..3] are those of its current v and h
+ * (an evaluation with jac succeeded there since; they depend on nothing else: not on the
+ * targets, which enter D[0] alone), else 0. */
+int el__spiece_jac_current(const el__spiece *pc);
 /* v from a state (theta0, kappa0, kappa0', sigma, L). EL_EDOM. */
 int el__spiece_set_state(el__spiece *pc, const double *st);
 /* A step dv taken in the state: prepare (returns the admissible fraction <= al), apply. */
@@ -318,6 +324,8 @@ void el__chain_free(el__spchain *w);
 void el__chain_targets(const el__spchain *w, size_t j, el__sptargets *t);
 /* Every piece and the knot (and border) residuals; returns the merit, or INFINITY. */
 double el__chain_eval(el__spchain *w, int jac);
+/* 1 when every piece's Jacobian coefficients are current (el__spiece_jac_current) */
+int el__chain_jac_current(const el__spchain *w);
 /* Newton on the chain until max residual <= aim (or it stalls), at most cap
  * iterations; EL_OK when it ends <= accept, else EL_ENOCONV. */
 int el__chain_newton(el__spchain *w, int cap, double aim, double accept);
@@ -375,7 +383,8 @@ void el__spline_hessian(el__spchain *w);
 /* spline_stable.c: the number of negative eigenvalues of the second variation of a solved
  * open chain in tension mode without guide ducks, reduced to its knot angles (0 otherwise);
  * where > 0, *span the span lengthening most along the least one's vector. Re-evaluates the
- * chain with its Jacobians; its Newton work arrays used. */
+ * chain with its Jacobians unless they are current (el__chain_jac_current); its Newton work
+ * arrays used. */
 int el__spline_unstable(el__spchain *w, size_t *span);
 /* spline_buckle.c: the number of negative eigenvalues of T - shift I, T symmetric
  * tridiagonal on rows i0..i1 (diagonal dg, off-diagonal up[i] = T[i][i + 1]) */

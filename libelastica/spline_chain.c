@@ -136,6 +136,13 @@ double el__chain_eval(el__spchain *w, int jac)
     return isfinite(merit) ? merit : INFINITY;
 }
 
+int el__chain_jac_current(const el__spchain *w)
+{
+    for (size_t j = 0; j < w->m; j++)
+        if (!el__spiece_jac_current(&w->pc[j])) return 0;
+    return 1;
+}
+
 /* A(i, j) += v in the (cyclic) tridiagonal storage: up[i] = A(i, i+1), lo[i] = A(i+1, i),
  * and when closed up[n-1] = A(n-1, 0), lo[n-1] = A(0, n-1) (GSL's cyclic layout). */
 static void tri_add(el__spchain *w, long i, long j, double v)

@@ -107,6 +107,7 @@ static int piece_eval_raw(el__spiece *pc, const el__sptargets *t, int jac, doubl
     for (int i = 0; i < EL__NV; i++)
         if (!isfinite(pc->R[i])) return EL_EDOM;
     if (!jac) return EL_OK;
+    pc->jac_ok = 0;   /* D, c0, c1, cL about to change: current again only at the end */
 
     const double tx = 1.0 - 2.0 * k2 * a1.sn * a1.sn, ty = 2.0 * k * a1.sn * a1.dn;
     double lx[EL__NV], ly[EL__NV];   /* d(X, Y)/dv in the frame; phi column apart */
@@ -168,7 +169,19 @@ static int piece_eval_raw(el__spiece *pc, const el__sptargets *t, int jac, doubl
         pc->cL[r] = rhs[EL__SP_L];
         if (!isfinite(s0) || !isfinite(s1) || !isfinite(rhs[EL__SP_L])) return EL_ESINGULAR;
     }
+    memcpy(pc->jv, pc->v, sizeof pc->jv);
+    pc->jh = h;
+    pc->jac_ok = 1;
     return EL_OK;
+}
+
+/* Compared rather than cleared by hand: v and h change in every file of the solver
+ * (steps, snapshots, starts, continuation, guide chords), and a flag each of them had to
+ * clear would go stale with the first new one. Bitwise (memcmp): equal values evaluate
+ * to equal coefficients; a -0.0 for 0.0 only costs a re-evaluation. */
+int el__spiece_jac_current(const el__spiece *pc)
+{
+    return pc->jac_ok && !memcmp(pc->jv, pc->v, sizeof pc->jv) && !memcmp(&pc->jh, &pc->h, sizeof pc->h);
 }
 
 double el__max_abs(const double *v, size_t n)

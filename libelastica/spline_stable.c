@@ -42,7 +42,10 @@ int el__spline_unstable(el__spchain *w, size_t *span)
 {
     const size_t n = w->n, m = w->m;
     *span = 0;
-    if (w->closed || w->ng || w->lmode || n < 2 || !isfinite(el__chain_eval(w, 1))) return 0;
+    if (w->closed || w->ng || w->lmode || n < 2) return 0;
+    /* H needs the pieces' c0, c1 at the solution: mostly still those of the solver's last
+     * step (spline.c's free battens: 200 of 202), evaluated again only where not */
+    if (!el__chain_jac_current(w) && !isfinite(el__chain_eval(w, 1))) return 0;
     el__spline_hessian(w);
     double *dg = w->dg, *up = w->up, *z = w->z;
     const size_t i0 = w->slot[0] == EL__SLOT_ANGLE ? 0 : 1;

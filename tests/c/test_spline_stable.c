@@ -181,6 +181,56 @@ START_TEST(hessian_is_the_second_difference_of_the_energy)
 }
 END_TEST
 
+/*
+ * el__spline_unstable reads the pieces' c0, c1, cL as the solver's last step left them
+ * where they belong to the pieces' current parameters (el__chain_jac_current), and
+ * evaluates the chain again where not. Solved by el__chain_newton they are current; moved
+ * by each piece's own Newton to other end angles (which recomputes them there) and put back
+ * as a snapshot restores them (v copied, as el__snap_load does; the knot residuals by an
+ * evaluation without Jacobians), they are not, and the verdict, the span and the least
+ * eigenvalue's vector are bit for bit those of a chain solved afresh: the 170-deg ducks
+ * stay unstable (QA19 W2), the 150-deg turn stable.
+ */
+START_TEST(stale_jacobians_are_evaluated_again)
+{
+    const double sharp[10] = {0, 0, 5, 0, 10, 0.3, 5.5, 1.2, 0.5, 1.6};
+    const double t150[10] = {0, 0, 5, 0, 9.5, 1.0, 6.5, 3.5, 2.5, 5.5};
+    const double *xy[2] = {sharp, t150};
+    const int unstable[2] = {1, 0};
+    for (int c = 0; c < 2; c++) {
+        el__spchain fresh, w;
+        solved_chain(&fresh, xy[c], 5, 0.0);
+        solved_chain(&w, xy[c], 5, 0.0);
+        ck_assert_int_eq(el__chain_jac_current(&fresh), 1);
+        size_t span0 = 99, span1 = 98;
+        const int neg0 = el__spline_unstable(&fresh, &span0);
+        ck_assert_int_eq(neg0 > 0, unstable[c]);
+        double x0[5], v0[EL__NV * 4];
+        memcpy(x0, w.x, sizeof x0);
+        for (size_t j = 0; j < w.m; j++) memcpy(v0 + EL__NV * j, w.pc[j].v, sizeof w.pc[j].v);
+        for (size_t i = 0; i < w.n; i++) w.x[i] += 0.05 * (double)(i + 1);
+        for (size_t j = 0; j < w.m; j++) {
+            el__sptargets t;
+            el__chain_targets(&w, j, &t);
+            ck_assert_int_eq(el__spiece_newton(&w.pc[j], &t, 1e-13), EL_OK);
+        }
+        memcpy(w.x, x0, sizeof x0);
+        for (size_t j = 0; j < w.m; j++) memcpy(w.pc[j].v, v0 + EL__NV * j, sizeof w.pc[j].v);
+        ck_assert(isfinite(el__chain_eval(&w, 0)));
+        ck_assert_int_eq(el__chain_jac_current(&w), 0);
+        const int neg1 = el__spline_unstable(&w, &span1);
+        ck_assert_int_eq(neg1, neg0);
+        if (neg0) {
+            ck_assert_uint_eq(span1, span0);
+            ck_assert_uint_eq(span1, 2);
+            ck_assert_mem_eq(w.z, fresh.z, w.n * sizeof *w.z);
+        }
+        el__chain_free(&fresh);
+        el__chain_free(&w);
+    }
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("spline_stable");
@@ -190,6 +240,7 @@ int main(void)
     tcase_add_test(tc, stable_free_battens_are_solved);
     tcase_add_test(tc, a_tension_is_not_judged);
     tcase_add_test(tc, hessian_is_the_second_difference_of_the_energy);
+    tcase_add_test(tc, stale_jacobians_are_evaluated_again);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }
