@@ -7,6 +7,7 @@ import math
 import unittest
 
 import elastica_samples as S
+from freecad.elastica import commands as C
 from freecad.elastica import fit as Fi
 
 XS = range(1, 10)
@@ -49,6 +50,19 @@ class FitThousandsTest(S.DocTest):
         self.doc.recompute()
         self.assertFalse(f.Status.startswith("error"), f.Status)
         self.assertPoints(f, [(float(x), float(f"{_ys(x):.3f}")) for x in XS])
+
+    def test_the_command_reads_the_file_as_its_thousands_option_says(self):
+        """commands.fit_sources(..., Thousands='.') checks the file read so and makes the
+        fit with that property (its check read the file as auto and refused it: no fit
+        made whose property could be set)."""
+        path = self._file(f"{x}.000;{_ys(x):.3f}" for x in XS)
+        said = []
+        f = C.fit_sources([], csv_file=path, open_panel=False, wrong=said.append,
+                          Model="smooth", Thousands=".")
+        self.assertIsNotNone(f, said)
+        self.assertEqual(f.Thousands, ".")
+        self.assertFalse(f.Status.startswith("error"), f.Status)
+        self.assertPoints(f, [(1000.0 * x, float(f"{_ys(x):.3f}") * 1000) for x in XS])
 
     def test_auto_reads_what_the_file_shows(self):
         """A decimal comma shows the grouping (1.000,5): auto reads it so, as the command

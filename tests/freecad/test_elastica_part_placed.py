@@ -189,6 +189,17 @@ class PlacedPartTest(S.DocTest):
         """A document saved by version 4 with features in a placed Part (their Shape
         global, drawn off by the Part): reopened, they execute once and are drawn on their
         sketches."""
+        self.reopen_version4(saved_again=False)
+
+    def test_a_document_saved_before_and_saved_again_unrecomputed_reopens_right(self):
+        """The same document opened and saved at once (no recompute: the Shapes still
+        global), then reopened: its features execute once and are drawn on their sketches
+        (they were taken as local to the Part and left 170 mm off)."""
+        self.reopen_version4(saved_again=True)
+
+    def reopen_version4(self, saved_again):
+        """Features in a placed Part saved by version 4 (and, ``saved_again``, that file
+        opened and saved by this version before a recompute), reopened and recomputed."""
         made = self.every_feature()
         before = [drawn(f) for f in made]
         part = self.doc.addObject("App::Part", "Part")
@@ -201,10 +212,14 @@ class PlacedPartTest(S.DocTest):
             shape.transformShape(PART.toMatrix(), True)
             f.Shape = shape
         self.assertGreater(max((a - b).Length for a, b in zip(drawn(made[0]), before[0])), 10)
-        self.addCleanup(setattr, X, "VERSION", X.VERSION)
+        current = X.VERSION
+        self.addCleanup(setattr, X, "VERSION", current)
         X.VERSION = 4
         names = [f.Name for f in made]
         made = S.reopened(self, "version4_part.FCStd", *names)
+        if saved_again:
+            X.VERSION = current
+            made = S.reopened(self, "version4_saved_again.FCStd", *names)
         self.doc.recompute()
         self.assertAt(made, before, "reopened")
 

@@ -223,8 +223,8 @@ def fit_sources(sources, csv_file="", open_panel=True, wrong=message, **options)
     ``options`` override the preferences: Model, Distance, SplitAtInflection, PinStart,
     PinEnd, UseStartCurvature, StartCurvature, UseEndCurvature, EndCurvature,
     StartContinuity, EndContinuity,
-    ResampleStep, Tolerance, Degree. Returns the new feature or None (``wrong`` said why,
-    document unchanged)."""
+    ResampleStep, Tolerance, Degree, Thousands (how csv_file is read, by the check too).
+    Returns the new feature or None (``wrong`` said why, document unchanged)."""
     from . import fit, fit_core, sources as src_mod
     doc = _doc()
     if doc is None or not _in_active_document([o for o, _ in sources], doc, wrong):
@@ -237,8 +237,10 @@ def fit_sources(sources, csv_file="", open_panel=True, wrong=message, **options)
 
     def check():
         notes = []
+        # the file read as the feature will read it (a Thousands option: its property)
+        thousands = src_mod.THOUSANDS[opts.get("Thousands", "auto")]
         checked.append(fit_core.check_fit(
-            src_mod.gather_points(sources, csv_file, notes=notes), notes,
+            src_mod.gather_points(sources, csv_file, notes=notes, thousands=thousands), notes,
             **fit.core_options(opts)))
 
     def prepare(obj):

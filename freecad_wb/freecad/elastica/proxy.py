@@ -559,12 +559,15 @@ class FeatureProxy:
             pass
         if getattr(self, "_said", None):       # a document before SAID, not restored yet
             state["said"] = self._said
+        if getattr(self, "_shape_global", False) and getattr(self, "_held", None) is None:
+            state["shape_global"] = True       # reopened from version < 5, not recomputed since
         return state
 
     def __setstate__(self, state):
         self._version = int((state or {}).get("version") or 1)    # of the file's proxy
         self._exact = dict((state or {}).get("exact") or {})
         self._said = dict((state or {}).get("said") or {})
+        self._shape_global = bool((state or {}).get("shape_global"))
         return None
 
     def dumps(self):
@@ -598,8 +601,11 @@ class FeatureProxy:
             obj.purgeTouched()
         self._exact = {}
         self._unplaced = restore_containers(obj)
-        if version < 5 and not holder_placement(obj).isIdentity():
-            self._unplaced = True         # its Shape saved global: drawn off by the holder
+        # its Shape saved global (version < 5, or such a document saved again before the
+        # feature recomputed: __getstate__'s shape_global): drawn off by the holder
+        self._shape_global = version < 5 or getattr(self, "_shape_global", False)
+        if self._shape_global and not holder_placement(obj).isIdentity():
+            self._unplaced = True
         else:
             remember_holder(obj)          # saved where it was drawn: a move from here on
         attach_view(obj, restored=True)   # a document made without the GUI, opened in it
