@@ -64,6 +64,28 @@ class FitThousandsTest(S.DocTest):
         self.assertFalse(f.Status.startswith("error"), f.Status)
         self.assertPoints(f, [(1000.0 * x, float(f"{_ys(x):.3f}") * 1000) for x in XS])
 
+    def test_the_csv_command_asks_where_the_file_does_not_show_it(self):
+        """The Fit-to-CSV command (commands.csv_thousands) asks how to read a file that does
+        not show it and passes the answer as Thousands: it had no way to (the check refused
+        the file, no fit was made whose property could be set); it does not ask where the
+        file shows it, and a cancelled question makes nothing."""
+        asked = []
+
+        def answer(choice):
+            return lambda p: asked.append(p) or choice
+
+        path = self._file(f"{x}.000;{_ys(x):.3f}" for x in XS)
+        opts = C.csv_thousands(path, answer("none"))
+        self.assertEqual((opts, asked), ({"Thousands": "none"}, [path]))
+        f = C.fit_sources([], csv_file=path, open_panel=False, Model="smooth", **opts)
+        self.assertIsNotNone(f)
+        self.assertPoints(f, [(float(x), float(f"{_ys(x):.3f}")) for x in XS])
+        self.assertIsNone(C.csv_thousands(path, answer(None)))
+        asked.clear()
+        shown = self._file(f"{x}.000,5;{x * x},25" for x in XS)
+        self.assertEqual((C.csv_thousands(shown, answer(".")), asked), ({}, []))
+        self.assertEqual(C.csv_thousands(path + ".missing", answer(".")), {})
+
     def test_auto_reads_what_the_file_shows(self):
         """A decimal comma shows the grouping (1.000,5): auto reads it so, as the command
         line does."""

@@ -274,7 +274,45 @@ class FitCsvCommand(_Command):
         path, _ = QtGui.QFileDialog.getOpenFileName(
             Gui.getMainWindow(), "Points to fit", "", "Point files (*.csv *.txt *.xyz);;All (*)")
         if path:
-            _guarded(lambda _sel, wrong: fit_sources([], csv_file=path, wrong=wrong))
+            opts = csv_thousands(path, _ask_thousands)
+            if opts is not None:                # None: the question cancelled
+                _guarded(lambda _sel, wrong: fit_sources([], csv_file=path, wrong=wrong,
+                                                         **opts))
+
+
+def csv_thousands(path, ask):
+    """fit_sources' Thousands option for the point file ``path``: {} where the file shows
+    how '.' is meant (or is unreadable either way: the fit's check says why); where it does
+    not (read_points refuses it as auto, reads it with '.' grouping and as decimals: every
+    number d.ddd), ``ask(path)``'s answer ('.' or 'none'; None = cancelled, returned)."""
+    from .geometry import binding_module
+    read_points = binding_module("io").read_points
+
+    def reads(thousands):
+        try:
+            read_points(path, min_points=1, thousands=thousands)
+        except ValueError:
+            return False
+        return True
+
+    if reads(None) or not (reads(".") and reads("")):
+        return {}
+    choice = ask(path)
+    return None if choice is None else {"Thousands": choice}
+
+
+def _ask_thousands(path):
+    """The user's answer for csv_thousands: '.', 'none' or None (cancelled)."""
+    import os
+    from PySide import QtGui
+    box = QtGui.QMessageBox(QtGui.QMessageBox.Question, "Points to fit",
+                            f"{os.path.basename(path)}: its numbers (1.000, 2.421 ...) do not "
+                            "show whether '.' groups thousands or is a decimal point.",
+                            QtGui.QMessageBox.Cancel, Gui.getMainWindow())
+    grouped = box.addButton("'.' groups thousands (1.000 = 1000)", QtGui.QMessageBox.AcceptRole)
+    decimal = box.addButton("'.' is a decimal point (1.000 = 1)", QtGui.QMessageBox.AcceptRole)
+    box.exec_()
+    return {grouped: ".", decimal: "none"}.get(box.clickedButton())
 
 
 # ------------------------------------------------------------------ blend
