@@ -4,7 +4,9 @@
   (it did nothing): its OK sets the expression (the box shows its value, marked), its
   Clear removes it (the box writable again, unmarked), and the panel's Cancel undoes both;
 - a fit moved into a placed App::Part is drawn on its points, its overlay (the fitted
-  points' markers) too: its Shape was global, drawn again under the Part's placement.
+  points' markers) too: its Shape was global, drawn again under the Part's placement;
+- Fit elastica to CSV file asks how '.' is meant in a file of d.ddd numbers (it refused
+  the file naming the Thousands property of a fit it did not make).
 
 Screenshots: gui_expression_editor.png (the editor open over the Tension box),
 gui_fit_in_placed_part.png (the fit, its markers and its points, the Part moved and turned)."""
@@ -112,10 +114,44 @@ def fit_in_placed_part(doc):
     G.screenshot("gui_fit_in_placed_part.png")
 
 
+def csv_thousands_question(doc):
+    """Fit elastica to CSV file of a ';' file of d.ddd numbers: the command asks how '.'
+    is meant (it refused the file naming a fit's Thousands property, no fit made) and the
+    answer "'.' groups thousands" makes a fit with Thousands '.' reading 1.000 as 1000."""
+    import os
+    import tempfile
+    from freecad.elastica import commands as C, taskpanels as T
+    fd, path = tempfile.mkstemp(suffix=".csv")
+    with os.fdopen(fd, "w") as fh:
+        fh.write("x;y\n" + "".join(f"{x}.000;{2 + 0.5 * math.sin(x):.3f}\n"
+                                   for x in range(1, 10)))
+    App.setActiveDocument(doc.Name)
+    n0 = len(doc.Objects)
+    chooser = QtGui.QFileDialog.getOpenFileName
+    QtGui.QFileDialog.getOpenFileName = staticmethod(lambda *a, **k: (path, ""))
+    try:
+        said = G.answer_modal("'.' groups thousands (1.000 = 1000)")
+        C.FitCsvCommand().Activated()
+        G.pump(10)
+    finally:
+        QtGui.QFileDialog.getOpenFileName = chooser
+    fits = [o for o in doc.Objects[n0:] if o.Name.startswith("ElasticaFit")]
+    G.check(len(said) == 1 and "do not" in said[0][1] and len(fits) == 1
+            and fits[0].Thousands == "." and not fits[0].Status.startswith("error")
+            and abs(fits[0].DataPoints[0].x - 1000.0) < 1e-9,
+            f"Fit to CSV asks how '.' is meant and reads as answered ({said}, "
+            f"{[(f.Thousands, f.Status[:60]) for f in fits]})")
+    if T.CURRENT:
+        T.CURRENT[0].reject()
+        G.wait(300)
+    os.remove(path)
+
+
 def run_all(smoke):
     global G
     G = smoke
     doc = S.new_doc("ElasticaPartMarks")
     expression_mark(doc)
     fit_in_placed_part(doc)
+    csv_thousands_question(doc)
     App.closeDocument(doc.Name)
