@@ -579,8 +579,14 @@ int el_fit_smooth(const double *xy, size_t n, const el_fit_options *opt,
  * 400 points, noise 0.3: rms 10.9 = 24 x this figure (the binding's MisfitWarning, from 4 x
  * the larger of this figure and its cubics through 15 points, which see noise correlated from
  * point to point: a polygon resampled along noisy points, 4-6 x below the noise here).
- * Errors: EL_EINVAL (NULL, n < 4, NaN/inf), EL_ESINGULAR (all points equal), EL_EDOM (the
- * data's scale outside what double precision represents), EL_ENOMEM; *noise untouched.
+ * Repeated points (a scanner writing each point twice, a pen at rest) carry no noise and
+ * count once: a point whose coordinates lie within 1e-12 of the points' rms radius plus 4
+ * rounding units of the first point's |x| + |y| of the last one kept is left out, and the figure is that of the points
+ * without their repeats, to the bit (repeats apart in the order are no neighbours there).
+ * Errors: EL_EINVAL (NULL, n < 4 or fewer than 4 points once repeats count once, NaN/inf),
+ * EL_ESINGULAR (all points equal to rounding: their spread about the first within 32 eps x
+ * the largest |coordinate|, as el_plane_fit's; the fits' likewise), EL_EDOM (the data's
+ * scale outside what double precision represents), EL_ENOMEM; *noise untouched.
  */
 int el_fit_noise(const double *xy, size_t n, double *noise);
 

@@ -48,11 +48,16 @@ typedef struct cguess {
     double phi, w, k, q, L;
 } cguess;
 
+/* the spread about the centroid, over the centroid's |x| + |y|, below which the points are
+ * tested for all equal (el__fit_normalisation) */
+static const double EQUAL_LOOK = 1e-6;
+
 /*
  * Centroid and rms radius of the points: the normalisation of the guess and the fit.
  * The spread is measured first as the largest deviation, so that 1e+-300 inputs cannot
  * overflow; a spread below DBL_MIN / DBL_EPSILON (~1e-292: differences of the points
- * would be denormal, losing their digits) or beyond double's range is EL_EDOM.
+ * would be denormal, losing their digits) or beyond double's range is EL_EDOM; all points
+ * equal to rounding (below) EL_ESINGULAR.
  */
 int el__fit_normalisation(const double *xy, size_t n, double *cx, double *cy, double *sc)
 {
@@ -65,6 +70,23 @@ int el__fit_normalisation(const double *xy, size_t n, double *cx, double *cy, do
         if (ay > amax) amax = ay;
     }
     if (amax == 0.0) return EL_ESINGULAR;
+    /* all points equal to rounding (el_plane_fit's, el_find_inflection's rule): their spread
+     * about the first (exact differences: the centroid of equal points far from the origin is
+     * off by rounding, 20 x (12345.6, -7.5) spread 1.8e-12 about it) within 32 rounding units
+     * of the largest coordinate. Looked at only where the spread about the centroid is below
+     * EQUAL_LOOK of its size: equal points' is within (32 + n) eps of it (the sum's rounding) */
+    if (amax <= EQUAL_LOOK * (fabs(mx) + fabs(my))) {
+        double ext = 0.0, big = 0.0;
+        for (size_t i = 0; i < n; i++) {
+            const double ex = fabs(xy[2 * i] - xy[0]), ey = fabs(xy[2 * i + 1] - xy[1]);
+            const double bx = fabs(xy[2 * i]), by = fabs(xy[2 * i + 1]);
+            if (ex > ext) ext = ex;
+            if (ey > ext) ext = ey;
+            if (bx > big) big = bx;
+            if (by > big) big = by;
+        }
+        if (!(ext > 32.0 * DBL_EPSILON * big)) return EL_ESINGULAR;
+    }
     if (!isfinite(amax) || amax < DBL_MIN / DBL_EPSILON || !isfinite(mx) || !isfinite(my)) return EL_EDOM;
     double r2 = 0.0;
     for (size_t i = 0; i < n; i++) {

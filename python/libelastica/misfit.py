@@ -78,9 +78,36 @@ def noise_level(points) -> float:
     smooth curve under it, from the points alone (no fit): the larger of el_fit_noise's
     (third differences; of every k-th point on points sorted densely along their curve)
     and, from WINDOW_POINTS points on, :func:`window_noise`'s, of them and of every k-th of
-    them (_spread_noise)."""
-    pts = as_points(points, "noise_level: points", 2, 4)    # (third differences)
+    them (_spread_noise). Repeated points (a scanner writing each point twice, a pen at
+    rest) count once: the figure is that of the points without their repeats (4 distinct
+    points at least)."""
+    pts = _distinct(as_points(points, "noise_level: points", 2, 4))    # (third differences)
+    if len(pts) < 4:
+        raise ValueError(f"noise_level: points: need at least 4 distinct points, got {len(pts)} "
+                         "(repeated points count once)")
     return _noise_level(pts, _noise(pts))
+
+
+# Repeats carry no noise (QA20: every point of a 400-point corner scan written twice read its
+# noise 0.051 as 0.226, and el.fit's MisfitWarning, 12.3 x the noise, was lost): el_fit_noise
+# keeps a run of repeats once, a point within REPEAT_REL of the points' rms radius plus
+# REPEAT_ULPS rounding units of the first point's |x| + |y| of the last one kept; the windows
+# here alike, of the point before (the same on exact copies).
+REPEAT_REL = 1e-12
+REPEAT_ULPS = 4 * np.finfo(float).eps
+
+
+def _distinct(pts: np.ndarray) -> np.ndarray:
+    """Checked points without their consecutive repeats (el_fit_noise's rule); pts itself
+    where there are none."""
+    if len(pts) < 2:
+        return pts
+    c = pts - pts.mean(axis=0)
+    tol = REPEAT_REL * np.sqrt(np.mean(np.sum(c * c, axis=1))) + REPEAT_ULPS * np.sum(np.abs(pts[0]))
+    same = np.all(np.abs(np.diff(pts, axis=0)) <= tol, axis=1)
+    if not same.any():
+        return pts
+    return np.ascontiguousarray(pts[np.r_[True, ~same]])
 
 
 def _noise_level(pts: np.ndarray, plain: float) -> float:
@@ -228,7 +255,7 @@ def _corner(pts: np.ndarray, noise: float):
 def misfit(points, distances, corner: bool = True) -> Optional[Misfit]:
     """Whether a fit lies far farther from its points than their own noise: their rms above
     MISFIT_RATIO x :func:`noise_level` and MISFIT_FLOOR of the points' extent
-    (MISFIT_MIN_POINTS points at least; none of them far, :func:`far_points`); then a
+    (MISFIT_MIN_POINTS distinct points at least; none of them far, :func:`far_points`); then a
     :class:`Misfit` (with ``corner``: where the points turn most and the two parts split
     there each fit within MISFIT_RATIO x the noise, their curves turning there by more than
     CORNER_TURN; two smooth fits per candidate), else None.
@@ -245,19 +272,20 @@ def _verdict(pts: np.ndarray, d: np.ndarray, rms_all: float, corner: bool = True
     path: 0.011 ms of a 1000-point discrete fit's 0.5 where it is silent). Its first test
     takes el_fit_noise_quick's figure, never above el_fit_noise's: el_fit_noise's stride
     search (twice the instructions) runs only where that test is passed."""
-    if len(pts) < MISFIT_MIN_POINTS:
+    seen = _distinct(pts)                     # (the noise figures: repeats count once)
+    if len(seen) < MISFIT_MIN_POINTS:
         return None
     # the window figure and el_fit_noise's stride search (points sorted densely along a
     # short curve) only raise el_fit_noise_quick's figure: both paid only where it is passed
-    if not rms_all > MISFIT_RATIO * _noise(pts, quick=True):
+    if not rms_all > MISFIT_RATIO * _noise(seen, quick=True):
         return None
-    noise = _noise(pts)
+    noise = _noise(seen)
     if not rms_all > MISFIT_RATIO * noise:
         return None
     from .fit import far_points
     if len(far_points(d, pts)):               # glitches pull the fit: said apart, refit without
         return None
-    noise = _noise_level(pts, noise)
+    noise = _noise_level(seen, noise)
     rms, extent = rms_all, float(np.max(np.ptp(pts, axis=0)))
     if not (rms > MISFIT_RATIO * noise and rms > MISFIT_FLOOR * extent):
         return None

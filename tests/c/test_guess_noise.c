@@ -6,6 +6,7 @@
  * against its definition by divided differences 1 / prod (x_j - x_l). */
 #include "testutil.h"
 #include "fit_internal.h"
+#include <float.h>
 #include <string.h>
 
 static int cmp_double(const void *a, const void *b)
@@ -219,10 +220,10 @@ START_TEST(test_noise_frame_by_definition)
 END_TEST
 
 /* Repeated points (every point twice, as a pen at rest or a scanner's duplicates) are no
- * independent samples: the frame estimate skips stencils with a point repeated, so the
- * copies' zero difference is not taken for zero noise (measured before: 1e-17 of the
- * truth, and test_fit_lbfgs.c's paired loop tried every candidate); here every stencil
- * holds a copy, so the plain figure, not below half the noise. */
+ * independent samples: the copies' zero difference is not taken for zero noise (measured
+ * before the frame skipped such stencils: 1e-17 of the truth, and test_fit_lbfgs.c's paired
+ * loop tried every candidate); not below half the noise (test_noise_repeats_counted_once:
+ * the figure of the points without their repeats). */
 START_TEST(test_noise_repeated_points)
 {
     const size_t ns[] = {20, 200};
@@ -376,6 +377,99 @@ START_TEST(test_noise_sorted_short_dense)
 }
 END_TEST
 
+/* copies (from rng) of the n points xy into out: mode 0 each twice, 1 three times, 2 a
+ * random stall (1 to 4 copies), 3 each twice, the copy moved by tiny (a near-equal repeat,
+ * in both coordinates); returns their count */
+static size_t with_repeats(const double *xy, size_t n, int mode, double tiny, unsigned long long *rng, double *out)
+{
+    size_t m = 0;
+    for (size_t i = 0; i < n; i++) {
+        const int c = mode == 0 || mode == 3 ? 2 : mode == 1 ? 3 : 1 + (int)test_uniform(rng, 0.0, 3.999);
+        for (int j = 0; j < c; j++, m++) {
+            out[2 * m] = xy[2 * i] + (j && mode == 3 ? tiny : 0.0);
+            out[2 * m + 1] = xy[2 * i + 1] - (j && mode == 3 ? tiny : 0.0);
+        }
+    }
+    return m;
+}
+
+/* QA20 F1: a scanner writing every point twice (three times, or stalling) made el_fit_noise
+ * and el_fit_noise_quick read ~0.4 x the point spacing (50 exact points of an elastica:
+ * 1.1e-4 -> 0.031 doubled, 0.0155 tripled; 200: 1.7e-6 -> 0.0076), and a noisy scan's
+ * figure rose above its noise. Repeats (equal, or within 1e-12 of the scale) count once:
+ * the figures (public and the fit's own) are those of the points without them, to the bit
+ * for the public ones. Sets: exact elasticae of 50 and 200 points, noisy uneven scans of
+ * 400 points (noise 0.05, offset 0 and 12345.6) and 5000 points sorted along their curve
+ * (el_fit_noise's stride search); fewer than 4 distinct points are too few (EL_EINVAL). */
+START_TEST(test_noise_repeats_counted_once)
+{
+    enum { NM = 5000 };
+    static double xy[2 * NM], rep[2 * 4 * NM], s[NM], th[NM], sorted[2 * NM];
+    unsigned long long rng = 2020;
+    const el_smooth_params c = {0.0, 0.0, 0.3, 1.0, 0.6, 0.2, 4.0};
+    for (int set = 0; set < 5; set++) {
+        const size_t n = set == 0 ? 50 : set == 1 ? 200 : set < 4 ? 400 : NM;
+        const double len = set == 4 ? 20.0 : 4.0, off = set == 3 ? 12345.6 : 0.0;
+        if (set < 2) for (size_t i = 0; i < n; i++) s[i] = len * (double)i / (double)(n - 1);
+        else random_places(&rng, n, len, s);
+        const el_smooth_params p = {0.0, 0.0, 0.3, 1.0 / (len * len) * 16.0, 0.6, 0.2, len};
+        ck_assert_int_eq(el_smooth_eval(set == 4 ? &p : &c, n, s, xy, th, NULL), EL_OK);
+        if (set == 4) {
+            double given, along;
+            noisy_sorted_along(n, s, th, &rng, xy, sorted, &given, &along);
+            memcpy(xy, sorted, sizeof(double) * 2 * n);
+        } else if (set >= 2) {
+            for (size_t i = 0; i < 2 * n; i++) xy[i] += off + 0.05 * test_normal(&rng);
+        }
+        double want, want_quick;
+        ck_assert_int_eq(el_fit_noise(xy, n, &want), EL_OK);
+        ck_assert_int_eq(el_fit_noise_quick(xy, n, &want_quick), EL_OK);
+        if (set >= 2) ck_assert_msg(fabs(want / 0.05 - 1.0) <= 0.15, "set %d: noise %.4f", set, want);
+        for (int mode = 0; mode < 4; mode++) {
+            /* near-equal: 1e-13 of the extent; far from the origin, 1 rounding unit */
+            const double tiny = set == 3 ? 12345.6 * DBL_EPSILON : 1e-13 * len;
+            const size_t m = with_repeats(xy, n, mode, tiny, &rng, rep);
+            double got = -1.0, got_quick = -1.0;
+            ck_assert_int_eq(el_fit_noise(rep, m, &got), EL_OK);
+            ck_assert_int_eq(el_fit_noise_quick(rep, m, &got_quick), EL_OK);
+            ck_assert_msg(got == want && got_quick == want_quick,
+                          "set %d (n %zu) repeats %d (%zu points): %.6g, quick %.6g; without %.6g, %.6g",
+                          set, n, mode, m, got, got_quick, want, want_quick);
+            /* the fit's own figure (its scale sc: that of all points, repeats weighed) */
+            const double fit = noise_of(rep, m), fit_without = noise_of(xy, n);
+            ck_assert_msg(fabs(fit - fit_without) <= 1e-12 * fit_without, "set %d repeats %d: fit's %.17g, %.17g",
+                          set, mode, fit, fit_without);
+        }
+    }
+    /* fewer than 4 distinct points: too few, as n < 4 */
+    double keep = 42.0;
+    double three[12] = {0, 0, 0, 0, 1, 0, 1, 0, 1, 1, 1, 1};
+    ck_assert_int_eq(el_fit_noise(three, 6, &keep), EL_EINVAL);
+    ck_assert_int_eq(el_fit_noise_quick(three, 6, &keep), EL_EINVAL);
+    ck_assert(keep == 42.0);
+}
+END_TEST
+
+/* QA20 F2: 20 copies of (12345.6, -7.5) read EL_OK and noise 0 (their centroid is off by
+ * rounding: the spread about it 1.8e-12, not 0); now EL_ESINGULAR as at the origin, and the
+ * fits' shared test (el__fit_normalisation) the same: the spread about the first point within
+ * 32 rounding units of the largest coordinate (el_plane_fit's rule), also with one point a
+ * rounding unit off (el_fit_fractions read that EL_OK). */
+START_TEST(test_noise_all_equal_far_from_origin)
+{
+    double keep = 42.0, eq[40];
+    for (int i = 0; i < 20; i++) { eq[2 * i] = 12345.6; eq[2 * i + 1] = -7.5; }
+    for (int k = 0; k < 2; k++) {
+        if (k) eq[6] = nextafter(12345.6, 2e4);
+        ck_assert_int_eq(el_fit_noise(eq, 20, &keep), EL_ESINGULAR);
+        ck_assert_int_eq(el_fit_noise_quick(eq, 20, &keep), EL_ESINGULAR);
+        double t[20];
+        ck_assert_int_eq(el_fit_fractions(eq, 20, EL_PARAM_AUTO, t, NULL), EL_ESINGULAR);
+    }
+    ck_assert(keep == 42.0);
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("guess_noise");
@@ -389,6 +483,8 @@ static Suite *suite(void)
     tcase_add_test(tc, test_noise_public);
     tcase_add_test(tc, test_noise_sorted_along);
     tcase_add_test(tc, test_noise_sorted_short_dense);
+    tcase_add_test(tc, test_noise_repeats_counted_once);
+    tcase_add_test(tc, test_noise_all_equal_far_from_origin);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -264,3 +264,48 @@ def test_cli_says_it(tmp_path, capsys):
     np.savetxt(g, hand_drawn(), delimiter=",")
     code, _, err = cli(capsys, "fit", g)
     assert code == 0 and "not one" not in err
+
+
+def qa20_corner(noise=0.05, n=400, seed=5):
+    """QA20's corner scan (dup_noise.py): a straight run meeting an arc at a corner, random
+    places, noise per coordinate."""
+    rng = np.random.default_rng(seed)
+    t = np.sort(rng.uniform(0, 1, n))
+    pts = np.where(t[:, None] < 0.4, np.column_stack([t * 250, 0 * t]),
+                   np.column_stack([100 + 150 * np.sin((t - 0.4) * 2.2),
+                                    150 * (1 - np.cos((t - 0.4) * 2.2)) + 40 * (t - 0.4)]))
+    return pts + rng.normal(0, noise, pts.shape)
+
+
+def test_repeated_points_count_once():
+    """QA20 F1: every point of the corner scan written twice read its noise 0.051 as 0.226
+    and el.fit's MisfitWarning (12.3 x the noise) was lost (tripled: 0.124, ratio 5.05).
+    Repeats (twice, three times, random stalls of 1-4 copies, copies off by 1e-13 of the
+    extent) give the noise level of the points without them, to the bit, and the warning."""
+    P = qa20_corner()
+    rng = np.random.default_rng(20)
+    want = el.noise_level(P)
+    _, said = _fit(P, model="smooth")
+    assert len(said) == 1 and 0.045 < want < 0.055
+    near = np.repeat(P, 2, axis=0)
+    near[1::2] += 1e-13 * np.ptp(P, axis=0).max()
+    for i, Q in enumerate((np.repeat(P, 2, axis=0), np.repeat(P, 3, axis=0),
+                           np.repeat(P, rng.integers(1, 5, len(P)), axis=0), near,
+                           np.insert(P, np.arange(0, len(P), 4), P[::4], axis=0))):
+        assert el.noise_level(Q) == want
+        assert el.noise_level(Q + 12345.6) == el.noise_level(P + 12345.6)
+        if i > 2:
+            continue                    # (the fits: doubled, tripled, stalls)
+        r, said = _fit(Q, model="smooth")
+        assert len(said) == 1 and "not one elastica" in str(said[0].message)
+        assert r.misfit.noise == want and r.misfit.ratio > 10
+
+
+def test_too_few_distinct_points_or_all_equal():
+    """Fewer than 4 distinct points (repeats count once) have no noise level; 20 copies of
+    one point far from the origin (QA20 F2: EL_OK and 0) are all equal, as at the origin."""
+    with pytest.raises(ValueError, match="4 distinct points"):
+        el.noise_level(np.repeat([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0]], 3, axis=0))
+    for at in ([0.0, 0.0], [12345.6, -7.5]):
+        with pytest.raises(ValueError, match="4 distinct points"):
+            el.noise_level(np.tile(at, (20, 1)))
