@@ -16,7 +16,7 @@ from .geometry import global_shape, is_sketch, sketch_curves
 from .proxy import (EDGE_ENDS, InputProblem, abort_transaction, bound_expression, keep_note,
                     kept_note, note_changes, note_values, said as said_kept)
 from .recording import edit_lines, edit_state
-from .spinboxes import DecadeBox, NumberBox
+from .spinboxes import BAD_RGB, DecadeBox, NumberBox
 from .units import length_text, say, unit_names
 
 CURRENT = []        # the open panel, if any (scripts and the GUI smoke test drive it)
@@ -25,7 +25,7 @@ DELAY_MS = 150      # recompute after this pause in editing (arrows, wheel, choi
 # number was solved ('1', '15', '150'); Enter or leaving the box solves at once
 TYPING_MS = 600
 WARNING_RGB = "#b36200"   # the amber of FreeCAD's report-view warnings, dark enough to read
-ERROR_RGB = "#b00"
+ERROR_RGB = BAD_RGB
 
 
 def said_now(obj, prop):
@@ -150,6 +150,7 @@ class Panel:
         self.orphans = 0
         self.closing = False
         self.enablers = []              # (widget, callable -> bool)
+        self.numbers = []               # (label, NumberBox): their typed text (bad_input)
         self.edge_buttons = []          # (edge link property, button, text when empty)
         self.timer = QtCore.QTimer()
         self.timer.setSingleShot(True)
@@ -235,6 +236,7 @@ class Panel:
         box.blockSignals(False)
         box.valueChanged.connect(lambda v: self.set(prop, float(v)))
         self.typed_in(box)
+        self.watch_text(label, box)
         self.row(grid, label, box, tip)
         self.mark_bound(box, prop)
         if when:
@@ -301,6 +303,7 @@ class Panel:
         value.blockSignals(False)
         value.valueChanged.connect(lambda v: self.set(prop, float(v)))
         self.typed_in(value)
+        self.watch_text(text, value)
         self.mark_bound(value, prop)
         r = grid.rowCount()
         grid.addWidget(box, r, 0)
@@ -340,6 +343,31 @@ class Panel:
 
     def _typed_done(self):
         self._typed = False
+
+    _input_said = ""    # the bad text the error line says (Enter, focus out, OK)
+
+    def watch_text(self, label, box):
+        """A number box whose text the panel checks: a text it cannot take ('3 deg' in a
+        length box) is marked in the box as typed (NumberBox.problem) and kept past focus-out;
+        Enter, leaving the box and OK say it on the error line, naming the field, and OK
+        refuses it (Qt kept the value of its last good prefix, 3 mm, and OK took it)."""
+        box.keep_bad_text = True
+        self.numbers.append((label, box))
+        box.lineEdit().textChanged.connect(lambda _t: self._input_said and self.say_bad_input())
+        box.editingFinished.connect(self.say_bad_input)
+
+    def bad_input(self):
+        """'Field: why' for the first field that applies whose text it cannot take, or ''."""
+        for label, box in self.numbers:
+            why = box.isEnabled() and not box.isReadOnly() and box.problem()
+            if why:
+                return f"{label}: {why}"
+        return ""
+
+    def say_bad_input(self):
+        if not self.gone:
+            self._input_said = self.bad_input()
+            self.show_error()
 
     def check(self, grid, text, prop, tip, when=None, target=None, at=None):
         """A check box bound live to the boolean property prop (of ``target``, default
@@ -406,8 +434,10 @@ class Panel:
                 return
             if sel[0][0] is self.obj or self.obj in sel[0][0].OutListRecursive:
                 # a link to the feature's own result would be a dependency loop
+                why = ("this is the feature itself" if sel[0][0] is self.obj
+                       else f"{sel[0][0].Label} depends on this feature")
                 self.result.setText("<b style='color:#b00'>pick an edge of another object "
-                                    f"({sel[0][0].Label} depends on this feature)</b>")
+                                    f"({why})</b>")
                 return
             if at in self.obj.PropertiesList:
                 from .blend import picked_end
@@ -572,9 +602,7 @@ class Panel:
         """Result text (an error on the error line, at the top) and which fields apply."""
         o = self.obj
         failed = o.Status.startswith("error")
-        if self.error is not None:
-            self.error[1].setText(said_now(o, "Status") if failed else "")
-            self.error[0].setVisible(failed)
+        self.show_error()
         self.result.setText("" if failed else self.result_text())
         if hasattr(self, "sketch"):
             self.offer_sketches()
@@ -583,6 +611,16 @@ class Panel:
             self.warning[1].setText("<br>".join(said))
             self.warning[0].setVisible(bool(said))
         self.refresh_enabled()
+
+    def show_error(self):
+        """The error line: a field's text it cannot take (say_bad_input), else why the
+        solve failed, else hidden."""
+        if self.error is not None:
+            o = self.obj
+            text = self._input_said or (said_now(o, "Status") if o.Status.startswith("error")
+                                        else "")
+            self.error[1].setText(text)
+            self.error[0].setVisible(bool(text))
 
     def refresh_enabled(self):
         if not self._keep and not self.copy_target():
@@ -670,6 +708,9 @@ class Panel:
             self.gone_away()
             return True
         self.flush()
+        self.say_bad_input()
+        if self._input_said:        # on the error line; the panel stays open to fix it
+            return False
         if self.obj.Status.startswith("error"):
             # the preview said it on the panel's error line only: OK says it in the report
             # view too, and the panel stays open, the user fixes the input or cancels

@@ -11,10 +11,15 @@ from PySide import QtGui
 
 from .units import box_text, feet_inches, length_unit, plain, tension_unit, user_length
 
+BAD_RGB = "#b00"                         # panelbase.ERROR_RGB: the error line's red
+
 
 # a box's unit as FreeCAD's unit parser writes it (App.Units.Quantity)
 _PARSED_UNIT = {"mm": "mm", "1/mm": "1/mm", "1/mm\u00b2": "1/mm^2", "mm\u00b2": "mm^2",
                 "N\u00b7mm\u00b2": "N*mm^2"}
+# what a box of that unit takes, in a refusal ('3 deg is an angle, not a length')
+_KIND = {"mm": "a length", "1/mm": "a curvature (1/length)", "1/mm\u00b2": "a tension (1/length\u00b2)",
+         "mm\u00b2": "an area (length\u00b2)", "N\u00b7mm\u00b2": "a stiffness (force \u00b7 length\u00b2)"}
 
 
 def _in_unit(text, unit, plain=1.0):
@@ -34,7 +39,11 @@ def _in_unit(text, unit, plain=1.0):
         return q.Value * plain
     ref = App.Units.Quantity(f"1 {_PARSED_UNIT.get(unit, '?')}") if unit else None
     if ref is None or q.Unit != ref.Unit:
-        raise ValueError(f"{text}: not a quantity in {unit or 'plain numbers'}")
+        kind = q.Unit.Type or "a quantity of another kind"     # FreeCAD's name: 'Angle', 'Mass'
+        kind = kind if kind.startswith("a") and " " in kind else \
+            f"a{'n' if kind[0].lower() in 'aeiou' else ''} {kind.lower()}"
+        raise ValueError(f"{text.strip()} is {kind}, not {_KIND.get(unit, 'a plain number')}"
+                         + (f" ({unit})" if unit else ""))
     return q.Value / ref.Value
 
 
@@ -66,6 +75,8 @@ class NumberBox(QtGui.QDoubleSpinBox):
         # as narrow as its minimum, not the width of '-1e+06 1/mm' (its range's text): the
         # Fit panel's Ends box was 216 px wide for it
         self.setSizePolicy(QtGui.QSizePolicy.Preferred, QtGui.QSizePolicy.Fixed)
+        self._palette = QtGui.QPalette(self.lineEdit().palette())
+        self.lineEdit().textChanged.connect(self._mark_input)
 
     def shown(self, value):
         """(factor, unit): the box shows ``value`` as value / factor unit."""
@@ -150,6 +161,50 @@ class NumberBox(QtGui.QDoubleSpinBox):
 
     def fixup(self, text):
         return self.textFromValue(self.value())
+
+    # A text the box cannot take ('3 deg', '2 kg' in a length box; '5 km' beyond its range)
+    # is marked as FreeCAD's Quantity boxes mark invalid input: red, and why in its tooltip.
+    # Qt keeps the value of its last acceptable prefix ('3' of '3 deg': 3 mm); a panel
+    # (``keep_bad_text``) keeps such text past focus-out rather than Qt's silent return to
+    # that value, and its OK refuses it, naming the field (panelbase.Panel.bad_input).
+    keep_bad_text = False
+
+    def problem(self):
+        """Why the box's text is not a value it takes ('3 deg is an angle, not a length
+        (mm)', '5 km is 5000000 mm, above the largest, 1000000 mm'), or ''."""
+        text = self.lineEdit().text()
+        if text == self.textFromValue(self.value()) or (
+                self.specialValueText() and text == self.specialValueText()):
+            return ""
+        try:
+            v = self._number(text)
+        except ValueError as exc:
+            return str(exc)
+        if v < self.minimum():
+            return (f"{text.strip()} is below the smallest, "
+                    f"{self.textFromValue(self.minimum())}")
+        if v > self.maximum():
+            return (f"{text.strip()} is above the largest, "
+                    f"{self.textFromValue(self.maximum())}")
+        return ""
+
+    def _mark_input(self, _text=None):
+        why = self.problem()
+        edit = self.lineEdit()
+        if why:
+            pal = QtGui.QPalette(self._palette)
+            pal.setColor(QtGui.QPalette.Text, QtGui.QColor(BAD_RGB))
+            edit.setPalette(pal)
+        else:
+            edit.setPalette(self._palette)
+        edit.setToolTip(why)            # over the text; the box's own tooltip elsewhere
+
+    def focusOutEvent(self, event):
+        text, why = self.lineEdit().text(), self.keep_bad_text and self.problem()
+        super().focusOutEvent(event)
+        if why and self.lineEdit().text() != text:
+            self.lineEdit().setText(text)      # still marked: OK says why and refuses it
+            self.editingFinished.emit()        # Qt's came with its own text back
 
     _mark = None                         # the bound-expression mark's action (bind_mark)
 
