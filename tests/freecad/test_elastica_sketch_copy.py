@@ -31,6 +31,59 @@ class CopyIntoSketchTest(S.DocTest):
         self.doc.recompute()
         return sk
 
+    def test_a_copy_again_replaces_the_earlier_copy_in_a_closed_profile(self):
+        """QA20gui F4: a fit copied into a sketch, the profile closed there with three lines
+        joined by coincidences, a source point moved, the fit copied again into that sketch:
+        the earlier copy is replaced in place (one B-spline, the same index), the lines
+        follow its new ends, the profile stays one closed wire that makes a solid. It added a
+        second B-spline beside the first (two wires; a Pocket of it failed)."""
+        import Sketcher
+        xy = [(x, 12 * math.sin(x / 25.0) + 0.3 * ((x * 7) % 3)) for x in range(0, 110, 10)]
+        src = S.points_sketch(self.doc, xy, "Scan")
+        fit = Fi.make(self.doc, [(src, [])], Model="smooth")
+        self.doc.recompute()
+        sk = self.doc.addObject("Sketcher::SketchObject", "Profile")
+        sk.Placement = fit.Plane
+        self.assertEqual(G.write_to_sketch(fit, sk), [0])
+        self.doc.recompute()
+        a, b = sk.Geometry[0].StartPoint, sk.Geometry[0].EndPoint
+        down = App.Vector(0, -40, 0)
+        for p, q in ((b, b + down), (b + down, a + down), (a + down, a)):
+            sk.addGeometry(Part.LineSegment(p, q), False)
+        for g0, p0, g1, p1 in ((0, 2, 1, 1), (1, 2, 2, 1), (2, 2, 3, 1), (3, 2, 0, 1)):
+            sk.addConstraint(Sketcher.Constraint("Coincident", g0, p0, g1, p1))
+        self.doc.recompute()
+        self.assertEqual(len(sk.Shape.Wires), 1)
+        self.assertTrue(sk.Shape.Wires[0].isClosed())
+        x, y = xy[5]
+        src.movePoint(5, 1, App.Vector(x, y + 4.0, 0))
+        self.doc.recompute()
+        self.assertFalse(fit.Status.startswith("error"), fit.Status)
+        moved = [tuple(p) for p in sk.Shape.Edges[0].discretize(40)]
+        self.assertGreater(S.distance_to_shape(moved, fit.Shape), 0.5)   # the copy is old
+        self.assertEqual(G.write_to_sketch(fit, sk), [0])
+        self.doc.recompute()
+        self.assertEqual([g.TypeId for g in sk.Geometry],
+                         ["Part::GeomBSplineCurve"] + ["Part::GeomLineSegment"] * 3)
+        self.assertEqual(len(sk.Constraints), 4)
+        wires = sk.Shape.Wires
+        self.assertEqual(len(wires), 1)
+        self.assertTrue(wires[0].isClosed())
+        solid = Part.Face(wires[0]).extrude(fit.Plane.Rotation.multVec(App.Vector(0, 0, 5)))
+        self.assertTrue(solid.isValid())
+        self.assertGreater(solid.Volume, 0)
+        curve = [tuple(p) for p in sk.Shape.Edges[0].discretize(40)]
+        self.assertLess(S.distance_to_shape(curve, fit.Shape), 1e-6)  # the copy of now
+        # the copy into another sketch is another copy (not replaced): two sketches, two
+        other = self.doc.addObject("Sketcher::SketchObject", "Other")
+        other.Placement = fit.Plane
+        self.assertEqual(G.write_to_sketch(fit, other), [0])
+        self.assertEqual(len(sk.Geometry), 4)
+        # the earlier copy deleted in the Sketcher: a copy is added again
+        sk.delGeometry(0)
+        self.doc.recompute()
+        self.assertEqual(G.write_to_sketch(fit, sk), [3])
+
     def test_a_sketch_in_another_plane_is_refused_untouched(self):
         plane = S.SKETCH_PLACEMENT
         tilted = App.Placement(plane.Base, plane.Rotation.multiply(

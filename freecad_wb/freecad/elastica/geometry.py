@@ -301,8 +301,30 @@ def write_to_sketch(feature, sketch, constrain_to=None):
     which no longer follows the feature. ``constrain_to`` [(geo index, pos), (geo index,
     pos)] adds endpoint tangency of the new curve's start and end to those sketch
     geometries (what version-1 blends recorded). Returns the new geometry indices.
-    InputProblem, with nothing added, when the sketch is not in the curve's plane."""
-    ids = [sketch.addGeometry(c, False) for c in sketch_curves(feature, sketch)]
+    InputProblem, with nothing added, when the sketch is not in the curve's plane.
+
+    A sketch that holds an earlier copy of the same feature (its geometry Tags, kept in
+    the feature's hidden COPIES) gets it replaced in place, at its indices: the
+    constraints joining it to the rest of the profile stay and the solver moves their
+    ends onto the new copy, as when a curve is edited in the Sketcher. A second copy
+    beside the first (what the panel's Copy into did) overlapped it, and a Pocket of the
+    sketch failed with only 'Recompute failed!' (QA20gui F4). The report view names it."""
+    curves = sketch_curves(feature, sketch)
+    earlier = earlier_copy(feature, sketch)
+    if earlier and len(earlier) == len(curves):
+        geometry = sketch.Geometry
+        for i, c in zip(earlier, curves):
+            geometry[i] = c
+        _follow_ends(sketch, geometry, earlier)
+        sketch.Geometry = geometry          # (Sketcher's own constraints keep their indices)
+        ids = earlier
+        App.Console.PrintMessage(
+            f"Elastica: {sketch.Label}: its earlier copy of {feature.Label} (geometry "
+            f"{', '.join(str(i + 1) for i in ids)}) replaced by the curve of now\n")
+        constrain_to = None                 # joined already
+    else:
+        ids = [sketch.addGeometry(c, False) for c in curves]
+    _remember_copy(feature, sketch, ids)
     if constrain_to and ids:
         import Sketcher
         (g0, pos0), (g1, pos1) = constrain_to
@@ -314,3 +336,49 @@ def write_to_sketch(feature, sketch, constrain_to=None):
                 App.Console.PrintWarning(f"Elastica: tangency not added ({exc})\n")
                 sketch.addConstraint(Sketcher.Constraint("Coincident", g, pos, mine, mypos))
     return ids
+
+
+# the Tags of the geometry each earlier copy of a feature wrote ("<sketch name> <tag>"): a
+# copy into the same sketch replaces it (write_to_sketch)
+COPIES = "SketchCopies"
+
+
+def earlier_copy(feature, sketch):
+    """The indices in ``sketch`` of the feature's earlier copy there (in the order written),
+    or [] (none, or a piece of it deleted since)."""
+    tags = [e.split(" ", 1)[1] for e in getattr(feature, COPIES, ())
+            if e.split(" ", 1)[0] == sketch.Name]
+    at = {g.Tag: i for i, g in enumerate(sketch.Geometry)}
+    ids = [at.get(t) for t in tags]
+    return ids if ids and None not in ids else []
+
+
+def _follow_ends(sketch, geometry, ids):
+    """The line segments joined to the ends of ``ids`` by Coincident constraints moved onto
+    the new ends in ``geometry``: the solver then has nothing to move (it moved the copy's
+    poles, 0.21 mm off the feature, as much as the lines)."""
+    def end(g, pos):
+        return geometry[g].StartPoint if pos == 1 else geometry[g].EndPoint
+    for c in sketch.Constraints:
+        if c.Type != "Coincident":
+            continue
+        for (g, pos), (h, hpos) in (((c.First, c.FirstPos), (c.Second, c.SecondPos)),
+                                    ((c.Second, c.SecondPos), (c.First, c.FirstPos))):
+            if g in ids and pos in (1, 2) and h not in ids and hpos in (1, 2) \
+                    and 0 <= h < len(geometry) and isinstance(geometry[h], Part.LineSegment):
+                # in place: its Tag and construction mode kept (not a new segment)
+                if hpos == 1:
+                    geometry[h].StartPoint = end(g, pos)
+                else:
+                    geometry[h].EndPoint = end(g, pos)
+
+
+def _remember_copy(feature, sketch, ids):
+    if COPIES not in feature.PropertiesList:
+        feature.addProperty("App::PropertyStringList", COPIES, "Output",
+                            "The sketch geometry of the last copy into each sketch (a copy "
+                            "into it again replaces it)", 4 | 8)     # hidden, output
+    geometry = sketch.Geometry
+    feature.SketchCopies = [e for e in feature.SketchCopies
+                            if e.split(" ", 1)[0] != sketch.Name] + \
+        [f"{sketch.Name} {geometry[i].Tag}" for i in ids]

@@ -412,7 +412,8 @@ def attach_view(obj, restored=False):
 # properties whose change outside a recompute leaves its outcome standing (drop_kept): the
 # label, the visibility, the links to the containers (their placements are in the key), a
 # command's note
-KEEPING = frozenset(("Label", "Label2", "Visibility", "Proxy", "Containers", NOTE))
+KEEPING = frozenset(("Label", "Label2", "Visibility", "Proxy", "Containers", NOTE,
+                     "SketchCopies"))       # geometry.COPIES: where it was copied
 
 
 class FeatureProxy:
