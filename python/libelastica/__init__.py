@@ -3,7 +3,8 @@ interpolation, B-splines (Python binding of the C library)."""
 import importlib as _importlib
 
 from . import _entry   # first: Ctrl-C while the elastica command imports (only then) exits 130
-from ._ffi import DomainError, ElasticaError, LengthRangeError, NotConvergedError, SingularError
+from ._ffi import (AngleUnitWarning, DomainError, ElasticaError, LengthRangeError, NotConvergedError,
+                   SingularError)
 from .core import DiscreteElastica, SmoothElastica
 from . import io
 from .cubic import SPARSE_POINTS, SparseWarning, cubic_distances, smooth_fits_better

@@ -116,6 +116,12 @@ class SingularError(ElasticaError):
     """Degenerate input: collinear or coincident data, singular systems (EL_ESINGULAR)."""
 
 
+class AngleUnitWarning(UserWarning):
+    """An angle the binding takes in radians is past a full turn: degrees given by mistake?
+    (warn_if_degrees; the elastica command, which reads every angle with its unit, turns it
+    off and says a tangent past a full turn in degrees.)"""
+
+
 _ERRORS = {lib.EL_ENOCONV: NotConvergedError, lib.EL_EMAXITER: NotConvergedError,
            lib.EL_ERANGE: LengthRangeError,
            lib.EL_EDOM: DomainError, lib.EL_ESINGULAR: SingularError}
@@ -335,13 +341,14 @@ def shown(value) -> str:
 
 def warn_if_degrees(angle: float, name: str, stacklevel: int = 3) -> None:
     """Warn when an angle the binding takes in radians looks like degrees (|angle| > 2 pi:
-    the command line's --start-tangent 90 is degrees, fit's constraints radians)."""
+    the command line's --start-tangent 90 is degrees, fit's constraints radians):
+    AngleUnitWarning."""
     if abs(angle) > 2 * math.pi:
         import warnings
         warnings.warn(f"{name} = {angle:g}: the binding takes radians (|angle| > 2 pi is "
                       f"read modulo 2 pi); degrees? use math.radians({angle:g}) (a continuous "
                       "angle past a full turn, as curve.angle gives on a loop, is fine)",
-                      UserWarning, stacklevel=stacklevel + 1)
+                      AngleUnitWarning, stacklevel=stacklevel + 1)
 
 
 def as_size(x, name: str, lo: int = 0, hi: int = SIZE_MAX) -> int:

@@ -24,8 +24,8 @@ from ._entry import INTERRUPTED
 from ._interrupt import end_if_a_call_runs, interruptible
 from ._text import coordinates
 from .cli_common import (ANGLE_UNITS, EXIT_BADINPUT, EXIT_INTERNAL, EXIT_NOCONV, EXIT_OK, PROG,
-                         _finite, _input_map, _mapped_bspline, _table, angle, thousands,
-                         thousands_option, tol_option)
+                         _finite, _input_map, _mapped_bspline, _table, angle, said_warnings,
+                         thousands, thousands_option, tol_option)
 from .cli_fit import cmd_fit, fit_constraints
 from .cli_g2quad import cmd_g2quad
 from .cli_outputs import Outputs, check_outputs
@@ -744,8 +744,9 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
             check_outputs(args)
             # Ctrl-C during a C fit: at once, not when it returns; an output on stdout: the
             # report is not printed (as --json - never printed it)
-            with interruptible(), (contextlib.redirect_stdout(io.StringIO()) if args.to_stdout
-                                   else contextlib.nullcontext()):
+            with interruptible(), said_warnings(args.command), \
+                    (contextlib.redirect_stdout(io.StringIO()) if args.to_stdout
+                     else contextlib.nullcontext()):
                 status = args.func(args)
             args.outputs.commit()
             return status

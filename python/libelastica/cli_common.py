@@ -29,6 +29,30 @@ EXIT_OK, EXIT_NOCONV, EXIT_BADINPUT, EXIT_INTERNAL = 0, 1, 2, 3
 PROG = "elastica"
 
 
+@contextmanager
+def said_warnings(command: str):
+    """Every warning raised under the command that it does not say itself, said on stderr
+    in the command's words: one line 'elastica COMMAND: warning: ...', without Python's
+    file:line, category and source line, and without the binding function's name ('fit: ')
+    before it (QA20 F3: `fit --start-tangent 400` showed 'fit.py:692: UserWarning: ...' and
+    its source line). The binding's radians check (AngleUnitWarning: degrees?) is not said:
+    the command line reads every angle with its unit (angle(); a tangent past a full turn is
+    said by cli_fit in degrees)."""
+    import warnings
+    import libelastica as el
+
+    def show(message, category, filename, lineno, file=None, line=None):
+        text = " ".join(str(message).split())
+        name, colon, rest = text.partition(": ")
+        if colon and name.isidentifier() and callable(getattr(el, name, None)):
+            text = rest     # 'fit: ...' of el.fit: the command names itself
+        print(f"{PROG} {command}: warning: {text}", file=sys.stderr)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", el.AngleUnitWarning)
+        warnings.showwarning = show
+        yield
+
+
 def _fmt(v: Any, width: int = 0) -> str:
     if isinstance(v, float):
         s = f"{v:.6g}"

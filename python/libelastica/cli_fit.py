@@ -323,6 +323,25 @@ def _constraints(args, data: np.ndarray) -> Dict[str, Any]:
     return con
 
 
+def _warn_turned_tangents(args) -> None:
+    """A warning on stderr, in degrees, for an end tangent typed past a full turn
+    (--start-tangent 400 is 40 deg turned once more): the direction is all an end tangent
+    holds (the fit reads it modulo a turn), so it is fitted; a typing slip shows here. (The
+    binding's own check of such an angle asks a Python caller whether he meant degrees:
+    said_warnings keeps it off the command line, which reads every angle with its unit.)"""
+    for end in ("start", "end"):
+        a = getattr(args, f"{end}_tangent", None)
+        if a is None or abs(a) <= 2 * np.pi:     # (warn_if_degrees' bound)
+            continue
+        deg = float(np.degrees(a))
+        within = float(np.fmod(deg, 360.0))
+        turns = round(abs(deg - within) / 360.0)
+        times = {1: "once", 2: "twice"}.get(turns, f"{turns} times")
+        deg, within = (f"{round(v, 4) + 0.0:.10g}" for v in (deg, within))   # (no '-0')
+        print(f"{PROG} fit: warning: --{end}-tangent {deg} deg is {within} deg turned "
+              f"{times} more: fitted as the direction {within} deg", file=sys.stderr)
+
+
 def _in_order(path, pts: np.ndarray, order: str):
     """(the points, None) in the file's order, warned of on stderr when that is no curve's
     (el.out_of_order: a shuffled scan is fitted as a coil through its cloud); --order curve:
@@ -569,6 +588,8 @@ def _print_bspline(b: Dict[str, Any], what: str = "") -> None:
 
 def cmd_fit(args) -> int:
     files = args.files
+    if not args.keyline:    # (a keyline refuses end conditions)
+        _warn_turned_tangents(args)
     batch = len(files) > 1
     if not batch:
         recs, doc = fit_file(files[0], args, batch=False)

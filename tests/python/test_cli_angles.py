@@ -4,7 +4,11 @@ tangent angles as "angles", and the report's phi had no unit."""
 from __future__ import annotations
 
 import json
+import os
 import re
+import subprocess
+import sys
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -120,3 +124,48 @@ def test_every_angle_typed_is_in_degrees(capsys):
     helped = " ".join(cli(capsys, "fit", "--help")[1].split())
     assert "'x0=0,y0=0,phi=30' (phi in degrees as every angle of the command line" in helped
     assert "angles (--fix phi, --start-tangent, --end-tangent): degrees" in helped
+
+
+def _elastica(*args):
+    """`python -m libelastica *args` as a user runs it: (exit code, stderr)."""
+    r = subprocess.run([sys.executable, "-m", "libelastica", *map(str, args)], env=dict(os.environ),
+                       capture_output=True, text=True, timeout=120)
+    return r.returncode, r.stderr
+
+
+def test_a_tangent_past_a_full_turn_is_said_in_degrees(tmp_path):
+    """QA20 F3: `fit --start-tangent 400` (degrees) showed the binding's radians check to the
+    user who typed degrees: 'fit.py:692: UserWarning: ... the binding takes radians ...;
+    degrees? use math.radians(6.98132)' and its Python source line. The command says it in
+    degrees, once, and fits the direction (the JSON keeps the angle typed, in radians);
+    the `bspline` of that JSON (cubic_through's check) says nothing of it."""
+    for typed, said in (("400", "--start-tangent 400 deg is 40 deg turned once more"),
+                        ("-1120deg", "--start-tangent -1120 deg is -40 deg turned 3 times more"),
+                        ("7rad", "--start-tangent 401.0705 deg is 41.0705 deg turned once more")):
+        code, err = _elastica("fit", SAMPLE_S, "--start-tangent", typed, "--json", tmp_path / "f.json")
+        assert code in (0, 1), err
+        assert "UserWarning" not in err and ".py:" not in err and "math.radians" not in err, err
+        assert err.count(said) == 1, err
+        assert json.loads((tmp_path / "f.json").read_text())["constraints"]["start_tangent_rad"] == \
+            (7.0 if typed == "7rad" else np.radians(float(typed.removesuffix("deg"))))
+    code, err = _elastica("bspline", tmp_path / "f.json", "--json", tmp_path / "b.json")
+    assert code == 0 and err == "", err
+    code, err = _elastica("fit", SAMPLE_S, "--end-tangent", "353")     # within a turn: silent
+    assert "turned" not in err and "deg" not in err, err
+
+
+def test_a_library_warning_the_command_does_not_say_is_said_in_its_words(capsys, monkeypatch):
+    """Any warning raised under a command and not said by it is one line 'elastica CMD:
+    warning: ...' on stderr, without Python's file:line, category, source line and the
+    binding function's 'fit: ' (QA20 F3: every CLI warning path)."""
+    import libelastica.cli_fit as cli_fit
+    fit = cli_fit.quiet_fit
+
+    def warned(*args, **kwargs):
+        warnings.warn("fit: something the command does not say", RuntimeWarning)
+        return fit(*args, **kwargs)
+    monkeypatch.setattr(cli_fit, "quiet_fit", warned)
+    code, out, err = cli(capsys, "fit", SAMPLE_S, "--model", "smooth")
+    assert code == 0, err
+    assert "elastica fit: warning: something the command does not say\n" in err, err
+    assert "RuntimeWarning" not in err and ".py:" not in err, err
