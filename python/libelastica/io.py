@@ -43,6 +43,24 @@ _GROUPED = re.compile(r"[+-]?[1-9]\d{0,2}(?:\.\d{3})+(?:,\d+)?")
 _GROUPED_OR_POINT = re.compile(r"[+-]?[1-9]\d{0,2}\.\d{3}")
 
 
+def _uncommented(line: str) -> str:
+    """The line without its '#' comment: from a '#' at the line's start or after a space,
+    tab, ',' or ';' (a field's start; 'point#' in a header stays), outside a quoted field
+    ("#3" in quotes is a field), to the end. A comment after the numbers
+    ('12.3 4.5  # station 3') was refused as "not a number: '#'" (QA20 F6), and its
+    commas or semicolons counted in the choice of separator; a whole-line comment leaves
+    an empty line, skipped as before."""
+    if "#" not in line:
+        return line
+    quoted = False
+    for i, ch in enumerate(line):
+        if ch == '"':
+            quoted = not quoted     # csv's "" inside a quoted field toggles twice
+        elif ch == "#" and not quoted and (i == 0 or line[i - 1] in " \t,;"):
+            return line[:i].rstrip()
+    return line
+
+
 def _split_fields(lines, delim: Optional[str], name: str) -> list:
     """Each line's fields: by csv's rules at delim, else at whitespace. csv's own errors
     (a field past its size limit: no point file's) as InputError naming the line."""
@@ -58,7 +76,8 @@ def _split_fields(lines, delim: Optional[str], name: str) -> list:
 def _parse_text(text: str, name: str, thousands: Optional[str] = None) -> np.ndarray:
     """Rows of numbers separated by semicolons, tabs or spaces (with decimal commas or
     points), or commas (decimal commas quoted, as spreadsheets write them: "1,5","0,25").
-    Blank lines and lines starting with '#' are skipped; so are the lines before the first
+    Blank lines and lines starting with '#' are skipped, and a '#' comment after a row's
+    numbers ('12.3 4.5  # station 3': _uncommented); so are the lines before the first
     row that holds a number when none of their fields is a number (a title, then a header
     such as ``x,y,z``: any number of them; a line with a number is never skipped), the last
     of which is the header. Rows of more than 3 columns (a
@@ -69,8 +88,8 @@ def _parse_text(text: str, name: str, thousands: Optional[str] = None) -> np.nda
     (:func:`_thousands`) are read as such in ';' and tab separated files that show it."""
     rows = []       # (line number, fields)
     header = None
-    lines = text.splitlines()
-    data_lines = [ln for ln in lines if ln.strip() and not ln.lstrip().startswith("#")]
+    lines = [_uncommented(ln) for ln in text.splitlines()]     # (a line number per line)
+    data_lines = [ln for ln in lines if ln.strip()]
     sample = "\n".join(data_lines[:20])
     delim = None
     if ";" in sample:
