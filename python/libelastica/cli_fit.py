@@ -454,9 +454,10 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
                 _by_file_row(rec, order)
         _warn_end_conditions(path, rec)
         _warn_far_points(path, rec)
-        _warn_wanders(path, rec, fitted_pts, order is None, gap)
-        if order is None and args.step is None:
-            _warn_retrace(path, rec, res.retrace)
+        retrace = res.retrace if order is None and args.step is None else None
+        if retrace is None or "side" in rec:    # (el.fit's order: the cause, said instead)
+            _warn_wanders(path, rec, fitted_pts, order is None, gap)
+        _warn_retrace(path, rec, retrace)
         if rec.get("resample_reference_rms") is not None:
             from .resampled import resample_summary
             print(f"{PROG} fit: warning: {path}: " + resample_summary(

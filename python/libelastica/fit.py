@@ -32,8 +32,9 @@ from .cubic import SPARSE_POINTS, SparseWarning, smooth_fits_better
 from ._text import LengthFormat, lengths
 from ._values import ValueEquality
 from .fit_cost import EndConditionWarning, checked_ends
-from .misfit import MisfitWarning, _places, _verdict, misfit_summary
-from .order import Retrace, curve_order, order_summary, ordering, retrace_summary, run_back
+from .misfit import MISFIT_RATIO, MisfitWarning, _places, _verdict, misfit_summary, noise_level
+from .order import (Retrace, curve_order, data_run_back, order_summary, ordering, retrace_summary,
+                    run_back, turn_back)
 
 _MODES = {"auto": 0, "uniform": 1, "chord": 2}
 _MODE_NAMES = {v: k for k, v in _MODES.items()}
@@ -261,7 +262,10 @@ class OrderWarning(WanderWarning):
     through their noise band at a lower rms than the true curve's (QA: a 30 m line's 2500
     points shuffled, fitted 1.1 km long at rms 20.6 mm against 30.0 mm); ``order="curve"``
     fits them in curve order. Also points in order that run back over part of the curve (a
-    scan passed back and forth: :func:`libelastica.order.run_back`), named."""
+    scan passed back and forth: :func:`libelastica.order.run_back` on the fit's feet, or,
+    where the fit does not follow the points (not converged, or MISFIT_RATIO times their
+    noise away), on their own pass before they turn, :func:`libelastica.order.data_run_back`:
+    both models alike), named, instead of the WanderWarning such a fit may raise."""
 
 
 def wander_summary(gap: int, points=None, unit: str = "", numbered: bool = True,
@@ -614,14 +618,28 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
         warnings.warn(f"fit: {order_summary(unordered)}: fitted in their order, the curve may coil "
                       "through them; order='curve' fits them in curve order (el.curve_order)",
                       OrderWarning, stacklevel=2)
-    elif res.wander_gap >= 0:
-        warnings.warn(f"fit: {wander_summary(res.wander_gap)}: add a point between them to hold it "
-                      "there, or bound the curve's length (constraints={'length': (lo, hi)})",
-                      WanderWarning, stacklevel=2)
-    elif res.distance != _DISTANCES["paired"]:
-        back = run_back(pts, foot, res.rms)
+    else:
+        # points that run back: the fit's feet fall there when it follows them (the smooth
+        # model's, by distance); a fit that coils or wanders through a scan passed back and
+        # forth over its whole length does not (QA20 F4: the discrete model's, status 6,
+        # rms 37 at noise 0.4, said no OrderWarning; a smooth one said a WanderWarning):
+        # the feet on the points' own pass before their turn then (data_run_back), the
+        # cause said instead of the wander it makes
+        if res.wander_gap < 0 and res.distance != _DISTANCES["paired"]:
+            back = run_back(pts, foot, res.rms)
+        # (only where the points turn back and the fit does not follow them: not converged
+        # or MISFIT_RATIO times their noise away; a coil of 20 sketched points turns back as
+        # a scan passed back and forth does: 1 of bench_fit.py's 504 point sets, its fit at
+        # 0.07 x their noise, wandering, was named so without this gate)
+        if back is None and turn_back(pts) and (st != lib.EL_OK or
+                                                res.rms > MISFIT_RATIO * noise_level(pts)):
+            back = data_run_back(pts, res.rms)
         if back is not None:
             warnings.warn(f"fit: {retrace_summary(back)}", OrderWarning, stacklevel=2)
+        elif res.wander_gap >= 0:
+            warnings.warn(f"fit: {wander_summary(res.wander_gap)}: add a point between them to hold it "
+                          "there, or bound the curve's length (constraints={'length': (lo, hi)})",
+                          WanderWarning, stacklevel=2)
     r = _result(model, res, st, pts.copy(), dist, foot, s, constraints, idx, back)
     if check_ends and (constraints or fixed):
         r = checked_ends(r, fixed, dict(model=model, distance=distance, bounds=bounds, tol=tol,

@@ -242,6 +242,59 @@ def run_back(points, foot_s, rms: float) -> Optional[Retrace]:
     return Retrace(first, last, float(s[first]), float(s[last]))
 
 
+def turn_back(points) -> int:
+    """The first point where points (n, 2) in order turn back on themselves (their chords to
+    the points k before and k after opposite, dot < 0, at every k = 1..w, w = max(3,
+    (n-1)/16)), 0 where none does: the discrete fit's test of a scan passed back and forth
+    (el__fit_retrace, fit_pairing.c: its rule and its measurements), as run_back asks it of
+    the first point it names. Written again here, with numpy, because that test is internal
+    to the C fit (no public entry returns the point)."""
+    P = np.asarray(points, dtype=float)
+    n = len(P)
+    w = max(3, (n - 1) // 16)
+    idx = np.arange(w, n - w)
+    for k in range(1, w + 1):
+        if not len(idx):
+            return 0
+        back, on = P[idx] - P[idx - k], P[idx + k] - P[idx]
+        idx = idx[np.einsum("ij,ij->i", back, on) < 0.0]
+    return int(idx[0]) if len(idx) else 0
+
+
+# the pass before the turn that data_run_back measures along: its polyline through at most
+# PASS_VERTICES of its points (every k-th and the turn; each point's foot found on each
+# segment: n x PASS_VERTICES work)
+PASS_VERTICES = 256
+
+
+def data_run_back(points, rms: float) -> Optional[Retrace]:
+    """run_back of points (n, 2) in order with their feet taken on the polyline of their own
+    pass up to the first turn (:func:`turn_back`), not on a fitted curve: a scan passed
+    back and forth over its whole length (QA20 F4: 300 points out, 300 back) fits no
+    elastica in that order, and a fit that coils through them (the discrete model's:
+    status 6, rms 37 where the noise is 0.4) has feet that do not fall where the points
+    run back. None where the points turn nowhere or their feet there do not fall as
+    run_back asks (5 x rms, 2 x their median step, the turn's chords)."""
+    P = np.asarray(points, dtype=float)
+    first = turn_back(P)
+    if not first:
+        return None
+    step = max(1, -(-first // (PASS_VERTICES - 1)))
+    V = P[np.r_[np.arange(0, first, step), first]]
+    a, d = V[:-1], np.diff(V, axis=0)
+    seg = np.hypot(d[:, 0], d[:, 1])
+    at = np.concatenate(([0.0], np.cumsum(seg)))
+    dd = np.maximum(seg * seg, np.finfo(float).tiny)
+    s = np.empty(len(P))
+    for lo in range(0, len(P), 4096):       # (a block of points against every segment)
+        q = P[lo:lo + 4096, None, :] - a[None]
+        t = np.clip(np.einsum("psj,sj->ps", q, d) / dd, 0.0, 1.0)
+        e = q - t[..., None] * d[None]
+        j = np.argmin(np.einsum("psj,psj->ps", e, e), axis=1)
+        s[lo:lo + 4096] = at[j] + t[np.arange(len(j)), j] * seg[j]
+    return run_back(P, s, rms)
+
+
 def retrace_summary(r: Retrace, unit: str = "", length: Optional[LengthFormat] = None) -> str:
     """What a warning of points that run back says (:func:`fit`'s, the CLI's)."""
     fmt = lengths(unit, length)

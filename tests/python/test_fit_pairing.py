@@ -107,3 +107,42 @@ def test_resampled_scan_at_its_spacing_fits_as_close_as_its_points():
     own = rms_to(quiet_fit(xy, model="discrete").to_bspline(), xy)
     f = el.fit_resampled(xy, 2.0, "discrete")
     assert f.rms < 1.02 * own, (f.rms, own)
+
+
+def _passed_back_and_forth(seeds, n=100):
+    """QA20 F4's scan, smaller: n points out along a 1500 mm elastica (denser at its start),
+    n others back, noise 0.4 mm (/tmp/qa20/py/f4_back_and_forth.py: 300 and 300)."""
+    truth = el.SmoothElastica(x0=5000.0, y0=-3000.0, phi=0.4, mu=1 / 400.0 ** 2, k=0.7, q=0.3,
+                              length=1500.0)
+
+    def one_pass(seed):
+        rng = np.random.default_rng(seed)
+        s = 1500 * (np.sort(rng.uniform(0, 1500, n)) / 1500) ** 1.3
+        return truth.points(s) + rng.normal(0, 0.4, (n, 2))
+    return np.vstack([one_pass(seeds[0]), one_pass(seeds[1])[::-1]])
+
+
+# main: smooth named points 100 to 197 both times; discrete (6, 7) a MisfitWarning alone
+# ('a corner at point 100? Split there', rms 32.5), (1, 2) a WanderWarning (rms 22.7); at
+# QA's 300 + 300 discrete status 6, rms 37.4, no OrderWarning
+@pytest.mark.parametrize("model", ["smooth", "discrete"])
+@pytest.mark.parametrize("seeds", [(6, 7), (1, 2)])
+def test_a_scan_passed_back_and_forth_over_its_whole_length_is_named_by_both_models(model, seeds):
+    r, warned = _fit_warned(_passed_back_and_forth(seeds), model=model)
+    said = [str(x.message) for x in warned if x.category is el.OrderWarning]
+    assert len(said) == 1 and not [x for x in warned if x.category is el.WanderWarning], \
+        [str(x.message) for x in warned]
+    m = re.match(r"fit: points (\d+) to (\d+) \(counted from 0\) run back along the curve", said[0])
+    assert m and abs(int(m[1]) - 100) <= 1 and int(m[2]) >= 195, said
+    assert r.retrace is not None and (r.retrace.first, r.retrace.last) == (int(m[1]), int(m[2]))
+
+
+def test_cli_names_a_whole_scan_passed_back_and_forth_for_the_discrete_model(capsys, tmp_path):
+    """`elastica fit` (discrete, the default) of QA20 F4's scan says the points that run back,
+    once, and not the wander that they make (main: a WanderWarning's line and a corner)."""
+    path = tmp_path / "bf.csv"
+    np.savetxt(path, _passed_back_and_forth((1, 2)), delimiter=",")
+    code, out, err = cli(capsys, "fit", path)
+    said = [line for line in err.splitlines() if "run back along the curve" in line]
+    assert len(said) == 1 and re.search(r"points (99|100|101) to 19\d \(counted from 0\)", said[0]), err
+    assert "wanders" not in err, err
