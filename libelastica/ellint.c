@@ -97,6 +97,11 @@ int el__carlson_fd(double x, double y, double z, double qs, double *rf, double *
      * r = 1e-16 (qs = 1); r ~ 1e-16 qs^-8 otherwise */
     const double QF = rf ? qs * 80.0 * maxdev(AF0, x, y, z) : 0.0;
     const double QD = qs * 120.0 * maxdev(AD0, x, y, z);
+    /* 80 or 120 times the deviation beyond DBL_MAX (a sum of the arguments near it, x = 0,
+     * y = 1e308): the test Q dev0 >= A below would hold for ever (A reaches inf). Such
+     * arguments are outside what this computes anyway: R_D's num / den overflows to inf / inf
+     * once the arguments pass ~1e40 (EL_EDOM below), so they get that status at once. */
+    if (QF > DBL_MAX || QD > DBL_MAX) return EL_EDOM;
     /* The duplication x <- (x + lam)/4 (DLMF 19.26.18) without the 1/4: the arguments
      * and means grow by 4 per step instead, lam by 4 and the square roots by 2, which are
      * exact scalings (the same bits as Carlson's, one multiplication less on the loop's
@@ -136,7 +141,7 @@ int el__carlson_fd(double x, double y, double z, double qs, double *rf, double *
 void el__carlson_fd2(el_d2 x, el_d2 y, double qs, el_d2 *rf, el_d2 *rd, el_m2 *ok)
 {
     const el_d2 one = {1.0, 1.0};
-    const el_m2 good = el_m2_and(el_m2_and(x >= 0.0, y >= 0.0), el_m2_and(x + y > 0.0, x + y + 1.0 <= DBL_MAX));  /* carlson_args_ok */
+    el_m2 good = el_m2_and(el_m2_and(x >= 0.0, y >= 0.0), el_m2_and(x + y > 0.0, x + y + 1.0 <= DBL_MAX));  /* carlson_args_ok */
     x = el_d2_sel(good, x, one);
     y = el_d2_sel(good, y, one);
     el_d2 z = one;
@@ -145,7 +150,15 @@ void el__carlson_fd2(el_d2 x, el_d2 y, double qs, el_d2 *rf, el_d2 *rd, el_m2 *o
     const el_d2 fx = el_d2_abs(AF0 - x), fy = el_d2_abs(AF0 - y), fz = el_d2_abs(AF0 - z);
     const el_d2 fm = el_d2_sel(fx > fy, fx, fy), dx = el_d2_abs(AD0 - x), dy = el_d2_abs(AD0 - y);
     const el_d2 dz = el_d2_abs(AD0 - z), dm = el_d2_sel(dx > dy, dx, dy);
-    const el_d2 QF = qs * 80.0 * el_d2_sel(fm > fz, fm, fz), QD = qs * 120.0 * el_d2_sel(dm > dz, dm, dz);
+    el_d2 QF = qs * 80.0 * el_d2_sel(fm > fz, fm, fz), QD = qs * 120.0 * el_d2_sel(dm > dz, dm, dz);
+    /* el__carlson_fd's EL_EDOM where the stopping test overflows: such a lane runs no step
+     * (0 < A) and is not ok; the other lane's steps and values are its own */
+    const el_m2 huge = el_m2_or(QF > DBL_MAX, QD > DBL_MAX);
+    if (el_m2_any(huge)) {
+        QF = el_d2_sel(huge, (el_d2){0.0, 0.0}, QF);
+        QD = el_d2_sel(huge, (el_d2){0.0, 0.0}, QD);
+        good = el_m2_andnot(huge, good);
+    }
     el_d2 AF = AF0, AD = AD0, f2 = one, f4 = one, f8 = one, num = {0.0, 0.0}, den = one;
     for (;;) {
         const el_m2 act = el_m2_or(QF >= AF, QD >= AD);

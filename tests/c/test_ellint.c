@@ -4,6 +4,7 @@
 #include "testutil.h"
 #include "internal.h"
 #include "lanes.h"
+#include <float.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_sf_ellint.h>
 #include <stdio.h>
@@ -130,8 +131,8 @@ END_TEST
 START_TEST(carlson_two_lanes_equal_the_scalar)
 {
     unsigned long long st = 99;
-    /* (and 1e308 twice: their sum beyond DBL_MAX; one such value beside 0 is left out, where
-     * the scalar loop does not end either: 80 times its deviation overflows) */
+    /* (and 1e308 twice: their sum beyond DBL_MAX; one such value beside 0, where 80 times
+     * the deviation overflows, is carlson_returns_near_dbl_max's) */
     static const double bad[] = {-1e-300, -1.0, 0.0, NAN, INFINITY, 1e308};
     long nok = 0, nbad = 0;
     for (int t = 0; t < 200000; t++) {
@@ -239,6 +240,57 @@ START_TEST(carlson_rejects_bad_arguments)
 }
 END_TEST
 
+/* Arguments whose sum nears DBL_MAX, where 80 or 120 times the deviation from the mean
+ * overflows (x = 0, y = 1e308: the duplication loop's stopping test never failed and the
+ * call never returned): they return EL_EDOM, as arguments beyond ~1e40 do already (R_D's
+ * duplication sum overflows), in both precisions, with or without R_F, in el__carlson_fd2
+ * beside an ordinary lane, whose bits stay el__carlson_fd's. Its own timeout: the code
+ * before hung here. */
+START_TEST(carlson_returns_near_dbl_max)
+{
+    const double ys[] = {1e307, 1e308, 1.7e308, DBL_MAX / 2.0, DBL_MAX - 2.0};
+    for (size_t i = 0; i < sizeof ys / sizeof ys[0]; i++)
+        for (int c = 0; c < 2; c++) {
+            const double y = ys[i], qs = c ? 0.1 : 1.0;
+            double rf, rd;
+            ck_assert_int_eq(el__carlson_fd(0.0, y, 1.0, qs, &rf, &rd), EL_EDOM);
+            ck_assert_int_eq(el__carlson_fd(y, 0.0, 1.0, qs, &rf, &rd), EL_EDOM);
+            ck_assert_int_eq(el__carlson_fd(0.0, y, 1.0, qs, NULL, &rd), EL_EDOM);   /* jacobi.c's call */
+            ck_assert_int_eq(el__carlson_fd(0.0, 1.0, y, qs, NULL, &rd), EL_EDOM);
+        }
+    /* any big argument (sum up to DBL_MAX), zeros beside it, in any place: a status */
+    unsigned long long st = 31337;
+    for (int t = 0; t < 20000; t++) {
+        double a[3];
+        for (int j = 0; j < 3; j++) a[j] = t % 5 == j ? 0.0 : pow(10.0, test_uniform(&st, -300.0, 308.0));
+        a[t % 3] = test_uniform(&st, 0.0, 1.0) * DBL_MAX;
+        if (a[0] + a[1] + a[2] > DBL_MAX) for (int j = 0; j < 3; j++) a[j] *= 0.5;
+        double rf, rd;
+        const int rc = el__carlson_fd(a[0], a[1], a[2], t % 2 ? 1.0 : 0.1, t % 3 ? &rf : NULL, &rd);
+        ck_assert(rc == EL_EDOM || (rc == EL_OK && isfinite(rd)));
+    }
+    /* two lanes: such a lane beside an ordinary, a bad and another such one */
+    const double other[][2] = {{0.3, 0.7}, {0.0, 1e-300}, {-1.0, 1.0}, {0.0, 1.7e308}, {1e308, 0.0}, {0.5, 0.5}};
+    for (size_t i = 0; i < sizeof other / sizeof other[0]; i++)
+        for (int swap = 0; swap < 2; swap++)
+            for (int c = 0; c < 2; c++) {
+                const double x[2] = {swap ? other[i][0] : 0.0, swap ? 0.0 : other[i][0]};
+                const double y[2] = {swap ? other[i][1] : 1.7e308, swap ? 1.7e308 : other[i][1]};
+                const double qs = c ? 0.1 : 1.0;
+                el_d2 rf2, rd2;
+                el_m2 ok2;
+                el__carlson_fd2((el_d2){x[0], x[1]}, (el_d2){y[0], y[1]}, qs, &rf2, &rd2, &ok2);
+                for (int l = 0; l < 2; l++) {
+                    double rf, rd;
+                    const int rc = el__carlson_fd(x[l], y[l], 1.0, qs, &rf, &rd);
+                    ck_assert_msg((rc == EL_OK) == (ok2[l] != 0), "(%g, %g): %d, %lld", x[l], y[l], rc, ok2[l]);
+                    const double a = rf2[l], b = rd2[l];
+                    if (!rc) ck_assert(memcmp(&a, &rf, sizeof a) == 0 && memcmp(&b, &rd, sizeof b) == 0);
+                }
+            }
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("ellint");
@@ -250,5 +302,9 @@ int main(void)
     tcase_add_test(tc, complete_integrals_match_gsl);
     tcase_add_test(tc, carlson_rejects_bad_arguments);
     suite_add_tcase(s, tc);
+    TCase *big = tcase_create("near DBL_MAX");   /* what hung: its own short timeout */
+    tcase_set_timeout(big, 20);
+    tcase_add_test(big, carlson_returns_near_dbl_max);
+    suite_add_tcase(s, big);
     return test_run_suite(s);
 }
