@@ -86,6 +86,20 @@ int el_discrete_eval(const el_discrete_params *p, size_t n, double *xy)
     return EL_OK;
 }
 
+/* el_discrete_curvature's vertex where the ratio may not serve (dn(z) or, at k = 1,
+ * cn(u_i) below DBL_MIN): before[0], before[1], b are vertices i - 1, i, i + 1. */
+static double kappa_general(double k, double two_h, int by_ratio, double t,
+                           const el_jacobi before[2], const el_jacobi *b)
+{
+    if (by_ratio && fabs(before[1].cn) >= DBL_MIN) return two_h * (t * before[1].cn);
+    const el_jacobi *a = &before[0];
+    const double sinK = k * (b->sn * a->dn - b->dn * a->sn);
+    const double cosK = b->dn * a->dn + k * k * b->sn * a->sn;
+    const double kap = two_h * sinK / (1.0 + cosK);
+    /* k = 1 far out where both terms underflow too: the ratio's signed zero */
+    return by_ratio && kap == 0.0 ? two_h * (t * before[1].cn) : kap;
+}
+
 /* kappa_i = (2/h) tan(K_i/2), K_i = Theta_i - Theta_{i-1} = a_{i+1} - a_{i-1} (3.4). With
  * u = u_i, u_{i+-1} = u +- z, the addition theorems (sin a = k sn, cos a = dn) give
  *   sin K_i = 2 k sn(z) dn(z) cn(u) / Q,  1 + cos K_i = 2 dn(z)^2 / Q,  Q = dn(u)^2 + k^2 sn(u)^2 cn(z)^2,
@@ -93,7 +107,8 @@ int el_discrete_eval(const el_discrete_params *p, size_t n, double *xy)
  * of cn(u_i) (the discrete (4.3)'s kappa = 2 k sqrt(mu) cn(u)). The difference
  * k (sn_{i+1} dn_{i-1} - dn_{i+1} sn_{i-1}) of nearly equal terms lost eps / |K| relative
  * (1.9e-7 at z = 2.4e-8); it stays only where dn(z) is below DBL_MIN (k = 1 and |z| > ~708,
- * where cn(u_i) and dn(z) underflow but tan(K_i/2) = sinh z / cosh u_i need not; k > 1 with
+ * where cn(u_i) and dn(z) underflow but tan(K_i/2) = sinh z / cosh u_i need not, and at k = 1
+ * where cn(u_i) alone does, |u_i| > ~708: kappa_general; k > 1 with
  * K = pi to double precision: infinite curvature, EL_EDOM either way). */
 int el_discrete_curvature(const el_discrete_params *p, size_t n, double *kappa)
 {
@@ -106,26 +121,34 @@ int el_discrete_curvature(const el_discrete_params *p, size_t n, double *kappa)
     const double k = p->k, two_h = 2.0 / p->h;
     const int by_ratio = fabs(zv.dn) >= DBL_MIN;
     const double t = by_ratio ? k * zv.sn / zv.dn : 0.0; /* tan(K_i/2) / cn(u_i); |t| < 1 / DBL_MIN */
+    /* k = 1: cn(u_i) = sech u_i underflows past |u_i| ~ 708 where t = sinh z can be large and
+     * sinh z / cosh u_i an ordinary number (e^-40 at z = 700, u_i = 740): the difference there
+     * (its terms sech(u_i - z), sech(u_i + z) do not both underflow). k != 1: cn underflows
+     * only next to its zeros, where the product's absolute error is below DBL_MIN |t|. */
+    const int plain = by_ratio && fabs(k) != 1.0;   /* the ratio at every vertex */
     double bad = 0.0; /* x * 0 is NaN for inf and NaN */
     el_jacobi before[2] = {{0, 0, 0, 0, 0, 0}, {0, 0, 0, 0, 0, 0}}, v[BLOCK]; /* vertices i-2, i-1 */
     for (size_t i0 = 0; i0 < n; i0 += BLOCK) {
         const size_t nb = n - i0 < BLOCK ? n - i0 : BLOCK;
         if (el__walk_values(&wk, nb, NULL, v, NULL)) return domain_error(kappa, n - 2, NULL, 0);
-        for (size_t j = 0; j < nb; j++) {
-            const size_t i = i0 + j; /* vertex i + 1 ahead of the interior vertex i - 1 */
-            if (i >= 2) {
-                if (by_ratio) {
-                    kappa[i - 2] = two_h * (t * before[1].cn);
-                } else {
-                    const el_jacobi *a = &before[0], *b = &v[j];
-                    const double sinK = k * (b->sn * a->dn - b->dn * a->sn);
-                    const double cosK = b->dn * a->dn + k * k * b->sn * a->sn;
-                    kappa[i - 2] = two_h * sinK / (1.0 + cosK);
+        /* i = i0 + j: vertex i is one ahead of the interior vertex i - 1, kappa[i - 2] */
+        if (plain) {
+            for (size_t j = 0; j < nb; j++) {
+                if (i0 + j >= 2) {
+                    kappa[i0 + j - 2] = two_h * (t * before[1].cn);
+                    bad += kappa[i0 + j - 2] * 0.0;
                 }
-                bad += kappa[i - 2] * 0.0;
+                before[1] = v[j];
             }
-            before[0] = before[1];
-            before[1] = v[j];
+        } else {
+            for (size_t j = 0; j < nb; j++) {
+                if (i0 + j >= 2) {
+                    kappa[i0 + j - 2] = kappa_general(k, two_h, by_ratio, t, before, &v[j]);
+                    bad += kappa[i0 + j - 2] * 0.0;
+                }
+                before[0] = before[1];
+                before[1] = v[j];
+            }
         }
     }
     if (bad != 0.0) return domain_error(kappa, n - 2, NULL, 0);

@@ -85,6 +85,35 @@ START_TEST(separatrix_matches_its_closed_form)
 }
 END_TEST
 
+/* k = 1 far along the separatrix: cn(u_i) = sech u_i underflows past |u_i| ~ 708, but with
+ * a big step z the curvature (2/h) sinh z / cosh u_i = (2/h) e^(z - u) (1 - e^-2z) / (1 + e^-2u)
+ * is an ordinary number (e^-40 at z = 700, u = 740): its relative digits, u and z exact
+ * integers (n = 3: the one interior vertex u_1 = q + z). The ratio k sn(z) cn(u) / dn(z)
+ * gave 0 there. */
+START_TEST(separatrix_far_out_keeps_its_digits)
+{
+    const double zs[] = {30.0, 100.0, 400.0, 700.0, -700.0};
+    const double us[] = {709.0, 740.0, 800.0, 1000.0, 1099.0, -760.0};
+    double ka[1], worst_rel = 0.0;
+    int nchecked = 0;
+    for (size_t b = 0; b < sizeof zs / sizeof *zs; b++)
+        for (size_t c = 0; c < sizeof us / sizeof *us; c++) {
+            const double z = zs[b], u = us[c], a = fabs(z) - fabs(u);
+            if (a < -700.0) continue;                        /* the curvature itself subnormal */
+            el_discrete_params p = {0.0, 0.0, 0.7, 0.3, z, u - z, 1.0};
+            ck_assert_int_eq(el_discrete_curvature(&p, 3, ka), EL_OK);
+            const double ref = copysign(2.0 / p.h * exp(a) * -expm1(-2.0 * fabs(z)) / (1.0 + exp(-2.0 * fabs(u))), z);
+            const double rel = fabs(ka[0] - ref) / fabs(ref);
+            ck_assert_msg(rel <= 64.0 * DBL_EPSILON, "z %g u %g: kappa %.17g, (2/h) sinh z / cosh u %.17g", z, u,
+                          ka[0], ref);
+            worst_rel = fmax(worst_rel, rel);
+            nchecked++;
+        }
+    ck_assert_int_ge(nchecked, 15);
+    printf("k = 1, |u| > 708: %d vertices, worst relative error %.3g eps\n", nchecked, worst_rel / DBL_EPSILON);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("discrete_curvature");
@@ -92,6 +121,7 @@ int main(void)
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, small_steps_keep_the_relative_digits);
     tcase_add_test(tc, separatrix_matches_its_closed_form);
+    tcase_add_test(tc, separatrix_far_out_keeps_its_digits);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }
