@@ -519,6 +519,12 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     (:func:`out_of_order`: a shuffled scan or clicks), warn (OrderWarning, a WanderWarning)
     and are fitted as given) or "curve" (fitted in :func:`curve_order`'s order; the result's
     ``points``, ``distances`` and ``foot_s`` in it, ``FitResult.order`` its indices).
+    Points in their order that run back over the curve (a scan passed back and forth,
+    :func:`libelastica.order.run_back`), or whose fit in their order is far off or not
+    converged, are fitted in curve order too (free fits by distance), and that fit is kept
+    where its feet show the points run back and it lies nearer them: the curve passing
+    there once, its ``distances`` and ``foot_s`` in the points' order (OrderWarning, ``retrace``;
+    a smooth curve runs from the end of the first point, a discrete one as curve order does).
     max_candidates: initial
     guesses fitted at most (default 6; fitting stops at the first that reaches the
     data's noise level). max_iter: Ipopt iterations per initial guess (default 200).
@@ -608,15 +614,36 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
             s = t * res.params.length
         else:
             s = foot.copy()
+    back, given_rms, tried, flip = None, None, None, False
+    if (unordered is not None and unordered.order is None and res.distance != _DISTANCES["paired"]
+            and not (constraints or fixed or bounds) and initial is None):
+        back = run_back(pts, foot, res.rms) if res.wander_gap < 0 else None
+        if (back is not None or st != lib.EL_OK or _verdict(pts, dist, float(res.rms), False) is not None
+                or (res.wander_gap < 0 and run_back(pts, foot, res.rms, near=False) is not None)):
+            retraced = _retraced(model, pts, o, float(res.rms))
+            tried = retraced[-1]
+            if retraced[0] is not None:   # a scan passed back and forth: fitted in curve order
+                given_rms = float(res.rms)
+                res, st, dist, foot, back, _ = retraced
+                flip = smooth and foot[0] > 0.5 * res.params.length   # run from point 0's end
+                if flip:
+                    length = float(res.params.length)
+                    dist, foot = -dist, length - foot
+                    back = back._replace(s_first=length - back.s_first, s_last=length - back.s_last)
+                s = foot.copy() if smooth else None
     if strict and st != lib.EL_OK:
         check(st, "fit")
     if st != lib.EL_OK:     # a status 6 went unnoticed unless the caller read it (QA)
         warnings.warn(f"fit: not converged: {ffi.string(lib.el_strerror(st)).decode()} (status {st}); "
                       "strict=True raises instead", ConvergenceWarning, stacklevel=2)
-    back = None
     if unordered is not None and unordered.order is not None:
         warnings.warn(f"fit: {order_summary(unordered)}: fitted in their order, the curve may coil "
                       "through them; order='curve' fits them in curve order (el.curve_order)",
+                      OrderWarning, stacklevel=2)
+    elif given_rms is not None:
+        warnings.warn(f"fit: {retrace_summary(back)}: fitted in curve order (as order='curve'; "
+                      f"el.curve_order) at rms {res.rms:.3g}, against {given_rms:.3g} in the "
+                      "points' order, distances and feet given in the points' order",
                       OrderWarning, stacklevel=2)
     else:
         # points that run back: the fit's feet fall there when it follows them (the smooth
@@ -625,7 +652,7 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
         # rms 37 at noise 0.4, said no OrderWarning; a smooth one said a WanderWarning):
         # the feet on the points' own pass before their turn then (data_run_back), the
         # cause said instead of the wander it makes
-        if res.wander_gap < 0 and res.distance != _DISTANCES["paired"]:
+        if back is None and res.wander_gap < 0 and res.distance != _DISTANCES["paired"]:
             back = run_back(pts, foot, res.rms)
         # (only where the points turn back and the fit does not follow them: not converged
         # or MISFIT_RATIO times their noise away; a coil of 20 sketched points turns back as
@@ -635,12 +662,16 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
                                                 res.rms > MISFIT_RATIO * noise_level(pts)):
             back = data_run_back(pts, res.rms)
         if back is not None:
-            warnings.warn(f"fit: {retrace_summary(back)}", OrderWarning, stacklevel=2)
+            hint = ("order='curve' fits them in curve order (el.curve_order)" if tried is None else
+                    f"in curve order (order='curve') the rms is {tried:.3g}, against {res.rms:.3g}")
+            warnings.warn(f"fit: {retrace_summary(back)}; {hint}", OrderWarning, stacklevel=2)
         elif res.wander_gap >= 0:
             warnings.warn(f"fit: {wander_summary(res.wander_gap)}: add a point between them to hold it "
                           "there, or bound the curve's length (constraints={'length': (lo, hi)})",
                           WanderWarning, stacklevel=2)
     r = _result(model, res, st, pts.copy(), dist, foot, s, constraints, idx, back)
+    if flip:     # the same curve run from the end of point 0 (curve order ran from the other)
+        r = _fit_result(**dict(r.__dict__, curve=r.curve.reversed(), initial=r.initial.reversed()))
     if check_ends and (constraints or fixed):
         r = checked_ends(r, fixed, dict(model=model, distance=distance, bounds=bounds, tol=tol,
                          limited_memory=limited_memory, max_candidates=max_candidates, param=param))
@@ -649,6 +680,46 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     if check_sparse and not smooth and n < SPARSE_POINTS:
         r = _sparse(r, constraints)
     return r
+
+
+def _retraced(model: str, pts: np.ndarray, o, rms: float):
+    """The fit of points in order along a curve that run back over it (a scan passed back and
+    forth, QA20: 300 points out and 300 back, noise 0.4, fitted by distance in their order a
+    2936-long curve for 1500, looping back up to 454 from every point, rms 2.93; the discrete
+    model 2562 long, rms 37.4, not converged): fitted in curve order (:func:`curve_order`,
+    as order="curve" fits them; by distance, ``o``: the fit's options), where its feet, in
+    the points' order, run back or forth (:func:`run_back`; curve order may start at the far end) and its rms (of the
+    distances of the same points) is below ``rms``, the fit in their order's. Returns (res,
+    status, distances, feet, Retrace, rms) with distances and feet in the points' order, or
+    (None, ..., None, rms in curve order or None where not fitted)."""
+    n = len(pts)
+    idx = curve_order(pts)
+    q = np.ascontiguousarray(pts[idx])
+    res = ffi.new(f"el_fit_{model}_result *")
+    dist, foot = np.empty(n), np.empty(n)
+    was, o.distance = o.distance, _DISTANCES["orthogonal"]
+    try:
+        st = call(lib.el_fit_smooth if model == "smooth" else lib.el_fit_discrete, dptr(q), n, o,
+                  ffi.NULL, res, dptr(dist), dptr(foot), keep=(q, dist, foot))
+    finally:
+        o.distance = was
+    if st not in (lib.EL_OK, lib.EL_ENOCONV, lib.EL_EMAXITER):
+        return None, None, None, None, None, None
+    back = None
+    if res.wander_gap < 0 and res.rms < rms:
+        inv = np.empty(n, dtype=np.intp)
+        inv[idx] = np.arange(n)
+        dist, foot = dist[inv], foot[inv]
+        back = run_back(pts, foot, float(res.rms), near=False)
+        if back is None:    # curve order may run from the other end: the feet from there
+            p = res.params
+            length = p.length if model == "smooth" else p.h * (n - 1)
+            b = run_back(pts, length - foot, float(res.rms), near=False)
+            back = b if b is None else b._replace(s_first=float(foot[b.first]),
+                                                  s_last=float(foot[b.last]))
+    if back is None:
+        return None, None, None, None, None, float(res.rms)
+    return res, st, dist, foot, back, float(res.rms)
 
 
 def _sparse(r: FitResult, constraints) -> FitResult:
@@ -691,6 +762,10 @@ def _judged(r: FitResult, judged: Optional[FitResult]) -> FitResult:
     m = _verdict(judged.points, judged.distances, judged.rms)
     if m is None:
         return r
+    if m.corner >= 0 and judged.retrace is not None:   # a scan's turn back is no corner (QA20)
+        w = max(3, (len(judged.points) - 1) // 16)
+        if min(abs(m.corner - judged.retrace.first), abs(m.corner - judged.retrace.last)) <= w:
+            m = dataclasses.replace(m, corner=-1, parts=None)
     said = misfit_summary(m, judged.points, numbered=judged.order is None)   # curve order: by place
     warnings.warn(f"fit: {said}", MisfitWarning, stacklevel=3)
     return dataclasses.replace(r, misfit=m)

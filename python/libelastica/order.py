@@ -193,7 +193,8 @@ def order_summary(o: Ordering, unit: str = "", length: Optional[LengthFormat] = 
 
 class Retrace(NamedTuple):
     """:func:`run_back`'s answer: the points ``first``..``last`` (counted from 0) run back along
-    the fitted curve, from arc length ``s_first`` to ``s_last`` (< s_first)."""
+    the fitted curve, from arc length ``s_first`` to ``s_last`` (< s_first; > where fit
+    kept its fit in curve order and that runs from the points' far end)."""
     first: int
     last: int
     s_first: float
@@ -202,7 +203,7 @@ class Retrace(NamedTuple):
     __reduce__, __copy__, __deepcopy__ = PortableTuple.reduce, PortableTuple.copy, PortableTuple.deepcopy
 
 
-def run_back(points, foot_s, rms: float) -> Optional[Retrace]:
+def run_back(points, foot_s, rms: float, near: bool = True) -> Optional[Retrace]:
     """Where points (n, 2) in order along a curve turn and run back over it (a scan passed
     back and forth), from a fit's feet ``foot_s`` (n,) and rms: the largest fall of their
     mean over runs of w = max(3, (n-1)/16) consecutive points (which evens out the feet's
@@ -213,7 +214,8 @@ def run_back(points, foot_s, rms: float) -> Optional[Retrace]:
     the points k before and k after the first point opposite (dot < 0) at every k up to w
     (the discrete fit's test, fit_pairing.c; feet that fall only by landing on another
     pass of a curve that loops near itself, or on a noise cloud's jitter, are no turn: 64
-    of bench_fit.py's 441 default fits fall so, none turns). None where no mean falls so. Measured: QA18's scan passed s 0 -> 12 -> 8 -> 30
+    of bench_fit.py's 441 default fits fall so, none turns; ``near`` False: at every k from
+    w / 2 up to w). None where no mean falls so. Measured: QA18's scan passed s 0 -> 12 -> 8 -> 30
     (188 points, noise 0.05) named as points 59 to 78, its fall 80 x rms; 60 evenly spaced
     scans in order (200 points, spacing 0.15, noise 0.05, 0-2 dropouts), both models: no
     fall at all."""
@@ -234,7 +236,11 @@ def run_back(points, foot_s, rms: float) -> Optional[Retrace]:
     last = first + int(np.argmin(s[first:b0 + 1]))
     if last - first < w or first < w or first + w >= n:
         return None
-    k = np.arange(1, w + 1)
+    # near False: the chords at k from w / 2 only, whose points a noisy turn's first does not
+    # straddle (fit.py's check of its fit in curve order, where the first of feet that rise
+    # within the noise at the turn may be a point or two past it: QA20's scan back over
+    # 500 of 1500, 3 x as dense as out, turned at point 299, its feet highest at 301)
+    k = np.arange(1 if near else max(1, w // 2), w + 1)
     P = np.asarray(points, dtype=float)
     back, on = P[first] - P[first - k], P[first + k] - P[first]
     if not np.all(np.einsum("ij,ij->i", back, on) < 0.0):
