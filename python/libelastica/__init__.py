@@ -29,7 +29,7 @@ _LAZY = {name: module for module, names in {
                   "resample_summary", "resampled_fits_worse", "resampled_reference"),
     "blend": ("SPREAD_MAX", "BlendCurve", "BlendLoopWarning", "ConditionWarning", "EllipticBlend",
               "MQBlend", "blend_curve", "eck_d", "eck_omega"),
-    "spline": ("DoublesBackError", "ElasticSpline", "LoopWarning", "elastic_spline"),
+    "spline": ("DoublesBackError", "ElasticSpline", "LoopWarning", "SeamWarning", "elastic_spline"),
     "bspline": ("BSpline", "cubic_through", "interpolate_c2", "keyline_bspline",
                 "smooth_chain_to_bspline", "smooth_to_bspline"),
     "affine": ("AffinePolyline", "OsculatingConics", "affine_coords", "affine_curvature",

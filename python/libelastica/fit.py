@@ -24,7 +24,7 @@ from typing import Mapping, Optional, Union
 
 import numpy as np
 
-from ._ffi import (DomainError, NotConvergedError, as_int, as_point_array, as_points, as_real,
+from ._ffi import (DomainError, NotConvergedError, SingularError, as_int, as_point_array, as_points, as_real,
                    as_real_array, check, dptr, ffi, lib, warn_if_degrees)
 from ._interrupt import call
 from .core import DISCRETE_PARAMS, SMOOTH_PARAMS, DiscreteElastica, SmoothElastica
@@ -604,6 +604,9 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
         raise ValueError("fit: points must be finite (no NaN/inf)")
     if res.constraint and st in (lib.EL_EINVAL, lib.EL_EDOM):
         _raise_constraint(st, res.constraint, _conditions(constraints, fixed))
+    if st == lib.EL_ESINGULAR and bool(np.all(pts == pts[0])):   # the CLI's words (QA20 F8)
+        raise SingularError(st, f"fit: all points are equal ({n} x ({pts[0, 0]:.10g}, "
+                            f"{pts[0, 1]:.10g})): no curve passes them")
     if st not in (lib.EL_OK, lib.EL_ENOCONV, lib.EL_EMAXITER):
         check(st, "fit")
     s = None

@@ -293,11 +293,22 @@ def fit_keyline(points, r: Optional[float] = None, model: str = "discrete", side
         r = as_positive(r, "fit_keyline: r (the resampling segment, None: automatic)")
     o = _keyline_options(model, dict(kwargs))
     prep = prepare_keyline(pts, r, side)
-    a, b = prep.sides()                    # DomainError when there is no inflection
-    if len(a) < MIN_SIDE or len(b) < MIN_SIDE:
-        raise DomainError(lib.EL_EDOM, f"fit_keyline: the inflection estimate lies {min(len(a), len(b)) - 1} "
-                          f"segment(s) from an end of the {len(prep.polygon) - 1}: no inflection a keyline "
-                          "can split at (noise near an end of points that turn one way?); fit them as one curve")
+    try:
+        a, b = prep.sides()                    # DomainError when there is no inflection
+        if len(a) < MIN_SIDE or len(b) < MIN_SIDE:
+            raise DomainError(lib.EL_EDOM, f"fit_keyline: the inflection estimate lies {min(len(a), len(b)) - 1} "
+                              f"segment(s) from an end of the {len(prep.polygon) - 1}: no inflection a keyline "
+                              "can split at (noise near an end of points that turn one way?); fit them as one curve")
+    except DomainError:
+        if unordered.order is None:
+            raise
+        # resampled in an order that is no curve's, the polygon's turns are the shuffle's:
+        # 'fit them as one curve' was wrong advice (QA20 F9: in curve order, rms 0.128)
+        raise DomainError(lib.EL_EDOM, "fit_keyline: no inflection found along the points in their "
+                          f"order, which is no curve's (their polyline {unordered.given / unordered.along:.3g} "
+                          "times as long as in curve order); fit them in curve order: "
+                          "el.fit_keyline(points[el.curve_order(points)]) (the command line: "
+                          "--order curve)") from None
     i0 = int(prep.inflection)
     if model == "discrete":
         data = np.ascontiguousarray(prep.polygon)

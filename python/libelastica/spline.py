@@ -6,6 +6,7 @@ whole chain (el_spline_to_bspline).
 """
 from __future__ import annotations
 
+import math
 import warnings
 from typing import List, Optional
 
@@ -17,7 +18,8 @@ from ._values import ValueEquality
 from .bspline import smooth_chain_to_bspline
 from .core import SMOOTH_PARAMS, SmoothElastica, arc_lengths, chain_eval, chain_starts
 
-__all__ = ["DoublesBackError", "ElasticSpline", "LoopWarning", "back_steps", "elastic_spline"]
+__all__ = ["DoublesBackError", "ElasticSpline", "LoopWarning", "SeamWarning", "back_steps",
+           "elastic_spline"]
 
 # A back-step (back_steps) shorter than this fraction of the points' extent is below any
 # feature a batten through them is drawn to: every back-step of the splines the tests and
@@ -36,6 +38,17 @@ class DoublesBackError(DomainError):
     their noise (``places``: :func:`back_steps`, at least BACK_STEPS_MANY of them):
     a batten through them must turn back and forth at each; fair them
     (:func:`libelastica.fit`) or thin them instead."""
+
+
+class SeamWarning(RuntimeWarning):
+    """:func:`elastic_spline`'s warning that an open spline's last point is its first (a
+    closed outline given open, QA20 F8): its ends meet there at a corner, where
+    ``closed=True`` makes a G2 joint."""
+
+
+# said where the last point of an open spline is its first (the warning, and each error's hint)
+_SEAM_TEXT = ("; the last point is the first: closed=True (CLI: --closed) makes the closed "
+              "spline, G2 at that point too")
 
 
 class LoopWarning(RuntimeWarning):
@@ -207,6 +220,26 @@ def back_steps(points, closed: bool = False) -> List[int]:
     short = np.hypot(*d.T) < BACK_STEP * float(np.ptp(pts, axis=0).max())
     k = np.flatnonzero(back[:-1] & back[1:] & short[1:-1]) + 1   # spans of q
     return [int(i) - 1 if closed else int(i) for i in k]
+
+
+def _fair_advice(pts: np.ndarray, closed: bool) -> str:
+    """What to do with scan points that double back (DoublesBackError's advice). Open: fair
+    them with el.fit. Closed: el.fit fits open curves only (QA20 F10: its advice for a
+    noisy 400-point cam scan could not be taken); the library's closed curves pass through
+    their points (elastic_spline, blend_curve), so thin them to ducks farther apart than
+    their noise, with the first every-k-th that doubles back nowhere named (the cam's every
+    20th point: a spline 0.139 from the true cam)."""
+    if not closed:
+        return ("fair the points with el.fit (`elastica fit`) instead, or thin them to points "
+                "farther apart than their noise")
+    said = ("el.fit fits open curves only: for a closed outline thin the points to fewer ducks "
+            "farther apart than their noise (or fit its open arcs with el.fit)")
+    for k in range(2, len(pts) // 4 + 1):
+        if not back_steps(pts[::k], True):
+            m = len(pts[::k])
+            return said + (f"; one point in every {k} (points[::{k}], {m} points) is the first such "
+                           "thinning that doubles back nowhere")
+    return said
 
 
 def _back_step_text(places, n) -> str:
@@ -428,17 +461,18 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
             "against both neighbouring spans from point " + _back_step_text(places, n) +
             f" (counted from 0; spans under {BACK_STEP:g} of the points' extent): a batten "
             "through them must turn back and forth at each, at every tension and length "
-            "(the free batten slides off, under tension it loops); fair "
-            "the points with el.fit (`elastica fit`) instead, or thin them to points farther "
-            "apart than their noise"))
+            "(the free batten slides off, under tension it loops); " + _fair_advice(pts, closed)))
         err.places = places
         raise err
     # fewer: named where no spline is found (a likely cause, not a proven one)
     hint = (f"; their polygon doubles back (runs back against both neighbouring spans, one "
             f"under {BACK_STEP:g} of the points' extent) from point {_back_step_text(places, n)} "
-            "(counted from 0), where a batten must turn back and forth: for scan points, fair them "
-            "(el.fit, `elastica fit`) or thin them") if places else ""
+            "(counted from 0), where a batten must turn back and forth: for scan points, "
+            + _fair_advice(pts, closed)) if places else ""
     hint += _coinciding_text(pts)
+    seam = not closed and n >= 4 and bool(np.array_equal(pts[0], pts[-1]))
+    if seam:
+        hint += _SEAM_TEXT
     res = ffi.new("el_spline_result *")
     st = lib.el_spline_solve(dptr(pts), n, opt, res)
     try:
@@ -460,6 +494,11 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
                                                     if where else "") +
                               f"): no fair batten was found at {fix}",
                               LoopWarning, stacklevel=2)
+            if seam:
+                a = sp.pieces[-1].angle(np.array([sp.pieces[-1].length]))[0] - sp.pieces[0].angle(np.zeros(1))[0]
+                corner = abs(math.degrees(math.remainder(a, 2 * math.pi)))
+                warnings.warn(f"elastic_spline: an open spline with a {corner:.3g} deg corner at "
+                              f"point 0{_SEAM_TEXT}", SeamWarning, stacklevel=2)
             return sp
         if st == lib.EL_EDOM:   # the cases above are checked: the free batten
             # res.slides: one was found but is no minimum (elastica.h), its span named

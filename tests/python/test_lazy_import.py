@@ -20,7 +20,7 @@ DoublesBackError END_POINTS END_SPAN EdgeCountError ElasticSpline ElasticaError 
 EndTangentWarning FitResult Frame Frame2D G2Quadratic HERMITE_SIGMA_D2_MAX HermiteChain
 HermiteSolutions KEYLINE_STEPS KeylineFit LengthRangeError LoopWarning MISFIT_RATIO MQBlend Misfit MisfitWarning
 NotConvergedError ORDER_RATIO OrderWarning Ordering OsculatingConics RESAMPLE_MAX_VERTICES
-RESAMPLE_RATIO ResampleWarning ResampledFit SPARSE_POINTS SPREAD_MAX SingularError SmoothElastica
+RESAMPLE_RATIO ResampleWarning ResampledFit SPARSE_POINTS SPREAD_MAX SeamWarning SingularError SmoothElastica
 SparseWarning WanderWarning ZIGZAG affine
 affine_coords affine_curvature affine_curvature_exact affine_elements
 affine_length affine_polyline blend blend_curve bspline chaikin core cost_summary costly cubic

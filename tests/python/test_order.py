@@ -215,3 +215,28 @@ def test_a_noisy_scan_in_order_whose_screen_turns_is_cleared_by_its_run_means(mo
     assert o.order is None and np.isnan(o.given) and not calls
     Q = pts[np.random.default_rng(1).permutation(n)]
     assert O.out_of_order(Q).order is not None and calls
+
+
+def test_a_shuffled_keyline_with_no_inflection_in_its_order_says_curve_order(capsys, tmp_path):
+    """QA20 F9: the 3D keyline example shuffled, fitted as a keyline in the file's order:
+    'no inflection found: ... fit them as one curve' was wrong advice (in curve order it fits,
+    rms 0.128); the error says to fit in curve order, in Python and on the command line (the
+    advice taken works). Failed before: 'fit them as one curve'."""
+    import pathlib
+    P = np.loadtxt(pathlib.Path(__file__).parents[2] / "examples" / "keyline_3d.csv", delimiter=",",
+                   comments="#", skiprows=2)
+    Q = P[np.random.default_rng(20).permutation(len(P))]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", el.OrderWarning)
+        with pytest.raises(el.DomainError) as exc:
+            el.fit_keyline(Q)
+        said = str(exc.value)
+        assert "curve_order" in said and "--order curve" in said, said
+        assert "as one curve" not in said, said
+        assert el.fit_keyline(Q[el.curve_order(Q)]).input_rms < 0.5     # the advice works
+    path = tmp_path / "kl_shuf.csv"
+    np.savetxt(path, Q, delimiter=",")
+    code, _, err = cli(capsys, "fit", "--keyline", path)
+    assert code == 2 and "--order curve" in err and "as one curve" not in err, err
+    code, _, err = cli(capsys, "fit", "--keyline", "--order", "curve", path)
+    assert code == 0, err

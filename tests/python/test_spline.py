@@ -796,3 +796,19 @@ def test_g2_blend_past_folds_in_the_end_curvature(radius):
     if radius == 20.0:
         assert sp.length == pytest.approx(230.05, abs=0.01)
         assert sp.energy == pytest.approx(0.17488, abs=1e-4)
+
+
+def test_an_open_spline_whose_last_point_is_its_first_hints_closed():
+    """QA20 F8: an open spline through a closed outline's ducks, the first repeated last,
+    gave no hint that closed=True may be meant (a corner at point 0): a SeamWarning names
+    the corner and closed=True; closed=True, or an open outline, says nothing (failed
+    before: no warning)."""
+    a = np.linspace(0, 2 * np.pi, 12, endpoint=False)
+    r = 30 + 8 * np.cos(a) + 3 * np.sin(2 * a)
+    C = np.column_stack([r * np.cos(a), r * np.sin(a)])
+    with pytest.warns(el.SeamWarning, match=r"corner at point 0.*closed=True"):
+        el.elastic_spline(np.vstack([C, C[:1]]))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", el.SeamWarning)
+        el.elastic_spline(np.vstack([C, C[:1]]), closed=True)
+        el.elastic_spline(C)

@@ -416,3 +416,12 @@ def test_messages_name_the_function_called(call, said):
     function called, the argument and what it takes."""
     with pytest.raises(ValueError, match=said):
         call()
+
+
+@pytest.mark.parametrize("model", ["smooth", "discrete"])
+@pytest.mark.parametrize("where", [(0.1, 0.2), (1 / 3, 2 / 3), (5.4e6, 5.4e5)])
+def test_all_equal_points_say_so(model, where):
+    """QA20 F8: all points equal raised 'fit: singular or degenerate input' where the CLI
+    says 'all points are equal': the binding says it too (failed before)."""
+    with pytest.raises(el.SingularError, match="all points are equal"):
+        el.fit(np.tile(where, (10, 1)), model=model)
