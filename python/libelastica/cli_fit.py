@@ -220,11 +220,28 @@ def _warn_coarse_polygon(path, rec: Dict[str, Any], data: np.ndarray, res) -> No
     smooth = res.sparse
     if smooth is None:
         return
+    # the verdict in the JSON too, as "misfit" (QA20 F7: the JSON had none)
+    rec["sparse"] = {"rms": float(res.rms), "bspline_rms": rec.get("bspline_rms"),
+                     "smooth_rms": float(smooth)}
     cubic = (f", its B-spline {rec['bspline_rms']:.3g}" if "bspline_rms" in rec else "")
     print(f"{PROG} fit: warning: {path}: {len(data)} points give the discrete model a polygon "
           f"of {len(data) - 1} segments, {res.rms:.3g} from them (rms){cubic}, where the smooth "
           f"model's curve lies {smooth:.3g} from them: use --model smooth for so few points",
           file=sys.stderr)
+
+
+def _verdict(rec: Dict[str, Any]) -> str:
+    """A batch row's status: the fit's, and the warnings that judge it (QA20 F7: a fit at 46
+    x the points' noise read 'ok'): 'ok; not one elastica: 46 x the noise' (the record's
+    "misfit"), '...; discrete polygon too coarse: smooth 0.01' ("sparse")."""
+    said = [str(rec["status"])]
+    m = rec.get("misfit")
+    if m:
+        said.append(f"not one {'keyline' if 'side' in rec else 'elastica'}: {m['ratio']:.3g} x the noise")
+    sp = rec.get("sparse")
+    if sp:
+        said.append(f"discrete polygon too coarse: smooth {sp['smooth_rms']:.3g}")
+    return "; ".join(said)
 
 
 def _warn_sparse_keyline(path, kres, n: int) -> None:
@@ -639,7 +656,7 @@ def cmd_fit(args) -> int:
         for r in recs:
             name = f if "side" not in r else f"{f} [{r['side'] + 1}]"
             k = r["curve"]["k"] if r.get("curve") else None
-            rows.append([name, r["model"], k, r["rms"], r["max_error"], r["status"]])
+            rows.append([name, r["model"], k, r["rms"], r["max_error"], _verdict(r)])
         all_recs += recs
         docs.append(doc)
         progress.step(Path(f).name)

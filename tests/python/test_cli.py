@@ -818,3 +818,26 @@ def test_fit_3d_dxf_in_input_coordinates(capsys, fake_ezdxf, tmp_path):
     assert np.abs((ctrl - origin) @ normal).max() < 1e-9
     assert np.linalg.norm(ctrl[0] - pts[0]) < 1.0            # noise sigma 0.2
     assert len([c for c in fake_ezdxf if c[0] == "point"]) == len(pts)
+
+
+def test_fit_batch_table_and_json_say_the_misfit_and_sparse_verdicts(capsys, tmp_path):
+    """QA20 F7: the batch table said 'ok' for a fit at 46 x the points' noise (a corner) and
+    the JSON had no 'sparse' verdict; the row names both verdicts, the JSON holds "sparse"
+    beside "misfit", a fit judged fine stays 'ok' (failed before: 'ok', no "sparse")."""
+    rng = np.random.default_rng(20)
+    t = np.linspace(0, 100, 200)
+    corner = np.vstack([np.c_[t, 0 * t], np.c_[100 + 0 * t, t][1:]])     # a square corner
+    corner += rng.normal(0, 0.05, corner.shape)
+    clicks = np.array([[0, 0], [30, 0.5], [55, 3], [75, 9], [88, 17], [96, 27], [99, 38]], float)
+    files = []
+    for name, P in (("corner", corner), ("clicks", clicks)):
+        files.append(tmp_path / f"{name}.csv")
+        np.savetxt(files[-1], P, delimiter=",")
+    r = cli(capsys, "fit", SAMPLE_2D, *files, "--json", tmp_path / "{stem}.json")
+    rows = {Path(ln.split()[0]).name: ln for ln in r.stdout.splitlines()[2:]}
+    assert rows[SAMPLE_2D.name].rstrip().endswith(" ok"), r.stdout
+    assert "not one elastica" in rows["corner.csv"] and " x the noise" in rows["corner.csv"], r.stdout
+    assert "polygon too coarse" in rows["clicks.csv"], r.stdout
+    doc = json.loads((tmp_path / "clicks.json").read_text())
+    assert doc["sparse"]["smooth_rms"] < doc["sparse"]["rms"], doc.get("sparse")
+    assert "misfit" in json.loads((tmp_path / "corner.json").read_text())
