@@ -621,7 +621,9 @@ int el_fit_noise_quick(const double *xy, size_t n, double *noise);
  * point to its side's curve (+ = left of the keyline run from point 0 to point n-1, so
  * right of `first`, which runs the other way), the foot (arc length from J along its
  * side) and the side (0 first, 1 second).
- * Statuses as el_fit_discrete, plus EL_EDOM when a side is not inflectional.
+ * Statuses as el_fit_discrete, plus EL_EDOM when a side is not inflectional, and when the
+ * fit does not converge on points whose polygon shows no inflection (el_find_inflection's
+ * EL_EDOM: an arc; first / second untouched then).
  */
 int el_fit_keyline_smooth(const double *xy, size_t n, size_t split, const el_fit_options *opt,
                           el_fit_smooth_result *first, el_fit_smooth_result *second,

@@ -605,6 +605,18 @@ done:
     return st;
 }
 
+/* EL_EDOM for a keyline fit that did not converge (status) on points whose polygon shows
+ * no inflection (el_find_inflection: a convex arc), as the header says: an arc's keyline
+ * returned EL_ENOCONV, which asks the caller for more iterations (QA20 F8); else status.
+ * Only the unconverged are looked at: a converged fit stands, and noisy points, whose
+ * polygon zigzags, show inflections and keep their status. */
+static int no_inflection(const double *xy, size_t n, int status)
+{
+    if (status != EL_ENOCONV && status != EL_EMAXITER) return status;
+    el_inflection inf;
+    return el_find_inflection(xy, n, 0, &inf) == EL_EDOM ? EL_EDOM : status;
+}
+
 int el_fit_keyline_smooth(const double *xy, size_t n, size_t split, const el_fit_options *opt,
                           el_fit_smooth_result *first, el_fit_smooth_result *second,
                           double *distances, double *foot_s, int *side)
@@ -615,6 +627,7 @@ int el_fit_keyline_smooth(const double *xy, size_t n, size_t split, const el_fit
     k.status = -1;
     int st = keyline_run(FIT_SMOOTH, xy, n, split, opt, &k, distances, foot_s, side);
     if (k.status == -1 || (st != k.status)) return st;
+    if ((st = no_inflection(xy, n, st)) == EL_EDOM) return st;
     FIT_PUBLISH(first, k.side[0], el_smooth_params);
     FIT_PUBLISH(second, k.side[1], el_smooth_params);
     first->wander_gap = second->wander_gap = -1;
@@ -632,6 +645,7 @@ int el_fit_keyline_discrete(const double *xy, size_t n, size_t split, const el_f
     k.status = -1;
     int st = keyline_run(FIT_DISCRETE, xy, n, split, opt, &k, distances, foot_s, side);
     if (k.status == -1 || (st != k.status)) return st;
+    if ((st = no_inflection(xy, n, st)) == EL_EDOM) return st;
     FIT_PUBLISH(first, k.side[0], el_discrete_params);
     FIT_PUBLISH(second, k.side[1], el_discrete_params);
     first->wander_gap = second->wander_gap = -1;

@@ -83,6 +83,28 @@ START_TEST(test_keyline_smooth_near_separatrix)
 }
 END_TEST
 
+/* An arc (no inflection): EL_EDOM, as the header says, both models, results untouched
+ * (before: EL_ENOCONV, QA20 F8, which asks for more iterations); a keyline stays EL_OK. */
+START_TEST(test_keyline_of_an_arc_is_a_domain_error)
+{
+    double xy[40];
+    for (int i = 0; i < 20; i++) { xy[2 * i] = cos(i * 0.1); xy[2 * i + 1] = sin(i * 0.1); }
+    el_fit_smooth_result f, g;
+    el_fit_discrete_result fd, gd;
+    memset(&f, 0x5a, sizeof f);
+    memset(&fd, 0x5a, sizeof fd);
+    unsigned char mark[sizeof f];
+    memset(mark, 0x5a, sizeof mark);
+    ck_assert_int_eq(el_fit_keyline_smooth(xy, 20, 10, NULL, &f, &g, NULL, NULL, NULL), EL_EDOM);
+    ck_assert(memcmp(&f, mark, sizeof f) == 0);
+    size_t joint;
+    ck_assert_int_eq(el_fit_keyline_discrete(xy, 20, 10, NULL, &fd, &gd, &joint, NULL, NULL, NULL), EL_EDOM);
+    ck_assert(memcmp(&fd, mark, sizeof fd < sizeof mark ? sizeof fd : sizeof mark) == 0);
+    for (int i = 0; i < 20; i++) { xy[2 * i] = i; xy[2 * i + 1] = sin(i * 0.3); }
+    ck_assert_int_eq(el_fit_keyline_smooth(xy, 20, 10, NULL, &f, &g, NULL, NULL, NULL), EL_OK);
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("fit keyline");
@@ -91,6 +113,7 @@ static Suite *suite(void)
     tcase_add_test(tc, test_keyline_smooth_split_far_from_inflection);
     tcase_add_test(tc, test_keyline_discrete_tile_profile);
     tcase_add_test(tc, test_keyline_smooth_near_separatrix);
+    tcase_add_test(tc, test_keyline_of_an_arc_is_a_domain_error);
     suite_add_tcase(s, tc);
     return s;
 }
