@@ -1210,10 +1210,9 @@ typedef struct el_spline_result {
     int slides;            /* tension 0, EL_EDOM: 1 where a batten through the points was found
                               but is no minimum, an unstable equilibrium (its second variation
                               reduced to the knot angles has a negative eigenvalue,
-                              spline_stable.c): at tension 0 it slides off its ducks at span
-                              slide_span (from point slide_span to slide_span + 1, counted from
-                              0: the span whose length grows most along that mode); 0 otherwise
-                              (a tension > 0: el_spline_solve) */
+                              spline_stable.c): it slides off its ducks at span slide_span (from
+                              point slide_span to slide_span + 1, counted from 0: the span whose
+                              length grows most along that mode); 0 otherwise */
     size_t slide_span;
 } el_spline_result;
 
@@ -1339,16 +1338,7 @@ void el_spline_options_defaults(el_spline_options *opt);
  * to that tension, or the batten brought down from sigma h^2 = 40, where that converges
  * shorter; where neither the direct Newton nor the batten from sigma h^2 = 40 converges,
  * the free batten pulled to that tension (small tensions: the least-energy Hermite piece
- * the start takes can be a curve at the tension's scale 1 / sqrt(sigma)). Tension mode, open,
- * without G2 ends: the spline found is checked to be a minimum (its second variation reduced
- * to the knot angles, spline_stable.c); at sigma 0 one that is not is EL_EDOM (slides); at
- * sigma > 0 (not from initial pieces) the stable one beside it that follows its ducks
- * (loops 0) is returned: the knot angles moved along the negative eigenvalue's vector (both
- * ways), the energy minimised over them from there, Newton to tol; of lower energy, often
- * much longer (QA19 W2's 5 ducks turning 170 deg at sigma 1e-2: length 70.4 for 22.0,
- * integral kappa^2 + sigma ds 1.33 for 2.51). Where every stable one found loops (the same
- * ducks at 1e-4 .. 3e-3: a loop 631 long at 1e-4) the one found is returned as before,
- * though no minimum. Without a free
+ * the start takes can be a curve at the tension's scale 1 / sqrt(sigma)). Without a free
  * batten (a closed ring of ducks; a zigzag that slides off) length mode follows the
  * length from the batten under sigma h^2 = 40, 4 or 0.4 (the first that converges). Two
  * consecutive points that coincide are EL_EINVAL (the batten cannot pass a duck twice in no

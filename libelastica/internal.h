@@ -386,11 +386,6 @@ void el__spline_hessian(el__spchain *w);
  * chain with its Jacobians unless they are current (el__chain_jac_current); its Newton work
  * arrays used. */
 int el__spline_unstable(el__spchain *w, size_t *span);
-/* spline_stable.c: a solved open chain at sigma > 0 that el__spline_unstable found no minimum
- * (its least eigenvalue's vector in w->z) replaced by the stable one of least energy found
- * beside it that follows its ducks (EL_OK: w holds it, solved to w->tol), else w as it was
- * and EL_ENOCONV; EL_ENOMEM. */
-int el__spline_stabilise(el__spchain *w);
 /* spline_buckle.c: the number of negative eigenvalues of T - shift I, T symmetric
  * tridiagonal on rows i0..i1 (diagonal dg, off-diagonal up[i] = T[i][i + 1]) */
 int el__tridiag_negatives(const double *dg, const double *up, size_t i0, size_t i1, double shift);

@@ -582,7 +582,7 @@ static int by_tension_again(el__spchain *w, const double *xy, size_t n, const el
 /* el__spline_solve_paths, with the longest span h (user units) into *longest once the
  * chords are valid (el__spline_largest's h) */
 static int solve_paths(const double *xy, size_t n, const el_spline_options *opt, int newton_first,
-                       int settle, el_spline_result *res, double *longest)
+                       el_spline_result *res, double *longest)
 {
     if (!res) return EL_EINVAL;
     memset(res, 0, sizeof *res);
@@ -709,8 +709,6 @@ static int solve_paths(const double *xy, size_t n, const el_spline_options *opt,
      * length, -6.81, which make_result refused as EL_EINVAL for valid points) */
     if (!st || (sol->near && pieces_drawn(sol))) {
         double other, sep;
-        int settled = 0;   /* the stable batten replaced an unstable one (below) */
-    result:;
         const int st2 = make_result(sol, xy, n, S, opt->tol, res, &other, &sep);
         if (st2) { st = st2; goto done; }
         /* does it follow its ducks (spline_fair.c)? */
@@ -723,21 +721,16 @@ static int solve_paths(const double *xy, size_t n, const el_spline_options *opt,
         /* circle pieces and pieces near the separatrix are accepted at what
          * el_smooth_params resolves (header); the latter within their bound */
         st = accepted(res, opt->tol, other, sep);
-        /* the batten found is no minimum (spline_stable.c; QA19: 5 ducks turning 163-172 deg,
-         * one negative eigenvalue each): free, it slides off its ducks; under tension the
-         * stable one beside it that follows its ducks is the batten (the same ducks at sigma
-         * 1e-2 .. 0.05; below, the stable ones loop and the one found is kept), looked for by
-         * el_spline_solve alone (settle), not from the caller's initial pieces (their branch
-         * kept); a chain solved for its length (length mode) is passed over there */
-        if (!st && !lmode && sol == &w && !settled && (opt->sigma == 0.0 || (settle && !opt->initial))) {
+        /* the free batten found is no minimum: it slides off its ducks (spline_stable.c;
+         * QA19: 5 ducks turning 163-172 deg, one negative eigenvalue each); a chain solved for
+         * its length (length mode) is passed over there */
+        if (!st && opt->sigma == 0.0 && sol == &w) {
             size_t span;
             if (el__spline_unstable(&w, &span) > 0) {
-                /* none that follows its ducks beside it: as found */
-                const int ss = opt->sigma > 0.0 ? el__spline_stabilise(&w) : EL_EDOM;
-                if (ss != EL_ENOCONV) el_spline_result_free(res);
-                if (ss == EL_ENOMEM) { st = ss; goto done; }
-                if (ss == EL_OK) { settled = 1; goto result; }
-                if (ss == EL_EDOM) { res->slides = 1; res->slide_span = span; st = EL_EDOM; }
+                el_spline_result_free(res);
+                res->slides = 1;
+                res->slide_span = span;
+                st = EL_EDOM;
             }
         }
         /* a near spline short of tol: from the tension splines that bracket the length
@@ -783,14 +776,14 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
                            int newton_first, el_spline_result *res)
 {
     double h;
-    return solve_paths(xy, n, opt, newton_first, 0, res, &h);
+    return solve_paths(xy, n, opt, newton_first, res, &h);
 }
 
 int el_spline_solve(const double *xy, size_t n, const el_spline_options *opt,
                     el_spline_result *res)
 {
     double h = 0.0;
-    const int st = solve_paths(xy, n, opt, 1, 1, res, &h);
+    const int st = solve_paths(xy, n, opt, 1, res, &h);
     if (st != EL_ENOCONV) return st;
     /* a high tension that fails: the largest that solves (spline_limit.c) */
     double largest[3];

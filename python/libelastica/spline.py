@@ -347,16 +347,12 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
     ducks' polygon), the family of tension solutions followed from the taut batten,
     the least integral kappa^2 + sigma ds among those that follow their ducks; where
     none does, the spline found with ``loops`` True and a :class:`LoopWarning`; pushed longer through ducks near a line, their line's
-    buckled batten moved onto them (elastica.h, el_spline_solve). Under tension an
-    equilibrium that is no minimum (it would slide along its ducks) gives way to the
-    stable batten beside it where that follows its ducks, of lower energy and often far
-    longer (5 ducks turning 170 deg at tension 0.01: length 70 for 22).
+    buckled batten moved onto them (elastica.h, el_spline_solve).
 
     ``initial`` (open curves): the spline to start from instead of the library's own
     start, n - 1 SmoothElastica through the points with these ends (G2 ends only
     tangent), e.g. the ``el.hermite`` solution a G2 blend between two edges should
-    follow: the solve keeps that branch (Newton from it, no other start tried; under
-    tension kept even where it is no minimum).
+    follow: the solve keeps that branch (Newton from it, no other start tried).
 
     ``tol``: the accepted end-condition residual (1e-14..1e-3, default 1e-10; see
     ``ElasticSpline.residual``). ``max_iter``: Newton iterations per solve (1..1000,
