@@ -2,9 +2,11 @@
 geometry, followed as the sketch changes (QA: a comb of Chain.Edge3 and Edge4 combed two
 other edges, status ok, once the helper line Edge1 was made construction or deleted), said
 when deleted or made construction, through Undo, save / reopen and documents made before."""
+import math
 import unittest
 
 import FreeCAD as App
+import Part
 
 import elastica_samples as S
 from freecad.elastica import comb as Co
@@ -196,6 +198,42 @@ class CombScaleTest(S.DocTest):
             self.doc.recompute()
             return f, []
         self.assertTurnFree(self._combs(fit))
+
+    def test_a_symmetric_closed_shape_turned_has_the_same_scale(self):
+        """A sketched rounded square (4 lines, 4 arcs: side 100, radius 10) has no principal
+        axes (its covariance is isotropic): the box along them gave UsedScale 183.5, 191.2,
+        173.4, 188.1, 214.9, 211.9, 172.1 at 0 .. 75 deg (review revfc 3). Its diameter, the
+        square's diagonal between the arcs' far points (2 sqrt(2) 40 + 2 10), does not turn."""
+        scales, extents = [], []
+        for deg in (0, 10, 20, 30, 45, 60, 75):
+            sk = self.doc.addObject("Sketcher::SketchObject", f"Square{deg}")
+            sk.Placement = App.Placement(App.Vector(5, 3, 0), App.Rotation(App.Vector(0, 0, 1), deg))
+            rounded_square(sk)
+            self.doc.recompute()
+            comb = Co.make(self.doc, sk, Samples=30)
+            self.doc.recompute()
+            self.assertEqual(comb.Status, "ok")
+            scales.append(comb.UsedScale)
+            extents.append(Co.shape_extent(sk.Shape))
+        for deg, scale in zip((10, 20, 30, 45, 60, 75), scales[1:]):
+            self.assertLess(abs(scale - scales[0]), 1e-9 * scales[0], (deg, scale, scales[0]))
+        # 60 points per arc miss its far point by at most 10 (1 - cos(0.77 deg)) = 0.0009
+        for extent in extents:
+            self.assertLess(abs(extent - (2 * math.sqrt(2) * 40 + 20)), 0.002, extents)
+
+
+def rounded_square(sk, a=40.0, r=10.0):
+    """Four quarter arcs of radius ``r`` centred at (+-a, +-a) and the lines between them."""
+    corners = [(a, a), (-a, a), (-a, -a), (a, -a)]
+    for i, (x, y) in enumerate(corners):
+        s = math.radians(90 * i)
+        sk.addGeometry(Part.ArcOfCircle(Part.Circle(App.Vector(x, y, 0), App.Vector(0, 0, 1), r),
+                                        s, s + math.pi / 2))
+        nx, ny = corners[(i + 1) % 4]
+        e = math.radians(90 * (i + 1))
+        sk.addGeometry(Part.LineSegment(
+            App.Vector(x + r * math.cos(e), y + r * math.sin(e), 0),
+            App.Vector(nx + r * math.cos(e), ny + r * math.sin(e), 0)))
 
 
 if __name__ == "__main__":
