@@ -223,6 +223,33 @@ class PlacedPartTest(S.DocTest):
         self.doc.recompute()
         self.assertAt(made, before, "reopened")
 
+    def test_a_failed_features_kept_curve_stays_on_its_sources_as_the_part_moves(self):
+        """A failed recompute keeps the last Shape (drawn dashed); its Part moved since, it is
+        drawn where it was, on its sketch, and the feature is not left to execute again
+        (review revfc 4: the old spline drawn 123 mm off, mustExecute True, until it computed
+        again)."""
+        made = self.every_feature()
+        spline, comb = made[2], made[6]
+        part = self.doc.addObject("App::Part", "Part")
+        part.Placement = PART
+        part.addObject(spline)
+        part.addObject(comb)
+        self.doc.recompute()
+        before = [drawn(spline), drawn(comb)]
+        spline.Degree = 1                   # an error: said, the last shape kept
+        comb.Samples = 1
+        self.doc.recompute()
+        self.assertTrue(spline.Status.startswith("error"), spline.Status)
+        self.assertTrue(comb.Status.startswith("error"), comb.Status)
+        for _ in range(2):
+            part.Placement = moved(part.Placement)
+            self.doc.recompute()
+            for f, old in zip((spline, comb), before):
+                off = max((a - b).Length for a, b in zip(drawn(f), old))
+                self.assertLess(off, ON, f"{f.Name}: drawn {off:.3g} mm from its sketch")
+                self.assertFalse(f.Proxy.mustExecute(f), f.Name)
+                self.assertTrue(f.Status.startswith("error"), f.Status)
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -135,6 +135,23 @@ def set_shape(obj, shape):
         proxy._held = _key(plc)
 
 
+def keep_in_place(obj):
+    """After a failed recompute, which keeps the last Shape: where its holder moved since the
+    Shape was set, write it again under the holder of now (set_shape), so the old curve stays
+    where it was drawn, on its sources, and moved_holder no longer asks to execute (review
+    revfc 4: a failed spline drawn 123 mm off once its Part moved, mustExecute True)."""
+    held = getattr(getattr(obj, "Proxy", None), "_held", None)
+    if held is None or held == _key(holder_placement(obj)):
+        return
+    if obj.Shape.isNull():
+        remember_holder(obj)
+        return
+    was = App.Placement(App.Vector(*held[:3]), App.Rotation(*held[3:]))
+    shape = obj.Shape.copy()
+    shape.transformShape(was.toMatrix(), True)          # global again, as set_shape takes it
+    set_shape(obj, shape)
+
+
 def remember_holder(obj):
     """Take ``obj``'s Shape as set where its holder is now (a document reopened)."""
     proxy = getattr(obj, "Proxy", None)

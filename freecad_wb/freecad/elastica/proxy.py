@@ -18,7 +18,7 @@ import sys
 import FreeCAD as App
 
 from .containers import (add_containers, follow_containers, holder_placement, link_properties,
-                         moved_holder, remember_holder, restore_containers)
+                         keep_in_place, moved_holder, remember_holder, restore_containers)
 from .kept import input_key, is_input
 from .units import exact_mark, mm_marked, say
 
@@ -461,6 +461,7 @@ class FeatureProxy:
                 return
             report(obj, msg)
             self.on_error(obj)
+            keep_in_place(obj)            # the kept Shape where it was drawn
         finally:
             self._executing = False
         raise_reported(f"Elastica {obj.Label}: {say(mm_marked(msg))}")
