@@ -13,7 +13,7 @@ import FreeCAD as App
 import Part
 
 import elastica_samples as S
-from freecad.elastica import blend, comb, ellblend, fit, fit_core, g2quad, spline
+from freecad.elastica import blend, comb, ellblend, fit, fit_core, g2quad, kept, spline
 from freecad.elastica import commands as C
 
 from test_elastica_container_moves import BODY, PTS, in_sketch, moved
@@ -239,6 +239,36 @@ class KeptTest(S.DocTest):
         self.clear()
         f.touch()
         self.doc.recompute()
+        self.assertEqual(self.cores, ["smooth"])
+
+    def test_a_bug_in_the_key_is_no_silent_recompute(self):
+        """A bug in input_key (here: reading a sketch's geometry raises TypeError) fails the
+        recompute, which FreeCAD marks; it was taken for no key, and the feature computed
+        at every recompute, unnoticed (review revfc 7). A source being deleted (the one case
+        the key cannot be taken: ReferenceError) still computes."""
+        made = self.every_feature()
+        f = made[0][0]
+
+        def bug(*_):
+            raise TypeError("a bug in the key")
+        self.spy(kept, "_content", lambda original, *a: bug())
+        self.clear()
+        f.touch()
+        self.doc.recompute()
+        self.assertIn("Invalid", f.State)
+        self.assertEqual(self.cores, [])
+
+    def test_a_source_being_deleted_computes(self):
+        made = self.every_feature()
+        f = made[0][0]
+
+        def gone(*_):
+            raise ReferenceError("This object is already deleted")
+        self.spy(kept, "_content", lambda original, *a: gone())
+        self.clear()
+        f.touch()
+        self.doc.recompute()
+        self.assertEqual(f.State, ["Up-to-date"])
         self.assertEqual(self.cores, ["smooth"])
 
 

@@ -91,7 +91,9 @@ def input_key(obj):
     (is_input; its expressions, and the date and size of a file it names), the placement of
     the container holding it (containers.holder_placement) and the geometry of the objects it
     reads (containers.read_objects) in global coordinates. None where it
-    cannot be taken (a link to an object being deleted): the feature computes."""
+    cannot be taken (a link to an object being deleted: FreeCAD raises ReferenceError): the
+    feature computes. Any other exception is a bug and propagates (it was taken for no key:
+    the feature computed at every recompute, unnoticed)."""
     h = hashlib.sha256()
     try:
         for p in sorted(obj.PropertiesList):
@@ -110,8 +112,8 @@ def input_key(obj):
         h.update(repr(("holder", _stable(holder_placement(obj)))).encode())
         for o in read_objects(obj):
             _object_key(o, h)
-    except Exception:      # whatever cannot be read: no key, the feature computes
-        return None
+    except ReferenceError:      # an object read was deleted: no key, the feature computes
+        return None             # (anything else is a bug: raised, the recompute fails)
     return h.hexdigest()
 
 
