@@ -125,26 +125,26 @@ class SaidNotesTest(S.DocTest):
 
     def test_the_commands_note_is_kept_with_the_feature(self):
         """The spike's ducks, no free batten: the Elastic spline command's note (why a
-        tension) is kept with the feature (proxy.kept_note; it lived only while its panel
+        tension) is saved with the feature (proxy.saved_note; it lived only while its panel
         was open), saved with the document, and said while Mode and Tension are the
         command's; a tension of the designer's has none."""
         import json
         from freecad.elastica import commands as C
-        from freecad.elastica.proxy import NOTE, kept_note
+        from freecad.elastica.proxy import NOTE, saved_note
         spike = [(0, 0), (100, 0), (105, 100), (110, 0), (200, 0)]
         sk = S.points_sketch(self.doc, spike, "Spike")
         f = C.spline_sources([(sk, [])], open_panel=False)
         self.assertEqual(f.Tension, 6.57e-5)
-        note = kept_note(f)
+        note = saved_note(f)
         self.assertIn("Tension = 6.57e-05 1/mm\u00b2 instead (10 / the 390.2 mm polygon",
                       say(note))
         self.assertEqual(json.loads(getattr(f, NOTE))["values"],
                          {"Mode": "tension", "Tension": 6.57e-5})
         self.assertEqual(f.getEditorMode(NOTE), ["Hidden"])
         (f,) = S.reopened(self, "note.FCStd", f.Name)
-        self.assertEqual(kept_note(f), note)
+        self.assertEqual(saved_note(f), note)
         f.Tension = 1e-4
-        self.assertEqual(kept_note(f), "")
+        self.assertEqual(saved_note(f), "")
 
     def test_comb_scale_in_the_schema(self):
         """The comb panel's 'scale ... mm\u00b2' line in the square of the schema's unit."""

@@ -12,7 +12,7 @@ import FreeCAD as App
 import FreeCADGui as Gui
 
 from . import defaults, icon, library_problem
-from .proxy import InputProblem, abort_transaction, keep_note
+from .proxy import InputProblem, abort_transaction, save_note
 from .recording import _ref
 from .units import say
 
@@ -150,7 +150,7 @@ def _check_and_create(title, what, check, code, open_panel, wrong=message, prepa
                   prepare=prepare)
     if obj is not None and note:
         message(f"{obj.Label}: {note}", error=False)
-        keep_note(obj, note)            # its panel says it later too, while it holds
+        save_note(obj, note)            # its panel says it later too, while it holds
     if panel and obj is not None:
         from . import taskpanels
         taskpanels.open_for(obj, created=True, note=note or "")

@@ -13,8 +13,8 @@ from PySide import QtCore, QtGui
 from . import icon
 from .containers import CONTAINERS
 from .geometry import global_shape, is_sketch, sketch_curves
-from .proxy import (EDGE_ENDS, InputProblem, abort_transaction, bound_expression, keep_note,
-                    kept_note, note_changes, note_values, said as said_kept)
+from .proxy import (EDGE_ENDS, InputProblem, abort_transaction, bound_expression, save_note,
+                    saved_note, note_changes, note_values, said as proxy_said)
 from .recording import edit_lines, edit_state
 from .spinboxes import BAD_RGB, DecadeBox, NumberBox
 from .units import length_text, say, unit_names
@@ -31,7 +31,7 @@ ERROR_RGB = BAD_RGB
 def said_now(obj, prop):
     """A feature's text property as its panel says it (proxy.said): in the schema of now,
     a measured length at rounding noise as 0 (the property and the report view keep it)."""
-    return said_kept(obj, prop, figures=True)
+    return proxy_said(obj, prop, figures=True)
 
 
 def _sketches(doc, exclude=()):
@@ -120,7 +120,7 @@ class Panel:
     @property
     def note(self):
         """Why the command (or the panel) chose the values it did: the warning line's first
-        sentence, kept with the feature (proxy.keep_note, in the panel's transaction) with
+        sentence, saved with the feature (proxy.save_note, in the panel's transaction) with
         the values it explains, and said while they hold, as by a panel opened later (a
         length typed over the one it named left it naming the old one)."""
         return self._note if note_values(self.obj) == self._note_for else ""
@@ -130,14 +130,14 @@ class Panel:
         self._note, self._note_for = text, note_values(self.obj)
         if not self.gone and note_changes(self.obj, text):
             self.hold()
-            keep_note(self.obj, text)
+            save_note(self.obj, text)
 
     def __init__(self, obj, created=True, note=""):
         self.obj = obj
         self.opened_with = edit_state(obj)      # OK records what the edit changed
-        # why the command chose what it did (warning line): given by the command, or kept
-        # with the feature while its values hold (proxy.keep_note)
-        self._note, self._note_for = note or kept_note(obj), note_values(obj)
+        # why the command chose what it did (warning line): given by the command, or saved
+        # with the feature while its values hold (proxy.save_note)
+        self._note, self._note_for = note or saved_note(obj), note_values(obj)
         self.doc = obj.Document
         self.name, self.doc_name = obj.Name, obj.Document.Name
         self.watch = _Watch(self)
@@ -715,7 +715,7 @@ class Panel:
             # the preview said it on the panel's error line only: OK says it in the report
             # view too, and the panel stays open, the user fixes the input or cancels
             App.Console.PrintError(f"Elastica {self.obj.Label}: "
-                                   f"{said_kept(self.obj, 'Status').removeprefix('error: ')}\n")
+                                   f"{proxy_said(self.obj, 'Status').removeprefix('error: ')}\n")
             return False
         code = self.copy_code()
         if not code and not self._keep:   # refresh_enabled keeps this from happening

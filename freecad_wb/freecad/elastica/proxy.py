@@ -256,8 +256,8 @@ def check_degree(value, lo=3, hi=7, name="Degree"):
 
 def report(obj, msg, error=True):
     """The message in the report view (not during a panel's live preview) and, as
-    'error: ...', in obj.Status (its marks said in the schema of now, units.say; kept for
-    said())."""
+    'error: ...', in obj.Status (its marks said in the schema of now, units.say; its marked
+    text saved for said())."""
     msg = mm_marked(msg)          # '<number> mm' in the schema's length unit
     if not getattr(getattr(obj, "Proxy", None), "previewing", False):
         # a panel's live preview says it on its error line only (panelbase.Panel.update)
@@ -289,7 +289,8 @@ def add_said(obj):
         proxy._said = {}
 
 
-def _kept(obj):
+def _said_texts(obj):
+    """{prop: [said text, marked text]} that set_said wrote (SAID, or the proxy's 'said')."""
     text = getattr(obj, SAID, "") if SAID in obj.PropertiesList else ""
     return json.loads(text) if text else dict(getattr(getattr(obj, "Proxy", None), "_said", None)
                                               or {})
@@ -302,20 +303,20 @@ def set_said(obj, prop, marked):
     old = getattr(obj, prop)
     if (list(old) if isinstance(old, (list, tuple)) else old) != value:   # unchanged: untouched
         setattr(obj, prop, value)
-    kept = _kept(obj)
-    kept[prop] = [value, list(marked) if isinstance(marked, (list, tuple)) else marked]
+    texts = _said_texts(obj)
+    texts[prop] = [value, list(marked) if isinstance(marked, (list, tuple)) else marked]
     if SAID in obj.PropertiesList:
-        text = json.dumps(kept, sort_keys=True)
+        text = json.dumps(texts, sort_keys=True)
         if getattr(obj, SAID) != text:
             setattr(obj, SAID, text)
     elif getattr(obj, "Proxy", None) is not None:      # not an Elastica feature's: its proxy
-        obj.Proxy._said = kept
+        obj.Proxy._said = texts
 
 
 def resay(obj):
     """The texts set_said wrote, said again in the unit schema of now where the properties
     still hold them (as a recompute's apply says them)."""
-    for prop, (value, marked) in _kept(obj).items():
+    for prop, (value, marked) in _said_texts(obj).items():
         if prop in obj.PropertiesList:
             now = getattr(obj, prop)
             if (list(now) if isinstance(now, (list, tuple)) else now) == value:
@@ -327,10 +328,10 @@ def said(obj, prop, figures=False):
     where the property still holds what set_said wrote (a schema changed since the
     recompute), else the property as it stands; ``figures``: as a panel says it (units.say)."""
     value = getattr(obj, prop)
-    kept = _kept(obj).get(prop)
+    texts = _said_texts(obj).get(prop)
     now = list(value) if isinstance(value, (list, tuple)) else value
-    if kept and kept[0] == now:
-        return say(kept[1], figures)
+    if texts and texts[0] == now:
+        return say(texts[1], figures)
     return now
 
 
@@ -350,7 +351,7 @@ def add_note(obj):
 
 
 def note_values(obj):
-    """The values of the feature's note_props, as keep_note keeps them beside a note."""
+    """The values of the feature's note_props, as save_note saves them beside a note."""
     def value(v):
         if hasattr(v, "Value"):         # a length (Quantity)
             return float(v.Value)
@@ -363,23 +364,23 @@ def _note_text(obj, note):
 
 
 def note_changes(obj, note):
-    """Whether keep_note(obj, note) would change what the feature keeps."""
+    """Whether save_note(obj, note) would change what the feature has saved."""
     return NOTE in obj.PropertiesList and getattr(obj, NOTE) != _note_text(obj, note)
 
 
-def keep_note(obj, note):
-    """Keep ``note`` (marked text; '' forgets it) with the values of note_props it explains."""
+def save_note(obj, note):
+    """Save ``note`` (marked text; '' forgets it) with the values of note_props it explains."""
     if note_changes(obj, note):
         setattr(obj, NOTE, _note_text(obj, note))
 
 
-def kept_note(obj):
-    """The note kept (keep_note) while the values it explains still hold, else ''."""
+def saved_note(obj):
+    """The note saved (save_note) while the values it explains still hold, else ''."""
     text = getattr(obj, NOTE, "") if NOTE in obj.PropertiesList else ""
     if not text:
         return ""
-    kept = json.loads(text)
-    return kept["note"] if kept["values"] == note_values(obj) else ""
+    saved = json.loads(text)
+    return saved["note"] if saved["values"] == note_values(obj) else ""
 
 
 def abort_transaction(doc, name):
@@ -424,7 +425,7 @@ class FeatureProxy:
     (raises InputProblem) and apply (writes the result)."""
 
     kind = ""
-    note_props = ()     # the properties a command's note explains (keep_note)
+    note_props = ()     # the properties a command's note explains (save_note)
     # {link property: the property of the sketch geometry indices it follows}: a sketch edge's or
     # vertex's name shifts as the sketch changes, its geometry is followed
     # (links.followed_elements)
