@@ -6,6 +6,7 @@ geometry it reads where it is drawn) did not change keeps its outcome and calls 
 (kept.py); a Body moved, a source point dragged, a property typed compute again, once.
 The calls are counted where they are made: each feature class's compute, fit_core, and
 the binding's el.fit, which every library fit goes through."""
+import os
 import sys
 import unittest
 
@@ -270,6 +271,80 @@ class KeptTest(S.DocTest):
         self.doc.recompute()
         self.assertEqual(f.State, ["Up-to-date"])
         self.assertEqual(self.cores, ["smooth"])
+
+    def test_a_csv_file_rewritten_on_disk_computes_again(self):
+        """A fit of a CSV file: the file's modification time and size are in the key (a
+        PropertyFile names it; the text of the name alone does not change). Rewritten with a
+        later time and the same size, or with another size and the time it had (copied with
+        its times kept: cp -p, rsync -t, an archive; or a file system stamping whole
+        seconds), it is read and fitted again; untouched, not."""
+        xy = [(x, y) for x, y in PTS]
+        path = S.temp_path(self, "scan.csv")
+
+        def write(dx, dy, ns):
+            with open(path, "w") as fh:
+                fh.writelines(f"{x + dx:.6f},{y + dy:.6f}\n" for x, y in xy)
+            os.utime(path, ns=(ns, ns))
+            return os.stat(path).st_size
+        t0 = 1_700_000_000 * 10**9
+        size = write(0.0, 0.0, t0)
+        f = fit.make(self.doc, [], csv_file=path)
+        self.doc.recompute()
+        self.assertFalse(f.Status.startswith("error"), f.Status)
+        first = f.DataPoints[0]
+        self.clear()
+        f.touch()
+        self.doc.recompute()
+        self.assertEqual(self.cores, [])
+        # the same size (a 3-mm shift keeps every figure's width), one second later
+        self.assertEqual(write(3.0, 0.0, t0 + 10**9), size)
+        self.doc.recompute()
+        self.assertEqual(len(self.cores), 1)
+        self.assertAlmostEqual((f.DataPoints[0] - first).x, 3.0, delta=1e-9)
+        # another size (a 100-mm shift adds digits), the time it had
+        self.assertNotEqual(write(100.0, 0.0, t0 + 10**9), size)
+        self.doc.recompute()
+        self.assertEqual(len(self.cores), 2)
+        self.assertAlmostEqual((f.DataPoints[0] - first).x, 100.0, delta=1e-9)
+        self.assertEqual(f.State, ["Up-to-date"])
+
+    def test_an_app_link_source_computes_when_what_it_links_changes(self):
+        """A comb of an App::Link to a sketch (a link has no geometry property of its own: the
+        key takes its shape where it is drawn, as BRep): the linked sketch edited or the link
+        moved computes the comb again, following it; a Pad change in the Body does not."""
+        self.pad_ = self.pad()
+        curve = self.sketch("Curve")
+        bs = Part.BSplineCurve()
+        bs.interpolate([App.Vector(x, y, 0) for x, y in PTS])
+        curve.addGeometry(bs, False)
+        self.doc.recompute()
+        link = self.doc.addObject("App::Link", "CurveLink")
+        link.LinkedObject = curve
+        link.Placement = App.Placement(App.Vector(0, 0, 200), App.Rotation())
+        self.doc.recompute()
+        c = comb.make(self.doc, link, Samples=20, Scale=500.0)
+        self.doc.recompute()
+        self.assertEqual(c.Status, "ok")
+
+        def teeth_on_link():
+            inv = curve.getGlobalPlacement().inverse()
+            return [inv.multVec(link.Placement.inverse().multVec(v.Point))
+                    for v in c.Shape.Vertexes]
+        before = teeth_on_link()
+        self.clear()
+        self.pad_.Length = 44
+        self.doc.recompute()
+        self.assertEqual(self.computed, [])
+        link.Placement = App.Placement(App.Vector(30, -20, 250),
+                                       App.Rotation(App.Vector(0, 0, 1), 40))
+        self.doc.recompute()
+        self.assertEqual(self.computed, [c.Name])
+        self.assertLess(max((a - b).Length for a, b in zip(teeth_on_link(), before)), FOLLOWS)
+        self.clear()
+        curve.movePoint(0, 1, App.Vector(-5, 8, 0))       # its start moved
+        self.doc.recompute()
+        self.assertEqual(self.computed, [c.Name])
+        self.assertNotEqual(teeth_on_link(), before)
 
 
 if __name__ == "__main__":
