@@ -207,7 +207,8 @@ class CombScaleTest(S.DocTest):
         scales, extents = [], []
         for deg in (0, 10, 20, 30, 45, 60, 75):
             sk = self.doc.addObject("Sketcher::SketchObject", f"Square{deg}")
-            sk.Placement = App.Placement(App.Vector(5, 3, 0), App.Rotation(App.Vector(0, 0, 1), deg))
+            sk.Placement = App.Placement(App.Vector(5, 3, 0),
+                                         App.Rotation(App.Vector(0, 0, 1), deg))
             rounded_square(sk)
             self.doc.recompute()
             comb = Co.make(self.doc, sk, Samples=30)

@@ -78,8 +78,8 @@ def oriented_extent(points):
     QA; the box along the principal axes did for a symmetric shape, whose axes are arbitrary:
     a rounded square's scale 172.1 .. 214.9 as it turned, review revfc 3). A planar set
     (the library's plane_fit, its points within 1e-9 of the extent off the plane): its
-    convex hull in the plane by rotating calipers; any other: all pairs (no 3D hull here). 0 for fewer
-    than 2 points."""
+    convex hull in the plane by rotating calipers; any other: all pairs (no 3D hull here).
+    0 for fewer than 2 points."""
     n = np()
     xyz = n.array([tuple(p) for p in points], dtype=float).reshape(-1, 3)
     if len(xyz) < 2:
