@@ -450,3 +450,54 @@ def test_paper_a_short_of_the_end_does_not_cover_the_source():
         g = el.g2_quadratic(c.points(s), 16, tangents=np.c_[np.cos(th), np.sin(th)],
                             partial=True, fit_ends=False)
     assert not g.covers_source
+
+
+# a k = 1.82 elastica turning ~4 times (/tmp/affshort's hold_count.py, curve 17 of seed 20261206)
+TURNING = dict(x0=-5.083034973582038, y0=-33.059037265720804, phi=1.6495229282221135,
+               mu=3.7131648374362034, k=1.8201196947246816, q=3.082111327782377,
+               length=7.253495089408346)
+
+
+def test_edge_count_hint_names_the_fewest_count_that_works():
+    """covering_edges tries every count above n, not steps: from 6 edges it named 27 (the
+    counts 7-22, then 27, 33, ...; from 8: 37), yet 26 covers; 30 does not again. The hint
+    and exc.edges now say 26, the fewest: every count from 7 to 25 has no G2 quadratic."""
+    c = el.SmoothElastica(**TURNING)
+    for n in (6, 8):
+        with pytest.raises(el.EdgeCountError, match=f"n = 26 works, the fewest above {n}") as exc:
+            el.g2_quadratic(c, n, partial=True)
+        assert exc.value.edges == 26
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", el.EndTangentWarning)
+        assert el.g2_quadratic(c, 26).covers_source
+        for m in (7, 17, 25):
+            with pytest.raises(el.EdgeCountError):
+                el.g2_quadratic(c, m, partial=True, _plain=True)
+    seen = []
+    assert el.covering_edges(lambda m: seen.append(m) or el.g2_quadratic(
+        c, m, partial=True, _plain=True), 21) == 26
+    assert seen == [22, 23, 24, 25, 26]     # one build per count, in turn
+
+
+def test_paper_a_past_the_curve_end_is_refused_as_for_points():
+    """fit_ends=False (the paper's A = (S/n)^3) whose last vertex runs more than half a sample
+    past a curve's end: g2_quadratic forced the last spline back onto the end and said
+    covers_source True (this elastica at 16 edges: its last vertex 0.8 sample past), where
+    the same curve's points raised DomainError (_past_the_end). Both refuse now, partial or
+    not, and fit_ends=True (the default) still builds and covers."""
+    c = el.SmoothElastica(x0=21.63501098538883, y0=24.326932218979252, phi=0.46374950388006697,
+                          mu=0.25739156427767984, k=1.347221366400754, q=3.491559150918864,
+                          length=4.012754467593737)
+    ap = el.affine_polyline(c, 16, fit_ends=False)
+    assert ap.s[-1] - c.length > 0.5 * c.length / (20 * 16)    # past the end (own check)
+    for partial in (True, False):
+        with pytest.raises(el.DomainError, match="run past the curve's end"):
+            el.g2_quadratic(c, 16, partial=partial, fit_ends=False)
+    s = np.linspace(0, c.length, 400)
+    th = c.angle(s)
+    with pytest.raises(el.DomainError, match="ran past their end"):
+        el.g2_quadratic(c.points(s), 16, tangents=np.c_[np.cos(th), np.sin(th)], partial=True,
+                        fit_ends=False)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", el.EndTangentWarning)
+        assert el.g2_quadratic(c, 16).covers_source
