@@ -17,20 +17,30 @@ class PackageTest(unittest.TestCase):
     def test_namespace_layout(self):
         self.assertFalse(os.path.exists(os.path.join(WB, "freecad", "__init__.py")))
         for f in ("__init__.py", "init_gui.py", "commands.py", "features.py", "taskpanels.py",
-                  "panelbase.py", "spinboxes.py", "preferences.py", "sources.py",
+                  "panelbase.py", "panelexpressions.py", "spinboxes.py", "preferences.py",
+                  "sources.py",
                   "viewproviders.py",
                   "geometry.py", "nearest.py", "proxy.py", "fit.py", "fit_core.py", "fit_ends.py",
                   "fit_shape.py", "blend.py", "spline.py",
                   "comb.py", "ellblend.py", "g2quad.py"):
             self.assertTrue(os.path.isfile(os.path.join(PKG, f)), f)
 
+    def test_modules_stay_under_800_lines(self):
+        """One concern per file, files under ~800 lines (the project's rule): a module grown
+        past it is split (panelbase.py at 824 lines: its f(x) mark went to
+        panelexpressions.py)."""
+        for f in sorted(os.listdir(PKG)):
+            if f.endswith(".py"):
+                with open(os.path.join(PKG, f)) as fh:
+                    self.assertLessEqual(len(fh.readlines()), 800, f)
+
     def test_features_never_import_gui_code(self):
         """One module per feature, no features <-> task panels circle: the feature
         modules (and what they share) import neither GUI modules nor Qt; the GUI
         reaches them, never the other way (view providers come through a hook)."""
         import ast
-        gui = {"taskpanels", "panelbase", "spinboxes", "viewproviders", "commands", "init_gui",
-               "preferences", "FreeCADGui", "PySide", "pivy"}
+        gui = {"taskpanels", "panelbase", "panelexpressions", "spinboxes", "viewproviders",
+               "commands", "init_gui", "preferences", "FreeCADGui", "PySide", "pivy"}
         for f in ("proxy", "geometry", "nearest", "sources", "fit", "fit_core", "fit_ends",
                   "fit_shape", "blend", "spline", "comb", "ellblend", "g2quad"):
             with open(os.path.join(PKG, f + ".py")) as fh:

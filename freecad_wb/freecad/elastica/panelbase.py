@@ -2,7 +2,8 @@
 Sketcher panels: ``Panel`` (fields bound live to a feature's properties, the
 delayed recompute, enabled fields, result text, the view kept on the feature, OK
 and Cancel through the document's undo transaction); its spin boxes are in
-spinboxes.py, the panels of the features in taskpanels.py."""
+spinboxes.py, its fields bound to expressions (the f(x) mark) in panelexpressions.py,
+the panels of the features in taskpanels.py."""
 from __future__ import annotations
 
 import FreeCAD as App
@@ -13,8 +14,9 @@ from PySide import QtCore, QtGui
 from . import icon
 from .containers import CONTAINERS
 from .geometry import global_shape, is_sketch, sketch_curves
-from .proxy import (EDGE_ENDS, InputProblem, abort_transaction, bound_expression, save_note,
-                    saved_note, note_changes, note_values, said as proxy_said)
+from .panelexpressions import ExpressionFields
+from .proxy import (EDGE_ENDS, InputProblem, abort_transaction, note_changes, note_values,
+                    save_note, saved_note, said as proxy_said)
 from .recording import edit_lines, edit_state
 from .spinboxes import BAD_RGB, DecadeBox, NumberBox
 from .units import length_text, say, unit_names
@@ -106,7 +108,7 @@ class _Watch:
             self.panel.committed_by_other()
 
 
-class Panel:
+class Panel(ExpressionFields):
     """Shared machinery: bound fields, the delayed recompute, result text, the undo
     transaction. Subclasses build their boxes in ``build`` and return the result
     text of a successful recompute from ``result_text``."""
@@ -242,52 +244,6 @@ class Panel:
         if when:
             self.enablers.append((box, when))
         return box
-
-    def expression(self, prop):
-        """The expression a property of the feature is bound to, or None."""
-        return bound_expression(self.obj, prop)
-
-    def mark_bound(self, box, prop):
-        expr = self.expression(prop)
-        if expr:
-            box.bind_mark(expr, lambda: self.edit_expression(box, prop))
-
-    def edit_expression(self, box, prop):
-        """FreeCAD's expression editor (Gui::Dialog::DlgExpressionInput) on ``prop``, as the
-        f(x) mark of its own boxes opens it (a Pad's Length): its OK sets the expression,
-        its Clear removes it, in the panel's transaction (Cancel undoes it); then the box
-        follows (expression_edited). FreeCAD 0.20's Python has no call that opens the
-        dialog (openFormulaDialog is no slot): a hidden Gui::QuantitySpinBox bound to the
-        property (Gui.ExpressionBinding) is sent '=', on which FreeCAD's boxes open it."""
-        helper = Gui.UiLoader().createWidget("Gui::QuantitySpinBox", box)
-        helper.setGeometry(box.rect())          # the dialog opens over the box
-        helper.hide()
-        self._binding = Gui.ExpressionBinding(helper)
-        self._binding.bind(self.obj, prop)
-        QtGui.QApplication.sendEvent(helper, QtGui.QKeyEvent(
-            QtCore.QEvent.KeyPress, QtCore.Qt.Key_Equal, QtCore.Qt.NoModifier, "="))
-        dialog = helper.findChild(QtGui.QDialog)
-        if dialog is None:
-            helper.deleteLater()
-            return
-        # after the helper's own slot (connected first) has set the expression
-        dialog.finished.connect(lambda _result: QtCore.QTimer.singleShot(
-            0, lambda: self.expression_edited(box, prop, helper)))
-
-    def expression_edited(self, box, prop, helper):
-        """The expression editor closed: the box marked with the expression of now, or
-        writable again without one, and the preview recomputed with its value."""
-        helper.deleteLater()
-        if self.gone:
-            return
-        expr = self.expression(prop)
-        if expr:
-            box.bind_mark(expr)
-        else:
-            box.unbind_mark()
-        self.obj.touch()
-        self.update()
-        self.show_value(box, float(getattr(self.obj, prop)))
 
     def checked_number(self, grid, text, check_prop, prop, lo, hi, step, unit, tip, when=None):
         """A check box (the boolean check_prop) beside a spin box (the float prop), which

@@ -213,7 +213,8 @@ class NumberBox(QtGui.QDoubleSpinBox):
         mark in the box and the expression in its tooltip, as its own Quantity boxes show
         a bound property (the panel does not write it: set() skips bound properties).
         ``edit``: what clicking the mark does (FreeCAD's expression editor,
-        panelbase.Panel.edit_expression), as the f(x) mark of FreeCAD's boxes."""
+        panelexpressions.ExpressionFields.edit_expression),
+        as the f(x) mark of FreeCAD's boxes."""
         if self._mark is None:
             self._tip = self.toolTip()
             self._mark = self.lineEdit().addAction(QtGui.QIcon(":/icons/bound-expression.svg"),

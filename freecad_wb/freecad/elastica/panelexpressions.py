@@ -1,0 +1,62 @@
+"""Task-panel fields bound to expressions (the f(x) mark), as FreeCAD's own boxes show
+and edit them (a Pad's Length): ``ExpressionFields``, the part of panelbase.Panel that
+marks a box whose property an expression sets (spinboxes.NumberBox.bind_mark) and opens
+FreeCAD's expression editor from its mark."""
+from __future__ import annotations
+
+import FreeCADGui as Gui
+from PySide import QtCore, QtGui
+
+from .proxy import bound_expression
+
+
+class ExpressionFields:
+    """A mixin of panelbase.Panel (its ``obj``, ``gone``, ``update`` and ``show_value``):
+    the boxes of properties bound to expressions, read-only and marked, and the editor
+    their mark opens."""
+
+    def expression(self, prop):
+        """The expression a property of the feature is bound to, or None."""
+        return bound_expression(self.obj, prop)
+
+    def mark_bound(self, box, prop):
+        expr = self.expression(prop)
+        if expr:
+            box.bind_mark(expr, lambda: self.edit_expression(box, prop))
+
+    def edit_expression(self, box, prop):
+        """FreeCAD's expression editor (Gui::Dialog::DlgExpressionInput) on ``prop``, as the
+        f(x) mark of its own boxes opens it (a Pad's Length): its OK sets the expression,
+        its Clear removes it, in the panel's transaction (Cancel undoes it); then the box
+        follows (expression_edited). FreeCAD 0.20's Python has no call that opens the
+        dialog (openFormulaDialog is no slot): a hidden Gui::QuantitySpinBox bound to the
+        property (Gui.ExpressionBinding) is sent '=', on which FreeCAD's boxes open it."""
+        helper = Gui.UiLoader().createWidget("Gui::QuantitySpinBox", box)
+        helper.setGeometry(box.rect())          # the dialog opens over the box
+        helper.hide()
+        self._binding = Gui.ExpressionBinding(helper)
+        self._binding.bind(self.obj, prop)
+        QtGui.QApplication.sendEvent(helper, QtGui.QKeyEvent(
+            QtCore.QEvent.KeyPress, QtCore.Qt.Key_Equal, QtCore.Qt.NoModifier, "="))
+        dialog = helper.findChild(QtGui.QDialog)
+        if dialog is None:
+            helper.deleteLater()
+            return
+        # after the helper's own slot (connected first) has set the expression
+        dialog.finished.connect(lambda _result: QtCore.QTimer.singleShot(
+            0, lambda: self.expression_edited(box, prop, helper)))
+
+    def expression_edited(self, box, prop, helper):
+        """The expression editor closed: the box marked with the expression of now, or
+        writable again without one, and the preview recomputed with its value."""
+        helper.deleteLater()
+        if self.gone:
+            return
+        expr = self.expression(prop)
+        if expr:
+            box.bind_mark(expr)
+        else:
+            box.unbind_mark()
+        self.obj.touch()
+        self.update()
+        self.show_value(box, float(getattr(self.obj, prop)))
