@@ -48,6 +48,44 @@ def printed(text):
     return [line.strip() for line in text.replace("\r", "\n").split("\n") if line.strip()]
 
 
+def every_feature_from(test, sketch, comb_scale=None):
+    """[(feature, its sketch)] of every kind the workbench makes: fit (smooth and discrete),
+    spline, elliptic blend, G2 quadratic, blend and comb (at ``comb_scale``, else the
+    automatic scale), from three sketches ``sketch(name)`` makes: Dots (PTS as points), Curve
+    (a B-spline through PTS), Lines (two segments); each made and not in error (``test``
+    asserts it). The scene of the container, recompute-kept and placed-Part tests."""
+    dots = sketch("Dots")
+    for x, y in PTS:
+        dots.addGeometry(Part.Point(App.Vector(x, y, 0)), False)
+    curve = sketch("Curve")
+    bs = Part.BSplineCurve()
+    bs.interpolate([App.Vector(x, y, 0) for x, y in PTS])
+    curve.addGeometry(bs, False)
+    lines = sketch("Lines")
+    lines.addGeometry(Part.LineSegment(App.Vector(0, 0, 0), App.Vector(40, 0, 0)), False)
+    lines.addGeometry(Part.LineSegment(App.Vector(80, 25, 0), App.Vector(120, 35, 0)), False)
+    test.doc.recompute()
+    App.setActiveDocument(test.doc.Name)
+    said = []
+    made = [(C.fit_sources([(dots, [])], False, Model="smooth", wrong=said.append), dots),
+            (C.fit_sources([(curve, ["Edge1"])], False, Model="discrete", wrong=said.append),
+             curve),
+            (C.spline_sources([(dots, [])], False, wrong=said.append), dots),
+            (C.ellblend_sources([(dots, [])], False, wrong=said.append), dots),
+            (C.g2quad_sources([(curve, ["Edge1"])], False, Edges=96, wrong=said.append), curve),
+            (C.blend_sources([(lines, ["Edge1"]), (lines, ["Edge2"])], False,
+                             wrong=said.append), lines)]
+    C.comb_sources([(curve, ["Edge1"])], wrong=said.append)
+    made.append((next(o for o in test.doc.Objects if o.Name.startswith("ElasticaComb")), curve))
+    if comb_scale is not None:
+        made[-1][0].Scale = comb_scale
+    test.doc.recompute()
+    for f, _ in made:
+        test.assertIsNotNone(f, said)
+        test.assertFalse(f.Status.startswith("error"), f"{f.Name}: {f.Status}")
+    return made
+
+
 class ContainerMoveTest(S.DocTest):
     doc_name = "ElasticaContainerMoves"
 
@@ -76,37 +114,8 @@ class ContainerMoveTest(S.DocTest):
 
     def every_feature(self):
         """[(feature, its sketch)] of every kind the workbench makes, from sketches in the
-        Body: fit (smooth and discrete), spline, elliptic blend, G2 quadratic, comb, blend."""
-        dots = self.dots()
-        curve = self.sketch("Curve")
-        bs = Part.BSplineCurve()
-        bs.interpolate([App.Vector(x, y, 0) for x, y in PTS])
-        curve.addGeometry(bs, False)
-        lines = self.sketch("Lines")
-        lines.addGeometry(Part.LineSegment(App.Vector(0, 0, 0), App.Vector(40, 0, 0)), False)
-        lines.addGeometry(Part.LineSegment(App.Vector(80, 25, 0), App.Vector(120, 35, 0)),
-                          False)
-        self.doc.recompute()
-        App.setActiveDocument(self.doc.Name)
-        said = []
-        made = [(C.fit_sources([(dots, [])], False, Model="smooth", wrong=said.append), dots),
-                (C.fit_sources([(curve, ["Edge1"])], False, Model="discrete",
-                               wrong=said.append), curve),
-                (C.spline_sources([(dots, [])], False, wrong=said.append), dots),
-                (C.ellblend_sources([(dots, [])], False, wrong=said.append), dots),
-                (C.g2quad_sources([(curve, ["Edge1"])], False, Edges=96, wrong=said.append),
-                 curve),
-                (C.blend_sources([(lines, ["Edge1"]), (lines, ["Edge2"])], False,
-                                 wrong=said.append), lines)]
-        C.comb_sources([(curve, ["Edge1"])], wrong=said.append)
-        # at the automatic scale, which turning the Body changes no more (comb.shape_extent)
-        made.append((next(o for o in self.doc.Objects if o.Name.startswith("ElasticaComb")),
-                     curve))
-        self.doc.recompute()
-        for f, _ in made:
-            self.assertIsNotNone(f, said)
-            self.assertFalse(f.Status.startswith("error"), f"{f.Name}: {f.Status}")
-        return made
+        Body (every_feature_from)."""
+        return every_feature_from(self, self.sketch)
 
     def assertFollow(self, made, before, what):
         """Each feature where it was ``before`` in its sketch's coordinates, to FOLLOWS."""

@@ -7,18 +7,16 @@ Part's placement (QA: the fit 120 mm from its points). Each test measures where 
 draws a feature: its Shape placed by its Part's global placement, taken from the Part
 itself (getParentGeoFeatureGroup().getGlobalPlacement()), not from the workbench; a feature
 in a Part must lie where it lay at document level, on its sketch, to 1e-9 mm."""
-import math
 import unittest
 
 import FreeCAD as App
-import Part
 
 import elastica_samples as S
-from freecad.elastica import commands as C
 from freecad.elastica import geometry as G
 from freecad.elastica import proxy as X
 
-PTS = [(x, 25 * math.sin(x / 40.0) + 0.002 * x * x) for x in range(0, 130, 10)]
+from test_elastica_container_moves import PTS, every_feature_from
+
 SKETCH = App.Placement(App.Vector(20, -10, 5), App.Rotation(App.Vector(0.2, 1, 0.3), 40))
 PART = App.Placement(App.Vector(150, -80, 40), App.Rotation(App.Vector(1, 0.5, 0.2), 50))
 INNER = App.Placement(App.Vector(-30, 45, 10), App.Rotation(App.Vector(0, 0, 1), 70))
@@ -48,43 +46,16 @@ class PlacedPartTest(S.DocTest):
     doc_name = "ElasticaPlacedPart"
 
     def every_feature(self, holder=None):
-        """[feature] of every kind the workbench makes (smooth and discrete fit, spline,
-        elliptic blend, G2 quadratic, blend, comb at the automatic scale), from sketches
-        at document level (or in ``holder``, a Body)."""
+        """[feature] of every kind the workbench makes (every_feature_from), from sketches at
+        document level (or in ``holder``, a Body)."""
         def sketch(name):
             sk = (holder.newObject if holder is not None else
                   lambda t, n: self.doc.addObject(t, n))("Sketcher::SketchObject", name)
             sk.Placement = SKETCH
             return sk
-        dots = sketch("Dots")
-        for x, y in PTS:
-            dots.addGeometry(Part.Point(App.Vector(x, y, 0)), False)
-        curve = sketch("Curve")
-        bs = Part.BSplineCurve()
-        bs.interpolate([App.Vector(x, y, 0) for x, y in PTS])
-        curve.addGeometry(bs, False)
-        lines = sketch("Lines")
-        lines.addGeometry(Part.LineSegment(App.Vector(0, 0, 0), App.Vector(40, 0, 0)), False)
-        lines.addGeometry(Part.LineSegment(App.Vector(80, 25, 0), App.Vector(120, 35, 0)),
-                          False)
-        self.doc.recompute()
-        App.setActiveDocument(self.doc.Name)
-        said = []
-        made = [C.fit_sources([(dots, [])], False, Model="smooth", wrong=said.append),
-                C.fit_sources([(curve, ["Edge1"])], False, Model="discrete", wrong=said.append),
-                C.spline_sources([(dots, [])], False, wrong=said.append),
-                C.ellblend_sources([(dots, [])], False, wrong=said.append),
-                C.g2quad_sources([(curve, ["Edge1"])], False, Edges=96, wrong=said.append),
-                C.blend_sources([(lines, ["Edge1"]), (lines, ["Edge2"])], False,
-                                wrong=said.append)]
-        C.comb_sources([(curve, ["Edge1"])], wrong=said.append)
-        made.append(next(o for o in self.doc.Objects if o.Name.startswith("ElasticaComb")))
-        self.doc.recompute()
-        for f in made:
-            self.assertIsNotNone(f, said)
-            self.assertFalse(f.Status.startswith("error"), f"{f.Name}: {f.Status}")
-        self.dots = dots
-        return made
+        made = every_feature_from(self, sketch)
+        self.dots = made[0][1]
+        return [f for f, _ in made]
 
     def assertAt(self, made, before, what):
         """Each feature drawn where it was ``before`` (global points), to ON, up to date."""

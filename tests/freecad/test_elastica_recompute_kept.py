@@ -15,9 +15,8 @@ import Part
 
 import elastica_samples as S
 from freecad.elastica import blend, comb, ellblend, fit, fit_core, g2quad, kept, spline
-from freecad.elastica import commands as C
 
-from test_elastica_container_moves import BODY, PTS, in_sketch, moved
+from test_elastica_container_moves import BODY, PTS, every_feature_from, in_sketch, moved
 
 PROXIES = (fit.FitProxy, spline.SplineProxy, ellblend.EllipticBlendProxy, g2quad.G2QuadProxy,
            comb.CombProxy, blend.BlendProxy)
@@ -73,41 +72,10 @@ class KeptTest(S.DocTest):
         return pad
 
     def every_feature(self):
-        """[(feature, its sketch)]: fit (smooth and discrete), spline, elliptic blend, G2
-        quadratic, comb and blend, from sketches in the Body beside a Pad."""
+        """[(feature, its sketch)]: every kind (every_feature_from), from sketches in the
+        Body beside a Pad, the comb at Scale 500."""
         self.pad_ = self.pad()
-        dots = self.sketch("Dots")
-        for x, y in PTS:
-            dots.addGeometry(Part.Point(App.Vector(x, y, 0)), False)
-        curve = self.sketch("Curve")
-        bs = Part.BSplineCurve()
-        bs.interpolate([App.Vector(x, y, 0) for x, y in PTS])
-        curve.addGeometry(bs, False)
-        lines = self.sketch("Lines")
-        lines.addGeometry(Part.LineSegment(App.Vector(0, 0, 0), App.Vector(40, 0, 0)), False)
-        lines.addGeometry(Part.LineSegment(App.Vector(80, 25, 0), App.Vector(120, 35, 0)),
-                          False)
-        self.doc.recompute()
-        App.setActiveDocument(self.doc.Name)
-        said = []
-        made = [(C.fit_sources([(dots, [])], False, Model="smooth", wrong=said.append), dots),
-                (C.fit_sources([(curve, ["Edge1"])], False, Model="discrete",
-                               wrong=said.append), curve),
-                (C.spline_sources([(dots, [])], False, wrong=said.append), dots),
-                (C.ellblend_sources([(dots, [])], False, wrong=said.append), dots),
-                (C.g2quad_sources([(curve, ["Edge1"])], False, Edges=96, wrong=said.append),
-                 curve),
-                (C.blend_sources([(lines, ["Edge1"]), (lines, ["Edge2"])], False,
-                                 wrong=said.append), lines)]
-        C.comb_sources([(curve, ["Edge1"])], wrong=said.append)
-        made.append((next(o for o in self.doc.Objects if o.Name.startswith("ElasticaComb")),
-                     curve))
-        made[-1][0].Scale = 500.0
-        self.doc.recompute()
-        for f, _ in made:
-            self.assertIsNotNone(f, said)
-            self.assertFalse(f.Status.startswith("error"), f"{f.Name}: {f.Status}")
-        return made
+        return every_feature_from(self, self.sketch, comb_scale=500.0)
 
     def assertUnchanged(self, made, before, what):
         for f, _ in made:
