@@ -22,8 +22,11 @@ class RecordingTest(S.DocTest):
         finally:
             C._run = run
         self.assertIsNotNone(obj)
-        self.assertEqual(len(codes), 1, codes)
-        return obj, codes[0]
+        # the creation and the recompute (two lines, as Fit's: the check's outcome is handed
+        # to the feature between them, commands._hand)
+        self.assertEqual(len(codes), 2, codes)
+        self.assertTrue(codes[1].endswith(".recompute()"), codes)
+        return obj, "\n".join(codes)
 
     def replayed(self, source, code, lines):
         """The feature of the same name made in a fresh document of the same name, whose

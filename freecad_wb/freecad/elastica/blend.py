@@ -17,6 +17,7 @@ from .containers import set_shape
 from .geometry import (binding_module, edge_end, el, global_element, is_sketch,
                        nearest_parameter, np, part_bspline, plane_coordinates, plane_curvature,
                        to_3d)
+from .kept import checked_call
 from .links import followed_edge
 from .spline import g2_met_hint, g2_solves
 from .units import (floor_digits, length_mark, length_text, length_unit_mark, per_area_mark,
@@ -179,27 +180,30 @@ def blend_core(e0, at_end0, e1, at_end1, plane=None, mode="tension", value=0.0, 
 LENGTH_MULTIPLES = (1.25, 1.5, 2.0, 3.0)
 
 
-def starting_length(e0, at_end0, e1, at_end1, plane=None):
+def starting_length(e0, at_end0, e1, at_end1, plane=None, hand=None):
     """A length to start a blend by, where the free batten does not join the ends: of
     LENGTH_MULTIPLES times their distance (3 digits), the one whose lowest-energy solution
     is the fairest, loop-free first, then by its bending energy times its length (the
     energy of its shape whatever its size). Returns (length, note for the user); raises
-    NoBlend when no such length has a solution."""
+    NoBlend when no such length has a solution. ``hand``: as free_or_length's."""
     dist = (edge_end(e1, at_end1)[0] - edge_end(e0, at_end0)[0]).Length
     best = None
     for m in LENGTH_MULTIPLES:
         length = float(f"{m * dist:.3g}")
         try:
-            c = blend_core(e0, at_end0, e1, at_end1, plane, "length", length)["curves"][0]
+            checked = checked_call(blend_core, e0, at_end0, e1, at_end1, plane, "length", length)
         except NoBlend:
             continue
+        c = checked[1]["curves"][0]
         key = (describe(c)[1] > 0, bending_energy(c) * length)
         if best is None or key < best[0]:
-            best = (key, m, length)
+            best = (key, m, length, checked)
     if best is None:
         raise NoBlend("no elastic curve joins these ends, free or at "
                       f"{', '.join(f'{m:g}' for m in LENGTH_MULTIPLES)} times their distance")
-    _, m, length = best
+    _, m, length, checked = best
+    if hand is not None:
+        hand.append(checked)
     return length, (f"no free batten (tension 0) joins these ends: solved for a length "
                     f"instead, {length_mark(length, 6)} ({m:g} \u00d7 the {length_mark(dist, 4)} "
                     "between them, the "
@@ -207,14 +211,18 @@ def starting_length(e0, at_end0, e1, at_end1, plane=None):
                     "change it, or solve for a tension > 0")
 
 
-def free_or_length(e0, at_end0, e1, at_end1, plane=None):
+def free_or_length(e0, at_end0, e1, at_end1, plane=None, hand=None):
     """None where the free batten (tension 0) joins the ends; else starting_length's
-    (length, note): what the Elastic blend command and its panel start by."""
+    (length, note): what the Elastic blend command and its panel start by. ``hand``: a list
+    given the blend solved (kept.checked_call), for the feature's next recompute
+    (FeatureProxy.handed): solved once."""
     try:
-        blend_core(e0, at_end0, e1, at_end1, plane)
-        return None
+        checked = checked_call(blend_core, e0, at_end0, e1, at_end1, plane)
     except NoBlend:
-        return starting_length(e0, at_end0, e1, at_end1, plane)
+        return starting_length(e0, at_end0, e1, at_end1, plane, hand)
+    if hand is not None:
+        hand.append(checked)
+    return None
 
 
 def inflections(pieces):
@@ -661,7 +669,8 @@ class BlendProxy(FeatureProxy):
             check_bound_per_area(obj, "Tension")
         value = float(obj.Length) if obj.Mode == "length" else obj.Tension
         g2 = obj.Continuity == "G2"
-        r = blend_core(e1, obj.AtEnd1, e2, obj.AtEnd2, plane, obj.Mode, value, none_ok=g2)
+        r = self.handed(blend_core, e1, obj.AtEnd1, e2, obj.AtEnd2, plane, obj.Mode, value,
+                        none_ok=g2)
         curves = r["curves"]
         i, r["gone"], r["bound_moved"] = self._followed_solution(obj, curves, r["energies"])
         r["solution"] = i

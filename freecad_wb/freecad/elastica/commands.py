@@ -12,6 +12,7 @@ import FreeCAD as App
 import FreeCADGui as Gui
 
 from . import defaults, icon, library_problem
+from .kept import checked_call
 from .proxy import InputProblem, abort_transaction, save_note
 from .recording import _ref
 from .units import say
@@ -155,6 +156,16 @@ def _check_and_create(title, what, check, code, open_panel, wrong=message, prepa
         from . import taskpanels
         taskpanels.open_for(obj, created=True, note=note or "")
     return obj
+
+
+def _hand(checked):
+    """_create's ``prepare``: the check's outcome (kept.checked_call, the last in the list
+    ``checked``) handed to the new feature, whose first recompute takes it where it makes
+    the same call (FeatureProxy.handed): creation computes once."""
+    def prepare(obj):
+        if checked:
+            obj.Proxy.checked = checked[-1]
+    return prepare
 
 
 def _doc():
@@ -343,12 +354,13 @@ def blend_sources(sources, open_panel=True, picks=None, wrong=message):
             "(Edit > Copy, Paste)"):
         return None
 
-    opts = {}
+    opts, checked = {}, []
 
     def check():
         """The free batten (the default); where none joins the ends (good ends all the
         same), a length that gives blends (blend.starting_length): the feature is made
-        by it and its panel opens, where the designer changes it."""
+        by it and its panel opens, where the designer changes it. The blend solved is the
+        new feature's first recompute's (``checked``: handed)."""
         e1, e2 = global_element(*edges[0]), global_element(*edges[1])
         for (obj, sub), e in zip(edges, (e1, e2)):   # bad input: no feature, a message
             blend.check_open(e, f"{obj.Label}.{sub}")
@@ -358,7 +370,7 @@ def blend_sources(sources, open_panel=True, picks=None, wrong=message):
         plane = None
         if edges[0][0] == edges[1][0] and is_sketch(edges[0][0]):
             plane = edges[0][0].getGlobalPlacement()
-        start = blend.free_or_length(e1, a, e2, b, plane)
+        start = blend.free_or_length(e1, a, e2, b, plane, hand=checked)
         if start is None:
             return None
         opts.update(Mode="length", Length=start[0])
@@ -366,10 +378,11 @@ def blend_sources(sources, open_panel=True, picks=None, wrong=message):
 
     return _check_and_create(
         "Elastic blend", "blend", check,
-        lambda: "from freecad.elastica import blend as elastica_blend\n"
-        f"_blend = elastica_blend.make({_ref_doc(doc)}, ({_ref(edges[0][0])}, {edges[0][1]!r}), "
-        f"({_ref(edges[1][0])}, {edges[1][1]!r}){', ' + _kw(opts) if opts else ''})\n"
-        f"{_ref_doc(doc)}.recompute()", open_panel, wrong)
+        lambda: ("from freecad.elastica import blend as elastica_blend\n"
+                 f"_blend = elastica_blend.make({_ref_doc(doc)}, ({_ref(edges[0][0])}, "
+                 f"{edges[0][1]!r}), ({_ref(edges[1][0])}, {edges[1][1]!r})"
+                 f"{', ' + _kw(opts) if opts else ''})", f"{_ref_doc(doc)}.recompute()"),
+        open_panel, wrong, _hand(checked))
 
 
 class BlendCommand(_Command):
@@ -399,36 +412,38 @@ def spline_sources(sources, open_panel=True, wrong=message, **options):
     doc = _doc()
     if doc is None or not _in_active_document([o for o, _ in sources], doc, wrong):
         return None
-    opts = {"Tolerance": defaults()[0]}
+    opts, checked = {"Tolerance": defaults()[0]}, []
     opts.update(options)
 
     def check():
         """The free batten (the default); where none passes the points, a tension whose
         batten does not loop (spline.starting_tension): the feature is made at it and its
-        panel opens, where the designer changes it. A mode or tension given: as given."""
+        panel opens, where the designer changes it. A mode or tension given: as given. The
+        spline solved is the new feature's first recompute's (``checked``: handed)."""
         pts, plane = src_mod.gather_vertices(sources, spline.DUCKS_NEED, edge_means_object=True,
                                              curve_ordered=True)
         if "Closed" not in opts:
             opts["Closed"] = spline.ends_at_start(pts)     # the feature follows it after
         degree = opts.get("Degree", spline.BSPLINE_DEGREE)
         try:
-            spline.spline_core(pts, plane, opts.get("Mode", "tension"), opts.get("Tension", 0.0),
-                               opts.get("Length", 0.0), opts["Closed"], tol=opts["Tolerance"],
-                               degree=degree)
+            checked.append(checked_call(
+                spline.spline_core, pts, plane, opts.get("Mode", "tension"),
+                opts.get("Tension", 0.0), opts.get("Length", 0.0), opts["Closed"],
+                tol=opts["Tolerance"], degree=degree))
             return None
         except spline.NoSpline:
             if "Mode" in options or "Tension" in options:     # asked for: said as it is
                 raise
             tension, note = spline.starting_tension(pts, plane, opts["Closed"],
-                                                    opts["Tolerance"], degree)
+                                                    opts["Tolerance"], degree, hand=checked)
         opts["Tension"] = tension
         return note
 
     return _check_and_create(
         "Elastic spline", "elastic spline", check,
-        lambda: "from freecad.elastica import spline as elastica_spline\n"
-        f"_spline = elastica_spline.make({_ref_doc(doc)}, {_src(sources)}, {_kw(opts)})\n"
-        f"{_ref_doc(doc)}.recompute()", open_panel, wrong)
+        lambda: ("from freecad.elastica import spline as elastica_spline\n"
+                 f"_spline = elastica_spline.make({_ref_doc(doc)}, {_src(sources)}, {_kw(opts)})",
+                 f"{_ref_doc(doc)}.recompute()"), open_panel, wrong, _hand(checked))
 
 
 class SplineCommand(_Command):
@@ -452,17 +467,19 @@ def ellblend_sources(sources, open_panel=True, wrong=message, **options):
     opts = {"Mode": "interpolate", "K": 0.5, "KConvention": "modulus", "D": 2.0,
             "Tolerance": defaults()[0]}
     opts.update(options)
+    checked = []
 
     def check():
         pts, plane = src_mod.gather_vertices(sources)
-        ellblend.ellblend_core(pts, plane, opts["Mode"], opts["K"], opts["D"], opts["Tolerance"],
-                               opts["KConvention"], opts.get("Closed", False))
+        checked.append(checked_call(ellblend.ellblend_core, pts, plane, opts["Mode"], opts["K"],
+                                    opts["D"], opts["Tolerance"], opts["KConvention"],
+                                    opts.get("Closed", False)))
 
     return _check_and_create(
         "Elliptic blend curve", "elliptic blend", check,
-        "from freecad.elastica import ellblend as elastica_ellblend\n"
-        f"_ellblend = elastica_ellblend.make({_ref_doc(doc)}, {_src(sources)}, {_kw(opts)})\n"
-        f"{_ref_doc(doc)}.recompute()", open_panel, wrong)
+        ("from freecad.elastica import ellblend as elastica_ellblend\n"
+         f"_ellblend = elastica_ellblend.make({_ref_doc(doc)}, {_src(sources)}, {_kw(opts)})",
+         f"{_ref_doc(doc)}.recompute()"), open_panel, wrong, _hand(checked))
 
 
 class EllipticBlendCommand(_Command):
@@ -484,16 +501,17 @@ def g2quad_sources(sources, open_panel=True, wrong=message, **options):
         return None
     opts = {"Edges": 24}
     opts.update(options)
+    checked = []
 
     def check():
         edges, plane = src_mod.gather_edges(sources)
-        g2quad.g2quad_core(edges, plane, opts["Edges"])
+        checked.append(checked_call(g2quad.g2quad_core, edges, plane, opts["Edges"]))
 
     return _check_and_create(
         "G2 quadratic B-spline", "G2 quadratic B-spline", check,
-        "from freecad.elastica import g2quad as elastica_g2quad\n"
-        f"_g2 = elastica_g2quad.make({_ref_doc(doc)}, {_src(sources)}, {_kw(opts)})\n"
-        f"{_ref_doc(doc)}.recompute()", open_panel, wrong)
+        ("from freecad.elastica import g2quad as elastica_g2quad\n"
+         f"_g2 = elastica_g2quad.make({_ref_doc(doc)}, {_src(sources)}, {_kw(opts)})",
+         f"{_ref_doc(doc)}.recompute()"), open_panel, wrong, _hand(checked))
 
 
 class G2QuadCommand(_Command):

@@ -191,8 +191,8 @@ class EllipticBlendProxy(FeatureProxy):
         """ellblend_core's dict for the linked points; raises InputProblem."""
         element = followed_reader(obj, "Points")      # renames Points: read it after
         pts, plane = gather_vertices(obj.Points, link="Points", element=element)
-        return ellblend_core(pts, plane, obj.Mode, obj.K, obj.D, float(obj.Tolerance),
-                             obj.KConvention, obj.Closed)
+        return self.handed(ellblend_core, pts, plane, obj.Mode, obj.K, obj.D,
+                           float(obj.Tolerance), obj.KConvention, obj.Closed)
 
     def apply(self, obj, r):
         set_shape(obj, part_bspline(r["bspline"], r["placement"]).toShape())

@@ -146,7 +146,7 @@ class G2QuadProxy(FeatureProxy):
     def compute(self, obj):
         element = followed_reader(obj, "Source")      # renames Source: read it after
         edges, plane = gather_edges(obj.Source, link="Source", element=element)
-        return g2quad_core(edges, plane, obj.Edges)
+        return self.handed(g2quad_core, edges, plane, obj.Edges)
 
     def apply(self, obj, r):
         g, plc = r["result"], r["placement"]

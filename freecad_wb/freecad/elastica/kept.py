@@ -20,6 +20,7 @@ them with an older outcome): FeatureProxy.onChanged.
 from __future__ import annotations
 
 import hashlib
+import inspect
 import io
 import os
 import zipfile
@@ -117,4 +118,44 @@ def input_key(obj):
     return h.hexdigest()
 
 
-__all__ = ["input_key", "is_input", "NOT_INPUT"]
+def _edge_key(e):
+    """A Part edge by its geometry where it lies: its curve's type and description (Content,
+    in global coordinates: 6 digits), its range, orientation and its points at 9 parameters
+    of it, every bit. Not its BRep: one edge read twice (a command's global_element, a
+    feature's followed_edge) writes other nested locations."""
+    first, last = e.FirstParameter, e.LastParameter
+    at = [first + (last - first) * i / 8 for i in range(9)]
+    return (e.Curve.TypeId, e.Curve.Content, e.Orientation, repr(first), repr(last),
+            tuple(_stable(e.valueAt(u)) for u in at))
+
+
+def _comparable(value):
+    """``value`` as _stable, a Part shape by its edges' geometry (_edge_key), a numpy array
+    by its exact values."""
+    if hasattr(value, "Edges") and hasattr(value, "ShapeType"):
+        return ("shape", value.ShapeType, tuple(_edge_key(e) for e in value.Edges))
+    if hasattr(value, "tolist") and hasattr(value, "dtype"):
+        return ("array", repr(value.tolist()))
+    if isinstance(value, (list, tuple)):
+        return tuple(_comparable(v) for v in value)
+    return _stable(value)
+
+
+def call_key(core, *args, **kwargs):
+    """The call ``core(*args, **kwargs)`` as a comparable value: its arguments bound to its
+    signature, defaults filled (a default given or left out is one call)."""
+    bound = inspect.signature(core).bind(*args, **kwargs)
+    bound.apply_defaults()
+    return (core.__module__, core.__qualname__,
+            tuple((k, _comparable(v)) for k, v in bound.arguments.items()))
+
+
+def checked_call(core, *args, **kwargs):
+    """A command's check: ``(call_key, core(*args, **kwargs))``, handed to the feature it
+    creates (FeatureProxy.handed) so that its first recompute, making the same call, takes
+    the outcome instead of computing it again."""
+    key = call_key(core, *args, **kwargs)
+    return key, core(*args, **kwargs)
+
+
+__all__ = ["input_key", "is_input", "NOT_INPUT", "call_key", "checked_call"]

@@ -19,7 +19,7 @@ import FreeCAD as App
 
 from .containers import (add_containers, follow_containers, holder_placement, link_properties,
                          keep_in_place, moved_holder, remember_holder, restore_containers)
-from .kept import input_key, is_input
+from .kept import call_key, input_key, is_input
 from .units import exact_mark, mm_marked, say
 
 VERSION = 5             # of the proxies' saved state (3: lengths typed with units;
@@ -495,6 +495,16 @@ class FeatureProxy:
             return None
         self._kept = (input_key(obj), msg)
         return msg
+
+    def handed(self, core, *args, **kwargs):
+        """``core(*args, **kwargs)``, or the outcome a command's check handed to this new
+        feature (``checked``: kept.checked_call, set before its first recompute) where it is
+        of that very call: the command computed it to judge its input, so creation computes
+        once. Taken once: a later recompute computes."""
+        checked, self.checked = getattr(self, "checked", None), None
+        if checked is not None and checked[0] == call_key(core, *args, **kwargs):
+            return checked[1]
+        return core(*args, **kwargs)
 
     def setup(self, obj):
         pass

@@ -18,6 +18,7 @@ from . import defaults
 from .containers import set_shape
 from .geometry import (binding_module, edge_end, el, ends_meet, nearest_parameter, np, part_bspline,
                        plane_coordinates, plane_curvature, to_3d)
+from .kept import checked_call
 from .links import followed_edge, followed_reader
 from .units import (ceil_digits, coordinate_mark, floor_digits, length_mark, length_unit_mark,
                     reach_mark, say, tension_mark)
@@ -366,23 +367,27 @@ def seam_changes(shape, seams):
 TENSION_MULTIPLES = (1, 2, 5, 10, 20, 50, 100, 200, 500, 1000)
 
 
-def starting_tension(points, plane=None, closed=False, tol=1e-3, degree=BSPLINE_DEGREE):
+def starting_tension(points, plane=None, closed=False, tol=1e-3, degree=BSPLINE_DEGREE,
+                     hand=None):
     """A tension to start a spline by, where the free batten does not pass the points: the
     least of TENSION_MULTIPLES / P^2 (3 digits) whose batten does not loop. Returns
     (tension, note for the user: its figures marked, units.say); raises NoSpline when none
-    of them gives one."""
+    of them gives one. ``hand``: a list given its spline (kept.checked_call), for the
+    feature made at that tension (FeatureProxy.handed: computed once)."""
     pts = list(points) + (list(points[:1]) if closed else [])
     polygon = sum((b - a).Length for a, b in zip(pts, pts[1:]))
     for m in TENSION_MULTIPLES:
         tension = float(f"{m / polygon ** 2:.3g}")
         try:
-            r = spline_core(points, plane, "tension", tension, closed=closed, tol=tol,
-                            degree=degree)
+            checked = checked_call(spline_core, points, plane, "tension", tension,
+                                   closed=closed, tol=tol, degree=degree)
         except DoublesBack:
             raise
         except NoSpline:
             continue
-        if not r["spline"].loops:
+        if not checked[1]["spline"].loops:
+            if hand is not None:
+                hand.append(checked)
             return tension, (f"no free batten (tension 0) passes these points (it slides off "
                              f"its ducks): solved at Tension = {tension_mark(tension, polygon, 6)} "
                              f"instead ({m:g} / the {length_mark(polygon, 4)} polygon through "
@@ -508,8 +513,9 @@ class SplineProxy(FeatureProxy):
         if obj.Mode == "tension":
             check_bound_per_area(obj, "Tension")
         try:
-            r = spline_core(pts, plane, obj.Mode, obj.Tension, float(obj.Length), obj.Closed,
-                            *self.end_specs(obj), tol=float(obj.Tolerance), degree=obj.Degree)
+            r = self.handed(spline_core, pts, plane, obj.Mode, obj.Tension, float(obj.Length),
+                            obj.Closed, *self.end_specs(obj), tol=float(obj.Tolerance),
+                            degree=obj.Degree)
         except InputProblem as exc:
             if followed:
                 raise type(exc)(f"{followed}: {exc}") from None

@@ -283,12 +283,15 @@ class BlendPanel(Panel):
         ends (True), the reason on the warning line; False where the free batten exists
         (self.free) or the ends are bad (the solve says why)."""
         o = self.obj
-        self.free = False
+        self.free, hand = False, []
         try:
             e1, e2 = o.Proxy.ends(o)
-            start = B.free_or_length(e1, o.AtEnd1, e2, o.AtEnd2, o.Proxy.sketch_plane(o))
+            start = B.free_or_length(e1, o.AtEnd1, e2, o.AtEnd2, o.Proxy.sketch_plane(o),
+                                     hand=hand)
         except Exception:       # bad ends or none found: the feature's Status says it
             return False
+        if hand:                # solved here: the next recompute takes it (handed)
+            o.Proxy.checked = hand[-1]
         if start is None:
             self.free = True
             return False
