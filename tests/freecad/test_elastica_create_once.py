@@ -5,9 +5,10 @@ whose first recompute takes it (FeatureProxy.handed), as the Fit command's fit i
 G2 quadratic B-spline were computed twice at creation: in the command's check and at the
 feature's first recompute. The library's own functions are counted (the binding's, wrapped
 here), and the feature made so is compared with one recomputed afresh. The sketches are
-unplaced: a placed sketch's edge is read 1 ulp apart by the command (Part.getShape) and the
-feature (links.followed_elements: its geometry transformed), another input, computed again."""
+placed (S.SKETCH_PLACEMENT): the command reads a sketch's edge as its feature does
+(links.element_as_followed), not 1 ulp off through Part.getShape (computed again)."""
 import math
+import sys
 import unittest
 
 import FreeCAD as App
@@ -43,26 +44,24 @@ class CreateOnceTest(S.DocTest):
 
     def tearDown(self):
         FeatureProxy.execute = self.execute
-        for name, fn in self.wrapped:
-            setattr(el(), name, fn)
+        for owner, name, fn in self.wrapped:
+            setattr(owner, name, fn)
         super().tearDown()
 
     def _count(self, name):
         """Count the calls of the binding's el.<name> (the workbench calls el().<name>)."""
-        fn = getattr(el(), name)
-        self.wrapped.append((name, fn))
+        owner = el()                    # el.fit is the function: its module's (fit_core's)
+        owner = sys.modules["libelastica.fit"] if name == "fit" else owner
+        fn = getattr(owner, name)
+        self.wrapped.append((owner, name, fn))
 
         def spy(*args, **kwargs):
             self.calls.append(tuple(self.executing))      # in a feature's recompute
             return fn(*args, **kwargs)
-        setattr(el(), name, spy)
+        setattr(owner, name, spy)
 
     def _dots(self, name, pts):
-        sk = self.doc.addObject("Sketcher::SketchObject", name)
-        for x, y in pts:
-            sk.addGeometry(Part.Point(App.Vector(x, y, 0)), False)
-        self.doc.recompute()
-        return sk
+        return S.points_sketch(self.doc, pts, name)
 
     def _created_once(self, binding, make):
         """The feature ``make()`` creates: its creation calls el.<binding> as often as one
@@ -113,12 +112,20 @@ class CreateOnceTest(S.DocTest):
         self._created_once("blend_curve", lambda: C.ellblend_sources([(dots, [])], False))
 
     def test_g2_quadratic_is_computed_once(self):
-        sk = S.bspline_sketch(self.doc, PTS, "Curve", placement=App.Placement())
+        sk = S.bspline_sketch(self.doc, PTS, "Curve")
         self._created_once("g2_quadratic",
                            lambda: C.g2quad_sources([(sk, ["Edge1"])], False, Edges=51))
 
+    def test_fit_of_a_placed_sketch_edge_is_fitted_once(self):
+        """The Fit command's check is its feature's fit for a picked edge of a placed sketch
+        too (its sampled points were 1 ulp off the feature's: fitted twice)."""
+        sk = S.bspline_sketch(self.doc, PTS, "Curve")
+        self._created_once("fit", lambda: C.fit_sources([(sk, ["Edge1"])], False,
+                                                         Model="smooth"))
+
     def test_blend_is_solved_once(self):
         sk = self.doc.addObject("Sketcher::SketchObject", "Lines")
+        sk.Placement = S.SKETCH_PLACEMENT
         sk.addGeometry(Part.LineSegment(App.Vector(0, 0, 0), App.Vector(40, 0, 0)), False)
         sk.addGeometry(Part.LineSegment(App.Vector(80, 25, 0), App.Vector(120, 35, 0)), False)
         self.doc.recompute()
@@ -128,7 +135,7 @@ class CreateOnceTest(S.DocTest):
     def test_blend_at_its_starting_length_is_solved_once(self):
         """A line's end and an arc's no free batten joins: the command's search for a
         length ends in the blend the feature shows, not solved again."""
-        sk = S.line_and_arc_sketch(self.doc, placement=App.Placement())
+        sk = S.line_and_arc_sketch(self.doc)
         self._count("hermite")
         App.setActiveDocument(self.doc.Name)
         f = C.blend_sources([(sk, ["Edge1"]), (sk, ["Edge2"])], False)

@@ -13,6 +13,7 @@ import FreeCADGui as Gui
 
 from . import defaults, icon, library_problem
 from .kept import checked_call
+from .links import element_as_followed
 from .proxy import InputProblem, abort_transaction, save_note
 from .recording import _ref
 from .units import say
@@ -251,7 +252,8 @@ def fit_sources(sources, csv_file="", open_panel=True, wrong=message, **options)
         # the file read as the feature will read it (a Thousands option: its property)
         thousands = src_mod.THOUSANDS[opts.get("Thousands", "auto")]
         checked.append(fit_core.check_fit(
-            src_mod.gather_points(sources, csv_file, notes=notes, thousands=thousands), notes,
+            src_mod.gather_points(sources, csv_file, notes=notes, thousands=thousands,
+                                  element=element_as_followed), notes,
             **fit.core_options(opts)))
 
     def prepare(obj):
@@ -338,7 +340,7 @@ def blend_sources(sources, open_panel=True, picks=None, wrong=message):
     ``picks``: {(object name, subname): point clicked} (selection_picks): each edge is
     left at its end nearer the click (blend.chosen_ends); without: the nearest ends."""
     from . import blend
-    from .geometry import global_element, is_sketch
+    from .geometry import is_sketch
     doc = _doc()
     if doc is None:
         return None
@@ -361,7 +363,7 @@ def blend_sources(sources, open_panel=True, picks=None, wrong=message):
         same), a length that gives blends (blend.starting_length): the feature is made
         by it and its panel opens, where the designer changes it. The blend solved is the
         new feature's first recompute's (``checked``: handed)."""
-        e1, e2 = global_element(*edges[0]), global_element(*edges[1])
+        e1, e2 = element_as_followed(*edges[0]), element_as_followed(*edges[1])
         for (obj, sub), e in zip(edges, (e1, e2)):   # bad input: no feature, a message
             blend.check_open(e, f"{obj.Label}.{sub}")
         a, b = blend.chosen_ends(e1, e2, *((picks or {}).get((o.Name, sub))
@@ -421,7 +423,7 @@ def spline_sources(sources, open_panel=True, wrong=message, **options):
         panel opens, where the designer changes it. A mode or tension given: as given. The
         spline solved is the new feature's first recompute's (``checked``: handed)."""
         pts, plane = src_mod.gather_vertices(sources, spline.DUCKS_NEED, edge_means_object=True,
-                                             curve_ordered=True)
+                                             curve_ordered=True, element=element_as_followed)
         if "Closed" not in opts:
             opts["Closed"] = spline.ends_at_start(pts)     # the feature follows it after
         degree = opts.get("Degree", spline.BSPLINE_DEGREE)
@@ -470,7 +472,7 @@ def ellblend_sources(sources, open_panel=True, wrong=message, **options):
     checked = []
 
     def check():
-        pts, plane = src_mod.gather_vertices(sources)
+        pts, plane = src_mod.gather_vertices(sources, element=element_as_followed)
         checked.append(checked_call(ellblend.ellblend_core, pts, plane, opts["Mode"], opts["K"],
                                     opts["D"], opts["Tolerance"], opts["KConvention"],
                                     opts.get("Closed", False)))
@@ -504,7 +506,7 @@ def g2quad_sources(sources, open_panel=True, wrong=message, **options):
     checked = []
 
     def check():
-        edges, plane = src_mod.gather_edges(sources)
+        edges, plane = src_mod.gather_edges(sources, element=element_as_followed)
         checked.append(checked_call(g2quad.g2quad_core, edges, plane, opts["Edges"]))
 
     return _check_and_create(

@@ -276,6 +276,18 @@ def followed_edge(feature, prop):
     return followed_elements(feature, prop)[0]
 
 
+def element_as_followed(obj, name):
+    """The global sub-element ``name`` of ``obj`` as a feature linking it reads it
+    (followed_elements): a sketch's edge or vertex from its geometry (_element), else
+    global_element. A command's check reads its input so, bit for bit as the feature it makes
+    (Part.getShape's edge of a placed sketch lies 1 ulp off its geometry transformed): the
+    check's outcome is the feature's (FeatureProxy.handed, fit_core.fit_gathered)."""
+    at = sketch_geo_of_element(obj, name) if _followable(obj, name) else None
+    if at is None or not _drawn(obj, at[0]):
+        return global_element(obj, name)
+    return _element(obj, *at)
+
+
 def followed_reader(feature, prop):
     """For sources.gather_*: a function (obj, name) -> the global sub-element ``name`` of
     ``obj`` that the link ``prop`` follows (followed_elements, in the link's order); what the
