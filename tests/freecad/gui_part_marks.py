@@ -141,6 +141,34 @@ def csv_thousands_question(doc):
             and abs(fits[0].DataPoints[0].x - 1000.0) < 1e-9,
             f"Fit to CSV asks how '.' is meant and reads as answered ({said}, "
             f"{[(f.Thousands, f.Status[:60]) for f in fits]})")
+    # its panel shows and edits what a point file's fit has: the file and its Thousands
+    panel = T.CURRENT[0] if T.CURRENT else None
+    fit = fits[0] if fits else None
+    G.check(panel is not None and getattr(panel, "csv", None) is not None
+            and panel.csv.text() == path and panel.thousands.currentIndex() == 1
+            and panel.thousands.isEnabled(),
+            f"the CSV fit's panel shows its file and Thousands '.' "
+            f"({getattr(getattr(panel, 'csv', None), 'text', lambda: None)()!r})")
+    if panel is not None and getattr(panel, "thousands", None) is not None:
+        G.screenshot("gui_fit_csv_panel.png")
+        panel.thousands.setCurrentIndex(2)          # "'.' is decimal": 1.000 is 1
+        G.wait(800)
+        G.check(fit.Thousands == "none" and abs(fit.DataPoints[0].x - 1.0) < 1e-9
+                and not fit.Status.startswith("error"),
+                f"its Thousands row set to '.' is decimal reads 1.000 as 1 "
+                f"({fit.Thousands}, {fit.DataPoints[0].x if fit.DataPoints else None})")
+        fd, other = tempfile.mkstemp(suffix=".csv")
+        with os.fdopen(fd, "w") as fh:
+            fh.write("x,y\n" + "".join(f"{x + 500},{1 + 0.3 * math.sin(x):.4f}\n"
+                                       for x in range(12)))
+        panel.csv.setText(other)
+        panel.csv.editingFinished.emit()
+        G.wait(800)
+        G.check(fit.CsvFile == other and len(fit.DataPoints) == 12
+                and abs(fit.DataPoints[0].x - 500.0) < 1e-9,
+                f"a path typed in its Points file row is fitted ({fit.CsvFile}, "
+                f"{len(fit.DataPoints)} points)")
+        os.remove(other)
     if T.CURRENT:
         T.CURRENT[0].reject()
         G.wait(300)

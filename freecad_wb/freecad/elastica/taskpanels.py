@@ -17,6 +17,7 @@ from . import spline as Sp
 from .fit_core import DISTANCE_NAMES, DISTANCES, MODEL_NAMES, MODEL_TIPS, MODELS
 from .fit_ends import CONTINUITIES, CONTINUITY_NAMES
 from .geometry import is_sketch
+from .sources import THOUSANDS
 from .panelbase import CURRENT, Panel, _fmt, said_now
 from .units import area_text, figure_text, length_mark, length_unit, per_length, tension_unit
 
@@ -29,6 +30,8 @@ class FitPanel(Panel):
     def build(self):
         o = self.obj
         g = self.box("Fit elastica")
+        if o.CsvFile:                   # a point file's fit: the file and how it is read
+            self.csv_rows(g)
         self.model = self.choice(g, "Model", "Model", MODELS,
                                  [MODEL_NAMES[m] for m in MODELS],
                                  "Discrete: the Bobenko-Suris discrete elastica, one vertex per "
@@ -116,6 +119,53 @@ class FitPanel(Panel):
         out = self.box("Output")
         # not into a source sketch: writing there would feed the fit its own output
         self.output_rows(out, [s.Name for s, _ in o.Source], "(new sketch in the fit plane)")
+
+    def csv_rows(self, g):
+        """The point file (CsvFile: its path, '...' choosing another, as FreeCAD's own
+        Gui::FileChooser rows) and how '.' is read in it (Thousands, the question the Fit to
+        CSV command asks where the file does not show it)."""
+        o = self.obj
+        w = QtGui.QWidget()
+        line = QtGui.QHBoxLayout(w)
+        line.setContentsMargins(0, 0, 0, 0)
+        self.csv = QtGui.QLineEdit(o.CsvFile)
+        self.csv.setToolTip("The CSV / text file of x,y[,z] points (mm) fitted; read again at "
+                            "a recompute once it changed on disk")
+        self.csv.setCursorPosition(len(o.CsvFile))     # the file's name in sight
+        self.csv.editingFinished.connect(self.csv_typed)
+        pick = QtGui.QPushButton("...")
+        pick.setFixedWidth(pick.fontMetrics().width(" ... ") + 12)
+        pick.setToolTip("Choose another point file")
+        pick.clicked.connect(self.csv_pick)
+        line.addWidget(self.csv)
+        line.addWidget(pick)
+        self.row(g, "Points file", w, self.csv.toolTip())
+        self.thousands = self.choice(
+            g, "Thousands", "Thousands", list(THOUSANDS),
+            ["auto", "1.000 = 1000", "1.000 = 1"],
+            "How the file's '.' is meant: auto = as the file shows it (a ';' or tab separated "
+            "file of a decimal-comma locale: 1.250,5 groups by '.'); '.' groups thousands "
+            "(1.000 = 1000); '.' is a decimal point (1.000 = 1)",
+            tips=["as the file shows it (refused where it does not)",
+                  "'.' groups thousands (1.000 = 1000)", "'.' is a decimal point (1.000 = 1)"])
+
+    def csv_typed(self):
+        """The path typed: the file read from there; emptied: the file kept (a point file's
+        fit has no Source to fall back on)."""
+        text = self.csv.text().strip()
+        if not text:
+            self.csv.setText(self.obj.CsvFile)
+        elif text != self.obj.CsvFile:
+            self.set("CsvFile", text)
+
+    def csv_pick(self):
+        import os
+        path, _ = QtGui.QFileDialog.getOpenFileName(
+            Gui.getMainWindow(), "Points to fit", os.path.dirname(self.obj.CsvFile),
+            "Point files (*.csv *.txt *.xyz);;All (*)")
+        if path:
+            self.csv.setText(path)
+            self.csv_typed()
 
     def one_piece(self):
         return not self.obj.SplitAtInflection
