@@ -102,9 +102,54 @@ def own_edge(doc, fit):
     G.pump()
 
 
+def preference_tolerance():
+    """The preference page's tolerance box (a DecadeBox in mm), '3 deg' typed: as the task
+    panels' boxes, it stays as typed, red, why in its tooltip past focus-out (it went back
+    to '3 mm' silently), and OK (saveSettings) stores no tolerance from it, saying so in
+    the report view; '0.02 mm' typed over it is stored."""
+    import os
+    from freecad.elastica import PREF_PATH
+    from freecad.elastica.preferences import PreferencePage
+    p = App.ParamGet(PREF_PATH)
+    had = p.GetFloat("Tolerance", -1.0)
+    p.SetFloat("Tolerance", 0.005)
+    page = PreferencePage()
+    page.loadSettings()
+    page.form.show()
+    box = page.tol
+    G.type_into(box, "3 deg")
+    _leave(box)
+    G.check(box.text() == "3 deg" and _red(box) and "an angle" in box.lineEdit().toolTip(),
+            f"preferences: '3 deg' in the tolerance box stays after focus-out, red, why in "
+            f"its tooltip ({box.text()!r}, {box.lineEdit().toolTip()!r})")
+    page.form.grab().save(os.path.join(G.OUT, "gui_pref_wrong_unit.png"))
+    warned, warn = [], App.Console.PrintWarning
+    App.Console.PrintWarning = warned.append
+    try:
+        page.saveSettings()
+    finally:
+        App.Console.PrintWarning = warn
+    said = "".join(warned)
+    G.check(p.GetFloat("Tolerance") == 0.005 and "3 deg is an angle" in said
+            and "not saved" in said,
+            f"preferences: OK stores no tolerance from '3 deg' and says why "
+            f"({p.GetFloat('Tolerance')}, {said!r})")
+    G.type_into(box, "0.02 mm")
+    _leave(box)
+    page.saveSettings()
+    G.check(not _red(box) and p.GetFloat("Tolerance") == 0.02,
+            f"preferences: '0.02 mm' typed over it is stored ({p.GetFloat('Tolerance')})")
+    page.form.close()
+    if had < 0:
+        p.RemFloat("Tolerance")
+    else:
+        p.SetFloat("Tolerance", had)
+
+
 def run_all(smoke):
     global G
     G = smoke
     doc, fit = wrong_units()
     own_edge(doc, fit)
     App.closeDocument(doc.Name)
+    preference_tolerance()

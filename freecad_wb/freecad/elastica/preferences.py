@@ -19,6 +19,10 @@ class PreferencePage:
         self.tol = DecadeBox(1e-9, 1e3, 1e-3, "mm",
                              "Largest distance of a B-spline from its curve (mm); arrows step "
                              "by a factor of 10")
+        # a text the box cannot take ('3 deg') stays, red, why in its tooltip, past focus-out
+        # (Qt went back to its prefix's value silently), and is not saved (saveSettings), as
+        # the task panels refuse it (panelbase.Panel.watch_text)
+        self.tol.keep_bad_text = True
         layout.addRow("Default B-spline tolerance", self.tol)
         self.degree = QtGui.QSpinBox()
         self.degree.setRange(3, 7)
@@ -38,8 +42,17 @@ class PreferencePage:
         self.model.setCurrentIndex(MODELS.index(model))
 
     def saveSettings(self):
+        """Store the fields; a tolerance typed that the box cannot take is not stored (the
+        last stored stays), said in the report view: FreeCAD's preference dialog closes on
+        OK whatever a Python page holds."""
         p = App.ParamGet(PREF_PATH)
-        p.SetFloat("Tolerance", float(self.tol.value()))
+        why = self.tol.problem()
+        if why:
+            App.Console.PrintWarning(
+                f"Elastica preferences: Default B-spline tolerance: {why}: not saved, it stays "
+                f"{self.tol.textFromValue(defaults()[0])}\n")
+        else:
+            p.SetFloat("Tolerance", float(self.tol.value()))
         p.SetInt("Degree", int(self.degree.value()))
         p.SetString("Model", MODELS[self.model.currentIndex()])
 
