@@ -98,6 +98,14 @@ $(BUILD)/obj/abi.o: $(BUILD)/include/elastica_abi.h
 HOT_OBJ := $(addprefix $(BUILD)/obj/,hermite.o hermite_objective.o hermite_poly.o hermite_tension.o hermite_length.o \
              hermite_length_trace.o hermite_length_chart.o hermite_chain.o hermite_near.o hermite_lanes.o smooth.o ellint.o jacobi.o)
 $(HOT_OBJ): OPT_CFLAGS := -O3 -fno-math-errno -fno-trapping-math
+# hermite_lanes.c's four lanes (hermite_lanes_avx2.c) are AVX2 code, run only where the
+# processor has it (__builtin_cpu_supports): -mavx2 for that object alone, and no fused
+# multiply-add (no -mfma; -ffp-contract=off) so that each lane rounds as the scalar code.
+ifneq ($(filter x86_64%,$(shell $(CC) -dumpmachine)),)
+$(BUILD)/obj/hermite_lanes_avx2.o: OPT_CFLAGS := -O3 -fno-math-errno -fno-trapping-math -mavx2 -ffp-contract=off
+else
+$(BUILD)/obj/hermite_lanes_avx2.o: OPT_CFLAGS := -O3 -fno-math-errno -fno-trapping-math
+endif
 # The fit's hot path (its guess, objective, the discrete model's rows and their Jacobi
 # walk, the point-to-curve distances of its report) by the same flags: fewer instructions, the same results (issue 16;
 # every output of bench_fit.py's 504 curves compared bit for bit).

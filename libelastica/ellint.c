@@ -42,43 +42,10 @@ static double maxdev(double a, double x, double y, double z)
     return m > dz ? m : dz;
 }
 
-/* The series of DLMF 19.36.1 (R_F) and 19.36.2 (R_D) to seventh order, in the
- * deviations of the arguments from their means AF, AD after the duplications (kept
- * unscaled: 4^steps times Carlson's, f2 = 2^steps), plus the duplication sum of R_D,
- * num / den. (sqrt and division dominate the cost here: one division per mean.) Defined
- * for a type T, double and el_d2 (two lanes, el__carlson_fd2), with its square root: one
- * text of the coefficients, the same operations in each. */
-#define DEFINE_RF_SERIES(name, T, SQRT)                                                                       \
-    static T name(T AF0, T x0, T y0, T f2, T AF)                                                              \
-    {                                                                                                         \
-        const T iA = 1.0 / AF, X = (AF0 - x0) * iA, Y = (AF0 - y0) * iA, Z = -X - Y;                          \
-        const T E2 = X * Y - Z * Z, E3 = X * Y * Z;                                                           \
-        /* the coefficients' quotients are folded by the compiler: multiplications, not the                  \
-         * divisions (~4 cycles each, not pipelined) that dividing by them would cost */                      \
-        return (1.0 + E2 * (-1.0 / 10.0 + E2 * (1.0 / 24.0 - 5.0 / 208.0 * E2) +                              \
-                            E3 * (-3.0 / 44.0 + 1.0 / 16.0 * E2)) +                                           \
-                E3 * (1.0 / 14.0 + 3.0 / 104.0 * E3)) * (f2 * SQRT(iA));                                      \
-    }
-
-#define DEFINE_RD_SERIES(name, T, SQRT)                                                                       \
-    static T name(T AD0, T x0, T y0, T f2, T AD, T num, T den)                                                \
-    {                                                                                                         \
-        const T iA = 1.0 / AD, X = (AD0 - x0) * iA, Y = (AD0 - y0) * iA, Z = -(X + Y) / 3.0;                  \
-        const T XY = X * Y, Z2 = Z * Z;                                                                       \
-        const T E2 = XY - 6.0 * Z2, E3 = (3.0 * XY - 8.0 * Z2) * Z;                                           \
-        const T E4 = 3.0 * (XY - Z2) * Z2, E5 = XY * Z2 * Z;                                                  \
-        return iA * (f2 * SQRT(iA)) *                                                                         \
-                   (1.0 + E2 * (-3.0 / 14.0 + E2 * (9.0 / 88.0 - 1.0 / 16.0 * E2 + 45.0 / 272.0 * E3) +       \
-                                E3 * (-9.0 / 52.0) + E4 * (3.0 / 20.0) + E5 * (-9.0 / 68.0)) +                \
-                    E3 * (1.0 / 6.0 + E3 * (3.0 / 40.0) + E4 * (-9.0 / 68.0)) + E4 * (-3.0 / 22.0) +          \
-                    E5 * (3.0 / 26.0)) +                                                                      \
-               3.0 * num / den;                                                                               \
-    }
+#include "ellint_series.h"
 
 DEFINE_RF_SERIES(rf_series, double, sqrt)
 DEFINE_RD_SERIES(rd_series, double, sqrt)
-DEFINE_RF_SERIES(rf_series2, el_d2, el_d2_sqrt)
-DEFINE_RD_SERIES(rd_series2, el_d2, el_d2_sqrt)
 
 static int carlson_args_ok(double x, double y, double z)
 {
@@ -133,56 +100,8 @@ int el__carlson_fd(double x, double y, double z, double qs, double *rf, double *
     return (rf && !isfinite(*rf)) || !isfinite(*rd) ? EL_EDOM : EL_OK;
 }
 
-/* el__carlson_fd(x, y, 1, qs, ...) in both lanes at once (lanes.h), the same operations
- * lane by lane: the duplication loop runs until both lanes' tests stop it, a lane's values
- * frozen from its own stop on. Two evaluations' square roots and divisions side by side, in
- * one SSE2 operation each (one evaluation's chain of them is what el__carlson_fd costs, its
- * latency). A lane with bad arguments computes (1, 1, 1) and has ok = 0. */
-void el__carlson_fd2(el_d2 x, el_d2 y, double qs, el_d2 *rf, el_d2 *rd, el_m2 *ok)
-{
-    const el_d2 one = {1.0, 1.0};
-    el_m2 good = el_m2_and(el_m2_and(x >= 0.0, y >= 0.0), el_m2_and(x + y > 0.0, x + y + 1.0 <= DBL_MAX));  /* carlson_args_ok */
-    x = el_d2_sel(good, x, one);
-    y = el_d2_sel(good, y, one);
-    el_d2 z = one;
-    const el_d2 x0 = x, y0 = y, AF0 = (x + y + z) / 3.0, AD0 = (x + y + 3.0 * z) / 5.0;
-    /* maxdev */
-    const el_d2 fx = el_d2_abs(AF0 - x), fy = el_d2_abs(AF0 - y), fz = el_d2_abs(AF0 - z);
-    const el_d2 fm = el_d2_sel(fx > fy, fx, fy), dx = el_d2_abs(AD0 - x), dy = el_d2_abs(AD0 - y);
-    const el_d2 dz = el_d2_abs(AD0 - z), dm = el_d2_sel(dx > dy, dx, dy);
-    el_d2 QF = qs * 80.0 * el_d2_sel(fm > fz, fm, fz), QD = qs * 120.0 * el_d2_sel(dm > dz, dm, dz);
-    /* el__carlson_fd's EL_EDOM where the stopping test overflows: such a lane runs no step
-     * (0 < A) and is not ok; the other lane's steps and values are its own */
-    const el_m2 huge = el_m2_or(QF > DBL_MAX, QD > DBL_MAX);
-    if (el_m2_any(huge)) {
-        QF = el_d2_sel(huge, (el_d2){0.0, 0.0}, QF);
-        QD = el_d2_sel(huge, (el_d2){0.0, 0.0}, QD);
-        good = el_m2_andnot(huge, good);
-    }
-    el_d2 AF = AF0, AD = AD0, f2 = one, f4 = one, f8 = one, num = {0.0, 0.0}, den = one;
-    for (;;) {
-        const el_m2 act = el_m2_or(QF >= AF, QD >= AD);
-        if (!el_m2_any(act)) break;
-        const el_d2 sx = el_d2_sqrt(x), sy = el_d2_sqrt(y), sz = el_d2_sqrt(z);   /* sqrt(1) = 1 */
-        const el_d2 lam = sx * sy + sx * sz + sy * sz, d = f8 * (sz * (z + lam));
-        /* a stopped lane keeps what the series reads (AF, AD, f2, num, den: lam & act is +0
-         * there, and v + 0 = v for the positive sums); its x, y, z, f4, f8 run on unread */
-        const el_d2 lact = el_d2_and(lam, act);
-        num = el_d2_sel(act, num * d + f4 * den, num);
-        den = el_d2_sel(act, den * d, den);
-        AF = AF + lact;
-        AD = AD + lact;
-        x = x + lam;
-        y = y + lam;
-        z = z + lam;
-        f2 = f2 + el_d2_and(f2, act);   /* f2 * 2 exactly */
-        f4 = f4 * 0.25;
-        f8 = f8 * 0.125;
-    }
-    *rf = rf_series2(AF0, x0, y0, f2, AF);
-    *rd = rd_series2(AD0, x0, y0, f2, AD, num, den);
-    *ok = el_m2_and(good, el_m2_and(el_d2_finite(*rf), el_d2_finite(*rd)));
-}
+#define LANES_W 2
+#include "carlson_lanes.h"
 
 /* a0 = 1, b0 = k', c0 = k, a_{n+1} = (a_n + b_n)/2, b_{n+1} = sqrt(a_n b_n),
  * c_{n+1} = c_n^2 / (4 a_{n+1}) (no cancellation, unlike (a_n - b_n)/2): K = pi / (2 a_N)

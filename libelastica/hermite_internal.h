@@ -66,9 +66,13 @@ int el__hermite_shape_eval_to(const hprob *pr, double qs, double fine_below, hst
 /* f alone in the x chart: el__hermite_curvdata then el__hermite_shape_eval's st.f, the same
  * bits (test_hermite_tension.c); NAN and the status where they fail. */
 int el__hermite_x_objective(const hprob *pr, double x, int b, double qs, double *f);
-/* el__hermite_x_objective at the n abscissae x[0..n) (hermite_lanes.c), two at a time:
- * the same bits, NAN where it fails. */
+/* el__hermite_x_objective at the n abscissae x[0..n) (hermite_lanes.c), four at a time
+ * where the processor has AVX2, else two: the same bits, NAN where it fails. */
 void el__hermite_x_objectives(const hprob *pr, const double *x, int n, int b, double qs, double *f);
+/* The same two at a time (SSE2), and four at a time (AVX2: only where
+ * el__lanes4_available(), lanes.h) */
+void el__hermite_x_objectives2(const hprob *pr, const double *x, int n, int b, double qs, double *f);
+void el__hermite_x_objectives4(const hprob *pr, const double *x, int n, int b, double qs, double *f);
 /* A piece of a branch searched in the x chart (hermite_tension.c): its ends, the separatrix
  * crossings at them (NAN: none), its sample count ns (ns + 1 samples), its kind of curve
  * (CLASS_*). */

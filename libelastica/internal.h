@@ -68,7 +68,11 @@ void *el__realloc(void *p, size_t count, size_t per, size_t elem);
 /* Carlson's R_F(x, y, z) (when rf != NULL) and R_D(x, y, z) in one duplication loop
  * (ellint.c); x, y >= 0, not both 0, z > 0. qs = 1: double precision; qs < 1:
  * relative accuracy ~1e-16 qs^-8 (qs = 0.2: 4e-11), fewer duplication steps.
- * EL_EDOM on bad arguments. */
+ * EL_EDOM on bad arguments, and where R_D's duplication sum (num / den) overflows: its
+ * domain ends where the arguments spread over ~27 decades and more (measured at qs = 1:
+ * EL_EDOM from (1, 1, 2.4e27), (0, 7.7e29, 1), (2.7e68, 2.7e68, 1); at qs = 0.1 from
+ * (0, 2.8e34, 1)); the Hermite objective's arguments (x, y <= 1, z = 1) are inside it
+ * (checked for k'^2 down to 1e-300). */
 int el__carlson_fd(double x, double y, double z, double qs, double *rf, double *rd);
 /* The complete integrals K(k) and D(k) = int_0^(pi/2) sin^2 / sqrt(1 - k^2 sin^2) =
  * (K - E)/k^2 for 0 <= k < 1, given kc2 = 1 - k^2 formed without cancellation

@@ -100,4 +100,47 @@ static inline int el_m2_any(el_m2 m)
  * ok all ones where it gives EL_OK. */
 void el__carlson_fd2(el_d2 x, el_d2 y, double qs, el_d2 *rf, el_d2 *rd, el_m2 *ok);
 
+/* The four lanes (el_d4 below) are built on x86-64 (hermite_lanes_avx2.c, compiled with
+ * -mavx2) unless EL_NO_LANES4 is defined (then only the two, as on other processors), and
+ * run where el__lanes4_available(): the processor has AVX2 and the OS saves its registers. */
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__)) && !defined(EL_NO_LANES4)
+#define EL__LANES4 1
+#else
+#define EL__LANES4 0
+#endif
+int el__lanes4_available(void);
+/* el__carlson_fd4 on arrays of four (for the tests, which are not compiled for AVX2): ok[l]
+ * 1 where lane l is EL_OK; only where el__lanes4_available() */
+void el__carlson_fd4v(const double *x, const double *y, double qs, double *rf, double *rd, int *ok);
+
+#if defined(__AVX__)
+#include <immintrin.h>
+/* Four doubles side by side: the same operations in AVX's 256-bit registers, for the
+ * objects compiled with -mavx2 (hermite_lanes_avx2.c) and run only where the processor
+ * has it (el__lanes4_available). Without -mfma, and with -ffp-contract=off, no
+ * multiplication and addition are fused: each lane rounds as the scalar code does. */
+typedef double el_d4 __attribute__((vector_size(32)));
+typedef long long el_m4 __attribute__((vector_size(32)));
+
+/* a where m, else b (a blend by the mask's sign bits: a mask is all ones or zero) */
+static inline el_d4 el_d4_sel(el_m4 m, el_d4 a, el_d4 b)
+{
+    return (el_d4)_mm256_blendv_pd((__m256d)b, (__m256d)a, (__m256d)m);
+}
+static inline el_d4 el_d4_sqrt(el_d4 a) { return (el_d4)_mm256_sqrt_pd((__m256d)a); }
+static inline el_d4 el_d4_and(el_d4 a, el_m4 m) { return (el_d4)_mm256_and_pd((__m256d)a, (__m256d)m); }
+static inline el_d4 el_d4_abs(el_d4 a)
+{
+    return (el_d4)((el_m4)a & (el_m4){INT64_MAX, INT64_MAX, INT64_MAX, INT64_MAX});
+}
+static inline el_m4 el_d4_finite(el_d4 a) { return a - a == 0.0; }
+static inline el_m4 el_m4_or(el_m4 m, el_m4 n) { return (el_m4)_mm256_or_pd((__m256d)m, (__m256d)n); }
+static inline el_m4 el_m4_and(el_m4 m, el_m4 n) { return (el_m4)_mm256_and_pd((__m256d)m, (__m256d)n); }
+static inline el_m4 el_m4_andnot(el_m4 m, el_m4 n) { return (el_m4)_mm256_andnot_pd((__m256d)m, (__m256d)n); }
+static inline int el_m4_any(el_m4 m) { return _mm256_movemask_pd((__m256d)m) != 0; }
+
+/* el__carlson_fd2 in four lanes (hermite_lanes_avx2.c) */
+void el__carlson_fd4(el_d4 x, el_d4 y, double qs, el_d4 *rf, el_d4 *rd, el_m4 *ok);
+#endif
+
 #endif

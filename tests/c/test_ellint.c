@@ -121,6 +121,33 @@ START_TEST(carlson_fast_loop_is_plain_loop)
 }
 END_TEST
 
+/* a lane's arguments for the lane tests below: the objective's (cos^2, k'^2 + k^2 cos^2),
+ * wide, near 1 (few steps), bad or 0 beside a positive */
+static void carlson_lane_args(unsigned long long *stp, int t, double *x, double *y)
+{
+    /* (and 1e308 twice: their sum beyond DBL_MAX; one such value beside 0, where 80 times
+     * the deviation overflows, is carlson_returns_near_dbl_max's) */
+    static const double bad[] = {-1e-300, -1.0, 0.0, NAN, INFINITY, 1e308};
+    unsigned long long st = *stp;
+    const int kind = (int)test_uniform(&st, 0.0, 4.0);
+    if (kind == 0) {                    /* the objective's: cos^2, k'^2 + k^2 cos^2 */
+        const double c2 = test_uniform(&st, 0.0, 1.0), kc2 = pow(10.0, test_uniform(&st, -300.0, 0.0));
+        *x = t % 7 == 0 ? 0.0 : c2;
+        *y = kc2 + (1.0 - kc2) * *x;
+    } else if (kind == 1) {             /* wide */
+        *x = pow(10.0, test_uniform(&st, -300.0, 300.0));
+        *y = pow(10.0, test_uniform(&st, -300.0, 300.0));
+    } else if (kind == 2) {             /* near 1: few steps */
+        *x = 1.0 + test_uniform(&st, -1e-3, 1e-3);
+        *y = 1.0 + test_uniform(&st, -1e-3, 1e-3);
+    } else {                            /* bad, or 0 beside a positive */
+        const int i = (int)test_uniform(&st, 0.0, 5.0), j = (int)test_uniform(&st, 0.0, 5.0);
+        *x = t % 11 == 0 ? bad[5] : bad[i];
+        *y = t % 11 == 0 ? bad[5] : t % 3 ? bad[j] : test_uniform(&st, 0.0, 2.0);
+    }
+    *stp = st;
+}
+
 /* K = R_F(0, k'^2, 1), D = R_D(0, k'^2, 1) / 3 (DLMF 19.25.1), k from 0 to 1 - 1e-15. */
 /* el__carlson_fd2 (two argument pairs side by side, hermite_lanes.c's samples) against
  * el__carlson_fd lane by lane: the same bits, and ok where it gives EL_OK, over the
@@ -131,30 +158,10 @@ END_TEST
 START_TEST(carlson_two_lanes_equal_the_scalar)
 {
     unsigned long long st = 99;
-    /* (and 1e308 twice: their sum beyond DBL_MAX; one such value beside 0, where 80 times
-     * the deviation overflows, is carlson_returns_near_dbl_max's) */
-    static const double bad[] = {-1e-300, -1.0, 0.0, NAN, INFINITY, 1e308};
     long nok = 0, nbad = 0;
     for (int t = 0; t < 200000; t++) {
         double x[2], y[2];
-        for (int l = 0; l < 2; l++) {
-            const int kind = (int)test_uniform(&st, 0.0, 4.0);
-            if (kind == 0) {                    /* the objective's: cos^2, k'^2 + k^2 cos^2 */
-                const double c2 = test_uniform(&st, 0.0, 1.0), kc2 = pow(10.0, test_uniform(&st, -300.0, 0.0));
-                x[l] = t % 7 == 0 ? 0.0 : c2;
-                y[l] = kc2 + (1.0 - kc2) * x[l];
-            } else if (kind == 1) {             /* wide */
-                x[l] = pow(10.0, test_uniform(&st, -300.0, 300.0));
-                y[l] = pow(10.0, test_uniform(&st, -300.0, 300.0));
-            } else if (kind == 2) {             /* near 1: few steps */
-                x[l] = 1.0 + test_uniform(&st, -1e-3, 1e-3);
-                y[l] = 1.0 + test_uniform(&st, -1e-3, 1e-3);
-            } else {                            /* bad, or 0 beside a positive */
-                const int i = (int)test_uniform(&st, 0.0, 5.0), j = (int)test_uniform(&st, 0.0, 5.0);
-                x[l] = t % 11 == 0 ? bad[5] : bad[i];
-                y[l] = t % 11 == 0 ? bad[5] : t % 3 ? bad[j] : test_uniform(&st, 0.0, 2.0);
-            }
-        }
+        for (int l = 0; l < 2; l++) carlson_lane_args(&st, t, x + l, y + l);
         const double qs = t % 2 ? 1.0 : 0.1;
         el_d2 rf2, rd2;
         el_m2 ok2;
@@ -173,6 +180,42 @@ START_TEST(carlson_two_lanes_equal_the_scalar)
     ck_assert_msg(nok > 200000 && nbad > 100000, "%ld ok, %ld bad", nok, nbad);   /* both outcomes covered */
 }
 END_TEST
+
+#if EL__LANES4
+/* el__carlson_fd4 (hermite_lanes_avx2.c: four argument pairs in AVX2 lanes, where the
+ * processor has it) against el__carlson_fd lane by lane, as the two lanes above: the same
+ * bits, ok where it gives EL_OK, lanes stopping after different numbers of steps, bad
+ * arguments and those where the stopping test overflows beside good ones. */
+START_TEST(carlson_four_lanes_equal_the_scalar)
+{
+    if (!el__lanes4_available()) {   /* el__hermite_x_objectives keeps to two lanes there */
+        fprintf(stderr, "carlson_four_lanes_equal_the_scalar: no AVX2 on this processor, four lanes not run\n");
+        return;
+    }
+    unsigned long long st = 4444;
+    long nok = 0, nbad = 0;
+    for (int t = 0; t < 200000; t++) {
+        double x[4], y[4], rf4[4], rd4[4];
+        int ok4[4];
+        for (int l = 0; l < 4; l++) carlson_lane_args(&st, t, x + l, y + l);
+        if (t % 13 == 0) { x[t % 4] = 0.0; y[t % 4] = 1.7e308; }   /* 80 times the deviation overflows */
+        const double qs = t % 2 ? 1.0 : 0.1;
+        el__carlson_fd4v(x, y, qs, rf4, rd4, ok4);
+        for (int l = 0; l < 4; l++) {
+            double rf, rd;
+            const int rc = el__carlson_fd(x[l], y[l], 1.0, qs, &rf, &rd);
+            ck_assert_msg((rc == EL_OK) == ok4[l], "(%g, %g): status %d, ok %d", x[l], y[l], rc, ok4[l]);
+            if (rc) { nbad++; continue; }
+            ck_assert_msg(memcmp(&rf4[l], &rf, sizeof rf) == 0 && memcmp(&rd4[l], &rd, sizeof rd) == 0,
+                          "(%.17g, %.17g) qs %g: R_F %.17g / %.17g, R_D %.17g / %.17g", x[l], y[l], qs, rf4[l], rf,
+                          rd4[l], rd);
+            nok++;
+        }
+    }
+    ck_assert_msg(nok > 400000 && nbad > 200000, "%ld ok, %ld bad", nok, nbad);   /* both outcomes covered */
+}
+END_TEST
+#endif
 
 START_TEST(complete_integrals_match_gsl)
 {
@@ -299,6 +342,9 @@ int main(void)
     tcase_add_test(tc, carlson_matches_gsl);
     tcase_add_test(tc, carlson_fast_loop_is_plain_loop);
     tcase_add_test(tc, carlson_two_lanes_equal_the_scalar);
+#if EL__LANES4
+    tcase_add_test(tc, carlson_four_lanes_equal_the_scalar);
+#endif
     tcase_add_test(tc, complete_integrals_match_gsl);
     tcase_add_test(tc, carlson_rejects_bad_arguments);
     suite_add_tcase(s, tc);

@@ -7,6 +7,7 @@
  * its 1027 scanned solutions were missing with that form). */
 #include "testutil.h"
 #include "hermite_internal.h"
+#include "lanes.h"
 #include "hermite_scan.h"
 #include <float.h>
 #include <gsl/gsl_errno.h>
@@ -635,15 +636,19 @@ START_TEST(x_objective_and_class_equal_the_plain_evaluation)
 }
 END_TEST
 
-/* el__hermite_x_objectives (hermite_lanes.c: the bracketing samples two at a time) against
+/* el__hermite_x_objectives (hermite_lanes.c: the bracketing samples four at a time where
+ * the processor has AVX2, else two), and each width by itself, against
  * el__hermite_x_objective one by one: the same bits (NAN where it fails), at the coarse
  * and the full precision, on every branch of the six families' problems (cases 1, 2 and
- * 3), on runs of 1 to 9 abscissae across [-1.1 B, 1.1 B]: pairs of two inflectional, two
- * non-inflectional, mixed (left to the scalar evaluation) and failing lanes, odd counts. */
+ * 3), on runs of 1 to 13 abscissae across [-1.1 B, 1.1 B]: groups of inflectional,
+ * non-inflectional, mixed (left to the narrower evaluation) and failing lanes, short last
+ * groups. */
 START_TEST(x_objectives_equal_the_scalar_objective)
 {
     unsigned long long st = 1701;
-    long nsame = 0, nfail = 0, ninfl = 0, nnon = 0;
+    long nsame = 0, nfail = 0, ninfl = 0, nnon = 0, nwidth[3] = {0, 0, 0};
+    const int four = EL__LANES4 && el__lanes4_available();
+    if (!four) fprintf(stderr, "x_objectives_equal_the_scalar_objective: four lanes not run (no AVX2 here, or built without)\n");
     for (int family = 0; family < 6; family++)
         for (int t = 0; t < 60; t++) {
             double p1[2], t1[2], sigma;
@@ -656,12 +661,20 @@ START_TEST(x_objectives_equal_the_scalar_objective)
             if (el__hermite_kappa_bound(pr.sigma, pr.Lmin, &pr.B) || pr.B < 0.0) continue;
             for (int b = 0; b < 4; b++)
                 for (int r = 0; r < 60; r++) {
-                    double x[9], f[9];
-                    const int n = 1 + (int)test_uniform(&st, 0.0, 9.0);
+                    double x[13], f[13];
+                    const int n = 1 + (int)test_uniform(&st, 0.0, 13.0);
                     const double c = pr.B * test_uniform(&st, -1.1, 1.1), w = pr.B * pow(10.0, test_uniform(&st, -6.0, 0.0));
                     for (int i = 0; i < n; i++) x[i] = c + w * test_uniform(&st, -1.0, 1.0);
                     const double qs = r % 2 ? 1.0 : 0.1;
-                    el__hermite_x_objectives(&pr, x, n, b, qs, f);
+                    /* the dispatch, then two lanes, then four (where they run) */
+                    const int width = r % 3 == 0 ? 0 : r % 3 == 1 ? 2 : 4;
+                    if (width == 0) el__hermite_x_objectives(&pr, x, n, b, qs, f);
+                    else if (width == 2) el__hermite_x_objectives2(&pr, x, n, b, qs, f);
+#if EL__LANES4
+                    else if (four) el__hermite_x_objectives4(&pr, x, n, b, qs, f);
+#endif
+                    else continue;
+                    nwidth[width / 2]++;
                     for (int i = 0; i < n; i++) {
                         double g;
                         hstate hs;
@@ -675,6 +688,7 @@ START_TEST(x_objectives_equal_the_scalar_objective)
                 }
         }
     ck_assert(nsame > 100000 && nfail > 10000 && ninfl > 10000 && nnon > 10000);   /* every outcome covered */
+    ck_assert(nwidth[0] > 10000 && nwidth[1] > 10000 && (!four || nwidth[2] > 10000));
 }
 END_TEST
 
