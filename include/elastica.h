@@ -1213,7 +1213,15 @@ typedef struct el_spline_result {
                               spline_stable.c): it slides off its ducks at span slide_span (from
                               point slide_span to slide_span + 1, counted from 0: the span whose
                               length grows most along that mode); 0 otherwise */
-    size_t slide_span;
+    size_t slide_span;     /* also where unstable: the span moving most along that mode */
+    int unstable;          /* EL_OK, tension > 0 or length mode, open without G2 ends: 1 where
+                              the spline returned is an equilibrium but no minimum of integral
+                              kappa^2 + sigma ds with its ducks held (by length: under its
+                              length; spline_stable.c): a batten bent so would snap to another
+                              shape (QA19 W2's 5 ducks turning 170 deg at sigma 1e-4 .. 0.05).
+                              Returned as found (fair, G2 through the ducks), only flagged.
+                              0: a minimum, or not judged (closed, G2 ends, a circle piece
+                              |k| >= 1e3 at sigma = kappa^2; tension 0: slides above) */
 } el_spline_result;
 
 /* Defaults: tension mode, sigma 0, open, natural ends, tol 1e-10, max_iter 60, max_steps 60. */
@@ -1326,7 +1334,7 @@ void el_spline_options_defaults(el_spline_options *opt);
  * 1 on the mean chord, the first that converges fair) down to sigma, through its folds,
  * and of those found the one that follows its ducks is kept, then the least
  * integral kappa^2 + sigma ds (the functional the equations make stationary; QA's spike
- * ducks at sigma 1.25: a figure eight, now the batten); where none follows its ducks,
+ * ducks at sigma 1.25: a figure eight, now the batten, itself no minimum: unstable); where none follows its ducks,
  * loops says so (spline_fair.c); at sigma h^2 <= 40 on the mean chord first from tension
  * mode's fair solutions at 0.9, 1.1, 0.75, 1.3 x sigma, by continuation in sigma (spline_path.c
  * NEIGHBOURS: QA's ring77 looped at sigma h^2 95 .. 120 on its longest side and reached

@@ -371,6 +371,12 @@ int el__spline_solve_buckled(el__spchain *w, int max_steps, double dir, double L
 /* Ducks near the line of direction dir (every chord advancing along it), length Lt: the
  * buckled batten of the ducks projected onto it, moved to the ducks (spline_path.c). */
 int el__spline_solve_near_line(el__spchain *w, int max_steps, double dir, double Lt);
+/* spline_buckle.c: the points collinear, in order along their line, with ends that allow the
+ * straight line (*dir its direction; G2 ends as clamped); the points near the line through
+ * the first and the last (spline_buckle.c's NEAR_LINE), each chord advancing along it,
+ * clamped ends near it, no G2 end. 1 or 0. */
+int el__spline_straight_line(const double *xy, size_t n, const el_spline_options *o, double *dir);
+int el__spline_near_line(const double *xy, size_t n, const el_spline_options *o, double *dir);
 
 /* spline_limit.c: where tension mode failed at sigma h^2 >= EL__SP_STIFF_SH2 on the
  * longest span h (user units: the solve's, el_spline_solve), the largest tension (user
@@ -390,6 +396,17 @@ void el__spline_hessian(el__spchain *w);
  * chain with its Jacobians unless they are current (el__chain_jac_current); its Newton work
  * arrays used. */
 int el__spline_unstable(el__spchain *w, size_t *span);
+/* The same for any solved open chain without guide ducks, in tension mode (held 0: H's
+ * negative count) or with its total length held (held 1: under that constraint, sigma the
+ * chain's multiplier; spline_stable.c's file comment), whatever its lmode; *span from H's
+ * least eigenvalue's vector. */
+int el__spline_unstable_as(el__spchain *w, int held, size_t *span);
+/* el__spline_unstable_as of the result res made from w (spline.c's make_result, the unit S),
+ * res's pieces loaded into w first where w holds another chain (w used up). */
+int el__spline_unstable_result(el__spchain *w, const el_spline_result *res, double S, int held, size_t *span);
+/* spline.c: 1 for a circle piece, or one near it resolved to more than tol (|k| >= 1e3, or
+ * el_smooth_eval's bound past tol of its length: make_result's rule) */
+int el__spline_circle_piece(const el_smooth_params *p, double tol);
 /* spline_buckle.c: the number of negative eigenvalues of T - shift I, T symmetric
  * tridiagonal on rows i0..i1 (diagonal dg, off-diagonal up[i] = T[i][i + 1]) */
 int el__tridiag_negatives(const double *dg, const double *up, size_t i0, size_t i1, double shift);

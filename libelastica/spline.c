@@ -13,7 +13,8 @@
  *   spline_guide.c  G2 ends: the guide ducks (why, and where);
  *   spline_piece.c  one piece: residuals, Jacobians, its state, its start;
  *   spline_fair.c   does the spline follow its ducks (no self-crossing).
- *   spline_stable.c is the free batten a minimum (its second variation at the knots).
+ *   spline_stable.c is the spline a minimum (its second variation at the knots): free,
+ *                   by tension, by length.
  *
  * Forces (seed 004 (9)-(10)): for the Lagrangian integral kappa^2 + sigma ds
  * with the constraint gamma' = T, the multiplier F_EL satisfies
@@ -84,54 +85,6 @@ static int check_options(const el_spline_options *o)
     return EL_OK;
 }
 
-/* Collinear points in order along the line, with ends that allow the straight
- * line (G2 ends as clamped: the sibling's, el_spline_solve). */
-static int straight_line(const double *xy, size_t n, const el_spline_options *o, double *dir)
-{
-    if (o->closed) return 0;
-    const double dx = xy[2 * n - 2] - xy[0], dy = xy[2 * n - 1] - xy[1], D = hypot(dx, dy);
-    if (!(D > 0.0)) return 0;
-    const double ux = dx / D, uy = dy / D;
-    for (size_t i = 0; i + 1 < n; i++) {
-        const double ax = xy[2 * i + 2] - xy[2 * i], ay = xy[2 * i + 3] - xy[2 * i + 1];
-        const double h = hypot(ax, ay);
-        if (fabs(ux * ay - uy * ax) > 1e-14 * h || ux * ax + uy * ay <= 0.0) return 0;
-    }
-    const el_spline_end *e[2] = {&o->start, &o->end};
-    for (int i = 0; i < 2; i++) {
-        if (e[i]->kind == EL_SPLINE_NATURAL) continue;
-        const double tn = hypot(e[i]->tangent[0], e[i]->tangent[1]);
-        const double tx = e[i]->tangent[0] / tn, ty = e[i]->tangent[1] / tn;
-        if (fabs(ux * ty - uy * tx) > 1e-14 || ux * tx + uy * ty <= 0.0) return 0;
-    }
-    dir[0] = atan2(uy, ux);
-    return 1;
-}
-
-/* Points near the line through the first and the last (dir: its direction): each within
- * NEAR_LINE of their distance from it, each chord advancing along it, clamped ends within
- * NEAR_LINE rad of it (not G2: their guide ducks are placed on a solved sibling) */
-#define NEAR_LINE 0.05
-static int near_line(const double *xy, size_t n, const el_spline_options *o, double *dir)
-{
-    if (o->closed || n < 3 || o->start.kind == EL_SPLINE_G2 || o->end.kind == EL_SPLINE_G2) return 0;
-    const double dx = xy[2 * n - 2] - xy[0], dy = xy[2 * n - 1] - xy[1], D = hypot(dx, dy);
-    if (!(D > 0.0)) return 0;
-    const double ux = dx / D, uy = dy / D;
-    for (size_t i = 0; i + 1 < n; i++) {
-        const double ax = xy[2 * i + 2] - xy[2 * i], ay = xy[2 * i + 3] - xy[2 * i + 1];
-        const double off = ux * (xy[2 * i + 3] - xy[1]) - uy * (xy[2 * i + 2] - xy[0]);
-        if (!(fabs(off) <= NEAR_LINE * D) || !(ux * ax + uy * ay > 0.0)) return 0;
-    }
-    const el_spline_end *e[2] = {&o->start, &o->end};
-    for (int i = 0; i < 2; i++)
-        if (e[i]->kind == EL_SPLINE_TANGENT &&
-            !(fabs(el__wrap_pi(atan2(e[i]->tangent[1], e[i]->tangent[0]) - atan2(uy, ux))) <= NEAR_LINE))
-            return 0;
-    *dir = atan2(uy, ux);
-    return 1;
-}
-
 /* max |kappa| on a piece: the ends, or 2|k| sqrt(mu) if u passes a maximum of
  * |cn|: u = 2 j K(k) (|k| < 1), |k| u = 2 j K(1/|k|) (|k| > 1); Kq = K(min(|k|, 1/|k|)). */
 static double piece_max_curvature(const el_smooth_params *p, double Kq, double k0, double k1)
@@ -152,7 +105,7 @@ static double piece_max_curvature(const el_smooth_params *p, double Kq, double k
  * ~128 eps k^2 per radian of turning. Without the second test ducks on a unit circle
  * were accepted at sigma = 1 + 1e-8 (|k| 5000, residual 2e-8) but refused at
  * sigma = 1 + 1e-6 (|k| ~ 700, residual 3.7e-10 > tol 1e-10). */
-static int circle_piece(const el_smooth_params *p, double tol)
+int el__spline_circle_piece(const el_smooth_params *p, double tol)
 {
     if (fabs(p->k) >= 1e3) return 1;
     const double w = sqrt(p->mu), umax = fmax(fabs(p->q), fabs(p->q + w * p->length));
@@ -265,7 +218,7 @@ static int make_result(const el__spchain *w, const double *xy, size_t npoints, d
         const double rp = hypot(pt[2] - e[0], pt[3] - e[1]) / h;
         const double kmax = piece_max_curvature(p, pc->Kq, ka[0], ka[1]);
         /* a circle piece is judged by the circle rule alone */
-        const int circle = circle_piece(p, tol);
+        const int circle = el__spline_circle_piece(p, tol);
         bnd[j] = circle ? 0.0 : el__spline_separatrix_bound(p, th, kmax, h);
         if (bnd[j] > tol) *sep = fmax(*sep, bnd[j]);
         unres[j] = circle || bnd[j] > tol;
@@ -402,7 +355,7 @@ static int solve_sibling(el__spchain *w, const double *xy, size_t n, const el_sp
     const int lmode = w->lmode;
     double dir;
     *straight = 0;
-    if (straight_line(xy, n, opt, &dir) && (!lmode || opt->length <= Lp * (1.0 + 1e-14))) {
+    if (el__spline_straight_line(xy, n, opt, &dir) && (!lmode || opt->length <= Lp * (1.0 + 1e-14))) {
         for (size_t i = 0; i < n; i++) if (w->slot[i] == EL__SLOT_ANGLE) w->x[i] = dir;
         for (size_t j = 0; j < w->m; j++) {
             el__spiece *pc = &w->pc[j];
@@ -420,9 +373,9 @@ static int solve_sibling(el__spchain *w, const double *xy, size_t n, const el_sp
         w->neighbours = 0;
         return st;
     }
-    if (straight_line(xy, n, opt, &dir))   /* longer than the line */
+    if (el__spline_straight_line(xy, n, opt, &dir))   /* longer than the line */
         return el__spline_solve_buckled(w, opt->max_steps, dir, Lp / S, opt->length / S, 0);
-    const int st = near_line(xy, n, opt, &dir)   /* buckled near it, or from the free batten */
+    const int st = el__spline_near_line(xy, n, opt, &dir)   /* buckled near it, or from the free batten */
                        ? el__spline_solve_near_line(w, opt->max_steps, dir, opt->length / S)
                        : el__spline_solve_length(w, opt->max_steps, opt->length / S);
     /* neither reached the length: from the tension solutions that bracket it (spline_bracket.c) */
@@ -722,8 +675,8 @@ static int solve_paths(const double *xy, size_t n, const el_spline_options *opt,
          * el_smooth_params resolves (header); the latter within their bound */
         st = accepted(res, opt->tol, other, sep);
         /* the free batten found is no minimum: it slides off its ducks (spline_stable.c;
-         * QA19: 5 ducks turning 163-172 deg, one negative eigenvalue each); a chain solved for
-         * its length (length mode) is passed over there */
+         * QA19: 5 ducks turning 163-172 deg, one negative eigenvalue each); by tension > 0 or
+         * length: returned, res->unstable saying so (below) */
         if (!st && opt->sigma == 0.0 && sol == &w) {
             size_t span;
             if (el__spline_unstable(&w, &span) > 0) {
@@ -753,6 +706,8 @@ static int solve_paths(const double *xy, size_t n, const el_spline_options *opt,
                 st = st0;   /* the crossing one, res->loops saying so */
             }
         }
+        if (!st && sol == &w && (lmode || opt->sigma > 0.0))
+            res->unstable = el__spline_unstable_result(&w, res, S, lmode, &res->slide_span) > 0;
         goto done;
     }
     /* no solution found: for sigma = 0 the free-sliding batten slides off its ducks; a

@@ -1,8 +1,9 @@
 /*
  * The buckled batten (spline.c, spline_path.c): collinear ducks pushed longer than their
  * line (el__spline_solve_buckled: its first mode, followed in length) and ducks near a
- * line (el__spline_solve_near_line). Split from spline_path.c, whose continuation
- * (el__spline_continuation) it uses.
+ * line (el__spline_solve_near_line), and which ducks those are (el__spline_straight_line,
+ * el__spline_near_line: moved unchanged from spline.c). Split from spline_path.c, whose
+ * continuation (el__spline_continuation) it uses.
  */
 #include "internal.h"
 #include <stdlib.h>
@@ -287,4 +288,54 @@ int el__spline_solve_near_line(el__spchain *w, int max_steps, double dir, double
     }
     free(par);
     return st;
+}
+
+/* ------------------------------------------------------------------ which ducks (moved from spline.c) */
+
+/* Collinear points in order along the line, with ends that allow the straight
+ * line (G2 ends as clamped: the sibling's, el_spline_solve). */
+int el__spline_straight_line(const double *xy, size_t n, const el_spline_options *o, double *dir)
+{
+    if (o->closed) return 0;
+    const double dx = xy[2 * n - 2] - xy[0], dy = xy[2 * n - 1] - xy[1], D = hypot(dx, dy);
+    if (!(D > 0.0)) return 0;
+    const double ux = dx / D, uy = dy / D;
+    for (size_t i = 0; i + 1 < n; i++) {
+        const double ax = xy[2 * i + 2] - xy[2 * i], ay = xy[2 * i + 3] - xy[2 * i + 1];
+        const double h = hypot(ax, ay);
+        if (fabs(ux * ay - uy * ax) > 1e-14 * h || ux * ax + uy * ay <= 0.0) return 0;
+    }
+    const el_spline_end *e[2] = {&o->start, &o->end};
+    for (int i = 0; i < 2; i++) {
+        if (e[i]->kind == EL_SPLINE_NATURAL) continue;
+        const double tn = hypot(e[i]->tangent[0], e[i]->tangent[1]);
+        const double tx = e[i]->tangent[0] / tn, ty = e[i]->tangent[1] / tn;
+        if (fabs(ux * ty - uy * tx) > 1e-14 || ux * tx + uy * ty <= 0.0) return 0;
+    }
+    dir[0] = atan2(uy, ux);
+    return 1;
+}
+
+/* Points near the line through the first and the last (dir: its direction): each within
+ * NEAR_LINE of their distance from it, each chord advancing along it, clamped ends within
+ * NEAR_LINE rad of it (not G2: their guide ducks are placed on a solved sibling) */
+#define NEAR_LINE 0.05
+int el__spline_near_line(const double *xy, size_t n, const el_spline_options *o, double *dir)
+{
+    if (o->closed || n < 3 || o->start.kind == EL_SPLINE_G2 || o->end.kind == EL_SPLINE_G2) return 0;
+    const double dx = xy[2 * n - 2] - xy[0], dy = xy[2 * n - 1] - xy[1], D = hypot(dx, dy);
+    if (!(D > 0.0)) return 0;
+    const double ux = dx / D, uy = dy / D;
+    for (size_t i = 0; i + 1 < n; i++) {
+        const double ax = xy[2 * i + 2] - xy[2 * i], ay = xy[2 * i + 3] - xy[2 * i + 1];
+        const double off = ux * (xy[2 * i + 3] - xy[1]) - uy * (xy[2 * i + 2] - xy[0]);
+        if (!(fabs(off) <= NEAR_LINE * D) || !(ux * ax + uy * ay > 0.0)) return 0;
+    }
+    const el_spline_end *e[2] = {&o->start, &o->end};
+    for (int i = 0; i < 2; i++)
+        if (e[i]->kind == EL_SPLINE_TANGENT &&
+            !(fabs(el__wrap_pi(atan2(e[i]->tangent[1], e[i]->tangent[0]) - atan2(uy, ux))) <= NEAR_LINE))
+            return 0;
+    *dir = atan2(uy, ux);
+    return 1;
 }

@@ -447,6 +447,7 @@ def cmd_spline(args) -> int:
             t if k is None else {"tangent": t, "curvature": _finite(k, f"--{name}-curvature")})
     with warnings.catch_warnings():   # said below, in the CLI's words
         warnings.simplefilter("ignore", el.LoopWarning)
+        warnings.simplefilter("ignore", el.UnstableWarning)
         sp = el.elastic_spline(pts, **kw, start=ends["start"], end=ends["end"], closed=args.closed)
     if sp.loops:
         fix = (f"at tension {sp.tension:.6g}: give a larger --tension or a --length"
@@ -455,6 +456,14 @@ def cmd_spline(args) -> int:
         print(f"warning: the spline loops away from its ducks (crosses itself where their "
               f"polygon does not, or is longer than 4 x it: length {sp.length:.6g}); no fair "
               f"batten was found {fix}", file=sys.stderr)
+    if sp.unstable:
+        j = sp.unstable_span
+        fix = (f"give a larger --tension than {sp.tension:.6g}" if args.length is None else
+               f"try another --length than {args.length:g}, or a --tension")
+        print(f"warning: the spline is an unstable equilibrium (tension {sp.tension:.6g}): it "
+              "passes every point and is fair to draw, but a real batten bent so would not stay, "
+              f"it would snap to another shape (moving most between points {j} and {j + 1}, "
+              f"counted from 0); for a shape a batten holds, {fix}", file=sys.stderr)
     need_b = args.dxf or args.bspline_tol is not None
     b = None
     if need_b:
@@ -463,6 +472,7 @@ def cmd_spline(args) -> int:
     rec = {"file": args.file, "points": sp.data.tolist(), "closed": sp.closed, **kw,
            "tension": sp.tension, "length": sp.length, "energy": sp.energy,
            "max_curvature": sp.max_curvature, "residual": sp.residual, "loops": sp.loops,
+           "unstable": sp.unstable,
            "pieces": [curve_to_dict(c) for c in sp.pieces], "guides": sp.guides.tolist(),
            "guide_forces": sp.guide_forces.tolist(), "guide_pieces": sp.guide_pieces,
            "forces": sp.forces.tolist(), "angles_rad": sp.angles.tolist(),

@@ -18,8 +18,8 @@ from ._values import ValueEquality
 from .bspline import smooth_chain_to_bspline
 from .core import SMOOTH_PARAMS, SmoothElastica, arc_lengths, chain_eval, chain_starts
 
-__all__ = ["DoublesBackError", "ElasticSpline", "LoopWarning", "SeamWarning", "back_steps",
-           "elastic_spline"]
+__all__ = ["DoublesBackError", "ElasticSpline", "LoopWarning", "SeamWarning", "UnstableWarning",
+           "back_steps", "elastic_spline"]
 
 # A back-step (back_steps) shorter than this fraction of the points' extent is below any
 # feature a batten through them is drawn to: every back-step of the splines the tests and
@@ -60,6 +60,15 @@ class LoopWarning(RuntimeWarning):
     or a length, gives one."""
 
 
+class UnstableWarning(RuntimeWarning):
+    """:func:`elastic_spline`'s warning that the spline returned (by a tension > 0, or by
+    length) is an equilibrium but no minimum of its energy with the ducks held
+    (``ElasticSpline.unstable``; elastica.h's el_spline_result.unstable): it passes every
+    duck G2 and is fair to draw, but a real batten bent so would not stay: it would snap
+    to another shape. A larger tension, or another length, gives a batten that holds.
+    At tension 0 such a batten is refused instead (it slides off its ducks)."""
+
+
 class ElasticSpline(ValueEquality):
     """An elastic spline: ``pieces`` (SmoothElastica from knot to knot, see below;
     closed: the last from the last point back to the first),
@@ -73,7 +82,10 @@ class ElasticSpline(ValueEquality):
     nearly straight under tension resolve less than ``tol``: the residual double
     precision allows them, within which ``residual`` is accepted), ``closed`` and ``loops`` (True: it crosses
     itself where its ducks' polygon does not, or by tension is longer than 4 x it:
-    :class:`LoopWarning`).
+    :class:`LoopWarning`), ``unstable`` (True: an equilibrium but no minimum, a batten bent
+    so would snap to another shape, ``unstable_span`` the span moving most that way, piece
+    i from point i to i + 1: :class:`UnstableWarning`; open splines without G2 ends are
+    judged, others read False).
 
     The pieces run from knot to knot: the points and, next to each G2 end, its
     guide duck (the ducks that make a G2 end possible at the common tension,
@@ -100,6 +112,8 @@ class ElasticSpline(ValueEquality):
         self.resolution = float(res.resolution)
         self.iterations = int(res.iterations)
         self.loops = bool(res.loops)
+        self.unstable = bool(res.unstable)
+        self.unstable_span = int(res.slide_span) if self.unstable else None
         g = int(res.nguides)
         self.guides = np.array(list(res.guides)[:2 * g], dtype=np.float64).reshape(g, 2)
         self.guide_forces = np.array(list(res.guide_forces)[:2 * g], dtype=np.float64).reshape(g, 2)
@@ -490,6 +504,18 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
                                                     if where else "") +
                               f"): no fair batten was found at {fix}",
                               LoopWarning, stacklevel=2)
+            if sp.unstable:
+                span = sp.unstable_span
+                fix = (f"a larger tension than {sp.tension:.4g}" if length is None else
+                       f"another length than {length:.6g} (or a tension)")
+                warnings.warn(
+                    "elastic_spline: the spline through these points is an unstable equilibrium "
+                    f"({'by length ' + format(length, '.6g') + ', ' if length is not None else ''}"
+                    f"tension {sp.tension:.4g}): it passes every duck and is fair to draw, but a "
+                    "real batten bent so would not stay: it would snap to another shape, "
+                    f"moving most at the span from point {span} to {span + 1} (counted from 0). "
+                    f"For a shape a batten holds, try {fix}, or ease the sharpest turn there",
+                    UnstableWarning, stacklevel=2)
             if seam:
                 a = sp.pieces[-1].angle(np.array([sp.pieces[-1].length]))[0] - sp.pieces[0].angle(np.zeros(1))[0]
                 corner = abs(math.degrees(math.remainder(a, 2 * math.pi)))

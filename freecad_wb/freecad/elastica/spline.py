@@ -146,8 +146,9 @@ def _solve(xy, mode, value, closed, start, end):
     largest = met = None
 
     def solve(**by):
-        with warnings.catch_warnings():   # a looping spline: noted by spline_core
+        with warnings.catch_warnings():   # a looping or unstable spline: noted by spline_core
             warnings.simplefilter("ignore", e.LoopWarning)
+            warnings.simplefilter("ignore", e.UnstableWarning)
             return e.elastic_spline(xy, start=start, end=end, closed=closed, **by)
 
     try:
@@ -324,6 +325,13 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
                      "): no fair batten at this " + ("tension; raise the tension or give a length"
                                                      if mode == "tension" else
                                                      "length; give a shorter length or a tension"))
+    if sp.unstable:                       # no minimum: as the library's UnstableWarning says
+        j = sp.unstable_span
+        cautions.append("the batten is an unstable equilibrium: it passes every point and is fair "
+                        "to draw, but a real batten bent so would not stay, it would snap to "
+                        f"another shape (moving most between points {j} and {j + 1}, counted from "
+                        "0); " + ("raise the tension for one that holds" if mode == "tension" else
+                                  "try another length, or a tension, for one that holds"))
     for j, name in ((0, "first"), (-1, "last")):
         if isinstance(specs[j], dict):     # its force: GuideForces
             notes.append(f"G2 {'start' if j == 0 else 'end'}: a guide duck a quarter into the "
