@@ -581,8 +581,9 @@ int el_fit_smooth(const double *xy, size_t n, const el_fit_options *opt,
  * point to point: a polygon resampled along noisy points, 4-6 x below the noise here).
  * Repeated points (a scanner writing each point twice, a pen at rest) carry no noise and
  * count once: a point whose coordinates lie within 1e-12 of the points' rms radius plus 4
- * rounding units of the first point's |x| + |y| of the last one kept is left out, and the figure is that of the points
- * without their repeats, to the bit (repeats apart in the order are no neighbours there).
+ * rounding units of the first point's |x| + |y| of the last one kept is left out (el_fit_distinct's
+ * points), and the figure is that of the points without their repeats, to the bit (repeats
+ * apart in the order are no neighbours there).
  * Errors: EL_EINVAL (NULL, n < 4 or fewer than 4 points once repeats count once, NaN/inf),
  * EL_ESINGULAR (all points equal to rounding: their spread about the first within 32 eps x
  * the largest |coordinate|, as el_plane_fit's; the fits' likewise), EL_EDOM (the data's
@@ -599,6 +600,33 @@ int el_fit_noise(const double *xy, size_t n, double *noise);
  * el_fit_noise's.
  */
 int el_fit_noise_quick(const double *xy, size_t n, double *noise);
+
+/*
+ * The points xy (n >= 1) with each run of repeats kept once, in their order: el_fit_noise's
+ * rule (a point whose coordinates lie within 1e-12 of the points' rms radius plus 4 rounding
+ * units of the first point's |x| + |y| of the last point kept is left out; all points equal
+ * to rounding, as el_fit_noise's EL_ESINGULAR: the first alone), so that figures of the
+ * points computed elsewhere (the binding's noise_level: cubics through windows of 15 points)
+ * see the points el_fit_noise sees. out (2n doubles, caller-owned; xy itself, or not
+ * overlapping it) receives the *m points kept (the first always; *m = n where none repeats).
+ * O(n), no allocation. Errors: EL_EINVAL (NULL, n = 0, NaN/inf), EL_EDOM (the data's scale
+ * outside what double precision represents, as el_fit_noise's); out, *m untouched.
+ */
+int el_fit_distinct(const double *xy, size_t n, double *out, size_t *m);
+
+/*
+ * The first point where points xy (n) in order turn back on themselves and run back over
+ * their stretch (a scan passed back and forth): *first = the least i, w <= i < n - w, whose
+ * chords to the points k before and k after point opposite ways, (P_i - P_{i-k}) .
+ * (P_{i+k} - P_i) < 0, at every k = 1..w, w = max(3, (n - 1) / 16); 0 where none does (n < 7
+ * always). It is el_fit_discrete's own test (distance = EL_DISTANCE_AUTO does not pair such
+ * points: they are not one pass), for a binding that judges a fit's points the same way (a
+ * smooth curve's polygon turns by less than 90 degrees at a vertex; a noise cloud far denser
+ * than its noise turns so at a few k only). Computed as written: a dot that overflows (points
+ * ~1e154 apart) counts as no turn. O(n w) at most, no allocation. Errors: EL_EINVAL (NULL,
+ * n = 0, NaN/inf); *first untouched.
+ */
+int el_fit_turn_back(const double *xy, size_t n, size_t *first);
 
 /*
  * A keyline as one problem (seed 000 §5.4, one G2 curve): two elasticae that start at

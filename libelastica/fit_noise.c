@@ -241,19 +241,25 @@ static int repeats(const double *p, const double *q, double tol)
     return fabs(p[0] - q[0]) <= tol && fabs(p[1] - q[1]) <= tol;
 }
 
-/* The points with runs of repeats kept once: *m of them; *kept NULL where none is dropped (xy
- * itself, the figures bit-identical to before), else a copy to free. EL_ENOMEM. */
-static int distinct_points(const double *xy, size_t n, double sc, size_t *m, double **kept)
+/* The repeats' bound of points xy of scale sc */
+static double repeat_tol(const double *xy, double sc)
 {
-    const double tol = REPEAT_REL * sc + REPEAT_ULPS * (fabs(xy[0]) + fabs(xy[1]));
+    return REPEAT_REL * sc + REPEAT_ULPS * (fabs(xy[0]) + fabs(xy[1]));
+}
+
+/* The first point that repeats the one before it; n where none does. */
+static size_t first_repeat(const double *xy, size_t n, double tol)
+{
     size_t i = 1;
     while (i < n && !repeats(xy + 2 * i, xy + 2 * (i - 1), tol)) i++;
-    *m = n;
-    *kept = NULL;
-    if (i == n) return EL_OK;
-    double *k = malloc(sizeof(double) * 2 * n);
-    if (!k) return EL_ENOMEM;
-    memcpy(k, xy, sizeof(double) * 2 * i);
+    return i;
+}
+
+/* xy's points after i (i: first_repeat's, < n) that repeat no point kept before them,
+ * written into k after its first i points (xy's, already there): the count kept. k may be
+ * xy itself (a point is written at or before its own place, after it was read). */
+static size_t drop_repeats(const double *xy, size_t n, size_t i, double tol, double *k)
+{
     size_t c = i;
     for (i++; i < n; i++)
         if (!repeats(xy + 2 * i, k + 2 * (c - 1), tol)) {
@@ -261,8 +267,42 @@ static int distinct_points(const double *xy, size_t n, double sc, size_t *m, dou
             k[2 * c + 1] = xy[2 * i + 1];
             c++;
         }
-    *m = c;
+    return c;
+}
+
+/* The points with runs of repeats kept once: *m of them; *kept NULL where none is dropped (xy
+ * itself, the figures bit-identical to before), else a copy to free. EL_ENOMEM. */
+static int distinct_points(const double *xy, size_t n, double sc, size_t *m, double **kept)
+{
+    const double tol = repeat_tol(xy, sc);
+    const size_t i = first_repeat(xy, n, tol);
+    *m = n;
+    *kept = NULL;
+    if (i == n) return EL_OK;
+    double *k = malloc(sizeof(double) * 2 * n);
+    if (!k) return EL_ENOMEM;
+    memcpy(k, xy, sizeof(double) * 2 * i);
+    *m = drop_repeats(xy, n, i, tol, k);
     *kept = k;
+    return EL_OK;
+}
+
+int el_fit_distinct(const double *xy, size_t n, double *out, size_t *m)
+{
+    double cx, cy, sc;
+    if (el__fit_check_points(xy, n, 1) || !out || !m) return EL_EINVAL;
+    const int st = el__fit_normalisation(xy, n, &cx, &cy, &sc);
+    if (st == EL_ESINGULAR) {       /* all equal to rounding: all repeats of the first */
+        out[0] = xy[0];
+        out[1] = xy[1];
+        *m = 1;
+        return EL_OK;
+    }
+    if (st) return st;
+    const double tol = repeat_tol(xy, sc);
+    const size_t i = first_repeat(xy, n, tol);
+    if (out != xy) memcpy(out, xy, sizeof(double) * 2 * i);
+    *m = i == n ? n : drop_repeats(xy, n, i, tol, out);
     return EL_OK;
 }
 

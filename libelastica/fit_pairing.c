@@ -47,7 +47,9 @@ int el__fit_evenly_spaced(const double *xy, size_t n)
  * the apex found in 60 of 60 draws, noise 0.02-0.1). A smooth curve's polygon turns by
  * less than 90 degrees at a vertex (k = 1); a regular polygon that turns more has k = 3's
  * chords forward again. Over the whole w only: a noise cloud (points far closer than
- * their noise) turns so at a few k near its ends (10 of bench_fit.py's 5000-point sets). */
+ * their noise) turns so at a few k near its ends (10 of bench_fit.py's 5000-point sets).
+ * A dot that is NaN (products overflowing to inf - inf, coordinates ~1e154 apart) is no
+ * turn, as any dot not below 0. */
 size_t el__fit_retrace(const double *xy, size_t n)
 {
     const size_t w = pairing_window(n);
@@ -55,11 +57,21 @@ size_t el__fit_retrace(const double *xy, size_t n)
         size_t k = 1;
         for (; k <= w; k++) {
             const double *p = xy + 2 * i, *a = p - 2 * k, *b = p + 2 * k;
-            if ((p[0] - a[0]) * (b[0] - p[0]) + (p[1] - a[1]) * (b[1] - p[1]) >= 0.0) break;
+            if (!((p[0] - a[0]) * (b[0] - p[0]) + (p[1] - a[1]) * (b[1] - p[1]) < 0.0)) break;
         }
         if (k > w) return i;
     }
     return 0;
+}
+
+/* The public el__fit_retrace: the binding's check of a fit's points that run back (el.fit's
+ * OrderWarning where the fit does not follow them, order.py's data_run_back) asks the fit's
+ * own test, not a copy of it. */
+int el_fit_turn_back(const double *xy, size_t n, size_t *first)
+{
+    if (!xy || !first || n < 1 || el__all_finite(xy, 2 * n) != EL_OK) return EL_EINVAL;
+    *first = el__fit_retrace(xy, n);
+    return EL_OK;
 }
 
 /* The paired fit's points slip along its polygon by more than PAIRING_SLIP times their

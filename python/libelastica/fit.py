@@ -32,7 +32,7 @@ from .cubic import SPARSE_POINTS, SparseWarning, smooth_fits_better
 from ._text import LengthFormat, lengths
 from ._values import ValueEquality
 from .fit_cost import EndConditionWarning, checked_ends
-from .misfit import MISFIT_RATIO, MisfitWarning, _noise, _places, _verdict, misfit_summary, noise_level
+from .misfit import MISFIT_RATIO, MisfitWarning, _Figures, _places, _verdict, misfit_summary
 from .order import (Retrace, curve_order, data_run_back, order_summary, ordering, retrace_summary,
                     run_back, turn_back)
 
@@ -585,6 +585,10 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
         pts = np.ascontiguousarray(pts[idx])
     else:
         unordered = ordering(pts)
+    # the points' noise figures, computed once where a test below asks them: the check of a
+    # fit in the points' order, of points that turn back, the misfit verdict (its points are
+    # these: the result's, or its free fit's, a fit of the same points)
+    fig = _Figures(pts)
     kind = SmoothElastica if model == "smooth" else DiscreteElastica
     if initial is not None and not isinstance(initial, kind):
         raise ValueError(f"fit: initial must be a {kind.__name__} for the {model} model, got "
@@ -621,7 +625,7 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     if (unordered is not None and unordered.order is None and res.distance != _DISTANCES["paired"]
             and not (constraints or fixed or bounds) and initial is None):
         back = run_back(pts, foot, res.rms) if res.wander_gap < 0 else None
-        if (back is not None or st != lib.EL_OK or _verdict(pts, dist, float(res.rms), False) is not None
+        if (back is not None or st != lib.EL_OK or _verdict(fig, dist, float(res.rms), False) is not None
                 or (res.wander_gap < 0 and run_back(pts, foot, res.rms, near=False) is not None)):
             retraced = _retraced(model, pts, o, float(res.rms))
             tried = retraced[-1]
@@ -662,10 +666,11 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
         # a scan passed back and forth does: 1 of bench_fit.py's 504 point sets, its fit at
         # 0.07 x their noise, wandering, was named so without this gate)
         # (the cheap tests first: el_fit_noise_quick's figure is never above noise_level's, so
-        # a converged fit within MISFIT_RATIO of it is within it of noise_level's too; turn_back
-        # is 0.26 ms of numpy on 1000 points, noise_level's stride search 12 ms)
-        if back is None and (st != lib.EL_OK or res.rms > MISFIT_RATIO * _quick_noise(pts)) \
-                and turn_back(pts) and (st != lib.EL_OK or res.rms > MISFIT_RATIO * noise_level(pts)):
+        # a converged fit within MISFIT_RATIO of it is within it of noise_level's too; the
+        # figures are those the misfit verdict takes, computed once; noise_level's stride
+        # search 12 ms on 1000 points)
+        if back is None and (st != lib.EL_OK or res.rms > MISFIT_RATIO * fig.quick) \
+                and turn_back(pts) and (st != lib.EL_OK or res.rms > MISFIT_RATIO * fig.level):
             back = data_run_back(pts, res.rms)
         if back is not None:
             hint = ("order='curve' fits them in curve order (el.curve_order)" if tried is None else
@@ -682,7 +687,7 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
         r = checked_ends(r, fixed, dict(model=model, distance=distance, bounds=bounds, tol=tol,
                          limited_memory=limited_memory, max_candidates=max_candidates, param=param))
     if check_misfit:
-        r = _judged(r, judged_fit(r, constraints or fixed or bounds, distance))
+        r = _judged(r, judged_fit(r, constraints or fixed or bounds, distance), fig)
     if check_sparse and not smooth and n < SPARSE_POINTS:
         r = _sparse(r, constraints)
     return r
@@ -728,15 +733,6 @@ def _retraced(model: str, pts: np.ndarray, o, rms: float):
     return res, st, dist, foot, back, float(res.rms)
 
 
-def _quick_noise(pts: np.ndarray) -> float:
-    """el_fit_noise_quick's figure of a fit's points (repeats counted once there), 0 where
-    fewer than 4 distinct points leave none (the figure is a filter: 0 lets every fit on)."""
-    try:
-        return _noise(pts, quick=True)
-    except ValueError:
-        return 0.0
-
-
 def _sparse(r: FitResult, constraints) -> FitResult:
     """r with its ``sparse`` (:func:`smooth_fits_better` on the larger of its polygon's rms
     and its exported cubic's, the same constraints) and a SparseWarning where the smooth
@@ -769,12 +765,13 @@ def judged_fit(r: FitResult, held, distance: Optional[str] = None) -> Optional[F
     return None if judged is None or judged.distances is None else judged
 
 
-def _judged(r: FitResult, judged: Optional[FitResult]) -> FitResult:
+def _judged(r: FitResult, judged: Optional[FitResult], fig: _Figures) -> FitResult:
     """r with its ``misfit`` (:func:`libelastica.misfit.misfit` of judged, :func:`judged_fit`,
-    its points as fitted) and a MisfitWarning where it lies far above the points' noise."""
+    its points as fitted: those of fig, the noise figures :func:`fit` computed once for its
+    tests) and a MisfitWarning where it lies far above the points' noise."""
     if judged is None:
         return r
-    m = _verdict(judged.points, judged.distances, judged.rms)
+    m = _verdict(fig, judged.distances, judged.rms)
     if m is None:
         return r
     if m.corner >= 0 and judged.retrace is not None:   # a scan's turn back is no corner (QA20)

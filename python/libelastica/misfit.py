@@ -81,37 +81,71 @@ def noise_level(points) -> float:
     them (_spread_noise). Repeated points (a scanner writing each point twice, a pen at
     rest) count once: the figure is that of the points without their repeats (4 distinct
     points at least)."""
-    pts = _distinct(as_points(points, "noise_level: points", 2, 4))    # (third differences)
-    if len(pts) < 4:
-        raise ValueError(f"noise_level: points: need at least 4 distinct points, got {len(pts)} "
+    fig = _Figures(as_points(points, "noise_level: points", 2, 4))
+    if len(fig.seen) < 4:
+        raise ValueError(f"noise_level: points: need at least 4 distinct points, got {len(fig.seen)} "
                          "(repeated points count once)")
-    return _noise_level(pts, _noise(pts))
+    return fig.level
 
 
 # Repeats carry no noise (QA20: every point of a 400-point corner scan written twice read its
 # noise 0.051 as 0.226, and el.fit's MisfitWarning, 12.3 x the noise, was lost): el_fit_noise
-# keeps a run of repeats once, a point within REPEAT_REL of the points' rms radius plus
-# REPEAT_ULPS rounding units of the first point's |x| + |y| of the last one kept; the windows
-# here alike, of the point before (the same on exact copies).
-REPEAT_REL = 1e-12
-REPEAT_ULPS = 4 * np.finfo(float).eps
-
-
+# keeps a run of repeats once, and the windows here see the same points, el_fit_distinct's
+# (the C rule, one for both: a point within 1e-12 of the points' rms radius plus 4 rounding
+# units of the first point's |x| + |y| of the last point kept is left out; slowly drifting
+# near-copies, each within that of the one before, are kept where they drift past it).
 def _distinct(pts: np.ndarray) -> np.ndarray:
-    """Checked points without their consecutive repeats (el_fit_noise's rule); pts itself
-    where there are none."""
-    if len(pts) < 2:
-        return pts
-    c = pts - pts.mean(axis=0)
-    tol = REPEAT_REL * np.sqrt(np.mean(np.sum(c * c, axis=1))) + REPEAT_ULPS * np.sum(np.abs(pts[0]))
-    same = np.all(np.abs(np.diff(pts, axis=0)) <= tol, axis=1)
-    if not same.any():
-        return pts
-    return np.ascontiguousarray(pts[np.r_[True, ~same]])
+    """Checked points without their repeats (el_fit_distinct: el_fit_noise's rule); pts
+    itself where there are none."""
+    out, m = np.empty_like(pts), ffi.new("size_t *")
+    check(lib.el_fit_distinct(dptr(pts), len(pts), dptr(out), m), "noise_level")
+    return pts if m[0] == len(pts) else out[:m[0]]
+
+
+class _Figures:
+    """The noise figures of one set of checked points (as _noise's), each computed once, when
+    first asked: el.fit asks them in up to three tests of one fit (its check of a fit in the
+    points' order, of points that turn back, and the misfit verdict), on the same points.
+    ``quick`` / ``plain``: el_fit_noise_quick's / el_fit_noise's of the points (their repeats
+    counted once there: the figures of ``seen``); quick 0 where fewer than 4 distinct
+    points leave none (the figure is a filter: 0 lets every fit on); ``seen``: the points
+    without their repeats (:func:`_distinct`); ``level``: :func:`noise_level`'s."""
+    __slots__ = ("pts", "_seen", "_quick", "_plain", "_level")
+
+    def __init__(self, pts: np.ndarray):
+        self.pts = pts
+        self._seen = self._quick = self._plain = self._level = None
+
+    @property
+    def seen(self) -> np.ndarray:
+        if self._seen is None:
+            self._seen = _distinct(self.pts)
+        return self._seen
+
+    @property
+    def quick(self) -> float:
+        if self._quick is None:
+            try:
+                self._quick = _noise(self.pts, quick=True)
+            except ValueError:
+                self._quick = 0.0
+        return self._quick
+
+    @property
+    def plain(self) -> float:
+        if self._plain is None:
+            self._plain = _noise(self.pts)
+        return self._plain
+
+    @property
+    def level(self) -> float:
+        if self._level is None:
+            self._level = _noise_level(self.seen, self.plain)
+        return self._level
 
 
 def _noise_level(pts: np.ndarray, plain: float) -> float:
-    """noise_level of checked points whose _noise is ``plain``."""
+    """noise_level of checked points without repeats whose _noise is ``plain``."""
     return max(plain, window_noise(pts), _spread_noise(pts))
 
 
@@ -264,28 +298,31 @@ def misfit(points, distances, corner: bool = True) -> Optional[Misfit]:
     d = np.asarray(distances, dtype=float)
     if d.shape != (len(pts),):
         raise ValueError("misfit: distances (n,) for points (n, 2) are needed")
-    return _verdict(pts, d, float(np.sqrt(np.mean(d * d))), corner)
+    return _verdict(_Figures(pts), d, float(np.sqrt(np.mean(d * d))), corner)
 
 
-def _verdict(pts: np.ndarray, d: np.ndarray, rms_all: float, corner: bool = True) -> Optional[Misfit]:
-    """misfit of checked points (as _noise's) and their distances' rms (a fit's own, el.fit's
+def _verdict(fig: _Figures, d: np.ndarray, rms_all: float, corner: bool = True) -> Optional[Misfit]:
+    """misfit of the points of ``fig`` (:class:`_Figures`: the figures computed once for all
+    verdicts of the same points), their distances and their rms (a fit's own, el.fit's
     path: 0.011 ms of a 1000-point discrete fit's 0.5 where it is silent). Its first test
     takes el_fit_noise_quick's figure, never above el_fit_noise's: el_fit_noise's stride
-    search (twice the instructions) runs only where that test is passed."""
-    seen = _distinct(pts)                     # (the noise figures: repeats count once)
-    if len(seen) < MISFIT_MIN_POINTS:
-        return None
+    search (twice the instructions) and the points without their repeats are computed only
+    where that test is passed."""
+    pts = fig.pts
     # the window figure and el_fit_noise's stride search (points sorted densely along a
     # short curve) only raise el_fit_noise_quick's figure: both paid only where it is passed
-    if not rms_all > MISFIT_RATIO * _noise(seen, quick=True):
+    # (and the distinct points counted there: fewer points than MISFIT_MIN_POINTS have fewer)
+    if len(pts) < MISFIT_MIN_POINTS or not rms_all > MISFIT_RATIO * fig.quick:
         return None
-    noise = _noise(seen)
+    if len(fig.seen) < MISFIT_MIN_POINTS:     # (the noise figures: repeats count once)
+        return None
+    noise = fig.plain
     if not rms_all > MISFIT_RATIO * noise:
         return None
     from .fit import far_points
     if len(far_points(d, pts)):               # glitches pull the fit: said apart, refit without
         return None
-    noise = _noise_level(seen, noise)
+    noise = fig.level
     rms, extent = rms_all, float(np.max(np.ptp(pts, axis=0)))
     if not (rms > MISFIT_RATIO * noise and rms > MISFIT_FLOOR * extent):
         return None

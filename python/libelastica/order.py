@@ -251,20 +251,12 @@ def run_back(points, foot_s, rms: float, near: bool = True) -> Optional[Retrace]
 def turn_back(points) -> int:
     """The first point where points (n, 2) in order turn back on themselves (their chords to
     the points k before and k after opposite, dot < 0, at every k = 1..w, w = max(3,
-    (n-1)/16)), 0 where none does: the discrete fit's test of a scan passed back and forth
-    (el__fit_retrace, fit_pairing.c: its rule and its measurements), as run_back asks it of
-    the first point it names. Written again here, with numpy, because that test is internal
-    to the C fit (no public entry returns the point)."""
-    P = np.asarray(points, dtype=float)
-    n = len(P)
-    w = max(3, (n - 1) // 16)
-    idx = np.arange(w, n - w)
-    for k in range(1, w + 1):
-        if not len(idx):
-            return 0
-        back, on = P[idx] - P[idx - k], P[idx + k] - P[idx]
-        idx = idx[np.einsum("ij,ij->i", back, on) < 0.0]
-    return int(idx[0]) if len(idx) else 0
+    (n-1)/16)), 0 where none does: el_fit_turn_back, the discrete fit's own test of a scan
+    passed back and forth (its distance="auto" pairs no such points; fit_pairing.c: its rule
+    and its measurements), as run_back asks it of the first point it names."""
+    P, first = as_points(points, "turn_back: points", 2, 1), ffi.new("size_t *")
+    check(lib.el_fit_turn_back(dptr(P), len(P), first), "turn_back")
+    return int(first[0])
 
 
 # the pass before the turn that data_run_back measures along: its polyline through at most

@@ -140,6 +140,78 @@ START_TEST(test_random_places_fit_as_orthogonal)
 }
 END_TEST
 
+/* The turn test by its definition: the least i, w <= i < n - w, whose chords to the points k
+ * before and after point opposite ways (dot < 0) at every k = 1..w, w = max(3, (n-1)/16) */
+static size_t turn_by_definition(const double *xy, size_t n)
+{
+    const size_t w = (n - 1) / 16 > 3 ? (n - 1) / 16 : 3;
+    for (size_t i = w; i + w < n; i++) {
+        int all = 1;
+        for (size_t k = 1; k <= w && all; k++) {
+            const double bx = xy[2 * i] - xy[2 * (i - k)], by = xy[2 * i + 1] - xy[2 * (i - k) + 1];
+            const double ox = xy[2 * (i + k)] - xy[2 * i], oy = xy[2 * (i + k) + 1] - xy[2 * i + 1];
+            all = bx * ox + by * oy < 0.0;
+        }
+        if (all) return i;
+    }
+    return 0;
+}
+
+/* el_fit_turn_back, the public face of the fit's own test (the binding's OrderWarning asked a
+ * numpy copy of it, order.turn_back): QA18's scans passed back and forth turn at their apex
+ * (point 59, s = 12), as the test's definition says, and are not paired (the fit's use of it,
+ * test_back_and_forth_scan_is_not_paired); the same scans in one pass, with and without
+ * dropouts, turn nowhere; a V of 90 degrees does not turn (dot 0), nor where its dots
+ * overflow (coordinates 1e200 apart: +inf - inf is NaN, which the fit's former test, dot >= 0
+ * to stop, read as a turn); fewer than 7 points never; bad input EL_EINVAL, *first
+ * untouched. */
+START_TEST(test_turn_back_is_the_fits_test)
+{
+    double s[188], xy[2 * MAXN];
+    size_t n = 0, first = 77;
+    for (int i = 0; i < 60; i++) s[n++] = 12.0 * i / 59.0;
+    for (int i = 1; i < 20; i++) s[n++] = 12.0 - 4.0 * i / 19.0;
+    for (int i = 1; i < 110; i++) s[n++] = 8.0 + 22.0 * i / 109.0;
+    const unsigned long long seeds[] = {18, 42, 47};
+    for (int d = 0; d < 3; d++) {
+        scan(s, n, 0.05, seeds[d], xy);
+        ck_assert_int_eq(el_fit_turn_back(xy, n, &first), EL_OK);
+        ck_assert_msg(first >= 57 && first <= 61 && first == turn_by_definition(xy, n),
+                      "draw %d: turn at %zu (definition %zu)", d, first, turn_by_definition(xy, n));
+    }
+    for (int d = 0; d < (int)(sizeof DROPOUTS / sizeof DROPOUTS[0]) + 3; d++) {
+        const size_t m = d < 3 ? dropout_scan(NULL, 0, (unsigned long long)d + 3, xy)
+                               : dropout_scan(DROPOUTS[d - 3].drop, DROPOUTS[d - 3].nd, DROPOUTS[d - 3].seed, xy);
+        ck_assert_int_eq(el_fit_turn_back(xy, m, &first), EL_OK);
+        ck_assert_msg(first == 0, "one pass %d: turn at %zu", d, first);
+    }
+    /* a V, x monotone, its arms at +-45 degrees: chords at 90 degrees, dot 0 at the apex */
+    for (int big = 0; big < 2; big++) {
+        const double u = big ? 1e200 : 1.0;
+        double v[2 * 15];
+        for (int j = 0; j < 15; j++) { v[2 * j] = j * u; v[2 * j + 1] = -fabs(j - 7.0) * u; }
+        ck_assert_int_eq(el_fit_turn_back(v, 15, &first), EL_OK);
+        ck_assert_msg(first == 0, "V at scale %g: turn at %zu", u, first);
+    }
+    /* a hairpin (out 8, back 7: the points on two parallel lines) turns at its tip */
+    double hp[2 * 15];
+    for (int j = 0; j < 15; j++) { hp[2 * j] = j < 8 ? j : 14 - j; hp[2 * j + 1] = j < 8 ? 0.0 : 0.5; }
+    ck_assert_int_eq(el_fit_turn_back(hp, 15, &first), EL_OK);
+    ck_assert_uint_eq(first, 7);
+    for (size_t m = 1; m < 7; m++) {
+        ck_assert_int_eq(el_fit_turn_back(hp, m, &first), EL_OK);
+        ck_assert_uint_eq(first, 0);
+    }
+    first = 77;
+    ck_assert_int_eq(el_fit_turn_back(NULL, 15, &first), EL_EINVAL);
+    ck_assert_int_eq(el_fit_turn_back(hp, 15, NULL), EL_EINVAL);
+    ck_assert_int_eq(el_fit_turn_back(hp, 0, &first), EL_EINVAL);
+    hp[9] = NAN;
+    ck_assert_int_eq(el_fit_turn_back(hp, 15, &first), EL_EINVAL);
+    ck_assert_uint_eq(first, 77);
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("fit_pairing");
@@ -150,6 +222,7 @@ static Suite *suite(void)
     tcase_add_loop_test(tc, test_even_scans_stay_paired, 0, 3);
     tcase_add_loop_test(tc, test_random_places_fit_as_orthogonal, 0,
                         (int)(sizeof RANDOM_PLACES / sizeof RANDOM_PLACES[0]));
+    tcase_add_test(tc, test_turn_back_is_the_fits_test);
     suite_add_tcase(s, tc);
     return s;
 }

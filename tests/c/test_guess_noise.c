@@ -470,6 +470,97 @@ START_TEST(test_noise_all_equal_far_from_origin)
 }
 END_TEST
 
+/* The repeats' bound by the header's words: 1e-12 of the points' rms radius plus 4 rounding
+ * units of the first point's |x| + |y| */
+static double repeat_bound(const double *xy, size_t n)
+{
+    double cx = 0.0, cy = 0.0, r2 = 0.0;
+    for (size_t i = 0; i < n; i++) { cx += xy[2 * i] / (double)n; cy += xy[2 * i + 1] / (double)n; }
+    for (size_t i = 0; i < n; i++)
+        r2 += ((xy[2 * i] - cx) * (xy[2 * i] - cx) + (xy[2 * i + 1] - cy) * (xy[2 * i + 1] - cy)) / (double)n;
+    return 1e-12 * sqrt(r2) + 4.0 * DBL_EPSILON * (fabs(xy[0]) + fabs(xy[1]));
+}
+
+/* el_fit_distinct: the points el_fit_noise sees, by the binding's noise_level too (its cubics
+ * through windows of 15 points compared each point with the one before, the C rule with the
+ * last point kept: slowly drifting near-copies, each within the bound of the one before,
+ * were all dropped there and partly kept here). Repeated scans (twice, three times, stalls,
+ * copies off by 1e-13 of the extent; 400 noisy points at offsets 0 and 12345.6, 50 exact
+ * ones) give the points without them, bit for bit, also in place; each point followed by 4
+ * copies drifting by 0.6 x the bound (both coordinates) keeps the copies 1.2 and 2.4 x the
+ * bound off (the last kept's rule, by the header's words), and el_fit_noise's and
+ * el_fit_noise_quick's figures are those of the points it keeps, to the bit. All equal: the
+ * first alone; bad input EL_EINVAL, a scale below double's EL_EDOM, out and *m untouched. */
+START_TEST(test_distinct_points_are_the_noise_figures_points)
+{
+    enum { N = 400 };
+    static double xy[2 * N], rep[2 * 5 * N], out[2 * 5 * N], s[N];
+    unsigned long long rng = 2026;
+    const el_smooth_params c = {0.0, 0.0, 0.3, 1.0, 0.6, 0.2, 4.0};
+    for (int set = 0; set < 3; set++) {
+        const size_t n = set == 0 ? 50 : N;
+        const double off = set == 2 ? 12345.6 : 0.0;
+        if (set == 0) for (size_t i = 0; i < n; i++) s[i] = 4.0 * (double)i / (double)(n - 1);
+        else random_places(&rng, n, 4.0, s);
+        ck_assert_int_eq(el_smooth_eval(&c, n, s, xy, NULL, NULL), EL_OK);
+        if (set) for (size_t i = 0; i < 2 * n; i++) xy[i] += off + 0.05 * test_normal(&rng);
+        size_t m = 0, k = 0;
+        for (int mode = 0; mode < 4; mode++) {
+            const double tiny = set == 2 ? 12345.6 * DBL_EPSILON : 1e-13 * 4.0;
+            const size_t r = with_repeats(xy, n, mode, tiny, &rng, rep);
+            ck_assert_int_eq(el_fit_distinct(rep, r, out, &m), EL_OK);
+            ck_assert_msg(m == n && !memcmp(out, xy, sizeof(double) * 2 * n), "set %d repeats %d: %zu of %zu kept",
+                          set, mode, m, n);
+            ck_assert_int_eq(el_fit_distinct(rep, r, rep, &k), EL_OK);          /* in place */
+            ck_assert(k == n && !memcmp(rep, xy, sizeof(double) * 2 * n));
+        }
+        /* drifting near-copies: p, then p + j 0.6 t (j = 1..4) in x, - in y */
+        const size_t r = 5 * n;
+        for (size_t i = 0; i < n; i++)
+            for (int j = 0; j < 5; j++) { rep[2 * (5 * i + j)] = xy[2 * i]; rep[2 * (5 * i + j) + 1] = xy[2 * i + 1]; }
+        const double t = repeat_bound(rep, r);
+        for (size_t i = 0; i < n; i++)
+            for (int j = 1; j < 5; j++) { rep[2 * (5 * i + j)] += 0.6 * j * t; rep[2 * (5 * i + j) + 1] -= 0.6 * j * t; }
+        ck_assert_int_eq(el_fit_distinct(rep, r, out, &m), EL_OK);
+        ck_assert_msg(m == 3 * n, "set %d drifting: %zu kept of %zu, want %zu", set, m, r, 3 * n);
+        for (size_t i = 0; i < n; i++)
+            for (int j = 0; j < 3; j++)
+                ck_assert_msg(out[2 * (3 * i + j)] == rep[2 * (5 * i + 2 * j)] &&
+                              out[2 * (3 * i + j) + 1] == rep[2 * (5 * i + 2 * j) + 1],
+                              "set %d drifting: point %zu copy %d not kept", set, i, 2 * j);
+        double fig, fig_kept, quick, quick_kept;
+        ck_assert_int_eq(el_fit_noise(rep, r, &fig), EL_OK);
+        ck_assert_int_eq(el_fit_noise(out, m, &fig_kept), EL_OK);
+        ck_assert_int_eq(el_fit_noise_quick(rep, r, &quick), EL_OK);
+        ck_assert_int_eq(el_fit_noise_quick(out, m, &quick_kept), EL_OK);
+        ck_assert_msg(fig == fig_kept && quick == quick_kept, "set %d drifting: %.17g %.17g, quick %.17g %.17g",
+                      set, fig, fig_kept, quick, quick_kept);
+    }
+    /* all equal (to rounding, far from the origin): the first alone */
+    double eq[40], one[40];
+    size_t m = 9;
+    for (int i = 0; i < 20; i++) { eq[2 * i] = 12345.6; eq[2 * i + 1] = -7.5; }
+    for (int k = 0; k < 2; k++) {
+        if (k) eq[6] = nextafter(12345.6, 2e4);
+        ck_assert_int_eq(el_fit_distinct(eq, 20, one, &m), EL_OK);
+        ck_assert(m == 1 && one[0] == 12345.6 && one[1] == -7.5);
+    }
+    ck_assert_int_eq(el_fit_distinct(eq, 1, one, &m), EL_OK);
+    ck_assert_uint_eq(m, 1);
+    m = 9;
+    one[0] = 42.0;
+    const double tiny[8] = {0.0, 0.0, 1e-300, 0.0, 0.0, 1e-300, 1e-300, 1e-300};
+    ck_assert_int_eq(el_fit_distinct(tiny, 4, one, &m), EL_EDOM);
+    ck_assert_int_eq(el_fit_distinct(NULL, 4, one, &m), EL_EINVAL);
+    ck_assert_int_eq(el_fit_distinct(eq, 0, one, &m), EL_EINVAL);
+    ck_assert_int_eq(el_fit_distinct(eq, 20, NULL, &m), EL_EINVAL);
+    ck_assert_int_eq(el_fit_distinct(eq, 20, one, NULL), EL_EINVAL);
+    eq[11] = NAN;
+    ck_assert_int_eq(el_fit_distinct(eq, 20, one, &m), EL_EINVAL);
+    ck_assert(m == 9 && one[0] == 42.0);
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("guess_noise");
@@ -485,6 +576,7 @@ static Suite *suite(void)
     tcase_add_test(tc, test_noise_sorted_short_dense);
     tcase_add_test(tc, test_noise_repeats_counted_once);
     tcase_add_test(tc, test_noise_all_equal_far_from_origin);
+    tcase_add_test(tc, test_distinct_points_are_the_noise_figures_points);
     suite_add_tcase(s, tc);
     return s;
 }
