@@ -163,26 +163,86 @@ def _edge_count_error(exc: EdgeCountError, n: int, build) -> EdgeCountError:
 
 
 def _past_the_end(t: np.ndarray, nsamples: int, n: int, landing: bool = False,
-                  curve: bool = False) -> str:
+                  curve: bool = False, points: Optional[np.ndarray] = None,
+                  inflection: Optional[float] = None, more: Optional[str] = None) -> str:
     """g2_quadratic's reason for points whose polyline ran past their last sample: its
     vertices ran on along f~'s last parabola continued (seed 002 §4.3): too few edges for
-    the turning (``landing``: fit_ends found no A landing it, C's EL_EDOM, ``t`` of the
+    the turning, unless the ``points`` turn less than n / 3 times (then said as what happened:
+    the polyline left their curve at a vertex, or its last vertex lands part of an edge past)
+    (``landing``: fit_ends found no A landing it, C's EL_EDOM, ``t`` of the
     paper's A, said as such: fit_ends' own best may have stopped short). ``curve``: the
     same for an elastica's samples (f~'s t, the curve's end at nsamples - 1), whose
-    polyline is the paper's A (fit_ends=False)."""
-    past = int(np.sum(t > nsamples - 1))
+    polyline is the paper's A (fit_ends=False); ``inflection``: f~'s t of the inflection
+    where the polyline stops instead (the end piece beyond it left out), which it runs past;
+    ``more``: the edge counts that work, in words (_paper_a_counts)."""
     if curve:
+        end = nsamples - 1 if inflection is None else inflection
+        past = int(np.sum(t > end))
+        where = ("the curve's end" if inflection is None else
+                 f"the inflection at sample {end:.0f} where it stops (the end piece beyond it "
+                 "too short for 3 edges, left out)")
         return (f"g2_quadratic: {n} edges of the paper's A = (S/n)^3 (fit_ends=False) run "
-                f"past the curve's end: {past} of the affine polyline's vertices beyond it "
-                f"(the last at sample {float(t[-1]):.1f} of {nsamples - 1}), so no spline "
-                "through them ends there; fit_ends=True (the default) lands the last vertex "
-                "on the end or names the edge count that does")
-    which = ("no A lands the affine polyline on their last sample, and the paper's A = "
-             "(S/n)^3 ran past their end" if landing else "the affine polyline ran past their end")
-    return (f"g2_quadratic: {n} edges are too few for the points' turning (about 3 per turn "
-            f"of the tangent at least): {which}, {past} of its "
-            f"vertices beyond their last sample (the last at {float(t[-1]):.1f} of "
-            f"{nsamples - 1}); pass more edges")
+                f"past {where}: {past} of the affine polyline's vertices beyond it "
+                f"(the last at sample {float(t[-1]):.1f} of {nsamples - 1}, on f~'s last "
+                "parabola continued, off the curve), so no spline through them ends there; "
+                + (f"{more}; " if more else "") + "fit_ends=True (the default) lands the last "
+                "vertex on it or names the edge count that does")
+    last = nsamples - 1
+    past = int(np.sum(t > last))
+    first = int(np.argmax(t > last))        # the first vertex past their last sample
+    paper = ("no A lands the affine polyline on their last sample; with the paper's A = "
+             "(S/n)^3 " if landing else "")
+    if first < len(t) - 1:
+        # the §4.3 intersection has no solution on the curve: the line of area A through
+        # the vertex before meets f~ nowhere ahead (a k = 2.69 elastica's 400 points turning
+        # 5.9 times at 24 edges: vertex 2 at t = 455 of 399, 4 edges a turn; 26 build)
+        what = (f"{paper}the affine polyline leaves the points' curve at vertex {first} of "
+                f"{n}: the line of area A through vertex {first - 1} (seed 002 §4.3) meets "
+                f"it nowhere ahead, so that vertex and the {past - 1} after it lie on f~'s "
+                f"last parabola continued (the last at {float(t[-1]):.1f} of {last})")
+    else:
+        # only the last vertex past, by part of its edge: the paper's A lands it near the
+        # end, not on it (fit_ends=False at 24-30 edges of a curve turning 4.3 rad: 1.0
+        # sample past, 1/16 of its edge; 'too few edges' said before, fit_ends=True lands)
+        what = (f"{paper}the affine polyline's last vertex lands "
+                f"{float(t[-1]) - last:.3g} samples past their last sample "
+                f"({(float(t[-1]) - last) / max(float(t[-1] - t[-2]), 1e-300):.2g} of its "
+                "last edge)")
+    turns = _turns(points) if points is not None else None
+    if turns is not None and n >= 3 * max(turns, 1.0):
+        # not said 'too few' (the turning allows the count): what happened, in figures
+        why = (f"{n} edges, {n / max(turns, 1e-300):.3g} a turn of the points' tangent "
+               f"({turns:.3g} turns; about 3 a turn are needed at least)")
+        way = ("fit_ends=True (the default) adjusts A to land it, or pass another count"
+               if not landing else "pass another count")
+    else:
+        why = (f"{n} edges are too few for the points' turning (about 3 per turn of the "
+               f"tangent at least" + (f"; {turns:.3g} turns" if turns is not None else "") + ")")
+        way = "pass more edges"
+    return f"g2_quadratic: {why}: {what}; {way}"
+
+
+def _turns(points: np.ndarray) -> float:
+    """The turning of the points' polyline, in turns (sum |edge angle change| / 2 pi)."""
+    d = np.diff(points, axis=0)
+    d = d[np.any(d != 0, axis=1)]
+    if len(d) < 2:
+        return 0.0
+    a = np.arctan2(d[:-1, 0] * d[1:, 1] - d[:-1, 1] * d[1:, 0],
+                   d[:-1, 0] * d[1:, 0] + d[:-1, 1] * d[1:, 1])
+    return float(np.sum(np.abs(a)) / (2.0 * math.pi))
+
+
+def _paper_a_counts(n: int, build) -> str:
+    """The words naming the fewest edge count above n whose G2 quadratic of the paper's A
+    (fit_ends=False, ``build(m)``: partial, _plain) covers the source (covering_edges, every
+    count in turn), or that none up to cover_search_limit(n) does."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", CoverageWarning)
+        warnings.simplefilter("ignore", EndTangentWarning)
+        more = covering_edges(build, n)
+    return (f"n = {more} works with fit_ends=False, the fewest above {n}" if more else
+            f"no count up to {cover_search_limit(n)} works with fit_ends=False")
 
 
 def _short_of_the_end(t: np.ndarray, nsamples: int, n: int) -> str:
@@ -563,7 +623,8 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
             except DomainError:
                 ap = None
             if ap is not None and round(float(ap.t[-1])) > len(points) - 1:
-                raise DomainError(exc.status, _past_the_end(ap.t, len(points), n, True)) from None
+                raise DomainError(exc.status, _past_the_end(ap.t, len(points), n, True,
+                                                          points=points)) from None
             if ap is not None and round(float(ap.t[-1])) < len(points) - 1:
                 raise DomainError(exc.status, _short_of_the_end(ap.t, len(points), n)) from None
         raise _noisy_points_error(exc, points) from None
@@ -582,12 +643,24 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
         # 4.0 of 5.74, deviation 0.151, covers_source True)
         s_samp, infl_t = _curve_samples(c, infl_s, n, samples_per_vertex)
         t_end = ([0] + list(infl_t) + [len(s_samp) - 1])[first + npieces]
-        if float(ap.t[-1]) > len(s_samp) - 0.5:
+        past_end = float(ap.t[-1]) > len(s_samp) - 0.5
+        # the end piece left out and the last vertex more than half a sample past its
+        # inflection, on f~'s last parabola continued, off the curve (seed 002 §4.4: x_ni
+        # "close to the inflection point", A "redone" if too far: fit_ends): refused as past
+        # the end (splines forced onto the inflection before: 0.61 .. 5.1 samples past)
+        past_infl = (not past_end and first + npieces < len(bounds) - 1
+                     and float(ap.t[-1]) > t_end + 0.5)
+        if past_end or past_infl:
             # past the curve's end by more than half a sample (the paper's A, fit_ends=False):
             # refused as the points' polyline is (_past_the_end); the splines were forced back
             # onto the end before and said covers_source True (583 of 768 fit_ends=False builds
-            # of /tmp/affshort's sweep, median 11.6 samples past)
-            raise DomainError(lib.EL_EDOM, _past_the_end(ap.t, len(s_samp), n, curve=True))
+            # of /tmp/affshort's sweep, median 11.6 samples past); the counts that work named
+            more = None if _plain else _paper_a_counts(
+                n, lambda m: g2_quadratic(c, m, samples_per_vertex, partial=True, _plain=True,
+                                          **options))
+            raise DomainError(lib.EL_EDOM, _past_the_end(
+                ap.t, len(s_samp), n, curve=True, inflection=t_end if past_infl else None,
+                more=more))
         if float(ap.t[-1]) < t_end - 0.5:
             s_ends[-1] = float(ap.s[-1])
             short = (f"the polyline stops short of its end, its last vertex at s = "
@@ -607,7 +680,8 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
     else:
         samples = as_points(curve_or_points, "points")
         if round(float(ap.t[-1])) > len(samples) - 1:   # t: sample indices, f~(j) = p_j
-            raise DomainError(lib.EL_EDOM, _past_the_end(ap.t, len(samples), n))
+            raise DomainError(lib.EL_EDOM, _past_the_end(ap.t, len(samples), n,
+                                                          points=samples))
         t_ends = np.concatenate([[ap.t[0]], ap.infl_param, [round(float(ap.t[-1]))]])
         idx = t_ends.astype(int)
         ends = samples[idx]
