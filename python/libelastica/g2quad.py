@@ -17,6 +17,7 @@ from ._ffi import DomainError, as_points, as_size, lib
 from ._values import ValueEquality
 from .affine import (AffinePolyline, EdgeCountError, _curve_samples, _is_curve, affine_polyline,
                      elastica_inflections, g2_bspline, quadratic_joint_curvatures)
+from .g2ends import _matched_ends
 
 __all__ = ["G2Quadratic", "CoverageError", "CoverageWarning", "EndTangentWarning", "covering_edges",
            "g2_quadratic"]
@@ -357,168 +358,6 @@ def _end_curvature(samples: np.ndarray, reverse: bool, tangents=None) -> Optiona
     return float(-k if reverse else k)      # (backwards from the end: the sign turns)
 
 
-def _start_curvature(bs) -> float:
-    """Curvature at the start of a clamped quadratic B-spline: det(b1-b0, b2-b1) / (2|b1-b0|^3)
-    of its first Bezier segment (b2 the joint of poles 1, 2)."""
-    P, K = bs.poles, bs.knots
-    j = ((K[2] - K[1]) * P[1] + (K[1] - K[0]) * P[2]) / (K[2] - K[0])
-    d0, d1 = P[1] - P[0], j - P[1]
-    return float((d0[0] * d1[1] - d0[1] * d1[0]) / (2.0 * np.linalg.norm(d0) ** 3))
-
-
-def _match_start(x: np.ndarray, start, end, kappa: float) -> Optional[np.ndarray]:
-    """The polyline x (>= 6 vertices) with x_1 moved so that g2_bspline(x, start, end) starts
-    with curvature kappa, or None (no such place within 0.5..1.5 x its edge).
-    Why: the vertices lie on the source, so the uniform spline runs inside it by ~kappa h^2/8
-    and the end parabola (start, c, m_2) bridging to it over ~1.5 h ends with ~0.71 kappa on
-    a circle (legs 0.793 h and h/sqrt 2: (0.707/0.793)^3). x_1 slides on the line
-    det(x_2 - x_1, v_2) = A (v_1 = t u + (A/|v_2|) w, u = v_2/|v_2|, det(w, u) = 1), which keeps
-    A_2 = A and so every joint G2; t moves m_2, v_1 and the end parabola's legs, and the root
-    of its start curvature - kappa is taken nearest the polyline's own t (bisection)."""
-    v2 = x[3] - x[2]
-    A = float(v2[1] * (x[2] - x[1])[0] - v2[0] * (x[2] - x[1])[1])
-    n2 = float(np.hypot(*v2))
-    u = v2 / n2
-    w = np.array([u[1], -u[0]])
-    t0 = float((x[2] - x[1]) @ u)
-
-    def f(t):
-        y = x.copy()
-        y[1] = x[2] - (t * u + (A / n2) * w)
-        try:
-            return _start_curvature(g2_bspline(y, start, end)) - kappa, y
-        except DomainError:
-            return math.nan, y
-    ts = t0 * np.linspace(0.5, 1.5, 41)
-    fs = np.array([f(t)[0] for t in ts])
-    ok = np.isfinite(fs[:-1]) & np.isfinite(fs[1:]) & (np.sign(fs[:-1]) != np.sign(fs[1:]))
-    if not ok.any():
-        return None
-    i = int(np.nonzero(ok)[0][np.argmin(np.abs(np.nonzero(ok)[0] - 20))])
-    lo, hi, flo = ts[i], ts[i + 1], fs[i]
-    for _ in range(60):
-        mid = 0.5 * (lo + hi)
-        fm = f(mid)[0]
-        if not math.isfinite(fm):
-            return None
-        if np.sign(fm) == np.sign(flo):
-            lo, flo = mid, fm
-        else:
-            hi = mid
-    return f(lo if abs(flo) <= abs(f(hi)[0]) else hi)[1]
-
-
-def _slid(x: np.ndarray, s: float, t: float) -> np.ndarray:
-    """x with x_2 slid by s v_3 (v_i = x_{i+1} - x_i: keeps A_3 = det(v_2, v_3)) and x_1 at
-    t on the line that keeps A_2 = A_3 (as _match_start's): still an affine arc-length
-    polyline, every joint G2."""
-    y = x.copy()
-    v3 = x[4] - x[3]
-    A = float(v3[1] * (x[3] - x[2])[0] - v3[0] * (x[3] - x[2])[1])
-    y[2] = x[2] + s * v3
-    v2 = y[3] - y[2]
-    n2 = float(np.hypot(*v2))
-    u = v2 / n2
-    y[1] = y[2] - (t * u + (A / n2) * np.array([u[1], -u[0]]))
-    return y
-
-
-def _hold_start(x: np.ndarray, start, end, kappa: float, tangent) -> Optional[np.ndarray]:
-    """The polyline x (>= 8 vertices) with x_1, x_2 slid (_slid) so that g2_bspline(x, start,
-    end) starts with curvature kappa AND along the unit ``tangent``, or None (Newton on
-    (s, t) from the polyline's own, finite-difference Jacobian, backtracking; no root with
-    |s| <= 0.5, t within 0.5..1.5 x its own). Two end vertices give the two freedoms one
-    (_match_start) lacks: the end parabola keeps the source's tangent too (QA17 P4: 0.68
-    deg off at 24 edges, a kink where the source joined a line G1). Worked relative to
-    x_0 (QA18 W3: at a GIS offset (5e5, 5e6) the poles' differences carried ~ulp(5e6)/edge
-    ~2e-9 rad, above the 1e-9 accepted, and the end fell back: 0.9 deg off)."""
-    origin = x[0].copy()
-    x, start, end = x - origin, np.asarray(start) - origin, np.asarray(end) - origin
-    u = (x[3] - x[2]) / np.hypot(*(x[3] - x[2]))
-    t0 = float((x[2] - x[1]) @ u)
-    scale = np.array([1.0, abs(t0)])
-
-    def f(z):
-        if not (abs(z[0]) <= 0.5 and 0.5 * abs(t0) <= abs(z[1]) <= 1.5 * abs(t0)):
-            return None, None
-        y = _slid(x, *z)
-        try:
-            bs = g2_bspline(y, start, end)
-        except DomainError:
-            return None, None
-        d = bs.poles[1] - bs.poles[0]
-        angle = math.atan2(d[0] * tangent[1] - d[1] * tangent[0], d @ tangent)
-        return np.array([(_start_curvature(bs) - kappa) / abs(kappa), angle]), y
-
-    z = np.array([0.0, t0])
-    r, y = f(z)
-    for _ in range(60):
-        if r is None:
-            return None
-        if np.max(np.abs(r)) < 1e-12:
-            return y + origin
-        J = np.empty((2, 2))
-        for j in range(2):
-            dz = np.zeros(2)
-            dz[j] = 1e-7 * scale[j]
-            rj = f(z + dz)[0]
-            if rj is None:
-                return None
-            J[:, j] = (rj - r) / dz[j]
-        try:
-            step = np.linalg.solve(J, -r)
-        except np.linalg.LinAlgError:
-            return None
-        lam = 1.0
-        while lam > 1e-4:
-            r2, y2 = f(z + lam * step)
-            if r2 is not None and np.linalg.norm(r2) < np.linalg.norm(r):
-                break
-            lam /= 2.0
-        else:
-            break                           # no step improves: rounding's floor, or none
-        z, r, y = z + lam * step, r2, y2
-    return y + origin if np.max(np.abs(r)) < 1e-9 else None   # rounding: ~1e-10 at 1000 edges
-
-
-def _matched_ends(x: np.ndarray, start, end, k_start: Optional[float],
-                  k_end: Optional[float], t_start=None,
-                  t_end=None) -> Tuple[np.ndarray, np.ndarray, list]:
-    """The piece's polyline with x_1 / x_{m-1} moved so its G2 spline's ends have the
-    curvatures k_start / k_end (None, 0 or no such place: that end as it was); and that
-    polyline with, where the unit tangents t_start / t_end are given and m >= 7, x_1, x_2 /
-    x_{m-1}, x_{m-2} moved instead so they have those tangents too (_hold_start; no such
-    place: the curvature alone), each end's moves found once for both. The two ends' moves
-    are independent for m >= 5 (x_1 depends on x_2, x_3 only; x_{m-1} on x_{m-2}, x_{m-3}),
-    for m >= 7 with x_2, x_{m-2} moved (on x_3, x_4 / x_{m-3}, x_{m-4}); fewer vertices are
-    left as they are. Third: whether each end's tangent was held, [start, end] (None: not
-    tried)."""
-    holds = [None, None]
-    if len(x) < 6:
-        return x, x, holds
-    y, held = x.copy(), x.copy()
-    if k_start:
-        z = _match_start(x, start, end, k_start)
-        if z is not None:
-            y[1] = held[1] = z[1]
-        if t_start is not None and len(x) >= 8:
-            z = _hold_start(x, start, end, k_start, t_start)
-            if z is not None:
-                held[1:3] = z[1:3]
-            holds[0] = z is not None
-    if k_end:     # the same at the end, travelled backwards (its curvature changes sign)
-        r = x[::-1].copy()
-        z = _match_start(r, end, start, -k_end)
-        if z is not None:
-            y[-2] = held[-2] = z[1]
-        if t_end is not None and len(x) >= 8:
-            z = _hold_start(r, end, start, -k_end, -np.asarray(t_end))
-            if z is not None:
-                held[-3:-1] = z[2:0:-1]
-            holds[1] = z is not None
-    return y, held, holds
-
-
 def _rel_err(a: float, b: float, scale: float = 0.0) -> float:
     """|a - b| / max(|a|, |b|) (scale 0), or |a - b| / max(|b|, scale): relative to the
     source's curvature scale (end_curvature_error; QA13: near an end of zero curvature the
@@ -710,7 +549,7 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                               k_src[0] if first else None, k_src[1] if last else None,
                               ends_dir[p] if held and first else None,
                               ends_dir[p + 1] if held and last else None)
-        gave_up = None          # why the held ends were given up, if they were
+        gave_up = [None, None]  # why each held end was given up, if it was
         try:
             bs = g2_bspline(x, ends[p], ends[p + 1])
         except DomainError as exc:       # an end beside its joint's tangent: noisy points
@@ -731,14 +570,34 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
             # the source's end tangents held too, unless that takes the piece farther from
             # the source (a loop at 12 edges: 0.0277 against 0.0214, its ends 8.8 deg off)
             if not np.array_equal(xt, x):
-                bt = g2_bspline(xt, ends[p], ends[p + 1])
-                tdev = max([pmid] + [_spline_deviation(bt, samples, t_ends[p], t_ends[p + 1], q)
-                                     for q in parts])
-                if tdev <= pdev * (1.0 + 1e-6):      # (1e-12 apart by rounding alone)
-                    x, bs, pdev = xt, bt, tdev
-                else:                                # held ends given up: said as missed
-                    gave_up = (f"holding it takes the spline farther from the source "
-                               f"({tdev:.3g} against {pdev:.3g})")
+                # both held ends, else (farther) each alone: one end's held parabola can
+                # take the spline farther where the other's does not (the spans they move
+                # are apart), and was given up with it
+                cands = [xt]
+                if holds[0] and holds[1]:
+                    one = x.copy()
+                    one[1:3] = xt[1:3]
+                    other = x.copy()
+                    other[-3:-1] = xt[-3:-1]
+                    cands += [one, other]
+                best = None
+                for ci, xc in enumerate(cands):
+                    bt = g2_bspline(xc, ends[p], ends[p + 1])
+                    tdev = max([pmid] + [_spline_deviation(bt, samples, t_ends[p],
+                                                           t_ends[p + 1], q) for q in parts])
+                    if ci == 0:
+                        tboth = tdev
+                    if tdev <= pdev * (1.0 + 1e-6):      # (1e-12 apart by rounding alone)
+                        best = (ci, xc, bt, tdev)
+                        break
+                if best is not None:
+                    ci, x, bs, pdev = best
+                if best is None or best[0] > 0:          # given up: said as missed
+                    kept = {None: -1, 1: 0, 2: 1}[None if best is None else best[0]]
+                    for e in (0, 1):
+                        if holds[e] and e != kept:
+                            gave_up[e] = (f"holding it takes the spline farther from the "
+                                          f"source ({tboth:.3g} against {pdev:.3g})")
         poly[a:b + 1] = x
         kl, kr = quadratic_joint_curvatures(bs)
         if len(kl):
@@ -753,7 +612,7 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                 terr = max(terr, err)
                 if own:
                     serr.append(err)
-                    why = {True: gave_up, False: NO_G2_END}.get(holds[j])
+                    why = {True: gave_up[j], False: NO_G2_END}.get(holds[j])
                     if why:
                         missed.append((("start", "end")[j], err, why))
         splines.append(bs)
