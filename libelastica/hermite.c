@@ -386,6 +386,22 @@ int el__hermite_polish(const hframe *fr, double sigma, double tol, el_hermite_so
     return end_curvatures(s);
 }
 
+/* polish (once even where the residual is within tol: a start that meets the ends to just
+ * tol is polished below it), then again while it improves and misses tol (a start ~1e-3 off:
+ * the chord method's four steps from there), polish_fixed_k where it still misses tol, in
+ * either mode (target: the given sigma or length), and the end curvatures from the curve
+ * (hermite_case3.c's curves) */
+int el__hermite_polish_to(const hframe *fr, int mode, double target, double tol, el_hermite_solution *s)
+{
+    for (int i = 0; i < 4 && (i == 0 || s->residual > tol); i++) {
+        const double before = s->residual;
+        polish(fr, mode, target, s);
+        if (!(s->residual < before)) break;
+    }
+    if (s->residual > tol) polish_fixed_k(fr, mode, target, s);
+    return end_curvatures(s);
+}
+
 /* The circular arc from (p0, t0) through p1, if it ends with tangent t1: curvature
  * c = 2 det(t0, P) / |P|^2 (P = p1 - p0), turning angle 2 beta (beta: from t0 to P).
  * A circle is an elastica for sigma = c^2 (kappa_m^2 = sigma, F = 0), where the
@@ -704,6 +720,13 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
             }
             sol[n++] = nearly;
         }
+    }
+    /* next to case 3 (P2 = V1 = 0: the U-turn), where the x chart's solutions crowd into
+     * O(|P2|) of the case's four kappa0 (hermite_case3.c) */
+    if (fabs(pr.P2) <= EL__HERMITE_CASE3_NEAR && fabs(pr.V1) <= EL__HERMITE_CASE3_NEAR && pr.hcase != 3 &&
+        el__hermite_near_case3(&fr, u0, &pr, opt, &sol, &n, &cap)) {
+        if (unrep != ubuf) free(unrep);
+        return EL_ENOMEM;
     }
     if (el__hermite_add_images(&fr, opt, Ln, &sol, &n, &cap)) {
         if (unrep != ubuf) free(unrep);

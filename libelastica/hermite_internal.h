@@ -10,6 +10,7 @@
  *                        hermite_length_internal.h);
  *   hermite_chain.c      a solution near the separatrix as a chain split at its saddles;
  *   hermite_near.c       the near-straight solution under tension, from the linear beam;
+ *   hermite_case3.c      the solutions next to case 3 (the U-turn), polished from case 3's;
  *   hermite.c            the public entry points: normalisation, world-frame solutions.
  */
 #ifndef EL_HERMITE_INTERNAL_H
@@ -235,11 +236,23 @@ int el__hermite_same_solution(const el_hermite_solution *a, const el_hermite_sol
  * its residual, which can be above tol). */
 int el__hermite_polish(const hframe *fr, double sigma, double tol, el_hermite_solution *s);
 int el__hermite_near_straight(const hframe *fr, double sigma, double tol, el_hermite_solution *s);
+/* el__hermite_polish in either mode (target: the mode's sigma or length): once, then again
+ * while it improves and misses tol. */
+int el__hermite_polish_to(const hframe *fr, int mode, double target, double tol, el_hermite_solution *s);
 /* hermite_near.c: a near-straight root's solution s checked against the root's state st (its
  * end curvatures within 10 % of it: EL_OK, with s's end curvatures and inflection set). */
 int el__hermite_near_check(const hframe *fr, const hstate *st, el_hermite_solution *s);
 /* hermite_symmetry.c: the solution list closed under the problem's symmetries. */
 int el__hermite_add_images(const hframe *fr, const el_hermite_options *opt, double Ln,
                            el_hermite_solution **sol, size_t *n, size_t *cap);
+
+/* hermite_case3.c: where max(|P2|, |V1|) <= EL__HERMITE_CASE3_NEAR (case 1 or 2 next to
+ * case 3), the solutions of the case-3 problem polished onto the data, each added to the list
+ * (*sol, *n, capacity *cap) unless there (el__hermite_same_solution); u0 the unit t0.
+ * EL_ENOMEM (the list freed) where it cannot grow. */
+#define EL__HERMITE_CASE3_NEAR 1e-3
+int el__hermite_near_case3(const hframe *fr, const double u0[2], const hprob *pr,
+                           const el_hermite_options *opt, el_hermite_solution **sol, size_t *n,
+                           size_t *cap);
 
 #endif

@@ -610,3 +610,33 @@ def test_the_fair_u_is_found_at_every_scale_and_place(scale):
         for c in s:
             xy = c.points(np.array([0.0, c.length]))
             assert np.abs(xy - np.array([p0, p1])).max() <= 1e-10 * scale + 4e-16 * abs(off * scale)
+
+
+@pytest.mark.parametrize("mode, value", [("tension", 5.0), ("tension", 0.5), ("length", 1.5),
+                                         ("length", 2.5), ("length", 4.0)])
+def test_a_u_turn_keeps_its_solutions_when_its_data_move(mode, value):
+    # QA21 F1: (0, 0) t (0, 1) to (1, 0) t (0, -1) has 4 solutions; p1 moved by 1e-12, or t0
+    # turned by 1e-12 rad, gave 0 (1e-8: 1 or 2), silently, and so did the same U-turn turned
+    # by 0.5 rad and shifted by (3000, -2100) (the rounding of the shift moves it so)
+    def rot(v, a):
+        return np.array([np.cos(a) * v[0] - np.sin(a) * v[1], np.sin(a) * v[0] + np.cos(a) * v[1]])
+    p0, t0, p1, t1 = np.zeros(2), np.array([0.0, 1.0]), np.array([1.0, 0.0]), np.array([0.0, -1.0])
+    ref = sorted(c.energy_value for c in el.hermite(p0, t0, p1, t1, **{mode: value}))
+    assert len(ref) == 4
+    cases = []
+    for eps in (1e-14, 1e-12, 1e-10, 1e-8, 1e-6, 1e-4, 1e-2):
+        for dp in ((eps, 0.0), (0.0, eps), (-eps, 0.0), (0.0, -eps)):
+            cases.append((eps, 1.0, p0, t0, p1 + dp, t1))
+        cases.append((eps, 1.0, p0, rot(t0, eps), p1, t1))
+        cases.append((eps, 1.0, p0, t0, p1, rot(t1, -eps)))
+    for scale in (1e-3, 1.0, 1e5):
+        off = np.array([3000.0, -2100.0]) * scale
+        cases.append((1e-12, scale, off, rot(t0, 0.5), rot(p1 * scale, 0.5) + off, rot(t1, 0.5)))
+    for eps, scale, a, ta, b, tb in cases:
+        kw = {mode: value / scale ** 2 if mode == "tension" else value * scale}
+        s = el.hermite(a, ta, b, tb, **kw)
+        assert len(s) == 4 and s.unrepresentable == 0, (eps, scale, a, ta, b, tb)
+        for c in s:
+            _check_ends(c, a, ta, b, tb)
+        e = sorted(c.energy_value * scale for c in s)
+        assert np.allclose(e, ref, rtol=20 * eps + 1e-9)

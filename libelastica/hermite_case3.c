@@ -1,0 +1,77 @@
+/*
+ * Hermite solutions next to case 3 of seed 004's Theorem 6 (P2 = V1 = 0 in the normalised
+ * frame: p1 - p0 across t0 and t1 along +-t0, the U-turn and its parallel twin).
+ *
+ * Case 1 takes kappa0 as its unknown x and reads kappa1 from (19) and kappa0' from (20),
+ * both over P2 (or (15) over 2 V1). As P2, V1 -> 0 every solution's kappa0 tends to one of
+ * case 3's four values (24), kappa0^2 = sigma or (P1 kappa0 + 2)^2 = sigma P1^2 + 4 V2, while
+ * its kappa0' stays O(1): the solutions crowd into x-windows O(|P2| + |V1|) wide, across
+ * which the objective sweeps O(1), and the bracketing's samples (12 over the whole interval)
+ * step over them. QA21 F1: the U-turn p0 (0, 0) t0 (0, 1), p1 (1, 0) t1 (0, -1) at tension
+ * 5 has 4 solutions; p1 moved by 1e-12, or t0 turned by 1e-12 rad, 0, silently; 1e-8: 1 or
+ * 2; the same U-turn rotated by 0.5 rad and shifted by (3000, -2100), whose rounding is such
+ * a move, 0 at every scale.
+ *
+ * Case 3's own chart (x = kappa0', kappa0 fixed by the family) is regular there. So within
+ * max(|P2|, |V1|) <= EL__HERMITE_CASE3_NEAR the case-3 problem of the same p0, t0, |p1 - p0|
+ * and mode (p1 moved onto the line across t0, t1 turned onto +-t0) is solved too, and each of
+ * its curves is polished onto the true data (hermite.c's Newton on the curve's parameters,
+ * from a start O(|P2| + |V1|) off): continuous in the data, as the solutions are where they
+ * are simple (implicit function theorem), and accepted only at the true data's residual <=
+ * tol and within one curvature period (the solution set's bound; a whole-period curve of the
+ * case-3 problem moves past it on one side). The general path's solutions stay as they are
+ * (a curve found by both is the general path's, el__hermite_same_solution).
+ * Not covered: a case-3 curve at the separatrix (|k| within ~1e-5 of 1: a chain of pieces,
+ * or a piece the polish cannot move onto the data), met in length mode below ~1.25 |p1 - p0|
+ * (QA21's tight U): such a curve is still lost where the general path misses it (24 of 1502
+ * random U-turns moved by 1e-14 .. 3e-3, all length mode).
+ */
+#include "hermite_internal.h"
+#include <stdlib.h>
+
+/* Whether the curve p is at most one curvature period long (to 1e-12 relative): kappa =
+ * kappa_m cn(u; k), period 4 K(k) in u, for |k| < 1; kappa = 2 k sqrt(mu) dn(|k| u; 1/|k|),
+ * period 2 K(1/|k|) in |k| u, for |k| > 1 (the header's parametrisation). */
+static int within_period(const el_smooth_params *p)
+{
+    const double k = fabs(p->k), g = k < 1.0 ? k : 1.0 / k;
+    double K;
+    if (!(g < 1.0) || el__ellint_complete(g, (1.0 - g) * (1.0 + g), &K, NULL)) return 1;
+    const double period = (k < 1.0 ? 4.0 * K : 2.0 * K / k) / sqrt(p->mu);
+    return p->length <= period * (1.0 + 1e-12);
+}
+
+int el__hermite_near_case3(const hframe *fr, const double u0[2], const hprob *pr,
+                           const el_hermite_options *opt, el_hermite_solution **sol, size_t *n,
+                           size_t *cap)
+{
+    /* the case-3 data in the frame of fr (p0 = 0): the normalised frame's (+-1, 0) is
+     * d (t0_y, -t0_x) in the world's, its (0, +-1) +-t0 */
+    const double z[2] = {0.0, 0.0}, s1 = pr->P1 > 0.0 ? 1.0 : -1.0, s2 = pr->V2 > 0.0 ? 1.0 : -1.0;
+    const double q1[2] = {s1 * fr->d * u0[1], -s1 * fr->d * u0[0]}, v1[2] = {s2 * u0[0], s2 * u0[1]};
+    el_hermite_result r3;
+    const int rc = el_hermite_solve(z, u0, q1, v1, opt, &r3);
+    if (rc && rc != EL_EMAXITER) return EL_OK;   /* none to add: the general path's stand */
+    const double target = opt->mode == EL_HERMITE_TENSION ? opt->sigma : opt->length;
+    int status = EL_OK;
+    for (size_t i = 0; i < r3.count && !status; i++) {
+        el_hermite_solution t = r3.solutions[i];
+        /* a chain's pieces are polished by no one here (hermite_chain.c's own correction) */
+        if (t.npieces != 1 || el__hermite_residual(fr, &t, &t.residual)) continue;
+        if (el__hermite_polish_to(fr, opt->mode, target, opt->tol, &t)) continue;
+        if (!(t.residual <= opt->tol) || !within_period(&t.curve)) continue;
+        if (opt->mode == EL_HERMITE_TENSION) t.sigma = opt->sigma;
+        int dup = 0;
+        for (size_t j = 0; j < *n && !dup; j++) dup = el__hermite_same_solution(&t, &(*sol)[j], fr->d);
+        if (dup) continue;
+        if (*n == *cap) {
+            el_hermite_solution *more = realloc(*sol, 2 * (*cap + 1) * sizeof *more);
+            if (!more) { free(*sol); *sol = NULL; status = EL_ENOMEM; break; }
+            *sol = more;
+            *cap = 2 * (*cap + 1);
+        }
+        (*sol)[(*n)++] = t;
+    }
+    el_hermite_result_free(&r3);
+    return status;
+}
