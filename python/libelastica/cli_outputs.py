@@ -28,8 +28,8 @@ class ToStdout(str):
 def out_path(spec: Optional[str], source: str, ext: str, batch: bool):
     """Output path for one input: spec itself, spec with {stem} filled in, or (batch,
     no {stem}) a directory spec/ holding <stem><ext>; '-' (standard output) as it is.
-    Nothing is created here: :class:`Outputs` makes the directories when the file is
-    written."""
+    Nothing is created here: :class:`Outputs` makes the output's own directory (one
+    level) when the file is written."""
     if not spec:
         return None
     if spec == "-":
@@ -109,14 +109,24 @@ class Outputs:
             return tmp
         final = self.check(target)
         self._finals.add(os.path.abspath(final))
-        missing = []
+        # the output's own directory is made when its parent exists (out/{stem}.json, a
+        # batch's --svg pics: one level, as mkdir makes it); a path missing more is a typo
+        # (QA21 F7: --json /nonexistent/dir/x.json made /nonexistent/dir at the root, exit
+        # 0): refused, nothing made or written, as cp, tar and curl refuse it
         parent = final.parent
-        while not parent.exists():
-            missing.append(parent)
-            parent = parent.parent
-        for d in reversed(missing):
-            d.mkdir()
-            self._made.append(d)
+        if not parent.exists():
+            if not parent.parent.exists():
+                top = parent.parent
+                while not top.parent.exists():
+                    top = top.parent
+                raise InputError(f"{final}: no directory {top} (it makes only the output's "
+                                 f"own directory, {parent.name}, in one that exists)")
+            try:
+                parent.mkdir()
+            except OSError as exc:
+                raise InputError(f"{final}: cannot make its directory "
+                                 f"({exc.strerror})") from None
+            self._made.append(parent)
         try:
             fd, tmp = tempfile.mkstemp(prefix=f".{final.name}.", suffix=final.suffix or ".tmp",
                                        dir=str(final.parent))

@@ -153,13 +153,18 @@ def _parse_text(text: str, name: str, thousands: Optional[str] = None) -> np.nda
     # by the header's names, as the binding's tables are; else by position
     named = axis_columns(header) if header is not None and len(header) == width else None
     cols = named if named is not None else list(range(width))
+    if named is None:
+        _refuse_row_numbers(rows, width, delim, name)
     out = np.empty((len(rows), len(cols)))
     for r, (lineno, fields) in enumerate(rows):
-        bad = [fields[c] for c in cols if not _is_number(fields[c])]
+        bad = [c for c in cols if not _is_number(fields[c])]
         if bad:
             # the field itself: the fields joined again by commas showed a quoted field's
             # commas as separators ('102,697,4,576' for "102,697","4,576": QA)
-            raise InputError(f"{name}: line {lineno}: not a number: {bad[0]!r}")
+            label = "" if named is not None or any(_is_number(f[bad[0]]) for _, f in rows) \
+                else (f" (column {bad[0] + 1} holds no number: names? a header line naming "
+                      "the coordinate columns x, y (z) reads them)")
+            raise InputError(f"{name}: line {lineno}: not a number: {fields[bad[0]]!r}{label}")
         out[r] = [float(fields[c]) for c in cols]
         if not np.all(np.isfinite(out[r])):
             raise InputError(f"{name}: line {lineno}: not finite: "
@@ -168,6 +173,25 @@ def _parse_text(text: str, name: str, thousands: Optional[str] = None) -> np.nda
         raise InputError(f"{name}: {width} columns: name the coordinates x, y (and z) "
                          f"in a header line to read them from more columns, or give 2 or 3{hint}")
     return out
+
+
+def _refuse_row_numbers(rows, width: int, delim: Optional[str], name: str) -> None:
+    """InputError for 3 columns without a header whose first holds the rows' numbers, 0, 1,
+    2, ... or 1, 2, 3, ... written as integers (QA21 F8: pandas' to_csv(header=False), a
+    spreadsheet's row numbers; read as 3D points, a plane fit through (i, x, y) gave another
+    curve, saying nothing). It may also be a 3D scan's x at unit stations: which one a file
+    holds is the user's to say, in a header line, as for 4 columns or more."""
+    if width != 3 or len(rows) < 3 or not _INTEGER.fullmatch(rows[0][1][0]):
+        return
+    start = int(rows[0][1][0])
+    if start not in (0, 1) or any(not _INTEGER.fullmatch(f[0]) or int(f[0]) != start + i
+                                  for i, (_, f) in enumerate(rows)):
+        return
+    sep = {None: " ", "\t": "<TAB>"}.get(delim, delim)
+    raise InputError(
+        f"{name}: column 1 holds {start}, {start + 1}, ... {start + len(rows) - 1}, one per row "
+        "(the rows' numbers?): read as x it makes 3D points; say which in a header line "
+        f"above the rows: 'id{sep}x{sep}y' reads columns 2, 3 as x, y, 'x{sep}y{sep}z' all three")
 
 
 def _coordinate_fields(split) -> list:
@@ -235,25 +259,47 @@ def _thousands(split, delim, thousands: Optional[str], name: str) -> bool:
         return False
     if plain_cols & dotted_cols:
         return True
+    # Undecided: every coordinate is written d.ddd .. ddd.ddd, as both a fixed 3-decimal
+    # export (a scanner's or CMM's %.3f) and a decimal-comma locale's #.##0 (Excel,
+    # LibreOffice) write them, and none is a value only one of the two writes: a 0.250, a
+    # 1.5 or 1.2500, a 1234.5 or plain 1250 (decimal point); a 1.250,5, a 1.234.567 or a 980
+    # above a 1.000 (grouping). A minus sign decides nothing: #.##0 writes -1250 '-1.250'.
+    # The two readings differ by 1000 exactly, so the user says which (readfix).
     ln, f = first
+    point, grouped = float(f), int(f.replace('.', ''))
     raise InputError(
-        f"{name}: line {ln}: {f!r} is {float(f)!r} or {int(f.replace('.', ''))}: the file "
-        "does not show whether '.' is a decimal point or groups thousands; say which "
-        "(command line: --thousands . or --thousands none; read_points(thousands='.') or "
-        "thousands=''), or write the numbers with decimals")
+        f"{name}: line {ln}: {f!r} is {point!r} or {grouped}: every coordinate is written "
+        "with 3 digits after one '.', as a 3-decimal export and a '.'-grouped #.##0 both "
+        "write them, and none shows which (no 0.5, 1.25 or 1250; no 1.250,5 or 980); say "
+        f"which (command line: --thousands none reads {point!r}, --thousands . reads "
+        f"{grouped}; read_points(thousands='') or thousands='.')")
 
 
 def _decimal_commas_between(lines, sep) -> bool:
     """Whether lines holding commas are numbers with decimal commas separated by ``sep``
     (tabs, or None: any whitespace; an export as '1,5<TAB>0,25' or '1,5 0,25': QA, refused
     as 'not a number'): every line but a header splits at ``sep`` into numbers, some
-    written with a decimal comma."""
+    written with a decimal comma. Or (readfix) beside a column of text, as a German Excel's
+    or LibreOffice's tab export writes a point name or a date ('P1<TAB>12,5<TAB>3,25',
+    '17.05.2024<TAB>12,5<TAB>3,25', split at the commas before): every line splits into as
+    many fields, at least two columns hold a number in every line, some with a decimal
+    comma, and the others a number in none (a label, whatever its commas)."""
     rows = [[f.strip() for f in ln.split(sep) if f.strip()] for ln in lines]
     while rows and not any(_is_number(f) or _DECIMAL_COMMA.fullmatch(f) for f in rows[0]):
         rows = rows[1:]                                   # a title, a header
-    return bool(rows) and all(len(r) > 1 for r in rows) and all(
-        _is_number(f) or _DECIMAL_COMMA.fullmatch(f) for r in rows for f in r) and any(
-        _DECIMAL_COMMA.fullmatch(f) for r in rows for f in r)
+    if not rows or any(len(r) < 2 for r in rows):
+        return False
+
+    def numeric(f):
+        return bool(_is_number(f) or _DECIMAL_COMMA.fullmatch(f))
+    if all(numeric(f) for r in rows for f in r):
+        return any(_DECIMAL_COMMA.fullmatch(f) for r in rows for f in r)
+    if len({len(r) for r in rows}) != 1:
+        return False
+    cols = list(zip(*rows))
+    nums = [c for c in cols if all(map(numeric, c))]
+    return len(nums) >= 2 and all(not any(map(numeric, c)) for c in cols if c not in nums) \
+        and any(_DECIMAL_COMMA.fullmatch(f) for c in nums for f in c)
 
 
 def _is_number(s: str) -> bool:

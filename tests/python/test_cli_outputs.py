@@ -260,3 +260,17 @@ def test_blend_says_an_ill_conditioned_interpolation_and_its_loop(work, capsys):
     assert len(lines) == 2 and all(x.startswith("elastica blend: warning: ") for x in lines), err
     assert f"lie up to {rec['spread']:.3g} times as far apart" in lines[0] and "loops" in lines[1]
     assert rec["warnings"] == [x.removeprefix("elastica blend: warning: ") for x in lines]
+
+
+def test_a_missing_directory_above_the_outputs_is_refused(work, capsys):
+    """QA21 F7: `--json /nonexistent/dir/x.json` made /nonexistent/dir and exited 0. A path
+    missing more than the output's own directory is refused (exit 2), naming the first
+    missing directory, nothing made or written; the output's own directory in one that
+    exists is made as before (out/a.json, a batch's out/{stem}.json)."""
+    code, _, err = cli(capsys, "fit", "a.csv", "--json", "nodir/sub/x.json", "--svg", "ok.svg")
+    assert code == 2 and "nodir/sub/x.json: no directory nodir " in err, err
+    assert sorted(p.name for p in work.iterdir()) == ["a.csv"]
+    code, _, err = cli(capsys, "fit", "a.csv", "--json", "deep/er/still/x.json")
+    assert code == 2 and "no directory deep " in err and not (work / "deep").exists(), err
+    code, _, err = cli(capsys, "fit", "a.csv", "--json", "new/x.json")
+    assert code == 0 and (work / "new" / "x.json").is_file(), err
