@@ -25,7 +25,7 @@ from .units import (floor_digits, length_mark, length_text, length_unit_mark, pe
                     tension_text, tension_unit_mark)
 from .proxy import (FeatureProxy, InputProblem, add_enum, add_geometry_index, add_length,
                     add_link, add_per_area, add_property, attach_view, bound_expression,
-                    check_bound_per_area, check_degree, check_number, check_tolerance,
+                    check_degree, check_number, check_tolerance,
                     read_only, set_said, VERSION)
 
 MODES = ["length", "tension"]
@@ -665,8 +665,6 @@ class BlendProxy(FeatureProxy):
         """blend_core's dict for the linked edges, plus the chosen solution's B-spline."""
         e1, e2 = self.ends(obj)
         plane = self.sketch_plane(obj)
-        if obj.Mode == "tension":
-            check_bound_per_area(obj, "Tension")
         value = float(obj.Length) if obj.Mode == "length" else obj.Tension
         g2 = obj.Continuity == "G2"
         r = self.handed(blend_core, e1, obj.AtEnd1, e2, obj.AtEnd2, plane, obj.Mode, value,

@@ -108,6 +108,14 @@ def input_key(obj):
                     h.update(repr((st.st_mtime_ns, st.st_size)).encode())
                 except OSError:
                     h.update(b"no file")
+        # the unit of each bound expression's value: a float input drops it (a cell '=2 mm'
+        # and then a plain '2' give D = 2 both), and bound.check_bound_units refuses one
+        for p, expr in sorted(dict(getattr(obj, "ExpressionEngine", [])).items()):
+            try:
+                unit = str(getattr(obj.evalExpression(expr), "Unit", ""))
+            except Exception:           # FreeCAD's own error on the expression: said by it
+                unit = "not evaluated"
+            h.update(repr(("bound", p, expr, unit)).encode())
         # where its Shape is drawn: written in its container's coordinates (set_shape), it is
         # written again once that container moved
         h.update(repr(("holder", _stable(holder_placement(obj)))).encode())

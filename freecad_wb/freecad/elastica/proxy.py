@@ -222,24 +222,6 @@ def check_number(name, value, lo=None, hi=None, unit="", lo_open=False, why=""):
                        + (f" ({why})" if why else ""))
 
 
-def check_bound_per_area(obj, name):
-    """InputProblem where property ``name`` (a tension, a PER_AREA in 1/mm^2) is bound
-    to an expression whose unit is not 1/length^2: FreeCAD gives a precision property the
-    value and drops the unit (a cell's '=5 mm' read as 5 1/mm^2, QA19gui F9); a plain
-    number is taken in 1/mm^2."""
-    expr = bound_expression(obj, name)
-    if not expr:
-        return
-    try:
-        q = obj.evalExpression(expr)
-    except Exception:                 # FreeCAD's own error on the expression: said by it
-        return
-    unit = getattr(q, "Unit", None)
-    if unit is not None and unit != App.Units.Unit() and unit != App.Units.Unit(-2):
-        raise InputProblem(f"{name} is bound to {expr} = {q.UserString}: a {name.lower()} is "
-                           "in 1/length^2 (e.g. '=0.002 / mm^2') or a plain number (1/mm^2)")
-
-
 def check_tolerance(value, name="Tolerance"):
     """A B-spline tolerance in mm: finite, at least 1e-9 mm (below that nothing is
     measured, and a FreeCAD file stores 16 decimals)."""
@@ -488,7 +470,9 @@ class FeatureProxy:
     def _computed(self, obj):
         """compute and apply: (None, True), or (the failure's message, whether it is kept:
         an InputProblem, the input's, not a bug's)."""
+        from .bound import check_bound_units
         try:
+            check_bound_units(obj)      # a cell of another unit (QA19gui F9, QA21gui F1)
             r = self.compute(obj)
         except InputProblem as exc:
             return str(exc), True

@@ -23,7 +23,7 @@ from .links import followed_edge, followed_reader
 from .units import (ceil_digits, coordinate_mark, floor_digits, length_mark, length_unit_mark,
                     reach_mark, say, tension_mark)
 from .proxy import (FeatureProxy, InputProblem, add_edge_end, add_enum, add_geometry_index,
-                    add_length, add_link, add_per_area, add_property, check_bound_per_area,
+                    add_length, add_link, add_per_area, add_property,
                     check_degree, check_number, check_tolerance, edge_end_choice, new_feature,
                     read_only, set_said)
 from .sources import gather_vertices
@@ -518,8 +518,6 @@ class SplineProxy(FeatureProxy):
                                      curve_ordered=True, link="Points", element=element,
                                      said=said)
         followed = self.follow_source(obj, pts)
-        if obj.Mode == "tension":
-            check_bound_per_area(obj, "Tension")
         try:
             r = self.handed(spline_core, pts, plane, obj.Mode, obj.Tension, float(obj.Length),
                             obj.Closed, *self.end_specs(obj), tol=float(obj.Tolerance),

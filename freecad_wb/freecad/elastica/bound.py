@@ -1,0 +1,101 @@
+"""Inputs bound to an expression (a spreadsheet cell, an alias): the unit of its value checked
+against the property's. FreeCAD 0.20 gives a bound property the expression's value whatever its
+unit: a float or precision property drops the unit (a cell '=5 mm' read as a tension of 5
+1/mm^2, QA19gui F9), a quantity property takes it as its own (a Length bound to '=0.002 / mm^2'
+was solved as 0.002 mm, "length 2 um is not longer than ..." and then showed "120.0 1/mm^2" once
+the cell was a plain 120; ResampleStep '=3 s' taken as 3 mm: QA21gui F1; Part::Box does the
+same). Every bound input is refused when its value has another unit, the message naming the
+cell's value and the unit expected; a quantity property left with a foreign unit gets its own
+back once the expression's value is right (restore_unit)."""
+from __future__ import annotations
+
+import FreeCAD as App
+
+from .kept import is_input
+from .proxy import LENGTH, PER_AREA, InputProblem, bound_expression
+
+_U = App.Units.Unit
+# what a bound value of each kind may be: (its unit, 'a <noun> is in <this>', an example,
+# the unit a plain number is taken in)
+_LENGTH = (_U(1), "a unit of length", "=12 cm", "mm")
+_KINDS = {LENGTH: _LENGTH,
+          PER_AREA: (_U(-2), "1/length^2", "=0.002 / mm^2", "1/mm^2")}
+# float inputs with a unit (their tooltips'); every other float / integer input is a plain number
+_FLOATS = {"StartCurvature": (_U(-1), "1/length", "=0.02 / mm", "1/mm"),
+           "EndCurvature": (_U(-1), "1/length", "=0.02 / mm", "1/mm"),
+           "Scale": (_U(2), "length^2", "=500 mm^2", "mm^2"),
+           "Stiffness": (App.Units.Quantity("1 N*mm^2").Unit, "force x length^2",
+                         "=2e5 N*mm^2", "N mm^2")}
+_PLAIN = ("App::PropertyFloat", "App::PropertyInteger")
+
+
+def _words(name):
+    """'ResampleStep' -> 'resample step' (the noun of the message)."""
+    return "".join(" " + c.lower() if c.isupper() and i else c.lower()
+                   for i, c in enumerate(name))
+
+
+def said(q):
+    """A quantity in the unit the schema picks, to 6 digits: not its UserString's 2 decimals
+    (0.002 1/mm^2 said "0.00 1/mm^2")."""
+    _, factor, unit = q.getUserPreferred()
+    return f"{q.Value / factor:.6g} {unit}"
+
+
+def expected(obj, name):
+    """(unit, its words, an example, a plain number's unit) of input ``name``; (None, ...) for
+    a plain number; None where no unit is known (a link, a string...)."""
+    kind = obj.getTypeIdOfProperty(name)
+    if kind in _KINDS:
+        return _KINDS[kind]
+    if kind in _PLAIN:
+        return _FLOATS.get(name, (None, "", "", ""))
+    return None
+
+
+def check_bound_units(obj):
+    """InputProblem for the first input of ``obj`` bound to an expression whose value has a
+    unit other than the property's (a plain number is taken in the property's unit); a
+    quantity property whose unit an earlier value changed gets its own back (restore_unit)."""
+    for name, expr in sorted(dict(getattr(obj, "ExpressionEngine", [])).items()):
+        if name not in obj.PropertiesList or not is_input(obj, name):
+            continue
+        want = expected(obj, name)
+        if want is None:
+            continue
+        try:
+            q = obj.evalExpression(expr)
+        except Exception:             # FreeCAD's own error on the expression: said by it
+            continue
+        unit = getattr(q, "Unit", None)
+        if unit is not None and unit != _U() and unit != want[0]:
+            noun = _words(name)
+            if want[0] is None:
+                raise InputProblem(f"{name} is bound to {expr} = {said(q)}: {name} is a "
+                                   "plain number (no unit)")
+            article = "an" if noun[0] in "aeiou" else "a"
+            raise InputProblem(f"{name} is bound to {expr} = {said(q)}: {article} {noun} "
+                               f"is in {want[1]} (e.g. '{want[2]}') or a plain number "
+                               f"({want[3]})")
+        if want is _LENGTH:
+            restore_unit(obj, name)
+
+
+def restore_unit(obj, name):
+    """Give the length property ``name`` its unit back where a bound value of another unit
+    set it (FreeCAD's PropertyQuantity::setPathValue keeps the unit of any value with one;
+    setting it from Python refuses a quantity of another unit: 'Not matching Unit!'): the
+    property is made again, its value, expression, group, tooltip and editor mode kept."""
+    value = getattr(obj, name)
+    if getattr(value, "Unit", _U(1)) in (_U(1), _U()):
+        return
+    expr, group = bound_expression(obj, name), obj.getGroupOfProperty(name)
+    tip, mode = obj.getDocumentationOfProperty(name), obj.getEditorMode(name)
+    v = float(value)
+    obj.setExpression(name, None)
+    obj.removeProperty(name)
+    obj.addProperty(LENGTH, name, group, tip)
+    setattr(obj, name, v)
+    obj.setEditorMode(name, mode)
+    if expr:
+        obj.setExpression(name, expr)
