@@ -1205,6 +1205,10 @@ def run():
     import gui_typed_units
     gui_typed_units.run_all(sys.modules[__name__])
 
+    # an open panel follows its feature's recompute (a cell it is bound to changed)
+    import gui_bound_follow
+    gui_bound_follow.run_all(sys.modules[__name__])
+
     # a document saved by an older build with a feature out of date opens recomputed
     import gui_reopen_old
     gui_reopen_old.run_all(sys.modules[__name__])

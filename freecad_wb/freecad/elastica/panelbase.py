@@ -101,6 +101,11 @@ class _Watch:
         if self.mine(doc):
             self.panel.lost("its document closed")
 
+    def slotRecomputedDocument(self, doc):
+        # a recompute not the panel's (a cell its feature is bound to changed): it follows
+        if self.mine(doc):
+            QtCore.QTimer.singleShot(0, self.panel.follow_recompute)
+
     def slotCommitTransaction(self, doc):
         # a command run while the panel is open commits every pending transaction as it
         # opens its own (Std_Delete: App::Application::setActiveTransaction)

@@ -20,6 +20,7 @@ class ExpressionFields:
         return bound_expression(self.obj, prop)
 
     def mark_bound(self, box, prop):
+        self.__dict__.setdefault("fields", []).append((box, prop))     # (follow_recompute)
         expr = self.expression(prop)
         if expr:
             box.bind_mark(expr, lambda: self.edit_expression(box, prop))
@@ -60,3 +61,19 @@ class ExpressionFields:
         self.obj.touch()
         self.update()
         self.show_value(box, float(getattr(self.obj, prop)))
+
+    def follow_recompute(self):
+        """After a recompute of the document (panelbase._Watch): the boxes of bound properties
+        show their values of now and the results follow (refresh). A cell the feature is bound
+        to changed while its panel was open: the feature was solved again but the panel kept
+        the old tension, length and solutions (QA21gui F2). Its own preview's recompute too:
+        nothing changes then."""
+        if self.gone or self.closing:
+            return
+        try:
+            for box, prop in self.__dict__.get("fields", ()):
+                if self.expression(prop):
+                    self.show_value(box, float(getattr(self.obj, prop)))
+            self.refresh()
+        except ReferenceError:      # its feature deleted meanwhile: the watch closes the panel
+            pass
