@@ -15,7 +15,7 @@ from .containers import set_shape
 from .geometry import dedup, el, global_element, global_shape, np
 from .links import followed_reader
 from .proxy import (FeatureProxy, InputProblem, add_geometry_index, add_link, add_property,
-                    new_feature, read_only, report)
+                    new_feature, read_only, report, sub_names)
 from .sources import nothing_read
 
 SCALE_SHARE = 0.12    # automatic scale: the longest tooth is this share of the extent
@@ -243,7 +243,8 @@ class CombProxy(FeatureProxy):
 
 def make(doc, source, subs=(), **props):
     """A new curvature comb of ``source`` (optionally of its edges ``subs``)."""
-    return new_feature(doc, "ElasticaComb", CombProxy, Source=(source, list(subs)), **props)
+    return new_feature(doc, "ElasticaComb", CombProxy,
+                       Source=(source, [n for n in sub_names(subs) if n]), **props)
 
 
 __all__ = ["CombProxy", "comb_core", "make", "oriented_extent", "shape_extent"]

@@ -22,9 +22,9 @@ from . import defaults
 from .containers import set_shape
 from .geometry import el, ends_meet, np, part_bspline, plane_coordinates, to_3d
 from .links import followed_reader
-from .proxy import (FeatureProxy, InputProblem, add_enum, add_geometry_index, add_length,
-                    add_link, add_property, check_number, check_tolerance, new_feature, read_only,
-                    set_said)
+from .proxy import (FeatureProxy, InputProblem, add_enum, add_geometry_index, add_length, add_link,
+                    add_property, check_number, check_tolerance, new_feature, read_only, set_said,
+                    source_list)
 from .sources import gather_vertices
 from .units import exact_mark, say
 
@@ -218,7 +218,7 @@ def make(doc, sources=(), **props):
     """A new elliptic blend curve of picked points; ``sources`` [(obj, [subnames])];
     props set Mode, Closed, K, KConvention, D, Tolerance."""
     return new_feature(doc, "ElasticaEllipticBlend", EllipticBlendProxy,
-                       Points=[(o, tuple(s) or ("",)) for o, s in sources], **props)
+                       Points=source_list(sources), **props)
 
 
 __all__ = ["EllipticBlendProxy", "ellblend_core", "make", "MODES", "K_CONVENTIONS"]

@@ -21,7 +21,7 @@ from .geometry import binding_module, el, part_bspline, to_3d
 from .links import followed_edge, followed_reader
 from .proxy import (FeatureProxy, InputProblem, add_edge_end, add_enum, add_geometry_index,
                     add_length, add_link, add_property, edge_end_choice, new_feature, read_only,
-                    set_said)
+                    set_said, source_list)
 from .sources import THOUSANDS, gather_points
 from .units import say
 
@@ -274,7 +274,7 @@ def make(doc, sources=(), csv_file="", **props):
     if "PinEnds" in props:                       # the version-1 name (recorded macros)
         props["PinStart"] = props.pop("PinEnds")
     return new_feature(doc, "ElasticaFit", FitProxy,
-                       Source=[(o, tuple(s) or ("",)) for o, s in sources],
+                       Source=source_list(sources),
                        CsvFile=csv_file or "", **props)
 
 

@@ -16,7 +16,7 @@ from .containers import set_shape
 from .geometry import bspline_edges, el, np, plane_coordinates, plane_curvature, to_3d
 from .links import followed_reader
 from .proxy import (FeatureProxy, InputProblem, add_geometry_index, add_link, add_property,
-                    new_feature, read_only, set_said)
+                    new_feature, read_only, set_said, source_list)
 from .sources import gather_edges, sample_chain
 from .units import length_mark
 
@@ -168,7 +168,7 @@ class G2QuadProxy(FeatureProxy):
 def make(doc, sources=(), **props):
     """A new G2 quadratic B-spline of the picked edges ``sources`` [(obj, [subnames])]."""
     return new_feature(doc, "ElasticaG2Quad", G2QuadProxy,
-                       Source=[(o, tuple(s) or ("",)) for o, s in sources], **props)
+                       Source=source_list(sources), **props)
 
 
 __all__ = ["G2QuadProxy", "g2quad_core", "make"]

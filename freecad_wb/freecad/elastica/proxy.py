@@ -375,6 +375,19 @@ def abort_transaction(doc, name):
         App.closeActiveTransaction(True)
 
 
+def sub_names(subs):
+    """A picked object's subelement names as a tuple (("",): the whole object): a list of
+    names, or one name as a string ("Edge1", "": taken letter by letter, "KeylineSketch has
+    no E", QA21gui F6)."""
+    names = (subs,) if isinstance(subs, str) else tuple(subs)
+    return names or ("",)
+
+
+def source_list(sources):
+    """[(obj, subnames)] of a make's ``sources``, each one's subnames as sub_names reads."""
+    return [(o, sub_names(s)) for o, s in sources]
+
+
 def new_feature(doc, name, proxy_class, **props):
     """A Part::FeaturePython ``name`` in ``doc`` with a ``proxy_class`` proxy, its
     properties set in the order given, and its view provider (GUI)."""

@@ -23,9 +23,8 @@ from .links import followed_edge, followed_reader
 from .units import (ceil_digits, coordinate_mark, floor_digits, length_mark, length_unit_mark,
                     reach_mark, say, tension_mark)
 from .proxy import (FeatureProxy, InputProblem, add_edge_end, add_enum, add_geometry_index,
-                    add_length, add_link, add_per_area, add_property,
-                    check_degree, check_number, check_tolerance, edge_end_choice, new_feature,
-                    read_only, set_said)
+                    add_length, add_link, add_per_area, add_property, check_degree, check_number,
+                    check_tolerance, edge_end_choice, new_feature, read_only, set_said, source_list)
 from .sources import gather_vertices
 
 MODES = ["tension", "length"]
@@ -597,7 +596,7 @@ def make(doc, sources=(), **props):
             o, sub = props[end]
             props[end] = (o, [sub] if isinstance(sub, str) else list(sub))
     return new_feature(doc, "ElasticaSpline", SplineProxy,
-                       Points=[(o, tuple(s) or ("",)) for o, s in sources], **props)
+                       Points=source_list(sources), **props)
 
 
 __all__ = ["SplineProxy", "NoSpline", "spline_core", "starting_tension", "make", "duck_forces",
