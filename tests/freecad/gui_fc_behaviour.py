@@ -220,10 +220,42 @@ def sketch_during_panel(new):
     App.closeDocument(doc.Name)
 
 
+def enter_is_ok():
+    """QA21gui F4: Enter in a panel's number box is OK, as in FreeCAD's own task panels (its
+    task view clicks the default button): the value typed is solved and the panel closes,
+    the feature kept in one undo step; the READMEs said a typed value is solved "at Enter"
+    as if the panel stayed open."""
+    from freecad.elastica import taskpanels as T
+    doc = S.new_doc("ElasticaEnter")
+    lines = S.two_lines_sketch(doc)
+    doc.recompute()
+    G.run_on(doc, "Elastica_Blend", [(lines, "Edge1"), (lines, "Edge2")])
+    G.wait(300)
+    panel = T.CURRENT[0]
+    name = panel.obj.Name
+    if panel.obj.Mode != "tension":
+        panel.mode.setCurrentIndex(1)
+        G.wait(300)
+    G.type_into(panel.tension, "0.003")
+    # (its press closes the panel: no box is left for the release)
+    QtGui.QApplication.sendEvent(panel.tension, QtGui.QKeyEvent(
+        QtCore.QEvent.KeyPress, QtCore.Qt.Key_Return, QtCore.Qt.NoModifier, "\r"))
+    G.pump(20)
+    b = doc.getObject(name)
+    G.check(not T.CURRENT and Gui.Control.activeDialog() is False and b is not None
+            and b.Tension == 0.003 and not b.Status.startswith("error")
+            and doc.UndoNames[:1] == ["Elastic blend"] and not doc.HasPendingTransaction,
+            f"F4: Enter in the Tension box is OK, as FreeCAD's own panels: 0.003 solved, the "
+            f"panel closed, one undo step ({bool(T.CURRENT)}, {b and b.Tension}, "
+            f"{doc.UndoNames[:2]})")
+    App.closeDocument(doc.Name)
+
+
 def run_all(smoke):
     global G
     G = smoke
     typing_pace()
+    enter_is_ok()
     wrong_selection()
     model_names()
     sketch_during_panel(new=True)

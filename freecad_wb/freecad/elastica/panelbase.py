@@ -24,7 +24,8 @@ from .units import length_text, say, unit_names
 CURRENT = []        # the open panel, if any (scripts and the GUI smoke test drive it)
 DELAY_MS = 150      # recompute after this pause in editing (arrows, wheel, choices)
 # and after this one in typing: a person types a key in about 250 ms, and every prefix of a
-# number was solved ('1', '15', '150'); Enter or leaving the box solves at once
+# number was solved ('1', '15', '150'); leaving the box solves at once, and Enter too before
+# FreeCAD's task view takes it as OK (its default button), as in its own panels
 TYPING_MS = 600
 WARNING_RGB = "#b36200"   # the amber of FreeCAD's report-view warnings, dark enough to read
 ERROR_RGB = BAD_RGB
