@@ -22,11 +22,17 @@ CONTINUITIES = ["tangent", "G1", "G2"]
 CONTINUITY_NAMES = {"tangent": "Tangent only", "G1": "G1", "G2": "G2"}
 
 
+# an edge whose tangent leaves the fit plane by more than this (degrees) is said to be
+# projected (QA21gui F7): below it, the tilt of a plane fitted to scanned points
+TILT_SAID = 0.1
+
+
 def tangent_angle(edge, at, forward, plane, at_end=None):
-    """(angle, at_end): the angle in ``plane`` of ``edge``'s tangent at its end nearest
+    """(angle, at_end, tilt): the angle in ``plane`` of ``edge``'s tangent at its end nearest
     to ``at`` (``at_end`` True / False: at its end / start vertex, the end clicked; projected
-    into the plane), signed so it points along ``forward`` (a plane vector), and whether
-    that end is the edge's last."""
+    into the plane), signed so it points along ``forward`` (a plane vector), whether
+    that end is the edge's last, and the angle (degrees) by which the tangent leaves the
+    plane (0: in it)."""
     n = np()
     a, b = edge.FirstParameter, edge.LastParameter
     if at_end is None:
@@ -37,7 +43,8 @@ def tangent_angle(edge, at, forward, plane, at_end=None):
         raise InputProblem("the tangent edge is perpendicular to the fit plane")
     if t.x * forward[0] + t.y * forward[1] < 0:
         t = -t
-    return float(n.arctan2(t.y, t.x)), at_end
+    tilt = math.degrees(math.atan2(abs(t.z), math.hypot(t.x, t.y)))
+    return float(n.arctan2(t.y, t.x)), at_end, tilt
 
 
 def end_constraints(xy, plane, pin_start=False, pin_end=False, start_edge=None, end_edge=None,
@@ -52,8 +59,9 @@ def end_constraints(xy, plane, pin_start=False, pin_end=False, start_edge=None, 
     direction of travel); the edge's end may lie off the fit plane by up to ``tol`` (mm,
     the B-spline's tolerance: a plane fitted to scanned points is not the sketch's).
     Returns (constraints, warnings: a join whose edge leaves its joined end back towards
-    the points, which the curve meets only by turning back)."""
-    c, warnings = {}, []
+    the points, which the curve meets only by turning back; then a tangent's edge leaving
+    the plane, projected into it)."""
+    c, warnings, tilted = {}, [], []
     if pin_start:
         c["start_point"] = (float(xy[0][0]), float(xy[0][1]))
     if pin_end:
@@ -82,8 +90,15 @@ def end_constraints(xy, plane, pin_start=False, pin_end=False, start_edge=None, 
         if edge is None:
             continue
         at = plane.multVec(App.Vector(float(xy[i][0]), float(xy[i][1]), 0.0))
-        angle, at_end = tangent_angle(edge, at, forward, plane, which)
+        angle, at_end, tilt = tangent_angle(edge, at, forward, plane, which)
         c[f"{where}_tangent"] = angle
+        if tilt > TILT_SAID:
+            # its projection is used, said: a designer may mean a 3D edge's direction in the
+            # plane (a Box edge), but not silently (QA21gui F7: 55.6 deg, the curve bent at
+            # its start, said only as a higher rms); a blend's edges must be coplanar, a
+            # fit's tangent is a direction only
+            tilted.append(f"{End} tangent: its edge leaves the fit plane by {tilt:.1f}\u00b0; "
+                             "its direction projected into the plane is used")
         if join == "tangent":
             continue
         if edge.isClosed():   # its seam is no end: the join was 28 mm off, the fit looped
@@ -118,7 +133,7 @@ def end_constraints(xy, plane, pin_start=False, pin_end=False, start_edge=None, 
         if join == "G2":
             c[f"{where}_curvature"] = plane_curvature(
                 edge, at_end, (math.cos(angle), math.sin(angle)), plane, f"the {where} edge")
-    return c, warnings
+    return c, warnings + tilted
 
 
 def constraint_fields(start_join="tangent", end_join="tangent"):
