@@ -141,10 +141,14 @@ def wrong_selection():
             Gui.runCommand(name)
             G.wait(400)
             said = G.report_text()[r0:].strip()
+            menu = C.COMMANDS[name].menu
             G.check(len(found) == 1 and found[0][0] == "Wrong selection" and "Face1" in found[0][1]
+                    and found[0][1].startswith(f"{menu}: ")
+                    and f"Select {C.COMMANDS[name].needs}." in found[0][1]
                     and not said and S.doc_state(doc) == before and not Gui.Control.activeDialog(),
                     f"F7: {name} on a box's face: FreeCAD's modal 'Wrong selection' box "
-                    f"({found}), no report-view line ({said!r}), the document unchanged")
+                    f"naming the command and what to select (QA21gui F5) ({found}), no "
+                    f"report-view line ({said!r}), the document unchanged")
     finally:
         polling.clear()
     App.closeDocument(doc.Name)

@@ -40,26 +40,32 @@ def message(text, error=True):
         pass
 
 
-def wrong_selection(text):
+def wrong_selection(text, command="", needs=""):
     """Input a command cannot use, as FreeCAD's own commands say it (Part_RuledSurface,
     the Sketcher's constraints): a modal 'Wrong selection' box, not a red report-view
-    line (which popped the report view up); without the GUI a message."""
+    line (which popped the report view up); without the GUI a message. The box names the
+    command and what it takes (QA21gui F5: "Box.Face1: select edges, not Face1" named
+    neither)."""
     if not App.GuiUp:
         return message(text)
     from PySide import QtGui
     text = _kept(text)
-    QtGui.QMessageBox.warning(Gui.getMainWindow(), "Wrong selection", text[:1].upper() + text[1:])
+    text = text[:1].upper() + text[1:]
+    if command:
+        text = f"{command}: {text}" + (f"\n\nSelect {needs}." if needs else "")
+    QtGui.QMessageBox.warning(Gui.getMainWindow(), "Wrong selection", text)
 
 
-def _guarded(command):
-    """Run ``command(selection, wrong=wrong_selection)`` (a toolbar command); whatever goes
-    wrong otherwise becomes a message."""
+def _guarded(command, menu="", needs=""):
+    """Run ``command(selection, wrong=...)`` (a toolbar command; its 'Wrong selection' box
+    names ``menu`` and what it ``needs``); whatever goes wrong otherwise becomes a message."""
     problem = library_problem()
     if problem:
         message(problem)
         return None
     try:
-        return command(selection_sources(), wrong=wrong_selection)
+        return command(selection_sources(),
+                       wrong=lambda text: wrong_selection(text, menu, needs))
     except Exception as exc:
         message(f"{type(exc).__name__}: {exc}")
         return None
@@ -212,7 +218,7 @@ class _Command:
     take (``fits``: something selected, as Part_Offset2D; a selection it cannot use opens
     the 'Wrong selection' box, as Part_RuledSurface's)."""
 
-    pixmap = menu = tip = ""
+    pixmap = menu = tip = needs = ""       # needs: what to select ('Wrong selection' box)
 
     def GetResources(self):
         return {"Pixmap": icon(self.pixmap), "MenuText": self.menu, "ToolTip": self.tip}
@@ -225,7 +231,7 @@ class _Command:
         return App.ActiveDocument is not None and not dialog_open() and self.fits()
 
     def Activated(self):
-        _guarded(type(self).run)
+        _guarded(type(self).run, self.menu, self.needs)
 
 
 # ------------------------------------------------------------------ fit
@@ -270,6 +276,7 @@ def fit_sources(sources, csv_file="", open_panel=True, wrong=message, **options)
 
 class FitCommand(_Command):
     pixmap, menu = "fit", "Fit elastica"
+    needs = "sketch edges or vertices, a Points object or a 3D polyline (Draft wire, B-spline)"
     tip = ("Fit an elastica (discrete or smooth) to the selected sketch edges or "
            "vertices, a Points object or a 3D polyline; output a parametric feature "
            "and/or a B-spline in a sketch")
@@ -290,7 +297,7 @@ class FitCsvCommand(_Command):
             opts = csv_thousands(path, _ask_thousands)
             if opts is not None:                # None: the question cancelled
                 _guarded(lambda _sel, wrong: fit_sources([], csv_file=path, wrong=wrong,
-                                                         **opts))
+                                                         **opts), self.menu)
 
 
 def csv_thousands(path, ask):
@@ -389,6 +396,7 @@ def blend_sources(sources, open_panel=True, picks=None, wrong=message):
 
 class BlendCommand(_Command):
     pixmap, menu = "blend", "Elastic blend"
+    needs = "two coplanar edges, each clicked near the end to join"
     tip = ("Join two selected coplanar edges of the active document by an elastica, each "
            "at its end nearer where you clicked it (selected by a script, without a click: "
            "their nearest ends): the free batten, or every Hermite solution for a tension or "
@@ -401,7 +409,8 @@ class BlendCommand(_Command):
         return _selected_edges() == 2
 
     def Activated(self):
-        _guarded(lambda sel, wrong: blend_sources(sel, picks=selection_picks(), wrong=wrong))
+        _guarded(lambda sel, wrong: blend_sources(sel, picks=selection_picks(), wrong=wrong),
+                 self.menu, self.needs)
 
 
 # ------------------------------------------------------------------ elastic spline
@@ -450,6 +459,7 @@ def spline_sources(sources, open_panel=True, wrong=message, **options):
 
 class SplineCommand(_Command):
     pixmap, menu = "spline", "Elastic spline"
+    needs = "the points to pass through: sketch points or vertices, a Points object or a Draft wire"
     tip = ("The batten through the selected points (sketch points or vertices, a Points "
            "object, a Draft wire): elasticae of one tension, curvature continuous at every "
            "point; natural, tangent or G2 ends; closed; by tension or length")
@@ -486,6 +496,7 @@ def ellblend_sources(sources, open_panel=True, wrong=message, **options):
 
 class EllipticBlendCommand(_Command):
     pixmap, menu = "ellblend", "Elliptic blend curve"
+    needs = "three or more coplanar points in order (vertices), or a sketch of points"
     tip = ("A curve with Jacobi elliptic blending functions through picked coplanar "
            "points (or with them as control points): four make one segment, three or "
            "more a smooth chain of segments, open or closed; select vertices in order, "
@@ -518,6 +529,7 @@ def g2quad_sources(sources, open_panel=True, wrong=message, **options):
 
 class G2QuadCommand(_Command):
     pixmap, menu = "g2quad", "G2 quadratic B-spline"
+    needs = "one open edge or sketch curve"
     tip = ("A curvature-continuous uniform quadratic B-spline (seed 002) of the selected "
            "edge or sketch curve, ending exactly on it, split at its inflections")
     run = staticmethod(g2quad_sources)
@@ -557,6 +569,7 @@ def comb_sources(sources, wrong=message):
 
 class CombCommand(_Command):
     pixmap, menu = "comb", "Curvature comb"
+    needs = "Elastica results or edges"
     tip = "A parametric curvature comb along the selected Elastica results or edges"
     run = staticmethod(comb_sources)
 

@@ -42,7 +42,8 @@ def _check_points(points, mode, closed):
         raise InputProblem(f"{n} control points: a blend of n segments has 3 n + 1 (4, 7, "
                            "10, ...); through the points (Mode interpolate) any number >= 3")
     if n < 3:
-        raise InputProblem(f"{n} points: an elliptic blend passes through three or more")
+        raise InputProblem(f"{n} point{'' if n == 1 else 's'}: an elliptic blend passes "
+                           "through three or more")
     extent = max((a - b).Length for a in points for b in points)
     if n == 4 and not closed:
         pairs = [(i, j) for i in range(4) for j in range(i + 1, 4)]
@@ -94,7 +95,7 @@ def ellblend_core(points, plane=None, mode="interpolate", k=0.5, d=2.0, tol=1e-3
         d = D_THROUGH
     tol = check_tolerance(tol)
     try:
-        xy, plane = plane_coordinates(points, plane, flat=1e-6, what="the points")
+        xy, plane = plane_coordinates(points, plane, flat=1e-6, what="points")
         kw = {"k": float(k)} if convention == "modulus" else {"m": float(k)}
         with warnings.catch_warnings():     # in curve.warnings(), said once by the feature
             warnings.simplefilter("ignore", el().ConditionWarning)
