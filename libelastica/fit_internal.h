@@ -730,8 +730,8 @@ int el__fit_fallback(int model, const double *xy, size_t n, const el_fit_options
                      double *d, double *fs);
 /* fit_restart.c: a discrete fit paired by the spacing test alone (*res, d, fs) whose points
  * slip along its polygon from their vertices, fitted again by distance to the polygon from
- * its result; whose points jump a vertex (el__fit_skips), fitted by distance afresh (the
- * fit distance="orthogonal" gives); the refit replaces it when lower; res->status, or
+ * its result (when it converged); whose points jump a vertex (el__fit_skips), or slip from an
+ * unconverged fit, fitted by distance afresh (the fit distance="orthogonal" gives); the refit replaces it when lower; res->status, or
  * EL_ENOMEM. */
 int el__fit_unpaired(int model, const double *xy, size_t n, const el_fit_options *opt, fit_out *res, double *d,
                      double *fs);

@@ -279,10 +279,15 @@ int el__fit_unpaired(int model, const double *xy, size_t n, const el_fit_options
     if (!slips && !el__fit_skips(n, h, res->rms, fs)) return res->status;
     fit_out alt;
     double *buf;
-    /* slipping: from this fit's curve; a skipped vertex: afresh, as distance="orthogonal" */
-    const int st = rerun_from(model, xy, n, opt, EL_DISTANCE_ORTHOGONAL, 0, slips ? res : NULL, &alt, &buf);
+    /* slipping: from this fit's curve; a skipped vertex, or a paired fit that did not
+     * converge: afresh, as distance="orthogonal". (A scan denser than its noise at one end
+     * passes the spacing test, its segments all noise; its paired fit wanders to max_iter,
+     * rms 7.4 for noise 0.05 on QA21gui F3's 10 000 points, and Ipopt's refit from that
+     * curve ran for minutes through curves far from the points, where afresh it is 0.4 s.) */
+    const int from_fit = slips && res->status == EL_OK;
+    const int st = rerun_from(model, xy, n, opt, EL_DISTANCE_ORTHOGONAL, 0, from_fit ? res : NULL, &alt, &buf);
     if (st != EL_ENOMEM && alt.status != -1 && alt.rms < res->rms) {
-        if (slips) memcpy(alt.initial, res->initial, sizeof alt.initial);
+        if (from_fit) memcpy(alt.initial, res->initial, sizeof alt.initial);
         el__fit_replace(res, &alt, buf, n, d, fs);
     }
     free(buf);
