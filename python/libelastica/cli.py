@@ -24,8 +24,8 @@ from ._entry import INTERRUPTED
 from ._interrupt import end_if_a_call_runs, interruptible
 from ._text import coordinates
 from .cli_common import (ANGLE_UNITS, EXIT_BADINPUT, EXIT_INTERNAL, EXIT_NOCONV, EXIT_OK, PROG,
-                         _finite, _input_map, _mapped_bspline, _table, angle, said_warnings,
-                         thousands, thousands_option, tol_option)
+                         _finite, _input_map, _mapped_bspline, _table, angle, holding_advice,
+                         said_warnings, thousands, thousands_option, tol_option)
 from .cli_fit import cmd_fit, fit_constraints
 from .cli_g2quad import cmd_g2quad
 from .cli_outputs import Outputs, check_outputs
@@ -445,10 +445,16 @@ def cmd_spline(args) -> int:
             raise InputError(f"--{name}-tangent: a closed curve has no ends")
         ends[name] = None if t is None else (
             t if k is None else {"tangent": t, "curvature": _finite(k, f"--{name}-curvature")})
-    with warnings.catch_warnings():   # said below, in the CLI's words
-        warnings.simplefilter("ignore", el.LoopWarning)
-        warnings.simplefilter("ignore", el.UnstableWarning)
-        sp = el.elastic_spline(pts, **kw, start=ends["start"], end=ends["end"], closed=args.closed)
+    try:
+        with warnings.catch_warnings():   # said below, in the CLI's words
+            warnings.simplefilter("ignore", el.LoopWarning)
+            warnings.simplefilter("ignore", el.UnstableWarning)
+            sp = el.elastic_spline(pts, **kw, start=ends["start"], end=ends["end"],
+                                   closed=args.closed)
+    except el.DomainError as exc:     # no free batten: a tension seen to hold, if one is
+        if args.length is not None or args.tension != 0.0 or isinstance(exc, el.DoublesBackError):
+            raise
+        raise el.DomainError(exc.status, holding_advice(str(exc), pts, ends, args.closed)) from None
     if sp.loops:
         fix = (f"at tension {sp.tension:.6g}: give a larger --tension or a --length"
                if args.length is None else f"of length {args.length:g} (tension "

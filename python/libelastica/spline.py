@@ -19,6 +19,7 @@ from .bspline import smooth_chain_to_bspline
 from .core import SMOOTH_PARAMS, SmoothElastica, arc_lengths, chain_eval, chain_starts
 
 __all__ = ["DoublesBackError", "ElasticSpline", "LoopWarning", "SeamWarning", "UnstableWarning",
+           "holding_tension",
            "back_steps", "elastic_spline"]
 
 # A back-step (back_steps) shorter than this fraction of the points' extent is below any
@@ -256,6 +257,47 @@ def _fair_advice(pts: np.ndarray, closed: bool) -> str:
     return said
 
 
+# sigma P^2 (P: the polygon through the points) tried where no free batten passes the
+# points: the FreeCAD Elastic spline command's ladder (its spline.TENSION_MULTIPLES)
+HOLD_MULTIPLES = (1, 2, 5, 10, 20, 50, 100, 200, 500, 1000)
+
+
+# the advice of the DomainError at tension 0 (no free batten) for the API's user (the CLI
+# says its own: cli_common.holding_advice)
+SMALL_TENSION_TEXT = (" (a small tension may give a spline that loops, LoopWarning, or one a real "
+                      "batten would not hold, UnstableWarning: raise it until neither is warned; "
+                      "el.holding_tension(points) tries 1 .. 1000 / polygon^2 for one that holds)")
+
+
+def holding_tension(points, start=None, end=None, closed=False):
+    """For points no free batten passes: the least of HOLD_MULTIPLES / P^2 (3 digits; P the
+    polygon through the points) whose spline neither loops (:class:`LoopWarning`) nor is an
+    unstable equilibrium (:class:`UnstableWarning`), with ``start``, ``end`` and ``closed`` as
+    :func:`elastic_spline` takes them, as (multiple, tension, spline, P), each
+    solved here, so the tension named is one seen to hold; (None, None, None, P) where none
+    does. Up to 10 solves (the spike of the FreeCAD tests: 7, ~0.1-0.7 s): advice for an
+    error (the CLI's spline at tension 0), not part of every DomainError. Small tensions
+    typically give a spline that loops or one a real batten would not hold: such ducks'
+    least tension without loops is often unstable (that spike: 10 / P^2, 1.33 P long, would
+    snap; 100 / P^2, 1.17 P, holds)."""
+    pts = as_points(points, "points")
+    ring = np.vstack([pts, pts[:1]]) if closed else pts
+    polygon = float(np.sum(np.hypot(*np.diff(ring, axis=0).T)))
+    for m in HOLD_MULTIPLES:
+        tension = float(f"{m / polygon ** 2:.3g}")
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore", LoopWarning)
+                warnings.simplefilter("ignore", UnstableWarning)
+                warnings.simplefilter("ignore", SeamWarning)
+                sp = elastic_spline(pts, tension=tension, start=start, end=end, closed=closed)
+        except ValueError:            # none at this tension (ElasticaError: not converged)
+            continue
+        if not sp.loops and not sp.unstable:
+            return m, tension, sp, polygon
+    return None, None, None, polygon
+
+
 def _back_step_text(places, n) -> str:
     said = ", ".join(f"{i} to {(i + 1) % n}" for i in places[:4])
     return said + (f" and {len(places) - 4} more" if len(places) > 4 else "")
@@ -363,6 +405,20 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
     none does, the spline found with ``loops`` True and a :class:`LoopWarning`; pushed longer through ducks near a line, their line's
     buckled batten moved onto them (elastica.h, el_spline_solve).
 
+    Unstable: by tension > 0, or by length, the spline returned may be an equilibrium
+    that is no minimum of its energy with the ducks held (its second variation has a
+    negative direction): it passes every duck G2 and is fair to draw, but a real batten
+    bent so would not stay, it would snap to another shape. It is returned as it is, with
+    ``unstable`` True, ``unstable_span`` the span moving most, and an
+    :class:`UnstableWarning`. What to do: for a shape a batten holds, raise the tension
+    (or try another length, or ease the sharpest turn near that span); where no free
+    batten passes the points (tension 0 raises :class:`DomainError`), the least tension
+    just above where the spline stops looping is often unstable (the spike of the FreeCAD
+    tests: 10 / P^2, P the polygon) and a few times more holds (100 / P^2):
+    :func:`holding_tension` finds the least of 1 .. 1000 / P^2 that holds, solved.
+    At tension 0 an unstable free batten is not returned: it slides off its ducks
+    (DomainError, naming the span).
+
     ``initial`` (open curves): the spline to start from instead of the library's own
     start, n - 1 SmoothElastica through the points with these ends (G2 ends only
     tangent), e.g. the ``el.hermite`` solution a G2 blend between two edges should
@@ -377,7 +433,9 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
     Raises ``ValueError`` for bad input (coincident consecutive points, NaN, ``start`` /
     ``end`` given with ``closed=True``: a closed curve has no ends, ...),
     :class:`DomainError` when no such spline exists (a length not longer than
-    the polygon; tension 0 when the free batten would slide off its ducks; points that
+    the polygon; tension 0 when the free batten would slide off its ducks, its message
+    saying that a small tension may give a spline that loops or is unstable, and
+    :func:`holding_tension` finds one that holds; points that
     double back within their noise, :class:`DoublesBackError`: BACK_STEPS_MANY or more
     :func:`back_steps`, refused before solving, naming them; fewer are named in the error
     where no spline is found) and
@@ -529,7 +587,8 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
                      "counted from 0)") if res.slides else ""
             raise DomainError(st, "elastic_spline: no free-sliding batten (tension 0) passes "
                                   "these points: it slides off its ducks" + where + hint +
-                                  ("; else" if hint else ";") + " give a tension > 0 or a length")
+                                  ("; else" if hint else ";") + " give a tension > 0 or a length"
+                                  + SMALL_TENSION_TEXT)
         if st == lib.EL_ERANGE:
             lo, hi, fair = (float(res.reach[i]) for i in range(3))
             within = lo <= L <= hi

@@ -104,7 +104,7 @@ class CreateOnceTest(S.DocTest):
         self._count("elastic_spline")
         App.setActiveDocument(self.doc.Name)
         f = C.spline_sources([(dots, [])], False)
-        self.assertEqual(f.Tension, 6.57e-5)
+        self.assertEqual(f.Tension, 6.57e-4)   # the least that holds
         self._first_recompute_took_it(f, "elastic_spline")
 
     def test_elliptic_blend_is_computed_once(self):

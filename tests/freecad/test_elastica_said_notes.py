@@ -22,12 +22,12 @@ class SaidNotesTest(S.DocTest):
         spike = [App.Vector(x, y, 0) for x, y in
                  [(0, 0), (100, 0), (105, 100), (110, 0), (200, 0)]]
         tension, note = Sp.starting_tension(spike)
-        self.assertEqual(tension, 6.57e-5)
-        self.assertIn("Tension = 6.57e-05 1/mm\u00b2 instead (10 / the 390.2 mm polygon",
+        self.assertEqual(tension, 6.57e-4)   # the least that holds
+        self.assertIn("Tension = 0.000657 1/mm\u00b2 instead (100 / the 390.2 mm polygon",
                       say(note))
         App.Units.setSchema(3)
-        # 6.57e-5 / mm^2 x 25.4^2 = 0.042387 / in^2; 390.25 mm = 15.36 in
-        self.assertIn("Tension = 0.042387 1/in\u00b2 instead (10 / the 15.36 in polygon",
+        # 6.57e-4 / mm^2 x 25.4^2 = 0.42387 / in^2; 390.25 mm = 15.36 in
+        self.assertIn("Tension = 0.42387 1/in\u00b2 instead (100 / the 15.36 in polygon",
                       say(note))
 
     def test_starting_length_note_follows_the_schema(self):
@@ -134,12 +134,12 @@ class SaidNotesTest(S.DocTest):
         spike = [(0, 0), (100, 0), (105, 100), (110, 0), (200, 0)]
         sk = S.points_sketch(self.doc, spike, "Spike")
         f = C.spline_sources([(sk, [])], open_panel=False)
-        self.assertEqual(f.Tension, 6.57e-5)
+        self.assertEqual(f.Tension, 6.57e-4)
         note = saved_note(f)
-        self.assertIn("Tension = 6.57e-05 1/mm\u00b2 instead (10 / the 390.2 mm polygon",
+        self.assertIn("Tension = 0.000657 1/mm\u00b2 instead (100 / the 390.2 mm polygon",
                       say(note))
         self.assertEqual(json.loads(getattr(f, NOTE))["values"],
-                         {"Mode": "tension", "Tension": 6.57e-5})
+                         {"Mode": "tension", "Tension": 6.57e-4})
         self.assertEqual(f.getEditorMode(NOTE), ["Hidden"])
         (f,) = S.reopened(self, "note.FCStd", f.Name)
         self.assertEqual(saved_note(f), note)

@@ -772,8 +772,10 @@ class SplineTest(S.DocTest):
         """The spike's ducks: no free batten passes them. The command made nothing and
         opened no panel, its message asking for a tension or a length the user could not
         reach (QA); now the feature is made at the least tension of TENSION_MULTIPLES / P^2
-        whose batten does not loop (10 / (390.2 mm)^2), and the message says so (the
-        panel's warning line: the GUI smoke test)."""
+        whose batten does not loop and holds: 100 / (390.2 mm)^2, 456 mm. The least without
+        loops, 10 / P^2 (520 mm), is an unstable equilibrium (a real batten bent so would
+        snap): the command started there, its panel showing the note and that warning
+        together. The message says so (the panel's warning line: the GUI smoke test)."""
         spike = [(0, 0), (100, 0), (105, 100), (110, 0), (200, 0)]
         sk = S.points_sketch(self.doc, spike, "Spike")
         n0 = len(self.doc.Objects)
@@ -781,18 +783,40 @@ class SplineTest(S.DocTest):
         s = C.spline_sources([(sk, [])], open_panel=False)
         self.assertIsNotNone(s, C.MESSAGES)
         self.assertEqual(len(self.doc.Objects), n0 + 1)
-        self.assertEqual((s.Mode, s.Tension), ("tension", 6.57e-5))
-        # the fair batten through the ducks, though a real one bent so would snap (the
-        # least stable one of these tensions: 10 x this, 456 mm)
-        self.assertEqual(len(s.Warnings), 1, s.Warnings)
-        self.assertTrue(s.Status.startswith("ok; warning: the batten is an unstable equilibrium"), s.Status)
-        self.assertLess(s.SplineLength, 1.4 * 390.2498439450079)
+        self.assertEqual((s.Mode, s.Tension), ("tension", 6.57e-4))
+        self.assertEqual((s.Status, list(s.Warnings)), ("ok", []))     # it holds
+        self.assertLess(s.SplineLength, 1.2 * 390.2498439450079)
+        self.check_through_and_g2(s, self.global_ducks(spike))
         self.assertTrue(any("no free batten (tension 0) passes these points" in m and
-                            "Tension = 6.57e-05" in m and "give a length" in m
+                            "Tension = 0.000657" in m and "(100 / the" in m and
+                            "does not loop and holds" in m and "give a length" in m
                             for m in C.MESSAGES), C.MESSAGES)
+        s.Tension = 6.57e-5                    # 10 / P^2: fair, but it would snap
+        self.doc.recompute()
+        self.assertIn("unstable equilibrium", " ".join(s.Warnings))
         s.Tension = 3.28e-5                    # 5 / P^2: it loops
         self.doc.recompute()
         self.assertIn("loops away", " ".join(s.Warnings))
+
+    def test_no_batten_that_holds_the_command_starts_unstable(self):
+        """A spike 2 mm wide: no free batten; at TENSION_MULTIPLES / P^2 it loops up to 10,
+        is fair but unstable at 20 and 50, and loops again from 100 on (it crosses itself
+        near the tip): none holds. The command starts at the least without loops,
+        20 / (398 mm)^2, and its Status and Warnings say the batten is unstable, its note
+        that none of the tensions tried holds."""
+        spike = [(0, 0), (100, 0), (101, 100), (102, 0), (200, 0)]
+        sk = S.points_sketch(self.doc, spike, "Needle")
+        del C.MESSAGES[:]
+        s = C.spline_sources([(sk, [])], open_panel=False)
+        self.assertIsNotNone(s, C.MESSAGES)
+        self.assertEqual((s.Mode, s.Tension), ("tension", 0.000126))
+        self.assertEqual(len(s.Warnings), 1, s.Warnings)
+        self.assertTrue(s.Status.startswith("ok; warning: the batten is an unstable equilibrium"),
+                        s.Status)
+        self.assertNotIn("loops", s.Status)
+        self.check_through_and_g2(s, self.global_ducks(spike))
+        self.assertTrue(any("(20 / the" in m and "does not loop: none of them gives one that holds" in m
+                            for m in C.MESSAGES), C.MESSAGES)
 
     def test_command_records_a_feature(self):
         s = C.spline_sources([(self.sk, [])], open_panel=False, Tension=1e-4)

@@ -428,8 +428,8 @@ def spline_sources(sources, open_panel=True, wrong=message, **options):
 
     def check():
         """The free batten (the default); where none passes the points, a tension whose
-        batten does not loop (spline.starting_tension): the feature is made at it and its
-        panel opens, where the designer changes it. A mode or tension given: as given. The
+        batten does not loop and holds (spline.starting_tension): the feature is made at it
+        and its panel opens, where the designer changes it. A mode or tension given: as given. The
         spline solved is the new feature's first recompute's (``checked``: handed)."""
         pts, plane = src_mod.gather_vertices(sources, spline.DUCKS_NEED, edge_means_object=True,
                                              curve_ordered=True, element=element_as_followed)

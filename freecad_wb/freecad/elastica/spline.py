@@ -369,20 +369,27 @@ def seam_changes(shape, seams):
 
 
 # sigma P^2 (P: the polygon through the points): where no free batten passes the points,
-# the Elastic spline command starts at the least of these whose batten does not loop (the
-# QA's spike, P = 390 mm: loops up to 5, 1.33 P long at 10; a zigzag: 1.35 P at 1)
+# the Elastic spline command starts at the least of these whose batten does not loop and
+# holds (is no unstable equilibrium: el_spline_result.unstable); the QA's spike, P = 390 mm:
+# loops up to 5, unstable at 10 .. 50 (1.33 P long at 10), holds from 100 (1.17 P); a
+# zigzag: 1.35 P at 1
 TENSION_MULTIPLES = (1, 2, 5, 10, 20, 50, 100, 200, 500, 1000)
 
 
 def starting_tension(points, plane=None, closed=False, tol=1e-3, degree=BSPLINE_DEGREE,
                      hand=None):
     """A tension to start a spline by, where the free batten does not pass the points: the
-    least of TENSION_MULTIPLES / P^2 (3 digits) whose batten does not loop. Returns
-    (tension, note for the user: its figures marked, units.say); raises NoSpline when none
-    of them gives one. ``hand``: a list given its spline (kept.checked_call), for the
-    feature made at that tension (FeatureProxy.handed: computed once)."""
+    least of TENSION_MULTIPLES / P^2 (3 digits) whose batten does not loop and holds (not
+    ElasticSpline.unstable); where none holds, the least whose batten does not loop (its
+    Warnings say it is unstable). Each tension is solved once (the one returned is not
+    solved again: ``hand``). Returns (tension, note for the user: its figures marked,
+    units.say); raises NoSpline when none of them gives one. ``hand``: a list given its
+    spline (kept.checked_call), for the feature made at that tension (FeatureProxy.handed:
+    computed once)."""
     pts = list(points) + (list(points[:1]) if closed else [])
     polygon = sum((b - a).Length for a, b in zip(pts, pts[1:]))
+    ladder = f"{TENSION_MULTIPLES[0]:g} to {TENSION_MULTIPLES[-1]:g}"
+    fallback = None                      # the least without loops, unstable
     for m in TENSION_MULTIPLES:
         tension = float(f"{m / polygon ** 2:.3g}")
         try:
@@ -392,18 +399,27 @@ def starting_tension(points, plane=None, closed=False, tol=1e-3, degree=BSPLINE_
             raise
         except NoSpline:
             continue
-        if not checked[1]["spline"].loops:
-            if hand is not None:
-                hand.append(checked)
-            return tension, (f"no free batten (tension 0) passes these points (it slides off "
-                             f"its ducks): solved at Tension = {tension_mark(tension, polygon, 6)} "
-                             f"instead ({m:g} / the {length_mark(polygon, 4)} polygon through "
-                             "them squared, the "
-                             f"least of {TENSION_MULTIPLES[0]:g} to {TENSION_MULTIPLES[-1]:g} "
-                             "whose batten does not loop); change it, or give a length")
-    raise NoSpline("no free batten (tension 0) passes these points (it slides off its ducks), "
-                   f"nor one without loops at {TENSION_MULTIPLES[0]:g} to "
-                   f"{TENSION_MULTIPLES[-1]:g} / the polygon through them squared: give a length")
+        sp = checked[1]["spline"]
+        if sp.loops:
+            continue
+        if not sp.unstable:
+            fallback = (m, tension, checked, "whose batten does not loop and holds (a stable "
+                        "equilibrium)")
+            break
+        if fallback is None:
+            fallback = (m, tension, checked, "whose batten does not loop: none of them gives "
+                        "one that holds (a stable equilibrium) without loops")
+    if fallback is None:
+        raise NoSpline("no free batten (tension 0) passes these points (it slides off its ducks), "
+                       f"nor one without loops at {ladder} / the polygon through them squared: "
+                       "give a length")
+    m, tension, checked, which = fallback
+    if hand is not None:
+        hand.append(checked)
+    return tension, (f"no free batten (tension 0) passes these points (it slides off "
+                     f"its ducks): solved at Tension = {tension_mark(tension, polygon, 6)} "
+                     f"instead ({m:g} / the {length_mark(polygon, 4)} polygon through "
+                     f"them squared, the least of {ladder} {which}); change it, or give a length")
 
 
 class SplineProxy(FeatureProxy):

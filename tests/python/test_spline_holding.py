@@ -1,0 +1,96 @@
+"""Where no free batten passes the points (tension 0: DomainError), what tension to give:
+the least that gives a spline a real batten holds. The error says that a small tension may
+give one that loops or is unstable (a real batten bent so would snap) and names
+el.holding_tension; that function solves the FreeCAD command's ladder 1 .. 1000 / P^2 and
+returns the least tension whose spline neither loops nor is unstable; the CLI's spline at
+tension 0 names it, verified (the FreeCAD spike's least tension without loops, 10 / P^2,
+is unstable: the tension the designer was left to guess)."""
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+import pytest
+
+import libelastica as el
+from cli_run import cli
+
+SPIKE = [(0, 0), (100, 0), (105, 100), (110, 0), (200, 0)]       # mm, the FreeCAD command's
+NEEDLE = [(0, 0), (100, 0), (101, 100), (102, 0), (200, 0)]      # 2 mm wide: none holds
+# QA19 W2's sharp turn (x 10 mm, sketched by hand), far from the origin
+SHARP = np.array([(0, 0), (50, 0), (100, 3), (55, 12), (5, 16)], float) + (12345.6, -7.5)
+
+
+def polygon(points):
+    return float(np.sum(np.hypot(*np.diff(np.asarray(points, float), axis=0).T)))
+
+
+def quiet(points, tension):
+    """The spline at ``tension`` with every warning an error: it neither loops nor is unstable."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        return el.elastic_spline(points, tension=tension)
+
+
+@pytest.mark.parametrize("points, multiple", [(SPIKE, 100), (SHARP, 50)])
+def test_the_least_tension_that_holds(points, multiple):
+    with pytest.raises(el.DomainError, match="slides off its ducks"):
+        el.elastic_spline(points)
+    m, tension, sp, P = el.holding_tension(points)
+    assert (m, P) == (multiple, pytest.approx(polygon(points), rel=1e-12))
+    assert tension == float(f"{m / P ** 2:.3g}")
+    assert not sp.loops and not sp.unstable
+    again = quiet(points, tension)                    # holds, solved afresh
+    assert again.length == sp.length and again.length < 1.2 * P
+    # every smaller rung loops, is unstable, or has no spline: the least that holds
+    for k in el.spline.HOLD_MULTIPLES[:el.spline.HOLD_MULTIPLES.index(m)]:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            try:
+                low = el.elastic_spline(points, tension=float(f"{k / P ** 2:.3g}"))
+            except ValueError:
+                continue
+        assert low.loops or low.unstable, k
+
+
+def test_the_spike_at_its_least_tension_without_loops_would_snap():
+    """The tension the FreeCAD command started at (10 / P^2): fair, no loops, unstable."""
+    P = polygon(SPIKE)
+    with pytest.warns(el.UnstableWarning):
+        sp = el.elastic_spline(SPIKE, tension=float(f"{10 / P ** 2:.3g}"))
+    assert not sp.loops and sp.unstable
+
+
+def test_none_holds():
+    m, tension, sp, P = el.holding_tension(NEEDLE)
+    assert (m, tension, sp) == (None, None, None) and P == pytest.approx(polygon(NEEDLE))
+
+
+def test_the_error_says_a_small_tension_may_not_hold():
+    with pytest.raises(el.DomainError) as info:
+        el.elastic_spline(SPIKE, tension=0.0)
+    msg = str(info.value)
+    assert msg.index("give a tension > 0 or a length") < msg.index("a small tension may give")
+    for words in ("loops, LoopWarning", "would not hold, UnstableWarning",
+                  "el.holding_tension(points)"):
+        assert words in msg, msg
+
+
+def test_cli_names_a_tension_that_holds(capsys, tmp_path):
+    path = tmp_path / "spike.csv"
+    np.savetxt(path, SHARP, delimiter=",")            # 5 mm ducks 12 m from the origin
+    code, _, err = cli(capsys, "spline", path)
+    assert code == 2 and "slides off its ducks" in err, err
+    assert "--tension 0.0013 (50 / the polygon 196.141 squared) gives a fair spline that holds" \
+        in err, err
+    assert "LoopWarning" not in err and "holding_tension" not in err       # the API's words
+    code, out, err = cli(capsys, "spline", path, "--tension", "0.0013")
+    assert code == 0 and "warning" not in err, err
+
+
+def test_cli_says_where_none_holds(capsys, tmp_path):
+    path = tmp_path / "needle.csv"
+    np.savetxt(path, NEEDLE, delimiter=",")
+    code, _, err = cli(capsys, "spline", path, "--tension", "0")
+    assert code == 2 and "no tension of 1 .. 1000 / the polygon squared" in err, err
+    assert "give a --length" in err and "gives a fair spline" not in err
