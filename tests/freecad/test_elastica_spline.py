@@ -791,6 +791,12 @@ class SplineTest(S.DocTest):
                             "Tension = 0.000657" in m and "(100 / the" in m and
                             "does not loop and holds" in m and "give a length" in m
                             for m in C.MESSAGES), C.MESSAGES)
+        s.Tension = 0.0                        # the library's advice, in the panel's words
+        self.doc.recompute()
+        self.assertTrue(s.Status.startswith("error") and "slides off its ducks" in s.Status and
+                        "a small tension may give a batten that loops, or one a real batten "
+                        "bent so would not hold" in s.Status and "UnstableWarning" not in s.Status and
+                        "el.holding_tension" not in s.Status, s.Status)
         s.Tension = 6.57e-5                    # 10 / P^2: fair, but it would snap
         self.doc.recompute()
         self.assertIn("unstable equilibrium", " ".join(s.Warnings))

@@ -46,7 +46,13 @@ class DoublesBack(NoSpline):
 
 
 def _library_message(exc):
-    return str(exc).replace("elastic_spline: ", "")
+    """The binding's message in the workbench's words (its advice at tension 0 names the
+    Python API's warnings: said here for the panel)."""
+    return str(exc).replace("elastic_spline: ", "").replace(
+        binding_module("spline").SMALL_TENSION_TEXT,
+        " (a small tension may give a batten that loops, or one a real batten bent so would "
+        "not hold: raise it until the Warnings say neither; the Elastic spline command, "
+        "given no tension, starts at the least of 1 .. 1000 / P\u00b2 that holds)")
 
 
 def end_condition(edge, condition, point, neighbour, arriving, seam=False, at_end=None):
