@@ -258,7 +258,7 @@ def _fair_advice(pts: np.ndarray, closed: bool) -> str:
 
 
 # sigma P^2 (P: the polygon through the points) tried where no free batten passes the
-# points: the FreeCAD Elastic spline command's ladder (its spline.TENSION_MULTIPLES)
+# points: the FreeCAD Elastic spline command's ladder (freecad_wb spline.starting_tension reads this list)
 HOLD_MULTIPLES = (1, 2, 5, 10, 20, 50, 100, 200, 500, 1000)
 
 

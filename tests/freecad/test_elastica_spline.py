@@ -771,7 +771,7 @@ class SplineTest(S.DocTest):
     def test_no_free_batten_the_command_starts_at_a_tension(self):
         """The spike's ducks: no free batten passes them. The command made nothing and
         opened no panel, its message asking for a tension or a length the user could not
-        reach (QA); now the feature is made at the least tension of TENSION_MULTIPLES / P^2
+        reach (QA); now the feature is made at the least tension of HOLD_MULTIPLES / P^2
         whose batten does not loop and holds: 100 / (390.2 mm)^2, 456 mm. The least without
         loops, 10 / P^2 (520 mm), is an unstable equilibrium (a real batten bent so would
         snap): the command started there, its panel showing the note and that warning
@@ -805,7 +805,7 @@ class SplineTest(S.DocTest):
         self.assertIn("loops away", " ".join(s.Warnings))
 
     def test_no_batten_that_holds_the_command_starts_unstable(self):
-        """A spike 2 mm wide: no free batten; at TENSION_MULTIPLES / P^2 it loops up to 10,
+        """A spike 2 mm wide: no free batten; at HOLD_MULTIPLES / P^2 it loops up to 10,
         is fair but unstable at 20 and 50, and loops again from 100 on (it crosses itself
         near the tip): none holds. The command starts at the least without loops,
         20 / (398 mm)^2, and its Status and Warnings say the batten is unstable, its note

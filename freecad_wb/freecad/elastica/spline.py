@@ -374,18 +374,20 @@ def seam_changes(shape, seams):
     return out
 
 
-# sigma P^2 (P: the polygon through the points): where no free batten passes the points,
+# sigma P^2 (P: the polygon through the points; the binding's spline.HOLD_MULTIPLES, the list
+# el.holding_tension solves): where no free batten passes the points,
 # the Elastic spline command starts at the least of these whose batten does not loop and
 # holds (is no unstable equilibrium: el_spline_result.unstable); the QA's spike, P = 390 mm:
 # loops up to 5, unstable at 10 .. 50 (1.33 P long at 10), holds from 100 (1.17 P); a
 # zigzag: 1.35 P at 1
-TENSION_MULTIPLES = (1, 2, 5, 10, 20, 50, 100, 200, 500, 1000)
+def tension_multiples():
+    return binding_module("spline").HOLD_MULTIPLES
 
 
 def starting_tension(points, plane=None, closed=False, tol=1e-3, degree=BSPLINE_DEGREE,
                      hand=None):
     """A tension to start a spline by, where the free batten does not pass the points: the
-    least of TENSION_MULTIPLES / P^2 (3 digits) whose batten does not loop and holds (not
+    least of tension_multiples() / P^2 (3 digits) whose batten does not loop and holds (not
     ElasticSpline.unstable); where none holds, the least whose batten does not loop (its
     Warnings say it is unstable). Each tension is solved once (the one returned is not
     solved again: ``hand``). Returns (tension, note for the user: its figures marked,
@@ -394,9 +396,10 @@ def starting_tension(points, plane=None, closed=False, tol=1e-3, degree=BSPLINE_
     computed once)."""
     pts = list(points) + (list(points[:1]) if closed else [])
     polygon = sum((b - a).Length for a, b in zip(pts, pts[1:]))
-    ladder = f"{TENSION_MULTIPLES[0]:g} to {TENSION_MULTIPLES[-1]:g}"
+    multiples = tension_multiples()
+    ladder = f"{multiples[0]:g} to {multiples[-1]:g}"
     fallback = None                      # the least without loops, unstable
-    for m in TENSION_MULTIPLES:
+    for m in multiples:
         tension = float(f"{m / polygon ** 2:.3g}")
         try:
             checked = checked_call(spline_core, points, plane, "tension", tension,
