@@ -115,6 +115,21 @@ def _pkg_config(*args: str) -> list:
     return shlex.split(out)
 
 
+def _per_file_cflags(cc: list) -> dict:
+    """The Makefile's flags of one object alone: hermite_lanes_avx2.c, the four AVX2 lanes of
+    the Hermite objective (run only where the processor has AVX2, hermite_lanes.c's
+    __builtin_cpu_supports), is compiled with -mavx2 and without fused multiply-add on
+    x86-64 (the same test as the Makefile's: $CC -dumpmachine); elsewhere it builds empty."""
+    try:
+        machine = subprocess.run(cc + ["-dumpmachine"], check=True, capture_output=True,
+                                 text=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        machine = ""
+    if machine.startswith("x86_64"):
+        return {"hermite_lanes_avx2.c": ["-mavx2", "-ffp-contract=off"]}
+    return {}
+
+
 def _build_library(outdir: Path) -> Path:
     """Compile the C library into outdir/libelastica.so (the same flags as the Makefile,
     without -Werror: a newer compiler's warning must not break a user's install)."""
@@ -130,10 +145,11 @@ def _build_library(outdir: Path) -> Path:
     subprocess.run([sys.executable, "-E", str(HERE / PKG / "_cdef.py"), "--abi", str(inc / "elastica.h"),
                     str(objdir / "elastica_abi.h")], check=True)
     cflags = ["-std=c99", "-O2", "-fPIC", f"-I{inc}", f"-I{src}", f"-I{objdir}"] + _pkg_config("--cflags")
+    own = _per_file_cflags(cc)
 
     def compile_one(c: Path) -> Path:
         obj = objdir / (c.stem + ".o")
-        subprocess.run(cc + cflags + ["-c", str(c), "-o", str(obj)], check=True)
+        subprocess.run(cc + cflags + own.get(c.name, []) + ["-c", str(c), "-o", str(obj)], check=True)
         return obj
 
     sources = sorted(src.glob("*.c"))
