@@ -5,14 +5,13 @@ unit: a float or precision property drops the unit (a cell '=5 mm' read as a ten
 was solved as 0.002 mm, "length 2 um is not longer than ..." and then showed "120.0 1/mm^2" once
 the cell was a plain 120; ResampleStep '=3 s' taken as 3 mm: QA21gui F1; Part::Box does the
 same). Every bound input is refused when its value has another unit, the message naming the
-cell's value and the unit expected; a quantity property left with a foreign unit gets its own
-back once the expression's value is right (restore_unit)."""
+cell's value and the unit expected."""
 from __future__ import annotations
 
 import FreeCAD as App
 
 from .kept import is_input
-from .proxy import LENGTH, PER_AREA, InputProblem, bound_expression
+from .proxy import LENGTH, PER_AREA, InputProblem
 
 _U = App.Units.Unit
 # what a bound value of each kind may be: (its unit, 'a <noun> is in <this>', an example,
@@ -55,8 +54,12 @@ def expected(obj, name):
 
 def check_bound_units(obj):
     """InputProblem for the first input of ``obj`` bound to an expression whose value has a
-    unit other than the property's (a plain number is taken in the property's unit); a
-    quantity property whose unit an earlier value changed gets its own back (restore_unit)."""
+    unit other than the property's (a plain number is taken in the property's unit). A
+    quantity property an earlier value of another unit left in that unit keeps it on screen
+    until the document is reopened (FreeCAD's PropertyQuantity::setPathValue takes the unit
+    of any value with one, and does not save it; its Part::Box does the same); its value is
+    the number the feature solves. Not made again here: removing and adding the property
+    inside the cell edit's transaction lost it at Undo (test_elastica_bound_undo)."""
     for name, expr in sorted(dict(getattr(obj, "ExpressionEngine", [])).items()):
         if name not in obj.PropertiesList or not is_input(obj, name):
             continue
@@ -77,25 +80,4 @@ def check_bound_units(obj):
             raise InputProblem(f"{name} is bound to {expr} = {said(q)}: {article} {noun} "
                                f"is in {want[1]} (e.g. '{want[2]}') or a plain number "
                                f"({want[3]})")
-        if want is _LENGTH:
-            restore_unit(obj, name)
 
-
-def restore_unit(obj, name):
-    """Give the length property ``name`` its unit back where a bound value of another unit
-    set it (FreeCAD's PropertyQuantity::setPathValue keeps the unit of any value with one;
-    setting it from Python refuses a quantity of another unit: 'Not matching Unit!'): the
-    property is made again, its value, expression, group, tooltip and editor mode kept."""
-    value = getattr(obj, name)
-    if getattr(value, "Unit", _U(1)) in (_U(1), _U()):
-        return
-    expr, group = bound_expression(obj, name), obj.getGroupOfProperty(name)
-    tip, mode = obj.getDocumentationOfProperty(name), obj.getEditorMode(name)
-    v = float(value)
-    obj.setExpression(name, None)
-    obj.removeProperty(name)
-    obj.addProperty(LENGTH, name, group, tip)
-    setattr(obj, name, v)
-    obj.setEditorMode(name, mode)
-    if expr:
-        obj.setExpression(name, expr)
