@@ -12,8 +12,8 @@ from typing import List, Optional
 
 import numpy as np
 
-from ._ffi import (DomainError, LengthRangeError, NotConvergedError, as_int, as_points, as_real,
-                   check, dptr, ffi, lib)
+from ._ffi import (DomainError, ElasticaError, LengthRangeError, NotConvergedError, as_int,
+                   as_points, as_real, check, dptr, ffi, lib)
 from ._values import ValueEquality
 from .bspline import smooth_chain_to_bspline
 from .core import SMOOTH_PARAMS, SmoothElastica, arc_lengths, chain_eval, chain_starts
@@ -283,6 +283,9 @@ def holding_tension(points, start=None, end=None, closed=False):
     pts = as_points(points, "points")
     ring = np.vstack([pts, pts[:1]]) if closed else pts
     polygon = float(np.sum(np.hypot(*np.diff(ring, axis=0).T)))
+    if not polygon > 0:
+        raise ValueError("holding_tension: the points coincide (the polygon through them has "
+                         "length 0): a spline needs two distinct points")
     for m in HOLD_MULTIPLES:
         tension = float(f"{m / polygon ** 2:.3g}")
         try:
@@ -291,8 +294,10 @@ def holding_tension(points, start=None, end=None, closed=False):
                 warnings.simplefilter("ignore", UnstableWarning)
                 warnings.simplefilter("ignore", SeamWarning)
                 sp = elastic_spline(pts, tension=tension, start=start, end=end, closed=closed)
-        except ValueError:            # none at this tension (ElasticaError: not converged)
-            continue
+        except DoublesBackError:      # the points', at every tension: said as it is
+            raise
+        except ElasticaError:         # the solve's status: none at this tension (bad input,
+            continue                  # elastic_spline's plain ValueError, is raised: not "none")
         if not sp.loops and not sp.unstable:
             return m, tension, sp, polygon
     return None, None, None, polygon

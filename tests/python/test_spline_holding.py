@@ -94,3 +94,23 @@ def test_cli_says_where_none_holds(capsys, tmp_path):
     code, _, err = cli(capsys, "spline", path, "--tension", "0")
     assert code == 2 and "no tension of 1 .. 1000 / the polygon squared" in err, err
     assert "give a --length" in err and "gives a fair spline" not in err
+
+
+@pytest.mark.parametrize("points", [[(0, 0), (0, 0)], [(3, 4)] * 4,
+                                    [(0, 0), (1, 0), (1, 0), (2, 1)]])
+def test_holding_tension_refuses_bad_points(points):
+    """Bad points are a ValueError naming them, as el.elastic_spline's: not "no tension holds"
+    (None: the coincident pair was caught as 'none at this tension' at every rung) nor a
+    ZeroDivisionError (all points equal: polygon 0)."""
+    with pytest.raises(ValueError, match="coincid"):
+        el.holding_tension(points)
+    with pytest.raises(ValueError, match="coincid"):
+        el.holding_tension(points, closed=True)
+
+
+def test_holding_tension_says_points_that_double_back():
+    """Points that double back within their noise are refused before any solve, at every
+    tension (DoublesBackError): said as elastic_spline says it, not "none holds"."""
+    from test_spline_noise import stroke
+    with pytest.raises(el.DoublesBackError, match="double back on themselves"):
+        el.holding_tension(stroke())
