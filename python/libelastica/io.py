@@ -154,7 +154,8 @@ def _parse_text(text: str, name: str, thousands: Optional[str] = None) -> np.nda
     named = axis_columns(header) if header is not None and len(header) == width else None
     cols = named if named is not None else list(range(width))
     if named is None:
-        _refuse_row_numbers(rows, width, delim, name)
+        _refuse_row_numbers(rows, width, delim, name,       # (a title line is no header)
+                            header if header is not None and len(header) == width else None)
     out = np.empty((len(rows), len(cols)))
     for r, (lineno, fields) in enumerate(rows):
         bad = [c for c in cols if not _is_number(fields[c])]
@@ -175,12 +176,14 @@ def _parse_text(text: str, name: str, thousands: Optional[str] = None) -> np.nda
     return out
 
 
-def _refuse_row_numbers(rows, width: int, delim: Optional[str], name: str) -> None:
+def _refuse_row_numbers(rows, width: int, delim: Optional[str], name: str,
+                        header=None) -> None:
     """InputError for 3 columns without a header whose first holds the rows' numbers, 0, 1,
     2, ... or 1, 2, 3, ... written as integers (QA21 F8: pandas' to_csv(header=False), a
     spreadsheet's row numbers; read as 3D points, a plane fit through (i, x, y) gave another
     curve, saying nothing). It may also be a 3D scan's x at unit stations: which one a file
-    holds is the user's to say, in a header line, as for 4 columns or more."""
+    holds is the user's to say, in a header line, as for 4 columns or more. A header line
+    that names no x, y ('Nr,East,North') is there: the words ask to rename its columns."""
     if width != 3 or len(rows) < 3 or not _INTEGER.fullmatch(rows[0][1][0]):
         return
     start = int(rows[0][1][0])
@@ -188,10 +191,12 @@ def _refuse_row_numbers(rows, width: int, delim: Optional[str], name: str) -> No
                                   for i, (_, f) in enumerate(rows)):
         return
     sep = {None: " ", "\t": "<TAB>"}.get(delim, delim)
+    where = "in a header line above the rows" if header is None else \
+        f"by the names of its header line ({(delim or ' ').join(header)!r} names no x, y)"
     raise InputError(
         f"{name}: column 1 holds {start}, {start + 1}, ... {start + len(rows) - 1}, one per row "
-        "(the rows' numbers?): read as x it makes 3D points; say which in a header line "
-        f"above the rows: 'id{sep}x{sep}y' reads columns 2, 3 as x, y, 'x{sep}y{sep}z' all three")
+        f"(the rows' numbers?): read as x it makes 3D points; say which {where}: "
+        f"'id{sep}x{sep}y' reads columns 2, 3 as x, y, 'x{sep}y{sep}z' all three")
 
 
 def _coordinate_fields(split) -> list:

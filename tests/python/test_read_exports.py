@@ -111,3 +111,24 @@ def test_a_first_column_of_row_numbers_is_refused_naming_the_header(tmp_path, ca
                  "".join(f"{i + (i > 5)},{x},{y}\n" for i, (x, y) in enumerate(PTS)),
                  "".join(f"{i}.0,{x},{y}\n" for i, (x, y) in enumerate(PTS))):
         assert read_points(_write(tmp_path, "q.csv", text)).shape[0] == 25
+
+
+@pytest.mark.parametrize("head, sep", [("Nr,East,North", ","), ("Punkt;Rechtswert;Hochwert", ";")])
+def test_row_numbers_under_a_header_naming_no_axes_ask_to_rename_it(tmp_path, head, sep):
+    """A surveyor's export with a header line whose names are not x, y ('Nr,East,North') and
+    the rows' numbers in column 1 is refused as row numbers are; the words must not ask for
+    a header line above the rows (the file has one) but name it and ask to rename its
+    columns. A title line above headerless rows (no header: another width) still asks for
+    one."""
+    body = "".join(f"{i + 1}{sep}{x:.4f}{sep}{y:.4f}\n" for i, (x, y) in enumerate(PTS))
+    p = _write(tmp_path, "h.csv", head + "\n" + body)
+    with pytest.raises(InputError) as exc:
+        read_points(p)
+    msg = str(exc.value)
+    assert "above the rows" not in msg and repr(head) in msg and "names no x, y" in msg, msg
+    assert f"'id{sep}x{sep}y' reads columns 2, 3" in msg, msg
+    p = _write(tmp_path, "t.csv", "My scan of 2024\n" + body)
+    with pytest.raises(InputError, match="in a header line above the rows"):
+        read_points(p)
+    _write(tmp_path, "h.csv", f"id{sep}x{sep}y\n" + body)
+    assert np.allclose(read_points(tmp_path / "h.csv"), PTS, atol=5e-5)
