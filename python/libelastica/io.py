@@ -182,13 +182,20 @@ def _refuse_row_numbers(rows, width: int, delim: Optional[str], name: str,
     2, ... or 1, 2, 3, ... written as integers (QA21 F8: pandas' to_csv(header=False), a
     spreadsheet's row numbers; read as 3D points, a plane fit through (i, x, y) gave another
     curve, saying nothing). It may also be a 3D scan's x at unit stations: which one a file
-    holds is the user's to say, in a header line, as for 4 columns or more. A header line
+    holds is the user's to say, in a header line, as for 4 columns or more; a constant third
+    column is z (read: see below). A header line
     that names no x, y ('Nr,East,North') is there: the words ask to rename its columns."""
     if width != 3 or len(rows) < 3 or not _INTEGER.fullmatch(rows[0][1][0]):
         return
     start = int(rows[0][1][0])
     if start not in (0, 1) or any(not _INTEGER.fullmatch(f[0]) or int(f[0]) != start + i
                                   for i, (_, f) in enumerate(rows)):
+        return
+    # a constant third column is z (a plane curve: 'x y z' lines with z = 0, as FreeCAD's
+    # Points export and .xyz files write them, of points at x = 0, 1, 2, ...): read as before;
+    # as (row, x, y) its points would be a straight line at y = that constant
+    third = [f[2] for _, f in rows]
+    if all(_is_number(f) for f in third) and len({float(f) for f in third}) == 1:
         return
     sep = {None: " ", "\t": "<TAB>"}.get(delim, delim)
     where = "in a header line above the rows" if header is None else \

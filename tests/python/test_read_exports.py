@@ -132,3 +132,20 @@ def test_row_numbers_under_a_header_naming_no_axes_ask_to_rename_it(tmp_path, he
         read_points(p)
     _write(tmp_path, "h.csv", f"id{sep}x{sep}y\n" + body)
     assert np.allclose(read_points(tmp_path / "h.csv"), PTS, atol=5e-5)
+
+
+@pytest.mark.parametrize("sep", [" ", "\t", ","])
+def test_x_y_z_lines_of_a_plane_curve_at_unit_x_are_read(tmp_path, sep):
+    """'x y z' lines with z = 0 (FreeCAD's Points export, a .xyz file) of points sampled at
+    x = 0, 1, 2, ... were read as before 9011bd6 and then refused as row numbers: a constant
+    third column is z (as (row, x, y) they would be a straight line), so they are read, all
+    three columns, bit for bit. Row numbers beside x, y that vary stay refused."""
+    pts = np.array([(i, (i - 5) ** 2 / 10 + 0.125 * (i % 3), 0.0) for i in range(11)])
+    text = "".join(sep.join(f"{v:g}" for v in p) + "\n" for p in pts)
+    assert np.array_equal(read_points(_write(tmp_path, "c.xyz", text)), pts)
+    moved = pts + (0, 0, 7.5)       # another plane z = 7.5
+    text = "".join(sep.join(f"{v:g}" for v in p) + "\n" for p in moved)
+    assert np.array_equal(read_points(_write(tmp_path, "d.xyz", text)), moved)
+    varying = "".join(sep.join(f"{v:g}" for v in (i, x, y)) + "\n" for i, (x, y) in enumerate(PTS))
+    with pytest.raises(InputError, match="one per row"):
+        read_points(_write(tmp_path, "e.xyz", varying))
