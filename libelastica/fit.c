@@ -545,9 +545,11 @@ static int follow_the_points(fit_run_state *R, int st)
     if (!(R->ok && R->kind == FIT_ORTHOGONAL && !R->need_ipopt && !o->use_initial && !R->lm_only))
         return st;
     const double noise_in = R->noise_rms * R->sc;
-    const double stray = el__fit_stray(R->xy, n, R->fs, el__fit_out_length(model, n, R->res),
-                                       noise_in, R->sc);
-    R->res->seen.follows = stray >= 0.0 && stray <= FIT_STRAY;     /* for the report */
+    double stray = -1.0;
+    const double of_curve = el__fit_stray_curve(R->xy, n, R->fs, el__fit_out_length(model, n, R->res),
+                                                noise_in, R->sc, &stray);
+    /* for the report: by both measures (el__fit_wander_gap) */
+    R->res->seen.follows = stray >= 0.0 && stray <= FIT_STRAY && of_curve <= FIT_STRAY;
     /* el__fit_ends_held's run that strays is not kept (the fit it would replace has
      * followed its points already) */
     if (stray > FIT_STRAY && (flags & FIT_RUN_ENDS_HELD))

@@ -336,6 +336,15 @@ int el__fit_curve_distances(fit_objective *ob, const double *x, double v[2][FIT_
  * coil, even one that swings in a gap (lowest_that_follows); not to a stub far from the points. */
 #define FIT_COIL_TOL 0.1
 double el__fit_stray(const double *xy, size_t n, const double *fs, double L, double noise, double scale);
+/* fit_refit.c: el__fit_stray's length of curve no point accounts for over the length of
+ * the curve they do account for where that is shorter than their polygon: noisy points'
+ * polygon runs several times the curve's length (QA21's hand-drawn stroke, 400 points 1.6
+ * apart at noise 1: polygon 711 for a stroke of 115), so a 130-long loop through empty space
+ * beyond its last point (62 unaccounted for: 0.087 of the polygon) passed el__fit_stray's
+ * FIT_STRAY; 0.33 of the curve. Above FIT_STRAY such a fit does not follow its points
+ * either; -1 when out of memory. *stray (may be NULL): el__fit_stray's figure, of the same pass. */
+double el__fit_stray_curve(const double *xy, size_t n, const double *fs, double L, double noise, double scale,
+                           double *stray);
 /* fit_refit.c: el__fit_stray of a fit whose start or end point is held (ends: the start and
  * end points, input units, NaN where not held; NULL: none): the curve from a held end to the
  * nearest foot is allowed 1.6 times the chord from that end to its point, as between

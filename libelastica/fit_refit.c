@@ -314,9 +314,11 @@ double el__fit_stray(const double *xy, size_t n, const double *fs, double L, dou
 }
 
 /* el__fit_stray_held, and in *at (may be NULL) the gap holding the most of the curve no
- * point accounts for (named by gap_index) */
+ * point accounts for (named by gap_index); in *of_curve (may be NULL) that length over the
+ * length of the curve the points do account for where that is the shorter than their
+ * polygon (el__fit_stray_curve) */
 static double stray_at(const double *xy, size_t n, const double *fs, double L, double noise,
-                       double scale, const double ends[4], long *at)
+                       double scale, const double ends[4], long *at, double *of_curve)
 {
     /* the feet by arc length: read in place where they are in order, else through their
      * indices sorted (8 bytes a point: at 10^6 noisy points half the neighbours swap) */
@@ -352,13 +354,26 @@ static double stray_at(const double *xy, size_t n, const double *fs, double L, d
         if (at && sk > most) { most = sk; *at = gap_index(idx, k); }
     }
     free(idx);
+    if (of_curve) {
+        const double held = L * is - stray, base = fmin(poly, held);
+        *of_curve = stray <= 0.0 ? 0.0 : base > 0.0 ? stray / base : HUGE_VAL;
+    }
     return stray / poly;
+}
+
+double el__fit_stray_curve(const double *xy, size_t n, const double *fs, double L, double noise, double scale,
+                           double *stray)
+{
+    double of_curve = -1.0;
+    const double s = stray_at(xy, n, fs, L, noise, scale, NULL, NULL, &of_curve);
+    if (stray) *stray = s;
+    return s < 0.0 ? -1.0 : of_curve;
 }
 
 double el__fit_stray_held(const double *xy, size_t n, const double *fs, double L, double noise,
                           double scale, const double ends[4])
 {
-    return stray_at(xy, n, fs, L, noise, scale, ends, NULL);
+    return stray_at(xy, n, fs, L, noise, scale, ends, NULL, NULL);
 }
 
 /* samples of the curve in each gap between adjacent feet (el__fit_gap_sag), its ends
@@ -670,8 +685,9 @@ long el__fit_wander_gap(int model, const double *xy, size_t n, const double *p, 
      * ends: they change the measure) */
     const int held = ends && (isfinite(ends[0]) || isfinite(ends[2]));
     if (!(seen && seen->follows && level == seen->noise && !held)) {
-        const double stray = stray_at(xy, n, fs, L, level, sc, ends, &at);
-        if (stray > FIT_STRAY) return at;
+        double of_curve = -1.0;
+        const double stray = stray_at(xy, n, fs, L, level, sc, ends, &at, &of_curve);
+        if (stray > FIT_STRAY || of_curve > FIT_STRAY) return at;
         if (!(stray >= 0.0)) return -1;     /* out of memory */
     }
     /* more points than a sketch's: the stray rule alone, as the fit's (the crossing test's
