@@ -185,3 +185,25 @@ int el__fit_free_ends(const double *xy, size_t n, const el_fit_options *opt, int
     free(buf);
     return st;
 }
+
+int el__fit_trim_to_feet(const el_fit_options *opt, int st, fit_out *res, double *fs, size_t n)
+{
+    el_fit_options ro;
+    if (opt) ro = *opt; else el_fit_options_defaults(&ro);
+    if (!(fs && n >= 2 && res->distance == EL_DISTANCE_ORTHOGONAL && !ro.constraints && fit_gave_curve(st) &&
+          fit_options_unbounded(&ro)))
+        return EL_OK;
+    double a = fs[0], b = fs[0];
+    for (size_t i = 1; i < n; i++) {
+        a = fmin(a, fs[i]);
+        b = fmax(b, fs[i]);
+    }
+    const double L = res->params[6], tol = 1e-9 * L;
+    if (!(b > a) || !(a > tol || L - b > tol)) return EL_OK;
+    double p[FIT_NP];
+    memcpy(p, res->params, sizeof p);
+    if (el__fit_cut(p, fmax(a, 0.0), fmin(b, L))) return EL_OK;     /* kept as it is */
+    memcpy(res->params, p, sizeof p);
+    for (size_t i = 0; i < n; i++) fs[i] -= fmax(a, 0.0);
+    return EL_OK;
+}

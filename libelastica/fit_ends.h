@@ -54,5 +54,16 @@ int el__fit_keyline_ends(fit_objective *ob, int max_iter, fit_solution *sol, int
  * (test_fit_cut.c): start gamma(a), q + sqrt(mu) a (seed 000 (4.2)), length b - a. EL_OK or
  * el_smooth_eval's error (p unchanged). */
 int el__fit_cut(double *p, double a, double b);
+/* fit_ends.c: a public smooth fit by distance without constraints, fixed parameters or
+ * bounds (*res, status st: a curve given) cut to its feet's range [min fs, max fs] (its
+ * feet fs, input units, shifted to the cut curve's arc length) where a tail beyond the
+ * outermost foot is longer than 1e-9 of its length: no point's distance changes (each
+ * foot is the point's nearest on [0, L], inside the range), and the curve starts and ends at
+ * the outermost feet as the header says. A fit stopped at the iteration limit with its ends
+ * free kept such tails (QA21 F2: ell3000.csv, 3000 uneven points along an ellipse arc of
+ * 78.3 with 15 glitches, status 6, a 99.3-long curve whose first foot is at s 16.65, its
+ * start 17.9 from point 0). EL_OK (the fit kept as it was where the cut cannot be
+ * evaluated). */
+int el__fit_trim_to_feet(const el_fit_options *opt, int st, fit_out *res, double *fs, size_t n);
 
 #endif

@@ -13,6 +13,7 @@ import warnings
 import numpy as np
 
 import libelastica as el
+from fit_data import curve_distances
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -48,3 +49,22 @@ def test_hand_stroke_smooth_fit_runs_nowhere_without_points():
     assert r.status == 0 and r.wander_gap == -1
     # at the cost of little rms: within 2 % of the straying fit's 1.030
     assert r.rms < 1.05
+
+
+def test_glitchy_arc_fit_at_the_iteration_limit_ends_at_its_feet():
+    """QA21 F2 (ell3000.csv: an ellipse arc 40 x 25 over 2.2 rad, 78.3 long, 3000 uneven
+    points, noise 0.035, 15 glitches): the smooth fit stops at the iteration limit (status 6)
+    with its ends free, and kept a curve 99.3 long whose first foot was at s 16.65, its start
+    17.9 from point 0: a tail no point holds. The curve is cut to its feet's range (the
+    header: it starts and ends at the outermost feet), every distance unchanged."""
+    P = np.loadtxt(os.path.join(HERE, "ell3000.csv"), delimiter=",", skiprows=1)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        r = el.fit(P, model="smooth")
+    L = r.curve.length
+    assert r.foot_s.min() <= 1e-9 * L and r.foot_s.max() >= (1.0 - 1e-9) * L
+    # the same points without their glitches fit a curve 78.4 long
+    assert L < 1.1 * 78.4, L
+    d, s = curve_distances(r.curve, P)
+    np.testing.assert_allclose(np.abs(r.distances), d, atol=1e-7)
+    np.testing.assert_allclose(np.sqrt(np.mean(d ** 2)), r.rms, rtol=1e-9)
