@@ -446,10 +446,24 @@ static int cmp_energy(const void *a, const void *b)
     return (x->energy > y->energy) - (x->energy < y->energy);
 }
 
+/* theta(L) - theta(0) of a solution, summed over a chain's pieces. */
+static int turning(const el_hermite_solution *s, double *w)
+{
+    int rc = EL_OK;
+    *w = 0.0;
+    for (int i = 0; i < s->npieces && !rc; i++) {
+        const el_smooth_params *q = i ? &s->rest[i - 1] : &s->curve;
+        const double h[2] = {0.0, q->length};
+        double t[2];
+        if (!(rc = el_smooth_eval(q, 2, h, NULL, t, NULL))) *w += t[1] - t[0];
+    }
+    return rc;
+}
+
 /* Same length, tension, end curvatures and turning of the first pieces (theta(l) - theta(0),
- * l the shorter): a mirror pair whose end curvatures vanish (loops at the separatrix
- * between tangents along the chord, kappa0 ~ 1e-13 / |p1 - p0|) differs only in its
- * turning, +-2 pi. */
+ * l the shorter) and, a chain's, of the whole curves: a mirror pair whose end curvatures
+ * vanish (loops at the separatrix between tangents along the chord, kappa0 ~ 1e-13 / |p1 - p0|)
+ * differs only in its turning, +-2 pi. */
 int el__hermite_same_solution(const el_hermite_solution *a, const el_hermite_solution *b, double d)
 {
     const double tk = 1e-6 / d;
@@ -463,7 +477,12 @@ int el__hermite_same_solution(const el_hermite_solution *a, const el_hermite_sol
     if (el_smooth_eval(&a->curve, 2, h, NULL, ta, NULL) ||
         el_smooth_eval(&b->curve, 2, h, NULL, tb, NULL))
         return 1;
-    return fabs((ta[1] - ta[0]) - (tb[1] - tb[0])) <= 1e-6;
+    if (!(fabs((ta[1] - ta[0]) - (tb[1] - tb[0])) <= 1e-6)) return 0;
+    /* a chain's first piece can end before its loop, where the mirror image turns alike */
+    if (a->npieces == 1 && b->npieces == 1) return 1;
+    double wa, wb;
+    if (turning(a, &wa) || turning(b, &wb)) return 1;
+    return fabs(wa - wb) <= 1e-6;
 }
 
 void el_hermite_options_defaults(el_hermite_options *opt)

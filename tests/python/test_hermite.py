@@ -640,3 +640,21 @@ def test_a_u_turn_keeps_its_solutions_when_its_data_move(mode, value):
             _check_ends(c, a, ta, b, tb)
         e = sorted(c.energy_value * scale for c in s)
         assert np.allclose(e, ref, rtol=20 * eps + 1e-9)
+
+
+def test_a_loops_mirror_image_is_kept_beside_it():
+    # tangents along the chord at sigma |p1 - p0|^2 = 5000: the segment, a loop turning once
+    # counter-clockwise (separatrix, a chain) and its mirror image in the chord; the mirror was
+    # taken for the loop itself (the chains' first pieces turn alike) and dropped
+    t = np.array([np.cos(-2.5), np.sin(-2.5)])
+    for d in (1.0, 0.1, 1e4):
+        p0, p1 = np.zeros(2), d * t
+        sols = el.hermite(p0, t, p1, t, tension=5000.0 / d**2)
+        rm = np.sqrt(2500.0)                       # sqrt(mu) |p1 - p0|
+        loops = [c for c in sols if c.energy_value * d > 1e-6]
+        assert len(sols) == 3 and sorted(np.sign(c.k) for c in loops) == [-1, 1]
+        for c in sols:
+            _check_ends(c, p0, t, p1, t)
+        for c in loops:
+            assert c.length / d == pytest.approx(1.0 + 4.0 / rm, rel=1e-9)
+            assert c.energy_value * d == pytest.approx(8.0 * rm, rel=1e-9)
