@@ -18,6 +18,7 @@ from .cli_common import (ANGLE_UNITS, EXIT_BADINPUT, EXIT_INTERNAL, EXIT_NOCONV,
                          tol_option)
 from .cli_outputs import out_path
 from .fit import quiet_fit
+from .misfit import fit_outliers
 from .fit_cost import cost_summary, costly, end_costs, held_ends, local_cost_summary
 from .order import order_summary
 from .io import InputError, curve_to_dict, read_points, write_dxf_spline, write_json
@@ -88,7 +89,7 @@ def _side_record(res, data: np.ndarray, model: str, free=None) -> Dict[str, Any]
         # point-to-curve distances (+ = left of the curve) and each foot's arc length
         rec.update(distance=res.distance, distances=[float(v) for v in res.distances],
                    foot_s=[float(v) for v in res.foot_s],
-                   outliers=[int(i) for i in res.outliers(free_distances=free)])
+                   outliers=[int(i) for i in fit_outliers(res, free)])
         if free is not None:
             rec["free_distances"] = [float(v) for v in free]
     return rec
@@ -181,16 +182,15 @@ def _warn_end_conditions(path, rec: Dict[str, Any]) -> None:
 def _warn_far_points(path, rec: Dict[str, Any]) -> None:
     """A warning on stderr naming the points far from the fitted curve (the record's
     "outliers": indices into the fitted points, the file's rows unless resampled)."""
-    from .fit import far_points_summary
+    from .misfit import outliers_summary
     far = rec.get("outliers")
     if not far:
         return
-    rows = ", ".join(str(i) for i in far[:10]) + (", ..." if len(far) > 10 else "")
     side = f" (side {rec['side'] + 1})" if "side" in rec else ""
-    said = far_points_summary(rec["distances"], far, free_distances=rec.get("free_distances"))
-    print(f"{PROG} fit: warning: {path}{side}: {said}: "
-          f"outliers? (points {rows}, counted from 0) Each pulls the fit towards itself: "
-          "remove them to fit the rest", file=sys.stderr)
+    # el.fit's OutlierWarning in the command's words (the same rule and text: el.fit_outliers,
+    # el.outliers_summary), the path before it
+    said = outliers_summary(rec["distances"], far, free_distances=rec.get("free_distances"))
+    print(f"{PROG} fit: warning: {path}{side}: {said}", file=sys.stderr)
 
 
 def _cubic_figures(doc: Dict[str, Any], res, bspline, pts: np.ndarray,

@@ -32,7 +32,8 @@ from .cubic import SPARSE_POINTS, SparseWarning, smooth_fits_better
 from ._text import LengthFormat, lengths
 from ._values import ValueEquality
 from .fit_cost import EndConditionWarning, checked_ends
-from .misfit import MISFIT_RATIO, MisfitWarning, _Figures, _places, _verdict, misfit_summary
+from .misfit import (MISFIT_RATIO, MisfitWarning, OutlierWarning, _Figures, _places, _verdict,
+                     _warn_outliers, misfit_summary)
 from .order import (Retrace, curve_order, data_run_back, order_summary, ordering, retrace_summary,
                     run_back, turn_back)
 
@@ -558,7 +559,8 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     where check_ends made one; not a fit asked to be paired) against the points' own noise
     (:func:`libelastica.misfit.misfit`) and warn (MisfitWarning, ``FitResult.misfit``) where
     it lies far above it: the points are not one elastica (a corner, named where one stands
-    out). check_sparse: a discrete fit of fewer than SPARSE_POINTS points (a polygon of as
+    out); points far from the curve, :func:`far_points` (a constrained fit's: far from its
+    free fit too), warn OutlierWarning naming them. check_sparse: a discrete fit of fewer than SPARSE_POINTS points (a polygon of as
     few segments, which cuts their bends) is compared with the smooth model's fit of them
     with the same constraints (:func:`smooth_fits_better`, on the larger of the polygon's
     rms and its exported cubic's, :meth:`FitResult.cubic_distances`) and warns
@@ -688,6 +690,7 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
                          limited_memory=limited_memory, max_candidates=max_candidates, param=param))
     if check_misfit:
         r = _judged(r, judged_fit(r, constraints or fixed or bounds, distance), fig)
+        _warn_outliers(r)
     if check_sparse and not smooth and n < SPARSE_POINTS:
         r = _sparse(r, constraints)
     return r
@@ -793,6 +796,7 @@ def quiet_fit(points, *args, **kwargs) -> FitResult:
         warnings.simplefilter("ignore", WanderWarning)
         warnings.simplefilter("ignore", EndConditionWarning)
         warnings.simplefilter("ignore", MisfitWarning)
+        warnings.simplefilter("ignore", OutlierWarning)
         warnings.simplefilter("ignore", SparseWarning)
         return fit(points, *args, **dict(dict(check_ends=False, check_misfit=False,
                                               check_sparse=False), **kwargs))

@@ -14,6 +14,7 @@ None
 """
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass
 from typing import Optional, Tuple
 
@@ -24,7 +25,7 @@ from ._text import LengthFormat, coordinates, lengths
 from ._values import ValueEquality
 
 __all__ = ["MISFIT_RATIO", "MisfitWarning", "Misfit", "noise_level", "window_noise", "misfit",
-           "misfit_summary"]
+           "misfit_summary", "OutlierWarning", "outliers_summary", "fit_outliers"]
 
 # A fit's rms over the points' noise level (no verdict where el.far_points names glitches:
 # they pull the fit, and are said apart). Measured (rms / noise_level, 692 fits, both
@@ -146,7 +147,7 @@ class _Figures:
 
 def _noise_level(pts: np.ndarray, plain: float) -> float:
     """noise_level of checked points without repeats whose _noise is ``plain``."""
-    return max(plain, window_noise(pts), _spread_noise(pts))
+    return max(plain, window_noise(pts, plain), _spread_noise(pts))
 
 
 def _noise(pts: np.ndarray, quick: bool = False) -> float:
@@ -165,6 +166,11 @@ def _noise(pts: np.ndarray, quick: bool = False) -> float:
 # scans themselves: 0.14-0.19 either way), their fits' rms 0.13-0.53 (a gap's chord).
 WINDOW_POINTS = 15
 WINDOW_SAMPLES = 4096
+# a window is taken where its curve's shape beyond a cubic leaves at most WINDOW_SHAPE of the
+# points' noise (rms; its figure then at most 1.05 x the noise's) and its cubic turns by at
+# most WINDOW_TURN radians (_followed)
+WINDOW_SHAPE = 0.3
+WINDOW_TURN = 1.0
 # the median of a chi-square of WINDOW_POINTS - 4 degrees over its mean
 _WINDOW_MEDIAN = 0.9401
 
@@ -200,11 +206,13 @@ def _polyfits(t: np.ndarray, Y: np.ndarray, degree: int, max_cond: Optional[floa
     return A, c, ok
 
 
-def window_noise(points) -> float:
+def window_noise(points, noise: Optional[float] = None) -> float:
     """The rms of a point's distance to the smooth curve under it from cubics y(x) fitted in
     the principal frame of windows of WINDOW_POINTS consecutive points (up to WINDOW_SAMPLES
     of them, evenly spread): their residuals' mean square per degree of freedom, the median
-    over the windows; 0 for fewer points. A curve that bends within a window raises it."""
+    over the windows that follow their curve (:func:`_followed`: the part of its shape no
+    cubic holds below WINDOW_SHAPE x ``noise``, default el_fit_noise's figure of the points,
+    and turning by WINDOW_TURN at most); 0 for fewer points or where none does."""
     from numpy.lib.stride_tricks import sliding_window_view
     P = as_points(points, "window_noise: points", 2)
     m = WINDOW_POINTS
@@ -221,7 +229,39 @@ def window_noise(points) -> float:
     if not np.any(ok):
         return 0.0
     r = y[ok] - np.einsum("kmi,ki->km", A, c[..., 0])
-    return float(np.sqrt(np.median(np.sum(r * r, axis=1) / (m - 4)) / _WINDOW_MEDIAN))
+    ms = np.sum(r * r, axis=1) / (m - 4)
+    if noise is None:
+        noise = _noise(np.ascontiguousarray(P))
+    keep = _followed(A, c[..., 0], x[ok], noise)
+    if not np.any(keep):
+        return 0.0
+    return float(np.sqrt(np.median(ms[keep]) / _WINDOW_MEDIAN))
+
+
+def _followed(A: np.ndarray, c: np.ndarray, x: np.ndarray, noise: float) -> np.ndarray:
+    """Which windows' cubics follow their curve (window_noise's): those where the part of the
+    curve no cubic y(x) holds, its quartic term, leaves a residual rms of at most
+    WINDOW_SHAPE x ``noise`` (el_fit_noise's: third differences, which cancel a cubic's
+    turning; not the window's own residual, which would keep the windows whose shape the
+    estimate misses) and that turn by WINDOW_TURN at most. A curve of curvature kappa with y' = 0 at the
+    frame's origin has y'' = kappa (1 + y'^2)^(3/2), so its fourth derivative there is
+    kappa'' + 3 kappa^3: the quartic term about kappa^3 x^4 / 8 (a circle's), taken with the
+    largest |kappa| of the window's cubic (A, c: its design matrix in t = x / max|x| and its
+    coefficients; x the abscissae) and projected off the cubics as the fit leaves it. Sparse
+    points on a turning curve (QA21: 40 points along a clothoid turning 5 rad, 15 of them
+    turning up to 1.9 rad) leave their shape in the cubic's residual: 13 x the noise there
+    (1.36 for 0.105)."""
+    xs = np.maximum(np.abs(x).max(axis=1), np.finfo(float).tiny)
+    t = A[:, :, 1]
+    d1 = (c[:, [1]] + 2 * c[:, [2]] * t + 3 * c[:, [3]] * t * t) / xs[:, None]
+    d2 = (2 * c[:, [2]] + 6 * c[:, [3]] * t) / (xs * xs)[:, None]
+    kappa = np.max(np.abs(d2) / (1 + d1 * d1) ** 1.5, axis=1)
+    q = (kappa ** 3 / 8)[:, None] * x ** 4
+    AtA = np.einsum("kmi,kmj->kij", A, A)
+    beta = np.linalg.solve(AtA, np.einsum("kmi,km->ki", A, q)[..., None])[..., 0]
+    shape = np.sum((q - np.einsum("kmi,ki->km", A, beta)) ** 2, axis=1) / (A.shape[1] - 4)
+    turn = np.ptp(np.arctan(d1), axis=1)
+    return (shape <= (WINDOW_SHAPE * noise) ** 2) & (turn <= WINDOW_TURN)
 
 
 def _rms_near(distances, points) -> float:
@@ -358,3 +398,56 @@ def misfit_summary(m: Misfit, points=None, unit: str = "", numbered: bool = True
              if numbered or not place else f"at {place}")
     return (said + f"; a corner {where}? Split there, the two parts fit at rms "
             f"{fmt(m.parts[0], 3)} and {fmt(m.parts[1], 3)}")
+
+
+class OutlierWarning(RuntimeWarning):
+    """:func:`fit`'s warning that some points lie far from the fitted curve, standing apart
+    from the others (:func:`far_points`: scan glitches, points of other geometry): each
+    pulls the fit towards itself (QA21: one glitch of 40 points pulled the curve 0.91, 26 x
+    the noise, off the true shape). ``indices``: the points, counted from 0 in the caller's
+    order; the CLI and FreeCAD say the same."""
+
+    def __init__(self, message: str, indices=()):
+        super().__init__(message)
+        self.indices = tuple(int(i) for i in indices)
+
+
+def outliers_summary(distances, far, rows=None, free_distances=None, unit: str = "",
+                     length: Optional[LengthFormat] = None) -> str:
+    """What a warning of points far from the curve says (:func:`fit`'s OutlierWarning, the
+    CLI's line): far_points_summary's figures, the points (``rows``: their numbers for the
+    user, default ``far``; 10 at most named) and what to do: "1 of 40 points lies 3.9 from
+    the curve, the others within 0.12: outliers? (points 13, counted from 0) Each pulls the
+    fit towards itself: remove them to fit the rest"."""
+    from .fit import far_points_summary
+    rows = [int(i) for i in (far if rows is None else rows)]
+    named = ", ".join(str(i) for i in rows[:10]) + (", ..." if len(rows) > 10 else "")
+    said = far_points_summary(distances, far, unit, free_distances, length)
+    return (f"{said}: outliers? (points {named}, counted from 0) Each pulls the fit towards "
+            "itself: remove them to fit the rest")
+
+
+def fit_outliers(r, free_distances=None) -> np.ndarray:
+    """The points of fit result ``r`` far from its curve, by the rule :func:`fit` warns with
+    (OutlierWarning) and the CLI says: :func:`far_points` of its distances; a constrained
+    fit's (``r.constraints``) judged with the distances of the fit without them too
+    (``free_distances``, default ``r.free``'s where :func:`fit` made it): points held off
+    only by the constraints are no outliers. Indices into ``r.points``."""
+    from .fit import far_points
+    if r.distances is None:
+        return np.empty(0, dtype=np.intp)
+    if free_distances is None and r.constraints and getattr(r, "free", None) is not None:
+        free_distances = r.free.distances
+    return far_points(r.distances, r.points, free_distances=free_distances)
+
+
+def _warn_outliers(r) -> None:
+    """:func:`fit`'s OutlierWarning of result ``r`` where :func:`fit_outliers` names points
+    (numbered in the caller's order: ``r.order``'s where fitted in curve order)."""
+    far = fit_outliers(r)
+    if not len(far):
+        return
+    rows = sorted(int(r.order[i]) for i in far) if r.order is not None else far
+    free = r.free.distances if r.constraints and r.free is not None else None
+    warnings.warn(OutlierWarning("fit: " + outliers_summary(r.distances, far, rows, free), rows),
+                  stacklevel=3)

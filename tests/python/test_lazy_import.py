@@ -12,24 +12,24 @@ import libelastica as el
 
 LAZY = ("keyline", "resampled", "blend", "spline", "affine", "g2quad")
 # every public name of `import libelastica` before (121, and SparseWarning, spline's UnstableWarning, g2quad's CoverageError,
-# covering_edges, EndTangentWarning, affine's EdgeCountError and spline's holding_tension since: classes, functions,
-# constants, the submodules it gave as attributes)
+# covering_edges, EndTangentWarning, affine's EdgeCountError, spline's holding_tension, misfit's OutlierWarning,
+# fit_outliers and outliers_summary since: classes, functions, constants, the submodules it gave as attributes)
 PUBLIC = sorted("""AffinePolyline AngleUnitWarning BSpline BlendCurve BlendLoopWarning COST_FLOOR COST_RATIO
 ConditionWarning ConstraintError ConvergenceWarning CoverageError CoverageWarning DiscreteElastica DomainError
 DoublesBackError END_POINTS END_SPAN EdgeCountError ElasticSpline ElasticaError EllipticBlend EndConditionWarning
 EndTangentWarning FitResult Frame Frame2D G2Quadratic HERMITE_SIGMA_D2_MAX HermiteChain
 HermiteSolutions KEYLINE_STEPS KeylineFit LengthRangeError LoopWarning MISFIT_RATIO MQBlend Misfit MisfitWarning
-NotConvergedError ORDER_RATIO OrderWarning Ordering OsculatingConics RESAMPLE_MAX_VERTICES
+NotConvergedError ORDER_RATIO OrderWarning Ordering OutlierWarning OsculatingConics RESAMPLE_MAX_VERTICES
 RESAMPLE_RATIO ResampleWarning ResampledFit SPARSE_POINTS SPREAD_MAX SeamWarning SingularError SmoothElastica
 SparseWarning UnstableWarning WanderWarning ZIGZAG affine
 affine_coords affine_curvature affine_curvature_exact affine_elements
 affine_length affine_polyline blend blend_curve bspline chaikin core cost_summary costly cubic
 covering_edges cubic_distances cubic_through curve_order eck_d eck_omega elastic_spline elastica_affine_curvature
 elastica_inflections end_condition_cost end_costs far_points far_points_summary find_inflection
-fit fit_cost fit_keyline fit_resampled g2_bspline g2_quadratic g2quad held_ends hermite
+fit fit_cost fit_outliers fit_keyline fit_resampled g2_bspline g2_quadratic g2quad held_ends hermite
 holding_tension hermite_analyse interpolate_c2 io keyline keyline_bspline keyline_runs keyline_step
 lane_riesenfeld local_cost_summary misfit misfit_summary noise_level order osculating_conics
-out_of_order parabolic_lengths pca_normalize plane_fit prep prepare_keyline quadratic_bspline
+out_of_order outliers_summary parabolic_lengths pca_normalize plane_fit prep prepare_keyline quadratic_bspline
 quadratic_joint_curvatures resample_equilateral resample_summary resampled resampled_fits_worse
 resampled_polygon resampled_reference shape smooth_chain_to_bspline smooth_fits_better
 smooth_to_bspline spline uniform_bspline wander_summary""".split())
@@ -47,7 +47,7 @@ def test_help_does_not_load_what_it_does_not_use():
 
 
 def test_public_api_unchanged():
-    assert len(PUBLIC) == 130       # in a fresh process: a submodule imported adds its name
+    assert len(PUBLIC) == 133       # in a fresh process: a submodule imported adds its name
     assert _run("import libelastica as el\n"
                 "print(' '.join(sorted(n for n in dir(el) if not n.startswith('_'))))").split() == PUBLIC
     names = _run("from libelastica import *\n"
