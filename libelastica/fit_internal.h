@@ -271,6 +271,10 @@ int el__fit_feet_distances(fit_objective *o, const double *x, double *dist, doub
  * curve of segment h, vertex j <-> point first + step j. */
 void el__fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, double h,
                                size_t first, long step, double *dist, double *foot);
+/* The same, accelerate 0: every stretch by the linear scan (the reference the tests hold
+ * the bounding-box search to: the same feet and distances, bit for bit). */
+void el__fit_polygon_distances_by(const fit_objective *o, const double *V, size_t nv, double h,
+                                  size_t first, long step, double *dist, double *foot, int accelerate);
 /* The direction of (x, y) in (-pi, pi] to within 2e-6 (fit_polygon.c). */
 double el__fit_direction(double x, double y);
 /* fit_polygon.c: el__fit_nearest_everywhere's search of the discrete model's polygons. */

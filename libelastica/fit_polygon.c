@@ -122,6 +122,132 @@ static double longest_segment(const double *V, size_t nv)
 }
 
 /*
+ * A hierarchy of axis-aligned bounding boxes over runs of TREE_LEAF consecutive segments
+ * (a complete binary tree over the runs, node 1 the root, node i's children 2i, 2i + 1),
+ * built once per evaluation in O(n) where a stretch is long (a dense polygon: spacing far
+ * below the noise, d / h in the thousands; a curve far from its points while a fit
+ * wanders). GSL has no spatial index (nor Ipopt): written here. The nearest segment of a
+ * range of them is found by a descent, the nearer child first, that leaves out a box
+ * farther than the best so far: exact, not an approximation (tree_search); a box holding
+ * a vertex that is not finite is the whole plane (never left out).
+ */
+enum { TREE_LEAF = 8, TREE_MIN = 4 * BLOCK };
+typedef struct seg_tree {
+    const double *V;
+    long ns, size;          /* segments; leaves (a power of 2), TREE_LEAF segments each */
+    double *box;            /* 4 a node: xmin, xmax, ymin, ymax */
+} seg_tree;
+
+static int tree_build(seg_tree *T, const double *V, long ns)
+{
+    T->V = V;
+    T->ns = ns;
+    long nleaf = (ns + TREE_LEAF - 1) / TREE_LEAF;
+    T->size = 1;
+    while (T->size < nleaf) T->size *= 2;
+    T->box = malloc(sizeof(double) * 4 * 2 * (size_t)T->size);
+    if (!T->box) return 0;
+    for (long i = 0; i < T->size; i++) {
+        double *b = T->box + 4 * (T->size + i);
+        b[0] = b[2] = HUGE_VAL; b[1] = b[3] = -HUGE_VAL;       /* empty */
+        const long j1 = (i + 1) * TREE_LEAF < ns ? (i + 1) * TREE_LEAF : ns;
+        for (long k = i * TREE_LEAF; k <= j1 && i * TREE_LEAF < ns; k++) {   /* vertices of the run */
+            const double x = V[2 * k], y = V[2 * k + 1];
+            if (!(isfinite(x) && isfinite(y))) { b[0] = b[2] = -HUGE_VAL; b[1] = b[3] = HUGE_VAL; break; }
+            if (x < b[0]) b[0] = x;
+            if (x > b[1]) b[1] = x;
+            if (y < b[2]) b[2] = y;
+            if (y > b[3]) b[3] = y;
+        }
+    }
+    for (long i = T->size - 1; i >= 1; i--) {
+        double *b = T->box + 4 * i;
+        const double *l = T->box + 8 * i, *r = l + 4;
+        b[0] = l[0] < r[0] ? l[0] : r[0];
+        b[1] = l[1] > r[1] ? l[1] : r[1];
+        b[2] = l[2] < r[2] ? l[2] : r[2];
+        b[3] = l[3] > r[3] ? l[3] : r[3];
+    }
+    return 1;
+}
+
+/* The squared distance of P to box b (0 inside; a NaN P: 0). */
+static inline double box_distance2(const double *b, const double *P)
+{
+    const double dx = b[0] - P[0] > 0.0 ? b[0] - P[0] : P[0] - b[1] > 0.0 ? P[0] - b[1] : 0.0;
+    const double dy = b[2] - P[1] > 0.0 ? b[2] - P[1] : P[1] - b[3] > 0.0 ? P[1] - b[3] : 0.0;
+    return dx * dx + dy * dy;
+}
+
+typedef struct tree_query {
+    const double *P;
+    long a, b;              /* the segments a .. b - 1 */
+    double lmax, bd, bound2, bt;
+    long bj;                /* -1: none nearer than the caller's bd yet */
+} tree_query;
+
+/* The bound of the boxes searched for bd: a segment whose squared distance computes to
+ * at most bd is within sqrt(bd) of P to the rounding of segment_distance2 (below 1e-14
+ * (d + lmax), |P - A| <= d + lmax), its box nearer still; this allows 1e-9 of d + lmax. */
+static inline double tree_bound2(double bd, double lmax)
+{
+    const double b = sqrt(bd) * (1.0 + 1e-9) + 1e-9 * lmax;
+    return b * b;
+}
+
+/*
+ * The nearest of the segments q->a .. q->b - 1 in node's segments lo .. hi - 1 strictly
+ * nearer than the caller's bd, and among equal ones the first (the order of the linear
+ * scan, which keeps the first of equal distances): a descent in any order that takes a
+ * segment when nearer, or as near and earlier. Boxes beyond tree_bound2 are left out.
+ */
+static void tree_search(const seg_tree *T, long node, long lo, long hi, tree_query *q)
+{
+    if (hi <= q->a || lo >= q->b) return;
+    if (node >= T->size) {
+        const long m0 = lo > q->a ? lo : q->a, m1 = hi < q->b ? hi : q->b;
+        for (long m = m0; m < m1; m++) {
+            double t;
+            const double d2 = segment_distance2(T->V + 2 * m, T->V + 2 * m + 2, q->P, &t);
+            if (d2 < q->bd || (d2 == q->bd && q->bj >= 0 && m < q->bj)) {
+                q->bd = d2; q->bj = m; q->bt = t;
+                q->bound2 = tree_bound2(d2, q->lmax);
+            }
+        }
+        return;
+    }
+    const long mid = lo + (hi - lo) / 2;
+    const double *bl = T->box + 8 * node, *br = bl + 4;
+    const double dl = box_distance2(bl, q->P), dr = box_distance2(br, q->P);
+    if (dl <= dr) {
+        if (!(dl > q->bound2)) tree_search(T, 2 * node, lo, mid, q);
+        if (!(dr > q->bound2)) tree_search(T, 2 * node + 1, mid, hi, q);
+    } else {
+        if (!(dr > q->bound2)) tree_search(T, 2 * node + 1, mid, hi, q);
+        if (!(dl > q->bound2)) tree_search(T, 2 * node, lo, mid, q);
+    }
+}
+
+/* nearest_segment over j0 .. j1 - 1, by the tree where the range is long (built at the
+ * first such range; without memory, or accelerate 0, by the scan): the same segment. */
+static void nearest_in_range(seg_tree *T, int *tree_state, const double *V, long ns, long j0, long j1,
+                             const double *P, double lmax, double *r, double *bd, long *bj, double *bt)
+{
+    if (j1 - j0 >= TREE_MIN && *tree_state == 0) *tree_state = tree_build(T, V, ns) ? 1 : -1;
+    if (j1 - j0 < TREE_MIN || *tree_state != 1) {
+        nearest_segment(V, j0, j1, P, lmax, r, bd, bj, bt);
+        return;
+    }
+    tree_query q = {P, j0, j1, lmax, *bd, tree_bound2(*bd, lmax), 0.0, -1};
+    if (!(T->box[4] <= T->box[5])) return;      /* no segment */
+    tree_search(T, 1, 0, T->size * TREE_LEAF, &q);
+    if (q.bj < 0) return;
+    *bd = q.bd; *bj = q.bj; *bt = q.bt;
+    const double rn = reach_of(sqrt(q.bd), lmax);
+    if (rn < *r) *r = rn;
+}
+
+/*
  * The polygon of nv vertices V (normalised), data point first + step j <-> vertex j:
  * each point's distance to the polygon near its own vertex, its foot as arc length
  * h (segment + t) from vertex 0. A walk from the two segments at the vertex, on while
@@ -144,6 +270,14 @@ static double longest_segment(const double *V, size_t nv)
 void el__fit_polygon_distances(const fit_objective *o, const double *V, size_t nv, double h,
                                size_t first, long step, double *dist, double *foot)
 {
+    el__fit_polygon_distances_by(o, V, nv, h, first, step, dist, foot, 1);
+}
+
+void el__fit_polygon_distances_by(const fit_objective *o, const double *V, size_t nv, double h,
+                                  size_t first, long step, double *dist, double *foot, int accelerate)
+{
+    seg_tree T = {V, 0, 0, NULL};
+    int tree_state = accelerate ? 0 : -1;       /* 0: not built yet, 1: built, -1: the scan */
     const long last = (long)nv - 2;
     /* the polygon's largest turning |T' - T| at its vertices over its shortest segment
      * (the bound of the jumps of f' above; a zero-length or non-finite segment: NaN, so
@@ -205,14 +339,15 @@ void el__fit_polygon_distances(const fit_objective *o, const double *V, size_t n
             const long reach = m >= 1.0 ? (m <= (double)(last + 1) ? (long)m : last + 1) : 1;
             const long lo = centre - reach < 0 ? 0 : centre - reach, hi = centre + reach > last ? last : centre + reach;
             double r = reach_of(d, lmax);
-            nearest_segment(V, lo, hi < clo ? hi + 1 : clo, P, lmax, &r, &bd, &best, &bt);
-            nearest_segment(V, lo > chi ? lo : chi + 1, hi + 1, P, lmax, &r, &bd, &best, &bt);
+            nearest_in_range(&T, &tree_state, V, last + 1, lo, hi < clo ? hi + 1 : clo, P, lmax, &r, &bd, &best, &bt);
+            nearest_in_range(&T, &tree_state, V, last + 1, lo > chi ? lo : chi + 1, hi + 1, P, lmax, &r, &bd, &best, &bt);
             if (lo < clo) clo = lo;
             if (hi > chi) chi = hi;
         }
         dist[g] = segment_signed(V + 2 * best, V + 2 * best + 2, P, bt);
         foot[g] = h * ((double)best + bt);
     }
+    free(T.box);
 }
 
 /*
