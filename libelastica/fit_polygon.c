@@ -136,6 +136,8 @@ typedef struct seg_tree {
     const double *V;
     long ns, size;          /* segments; leaves (a power of 2), TREE_LEAF segments each */
     double *box;            /* 4 a node: xmin, xmax, ymin, ymax */
+    double *dir;            /* 6 a node: its segments' B - A: min and max x, min and max y,
+                             * largest and smallest squared length (-1: a vertex not finite) */
 } seg_tree;
 
 static int tree_build(seg_tree *T, const double *V, long ns)
@@ -145,8 +147,9 @@ static int tree_build(seg_tree *T, const double *V, long ns)
     long nleaf = (ns + TREE_LEAF - 1) / TREE_LEAF;
     T->size = 1;
     while (T->size < nleaf) T->size *= 2;
-    T->box = malloc(sizeof(double) * 4 * 2 * (size_t)T->size);
+    T->box = malloc(sizeof(double) * 10 * 2 * (size_t)T->size);
     if (!T->box) return 0;
+    T->dir = T->box + 4 * 2 * (size_t)T->size;
     for (long i = 0; i < T->size; i++) {
         double *b = T->box + 4 * (T->size + i);
         b[0] = b[2] = HUGE_VAL; b[1] = b[3] = -HUGE_VAL;       /* empty */
@@ -159,6 +162,18 @@ static int tree_build(seg_tree *T, const double *V, long ns)
             if (y < b[2]) b[2] = y;
             if (y > b[3]) b[3] = y;
         }
+        double *u = T->dir + 6 * (T->size + i);
+        u[0] = u[2] = u[5] = HUGE_VAL; u[1] = u[3] = u[4] = -HUGE_VAL;
+        for (long m = i * TREE_LEAF; m < j1; m++) {
+            const double ux = V[2 * m + 2] - V[2 * m], uy = V[2 * m + 3] - V[2 * m + 1], l2 = ux * ux + uy * uy;
+            if (!(isfinite(ux) && isfinite(uy) && isfinite(l2) && b[0] > -HUGE_VAL)) { u[5] = -1.0; break; }
+            if (ux < u[0]) u[0] = ux;
+            if (ux > u[1]) u[1] = ux;
+            if (uy < u[2]) u[2] = uy;
+            if (uy > u[3]) u[3] = uy;
+            if (l2 > u[4]) u[4] = l2;
+            if (l2 < u[5]) u[5] = l2;
+        }
     }
     for (long i = T->size - 1; i >= 1; i--) {
         double *b = T->box + 4 * i;
@@ -167,8 +182,51 @@ static int tree_build(seg_tree *T, const double *V, long ns)
         b[1] = l[1] > r[1] ? l[1] : r[1];
         b[2] = l[2] < r[2] ? l[2] : r[2];
         b[3] = l[3] > r[3] ? l[3] : r[3];
+        double *u = T->dir + 6 * i;
+        const double *ul = T->dir + 12 * i, *ur = ul + 6;
+        for (int k = 0; k < 6; k += 2) {
+            u[k] = ul[k] < ur[k] ? ul[k] : ur[k];
+            u[k + 1] = ul[k + 1] > ur[k + 1] ? ul[k + 1] : ur[k + 1];
+        }
+        u[4] = ul[4] > ur[4] ? ul[4] : ur[4];
+        u[5] = ul[5] < ur[5] ? ul[5] : ur[5];
     }
     return 1;
+}
+
+/*
+ * Whether the walk of el__fit_polygon_distances goes on through every segment A-B of
+ * node, forward (dir 1: the nearest point of each is its end B, t computes to 1) or
+ * backward (dir -1: its start A, t computes to 0): by interval bounds of
+ * X = (P - A).(B - A) over the node's vertex box and its segments' B - A. t computes to 1
+ * where X >= |B - A|^2 (1 + 1e-12) + s, to 0 where X <= -s, s = 1e-12 (|P - A|x |ux| +
+ * |P - A|y |uy|) bounding the rounding of the dot product, the division and the bounds
+ * (each below 1e-15 of those terms). Unproved (a vertex not finite, an overflow, NaN):
+ * 0, the segments walked one by one.
+ */
+static inline double lo_product(double a0, double a1, double b0, double b1)
+{
+    const double p = a0 * b0, q = a0 * b1, r = a1 * b0, w = a1 * b1;
+    const double m = p < q ? p : q, n = r < w ? r : w;
+    return m < n ? m : n;
+}
+
+static int walk_passes(const seg_tree *T, long node, const double *P, int dir)
+{
+    const double *b = T->box + 4 * node, *u = T->dir + 6 * node;
+    if (!(u[5] >= 0.0) || (dir > 0 && !(u[5] > 0.0))) return 0;
+    const double x0 = P[0] - b[1], x1 = P[0] - b[0], y0 = P[1] - b[3], y1 = P[1] - b[2];
+    const double mx = fabs(x0) > fabs(x1) ? fabs(x0) : fabs(x1), my = fabs(y0) > fabs(y1) ? fabs(y0) : fabs(y1);
+    const double ux = fabs(u[0]) > fabs(u[1]) ? fabs(u[0]) : fabs(u[1]);
+    const double uy = fabs(u[2]) > fabs(u[3]) ? fabs(u[2]) : fabs(u[3]);
+    const double s = 1e-12 * (mx * ux + my * uy);
+    if (!(s < HUGE_VAL)) return 0;
+    if (dir > 0) {
+        const double lo = lo_product(x0, x1, u[0], u[1]) + lo_product(y0, y1, u[2], u[3]);
+        return lo >= u[4] * (1.0 + 1e-12) + s && lo < HUGE_VAL;
+    }
+    const double hi = -lo_product(x0, x1, -u[1], -u[0]) - lo_product(y0, y1, -u[3], -u[2]);
+    return hi <= -s && hi > -HUGE_VAL;
 }
 
 /* The squared distance of P to box b (0 inside; a NaN P: 0). */
@@ -184,6 +242,7 @@ typedef struct tree_query {
     long a, b;              /* the segments a .. b - 1 */
     double lmax, bd, bound2, bt;
     long bj;                /* -1: none nearer than the caller's bd yet */
+    int later;              /* of equal distances the last (a scan backwards), else the first */
 } tree_query;
 
 /* The bound of the boxes searched for bd: a segment whose squared distance computes to
@@ -209,7 +268,7 @@ static void tree_search(const seg_tree *T, long node, long lo, long hi, tree_que
         for (long m = m0; m < m1; m++) {
             double t;
             const double d2 = segment_distance2(T->V + 2 * m, T->V + 2 * m + 2, q->P, &t);
-            if (d2 < q->bd || (d2 == q->bd && q->bj >= 0 && m < q->bj)) {
+            if (d2 < q->bd || (d2 == q->bd && q->bj >= 0 && (q->later ? m > q->bj : m < q->bj))) {
                 q->bd = d2; q->bj = m; q->bt = t;
                 q->bound2 = tree_bound2(d2, q->lmax);
             }
@@ -238,13 +297,41 @@ static void nearest_in_range(seg_tree *T, int *tree_state, const double *V, long
         nearest_segment(V, j0, j1, P, lmax, r, bd, bj, bt);
         return;
     }
-    tree_query q = {P, j0, j1, lmax, *bd, tree_bound2(*bd, lmax), 0.0, -1};
+    tree_query q = {P, j0, j1, lmax, *bd, tree_bound2(*bd, lmax), 0.0, -1, 0};
     if (!(T->box[4] <= T->box[5])) return;      /* no segment */
     tree_search(T, 1, 0, T->size * TREE_LEAF, &q);
     if (q.bj < 0) return;
     *bd = q.bd; *bj = q.bj; *bt = q.bt;
     const double rn = reach_of(sqrt(q.bd), lmax);
     if (rn < *r) *r = rn;
+}
+
+/*
+ * The walk's skip at segment seg in direction dir: the largest node of the tree that
+ * starts (dir 1) or ends (dir -1) at seg and that the walk passes whole (walk_passes);
+ * its nearest segment taken as the walk would (bd, best, bt: strictly nearer than bd, of
+ * equal ones the first met); the next segment of the walk returned, or seg when none.
+ */
+static long walk_skip(const seg_tree *T, long seg, int dir, const double *P, double lmax, double *bd, long *best,
+                      double *bt)
+{
+    const long edge = dir > 0 ? seg : seg + 1;     /* the block's boundary at seg */
+    if (edge % TREE_LEAF) return seg;
+    long leaf = edge / TREE_LEAF - (dir > 0 ? 0 : 1), node = -1, span = 0;
+    if (leaf < 0 || leaf >= T->size || (dir > 0 && (leaf + 1) * TREE_LEAF > T->ns)) return seg;
+    for (long nd = T->size + leaf, k = 1; ; nd /= 2, k *= 2) {
+        if (dir > 0 ? (edge / TREE_LEAF + k) * TREE_LEAF > T->ns : edge / TREE_LEAF < k) break;
+        if (!walk_passes(T, nd, P, dir)) break;
+        node = nd; span = k * TREE_LEAF;
+        if (dir > 0 ? nd % 2 : !(nd % 2)) break;   /* the parent starts (ends) elsewhere */
+    }
+    if (node < 0) return seg;
+    (void)node;
+    tree_query q = {P, dir > 0 ? seg : seg + 1 - span, dir > 0 ? seg + span : seg + 1, lmax, *bd,
+                    tree_bound2(*bd, lmax), 0.0, -1, dir < 0};
+    tree_search(T, 1, 0, T->size * TREE_LEAF, &q);
+    if (q.bj >= 0) { *bd = q.bd; *best = q.bj; *bt = q.bt; }
+    return dir > 0 ? seg + span : seg - span;
 }
 
 /*
@@ -276,8 +363,9 @@ void el__fit_polygon_distances(const fit_objective *o, const double *V, size_t n
 void el__fit_polygon_distances_by(const fit_objective *o, const double *V, size_t nv, double h,
                                   size_t first, long step, double *dist, double *foot, int accelerate)
 {
-    seg_tree T = {V, 0, 0, NULL};
+    seg_tree T = {V, 0, 0, NULL, NULL};
     int tree_state = accelerate ? 0 : -1;       /* 0: not built yet, 1: built, -1: the scan */
+    if (accelerate && nv > TREE_MIN) tree_state = tree_build(&T, V, (long)nv - 1) ? 1 : -1;
     const long last = (long)nv - 2;
     /* the polygon's largest turning |T' - T| at its vertices over its shortest segment
      * (the bound of the jumps of f' above; a zero-length or non-finite segment: NaN, so
@@ -315,6 +403,15 @@ void el__fit_polygon_distances_by(const fit_objective *o, const double *V, size_
         long clo = j0, chi = j0 - 1;     /* the segments searched so far, clo .. chi */
         for (int dir = -1; dir <= 1; dir += 2) {
             for (long seg = dir < 0 ? j0 - 1 : j0; seg >= 0 && seg <= last; seg += dir) {
+                /* a run of segments the walk passes whole: skipped by the tree */
+                if (tree_state == 1) {
+                    const long next = walk_skip(&T, seg, dir, P, lmax, &bd, &best, &bt);
+                    if (next != seg) {
+                        if (dir < 0) clo = next + 1; else chi = next - 1;
+                        seg = next - dir;
+                        continue;
+                    }
+                }
                 double t;
                 const double d2 = segment_distance2(V + 2 * seg, V + 2 * seg + 2, P, &t);
                 if (dir < 0) clo = seg; else chi = seg;

@@ -47,22 +47,25 @@ START_TEST(test_tree_search_equals_linear_scan)
         for (size_t a = 0; a < sizeof sizes / sizeof sizes[0]; a++)
             for (size_t b = 0; b < sizeof noise / sizeof noise[0]; b++)
                 for (size_t c = 0; c < sizeof offset / sizeof offset[0]; c++)
-                    for (int dir = 0; dir < 2; dir++) {
+                    for (int dir = 0; dir < 4; dir++) {
                         const size_t n = sizes[a];
                         const double h = 1.0 / (double)n, off = offset[c];
                         shape_polygon(shape, n, h, off, &rng, V);
                         /* points along the polygon, noisy, some far off (a curve far from its points) */
                         for (size_t i = 0; i < n; i++) {
                             const double s = noise[b] * h * (i % 11 == 0 ? 10.0 : 1.0);
-                            const size_t j = dir ? n - 1 - i : i;
+                            /* dir 2, 3: point i at vertex i + n / 3 (a curve slipped along
+                             * its points: the walks from the points' vertices are long) */
+                            const size_t k = dir >= 2 ? (i + n / 3) % n : i;
+                            const size_t j = dir % 2 ? n - 1 - k : k;
                             xy[2 * i] = (isfinite(V[2 * j]) ? V[2 * j] : off) + s * test_normal(&rng);
                             xy[2 * i + 1] = V[2 * j + 1] + s * test_normal(&rng);
                         }
                         const fit_map m = {.model = FIT_DISCRETE, .ncurves = 1};
                         fit_objective o;
                         ck_assert_int_eq(el__fit_objective_init(&o, FIT_PAIRED, &m, xy, n, 0.0, 0.0, 1.0, NULL), EL_OK);
-                        const size_t first = dir ? n - 1 : 0;
-                        const long step = dir ? -1 : 1;
+                        const size_t first = dir % 2 ? n - 1 : 0;
+                        const long step = dir % 2 ? -1 : 1;
                         el__fit_polygon_distances_by(&o, V, n, h, first, step, d0, f0, 0);
                         el__fit_polygon_distances_by(&o, V, n, h, first, step, d1, f1, 1);
                         for (size_t i = 0; i < n; i++)
