@@ -594,7 +594,7 @@ static int further_runs(fit_run_state *R, int st)
     int unpaired = 0;
     if (R->ok && R->kind == FIT_PAIRED && o->distance == EL_DISTANCE_AUTO && caller_fit &&
         !inner && st != EL_ENOMEM) {
-        st = refitted(R, el__fit_unpaired(model, xy, n, R->opt, R->res, R->d, R->fs));
+        st = refitted(R, el__fit_unpaired(model, xy, n, R->opt, R->noise_rms * R->sc, R->res, R->d, R->fs));
         unpaired = R->res->distance == EL_DISTANCE_ORTHOGONAL;   /* its run polished it as needed */
     }
     /* not certified: Ipopt from this one; held ends as its rows */

@@ -743,11 +743,12 @@ int el__fit_fallback(int model, const double *xy, size_t n, const el_fit_options
                      double *d, double *fs);
 /* fit_restart.c: a discrete fit paired by the spacing test alone (*res, d, fs) whose points
  * slip along its polygon from their vertices, fitted again by distance to the polygon from
- * its result (when it converged); whose points jump a vertex (el__fit_skips), or slip from an
- * unconverged fit, fitted by distance afresh (the fit distance="orthogonal" gives); the refit replaces it when lower; res->status, or
- * EL_ENOMEM. */
-int el__fit_unpaired(int model, const double *xy, size_t n, const el_fit_options *opt, fit_out *res, double *d,
-                     double *fs);
+ * its result (when it converged); whose points jump a vertex (el__fit_skips), slip from an
+ * unconverged fit, or that lies farther from its points than PAIRED_FAR x their noise
+ * (noise: el__fit_noise_rms, input units), fitted by distance afresh (the fit
+ * distance="orthogonal" gives); the refit replaces it when lower; res->status, or EL_ENOMEM. */
+int el__fit_unpaired(int model, const double *xy, size_t n, const el_fit_options *opt, double noise, fit_out *res,
+                     double *d, double *fs);
 /* fit_pairing.c: whether the points slip along a paired fit's polygon (segment h, their
  * feet fs and rms distance to it, one units; a free fit's distances d, else NULL) by more
  * than PAIRING_SLIP times the noise across it; whether their mean slip steps by PAIRING_STEP vertices or more from one

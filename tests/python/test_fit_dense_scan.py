@@ -58,3 +58,29 @@ def test_dense_uneven_scan_fits_as_orthogonal_from_its_guesses():
     assert own <= 1.05 * noise
     ortho = el.fit(P, "discrete", distance="orthogonal")
     assert own <= 1.001 * ortho.rms
+
+
+def _linear_scan(n, ratio, noise, seed):
+    """n points of the S whose density grows linearly from 1 at t = 0 to ratio at t = 330
+    (the inverse of its cumulative distribution), noise per coordinate, at OFFSET."""
+    rng = np.random.default_rng(seed)
+    s, xy = _s_curve()
+    u = np.sort(rng.random(n))
+    a = ratio - 1.0
+    t = 330.0 * (-1.0 + np.sqrt(1.0 + a * (a + 2.0) * u)) / a
+    P = np.c_[np.interp(t, s, xy[:, 0]), np.interp(t, s, xy[:, 1])] + rng.normal(0, noise, (n, 2))
+    return P + OFFSET
+
+
+def test_large_linear_density_scan_is_not_kept_paired_far_from_its_points():
+    # main: 30 000 points, density 1:50, noise 0.05: the paired fit converged at rms 10.0
+    # (200 x the noise), its slip judged against that rms, and was kept; now refitted by
+    # distance afresh (fit_restart.c, PAIRED_FAR)
+    noise = 0.05
+    P = _linear_scan(30000, 50.0, noise, seed=1)
+    r = el.fit(P, "discrete")
+    assert r.status == 0
+    assert r.distance == "orthogonal"
+    assert r.rms <= 1.2 * noise
+    own = _polygon_rms(P[::10], r.curve.points())    # every 10th point, every segment
+    assert own <= 1.2 * noise
