@@ -11,8 +11,9 @@
  * deviations of the arguments from their means AF, AD after the duplications (kept
  * unscaled: 4^steps times Carlson's, f2 = 2^steps), plus the duplication sum of R_D,
  * num / den. (sqrt and division dominate the cost here: one division per mean.) Defined
- * for a type T, double and el_d2 (two lanes, el__carlson_fd2), with its square root: one
- * text of the coefficients, the same operations in each. */
+ * for a type T, double, el_d2 (two lanes, el__carlson_fd2) and el_d4 (four lanes, AVX2:
+ * el__carlson_fd4, hermite_lanes_avx2.c), with its square root: one text of the
+ * coefficients, the same operations in each. */
 #define DEFINE_RF_SERIES(name, T, SQRT)                                                                       \
     static T name(T AF0, T x0, T y0, T f2, T AF)                                                              \
     {                                                                                                         \

@@ -27,6 +27,7 @@
  * random U-turns moved by 1e-14 .. 3e-3, all length mode).
  */
 #include "hermite_internal.h"
+#include <gsl/gsl_math.h>   /* M_PI_2, as hermite.c has it */
 #include <stdlib.h>
 
 /* Whether the curve p is at most one curvature period long (to 1e-12 relative): kappa =
@@ -36,9 +37,29 @@ static int within_period(const el_smooth_params *p)
 {
     const double k = fabs(p->k), g = k < 1.0 ? k : 1.0 / k;
     double K;
-    if (!(g < 1.0) || el__ellint_complete(g, (1.0 - g) * (1.0 + g), &K, NULL)) return 1;
+    if (g == 1.0) return 1;   /* the separatrix: no period */
+    /* (no period known: rejected, a curve longer than one would be added otherwise) */
+    if (!(g < 1.0) || el__ellint_complete(g, (1.0 - g) * (1.0 + g), &K, NULL)) return 0;
     const double period = (k < 1.0 ? 4.0 * K : 2.0 * K / k) / sqrt(p->mu);
     return p->length <= period * (1.0 + 1e-12);
+}
+
+/* 1 where el_hermite_solve takes the data (0, 0) t0, p1, t1 (t0, t1 unit) for case 3 itself
+ * (el__hermite_set_case's hcase 3: its normalisation, hermite.c, step by step): the inner
+ * solve below then does not come here again (hermite.c steps here only at hcase != 3) */
+static int solved_as_case3(const double t0[2], const double p1[2], const double t1[2])
+{
+    const double n0 = hypot(t0[0], t0[1]), n1 = hypot(t1[0], t1[1]);
+    const double u0[2] = {t0[0] / n0, t0[1] / n0}, u1[2] = {t1[0] / n1, t1[1] / n1};
+    const double d = hypot(p1[0], p1[1]), rot = atan2(u0[1], u0[0]) - M_PI_2;
+    const double cr = cos(rot), sr = sin(rot), dx = p1[0] / d, dy = p1[1] / d;
+    hprob pr;
+    pr.P1 = cr * dx + sr * dy;
+    pr.P2 = -sr * dx + cr * dy;
+    pr.V1 = cr * u1[0] + sr * u1[1];
+    pr.V2 = -sr * u1[0] + cr * u1[1];
+    el__hermite_set_case(&pr);
+    return pr.hcase == 3;
 }
 
 int el__hermite_near_case3(const hframe *fr, const double u0[2], const hprob *pr,
@@ -49,9 +70,16 @@ int el__hermite_near_case3(const hframe *fr, const double u0[2], const hprob *pr
      * d (t0_y, -t0_x) in the world's, its (0, +-1) +-t0 */
     const double z[2] = {0.0, 0.0}, s1 = pr->P1 > 0.0 ? 1.0 : -1.0, s2 = pr->V2 > 0.0 ? 1.0 : -1.0;
     const double q1[2] = {s1 * fr->d * u0[1], -s1 * fr->d * u0[0]}, v1[2] = {s2 * u0[0], s2 * u0[1]};
+    /* the inner problem is case 3 by construction (its P2, V1 round to ~1e-16, set_case's
+     * threshold 1e-13): checked, so that no change to either recurses without bound through
+     * the public entry; where it is not, none to add */
+    if (!solved_as_case3(u0, q1, v1)) return EL_OK;
     el_hermite_result r3;
     const int rc = el_hermite_solve(z, u0, q1, v1, opt, &r3);
-    if (rc && rc != EL_EMAXITER) return EL_OK;   /* none to add: the general path's stand */
+    if (rc == EL_ENOMEM) { free(*sol); *sol = NULL; return EL_ENOMEM; }
+    /* none to add (the general path's stand); an incomplete inner solve (EL_EMAXITER, its
+     * solutions so far) is used as it is: the outer result's status is hermite.c's */
+    if (rc && rc != EL_EMAXITER) return EL_OK;
     const double target = opt->mode == EL_HERMITE_TENSION ? opt->sigma : opt->length;
     int status = EL_OK;
     for (size_t i = 0; i < r3.count && !status; i++) {
