@@ -1241,7 +1241,9 @@ typedef struct el_spline_result {
                               spline_stable.c): it slides off its ducks at span slide_span (from
                               point slide_span to slide_span + 1, counted from 0: the span whose
                               length grows most along that mode); 0 otherwise */
-    size_t slide_span;     /* also where unstable: the span moving most along that mode */
+    size_t slide_span;     /* also where unstable: the span moving most along that mode (by
+                              length where only the spans' lengths are the mode: a span past
+                              its force-free length, lengthening as the tension grows) */
     int unstable;          /* EL_OK, tension > 0 or length mode, open without G2 ends: 1 where
                               the spline returned is an equilibrium but no minimum of integral
                               kappa^2 + sigma ds with its ducks held (by length: under its
@@ -1249,7 +1251,8 @@ typedef struct el_spline_result {
                               shape (QA19 W2's 5 ducks turning 170 deg at sigma 1e-4 .. 0.05).
                               Returned as found (fair, G2 through the ducks), only flagged.
                               0: a minimum, or not judged (closed, G2 ends, a circle piece
-                              |k| >= 1e3 at sigma = kappa^2; tension 0: slides above) */
+                              |k| >= 1e3 at sigma = kappa^2, by length a singular reduced
+                              Hessian; tension 0: slides above) */
 } el_spline_result;
 
 /* Defaults: tension mode, sigma 0, open, natural ends, tol 1e-10, max_iter 60, max_steps 60. */

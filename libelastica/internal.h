@@ -399,11 +399,17 @@ int el__spline_unstable(el__spchain *w, size_t *span);
 /* The same for any solved open chain without guide ducks, in tension mode (held 0: H's
  * negative count) or with its total length held (held 1: under that constraint, sigma the
  * chain's multiplier; spline_stable.c's file comment), whatever its lmode; *span from H's
- * least eigenvalue's vector. */
+ * least eigenvalue's vector (held, H positive definite: the span of the least gamma_j). */
 int el__spline_unstable_as(el__spchain *w, int held, size_t *span);
 /* el__spline_unstable_as of the result res made from w (spline.c's make_result, the unit S),
- * res's pieces loaded into w first where w holds another chain (w used up). */
+ * res's pieces loaded into w first where w holds another chain (w used up); 0 (not judged)
+ * where res has another piece count than w's, or a circle piece. */
 int el__spline_unstable_result(el__spchain *w, const el_spline_result *res, double S, int held, size_t *span);
+/* spline_stable.c: the negative count of the second variation on the length constraint from
+ * H (k x k tridiagonal: dg, up; negH its negative count), g = dL / d theta (k) and the m
+ * spans' gamma_j = -dL_j / d sigma; -1: not judged (H singular, a gamma_j 0, no memory) */
+int el__spline_length_negatives(const double *dg, const double *up, const double *g, size_t k, int negH,
+                                const double *gam, size_t m);
 /* spline.c: 1 for a circle piece, or one near it resolved to more than tol (|k| >= 1e3, or
  * el_smooth_eval's bound past tol of its length: make_result's rule) */
 int el__spline_circle_piece(const el_smooth_params *p, double tol);

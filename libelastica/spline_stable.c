@@ -24,19 +24,32 @@
  * negative eigenvalue is a batten the tension does not hold either (it would snap to
  * another shape, the spans moving along that vector). By length (sigma the multiplier of
  * sum L_j = L) the batten is a minimum of sum_j E_j under that constraint iff the
- * Lagrangian's second variation is positive on the variations that keep the length: with
- * each span eliminated as above, the bordered matrix [H g; g^T -gamma], where
- * g_i = dL / d theta_i (the pieces' cL[1], cL[2]) and gamma = -sum_j dL_j / d sigma
- * (-cL[3]: a span's own give in length at fixed end angles, gamma > 0 where each span is
- * stable), has exactly one negative eigenvalue; i.e. H + g g^T / gamma is positive
- * definite (Schur complement of -gamma). By Haynsworth's inertia additivity (Schur
- * complement of H instead) the constraint removes one of H's negative eigenvalues iff
- * gamma + g^T H^{-1} g < 0 (GSL's symmetric tridiagonal solve for H^{-1} g).
- * Not judged: a chain with a circle piece (el__spline_unstable_result). Not tested here: a span unstable for its own end data (a conjugate point inside a
- * span), which H cannot see.
+ * Lagrangian's second variation is positive on the variations that keep the length. With
+ * e_j(theta, l_j) span j's energy at given end angles and length, c_j = d2 e_j / d l_j^2 =
+ * 1 / gamma_j, gamma_j = -dL_j / d sigma at fixed end angles (-cL[3]), completing the square
+ * in each l_j leaves dtheta^T H dtheta + sum_j c_j s_j^2 on sum_j s_j = -g . dtheta, where
+ * g_i = dL / d theta_i (the pieces' cL[1], cL[2]): the form of the bordered matrix
+ * K = [H 0 g; 0 C 1; g^T 1^T 0], C = diag(c_j), whose negative count is the constrained
+ * form's plus one (one constraint). Haynsworth's inertia additivity, C's Schur complement
+ * first ([H g; g^T -gamma], gamma = sum_j gamma_j), then H's, gives the count on the
+ * constraint
+ *   neg(H) + #{j: gamma_j < 0} + [gamma + g^T H^{-1} g > 0] - 1
+ * (el__spline_length_negatives). Where every gamma_j > 0 (each span gives length as the
+ * tension grows) this is neg(H) less one iff gamma + g^T H^{-1} g < 0: the constraint lifts
+ * one of H's negative eigenvalues. A span past its force-free length on its branch (a
+ * clamped U-turn span: sigma(L) least at L0 ~ 2.19 chords) has gamma_j < 0: two such spans,
+ * or one with H positive definite and gamma > 0, are unstable by moving length between
+ * spans at fixed angles, which H alone cannot see. H^{-1} g by GSL's banded LU with partial
+ * pivoting (H is indefinite here: a symmetric LDL^T without pivoting returns a wrong solve
+ * with status 0 where a leading block is near singular); a singular H, a gamma_j = 0 or a
+ * failed solve: not judged (0).
+ * Not judged: a chain with a circle piece, or a result whose piece count is not the chain's
+ * (el__spline_unstable_result). Not tested here: a span unstable for its own end data (a
+ * conjugate point inside a span; by tension also c_j < 0), which H cannot see.
  */
 #include "internal.h"
 #include <gsl/gsl_linalg.h>
+#include <stdlib.h>
 
 /* H of the header: E_j's 2 x 2 Hessian from piece j's c0, c1 summed at its two knots */
 void el__spline_hessian(el__spchain *w)
@@ -51,31 +64,64 @@ void el__spline_hessian(el__spchain *w)
     }
 }
 
-/* The length held (file comment): 1 where the constraint removes one of H's neg > 0
- * negative eigenvalues (gamma + g^T H^{-1} g < 0), else 0 (H singular: 0, not judged
- * better); H in w->dg, w->up on rows i0..i1, w->b and w->y its work */
-static int length_lifts_one(el__spchain *w, size_t i0, size_t i1)
+/* The file comment's count on the length constraint: H (dg, up: k x k tridiagonal, neg(H) =
+ * negH), g (k), gam (m: the spans' gamma_j); -1 where not judged (H singular, a gamma_j
+ * 0 or not finite, no memory). H^{-1} g: GSL's banded LU with partial pivoting (lb = ub =
+ * 1); its band storage holds A(i, j) at AB(j, lb + ub + i - j) (LAPACK's dgbtrf, one column
+ * of A a row of AB). */
+int el__spline_length_negatives(const double *dg, const double *up, const double *g, size_t k, int negH,
+                                const double *gam, size_t m)
 {
-    double gamma = 0.0, *g = w->b, *u = w->y;
+    double gamma = 0.0;
+    int nc = 0;
+    for (size_t j = 0; j < m; j++) {
+        if (!isfinite(gam[j]) || gam[j] == 0.0) return -1;
+        gamma += gam[j];
+        nc += gam[j] < 0.0;
+    }
+    if (!negH && !nc) return 0;   /* (H and C positive definite: so is the constrained form) */
+    double gu = 0.0;
+    if (k == 1) gu = g[0] * g[0] / dg[0];
+    else {
+        double *buf = malloc(k * 5 * sizeof *buf);
+        unsigned *piv = malloc(k * sizeof *piv);
+        if (!buf || !piv) { free(buf); free(piv); return -1; }
+        double *u = buf + 4 * k;
+        for (size_t j = 0; j < k; j++) {   /* column j of H: rows j - 1, j, j + 1 */
+            buf[4 * j + 1] = j > 0 ? up[j - 1] : 0.0;
+            buf[4 * j + 2] = dg[j];
+            buf[4 * j + 3] = j + 1 < k ? up[j] : 0.0;
+        }
+        gsl_matrix_view ab = gsl_matrix_view_array(buf, k, 4);
+        gsl_vector_uint_view pv = gsl_vector_uint_view_array(piv, k);
+        gsl_vector_const_view bv = gsl_vector_const_view_array(g, k);
+        gsl_vector_view xv = gsl_vector_view_array(u, k);
+        int rc = gsl_linalg_LU_band_decomp(k, 1, 1, &ab.matrix, &pv.vector);
+        if (!rc) rc = gsl_linalg_LU_band_solve(1, 1, &ab.matrix, &pv.vector, &bv.vector, &xv.vector);
+        for (size_t i = 0; i < k; i++) gu += g[i] * u[i];
+        free(buf);
+        free(piv);
+        if (rc) return -1;
+    }
+    if (!isfinite(gu) || gamma + gu == 0.0) return -1;
+    return negH + nc + (gamma + gu > 0.0) - 1;
+}
+
+/* el__spline_length_negatives on w's H (rows i0..i1, in w->dg, w->up), w->b its g; *span the
+ * span with the least gamma_j where one is negative (its length the one to move) */
+static int length_negatives(el__spchain *w, size_t i0, size_t i1, int negH, size_t *span)
+{
+    double *g = w->b, *gam = w->y;   /* (y: m <= n entries) */
     for (size_t i = i0; i <= i1; i++) g[i] = 0.0;
     for (size_t j = 0; j < w->m; j++) {
         const el__spiece *pc = &w->pc[j];
-        gamma -= pc->cL[3];   /* dL_j / d sigma at fixed end angles: D[3] = J^{-1} h^2 e4 */
+        gam[j] = -pc->cL[3];   /* -dL_j / d sigma at fixed end angles: D[3] = J^{-1} h^2 e4 */
         if (j >= i0 && j <= i1) g[j] += pc->cL[1];
         if (j + 1 >= i0 && j + 1 <= i1) g[j + 1] += pc->cL[2];
+        if (gam[j] < gam[*span]) *span = j;
     }
-    const size_t k = i1 - i0 + 1;
-    if (k == 1) u[i0] = g[i0] / w->dg[i0];
-    else {
-        gsl_vector_const_view dv = gsl_vector_const_view_array(w->dg + i0, k);
-        gsl_vector_const_view ev = gsl_vector_const_view_array(w->up + i0, k - 1);
-        gsl_vector_const_view bv = gsl_vector_const_view_array(g + i0, k);
-        gsl_vector_view xv = gsl_vector_view_array(u + i0, k);
-        if (gsl_linalg_solve_symm_tridiag(&dv.vector, &ev.vector, &bv.vector, &xv.vector)) return 0;
-    }
-    double gu = 0.0;
-    for (size_t i = i0; i <= i1; i++) gu += g[i] * u[i];
-    return isfinite(gu) && gamma + gu < 0.0;
+    const int neg = el__spline_length_negatives(w->dg + i0, w->up + i0, g + i0, i1 - i0 + 1, negH, gam, w->m);
+    return neg < 0 ? 0 : neg;
 }
 
 int el__spline_unstable(el__spchain *w, size_t *span)
@@ -97,7 +143,12 @@ int el__spline_unstable_as(el__spchain *w, int held, size_t *span)
     const size_t i1 = w->slot[n - 1] == EL__SLOT_ANGLE ? n - 1 : n - 2;
     if (i0 > i1) return 0;
     int neg = el__tridiag_negatives(dg, up, i0, i1, 0.0);
-    if (neg && held) neg -= length_lifts_one(w, i0, i1);
+    if (held) {
+        const int negH = neg;
+        neg = length_negatives(w, i0, i1, negH, span);
+        if (!neg) *span = 0;
+        if (!negH || !neg) return neg;   /* (H positive definite: the negative gamma_j's span) */
+    }
     if (!neg) return 0;
     /* the least eigenvalue: between Gershgorin's bound and 0 */
     double lo = 0.0, hi = 0.0;
@@ -135,7 +186,8 @@ int el__spline_unstable_result(el__spchain *w, const el_spline_result *res, doub
      * and below it stable) */
     for (size_t j = 0; j < res->npieces; j++)
         if (el__spline_circle_piece(&res->pieces[j], w->tol)) return 0;
-    if (res->npieces == w->m && !(L == res->length && res->sigma == (w->lmode ? w->sigma / (S * S) : w->sigma_user))) {
+    if (res->npieces != w->m) return 0;   /* another chain's pieces: not judged */
+    if (!(L == res->length && res->sigma == (w->lmode ? w->sigma / (S * S) : w->sigma_user))) {
         for (size_t j = 0; j < w->m; j++) {
             const el_smooth_params *p = &res->pieces[j];
             double *v = w->pc[j].v;

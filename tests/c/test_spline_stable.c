@@ -2,6 +2,7 @@
  * EL_EDOM with el_spline_result's slides and the span that slides; stable ones as before. */
 #include "spline_check.h"
 #include <gsl/gsl_eigen.h>
+#include <stdint.h>
 #include <stdio.h>
 
 /* 5 ducks: two along +x, a tip at (10, 0), then two going back at deg degrees from the
@@ -231,6 +232,108 @@ START_TEST(stale_jacobians_are_evaluated_again)
 }
 END_TEST
 
+/* uniform in [0, 1) (an LCG: the same draws on every machine) */
+static double ck_urand(uint64_t *r)
+{
+    *r = *r * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (double)(*r >> 11) / 9007199254740992.0;
+}
+
+/* The count on the length constraint (spline_stable.c's file comment) against the bordered
+ * matrix K = [H 0 g; 0 C 1; g^T 1^T 0], C = diag(1 / gamma_j), by its eigenvalues (GSL's
+ * dense symmetric solver): neg(K) - 1. */
+static int bordered_negatives(const double *dg, const double *up, const double *g, size_t k,
+                              const double *gam, size_t m)
+{
+    const size_t N = k + m + 1;
+    gsl_matrix *K = gsl_matrix_calloc(N, N);
+    gsl_vector *ev = gsl_vector_alloc(N);
+    gsl_eigen_symm_workspace *ws = gsl_eigen_symm_alloc(N);
+    for (size_t i = 0; i < k; i++) {
+        gsl_matrix_set(K, i, i, dg[i]);
+        if (i + 1 < k) { gsl_matrix_set(K, i, i + 1, up[i]); gsl_matrix_set(K, i + 1, i, up[i]); }
+        gsl_matrix_set(K, i, N - 1, g[i]);
+        gsl_matrix_set(K, N - 1, i, g[i]);
+    }
+    for (size_t j = 0; j < m; j++) {
+        gsl_matrix_set(K, k + j, k + j, 1.0 / gam[j]);
+        gsl_matrix_set(K, k + j, N - 1, 1.0);
+        gsl_matrix_set(K, N - 1, k + j, 1.0);
+    }
+    ck_assert_int_eq(gsl_eigen_symm(K, ev, ws), 0);
+    int neg = 0;
+    for (size_t i = 0; i < N; i++) neg += gsl_vector_get(ev, i) < 0.0;
+    gsl_eigen_symm_free(ws);
+    gsl_vector_free(ev);
+    gsl_matrix_free(K);
+    return neg - 1;
+}
+
+/* H with a tiny leading pivot (the review's H: well conditioned, det -0.91, one negative
+ * eigenvalue), g = e0, spans' gamma_j 0.2 + 0.3 > 0: g^T H^{-1} g = -0.91, so gamma + g^T
+ * H^{-1} g = -0.41 < 0 and the constraint lifts H's negative eigenvalue: stable. GSL's
+ * non-pivoting gsl_linalg_solve_symm_tridiag (de127fd's solve) returns x = (0, 1, -0.3) with
+ * status 0 (g^T x = 0: "unstable"). Then random H (leading blocks near singular among
+ * them), g and gamma_j of either sign (spans past their force-free length: gamma_j < 0),
+ * each count against K's. */
+START_TEST(length_count_is_the_bordered_inertia)
+{
+    const double dg[3] = {1e-17, 1.0, 1.0}, up[2] = {1.0, 0.3}, g[3] = {1.0, 0.0, 0.0};
+    const double gam[2] = {0.2, 0.3};
+    ck_assert_int_eq(el__tridiag_negatives(dg, up, 0, 2, 0.0), 1);
+    ck_assert_int_eq(bordered_negatives(dg, up, g, 3, gam, 2), 0);
+    ck_assert_int_eq(el__spline_length_negatives(dg, up, g, 3, 1, gam, 2), 0);
+    /* one span past its force-free length, H positive definite, gamma > 0: unstable by moving
+     * length between the spans at fixed angles (H alone says stable) */
+    const double dp[2] = {2.0, 3.0}, upp[1] = {0.5}, gp[2] = {0.3, -0.2}, gm[3] = {1.0, -0.4, 0.6};
+    ck_assert_int_eq(bordered_negatives(dp, upp, gp, 2, gm, 3), 1);
+    ck_assert_int_eq(el__spline_length_negatives(dp, upp, gp, 2, 0, gm, 3), 1);
+    uint64_t r = 12345;
+    int seen[4] = {0, 0, 0, 0};
+    for (int t = 0; t < 4000; t++) {
+        const size_t k = 1 + t % 9, m = k + 1;
+        double d[10], u[10], b[10], c[11];
+        for (size_t i = 0; i < k; i++) {
+            d[i] = 4.0 * ck_urand(&r) - 1.0;
+            u[i] = 2.0 * ck_urand(&r) - 1.0;
+            b[i] = 2.0 * ck_urand(&r) - 1.0;
+        }
+        if (t % 3 == 0) d[0] = 1e-15 * (ck_urand(&r) - 0.5);   /* a tiny leading pivot */
+        for (size_t j = 0; j < m; j++) c[j] = (ck_urand(&r) < 0.15 ? -1.0 : 1.0) * (0.05 + ck_urand(&r));
+        const int negH = el__tridiag_negatives(d, u, 0, k - 1, 0.0);
+        const int want = bordered_negatives(d, u, b, k, c, m);
+        const int got = el__spline_length_negatives(d, u, b, k, negH, c, m);
+        ck_assert_msg(got == want, "trial %d (k %zu): %d for %d", t, k, got, want);
+        seen[want < 3 ? want : 3]++;
+    }
+    for (int i = 0; i < 4; i++) ck_assert_int_gt(seen[i], 0);
+}
+END_TEST
+
+/* A result of another piece count than the chain's is not judged (0): w, a chain of its
+ * own (the sharp free batten of 5 ducks, unstable by H), was judged in its place before. */
+START_TEST(another_chains_result_is_not_judged)
+{
+    const double sharp[10] = {0, 0, 5, 0, 10, 0.3, 5.5, 1.2, 0.5, 1.6};
+    el__spchain w;
+    solved_chain(&w, sharp, 5, 0.0);
+    size_t span = 99;
+    ck_assert_int_gt(el__spline_unstable(&w, &span), 0);
+    el_spline_options o;
+    el_spline_options_defaults(&o);
+    o.sigma = 1.0;
+    el_spline_result r;
+    ck_assert_int_eq(el_spline_solve(sharp, 4, &o, &r), EL_OK);
+    ck_assert_uint_eq(r.npieces, 3);
+    for (int held = 0; held < 2; held++) {
+        span = 99;
+        ck_assert_int_eq(el__spline_unstable_result(&w, &r, 1.0, held, &span), 0);
+    }
+    el_spline_result_free(&r);
+    el__chain_free(&w);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("spline_stable");
@@ -241,6 +344,8 @@ int main(void)
     tcase_add_test(tc, a_tension_is_not_judged);
     tcase_add_test(tc, hessian_is_the_second_difference_of_the_energy);
     tcase_add_test(tc, stale_jacobians_are_evaluated_again);
+    tcase_add_test(tc, length_count_is_the_bordered_inertia);
+    tcase_add_test(tc, another_chains_result_is_not_judged);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }

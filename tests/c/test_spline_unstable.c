@@ -114,6 +114,66 @@ static double least_eigenvalue(const double *xy, size_t n, const el_spline_resul
     return least_eigenvalue_in(xy, n, r, Lt, e, 0, n - 1);
 }
 
+/* Span j of the n ducks xy between knot angles a0, a1 at length L (user units): its Hermite
+ * elastica by length (el_hermite_solve, the public entry: no spline code), the solution on
+ * r's branch (sigma nearest r's); its bending energy */
+static double span_energy(const double *xy, size_t j, double a0, double a1, double L, double sigma)
+{
+    el_hermite_options o;
+    el_hermite_options_defaults(&o);
+    o.mode = EL_HERMITE_LENGTH;
+    o.length = L;
+    const double t0[2] = {cos(a0), sin(a0)}, t1[2] = {cos(a1), sin(a1)};
+    el_hermite_result h;
+    const int st = el_hermite_solve(xy + 2 * j, t0, xy + 2 * j + 2, t1, &o, &h);
+    ck_assert(st == EL_OK || st == EL_EMAXITER);
+    double best = INFINITY, E = NAN;
+    for (size_t i = 0; i < h.count; i++)
+        if (fabs(h.solutions[i].sigma - sigma) < best) { best = fabs(h.solutions[i].sigma - sigma); E = h.solutions[i].energy; }
+    el_hermite_result_free(&h);
+    ck_assert(isfinite(E));
+    return E;
+}
+
+/* By length, every span's length its own variable (the spans' lengths summing to r's): the
+ * least eigenvalue of the Hessian of sum_j E_j in the n knot angles (step e) and the m - 1
+ * lengths l_0 .. l_{m-2} (l_{m-1} the rest; step e times the mean chord) by central second
+ * differences. Unlike least_eigenvalue (one common sigma: a minimum over the lengths only
+ * where every span gives length as the tension grows) this assumes nothing of the spans. */
+static double least_eigenvalue_lengths(const double *xy, size_t n, const el_spline_result *r, double e)
+{
+    const size_t m = n - 1, nv = n + m - 1;
+    ck_assert_uint_le(nv, 12);
+    double H[144], el[12];
+    for (size_t i = 0; i < nv; i++) el[i] = i < n ? e : e * polygon_length(xy, n) / (double)m;
+    for (size_t i = 0; i < nv; i++)
+        for (size_t k = i; k < nv; k++) {
+            double f[4];
+            for (int a = 0; a < 4; a++) {
+                double z[12] = {0};
+                z[i] += a & 1 ? el[i] : -el[i];
+                z[k] += a & 2 ? el[k] : -el[k];
+                double E = 0.0, rest = 0.0;
+                for (size_t j = 0; j < m; j++) {
+                    const double dl = j + 1 < m ? z[n + j] : -rest;
+                    rest += dl;
+                    E += span_energy(xy, j, r->angles[j] + z[j], r->angles[j + 1] + z[j + 1],
+                                     r->pieces[j].length + dl, r->sigma);
+                }
+                f[a] = E;
+            }
+            H[i * nv + k] = H[k * nv + i] = (f[3] - f[2] - f[1] + f[0]) / (4.0 * el[i] * el[k]);
+        }
+    gsl_eigen_symm_workspace *ws = gsl_eigen_symm_alloc(nv);
+    gsl_vector *ev = gsl_vector_alloc(nv);
+    gsl_matrix_view Hm = gsl_matrix_view_array(H, nv, nv);
+    ck_assert_int_eq(gsl_eigen_symm(&Hm.matrix, ev, ws), 0);
+    const double lmin = gsl_vector_min(ev);
+    gsl_vector_free(ev);
+    gsl_eigen_symm_free(ws);
+    return lmin;
+}
+
 /* case c: 0 the sharp ducks, else turn(deg) */
 static void layout(double deg, double xy[10])
 {
@@ -153,12 +213,18 @@ START_TEST(by_tension_an_unstable_spline_says_so)
 END_TEST
 
 /*
- * By length the batten is judged under its length: the least bending energy of the spans
- * through given knot angles with that total length (sigma moved until the spans' lengths
- * sum to it), its second differences in the angles. The same ducks at the lengths of the
- * unstable tension splines above and some longer: the 170-deg ducks at 1.3 x their polygon
- * unstable (-170), the sharp ducks at 1.05 and 1.6 x and the 120-deg turn at 1.2 x stable
- * (11.4, 3.43, 4.67), the last though the tension it takes (sigma -0.052) would not hold it.
+ * By length the batten is judged under its length: the bending energy sum_j E_j of the spans
+ * through given knot angles at given lengths summing to it (each span solved by
+ * el_hermite_solve), its second differences in the angles and the lengths. The same ducks at
+ * the lengths of the unstable tension splines above and some longer: the 170-deg ducks at
+ * 1.3 x their polygon unstable (-0.13), the sharp ducks at 1.05 x and the 120-deg turn at
+ * 1.2 x stable (1.31, 0.48), the last though the tension it takes (sigma -0.052) would not
+ * hold it. The sharp ducks at 1.6 x are unstable (-0.041) though the angles alone say stable
+ * (3.43, one common sigma): their spans 1 and 2 are past their force-free lengths (dL_j /
+ * dsigma +30.4, +27.3, where a span normally shortens as the tension grows), and moving
+ * length from one to the other at fixed angles lowers the energy (second difference
+ * -0.069 = 1 / -30.4 + 1 / -27.3). de127fd's test said stable there, as its check (one
+ * common sigma) shares the assumption of its criterion (spline_stable.c's file comment).
  */
 START_TEST(by_length_an_unstable_spline_says_so)
 {
@@ -181,15 +247,17 @@ START_TEST(by_length_an_unstable_spline_says_so)
         /* the 120-deg turn at 1.2 x: the tension does not hold it (those second differences at
          * its sigma have a negative eigenvalue, -86), its length does */
         if (c == 3) ck_assert_double_lt(least_eigenvalue(xy, 5, &r, 0.0, 1e-4), -1.0);
-        printf("length case %d (%g deg, %g x): unstable %d span %zu, least eigenvalue %.4g, sigma %g\n",
-               c, deg[c], Lr[c], r.unstable, r.slide_span, lmin, r.sigma);
-        ck_assert_msg(fabs(lmin) > 1e-3, "case %d: too near neutral to judge (%g)", c, lmin);
-        ck_assert_msg(r.unstable == (lmin < 0.0), "case %d: unstable %d, least eigenvalue %g", c, r.unstable, lmin);
+        const double lfull = least_eigenvalue_lengths(xy, 5, &r, 1e-4);
+        printf("length case %d (%g deg, %g x): unstable %d span %zu, least eigenvalue %.4g, with the lengths %.4g, sigma %g\n",
+               c, deg[c], Lr[c], r.unstable, r.slide_span, lmin, lfull, r.sigma);
+        ck_assert_msg(fabs(lfull) > 1e-3, "case %d: too near neutral to judge (%g)", c, lfull);
+        ck_assert_msg(r.unstable == (lfull < 0.0), "case %d: unstable %d, least eigenvalue %g", c, r.unstable, lfull);
+        if (lmin < 0.0) ck_assert_int_eq(r.unstable, 1);   /* (the angles alone: a sufficient test) */
         seen[r.unstable]++;
         el_spline_result_free(&r);
     }
-    ck_assert_int_eq(seen[0], 3);
-    ck_assert_int_eq(seen[1], 1);
+    ck_assert_int_eq(seen[0], 2);
+    ck_assert_int_eq(seen[1], 2);
 }
 END_TEST
 
