@@ -657,7 +657,7 @@ ONE_END_FARTHER = dict(x0=35.21642498170392, y0=-24.171176497357095, phi=1.98615
 
 
 @pytest.mark.parametrize("n", [20, 30])
-def test_a_held_end_is_not_given_up_for_the_other_ends_sake(n):
+def test_a_held_end_is_not_given_up_for_the_other_ends_sake(n, monkeypatch):
     """The source's end tangents were held or given up together: where holding the end's took
     the spline farther from the source, the start's, which alone does not, was given up too
     (this curve at 20 edges: the start 0.886 deg off, 'holding it takes the spline farther').
@@ -673,9 +673,15 @@ def test_a_held_end_is_not_given_up_for_the_other_ends_sake(n):
     th = float(c.angle([0.0])[0])
     assert abs(math.atan2(t[0] * math.sin(th) - t[1] * math.cos(th),
                           t[0] * math.cos(th) + t[1] * math.sin(th))) < 1e-9
-    free = float(re.search(r"against ([0-9.e-]+)\)", said).group(1))
-    assert g.deviation <= free * 1.004      # (the figure said to 3 digits)
     assert joint_jump(g.bsplines[0]) < 1e-9
+    # neither end held: the same build with no held parabola found (_hold_start None), its
+    # deviation computed by the library anew, not read from the warning's words (whose
+    # 'against' figure is the kept candidate's own deviation)
+    from libelastica import g2ends
+    monkeypatch.setattr(g2ends, "_hold_start", lambda *a: None)
+    with pytest.warns(el.EndTangentWarning, match="no G2 end found"):
+        free = el.g2_quadratic(c, n, partial=True)
+    assert g.deviation <= free.deviation * (1.0 + 1e-6)
 
 
 def test_hold_start_finds_a_root_beyond_its_first_box():
