@@ -88,3 +88,35 @@ class KeyOnceTest(S.DocTest):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class CallKeyTest(unittest.TestCase):
+    """kept.call_key (a command's check handed to its feature) keyed a Part.Vertex as
+    ('shape', 'Vertex', ()): every vertex one key, the hand of one taken for another; a Face
+    by its edges only; any other object by repr() ('<BSplineCurve object>' for all). Now a
+    vertex keys by its point, a shape with faces or an unknown type has no key (TypeError)
+    and checked_call / handed compute."""
+
+    def core(self, value):
+        return ("computed", repr(value))
+
+    def test_two_vertices_have_two_keys(self):
+        import Part
+        a, b = Part.Vertex(0, 0, 0), Part.Vertex(1, 2, 3)
+        self.assertNotEqual(kept.call_key(self.core, a), kept.call_key(self.core, b))
+        self.assertEqual(kept.call_key(self.core, a), kept.call_key(self.core, Part.Vertex(0, 0, 0)))
+        ca, cb = Part.Compound([a]), Part.Compound([b])
+        self.assertNotEqual(kept.call_key(self.core, ca), kept.call_key(self.core, cb))
+
+    def test_unkeyable_values_are_computed(self):
+        import Part
+        face = Part.makePlane(1, 1)
+        curve = Part.LineSegment(App.Vector(0, 0, 0), App.Vector(1, 0, 0))
+        for value in (face, curve, {"a": 1}):
+            with self.assertRaises(TypeError):
+                kept.call_key(self.core, value)
+            key, outcome = kept.checked_call(self.core, value)
+            self.assertIsNone(key)
+            p = proxy.FeatureProxy.__new__(proxy.FeatureProxy)
+            p.checked = (key, ("handed", None))
+            self.assertEqual(p.handed(self.core, value)[0], "computed")

@@ -138,15 +138,24 @@ def _edge_key(e):
 
 
 def _comparable(value):
-    """``value`` as _stable, a Part shape by its edges' geometry (_edge_key), a numpy array
-    by its exact values."""
+    """``value`` as _stable, a Part shape by its edges' geometry (_edge_key) and its vertices'
+    points (exact floats: a lone Vertex, a compound's loose ones), a numpy array by its exact
+    values. A shape with faces (its surfaces are no part of such a key) or a value of another
+    type (a Part.Geometry, a dict: _stable's repr() would make all of one type equal) raises
+    TypeError: no key, the call is made (checked_call, handed)."""
     if hasattr(value, "Edges") and hasattr(value, "ShapeType"):
-        return ("shape", value.ShapeType, tuple(_edge_key(e) for e in value.Edges))
+        if getattr(value, "Faces", None):
+            raise TypeError(f"no call key for a shape with faces ({value.ShapeType})")
+        return ("shape", value.ShapeType, tuple(_edge_key(e) for e in value.Edges),
+                tuple(_stable(v.Point) for v in value.Vertexes))
     if hasattr(value, "tolist") and hasattr(value, "dtype"):
         return ("array", repr(value.tolist()))
     if isinstance(value, (list, tuple)):
         return tuple(_comparable(v) for v in value)
-    return _stable(value)
+    if value is None or isinstance(value, (bool, int, float, str, App.Vector, App.Placement,
+                                           App.Units.Quantity, App.DocumentObject)):
+        return _stable(value)
+    raise TypeError(f"no call key for a {type(value).__name__}")
 
 
 def call_key(core, *args, **kwargs):
@@ -162,7 +171,10 @@ def checked_call(core, *args, **kwargs):
     """A command's check: ``(call_key, core(*args, **kwargs))``, handed to the feature it
     creates (FeatureProxy.handed) so that its first recompute, making the same call, takes
     the outcome instead of computing it again."""
-    key = call_key(core, *args, **kwargs)
+    try:
+        key = call_key(core, *args, **kwargs)
+    except TypeError:           # an argument _comparable cannot key: no hand, the feature computes
+        key = None
     return key, core(*args, **kwargs)
 
 

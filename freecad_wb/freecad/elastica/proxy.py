@@ -500,8 +500,13 @@ class FeatureProxy:
         of that very call: the command computed it to judge its input, so creation computes
         once. Taken once: a later recompute computes."""
         checked, self.checked = getattr(self, "checked", None), None
-        if checked is not None and checked[0] == call_key(core, *args, **kwargs):
-            return checked[1]
+        if checked is not None and checked[0] is not None:
+            try:
+                same = checked[0] == call_key(core, *args, **kwargs)
+            except TypeError:       # no key for an argument (kept._comparable): computed
+                same = False
+            if same:
+                return checked[1]
         return core(*args, **kwargs)
 
     def setup(self, obj):
