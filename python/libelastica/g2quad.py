@@ -580,13 +580,12 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                     other = x.copy()
                     other[-3:-1] = xt[-3:-1]
                     cands += [one, other]
-                best = None
+                best, tried = None, []
                 for ci, xc in enumerate(cands):
                     bt = g2_bspline(xc, ends[p], ends[p + 1])
                     tdev = max([pmid] + [_spline_deviation(bt, samples, t_ends[p],
                                                            t_ends[p + 1], q) for q in parts])
-                    if ci == 0:
-                        tboth = tdev
+                    tried.append(tdev)
                     if tdev <= pdev * (1.0 + 1e-6):      # (1e-12 apart by rounding alone)
                         best = (ci, xc, bt, tdev)
                         break
@@ -596,8 +595,11 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                     kept = {None: -1, 1: 0, 2: 1}[None if best is None else best[0]]
                     for e in (0, 1):
                         if holds[e] and e != kept:
+                            # the figure of this end held alone where it was tried alone
+                            # and neither is kept; else of both held (against the one kept)
+                            own = tried[1 + e] if best is None and len(tried) == 3 else tried[0]
                             gave_up[e] = (f"holding it takes the spline farther from the "
-                                          f"source ({tboth:.3g} against {pdev:.3g})")
+                                          f"source ({own:.3g} against {pdev:.3g})")
         poly[a:b + 1] = x
         kl, kr = quadratic_joint_curvatures(bs)
         if len(kl):
