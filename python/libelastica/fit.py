@@ -210,8 +210,10 @@ def far_points(distances, points, factor: float = OUTLIER_FACTOR,
         return np.intersect1d(far_points(d, pts, factor), free)
     if len(d) < OUTLIER_MIN_POINTS:
         return np.empty(0, dtype=np.intp)
-    extent = float(np.max(np.ptp(pts, axis=0)))
     typical = 1.4826 * float(np.median(d))
+    if not d.max() > factor * typical:      # none far (el.fit asks this of every fit): no extent
+        return np.empty(0, dtype=np.intp)
+    extent = float(np.max(np.ptp(pts, axis=0)))
     m = int(np.count_nonzero((d > factor * typical) & (d > OUTLIER_FLOOR * extent)))
     if m == 0 or m == len(d):
         return np.empty(0, dtype=np.intp)
