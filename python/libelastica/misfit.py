@@ -415,10 +415,12 @@ class OutlierWarning(RuntimeWarning):
 def outliers_summary(distances, far, rows=None, free_distances=None, unit: str = "",
                      length: Optional[LengthFormat] = None) -> str:
     """What a warning of points far from the curve says (:func:`fit`'s OutlierWarning, the
-    CLI's line): far_points_summary's figures, the points (``rows``: their numbers for the
-    user, default ``far``; 10 at most named) and what to do: "1 of 40 points lies 3.9 from
-    the curve, the others within 0.12: outliers? (points 13, counted from 0) Each pulls the
-    fit towards itself: remove them to fit the rest"."""
+    CLI's line): far_points_summary's figures of ``distances`` (the fit's, or with
+    ``free_distances`` the free fit's as there), ``unit`` and ``length`` writing them as
+    there, the points ``far`` (``rows``: their numbers for the user, default ``far``; 10 at
+    most named) and what to do: "1 of 40 points lies 3.9 from the curve, the others within
+    0.12: outliers? (points 13, counted from 0) Each pulls the fit towards itself: remove
+    them to fit the rest"."""
     from .fit import far_points_summary
     rows = [int(i) for i in (far if rows is None else rows)]
     named = ", ".join(str(i) for i in rows[:10]) + (", ..." if len(rows) > 10 else "")

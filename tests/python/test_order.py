@@ -65,7 +65,9 @@ def test_shuffled_points_warn_and_fit_in_curve_order(name):
         coil = el.fit(Q, model="smooth")
     assert any(issubclass(w.category, el.OrderWarning) for w in said)
     true = fit_silent(P)
-    assert coil.curve.length > 3 * true.curve.length     # what the warning is about
+    # what the warning is about: a coil many times the curve (2.82 x for the tile since 5d427a4
+    # cut free smooth fits to their feet's range; 3 x and more before)
+    assert coil.curve.length > 2.5 * true.curve.length
     r = fit_silent(Q, order="curve")
     assert np.array_equal(r.points, Q[r.order]) and sorted(r.order) == list(range(len(Q)))
     # no coil: the fit in order's (measured: length 0.1 %, 0.9 %, 4 % off for sheer, tile,
