@@ -287,7 +287,7 @@ int el__fit_unpaired(int model, const double *xy, size_t n, const el_fit_options
     const double h = res->params[2];
     const int free_fit = !opt || (!opt->constraints && fit_options_unbounded(opt));   /* NULL: defaults */
     const int slips = el__fit_slips(n, h, res->rms, free_fit ? d : NULL, fs);
-    const int far = res->rms > PAIRED_FAR * noise && res->rms > 1e-3 * h * (double)(n - 1);
+    const int far = free_fit && res->rms > PAIRED_FAR * noise && res->rms > 1e-3 * h * (double)(n - 1);
     if (!slips && !far && !el__fit_skips(n, h, res->rms, fs)) return res->status;
     fit_out alt;
     double *buf;
@@ -296,7 +296,9 @@ int el__fit_unpaired(int model, const double *xy, size_t n, const el_fit_options
      * passes the spacing test, its segments all noise; its paired fit wanders to max_iter,
      * rms 7.4 for noise 0.05 on QA21gui F3's 10 000 points, and Ipopt's refit from that
      * curve ran for minutes through curves far from the points, where afresh it is 0.4 s.) */
-    const int from_fit = slips && !far && res->status == EL_OK;
+    /* afresh only for a free fit: with end conditions a fit from nothing may shrink onto
+     * them (the GUI smoke's start curvature no fit meets: 0.43 nm long) */
+    const int from_fit = slips && !far && (res->status == EL_OK || !free_fit);
     const int st = rerun_from(model, xy, n, opt, EL_DISTANCE_ORTHOGONAL, 0, from_fit ? res : NULL, &alt, &buf);
     if (st != EL_ENOMEM && alt.status != -1 && alt.rms < res->rms) {
         if (from_fit) memcpy(alt.initial, res->initial, sizeof alt.initial);
