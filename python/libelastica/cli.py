@@ -44,8 +44,8 @@ FIT_EXAMPLES = """examples:
 
 input: CSV, whitespace separated text or .npy, 2 columns (x, y) or 3 (x, y, z);
 '#' comments and one header line are allowed. ';' or tab separated files may have decimal
-commas, and thousands grouped by '.' (1.250,5; 980;1.000) where the file shows it: else
---thousands . or --thousands none says which.
+commas, and thousands grouped by '.' (1.250,5; 980;1.000) or by ',' (1,250.5) where the file
+shows it: else --thousands . or , or none says which.
 angles (--fix phi, --start-tangent, --end-tangent): degrees, or radians with 'rad' after
 the number ('0.5rad'); the JSON writes them in radians (phi, *_tangent_rad)."""
 

@@ -193,9 +193,10 @@ def _plane_record(frame) -> Optional[Dict[str, Any]]:
 
 def thousands_option(parser) -> None:
     """--thousands of a command that reads point files (io.read_points' thousands)."""
-    parser.add_argument("--thousands", choices=(".", "none"),
-                        help="';' or tab separated files: '.' groups thousands (980;1.250 is "
-                             "980, 1250: Excel's #.##0 with decimal commas), or none (1.250 is "
+    parser.add_argument("--thousands", choices=(".", ",", "none"),
+                        help="how point files group thousands: '.' (980;1.250 is 980, 1250: "
+                             "Excel's #.##0 with decimal commas), ',' (1,250 is 1250: English "
+                             "#,##0, '.' the decimal point), or none (1.250 is 1.25, 1,250 is "
                              "1.25); default: what the file shows, a file that does not show "
                              "it refused")
 

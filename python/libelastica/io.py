@@ -41,6 +41,11 @@ _INTEGER = re.compile(r"[+-]?\d+")
 _GROUPED = re.compile(r"[+-]?[1-9]\d{0,2}(?:\.\d{3})+(?:,\d+)?")
 # the form a decimal point can also give: one dot, 1 to 3 digits before it, 3 after
 _GROUPED_OR_POINT = re.compile(r"[+-]?[1-9]\d{0,2}\.\d{3}")
+# a number with ',' grouping its thousands, a decimal point after it or not: 1,250, 1,250.5,
+# -12,345,678 (English #,##0 and #,##0.00: a spreadsheet's or a report's tab export)
+_EN_GROUPED = re.compile(r"[+-]?[1-9]\d{0,2}(?:,\d{3})+(?:\.\d+)?")
+# what only that grouping writes: a decimal point after the groups, or two groups
+_EN_ONLY = re.compile(r"[+-]?[1-9]\d{0,2}(?:(?:,\d{3})+\.\d+|(?:,\d{3}){2,}(?:\.\d+)?)")
 
 
 def _uncommented(line: str) -> str:
@@ -98,6 +103,8 @@ def _parse_text(text: str, name: str, thousands: Optional[str] = None) -> np.nda
         delim = "\t"
     elif "," in sample and not _decimal_commas_between(data_lines[:20], None):
         delim = ","
+    elif '"' in sample and "\t" in sample:
+        delim = "\t"       # quoted fields between tabs ("1.5"<TAB>"2.5"): csv's quoting
     # csv's quoting rules: a quoted field keeps its commas ("102,697" from a spreadsheet
     # that writes decimal commas with ',' between the columns); lines end at any line end
     # (CR alone: classic Mac and some instruments' exports)
@@ -107,15 +114,21 @@ def _parse_text(text: str, name: str, thousands: Optional[str] = None) -> np.nda
         if fields and not fields[0].startswith("#"):
             split.append((lineno, fields))
     tsep = "\t" if delim is None and "\t" in sample else delim
-    if _thousands(_coordinate_fields(split) if thousands is None and tsep in (";", "\t") else split,
-                  tsep, thousands, name):
+    coords = _coordinate_fields(split) if thousands is None else split
+    if _comma_thousands(coords, tsep, thousands, name):
+        split = [(ln, [f.replace(",", "") if _EN_GROUPED.fullmatch(f) else f for f in fields])
+                 for ln, fields in split]
+        coords = _coordinate_fields(split) if thousands is None else split
+    if _thousands(coords if tsep in (";", "\t") else split, tsep, thousands, name):
         split = [(ln, [f.replace(".", "").replace(",", ".") if _GROUPED.fullmatch(f) else f
                        for f in fields]) for ln, fields in split]
     skipped = None      # the number of the first line skipped as a title or header
     for lineno, fields in split:
-        # a field holding a comma is a decimal comma whatever the separator: a comma
-        # separator splits unquoted ones, and the others have no comma between columns
-        fields = [f.replace(",", ".") if _DECIMAL_COMMA.fullmatch(f) else f for f in fields]
+        # a field holding a comma is a decimal comma whatever the separator (but where ','
+        # groups thousands: _comma_thousands): a comma separator splits unquoted ones, and
+        # the others have no comma between columns
+        fields = [f.replace(",", ".") if _DECIMAL_COMMA.fullmatch(f) and thousands != ","
+                  else f for f in fields]
         if not rows and not any(_is_number(f) for f in fields) and \
                 not all(_is_number(w) for f in fields for w in f.split()):   # '1.5 2.5' at ','
             header = fields            # a title or header line: the last one names columns
@@ -213,7 +226,8 @@ def _coordinate_fields(split) -> list:
     header above names x, y (z), else all of them. An id, a date, a count beside the
     coordinates then neither blocks nor flips :func:`_thousands`' decision."""
     def numeric(f):
-        return _is_number(f) or bool(_DECIMAL_COMMA.fullmatch(f) or _GROUPED.fullmatch(f))
+        return _is_number(f) or bool(_DECIMAL_COMMA.fullmatch(f) or _GROUPED.fullmatch(f)
+                                     or _EN_GROUPED.fullmatch(f))
     header, rows = None, []
     for lineno, fields in split:
         if not rows and not any(map(numeric, fields)) and \
@@ -245,8 +259,8 @@ def _thousands(split, delim, thousands: Optional[str], name: str) -> bool:
     holds both plain integers and 1.250's (980 above 1.000: Excel's #.##0). Else the file
     does not decide: InputError naming the first such field's line."""
     if thousands is not None:
-        if thousands not in (".", ""):
-            raise InputError(f"thousands: '.' or '' (none), got {thousands!r}")
+        if thousands not in (".", ",", ""):
+            raise InputError(f"thousands: '.', ',' or '' (none), got {thousands!r}")
         return thousands == "."
     if delim not in (";", "\t"):
         return False
@@ -287,6 +301,62 @@ def _thousands(split, delim, thousands: Optional[str], name: str) -> bool:
         f"{grouped}; read_points(thousands='') or thousands='.')")
 
 
+def _comma_thousands(split, delim, thousands: Optional[str], name: str) -> bool:
+    """Whether ',' groups thousands (English #,##0: 1,250.5 is 1250.5) in the fields of
+    ``split`` ((line, fields) rows: the coordinate columns' alone, :func:`_coordinate_fields`).
+    ``thousands``: ',' yes, '.' or '' no (a comma is then a decimal comma), None: what the
+    whole file shows, where some field has the grouped form (_EN_GROUPED): no when some field
+    has a comma the grouping cannot write (1,5, 0,25, 1,2500, 1.250,5); else yes when some
+    field has a decimal point after its groups or two groups (1,250.5, 1,234,567: only the
+    grouping writes them), or some number has a decimal point that '.' grouping cannot write
+    (0.5, 1234.5: the file's decimal separator is '.'), or a column holds both plain integers
+    and 1,250's (980 above 1,000); no when some integer 1000 or more has no comma. Else every
+    comma is written d,ddd .. ddd,ddd, as both English thousands and a decimal comma with 3
+    decimals write them (QA: a tab export's 1,250 read as 1.25, silently): tab separated
+    files are refused naming the line, the two readings differing by 1000; space separated
+    ones read decimal commas, as before. In ';' separated files and quoted between ','
+    (the decimal-comma locales' own) only a 1,250.5 or 1,234,567 reads grouped."""
+    if thousands is not None:
+        return thousands == ","
+    first = next(((ln, f) for ln, r in split for f in r if _EN_GROUPED.fullmatch(f)), None)
+    if first is None:
+        return False
+    plain_cols, grouped_cols, only, point, big = set(), set(), False, False, False
+    for _, r in split:
+        for c, f in enumerate(r):
+            if _EN_ONLY.fullmatch(f):
+                only = True                         # 1,250.5, 1,234,567
+            elif _EN_GROUPED.fullmatch(f):
+                grouped_cols.add(c)                 # 1,250
+            elif "," in f and (_DECIMAL_COMMA.fullmatch(f) or _GROUPED.fullmatch(f)):
+                return False                        # 1,5, 0,25, 1.250,5
+            elif _INTEGER.fullmatch(f):
+                big = big or abs(int(f)) >= 1000    # #,##0 would write 1,000
+                plain_cols.add(c)
+            elif _is_number(f) and "." in f and not _GROUPED.fullmatch(f):
+                point = True                        # a decimal point: 0.5, 1234.5
+    if only:
+        return True
+    if delim not in ("\t", None):      # ';', or quoted between ',': decimal commas but there
+        return False
+    if point:
+        return True
+    if big:
+        return False
+    if plain_cols & grouped_cols:
+        return True
+    if delim is None:                   # spaces: decimal commas, as before (test_cli)
+        return False
+    ln, f = first
+    comma, grouped = float(f.replace(",", ".")), int(f.replace(",", ""))
+    raise InputError(
+        f"{name}: line {ln}: {f!r} is {comma!r} or {grouped}: every number with a comma has "
+        "3 digits after one ',', as a decimal comma with 3 decimals and English thousands "
+        "(#,##0) both write them, and none shows which (no 1,5 or 1250; no 1,250.5, 0.5 or "
+        f"980); say which (command line: --thousands none reads {comma!r}, --thousands , "
+        f"reads {grouped}; read_points(thousands='') or thousands=',')")
+
+
 def _decimal_commas_between(lines, sep) -> bool:
     """Whether lines holding commas are numbers with decimal commas separated by ``sep``
     (tabs, or None: any whitespace; an export as '1,5<TAB>0,25' or '1,5 0,25': QA, refused
@@ -296,22 +366,27 @@ def _decimal_commas_between(lines, sep) -> bool:
     '17.05.2024<TAB>12,5<TAB>3,25', split at the commas before): every line splits into as
     many fields, at least two columns hold a number in every line, some with a decimal
     comma, and the others a number in none (a label, whatever its commas)."""
-    rows = [[f.strip() for f in ln.split(sep) if f.strip()] for ln in lines]
-    while rows and not any(_is_number(f) or _DECIMAL_COMMA.fullmatch(f) for f in rows[0]):
+    def numeric(f):
+        return bool(_is_number(f) or commas(f) or _GROUPED.fullmatch(f))
+
+    def commas(f):      # 1,5; 1,250.5 (English thousands); 1.250,5 ('.' thousands)
+        return bool(_DECIMAL_COMMA.fullmatch(f) or _EN_GROUPED.fullmatch(f)
+                    or ("," in f and _GROUPED.fullmatch(f)))
+    # (fields quoted between tabs: "1,5"<TAB>"2,5")
+    rows = [[f.strip().strip('"') if sep else f.strip() for f in ln.split(sep) if f.strip()]
+            for ln in lines]
+    while rows and not any(map(numeric, rows[0])):
         rows = rows[1:]                                   # a title, a header
     if not rows or any(len(r) < 2 for r in rows):
         return False
-
-    def numeric(f):
-        return bool(_is_number(f) or _DECIMAL_COMMA.fullmatch(f))
     if all(numeric(f) for r in rows for f in r):
-        return any(_DECIMAL_COMMA.fullmatch(f) for r in rows for f in r)
+        return any(commas(f) for r in rows for f in r)
     if len({len(r) for r in rows}) != 1:
         return False
     cols = list(zip(*rows))
     nums = [c for c in cols if all(map(numeric, c))]
     return len(nums) >= 2 and all(not any(map(numeric, c)) for c in cols if c not in nums) \
-        and any(_DECIMAL_COMMA.fullmatch(f) for c in nums for f in c)
+        and any(commas(f) for c in nums for f in c)
 
 
 def _is_number(s: str) -> bool:
@@ -399,6 +474,15 @@ def read_points(path: PathLike, min_points: int = 3, data: Optional[bytes] = Non
     refused naming the line. Only the columns read as coordinates decide (an id, a date
     or a count beside them, ``1.001`` or ``20240517``, does not). ``thousands='.'`` reads
     dots as grouping, ``thousands=''`` as decimal points, whatever the file.
+
+    Tab or space separated files (and quoted fields) may group thousands by ',' (English
+    ``#,##0``: ``1,250.5`` is 1250.5), read so where the file shows it (a ``1,250.5``, a
+    ``1,234,567``, a ``0.5`` beside a ``1,250``, a column holding both ``980`` and
+    ``1,000``); a comma the grouping cannot write (``1,5``) or a ``1250`` without one
+    reads decimal commas; a tab file whose every comma is ``d,ddd`` is refused naming the
+    line (space separated: decimal commas, as before; ';': only a ``1,250.5`` or
+    ``1,234,567`` reads grouped). ``thousands=','`` reads commas as grouping, whatever the
+    file (and ``'.'`` or ``''`` a comma as a decimal comma).
     """
     name = "standard input" if str(path) == "-" else str(path)
     data = read_input(path) if data is None else data

@@ -30,12 +30,17 @@ def _write(tmp_path, name, text, encoding="utf-8"):
 def test_tab_export_with_decimal_commas_beside_a_text_column(tmp_path):
     """German Excel's 'Text (Tab-delimited)' (cp1252, CRLF) with a point-name column, and
     LibreOffice's tab CSV with a date column: read before as split at the commas ('not a
-    number: 'P1\\t140'')."""
+    number: 'P1\\t140''). Their every number is written d,ddd (3 decimals, 60 .. 140), as
+    English thousands (#,##0) also write them: the user says which (thousands='', --thousands
+    none: test_read_comma_thousands.py) between tabs; between spaces they read as before."""
     names = _write(tmp_path, "names.txt", "Punkt\tx (L\xe4nge)\ty (H\xf6he)\r\n" + "".join(
         f"P{i + 1}\t{_dc(x)}\t{_dc(y)}\r\n" for i, (x, y) in enumerate(PTS)), "cp1252")
-    assert np.array_equal(read_points(names), WANT)
+    with pytest.raises(InputError, match=r"line 2: '140,000' is 140\.0 or 140000: .*"
+                                         r"--thousands none reads 140\.0"):
+        read_points(names)
+    assert np.array_equal(read_points(names, thousands=""), WANT)
     dates = _write(tmp_path, "dates.csv", "Datum\tX\tY\tZ\n" + "".join(
-        f"17.05.2024\t{_dc(x)}\t{_dc(y)}\t{_dc(1.5)}\n" for x, y in PTS))
+        f"17.05.2024\t{_dc(x)}\t{_dc(y)}\t{_dc(1.5, 1)}\n" for x, y in PTS))
     assert np.array_equal(read_points(dates), np.c_[WANT, np.full(len(PTS), 1.5)])
     # the name last, and spaces between the columns
     last = _write(tmp_path, "last.txt", "x y Punkt\n" + "".join(
@@ -50,9 +55,9 @@ def test_a_text_column_without_a_header_is_named(tmp_path):
                                           for i, (x, y) in enumerate(PTS)))
     with pytest.raises(InputError, match=r"line 1: not a number: 'P1' \(column 1 holds no "
                                          r"number: names\? a header line naming the coordinate"):
-        read_points(p)
+        read_points(p, thousands="")
     _write(tmp_path, "p.txt", "name\tx\ty\n" + p.read_text())
-    assert np.array_equal(read_points(p), WANT)
+    assert np.array_equal(read_points(p, thousands=""), WANT)
 
 
 @pytest.mark.parametrize("shift, evidence", [
