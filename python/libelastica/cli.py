@@ -463,13 +463,9 @@ def cmd_spline(args) -> int:
               f"polygon does not, or is longer than 4 x it: length {sp.length:.6g}); no fair "
               f"batten was found {fix}", file=sys.stderr)
     if sp.unstable:
-        j = sp.unstable_span
         fix = (f"give a larger --tension than {sp.tension:.6g}" if args.length is None else
                f"try another --length than {args.length:g}, or a --tension")
-        print(f"warning: the spline is an unstable equilibrium (tension {sp.tension:.6g}): it "
-              "passes every point and is fair to draw, but a real batten bent so would not stay, "
-              f"it would snap to another shape (moving most between points {j} and {j + 1}, "
-              f"counted from 0); for a shape a batten holds, {fix}", file=sys.stderr)
+        print("warning: " + sp.unstable_text(fix), file=sys.stderr)
     need_b = args.dxf or args.bspline_tol is not None
     b = None
     if need_b:

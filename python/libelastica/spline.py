@@ -206,6 +206,21 @@ class ElasticSpline(ValueEquality):
                 f"{(j + 1) % n} cross" for i, j in sorted(self.crossings(), key=lambda c: c in own)]
         return ", ".join(said[:3]) + (f" and {len(said) - 3} more" if len(said) > 3 else "")
 
+    def unstable_text(self, fix: str, said: Optional[str] = None, noun: str = "spline") -> str:
+        """What an unstable spline is (``unstable``), in the one summary its every caller says:
+        UnstableWarning, the CLI's warning, the FreeCAD batten's caution ('' when it holds).
+        ``fix``: the way to a shape a batten holds, in the caller's terms (a keyword, a flag,
+        a property); ``said``: what goes in brackets after 'equilibrium' (None: the tension,
+        '': nothing, as where the caller's unit system writes it); ``noun``: its subject."""
+        if not self.unstable:
+            return ""
+        j = self.unstable_span
+        said = f"tension {self.tension:.6g}" if said is None else said
+        return (f"the {noun} is an unstable equilibrium" + (f" ({said})" if said else "") +
+                ": it passes every point and is fair to draw, but a real batten bent so would "
+                f"not stay, it would snap to another shape (moving most between points {j} and "
+                f"{j + 1}, counted from 0); for a shape a batten holds, {fix}")
+
     def to_bspline(self, tol: Optional[float] = None, degree: int = 3):
         """ONE clamped B-spline (degree 3..7) for the whole spline within ``tol``
         (coordinate units; default 1e-6 of its length) of it: every point of the B-spline within ``tol`` of the
@@ -262,11 +277,19 @@ def _fair_advice(pts: np.ndarray, closed: bool) -> str:
 HOLD_MULTIPLES = (1, 2, 5, 10, 20, 50, 100, 200, 500, 1000)
 
 
+def ladder_words(shown: int = 1) -> str:
+    """HOLD_MULTIPLES in words, for every text naming them (none types them): its first
+    ``shown``, ', '-joined, then '..' and its last."""
+    words = [f"{m:g}" for m in HOLD_MULTIPLES]
+    return ", ".join(words[:shown]) + " .. " + words[-1]
+
+
 # the advice of the DomainError at tension 0 (no free batten) for the API's user (the CLI
 # says its own: cli_common.holding_advice)
 SMALL_TENSION_TEXT = (" (a small tension may give a spline that loops, LoopWarning, or one a real "
                       "batten would not hold, UnstableWarning: raise it until neither is warned; "
-                      "el.holding_tension(points) tries 1 .. 1000 / polygon^2 for one that holds)")
+                      f"el.holding_tension(points) tries {ladder_words()} / polygon^2 for one that "
+                      "holds)")
 
 
 def holding_tension(points, start=None, end=None, closed=False):
@@ -420,7 +443,7 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
     batten passes the points (tension 0 raises :class:`DomainError`), the least tension
     just above where the spline stops looping is often unstable (the spike of the FreeCAD
     tests: 10 / P^2, P the polygon) and a few times more holds (100 / P^2):
-    :func:`holding_tension` finds the least of 1 .. 1000 / P^2 that holds, solved.
+    :func:`holding_tension` finds the least of :data:`HOLD_MULTIPLES` / P^2 that holds, solved.
     At tension 0 an unstable free batten is not returned: it slides off its ducks
     (DomainError, naming the span).
 
@@ -568,17 +591,13 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
                               f"): no fair batten was found at {fix}",
                               LoopWarning, stacklevel=2)
             if sp.unstable:
-                span = sp.unstable_span
-                fix = (f"a larger tension than {sp.tension:.4g}" if length is None else
+                fix = (f"a larger tension than {sp.tension:.6g}" if length is None else
                        f"another length than {length:.6g} (or a tension)")
-                warnings.warn(
-                    "elastic_spline: the spline through these points is an unstable equilibrium "
-                    f"({'by length ' + format(length, '.6g') + ', ' if length is not None else ''}"
-                    f"tension {sp.tension:.4g}): it passes every duck and is fair to draw, but a "
-                    "real batten bent so would not stay: it would snap to another shape, "
-                    f"moving most at the span from point {span} to {span + 1} (counted from 0). "
-                    f"For a shape a batten holds, try {fix}, or ease the sharpest turn there",
-                    UnstableWarning, stacklevel=2)
+                said = None if length is None else \
+                    f"by length {length:.6g}, tension {sp.tension:.6g}"
+                warnings.warn("elastic_spline: " + sp.unstable_text(
+                    f"try {fix}, or ease the sharpest turn there", said), UnstableWarning,
+                    stacklevel=2)
             if seam:
                 a = sp.pieces[-1].angle(np.array([sp.pieces[-1].length]))[0] - sp.pieces[0].angle(np.zeros(1))[0]
                 corner = abs(math.degrees(math.remainder(a, 2 * math.pi)))

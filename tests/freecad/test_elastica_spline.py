@@ -179,6 +179,12 @@ class SplineTest(S.DocTest):
                       "raise the tension"):
             self.assertIn(words, w)
         self.assertEqual(s.Status, f"ok; warning: {w}")
+        # the binding's one summary (its UnstableWarning's and the CLI's), in the panel's terms
+        import warnings
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            sp = ensure_binding().elastic_spline(sharp, tension=1e-4)
+        self.assertEqual(w, sp.unstable_text("raise the tension", said="", noun="batten"))
         self.check_through_and_g2(s, self.global_ducks(sharp))
         s.Tension = 3e-3
         self.doc.recompute()

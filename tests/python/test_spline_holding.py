@@ -114,3 +114,28 @@ def test_holding_tension_says_points_that_double_back():
     from test_spline_noise import stroke
     with pytest.raises(el.DoublesBackError, match="double back on themselves"):
         el.holding_tension(stroke())
+
+
+def test_the_ladder_is_said_from_its_list(capsys, tmp_path, monkeypatch):
+    """The ladder's words come from spline.HOLD_MULTIPLES, the list el.holding_tension
+    solves: they were typed by hand ('1 .. 1000', '1, 2, 5, 10 .. 1000') in five texts (the
+    binding's advice and docstring, the CLI's two, FreeCAD's), which a change of the list
+    would have left saying another ladder. Another list is said as it is, and no source
+    file types the numbers."""
+    import re
+    from pathlib import Path
+
+    import libelastica.spline as spline
+    assert (spline.ladder_words(), spline.ladder_words(4)) == ("1 .. 1000", "1, 2, 5, 10 .. 1000")
+    assert f"tries {spline.ladder_words()} / polygon^2" in spline.SMALL_TENSION_TEXT
+    monkeypatch.setattr(spline, "HOLD_MULTIPLES", (3, 30, 300))
+    path = tmp_path / "needle.csv"
+    np.savetxt(path, NEEDLE, delimiter=",")
+    code, _, err = cli(capsys, "spline", path, "--tension", "0")
+    assert code == 2 and "no tension of 3 .. 300 / the polygon squared" in err, err
+    root = Path(__file__).resolve().parents[2]
+    typed = [f"{p.relative_to(root)}:{i}" for p in sorted(
+        list((root / "python" / "libelastica").glob("*.py")) + list((root / "freecad_wb").rglob("*.py")))
+        for i, line in enumerate(p.read_text(encoding="utf-8").splitlines(), 1)
+        if re.search(r"\b1 \.\. 1000\b|\b1, 2, 5\b", line) and "HOLD_MULTIPLES =" not in line]
+    assert typed == [], typed

@@ -43,7 +43,7 @@ def test_an_unstable_spline_warns(points, by):
     assert sp.unstable and sp.unstable_span == 2 and sp.loops == ("length" in by)
     msg = str(next(w.message for w in rec if w.category is el.UnstableWarning))
     assert "unstable equilibrium" in msg and "snap to another shape" in msg, msg
-    assert "from point 2 to 3" in msg and ("larger tension" in msg if "tension" in by
+    assert "between points 2 and 3" in msg and ("larger tension" in msg if "tension" in by
                                            else "another length" in msg), msg
     # the spline itself is the one returned before: G2 through its ducks
     ends = np.r_[0, np.cumsum([p.length for p in sp.pieces])]
@@ -72,3 +72,23 @@ def test_the_cli_says_it(tmp_path, capsys):
     assert json.loads((tmp_path / "s.json").read_text())["unstable"] is True
     code, out, err = cli(capsys, "spline", f, "--tension", "0.3")
     assert code == 0 and "unstable" not in err, err
+
+
+def test_one_summary_for_every_caller(tmp_path, capsys):
+    """UnstableWarning, the CLI's warning and the FreeCAD batten's caution say one summary,
+    ElasticSpline.unstable_text, each with its own way out (a keyword, a flag, a property):
+    three hand-written copies had drifted apart ('from point 2 to 3' vs 'between points 2
+    and 3', tension to 4 or 6 digits)."""
+    with pytest.warns(el.UnstableWarning) as rec:
+        sp = el.elastic_spline(SHARP, tension=0.01)
+    msg = str(next(w.message for w in rec if w.category is el.UnstableWarning))
+    assert msg == "elastic_spline: " + sp.unstable_text(
+        "try a larger tension than 0.01, or ease the sharpest turn there"), msg
+    f = tmp_path / "ducks.csv"
+    f.write_text("x,y\n" + "\n".join(f"{x},{y}" for x, y in SHARP) + "\n")
+    code, out, err = cli(capsys, "spline", f, "--tension", "0.01")
+    assert code == 0 and f"warning: {sp.unstable_text('give a larger --tension than 0.01')}\n" \
+        in err, err
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        assert el.elastic_spline(SHARP, tension=0.3).unstable_text("x") == ""

@@ -52,7 +52,8 @@ def _library_message(exc):
         binding_module("spline").SMALL_TENSION_TEXT,
         " (a small tension may give a batten that loops, or one a real batten bent so would "
         "not hold: raise it until the Warnings say neither; the Elastic spline command, "
-        "given no tension, starts at the least of 1 .. 1000 / P\u00b2 that holds)")
+        f"given no tension, starts at the least of {binding_module('spline').ladder_words()} "
+        "/ P\u00b2 that holds)")
 
 
 def end_condition(edge, condition, point, neighbour, arriving, seam=False, at_end=None):
@@ -330,13 +331,10 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
                      "): no fair batten at this " + ("tension; raise the tension or give a length"
                                                      if mode == "tension" else
                                                      "length; give a shorter length or a tension"))
-    if sp.unstable:                       # no minimum: as the library's UnstableWarning says
-        j = sp.unstable_span
-        cautions.append("the batten is an unstable equilibrium: it passes every point and is fair "
-                        "to draw, but a real batten bent so would not stay, it would snap to "
-                        f"another shape (moving most between points {j} and {j + 1}, counted from "
-                        "0); " + ("raise the tension for one that holds" if mode == "tension" else
-                                  "try another length, or a tension, for one that holds"))
+    if sp.unstable:                       # no minimum: the library's UnstableWarning's words
+        cautions.append(sp.unstable_text("raise the tension" if mode == "tension" else
+                                         "try another length, or a tension", said="",
+                                         noun="batten"))
     for j, name in ((0, "first"), (-1, "last")):
         if isinstance(specs[j], dict):     # its force: GuideForces
             notes.append(f"G2 {'start' if j == 0 else 'end'}: a guide duck a quarter into the "
