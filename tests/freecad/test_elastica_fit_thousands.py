@@ -35,7 +35,7 @@ class FitThousandsTest(S.DocTest):
     def test_an_ambiguous_file_names_the_property_and_reads_as_it_says(self):
         path = self._file(f"{x}.000;{_ys(x):.3f}" for x in XS)
         f = Fi.make(self.doc, [], csv_file=path, Model="smooth")
-        self.assertEqual(f.getEnumerationsOfProperty("Thousands"), ["auto", ".", "none"])
+        self.assertEqual(f.getEnumerationsOfProperty("Thousands"), ["auto", ".", "none", ","])
         self.assertEqual(f.Thousands, "auto")
         self.doc.recompute()
         self.assertTrue(f.Status.startswith("error") and "Thousands property" in f.Status,
@@ -72,11 +72,11 @@ class FitThousandsTest(S.DocTest):
         asked = []
 
         def answer(choice):
-            return lambda p: asked.append(p) or choice
+            return lambda p, sep: asked.append((p, sep)) or choice
 
         path = self._file(f"{x}.000;{_ys(x):.3f}" for x in XS)
         opts = C.csv_thousands(path, answer("none"))
-        self.assertEqual((opts, asked), ({"Thousands": "none"}, [path]))
+        self.assertEqual((opts, asked), ({"Thousands": "none"}, [(path, ".")]))
         f = C.fit_sources([], csv_file=path, open_panel=False, Model="smooth", **opts)
         self.assertIsNotNone(f)
         self.assertPoints(f, [(float(x), float(f"{_ys(x):.3f}")) for x in XS])
@@ -94,6 +94,36 @@ class FitThousandsTest(S.DocTest):
         self.doc.recompute()
         self.assertFalse(f.Status.startswith("error"), f.Status)
         self.assertPoints(f, [(1000.0 * x + 0.5, x * x + 0.25) for x in XS])
+
+    def test_english_thousands_between_tabs(self):
+        """A tab export whose every number is d,ddd (English #,##0 of whole mm, or decimal
+        commas with 3 decimals) is refused naming the property, which now has ',' (the
+        library reads ',' grouping: read_points(thousands=','); the panel offered only '.'
+        or none, both reading 1,250 as 1.25): ',' reads 1250, none 1.25; the Fit-to-CSV
+        command asks about ',' (it asked whether '.' groups thousands); a 1,250.5 shows it."""
+        path = S.temp_path(self, "scan.txt")
+        with open(path, "w") as fh:
+            fh.write("".join(f"{1000 + 10 * x:,}\t{2000 + x * x:,}\n" for x in XS))
+        f = Fi.make(self.doc, [], csv_file=path, Model="smooth")
+        self.doc.recompute()
+        self.assertTrue(f.Status.startswith("error") and "Thousands property: . , or none"
+                        in f.Status and "'1,010' is 1.01 or 1010" in f.Status, f.Status)
+        f.Thousands = ","
+        self.doc.recompute()
+        self.assertFalse(f.Status.startswith("error"), f.Status)
+        self.assertPoints(f, [(1000.0 + 10 * x, 2000.0 + x * x) for x in XS])
+        f.Thousands = "none"
+        self.doc.recompute()
+        self.assertPoints(f, [(1.0 + x / 100, 2.0 + x * x / 1000) for x in XS])
+        asked = []
+        opts = C.csv_thousands(path, lambda p, sep: asked.append(sep) or sep)
+        self.assertEqual((opts, asked), ({"Thousands": ","}, [","]))
+        shown = S.temp_path(self, "shown.txt")
+        with open(shown, "w") as fh:
+            fh.write("".join(f"{1000 + 10 * x:,.1f}\t{2000 + x * x:,}\n" for x in XS))
+        self.assertEqual(C.csv_thousands(shown, lambda p, sep: asked.append(sep) or sep), {})
+        self.assertEqual(asked, [","])
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -302,37 +302,48 @@ class FitCsvCommand(_Command):
 
 def csv_thousands(path, ask):
     """fit_sources' Thousands option for the point file ``path``: {} where the file shows
-    how '.' is meant (or is unreadable either way: the fit's check says why); where it does
-    not (read_points refuses it as auto, reads it with '.' grouping and as decimals: every
-    number d.ddd), ``ask(path)``'s answer ('.' or 'none'; None = cancelled, returned)."""
+    how '.' and ',' are meant (or is unreadable either way: the fit's check says why); where
+    it does not (read_points refuses it as auto and reads it both ways: every number d.ddd,
+    or in a tab file d,ddd), ``ask(path, sep)``'s answer for that separator, '.' or ','
+    ('.', ',' or 'none'; None = cancelled, returned)."""
     from .geometry import binding_module
     read_points = binding_module("io").read_points
 
     def reads(thousands):
         try:
-            read_points(path, min_points=1, thousands=thousands)
+            return read_points(path, min_points=1, thousands=thousands)
         except ValueError:
-            return False
-        return True
+            return None
 
-    if reads(None) or not (reads(".") and reads("")):
+    if reads(None) is not None:
         return {}
-    choice = ask(path)
+    grouped, dot, comma = reads("."), reads(""), reads(",")
+    if dot is None:
+        return {}
+    if grouped is not None and not (grouped.shape == dot.shape and (grouped == dot).all()):
+        sep = "."                       # 1.250: 1250 or 1.25
+    elif comma is not None and not (comma.shape == dot.shape and (comma == dot).all()):
+        sep = ","                       # 1,250: 1250 or 1.25
+    else:
+        return {}
+    choice = ask(path, sep)
     return None if choice is None else {"Thousands": choice}
 
 
-def _ask_thousands(path):
-    """The user's answer for csv_thousands: '.', 'none' or None (cancelled)."""
+def _ask_thousands(path, sep="."):
+    """The user's answer for csv_thousands: ``sep`` ('.' or ','), 'none' or None (cancelled)."""
     import os
     from PySide import QtGui
+    point = "a decimal point" if sep == "." else "a decimal comma"
     box = QtGui.QMessageBox(QtGui.QMessageBox.Question, "Points to fit",
-                            f"{os.path.basename(path)}: its numbers (1.000, 2.421 ...) do not "
-                            "show whether '.' groups thousands or is a decimal point.",
+                            f"{os.path.basename(path)}: its numbers (1{sep}000, 2{sep}421 ...) do "
+                            f"not show whether '{sep}' groups thousands or is {point}.",
                             QtGui.QMessageBox.Cancel, Gui.getMainWindow())
-    grouped = box.addButton("'.' groups thousands (1.000 = 1000)", QtGui.QMessageBox.AcceptRole)
-    decimal = box.addButton("'.' is a decimal point (1.000 = 1)", QtGui.QMessageBox.AcceptRole)
+    grouped = box.addButton(f"'{sep}' groups thousands (1{sep}000 = 1000)",
+                            QtGui.QMessageBox.AcceptRole)
+    decimal = box.addButton(f"'{sep}' is {point} (1{sep}000 = 1)", QtGui.QMessageBox.AcceptRole)
     box.exec_()
-    return {grouped: ".", decimal: "none"}.get(box.clickedButton())
+    return {grouped: sep, decimal: "none"}.get(box.clickedButton())
 
 
 # ------------------------------------------------------------------ blend

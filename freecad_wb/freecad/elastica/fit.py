@@ -48,8 +48,14 @@ class FitProxy(FeatureProxy):
                  "How CsvFile groups thousands, as the command line's --thousands: auto = "
                  "what the file shows (';' and tab separated files of decimal-comma locales: "
                  "1.250,5 or 980;1.000 group by '.'; a file that does not show it is "
-                 "refused); . = '.' groups thousands (1.250 is 1250); none = '.' is a "
-                 "decimal point (1.250 is 1.25)", list(THOUSANDS), "auto")
+                 "refused); . = '.' groups thousands (1.250 is 1250); none = '.' is a decimal "
+                 "point, ',' a decimal comma (1.250 and 1,250 are 1.25); , = ',' groups "
+                 "thousands, '.' the decimal point (English #,##0: 1,250.5 is 1250.5)",
+                 list(THOUSANDS), "auto")
+        if obj.getEnumerationsOfProperty("Thousands") != list(THOUSANDS):
+            kept = obj.Thousands      # an older file's list, without ',': the choice kept
+            obj.Thousands = list(THOUSANDS)
+            obj.Thousands = kept
         add_property(obj, "App::PropertyInteger", "SamplesPerEdge", "Input",
                      "Points sampled on each curved source edge (4 to 10000)", 60)
         add_enum(obj, "Model", "Fit",

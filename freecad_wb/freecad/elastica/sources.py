@@ -74,8 +74,8 @@ def sample_edges(edges, samples_per_edge):
 
 
 # a CSV fit's Thousands property: its values and read_points' thousands for each
-THOUSANDS = {"auto": None, ".": ".", "none": ""}
-THOUSANDS_HINT = "(the fit's Thousands property: . or none)"
+THOUSANDS = {"auto": None, ".": ".", "none": "", ",": ","}
+THOUSANDS_HINT = "(the fit's Thousands property: . , or none)"
 _CLI_THOUSANDS = re.compile(r"\(command line: --thousands[^()]*(\([^()]*\)[^()]*)*\)")
 
 
@@ -87,7 +87,7 @@ def gather_points(sources, csv_file="", samples_per_edge=60, link=None, element=
     a feature's: links.followed_reader, its sketch geometry followed); ``notes``: a list
     the user's notes on what was left out are appended to (a whole sketch's edges beside
     its points); ``thousands``: how a CSV file groups thousands, read_points' (None: the
-    file decides, '.', '' none; a file that does not show it is refused naming ``link``'s
+    file decides, '.', ',', '' none; a file that does not show it is refused naming ``link``'s
     feature's Thousands property, THOUSANDS).
 
     Returns (points: list[App.Vector], plane: App.Placement or None (a sketch's),

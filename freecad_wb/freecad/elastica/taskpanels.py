@@ -142,12 +142,16 @@ class FitPanel(Panel):
         self.row(g, "Points file", w, self.csv.toolTip())
         self.thousands = self.choice(
             g, "Thousands", "Thousands", list(THOUSANDS),
-            ["auto", "1.000 = 1000", "1.000 = 1"],
-            "How the file's '.' is meant: auto = as the file shows it (a ';' or tab separated "
-            "file of a decimal-comma locale: 1.250,5 groups by '.'); '.' groups thousands "
-            "(1.000 = 1000); '.' is a decimal point (1.000 = 1)",
+            ["auto", "1.000 = 1000", "1.000 = 1", "1,000 = 1000"],
+            "How the file's '.' and ',' are meant: auto = as the file shows it (a ';' or tab "
+            "separated file of a decimal-comma locale: 1.250,5 groups by '.'; an English tab "
+            "export: 1,250.5 groups by ','); '.' groups thousands (1.000 = 1000); none: '.' "
+            "is a decimal point, ',' a decimal comma (1.000 = 1,000 = 1); ',' groups "
+            "thousands (1,000 = 1000)",
             tips=["as the file shows it (refused where it does not)",
-                  "'.' groups thousands (1.000 = 1000)", "'.' is a decimal point (1.000 = 1)"])
+                  "'.' groups thousands (1.000 = 1000)",
+                  "'.' is a decimal point, ',' a decimal comma (1.000 = 1,000 = 1)",
+                  "',' groups thousands, '.' is the decimal point (1,000.5 = 1000.5)"])
 
     def csv_typed(self):
         """The path typed: the file read from there; emptied: the file kept (a point file's
