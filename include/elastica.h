@@ -1282,7 +1282,10 @@ void el_spline_options_defaults(el_spline_options *opt);
  * its polygon); where that stalls, the path again leaping once over the stall and with
  * the length as a coordinate of the path (a fold in sigma where the knot angles stand
  * still: ducks whose symmetry fixes every tangent, a star, a ring on a circle), the one
- * that does not cross itself kept, then the least integral kappa^2 (spline_path.c).
+ * that does not cross itself kept, then the least integral kappa^2; where all of those fail,
+ * the plain path again refusing a step whose length moves against the secant's prediction
+ * by more than it predicted (another branch: QA21's 40 ducks stopped at 1.0499 x their
+ * polygon, the family goes on through a second free batten at 1.07 x) (spline_path.c).
  * Where none of that reaches the length: tension mode's splines at sigma h^2 = 40 x 2^j
  * on the mean chord (down to j = -16, or up to 6 while they converge) until two bracket
  * it (up without a bracket, again from 40 by continuation in sigma, x 2^(1/4) a step, while
