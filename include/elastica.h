@@ -1241,9 +1241,10 @@ typedef struct el_spline_result {
                               spline_stable.c): it slides off its ducks at span slide_span (from
                               point slide_span to slide_span + 1, counted from 0: the span whose
                               length grows most along that mode); 0 otherwise */
-    size_t slide_span;     /* also where unstable: the span moving most along that mode (by
-                              length where only the spans' lengths are the mode: a span past
-                              its force-free length, lengthening as the tension grows) */
+    size_t slide_span;     /* also where unstable: the span moving most along that mode (where
+                              only the spans' lengths are the mode: a span past its force-free
+                              length, lengthening as the tension grows; by tension too, where
+                              such a span is the only cause, spline_stable.c's TENSION_COUNT) */
     int unstable;          /* EL_OK, tension > 0 or length mode, open without G2 ends: 1 where
                               the spline returned is an equilibrium but no minimum of integral
                               kappa^2 + sigma ds with its ducks held (by length: under its

@@ -43,9 +43,19 @@
  * pivoting (H is indefinite here: a symmetric LDL^T without pivoting returns a wrong solve
  * with status 0 where a leading block is near singular); a singular H, a gamma_j = 0 or a
  * failed solve: not judged (0).
+ * TENSION_COUNT: by tension (sigma fixed, every l_j free) the same split without the
+ * constraint: the second variation in (theta, l) has the block C = diag(c_j) in the lengths,
+ * f_j = e_j + sigma l_j having d2 f_j / d l_j^2 = d2 e_j / d l_j^2 = 1 / gamma_j, and H (the
+ * free-length E_j's Hessian) is its Schur complement, so its negative count is
+ *   neg(H) + #{j: gamma_j < 0}
+ * (Haynsworth). A span past its force-free length is a maximum of integral kappa^2 + sigma ds
+ * in its own length at fixed end angles: a U-turn span (chord 1, tangents (0, 1), (0, -1))
+ * at sigma 0.3 on its branch of length 2.894: gamma = -2.458, and el_hermite_solve by length
+ * gives d2/dl2 (integral kappa^2 + sigma l) = -0.4067 = 1 / gamma; it read stable (0) before.
+ * Its span is named where H has no negative eigenvalue (the least gamma_j).
  * Not judged: a chain with a circle piece, or a result whose piece count is not the chain's
- * (el__spline_unstable_result). Not tested here: a span unstable for its own end data (a
- * conjugate point inside a span; by tension also c_j < 0), which H cannot see.
+ * (el__spline_unstable_result). Not tested here: a span unstable for its own end data at
+ * fixed length (a conjugate point inside a span), which neither H nor gamma_j sees.
  */
 #include "internal.h"
 #include <gsl/gsl_linalg.h>
@@ -141,7 +151,15 @@ int el__spline_unstable_as(el__spchain *w, int held, size_t *span)
     double *dg = w->dg, *up = w->up, *z = w->z;
     const size_t i0 = w->slot[0] == EL__SLOT_ANGLE ? 0 : 1;
     const size_t i1 = w->slot[n - 1] == EL__SLOT_ANGLE ? n - 1 : n - 2;
-    if (i0 > i1) return 0;
+    /* by tension: the spans past their force-free length (gamma_j < 0, TENSION_COUNT) */
+    int nc = 0;
+    size_t cspan = 0;
+    for (size_t j = 0; j < m && !held; j++) {
+        const double gam = -w->pc[j].cL[3];
+        if (gam < 0.0 && (!nc || gam < -w->pc[cspan].cL[3])) cspan = j;
+        nc += gam < 0.0;
+    }
+    if (i0 > i1) { *span = cspan; return nc; }
     int neg = el__tridiag_negatives(dg, up, i0, i1, 0.0);
     if (held) {
         const int negH = neg;
@@ -149,7 +167,7 @@ int el__spline_unstable_as(el__spchain *w, int held, size_t *span)
         if (!neg) *span = 0;
         if (!negH || !neg) return neg;   /* (H positive definite: the negative gamma_j's span) */
     }
-    if (!neg) return 0;
+    if (!neg) { *span = cspan; return nc; }
     /* the least eigenvalue: between Gershgorin's bound and 0 */
     double lo = 0.0, hi = 0.0;
     for (size_t i = i0; i <= i1; i++)
@@ -171,7 +189,7 @@ int el__spline_unstable_as(el__spchain *w, int held, size_t *span)
         const double dL = fabs(pc->cL[1] * z[j] + pc->cL[2] * z[j + 1]) / pc->v[EL__SP_L];
         if (dL > most) { most = dL; *span = j; }
     }
-    return neg;
+    return neg + nc;
 }
 
 int el__spline_unstable_result(el__spchain *w, const el_spline_result *res, double S, int held, size_t *span)
