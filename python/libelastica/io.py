@@ -310,11 +310,12 @@ def _comma_thousands(split, delim, thousands: Optional[str], name: str) -> bool:
     field has a decimal point after its groups or two groups (1,250.5, 1,234,567: only the
     grouping writes them), or some number has a decimal point that '.' grouping cannot write
     (0.5, 1234.5: the file's decimal separator is '.'), or a column holds both plain integers
-    and 1,250's (980 above 1,000); no when some integer 1000 or more has no comma. Else every
-    comma is written d,ddd .. ddd,ddd, as both English thousands and a decimal comma with 3
-    decimals write them (QA: a tab export's 1,250 read as 1.25, silently): tab separated
-    files are refused naming the line, the two readings differing by 1000; space separated
-    ones read decimal commas, as before. In ';' separated files and quoted between ','
+    and 1,250's that grouping reads nearer each other (980 above 1,000: _grouped_nearer);
+    no when some integer 1000 or more has no comma. Else every comma is written d,ddd ..
+    ddd,ddd, as both English thousands and a decimal comma with 3 decimals write them
+    (QA: a tab export's 1,250 read as 1.25, silently): tab separated files are refused
+    naming the line, the two readings differing by 1000; space separated ones read
+    decimal commas, as before. In ';' separated files and quoted between ','
     (the decimal-comma locales' own) only a 1,250.5 or 1,234,567 reads grouped."""
     if thousands is not None:
         return thousands == ","
@@ -343,7 +344,7 @@ def _comma_thousands(split, delim, thousands: Optional[str], name: str) -> bool:
         return True
     if big:
         return False
-    if plain_cols & grouped_cols:
+    if any(_grouped_nearer(split, c) for c in plain_cols & grouped_cols):
         return True
     if delim is None:                   # spaces: decimal commas, as before (test_cli)
         return False
@@ -355,6 +356,20 @@ def _comma_thousands(split, delim, thousands: Optional[str], name: str) -> bool:
         "(#,##0) both write them, and none shows which (no 1,5 or 1250; no 1,250.5, 0.5 or "
         f"980); say which (command line: --thousands none reads {comma!r}, --thousands , "
         f"reads {grouped}; read_points(thousands='') or thousands=',')")
+
+
+def _grouped_nearer(split, c: int) -> bool:
+    """Whether column ``c``'s integers and d,ddd's (980 and 1,000) are nearer each other,
+    row after row, read with ',' grouping (980, 1000, 1020) than as decimal commas. Both
+    a #,##0 column crossing 1000 and a decimal-comma locale's general format (whole values
+    beside 3 decimals, trailing zeros dropped: 0, 12,125, 25) write such a column; a
+    curve's consecutive points are near, so the reading that keeps them so is the file's
+    (reviewer: 0, 12,125, 25 was read 0, 12125, 25, silently)."""
+    col = [r[c] for _, r in split
+           if c < len(r) and (_INTEGER.fullmatch(r[c]) or _EN_GROUPED.fullmatch(r[c]))]
+    grouped = np.array([float(f.replace(",", "")) for f in col])
+    decimal = np.array([float(f.replace(",", ".")) for f in col])
+    return float(np.abs(np.diff(grouped)).sum()) < float(np.abs(np.diff(decimal)).sum())
 
 
 def _decimal_commas_between(lines, sep) -> bool:

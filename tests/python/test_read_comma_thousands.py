@@ -100,3 +100,30 @@ def test_quoted_numbers_between_tabs_are_read(tmp_path, text, want):
     """A tab export that quotes every field (LibreOffice 'Quote all text cells', pandas'
     quoting=QUOTE_ALL): refused as 'no data rows' (every field kept its quotes)."""
     assert np.array_equal(_read(tmp_path, text), np.array(want, dtype=float))
+
+
+# hand-typed in a decimal-comma locale's general format (no trailing zeros): whole
+# millimetres and eighths, 5 points; every comma d,ddd, and a column holds both integers
+# and d,ddd's, as a #,##0 column holds 980 and 1,000 (reviewer: read 1000 x too large,
+# silently, where before it read as typed)
+_TYPED = [["0", "0"], ["12,125", "4,125"], ["25", "6"], ["37,375", "4,875"], ["50", "0"]]
+_TYPED_VALUES = [[0, 0], [12.125, 4.125], [25, 6], [37.375, 4.875], [50, 0]]
+
+
+def test_integers_beside_decimal_comma_eighths_are_not_grouped(tmp_path):
+    """The column rule (980 above 1,000) decides only where the grouped reading is the
+    one that makes the column's consecutive points nearer (980, 1000, 1020; not 0, 12125,
+    25): space separated files then read decimal commas as before, tab files are refused
+    naming --thousands (both readings differ by 1000), never read 1000 x too large."""
+    spaced = "".join(" ".join(r) + "\n" for r in _TYPED)
+    assert np.array_equal(_read(tmp_path, spaced), np.array(_TYPED_VALUES, dtype=float))
+    tabbed = "".join("\t".join(r) + "\n" for r in _TYPED)
+    with pytest.raises(InputError, match=r"line 2: '12,125' is 12\.125 or 12125.*"
+                                         r"--thousands none reads 12\.125"):
+        _read(tmp_path, tabbed)
+    assert np.array_equal(_read(tmp_path, tabbed, thousands=""),
+                          np.array(_TYPED_VALUES, dtype=float))
+    # a #,##0 column crossing 1000 still reads grouped, in either separator
+    for sep in ("\t", " "):
+        text = f"980{sep}5\n1,000{sep}7\n1,020{sep}9\n"
+        assert np.array_equal(_read(tmp_path, text), [[980, 5], [1000, 7], [1020, 9]]), sep
