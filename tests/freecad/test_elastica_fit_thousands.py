@@ -125,5 +125,27 @@ class FitThousandsTest(S.DocTest):
         self.assertEqual(asked, [","])
 
 
+    def test_a_document_saved_before_the_comma_choice_keeps_its_choice(self):
+        """A fit saved before ',' was a Thousands choice holds the 3-value list in its file:
+        reopened, the list has ',' (else the panel's 4th row and the property editor could
+        not choose it) and the saved choice is kept, reading the file as before, the fit
+        not touched by the opening (a reopened document needs no recompute)."""
+        path = self._file(f"{x}.000;{_ys(x):.3f}" for x in XS)
+        for choice, xy in ((".", [(1000.0 * x, float(f"{_ys(x):.3f}") * 1000) for x in XS]),
+                           ("none", [(float(x), float(f"{_ys(x):.3f}")) for x in XS])):
+            f = Fi.make(self.doc, [], csv_file=path, Model="smooth")
+            f.Thousands = ["auto", ".", "none"]          # the list a document before held
+            f.Thousands = choice
+            self.doc.recompute()
+            self.assertPoints(f, xy)
+            f, = S.reopened(self, f"old_{choice}.FCStd", f.Name)
+            self.assertEqual(f.getEnumerationsOfProperty("Thousands"), ["auto", ".", "none", ","])
+            self.assertEqual(f.Thousands, choice)
+            self.assertNotIn("Touched", f.State)
+            f.touch()
+            self.doc.recompute()
+            self.assertFalse(f.Status.startswith("error"), f.Status)
+            self.assertPoints(f, xy)
+
 if __name__ == "__main__":
     unittest.main()
