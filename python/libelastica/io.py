@@ -256,7 +256,8 @@ def _thousands(split, delim, thousands: Optional[str], name: str) -> bool:
     point (0.125, 1.5, -0.250, 1234.5, 1e3); else yes when some field has a decimal comma
     or two dots (1.234.567: only grouping writes them, whatever an id column beside holds);
     else no when some field is an integer 1000 or more without a dot; yes when a column
-    holds both plain integers and 1.250's (980 above 1.000: Excel's #.##0). Else the file
+    holds both plain integers and 1.250's that grouping reads nearer each other (980 above
+    1.000: Excel's #.##0; not 0, 12.125, 25: _grouped_nearer). Else the file
     does not decide: InputError naming the first such field's line."""
     if thousands is not None:
         if thousands not in (".", ",", ""):
@@ -283,7 +284,7 @@ def _thousands(split, delim, thousands: Optional[str], name: str) -> bool:
         return True
     if big:
         return False
-    if plain_cols & dotted_cols:
+    if any(_grouped_nearer(split, c, ".") for c in plain_cols & dotted_cols):
         return True
     # Undecided: every coordinate is written d.ddd .. ddd.ddd, as both a fixed 3-decimal
     # export (a scanner's or CMM's %.3f) and a decimal-comma locale's #.##0 (Excel,
@@ -358,17 +359,19 @@ def _comma_thousands(split, delim, thousands: Optional[str], name: str) -> bool:
         f"reads {grouped}; read_points(thousands='') or thousands=',')")
 
 
-def _grouped_nearer(split, c: int) -> bool:
-    """Whether column ``c``'s integers and d,ddd's (980 and 1,000) are nearer each other,
-    row after row, read with ',' grouping (980, 1000, 1020) than as decimal commas. Both
-    a #,##0 column crossing 1000 and a decimal-comma locale's general format (whole values
-    beside 3 decimals, trailing zeros dropped: 0, 12,125, 25) write such a column; a
-    curve's consecutive points are near, so the reading that keeps them so is the file's
-    (reviewer: 0, 12,125, 25 was read 0, 12125, 25, silently)."""
+def _grouped_nearer(split, c: int, sep: str = ",") -> bool:
+    """Whether column ``c``'s integers and d<sep>ddd's (980 and 1,000; 980 and 1.000) are
+    nearer each other, row after row, read with ``sep`` grouping thousands (980, 1000,
+    1020) than with it the decimal separator. Both a #,##0 / #.##0 column crossing 1000 and
+    a general format (whole values beside 3 decimals, trailing zeros dropped: 0, 12,125,
+    25 or 0, 12.125, 25) write such a column; a curve's consecutive points are near, so the
+    reading that keeps them so is the file's (reviewer: 0, 12,125, 25 was read 0, 12125,
+    25, silently)."""
+    form = _EN_GROUPED if sep == "," else _GROUPED_OR_POINT
     col = [r[c] for _, r in split
-           if c < len(r) and (_INTEGER.fullmatch(r[c]) or _EN_GROUPED.fullmatch(r[c]))]
-    grouped = np.array([float(f.replace(",", "")) for f in col])
-    decimal = np.array([float(f.replace(",", ".")) for f in col])
+           if c < len(r) and (_INTEGER.fullmatch(r[c]) or form.fullmatch(r[c]))]
+    grouped = np.array([float(f.replace(sep, "")) for f in col])
+    decimal = np.array([float(f.replace(sep, ".")) for f in col])
     return float(np.abs(np.diff(grouped)).sum()) < float(np.abs(np.diff(decimal)).sum())
 
 

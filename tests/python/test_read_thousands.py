@@ -110,3 +110,22 @@ def test_an_id_column_does_not_decide_for_undecided_coordinates(tmp_path):
         _read(tmp_path, text)
     assert np.array_equal(_read(tmp_path, text, thousands="."), [[1250, 2000], [1500, 2250]])
     assert np.array_equal(_read(tmp_path, text, thousands=""), [[1.25, 2.0], [1.5, 2.25]])
+
+
+def test_integers_beside_three_decimals_are_not_grouped(tmp_path):
+    """Hand-typed in a decimal-point locale's general format (no trailing zeros): whole
+    millimetres and eighths, 5 points, tab or ';' separated; every non-integer d.ddd and a
+    column holding both, as a #.##0 column holds 980 and 1.000. It was read 0, 12125, 25,
+    37375, 50, silently (1000 x too large): the column rule decides only where grouping
+    keeps the column's consecutive points the nearer (io._grouped_nearer); here it does
+    not, and the file is refused naming --thousands (both readings differ by 1000)."""
+    typed = [["0", "0"], ["12.125", "4.125"], ["25", "6"], ["37.375", "4.875"], ["50", "0"]]
+    for sep in ("\t", ";"):
+        text = "".join(sep.join(r) + "\n" for r in typed)
+        with pytest.raises(InputError, match=r"line 2: '12\.125' is 12\.125 or 12125"):
+            _read(tmp_path, text)
+        assert np.array_equal(_read(tmp_path, text, thousands=""),
+                              np.array(typed, dtype=float)), sep
+        # Excel's #.##0 crossing 1000 still reads grouped
+        text = f"980{sep}5\n1.000{sep}7\n1.020{sep}9\n"
+        assert np.array_equal(_read(tmp_path, text), [[980, 5], [1000, 7], [1020, 9]]), sep
