@@ -18,7 +18,7 @@ FC_ENV     = HOME=$(FCHOME) LIBELASTICA_PATH=$(CURDIR)/$(BUILD)/libelastica.so \
              PYTHONPATH=$(CURDIR)/python:$(CURDIR)/tests/freecad \
              QTWEBENGINE_DISABLE_SANDBOX=1 ELASTICA_TEST_OUT=$(CURDIR)/$(FCDIR) TMPDIR=$(FCHOME)/tmp
 TIMEOUT   ?= 150
-# the GUI smoke drives every panel (275 checks): ~150 s on a loaded 2-core machine
+# the GUI smoke drives every panel (364 checks; its waits poll, gui_smoke.wait): ~3 min at load 12 on 2 cores
 GUI_TIMEOUT ?= 450
 
 .PHONY: all fc-home fc-tests fc-gui fc-demo fc-gallery fc-addon

@@ -80,7 +80,7 @@ def picked_ends(doc):
     Gui.Selection.addSelection(doc.Name, sk.Name, left, 0, 28, 0)
     del C.MESSAGES[:]
     Gui.runCommand("Elastica_Blend")
-    G.wait(300)
+    G.wait()
     panel = T.CURRENT[0] if T.CURRENT else None
     G.check(panel is not None, f"picked walls: the blend's panel opens {C.MESSAGES}")
     b = panel.obj
@@ -102,14 +102,14 @@ def note_follows_the_length(panel):
     note holds again. Screenshot gui_blend_note_typed.png."""
     b = panel.obj
     retype(panel.length, "200 mm")
-    G.wait(400)
+    G.wait()
     said = panel.warning[1].text() if panel.warning[0].isVisible() else ""
     G.screenshot("gui_blend_note_typed.png")
     G.check(b.Length.Value == 200.0 and not b.Status.startswith("error") and
             "151 mm" not in said and "No free batten" not in said,
             f"a length typed over the command's: its note goes ({b.Length}, {said!r})")
     retype(panel.length, "151 mm")
-    G.wait(400)
+    G.wait()
     G.check(b.Length.Value == 151.0 and panel.warning[0].isVisible() and
             "solved for a length instead, 151 mm" in panel.warning[1].text(),
             f"the command's length typed back: its note again ({panel.warning[1].text()!r})")
@@ -123,7 +123,7 @@ def note_kept(doc, b):
 
     def reopened_note():
         Gui.ActiveDocument.setEdit(b.Name)
-        G.wait(300)
+        G.wait()
         panel = T.CURRENT[0]
         return panel, (panel.warning[1].text() if panel.warning[0].isVisible() else "")
 
@@ -140,18 +140,18 @@ def note_kept(doc, b):
     Gui.SendMsgToActiveView("ViewFit")
     b2 = doc2.getObject(name)
     Gui.ActiveDocument.setEdit(b2.Name)
-    G.wait(300)
+    G.wait()
     panel = T.CURRENT[0]
     said = panel.warning[1].text() if panel.warning[0].isVisible() else ""
     G.check("solved for a length instead, 151 mm" in said, f"and after reopening: {said!r}")
     panel.mode.setCurrentIndex(1)                     # a tension: the designer's choice now
-    G.wait(400)
+    G.wait()
     G.check(b2.Mode == "tension" and not panel.warning[0].isVisible(),
             f"tension mode: no note ({b2.Mode})")
     panel.accept()
     G.pump()
     Gui.ActiveDocument.setEdit(b2.Name)
-    G.wait(300)
+    G.wait()
     panel = T.CURRENT[0]
     G.check(not panel.warning[0].isVisible(), f"nor later: {panel.warning[1].text()!r}")
     panel.reject()
@@ -171,9 +171,9 @@ def ends_toggled(doc, sk, right, left):
     G.check(ends_of(b) == BOTTOMS and b.Mode == "tension" and b.Tension == 0.0,
             f"a selection without clicks: the nearest ends, the free batten {ends_of(b)}")
     panel.end1.click()
-    G.wait(600)
+    G.wait()
     panel.end2.click()
-    G.wait(900)
+    G.wait()
     said = panel.warning[1].text()
     G.check(ends_of(b) == TOPS and b.Mode == "length" and b.Length.Value == 151.0
             and not b.Status.startswith("error") and panel.mode.currentIndex() == 0
@@ -185,9 +185,9 @@ def ends_toggled(doc, sk, right, left):
     note_said_again(panel)
     G.screenshot("gui_blend_ends_by_length.png")
     panel.end1.click()
-    G.wait(600)
+    G.wait()
     panel.end2.click()
-    G.wait(900)
+    G.wait()
     G.check(ends_of(b) == BOTTOMS and b.Mode == "tension" and b.Tension == 0.0 and
             panel.mode.currentIndex() == 1 and panel.tension.text() == "0 1/mm\u00b2" and
             not panel.warning[0].isVisible() and not b.Status.startswith("error"),
@@ -195,12 +195,12 @@ def ends_toggled(doc, sk, right, left):
             f"{panel.tension.text()!r}, {b.Status})")
     # a length of the user's stays when the ends change
     panel.mode.setCurrentIndex(0)
-    G.wait(600)
+    G.wait()
     retype(panel.length, "250")
     key(panel.length.lineEdit(), QtCore.Qt.Key_Tab)
-    G.wait(600)
+    G.wait()
     panel.end1.click()
-    G.wait(900)
+    G.wait()
     G.check(b.Mode == "length" and b.Length.Value == 250.0,
             f"a typed length stays when the ends change ({b.Mode}, {b.Length})")
     panel.reject()
@@ -214,10 +214,10 @@ def ends_toggled(doc, sk, right, left):
     doc.recompute()
     G.check(b.Status.startswith("error"), f"tension 0 at the tops: an error ({b.Status})")
     Gui.ActiveDocument.setEdit(b.Name)
-    G.wait(300)
+    G.wait()
     panel = T.CURRENT[0]
     panel.mode.setCurrentIndex(0)
-    G.wait(900)
+    G.wait()
     G.check(b.Mode == "length" and b.Length.Value == 151.0 and panel.length.text() == "151 mm"
             and not b.Status.startswith("error") and "No free batten" in panel.warning[1].text(),
             f"'a length' without one: the command's length, said ({b.Length}, {b.Status})")
@@ -237,7 +237,7 @@ def bound_tension(doc, b):
     b.setExpression("Tension", "Spreadsheet.sigma")
     doc.recompute()
     Gui.ActiveDocument.setEdit(b.Name)
-    G.wait(300)
+    G.wait()
     panel = T.CURRENT[0]
     box = panel.tension
     G.check(box.isReadOnly() and "Spreadsheet.sigma" in box.toolTip() and
@@ -246,7 +246,7 @@ def bound_tension(doc, b):
             f"({box.isReadOnly()}, {box.toolTip()[:60]!r})")
     retype(box, "0.003")
     key(box.lineEdit(), QtCore.Qt.Key_Tab)
-    G.wait(600)
+    G.wait()
     G.check(box.text() == "0.001 1/mm\u00b2" and b.Tension == 0.001,
             f"typing in a bound box changes nothing ({box.text()!r}, {b.Tension})")
     Gui.SendMsgToActiveView("ViewTop")
@@ -281,7 +281,7 @@ def unit_schemas(doc, b):
             prefs.SetInt("UserSchema", schema)
             App.Units.setSchema(schema)
             Gui.ActiveDocument.setEdit(b.Name)
-            G.wait(300)
+            G.wait()
             panel = T.CURRENT[0]
             G.check(panel.length.text() == length and panel.tol.text() == tol,
                     f"schema {schema}: Length {panel.length.text()!r}, Tolerance "
@@ -289,24 +289,24 @@ def unit_schemas(doc, b):
             panel.length.setFocus()
             G.pump()
             key(panel.length.lineEdit(), QtCore.Qt.Key_Tab)     # leaves it as shown
-            G.wait(400)
+            G.wait()
             G.check(b.Length.Value == 151.0 and panel.length.text() == length,
                     f"schema {schema}: leaving the box keeps 151 mm ({b.Length.Value!r})")
             if schema == 3:
                 panel.length.setFocus()
                 panel.length.lineEdit().selectAll()
                 key(panel.length.lineEdit(), QtCore.Qt.Key_Delete)
-                G.wait(400)
+                G.wait()
                 G.check(b.Length.Value == 151.0 and not b.Status.startswith("error"),
                         f"an emptied box sets nothing (FreeCAD reads '' as 2.2e-308): "
                         f"{b.Length.Value!r}")
                 retype(panel.length, "7 in")
                 typed = panel.length.text()
-                G.wait(400)
+                G.wait()
                 G.check(typed == "7 in" and abs(b.Length.Value - 177.8) < 1e-9,
                         f"typed '7 in': shows {typed!r}, Length {b.Length}")
                 key(panel.length.lineEdit(), QtCore.Qt.Key_Tab)
-                G.wait(400)
+                G.wait()
                 G.check(panel.length.text() == "7 in" and abs(b.Length.Value - 177.8) < 1e-9,
                         f"after Tab: {panel.length.text()!r}")
                 imperial_texts_and_steps(b, panel)
@@ -318,7 +318,7 @@ def unit_schemas(doc, b):
                 before = b.Length.Value
                 panel.length.setFocus()
                 key(panel.length.lineEdit(), QtCore.Qt.Key_Up)
-                G.wait(400)
+                G.wait()
                 G.check(abs(b.Length.Value - before - 10.0) < 1e-9,
                         f"Building Euro: Up steps 1 cm as FreeCAD's Quantity boxes "
                         f"({before} -> {b.Length.Value})")
@@ -341,21 +341,21 @@ def building_us_feet_inches(b, panel):
     panel.length.setFocus()
     G.pump()
     key(panel.length.lineEdit(), QtCore.Qt.Key_Up)
-    G.wait(400)
+    G.wait()
     want = App.Units.Quantity(176.4, App.Units.Length).UserString
     G.check(abs(b.Length.Value - 176.4) < 1e-9 and panel.length.text() == want,
             f"Building US: Up steps 1 in ({b.Length}), shows {panel.length.text()!r} "
             f"(FreeCAD: {want!r})")
     retype(panel.length, "1' 3/4\"")
-    G.wait(400)
+    G.wait()
     G.check(abs(b.Length.Value - 323.85) < 1e-9, f"typed 1' 3/4\": Length {b.Length}")
     key(panel.length.lineEdit(), QtCore.Qt.Key_Tab)
-    G.wait(300)
+    G.wait()
     retype(panel.length, "12")
-    G.wait(400)
+    G.wait()
     G.check(abs(b.Length.Value - 304.8) < 1e-9, f"a plain '12' is 12 in: Length {b.Length}")
     key(panel.length.lineEdit(), QtCore.Qt.Key_Tab)
-    G.wait(300)
+    G.wait()
     G.check(panel.length.text() == App.Units.Quantity(304.8, App.Units.Length).UserString,
             f"after Tab, as FreeCAD writes 12 in: {panel.length.text()!r}")
     G.screenshot("gui_blend_building_us.png")
@@ -371,35 +371,35 @@ def typed_after_a_step(doc, b):
     b.Mode, b.Length, b.Tolerance = "length", 9999.0, 0.001
     doc.recompute()
     Gui.ActiveDocument.setEdit(b.Name)
-    G.wait(300)
+    G.wait()
     panel = T.CURRENT[0]
     try:
         panel.length.setFocus()
         G.pump()
         key(panel.length.lineEdit(), QtCore.Qt.Key_Up)
-        G.wait(400)
+        G.wait()
         shown = panel.length.text()
         G.check(shown == "10 m" and b.Length.Value == 10000.0,
                 f"Up from 9999 mm: {shown!r}, Length {b.Length}")
         panel.length.lineEdit().selectAll()
         key(panel.length.lineEdit(), QtCore.Qt.Key_Delete)
         keys(panel.length.lineEdit(), "12")
-        G.wait(400)
+        G.wait()
         G.check(b.Length.Value == 12000.0, f"'12' over '10 m' is 12 m: Length {b.Length}")
         key(panel.length.lineEdit(), QtCore.Qt.Key_Tab)      # '12' read in m stays shown
-        G.wait(300)
+        G.wait()
         retype(panel.length, "20")
-        G.wait(400)
+        G.wait()
         G.check(b.Length.Value == 20000.0, f"'20' over that '12' is 20 m: Length {b.Length}")
         panel.tol.setFocus()
         G.pump()
         key(panel.tol.lineEdit(), QtCore.Qt.Key_Down)
-        G.wait(300)
+        G.wait()
         shown = panel.tol.text()
         panel.tol.lineEdit().selectAll()
         key(panel.tol.lineEdit(), QtCore.Qt.Key_Delete)
         keys(panel.tol.lineEdit(), "200")
-        G.wait(400)
+        G.wait()
         G.check(shown == "100 nm" and abs(b.Tolerance.Value - 2e-4) < 1e-15,
                 f"'200' over {shown!r} is 200 nm: Tolerance {b.Tolerance}")
         G.screenshot("gui_blend_typed_after_step.png")
@@ -421,7 +421,7 @@ def said_in_the_schema_of_now(doc, b, prefs):
     prefs.SetInt("UserSchema", 3)
     App.Units.setSchema(3)
     Gui.ActiveDocument.setEdit(b.Name)
-    G.wait(300)
+    G.wait()
     panel = T.CURRENT[0]
     text = panel.result.text()
     G.check(before.startswith("G2") and " mm" in before and b.Status == before
@@ -451,16 +451,16 @@ def said_after_undo(doc, b, prefs):
     App.Units.setSchema(3)
     try:
         Gui.ActiveDocument.setEdit(b.Name)
-        G.wait(300)
+        G.wait()
         panel = T.CURRENT[0]
         retype(panel.length, "7 in")
-        G.wait(400)
+        G.wait()
         panel.accept()
         G.pump()
         Gui.runCommand("Std_Undo")
-        G.wait(300)
+        G.wait()
         Gui.ActiveDocument.setEdit(b.Name)
-        G.wait(300)
+        G.wait()
         panel = T.CURRENT[0]
         text = panel.result.text()
         G.screenshot("gui_blend_said_after_undo.png")
@@ -501,7 +501,7 @@ def comb_in_the_schema(doc, b):
     doc.recompute()
     with G.user_schema(3):
         Gui.ActiveDocument.setEdit(comb.Name)
-        G.wait(300)
+        G.wait()
         panel = T.CURRENT[0]
         text, box = panel.result.text(), panel.scale.text()
         want = f"scale {comb.UsedScale / 25.4 ** 2:.4g} in\u00b2; ok"
@@ -532,19 +532,19 @@ def imperial_texts_and_steps(b, panel):
             f"the solutions in inches: {rows[:2]}")
     G.check("mm" not in panel.result.text(), f"the result line: {panel.result.text()!r}")
     retype(panel.length, "6")
-    G.wait(400)
+    G.wait()
     G.check(abs(b.Length.Value - 152.4) < 1e-9,
             f"a plain '6' over inches is 6 in: Length {b.Length}")
     key(panel.length.lineEdit(), QtCore.Qt.Key_Tab)
-    G.wait(300)
+    G.wait()
     panel.length.setFocus()
     key(panel.length.lineEdit(), QtCore.Qt.Key_Up)
-    G.wait(400)
+    G.wait()
     G.check(abs(b.Length.Value - 177.8) < 1e-9 and panel.length.text() == "7 in",
             f"Up steps 1 in: Length {b.Length}, box {panel.length.text()!r}")
     key(panel.length.lineEdit(), QtCore.Qt.Key_Down)
     key(panel.length.lineEdit(), QtCore.Qt.Key_Down)
-    G.wait(400)
+    G.wait()
     G.check(abs(b.Length.Value - 127.0) < 1e-9, f"Down twice: 5 in ({b.Length})")
 
 
@@ -557,7 +557,7 @@ def failed_quietly(b, panel):
     shape = b.Shape.copy()
     before = G.report_text()
     retype(panel.length, "1 in")              # shorter than the ends are apart
-    G.wait(800)
+    G.wait()
     after = G.report_text()
     said = after[len(before):] if G.report_view() is not None else None
     G.check(b.Status.startswith("error") and "Invalid" in b.State and not b.isValid()
@@ -568,7 +568,7 @@ def failed_quietly(b, panel):
     # OK on the feature in error keeps the panel open and says it in the report view once,
     # the message alone
     stays = not panel.accept()
-    G.wait(300)
+    G.wait()
     again = G.report_text()
     more = again[len(after):] if G.report_view() is not None else None
     G.check(stays and more is not None and more.count("is not longer than") == 1
@@ -577,7 +577,7 @@ def failed_quietly(b, panel):
     # a document's recompute (its edges moved, Recompute): the message alone too
     b.touch()
     b.Document.recompute()
-    G.wait(300)
+    G.wait()
     last = G.report_text()[len(again):]
     G.check("is not longer than" in last and "Traceback" not in last
             and "RecomputeError" not in last,
@@ -594,12 +594,12 @@ def tension_mode_and_g2_reach(doc, sk, right, left):
     Gui.Selection.addSelection(doc.Name, sk.Name, right, 100, 18, 0)
     Gui.Selection.addSelection(doc.Name, sk.Name, left, 0, 28, 0)
     Gui.runCommand("Elastica_Blend")
-    G.wait(300)
+    G.wait()
     panel = T.CURRENT[0]
     b = panel.obj
     sigma, length = b.BlendTension, b.BlendLength
     panel.mode.setCurrentIndex(1)
-    G.wait(900)
+    G.wait()
     G.check(b.Mode == "tension" and sigma != 0.0 and b.Tension == sigma and
             not b.Status.startswith("error") and abs(b.BlendLength - length) < 1e-6 and
             panel.tension.text() != "0 1/mm\u00b2",
@@ -607,10 +607,10 @@ def tension_mode_and_g2_reach(doc, sk, right, left):
             f"{panel.tension.text()!r}, {b.Status})")
     G.screenshot("gui_blend_tension_kept.png")
     panel.continuity.setCurrentIndex(1)
-    G.wait(900)
+    G.wait()
     retype(panel.tension, "0.003")
     key(panel.tension.lineEdit(), QtCore.Qt.Key_Tab)
-    G.wait(900)
+    G.wait()
     import re
     found = re.search("the solver reached battens of tension up to ([0-9.e-]+) 1/mm", b.Status)
     G.check(b.Status.startswith("error: no G2 blend at tension 0.003 1/mm") and found,
@@ -620,7 +620,7 @@ def tension_mode_and_g2_reach(doc, sk, right, left):
     if found:
         retype(panel.tension, found.group(1))
         key(panel.tension.lineEdit(), QtCore.Qt.Key_Tab)
-        G.wait(900)
+        G.wait()
         G.check(b.Tension == float(found.group(1)) and b.Status.startswith("G2 from"),
                 f"the tension said, typed: a G2 blend ({b.Tension}, {b.Status})")
         G.screenshot("gui_blend_g2_reach_typed.png")
@@ -646,12 +646,12 @@ def bound_length_toggled(doc, sk, right, left):
     G.check(b.Mode == "tension" and b.Tension == 0.0 and ends_of(b) == BOTTOMS,
             f"the free batten at the bottoms, Length bound ({b.Mode}, {ends_of(b)})")
     Gui.ActiveDocument.setEdit(b.Name)
-    G.wait(300)
+    G.wait()
     panel = T.CURRENT[0]
     panel.end1.click()
-    G.wait(600)
+    G.wait()
     panel.end2.click()
-    G.wait(900)
+    G.wait()
     said = panel.warning[1].text()
     G.check(ends_of(b) == TOPS and b.Mode == "length" and b.Length.Value == 160.0 and
             panel.mode.currentIndex() == 0 and not b.Status.startswith("error") and

@@ -28,11 +28,11 @@ def blend_follows(doc, sheet):
     b.setExpression("Tension", "Params.B1")
     doc.recompute()
     panel = G.double_click(b)
-    G.wait(300)
+    G.wait()
     before = (panel.tension.value(), panel.length.value(), _items(panel))
     sheet.set("B1", "=0.003 / mm^2")
     doc.recompute()
-    G.wait(300)
+    G.wait()
     now = (panel.tension.value(), panel.length.value(), _items(panel))
     G.screenshot("gui_bound_cell_followed.png")
     G.check(abs(b.Tension - 0.003) < 1e-15 and abs(now[0] - 0.003) < 1e-12
@@ -56,11 +56,11 @@ def fit_follows(doc, sheet):
     f.setExpression("ResampleStep", "Params.C1")
     doc.recompute()
     panel = G.double_click(f)
-    G.wait(300)
+    G.wait()
     before = (panel.step.value(), panel.result.text())
     sheet.set("C1", "=7 mm")
     doc.recompute()
-    G.wait(300)
+    G.wait()
     now = (panel.step.value(), panel.result.text())
     G.check(float(f.ResampleStep) == 7.0 and now[0] == 7.0 and before[0] == 2.0
             and now[1] == panel.result_text() and now[1] != before[1],

@@ -54,7 +54,7 @@ def edge_button_clicks(doc, feature, button, prop, arc):
     for fraction, want in ((0.9, "end vertex"), (0.1, "start vertex"), (None, "nearest")):
         click(doc, arc, fraction)
         button.click()
-        G.wait(800)
+        G.wait()
         t = start_tangent(feature)
         at_end = want == "end vertex"
         G.check(getattr(feature, prop + "At") == want and
@@ -65,7 +65,7 @@ def edge_button_clicks(doc, feature, button, prop, arc):
         if fraction == 0.9 and prop == "StartEdge":
             G.screenshot("gui_spline_end_clicked.png")
         button.click()                      # free it: back to the nearest end
-        G.wait(600)
+        G.wait()
         G.check(getattr(feature, prop + "At") == "nearest" and not getattr(feature, prop),
                 f"{feature.Label}: freed, {prop}At {getattr(feature, prop + 'At')!r}")
 
@@ -81,11 +81,11 @@ def run_all(smoke):
     s = Sp.make(doc, [(ducks, [])], Tension=1e-4)
     doc.recompute()
     Gui.ActiveDocument.setEdit(s.Name)
-    G.wait(400)
+    G.wait()
     panel = T.CURRENT[0]
     edge_button_clicks(doc, s, panel.ends[0][1], "StartEdge", arc)
     panel.reject()
-    G.wait(300)
+    G.wait()
     xy, _ = S.keyline_xy(40)
     pts = S.points_sketch(doc, xy, "FitPoints")
     f = Fi.make(doc, [(pts, [])], Model="smooth")
@@ -105,12 +105,12 @@ def run_all(smoke):
     doc.recompute()
     del np
     Gui.ActiveDocument.setEdit(f.Name)
-    G.wait(400)
+    G.wait()
     panel = T.CURRENT[0]
     for fraction, want in ((0.9, "end vertex"), (0.1, "start vertex"), (None, "nearest")):
         click(doc, arc2, fraction)
         panel.tangent_buttons[0].click()
-        G.wait(1500)
+        G.wait()
         G.check(f.StartTangentAt == want and not f.Status.startswith("error"),
                 f"fit: the arc clicked at {fraction} -> StartTangentAt {f.StartTangentAt!r} "
                 f"({f.Status[:60]!r})")
@@ -119,8 +119,8 @@ def run_all(smoke):
             G.check(t.cross(arc_tangent(arc2, want == "end vertex")).Length < 1e-6,
                     f"fit: its start follows the arc's {want} tangent")
         panel.tangent_buttons[0].click()
-        G.wait(800)
+        G.wait()
     panel.reject()
-    G.wait(300)
+    G.wait()
     Gui.Selection.clearSelection()
     App.closeDocument(doc.Name)

@@ -69,18 +69,18 @@ def typing_pace():
     panel = G.open_panel(doc, "Elastica_Blend", [(sk, "Edge1"), (sk, "Edge2")], "Typing")
     b = panel.obj
     panel.mode.setCurrentIndex(0)           # a length
-    G.wait(600)
+    G.wait()
     r0 = len(G.report_text())
     with counting_solves(b) as solves:
         slow_type(panel.length, "150")
-        G.wait(1000)              # a pause: the value stands
+        G.wait()              # a pause: the value stands
     said = G.report_text()[r0:].strip()
     G.check(solves == [b.Name] and b.Length.Value == 150.0 and not b.Status.startswith("error")
             and not said,
             f"F6: '150' typed at {KEY_GAP_MS} ms a key: solved once ({solves}), not at every "
             f"prefix; the report view says nothing ({said!r})")
     slow_type(panel.length, "15")           # shorter than the gap between the ends
-    G.wait(1000)              # a pause: the value stands
+    G.wait()              # a pause: the value stands
     line = G.error_line(panel)
     said = G.report_text()[r0:].strip()
     G.screenshot("gui_typing_error_line.png")
@@ -89,7 +89,7 @@ def typing_pace():
             f"only, not in the report view ({said!r})")
     r1 = len(G.report_text())
     accepted = panel.accept()
-    G.wait(300)                             # the report view takes it from an event
+    G.wait()                             # the report view takes it from an event
     said = G.report_text()[r1:].strip()
     G.check(not accepted and T.CURRENT and T.CURRENT[0] is panel and said.count("\n") == 0
             and "Elastica ElasticaBlend: length 15 mm" in said and "Recompute failed" not in said,
@@ -139,7 +139,7 @@ def wrong_selection():
             G.pump()
             before, r0 = S.doc_state(doc), len(G.report_text())
             Gui.runCommand(name)
-            G.wait(400)
+            G.wait()
             said = G.report_text()[r0:].strip()
             menu = C.COMMANDS[name].menu
             G.check(len(found) == 1 and found[0][0] == "Wrong selection" and "Face1" in found[0][1]
@@ -159,7 +159,7 @@ def model_names():
     doc = S.new_doc("ElasticaModelNames")
     sk = S.points_sketch(doc, S.keyline_xy(14)[0], "Points")
     panel = G.open_panel(doc, "Elastica_Fit", [(sk, "")], "Fit for its model names")
-    G.wait(300)
+    G.wait()
     combo = panel.model
     cut = []
     for i in range(combo.count()):
@@ -205,11 +205,11 @@ def sketch_during_panel(new):
         G.pump()
         panel = G.double_click(b)
     panel.mode.setCurrentIndex(1)               # a tension
-    G.wait(300)
+    G.wait()
     G.type_into(panel.tension, "0.001")
-    G.wait(800)
+    G.wait()
     Gui.getDocument(doc.Name).setEdit(sk.Name)
-    G.wait(800)
+    G.wait()
     ine = Gui.getDocument(doc.Name).getInEdit()
     what = "a new blend's" if new else "an edit's"
     if not new:
@@ -234,12 +234,12 @@ def enter_is_ok():
     lines = S.two_lines_sketch(doc)
     doc.recompute()
     G.run_on(doc, "Elastica_Blend", [(lines, "Edge1"), (lines, "Edge2")])
-    G.wait(300)
+    G.wait()
     panel = T.CURRENT[0]
     name = panel.obj.Name
     if panel.obj.Mode != "tension":
         panel.mode.setCurrentIndex(1)
-        G.wait(300)
+        G.wait()
     G.type_into(panel.tension, "0.003")
     # (its press closes the panel: no box is left for the release)
     QtGui.QApplication.sendEvent(panel.tension, QtGui.QKeyEvent(

@@ -42,7 +42,7 @@ def run_fit(doc, sk):
     Gui.Selection.clearSelection()
     Gui.Selection.addSelection(doc.Name, sk.Name)
     Gui.runCommand("Elastica_Fit")
-    G.wait(300)
+    G.wait()
     return T.CURRENT[0] if T.CURRENT else None
 
 
@@ -62,7 +62,7 @@ def close_with_panel(edit):
     name = doc.Name
     said = G.answer_modal("Discard")
     Gui.runCommand("Std_CloseActiveWindow")
-    G.wait(800)
+    G.wait()
     if edit:
         G.screenshot("gui_close_with_panel.png")
     G.check(said and name not in App.listDocuments() and not T.CURRENT
@@ -84,7 +84,7 @@ def delete_during_new_panel():
     Gui.Selection.addSelection(doc.Name, sk.Name)
     said = G.answer_modal("Yes", tries=5)
     Gui.runCommand("Std_Delete")
-    G.wait(700)
+    G.wait()
     G.screenshot("gui_delete_during_panel.png")
     names = [o.Name for o in doc.Objects]
     G.check(names == ["Points", "ElasticaFit"] and T.CURRENT and T.CURRENT[0] is panel,
@@ -112,7 +112,7 @@ def delete_during_edit():
     Gui.Selection.addSelection(doc.Name, sk.Name)
     G.answer_modal("Yes", tries=5)
     Gui.runCommand("Std_Delete")
-    G.wait(700)
+    G.wait()
     G.check([o.Name for o in doc.Objects] == ["Points", "ElasticaFit"] and T.CURRENT,
             "Delete during an edit deletes nothing")
     model0 = fit.Model

@@ -43,7 +43,7 @@ def expression_mark(doc):
     doc.recompute()
     G.check(abs(sp.Tension - 0.001) < 1e-15, f"the bound tension ({sp.Tension})")
     Gui.ActiveDocument.setEdit(sp.Name)
-    G.wait(300)
+    G.wait()
     panel = T.CURRENT[0]
     box = panel.tension
     marks = box.lineEdit().actions()
@@ -60,7 +60,7 @@ def expression_mark(doc):
     G.pump(10)
     G.screenshot("gui_expression_editor.png")
     editor.findChild(QtGui.QPushButton, "okBtn").click()
-    G.wait(600)
+    G.wait()
     G.check(dict(sp.ExpressionEngine).get("Tension") == "Sheet.sigma * 3"
             and abs(sp.Tension - 0.003) < 1e-15 and box.text() == "0.003 1/mm\u00b2"
             and box.isReadOnly() and "Sheet.sigma * 3" in box.toolTip()
@@ -72,12 +72,12 @@ def expression_mark(doc):
     editor = _editor(box)
     G.check(editor is not None, "the mark opens the editor again")
     editor.findChild(QtGui.QPushButton, "discardBtn").click()
-    G.wait(600)
+    G.wait()
     G.check("Tension" not in dict(sp.ExpressionEngine) and not box.isReadOnly()
             and len(box.lineEdit().actions()) == 0 and "Bound" not in box.toolTip(),
             f"its Clear unbinds: the box writable, unmarked ({dict(sp.ExpressionEngine)})")
     panel.reject()
-    G.wait(300)
+    G.wait()
     G.check(dict(sp.ExpressionEngine).get("Tension") == "Sheet.sigma"
             and abs(sp.Tension - 0.001) < 1e-15,
             f"Cancel undoes the panel's expression edits ({dict(sp.ExpressionEngine)}, "
@@ -152,7 +152,7 @@ def csv_thousands_question(doc):
     if panel is not None and getattr(panel, "thousands", None) is not None:
         G.screenshot("gui_fit_csv_panel.png")
         panel.thousands.setCurrentIndex(2)          # "'.' is decimal": 1.000 is 1
-        G.wait(800)
+        G.wait()
         G.check(fit.Thousands == "none" and abs(fit.DataPoints[0].x - 1.0) < 1e-9
                 and not fit.Status.startswith("error"),
                 f"its Thousands row set to '.' is decimal reads 1.000 as 1 "
@@ -163,7 +163,7 @@ def csv_thousands_question(doc):
                                        for x in range(12)))
         panel.csv.setText(other)
         panel.csv.editingFinished.emit()
-        G.wait(800)
+        G.wait()
         G.check(fit.CsvFile == other and len(fit.DataPoints) == 12
                 and abs(fit.DataPoints[0].x - 500.0) < 1e-9,
                 f"a path typed in its Points file row is fitted ({fit.CsvFile}, "
@@ -171,7 +171,7 @@ def csv_thousands_question(doc):
         os.remove(other)
     if T.CURRENT:
         T.CURRENT[0].reject()
-        G.wait(300)
+        G.wait()
     os.remove(path)
 
 

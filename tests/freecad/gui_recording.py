@@ -32,9 +32,9 @@ def run_all(smoke):
         b = panel.obj
         blend = b.Name
         G.type_into(panel.tension, "0.001")
-        G.wait(900)
+        G.wait()
         panel.list.setCurrentRow(1)
-        G.wait(900)
+        G.wait()
         G.check(b.Tension == 0.001 and b.Solution == 2,
                 f"the blend edited ({b.Tension}, {b.Status})")
         shown = S.taken(b)
@@ -44,7 +44,7 @@ def run_all(smoke):
                                     f"({b.Solution}, {b.Status})")
         panel = G.double_click(b)          # an edit of the existing blend: Degree 6
         panel.degree.setValue(6)
-        G.wait(900)
+        G.wait()
         panel.accept()
         G.pump()
         n = len(recorded)

@@ -43,7 +43,7 @@ def reopen_old():
     shutil.copyfile(FILE, path)
     before = saved_shapes(path)
     doc = App.openDocument(path)
-    G.wait(1500)
+    G.wait()
     blend, lines = doc.getObject("ElasticaBlend"), doc.getObject("Lines")
     gap = ends_gap(blend, lines)
     touched = [o.Name for o in doc.Objects if "Touched" in o.State or (

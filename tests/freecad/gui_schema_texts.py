@@ -78,7 +78,7 @@ def rounding_noise_as_zero(doc):
     sk = S.points_sketch(doc, S.keyline_xy(40)[0], "OnTheCurve")
     panel = G.open_panel(doc, "Elastica_Fit", [(sk, "")], "Fit elastica")
     panel.model.setCurrentIndex(1)                       # smooth
-    G.wait(600)
+    G.wait()
     f = panel.obj
     said = panel.result.text()
     G.screenshot("gui_fit_rounding_noise.png")
@@ -118,7 +118,7 @@ def far_place_in_us_customary(doc):
         sk = S.points_sketch(doc, xy, "FineScan")
         panel = G.open_panel(doc, "Elastica_Fit", [(sk, "")], "Fit elastica")
         panel.model.setCurrentIndex(1)                       # smooth
-        G.wait(600)
+        G.wait()
         said = panel.warning[1].text()
         G.screenshot("gui_fit_outliers_us.png")
         G.check(panel.warning[0].isVisible() and "outliers?" in said

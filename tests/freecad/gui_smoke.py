@@ -75,16 +75,52 @@ def pump(n=5):
         QtGui.QApplication.processEvents()
 
 
-def wait(ms=400):
-    """Let time pass with the event loop running (the panels' delayed recompute), and the
-    open panel's pending recompute run (a typed value waits panelbase.TYPING_MS)."""
-    from PySide import QtGui
-    from freecad.elastica import taskpanels as T
-    end = time.time() + ms / 1000.0
-    while time.time() < end or (T.CURRENT and T.CURRENT[0].timer.isActive()
-                                and time.time() < end + 5.0):
-        QtGui.QApplication.processEvents()
-        time.sleep(0.01)
+WAIT_LIMIT_S = 60.0   # generous: a loaded 2-core box; a wait that runs out fails the smoke
+QUIET_ROUNDS = 3      # event-loop round trips in a row with nothing pending
+
+
+def pending():
+    """What the workbench has set going and not yet run, in words (None: nothing): the
+    open panel's recompute (its timer: panelbase.DELAY_MS after an edit, TYPING_MS after a
+    typed key), a document still restoring or not yet finished opening (viewproviders'
+    finish_opening, polled every 50 ms while FreeCAD restores it)."""
+    from freecad.elastica import taskpanels as T, viewproviders as V
+    if T.CURRENT and T.CURRENT[0].timer.isActive():
+        return "the open panel's pending recompute"
+    if V._OPENING:
+        return f"documents {sorted(V._OPENING)} still opening"
+    restoring = [d.Name for d in App.listDocuments().values() if d.Restoring]
+    if restoring:
+        return f"documents {restoring} still restoring"
+    return None
+
+
+def wait():
+    """Run the event loop until what the last action set going has run, polling (no fixed
+    time): the open panel's pending recompute, a document's opening (``pending``), and the
+    calls queued behind them (the workbench's QTimer.singleShot(0, ...): a panel following
+    a recompute, closing when its feature left, the expression editor's result). Settled
+    when QUIET_ROUNDS round trips of the event loop in a row (a zero timer queued after
+    everything queued before it, run) find nothing pending. Fails the smoke, naming what
+    was pending, after WAIT_LIMIT_S."""
+    from PySide import QtCore, QtGui
+    end = time.time() + WAIT_LIMIT_S
+    quiet = 0
+    while quiet < QUIET_ROUNDS:
+        ran = []
+        QtCore.QTimer.singleShot(0, lambda: ran.append(True))
+        while not ran:
+            QtGui.QApplication.processEvents()
+            if time.time() > end:
+                check(False, f"wait: the event loop did not come round in {WAIT_LIMIT_S:g} s")
+        what = pending()
+        if what is None:
+            quiet += 1
+        else:
+            quiet = 0
+            time.sleep(0.005)
+        if what is not None and time.time() > end:
+            check(False, f"wait: {what} still pending after {WAIT_LIMIT_S:g} s")
 
 
 def screenshot(name):

@@ -44,7 +44,7 @@ def wrong_units():
     box = panel.step
     for text, kind in (("3 deg", "an angle"), ("2 kg", "a mass")):
         G.type_into(box, text)
-        G.wait(800)
+        G.wait()
         G.check(box.text() == text and _red(box) and kind in box.lineEdit().toolTip(),
                 f"F5: '{text}' in Resample: kept as typed, red, why in its tooltip "
                 f"({box.text()!r}, {box.lineEdit().toolTip()!r})")
@@ -59,13 +59,13 @@ def wrong_units():
         G.check(not panel.accept() and T.CURRENT and T.CURRENT[0] is panel,
                 f"F5: OK refuses '{text}': the panel stays open")
     G.type_into(box, "5 km")
-    G.wait(800)
+    G.wait()
     _leave(box)
     line = G.error_line(panel)
     G.check(_red(box) and box._number("5 km") == 5e6 and "5 km is above the largest" in line,
             f"F5: '5 km' is 5e6 mm, beyond Resample's range: said so ({line!r})")
     G.type_into(box, "2 cm")
-    G.wait(800)
+    G.wait()
     G.check(not _red(box) and G.error_line(panel) == "" and fit.ResampleStep.Value == 20.0,
             f"F5: '2 cm' typed over it: unmarked, the error line gone, 20 mm "
             f"({fit.ResampleStep}, {G.error_line(panel)!r})")
@@ -88,7 +88,7 @@ def wrong_units():
 def own_edge(doc, fit):
     """Start tangent pressed with the fit's own edge selected."""
     Gui.ActiveDocument.setEdit(fit.Name)
-    G.wait(300)
+    G.wait()
     from freecad.elastica import taskpanels as T
     panel = T.CURRENT[0]
     G.select(doc, [(fit, "Edge1")])
