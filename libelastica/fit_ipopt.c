@@ -467,6 +467,11 @@ int el__fit_ipopt(fit_objective *o, const double *xl, const double *xu, const fi
             && AddIpoptNumOption(pr, "bound_relax_factor", 0.0)
             && AddIpoptNumOption(pr, "constr_viol_tol", FIT_ROWS_TOL)
             && AddIpoptNumOption(pr, "acceptable_constr_viol_tol", FIT_ROWS_TOL)
+            /* MUMPS's workspace: the default 1000 % over its estimate maps (and faults in)
+             * 0.2-1.5 MB afresh at every solve for KKT systems of at most a few dozen rows;
+             * 5 % (Ipopt's own suggestion for small problems) is enough for them: Ipopt
+             * doubles it and refactors should MUMPS ask for more (INFO(1) -8/-9) */
+            && AddIpoptIntOption(pr, "mumps_mem_percent", 5)
             && AddIpoptStrOption(pr, "mu_strategy", "monotone")
             && AddIpoptNumOption(pr, "mu_init", 1e-9)
             /* noisy data: Gauss-Newton converges linearly on a non-zero residual; stop
