@@ -96,7 +96,7 @@ $(BUILD)/obj/abi.o: $(BUILD)/include/elastica_abi.h
 # were mispredicted.
 # EXTRA_CFLAGS comes after: the sanitizer builds keep their -O1.
 HOT_OBJ := $(addprefix $(BUILD)/obj/,hermite.o hermite_objective.o hermite_poly.o hermite_tension.o hermite_length.o \
-             hermite_length_trace.o hermite_length_chart.o hermite_chain.o hermite_near.o hermite_lanes.o smooth.o ellint.o jacobi.o)
+             hermite_length_trace.o hermite_length_chart.o hermite_chain.o hermite_near.o hermite_polish.o hermite_lanes.o smooth.o ellint.o jacobi.o)
 $(HOT_OBJ): OPT_CFLAGS := -O3 -fno-math-errno -fno-trapping-math
 # hermite_lanes.c's four lanes (hermite_lanes_avx2.c) are AVX2 code, run only where the
 # processor has it (__builtin_cpu_supports): -mavx2 for that object alone, and no fused

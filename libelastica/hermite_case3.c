@@ -27,7 +27,6 @@
  * random U-turns moved by 1e-14 .. 3e-3, all length mode).
  */
 #include "hermite_internal.h"
-#include <gsl/gsl_math.h>   /* M_PI_2, as hermite.c has it */
 #include <stdlib.h>
 
 /* Whether the curve p is at most one curvature period long (to 1e-12 relative): kappa =
@@ -44,21 +43,17 @@ static int within_period(const el_smooth_params *p)
     return p->length <= period * (1.0 + 1e-12);
 }
 
-/* 1 where el_hermite_solve takes the data (0, 0) t0, p1, t1 (t0, t1 unit) for case 3 itself
- * (el__hermite_set_case's hcase 3: its normalisation, hermite.c, step by step): the inner
- * solve below then does not come here again (hermite.c steps here only at hcase != 3) */
+/* 1 where el_hermite_solve takes the data (0, 0) t0, p1, t1 for case 3 itself (its own
+ * el__hermite_unit and el__hermite_normalise, hermite.c): the inner solve below then does not
+ * come here again (hermite.c steps here only at hcase != 3) */
 static int solved_as_case3(const double t0[2], const double p1[2], const double t1[2])
 {
-    const double n0 = hypot(t0[0], t0[1]), n1 = hypot(t1[0], t1[1]);
-    const double u0[2] = {t0[0] / n0, t0[1] / n0}, u1[2] = {t1[0] / n1, t1[1] / n1};
-    const double d = hypot(p1[0], p1[1]), rot = atan2(u0[1], u0[0]) - M_PI_2;
-    const double cr = cos(rot), sr = sin(rot), dx = p1[0] / d, dy = p1[1] / d;
+    const double z[2] = {0.0, 0.0};
+    double u0[2], u1[2];
+    hframe fr;
     hprob pr;
-    pr.P1 = cr * dx + sr * dy;
-    pr.P2 = -sr * dx + cr * dy;
-    pr.V1 = cr * u1[0] + sr * u1[1];
-    pr.V2 = -sr * u1[0] + cr * u1[1];
-    el__hermite_set_case(&pr);
+    if (el__hermite_unit(t0, u0) || el__hermite_unit(t1, u1) || el__hermite_normalise(z, u0, p1, u1, &fr, &pr))
+        return 0;
     return pr.hcase == 3;
 }
 

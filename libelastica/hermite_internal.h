@@ -11,6 +11,7 @@
  *   hermite_chain.c      a solution near the separatrix as a chain split at its saddles;
  *   hermite_near.c       the near-straight solution under tension, from the linear beam;
  *   hermite_case3.c      the solutions next to case 3 (the U-turn), polished from case 3's;
+ *   hermite_polish.c     a solution's end residual and its polish onto the data;
  *   hermite.c            the public entry points: normalisation, world-frame solutions.
  */
 #ifndef EL_HERMITE_INTERNAL_H
@@ -222,15 +223,27 @@ int el__hermite_chain(const hframe *fr, int mode, double target, double sep, dou
                       el_hermite_solution *s);
 
 /* hermite.c's: a curve from its start state (theta, kappa, kappa') at tension sigma, length L
- * (sep: |F| - sigma when known exactly); a solution's end residual; whether two solutions are
- * one (length, tension, end curvatures and turning; d the chord). */
+ * (sep: |F| - sigma when known exactly); a solution's end residual (hermite_polish.c); whether
+ * two solutions are one (length, tension, end curvatures and turning; d the chord). */
 int el__hermite_params_from_state(double x0, double y0, double theta, double kappa,
                                   double dkappa, double sigma, double L, const double *sep,
                                   el_smooth_params *p);
 int el__hermite_residual(const hframe *fr, const el_hermite_solution *s, double *res);
 int el__hermite_same_solution(const el_hermite_solution *a, const el_hermite_solution *b,
                               double d);
-/* hermite.c's polish (Newton on the parameters, then with k held at its nearest doubles)
+/* hermite.c's normalisation (seed 004 §4) of the data p0, u0, p1, u1 (unit tangents, from
+ * el__hermite_unit: EL_EINVAL where t has no direction): the world frame fr and the normalised
+ * problem's P, V and case in pr; EL_EDOM outside the scales el_hermite_solve takes. The one
+ * normalisation of el_hermite_solve and of hermite_case3.c's test of its inner problem. */
+int el__hermite_unit(const double t[2], double u[2]);
+int el__hermite_normalise(const double p0[2], const double u0[2], const double p1[2],
+                          const double u1[2], hframe *fr, hprob *pr);
+/* hermite_polish.c: one Newton polish on (phi, mu, k, q, length) kept where the residual
+ * improves, and the Gauss-Newton polish with k held at its nearest doubles, in either mode
+ * (target: the mode's sigma or length); */
+void el__hermite_polish_newton(const hframe *fr, int mode, double target, el_hermite_solution *s);
+void el__hermite_polish_fixed_k(const hframe *fr, int mode, double target, el_hermite_solution *s);
+/* hermite_polish.c's polish (Newton on the parameters, then with k held at its nearest doubles)
  * and the end curvatures from the curve; hermite_near.c's near-straight curve from the
  * world-frame linear beam where |sigma| |p1 - p0|^2 <= 10 (EL_EDOM: none; else EL_OK with
  * its residual, which can be above tol). */
