@@ -1056,7 +1056,8 @@ enum { EL_HERMITE_SIGMA_D2_MAX = 100000 };
  * Errors: EL_EINVAL (NULL, non-finite, zero tangent, mode not one of the two, tol not
  * > 0, samples outside 4..1000, grid outside 1..256, max_solutions 0, length not > 0
  * in length mode), EL_EDOM (p0 = p1, outside the range above, or length < |p1 - p0|
- * in length mode), EL_EMAXITER (length mode: the tracing's work limit reached),
+ * in length mode), EL_EMAXITER (length mode: the tracing's work limit reached, its own or
+ * that of the case-3 problem solved inside next to a U-turn),
  * EL_ENOMEM, EL_EINTERNAL (a bracket of the kappa_m bound that should not fail did).
  */
 int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],

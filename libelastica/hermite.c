@@ -321,6 +321,13 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
                      const double t1[2], const el_hermite_options *opt,
                      el_hermite_result *res)
 {
+    return el__hermite_solve_limited(p0, t0, p1, t1, opt, EL__HERMITE_MAX_EVALS, res);
+}
+
+int el__hermite_solve_limited(const double p0[2], const double t0[2], const double p1[2],
+                              const double t1[2], const el_hermite_options *opt, long max_evals,
+                              el_hermite_result *res)
+{
     if (!p0 || !t0 || !p1 || !t1 || !opt || !res) return EL_EINVAL;
     const double all[8] = {p0[0], p0[1], t0[0], t0[1], p1[0], p1[1], t1[0], t1[1]};
     double u0[2], u1[2];
@@ -373,11 +380,11 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
         if (Ln < 1.0 - 1e-12 || !isfinite(Ln)) return EL_EDOM;
         pr.sigma = 0.0;
         pr.Lmin = Ln;
-        rc = Ln > 1.0 + 1e-12 ? el__hermite_solve_length(&pr, Ln, opt->grid, opt->samples, &roots) : EL_OK;
+        rc = Ln > 1.0 + 1e-12 ? el__hermite_solve_length_limited(&pr, Ln, opt->grid, opt->samples, max_evals, &roots) : EL_OK;
     }
     /* the length mode's work limit: the solutions found so far, with EL_EMAXITER */
     if (rc && rc != EL_EMAXITER) { free(roots.v); return rc; }
-    const int status = rc;
+    int status = rc;
 
     size_t cap = roots.n + 2;
     el_hermite_solution *sol = malloc(cap * sizeof *sol);
@@ -520,10 +527,13 @@ int el_hermite_solve(const double p0[2], const double t0[2], const double p1[2],
     }
     /* next to case 3 (P2 = V1 = 0: the U-turn), where the x chart's solutions crowd into
      * O(|P2|) of the case's four kappa0 (hermite_case3.c) */
-    if (fabs(pr.P2) <= EL__HERMITE_CASE3_NEAR && fabs(pr.V1) <= EL__HERMITE_CASE3_NEAR && pr.hcase != 3 &&
-        el__hermite_near_case3(&fr, u0, &pr, opt, &sol, &n, &cap)) {
-        if (unrep != ubuf) free(unrep);
-        return EL_ENOMEM;
+    if (fabs(pr.P2) <= EL__HERMITE_CASE3_NEAR && fabs(pr.V1) <= EL__HERMITE_CASE3_NEAR && pr.hcase != 3) {
+        const int c3 = el__hermite_near_case3(&fr, u0, &pr, opt, max_evals, &sol, &n, &cap);
+        if (c3 == EL_ENOMEM) {
+            if (unrep != ubuf) free(unrep);
+            return EL_ENOMEM;
+        }
+        if (c3 == EL_EMAXITER) status = EL_EMAXITER;   /* the case-3 curves' search incomplete */
     }
     if (el__hermite_add_images(&fr, opt, Ln, &sol, &n, &cap)) {
         if (unrep != ubuf) free(unrep);

@@ -58,8 +58,8 @@ static int solved_as_case3(const double t0[2], const double p1[2], const double 
 }
 
 int el__hermite_near_case3(const hframe *fr, const double u0[2], const hprob *pr,
-                           const el_hermite_options *opt, el_hermite_solution **sol, size_t *n,
-                           size_t *cap)
+                           const el_hermite_options *opt, long max_evals, el_hermite_solution **sol,
+                           size_t *n, size_t *cap)
 {
     /* the case-3 data in the frame of fr (p0 = 0): the normalised frame's (+-1, 0) is
      * d (t0_y, -t0_x) in the world's, its (0, +-1) +-t0 */
@@ -70,10 +70,11 @@ int el__hermite_near_case3(const hframe *fr, const double u0[2], const hprob *pr
      * the public entry; where it is not, none to add */
     if (!solved_as_case3(u0, q1, v1)) return EL_OK;
     el_hermite_result r3;
-    const int rc = el_hermite_solve(z, u0, q1, v1, opt, &r3);
+    const int rc = el__hermite_solve_limited(z, u0, q1, v1, opt, max_evals, &r3);
     if (rc == EL_ENOMEM) { free(*sol); *sol = NULL; return EL_ENOMEM; }
     /* none to add (the general path's stand); an incomplete inner solve (EL_EMAXITER, its
-     * solutions so far) is used as it is: the outer result's status is hermite.c's */
+     * solutions so far) is used as it is, and said: the outer result is incomplete too (it
+     * was returned as complete, EL_OK, whatever the inner solve had left out) */
     if (rc && rc != EL_EMAXITER) return EL_OK;
     const double target = opt->mode == EL_HERMITE_TENSION ? opt->sigma : opt->length;
     int status = EL_OK;
@@ -96,5 +97,5 @@ int el__hermite_near_case3(const hframe *fr, const double u0[2], const hprob *pr
         (*sol)[(*n)++] = t;
     }
     el_hermite_result_free(&r3);
-    return status;
+    return status ? status : rc;
 }

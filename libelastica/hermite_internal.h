@@ -186,6 +186,16 @@ int el__hermite_solve_tension(hprob *pr, int ns, hrootlist *out);
  * searched only above sep_sigma (at least SEP_SIGMA; below, the x chart's roots). */
 int el__hermite_seed_tension(hprob *pr, int ns, double sep_sigma, hrootlist *out);
 int el__hermite_solve_length(hprob *pr, double Lt, int ng, int ns, hrootlist *out);
+/* The same within max_evals objective evaluations of the tracing (EL_EMAXITER beyond, with
+ * the solutions found); el__hermite_solve_length's limit is EL__HERMITE_MAX_EVALS. */
+#define EL__HERMITE_MAX_EVALS 100000L
+int el__hermite_solve_length_limited(hprob *pr, double Lt, int ng, int ns, long max_evals, hrootlist *out);
+/* el_hermite_solve with the length mode's work limit max_evals (el_hermite_solve's is
+ * EL__HERMITE_MAX_EVALS), the limit of the inner case-3 solve (hermite_case3.c) too: EL_EMAXITER
+ * where either tracing stopped at it (the tests' way to reach the limit; hermite.c). */
+int el__hermite_solve_limited(const double p0[2], const double t0[2], const double p1[2],
+                              const double t1[2], const el_hermite_options *opt, long max_evals,
+                              el_hermite_result *res);
 /* The same with every trace followed as far as the former search did (the tests' reference). */
 int el__hermite_solve_length_thorough(hprob *pr, double Lt, int ng, int ns, hrootlist *out);
 /* Every solution of tension sigma > 0 and length L has sigma (L - 1)^2 <= HLEN_SIGMA_E2
@@ -260,12 +270,14 @@ int el__hermite_add_images(const hframe *fr, const el_hermite_options *opt, doub
                            el_hermite_solution **sol, size_t *n, size_t *cap);
 
 /* hermite_case3.c: where max(|P2|, |V1|) <= EL__HERMITE_CASE3_NEAR (case 1 or 2 next to
- * case 3), the solutions of the case-3 problem polished onto the data, each added to the list
- * (*sol, *n, capacity *cap) unless there (el__hermite_same_solution); u0 the unit t0.
- * EL_ENOMEM (the list freed) where it cannot grow. */
+ * case 3), the solutions of the case-3 problem (solved within the length mode's work limit
+ * max_evals) polished onto the data, each added to the list (*sol, *n, capacity *cap) unless
+ * there (el__hermite_same_solution); u0 the unit t0. EL_EMAXITER where the case-3 solve
+ * stopped at the work limit (its solutions so far added: the caller's result is incomplete
+ * too); EL_ENOMEM (the list freed) where it cannot grow. */
 #define EL__HERMITE_CASE3_NEAR 1e-3
 int el__hermite_near_case3(const hframe *fr, const double u0[2], const hprob *pr,
-                           const el_hermite_options *opt, el_hermite_solution **sol, size_t *n,
-                           size_t *cap);
+                           const el_hermite_options *opt, long max_evals, el_hermite_solution **sol,
+                           size_t *n, size_t *cap);
 
 #endif

@@ -65,7 +65,7 @@ static void sigma_range(double Lt, double *lo, double *hi)
 #define SIGMA_TRACE_MAX 1e6
 /* the work limit: objective evaluations of the tracing (the bench problems need at
  * most ~5000; beyond it the solutions found so far are returned with EL_EMAXITER) */
-#define MAX_EVALS 100000
+#define MAX_EVALS EL__HERMITE_MAX_EVALS
 
 /* The seed lines: every tension solution on nl lines over the sigma range in t = asinh(sigma)
  * (hermite_tension.c), ns samples each: both ends of the range and, between them, lines at the
@@ -158,7 +158,7 @@ static int lean_line_samples(int ns) { return ns / 2 > 4 ? ns / 2 : 4; }
 
 static int solve_length(hprob *pr, double Lt, int nl, int ns, double long_curves, double line_power,
                         int lean_seeds, int retrace, int newton_seeds, int chord_start, double line_sep,
-                        hrootlist *out)
+                        long max_evals, hrootlist *out)
 {
     double slo, shi;
     sigma_range(Lt, &slo, &shi);
@@ -171,7 +171,7 @@ static int solve_length(hprob *pr, double Lt, int nl, int ns, double long_curves
     T.thi_trace = asinh(fmin(shi, SIGMA_TRACE_MAX));
     T.thi_bound = asinh(shi);
     T.out = out;
-    T.max_evals = MAX_EVALS;
+    T.max_evals = max_evals;
     T.long_curves = long_curves;
     T.line_power = line_power;
     T.lean_seeds = lean_seeds;
@@ -196,30 +196,36 @@ static int solve_length(hprob *pr, double Lt, int nl, int ns, double long_curves
  * lean_line_samples(ns) bracketing samples each. */
 int el__hermite_solve_length(hprob *pr, double Lt, int nl, int ns, hrootlist *out)
 {
-    return solve_length(pr, Lt, nl, ns, LONG_CURVES, LINE_POWER, 1, 0, 0, 0, LINE_SEP_SIGMA, out);
+    return solve_length(pr, Lt, nl, ns, LONG_CURVES, LINE_POWER, 1, 0, 0, 0, LINE_SEP_SIGMA, MAX_EVALS, out);
+}
+
+/* The same within max_evals evaluations (el__hermite_solve_limited's work limit). */
+int el__hermite_solve_length_limited(hprob *pr, double Lt, int nl, int ns, long max_evals, hrootlist *out)
+{
+    return solve_length(pr, Lt, nl, ns, LONG_CURVES, LINE_POWER, 1, 0, 0, 0, LINE_SEP_SIGMA, max_evals, out);
 }
 
 int el__hlen_solve_retracing(hprob *pr, double Lt, int nl, int ns, hrootlist *out)
 {
-    return solve_length(pr, Lt, nl, ns, LONG_CURVES, LINE_POWER, 1, 1, 0, 0, LINE_SEP_SIGMA, out);
+    return solve_length(pr, Lt, nl, ns, LONG_CURVES, LINE_POWER, 1, 1, 0, 0, LINE_SEP_SIGMA, MAX_EVALS, out);
 }
 
 int el__hlen_solve_newton_seeds(hprob *pr, double Lt, int nl, int ns, hrootlist *out)
 {
-    return solve_length(pr, Lt, nl, ns, LONG_CURVES, LINE_POWER, 1, 0, 1, 0, LINE_SEP_SIGMA, out);
+    return solve_length(pr, Lt, nl, ns, LONG_CURVES, LINE_POWER, 1, 0, 1, 0, LINE_SEP_SIGMA, MAX_EVALS, out);
 }
 
 int el__hlen_solve_chord_start(hprob *pr, double Lt, int nl, int ns, hrootlist *out)
 {
-    return solve_length(pr, Lt, nl, ns, LONG_CURVES, LINE_POWER, 1, 0, 0, 1, LINE_SEP_SIGMA, out);
+    return solve_length(pr, Lt, nl, ns, LONG_CURVES, LINE_POWER, 1, 0, 0, 1, LINE_SEP_SIGMA, MAX_EVALS, out);
 }
 
 int el__hlen_solve_line_pieces(hprob *pr, double Lt, int nl, int ns, hrootlist *out)
 {
-    return solve_length(pr, Lt, nl, ns, LONG_CURVES, LINE_POWER, 1, 0, 0, 0, SEP_SIGMA, out);
+    return solve_length(pr, Lt, nl, ns, LONG_CURVES, LINE_POWER, 1, 0, 0, 0, SEP_SIGMA, MAX_EVALS, out);
 }
 
 int el__hermite_solve_length_thorough(hprob *pr, double Lt, int nl, int ns, hrootlist *out)
 {
-    return solve_length(pr, Lt, nl, ns, LONG_CURVES_THOROUGH, LINE_POWER_THOROUGH, 0, 1, 0, 0, SEP_SIGMA, out);
+    return solve_length(pr, Lt, nl, ns, LONG_CURVES_THOROUGH, LINE_POWER_THOROUGH, 0, 1, 0, 0, SEP_SIGMA, MAX_EVALS, out);
 }

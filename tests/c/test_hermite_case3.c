@@ -12,6 +12,7 @@
  * changes there by right, and it is not tested here.) */
 #include "testutil.h"
 #include "hermite_check.h"
+#include "hermite_internal.h"
 #include <stdio.h>
 
 static void rot(double a, const double v[2], double out[2])
@@ -123,6 +124,41 @@ START_TEST(u_turn_keeps_its_solutions_under_rigid_motions_and_scale)
 }
 END_TEST
 
+/* An incomplete inner case-3 solve makes the result incomplete: the U-turn's length-mode data
+ * moved by 1e-9 (case 1 next to case 3: hermite_case3.c solves the case-3 problem inside),
+ * solved within the length mode's work limits b = 20 .. ~1e5 evaluations (el__hermite_solve_limited,
+ * the limit el_hermite_solve sets at 1e5): wherever the case-3 problem alone stops at b (EL_EMAXITER),
+ * the moved problem's search, which contains it, is incomplete too; it was returned as EL_OK
+ * (complete) with the case-3 curves found so far. Every solution returned meets its ends. */
+START_TEST(an_incomplete_inner_case3_solve_makes_the_result_incomplete)
+{
+    const double p0[2] = {0.0, 0.0}, t0[2] = {0.0, 1.0}, t1[2] = {0.0, -1.0};
+    const double p1[2] = {1.0, 1e-9}, q1[2] = {hypot(p1[0], p1[1]), 0.0};
+    el_hermite_options o;
+    el_hermite_options_defaults(&o);
+    o.mode = EL_HERMITE_LENGTH;
+    int limited = 0;
+    for (double L = 1.5; L <= 4.0; L += 1.25) {
+        o.length = L;
+        for (double b = 20.0; b <= 1.2e5; b *= 1.5) {
+            el_hermite_result r, r3;
+            const int rc = el__hermite_solve_limited(p0, t0, p1, t1, &o, (long)b, &r);
+            const int rc3 = el__hermite_solve_limited(p0, t0, q1, t1, &o, (long)b, &r3);
+            ck_assert(rc == EL_OK || rc == EL_EMAXITER);
+            ck_assert(rc3 == EL_OK || rc3 == EL_EMAXITER);
+            limited += rc3 == EL_EMAXITER;
+            ck_assert_msg(!(rc3 == EL_EMAXITER && rc == EL_OK),
+                          "L %g, limit %.0f: the case-3 solve stopped at the limit, the result says complete "
+                          "(%zu solutions, the case-3 problem's so far %zu)", L, b, r.count, r3.count);
+            check_result(p0, t0, p1, t1, &r, o.tol);
+            el_hermite_result_free(&r);
+            el_hermite_result_free(&r3);
+        }
+    }
+    ck_assert(limited > 0);   /* (the limits reach the case-3 solve) */
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("hermite_case3");
@@ -130,6 +166,7 @@ int main(void)
     tcase_set_timeout(tc, 300);
     tcase_add_test(tc, u_turn_keeps_its_solutions_when_an_end_moves);
     tcase_add_test(tc, u_turn_keeps_its_solutions_under_rigid_motions_and_scale);
+    tcase_add_test(tc, an_incomplete_inner_case3_solve_makes_the_result_incomplete);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }
