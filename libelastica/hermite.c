@@ -535,6 +535,11 @@ int el__hermite_solve_limited(const double p0[2], const double t0[2], const doub
         }
         if (c3 == EL_EMAXITER) status = EL_EMAXITER;   /* the case-3 curves' search incomplete */
     }
+    /* between tangents along the chord, the separatrix loops the roots cannot see (hermite_chord.c) */
+    if (el__hermite_chord_loops(&fr, &pr, opt, &sol, &n, &cap)) {
+        if (unrep != ubuf) free(unrep);
+        return EL_ENOMEM;
+    }
     if (el__hermite_add_images(&fr, opt, Ln, &sol, &n, &cap)) {
         if (unrep != ubuf) free(unrep);
         return EL_ENOMEM;

@@ -29,20 +29,6 @@
 #include "hermite_internal.h"
 #include <stdlib.h>
 
-/* Whether the curve p is at most one curvature period long (to 1e-12 relative): kappa =
- * kappa_m cn(u; k), period 4 K(k) in u, for |k| < 1; kappa = 2 k sqrt(mu) dn(|k| u; 1/|k|),
- * period 2 K(1/|k|) in |k| u, for |k| > 1 (the header's parametrisation). */
-static int within_period(const el_smooth_params *p)
-{
-    const double k = fabs(p->k), g = k < 1.0 ? k : 1.0 / k;
-    double K;
-    if (g == 1.0) return 1;   /* the separatrix: no period */
-    /* (no period known: rejected, a curve longer than one would be added otherwise) */
-    if (!(g < 1.0) || el__ellint_complete(g, (1.0 - g) * (1.0 + g), &K, NULL)) return 0;
-    const double period = (k < 1.0 ? 4.0 * K : 2.0 * K / k) / sqrt(p->mu);
-    return p->length <= period * (1.0 + 1e-12);
-}
-
 /* 1 where el_hermite_solve takes the data (0, 0) t0, p1, t1 for case 3 itself (its own
  * el__hermite_unit and el__hermite_normalise, hermite.c): the inner solve below then does not
  * come here again (hermite.c steps here only at hcase != 3) */
@@ -83,7 +69,7 @@ int el__hermite_near_case3(const hframe *fr, const double u0[2], const hprob *pr
         /* a chain's pieces are polished by no one here (hermite_chain.c's own correction) */
         if (t.npieces != 1 || el__hermite_residual(fr, &t, &t.residual)) continue;
         if (el__hermite_polish_to(fr, opt->mode, target, opt->tol, &t)) continue;
-        if (!(t.residual <= opt->tol) || !within_period(&t.curve)) continue;
+        if (!(t.residual <= opt->tol) || !el__hermite_within_period(&t.curve, 0)) continue;
         if (opt->mode == EL_HERMITE_TENSION) t.sigma = opt->sigma;
         int dup = 0;
         for (size_t j = 0; j < *n && !dup; j++) dup = el__hermite_same_solution(&t, &(*sol)[j], fr->d);

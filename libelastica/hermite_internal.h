@@ -11,6 +11,7 @@
  *   hermite_chain.c      a solution near the separatrix as a chain split at its saddles;
  *   hermite_near.c       the near-straight solution under tension, from the linear beam;
  *   hermite_case3.c      the solutions next to case 3 (the U-turn), polished from case 3's;
+ *   hermite_chord.c      the separatrix loops between tangents along the chord;
  *   hermite_polish.c     a solution's end residual and its polish onto the data;
  *   hermite.c            the public entry points: normalisation, world-frame solutions.
  */
@@ -262,6 +263,9 @@ int el__hermite_near_straight(const hframe *fr, double sigma, double tol, el_her
 /* el__hermite_polish in either mode (target: the mode's sigma or length): once, then again
  * while it improves and misses tol. */
 int el__hermite_polish_to(const hframe *fr, int mode, double target, double tol, el_hermite_solution *s);
+/* Whether p is at most one curvature period long (the solution set's bound), to 1e-12 relative
+ * and, where rounding, to the period's uncertainty from the double k too (hermite_polish.c). */
+int el__hermite_within_period(const el_smooth_params *p, int rounding);
 /* hermite_near.c: a near-straight root's solution s checked against the root's state st (its
  * end curvatures within 10 % of it: EL_OK, with s's end curvatures and inflection set). */
 int el__hermite_near_check(const hframe *fr, const hstate *st, el_hermite_solution *s);
@@ -276,6 +280,12 @@ int el__hermite_add_images(const hframe *fr, const el_hermite_options *opt, doub
  * stopped at the work limit (its solutions so far added: the caller's result is incomplete
  * too); EL_ENOMEM (the list freed) where it cannot grow. */
 #define EL__HERMITE_CASE3_NEAR 1e-3
+/* hermite_chord.c: by tension, between tangents along the chord (|P1|, |V1| <= 1e-2, P2, V2 > 0,
+ * sigma > 0), the whole-period separatrix loops of the exactly symmetric problem (P1 = V1 = 0),
+ * each and its mirror image polished onto the data, added at residual <= tol (replacing the
+ * same curve found by the roots); EL_ENOMEM (the list freed) where it cannot grow. */
+int el__hermite_chord_loops(const hframe *fr, const hprob *pr, const el_hermite_options *opt,
+                            el_hermite_solution **sol, size_t *n, size_t *cap);
 int el__hermite_near_case3(const hframe *fr, const double u0[2], const hprob *pr,
                            const el_hermite_options *opt, long max_evals, el_hermite_solution **sol,
                            size_t *n, size_t *cap);

@@ -9,6 +9,7 @@
 #include "hermite_internal.h"
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_linalg.h>
+#include <float.h>
 #include <string.h>
 
 static double angle_err(double a, double b) { return fabs(el__hermite_wrap_pi(a - b)); }
@@ -240,4 +241,21 @@ int el__hermite_polish_to(const hframe *fr, int mode, double target, double tol,
     }
     if (s->residual > tol) el__hermite_polish_fixed_k(fr, mode, target, s);
     return end_curvatures(s);
+}
+
+/* Whether the curve p is at most one curvature period long (to 1e-12 relative; with
+ * rounding, also to the period's own uncertainty from the double k, DBL_EPSILON / (k'^2 K)
+ * relative, which near the separatrix exceeds it: k = 1 + 1e-8, 5e-10): kappa =
+ * kappa_m cn(u; k), period 4 K(k) in u, for |k| < 1; kappa = 2 k sqrt(mu) dn(|k| u; 1/|k|),
+ * period 2 K(1/|k|) in |k| u, for |k| > 1 (the header's parametrisation). */
+int el__hermite_within_period(const el_smooth_params *p, int rounding)
+{
+    const double k = fabs(p->k), g = k < 1.0 ? k : 1.0 / k;
+    double K;
+    if (g == 1.0) return 1;   /* the separatrix: no period */
+    /* (no period known: rejected, a curve longer than one would be added otherwise) */
+    if (!(g < 1.0) || el__ellint_complete(g, (1.0 - g) * (1.0 + g), &K, NULL)) return 0;
+    const double period = (k < 1.0 ? 4.0 * K : 2.0 * K / k) / sqrt(p->mu);
+    const double slack = 1e-12 + (rounding ? DBL_EPSILON / ((1.0 - g) * (1.0 + g) * K) : 0.0);
+    return p->length <= period * (1.0 + slack);
 }

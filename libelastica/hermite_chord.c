@@ -1,0 +1,184 @@
+/*
+ * Hermite solutions between tangents along the chord (seed 004, case 1 with P1 = V1 = 0 in
+ * the normalised frame: p1 ahead on the line of t0, t1 = t0): the separatrix loops.
+ *
+ * There the two sheets of (17) are kappa0' = 0, kappa1 = kappa0 and kappa0' = -2 kappa0,
+ * kappa1 = -kappa0; on the first, |F| - sigma = -kappa0^2 ((8) with F = (0, kappa0^2 - sigma)),
+ * so the branch touches the separatrix at kappa0 = 0 ((40) has a multiple root there) and the
+ * loops turning once (one period of a k > 1 elastica, from its curvature minimum kappa0 to the
+ * next) sit at kappa0 ~ 2 sqrt(2 sigma) exp(-sqrt(sigma / 2) / 2): 7.5e-10 at sigma |p1 - p0|^2
+ * = 5000, where |F| - sigma = -5.7e-19 is 1e-22 of sigma. The x chart rounds it to 0, and the
+ * separatrix chart is opened only at a crossing of the separatrix that the frame's rounding
+ * removes (/tmp/hermloop/NOTES.md, mechanism 1: the library returned the segment alone above
+ * sigma |p1 - p0|^2 ~ 600). The loop's mirror image (kappa0 < 0) is not a root of the
+ * objective at all on data that are not exactly symmetric (mechanism 2: near the saddle the
+ * rounding of its end angle reads as a short arc).
+ *
+ * On the first sheet a whole period is in closed form (the header's parametrisation, k > 1,
+ * m = 1 / k^2, mc = 1 - m = k'^2 of the modulus 1 / k; K, E = K - m D of m): it displaces the
+ * start by <F, x(L) - x(0)> / |F| along F ((12), (10): det(x(L) - x(0), F) = 0), which is P =
+ * (0, 1) where
+ *   E_p - sigma L_p = -|F|,  L_p = 2 K / (k sqrt(mu)),  E_p = 8 k sqrt(mu) E,  |F| = 2 mu,
+ *   sigma = 2 mu (2 k^2 - 1),
+ * i.e. sqrt(mu) = 2 (2 k^2 - 1) K / k - 4 k E, and kappa0^2 = 4 mu (k^2 - 1) = 4 mu mc / m:
+ * one equation in t = ln mc (the separatrix chart's coordinate: |F| - sigma = -kappa0^2) for
+ * the given sigma, each root a loop and (kappa0 -> -kappa0) its mirror, built from the closed
+ * form (loop_solution), not from the state (whose phase the rounding of theta - phi = pi
+ * loses). Where the data are only near P1 = V1 = 0 (|P1|, |V1| <= CHORD_NEAR) each is polished
+ * onto them (el__hermite_polish_to) and kept at the data's residual <= tol, still a loop
+ * (turning 2 pi, its length within 1e-2) and within one period (the move can take a whole
+ * period past it on one side). A loop the roots found too is replaced by this one.
+ * Not covered: by length (hermite_length.c's tracing still misses them below ~1.1 |p1 - p0|),
+ * the two-loop chains (one period of an inflectional elastica), and on data moved off the
+ * chord the loop that slides off centre beyond the polish's reach (p1 or t1 moved by 1e-12 ..
+ * 1e-2: one of the pair found in about half of the problems, as before).
+ */
+#include "hermite_internal.h"
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_roots.h>
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <gsl/gsl_math.h>
+
+/* how far from P1 = V1 = 0 the symmetric problem's loops are tried as starts */
+#define CHORD_NEAR 1e-2
+/* t = ln mc searched over [T_LO, T_HI]: mc from 1e-300 (sigma |p1 - p0|^2 ~ 1e6) to 0.99; sigma
+ * falls with mc (sigma |p1 - p0|^2 = 23.8 at mc = 0.01, 0.31 at 0.5, 0.16 at 0.6), down to 0 at
+ * the circle's limit mc -> 1 (k -> infinity), where sqrt(mu) cancels (4 k (K - E) ~ k m): the
+ * large loops of lower tensions are the x chart's (found, exact data, sigma |p1 - p0|^2 1e-6 .. 20) */
+#define T_LO (-690.0)
+#define T_HI (-0.01005033585350145)
+#define T_SAMPLES 48
+
+typedef struct { double sigma, L, E, x2; } whole_loop;
+
+/* The whole-period loop at t = ln mc: its tension, length, energy and kappa0^2 (normalised).
+ * EL_EDOM where sqrt(mu) <= 0 (no such loop). */
+static int loop_at(double t, whole_loop *w)
+{
+    const double mc = exp(t), m = 1.0 - mc, g = sqrt(m);   /* g = 1 / k */
+    double K, D;
+    if (el__ellint_complete(g, mc, &K, &D)) return EL_EDOM;
+    const double E = K - m * D, k = 1.0 / g, k2m1 = mc / m, twok2m1 = (1.0 + mc) / m;
+    const double smu = 2.0 * twok2m1 * K / k - 4.0 * k * E;
+    if (!(smu > 0.0)) return EL_EDOM;
+    const double mu = smu * smu;
+    w->sigma = 2.0 * mu * twok2m1;
+    w->L = 2.0 * K / (k * smu);
+    w->E = 8.0 * k * smu * E;
+    w->x2 = 4.0 * mu * k2m1;
+    return EL_OK;
+}
+
+typedef struct { double sigma; } loop_target;
+
+static double sigma_gap(double t, void *p)
+{
+    whole_loop w;
+    if (loop_at(t, &w)) return NAN;   /* (no loop there: no bracket ends at t) */
+    return log(w.sigma / ((const loop_target *)p)->sigma);
+}
+
+/* The loop at t (kappa0 of the sign side) as a solution in the world frame of fr, its
+ * parameters in closed form: k = side / g (g = 1 / |k|), phi = psi0 + pi (F = (kappa0^2 - sigma)
+ * T0, against t0), and the start at the curvature minimum half a period before the loop's
+ * peak at u = 0, |k| u = -K(g): q = -K / |k| (the loop centred, and inside the curve where k
+ * rounds to +-1, the separatrix, which has its one loop at u = 0; the state's phase, from the
+ * angle theta - phi = pi, would lose it to the rounding of pi: a loop 0.23 of the length off
+ * centre at sigma |p1 - p0|^2 = 51 200). */
+static int loop_solution(const hframe *fr, double sigma, double t, int side, el_hermite_solution *s)
+{
+    const double mc = exp(t), m = 1.0 - mc, g = sqrt(m);
+    double K;
+    whole_loop w;
+    if (loop_at(t, &w) || el__ellint_complete(g, mc, &K, NULL)) return EL_EDOM;
+    const double d = fr->d, k = 1.0 / g;
+    memset(s, 0, sizeof *s);
+    s->npieces = 1;
+    s->curve.x0 = fr->p0[0];
+    s->curve.y0 = fr->p0[1];
+    s->curve.phi = el__hermite_wrap_pi(fr->psi0 + M_PI);
+    s->curve.mu = (w.sigma / (2.0 * (1.0 + mc) / m)) / (d * d);
+    s->curve.k = side * k;
+    s->curve.q = -K / k;
+    s->curve.length = s->length = w.L * d;
+    s->sigma = sigma;
+    s->energy = w.E / d;
+    /* the end curvatures of the curve as it is represented (its k rounded), as a polished
+     * solution's: the closed form's side sqrt(x2) / d differs by ~eps / k'^2 */
+    const double ends[2] = {0.0, s->length};
+    double kappa[2];
+    int rc = el_smooth_check(&s->curve);
+    if (!rc) rc = el_smooth_eval(&s->curve, 2, ends, NULL, NULL, kappa);
+    if (!rc) {
+        s->kappa0 = kappa[0];
+        s->kappa1 = kappa[1];
+    }
+    return rc;
+}
+int el__hermite_chord_loops(const hframe *fr, const hprob *pr, const el_hermite_options *opt,
+                            el_hermite_solution **sol, size_t *n, size_t *cap)
+{
+    if (opt->mode != EL_HERMITE_TENSION || !(pr->sigma > 0.0) || !(fabs(pr->P1) <= CHORD_NEAR) ||
+        !(fabs(pr->V1) <= CHORD_NEAR) || !(pr->P2 > 0.0) || !(pr->V2 > 0.0))
+        return EL_OK;
+    loop_target tg = {pr->sigma};
+    gsl_function F = {sigma_gap, &tg};
+    double tprev = T_LO, gprev = sigma_gap(T_LO, &tg);
+    gsl_root_fsolver *s = NULL;
+    int rc = EL_OK;
+    for (int i = 1; i <= T_SAMPLES && !rc; i++) {
+        const double t = T_LO + (T_HI - T_LO) * i / T_SAMPLES, g = sigma_gap(t, &tg);
+        if (gprev > 0.0 && g <= 0.0) {   /* (NAN on either side: no bracket) */
+            if (!s && !(s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent))) return EL_ENOMEM;
+            double lo = tprev, hi = t, root = 0.5 * (lo + hi);
+            if (gsl_root_fsolver_set(s, &F, lo, hi) == GSL_SUCCESS) {
+                for (int it = 0; it < 200; it++) {
+                    if (gsl_root_fsolver_iterate(s)) break;
+                    root = gsl_root_fsolver_root(s);
+                    lo = gsl_root_fsolver_x_lower(s);
+                    hi = gsl_root_fsolver_x_upper(s);
+                    if (gsl_root_test_interval(lo, hi, 0.0, 4.0 * DBL_EPSILON) == GSL_SUCCESS) break;
+                }
+                for (int side = 1; side >= -1 && !rc; side -= 2) {
+                    el_hermite_solution x;
+                    if (loop_solution(fr, opt->sigma, root, side, &x) || el__hermite_residual(fr, &x, &x.residual))
+                        continue;
+                    const double L0 = x.length;
+                    if (x.residual > opt->tol && el__hermite_polish_to(fr, EL_HERMITE_TENSION, opt->sigma, opt->tol, &x))
+                        continue;
+                    /* (and still the loop: a polish can slide it out of the curve, onto the segment) */
+                    double th[2];
+                    const double h[2] = {0.0, x.curve.length};
+                    /* (one period at most: the data's move can take a whole period past it) */
+                    if (!(x.residual <= opt->tol) || !(fabs(x.length - L0) <= 1e-2 * L0) ||
+                        (x.length != L0 && !el__hermite_within_period(&x.curve, 1)) ||
+                        el_smooth_eval(&x.curve, 2, h, NULL, th, NULL) ||
+                        !(fabs(fabs(th[1] - th[0]) - 2.0 * M_PI) <= 1e-3))
+                        continue;
+                    x.sigma = opt->sigma;
+                    /* the exact loop replaces a representation of it the roots gave (a chain or
+                     * a piece whose loop the rounding of its phase moved off centre) */
+                    int dup = 0;
+                    for (size_t j = 0; j < *n && !dup; j++)
+                        if (el__hermite_same_solution(&x, &(*sol)[j], fr->d)) { dup = 1; (*sol)[j] = x; }
+                    if (dup) continue;
+                    if (*n == *cap) {
+                        el_hermite_solution *more = realloc(*sol, 2 * (*cap + 1) * sizeof *more);
+                        if (!more) { free(*sol); *sol = NULL; rc = EL_ENOMEM; break; }
+                        *sol = more;
+                        *cap = 2 * (*cap + 1);
+                    }
+                    (*sol)[(*n)++] = x;
+                }
+            }
+        }
+        if (isnan(g)) continue;   /* (a sample without a loop: the bracket spans it) */
+        tprev = t;
+        gprev = g;
+    }
+    if (s) gsl_root_fsolver_free(s);
+    return rc;
+}
