@@ -34,6 +34,7 @@ from ._values import ValueEquality
 from .fit_cost import EndConditionWarning, checked_ends
 from .misfit import (MISFIT_RATIO, MisfitWarning, OutlierWarning, _Figures, _places, _verdict,
                      _warn_outliers, misfit_summary)
+from .fit_retrace import retrace_gate
 from .order import (Retrace, curve_order, data_run_back, order_summary, ordering, retrace_summary,
                     run_back, turn_back)
 
@@ -325,8 +326,8 @@ def _set_constraints(o, model: str, n: int, constraints: Optional[Mapping[str, o
             getattr(o, f"{where}_point")[1] = y
         elif kind in ("angle", "number"):
             v = as_real(value, f"fit: constraint {name!r}")
-            if kind == "angle":   # (stack: _options, fit, its caller)
-                warn_if_degrees(v, f"fit: constraint {name!r}", stacklevel=4)
+            if kind == "angle":   # (stack: _options, _fit, fit, its caller)
+                warn_if_degrees(v, f"fit: constraint {name!r}", stacklevel=5)
             setattr(o, f"{where}_{'tangent' if kind == 'angle' else 'curvature'}", v)
         else:   # "length": L alone is (L, L), the CLI's --length L
             lo, hi = (value, value) if name == "length" and _is_number(value) else _pair(value, name)
@@ -568,6 +569,22 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
     rms and its exported cubic's, :meth:`FitResult.cubic_distances`) and warns
     (SparseWarning, ``FitResult.sparse``) where that one lies far nearer.
     """
+    return _fit(points, model, fixed, constraints=constraints, distance=distance, bounds=bounds,
+                tol=tol, max_iter=max_iter, limited_memory=limited_memory,
+                max_candidates=max_candidates, param=param, initial=initial, strict=strict,
+                order=order, check_ends=check_ends, check_misfit=check_misfit,
+                check_sparse=check_sparse)
+
+
+def _fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = None, *,
+         constraints: Optional[Mapping[str, object]] = None, distance: Optional[str] = None,
+         bounds: Optional[Mapping[str, tuple]] = None, tol: Optional[float] = None,
+         max_iter: Optional[int] = None, limited_memory: bool = False,
+         max_candidates: Optional[int] = None, param: str = "auto", initial: Optional[Curve] = None,
+         strict: bool = False, order: str = "given", check_ends: bool = True,
+         check_misfit: bool = True, check_sparse: bool = True, gate: bool = True) -> FitResult:
+    """:func:`fit`'s work (its warnings one frame deeper: stacklevel 3 names fit's caller);
+    gate False: without the back-and-forth gate (fit_retrace.py), :func:`judging_fit`'s."""
     if not isinstance(model, str) or model not in ("discrete", "smooth"):
         raise ValueError(f"fit: model must be 'discrete' or 'smooth', got {model!r}")
     pts = as_point_array(points, "points")
@@ -626,36 +643,25 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
         else:
             s = foot.copy()
     back, given_rms, tried, flip = None, None, None, False
-    if (unordered is not None and unordered.order is None and res.distance != _DISTANCES["paired"]
-            and not (constraints or fixed or bounds) and initial is None):
-        back = run_back(pts, foot, res.rms) if res.wander_gap < 0 else None
-        if (back is not None or st != lib.EL_OK or _verdict(fig, dist, float(res.rms), False) is not None
-                or (res.wander_gap < 0 and run_back(pts, foot, res.rms, near=False) is not None)):
-            retraced = _retraced(model, pts, o, float(res.rms))
-            tried = retraced[-1]
-            if retraced[0] is not None:   # a scan passed back and forth: fitted in curve order
-                given_rms = float(res.rms)
-                res, st, dist, foot, back, _ = retraced
-                flip = smooth and foot[0] > 0.5 * res.params.length   # run from point 0's end
-                if flip:
-                    length = float(res.params.length)
-                    dist, foot = -dist, length - foot
-                    back = back._replace(s_first=length - back.s_first, s_last=length - back.s_last)
-                s = foot.copy() if smooth else None
+    if (gate and unordered is not None and unordered.order is None
+            and res.distance != _DISTANCES["paired"] and not (constraints or fixed or bounds)
+            and initial is None):
+        res, st, dist, foot, s, back, given_rms, tried, flip = retrace_gate(
+            model, pts, o, res, st, dist, foot, s, fig)
     if strict and st != lib.EL_OK:
         check(st, "fit")
     if st != lib.EL_OK:     # a status 6 went unnoticed unless the caller read it (QA)
         warnings.warn(f"fit: not converged: {ffi.string(lib.el_strerror(st)).decode()} (status {st}); "
-                      "strict=True raises instead", ConvergenceWarning, stacklevel=2)
+                      "strict=True raises instead", ConvergenceWarning, stacklevel=3)
     if unordered is not None and unordered.order is not None:
         warnings.warn(f"fit: {order_summary(unordered)}: fitted in their order, the curve may coil "
                       "through them; order='curve' fits them in curve order (el.curve_order)",
-                      OrderWarning, stacklevel=2)
+                      OrderWarning, stacklevel=3)
     elif given_rms is not None:
         warnings.warn(f"fit: {retrace_summary(back)}: fitted in curve order (as order='curve'; "
                       f"el.curve_order) at rms {res.rms:.3g}, against {given_rms:.3g} in the "
                       "points' order, distances and feet given in the points' order",
-                      OrderWarning, stacklevel=2)
+                      OrderWarning, stacklevel=3)
     else:
         # points that run back: the fit's feet fall there when it follows them (the smooth
         # model's, by distance); a fit that coils or wanders through a scan passed back and
@@ -679,63 +685,24 @@ def fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] = 
         if back is not None:
             hint = ("order='curve' fits them in curve order (el.curve_order)" if tried is None else
                     f"in curve order (order='curve') the rms is {tried:.3g}, against {res.rms:.3g}")
-            warnings.warn(f"fit: {retrace_summary(back)}; {hint}", OrderWarning, stacklevel=2)
+            warnings.warn(f"fit: {retrace_summary(back)}; {hint}", OrderWarning, stacklevel=3)
         elif res.wander_gap >= 0:
             warnings.warn(f"fit: {wander_summary(res.wander_gap)}: add a point between them to hold it "
                           "there, or bound the curve's length (constraints={'length': (lo, hi)})",
-                          WanderWarning, stacklevel=2)
+                          WanderWarning, stacklevel=3)
     r = _result(model, res, st, pts.copy(), dist, foot, s, constraints, idx, back)
     if flip:     # the same curve run from the end of point 0 (curve order ran from the other)
         r = _fit_result(**dict(r.__dict__, curve=r.curve.reversed(), initial=r.initial.reversed()))
     if check_ends and (constraints or fixed):
         r = checked_ends(r, fixed, dict(model=model, distance=distance, bounds=bounds, tol=tol,
-                         limited_memory=limited_memory, max_candidates=max_candidates, param=param))
+                         limited_memory=limited_memory, max_candidates=max_candidates, param=param),
+                         stacklevel=4)
     if check_misfit:
         r = _judged(r, judged_fit(r, constraints or fixed or bounds, distance), fig)
         _warn_outliers(r)
     if check_sparse and not smooth and n < SPARSE_POINTS:
         r = _sparse(r, constraints)
     return r
-
-
-def _retraced(model: str, pts: np.ndarray, o, rms: float):
-    """The fit of points in order along a curve that run back over it (a scan passed back and
-    forth, QA20: 300 points out and 300 back, noise 0.4, fitted by distance in their order a
-    2936-long curve for 1500, looping back up to 454 from every point, rms 2.93; the discrete
-    model 2562 long, rms 37.4, not converged): fitted in curve order (:func:`curve_order`,
-    as order="curve" fits them; by distance, ``o``: the fit's options), where its feet, in
-    the points' order, run back or forth (:func:`run_back`; curve order may start at the far end) and its rms (of the
-    distances of the same points) is below ``rms``, the fit in their order's. Returns (res,
-    status, distances, feet, Retrace, rms) with distances and feet in the points' order, or
-    (None, ..., None, rms in curve order or None where not fitted)."""
-    n = len(pts)
-    idx = curve_order(pts)
-    q = np.ascontiguousarray(pts[idx])
-    res = ffi.new(f"el_fit_{model}_result *")
-    dist, foot = np.empty(n), np.empty(n)
-    was, o.distance = o.distance, _DISTANCES["orthogonal"]
-    try:
-        st = call(lib.el_fit_smooth if model == "smooth" else lib.el_fit_discrete, dptr(q), n, o,
-                  ffi.NULL, res, dptr(dist), dptr(foot), keep=(q, dist, foot))
-    finally:
-        o.distance = was
-    if st not in (lib.EL_OK, lib.EL_ENOCONV, lib.EL_EMAXITER):
-        return None, None, None, None, None, None
-    back = None
-    if res.wander_gap < 0 and res.rms < rms:
-        inv = np.empty(n, dtype=np.intp)
-        inv[idx] = np.arange(n)
-        dist, foot = dist[inv], foot[inv]
-        back = run_back(pts, foot, float(res.rms), near=False)
-        if back is None:    # curve order may run from the other end: the feet from there
-            p = res.params
-            length = p.length if model == "smooth" else p.h * (n - 1)
-            b = run_back(pts, length - foot, float(res.rms), near=False)
-            back = b if b is None else b._replace(s_first=float(foot[b.first]),
-                                                  s_last=float(foot[b.last]))
-    if back is None:
-        return None, None, None, None, None, float(res.rms)
-    return res, st, dist, foot, back, float(res.rms)
 
 
 def _sparse(r: FitResult, constraints) -> FitResult:
@@ -754,7 +721,7 @@ def _sparse(r: FitResult, constraints) -> FitResult:
     warnings.warn(f"fit: the discrete model's polygon of {n - 1} segments lies {r.rms:.3g} from "
                   f"the {n} points (rms), its cubic {cubic:.3g}, the smooth model's curve "
                   f"{smooth:.3g}: fewer than {SPARSE_POINTS} points; use model='smooth'",
-                  SparseWarning, stacklevel=3)
+                  SparseWarning, stacklevel=4)
     return dataclasses.replace(r, sparse=smooth)
 
 
@@ -784,24 +751,35 @@ def _judged(r: FitResult, judged: Optional[FitResult], fig: _Figures) -> FitResu
         if min(abs(m.corner - judged.retrace.first), abs(m.corner - judged.retrace.last)) <= w:
             m = dataclasses.replace(m, corner=-1, parts=None)
     said = misfit_summary(m, judged.points, numbered=judged.order is None)   # curve order: by place
-    warnings.warn(f"fit: {said}", MisfitWarning, stacklevel=3)
+    warnings.warn(f"fit: {said}", MisfitWarning, stacklevel=4)
     return dataclasses.replace(r, misfit=m)
 
 
 def quiet_fit(points, *args, **kwargs) -> FitResult:
     """:func:`fit` without its warnings (ConvergenceWarning, WanderWarning, EndConditionWarning,
     MisfitWarning, SparseWarning), check_ends, check_misfit and check_sparse off unless asked:
-    for a fit judging another, or said in its caller's words (status, wander_gap, free,
-    misfit, sparse)."""
+    for a fit said in its caller's words (status, wander_gap, free, misfit, sparse): the
+    user's own fit (the CLI's, FreeCAD's), or one that stands for it (check_ends' free fit,
+    resampled_fits_worse's)."""
+    return _quietly(fit, points, args, kwargs)
+
+
+def judging_fit(points, *args, **kwargs) -> FitResult:
+    """:func:`quiet_fit` without el.fit's back-and-forth gate (fit_retrace.py): a fit made
+    only to judge or compare (fit_keyline's one-elastica check, misfit's corner parts, the
+    sparse check's smooth fit, resampled_reference's start), not returned to the user. Such
+    a fit can be a misfit by design (an S fitted by one elastica), which the gate refitted
+    in curve order (curve_order ~3 ms of a 1000-point scan's keyline, 5.7 -> 23.8 ms)."""
+    return _quietly(_fit, points, args, dict(kwargs, gate=False))
+
+
+def _quietly(fit_by, points, args, kwargs) -> FitResult:
     with warnings.catch_warnings():
-        warnings.simplefilter("ignore", ConvergenceWarning)
-        warnings.simplefilter("ignore", WanderWarning)
-        warnings.simplefilter("ignore", EndConditionWarning)
-        warnings.simplefilter("ignore", MisfitWarning)
-        warnings.simplefilter("ignore", OutlierWarning)
-        warnings.simplefilter("ignore", SparseWarning)
-        return fit(points, *args, **dict(dict(check_ends=False, check_misfit=False,
-                                              check_sparse=False), **kwargs))
+        for w in (ConvergenceWarning, WanderWarning, EndConditionWarning, MisfitWarning, OutlierWarning,
+                  SparseWarning):
+            warnings.simplefilter("ignore", w)
+        return fit_by(points, *args, **dict(dict(check_ends=False, check_misfit=False,
+                                                 check_sparse=False), **kwargs))
 
 
 __all__ = ["ConstraintError", "FitResult", "fit", "NotConvergedError"]

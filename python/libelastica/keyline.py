@@ -18,7 +18,7 @@ from ._values import ValueEquality
 from .core import SmoothElastica
 from .cubic import SPARSE_POINTS, SparseWarning, smooth_fits_better
 from .fit import (_MODE_NAMES, ConvergenceWarning, FitResult, OrderWarning, _make_curve,
-                  quiet_fit)
+                  judging_fit)
 from .misfit import MisfitWarning, misfit, misfit_summary
 from .order import order_summary, out_of_order
 
@@ -235,7 +235,7 @@ def _check_keyline_split(polygon, side_points, split: int, keyline_rms: Optional
                           f"{sum(side_points)} points on one side): the points show no inflection a "
                           "keyline can split at; fit them as one curve")
     polygon = np.ascontiguousarray(polygon)
-    one = quiet_fit(polygon, model="discrete")
+    one = judging_fit(polygon, model="discrete")     # a verdict only: no back-and-forth gate
     kappa = one.curve.curvature()
     if kappa.min() < 0.0 < kappa.max():
         return

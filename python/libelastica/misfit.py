@@ -292,7 +292,7 @@ def _corner(pts: np.ndarray, noise: float):
     or (-1, None). Each candidate's parts (of every step-th point: CORNER_SAMPLES at most)
     are fitted by the smooth model (their rms, far points left out; the turn between the
     first's end tangent and the second's start)."""
-    from .fit import quiet_fit
+    from .fit import judging_fit
     step = max(1, -(-len(pts) // CORNER_SAMPLES))
     P = pts[::step]
     w = max(6, len(P) // CORNER_WINDOW)
@@ -313,7 +313,7 @@ def _corner(pts: np.ndarray, noise: float):
         parts, fits = [], []
         for side in (P[:p + 1], P[p:]):     # thinned: 1e5 points took 10 s
             try:
-                fits.append(quiet_fit(side, model="smooth"))
+                fits.append(judging_fit(side, model="smooth"))     # a verdict: no gate
             except (ValueError, ArithmeticError, RuntimeError):
                 break
             parts.append(_rms_near(fits[-1].distances, side))
@@ -452,4 +452,4 @@ def _warn_outliers(r) -> None:
     rows = sorted(int(r.order[i]) for i in far) if r.order is not None else far
     free = r.free.distances if r.constraints and r.free is not None else None
     warnings.warn(OutlierWarning("fit: " + outliers_summary(r.distances, far, rows, free), rows),
-                  stacklevel=3)
+                  stacklevel=4)     # (_warn_outliers, _fit, fit, its caller)
