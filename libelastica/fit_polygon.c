@@ -132,8 +132,8 @@ static double longest_segment(const double *V, size_t nv)
  * a vertex that is not finite is the whole plane (never left out).
  */
 /* TREE_EAGER: from this many vertices the tree is built before the first point, so that
- * the walks can skip its nodes (the large scans it is for); below, only where a stretch
- * search needs it: a 1000-point fit calls this at every slip check, and building the tree
+ * the walks can skip its nodes (the large scans it is for); below, only where the stretch
+ * searches' long ranges pay for it (nearest_in_range): a 1000-point fit calls this at every slip check, and building the tree
  * at each call cost its paired fit 0.26 ms of 0.6 (el.fit vs scipy 3.3 -> 2.5 x). The
  * answer is the same either way (test_fit_polygon_tree). */
 enum { TREE_LEAF = 8, TREE_MIN = 4 * BLOCK, TREE_EAGER = 4096 };
@@ -292,12 +292,18 @@ static void tree_search(const seg_tree *T, long node, long lo, long hi, tree_que
     }
 }
 
-/* nearest_segment over j0 .. j1 - 1, by the tree where the range is long (built at the
- * first such range; without memory, or accelerate 0, by the scan): the same segment. */
-static void nearest_in_range(seg_tree *T, int *tree_state, const double *V, long ns, long j0, long j1,
-                             const double *P, double lmax, double *r, double *bd, long *bj, double *bt)
+/* nearest_segment over j0 .. j1 - 1, by the tree where the range is long (without memory,
+ * or accelerate 0, by the scan): the same segment. The tree is built once the long ranges
+ * scanned so far (*scanned segments) pass the polygon's segments, what a build costs
+ * (O(n)): a few long ranges cost less by the scan (a 1000-point paired fit met some in 26
+ * of bench_fit.py's 84 noisy 1000-point fits, and built the tree for them, 86 000
+ * instructions, where the scans cost a few thousand); many, at most twice the cheaper. */
+static inline void nearest_in_range(seg_tree *T, int *tree_state, long *scanned, const double *V, long ns,
+                                    long j0, long j1, const double *P, double lmax, double *r, double *bd,
+                                    long *bj, double *bt)
 {
-    if (j1 - j0 >= TREE_MIN && *tree_state == 0) *tree_state = tree_build(T, V, ns) ? 1 : -1;
+    if (j1 - j0 >= TREE_MIN && *tree_state == 0 && (*scanned += j1 - j0) > ns)
+        *tree_state = tree_build(T, V, ns) ? 1 : -1;
     if (j1 - j0 < TREE_MIN || *tree_state != 1) {
         nearest_segment(V, j0, j1, P, lmax, r, bd, bj, bt);
         return;
@@ -370,6 +376,7 @@ void el__fit_polygon_distances_by(const fit_objective *o, const double *V, size_
 {
     seg_tree T = {V, 0, 0, NULL, NULL};
     int tree_state = accelerate ? 0 : -1;       /* 0: not built yet, 1: built, -1: the scan */
+    long scanned = 0;                           /* segments of long ranges scanned (nearest_in_range) */
     if (accelerate && nv > TREE_EAGER) tree_state = tree_build(&T, V, (long)nv - 1) ? 1 : -1;
     const long last = (long)nv - 2;
     /* the polygon's largest turning |T' - T| at its vertices over its shortest segment
@@ -441,8 +448,8 @@ void el__fit_polygon_distances_by(const fit_objective *o, const double *V, size_
             const long reach = m >= 1.0 ? (m <= (double)(last + 1) ? (long)m : last + 1) : 1;
             const long lo = centre - reach < 0 ? 0 : centre - reach, hi = centre + reach > last ? last : centre + reach;
             double r = reach_of(d, lmax);
-            nearest_in_range(&T, &tree_state, V, last + 1, lo, hi < clo ? hi + 1 : clo, P, lmax, &r, &bd, &best, &bt);
-            nearest_in_range(&T, &tree_state, V, last + 1, lo > chi ? lo : chi + 1, hi + 1, P, lmax, &r, &bd, &best, &bt);
+            nearest_in_range(&T, &tree_state, &scanned, V, last + 1, lo, hi < clo ? hi + 1 : clo, P, lmax, &r, &bd, &best, &bt);
+            nearest_in_range(&T, &tree_state, &scanned, V, last + 1, lo > chi ? lo : chi + 1, hi + 1, P, lmax, &r, &bd, &best, &bt);
             if (lo < clo) clo = lo;
             if (hi > chi) chi = hi;
         }
