@@ -77,3 +77,32 @@ def test_verdict_agrees_with_the_length_difference_on_random_ends(seed):
             negative += c < 0
             agree += sp.unstable == (c < 0)
     assert total >= 10 and negative >= 1 and agree == total, (agree, total, negative)
+
+
+def test_free_batten_span_past_its_force_free_length_slides():
+    """Tension 0 (the 'slides' check takes the same count, TENSION_COUNT): a clamped span
+    started (initial=) on a Hermite branch with d2/dl2 integral kappa^2 < 0 is no free batten
+    (DomainError, it slides off); one with d2/dl2 > 0 is returned as it is. Before, every
+    branch was returned (6 of the 10 below have d2/dl2 < 0)."""
+    rng = np.random.default_rng(5)
+    slid = kept = 0
+    for _ in range(20):
+        a0, a1 = rng.uniform(-np.pi, np.pi, 2)
+        t0, t1 = (np.cos(a0), np.sin(a0)), (np.cos(a1), np.sin(a1))
+        for q in el.hermite(P0, t0, P1, t1, tension=0.0):
+            if not hasattr(q, "phi") or q.length > 20:
+                continue
+            c = second_difference(t0, t1, 0.0, q)
+            if abs(c) > 1e3:      # another branch picked by the difference: no verdict
+                continue
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                if c < 0:
+                    with pytest.raises(el.DomainError, match="slides off"):
+                        el.elastic_spline([P0, P1], tension=0.0, start=t0, end=t1, initial=[q])
+                    slid += 1
+                else:
+                    sp = el.elastic_spline([P0, P1], tension=0.0, start=t0, end=t1, initial=[q])
+                    assert sp.length == pytest.approx(q.length, rel=1e-9) and not sp.unstable
+                    kept += 1
+    assert slid >= 5 and kept >= 3, (slid, kept)
