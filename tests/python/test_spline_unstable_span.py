@@ -106,3 +106,93 @@ def test_free_batten_span_past_its_force_free_length_slides():
                     assert sp.length == pytest.approx(q.length, rel=1e-9) and not sp.unstable
                     kept += 1
     assert slid >= 5 and kept >= 3, (slid, kept)
+
+
+# Multi-span (TENSION_COUNT's Schur structure needs free knot angles too): hand-like ducks, one
+# span started (initial=) on a longer Hermite branch of its end angles at the given tension
+# (/tmp/revspline/fdcheck.py's cases 18 and 38 of 160, all 160 agreeing with the library)
+MULTI = {
+    "natural": ([(0.0, 0.0), (-0.238591376375, -0.811659697041), (0.523085648489, -1.092280476224),
+                 (1.701007954656, -1.498738766755), (2.006084717604, -1.028188787857)],
+                0.7081432543570075, False,
+                [(0.0, 0.0, -0.585856930399896, 3.1044789280155416, 0.7463417012401921, -1.9056606504634868, 0.907302100787049),
+                 (-0.23859137637509134, -0.8116596970407214, -1.7421948377856367, 3.6686258778481795, 0.7404435897433811, 0.49569344432796075, 0.8466471109957481),
+                 (0.5230856484886385, -1.0922804762236331, 2.5315953137692526, 0.3049163225214981, -1.0395213228741742, 1.8036815104086845, 1.2562788723621885),
+                 (1.701007954656212, -1.498738766755329, 1.0636666459160848, 8.274567276269412, 0.7220769867808867, -1.9824655629678796, 1.3401808956740704)]),
+    "clamped": ([(0.0, 0.0), (0.333708317889, 0.608070431567), (0.134997174573, 2.314757282152),
+                 (-0.877158685887, 2.918622368683)],
+                0.1783095274006117, True,
+                [(0.0, 0.0, 1.37465414433407, 12.607839631744842, 0.7096024855990747, -3.49701149714846, 1.6901608652919855),
+                 (0.333708317888952, 0.6080704315665948, 2.907775983266814, 2.5657829271061754, 0.7192870033252746, -3.623589477200045, 1.8504949109049016),
+                 (0.13499717457275712, 2.3147572821518825, 1.1895233201503337, 2.4212863608937787, 0.7200073746033082, 0.616143233570744, 1.20571138894028)]),
+}
+
+
+def span_energy(p0, p1, a0, a1, length, ref):
+    """e_j + its length's share: integral kappa^2 on the el.hermite-by-length branch nearest ref."""
+    sols = [r for r in el.hermite(p0, (np.cos(a0), np.sin(a0)), p1, (np.cos(a1), np.sin(a1)),
+                                  length=length, samples=24, grid=12) if hasattr(r, "phi")]
+    ref_pts = ref.points(np.linspace(0.0, ref.length, 24))
+    dist = [np.max(np.linalg.norm(r.points(np.linspace(0.0, r.length, 24)) - ref_pts, axis=1)) for r in sols]
+    return sols[int(np.argmin(dist))].energy()
+
+
+def fd_hessian(pts, sigma, sp, free_ends, d=1e-3):
+    """The dense second variation of sum_j (integral kappa^2 + sigma l_j) in the free knot angles
+    and every span length, by central differences of each span's (ta, tb, l) energy."""
+    n = len(pts)
+    free = [i for i in range(n) if free_ends or 0 < i < n - 1]
+    col = {i: t for t, i in enumerate(free)}
+    hess = np.zeros((len(free) + n - 1, len(free) + n - 1))
+    for j, q in enumerate(sp.pieces):
+        x0, h = np.array([sp.angles[j], sp.angles[j + 1], q.length]), np.array([d, d, d * q.length])
+        f = lambda e: span_energy(pts[j], pts[j + 1], *(x0 + np.array(e) * h), q) + sigma * (x0[2] + e[2] * h[2])
+        hs, eye = np.zeros((3, 3)), np.eye(3, dtype=int)
+        for a in range(3):
+            hs[a, a] = (f(eye[a]) - 2 * f((0, 0, 0)) + f(-eye[a])) / h[a] ** 2
+            for b in range(a + 1, 3):
+                hs[a, b] = hs[b, a] = (f(eye[a] + eye[b]) - f(eye[a] - eye[b]) - f(eye[b] - eye[a])
+                                       + f(-eye[a] - eye[b])) / (4 * h[a] * h[b])
+        idx = [col.get(j), col.get(j + 1), len(free) + j]
+        for a in range(3):
+            for b in range(3):
+                if idx[a] is not None and idx[b] is not None:
+                    hess[idx[a], idx[b]] += hs[a, b]
+    return hess, len(free)
+
+
+def multi_case(case, from_initial=True):
+    pts, sigma, clamped, initial = MULTI[case]
+    pts = np.array(pts)
+    ends = {}
+    if clamped:
+        d0, d1 = pts[1] - pts[0], pts[-1] - pts[-2]
+        ends = dict(start=tuple(d0 / np.linalg.norm(d0)), end=tuple(d1 / np.linalg.norm(d1)))
+    pieces = [el.SmoothElastica(x0=p[0], y0=p[1], phi=p[2], mu=p[3], k=p[4], q=p[5], length=p[6]) for p in initial]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        sp = el.elastic_spline(pts, tension=sigma, initial=pieces if from_initial else None, **ends)
+    return pts, sigma, clamped, sp
+
+
+@pytest.mark.parametrize("case", sorted(MULTI))
+def test_multi_span_past_its_force_free_length_is_unstable(case):
+    """4-5 ducks, one span on its long branch: the FD second variation has a negative eigenvalue,
+    its free-length part H (the Schur complement on the lengths) none, one negative c_j
+    (1 / gamma_j): unstable by #{gamma_j < 0} alone, that span named (read stable before)."""
+    pts, sigma, clamped, sp = multi_case(case)
+    hess, k = fd_hessian(pts, sigma, sp, not clamped)
+    a, b, c = hess[:k, :k], hess[:k, k:], hess[k:, k:]
+    negative_c = [j for j in range(len(c)) if c[j, j] < 0]
+    assert np.linalg.eigvalsh(hess)[0] < -0.5 and len(negative_c) == 1
+    assert np.linalg.eigvalsh(a - b @ np.linalg.solve(c, b.T))[0] > 0.5   # H alone: stable
+    assert sp.unstable and sp.unstable_span == negative_c[0]
+
+
+def test_multi_span_fair_spline_is_stable():
+    """The natural case's ducks by the library's own solve (no initial=): every eigenvalue of
+    the same FD second variation positive, and the library says stable. (The clamped case's
+    fair spline has a span 6e-4 longer than its chord, c_j ~ 1e6: beyond this difference.)"""
+    pts, sigma, clamped, sp = multi_case("natural", from_initial=False)
+    hess, _ = fd_hessian(pts, sigma, sp, not clamped)
+    assert np.linalg.eigvalsh(hess)[0] > 0.5 and not sp.unstable
