@@ -42,7 +42,7 @@ class PackageTest(unittest.TestCase):
         gui = {"taskpanels", "panelbase", "panelexpressions", "spinboxes", "viewproviders",
                "commands", "init_gui", "preferences", "FreeCADGui", "PySide", "pivy"}
         for f in ("proxy", "geometry", "nearest", "sources", "fit", "fit_core", "fit_ends",
-                  "fit_shape", "blend", "spline", "comb", "ellblend", "g2quad"):
+                  "fit_shape", "blend", "spline", "comb", "ellblend", "g2quad", "copies"):
             with open(os.path.join(PKG, f + ".py")) as fh:
                 tree = ast.parse(fh.read())
             names = set()

@@ -134,3 +134,121 @@ class CopyIntoSketchTest(S.DocTest):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class CopyDriftTest(S.DocTest):
+    """QA22gui F1: a blend copied into its sketch, Tangent-joined there; the designer moves
+    the line: the blend re-solves G2 but the Sketcher bends the copy (26.2 mm off), and
+    nothing said so. Now the blend's recompute measures its copy and says it in its Status
+    and the report view, without touching the sketch; Copy into again clears it."""
+    doc_name = "ElasticaCopyDrift"
+
+    def test_a_copy_the_sketcher_bent_is_said_and_cleared_by_copying_again(self):
+        import Sketcher
+        from freecad.elastica import blend as B
+        sk = self.doc.addObject("Sketcher::SketchObject", "Profile")
+        sk.addGeometry(Part.LineSegment(App.Vector(0, 0, 0), App.Vector(0, 120, 0)), False)
+        sk.addGeometry(Part.ArcOfCircle(Part.Circle(App.Vector(80, 300, 0), App.Vector(0, 0, 1),
+                                                    40), math.pi / 2, math.pi), False)
+        for c in (("Vertical", 0), ("DistanceX", -1, 1, 0, 1, 0.0),
+                  ("DistanceY", -1, 1, 0, 1, 0.0), ("DistanceY", 0, 1, 0, 2, 120.0),
+                  ("Radius", 1, 40.0), ("DistanceX", -1, 1, 1, 3, 80.0),
+                  ("DistanceY", -1, 1, 1, 3, 300.0), ("Angle", 1, math.pi / 2)):
+            sk.addConstraint(Sketcher.Constraint(*c))
+        self.doc.recompute()
+        b = B.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Continuity="G2")
+        self.doc.recompute()
+        ok = b.Status
+        self.assertNotIn("copy", ok)
+        i = G.write_to_sketch(b, sk)[0]
+        b.touch()
+        self.doc.recompute()
+        self.assertEqual(b.Status, ok)           # a faithful copy: nothing said
+        sk.addConstraint(Sketcher.Constraint("Tangent", 0, 2, i, 1))
+        sk.addConstraint(Sketcher.Constraint("Tangent", 1, 2, i, 2))
+        a0 = sk.Geometry[1].StartPoint          # the outline closed as QA did
+        n = sk.addGeometry(Part.LineSegment(a0, App.Vector(150, a0.y, 0)), False)
+        m = sk.addGeometry(Part.LineSegment(App.Vector(150, a0.y, 0), App.Vector(150, 0, 0)), False)
+        o = sk.addGeometry(Part.LineSegment(App.Vector(150, 0, 0), App.Vector(0, 0, 0)), False)
+        for c in ((1, 1, n, 1), (n, 2, m, 1), (m, 2, o, 1), (o, 2, 0, 1)):
+            sk.addConstraint(Sketcher.Constraint("Coincident", *c))
+        self.doc.recompute()
+        sk.setDatum(1, App.Units.Quantity("-20 mm"))
+        sk.setDatum(3, App.Units.Quantity("150 mm"))
+        tags = [g.Tag for g in sk.Geometry]
+        self.doc.recompute()
+        self.assertEqual([o.Name for o in self.doc.Objects if "Touched" in o.State], [])  # settles
+        copy, own = Part.Edge(sk.Geometry[i]), b.Shape.Edges[0]
+        off = max(max(copy.distToShape(Part.Vertex(p))[0] for p in own.discretize(200)),
+                  max(own.distToShape(Part.Vertex(p))[0] for p in copy.discretize(200)))
+        self.assertGreater(off, 1.0)            # QA: 26.2 mm
+        ok = b.Status.split(". The copy in ")[0]         # the blend re-solved, G2 again
+        self.assertTrue(b.Status.startswith(ok + ". The copy in Sketch 'Profile' is "),
+                        b.Status)
+        said = float(b.Status.split(" is ", 1)[1].split(" mm")[0])
+        self.assertAlmostEqual(said, off, delta=0.02 * off)
+        self.assertTrue(b.Status.endswith("Copy into again"), b.Status)
+        self.assertEqual([g.Tag for g in sk.Geometry], tags)   # the sketch's geometry kept
+        G.write_to_sketch(b, sk)
+        self.doc.recompute()
+        b.touch()
+        self.doc.recompute()
+        self.assertEqual(b.Status, ok)
+
+    def test_a_copy_moved_in_a_sketch_the_feature_does_not_read_is_said(self):
+        """The copy in a sketch of its own (the feature reads another): the designer moves
+        the copy's start in the Sketcher; that sketch's recompute has the feature measure
+        it and say it, the feature not touched (nothing recomputes after: one pass)."""
+        xy = [(x, 10 * math.sin(x / 30.0)) for x in range(0, 100, 10)]
+        fit = Fi.make(self.doc, [(S.points_sketch(self.doc, xy), [])], Model="smooth")
+        self.doc.recompute()
+        ok = fit.Status
+        sk = self.doc.addObject("Sketcher::SketchObject", "Outline")
+        sk.Placement = fit.Plane
+        i = G.write_to_sketch(fit, sk)[0]
+        self.doc.recompute()
+        self.assertEqual(fit.Status, ok)
+        start = sk.Geometry[i].StartPoint
+        sk.movePoint(i, 1, start + App.Vector(0, 3, 0))
+        self.doc.recompute()
+        self.assertEqual([o.Name for o in self.doc.Objects if "Touched" in o.State], [])
+        self.assertTrue(fit.Status.startswith(ok + ". The copy in Sketch 'Outline' is "),
+                        fit.Status)
+        said = float(fit.Status.split(" is ", 1)[1].split(" mm")[0])
+        copy, own = Part.Edge(sk.Geometry[i]), fit.Shape.Edges[0]
+        copy.transformShape(sk.Placement.toMatrix())
+        off = max(max(copy.distToShape(Part.Vertex(p))[0] for p in own.discretize(200)),
+                  max(own.distToShape(Part.Vertex(p))[0] for p in copy.discretize(200)))
+        self.assertGreater(off, 2.5)            # the start moved 3 mm across
+        self.assertAlmostEqual(said, off, delta=0.02 * off)
+        G.write_to_sketch(fit, sk)              # Copy into again: said no more
+        self.doc.recompute()
+        self.assertEqual(fit.Status, ok)
+
+    def test_a_copy_is_found_again_in_a_reopened_document(self):
+        """FreeCAD 0.20 gives a sketch's geometry new Tags when a document is opened (they
+        are not saved), and the copy was known by its Tag only: after a reopen a moved copy
+        was said by nothing, and Copy into added a second copy beside the first (the
+        overlap of QA20gui F4). The copy's saved mark finds it: said, replaced in place."""
+        xy = [(x, 10 * math.sin(x / 30.0)) for x in range(0, 100, 10)]
+        fit = Fi.make(self.doc, [(S.points_sketch(self.doc, xy), [])], Model="smooth")
+        self.doc.recompute()
+        ok = fit.Status
+        sk = self.doc.addObject("Sketcher::SketchObject", "Outline")
+        sk.Placement = fit.Plane
+        sk.addGeometry(Part.LineSegment(App.Vector(0, 0, 0), App.Vector(10, 0, 0)), False)
+        i = G.write_to_sketch(fit, sk)[0]
+        self.doc.recompute()
+        start = sk.Geometry[i].StartPoint
+        sk.movePoint(i, 1, start + App.Vector(0, 3, 0))
+        self.doc.recompute()
+        fit, sk = S.reopened(self, "copy.FCStd", fit.Name, sk.Name)
+        fit.touch()
+        self.doc.recompute()
+        self.assertTrue(fit.Status.startswith(ok + ". The copy in Sketch 'Outline' is "),
+                        fit.Status)
+        n = len(sk.Geometry)
+        self.assertEqual(G.write_to_sketch(fit, sk), [i])        # in place, not beside it
+        self.doc.recompute()
+        self.assertEqual(len(sk.Geometry), n)
+        self.assertEqual(fit.Status, ok)

@@ -313,8 +313,8 @@ def write_to_sketch(feature, sketch, constrain_to=None):
     earlier = earlier_copy(feature, sketch)
     if earlier and len(earlier) == len(curves):
         geometry = sketch.Geometry
-        for i, c in zip(earlier, curves):
-            geometry[i] = c
+        for k, (i, c) in enumerate(zip(earlier, curves)):
+            geometry[i] = _marked(c, feature, k)
         _follow_ends(sketch, geometry, earlier)
         sketch.Geometry = geometry          # (Sketcher's own constraints keep their indices)
         ids = earlier
@@ -323,7 +323,7 @@ def write_to_sketch(feature, sketch, constrain_to=None):
             f"{', '.join(str(i + 1) for i in ids)}) replaced by the curve of now\n")
         constrain_to = None                 # joined already
     else:
-        ids = [sketch.addGeometry(c, False) for c in curves]
+        ids = [sketch.addGeometry(_marked(c, feature, k), False) for k, c in enumerate(curves)]
     _remember_copy(feature, sketch, ids)
     if constrain_to and ids:
         import Sketcher
@@ -343,14 +343,42 @@ def write_to_sketch(feature, sketch, constrain_to=None):
 COPIES = "SketchCopies"
 
 
+# A copy's geometry also carries a Part.GeometryStringExtension MARK, "<feature Name> <piece>":
+# FreeCAD 0.20 gives every geometry a new Tag when a document is opened (they are not saved),
+# so after a reopen the Tags in COPIES named nothing (Copy into added a second copy beside the
+# first, QA20gui F4's overlap again; copies.py measured none); the extension is saved with
+# the sketch and kept by its solver.
+MARK = "ElasticaCopy"
+
+
+def _marked(curve, feature, k):
+    ext = Part.GeometryStringExtension(f"{feature.Name} {k}")
+    ext.Name = MARK
+    curve.setExtension(ext)
+    return curve
+
+
 def earlier_copy(feature, sketch):
     """The indices in ``sketch`` of the feature's earlier copy there (in the order written),
-    or [] (none, or a piece of it deleted since)."""
+    or [] (none, or a piece of it deleted since): by the Tags kept in COPIES, else (a
+    document reopened: new Tags) by the geometry's MARK."""
     tags = [e.split(" ", 1)[1] for e in getattr(feature, COPIES, ())
             if e.split(" ", 1)[0] == sketch.Name]
-    at = {g.Tag: i for i, g in enumerate(sketch.Geometry)}
+    if not tags:
+        return []
+    geometry = sketch.Geometry
+    at = {g.Tag: i for i, g in enumerate(geometry)}
     ids = [at.get(t) for t in tags]
-    return ids if ids and None not in ids else []
+    if ids and None not in ids:
+        return ids
+    pieces = {}
+    for i, g in enumerate(geometry):
+        if g.hasExtensionOfName(MARK):
+            name, _, k = g.getExtensionOfName(MARK).Value.rpartition(" ")
+            if name == feature.Name and k.isdigit():
+                pieces[int(k)] = i
+    ids = [pieces.get(k) for k in range(len(tags))]
+    return ids if len(pieces) == len(tags) and None not in ids else []
 
 
 def _follow_ends(sketch, geometry, ids):
@@ -374,6 +402,8 @@ def _follow_ends(sketch, geometry, ids):
 
 
 def _remember_copy(feature, sketch, ids):
+    # its CopyWatch (registered on import) measures the copies as their sketch recomputes
+    importlib.import_module(".copies", __package__)
     if COPIES not in feature.PropertiesList:
         feature.addProperty("App::PropertyStringList", COPIES, "Output",
                             "The sketch geometry of the last copy into each sketch (a copy "

@@ -454,6 +454,8 @@ class FeatureProxy:
         try:
             msg = self._outcome(obj)
             if msg is None:
+                from .copies import say_drift
+                say_drift(obj)            # its copies in sketches still its curve? (QA22gui F1)
                 return
             report(obj, msg)
             self.on_error(obj)

@@ -1,0 +1,154 @@
+"""Whether a feature's copies in sketches (geometry.write_to_sketch, the panels' Copy into)
+are still its curve. A copy does not follow the feature, and the Sketcher's solver bends it
+where it is joined to moved geometry (QA22gui F1: 26.2 mm off the re-solved blend after
+the line it is Tangent to moved; F4: a hook of curvature 2.1/mm where the elastica has
+0.025/mm, from a Tangent and Coincident added in the Sketcher): the feature measures each
+copy on its recompute and says it, without touching the sketch."""
+import FreeCAD as App
+import Part
+
+from .geometry import COPIES, earlier_copy
+
+SAMPLES = 33            # per copy and per feature edge: a few dozen distToShape calls
+OFF = 1e-4              # mm: a copy written is the feature's B-spline (~1e-12 mm off)
+KAPPA_OFF = 1e-3        # relative to the larger end curvature (+ 1e-6/mm)
+NOTE = ". The copy in "  # where a Status's copy note starts (drift_status strips it)
+
+
+def _global(shape, placement):
+    s = shape.copy()
+    s.transformShape(placement.toMatrix())
+    return s
+
+
+def _copy_edges(feature):
+    """{sketch: [copy edges in global coordinates]} of the feature's copies still whole
+    (geometry.earlier_copy: by their Tags, or their mark after a reopen)."""
+    out = {}
+    names = [e.split(" ", 1)[0] for e in getattr(feature, COPIES, ())] \
+        if COPIES in feature.PropertiesList else []
+    for name in dict.fromkeys(names):
+        sk = feature.Document.getObject(name)
+        if sk is None or not hasattr(sk, "Geometry"):
+            continue
+        ids = earlier_copy(feature, sk)
+        if not ids:
+            continue        # deleted since: nothing to measure
+        geometry, gp = sk.Geometry, sk.getGlobalPlacement()
+        out[sk] = [_global(Part.Edge(geometry[i]), gp) for i in ids]
+    return out
+
+
+def _end_kappas(edge):
+    return [edge.curvatureAt(edge.FirstParameter), edge.curvatureAt(edge.LastParameter)]
+
+
+def drift(feature):
+    """[(sketch label, largest distance mm, largest end-curvature difference 1/mm)] of the
+    copies that are no longer the feature's curve: distances both ways on SAMPLES points
+    of each edge, curvature at the copy's ends against the feature's nearest end."""
+    if feature.Shape.isNull() or not feature.Shape.Edges:
+        return []
+    own = feature.Shape.copy()
+    try:        # the Shape is in its container's coordinates (a Body's, a Part's)
+        up = feature.getGlobalPlacement().multiply(feature.Placement.inverse())
+        own.transformShape(up.toMatrix())
+    except (AttributeError, Part.OCCError):
+        pass
+    out = []
+    for sk, edges in _copy_edges(feature).items():
+        copy = Part.Compound(edges)
+        far = 0.0
+        for e in edges:
+            for p in e.discretize(SAMPLES):
+                far = max(far, own.distToShape(Part.Vertex(p))[0])
+        for e in own.Edges:
+            for p in e.discretize(SAMPLES):
+                far = max(far, copy.distToShape(Part.Vertex(p))[0])
+        jump = 0.0
+        ends = [(e.valueAt(t), e.curvatureAt(t)) for e in own.Edges
+                for t in (e.FirstParameter, e.LastParameter)]
+        for e in edges:
+            for t in (e.FirstParameter, e.LastParameter):
+                p = e.valueAt(t)
+                kf = min(ends, key=lambda pk: (pk[0] - p).Length)[1]
+                k = e.curvatureAt(t)
+                if abs(k - kf) > KAPPA_OFF * max(abs(k), abs(kf)) + 1e-6:
+                    jump = max(jump, abs(k - kf))
+        if far > OFF or jump > 0.0:
+            out.append((sk.Label, far, jump))
+    return out
+
+
+def note(found):
+    """The words for drift()'s findings ('' for none), '<number> mm' as units.mm_marked
+    marks them."""
+    from .units import per_length_mark
+    parts = []
+    for label, far, jump in found:
+        t = f"the copy in Sketch '{label}' is {far:.3g} mm off this curve"
+        if jump > 0.0:
+            t += f", its end curvature {per_length_mark(jump)} off"
+        parts.append(t + " (the Sketcher moved it): Copy into again")
+    return "; ".join(parts)
+
+
+def say_drift(obj):
+    """After a recompute that succeeded: each copy measured; those off said in the report
+    view and after the Status ('ok. The copy in ...'); a Status with no copy off loses an
+    earlier note. Reads the sketches only (no recompute of them)."""
+    from .proxy import _said_texts, set_said
+    from .units import mm_marked, say
+    if "Status" not in obj.PropertiesList:
+        return
+    try:
+        found = drift(obj)
+    except Part.OCCError:
+        return
+    marked = _said_texts(obj).get("Status", [None, obj.Status])[1]
+    if not isinstance(marked, str) or marked.startswith("error"):
+        return
+    base = marked.split(NOTE, 1)[0]
+    text = note(found)
+    if text:
+        text = mm_marked(text)
+        if not getattr(getattr(obj, "Proxy", None), "previewing", False):   # as report()
+            App.Console.PrintWarning(f"Elastica {obj.Label}: {say(text)}\n")
+        set_said(obj, "Status", base + NOTE + text[len("the copy in "):])
+    elif base != marked:
+        set_said(obj, "Status", base)
+
+
+class CopyWatch:
+    """A sketch holding a feature's copy recomputed (the designer moved its geometry, added
+    a constraint): the features that do not read that sketch (those that do recompute after
+    it, and their execute measures) measure their copies there and say it, their Status set
+    as by their own recompute (not touched: no recompute follows, the outcome kept)."""
+
+    def slotRecomputedObject(self, obj):
+        if obj.TypeId != "Sketcher::SketchObject":
+            return
+        doc = obj.Document
+        if doc.Restoring or doc.Transacting:
+            return
+        prefix = obj.Name + " "
+        for f in doc.Objects:
+            if COPIES not in f.PropertiesList or \
+                    not any(e.startswith(prefix) for e in getattr(f, COPIES)):
+                continue
+            if obj in f.OutListRecursive or "Touched" in f.State or \
+                    "Invalid" in f.State or "Error" in f.State:
+                continue        # its own recompute follows, or it has no curve to measure
+            proxy = getattr(f, "Proxy", None)
+            was = getattr(proxy, "_executing", False)
+            if proxy is not None:
+                proxy._executing = True      # its result, as its execute sets it (drop_kept)
+            try:
+                say_drift(f)
+            finally:
+                if proxy is not None:
+                    proxy._executing = was
+            f.purgeTouched()
+
+
+App.addDocumentObserver(CopyWatch())        # once: Python imports a module once
