@@ -1,10 +1,19 @@
 """Preference page (Edit > Preferences > Elastica): default B-spline tolerance,
-B-spline degree and fit model, stored under
+smooth fits' B-spline degree and fit model, stored under
 User parameter:BaseApp/Preferences/Mod/Elastica."""
 import FreeCAD as App
 
 from . import PREF_PATH, defaults
 from .fit_core import MODEL_NAMES, MODEL_TIPS, MODELS
+
+
+# The degree is a smooth fit's only (QA22gui F8: at 7 a new fit took 7 and a new blend or
+# spline 5, under a label saying 'B-spline' generally): blends and elastic splines keep
+# their own degree 5, few poles at the tolerance (blend.BSPLINE_DEGREE, spline's)
+DEGREE_LABEL = "Default degree of smooth fits"
+DEGREE_TIP = ("Degree of the B-spline of a new smooth fit (3 to 7). Blends and elastic "
+              "splines start at degree 5, few poles at the tolerance: their Degree property "
+              "sets it")
 
 
 class PreferencePage:
@@ -26,8 +35,8 @@ class PreferencePage:
         layout.addRow("Default B-spline tolerance", self.tol)
         self.degree = QtGui.QSpinBox()
         self.degree.setRange(3, 7)
-        self.degree.setToolTip("Degree of the B-splines of smooth fits (3 to 7)")
-        layout.addRow("Default B-spline degree", self.degree)
+        self.degree.setToolTip(DEGREE_TIP)
+        layout.addRow(DEGREE_LABEL, self.degree)
         self.model = QtGui.QComboBox()
         for i, m in enumerate(MODELS):
             self.model.addItem(MODEL_NAMES[m])
