@@ -284,3 +284,25 @@ class G2QuadTest(S.DocTest):
         del C.MESSAGES[:]
         self.assertIsNone(C.g2quad_sources([(self.sk, ["Edge1"])], open_panel=False, Edges=3))
         self.assertIn("Edges = 6 covers it", C.MESSAGES[-1])
+
+    def test_a_source_too_short_beyond_an_inflection_is_not_a_wrong_selection(self):
+        """QA22gui F6: one open edge selected, and the box said 'Wrong selection ... Select
+        one open edge or sketch curve.': the edge was what the command takes, its end piece
+        beyond an inflection is not. The command's check raises a ShapeProblem, said as
+        such (the toolbar's box titled by the command, no 'Select ...')."""
+        from freecad.elastica.proxy import ShapeProblem
+        said = []
+
+        def wrong(text, selection=True):
+            said.append((text, selection))
+        wrong.shapes = True
+        self.assertIsNone(C.g2quad_sources([(self.sk, ["Edge1"])], open_panel=False, Edges=3,
+                                           wrong=wrong))
+        self.assertEqual(len(said), 1)
+        self.assertIn("Edges = 6 covers it", said[0][0])
+        self.assertFalse(said[0][1])
+        with self.assertRaises(ShapeProblem):
+            Q.g2quad_core(self.sk.Shape.Edges, None, 3)
+        said[:] = []        # a wrong selection still is one
+        C.g2quad_sources([(self.sk, ["Vertex1"])], open_panel=False, wrong=wrong)
+        self.assertEqual([s for _, s in said], [True])

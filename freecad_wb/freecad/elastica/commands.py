@@ -14,7 +14,7 @@ import FreeCADGui as Gui
 from . import defaults, icon, library_problem
 from .kept import checked_call
 from .links import element_as_followed
-from .proxy import InputProblem, abort_transaction, save_note
+from .proxy import InputProblem, ShapeProblem, abort_transaction, save_note
 from .recording import _ref
 from .units import say
 
@@ -40,20 +40,32 @@ def message(text, error=True):
         pass
 
 
-def wrong_selection(text, command="", needs=""):
+def wrong_selection(text, command="", needs="", selection=True):
     """Input a command cannot use, as FreeCAD's own commands say it (Part_RuledSurface,
     the Sketcher's constraints): a modal 'Wrong selection' box, not a red report-view
     line (which popped the report view up); without the GUI a message. The box names the
     command and what it takes (QA21gui F5: "Box.Face1: select edges, not Face1" named
-    neither)."""
+    neither). ``selection`` False: the selection was what the command takes, its shape is
+    not (proxy.ShapeProblem): the box titled by the command, no 'Select ...' (QA22gui F6:
+    'Select one open edge' to a designer who had)."""
     if not App.GuiUp:
         return message(text)
     from PySide import QtGui
     text = _kept(text)
     text = text[:1].upper() + text[1:]
-    if command:
+    if command and selection:
         text = f"{command}: {text}" + (f"\n\nSelect {needs}." if needs else "")
-    QtGui.QMessageBox.warning(Gui.getMainWindow(), "Wrong selection", text)
+    QtGui.QMessageBox.warning(Gui.getMainWindow(),
+                              "Wrong selection" if selection else command or "Elastica", text)
+
+
+def say_wrong(wrong, exc):
+    """An InputProblem said by a command's ``wrong``: a ShapeProblem as not the selection's
+    where ``wrong`` tells them apart (its ``selection`` keyword: _guarded's)."""
+    if isinstance(exc, ShapeProblem) and getattr(wrong, "shapes", False):
+        wrong(str(exc), selection=False)
+    else:
+        wrong(str(exc))
 
 
 def _guarded(command, menu="", needs=""):
@@ -64,8 +76,10 @@ def _guarded(command, menu="", needs=""):
         message(problem)
         return None
     try:
-        return command(selection_sources(),
-                       wrong=lambda text: wrong_selection(text, menu, needs))
+        def wrong(text, selection=True):
+            wrong_selection(text, menu, needs, selection)
+        wrong.shapes = True             # a ShapeProblem said as such (say_wrong)
+        return command(selection_sources(), wrong=wrong)
     except Exception as exc:
         message(f"{type(exc).__name__}: {exc}")
         return None
@@ -147,7 +161,7 @@ def _check_and_create(title, what, check, code, open_panel, wrong=message, prepa
     try:
         note = check()
     except InputProblem as exc:
-        wrong(str(exc))
+        say_wrong(wrong, exc)
         return None
     except Exception as exc:  # anything unexpected: report, never escape
         message(f"{what} failed: {type(exc).__name__}: {exc}")

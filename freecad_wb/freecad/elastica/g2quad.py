@@ -15,8 +15,8 @@ import Part
 from .containers import set_shape
 from .geometry import bspline_edges, el, np, plane_coordinates, plane_curvature, to_3d
 from .links import followed_reader
-from .proxy import (FeatureProxy, InputProblem, add_geometry_index, add_link, add_property,
-                    new_feature, read_only, set_said, source_list)
+from .proxy import (FeatureProxy, InputProblem, ShapeProblem, add_geometry_index, add_link,
+                    add_property, new_feature, read_only, set_said, source_list)
 from .sources import gather_edges, sample_chain
 from .units import length_mark
 
@@ -44,11 +44,14 @@ def g2quad_core(edges, plane=None, nedges=24):
         # the binding's search (el.g2_quadratic's CoverageError's), the chain sampled per count
         more = el().covering_edges(lambda m: _g2quad(edges, plane, m)[0], n,
                                    errors=(InputProblem,))
-        raise InputProblem(f"Edges = {n} leaves out {gone} of the source beyond an inflection "
+        ends = " and ".join(f"{length_mark(d, 4)} from its {w}"
+                            for d, w in zip(g.dropped, ("start", "end")) if d > 0)
+        raise ShapeProblem(f"Edges = {n} leaves out {gone} of the source beyond an inflection "
                            "(too short for 3 edges): " + (
                                f"Edges = {more} covers it" if more else
                                f"none up to Edges = {el().g2quad.cover_search_limit(n)} tried "
-                               "covers it"))
+                               f"covers it: the source has an inflection {ends}; trim that "
+                               "end of it, or pick a curve without it"))
     return {"result": g, "placement": plane}
 
 

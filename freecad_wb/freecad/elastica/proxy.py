@@ -32,6 +32,13 @@ class InputProblem(ValueError):
     """Unusable input for a feature (a message for the user, not a bug)."""
 
 
+class ShapeProblem(InputProblem):
+    """Input selected as the command asks whose shape the feature cannot take (a G2
+    quadratic's end piece beyond an inflection too short for its edges): a command says
+    it under its own name, not as a 'Wrong selection' asking to select what was selected
+    (QA22gui F6)."""
+
+
 class RecomputeError(App.Base.FreeCADError):
     """A feature's failed recompute, raised to FreeCAD (FeatureProxy.execute)."""
 
