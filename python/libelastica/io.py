@@ -71,7 +71,7 @@ def _split_fields(lines, delim: Optional[str], name: str) -> list:
     (a field past its size limit: no point file's) as InputError naming the line."""
     if not delim:
         return [line.split() for line in lines]
-    reader = csv.reader(lines, delimiter=delim)
+    reader = csv.reader(lines, delimiter=delim, skipinitialspace=delim == " ")
     try:
         return list(reader)
     except csv.Error as exc:
@@ -105,6 +105,9 @@ def _parse_text(text: str, name: str, thousands: Optional[str] = None) -> np.nda
         delim = ","
     elif '"' in sample and "\t" in sample:
         delim = "\t"       # quoted fields between tabs ("1.5"<TAB>"2.5"): csv's quoting
+    elif '"' in sample and all(ln.count('"') % 2 == 0 for ln in data_lines[:20]):
+        delim = " "        # and between spaces (pandas' sep=' ', QUOTE_ALL; csv's
+        #                    skipinitialspace reads a run of spaces as one separator)
     # csv's quoting rules: a quoted field keeps its commas ("102,697" from a spreadsheet
     # that writes decimal commas with ',' between the columns); lines end at any line end
     # (CR alone: classic Mac and some instruments' exports)
@@ -155,7 +158,7 @@ def _parse_text(text: str, name: str, thousands: Optional[str] = None) -> np.nda
         # '1.5 2.5' among '1.5,2.5' rows: the separator, not an empty cell (QA17 P2)
         spaced = [ln for ln, f in rows if len(f) == 1 and len(f[0].split()) > 1
                   and all(map(_is_number, f[0].split()))]
-        if delim and spaced:
+        if delim not in (None, " ") and spaced:
             sep = {"\t": "tabs"}.get(delim, f"'{delim}'")
             raise InputError(f"{name}: line {spaced[0]}: mixed separators: {len(spaced)} of "
                              f"{len(rows)} rows separate their columns by spaces, the others "
@@ -307,39 +310,48 @@ def _comma_thousands(split, delim, thousands: Optional[str], name: str) -> bool:
     ``split`` ((line, fields) rows: the coordinate columns' alone, :func:`_coordinate_fields`).
     ``thousands``: ',' yes, '.' or '' no (a comma is then a decimal comma), None: what the
     whole file shows, where some field has the grouped form (_EN_GROUPED): no when some field
-    has a comma the grouping cannot write (1,5, 0,25, 1,2500, 1.250,5); else yes when some
+    has a comma the grouping cannot write (1,5, 0,25, 1,2500, 1.250,5; InputError where
+    another field is one only the grouping writes: 1,250.5 beside 1,5); else yes when some
     field has a decimal point after its groups or two groups (1,250.5, 1,234,567: only the
     grouping writes them), or some number has a decimal point that '.' grouping cannot write
     (0.5, 1234.5: the file's decimal separator is '.'), or a column holds both plain integers
     and 1,250's that grouping reads nearer each other (980 above 1,000: _grouped_nearer);
     no when some integer 1000 or more has no comma. Else every comma is written d,ddd ..
     ddd,ddd, as both English thousands and a decimal comma with 3 decimals write them
-    (QA: a tab export's 1,250 read as 1.25, silently): tab separated files are refused
-    naming the line, the two readings differing by 1000; space separated ones read
-    decimal commas, as before. In ';' separated files and quoted between ','
-    (the decimal-comma locales' own) only a 1,250.5 or 1,234,567 reads grouped."""
+    (QA: a tab export's 1,250 read as 1.25, silently): refused naming the line, the two
+    readings differing by 1000, whether tabs, spaces (Excel's space delimited .prn writes
+    #,##0 as shown) or ',' (quoted: "1,250","2,000" is an English CSV's #,##0 as much as a
+    German one's 3 decimals) separate the columns. ';' separated files (the decimal-comma
+    locales' own) read grouped only where a 1,250.5 or 1,234,567 shows it."""
     if thousands is not None:
         return thousands == ","
     first = next(((ln, f) for ln, r in split for f in r if _EN_GROUPED.fullmatch(f)), None)
     if first is None:
         return False
-    plain_cols, grouped_cols, only, point, big = set(), set(), False, False, False
-    for _, r in split:
+    plain_cols, grouped_cols, only, point, big, comma = set(), set(), None, False, False, None
+    for ln, r in split:
         for c, f in enumerate(r):
             if _EN_ONLY.fullmatch(f):
-                only = True                         # 1,250.5, 1,234,567
+                only = only or (ln, f)              # 1,250.5, 1,234,567
             elif _EN_GROUPED.fullmatch(f):
                 grouped_cols.add(c)                 # 1,250
             elif "," in f and (_DECIMAL_COMMA.fullmatch(f) or _GROUPED.fullmatch(f)):
-                return False                        # 1,5, 0,25, 1.250,5
+                comma = comma or (ln, f)            # 1,5, 0,25, 1.250,5
             elif _INTEGER.fullmatch(f):
                 big = big or abs(int(f)) >= 1000    # #,##0 would write 1,000
                 plain_cols.add(c)
             elif _is_number(f) and "." in f and not _GROUPED.fullmatch(f):
                 point = True                        # a decimal point: 0.5, 1234.5
+    if comma and only:
+        raise InputError(
+            f"{name}: line {only[0]}: not a number: {only[1]!r}: ',' groups its thousands "
+            f"(English #,##0.00) where line {comma[0]}'s {comma[1]!r} is a decimal comma, "
+            "which decides the file's commas; one file writes its numbers one way")
+    if comma:
+        return False
     if only:
         return True
-    if delim not in ("\t", None):      # ';', or quoted between ',': decimal commas but there
+    if delim == ";":                    # decimal commas but there
         return False
     if point:
         return True
@@ -347,8 +359,6 @@ def _comma_thousands(split, delim, thousands: Optional[str], name: str) -> bool:
         return False
     if any(_grouped_nearer(split, c) for c in plain_cols & grouped_cols):
         return True
-    if delim is None:                   # spaces: decimal commas, as before (test_cli)
-        return False
     ln, f = first
     comma, grouped = float(f.replace(",", ".")), int(f.replace(",", ""))
     raise InputError(
@@ -390,9 +400,8 @@ def _decimal_commas_between(lines, sep) -> bool:
     def commas(f):      # 1,5; 1,250.5 (English thousands); 1.250,5 ('.' thousands)
         return bool(_DECIMAL_COMMA.fullmatch(f) or _EN_GROUPED.fullmatch(f)
                     or ("," in f and _GROUPED.fullmatch(f)))
-    # (fields quoted between tabs: "1,5"<TAB>"2,5")
-    rows = [[f.strip().strip('"') if sep else f.strip() for f in ln.split(sep) if f.strip()]
-            for ln in lines]
+    # (fields quoted between tabs or spaces: "1,5"<TAB>"2,5", "1,5" "2,5")
+    rows = [[f.strip().strip('"') for f in ln.split(sep) if f.strip()] for ln in lines]
     while rows and not any(map(numeric, rows[0])):
         rows = rows[1:]                                   # a title, a header
     if not rows or any(len(r) < 2 for r in rows):
@@ -497,10 +506,11 @@ def read_points(path: PathLike, min_points: int = 3, data: Optional[bytes] = Non
     ``#,##0``: ``1,250.5`` is 1250.5), read so where the file shows it (a ``1,250.5``, a
     ``1,234,567``, a ``0.5`` beside a ``1,250``, a column holding both ``980`` and
     ``1,000``); a comma the grouping cannot write (``1,5``) or a ``1250`` without one
-    reads decimal commas; a tab file whose every comma is ``d,ddd`` is refused naming the
-    line (space separated: decimal commas, as before; ';': only a ``1,250.5`` or
+    reads decimal commas; a file whose every comma is ``d,ddd`` is refused naming the
+    line, between tabs, spaces or (quoted) commas (';': only a ``1,250.5`` or
     ``1,234,567`` reads grouped). ``thousands=','`` reads commas as grouping, whatever the
-    file (and ``'.'`` or ``''`` a comma as a decimal comma).
+    file (and ``'.'`` or ``''`` a comma as a decimal comma). Fields may be quoted between
+    commas, tabs or spaces (``"1.5" "2.5"``).
     """
     name = "standard input" if str(path) == "-" else str(path)
     data = read_input(path) if data is None else data

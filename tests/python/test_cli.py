@@ -199,7 +199,9 @@ def test_read_points_with_quoted_or_spaced_decimal_commas(capsys, tmp_path):
     number in '102,697,4,576'', the fields joined again, QA), and a space-separated export
     writes them bare: both read, by read_points and by `elastica fit`. Unquoted decimal
     commas between commas are ambiguous: refused, the message saying so; a field that is
-    no number is named as read."""
+    no number is named as read. Every number of these is written d,ddd (3 decimals), as
+    English thousands (#,##0) also write them: the user says which (--thousands none),
+    as for a tab file (test_read_comma_thousands.py)."""
     pts = np.array([[102.697, 4.576], [98.1, 15.2], [90.3, 25.9], [79.9, 35.1],
                     [66.0, 43.3], [50.2, 49.6], [33.4, 53.4], [16.0, 55.2]])
     files = {
@@ -208,8 +210,12 @@ def test_read_points_with_quoted_or_spaced_decimal_commas(capsys, tmp_path):
     }
     for name, text in files.items():
         (tmp_path / name).write_text(text)
-        np.testing.assert_array_equal(read_points(tmp_path / name), pts, err_msg=name)
-        r = cli(capsys, "fit", tmp_path / name, "--json", tmp_path / "f.json")
+        with pytest.raises(InputError, match="'102,697' is 102.697 or 102697"):
+            read_points(tmp_path / name)
+        np.testing.assert_array_equal(read_points(tmp_path / name, thousands=""), pts,
+                                      err_msg=name)
+        r = cli(capsys, "fit", tmp_path / name, "--thousands", "none", "--json",
+                tmp_path / "f.json")
         assert r.returncode == 0, (name, r.stderr)
         assert json.loads((tmp_path / "f.json").read_text())["rms"] < 1.0, name
     (tmp_path / "bare.csv").write_text("x,y\n" + "".join(f"{x:.3f},{y:.3f}\n".replace(".", ",")

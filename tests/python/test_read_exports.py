@@ -32,7 +32,7 @@ def test_tab_export_with_decimal_commas_beside_a_text_column(tmp_path):
     LibreOffice's tab CSV with a date column: read before as split at the commas ('not a
     number: 'P1\\t140''). Their every number is written d,ddd (3 decimals, 60 .. 140), as
     English thousands (#,##0) also write them: the user says which (thousands='', --thousands
-    none: test_read_comma_thousands.py) between tabs; between spaces they read as before."""
+    none: test_read_comma_thousands.py), between tabs and between spaces."""
     names = _write(tmp_path, "names.txt", "Punkt\tx (L\xe4nge)\ty (H\xf6he)\r\n" + "".join(
         f"P{i + 1}\t{_dc(x)}\t{_dc(y)}\r\n" for i, (x, y) in enumerate(PTS)), "cp1252")
     with pytest.raises(InputError, match=r"line 2: '140,000' is 140\.0 or 140000: .*"
@@ -45,7 +45,9 @@ def test_tab_export_with_decimal_commas_beside_a_text_column(tmp_path):
     # the name last, and spaces between the columns
     last = _write(tmp_path, "last.txt", "x y Punkt\n" + "".join(
         f"{_dc(x)} {_dc(y)} P{i}\n" for i, (x, y) in enumerate(PTS)))
-    assert np.array_equal(read_points(last), WANT)
+    with pytest.raises(InputError, match=r"line 2: '140,000' is 140\.0 or 140000"):
+        read_points(last)
+    assert np.array_equal(read_points(last, thousands=""), WANT)
 
 
 def test_a_text_column_without_a_header_is_named(tmp_path):
