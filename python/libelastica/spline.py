@@ -279,8 +279,11 @@ HOLD_MULTIPLES = (1, 2, 5, 10, 20, 50, 100, 200, 500, 1000)
 
 def ladder_words(shown: int = 1) -> str:
     """HOLD_MULTIPLES in words, for every text naming them (none types them): its first
-    ``shown``, ', '-joined, then '..' and its last."""
+    ``shown``, ', '-joined, then '..' and its last; all of them ', '-joined where that
+    leaves none out (the last said twice before: '... 1000 .. 1000')."""
     words = [f"{m:g}" for m in HOLD_MULTIPLES]
+    if shown >= len(words) - 1:
+        return ", ".join(words)
     return ", ".join(words[:shown]) + " .. " + words[-1]
 
 

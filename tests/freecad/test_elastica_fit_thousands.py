@@ -106,7 +106,7 @@ class FitThousandsTest(S.DocTest):
             fh.write("".join(f"{1000 + 10 * x:,}\t{2000 + x * x:,}\n" for x in XS))
         f = Fi.make(self.doc, [], csv_file=path, Model="smooth")
         self.doc.recompute()
-        self.assertTrue(f.Status.startswith("error") and "Thousands property: . , or none"
+        self.assertTrue(f.Status.startswith("error") and "Thousands property: '.', ',' or none"
                         in f.Status and "'1,010' is 1.01 or 1010" in f.Status, f.Status)
         f.Thousands = ","
         self.doc.recompute()

@@ -127,6 +127,9 @@ def test_the_ladder_is_said_from_its_list(capsys, tmp_path, monkeypatch):
 
     import libelastica.spline as spline
     assert (spline.ladder_words(), spline.ladder_words(4)) == ("1 .. 1000", "1, 2, 5, 10 .. 1000")
+    n = len(spline.HOLD_MULTIPLES)      # all shown: each once, no '..' (revsmall finding 10)
+    every = ", ".join(f"{m:g}" for m in spline.HOLD_MULTIPLES)
+    assert [spline.ladder_words(s) for s in (n - 1, n, n + 5)] == [every] * 3
     assert f"tries {spline.ladder_words()} / polygon^2" in spline.SMALL_TENSION_TEXT
     monkeypatch.setattr(spline, "HOLD_MULTIPLES", (3, 30, 300))
     path = tmp_path / "needle.csv"

@@ -75,7 +75,7 @@ def sample_edges(edges, samples_per_edge):
 
 # a CSV fit's Thousands property: its values and read_points' thousands for each
 THOUSANDS = {"auto": None, ".": ".", "none": "", ",": ","}
-THOUSANDS_HINT = "(the fit's Thousands property: . , or none)"
+THOUSANDS_HINT = "(the fit's Thousands property: '.', ',' or none)"
 _CLI_THOUSANDS = re.compile(r"\(command line: --thousands[^()]*(\([^()]*\)[^()]*)*\)")
 
 
