@@ -6,7 +6,7 @@ import unittest
 import FreeCAD as App
 
 import elastica_samples as S
-from freecad.elastica import blend as Bl, ellblend as El, spline as Sp
+from freecad.elastica import blend as Bl, blend_start as Bs, ellblend as El, spline as Sp
 from freecad.elastica.proxy import said
 from freecad.elastica.units import say
 
@@ -36,7 +36,7 @@ class SaidNotesTest(S.DocTest):
         sk = S.line_and_arc_sketch(self.doc)
         e1, e2 = sk.Shape.Edges
         a, b = Bl.nearest_ends(e1, e2)
-        length, note = Bl.free_or_length(e1, a, e2, b)
+        length, note = Bs.free_or_length(e1, a, e2, b)
         self.assertEqual(length, 112.0)
         self.assertIn("solved for a length instead, 112 mm (1.5 \u00d7 the 75 mm between",
                       say(note))

@@ -371,7 +371,7 @@ def blend_sources(sources, open_panel=True, picks=None, wrong=message):
     """Check two selected edges, create the Blend feature (recorded), open its panel.
     ``picks``: {(object name, subname): point clicked} (selection_picks): each edge is
     left at its end nearer the click (blend.chosen_ends); without: the nearest ends."""
-    from . import blend
+    from . import blend, blend_start
     from .geometry import is_sketch
     doc = _doc()
     if doc is None:
@@ -392,7 +392,7 @@ def blend_sources(sources, open_panel=True, picks=None, wrong=message):
 
     def check():
         """The free batten (the default); where none joins the ends (good ends all the
-        same), a length that gives blends (blend.starting_length): the feature is made
+        same), a length that gives blends (blend_start.starting_length): the feature is made
         by it and its panel opens, where the designer changes it. The blend solved is the
         new feature's first recompute's (``checked``: handed)."""
         e1, e2 = element_as_followed(*edges[0]), element_as_followed(*edges[1])
@@ -404,7 +404,7 @@ def blend_sources(sources, open_panel=True, picks=None, wrong=message):
         plane = None
         if edges[0][0] == edges[1][0] and is_sketch(edges[0][0]):
             plane = edges[0][0].getGlobalPlacement()
-        start = blend.free_or_length(e1, a, e2, b, plane, hand=checked)
+        start = blend_start.free_or_length(e1, a, e2, b, plane, hand=checked)
         if start is None:
             return None
         opts.update(Mode="length", Length=start[0])

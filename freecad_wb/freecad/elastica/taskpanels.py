@@ -12,6 +12,7 @@ import FreeCADGui as Gui
 from PySide import QtGui
 
 from . import blend as B
+from . import blend_start as BS
 from . import ellblend as E
 from . import spline as Sp
 from .fit_core import DISTANCE_NAMES, DISTANCES, MODEL_NAMES, MODEL_TIPS, MODELS
@@ -319,7 +320,7 @@ class BlendPanel(Panel):
 
     def ends_changed(self):
         """New ends, as the command starts: the free batten where one joins them, else a
-        length (blend.free_or_length, said on the warning line); only where the free batten
+        length (blend_start.free_or_length, said on the warning line); only where the free batten
         was asked (Tension 0) or the length shown is the one chosen so (not the user's)."""
         o = self.obj
         auto = o.Mode == "length" and self.auto is not None and float(o.Length) == self.auto
@@ -333,14 +334,14 @@ class BlendPanel(Panel):
     free = False        # the last free_or_length found the free batten
 
     def start_by_length(self):
-        """Length mode at blend.free_or_length's length where no free batten joins the
+        """Length mode at blend_start.free_or_length's length where no free batten joins the
         ends (True), the reason on the warning line; False where the free batten exists
         (self.free) or the ends are bad (the solve says why)."""
         o = self.obj
         self.free, hand = False, []
         try:
             e1, e2 = o.Proxy.ends(o)
-            start = B.free_or_length(e1, o.AtEnd1, e2, o.AtEnd2, o.Proxy.sketch_plane(o),
+            start = BS.free_or_length(e1, o.AtEnd1, e2, o.AtEnd2, o.Proxy.sketch_plane(o),
                                      hand=hand)
         except Exception:       # bad ends or none found: the feature's Status says it
             return False

@@ -1,0 +1,113 @@
+"""Where an Elastic blend starts when the free batten (tension 0) is not the blend to show:
+no free batten joins the ends (G1: starting_length, what the command and the panel start
+by, free_or_length), or the free G2 batten is a snake (fairer_than_free, g2_blend's): by
+length at the fairest of LENGTH_MULTIPLES times the distance between the ends, and said."""
+from __future__ import annotations
+
+from .blend import NoBlend, bending_energy, blend_core, describe, inflections, plural
+from .geometry import edge_end, el, np
+from .kept import checked_call
+from .units import length_mark, per_length_mark
+
+
+# Where the free batten (tension 0) does not exist (its bending energy falls without end
+# as the curve gets longer: no length is the batten's own), the Elastic blend command
+# starts by length at the fairest of these multiples of the distance between the ends.
+LENGTH_MULTIPLES = (1.25, 1.5, 2.0, 3.0)
+
+
+def starting_length(e0, at_end0, e1, at_end1, plane=None, hand=None):
+    """A length to start a blend by, where the free batten does not join the ends: of
+    LENGTH_MULTIPLES times their distance (3 digits), the one whose lowest-energy solution
+    is the fairest, loop-free first, then by its bending energy times its length (the
+    energy of its shape whatever its size). Returns (length, note for the user); raises
+    NoBlend when no such length has a solution. ``hand``: as free_or_length's."""
+    dist = (edge_end(e1, at_end1)[0] - edge_end(e0, at_end0)[0]).Length
+    best = None
+    for m in LENGTH_MULTIPLES:
+        length = float(f"{m * dist:.3g}")
+        try:
+            checked = checked_call(blend_core, e0, at_end0, e1, at_end1, plane, "length", length)
+        except NoBlend:
+            continue
+        c = checked[1]["curves"][0]
+        key = (describe(c)[1] > 0, bending_energy(c) * length)
+        if best is None or key < best[0]:
+            best = (key, m, length, checked)
+    if best is None:
+        raise NoBlend("no elastic curve joins these ends, free or at "
+                      f"{', '.join(f'{m:g}' for m in LENGTH_MULTIPLES)} times their distance")
+    _, m, length, checked = best
+    if hand is not None:
+        hand.append(checked)
+    return length, (f"no free batten (tension 0) joins these ends: solved for a length "
+                    f"instead, {length_mark(length, 6)} ({m:g} \u00d7 the {length_mark(dist, 4)} "
+                    "between them, the "
+                    f"fairest of {LENGTH_MULTIPLES[0]:g} to {LENGTH_MULTIPLES[-1]:g} \u00d7); "
+                    "change it, or solve for a tension > 0")
+
+
+def free_or_length(e0, at_end0, e1, at_end1, plane=None, hand=None):
+    """None where the free batten (tension 0) joins the ends; else starting_length's
+    (length, note): what the Elastic blend command and its panel start by. ``hand``: a list
+    given the blend solved (kept.checked_call), for the feature's next recompute
+    (FeatureProxy.handed): solved once."""
+    try:
+        checked = checked_call(blend_core, e0, at_end0, e1, at_end1, plane)
+    except NoBlend:
+        return starting_length(e0, at_end0, e1, at_end1, plane, hand)
+    if hand is not None:
+        hand.append(checked)
+    return None
+
+
+def fairer_than_free(pts, ends, sibling, free):
+    """Where the free G2 batten ``free`` (tension 0, bent from the G1 solution ``sibling``,
+    None: the library's own start) between the two points ``pts`` with ``ends`` has more
+    inflections than ``sibling``: the G2 blend by length at the fairest of LENGTH_MULTIPLES
+    times the distance (3 digits; bent from ``sibling`` as a blend by length is), when it
+    has fewer inflections than ``free`` and a lower bending energy times length; returns
+    (el.ElasticSpline, note for Status), else None (the free batten is the blend).
+
+    Why (QA22gui F5: a line into an arc of radius 25 mm, ends 168 mm apart): the G2 blend
+    bent from the 1-inflection G1 batten stays on a 2-inflection family whose tension
+    never reaches 0 (by length 200 -> 335 mm its tension falls from 0.0084 to 0.00036/mm^2
+    near 245 mm and rises again, its bending energy rises 0.090 -> 0.153/mm): that family
+    has no free member, and the only tension-0 equilibrium the solver reaches is on the
+    4-inflection family, a 284 mm snake of bending energy 0.529/mm (energy x length 150,
+    against 20 for the same family's 210 mm, 1.25 x): a stationary point no batten laid by
+    hand between these ends would take. As where no free G1 batten exists
+    (starting_length), a length at the fairest multiple is the start, and said."""
+    n, e = np(), el()
+    # (a Hermite chain near the separatrix: no single-piece start, as g2_blend's)
+    if not isinstance(sibling, e.SmoothElastica) or \
+            inflections(free.pieces) <= len(e.elastica_inflections(sibling)):
+        return None
+    dist = float(n.linalg.norm(pts[1] - pts[0]))
+    best = None
+    for m in LENGTH_MULTIPLES:
+        length = float(f"{m * dist:.3g}")
+        try:
+            sp = e.elastic_spline(pts, **ends, length=length, initial=[sibling])
+        except (ValueError, ArithmeticError, RuntimeError):
+            continue
+        key = (inflections(sp.pieces), float(sp.energy) * float(sp.length))
+        if best is None or key < best[0]:
+            best = (key, m, sp)
+    free_infl = inflections(free.pieces)
+    if best is None or best[0][0] >= free_infl or \
+            best[0][1] >= float(free.energy) * float(free.length):
+        return None
+    (infl, _), m, sp = best
+    return sp, (f" (the free G2 batten (tension 0) here is a snake of "
+                f"{plural(free_infl, 'inflection')}, {length_mark(free.length, 4)} long, "
+                f"bending energy {per_length_mark(free.energy)}: more inflections than "
+                f"this G1 solution's {len(e.elastica_inflections(sibling))}, "
+                f"the only tension-0 G2 batten found, so solved for a length instead, "
+                f"{length_mark(sp.length, 6)} ({m:g} \u00d7 the {length_mark(dist, 4)} "
+                f"between the ends, the fairest of {LENGTH_MULTIPLES[0]:g} to "
+                f"{LENGTH_MULTIPLES[-1]:g} \u00d7, {plural(infl, 'inflection')}): give a "
+                "length or a tension > 0 to change it)")
+
+
+__all__ = ["LENGTH_MULTIPLES", "starting_length", "free_or_length", "fairer_than_free"]
