@@ -67,6 +67,21 @@ class BlendG2FairTest(unittest.TestCase):
         self.assertAlmostEqual(b.BlendLength, 210.0, delta=1e-6)
         self.assert_g2(sk, b)
 
+    def test_radius_24_no_free_g2_batten_is_the_fair_blend_not_an_error(self):
+        """Between R 25 and R 23 (both the fair 210 mm blend) the free G2 solve fails: R 24
+        read "error: no G2 blend at tension 0 1/mm² (the batten's solve did not
+        converge)" though the same fair blend by length exists: dragging the radius gave
+        blend, error, blend."""
+        sk, b = self.chain(24.0)
+        self.assertFalse(b.Status.startswith("error"), b.Status)
+        self.assertEqual((b.Mode, b.Tension), ("tension", 0.0))
+        self.assertIn("no free G2 batten (tension 0) was found here", b.Status)
+        self.assertIn("solved for a length instead, 210 mm (1.25 ×", b.Status)
+        self.assertIn(", 2 inflections", b.Status.split(";")[-2])
+        self.assertAlmostEqual(b.BlendLength, 210.0, delta=1e-6)
+        self.assertGreater(b.BlendTension, 0.0)
+        self.assert_g2(sk, b)
+
     def test_radius_40_free_batten_stays(self):
         sk, b = self.chain(40.0)
         self.assertIn("(free batten)", b.Status)

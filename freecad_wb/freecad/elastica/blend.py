@@ -214,6 +214,13 @@ def g2_blend(r, i, mode, value, tol, degree):
             if sibling is not None:
                 note = f" (solution {i + 1} did not bend to G2: from the library's own start)"
     except (ValueError, ArithmeticError, RuntimeError) as exc:
+        from .blend_start import fair_where_no_free   # (blend_start builds on this module)
+        # the free batten asked and none found: the fairest by length, as for a snake below
+        fair = fair_where_no_free(pts, ends, r["curves"][i] if r["curves"] else None) \
+            if kw == {"tension": 0.0} else None
+        if fair is not None:
+            sp, note = fair
+            return sp, g2_bspline(sp, tol, degree), note
         dist = float(n.linalg.norm(a1 - a0))
         asked = (f"of length {length_mark(value, 6)}" if "length" in kw else
                  f"at tension {tension_mark(kw['tension'], dist, G2_TENSION_DIGITS)}")
@@ -234,8 +241,13 @@ def g2_blend(r, i, mode, value, tol, degree):
         fair = fairer_than_free(pts, ends, r["curves"][i] if r["curves"] else None, sp)
         if fair is not None:
             sp, note = fair
+    return sp, g2_bspline(sp, tol, degree), note
+
+
+def g2_bspline(sp, tol, degree):
+    """The G2 blend ``sp``'s B-spline, or InputProblem."""
     try:
-        return sp, sp.to_bspline(tol, degree), note
+        return sp.to_bspline(tol, degree)
     except (ValueError, ArithmeticError, RuntimeError) as exc:
         raise InputProblem(f"B-spline failed: {exc}") from None
 

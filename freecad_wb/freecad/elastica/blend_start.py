@@ -61,6 +61,58 @@ def free_or_length(e0, at_end0, e1, at_end1, plane=None, hand=None):
     return None
 
 
+def fairest_by_length(pts, ends, sibling):
+    """The G2 blend between the two points ``pts`` with ``ends`` by length at the fairest of
+    LENGTH_MULTIPLES times their distance (3 digits), bent from the G1 solution ``sibling``
+    (a SmoothElastica) as a blend by length is: fewest inflections, then the lowest bending
+    energy times length. Returns ((inflections, energy x length), multiple, el.ElasticSpline),
+    or None where no length solves."""
+    n, e = np(), el()
+    dist = float(n.linalg.norm(pts[1] - pts[0]))
+    best = None
+    for m in LENGTH_MULTIPLES:
+        length = float(f"{m * dist:.3g}")
+        try:
+            sp = e.elastic_spline(pts, **ends, length=length, initial=[sibling])
+        except (ValueError, ArithmeticError, RuntimeError):
+            continue
+        key = (inflections(sp.pieces), float(sp.energy) * float(sp.length))
+        if best is None or key < best[0]:
+            best = (key, m, sp)
+    return best
+
+
+def fair_where_no_free(pts, ends, sibling):
+    """Where the free G2 batten (tension 0) between ``pts`` with ``ends`` was not found (its
+    solve from the G1 solution ``sibling`` and from the library's own start failed):
+    fairest_by_length's blend, as where it is a snake (fairer_than_free), where it has at
+    most one inflection more than ``sibling`` and is not pushed together; returns
+    (el.ElasticSpline, note for Status), else None (g2_blend's error stands).
+
+    Why: the QA22gui F5 chain (a line into an arc, ends 168 mm apart) has the fair 210 mm
+    blend at arc radius 23 mm and 25 mm (the free batten a snake there) but no free G2 batten
+    found at 23.5 to 24.5 mm: the default G2 blend read "no G2 blend at tension 0", so a
+    designer dragging the radius saw blend, error, blend."""
+    n, e = np(), el()
+    if not isinstance(sibling, e.SmoothElastica):
+        return None
+    best = fairest_by_length(pts, ends, sibling)
+    if best is None:
+        return None
+    (infl, _), m, sp = best
+    # a fair blend only: at most one inflection more than the G1 solution it is bent from
+    # (the QA chain's: 1 -> 2), not pushed together (tension < 0); sweeps of random line/arc
+    # ends also gave 3-5 inflections up to 3 x the distance, no default: the error stands
+    if infl > len(e.elastica_inflections(sibling)) + 1 or float(sp.tension) < 0.0:
+        return None
+    dist = float(n.linalg.norm(pts[1] - pts[0]))
+    return sp, (f" (no free G2 batten (tension 0) was found here: solved for a length "
+                f"instead, {length_mark(sp.length, 6)} ({m:g} \u00d7 the "
+                f"{length_mark(dist, 4)} between the ends, the fairest of "
+                f"{LENGTH_MULTIPLES[0]:g} to {LENGTH_MULTIPLES[-1]:g} \u00d7, "
+                f"{plural(infl, 'inflection')}): give a length or a tension > 0 to change it)")
+
+
 def fairer_than_free(pts, ends, sibling, free):
     """Where the free G2 batten ``free`` (tension 0, bent from the G1 solution ``sibling``,
     None: the library's own start) between the two points ``pts`` with ``ends`` has more
@@ -84,16 +136,7 @@ def fairer_than_free(pts, ends, sibling, free):
             inflections(free.pieces) <= len(e.elastica_inflections(sibling)):
         return None
     dist = float(n.linalg.norm(pts[1] - pts[0]))
-    best = None
-    for m in LENGTH_MULTIPLES:
-        length = float(f"{m * dist:.3g}")
-        try:
-            sp = e.elastic_spline(pts, **ends, length=length, initial=[sibling])
-        except (ValueError, ArithmeticError, RuntimeError):
-            continue
-        key = (inflections(sp.pieces), float(sp.energy) * float(sp.length))
-        if best is None or key < best[0]:
-            best = (key, m, sp)
+    best = fairest_by_length(pts, ends, sibling)
     free_infl = inflections(free.pieces)
     if best is None or best[0][0] >= free_infl or \
             best[0][1] >= float(free.energy) * float(free.length):
@@ -110,4 +153,5 @@ def fairer_than_free(pts, ends, sibling, free):
                 "length or a tension > 0 to change it)")
 
 
-__all__ = ["LENGTH_MULTIPLES", "starting_length", "free_or_length", "fairer_than_free"]
+__all__ = ["LENGTH_MULTIPLES", "starting_length", "free_or_length", "fairest_by_length",
+           "fair_where_no_free", "fairer_than_free"]
