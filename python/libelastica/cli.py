@@ -310,6 +310,10 @@ def cmd_blend(args) -> int:
 
 # ------------------------------------------------------------------ spline
 
+def _cli_tension(t) -> str:
+    return f"--tension {t:.3g}"
+
+
 def cmd_spline(args) -> int:
     import libelastica as el
     from .io import bspline_to_dict
@@ -339,14 +343,16 @@ def cmd_spline(args) -> int:
             raise
         raise el.DomainError(exc.status, holding_advice(str(exc), pts, ends, args.closed)) from None
     if sp.loops:
-        fix = (f"at tension {sp.tension:.6g}: give a larger --tension or a --length"
+        fix = (f"at tension {sp.tension:.6g}: " + ("give " if sp.holding()[0] is not None else "")
+               + sp.holding_text(_cli_tension, "a --length")   # the ladder, solved once
                if args.length is None else f"of length {args.length:g} (tension "
                f"{sp.tension:.6g}): a shorter --length gives one")
         print(f"warning: the spline loops away from its ducks (crosses itself where their "
               f"polygon does not, or is longer than 4 x it: length {sp.length:.6g}); no fair "
               f"batten was found {fix}", file=sys.stderr)
     if sp.unstable:
-        fix = (f"give a larger --tension than {sp.tension:.6g}" if args.length is None else
+        fix = (("give " if sp.holding()[0] is not None else "") + sp.holding_text(
+            _cli_tension, "a --length") if args.length is None else
                f"try another --length than {args.length:g}, or a --tension")
         print("warning: " + sp.unstable_text(fix), file=sys.stderr)
     need_b = args.dxf or args.bspline_tol is not None

@@ -211,14 +211,18 @@ def holding_advice(said: str, pts, ends, closed) -> str:
     """The spline command's DomainError at tension 0 (no free batten, ``said``) in the CLI's
     words: the least tension of el.holding_tension's ladder whose spline holds (solved: no
     loops, not unstable), for the designer to type; or that none of them does."""
-    from .spline import SMALL_TENSION_TEXT, holding_tension, ladder_words
+    from .spline import SMALL_TENSION_TEXT, holding_tension, ladder_words, sharpest_turn
     said = said.replace(SMALL_TENSION_TEXT, "")
     m, tension, sp, polygon = holding_tension(pts, ends["start"], ends["end"], closed)
     if sp is None:
+        i, deg = sharpest_turn(pts, closed)
+        n = len(pts)
         return (f"{said}; no tension of {ladder_words()} / the polygon squared (polygon "
                 f"{polygon:.6g}) "
                 "gives a spline that holds without loops: at each it loops, is an unstable "
-                "equilibrium (a real batten would snap) or is not found; give a --length")
+                "equilibrium (a real batten would snap) or is not found; move apart points "
+                f"{(i - 1) % n} and {(i + 1) % n}, either side of the sharpest turn (at point "
+                f"{i}, {deg:.3g} deg, counted from 0), or give a --length")
     return (f"{said}: --tension {tension:.3g} ({m:g} / the polygon {polygon:.6g} squared) gives "
             f"a fair spline that holds (length {sp.length:.6g}, {sp.length / polygon:.3g} x the "
             f"polygon), the least of {ladder_words(4)} / polygon^2 that neither loops nor is "

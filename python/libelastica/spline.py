@@ -57,8 +57,11 @@ class LoopWarning(RuntimeWarning):
     ducks (``ElasticSpline.loops``: it crosses itself where the ducks' polygon does
     not (a polygon that crosses itself: between spans whose polygon's segments, or their
     neighbours, do not cross), or, by tension, is longer than 4 x that polygon): no fair
-    batten was found at that tension (the family from the taut batten folds before it); a larger tension,
-    or a length, gives one."""
+    batten was found at that tension (the family from the taut batten folds before it). By
+    tension it names the least larger tension of HOLD_MULTIPLES / P^2 seen to hold
+    (:meth:`ElasticSpline.holding`, solved when the warning is shown), or, where none does
+    (a needle: a sharp turn between close points), the points either side of the sharpest
+    turn to move apart."""
 
 
 class UnstableWarning(RuntimeWarning):
@@ -66,7 +69,8 @@ class UnstableWarning(RuntimeWarning):
     length) is an equilibrium but no minimum of its energy with the ducks held
     (``ElasticSpline.unstable``; elastica.h's el_spline_result.unstable): it passes every
     duck G2 and is fair to draw, but a real batten bent so would not stay: it would snap
-    to another shape. A larger tension, or another length, gives a batten that holds.
+    to another shape. By tension it names the larger tension seen to hold, or the points
+    to move apart where none does (as :class:`LoopWarning`); by length, another length.
     At tension 0 such a batten is refused instead (it slides off its ducks)."""
 
 
@@ -221,6 +225,36 @@ class ElasticSpline(ValueEquality):
                 f"not stay, it would snap to another shape (moving most between points {j} and "
                 f"{j + 1}, counted from 0); for a shape a batten holds, {fix}")
 
+    def holding(self):
+        """Tension mode's way out of a spline that loops or would not hold: (multiple,
+        tension, polygon) from :func:`holding_tension` over the rungs of HOLD_MULTIPLES / P^2
+        above this spline's tension, with its ends ((None, None, polygon) where none of them
+        holds). Solved on the first call only (up to 10 solves), kept with the spline: the
+        warnings, the CLI and the FreeCAD batten ask it, and walk the ladder once."""
+        if getattr(self, "_holding", None) is None:
+            start, end = getattr(self, "_ends", (None, None))
+            m, tension, _, polygon = holding_tension(self.data, start, end, self.closed,
+                                                     above=self.tension)
+            self._holding = (m, tension, polygon)
+        return self._holding
+
+    def holding_text(self, say=lambda t: f"tension {t:.3g}", length: str = "a length") -> str:
+        """:meth:`holding` in words: the tension that holds (``say(tension)``, the caller's
+        terms; ``length``: how to say 'a length') or, where no larger one of the ladder does (the needle of the tests: every
+        tension loops or would snap), the points either side of the polygon's sharpest turn
+        to move apart (widening the needle's 2 mm tip to 10 mm, it holds at 100 / P^2)."""
+        m, tension, polygon = self.holding()
+        if m is not None:
+            return f"{say(tension)} ({m:g} / the polygon squared, solved: it holds)"
+        i, deg = sharpest_turn(self.data, self.closed)
+        n = len(self.data)
+        above = [k for k in HOLD_MULTIPLES if k / polygon ** 2 > self.tension]
+        tried = (f"no larger tension of {ladder_words()} / the polygon squared holds (each "
+                 "loops, would snap or is not found)" if above else "")
+        return ((tried + ": " if tried else "") + f"move apart points {(i - 1) % n} and "
+                f"{(i + 1) % n}, either side of the sharpest turn (at point {i}, {deg:.3g} deg, "
+                f"counted from 0), or try {length}")
+
     def to_bspline(self, tol: Optional[float] = None, degree: int = 3):
         """ONE clamped B-spline (degree 3..7) for the whole spline within ``tol``
         (coordinate units; default 1e-6 of its length) of it: every point of the B-spline within ``tol`` of the
@@ -277,6 +311,18 @@ def _fair_advice(pts: np.ndarray, closed: bool) -> str:
 HOLD_MULTIPLES = (1, 2, 5, 10, 20, 50, 100, 200, 500, 1000)
 
 
+def sharpest_turn(points, closed: bool = False):
+    """The point where the polygon through ``points`` turns most (open: an inner one), as
+    (index, turning angle in degrees): where a batten through them bends hardest."""
+    pts = as_points(points, "points")
+    q = np.vstack([pts[-1:], pts, pts[:1]]) if closed else pts
+    d = np.diff(q, axis=0)
+    turn = np.abs(np.arctan2(d[:-1, 0] * d[1:, 1] - d[:-1, 1] * d[1:, 0],
+                             np.einsum("ij,ij->i", d[:-1], d[1:])))
+    j = int(np.argmax(turn))
+    return (j if closed else j + 1), float(np.degrees(turn[j]))
+
+
 def ladder_words(shown: int = 1) -> str:
     """HOLD_MULTIPLES in words, for every text naming them (none types them): its first
     ``shown``, ', '-joined, then '..' and its last; all of them ', '-joined where that
@@ -295,7 +341,7 @@ SMALL_TENSION_TEXT = (" (a small tension may give a spline that loops, LoopWarni
                       "holds)")
 
 
-def holding_tension(points, start=None, end=None, closed=False):
+def holding_tension(points, start=None, end=None, closed=False, above=0.0):
     """For points no free batten passes: the least of HOLD_MULTIPLES / P^2 (3 digits; P the
     polygon through the points) whose spline neither loops (:class:`LoopWarning`) nor is an
     unstable equilibrium (:class:`UnstableWarning`), with ``start``, ``end`` and ``closed`` as
@@ -305,7 +351,8 @@ def holding_tension(points, start=None, end=None, closed=False):
     error (the CLI's spline at tension 0), not part of every DomainError. Small tensions
     typically give a spline that loops or one a real batten would not hold: such ducks'
     least tension without loops is often unstable (that spike: 10 / P^2, 1.33 P long, would
-    snap; 100 / P^2, 1.17 P, holds)."""
+    snap; 100 / P^2, 1.17 P, holds). ``above``: only the rungs of larger tension
+    (:meth:`ElasticSpline.holding`, from a spline's own tension)."""
     pts = as_points(points, "points")
     ring = np.vstack([pts, pts[:1]]) if closed else pts
     polygon = float(np.sum(np.hypot(*np.diff(ring, axis=0).T)))
@@ -314,6 +361,8 @@ def holding_tension(points, start=None, end=None, closed=False):
                          "length 0): a spline needs two distinct points")
     for m in HOLD_MULTIPLES:
         tension = float(f"{m / polygon ** 2:.3g}")
+        if not tension > above:
+            continue
         try:
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore", LoopWarning)
@@ -327,6 +376,19 @@ def holding_tension(points, start=None, end=None, closed=False):
         if not sp.loops and not sp.unstable:
             return m, tension, sp, polygon
     return None, None, None, polygon
+
+
+def _shown(category) -> bool:
+    """Whether warnings.warn(category) would be shown, as far as the filters without a
+    message or module pattern tell (the first one matching decides, as in warnings; one
+    with a pattern is taken as showing): a hand-written look at warnings.filters, which
+    has no public query, to spare the ladder's solves where the warning is ignored."""
+    for action, msg, cat, mod, _ in warnings.filters:
+        if issubclass(category, cat) and msg is None and mod is None:
+            return action != "ignore"
+        if issubclass(category, cat):
+            return True
+    return True
 
 
 def _back_step_text(places, n) -> str:
@@ -577,12 +639,21 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
     try:
         if st == lib.EL_OK:
             sp = ElasticSpline(res, pts, closed)
+            sp._ends = (start, end)
+            # the ladder above this tension (ElasticSpline.holding), solved only where a
+            # warning of tension mode is shown: Python has no public query of its filters,
+            # so the first filter of the category decides; callers saying their own words
+            # (CLI, FreeCAD, holding_tension) ignore these and ask sp.holding_text once
+            advise = length is None and (
+                (sp.loops and _shown(LoopWarning)) or (sp.unstable and _shown(UnstableWarning)))
             if sp.loops:
                 # length mode: the length asked is what makes it loop (QA: the advice
                 # "a larger tension, or a length" to a user who had given a length)
                 fair = res.reach[2]
-                fix = f"tension {sp.tension:.4g}; a larger tension, or a length, gives one" \
-                    if length is None else \
+                fix = f"tension {sp.tension:.4g}; " + (
+                    ("one holds at " if sp.holding()[0] is not None else "") + sp.holding_text()
+                    if advise else "a larger tension may give one "
+                    "(el.holding_tension)") if length is None else \
                     f"length {length:.4g} (tension {sp.tension:.4g}); a shorter length gives one" + (
                         f" (the longest met without loops: {fair / polygon:.4g} x the polygon, "
                         f"{fair:.6g})" if fair > 0.0 else "")
@@ -594,12 +665,13 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
                               f"): no fair batten was found at {fix}",
                               LoopWarning, stacklevel=2)
             if sp.unstable:
-                fix = (f"a larger tension than {sp.tension:.6g}" if length is None else
-                       f"another length than {length:.6g} (or a tension)")
+                fix = ((("try " if sp.holding()[0] is not None else "") + sp.holding_text())
+                       if advise else "try a larger tension (el.holding_tension), or ease the "
+                       "sharpest turn there") if length is None else \
+                    f"try another length than {length:.6g} (or a tension), or ease the sharpest turn there"
                 said = None if length is None else \
                     f"by length {length:.6g}, tension {sp.tension:.6g}"
-                warnings.warn("elastic_spline: " + sp.unstable_text(
-                    f"try {fix}, or ease the sharpest turn there", said), UnstableWarning,
+                warnings.warn("elastic_spline: " + sp.unstable_text(fix, said), UnstableWarning,
                     stacklevel=2)
             if seam:
                 a = sp.pieces[-1].angle(np.array([sp.pieces[-1].length]))[0] - sp.pieces[0].angle(np.zeros(1))[0]

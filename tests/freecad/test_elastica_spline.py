@@ -175,18 +175,22 @@ class SplineTest(S.DocTest):
         s = self.spline([(sk, [])], Tension=1e-4)
         self.assertEqual(len(s.Warnings), 1, s.Warnings)
         w = s.Warnings[0]
-        for words in ("unstable equilibrium", "snap to another shape", "between points 2 and 3",
-                      "raise the tension"):
-            self.assertIn(words, w)
-        self.assertEqual(s.Status, f"ok; warning: {w}")
-        # the binding's one summary (its UnstableWarning's and the CLI's), in the panel's terms
+        # the way out is a tension of the ladder above it, solved and seen to hold
         import warnings
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             sp = ensure_binding().elastic_spline(sharp, tension=1e-4)
-        self.assertEqual(w, sp.unstable_text("raise the tension", said="", noun="batten"))
+        m, held, _ = sp.holding()
+        self.assertGreater(held, 1e-4)
+        for words in ("unstable equilibrium", "snap to another shape", "between points 2 and 3",
+                      f"raise the tension to Tension = {held:g}",
+                      f"({m:g} / the polygon squared, solved: it holds)"):
+            self.assertIn(words, w)
+        self.assertEqual(s.Status, f"ok; warning: {w}")
+        # the binding's one summary (its UnstableWarning's and the CLI's), in the panel's terms
+        self.assertTrue(w.startswith(sp.unstable_text("", said="", noun="batten")), w)
         self.check_through_and_g2(s, self.global_ducks(sharp))
-        s.Tension = 3e-3
+        s.Tension = held
         self.doc.recompute()
         self.assertEqual((s.Status, list(s.Warnings)), ("ok", []))
 
@@ -819,16 +823,38 @@ class SplineTest(S.DocTest):
         spike = [(0, 0), (100, 0), (101, 100), (102, 0), (200, 0)]
         sk = S.points_sketch(self.doc, spike, "Needle")
         del C.MESSAGES[:]
-        s = C.spline_sources([(sk, [])], open_panel=False)
+        lib, solves = ensure_binding(), []   # the workbench's calls and holding_tension's
+        solve = lib.elastic_spline
+        counted = lambda *a, **k: solves.append(k.get("tension")) or solve(*a, **k)  # noqa: E731
+        lib.elastic_spline = lib.spline.elastic_spline = counted
+        try:
+            s = C.spline_sources([(sk, [])], open_panel=False)
+        finally:
+            lib.elastic_spline = lib.spline.elastic_spline = solve
+        # the ladder walked once: 1 .. 1000 / P^2 and the free batten, its advice not again
+        self.assertEqual(len(solves), 11, solves)
         self.assertIsNotNone(s, C.MESSAGES)
         self.assertEqual((s.Mode, s.Tension), ("tension", 0.000126))
         self.assertEqual(len(s.Warnings), 1, s.Warnings)
         self.assertTrue(s.Status.startswith("ok; warning: the batten is an unstable equilibrium"),
                         s.Status)
-        self.assertNotIn("loops", s.Status)
+        self.assertNotIn("loops away", s.Status)          # its advice says 'each loops'
         self.check_through_and_g2(s, self.global_ducks(spike))
         self.assertTrue(any("(20 / the" in m and "does not loop: none of them gives one that holds" in m
                             for m in C.MESSAGES), C.MESSAGES)
+        # its way out is not a larger tension (none holds) but a wider tip (5 mm: holds)
+        self.assertNotIn("raise the tension", s.Status)
+        self.assertIn("no larger tension of 1 .. 1000 / the polygon squared holds", s.Status)
+        self.assertIn("move apart points 1 and 3, either side of the sharpest turn (at point 2",
+                      s.Status)
+        for t in (6.31e-5, 6.31e-6):           # 10 and 1 / P^2 typed: loops and would snap
+            s.Tension = t
+            self.doc.recompute()
+            self.assertEqual(len(s.Warnings), 2, s.Warnings)
+            for w in s.Warnings:
+                self.assertNotIn("raise the tension", w)
+                self.assertIn("no larger tension of 1 .. 1000 / the polygon squared holds", w)
+                self.assertIn("move apart points 1 and 3", w)
 
     def test_command_records_a_feature(self):
         s = C.spline_sources([(self.sk, [])], open_panel=False, Tension=1e-4)

@@ -43,7 +43,7 @@ def test_an_unstable_spline_warns(points, by):
     assert sp.unstable and sp.unstable_span == 2 and sp.loops == ("length" in by)
     msg = str(next(w.message for w in rec if w.category is el.UnstableWarning))
     assert "unstable equilibrium" in msg and "snap to another shape" in msg, msg
-    assert "between points 2 and 3" in msg and ("larger tension" in msg if "tension" in by
+    assert "between points 2 and 3" in msg and ("solved: it holds" in msg if "tension" in by
                                            else "another length" in msg), msg
     # the spline itself is the one returned before: G2 through its ducks
     ends = np.r_[0, np.cumsum([p.length for p in sp.pieces])]
@@ -67,7 +67,8 @@ def test_the_cli_says_it(tmp_path, capsys):
     f.write_text("x,y\n" + "\n".join(f"{x},{y}" for x, y in SHARP) + "\n")
     code, out, err = cli(capsys, "spline", f, "--tension", "0.01", "--json", tmp_path / "s.json")
     assert code == 0 and "unstable equilibrium" in err and "snap to another shape" in err, err
-    assert "larger --tension than 0.01" in err and "between points 2 and 3" in err, err
+    assert "give --tension 0.13 (50 / the polygon squared, solved: it holds)" in err and \
+        "between points 2 and 3" in err, err
     assert "UnstableWarning" not in err and ".py:" not in err, err
     assert json.loads((tmp_path / "s.json").read_text())["unstable"] is True
     code, out, err = cli(capsys, "spline", f, "--tension", "0.3")
@@ -83,12 +84,12 @@ def test_one_summary_for_every_caller(tmp_path, capsys):
         sp = el.elastic_spline(SHARP, tension=0.01)
     msg = str(next(w.message for w in rec if w.category is el.UnstableWarning))
     assert msg == "elastic_spline: " + sp.unstable_text(
-        "try a larger tension than 0.01, or ease the sharpest turn there"), msg
+        "try " + sp.holding_text()), msg
     f = tmp_path / "ducks.csv"
     f.write_text("x,y\n" + "\n".join(f"{x},{y}" for x, y in SHARP) + "\n")
     code, out, err = cli(capsys, "spline", f, "--tension", "0.01")
-    assert code == 0 and f"warning: {sp.unstable_text('give a larger --tension than 0.01')}\n" \
-        in err, err
+    fix = "give " + sp.holding_text(lambda t: f"--tension {t:.3g}", "a --length")
+    assert code == 0 and f"warning: {sp.unstable_text(fix)}\n" in err, err
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         assert el.elastic_spline(SHARP, tension=0.3).unstable_text("x") == ""

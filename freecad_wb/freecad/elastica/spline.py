@@ -18,7 +18,7 @@ from . import defaults
 from .containers import set_shape
 from .geometry import (binding_module, edge_end, el, ends_meet, nearest_parameter, np, part_bspline,
                        plane_coordinates, plane_curvature, to_3d)
-from .kept import checked_call
+from .kept import call_key, checked_call
 from .links import followed_edge, followed_reader
 from .units import (ceil_digits, coordinate_mark, floor_digits, length_mark, length_unit_mark,
                     reach_mark, say, tension_mark)
@@ -220,7 +220,7 @@ def ends_at_start(points):
 
 
 def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, closed=False,
-                start=None, end=None, tol=1e-3, degree=BSPLINE_DEGREE):
+                start=None, end=None, tol=1e-3, degree=BSPLINE_DEGREE, advise=True):
     """The elastic spline through 3D ``points`` (in ``plane``, a sketch's placement,
     when they lie in it, else their best plane). ``start`` / ``end``: None (natural)
     or (condition 'tangent' / 'G2', Part edge[, at_end: which end, end_condition]).
@@ -228,6 +228,8 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
     (1/mm^2; 0 = the free batten); length mode: ``length`` mm (0 = the free
     batten's length). Returns a dict: 'spline' (el.ElasticSpline, plane
     coordinates), 'bspline', 'placement', 'forces' (duck_forces), 'notes'.
+    ``advise`` False: no cautions for a batten that loops or is unstable (batten_cautions:
+    the ladder's solves), for starting_tension's rungs, which say them once chosen.
     Raises InputProblem with a user message."""
     n = np()
     if mode not in MODES:
@@ -323,18 +325,8 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
         cautions.append(f"the points end where they start (a closed wire) but Closed is off: "
                         f"the open batten's ends meet at the first point at a {corner:.3g} deg "
                         "corner; set Closed for a closed batten through them")
-    if sp.loops:
-        where = sp.crossing_text()   # the places, as the library's LoopWarning says them
-        cautions.append("the batten loops away from its points (it crosses itself, or is longer "
-                     "than 4 x their polygon" + (f"; it crosses itself {where}, points counted "
-                                                 "from 0" if where else "") +
-                     "): no fair batten at this " + ("tension; raise the tension or give a length"
-                                                     if mode == "tension" else
-                                                     "length; give a shorter length or a tension"))
-    if sp.unstable:                       # no minimum: the library's UnstableWarning's words
-        cautions.append(sp.unstable_text("raise the tension" if mode == "tension" else
-                                         "try another length, or a tension", said="",
-                                         noun="batten"))
+    if advise:
+        cautions.extend(batten_cautions(sp, mode))
     for j, name in ((0, "first"), (-1, "last")):
         if isinstance(specs[j], dict):     # its force: GuideForces
             notes.append(f"G2 {'start' if j == 0 else 'end'}: a guide duck a quarter into the "
@@ -346,6 +338,30 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
     seams = [(j, c["seam"], c["direction"]) for j, c in enumerate(ends) if c and "seam" in c]
     return {"spline": sp, "bspline": bs, "placement": plane, "forces": duck_forces(sp),
             "notes": notes, "warnings": cautions, "seams": seams}
+
+
+def batten_cautions(sp, mode):
+    """The cautions of a batten that loops or is an unstable equilibrium, with the way out:
+    by tension, the least larger tension of the ladder that holds (the binding's
+    ElasticSpline.holding_text: solved once, kept with the spline), or, where none does
+    (the needle: every tension loops or would snap), the points either side of the
+    sharpest turn to move apart; by length, another length or a tension."""
+    out = []
+    if mode == "tension" and (sp.loops or sp.unstable):
+        m, _, polygon = sp.holding()
+        fix = ("raise the tension to " if m is not None else "") + sp.holding_text(
+            lambda t: f"Tension = {tension_mark(t, polygon, 6)}", "a length")
+    if sp.loops:
+        where = sp.crossing_text()   # the places, as the library's LoopWarning says them
+        out.append("the batten loops away from its points (it crosses itself, or is longer "
+                   "than 4 x their polygon" + (f"; it crosses itself {where}, points counted "
+                                               "from 0" if where else "") +
+                   "): no fair batten at this " + (f"tension; {fix}" if mode == "tension" else
+                                                   "length; give a shorter length or a tension"))
+    if sp.unstable:                       # no minimum: the library's UnstableWarning's words
+        out.append(sp.unstable_text(fix if mode == "tension" else
+                                    "try another length, or a tension", said="", noun="batten"))
+    return out
 
 
 def _parallel(a, b):
@@ -401,7 +417,7 @@ def starting_tension(points, plane=None, closed=False, tol=1e-3, degree=BSPLINE_
         tension = float(f"{m / polygon ** 2:.3g}")
         try:
             checked = checked_call(spline_core, points, plane, "tension", tension,
-                                   closed=closed, tol=tol, degree=degree)
+                                   closed=closed, tol=tol, degree=degree, advise=False)
         except DoublesBack:
             raise
         except NoSpline:
@@ -421,6 +437,18 @@ def starting_tension(points, plane=None, closed=False, tol=1e-3, degree=BSPLINE_
                        f"nor one without loops at {ladder} / the polygon through them squared: "
                        "give a length")
     m, tension, checked, which = fallback
+    sp = checked[1]["spline"]
+    if sp.unstable:     # every rung above it was solved: none holds (ElasticSpline.holding's
+        n = np()        # answer, kept with the spline, not solved again)
+        ring = n.vstack([sp.data, sp.data[:1]]) if sp.closed else sp.data
+        sp._holding = (None, None, float(n.sum(n.hypot(*n.diff(ring, axis=0).T))))
+    checked[1]["warnings"].extend(batten_cautions(sp, "tension"))
+    try:                # keyed as the feature's recompute calls it (advise True: said above)
+        key = call_key(spline_core, points, plane, "tension", tension, closed=closed, tol=tol,
+                       degree=degree)
+    except TypeError:
+        key = None
+    checked = (key, checked[1])
     if hand is not None:
         hand.append(checked)
     return tension, (f"no free batten (tension 0) passes these points (it slides off "
