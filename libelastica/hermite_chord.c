@@ -28,10 +28,16 @@
  * onto them (el__hermite_polish_to) and kept at the data's residual <= tol, still a loop
  * (turning 2 pi, its length within 1e-2) and within one period (the move can take a whole
  * period past it on one side). A loop the roots found too is replaced by this one.
- * Not covered: by length (hermite_length.c's tracing still misses them below ~1.1 |p1 - p0|),
- * the two-loop chains (one period of an inflectional elastica), and on data moved off the
- * chord the loop that slides off centre beyond the polish's reach (p1 or t1 moved by 1e-12 ..
- * 1e-2: one of the pair found in about half of the problems, as before).
+ * By length (hermite_length.c's tracing missed them below ~1.1 |p1 - p0|) the same closed form
+ * gives L(t) = 2 K / (k sqrt(mu)), one equation in t for the given length (chord_loops_length,
+ * below), each root's loop and mirror kept the same way.
+ * Not covered: the loops that no single piece carries to tol, where k - 1 lies below an ulp
+ * but the tails e^-(sqrt(mu) L / 2) above tol (sqrt(mu) |p1 - p0| ~ 25 .. 45: by length L ~
+ * 1.09 .. 1.16 |p1 - p0|; by tension sigma |p1 - p0|^2 ~ 2000 .. 3500 in one frame tried;
+ * the closed form's residual 1e-9 at tol 1e-10), the two-loop chains (one period of an
+ * inflectional elastica), and on data moved off the chord the loop that slides off centre
+ * beyond the polish's reach (p1 or t1 moved by 1e-12 .. 1e-2 by tension, 1e-10 .. 1e-2 by
+ * length: one of the pair found in about half of the problems, as before).
  */
 #include "hermite_internal.h"
 #include <gsl/gsl_errno.h>
@@ -118,9 +124,13 @@ static int loop_solution(const hframe *fr, double sigma, double t, int side, el_
     }
     return rc;
 }
+static int chord_loops_length(const hframe *fr, const hprob *pr, const el_hermite_options *opt,
+                              el_hermite_solution **sol, size_t *n, size_t *cap);
+
 int el__hermite_chord_loops(const hframe *fr, const hprob *pr, const el_hermite_options *opt,
                             el_hermite_solution **sol, size_t *n, size_t *cap)
 {
+    if (opt->mode == EL_HERMITE_LENGTH) return chord_loops_length(fr, pr, opt, sol, n, cap);
     if (opt->mode != EL_HERMITE_TENSION || !(pr->sigma > 0.0) || !(fabs(pr->P1) <= CHORD_NEAR) ||
         !(fabs(pr->V1) <= CHORD_NEAR) || !(pr->P2 > 0.0) || !(pr->V2 > 0.0))
         return EL_OK;
@@ -180,5 +190,104 @@ int el__hermite_chord_loops(const hframe *fr, const hprob *pr, const el_hermite_
         gprev = g;
     }
     if (s) gsl_root_fsolver_free(s);
+    return rc;
+}
+
+/* ---- by length ---- */
+
+typedef struct { double logl; } length_target;
+
+/* log(L(t) - 1) - log(Ln - 1): the whole-period loop's length beyond the chord against the
+ * given one (normalised); the log keeps the relative resolution of L - 1 (5.8e-3 at T_LO) */
+static double length_gap(double t, void *p)
+{
+    whole_loop w;
+    if (loop_at(t, &w) || !(w.L > 1.0)) return NAN;
+    return log(w.L - 1.0) - ((const length_target *)p)->logl;
+}
+
+/* The loop at t of the sign side kept by length, as the tension path keeps its own (above):
+ * the closed form's curve with the given length (its L(t) to the root's rounding), polished
+ * onto the data where they are only near the chord (el__hermite_polish_to in length mode:
+ * phi, mu, k, q move, L stays), kept at residual <= tol, still turning 2 pi, sqrt(mu) within
+ * 1e-2 of the closed form's (not slid onto another curve) and within one period; a curve of
+ * the list that is the same (el__hermite_same_solution: the tracer's representation of the
+ * loop, found above ~1.1 |p1 - p0|) is replaced by it, as by tension. */
+static int keep_length_loop(const hframe *fr, const el_hermite_options *opt, double t, int side,
+                            el_hermite_solution **sol, size_t *n, size_t *cap)
+{
+    whole_loop w;
+    el_hermite_solution x;
+    if (loop_at(t, &w) || loop_solution(fr, w.sigma / (fr->d * fr->d), t, side, &x)) return EL_OK;
+    /* the mode's given value is exact, not the root's approximation of it (hermite.c's roots) */
+    x.length = x.curve.length = opt->length;
+    const double ends[2] = {0.0, x.length};
+    double kappa[2];
+    if (el_smooth_check(&x.curve) || el_smooth_eval(&x.curve, 2, ends, NULL, NULL, kappa)) return EL_OK;
+    x.kappa0 = kappa[0];
+    x.kappa1 = kappa[1];
+    if (el__hermite_residual(fr, &x, &x.residual)) return EL_OK;
+    const el_smooth_params c0 = x.curve;
+    if (x.residual > opt->tol && el__hermite_polish_to(fr, EL_HERMITE_LENGTH, opt->length, opt->tol, &x))
+        return EL_OK;
+    const int moved = memcmp(&c0, &x.curve, sizeof c0) != 0;
+    double th[2];
+    if (!(x.residual <= opt->tol) || !(fabs(sqrt(x.curve.mu) - sqrt(c0.mu)) <= 1e-2 * sqrt(c0.mu)) ||
+        (moved && !el__hermite_within_period(&x.curve, 1)) ||
+        el_smooth_eval(&x.curve, 2, ends, NULL, th, NULL) ||
+        !(fabs(fabs(th[1] - th[0]) - 2.0 * M_PI) <= 1e-3))
+        return EL_OK;
+    for (size_t j = 0; j < *n; j++)
+        if (el__hermite_same_solution(&x, &(*sol)[j], fr->d)) {
+            (*sol)[j] = x;
+            return EL_OK;
+        }
+    if (*n == *cap) {
+        el_hermite_solution *more = realloc(*sol, 2 * (*cap + 1) * sizeof *more);
+        if (!more) { free(*sol); *sol = NULL; return EL_ENOMEM; }
+        *sol = more;
+        *cap = 2 * (*cap + 1);
+    }
+    (*sol)[(*n)++] = x;
+    return EL_OK;
+}
+
+/* By length: the same whole-period loops, their t = ln mc from L(t) = 2 K / (k sqrt(mu)) =
+ * Ln = L / |p1 - p0| (the closed form above). L(t) rises strictly from 1 + 5.8e-3 at T_LO
+ * (sigma |p1 - p0|^2 = 9.5e5) to 796 at T_HI (6.2e-5): checked in double on 2 000 000
+ * equally spaced t of [T_LO, T_HI] (/tmp/hermlen/mono.c: every sample > the one before, none
+ * without a loop), the closed form's limits 1 + 4 / sqrt(mu) as mc -> 0 (the separatrix loop,
+ * sqrt(mu) ~ ln(16 / mc) - 4 -> infinity) and ~ 2 pi k / sqrt(mu) -> infinity as mc -> 1 (the
+ * circle). So [T_LO, T_HI] brackets every root, and there is one where log(L - 1) - log(Ln - 1)
+ * changes sign between its ends: GSL's Brent on it, to 4 eps in t; the loop and its mirror
+ * kept as by tension. Lengths below 1 + 5.8e-3 (tensions past 9.5 times
+ * EL_HERMITE_SIGMA_D2_MAX) and above 796 (the x chart's large loops, which the tracer follows)
+ * are not looked for here. */
+static int chord_loops_length(const hframe *fr, const hprob *pr, const el_hermite_options *opt,
+                              el_hermite_solution **sol, size_t *n, size_t *cap)
+{
+    const double Ln = opt->length / fr->d;
+    if (!(Ln > 1.0) || !(fabs(pr->P1) <= CHORD_NEAR) || !(fabs(pr->V1) <= CHORD_NEAR) || !(pr->P2 > 0.0) ||
+        !(pr->V2 > 0.0))
+        return EL_OK;
+    length_target tg = {log(Ln - 1.0)};
+    gsl_function F = {length_gap, &tg};
+    const double glo = length_gap(T_LO, &tg), ghi = length_gap(T_HI, &tg);
+    if (!(glo < 0.0 && ghi > 0.0)) return EL_OK;   /* (L(t) rises: no root, or NAN) */
+    gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+    if (!s) return EL_ENOMEM;
+    double lo = T_LO, hi = T_HI, root = NAN;
+    if (gsl_root_fsolver_set(s, &F, lo, hi) == GSL_SUCCESS)
+        for (int it = 0; it < 200; it++) {
+            if (gsl_root_fsolver_iterate(s)) break;
+            root = gsl_root_fsolver_root(s);
+            lo = gsl_root_fsolver_x_lower(s);
+            hi = gsl_root_fsolver_x_upper(s);
+            if (gsl_root_test_interval(lo, hi, 0.0, 4.0 * DBL_EPSILON) == GSL_SUCCESS) break;
+        }
+    gsl_root_fsolver_free(s);
+    int rc = EL_OK;
+    for (int side = 1; side >= -1 && !rc && isfinite(root); side -= 2)
+        rc = keep_length_loop(fr, opt, root, side, sol, n, cap);
     return rc;
 }

@@ -280,8 +280,8 @@ int el__hermite_add_images(const hframe *fr, const el_hermite_options *opt, doub
  * stopped at the work limit (its solutions so far added: the caller's result is incomplete
  * too); EL_ENOMEM (the list freed) where it cannot grow. */
 #define EL__HERMITE_CASE3_NEAR 1e-3
-/* hermite_chord.c: by tension, between tangents along the chord (|P1|, |V1| <= 1e-2, P2, V2 > 0,
- * sigma > 0), the whole-period separatrix loops of the exactly symmetric problem (P1 = V1 = 0),
+/* hermite_chord.c: by tension (sigma > 0) or by length, between tangents along the chord
+ * (|P1|, |V1| <= 1e-2, P2, V2 > 0), the whole-period separatrix loops of the exactly symmetric problem (P1 = V1 = 0),
  * each and its mirror image polished onto the data, added at residual <= tol (replacing the
  * same curve found by the roots); EL_ENOMEM (the list freed) where it cannot grow. */
 int el__hermite_chord_loops(const hframe *fr, const hprob *pr, const el_hermite_options *opt,

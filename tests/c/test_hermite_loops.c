@@ -129,6 +129,71 @@ START_TEST(loops_between_tangents_along_the_chord_by_tension)
 }
 END_TEST
 
+/* Tangents along the chord by length, p0 (0, 0), p1 d (cos a, sin a), t0 = t1 = (cos a, sin a)
+ * turned (a = 0, 0.3, pi/2, 2, -2.5), scaled (d = 1e-3 .. 1e3), shifted by (3000, -2100) d,
+ * exact or with p1 moved across the chord by 1e-14 or -1e-12 d, length 1.01 .. 1.25 d: exactly
+ * one loop of each sense (turning +-2 pi once), of the given length, the pair of one energy,
+ * each peaking at L / 2, at most one period, every curve checked by hermite_check.h, and below
+ * 1.1 d the separatrix's sqrt(mu) d = 4 / (L / d - 1), energy 8 sqrt(mu) (the closed form's
+ * k' ~ e^-(sqrt(mu) d / 2) below 1e-17). Before (hermite_chord.c by tension only): p0 (0, 0),
+ * p1 (0.2, 0), length 1.05 d: the two whole-period bumps alone, no loop below ~1.1 d. */
+START_TEST(loops_between_tangents_along_the_chord_by_length)
+{
+    const double angles[] = {0.0, 0.3, M_PI / 2, 2.0, -2.5}, scales[] = {1e-3, 0.2, 1e3};
+    const double Ls[] = {1.01, 1.05, 1.08, 1.25}, moves[] = {0.0, 1e-14, -1e-12};
+    for (size_t ia = 0; ia < 5; ia++)
+        for (size_t is = 0; is < 3; is++)
+            for (int off = 0; off < 2; off++)
+                for (size_t im = 0; im < 3; im++)
+                    for (size_t iL = 0; iL < 4; iL++) {
+                        const double d = scales[is], t[2] = {cos(angles[ia]), sin(angles[ia])};
+                        const double p0[2] = {off * 3000.0 * d, off * -2100.0 * d};
+                        const double e = moves[im] * d;
+                        const double p1[2] = {p0[0] + d * t[0] - e * t[1], p0[1] + d * t[1] + e * t[0]};
+                        el_hermite_options o;
+                        el_hermite_options_defaults(&o);
+                        o.mode = EL_HERMITE_LENGTH;
+                        o.length = Ls[iL] * d;
+                        el_hermite_result r;
+                        ck_assert_int_eq(el_hermite_solve(p0, t, p1, t, &o, &r), EL_OK);
+                        check_result(p0, t, p1, t, &r, o.tol);
+                        int ccw = 0, cw = 0;
+                        double E[2] = {0, 0};
+                        for (size_t j = 0; j < r.count; j++) {
+                            const el_hermite_solution *s = &r.solutions[j];
+                            double peak = 0.0;
+                            const double w = turning_of(s, &peak);
+                            ck_assert(fabs(s->length - o.length) <= 1e-12 * o.length);
+                            if (fabs(fabs(w) - 2.0 * M_PI) > 1e-6) continue;
+                            const int ix = w > 0.0 ? 0 : 1;
+                            ccw += !ix;
+                            cw += ix;
+                            E[ix] = s->energy * d;
+                            ck_assert_msg(fabs(peak - 0.5) <= 1e-3,
+                                          "a %g d %g off %d move %g L %g: the loop peaks at %g of L",
+                                          angles[ia], d, off, moves[im], Ls[iL], peak);
+                            const double k = fabs(s->curve.k);
+                            if (s->npieces == 1 && k > 1.0) {
+                                const double K = gsl_sf_ellint_Kcomp(1.0 / k, GSL_PREC_DOUBLE);
+                                ck_assert(s->length <= 2.0 * K / (k * sqrt(s->curve.mu)) * (1.0 + 1e-8));
+                            }
+                            if (Ls[iL] <= 1.1 && s->npieces == 1) {
+                                const double rm = 4.0 / (Ls[iL] - 1.0);
+                                ck_assert_msg(fabs(sqrt(s->curve.mu) * d - rm) <= 1e-9 * rm &&
+                                              fabs(s->energy * d - 8.0 * rm) <= 1e-9 * 8.0 * rm,
+                                              "sqrt(mu) d %.12g E %.12g, the separatrix's %.12g %.12g",
+                                              sqrt(s->curve.mu) * d, s->energy * d, rm, 8.0 * rm);
+                            }
+                        }
+                        ck_assert_msg(ccw == 1 && cw == 1,
+                                      "a %g d %g off %d move %g L %g: %zu solutions, %d ccw, %d cw loops",
+                                      angles[ia], d, off, moves[im], Ls[iL], r.count, ccw, cw);
+                        ck_assert(fabs(E[0] - E[1]) <= 1e-9 * E[0]);
+                        el_hermite_result_free(&r);
+                    }
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("hermite_loops");
@@ -136,6 +201,7 @@ int main(void)
     tcase_set_timeout(tc, 300);
     tcase_add_test(tc, a_loops_mirror_image_is_kept_beside_it);
     tcase_add_test(tc, loops_between_tangents_along_the_chord_by_tension);
+    tcase_add_test(tc, loops_between_tangents_along_the_chord_by_length);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }
