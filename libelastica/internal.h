@@ -402,6 +402,11 @@ int el__spline_unstable(el__spchain *w, size_t *span);
  * chain's multiplier; spline_stable.c's file comment), whatever its lmode; *span from H's
  * least eigenvalue's vector (held, H positive definite: the span of the least gamma_j). */
 int el__spline_unstable_as(el__spchain *w, int held, size_t *span);
+/* STABLE_FAMILY (spline_stable.c): w's tension solution unstable (el__spline_unstable_as): the
+ * family followed to its tension from the rungs of sigma h^2 1e-3 .. EL__SP_HIGH_SIGMA, the first
+ * stable one of less integral kappa^2 + sigma ds not wandering more into w (*found 1); else w as it
+ * was (*found 0). EL_OK or EL_ENOMEM. */
+int el__spline_stable_family(el__spchain *w, int max_steps, int *found);
 /* el__spline_unstable_as of the result res made from w (spline.c's make_result, the unit S),
  * res's pieces loaded into w first where w holds another chain (w used up); 0 (not judged)
  * where res has another piece count than w's, or a circle piece. */

@@ -532,6 +532,32 @@ static int by_tension_again(el__spchain *w, const double *xy, size_t n, const el
     return st;
 }
 
+/* STABLE_FAMILY: res from w (tension mode's own solve, accepted) an equilibrium that is no
+ * minimum: the stable one el__spline_stable_family finds instead, made anew into res where
+ * make_result accepts it, looping no more (*cr its loops; Lp the polygon); else res as it was (w then holds the other, which
+ * el__spline_unstable_result loads res back over: its length differs). EL_OK or EL_ENOMEM. */
+static int stable_instead(el__spchain *w, const double *xy, size_t n, const el_spline_options *opt, double S,
+                          double Lp, el_spline_result *res, int *cr)
+{
+    int found;
+    int st = el__spline_stable_family(w, opt->max_steps, &found);
+    if (st == EL_ENOMEM) { el_spline_result_free(res); return st; }
+    if (!found) return EL_OK;
+    el_spline_result r2;
+    double other, sep;
+    st = make_result(w, xy, n, S, opt->tol, &r2, &other, &sep);
+    if (st == EL_ENOMEM) { el_spline_result_free(res); return st; }
+    if (st) return EL_OK;
+    const int c2 = el__spline_loops(r2.pieces, r2.npieces, opt->closed);
+    if (c2 < 0) { el_spline_result_free(&r2); el_spline_result_free(res); return EL_ENOMEM; }
+    if (c2 > *cr || accepted(&r2, opt->tol, other, sep)) { el_spline_result_free(&r2); return EL_OK; }
+    r2.loops = c2 || r2.length > 4.0 * Lp;
+    el_spline_result_free(res);
+    *res = r2;
+    *cr = c2;
+    return EL_OK;
+}
+
 /* el__spline_solve_paths, with the longest span h (user units) into *longest once the
  * chords are valid (el__spline_largest's h) */
 static int solve_paths(const double *xy, size_t n, const el_spline_options *opt, int newton_first,
@@ -665,7 +691,7 @@ static int solve_paths(const double *xy, size_t n, const el_spline_options *opt,
         const int st2 = make_result(sol, xy, n, S, opt->tol, res, &other, &sep);
         if (st2) { st = st2; goto done; }
         /* does it follow its ducks (spline_fair.c)? */
-        const int cr = el__spline_loops(res->pieces, res->npieces, closed);
+        int cr = el__spline_loops(res->pieces, res->npieces, closed);
         if (cr < 0) { el_spline_result_free(res); st = EL_ENOMEM; goto done; }
         res->loops = cr || (!lmode && res->length > 4.0 * Lp);
         if (lmode) reach_of(&w, &g, S, res);
@@ -677,6 +703,12 @@ static int solve_paths(const double *xy, size_t n, const el_spline_options *opt,
         /* the free batten found is no minimum: it slides off its ducks (spline_stable.c;
          * QA19: 5 ducks turning 163-172 deg, one negative eigenvalue each); by tension > 0 or
          * length: returned, res->unstable saying so (below) */
+        /* an equilibrium that is no minimum: a stable one on the family from a tension ladder
+         * instead where one is found (spline_stable.c's STABLE_FAMILY) */
+        if (!st && !lmode && sol == &w && !opt->initial) {
+            st = stable_instead(&w, xy, n, opt, S, Lp, res, &cr);
+            if (st) goto done;
+        }
         if (!st && opt->sigma == 0.0 && sol == &w) {
             size_t span;
             if (el__spline_unstable(&w, &span) > 0) {

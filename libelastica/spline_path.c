@@ -196,9 +196,13 @@ int el__spline_follow_family(el__spchain *w, int max_steps, double Lt, int by_si
                  * past 1.0499 x refused (EL_ERANGE); the family goes on through a second
                  * free batten (1.07 x). Only for a step not much shorter than the secant
                  * it extrapolates (h >= 0.75 N): for a quadratic L(s) the rule needs the
-                 * fold in the length between (N - h) / 4 and N / 2 behind C, so one
-                 * halving ends it (below 0.75 N a fold there would halve to nothing: a
-                 * 12-duck wave at 1.02 x). w->jump: el__spline_length_from's last path */
+                 * fold in the length between (N - h) / 4 and N / 2 behind C, or up to
+                 * (h - N) / 4 ahead of it (dLp = h (N + 2 s_f), the step's h (2 s_f - h)),
+                 * so at most two halvings end it (h <= 2 N: one from h < 1.5 N; below 0.75
+                 * N a fold there would halve to nothing: a 12-duck wave at 1.02 x). Before
+                 * the bracket test: a step that brackets the target so is refused too (its
+                 * bracket is on the other branch). w->jump: el__spline_length_from's last
+                 * path */
                 el__snap_load(w, C);
                 h *= 0.5;
                 continue;

@@ -52,7 +52,9 @@
  * in its own length at fixed end angles: a U-turn span (chord 1, tangents (0, 1), (0, -1))
  * at sigma 0.3 on its branch of length 2.894: gamma = -2.458, and el_hermite_solve by length
  * gives d2/dl2 (integral kappa^2 + sigma l) = -0.4067 = 1 / gamma; it read stable (0) before.
- * Its span is named where H has no negative eigenvalue (the least gamma_j).
+ * Its span is named where H has no negative eigenvalue: of the spans with gamma_j < 0 the
+ * one of the most negative c_j = 1 / gamma_j (C's least eigenvalue, whose mode is that span's
+ * length alone; revspline's finding 8: the least gamma_j named before, the least unstable).
  * Not judged: a chain with a circle piece, or a result whose piece count is not the chain's
  * (el__spline_unstable_result). Not tested here: a span unstable for its own end data at
  * fixed length (a conjugate point inside a span), which neither H nor gamma_j sees.
@@ -117,8 +119,16 @@ int el__spline_length_negatives(const double *dg, const double *up, const double
     return negH + nc + (gamma + gu > 0.0) - 1;
 }
 
-/* el__spline_length_negatives on w's H (rows i0..i1, in w->dg, w->up), w->b its g; *span the
- * span with the least gamma_j where one is negative (its length the one to move) */
+/* Of two spans past their force-free length (gamma_j, gamma_i < 0), is j's c_j = 1 / gamma_j the
+ * more negative (the steeper fall of its energy in its own length, C's least eigenvalue: the
+ * span moving most along that mode, elastica.h's slide_span)? */
+static int steeper(double gam_j, double gam_i)
+{
+    return 1.0 / gam_j < 1.0 / gam_i;
+}
+
+/* el__spline_length_negatives on w's H (rows i0..i1, in w->dg, w->up), w->b its g; *span (0 on
+ * entry) the span past its force-free length of the most negative c_j (steeper) where one is */
 static int length_negatives(el__spchain *w, size_t i0, size_t i1, int negH, size_t *span)
 {
     double *g = w->b, *gam = w->y;   /* (y: m <= n entries) */
@@ -128,7 +138,7 @@ static int length_negatives(el__spchain *w, size_t i0, size_t i1, int negH, size
         gam[j] = -pc->cL[3];   /* -dL_j / d sigma at fixed end angles: D[3] = J^{-1} h^2 e4 */
         if (j >= i0 && j <= i1) g[j] += pc->cL[1];
         if (j + 1 >= i0 && j + 1 <= i1) g[j + 1] += pc->cL[2];
-        if (gam[j] < gam[*span]) *span = j;
+        if (gam[j] < 0.0 && !(gam[*span] < 0.0 && !steeper(gam[j], gam[*span]))) *span = j;
     }
     const int neg = el__spline_length_negatives(w->dg + i0, w->up + i0, g + i0, i1 - i0 + 1, negH, gam, w->m);
     return neg < 0 ? 0 : neg;
@@ -151,14 +161,18 @@ int el__spline_unstable_as(el__spchain *w, int held, size_t *span)
     double *dg = w->dg, *up = w->up, *z = w->z;
     const size_t i0 = w->slot[0] == EL__SLOT_ANGLE ? 0 : 1;
     const size_t i1 = w->slot[n - 1] == EL__SLOT_ANGLE ? n - 1 : n - 2;
-    /* by tension: the spans past their force-free length (gamma_j < 0, TENSION_COUNT) */
+    /* by tension: the spans past their force-free length (gamma_j < 0, TENSION_COUNT); a
+     * gamma_j not finite or 0 (C = diag(1 / gamma_j) undefined: the Schur split needs it):
+     * not judged (0), the rule of el__spline_length_negatives */
     int nc = 0;
     size_t cspan = 0;
-    for (size_t j = 0; j < m && !held; j++) {
-        const double gam = -w->pc[j].cL[3];
-        if (gam < 0.0 && (!nc || gam < -w->pc[cspan].cL[3])) cspan = j;
-        nc += gam < 0.0;
-    }
+    if (!held)
+        for (size_t j = 0; j < m; j++) {
+            const double gam = -w->pc[j].cL[3];
+            if (!isfinite(gam) || gam == 0.0) return 0;
+            if (gam < 0.0 && (!nc || steeper(gam, -w->pc[cspan].cL[3]))) cspan = j;
+            nc += gam < 0.0;
+        }
     if (i0 > i1) { *span = cspan; return nc; }
     int neg = el__tridiag_negatives(dg, up, i0, i1, 0.0);
     if (held) {
@@ -219,4 +233,91 @@ int el__spline_unstable_result(el__spchain *w, const el_spline_result *res, doub
         for (size_t i = 0; i < w->n; i++) w->x[i] = res->angles[i];
     }
     return el__spline_unstable_as(w, held, span);
+}
+
+/*
+ * STABLE_FAMILY (tension mode's own solve, open, no guides): where the solve's batten is an
+ * equilibrium but no minimum (el__spline_unstable_as > 0: neg(H) > 0 or a span past its
+ * force-free length), the family followed in sigma to the tension asked from the solutions at
+ * the rungs STABLE_RUNGS (sigma h^2 on the mean chord, the unit here; each solved as tension
+ * mode solves it, then continuation linear in sigma, el__spline_tension_from): the first that
+ * arrives stable, converged, winding away no more than the batten found and of less integral
+ * kappa^2 + sigma ds is kept. revspline's six ducks (tests/c/test_spline_stable_family.c),
+ * natural ends, at tension 0: the direct Newton's batten 7.160 long (energy 13.54) has a span
+ * past its force-free length, so 3f30dda's count refused it (EL_EDOM, "slides off"), where the
+ * family from sigma h^2 1e-3 arrives at a stable one 5.701 long (12.07); at 0.03 / 0.1 the
+ * same (7.17 unstable -> 5.70 stable). Only where the verdict is unstable: every stable
+ * result is as before (the call is not made). w: the solution at w->sigma (tension mode);
+ * *found 1 with the stable one in w, else 0 with w as it was (bit for bit); EL_OK or
+ * EL_ENOMEM.
+ */
+static const double STABLE_RUNGS[] = {1e-3, 1e-2, 1e-1, 1.0, EL__SP_HIGH_SIGMA};
+enum { NSTABLE_RUNGS = sizeof STABLE_RUNGS / sizeof STABLE_RUNGS[0] };
+
+/* integral kappa^2 + sigma ds of the chain (internal units), and its length */
+static double family_energy(const el__spchain *w, double *L)
+{
+    double e = 0.0;
+    *L = 0.0;
+    for (size_t j = 0; j < w->m; j++) {
+        e += w->pc[j].energy;
+        *L += w->pc[j].v[EL__SP_L];
+    }
+    return e + w->sigma * *L;
+}
+
+/* winding away from its ducks as el__chain_wanders says (longer than EL__SP_WANDER x their
+ * polygon, or crossing itself where it does not: the tension solves' rule, spline_path.c's
+ * unwind); -1 out of memory. (Without it QA19 W2's SHARP ducks at 20 / P^2 took a stable one
+ * 1.64 x its polygon, less energy, for the unstable 1.13 x one) */
+static int family_loops(const el__spchain *w, double L)
+{
+    double poly = 0.0;
+    for (size_t j = 0; j < w->m; j++) poly += w->pc[j].h;
+    return L > EL__SP_WANDER * poly ? 1 : el__chain_crosses(w);
+}
+
+int el__spline_stable_family(el__spchain *w, int max_steps, int *found)
+{
+    *found = 0;
+    size_t span;
+    if (w->lmode || w->closed || w->ng || w->near || !(el__spline_unstable_as(w, 0, &span) > 0)) return EL_OK;
+    const double target = w->sigma;
+    double L0;
+    const double f0 = family_energy(w, &L0);
+    const int l0 = family_loops(w, L0);
+    if (l0 < 0) return EL_ENOMEM;
+    const size_t n = w->n, m = w->m;
+    double *buf = malloc(sizeof(double) * (n + 2 * EL__NV * m));
+    if (!buf) return EL_ENOMEM;
+    el__spsnap was = {buf, buf + n, buf + n + EL__NV * m, 0.0};
+    el__snap_save(w, &was);
+    const int it0 = w->iterations, nb = w->neighbours;
+    w->neighbours = 0;
+    int st = EL_OK;
+    for (int i = 0; i < NSTABLE_RUNGS && !*found; i++) {
+        if (STABLE_RUNGS[i] == target) continue;
+        w->near = 0;
+        w->sigma = STABLE_RUNGS[i];
+        st = el__spline_solve_tension(w, max_steps, 1);
+        if (st == EL_OK && !w->near) st = el__spline_tension_from(w, max_steps, target);
+        if (st == EL_ENOMEM) break;
+        if (st != EL_OK || w->near || w->sigma != target) { st = EL_OK; continue; }
+        double L;
+        const double f = family_energy(w, &L);
+        const int l = family_loops(w, L);
+        if (l < 0) { st = EL_ENOMEM; break; }
+        *found = f < f0 && l <= l0 && !el__spline_unstable_as(w, 0, &span);
+    }
+    w->neighbours = nb;
+    w->near = 0;
+    w->lmode = 0;
+    if (!*found) {   /* the batten found, as it was */
+        el__snap_load(w, &was);
+        w->sigma = target;
+        w->iterations = it0;
+        el__chain_eval(w, 1);
+    }
+    free(buf);
+    return st;
 }

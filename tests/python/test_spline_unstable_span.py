@@ -196,3 +196,53 @@ def test_multi_span_fair_spline_is_stable():
     pts, sigma, clamped, sp = multi_case("natural", from_initial=False)
     hess, _ = fd_hessian(pts, sigma, sp, not clamped)
     assert np.linalg.eigvalsh(hess)[0] > 0.5 and not sp.unstable
+
+
+# revspline's finding 1: six natural ducks whose default solve at tension 0 .. 0.1 landed on a
+# batten 7.16 .. 7.18 long with a span past its force-free length (energy 13.54 at 0), refused
+# at 0 once TENSION_COUNT counted it ("slides off", false) and returned unstable at 0.03 / 0.1,
+# where the family followed from sigma 1e-3 reaches a stable one 5.69 .. 5.70 long (12.07)
+DUCKS6 = np.array([(0.0, 0.0), (0.15878318, 0.5261761), (1.17663445, 0.48656332), (3.00721167, 0.16157516),
+                   (3.78365615, 0.80591715), (3.88522718, 0.07318801)])
+
+
+@pytest.mark.parametrize("tension", [0.0, 0.03, 0.1])
+def test_unstable_default_batten_gives_way_to_the_stable_family(tension):
+    """STABLE_FAMILY: the default solve keeps the stable equilibrium the family from a small
+    tension reaches (the same spline as started from tension 1e-3's by initial=), of less
+    integral kappa^2 + sigma ds, stable by the FD second variation (every eigenvalue > 0)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        sp = el.elastic_spline(DUCKS6, tension=tension)
+        ref = el.elastic_spline(DUCKS6, tension=tension,
+                                initial=el.elastic_spline(DUCKS6, tension=1e-3).pieces)
+    assert not sp.unstable and not ref.unstable
+    assert sp.length == pytest.approx(ref.length, rel=1e-8)
+    assert sp.energy == pytest.approx(ref.energy, rel=1e-8)
+    hess, _ = fd_hessian(DUCKS6, tension, sp, True)
+    assert np.linalg.eigvalsh(hess)[0] > 0.0
+
+
+# a noisy quarter-and-more arc of 5 ducks (radius 10) by length 1.3 x its polygon: every span past
+# its force-free length, c_j (FD) -0.025, -0.517, -0.521, -0.019
+ARC5 = [(9.910214341197186, 0.040916281076017615), (8.933509151949544, 4.4364191371501525),
+        (6.010524610121105, 8.016906931427384), (1.9439945526196745, 9.86560495439407),
+        (-2.6518130341928767, 9.666898304952458)]
+
+
+def test_span_named_is_the_most_negative_c_j():
+    """Where only the spans' lengths make the mode, the span named (elastica.h: "moving most
+    along that mode") is the one of most negative c_j = d2/dl2 integral kappa^2 at fixed end
+    angles (C's least eigenvalue), by a central difference of el.hermite by length; 3f30dda
+    named the least gamma_j = 1 / c_j, the least unstable span (3 here, c_j -0.019)."""
+    pts = np.array(ARC5)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        sp = el.elastic_spline(pts, length=23.64951212082401)
+    c = []
+    for j, q in enumerate(sp.pieces):
+        d = 1e-3 * q.length
+        f = [span_energy(pts[j], pts[j + 1], sp.angles[j], sp.angles[j + 1], q.length + e, q) for e in (-d, 0.0, d)]
+        c.append((f[0] - 2 * f[1] + f[2]) / d ** 2)
+    assert sum(x < 0 for x in c) >= 2 and sp.unstable
+    assert sp.unstable_span == int(np.argmin(c)), c
