@@ -1243,16 +1243,21 @@ typedef struct el_spline_result {
                               point slide_span to slide_span + 1, counted from 0: the span whose
                               length grows most along that mode); 0 otherwise */
     size_t slide_span;     /* also where unstable: the span moving most along that mode (where
-                              only the spans' lengths are the mode: a span past its force-free
-                              length, lengthening as the tension grows; by tension too, where
-                              such a span is the only cause, spline_stable.c's TENSION_COUNT) */
+                              only the spans' lengths are the mode: of the spans past their
+                              force-free length the one whose energy falls fastest in its own
+                              length, the most negative d2/dl2 = 1 / gamma_j; by tension too,
+                              where such spans are the only cause, spline_stable.c's
+                              TENSION_COUNT) */
     int unstable;          /* EL_OK, tension > 0 or length mode, open without G2 ends: 1 where
                               the spline returned is an equilibrium but no minimum of integral
                               kappa^2 + sigma ds with its ducks held (by length: under its
                               length; spline_stable.c): a batten bent so would snap to another
                               shape (QA19 W2's 5 ducks turning 170 deg at sigma 1e-4 .. 0.05).
-                              Returned as found (fair, G2 through the ducks), only flagged.
-                              0: a minimum, or not judged (closed, G2 ends, a circle piece
+                              Returned as found (fair, G2 through the ducks), only flagged;
+                              by tension (no initial pieces) only once the family followed
+                              from a ladder of tensions reached no stable one of less energy
+                              (spline_stable.c's STABLE_FAMILY; tension 0 likewise before it
+                              refuses). 0: a minimum, or not judged (closed, G2 ends, a circle piece
                               |k| >= 1e3 at sigma = kappa^2, by length a singular reduced
                               Hessian; tension 0: slides above) */
 } el_spline_result;
