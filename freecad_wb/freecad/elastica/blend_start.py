@@ -4,10 +4,11 @@ by, free_or_length), or the free G2 batten is a snake (fairer_than_free, g2_blen
 length at the fairest of LENGTH_MULTIPLES times the distance between the ends, and said."""
 from __future__ import annotations
 
-from .blend import NoBlend, bending_energy, blend_core, describe, inflections, plural
+from .blend import (G2_TENSION_DIGITS, NoBlend, bending_energy, blend_core, describe,
+                    inflections, plural)
 from .geometry import edge_end, el, np
 from .kept import checked_call
-from .units import length_mark, per_length_mark
+from .units import length_mark, per_length_mark, tension_mark
 
 
 # Where the free batten (tension 0) does not exist (its bending energy falls without end
@@ -93,7 +94,7 @@ def fair_where_no_free(pts, ends, sibling):
     blend at arc radius 23 mm and 25 mm (the free batten a snake there) but no free G2 batten
     found at 23.5 to 24.5 mm: the default G2 blend read "no G2 blend at tension 0", so a
     designer dragging the radius saw blend, error, blend."""
-    n, e = np(), el()
+    e = el()
     if not isinstance(sibling, e.SmoothElastica):
         return None
     best = fairest_by_length(pts, ends, sibling)
@@ -105,12 +106,24 @@ def fair_where_no_free(pts, ends, sibling):
     # ends also gave 3-5 inflections up to 3 x the distance, no default: the error stands
     if infl > len(e.elastica_inflections(sibling)) + 1 or float(sp.tension) < 0.0:
         return None
-    dist = float(n.linalg.norm(pts[1] - pts[0]))
-    return sp, (f" (no free G2 batten (tension 0) was found here: solved for a length "
-                f"instead, {length_mark(sp.length, 6)} ({m:g} \u00d7 the "
-                f"{length_mark(dist, 4)} between the ends, the fairest of "
-                f"{LENGTH_MULTIPLES[0]:g} to {LENGTH_MULTIPLES[-1]:g} \u00d7, "
-                f"{plural(infl, 'inflection')}): give a length or a tension > 0 to change it)")
+    return sp, " (no free G2 batten (tension 0) was found here: shown instead " + \
+        kept_by_tension(pts, sp, m, infl) + ")"
+
+
+def kept_by_tension(pts, sp, m, infl):
+    """The note's words for the blend ``sp`` fairest_by_length chose (multiple ``m``,
+    ``infl`` inflections), and how to keep it: its tension, to G2_TENSION_DIGITS digits.
+
+    Why the tension and not the length: a blend by length is bent from the G1 solution OF
+    that length, not from the free one this blend was bent from, and reaches another branch
+    (QA22gui F5, arc radius 25 mm: Length 210 mm, what the panel copies on switching to
+    length mode, gives a 5-inflection blend pushed together, tension -0.00941/mm^2, 4.3 x
+    this one's bending energy); Tension = this blend's 0.00203109/mm^2 gives it again."""
+    dist = float(np().linalg.norm(pts[1] - pts[0]))
+    return (f"the fairest by length, {length_mark(sp.length, 6)} = {m:g} \u00d7 the "
+            f"{length_mark(dist, 4)} between the ends, {plural(infl, 'inflection')}, at "
+            f"tension {tension_mark(sp.tension, dist, G2_TENSION_DIGITS)}: set Tension to it "
+            "to keep this curve, a length bends another branch")
 
 
 def fairer_than_free(pts, ends, sibling, free):
@@ -130,28 +143,23 @@ def fairer_than_free(pts, ends, sibling, free):
     against 20 for the same family's 210 mm, 1.25 x): a stationary point no batten laid by
     hand between these ends would take. As where no free G1 batten exists
     (starting_length), a length at the fairest multiple is the start, and said."""
-    n, e = np(), el()
+    e = el()
     # (a Hermite chain near the separatrix: no single-piece start, as g2_blend's)
-    if not isinstance(sibling, e.SmoothElastica) or \
-            inflections(free.pieces) <= len(e.elastica_inflections(sibling)):
+    if not isinstance(sibling, e.SmoothElastica):
         return None
-    dist = float(n.linalg.norm(pts[1] - pts[0]))
-    best = fairest_by_length(pts, ends, sibling)
     free_infl = inflections(free.pieces)
+    if free_infl <= len(e.elastica_inflections(sibling)):
+        return None
+    best = fairest_by_length(pts, ends, sibling)
     if best is None or best[0][0] >= free_infl or \
             best[0][1] >= float(free.energy) * float(free.length):
         return None
     (infl, _), m, sp = best
-    return sp, (f" (the free G2 batten (tension 0) here is a snake of "
-                f"{plural(free_infl, 'inflection')}, {length_mark(free.length, 4)} long, "
-                f"bending energy {per_length_mark(free.energy)}: more inflections than "
-                f"this G1 solution's {len(e.elastica_inflections(sibling))}, "
-                f"the only tension-0 G2 batten found, so solved for a length instead, "
-                f"{length_mark(sp.length, 6)} ({m:g} \u00d7 the {length_mark(dist, 4)} "
-                f"between the ends, the fairest of {LENGTH_MULTIPLES[0]:g} to "
-                f"{LENGTH_MULTIPLES[-1]:g} \u00d7, {plural(infl, 'inflection')}): give a "
-                "length or a tension > 0 to change it)")
+    return sp, (f" (tension 0 gives a {length_mark(free.length, 4)} snake of "
+                f"{plural(free_infl, 'inflection')}, bending energy "
+                f"{per_length_mark(free.energy)}: shown instead "
+                + kept_by_tension(pts, sp, m, infl) + ")")
 
 
 __all__ = ["LENGTH_MULTIPLES", "starting_length", "free_or_length", "fairest_by_length",
-           "fair_where_no_free", "fairer_than_free"]
+           "fair_where_no_free", "fairer_than_free", "kept_by_tension"]
