@@ -83,7 +83,8 @@ def pending():
     """What the workbench has set going and not yet run, in words (None: nothing): the
     open panel's recompute (its timer: panelbase.DELAY_MS after an edit, TYPING_MS after a
     typed key), a document still restoring or not yet finished opening (viewproviders'
-    finish_opening, polled every 50 ms while FreeCAD restores it)."""
+    finish_opening, polled every 50 ms while FreeCAD restores it), an answer_modal poll
+    waiting for its dialog (_POLLS)."""
     from freecad.elastica import taskpanels as T, viewproviders as V
     if T.CURRENT and T.CURRENT[0].timer.isActive():
         return "the open panel's pending recompute"
@@ -92,6 +93,8 @@ def pending():
     restoring = [d.Name for d in App.listDocuments().values() if d.Restoring]
     if restoring:
         return f"documents {restoring} still restoring"
+    if _POLLS:
+        return ", ".join(_POLLS)
     return None
 
 
@@ -257,13 +260,29 @@ def report_text():
     return view.toPlainText() if view is not None else ""
 
 
+# answer_modal's one-dialog polls (no ``keep``) not yet done, in words: pending() names them,
+# so wait() returns only once each has answered its dialog or given up; a poll that found
+# no dialog then cannot outlive the wait and answer a later dialog unseen (it was so from
+# 046b1e9, whose wait() returns after 3 quick round trips, until the 100 ms polls were in
+# pending()).
+_POLLS = []
+
+
 def answer_modal(button, tries=20, keep=None):
     """Answer the next modal dialog with ``button`` (else close it), polling every 100 ms;
-    gives up after ``tries`` polls, so it never answers a later one. ``keep`` (a callable):
-    every modal dialog is answered, the polling going on while keep() is true. Returns the
-    list each dialog's (title, text) is appended to."""
+    gives up after ``tries`` polls, before the next wait() returns (_POLLS), so it never
+    answers a later one. ``keep`` (a callable): every modal dialog is answered, the polling
+    going on while keep() is true (not in _POLLS: the caller ends it). Returns the list
+    each dialog's (title, text) is appended to: empty if it gave up."""
     from PySide import QtCore, QtGui
     said = []
+    live = f"answer_modal's poll waiting for a dialog to press {button!r}"
+    if keep is None:
+        _POLLS.append(live)
+
+    def done():
+        if live in _POLLS:
+            _POLLS.remove(live)
 
     def poll(left):
         if keep is not None and not keep():
@@ -271,6 +290,8 @@ def answer_modal(button, tries=20, keep=None):
         w = QtGui.QApplication.activeModalWidget()
         if w is not None:
             said.append((w.windowTitle(), w.text() if hasattr(w, "text") else ""))
+            if keep is None:
+                done()          # before the click: the dialog's own loop runs it
             for b in w.findChildren(QtGui.QAbstractButton):
                 if b.text().replace("&", "") == button:
                     b.click()
@@ -281,8 +302,28 @@ def answer_modal(button, tries=20, keep=None):
                 return
         if left or keep is not None:
             QtCore.QTimer.singleShot(100, lambda: poll(left - 1))
+        else:
+            done()              # gave up: ``said`` stays empty, for the caller to check
     QtCore.QTimer.singleShot(100, lambda: poll(tries))
     return said
+
+
+def check_no_stray_answer():
+    """A poll that found no dialog must not answer a later one: answer_modal('Yes') with
+    nothing to answer, wait(), then a Yes/No box that answer_modal('No') answers. Fails the
+    smoke (no 'ok' line: the smoke's count stays) where the first poll outlived the wait and
+    pressed Yes (seen so on 046b1e9's wait)."""
+    from PySide import QtGui
+    stray = answer_modal("Yes", tries=5)
+    wait()
+    box = QtGui.QMessageBox(QtGui.QMessageBox.Question, "Elastica smoke", "A later dialog",
+                            QtGui.QMessageBox.Yes | QtGui.QMessageBox.No)
+    meant = answer_modal("No")
+    got = box.exec_()
+    wait()
+    if stray or not meant or got != QtGui.QMessageBox.No or _POLLS:
+        check(False, "answer_modal: a poll that found no dialog outlived wait() and answered "
+              f"a later one (stray {stray}, meant {meant}, box answered {got}, live {_POLLS})")
 
 
 def run_on(doc, command, picks):
@@ -1138,6 +1179,7 @@ def run():
     Gui.activateWorkbench("ElasticaWorkbench")
     pump()
     check(Gui.activeWorkbench().name() == "ElasticaWorkbench", "workbench activates")
+    check_no_stray_answer()
     cmds = Gui.listCommands()
     for c in ("Elastica_Fit", "Elastica_FitCsv", "Elastica_Blend", "Elastica_Spline",
               "Elastica_EllipticBlend", "Elastica_G2Quad", "Elastica_Comb"):
