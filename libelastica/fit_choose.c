@@ -467,8 +467,21 @@ static int solve_start(fit_run_state *R, size_t ci, fit_trial *tr, double *x0, i
             return EL_OK;
         }
     }
+    /* the discrete fit's smooth start with rows (from_smooth, need_ipopt) is near too: Ipopt
+     * from the smooth fit's polygon, which meets the rows nearly, not from the unconstrained
+     * fit that Levenberg-Marquardt would return to and the penalty stages from there. From
+     * that basin every start of a ship frame held at both end tangents and curvatures (57
+     * points with a gap, 1 % noise, QA22 B) shrank to h ~ 1e-14 .. 1e-9 off the rows and the
+     * fit ended EL_EMAXITER at rms 3.84 with an end curvature 5e7 off; Ipopt from the smooth
+     * polygon meets them in 2 iterations at rms 0.3564, the smooth fit's. An ellipse arc held
+     * at both ends, both curvatures and a length bound (QA22 A): 0.4038 at the bound, wander
+     * gap 34 -> 0.2688, the smooth fit's. The caller's start of a discrete fit with rows
+     * (caller_twice's first) so too: started on the smooth fit's polygon, 0.2686 off the
+     * rows, the ellipse returned 0.4038 on the bound; now 0.2688 (scipy SLSQP's from there) */
     const int near = (R->staged && pre > 0) || R->polish_run ||
-                     (from_smooth && ci == R->natural_ci) || ci < R->nfamily || ci < R->nconj;
+                     (from_smooth && (ci == R->natural_ci || R->need_ipopt)) || ci < R->nfamily ||
+                     ci < R->nconj ||
+                     (R->caller_twice && ci == 0 && R->need_ipopt && R->model == FIT_DISCRETE);
     if ((st = el__fit_solve_candidate(ob, &R->o, &R->con_rows, R->xl, R->xu, R->need_ipopt,
                                       R->no_polish, x0, R->best.f, r, R->tmp, near,
                                       R->polish_run || from_curve)))
