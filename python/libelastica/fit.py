@@ -766,8 +766,9 @@ def quiet_fit(points, *args, **kwargs) -> FitResult:
 
 def judging_fit(points, *args, **kwargs) -> FitResult:
     """:func:`quiet_fit` without el.fit's back-and-forth gate (fit_retrace.py): a fit made
-    only to judge or compare (fit_keyline's one-elastica check, misfit's corner parts, the
-    sparse check's smooth fit, resampled_reference's start), not returned to the user. Such
+    only to judge or compare (fit_keyline's one-elastica check, misfit's corner parts), not
+    returned to the user or quoted to them as el.fit's (the sparse check's smooth fit and
+    resampled_reference's start are: they stay quiet_fit's). Such
     a fit can be a misfit by design (an S fitted by one elastica), which the gate refitted
     in curve order (curve_order ~3 ms of a 1000-point scan's keyline, 5.7 -> 23.8 ms)."""
     return _quietly(_fit, points, args, dict(kwargs, gate=False))

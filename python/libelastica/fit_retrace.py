@@ -3,8 +3,8 @@ passed back and forth, QA20 F4) are fitted again in curve order where the fit in
 shows it (its feet run back, it did not converge, or it lies far above the points' noise:
 the misfit verdict), and that fit is kept where its feet run back or forth and its rms is
 lower. Only :func:`libelastica.fit.fit`'s gate, for the user's own fits: a fit made only to
-judge or compare (fit_keyline's one-elastica check, the misfit corner's parts, the sparse
-check's smooth fit) fits the points as given (:func:`libelastica.fit.judging_fit`).
+judge or compare (fit_keyline's one-elastica check, the misfit corner's parts) fits the
+points as given (:func:`libelastica.fit.judging_fit`).
 """
 from __future__ import annotations
 
@@ -85,4 +85,3 @@ def _retraced(model: str, pts: np.ndarray, o, rms: float):
     if back is None:
         return None, None, None, None, None, float(res.rms)
     return res, st, dist, foot, back, float(res.rms)
-
