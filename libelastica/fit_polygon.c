@@ -414,7 +414,12 @@ void el__fit_polygon_distances_by(const fit_objective *o, const double *V, size_
         }
         long clo = j0, chi = j0 - 1;     /* the segments searched so far, clo .. chi */
         for (int dir = -1; dir <= 1; dir += 2) {
+            long walked = 0;
             for (long seg = dir < 0 ? j0 - 1 : j0; seg >= 0 && seg <= last; seg += dir) {
+                /* a long walk's segments count as a long range's (nearest_in_range): the
+                 * tree is built once they pass the polygon's segments */
+                if (tree_state == 0 && ++walked > TREE_MIN && ++scanned > last + 1)
+                    tree_state = tree_build(&T, V, last + 1) ? 1 : -1;
                 /* a run of segments the walk passes whole: skipped by the tree */
                 if (tree_state == 1) {
                     const long next = walk_skip(&T, seg, dir, P, lmax, &bd, &best, &bt);
