@@ -420,7 +420,8 @@ int el__hermite_solve_limited(const double p0[2], const double t0[2], const doub
     }
     /* found, exact in the solver's variables, but not representable to tol (below) */
     /* (on the stack for the usual few roots: no malloc and free per problem) */
-    el_hermite_solution ubuf[8], *unrep = roots.n <= 8 ? ubuf : malloc(roots.n * sizeof *unrep);
+    /* (+2: the chord loops' pair, hermite_chord.c) */
+    el_hermite_solution ubuf[10], *unrep = roots.n <= 8 ? ubuf : malloc((roots.n + 2) * sizeof *unrep);
     size_t nunrep = 0, near_u = (size_t)-1;   /* near_u: the near-straight root's entry */
     int near_found = 0;
     if (!unrep) { free(sol); free(roots.v); return EL_ENOMEM; }
@@ -536,7 +537,7 @@ int el__hermite_solve_limited(const double p0[2], const double t0[2], const doub
         if (c3 == EL_EMAXITER) status = EL_EMAXITER;   /* the case-3 curves' search incomplete */
     }
     /* between tangents along the chord, the separatrix loops the roots cannot see (hermite_chord.c) */
-    if (el__hermite_chord_loops(&fr, &pr, opt, &sol, &n, &cap)) {
+    if (el__hermite_chord_loops(&fr, &pr, opt, &sol, &n, &cap, unrep, &nunrep)) {
         if (unrep != ubuf) free(unrep);
         return EL_ENOMEM;
     }

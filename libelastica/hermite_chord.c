@@ -27,17 +27,18 @@
  * loses). Where the data are only near P1 = V1 = 0 (|P1|, |V1| <= CHORD_NEAR) each is polished
  * onto them (el__hermite_polish_to) and kept at the data's residual <= tol, still a loop
  * (turning 2 pi, its length within 1e-2) and within one period (the move can take a whole
- * period past it on one side). A loop the roots found too is replaced by this one.
+ * period past it on one side). A loop the roots found too is replaced by this one. Where no
+ * piece meets tol by tension (sigma |p1 - p0|^2 ~ 1300 .. 4000: k = 1 + a few ulps, residual
+ * ~1e-9) the loop is counted unrepresentable, once, unless the roots returned it (as a chain).
  * By length (hermite_length.c's tracing missed them below ~1.1 |p1 - p0|) the same closed form
  * gives L(t) = 2 K / (k sqrt(mu)), one equation in t for the given length (chord_loops_length,
  * below), each root's loop and mirror kept the same way.
- * Not covered: the loops that no single piece carries to tol, where k - 1 lies below an ulp
- * but the tails e^-(sqrt(mu) L / 2) above tol (sqrt(mu) |p1 - p0| ~ 25 .. 45: by length L ~
- * 1.09 .. 1.16 |p1 - p0|; by tension sigma |p1 - p0|^2 ~ 2000 .. 3500 in one frame tried;
- * the closed form's residual 1e-9 at tol 1e-10), the two-loop chains (one period of an
- * inflectional elastica), and on data moved off the chord the loop that slides off centre
- * beyond the polish's reach (p1 or t1 moved by 1e-12 .. 1e-2 by tension, 1e-10 .. 1e-2 by
- * length: one of the pair found in about half of the problems, as before).
+ * Not covered: by length, the loops that no single piece carries to tol, where k - 1 lies below
+ * an ulp but the tails e^-(sqrt(mu) L / 2) above tol (sqrt(mu) |p1 - p0| ~ 25 .. 45: L ~ 1.09 ..
+ * 1.16 |p1 - p0|; the closed form's residual 1e-9 at tol 1e-10: neither kept nor counted), the
+ * two-loop chains (one period of an inflectional elastica), and on data moved off the chord the
+ * loop that slides off centre beyond the polish's reach (p1 or t1 moved by 1e-12 .. 1e-2 by
+ * tension, 1e-10 .. 1e-2 by length: one of the pair found in about half of the problems, as before).
  */
 #include "hermite_internal.h"
 #include <gsl/gsl_errno.h>
@@ -55,7 +56,7 @@
  * the circle's limit mc -> 1 (k -> infinity), where sqrt(mu) cancels (4 k (K - E) ~ k m): the
  * large loops of lower tensions are the x chart's (found, exact data, sigma |p1 - p0|^2 1e-6 .. 20) */
 #define T_LO (-690.0)
-#define T_HI (-0.01005033585350145)
+#define T_HI (-0.01005033585350145)   /* ln 0.99 */
 #define T_SAMPLES 48
 
 typedef struct { double sigma, L, E, x2; } whole_loop;
@@ -126,9 +127,19 @@ static int loop_solution(const hframe *fr, double sigma, double t, int side, el_
 }
 static int chord_loops_length(const hframe *fr, const hprob *pr, const el_hermite_options *opt,
                               el_hermite_solution **sol, size_t *n, size_t *cap);
+/* a and b the same loop: el__hermite_same_solution, or (a representation of it the roots gave,
+ * whose end curvatures are its far tails' rounding: a chain's kappa0 2.9e-6 where the loop's is
+ * 1.7e-7 at a = 0.3, off (3000, -2100) d, sigma d^2 2773) the same length, energy and sense */
+static int same_loop(const el_hermite_solution *a, const el_hermite_solution *b, double d)
+{
+    return el__hermite_same_solution(a, b, d) ||
+           (fabs(a->length - b->length) <= 1e-7 * (a->length + b->length) &&
+            fabs(a->energy - b->energy) <= 1e-7 * (a->energy + b->energy) && a->curve.k * b->curve.k > 0.0);
+}
 
 int el__hermite_chord_loops(const hframe *fr, const hprob *pr, const el_hermite_options *opt,
-                            el_hermite_solution **sol, size_t *n, size_t *cap)
+                            el_hermite_solution **sol, size_t *n, size_t *cap,
+                            el_hermite_solution *unrep, size_t *nunrep)
 {
     if (opt->mode == EL_HERMITE_LENGTH) return chord_loops_length(fr, pr, opt, sol, n, cap);
     if (opt->mode != EL_HERMITE_TENSION || !(pr->sigma > 0.0) || !(fabs(pr->P1) <= CHORD_NEAR) ||
@@ -138,7 +149,7 @@ int el__hermite_chord_loops(const hframe *fr, const hprob *pr, const el_hermite_
     gsl_function F = {sigma_gap, &tg};
     double tprev = T_LO, gprev = sigma_gap(T_LO, &tg);
     gsl_root_fsolver *s = NULL;
-    int rc = EL_OK;
+    int rc = EL_OK, counted = 0;   /* (the caller's room in unrep: one bracket, sigma(t) monotone) */
     for (int i = 1; i <= T_SAMPLES && !rc; i++) {
         const double t = T_LO + (T_HI - T_LO) * i / T_SAMPLES, g = sigma_gap(t, &tg);
         if (gprev > 0.0 && g <= 0.0) {   /* (NAN on either side: no bracket) */
@@ -163,14 +174,39 @@ int el__hermite_chord_loops(const hframe *fr, const hprob *pr, const el_hermite_
                     double th[2];
                     const double h[2] = {0.0, x.curve.length};
                     /* (one period at most: the data's move can take a whole period past it) */
-                    if (!(x.residual <= opt->tol) || !(fabs(x.length - L0) <= 1e-2 * L0) ||
+                    if (!(fabs(x.length - L0) <= 1e-2 * L0) ||
                         (x.length != L0 && !el__hermite_within_period(&x.curve, 1)) ||
                         el_smooth_eval(&x.curve, 2, h, NULL, th, NULL) ||
                         !(fabs(fabs(th[1] - th[0]) - 2.0 * M_PI) <= 1e-3))
                         continue;
-                    x.sigma = opt->sigma;
+                    /* a loop no piece meets to tol: k - 1 a few ulps (mc ~ 1e-13 .. 1e-17 at sigma
+                     * |p1 - p0|^2 ~ 1300 .. 4000), where one ulp of k moves the end by ~eps / k'
+                     * (hermite_chain.c; polished residual 1.1e-9 at 2000, k' = sqrt(mc) = e^(t/2)): the
+                     * curve exists (the closed form is exact in t), counted unrepresentable
+                     * (hermite.c drops it where the roots returned it, as a chain) */
+                    if (!(x.residual <= opt->tol)) {
+                        if (!(x.residual <= 1e3 * DBL_EPSILON / exp(0.5 * root)) || counted == 2) continue;
+                        /* once: not where the roots returned it (a chain), and replacing a root's
+                         * representation counted already (its chain not met: residual 0.11,
+                         * kappa0 twice the loop's, at a = 0.3, off (3000, -2100) d, sigma d^2 2476) */
+                        int kept = 0;
+                        for (size_t j = 0; j < *n && !kept; j++) kept = same_loop(&x, &(*sol)[j], fr->d);
+                        if (kept) continue;
+                        size_t j = 0;
+                        while (j < *nunrep && !same_loop(&x, &unrep[j], fr->d)) j++;
+                        unrep[j] = x;
+                        if (j == *nunrep) { (*nunrep)++; counted++; }
+                        continue;
+                    }
+                    /* a root's representation of it counted unrepresentable is not counted: it
+                     * becomes this loop, which hermite.c finds returned (the roots' piece at
+                     * residual 0.086 beside both loops at a = -2.5, d = 1e-3, sigma d^2 4363) */
+                    for (size_t j = 0; j < *nunrep; j++)
+                        if (same_loop(&x, &unrep[j], fr->d)) unrep[j] = x;
                     /* the exact loop replaces a representation of it the roots gave (a chain or
-                     * a piece whose loop the rounding of its phase moved off centre) */
+                     * a piece whose loop the rounding of its phase moved off centre), whatever
+                     * their residuals: the roots' piece can meet the ends better with its loop
+                     * off centre (kept, it peaks at 0.15 of L at a = 2, d = 1e3, sigma d^2 9e4) */
                     int dup = 0;
                     for (size_t j = 0; j < *n && !dup; j++)
                         if (el__hermite_same_solution(&x, &(*sol)[j], fr->d)) { dup = 1; (*sol)[j] = x; }

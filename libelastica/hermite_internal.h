@@ -263,8 +263,9 @@ int el__hermite_near_straight(const hframe *fr, double sigma, double tol, el_her
 /* el__hermite_polish in either mode (target: the mode's sigma or length): once, then again
  * while it improves and misses tol. */
 int el__hermite_polish_to(const hframe *fr, int mode, double target, double tol, el_hermite_solution *s);
-/* Whether p is at most one curvature period long (the solution set's bound), to 1e-12 relative
- * and, where rounding, to the period's uncertainty from the double k too (hermite_polish.c). */
+/* Whether p is at most one curvature period long (the solution set's bound), to 1e-12 relative,
+ * the period as the evaluator's, and, where rounding, to the period's uncertainty from the double
+ * k too (hermite_polish.c). */
 int el__hermite_within_period(const el_smooth_params *p, int rounding);
 /* hermite_near.c: a near-straight root's solution s checked against the root's state st (its
  * end curvatures within 10 % of it: EL_OK, with s's end curvatures and inflection set). */
@@ -283,9 +284,12 @@ int el__hermite_add_images(const hframe *fr, const el_hermite_options *opt, doub
 /* hermite_chord.c: by tension (sigma > 0) or by length, between tangents along the chord
  * (|P1|, |V1| <= 1e-2, P2, V2 > 0), the whole-period separatrix loops of the exactly symmetric problem (P1 = V1 = 0),
  * each and its mirror image polished onto the data, added at residual <= tol (replacing the
- * same curve found by the roots); EL_ENOMEM (the list freed) where it cannot grow. */
+ * same curve found by the roots); a loop that no piece meets to tol only by the rounding of its
+ * k (residual <= 1e3 eps / k') appended to unrep (*nunrep, room for 2 more); EL_ENOMEM (the
+ * list freed) where it cannot grow. */
 int el__hermite_chord_loops(const hframe *fr, const hprob *pr, const el_hermite_options *opt,
-                            el_hermite_solution **sol, size_t *n, size_t *cap);
+                            el_hermite_solution **sol, size_t *n, size_t *cap,
+                            el_hermite_solution *unrep, size_t *nunrep);
 int el__hermite_near_case3(const hframe *fr, const double u0[2], const hprob *pr,
                            const el_hermite_options *opt, long max_evals, el_hermite_solution **sol,
                            size_t *n, size_t *cap);

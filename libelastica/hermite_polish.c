@@ -244,18 +244,24 @@ int el__hermite_polish_to(const hframe *fr, int mode, double target, double tol,
 }
 
 /* Whether the curve p is at most one curvature period long (to 1e-12 relative; with
- * rounding, also to the period's own uncertainty from the double k, DBL_EPSILON / (k'^2 K)
- * relative, which near the separatrix exceeds it: k = 1 + 1e-8, 5e-10): kappa =
- * kappa_m cn(u; k), period 4 K(k) in u, for |k| < 1; kappa = 2 k sqrt(mu) dn(|k| u; 1/|k|),
- * period 2 K(1/|k|) in |k| u, for |k| > 1 (the header's parametrisation). */
+ * rounding, also to the period's uncertainty from the double k, DBL_EPSILON / (k'^2 K)
+ * relative: one ulp of k moves K by ~eps / k'^2 (K ~ ln(4 / k'), dK / d(k'^2) = -1 / (2 k'^2)),
+ * which near the separatrix exceeds it: 1.3 % at k = 1 + 2 ulps, where a loop polished onto
+ * exact data runs that far past its double k's period; without it the loop at a = 0, d = 1e-3,
+ * sigma d^2 1762 is lost): kappa = kappa_m cn(u; k), period 4 K(k) in u, for |k| < 1; kappa =
+ * 2 k sqrt(mu) dn(|k| u; 1/|k|), period 2 K(1/|k|) in |k| u, for |k| > 1 (the header's
+ * parametrisation). k' and K are the evaluator's (el__modulus_init: k'^2 from sqrt(|k| - 1)
+ * sqrt(|k| + 1) / |k|, exact to a few ulps as k -> 1, where (1 - g)(1 + g) of g = 1 / |k|
+ * lost it to ~eps / k'^2 relative). */
 int el__hermite_within_period(const el_smooth_params *p, int rounding)
 {
-    const double k = fabs(p->k), g = k < 1.0 ? k : 1.0 / k;
-    double K;
-    if (g == 1.0) return 1;   /* the separatrix: no period */
+    const double k = fabs(p->k);
+    el__modulus mod;
     /* (no period known: rejected, a curve longer than one would be added otherwise) */
-    if (!(g < 1.0) || el__ellint_complete(g, (1.0 - g) * (1.0 + g), &K, NULL)) return 0;
-    const double period = (k < 1.0 ? 4.0 * K : 2.0 * K / k) / sqrt(p->mu);
-    const double slack = 1e-12 + (rounding ? DBL_EPSILON / ((1.0 - g) * (1.0 + g) * K) : 0.0);
+    if (el__modulus_init(k, 0, &mod)) return 0;
+    if (mod.kg == 1.0) return 1;   /* the separatrix: no period */
+    if (!isfinite(mod.K)) return 0;
+    const double period = (k < 1.0 ? 4.0 * mod.K : 2.0 * mod.K / k) / sqrt(p->mu);
+    const double slack = 1e-12 + (rounding ? DBL_EPSILON / (mod.kp * mod.kp * mod.K) : 0.0);
     return p->length <= period * (1.0 + slack);
 }

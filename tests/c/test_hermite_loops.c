@@ -1,18 +1,21 @@
-/* Hermite solutions between tangents along the chord (t0 = t1 along p1 - p0) at high tension:
- * besides the straight segment, a loop turning once counter-clockwise and its mirror image in
- * the chord, clockwise. Each is one curvature period of a non-inflectional elastica whose k - 1
- * lies far below double precision (~e^-(sqrt(mu) L)): the separatrix k = +-1 in double, kappa =
- * 2 sqrt(mu) sech(sqrt(mu) s + q), sqrt(mu) = sqrt(sigma / 2), its length beyond the chord
- * 4 / sqrt(mu) and its energy 8 sqrt(mu) (integrals of sech^2), returned as a chain. The
- * symmetric problem's solution set is closed under the chord's mirror (hermite_symmetry.c),
- * but the mirror image of such a chain was taken for the chain itself
- * (el__hermite_same_solution compared the turning of the first pieces only, and a chain's first
- * piece ends before its loop): tangents (cos -2.5, sin -2.5) at sigma |p1 - p0|^2 = 5000, the
- * ccw loop alone. Every curve checked by hermite_check.h. */
+/* Hermite solutions between tangents along the chord (t0 = t1 along p1 - p0), by tension and by
+ * length: besides the straight segment, a loop turning once counter-clockwise and its mirror image in the chord,
+ * clockwise. Each is one curvature period of a non-inflectional elastica whose k - 1 lies at or
+ * below double precision above sigma |p1 - p0|^2 ~ 1000 (~e^-(sqrt(mu) L)): kappa = 2 sqrt(mu)
+ * sech(sqrt(mu) s + q) at the separatrix, sqrt(mu) = sqrt(sigma / 2), its length beyond the chord
+ * 4 / sqrt(mu) and its energy 8 sqrt(mu) (integrals of sech^2). hermite_chord.c returns each as one
+ * piece in closed form, or counts it unrepresentable where no piece meets tol (sigma |p1 - p0|^2
+ * ~ 1300 .. 4000, k = 1 + a few ulps); the roots return some as chains. The solution set is closed
+ * under the chord's mirror (hermite_symmetry.c), but the mirror image of a chain was taken for
+ * the chain itself (el__hermite_same_solution compared the turning of the first pieces only, and
+ * a chain's first piece ends before its loop): tested on a chain directly, since the solves
+ * above return single pieces. Every curve checked by hermite_check.h. */
 #include "testutil.h"
 #include "hermite_check.h"
+#include "hermite_internal.h"
 #include <gsl/gsl_sf_ellint.h>
 #include <stdio.h>
+#include <string.h>
 
 START_TEST(a_loops_mirror_image_is_kept_beside_it)
 {
@@ -194,6 +197,92 @@ START_TEST(loops_between_tangents_along_the_chord_by_length)
 }
 END_TEST
 
+/* Exact tangents along the chord at sigma |p1 - p0|^2 in the band 1000 .. 5000, which the grid
+ * above steps over: there the closed-form loop's k is 1 + a few ulps (or rounds to 1 with e^-K
+ * ~ 1e-9) and no single piece meets tol 1e-10 (residual 1.1e-9 at 2000): both loops are returned
+ * or counted in res.unrepresentable, besides the segment. They were dropped and not counted
+ * (a 0, d 1, sigma d^2 2000: the segment alone, unrepresentable 0; 252 of 6000 problems). */
+START_TEST(loops_at_every_tension_are_returned_or_counted)
+{
+    const double angles[] = {0.0, 0.3, M_PI / 2, 2.0, -2.5}, scales[] = {1e-3, 1.0, 1e3};
+    for (size_t ia = 0; ia < 5; ia++)
+        for (size_t is = 0; is < 3; is++)
+            for (int off = 0; off < 2; off++)
+                for (double sd2 = 1000.0; sd2 <= 5000.0; sd2 *= 1.12) {
+                    const double d = scales[is], t[2] = {cos(angles[ia]), sin(angles[ia])};
+                    const double p0[2] = {off * 3000.0 * d, off * -2100.0 * d};
+                    const double p1[2] = {p0[0] + d * t[0], p0[1] + d * t[1]};
+                    el_hermite_options o;
+                    el_hermite_options_defaults(&o);
+                    o.sigma = sd2 / (d * d);
+                    el_hermite_result r;
+                    ck_assert_int_eq(el_hermite_solve(p0, t, p1, t, &o, &r), EL_OK);
+                    check_result(p0, t, p1, t, &r, o.tol);
+                    ck_assert_msg(r.count + r.unrepresentable == 3, "a %g d %g off %d sigma d^2 %g: %zu + %zu unrepresentable",
+                                  angles[ia], d, off, sd2, r.count, r.unrepresentable);
+                    el_hermite_result_free(&r);
+                }
+}
+END_TEST
+
+/* el__hermite_same_solution on a chain and its mirror image in the chord (hermite.c: the chain
+ * branch). A separatrix loop (k = 1, mu = 1, u from -22 to 22) split at u = -18, before its loop:
+ * the first pieces of the chain and of its mirror turn alike (by ~1e-7 rad), the end curvatures
+ * (~1e-9) and lengths agree, and only the whole curves' turning, +-2 pi, tells them apart. The
+ * chord loops are single pieces now, so no solve reaches this branch: taken for the chain, the
+ * mirror image of a loop was dropped (tangents (cos -2.5, sin -2.5) at sigma d^2 = 5000). */
+static void mirror_piece(const el_smooth_params *p, double y0, el_smooth_params *m)
+{
+    *m = *p;
+    m->y0 = 2.0 * y0 - p->y0;
+    m->phi = -p->phi;
+    m->k = -p->k;
+}
+
+START_TEST(a_chain_and_its_mirror_image_are_two_solutions)
+{
+    el_hermite_solution a;
+    memset(&a, 0, sizeof a);
+    el_smooth_params p = {.x0 = 0.5, .y0 = -2.0, .phi = M_PI, .mu = 1.0, .k = 1.0, .q = -22.0, .length = 4.0};
+    ck_assert_int_eq(el_smooth_check(&p), EL_OK);
+    const double h[2] = {0.0, p.length};
+    double xy[4], th[2], ka[2];
+    ck_assert_int_eq(el_smooth_eval(&p, 2, h, xy, th, ka), EL_OK);
+    ck_assert(fabs(th[1] - th[0]) <= 5e-7);   /* (the premise: the first piece ends before the loop) */
+    el_smooth_params r = p;
+    r.x0 = xy[2];
+    r.y0 = xy[3];
+    r.q = -18.0;
+    r.length = 40.0;
+    const double hr[2] = {0.0, r.length};
+    double xyr[4], thr[2], kar[2];
+    ck_assert_int_eq(el_smooth_eval(&r, 2, hr, xyr, thr, kar), EL_OK);
+    a.curve = p;
+    a.rest[0] = r;
+    a.npieces = 2;
+    a.length = 44.0;
+    a.sigma = 2.0;
+    a.kappa0 = ka[0];
+    a.kappa1 = kar[1];
+    a.energy = 16.0;
+    const double d = hypot(xyr[2] - p.x0, xyr[3] - p.y0);
+    el_hermite_solution b = a;
+    mirror_piece(&a.curve, p.y0, &b.curve);
+    mirror_piece(&a.rest[0], p.y0, &b.rest[0]);
+    b.kappa0 = -a.kappa0;
+    b.kappa1 = -a.kappa1;
+    /* the mirror image is the reflected curve: its end is a's reflected, its turning -a's */
+    ck_assert_int_eq(el_smooth_eval(&b.rest[0], 2, hr, xy, th, NULL), EL_OK);
+    ck_assert(fabs(xy[2] - xyr[2]) <= 1e-12 * d && fabs(xy[3] - (2.0 * p.y0 - xyr[3])) <= 1e-12 * d);
+    ck_assert(fabs((thr[1] - thr[0]) - 2.0 * M_PI) <= 1e-6 && fabs((th[1] - th[0]) + 2.0 * M_PI) <= 1e-6);
+    ck_assert(fabs(a.kappa0) * d < 1e-7 && fabs(a.kappa1) * d < 1e-7);
+    ck_assert(el__hermite_same_solution(&a, &a, d));
+    ck_assert(el__hermite_same_solution(&b, &b, d));
+    ck_assert_msg(!el__hermite_same_solution(&a, &b, d), "the mirror image taken for the chain");
+    ck_assert_msg(!el__hermite_same_solution(&b, &a, d), "the chain taken for its mirror image");
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("hermite_loops");
@@ -202,6 +291,8 @@ int main(void)
     tcase_add_test(tc, a_loops_mirror_image_is_kept_beside_it);
     tcase_add_test(tc, loops_between_tangents_along_the_chord_by_tension);
     tcase_add_test(tc, loops_between_tangents_along_the_chord_by_length);
+    tcase_add_test(tc, loops_at_every_tension_are_returned_or_counted);
+    tcase_add_test(tc, a_chain_and_its_mirror_image_are_two_solutions);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }
