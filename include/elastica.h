@@ -1757,6 +1757,23 @@ int el_affine_polyline(size_t nsamples, const double *samples, const double *tan
 /* Release what el_affine_polyline allocated and zero *res; NULL is a no-op. */
 void el_affine_result_free(el_affine_result *res);
 
+/*
+ * The pieces el_affine_polyline splits these samples into (§4.4, the same inputs and
+ * options: only split_inflections matters here) and the edge counts that keep its end
+ * pieces: at n edges an end piece worth less than 1.5 edges of affine length,
+ * n S_end / S_total < 1.5, is left out (the polyline then starts / stops at the
+ * inflection). *npieces: the pieces of f~; ends[0]: the sample index where the first ends,
+ * ends[1]: where the last starts (0 and nsamples-1 for one piece); n_min[0]: the fewest n
+ * in [3, EL_AFFINE_MAX_EDGES] keeping the first piece, n_min[1]: keeping both end pieces
+ * (0 where none up to EL_AFFINE_MAX_EDGES does). Exact: el_affine_polyline's own test, and
+ * monotone in n (every n >= n_min keeps them, every n below leaves one out), so a caller
+ * searching edge counts over the same samples skips the counts below at no risk.
+ * Errors: EL_EINVAL, EL_EDOM (as el_affine_polyline's for these samples), EL_ENOMEM.
+ */
+int el_affine_end_pieces(size_t nsamples, const double *samples, const double *tangents,
+                         size_t ninfl, const size_t *infl, const el_affine_options *opt,
+                         size_t *npieces, size_t ends[2], size_t n_min[2]);
+
 
 /* ------------------------------------------------------------------- bspline */
 

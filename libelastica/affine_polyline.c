@@ -361,6 +361,147 @@ static int piece_landed(const piece *P, int last)
     return !(miss > 0.5 || (last && miss < -0.5));
 }
 
+/* ------------------------------------- §4.4: the pieces of f~ and the end pieces kept */
+
+/* §4.4 step 1 and the pieces' affine lengths: f~'s arcs (from the caller's tangents, else
+ * (15)), split at the inflections (the caller's sample indices, else where the arcs'
+ * turning sense changes) into *np pieces bnd[p]..bnd[p+1] of sense sig[p] and affine
+ * length Sp[p] (its arcs' S; a wrong-sense arc is allowed only next to a piece end, and
+ * straightened there), *Stot their sum (in piece order). arcs (N), bnd (N + 2), Sp and
+ * sig (N + 1) are the caller's. EL_EDOM: f~ straight, an inflection with `split` off, a
+ * piece without turning or with an inflection inside. */
+static int pieces_split(size_t N, const double *samples, const double *tangents, size_t ninfl,
+                        const size_t *infl, int split, arc *arcs, size_t *bnd, size_t *np_out,
+                        double *Sp, int *sig, double *Stot_out)
+{
+    if (tangents) build_arcs_tangents(N, samples, tangents, arcs);
+    else build_arcs(N, samples, arcs);
+    size_t nb = 0;
+    bnd[nb++] = 0;
+    if (ninfl > 0) {
+        for (size_t i = 0; i < ninfl; i++) bnd[nb++] = infl[i];
+    } else {
+        long jprev = -1;
+        for (size_t j = 0; j < N; j++) {
+            if (arcs[j].sgn == 0) continue;
+            if (jprev >= 0 && arcs[j].sgn != arcs[jprev].sgn) {
+                size_t a = (size_t)jprev + 1, b = j;
+                bnd[nb++] = (a == b) ? a : (size_t)floor(0.5 * (double)(a + b) + 0.5);
+            }
+            jprev = (long)j;
+        }
+        if (jprev < 0) return EL_EDOM;                  /* f~ is straight */
+        if (nb > 1 && !split) return EL_EDOM;
+    }
+    bnd[nb++] = N;
+    size_t np = nb - 1;
+    double Stot = 0.0;
+    for (size_t p = 0; p < np; p++) {
+        double sum = 0.0;
+        for (size_t j = bnd[p]; j < bnd[p + 1]; j++) sum += arcs[j].sgn * arcs[j].S;
+        sig[p] = sum > 0 ? 1 : (sum < 0 ? -1 : 0);
+        if (sig[p] == 0) return EL_EDOM;
+        Sp[p] = 0.0;
+        for (size_t j = bnd[p]; j < bnd[p + 1]; j++) {
+            if (arcs[j].sgn == -sig[p]) {
+                if (j != bnd[p] && j + 1 != bnd[p + 1]) return EL_EDOM;  /* inflection inside */
+                arc_straight(&arcs[j]);
+            }
+            Sp[p] += arcs[j].S;
+        }
+        Stot += Sp[p];
+    }
+    *np_out = np;
+    *Stot_out = Stot;
+    return EL_OK;
+}
+
+/* An end piece worth less than 1.5 edges of affine length at n edges (an inflection right
+ * next to an end of the curve: n Sp / Stot < 1.5) is left out: its 3 forced edges would
+ * have to be far longer than the piece. The polyline then starts / stops at the
+ * inflection. The first end first, then the last against what is left: returns the pieces
+ * kept, from *p0 on, *Stot less the ones left out. */
+static size_t pieces_kept(size_t n, const double *Sp, size_t np, size_t *p0_out, double *Stot)
+{
+    size_t p0 = 0;
+    while (np > 1 && (double)n * Sp[p0] / *Stot < 1.5) {
+        *Stot -= Sp[p0];
+        p0++;
+        np--;
+    }
+    while (np > 1 && (double)n * Sp[p0 + np - 1] / *Stot < 1.5) {
+        *Stot -= Sp[p0 + np - 1];
+        np--;
+    }
+    *p0_out = p0;
+    return np;
+}
+
+/* The fewest n in [3, EL_AFFINE_MAX_EDGES] at which pieces_kept keeps the first piece
+ * (`both` 0) or both end pieces (`both` 1), 0 where none does. Bisection is exact: the
+ * tests n Sp / Stot < 1.5 are monotone in n in floating point too (rounding is monotone:
+ * fl(n Sp) does not decrease as n grows, nor fl(x / Stot) as x does, Sp >= 0, Stot > 0), and
+ * both ends are kept iff n Sp[0] / Stot >= 1.5 and n Sp[np-1] / Stot >= 1.5 at the full
+ * Stot (the second loop runs against the full Stot when the first left nothing out). */
+static int keeps_ends(size_t n, const double *Sp, size_t np, double Stot, int both)
+{
+    size_t p0 = 0, kept = pieces_kept(n, Sp, np, &p0, &Stot);
+    return p0 == 0 && (!both || kept == np);
+}
+
+static size_t fewest_keeping(const double *Sp, size_t np, double Stot, int both)
+{
+    size_t lo = 3, hi = EL_AFFINE_MAX_EDGES;
+    if (!keeps_ends(hi, Sp, np, Stot, both)) return 0;
+    if (keeps_ends(lo, Sp, np, Stot, both)) return lo;
+    while (hi - lo > 1) {       /* keeps at hi, not at lo */
+        size_t mid = lo + (hi - lo) / 2;
+        if (keeps_ends(mid, Sp, np, Stot, both)) hi = mid; else lo = mid;
+    }
+    return hi;
+}
+
+int el_affine_end_pieces(size_t nsamples, const double *samples, const double *tangents,
+                         size_t ninfl, const size_t *infl, const el_affine_options *opt,
+                         size_t *npieces, size_t ends[2], size_t n_min[2])
+{
+    el_affine_options o;
+    if (opt) o = *opt; else el_affine_options_defaults(&o);
+    if (points_ok(nsamples, samples, 4) || !npieces || !ends || !n_min || (ninfl > 0 && !infl))
+        return EL_EINVAL;
+    if (tangents && el__all_finite(tangents, 2 * nsamples)) return EL_EINVAL;
+    size_t N = nsamples - 1;
+    for (size_t i = 0; i < ninfl; i++)
+        if (infl[i] < 1 || infl[i] >= N || (i > 0 && infl[i] <= infl[i - 1])) return EL_EINVAL;
+    if (ninfl > 0 && !o.split_inflections) return EL_EDOM;
+    if (edges_in_range(nsamples, samples)) return EL_EDOM;
+    for (size_t j = 0; tangents && j < nsamples; j++) {
+        const double m = fmax(fabs(tangents[2 * j]), fabs(tangents[2 * j + 1]));
+        if (m > 1e150 || (m > 0.0 && m < 1e-150)) return EL_EDOM;
+    }
+    arc *arcs = el__alloc(N, 1, sizeof *arcs);
+    size_t *bnd = el__alloc(N + 2, 1, sizeof *bnd);
+    double *Sp = el__alloc(N + 1, 1, sizeof *Sp);
+    int *sig = el__alloc(N + 1, 1, sizeof *sig);
+    int st = (!arcs || !bnd || !Sp || !sig) ? EL_ENOMEM : EL_OK;
+    size_t np = 0;
+    double Stot = 0.0;
+    if (!st) st = pieces_split(N, samples, tangents, ninfl, infl, o.split_inflections, arcs,
+                               bnd, &np, Sp, sig, &Stot);
+    if (!st) {
+        *npieces = np;
+        ends[0] = bnd[1];
+        ends[1] = bnd[np - 1];
+        n_min[0] = fewest_keeping(Sp, np, Stot, 0);
+        n_min[1] = fewest_keeping(Sp, np, Stot, 1);
+    }
+    free(arcs);
+    free(bnd);
+    free(Sp);
+    free(sig);
+    return st;
+}
+
 /* ------------------------------------------------------------ §4: the driver */
 
 void el_affine_options_defaults(el_affine_options *opt)
@@ -416,64 +557,15 @@ int el_affine_polyline(size_t nsamples, const double *samples, const double *tan
     el_affine_result r;
     memset(&r, 0, sizeof r);
     if (!arcs || !bnd) { st = EL_ENOMEM; goto done; }
-    if (tangents) build_arcs_tangents(N, samples, tangents, arcs);
-    else build_arcs(N, samples, arcs);
-
-    /* §4.4 step 1: the inflections of f~ (integers) */
-    size_t nb = 0;
-    bnd[nb++] = 0;
-    if (ninfl > 0) {
-        for (size_t i = 0; i < ninfl; i++) bnd[nb++] = infl[i];
-    } else {
-        long jprev = -1;
-        for (size_t j = 0; j < N; j++) {
-            if (arcs[j].sgn == 0) continue;
-            if (jprev >= 0 && arcs[j].sgn != arcs[jprev].sgn) {
-                size_t a = (size_t)jprev + 1, b = j;
-                bnd[nb++] = (a == b) ? a : (size_t)floor(0.5 * (double)(a + b) + 0.5);
-            }
-            jprev = (long)j;
-        }
-        if (jprev < 0) { st = EL_EDOM; goto done; }     /* f~ is straight */
-        if (nb > 1 && !o.split_inflections) { st = EL_EDOM; goto done; }
-    }
-    bnd[nb++] = N;
-    size_t np = nb - 1;
-
-    /* per piece: sense, affine length; wrong-sense arcs only next to a piece end */
-    double *Sp = malloc(np * sizeof *Sp);
-    int *sig = malloc(np * sizeof *sig);
-    cnt = malloc(np * sizeof *cnt);
+    double *Sp = el__alloc(N + 1, 1, sizeof *Sp);
+    int *sig = el__alloc(N + 1, 1, sizeof *sig);
+    cnt = el__alloc(N + 1, 1, sizeof *cnt);
     if (!Sp || !sig || !cnt) { free(Sp); free(sig); st = EL_ENOMEM; goto done; }
+    size_t np = 0, p0 = 0;
     double Stot = 0.0;
-    for (size_t p = 0; p < np && !st; p++) {
-        double sum = 0.0;
-        for (size_t j = bnd[p]; j < bnd[p + 1]; j++) sum += arcs[j].sgn * arcs[j].S;
-        sig[p] = sum > 0 ? 1 : (sum < 0 ? -1 : 0);
-        if (sig[p] == 0) { st = EL_EDOM; break; }
-        Sp[p] = 0.0;
-        for (size_t j = bnd[p]; j < bnd[p + 1]; j++) {
-            if (arcs[j].sgn == -sig[p]) {
-                if (j != bnd[p] && j + 1 != bnd[p + 1]) { st = EL_EDOM; break; } /* inflection inside */
-                arc_straight(&arcs[j]);
-            }
-            Sp[p] += arcs[j].S;
-        }
-        Stot += Sp[p];
-    }
-    /* An end piece worth less than 1.5 edges of affine length (an inflection right
-     * next to an end of the curve) is left out: its 3 forced edges would have to be
-     * far longer than the piece. The polyline then starts / stops at the inflection. */
-    size_t p0 = 0;
-    while (!st && np > 1 && (double)n * Sp[p0] / Stot < 1.5) {
-        Stot -= Sp[p0];
-        p0++;
-        np--;
-    }
-    while (!st && np > 1 && (double)n * Sp[p0 + np - 1] / Stot < 1.5) {
-        Stot -= Sp[p0 + np - 1];
-        np--;
-    }
+    st = pieces_split(N, samples, tangents, ninfl, infl, o.split_inflections, arcs, bnd, &np,
+                      Sp, sig, &Stot);
+    if (!st) np = pieces_kept(n, Sp, np, &p0, &Stot);
     if (p0 > 0) {
         memmove(Sp, Sp + p0, np * sizeof *Sp);
         memmove(sig, sig + p0, np * sizeof *sig);

@@ -38,7 +38,8 @@ _LAZY = {name: module for module, names in {
                "affine_curvature_exact", "affine_elements", "affine_length", "affine_polyline",
                "chaikin", "elastica_affine_curvature", "elastica_inflections", "lane_riesenfeld",
                "osculating_conics", "parabolic_lengths", "quadratic_bspline", "uniform_bspline",
-               "g2_bspline", "quadratic_joint_curvatures", "EdgeCountError"),
+               "g2_bspline", "quadratic_joint_curvatures", "EdgeCountError", "EndPieces",
+               "affine_end_pieces"),
     "g2quad": ("CoverageError", "CoverageWarning", "EndTangentWarning", "G2Quadratic",
                "covering_edges", "g2_quadratic"),
 }.items() for name in names}

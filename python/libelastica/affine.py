@@ -28,7 +28,8 @@ __all__ = ["affine_coords", "affine_length", "affine_curvature", "osculating_con
            "OsculatingConics", "chaikin", "lane_riesenfeld", "affine_elements",
            "uniform_bspline", "quadratic_bspline", "parabolic_lengths", "AffinePolyline",
            "affine_polyline", "affine_curvature_exact", "elastica_affine_curvature",
-           "elastica_inflections", "g2_bspline", "quadratic_joint_curvatures", "EdgeCountError"]
+           "elastica_inflections", "g2_bspline", "quadratic_joint_curvatures", "EdgeCountError",
+           "EndPieces", "affine_end_pieces"]
 
 
 class EdgeCountError(DomainError):
@@ -365,6 +366,53 @@ def _run(samples: np.ndarray, tangents: Optional[np.ndarray], infl: Sequence[int
     finally:
         lib.el_affine_result_free(res)
     return pts, t, ps, A, psi, ip, S
+
+
+@dataclass(frozen=True)
+class EndPieces:
+    """Result of :func:`affine_end_pieces`: npieces, the inflection-free pieces of the
+    samples' f~; ends, (where the first piece ends, where the last starts) as sample
+    indices; n_start, the fewest edge count keeping the first piece; n_both, keeping both
+    end pieces (None where no count up to EL_AFFINE_MAX_EDGES does)."""
+    npieces: int
+    ends: tuple
+    n_start: Optional[int]
+    n_both: Optional[int]
+
+    def keeps_ends(self, n: int) -> bool:
+        """Whether :func:`affine_polyline` of these samples keeps both end pieces at n edges
+        (False: it leaves one out, so the polyline stops at an inflection)."""
+        return self.n_both is not None and int(n) >= self.n_both
+
+
+def affine_end_pieces(points, tangents=None, inflections: Optional[Sequence[int]] = None,
+                      split_inflections: bool = True) -> EndPieces:
+    """The pieces :func:`affine_polyline` splits the samples ``points`` (with ``tangents`` and
+    ``inflections`` as it takes them) into, and the edge counts at which it keeps the end
+    pieces (seed 002 §4.4: at n edges an end piece worth less than 1.5 edges of affine
+    length, n S_end / S_total < 1.5, is left out). Exact and monotone in n (C's own test:
+    el_affine_end_pieces), so a search over edge counts of the same samples may skip every
+    count below ``n_both`` (:func:`covering_edges`'s ``keeps_ends``)."""
+    samples = as_points(points, "points")
+    if len(samples) < 4:
+        raise ValueError(f"need at least 4 points, got {len(samples)}")
+    tan = None
+    if tangents is not None:
+        tan = as_points(tangents, "tangents")
+        if len(tan) != len(samples):
+            raise ValueError("tangents must have one row per sample")
+    infl = [] if inflections is None else [as_size(i, "affine_end_pieces: inflections")
+                                           for i in as_vector(inflections, "inflections")]
+    opt = ffi.new("el_affine_options *")
+    lib.el_affine_options_defaults(opt)
+    opt.split_inflections = int(bool(split_inflections))
+    infl_arr = ffi.new("size_t[]", infl) if infl else ffi.NULL
+    npieces, ends, n_min = ffi.new("size_t *"), ffi.new("size_t[2]"), ffi.new("size_t[2]")
+    check(lib.el_affine_end_pieces(len(samples), dptr(samples),
+                                   dptr(tan) if tan is not None else ffi.NULL, len(infl),
+                                   infl_arr, opt, npieces, ends, n_min), "affine_end_pieces")
+    return EndPieces(int(npieces[0]), (int(ends[0]), int(ends[1])), int(n_min[0]) or None,
+                     int(n_min[1]) or None)
 
 
 def _is_curve(c, name: str) -> bool:

@@ -15,8 +15,8 @@ import numpy as np
 
 from ._ffi import DomainError, as_points, as_size, lib
 from ._values import ValueEquality
-from .affine import (AffinePolyline, EdgeCountError, _curve_samples, _is_curve, affine_polyline,
-                     elastica_inflections, g2_bspline, quadratic_joint_curvatures)
+from .affine import (AffinePolyline, EdgeCountError, EndPieces, _curve_samples, _is_curve,
+                     affine_end_pieces, affine_polyline, elastica_inflections, g2_bspline, quadratic_joint_curvatures)
 from .g2ends import _matched_ends
 
 __all__ = ["G2Quadratic", "CoverageError", "CoverageWarning", "EndTangentWarning", "covering_edges",
@@ -315,7 +315,8 @@ def cover_search_limit(n: int) -> int:
     return min(max(COVER_SEARCH * int(n), COVER_SEARCH_LEAST), MAX_EDGES)
 
 
-def covering_edges(build, n: int, errors=(ValueError, ArithmeticError)) -> Optional[int]:
+def covering_edges(build, n: int, errors=(ValueError, ArithmeticError),
+                   leaves_out=None) -> Optional[int]:
     """The fewest edge count above ``n`` whose G2 quadratic covers the source, or None:
     ``build(m)`` gives the G2Quadratic of m edges (raising one of ``errors`` where m has
     none); tries every count n+1, n+2, ... in turn, one build each, up to
@@ -323,14 +324,34 @@ def covering_edges(build, n: int, errors=(ValueError, ArithmeticError)) -> Optio
     a count between can fail where a larger one works and a still larger fails again (a
     stretch without affine arc length: the 330 mm S covered at 3 and 6 edges, not 4 or 5;
     a k = 1.82 elastica from 6 edges: 26 works, 30 not, steps of 1/4 above 22 named 27).
-    Cost: one build per count tried (6 edges, nothing covering: 58 builds to 64)."""
+    Cost: one build per count tried (6 edges, nothing covering: 58 builds to 64), but for
+    the counts ``leaves_out(m)`` says True of: counts whose build is known not to cover
+    (an end piece left out, :func:`end_piece_left_out`), skipped unbuilt (the answer the
+    same: only counts that cannot be it are skipped)."""
     for m in range(int(n) + 1, cover_search_limit(n) + 1):
+        if leaves_out is not None and leaves_out(m):
+            continue
         try:
             if build(m).covers_source:
                 return m
         except errors:
             continue
     return None
+
+
+def end_piece_left_out(ends: EndPieces, n: int, nsamples: int) -> bool:
+    """Whether :func:`g2_quadratic` of point data (``nsamples`` samples whose
+    :func:`affine_end_pieces` are ``ends``; fit_ends=True, the default) at n edges is known
+    not to cover the source, without building it: affine_polyline leaves an end piece out
+    (seed 002 §4.4: n S_end / S_total < 1.5). The first left out: the polyline starts at
+    sample ends[0] >= 1, not 0. The last (the first kept): fit_ends lands the last vertex
+    within half a sample of ends[1] (or raises), which rounds short of the last sample only
+    where ends[1] is 2 samples or more before it; a last piece of one arc is not judged."""
+    if ends.npieces < 2:
+        return False
+    if ends.n_start is None or n < ends.n_start:
+        return True
+    return (ends.n_both is None or n < ends.n_both) and nsamples - 1 - ends.ends[1] >= 2
 
 
 def _end_curvature(samples: np.ndarray, reverse: bool, tangents=None) -> Optional[float]:
@@ -647,12 +668,23 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
         if partial:
             warnings.warn(f"{what}; more edges cover it", CoverageWarning, stacklevel=2)
             return g
+        leaves_out = None
+        if not is_curve and options["fit_ends"]:
+            # the samples are the same at every count: their end pieces once, and the counts
+            # that leave one out skipped unbuilt (a wavy sketch curve's 2 mm end piece needs
+            # ~500 edges: every build to 4 n refused it, 13 s)
+            try:
+                ends_at = affine_end_pieces(samples, tangents, options.get("inflections"),
+                                            options.get("split_inflections", True))
+                leaves_out = lambda m: end_piece_left_out(ends_at, m, len(samples))  # noqa: E731
+            except (ValueError, ArithmeticError):
+                pass
         with warnings.catch_warnings():     # the counts tried: said by the error
             warnings.simplefilter("ignore", CoverageWarning)
             warnings.simplefilter("ignore", EndTangentWarning)
             more = covering_edges(lambda m: g2_quadratic(
                 curve_or_points, m, samples_per_vertex, tangents, partial=True, _plain=True,
-                **options), n)
+                **options), n, leaves_out=leaves_out)
         top = cover_search_limit(n)
         raise CoverageError(f"{what}: " + (f"n = {more} covers it" if more else
                                            f"none of n = {n + 1} to {top} covers it (try more)")

@@ -710,6 +710,74 @@ START_TEST(test_g2_bspline_pieces_of_a_curve)
 }
 END_TEST
 
+/* el_affine_end_pieces names exactly the edge counts at which el_affine_polyline keeps the
+ * end pieces (seed 002 §4.4: n S_end / S_total < 1.5 leaves one out): a wavy curve
+ * 20 sin(x / 30) with an inflection 2 mm from its start (QA22gui F6) and its mirror (the
+ * inflection at the end), with and without tangents; at every n around the counts named,
+ * the polyline starts at sample 0 iff n >= n_min[0] and has all the pieces iff n >= n_min[1]. */
+START_TEST(test_end_pieces_counts_are_the_polylines)
+{
+    enum { NS = 4001 };
+    static double p[2 * NS], T[2 * NS];
+    for (int mirror = 0; mirror < 2; mirror++)
+        for (int with_t = 0; with_t < 2; with_t++) {
+            for (int j = 0; j < NS; j++) {
+                double x = -2.0 + 182.0 * j / (NS - 1);
+                if (mirror) x = 178.0 - 182.0 * j / (NS - 1);   /* the inflection at x = 0 last */
+                double c = (20.0 / 30.0) * cos(x / 30.0), d = mirror ? -1.0 : 1.0;
+                p[2 * j] = x + 3000.0;
+                p[2 * j + 1] = 20.0 * sin(x / 30.0) - 1000.0;
+                T[2 * j] = d / hypot(1.0, c);
+                T[2 * j + 1] = d * c / hypot(1.0, c);
+            }
+            size_t npieces = 0, ends[2], n_min[2];
+            ck_assert_int_eq(el_affine_end_pieces(NS, p, with_t ? T : NULL, 0, NULL, NULL, &npieces,
+                                                  ends, n_min), EL_OK);
+            ck_assert_uint_eq(npieces, 3);
+            ck_assert(n_min[0] > 3 && n_min[1] >= n_min[0] && n_min[1] < EL_AFFINE_MAX_EDGES);
+            /* the short piece is the one next to the inflection at x = 0 */
+            if (!mirror) ck_assert(ends[0] < NS / 40 && n_min[1] > 100);
+            else ck_assert(NS - 1 - ends[1] < NS / 40 && n_min[0] < 100 && n_min[1] > 100);
+            el_affine_options o;
+            el_affine_options_defaults(&o);
+            o.fit_ends = 1;             /* (the pieces kept do not depend on the options) */
+            size_t probe[] = {n_min[0] - 1, n_min[0], n_min[1] - 1, n_min[1], 24};
+            for (size_t q = 0; q < sizeof probe / sizeof *probe; q++) {
+                size_t n = probe[q];
+                if (n < 9 || (q > 0 && n == probe[q - 1])) continue;
+                el_affine_result r;
+                int st = el_affine_polyline(NS, p, with_t ? T : NULL, 0, NULL, n, &o, &r);
+                ck_assert_msg(st == EL_OK, "mirror %d tangents %d n %zu: status %d", mirror,
+                              with_t, n, st);
+                ck_assert_msg((r.t[0] == 0.0) == (n >= n_min[0]),
+                              "mirror %d tangents %d n %zu: starts at %g, n_min %zu", mirror,
+                              with_t, n, r.t[0], n_min[0]);
+                ck_assert_msg((r.npieces == npieces) == (n >= n_min[1]),
+                              "mirror %d tangents %d n %zu: %zu pieces, n_min %zu", mirror,
+                              with_t, n, r.npieces, n_min[1]);
+                el_affine_result_free(&r);
+            }
+        }
+    /* one piece: kept at every count; bad input as el_affine_polyline's */
+    double arc[2 * 40];
+    for (int j = 0; j < 40; j++) {
+        arc[2 * j] = cos(0.05 * j);
+        arc[2 * j + 1] = sin(0.05 * j);
+    }
+    size_t npieces, ends[2], n_min[2];
+    ck_assert_int_eq(el_affine_end_pieces(40, arc, NULL, 0, NULL, NULL, &npieces, ends, n_min), EL_OK);
+    ck_assert_uint_eq(npieces, 1);
+    ck_assert_uint_eq(n_min[0], 3);
+    ck_assert_uint_eq(n_min[1], 3);
+    ck_assert_uint_eq(ends[0], 39);
+    ck_assert_uint_eq(ends[1], 0);
+    double line[8] = {0, 0, 1, 0, 2, 0, 3, 0};
+    ck_assert_int_eq(el_affine_end_pieces(4, line, NULL, 0, NULL, NULL, &npieces, ends, n_min), EL_EDOM);
+    ck_assert_int_eq(el_affine_end_pieces(3, arc, NULL, 0, NULL, NULL, &npieces, ends, n_min), EL_EINVAL);
+    ck_assert_int_eq(el_affine_end_pieces(40, arc, NULL, 0, NULL, NULL, NULL, ends, n_min), EL_EINVAL);
+}
+END_TEST
+
 START_TEST(test_bad_input)
 {
     double xy[8] = {0, 0, 1, 0, 1, 1, 0, 2}, A[4], k[4], L, out[16];
@@ -764,6 +832,7 @@ int main(void)
     tcase_add_test(tc, test_polyline_fit_ends_short_of_the_end);
     tcase_add_test(tc, test_g2_bspline_exact_ends);
     tcase_add_test(tc, test_g2_bspline_pieces_of_a_curve);
+    tcase_add_test(tc, test_end_pieces_counts_are_the_polylines);
     tcase_add_test(tc, test_bad_input);
     suite_add_tcase(s, tc);
     return test_run_suite(s);

@@ -3,6 +3,8 @@ curve with an inflection, one curvature-continuous quadratic B-spline per piece,
 ending exactly on the source; its reported deviation; parametric updates;
 save / reopen; bad input (a message, the document unchanged)."""
 
+import math
+
 import FreeCAD as App
 import Part
 
@@ -284,6 +286,34 @@ class G2QuadTest(S.DocTest):
         del C.MESSAGES[:]
         self.assertIsNone(C.g2quad_sources([(self.sk, ["Edge1"])], open_panel=False, Edges=3))
         self.assertIn("Edges = 6 covers it", C.MESSAGES[-1])
+
+    def test_a_short_end_piece_is_refused_without_building_every_count(self):
+        """QA22gui F6: a plain wavy curve (20 sin(x / 30) interpolated, an inflection 2.06 mm
+        from its start) was refused after one build per count up to 4 x Edges (73 at
+        Edges = 24: 13 s CPU, the GUI frozen). A count whose samples leave the end piece
+        out (affine_end_pieces, exact) cannot cover: it is no longer built. One build, the
+        same refusal, and it names the count its samples keep that end piece from."""
+        import libelastica as el
+        from freecad.elastica.proxy import ShapeProblem
+        c = Part.BSplineCurve()
+        c.interpolate([App.Vector(x, 20 * math.sin(x / 30), 0) for x in range(0, 190, 10)])
+        builds = []
+        real = el.g2_quadratic
+
+        def counted(*args, **kwargs):
+            builds.append(args[1])
+            return real(*args, **kwargs)
+        el.g2_quadratic = counted
+        try:
+            with self.assertRaises(ShapeProblem) as info:
+                Q.g2quad_core([c.toShape()], None, 8)
+        finally:
+            el.g2_quadratic = real
+        self.assertEqual(builds, [8])
+        said = str(info.exception)
+        self.assertIn("none up to Edges = 64 tried covers it (its samples at Edges = 64 keep "
+                      "that end piece from Edges = ", said)
+        self.assertIn("the source has an inflection", said)
 
     def test_a_source_too_short_beyond_an_inflection_is_not_a_wrong_selection(self):
         """QA22gui F6: one open edge selected, and the box said 'Wrong selection ... Select

@@ -722,3 +722,58 @@ def test_hold_start_finds_a_root_beyond_its_first_box():
         el.g2_quadratic(c, 12, partial=True)
     said = str(rec[0].message)
     assert "no G2 end found" not in said and "end tangent is 4.9 deg off" in said
+
+
+def _wavy(x0, x1, nsamples, offset=(3000.0, -1000.0)):
+    """A sketch curve's samples: 20 sin(x / 30) for x in [x0, x1] (inflections at 0 and
+    30 pi) and its unit tangents, moved to a GIS-like offset."""
+    x = np.linspace(x0, x1, nsamples)
+    t = np.c_[np.ones_like(x), (20.0 / 30.0) * np.cos(x / 30.0)]
+    return (np.c_[x, 20.0 * np.sin(x / 30.0)] + offset,
+            t / np.linalg.norm(t, axis=1)[:, None])
+
+
+def test_a_short_end_piece_is_refused_without_building_every_count(monkeypatch):
+    """QA22gui F6: a wavy sketch curve whose inflection lies 2 mm from its start; its end
+    piece is left out below ~380 edges (affine_polyline's n S_end / S_total < 1.5), so no count
+    up to 4 n covers it, and the search built every one (73 affine polylines, 4.8 s CPU) to
+    say so. Now the counts whose end piece is left out (affine_end_pieces, exact) are not
+    built: one polyline, the same CoverageError (no count found, n = 96 tried)."""
+    from libelastica import g2quad
+    xy, tan = _wavy(-2.0, 180.0, 20 * 24 + 1)
+    calls = []
+    real = g2quad.affine_polyline
+
+    def counted(*args, **kwargs):
+        calls.append(args[1])
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(g2quad, "affine_polyline", counted)
+    with pytest.raises(el.CoverageError, match=r"2\.2\d* at its start.*none of n = 25 to 96") as exc:
+        el.g2_quadratic(xy, 24, tangents=tan)
+    assert exc.value.edges is None and exc.value.tried == 96
+    assert calls == [24]
+    ends = el.affine_end_pieces(xy, tan)
+    assert ends.npieces == 3 and ends.n_both > 96 and not ends.keeps_ends(96)
+
+
+def test_end_pieces_name_the_counts_the_polyline_keeps_them_at():
+    """affine_end_pieces is affine_polyline's own test: below n_start the polyline starts at
+    the inflection (the first piece left out), from n_both on it has every piece, between
+    them the last is left out; on the wavy curve with its inflection near either end, at
+    the counts next to the ones named, with and without tangents."""
+    for x0, x1 in ((-2.0, 180.0), (180.0, -3.0)):
+        xy, tan = _wavy(x0, x1, 6001)
+        for t in (tan if x0 < x1 else -tan, None):
+            e = el.affine_end_pieces(xy, t)
+            assert e.npieces == 3
+            for n in {e.n_start - 1, e.n_start, e.n_both - 1, e.n_both, 24, 60} - {2, 3, 4, 5, 6, 7, 8}:
+                ap = el.affine_polyline(xy, n, tangents=t, fit_ends=True)
+                assert (ap.t[0] == 0) == (n >= e.n_start), (x0, n, e)
+                assert (len(ap.A) == 3) == (n >= e.n_both), (x0, n, e)
+                assert g2quad_left_out(e, n, len(xy)) == (not (n >= e.n_both))
+
+
+def g2quad_left_out(e, n, nsamples):
+    from libelastica import g2quad
+    return g2quad.end_piece_left_out(e, n, nsamples)

@@ -41,27 +41,58 @@ def g2quad_core(edges, plane=None, nedges=24):
     g, plane = _g2quad(edges, plane, n)
     if not g.covers_source:     # QA17 M2: half an S drawn as a valid result
         gone = " + ".join(length_mark(d, 4) for d in g.dropped if d > 0)
-        # the binding's search (el.g2_quadratic's CoverageError's), the chain sampled per count
-        more = el().covering_edges(lambda m: _g2quad(edges, plane, m)[0], n,
-                                   errors=(InputProblem,))
+        # the binding's search (el.g2_quadratic's CoverageError's), the chain sampled per
+        # count; a count whose samples' end piece is left out (affine_end_pieces: exact) is
+        # not built (QA22gui F6: 73 builds, 13 s CPU, to refuse a wavy curve at Edges = 24)
+        sampled, needed = {}, [None]
+
+        def leaves_out(m):
+            try:
+                sampled[m] = _chain_samples(edges, plane, m)
+                xy, tan = sampled[m]
+                ends = el().affine_end_pieces(xy, tan)
+            except Exception:       # (noqa: BLE001) not known: built, and refused, as before
+                return False
+            needed[0] = ends.n_both
+            return el().g2quad.end_piece_left_out(ends, m, len(xy))
+
+        more = el().covering_edges(lambda m: _g2quad(edges, plane, m, sampled.pop(m, None))[0],
+                                   n, errors=(InputProblem,), leaves_out=leaves_out)
         ends = " and ".join(f"{length_mark(d, 4)} from its {w}"
                             for d, w in zip(g.dropped, ("start", "end")) if d > 0)
+        top = el().g2quad.cover_search_limit(n)
+        need = (f" (its samples at Edges = {top} keep that end piece from Edges = {needed[0]} "
+                "on)" if needed[0] and needed[0] > top else "")
         raise ShapeProblem(f"Edges = {n} leaves out {gone} of the source beyond an inflection "
                            "(too short for 3 edges): " + (
                                f"Edges = {more} covers it" if more else
-                               f"none up to Edges = {el().g2quad.cover_search_limit(n)} tried "
-                               f"covers it: the source has an inflection {ends}; trim that "
-                               "end of it, or pick a curve without it"))
+                               f"none up to Edges = {top} tried covers it{need}: the source "
+                               f"has an inflection {ends}; trim that end of it, or pick a "
+                               "curve without it"))
     return {"result": g, "placement": plane}
 
 
-def _g2quad(edges, plane, n):
-    """(libelastica G2Quadratic of the chain with n edges, the plane); raises InputProblem."""
+def _chain_samples(edges, plane, n):
+    """The chain's SAMPLES_PER_VERTEX x n samples and unit tangents in ``plane``'s
+    coordinates (the points _g2quad builds from at n edges); raises InputProblem."""
     pts, tangents = sample_chain(edges, SAMPLES_PER_VERTEX * n)
+    xy, plane = plane_coordinates(pts, plane, flat=1e-6, what="source edges")
+    rot = plane.Rotation.inverted()
+    tan = np().array([tuple(rot.multVec(App.Vector(*t)))[:2] for t in tangents])
+    return xy, tan
+
+
+def _g2quad(edges, plane, n, samples=None):
+    """(libelastica G2Quadratic of the chain with n edges, the plane); raises InputProblem.
+    ``samples``: _chain_samples(edges, plane, n) when the caller has them (plane given)."""
+    pts, tangents = sample_chain(edges, SAMPLES_PER_VERTEX * n) if samples is None else (None, None)
     try:
-        xy, plane = plane_coordinates(pts, plane, flat=1e-6, what="source edges")
-        rot = plane.Rotation.inverted()
-        tan = np().array([tuple(rot.multVec(App.Vector(*t)))[:2] for t in tangents])
+        if samples is None:
+            xy, plane = plane_coordinates(pts, plane, flat=1e-6, what="source edges")
+            rot = plane.Rotation.inverted()
+            tan = np().array([tuple(rot.multVec(App.Vector(*t)))[:2] for t in tangents])
+        else:
+            xy, tan = samples
         with warnings.catch_warnings():   # g2quad_core says what is left out
             warnings.simplefilter("ignore", el().CoverageWarning)
             # (an end tangent not held: its figure is SourceEndTangentError's)
