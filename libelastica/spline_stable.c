@@ -63,6 +63,9 @@
 #include <gsl/gsl_linalg.h>
 #include <stdlib.h>
 
+/* The least |gamma_j| / h^3 whose sign tension mode's count trusts (el__spline_unstable_as). */
+#define GAMMA_ROUNDING 1e-6
+
 /* H of the header: E_j's 2 x 2 Hessian from piece j's c0, c1 summed at its two knots */
 void el__spline_hessian(el__spchain *w)
 {
@@ -163,15 +166,21 @@ int el__spline_unstable_as(el__spchain *w, int held, size_t *span)
     const size_t i1 = w->slot[n - 1] == EL__SLOT_ANGLE ? n - 1 : n - 2;
     /* by tension: the spans past their force-free length (gamma_j < 0, TENSION_COUNT); a
      * gamma_j not finite or 0 (C = diag(1 / gamma_j) undefined: the Schur split needs it):
-     * not judged (0), the rule of el__spline_length_negatives */
+     * not judged (0), the rule of el__spline_length_negatives. A nearly straight span's
+     * gamma_j is O(h^3 theta^2) and its sign below GAMMA_ROUNDING h^3 is rounding's (1000
+     * ducks on a sine, free batten: 573 spans read -2.1e-8 h^3 .. -7e-14 h^3, every one
+     * nearly straight, and the batten was refused as sliding off; a span truly past its
+     * force-free length reads O(0.01 .. 1) h^3: the U-turn above -2.46 h^3): counted only
+     * past it */
     int nc = 0;
     size_t cspan = 0;
     if (!held)
         for (size_t j = 0; j < m; j++) {
-            const double gam = -w->pc[j].cL[3];
+            const double gam = -w->pc[j].cL[3], h = w->pc[j].h;
             if (!isfinite(gam) || gam == 0.0) return 0;
-            if (gam < 0.0 && (!nc || steeper(gam, -w->pc[cspan].cL[3]))) cspan = j;
-            nc += gam < 0.0;
+            if (!(gam < -GAMMA_ROUNDING * h * h * h)) continue;
+            if (!nc || steeper(gam, -w->pc[cspan].cL[3])) cspan = j;
+            nc++;
         }
     if (i0 > i1) { *span = cspan; return nc; }
     int neg = el__tridiag_negatives(dg, up, i0, i1, 0.0);
