@@ -137,6 +137,24 @@ static int same_loop(const el_hermite_solution *a, const el_hermite_solution *b,
             fabs(a->energy - b->energy) <= 1e-7 * (a->energy + b->energy) && a->curve.k * b->curve.k > 0.0);
 }
 
+/* GSL's Brent (s, the caller's) on F over the bracket [lo, hi], to 4 eps in t at most 200
+ * iterations: *root is the last iterate's estimate (left as the caller set it where the first
+ * iteration fails); the status of gsl_root_fsolver_set (nonzero: F does not change sign over
+ * [lo, hi], *root untouched) */
+static int brent_root(gsl_root_fsolver *s, gsl_function *F, double lo, double hi, double *root)
+{
+    const int status = gsl_root_fsolver_set(s, F, lo, hi);
+    if (status != GSL_SUCCESS) return status;
+    for (int it = 0; it < 200; it++) {
+        if (gsl_root_fsolver_iterate(s)) break;
+        *root = gsl_root_fsolver_root(s);
+        lo = gsl_root_fsolver_x_lower(s);
+        hi = gsl_root_fsolver_x_upper(s);
+        if (gsl_root_test_interval(lo, hi, 0.0, 4.0 * DBL_EPSILON) == GSL_SUCCESS) break;
+    }
+    return GSL_SUCCESS;
+}
+
 int el__hermite_chord_loops(const hframe *fr, const hprob *pr, const el_hermite_options *opt,
                             el_hermite_solution **sol, size_t *n, size_t *cap,
                             el_hermite_solution *unrep, size_t *nunrep)
@@ -154,15 +172,8 @@ int el__hermite_chord_loops(const hframe *fr, const hprob *pr, const el_hermite_
         const double t = T_LO + (T_HI - T_LO) * i / T_SAMPLES, g = sigma_gap(t, &tg);
         if (gprev > 0.0 && g <= 0.0) {   /* (NAN on either side: no bracket) */
             if (!s && !(s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent))) return EL_ENOMEM;
-            double lo = tprev, hi = t, root = 0.5 * (lo + hi);
-            if (gsl_root_fsolver_set(s, &F, lo, hi) == GSL_SUCCESS) {
-                for (int it = 0; it < 200; it++) {
-                    if (gsl_root_fsolver_iterate(s)) break;
-                    root = gsl_root_fsolver_root(s);
-                    lo = gsl_root_fsolver_x_lower(s);
-                    hi = gsl_root_fsolver_x_upper(s);
-                    if (gsl_root_test_interval(lo, hi, 0.0, 4.0 * DBL_EPSILON) == GSL_SUCCESS) break;
-                }
+            double root = 0.5 * (tprev + t);
+            if (brent_root(s, &F, tprev, t, &root) == GSL_SUCCESS) {
                 for (int side = 1; side >= -1 && !rc; side -= 2) {
                     el_hermite_solution x;
                     if (loop_solution(fr, opt->sigma, root, side, &x) || el__hermite_residual(fr, &x, &x.residual))
@@ -312,15 +323,8 @@ static int chord_loops_length(const hframe *fr, const hprob *pr, const el_hermit
     if (!(glo < 0.0 && ghi > 0.0)) return EL_OK;   /* (L(t) rises: no root, or NAN) */
     gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
     if (!s) return EL_ENOMEM;
-    double lo = T_LO, hi = T_HI, root = NAN;
-    if (gsl_root_fsolver_set(s, &F, lo, hi) == GSL_SUCCESS)
-        for (int it = 0; it < 200; it++) {
-            if (gsl_root_fsolver_iterate(s)) break;
-            root = gsl_root_fsolver_root(s);
-            lo = gsl_root_fsolver_x_lower(s);
-            hi = gsl_root_fsolver_x_upper(s);
-            if (gsl_root_test_interval(lo, hi, 0.0, 4.0 * DBL_EPSILON) == GSL_SUCCESS) break;
-        }
+    double root = NAN;
+    brent_root(s, &F, T_LO, T_HI, &root);   /* (a refused bracket leaves root NAN: no loop) */
     gsl_root_fsolver_free(s);
     int rc = EL_OK;
     for (int side = 1; side >= -1 && !rc && isfinite(root); side -= 2)

@@ -45,6 +45,22 @@ static int end_curvatures(el_hermite_solution *t)
     return rc;
 }
 
+/* A polish's outcome: the curve p, at end residual res, replaces s's where res is lower, with
+ * its length, energy and end curvatures (by length its sigma too: sigma = 2 mu (2k^2 - 1),
+ * |F| of seed 004 (8) in the header's parametrisation, hermite.c); s is left as it was where
+ * res is not lower or p's energy or end curvatures fail. */
+static void adopt_if_lower(int mode, const el_smooth_params *p, double res, el_hermite_solution *s)
+{
+    if (!(res < s->residual)) return;
+    el_hermite_solution t = *s;
+    t.curve = *p;
+    t.length = p->length;
+    t.residual = res;
+    if (mode == EL_HERMITE_LENGTH) t.sigma = 2.0 * p->mu * (2.0 * p->k * p->k - 1.0);
+    if (el_smooth_energy(p, &t.energy) || end_curvatures(&t)) return;
+    *s = t;
+}
+
 /* Residual vector of a solution for the polish (its ends as el_smooth_eval gives them):
  * end point (2, / d), tangent angles at both ends (2), and the mode's scalar condition
  * (sigma or length);
@@ -124,14 +140,7 @@ void el__hermite_polish_newton(const hframe *fr, int mode, double target, el_her
         memcpy(r, rq, sizeof r);
         res = resq;
     }
-    if (!(res < s->residual)) return;
-    el_hermite_solution t = *s;
-    t.curve = p;
-    t.length = p.length;
-    t.residual = res;
-    if (mode == EL_HERMITE_LENGTH) t.sigma = 2.0 * p.mu * (2.0 * p.k * p.k - 1.0);
-    if (el_smooth_energy(&p, &t.energy) || end_curvatures(&t)) return;
-    *s = t;
+    adopt_if_lower(mode, &p, res, s);
 }
 
 /* The finite-difference Jacobian (4 x 3, row-major) of the end conditions (the first
@@ -209,14 +218,7 @@ void el__hermite_polish_fixed_k(const hframe *fr, int mode, double target, el_he
         best = p;
         best_res = res;
     }
-    if (!(best_res < s->residual)) return;
-    el_hermite_solution t = *s;
-    t.curve = best;
-    t.length = best.length;
-    t.residual = best_res;
-    if (mode == EL_HERMITE_LENGTH) t.sigma = 2.0 * best.mu * (2.0 * best.k * best.k - 1.0);
-    if (el_smooth_energy(&best, &t.energy) || end_curvatures(&t)) return;
-    *s = t;
+    adopt_if_lower(mode, &best, best_res, s);
 }
 /* polish, then polish_fixed_k where it misses tol, and the end curvatures from the curve
  * (hermite_near.c's near-straight curve at |sigma| |p1 - p0|^2 <= 10) */
