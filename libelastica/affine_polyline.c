@@ -461,24 +461,39 @@ static size_t fewest_keeping(const double *Sp, size_t np, double Stot, int both)
     return hi;
 }
 
+/* The checks el_affine_end_pieces and el_affine_polyline share, after each one's own EL_EINVAL
+ * checks and before its own EL_EDOM ones (so either returns the status it did with them inline):
+ * EL_EINVAL for samples missing, fewer than 4 or not finite (points_ok), tangents not finite,
+ * inflections missing or not strictly increasing inside 1 .. nsamples - 2; EL_EDOM for
+ * inflections with split_inflections 0 and (bounded work: their products) edges or tangents
+ * whose largest component lies outside [1e-150, 1e150] and is not 0; EL_OK otherwise. */
+static int samples_checked(size_t nsamples, const double *samples, const double *tangents,
+                           size_t ninfl, const size_t *infl, int split_inflections)
+{
+    if (points_ok(nsamples, samples, 4) || (ninfl > 0 && !infl)) return EL_EINVAL;
+    if (tangents && el__all_finite(tangents, 2 * nsamples)) return EL_EINVAL;
+    const size_t N = nsamples - 1;
+    for (size_t i = 0; i < ninfl; i++)
+        if (infl[i] < 1 || infl[i] >= N || (i > 0 && infl[i] <= infl[i - 1])) return EL_EINVAL;
+    if (ninfl > 0 && !split_inflections) return EL_EDOM;
+    if (edges_in_range(nsamples, samples)) return EL_EDOM;
+    for (size_t j = 0; tangents && j < nsamples; j++) {
+        const double m = fmax(fabs(tangents[2 * j]), fabs(tangents[2 * j + 1]));
+        if (m > 1e150 || (m > 0.0 && m < 1e-150)) return EL_EDOM;
+    }
+    return EL_OK;
+}
+
 int el_affine_end_pieces(size_t nsamples, const double *samples, const double *tangents,
                          size_t ninfl, const size_t *infl, const el_affine_options *opt,
                          size_t *npieces, size_t ends[2], size_t n_min[2])
 {
     el_affine_options o;
     if (opt) o = *opt; else el_affine_options_defaults(&o);
-    if (points_ok(nsamples, samples, 4) || !npieces || !ends || !n_min || (ninfl > 0 && !infl))
-        return EL_EINVAL;
-    if (tangents && el__all_finite(tangents, 2 * nsamples)) return EL_EINVAL;
+    if (!npieces || !ends || !n_min) return EL_EINVAL;
+    const int bad = samples_checked(nsamples, samples, tangents, ninfl, infl, o.split_inflections);
+    if (bad) return bad;
     size_t N = nsamples - 1;
-    for (size_t i = 0; i < ninfl; i++)
-        if (infl[i] < 1 || infl[i] >= N || (i > 0 && infl[i] <= infl[i - 1])) return EL_EINVAL;
-    if (ninfl > 0 && !o.split_inflections) return EL_EDOM;
-    if (edges_in_range(nsamples, samples)) return EL_EDOM;
-    for (size_t j = 0; tangents && j < nsamples; j++) {
-        const double m = fmax(fabs(tangents[2 * j]), fabs(tangents[2 * j + 1]));
-        if (m > 1e150 || (m > 0.0 && m < 1e-150)) return EL_EDOM;
-    }
     arc *arcs = el__alloc(N, 1, sizeof *arcs);
     size_t *bnd = el__alloc(N + 2, 1, sizeof *bnd);
     double *Sp = el__alloc(N + 1, 1, sizeof *Sp);
@@ -534,20 +549,13 @@ int el_affine_polyline(size_t nsamples, const double *samples, const double *tan
 {
     el_affine_options o;
     if (opt) o = *opt; else el_affine_options_defaults(&o);
-    if (points_ok(nsamples, samples, 4) || !res || n < 3 || (ninfl > 0 && !infl) || o.skip < 0
-        || o.max_iter < 0 || !(o.t1_tol > 0.0) || !(o.skip_frac >= 0.0 && o.skip_frac < 0.5))
+    if (!res || n < 3 || o.skip < 0 || o.max_iter < 0 || !(o.t1_tol > 0.0) ||
+        !(o.skip_frac >= 0.0 && o.skip_frac < 0.5))
         return EL_EINVAL;
-    if (tangents && el__all_finite(tangents, 2 * nsamples)) return EL_EINVAL;
+    const int bad = samples_checked(nsamples, samples, tangents, ninfl, infl, o.split_inflections);
+    if (bad) return bad;
+    if (n > EL_AFFINE_MAX_EDGES) return EL_EDOM;   /* bounded work: the vertex count */
     size_t N = nsamples - 1;
-    for (size_t i = 0; i < ninfl; i++)
-        if (infl[i] < 1 || infl[i] >= N || (i > 0 && infl[i] <= infl[i - 1])) return EL_EINVAL;
-    if (ninfl > 0 && !o.split_inflections) return EL_EDOM;
-    /* bounded work: the vertex count, the products of edges and of tangents */
-    if (n > EL_AFFINE_MAX_EDGES || edges_in_range(nsamples, samples)) return EL_EDOM;
-    for (size_t j = 0; tangents && j < nsamples; j++) {
-        const double m = fmax(fabs(tangents[2 * j]), fabs(tangents[2 * j + 1]));
-        if (m > 1e150 || (m > 0.0 && m < 1e-150)) return EL_EDOM;
-    }
 
     int st = EL_OK;
     arc *arcs = el__alloc(N, 1, sizeof *arcs);

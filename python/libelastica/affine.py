@@ -385,14 +385,10 @@ class EndPieces:
         return self.n_both is not None and int(n) >= self.n_both
 
 
-def affine_end_pieces(points, tangents=None, inflections: Optional[Sequence[int]] = None,
-                      split_inflections: bool = True) -> EndPieces:
-    """The pieces :func:`affine_polyline` splits the samples ``points`` (with ``tangents`` and
-    ``inflections`` as it takes them) into, and the edge counts at which it keeps the end
-    pieces (seed 002 §4.4: at n edges an end piece worth less than 1.5 edges of affine
-    length, n S_end / S_total < 1.5, is left out). Exact and monotone in n (C's own test:
-    el_affine_end_pieces), so a search over edge counts of the same samples may skip every
-    count below ``n_both`` (:func:`covering_edges`'s ``keeps_ends``)."""
+def _samples_checked(points, tangents, inflections):
+    """The sample points (at least 4), their tangents (one row per sample, or None) and the
+    inflection indices (a list, [] for None; not yet checked as indices) that
+    affine_end_pieces and affine_polyline take, as arrays: the checks both make, in one place."""
     samples = as_points(points, "points")
     if len(samples) < 4:
         raise ValueError(f"need at least 4 points, got {len(samples)}")
@@ -401,8 +397,20 @@ def affine_end_pieces(points, tangents=None, inflections: Optional[Sequence[int]
         tan = as_points(tangents, "tangents")
         if len(tan) != len(samples):
             raise ValueError("tangents must have one row per sample")
-    infl = [] if inflections is None else [as_size(i, "affine_end_pieces: inflections")
-                                           for i in as_vector(inflections, "inflections")]
+    infl = [] if inflections is None else list(as_vector(inflections, "inflections"))
+    return samples, tan, infl
+
+
+def affine_end_pieces(points, tangents=None, inflections: Optional[Sequence[int]] = None,
+                      split_inflections: bool = True) -> EndPieces:
+    """The pieces :func:`affine_polyline` splits the samples ``points`` (with ``tangents`` and
+    ``inflections`` as it takes them) into, and the edge counts at which it keeps the end
+    pieces (seed 002 §4.4: at n edges an end piece worth less than 1.5 edges of affine
+    length, n S_end / S_total < 1.5, is left out). Exact and monotone in n (C's own test:
+    el_affine_end_pieces), so a search over edge counts of the same samples may skip every
+    count below ``n_both`` (:func:`covering_edges`'s ``keeps_ends``)."""
+    samples, tan, infl = _samples_checked(points, tangents, inflections)
+    infl = [as_size(i, "affine_end_pieces: inflections") for i in infl]
     opt = ffi.new("el_affine_options *")
     lib.el_affine_options_defaults(opt)
     opt.split_inflections = int(bool(split_inflections))
@@ -517,15 +525,7 @@ def affine_polyline(curve_or_points, n: int, samples_per_vertex: int = 20,
         on = t <= len(s_samp) - 1 + 1e-7
         s = np.where(on, np.clip(s, 0.0, c.length), np.maximum(s, 0.0))
         return AffinePolyline(pts, t, s, ps, A, psi, ip, S)
-    samples = as_points(curve_or_points, "points")
-    if len(samples) < 4:
-        raise ValueError(f"need at least 4 points, got {len(samples)}")
-    tan = None
-    if tangents is not None:
-        tan = as_points(tangents, "tangents")
-        if len(tan) != len(samples):
-            raise ValueError("tangents must have one row per sample")
-    infl = [] if inflections is None else list(as_vector(inflections, "inflections"))
+    samples, tan, infl = _samples_checked(curve_or_points, tangents, inflections)
     pts, t, ps, A, psi, ip, S = _run(samples, tan, infl, n, split_inflections,
                                      skip, max_iter, skip_frac, fit_ends, optimise)
     return AffinePolyline(pts, t, None, ps, A, psi, ip, S)
