@@ -408,7 +408,9 @@ def affine_end_pieces(points, tangents=None, inflections: Optional[Sequence[int]
     pieces (seed 002 §4.4: at n edges an end piece worth less than 1.5 edges of affine
     length, n S_end / S_total < 1.5, is left out). Exact and monotone in n (C's own test:
     el_affine_end_pieces), so a search over edge counts of the same samples may skip every
-    count below ``n_both`` (:func:`covering_edges`'s ``keeps_ends``)."""
+    count below ``n_both`` (:meth:`EndPieces.keeps_ends`, as :func:`covering_edges`'s
+    ``leaves_out``). ``split_inflections``: as affine_polyline's option of that name (False:
+    given inflections are refused, as there)."""
     samples, tan, infl = _samples_checked(points, tangents, inflections)
     infl = [as_size(i, "affine_end_pieces: inflections") for i in infl]
     opt = ffi.new("el_affine_options *")
