@@ -14,14 +14,27 @@ from freecad.elastica import geometry as G
 from freecad.elastica.proxy import InputProblem
 
 
+def _sine_fit(doc):
+    """A smooth fit of ten points on a sine, recomputed: the curve these tests copy."""
+    xy = [(x, 10 * math.sin(x / 30.0)) for x in range(0, 100, 10)]
+    fit = Fi.make(doc, [(S.points_sketch(doc, xy), [])], Model="smooth")
+    doc.recompute()
+    return fit
+
+
+def _outline(doc, fit):
+    """An empty sketch named Outline in the fit's plane (a sketch the fit does not read)."""
+    sk = doc.addObject("Sketcher::SketchObject", "Outline")
+    sk.Placement = fit.Plane
+    return sk
+
+
 class CopyIntoSketchTest(S.DocTest):
     doc_name = "ElasticaSketchCopy"
 
     def setUp(self):
         super().setUp()
-        xy = [(x, 10 * math.sin(x / 30.0)) for x in range(0, 100, 10)]
-        self.fit = Fi.make(self.doc, [(S.points_sketch(self.doc, xy), [])], Model="smooth")
-        self.doc.recompute()
+        self.fit = _sine_fit(self.doc)
         self.assertFalse(self.fit.Status.startswith("error"), self.fit.Status)
 
     def _sketch(self, placement, name):
@@ -199,12 +212,9 @@ class CopyDriftTest(S.DocTest):
         """The copy in a sketch of its own (the feature reads another): the designer moves
         the copy's start in the Sketcher; that sketch's recompute has the feature measure
         it and say it, the feature not touched (nothing recomputes after: one pass)."""
-        xy = [(x, 10 * math.sin(x / 30.0)) for x in range(0, 100, 10)]
-        fit = Fi.make(self.doc, [(S.points_sketch(self.doc, xy), [])], Model="smooth")
-        self.doc.recompute()
+        fit = _sine_fit(self.doc)
         ok = fit.Status
-        sk = self.doc.addObject("Sketcher::SketchObject", "Outline")
-        sk.Placement = fit.Plane
+        sk = _outline(self.doc, fit)
         i = G.write_to_sketch(fit, sk)[0]
         self.doc.recompute()
         self.assertEqual(fit.Status, ok)
@@ -230,12 +240,9 @@ class CopyDriftTest(S.DocTest):
         are not saved), and the copy was known by its Tag only: after a reopen a moved copy
         was said by nothing, and Copy into added a second copy beside the first (the
         overlap of QA20gui F4). The copy's saved mark finds it: said, replaced in place."""
-        xy = [(x, 10 * math.sin(x / 30.0)) for x in range(0, 100, 10)]
-        fit = Fi.make(self.doc, [(S.points_sketch(self.doc, xy), [])], Model="smooth")
-        self.doc.recompute()
+        fit = _sine_fit(self.doc)
         ok = fit.Status
-        sk = self.doc.addObject("Sketcher::SketchObject", "Outline")
-        sk.Placement = fit.Plane
+        sk = _outline(self.doc, fit)
         sk.addGeometry(Part.LineSegment(App.Vector(0, 0, 0), App.Vector(10, 0, 0)), False)
         i = G.write_to_sketch(fit, sk)[0]
         self.doc.recompute()
