@@ -65,6 +65,10 @@ class Outputs:
       directories made for them): a failing output leaves nothing behind.
     - '-' (:class:`ToStdout`) is standard output: written to a temporary in a directory of
       its own and copied to stdout at commit (nothing on stdout when the command fails).
+    - An output that is a link replaces the file the link names (the link stays); one that
+      is not a regular file (a FIFO, /dev/null, a terminal) is written through at commit, as
+      a shell's redirection writes it: renaming onto it replaced the device node itself
+      (QA23: as root ``--json /dev/full`` turned /dev/full into a JSON file, exit 0).
 
     A subcommand names its input files ``file`` / ``files`` (or sets ``args.inputs``)
     and writes with ``path = args.outputs.path(target)`` then ``write_x(..., path)``.
@@ -72,10 +76,11 @@ class Outputs:
 
     def __init__(self, inputs: Sequence[str]):
         self._inputs = [Path(p) for p in inputs if p and p != "-" and Path(p).exists()]
-        self._staged: List[tuple] = []      # (temporary, final)
+        self._staged: List[tuple] = []      # (temporary, final, where): where is the file
+        # renamed onto (final, or the file a link names), None for '-' and written-through ones
         self._finals: set = set()
         self._made: List[Path] = []         # directories created, deepest last
-        self._stdout_dir: Optional[str] = None
+        self._private_dir: Optional[str] = None    # temporaries of '-' and written-through ones
 
     def check(self, target) -> Path:
         """Refuse target when it is an input or already an output of this command."""
@@ -101,19 +106,17 @@ class Outputs:
         """A temporary to write ``target``'s content to (renamed at commit; '-': copied to
         standard output)."""
         if target == "-":
-            if self._stdout_dir is None:
-                self._stdout_dir = tempfile.mkdtemp(prefix="elastica-stdout.")
-            tmp = Path(self._stdout_dir) / f"{len(self._staged)}{getattr(target, 'ext', '.tmp')}"
-            tmp.touch()
-            self._staged.append((tmp, target))
-            return tmp
+            return self._private(target, getattr(target, 'ext', '.tmp'))
         final = self.check(target)
         self._finals.add(os.path.abspath(final))
+        where = Path(os.path.realpath(final)) if final.is_symlink() else final
+        if where.exists() and not where.is_file():
+            return self._private(final, final.suffix or ".tmp")
         # the output's own directory is made when its parent exists (out/{stem}.json, a
         # batch's --svg pics: one level, as mkdir makes it); a path missing more is a typo
         # (QA21 F7: --json /nonexistent/dir/x.json made /nonexistent/dir at the root, exit
         # 0): refused, nothing made or written, as cp, tar and curl refuse it
-        parent = final.parent
+        parent = where.parent
         if not parent.exists():
             if not parent.parent.exists():
                 top = parent.parent
@@ -128,20 +131,30 @@ class Outputs:
                                  f"({exc.strerror})") from None
             self._made.append(parent)
         try:
-            fd, tmp = tempfile.mkstemp(prefix=f".{final.name}.", suffix=final.suffix or ".tmp",
-                                       dir=str(final.parent))
+            fd, tmp = tempfile.mkstemp(prefix=f".{where.name}.", suffix=where.suffix or ".tmp",
+                                       dir=str(where.parent))
         except OSError as exc:
             raise InputError(f"{final}: cannot write there ({exc.strerror})") from None
         os.close(fd)
-        self._staged.append((Path(tmp), final))
+        self._staged.append((Path(tmp), final, where))
         return Path(tmp)
+
+    def _private(self, final, suffix: str) -> Path:
+        """A temporary in the command's own directory, for an output copied at commit
+        (standard output, a FIFO or device)."""
+        if self._private_dir is None:
+            self._private_dir = tempfile.mkdtemp(prefix="elastica-out.")
+        tmp = Path(self._private_dir) / f"{len(self._staged)}{suffix}"
+        tmp.touch()
+        self._staged.append((tmp, final, None))
+        return tmp
 
     def mark(self) -> int:
         """A point to :meth:`rollback` to (a batch drops the outputs of a failed file)."""
         return len(self._staged)
 
     def rollback(self, mark: int) -> None:
-        for tmp, final in self._staged[mark:]:
+        for tmp, final, _ in self._staged[mark:]:
             self._finals.discard(os.path.abspath(final))
             try:
                 tmp.unlink()
@@ -150,38 +163,47 @@ class Outputs:
         del self._staged[mark:]
 
     def commit(self) -> None:
-        for tmp, final in self._staged:
+        # written-through outputs first: they can fail (/dev/full), and then no file is
+        # renamed into place and nothing goes to stdout
+        for tmp, final, where in self._staged:
+            if where is None and final != "-":
+                try:
+                    with open(tmp, "rb") as src, open(final, "wb") as dst:
+                        shutil.copyfileobj(src, dst)
+                except OSError as exc:
+                    raise InputError(f"{final}: cannot write ({exc.strerror})") from None
+        for tmp, final, where in self._staged:
             if final == "-":
                 sys.stdout.flush()
                 with open(tmp, "rb") as src:
                     shutil.copyfileobj(src, sys.stdout.buffer)
                 sys.stdout.buffer.flush()
-            else:
-                os.chmod(tmp, _mode_for(final))
-                os.replace(tmp, final)
+            elif where is not None:
+                os.chmod(tmp, _mode_for(where))
+                os.replace(tmp, where)
         self._staged = []
-        self._drop_stdout_dir()
+        self._drop_private_dir()
 
     def explain(self, message: str) -> str:
         """message with each temporary's name replaced by what the user gave (the file,
         or '--OPTION -'): an error names no temporary."""
-        for tmp, final in self._staged:
+        for tmp, final, _ in self._staged:
             name = f"--{final.option} -" if final == "-" and hasattr(final, "option") else str(final)
             message = message.replace(str(tmp), name)
         return message
 
-    def _drop_stdout_dir(self) -> None:
-        if self._stdout_dir is not None:
-            shutil.rmtree(self._stdout_dir, ignore_errors=True)
-            self._stdout_dir = None
+    def _drop_private_dir(self) -> None:
+        if self._private_dir is not None:
+            shutil.rmtree(self._private_dir, ignore_errors=True)
+            self._private_dir = None
 
     def abort(self) -> None:
-        for tmp, _ in self._staged:
+        for tmp, _, _ in self._staged:
             try:
                 tmp.unlink()
             except OSError:
                 pass
-        self._drop_stdout_dir()
+        self._drop_private_dir()
         for d in reversed(self._made):
             try:
                 d.rmdir()

@@ -274,3 +274,37 @@ def test_a_missing_directory_above_the_outputs_is_refused(work, capsys):
     assert code == 2 and "no directory deep " in err and not (work / "deep").exists(), err
     code, _, err = cli(capsys, "fit", "a.csv", "--json", "new/x.json")
     assert code == 0 and (work / "new" / "x.json").is_file(), err
+
+
+def test_an_output_through_a_link_replaces_the_file_it_names(work, capsys):
+    """QA23: os.replace onto a link replaced the link, leaving its target stale."""
+    (work / "shared").mkdir()
+    (work / "shared" / "target.json").write_text("old")
+    os.symlink("shared/target.json", work / "link.json")
+    os.symlink("shared/new.json", work / "dangling.json")
+    code, _, _ = cli(capsys, "fit", "a.csv", "--json", "link.json", "--svg", "dangling.svg")
+    assert code == 0
+    code, _, _ = cli(capsys, "fit", "a.csv", "--json", "dangling.json")
+    assert code == 0
+    for link, target in (("link.json", "target.json"), ("dangling.json", "new.json")):
+        assert (work / link).is_symlink()
+        assert json.loads((work / "shared" / target).read_text())["model"] == "discrete"
+    assert sorted(p.name for p in (work / "shared").iterdir()) == ["new.json", "target.json"]
+
+
+def test_an_output_that_is_a_fifo_is_written_through(work, capsys):
+    """QA23: an output that is not a regular file (a FIFO here; /dev/null, /dev/full as
+    root) was replaced by a regular file, and its reader got nothing."""
+    import stat
+    import threading
+    fifo = work / "pipe.json"
+    os.mkfifo(fifo)
+    got = []
+    reader = threading.Thread(target=lambda: got.append(fifo.read_bytes()), daemon=True)
+    reader.start()
+    code, _, _ = cli(capsys, "fit", "a.csv", "--json", "pipe.json")
+    assert code == 0
+    assert stat.S_ISFIFO(os.lstat(fifo).st_mode)       # still the FIFO, not a file
+    reader.join(timeout=30)
+    assert got and json.loads(got[0])["model"] == "discrete"
+    assert sorted(p.name for p in work.iterdir()) == ["a.csv", "pipe.json"]   # no temporaries
