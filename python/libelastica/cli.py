@@ -215,6 +215,14 @@ def cmd_bspline(args) -> int:
     out, splines, names = [], [], []
     for items in groups:
         curves = [curve_from_dict(it, name=args.file) for it in items]
+        # a discrete elastica's B-spline is the C2 cubic through its vertices: --tol and
+        # --degree would do nothing (QA23 F1: the README's own example printed the same file
+        # for any --tol)
+        if isinstance(curves[0], el.DiscreteElastica) and (args.tol is not None or args.degree != 3):
+            given = "--tol" if args.tol is not None else f"--degree {args.degree}"
+            raise InputError(f"{given}: {args.file} holds a discrete elastica, whose B-spline is "
+                             "the cubic through its vertices (no tolerance, degree 3); drop it, "
+                             "or fit with --model smooth for a B-spline certified within a tolerance")
         # the DXF and the JSON in the input's coordinates (as `fit`'s; a 3D one-piece
         # record's x'y' one as "bspline_local", a keyline's as KeylineFit.to_bspline's)
         to_input = _input_map(items[0]) if isinstance(items[0], dict) else None
@@ -414,7 +422,7 @@ def build_parser() -> argparse.ArgumentParser:
                             "interpolation, B-splines, elliptic blends.",
                 epilog="examples:\n  elastica fit points.csv --svg fit.svg --json fit.json\n"
                        "  elastica hermite 0 0 1 0 1 0 1 0 --tension 10\n"
-                       "  elastica bspline fit.json --tol 1e-6 --dxf fit.dxf\n"
+                       "  elastica bspline fit.json --dxf fit.dxf\n"
                        "  elastica blend 0 0 0.3 0.8 0.7 0.9 1 0 --svg blend.svg\n"
                        "  elastica COMMAND --help   (more examples)\n\n"
                        "exit status: 0 ok, 1 fit did not converge / no solution, 2 bad input, 3 internal error")

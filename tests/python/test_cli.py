@@ -610,7 +610,8 @@ def test_fit_keyline_bspline_is_one_curve_through_the_joint(capsys, tmp_path, fa
         assert abs(b.curvature([first.length])[0]) <= 1e-9 * np.max(np.abs(b.curvature(s1)))
     (_, ctrl, _, _, _), = [c for c in fake_ezdxf if c[0] == "spline"]
     np.testing.assert_allclose(np.array(ctrl)[:, :2], b_in.poles, rtol=0, atol=1e-9 * b.domain[1])
-    r = cli(capsys, "bspline", tmp_path / "k.json", "--tol", "1e-6", "--json", "-")
+    r = cli(capsys, "bspline", tmp_path / "k.json", *(["--tol", "1e-6"] if model == "smooth" else []),
+            "--json", "-")
     assert r.returncode == 0, r.stderr
     again = json.loads(r.stdout)
     assert len(again["sides"]) == 2
@@ -847,3 +848,20 @@ def test_fit_batch_table_and_json_say_the_misfit_and_sparse_verdicts(capsys, tmp
     doc = json.loads((tmp_path / "clicks.json").read_text())
     assert doc["sparse"]["smooth_rms"] < doc["sparse"]["rms"], doc.get("sparse")
     assert "misfit" in json.loads((tmp_path / "corner.json").read_text())
+
+
+@pytest.mark.parametrize("option", [["--tol", "1e-2"], ["--degree", "5"]])
+def test_bspline_of_a_discrete_fit_refuses_options_it_would_ignore(capsys, tmp_path, option):
+    """QA23 F1: `elastica bspline fit.json --tol T` of a discrete fit (the default model)
+    wrote the same cubic through the vertices for any T: an option that would do nothing
+    is refused (exit 2, naming it), nothing written; without it, and for a smooth fit,
+    it works."""
+    for model in ("discrete", "smooth"):
+        r = cli(capsys, "fit", SAMPLE_2D, "--model", model, "--json", tmp_path / f"{model}.json")
+        assert r.returncode == 0, r.stderr
+    r = cli(capsys, "bspline", tmp_path / "discrete.json", *option, "--json", tmp_path / "b.json")
+    assert r.returncode == 2 and option[0] in r.stderr and "--model smooth" in r.stderr, r.stderr
+    assert not (tmp_path / "b.json").exists()
+    assert cli(capsys, "bspline", tmp_path / "discrete.json", "--json", "-").returncode == 0
+    r = cli(capsys, "bspline", tmp_path / "smooth.json", *option, "--json", "-")
+    assert r.returncode == 0, r.stderr

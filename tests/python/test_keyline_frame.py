@@ -100,7 +100,8 @@ def test_keyline_json_bspline_is_the_files_coordinates(capsys, tmp_path, model):
     assert np.sqrt(np.mean(d ** 2)) <= 1.02 * side["input_rms"] + gap
     assert np.max(d) <= 1.02 * side["input_max_error"] + gap
     np.testing.assert_allclose(side["inflection_point"], kl.joint, rtol=0, atol=1e-12 * 300)
-    r = cli(capsys, "bspline", tmp_path / "k.json", "--tol", "1e-6", "--json", "-")
+    r = cli(capsys, "bspline", tmp_path / "k.json", *(["--tol", "1e-6"] if model == "smooth" else []),
+            "--json", "-")
     assert r.returncode == 0, r.stderr
     again = el.BSpline.from_dict(json.loads(r.stdout)["bspline"])
     np.testing.assert_allclose(again.poles, b.poles, rtol=0, atol=1e-12 * 300)
