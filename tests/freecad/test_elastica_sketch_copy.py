@@ -259,3 +259,89 @@ class CopyDriftTest(S.DocTest):
         self.doc.recompute()
         self.assertEqual(len(sk.Geometry), n)
         self.assertEqual(fit.Status, ok)
+
+
+class CopyDriftSaidOnceTest(S.DocTest):
+    """Note 54: the drift was said in the report view at every recompute: one stretch of the
+    designer's work recomputing twice before the GUI was idle again gave two lines (11.4 mm
+    then 26.3 mm), and a recompute that moved nothing said the same line again. Now under the GUI the line waits for the event loop
+    to be idle (copies._scheduler; stood in for here) and says the last figure once, and
+    a line that reads as the last one said is not said again; the Status always carries
+    the present figure."""
+    doc_name = "ElasticaCopyDriftOnce"
+
+    def setUp(self):
+        super().setUp()
+        from freecad.elastica import copies
+        self.copies, self.queued, self.printed = copies, [], []
+        self.saved = getattr(copies, "_scheduler", None), App.Console.PrintWarning
+        copies._scheduler = lambda: self.queued.append
+        App.Console.PrintWarning = self.printed.append
+
+    def tearDown(self):
+        self.copies._scheduler, App.Console.PrintWarning = self.saved
+        super().tearDown()
+
+    def idle(self):
+        """The event loop idle again: what waited for it runs; the copy lines said."""
+        while self.queued:
+            self.queued.pop(0)()
+        said = [t for t in self.printed if "The copy in" in t or "the copy in" in t]
+        self.printed[:] = []
+        return said
+
+    def test_one_line_per_user_action_with_the_last_figure(self):
+        fit = _sine_fit(self.doc)
+        sk = _outline(self.doc, fit)
+        i = G.write_to_sketch(fit, sk)[0]
+        self.doc.recompute()
+        self.assertEqual(self.idle(), [])
+        # one stretch of work, two recomputes before the GUI is idle again (the copy's start
+        # dragged 3 mm, then on to 6 mm as the move settles)
+        start = sk.Geometry[i].StartPoint
+        figures = []
+        for dy in (3, 6):
+            sk.movePoint(i, 1, start + App.Vector(0, dy, 0))
+            self.doc.recompute()
+            figures.append(fit.Status.split(" is ", 1)[1].split(" mm")[0])
+        self.assertNotEqual(figures[0], figures[1])     # the Status says each
+        said = self.idle()
+        self.assertEqual(len(said), 1, said)
+        self.assertIn(f"is {figures[1]} mm off this curve", said[0])
+        fit.touch()                                 # nothing moved: not said again
+        self.doc.recompute()
+        self.assertIn(f"is {figures[1]} mm off", fit.Status)
+        self.assertEqual(self.idle(), [])
+        sk.movePoint(i, 1, start + App.Vector(0, 9, 0))     # the next action: its own line
+        self.doc.recompute()
+        said = self.idle()
+        self.assertEqual(len(said), 1, said)
+        self.assertIn(fit.Status.split(" is ", 1)[1].split(" (")[0], said[0])
+        G.write_to_sketch(fit, sk)                  # Copy into again: in line, said no more
+        self.doc.recompute()
+        fit.touch()
+        self.doc.recompute()
+        self.assertNotIn("The copy in", fit.Status)
+        self.assertEqual(self.idle(), [])
+        sk.movePoint(i, 1, start + App.Vector(0, 9, 0))     # off again: news again
+        self.doc.recompute()
+        self.assertEqual(len(self.idle()), 1)
+
+    def test_without_the_gui_each_changed_figure_is_said_at_once(self):
+        """A script's recompute is its own step: said at once, but not again unchanged."""
+        self.copies._scheduler = lambda: None
+        fit = _sine_fit(self.doc)
+        sk = _outline(self.doc, fit)
+        i = G.write_to_sketch(fit, sk)[0]
+        self.doc.recompute()
+        start = sk.Geometry[i].StartPoint
+        sk.movePoint(i, 1, start + App.Vector(0, 3, 0))
+        self.doc.recompute()
+        self.assertEqual(len(self.idle()), 1)
+        fit.touch()
+        self.doc.recompute()
+        self.assertTrue(fit.Status.split(". The copy in ")[1])
+        self.assertEqual(self.idle(), [])
+        sk.movePoint(i, 1, start + App.Vector(0, 6, 0))
+        self.doc.recompute()
+        self.assertEqual(len(self.idle()), 1)
