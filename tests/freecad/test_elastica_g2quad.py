@@ -315,6 +315,37 @@ class G2QuadTest(S.DocTest):
                       "that end piece from Edges = ", said)
         self.assertIn("the source has an inflection", said)
 
+    def test_a_refusal_samples_the_source_twice_not_per_count(self):
+        """Note 54: the wavy curve's refusal still took 4.7 s in FreeCAD (the library's 0.16 s):
+        every count up to 4 x Edges was sampled by OCC (Edge.discretize and a tangent per
+        sample: 72 samplings at Edges = 24) to learn that its end piece is left out. Now the
+        samples at Edges and at the search's top count judge the counts between where both
+        leave that piece out even at 3 x the count: two samplings, the same refusal, word for
+        word as the search that sampled every count says it."""
+        from freecad.elastica.proxy import ShapeProblem
+        from freecad.elastica.units import say
+        c = Part.BSplineCurve()
+        c.interpolate([App.Vector(x, 20 * math.sin(x / 30), 0) for x in range(0, 190, 10)])
+        sampled = []
+        real = Q.sample_chain
+
+        def counted(edges, n):
+            sampled.append(n // Q.SAMPLES_PER_VERTEX)
+            return real(edges, n)
+        Q.sample_chain = counted
+        try:
+            with self.assertRaises(ShapeProblem) as info:
+                Q.g2quad_core([c.toShape()], None, 24)
+        finally:
+            Q.sample_chain = real
+        self.assertEqual(sampled, [24, 96])
+        self.assertEqual(say(str(info.exception)),
+                         "Edges = 24 leaves out 2.06 mm of the source beyond an inflection (too "
+                         "short for 3 edges): none up to Edges = 96 tried covers it (its samples "
+                         "at Edges = 96 keep that end piece from Edges = 504 on): the source has "
+                         "an inflection 2.06 mm from its start; trim that end of it, or pick a "
+                         "curve without it")
+
     def test_a_source_too_short_beyond_an_inflection_is_not_a_wrong_selection(self):
         """QA22gui F6: one open edge selected, and the box said 'Wrong selection ... Select
         one open edge or sketch curve.': the edge was what the command takes, its end piece

@@ -21,6 +21,7 @@ from .sources import gather_edges, sample_chain
 from .units import length_mark
 
 SAMPLES_PER_VERTEX = 20     # seed 002 §4.2: |p| ~ 20 |x|
+LEFT_OUT_MARGIN = 3         # g2quad_core's search: counts judged without their own samples
 
 
 def g2quad_core(edges, plane=None, nedges=24):
@@ -38,29 +39,48 @@ def g2quad_core(edges, plane=None, nedges=24):
                            "chain") from None
     if closed:
         raise InputProblem("the source is a closed curve: pick an open one (split it first)")
-    g, plane = _g2quad(edges, plane, n)
+    g, plane, own = _g2quad(edges, plane, n)
     if not g.covers_source:     # QA17 M2: half an S drawn as a valid result
         gone = " + ".join(length_mark(d, 4) for d in g.dropped if d > 0)
         # the binding's search (el.g2_quadratic's CoverageError's), the chain sampled per
         # count; a count whose samples' end piece is left out (affine_end_pieces: exact) is
         # not built (QA22gui F6: 73 builds, 13 s CPU, to refuse a wavy curve at Edges = 24)
+        top = el().g2quad.cover_search_limit(n)
         sampled, needed = {}, [None]
+        # Nor sampled (OCC's discretize and tangents: 72 samplings, 4.7 s of that refusal's
+        # CPU, note 54) where the samples at n and at the search's top count both leave the
+        # end piece out even at LEFT_OUT_MARGIN x the count: a count between would have to
+        # judge that piece's share of the affine length LEFT_OUT_MARGIN times larger than
+        # both. Measured on 35 refused wavy sources: one count's samples against another's
+        # in n .. 4n, the fewest count keeping the end pieces differs by 1.6 x at most.
+        refs = []
+        try:
+            sampled[top] = _chain_samples(edges, plane, top)
+            for xy, tan in (own, sampled[top]):
+                refs.append((el().affine_end_pieces(xy, tan), len(xy)))
+            needed[0] = refs[-1][0].n_both
+        except Exception:       # (noqa: BLE001) not known: every count sampled, as before
+            refs = []
 
         def leaves_out(m):
+            if refs and all(el().g2quad.end_piece_left_out(e, LEFT_OUT_MARGIN * m, k)
+                            for e, k in refs):
+                return True
             try:
-                sampled[m] = _chain_samples(edges, plane, m)
+                if m not in sampled:
+                    sampled[m] = _chain_samples(edges, plane, m)
                 xy, tan = sampled[m]
                 ends = el().affine_end_pieces(xy, tan)
             except Exception:       # (noqa: BLE001) not known: built, and refused, as before
                 return False
-            needed[0] = ends.n_both
+            if not refs:        # (with them: the top count's samples name it, as before)
+                needed[0] = ends.n_both
             return el().g2quad.end_piece_left_out(ends, m, len(xy))
 
         more = el().covering_edges(lambda m: _g2quad(edges, plane, m, sampled.pop(m, None))[0],
                                    n, errors=(InputProblem,), leaves_out=leaves_out)
         ends = " and ".join(f"{length_mark(d, 4)} from its {w}"
                             for d, w in zip(g.dropped, ("start", "end")) if d > 0)
-        top = el().g2quad.cover_search_limit(n)
         need = (f" (its samples at Edges = {top} keep that end piece from Edges = {needed[0]} "
                 "on)" if needed[0] and needed[0] > top else "")
         raise ShapeProblem(f"Edges = {n} leaves out {gone} of the source beyond an inflection "
@@ -76,21 +96,25 @@ def _chain_samples(edges, plane, n):
     """The chain's SAMPLES_PER_VERTEX x n samples and unit tangents in ``plane``'s
     coordinates (the points _g2quad builds from at n edges); raises InputProblem."""
     pts, tangents = sample_chain(edges, SAMPLES_PER_VERTEX * n)
+    return _in_plane(pts, tangents, plane)[:2]
+
+
+def _in_plane(pts, tangents, plane):
+    """(xy, unit tangents, plane) of 3D samples in ``plane`` (None: their own plane)."""
     xy, plane = plane_coordinates(pts, plane, flat=1e-6, what="source edges")
     rot = plane.Rotation.inverted()
     tan = np().array([tuple(rot.multVec(App.Vector(*t)))[:2] for t in tangents])
-    return xy, tan
+    return xy, tan, plane
 
 
 def _g2quad(edges, plane, n, samples=None):
-    """(libelastica G2Quadratic of the chain with n edges, the plane); raises InputProblem.
-    ``samples``: _chain_samples(edges, plane, n) when the caller has them (plane given)."""
+    """(libelastica G2Quadratic of the chain with n edges, the plane, its samples (xy,
+    tangents)); raises InputProblem. ``samples``: _chain_samples(edges, plane, n) when the
+    caller has them (plane given)."""
     pts, tangents = sample_chain(edges, SAMPLES_PER_VERTEX * n) if samples is None else (None, None)
     try:
         if samples is None:
-            xy, plane = plane_coordinates(pts, plane, flat=1e-6, what="source edges")
-            rot = plane.Rotation.inverted()
-            tan = np().array([tuple(rot.multVec(App.Vector(*t)))[:2] for t in tangents])
+            xy, tan, plane = _in_plane(pts, tangents, plane)
         else:
             xy, tan = samples
         with warnings.catch_warnings():   # g2quad_core says what is left out
@@ -109,7 +133,7 @@ def _g2quad(edges, plane, n, samples=None):
                            "throughout") from None
     except (ValueError, ArithmeticError, RuntimeError) as exc:
         raise InputProblem(f"G2 quadratic B-spline failed: {exc}") from None
-    return g, plane
+    return g, plane, (xy, tan)
 
 
 def _joins(edges, plane):
