@@ -11,7 +11,7 @@ from .cubic import SPARSE_POINTS, SparseWarning, cubic_distances, smooth_fits_be
 from .fit import (ConstraintError, ConvergenceWarning, FitResult, OrderWarning, WanderWarning, far_points,
                   far_points_summary, fit, wander_summary)
 from .misfit import (MISFIT_RATIO, Misfit, MisfitWarning, OutlierWarning, fit_outliers, misfit,
-                     misfit_summary, noise_level, outliers_summary)
+                     misfit_summary, noise_level, outliers_summary, split_hint)
 from .fit_cost import (COST_FLOOR, COST_RATIO, END_POINTS, END_SPAN, EndConditionWarning,
                        cost_summary, costly, end_condition_cost, end_costs, held_ends,
                        local_cost_summary)

@@ -13,7 +13,7 @@ import libelastica as el
 LAZY = ("keyline", "resampled", "blend", "spline", "affine", "g2quad")
 # every public name of `import libelastica` before (121, and SparseWarning, spline's UnstableWarning, g2quad's CoverageError,
 # covering_edges, EndTangentWarning, affine's EdgeCountError, spline's holding_tension, misfit's OutlierWarning,
-# fit_outliers and outliers_summary, affine's EndPieces and affine_end_pieces since: classes, functions, constants, the submodules it gave as attributes)
+# fit_outliers and outliers_summary, affine's EndPieces and affine_end_pieces, misfit's split_hint since: classes, functions, constants, the submodules it gave as attributes)
 PUBLIC = sorted("""AffinePolyline AngleUnitWarning BSpline BlendCurve BlendLoopWarning COST_FLOOR COST_RATIO
 ConditionWarning ConstraintError ConvergenceWarning CoverageError CoverageWarning DiscreteElastica DomainError
 DoublesBackError END_POINTS END_SPAN EdgeCountError ElasticSpline ElasticaError EllipticBlend EndConditionWarning
@@ -32,7 +32,7 @@ lane_riesenfeld local_cost_summary misfit misfit_summary noise_level order oscul
 out_of_order outliers_summary parabolic_lengths pca_normalize plane_fit prep prepare_keyline quadratic_bspline
 quadratic_joint_curvatures resample_equilateral resample_summary resampled resampled_fits_worse
 resampled_polygon resampled_reference shape smooth_chain_to_bspline smooth_fits_better
-smooth_to_bspline spline uniform_bspline wander_summary""".split())
+smooth_to_bspline spline split_hint uniform_bspline wander_summary""".split())
 
 
 def _run(code: str) -> str:
@@ -47,7 +47,7 @@ def test_help_does_not_load_what_it_does_not_use():
 
 
 def test_public_api_unchanged():
-    assert len(PUBLIC) == 136       # in a fresh process: a submodule imported adds its name
+    assert len(PUBLIC) == 137       # in a fresh process: a submodule imported adds its name
     assert _run("import libelastica as el\n"
                 "print(' '.join(sorted(n for n in dir(el) if not n.startswith('_'))))").split() == PUBLIC
     names = _run("from libelastica import *\n"

@@ -391,3 +391,54 @@ def test_too_few_distinct_points_or_all_equal():
     for at in ([0.0, 0.0], [12345.6, -7.5]):
         with pytest.raises(ValueError, match="4 distinct points"):
             el.noise_level(np.tile(at, (20, 1)))
+
+
+def waist_clicks(n, seed):
+    """QA22gui F7's hand clicks: n points along a guitar body's waist (one inflection, no
+    elastica), uneven, jitter 0.8 per coordinate, far from the origin."""
+    import math
+    import random
+    rnd = random.Random(seed)
+    ts = sorted(rnd.uniform(0, 1) for _ in range(n))
+    return np.array([(200 * t + 3000.0 + rnd.gauss(0, 0.8),
+                      60 * math.sin(math.pi * t) - 25 * math.sin(2.2 * math.pi * t) + 1000.0
+                      + rnd.gauss(0, 0.8)) for t in ts])
+
+
+def test_few_clicks_across_an_inflection_get_the_split_hint():
+    """QA22gui F7: 12 clicks fitted at rms 1.92 with no word (too few points for misfit's
+    verdict); split at the inflection they fit at 0.41. split_hint says both figures."""
+    P = waist_clicks(12, 1)
+    r, said = _fit(P, model="smooth")
+    assert said == [] and el.misfit(r.points, r.distances) is None
+    hint = el.split_hint(r.points, r.distances, how="fit_keyline")
+    assert hint is not None
+    kf = el.fit_keyline(P, model="smooth")
+    assert f"the curve lies {r.rms:.3g} from the points (rms)" in hint
+    assert f"split at the inflection (fit_keyline), two elasticae fit them at rms {kf.input_rms:.3g}" in hint
+    assert kf.input_rms < 0.5 * r.rms
+
+
+def test_split_hint_is_silent_where_it_has_nothing_to_add():
+    """No hint: noisy points of one elastica with an inflection (the keyline's extra
+    parameters fit 12 of them closer, not SPLIT_GAIN x closer above the noise), points that
+    turn one way, and 20 points or more (misfit's own verdict speaks there)."""
+    rng = np.random.default_rng(5)
+    quiet = 0
+    for _ in range(40):
+        c = el.SmoothElastica(x0=0, y0=0, phi=rng.uniform(0, 6.28), mu=1.0,
+                              k=rng.uniform(0.3, 0.95), q=rng.uniform(-1, 1), length=5.0)
+        P = c.points(np.sort(rng.uniform(0, 5.0, 12))) * 20 + rng.normal(0, 0.2, (12, 2))
+        r, _ = _fit(P, model="smooth")
+        if r.rms < 2 * 0.2:          # fitted at the noise: nothing to say
+            assert el.split_hint(r.points, r.distances) is None
+            quiet += 1
+    assert quiet >= 30
+    arc = np.c_[np.cos(np.linspace(0, 2, 12)), np.sin(np.linspace(0, 2, 12))] * 50
+    r, _ = _fit(arc + rng.normal(0, 0.5, arc.shape), model="smooth")
+    assert el.split_hint(r.points, r.distances) is None
+    P = waist_clicks(40, 3)
+    r, _ = _fit(P, model="smooth")
+    assert el.split_hint(r.points, r.distances) is None
+    with pytest.raises(ValueError):
+        el.split_hint(P, r.distances[:-1])
