@@ -51,6 +51,64 @@ class FitMeasureTest(S.DocTest):
             self.assertRegex(said[0], r"up to 0\.[56]\d* mm \(rms 0\.[45]\d* mm\) off their "
                                       r"plane, the fit's: Rms and MaxError include that")
 
+    def test_point_numbers_say_which_point_each_figure_is(self):
+        """QA22gui F3: a fit of hand-clicked sketch points lists Distances in DataPoints' order,
+        the fit's along the curve: where two clicked neighbours lie close it is not the order
+        drawn (15/16, 20/21, 26/27, 35/36 of 40 swapped), so Distances[i] was not the sketch's
+        point i, and neither the panel nor the property view said so. PointNumbers gives each
+        one's number as drawn, and the panel says the lists run along the curve."""
+        import random
+        import types
+        from freecad.elastica import taskpanels as T
+        rnd = random.Random(3)
+        xy = [(3.0 * i + rnd.uniform(-0.8, 0.8), 12 * math.sin(i / 6.0) + rnd.uniform(-0.8, 0.8))
+              for i in range(40)]
+        for a in (6, 21, 33):                       # clicked out of turn: a neighbour first
+            xy[a], xy[a + 1] = xy[a + 1], xy[a]
+        sk = S.points_sketch(self.doc, xy, name="Clicks")
+        points = [sk.getGlobalPlacement().multVec(App.Vector(x, y, 0)) for x, y in xy]
+        for model in ("smooth", "discrete"):
+            f = Fi.make(self.doc, [(sk, [])], Model=model)
+            self.doc.recompute()
+            numbers = list(f.PointNumbers)
+            self.assertEqual(sorted(numbers), list(range(1, 41)))
+            self.assertNotEqual(numbers, list(range(1, 41)))
+            # DataPoints[i], Distances[i], FootPoints[i] are the drawn point PointNumbers[i]'s
+            given = [points[i - 1] for i in numbers]
+            self._check_figures(f, given, f.Tolerance.Value if model == "smooth" else 1e-6)
+            for p, q, d in zip(given, f.FootPoints, f.Distances):
+                self.assertAlmostEqual((p - q).Length, abs(d), delta=1e-6)
+            text = T.FitPanel.result_text(types.SimpleNamespace(obj=f))
+            self.assertTrue(text.startswith("40 points taken along the curve, not in the order "
+                                            "given (DataPoints and Distances in the fit's order; "
+                                            "PointNumbers: each one's number as given), "), text)
+        # drawn in curve order: 1 .. n, and the panel as before
+        line = S.points_sketch(self.doc, [(3.0 * i, 12 * math.sin(i / 6.0)) for i in range(20)],
+                               name="InOrder")
+        f = Fi.make(self.doc, [(line, [])], Model="smooth")
+        self.doc.recompute()
+        self.assertEqual(list(f.PointNumbers), list(range(1, 21)))
+        text = T.FitPanel.result_text(types.SimpleNamespace(obj=f))
+        self.assertTrue(text.startswith("20 points, point to curve"), text)
+
+    def test_a_document_saved_before_point_numbers_opens(self):
+        """A fit saved before PointNumbers (the property removed before saving) opens with
+        it empty, the panel saying no order, and fills it at its next recompute."""
+        import types
+        from freecad.elastica import taskpanels as T
+        sk = S.points_sketch(self.doc, [(3.0 * i, 12 * math.sin(i / 6.0)) for i in range(20)])
+        f = Fi.make(self.doc, [(sk, [])], Model="smooth")
+        self.doc.recompute()
+        f.removeProperty("PointNumbers")
+        f, = S.reopened(self, "before_numbers.FCStd", f.Name)
+        self.assertIn("PointNumbers", f.PropertiesList)
+        self.assertEqual(list(f.PointNumbers), [])
+        self.assertTrue(T.FitPanel.result_text(types.SimpleNamespace(obj=f)).startswith(
+            "20 points, point to curve"))
+        f.touch()
+        self.doc.recompute()
+        self.assertEqual(list(f.PointNumbers), list(range(1, 21)))
+
     def test_a_sparse_discrete_keyline_warns_naming_the_smooth_model(self):
         """QA17 W4 (fc/f8): 8 sketched points on an S, split at the inflection: the discrete
         keyline lay 1.45 mm from them (the smooth one 0.042 mm) without a warning; it now

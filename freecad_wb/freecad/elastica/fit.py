@@ -138,21 +138,29 @@ class FitProxy(FeatureProxy):
                      "What Rms and MaxError measure")
         add_property(obj, "App::PropertyFloatList", "Distances", "Result",
                      "Signed distance (mm) of each fitted point from the curve, + = left of it "
-                     "seen from the fit plane's normal, in the order of DataPoints")
+                     "seen from the fit plane's normal, in the order of DataPoints (the fit's, "
+                     "along the curve; PointNumbers: each one's number in the order given)")
         add_property(obj, "App::PropertyString", "Curves", "Result",
                      "The fitted curves' parameters (JSON, plane coordinates); a split "
                      "keyline's two halves each run from the joint")
         add_property(obj, "App::PropertyPlacement", "Plane", "Result",
                      "The plane of the fit (sketch placement or PCA plane)")
         add_property(obj, "App::PropertyVectorList", "DataPoints", "Result",
-                     "The points given (never the resampled ones), global coordinates")
+                     "The points given (never the resampled ones), global coordinates, in the "
+                     "order fitted: along the curve from its start, which is not the order given "
+                     "where a sketch's points or a file's rows lie otherwise (PointNumbers)")
+        add_property(obj, "App::PropertyIntegerList", "PointNumbers", "Result",
+                     "For each of DataPoints (and Distances, FootPoints), its number in the "
+                     "order given, from 1: a sketch's points as drawn, a file's rows, vertices "
+                     "as picked (1, 2, 3, ... where the fit kept that order; empty until the "
+                     "first recompute of a document saved before it)")
         add_property(obj, "App::PropertyVectorList", "FootPoints", "Result",
                      "Each data point's nearest point on the curve (its polygon for a discrete "
                      "fit), global coordinates")
         read_only(obj, "Rms", "MaxError", "BSplineDeviation", "FreeRms", "Warnings", "K",
                   "EndCurvatures", "Status",
                   "ErrorMeasure",
-                  "Distances", "Curves", "Plane", "DataPoints", "FootPoints")
+                  "Distances", "Curves", "Plane", "DataPoints", "FootPoints", "PointNumbers")
 
     def compute(self, obj):
         """The fit as a dict (see fit_core); raises InputProblem."""
@@ -205,6 +213,7 @@ class FitProxy(FeatureProxy):
         obj.DataPoints = [plc.multVec(App.Vector(*map(float, p))) for p in r["data"]]
         obj.FootPoints = to_3d(plc, r["feet"])
         obj.Distances = [float(d) for d in r["distances"]]
+        obj.PointNumbers = r["numbers"]
         curve_to_dict = binding_module("io").curve_to_dict
         obj.Curves = json.dumps([curve_to_dict(c) for c in r["curves"]])
         old = obj.CsvStamp     # (setup added it, at creation or restore)

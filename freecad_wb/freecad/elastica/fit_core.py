@@ -367,7 +367,8 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
     or None (free); ``start_join`` / ``end_join``: how that end meets its edge
     (end_constraints). Returns a dict: 'curves' (plane coordinates; a keyline's two
     halves, each from the joint), 'results', 'bspline', 'placement', 'data' (the
-    user's points, (n, 3) in the frame of the plane: never a resampled polygon), 'feet'
+    user's points, (n, 3) in the frame of the plane: never a resampled polygon, in the order
+    fitted), 'numbers' (each one's number in the order given, from 1), 'feet'
     (their nearest points on the curve), 'distances' (signed, + = left; in 3D),
     'measure', 'rms', 'max_error' (point to curve: the library's figures for points it
     fitted as they are and in its plane, else measured on the curve drawn), 'k',
@@ -421,8 +422,13 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         user = n.column_stack([xy, to_plane(plane, points)[:, 2]])
         order, ordering = file_order(xy) if ordered is None else \
             (None if ordered else curve_order(xy), [])
-        user = facing_the_edges(user if order is None else user[order], plane, start_edge,
-                                 end_edge)
+        taken = user if order is None else user[order]
+        user = facing_the_edges(taken, plane, start_edge, end_edge)
+        # each fitted point's number in the order given (QA22gui F3: where the fit took them
+        # in another, Distances[i] was not the sketch's point i, and nothing said so)
+        numbers = n.arange(1, len(points) + 1) if order is None else n.asarray(order) + 1
+        if user is not taken:
+            numbers = numbers[::-1]
         xy = n.ascontiguousarray(user[:, :2])
         constraints, free_rms, warnings, used, reversed_joins = {}, -1.0, [], None, []
         free_dist, keyline_sparse = None, None
@@ -512,6 +518,7 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
     return {
         "curves": curves, "results": results, "bspline": bspline, "placement": plane,
         "data": data, "feet": feet, "distances": n.asarray(dist, dtype=float),
+        "numbers": [int(i) for i in numbers],
         "measure": measure, "rms": float(rms), "max_error": float(max_error),
         "k": [float(r.curve.k) for r in results],
         "end_curvatures": [float(v) for v in bspline.curvature(n.array(bspline.domain))],

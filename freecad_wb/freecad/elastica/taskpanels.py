@@ -211,7 +211,14 @@ class FitPanel(Panel):
             k0, k1 = (0.0 if abs(k) * size < 1e-9 else k for k in o.EndCurvatures)
             ends = f"<br>end \u03ba {k0 * length_unit()[0]:.4g}, {per_length(k1, 4)}"
         # measured lengths: rounding noise as 0 (figure_text; the properties keep the figures)
-        return (f"{n} points, {o.ErrorMeasure}:<br>rms {figure_text(o.Rms)}, "
+        numbers = list(getattr(o, "PointNumbers", ()))
+        if numbers and numbers != list(range(1, len(numbers) + 1)):
+            # QA22gui F3: the lists run along the curve, the points were given otherwise
+            n = (f"{n} points taken along the curve, not in the order given (DataPoints "
+                 "and Distances in the fit's order; PointNumbers: each one's number as given)")
+        else:
+            n = f"{n} points"
+        return (f"{n}, {o.ErrorMeasure}:<br>rms {figure_text(o.Rms)}, "
                 f"max {figure_text(o.MaxError)}"
                 f"<br>{curve}k = {ks}{ends}<br>{bs}<br>{said_now(o, 'Status')}")
 
