@@ -124,12 +124,10 @@ def say_drift(obj):
 
 def _scheduler():
     """Where the GUI runs: a function running its argument once the event loop is idle again
-    (after the user action whose recomputes are running), else None (a script's recompute is
-    its own step: said at once)."""
-    if not App.GuiUp:
-        return None
-    from PySide import QtCore
-    return lambda fn: QtCore.QTimer.singleShot(0, fn)
+    (after the user action whose recomputes are running; proxy.IDLE_HOOK, the GUI's: this
+    module imports no Qt), else None (a script's recompute is its own step: said at once)."""
+    from .proxy import IDLE_HOOK
+    return IDLE_HOOK[0] if App.GuiUp and IDLE_HOOK else None
 
 
 def _tell(obj, proxy, line):

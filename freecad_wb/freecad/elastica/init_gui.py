@@ -36,5 +36,6 @@ class ElasticaWorkbench(Gui.Workbench):
 
 
 proxy.VIEW_HOOK[:] = [viewproviders.attach, viewproviders.restored]
+proxy.IDLE_HOOK[:] = [viewproviders.when_idle]
 Gui.addIconPath(ICONPATH)
 Gui.addWorkbench(ElasticaWorkbench())

@@ -26,6 +26,7 @@ VERSION = 5             # of the proxies' saved state (3: lengths typed with uni
                         # 4: a blend's Solution counts from 1, as its list; 5: a Shape in
                         # its container's coordinates, containers.set_shape)
 VIEW_HOOK = []          # [attach(obj), restored(obj)] set by init_gui: view providers
+IDLE_HOOK = []          # [later(fn)] set by init_gui: fn run once the GUI's event loop is idle
 
 
 class InputProblem(ValueError):

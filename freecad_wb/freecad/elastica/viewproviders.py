@@ -42,6 +42,13 @@ ARROW_FLOOR = 0.3           # no arrow shorter than this share of the longest: i
                             # shows (the panel gives the values)
 
 
+def when_idle(fn):
+    """Run ``fn`` once the event loop is idle again, after the user action under way
+    (proxy.IDLE_HOOK: copies' report line said once per action)."""
+    from PySide import QtCore
+    QtCore.QTimer.singleShot(0, fn)
+
+
 def _kind(obj):
     return getattr(getattr(obj, "Proxy", None), "kind", "")
 
