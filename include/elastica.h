@@ -386,7 +386,8 @@ enum el_fit_constraint {
  * k, q, length).
  */
 typedef struct el_fit_options {
-    int fixed[7];        /* 1: hold p_j at value[j] (x0, y0 pinned to a point, seed 000 §5.4; h fixed) */
+    int fixed[7];        /* 1: hold p_j at value[j] (x0, y0 pinned to a point, seed 000 §5.4; h fixed);
+                            0: free; any other value: EL_EINVAL */
     double value[7];     /* values of the fixed parameters (input units); h, mu > 0, length >= 0 */
     double lower[7];     /* bounds on p_j in input units; -HUGE_VAL / HUGE_VAL: none. Defaults: */
     double upper[7];     /*   none (the model's domain, h, mu, length > 0, discrete k >= 0, is kept internally) */
@@ -524,7 +525,8 @@ typedef struct el_fit_smooth_result {
  *     seen are returned), or the data's scale is outside what double precision
  *     represents (differences below ~1e-292, or beyond ~1e308; res untouched) or the
  *     fitted parameters are (res written, params the best finite ones seen);
- *   EL_EINVAL: NULL, n < 4, NaN/inf, bad options (a fixed h <= 0, mu <= 0 or length < 0,
+ *   EL_EINVAL: NULL, n < 4, NaN/inf, bad options (a fixed[j] other than 0 or 1, a fixed
+ *     h <= 0, mu <= 0 or length < 0,
  *     a value outside its bounds, inconsistent bounds, an unknown constraint bit, a
  *     non-finite constraint value, a constraint contradicting a fixed parameter: then
  *     res->constraint names it and nothing else of res is written);

@@ -33,6 +33,8 @@ int el__fit_check_options(const el_fit_options *o, int model, int *which)
     if (o->distance < EL_DISTANCE_AUTO || o->distance > EL_DISTANCE_PAIRED) return EL_EINVAL;
     for (int j = 0; j < FIT_NP; j++) {
         if (isnan(o->lower[j]) || isnan(o->upper[j]) || o->lower[j] > o->upper[j]) return EL_EINVAL;
+        /* a flag, 0 or 1: another value (2, -1, a count) was held as 1 (QA22 E) */
+        if (o->fixed[j] != 0 && o->fixed[j] != 1) return EL_EINVAL;
         if (!o->fixed[j]) continue;
         const double v = o->value[j];
         if (!isfinite(v) || v < o->lower[j] || v > o->upper[j]) return EL_EINVAL;

@@ -496,7 +496,8 @@ START_TEST(test_ipopt_opt_in_working_directory_ignored)
 }
 END_TEST
 
-/* Fixed h, mu <= 0 or length < 0 are refused (EL_EINVAL), result untouched. */
+/* Fixed h, mu <= 0 or length < 0, and a fixed flag other than 0 / 1, are refused (EL_EINVAL),
+ * result untouched. */
 START_TEST(test_fixed_h_nonpositive_rejected)
 {
     const size_t n = 40;
@@ -526,6 +527,23 @@ START_TEST(test_fixed_h_nonpositive_rejected)
     el_fit_options_defaults(&o);
     o.distance = EL_DISTANCE_PAIRED + 1;                /* no such distance */
     ck_assert_int_eq(el_fit_discrete(xy, n, &o, NULL, &r, NULL, NULL), EL_EINVAL);
+    /* fixed[j] is a flag: 2 or -1 (was held as 1, QA22 E) refused, res untouched; the same
+     * value with the flag 1 fits */
+    const int flags[] = {2, -1, 7};
+    for (size_t a = 0; a < 3; a++)
+        for (int j = 0; j < 7; j++) {
+            el_fit_options_defaults(&o);
+            o.fixed[j] = flags[a];
+            o.value[j] = j == 2 ? p.h : 0.0;
+            r = r0;
+            ck_assert_int_eq(el_fit_discrete(xy, n, &o, NULL, &r, NULL, NULL), EL_EINVAL);
+            ck_assert(memcmp(&r, &r0, sizeof r) == 0);
+            o.value[j] = j == 3 ? 1.0 : j == 6 ? 2.0 : 0.0;
+            ck_assert_int_eq(el_fit_smooth(xy, n, &o, NULL, &sr, NULL, NULL), EL_EINVAL);
+        }
+    el_fit_options_defaults(&o);
+    o.fixed[2] = 1; o.value[2] = p.h;
+    ck_assert_int_eq(el_fit_discrete(xy, n, &o, NULL, &r, NULL, NULL), EL_OK);
 }
 END_TEST
 
