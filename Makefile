@@ -1,7 +1,9 @@
 # libelastica — the only entry point: deps, build, check, bench, demo, install.
 # `make check` on a fresh Debian 12 machine installs what is missing and runs every test.
 
-VERSION      := 0.1.0
+# the header's EL_VERSION_STRING (include/elastica.h: the one place the version is written)
+VERSION      := $(shell sed -n 's/^\#define EL_VERSION_STRING "\(.*\)"$$/\1/p' include/elastica.h)
+$(if $(VERSION),,$(error no EL_VERSION_STRING "MAJOR.MINOR.PATCH" line in include/elastica.h))
 SOVERSION    := 0
 BUILD        ?= build
 PREFIX       ?= /usr/local
@@ -428,6 +430,9 @@ check-install: lib
 	PKG_CONFIG_PATH=$(BUILD)/stage/lib/pkgconfig $(CC) -std=c99 -Wall -Werror examples/readme_example.c \
 	  $$(PKG_CONFIG_PATH=$(BUILD)/stage/lib/pkgconfig pkg-config --cflags --libs elastica) -o $(BUILD)/readme_example
 	LD_LIBRARY_PATH=$(BUILD)/stage/lib $(BUILD)/readme_example
+	@v=$$(PKG_CONFIG_PATH=$(BUILD)/stage/lib/pkgconfig pkg-config --modversion elastica); \
+	if [ -z "$(VERSION)" ] || [ "$$v" != "$(VERSION)" ]; then \
+	  echo "check-install: pkg-config says version '$$v', the header's EL_VERSION_STRING '$(VERSION)'"; exit 1; fi
 	@# the installed shared library exports the API only (el_ and a letter), so no
 	@# function of a program that uses it can replace one of the library's own; the
 	@# static one defines no name outside el_* (its internals el__*)

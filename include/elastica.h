@@ -30,6 +30,14 @@
 
 #include <stddef.h>
 
+/* The version of this header, the one source of it: el_version() returns the library's
+ * at run time, the Makefile's VERSION (the shared object's name, pkg-config's Version) and
+ * the Python binding's __version__ are these (test_abi.c, test_abi.py). */
+#define EL_VERSION_MAJOR 0
+#define EL_VERSION_MINOR 1
+#define EL_VERSION_PATCH 0
+#define EL_VERSION_STRING "0.1.0"
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -53,7 +61,8 @@ enum el_status {
 /* A static, human-readable message for a status (never NULL). */
 const char *el_strerror(int status);
 
-/* Library version as "MAJOR.MINOR.PATCH" (static string). */
+/* Library version as "MAJOR.MINOR.PATCH" (static string): the EL_VERSION_STRING the
+ * library was built with (a program compiled with another header may compare). */
 const char *el_version(void);
 
 /*

@@ -21,7 +21,7 @@ const char *el_strerror(int status)
     }
 }
 
-const char *el_version(void) { return "0.1.0"; }
+const char *el_version(void) { return EL_VERSION_STRING; }
 
 static pthread_once_t gsl_quiet_once = PTHREAD_ONCE_INIT;
 

@@ -70,6 +70,18 @@ START_TEST(digest_is_the_headers)
 }
 END_TEST
 
+/* The version macros agree with each other and with the library's el_version() (a
+ * library built from this header); the Makefile reads its VERSION from EL_VERSION_STRING
+ * (check-install compares pkg-config's with it). */
+START_TEST(version_macros_are_the_librarys)
+{
+    char v[64];
+    snprintf(v, sizeof v, "%d.%d.%d", EL_VERSION_MAJOR, EL_VERSION_MINOR, EL_VERSION_PATCH);
+    ck_assert_str_eq(v, EL_VERSION_STRING);
+    ck_assert_str_eq(el_version(), EL_VERSION_STRING);
+}
+END_TEST
+
 START_TEST(crc32_is_zlibs)
 {
     /* zlib.crc32(b"123456789") == 0xcbf43926, the CRC-32 check value */
@@ -83,6 +95,7 @@ int main(void)
     TCase *t = tcase_create("digest");
     tcase_add_test(t, crc32_is_zlibs);
     tcase_add_test(t, digest_is_the_headers);
+    tcase_add_test(t, version_macros_are_the_librarys);
     suite_add_tcase(s, t);
     return test_run_suite(s);
 }

@@ -91,3 +91,18 @@ def test_a_library_without_the_digest_is_refused(tmp_path):
     last = err.strip().splitlines()[-1]
     assert last.startswith("ImportError: libelastica: the C library"), err
     assert str(so) in last and str(HEADER) in last and "has no el_abi_digest" in last, last
+
+
+def test_version_is_the_headers():
+    """__version__ (pyproject.toml's, read from __init__.py), the loaded library's
+    el_version() and the header's EL_VERSION_STRING / _MAJOR / _MINOR / _PATCH (the one
+    place the version is written: the Makefile reads it there) are the same."""
+    import re
+
+    import libelastica as el
+    text = HEADER.read_text()
+    macro = {m[0]: m[1] for m in re.findall(r"^#define EL_VERSION_(\w+) (\S+)$", text, re.M)}
+    assert set(macro) == {"MAJOR", "MINOR", "PATCH", "STRING"}, macro
+    assert macro["STRING"] == f'"{macro["MAJOR"]}.{macro["MINOR"]}.{macro["PATCH"]}"'
+    assert el.__version__ == macro["STRING"].strip('"')
+    assert _ffi.ffi.string(_ffi.lib.el_version()).decode() == el.__version__
