@@ -275,6 +275,13 @@ void el__fit_polygon_distances(const fit_objective *o, const double *V, size_t n
  * the bounding-box search to: the same feet and distances, bit for bit). */
 void el__fit_polygon_distances_by(const fit_objective *o, const double *V, size_t nv, double h,
                                   size_t first, long step, double *dist, double *foot, int accelerate);
+/* The same, the work counted into *visited (may be NULL): the segments whose distance the
+ * walks and the scanned ranges measured, the polygon's segments at each build of the tree,
+ * one per search of it (a range or a run the walk skips); deterministic, for tests that
+ * hold the search to O(n) work (test_fit_polygon_work.c). */
+void el__fit_polygon_distances_counted(const fit_objective *o, const double *V, size_t nv, double h,
+                                       size_t first, long step, double *dist, double *foot,
+                                       int accelerate, long *visited);
 /* The direction of (x, y) in (-pi, pi] to within 2e-6 (fit_polygon.c). */
 double el__fit_direction(double x, double y);
 /* fit_polygon.c: el__fit_nearest_everywhere's search of the discrete model's polygons. */

@@ -298,16 +298,20 @@ static void tree_search(const seg_tree *T, long node, long lo, long hi, tree_que
  * (O(n)): a few long ranges cost less by the scan (a 1000-point paired fit met some in 26
  * of bench_fit.py's 84 noisy 1000-point fits, and built the tree for them, 86 000
  * instructions, where the scans cost a few thousand); many, at most twice the cheaper. */
-static inline void nearest_in_range(seg_tree *T, int *tree_state, long *scanned, const double *V, long ns,
-                                    long j0, long j1, const double *P, double lmax, double *r, double *bd,
-                                    long *bj, double *bt)
+static inline void nearest_in_range(seg_tree *T, int *tree_state, long *scanned, long *visits,
+                                    const double *V, long ns, long j0, long j1, const double *P,
+                                    double lmax, double *r, double *bd, long *bj, double *bt)
 {
-    if (j1 - j0 >= TREE_MIN && *tree_state == 0 && (*scanned += j1 - j0) > ns)
+    if (j1 - j0 >= TREE_MIN && *tree_state == 0 && (*scanned += j1 - j0) > ns) {
         *tree_state = tree_build(T, V, ns) ? 1 : -1;
+        *visits += ns;
+    }
     if (j1 - j0 < TREE_MIN || *tree_state != 1) {
+        if (j1 > j0) *visits += j1 - j0;
         nearest_segment(V, j0, j1, P, lmax, r, bd, bj, bt);
         return;
     }
+    ++*visits;
     tree_query q = {P, j0, j1, lmax, *bd, tree_bound2(*bd, lmax), 0.0, -1, 0};
     if (!(T->box[4] <= T->box[5])) return;      /* no segment */
     tree_search(T, 1, 0, T->size * TREE_LEAF, &q);
@@ -374,10 +378,21 @@ void el__fit_polygon_distances(const fit_objective *o, const double *V, size_t n
 void el__fit_polygon_distances_by(const fit_objective *o, const double *V, size_t nv, double h,
                                   size_t first, long step, double *dist, double *foot, int accelerate)
 {
+    el__fit_polygon_distances_counted(o, V, nv, h, first, step, dist, foot, accelerate, NULL);
+}
+
+void el__fit_polygon_distances_counted(const fit_objective *o, const double *V, size_t nv, double h,
+                                       size_t first, long step, double *dist, double *foot,
+                                       int accelerate, long *visited)
+{
     seg_tree T = {V, 0, 0, NULL, NULL};
     int tree_state = accelerate ? 0 : -1;       /* 0: not built yet, 1: built, -1: the scan */
     long scanned = 0;                           /* segments of long ranges scanned (nearest_in_range) */
-    if (accelerate && nv > TREE_EAGER) tree_state = tree_build(&T, V, (long)nv - 1) ? 1 : -1;
+    long visits = 0;                            /* the work: *visited (fit_internal.h) */
+    if (accelerate && nv > TREE_EAGER) {
+        tree_state = tree_build(&T, V, (long)nv - 1) ? 1 : -1;
+        visits += (long)nv - 1;
+    }
     const long last = (long)nv - 2;
     /* the polygon's largest turning |T' - T| at its vertices over its shortest segment
      * (the bound of the jumps of f' above; a zero-length or non-finite segment: NaN, so
@@ -418,12 +433,15 @@ void el__fit_polygon_distances_by(const fit_objective *o, const double *V, size_
             for (long seg = dir < 0 ? j0 - 1 : j0; seg >= 0 && seg <= last; seg += dir) {
                 /* a long walk's segments count as a long range's (nearest_in_range): the
                  * tree is built once they pass the polygon's segments */
-                if (tree_state == 0 && ++walked > TREE_MIN && ++scanned > last + 1)
+                if (tree_state == 0 && ++walked > TREE_MIN && ++scanned > last + 1) {
                     tree_state = tree_build(&T, V, last + 1) ? 1 : -1;
+                    visits += last + 1;
+                }
                 /* a run of segments the walk passes whole: skipped by the tree */
                 if (tree_state == 1) {
                     const long next = walk_skip(&T, seg, dir, P, lmax, &bd, &best, &bt);
                     if (next != seg) {
+                        visits++;
                         if (dir < 0) clo = next + 1; else chi = next - 1;
                         seg = next - dir;
                         continue;
@@ -431,6 +449,7 @@ void el__fit_polygon_distances_by(const fit_objective *o, const double *V, size_
                 }
                 double t;
                 const double d2 = segment_distance2(V + 2 * seg, V + 2 * seg + 2, P, &t);
+                visits++;
                 if (dir < 0) clo = seg; else chi = seg;
                 if (d2 < bd) { bd = d2; best = seg; bt = t; }
                 if (dir < 0 ? t > 0.0 : t < 1.0) break;     /* not at the far end: stop */
@@ -453,8 +472,10 @@ void el__fit_polygon_distances_by(const fit_objective *o, const double *V, size_
             const long reach = m >= 1.0 ? (m <= (double)(last + 1) ? (long)m : last + 1) : 1;
             const long lo = centre - reach < 0 ? 0 : centre - reach, hi = centre + reach > last ? last : centre + reach;
             double r = reach_of(d, lmax);
-            nearest_in_range(&T, &tree_state, &scanned, V, last + 1, lo, hi < clo ? hi + 1 : clo, P, lmax, &r, &bd, &best, &bt);
-            nearest_in_range(&T, &tree_state, &scanned, V, last + 1, lo > chi ? lo : chi + 1, hi + 1, P, lmax, &r, &bd, &best, &bt);
+            nearest_in_range(&T, &tree_state, &scanned, &visits, V, last + 1, lo,
+                             hi < clo ? hi + 1 : clo, P, lmax, &r, &bd, &best, &bt);
+            nearest_in_range(&T, &tree_state, &scanned, &visits, V, last + 1,
+                             lo > chi ? lo : chi + 1, hi + 1, P, lmax, &r, &bd, &best, &bt);
             if (lo < clo) clo = lo;
             if (hi > chi) chi = hi;
         }
@@ -462,6 +483,7 @@ void el__fit_polygon_distances_by(const fit_objective *o, const double *V, size_
         foot[g] = h * ((double)best + bt);
     }
     free(T.box);
+    if (visited) *visited = visits;
 }
 
 /*
