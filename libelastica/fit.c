@@ -23,8 +23,8 @@
  * fit, and one that strays from its points from the paired fit.
  *
  * el__fit_run in stages, handing on a fit_run_state: read_options, normalised_bounds,
- * choose_charts, build_map, alloc_work; the starts and the choice among their fits
- * (fit_choose.c); settle_feet (the kept fit's feet on its nearest pass); report_distances,
+ * choose_charts, build_map, alloc_work; the starts (fit_starts.c) and the choice among
+ * their fits (fit_choose.c); settle_feet (the kept fit's feet on its nearest pass); report_distances,
  * report_params (input units); follow_the_points and further_runs (fit_restart.c).
  */
 #include "fit_internal.h"

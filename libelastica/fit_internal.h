@@ -3,8 +3,8 @@
  *   fit.c            the public entry points and el__fit_run's stages: options,
  *                    normalisation, charts and map, the kept fit's feet, results and
  *                    distances in input units, the further runs;
- *   fit_choose.c     the run's starts (guesses and further starts) and the choice
- *                    among their fits;
+ *   fit_starts.c     the run's starts (guesses and further starts), the noise rule;
+ *   fit_choose.c     each start's fit and the choice among them;
  *   fit_candidate.c  one initial guess solved: Levenberg-Marquardt, then Ipopt where
  *                    rows, bounds or an uncertified point need it;
  *   fit_model.c      the optimiser's parameters: internal parameter vectors, the maps
@@ -155,7 +155,7 @@ typedef struct fit_objective {
      * (fit_lm.c); HUGE_VAL (el__fit_objective_init): never */
     double f_ceiling;
     /* smooth orthogonal: a fit from the paired start that ends above this objective (far
-     * above the data's noise, fit_choose.c) is fitted from its guess's own feet too
+     * above the data's noise, fit_starts.c) is fitted from its guess's own feet too
      * (fit_candidate.c); HUGE_VAL (el__fit_objective_init): never */
     double f_direct;
     /* Levenberg-Marquardt stops once a Gauss-Newton step would lower f by less than
@@ -529,7 +529,7 @@ typedef struct fit_candidate {
     double x[FIT_MAXX], f;
     int status, iters, used_ipopt, ipopt_status;
 } fit_candidate;
-/* A candidate with rows that loops (fit_choose.c's conjugate starts), refitted by Ipopt from
+/* A candidate with rows that loops (fit_starts.c's conjugate starts), refitted by Ipopt from
  * where it is from its curve's nearest points (el__fit_feet_start) while that lowers f and
  * meets con and the bounds lo, hi, at most REFEET_ROUNDS times: its feet followed the curve
  * by Newton steps from its start's nearest points and can rest on another pass than the
@@ -591,7 +591,7 @@ enum {
     FIT_G1_STARTS = 3,      /* G1 family members fitted at most (fit_g1_family.c) */
     FIT_G1_WAVES = 8,       /* and waves along nearly collinear ends (fit_g1_family.c) */
     /* fewer points are a sketch's (bench_fit_sparse.py draws 6-59), whose noise figure
-     * holds their curve's bending too (fit_choose.c: ob.f_direct) */
+     * holds their curve's bending too (fit_starts.c: ob.f_direct) */
     FIT_SKETCH_POINTS = 60
 };
 typedef struct fit_run_state {
@@ -621,14 +621,14 @@ typedef struct fit_run_state {
     double *t, *tmp, *dbuf, *d, *fs, *kept_feet;
     fit_objective ob;
     int mode;                                /* the smooth fractions' el_param_mode */
-    /* the starts (fit_choose.c): cand[0..ncand), the index of each further start in it
+    /* the starts (fit_starts.c): cand[0..ncand), the index of each further start in it
      * ((size_t)-1: none), the first nconj conjugate and nfamily family starts */
     double cand[FIT_MAXCAND + 4 + FIT_G1_STARTS + FIT_G1_WAVES][FIT_NP];
     size_t ncand, free_ci, smooth_ci, natural_ci, nconj, nfamily;
     int caller_twice, caller_start, free_start, smooth_start, sketch_rows;
     int natural_ok, natural_evals, deferred, no_polish, polish_run, refit_no_polish;
     int family_pass, family_won, kept_last;
-    double noise_rms, data_noise, noise;     /* the noise figures (fit_choose.c) */
+    double noise_rms, data_noise, noise;     /* the noise figures (fit_starts.c) */
     /* the kept fit: its candidate and start, what is known of it (-1: not yet), the
      * counts; then its curve v, status and the constraint it violates, ok: evaluable */
     fit_candidate best;
@@ -645,7 +645,7 @@ typedef struct fit_run_state {
  * back over a stretch (a retraced scan: not one pass), 0 where none does. */
 int el__fit_evenly_spaced(const double *xy, size_t n);
 size_t el__fit_retrace(const double *xy, size_t n);
-/* fit_choose.c: the run's starts: the guesses (or the caller's start), the noise rule, and
+/* fit_starts.c: the run's starts: the guesses (or the caller's start), the noise rule, and
  * the further starts fitted first; EL_OK, else the run's error. */
 int el__fit_starts(fit_run_state *R);
 /* fit_choose.c: every start fitted in turn, the best kept (R->best, best_init), then the G1
