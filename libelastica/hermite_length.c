@@ -33,20 +33,55 @@
 #include <string.h>
 
 /* sigma range of length-mode solutions (normalised |P| = 1, length Lt > 1):
- * sigma >= -(C0/Lt)^2 (Theorem 9 bound, sigma <= 0 case). Above: for k <= 1,
- * |P| >= <P, -F/|F|> = L - 2 int dn^2(u) ds (the tangent's component along F is
- * 2 dn^2 - 1), and over at most one period u in [0, 4K] int dn^2 du <= 4 E(k), so
- * Lt - 1 <= 8 E(k) / sqrt(mu) and sigma = 2 mu (2k^2 - 1) <= 128 E(k)^2 (2k^2 - 1) / (Lt - 1)^2,
- * at most HLEN_SIGMA_E2 / (Lt - 1)^2 (hermite_internal.h): the maximum over k is 1.0166210 (at k^2 = 0.97136,
- * just above its value 1 at k = 1; reached by the two-loop solutions near the
- * separatrix, test_hermite_length.c checks it against tension-mode solutions). For k > 1
- * likewise with nu = k^2 mu <= (4 / (Lt - 1))^2 and sigma <= 4 nu. The bound holds at
- * every point of C with L >= Lt, so a trace above it has L < Lt. */
-static void sigma_range(double Lt, double *lo, double *hi)
+ * sigma >= -(C0/Lt)^2 (Theorem 9 bound, sigma <= 0 case). Above, for k <= 1 (psi = theta - phi,
+ * sin(psi/2) = k sn u, cos(psi/2) = dn u, u = sqrt(mu) s + q, seed 000 (4.2)): the tangent's
+ * component along e_phi is cos psi = 2 dn^2 - 1, so L + <P, e_phi> = 2 J / sqrt(mu),
+ * J = int dn^2 du over the curve's u-interval [u0, u1], and as <P, e_phi> >= -|P| = -1,
+ * sqrt(mu) <= 2 J / (L - 1) and sigma = 2 mu (2k^2 - 1) <= 8 (2k^2 - 1) J^2 / (L - 1)^2.
+ * The curve spans at most one curvature period (u1 - u0 <= 4K, seed 004), over which
+ * int dn^2 du = 4 E(k); the rest of the period, from u1 on to u0 + 4K, runs from psi1 back to
+ * psi0 (dpsi/du = 2k cn), so J <= 4 E(k) - |E(am u1) - E(am u0)| (E(am u, k) = int_0^u dn^2, the
+ * incomplete integral of the second kind at sin(am u) = sin(psi/2) / k). The ends' tangents
+ * fix psi1 - psi0 modulo 2 pi: psi1 = psi0 + delta wrapped into (-pi, pi], delta the turn from
+ * t0 to t1; phi, so psi0, is free. Hence sigma (L - 1)^2 <= B(d), d = |delta| in [0, pi]
+ * (the mirror image turns -delta):
+ *   B(d) = sup over k in (1/sqrt 2, 1], psi0 of 8 (2k^2 - 1) (4 E(k) - |E(am u1) - E(am u0)|)^2,
+ * at d = 0 128 max E^2 (2k^2 - 1) = HLEN_SIGMA_E2 (k^2 = 0.97136: the two-loop solutions near
+ * the separatrix, whose ends' tangents are parallel); from d = 0.39 on the sup is the k -> 1
+ * limit, E(am u) -> sin(psi/2), 8 (3 + cos(d/2))^2 (psi0 = pi - d: an end at the middle of a
+ * loop, the other on an arm), 72 at d = pi. For k > 1 (modulus m = 1/k, nu = k^2 mu, psi/2 =
+ * am(k u; m) monotone, one period a turn of 2 pi) likewise sigma (L - 1)^2 <= 8 (2 - m^2) J^2 with
+ * J = int cos^2 a / sqrt(1 - m^2 sin^2 a) da over a window of psi/2 at most pi wide: J <= 2 (E(m) -
+ * m'^2 K(m)) / m^2, so at most 8 * 2 * (pi/2)^2 = 39.5 < 72 for every d. sigma_bound_d2 holds B at
+ * the left end of each of 32 bins of d (B decreases with d: the bin's largest), rounded up by
+ * 1e-3 .. 2e-3 (the sup by a grid over (k^2, psi0) refined by Nelder-Mead, scipy's ellipe and
+ * ellipeinc; test_hermite_length.c recomputes it with GSL and checks it against 40 000 tension-mode
+ * solutions, which reach 0.98 of it in every quarter of [0, pi]: the bound is tight). Bin 0 is
+ * HLEN_SIGMA_E2 itself (130.13, its sup 130.1275): near-parallel tangents keep their top line to
+ * the ulp, as make hermite-sets' set 7 (tangents along the chord) loses one-loop solutions when
+ * that line moves by one ulp (a trace's luck, not the bound's). The bound holds at every point of
+ * C with L >= Lt, so a trace above it has L < Lt. Against the former d-free bound (HLEN_SIGMA_E2
+ * for every d) it is 44 % lower at d = pi: the top seed line and the traces' end come down with
+ * it (4.5 % fewer instructions on the bench's problems, seeds below). */
+static const double sigma_bound_d2[32] = {
+    HLEN_SIGMA_E2, 129.136, 128.219, 127.352, 126.775, 126.091, 125.261, 124.288, 123.176, 121.931, 120.556,
+    119.058, 117.443, 115.717, 113.886, 111.959, 109.943, 107.844, 105.672, 103.434, 101.138, 98.793,
+    96.406, 93.987, 91.542, 89.080, 86.609, 84.137, 81.670, 79.217, 76.783, 74.376};
+
+double el__hlen_sigma_bound(const hprob *pr)
+{
+    const double d = fabs(atan2(-pr->V1, pr->V2));   /* the turn from t0 = (0, 1) to V */
+    int i = (int)(d * (32.0 / M_PI));
+    if (!(i >= 0)) i = 0;
+    if (i > 31) i = 31;
+    return sigma_bound_d2[i];
+}
+
+static void sigma_range(const hprob *pr, double Lt, double *lo, double *hi)
 {
     const double c = C0_PERIOD / Lt, e = Lt - 1.0;
     *lo = -c * c;
-    *hi = fmax(HLEN_SIGMA_E2 / (e * e), 64.0 / (e * e));
+    *hi = el__hlen_sigma_bound(pr) / (e * e);
 }
 
 /* The tension the search reaches (header: the same as tension mode's range; beyond it
@@ -68,8 +103,13 @@ static void sigma_range(double Lt, double *lo, double *hi)
 #define MAX_EVALS EL__HERMITE_MAX_EVALS
 
 /* The seed lines: every tension solution on nl lines over the sigma range in t = asinh(sigma)
- * (hermite_tension.c), ns samples each: both ends of the range and, between them, lines at the
- * fractions 1 - (1 - j / (nl - 1))^T->line_power of it. The top line meets both arms of the
+ * (hermite_tension.c), ns samples each: the top line at the top of the range (the turn-dependent
+ * bound B(d) / (Lt - 1)^2, sigma_range), the others at the fractions 1 - (1 - j / (nl - 1))^T->line_power
+ * of [tlo, thi_lines], thi_lines the d-free bound's HLEN_SIGMA_E2 / (Lt - 1)^2 (where every line
+ * lay before B(d): the lines below the top keep their places, which are tuned for where C's
+ * pieces cross them; with them spread over the lower range too, make length-recovers' seed 7
+ * lost one of 46 115 (L 1.078 |p1 - p0|, sigma |p1 - p0|^2 11.1) and gained two, and 3.7 % fewer
+ * instructions on the bench's problems against 4.5 % this way). The top line meets both arms of the
  * curves that carry the pairs born near the top (two loops near the separatrix, sigma (Lt - 1)^2
  * near 128; on the bench's problems its traces alone find 605 of the 3494 solutions); below
  * it the lines lie a little closer towards the bottom, where a tension solve is cheap (without
@@ -91,7 +131,12 @@ static int seeds(tracer *T, int nl, int ns)
     for (int j = 0; j < nl && !rc; j++) {
         hprob q = *pr;
         const double frac = nl == 1 ? 1.0 : 1.0 - pow(1.0 - (double)j / (nl - 1), T->line_power);
-        q.sigma = sinh(T->tlo + (T->thi - T->tlo) * frac);
+        /* none above the top one (a trace from a seed above thi_bound ends at its first step: the
+         * lines all kept at their former places lost 272 of the bench's 3494 solutions); with many
+         * lines and long curves (grid 12, Lt 20 |p1 - p0|, d near pi) the one below the top would lie
+         * above it; the top line's t is written as before, tlo + (thi - tlo) * 1 (bin 0, above) */
+        const double t = T->tlo + ((j == nl - 1 ? T->thi : T->thi_lines) - T->tlo) * frac;
+        q.sigma = sinh(j == nl - 1 ? t : fmin(T->thi, t));
         q.Lmin = 1.0;
         l.n = 0;
         rc = T->lean_seeds ? el__hermite_seed_tension(&q, ns, T->line_sep, &l) : el__hermite_solve_tension(&q, ns, &l);
@@ -161,13 +206,14 @@ static int solve_length(hprob *pr, double Lt, int nl, int ns, double long_curves
                         long max_evals, hrootlist *out)
 {
     double slo, shi;
-    sigma_range(Lt, &slo, &shi);
+    sigma_range(pr, Lt, &slo, &shi);
     tracer T;
     memset(&T, 0, sizeof T);
     T.pr = pr;
     T.Lt = Lt;
     T.tlo = asinh(slo);
     T.thi = asinh(fmin(shi, SIGMA_MAX));
+    T.thi_lines = asinh(fmin(HLEN_SIGMA_E2 / ((Lt - 1.0) * (Lt - 1.0)), SIGMA_MAX));
     T.thi_trace = asinh(fmin(shi, SIGMA_TRACE_MAX));
     T.thi_bound = asinh(shi);
     T.out = out;

@@ -38,6 +38,7 @@ typedef struct {
 typedef struct {
     const hprob *pr;
     double Lt, tlo, thi, thi_trace;   /* t = asinh(sigma): seed lines in [tlo, thi]; traces end past thi_trace with L < Lt */
+    double thi_lines;                 /* the lines below the top one are placed over [tlo, thi_lines] (seeds) */
     double thi_bound;                 /* and past thi_bound (the sigma bound, sigma_range) whatever L */
     cpt *seed;
     int nseed;
@@ -73,6 +74,11 @@ int el__hlen_solve_chord_start(hprob *pr, double Lt, int nl, int ns, hrootlist *
 /* el__hermite_solve_length with the seed lines' separatrix pieces above SEP_SIGMA, as the
  * tension mode's (LINE_SEP_SIGMA's plain counterpart, for test_hermite_length.c) */
 int el__hlen_solve_line_pieces(hprob *pr, double Lt, int nl, int ns, hrootlist *out);
+
+/* B(d) of the length mode's sigma range: every point of C with length L > 1 and sigma > 0 has
+ * sigma (L - 1)^2 <= B(d), d the turn between the normalised problem's end tangents
+ * (derivation in hermite_length.c; at most HLEN_SIGMA_E2, at d = 0). */
+double el__hlen_sigma_bound(const hprob *pr);
 
 /* sinh to a few ulps, faster than libm's (the tracer's coordinates are asinh of the chart's) */
 double el__hlen_sinh(double x);

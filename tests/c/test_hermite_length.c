@@ -84,6 +84,58 @@ static int same_root(const hroot *a, const hroot *b)
            fabs(a->st.k0p - b->st.k0p) <= 1e-6 * (1.0 + fabs(b->st.k0p));
 }
 
+/* The solutions next to the turn-dependent bound (within 10 % of B(d) in sigma (L - 1)^2: the
+ * pairs near the separatrix whose traces climb highest, at every turn d) found by length: the
+ * tension-mode solutions of random problems (sigma |P|^2 log-uniform in [30, 3e4], tangents
+ * within 0.6 rad of parallel, of a turn in [0.4, 2.8] or nearly opposite, chords at any angle)
+ * with 1.001 < L < 8 solved again by their length, every one found (same sigma and kappa0).
+ * With the table 3 % low (the traces and the top seed line below a piece of C that holds such
+ * a solution) it fails: 21 of 3571 lost. */
+START_TEST(length_mode_finds_the_solutions_next_to_the_turn_bound)
+{
+    unsigned long long st = 6061;
+    size_t n = 0, lost = 0;
+    double dmax = 0.0;
+    for (int i = 0; i < 6000; i++) {
+        const int kind = i % 3;
+        const double phi = test_uniform(&st, -M_PI, M_PI);
+        const double psi = kind == 0 ? test_uniform(&st, -0.6, 0.6)
+                         : kind == 1 ? (test_uniform(&st, 0, 1) < 0.5 ? -1 : 1) * test_uniform(&st, 0.4, 2.8)
+                                     : M_PI + test_uniform(&st, -0.3, 0.3);
+        hprob pr = problem(phi, psi);
+        pr.sigma = pow(10.0, test_uniform(&st, log10(30.0), log10(3e4)));
+        const double B = el__hlen_sigma_bound(&pr);
+        hrootlist l = {NULL, 0, 0};
+        ck_assert_int_eq(el__hermite_solve_tension(&pr, 12, &l), EL_OK);
+        for (size_t j = 0; j < l.n; j++) {
+            const double Lt = l.v[j].st.L, e = Lt - 1.0;
+            if (!(pr.sigma * e * e >= 0.9 * B && Lt > 1.001 && Lt < 8.0)) continue;
+            hprob q = pr;
+            q.sigma = 0.0;
+            q.Lmin = Lt;
+            hrootlist a = {NULL, 0, 0};
+            hroot ref = l.v[j];
+            ref.sigma = pr.sigma;
+            ck_assert_int_eq(el__hermite_solve_length(&q, Lt, 6, 12, &a), EL_OK);
+            int found = 0;
+            for (size_t m = 0; m < a.n && !found; m++) found = same_root(&a.v[m], &ref);
+            n++;
+            dmax = fmax(dmax, fabs(atan2(-pr.V1, pr.V2)));
+            if (!found) {
+                lost++;
+                fprintf(stderr, "  phi %.17g psi %.17g sigma %.17g L %.17g: not found by length\n", phi, psi, pr.sigma, Lt);
+            }
+            free(a.v);
+        }
+        free(l.v);
+    }
+    fprintf(stderr, "length_mode_finds_the_solutions_next_to_the_turn_bound: %zu solutions, %zu lost, largest turn %.3f\n",
+            n, lost, dmax);
+    ck_assert_uint_gt(n, 100);
+    ck_assert_uint_eq(lost, 0);
+}
+END_TEST
+
 /* The default search (6 seed lines) against the same tracing from 32 lines, over 1000
  * random problems of the five kinds of random_problem: every solution of the dense
  * search within the documented range (sigma |p1 - p0|^2 <= 1e5) is found but for at
@@ -126,6 +178,112 @@ START_TEST(length_mode_keeps_every_solution_of_a_dense_search)
             nref, nnew, missed);
     ck_assert_uint_gt(nref, 2000);
     ck_assert_uint_le(missed, 1);
+}
+END_TEST
+
+/* The turn-dependent bound B(d) of the sigma range (hermite_length.c, el__hlen_sigma_bound):
+ * its table recomputed here with GSL, the supremum over (k, psi0) of
+ * 8 (2k^2 - 1) (4 E(k) - |E(am u1) - E(am u0)|)^2, psi1 = psi0 + d wrapped into (-pi, pi], on a
+ * grid: psi0 every pi/384 (32 bins of d, 12 steps each, so psi1 lies on the grid too), k^2 in
+ * (0.5, 1) at 200 values and 30 more towards 1 (1 - 1e-3 .. 1 - 1e-14), and the k = 1 limit
+ * (E(am u) -> sin(psi/2), E(k) -> 1). At the turns d of every grid step within each bin: never
+ * above the bin's entry, and at the bin's left end within 0.5 % of it (the table is the bound,
+ * not a loose one). */
+#define TB_NP 384
+#define TB_NK 231
+static double tb_E[TB_NK][2 * TB_NP], tb_c[TB_NK], tb_4E[TB_NK];
+
+static void turn_bound_grid(void)
+{
+    for (int i = 0; i < TB_NK; i++) {
+        const double k2 = i == TB_NK - 1 ? 1.0 : i < 200 ? 0.5 + 0.5 * (i + 1) / 201.0
+                                                 : 1.0 - pow(10.0, -3.0 - 11.0 * (i - 200) / 29.0);
+        const double k = sqrt(k2);
+        tb_c[i] = 8.0 * (2.0 * k2 - 1.0);
+        tb_4E[i] = 4.0 * (k2 < 1.0 ? gsl_sf_ellint_Ecomp(k, GSL_PREC_DOUBLE) : 1.0);
+        for (int a = 0; a < 2 * TB_NP; a++) {
+            const double psi = -M_PI + a * M_PI / TB_NP, s = sin(psi / 2) / k;
+            /* NAN: psi beyond the curve's range |psi| <= 2 asin k */
+            tb_E[i][a] = fabs(s) > 1.0 ? NAN : k2 < 1.0 ? gsl_sf_ellint_E(asin(s), k, GSL_PREC_DOUBLE) : sin(psi / 2);
+        }
+    }
+}
+
+/* the supremum on the grid at the turn of m grid steps (d = m pi / 384) */
+static double turn_bound_at(int m)
+{
+    double best = 0.0;
+    for (int i = 0; i < TB_NK; i++)
+        for (int a = 0; a < 2 * TB_NP; a++) {
+            const double J = tb_4E[i] - fabs(tb_E[i][(a + m) % (2 * TB_NP)] - tb_E[i][a]);
+            if (J == J) best = fmax(best, tb_c[i] * J * J);
+        }
+    return best;
+}
+
+START_TEST(length_mode_turn_bound_is_the_supremum_over_the_curves)
+{
+    turn_bound_grid();
+    for (int b = 0; b < 32; b++) {
+        const double lo = b * M_PI / 32.0;
+        hprob pr = problem(0.3, lo + 0.5 * M_PI / 32.0), mir = problem(-0.3, -(lo + 0.5 * M_PI / 32.0));
+        const double B = el__hlen_sigma_bound(&pr);
+        ck_assert_double_eq(el__hlen_sigma_bound(&mir), B);   /* a turn of -d: the mirror image */
+        for (int j = 0; j <= 12; j++) {
+            if (b == 31 && j == 12) break;   /* d = pi: the last bin's */
+            const double m = turn_bound_at(12 * b + j);
+            hprob at = problem(0.0, (12 * b + j) * M_PI / 384.0);
+            ck_assert_msg(m <= el__hlen_sigma_bound(&at), "d %d pi/384: sup %.6f above the table's %.6f", 12 * b + j, m,
+                          el__hlen_sigma_bound(&at));
+            ck_assert_msg(m <= B || j == 12, "bin %d, d %d pi/384: sup %.6f above its entry %.6f", b, 12 * b + j, m, B);
+            if (j == 0) ck_assert_msg(m >= 0.995 * B, "bin %d: sup %.6f, table %.6f: loose", b, m, B);
+        }
+    }
+    hprob z = problem(0.0, 0.0), pi = problem(0.0, M_PI);
+    ck_assert_double_le(el__hlen_sigma_bound(&z), HLEN_SIGMA_E2);
+    ck_assert_double_gt(el__hlen_sigma_bound(&z), 130.12);
+    ck_assert_double_lt(el__hlen_sigma_bound(&pi), 74.4);   /* 72 at d = pi: 8 (3 + cos(pi/2))^2 */
+}
+END_TEST
+
+/* Every tension-mode solution of random problems (sigma |P|^2 log-uniform in [1, 3e4]; any
+ * tangents, tangents within 0.6 rad of parallel, ends along the chord, nearly opposite
+ * tangents) has sigma (L - 1)^2 <= B(d), and comes within 3 % of it in each quarter of [0, pi]
+ * (the check can fail). */
+START_TEST(length_mode_turn_bound_holds_for_tension_solutions)
+{
+    unsigned long long st = 9091;
+    double worst[4] = {0.0, 0.0, 0.0, 0.0};
+    size_t n = 0;
+    for (int i = 0; i < 12000; i++) {
+        const int kind = i % 4;
+        double phi = test_uniform(&st, -M_PI, M_PI), psi = test_uniform(&st, -M_PI, M_PI);
+        if (kind == 1) psi = test_uniform(&st, -0.6, 0.6);
+        if (kind == 2) {
+            const double a = test_uniform(&st, -0.05, 0.05);
+            phi = a;
+            psi = a + test_uniform(&st, -0.05, 0.05);
+        }
+        if (kind == 3) psi = M_PI + test_uniform(&st, -0.3, 0.3);
+        hprob pr = problem(phi, psi);
+        pr.sigma = pow(10.0, test_uniform(&st, 0.0, log10(3e4)));
+        const double B = el__hlen_sigma_bound(&pr), d = fabs(atan2(-pr.V1, pr.V2));
+        hrootlist l = {NULL, 0, 0};
+        ck_assert_int_eq(el__hermite_solve_tension(&pr, 12, &l), EL_OK);
+        for (size_t j = 0; j < l.n; j++) {
+            const double e = l.v[j].st.L - 1.0, v = pr.sigma * e * e;
+            ck_assert_msg(v <= B, "phi %.17g psi %.17g sigma %.17g L %.17g: sigma (L - 1)^2 = %.6f > B(%.6f) = %.3f",
+                          phi, psi, pr.sigma, l.v[j].st.L, v, d, B);
+            int q = (int)(d / (0.25 * M_PI));
+            worst[q > 3 ? 3 : q] = fmax(worst[q > 3 ? 3 : q], v / B);
+        }
+        n += l.n;
+        free(l.v);
+    }
+    fprintf(stderr, "length_mode_turn_bound_holds_for_tension_solutions: %zu solutions, largest sigma (L - 1)^2 / B(d) "
+            "by quarter of d: %.4f %.4f %.4f %.4f\n", n, worst[0], worst[1], worst[2], worst[3]);
+    ck_assert_uint_gt(n, 30000);
+    for (int q = 0; q < 4; q++) ck_assert_double_gt(worst[q], 0.97);
 }
 END_TEST
 
@@ -477,6 +635,9 @@ int main(void)
     TCase *tc = tcase_create("hermite_length");
     tcase_set_timeout(tc, 300);
     tcase_add_test(tc, length_mode_sigma_bound_holds_for_tension_solutions);
+    tcase_add_test(tc, length_mode_turn_bound_is_the_supremum_over_the_curves);
+    tcase_add_test(tc, length_mode_turn_bound_holds_for_tension_solutions);
+    tcase_add_test(tc, length_mode_finds_the_solutions_next_to_the_turn_bound);
     tcase_add_test(tc, length_mode_keeps_every_solution_of_a_dense_search);
     tcase_add_test(tc, length_mode_stops_at_seeds_other_traces_visited);
     tcase_add_test(tc, length_mode_matches_seeds_as_newton_does);
