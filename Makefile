@@ -45,7 +45,7 @@ define apt-install
 	fi
 endef
 
-.PHONY: all deps lib check check-stages check-c check-asan check-asan-fuzz check-install check-python \
+.PHONY: all deps lib check check-stages check-c check-asan check-asan-lib check-fuzz-stage check-install check-python \
         check-python-sys check-python-path check-freecad check-fuzz \
         check-tsan fuzz fuzz-deps fuzz-coverage bench hermite-sets length-recovers occt-dev spiro-dev demo gallery install \
         freecad-install clean
@@ -189,36 +189,53 @@ check-c-kernels: lib $(KERNEL_TESTS:%=$(BUILD)/tests/%)
 # at every solve, and the fit tests spent up to half their sanitized CPU in the kernel (sys).
 # With memset the shadow's pages stay: the same shadow bytes, the same reports. (No option keeps ASan from mapping the blocks
 # themselves: its secondary allocator maps every block above 128 KB.)
-check-asan: deps
-	$(MAKE) --no-print-directory BUILD=build/asan \
-	  EXTRA_CFLAGS="-O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
-	  ASAN_OPTIONS=detect_leaks=1:clear_shadow_mmap_threshold=1073741824 UBSAN_OPTIONS=halt_on_error=1 CK_TIMEOUT_MULTIPLIER=15 KERNEL_RUNS=no check-c
+# The library is made first, alone (check-asan-lib): the fuzz driver links it too, and make
+# check runs the fuzz slice beside these tests, not after them.
+# ($(MAKE) written out in the recipes: a make reached through another variable gets no jobserver)
+ASAN_BUILD = --no-print-directory BUILD=build/asan EXTRA_CFLAGS="$(SAN_FLAGS)"
+check-asan-lib: deps
+	@$(MAKE) $(ASAN_BUILD) lib
+check-asan: check-asan-lib
+	$(MAKE) $(ASAN_BUILD) ASAN_OPTIONS=detect_leaks=1:clear_shadow_mmap_threshold=1073741824 UBSAN_OPTIONS=halt_on_error=1 \
+	  CK_TIMEOUT_MULTIPLIER=15 KERNEL_RUNS=no check-c
 
-# under FreeCAD's Python and under the python3 first on PATH (when it is another one)
+# under FreeCAD's Python and under the python3 first on PATH (when it is another one). make check
+# runs the two side by side (its -j): each has a temporary directory of its own (--basetemp,
+# emptied at its start) rather than both numbering theirs in /tmp/pytest-of-<user>, which every
+# pytest on the machine shares, and writes its output to a log of its own ($(BUILD)/pytest-*.log),
+# printed whole when the run fails and by its last line (the counts) when it passes.
+# $(call pytest-run,PYTHON,NAME): one shell command; PYTEST_ARGS: more options (--durations=30)
+pytest-run = { log=$(CURDIR)/$(BUILD)/pytest-$(2).log; \
+	echo "== pytest under $$(command -v $(1)) (log $(BUILD)/pytest-$(2).log)"; \
+	cd tests/python && LIBELASTICA_PATH=$(CURDIR)/$(BUILD)/libelastica.so PYTHONPATH=$(CURDIR)/python \
+	  $(1) -m pytest -q -p no:cacheprovider --basetemp=$(CURDIR)/$(BUILD)/pytest-$(2) $(PYTEST_ARGS) . \
+	  > $$log 2>&1 || { cat $$log; echo "FAILED: pytest under $(1) (log $(BUILD)/pytest-$(2).log)"; exit 1; }; \
+	tail -n 1 $$log; }
 check-python: check-python-sys check-python-path
 check-python-sys: lib
-	cd tests/python && LIBELASTICA_PATH=$(CURDIR)/$(BUILD)/libelastica.so PYTHONPATH=$(CURDIR)/python \
-	  $(SYSPYTHON) -m pytest -q -p no:cacheprovider .
+	@$(call pytest-run,$(SYSPYTHON),sys)
 check-python-path: lib
-	@if [ "$$(command -v $(PYTHON))" != "$(SYSPYTHON)" ]; then \
-	  cd tests/python && LIBELASTICA_PATH=$(CURDIR)/$(BUILD)/libelastica.so PYTHONPATH=$(CURDIR)/python \
-	  $(PYTHON) -m pytest -q -p no:cacheprovider . ; fi
+	@if [ "$$(command -v $(PYTHON))" != "$(SYSPYTHON)" ]; then $(call pytest-run,$(PYTHON),path); fi
 
 check-freecad: lib
 	@if [ -d tests/freecad ] && ls tests/freecad/test_*.py >/dev/null 2>&1; then \
 	  $(MAKE) --no-print-directory -j1 -f tests/freecad/freecad.mk BUILD=$(BUILD); fi
 
 # The stages are independent once the library is built: make check runs them CHECK_JOBS (the
-# cores) at a time, each stage's output printed whole when it ends (-Otarget). The fuzz
-# driver links build/asan's library, so check-fuzz follows check-asan rather than build it
-# beside it; FreeCAD's tests (one HOME) run one after another (-j1 above).
+# cores) at a time, each stage's output printed whole when it ends (-Otarget). It is CPU-bound
+# (~29 CPU-min on 2 cores: as long as the cores are kept busy, the order changes little), so
+# the longest single processes start first, each pytest run (~6 CPU-min) and FreeCAD's tests
+# (one HOME: one after another, -j1 above), and the ~100 short C test runs fill the cores
+# after them, so that no long stage runs alone at the end. The fuzz slice needs only
+# build/asan's library (check-asan-lib, made once: two makes building it at once would race),
+# not the ASan tests' end.
 CHECK_JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 check: deps
 	@$(MAKE) --no-print-directory -j$(CHECK_JOBS) -Otarget check-stages
 	@echo "make check: all tests passed"
 
-check-stages: lib check-c check-asan-fuzz check-tsan check-install check-python check-freecad
-check-asan-fuzz: check-asan lib
+check-stages: lib check-python check-freecad check-asan check-fuzz-stage check-c check-tsan check-install
+check-fuzz-stage: check-asan-lib lib
 	@$(MAKE) --no-print-directory check-fuzz
 
 # ------------------------------------------------------------------ fuzzing, ThreadSanitizer
