@@ -27,6 +27,7 @@ import numpy as np
 from ._ffi import (DomainError, NotConvergedError, SingularError, as_int, as_point_array, as_points, as_real,
                    as_real_array, check, dptr, ffi, lib, warn_if_degrees)
 from ._interrupt import call
+from ._median import median
 from .core import DISCRETE_PARAMS, SMOOTH_PARAMS, DiscreteElastica, SmoothElastica
 from .cubic import SPARSE_POINTS, SparseWarning, smooth_fits_better
 from ._text import LengthFormat, lengths
@@ -211,7 +212,7 @@ def far_points(distances, points, factor: float = OUTLIER_FACTOR,
         return np.intersect1d(far_points(d, pts, factor), free)
     if len(d) < OUTLIER_MIN_POINTS:
         return np.empty(0, dtype=np.intp)
-    typical = 1.4826 * float(np.median(d))
+    typical = 1.4826 * median(d)        # (np.median's value, by one np.partition: _median.py)
     if not d.max() > factor * typical:      # none far (el.fit asks this of every fit): no extent
         return np.empty(0, dtype=np.intp)
     extent = float(np.max(np.ptp(pts, axis=0)))
