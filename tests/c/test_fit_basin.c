@@ -558,8 +558,9 @@ END_TEST
  * keeps it (feet nearly in order) or a fallback takes over (far out of order: the buckets
  * by arc length, or where those pile up GSL's heapsort and the tie runs by index; with NaN
  * feet, qsort on pairs): sorted, neighbours swapped, reversed, shuffled, runs of ties,
- * shuffled ties, all equal, shuffled with NaN, shuffled and piled in one bucket, sizes 0
- * to 2 * 10^5. */
+ * shuffled ties, all equal, shuffled with NaN, jittered (each foot among ~20 neighbours, as
+ * a paired fit's of noisy points: past insertion's first moves, to the buckets), shuffled
+ * and piled in one bucket, sizes 0 to 2 * 10^5. */
 static void check_feet_order(const double *fs, size_t n)
 {
     size_t *idx = malloc(sizeof *idx * (n ? n : 1));
@@ -586,7 +587,7 @@ START_TEST(test_fit_feet_order)
         const size_t n = sizes[z];
         double *fs = malloc(sizeof *fs * (n ? n : 1));
         ck_assert(fs != NULL);
-        for (int pattern = 0; pattern < 9; pattern++) {
+        for (int pattern = 0; pattern < 10; pattern++) {
             for (size_t k = 0; k < n; k++) {
                 r ^= r << 13; r ^= r >> 7; r ^= r << 17;
                 const double u = (double)(r >> 11) / 9007199254740992.0;
@@ -598,6 +599,7 @@ START_TEST(test_fit_feet_order)
                       : pattern == 5 ? floor(10.0 * u)                 /* shuffled ties */
                       : pattern == 6 ? 1.0                             /* all equal */
                       : pattern == 7 ? (u < 0.01 ? NAN : u)            /* shuffled with NaN */
+                      : pattern == 8 ? (double)k + 20.0 * u            /* jittered: noisy points' feet */
                       : u < 0.999 ? 1e-9 * u : 1.0;                    /* piled in one bucket */
             }
             check_feet_order(fs, n);
