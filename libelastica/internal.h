@@ -269,6 +269,14 @@ typedef struct el__spsnap {
     double *x, *v, *st, sigma;
 } el__spsnap;
 
+/* WORK_BUDGET (spline.c): chain evaluations (each evaluates every piece once) spent by one
+ * el_spline_solve over every path it tries, and the most allowed; stopped: the budget ended
+ * a Newton iteration (el__chain_newton then stops as if it stalled) */
+typedef struct el__spwork {
+    unsigned long evals, budget;
+    int stopped;
+} el__spwork;
+
 typedef struct el__spchain {
     size_t n, m;             /* knots (the points and the guide ducks), pieces */
     int closed;
@@ -320,6 +328,8 @@ typedef struct el__spchain {
     int neighbours;          /* el__spline_solve_tension: from fair nearby tensions (spline_path.c) */
     int plain;               /* el__spline_length_from: the plain follow only, no retries (spline.c's
                                 FREE_FAMILY comparison) */
+    el__spwork *work;        /* the solve's work and budget (spline.c's WORK_BUDGET), shared by every
+                                chain of one solve (a guided chain takes its sibling's); NULL: none */
 } el__spchain;
 
 /* The workspace for n knots and m pieces (zeroed, n, m set); free it also on failure. */

@@ -457,6 +457,17 @@ static int solve_g2(el__spchain *w, el__spchain *g, int sib, int max_steps, cons
     return keep_fairer(&first, g, st, direct);
 }
 
+/* WORK_BUDGET: chain evaluations one solve may spend over all its paths, per max_steps x
+ * max_iter (one family at most): length mode's search tries dozens of families, each bounded
+ * alone (spline_path.c, spline_bracket.c), tension mode's STABLE_FAMILY 5 more. Past it
+ * el__chain_newton makes no iteration. 8: of 2100 sweep solves one reaches it (same result,
+ * fewer iterations); the fuzz's collinear G2 ducks by length 6468 -> 4543 (test_spline_work). */
+#define WORK_FAMILIES 8
+static unsigned long work_budget(const el_spline_options *opt)
+{
+    return WORK_FAMILIES * (unsigned long)opt->max_steps * (unsigned long)opt->max_iter;
+}
+
 /* Tension mode's G2 batten by its length (spline_g2_tension.c): one solve by length as
  * el__spline_solve_paths's (solve_sibling, then solve_g2), into the sibling w and the
  * guided chain g */
@@ -485,11 +496,15 @@ static int g2_at_length(void *par, double L, double *sigma)
     w->near = 0;
     memset(w->reach, 0, sizeof w->reach);
     memset(w->ladder, 0, sizeof w->ladder);
+    /* a budget of its own (WORK_BUDGET): one of the search's NLADDER + BRENT_ITER solves */
+    el__spwork *wk = w->work;
+    const unsigned long b0 = wk->budget;
+    wk->budget = wk->evals + work_budget(&o);
     int straight;
     int st = solve_sibling(w, c->xy, c->n, &o, c->Lp, c->S, &straight);
+    if (st != EL_ENOMEM && st != EL_EINVAL) st = solve_g2(w, g, st, o.max_steps, c->kg, L, NAN, 0, NULL);
+    wk->budget = b0;
     if (st == EL_ENOMEM || st == EL_EINVAL) return st;
-    st = solve_g2(w, g, st, o.max_steps, c->kg, L, NAN, 0, NULL);
-    if (st == EL_ENOMEM) return st;
     if (st && !g->near) return EL_ENOCONV;
     *sigma = g->sigma;
     return EL_OK;
@@ -590,7 +605,9 @@ static int solve_paths(const double *xy, size_t n, const el_spline_options *opt,
     el__spchain w, g;
     memset(&g, 0, sizeof g);
     el__spchain *sol = &w;   /* the chain the result comes from */
+    el__spwork work = {0, work_budget(opt), 0};
     int st = el__chain_alloc(&w, n, m);
+    w.work = &work;
     if (st) goto done;
     const double S = Lp / (double)m;   /* the unit: mean chord */
     w.closed = closed; w.lmode = lmode; w.newton_first = newton_first;
@@ -753,6 +770,10 @@ static int solve_paths(const double *xy, size_t n, const el_spline_options *opt,
             res->reach[i] = nearest[2 * i + 1] * S;
         }
 done:
+    if (st == EL_OK || st == EL_ENOCONV || st == EL_ERANGE) {
+        res->work = work.evals;
+        res->stopped = work.stopped;
+    }
     el_hermite_result_free(&hermite);
     el__chain_free(&w);
     el__chain_free(&g);

@@ -123,6 +123,7 @@ int el__guides_setup(el__spchain *g, const el__spchain *w)
     g->tol = w->tol; g->max_iter = w->max_iter; g->aim = w->aim;
     g->sigma = w->sigma; g->sigma_user = w->sigma_user; g->Lt = w->Lt;
     g->iterations = w->iterations;
+    g->work = w->work;
     g->ng = ng;
     for (int e = 0; e < 2; e++) { g->kind[e] = w->kind[e]; g->th_end[e] = w->th_end[e]; }
     g->kg[0] = w->pc[0].kap0;
