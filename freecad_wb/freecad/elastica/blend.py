@@ -563,8 +563,11 @@ class BlendProxy(FeatureProxy):
         if prop == "Solution" and not obj.Document.Transacting \
                 and not getattr(self, "_setting", False):
             self._picked = True
-        # a new problem: its lowest-energy solution (the panel re-applies a user's pick)
-        if prop in ("Mode", "Length", "Tension", "AtEnd1", "AtEnd2", "Edge1", "Edge2"):
+        # a new problem: its lowest-energy solution (the panel re-applies a user's pick); not
+        # where Undo/Redo restores the step (Transacting): Redo restores Solution before
+        # Length, and a reset here lost the pick restored with it (QA23gui F1)
+        if prop in ("Mode", "Length", "Tension", "AtEnd1", "AtEnd2", "Edge1", "Edge2") \
+                and not obj.Document.Transacting:
             self._new_problem = True
             if getattr(obj, "Solution", 1) != 1:
                 self.set_solution(obj, 1)
