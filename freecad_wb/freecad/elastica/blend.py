@@ -569,6 +569,10 @@ class BlendProxy(FeatureProxy):
         if prop in ("Mode", "Length", "Tension", "AtEnd1", "AtEnd2", "Edge1", "Edge2") \
                 and not obj.Document.Transacting:
             self._new_problem = True
+            # only the value solved for changed (a switch of Solve for copies the shown
+            # curve's): that curve kept where it is a solution (_kept_shown)
+            self._value_only = getattr(self, "_value_only", True) and \
+                prop in ("Mode", "Length", "Tension")
             if getattr(obj, "Solution", 1) != 1:
                 self.set_solution(obj, 1)
 
@@ -594,7 +598,13 @@ class BlendProxy(FeatureProxy):
         bound to an expression (kept as it says), the index of the shape shown now (None:
         gone), else False."""
         new_problem, self._new_problem = getattr(self, "_new_problem", False), False
+        value_only, self._value_only = getattr(self, "_value_only", True), True
         picked, self._picked = getattr(self, "_picked", False), False
+        if new_problem and value_only:
+            j = self._kept_shown(obj, curves)
+            if j is not None:
+                self.set_solution(obj, j + 1)
+                return j, False, False
         same = [(float(c.length), e) for c, e in zip(curves, energies)] == \
             list(zip(obj.Lengths, obj.Energies))
         shown = None if new_problem or picked or same or obj.Solution == 1 or not obj.Lengths \
@@ -606,6 +616,20 @@ class BlendProxy(FeatureProxy):
             # kept as its expression says; where the shape shown went, said (apply)
             return obj.Solution - 1, False, j
         return (0, True, False) if j is None else (j, False, False)
+
+    def _kept_shown(self, obj, curves):
+        """The index of the curve on screen among ``curves`` where the value solved for is
+        its own (Length = BlendLength by length, Tension = BlendTension by tension: what a
+        switch of Solve for sets), else None. The switch promises the shown curve kept
+        (QA23gui F2: G1 at 120 mm, solution 2 -> by tension 0.00316641 gave the lowest
+        energy, 67.8 mm, though 120 mm is listed at that tension); G1 only (a G2 blend's
+        Curves are its pieces, solved from the chosen Hermite one)."""
+        if obj.Continuity != "G1" or not obj.Lengths or not curves:
+            return None
+        own = float(obj.Length) == obj.BlendLength if obj.Mode == "length" \
+            else float(obj.Tension) == obj.BlendTension
+        shown = self.plane_curves(obj) if own else None
+        return nearest_shape(shown[0], curves) if shown else None
 
     def ends(self, obj):
         """The two linked edges (global), or InputProblem."""

@@ -220,7 +220,7 @@ def ends_at_start(points):
 
 
 def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, closed=False,
-                start=None, end=None, tol=1e-3, degree=BSPLINE_DEGREE, advise=True):
+                start=None, end=None, tol=1e-3, degree=BSPLINE_DEGREE, advise=True, shown=None):
     """The elastic spline through 3D ``points`` (in ``plane``, a sketch's placement,
     when they lie in it, else their best plane). ``start`` / ``end``: None (natural)
     or (condition 'tangent' / 'G2', Part edge[, at_end: which end, end_condition]).
@@ -230,7 +230,9 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
     coordinates), 'bspline', 'placement', 'forces' (duck_forces), 'notes'.
     ``advise`` False: no cautions for a batten that loops or is unstable (batten_cautions:
     the ladder's solves), for starting_tension's rungs, which say them once chosen.
-    Raises InputProblem with a user message."""
+    ``shown``: (Curves JSON, length, tension) of the spline on screen, kept by tension mode
+    where it passes these points at this tension (kept_shown). Raises InputProblem with a
+    user message."""
     n = np()
     if mode not in MODES:
         raise InputProblem(f"unknown mode {mode!r} (tension or length)")
@@ -319,6 +321,11 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
         raise
     if note:
         notes.append(note)
+    lost = ""
+    if mode == "tension" and shown and not closed:
+        sp, note, lost = kept_shown(xy, value, specs, sp, *shown)
+        if note:
+            notes.append(note)
     if returns:                           # its two ends meet at a corner: never silent
         a = sp.angle(2)
         corner = abs(math.degrees(math.remainder(float(a[-1] - a[0]), 2 * math.pi)))
@@ -337,7 +344,51 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
         raise InputProblem(f"B-spline: {_library_message(exc)}") from None
     seams = [(j, c["seam"], c["direction"]) for j, c in enumerate(ends) if c and "seam" in c]
     return {"spline": sp, "bspline": bs, "placement": plane, "forces": duck_forces(sp),
-            "notes": notes, "warnings": cautions, "seams": seams}
+            "notes": notes, "warnings": cautions, "seams": seams, "lost": lost}
+
+
+def kept_shown(xy, tension, specs, sp, curves, length, shown_tension):
+    """(spline, note, lost) for tension mode given the spline on screen (``curves``: its Curves
+    JSON, ``length``, ``shown_tension``), as a switch of Solve for promises (QA23gui F2):
+    the library's own start may reach another spline of the same tension (ducks by length
+    272.1 mm, tension 6.26e-4 /mm^2: 225.6 mm, the energy falls beyond ~242 mm: a second
+    branch), so where the shown one passes these very points at this tension, the solve
+    starts from its pieces (el.elastic_spline initial=: Newton on its branch) and keeps it.
+    A shown spline pushed together (tension < 0, by length) has no tension-mode twin: said
+    (note and lost, the report view says it too). ``sp`` and no note where the shown curve is another problem's (other ducks or
+    another tension typed) or the solve found it anyway."""
+    e = el()
+    if not curves or abs(float(sp.length) - length) <= 1e-9 * length:
+        return sp, "", ""
+    curve_from_dict = binding_module("io").curve_from_dict
+    try:
+        pieces = [curve_from_dict(d) for d in json.loads(curves)]
+    except ValueError:
+        return sp, "", ""
+    extent = float(np().max(np().abs(xy))) + 1.0
+    if len(pieces) != len(xy) - 1 or any(
+            math.hypot(p.x0 - x, p.y0 - y) > 1e-9 * extent for p, (x, y) in zip(pieces, xy)):
+        return sp, "", ""                   # other ducks: not this problem's curve
+    if shown_tension < 0.0:
+        lost = (f"the spline shown by length ({length_mark(length, 6)}) was pushed together "
+                f"(tension {tension_mark(shown_tension, length, 3)}): a tension is >= 0, so "
+                f"tension mode cannot keep it; solved at Tension = "
+                f"{tension_mark(tension, length, 3)} instead; Solve for a length keeps it")
+        return sp, lost, lost
+    if shown_tension != tension:
+        return sp, "", ""
+    try:
+        with warnings.catch_warnings():   # a looping or unstable spline: noted by spline_core
+            warnings.simplefilter("ignore", e.LoopWarning)
+            warnings.simplefilter("ignore", e.UnstableWarning)
+            kept = e.elastic_spline(xy, tension=tension, start=specs[0], end=specs[1],
+                                    initial=pieces)
+    except (ValueError, ArithmeticError, RuntimeError, e.ElasticaError):
+        return sp, "", ""
+    if abs(float(kept.length) - length) > 1e-6 * length:
+        return sp, "", ""
+    return kept, (f"the spline shown kept ({length_mark(kept.length, 6)}); another spline "
+                  f"of this tension through the points is {length_mark(sp.length, 6)} long"), ""
 
 
 def batten_cautions(sp, mode):
@@ -569,14 +620,18 @@ class SplineProxy(FeatureProxy):
                                      said=said)
         followed = self.follow_source(obj, pts)
         try:
+            shown = (obj.Curves, float(obj.SplineLength), float(obj.SplineTension)) \
+                if obj.Ducks and not obj.Status.startswith("error") else None
             r = self.handed(spline_core, pts, plane, obj.Mode, obj.Tension, float(obj.Length),
                             obj.Closed, *self.end_specs(obj), tol=float(obj.Tolerance),
-                            degree=obj.Degree)
+                            degree=obj.Degree, shown=shown)
         except InputProblem as exc:
             if followed:
                 raise type(exc)(f"{followed}: {exc}") from None
             raise
         r["warnings"] = said + r["warnings"]
+        if r["lost"]:                 # the curve shown lost by a mode switch: said as it is
+            App.Console.PrintWarning(f"Elastica {obj.Label}: {say(r['lost'])}\n")
         if followed:                  # said once, as it happens (an error says it in its line)
             App.Console.PrintWarning(f"Elastica {obj.Label}: {followed}\n")
             r["notes"].insert(0, followed)

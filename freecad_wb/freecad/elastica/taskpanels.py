@@ -310,6 +310,7 @@ class BlendPanel(Panel):
             self.note = ""              # the command's choice of mode is the user's now
         if prop == "Mode":
             self.auto = None
+            self.picked = None          # the feature keeps the curve shown (_kept_shown)
             if o.Mode == "length" and o.Lengths:
                 # length mode starts from the length of the curve on screen
                 o.Length = o.BlendLength
