@@ -246,7 +246,7 @@ class BlendPanel(Panel):
 
     def build(self):
         o = self.obj
-        self.picked = None              # the user's choice of solution, kept across edits
+        self.picked = self.saved_pick()  # the user's choice of solution, kept across edits
         if self.note and o.Mode == "length":
             self.auto = float(o.Length)  # the command's length (no free batten)
         g = self.box("Elastic blend")
@@ -293,6 +293,14 @@ class BlendPanel(Panel):
                                       target=self, when=lambda: same)
 
     _copy = False
+
+    def saved_pick(self):
+        """The Solution picked before this panel opened (another panel session, the property
+        editor): kept across this panel's edits as a pick made in it is (update), not
+        dropped by the first length typed (QA23gui F5: solution 2 -> 'solution 1 of 4' at
+        130 mm). None for the lowest (1) or one an expression sets."""
+        o = self.obj
+        return o.Solution if o.Solution > 1 and not self.expression("Solution") else None
 
     def tension_step(self):
         """An arrow step of about a tenth of the tension scale 1/distance^2."""
