@@ -178,6 +178,18 @@ def inflections(pieces):
     return sum(len(el().elastica_inflections(p)) for p in pieces)
 
 
+def g2_problem(r):
+    """(pts, ends) of the G2 blend between the ends of blend_core's result ``r``: the two
+    edge ends (plane coordinates) and el.elastic_spline's start / end (tangent, curvature)."""
+    (e0, at0, a0, t0), (e1, at1, a1, t1) = r["ends"]
+    plane = r["placement"]
+    ends = {"start": {"tangent": tuple(t0),
+                      "curvature": plane_curvature(e0, at0, t0, plane, "the first edge")},
+            "end": {"tangent": tuple(t1),
+                    "curvature": plane_curvature(e1, at1, t1, plane, "the second edge")}}
+    return np().vstack([a0, a1]), ends
+
+
 def g2_blend(r, i, mode, value, tol, degree):
     """The G2 blend between the ends of blend_core's result ``r``: el.elastic_spline
     through the two edge ends with G2 ends (the edges' tangent AND curvature). One
@@ -188,19 +200,16 @@ def g2_blend(r, i, mode, value, tol, degree):
     sibling: the branch the user chose; if that does not bend, the library's own
     start, said in the note). Returns (el.ElasticSpline, its B-spline, note).
     Raises InputProblem."""
-    (e0, at0, a0, t0), (e1, at1, a1, t1) = r["ends"]
-    plane = r["placement"]
-    k0 = plane_curvature(e0, at0, t0, plane, "the first edge")
-    k1 = plane_curvature(e1, at1, t1, plane, "the second edge")
+    pts, ends = g2_problem(r)
+    k0, k1 = ends["start"]["curvature"], ends["end"]["curvature"]
+    a0, a1 = pts
     if mode == "tension" and value < 0:
         raise InputProblem(f"Tension = {value:g}/mm^2: a G2 blend is solved for a tension >= 0; "
                            "for one pushed together give a length")
     n, e = np(), el()
-    ends = {"start": {"tangent": tuple(t0), "curvature": k0},
-            "end": {"tangent": tuple(t1), "curvature": k1}}
     kw = {"length": value} if mode == "length" and value > 0 else \
         {"tension": value if mode == "tension" else 0.0}
-    pts, note = n.vstack([a0, a1]), ""
+    note = ""
     # no G1 solution (walls at tension 0: the clamped free batten slides off its ducks, the
     # guided one exists): the library's own start, which solves it by length then
     sibling = r["curves"][i] if r["curves"] and (mode == "tension" or value > 0) else None

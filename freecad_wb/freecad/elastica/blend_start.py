@@ -4,8 +4,8 @@ by, free_or_length), or the free G2 batten is a snake (fairer_than_free, g2_blen
 length at the fairest of LENGTH_MULTIPLES times the distance between the ends, and said."""
 from __future__ import annotations
 
-from .blend import (G2_TENSION_DIGITS, NoBlend, bending_energy, blend_core, describe,
-                    inflections, plural)
+from .blend import (G2_REACH_MULTIPLES, G2_TENSION_DIGITS, NoBlend, bending_energy, blend_core,
+                    describe, g2_by_length, g2_problem, inflections, plural)
 from .geometry import edge_end, el, np
 from .kept import checked_call
 from .units import length_mark, per_length_mark, tension_mark
@@ -163,3 +163,28 @@ def fairer_than_free(pts, ends, sibling, free):
 
 __all__ = ["LENGTH_MULTIPLES", "starting_length", "free_or_length", "fairest_by_length",
            "fair_where_no_free", "fairer_than_free", "kept_by_tension"]
+
+
+def g2_start(e0, at_end0, e1, at_end1, plane, length):
+    """What G2 starts by where it was asked at a length the command chose (no free G1 batten
+    joins the ends: free_or_length) and no G2 blend of that length was found: ('tension',
+    0.0) where the free G2 batten exists (the guide ducks may hold one where no free G1
+    batten exists), else ('length', L) for the length of G2_REACH_MULTIPLES times the
+    distance between the ends (3 digits, as g2_lengths_hint's error lists them: each solves)
+    nearest ``length``, else None (the error stands). QA23gui F4: line -> arc R25, the
+    command's 69.1 mm; G2 said 'no G2 blend of length 69.1 mm ... found at 92.2, 115, 138,
+    184, 277 mm': G2 now starts at 92.2 mm."""
+    e = el()
+    r = blend_core(e0, at_end0, e1, at_end1, plane, "length", length, none_ok=True)
+    pts, ends = g2_problem(r)
+    try:
+        e.elastic_spline(pts, **ends)
+        return "tension", 0.0
+    except (ValueError, ArithmeticError, RuntimeError):
+        pass
+    lengths = sorted({float(f"{m * r['distance']:.3g}") for m in G2_REACH_MULTIPLES},
+                     key=lambda L: (abs(L - length), L))
+    for L in lengths:
+        if g2_by_length(pts, ends, [L]):
+            return "length", L
+    return None

@@ -314,6 +314,8 @@ class BlendPanel(Panel):
 
     def changed(self, prop):
         o = self.obj
+        if prop != "Continuity":
+            self.g2_from = None         # an edit: G1 no longer returns to the command's length
         if prop in ("Mode", "AtEnd1", "AtEnd2"):
             self.note = ""              # the command's choice of mode is the user's now
         if prop == "Mode":
@@ -331,8 +333,58 @@ class BlendPanel(Panel):
                 self.show_mode()
         elif prop in ("AtEnd1", "AtEnd2"):
             self.ends_changed()
+        elif prop == "Continuity":
+            self.continuity_changed()
 
     auto = None         # the length the command or the panel chose (no free batten), if shown
+    g2_from = None      # (auto, note) where G2 left the command's length (G1 restores them)
+
+    def continuity_changed(self):
+        """G2 asked at the length the command chose (``auto``: no free G1 batten joins the
+        ends, not the designer's length) where no G2 blend of it is found: the free G2
+        batten, else the nearest length a G2 blend is found at (blend_start.g2_start), said
+        on the warning line, before the error (QA23gui F4: line -> arc R25, the command's
+        69.1 mm, G2 refused 'no G2 blend of length 69.1 mm ... found at 92.2, 115, ...').
+        Back to G1 before anything else changed: the command's length again."""
+        o = self.obj
+        if self.expression("Mode") or self.expression("Length") or self.expression("Tension"):
+            return                      # the expressions decide the values
+        if o.Continuity == "G2" and o.Mode == "length" and self.auto is not None \
+                and float(o.Length) == self.auto:
+            self.g2_from = (self.auto, self.note)      # tried by update, after the solve
+        elif o.Continuity == "G1" and self.g2_from is not None:
+            (self.auto, note), self.g2_from = self.g2_from, None
+            o.Mode, o.Length = "length", self.auto
+            self.note = note
+            self.show_mode()
+
+    def g2_started(self):
+        """After G2's solve at the command's length (continuity_changed): where it failed,
+        g2_start's mode and value set, and said; True where so (solve again)."""
+        o = self.obj
+        auto = self.g2_from[0] if self.g2_from else None
+        if auto is None or o.Continuity != "G2" or o.Mode != "length" or \
+                float(o.Length) != auto or not o.Status.startswith("error"):
+            return False
+        try:
+            e1, e2 = o.Proxy.ends(o)
+            start = BS.g2_start(e1, o.AtEnd1, e2, o.AtEnd2, o.Proxy.sketch_plane(o), auto)
+        except Exception:       # bad ends: the feature's Status says it
+            return False
+        if start is None:
+            return False
+        if start[0] == "tension":
+            o.Mode, o.Tension = "tension", 0.0
+            which = "the free G2 batten (tension 0), which the guide ducks hold"
+        else:
+            o.Length = start[1]
+            which = (f"the nearest length a G2 blend was found at, "
+                     f"{length_mark(start[1], 4)}")
+        self.note = (f"No free G1 batten joins these ends and no G2 blend of the command's "
+                     f"length {length_mark(auto, 4)} was found: G2 solved for {which}; "
+                     f"back to G1, {length_mark(auto, 4)} again")
+        self.show_mode()
+        return True
 
     def ends_changed(self):
         """New ends, as the command starts: the free batten where one joins them, else a
@@ -395,6 +447,8 @@ class BlendPanel(Panel):
     def update(self):
         super().update()
         o = self.obj
+        if self.g2_started():
+            super().update()
         if self.picked and not o.Status.startswith("error") and o.Solution != self.picked \
                 and self.picked <= len(o.Lengths) and not self.expression("Solution"):
             o.Solution = self.picked            # the user's pick survives the edit

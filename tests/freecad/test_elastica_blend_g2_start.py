@@ -1,0 +1,71 @@
+"""freecadcmd -t tests of Continuity G2 chosen in the blend panel where the command started
+by a length of its own (no free G1 batten joins the ends; QA23gui F4): G2 was refused at that
+length ('no G2 blend of length 69.1 mm ... found at 92.2, 115, 138, 184, 277 mm') though the
+command, not the designer, chose it. G2 now starts where one is found (the free G2 batten,
+else the nearest of those lengths), said on the warning line; back to G1 the command's
+length. The panel runs without its widgets (BlendPanel.__new__): its changed() and live
+update are what is tested; the feature is what solves."""
+import FreeCAD as App
+
+import elastica_samples as S
+from freecad.elastica import commands as C
+from freecad.elastica import proxy as P
+from freecad.elastica import taskpanels as T
+from freecad.elastica.units import say
+from test_elastica_blend_redo import chain_sketch
+
+
+class BlendG2StartTest(S.DocTest):
+    doc_name = "ElasticaBlendG2StartTest"
+
+    def setUp(self):
+        super().setUp()
+        sk = chain_sketch(self.doc)
+        picks = {(sk.Name, "Edge1"): App.Vector(-3, 0, 0),
+                 (sk.Name, "Edge2"): App.Vector(35.5, 28, 0)}
+        b = self.b = C.blend_sources([(sk, ["Edge1"]), (sk, ["Edge2"])], open_panel=False,
+                                     picks=picks)
+        self.doc.recompute()
+        self.assertEqual((b.Mode, b.Continuity), ("length", "G1"))
+        self.assertAlmostEqual(float(b.Length), 69.1, delta=0.05)
+        # the panel as the command opens it (build: auto = the command's length, its note)
+        p = self.panel = T.BlendPanel.__new__(T.BlendPanel)
+        p.obj, p.doc, p.picked = b, self.doc, None
+        p.refresh = p.refit = p.show_mode = p.hold = lambda: None
+        p._note, p._note_for = P.saved_note(b), P.note_values(b)
+        p.auto = float(b.Length)
+        self.assertIn("free batten", p.note)
+
+    def set(self, prop, value):
+        """As the panel's set: the property, its changed(), the live update."""
+        setattr(self.b, prop, value)
+        self.panel.changed(prop)
+        self.panel.update()
+
+    def test_g2_at_the_commands_length_starts_where_one_is_found(self):
+        b, length = self.b, float(self.b.Length)
+        self.set("Continuity", "G2")
+        self.assertFalse(b.Status.startswith("error"), b.Status)
+        self.assertEqual((b.Mode, float(b.Length)), ("length", 92.2))
+        self.assertAlmostEqual(b.BlendLength, 92.2, delta=1e-6)
+        self.assertIn("no G2 blend of the command's length 69.1 mm was found: G2 solved for "
+                      "the nearest length a G2 blend was found at, 92.2 mm", say(self.panel.note))
+        # G2: the edges' curvatures at its ends (0 on the line, 1/25 on the arc)
+        e = b.Shape.Edges[0]
+        ks = sorted(abs(e.curvatureAt(u)) for u in (e.FirstParameter, e.LastParameter))
+        self.assertLess(ks[0], 1e-9)
+        self.assertAlmostEqual(ks[1], 1 / 25, delta=1e-7)
+        # back to G1: the command's length again, and its note
+        self.set("Continuity", "G1")
+        self.assertEqual((b.Mode, float(b.Length)), ("length", length))
+        self.assertTrue(b.Status.startswith("solution 1 of"), b.Status)
+        self.assertIn("free batten", self.panel.note)
+
+    def test_a_length_of_the_designers_is_kept(self):
+        """A length typed is the designer's: G2 solves for it or says why not."""
+        b = self.b
+        self.set("Length", 70.0)
+        self.panel.auto = None          # the panel's number box: typed over
+        self.set("Continuity", "G2")
+        self.assertEqual((b.Mode, float(b.Length)), ("length", 70.0))
+        self.assertIn("error: no G2 blend of length 70 mm", b.Status)
