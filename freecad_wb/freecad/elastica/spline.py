@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 import warnings
 
 import FreeCAD as App
@@ -22,9 +23,10 @@ from .kept import call_key, checked_call
 from .links import followed_edge, followed_reader
 from .units import (ceil_digits, coordinate_mark, floor_digits, length_mark, length_unit_mark,
                     reach_mark, say, tension_mark)
-from .proxy import (FeatureProxy, InputProblem, add_edge_end, add_enum, add_geometry_index,
-                    add_length, add_link, add_per_area, add_property, check_degree, check_number,
-                    check_tolerance, edge_end_choice, new_feature, read_only, set_said, source_list)
+from .proxy import (FeatureProxy, InputProblem, ShapeProblem, add_edge_end, add_enum,
+                    add_geometry_index, add_length, add_link, add_per_area, add_property,
+                    check_degree, check_number, check_tolerance, edge_end_choice, new_feature,
+                    read_only, set_said, source_list)
 from .sources import gather_vertices
 
 MODES = ["tension", "length"]
@@ -40,9 +42,33 @@ class NoSpline(InputProblem):
     or length may give one): not bad input."""
 
 
-class DoublesBack(NoSpline):
+class DoublesBack(NoSpline, ShapeProblem):
     """Points that double back within their noise (el.DoublesBackError): no tension or
-    length gives a batten through them that does not loop."""
+    length gives a batten through them that does not loop. The points were what the command
+    takes (a ShapeProblem: its box is titled by the command, not 'Wrong selection ... Select
+    the points', QA23gui F8)."""
+
+
+# the binding's advice (libelastica spline._fair_advice) in the workbench's words: its
+# Python and CLI names (el.fit, `elastica fit`) are not a designer's (QA23gui F8)
+FAIR_ADVICE = (
+    ("fair the points with el.fit (`elastica fit`) instead, or thin them to points farther "
+     "apart than their noise",
+     "these are scan points, too many and too noisy for a batten through each: fair them with "
+     "the Fit elastica command (Elastica menu) instead, or thin them to points farther apart "
+     "than their noise"),
+    ("el.fit fits open curves only: for a closed outline thin the points to fewer ducks "
+     "farther apart than their noise (or fit its open arcs with el.fit)",
+     "the Fit elastica command fits open curves only: for a closed outline thin the points "
+     "to fewer ducks farther apart than their noise (or fair its open arcs with it)"))
+
+
+def _fair_words(text):
+    """The library's DoublesBackError message with FAIR_ADVICE's words, its Python slice
+    'points[::k]' left out."""
+    for api, gui in FAIR_ADVICE:
+        text = text.replace(api, gui)
+    return re.sub(r" \(points\[::\d+\], (\d+) points\)", r" (\1 points)", text)
 
 
 def _library_message(exc):
@@ -190,8 +216,7 @@ def _solve(xy, mode, value, closed, start, end):
             except ValueError:
                 pass
     except e.DoublesBackError as exc:   # the same at every tension and length
-        raise DoublesBack(f"{_library_message(exc)}; in FreeCAD the Fit elastica command "
-                          "fairs them") from None
+        raise DoublesBack(_fair_words(_library_message(exc))) from None
     except e.DomainError as exc:
         failure = _library_message(exc)
     except (ValueError, ArithmeticError, RuntimeError) as exc:
