@@ -54,7 +54,7 @@ class UnitsTextsTest(unittest.TestCase):
         self.assertEqual(reported(check_number, "Length", float("nan"), 0.0, None, "mm"),
                          "Length = nan mm is not usable: it must be >= 0 mm")
         self.assertEqual(reported(check_number, "Tension", -1.0, 0.0, None, "1/mm^2"),
-                         "Tension = -1 1/mm^2 is not usable: it must be >= 0 1/mm^2")
+                         "Tension = -1 1/mm\u00b2 is not usable: it must be >= 0 1/mm\u00b2")
 
     def test_the_tolerance_check_says_its_bound_exactly(self):
         """check_tolerance's bound 1e-9 mm and a typed 1.2345678e-10 mm in the unit FreeCAD

@@ -204,7 +204,8 @@ def g2_blend(r, i, mode, value, tol, degree):
     k0, k1 = ends["start"]["curvature"], ends["end"]["curvature"]
     a0, a1 = pts
     if mode == "tension" and value < 0:
-        raise InputProblem(f"Tension = {value:g}/mm^2: a G2 blend is solved for a tension >= 0; "
+        raise InputProblem(f"Tension = {per_area_mark(value, 6)} {tension_unit_mark()}: a G2 "
+                           "blend is solved for a tension >= 0; "
                            "for one pushed together give a length")
     n, e = np(), el()
     kw = {"length": value} if mode == "length" and value > 0 else \

@@ -20,7 +20,7 @@ import FreeCAD as App
 from .containers import (add_containers, follow_containers, holder_placement, link_properties,
                          keep_in_place, moved_holder, remember_holder, restore_containers)
 from .kept import call_key, input_key, is_input
-from .units import exact_mark, mm_marked, say
+from .units import exact_mark, mm_marked, per_area_mark, say, tension_unit_mark
 
 VERSION = 5             # of the proxies' saved state (3: lengths typed with units;
                         # 4: a blend's Solution counts from 1, as its list; 5: a Shape in
@@ -218,15 +218,20 @@ def check_number(name, value, lo=None, hi=None, unit="", lo_open=False, why=""):
     # a length (finite) from its exact value in the unit FreeCAD picks for it, each bound too
     # (units.exact_mark): not its '%g' text in mm said again by mm_marked (rounded twice)
     mark = unit == "mm"
-    said = exact_mark if mark else (lambda x: f"{x:g}")
+    # a tension in the schema's 1/unit² as the panel's boxes and Status write it (QA23gui
+    # F10: the report view said '-0.5 1/mm^2', the panel '1/mm²')
+    area = unit == "1/mm^2"
+    said = exact_mark if mark else (lambda x: f"{per_area_mark(x, 6)} {tension_unit_mark()}") \
+        if area else (lambda x: f"{x:g}")
     rng = ""
     if lo is not None and hi is not None:
         rng = f"{'(' if lo_open else '['}{said(lo)}, {said(hi)}]"
     elif lo is not None:
         rng = f"{'>' if lo_open else '>='} {said(lo)}"
-    typed = said(v) if mark and math.isfinite(v) else f"{v:g}{' ' + unit if unit else ''}"
+    typed = said(v) if (mark or area) and math.isfinite(v) else \
+        f"{v:g}{' ' + (tension_unit_mark() if area else unit) if unit else ''}"
     raise InputProblem(f"{name} = {typed} is not usable: it must be {rng or 'finite'}"
-                       f"{' ' + unit if unit and rng and not mark else ''}"
+                       f"{' ' + unit if unit and rng and not (mark or area) else ''}"
                        + (f" ({why})" if why else ""))
 
 
