@@ -2,7 +2,7 @@
 by a length of its own (no free G1 batten joins the ends; QA23gui F4): G2 was refused at that
 length ('no G2 blend of length 69.1 mm ... found at 92.2, 115, 138, 184, 277 mm') though the
 command, not the designer, chose it. G2 now starts where one is found (the free G2 batten,
-else the nearest of those lengths), said on the warning line; back to G1 the command's
+else the fairest of those lengths), said on the warning line; back to G1 the command's
 length. The panel runs without its widgets (BlendPanel.__new__): its changed() and live
 update are what is tested; the feature is what solves."""
 import FreeCAD as App
@@ -46,10 +46,14 @@ class BlendG2StartTest(S.DocTest):
         b, length = self.b, float(self.b.Length)
         self.set("Continuity", "G2")
         self.assertFalse(b.Status.startswith("error"), b.Status)
-        self.assertEqual((b.Mode, float(b.Length)), ("length", 92.2))
-        self.assertAlmostEqual(b.BlendLength, 92.2, delta=1e-6)
+        # the lengths the error listed: 92.2 mm (pushed together, 4 inflections), 115 mm
+        # (2 inflections, pulled: what QA typed), 138, 184, 277 mm
+        self.assertEqual((b.Mode, float(b.Length)), ("length", 115.0))
+        self.assertAlmostEqual(b.BlendLength, 115.0, delta=1e-6)
+        self.assertGreater(b.BlendTension, 0.0)
+        self.assertIn("2 inflections", b.Status)
         self.assertIn("no G2 blend of the command's length 69.1 mm was found: G2 solved for "
-                      "the nearest length a G2 blend was found at, 92.2 mm", say(self.panel.note))
+                      "115 mm, the fairest length a G2 blend was found at", say(self.panel.note))
         # G2: the edges' curvatures at its ends (0 on the line, 1/25 on the arc)
         e = b.Shape.Edges[0]
         ks = sorted(abs(e.curvatureAt(u)) for u in (e.FirstParameter, e.LastParameter))

@@ -5,7 +5,7 @@ length at the fairest of LENGTH_MULTIPLES times the distance between the ends, a
 from __future__ import annotations
 
 from .blend import (G2_REACH_MULTIPLES, G2_TENSION_DIGITS, NoBlend, bending_energy, blend_core,
-                    describe, g2_by_length, g2_problem, inflections, plural)
+                    describe, g2_problem, inflections, plural)
 from .geometry import edge_end, el, np
 from .kept import checked_call
 from .units import length_mark, per_length_mark, tension_mark
@@ -169,11 +169,13 @@ def g2_start(e0, at_end0, e1, at_end1, plane, length):
     """What G2 starts by where it was asked at a length the command chose (no free G1 batten
     joins the ends: free_or_length) and no G2 blend of that length was found: ('tension',
     0.0) where the free G2 batten exists (the guide ducks may hold one where no free G1
-    batten exists), else ('length', L) for the length of G2_REACH_MULTIPLES times the
-    distance between the ends (3 digits, as g2_lengths_hint's error lists them: each solves)
-    nearest ``length``, else None (the error stands). QA23gui F4: line -> arc R25, the
+    batten exists), else ('length', L) for the fairest of the lengths G2_REACH_MULTIPLES
+    times the distance between the ends (3 digits, the lengths g2_lengths_hint's error
+    lists: each solves): not pushed together (tension >= 0), fewest inflections, then the
+    nearest ``length``; else None (the error stands). QA23gui F4: line -> arc R25, the
     command's 69.1 mm; G2 said 'no G2 blend of length 69.1 mm ... found at 92.2, 115, 138,
-    184, 277 mm': G2 now starts at 92.2 mm."""
+    184, 277 mm': the nearest, 92.2 mm, is pushed together with 4 inflections; G2 starts at
+    115 mm (2 inflections, tension 0.00336/mm^2, what QA typed)."""
     e = el()
     r = blend_core(e0, at_end0, e1, at_end1, plane, "length", length, none_ok=True)
     pts, ends = g2_problem(r)
@@ -182,9 +184,13 @@ def g2_start(e0, at_end0, e1, at_end1, plane, length):
         return "tension", 0.0
     except (ValueError, ArithmeticError, RuntimeError):
         pass
-    lengths = sorted({float(f"{m * r['distance']:.3g}") for m in G2_REACH_MULTIPLES},
-                     key=lambda L: (abs(L - length), L))
-    for L in lengths:
-        if g2_by_length(pts, ends, [L]):
-            return "length", L
-    return None
+    best = None
+    for L in sorted({float(f"{m * r['distance']:.3g}") for m in G2_REACH_MULTIPLES}):
+        try:
+            sp = e.elastic_spline(pts, **ends, length=L)
+        except (ValueError, ArithmeticError, RuntimeError):
+            continue
+        key = (inflections(sp.pieces), abs(L - length))
+        if float(sp.tension) >= 0.0 and (best is None or key < best[0]):
+            best = (key, L)
+    return None if best is None else ("length", best[1])

@@ -342,7 +342,7 @@ class BlendPanel(Panel):
     def continuity_changed(self):
         """G2 asked at the length the command chose (``auto``: no free G1 batten joins the
         ends, not the designer's length) where no G2 blend of it is found: the free G2
-        batten, else the nearest length a G2 blend is found at (blend_start.g2_start), said
+        batten, else the fairest length a G2 blend is found at (blend_start.g2_start), said
         on the warning line, before the error (QA23gui F4: line -> arc R25, the command's
         69.1 mm, G2 refused 'no G2 blend of length 69.1 mm ... found at 92.2, 115, ...').
         Back to G1 before anything else changed: the command's length again."""
@@ -378,8 +378,8 @@ class BlendPanel(Panel):
             which = "the free G2 batten (tension 0), which the guide ducks hold"
         else:
             o.Length = start[1]
-            which = (f"the nearest length a G2 blend was found at, "
-                     f"{length_mark(start[1], 4)}")
+            which = (f"{length_mark(start[1], 4)}, the fairest length a G2 blend was found "
+                     "at (not pushed together, fewest inflections)")
         self.note = (f"No free G1 batten joins these ends and no G2 blend of the command's "
                      f"length {length_mark(auto, 4)} was found: G2 solved for {which}; "
                      f"back to G1, {length_mark(auto, 4)} again")
