@@ -8,6 +8,7 @@ edges; writing it into a sketch is a copy."""
 from __future__ import annotations
 
 import json
+import warnings
 
 import FreeCAD as App
 import Part
@@ -308,14 +309,24 @@ def g2_failure_hint(pts, ends, kw, dist):
 G2_REACH_MULTIPLES = (1.25, 1.5, 2.0, 2.5, 3.0, 4.0, 6.0, 10.0)
 
 
+def quiet_g2(pts, ends, **by):
+    """el.elastic_spline(pts, **ends, **by) for a probe (the lengths an error lists, where G2
+    starts): its LoopWarning / UnstableWarning were red report-view lines (QA23gui s2)."""
+    e = el()
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", e.LoopWarning)
+        warnings.simplefilter("ignore", e.UnstableWarning)
+        return e.elastic_spline(pts, **ends, **by)
+
+
 def g2_by_length(pts, ends, lengths):
     """[(length, tension)] of the G2 battens between the two points ``pts`` with ``ends``
     (el.elastic_spline's start/end) solved by each of ``lengths`` (mm), as a blend with no
     previous solution is; those not solved left out."""
-    e, found = el(), []
+    found = []
     for length in lengths:
         try:
-            found.append((length, float(e.elastic_spline(pts, **ends, length=length).tension)))
+            found.append((length, float(quiet_g2(pts, ends, length=length).tension)))
         except (ValueError, ArithmeticError, RuntimeError):
             continue
     return found
@@ -628,12 +639,10 @@ class BlendProxy(FeatureProxy):
         return (0, True, False) if j is None else (j, False, False)
 
     def _kept_shown(self, obj, curves):
-        """The index of the curve on screen among ``curves`` where the value solved for is
-        its own (Length = BlendLength by length, Tension = BlendTension by tension: what a
-        switch of Solve for sets), else None. The switch promises the shown curve kept
-        (QA23gui F2: G1 at 120 mm, solution 2 -> by tension 0.00316641 gave the lowest
-        energy, 67.8 mm, though 120 mm is listed at that tension); G1 only (a G2 blend's
-        Curves are its pieces, solved from the chosen Hermite one)."""
+        """The index of the curve on screen among ``curves`` where the value solved for is its
+        own (Length = BlendLength, Tension = BlendTension: a switch of Solve for), else None
+        (QA23gui F2: 120 mm by length -> by its tension gave the lowest energy, 67.8 mm, though
+        the 120 mm curve is listed there). G1 only: a G2 blend's Curves are its pieces."""
         if obj.Continuity != "G1" or not obj.Lengths or not curves:
             return None
         own = float(obj.Length) == obj.BlendLength if obj.Mode == "length" \

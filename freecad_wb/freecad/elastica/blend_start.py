@@ -5,7 +5,7 @@ length at the fairest of LENGTH_MULTIPLES times the distance between the ends, a
 from __future__ import annotations
 
 from .blend import (G2_REACH_MULTIPLES, G2_TENSION_DIGITS, NoBlend, bending_energy, blend_core,
-                    describe, g2_problem, inflections, plural)
+                    describe, g2_problem, inflections, plural, quiet_g2)
 from .geometry import edge_end, el, np
 from .kept import checked_call
 from .units import length_mark, per_length_mark, tension_mark
@@ -176,18 +176,17 @@ def g2_start(e0, at_end0, e1, at_end1, plane, length):
     command's 69.1 mm; G2 said 'no G2 blend of length 69.1 mm ... found at 92.2, 115, 138,
     184, 277 mm': the nearest, 92.2 mm, is pushed together with 4 inflections; G2 starts at
     115 mm (2 inflections, tension 0.00336/mm^2, what QA typed)."""
-    e = el()
     r = blend_core(e0, at_end0, e1, at_end1, plane, "length", length, none_ok=True)
     pts, ends = g2_problem(r)
     try:
-        e.elastic_spline(pts, **ends)
+        quiet_g2(pts, ends)
         return "tension", 0.0
     except (ValueError, ArithmeticError, RuntimeError):
         pass
     best = None
     for L in sorted({float(f"{m * r['distance']:.3g}") for m in G2_REACH_MULTIPLES}):
         try:
-            sp = e.elastic_spline(pts, **ends, length=L)
+            sp = quiet_g2(pts, ends, length=L)
         except (ValueError, ArithmeticError, RuntimeError):
             continue
         key = (inflections(sp.pieces), abs(L - length))
