@@ -397,8 +397,8 @@ def kept_shown(xy, tension, specs, sp, curves, length, shown_tension):
     if shown_tension < 0.0:
         lost = (f"the spline shown by length ({length_mark(length, 6)}) was pushed together "
                 f"(tension {tension_mark(shown_tension, length, 3)}): a tension is >= 0, so "
-                f"tension mode cannot keep it; solved at Tension = "
-                f"{tension_mark(tension, length, 3)} instead; Solve for a length keeps it")
+                f"tension mode cannot keep it and solved at Tension = "
+                f"{tension_mark(tension, length, 3)} instead (Solve for a length keeps it)")
         return sp, lost, lost
     if shown_tension != tension:
         return sp, "", ""
@@ -412,8 +412,10 @@ def kept_shown(xy, tension, specs, sp, curves, length, shown_tension):
         return sp, "", ""
     if abs(float(kept.length) - length) > 1e-6 * length:
         return sp, "", ""
-    return kept, (f"the spline shown kept ({length_mark(kept.length, 6)}); another spline "
-                  f"of this tension through the points is {length_mark(sp.length, 6)} long"), ""
+    # one sentence: Status's "; " parts are the panel's lines
+    return kept, (f"the spline shown kept ({length_mark(kept.length, 6)}), though another "
+                  f"spline of this tension through the points is {length_mark(sp.length, 6)} "
+                  "long"), ""
 
 
 def batten_cautions(sp, mode):
