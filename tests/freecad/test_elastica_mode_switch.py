@@ -117,3 +117,37 @@ class BlendModeSwitchTest(S.DocTest):
             self.assertEqual(b.Solution, picked)
             self.doc.removeObject(b.Name)
             self.doc.removeObject(sk.Name)
+
+
+class SplineNotFoundAgainTest(S.DocTest):
+    """Where the solve from the shown spline does not reach it again at its tension (the
+    library's Newton from its pieces refused here by a stand-in), the switch says so in
+    Status and the report view: it showed the other spline silently."""
+    doc_name = "ElasticaSplineNotFoundAgainTest"
+
+    def test_a_shown_spline_not_found_again_is_said(self):
+        from freecad.elastica import geometry as G
+        sk = S.points_sketch(self.doc, DUCKS)
+        s = Sp.make(self.doc, [(sk, [])], Mode="length", Length=272.104)
+        self.doc.recompute()
+        e = G.el()
+        solve = e.elastic_spline
+
+        def refused_from_initial(*args, **kw):
+            if kw.get("initial") is not None:
+                raise e.NotConvergedError(e.lib.EL_ENOCONV if hasattr(e, "lib") else 3,
+                                          "elastic_spline: no convergence (stand-in)")
+            return solve(*args, **kw)
+        e.elastic_spline = refused_from_initial
+        self.addCleanup(setattr, e, "elastic_spline", solve)
+        said, _ = S.console_output(lambda: switch(T.SplinePanel, s, "tension"))
+        self.assertAlmostEqual(s.SplineLength, 225.578, delta=1e-3)
+        words = ("the spline shown (272.104 mm) was not found again at this tension (solved "
+                 "from it), so another spline of this tension through the points is shown, "
+                 "225.578 mm long (Solve for a length keeps the one shown)")
+        self.assertIn(words, s.Status)
+        self.assertIn(words, said)
+        # a tension typed next is a new problem: nothing said
+        s.Tension = 6.3e-4
+        self.doc.recompute()
+        self.assertNotIn("not found again", s.Status)

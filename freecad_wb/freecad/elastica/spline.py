@@ -255,9 +255,9 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
     coordinates), 'bspline', 'placement', 'forces' (duck_forces), 'notes'.
     ``advise`` False: no cautions for a batten that loops or is unstable (batten_cautions:
     the ladder's solves), for starting_tension's rungs, which say them once chosen.
-    ``shown``: (Curves JSON, length, tension) of the spline on screen, kept by tension mode
-    where it passes these points at this tension (kept_shown). Raises InputProblem with a
-    user message."""
+    ``shown``: (Curves JSON, length, tension, switched) of the spline on screen, kept by
+    tension mode where it passes these points at this tension (kept_shown). Raises
+    InputProblem with a user message."""
     n = np()
     if mode not in MODES:
         raise InputProblem(f"unknown mode {mode!r} (tension or length)")
@@ -372,7 +372,7 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
             "notes": notes, "warnings": cautions, "seams": seams, "lost": lost}
 
 
-def kept_shown(xy, tension, specs, sp, curves, length, shown_tension):
+def kept_shown(xy, tension, specs, sp, curves, length, shown_tension, switched=False):
     """(spline, note, lost) for tension mode given the spline on screen (``curves``: its Curves
     JSON, ``length``, ``shown_tension``), as a switch of Solve for promises (QA23gui F2):
     the library's own start may reach another spline of the same tension (ducks by length
@@ -380,8 +380,10 @@ def kept_shown(xy, tension, specs, sp, curves, length, shown_tension):
     branch), so where the shown one passes these very points at this tension, the solve
     starts from its pieces (el.elastic_spline initial=: Newton on its branch) and keeps it.
     A shown spline pushed together (tension < 0, by length) has no tension-mode twin: said
-    (note and lost, the report view says it too). ``sp`` and no note where the shown curve is another problem's (other ducks or
-    another tension typed) or the solve found it anyway."""
+    (note and lost, the report view says it too). Where the solve from the shown pieces does
+    not reach it again right after a switch of Solve for (``switched``), that is said too;
+    else ``sp`` and no note: the shown curve was another problem's (other ducks, another
+    tension typed, other end conditions) or the solve found it anyway."""
     e = el()
     if not curves or abs(float(sp.length) - length) <= 1e-9 * length:
         return sp, "", ""
@@ -409,9 +411,13 @@ def kept_shown(xy, tension, specs, sp, curves, length, shown_tension):
             kept = e.elastic_spline(xy, tension=tension, start=specs[0], end=specs[1],
                                     initial=pieces)
     except (ValueError, ArithmeticError, RuntimeError, e.ElasticaError):
-        return sp, "", ""
-    if abs(float(kept.length) - length) > 1e-6 * length:
-        return sp, "", ""
+        kept = None
+    if kept is None or abs(float(kept.length) - length) > 1e-6 * length:
+        lost = (f"the spline shown ({length_mark(length, 6)}) was not found again at this "
+                f"tension (solved from it), so another spline of this tension through the "
+                f"points is shown, {length_mark(sp.length, 6)} long (Solve for a length keeps "
+                "the one shown)") if switched else ""
+        return sp, lost, lost
     # one sentence: Status's "; " parts are the panel's lines
     return kept, (f"the spline shown kept ({length_mark(kept.length, 6)}), though another "
                   f"spline of this tension through the points is {length_mark(sp.length, 6)} "
@@ -647,7 +653,8 @@ class SplineProxy(FeatureProxy):
                                      said=said)
         followed = self.follow_source(obj, pts)
         try:
-            shown = (obj.Curves, float(obj.SplineLength), float(obj.SplineTension)) \
+            switched, self._switched = getattr(self, "_switched", False), False
+            shown = (obj.Curves, float(obj.SplineLength), float(obj.SplineTension), switched) \
                 if obj.Ducks and not obj.Status.startswith("error") else None
             r = self.handed(spline_core, pts, plane, obj.Mode, obj.Tension, float(obj.Length),
                             obj.Closed, *self.end_specs(obj), tol=float(obj.Tolerance),
@@ -714,6 +721,11 @@ class SplineProxy(FeatureProxy):
         set_said(obj, "Warnings", cautions)
         set_said(obj, "Status", "; ".join(["ok"] + [f"warning: {w}" for w in cautions] + changed
                                           + r["notes"]))
+
+    def onChanged(self, obj, prop):
+        super().onChanged(obj, prop)
+        if prop == "Mode" and "Restore" not in obj.State and not obj.Document.Transacting:
+            self._switched = True       # kept_shown says a shown spline it cannot keep
 
     def plane_curves(self, obj):
         from .fit import stored_curves
