@@ -7,7 +7,7 @@ copy on its recompute and says it, without touching the sketch."""
 import FreeCAD as App
 import Part
 
-from .geometry import COPIES, earlier_copy
+from .geometry import COPIES, copy_moved, earlier_copy, written_points
 
 SAMPLES = 33            # per copy and per feature edge: a few dozen distToShape calls
 OFF = 1e-4              # mm: a copy written is the feature's B-spline (~1e-12 mm off)
@@ -44,9 +44,10 @@ def _end_kappas(edge):
 
 
 def drift(feature):
-    """[(sketch label, largest distance mm, largest end-curvature difference 1/mm)] of the
-    copies that are no longer the feature's curve: distances both ways on SAMPLES points
-    of each edge, curvature at the copy's ends against the feature's nearest end."""
+    """[(sketch label, largest distance mm, largest end-curvature difference 1/mm, which
+    moved)] of the copies that are no longer the feature's curve: distances both ways on
+    SAMPLES points of each edge, curvature at the copy's ends against the feature's nearest
+    end; which moved: moved_words."""
     if feature.Shape.isNull() or not feature.Shape.Edges:
         return []
     own = feature.Shape.copy()
@@ -76,8 +77,30 @@ def drift(feature):
                 if abs(k - kf) > KAPPA_OFF * max(abs(k), abs(kf)) + 1e-6:
                     jump = max(jump, abs(k - kf))
         if far > OFF or jump > 0.0:
-            out.append((sk.Label, far, jump))
+            out.append((sk.Label, far, jump, moved_words(own, sk, feature)))
     return out
+
+
+def moved_words(own, sketch, feature):
+    """Which moved since the copy in ``sketch`` was written, from the points it was written
+    at (geometry.WRITTEN): the copy (the Sketcher's solver, a drag), this curve (``own``,
+    global: an input edited, a duck dragged), or both; QA23gui F3: 'the Sketcher moved it'
+    was said when a duck was dragged and the copy was untouched. A copy written before the
+    points were kept: either."""
+    geometry = sketch.Geometry
+    ids = earlier_copy(feature, sketch)
+    moved = [copy_moved(geometry[i]) for i in ids]
+    if not ids or None in moved:
+        return "the copy does not follow this curve, and the Sketcher may move it"
+    gp = sketch.getGlobalPlacement()
+    changed = max((own.distToShape(Part.Vertex(gp.multVec(p)))[0]
+                   for i in ids for p in written_points(geometry[i])), default=0.0) > OFF
+    copy = max(moved) > OFF
+    if copy and changed:
+        return "the Sketcher moved it, and this curve changed since it was copied"
+    if copy:
+        return "the Sketcher moved it"
+    return "this curve changed since it was copied, the copy is where it was written"
 
 
 def note(found):
@@ -85,11 +108,11 @@ def note(found):
     marks them."""
     from .units import per_length_mark
     parts = []
-    for label, far, jump in found:
+    for label, far, jump, which in found:
         t = f"the copy in Sketch '{label}' is {far:.3g} mm off this curve"
         if jump > 0.0:
             t += f", its end curvature {per_length_mark(jump)} off"
-        parts.append(t + " (the Sketcher moved it): Copy into again")
+        parts.append(t + f" ({which}): Copy into again")
     return "; ".join(parts)
 
 

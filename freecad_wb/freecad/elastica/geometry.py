@@ -4,6 +4,7 @@ B-splines of library B-splines, and writing results into sketches."""
 from __future__ import annotations
 
 import importlib
+import math
 
 import FreeCAD as App
 import Part
@@ -351,11 +352,49 @@ COPIES = "SketchCopies"
 MARK = "ElasticaCopy"
 
 
+# and a second, WRITTEN, where the copy was written: "u x y" at WRITTEN_AT points along it
+# (sketch coordinates, repr: exact), so that copies.drift tells a copy the Sketcher moved from
+# a feature that changed since (QA23gui F3: 'the Sketcher moved it' when a duck was dragged)
+WRITTEN = "ElasticaCopyWritten"
+WRITTEN_AT = 9
+
+
 def _marked(curve, feature, k):
     ext = Part.GeometryStringExtension(f"{feature.Name} {k}")
     ext.Name = MARK
     curve.setExtension(ext)
+    a, b = curve.FirstParameter, curve.LastParameter
+    at = []
+    for j in range(WRITTEN_AT):
+        u = a + (b - a) * j / (WRITTEN_AT - 1)
+        p = curve.value(u)
+        at.append(f"{u!r} {p.x!r} {p.y!r}")
+    written = Part.GeometryStringExtension(";".join(at))
+    written.Name = WRITTEN
+    curve.setExtension(written)
     return curve
+
+
+def written_points(geometry):
+    """The points (sketch coordinates) the copy piece ``geometry`` was written through
+    (WRITTEN), or []."""
+    if not geometry.hasExtensionOfName(WRITTEN):
+        return []
+    return [App.Vector(float(x), float(y), 0.0) for _, x, y in
+            (item.split() for item in geometry.getExtensionOfName(WRITTEN).Value.split(";"))]
+
+
+def copy_moved(geometry):
+    """How far (mm, in its sketch) the copy piece ``geometry`` is from where it was written
+    (its WRITTEN points), or None for a copy written before they were kept."""
+    if not geometry.hasExtensionOfName(WRITTEN):
+        return None
+    far = 0.0
+    for item in geometry.getExtensionOfName(WRITTEN).Value.split(";"):
+        u, x, y = (float(v) for v in item.split())
+        p = geometry.value(u)
+        far = max(far, math.hypot(p.x - x, p.y - y))
+    return far
 
 
 def earlier_copy(feature, sketch):
