@@ -66,8 +66,8 @@ class Outputs:
     - '-' (:class:`ToStdout`) is standard output: written to a temporary in a directory of
       its own and copied to stdout at commit (nothing on stdout when the command fails).
     - An output that is a link replaces the file the link names (the link stays); one that
-      is not a regular file (a FIFO, /dev/null, a terminal) is written through at commit, as
-      a shell's redirection writes it: renaming onto it replaced the device node itself
+      is not a regular file (a FIFO, /dev/null, a terminal, a pipe named /dev/stdout or
+      /dev/fd/N) is written through at commit, as a shell's redirection writes it: renaming onto it replaced the device node itself
       (QA23: as root ``--json /dev/full`` turned /dev/full into a JSON file, exit 0).
 
     A subcommand names its input files ``file`` / ``files`` (or sets ``args.inputs``)
@@ -110,7 +110,13 @@ class Outputs:
         final = self.check(target)
         self._finals.add(os.path.abspath(final))
         where = Path(os.path.realpath(final)) if final.is_symlink() else final
-        if where.exists() and not where.is_file():
+        try:
+            node = os.stat(final)   # follows links, /proc/self/fd's to pipes too
+        except OSError:
+            node = None
+        # not a regular file, or a link to an open descriptor (/dev/stdout, /dev/fd/N: a pipe's
+        # link names pipe:[inode], no path realpath can give to rename onto)
+        if node is not None and (not stat.S_ISREG(node.st_mode) or not where.exists()):
             return self._private(final, final.suffix or ".tmp")
         # the output's own directory is made when its parent exists (out/{stem}.json, a
         # batch's --svg pics: one level, as mkdir makes it); a path missing more is a typo

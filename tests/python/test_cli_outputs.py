@@ -308,3 +308,28 @@ def test_an_output_that_is_a_fifo_is_written_through(work, capsys):
     reader.join(timeout=30)
     assert got and json.loads(got[0])["model"] == "discrete"
     assert sorted(p.name for p in work.iterdir()) == ["a.csv", "pipe.json"]   # no temporaries
+
+
+def test_an_output_through_an_open_descriptor_is_written_through(work, capsys):
+    """`--json /dev/stdout | jq` and bash's `--json >(gzip > f.gz)` (/dev/fd/N) name a pipe
+    through /proc/self/fd, whose link's target has no path (pipe:[inode]): feb6ef1 read the
+    link by realpath, found no file there and made its temporary beside it, in /proc: exit 2,
+    'cannot write there (No such file or directory)', the reader got nothing. Written through
+    as the FIFO is (an open descriptor's pipe here, in-process: nothing under /dev touched)."""
+    import threading
+    r, w = os.pipe()
+    got = []
+
+    def read():
+        with os.fdopen(r, "rb") as f:
+            got.append(f.read())
+    reader = threading.Thread(target=read, daemon=True)
+    reader.start()
+    try:
+        code, _, err = cli(capsys, "fit", "a.csv", "--json", f"/dev/fd/{w}")
+    finally:
+        os.close(w)
+    reader.join(timeout=30)
+    assert code == 0, err
+    assert got and json.loads(got[0])["model"] == "discrete"
+    assert sorted(p.name for p in work.iterdir()) == ["a.csv"]      # no temporaries
