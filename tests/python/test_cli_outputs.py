@@ -333,3 +333,24 @@ def test_an_output_through_an_open_descriptor_is_written_through(work, capsys):
     assert code == 0, err
     assert got and json.loads(got[0])["model"] == "discrete"
     assert sorted(p.name for p in work.iterdir()) == ["a.csv"]      # no temporaries
+
+
+def test_a_written_through_output_that_fails_leaves_the_others_unwritten(work, capsys):
+    """feb6ef1 writes the outputs that are not regular files first at commit, so that one
+    failing (/dev/full as root: 'No space left on device') leaves no other output renamed
+    into place and nothing on standard output. A UNIX socket stands in for the failing
+    device (open() of it fails with ENXIO; nothing under /dev touched): before feb6ef1 it was
+    replaced by a JSON file, exit 0; with the renames first, b.svg was left behind."""
+    import socket
+    import stat
+    sock = socket.socket(socket.AF_UNIX)
+    try:
+        sock.bind("node.json")          # relative: work is the current directory
+        code, out, err = cli(capsys, "fit", "a.csv", "--json", "node.json", "--svg", "b.svg",
+                             "--dxf", "-")
+    finally:
+        sock.close()
+    assert code == 2 and "node.json: cannot write" in err, err
+    assert stat.S_ISSOCK(os.lstat(work / "node.json").st_mode)     # the node itself kept
+    assert sorted(p.name for p in work.iterdir()) == ["a.csv", "node.json"]   # no b.svg, no temporaries
+    assert "SECTION" not in out          # the DXF for stdout not copied
