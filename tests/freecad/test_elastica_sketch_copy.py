@@ -345,3 +345,45 @@ class CopyDriftSaidOnceTest(S.DocTest):
         sk.movePoint(i, 1, start + App.Vector(0, 6, 0))
         self.doc.recompute()
         self.assertEqual(len(self.idle()), 1)
+
+
+class CopyDriftIdleHookTest(S.DocTest):
+    """5a18fb0: the drift line's idle scheduler comes through proxy.IDLE_HOOK (set by
+    init_gui), CopyDriftSaidOnceTest replacing copies._scheduler as a whole: nothing held the
+    real one to using the hook under the GUI only. Under the GUI (App.GuiUp) the hook's
+    function defers the line; without it (freecadcmd, a script) the line comes at once even
+    where a hook is set (no event loop would run it: the drift never said)."""
+    doc_name = "ElasticaCopyDriftHook"
+
+    def setUp(self):
+        super().setUp()
+        from freecad.elastica import copies, proxy
+        self.copies, self.proxy, self.queued, self.printed = copies, proxy, [], []
+        self.saved = list(proxy.IDLE_HOOK), App.GuiUp, App.Console.PrintWarning
+        App.Console.PrintWarning = self.printed.append
+
+    def tearDown(self):
+        self.proxy.IDLE_HOOK[:], App.GuiUp, App.Console.PrintWarning = self.saved
+        super().tearDown()
+
+    def test_the_gui_hook_defers_and_without_the_gui_the_line_comes_at_once(self):
+        hook = self.queued.append
+        self.proxy.IDLE_HOOK[:] = [hook]
+        App.GuiUp = 1
+        try:
+            self.assertIs(self.copies._scheduler(), hook)
+            self.proxy.IDLE_HOOK[:] = []            # a GUI without the workbench's hook
+            self.assertIsNone(self.copies._scheduler())
+        finally:
+            App.GuiUp = 0
+        self.proxy.IDLE_HOOK[:] = [hook]
+        self.assertIsNone(self.copies._scheduler())
+        fit = _sine_fit(self.doc)
+        sk = _outline(self.doc, fit)
+        i = G.write_to_sketch(fit, sk)[0]
+        self.doc.recompute()
+        sk.movePoint(i, 1, sk.Geometry[i].StartPoint + App.Vector(0, 3, 0))
+        self.doc.recompute()
+        said = [t for t in self.printed if "the copy in" in t.lower()]
+        self.assertEqual(len(said), 1, self.printed)   # at once, with the hook set
+        self.assertEqual(self.queued, [])
