@@ -6,6 +6,7 @@ leaves nothing behind)."""
 from __future__ import annotations
 
 import os
+import re
 import shutil
 import stat
 import sys
@@ -51,6 +52,20 @@ def _mode_for(final: Path) -> int:
         umask = os.umask(0)
         os.umask(umask)
         return 0o666 & ~umask
+
+
+def _names_a_descriptor(path) -> bool:
+    """Whether ``path`` names an open file descriptor through /proc/self/fd (Linux's
+    /dev/stdout, /dev/stderr, /dev/fd/N, bash's >(...)): its links followed one at a time,
+    one of them lies in a process's fd directory."""
+    p = os.path.abspath(path)
+    for _ in range(40):                 # (the kernel's ELOOP limit)
+        if re.fullmatch(r"/proc/(self|\d+)/fd", os.path.realpath(os.path.dirname(p))):
+            return True
+        if not os.path.islink(p):
+            return False
+        p = os.path.join(os.path.dirname(p), os.readlink(p))
+    return False
 
 
 class Outputs:
@@ -114,9 +129,11 @@ class Outputs:
             node = os.stat(final)   # follows links, /proc/self/fd's to pipes too
         except OSError:
             node = None
-        # not a regular file, or a link to an open descriptor (/dev/stdout, /dev/fd/N: a pipe's
-        # link names pipe:[inode], no path realpath can give to rename onto)
-        if node is not None and (not stat.S_ISREG(node.st_mode) or not where.exists()):
+        # not a regular file, or an open descriptor (/dev/stdout, /dev/fd/N: a pipe's link
+        # names pipe:[inode], no path to rename onto; a file's is the one the shell opened,
+        # '>>' appending: renaming onto it dropped its earlier lines)
+        if node is not None and (not stat.S_ISREG(node.st_mode) or not where.exists() or
+                                 _names_a_descriptor(final)):
             return self._private(final, final.suffix or ".tmp")
         # the output's own directory is made when its parent exists (out/{stem}.json, a
         # batch's --svg pics: one level, as mkdir makes it); a path missing more is a typo
@@ -174,7 +191,11 @@ class Outputs:
         for tmp, final, where in self._staged:
             if where is None and final != "-":
                 try:
-                    with open(tmp, "rb") as src, open(final, "wb") as dst:
+                    # a descriptor's file at its end, where this command's other writes to
+                    # it went ('>' or '>>'); a FIFO or device as it is
+                    mode = "ab" if _names_a_descriptor(final) else "wb"
+                    sys.stdout.flush()      # what it printed first, before this at its end
+                    with open(tmp, "rb") as src, open(final, mode) as dst:
                         shutil.copyfileobj(src, dst)
                 except OSError as exc:
                     raise InputError(f"{final}: cannot write ({exc.strerror})") from None

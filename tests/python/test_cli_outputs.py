@@ -354,3 +354,25 @@ def test_a_written_through_output_that_fails_leaves_the_others_unwritten(work, c
     assert stat.S_ISSOCK(os.lstat(work / "node.json").st_mode)     # the node itself kept
     assert sorted(p.name for p in work.iterdir()) == ["a.csv", "node.json"]   # no b.svg, no temporaries
     assert "SECTION" not in out          # the DXF for stdout not copied
+
+
+def test_an_output_through_a_descriptor_on_a_file_appends_as_the_shell_opened_it(work, capsys):
+    """`elastica fit a.csv --json /dev/stdout >> log` replaced log by the JSON alone (its
+    earlier lines gone; with '> out' the summary printed to stdout went to the replaced
+    file): the link through /proc/self/fd was followed to the file and a temporary renamed
+    onto it. What /dev/stdout or /dev/fd/N names is the descriptor the shell opened (its
+    mode, its offset): written through it (here a descriptor of log.txt opened to append)."""
+    log = work / "log.txt"
+    log.write_text("earlier line\n")
+    inode = os.stat(log).st_ino
+    fd = os.open(log, os.O_WRONLY | os.O_APPEND)
+    try:
+        code, _, err = cli(capsys, "fit", "a.csv", "--json", f"/dev/fd/{fd}")
+    finally:
+        os.close(fd)
+    assert code == 0, err
+    assert os.stat(log).st_ino == inode                 # the file the shell opened, not a new one
+    text = log.read_text()
+    assert text.startswith("earlier line\n"), text[:80]
+    assert json.loads(text[len("earlier line\n"):])["model"] == "discrete"
+    assert sorted(p.name for p in work.iterdir()) == ["a.csv", "log.txt"]
