@@ -530,10 +530,8 @@ typedef struct el_fit_smooth_result {
  * Returns (and stores in res->status):
  *   EL_OK;
  *   EL_ENOCONV / EL_EMAXITER with the best parameters seen;
- *   EL_EDOM: a constraint cannot be met (res->constraint names it; the parameters are
- *     those of the fit nearest to meeting every constraint, the largest error of the held
- *     values (points and curvatures in units of the points' rms radius, tangents in rad,
- *     the length and k outside their ranges) the least, then the lowest objective), or the data's scale is outside what double precision
+ *   EL_EDOM: a constraint cannot be met (res->constraint names it; the best parameters
+ *     seen are returned), or the data's scale is outside what double precision
  *     represents (differences below ~1e-292, or beyond ~1e308; res untouched) or the
  *     fitted parameters are (res written, params the best finite ones seen);
  *   EL_EINVAL: NULL, n < 4, NaN/inf, bad options (a fixed[j] other than 0 or 1, a fixed

@@ -252,11 +252,7 @@ static int fit_one_start(fit_run_state *R, size_t ci, fit_trial *tr, int *go)
  * its f is that of the free fit); with rows, a fit that meets them before one that does
  * not, whatever their f (measured: a discrete G1-G1 sketch of 7 points, whose first guess
  * ended at Ipopt's max_iter off the end tangent below the f of the three that met it,
- * failed with EL_EDOM); of two that meet none, the nearer to meeting them (el__fit_violation),
- * then the lower f, as the unconstrained start that meets them before one that does not (the
- * lowest f alone: a ship frame held at 8 conditions no curve meets, test_fit_infeasible.c,
- * returned a smooth fit missing them by 8.1 where another start's missed by 3.0, and kept a
- * start missing by 178 on the way for an f 0.3 % lower).
+ * failed with EL_EDOM).
  * A constrained fit that crosses itself or strays from its points (el__fit_wanders) does not
  * replace one that does neither (a G1 family member: 7 noisy points along a near-straight
  * curve, a loop in a gap between them, rms 0.84 x the kept fit's, within el__fit_stray's
@@ -275,17 +271,9 @@ static void keep_the_better(fit_run_state *R, size_t ci, fit_trial *tr)
     const int r_meets = (need_ipopt || ci == R->free_ci) &&
                         el__fit_meets(ob, &R->map, &R->con, r->x, R->lo, R->hi, R->tmp);
     tr->meets = r_meets;
-    /* with rows, of two fits that meet none the nearer to meeting them */
-    const double r_violation = need_ipopt && !r_meets
-                             ? el__fit_violation(ob, &R->map, &R->con, r->x, R->lo, R->hi, R->tmp)
-                             : 0.0;
-    const int nearer = r_violation < R->best_violation ||
-                       (r_violation == R->best_violation && r->f < R->best.f);
-    R->last_is_best = ci == R->free_ci ? r_meets && (r->f < R->best.f ||
-                                                     (need_ipopt && !R->best_meets))
+    R->last_is_best = ci == R->free_ci ? r_meets && r->f < R->best.f
                     : need_ipopt ? (r_meets && !R->best_meets) ||
-                                       (r_meets && R->best_meets && r->f < R->best.f) ||
-                                       (!r_meets && !R->best_meets && nearer)
+                                       (r_meets == R->best_meets && r->f < R->best.f)
                     : r->f < R->best.f;
     if (R->last_is_best && constrained && isfinite(R->best.f) && (R->best_meets || !need_ipopt) &&
         el__fit_wanders(ob, r->x, &tr->strays, R->noise_rms, R->d, R->fs, R->tmp)) {
@@ -301,7 +289,6 @@ static void keep_the_better(fit_run_state *R, size_t ci, fit_trial *tr)
         R->best = *r;
         R->best_strays = tr->strays;
         R->best_meets = r_meets;
-        R->best_violation = r_violation;
         memcpy(R->best_init, tr->p0, sizeof tr->p0);
         R->best_loops = -1;
         R->family_won |= ci < R->nfamily;
@@ -470,7 +457,6 @@ static int caller_start_as_is(fit_run_state *R)
         R->best.status = R->determined && rows == R->map.nx ? EL_OK : EL_ENOCONV;
         memcpy(R->best_init, p0, sizeof p0);
         R->best_meets = R->last_is_best = 1;
-        R->best_violation = 0.0;
         R->best_strays = R->best_loops = -1;
     } else {
         memcpy(ob->s, kept, sizeof(double) * R->n);

@@ -83,31 +83,6 @@ void el__fit_setup_constraints(const el_fit_options *o, int model, size_t n, dou
     }
 }
 
-/* One end's errors against what con holds there (0 where nothing): err[0] its point's (the
- * larger coordinate difference), err[1] its tangent's (rad, modulo a turn), err[2] its
- * curvature's (normalised units); bits[] their constraint bits. EL_OK, or the end state's
- * status (not evaluable). */
-static int end_errors(const fit_objective *ob, const fit_constraints *con, int model,
-                      const double *v, int at_end, double err[3], int bits[3], double *tmp)
-{
-    const int mask = con->mask;
-    const int pbit = at_end ? EL_CONSTRAIN_END_POINT : EL_CONSTRAIN_START_POINT;
-    const int tbit = at_end ? EL_CONSTRAIN_END_TANGENT : EL_CONSTRAIN_START_TANGENT;
-    const int kbit = at_end ? EL_CONSTRAIN_END_CURVATURE : EL_CONSTRAIN_START_CURVATURE;
-    bits[0] = pbit; bits[1] = tbit; bits[2] = kbit;
-    err[0] = err[1] = err[2] = 0.0;
-    if (!(mask & (pbit | tbit | kbit))) return EL_OK;
-    fit_end e;
-    const int st = el__fit_end_state(model, v, ob->n, at_end, &e, tmp);
-    if (st) return st;
-    const double *P = at_end ? con->end_xy : con->start_xy;
-    if (mask & pbit) err[0] = fmax(fabs(e.xy[0] - P[0]), fabs(e.xy[1] - P[1]));
-    if (mask & tbit)
-        err[1] = fabs(remainder(e.theta - (at_end ? con->end_theta : con->start_theta), 2.0 * M_PI));
-    if (mask & kbit) err[2] = fabs(e.kappa - (at_end ? con->end_kappa : con->start_kappa));
-    return EL_OK;
-}
-
 /* Which constraint the normalised parameters v violate most (0: none), after a solve:
  * points and curvatures to 1e-10 of the data's rms radius, angles to 1e-10 rad, a
  * tangent not reversed, the length and k within their ranges. */
@@ -124,10 +99,17 @@ int el__fit_violated(const fit_objective *ob, const fit_constraints *con, const 
     int worst = 0;
     double wv = 0.0;
     for (int at_end = 0; at_end < 2; at_end++) {
-        double err[3];
-        int bits[3];
-        if (end_errors(ob, con, model, v, at_end, err, bits, tmp))
-            return mask & (bits[0] | bits[1] | bits[2]);
+        const int pbit = at_end ? EL_CONSTRAIN_END_POINT : EL_CONSTRAIN_START_POINT;
+        const int tbit = at_end ? EL_CONSTRAIN_END_TANGENT : EL_CONSTRAIN_START_TANGENT;
+        const int kbit = at_end ? EL_CONSTRAIN_END_CURVATURE : EL_CONSTRAIN_START_CURVATURE;
+        if (!(mask & (pbit | tbit | kbit))) continue;
+        fit_end e;
+        if (el__fit_end_state(model, v, ob->n, at_end, &e, tmp)) return mask & (pbit | tbit | kbit);
+        const double *P = at_end ? con->end_xy : con->start_xy;
+        const double err[3] = {(mask & pbit) ? fmax(fabs(e.xy[0] - P[0]), fabs(e.xy[1] - P[1])) : 0.0,
+                               (mask & tbit) ? fabs(remainder(e.theta - (at_end ? con->end_theta : con->start_theta), 2.0 * M_PI)) : 0.0,
+                               (mask & kbit) ? fabs(e.kappa - (at_end ? con->end_kappa : con->start_kappa)) : 0.0};
+        const int bits[3] = {pbit, tbit, kbit};
         for (int a = 0; a < 3; a++)
             if (err[a] > tol && err[a] > wv) { wv = err[a]; worst = bits[a]; }
     }
@@ -140,27 +122,6 @@ int el__fit_meets(fit_objective *ob, const fit_map *map, const fit_constraints *
     double v[2][FIT_NP];
     return el__fit_map_eval(map, x, v, NULL) == EL_OK &&
            !el__fit_violated(ob, con, v[0], lo, hi, tmp);
-}
-
-double el__fit_violation(fit_objective *ob, const fit_map *map, const fit_constraints *con,
-                         const double *x, const double *lo, const double *hi, double *tmp)
-{
-    double v[2][FIT_NP];
-    if (el__fit_map_eval(map, x, v, NULL) != EL_OK) return HUGE_VAL;
-    const int model = map->model, mask = con->mask;
-    const int jl = fit_length_slot(model), jk = fit_k_slot(model);
-    /* the discrete length slot is h: the whole polygon's length outside its range */
-    const double per = model == FIT_DISCRETE ? (double)(ob->n - 1) : 1.0;
-    double w = 0.0;
-    if (mask & EL_CONSTRAIN_LENGTH) w = fmax(w, fmax(lo[jl] - v[0][jl], v[0][jl] - hi[jl]) * per);
-    if (mask & EL_CONSTRAIN_K) w = fmax(w, fmax(lo[jk] - v[0][jk], v[0][jk] - hi[jk]));
-    for (int at_end = 0; at_end < 2; at_end++) {
-        double err[3];
-        int bits[3];
-        if (end_errors(ob, con, model, v[0], at_end, err, bits, tmp)) return HUGE_VAL;
-        for (int a = 0; a < 3; a++) w = err[a] <= w ? w : isnan(err[a]) ? HUGE_VAL : err[a];
-    }
-    return isnan(w) ? HUGE_VAL : w;
 }
 
 /*

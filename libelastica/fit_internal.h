@@ -634,7 +634,6 @@ typedef struct fit_run_state {
     fit_candidate best;
     double best_init[FIT_NP];
     int best_strays, best_loops, best_meets, wander_kept;
-    double best_violation;   /* with rows, where best_meets is 0: el__fit_violation's */
     int iters, tried, last_is_best, ipopt_spent;
     int unshared;         /* a held start's continuation ended far above its free fit (fit_choose.c) */
     double v[2][FIT_NP];
@@ -810,13 +809,6 @@ void el__fit_setup_constraints(const el_fit_options *o, int model, size_t n, dou
 /* The constraint bit the normalised parameters v violate most (0: none). */
 int el__fit_violated(const fit_objective *ob, const fit_constraints *con, const double *v,
                      const double *lo, const double *hi, double *tmp);
-/* fit_constraints.c: how far the point x of a fit (map's variables) is from meeting the
- * constraints con and the bounds lo, hi (normalised): the largest of el__fit_violated's
- * errors (points, curvatures, the length's and k's distance outside their ranges in
- * normalised units, tangents in rad), 0 where each is met exactly; HUGE_VAL where x cannot
- * be evaluated. keep_the_better ranks fits that meet none by it. */
-double el__fit_violation(fit_objective *ob, const fit_map *map, const fit_constraints *con,
-                         const double *x, const double *lo, const double *hi, double *tmp);
 /* fit_constraints.c: the point x of a fit (map's variables) meets the constraints con and
  * the bounds lo, hi (normalised parameters). */
 int el__fit_meets(fit_objective *ob, const fit_map *map, const fit_constraints *con,

@@ -304,7 +304,6 @@ int el__fit_starts(fit_run_state *R)
     R->best_loops = -1;     /* best crosses itself (el__fit_loops), once known */
     R->wander_kept = 0;     /* keep_the_better (or a sketch's) kept a fit that does not wander */
     R->best_meets = 0;      /* with rows: best meets the constraints */
-    R->best_violation = HUGE_VAL;   /* with rows, where it does not: how far (keep_the_better) */
     memcpy(R->best_init, R->cand[0], sizeof R->best_init);
     R->iters = R->tried = R->last_is_best = R->ipopt_spent = 0;   /* Ipopt runs to max_iter */
     start_rules(R);
