@@ -259,12 +259,20 @@ int el_discrete_jacobian(const el_discrete_params *p, size_t n, double *xy, doub
  *                     for a side d, nu the points' noise level as the fit estimates
  *                     it (rms per point; noise lengthens a side to sqrt(d^2 + 2 nu^2)
  *                     on average, and plain chords gave a cluster of close noisy
- *                     points too much of the curve);
+ *                     points too much of the curve); for n > 40 points whose 32
+ *                     block means turn by < 0.3 rad at each, measured along the
+ *                     polygon of those means between the blocks' middle points
+ *                     (the points' chords sharing each stretch out);
  *   EL_PARAM_AUTO     UNIFORM when the data are equilateral in the large: the
  *                     sides of the polygon of the means of 32 blocks of
  *                     consecutive points (of the points themselves when n <= 40)
  *                     have lengths with a coefficient of variation <= 0.5 (so
- *                     noisy, uniformly sampled data count as equilateral);
+ *                     noisy, uniformly sampled data count as equilateral); for
+ *                     n > 40 where those means turn by < 0.3 rad at each, the
+ *                     sides per point between the blocks' middles within a
+ *                     coefficient of variation of 0.05 + 3 nu sqrt(32/n) / (mean
+ *                     side) instead (what the noise alone gives; scanner-density
+ *                     points, spacing 1:2 between blocks, are CHORD);
  *                     CHORD otherwise.
  */
 enum el_param_mode { EL_PARAM_AUTO = 0, EL_PARAM_UNIFORM = 1, EL_PARAM_CHORD = 2 };

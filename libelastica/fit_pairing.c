@@ -35,7 +35,31 @@ int el__fit_evenly_spaced(const double *xy, size_t n)
                          xy[2 * (i - w) + 3] - xy[2 * (i - w) + 1]);
         if (i + 1 >= w) { lo = fmin(lo, run); hi = fmax(hi, run); }
     }
-    return hi <= 1.3 * lo;
+    if (!(hi <= 1.3 * lo)) return 0;
+    /* The chords of the same runs (point i to point i + w): where the points are closer
+     * than their noise, every segment is mostly noise and the runs' sums are alike
+     * whatever the spacing, while a run's chord is its stretch of the curve to the noise
+     * of its two ends (the chord is within 3 % of the arc where a run turns by less than
+     * 0.8 rad). Within 1.3 x of each other's and 4 noise levels (rms per point, el__fit_noise_rms).
+     * Measured (QA23 F5): 20 000 scanned points of spacing 1:12 (the runs' chords 1:2.3),
+     * noise 0.2 at a mean spacing of 0.018: the sums within 1.02 x, the points taken for
+     * evenly spaced, the discrete model paired them with its vertices, and five guesses'
+     * paired fits crawled 163-200 iterations each to rms 0.081 before the fit by distance
+     * (927 iterations in all, 4.6 ms / 2 for evenly spaced points). */
+    lo = HUGE_VAL; hi = 0.0;
+    for (size_t i = 0; i + w < n; i++) {
+        const double *a = xy + 2 * i, *b = a + 2 * w;
+        const double c = hypot(b[0] - a[0], b[1] - a[1]);
+        lo = fmin(lo, c); hi = fmax(hi, c);
+        if (i + 2 * w < n) {     /* the turn from this run's chord to the next one's */
+            const double ux = b[0] - a[0], uy = b[1] - a[1], vx = b[2 * w] - b[0], vy = b[2 * w + 1] - b[1];
+            if (!(fabs(atan2(ux * vy - uy * vx, ux * vx + uy * vy)) < 0.8)) return 1;
+        }
+    }
+    if (hi <= 1.3 * lo) return 1;
+    double cx, cy, sc;
+    if (el__fit_normalisation(xy, n, &cx, &cy, &sc)) return 1;
+    return hi <= 1.3 * lo + 4.0 * el__fit_noise_rms(xy, n, sc) * sc;
 }
 
 /* The first point where the data turn back on themselves and run back over a stretch (a
