@@ -259,16 +259,18 @@ class _Blend(ValueEquality):
 
     def to_bspline(self, q, tol: Optional[float] = None):
         """A clamped cubic :class:`BSpline` within ``tol`` (default 1e-6 of the curve's
-        length) of the curve with control points q (4 points, or 3*nseg + 1 for a
+        length, or 4 times the smallest tol below, if larger) of the curve with control points q (4 points, or 3*nseg + 1 for a
         composite), in the same parameter; its ``max_deviation`` is the certified
         max_t |phi(t) - B(t)|. Raises NotConvergedError (with the tol that is reached)
         when 256 spans per segment do not reach tol, DomainError (with the smallest
         possible) for a tol below what the coordinates resolve."""
         from .bspline import at_least, default_tol
         q, nseg = _composite(q)
-        if tol is None:
+        # (the floor: el_blend_to_bspline's EL_EDOM for a tol below it)
+        floor = 64.0 * np.finfo(float).eps * max(self.lebesgue, 1.0) * float(np.max(np.abs(q)))
+        if tol is None:   # 1e-6 of the length, or FLOOR_MARGIN x the floor (QA23: survey coordinates)
             xy = self.evaluate_composite(q)
-            tol = default_tol(None, np.sum(np.hypot(*np.diff(xy, axis=0).T)))
+            tol = default_tol(None, np.sum(np.hypot(*np.diff(xy, axis=0).T)), floor=floor)
         tol = as_positive(tol, "to_bspline: tol")
         b = ffi.new("el_bspline *")
         st = lib.el_blend_to_bspline(self._b, nseg, dptr(q), tol, b)
@@ -279,7 +281,6 @@ class _Blend(ValueEquality):
                                     f"spans a segment: the best B-spline found is certified "
                                     f"within {dev:.6g}; raise tol to {at_least(dev)} or more "
                                     "(it is reached), or give more points (shorter segments)")
-        floor = 64.0 * np.finfo(float).eps * max(self.lebesgue, 1.0) * float(np.max(np.abs(q)))
         if st == lib.EL_EDOM and tol < floor:
             raise DomainError(st, f"to_bspline: tol = {tol:.3g} is below what double precision "
                               f"resolves for these coordinates; the smallest possible is 64 eps "

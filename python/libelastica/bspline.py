@@ -16,15 +16,34 @@ from .core import within
 
 RELATIVE_TOL = 1e-6
 """Every to_bspline's default tolerance: 1e-6 of the curve's length (README's rule), so the
-default works at any scale (1e-6 absolute failed at 1e6 coordinates, QA)."""
+default works at any scale (1e-6 absolute failed at 1e6 coordinates, QA), raised to
+:data:`FLOOR_MARGIN` times what double precision resolves where that is larger (a curve
+shorter than ~1e-8 of its coordinates: 40 mm at (4e8, 5.6e9) mm, QA23)."""
+
+FLOOR_MARGIN = 4.0
+"""How far above the smallest resolvable tol (:func:`resolvable_tol`) a default tol stays:
+at the floor itself the certified distance, of the size of the rounding, can miss it
+(NotConvergedError at 1.01 x the floor, 0.05 m at (4e5, 5.6e6) m, mu 400)."""
 
 
-def default_tol(tol, length: float, what: str = "to_bspline") -> float:
-    """``tol`` (> 0) as given, or :data:`RELATIVE_TOL` times ``length`` when None (1e-6
-    for a curve of length 0, which any tol fits)."""
+def resolvable_tol(curve) -> float:
+    """The smallest tol el_smooth_to_bspline accepts for a SmoothElastica (or its C
+    parameters): 1e-14 (length + |x0| + |y0| + |q| / sqrt(mu)), its header's rule: the
+    points carry the rounding of their coordinates, the phase q an absolute eps |q| into
+    u = sqrt(mu) s + q (seed 000 (3.9))."""
+    return 1e-14 * (float(curve.length) + abs(float(curve.x0)) + abs(float(curve.y0))
+                    + abs(float(curve.q)) / np.sqrt(float(curve.mu)))
+
+
+def default_tol(tol, length: float, what: str = "to_bspline", floor: float = 0.0) -> float:
+    """``tol`` (> 0) as given, or when None the larger of :data:`RELATIVE_TOL` times
+    ``length`` (1e-6 for a curve of length 0, which any tol fits) and :data:`FLOOR_MARGIN`
+    times ``floor``, the smallest tol double precision resolves for the curve (a tol
+    given below it keeps its DomainError)."""
     if tol is None:
         length = float(length)
-        return RELATIVE_TOL * length if length > 0.0 and np.isfinite(length) else RELATIVE_TOL
+        rel = RELATIVE_TOL * length if length > 0.0 and np.isfinite(length) else RELATIVE_TOL
+        return max(rel, FLOOR_MARGIN * float(floor)) if np.isfinite(floor) else rel
     return as_positive(tol, f"{what}: tol")
 
 
@@ -318,12 +337,12 @@ def smooth_to_bspline(curve, tol=None, degree: int = 3) -> BSpline:
     1e-6 of the curve's length) of a SmoothElastica everywhere, parametrised by its arc
     length; the certified distance is ``max_deviation``."""
     degree = as_degree(degree, "to_bspline: degree")
-    tol = default_tol(tol, getattr(curve, "length", 0.0))
     p = ffi.new("el_smooth_params *")
     for name in ("x0", "y0", "phi", "mu", "k", "q", "length"):
         if not hasattr(curve, name):
             raise ValueError(f"to_bspline: a SmoothElastica is needed, got {type(curve).__name__}")
         setattr(p, name, as_real(getattr(curve, name), f"to_bspline: {name}", finite=False))
+    tol = default_tol(tol, p.length, floor=resolvable_tol(p) if p.mu > 0 else 0.0)
     b = ffi.new("el_bspline *")
     st = lib.el_smooth_to_bspline(p, tol, degree, b)
     if st == lib.EL_EDOM:
@@ -345,19 +364,42 @@ def _not_reached(tol: float, dev: float) -> str:
 def _beyond_limits(p, tol: float) -> str:
     """What el_smooth_to_bspline's EL_EDOM means for this curve (its header's rules):
     what was asked and what is possible."""
-    floor = 1e-14 * (p.length + abs(p.x0) + abs(p.y0) + abs(p.q) / np.sqrt(p.mu))
+    floor = resolvable_tol(p)
     turn = 2.0 * abs(p.k) * np.sqrt(p.mu) * p.length
     limit = lib.EL_BSPLINE_MAX_POLES
     if tol < floor:
+        phase = abs(p.q) / np.sqrt(p.mu)
+        why = (f" (|q|/sqrt(mu) = {phase:.3g}, mu = {p.mu:.3g}: a piece this close to straight "
+               "carries the rounding of its phase q)" if phase > p.length + abs(p.x0) + abs(p.y0)
+               else "")
         return (f"tol = {tol:.3g} is below what double precision resolves for this curve; "
                 f"the smallest possible is 1e-14 (length + |x0| + |y0| + |q|/sqrt(mu)) = "
-                f"{at_least(floor)}")
+                f"{at_least(floor)}{why}")
     if turn > limit:
         return (f"the curve turns through up to {turn:.3g} rad (2 |k| sqrt(mu) length); "
                 f"at most {limit} rad can be followed with {limit} poles: split it into "
                 f"pieces of at most {limit / (2 * abs(p.k) * np.sqrt(p.mu)):.4g} in length")
     return (f"tol = {tol:.3g} needs more than {limit} poles for this curve (the limit, "
             f"EL_BSPLINE_MAX_POLES): raise tol or split the curve")
+
+
+def _first_beyond(arr, tol: float, degree: int) -> int:
+    """The index of the piece el_smooth_chain_to_bspline's EL_EDOM came from: the first,
+    in the chain's order, below the precision floor, turning more than the pole limit
+    follows, or (built again to know) needing more poles than it. Not the piece that turns
+    most: a batten's straight middle span below the floor (piece 19 of 39, |q| / sqrt(mu)
+    1.7e9) was named as piece 39 needing more than 10000 poles (QA23)."""
+    limit = lib.EL_BSPLINE_MAX_POLES
+    for j, p in enumerate(arr):
+        if tol < resolvable_tol(p) or 2.0 * abs(p.k) * np.sqrt(p.mu) * p.length > limit:
+            return j
+        b = ffi.new("el_bspline *")
+        st = lib.el_smooth_to_bspline_g2(ffi.addressof(arr, j), tol, degree, b)
+        if st in (lib.EL_OK, lib.EL_EMAXITER):
+            lib.el_bspline_free(b)
+        if st == lib.EL_EDOM:
+            return j
+    return len(arr) - 1   # (not met: the chain's budget below tol on a second pass)
 
 
 def _check_joints(pieces, tol):
@@ -384,19 +426,20 @@ def smooth_chain_to_bspline(pieces, tol=None, degree: int = 3) -> BSpline:
     ``max_deviation`` is the certified distance; NotConvergedError (with it and the tol
     that reaches it) when tol is not reached, DomainError (with the smallest possible)
     below what double precision resolves."""
-    tol = default_tol(tol, sum(float(getattr(c, "length", 0.0)) for c in pieces))
     degree = as_degree(degree, "to_bspline: degree")
     require(len(pieces) >= 1, "to_bspline: the number of pieces", ">= 1", len(pieces))
     arr = ffi.new("el_smooth_params[]", len(pieces))
     for i, c in enumerate(pieces):
         for name in ("x0", "y0", "phi", "mu", "k", "q", "length"):
             setattr(arr[i], name, float(getattr(c, name)))
+    tol = default_tol(tol, sum(p.length for p in arr),
+                      floor=max(resolvable_tol(p) if p.mu > 0 else 0.0 for p in arr))
     b = ffi.new("el_bspline *")
     st = lib.el_smooth_chain_to_bspline(arr, len(pieces), tol, degree, b)
     if st == lib.EL_EINVAL and tol > 0 and 3 <= degree <= 7:
         # a tol below rounding first: the joints' gaps of ~1e-16 failed it and were named
         # as the cause ("piece 2 does not start where piece 1 ends (gap 9e-16)", QA)
-        floor = [1e-14 * (p.length + abs(p.x0) + abs(p.y0) + abs(p.q) / np.sqrt(p.mu)) for p in arr]
+        floor = [resolvable_tol(p) for p in arr]
         worst = int(np.argmax(floor))
         if tol < floor[worst]:
             why = _beyond_limits(arr[worst], tol)
@@ -405,9 +448,14 @@ def smooth_chain_to_bspline(pieces, tol=None, degree: int = 3) -> BSpline:
         _check_joints(pieces, tol)
     if st == lib.EL_EDOM:   # a piece beyond el_smooth_to_bspline's limits: say which and why
         n = len(pieces)
-        worst = max(range(n), key=lambda i: 2.0 * abs(arr[i].k) * np.sqrt(arr[i].mu) * arr[i].length)
-        why = _beyond_limits(arr[worst], tol)
-        raise DomainError(st, "to_bspline: " + (why if n == 1 else f"piece {worst + 1} of {n}: {why}"))
+        first = _first_beyond(arr, tol, degree)
+        why = _beyond_limits(arr[first], tol)
+        floors = [resolvable_tol(p) for p in arr]
+        top = int(np.argmax(floors))
+        if n > 1 and tol < floors[first] and top != first:   # the tol the whole chain takes
+            why += (f"; for all {n} pieces (piece {top + 1}'s the largest) the smallest "
+                    f"possible is max over the pieces = {at_least(floors[top])}")
+        raise DomainError(st, "to_bspline: " + (why if n == 1 else f"piece {first + 1} of {n}: {why}"))
     if st == lib.EL_EMAXITER:
         dev = float(b.max_deviation)
         lib.el_bspline_free(b)
