@@ -23,6 +23,7 @@ def cmd_g2quad(args) -> int:
     import libelastica as el
     from .bspline import BSpline
     from .core import SmoothElastica
+    from .spline import ElasticSpline
     from .report import Layer, curves_picture, save_picture
     source, frame, plane = args.file, None, None
     if args.edges is not None and args.edges < 3:
@@ -34,8 +35,8 @@ def cmd_g2quad(args) -> int:
         items = doc.get("sides") if isinstance(doc, dict) and "sides" in doc else [doc]
         if len(items) != 1:
             raise InputError(f"{args.file}: {len(items)} curves; give one (e.g. one side's JSON)")
-        curve = curve_from_dict(items[0], name=args.file)
-        src = curve if isinstance(curve, SmoothElastica) else curve.points()
+        curve = _spline_of(items[0], args.file) or curve_from_dict(items[0], name=args.file)
+        src = curve if isinstance(curve, (SmoothElastica, ElasticSpline)) else curve.points()
         if args.fit and src is curve:
             raise InputError(f"--fit: {args.file} is a fitted smooth elastica already")
         curve_source = src is curve
@@ -130,6 +131,35 @@ def cmd_g2quad(args) -> int:
             BSpline(b.degree, frame.to_3d(b.poles), b.knots, b.mults) for b in g.bsplines]
         write_dxf_spline(splines, args.outputs.path(args.dxf), units=args.units)
     return EXIT_OK
+
+
+def _spline_of(doc, name: str):
+    """The open ElasticSpline of `elastica spline --json`'s record (its pieces and
+    'closed'), None for any other JSON; a closed one refused (no ends to build between).
+    It was refused as "no elastica curve" (QA23 F10): g2_quadratic takes the spline."""
+    from .core import SmoothElastica, chain_starts
+    from .spline import ElasticSpline
+    if not (isinstance(doc, dict) and "pieces" in doc and "closed" in doc and "type" not in doc):
+        return None
+    if doc["closed"]:
+        raise InputError(f"{name}: a closed spline has no ends for the G2 quadratic splines to "
+                         "start and stop at (seed 002 builds open curves): pass an open one")
+    pieces = doc["pieces"]
+    if not isinstance(pieces, list) or not pieces:
+        raise InputError(f"{name}: a spline's 'pieces' must be a list of smooth elasticae")
+    curves = [curve_from_dict(p, f"{name} piece {i}") for i, p in enumerate(pieces)]
+    if not all(isinstance(c, SmoothElastica) for c in curves):
+        raise InputError(f"{name}: a spline's pieces must be smooth elasticae")
+
+    class _ReadSpline(ElasticSpline):
+        """The spline read back: its pieces' evaluation and inflections, no C result."""
+
+        def __init__(self):     # (ElasticSpline's own reads the C el_spline_result)
+            self.pieces, self.closed = curves, False
+            self._starts = chain_starts(curves)
+            self.length = float(self._starts[-1])
+
+    return _ReadSpline()
 
 
 def _coverage_message(exc, n: int, default: bool, smooth: bool) -> str:

@@ -412,7 +412,8 @@ def _joins(splines) -> Tuple[float, float]:
 def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents=None,
                  fit: bool = False, partial: bool = False, *, _plain: bool = False,
                  **options) -> G2Quadratic:
-    """Seed 002 end to end: approximate ``curve_or_points``, a SmoothElastica (sampled with
+    """Seed 002 end to end: approximate ``curve_or_points``, a SmoothElastica, a
+    HermiteChain or an open ElasticSpline (its pieces; sampled with
     ``samples_per_vertex`` x n arcs, default 20) or a sampled curve (N+1, 2),
     by an affine arc-length polyline with n edges (:func:`affine_polyline`, each
     piece's A adjusted so its last vertex lands on the piece end), then build one
@@ -449,6 +450,10 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
     k = 1.5 loop at 12 edges); the curvature then departs up to ~10 % from an arc's just
     inside the ends (7.4 % with the curvature alone)."""
     is_curve = _is_curve(curve_or_points, "g2_quadratic")
+    if is_curve and getattr(curve_or_points, "closed", False):   # a closed ElasticSpline
+        raise ValueError("g2_quadratic: a closed ElasticSpline has no ends for the splines to "
+                         "start and stop at (seed 002 builds open curves): pass an open one, "
+                         "or its samples from a point of your choice")
     n = as_size(n, "g2_quadratic: n (the polyline's edges)", 3)   # the user's call named
     if fit:
         if is_curve or tangents is not None:

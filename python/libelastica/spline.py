@@ -141,28 +141,31 @@ class ElasticSpline(ValueEquality):
             raise ValueError(f"ElasticSpline: n must be >= 2, got {n}")
         return np.linspace(0.0, self.length, int(n))
 
-    def _eval(self, where, what: str) -> np.ndarray:
+    def _eval(self, where, what: str, extrapolate: bool = False) -> np.ndarray:
         """At ``where`` by :func:`core.arc_lengths`'s rule: an int n equally spaced, or arc
-        lengths (floats, arrays) along the spline from point 0, within [0, length]."""
-        s, scalar = arc_lengths(where, self.length, f"ElasticSpline.{what}")
-        out = chain_eval(self.pieces, self._starts, np.clip(s, 0.0, self.length), what,
-                         clip=True)
+        lengths (floats, arrays) along the spline from point 0, within [0, length] (any
+        finite s with ``extrapolate``: the end pieces continued, as HermiteChain's)."""
+        s, scalar = arc_lengths(where, self.length, f"ElasticSpline.{what}", extrapolate)
+        out = chain_eval(self.pieces, self._starts,
+                         s if extrapolate else np.clip(s, 0.0, self.length), what,
+                         clip=not extrapolate)
         return out[0] if scalar else out
 
-    def points(self, n=200) -> np.ndarray:
+    def points(self, n=200, extrapolate: bool = False) -> np.ndarray:
         """(n, 2) points at n (an int) arc lengths equally spaced over the whole spline; or,
-        given arc lengths s along the spline (floats, an array; from point 0, in [0, length]),
-        the points there, as SmoothElastica.points(s) (a float: shape (2,))."""
-        return self._eval(n, "points")
+        given arc lengths s along the spline (floats, an array; from point 0, in [0, length]
+        unless ``extrapolate``), the points there, as SmoothElastica.points(s) (a float:
+        shape (2,))."""
+        return self._eval(n, "points", extrapolate)
 
-    def curvature(self, n=200) -> np.ndarray:
+    def curvature(self, n=200, extrapolate: bool = False) -> np.ndarray:
         """Signed curvature at the same n arc lengths as :meth:`points` (or at arc lengths s)."""
-        return self._eval(n, "curvature")
+        return self._eval(n, "curvature", extrapolate)
 
-    def angle(self, n=200) -> np.ndarray:
+    def angle(self, n=200, extrapolate: bool = False) -> np.ndarray:
         """Tangent angle (rad, continuous) at the same n arc lengths as :meth:`points` (or
         at arc lengths s)."""
-        return self._eval(n, "angle")
+        return self._eval(n, "angle", extrapolate)
 
     def comb(self, n=200, scale: Optional[float] = None) -> np.ndarray:
         """The curvature comb: (n, 2) tips p - scale kappa N at the arc lengths of
@@ -257,7 +260,8 @@ class ElasticSpline(ValueEquality):
 
     def to_bspline(self, tol: Optional[float] = None, degree: int = 3):
         """ONE clamped B-spline (degree 3..7) for the whole spline within ``tol``
-        (coordinate units; default 1e-6 of its length) of it: every point of the B-spline within ``tol`` of the
+        (coordinate units; default 1e-6 of its length, or 4 x what double precision
+        resolves where that is larger: bspline.default_tol) of it: every point of the B-spline within ``tol`` of the
         spline (``max_deviation``, the certified distance, is geometric: from b(t) to
         the nearest point of the spline). Its parameter runs over [0, length] and is the
         arc length at the points (the knots); between them it is not: b(s) and the
@@ -266,6 +270,23 @@ class ElasticSpline(ValueEquality):
         (el_spline_to_bspline = el_smooth_chain_to_bspline), joined C2 (so G2) at the
         points."""
         return smooth_chain_to_bspline(self.pieces, tol, degree)
+
+    def inflections(self, margin: float = 1e-9) -> np.ndarray:
+        """Arc lengths from point 0 of the inflections in (0, length): the pieces' own
+        (:func:`elastica_inflections`, ``margin`` x each piece's length from its ends left
+        out), and the joints where the curvature changes sign (kappa = 0 there: the
+        curvature is continuous), told by its sign half-way between each side's last
+        inflection and the joint. As HermiteChain.inflections: g2_quadratic of a spline."""
+        from .affine import elastica_inflections
+        own = [elastica_inflections(p, margin) for p in self.pieces]
+        out = [s0 + f for s0, f in zip(self._starts, own)]
+        for i in range(1, len(self.pieces)):
+            a, b = self.pieces[i - 1], self.pieces[i]
+            ka = a.curvature(np.array([0.5 * ((own[i - 1][-1] if len(own[i - 1]) else 0.0) + a.length)]))[0]
+            kb = b.curvature(np.array([0.5 * (own[i][0] if len(own[i]) else b.length)]))[0]
+            if ka * kb < 0.0:
+                out.append(np.array([self._starts[i]]))
+        return np.sort(np.concatenate(out)) if out else np.empty(0)
 
 
 def back_steps(points, closed: bool = False) -> List[int]:

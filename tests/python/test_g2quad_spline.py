@@ -1,0 +1,70 @@
+"""G2 quadratic B-splines of an elastic spline (QA23 F10): g2_quadratic(ElasticSpline) and
+`elastica g2quad spline.json` build from its pieces; a closed spline is refused clearly."""
+import json
+import warnings
+
+import numpy as np
+import pytest
+
+import libelastica as el
+from libelastica.cli import main
+
+# a batten through 7 ducks: convex, and an S (one inflection inside a piece)
+CONVEX = np.array([(0, 0), (20, 9), (45, 15), (70, 16), (95, 12), (120, 4), (135, -3)], float)
+S = np.array([(0, 0), (20, 10), (40, 12), (60, 6), (80, -4), (100, -10), (120, -8)], float)
+
+
+def _within(g, sp):
+    """Largest distance of the G2 quadratic's splines (2000 points each) from the spline
+    (a polyline of 20001 of its points, segment projection)."""
+    from libelastica.report import closest_points
+    src = sp.points(20001)
+    worst = 0.0
+    for b in g.bsplines:
+        p = b(np.linspace(*b.domain, 2000))
+        worst = max(worst, float(np.max(np.linalg.norm(closest_points(p, src) - p, axis=1))))
+    return worst
+
+
+@pytest.mark.parametrize("ducks", [CONVEX, S], ids=["convex", "S"])
+def test_g2_quadratic_of_an_elastic_spline(ducks):
+    """It raised "elastica_inflections: curve.k must be a real number, got None" (QA23 F10).
+    Now the splines run from the spline's start to its end, split at its inflections, G2
+    inside, and lie within the deviation they report of it."""
+    sp = el.elastic_spline(ducks, tension=0.0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", el.EndTangentWarning)
+        g = el.g2_quadratic(sp, 48)
+    k = sp.curvature(20001)
+    flips = int(np.count_nonzero(np.diff(np.sign(k[np.abs(k) > 1e-9 * np.abs(k).max()])) != 0))
+    assert len(g.bsplines) == flips + 1 and len(sp.inflections()) == flips
+    assert g.covers_source and g.curvature_jump < 1e-9
+    assert np.allclose(g.ends[0], sp.points(0.0), atol=1e-9 * sp.length)
+    assert np.allclose(g.ends[-1], sp.points(sp.length), atol=1e-9 * sp.length)
+    own = _within(g, sp)
+    assert own <= 1.01 * g.deviation + 1e-9 * sp.length and g.deviation < 0.01 * sp.length
+
+
+def test_a_closed_spline_is_refused_saying_why(capsys, tmp_path):
+    """A closed spline has no ends to build between: ValueError saying so (not an
+    internal message); `elastica g2quad` of an open spline's JSON builds (it said "no
+    elastica curve"), of a closed one's exits 2 saying why."""
+    ring = el.elastic_spline([(0, 0), (10, 0), (12, 8), (3, 11), (-3, 5)], closed=True, tension=0.1)
+    with pytest.raises(ValueError, match="closed ElasticSpline has no ends"):
+        el.g2_quadratic(ring, 24)
+    for ducks, closed, code, said in ((CONVEX, False, 0, "G2 quadratic B-spline: 1 inflection-free"),
+                                      (ring.data, True, 2, "closed spline has no ends")):
+        f = tmp_path / "ducks.csv"
+        np.savetxt(f, ducks, delimiter=",")
+        extra = ["--closed", "--tension", "0.1"] if closed else ["--tension", "0"]
+        assert main(["spline", str(f), *extra, "--json", str(tmp_path / "sp.json")]) == 0
+        capsys.readouterr()
+        try:
+            rc = main(["g2quad", str(tmp_path / "sp.json"), "--edges", "48", "--json",
+                       str(tmp_path / "g.json")])
+        except SystemExit as exc:
+            rc = exc.code
+        out, err = capsys.readouterr()
+        assert rc == code and said in out + err, (out, err)
+    rec = json.loads((tmp_path / "g.json").read_text())
+    assert rec["covers_source"] and rec["pieces"] == 1
