@@ -159,12 +159,13 @@ class ElasticSpline(ValueEquality):
         return self._eval(n, "points", extrapolate)
 
     def curvature(self, n=200, extrapolate: bool = False) -> np.ndarray:
-        """Signed curvature at the same n arc lengths as :meth:`points` (or at arc lengths s)."""
+        """Signed curvature at the same n arc lengths as :meth:`points` (or at arc lengths s;
+        ``extrapolate`` as there)."""
         return self._eval(n, "curvature", extrapolate)
 
     def angle(self, n=200, extrapolate: bool = False) -> np.ndarray:
         """Tangent angle (rad, continuous) at the same n arc lengths as :meth:`points` (or
-        at arc lengths s)."""
+        at arc lengths s; ``extrapolate`` as there)."""
         return self._eval(n, "angle", extrapolate)
 
     def comb(self, n=200, scale: Optional[float] = None) -> np.ndarray:
