@@ -398,13 +398,22 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
             warnings.simplefilter("ignore", el.OrderWarning)     # _in_order says it
             warnings.simplefilter("ignore", el.MisfitWarning)    # _misfit says it
             warnings.simplefilter("ignore", el.SparseWarning)    # _warn_sparse_keyline says it
+            warnings.simplefilter("ignore", el.OutlierWarning)   # said below, the file's rows
             kres = el.fit_keyline(pts, r=args.step, **_fit_kwargs(args, fixed))
         _warn_sparse_keyline(path, kres, len(pts))
+        # the file's points far from the keyline (el.fit's rule), by their rows (QA23: the
+        # sides' "outliers" counted each side's own points, and nothing was said)
+        rows = [int(order[i]) if order is not None else int(i) for i in kres.outliers]
+        if rows:
+            from .misfit import outliers_summary
+            said = outliers_summary(kres.input_distances, list(kres.outliers), sorted(rows))
+            print(f"{PROG} fit: warning: {path} (keyline): {said}", file=sys.stderr)
         prep = kres.prepared
         plane = _plane_record(prep.frame)
         to_input = prep.to_input
         extra_info = {"input_rms": kres.input_rms, "input_max_error": kres.input_max_error,
                       "input_points": len(pts),
+                      "input_outliers": sorted(rows),     # the file's rows
                       "inflection_index": int(kres.inflection),
                       "inflection_point": kres.joint,
                       "step": prep.r, "coordinates": "x''y'' (PCA frame of the resampled polygon; frame2d "
@@ -470,7 +479,8 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
             if not args.keyline:
                 _by_file_row(rec, order)
         _warn_end_conditions(path, rec)
-        _warn_far_points(path, rec)
+        if "side" not in rec:       # a keyline's: said above, by the file's rows
+            _warn_far_points(path, rec)
         retrace = res.retrace if order is None and args.step is None else None
         if retrace is None or "side" in rec:    # (el.fit's order: the cause, said instead)
             _warn_wanders(path, rec, fitted_pts, order is None, gap)

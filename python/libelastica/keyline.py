@@ -42,7 +42,8 @@ class KeylineFit(ValueEquality):
     the keyline (``input_rms``, ``input_max_error``); ``misfit``: a :class:`libelastica.misfit.Misfit` where the
     input points lie far farther from it than their noise, else None; ``sparse``: a
     discrete keyline of few points far from them, the smooth keyline's input_rms
-    (SparseWarning), else None.
+    (SparseWarning), else None; ``outliers``: the input points far from the keyline
+    (el.fit's rule, OutlierWarning), counted from 0 in the input's order, () when none.
     """
     prepared: object
     inflection: int
@@ -68,6 +69,10 @@ class KeylineFit(ValueEquality):
     # a discrete keyline of fewer than SPARSE_POINTS points far farther from them than the
     # smooth keyline: the smooth keyline's input_rms (SparseWarning), else None
     sparse: Optional[float] = None
+    # the input points far from the keyline, standing apart from the others (el.fit's rule,
+    # far_points of input_distances: spikes): indices into the input points, in their order
+    # (a file's rows), as OutlierWarning.indices; () when none
+    outliers: tuple = ()
 
     def __repr__(self) -> str:
         """A summary (the arrays are the data's size: print them by name)."""
@@ -251,7 +256,7 @@ def _check_keyline_split(polygon, side_points, split: int, keyline_rms: Optional
 
 
 def fit_keyline(points, r: Optional[float] = None, model: str = "discrete", side: int = 0,
-                **kwargs) -> KeylineFit:
+                *, _inner: bool = False, **kwargs) -> KeylineFit:
     """Seed 000 §5 as one problem: plane fit (3D input), equilateral resampling with
     segment ``r`` (default None: the polyline through the medians of runs of the points,
     cut into KEYLINE_STEPS segments, prep.keyline_runs / keyline_step: noise-robust),
@@ -274,7 +279,10 @@ def fit_keyline(points, r: Optional[float] = None, model: str = "discrete", side
     (MisfitWarning, ``misfit``) where the points lie far farther from the keyline than their
     own noise (:func:`libelastica.misfit.misfit`: a corner, which no G2 joint fits), and
     (SparseWarning, ``sparse``) where a discrete keyline of fewer than SPARSE_POINTS points
-    lies far farther from them than the smooth keyline (:func:`smooth_fits_better`)."""
+    lies far farther from them than the smooth keyline (:func:`smooth_fits_better`),
+    (OutlierWarning, ``outliers``) where input points lie far from it, standing apart (el.fit's
+    rule: spikes), and (MisfitWarning) where a side's points show an inflection of their
+    own (a 3-piece profile; ``_inner``, private: that check's own fits, not checked again)."""
     from .prep import prepare_keyline
     if model not in ("discrete", "smooth"):
         raise ValueError(f"fit_keyline: model must be 'discrete' or 'smooth', got {model!r}")
@@ -357,6 +365,11 @@ def fit_keyline(points, r: Optional[float] = None, model: str = "discrete", side
     if m is not None:
         said = misfit_summary(m, what="one keyline (its joint is an inflection, G2)")
         warnings.warn(f"fit_keyline: {said}", MisfitWarning, stacklevel=2)
+    if m is None and not _inner and not kwargs.get("fixed"):   # (a corner: misfit said it)
+        _second_inflection(fits, local)
+    # spikes: el.fit's OutlierWarning, the input's own numbering (the sides' FitResults
+    # number their own points; QA23: a scan's 3 spikes were never said)
+    far = _input_outliers(local, inputs)
     sparse = None
     if model == "discrete":   # a polygon resampled from few points cuts their bends (QA17 W4)
         rms = float(np.sqrt(np.mean(inputs ** 2)))
@@ -372,7 +385,58 @@ def fit_keyline(points, r: Optional[float] = None, model: str = "discrete", side
     return KeylineFit(prepared=prep, inflection=infl, first=fits[0], second=fits[1],
                       inflection_estimate=i0, joint=prep.to_input(J), input_distances=inputs,
                       ends=None if ends is None else prep.to_input(ends), joint_local=J,
-                      ends_local=ends, misfit=m, sparse=sparse)
+                      ends_local=ends, misfit=m, sparse=sparse, outliers=far)
+
+
+def _second_inflection(fits, local) -> None:
+    """MisfitWarning where a side's points show an inflection of their own: a profile of 3
+    pieces, of which the keyline fits 2 (QA23: 4 of 20 three-piece mouldings, rms 1.8-3.3 x
+    the true curve's, were said nothing). A side is judged as misfit.split_hint judges few
+    points: its one elastica above SPLIT_RATIO x the points' noise level, and a keyline of
+    that side's points within SPLIT_GAIN x its rms (the discrete one, fitted to their
+    resampled polygon: the smooth one took 0.3-0.9 s of a side of 2000 points). ``local``: the input
+    points in x''y'', the side's joint named as the input point nearest it."""
+    from .misfit import SPLIT_GAIN, SPLIT_RATIO, noise_level
+    for c, f in enumerate(fits):
+        pts = np.ascontiguousarray(f.points)
+        if len(pts) < 4 * MIN_SIDE:
+            continue
+        try:
+            if not f.rms > SPLIT_RATIO * noise_level(pts):
+                continue
+            from .prep import prepare_keyline
+            prep = prepare_keyline(pts)           # (cheap: no inflection, no keyline fit)
+            i = prep.inflection
+            if i is None or min(i, len(prep.polygon) - 1 - i) < MIN_SIDE:
+                continue
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                kf = fit_keyline(pts, _inner=True)   # (discrete: a polygon of ~60 vertices)
+        except (ValueError, ArithmeticError, RuntimeError):
+            continue
+        if not kf.input_rms <= SPLIT_GAIN * f.rms:
+            continue
+        at = int(np.argmin(np.linalg.norm(local - np.asarray(kf.joint)[:2], axis=1)))
+        warnings.warn(MisfitWarning(
+            f"fit_keyline: the points show a second inflection, near input point {at} "
+            f"(counted from 0) on the {('first', 'second')[c]} side: two elasticae joined there "
+            f"fit that side's {len(pts)} points at rms {kf.input_rms:.3g}, the keyline's one "
+            f"at {f.rms:.3g}; a keyline fits 2 pieces, these points are 3: split them at "
+            f"point {at} and fit each part"), stacklevel=3)
+
+
+def _input_outliers(local, inputs) -> tuple:
+    """The input points far from the keyline (el.fit's rule: far_points of their distances
+    ``inputs``, ``local`` their x''y''), warned as el.fit warns them (OutlierWarning, the
+    points counted from 0 in the input's order); their indices. A spiky roof-tile scan
+    (QA23): fit warned points 26, 141, 698, fit_keyline nothing."""
+    from .fit import far_points
+    from .misfit import OutlierWarning, outliers_summary
+    far = tuple(int(i) for i in far_points(inputs, local))
+    if far:
+        warnings.warn(OutlierWarning("fit_keyline: " + outliers_summary(inputs, list(far)), far),
+                      stacklevel=3)
+    return far
 
 
 def _keyline_tails(halves, end_points):
