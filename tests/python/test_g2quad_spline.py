@@ -68,3 +68,37 @@ def test_a_closed_spline_is_refused_saying_why(capsys, tmp_path):
         assert rc == code and said in out + err, (out, err)
     rec = json.loads((tmp_path / "g.json").read_text())
     assert rec["covers_source"] and rec["pieces"] == 1
+
+
+def test_repeated_points_are_named_as_the_cause():
+    """Every point doubled: the DomainError listed "a straight piece, an inflection where
+    none is allowed, or too few edges" (none the cause); one doubled point gave a
+    CoverageError of a false inflection (QA23 F9). Now the repeats are named."""
+    c = el.SmoothElastica(x0=0, y0=0, phi=0.2, mu=1.0, k=0.6, q=0.4, length=1.5)
+    pts = c.points(400)
+    for doubled, named in ((np.repeat(pts, 2, axis=0), "400 point(s) repeat the one before (points 1, 3, 5"),
+                           (np.insert(pts, 100, pts[100], axis=0), "1 point(s) repeat the one before (points 101,")):
+        with pytest.raises(el.DomainError, match=r"drop the repeats") as e:
+            el.g2_quadratic(doubled, 12)
+        assert named in str(e.value)
+
+
+def test_exact_samples_of_a_straight_span_are_not_called_noisy():
+    """Samples (1000 a piece) of a batten with a straight middle span: "the points are too
+    noisy ... 848 sign changes" (QA23 F9); they change sign where the batten runs straight
+    (8.5e-9 rad a step), their evaluation's rounding above its bend. Now that is said."""
+    from pathlib import Path
+    ducks = np.loadtxt(Path(__file__).parent.parent / "data" / "waterline_midbody40.csv",
+                       delimiter=",", skiprows=1)
+    sp = el.elastic_spline(ducks, tension=0.0)
+    q = np.vstack([c.points(np.linspace(0, c.length, 1001))[:-1] for c in sp.pieces]
+                  + [sp.points(np.array([sp.length]))])
+    with pytest.raises(el.DomainError) as e:
+        el.g2_quadratic(q, 96)
+    said = str(e.value)
+    assert "too noisy" not in said and "run (nearly) straight from point" in said
+    a = int(said.split("straight from point ")[1].split()[0])
+    b = int(said.split("straight from point ")[1].split()[2])
+    s = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(q, axis=0).T))])
+    flat = sp.curvature(s[a:b + 1])
+    assert np.max(np.abs(flat)) < 1e-3 * np.max(np.abs(sp.curvature(2001)))
