@@ -621,8 +621,8 @@ class BlendProxy(FeatureProxy):
         new_problem, self._new_problem = getattr(self, "_new_problem", False), False
         value_only, self._value_only = getattr(self, "_value_only", True), True
         picked, self._picked = getattr(self, "_picked", False), False
-        if new_problem and value_only:
-            j = self._kept_shown(obj, curves)
+        if new_problem and value_only and not bound_expression(obj, "Solution"):
+            j = self._kept_shown(obj, curves)           # (bound: its expression alone sets it)
             if j is not None:
                 self.set_solution(obj, j + 1)
                 return j, False, False
