@@ -76,3 +76,31 @@ class BlendG2StartTest(S.DocTest):
         self.set("Continuity", "G2")
         self.assertEqual((b.Mode, float(b.Length)), ("length", 70.0))
         self.assertIn("error: no G2 blend of length 70 mm", b.Status)
+
+    def test_g1_after_another_edit_drops_the_g2_note(self):
+        """It was: G2 started at 115 mm, another edit (the tolerance: G1 no longer returns to
+        the command's length), then G1: the blend is G1 at 115 mm and the warning line still
+        said '... G2 solved for 115 mm ...; back to G1, 69.1 mm again' (revB's review of
+        QA23gui F4's fix)."""
+        b = self.b
+        self.set("Continuity", "G2")
+        self.assertEqual(float(b.Length), 115.0)
+        self.set("Tolerance", float(b.Tolerance) / 2)
+        self.set("Continuity", "G1")
+        self.assertEqual((b.Continuity, float(b.Length)), ("G1", 115.0))
+        self.assertEqual(self.panel.note, "")
+        self.assertEqual(P.saved_note(b), "")           # nor on the next panel
+
+    def test_g1_in_a_reopened_panel_drops_the_g2_note(self):
+        """The same where the panel was closed at G2 and opened again (its saved note)."""
+        b = self.b
+        self.set("Continuity", "G2")
+        self.assertEqual(float(b.Length), 115.0)
+        p = self.panel = T.BlendPanel.__new__(T.BlendPanel)       # the next panel
+        p.obj, p.doc, p.picked = b, self.doc, None
+        p.refresh = p.refit = p.show_mode = p.hold = lambda: None
+        p._note, p._note_for = P.saved_note(b), P.note_values(b)
+        self.assertIn("G2 solved for 115 mm", say(p.note))
+        self.set("Continuity", "G1")
+        self.assertEqual((b.Continuity, float(b.Length)), ("G1", 115.0))
+        self.assertEqual(p.note, "")

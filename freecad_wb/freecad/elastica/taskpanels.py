@@ -338,6 +338,7 @@ class BlendPanel(Panel):
 
     auto = None         # the length the command or the panel chose (no free batten), if shown
     g2_from = None      # (auto, note) where G2 left the command's length (G1 restores them)
+    G2_STARTED = "G2 solved for "       # g2_started's note: G2's start, no G1 note
 
     def continuity_changed(self):
         """G2 asked at the length the command chose (``auto``: no free G1 batten joins the
@@ -345,7 +346,8 @@ class BlendPanel(Panel):
         batten, else the fairest length a G2 blend is found at (blend_start.g2_start), said
         on the warning line, before the error (QA23gui F4: line -> arc R25, the command's
         69.1 mm, G2 refused 'no G2 blend of length 69.1 mm ... found at 92.2, 115, ...').
-        Back to G1 before anything else changed: the command's length again."""
+        Back to G1 before anything else changed: the command's length again; else G2's note
+        dropped (G1 at G2's length: its words are false)."""
         o = self.obj
         if self.expression("Mode") or self.expression("Length") or self.expression("Tension"):
             return                      # the expressions decide the values
@@ -357,6 +359,8 @@ class BlendPanel(Panel):
             o.Mode, o.Length = "length", self.auto
             self.note = note
             self.show_mode()
+        elif o.Continuity == "G1" and self.G2_STARTED in self.note:
+            self.note = ""              # g2_started's words, false at G1 (another edit came first)
 
     def g2_started(self):
         """After G2's solve at the command's length (continuity_changed): where it failed,
@@ -381,7 +385,7 @@ class BlendPanel(Panel):
             which = (f"{length_mark(start[1], 4)}, the fairest length a G2 blend was found "
                      "at (not pushed together, fewest inflections)")
         self.note = (f"No free G1 batten joins these ends and no G2 blend of the command's "
-                     f"length {length_mark(auto, 4)} was found: G2 solved for {which}; "
+                     f"length {length_mark(auto, 4)} was found: {self.G2_STARTED}{which}; "
                      f"back to G1, {length_mark(auto, 4)} again")
         self.show_mode()
         return True
