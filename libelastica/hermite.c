@@ -537,6 +537,7 @@ int el__hermite_solve_limited(const double p0[2], const double t0[2], const doub
         if (c3 == EL_EMAXITER) status = EL_EMAXITER;   /* the case-3 curves' search incomplete */
     }
     /* between tangents along the chord, the separatrix loops the roots cannot see (hermite_chord.c) */
+    const size_t nroot_unrep = nunrep;   /* (the chord loops' from here on) */
     if (el__hermite_chord_loops(&fr, &pr, opt, &sol, &n, &cap, unrep, &nunrep)) {
         if (unrep != ubuf) free(unrep);
         return EL_ENOMEM;
@@ -548,16 +549,28 @@ int el__hermite_solve_limited(const double p0[2], const double t0[2], const doub
     /* each unrepresentable curve once, and not when another root of it was representable */
     for (size_t i = 0; i < nunrep; i++) {
         int dup = 0;
+        /* a chord loop's (hermite_chord.c: the closed form) against the list completed by the
+         * images: the tracer's chain of one side, its mirror added by el__hermite_add_images
+         * after the chord loops were counted (L 1.1 |p1 - p0| at a = -2.5, d = 1e-3: the other
+         * side counted beside its returned chain) */
         for (size_t j = 0; j < n && !dup; j++)
-            dup = el__hermite_same_solution(&unrep[i], &sol[j], fr.d);
+            dup = i >= nroot_unrep ? el__hermite_same_loop(&unrep[i], &sol[j], fr.d)
+                                   : el__hermite_same_solution(&unrep[i], &sol[j], fr.d);
         /* the near-straight root's: the one near-straight curve (the linear beam's is unique),
          * returned by the roots as one piece, where its own representation (a chain whose
          * pieces' phi disagree, hermite_chain.c) was refused: its length (the root's, exact)
          * tells it, not its end curvatures (the refused chain's) */
         for (size_t j = 0; j < n && !dup && i == near_u; j++)
             dup = fabs(sol[j].length - unrep[i].length) <= 1e-6 * fr.d;
+        /* (one curve's two representations: a root's, its end curvatures the rounding of its
+         * far tails, and the chord loops' closed form that replaced another root's entry: L 1.113
+         * |p1 - p0| on the chord, both loops counted besides a root's ccw one, 3 for 2); not
+         * across the separatrix (|k| above 1 and below: two loops of one sense or of both, the
+         * same length and energy to 1e-7 at sigma d^2 33 331) */
         for (size_t j = 0; j < i && !dup; j++)
-            dup = el__hermite_same_solution(&unrep[i], &unrep[j], fr.d);
+            dup = el__hermite_same_solution(&unrep[i], &unrep[j], fr.d) ||
+                  (el__hermite_same_loop(&unrep[i], &unrep[j], fr.d) &&
+                   !((fabs(unrep[i].curve.k) - 1.0) * (fabs(unrep[j].curve.k) - 1.0) < 0.0));
         nu += !dup;
     }
     if (unrep != ubuf) free(unrep);

@@ -33,10 +33,10 @@
  * By length (hermite_length.c's tracing missed them below ~1.1 |p1 - p0|) the same closed form
  * gives L(t) = 2 K / (k sqrt(mu)), one equation in t for the given length (chord_loops_length,
  * below), each root's loop and mirror kept the same way.
- * Not covered: by length, the loops that no single piece carries to tol, where k - 1 lies below
- * an ulp but the tails e^-(sqrt(mu) L / 2) above tol (sqrt(mu) |p1 - p0| ~ 25 .. 45: L ~ 1.09 ..
- * 1.16 |p1 - p0|; the closed form's residual 1e-9 at tol 1e-10: neither kept nor counted), the
- * two-loop chains (one period of an inflectional elastica), and on data moved off the chord the
+ * By length too, a loop no piece meets to tol (k - 1 below an ulp, the tails e^-(sqrt(mu) L / 2)
+ * above tol: sqrt(mu) |p1 - p0| ~ 25 .. 45, L ~ 1.09 .. 1.16 |p1 - p0|) is counted
+ * unrepresentable unless the tracer returned it (as a chain).
+ * Not covered: the two-loop chains (one period of an inflectional elastica), and on data moved off the chord the
  * loop that slides off centre beyond the polish's reach (p1 or t1 moved by 1e-12 .. 1e-2 by
  * tension, 1e-10 .. 1e-2 by length: one of the pair found in about half of the problems, as before).
  */
@@ -51,6 +51,9 @@
 
 /* how far from P1 = V1 = 0 the symmetric problem's loops are tried as starts */
 #define CHORD_NEAR 1e-2
+/* data on the chord to rounding: |P1|, |V1| up to ~1e-12 where p0 lies 3000 |p1 - p0| from the
+ * origin (the rounding of p1 - p0) */
+#define CHORD_EXACT 1e-11
 /* t = ln mc searched over [T_LO, T_HI]: mc from 1e-300 (sigma |p1 - p0|^2 ~ 1e6) to 0.99; sigma
  * falls with mc (sigma |p1 - p0|^2 = 23.8 at mc = 0.01, 0.31 at 0.5, 0.16 at 0.6), down to 0 at
  * the circle's limit mc -> 1 (k -> infinity), where sqrt(mu) cancels (4 k (K - E) ~ k m): the
@@ -126,11 +129,12 @@ static int loop_solution(const hframe *fr, double sigma, double t, int side, el_
     return rc;
 }
 static int chord_loops_length(const hframe *fr, const hprob *pr, const el_hermite_options *opt,
-                              el_hermite_solution **sol, size_t *n, size_t *cap);
+                              el_hermite_solution **sol, size_t *n, size_t *cap,
+                              el_hermite_solution *unrep, size_t *nunrep);
 /* a and b the same loop: el__hermite_same_solution, or (a representation of it the roots gave,
  * whose end curvatures are its far tails' rounding: a chain's kappa0 2.9e-6 where the loop's is
  * 1.7e-7 at a = 0.3, off (3000, -2100) d, sigma d^2 2773) the same length, energy and sense */
-static int same_loop(const el_hermite_solution *a, const el_hermite_solution *b, double d)
+int el__hermite_same_loop(const el_hermite_solution *a, const el_hermite_solution *b, double d)
 {
     return el__hermite_same_solution(a, b, d) ||
            (fabs(a->length - b->length) <= 1e-7 * (a->length + b->length) &&
@@ -159,7 +163,7 @@ int el__hermite_chord_loops(const hframe *fr, const hprob *pr, const el_hermite_
                             el_hermite_solution **sol, size_t *n, size_t *cap,
                             el_hermite_solution *unrep, size_t *nunrep)
 {
-    if (opt->mode == EL_HERMITE_LENGTH) return chord_loops_length(fr, pr, opt, sol, n, cap);
+    if (opt->mode == EL_HERMITE_LENGTH) return chord_loops_length(fr, pr, opt, sol, n, cap, unrep, nunrep);
     if (opt->mode != EL_HERMITE_TENSION || !(pr->sigma > 0.0) || !(fabs(pr->P1) <= CHORD_NEAR) ||
         !(fabs(pr->V1) <= CHORD_NEAR) || !(pr->P2 > 0.0) || !(pr->V2 > 0.0))
         return EL_OK;
@@ -201,10 +205,10 @@ int el__hermite_chord_loops(const hframe *fr, const hprob *pr, const el_hermite_
                          * representation counted already (its chain not met: residual 0.11,
                          * kappa0 twice the loop's, at a = 0.3, off (3000, -2100) d, sigma d^2 2476) */
                         int kept = 0;
-                        for (size_t j = 0; j < *n && !kept; j++) kept = same_loop(&x, &(*sol)[j], fr->d);
+                        for (size_t j = 0; j < *n && !kept; j++) kept = el__hermite_same_loop(&x, &(*sol)[j], fr->d);
                         if (kept) continue;
                         size_t j = 0;
-                        while (j < *nunrep && !same_loop(&x, &unrep[j], fr->d)) j++;
+                        while (j < *nunrep && !el__hermite_same_loop(&x, &unrep[j], fr->d)) j++;
                         unrep[j] = x;
                         if (j == *nunrep) { (*nunrep)++; counted++; }
                         continue;
@@ -213,7 +217,7 @@ int el__hermite_chord_loops(const hframe *fr, const hprob *pr, const el_hermite_
                      * becomes this loop, which hermite.c finds returned (the roots' piece at
                      * residual 0.086 beside both loops at a = -2.5, d = 1e-3, sigma d^2 4363) */
                     for (size_t j = 0; j < *nunrep; j++)
-                        if (same_loop(&x, &unrep[j], fr->d)) unrep[j] = x;
+                        if (el__hermite_same_loop(&x, &unrep[j], fr->d)) unrep[j] = x;
                     /* the exact loop replaces a representation of it the roots gave (a chain or
                      * a piece whose loop the rounding of its phase moved off centre), whatever
                      * their residuals: the roots' piece can meet the ends better with its loop
@@ -259,9 +263,17 @@ static double length_gap(double t, void *p)
  * phi, mu, k, q move, L stays), kept at residual <= tol, still turning 2 pi, sqrt(mu) within
  * 1e-2 of the closed form's (not slid onto another curve) and within one period; a curve of
  * the list that is the same (el__hermite_same_solution: the tracer's representation of the
- * loop, found above ~1.1 |p1 - p0|) is replaced by it, as by tension. */
-static int keep_length_loop(const hframe *fr, const el_hermite_options *opt, double t, int side,
-                            el_hermite_solution **sol, size_t *n, size_t *cap)
+ * loop, found above ~1.1 |p1 - p0|) is replaced by it, as by tension. Where no piece meets tol
+ * only by the rounding of k (sqrt(mu) |p1 - p0| ~ 25 .. 45, L ~ 1.09 .. 1.16 |p1 - p0|: k - 1
+ * below an ulp, the tails e^-(sqrt(mu) L / 2) above tol; the closed form's residual ~1e-9 at
+ * tol 1e-10, <= 1e3 eps / k' as by tension) and the data are on the chord to rounding
+ * (|P1|, |V1| <= CHORD_EXACT), the loop is counted unrepresentable (unrep, once per side) unless
+ * the list holds it (the tracer's chain, found from ~1.125 |p1 - p0| on).
+ * hermite_chain.c cannot carry it: its pieces split at a saddle inside the curve, and this
+ * loop's saddles are its ends. */
+static int keep_length_loop(const hframe *fr, const hprob *pr, const el_hermite_options *opt, double t, int side,
+                            el_hermite_solution **sol, size_t *n, size_t *cap,
+                            el_hermite_solution *unrep, size_t *nunrep)
 {
     whole_loop w;
     el_hermite_solution x;
@@ -275,8 +287,25 @@ static int keep_length_loop(const hframe *fr, const el_hermite_options *opt, dou
     x.kappa1 = kappa[1];
     if (el__hermite_residual(fr, &x, &x.residual)) return EL_OK;
     const el_smooth_params c0 = x.curve;
+    const el_hermite_solution closed = x;
     if (x.residual > opt->tol && el__hermite_polish_to(fr, EL_HERMITE_LENGTH, opt->length, opt->tol, &x))
+        x.residual = INFINITY;
+    if (!(x.residual <= opt->tol)) {
+        /* only on the chord to rounding (the closed form's curve then is the data's, met to
+         * its residual ~1e-9): off it by more the loop slides off centre, another curve, which
+         * this one does not stand for (make hermite-sets set 7, moves 1e-8 .. 1e-2: counted
+         * beside the tracer's own) */
+        if (!(closed.residual <= 1e3 * DBL_EPSILON / exp(0.5 * t)) || !(fabs(pr->P1) <= CHORD_EXACT) ||
+            !(fabs(pr->V1) <= CHORD_EXACT))
+            return EL_OK;
+        for (size_t j = 0; j < *n; j++)
+            if (el__hermite_same_loop(&closed, &(*sol)[j], fr->d)) return EL_OK;
+        size_t j = 0;
+        while (j < *nunrep && !el__hermite_same_loop(&closed, &unrep[j], fr->d)) j++;
+        unrep[j] = closed;
+        if (j == *nunrep) (*nunrep)++;
         return EL_OK;
+    }
     const int moved = memcmp(&c0, &x.curve, sizeof c0) != 0;
     double th[2];
     if (!(x.residual <= opt->tol) || !(fabs(sqrt(x.curve.mu) - sqrt(c0.mu)) <= 1e-2 * sqrt(c0.mu)) ||
@@ -284,6 +313,10 @@ static int keep_length_loop(const hframe *fr, const el_hermite_options *opt, dou
         el_smooth_eval(&x.curve, 2, ends, NULL, th, NULL) ||
         !(fabs(fabs(th[1] - th[0]) - 2.0 * M_PI) <= 1e-3))
         return EL_OK;
+    /* a root's representation of it counted unrepresentable becomes this loop (hermite.c then
+     * finds it returned), as by tension */
+    for (size_t j = 0; j < *nunrep; j++)
+        if (el__hermite_same_loop(&x, &unrep[j], fr->d)) unrep[j] = x;
     for (size_t j = 0; j < *n; j++)
         if (el__hermite_same_solution(&x, &(*sol)[j], fr->d)) {
             (*sol)[j] = x;
@@ -311,7 +344,8 @@ static int keep_length_loop(const hframe *fr, const el_hermite_options *opt, dou
  * EL_HERMITE_SIGMA_D2_MAX) and above 796 (the x chart's large loops, which the tracer follows)
  * are not looked for here. */
 static int chord_loops_length(const hframe *fr, const hprob *pr, const el_hermite_options *opt,
-                              el_hermite_solution **sol, size_t *n, size_t *cap)
+                              el_hermite_solution **sol, size_t *n, size_t *cap,
+                              el_hermite_solution *unrep, size_t *nunrep)
 {
     const double Ln = opt->length / fr->d;
     if (!(Ln > 1.0) || !(fabs(pr->P1) <= CHORD_NEAR) || !(fabs(pr->V1) <= CHORD_NEAR) || !(pr->P2 > 0.0) ||
@@ -328,6 +362,6 @@ static int chord_loops_length(const hframe *fr, const hprob *pr, const el_hermit
     gsl_root_fsolver_free(s);
     int rc = EL_OK;
     for (int side = 1; side >= -1 && !rc && isfinite(root); side -= 2)
-        rc = keep_length_loop(fr, opt, root, side, sol, n, cap);
+        rc = keep_length_loop(fr, pr, opt, root, side, sol, n, cap, unrep, nunrep);
     return rc;
 }

@@ -290,6 +290,10 @@ int el__hermite_add_images(const hframe *fr, const el_hermite_options *opt, doub
 int el__hermite_chord_loops(const hframe *fr, const hprob *pr, const el_hermite_options *opt,
                             el_hermite_solution **sol, size_t *n, size_t *cap,
                             el_hermite_solution *unrep, size_t *nunrep);
+/* hermite_chord.c: a and b the same chord loop: el__hermite_same_solution, or the same length,
+ * energy (1e-7) and sense (a representation of it whose end curvatures are its far tails'
+ * rounding: a chain beside the closed form) */
+int el__hermite_same_loop(const el_hermite_solution *a, const el_hermite_solution *b, double d);
 int el__hermite_near_case3(const hframe *fr, const double u0[2], const hprob *pr,
                            const el_hermite_options *opt, long max_evals, el_hermite_solution **sol,
                            size_t *n, size_t *cap);

@@ -225,6 +225,44 @@ START_TEST(loops_at_every_tension_are_returned_or_counted)
 }
 END_TEST
 
+/* By length, exact tangents along the chord at L in 1.085 .. 1.17 |p1 - p0|: the loops of the
+ * closed form whose k - 1 lies below an ulp there (sqrt(mu) |p1 - p0| ~ 25 .. 45) and whose tails
+ * e^-(sqrt(mu) L / 2) stay above tol, so that no single piece meets tol 1e-10 (the closed form's
+ * residual ~1e-9): both loops are returned (the tracer's chains, from ~1.125 on) or counted in
+ * res.unrepresentable, besides the two buckled curves one period long (hermite_symmetry.c).
+ * They were dropped and not counted from 1.09 to 1.12 (a 0, d 1: 2 solutions, unrepresentable 0,
+ * or 1 at 1.115 and 1.12: the roots' own count, of one of them). */
+START_TEST(loops_at_every_length_are_returned_or_counted)
+{
+    const double angles[] = {0.0, 0.3, M_PI / 2, 2.0, -2.5}, scales[] = {1e-3, 1.0, 1e3};
+    for (size_t ia = 0; ia < 5; ia++)
+        for (size_t is = 0; is < 3; is++)
+            for (int off = 0; off < 2; off++)
+                for (int iL = 0; iL <= 17; iL++) {
+                    const double Ln = 1.085 + 0.005 * iL;
+                    const double d = scales[is], t[2] = {cos(angles[ia]), sin(angles[ia])};
+                    const double p0[2] = {off * 3000.0 * d, off * -2100.0 * d};
+                    const double p1[2] = {p0[0] + d * t[0], p0[1] + d * t[1]};
+                    el_hermite_options o;
+                    el_hermite_options_defaults(&o);
+                    o.mode = EL_HERMITE_LENGTH;
+                    o.length = Ln * d;
+                    el_hermite_result r;
+                    ck_assert_int_eq(el_hermite_solve(p0, t, p1, t, &o, &r), EL_OK);
+                    check_result(p0, t, p1, t, &r, o.tol);
+                    size_t loops = 0;
+                    for (size_t j = 0; j < r.count; j++) {
+                        double peak;
+                        loops += fabs(fabs(turning_of(&r.solutions[j], &peak)) - 2.0 * M_PI) <= 1e-6;
+                    }
+                    ck_assert_msg(r.count - loops == 2 && loops + r.unrepresentable == 2,
+                                  "a %g d %g off %d L %g d: %zu solutions (%zu loops) + %zu unrepresentable",
+                                  angles[ia], d, off, Ln, r.count, loops, r.unrepresentable);
+                    el_hermite_result_free(&r);
+                }
+}
+END_TEST
+
 /* el__hermite_same_solution on a chain and its mirror image in the chord (hermite.c: the chain
  * branch). A separatrix loop (k = 1, mu = 1, u from -22 to 22) split at u = -18, before its loop:
  * the first pieces of the chain and of its mirror turn alike (by ~1e-7 rad), the end curvatures
@@ -292,6 +330,7 @@ int main(void)
     tcase_add_test(tc, loops_between_tangents_along_the_chord_by_tension);
     tcase_add_test(tc, loops_between_tangents_along_the_chord_by_length);
     tcase_add_test(tc, loops_at_every_tension_are_returned_or_counted);
+    tcase_add_test(tc, loops_at_every_length_are_returned_or_counted);
     tcase_add_test(tc, a_chain_and_its_mirror_image_are_two_solutions);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
