@@ -255,8 +255,9 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
     coordinates), 'bspline', 'placement', 'forces' (duck_forces), 'notes'.
     ``advise`` False: no cautions for a batten that loops or is unstable (batten_cautions:
     the ladder's solves), for starting_tension's rungs, which say them once chosen.
-    ``shown``: (Curves JSON, length, tension, switched) of the spline on screen, kept by
-    tension mode where it passes these points at this tension (kept_shown). Raises
+    ``shown``: (Curves JSON, length, tension, switched, kept) of the spline on screen, kept
+    by tension mode where it passes these points at this tension (kept_shown); 'kept' in the
+    result: the spline is a kept one, not the library's own (KeptShown). Raises
     InputProblem with a user message."""
     n = np()
     if mode not in MODES:
@@ -347,6 +348,7 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
     if note:
         notes.append(note)
     lost = ""
+    own = sp
     if mode == "tension" and shown and not closed:
         sp, note, lost = kept_shown(xy, value, specs, sp, *shown)
         if note:
@@ -369,10 +371,12 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
         raise InputProblem(f"B-spline: {_library_message(exc)}") from None
     seams = [(j, c["seam"], c["direction"]) for j, c in enumerate(ends) if c and "seam" in c]
     return {"spline": sp, "bspline": bs, "placement": plane, "forces": duck_forces(sp),
-            "notes": notes, "warnings": cautions, "seams": seams, "lost": lost}
+            "notes": notes, "warnings": cautions, "seams": seams, "lost": lost,
+            "kept": sp is not own}
 
 
-def kept_shown(xy, tension, specs, sp, curves, length, shown_tension, switched=False):
+def kept_shown(xy, tension, specs, sp, curves, length, shown_tension, switched=False,
+               kept=False):
     """(spline, note, lost) for tension mode given the spline on screen (``curves``: its Curves
     JSON, ``length``, ``shown_tension``), as a switch of Solve for promises (QA23gui F2):
     the library's own start may reach another spline of the same tension (ducks by length
@@ -383,7 +387,8 @@ def kept_shown(xy, tension, specs, sp, curves, length, shown_tension, switched=F
     (note and lost, the report view says it too). Where the solve from the shown pieces does
     not reach it again right after a switch of Solve for (``switched``), that is said too;
     else ``sp`` and no note: the shown curve was another problem's (other ducks, another
-    tension typed, other end conditions) or the solve found it anyway."""
+    tension typed, other end conditions) or the solve found it anyway. Where the shown
+    spline was a kept one (``kept``: KeptShown) and only the ducks moved, followed_kept."""
     e = el()
     if not curves or abs(float(sp.length) - length) <= 1e-9 * length:
         return sp, "", ""
@@ -393,9 +398,12 @@ def kept_shown(xy, tension, specs, sp, curves, length, shown_tension, switched=F
     except ValueError:
         return sp, "", ""
     extent = float(np().max(np().abs(xy))) + 1.0
-    if len(pieces) != len(xy) - 1 or any(
-            math.hypot(p.x0 - x, p.y0 - y) > 1e-9 * extent for p, (x, y) in zip(pieces, xy)):
+    if len(pieces) != len(xy) - 1:
         return sp, "", ""                   # other ducks: not this problem's curve
+    if any(math.hypot(p.x0 - x, p.y0 - y) > 1e-9 * extent for p, (x, y) in zip(pieces, xy)):
+        if not kept or shown_tension != tension:
+            return sp, "", ""               # a drag of the library's own: no extra solve
+        return followed_kept(xy, tension, specs, sp, length)
     if shown_tension < 0.0:
         lost = (f"the spline shown by length ({length_mark(length, 6)}) was pushed together "
                 f"(tension {tension_mark(shown_tension, length, 3)}): a tension is >= 0, so "
@@ -422,6 +430,34 @@ def kept_shown(xy, tension, specs, sp, curves, length, shown_tension, switched=F
     return kept, (f"the spline shown kept ({length_mark(kept.length, 6)}), though another "
                   f"spline of this tension through the points is {length_mark(sp.length, 6)} "
                   "long"), ""
+
+
+def followed_kept(xy, tension, specs, sp, length):
+    """(spline, note, lost) where a kept spline's ducks moved (revB F2: a 0.01 mm nudge
+    jumped 272.104 -> 225.578 mm, 'ok'): continuation, by the shown length through the new
+    ducks (that branch: tension near the kept one's), then at the tension from its pieces;
+    the 0.01 / 0.5 / 2 / 10 mm nudges of the QA's duck 5 give 272.10 / 271.87 / 271.21 /
+    278.02 mm. Where either solve fails, the library's own (``sp``) is shown and said."""
+    e = el()
+    try:
+        with warnings.catch_warnings():   # a looping or unstable spline: noted by spline_core
+            warnings.simplefilter("ignore", e.LoopWarning)
+            warnings.simplefilter("ignore", e.UnstableWarning)
+            by_length = e.elastic_spline(xy, length=length, start=specs[0], end=specs[1])
+            kept = e.elastic_spline(xy, tension=tension, start=specs[0], end=specs[1],
+                                    initial=by_length.pieces)
+    except (ValueError, ArithmeticError, RuntimeError, e.ElasticaError) as exc:
+        lost = (f"the spline kept at the switch of Solve for ({length_mark(length, 6)}) "
+                f"could not be followed to the moved points ({_library_message(exc)}), so "
+                f"another spline of this tension through them is shown, "
+                f"{length_mark(sp.length, 6)} long (Solve for a length keeps a length)")
+        return sp, lost, lost
+    if abs(float(kept.length) - float(sp.length)) <= 1e-6 * float(sp.length):
+        return sp, "", ""                   # the two branches met: the library's own
+    return kept, (f"the spline kept at the switch of Solve for followed to the moved points "
+                  f"({length_mark(length, 6)} -> {length_mark(kept.length, 6)}), though "
+                  f"another spline of this tension through them is "
+                  f"{length_mark(sp.length, 6)} long"), ""
 
 
 def batten_cautions(sp, mode):
@@ -623,6 +659,10 @@ class SplineProxy(FeatureProxy):
         add_property(obj, "App::PropertyString", "Curves", "Result",
                      "The spline's pieces (JSON, plane coordinates)")
         add_property(obj, "App::PropertyPlacement", "Plane", "Result", "The plane of the spline")
+        add_property(obj, "App::PropertyBool", "KeptShown", "Result",
+                     "The spline shown is one a switch of Solve for kept, not the library's "
+                     "own of this tension: a duck move follows it (followed_kept)", False)
+        obj.setEditorMode("KeptShown", 2)
         read_only(obj, "SplineLength", "SplineTension", "Energy", "MaxCurvature",
                   "BSplineDeviation", "Ducks", "DuckForces", "GuideDucks", "GuideForces",
                   "Poles", "Status", "Warnings", "Curves", "Plane")
@@ -654,7 +694,8 @@ class SplineProxy(FeatureProxy):
         followed = self.follow_source(obj, pts)
         try:
             switched, self._switched = getattr(self, "_switched", False), False
-            shown = (obj.Curves, float(obj.SplineLength), float(obj.SplineTension), switched) \
+            shown = (obj.Curves, float(obj.SplineLength), float(obj.SplineTension), switched,
+                     obj.KeptShown) \
                 if obj.Ducks and not obj.Status.startswith("error") else None
             r = self.handed(spline_core, pts, plane, obj.Mode, obj.Tension, float(obj.Length),
                             obj.Closed, *self.end_specs(obj), tol=float(obj.Tolerance),
@@ -711,6 +752,7 @@ class SplineProxy(FeatureProxy):
                           for x, y in r["forces"]]
         obj.Poles = int(bs.npoles)
         obj.Plane = plc
+        obj.KeptShown = r.get("kept", False)
         curve_to_dict = binding_module("io").curve_to_dict
         obj.Curves = json.dumps([curve_to_dict(c) for c in sp.pieces])
         cautions = r["warnings"]          # marked (units.say): said again in a panel

@@ -1,0 +1,88 @@
+"""freecadcmd -t tests of a spline kept by a switch of 'Solve for' when a duck moves next
+(revB F2): it was kept only while the ducks were bit-identical, so a 0.01 mm nudge of duck 5
+showed the library's own 225.578 mm spline instead of the 272.104 mm one, Status 'ok',
+nothing in the report view, and moving the duck back kept 225.578 mm. Now the kept spline
+is followed (KeptShown, saved), or Status and the report view say why not."""
+import FreeCAD as App
+
+import elastica_samples as S
+from freecad.elastica import spline as Sp
+from freecad.elastica import taskpanels as T
+from test_elastica_mode_switch import DUCKS, switch
+
+
+def nudge(sk, i, dx):
+    sk.movePoint(i, 1, sk.getPoint(i, 1) + App.Vector(dx, 0, 0))
+    sk.Document.recompute()
+
+
+class SplineKeptNudgeTest(S.DocTest):
+    doc_name = "ElasticaSplineKeptNudgeTest"
+
+    def kept(self):
+        sk = S.points_sketch(self.doc, DUCKS)
+        s = Sp.make(self.doc, [(sk, [])], Mode="length", Length=272.104)
+        self.doc.recompute()
+        switch(T.SplinePanel, s, "tension")
+        self.assertAlmostEqual(s.SplineLength, 272.104, delta=1e-6 * 272.104)
+        self.assertTrue(s.KeptShown)
+        return sk, s
+
+    def test_a_nudged_duck_follows_the_kept_spline(self):
+        sk, s = self.kept()
+        tension = float(s.Tension)
+        said, _ = S.console_output(lambda: nudge(sk, 5, 0.01))
+        self.assertEqual(float(s.Tension), tension)
+        self.assertAlmostEqual(s.SplineTension, tension, delta=1e-12)
+        self.assertAlmostEqual(s.SplineLength, 272.104, delta=0.05)
+        self.assertIn("the spline kept at the switch of Solve for followed to the moved points "
+                      "(272.104 mm -> 272.", s.Status)
+        self.assertIn("another spline of this tension through them is 225.5", s.Status)
+        self.assertTrue(s.KeptShown)
+        # back where it was: the same curve as before the nudge
+        nudge(sk, 5, -0.01)
+        self.assertAlmostEqual(s.SplineLength, 272.104, delta=1e-6 * 272.104)
+        # a larger move, and the file reopened: still followed (KeptShown is saved)
+        nudge(sk, 5, 2.0)
+        self.assertAlmostEqual(s.SplineLength, 271.21, delta=0.05)
+        s, sk = S.reopened(self, "nudge.FCStd", s.Name, sk.Name)
+        self.assertTrue(s.KeptShown)
+        nudge(sk, 5, -2.0)
+        self.assertAlmostEqual(s.SplineLength, 272.104, delta=1e-6 * 272.104)
+
+    def test_a_kept_spline_not_followed_is_said(self):
+        """The by-length solve on the moved ducks refused (a stand-in): the library's own is
+        shown, and Status and the report view say so; KeptShown is cleared."""
+        from freecad.elastica import geometry as G
+        sk, s = self.kept()
+        e = G.el()
+        solve = e.elastic_spline
+
+        def refused_by_length(*args, **kw):
+            if kw.get("length") is not None:
+                raise e.NotConvergedError(e.lib.EL_ENOCONV if hasattr(e, "lib") else 3,
+                                          "elastic_spline: no convergence (stand-in)")
+            return solve(*args, **kw)
+        e.elastic_spline = refused_by_length
+        self.addCleanup(setattr, e, "elastic_spline", solve)
+        said, _ = S.console_output(lambda: nudge(sk, 5, 0.01))
+        self.assertAlmostEqual(s.SplineLength, 225.58, delta=0.05)
+        words = "the spline kept at the switch of Solve for (272.104 mm) could not be followed"
+        self.assertIn(words, s.Status)
+        self.assertIn(words, said)
+        self.assertFalse(s.KeptShown)
+
+    def test_a_drag_of_the_librarys_own_spline_is_a_fresh_solve(self):
+        """A tension-mode spline never switched: each drag gives what a new spline at those
+        ducks gives (no continuation from the shown one), KeptShown stays off."""
+        sk = S.points_sketch(self.doc, DUCKS)
+        s = Sp.make(self.doc, [(sk, [])], Mode="tension", Tension=6.2555e-4)
+        self.doc.recompute()
+        for dx in (0.01, 0.5, 2.0, 10.0):
+            nudge(sk, 5, dx)
+            fresh = Sp.make(self.doc, [(sk, [])], Mode="tension", Tension=6.2555e-4)
+            self.doc.recompute()
+            self.assertFalse(s.KeptShown)
+            self.assertEqual(s.Curves, fresh.Curves, dx)
+            self.assertEqual(s.Status, fresh.Status, dx)
+            self.doc.removeObject(fresh.Name)
