@@ -32,10 +32,33 @@ def _end_state(b, at_end):
 
 
 def _brute(points, polyline):
-    """The nearest feet trying every segment for every point (closest_points before)."""
+    """The nearest feet trying every segment for every point (closest_points before): each
+    foot a + t d, t = <p - a, d> / |d|^2 clipped to [0, 1], the first segment of least
+    squared distance; the same operations in the same order as report._closest_brute
+    (bit for bit), by coordinate on (64, m) arrays in place, not on its (200, m, 2) ones:
+    the 6000 x 5001 cases' 0.9e8 point-segment pairs 7.7 -> 1.0 CPU-s."""
     a, d = polyline[:-1], np.diff(polyline, axis=0)
-    return np.vstack([report._closest_brute(points[i:i + 200], a, d)[0]
-                      for i in range(0, len(points), 200)])
+    ax, ay, dx, dy = a[:, 0], a[:, 1], d[:, 0], d[:, 1]
+    dd = np.maximum(dx * dx + dy * dy, 1e-300)
+    out = np.empty_like(points)
+    for i in range(0, len(points), 64):
+        px, py = points[i:i + 64, :1], points[i:i + 64, 1:]
+        t = (px - ax) * dx
+        t += (py - ay) * dy
+        t /= dd
+        np.clip(t, 0.0, 1.0, out=t)
+        ex = t * dx
+        ex += ax
+        ex -= px
+        ey = t * dy
+        ey += ay
+        ey -= py
+        ex *= ex
+        ey *= ey
+        ex += ey                          # squared distance to each segment's foot
+        j = np.argmin(ex, axis=1)         # ties: the first
+        out[i:i + 64] = a[j] + t[np.arange(len(j)), j][:, None] * d[j]
+    return out
 
 
 @pytest.mark.parametrize("m", [3, 40, 5001])
