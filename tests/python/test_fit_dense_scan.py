@@ -33,16 +33,26 @@ def _scan(n, noise, seed):
 
 
 def _polygon_rms(P, V):
-    """rms distance of the points P to the polygon V, every segment tried (own check)."""
-    A, B = V[:-1], V[1:]
-    U = B - A
-    L2 = np.maximum(np.einsum("ij,ij->i", U, U), 1e-300)
+    """rms distance of the points P to the polygon V, every segment tried (own check): the
+    foot A + t U, t = <P - A, U> / |U|^2 clipped to [0, 1]. By coordinate on (64, m) arrays
+    in place (the einsum of (256, m, 2) ones gave the same rms bit for bit on both tests'
+    fits, in 6.5 CPU-s for 3000 points on 30 000 segments; this 1.0)."""
+    A, U = V[:-1], np.diff(V, axis=0)
+    ax, ay, ux, uy = A[:, 0], A[:, 1], U[:, 0], U[:, 1]
+    L2 = np.maximum(ux * ux + uy * uy, 1e-300)
     best = np.empty(len(P))
-    for a in range(0, len(P), 256):
-        Q = P[a:a + 256, None, :] - A[None]
-        t = np.clip(np.einsum("pij,ij->pi", Q, U) / L2, 0.0, 1.0)
-        D = Q - t[..., None] * U[None]
-        best[a:a + 256] = np.sqrt(np.min(np.einsum("pij,pij->pi", D, D), axis=1))
+    for a in range(0, len(P), 64):
+        qx, qy = P[a:a + 64, :1] - ax, P[a:a + 64, 1:] - ay      # P - A first: 12 m offsets
+        t = qx * ux
+        t += qy * uy
+        t /= L2
+        np.clip(t, 0.0, 1.0, out=t)
+        qx -= t * ux
+        qy -= t * uy
+        qx *= qx
+        qy *= qy
+        qx += qy                          # squared distance to each segment's foot
+        best[a:a + 64] = np.sqrt(np.min(qx, axis=1))
     return float(np.sqrt(np.mean(best ** 2)))
 
 
