@@ -126,8 +126,19 @@ def curve_distances(curve, pts, samples: int = 20000):
     xy = curve.points(s)
     ds = s[1] - s[0]
     dist, foot = np.empty(len(pts)), np.empty(len(pts))
+    # each point's nearest sample, the first of least (x - px)^2 + (y - py)^2: the sums of
+    # np.sum((xy - p) ** 2, axis=1), found 64 points at once (bit for bit the same
+    # indices; 3000 points, one 20000-sample pass each, 10 of ell3000's 30 s)
+    near = np.empty(len(pts), dtype=np.intp)
+    for a in range(0, len(pts), 64):
+        ex = xy[:, 0] - pts[a:a + 64, :1]
+        ey = xy[:, 1] - pts[a:a + 64, 1:]
+        ex *= ex
+        ey *= ey
+        ex += ey
+        near[a:a + 64] = np.argmin(ex, axis=1)
     for i, p in enumerate(pts):
-        j = int(np.argmin(np.sum((xy - p) ** 2, axis=1)))
+        j = int(near[i])
         lo, hi = max(s[j] - ds, 0.0), min(s[j] + ds, curve.length)
         r = minimize_scalar(lambda v: float(np.sum((curve.points(np.array([v]))[0] - p) ** 2)),
                             bounds=(lo, hi), method="bounded", options={"xatol": 1e-12 * curve.length})
