@@ -40,7 +40,7 @@
 
 /* GUESSES_MAX from one polygon, of the two polygons (guess_run) the CAND_OUT best ranked
  * handed out (the header's "at most 6") */
-enum { BLOCKS = 32, RAW_MAX = 40, GUESSES_MAX = 6, NCAND_MAX = 2 * GUESSES_MAX, CAND_OUT = 6,
+enum { BLOCKS = EL__GUESS_BLOCKS, RAW_MAX = EL__GUESS_RAW_MAX, GUESSES_MAX = 6, NCAND_MAX = 2 * GUESSES_MAX, CAND_OUT = 6,
        MERGE_NOISE = 2, MERGED_MIN = 8 };
 
 /* A model-independent guess in normalised coordinates: u(s) = w s + q, s = t L. */
@@ -127,195 +127,33 @@ int el__fit_check_points(const double *xy, size_t n, size_t nmin)
     return el__all_finite(xy, 2 * n) ? EL_EINVAL : EL_OK;
 }
 
-/* The points, normalised on the fly. */
-typedef struct points {
-    const double *xy;
-    size_t n;
-    double cx, cy, sc;
-} points;
-
-static void point_at(const points *p, size_t i, double *P)
-{
-    P[0] = (p->xy[2 * i] - p->cx) / p->sc;
-    P[1] = (p->xy[2 * i + 1] - p->cy) / p->sc;
-}
-
-/* The means of BLOCKS blocks of consecutive points (n > RAW_MAX), Q: 2 BLOCKS. */
-static void block_means(const points *p, double *Q)
-{
-    const size_t n = p->n;
-    for (size_t b = 0; b < BLOCKS; b++) {
-        const size_t lo = b * n / BLOCKS, hi = (b + 1) * n / BLOCKS;
-        double x = 0, y = 0, P[2];
-        for (size_t i = lo; i < hi; i++) { point_at(p, i, P); x += P[0]; y += P[1]; }
-        Q[2 * b] = x / (double)(hi - lo);
-        Q[2 * b + 1] = y / (double)(hi - lo);
-    }
-}
-
-/* Sides of the polygon of block means (or of the points, for few points):
- * the coefficient of variation of their lengths. */
-static double block_side_cv(const points *p)
-{
-    const size_t n = p->n, m = n <= RAW_MAX ? n : BLOCKS;
-    double px = 0, py = 0, sum = 0, sum2 = 0;
-    for (size_t b = 0; b < m; b++) {
-        size_t lo = b * n / m, hi = (b + 1) * n / m;
-        double x = 0, y = 0, P[2];
-        for (size_t i = lo; i < hi; i++) { point_at(p, i, P); x += P[0]; y += P[1]; }
-        x /= (double)(hi - lo); y /= (double)(hi - lo);
-        if (b > 0) {
-            double d = hypot(x - px, y - py);
-            sum += d; sum2 += d * d;
-        }
-        px = x; py = y;
-    }
-    double mean = sum / (double)(m - 1), var = sum2 / (double)(m - 1) - mean * mean;
-    return mean > 0 ? sqrt(fmax(var, 0.0)) / mean : HUGE_VAL;
-}
-
-/* The fractions t_i one by one (uniform, or the chord-length parameter). */
-typedef struct fractions {
-    const points *p;
-    int chord;
-    size_t i;
-    double total, run, prev[2];
-    double noise2;      /* 2 nu^2: what noise of rms nu per point adds to a side's square */
-    /* chord, n > RAW_MAX: the arc length A[b] along the polygon of the BLOCKS block means
-     * at its blocks' middle points ci[b], where the chord run is C[b]; between them the
-     * run is mapped linearly onto A (fractions_next); b: the interval of the last point */
-    size_t nb, b, ci[BLOCKS];
-    double A[BLOCKS], C[BLOCKS], a0, a1;
-} fractions;
-
-/* A side of the chord polygon, its noise taken out: the points' noise (rms nu each,
- * independent) lengthens a side d to sqrt(d^2 + 2 nu^2) on average, so on sparse noisy
- * points the plain chords gave a cluster of close points far more of the curve than it
- * spans, and the paired start bent the curve into a loop there (measured on 150 sparse
- * uneven noisy sets: seed 6 of bench_fit_sparse.py's kind). Sides shorter than the noise
- * keep a tenth of their length (the order of the points stays). */
-static double side(const fractions *f, double dx, double dy)
-{
-    const double d2 = dx * dx + dy * dy;
-    return f->noise2 > 0.0 ? sqrt(fmax(d2 - f->noise2, 0.01 * d2)) : sqrt(d2);
-}
-
-/* Whether the polygon of the block means Q (BLOCKS) turns by less than 0.3 rad at every
- * vertex: the means then lie along the curve (a block's mean is off its arc by ~ its
- * chord x its turn / 8) and the polygon's sides measure the arc between them to ~ 0.4 %. */
-static int follows_curve(const double *Q)
-{
-    for (size_t b = 1; b + 1 < BLOCKS; b++) {
-        const double ax = Q[2 * b] - Q[2 * b - 2], ay = Q[2 * b + 1] - Q[2 * b - 1];
-        const double bx = Q[2 * b + 2] - Q[2 * b], by = Q[2 * b + 3] - Q[2 * b + 1];
-        if (!(fabs(atan2(ax * by - ay * bx, ax * bx + ay * by)) < 0.3)) return 0;
-    }
-    return 1;
-}
-
-/* Whether the points are evenly spaced along the curve (the uniform fractions), for
- * EL_PARAM_AUTO: the sides of the polygon of block means (block_side_cv) of equal
- * length but for the noise nu of the points (rms, normalised). A side between the means of
- * two blocks of n / BLOCKS points varies by nu sqrt(BLOCKS / n) from the noise alone; the
- * sides may vary by 3 x that and 5 % more. Few points (n <= RAW_MAX: the points
- * themselves, whose sides vary by their noise) as before: a coefficient of variation of
- * 0.5 at most. The old test, 0.5 for every n, took scanner-density points (the spacing
- * 1:2 between the blocks, 1:12 between points; QA23 F5) for evenly spaced ones: their
- * uniform fractions were 7.7 % of the length off, the paired start of the fit crawled
- * 137-200 iterations to a curve far from the points and the fit from it 200 more
- * (20 000 points, noise 0.2: 234 iterations, 4 from evenly spaced ones). Only where the
- * block means follow the curve (follows_curve): the means of blocks that turn far
- * (the suite's loops of k up to 30, 100 points: 3 a block) are spaced by the curvature as
- * much as by the points (bench_fit.py's noise-free sets: 22 of 84 then chord, up to 391
- * iterations for 4). */
-static int evenly_spaced(const points *p, double *nu)
-{
-    const size_t n = p->n;
-    const double cv = block_side_cv(p);
-    if (n <= RAW_MAX) return cv <= 0.5;
-    double Q[2 * BLOCKS], r[BLOCKS], sum = 0.0, sum2 = 0.0, len = 0.0;
-    block_means(p, Q);
-    if (!follows_curve(Q)) return cv <= 0.5;
-    /* each side per point between the blocks' middles (blocks of n / BLOCKS points differ
-     * by one point: 50 points, blocks of 1 and 2, the sides 1 and 1.5 steps) */
-    for (size_t b = 1; b < BLOCKS; b++) {
-        const double side = hypot(Q[2 * b] - Q[2 * b - 2], Q[2 * b + 1] - Q[2 * b - 1]);
-        const double gap = 0.5 * (double)((b + 1) * n / BLOCKS - (b - 1) * n / BLOCKS);
-        r[b] = side / gap;
-        len += side;
-        sum += r[b];
-    }
-    const double mean = sum / (BLOCKS - 1);
-    for (size_t b = 1; b < BLOCKS; b++) sum2 += (r[b] - mean) * (r[b] - mean);
-    const double cvr = mean > 0.0 ? sqrt(sum2 / (BLOCKS - 1)) / mean : HUGE_VAL;
-    if (cvr <= 0.05) return 1;
-    *nu = el__fit_noise_rms(p->xy, n, p->sc);      /* fractions_start's, estimated once */
-    return cvr <= 0.05 + 3.0 * *nu * sqrt((double)BLOCKS / (double)n) / (len / (BLOCKS - 1));
-}
-
-/* The chord run mapped onto the block-mean polygon's arc: between the middle points of
- * blocks b and b + 1 linearly in the run (in the index where the run does not advance),
- * beyond the first and last middle points by the nearest interval's ratio. */
-static double block_map(const fractions *f, size_t b, size_t i, double run)
-{
-    const double dC = f->C[b + 1] - f->C[b], dA = f->A[b + 1] - f->A[b];
-    if (dC > 0.0) return f->A[b] + dA * (run - f->C[b]) / dC;
-    const double di = (double)f->ci[b + 1] - (double)f->ci[b];
-    return f->A[b] + dA * ((double)i - (double)f->ci[b]) / di;
-}
-
-/* Chord fractions of many points (n > RAW_MAX) measured along the polygon of the
- * BLOCKS block means, the points' own chords only sharing each stretch between two
- * blocks' middles out: chords between points closer than their noise are mostly noise
- * (side() keeps a tenth of such a side), and their sum says little of the arc between
- * two places of the curve; the block means are sqrt(n / BLOCKS) times less noisy
- * (measured: 20 000 scanned points of spacing 1:12, noise 0.2 and 11 x their mean
- * spacing: the plain chords 4.7 % of the length off the true fractions at most, 262
- * iterations of the fit; along the block means 0.3 %, 17). */
-static void block_arcs(fractions *f)
-{
-    const points *p = f->p;
-    const size_t n = p->n;
-    double Q[2 * BLOCKS], P[2], R[2], run = 0.0;
-    block_means(p, Q);
-    if (!follows_curve(Q)) return;      /* the plain chords */
-    f->nb = BLOCKS;
-    for (size_t b = 0; b < BLOCKS; b++) {
-        f->ci[b] = (b * n / BLOCKS + (b + 1) * n / BLOCKS - 1) / 2;
-        f->A[b] = b ? f->A[b - 1] + hypot(Q[2 * b] - Q[2 * b - 2], Q[2 * b + 1] - Q[2 * b - 1]) : 0.0;
-    }
-    point_at(p, 0, R);
-    for (size_t i = 0, b = 0; i < n && b < BLOCKS; i++) {
-        point_at(p, i, P);
-        if (i > 0) run += side(f, P[0] - R[0], P[1] - R[1]);
-        R[0] = P[0]; R[1] = P[1];
-        while (b < BLOCKS && f->ci[b] == i) f->C[b++] = run;
-    }
-    f->a0 = block_map(f, 0, 0, 0.0);
-    f->a1 = block_map(f, BLOCKS - 2, n - 1, f->total);
-    if (!(f->a1 > f->a0)) f->nb = 0;     /* every block mean alike: the plain chords */
-}
+/* The points, normalised on the fly, and their fractions (fit_internal.h, shared with
+ * guess_spacing.c, which holds the spacing tests). */
+typedef el__guess_points points;
+typedef el__guess_fractions fractions;
 
 static int fractions_start(fractions *f, const points *p, int mode, int *mode_used)
 {
     memset(f, 0, sizeof *f);
     f->p = p;
     double nu = -1.0;      /* not yet estimated */
-    if (mode == EL_PARAM_AUTO) mode = evenly_spaced(p, &nu) ? EL_PARAM_UNIFORM : EL_PARAM_CHORD;
+    double M[2 * BLOCKS];  /* the block means, once per call (n > RAW_MAX) */
+    if (p->n > RAW_MAX && mode != EL_PARAM_UNIFORM) el__guess_block_means(p, M);
+    if (mode == EL_PARAM_AUTO) mode = el__guess_evenly_spaced(p, M, &nu) ? EL_PARAM_UNIFORM : EL_PARAM_CHORD;
     f->chord = mode == EL_PARAM_CHORD;
     if (f->chord) {
         if (nu < 0.0) nu = el__fit_noise_rms(p->xy, p->n, p->sc);
         f->noise2 = 2.0 * nu * nu;
     }
     double P[2], Q[2];
-    point_at(p, 0, Q);
+    el__guess_point_at(p, 0, Q);
     for (size_t i = 1; i < p->n; i++) {
-        point_at(p, i, P);
-        f->total += side(f, P[0] - Q[0], P[1] - Q[1]);
+        el__guess_point_at(p, i, P);
+        f->total += el__guess_side(f, P[0] - Q[0], P[1] - Q[1]);
         Q[0] = P[0]; Q[1] = P[1];
     }
     if (!(f->total > 0.0)) return EL_ESINGULAR;
-    if (f->chord && p->n > RAW_MAX) block_arcs(f);
+    if (f->chord && p->n > RAW_MAX) el__guess_block_arcs(f, M);
     if (mode_used) *mode_used = mode;
     return EL_OK;
 }
@@ -325,13 +163,13 @@ static double fractions_next(fractions *f)
     const size_t i = f->i++, n = f->p->n;
     if (!f->chord) return (double)i / (double)(n - 1);
     double P[2];
-    point_at(f->p, i, P);
-    if (i > 0) f->run += side(f, P[0] - f->prev[0], P[1] - f->prev[1]);
+    el__guess_point_at(f->p, i, P);
+    if (i > 0) f->run += el__guess_side(f, P[0] - f->prev[0], P[1] - f->prev[1]);
     f->prev[0] = P[0]; f->prev[1] = P[1];
     if (i + 1 == n) return 1.0;
     if (!f->nb) return f->run / f->total;
     while (f->b + 2 < f->nb && i > f->ci[f->b + 1]) f->b++;
-    const double t = (block_map(f, f->b, i, f->run) - f->a0) / (f->a1 - f->a0);
+    const double t = (el__guess_block_map(f, f->b, i, f->run) - f->a0) / (f->a1 - f->a0);
     return fmin(fmax(t, 0.0), 1.0);
 }
 
@@ -411,7 +249,7 @@ static size_t reduce(const points *p, fractions *f, double merge, double *Q, dou
         size_t cnt = 0;
         for (size_t i = 0; i < n; i++) {
             double P[2];
-            point_at(p, i, P);
+            el__guess_point_at(p, i, P);
             const double t = fractions_next(f);
             if (cnt > 0 && fit_norm(P[0] - F[0], P[1] - F[1]) >= merge) {
                 Q[2 * out] = sum[0] / (double)cnt; Q[2 * out + 1] = sum[1] / (double)cnt; tau[out++] = sum[2] / (double)cnt;
@@ -426,7 +264,7 @@ static size_t reduce(const points *p, fractions *f, double merge, double *Q, dou
     for (size_t b = 0; b < m; b++) {
         size_t lo = b * n / m, hi = (b + 1) * n / m;
         double x = 0, y = 0, tt = 0, P[2];
-        for (size_t i = lo; i < hi; i++) { point_at(p, i, P); x += P[0]; y += P[1]; tt += fractions_next(f); }
+        for (size_t i = lo; i < hi; i++) { el__guess_point_at(p, i, P); x += P[0]; y += P[1]; tt += fractions_next(f); }
         x /= (double)(hi - lo); y /= (double)(hi - lo); tt /= (double)(hi - lo);
         if (out > 0 && x == Q[2 * out - 2] && y == Q[2 * out - 1]) continue;
         Q[2 * out] = x; Q[2 * out + 1] = y; tau[out] = tt;
@@ -702,7 +540,7 @@ static double place(int model, const points *p, const double *v, double *x0, dou
     if (st) return HUGE_VAL;
     for (size_t j = 0; j < m; j++) {
         double P[2], d[2], delta[2];
-        point_at(p, idx[j], P);
+        el__guess_point_at(p, idx[j], P);
         const double cnt = (double)(j + 1);
         for (int c = 0; c < 2; c++) {
             d[c] = P[c] - G[2 * j + c];
