@@ -1280,15 +1280,18 @@ typedef struct el_spline_result {
                               |k| >= 1e3 at sigma = kappa^2, by length a singular reduced
                               Hessian; tension 0: slides above) */
     unsigned long work;    /* the search's work: evaluations of the whole chain (each evaluates
-                              every piece once) over every path el_spline_solve tried (the
-                              largest above not counted: its solves have budgets of their own) */
+                              every piece once) over every path el_spline_solve tried, the
+                              largest's solves above included (each with a budget of its own;
+                              none where its tensions sigma h^2 / h^2 are not doubles > 0: spans
+                              of ~1e300) */
     int stopped;           /* 1: the search stopped at its work budget, 8 x max_steps x max_iter
                               chain evaluations (tension mode's G2 ends: each length solve of its
                               search by length that much again; a Newton iteration due past it is
                               not made, as if Newton stalled there): the status and result are
                               what it had reached by then (36 collinear points with G2 ends by length 6.9 x
                               their polygon, max_steps 15, max_iter 37: 6468 evaluations, 0.35 s,
-                              to say EL_ERANGE; 4543 with the budget). Set with reach */
+                              to say EL_ERANGE; 4543 with the budget); also where one of the
+                              largest's solves stopped at its own. Set with reach */
 } el_spline_result;
 
 /* Defaults: tension mode, sigma 0, open, natural ends, tol 1e-10, max_iter 60, max_steps 60. */

@@ -393,9 +393,11 @@ int el__spline_near_line(const double *xy, size_t n, const el_spline_options *o,
  * longest span h (user units: the solve's, el_spline_solve), the largest tension (user
  * units) that solves without loops, its spline's resolution and least |1 - k^2|
  * (el_spline_result's largest), all 0 where not looked for or none of sigma h^2 >= 100
- * solves; *nsolves: the tension solves it made; EL_OK or EL_ENOMEM */
+ * solves (or where the tensions sigma h^2 / h^2 are not positive finite doubles); *nsolves:
+ * the tension solves it made, their work counted on into *work (el__spline_solve_within;
+ * each solve a budget of its own); EL_OK or EL_ENOMEM */
 int el__spline_largest(const double *xy, size_t n, const el_spline_options *opt, double h,
-                       double largest[3], int *nsolves);
+                       double largest[3], int *nsolves, el__spwork *work);
 /* spline_stable.c: the Hessian of the chain's energy sum_j (E_j + sigma L_j) in its knot
  * angles, H = 2 (d kappa^- / d theta - d kappa^+ / d theta), into w->dg (diagonal) and w->up
  * (up[i]: H[i][i + 1]), every knot's (fixed ones too); from the pieces' c0, c1, so the chain
@@ -512,6 +514,10 @@ int el__spline_g2_tension_by_length(el__spchain *g, el__g2_length_solve solve, v
  * (follow_length, the plain counterpart of the Newton attempts), for the tests. */
 int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *opt,
                            int newton_first, el_spline_result *res);
+/* The same, its work counted on into *work (work->evals on from where it is, work->budget
+ * set to that + the solve's own WORK_BUDGET: el__spline_largest's solves, each as before) */
+int el__spline_solve_within(const double *xy, size_t n, const el_spline_options *opt,
+                            el__spwork *work, el_spline_result *res);
 
 /* For the tests of spline.c: the piece p as the Hermite elastica of its own ends
  * (h = |gamma(L) - gamma(0)|), v = (phi, ln mu, k, q, L): J[25] = dR/dv with

@@ -576,7 +576,7 @@ static int stable_instead(el__spchain *w, const double *xy, size_t n, const el_s
 /* el__spline_solve_paths, with the longest span h (user units) into *longest once the
  * chords are valid (el__spline_largest's h) */
 static int solve_paths(const double *xy, size_t n, const el_spline_options *opt, int newton_first,
-                       el_spline_result *res, double *longest)
+                       el__spwork *shared, el_spline_result *res, double *longest)
 {
     if (!res) return EL_EINVAL;
     memset(res, 0, sizeof *res);
@@ -605,9 +605,10 @@ static int solve_paths(const double *xy, size_t n, const el_spline_options *opt,
     el__spchain w, g;
     memset(&g, 0, sizeof g);
     el__spchain *sol = &w;   /* the chain the result comes from */
-    el__spwork work = {0, work_budget(opt), 0};
+    el__spwork own = {0, 0, 0}, *wk = shared ? shared : &own;
+    wk->budget = wk->evals + work_budget(opt);   /* the solve's own, counted on (el__spline_largest) */
     int st = el__chain_alloc(&w, n, m);
-    w.work = &work;
+    w.work = wk;
     if (st) goto done;
     const double S = Lp / (double)m;   /* the unit: mean chord */
     w.closed = closed; w.lmode = lmode; w.newton_first = newton_first;
@@ -771,8 +772,8 @@ static int solve_paths(const double *xy, size_t n, const el_spline_options *opt,
         }
 done:
     if (st == EL_OK || st == EL_ENOCONV || st == EL_ERANGE) {
-        res->work = work.evals;
-        res->stopped = work.stopped;
+        res->work = wk->evals;
+        res->stopped = wk->stopped;
     }
     el_hermite_result_free(&hermite);
     el__chain_free(&w);
@@ -784,20 +785,31 @@ int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *
                            int newton_first, el_spline_result *res)
 {
     double h;
-    return solve_paths(xy, n, opt, newton_first, res, &h);
+    return solve_paths(xy, n, opt, newton_first, NULL, res, &h);
+}
+
+int el__spline_solve_within(const double *xy, size_t n, const el_spline_options *opt,
+                            el__spwork *work, el_spline_result *res)
+{
+    double h;
+    return solve_paths(xy, n, opt, 1, work, res, &h);
 }
 
 int el_spline_solve(const double *xy, size_t n, const el_spline_options *opt,
                     el_spline_result *res)
 {
     double h = 0.0;
-    const int st = solve_paths(xy, n, opt, 1, res, &h);
+    const int st = solve_paths(xy, n, opt, 1, NULL, res, &h);
     if (st != EL_ENOCONV) return st;
-    /* a high tension that fails: the largest that solves (spline_limit.c) */
+    /* a high tension that fails: the largest that solves (spline_limit.c), its solves'
+     * work counted into res->work */
     double largest[3];
     int nsolves;
-    if (el__spline_largest(xy, n, opt, h, largest, &nsolves)) { el_spline_result_free(res); return EL_ENOMEM; }
+    el__spwork more = {res->work, 0, 0};
+    if (el__spline_largest(xy, n, opt, h, largest, &nsolves, &more)) { el_spline_result_free(res); return EL_ENOMEM; }
     for (int i = 0; i < 3; i++) res->largest[i] = largest[i];
+    res->work = more.evals;
+    res->stopped |= more.stopped;
     return st;
 }
 

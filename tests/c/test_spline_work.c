@@ -67,6 +67,79 @@ START_TEST(ordinary_solve_within_budget)
 }
 END_TEST
 
+/* The fuzz's slow el_spline_to_bspline input (fuzz/corpus/fuzz-spline-to-bspline-g2-huge-slow.bin,
+ * 7.4 s of CPU at full speed): 14 collinear points (t, 2t) x 1e300, G2 ends, tension 42.3.
+ * The solve fails (EL_ENOCONV); sigma x (longest span)^2 is inf, so the largest tension was
+ * looked for, but every rung's tension sigma h^2 / h^2 (h^2 inf) is 0: ten identical solves
+ * at sigma 0, each with its own budget. Now none is made (its rungs are no tensions), and
+ * the result says the whole call's work. */
+START_TEST(largest_makes_no_solve_where_its_rungs_are_no_tensions)
+{
+    double xy[28];
+    for (int i = 0; i < 14; i++) {
+        xy[2 * i] = 1e300 * i / 13.0;
+        xy[2 * i + 1] = 2e300 * i / 13.0;
+    }
+    el_spline_options o;
+    el_spline_options_defaults(&o);
+    o.sigma = 42.307927061875333;
+    o.start.kind = o.end.kind = EL_SPLINE_G2;
+    o.start.tangent[0] = -0.73458457312886249;
+    o.start.tangent[1] = 0.8024;
+    o.start.curvature = 2.0582894636453801;
+    o.end.tangent[0] = -0.35133897917143508;
+    o.end.tangent[1] = 0.48482490272373546;
+    o.end.curvature = -1.6614938582436865;
+    double largest[3];
+    int nsolves = -1;
+    el__spwork work = {0, 0, 0};
+    double h = 0.0;
+    for (int i = 0; i < 13; i++) h = fmax(h, hypot(xy[2 * i + 2] - xy[2 * i], xy[2 * i + 3] - xy[2 * i + 1]));
+    ck_assert_int_eq(el__spline_largest(xy, 14, &o, h, largest, &nsolves, &work), EL_OK);
+    ck_assert_int_eq(nsolves, 0);
+    ck_assert_int_eq(work.evals, 0);
+    ck_assert(largest[0] == 0.0 && largest[1] == 0.0 && largest[2] == 0.0);
+    el_spline_result r, r1;
+    ck_assert_int_eq(el_spline_solve(xy, 14, &o, &r), EL_ENOCONV);
+    ck_assert_int_eq(el__spline_solve_paths(xy, 14, &o, 1, &r1), EL_ENOCONV);
+    ck_assert_int_eq(r.work, r1.work);   /* the one solve's: nothing more */
+    el_spline_result_free(&r);
+    el_spline_result_free(&r1);
+}
+END_TEST
+
+/* Where the largest tension is looked for, its solves' work is the call's too, counted into
+ * the result's work (before, work said the first solve's alone: QA16's 7 ducks with a G2
+ * start at sigma 50, sigma h^2 17450, its 6 solves each with its search by length uncounted) */
+START_TEST(largest_solves_counted_in_work)
+{
+    static const double qa16[] = {-70, 3, -85, 12, -95, 25, -98, 40, -93, 58, -80, 70, -62, 75};
+    el_spline_options o;
+    el_spline_options_defaults(&o);
+    o.sigma = 50.0;
+    o.start.kind = EL_SPLINE_G2;
+    o.start.tangent[0] = -1.0;
+    o.start.tangent[1] = 0.0;
+    o.start.curvature = 0.0;
+    o.max_iter = o.max_steps = 30;
+    el_spline_result r, r1;
+    ck_assert_int_eq(el_spline_solve(qa16, 7, &o, &r), EL_ENOCONV);
+    ck_assert_int_eq(el__spline_solve_paths(qa16, 7, &o, 1, &r1), EL_ENOCONV);
+    double largest[3];
+    int nsolves = -1;
+    el__spwork work = {0, 0, 0};
+    double hm = 0.0;
+    for (int i = 0; i < 6; i++) hm = fmax(hm, hypot(qa16[2 * i + 2] - qa16[2 * i], qa16[2 * i + 3] - qa16[2 * i + 1]));
+    ck_assert_int_eq(el__spline_largest(qa16, 7, &o, hm, largest, &nsolves, &work), EL_OK);
+    ck_assert(nsolves > 0 && work.evals > 0);
+    ck_assert_msg(r.work == r1.work + work.evals, "work %lu, the solve %lu + the largest's %lu", r.work, r1.work,
+                  work.evals);
+    ck_assert(r.largest[0] == largest[0] && r.largest[0] > 0.0);
+    el_spline_result_free(&r);
+    el_spline_result_free(&r1);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("spline_work");
@@ -74,6 +147,8 @@ int main(void)
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, length_search_stops_at_its_budget);
     tcase_add_test(tc, ordinary_solve_within_budget);
+    tcase_add_test(tc, largest_makes_no_solve_where_its_rungs_are_no_tensions);
+    tcase_add_test(tc, largest_solves_counted_in_work);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }
