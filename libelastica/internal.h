@@ -428,8 +428,8 @@ int el__spline_unstable_result(el__spchain *w, const el_spline_result *res, doub
  * spans' gamma_j = -dL_j / d sigma; -1: not judged (H singular, a gamma_j 0, no memory) */
 int el__spline_length_negatives(const double *dg, const double *up, const double *g, size_t k, int negH,
                                 const double *gam, size_t m);
-/* spline.c: 1 for a circle piece, or one near it resolved to more than tol (|k| >= 1e3, or
- * el_smooth_eval's bound past tol of its length: make_result's rule) */
+/* spline_result.c: 1 for a circle piece, or one near it resolved to more than tol (|k| >= 1e3, or
+ * el_smooth_eval's bound past tol of its length: el__spline_make_result's rule) */
 int el__spline_circle_piece(const el_smooth_params *p, double tol);
 /* spline_buckle.c: the number of negative eigenvalues of T - shift I, T symmetric
  * tridiagonal on rows i0..i1 (diagonal dg, off-diagonal up[i] = T[i][i + 1]) */
@@ -438,7 +438,7 @@ int el__tridiag_negatives(const double *dg, const double *up, size_t i0, size_t 
  * singular): three solves from 1, normalised by the max norm, into w->z[i0..i1] (w->b its
  * work); EL_OK, or EL_ENOCONV where a solve fails (w->z as it left) or z is not finite. */
 int el__tridiag_inverse_iter(el__spchain *w, size_t i0, size_t i1);
-/* spline.c: what one ulp of a piece's k moves its end state by near the separatrix, in
+/* spline_result.c: what one ulp of a piece's k moves its end state by near the separatrix, in
  * the residual's units (th: its end angles, kmax: its max |kappa|, h: its chord). */
 double el__spline_separatrix_bound(const el_smooth_params *p, const double th[2], double kmax, double h);
 /* spline_fair.c: 1 when the curve of the m pieces (closed: the last back to the first)
@@ -514,6 +514,15 @@ int el__spline_g2_tension_by_length(el__spchain *g, el__g2_length_solve solve, v
  * (follow_length, the plain counterpart of the Newton attempts), for the tests. */
 int el__spline_solve_paths(const double *xy, size_t n, const el_spline_options *opt,
                            int newton_first, el_spline_result *res);
+/* spline_result.c: 1 where every piece of the chain is one (finite unknowns, a positive
+ * length) */
+int el__spline_pieces_drawn(const el__spchain *w);
+/* spline_result.c: res from the solved chain w (user units; xy the npoints points, S the
+ * unit), the residual measured; *other: the part of it from joints and ends without a circle
+ * piece or a piece whose separatrix bound exceeds tol; *sep: the largest such bound (0: none).
+ * EL_OK, EL_ENOMEM, or el_smooth_eval's status for a piece it refuses (EL_EINVAL) */
+int el__spline_make_result(const el__spchain *w, const double *xy, size_t npoints, double S, double tol,
+                           el_spline_result *res, double *other, double *sep);
 /* The same, its work counted on into *work (work->evals on from where it is, work->budget
  * set to that + the solve's own WORK_BUDGET: el__spline_largest's solves, each as before) */
 int el__spline_solve_within(const double *xy, size_t n, const el_spline_options *opt,
