@@ -90,7 +90,11 @@ class ElasticSpline(ValueEquality):
     :class:`LoopWarning`), ``unstable`` (True: an equilibrium but no minimum, a batten bent
     so would snap to another shape, ``unstable_span`` the span moving most that way, piece
     i from point i to i + 1: :class:`UnstableWarning`; open splines without G2 ends are
-    judged, others read False).
+    judged, others read False), ``iterations`` (Newton iterations over every continuation step),
+    ``work`` (the solve's chain evaluations, each of every piece once, over every path it
+    tried) and ``stopped`` (True: the search ended at its work budget, 8 x max_steps x
+    max_iter evaluations, and this is what it had reached by then; el_spline_result's work /
+    stopped).
 
     The pieces run from knot to knot: the points and, next to each G2 end, its
     guide duck (the ducks that make a G2 end possible at the common tension,
@@ -116,6 +120,8 @@ class ElasticSpline(ValueEquality):
         self.residual = float(res.residual)
         self.resolution = float(res.resolution)
         self.iterations = int(res.iterations)
+        self.work = int(res.work)
+        self.stopped = bool(res.stopped)
         self.loops = bool(res.loops)
         self.unstable = bool(res.unstable)
         self.unstable_span = int(res.slide_span) if self.unstable else None
