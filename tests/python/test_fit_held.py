@@ -29,13 +29,15 @@ def _held(xy, deg):
 @pytest.mark.parametrize("deg", [16.0, 17.0])
 def test_paired_held_start_does_not_crawl_through_its_stages(sheer, deg):
     """The paired fit held at the first point and a tangent 0.8 rad off the data's
-    (-30.8 deg): main 34005 / 34779 iterations, now 200-300, at the same rms (main:
-    1098.1995913832054 / 1118.9880241368064 mm)."""
-    free = el.fit(sheer, model="smooth", distance="paired")
+    (-30.8 deg): main 34005 / 34779 iterations, then 230 / 234 at the same rms (main:
+    1098.1995913832054 / 1118.9880241368064 mm); since 5cee373 (the scan's spacing judged
+    without its noise: chord fractions) 567 / 573 at rms 927.1 / 949.7, the free paired fit
+    40 iterations at rms 14.0 where it crawled 274 to rms 521."""
     r = el.fit(sheer, model="smooth", distance="paired", check_ends=False, constraints=_held(sheer, deg))
     assert r.status == 0
-    # within 10 x the free paired fit's iterations (274); main: 124 x
-    assert r.iterations <= 10 * free.iterations, (r.iterations, free.iterations)
+    # the crawl through 32 stages took ~34 000 iterations: a bound far below it (the free
+    # paired fit's 10 x was the bound while it took 274; it takes 40 now)
+    assert r.iterations <= 1500, r.iterations
     main_rms = {16.0: 1098.1995913832054, 17.0: 1118.9880241368064}[deg]
     assert r.rms <= main_rms * (1 + 1e-9), r.rms
     th = r.curve.angle(np.array([0.0]))[0]
