@@ -259,7 +259,8 @@ int el_discrete_jacobian(const el_discrete_params *p, size_t n, double *xy, doub
  *                     for a side d, nu the points' noise level as the fit estimates
  *                     it (rms per point; noise lengthens a side to sqrt(d^2 + 2 nu^2)
  *                     on average, and plain chords gave a cluster of close noisy
- *                     points too much of the curve); for n > 40 points whose 32
+ *                     points too much of the curve); for n > 40 points with nu >
+ *                     0.1 x the mean side whose 32
  *                     block means turn by < 0.3 rad at each, measured along the
  *                     polygon of those means between the blocks' middle points
  *                     (the points' chords sharing each stretch out);

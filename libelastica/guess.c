@@ -132,6 +132,10 @@ int el__fit_check_points(const double *xy, size_t n, size_t nmin)
 typedef el__guess_points points;
 typedef el__guess_fractions fractions;
 
+/* the noise level, as a part of the mean side, from which CHORD measures along the block
+ * means (QA23's scans: 11 x the mean side; the test's equilateral elastica samples: ~0) */
+#define BLOCK_ARC_NOISE 0.1
+
 static int fractions_start(fractions *f, const points *p, int mode, int *mode_used)
 {
     memset(f, 0, sizeof *f);
@@ -153,7 +157,11 @@ static int fractions_start(fractions *f, const points *p, int mode, int *mode_us
         Q[0] = P[0]; Q[1] = P[1];
     }
     if (!(f->total > 0.0)) return EL_ESINGULAR;
-    if (f->chord && p->n > RAW_MAX) el__guess_block_arcs(f, M);
+    /* the block means' polygon where the noise is a sizeable part of a side (the points'
+     * chords are then mostly noise); clean chords are their own measure (equilateral
+     * samples: the block polygon's corners moved t by 2e-4 where chords give i / (n - 1)) */
+    if (f->chord && p->n > RAW_MAX && nu > BLOCK_ARC_NOISE * f->total / (double)(p->n - 1))
+        el__guess_block_arcs(f, M);
     if (mode_used) *mode_used = mode;
     return EL_OK;
 }
