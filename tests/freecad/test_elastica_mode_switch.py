@@ -21,6 +21,22 @@ DUCKS = [(0, 0), (13.7, 4.1), (31.2, 7.9), (38.5, 9.4), (52.1, 12.3), (80.4, 60.
          (104.9, -1.8), (140.2, -9.6)]
 
 
+def refuse_spline_solves(case, keyword):
+    """For the rest of the test ``case``: el.elastic_spline refuses (NotConvergedError, a
+    stand-in) every call given ``keyword`` (initial=, length=), solves the others."""
+    from freecad.elastica import geometry as G
+    e = G.el()
+    solve = e.elastic_spline
+
+    def refused(*args, **kw):
+        if kw.get(keyword) is not None:
+            raise e.NotConvergedError(e.lib.EL_ENOCONV if hasattr(e, "lib") else 3,
+                                      "elastic_spline: no convergence (stand-in)")
+        return solve(*args, **kw)
+    e.elastic_spline = refused
+    case.addCleanup(setattr, e, "elastic_spline", solve)
+
+
 def switch(panel_class, obj, mode):
     """Solve for = mode as the panel sets it: the property, then the panel's changed()."""
     stand_in = types.SimpleNamespace(obj=obj, note="", auto=None, picked=None,
@@ -126,20 +142,10 @@ class SplineNotFoundAgainTest(S.DocTest):
     doc_name = "ElasticaSplineNotFoundAgainTest"
 
     def test_a_shown_spline_not_found_again_is_said(self):
-        from freecad.elastica import geometry as G
         sk = S.points_sketch(self.doc, DUCKS)
         s = Sp.make(self.doc, [(sk, [])], Mode="length", Length=272.104)
         self.doc.recompute()
-        e = G.el()
-        solve = e.elastic_spline
-
-        def refused_from_initial(*args, **kw):
-            if kw.get("initial") is not None:
-                raise e.NotConvergedError(e.lib.EL_ENOCONV if hasattr(e, "lib") else 3,
-                                          "elastic_spline: no convergence (stand-in)")
-            return solve(*args, **kw)
-        e.elastic_spline = refused_from_initial
-        self.addCleanup(setattr, e, "elastic_spline", solve)
+        refuse_spline_solves(self, "initial")
         said, _ = S.console_output(lambda: switch(T.SplinePanel, s, "tension"))
         self.assertAlmostEqual(s.SplineLength, 225.578, delta=1e-3)
         words = ("the spline shown (272.104 mm) was not found again at this tension (solved "

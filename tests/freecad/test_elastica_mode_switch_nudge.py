@@ -8,7 +8,7 @@ import FreeCAD as App
 import elastica_samples as S
 from freecad.elastica import spline as Sp
 from freecad.elastica import taskpanels as T
-from test_elastica_mode_switch import DUCKS, switch
+from test_elastica_mode_switch import DUCKS, refuse_spline_solves, switch
 
 
 def nudge(sk, i, dx):
@@ -53,18 +53,8 @@ class SplineKeptNudgeTest(S.DocTest):
     def test_a_kept_spline_not_followed_is_said(self):
         """The by-length solve on the moved ducks refused (a stand-in): the library's own is
         shown, and Status and the report view say so; KeptShown is cleared."""
-        from freecad.elastica import geometry as G
         sk, s = self.kept()
-        e = G.el()
-        solve = e.elastic_spline
-
-        def refused_by_length(*args, **kw):
-            if kw.get("length") is not None:
-                raise e.NotConvergedError(e.lib.EL_ENOCONV if hasattr(e, "lib") else 3,
-                                          "elastic_spline: no convergence (stand-in)")
-            return solve(*args, **kw)
-        e.elastic_spline = refused_by_length
-        self.addCleanup(setattr, e, "elastic_spline", solve)
+        refuse_spline_solves(self, "length")
         said, _ = S.console_output(lambda: nudge(sk, 5, 0.01))
         self.assertAlmostEqual(s.SplineLength, 225.58, delta=0.05)
         words = "the spline kept at the switch of Solve for (272.104 mm) could not be followed"
