@@ -31,6 +31,7 @@
  *    their initial rms.
  */
 #include "fit_internal.h"
+#include "guess_internal.h"
 #include <stdlib.h>
 #include <string.h>
 #include <float.h>

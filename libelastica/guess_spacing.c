@@ -6,6 +6,7 @@
  * once per call (el__guess_block_means) and handed to both.
  */
 #include "fit_internal.h"
+#include "guess_internal.h"
 #include <math.h>
 
 enum { BLOCKS = EL__GUESS_BLOCKS, RAW_MAX = EL__GUESS_RAW_MAX };
