@@ -397,7 +397,7 @@ def _second_inflection(fits, local) -> None:
     resampled polygon: the smooth one took 0.3-0.9 s of a side of 2000 points). ``local``: the input
     points in x''y'', the side's joint named as the input point nearest it."""
     from ._ffi import as_points
-    from .misfit import SPLIT_GAIN, SPLIT_RATIO, _noise, noise_level
+    from .misfit import SPLIT_GAIN, SPLIT_RATIO, _Figures
     for c, f in enumerate(fits):
         pts = np.ascontiguousarray(f.points)
         if len(pts) < 4 * MIN_SIDE:
@@ -410,10 +410,11 @@ def _second_inflection(fits, local) -> None:
             i = prep.inflection
             if i is None or min(i, len(prep.polygon) - 1 - i) < MIN_SIDE:
                 continue
-            # el_fit_noise's figure (C), never above noise_level's (its max)
-            if not f.rms > SPLIT_RATIO * _noise(as_points(pts, "points", 2, 4)):
+            # el_fit_noise's figure (C), never above noise_level's (its max), each once
+            fig = _Figures(as_points(pts, "points", 2, 4))
+            if not f.rms > SPLIT_RATIO * fig.plain:
                 continue
-            if not f.rms > SPLIT_RATIO * noise_level(pts):
+            if len(fig.seen) < 4 or not f.rms > SPLIT_RATIO * fig.level:   # (noise_level's)
                 continue
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")
