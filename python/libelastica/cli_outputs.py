@@ -68,6 +68,31 @@ def _names_a_descriptor(path) -> bool:
     return False
 
 
+def output_key(final) -> object:
+    """One key for every name of one file, so two outputs to it are caught whatever names
+    them: an existing regular file by its inode (hard links too), any other path with its
+    links resolved (os.path.realpath: two links to one file, or to one new file, passed the
+    same-output check when the key was the path as written)."""
+    try:
+        node = os.stat(final)
+        if stat.S_ISREG(node.st_mode):
+            return (node.st_dev, node.st_ino)
+    except OSError:
+        pass
+    return os.path.realpath(final)
+
+
+def _release_fifo(path) -> None:
+    """Open a FIFO output for writing without blocking and close it: its reader, if one
+    waits, sees the end of the file, as it would after a shell's '> fifo' of a command that
+    failed (an output never written left the reader blocked for ever). Without a reader the
+    open fails (ENXIO) and nothing happens."""
+    try:
+        os.close(os.open(path, os.O_WRONLY | os.O_NONBLOCK))
+    except OSError:
+        pass
+
+
 class Outputs:
     """The one place the command writes files (every subcommand goes through it).
 
@@ -96,6 +121,7 @@ class Outputs:
         self._finals: set = set()
         self._made: List[Path] = []         # directories created, deepest last
         self._private_dir: Optional[str] = None    # temporaries of '-' and written-through ones
+        self._fifos: dict = {}              # output_key -> FIFO named as an output
 
     def check(self, target) -> Path:
         """Refuse target when it is an input or already an output of this command."""
@@ -112,9 +138,14 @@ class Outputs:
                     same = False
                 if same:
                     raise InputError(f"{final}: refusing to overwrite the input file {inp}")
-        key = os.path.abspath(final)
+        key = output_key(final)
         if key in self._finals:
             raise InputError(f"{final}: the same output path is given twice")
+        try:
+            if stat.S_ISFIFO(os.stat(final).st_mode):
+                self._fifos[key] = final
+        except OSError:
+            pass
         return final
 
     def path(self, target) -> Path:
@@ -123,7 +154,7 @@ class Outputs:
         if target == "-":
             return self._private(target, getattr(target, 'ext', '.tmp'))
         final = self.check(target)
-        self._finals.add(os.path.abspath(final))
+        self._finals.add(output_key(final))
         where = Path(os.path.realpath(final)) if final.is_symlink() else final
         try:
             node = os.stat(final)   # follows links, /proc/self/fd's to pipes too
@@ -178,7 +209,7 @@ class Outputs:
 
     def rollback(self, mark: int) -> None:
         for tmp, final, _ in self._staged[mark:]:
-            self._finals.discard(os.path.abspath(final))
+            self._finals.discard(output_key(final))
             try:
                 tmp.unlink()
             except OSError:
@@ -190,6 +221,7 @@ class Outputs:
         # renamed into place and nothing goes to stdout
         for tmp, final, where in self._staged:
             if where is None and final != "-":
+                self._fifos.pop(output_key(final), None)
                 try:
                     # a descriptor's file at its end, where this command's other writes to
                     # it went ('>' or '>>'); a FIFO or device as it is
@@ -210,6 +242,12 @@ class Outputs:
                 os.replace(tmp, where)
         self._staged = []
         self._drop_private_dir()
+        self._release_fifos()       # a FIFO whose output a batch's failed file dropped
+
+    def _release_fifos(self) -> None:
+        for fifo in self._fifos.values():
+            _release_fifo(fifo)
+        self._fifos = {}
 
     def explain(self, message: str) -> str:
         """message with each temporary's name replaced by what the user gave (the file,
@@ -237,6 +275,7 @@ class Outputs:
             except OSError:
                 pass
         self._staged, self._made = [], []
+        self._release_fifos()
 
 
 OUTPUT_OPTIONS = (("json", ".json"), ("svg", ".svg"), ("png", ".png"), ("dxf", ".dxf"))
@@ -272,7 +311,7 @@ def check_outputs(args) -> None:
             final = args.outputs.check(out_path(spec, source, ext, batch))
             # two outputs to one path: the later one replaced the earlier without a word
             # (--json o.json --dxf o.json exited 0 with a DXF there)
-            key = os.path.abspath(final)
+            key = output_key(final)
             if key in taken and taken[key] != opt:
                 raise InputError(f"--{opt} {final}: the same output path is given twice (also "
                                  f"--{taken[key]}): give each output its own file")

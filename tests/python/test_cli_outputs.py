@@ -292,6 +292,44 @@ def test_an_output_through_a_link_replaces_the_file_it_names(work, capsys):
     assert sorted(p.name for p in (work / "shared").iterdir()) == ["new.json", "target.json"]
 
 
+def test_two_outputs_through_links_to_one_file_are_refused(work, capsys):
+    """Two names of one file (links to it, or a link and the file) are one output: the
+    same-output check compared the paths as written, so `--json l1.json --dxf l2.json`
+    through two links wrote the DXF over the JSON and exited 0."""
+    (work / "target.json").write_text("old")
+    os.symlink("target.json", work / "l1.json")
+    os.symlink("target.json", work / "l2.json")
+    os.symlink("new.json", work / "d1.json")       # links to one file not made yet
+    os.symlink("new.json", work / "d2.json")
+    for pair in (("l1.json", "l2.json"), ("target.json", "l1.json"), ("d1.json", "d2.json")):
+        code, _, err = cli(capsys, "fit", "a.csv", "--json", pair[0], "--dxf", pair[1])
+        assert code == 2 and "given twice" in err, pair
+    assert (work / "target.json").read_text() == "old" and not (work / "new.json").exists()
+
+
+def test_a_fifo_output_of_a_failing_command_is_closed_for_its_reader(work, capsys):
+    """A command that fails before writing opened no output, so a reader waiting on a FIFO
+    output blocked for ever (`mkfifo p; cat p & elastica fit bad.csv --json p`); a
+    shell's '> p' would have opened it and closed it: the reader sees the end. Linux
+    reports POLLHUP on a FIFO's read end only once a writer has opened it since."""
+    import select
+    (work / "bad.csv").write_text("x,y\n1,nan\n")
+    fifo = work / "pipe.json"
+    os.mkfifo(fifo)
+    fd = os.open(fifo, os.O_RDONLY | os.O_NONBLOCK)    # the waiting reader
+    try:
+        code, _, err = cli(capsys, "fit", "bad.csv", "--json", "pipe.json")
+        assert code == 2 and "bad.csv" in err
+        poller = select.poll()
+        poller.register(fd, select.POLLIN)
+        events = poller.poll(0)
+        assert events and events[0][1] & select.POLLHUP
+        assert os.read(fd, 100) == b""
+    finally:
+        os.close(fd)
+    assert sorted(p.name for p in work.iterdir()) == ["a.csv", "bad.csv", "pipe.json"]
+
+
 def test_an_output_that_is_a_fifo_is_written_through(work, capsys):
     """QA23: an output that is not a regular file (a FIFO here; /dev/null, /dev/full as
     root) was replaced by a regular file, and its reader got nothing."""
