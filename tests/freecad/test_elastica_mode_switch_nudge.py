@@ -76,3 +76,53 @@ class SplineKeptNudgeTest(S.DocTest):
             self.assertEqual(s.Curves, fresh.Curves, dx)
             self.assertEqual(s.Status, fresh.Status, dx)
             self.doc.removeObject(fresh.Name)
+
+    def test_the_kept_spline_comes_back_after_a_recompute_that_failed(self):
+        """A duck of the kept spline dragged onto its neighbour (no spline: the recompute
+        fails, the last good curve kept on screen), then back: the next recompute took the
+        failed one's Status to mean no curve was shown, solved afresh and showed the
+        library's own 225.578 mm spline, Status 'ok', KeptShown cleared, nothing said. The
+        curve on screen is still the kept one: it is kept again (or followed, or said)."""
+        sk, s = self.kept()
+        where = sk.getPoint(5, 1)
+        sk.movePoint(5, 1, sk.getPoint(4, 1))
+        self.doc.recompute()
+        self.assertTrue(s.Status.startswith("error"), s.Status)
+        self.assertAlmostEqual(s.SplineLength, 272.104, delta=1e-6 * 272.104)   # still shown
+        sk.movePoint(5, 1, where)
+        self.doc.recompute()
+        self.assertFalse(s.Status.startswith("error"), s.Status)
+        self.assertAlmostEqual(s.SplineLength, 272.104, delta=1e-6 * 272.104)
+        self.assertTrue(s.KeptShown)
+        self.assertIn("the spline shown kept (272.104 mm)", s.Status)
+        # dragged away and to a point near where it was: followed from the curve on screen
+        sk.movePoint(5, 1, sk.getPoint(4, 1))
+        self.doc.recompute()
+        self.assertTrue(s.Status.startswith("error"), s.Status)
+        sk.movePoint(5, 1, where + App.Vector(0.5, 0, 0))
+        self.doc.recompute()
+        self.assertAlmostEqual(s.SplineLength, 271.87, delta=0.05)
+        self.assertIn("the spline kept at the switch of Solve for followed to the moved points",
+                      s.Status)
+        self.assertTrue(s.KeptShown)
+
+    def test_a_kept_spline_lost_after_a_failed_recompute_is_said(self):
+        """As above, where the kept spline cannot be followed from the curve on screen (the
+        by-length solve refused, a stand-in): the library's own is shown and it is said."""
+        sk, s = self.kept()
+        where = sk.getPoint(5, 1)
+        sk.movePoint(5, 1, sk.getPoint(4, 1))
+        self.doc.recompute()
+        self.assertTrue(s.Status.startswith("error"), s.Status)
+        refuse_spline_solves(self, "length")
+        said, _ = S.console_output(lambda: nudge_to(sk, 5, where + App.Vector(0.01, 0, 0)))
+        self.assertAlmostEqual(s.SplineLength, 225.58, delta=0.05)
+        words = "the spline kept at the switch of Solve for (272.104 mm) could not be followed"
+        self.assertIn(words, s.Status)
+        self.assertIn(words, said)
+        self.assertFalse(s.KeptShown)
+
+
+def nudge_to(sk, i, p):
+    sk.movePoint(i, 1, p)
+    sk.Document.recompute()

@@ -694,9 +694,12 @@ class SplineProxy(FeatureProxy):
         followed = self.follow_source(obj, pts)
         try:
             switched, self._switched = getattr(self, "_switched", False), False
+            # the curve on screen: the last good one, also after a recompute that failed
+            # (its results and shape are kept, drawn dashed): skipping it then showed the
+            # library's own spline, silently, once a duck dragged where no spline exists
+            # came back (kept_shown keeps, follows or says the kept one)
             shown = (obj.Curves, float(obj.SplineLength), float(obj.SplineTension), switched,
-                     obj.KeptShown) \
-                if obj.Ducks and not obj.Status.startswith("error") else None
+                     obj.KeptShown) if obj.Ducks else None
             r = self.handed(spline_core, pts, plane, obj.Mode, obj.Tension, float(obj.Length),
                             obj.Closed, *self.end_specs(obj), tol=float(obj.Tolerance),
                             degree=obj.Degree, shown=shown)
