@@ -14,7 +14,7 @@ import FreeCAD as App
 import Part
 
 import elastica_samples as S
-from freecad.elastica import blend as Bl, blend_start as BS, units as U
+from freecad.elastica import blend as Bl, blend_g2 as BG, blend_start as BS, units as U
 
 
 class BlendG2FairTest(unittest.TestCase):
@@ -76,7 +76,7 @@ class BlendG2FairTest(unittest.TestCase):
         at tension -0.00941/mm^2, 4.3 x the bending energy)."""
         dist = (sk.Shape.Edges[1].valueAt(sk.Shape.Edges[1].LastParameter)
                 - App.Vector(-20, 150, 0)).Length
-        said = U.tension_text(b.BlendTension, dist, Bl.G2_TENSION_DIGITS)
+        said = U.tension_text(b.BlendTension, dist, BG.G2_TENSION_DIGITS)
         self.assertIn(f"at tension {said}: set Tension to it to keep this curve, a length "
                       "bends another branch", b.Status)
         self.assertNotIn("give a length", b.Status)

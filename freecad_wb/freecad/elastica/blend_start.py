@@ -4,8 +4,8 @@ by, free_or_length), or the free G2 batten is a snake (fairer_than_free, g2_blen
 length at the fairest of LENGTH_MULTIPLES times the distance between the ends, and said."""
 from __future__ import annotations
 
-from .blend import (G2_REACH_MULTIPLES, G2_TENSION_DIGITS, NoBlend, bending_energy, blend_core,
-                    describe, g2_problem, inflections, plural, quiet_g2)
+from .blend import NoBlend, bending_energy, blend_core, describe, inflections, plural
+from .blend_g2 import G2_REACH_MULTIPLES, G2_TENSION_DIGITS, g2_problem, quiet_g2
 from .geometry import edge_end, el, np
 from .kept import checked_call
 from .units import length_mark, per_length_mark, tension_mark
