@@ -44,34 +44,34 @@ def _copy_edges(feature):
 def _farthest(edge, other):
     """The largest distance (mm) from ``edge``'s points to the shape ``other``: SAMPLES
     points equally spaced along the edge, then the largest of them refined by golden-section
-    search between the samples either side of it. The samples alone said 39.3 mm of a copy
-    40.3 mm off (its farthest point between two samples: the figure wrong in its second
-    digit). The distance is 1-Lipschitz in arc length, so a bracket REFINE wide leaves at
-    most REFINE / 2 mm (at a smooth maximum, far less). Hand-written: scipy (its
-    minimize_scalar) is not in FreeCAD's Python, and Part has no curve-to-shape largest
-    distance."""
-    length = edge.Length
-    if length <= 0.0:
-        return other.distToShape(Part.Vertex(edge.valueAt(edge.FirstParameter)))[0]
+    search on the edge's parameter between the samples either side of it, until their points
+    are REFINE apart. The samples alone said 39.3 mm of a copy 40.3 mm off (its farthest
+    point between two samples: the figure wrong in its second digit). The distance is
+    1-Lipschitz along the edge, so a bracket REFINE long leaves at most REFINE / 2 mm (at a
+    smooth maximum, far less). Hand-written: scipy (its minimize_scalar) is not in FreeCAD's
+    Python, and Part has no curve-to-shape largest distance."""
+    def dist(p):
+        return other.distToShape(Part.Vertex(p))[0]
 
-    def dist(s):
-        return other.distToShape(Part.Vertex(edge.valueAt(edge.getParameterByLength(s))))[0]
-
-    h = length / (SAMPLES - 1)
-    d = [dist(min(j * h, length)) for j in range(SAMPLES)]
-    j = max(range(SAMPLES), key=d.__getitem__)
-    a, b = max(0.0, (j - 1) * h), min(length, (j + 1) * h)
+    pts = edge.discretize(SAMPLES)
+    d = [dist(p) for p in pts]
+    j = max(range(len(d)), key=d.__getitem__)
+    curve = edge.Curve
+    a = curve.parameter(pts[j - 1]) if j > 0 else edge.FirstParameter
+    b = curve.parameter(pts[j + 1]) if j + 1 < len(pts) else edge.LastParameter
+    if not a < b:       # (a seam between them: the samples' figure stands)
+        return d[j]
     c, e = b - GOLDEN * (b - a), a + GOLDEN * (b - a)
-    dc, de = dist(c), dist(e)
-    while b - a > REFINE:
+    dc, de = dist(edge.valueAt(c)), dist(edge.valueAt(e))
+    while (edge.valueAt(b) - edge.valueAt(a)).Length > REFINE:
         if dc >= de:
             b, e, de = e, c, dc
             c = b - GOLDEN * (b - a)
-            dc = dist(c)
+            dc = dist(edge.valueAt(c))
         else:
             a, c, dc = c, e, de
             e = a + GOLDEN * (b - a)
-            de = dist(e)
+            de = dist(edge.valueAt(e))
     return max(d[j], dc, de)
 
 
