@@ -17,11 +17,11 @@ class PackageTest(unittest.TestCase):
     def test_namespace_layout(self):
         self.assertFalse(os.path.exists(os.path.join(WB, "freecad", "__init__.py")))
         for f in ("__init__.py", "init_gui.py", "commands.py", "features.py", "taskpanels.py",
-                  "panelbase.py", "panelexpressions.py", "spinboxes.py", "preferences.py",
+                  "blend_panel.py", "panelbase.py", "panelexpressions.py", "spinboxes.py", "preferences.py",
                   "sources.py",
                   "viewproviders.py",
                   "geometry.py", "nearest.py", "proxy.py", "fit.py", "fit_core.py", "fit_ends.py",
-                  "fit_shape.py", "blend.py", "spline.py",
+                  "fit_shape.py", "blend.py", "blend_g2.py", "spline.py",
                   "comb.py", "ellblend.py", "g2quad.py"):
             self.assertTrue(os.path.isfile(os.path.join(PKG, f)), f)
 
@@ -39,10 +39,11 @@ class PackageTest(unittest.TestCase):
         modules (and what they share) import neither GUI modules nor Qt; the GUI
         reaches them, never the other way (view providers come through a hook)."""
         import ast
-        gui = {"taskpanels", "panelbase", "panelexpressions", "spinboxes", "viewproviders",
+        gui = {"taskpanels", "blend_panel", "panelbase", "panelexpressions", "spinboxes", "viewproviders",
                "commands", "init_gui", "preferences", "FreeCADGui", "PySide", "pivy"}
         for f in ("proxy", "geometry", "nearest", "sources", "fit", "fit_core", "fit_ends",
-                  "fit_shape", "blend", "spline", "comb", "ellblend", "g2quad", "copies"):
+                  "fit_shape", "blend", "blend_g2", "blend_start", "spline", "comb", "ellblend",
+                  "g2quad", "copies"):
             with open(os.path.join(PKG, f + ".py")) as fh:
                 tree = ast.parse(fh.read())
             names = set()
