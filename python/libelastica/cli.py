@@ -80,15 +80,18 @@ G2QUAD_EXAMPLES = """examples:
 
 class _Parser(argparse.ArgumentParser):
     """argparse with usage errors as ONE line on stderr (exit 2), and negative numbers
-    with an exponent taken as numbers."""
+    with an exponent, and points X,Y whose X is negative, taken as values."""
 
     def __init__(self, *a, **kw):
         super().__init__(*a, **kw)
         # argparse takes '-1e-8' and '-5e3' for options (its negative-number pattern has no
-        # exponent: `hermite ... 1 -1e-8` failed "arguments are required: V"); no option of
-        # the CLI looks like a number, so every one of them is a number
-        self._negative_number_matcher = re.compile(r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?"
-                                                   r"\s*(deg|rad)?$", re.IGNORECASE)
+        # exponent: `hermite ... 1 -1e-8` failed "arguments are required: V"), and a point
+        # '-3120.5,1500.25' too (`fit --start-point -3120.5,1500.25` failed "expected one
+        # argument", QA24: drawings with the origin amidships); no option of the CLI looks
+        # like a number, so every one of them is a value
+        number = r"(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?"
+        self._negative_number_matcher = re.compile(
+            rf"^-{number}(\s*(deg|rad)?|\s*,\s*[-+]?{number})$", re.IGNORECASE)
 
     def error(self, message: str):
         self.exit(EXIT_BADINPUT, f"{self.prog}: error: {message}\n")

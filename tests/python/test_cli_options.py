@@ -62,9 +62,13 @@ def test_hermite_counts_the_unrepresentable_and_names_no_fair_one(capsys, tmp_pa
     (["hermite", "0", "0", "1", "0", "1", "0", "1", "0", "--tension", "-2e-1"], "tension", -0.2),
     (["blend", "0", "0", "0.3", "0.8", "0.7", "0.9", "1", "-1e-3"], "values", -1e-3),
     (["spline", "p.csv", "--start-tangent", "1", "-1e-9"], "start_tangent", -1e-9),
-    (["fit", "p.csv", "--end-curvature", "-.5e-2"], "end_curvature", -0.005)])
+    (["fit", "p.csv", "--end-curvature", "-.5e-2"], "end_curvature", -0.005),
+    (["fit", "p.csv", "--start-point", "-3120.5,1500.25"], "start_point", "-3120.5,1500.25"),
+    (["fit", "p.csv", "--end-point", "-1e3, -2.5E-1"], "end_point", "-1e3, -2.5E-1")])
 def test_negative_numbers_with_an_exponent_are_numbers(args, where, value):
-    """argparse took '-1e-8' for an option ('the following arguments are required: V')."""
+    """argparse took '-1e-8' for an option ('the following arguments are required: V'), and
+    a point whose X is negative too ('--start-point -3120.5,1500.25': "expected one
+    argument", QA24)."""
     got = getattr(build_parser().parse_args(args), where)
     assert value in (got if isinstance(got, list) else [got])
 
