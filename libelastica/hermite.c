@@ -177,13 +177,13 @@ static int straight_solution(const hframe *fr, double sigma, el_hermite_solution
  * with kappa = 2 k sqrt(mu) dn(k u; 1/k) constant to 1/(2 k^2) = 5e-9 relative, and
  * el_smooth_eval's closed form loses about eps k^2 to cancellation, so the arc
  * meets the ends only to ~1e-8: it is returned when that is within opt->tol. */
-static int circle_arc(const hframe *fr, const double u0[2], const double u1[2],
-                      double *c, double *L)
+static int circle_arc(const hframe *fr, const double u0[2], double *c, double *L)
 {
     const double P[2] = {fr->p1[0] - fr->p0[0], fr->p1[1] - fr->p0[1]};
     const double beta = atan2(u0[0] * P[1] - u0[1] * P[0], u0[0] * P[0] + u0[1] * P[1]);
     if (fabs(beta) < 1e-8) return 0;                       /* straight, handled apart */
-    if (fabs(el__hermite_wrap_pi(fr->psi0 + 2.0 * beta - atan2(u1[1], u1[0]))) > 1e-12) return 0;
+    /* fr->psi1: the end tangent's angle, atan2(u1[1], u1[0]) of el__hermite_normalise */
+    if (fabs(el__hermite_wrap_pi(fr->psi0 + 2.0 * beta - fr->psi1)) > 1e-12) return 0;
     *c = 2.0 * sin(beta) / fr->d;
     *L = 2.0 * beta / *c;
     return 1;
@@ -409,7 +409,7 @@ int el__hermite_solve_limited(const double p0[2], const double t0[2], const doub
     const int near_unrep = near_ok && !(nearly.residual <= opt->tol) && nearly.residual <= 1e3 * near_floor;
     double cc, cL;
     int circle_unrep = 0;
-    if (circle_arc(&fr, u0, u1, &cc, &cL) &&
+    if (circle_arc(&fr, u0, &cc, &cL) &&
         (opt->mode == EL_HERMITE_TENSION ? fabs(opt->sigma - cc * cc) <= 1e-12 * cc * cc
                                          : fabs(opt->length - cL) <= 1e-12 * cL)) {
         circle_solution(&fr, cc, cL, &sol[n]);
