@@ -50,7 +50,7 @@ typedef struct hstate {
 /* The kind of curve a curvature state starts (Theorem 7), |F| into *Fn.
  * CLASS_NONE: none the objective covers: F = 0 (the circle kappa_m^2 = sigma,
  * singular, (45)), kappa_m = 0 (straight, handled apart), or non-inflectional with
- * kappa0 kappa1 <= 0 against (44); CLASS_MIXED: see piece_class. */
+ * kappa0 kappa1 <= 0 against (44); CLASS_MIXED: see el__hermite_piece_classes. */
 enum { CLASS_NONE, CLASS_INFL, CLASS_NONINFL, CLASS_MIXED };
 
 /* Theorem 6, 7: the curvature data for the unknown x on branch b, the curve they
@@ -76,6 +76,18 @@ void el__hermite_x_objectives(const hprob *pr, const double *x, int n, int b, do
  * el__lanes4_available(), lanes.h) */
 void el__hermite_x_objectives2(const hprob *pr, const double *x, int n, int b, double qs, double *f);
 void el__hermite_x_objectives4(const hprob *pr, const double *x, int n, int b, double qs, double *f);
+/* el__hermite_x_class at the n abscissae x[0..n) into cls (hermite_lanes.c), four at a time
+ * where the processor has AVX2, else two (the scalar class in case 3): the same classes
+ * (test_hermite_tension.c); each width by itself */
+void el__hermite_x_classes(const hprob *pr, const double *x, int n, int b, int *cls);
+void el__hermite_x_classes2(const hprob *pr, const double *x, int n, int b, int *cls);
+void el__hermite_x_classes4(const hprob *pr, const double *x, int n, int b, int *cls);
+/* The kind of curve on each of the n - 1 pieces between the ascending split points
+ * x[0..n) of branch b (n - 1 < HERMITE_GATHER_MAX / 2) into cls[0..n-1): the class at the
+ * piece's midpoint; where it has no curve, CLASS_NONE if both quarter points agree, else
+ * CLASS_MIXED (a split point missed by rounding: the piece searched as it is). All
+ * midpoints classified together, then the quarter points (el__hermite_x_classes). */
+void el__hermite_piece_classes(const hprob *pr, int b, const double *x, int n, int *cls);
 /* A piece of a branch searched in the x chart (hermite_tension.c): its ends, the separatrix
  * crossings at them (NAN: none), its sample count ns (ns + 1 samples), its kind of curve
  * (CLASS_*). */

@@ -88,3 +88,40 @@ void el__hermite_sample_pieces(const hprob *pr, int b, const hpiece *pc, int np,
         for (int j = 0; j < n; j++) fs[idx[j]] = tf[j];
     }
 }
+
+void el__hermite_x_classes(const hprob *pr, const double *x, int n, int b, int *cls)
+{
+    if (pr->hcase == 3) {   /* kappa0 fixed, x = kappa0': the scalar classes */
+        for (int i = 0; i < n; i++) cls[i] = el__hermite_x_class(pr, x[i], b);
+        return;
+    }
+#if EL__LANES4
+    if (__builtin_cpu_supports("avx2")) {
+        el__hermite_x_classes4(pr, x, n, b, cls);
+        return;
+    }
+#endif
+    el__hermite_x_classes2(pr, x, n, b, cls);
+}
+
+void el__hermite_piece_classes(const hprob *pr, int b, const double *x, int n, int *cls)
+{
+    double xm[HERMITE_GATHER_MAX], xq[HERMITE_GATHER_MAX];
+    int cq[HERMITE_GATHER_MAX], iq[HERMITE_GATHER_MAX / 2], nq = 0;
+    if (n < 2) return;
+    /* the midpoints, as the plain piece class computes them */
+    for (int i = 0; i + 1 < n; i++) xm[i] = 0.5 * (x[i] + x[i + 1]);
+    el__hermite_x_classes(pr, xm, n - 1, b, cls);
+    /* the quarter points of the pieces whose midpoint has no curve */
+    for (int i = 0; i + 1 < n; i++)
+        if (cls[i] == CLASS_NONE) {
+            const double a = x[i], c = x[i + 1];
+            iq[nq / 2] = i;
+            xq[nq++] = a + 0.25 * (c - a);
+            xq[nq++] = a + 0.75 * (c - a);
+        }
+    if (!nq) return;
+    el__hermite_x_classes(pr, xq, nq, b, cq);
+    for (int j = 0; j < nq; j += 2)
+        cls[iq[j / 2]] = cq[j] == CLASS_NONE && cq[j + 1] == CLASS_NONE ? CLASS_NONE : CLASS_MIXED;
+}

@@ -173,3 +173,18 @@ void LN(el__hermite_x_objectives)(const hprob *pr, const double *x, int n, int b
         }
     }
 }
+
+/* el__hermite_x_class at the n abscissae x[0..n) (cases 1 and 2), LANES_W at a time: the
+ * class from state_lanes' masks (the same comparisons on the same values as curvdata and
+ * state_class: CLASS_NONE where curvdata fails or state_class finds no curve) */
+void LN(el__hermite_x_classes)(const hprob *pr, const double *x, int n, int b, int *cls)
+{
+    for (int i = 0; i < n; i += LANES_W) {
+        LV xs, k1, k1p, F1, F2, Fn;
+        LM infl;
+        for (int l = 0; l < LANES_W; l++) xs[l] = x[i + l < n ? i + l : n - 1];
+        const LM none = state_lanes(pr, xs, b, &k1, &k1p, &F1, &F2, &Fn, &infl);
+        for (int l = 0; l < LANES_W && i + l < n; l++)
+            cls[i + l] = none[l] ? CLASS_NONE : infl[l] ? CLASS_INFL : CLASS_NONINFL;
+    }
+}

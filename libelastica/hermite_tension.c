@@ -711,18 +711,6 @@ static int separatrix_end(const hprob *pr, int b, double x_end, double dir, doub
     return solve_sep_piece(&c, yc, st.f, out);
 }
 
-/* The kind of curve on a piece between split points, from its midpoint;
- * CLASS_NONE is confirmed at the quarter points, and CLASS_MIXED (they disagree:
- * a split point missed by rounding) has the piece searched as it is. */
-static int piece_class(const hprob *pr, int b, double a, double c)
-{
-    const int mid = point_class(pr, b, 0.5 * (a + c));
-    if (mid != CLASS_NONE) return mid;
-    /* a piece is skipped only when the quarter points agree */
-    const int c1 = point_class(pr, b, a + 0.25 * (c - a)), c3 = point_class(pr, b, a + 0.75 * (c - a));
-    return c1 == CLASS_NONE && c3 == CLASS_NONE ? CLASS_NONE : CLASS_MIXED;
-}
-
 static int nbranches(const hprob *pr) { return pr->hcase == 1 ? 2 : pr->hcase == 2 ? 1 : 4; }
 
 /* All roots of the objectives for fixed sigma (seed 004 §4); lean: solve_sep_piece; the
@@ -762,7 +750,11 @@ static int solve_tension(hprob *pr, int ns, int lean, double sep_sigma, hrootlis
         for (int i = 0; i < l.n; i++)
             if (l.v[i].x > -X && l.v[i].x < X) pts[n++] = l.v[i];
         sort_splitpts(pts, n);
-        for (int i = 0; i + 1 < n; i++) cls[i] = piece_class(pr, b, pts[i].x, pts[i + 1].x);
+        /* the kind of curve on each piece (from its midpoint, CLASS_NONE confirmed at the
+         * quarter points), all pieces' points classified together */
+        double px[MAXPTS + 2];
+        for (int i = 0; i < n; i++) px[i] = pts[i].x;
+        el__hermite_piece_classes(pr, b, px, n, cls);
         fctx c;
         fctx_init(&c, pr, b);
         /* without separatrix pieces the pieces' samples are evaluated together */

@@ -692,6 +692,72 @@ START_TEST(x_objectives_equal_the_scalar_objective)
 }
 END_TEST
 
+/* el__hermite_x_classes (hermite_lanes.c: four lanes where the processor has AVX2, else
+ * two; each width by itself) against el__hermite_x_class one by one, and
+ * el__hermite_piece_classes against the plain piece class (the midpoint's class; where it
+ * has no curve, CLASS_NONE if both quarter points have none, else CLASS_MIXED), on every
+ * branch of the six families' problems (cases 1, 2 and 3): runs of 1 to 13 abscissae and
+ * ascending split points 2 to 66, dense (spans down to 1e-12 B) and sparse (up to 2.2 B,
+ * beyond the bound where no curve is): every class met, mixed pieces too. */
+START_TEST(piece_classes_equal_the_plain_classes)
+{
+    unsigned long long st = 2718;
+    long ncls[4] = {0, 0, 0, 0}, nmixed = 0, nwidth[3] = {0, 0, 0};
+    const int four = EL__LANES4 && el__lanes4_available();
+    if (!four) fprintf(stderr, "piece_classes_equal_the_plain_classes: four lanes not run (no AVX2 here, or built without)\n");
+    for (int family = 0; family < 6; family++)
+        for (int t = 0; t < 60; t++) {
+            double p1[2], t1[2], sigma;
+            draw(&st, family, p1, t1, &sigma);
+            hprob pr = normalised_problem(p1, t1, sigma);
+            if (t % 10 == 0) {   /* case 3: P2 = 0, V1 = 0 */
+                pr.P1 = 1.0; pr.P2 = 0.0; pr.V1 = 0.0; pr.V2 = t % 20 ? 1.0 : -1.0;
+                el__hermite_set_case(&pr);
+            }
+            if (el__hermite_kappa_bound(pr.sigma, pr.Lmin, &pr.B) || pr.B < 0.0) continue;
+            for (int b = 0; b < 4; b++)
+                for (int r = 0; r < 60; r++) {
+                    double x[66];
+                    int cls[66];
+                    const double c = pr.B * test_uniform(&st, -1.1, 1.1), w = pr.B * pow(10.0, test_uniform(&st, -12.0, 0.34));
+                    if (r % 2) {
+                        const int n = 1 + (int)test_uniform(&st, 0.0, 13.0), width = r % 3 == 0 ? 0 : r % 3 == 1 ? 2 : 4;
+                        for (int i = 0; i < n; i++) x[i] = c + w * test_uniform(&st, -1.0, 1.0);
+                        if (width == 0) el__hermite_x_classes(&pr, x, n, b, cls);
+                        else if (width == 2 && pr.hcase != 3) el__hermite_x_classes2(&pr, x, n, b, cls);
+#if EL__LANES4
+                        else if (width == 4 && four && pr.hcase != 3) el__hermite_x_classes4(&pr, x, n, b, cls);
+#endif
+                        else continue;
+                        nwidth[width / 2]++;
+                        for (int i = 0; i < n; i++) {
+                            ck_assert_msg(cls[i] == el__hermite_x_class(&pr, x[i], b), "x %.17g b %d width %d: class %d, plain %d",
+                                          x[i], b, width, cls[i], el__hermite_x_class(&pr, x[i], b));
+                            ncls[cls[i]]++;
+                        }
+                    } else {
+                        const int n = 2 + (int)test_uniform(&st, 0.0, 65.0);
+                        for (int i = 0; i < n; i++) x[i] = c - w + 2.0 * w * i / (n - 1) * (1.0 + 0.4 * test_uniform(&st, -1.0, 1.0) / n);
+                        el__hermite_piece_classes(&pr, b, x, n, cls);
+                        for (int i = 0; i + 1 < n; i++) {
+                            const double a = x[i], e = x[i + 1];
+                            int plain = el__hermite_x_class(&pr, 0.5 * (a + e), b);
+                            if (plain == CLASS_NONE) {
+                                const int c1 = el__hermite_x_class(&pr, a + 0.25 * (e - a), b);
+                                const int c3 = el__hermite_x_class(&pr, a + 0.75 * (e - a), b);
+                                plain = c1 == CLASS_NONE && c3 == CLASS_NONE ? CLASS_NONE : CLASS_MIXED;
+                            }
+                            ck_assert_msg(cls[i] == plain, "piece [%.17g, %.17g] b %d: class %d, plain %d", a, e, b, cls[i], plain);
+                            nmixed += plain == CLASS_MIXED;
+                        }
+                    }
+                }
+        }
+    ck_assert(ncls[CLASS_NONE] > 10000 && ncls[CLASS_INFL] > 10000 && ncls[CLASS_NONINFL] > 10000 && nmixed > 0);
+    ck_assert(nwidth[0] > 1000 && nwidth[1] > 1000 && (!four || nwidth[2] > 1000));
+}
+END_TEST
+
 /* el__smooth_ends (the end-residual checks' evaluation, smooth.c) against
  * el_smooth_eval at s = 0 and s = length: the same status and, where EL_OK, the same bits,
  * over curves of every kind: |k| < 1, near and at 1, > 1 (theta's branch), k = 0 and
@@ -737,6 +803,7 @@ int main(void)
     tcase_add_test(tc, steep_root_next_to_a_close_pair_is_kept);
     tcase_add_test(tc, x_objective_and_class_equal_the_plain_evaluation);
     tcase_add_test(tc, x_objectives_equal_the_scalar_objective);
+    tcase_add_test(tc, piece_classes_equal_the_plain_classes);
     tcase_add_test(tc, smooth_ends_equal_el_smooth_eval);
     tcase_add_test(tc, kappa_bound_bounds_the_period_tightly);
     tcase_add_test(tc, kappa_bound_equals_the_plain_brent);
