@@ -114,10 +114,6 @@ static double domain_half(const hprob *pr, int b)
     return r > 0.0 ? 0.5 * sqrt(r) : -1.0;
 }
 
-/* The kind of curve at x (el__hermite_state_class; cheap, the curvature data only); CLASS_NONE
- * also outside (18). */
-static int point_class(const hprob *pr, int b, double x) { return el__hermite_x_class(pr, x, b); }
-
 /* Split points of branch b: (18) ends, (40) roots, (44) kappa0 = 0 and kappa1 = 0,
  * (45) special values; case 3: (41), kappa0' = 0. */
 static int split_points(const hprob *pr, int b, double X, const double *r40, const int *b40,
@@ -155,10 +151,16 @@ static int split_points(const hprob *pr, int b, double X, const double *r40, con
      * objective here is the error along F, regular where F is parallel to x1; it
      * vanished at none of the special values of the 10 000 bench problems (31 000
      * evaluated). So only the singular ones split: F = 0 (the circle kappa0^2 = sigma,
-     * kappa0' = 0 on this branch) and those without a curve (point_class) */
+     * kappa0' = 0 on this branch) and those without a curve (el__hermite_x_class's
+     * CLASS_NONE, also outside (18); the values in the domain classified together) */
     if ((rc = el__hermite_special_values(pr, r, &nr))) return rc;
+    double xv[16];
+    int cv[16], nv = 0;
     for (int i = 0; i < nr; i++)
-        if (fabs(r[i]) < X && point_class(pr, b, r[i]) == CLASS_NONE) pt_add(l, r[i], 0);
+        if (fabs(r[i]) < X) xv[nv++] = r[i];
+    el__hermite_x_classes(pr, xv, nv, b, cv);
+    for (int i = 0; i < nv; i++)
+        if (cv[i] == CLASS_NONE) pt_add(l, xv[i], 0);
     return EL_OK;
 }
 
@@ -744,11 +746,13 @@ static int solve_tension(hprob *pr, int ns, int lean, double sep_sigma, hrootlis
         ptlist l;
         if ((rc = split_points(pr, b, X, r40, b40, n40, &l))) return rc;
         splitpt pts[MAXPTS + 2];   /* pts[0..n) used: no zero-initialisation of its 1 KB */
-        int n = 2, cls[MAXPTS + 1];
+        int n = 1, cls[MAXPTS + 1];
         pts[0] = (splitpt){-X, 0};
-        pts[1] = (splitpt){X, 0};
         for (int i = 0; i < l.n; i++)
             if (l.v[i].x > -X && l.v[i].x < X) pts[n++] = l.v[i];
+        /* X, the unique largest, appended last: the stable sort's result as with X second,
+         * without moving it past every other point */
+        pts[n++] = (splitpt){X, 0};
         sort_splitpts(pts, n);
         /* the kind of curve on each piece (from its midpoint, CLASS_NONE confirmed at the
          * quarter points), all pieces' points classified together */
