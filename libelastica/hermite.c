@@ -145,7 +145,7 @@ static int make_solution(const hframe *fr, const hroot *r, el_hermite_solution *
     }
     /* scaled by e = 2^ilogb(d) (exactly; d / e in [1, 2)): |F| - sigma (to 1e-300) would
      * underflow divided by d^2 (length 1.01 d at d = 1e40: solutions lost) */
-    const double e = ldexp(1.0, ilogb(d)), dn = d / e, dn2 = dn * dn, sep = st->sep / dn2;
+    const double e = fr->e, dn = d / e, dn2 = dn * dn, sep = st->sep / dn2;
     const int rc = el__hermite_params_from_state(fr->p0[0], fr->p0[1], fr->psi0, st->k0 / dn, st->k0p / dn2,
                                                  r->sigma / dn2, st->L * dn, st->has_sep ? &sep : NULL, &s->curve);
     s->curve.mu /= e * e;
@@ -307,6 +307,7 @@ int el__hermite_normalise(const double p0[2], const double u0[2], const double p
     if (!(fr->d >= 1.0 / SCALE_MAX && fr->d <= SCALE_MAX) || fabs(p0[0]) > SCALE_MAX ||
         fabs(p0[1]) > SCALE_MAX || fabs(p1[0]) > SCALE_MAX || fabs(p1[1]) > SCALE_MAX)
         return EL_EDOM;
+    fr->e = ldexp(1.0, ilogb(fr->d));   /* once per problem, not per solution */
     const double cr = cos(fr->rot), sr = sin(fr->rot);
     const double dx = (p1[0] - p0[0]) / fr->d, dy = (p1[1] - p0[1]) / fr->d;
     pr->P1 = cr * dx + sr * dy;
@@ -453,7 +454,7 @@ int el__hermite_solve_limited(const double p0[2], const double t0[2], const doub
          * the chain split at its saddles (hermite_chain.c) */
         if (!(s.residual <= opt->tol) && representation_limited(&roots.v[i])) {
             double scale;
-            const double dn = fr.d / ldexp(1.0, ilogb(fr.d)), sep = root_sep(&roots.v[i], &scale) / (dn * dn);
+            const double dn = fr.d / fr.e, sep = root_sep(&roots.v[i], &scale) / (dn * dn);
             const double target = opt->mode == EL_HERMITE_TENSION ? opt->sigma : opt->length;
             el__hermite_chain(&fr, opt->mode, target, sep, opt->tol, &s);
             if (!(s.residual <= opt->tol)) {

@@ -229,10 +229,11 @@ typedef struct { double g, alpha, beta, c, k0, k0p, L, lnsep, amax; int side; } 
 int el__hermite_near_beam(double sigma, double t0, double t1, hbeam *bm);
 int el__hermite_near_roots(const hprob *pr, hrootlist *out);
 
-/* The world frame of a problem: the ends, their tangent angles, d = |p1 - p0|, and
- * rot, the angle that turns the normalised frame into the world's. */
+/* The world frame of a problem: the ends, their tangent angles, d = |p1 - p0|, e =
+ * 2^ilogb(d) (the exact scaling of the solutions' states, make_solution), and rot, the
+ * angle that turns the normalised frame into the world's. Built by el__hermite_normalise. */
 typedef struct {
-    double p0[2], p1[2], psi0, psi1, d, rot;
+    double p0[2], p1[2], psi0, psi1, d, e, rot;
 } hframe;
 
 /* The solution s (one piece, from the root: its curve, length, scalars), whose curve
