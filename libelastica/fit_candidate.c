@@ -6,6 +6,7 @@
  * face), or, unless deferred, a point left uncertified.
  */
 #include "fit_internal.h"
+#include "fit_obstate.h"
 #include <stdlib.h>
 #include <string.h>
 
@@ -104,14 +105,12 @@ static int rows_towards(const fit_objective *ob, const fit_constraints *con, con
 /* The objective's state (its fields, feet and distances at rest) as a fit left it, put back
  * after another run from the same start that is not kept: the kept fit's later steps then
  * see exactly what they saw before that run. */
-typedef struct ob_state {
-    fit_objective ob;
-    double *buf;          /* the feet's two arrays, then rest and rest_foot (n each) */
-} ob_state;
+typedef fit_ob_state ob_state;
 
 static double *feet_block(const fit_objective *ob) { return ob->s < ob->s_next ? ob->s : ob->s_next; }
 
-static int ob_save(const fit_objective *ob, ob_state *k)
+/* el__fit_ob_save: fit_obstate.h */
+int el__fit_ob_save(const fit_objective *ob, fit_ob_state *k)
 {
     const size_t n = ob->n;
     if (!(k->buf = malloc(sizeof(double) * 4 * n))) return EL_ENOMEM;
@@ -122,7 +121,8 @@ static int ob_save(const fit_objective *ob, ob_state *k)
     return EL_OK;
 }
 
-static void ob_restore(fit_objective *ob, const ob_state *k)
+/* el__fit_ob_restore: fit_obstate.h */
+void el__fit_ob_restore(fit_objective *ob, const fit_ob_state *k)
 {
     const size_t n = ob->n;
     *ob = k->ob;
@@ -145,8 +145,8 @@ static int rows_halfway(fit_objective *ob, const el_fit_options *o, const fit_co
 {
     const int nx = ob->map.nx;
     ob_state kept;
-    if (ob_save(ob, &kept)) return EL_ENOMEM;
-    ob_restore(ob, start);
+    if (el__fit_ob_save(ob, &kept)) return EL_ENOMEM;
+    el__fit_ob_restore(ob, start);
     ob->f_ceiling = HUGE_VAL;
     double x[FIT_MAXX];
     memcpy(x, x0, sizeof(double) * (size_t)nx);
@@ -166,7 +166,7 @@ static int rows_halfway(fit_objective *ob, const el_fit_options *o, const fit_co
         if (r->status == EL_ENOCONV && rows_first_order(ob, con, r->x, tmp)) r->status = EL_OK;
         r->iters += first + io.iters;
     } else {
-        ob_restore(ob, &kept);
+        el__fit_ob_restore(ob, &kept);
         r->iters += first + (st == EL_OK ? io.iters : 0);
     }
     free(kept.buf);
@@ -349,7 +349,7 @@ int el__fit_solve_candidate(fit_objective *ob, const el_fit_options *o, const fi
     double xstart[FIT_MAXX];
     ob_state start = {.buf = NULL};
     if (halfway) {
-        if (ob_save(ob, &start)) return EL_ENOMEM;
+        if (el__fit_ob_save(ob, &start)) return EL_ENOMEM;
         memcpy(xstart, x, sizeof(double) * (size_t)nx);
     }
     int st = el__fit_ipopt(ob, xl, xu, need_ipopt ? con : NULL, o, x, &io, tmp);
