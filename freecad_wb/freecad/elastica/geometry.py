@@ -297,6 +297,41 @@ def sketch_curves(feature, sketch):
     return curves
 
 
+# what a sketch's attachment is (Part::AttachExtension's properties)
+ATTACHMENT = ("Support", "MapMode", "MapReversed", "MapPathParameter", "AttachmentOffset")
+
+
+def new_copy_sketch(feature, body=None):
+    """A new sketch for Copy into '(new sketch ...)', in ``body`` (a PartDesign Body: the
+    sources') or at the document's root: attached as the first sketch the feature reads in
+    that container that is attached (its ATTACHMENT: Support, MapMode, AttachmentOffset) and
+    whose plane holds the curve, as Sketcher's new sketch is attached to a face or plane; so it
+    moves as that sketch does (QA24gui F5: an unattached copy of a spline drawn on a Pad's top
+    face stayed at z = 10 when the Pad grew to 15 mm, its Pocket a hidden void, and Copy into
+    again refused). Without one: unattached, placed in the curve's plane (feature.Plane),
+    the Body's placement taken out."""
+    from .containers import read_objects
+    doc = feature.Document
+    sk = body.newObject("Sketcher::SketchObject", "ElasticaSketch") if body is not None \
+        else doc.addObject("Sketcher::SketchObject", "ElasticaSketch")
+    for src in dict.fromkeys(read_objects(feature)):
+        if not is_sketch(src) or src.getParentGeoFeatureGroup() != body or \
+                src.MapMode == "Deactivated" or not src.Support:
+            continue
+        for prop in ATTACHMENT:
+            setattr(sk, prop, getattr(src, prop))       # the attacher places it at once
+        try:
+            sketch_curves(feature, sk)
+            return sk
+        except (InputProblem, Part.OCCError):           # a plane apart: not this one
+            sk.MapMode = "Deactivated"
+            sk.Support = None
+    plane = feature.Plane
+    sk.Placement = plane if body is None else \
+        body.getGlobalPlacement().inverse().multiply(plane)
+    return sk
+
+
 def write_to_sketch(feature, sketch, constrain_to=None):
     """Add the feature's B-spline edge(s) to ``sketch``, mapped into its plane: a copy,
     which no longer follows the feature. ``constrain_to`` [(geo index, pos), (geo index,
@@ -309,7 +344,10 @@ def write_to_sketch(feature, sketch, constrain_to=None):
     constraints joining it to the rest of the profile stay and the solver moves their
     ends onto the new copy, as when a curve is edited in the Sketcher. A second copy
     beside the first (what the panel's Copy into did) overlapped it, and a Pocket of the
-    sketch failed with only 'Recompute failed!' (QA20gui F4). The report view names it."""
+    sketch failed with only 'Recompute failed!' (QA20gui F4). The report view names it.
+    An earlier copy in another number of pieces (a G2 quadratic's, 2 -> 3) is replaced
+    too (_replace_copy: written beside it, 5 -> 8 geometries, left the profile open and its
+    Pad invalid, QA24gui F1), the constraints at its ends kept."""
     curves = sketch_curves(feature, sketch)
     earlier = earlier_copy(feature, sketch)
     if earlier and len(earlier) == len(curves):
@@ -323,6 +361,16 @@ def write_to_sketch(feature, sketch, constrain_to=None):
             f"Elastica: {sketch.Label}: its earlier copy of {feature.Label} (geometry "
             f"{', '.join(str(i + 1) for i in ids)}) replaced by the curve of now\n")
         constrain_to = None                 # joined already
+    elif earlier:
+        ids, lost = _replace_copy(sketch, earlier, [_marked(c, feature, k)
+                                                    for k, c in enumerate(curves)])
+        App.Console.PrintMessage(
+            f"Elastica: {sketch.Label}: its earlier copy of {feature.Label} in "
+            f"{len(earlier)} pieces (geometry {', '.join(str(i + 1) for i in earlier)}) "
+            f"replaced by the curve of now in {len(curves)} (geometry "
+            f"{', '.join(str(i + 1) for i in ids)}), the constraints at its ends kept"
+            + (f"; not kept (they named its pieces): {'; '.join(lost)}" if lost else "") + "\n")
+        constrain_to = None
     else:
         ids = [sketch.addGeometry(_marked(c, feature, k), False) for k, c in enumerate(curves)]
     _remember_copy(feature, sketch, ids)
@@ -438,6 +486,77 @@ def _follow_ends(sketch, geometry, ids):
                     geometry[h].StartPoint = end(g, pos)
                 else:
                     geometry[h].EndPoint = end(g, pos)
+
+
+def _replace_copy(sketch, earlier, curves):
+    """The copy pieces at ``earlier`` replaced by ``curves`` (Part curves, sketch
+    coordinates) in another number of pieces: the old ones deleted (the Sketcher renumbers
+    the geometry after them, their constraints with it), the new added. A constraint that
+    names the old copy only at its start (first piece, start point) or end (last piece, end
+    point) joins it to the rest of the profile: it is added again at the new copy's start or
+    end, the line segments it joins moved onto that end first (_follow_ends' reason); one
+    joint constraint every joint between the old pieces had (Coincident, Tangent) is added at
+    every new joint. The others name a piece or a joint that is no more. Returns (the new
+    pieces' indices, the words for the constraints not kept)."""
+    import Sketcher
+    first, last = earlier[0], earlier[-1]
+    olds = set(earlier)
+    geometry = sketch.Geometry
+    start = curves[0].value(curves[0].FirstParameter)
+    end = curves[-1].value(curves[-1].LastParameter)
+    slots = (("First", "FirstPos"), ("Second", "SecondPos"), ("Third", "ThirdPos"))
+    kept, lost = [], []
+    joints = [None] * (len(earlier) - 1)    # per old joint: the constraint types joining it
+    for n, c in enumerate(sketch.Constraints):
+        refs = [(getattr(c, g), getattr(c, pos)) for g, pos in slots]
+        mine = [r for r in refs if r[0] in olds]
+        if not mine:
+            continue
+        at = {r: ("start" if r == (first, 1) else "end" if r == (last, 2) else None)
+              for r in mine}
+        if None not in at.values():
+            kept.append((c, refs, at))
+            continue
+        pair = sorted(mine, key=lambda r: earlier.index(r[0]))
+        k = earlier.index(pair[0][0])
+        if len(mine) == 2 and c.Type in ("Coincident", "Tangent") and k + 1 < len(earlier) \
+                and pair == [(earlier[k], 2), (earlier[k + 1], 1)]:
+            joints[k] = (joints[k] or set()) | {c.Type}
+            continue
+        lost.append(f"{c.Type} {n + 1}" + (f" '{c.Name}'" if c.Name else ""))
+    common = set.intersection(*joints) if joints and None not in joints else set()
+    for k, j in enumerate(joints):
+        for t in sorted((j or set()) - common):
+            lost.append(f"{t} at the joint of pieces {k + 1} and {k + 2}")
+    # the line segments joined to the ends follow them (in place: Tag, construction kept)
+    for c, refs, at in kept:
+        if c.Type != "Coincident":
+            continue
+        for r in refs:
+            if r[0] >= 0 and r[0] not in olds and r[1] in (1, 2) and \
+                    isinstance(geometry[r[0]], Part.LineSegment):
+                p = start if "start" in at.values() else end
+                if r[1] == 1:
+                    geometry[r[0]].StartPoint = p
+                else:
+                    geometry[r[0]].EndPoint = p
+    sketch.Geometry = geometry
+    tags = [g.Tag for g in sketch.Geometry]
+    sketch.delGeometries(sorted(olds))
+    ids = [sketch.addGeometry(c, False) for c in curves]
+    now = {g.Tag: i for i, g in enumerate(sketch.Geometry)}
+    for c, refs, at in kept:
+        for (g, pos), (gname, posname) in zip(refs, slots):
+            if (g, pos) in at:
+                setattr(c, gname, ids[0] if at[(g, pos)] == "start" else ids[-1])
+                setattr(c, posname, 1 if at[(g, pos)] == "start" else 2)
+            elif g >= 0:
+                setattr(c, gname, now[tags[g]])
+        sketch.addConstraint(c)
+    for k in range(len(ids) - 1):
+        for t in sorted(common):
+            sketch.addConstraint(Sketcher.Constraint(t, ids[k], 2, ids[k + 1], 1))
+    return ids, lost
 
 
 def _remember_copy(feature, sketch, ids):

@@ -611,17 +611,13 @@ class Panel(ExpressionFields):
             return ""
         doc = f"App.getDocument({self.doc.Name!r})"
         code = "from freecad.elastica import geometry as elastica_geometry\n"
-        body = self.sources_body() if target == "*new*" else None
-        if body is not None:
+        if target == "*new*":
             # in the sources' Body, as Sketcher's new sketch in the active Body: it moves
-            # with the Body (QA19gui F8); its placement is the Body's own
-            code += (f"_body = {doc}.getObject({body.Name!r})\n"
-                     "_sk = _body.newObject('Sketcher::SketchObject', 'ElasticaSketch')\n"
-                     "_sk.Placement = _body.getGlobalPlacement().inverse().multiply("
-                     f"{doc}.getObject({self.obj.Name!r}).Plane)\n")
-        elif target == "*new*":
-            code += (f"_sk = {doc}.addObject('Sketcher::SketchObject', 'ElasticaSketch')\n"
-                     f"_sk.Placement = {doc}.getObject({self.obj.Name!r}).Plane\n")
+            # with the Body (QA19gui F8); attached as the source sketch is (QA24gui F5)
+            body = self.sources_body()
+            where = "None" if body is None else f"{doc}.getObject({body.Name!r})"
+            code += (f"_sk = elastica_geometry.new_copy_sketch({doc}.getObject("
+                     f"{self.obj.Name!r}), {where})\n")
         else:
             code += f"_sk = {doc}.getObject({target!r})\n"
         return code + (f"elastica_geometry.write_to_sketch({doc}.getObject({self.obj.Name!r}), "

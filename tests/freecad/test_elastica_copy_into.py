@@ -1,0 +1,210 @@
+"""freecadcmd -t tests of Copy into as a designer meets it in PartDesign (QA24gui): the new
+sketch attached as its source sketch is (F5), a copy again in another number of pieces
+replacing the old one in a closed profile (F1), an exact multi-piece copy not said off (F2)."""
+import math
+import unittest
+
+import FreeCAD as App
+import Part
+import Sketcher
+
+import elastica_samples as S
+from freecad.elastica import copies, g2quad, spline, taskpanels
+from freecad.elastica import geometry as G
+
+V = App.Vector
+
+
+def _ok_copy(doc, panel_class, feature, sources):
+    """The code the panel's OK records for Copy into '(new sketch ...)', run as a macro
+    runs it: the new sketch."""
+    panel = panel_class.__new__(panel_class)
+    panel.doc, panel.obj, panel.sketch_exclude = doc, feature, [o.Name for o in sources]
+    panel.copy_target = lambda: "*new*"
+    before = {o.Name for o in doc.Objects}
+    exec(panel.copy_code(), {"App": App, "FreeCAD": App})
+    doc.recompute()
+    new = [o for o in doc.Objects if o.Name not in before]
+    assert [o.TypeId for o in new] == ["Sketcher::SketchObject"], new
+    return new[0]
+
+
+def _close_profile(sk, ids, y):
+    """Three lines from the copy's end down to ``y``, across and up to its start, joined
+    by Coincident constraints, and the copy's pieces joined to each other too: a closed
+    profile as a designer draws it. The lines' indices."""
+    a, b = sk.getPoint(ids[0], 1), sk.getPoint(ids[-1], 2)
+    lines = [sk.addGeometry(Part.LineSegment(p, q), False) for p, q in
+             ((b, V(b.x, y, 0)), (V(b.x, y, 0), V(a.x, y, 0)), (V(a.x, y, 0), a))]
+    for g1, p1, g2, p2 in ((ids[-1], 2, lines[0], 1), (lines[0], 2, lines[1], 1),
+                           (lines[1], 2, lines[2], 1), (lines[2], 2, ids[0], 1)):
+        sk.addConstraint(Sketcher.Constraint("Coincident", g1, p1, g2, p2))
+    for i in range(len(ids) - 1):
+        sk.addConstraint(Sketcher.Constraint("Coincident", ids[i], 2, ids[i + 1], 1))
+    return lines
+
+
+def _points(w):
+    return [V(4 * i, 10 * math.sin(w * math.pi * i / 30.0 + 0.4), 0) for i in range(31)]
+
+
+def _waves(w):
+    c = Part.BSplineCurve()
+    c.interpolate(_points(w))
+    return c
+
+
+def _edit(src, w):
+    """The source sketch's B-spline through other points, edited in place (its Tag kept,
+    as the Sketcher keeps it when its poles are dragged)."""
+    g = src.Geometry
+    g[0].interpolate(_points(w))
+    src.Geometry = g
+    src.Document.recompute()
+
+
+class NewSketchAttachedTest(S.DocTest):
+    doc_name = "CopyIntoAttached"
+
+    def test_the_new_sketch_is_attached_as_the_source_and_follows_the_pad(self):
+        doc = self.doc
+        body = doc.addObject("PartDesign::Body", "Body")
+        base = body.newObject("Sketcher::SketchObject", "Base")
+        for a, b in (((0, 0), (120, 0)), ((120, 0), (120, 60)), ((120, 60), (0, 60)),
+                     ((0, 60), (0, 0))):
+            base.addGeometry(Part.LineSegment(V(*a, 0), V(*b, 0)), False)
+        pad = body.newObject("PartDesign::Pad", "Pad")
+        pad.Profile, pad.Length = base, 10
+        doc.recompute()
+        top = [f"Face{i}" for i, f in enumerate(pad.Shape.Faces, 1)
+               if abs(f.CenterOfMass.z - 10) < 1e-6][0]
+        ducks = body.newObject("Sketcher::SketchObject", "Ducks")
+        ducks.Support, ducks.MapMode = [(pad, top)], "FlatFace"
+        ducks.AttachmentOffset = App.Placement(V(2, 3, 0), App.Rotation(V(0, 0, 1), 10))
+        doc.recompute()
+        ducks.addGeometry([Part.Point(V(x, y, 0)) for x, y in
+                           ((20, 20), (45, 32), (70, 35), (100, 25))], False)
+        doc.recompute()
+        sp = spline.make(doc, [(ducks, [])])
+        doc.recompute()
+        new = _ok_copy(doc, taskpanels.SplinePanel, sp, [ducks])
+        self.assertIn(new, body.Group)
+        self.assertEqual(new.Support, ducks.Support)            # main: [], Deactivated
+        self.assertEqual(new.MapMode, "FlatFace")
+        self.assertEqual(new.AttachmentOffset.toMatrix().A, ducks.AttachmentOffset.toMatrix().A)
+        ids = G.earlier_copy(sp, new)
+        self.assertEqual(len(ids), 1)
+        _close_profile(new, ids, 5)
+        pocket = body.newObject("PartDesign::Pocket", "Pocket")
+        pocket.Profile, pocket.Length = new, 3
+        doc.recompute()
+        pad.Length = 15
+        doc.recompute()
+        # the copy went up with the face (main: stayed at z = 10, 5 mm inside the block)
+        self.assertAlmostEqual(new.getGlobalPlacement().Base.z, 15.0, delta=1e-9)
+        self.assertEqual(copies.drift(sp), [])
+        self.assertNotIn(copies.NOTE, sp.Status)
+        s = pocket.Shape
+        self.assertTrue(s.isValid())
+        self.assertEqual(len(s.Shells), 1)                      # main: 2 (a hidden void)
+        top_area = sum(f.Area for f in s.Faces if abs(f.CenterOfMass.z - 15) < 1e-6
+                       and abs(f.normalAt(0, 0).z) > 0.99)
+        self.assertLess(top_area, 7200 - 1000)                  # the pocket opens on it
+        # copy into it again: taken (main: refused, 'does not lie in the plane')
+        self.assertEqual(G.write_to_sketch(sp, new), ids)
+        doc.recompute()
+        self.assertTrue(pocket.Shape.isValid())
+
+    def test_a_source_attached_to_a_body_plane_is_copied(self):
+        # points in a sketch attached to the Body's XZ plane (no face): the new sketch too
+        doc = self.doc
+        body = doc.addObject("PartDesign::Body", "Body")
+        xz = [o for o in body.Origin.OriginFeatures if o.Role == "XZ_Plane"][0]
+        sk = body.newObject("Sketcher::SketchObject", "Pts")
+        sk.Support, sk.MapMode = [(xz, "")], "FlatFace"
+        doc.recompute()
+        sk.addGeometry([Part.Point(V(x, 0.01 * x * x, 0)) for x in range(0, 60, 10)], False)
+        doc.recompute()
+        sp = spline.make(doc, [(sk, [])])
+        doc.recompute()
+        new = _ok_copy(doc, taskpanels.SplinePanel, sp, [sk])
+        self.assertEqual(new.MapMode, "FlatFace")
+        self.assertEqual(new.Support, sk.Support)
+        self.assertEqual(len(G.earlier_copy(sp, new)), 1)
+        self.assertEqual(copies.drift(sp), [])
+
+
+class CopyAgainOtherPiecesTest(S.DocTest):
+    doc_name = "CopyAgainPieces"
+
+    def test_a_copy_in_more_pieces_replaces_the_old_in_a_closed_profile(self):
+        doc = self.doc
+        src = doc.addObject("Sketcher::SketchObject", "Src")
+        src.addGeometry(_waves(1.5), False)
+        doc.recompute()
+        q = g2quad.make(doc, [(src, ["Edge1"])])
+        doc.recompute()
+        self.assertEqual(len(q.Shape.Edges), 2)
+        body = doc.addObject("PartDesign::Body", "Body")
+        sk = body.newObject("Sketcher::SketchObject", "Prof")
+        sk.Placement = q.Plane
+        ids = G.write_to_sketch(q, sk)
+        lines = _close_profile(sk, ids, -30)
+        sk.addConstraint(Sketcher.Constraint("Horizontal", lines[1]))
+        sk.addConstraint(Sketcher.Constraint("DistanceX", ids[0], 1, ids[0], 2, 10.0))
+        pad = body.newObject("PartDesign::Pad", "Pad")
+        pad.Profile, pad.Length = sk, 5
+        doc.recompute()
+        self.assertTrue(pad.Shape.isValid())
+        _edit(src, 2.5)
+        self.assertEqual(len(q.Shape.Edges), 3)
+        ids2 = G.write_to_sketch(q, sk)
+        doc.recompute()
+        self.assertEqual(len(ids2), 3)
+        self.assertEqual(len(sk.Geometry), 6)                   # main: 8, open
+        self.assertEqual([w.isClosed() for w in sk.Shape.Wires], [True])
+        self.assertNotIn("Invalid", pad.State)
+        self.assertTrue(pad.Shape.isValid())
+        self.assertEqual(copies.drift(q), [])
+        # the 4 line joins and the Horizontal kept, the 2 joints of the 3 pieces as the
+        # old joint was; the DistanceX of the old first piece's ends gone
+        types = sorted(c.Type for c in sk.Constraints)
+        self.assertEqual(types, ["Coincident"] * 6 + ["Horizontal"])
+        ends = {(c.First, c.FirstPos, c.Second, c.SecondPos) for c in sk.Constraints}
+        self.assertTrue({(ids2[-1], 2), (ids2[0], 1)} <=
+                        {(a, b) for a, b, _c, _d in ends} | {(c, d) for _a, _b, c, d in ends})
+        # and back to 2 pieces: replaced again, closed
+        _edit(src, 1.5)
+        G.write_to_sketch(q, sk)
+        doc.recompute()
+        self.assertEqual(len(sk.Geometry), 5)
+        self.assertEqual([w.isClosed() for w in sk.Shape.Wires], [True])
+        self.assertTrue(pad.Shape.isValid())
+        self.assertNotIn("Invalid", pad.State)
+        self.assertEqual(copies.drift(q), [])
+
+
+class MultiPieceExactTest(S.DocTest):
+    doc_name = "CopyMultiPiece"
+
+    def test_an_exact_multi_piece_copy_is_not_said_off(self):
+        doc = self.doc
+        for w in (1.5, 2.5):
+            src = doc.addObject("Sketcher::SketchObject", "Src")
+            src.addGeometry(_waves(w), False)
+            doc.recompute()
+            q = g2quad.make(doc, [(src, ["Edge1"])])
+            doc.recompute()
+            self.assertGreater(len(q.Shape.Edges), 1)
+            sk = doc.addObject("Sketcher::SketchObject", "Out")
+            sk.Placement = q.Plane
+            G.write_to_sketch(q, sk)
+            doc.recompute()
+            q.touch()
+            doc.recompute()
+            self.assertEqual(copies.drift(q), [])               # main: 5.69e-05/mm off
+            self.assertNotIn(copies.NOTE, q.Status)
+
+
+if __name__ == "__main__":
+    unittest.main()
