@@ -1,6 +1,7 @@
 """freecadcmd -t tests of Copy into as a designer meets it in PartDesign (QA24gui): the new
 sketch attached as its source sketch is (F5), a copy again in another number of pieces
-replacing the old one in a closed profile (F1), an exact multi-piece copy not said off (F2)."""
+replacing the old one in a closed profile (F1), an exact multi-piece copy not said off (F2),
+a pasted feature not keeping the first one's copies (F3)."""
 import math
 import unittest
 
@@ -204,6 +205,48 @@ class MultiPieceExactTest(S.DocTest):
             doc.recompute()
             self.assertEqual(copies.drift(q), [])               # main: 5.69e-05/mm off
             self.assertNotIn(copies.NOTE, q.Status)
+
+
+class PastedTest(S.DocTest):
+    doc_name = "CopyPasted"
+
+    def _spline_off(self):
+        doc = self.doc
+        ducks = S.points_sketch(doc, ((0, 0), (20, 10), (40, 12), (60, 0)), "Ducks")
+        sp = spline.make(doc, [(ducks, [])])
+        doc.recompute()
+        prof = doc.addObject("Sketcher::SketchObject", "Profile")
+        prof.Placement = ducks.Placement
+        G.write_to_sketch(sp, prof)
+        doc.recompute()
+        ducks.movePoint(1, 1, V(20, 16, 0))
+        doc.recompute()
+        self.assertIn(copies.NOTE + "Sketch 'Profile'", sp.Status)
+        return sp, ducks, prof
+
+    def test_a_spline_pasted_into_another_document_forgets_the_copy_there(self):
+        sp, ducks, _prof = self._spline_off()
+        other = S.new_doc("CopyPastedInto")
+        self.addCleanup(App.closeDocument, other.Name)
+        other.copyObject([sp, ducks], False)        # what Std_Copy + Std_Paste run
+        other.recompute()
+        pasted = [o for o in other.Objects if o.TypeId == "Part::FeaturePython"][0]
+        self.assertNotIn(copies.NOTE, pasted.Status)            # main: 'Profile' ... off
+        self.assertEqual(list(pasted.SketchCopies), [])
+        self.assertIn(copies.NOTE, sp.Status)                   # the first one's stays
+
+    def test_a_spline_pasted_into_its_own_document_does_not_take_the_first_ones_copy(self):
+        sp, _ducks, prof = self._spline_off()
+        pasted = self.doc.copyObject(sp, False)
+        self.doc.recompute()
+        self.assertNotEqual(pasted.Name, sp.Name)
+        self.assertNotIn(copies.NOTE, pasted.Status)
+        self.assertEqual(list(pasted.SketchCopies), [])
+        self.assertEqual(len(G.earlier_copy(sp, prof)), 1)
+        # its own copy goes beside the first one's, which stays the first one's
+        G.write_to_sketch(pasted, prof)
+        self.assertEqual(len(prof.Geometry), 2)
+        self.assertEqual(len(G.earlier_copy(sp, prof)), 1)
 
 
 if __name__ == "__main__":

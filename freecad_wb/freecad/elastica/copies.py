@@ -7,7 +7,7 @@ copy on its recompute and says it, without touching the sketch."""
 import FreeCAD as App
 import Part
 
-from .geometry import COPIES, copy_moved, earlier_copy, written_points
+from .geometry import COPIES, MARK, copy_moved, earlier_copy, written_points
 
 SAMPLES = 33            # per copy and per feature edge: a few dozen distToShape calls
 REFINE = 1e-3           # mm: the largest distance's bracket refined to this (below 3 digits)
@@ -114,6 +114,37 @@ def drift(feature):
         if far > OFF or jump > 0.0:
             out.append((sk.Label, far, jump, moved_words(own, sk, feature)))
     return out
+
+
+def forget_absent(feature):
+    """After a restore: the copies COPIES names that are not in the feature's document (the
+    sketch missing, or holding no copy of it) forgotten, and the Status's copy note judged
+    again (say_drift). A spline pasted into another document (Std_Copy, Std_Paste) kept
+    'The copy in Sketch 'Profile' is 5.99 mm off' though that document has no such
+    sketch, through its recomputes (its inputs unchanged: it does not recompute), QA24gui
+    F3. A document reopened has its copies where they were: nothing to do."""
+    if COPIES not in feature.PropertiesList:
+        return
+    names = [e.split(" ", 1)[0] for e in feature.SketchCopies]
+    here = {n for n in names if _holds_copy(feature, feature.Document.getObject(n))}
+    if len(here) == len(set(names)):
+        return
+    feature.SketchCopies = [e for e, n in zip(feature.SketchCopies, names) if n in here]
+    say_drift(feature)
+
+
+def _holds_copy(feature, sketch):
+    """Whether ``sketch`` holds the feature's copy: found (earlier_copy) and marked with its
+    name (MARK; a copy written before marks: found is enough). A feature pasted into its
+    own document has a new Name and the Tags of the first one's copy: not its copy."""
+    if sketch is None or not hasattr(sketch, "Geometry"):
+        return False
+    ids = earlier_copy(feature, sketch)
+    geometry = sketch.Geometry
+    return bool(ids) and all(
+        not geometry[i].hasExtensionOfName(MARK) or
+        geometry[i].getExtensionOfName(MARK).Value.rpartition(" ")[0] == feature.Name
+        for i in ids)
 
 
 def moved_words(own, sketch, feature):

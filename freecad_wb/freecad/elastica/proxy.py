@@ -643,3 +643,5 @@ class FeatureProxy:
         else:
             remember_holder(obj)          # saved where it was drawn: a move from here on
         attach_view(obj, restored=True)   # a document made without the GUI, opened in it
+        from .copies import forget_absent
+        forget_absent(obj)                # pasted into another document: not its copies
