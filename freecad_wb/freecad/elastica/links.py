@@ -193,11 +193,47 @@ def _locate(sketch, name, tag, saved):
 
 
 def _tag(sketch, at):
-    """The session record (_tags) of (geometry index, pos) ``at``."""
+    """The session record (_tags) of (geometry index, pos) ``at``: (Tag, pos, x, y, z) of a
+    vertex; (Tag, EDGE, TypeId, the next geometry's Tag or None, the geometry count) of an
+    edge, so that geometry replaced at its index is told from geometry deleted (_replaced)."""
     if at is None:
         return None
-    point = () if at[1] == EDGE else tuple(_vertex(sketch, *at))
-    return (sketch.Geometry[at[0]].Tag, at[1], *point)
+    geometry = sketch.Geometry
+    if at[1] == EDGE:
+        after = geometry[at[0] + 1].Tag if at[0] + 1 < len(geometry) else None
+        return (geometry[at[0]].Tag, EDGE, geometry[at[0]].TypeId, after, len(geometry))
+    return (geometry[at[0]].Tag, at[1], *tuple(_vertex(sketch, *at)))
+
+
+# what the Sketcher's geometry types are called in messages
+_KINDS = {"Part::GeomLineSegment": "a line segment", "Part::GeomArcOfCircle": "an arc",
+          "Part::GeomCircle": "a circle", "Part::GeomBSplineCurve": "a B-spline",
+          "Part::GeomEllipse": "an ellipse", "Part::GeomArcOfEllipse": "an arc of ellipse",
+          "Part::GeomArcOfHyperbola": "an arc of hyperbola",
+          "Part::GeomArcOfParabola": "an arc of parabola", "Part::GeomPoint": "a point"}
+
+
+def _kind(type_id):
+    return _KINDS.get(type_id, type_id.replace("Part::Geom", "a "))
+
+
+def _replaced(sketch, tag, saved):
+    """The words for the geometry that took the place of the edge ``tag`` (its _tag record)
+    followed ('an arc) was replaced by a line segment at its index'), at its index ``saved``, when it was replaced there ('sketch.Geometry[i] = a
+    line', or deleted and another drawn at the end: the same list): the sketch has as many
+    geometries as then and the one after it is the one that was after it; else None
+    (deleted: the ones after it moved down)."""
+    if len(tag) < 5 or saved[0] < 0:
+        return None
+    i, geometry = saved[0], sketch.Geometry
+    if len(geometry) != tag[4] or i >= len(geometry) or geometry[i].Tag == tag[0]:
+        return None
+    after = geometry[i + 1].Tag if i + 1 < len(geometry) else None
+    if after != tag[3]:
+        return None
+    new = geometry[i].TypeId
+    return (f"{_kind(tag[2])}) was replaced by {_kind(new)} at its index" if new != tag[2] else
+            f"{_kind(tag[2])}) was replaced by another at its index")
 
 
 def remember_followed(feature):
@@ -229,9 +265,12 @@ def followed_elements(feature, prop):
         at = _locate(obj, name, tags[k], saved[k])
         if at is None:
             if saved[k][0] == DELETED or tags[k] is not None:
+                # QA24gui F4: an arc replaced by a line at its index was said 'deleted'
+                how = _replaced(obj, tags[k], saved[k]) if tags[k] is not None else None
                 saved[k] = (DELETED, saved[k][1])
                 problem = problem or (f"{prop}: the sketch geometry it followed ({obj.Label}."
-                                      f"{name}) was deleted: relink {prop}")
+                                      f"{name}" + (f", {how}" if how else ") was deleted") +
+                                      f": relink {prop}")
             problem = problem or f"{prop}: {obj.Label} has no {name}"
             continue
         tags[k], saved[k] = _tag(obj, at), at
