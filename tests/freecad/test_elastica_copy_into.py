@@ -159,8 +159,10 @@ class CopyAgainOtherPiecesTest(S.DocTest):
         self.assertTrue(pad.Shape.isValid())
         _edit(src, 2.5)
         self.assertEqual(len(q.Shape.Edges), 3)
-        ids2 = G.write_to_sketch(q, sk)
+        said, ids2 = S.console_output(lambda: G.write_to_sketch(q, sk))
         doc.recompute()
+        self.assertIn("in 2 pieces (geometry 1, 2) replaced by the curve of now in 3", said)
+        self.assertIn("not kept (they named its pieces): DistanceX 7", said)
         self.assertEqual(len(ids2), 3)
         self.assertEqual(len(sk.Geometry), 6)                   # main: 8, open
         self.assertEqual([w.isClosed() for w in sk.Shape.Wires], [True])
@@ -182,6 +184,31 @@ class CopyAgainOtherPiecesTest(S.DocTest):
         self.assertEqual([w.isClosed() for w in sk.Shape.Wires], [True])
         self.assertTrue(pad.Shape.isValid())
         self.assertNotIn("Invalid", pad.State)
+        self.assertEqual(copies.drift(q), [])
+
+
+    def test_a_copy_with_its_poles_shown_leaves_no_poles_behind(self):
+        # the Sketcher's 'show control polygon' (exposeInternalGeometry): 29 construction
+        # circles and lines held by InternalAlignment constraints; they go with their
+        # B-spline, and are not said as constraints lost
+        doc = self.doc
+        src = doc.addObject("Sketcher::SketchObject", "Src")
+        src.addGeometry(_waves(1.5), False)
+        doc.recompute()
+        q = g2quad.make(doc, [(src, ["Edge1"])])
+        doc.recompute()
+        sk = doc.addObject("Sketcher::SketchObject", "Prof")
+        sk.Placement = q.Plane
+        ids = G.write_to_sketch(q, sk)
+        sk.exposeInternalGeometry(ids[0])
+        doc.recompute()
+        self.assertGreater(len(sk.Geometry), 2)
+        _edit(src, 2.5)
+        said, _ids = S.console_output(lambda: G.write_to_sketch(q, sk))
+        doc.recompute()
+        self.assertEqual(len(sk.Geometry), 3)
+        self.assertEqual(len(sk.Constraints), 0)
+        self.assertIn("the constraints at its ends kept\n", said)     # nothing 'not kept'
         self.assertEqual(copies.drift(q), [])
 
 

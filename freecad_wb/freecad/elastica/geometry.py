@@ -510,8 +510,8 @@ def _replace_copy(sketch, earlier, curves):
     for n, c in enumerate(sketch.Constraints):
         refs = [(getattr(c, g), getattr(c, pos)) for g, pos in slots]
         mine = [r for r in refs if r[0] in olds]
-        if not mine:
-            continue
+        if not mine or c.Type == "InternalAlignment":
+            continue        # a pole shown (the Sketcher's own: it goes with its B-spline)
         at = {r: ("start" if r == (first, 1) else "end" if r == (last, 2) else None)
               for r in mine}
         if None not in at.values():
