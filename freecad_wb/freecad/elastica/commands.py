@@ -423,9 +423,8 @@ class BlendCommand(_Command):
     pixmap, menu = "blend", "Elastic blend"
     needs = "two coplanar edges, each clicked near the end to join"
     tip = ("Join two selected coplanar edges of the active document by an elastica, each "
-           "at its end nearer where you clicked it (selected by a script, without a click: "
-           "their nearest ends): the free batten, or every Hermite solution for a tension or "
-           "a length")
+           "at its end nearer where you clicked it: the free batten, or every Hermite "
+           "solution for a tension or a length")
     run = staticmethod(blend_sources)
 
     @staticmethod
