@@ -494,8 +494,9 @@ def note_said_again(panel):
 
 
 def comb_in_the_schema(doc, b):
-    """A comb's panel opened under Imperial decimal: its scale line and box in in\u00b2
-    (they said mm\u00b2)."""
+    """A comb's panel opened under Imperial decimal: its scale line in in\u00b2 (it said
+    mm\u00b2); its Scale box, 0, says 'automatic' (it said '0 in\u00b2' over the scale used,
+    QA24gui F6)."""
     from freecad.elastica import comb as Cm, taskpanels as T
     comb = Cm.make(doc, b)
     doc.recompute()
@@ -505,7 +506,7 @@ def comb_in_the_schema(doc, b):
         panel = T.CURRENT[0]
         text, box = panel.result.text(), panel.scale.text()
         want = f"scale {comb.UsedScale / 25.4 ** 2:.4g} in\u00b2; ok"
-        G.check(text == want and box == "0 in\u00b2", f"comb under Imperial: {text!r} "
+        G.check(text == want and box == "automatic", f"comb under Imperial: {text!r} "
                 f"(want {want!r}), Scale box {box!r}")
         G.screenshot("gui_comb_imperial.png")
         panel.reject()

@@ -470,6 +470,9 @@ class CombPanel(Panel):
         self.scale = self.number(g, "Scale", "Scale", 0.0, 1e12, 0.0, "mm\u00b2",
                                  "Tooth length per unit curvature (mm\u00b2); 0 = automatic (the "
                                  "longest tooth 12 % of the curve's size); arrows step by 10 %")
+        # 0 is no scale of 0 mm² (QA24gui F6: 'Scale 0 mm²' over 'scale 979.4 mm²'): as
+        # FreeCAD's own boxes show a value that means 'automatic'
+        self.scale.setSpecialValueText("automatic")
         self.scale.stepBy = lambda steps: self.scale.setValue(
             (self.obj.Scale or self.obj.UsedScale) * 1.1 ** steps)
         self.row(g, "", self.result)
