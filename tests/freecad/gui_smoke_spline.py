@@ -99,8 +99,8 @@ def spline_panel(doc, S):
     doc.recompute()
     panel.refresh()
     # the line it followed is deleted: it says so (not the arc now named Edge1) till relinked
-    G.check(s.Status == f"error: StartEdge: the sketch geometry it followed ({line.Label}.Edge1) "
-            "was deleted: relink StartEdge" and "relink StartEdge" in G.error_line(panel),
+    G.check(s.Status == f"error: StartEdge: the sketch geometry it followed ({line.Label}.Edge1, "
+            "a line segment) was deleted; an arc is in its place: relink StartEdge" and "relink StartEdge" in G.error_line(panel),
             f"spline: its start edge deleted, it says so ({s.Status})")
     G.screenshot("gui_spline_edge_deleted.png")
     s.StartEdge = (line, ["Edge1"])

@@ -219,7 +219,7 @@ def _kind(type_id):
 
 def _replaced(sketch, tag, saved):
     """The words for the geometry that took the place of the edge ``tag`` (its _tag record)
-    followed ('an arc) was replaced by a line segment at its index'), at its index ``saved``, when it was replaced there ('sketch.Geometry[i] = a
+    followed ('an arc) was deleted; a line segment is in its place'), at its index ``saved``, when it was replaced there ('sketch.Geometry[i] = a
     line', or deleted and another drawn at the end: the same list): the sketch has as many
     geometries as then and the one after it is the one that was after it; else None
     (deleted: the ones after it moved down)."""
@@ -232,8 +232,9 @@ def _replaced(sketch, tag, saved):
     if after != tag[3]:
         return None
     new = geometry[i].TypeId
-    return (f"{_kind(tag[2])}) was replaced by {_kind(new)} at its index" if new != tag[2] else
-            f"{_kind(tag[2])}) was replaced by another at its index")
+    return (f"{_kind(tag[2])}) was deleted; "
+            + (_kind(new) if new != tag[2] else "another " + _kind(new).split(" ", 1)[1])
+            + " is in its place")
 
 
 def remember_followed(feature):
