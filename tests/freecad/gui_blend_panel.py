@@ -528,7 +528,8 @@ def imperial_texts_and_steps(b, panel):
     G.check("(in)" in tips[0] and "(1/in\u00b2)" in tips[1] and "(in)" in tips[2]
             and not any("mm" in t for t in tips),
             f"the boxes' tooltips name the units they show: {[t[:40] for t in tips]}")
-    rows = [panel.list.item(i).text() for i in range(panel.list.count())]
+    rows = [panel.list.item(i).text().replace("\u00a0", " ").replace("\u2060", "")
+            for i in range(panel.list.count())]           # units.unbroken's, as read
     G.check(rows and all(" in, " in r and "/in" in r and "mm" not in r for r in rows),
             f"the solutions in inches: {rows[:2]}")
     G.check("mm" not in panel.result.text(), f"the result line: {panel.result.text()!r}")

@@ -17,7 +17,9 @@ G = None            # the gui_smoke module (check, wait, screenshot, double_clic
 
 
 def _items(panel):
-    return [panel.list.item(i).text() for i in range(panel.list.count())]
+    """The Solutions rows as read (units.unbroken's no-break spaces and joiners plain)."""
+    return [panel.list.item(i).text().replace("\u00a0", " ").replace("\u2060", "")
+            for i in range(panel.list.count())]
 
 
 def blend_follows(doc, sheet):

@@ -11,7 +11,7 @@ from . import blend as B
 from . import blend_start as BS
 from .geometry import is_sketch
 from .panelbase import Panel, said_now
-from .units import length_mark
+from .units import length_mark, unbroken
 
 
 G2_LIST_TIP = (". G2: these are the G1 solutions; the G2 blend is bent from the one picked "
@@ -255,8 +255,7 @@ class BlendPanel(Panel):
         o = self.obj
         self.list.blockSignals(True)
         self.list.clear()
-        for text in self.descriptions():
-            self.list.addItem(text)
+        self.list.addItems([unbroken(t) for t in self.descriptions()])    # quantities whole
         if o.Descriptions:
             self.list.setCurrentRow(max(0, min(o.Solution - 1, len(o.Descriptions) - 1)))
         self.list.blockSignals(False)

@@ -219,10 +219,11 @@ def _kind(type_id):
 
 def _replaced(sketch, tag, saved):
     """The words for the geometry that took the place of the edge ``tag`` (its _tag record)
-    followed ('an arc) was deleted; a line segment is in its place'), at its index ``saved``, when it was replaced there ('sketch.Geometry[i] = a
-    line', or deleted and another drawn at the end: the same list): the sketch has as many
-    geometries as then and the one after it is the one that was after it; else None
-    (deleted: the ones after it moved down)."""
+    followed ('an arc) was deleted; a line segment is in its place'), at its index
+    ``saved``, when it was replaced there ('sketch.Geometry[i] = a line', or deleted and
+    another drawn at the end: the same list): the sketch has as many geometries as then and
+    the one after it is the one that was after it; else None (deleted: the ones after it
+    moved down)."""
     if len(tag) < 5 or saved[0] < 0:
         return None
     i, geometry = saved[0], sketch.Geometry
