@@ -312,11 +312,17 @@ def _corner(pts: np.ndarray, noise: float):
             continue
         parts, fits = [], []
         for side in (P[:p + 1], P[p:]):     # thinned: 1e5 points took 10 s
+            fig = _Figures(np.ascontiguousarray(side))
+            if len(fig.seen) < MISFIT_MIN_POINTS:   # no verdict on so few: not said to fit
+                break
             try:
                 fits.append(judging_fit(side, model="smooth"))     # a verdict: no gate
             except (ValueError, ArithmeticError, RuntimeError):
                 break
-            parts.append(_rms_near(fits[-1].distances, side))
+            rms = _rms_near(fits[-1].distances, side)
+            if not rms <= MISFIT_RATIO * fig.level:   # misfit's test, the part's own noise
+                break
+            parts.append(rms)
         if len(parts) < 2:
             continue
         a, b = fits[0].curve, fits[1].curve
@@ -378,6 +384,20 @@ def _places(points: np.ndarray, rows, fmt: LengthFormat) -> list:
     return [f"({coordinates(points[i], size, 4, fmt)})" for i in rows]
 
 
+# Points whose ends lie within CLOSED_GAP of their extent (the largest side of their box)
+# of each other are said to be nearly closed where misfit names no corner: QA24's letter
+# 'o' (97 % of a 30 x 40 ellipse in pixels): ends 8.06 apart, 10 % of 80.
+CLOSED_GAP = 0.25
+
+
+def _nearly_closed(points: np.ndarray):
+    """(the gap between the first and the last point, over the extent) of points (n, 2) in
+    curve order whose ends lie within CLOSED_GAP of their extent, else None."""
+    extent = float(np.max(np.ptp(points, axis=0)))
+    gap = float(np.hypot(*(points[-1] - points[0])))
+    return (gap, gap / extent) if extent > 0 and gap <= CLOSED_GAP * extent else None
+
+
 def misfit_summary(m: Misfit, points=None, unit: str = "", numbered: bool = True,
                    length: Optional[LengthFormat] = None, what: str = "one elastica") -> str:
     """What a warning of points that are not one elastica says (:func:`fit`'s, the CLI's and
@@ -392,6 +412,11 @@ def misfit_summary(m: Misfit, points=None, unit: str = "", numbered: bool = True
     said = (f"the curve lies {fmt(m.rms, 3)} from the points (rms), {m.ratio:.3g} x their own "
             f"noise ({fmt(m.noise, 3)}): they are not {what}")
     if m.corner < 0:
+        closed = None if points is None else _nearly_closed(np.asarray(points, dtype=float))
+        if closed is not None:     # (QA24 F1: a letter 'o' of pixels, 97 % of an ellipse)
+            return (said + f": their ends lie {fmt(closed[0], 3)} apart, {closed[1]:.0%} of "
+                    "their extent, a nearly closed shape, which no one elastica follows: split "
+                    "it into pieces (a keyline, fit_keyline, or more) and fit each alone")
         return said + " (a corner, or curves of more than one piece: fit each alone)"
     place = "" if points is None else _places(np.asarray(points, dtype=float), [m.corner], fmt)[0]
     where = (f"at point {m.corner} (counted from 0{'; at ' + place if place else ''})"
