@@ -414,7 +414,7 @@ def _conditions(constraints: Optional[Mapping[str, object]], fixed: Optional[Map
     return sum(dims[_CONSTRAINTS[name][1]] for name in (constraints or {})) + len(held)
 
 
-def _raise_constraint(status: int, constraint: int, conditions: int) -> None:
+def _raise_constraint(status: int, constraint: int, conditions: int, constraints=None) -> None:
     name = _CONSTRAINT_NAMES.get(constraint)
     if status == lib.EL_EINVAL:
         msg = f"fit: constraint {name!r} contradicts the options or another constraint"
@@ -425,6 +425,12 @@ def _raise_constraint(status: int, constraint: int, conditions: int) -> None:
             # curve of 7 parameters meets 8 equations only where they come from one elastica
             msg += (f"; the constraints are {conditions} equations on the 7 parameters of one "
                     "elastica, met together only by values taken from one elastica's ends")
+            if all(f"{e}_{c}" in (constraints or {}) for e in ("start", "end")
+                   for c in ("point", "tangent", "curvature")):
+                # (QA24 F7: G2 at both ends, 120/120 refused, without the way that joins them)
+                msg += ("; to join G2 at both ends, el.elastic_spline(points, start={'tangent': "
+                        "(tx, ty), 'curvature': k}, end={...}) passes through points taken "
+                        "along these (a spline of elasticae, G2 at its ends)")
     raise ConstraintError(status, msg, name)
 
 
@@ -629,7 +635,7 @@ def _fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] =
     if st == lib.EL_EINVAL and not np.all(np.isfinite(pts)):   # checked here, off the common path
         raise ValueError("fit: points must be finite (no NaN/inf)")
     if res.constraint and st in (lib.EL_EINVAL, lib.EL_EDOM):
-        _raise_constraint(st, res.constraint, _conditions(constraints, fixed))
+        _raise_constraint(st, res.constraint, _conditions(constraints, fixed), constraints)
     if st == lib.EL_ESINGULAR and bool(np.all(pts == pts[0])):   # the CLI's words (QA20 F8)
         raise SingularError(st, f"fit: all points are equal ({n} x ({pts[0, 0]:.10g}, "
                             f"{pts[0, 1]:.10g})): no curve passes them")

@@ -17,6 +17,7 @@ from ._ffi import (DomainError, ElasticaError, LengthRangeError, NotConvergedErr
 from ._values import ValueEquality
 from .bspline import smooth_chain_to_bspline
 from .core import SMOOTH_PARAMS, SmoothElastica, arc_lengths, chain_eval, chain_starts
+from .spline_ends import _end, _g2_end_text
 
 __all__ = ["DoublesBackError", "ElasticSpline", "LoopWarning", "SeamWarning", "UnstableWarning",
            "holding_tension",
@@ -424,35 +425,6 @@ def _back_step_text(places, n) -> str:
     return said + (f" and {len(places) - 4} more" if len(places) > 4 else "")
 
 
-def _end(spec, name: str, opt_end) -> None:
-    """Fill an el_spline_end from None (natural), a tangent 2-vector or
-    {"tangent": (tx, ty), "curvature": kappa} (G2)."""
-    if spec is None:
-        opt_end.kind = lib.EL_SPLINE_NATURAL
-        return
-    curvature = None
-    if isinstance(spec, dict):
-        unknown = set(spec) - {"tangent", "curvature"}
-        if unknown or "tangent" not in spec:
-            raise ValueError(f"elastic_spline: {name} must be None, a tangent (tx, ty) or "
-                             f"{{'tangent': (tx, ty), 'curvature': k}}, got {spec!r}")
-        tangent, curvature = spec["tangent"], spec.get("curvature")
-    else:
-        tangent = spec
-    t = np.asarray(tangent, dtype=np.float64)
-    if t.shape != (2,) or not np.all(np.isfinite(t)) or not np.hypot(*t) > 0.0:
-        raise ValueError(f"elastic_spline: {name} tangent must be a nonzero finite 2-vector, "
-                         f"got {tangent!r}")
-    opt_end.tangent = [float(t[0]), float(t[1])]
-    if curvature is None:
-        opt_end.kind = lib.EL_SPLINE_TANGENT
-        return
-    if not np.isfinite(float(curvature)):
-        raise ValueError(f"elastic_spline: {name} curvature must be finite, got {curvature!r}")
-    opt_end.kind = lib.EL_SPLINE_G2
-    opt_end.curvature = float(curvature)
-
-
 def _out_of_range(pts, chords) -> str:
     """What the library's EL_EINVAL means for points that passed the checks above: outside
     the range its pieces, Hermite elasticae, are solved in (el_hermite_solve's in elastica.h:
@@ -780,6 +752,8 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
                 # pieces near the separatrix: accepted within what a double resolves (elastica.h)
                 why = (f"; its pieces nearly straight under tension resolve only "
                        f"{min(res.resolution, 1e-7):.3g} in double precision, and it exceeds that") + why
+            if not res.npieces:
+                why += _g2_end_text(opt, chords)
             err = NotConvergedError(st, "elastic_spline: did not converge: " + (
                 f"residual {res.residual:.3g} > tol {tol:g} (the spline reached is kept in "
                 "the exception)" if res.npieces else "no spline through the points was reached")

@@ -1,0 +1,54 @@
+"""The ends of an elastic spline (elastic_spline's start / end): their conditions filled in
+(natural, clamped, G2) and what is said of G2 ends where no spline is reached."""
+from __future__ import annotations
+
+import numpy as np
+
+from ._ffi import lib
+
+
+def _end(spec, name: str, opt_end) -> None:
+    """Fill an el_spline_end from None (natural), a tangent 2-vector or
+    {"tangent": (tx, ty), "curvature": kappa} (G2)."""
+    if spec is None:
+        opt_end.kind = lib.EL_SPLINE_NATURAL
+        return
+    curvature = None
+    if isinstance(spec, dict):
+        unknown = set(spec) - {"tangent", "curvature"}
+        if unknown or "tangent" not in spec:
+            raise ValueError(f"elastic_spline: {name} must be None, a tangent (tx, ty) or "
+                             f"{{'tangent': (tx, ty), 'curvature': k}}, got {spec!r}")
+        tangent, curvature = spec["tangent"], spec.get("curvature")
+    else:
+        tangent = spec
+    t = np.asarray(tangent, dtype=np.float64)
+    if t.shape != (2,) or not np.all(np.isfinite(t)) or not np.hypot(*t) > 0.0:
+        raise ValueError(f"elastic_spline: {name} tangent must be a nonzero finite 2-vector, "
+                         f"got {tangent!r}")
+    opt_end.tangent = [float(t[0]), float(t[1])]
+    if curvature is None:
+        opt_end.kind = lib.EL_SPLINE_TANGENT
+        return
+    if not np.isfinite(float(curvature)):
+        raise ValueError(f"elastic_spline: {name} curvature must be finite, got {curvature!r}")
+    opt_end.kind = lib.EL_SPLINE_G2
+    opt_end.curvature = float(curvature)
+
+
+def _g2_end_text(opt, chords) -> str:
+    """Where no spline was reached: the G2 ends given (curvature, its radius, the end span's
+    chord), as a likely cause, not a proven one (QA24 F12: end curvature 50, radius 0.02, at
+    a span 10.4 long, was said as "no spline through the points was reached" alone)."""
+    said = []
+    for name, e, chord in (("start", opt.start, chords[0]), ("end", opt.end, chords[-1])):
+        if e.kind != lib.EL_SPLINE_G2:
+            continue
+        k = float(e.curvature)
+        r = f"radius {1 / abs(k):.3g}, " if k != 0.0 else ""
+        said.append(f"the {name}'s G2 condition, curvature {k:.3g} ({r}its span {chord:.3g} "
+                    f"long{f': {abs(k) * chord:.3g} x its radius' if abs(k) * chord > 1 else ''})")
+    if not said:
+        return ""
+    return ("; " + " and ".join(said) + " may be what no spline through the points meets: "
+            "try the same tangent alone (clamped) or a smaller curvature")
