@@ -676,7 +676,14 @@ def _fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] =
         # rms 37 at noise 0.4, said no OrderWarning; a smooth one said a WanderWarning):
         # the feet on the points' own pass before their turn then (data_run_back), the
         # cause said instead of the wander it makes
-        if back is None and res.wander_gap < 0 and res.distance != _DISTANCES["paired"]:
+        # a misfit in curve order (order='curve'), or that curve order fits no closer than
+        # half: its feet or points run back where the shape is no one elastica, no sign of
+        # a scan passed back and forth (QA24 F3: a letter 'e', bar + 306-degree arc, "points
+        # 80 to 206 run back", rms 2.00 either order; QA20's scan 2.93, in curve order 0.4)
+        shape = ((idx is not None or (tried is not None and not tried < 0.5 * res.rms))
+                 and _verdict(fig, dist, float(res.rms), False) is not None)
+        if back is None and res.wander_gap < 0 and res.distance != _DISTANCES["paired"] \
+                and not shape:
             back = run_back(pts, foot, res.rms)
         # (only where the points turn back and the fit does not follow them: not converged
         # or MISFIT_RATIO times their noise away; a coil of 20 sketched points turns back as
@@ -686,7 +693,7 @@ def _fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] =
         # a converged fit within MISFIT_RATIO of it is within it of noise_level's too; the
         # figures are those the misfit verdict takes, computed once; noise_level's stride
         # search 12 ms on 1000 points)
-        if back is None and (st != lib.EL_OK or res.rms > MISFIT_RATIO * fig.quick) \
+        if back is None and not shape and (st != lib.EL_OK or res.rms > MISFIT_RATIO * fig.quick) \
                 and turn_back(pts) and (st != lib.EL_OK or res.rms > MISFIT_RATIO * fig.level):
             back = data_run_back(pts, res.rms)
         if back is not None:

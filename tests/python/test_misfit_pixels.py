@@ -66,3 +66,37 @@ def test_pixels_repeated_alike_keep_their_noise_level():
     S = pixel_letter(0.8, jitter=0.2)
     S = S[np.r_[True, np.any(S[1:] != S[:-1], axis=1)]]
     assert el.noise_level(np.repeat(S, 2, axis=0)) == el.noise_level(S)
+
+
+def pixel_e(seed=5):
+    """A letter 'e': a bar 40 px long, then a 306-degree arc of radius 20 from its end back
+    over it (y down), traced at 0.5 px steps, jitter 0.2, rounded to 0.5 px."""
+    a = np.linspace(0, 2 * np.pi * 0.85, 300)
+    T = np.r_[np.c_[np.linspace(-20, 20, 60), np.zeros(60)],
+              np.c_[20 * np.cos(a), -20 * np.sin(a)]] + 100
+    d = np.r_[0, np.cumsum(np.hypot(*np.diff(T, axis=0).T))]
+    s = np.arange(0, d[-1], 0.5)
+    xy = np.c_[np.interp(s, d, T[:, 0]), np.interp(s, d, T[:, 1])]
+    xy += np.random.default_rng(seed).normal(0, 0.2, xy.shape)
+    return np.round(xy / 0.5) * 0.5
+
+
+@pytest.mark.parametrize("model", ["smooth", "discrete"])
+@pytest.mark.parametrize("order", ["given", "curve"])
+@pytest.mark.parametrize("seed", [15, 23])     # (said so on main: 8 of seeds 12-99)
+def test_a_letter_e_is_a_corner_not_a_scan_passed_back(model, order, seed):
+    # QA24 F3: the stroke passes near its own start, never runs back; it was said as "points
+    # 80 to 206 run back along the curve ... (a scan passed back and forth?)" (and with
+    # order='curve' given, told to use order='curve'), its corner at the bar's end unnamed
+    P = pixel_e(seed)
+    with warnings.catch_warnings(record=True) as w:
+        warnings.simplefilter("always")
+        r = el.fit(P, model=model, order=order)
+    assert not [x for x in w if issubclass(x.category, el.OrderWarning)]
+    assert r.retrace is None
+    m = r.misfit
+    assert m is not None and m.corner >= 0
+    bar_end = 40 / 0.5                          # the tracer's steps along the bar
+    corner = m.corner if r.order is None else int(r.order[m.corner])
+    assert abs(corner - bar_end) <= 3
+    assert max(m.parts) < 0.5                   # each part fits (noise ~0.21)
