@@ -150,6 +150,31 @@ int el__fit_slips(size_t n, double h, double rms, const double *d, const double 
 }
 
 
+/* The paired fit's polygon runs on past its points at an end: the stretch from vertex 0 to
+ * the first foot (fs, input units), or from the last foot to vertex n - 1, longer than
+ * PAIRING_PAST x the points' noise (input units) and 3 segments h. A pen that retraced an
+ * end (starts a few px into the stroke, runs back to the true start, then along) passes
+ * the spacing test and the retrace test (its turn within w of the end), and pairing its
+ * first points with the first vertices stretches the polygon past the stroke's end where
+ * no point is; the slip of those few points is diluted in the rms of all (measured, QA24
+ * F9: a pixel stroke of 2101 points, noise 0.31 px, an end retrace of ~6 px: the polygon
+ * 5.3 and 5.05 px past the first and last feet, 17 noise levels, slip below the gate; by
+ * distance 0.73 px from every point). And 3 segments: a paired fit's polygon without noise
+ * ends up to a couple of segments past its last foot (bench_fit.py's set 355, 100 points at
+ * noise 3e-7: 2.02 h, refitted by distance from the paired fit as before). */
+#define PAIRING_PAST 8.0
+
+int el__fit_overruns(size_t n, double h, double noise, const double *fs)
+{
+    double a = HUGE_VAL, b = -HUGE_VAL;
+    for (size_t i = 0; i < n; i++) {
+        a = fmin(a, fs[i]);
+        b = fmax(b, fs[i]);
+    }
+    const double L = h * (double)(n - 1), least = fmax(PAIRING_PAST * noise, 3.0 * h);
+    return a > least || L - b > least;
+}
+
 /* The paired fit's points jump a vertex: the mean slip (foot arc length / h - i) of the w
  * = max(3, (n-1)/16) points from some point g on differs from the w points' before it by
  * more than PAIRING_STEP vertices and 4 x its noise sqrt(2 / w) rms / h (a point missing

@@ -82,7 +82,11 @@ def test_a_scan_passed_back_and_forth_is_fitted_passing_once(name, model):
         assert np.allclose(np.einsum("ij,ij->i", P - feet, normal), r.distances, atol=1e-6)
     # said once, what was done; no corner at the turn back, no convergence warning
     said = [str(x.message) for x in w if issubclass(x.category, el.OrderWarning)]
-    assert len(said) == 1 and "fitted in curve order" in said[0], said
+    # (or, where the fit in their order is as near as curve order's, the run back named and
+    # curve order's rms: three_passes smooth since fit_ends.c refits a retraced end, 0.405 both)
+    assert len(said) == 1 and ("fitted in curve order" in said[0] or
+                               (r.rms <= rc.rms and "run back along the curve" in said[0]
+                                and f"the rms is {rc.rms:.3g}" in said[0])), said
     assert r.retrace is not None
     assert not [x for x in w if issubclass(x.category, (el.MisfitWarning, el.ConvergenceWarning))], \
         [str(x.message) for x in w]
