@@ -1252,8 +1252,8 @@ typedef struct el_spline_result {
     double largest[3];     /* tension mode, EL_ENOCONV at sigma x (longest span h)^2 >= 300:
                               the largest tension (1/units^2) that solves these points without
                               loops, sigma h^2 = min(asked, 1024) x 2^(-j/4) down to 100 then 3
-                              bisections in log above it (up to 18 solves, ~0.3-0.5 s;
-                              spline_limit.c), that spline's resolution and the least |1 - k^2|
+                              bisections in log above it (up to 18 solves, ~0.3-0.5 s,
+                              within the call's work budget: stopped; spline_limit.c), that spline's resolution and the least |1 - k^2|
                               of its pieces (why none above it: Accuracy, el_spline_solve);
                               all 0 where not looked for or none solves */
     int slides;            /* tension 0, EL_EDOM: 1 where a batten through the points was found
@@ -1280,19 +1280,25 @@ typedef struct el_spline_result {
                               refuses). 0: a minimum, or not judged (closed, G2 ends, a circle piece
                               |k| >= 1e3 at sigma = kappa^2, by length a singular reduced
                               Hessian; tension 0: slides above) */
-    unsigned long work;    /* the search's work: evaluations of the whole chain (each evaluates
-                              every piece once) over every path el_spline_solve tried, the
-                              largest's solves above included (each with a budget of its own;
-                              none where its tensions sigma h^2 / h^2 are not doubles > 0: spans
-                              of ~1e300) */
-    int stopped;           /* 1: the search stopped at its work budget, 8 x max_steps x max_iter
-                              chain evaluations (tension mode's G2 ends: each length solve of its
-                              search by length that much again; a Newton iteration due past it is
-                              not made, as if Newton stalled there): the status and result are
-                              what it had reached by then (36 collinear points with G2 ends by length 6.9 x
-                              their polygon, max_steps 15, max_iter 37: 6468 evaluations, 0.35 s,
-                              to say EL_ERANGE; 4543 with the budget); also where one of the
-                              largest's solves stopped at its own. Set with reach */
+    unsigned long work;    /* the call's work: evaluations of the whole chain (each evaluates
+                              every piece once) over every solve el_spline_solve made, the
+                              G2 ends' search by length and the largest's solves above
+                              included (none of those where its tensions sigma h^2 / h^2 are
+                              not doubles > 0: spans of ~1e300) */
+    int stopped;           /* 1: the call stopped at its work budget, one for the whole call
+                              shared by all its solves and searches: max_steps x max_iter x
+                              (16 + 64 / m) chain evaluations for m pieces (57 600 + 230 400 / m
+                              at the defaults: 61 038 for 68 points, 96 000 for 7, 288 000 for
+                              2); no evaluation is made past it, every path ends at its next.
+                              The status is then what the call had reached (mostly EL_ENOCONV,
+                              or EL_ERANGE with reach; EL_OK only for a spline solved to tol
+                              before: res->unstable then 0, not judged) and largest is the
+                              largest tension solved before it ended (0 where none). The fuzz's
+                              7 ducks at sigma 49.5 with a G2 start: 805 120 evaluations, 9.7 s,
+                              when each solve had a budget of its own; now 96 000, 1.3 s.
+                              No call of the library's tests or bench comes near it (the most:
+                              9.82 x max_steps x max_iter for 68 points by length, 5 s; 55.2 x
+                              for a 2-point G2 batten, 0.4 s). Set with reach */
 } el_spline_result;
 
 /* Defaults: tension mode, sigma 0, open, natural ends, tol 1e-10, max_iter 60, max_steps 60. */
@@ -1342,7 +1348,9 @@ void el_spline_options_defaults(el_spline_options *opt);
  * A length not reached where splines were met following the family is EL_ERANGE, res->reach
  * giving the lengths met and the longest without a crossing, res->ladder the tensions
  * of tension mode's splines met looking for a bracket (a length within the lengths met
- * too: QA14's sketch at sigma h^2 450 said EL_ENOCONV, "no spline reached"). Work is bounded: at most
+ * too: QA14's sketch at sigma h^2 450 said EL_ENOCONV, "no spline reached"). Work is bounded:
+ * the whole call by its work budget (res->stopped: max_steps x max_iter x (16 + 64 / m) chain
+ * evaluations for m pieces, shared by every solve and search it makes); each path at most
  * max_steps continuation steps (4 x in LONG_PATH, below) of at most
  * max_iter Newton iterations (20 for a first attempt, 12 for a step), each with
  * at most 12 step halvings (4 in a continuation step), each O(n); 100 points

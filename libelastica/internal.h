@@ -270,12 +270,20 @@ typedef struct el__spsnap {
 } el__spsnap;
 
 /* WORK_BUDGET (spline.c): chain evaluations (each evaluates every piece once) spent by one
- * el_spline_solve over every path it tries, and the most allowed; stopped: the budget ended
- * a Newton iteration (el__chain_newton then stops as if it stalled) */
+ * el_spline_solve call over every solve and search it makes, and the most allowed; stopped:
+ * the budget refused an evaluation (el__chain_eval then evaluates nothing, returns INFINITY) */
 typedef struct el__spwork {
     unsigned long evals, budget;
     int stopped;
 } el__spwork;
+
+/* 1 where the call's budget is spent (no further evaluation will be made), stopped set */
+static inline int el__spwork_spent(el__spwork *w)
+{
+    if (!w || w->evals < w->budget) return 0;
+    w->stopped = 1;
+    return 1;
+}
 
 typedef struct el__spchain {
     size_t n, m;             /* knots (the points and the guide ducks), pieces */
@@ -328,8 +336,8 @@ typedef struct el__spchain {
     int neighbours;          /* el__spline_solve_tension: from fair nearby tensions (spline_path.c) */
     int plain;               /* el__spline_length_from: the plain follow only, no retries (spline.c's
                                 FREE_FAMILY comparison) */
-    el__spwork *work;        /* the solve's work and budget (spline.c's WORK_BUDGET), shared by every
-                                chain of one solve (a guided chain takes its sibling's); NULL: none */
+    el__spwork *work;        /* the call's work and budget (spline.c's WORK_BUDGET), shared by every
+                                chain of its solves (a guided chain takes its sibling's); NULL: none */
 } el__spchain;
 
 /* The workspace for n knots and m pieces (zeroed, n, m set); free it also on failure. */
@@ -395,7 +403,7 @@ int el__spline_near_line(const double *xy, size_t n, const el_spline_options *o,
  * (el_spline_result's largest), all 0 where not looked for or none of sigma h^2 >= 100
  * solves (or where the tensions sigma h^2 / h^2 are not positive finite doubles); *nsolves:
  * the tension solves it made, their work counted on into *work (el__spline_solve_within;
- * each solve a budget of its own); EL_OK or EL_ENOMEM */
+ * no solve begun once the budget *work carries is spent, spline.c's WORK_BUDGET); EL_OK or EL_ENOMEM */
 int el__spline_largest(const double *xy, size_t n, const el_spline_options *opt, double h,
                        double largest[3], int *nsolves, el__spwork *work);
 /* spline_stable.c: the Hessian of the chain's energy sum_j (E_j + sigma L_j) in its knot
@@ -523,8 +531,8 @@ int el__spline_pieces_drawn(const el__spchain *w);
  * EL_OK, EL_ENOMEM, or el_smooth_eval's status for a piece it refuses (EL_EINVAL) */
 int el__spline_make_result(const el__spchain *w, const double *xy, size_t npoints, double S, double tol,
                            el_spline_result *res, double *other, double *sep);
-/* The same, its work counted on into *work (work->evals on from where it is, work->budget
- * set to that + the solve's own WORK_BUDGET: el__spline_largest's solves, each as before) */
+/* The same, its work counted on into *work within its budget (the call's, spline.c's
+ * WORK_BUDGET: el__spline_largest's solves share el_spline_solve's) */
 int el__spline_solve_within(const double *xy, size_t n, const el_spline_options *opt,
                             el__spwork *work, el_spline_result *res);
 

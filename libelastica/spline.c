@@ -251,15 +251,27 @@ static int solve_g2(el__spchain *w, el__spchain *g, int sib, int max_steps, cons
     return keep_fairer(&first, g, st, direct);
 }
 
-/* WORK_BUDGET: chain evaluations one solve may spend over all its paths, per max_steps x
- * max_iter (one family at most): length mode's search tries dozens of families, each bounded
- * alone (spline_path.c, spline_bracket.c), tension mode's STABLE_FAMILY 5 more. Past it
- * el__chain_newton makes no iteration. 8: of 2100 sweep solves one reaches it (same result,
- * fewer iterations); the fuzz's collinear G2 ducks by length 6468 -> 4543 (test_spline_work). */
-#define WORK_FAMILIES 8
-static unsigned long work_budget(const el_spline_options *opt)
+/* WORK_BUDGET: chain evaluations one el_spline_solve CALL may spend, shared by every solve
+ * and search it makes (the paths of the solve, tension mode's G2 search by length with its
+ * up to NLADDER + BRENT_ITER solves, el__spline_largest's up to 18 solves): max_steps x
+ * max_iter x (WORK_FAMILIES + WORK_SHORT / m) for m pieces. el__chain_eval counts each
+ * evaluation and makes none past it (spline_chain.c), so every path ends at its next one.
+ * A budget for each solve (8 x max_steps x max_iter, cee94bf) bounded a solve, not a call:
+ * the fuzz's 7 ducks at sigma 49.5 with a G2 start spent 242 016 evaluations (9.7 s of CPU)
+ * over the search by length's solves, each within its own.
+ * Sized on the work of every el_spline_solve call of the C and Python tests and the bench
+ * (none bounded, 1379 calls): at most 12.0 x max_steps x max_iter for m >= 2 (QA16's
+ * shipline, 68 points by length 1.5 x: 35 364, 9.82 x 3600; 5.0 s), 55.2 x for one piece (a
+ * 2-point G2 batten by tension through test_spline_g2's search by length: 198 716, an
+ * evaluation of one piece being cheap, 0.42 s); the 1 / m term lets the short chains' many
+ * cheap evaluations through without giving a long chain's expensive ones as many. */
+#define WORK_FAMILIES 16
+#define WORK_SHORT 64
+static unsigned long work_budget(const el_spline_options *opt, size_t n)
 {
-    return WORK_FAMILIES * (unsigned long)opt->max_steps * (unsigned long)opt->max_iter;
+    const size_t m = opt->closed ? n : n > 1 ? n - 1 : 1;
+    const unsigned long si = (unsigned long)opt->max_steps * (unsigned long)opt->max_iter;
+    return si * WORK_FAMILIES + si * WORK_SHORT / (m ? m : 1);
 }
 
 /* Tension mode's G2 batten by its length (spline_g2_tension.c): one solve by length as
@@ -290,14 +302,11 @@ static int g2_at_length(void *par, double L, double *sigma)
     w->near = 0;
     memset(w->reach, 0, sizeof w->reach);
     memset(w->ladder, 0, sizeof w->ladder);
-    /* a budget of its own (WORK_BUDGET): one of the search's NLADDER + BRENT_ITER solves */
-    el__spwork *wk = w->work;
-    const unsigned long b0 = wk->budget;
-    wk->budget = wk->evals + work_budget(&o);
+    /* the call's budget (WORK_BUDGET): spent, no further solve is begun */
+    if (el__spwork_spent(w->work)) return EL_ENOCONV;
     int straight;
     int st = solve_sibling(w, c->xy, c->n, &o, c->Lp, c->S, &straight);
     if (st != EL_ENOMEM && st != EL_EINVAL) st = solve_g2(w, g, st, o.max_steps, c->kg, L, NAN, 0, NULL);
-    wk->budget = b0;
     if (st == EL_ENOMEM || st == EL_EINVAL) return st;
     if (st && !g->near) return EL_ENOCONV;
     *sigma = g->sigma;
@@ -399,8 +408,7 @@ static int solve_paths(const double *xy, size_t n, const el_spline_options *opt,
     el__spchain w, g;
     memset(&g, 0, sizeof g);
     el__spchain *sol = &w;   /* the chain the result comes from */
-    el__spwork own = {0, 0, 0}, *wk = shared ? shared : &own;
-    wk->budget = wk->evals + work_budget(opt);   /* the solve's own, counted on (el__spline_largest) */
+    el__spwork own = {0, work_budget(opt, n), 0}, *wk = shared ? shared : &own;   /* the call's */
     int st = el__chain_alloc(&w, n, m);
     w.work = wk;
     if (st) goto done;
@@ -593,17 +601,18 @@ int el_spline_solve(const double *xy, size_t n, const el_spline_options *opt,
                     el_spline_result *res)
 {
     double h = 0.0;
-    const int st = solve_paths(xy, n, opt, 1, NULL, res, &h);
+    /* one budget for the whole call (WORK_BUDGET), the largest's solves included */
+    el__spwork call = {0, opt ? work_budget(opt, n) : 0, 0};
+    const int st = solve_paths(xy, n, opt, 1, &call, res, &h);
     if (st != EL_ENOCONV) return st;
-    /* a high tension that fails: the largest that solves (spline_limit.c), its solves'
-     * work counted into res->work */
+    /* a high tension that fails: the largest that solves (spline_limit.c), its solves
+     * counted into res->work, within what the call has left */
     double largest[3];
     int nsolves;
-    el__spwork more = {res->work, 0, 0};
-    if (el__spline_largest(xy, n, opt, h, largest, &nsolves, &more)) { el_spline_result_free(res); return EL_ENOMEM; }
+    if (el__spline_largest(xy, n, opt, h, largest, &nsolves, &call)) { el_spline_result_free(res); return EL_ENOMEM; }
     for (int i = 0; i < 3; i++) res->largest[i] = largest[i];
-    res->work = more.evals;
-    res->stopped |= more.stopped;
+    res->work = call.evals;
+    res->stopped = call.stopped;
     return st;
 }
 

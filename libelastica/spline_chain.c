@@ -89,6 +89,8 @@ double el__chain_eval(el__spchain *w, int jac)
 {
     const size_t n = w->n, m = w->m;
     double merit = 0.0, rmax = 0.0, Lsum = 0.0;
+    /* the call's budget (spline.c's WORK_BUDGET): none made past it, the state not solved */
+    if (el__spwork_spent(w->work)) { w->resid = INFINITY; return INFINITY; }
     if (w->work) w->work->evals++;
     if (w->bend)
         for (int e = 0; e < 2; e++) w->kg[e] = w->bend_k[e] + w->tau * w->bend_dk[e];
@@ -349,10 +351,7 @@ int el__chain_newton(el__spchain *w, int cap, double aim, double accept)
     double bound = INFINITY, den0 = 0.0;
     for (int it = 0; it < limit; it++) {
         if (w->resid <= aim) return EL_OK;
-        if (w->work && w->work->evals >= w->work->budget) {   /* WORK_BUDGET spent (spline.c) */
-            w->work->stopped = 1;
-            break;
-        }
+        if (el__spwork_spent(w->work)) break;   /* WORK_BUDGET spent (spline.c): no iteration */
         double ds;
         if (chain_direction(w, &ds)) break;
         w->iterations++;

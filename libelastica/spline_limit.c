@@ -71,20 +71,21 @@ int el__spline_largest(const double *xy, size_t n, const el_spline_options *opt,
      * from below j0 to the first that solves */
     double got[2] = {0.0, 0.0}, g[2];
     int best = 0, fails = 0, s;
-    for (int j = j0; j >= 1 && fails < 2; j--) {
+    /* the call's budget (spline.c's WORK_BUDGET) spent: no further solve is begun */
+    for (int j = j0; j >= 1 && fails < 2 && !el__spwork_spent(work); j--) {
         (*nsolves)++;
         if ((s = solves(xy, n, opt, h2, rung(top, j), g, work)) < 0) return EL_ENOMEM;
         fails = s ? 0 : fails + 1;
         if (s) { best = j; got[0] = g[0]; got[1] = g[1]; }
     }
-    for (int j = j0 + 1; !best && j <= jmax; j++) {
+    for (int j = j0 + 1; !best && j <= jmax && !el__spwork_spent(work); j++) {
         (*nsolves)++;
         if ((s = solves(xy, n, opt, h2, rung(top, j), got, work)) < 0) return EL_ENOMEM;
         if (s) best = j;
     }
     if (!best) return EL_OK;
     double lo = rung(top, best), hi = lo * pow(2.0, 0.25);
-    for (int i = 0; i < 3; i++) {
+    for (int i = 0; i < 3 && !el__spwork_spent(work); i++) {
         const double mid = pow(lo * hi, 0.5);
         (*nsolves)++;
         if ((s = solves(xy, n, opt, h2, mid, g, work)) < 0) return EL_ENOMEM;

@@ -92,10 +92,10 @@ class ElasticSpline(ValueEquality):
     so would snap to another shape, ``unstable_span`` the span moving most that way, piece
     i from point i to i + 1: :class:`UnstableWarning`; open splines without G2 ends are
     judged, others read False), ``iterations`` (Newton iterations over every continuation step),
-    ``work`` (the solve's chain evaluations, each of every piece once, over every path it
-    tried) and ``stopped`` (True: the search ended at its work budget, 8 x max_steps x
-    max_iter evaluations, and this is what it had reached by then; el_spline_result's work /
-    stopped).
+    ``work`` (the call's chain evaluations, each of every piece once, over every solve and
+    search it made) and ``stopped`` (True: the call ended at its work budget, one for the whole
+    call, max_steps x max_iter x (16 + 64 / m) evaluations for m pieces, and this is what it
+    had reached by then; el_spline_result's work / stopped).
 
     The pieces run from knot to knot: the points and, next to each G2 end, its
     guide duck (the ducks that make a G2 end possible at the common tension,

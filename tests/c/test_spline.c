@@ -7,6 +7,7 @@
  * Length mode, buckling, tight battens and hand-placed ducks: test_spline_length.c. */
 #include "spline_check.h"
 #include <float.h>
+#include <limits.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -490,7 +491,7 @@ static void check_largest_rung(const double *xy, size_t n, const el_spline_optio
     const double h = longest_side(xy, n), top = fmin(o->sigma * h * h, 1024.0);
     double largest[3];
     int nsolves = -1;
-    el__spwork work = {0, 0, 0};
+    el__spwork work = {0, ULONG_MAX, 0};   /* no budget */
     ck_assert_int_eq(el__spline_largest(xy, n, o, h, largest, &nsolves, &work), EL_OK);
     const double sh2 = largest[0] * h * h;
     ck_assert_msg(nsolves >= 4 && nsolves <= most, "%d solves", nsolves);
