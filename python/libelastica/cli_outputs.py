@@ -72,7 +72,12 @@ def output_key(final) -> object:
     """One key for every name of one file, so two outputs to it are caught whatever names
     them: an existing regular file by its inode (hard links too), any other path with its
     links resolved (os.path.realpath: two links to one file, or to one new file, passed the
-    same-output check when the key was the path as written)."""
+    same-output check when the key was the path as written). An open descriptor
+    (/dev/stdout, /dev/fd/N) keeps the path as written: it is written through at its end, as
+    the shell opened it, so two of them on one file or device (`--json /dev/stdout --dxf
+    /dev/stderr > log 2>&1`, or `> /dev/null 2>&1`) are two outputs one after the other."""
+    if _names_a_descriptor(final):
+        return os.path.abspath(final)
     try:
         node = os.stat(final)
         if stat.S_ISREG(node.st_mode):

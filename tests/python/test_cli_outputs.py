@@ -414,3 +414,33 @@ def test_an_output_through_a_descriptor_on_a_file_appends_as_the_shell_opened_it
     assert text.startswith("earlier line\n"), text[:80]
     assert json.loads(text[len("earlier line\n"):])["model"] == "discrete"
     assert sorted(p.name for p in work.iterdir()) == ["a.csv", "log.txt"]
+
+
+def test_two_descriptors_on_one_file_are_two_outputs(work, capsys):
+    """`elastica fit a.csv --json /dev/stdout --dxf /dev/stderr > log 2>&1` (or `> /dev/null
+    2>&1`, or both on one terminal) wrote both outputs one after the other; ffbd6f1 keyed
+    outputs by the file they reach (its inode, or the realpath: /dev/null), so the two
+    descriptors were 'the same output path is given twice', exit 2. Descriptors are written
+    through at their end, as the shell opened them: both kept (here two descriptors of
+    log.txt opened to append, and two of /dev/null)."""
+    log = work / "log.txt"
+    log.write_text("earlier line\n")
+    fd = os.open(log, os.O_WRONLY | os.O_APPEND)
+    fd2 = os.dup(fd)                                    # 2>&1
+    null = os.open(os.devnull, os.O_WRONLY)
+    null2 = os.dup(null)
+    try:
+        code, _, err = cli(capsys, "fit", "a.csv", "--json", f"/dev/fd/{fd}", "--dxf", f"/dev/fd/{fd2}")
+        code_null, _, err_null = cli(capsys, "fit", "a.csv", "--json", f"/dev/fd/{null}",
+                                     "--dxf", f"/dev/fd/{null2}")
+    finally:
+        for d in (fd, fd2, null, null2):
+            os.close(d)
+    assert code == 0, err
+    assert code_null == 0, err_null
+    text = log.read_text()
+    assert text.startswith("earlier line\n") and '"model": "discrete"' in text and "SECTION" in text
+    assert sorted(p.name for p in work.iterdir()) == ["a.csv", "log.txt"]
+    # the same descriptor named twice is still one output given twice
+    code, _, err = cli(capsys, "fit", "a.csv", "--json", "/dev/stdout", "--dxf", "/dev/stdout")
+    assert code == 2 and "given twice" in err
