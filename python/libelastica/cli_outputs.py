@@ -146,12 +146,16 @@ class Outputs:
         key = output_key(final)
         if key in self._finals:
             raise InputError(f"{final}: the same output path is given twice")
+        self.note_fifo(final)
+        return final
+
+    def note_fifo(self, final) -> None:
+        """Remember ``final`` if it is a FIFO: released at abort (or commit, unwritten)."""
         try:
             if stat.S_ISFIFO(os.stat(final).st_mode):
-                self._fifos[key] = final
+                self._fifos[output_key(final)] = final
         except OSError:
             pass
-        return final
 
     def path(self, target) -> Path:
         """A temporary to write ``target``'s content to (renamed at commit; '-': copied to
@@ -293,6 +297,14 @@ def check_outputs(args) -> None:
     batch = len(files) > 1
     taken = {}          # output path -> the option that writes it
     to_stdout = []
+    # every FIFO named, before any output is refused: a FIFO after the refused one was never
+    # checked, so never released (`--json a.csv --dxf p`: the input refused, p's reader
+    # blocked for ever, where `--json p --dxf a.csv` released it)
+    for opt, ext in OUTPUT_OPTIONS:
+        spec = getattr(args, opt, None)
+        if spec and spec != "-":
+            for source in files or [spec]:
+                args.outputs.note_fifo(out_path(spec, source, ext, batch))
     for opt, ext in OUTPUT_OPTIONS:
         spec = getattr(args, opt, None)
         if spec == "-":

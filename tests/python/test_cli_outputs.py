@@ -330,6 +330,27 @@ def test_a_fifo_output_of_a_failing_command_is_closed_for_its_reader(work, capsy
     assert sorted(p.name for p in work.iterdir()) == ["a.csv", "bad.csv", "pipe.json"]
 
 
+def test_a_fifo_after_a_refused_output_is_closed_for_its_reader(work, capsys):
+    """As above, where another output is refused before the FIFO's turn: `--json a.csv --dxf
+    p` (the input refused) left p's reader blocked for ever, though `--json p --dxf a.csv`
+    released it: only the outputs checked before the refusal were known as FIFOs."""
+    import select
+    fifo = work / "pipe.dxf"
+    os.mkfifo(fifo)
+    fd = os.open(fifo, os.O_RDONLY | os.O_NONBLOCK)    # the waiting reader
+    try:
+        code, _, err = cli(capsys, "fit", "a.csv", "--json", "a.csv", "--dxf", "pipe.dxf")
+        assert code == 2 and "refusing to overwrite the input" in err, err
+        poller = select.poll()
+        poller.register(fd, select.POLLIN)
+        events = poller.poll(0)
+        assert events and events[0][1] & select.POLLHUP
+        assert os.read(fd, 100) == b""
+    finally:
+        os.close(fd)
+    assert sorted(p.name for p in work.iterdir()) == ["a.csv", "pipe.dxf"]
+
+
 def test_an_output_that_is_a_fifo_is_written_through(work, capsys):
     """QA23: an output that is not a regular file (a FIFO here; /dev/null, /dev/full as
     root) was replaced by a regular file, and its reader got nothing."""
