@@ -212,6 +212,69 @@ class CopyAgainOtherPiecesTest(S.DocTest):
         self.assertEqual(copies.drift(q), [])
 
 
+    def _profile(self):
+        doc = self.doc
+        src = doc.addObject("Sketcher::SketchObject", "Src")
+        src.addGeometry(_waves(1.5), False)
+        doc.recompute()
+        q = g2quad.make(doc, [(src, ["Edge1"])])
+        doc.recompute()
+        sk = doc.addObject("Sketcher::SketchObject", "Prof")
+        sk.Placement = q.Plane
+        ids = G.write_to_sketch(q, sk)
+        lines = _close_profile(sk, ids, -30)
+        return src, q, sk, ids, lines
+
+    def test_a_dimension_of_the_copys_ends_is_not_doubled(self):
+        # the Sketcher's delGeometries moves a constraint at a deleted point onto the
+        # geometry Coincident there: the DistanceX of the copy's ends went onto the lines'
+        # ends, and added again at the new copy's it stood twice: the sketch redundant
+        # (Invalid), its Pad failed (revC)
+        doc = self.doc
+        src, q, sk, ids, lines = self._profile()
+        a, b = sk.getPoint(ids[0], 1), sk.getPoint(ids[-1], 2)
+        sk.addConstraint(Sketcher.Constraint("DistanceX", ids[0], 1, ids[-1], 2, b.x - a.x))
+        for line in lines:
+            sk.addConstraint(Sketcher.Constraint("Block", line))
+        doc.recompute()
+        self.assertNotIn("Invalid", sk.State)
+        _edit(src, 2.5)
+        ids2 = G.write_to_sketch(q, sk)
+        doc.recompute()
+        self.assertNotIn("Invalid", sk.State)
+        dx = [(c.First, c.FirstPos, c.Second, c.SecondPos) for c in sk.Constraints
+              if c.Type == "DistanceX"]
+        self.assertEqual(dx, [(ids2[0], 1, ids2[-1], 2)])
+        self.assertEqual([w.isClosed() for w in sk.Shape.Wires], [True])
+
+    def test_an_end_dimension_to_a_pole_is_said_lost_not_raised_half_way(self):
+        # a DistanceX from the copy's start to its second pole (poles shown): the pole goes
+        # with the old copy; a KeyError left the sketch half-replaced (joints not joined),
+        # COPIES naming the old pieces, and the next Copy into wrote beside it (9 geometries,
+        # the profile open: QA24gui F1 again) (revC)
+        doc = self.doc
+        src, q, sk, ids, lines = self._profile()
+        sk.exposeInternalGeometry(ids[0])
+        p2 = sk.Geometry[ids[0]].getPole(2)
+        pole = [i for i, g in enumerate(sk.Geometry) if isinstance(g, Part.Circle)
+                and (g.Center - p2).Length < 1e-6][0]
+        sk.addConstraint(Sketcher.Constraint("DistanceX", ids[0], 1, pole, 3,
+                                             p2.x - sk.getPoint(ids[0], 1).x))
+        n = len(sk.Constraints)                 # the DistanceX's number
+        doc.recompute()
+        self.assertNotIn("Invalid", sk.State)
+        _edit(src, 2.5)
+        said, ids2 = S.console_output(lambda: G.write_to_sketch(q, sk))
+        doc.recompute()
+        self.assertIn(f"not kept (they named its pieces): DistanceX {n}", said)
+        self.assertEqual(G.earlier_copy(q, sk), ids2)
+        self.assertEqual(sorted(c.Type for c in sk.Constraints), ["Coincident"] * 6)
+        G.write_to_sketch(q, sk)                # again: in place, not beside
+        doc.recompute()
+        self.assertEqual(len(sk.Geometry), 6)
+        self.assertEqual([w.isClosed() for w in sk.Shape.Wires], [True])
+
+
 class MultiPieceExactTest(S.DocTest):
     doc_name = "CopyMultiPiece"
 

@@ -515,7 +515,7 @@ def _replace_copy(sketch, earlier, curves):
         at = {r: ("start" if r == (first, 1) else "end" if r == (last, 2) else None)
               for r in mine}
         if None not in at.values():
-            kept.append((c, refs, at))
+            kept.append((n, c, refs, at))
             continue
         pair = sorted(mine, key=lambda r: earlier.index(r[0]))
         k = earlier.index(pair[0][0])
@@ -529,7 +529,7 @@ def _replace_copy(sketch, earlier, curves):
         for t in sorted((j or set()) - common):
             lost.append(f"{t} at the joint of pieces {k + 1} and {k + 2}")
     # the line segments joined to the ends follow them (in place: Tag, construction kept)
-    for c, refs, at in kept:
+    for _n, c, refs, at in kept:
         if c.Type != "Coincident":
             continue
         for r in refs:
@@ -542,10 +542,23 @@ def _replace_copy(sketch, earlier, curves):
                     geometry[r[0]].EndPoint = p
     sketch.Geometry = geometry
     tags = [g.Tag for g in sketch.Geometry]
+    # the constraints naming the old pieces deleted first: delGeometries moves those at a
+    # point of theirs onto the geometry Coincident there (a DistanceX of the copy's ends
+    # onto the lines' ends), and added again below they stood twice: the sketch redundant,
+    # its Pad failed. Their InternalAlignment go with the poles they hold
+    for n in reversed(range(len(sketch.Constraints))):
+        c = sketch.Constraints[n]
+        if c.Type != "InternalAlignment" and {c.First, c.Second, c.Third} & olds:
+            sketch.delConstraint(n)
     sketch.delGeometries(sorted(olds))
     ids = [sketch.addGeometry(c, False) for c in curves]
     now = {g.Tag: i for i, g in enumerate(sketch.Geometry)}
-    for c, refs, at in kept:
+    for n, c, refs, at in kept:
+        if any(g >= 0 and (g, pos) not in at and tags[g] not in now for g, pos in refs):
+            # it named a pole of the old copy too (gone with it): a KeyError here left
+            # the sketch half-replaced, COPIES stale, the next Copy into beside it
+            lost.append(f"{c.Type} {n + 1}" + (f" '{c.Name}'" if c.Name else ""))
+            continue
         for (g, pos), (gname, posname) in zip(refs, slots):
             if (g, pos) in at:
                 setattr(c, gname, ids[0] if at[(g, pos)] == "start" else ids[-1])
