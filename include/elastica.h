@@ -1712,9 +1712,11 @@ typedef struct el_affine_options {
                               dominate psi; a fraction (e.g. 0.2) keeps k_i A^(-2/3)
                               converging away from the inflections. */
     int fit_ends;          /* 1: adjust each piece's A (secant on log|A|, t1 re-optimised
-                              each time) until its last vertex lands on the piece end
-                              (inflection or curve end), the polyline's end within half a
-                              sample (none: EL_EDOM), as §4.4 allows; 0 (default): the paper's
+                              each time; where that misses, each of psi's 4 lowest minima
+                              in t1 followed through A, |log(A/A0)| <= 0.5) until its last
+                              vertex lands on the piece end (inflection or curve end), the
+                              polyline's end within half a sample (none: EL_EDOM), as §4.4
+                              allows; 0 (default): the paper's
                               A = (S/n)^3, the last vertex lands near the end */
     int optimise;          /* 1 (default): t1 minimises psi; 0: t1 stays at its start value
                               (affine length cbrt|A| along f~), the simple construction of

@@ -325,12 +325,12 @@ static int piece_optimise(piece *P, double t1_init, const el_affine_options *o, 
     return st;
 }
 
-/* A = sign (S/m)^3 given: t1 from the affine length cbrt|A| along f~, then optimised. */
-static int piece_solve(piece *P, const el_affine_options *o, double *psi)
+/* t1 from the affine length cbrt|A| along f~ (interpolated, not integral). */
+static double piece_t1_start(const piece *P)
 {
     const arc *arcs = P->arcs;
     double a13 = cbrt(fabs(P->A)), acc = 0.0, t1 = (double)P->Tb;
-    for (size_t j = P->Ta; j < P->Tb; j++) {   /* initial t1 (interpolated, not integral) */
+    for (size_t j = P->Ta; j < P->Tb; j++) {
         if (acc + arcs[j].S >= a13 && arcs[j].S > 0.0) {
             t1 = (double)j + (a13 - acc) / arcs[j].S;
             break;
@@ -338,7 +338,13 @@ static int piece_solve(piece *P, const el_affine_options *o, double *psi)
         acc += arcs[j].S;
     }
     if (!(t1 > (double)P->Ta)) t1 = (double)P->Ta + 0.5;
-    return piece_optimise(P, t1, o, psi);
+    return t1;
+}
+
+/* A = sign (S/m)^3 given: t1 from the affine length cbrt|A| along f~, then optimised. */
+static int piece_solve(piece *P, const el_affine_options *o, double *psi)
+{
+    return piece_optimise(P, piece_t1_start(P), o, psi);
 }
 
 /* fit_ends' landing (§4.4 "redone with adjusted value for A if the resulting x_ni is too
@@ -359,6 +365,160 @@ static int piece_landed(const piece *P, int last)
         if (P->t[i] > (double)P->Tb) return 0;
     double miss = P->t[P->m] - (double)P->Tb;
     return !(miss > 0.5 || (last && miss < -0.5));
+}
+
+/* ------------------- fit_ends' landing along one minimum of psi (the secant's fallback) */
+
+/* The local minimum of psi(t1) at P's A reached from t downhill in steps of h (at most
+ * 64 steps, staying above Ta), refined by GSL's golden section to `tol` and, at the
+ * landing's tol (o->t1_tol), polished as piece_optimise's; P left built there, *t moved
+ * to it. EL_EDOM: no minimum on the way (a build failed, the
+ * walk reached Ta or ran out). P->r must be allocated. */
+static int piece_local_min(piece *P, const el_affine_options *o, double *t, double h, double tol)
+{
+    const double lo = (double)P->Ta;
+    double tb = *t, ta = tb - h, tc = tb + h;
+    if (!(ta > lo)) return EL_EDOM;
+    double fa = psi_fn(ta, P), fb = psi_fn(tb, P), fc = psi_fn(tc, P);
+    for (int k = 0; k < 64 && !(fb < fa && fb < fc); k++) {
+        if (fa < fc) {
+            tc = tb; fc = fb; tb = ta; fb = fa; ta = tb - h;
+            if (!(ta > lo)) return EL_EDOM;
+            fa = psi_fn(ta, P);
+        } else {
+            ta = tb; fa = fb; tb = tc; fb = fc; tc = tb + h;
+            fc = psi_fn(tc, P);
+        }
+    }
+    if (!(fb < fa && fb < fc && fb < 1e300)) return EL_EDOM;
+    el__gsl_quiet();
+    gsl_min_fminimizer *s = gsl_min_fminimizer_alloc(gsl_min_fminimizer_goldensection);
+    if (!s) return EL_ENOMEM;
+    gsl_function F = {psi_fn, P};
+    int st = gsl_min_fminimizer_set_with_values(s, &F, tb, fb, ta, fa, tc, fc) ? EL_EDOM : EL_OK;
+    for (int it = 0; !st && it < o->max_iter; it++) {
+        if (gsl_min_fminimizer_iterate(s)) break;
+        if (gsl_min_fminimizer_x_upper(s) - gsl_min_fminimizer_x_lower(s) < tol) break;
+    }
+    if (!st) *t = gsl_min_fminimizer_x_minimum(s);
+    if (!st && tol <= o->t1_tol) *t = piece_polish(P, *t, h);   /* the landing's, not the scan's */
+    gsl_min_fminimizer_free(s);
+    if (!st) st = piece_build(P, *t);
+    return st;
+}
+
+/* The landing miss f = t_m - Tb at A = A0 e^l on one branch: t1 the minimum of psi
+ * reached from *t (piece_local_min; *t follows it), or without optimisation t1 from the
+ * affine length (piece_solve: f continuous in l). P left built there. */
+static int branch_miss(piece *P, const el_affine_options *o, int optimisable, double A0,
+                       double l, double *t, double h, double tol, double *f)
+{
+    P->A = A0 * exp(l);
+    int st;
+    if (optimisable) {
+        st = piece_local_min(P, o, t, h, tol);
+    } else {
+        double *keep = P->r, psi;   /* piece_solve allocates and frees its own */
+        st = piece_solve(P, o, &psi);
+        P->r = keep;
+    }
+    *f = P->t[P->m] - (double)P->Tb;
+    return st ? st : (isfinite(*f) ? EL_OK : EL_EDOM);
+}
+
+/*
+ * fit_ends when the secant on log|A| found no landing. psi(t1) can have several near-equal
+ * minima (a batten's curvature has a corner at each duck, and is 0 at its free ends), the
+ * global one jumps between them as A moves, and the miss t_m - Tb jumps with it, over 0
+ * (exact samples of a 12-duck batten, 192 edges: -13.4 -> +11.1 samples for a change of
+ * 2e-4 in log A). Along one minimum the miss is continuous in A. So: from each of the NS
+ * lowest minima of psi's grid at A0 (piece_optimise's grid), follow it (piece_local_min
+ * from the last t1) both ways in log(A/A0), in steps of 0.02 up to +-0.5, all branches a
+ * step at a time; where a branch's miss changes sign, bisect on that branch (a jump that
+ * stays > 0.5 samples after 12 halvings is no root). The first step with a landed polyline
+ * (piece_landed) ends the search: of its landings, the least psi (A nearest the paper's
+ * first, then the fairest). Without optimisation t1 has one branch. Bounded work: at most
+ * 2 NS K branch steps. Leaves P built at the landing; EL_EDOM when no branch lands.
+ */
+static int piece_land_branches(piece *P, const el_affine_options *o, double A0, int last,
+                               double *psi)
+{
+    enum { G = 24, K = 25, NS = 4 };
+    const double dl = 0.02, scan_tol = 1e-4;
+    const int optimisable = o->optimise && P->m >= 4 + (size_t)P->skip_lo + (size_t)P->skip_hi;
+    P->A = A0;
+    const double lo = (double)P->Ta, t1i = piece_t1_start(P);
+    const double hi = fmin(lo + 2.0 * (t1i - lo), (double)P->Tb), h = 0.25 * (hi - lo) / G;
+    if (optimisable && !(hi > lo)) return EL_EDOM;
+    P->r = malloc(3 * (P->m + 1) * sizeof *P->r);
+    if (!P->r) return EL_ENOMEM;
+    double tb[2 * NS], fb[2 * NS], fg[G + 1];   /* branch b: start b / 2, direction b % 2 */
+    int alive[2 * NS];
+    size_t nb = 0;
+    if (optimisable) {
+        for (size_t g = 1; g <= G; g++) fg[g] = psi_fn(lo + (double)g * 4.0 * h, P);
+        int taken[G + 1] = {0};
+        for (int k = 0; k < NS; k++) {   /* the NS lowest minima of the grid */
+            size_t gb = 0;
+            for (size_t g = 2; g < G; g++)
+                if (!taken[g] && fg[g] < fg[g - 1] && fg[g] < fg[g + 1] && fg[g] < 1e300 &&
+                    (gb == 0 || fg[g] < fg[gb]))
+                    gb = g;
+            if (gb == 0) break;
+            taken[gb] = 1;
+            tb[nb] = tb[nb + 1] = lo + (double)gb * 4.0 * h;
+            nb += 2;
+        }
+    } else {
+        tb[0] = tb[1] = t1i;
+        nb = 2;
+    }
+    for (size_t b = 0; b < nb; b += 2) {
+        alive[b] = alive[b + 1] =
+            !branch_miss(P, o, optimisable, A0, 0.0, &tb[b], h, scan_tol, &fb[b]);
+        tb[b + 1] = tb[b];
+        fb[b + 1] = fb[b];
+    }
+    double best_l = 0.0, best_t = 0.0, best_psi = HUGE_VAL;
+    for (int k = 1; k <= K && best_psi == HUGE_VAL; k++) {
+        for (size_t b = 0; b < nb; b++) {
+            if (!alive[b]) continue;
+            const double dir = (b % 2) ? 1.0 : -1.0, l = dir * (k - 1) * dl, l2 = dir * k * dl;
+            double t2 = tb[b], f2;
+            if (branch_miss(P, o, optimisable, A0, l2, &t2, h, scan_tol, &f2)) {
+                alive[b] = 0;
+                continue;
+            }
+            if ((fb[b] < 0.0) != (f2 < 0.0)) {   /* bisect on this branch */
+                double a = l, ta = tb[b], fa = fb[b], c = l2, tc = t2, fc = f2;
+                for (int it = 0; it < 40 && fabs(fa) > 1e-7 && fabs(fc) > 1e-7; it++) {
+                    if (it >= 12 && fmin(fabs(fa), fabs(fc)) > 0.5) break;  /* a jump, no root */
+                    double mid = 0.5 * (a + c), tm = fabs(fa) < fabs(fc) ? ta : tc, fm;
+                    if (branch_miss(P, o, optimisable, A0, mid, &tm, h, scan_tol, &fm)) break;
+                    if ((fm < 0.0) == (fa < 0.0)) { a = mid; ta = tm; fa = fm; }
+                    else { c = mid; tc = tm; fc = fm; }
+                }
+                double lz = fabs(fa) < fabs(fc) ? a : c, tz = fabs(fa) < fabs(fc) ? ta : tc, fz;
+                if (!branch_miss(P, o, optimisable, A0, lz, &tz, h, o->t1_tol, &fz) &&
+                    piece_landed(P, last)) {
+                    double pz = piece_psi_built(P);
+                    if (pz < best_psi) { best_psi = pz; best_l = lz; best_t = tz; }
+                }
+            }
+            tb[b] = t2;
+            fb[b] = f2;
+        }
+    }
+    int st = EL_EDOM;
+    if (best_psi < HUGE_VAL) {
+        double f;
+        st = branch_miss(P, o, optimisable, A0, best_l, &best_t, h, o->t1_tol, &f);
+        if (!st && !piece_landed(P, last)) st = EL_EDOM;
+        if (!st) *psi = piece_psi_built(P);
+    }
+    free(P->r);
+    P->r = NULL;
+    return st;
 }
 
 /* ------------------------------------- §4.4: the pieces of f~ and the end pieces kept */
@@ -668,6 +828,7 @@ int el_affine_polyline(size_t nsamples, const double *samples, const double *tan
             P.A = A0 * exp(bestl);
             st = piece_solve(&P, &o, &psi);
             if (!st && !piece_landed(&P, p + 1 == np)) st = EL_EDOM;   /* n too small */
+            if (st == EL_EDOM) st = piece_land_branches(&P, &o, A0, p + 1 == np, &psi);
             if (st) break;
         }
         for (size_t i = 1; i <= P.m; i++) {

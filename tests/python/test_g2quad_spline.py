@@ -102,3 +102,37 @@ def test_exact_samples_of_a_straight_span_are_not_called_noisy():
     s = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(q, axis=0).T))])
     flat = sp.curvature(s[a:b + 1])
     assert np.max(np.abs(flat)) < 1e-3 * np.max(np.abs(sp.curvature(2001)))
+
+
+# QA23 F10's batten: 12 convex stations of a 100 m waterline (mm), free ends (tension 0:
+# curvature 0 at both ends, a corner in its derivative at every duck)
+SHIP12 = np.array([(0, 0), (7026, 2968), (14707, 4594), (23492, 5916), (33477, 6919),
+                   (44378, 7474), (55622, 7474), (66523, 6919), (76508, 5916), (85293, 4594),
+                   (92974, 2968), (100000, 0)], float)
+
+
+@pytest.mark.parametrize("n", [24, 48, 96, 192, 250])
+def test_g2_quadratic_of_a_battens_exact_samples_lands_its_end(n):
+    """2001 exact samples of the batten: 24 and 192 edges raised DomainError "edges are too
+    few for the points' turning" (48, 96, 250 built): psi(t1) has several near-equal minima,
+    fit_ends' secant on A saw the landing miss jump over 0 as the global one changed. Now
+    fit_ends follows one minimum to the landing. The splines build, end on the samples' ends,
+    and lie within the deviation they report of the samples (own evaluation: 4000 points a
+    spline against the sample polyline)."""
+    from libelastica.report import closest_points
+    sp = el.elastic_spline(SHIP12, tension=0.0)
+    assert np.allclose(sp.curvature(np.array([0.0, sp.length])), 0.0, atol=1e-12)
+    x = sp.points(2001)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", el.EndTangentWarning)
+        g = el.g2_quadratic(x, n)
+    assert g.covers_source and g.curvature_jump < 1e-9
+    assert np.allclose(g.ends[0], x[0], atol=1e-9 * sp.length)
+    assert np.allclose(g.ends[-1], x[-1], atol=1e-9 * sp.length)
+    own = 0.0
+    for b in g.bsplines:
+        p = b(np.linspace(*b.domain, 4000))
+        own = max(own, float(np.max(np.linalg.norm(closest_points(p, x) - p, axis=1))))
+    assert own <= 1.05 * g.deviation
+    # a quadratic's error falls like 1/n^2: 1e-3 of the length at 24 edges is ample
+    assert g.deviation < 1e-3 * sp.length * (24.0 / n) ** 2
