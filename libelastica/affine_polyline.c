@@ -2,9 +2,9 @@
  * Seed 002 §4: the approximation of a curve by an affine arc-length polyline:
  * parabolic replacement curve, affine arc length (15), line intersections,
  * golden-section search on t1, splitting at inflections (§4.4). The polyline's
- * own invariants are in affine.c.
+ * own invariants are in affine.c; fit_ends' landing of a piece's end in affine_landing.c.
  */
-#include "affine_internal.h"
+#include "affine_piece.h"
 #include <gsl/gsl_min.h>
 #include <gsl/gsl_poly.h>
 #include <stdlib.h>
@@ -116,19 +116,7 @@ int el_affine_parabolic_lengths(size_t nsamples, const double *samples, double *
     return EL_OK;
 }
 
-/* --------------------------------------------- §4.1–4.3: one inflection-free piece */
-
-typedef struct piece {
-    const arc *arcs;
-    size_t Ta, Tb;      /* parameter range [Ta, Tb] of f~ (arcs Ta..Tb-1) */
-    int sigma;          /* turning sense */
-    double A;           /* signed area constant */
-    size_t m;           /* edges: local vertices 0..m */
-    double x0[2];       /* fixed first vertex */
-    int skip_lo, skip_hi;
-    double *xy, *t;     /* workspace m+1 points / parameters */
-    double *r;          /* workspace 3 (m+1) residuals: psi's, then polish's r(t +- d) */
-} piece;
+/* ------------------------- §4.1–4.3: one inflection-free piece (its type: affine_piece.h) */
 
 static void arc_eval(const arc *a, double tau, double out[2])
 {
@@ -179,7 +167,7 @@ static int next_vertex(const piece *P, const double v[2], const double x[2], dou
     }
 }
 
-static int piece_build(piece *P, double t1)
+int el__piece_build(piece *P, double t1)
 {
     P->xy[0] = P->x0[0];
     P->xy[1] = P->x0[1];
@@ -224,7 +212,7 @@ static double sum_sq(const double *r, size_t n)
 }
 
 /* psi = sum r_j^2 (4), the residuals in the piece's workspace P->r. */
-static double piece_psi_built(piece *P)
+double el__piece_psi_built(piece *P)
 {
     return sum_sq(P->r, piece_resid_built(P, P->r));
 }
@@ -236,17 +224,17 @@ static double piece_psi_built(piece *P)
  * conditioning says (~eps |r| / |r'|). r' by central differences (step 1e-6 sample units:
  * the vertices are C^1 in t1). A step is taken only while it stays within the bracket
  * half-width `w` and psi does not rise by more than its rounding. */
-static double piece_polish(piece *P, double t, double w)
+double el__piece_polish(piece *P, double t, double w)
 {
     size_t cap = P->m + 1;
     double *r = P->r, *rp = P->r + cap, *rm = P->r + 2 * cap;
     const double d = 1e-6;
     for (int it = 0; it < 4; it++) {
-        if (piece_build(P, t + d)) break;
+        if (el__piece_build(P, t + d)) break;
         size_t np_ = piece_resid_built(P, rp);
-        if (piece_build(P, t - d)) break;
+        if (el__piece_build(P, t - d)) break;
         size_t nm = piece_resid_built(P, rm);
-        if (piece_build(P, t)) break;
+        if (el__piece_build(P, t)) break;
         size_t n0 = piece_resid_built(P, r);
         if (n0 == 0 || np_ != n0 || nm != n0) break;
         double g = 0.0, H = 0.0, psi0 = 0.0;
@@ -260,7 +248,7 @@ static double piece_polish(piece *P, double t, double w)
         double step = -g / H;
         if (!(fabs(step) <= w)) break;
         double tn = t + step;
-        if (piece_build(P, tn)) break;
+        if (el__piece_build(P, tn)) break;
         size_t n1 = piece_resid_built(P, r);
         double psi1 = sum_sq(r, n1);
         if (n1 != n0 || !(psi1 <= psi0 * (1.0 + 1e-8) + 1e-300)) break;
@@ -270,11 +258,11 @@ static double piece_polish(piece *P, double t, double w)
     return t;
 }
 
-static double psi_fn(double t1, void *params)
+double el__piece_psi(double t1, void *params)
 {
     piece *P = params;
-    if (piece_build(P, t1)) return 1e300;
-    double v = piece_psi_built(P);
+    if (el__piece_build(P, t1)) return 1e300;
+    double v = el__piece_psi_built(P);
     return isfinite(v) ? v : 1e300;
 }
 
@@ -295,16 +283,17 @@ static int piece_optimise(piece *P, double t1_init, const el_affine_options *o, 
         double h = (hi - lo) / G;
         for (size_t g = 1; g <= G; g++) {
             tg[g] = lo + (double)g * h;
-            fg[g] = psi_fn(tg[g], P);
+            fg[g] = el__piece_psi(tg[g], P);
             if (gbest == 0 || fg[g] < fg[gbest]) gbest = g;
         }
         tg[0] = lo + 1e-3 * h;
-        fg[0] = psi_fn(tg[0], P);
+        fg[0] = el__piece_psi(tg[0], P);
         best_t = tg[gbest];
-        if (gbest < G && fg[gbest] < fg[gbest - 1] && fg[gbest] < fg[gbest + 1] && fg[gbest] < 1e300) {
+        if (gbest < G && fg[gbest] < fg[gbest - 1] && fg[gbest] < fg[gbest + 1] &&
+            fg[gbest] < 1e300) {
             el__gsl_quiet();
             gsl_min_fminimizer *s = gsl_min_fminimizer_alloc(gsl_min_fminimizer_goldensection);
-            gsl_function F = {psi_fn, P};
+            gsl_function F = {el__piece_psi, P};
             if (!s) st = EL_ENOMEM;
             else if (gsl_min_fminimizer_set_with_values(s, &F, tg[gbest], fg[gbest], tg[gbest - 1],
                                                         fg[gbest - 1], tg[gbest + 1], fg[gbest + 1]))
@@ -314,19 +303,19 @@ static int piece_optimise(piece *P, double t1_init, const el_affine_options *o, 
                 double a = gsl_min_fminimizer_x_lower(s), b = gsl_min_fminimizer_x_upper(s);
                 if (b - a < o->t1_tol) break;
             }
-            if (!st) best_t = piece_polish(P, gsl_min_fminimizer_x_minimum(s), h);
+            if (!st) best_t = el__piece_polish(P, gsl_min_fminimizer_x_minimum(s), h);
             gsl_min_fminimizer_free(s);
         }
     }
-    if (!st) st = piece_build(P, best_t);
-    if (!st) *psi = piece_psi_built(P);
+    if (!st) st = el__piece_build(P, best_t);
+    if (!st) *psi = el__piece_psi_built(P);
     free(P->r);
     P->r = NULL;
     return st;
 }
 
 /* t1 from the affine length cbrt|A| along f~ (interpolated, not integral). */
-static double piece_t1_start(const piece *P)
+double el__piece_t1_start(const piece *P)
 {
     const arc *arcs = P->arcs;
     double a13 = cbrt(fabs(P->A)), acc = 0.0, t1 = (double)P->Tb;
@@ -342,183 +331,9 @@ static double piece_t1_start(const piece *P)
 }
 
 /* A = sign (S/m)^3 given: t1 from the affine length cbrt|A| along f~, then optimised. */
-static int piece_solve(piece *P, const el_affine_options *o, double *psi)
+int el__piece_solve(piece *P, const el_affine_options *o, double *psi)
 {
-    return piece_optimise(P, piece_t1_start(P), o, psi);
-}
-
-/* fit_ends' landing (§4.4 "redone with adjusted value for A if the resulting x_ni is too
- * far from the inflection point, but an exact coincidence is not necessary"): no vertex
- * past the piece end Tb, the last within half a sample of it; the polyline's last piece
- * (`last`: it ends at the curve's end, or at an inflection where the end piece was left
- * out) within half a sample on the short side too (the nearest sample is its end:
- * g2_quadratic rounds t to it). Else no A lands it: past the end, the vertices ran on
- * along the last parabola continued (§4.3), up to next_vertex's bound; short of it, m
- * edges of the largest area the turning allows stop before the end (a circle turning 4.2
- * times at 8 edges: t = 99.7 of 159; det(v, v') = A peaks at 2 pi / 3 a vertex on a
- * circle). Both: too few edges for the turning. An inner piece's end is the next piece's
- * first vertex, so a stop short there leaves nothing of the curve out (60 noisy points at
- * 20 edges: an inner piece 1.07 samples short, no A closer); the paper lets it be. */
-static int piece_landed(const piece *P, int last)
-{
-    for (size_t i = 1; i < P->m; i++)
-        if (P->t[i] > (double)P->Tb) return 0;
-    double miss = P->t[P->m] - (double)P->Tb;
-    return !(miss > 0.5 || (last && miss < -0.5));
-}
-
-/* ------------------- fit_ends' landing along one minimum of psi (the secant's fallback) */
-
-/* The local minimum of psi(t1) at P's A reached from t downhill in steps of h (at most
- * 64 steps, staying above Ta), refined by GSL's golden section to `tol` and, at the
- * landing's tol (o->t1_tol), polished as piece_optimise's; P left built there, *t moved
- * to it. EL_EDOM: no minimum on the way (a build failed, the
- * walk reached Ta or ran out). P->r must be allocated. */
-static int piece_local_min(piece *P, const el_affine_options *o, double *t, double h, double tol)
-{
-    const double lo = (double)P->Ta;
-    double tb = *t, ta = tb - h, tc = tb + h;
-    if (!(ta > lo)) return EL_EDOM;
-    double fa = psi_fn(ta, P), fb = psi_fn(tb, P), fc = psi_fn(tc, P);
-    for (int k = 0; k < 64 && !(fb < fa && fb < fc); k++) {
-        if (fa < fc) {
-            tc = tb; fc = fb; tb = ta; fb = fa; ta = tb - h;
-            if (!(ta > lo)) return EL_EDOM;
-            fa = psi_fn(ta, P);
-        } else {
-            ta = tb; fa = fb; tb = tc; fb = fc; tc = tb + h;
-            fc = psi_fn(tc, P);
-        }
-    }
-    if (!(fb < fa && fb < fc && fb < 1e300)) return EL_EDOM;
-    el__gsl_quiet();
-    gsl_min_fminimizer *s = gsl_min_fminimizer_alloc(gsl_min_fminimizer_goldensection);
-    if (!s) return EL_ENOMEM;
-    gsl_function F = {psi_fn, P};
-    int st = gsl_min_fminimizer_set_with_values(s, &F, tb, fb, ta, fa, tc, fc) ? EL_EDOM : EL_OK;
-    for (int it = 0; !st && it < o->max_iter; it++) {
-        if (gsl_min_fminimizer_iterate(s)) break;
-        if (gsl_min_fminimizer_x_upper(s) - gsl_min_fminimizer_x_lower(s) < tol) break;
-    }
-    if (!st) *t = gsl_min_fminimizer_x_minimum(s);
-    if (!st && tol <= o->t1_tol) *t = piece_polish(P, *t, h);   /* the landing's, not the scan's */
-    gsl_min_fminimizer_free(s);
-    if (!st) st = piece_build(P, *t);
-    return st;
-}
-
-/* The landing miss f = t_m - Tb at A = A0 e^l on one branch: t1 the minimum of psi
- * reached from *t (piece_local_min; *t follows it), or without optimisation t1 from the
- * affine length (piece_solve: f continuous in l). P left built there. */
-static int branch_miss(piece *P, const el_affine_options *o, int optimisable, double A0,
-                       double l, double *t, double h, double tol, double *f)
-{
-    P->A = A0 * exp(l);
-    int st;
-    if (optimisable) {
-        st = piece_local_min(P, o, t, h, tol);
-    } else {
-        double *keep = P->r, psi;   /* piece_solve allocates and frees its own */
-        st = piece_solve(P, o, &psi);
-        P->r = keep;
-    }
-    *f = P->t[P->m] - (double)P->Tb;
-    return st ? st : (isfinite(*f) ? EL_OK : EL_EDOM);
-}
-
-/*
- * fit_ends when the secant on log|A| found no landing. psi(t1) can have several near-equal
- * minima (a batten's curvature has a corner at each duck, and is 0 at its free ends), the
- * global one jumps between them as A moves, and the miss t_m - Tb jumps with it, over 0
- * (exact samples of a 12-duck batten, 192 edges: -13.4 -> +11.1 samples for a change of
- * 2e-4 in log A). Along one minimum the miss is continuous in A. So: from each of the NS
- * lowest minima of psi's grid at A0 (piece_optimise's grid), follow it (piece_local_min
- * from the last t1) both ways in log(A/A0), in steps of 0.02 up to +-0.5, all branches a
- * step at a time; where a branch's miss changes sign, bisect on that branch (a jump that
- * stays > 0.5 samples after 12 halvings is no root). The first step with a landed polyline
- * (piece_landed) ends the search: of its landings, the least psi (A nearest the paper's
- * first, then the fairest). Without optimisation t1 has one branch. Bounded work: at most
- * 2 NS K branch steps. Leaves P built at the landing; EL_EDOM when no branch lands.
- */
-static int piece_land_branches(piece *P, const el_affine_options *o, double A0, int last,
-                               double *psi)
-{
-    enum { G = 24, K = 25, NS = 4 };
-    const double dl = 0.02, scan_tol = 1e-4;
-    const int optimisable = o->optimise && P->m >= 4 + (size_t)P->skip_lo + (size_t)P->skip_hi;
-    P->A = A0;
-    const double lo = (double)P->Ta, t1i = piece_t1_start(P);
-    const double hi = fmin(lo + 2.0 * (t1i - lo), (double)P->Tb), h = 0.25 * (hi - lo) / G;
-    if (optimisable && !(hi > lo)) return EL_EDOM;
-    P->r = malloc(3 * (P->m + 1) * sizeof *P->r);
-    if (!P->r) return EL_ENOMEM;
-    double tb[2 * NS], fb[2 * NS], fg[G + 1];   /* branch b: start b / 2, direction b % 2 */
-    int alive[2 * NS];
-    size_t nb = 0;
-    if (optimisable) {
-        for (size_t g = 1; g <= G; g++) fg[g] = psi_fn(lo + (double)g * 4.0 * h, P);
-        int taken[G + 1] = {0};
-        for (int k = 0; k < NS; k++) {   /* the NS lowest minima of the grid */
-            size_t gb = 0;
-            for (size_t g = 2; g < G; g++)
-                if (!taken[g] && fg[g] < fg[g - 1] && fg[g] < fg[g + 1] && fg[g] < 1e300 &&
-                    (gb == 0 || fg[g] < fg[gb]))
-                    gb = g;
-            if (gb == 0) break;
-            taken[gb] = 1;
-            tb[nb] = tb[nb + 1] = lo + (double)gb * 4.0 * h;
-            nb += 2;
-        }
-    } else {
-        tb[0] = tb[1] = t1i;
-        nb = 2;
-    }
-    for (size_t b = 0; b < nb; b += 2) {
-        alive[b] = alive[b + 1] =
-            !branch_miss(P, o, optimisable, A0, 0.0, &tb[b], h, scan_tol, &fb[b]);
-        tb[b + 1] = tb[b];
-        fb[b + 1] = fb[b];
-    }
-    double best_l = 0.0, best_t = 0.0, best_psi = HUGE_VAL;
-    for (int k = 1; k <= K && best_psi == HUGE_VAL; k++) {
-        for (size_t b = 0; b < nb; b++) {
-            if (!alive[b]) continue;
-            const double dir = (b % 2) ? 1.0 : -1.0, l = dir * (k - 1) * dl, l2 = dir * k * dl;
-            double t2 = tb[b], f2;
-            if (branch_miss(P, o, optimisable, A0, l2, &t2, h, scan_tol, &f2)) {
-                alive[b] = 0;
-                continue;
-            }
-            if ((fb[b] < 0.0) != (f2 < 0.0)) {   /* bisect on this branch */
-                double a = l, ta = tb[b], fa = fb[b], c = l2, tc = t2, fc = f2;
-                for (int it = 0; it < 40 && fabs(fa) > 1e-7 && fabs(fc) > 1e-7; it++) {
-                    if (it >= 12 && fmin(fabs(fa), fabs(fc)) > 0.5) break;  /* a jump, no root */
-                    double mid = 0.5 * (a + c), tm = fabs(fa) < fabs(fc) ? ta : tc, fm;
-                    if (branch_miss(P, o, optimisable, A0, mid, &tm, h, scan_tol, &fm)) break;
-                    if ((fm < 0.0) == (fa < 0.0)) { a = mid; ta = tm; fa = fm; }
-                    else { c = mid; tc = tm; fc = fm; }
-                }
-                double lz = fabs(fa) < fabs(fc) ? a : c, tz = fabs(fa) < fabs(fc) ? ta : tc, fz;
-                if (!branch_miss(P, o, optimisable, A0, lz, &tz, h, o->t1_tol, &fz) &&
-                    piece_landed(P, last)) {
-                    double pz = piece_psi_built(P);
-                    if (pz < best_psi) { best_psi = pz; best_l = lz; best_t = tz; }
-                }
-            }
-            tb[b] = t2;
-            fb[b] = f2;
-        }
-    }
-    int st = EL_EDOM;
-    if (best_psi < HUGE_VAL) {
-        double f;
-        st = branch_miss(P, o, optimisable, A0, best_l, &best_t, h, o->t1_tol, &f);
-        if (!st && !piece_landed(P, last)) st = EL_EDOM;
-        if (!st) *psi = piece_psi_built(P);
-    }
-    free(P->r);
-    P->r = NULL;
-    return st;
+    return piece_optimise(P, el__piece_t1_start(P), o, psi);
 }
 
 /* ------------------------------------- §4.4: the pieces of f~ and the end pieces kept */
@@ -806,29 +621,10 @@ int el_affine_polyline(size_t nsamples, const double *samples, const double *tan
         P.t = work_t;
         P.r = NULL;                         /* piece_optimise's */
         double psi = 0.0;
-        st = piece_solve(&P, &o, &psi);
+        st = el__piece_solve(&P, &o, &psi);
         if (st) break;
-        if (o.fit_ends) {
-            /* §4.4: "redone with adjusted A": secant on log|A| so that the last vertex
-             * lands at the piece end (the inflection / the curve end), t1 re-optimised. */
-            double A0 = P.A, l0 = 0.0, f0 = P.t[P.m] - (double)P.Tb;
-            /* first guess: the steps scale like cbrt|A|, so t_end - Ta ~ |A|^(1/3) */
-            double l1 = -3.0 * log1p(f0 / ((double)(P.Tb - P.Ta) + 1.0)), f1;
-            l1 = fmax(-1.0, fmin(1.0, l1));
-            double bestf = f0, bestl = 0.0;
-            for (int it = 0; it < 30 && fabs(bestf) > 1e-7; it++) {
-                P.A = A0 * exp(l1);
-                if (piece_solve(&P, &o, &psi)) { l1 = 0.5 * (l0 + l1); continue; }
-                f1 = P.t[P.m] - (double)P.Tb;
-                if (fabs(f1) < fabs(bestf)) { bestf = f1; bestl = l1; }
-                double l2 = (f1 != f0) ? l1 - f1 * (l1 - l0) / (f1 - f0) : l1;
-                if (!isfinite(l2) || fabs(l2 - l1) > 1.0) l2 = l1 + (l2 > l1 ? 1.0 : -1.0) * 0.5;
-                l0 = l1; f0 = f1; l1 = l2;
-            }
-            P.A = A0 * exp(bestl);
-            st = piece_solve(&P, &o, &psi);
-            if (!st && !piece_landed(&P, p + 1 == np)) st = EL_EDOM;   /* n too small */
-            if (st == EL_EDOM) st = piece_land_branches(&P, &o, A0, p + 1 == np, &psi);
+        if (o.fit_ends) {   /* §4.4 "redone with adjusted value for A": affine_landing.c */
+            st = el__piece_fit_ends(&P, &o, p + 1 == np, &psi);
             if (st) break;
         }
         for (size_t i = 1; i <= P.m; i++) {
