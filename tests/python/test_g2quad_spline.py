@@ -136,3 +136,34 @@ def test_g2_quadratic_of_a_battens_exact_samples_lands_its_end(n):
     assert own <= 1.05 * g.deviation
     # a quadratic's error falls like 1/n^2: 1e-3 of the length at 24 edges is ample
     assert g.deviation < 1e-3 * sp.length * (24.0 / n) ** 2
+
+
+@pytest.mark.parametrize("nst, B2, p, M, offset, n", [
+    (30, 6430.606123439048, 0.7401605542428256, 3001, (0.0, 0.0), 271),
+    (40, 7389.256974654896, 0.6576043538975658, 800, (2.5e5, -1.3e5), 208)])
+def test_g2_quadratic_of_a_ship_lines_samples_lands_its_end(nst, B2, p, M, offset, n):
+    """A naval architect's waterline: stations of a 100 m convex line (mm, denser at the
+    ends, y = B2 sin(pi x / L)^p), a batten through them (tension 0), its samples (the second
+    at a big offset). g2_quadratic raised DomainError ("271 edges are too few for the points'
+    turning", "208 edges, 1.09e+03 a turn ...") before fit_ends followed psi's minima through
+    A (two of 4c16a92's sweep of realistic inputs, /tmp/g2land/sweep/real500.py 151, 193).
+    The splines build, end on the samples' ends, lie within their reported deviation."""
+    from libelastica.report import closest_points
+    u = np.linspace(0.0, 1.0, nst)
+    x = 1e5 * (u - 0.24 * np.sin(2 * np.pi * u) / (2 * np.pi))
+    sp = el.elastic_spline(np.column_stack([x, B2 * np.sin(np.pi * x / 1e5) ** p]), tension=0.0)
+    X = sp.points(M) + np.array(offset)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", el.EndTangentWarning)
+        g = el.g2_quadratic(X, n)
+    # relative jump: 2.5e5 mm of offset round the vertices' second differences (4.5e-9)
+    assert g.covers_source and g.curvature_jump < (1e-9 if offset[0] == 0.0 else 1e-8)
+    assert np.allclose(g.ends[0], X[0], rtol=0, atol=1e-9 * sp.length)
+    assert np.allclose(g.ends[-1], X[-1], rtol=0, atol=1e-9 * sp.length)
+    own = 0.0
+    for b in g.bsplines:
+        q = b(np.linspace(*b.domain, 4000))
+        own = max(own, float(np.max(np.linalg.norm(closest_points(q, X) - q, axis=1))))
+    assert own <= 1.05 * g.deviation
+    # 1/n^2 as the batten's, 2e-3: 800 samples of 40 stations give 4 samples an edge at 208
+    assert g.deviation < 2e-3 * sp.length * (24.0 / n) ** 2
