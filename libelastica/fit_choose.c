@@ -390,6 +390,11 @@ static int settle_early(fit_run_state *R, size_t ci)
           R->kind == FIT_ORTHOGONAL && R->model == FIT_SMOOTH && fit_has_feet(ob) && ob->rest &&
           R->map.nx > 0 && ci >= R->nfamily && rms > 1e-10 && rms > 1.5 * R->noise))
         return EL_OK;
+    /* this kept fit refitted already (the starts since kept none better): the same refit
+     * from the same curve and the same feet, rejected again (revB: 6 identical refits on an
+     * exact 50-point sketch; +24 iterations on noisy 200-point fits). f > 0 here (rms above) */
+    if (R->best.f == R->settle_tried_f) return EL_OK;
+    R->settle_tried_f = R->best.f;
     double v[2][FIT_NP];
     if (el__fit_map_eval(&R->map, R->best.x, v, NULL) != EL_OK) return EL_OK;
     fit_ob_state saved;

@@ -636,6 +636,7 @@ typedef struct fit_run_state {
     int best_strays, best_loops, best_meets, wander_kept;
     int iters, tried, last_is_best, ipopt_spent;
     int unshared;         /* a held start's continuation ended far above its free fit (fit_choose.c) */
+    double settle_tried_f;   /* the kept fit's objective settle_early last refitted (0: none) */
     double v[2][FIT_NP];
     int status, constraint, ok;
 } fit_run_state;
