@@ -14,9 +14,10 @@
  * refits cost 5 x a fit and took 22 MiB more at 10^6 points for a lower rms by < 1e-3 of
  * it; QA's scans dense at one end pile 8..56 of 200) */
 enum { PILE_LEAST = 3, PILE_SHARE = 50 };
-/* or PILE_LEAST of them and the farthest beyond its end by this many of the points' noise
- * levels (fit_ends.c piles_up: a retraced end; noise alone puts a dense end's points a few
- * levels beyond it) */
+/* or PILE_LEAST of them, the farthest beyond its end by this many of the points' noise levels
+ * (el__fit_noise_rms x sc: the rms per point, sqrt 2 x the noise across the curve) and
+ * PILE_LEAST beyond half as far (fit_ends.c piles_up: a retraced end; noise alone puts a dense
+ * end's points a few levels beyond it) */
 static const double PILE_PAST = 8.0;
 /* rounds at most: each from the last one's fit, tied to its extremes, while that lowers the
  * rms (on a 1000-point scan, noise 1 %, 9 rounds crept to the optimum, 0.056338 -> 0.056019,

@@ -63,3 +63,32 @@ def test_a_stroke_with_a_retraced_end_is_fitted_from_end_to_end_of_its_ink(seed,
     assert short < ref_short + 1.0, (short, ref_short)
     assert r.max_error < ref.max_error + 1.0
     assert r.rms < 1.15 * ref.rms
+
+
+def _dwell_spike(seed, spike):
+    """A stroke as _stroke's without retrace whose pen rests at its end (10 samples of the end
+    point) and then, 2 samples before it lifts, jumps once spike px on along the end's tangent
+    (a tablet's lift-off glitch): (points, the traced stroke without noise)."""
+    r = np.random.default_rng(seed)
+    _, X0 = _stroke(seed, 0.0, 0.0)
+    e, t = X0[-1], X0[-1] - X0[-4]
+    X = np.r_[X0, np.repeat(X0[-1:], 10, axis=0)]
+    P = np.round((X + r.normal(0, NOISE, X.shape)) / QUANT) * QUANT
+    P[-3] = np.round((e + spike * t / np.hypot(*t)) / QUANT) * QUANT
+    return P, X0
+
+
+# one point far past an end is an outlier, not a retrace: the smooth fit's pile-up refit tied
+# to it drew the curve out to it, 4-12 px past the stroke's end, and its OutlierWarning went
+# (fit_ends.c's piles_up took the farthest point beyond the end, not PILE_LEAST of them)
+@pytest.mark.parametrize("seed", [6, 9, 14, 38])
+def test_one_spike_past_a_dwelt_end_is_an_outlier_not_a_retrace(seed):
+    P, X0 = _dwell_spike(seed, 8.0)
+    with warnings.catch_warnings(record=True) as w:
+        warnings.simplefilter("always")
+        r = el.fit(P, model="smooth")
+    C = r.curve
+    Q = C.points(np.linspace(0, C.length, 4000))
+    # the curve stays on the stroke (noise ~4 sigma), it does not run on to the spike
+    assert float(cKDTree(X0).query(Q)[0].max()) < 1.5
+    assert any(issubclass(x.category, el.OutlierWarning) for x in w), [str(x.message) for x in w]
