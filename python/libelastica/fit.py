@@ -36,8 +36,8 @@ from .fit_cost import EndConditionWarning, checked_ends
 from .misfit import (MISFIT_RATIO, MisfitWarning, OutlierWarning, _Figures, _places, _verdict,
                      _warn_outliers, misfit_summary)
 from .fit_retrace import retrace_gate
-from .order import (Retrace, curve_order, data_run_back, order_summary, ordering, retrace_summary,
-                    run_back, turn_back)
+from .order import (Retrace, curve_order, data_run_back, order_summary, ordering, passed_over,
+                    retrace_summary, run_back, turn_back)
 
 _MODES = {"auto": 0, "uniform": 1, "chord": 2}
 _MODE_NAMES = {v: k for k, v in _MODES.items()}
@@ -676,14 +676,12 @@ def _fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] =
         # rms 37 at noise 0.4, said no OrderWarning; a smooth one said a WanderWarning):
         # the feet on the points' own pass before their turn then (data_run_back), the
         # cause said instead of the wander it makes
-        # a misfit in curve order (order='curve'), or that curve order fits no closer than
-        # half: its feet or points run back where the shape is no one elastica, no sign of
-        # a scan passed back and forth (QA24 F3: a letter 'e', bar + 306-degree arc, "points
-        # 80 to 206 run back", rms 2.00 either order; QA20's scan 2.93, in curve order 0.4)
+        # a misfit in curve order (order='curve') or that it fits no closer than half, its points
+        # off their pass before (passed_over): no scan passed back and forth (QA24 F3: an 'e',
+        # "points 80 to 206 run back", rms 2.00 either order; a square passed back and forth: said)
         shape = ((idx is not None or (tried is not None and not tried < 0.5 * res.rms))
                  and _verdict(fig, dist, float(res.rms), False) is not None)
-        if back is None and res.wander_gap < 0 and res.distance != _DISTANCES["paired"] \
-                and not shape:
+        if back is None and res.wander_gap < 0 and res.distance != _DISTANCES["paired"]:
             back = run_back(pts, foot, res.rms)
         # (only where the points turn back and the fit does not follow them: not converged
         # or MISFIT_RATIO times their noise away; a coil of 20 sketched points turns back as
@@ -693,9 +691,11 @@ def _fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] =
         # a converged fit within MISFIT_RATIO of it is within it of noise_level's too; the
         # figures are those the misfit verdict takes, computed once; noise_level's stride
         # search 12 ms on 1000 points)
-        if back is None and not shape and (st != lib.EL_OK or res.rms > MISFIT_RATIO * fig.quick) \
+        if back is None and (st != lib.EL_OK or res.rms > MISFIT_RATIO * fig.quick) \
                 and turn_back(pts) and (st != lib.EL_OK or res.rms > MISFIT_RATIO * fig.level):
             back = data_run_back(pts, res.rms)
+        if back is not None and shape and not passed_over(pts, back, MISFIT_RATIO * fig.level):
+            back = None
         if back is not None:
             hint = ("order='curve' fits them in curve order (el.curve_order)" if tried is None else
                     f"in curve order (order='curve') the rms is {tried:.3g}, against {res.rms:.3g}")

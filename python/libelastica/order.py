@@ -277,20 +277,42 @@ def data_run_back(points, rms: float) -> Optional[Retrace]:
     first = turn_back(P)
     if not first:
         return None
+    return run_back(P, _pass_feet(P, first)[0], rms)
+
+
+def _pass_feet(P: np.ndarray, first: int):
+    """(arc lengths, distances) of points P's feet on the polyline of their pass up to point
+    ``first`` (through PASS_VERTICES of its points at most): data_run_back's, and
+    passed_over's."""
     step = max(1, -(-first // (PASS_VERTICES - 1)))
     V = P[np.r_[np.arange(0, first, step), first]]
     a, d = V[:-1], np.diff(V, axis=0)
     seg = np.hypot(d[:, 0], d[:, 1])
     at = np.concatenate(([0.0], np.cumsum(seg)))
     dd = np.maximum(seg * seg, np.finfo(float).tiny)
-    s = np.empty(len(P))
+    s, dist = np.empty(len(P)), np.empty(len(P))
     for lo in range(0, len(P), 4096):       # (a block of points against every segment)
         q = P[lo:lo + 4096, None, :] - a[None]
         t = np.clip(np.einsum("psj,sj->ps", q, d) / dd, 0.0, 1.0)
         e = q - t[..., None] * d[None]
-        j = np.argmin(np.einsum("psj,psj->ps", e, e), axis=1)
-        s[lo:lo + 4096] = at[j] + t[np.arange(len(j)), j] * seg[j]
-    return run_back(P, s, rms)
+        e2 = np.einsum("psj,psj->ps", e, e)
+        j = np.argmin(e2, axis=1)
+        k = np.arange(len(j))
+        s[lo:lo + 4096] = at[j] + t[k, j] * seg[j]
+        dist[lo:lo + 4096] = np.sqrt(e2[k, j])
+    return s, dist
+
+
+def passed_over(points, r: Retrace, near: float) -> bool:
+    """Whether points (n, 2) that run back (``r``: :func:`run_back`'s or
+    :func:`data_run_back`'s) pass over their own pass before: the median distance of points
+    r.first..r.last to the polyline of the points up to r.first within ``near`` (a scan
+    passed back and forth: about the noise; a stroke that only comes near its start, a
+    letter 'e''s arc over its bar, QA24 F3: far from it)."""
+    P = np.asarray(points, dtype=float)
+    if r.first < 1 or r.last <= r.first:
+        return False
+    return bool(np.median(_pass_feet(P[:r.last + 1], r.first)[1][r.first:]) <= near)
 
 
 def retrace_summary(r: Retrace, unit: str = "", length: Optional[LengthFormat] = None) -> str:

@@ -104,3 +104,21 @@ def test_a_constrained_fit_keeps_its_order_and_says_order_curve():
     if r.retrace is not None:
         assert any("order='curve'" in s for s in said if "run back" in s), said
     assert not any("corner at point" in s for s in said), said
+
+
+@pytest.mark.parametrize("noise", [0.1, 0.4])
+def test_a_square_passed_back_and_forth_is_said_so(noise):
+    # a scan passed out and back (1 px steps, QA20's way) over two sides of a square: no one
+    # elastica in either order, its curve-order fit no closer than half; the smooth fit was
+    # told a WanderWarning ("add a point between them") instead of its run back (revD, on
+    # 5dd7008's gate: the letter 'e''s arc runs back off its bar, this one on its own pass)
+    side = np.linspace(0, 100, 101)
+    T = np.r_[np.c_[side, 0 * side], np.c_[np.full(100, 100.0), side[1:]]]
+    P = np.r_[T, T[::-1][1:]] + np.random.default_rng(1).normal(0, noise, (2 * len(T) - 1, 2))
+    with warnings.catch_warnings(record=True) as w:
+        warnings.simplefilter("always")
+        r = el.fit(P, model="smooth")
+    said = [str(x.message) for x in w if issubclass(x.category, el.OrderWarning)]
+    assert r.retrace is not None and len(said) == 1 and "passed back and forth" in said[0]
+    assert abs(r.retrace.first - (len(T) - 1)) <= len(T) // 8      # the turn: the scan's end
+    assert not [x for x in w if x.category is el.WanderWarning]   # (an OrderWarning is one)
