@@ -430,17 +430,26 @@ def _places(points: np.ndarray, rows, fmt: LengthFormat) -> list:
 
 
 # Points whose ends lie within CLOSED_GAP of their extent (the largest side of their box)
-# of each other are said to be nearly closed where misfit names no corner: QA24's letter
-# 'o' (97 % of a 30 x 40 ellipse in pixels): ends 8.06 apart, 10 % of 80.
+# of each other and that enclose CLOSED_AREA of its square at least (shoelace, the gap
+# closed) are said to be nearly closed where misfit names no corner: QA24's letter 'o' (97 %
+# of a 30 x 40 ellipse in pixels): ends 8.06 apart, 10 % of 80, area 0.59 x 80^2 (a 10 x 80
+# ellipse 0.098); a scan passed out and back over its own pass returns to its start enclosing
+# nothing (a square's two sides, noise 0.1 / 0.4: 0.0002 / 0.0009; said "nearly closed").
 CLOSED_GAP = 0.25
+CLOSED_AREA = 0.05
 
 
 def _nearly_closed(points: np.ndarray):
     """(the gap between the first and the last point, over the extent) of points (n, 2) in
-    curve order whose ends lie within CLOSED_GAP of their extent, else None."""
+    curve order whose ends lie within CLOSED_GAP of their extent and that enclose
+    CLOSED_AREA x its square, else None."""
     extent = float(np.max(np.ptp(points, axis=0)))
     gap = float(np.hypot(*(points[-1] - points[0])))
-    return (gap, gap / extent) if extent > 0 and gap <= CLOSED_GAP * extent else None
+    if not (extent > 0 and gap <= CLOSED_GAP * extent):
+        return None
+    x, y = (points - points.mean(axis=0)).T
+    area = 0.5 * abs(float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1))))
+    return (gap, gap / extent) if area >= CLOSED_AREA * extent * extent else None
 
 
 def misfit_summary(m: Misfit, points=None, unit: str = "", numbered: bool = True,

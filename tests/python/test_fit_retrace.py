@@ -122,3 +122,17 @@ def test_a_square_passed_back_and_forth_is_said_so(noise):
     assert r.retrace is not None and len(said) == 1 and "passed back and forth" in said[0]
     assert abs(r.retrace.first - (len(T) - 1)) <= len(T) // 8      # the turn: the scan's end
     assert not [x for x in w if x.category is el.WanderWarning]   # (an OrderWarning is one)
+
+
+def test_a_scan_passed_back_to_its_start_is_not_said_closed():
+    # a scan passed out and back ends where it began, enclosing nothing: its MisfitWarning
+    # said "their ends lie 0.557 apart, 1% of their extent, a nearly closed shape" (revD,
+    # on fc2c1cb's words for QA24's letter 'o')
+    side = np.linspace(0, 100, 101)
+    T = np.r_[np.c_[side, 0 * side], np.c_[np.full(100, 100.0), side[1:]]]
+    P = np.r_[T, T[::-1][1:]] + np.random.default_rng(1).normal(0, 0.4, (2 * len(T) - 1, 2))
+    with warnings.catch_warnings(record=True) as w:
+        warnings.simplefilter("always")
+        el.fit(P, model="smooth")
+    said = [str(x.message) for x in w if issubclass(x.category, el.MisfitWarning)]
+    assert len(said) == 1 and "closed" not in said[0]
