@@ -111,7 +111,7 @@ endif
 # The fit's hot path (its guess, objective, the discrete model's rows and their Jacobi
 # walk, the point-to-curve distances of its report) by the same flags: fewer instructions, the same results (issue 16;
 # every output of bench_fit.py's 504 curves compared bit for bit).
-FIT_HOT_OBJ := $(addprefix $(BUILD)/obj/,fit_objective.o fit_model.o fit_feet.o fit_nearest.o fit_polygon.o fit_refit.o fit_lm.o \
+FIT_HOT_OBJ := $(addprefix $(BUILD)/obj/,fit_objective.o fit_model.o fit_feet.o fit_nearest.o fit_polygon.o fit_refit.o fit_wander.o fit_lm.o \
                discrete.o guess.o guess_spacing.o fit.o fit_choose.o fit_candidate.o jacobi_walk.o fit_pairing.o)
 $(FIT_HOT_OBJ): OPT_CFLAGS := -O3 -fno-math-errno
 

@@ -218,7 +218,7 @@ int el__fit_feet_project_list(const fit_objective *o, double v[2][FIT_NP], const
     return st;
 }
 
-/* ---- the feet in order along the curve (the stray rule, the wander report: fit_refit.c) */
+/* ---- the feet in order along the curve (the stray rule, the wander report: fit_wander.c) */
 
 typedef struct { double foot; size_t index; } foot_index;
 

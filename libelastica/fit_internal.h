@@ -330,7 +330,7 @@ static inline double fit_mean_distance(const double *dist, size_t n)
  * FIT_WORK doubles. */
 int el__fit_curve_distances(fit_objective *ob, const double *x, double v[2][FIT_NP], int projected, double *d,
                             double *fs, double *tmp);
-/* fit_refit.c: how far a fit by distance to the curve strays from its points: the
+/* fit_wander.c: how far a fit by distance to the curve strays from its points: the
  * length of curve (total L, input units like the rest) that no point accounts for, the
  * arc between feet fs adjacent along the curve beyond 1.6 times their points' chord (an
  * arc turning by pi) and beyond the first and last foot, each less 4 noise levels, over
@@ -347,7 +347,7 @@ int el__fit_curve_distances(fit_objective *ob, const double *x, double v[2][FIT_
  * coil, even one that swings in a gap (lowest_that_follows); not to a stub far from the points. */
 #define FIT_COIL_TOL 0.1
 double el__fit_stray(const double *xy, size_t n, const double *fs, double L, double noise, double scale);
-/* fit_refit.c: el__fit_stray's length of curve no point accounts for over the length of
+/* fit_wander.c: el__fit_stray's length of curve no point accounts for over the length of
  * the curve they do account for where that is shorter than their polygon: noisy points'
  * polygon runs several times the curve's length (QA21's hand-drawn stroke, 400 points 1.6
  * apart at noise 1: polygon 711 for a stroke of 115), so a 130-long loop through empty space
@@ -356,13 +356,13 @@ double el__fit_stray(const double *xy, size_t n, const double *fs, double L, dou
  * either; -1 when out of memory. *stray (may be NULL): el__fit_stray's figure, of the same pass. */
 double el__fit_stray_curve(const double *xy, size_t n, const double *fs, double L, double noise, double scale,
                            double *stray);
-/* fit_refit.c: el__fit_stray of a fit whose start or end point is held (ends: the start and
+/* fit_wander.c: el__fit_stray of a fit whose start or end point is held (ends: the start and
  * end points, input units, NaN where not held; NULL: none): the curve from a held end to the
  * nearest foot is allowed 1.6 times the chord from that end to its point, as between
  * adjacent feet, instead of none (the constraints' curve there, not the fit's stray). */
 double el__fit_stray_held(const double *xy, size_t n, const double *fs, double L, double noise,
                           double scale, const double ends[4]);
-/* fit_refit.c: how far a smooth fit (p: its parameters, fs: its feet, input units) swings
+/* fit_wander.c: how far a smooth fit (p: its parameters, fs: its feet, input units) swings
  * from its points' polygon where there is no point: over each gap between feet adjacent
  * along the curve where it turns by more than FIT_GAP_TURN beyond the polygon's turns at the
  * gap's two points (the sum of |turn|s: a wave, or a bulge out and back), the curve's
@@ -390,7 +390,7 @@ typedef struct fit_seen {
     double sc, noise;
     int follows;
 } fit_seen;
-/* fit_refit.c: the gap between points i and i + 1 (i in 0..n-2; where the curve passes its
+/* fit_wander.c: the gap between points i and i + 1 (i in 0..n-2; where the curve passes its
  * points out of order, the gap between two feet adjacent along it, of points a < b, is the
  * gap b - 1: the curve comes to b from a) that the kept fit (p: its parameters of model,
  * fs: its feet, rms: its rms, ends: as el__fit_stray_held's; input units) wanders in, by
@@ -407,24 +407,24 @@ typedef struct fit_seen {
  * (may be NULL): what the fit computed of these points and this fit, not computed again. */
 long el__fit_wander_gap(int model, const double *xy, size_t n, const double *p, const double *fs, double rms,
                         const double ends[4], const fit_seen *seen);
-/* fit_refit.c: whether the fit by distance at x (ob's map) strays from its points
+/* fit_wander.c: whether the fit by distance at x (ob's map) strays from its points
  * (el__fit_stray > FIT_STRAY; noise: el__fit_noise_rms, normalised); d, fs (n each: ob's
  * rest arrays, or the caller's) overwritten with its distances and feet (input units). */
 int el__fit_strays_at(fit_objective *ob, const double *x, double noise, double *d, double *fs, double *tmp);
-/* fit_refit.c: whether the curve at x (ob's map, one curve) crosses itself: the smooth
+/* fit_wander.c: whether the curve at x (ob's map, one curve) crosses itself: the smooth
  * curve's polygon of 256 chords, the discrete polygon's chords through every
  * ceil((n - 1) / 256)-th vertex (its own segments up to 257 vertices); a loop narrower
  * than ~1/256 of its length is missed. 0 where it cannot be evaluated (or allocated). */
 int el__fit_crosses_itself(const fit_objective *ob, const double *x);
-/* fit_refit.c: whether the curve at x crosses itself (el__fit_crosses_itself) where the
+/* fit_wander.c: whether the curve at x crosses itself (el__fit_crosses_itself) where the
  * points' own polygon (as el__fit_wanders) does not. */
 int el__fit_loops(fit_objective *ob, const double *x);
-/* fit_refit.c: whether the fit at x crosses itself where the points' own polygon (its
+/* fit_wander.c: whether the fit at x crosses itself where the points' own polygon (its
  * chords through every ceil((n - 1) / 64)-th point: the noise of dense points does not
  * cross) does not, or strays from its points (*strays: el__fit_strays_at's answer, -1
  * until computed, then kept; d, fs as its). */
 int el__fit_wanders(fit_objective *ob, const double *x, int *strays, double noise, double *d, double *fs, double *tmp);
-/* fit_refit.c: whether the fit at x (objective f) replaces the kept fit at best_x (best_f)
+/* fit_wander.c: whether the fit at x (objective f) replaces the kept fit at best_x (best_f)
  * that crosses itself (el__fit_loops; *best_loops its answer, -1 until computed, then kept):
  * when x neither crosses itself nor strays (el__fit_wanders, *strays as there) and f is
  * below 4 x best_f. Ipopt ends on a chain of loops in a straight gap between the points,
