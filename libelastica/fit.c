@@ -535,7 +535,7 @@ static int refitted(fit_run_state *R, int st)
 
 /* A fit by distance without rows that strays from its points: refitted from the paired
  * curve or the other model's fit (el__fit_follow_points); a sketch's free fit that still
- * wanders: its guesses from their feet (fit_restart.c). st: the result's status; returns
+ * wanders: its guesses from their feet (fit_follow.c). st: the result's status; returns
  * the run's. */
 static int follow_the_points(fit_run_state *R, int st)
 {
@@ -570,7 +570,7 @@ static int follow_the_points(fit_run_state *R, int st)
                                                            stray, &R->ob, R->norm, R->res, R->d,
                                                            R->fs))) == EL_OK)
         st = R->res->status;
-    /* a sketch's free fit that still wanders: its guesses from their feet (fit_restart.c) */
+    /* a sketch's free fit that still wanders: its guesses from their feet (fit_follow.c) */
     if (st != EL_ENOMEM && model == FIT_SMOOTH && !o->constraints && n < FIT_SKETCH_POINTS &&
         !(flags & FIT_RUN_INNER))
         st = refitted(R, el__fit_sketch_follows(R->xy, n, R->opt, noise_in, &R->ob, R->norm, R->res,

@@ -341,7 +341,7 @@ int el__fit_curve_distances(fit_objective *ob, const double *x, double v[2][FIT_
 #define FIT_STRAY 0.1
 /* Above FIT_COIL a fit coils: one loop round all its points adds at most pi x their enclosing
  * circle's diameter, <= pi 2/sqrt(3) = 3.63 x their polygon's length, so more curve unaccounted
- * for passes them again and again (fit_restart.c's lowest_that_follows). */
+ * for passes them again and again (fit_follow.c's lowest_that_follows). */
 #define FIT_COIL 4.0
 /* A coiling fit gives way to one within FIT_COIL_TOL of the data's size above it that does not
  * coil, even one that swings in a gap (lowest_that_follows); not to a stub far from the points. */
@@ -395,7 +395,7 @@ typedef struct fit_seen {
  * gap b - 1: the curve comes to b from a) that the kept fit (p: its parameters of model,
  * fs: its feet, rms: its rms, ends: as el__fit_stray_held's; input units) wanders in, by
  * the tests of the sketch rules
- * (result_wanders, fit_restart.c), in their order: it strays (el__fit_stray_held above
+ * (result_wanders, fit_follow.c), in their order: it strays (el__fit_stray_held above
  * FIT_STRAY, at the noise level fmin(noise, rms) of fewer than FIT_SKETCH_POINTS points,
  * else the data's noise): the gap holding the most curve no point accounts for (the ends'
  * share: the gap next to that end's point); then, fewer than FIT_SKETCH_POINTS points (more:
@@ -716,13 +716,13 @@ double el__fit_out_length(int model, size_t n, const fit_out *r);
 int el__fit_follow_points(int model, const double *xy, size_t n, const el_fit_options *opt, int flags, double noise,
                           double scale, double stray, fit_out *res, double *d, double *fs);
 
-/* fit_restart.c: el__fit_follow_points on a copy of the smooth fit *res (d, fs), kept when it
+/* fit_follow.c: el__fit_follow_points on a copy of the smooth fit *res (d, fs), kept when it
  * returns lower and not crossing itself (el__fit_loops in ob's map; norm: the fit's
  * normalisation cx, cy, sc); EL_OK (replaced or not) or EL_ENOMEM. */
 int el__fit_follow_unless_loops(int model, const double *xy, size_t n, const el_fit_options *opt, int flags,
                                 double noise, double stray, fit_objective *ob, const double norm[3], fit_out *res,
                                 double *d, double *fs);
-/* fit_restart.c: a sketch's free smooth fit (fewer than SKETCH_POINTS points, fit.c) in *res
+/* fit_follow.c: a sketch's free smooth fit (fewer than SKETCH_POINTS points, fit.c) in *res
  * (d, fs: its distances and feet; noise: the data's figure, input units; ob, norm: as
  * el__fit_follow_unless_loops) that wanders (strays from its points or crosses itself where
  * their polygon does not): the guesses fitted from their own feet, the lowest that does
@@ -733,13 +733,13 @@ enum { FIT_SKETCH_GUESSES = 6 };
 int el__fit_sketch_follows(const double *xy, size_t n, const el_fit_options *opt, double noise,
                            fit_objective *ob, const double norm[3], fit_out *res, double *d,
                            double *fs, int *replaced);
-/* fit_restart.c: the same for a sketch's constrained smooth fit: its constraints fitted from
+/* fit_follow.c: the same for a sketch's constrained smooth fit: its constraints fitted from
  * the free fit's curve and the guesses, each from its own feet; kept as there, when it meets
  * them too. res->status, or EL_ENOMEM. */
 int el__fit_sketch_follows_held(const double *xy, size_t n, const el_fit_options *opt, double noise,
                                 fit_objective *ob, const double norm[3], fit_out *res, double *d,
                                 double *fs);
-/* fit_restart.c: el__fit_fallback, undone where its result crosses itself (el__fit_loops);
+/* fit_follow.c: el__fit_fallback, undone where its result crosses itself (el__fit_loops);
  * its status, or the kept fit's. */
 int el__fit_fallback_unless_loops(int model, const double *xy, size_t n, const el_fit_options *opt, int flags,
                                   fit_objective *ob, const double norm[3], fit_out *res, double *d, double *fs);

@@ -1,5 +1,5 @@
 /*
- * Whether a fit follows its points (fit.c's stray rule, fit_choose.c's and fit_restart.c's
+ * Whether a fit follows its points (fit.c's stray rule, fit_choose.c's and fit_follow.c's
  * sketch rules, the report's wander gap): the length of curve no point accounts for (strays),
  * the curve's swing between two points where there is none (gap sag), its crossings where
  * the points' polygon has none (loops), and the gap it wanders in, points passed out of
@@ -496,7 +496,7 @@ long el__fit_wander_gap(int model, const double *xy, size_t n, const double *p, 
     if (seen) sc = seen->sc;
     else if (n < 3 || el__fit_normalisation(xy, n, &cx, &cy, &sc)) return -1;
     const double noise = seen ? seen->noise : el__fit_noise_rms(xy, n, sc) * sc;
-    /* a sketch's level (result_wanders, fit_restart.c), else the data's (fit.c's stray rule) */
+    /* a sketch's level (result_wanders, fit_follow.c), else the data's (fit.c's stray rule) */
     const double level = n < FIT_SKETCH_POINTS ? fmin(noise, rms) : noise;
     const double h = p[2], L = model == FIT_SMOOTH ? p[6] : (double)(n - 1) * h;
     long at = -1;
