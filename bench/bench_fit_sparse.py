@@ -74,7 +74,7 @@ def sets(seed):
 
 
 def stray(r, pts, sig, length):
-    """el__fit_stray's measure (fit_refit.c) with the true noise level sig."""
+    """el__fit_stray's measure (fit_wander.c) with the true noise level sig."""
     order = np.argsort(r.foot_s, kind="stable")
     f, q = r.foot_s[order], pts[order]
     chord = np.hypot(*np.diff(q, axis=0).T)

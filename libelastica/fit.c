@@ -28,6 +28,7 @@
  * report_params (input units); follow_the_points and further_runs (fit_restart.c).
  */
 #include "fit_internal.h"
+#include "fit_wander.h"
 #include "fit_ends.h"
 #include <stdlib.h>
 #include <string.h>

@@ -8,6 +8,7 @@
  * are a second pass.
  */
 #include "fit_internal.h"
+#include "fit_wander.h"
 #include "fit_obstate.h"
 #include <math.h>
 #include <stdlib.h>

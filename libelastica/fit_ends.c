@@ -22,6 +22,7 @@
  * noise piles a few feet (below one in PILE_SHARE), untouched.
  */
 #include "fit_ends.h"
+#include "fit_wander.h"
 #include <stdlib.h>
 #include <string.h>
 

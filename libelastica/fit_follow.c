@@ -6,6 +6,7 @@
  * Split from fit_restart.c, verbatim.
  */
 #include "fit_internal.h"
+#include "fit_wander.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

@@ -13,6 +13,7 @@
  * came from has 0.024 (QA); from these starts 0.0218.
  */
 #include "fit_internal.h"
+#include "fit_wander.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

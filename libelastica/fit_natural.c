@@ -27,6 +27,7 @@
  * crawled between them into loops (measured: fit.c).
  */
 #include "fit_internal.h"
+#include "fit_wander.h"
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_min.h>
 #include <gsl/gsl_roots.h>

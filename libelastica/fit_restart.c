@@ -5,6 +5,7 @@
  * fit of an uncertified fit pinned at both ends, and fits of the points in reverse order.
  */
 #include "fit_internal.h"
+#include "fit_wander.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

@@ -6,6 +6,7 @@
  * order included (el__fit_wander_gap). Split from fit_refit.c, verbatim.
  */
 #include "fit_internal.h"
+#include "fit_wander.h"
 #include <stdlib.h>
 
 /* The gap k along the curve (between the feet idx[k], idx[k + 1]; idx NULL: in order) as

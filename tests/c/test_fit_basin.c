@@ -8,6 +8,7 @@
 #include "testutil.h"
 #include "sketch_arc59.h"
 #include "fit_internal.h"
+#include "fit_wander.h"
 #include <math.h>
 
 /* 20 points of a loop (k = 1.128) at random arc lengths, noise 0.1 % of the length per

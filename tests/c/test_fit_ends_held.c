@@ -11,6 +11,7 @@
  * chart meets them, ZK79 discrete and ZK101 smooth with both at 3.0 and 2.2 x. */
 #include "testutil.h"
 #include "fit_internal.h"
+#include "fit_wander.h"
 #include <gsl/gsl_sf_ellint.h>
 #include <math.h>
 #include <string.h>

@@ -6,6 +6,7 @@
  * mm of it). */
 #include "testutil.h"
 #include "fit_internal.h"
+#include "fit_wander.h"
 #include <stdio.h>
 #include <string.h>
 

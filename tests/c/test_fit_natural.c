@@ -9,6 +9,7 @@
  * fit wound a chain of loops across the points and this one follows them. */
 #include "testutil.h"
 #include "fit_internal.h"
+#include "fit_wander.h"
 #include <gsl/gsl_sf_ellint.h>
 #include <string.h>
 
