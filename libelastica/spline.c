@@ -564,7 +564,9 @@ static int solve_paths(const double *xy, size_t n, const el_spline_options *opt,
     }
     /* no solution found: for sigma = 0 the free-sliding batten slides off its ducks; a
      * length beyond those met following the family (REACH) */
-    st = !lmode && opt->sigma == 0.0 && !sibling ? EL_EDOM : EL_ENOCONV;
+    /* not where the call's budget ended the free batten's solve (WORK_BUDGET): whether it
+     * slides is then unknown, EL_ENOCONV with stopped (1 x 1 steps said EL_EDOM) */
+    st = !lmode && opt->sigma == 0.0 && !sibling && !wk->stopped ? EL_EDOM : EL_ENOCONV;
     if (lmode && reach_of(&w, &g, S, res)) st = EL_ERANGE;   /* within reach too (QA14) */
     /* G2 ends by tension: the tensions nearest it of the G2 battens the search by length met */
     for (int i = 0; i < 2 && !lmode; i++)

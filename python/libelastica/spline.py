@@ -637,6 +637,13 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
     res = ffi.new("el_spline_result *")
     st = lib.el_spline_solve(dptr(pts), n, opt, res)
     try:
+        if st in (lib.EL_ENOCONV, lib.EL_ERANGE) and res.stopped:
+            # the call's work budget ended it (el_spline_result's stopped): what it says is what
+            # it had reached, not what these points allow (7 sketched ducks at max_iter =
+            # max_steps = 3 by length 22: EL_ERANGE, "lengths met ..", solved at the defaults)
+            hint = (f"; the solver stopped at its work budget ({int(res.work)} chain evaluations, "
+                    "max_steps x max_iter x (16 + 64 / pieces)) before it could say more: raise "
+                    "max_iter or max_steps") + hint
         if st == lib.EL_OK:
             sp = ElasticSpline(res, pts, closed)
             sp._ends = (start, end)

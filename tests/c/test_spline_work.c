@@ -91,6 +91,28 @@ START_TEST(one_budget_for_the_whole_call)
 }
 END_TEST
 
+/* The budget ending the free batten's (sigma 0) solve is no proof that it slides off its ducks:
+ * EL_ENOCONV with stopped, not EL_EDOM (which said "give a tension > 0" for a batten the
+ * defaults solve: 6 evaluations; at max_steps = max_iter = 1 the budget is 16 + 64 / 6 = 26,
+ * el__spline_solve_within with budgets 1 .. 4 said EL_EDOM) */
+START_TEST(budget_is_no_proof_of_sliding)
+{
+    static const double xy[] = {0, 0, 3, 1, 6, 0.5, 9, 2.2, 12, 1.1, 14, 3.4, 17, 2.9};
+    el_spline_options o;
+    el_spline_options_defaults(&o);
+    el_spline_result r;
+    ck_assert_int_eq(el_spline_solve(xy, 7, &o, &r), EL_OK);   /* it holds at the defaults */
+    el_spline_result_free(&r);
+    for (unsigned long b = 1; b < 5; b++) {
+        el__spwork w = {0, b, 0};
+        const int st = el__spline_solve_within(xy, 7, &o, &w, &r);
+        ck_assert_msg(st == EL_ENOCONV, "budget %lu: status %d", b, st);
+        ck_assert_int_eq(r.stopped, 1);
+        el_spline_result_free(&r);
+    }
+}
+END_TEST
+
 /* A spline the search reaches well within the budget: work counted, not stopped */
 START_TEST(ordinary_solve_within_budget)
 {
@@ -198,6 +220,7 @@ int main(void)
     tcase_add_test(tc, length_search_within_the_call_budget);
     tcase_add_test(tc, one_budget_for_the_whole_call);
     tcase_add_test(tc, ordinary_solve_within_budget);
+    tcase_add_test(tc, budget_is_no_proof_of_sliding);
     tcase_add_test(tc, largest_makes_no_solve_where_its_rungs_are_no_tensions);
     tcase_add_test(tc, largest_solves_share_the_call_budget);
     suite_add_tcase(s, tc);

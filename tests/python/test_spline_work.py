@@ -35,3 +35,13 @@ def test_a_search_the_budget_ended_says_so():
         sp = el.elastic_spline(ring, tension=0.01 / h ** 2, closed=True, max_iter=30, max_steps=30)
     assert sp.stopped is True and sp.loops
     assert sp.work == 900 * 16 + 900 * 64 // 12   # no evaluation past it
+
+
+def test_an_error_the_budget_caused_says_so():
+    # 7 sketched ducks by length 22: solved at the defaults; at 3 x 3 the budget (240) ends the
+    # search and the error named lengths "met" as if no other were reachable
+    pts = np.array([[0, 0], [3, 1], [6, 0.5], [9, 2.2], [12, 1.1], [14, 3.4], [17, 2.9]], float)
+    assert el.elastic_spline(pts, length=22.0).stopped is False
+    with pytest.raises((el.NotConvergedError, el.LengthRangeError)) as info:
+        el.elastic_spline(pts, length=22.0, max_iter=3, max_steps=3)
+    assert "work budget" in str(info.value) and "max_iter" in str(info.value)
