@@ -380,8 +380,9 @@ static int build_chain(const hframe *fr, int mode, double target, double sep, do
                        const el_hermite_solution *s, el_hermite_solution *out, double *jump, double *kmax)
 {
     const el_smooth_params *p = &s->curve;
-    /* in sep's frame, scaled by 2^-ilogb(d) (exactly) */
-    const double e2 = ldexp(1.0, 2 * ilogb(fr->d)), Fn = 2.0 * p->mu * e2, sigma = s->sigma * e2, km2 = Fn + sigma;
+    /* in sep's frame, scaled by 2^-ilogb(d) (exactly): fr->e^2 = 2^(2 ilogb(d)), a power of two
+     * as ldexp's (and rounded as it where it underflows or overflows) */
+    const double e2 = fr->e * fr->e, Fn = 2.0 * p->mu * e2, sigma = s->sigma * e2, km2 = Fn + sigma;
     if (!(Fn > 0.0) || !(km2 > 0.0) || !(sep != 0.0)) return EL_EDOM;
     chain c;
     memset(&c, 0, sizeof c);
