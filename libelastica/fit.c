@@ -298,18 +298,8 @@ static void evaluate_kept(fit_run_state *R)
  * than 1e-3 of the length, or, when the fit's feet are gone, its distances below its fit. */
 static int kept_feet_elsewhere(const fit_run_state *R)
 {
-    const size_t n = R->n;
-    const double *s = R->ob.s, L = R->v[0][6];
-    int elsewhere = 0;
-    if (R->last_is_best) {
-        for (size_t i = 1; i + 1 < n; i++)
-            elsewhere |= s[i] >= 0.0 && s[i] <= L && fabs(R->fs[i] - s[i]) > 1e-3 * L;
-    } else {
-        double s2 = 0.0;
-        for (size_t i = 0; i < n; i++) s2 += R->d[i] * R->d[i];
-        elsewhere = s2 < 2.0 * (double)n * R->best.f * (1.0 - 1e-6);
-    }
-    return elsewhere;
+    return R->last_is_best ? el__fit_feet_moved(R->ob.s, R->fs, R->n, R->v[0][6])
+                           : el__fit_nearer_than(R->d, R->n, R->best.f);
 }
 
 /* settle_feet's rounds: the certificate's tolerance, whether to refit, the sampled rounds
@@ -349,11 +339,7 @@ static int certify_loose(fit_run_state *R, int st)
 static int refit_from_feet(fit_run_state *R, size_t moved, feet_rounds *fr)
 {
     fit_objective *ob = &R->ob;
-    const size_t n = R->n;
-    memcpy(ob->s, R->fs, sizeof(double) * n);
-    if (fit_end_paired(ob, 0)) ob->s[0] = 0.0;
-    if (fit_end_paired(ob, n - 1)) ob->s[n - 1] = R->v[0][6];
-    ob->have_base = 0;
+    el__fit_feet_set(ob, R->fs, R->v[0][6]);
     fit_candidate r;
     if (moved) ob->lm_tol = LOOSE_TOL;
     const int st = el__fit_solve_candidate(ob, &R->o, &R->con_rows, R->xl, R->xu, R->need_ipopt,

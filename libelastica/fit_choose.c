@@ -373,8 +373,8 @@ static int stop_rule(fit_run_state *R, size_t *ci, const fit_trial *tr)
 
 /* The kept fit (smooth, by distance, with rows) above the stop rule's level, whose nearest
  * points, found from the fractions' places as settle_feet's (fit.c), lie on another pass of
- * the curve than its feet (kept_feet_elsewhere's tests: its feet moved by more than 1e-3 of
- * the length, or the distances below its fit): fitted again from its point with those feet
+ * the curve than its feet (either of kept_feet_elsewhere's tests, which takes one by whether
+ * ob's feet are the kept fit's: el__fit_nearer_than, or el__fit_feet_moved where they are): fitted again from its point with those feet
  * now, as settle_feet does after the last start, and kept where that refit is certified,
  * meets the rows, is lower and exact (rms 1e-10 of the data's size: stop_rule's first stop).
  * Else the objective is put back as it was (the refit's iterations counted), and the starts
@@ -408,26 +408,20 @@ static int settle_early(fit_run_state *R, size_t ci)
     int elsewhere = 0, st = EL_OK;
     /* from the fractions' places, as evaluate_kept (fit.c) starts a fit without its own feet:
      * Newton's steps from its own feet stay on their pass */
-    for (size_t i = 0; i < n; i++) ob->s[i] = R->t[i] * L;
+    first_feet(ob, R->t, L);
     ob->have_base = ob->rest_ok = 0;
     if (el__fit_curve_distances(ob, R->best.x, v, 0, d, fs, R->tmp) == EL_OK &&
         !el__all_finite(d, 2 * n)) {
         el__fit_ob_restore(ob, &saved);      /* the feet as the fit left them */
         /* its feet elsewhere (where they are its own: a later run's may be in ob), or its
          * distances below its fit */
-        double s2 = 0.0;
-        for (size_t i = 0; i < n; i++) s2 += d[i] * d[i];
-        elsewhere = s2 < 2.0 * (double)n * R->best.f * (1.0 - 1e-6);
-        for (size_t i = 1; R->last_is_best && i + 1 < n; i++)
-            elsewhere |= ob->s[i] >= 0.0 && ob->s[i] <= L && fabs(fs[i] - ob->s[i]) > 1e-3 * L;
+        elsewhere = el__fit_nearer_than(d, n, R->best.f) ||
+                    (R->last_is_best && el__fit_feet_moved(ob->s, fs, n, L));
     }
     fit_candidate r;
     int took = 0;
     if (elsewhere) {
-        memcpy(ob->s, fs, sizeof(double) * n);
-        if (fit_end_paired(ob, 0)) ob->s[0] = 0.0;
-        if (fit_end_paired(ob, n - 1)) ob->s[n - 1] = L;
-        ob->have_base = 0;
+        el__fit_feet_set(ob, fs, L);
         st = el__fit_solve_candidate(ob, &R->o, &R->con_rows, R->xl, R->xu, R->need_ipopt,
                                      R->refit_no_polish, R->best.x, R->best.f, &r, R->tmp, 1, 1);
         if (!st) {

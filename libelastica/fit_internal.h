@@ -353,6 +353,14 @@ int el__fit_feet_elsewhere(fit_objective *o, const double *x, double v[2][FIT_NP
  * from the chord fractions, then el__fit_feet_elsewhere's (a member of a family searched
  * whole: fit_natural.c, fit_g1_family.c); EL_EDOM where v is not in the map. */
 int el__fit_curve_feet(fit_objective *ob, double v[2][FIT_NP], double *x, double *d, double *fs);
+/* fit_refit.c, the kept fit's nearest points (distances d, feet fs, n of them) against it
+ * (length L, objective f, its feet s): el__fit_feet_moved, its inner feet on [0, L] moved to
+ * the nearest by more than 1e-3 L; el__fit_nearer_than, the distances below its fit (its
+ * feet gone: a later run's in ob); el__fit_feet_set, ob's feet fs, a paired end's at the
+ * curve's end (fit.c's settle_feet rounds and fit_choose.c's settle_early). */
+int el__fit_feet_moved(const double *s, const double *fs, size_t n, double L);
+int el__fit_nearer_than(const double *d, size_t n, double f);
+void el__fit_feet_set(fit_objective *ob, const double *fs, double L);
 /* fit_refit.c, one smooth curve v: unproven[i] = 1 for the inner points whose feet fs
  * (distances d, Newton's) the proof of el__fit_feet_elsewhere does not show the nearest points
  * (their count *nopen; 0 at the ends), and mark[j] = 1 for the FIT_PIECES pieces of

@@ -308,3 +308,28 @@ int el__fit_curve_feet(fit_objective *ob, double v[2][FIT_NP], double *x, double
     size_t moved;
     return el__fit_feet_elsewhere(ob, x, v, d, fs, &moved);
 }
+
+/* el__fit_feet_moved, el__fit_nearer_than, el__fit_feet_set: fit_internal.h */
+int el__fit_feet_moved(const double *s, const double *fs, size_t n, double L)
+{
+    int moved = 0;
+    for (size_t i = 1; i + 1 < n; i++)
+        moved |= s[i] >= 0.0 && s[i] <= L && fabs(fs[i] - s[i]) > 1e-3 * L;
+    return moved;
+}
+
+int el__fit_nearer_than(const double *d, size_t n, double f)
+{
+    double s2 = 0.0;
+    for (size_t i = 0; i < n; i++) s2 += d[i] * d[i];
+    return s2 < 2.0 * (double)n * f * (1.0 - 1e-6);
+}
+
+void el__fit_feet_set(fit_objective *ob, const double *fs, double L)
+{
+    const size_t n = ob->n;
+    memcpy(ob->s, fs, sizeof(double) * n);
+    if (fit_end_paired(ob, 0)) ob->s[0] = 0.0;
+    if (fit_end_paired(ob, n - 1)) ob->s[n - 1] = L;
+    ob->have_base = 0;
+}
