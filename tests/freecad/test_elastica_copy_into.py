@@ -55,6 +55,16 @@ def _waves(w):
     return c
 
 
+def _waves_quad(doc, w):
+    """A source sketch of _waves(w) and the G2 quadratic of its edge, recomputed."""
+    src = doc.addObject("Sketcher::SketchObject", "Src")
+    src.addGeometry(_waves(w), False)
+    doc.recompute()
+    q = g2quad.make(doc, [(src, ["Edge1"])])
+    doc.recompute()
+    return src, q
+
+
 def _edit(src, w):
     """The source sketch's B-spline through other points, edited in place (its Tag kept,
     as the Sketcher keeps it when its poles are dragged)."""
@@ -140,11 +150,7 @@ class CopyAgainOtherPiecesTest(S.DocTest):
 
     def test_a_copy_in_more_pieces_replaces_the_old_in_a_closed_profile(self):
         doc = self.doc
-        src = doc.addObject("Sketcher::SketchObject", "Src")
-        src.addGeometry(_waves(1.5), False)
-        doc.recompute()
-        q = g2quad.make(doc, [(src, ["Edge1"])])
-        doc.recompute()
+        src, q = _waves_quad(doc, 1.5)
         self.assertEqual(len(q.Shape.Edges), 2)
         body = doc.addObject("PartDesign::Body", "Body")
         sk = body.newObject("Sketcher::SketchObject", "Prof")
@@ -192,11 +198,7 @@ class CopyAgainOtherPiecesTest(S.DocTest):
         # circles and lines held by InternalAlignment constraints; they go with their
         # B-spline, and are not said as constraints lost
         doc = self.doc
-        src = doc.addObject("Sketcher::SketchObject", "Src")
-        src.addGeometry(_waves(1.5), False)
-        doc.recompute()
-        q = g2quad.make(doc, [(src, ["Edge1"])])
-        doc.recompute()
+        src, q = _waves_quad(doc, 1.5)
         sk = doc.addObject("Sketcher::SketchObject", "Prof")
         sk.Placement = q.Plane
         ids = G.write_to_sketch(q, sk)
@@ -214,11 +216,7 @@ class CopyAgainOtherPiecesTest(S.DocTest):
 
     def _profile(self):
         doc = self.doc
-        src = doc.addObject("Sketcher::SketchObject", "Src")
-        src.addGeometry(_waves(1.5), False)
-        doc.recompute()
-        q = g2quad.make(doc, [(src, ["Edge1"])])
-        doc.recompute()
+        src, q = _waves_quad(doc, 1.5)
         sk = doc.addObject("Sketcher::SketchObject", "Prof")
         sk.Placement = q.Plane
         ids = G.write_to_sketch(q, sk)
@@ -281,11 +279,7 @@ class MultiPieceExactTest(S.DocTest):
     def test_an_exact_multi_piece_copy_is_not_said_off(self):
         doc = self.doc
         for w in (1.5, 2.5):
-            src = doc.addObject("Sketcher::SketchObject", "Src")
-            src.addGeometry(_waves(w), False)
-            doc.recompute()
-            q = g2quad.make(doc, [(src, ["Edge1"])])
-            doc.recompute()
+            src, q = _waves_quad(doc, w)
             self.assertGreater(len(q.Shape.Edges), 1)
             sk = doc.addObject("Sketcher::SketchObject", "Out")
             sk.Placement = q.Plane
