@@ -10,6 +10,11 @@
  * taken lane by lane as selections: the same bits whichever width runs
  * (test_hermite_tension.c compares them). A group whose lanes need both kinds of curve
  * (inflectional and not), and case 3, are left to the narrower evaluation.
+ * The kind of curve at many abscissae (el__hermite_x_classes, and el__hermite_piece_classes:
+ * every piece of a branch from its midpoint, confirmed at its quarter points where the
+ * midpoint has no curve) goes the same way, lane by lane the scalar el__hermite_x_class's
+ * (case 3: the scalar one itself); n - 1 < HERMITE_GATHER_MAX / 2 pieces (split_points'
+ * MAXPTS bound it far below).
  */
 #include "hermite_internal.h"
 #include "lanes.h"

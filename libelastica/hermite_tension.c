@@ -12,6 +12,9 @@
 #include <string.h>
 
 #define MAXPTS 64
+/* a branch's MAXPTS + 2 points fit el__hermite_piece_classes' gathers (hermite_lanes.c): C99's
+ * compile-time check, an array of negative size otherwise */
+typedef char el__maxpts_fit_the_gathers[MAXPTS + 2 <= HERMITE_GATHER_MAX / 2 ? 1 : -1];
 /* el__carlson_fd's precision for the bracketing samples: ~1e-8 relative (ellint.c) */
 #define COARSE_QS 0.1
 
