@@ -87,11 +87,12 @@ class _Parser(argparse.ArgumentParser):
         # argparse takes '-1e-8' and '-5e3' for options (its negative-number pattern has no
         # exponent: `hermite ... 1 -1e-8` failed "arguments are required: V"), and a point
         # '-3120.5,1500.25' too (`fit --start-point -3120.5,1500.25` failed "expected one
-        # argument", QA24: drawings with the origin amidships); no option of the CLI looks
-        # like a number, so every one of them is a value
+        # argument", QA24: drawings with the origin amidships), and a range LO, with HI
+        # empty ('--k -0.5,' failed the same way); no option of the CLI looks like a number,
+        # so every one of them is a value
         number = r"(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?"
         self._negative_number_matcher = re.compile(
-            rf"^-{number}(\s*(deg|rad)?|\s*,\s*[-+]?{number})$", re.IGNORECASE)
+            rf"^-{number}(\s*(deg|rad)?|\s*,\s*([-+]?{number})?)$", re.IGNORECASE)
 
     def error(self, message: str):
         self.exit(EXIT_BADINPUT, f"{self.prog}: error: {message}\n")

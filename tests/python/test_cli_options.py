@@ -64,11 +64,13 @@ def test_hermite_counts_the_unrepresentable_and_names_no_fair_one(capsys, tmp_pa
     (["spline", "p.csv", "--start-tangent", "1", "-1e-9"], "start_tangent", -1e-9),
     (["fit", "p.csv", "--end-curvature", "-.5e-2"], "end_curvature", -0.005),
     (["fit", "p.csv", "--start-point", "-3120.5,1500.25"], "start_point", "-3120.5,1500.25"),
-    (["fit", "p.csv", "--end-point", "-1e3, -2.5E-1"], "end_point", "-1e3, -2.5E-1")])
+    (["fit", "p.csv", "--end-point", "-1e3, -2.5E-1"], "end_point", "-1e3, -2.5E-1"),
+    (["fit", "p.csv", "--length", "-5,"], "length", "-5,"),
+    (["fit", "p.csv", "--k", "-0.5, 0.9"], "k_range", "-0.5, 0.9")])
 def test_negative_numbers_with_an_exponent_are_numbers(args, where, value):
     """argparse took '-1e-8' for an option ('the following arguments are required: V'), and
     a point whose X is negative too ('--start-point -3120.5,1500.25': "expected one
-    argument", QA24)."""
+    argument", QA24), and a range LO, with HI empty ('--length -5,')."""
     got = getattr(build_parser().parse_args(args), where)
     assert value in (got if isinstance(got, list) else [got])
 
