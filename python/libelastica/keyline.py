@@ -305,7 +305,8 @@ def fit_keyline(points, r: Optional[float] = None, model: str = "discrete", side
         a, b = prep.sides()                    # DomainError when there is no inflection
         if len(a) < MIN_SIDE or len(b) < MIN_SIDE:
             raise DomainError(lib.EL_EDOM, f"fit_keyline: the inflection estimate lies {min(len(a), len(b)) - 1} "
-                              f"segment(s) from an end of the {len(prep.polygon) - 1}: no inflection a keyline "
+                              f"of the resampled polygon's {len(prep.polygon) - 1} segments from an end: "
+                              "no inflection a keyline "
                               "can split at (noise near an end of points that turn one way?); fit them as one curve")
     except DomainError:
         if unordered.order is None:

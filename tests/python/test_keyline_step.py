@@ -86,6 +86,19 @@ def test_dense_noisy_arc_still_has_no_inflection(n, noise, turn, seed, model):
         el.fit_keyline(p, model=model)
 
 
+def test_an_inflection_next_to_an_end_is_said_in_segments_of_the_polygon():
+    """An arc whose last three points hook back (a pen's flick): the inflection estimate
+    lies 2 segments from the end, refused, and the message counts segments of the resampled
+    polygon (QA25gui I1: "lies 2 segment(s) from an end of the 99", a number without its
+    noun)."""
+    t = np.linspace(0.0, 1.2, 200)
+    p = 100.0 * np.column_stack([np.sin(t), 1.0 - np.cos(t)])
+    p[-3:, 1] -= [0.5, 1.0, 2.0]
+    with pytest.raises(el.DomainError,
+                       match=r"lies 2 of the resampled polygon's 99 segments from an end"):
+        el.fit_keyline(p)
+
+
 @pytest.mark.parametrize("model", ["discrete", "smooth"])
 def test_cli_keyline_of_a_dense_noisy_scan(capsys, tmp_path, model):
     """`elastica fit scan.csv --keyline` without --step: exit 0, the inflection point near
