@@ -12,12 +12,17 @@ by the GUI smoke test (gui_smoke.py calls run_all): FreeCAD's own panels
   kept nothing and left an Undo step that did nothing);
 - Cancel on the panel of a feature in error leaves the Undo stack as it was (it left
   an 'Edit <Label>' step that undid nothing).
+- OK whose Copy into cannot finish (its sketch removed by a macro, a write failing half
+  way) keeps the panel open with why on its error line, the sketch as before and no Undo
+  step (FreeCAD's TaskDialogPython closed it on the exception, its transaction pending).
 
 Screenshots: gui_close_with_panel.png (the task view empty after the close),
 gui_delete_during_panel.png, gui_keep_needs_copy.png (the Keep box disabled),
-gui_failed_blend_panel.png (a failed blend's panel: its error)."""
+gui_failed_blend_panel.png (a failed blend's panel: its error), gui_ok_fails_gone.png (OK's
+failed copy said on the error line)."""
 import FreeCAD as App
 import FreeCADGui as Gui
+import Part
 from PySide import QtGui
 
 import elastica_samples as S
@@ -198,9 +203,91 @@ def cancel_on_failed_feature():
     App.closeDocument(doc.Name)
 
 
+def click_ok():
+    """OK clicked in the task view: FreeCAD's TaskDialogPython calls the panel's accept
+    (and reports an exception out of it, closing the dialog as if accepted)."""
+    for bb in Gui.getMainWindow().findChildren(QtGui.QDialogButtonBox):
+        ok = bb.button(QtGui.QDialogButtonBox.Ok)
+        if bb.isVisible() and ok is not None:
+            ok.click()
+            return True
+    return False
+
+
+def ok_that_fails():
+    """OK whose Copy into cannot finish: the target sketch removed by a macro line (no
+    recompute: still offered), then a write that fails half way (a line added, then the
+    Sketcher's ValueError). The panel stays open on its edit with why on its error line
+    and in the report view, the sketch as before, no Undo step; Cancel leaves the Undo stack
+    as before the panel; OK into a sketch that takes it is one Undo step (revC 3: the
+    exception closed the panel through TaskDialogPython, its transaction neither committed
+    nor aborted, the sketch as the exception left it)."""
+    from freecad.elastica import geometry as Ge, taskpanels as T
+    doc, sk = fit_doc("ElasticaOkFails")
+    for name in ("Gone", "Prof"):
+        o = doc.addObject("Sketcher::SketchObject", name)
+        o.Placement = sk.Placement
+    doc.recompute()
+    prof = doc.getObject("Prof")
+    prof.addGeometry(Part.LineSegment(App.Vector(0, 0, 0), App.Vector(50, 0, 0)), False)
+    doc.recompute()
+    undo0, geo0 = list(doc.UndoNames), len(prof.Geometry)
+    panel = run_fit(doc, sk)
+    G.type_into(panel.step, "3")
+    G.wait()
+    panel.sketch.setCurrentIndex(panel.sketch.findData("Gone"))
+    Gui.doCommand(f"App.getDocument({doc.Name!r}).removeObject('Gone')")   # a macro's line
+    G.pump()
+    clicked = click_ok()
+    G.pump()
+    G.screenshot("gui_ok_fails_gone.png")
+    still = bool(T.CURRENT) and T.CURRENT[0] is panel and Gui.Control.activeDialog()
+    said = G.error_line(panel) if still else ""
+    G.check(clicked and still and "Copy into Gone failed" in said
+            and "no longer in the document" in said
+            and "Copy into Gone failed" in G.report_text() and doc.HasPendingTransaction
+            and list(doc.UndoNames)[1:] == undo0,
+            f"OK into a sketch removed since: the panel stays open, why said ({said!r}; "
+            f"undo {doc.UndoNames})")
+    real = Ge.write_to_sketch
+
+    def half(feature, sketch, constrain_to=None):
+        sketch.addGeometry(Part.LineSegment(App.Vector(0, 5, 0), App.Vector(9, 5, 0)), False)
+        raise ValueError("Sketcher refused a constraint")
+    Ge.write_to_sketch = half
+    try:
+        panel.sketch.setCurrentIndex(panel.sketch.findData("Prof"))
+        G.check(not G.error_line(panel), "another sketch chosen: the error line clears")
+        click_ok()
+        G.pump()
+    finally:
+        Ge.write_to_sketch = real
+    still = bool(T.CURRENT) and T.CURRENT[0] is panel
+    G.check(still and len(prof.Geometry) == geo0 and "Copy into Prof failed" in
+            G.error_line(panel)
+            and "SketchCopies" not in doc.getObject("ElasticaFit").PropertiesList,
+            f"a write that fails half way: the sketch as before ({len(prof.Geometry)} geometries, "
+            f"was {geo0}), the panel open")
+    panel.reject()
+    G.pump()
+    G.check(not T.CURRENT and list(doc.UndoNames) == undo0 and not doc.HasPendingTransaction
+            and doc.getObject("ElasticaFit") is None and len(prof.Geometry) == geo0,
+            f"then Cancel: the Undo stack as before the panel ({doc.UndoNames} vs {undo0})")
+    panel = run_fit(doc, sk)
+    panel.sketch.setCurrentIndex(panel.sketch.findData("Prof"))
+    click_ok()
+    G.pump()
+    G.check(not T.CURRENT and list(doc.UndoNames) == ["Fit elastica"] + undo0
+            and len(prof.Geometry) == geo0 + 1,
+            f"OK into a sketch that takes the copy: one Undo step ({doc.UndoNames}), "
+            f"{len(prof.Geometry)} geometries")
+    App.closeDocument(doc.Name)
+
+
 def run_all(smoke):
     global G
     G = smoke
+    ok_that_fails()
     cancel_on_failed_feature()
     delete_during_new_panel()
     delete_during_edit()

@@ -14,6 +14,7 @@ from PySide import QtCore, QtGui
 from . import icon
 from .containers import CONTAINERS
 from .geometry import global_shape, is_sketch, sketch_curves
+from .okcopy import Attempt, copy_code
 from .panelexpressions import ExpressionFields
 from .proxy import (EDGE_ENDS, InputProblem, abort_transaction, note_changes, note_values,
                     save_note, saved_note, said as proxy_said)
@@ -307,6 +308,7 @@ class Panel(ExpressionFields):
         self._typed = False
 
     _input_said = ""    # the bad text the error line says (Enter, focus out, OK)
+    _ok_said = ""       # why OK could not finish (ok_failed), until the next edit
 
     def watch_text(self, label, box):
         """A number box whose text the panel checks: a text it cannot take ('3 deg' in a
@@ -454,7 +456,7 @@ class Panel(ExpressionFields):
         self.sketch = _narrow(QtGui.QComboBox())
         self.sketch_exclude, self.sketch_new = list(exclude), new_label
         self.offer_sketches()
-        self.sketch.currentIndexChanged.connect(lambda _i: self.refresh_enabled())
+        self.sketch.currentIndexChanged.connect(self.copy_chosen)
         self.row(grid, "Copy into", self.sketch,
                  "OK copies the B-spline into this sketch: a copy, which does not follow later "
                  "edits (the feature does); only sketches in the curve's plane are offered")
@@ -492,6 +494,7 @@ class Panel(ExpressionFields):
         target = target if target is not None else self.obj
         if target is self.obj and self.expression(prop):
             return                  # bound: the expression sets it (the box is read-only)
+        self._ok_said = ""
         if getattr(target, prop) != value:
             if target is not self and not self.doc.HasPendingTransaction:
                 self.doc.openTransaction(self.txn)   # its own was committed by a command
@@ -579,8 +582,8 @@ class Panel(ExpressionFields):
         solve failed, else hidden."""
         if self.error is not None:
             o = self.obj
-            text = self._input_said or (said_now(o, "Status") if o.Status.startswith("error")
-                                        else "")
+            text = self._input_said or self._ok_said or (
+                said_now(o, "Status") if o.Status.startswith("error") else "")
             self.error[1].setText(text)
             self.error[0].setVisible(bool(text))
 
@@ -591,6 +594,12 @@ class Panel(ExpressionFields):
             self.keep.setChecked(True)
         for w, when in self.enablers:
             w.setEnabled(bool(when()))
+
+    def copy_chosen(self, _index=None):
+        if self._ok_said:           # another choice after OK failed (ok_failed)
+            self._ok_said = ""
+            self.show_error()
+        self.refresh_enabled()
 
     def copy_target(self):
         """Copy into's choice: a sketch's name, '*new*', or '' (no copy)."""
@@ -605,23 +614,8 @@ class Panel(ExpressionFields):
         return _buttons("Ok", "Cancel")
 
     def copy_code(self):
-        """Python of OK's copy into a sketch (recorded), or ''."""
-        target = self.copy_target()
-        if not target:
-            return ""
-        doc = f"App.getDocument({self.doc.Name!r})"
-        code = "from freecad.elastica import geometry as elastica_geometry\n"
-        if target == "*new*":
-            # in the sources' Body, as Sketcher's new sketch in the active Body: it moves
-            # with the Body (QA19gui F8); attached as the source sketch is (QA24gui F5)
-            body = self.sources_body()
-            where = "None" if body is None else f"{doc}.getObject({body.Name!r})"
-            code += (f"_sk = elastica_geometry.new_copy_sketch({doc}.getObject("
-                     f"{self.obj.Name!r}), {where})\n")
-        else:
-            code += f"_sk = {doc}.getObject({target!r})\n"
-        return code + (f"elastica_geometry.write_to_sketch({doc}.getObject({self.obj.Name!r}), "
-                       "_sk)\n")
+        """Python of OK's copy into a sketch (recorded), or '' (okcopy.copy_code)."""
+        return copy_code(self.doc, self.obj, self.copy_target(), self.sources_body)
 
     def sources_body(self):
         """The PartDesign Body holding the first of the feature's sources in one (a sketch
@@ -685,20 +679,34 @@ class Panel(ExpressionFields):
         edits, view_edits = edit_lines(self.obj, self.opened_with)
         if code or not self._keep or edits:
             self.hold()
-        for line in edits:
-            Gui.doCommand(line)
-        if edits:       # solved before a copy of it is made, in a macro replayed too
-            Gui.doCommand(f"App.getDocument({self.doc.Name!r}).recompute()")
-        for line in view_edits:
-            Gui.doCommandGui(line)
-        if code:
-            Gui.doCommand(code)
-        if not self._keep:
-            Gui.doCommand(f"App.getDocument({self.doc.Name!r}).removeObject({self.obj.Name!r})")
+        attempt = Attempt(self.doc, self.obj, self.copy_target())
+        try:
+            for line in edits:
+                Gui.doCommand(line)
+            if edits:       # solved before a copy of it is made, in a macro replayed too
+                Gui.doCommand(f"App.getDocument({self.doc.Name!r}).recompute()")
+            for line in view_edits:
+                Gui.doCommandGui(line)
+            if code:
+                Gui.doCommand(code)
+            if not self._keep:
+                Gui.doCommand(f"App.getDocument({self.doc.Name!r}).removeObject({self.obj.Name!r})")
+        except Exception as exc:    # (any: TaskDialogPython would close the panel on it)
+            self.ok_failed(attempt, exc)
+            return False
         self.doc.recompute()
         self.doc.commitTransaction()
         self._close()
         return True
+
+    def ok_failed(self, attempt, exc):
+        """OK's lines raised: what they wrote taken back (okcopy), the panel kept open on
+        its edit, why said in the report view and on its error line."""
+        attempt.undo()
+        self.closing = False
+        self._ok_said = attempt.said(exc)
+        App.Console.PrintError(f"Elastica {self.obj.Label}: {self._ok_said}\n")
+        self.refresh()
 
     def hold(self):
         """The panel's transaction open (a command may have committed it)."""

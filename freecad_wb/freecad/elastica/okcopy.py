@@ -1,0 +1,82 @@
+"""A panel's OK and Copy into (panelbase.Panel.accept): the Python OK records for the copy
+into a sketch (copy_code), and what OK's lines write into the document (the properties the
+edit changed, the copy, the feature removed when not kept) taken back whole when they fail
+(Attempt), so that the panel stays open on its edit as FreeCAD's own panels do when their
+OK cannot finish (Sketcher's, PartDesign's: the error said, the dialog kept).
+
+An exception out of OK's recorded lines (the target sketch removed by a macro while the
+panel was open; a Sketcher ValueError re-adding a constraint in geometry._replace_copy)
+reached FreeCAD's TaskDialogPython, which reports it and closes the dialog as if OK had
+succeeded: the panel's transaction neither committed nor aborted (the next command's
+swallowed it), the sketch as the exception left it (revC 3). A transaction cannot be
+partly aborted (FreeCAD 0.20 has no nested ones), so what the copy wrote is put back by
+hand: the objects it added removed, the target sketch's Geometry and Constraints (Tags
+kept: a sketch takes them back as they were) and the feature's SketchCopies restored."""
+from __future__ import annotations
+
+from .geometry import COPIES
+
+
+def copy_code(doc, feature, target, sources_body):
+    """Python of OK's copy of ``feature`` into the sketch named ``target`` ('*new*': a new
+    one, in the Body ``sources_body()`` gives), or '' for no target."""
+    if not target:
+        return ""
+    d = f"App.getDocument({doc.Name!r})"
+    code = "from freecad.elastica import geometry as elastica_geometry\n"
+    if target == "*new*":
+        # in the sources' Body, as Sketcher's new sketch in the active Body: it moves
+        # with the Body (QA19gui F8); attached as the source sketch is (QA24gui F5)
+        body = sources_body()
+        where = "None" if body is None else f"{d}.getObject({body.Name!r})"
+        code += (f"_sk = elastica_geometry.new_copy_sketch({d}.getObject("
+                 f"{feature.Name!r}), {where})\n")
+    else:
+        code += f"_sk = {d}.getObject({target!r})\n"
+    return code + f"elastica_geometry.write_to_sketch({d}.getObject({feature.Name!r}), _sk)\n"
+
+
+class Attempt:
+    """The state OK may change, taken before its lines run (``undo`` puts it back)."""
+
+    def __init__(self, doc, feature, target):
+        self.doc, self.feature, self.target = doc, feature, target
+        self.names = {o.Name for o in doc.Objects}
+        sk = doc.getObject(target) if target and target != "*new*" else None
+        self.sketch = sk if sk is not None and hasattr(sk, "Geometry") else None
+        self.state = (self.sketch.Geometry, self.sketch.Constraints) if self.sketch else None
+        self.copies = list(getattr(feature, COPIES)) if COPIES in feature.PropertiesList \
+            else None
+
+    def undo(self):
+        """The document as before OK's lines, but for the properties the panel had set
+        (they were set already: the lines set them again)."""
+        doc = self.doc
+        for o in reversed(doc.Objects):        # the new sketch (inside out: a Body's last)
+            if o.Name not in self.names:
+                doc.removeObject(o.Name)
+        sk = self.sketch
+        if sk is not None and sk.Name in [o.Name for o in doc.Objects]:
+            geometry, constraints = self.state
+            sk.Geometry = geometry              # first: the constraints name its indices
+            sk.Constraints = constraints
+        f = self.feature
+        if f.Name in [o.Name for o in doc.Objects]:
+            if self.copies is None and COPIES in f.PropertiesList:
+                f.removeProperty(COPIES)
+            elif self.copies is not None:
+                setattr(f, COPIES, self.copies)
+        doc.recompute()
+
+    def said(self, exc):
+        """Why OK failed, for the panel's error line and the report view ('Copy into Prof
+        failed, nothing was written: ...'); a sketch gone: said so, not Python's words
+        ("'NoneType' object has no attribute 'InList'")."""
+        target = self.target
+        sk = self.sketch if self.sketch is not None and \
+            self.doc.getObject(self.sketch.Name) is not None else None
+        what = "OK" if not target else "Copy into a new sketch" if target == "*new*" else \
+            f"Copy into {sk.Label if sk is not None else target}"
+        why = "that sketch is no longer in the document" if sk is None and target and \
+            target != "*new*" else str(exc) or type(exc).__name__
+        return f"{what} failed, nothing was written: {why}. Choose another sketch, or Cancel"
