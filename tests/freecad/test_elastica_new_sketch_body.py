@@ -68,6 +68,25 @@ class NewSketchBodyTest(unittest.TestCase):
                                                 App.Rotation(App.Vector(1, 1, 0), 35))
             self.doc.recompute()
 
+    def test_a_new_sketch_in_the_body_is_attached_to_its_xy_plane_where_the_curve_is(self):
+        # the points' sketch in the Body unattached (no attachment to take): the new sketch
+        # attached as Sketcher's new sketch in a Body, to the Body's XY plane, the curve's
+        # plane its offset (main: MapMode Deactivated, Support [])
+        s = spline.make(self.doc, [(self.sk, [])])
+        self.doc.recompute()
+        new = self._ok_copy(taskpanels.SplinePanel, s, [self.sk])
+        xy = [o for o in self.body.Origin.OriginFeatures if o.Role == "XY_Plane"][0]
+        self.assertEqual(new.MapMode, "FlatFace")
+        self.assertEqual([o for o, _ in new.Support], [xy])
+        self.assertLess(_apart(new.getGlobalPlacement(), s.Plane), 1e-9)
+        self._on_feature(new, s)
+        self.body.Placement = App.Placement(App.Vector(-20, 40, 0),
+                                            App.Rotation(App.Vector(0, 1, 0), 70))
+        self.doc.recompute()
+        self.assertLess(_apart(new.Placement, self.sk.Placement), 1e-9)   # in the Body
+        self._on_feature(new, s)
+        self.assertNotIn("Invalid", new.State)
+
     def test_a_source_at_the_root_keeps_the_new_sketch_there(self):
         root = S.points_sketch(self.doc, S.keyline_xy(12)[0], "Root")
         f = fit.make(self.doc, [(root, [])], Model="smooth")

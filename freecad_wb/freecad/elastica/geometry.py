@@ -308,8 +308,9 @@ def new_copy_sketch(feature, body=None):
     whose plane holds the curve, as Sketcher's new sketch is attached to a face or plane; so it
     moves as that sketch does (QA24gui F5: an unattached copy of a spline drawn on a Pad's top
     face stayed at z = 10 when the Pad grew to 15 mm, its Pocket a hidden void, and Copy into
-    again refused). Without one: unattached, placed in the curve's plane (feature.Plane),
-    the Body's placement taken out."""
+    again refused). Without one: in a Body, attached to the Body's XY plane (Origin) with
+    the curve's plane (feature.Plane, the Body's placement taken out) as its attachment
+    offset, as Sketcher's new sketch in a Body; at the root, unattached in that plane."""
     from .containers import read_objects
     doc = feature.Document
     sk = body.newObject("Sketcher::SketchObject", "ElasticaSketch") if body is not None \
@@ -327,8 +328,19 @@ def new_copy_sketch(feature, body=None):
             sk.MapMode = "Deactivated"
             sk.Support = None
     plane = feature.Plane
-    sk.Placement = plane if body is None else \
-        body.getGlobalPlacement().inverse().multiply(plane)
+    if body is None:
+        sk.Placement = plane
+        return sk
+    # in a Body: attached to its Origin's XY plane, the curve's plane its offset, as
+    # Sketcher's new sketch in a Body is attached to a plane: it was unattached (MapMode
+    # Deactivated, a fixed Placement) when no source sketch was attached
+    offset = body.getGlobalPlacement().inverse().multiply(plane)
+    xy = [o for o in getattr(body.Origin, "OriginFeatures", ()) if o.Role == "XY_Plane"] \
+        if getattr(body, "Origin", None) is not None else []
+    if not xy:
+        sk.Placement = offset
+        return sk
+    sk.Support, sk.MapMode, sk.AttachmentOffset = [(xy[0], "")], "FlatFace", offset
     return sk
 
 
