@@ -333,5 +333,56 @@ class PastedTest(S.DocTest):
         self.assertEqual(len(G.earlier_copy(sp, prof)), 1)
 
 
+
+class CopyAgainTangentTest(S.DocTest):
+    """A line joined to the copy's end by an end-to-end Tangent (a lead-out drawn on from
+    the curve), the curve changed, Copy into again: the line turned onto the new tangent
+    about the new end, its length kept, the copy exactly the curve. It was moved, not
+    turned: the solver held the Tangent by bending the copy, off the feature (the drift
+    said so)."""
+    doc_name = "CopyAgainTangent"
+
+    def _lead_out(self, sk, ids):
+        e = sk.Geometry[ids[-1]]
+        p, t = e.value(e.LastParameter), e.tangent(e.LastParameter)[0]
+        line = sk.addGeometry(Part.LineSegment(p, p + t * 20.0), False)
+        sk.addConstraint(Sketcher.Constraint("Tangent", ids[-1], 2, line, 1))
+        sk.Document.recompute()
+        return line
+
+    def _joined(self, q, sk, ids, line):
+        self.assertNotIn("Invalid", sk.State)
+        self.assertEqual(copies.drift(q), [])           # main: the copy bent, mm off
+        e, seg = sk.Geometry[ids[-1]], sk.Geometry[line]
+        t = e.tangent(e.LastParameter)[0]
+        d = seg.EndPoint - seg.StartPoint
+        self.assertLess((seg.StartPoint - e.value(e.LastParameter)).Length, 1e-9)
+        self.assertAlmostEqual(d.Length, 20.0, delta=1e-9)
+        self.assertLess((d * (1.0 / d.Length) - t).Length, 1e-9)
+
+    def _copy_again(self, w_before, w_after, pieces):
+        doc = self.doc
+        src, q = _waves_quad(doc, w_before)
+        sk = doc.addObject("Sketcher::SketchObject", "Prof")
+        sk.Placement = q.Plane
+        ids = G.write_to_sketch(q, sk)
+        line = self._lead_out(sk, ids)
+        tangent0 = sk.Geometry[line].EndPoint - sk.Geometry[line].StartPoint
+        _edit(src, w_after)
+        self.assertEqual(len(q.Shape.Edges), pieces)
+        ids2 = G.write_to_sketch(q, sk)
+        doc.recompute()
+        line = [i for i, g in enumerate(sk.Geometry) if isinstance(g, Part.LineSegment)][0]
+        turned = sk.Geometry[line].EndPoint - sk.Geometry[line].StartPoint
+        self.assertGreater(tangent0.getAngle(turned), 0.05)     # the tangent did change
+        self._joined(q, sk, ids2, line)
+
+    def test_the_lead_out_turns_with_a_copy_in_as_many_pieces(self):
+        self._copy_again(1.5, 1.8, 2)
+
+    def test_the_lead_out_turns_with_a_copy_in_more_pieces(self):
+        self._copy_again(1.5, 2.5, 3)
+
+
 if __name__ == "__main__":
     unittest.main()

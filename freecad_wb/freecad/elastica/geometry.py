@@ -483,21 +483,46 @@ def earlier_copy(feature, sketch):
 def _follow_ends(sketch, geometry, ids):
     """The line segments joined to the ends of ``ids`` by Coincident constraints moved onto
     the new ends in ``geometry``: the solver then has nothing to move (it moved the copy's
-    poles, 0.21 mm off the feature, as much as the lines)."""
-    def end(g, pos):
-        return geometry[g].StartPoint if pos == 1 else geometry[g].EndPoint
+    poles, 0.21 mm off the feature, as much as the lines); those joined by an end-to-end
+    Tangent turned onto the new tangent there too (_line_onto)."""
+    old = sketch.Geometry
     for c in sketch.Constraints:
-        if c.Type != "Coincident":
+        if c.Type not in ("Coincident", "Tangent"):
             continue
         for (g, pos), (h, hpos) in (((c.First, c.FirstPos), (c.Second, c.SecondPos)),
                                     ((c.Second, c.SecondPos), (c.First, c.FirstPos))):
             if g in ids and pos in (1, 2) and h not in ids and hpos in (1, 2) \
                     and 0 <= h < len(geometry) and isinstance(geometry[h], Part.LineSegment):
                 # in place: its Tag and construction mode kept (not a new segment)
-                if hpos == 1:
-                    geometry[h].StartPoint = end(g, pos)
-                else:
-                    geometry[h].EndPoint = end(g, pos)
+                _line_onto(geometry[h], hpos, _end_frame(old[g], pos),
+                           _end_frame(geometry[g], pos), c.Type == "Tangent")
+
+
+def _end_frame(curve, pos):
+    """(point, unit tangent along the curve) at its start (pos 1) or end (pos 2)."""
+    u = curve.FirstParameter if pos == 1 else curve.LastParameter
+    return curve.value(u), curve.tangent(u)[0]
+
+
+def _line_onto(line, lpos, old, new, tangent):
+    """The end ``lpos`` (1 start, 2 end) of the segment ``line``, joined to a copy's end at
+    ``old`` (point, tangent: _end_frame), moved onto the new copy's end ``new``; joined by
+    an end-to-end Tangent (``tangent``), the segment also turned about that end onto the new
+    tangent, its length and its side (along the curve or back over it) kept. Moved only,
+    its Tangent no longer held, the solver turned it by bending the copy (a copy again
+    with the line's far end free: the copy off the feature, the drift said so). A Tangent
+    to an arc or another curve is left to the solver."""
+    t0, (p1, t1) = old[1], new
+    near, far = (line.StartPoint, line.EndPoint) if lpos == 1 else (line.EndPoint, line.StartPoint)
+    if tangent:
+        d = far - near
+        side = 1.0 if d.dot(t0) >= 0 else -1.0
+        far = p1 + t1 * (side * d.Length)
+    start, end = (p1, far) if lpos == 1 else (far, p1)
+    try:
+        line.StartPoint, line.EndPoint = start, end
+    except Part.OCCError:   # the new start on the old end (a segment of no length between)
+        line.EndPoint, line.StartPoint = end, start
 
 
 def _replace_copy(sketch, earlier, curves):
@@ -514,8 +539,6 @@ def _replace_copy(sketch, earlier, curves):
     first, last = earlier[0], earlier[-1]
     olds = set(earlier)
     geometry = sketch.Geometry
-    start = curves[0].value(curves[0].FirstParameter)
-    end = curves[-1].value(curves[-1].LastParameter)
     slots = (("First", "FirstPos"), ("Second", "SecondPos"), ("Third", "ThirdPos"))
     kept, lost = [], []
     joints = [None] * (len(earlier) - 1)    # per old joint: the constraint types joining it
@@ -540,18 +563,18 @@ def _replace_copy(sketch, earlier, curves):
     for k, j in enumerate(joints):
         for t in sorted((j or set()) - common):
             lost.append(f"{t} at the joint of pieces {k + 1} and {k + 2}")
-    # the line segments joined to the ends follow them (in place: Tag, construction kept)
+    # the line segments joined to the ends follow them (in place: Tag, construction kept),
+    # those joined by Tangent turned onto the new tangent (_line_onto)
     for _n, c, refs, at in kept:
-        if c.Type != "Coincident":
+        if c.Type not in ("Coincident", "Tangent"):
             continue
         for r in refs:
             if r[0] >= 0 and r[0] not in olds and r[1] in (1, 2) and \
                     isinstance(geometry[r[0]], Part.LineSegment):
-                p = start if "start" in at.values() else end
-                if r[1] == 1:
-                    geometry[r[0]].StartPoint = p
-                else:
-                    geometry[r[0]].EndPoint = p
+                was, now = ((_end_frame(geometry[first], 1), _end_frame(curves[0], 1))
+                            if "start" in at.values() else
+                            (_end_frame(geometry[last], 2), _end_frame(curves[-1], 2)))
+                _line_onto(geometry[r[0]], r[1], was, now, c.Type == "Tangent")
     sketch.Geometry = geometry
     tags = [g.Tag for g in sketch.Geometry]
     # the constraints naming the old pieces deleted first: delGeometries moves those at a
