@@ -79,6 +79,7 @@ def cmd_g2quad(args) -> int:
            "end_curvature_error": g.end_curvature_error,
            "join_angle_rad": g.join_angle, "join_curvature_jump": g.join_curvature_jump,
            "dropped": g.dropped,
+           "seam_angle_rad": g.seam_angle, "seam_curvature_jump": g.seam_curvature_jump,
            "polyline": g.polyline.points, "A": g.polyline.A,
            "bsplines": [b.to_dict() for b in g.bsplines]}
     if g.fit is not None:      # --fit: the elastica built from, the points' distances to it
@@ -134,16 +135,14 @@ def cmd_g2quad(args) -> int:
 
 
 def _spline_of(doc, name: str):
-    """The open ElasticSpline of `elastica spline --json`'s record (its pieces and
-    'closed'), None for any other JSON; a closed one refused (no ends to build between).
-    It was refused as "no elastica curve" (QA23 F10): g2_quadratic takes the spline."""
+    """The ElasticSpline of `elastica spline --json`'s record (its pieces and 'closed'),
+    None for any other JSON. It was refused as "no elastica curve" (QA23 F10): g2_quadratic
+    takes the spline; a closed one opened at its point 0 and closed G2 there (QA25 F3: it
+    was refused, "no ends for the G2 quadratic splines")."""
     from .core import SmoothElastica, chain_starts
     from .spline import ElasticSpline
     if not (isinstance(doc, dict) and "pieces" in doc and "closed" in doc and "type" not in doc):
         return None
-    if doc["closed"]:
-        raise InputError(f"{name}: a closed spline has no ends for the G2 quadratic splines to "
-                         "start and stop at (seed 002 builds open curves): pass an open one")
     pieces = doc["pieces"]
     if not isinstance(pieces, list) or not pieces:
         raise InputError(f"{name}: a spline's 'pieces' must be a list of smooth elasticae")
@@ -155,7 +154,7 @@ def _spline_of(doc, name: str):
         """The spline read back: its pieces' evaluation and inflections, no C result."""
 
         def __init__(self):     # (ElasticSpline's own reads the C el_spline_result)
-            self.pieces, self.closed = curves, False
+            self.pieces, self.closed = curves, bool(doc["closed"])
             self._starts = chain_starts(curves)
             self.length = float(self._starts[-1])
 

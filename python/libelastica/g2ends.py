@@ -2,7 +2,8 @@
 an affine arc-length polyline moved so that its G2 quadratic B-spline (:func:`g2_bspline`)
 starts with the source's curvature (_match_start: x_1 on the line keeping A_2 = A) and its
 tangent too (_hold_start: x_1, x_2 slid, _slid), every joint staying G2; _matched_ends does
-both ends of a piece.
+both ends of a piece; the source's end curvature and a closed source's seam estimated
+from samples (_end_curvature, _seam_estimate) and the ends' errors (_rel_err, _menger_max).
 """
 from __future__ import annotations
 
@@ -30,9 +31,28 @@ def _match_start(x: np.ndarray, start, end, kappa: float) -> Optional[np.ndarray
     Why: the vertices lie on the source, so the uniform spline runs inside it by ~kappa h^2/8
     and the end parabola (start, c, m_2) bridging to it over ~1.5 h ends with ~0.71 kappa on
     a circle (legs 0.793 h and h/sqrt 2: (0.707/0.793)^3). x_1 slides on the line
-    det(x_2 - x_1, v_2) = A (v_1 = t u + (A/|v_2|) w, u = v_2/|v_2|, det(w, u) = 1), which keeps
-    A_2 = A and so every joint G2; t moves m_2, v_1 and the end parabola's legs, and the root
-    of its start curvature - kappa is taken nearest the polyline's own t (bisection)."""
+    det(x_2 - x_1, v_2) = A (_slide_x1), which keeps A_2 = A and so every joint G2."""
+    return _slide_x1(x, start, end, lambda bs: _start_curvature(bs) - kappa)
+
+
+def _match_tangent(x: np.ndarray, start, end, tangent) -> Optional[np.ndarray]:
+    """The polyline x (>= 6 vertices) with x_1 moved on _match_start's line (_slide_x1) so
+    that g2_bspline(x, start, end) starts along the unit ``tangent``, or None. For an end of
+    zero curvature (a free batten's natural end): no G2 quadratic ends with curvature 0 (its
+    end parabola would be straight, and so, joint by joint, every one), so _hold_start's
+    curvature target cannot be met and the tangent is held alone (QA25 F4: a free spline's
+    ends 0.147 deg off at 24 edges, warned at every count)."""
+    def angle(bs):
+        d = bs.poles[1] - bs.poles[0]
+        return math.atan2(d[0] * tangent[1] - d[1] * tangent[0], d @ tangent)
+    return _slide_x1(x, start, end, angle)
+
+
+def _slide_x1(x: np.ndarray, start, end, residual) -> Optional[np.ndarray]:
+    """The polyline x (>= 6 vertices) with x_1 slid on the line det(x_2 - x_1, v_2) = A
+    (v_1 = t u + (A/|v_2|) w, u = v_2/|v_2|, det(w, u) = 1), which keeps A_2 = A and so every
+    joint G2, to the root of ``residual(g2_bspline(x, start, end))`` nearest the polyline's
+    own t (a sign change on 41 points over 0.5..1.5 x it, then bisection); None if none."""
     v2 = x[3] - x[2]
     A = float(v2[1] * (x[2] - x[1])[0] - v2[0] * (x[2] - x[1])[1])
     n2 = float(np.hypot(*v2))
@@ -44,7 +64,7 @@ def _match_start(x: np.ndarray, start, end, kappa: float) -> Optional[np.ndarray
         y = x.copy()
         y[1] = x[2] - (t * u + (A / n2) * w)
         try:
-            return _start_curvature(g2_bspline(y, start, end)) - kappa, y
+            return residual(g2_bspline(y, start, end)), y
         except DomainError:
             return math.nan, y
     ts = t0 * np.linspace(0.5, 1.5, 41)
@@ -183,6 +203,11 @@ def _matched_ends(x: np.ndarray, start, end, k_start: Optional[float],
     if len(x) < 6:
         return x, x, holds
     y, held = x.copy(), x.copy()
+    if k_start == 0.0 and t_start is not None:     # a zero-curvature end: the tangent alone
+        z = _match_tangent(x, start, end, t_start)
+        if z is not None:
+            held[1] = z[1]
+        holds[0] = z is not None
     if k_start:
         z = _match_start(x, start, end, k_start)
         if z is not None:
@@ -192,6 +217,11 @@ def _matched_ends(x: np.ndarray, start, end, k_start: Optional[float],
             if z is not None:
                 held[1:3] = z[1:3]
             holds[0] = z is not None
+    if k_end == 0.0 and t_end is not None:
+        z = _match_tangent(x[::-1].copy(), end, start, -np.asarray(t_end))
+        if z is not None:
+            held[-2] = z[1]
+        holds[1] = z is not None
     if k_end:     # the same at the end, travelled backwards (its curvature changes sign)
         r = x[::-1].copy()
         z = _match_start(r, end, start, -k_end)
@@ -203,3 +233,61 @@ def _matched_ends(x: np.ndarray, start, end, k_start: Optional[float],
                 held[-3:-1] = z[2:0:-1]
             holds[1] = z is not None
     return y, held, holds
+
+
+def _end_curvature(samples: np.ndarray, reverse: bool, tangents=None) -> Optional[float]:
+    """Signed curvature at the first (reverse: the last) of dense samples of a curve, in
+    the direction of travel, from the 8 samples at that end (chord length s): with their
+    tangents, theta'(0) of a cubic theta(s) by least squares (first differences: the
+    samples' rounding counts ~1/s less); without, det(x', x'') / |x'|^3 of x(s), y(s)
+    cubics. None for fewer than 5 samples."""
+    q = samples[::-1] if reverse else samples
+    q = q[:8] - q[0]
+    if len(q) < 5:
+        return None
+    s = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(q, axis=0), axis=1))])
+    if not s[-1] > 0:
+        return None
+    V = np.vander(s / s[-1], 4, increasing=True)
+    if tangents is not None:
+        t = (tangents[::-1] if reverse else tangents)[:8]
+        theta = np.unwrap(np.arctan2(t[:, 1], t[:, 0]))
+        k = np.linalg.lstsq(V, theta - theta[0], rcond=None)[0][1] / s[-1]
+    else:
+        c = np.linalg.lstsq(V, q, rcond=None)[0]
+        d1, d2 = c[1] / s[-1], 2.0 * c[2] / s[-1] ** 2
+        k = (d1[0] * d2[1] - d1[1] * d2[0]) / np.hypot(*d1) ** 3
+    return float(-k if reverse else k)      # (backwards from the end: the sign turns)
+
+
+def _seam_estimate(samples: np.ndarray) -> Tuple[np.ndarray, float]:
+    """The unit tangent and signed curvature at the first (= last) of dense samples of a
+    closed curve, from the 8 samples either side of it (the curve continued across its
+    seam): x(s), y(s) cubics by least squares in chord length s, as _end_curvature's at
+    an end, here centred (QA25 F3: each end's own one-sided tangents closed 4.8 deg apart at
+    24 edges)."""
+    q = np.vstack([samples[-9:-1], samples[:9]]) - samples[0]
+    s = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(q, axis=0), axis=1))])
+    s = (s - s[8]) / (s[-1] - s[0])
+    c = np.linalg.lstsq(np.vander(s, 4, increasing=True), q, rcond=None)[0]
+    d1, d2 = c[1], 2.0 * c[2]
+    return d1 / np.hypot(*d1), float((d1[0] * d2[1] - d1[1] * d2[0]) / np.hypot(*d1) ** 3)
+
+
+def _rel_err(a: float, b: float, scale: float = 0.0) -> float:
+    """|a - b| / max(|a|, |b|) (scale 0), or |a - b| / max(|b|, scale): relative to the
+    source's curvature scale (end_curvature_error; QA13: near an end of zero curvature the
+    first read ~1 whatever the size of the error)."""
+    m = max(abs(a), abs(b)) if scale <= 0.0 else max(abs(b), scale)
+    return abs(a - b) / m if m > 0 else 0.0
+
+
+def _menger_max(x: np.ndarray) -> float:
+    """Largest discrete (three-point) curvature of sampled points, 0 for fewer than 3."""
+    if len(x) < 3:
+        return 0.0
+    a, b = x[1:-1] - x[:-2], x[2:] - x[1:-1]
+    cross = np.abs(a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0])
+    den = np.linalg.norm(a, axis=1) * np.linalg.norm(b, axis=1) * np.linalg.norm(x[2:] - x[:-2], axis=1)
+    ok = den > 0
+    return float(np.max(2.0 * cross[ok] / den[ok])) if ok.any() else 0.0

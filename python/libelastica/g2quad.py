@@ -17,7 +17,7 @@ from ._ffi import DomainError, as_points, as_size, lib
 from ._values import ValueEquality
 from .affine import (AffinePolyline, EdgeCountError, EndPieces, _curve_samples, _is_curve,
                      affine_end_pieces, affine_polyline, elastica_inflections, g2_bspline, quadratic_joint_curvatures)
-from .g2ends import _matched_ends
+from .g2ends import _end_curvature, _matched_ends, _menger_max, _rel_err, _seam_estimate
 
 __all__ = ["G2Quadratic", "CoverageError", "CoverageWarning", "EndTangentWarning", "covering_edges",
            "g2_quadratic"]
@@ -58,7 +58,12 @@ class G2Quadratic(ValueEquality):
     every n); None when neither end is
     reached. ~1e-12 where the end vertex could be placed (see g2_quadratic), else what the
     uniform construction gives (~0.29 on an arc at any n).
-    dropped: the source's arc length left out at (start, end) (0, 0 when covers_source)."""
+    dropped: the source's arc length left out at (start, end) (0, 0 when covers_source).
+    seam_angle (radians) / seam_curvature_jump (relative to the source's curvature scale, as
+    end_curvature_error): of a closed source (a closed ElasticSpline, opened at its point 0;
+    or samples whose last is their first, each end then as its own tangents= give), the angle between the last spline's end tangent and the first's start tangent and the
+    jump of their curvature where the outline closes (~1e-13: G2 there); None for an open
+    source or one not covered."""
     bsplines: list
     polyline: AffinePolyline
     ends: np.ndarray
@@ -73,12 +78,20 @@ class G2Quadratic(ValueEquality):
     end_curvature_error: Optional[float] = None
     dropped: Tuple[float, float] = (0.0, 0.0)
     source_end_tangent_error: Optional[float] = None
+    seam_angle: Optional[float] = None
+    seam_curvature_jump: Optional[float] = None
 
     def g2_summary(self) -> str:
         """Which joints are G2, in words (the CLI's and FreeCAD's line): the joints inside
         a piece by curvature_jump; where pieces meet (inflections) by their angle and jump."""
         inside = f"largest relative curvature jump at a joint inside a piece: " \
                  f"{self.curvature_jump:.2g} (G2 inside each piece)"
+        if self.seam_angle is not None:     # a closed source: where the outline closes
+            inside += (f"; where the outline closes (point 0): tangents "
+                       f"{math.degrees(self.seam_angle):.2g} deg apart, relative curvature jump "
+                       f"{self.seam_curvature_jump:.2g}"
+                       + (" (G2)" if self.seam_angle <= SEAM_G2 and
+                          self.seam_curvature_jump <= SEAM_G2 else " (not G2)"))
         if len(self.bsplines) < 2:
             return inside
         return (f"{inside}; where the {len(self.bsplines)} pieces meet (inflections): tangents "
@@ -337,12 +350,22 @@ class EndTangentWarning(RuntimeWarning):
     """:func:`g2_quadratic`'s warning that an end of the source whose tangent it tried to
     hold (_hold_start: an end piece of 7 edges or more, the source's tangent known) is not
     held: ``misses`` ((end, angle in radians), ...) with end "start" / "end", as
-    ``G2Quadratic.source_end_tangent_error`` reads them."""
+    ``G2Quadratic.source_end_tangent_error`` reads them, or "seam": a closed source's
+    outline closing at a corner (``G2Quadratic.seam_angle``, above SEAM_G2)."""
 
     def __init__(self, message: str = "", misses: Tuple[Tuple[str, float], ...] = ()):
         super().__init__(message)
         self.misses = tuple(misses)
 
+
+# a curve's end curvature below ZERO_END_K x its largest |kappa| is a zero (a free end's)
+# evaluated with rounding (1.4e-16 .. 7.1e-13 relative over 45 free splines' ends), which no
+# G2 quadratic end can match
+ZERO_END_K = 1e-9
+
+# the seam of a closed source counts as G2 (seam_angle in radians, seam_curvature_jump
+# relative) below this: held ends meet to ~1e-13 (rounding of the Newton's 1e-12 residual)
+SEAM_G2 = 1e-9
 
 # EndTangentWarning's reason where _hold_start found no end holding the source's tangent
 NO_G2_END = "no G2 end found that holds it with the source's curvature"
@@ -411,50 +434,6 @@ def end_piece_left_out(ends: EndPieces, n: int, nsamples: int) -> bool:
     return (ends.n_both is None or n < ends.n_both) and nsamples - 1 - ends.ends[1] >= 2
 
 
-def _end_curvature(samples: np.ndarray, reverse: bool, tangents=None) -> Optional[float]:
-    """Signed curvature at the first (reverse: the last) of dense samples of a curve, in
-    the direction of travel, from the 8 samples at that end (chord length s): with their
-    tangents, theta'(0) of a cubic theta(s) by least squares (first differences: the
-    samples' rounding counts ~1/s less); without, det(x', x'') / |x'|^3 of x(s), y(s)
-    cubics. None for fewer than 5 samples."""
-    q = samples[::-1] if reverse else samples
-    q = q[:8] - q[0]
-    if len(q) < 5:
-        return None
-    s = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(q, axis=0), axis=1))])
-    if not s[-1] > 0:
-        return None
-    V = np.vander(s / s[-1], 4, increasing=True)
-    if tangents is not None:
-        t = (tangents[::-1] if reverse else tangents)[:8]
-        theta = np.unwrap(np.arctan2(t[:, 1], t[:, 0]))
-        k = np.linalg.lstsq(V, theta - theta[0], rcond=None)[0][1] / s[-1]
-    else:
-        c = np.linalg.lstsq(V, q, rcond=None)[0]
-        d1, d2 = c[1] / s[-1], 2.0 * c[2] / s[-1] ** 2
-        k = (d1[0] * d2[1] - d1[1] * d2[0]) / np.hypot(*d1) ** 3
-    return float(-k if reverse else k)      # (backwards from the end: the sign turns)
-
-
-def _rel_err(a: float, b: float, scale: float = 0.0) -> float:
-    """|a - b| / max(|a|, |b|) (scale 0), or |a - b| / max(|b|, scale): relative to the
-    source's curvature scale (end_curvature_error; QA13: near an end of zero curvature the
-    first read ~1 whatever the size of the error)."""
-    m = max(abs(a), abs(b)) if scale <= 0.0 else max(abs(b), scale)
-    return abs(a - b) / m if m > 0 else 0.0
-
-
-def _menger_max(x: np.ndarray) -> float:
-    """Largest discrete (three-point) curvature of sampled points, 0 for fewer than 3."""
-    if len(x) < 3:
-        return 0.0
-    a, b = x[1:-1] - x[:-2], x[2:] - x[1:-1]
-    cross = np.abs(a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0])
-    den = np.linalg.norm(a, axis=1) * np.linalg.norm(b, axis=1) * np.linalg.norm(x[2:] - x[:-2], axis=1)
-    ok = den > 0
-    return float(np.max(2.0 * cross[ok] / den[ok])) if ok.any() else 0.0
-
-
 def _joins(splines) -> Tuple[float, float]:
     """Largest tangent angle (radians) and signed-curvature jump where consecutive
     pieces meet."""
@@ -470,7 +449,9 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                  fit: bool = False, partial: bool = False, *, _plain: bool = False,
                  **options) -> G2Quadratic:
     """Seed 002 end to end: approximate ``curve_or_points``, a SmoothElastica, a
-    HermiteChain or an open ElasticSpline (its pieces; sampled with
+    HermiteChain or an ElasticSpline (its pieces; a closed one opened at its point 0, its
+    first duck, both ends held to its tangent and curvature there so the outline closes G2:
+    ``seam_angle``, ``seam_curvature_jump``, EndTangentWarning where it does not; sampled with
     ``samples_per_vertex`` x n arcs, default 20) or a sampled curve (N+1, 2),
     by an affine arc-length polyline with n edges (:func:`affine_polyline`, each
     piece's A adjusted so its last vertex lands on the piece end), then build one
@@ -507,10 +488,10 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
     k = 1.5 loop at 12 edges); the curvature then departs up to ~10 % from an arc's just
     inside the ends (7.4 % with the curvature alone)."""
     is_curve = _is_curve(curve_or_points, "g2_quadratic")
-    if is_curve and getattr(curve_or_points, "closed", False):   # a closed ElasticSpline
-        raise ValueError("g2_quadratic: a closed ElasticSpline has no ends for the splines to "
-                         "start and stop at (seed 002 builds open curves): pass an open one, "
-                         "or its samples from a point of your choice")
+    # a closed ElasticSpline: opened at its point 0 (its arc lengths start there), both ends
+    # held to the spline's own tangent and curvature there, so the outline closes G2 (QA25
+    # F3: refused before, and its samples' splines closed at a corner, 4.8 deg at 24 edges)
+    closed = is_curve and bool(getattr(curve_or_points, "closed", False))
     n = as_size(n, "g2_quadratic: n (the polyline's edges)", 3)   # the user's call named
     if fit:
         if is_curve or tangents is not None:
@@ -556,6 +537,7 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
         raise _noisy_points_error(exc, points) from None
     npieces = len(ap.A)
     short = None        # why the polyline stops short of the source's end, if it does
+    seam_dir = None     # closed samples without tangents: the one tangent both ends hold
     if is_curve:
         c = curve_or_points
         infl_s = elastica_inflections(c)
@@ -601,6 +583,15 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
         covers = first == 0, first + npieces == len(bounds) - 1 and short is None
         inflection = first > 0 or first + npieces < len(bounds) - 1
         k_src = [float(k) for k in c.curvature(np.array([0.0, c.length]))]
+        # a free end's curvature 0 evaluates as rounding (a natural-end batten: -2.6e-18 of
+        # max 0.011): held as a curvature, no G2 end met it (_match_tangent says why) and
+        # every open stroke warned (QA25 F4); taken as 0: the tangent is held alone
+        kmax = float(np.max(np.abs(c.curvature(np.linspace(0.0, c.length, 401)))))
+        k_src = [0.0 if abs(k) <= ZERO_END_K * kmax else k for k in k_src]
+        if closed and all(covers):
+            # the seam's two ends the same point, tangent and curvature, to the bit (the last
+            # piece's end evaluates them ~1e-14 apart): the outline closes on itself
+            ends[-1], ends_dir[-1], k_src[1] = ends[0], ends_dir[0], k_src[0]
         dropped = float(s_ends[0]), float(c.length - s_ends[-1])
         length = float(c.length)
     else:
@@ -611,6 +602,9 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
         t_ends = np.concatenate([[ap.t[0]], ap.infl_param, [round(float(ap.t[-1]))]])
         idx = t_ends.astype(int)
         ends = samples[idx]
+        # samples of a closed outline (the last the first): the splines close there, at a
+        # corner unless both ends hold one tangent (QA25 F3: 4.8 deg at 24 edges, unsaid)
+        ring = len(samples) > 2 and bool(np.array_equal(samples[0], samples[-1]))
         ends_dir = None
         if tangents is not None:
             tan = as_points(tangents, "tangents")
@@ -623,6 +617,11 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
         inflection = not covers[0] or (not covers[1] and short is None)
         tan = None if tangents is None else as_points(tangents, "tangents")
         k_src = [_end_curvature(samples, False, tan), _end_curvature(samples, True, tan)]
+        if ring and tan is None and all(covers) and len(samples) > 17:
+            # closed samples without tangents: both ends held to one tangent and curvature,
+            # the samples' own across the seam, so the splines close G2 there (QA25 F3)
+            seam_dir, kappa = _seam_estimate(samples)
+            k_src = [kappa, kappa]
         seg = np.linalg.norm(np.diff(samples, axis=0), axis=1)
         dropped = float(seg[:idx[0]].sum()), float(seg[idx[-1]:].sum())
         length = float(seg.sum())
@@ -632,10 +631,11 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
         a, b = ap.piece_start[p], ap.piece_start[p + 1]
         first, last = p == 0 and covers[0], p == npieces - 1 and covers[1]
         held = ends_dir is not None and (first or last)
+        dirs = (ends_dir[p], ends_dir[p + 1]) if held else (seam_dir, seam_dir)
         x, xt, holds = _matched_ends(ap.points[a:b + 1], ends[p], ends[p + 1],
                               k_src[0] if first else None, k_src[1] if last else None,
-                              ends_dir[p] if held and first else None,
-                              ends_dir[p + 1] if held and last else None)
+                              dirs[0] if first else None, dirs[1] if last else None)
+        held = held or (seam_dir is not None and (first or last))
         gave_up = [None, None]  # why each held end was given up, if it was
         try:
             bs = g2_bspline(x, ends[p], ends[p + 1])
@@ -716,15 +716,34 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
              (splines[-1], -1, k_src[1], kscale[1], covers[1]))
             if kept and k is not None]
     angle, kjump = _joins(splines)
+    seam = None
+    if (closed or (not is_curve and ring)) and all(covers):   # last spline's end vs first's start
+        seam_a, seam_k = _joins([splines[-1], splines[0]])
+        seam = (seam_a, seam_k / max(abs(k_src[0] or 0.0), max(kscale), 1e-300))
     ap = dataclasses.replace(ap, points=poly)
     g = G2Quadratic(splines, ap, np.asarray(ends), dev, jump,
                     terr if ends_dir is not None else None, bool(all(covers)),
                     ends_covered=(bool(covers[0]), bool(covers[1])), join_angle=angle,
                     join_curvature_jump=kjump,
                     end_curvature_error=max(kerr) if kerr else None, dropped=dropped,
-                    source_end_tangent_error=max(serr) if serr else None)
+                    source_end_tangent_error=max(serr) if serr else None,
+                    seam_angle=seam and seam[0], seam_curvature_jump=seam and seam[1])
+    if seam is not None and closed and (seam[0] > SEAM_G2 or seam[1] > SEAM_G2):
+        missed.append(("seam", seam[0], (
+            f"the closed outline has a corner where it closes (point 0), relative "
+            f"curvature jump {seam[1]:.3g}: more edges, or the ducks started at another "
+            "one (np.roll), away from an inflection and with room for 7 edges to the next")))
+    elif seam is not None and seam[0] > SEAM_G2:    # closed samples: their two ends' own
+        missed.append(("seam", seam[0], (              # tangents, estimated apart
+            f"the points close on themselves (the last is the first) and the splines close "
+            f"there at a corner (relative curvature jump {seam[1]:.3g}): " + (
+                "their tangents at the first and last point differ" if tangents is not None
+                else "pass tangents= (the curve's own at the samples: both ends then hold "
+                "one), or the closed curve itself (a closed ElasticSpline closes G2)"))))
     if missed:
-        said = "; ".join(f"the spline's {end} tangent is {math.degrees(err):.3g} deg off the "
+        said = "; ".join((f"the splines' tangents where the outline closes are "
+                          f"{math.degrees(err):.3g} deg apart: {why}") if end == "seam" else
+                         f"the spline's {end} tangent is {math.degrees(err):.3g} deg off the "
                          f"source's: {why}" for end, err, why in missed)
         warnings.warn(EndTangentWarning(f"g2_quadratic ({n} edges): {said}",
                                         tuple((end, err) for end, err, _ in missed)),
