@@ -33,6 +33,7 @@ from .cubic import SPARSE_POINTS, SparseWarning, smooth_fits_better
 from ._text import LengthFormat, lengths
 from ._values import ValueEquality
 from .fit_cost import EndConditionWarning, checked_ends
+from .fit_input import explain_input_status
 from .misfit import (MISFIT_RATIO, MisfitWarning, OutlierWarning, _Figures, _places, _verdict,
                      _warn_outliers, misfit_summary)
 from .fit_retrace import retrace_gate
@@ -632,8 +633,7 @@ def _fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] =
     dist, foot = np.empty(n), np.empty(n)
     st = call(lib.el_fit_smooth if smooth else lib.el_fit_discrete, dptr(pts), n, o, init, res,
               dptr(dist), dptr(foot), keep=(pts, dist, foot, initial))     # Ctrl-C: the CLI's
-    if st == lib.EL_EINVAL and not np.all(np.isfinite(pts)):   # checked here, off the common path
-        raise ValueError("fit: points must be finite (no NaN/inf)")
+    explain_input_status(st, pts)       # NaN / inf, an extent out of range: named (QA25 F5)
     if res.constraint and st in (lib.EL_EINVAL, lib.EL_EDOM):
         _raise_constraint(st, res.constraint, _conditions(constraints, fixed), constraints)
     if st == lib.EL_ESINGULAR and bool(np.all(pts == pts[0])):   # the CLI's words (QA20 F8)
