@@ -1281,7 +1281,8 @@ typedef struct el_spline_result {
                               |k| >= 1e3 at sigma = kappa^2, by length a singular reduced
                               Hessian; tension 0: slides above) */
     unsigned long work;    /* the call's work: evaluations of the whole chain (each evaluates
-                              every piece once) over every solve el_spline_solve made, the
+                              every piece once; each start of the pieces counted as one)
+                              over every solve el_spline_solve made, the
                               G2 ends' search by length and the largest's solves above
                               included (none of those where its tensions sigma h^2 / h^2 are
                               not doubles > 0: spans of ~1e300) */
@@ -1289,16 +1290,20 @@ typedef struct el_spline_result {
                               shared by all its solves and searches: max_steps x max_iter x
                               (16 + 64 / m) chain evaluations for m pieces (57 600 + 230 400 / m
                               at the defaults: 61 038 for 68 points, 96 000 for 7, 288 000 for
-                              2); no evaluation is made past it, every path ends at its next.
-                              The status is then what the call had reached (mostly EL_ENOCONV,
-                              or EL_ERANGE with reach; EL_OK only for a spline solved to tol
-                              before: res->unstable then 0, not judged) and largest is the
-                              largest tension solved before it ended (0 where none). The fuzz's
-                              7 ducks at sigma 49.5 with a G2 start: 805 120 evaluations, 9.7 s,
-                              when each solve had a budget of its own; now 96 000, 1.3 s.
-                              No call of the library's tests or bench comes near it (the most:
-                              9.82 x max_steps x max_iter for 68 points by length, 5 s; 55.2 x
-                              for a 2-point G2 batten, 0.4 s). Set with reach */
+                              2; measured on the tests' calls, not derived); no search goes
+                              past it, every path ends at its next evaluation, and only a
+                              solution already found is evaluated again past it (a few
+                              evaluations: work may exceed the budget by those). The status
+                              is then what the call had reached (mostly EL_ENOCONV, or
+                              EL_ERANGE with reach; EL_OK only for a spline solved to tol
+                              before, its figures and unstable those of its own pieces) and
+                              largest is the largest tension solved before it ended (0 where
+                              none). The fuzz's 7 ducks at sigma 49.5 with a G2 start: 805 120
+                              evaluations, 9.7 s, when each solve had a budget of its own; now
+                              96 000, 1.3 s. No call of the library's tests or bench comes
+                              near it (the most: 9.82 x max_steps x max_iter for 68 points by
+                              length, 35 364, 5 s; 55.2 x for a 2-point G2 batten, 198 716,
+                              0.4 s). Set with reach, and on EL_EDOM */
 } el_spline_result;
 
 /* Defaults: tension mode, sigma 0, open, natural ends, tol 1e-10, max_iter 60, max_steps 60. */

@@ -347,6 +347,9 @@ void el__chain_free(el__spchain *w);
 void el__chain_targets(const el__spchain *w, size_t j, el__sptargets *t);
 /* Every piece and the knot (and border) residuals; returns the merit, or INFINITY. */
 double el__chain_eval(el__spchain *w, int jac);
+/* el__chain_eval of a state already known (a snapshot just loaded, el__chain_newton's restore,
+ * the straight line): made past the call's budget too, and counted (spline_chain.c) */
+double el__chain_reeval(el__spchain *w, int jac);
 /* 1 when every piece's Jacobian coefficients are current (el__spiece_jac_current) */
 int el__chain_jac_current(const el__spchain *w);
 /* Newton on the chain until max residual <= aim (or it stalls), at most cap

@@ -157,7 +157,7 @@ static int solve_sibling(el__spchain *w, const double *xy, size_t n, const el_sp
             pc->v[EL__SP_K] = 0.0; pc->v[EL__SP_Q] = 0.0; pc->v[EL__SP_L] = pc->h;
         }
         if (lmode) { w->sigma = 0.0; w->Lt = Lp / S; }
-        el__chain_eval(w, 0);
+        el__chain_reeval(w, 0);
         *straight = 1;
         return EL_OK;
     }
@@ -255,16 +255,21 @@ static int solve_g2(el__spchain *w, el__spchain *g, int sib, int max_steps, cons
  * and search it makes (the paths of the solve, tension mode's G2 search by length with its
  * up to NLADDER + BRENT_ITER solves, el__spline_largest's up to 18 solves): max_steps x
  * max_iter x (WORK_FAMILIES + WORK_SHORT / m) for m pieces. el__chain_eval counts each
- * evaluation and makes none past it (spline_chain.c), so every path ends at its next one.
+ * evaluation and makes none past it (spline_chain.c), so every path ends at its next one, and
+ * el__chain_start_pieces begins no start (each counted as one); el__chain_reeval, a known
+ * state evaluated again after a search, is let through and counted: a few past it at most.
  * A budget for each solve (8 x max_steps x max_iter, cee94bf) bounded a solve, not a call:
- * the fuzz's 7 ducks at sigma 49.5 with a G2 start spent 242 016 evaluations (9.7 s of CPU)
- * over the search by length's solves, each within its own.
- * Sized on the work of every el_spline_solve call of the C and Python tests and the bench
- * (none bounded, 1379 calls): at most 12.0 x max_steps x max_iter for m >= 2 (QA16's
- * shipline, 68 points by length 1.5 x: 35 364, 9.82 x 3600; 5.0 s), 55.2 x for one piece (a
- * 2-point G2 batten by tension through test_spline_g2's search by length: 198 716, an
- * evaluation of one piece being cheap, 0.42 s); the 1 / m term lets the short chains' many
- * cheap evaluations through without giving a long chain's expensive ones as many. */
+ * the fuzz's 7 ducks at sigma 49.5 with a G2 start (9291f637) spent 805 120 evaluations
+ * (9.7 s of CPU) over the search by length's solves, each within its own; now 96 000.
+ * MEASURED, NOT DERIVED: sized on the work of every el_spline_solve call of
+ * tests/c/test_spline*.c, test_bspline, bench_spline and tests/python (1379 calls, none
+ * bounded, a logging build not committed; ffdd424's message). The most for m >= 2: QA16's
+ * shipline, 68 points by length 1.5 x, 35 364 = 9.82 x max_steps x max_iter (5.0 s), within
+ * 61 038 (margin 1.73); for one piece: test_spline_g2's 2-point G2 batten by tension through
+ * its search by length, 198 716 = 55.2 x (an evaluation of one piece being cheap, 0.42 s),
+ * within 288 000 (margin 1.45). WORK_SHORT / m is fitted to those two points (m = 67 and
+ * m = 1) only: it lets the short chains' many cheap evaluations through without giving a
+ * long chain's expensive ones as many. */
 #define WORK_FAMILIES 16
 #define WORK_SHORT 64
 static unsigned long work_budget(const el_spline_options *opt, size_t n)
@@ -575,7 +580,8 @@ static int solve_paths(const double *xy, size_t n, const el_spline_options *opt,
             res->reach[i] = nearest[2 * i + 1] * S;
         }
 done:
-    if (st == EL_OK || st == EL_ENOCONV || st == EL_ERANGE) {
+    /* EL_EDOM too: a batten that slides off its ducks says what finding that cost */
+    if (st == EL_OK || st == EL_ENOCONV || st == EL_ERANGE || st == EL_EDOM) {
         res->work = wk->evals;
         res->stopped = wk->stopped;
     }

@@ -139,7 +139,7 @@ static int narrow(el__spchain *w, int max_steps, double Lt, double La, double sb
     }
     w->lmode = 0;
     w->near = 0;
-    el__chain_eval(w, 1);
+    el__chain_reeval(w, 1);
     return EL_OK;
 }
 
@@ -156,7 +156,7 @@ static int from_state(el__spchain *w, int max_steps, double Lt, double sb, doubl
 {
     w->lmode = 0;
     w->near = 0;
-    el__chain_eval(w, 1);
+    el__chain_reeval(w, 1);
     int st = narrow(w, max_steps, Lt, total_length(w), sb, Lb, fine ? 0.1 * w->tol : COARSE);
     if (st) return st;
     if (!fine) return el__spline_length_from(w, max_steps, Lt);
@@ -411,7 +411,7 @@ int el__spline_length_by_tension(el__spchain *w, int max_steps, double Lt, int l
             el__snap_load(w, &kept);
             w->lmode = EL__BORDER_LENGTH;
             w->Lt = Lt;
-            el__chain_eval(w, 1);
+            el__chain_reeval(w, 1);
             w->near = best == 1;
             st = best == 1 ? EL_ENOCONV : EL_OK;
         }

@@ -283,7 +283,7 @@ int el__spline_solve_near_line(el__spchain *w, int max_steps, double dir, double
             w->lmode = EL__BORDER_LENGTH;
             w->Lt = Lt;
             w->near = 0;
-            el__chain_eval(w, 0);
+            el__chain_reeval(w, 0);
         }
     }
     free(par);

@@ -328,6 +328,26 @@ static double correction_size(const el__spchain *w, double ds)
 }
 
 /*
+ * A known state evaluated again: a snapshot of a solution just loaded, el__chain_newton's
+ * restore of its last accepted iterate. Its pieces' derived data (Kq, energy, dkap0, the
+ * Jacobians) are the last evaluation's, of another state, until it is evaluated: refused
+ * past the call's budget (WORK_BUDGET), the caller returned EL_OK with them stale, read by
+ * make_result's max_curvature, energy and forces and the stability check (revF 4, 5). Made
+ * past the budget, each counted in work->evals: one after each search, whose own next
+ * evaluation the budget refuses, so a call spends a few evaluations past it at most.
+ */
+double el__chain_reeval(el__spchain *w, int jac)
+{
+    el__spwork *k = w->work;
+    if (!k || !el__spwork_spent(k)) return el__chain_eval(w, jac);
+    w->work = NULL;
+    const double merit = el__chain_eval(w, jac);
+    w->work = k;
+    k->evals++;
+    return merit;
+}
+
+/*
  * Newton on the whole chain from the current state until the residual is at
  * most aim (or stalls), at most cap iterations (and the options' max_iter);
  * EL_OK when it ends at most accept.
@@ -413,7 +433,7 @@ int el__chain_newton(el__spchain *w, int cap, double aim, double accept)
             w->sigma = sigma0;
             w->tau = tau0;
             for (size_t j = 0; j < m; j++) memcpy(w->pc[j].v, w->ps[j].v0, sizeof w->pc[j].v);
-            el__chain_eval(w, 1);
+            el__chain_reeval(w, 1);
             break;
         }
         merit = mnew;
@@ -488,9 +508,14 @@ static double chord_angle(const el__spiece *pc, const el__sptargets *t)
  * stop, see EL__SP_NEAR); where they are not, or that fails, the least-energy
  * Hermite elastica with that turning (el_hermite_solve): the branch a batten
  * takes, where the linearisation can lead Newton to a loop.
+ * A start counts as one evaluation of the call's budget (WORK_BUDGET, spline.c) and none is
+ * made once it is spent: its per-piece Newton and Hermite solves ran uncounted after it (the
+ * fuzz's hang 9291f637: 5446 Hermite solves past the budget, 10 % of its time; revF 6).
  */
 int el__chain_start_pieces(el__spchain *w)
 {
+    if (el__spwork_spent(w->work)) return EL_ENOCONV;
+    if (w->work) w->work->evals++;
     for (size_t j = 0; j < w->m; j++) {
         el__spiece *pc = &w->pc[j];
         el__sptargets t;

@@ -358,7 +358,7 @@ int el__spline_refair(el__spchain *w, int max_steps, int st, double target)
         }
     w->near = 0;
     w->sigma = target;
-    if (bad < 2) { el__snap_load(w, &best); el__chain_eval(w, 0); st = EL_OK; }
+    if (bad < 2) { el__snap_load(w, &best); el__chain_reeval(w, 0); st = EL_OK; }
     free(buf);
     return st;
 }

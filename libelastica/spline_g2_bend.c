@@ -124,7 +124,7 @@ int el__spline_bend_ends(el__spchain *w, int max_steps, const double kg[2], int 
     if (sa == EL_OK || w->near) return sa;
     el__snap_load(w, &w->snap[2]);   /* as the first path left it: the sibling's */
     for (int e = 0; e < 2; e++) w->kg[e] = par[e];
-    el__chain_eval(w, 1);
+    el__chain_reeval(w, 1);
     return EL_ENOCONV;
 }
 

@@ -145,7 +145,7 @@ int el__spline_follow_family(el__spchain *w, int max_steps, double Lt, int by_si
             C = B;
             B = T;
             el__snap_load(w, C);
-            el__chain_eval(w, 1);
+            el__chain_reeval(w, 1);
         } else {
             gc = family_gap(w, Lt, by_sigma);
         }
@@ -286,7 +286,7 @@ static void pull_from(el__spchain *w, int max_steps, double aim, double accept, 
     el__snap_save(w, &w->snap[2]);
     if (from_sigma(w, max_steps, sigma0, target, aim, accept, aim, accept) || !(total_length(w) < was)) {
         el__snap_load(w, &w->snap[2]);
-        el__chain_eval(w, 0);
+        el__chain_reeval(w, 0);
     }
 }
 
@@ -550,7 +550,7 @@ int el__spline_tension_neighbours(el__spchain *w, int max_steps, int st, double 
         st = EL_OK;
     } else if (st != EL_ENOMEM) {
         w->sigma = target;
-        if (st == EL_OK || kept) { el__snap_load(w, &first); el__chain_eval(w, 0); st = EL_OK; }
+        if (st == EL_OK || kept) { el__snap_load(w, &first); el__chain_reeval(w, 0); st = EL_OK; }
     }
     free(buf);
     if (st == EL_ENOCONV) st = taut_loops(w, max_steps, target);
@@ -647,7 +647,7 @@ int el__spline_length_from(el__spchain *w, int max_steps, double Lt)
         if (length_newton(w, Lt) == EL_OK) return EL_OK;
         w->lmode = 0;
         el__snap_load(w, free_batten);
-        el__chain_eval(w, 1);   /* the pieces' states, which follow_length's snapshots keep */
+        el__chain_reeval(w, 1);   /* the pieces' states, which follow_length's snapshots keep */
     }
     /* the start kept for a second attempt (below), and the first fallback's solution */
     const size_t n = w->n, m = w->m;
@@ -669,7 +669,7 @@ int el__spline_length_from(el__spchain *w, int max_steps, double Lt)
          * failures */
         el__snap_load(w, &start);
         w->lmode = 0;
-        el__chain_eval(w, 1);
+        el__chain_reeval(w, 1);
         w->leap = 1;
         st = follow_length(w, max_steps, Lt);
         w->leap = 0;
@@ -697,7 +697,7 @@ int el__spline_length_from(el__spchain *w, int max_steps, double Lt)
         el__snap_load(w, &start);
         w->lmode = 0;
         w->near = 0;
-        el__chain_eval(w, 1);
+        el__chain_reeval(w, 1);
         w->arc_len = 1;
         const int sa = follow_length(w, max_steps, Lt);
         w->arc_len = 0;
@@ -710,7 +710,7 @@ int el__spline_length_from(el__spchain *w, int max_steps, double Lt)
             el__snap_load(w, &leapt);
             w->lmode = lm;
             w->Lt = Lt;
-            el__chain_eval(w, 0);
+            el__chain_reeval(w, 0);
             w->near = near;
         } else if (sa == EL_ENOCONV && w->lmode && w->resid <= EL__SP_NEAR) {
             w->near = 1;
@@ -727,7 +727,7 @@ int el__spline_length_from(el__spchain *w, int max_steps, double Lt)
             const int lm0 = w->lmode;
             el__snap_load(w, &start);
             w->lmode = 0;
-            el__chain_eval(w, 1);
+            el__chain_reeval(w, 1);
             w->jump = 1;
             const int sj = follow_length(w, max_steps, Lt);
             w->jump = 0;
@@ -738,7 +738,7 @@ int el__spline_length_from(el__spchain *w, int max_steps, double Lt)
                 el__snap_load(w, &leapt);
                 w->lmode = lm0;
                 w->Lt = Lt;
-                el__chain_eval(w, 0);
+                el__chain_reeval(w, 0);
             }
         }
     }

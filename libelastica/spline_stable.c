@@ -159,7 +159,7 @@ int el__spline_unstable_as(el__spchain *w, int held, size_t *span)
     if (w->closed || w->ng || n < 2) return 0;
     /* H needs the pieces' c0, c1 at the solution: mostly still those of the solver's last
      * step (spline.c's free battens: 200 of 202), evaluated again only where not */
-    if (!el__chain_jac_current(w) && !isfinite(el__chain_eval(w, 1))) return 0;
+    if (!el__chain_jac_current(w) && !isfinite(el__chain_reeval(w, 1))) return 0;
     el__spline_hessian(w);
     double *dg = w->dg, *up = w->up, *z = w->z;
     const size_t i0 = w->slot[0] == EL__SLOT_ANGLE ? 0 : 1;
@@ -325,7 +325,7 @@ int el__spline_stable_family(el__spchain *w, int max_steps, int *found)
         el__snap_load(w, &was);
         w->sigma = target;
         w->iterations = it0;
-        el__chain_eval(w, 1);
+        el__chain_reeval(w, 1);
     }
     free(buf);
     return st;

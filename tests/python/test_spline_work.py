@@ -34,7 +34,10 @@ def test_a_search_the_budget_ended_says_so():
     with pytest.warns(el.LoopWarning):
         sp = el.elastic_spline(ring, tension=0.01 / h ** 2, closed=True, max_iter=30, max_steps=30)
     assert sp.stopped is True and sp.loops
-    assert sp.work == 900 * 16 + 900 * 64 // 12   # no evaluation past it
+    # no search past it; a known state's re-evaluation is let through (el__chain_reeval:
+    # the pieces' figures are then those of the spline returned), a few at most (2 here)
+    budget = 900 * 16 + 900 * 64 // 12
+    assert budget <= sp.work <= budget + 8
 
 
 def test_an_error_the_budget_caused_says_so():
