@@ -520,7 +520,12 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
     ``tol``: the accepted end-condition residual (1e-14..1e-3, default 1e-10; see
     ``ElasticSpline.residual``). ``max_iter``: Newton iterations per solve (1..1000,
     default 60); ``max_steps``: continuation steps of each family followed (1..1000,
-    default 60): raise them where a solve stops short (NotConvergedError).
+    default 60): raise them where a solve stops short (NotConvergedError). The call's
+    work is bounded (``ElasticSpline.work`` / ``stopped``): an error raised from a solve
+    (:class:`NotConvergedError`, :class:`LengthRangeError`, the tension-0
+    :class:`DomainError`) has ``stopped`` (True: the budget ended the call before it could
+    say more, so raise max_iter or max_steps rather than change the points, tension, length
+    or ends) and ``work`` (its chain evaluations), so callers need not read the message.
     (el_spline_options, elastica.h.)
 
     Raises ``ValueError`` for bad input (coincident consecutive points, NaN, ``start`` /
@@ -691,10 +696,12 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
             where = (f" (the one through them is an unstable equilibrium, no minimum: it slides "
                      f"off at the span from point {res.slide_span} to {res.slide_span + 1}, "
                      "counted from 0)") if res.slides else ""
-            raise DomainError(st, "elastic_spline: no free-sliding batten (tension 0) passes "
+            err = DomainError(st, "elastic_spline: no free-sliding batten (tension 0) passes "
                                   "these points: it slides off its ducks" + where + hint +
                                   ("; else" if hint else ";") + " give a tension > 0 or a length"
                                   + SMALL_TENSION_TEXT)
+            err.stopped, err.work = bool(res.stopped), int(res.work)
+            raise err
         if st == lib.EL_ERANGE:
             lo, hi, fair = (float(res.reach[i]) for i in range(3))
             within = lo <= L <= hi
@@ -728,6 +735,7 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
                 "their family" + hint))
             err.shortest, err.longest, err.longest_fair, err.polygon = lo, hi, fair, polygon
             err.spline = None
+            err.stopped, err.work = bool(res.stopped), int(res.work)
             raise err
         if st == lib.EL_ENOCONV:
             why, largest = "", None
@@ -768,6 +776,7 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
             err.spline = ElasticSpline(res, pts, closed) if res.npieces else None
             err.largest_tension = largest
             err.g2_met = met
+            err.stopped, err.work = bool(res.stopped), int(res.work)
             raise err
         if st == lib.EL_EINVAL:
             why = _out_of_range(pts, chords)

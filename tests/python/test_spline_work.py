@@ -48,3 +48,15 @@ def test_an_error_the_budget_caused_says_so():
     with pytest.raises((el.NotConvergedError, el.LengthRangeError)) as info:
         el.elastic_spline(pts, length=22.0, max_iter=3, max_steps=3)
     assert "work budget" in str(info.value) and "max_iter" in str(info.value)
+    # and says so as an attribute (FreeCAD's feature reads it rather than the message)
+    assert info.value.stopped is True and info.value.work > 0
+
+
+def test_an_error_the_budget_did_not_cause_says_not_stopped():
+    # test_spline.py's G2 blend between two edges at a tension no G2 blend has: its search
+    # ends within the budget, stopped False (the cause is the tension, not the budget)
+    p = np.array([[20.0, 20.0], [90.0, 60.0]])
+    with pytest.raises(el.NotConvergedError) as info:
+        el.elastic_spline(p, tension=0.01, start={"tangent": (0, 1), "curvature": 0.05},
+                          end={"tangent": (1, 0), "curvature": 0.0})
+    assert info.value.stopped is False and 0 < info.value.work < 3600 * (16 + 64)
