@@ -33,6 +33,7 @@ MODES = ["tension", "length"]
 END_CONDITIONS = ["natural", "tangent", "G2"]
 BSPLINE_DEGREE = 5          # one B-spline of few poles at the preference tolerance
 ACCEPTED_RESIDUAL = 1e-6    # a spline the solver resolves only to this is still shown (noted)
+MAX_ITER = 60               # Newton iterations per solve: the library's default (el_spline_options)
 DUCKS_NEED = ("points: sketch points or vertices, a sketch of points, a Points object, or a "
               "Draft wire / polyline")
 
@@ -167,12 +168,15 @@ def _tangent_only(spec):
     return spec["tangent"] if isinstance(spec, dict) else spec
 
 
-def _solve(xy, mode, value, closed, start, end):
+def _solve(xy, mode, value, closed, start, end, max_iter=MAX_ITER):
     """el.elastic_spline with the accepted-residual rule; NoSpline when no batten passes the
     points at this tension or length, InputProblem for the rest.
     When a spline with G2 ends fails by tension, the message names the G2 battens the
     library met nearest it (g2_met_hint); where it met none, the same with tangent ends is
-    tried: if that one exists, the message blames the G2 end (its span found no tension)."""
+    tried: if that one exists, the message blames the G2 end (its span found no tension).
+    Not where the call's work budget ended it (the error's stopped): each of those is a new
+    call with a budget of its own (the fuzz's 7 ducks at tension 49.5 with a G2 start: three
+    of ~1.3 s each, then the G2 end blamed): the message says to raise MaxIter instead."""
     e = el()
     kw = {"tension": value} if mode == "tension" else {"length": value}
     largest = met = None
@@ -181,7 +185,7 @@ def _solve(xy, mode, value, closed, start, end):
         with warnings.catch_warnings():   # a looping or unstable spline: noted by spline_core
             warnings.simplefilter("ignore", e.LoopWarning)
             warnings.simplefilter("ignore", e.UnstableWarning)
-            return e.elastic_spline(xy, start=start, end=end, closed=closed, **by)
+            return e.elastic_spline(xy, start=start, end=end, closed=closed, max_iter=max_iter, **by)
 
     try:
         return solve(**kw), ""
@@ -190,6 +194,11 @@ def _solve(xy, mode, value, closed, start, end):
         if sp is not None and sp.residual <= ACCEPTED_RESIDUAL:
             return sp, (f"resolved to {sp.residual:.1g} only (a piece close to a circular arc, "
                         "or a very high tension)")
+        if exc.stopped:   # the budget, not the points, tension or ends: no further solve
+            raise NoSpline(f"no equilibrium found: the solver stopped at its work budget "
+                           f"({exc.work} evaluations at MaxIter = {max_iter}) before it could "
+                           f"tell whether one exists at this {mode}: raise MaxIter (the budget "
+                           "grows with it), or try another tension or length") from None
         failure = "no equilibrium found: the solver did not converge; try another tension or length"
         largest = getattr(exc, "largest_tension", None)
         met = None if largest else g2_met_hint(getattr(exc, "g2_met", None),
@@ -209,7 +218,8 @@ def _solve(xy, mode, value, closed, start, end):
             failure = _library_message(exc)
         elif mode == "length":
             try:   # the free batten's length, for scale
-                free = e.elastic_spline(xy, start=start, end=end, closed=closed).length
+                free = e.elastic_spline(xy, start=start, end=end, closed=closed,
+                                        max_iter=max_iter).length
                 failure = (f"no equilibrium found at Length = {value:g} mm: the solver did not "
                            f"converge; the free batten through these points is {free:.6g} mm "
                            "long: try a length nearer it")
@@ -226,7 +236,7 @@ def _solve(xy, mode, value, closed, start, end):
     if any(isinstance(s, dict) for s in (start, end)) and not largest and not met:
         try:
             e.elastic_spline(xy, start=_tangent_only(start), end=_tangent_only(end),
-                             closed=closed, **kw)
+                             closed=closed, max_iter=max_iter, **kw)
             failure = ("no equilibrium with this G2 end: the batten with a tangent end exists, "
                        "but bending its end to the edge's curvature with a guide duck did not "
                        "converge (a curl too tight for the span next to it" + (
@@ -245,7 +255,8 @@ def ends_at_start(points):
 
 
 def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, closed=False,
-                start=None, end=None, tol=1e-3, degree=BSPLINE_DEGREE, advise=True, shown=None):
+                start=None, end=None, tol=1e-3, degree=BSPLINE_DEGREE, advise=True, shown=None,
+                max_iter=MAX_ITER):
     """The elastic spline through 3D ``points`` (in ``plane``, a sketch's placement,
     when they lie in it, else their best plane). ``start`` / ``end``: None (natural)
     or (condition 'tangent' / 'G2', Part edge[, at_end: which end, end_condition]).
@@ -257,7 +268,8 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
     the ladder's solves), for starting_tension's rungs, which say them once chosen.
     ``shown``: (Curves JSON, length, tension, switched, kept) of the spline on screen, kept
     by tension mode where it passes these points at this tension (kept_shown); 'kept' in the
-    result: the spline is a kept one, not the library's own (KeptShown). Raises
+    result: the spline is a kept one, not the library's own (KeptShown). ``max_iter``: the
+    solver's Newton iterations per solve (MaxIter; its work budget grows with it). Raises
     InputProblem with a user message."""
     n = np()
     if mode not in MODES:
@@ -331,14 +343,14 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
         polygon = float(n.sum(n.hypot(*n.diff(n.vstack([xy, xy[:1]]) if closed else xy,
                                                axis=0).T)))
         if value == 0.0:
-            free, _ = _solve(xy, "tension", 0.0, closed, *specs)
+            free, _ = _solve(xy, "tension", 0.0, closed, *specs, max_iter=max_iter)
             value = free.length
         elif value <= polygon:
             raise InputProblem(f"Length = {value:.6g} mm is not longer than the polygon through "
                                f"the points ({polygon:.6g} mm): any length above it is possible")
     returns = returns and not closed      # an open batten through the first point twice
     try:
-        sp, note = _solve(xy, mode, value, closed, *specs)
+        sp, note = _solve(xy, mode, value, closed, *specs, max_iter=max_iter)
     except NoSpline as exc:
         if returns:
             raise type(exc)(f"the points end where they start (a closed wire) but Closed is off, "
@@ -624,6 +636,10 @@ class SplineProxy(FeatureProxy):
         add_property(obj, "App::PropertyInteger", "Degree", "BSpline",
                      "Degree of the B-spline (3 to 7): one B-spline, G2 at the points",
                      BSPLINE_DEGREE)
+        add_property(obj, "App::PropertyInteger", "MaxIter", "Spline",
+                     "Newton iterations per solve of the elastic spline (1 to 1000): the "
+                     "solver's work budget grows with it; raise it where the status says the "
+                     "solver stopped at its work budget", MAX_ITER)
         for name, tip in (
                 ("SplineLength", "Length of the spline (mm)"),
                 ("SplineTension", "Tension sigma of the spline (1/mm^2): the given one, or the "
@@ -702,7 +718,7 @@ class SplineProxy(FeatureProxy):
                      obj.KeptShown) if obj.Ducks else None
             r = self.handed(spline_core, pts, plane, obj.Mode, obj.Tension, float(obj.Length),
                             obj.Closed, *self.end_specs(obj), tol=float(obj.Tolerance),
-                            degree=obj.Degree, shown=shown)
+                            degree=obj.Degree, shown=shown, max_iter=obj.MaxIter)
         except InputProblem as exc:
             if followed:
                 raise type(exc)(f"{followed}: {exc}") from None
