@@ -62,6 +62,7 @@ def assert_distances_measured(r, scale, rel=1e-9):
 KS = [1e-3, 0.2, 0.6, 0.9, 0.99, 1.02, 1.5, 4.0, 12.0, 30.0]
 
 
+@pytest.mark.c_numerics
 @pytest.mark.parametrize("k", KS)
 def test_discrete_exact_recovery(k):
     rng = np.random.default_rng(int(k * 1000))
@@ -77,6 +78,7 @@ def test_discrete_exact_recovery(k):
         np.testing.assert_allclose(r.foot_s, r.curve.h * np.arange(n), atol=1e-8 * L)
 
 
+@pytest.mark.c_numerics
 @pytest.mark.parametrize("k", KS)
 def test_smooth_exact_recovery_orthogonal_and_paired(k):
     rng = np.random.default_rng(int(k * 1000) + 1)
@@ -133,6 +135,7 @@ def test_discrete_clockwise_loop():
     assert r.curve.k == pytest.approx(3.0, rel=1e-6) and r.curve.z < 0
 
 
+@pytest.mark.c_numerics
 @pytest.mark.parametrize("seed", [0, 1, 2])
 def test_uneven_sampling_with_gaps(seed):
     """Spacing 1:6 along the curve, two gaps, noise 0.15: the orthogonal fit reaches
@@ -373,6 +376,7 @@ def test_noisy_straight_runs_converge():
     assert left["discrete"] <= 1 and left["smooth"] == 0, left
 
 
+@pytest.mark.c_numerics
 @pytest.mark.parametrize("model", ["discrete", "smooth"])
 @pytest.mark.parametrize("noise", [0.0, 1e-3, 1e-2])
 def test_noise_levels(model, noise):
@@ -415,6 +419,7 @@ def test_orthogonal_ends_at_the_feet_of_first_and_last_points():
     assert r.foot_s[0] == pytest.approx(0.0, abs=1e-9) and r.foot_s[-1] == pytest.approx(c.length)
 
 
+@pytest.mark.c_numerics
 @pytest.mark.parametrize("seed", [0, 1, 2, 3])
 def test_points_sketched_along_an_s(seed):
     """10-20 uneven points placed by hand along an S (issue 13: the paired fit
@@ -486,6 +491,7 @@ SKETCH_CURVES = {
 }
 
 
+@pytest.mark.c_numerics
 def test_few_sketched_points_are_followed():
     """40 sketches of 5-9 points at random places along simple curves, 0.5 % noise (bug4.py's
     generator, seed 0: 5 fits looped or ran > 2 x their polygon before): none loops or strays."""
@@ -608,6 +614,7 @@ def _held_exactly(con, model):
     return held("start") or held("end")
 
 
+@pytest.mark.c_numerics
 @pytest.mark.parametrize("model", ["smooth", "discrete"])
 def test_every_constraint_honoured_to_1e_9(model):
     """Every constraint, alone and combined, is met to 1e-9 (of the data's size; rad)
@@ -853,6 +860,7 @@ def _off_truth(kf, kl):
     return float(np.sqrt(np.mean(np.concatenate(out) ** 2)))
 
 
+@pytest.mark.c_numerics
 @pytest.mark.parametrize("model", ["discrete", "smooth"])
 @pytest.mark.parametrize("seed", [0, 1, 2])
 def test_keyline_one_g2_curve(model, seed):
@@ -1127,6 +1135,7 @@ def test_bad_input(model):
     assert el.fit(loop, model="discrete").rms < 1e-3
 
 
+@pytest.mark.c_numerics
 @pytest.mark.parametrize("seed", [0, 5, 8, 17, 24, 34, 38])
 def test_orthogonal_fit_of_loops_no_worse_than_paired(seed):
     """Loops (k 5-30, three pieces, 100 points, 1 % noise): the orthogonal fit starts
@@ -1240,6 +1249,7 @@ def test_smooth_exact_on_uneven_and_sketched_points(seed):
                 assert r.rms <= 1e-9 * size, (n, spacing, cons, r.rms / size)
 
 
+@pytest.mark.c_numerics
 @pytest.mark.parametrize("seed", [2, 6, 11])
 def test_smooth_noisy_uneven_reaches_the_optimum_from_the_true_curve(seed):
     """The same with noise of 1e-3 of the length: the default fit ends no higher than the
@@ -1362,6 +1372,7 @@ def test_initial_reversed_runs_as_the_points():
     assert b.status == 0 and b.rms < 1.01 * fwd.rms
 
 
+@pytest.mark.c_numerics
 @pytest.mark.parametrize("cons", ["tangents", "points", "point_tangent"])
 def test_sketch_constrained_follows_points(cons):
     # QA: a ship section of 5 offsets (mm, polyline 5676), whose free fit is exact along

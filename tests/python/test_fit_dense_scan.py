@@ -6,6 +6,7 @@ refit by distance started from its curve ran Ipopt through curves far from the p
 did not converge is now no start: the refit by distance starts afresh, as
 distance="orthogonal" does (libelastica/fit_restart.c, el__fit_unpaired)."""
 import numpy as np
+import pytest
 
 import libelastica as el
 
@@ -82,6 +83,7 @@ def _linear_scan(n, ratio, noise, seed):
     return P + OFFSET
 
 
+@pytest.mark.c_numerics
 def test_large_linear_density_scan_is_not_kept_paired_far_from_its_points():
     # main: 30 000 points, density 1:50, noise 0.05: the paired fit converged at rms 10.0
     # (200 x the noise), its slip judged against that rms, and was kept; now refitted by

@@ -11,6 +11,7 @@ import os
 import warnings
 
 import numpy as np
+import pytest
 
 import libelastica as el
 from fit_data import curve_distances
@@ -51,6 +52,7 @@ def test_hand_stroke_smooth_fit_runs_nowhere_without_points():
     assert r.rms < 1.05
 
 
+@pytest.mark.c_numerics
 def test_glitchy_arc_fit_at_the_iteration_limit_ends_at_its_feet():
     """QA21 F2 (ell3000.csv: an ellipse arc 40 x 25 over 2.2 rad, 78.3 long, 3000 uneven
     points, noise 0.035, 15 glitches): the smooth fit stops at the iteration limit (status 6)
