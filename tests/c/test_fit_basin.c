@@ -10,6 +10,8 @@
 #include "fit_internal.h"
 #include "fit_wander.h"
 #include <math.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_min.h>
 
 /* 20 points of a loop (k = 1.128) at random arc lengths, noise 0.1 % of the length per
  * coordinate (lbfgs_repro.py, seed 1, trial 27) */
@@ -192,22 +194,86 @@ static void g1_fit_from(const double *xy, size_t n, const el_smooth_params *t, i
     ck_assert_int_eq(r->status, EL_OK);
 }
 
-/* the rms of the points from a curve, by its dense samples */
+/* A point's squared distance to the curve at arc length s (for GSL's minimiser). */
+struct foot_problem { const el_smooth_params *t; double x, y; };
+
+static double squared_distance_at(double s, void *v)
+{
+    const struct foot_problem *f = v;
+    double p[2];
+    ck_assert_int_eq(el_smooth_eval(f->t, 1, &s, p, NULL, NULL), EL_OK);
+    return (p[0] - f->x) * (p[0] - f->x) + (p[1] - f->y) * (p[1] - f->y);
+}
+
+/* The least squared distance on [a, b] bracketed by m (f(m) below both ends), by GSL's
+ * golden section to 1e-12 of the curve's length. */
+static double refined_minimum(struct foot_problem *f, double a, double m, double b, double fm)
+{
+    gsl_function fn = {squared_distance_at, f};
+    gsl_min_fminimizer *g = gsl_min_fminimizer_alloc(gsl_min_fminimizer_goldensection);
+    ck_assert(g);
+    ck_assert_int_eq(gsl_min_fminimizer_set_with_values(g, &fn, m, fm, a, squared_distance_at(a, f),
+                                                        b, squared_distance_at(b, f)), GSL_SUCCESS);
+    /* GSL_FAILURE: a trial point no lower nor higher than the minimum (equal at rounding) */
+    for (int it = 0; it < 200 && gsl_min_fminimizer_x_upper(g) - gsl_min_fminimizer_x_lower(g) >
+                                    1e-12 * f->t->length; it++)
+        if (gsl_min_fminimizer_iterate(g) != GSL_SUCCESS) break;
+    const double best = gsl_min_fminimizer_f_minimum(g);
+    gsl_min_fminimizer_free(g);
+    return best;
+}
+
+/* The least squared distance on an end's interval [a, b], which need not bracket a
+ * minimum: 9 samples, the nearest refined where it lies inside. */
+static double end_minimum(struct foot_problem *f, double a, double b)
+{
+    double x[9], v[9];
+    int j0 = 0;
+    for (int j = 0; j < 9; j++) {
+        x[j] = a + (b - a) * j / 8.0;
+        v[j] = squared_distance_at(x[j], f);
+        if (v[j] < v[j0]) j0 = j;
+    }
+    return j0 == 0 || j0 == 8 ? v[j0] : refined_minimum(f, x[j0 - 1], x[j0], x[j0 + 1], v[j0]);
+}
+
+/* The rms of the points from a curve, measured apart from the fit's feet: each point's
+ * nearest of M samples of the curve (spacing h), then every interval [s_k-1, s_k+1] whose
+ * sample lies within h of that nearest one refined (a point of the curve within h/2 of arc
+ * from a sample is nearer than it by at most h/2: no interval left out holds a nearer
+ * point): by golden section where the sample is below its neighbours, and the end
+ * intervals by end_minimum. It replaced the nearest of 200 001 samples a point (~77 CPU-s
+ * of make check's ASan pass). */
 static double rms_from_curve(const double *xy, size_t n, const el_smooth_params *t)
 {
-    enum { M = 200001 };
-    double *sk = malloc(sizeof(double) * M), *p = malloc(sizeof(double) * 2 * M);
-    ck_assert(sk && p);
+    enum { M = 4001 };
+    const double h = t->length / (M - 1.0);
+    double *sk = malloc(sizeof(double) * M), *p = malloc(sizeof(double) * 2 * M), *d2 = malloc(sizeof(double) * M);
+    ck_assert(sk && p && d2);
     for (int k = 0; k < M; k++) sk[k] = t->length * k / (M - 1.0);
     ck_assert_int_eq(el_smooth_eval(t, M, sk, p, NULL, NULL), EL_OK);
+    gsl_error_handler_t *old = gsl_set_error_handler_off();
     double sq = 0.0;
     for (size_t i = 0; i < n; i++) {
-        double best = HUGE_VAL;
-        for (int k = 0; k < M; k++) best = fmin(best, hypot(p[2 * k] - xy[2 * i], p[2 * k + 1] - xy[2 * i + 1]));
-        sq += best * best;
+        struct foot_problem f = {t, xy[2 * i], xy[2 * i + 1]};
+        double nearest = HUGE_VAL;
+        for (int k = 0; k < M; k++) {
+            d2[k] = (p[2 * k] - f.x) * (p[2 * k] - f.x) + (p[2 * k + 1] - f.y) * (p[2 * k + 1] - f.y);
+            nearest = fmin(nearest, d2[k]);
+        }
+        const double reach = sqrt(nearest) + h;
+        double best = nearest;
+        for (int k = 1; k < M - 1; k++)
+            if (d2[k] <= reach * reach && d2[k] < d2[k - 1] && d2[k] < d2[k + 1])
+                best = fmin(best, refined_minimum(&f, sk[k - 1], sk[k], sk[k + 1], d2[k]));
+        if (d2[0] <= reach * reach) best = fmin(best, end_minimum(&f, sk[0], sk[1]));
+        if (d2[M - 1] <= reach * reach) best = fmin(best, end_minimum(&f, sk[M - 2], sk[M - 1]));
+        sq += best;
     }
+    gsl_set_error_handler(old);
     free(sk);
     free(p);
+    free(d2);
     return sqrt(sq / (double)n);
 }
 
