@@ -10,7 +10,7 @@ from typing import Any, Dict, List, Optional, Tuple
 
 import numpy as np
 
-from ._ffi import NotConvergedError
+from ._ffi import ElasticaError, NotConvergedError
 from ._text import curve_values
 from .cli_common import (ANGLE_UNITS, EXIT_BADINPUT, EXIT_INTERNAL, EXIT_NOCONV, EXIT_OK, PROG,
                          _converged, _finite, _float_list, _fmt, _mapped_bspline, _plane_record,
@@ -93,6 +93,39 @@ def _side_record(res, data: np.ndarray, model: str, free=None) -> Dict[str, Any]
         if free is not None:
             rec["free_distances"] = [float(v) for v in free]
     return rec
+
+
+def uncertainty_record(res) -> Dict[str, Any]:
+    """"uncertainty" of the JSON: the fit's standard errors (FitResult.uncertainty): "stderr"
+    {name: se} of the curve's parameters and the derived quantities (null where the points do
+    not determine it: inf), "values" {name: value} of the derived ones, "residual_sd" sqrt(s^2),
+    "dof", "undetermined" (se >= |value|) and "note"; {} where it cannot be computed."""
+    try:
+        u = res.uncertainty()
+    except (ValueError, ArithmeticError, ElasticaError):
+        return {}
+
+    def num(v):
+        return float(v) if np.isfinite(v) else None
+    return {"uncertainty": {"stderr": {k: num(v) for k, v in u.as_dict().items()},
+                            "values": {k: float(v) for k, (v, _) in u.derived.items()},
+                            "residual_sd": num(np.sqrt(u.s2)), "dof": u.dof,
+                            "undetermined": list(u.undetermined()), "note": u.note}}
+
+
+def _print_uncertainty(rec: Dict[str, Any]) -> None:
+    """The report's standard errors: value +- se of what a scientist reads (uncertainty_record)."""
+    u = rec.get("uncertainty")
+    if not u:
+        return
+    vals = dict(rec["curve"], **u["values"])
+    shown = [k for k in ("mu", "k", "z", "h", "length", "energy", "force_x", "force_y",
+                         "start_curvature", "end_curvature") if k in u["stderr"] and k in vals]
+    print("std errors  " + ", ".join(f"{k}={_fmt(vals[k])} +- " + ("inf" if u["stderr"][k] is None
+                                     else f"{u['stderr'][k]:.2g}") for k in shown))
+    if u["undetermined"]:
+        print(f"            undetermined (se >= |value|): {', '.join(u['undetermined'])}"
+              + (f"; {u['note']}" if u["note"] else ""))
 
 
 def constraints_record(con) -> Dict[str, Any]:
@@ -465,6 +498,7 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
                         quiet_fit(data, **_fit_kwargs(args, fixed))).distances
             records.append(_side_record(res, data, args.model, free))
             records[-1].update(_misfit(path, res.misfit, pts, order is None))
+            records[-1].update(uncertainty_record(res))
             lf = res.free
             _end_conditions(records[-1], res.rms, lf.rms if lf is not None else None, data,
                             constraints, fixed,
@@ -593,6 +627,7 @@ def _print_fit(rec: Dict[str, Any]) -> None:
         print(f"rms         {_fmt(rec['rms'])}" + (f"   ({how})" if how else ""))
         print(f"max error   {_fmt(rec['max_error'])}")
         print(f"iterations  {rec['iterations']}")
+        _print_uncertainty(rec)
     if rec.get("bspline"):
         _print_bspline(rec["bspline"])
         if "fitted_points" not in rec:     # --step: the rms above is already the cubic's

@@ -37,6 +37,7 @@ from .fit_input import explain_input_status
 from .misfit import (MISFIT_RATIO, MisfitWarning, OutlierWarning, _Figures, _places, _verdict,
                      _warn_outliers, misfit_summary)
 from .fit_retrace import retrace_gate
+from .fit_uncertainty import Uncertain
 from .order import (Retrace, curve_order, data_run_back, order_summary, ordering, passed_over,
                     retrace_summary, run_back, turn_back)
 
@@ -66,7 +67,7 @@ class ConstraintError(DomainError):
 
 
 @dataclass(frozen=True, eq=False, unsafe_hash=True)   # (hash: as before)
-class FitResult(ValueEquality):
+class FitResult(ValueEquality, Uncertain):
     """Result of :func:`fit`.
 
     ``curve``: the fitted elastica (a DiscreteElastica with ``n`` = the number of
@@ -100,7 +101,8 @@ class FitResult(ValueEquality):
     :func:`fit` checked it (``check_sparse``), a discrete fit of fewer than SPARSE_POINTS
     points far farther from them than the smooth model's fit: that fit's rms, else None;
     ``retrace``: where :func:`fit` warned of points that run back along the curve (an
-    OrderWarning), the :class:`libelastica.order.Retrace` it named, else None.
+    OrderWarning), the :class:`libelastica.order.Retrace` it named, else None; ``fixed``: :func:`fit`'s
+    ``fixed``; :meth:`uncertainty`, ``covariance``, ``stderr``: fit_uncertainty.py.
     """
     curve: Curve
     initial: Curve
@@ -124,6 +126,7 @@ class FitResult(ValueEquality):
     misfit: Optional[object] = None
     sparse: Optional[float] = None
     retrace: Optional[Retrace] = None
+    fixed: Optional[Mapping[str, float]] = None
 
     @property
     def converged(self) -> bool:
@@ -440,8 +443,7 @@ def _make_curve(model: str, p, n: int, ptr=None) -> Curve:
     by the model's C check on p itself (ptr: p's address, when the caller has it), as the
     constructor checks the struct it builds from the same floats; the constructor's
     conversions and second struct are left out (measured: a third of el.fit's Python time
-    after a 1000-point fit). test_fit_result_curves_are_constructed_ones compares with the
-    constructor."""
+    after a 1000-point fit; test_fit_result_curves_are_constructed_ones compares)."""
     discrete = model == "discrete"
     cls, names = (DiscreteElastica, DISCRETE_PARAMS) if discrete else (SmoothElastica, SMOOTH_PARAMS)
     check((lib.el_discrete_check if discrete else lib.el_smooth_check)(
@@ -453,8 +455,7 @@ def _make_curve(model: str, p, n: int, ptr=None) -> Curve:
     return curve
 
 
-# The addresses of a fit result's params and initial: a cast of its pointer, where
-# ffi.addressof (Python in cffi) cost 5 % of el.fit's Python time
+# a fit result's params' and initial's addresses: a pointer cast (ffi.addressof: 5 % of el.fit's Python time)
 _PARAMS = {m: (ffi.typeof(f"el_{m}_params *"),
                ffi.offsetof(f"el_fit_{m}_result", "params"), ffi.offsetof(f"el_fit_{m}_result", "initial"))
            for m in ("discrete", "smooth")}
@@ -463,7 +464,7 @@ _BYTES = ffi.typeof("char *")
 
 def _result(model: str, res, st: int, pts: np.ndarray, dist: np.ndarray, foot: np.ndarray,
             s: Optional[np.ndarray] = None, constraints=None, order=None,
-            retrace: Optional[Retrace] = None) -> FitResult:
+            retrace: Optional[Retrace] = None, fixed=None) -> FitResult:
     n = len(pts)
     ptr, a, b = _PARAMS[model]
     base = ffi.cast(_BYTES, res)
@@ -474,9 +475,9 @@ def _result(model: str, res, st: int, pts: np.ndarray, dist: np.ndarray, foot: n
                        ipopt_status=int(res.ipopt_status), candidates=int(res.candidates), s=s,
                        param_mode=_MODE_NAMES.get(int(res.param_mode)) if model == "smooth" else None,
                        distances=dist, foot_s=foot, distance=_DISTANCE_NAMES[int(res.distance)],
-                       used_ipopt=bool(res.used_ipopt), points=pts,
+                       used_ipopt=bool(res.used_ipopt), points=pts, order=order, retrace=retrace,
                        constraints=dict(constraints) if constraints else None,
-                       wander_gap=int(res.wander_gap), order=order, retrace=retrace)
+                       wander_gap=int(res.wander_gap), fixed=dict(fixed) if fixed else None)
 
 
 _RESULT_FIELDS = tuple(f.name for f in dataclasses.fields(FitResult))
@@ -485,9 +486,8 @@ _RESULT_DEFAULTS = {f.name: f.default for f in dataclasses.fields(FitResult)
 
 
 def _fit_result(**given) -> FitResult:
-    """FitResult(**given) without the frozen dataclass's __init__ (an object.__setattr__ a
-    field: a sixth of el.fit's Python time): every field set in its order, the defaults
-    where not given; the same object (test_fit.py test_fit_result_is_a_constructed_one)."""
+    """FitResult(**given) without the frozen dataclass's __init__ (an object.__setattr__ a field:
+    a sixth of el.fit's Python time), defaults where not given (test_fit_result_is_a_constructed_one)."""
     r = object.__new__(FitResult)
     r.__dict__.update({k: given[k] if k in given else _RESULT_DEFAULTS[k] for k in _RESULT_FIELDS})
     return r
@@ -704,7 +704,7 @@ def _fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] =
             warnings.warn(f"fit: {wander_summary(res.wander_gap)}: add a point between them to hold it "
                           "there, or bound the curve's length (constraints={'length': (lo, hi)})",
                           WanderWarning, stacklevel=3)
-    r = _result(model, res, st, pts.copy(), dist, foot, s, constraints, idx, back)
+    r = _result(model, res, st, pts.copy(), dist, foot, s, constraints, idx, back, fixed)
     if flip:     # the same curve run from the end of point 0 (curve order ran from the other)
         r = _fit_result(**dict(r.__dict__, curve=r.curve.reversed(), initial=r.initial.reversed()))
     if check_ends and (constraints or fixed):

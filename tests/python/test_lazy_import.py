@@ -13,7 +13,7 @@ import libelastica as el
 LAZY = ("keyline", "resampled", "blend", "spline", "affine", "g2quad")
 # every public name of `import libelastica` before (121, and SparseWarning, spline's UnstableWarning, g2quad's CoverageError,
 # covering_edges, EndTangentWarning, affine's EdgeCountError, spline's holding_tension, misfit's OutlierWarning,
-# fit_outliers and outliers_summary, affine's EndPieces and affine_end_pieces, misfit's split_hint since: classes, functions, constants, the submodules it gave as attributes)
+# fit_outliers and outliers_summary, affine's EndPieces and affine_end_pieces, misfit's split_hint, fit_uncertainty since: classes, functions, constants, the submodules it gave as attributes)
 PUBLIC = sorted("""AffinePolyline AngleUnitWarning BSpline BlendCurve BlendLoopWarning COST_FLOOR COST_RATIO
 ConditionWarning ConstraintError ConvergenceWarning CoverageError CoverageWarning DiscreteElastica DomainError
 DoublesBackError END_POINTS END_SPAN EdgeCountError ElasticSpline ElasticaError EllipticBlend EndConditionWarning
@@ -26,7 +26,7 @@ affine_coords affine_curvature affine_curvature_exact affine_elements affine_end
 affine_length affine_polyline blend blend_curve bspline chaikin core cost_summary costly cubic
 covering_edges cubic_distances cubic_through curve_order eck_d eck_omega elastic_spline elastica_affine_curvature
 elastica_inflections end_condition_cost end_costs far_points far_points_summary find_inflection
-fit fit_cost fit_input fit_outliers fit_keyline fit_resampled fit_retrace g2_bspline g2_quadratic g2quad held_ends hermite
+fit fit_cost fit_input fit_outliers fit_keyline fit_resampled fit_retrace fit_uncertainty g2_bspline g2_quadratic g2quad held_ends hermite
 holding_tension hermite_analyse interpolate_c2 io keyline keyline_bspline keyline_runs keyline_step
 lane_riesenfeld local_cost_summary misfit misfit_summary noise_level order osculating_conics
 out_of_order outliers_summary parabolic_lengths pca_normalize plane_fit prep prepare_keyline quadratic_bspline
@@ -47,7 +47,7 @@ def test_help_does_not_load_what_it_does_not_use():
 
 
 def test_public_api_unchanged():
-    assert len(PUBLIC) == 138       # in a fresh process: a submodule imported adds its name
+    assert len(PUBLIC) == 139       # in a fresh process: a submodule imported adds its name
     assert _run("import libelastica as el\n"
                 "print(' '.join(sorted(n for n in dir(el) if not n.startswith('_'))))").split() == PUBLIC
     names = _run("from libelastica import *\n"
