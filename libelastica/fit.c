@@ -680,7 +680,7 @@ static int public_fit(int model, const double *xy, size_t n, const el_fit_option
     memset(fo, 0, sizeof *fo);
     fo->status = -1;
     int st = el__fit_run_framed(model, xy, n, opt, 0, init, fo, distances, foot_s);
-    if (model == FIT_SMOOTH && fo->status != -1) st = el__fit_free_ends(xy, n, opt, st, fo, distances, foot_s);
+    if (fo->status != -1) st = el__fit_free_ends(model, xy, n, opt, st, fo, distances, foot_s);
     if (model == FIT_SMOOTH && fo->status != -1 && st != EL_ENOMEM) el__fit_trim_to_feet(opt, st, fo, foot_s, n);
     *gap = fo->status != -1 && foot_s ? wander_gap(model, xy, n, opt, fo, foot_s) : -1;
     free(buf);

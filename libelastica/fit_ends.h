@@ -1,7 +1,8 @@
 /*
- * A smooth fit whose feet pile up at an end (a scan dense there) fitted again tied to the
- * points farthest along it, between its two files (not installed): fit_ends.c (the plain
- * smooth fit), fit_keyline_ends.c (the smooth keyline, which follows it).
+ * A fit whose feet pile up at an end (a scan dense there, a pen's retrace) fitted again tied
+ * to the points farthest along it, between its files (not installed): fit_ends.c (the plain
+ * smooth and discrete fits by distance), fit_keyline_ends.c (the smooth keyline, which follows
+ * it); fit_pairing.c takes FIT_RETRACE_PAST from here (a paired polygon past a retraced end).
  */
 #ifndef EL_FIT_ENDS_H
 #define EL_FIT_ENDS_H
@@ -14,11 +15,17 @@
  * refits cost 5 x a fit and took 22 MiB more at 10^6 points for a lower rms by < 1e-3 of
  * it; QA's scans dense at one end pile 8..56 of 200) */
 enum { PILE_LEAST = 3, PILE_SHARE = 50 };
-/* or PILE_LEAST of them, the farthest beyond its end by this many of the points' noise levels
- * (el__fit_noise_rms x sc: the rms per point, sqrt 2 x the noise across the curve) and
- * PILE_LEAST beyond half as far (fit_ends.c piles_up: a retraced end; noise alone puts a dense
- * end's points a few levels beyond it) */
-static const double PILE_PAST = 8.0;
+/* A retraced end: points beyond a fit's end by more than FIT_RETRACE_PAST of the points' noise
+ * levels (el__fit_noise_rms x sc, input units: the rms per point of x and y together, sqrt 2 x
+ * the noise across the curve, so 8 levels are ~11 sigma; QA24's 0.25 px pixel strokes: a level
+ * 0.33-0.38 px, 8 levels 2.6-3.0 px). Noise alone puts a dense end's points a few levels
+ * beyond it. The one figure of both tests of a pen that went back over an end:
+ *   fit_ends.c piles_up, a fit by distance (smooth or discrete) tied to a point inside the
+ *   stroke: PILE_LEAST points with their feet at an end, the farthest beyond it by this many
+ *   levels and PILE_LEAST beyond half as far;
+ *   fit_pairing.c el__fit_overruns, a paired polygon running on past its first or last foot by
+ *   this many levels (and 3 segments). */
+static const double FIT_RETRACE_PAST = 8.0;
 /* rounds at most: each from the last one's fit, tied to its extremes, while that lowers the
  * rms (on a 1000-point scan, noise 1 %, 9 rounds crept to the optimum, 0.056338 -> 0.056019,
  * where L-BFGS's free run reached it at once) */
@@ -45,12 +52,12 @@ static inline void swap_points(double *xy, double *a, double *b, size_t i, size_
     if (b) { const double t = b[i]; b[i] = b[j]; b[j] = t; }
 }
 
-/* fit_ends.c: a public smooth fit by distance without constraints, fixed parameters or
- * bounds (*res, status st, its distances d (may be NULL) and feet fs, input units) whose feet
- * pile up at an end, fitted again from its curve with its ends free (FIT_RUN_FREE_ENDS) and
- * tied to the points farthest along it each way, kept while its rms is lower; the status of
+/* fit_ends.c: a public fit by distance (model: FIT_SMOOTH or FIT_DISCRETE) without
+ * constraints, fixed parameters or bounds (*res, status st, its distances d (may be NULL) and
+ * feet fs, input units) whose feet pile up at an end, fitted again from its curve with its ends
+ * free (FIT_RUN_FREE_ENDS, smooth only) and tied to the points farthest along it each way, kept while its rms is lower; the status of
  * the fit kept, or EL_ENOMEM. */
-int el__fit_free_ends(const double *xy, size_t n, const el_fit_options *opt, int st, fit_out *res,
+int el__fit_free_ends(int model, const double *xy, size_t n, const el_fit_options *opt, int st, fit_out *res,
                       double *d, double *fs);
 /* fit_keyline_ends.c: a smooth keyline (*sol, ob) whose feet pile at a far end refitted tied to
  * the points farthest along it; *sol and ob's feet replaced where lower. EL_OK or EL_ENOMEM. */

@@ -679,7 +679,7 @@ int el__fit_unpaired(int model, const double *xy, size_t n, const el_fit_options
 int el__fit_slips(size_t n, double h, double rms, const double *d, const double *fs);
 int el__fit_skips(size_t n, double h, double rms, const double *fs);
 /* fit_pairing.c: whether a paired fit's polygon (segment h, feet fs, input units) runs past
- * its points at an end by more than PAIRING_PAST x noise (input units) and 3 h. */
+ * its points at an end by more than FIT_RETRACE_PAST (fit_ends.h) x noise (input units) and 3 h. */
 int el__fit_overruns(size_t n, double h, double noise, const double *fs);
 /* fit_restart.c: a fit pinned at both ends with a zero start curvature (*res, d, fs, from the
  * start-state chart with the end point as Ipopt's rows) fitted again in the ends chart with

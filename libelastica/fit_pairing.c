@@ -5,7 +5,7 @@
  * their vertices are along its polygon (el__fit_slips, el__fit_skips; el__fit_unpaired in
  * fit_restart.c refits where they are not).
  */
-#include "fit_internal.h"
+#include "fit_ends.h"
 #include <math.h>
 
 /* w = max(3, (n-1)/16): the run of segments or points each test averages over */
@@ -152,7 +152,7 @@ int el__fit_slips(size_t n, double h, double rms, const double *d, const double 
 
 /* The paired fit's polygon runs on past its points at an end: the stretch from vertex 0 to
  * the first foot (fs, input units), or from the last foot to vertex n - 1, longer than
- * PAIRING_PAST x the points' noise (input units) and 3 segments h. A pen that retraced an
+ * FIT_RETRACE_PAST x the points' noise (input units, fit_ends.h) and 3 segments h. A pen that retraced an
  * end (starts a few px into the stroke, runs back to the true start, then along) passes
  * the spacing test and the retrace test (its turn within w of the end), and pairing its
  * first points with the first vertices stretches the polygon past the stroke's end where
@@ -162,7 +162,6 @@ int el__fit_slips(size_t n, double h, double rms, const double *d, const double 
  * distance 0.73 px from every point). And 3 segments: a paired fit's polygon without noise
  * ends up to a couple of segments past its last foot (bench_fit.py's set 355, 100 points at
  * noise 3e-7: 2.02 h, refitted by distance from the paired fit as before). */
-#define PAIRING_PAST 8.0
 
 int el__fit_overruns(size_t n, double h, double noise, const double *fs)
 {
@@ -171,7 +170,7 @@ int el__fit_overruns(size_t n, double h, double noise, const double *fs)
         a = fmin(a, fs[i]);
         b = fmax(b, fs[i]);
     }
-    const double L = h * (double)(n - 1), least = fmax(PAIRING_PAST * noise, 3.0 * h);
+    const double L = h * (double)(n - 1), least = fmax(FIT_RETRACE_PAST * noise, 3.0 * h);
     return a > least || L - b > least;
 }
 

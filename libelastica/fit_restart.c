@@ -308,7 +308,10 @@ int el__fit_unpaired(int model, const double *xy, size_t n, const el_fit_options
      * the fit by distance, whose ends are its first and last points' feet, is kept within
      * half a noise level of its rms (QA24 F9: 0.29844 against the overrun's 0.29819) */
     const double above = overruns ? 0.5 * noise : 0.0;
-    if (st != EL_ENOMEM && alt.status != -1 && alt.rms < res->rms + above) {
+    /* and there, as fit_ends.c's keep_lower, only as good a fit as its status: a converged
+     * paired fit is not given up for an uncertified one of higher rms (revE 3) */
+    const int as_good = !overruns || alt.status == EL_OK || res->status != EL_OK;
+    if (st != EL_ENOMEM && alt.status != -1 && as_good && alt.rms < res->rms + above) {
         if (from_fit) memcpy(alt.initial, res->initial, sizeof alt.initial);
         el__fit_replace(res, &alt, buf, n, d, fs);
     }
