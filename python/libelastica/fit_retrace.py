@@ -30,10 +30,17 @@ def retrace_gate(model: str, pts: np.ndarray, o, res, st: int, dist: np.ndarray,
     (None where not fitted)."""
     given_rms, tried, flip = None, None, False
     back = run_back(pts, foot, res.rms) if res.wander_gap < 0 else None
+    far_back = run_back(pts, foot, res.rms, near=False) if back is None and res.wander_gap < 0 else None
     if (back is not None or st != lib.EL_OK or _verdict(fig, dist, float(res.rms), False) is not None
-            or (res.wander_gap < 0 and run_back(pts, foot, res.rms, near=False) is not None)):
+            or far_back is not None):
         retraced = _retraced(model, pts, o, float(res.rms))
         tried = retraced[-1]
+        # feet that run back, the turn's first point a point or two past it (near=False), of a
+        # fit in the points' order as near as curve order's: said as a run back with curve
+        # order's rms (the discrete fit tied to a retraced end's extremes, fit_ends.c, reaches
+        # the far end of a scan passed back over a third as curve order's does, 0.38608 both)
+        if retraced[0] is None and back is None and tried is not None:
+            back = far_back
         if retraced[0] is not None:   # a scan passed back and forth: fitted in curve order
             given_rms = float(res.rms)
             res, st, dist, foot, back, _ = retraced
