@@ -1233,6 +1233,7 @@ def _elastica_sampled(seed, n, spacing):
     return c.points(s), c, {"start_tangent": th[0], "end_tangent": th[1]}
 
 
+@pytest.mark.c_numerics
 @pytest.mark.parametrize("seed", [1, 5, 9])
 def test_smooth_exact_on_uneven_and_sketched_points(seed):
     """Noise-free uneven / sketched points of an elastica: the default fit is exact to
@@ -1285,6 +1286,7 @@ def _sine_scans():
     return [scans[i] for i in (1, 4, 10)]
 
 
+@pytest.mark.c_numerics
 @pytest.mark.parametrize("model", ["smooth", "discrete"])
 def test_sine_scans_held_at_both_tangents_and_a_free_end_are_fitted(model):
     """Sine scans held at the sine's true end tangents with a zero end curvature (its end

@@ -26,6 +26,7 @@ def _held(xy, deg):
     return {"start_point": tuple(xy[0]), "start_tangent": float(np.radians(deg))}
 
 
+@pytest.mark.c_numerics
 @pytest.mark.parametrize("deg", [16.0, 17.0])
 def test_paired_held_start_does_not_crawl_through_its_stages(sheer, deg):
     """The paired fit held at the first point and a tangent 0.8 rad off the data's
@@ -45,6 +46,7 @@ def test_paired_held_start_does_not_crawl_through_its_stages(sheer, deg):
     assert np.hypot(*(r.curve.points(np.array([0.0]))[0] - sheer[0])) <= 1e-6
 
 
+@pytest.mark.c_numerics
 def test_held_fit_by_distance_keeps_its_basin(sheer):
     """The fit by distance at 17 deg (its refit from the paired curve above, no longer
     10 s): the same basin as main's (rms 945.5388336000649 mm, length 30397.9 mm), and the
@@ -77,6 +79,7 @@ def _sketched_elastica(seed, n):
                      "start_curvature": float(c.curvature(np.array([0.0]))[0])}
 
 
+@pytest.mark.c_numerics
 @pytest.mark.parametrize("seed, n", [(1, 1000), (5, 200)])
 def test_exact_held_fit_stops_once_its_feet_are_settled(seed, n):
     """Noise-free sketched points held at both end tangents (the end one Ipopt's row): the
@@ -94,6 +97,7 @@ def test_exact_held_fit_stops_once_its_feet_are_settled(seed, n):
     assert r.iterations <= 200, r.iterations
 
 
+@pytest.mark.c_numerics
 def test_exact_g2_held_fit_at_an_offset_stops_once_its_feet_are_settled():
     """The same with the start curvature held too (G2 at the start: a curvature row besides
     the tangents'), 30 sketched points in millimetres 1e6 mm from the origin (a CAD part's
