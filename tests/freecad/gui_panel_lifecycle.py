@@ -14,12 +14,13 @@ by the GUI smoke test (gui_smoke.py calls run_all): FreeCAD's own panels
   an 'Edit <Label>' step that undid nothing).
 - OK whose Copy into cannot finish (its sketch removed by a macro, a write failing half
   way) keeps the panel open with why on its error line, the sketch as before and no Undo
-  step (FreeCAD's TaskDialogPython closed it on the exception, its transaction pending).
+  step (FreeCAD's TaskDialogPython closed it on the exception, its transaction pending);
+  so does OK whose recompute fails (a source broken since by a macro line): no copy made.
 
 Screenshots: gui_close_with_panel.png (the task view empty after the close),
 gui_delete_during_panel.png, gui_keep_needs_copy.png (the Keep box disabled),
 gui_failed_blend_panel.png (a failed blend's panel: its error), gui_ok_fails_gone.png (OK's
-failed copy said on the error line)."""
+failed copy said on the error line), gui_ok_unsolved.png."""
 import FreeCAD as App
 import FreeCADGui as Gui
 import Part
@@ -284,10 +285,46 @@ def ok_that_fails():
     App.closeDocument(doc.Name)
 
 
+def ok_on_a_source_broken_since():
+    """OK with Copy into after a macro line left the points' sketch with 2 points (no
+    recompute: the preview still shows the fit): OK's recompute fails, so the panel stays
+    open with why on its error line, nothing copied, no Undo step (revB: the copy was made
+    from the shape of before, the fit committed Invalid and the panel closed)."""
+    from freecad.elastica import taskpanels as T
+    doc, sk = fit_doc("ElasticaOkUnsolved")
+    prof = doc.addObject("Sketcher::SketchObject", "Prof")
+    prof.Placement = sk.Placement
+    doc.recompute()
+    undo0 = list(doc.UndoNames)
+    panel = run_fit(doc, sk)
+    panel.sketch.setCurrentIndex(panel.sketch.findData("Prof"))
+    Gui.doCommand(f"_s = App.getDocument({doc.Name!r}).getObject({sk.Name!r})\n"
+                  "_s.delGeometries(list(range(2, len(_s.Geometry))))")
+    G.pump()
+    before = len(G.report_text())
+    click_ok()
+    G.pump()
+    G.screenshot("gui_ok_unsolved.png")
+    still = bool(T.CURRENT) and T.CURRENT[0] is panel and Gui.Control.activeDialog()
+    said = G.error_line(panel) if still else ""
+    f = doc.getObject("ElasticaFit")
+    G.check(still and "recompute failed" in said and "2 points" in said
+            and not prof.Geometry and f is not None and "SketchCopies" not in f.PropertiesList
+            and "Traceback" not in G.report_text()[before:],
+            f"OK on a source broken since: the panel stays open, nothing copied ({said!r}, "
+            f"{len(prof.Geometry)} geometries in Prof)")
+    panel.reject()
+    G.pump()
+    G.check(not T.CURRENT and list(doc.UndoNames) == undo0 and len(sk.Geometry) == 14,
+            f"then Cancel: the Undo stack and the points as before ({doc.UndoNames})")
+    App.closeDocument(doc.Name)
+
+
 def run_all(smoke):
     global G
     G = smoke
     ok_that_fails()
+    ok_on_a_source_broken_since()
     cancel_on_failed_feature()
     delete_during_new_panel()
     delete_during_edit()

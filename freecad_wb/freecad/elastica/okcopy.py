@@ -36,6 +36,12 @@ def copy_code(doc, feature, target, sources_body):
     return code + f"elastica_geometry.write_to_sketch({d}.getObject({feature.Name!r}), _sk)\n"
 
 
+class Unsolved(Exception):
+    """OK's recompute left the feature in error (its source sketch changed by a macro line
+    since the preview): no copy made of the curve it no longer has. It was copied from the
+    shape of before, the feature committed Invalid and the panel closed."""
+
+
 class Attempt:
     """The state OK may change, taken before its lines run (``undo`` puts it back)."""
 
@@ -77,6 +83,9 @@ class Attempt:
             self.doc.getObject(self.sketch.Name) is not None else None
         what = "OK" if not target else "Copy into a new sketch" if target == "*new*" else \
             f"Copy into {sk.Label if sk is not None else target}"
+        if isinstance(exc, Unsolved):
+            return f"{what} failed, nothing was written: the curve's recompute failed: {exc}. " \
+                "Fix its input, or Cancel"
         why = "that sketch is no longer in the document" if sk is None and target and \
             target != "*new*" else str(exc) or type(exc).__name__
         return f"{what} failed, nothing was written: {why}. Choose another sketch, or Cancel"

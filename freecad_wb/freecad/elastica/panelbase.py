@@ -14,7 +14,7 @@ from PySide import QtCore, QtGui
 from . import icon
 from .containers import CONTAINERS
 from .geometry import global_shape, is_sketch, sketch_curves
-from .okcopy import Attempt, copy_code
+from .okcopy import Attempt, Unsolved, copy_code
 from .panelexpressions import ExpressionFields
 from .proxy import (EDGE_ENDS, InputProblem, abort_transaction, note_changes, note_values,
                     save_note, saved_note, said as proxy_said)
@@ -679,12 +679,14 @@ class Panel(ExpressionFields):
         edits, view_edits = edit_lines(self.obj, self.opened_with)
         if code or not self._keep or edits:
             self.hold()
-        attempt = Attempt(self.doc, self.obj, self.copy_target())
+        attempt, failed = Attempt(self.doc, self.obj, self.copy_target()), None
         try:
             for line in edits:
                 Gui.doCommand(line)
-            if edits:       # solved before a copy of it is made, in a macro replayed too
+            if edits or code:   # solved before a copy of it is made, in a macro replayed too
                 Gui.doCommand(f"App.getDocument({self.doc.Name!r}).recompute()")
+            if self.obj.Status.startswith("error"):   # a source changed since the preview
+                raise Unsolved(proxy_said(self.obj, "Status").removeprefix("error: "))
             for line in view_edits:
                 Gui.doCommandGui(line)
             if code:
@@ -692,7 +694,9 @@ class Panel(ExpressionFields):
             if not self._keep:
                 Gui.doCommand(f"App.getDocument({self.doc.Name!r}).removeObject({self.obj.Name!r})")
         except Exception as exc:    # (any: TaskDialogPython would close the panel on it)
-            self.ok_failed(attempt, exc)
+            failed = exc
+        if failed is not None:      # undone out of the handler: a feature in error recomputed
+            self.ok_failed(attempt, failed)     # in it printed a Traceback
             return False
         self.doc.recompute()
         self.doc.commitTransaction()
