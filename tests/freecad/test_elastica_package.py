@@ -21,7 +21,7 @@ class PackageTest(unittest.TestCase):
                   "sources.py",
                   "viewproviders.py",
                   "geometry.py", "nearest.py", "proxy.py", "fit.py", "fit_core.py", "fit_ends.py",
-                  "fit_shape.py", "blend.py", "blend_g2.py", "spline.py",
+                  "fit_shape.py", "blend.py", "blend_g2.py", "spline.py", "spline_solve.py",
                   "comb.py", "ellblend.py", "g2quad.py"):
             self.assertTrue(os.path.isfile(os.path.join(PKG, f)), f)
 
@@ -42,7 +42,7 @@ class PackageTest(unittest.TestCase):
         gui = {"taskpanels", "blend_panel", "panelbase", "panelexpressions", "spinboxes", "viewproviders",
                "commands", "init_gui", "preferences", "FreeCADGui", "PySide", "pivy"}
         for f in ("proxy", "geometry", "nearest", "sources", "fit", "fit_core", "fit_ends",
-                  "fit_shape", "blend", "blend_g2", "blend_start", "spline", "comb", "ellblend",
+                  "fit_shape", "blend", "blend_g2", "blend_start", "spline", "spline_solve", "comb", "ellblend",
                   "g2quad", "copies"):
             with open(os.path.join(PKG, f + ".py")) as fh:
                 tree = ast.parse(fh.read())

@@ -9,7 +9,7 @@ import warnings
 
 from .geometry import el, np, plane_curvature
 from .proxy import InputProblem
-from .spline import g2_met_hint, g2_solves
+from .spline_solve import g2_met_hint, g2_solves
 from .units import (floor_digits, length_mark, per_area_mark, per_length_mark, reach_mark,
                     tension_mark, tension_unit_mark)
 
