@@ -31,7 +31,8 @@ gui_delete_during_panel.png and gui_keep_needs_copy.png; gui_blend_panel.py's
 gui_blend_picked_tops.png, gui_blend_ends_by_length.png, gui_blend_bound.png,
 gui_blend_imperial.png and the others its docstring names; gui_schema_texts.py's
 gui_ellblend_loop_imperial.png, gui_fit_result_imperial.png; gui_fc_behaviour.py's, which
-its docstring names; gui_typed_units.py's gui_typed_wrong_unit.png;
+its docstring names; gui_typed_units.py's gui_typed_wrong_unit.png; gui_typed_expressions.py's
+gui_typed_equals_editor.png and gui_typed_division_by_zero.png;
 gui_reopen_old.py's gui_reopen_old.png; gui_recording.py's gui_recorded_blend.png. The outcome goes
 to gui_smoke.result (first line PASS or FAIL); FreeCAD is then ended with os._exit
 because its exit status says nothing about a script. Only APIs present in FreeCAD
@@ -580,6 +581,10 @@ def run():
     # a wrong unit typed in a box is marked and refused by OK; the fit's own edge named so
     import gui_typed_units
     gui_typed_units.run_all(sys.modules[__name__])
+
+    # '=' in a box opens FreeCAD's expression editor and binds; '1/0' never reaches the feature
+    import gui_typed_expressions
+    gui_typed_expressions.run_all(sys.modules[__name__])
 
     # an open panel follows its feature's recompute (a cell it is bound to changed)
     import gui_bound_follow

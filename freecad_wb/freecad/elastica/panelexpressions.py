@@ -1,13 +1,15 @@
 """Task-panel fields bound to expressions (the f(x) mark), as FreeCAD's own boxes show
 and edit them (a Pad's Length): ``ExpressionFields``, the part of panelbase.Panel that
 marks a box whose property an expression sets (spinboxes.NumberBox.bind_mark) and opens
-FreeCAD's expression editor from its mark."""
+FreeCAD's expression editor from its mark or '=' typed in the box; and keeps a text the
+box refuses from reaching the property (hold_back)."""
 from __future__ import annotations
 
 import FreeCADGui as Gui
 from PySide import QtCore, QtGui
 
 from .proxy import bound_expression
+from .spinboxes import PARSED_UNIT
 
 
 class ExpressionFields:
@@ -21,9 +23,26 @@ class ExpressionFields:
 
     def mark_bound(self, box, prop):
         self.__dict__.setdefault("fields", []).append((box, prop))     # (follow_recompute)
+        box.open_editor = lambda: self.edit_expression(box, prop)      # '=' or its mark
+        box.lineEdit().textChanged.connect(lambda _text: self.hold_back(box, prop))
         expr = self.expression(prop)
         if expr:
-            box.bind_mark(expr, lambda: self.edit_expression(box, prop))
+            box.bind_mark(expr)
+
+    def hold_back(self, box, prop):
+        """The box's text changed: a text it refuses ('1/0', '3 deg', '5 km' in Resample)
+        never reaches the feature, preview included: the property goes back to the value
+        of the box's last text that stood (NumberBox.settled). Qt's keyboard tracking had
+        sent on its last good prefix ('1' of '1/0': ResampleStep 6 -> 1 mm, previewed)
+        while the box showed the refused text (QA25gui F3). A text it takes again sets its
+        value: Qt says nothing when it is the value before ('7 in' after '7 i' put 151 mm
+        back: its '7' had set 177.8 mm already)."""
+        if box.isReadOnly():
+            return
+        if not box.problem():
+            self.set(prop, float(box.value()))
+        elif box.settled is not None:
+            self.set(prop, float(box.settled))
 
     def edit_expression(self, box, prop):
         """FreeCAD's expression editor (Gui::Dialog::DlgExpressionInput) on ``prop``, as the
@@ -32,8 +51,20 @@ class ExpressionFields:
         follows (expression_edited). FreeCAD 0.20's Python has no call that opens the
         dialog (openFormulaDialog is no slot): a hidden Gui::QuantitySpinBox bound to the
         property (Gui.ExpressionBinding) is sent '=', on which FreeCAD's boxes open it."""
+        if self.gone or self.closing or any(
+                d.isVisible() for d in box.findChildren(QtGui.QDialog)):
+            return                              # (one editor at a time)
+        self.flush()
+        self.hold()                             # its edit in the panel's transaction
         helper = Gui.UiLoader().createWidget("Gui::QuantitySpinBox", box)
         helper.setGeometry(box.rect())          # the dialog opens over the box
+        # the property's unit, as FreeCAD's box of it has: without it the editor said
+        # 'Result: 8.00 mm (Warning: unit discarded)' of a length
+        unit = PARSED_UNIT.get(box.unit)
+        if unit:
+            helper.setProperty("unit", unit)
+        # its value: FreeCAD's editor opens on an unbound box holding the box's text
+        helper.setProperty("rawValue", float(getattr(self.obj, prop)))
         helper.hide()
         self._binding = Gui.ExpressionBinding(helper)
         self._binding.bind(self.obj, prop)
@@ -61,6 +92,8 @@ class ExpressionFields:
         self.obj.touch()
         self.update()
         self.show_value(box, float(getattr(self.obj, prop)))
+        box._mark_input()           # the box's text is its own now (its signals were blocked)
+        self.say_bad_input()        # the refused text it replaced no longer said
 
     def follow_recompute(self):
         """After a recompute of the document (panelbase._Watch): the boxes of bound properties

@@ -15,8 +15,8 @@ BAD_RGB = "#b00"                         # panelbase.ERROR_RGB: the error line's
 
 
 # a box's unit as FreeCAD's unit parser writes it (App.Units.Quantity)
-_PARSED_UNIT = {"mm": "mm", "1/mm": "1/mm", "1/mm\u00b2": "1/mm^2", "mm\u00b2": "mm^2",
-                "N\u00b7mm\u00b2": "N*mm^2"}
+PARSED_UNIT = {"mm": "mm", "1/mm": "1/mm", "1/mm\u00b2": "1/mm^2", "mm\u00b2": "mm^2",
+               "N\u00b7mm\u00b2": "N*mm^2"}
 # what a box of that unit takes, in a refusal ('3 deg is an angle, not a length')
 _KIND = {"mm": "a length", "1/mm": "a curvature (1/length)", "1/mm\u00b2": "a tension (1/length\u00b2)",
          "mm\u00b2": "an area (length\u00b2)", "N\u00b7mm\u00b2": "a stiffness (force \u00b7 length\u00b2)"}
@@ -35,9 +35,12 @@ def _in_unit(text, unit, plain=1.0):
         q = App.Units.Quantity(body)
     except Exception:      # the parser's errors are of several kinds (syntax, 1/0, ...)
         raise ValueError(f"{text}: not a number or quantity") from None
+    if not math.isfinite(q.Value):    # FreeCAD's parser gives inf for 1/0, nan for 0/0
+        raise ValueError(f"{text.strip()}: " + (
+            "a division by zero" if "/" in body else "not a finite number"))
     if q.Unit == App.Units.Quantity("1").Unit:
         return q.Value * plain
-    ref = App.Units.Quantity(f"1 {_PARSED_UNIT.get(unit, '?')}") if unit else None
+    ref = App.Units.Quantity(f"1 {PARSED_UNIT.get(unit, '?')}") if unit else None
     if ref is None or q.Unit != ref.Unit:
         kind = q.Unit.Type or "a quantity of another kind"     # FreeCAD's name: 'Angle', 'Mass'
         kind = kind if kind.startswith("a") and " " in kind else \
@@ -54,7 +57,8 @@ class NumberBox(QtGui.QDoubleSpinBox):
     value unrounded: Tension '0.00001515 1/mm²', not '1.51519e-05'), a length,
     curvature or tension in the user's unit schema (units.py; the value itself stays in mm,
     1/mm, 1/mm^2), accepts scientific notation, quantities in other units and expressions as
-    FreeCAD's own boxes do ('7 cm', '2.75 in', '=2*35': _in_unit) and steps by
+    FreeCAD's own boxes do ('7 cm', '2.75 in', '2*35': _in_unit; '=' typed opens
+    FreeCAD's expression editor on the panel's property: open_editor) and steps by
     ``singleStep``. As FreeCAD 0.20's Gui::QuantitySpinBox (measured under each schema), a
     plain number is in the unit the box shows, that of the text it last wrote ('6' in a box
     showing '5.94 in' is 6 in; '12' after Up took '9999 mm' to '10 m' is 12 m), and a length
@@ -77,6 +81,7 @@ class NumberBox(QtGui.QDoubleSpinBox):
         self.setSizePolicy(QtGui.QSizePolicy.Preferred, QtGui.QSizePolicy.Fixed)
         self._palette = QtGui.QPalette(self.lineEdit().palette())
         self.lineEdit().textChanged.connect(self._mark_input)
+        self.editingFinished.connect(self._settle)
 
     def shown(self, value):
         """(factor, unit): the box shows ``value`` as value / factor unit."""
@@ -111,16 +116,35 @@ class NumberBox(QtGui.QDoubleSpinBox):
         text with the line edit's signals blocked: its textChanged says nothing.)"""
         if self.lineEdit().text() == self.textFromValue(self.value()):
             self.written = self.shown(self.value())
+            self.settled = self.value()
 
     def setValue(self, value):
         super().setValue(value)
         self._wrote()
+
+    # The value of the box's last text that stood (written by the box, or typed and taken
+    # by Enter or focus-out): a text it refuses never reaches the feature, the panel sets
+    # this one back (panelexpressions.ExpressionFields.hold_back), not the value of the
+    # refused text's last good prefix ('1' of '1/0', which Qt's keyboard tracking sent on).
+    settled = None
+
+    _refused = ""                        # the refused text focus-out puts back (focusOutEvent)
+
+    def _settle(self):
+        if not self.problem() and not self._refused:
+            self.settled = self.value()
 
     def focusInEvent(self, event):
         super().focusInEvent(event)
         self._wrote()
 
     def _number(self, text):
+        v = self._read(text)
+        if not math.isfinite(v):     # '1e400', '1e300 km': beyond any double
+            raise ValueError(f"{text.strip()}: not a finite number")
+        return v
+
+    def _read(self, text):
         t = text.strip()
         factor, unit = self.written or self.shown(self.value())
         for u, f in ((unit, factor), (self.unit, 1.0)):
@@ -179,6 +203,10 @@ class NumberBox(QtGui.QDoubleSpinBox):
         try:
             v = self._number(text)
         except ValueError as exc:
+            if self.open_editor is not None and "not a number" in str(exc):
+                # a cell or an alias ('Sheet.step') is no text a box takes: FreeCAD's
+                # boxes bind their property to it in the expression editor, opened by '='
+                return f"{exc}; to bind the field to an expression, type = in it"
             return str(exc)
         if v < self.minimum():
             return (f"{text.strip()} is below the smallest, "
@@ -201,12 +229,29 @@ class NumberBox(QtGui.QDoubleSpinBox):
 
     def focusOutEvent(self, event):
         text, why = self.lineEdit().text(), self.keep_bad_text and self.problem()
-        super().focusOutEvent(event)
+        self._refused = why and text        # Qt's editingFinished comes with its own text
+        try:
+            super().focusOutEvent(event)
+        finally:
+            self._refused = ""
         if why and self.lineEdit().text() != text:
             self.lineEdit().setText(text)      # still marked: OK says why and refuses it
             self.editingFinished.emit()        # Qt's came with its own text back
 
     _mark = None                         # the bound-expression mark's action (bind_mark)
+    # FreeCAD's expression editor on the property the box sets (panelexpressions: a box of
+    # a panel bound to a property), or None
+    open_editor = None
+
+    def keyPressEvent(self, event):
+        # '=' opens the expression editor, not typed, as in FreeCAD's boxes bound to a
+        # property (Gui::ExpressionSpinBox::handleKeyEvent; read-only ones too): '=2*3'
+        # was read once as 6 mm and '=Sheet.step' refused, the property bound to nothing
+        if event.text() == "=" and self.open_editor is not None:
+            event.accept()
+            self.open_editor()
+            return
+        super().keyPressEvent(event)
 
     def bind_mark(self, expression, edit=None):
         """Bound to a property's ``expression``: read-only, FreeCAD's bound-expression
@@ -219,6 +264,7 @@ class NumberBox(QtGui.QDoubleSpinBox):
             self._tip = self.toolTip()
             self._mark = self.lineEdit().addAction(QtGui.QIcon(":/icons/bound-expression.svg"),
                                                    QtGui.QLineEdit.TrailingPosition)
+            edit = edit or self.open_editor
             if edit is not None:
                 self._mark.triggered.connect(edit)
         self.setReadOnly(True)

@@ -1,0 +1,81 @@
+"""freecadcmd -t tests of what the panels' boxes (spinboxes.NumberBox) do with '=' and with
+a text they refuse, as FreeCAD's own Quantity boxes (QA25gui F2, F3; the panels are driven
+under xvfb in gui_typed_expressions.py):
+
+- '=' typed in a box tied to a property opens the expression editor (the panel's
+  ``open_editor``) and is not typed: '=2*3' was read once as 6 mm, no expression kept;
+- '1/0' is a division by zero, not 'above the largest, 1000 m' (FreeCAD's parser reads it
+  as inf), '0/0' too, 'log(0)' and '1e400' not finite numbers;
+- a refused text keeps ``settled``, the value of the box's last text that stood, which the
+  panel puts back on the feature (Qt's value is that of the text's last good prefix);
+- a cell's name typed as a value says how a field is bound to it."""
+import os
+import unittest
+
+import FreeCAD as App
+
+os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")      # freecadcmd: no display
+from PySide import QtCore, QtGui  # noqa: E402
+
+from freecad.elastica.spinboxes import NumberBox  # noqa: E402
+
+STANDARD = 0
+APP = QtGui.QApplication.instance() or QtGui.QApplication([])
+
+
+def _type(box, text):
+    box.selectAll()
+    for ch in text:
+        for kind in (QtCore.QEvent.KeyPress, QtCore.QEvent.KeyRelease):
+            QtGui.QApplication.sendEvent(box, QtGui.QKeyEvent(kind, 0, QtCore.Qt.NoModifier, ch))
+
+
+class BoxExpressionsTest(unittest.TestCase):
+    def setUp(self):
+        self.schema = App.Units.getSchema()
+        App.Units.setSchema(STANDARD)
+        self.box = NumberBox(0.0, 1e6, 0.5, "mm", "Resample")
+        self.box.setValue(6.0)
+
+    def tearDown(self):
+        App.Units.setSchema(self.schema)
+
+    def test_a_division_by_zero_is_said_so(self):
+        for text in ("1/0", "0/0", "1/0 mm", "(2+3)/(1-1) cm"):
+            _type(self.box, text)
+            self.assertEqual(self.box.problem(), f"{text}: a division by zero")
+        for text in ("log(0)", "1e400"):
+            _type(self.box, text)
+            self.assertEqual(self.box.problem(), f"{text}: not a finite number")
+
+    def test_a_refused_text_keeps_the_value_that_stood(self):
+        _type(self.box, "1/0")
+        self.assertEqual(self.box.text(), "1/0")
+        self.assertEqual(self.box.value(), 1.0)       # Qt's: the prefix '1'
+        self.assertEqual(self.box.settled, 6.0)       # what the panel puts back
+        _type(self.box, "8")
+        self.box.editingFinished.emit()               # Enter: '8' stands
+        self.assertEqual(self.box.settled, 8.0)
+        _type(self.box, "3 deg")
+        self.assertEqual(self.box.settled, 8.0)
+
+    def test_equals_opens_the_expression_editor_and_is_not_typed(self):
+        opened = []
+        self.box.open_editor = lambda: opened.append(True)
+        before = self.box.text()
+        _type(self.box, "=")
+        self.assertEqual((opened, self.box.text()), ([True], before))
+        self.box.setReadOnly(True)                    # bound: '=' opens it too
+        _type(self.box, "=")
+        self.assertEqual(len(opened), 2)
+
+    def test_a_cells_name_says_how_to_bind_it(self):
+        _type(self.box, "Sheet.step")
+        self.assertEqual(self.box.problem(), "Sheet.step: not a number or quantity")
+        self.box.open_editor = lambda: None           # a panel's box, tied to a property
+        self.assertEqual(self.box.problem(), "Sheet.step: not a number or quantity; to bind "
+                                             "the field to an expression, type = in it")
+
+
+if __name__ == "__main__":
+    unittest.main()
