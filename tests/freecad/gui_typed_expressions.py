@@ -210,6 +210,39 @@ def equals_opens_the_editor(doc, fit):
             f"F2: Undo takes the panel's binding back ({dict(fit.ExpressionEngine)})")
 
 
+def stiffness_editor(doc, dots):
+    """'=' in the spline's Stiffness EI (N mm^2, a plain number: FreeCAD has no unit of it,
+    its N*mm^2 is 1000 of ours): the editor holds the value as shown, its OK binds it."""
+    from freecad.elastica import commands as C, taskpanels as T
+    sp = C.spline_sources([(dots, [])], open_panel=False)
+    sp.Stiffness = 2.5e6
+    doc.recompute()
+    G.double_click(sp)
+    G.wait()
+    panel = T.CURRENT[0]
+    box = [b for label, b in panel.numbers if label.startswith("Stiffness")][0]
+    box.setFocus()
+    _key(box, "=")
+    editor = _editor(box)
+    line = editor and editor.findChild(QtGui.QLineEdit, "expression")
+    G.check(line is not None and "kg" not in line.text()
+            and float(line.text().split()[0]) == 2.5e6,
+            f"F2: '=' in Stiffness EI opens the editor on 2.5e6 N mm^2 as shown, not in "
+            f"FreeCAD's mm^3*kg/s^2 ({line.text() if line else None!r})")
+    line.setText("3e6")
+    G.pump(10)
+    editor.findChild(QtGui.QPushButton, "okBtn").click()
+    G.wait()
+    G.check(float(dict(sp.ExpressionEngine).get("Stiffness", "nan")) == 3e6 and sp.Stiffness == 3e6
+            and box.isReadOnly(),
+            f"F2: its OK binds Stiffness to 3e6 N mm^2 ({sp.Stiffness}, "
+            f"{dict(sp.ExpressionEngine)})")
+    panel.reject()
+    G.wait()
+    G.check("Stiffness" not in dict(sp.ExpressionEngine) and sp.Stiffness == 2.5e6,
+            f"F2: Cancel unbinds it ({sp.Stiffness}, {dict(sp.ExpressionEngine)})")
+
+
 def run_all(smoke):
     global G
     G = smoke
@@ -225,5 +258,6 @@ def run_all(smoke):
     doc.recompute()
     division_by_zero(doc, fit)
     equals_opens_the_editor(doc, fit)
+    stiffness_editor(doc, dots)
     Gui.Selection.clearSelection()
     App.closeDocument(doc.Name)

@@ -59,9 +59,11 @@ class ExpressionFields:
         helper = Gui.UiLoader().createWidget("Gui::QuantitySpinBox", box)
         helper.setGeometry(box.rect())          # the dialog opens over the box
         # the property's unit, as FreeCAD's box of it has: without it the editor said
-        # 'Result: 8.00 mm (Warning: unit discarded)' of a length
+        # 'Result: 8.00 mm (Warning: unit discarded)' of a length. Not a stiffness (N mm^2,
+        # a plain number): FreeCAD's mass unit is kg, its N*mm^2 1000 of ours (1e6 N mm^2
+        # was '1e9 mm^3*kg/s^2' there), and 0.20 has no unit of it to write
         unit = PARSED_UNIT.get(box.unit)
-        if unit:
+        if unit and "N" not in unit:
             helper.setProperty("unit", unit)
         # its value: FreeCAD's editor opens on an unbound box holding the box's text
         helper.setProperty("rawValue", float(getattr(self.obj, prop)))
