@@ -32,7 +32,7 @@ gui_blend_picked_tops.png, gui_blend_ends_by_length.png, gui_blend_bound.png,
 gui_blend_imperial.png and the others its docstring names; gui_schema_texts.py's
 gui_ellblend_loop_imperial.png, gui_fit_result_imperial.png; gui_fc_behaviour.py's, which
 its docstring names; gui_typed_units.py's gui_typed_wrong_unit.png; gui_typed_expressions.py's
-gui_typed_equals_editor.png and gui_typed_division_by_zero.png;
+gui_typed_equals_editor.png, gui_typed_bound.png and gui_typed_division_by_zero.png;
 gui_reopen_old.py's gui_reopen_old.png; gui_recording.py's gui_recorded_blend.png. The outcome goes
 to gui_smoke.result (first line PASS or FAIL); FreeCAD is then ended with os._exit
 because its exit status says nothing about a script. Only APIs present in FreeCAD

@@ -12,7 +12,8 @@
   showed the refused text: now the property stays at the box's last text that stood.
 
 Screenshots: gui_typed_equals_editor.png (the editor '=' opened over Resample),
-gui_typed_division_by_zero.png (the Fit panel refusing '1/0')."""
+gui_typed_division_by_zero.png (the Fit panel refusing '1/0'), gui_typed_bound.png (Resample
+bound to Sheet.step by it: 8 mm, read-only, marked)."""
 import numpy as np
 
 import FreeCAD as App
@@ -155,6 +156,7 @@ def equals_opens_the_editor(doc, fit):
             f"F2: its OK binds ResampleStep to Sheet.step: the box read-only, marked, showing "
             f"8 mm ({box.text()!r}, {fit.ResampleStep}, {dict(fit.ExpressionEngine)}, "
             f"{G.error_line(panel)!r})")
+    G.screenshot("gui_typed_bound.png")
     G.check(not fit.Status.startswith("error"),
             f"F2: the preview solved with the bound 8 mm ({fit.Status[:60]!r})")
     box.setFocus()
