@@ -12,6 +12,7 @@ by that header, and a library built from another writes past them.
 """
 from __future__ import annotations
 
+import copyreg
 import decimal
 import math
 import numbers
@@ -94,6 +95,14 @@ class ElasticaError(ValueError):
     def __init__(self, status: int, message: str):
         super().__init__(message)
         self.status = status
+
+    def __reduce__(self):
+        # pickle's default rebuilds an exception as cls(*self.args), args being the message
+        # alone: ElasticaError(message) raised TypeError in the loading process (a worker's
+        # error sent back by multiprocessing / concurrent.futures) and the attributes callers
+        # read (status, stopped, work, shortest, constraint, cause...) were lost. Rebuilt
+        # without __init__ (subclasses take other arguments), its __dict__ restored
+        return copyreg.__newobj__, (type(self),) + self.args, self.__dict__
 
 
 class NotConvergedError(ElasticaError):
