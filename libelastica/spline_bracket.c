@@ -204,7 +204,7 @@ static int fair_ways(el__spchain *w, int max_steps, double Lt, const el__spsnap 
                      int *best)
 {
     int st = EL_ENOCONV;
-    for (int k = 0; k < 4 && *best < 3; k++) {
+    for (int k = 0; k < 4 && *best < 3 && !el__spwork_spent(w->work); k++) {   /* (below) */
         const int e = k % 2;
         const int ofair = hfair[1 - e] && fair[1 - e].sigma != end[1 - e].sigma;
         if (!hfair[e] || (fair[e].sigma == end[e].sigma && !ofair)) continue;   /* a way tried */
@@ -381,7 +381,10 @@ int el__spline_length_by_tension(el__spchain *w, int max_steps, double Lt, int l
     double kept_resid = HUGE_VAL;
     if (have[0] && have[1]) {
         const int first = fabs(len[0] - Lt) <= fabs(len[1] - Lt) ? 0 : 1;   /* the nearer in length */
-        for (int k = 0; k < 4 && best < 3; k++) {
+        /* no way begun once the call's budget is spent (WORK_BUDGET, spline.c): each would only
+         * re-evaluate its rung (from_state, narrow, el__spline_length_from: up to 7 past the
+         * budget) and fail; ring77 by length went 21 past it (revA) */
+        for (int k = 0; k < 4 && best < 3 && !el__spwork_spent(w->work); k++) {
             const int e = k % 2 ? 1 - first : first;
             el__snap_load(w, &end[e]);
             st = from_state(w, max_steps, Lt, end[1 - e].sigma, len[1 - e], k >= 2);

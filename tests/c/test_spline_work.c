@@ -273,6 +273,41 @@ START_TEST(a_sliding_batten_says_its_work)
 }
 END_TEST
 
+/* ring77 (closed) by the length of its fair spline at sigma h^2 = 20 (test_spline_reach.c
+ * length_mode_prefers_the_fair_spline: spline_bracket.c's ways from the rungs, FAIR_RUNGS), 6751
+ * evaluations unbounded: with the budget spent during the ways, each way left began with a
+ * re-evaluation of its rung (from_state, narrow, el__spline_length_from): 20 past the budget at
+ * b = 3499, 21 at 4159 (revA's sweep of 200 budgets); now no way begins once it is spent (7). */
+START_TEST(no_way_from_a_rung_begins_past_the_budget)
+{
+    double h = 0.0;
+    for (int i = 0; i < 12; i++) {
+        const int j = (i + 1) % 12;
+        h = fmax(h, hypot(ring77[2 * j] - ring77[2 * i], ring77[2 * j + 1] - ring77[2 * i + 1]));
+    }
+    el_spline_options o;
+    el_spline_options_defaults(&o);
+    o.closed = 1;
+    o.sigma = 20.0 / (h * h);
+    el_spline_result t;
+    ck_assert_int_eq(el_spline_solve(ring77, 12, &o, &t), EL_OK);
+    el_spline_options ol;
+    el_spline_options_defaults(&ol);
+    ol.closed = 1;
+    ol.mode = EL_SPLINE_LENGTH;
+    ol.length = t.length;
+    el_spline_result_free(&t);
+    static const unsigned long budgets[] = {3499, 4159};
+    for (int i = 0; i < 2; i++) {
+        el__spwork w = {0, budgets[i], 0};
+        el_spline_result r;
+        const int st = el__spline_solve_within(ring77, 12, &ol, &w, &r);
+        ck_assert_msg(w.evals <= budgets[i] + PAST_BUDGET, "budget %lu: %lu evaluations", budgets[i], w.evals);
+        if (st == EL_OK || st == EL_ENOCONV || st == EL_ERANGE) el_spline_result_free(&r);
+    }
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("spline_work");
@@ -286,6 +321,7 @@ int main(void)
     tcase_add_test(tc, largest_solves_share_the_call_budget);
     tcase_add_test(tc, a_stopped_result_is_judged_on_its_own_pieces);
     tcase_add_test(tc, a_sliding_batten_says_its_work);
+    tcase_add_test(tc, no_way_from_a_rung_begins_past_the_budget);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }
