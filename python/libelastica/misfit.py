@@ -440,15 +440,19 @@ CLOSED_AREA = 0.05
 
 
 def _nearly_closed(points: np.ndarray):
-    """(the gap between the first and the last point, over the extent) of points (n, 2) in
-    curve order whose ends lie within CLOSED_GAP of their extent and that enclose
-    CLOSED_AREA x its square, else None."""
+    """(the gap between the first and the last point, over the extent) of points (n, 2), or
+    (n, 3) in a plane (FreeCAD names places in 3D), in curve order whose ends lie within
+    CLOSED_GAP of their extent and that enclose CLOSED_AREA x its square, else None."""
     extent = float(np.max(np.ptp(points, axis=0)))
-    gap = float(np.hypot(*(points[-1] - points[0])))
+    gap = float(np.linalg.norm(points[-1] - points[0]))
     if not (extent > 0 and gap <= CLOSED_GAP * extent):
         return None
-    x, y = (points - points.mean(axis=0)).T
-    area = 0.5 * abs(float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1))))
+    p = points - points.mean(axis=0)
+    if p.shape[1] == 2:
+        p = np.column_stack([p, np.zeros(len(p))])
+    # the polygon's vector area (half the sum of p_i x p_i+1): its length the enclosed area
+    # in whatever plane the points lie
+    area = 0.5 * float(np.linalg.norm(np.cross(p, np.roll(p, -1, axis=0)).sum(axis=0)))
     return (gap, gap / extent) if area >= CLOSED_AREA * extent * extent else None
 
 
@@ -458,8 +462,9 @@ def misfit_summary(m: Misfit, points=None, unit: str = "", numbered: bool = True
     FreeCAD's), of :func:`misfit`'s verdict ``m``: "the curve lies 10.9 from the points
     (rms), 24 x their own noise (0.456): they are not one elastica; a corner at point 162
     (counted from 0; at (x, y))? Split there, the two parts fit at rms 0.28 and 0.31".
-    points: the fitted points, to name the corner's place (4 digits of their size however
-    far from the origin: the CLI's coordinates); ``unit``, ``length`` as
+    points: the fitted points (n, 2), or (n, 3) where they are named in 3D (FreeCAD's), to name
+    the corner's place (4 digits of their size however far from the origin: the CLI's
+    coordinates); ``unit``, ``length`` as
     :func:`wander_summary`'s; numbered False: by its place alone, where the numbers are the
     fit's order, not the user's; what: the model ("one keyline" for :func:`fit_keyline`'s)."""
     fmt = lengths(unit, length)

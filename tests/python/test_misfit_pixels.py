@@ -40,6 +40,22 @@ def test_a_nearly_closed_letter_is_said_closed_not_a_corner(a, b):
     assert "corner" not in said[0] and "nearly closed" in said[0]
 
 
+def test_a_nearly_closed_shape_named_in_3d_is_said_closed():
+    """misfit_summary's points may be 3D (FreeCAD names places in the document's
+    coordinates, a sketch's plane tilted): the gap and the enclosed area are measured in
+    their plane (fcexpr: TypeError 'return arrays must be of ArrayType' from np.hypot of
+    3 coordinates: a Fit of a hand sketch with Resample 2-7 mm ended in that error)."""
+    P = pixel_letter(0.97)
+    with warnings.catch_warnings(record=True):
+        warnings.simplefilter("always")
+        r = el.fit(P, model="smooth")
+    said2 = el.misfit_summary(r.misfit, P)
+    c, s = np.cos(0.7), np.sin(0.7)                 # the plane turned about x, moved
+    P3 = np.column_stack([P[:, 0], c * P[:, 1], s * P[:, 1]]) + [1500.0, -800.0, 250.0]
+    said3 = el.misfit_summary(r.misfit, P3)
+    assert "nearly closed" in said2 and "nearly closed" in said3
+
+
 
 def _true_rms(P, frac, a=30.0, b=40.0):
     """The points' rms distance to the ellipse they were traced from (dense samples, 0.005 px
