@@ -25,7 +25,7 @@ from ._text import LengthFormat, coordinates, lengths
 from ._values import ValueEquality
 
 __all__ = ["MISFIT_RATIO", "MisfitWarning", "Misfit", "noise_level", "window_noise", "misfit",
-           "misfit_summary", "split_hint", "OutlierWarning", "outliers_summary", "fit_outliers"]
+           "misfit_summary", "split_hint", "OutlierWarning", "outliers_summary", "fit_outliers", "stray_summary"]
 
 # A fit's rms over the points' noise level (no verdict where el.far_points names glitches:
 # they pull the fit, and are said apart). Measured (rms / noise_level, 692 fits, both
@@ -570,22 +570,51 @@ def fit_outliers(r, free_distances=None) -> np.ndarray:
     (OutlierWarning) and the CLI says: :func:`far_points` of its distances; a constrained
     fit's (``r.constraints``) judged with the distances of the fit without them too
     (``free_distances``, default ``r.free``'s where :func:`fit` made it): points held off
-    only by the constraints are no outliers. Indices into ``r.points``."""
+    only by the constraints are no outliers. Among fewer than OUTLIER_MIN_POINTS points (a
+    hand sketch's), an unconstrained fit's one stray point (:func:`libelastica.stray.stray_point`:
+    far from the curve of the others). Indices into ``r.points``."""
+    return _fit_outliers(r, free_distances)[0]
+
+
+def _fit_outliers(r, free_distances=None):
+    """:func:`fit_outliers` with stray_point's figures (index, distance, noise, gain) where
+    it named a stray point, else None."""
     from .fit import far_points
+    from .stray import stray_point
     if r.distances is None:
-        return np.empty(0, dtype=np.intp)
+        return np.empty(0, dtype=np.intp), None
     if free_distances is None and r.constraints and getattr(r, "free", None) is not None:
         free_distances = r.free.distances
-    return far_points(r.distances, r.points, free_distances=free_distances)
+    far = far_points(r.distances, r.points, free_distances=free_distances)
+    if len(far) or r.constraints:
+        return far, None
+    stray = stray_point(r)
+    return (far, None) if stray is None else (np.array([stray[0]], dtype=np.intp), stray)
 
 
 def _warn_outliers(r) -> None:
     """:func:`fit`'s OutlierWarning of result ``r`` where :func:`fit_outliers` names points
     (numbered in the caller's order: ``r.order``'s where fitted in curve order)."""
-    far = fit_outliers(r)
+    far, stray = _fit_outliers(r)
     if not len(far):
         return
     rows = sorted(int(r.order[i]) for i in far) if r.order is not None else far
     free = r.free.distances if r.constraints and r.free is not None else None
-    warnings.warn(OutlierWarning("fit: " + outliers_summary(r.distances, far, rows, free), rows),
-                  stacklevel=4)     # (_warn_outliers, _fit, fit, its caller)
+    said = outliers_summary(r.distances, far, rows, free) if stray is None else \
+        stray_summary(len(r.points), stray, rows[0])
+    # stacklevel: _warn_outliers, _fit, fit, its caller
+    warnings.warn(OutlierWarning("fit: " + said, rows), stacklevel=4)
+
+
+def stray_summary(n: int, stray, row: int, unit: str = "",
+                  length: Optional[LengthFormat] = None) -> str:
+    """What a warning of one stray point among few says (:func:`fit`'s OutlierWarning, the
+    CLI's and FreeCAD's): stray: :func:`libelastica.stray.stray_point`'s figures; row: its
+    number for the user (counted from 0, or FreeCAD's vertex number: ``unit``, ``length``
+    as in :func:`outliers_summary`): "1 of 18 points lies 150 from the curve through the
+    others, 210 x their noise (0.71): dragged off? (point 10, counted from 0) ..."."""
+    fmt = lengths(unit, length)
+    return (f"1 of {n} points lies {fmt(stray[1], 3)} from the curve through the others, "
+            f"{stray[1] / stray[2]:.2g} x their noise ({fmt(stray[2], 2)}), which lie "
+            f"{stray[3]:.2g} x nearer their curve without it: a point dragged off? (point {row}, "
+            "counted from 0) It pulls the fit towards itself: remove or move it to fit the rest")

@@ -1,0 +1,89 @@
+"""One stray point among a hand sketch's few points (QA25gui F1): named by el.fit's
+OutlierWarning in both models and both orders, the drawn order kept by curve_order; clean
+sketches draw no such warning."""
+import warnings
+
+import numpy as np
+import pytest
+
+import libelastica as el
+from fit_data import sketched_s
+
+
+def _qa25gui_sketch():
+    """QA25gui's p6.py: 18 points drawn along a 330 mm curve, 0.4 mm noise, at (1500, -800),
+    point 5 6 mm off (a wobble), point 10 mis-dragged 150 mm."""
+    c = el.SmoothElastica(x0=0.0, y0=0.0, phi=-1.028, mu=(1.0 / 105.0) ** 2, k=0.65, q=0.25,
+                          length=330.0)
+    xy = c.points(np.linspace(0, c.length, 60))
+    rng = np.random.default_rng(3)
+    idx = np.sort(rng.choice(np.arange(1, 59), 16, replace=False))
+    idx = np.r_[0, idx, 59]
+    pts = xy[idx] + rng.normal(0, 0.4, (len(idx), 2)) + np.array([1500.0, -800.0])
+    pts[5, 1] += 6.0
+    pts[10, 1] += 150.0
+    return pts
+
+
+def _outliers(points, **kw):
+    with warnings.catch_warnings(record=True) as w:
+        warnings.simplefilter("always")
+        r = el.fit(points, **kw)
+    return r, [x.message for x in w if isinstance(x.message, el.OutlierWarning)]
+
+
+@pytest.mark.parametrize("model", ["discrete", "smooth"])
+@pytest.mark.parametrize("order", ["given", "curve"])
+def test_qa25gui_stray_point_is_named(model, order):
+    pts = _qa25gui_sketch()
+    r, said = _outliers(pts, model=model, order=order)
+    assert len(said) == 1 and said[0].indices == (10,), [str(m) for m in said]
+    assert "point 10" in str(said[0]) and "through the others" in str(said[0])
+    # the drawn order is kept: the stray point is no end of the curve's, and no 608 mm hook
+    assert r.order is None or list(r.order) == list(range(18))
+
+
+def test_curve_order_keeps_the_drawn_order_but_for_a_stray_point():
+    pts = _qa25gui_sketch()
+    assert list(el.curve_order(pts)) == list(range(18))
+    # a point that belongs at an end, made last, still moves there (a step from its neighbour)
+    good = pts.copy()
+    good[10, 1] -= 150.0
+    moved = np.r_[good[1:10], good[:1], good[10:]]
+    assert list(el.curve_order(moved)) in ([9] + list(range(9)) + list(range(10, 18)),
+                                           (list(range(17, 9, -1)) + list(range(9)) + [9]))
+
+
+def _dragged(n, seed, factor, offset):
+    pts, truth = sketched_s(seed, n, wobble=0.0)
+    rng = np.random.default_rng(100 + seed)
+    noise = 0.1
+    pts = pts + rng.normal(0, noise, pts.shape) + np.asarray(offset)
+    i = int(rng.integers(1, n - 1))
+    tangent = np.diff(pts[[i - 1, i + 1]], axis=0)[0]
+    normal = np.array([-tangent[1], tangent[0]]) / np.hypot(*tangent)
+    pts[i] += factor * noise * normal * (1 if seed % 2 else -1)
+    return pts, i
+
+
+# (20 x the noise is not named reliably yet: the others' noise among 7 to 17 points reads
+# 3 to 10 times the true 0.1 there: see stray.py)
+@pytest.mark.parametrize("n, factor", [(8, 300), (12, 60), (12, 300), (18, 60), (18, 300)])
+@pytest.mark.parametrize("offset", [(0.0, 0.0), (1500.0, -800.0)])
+def test_a_point_dragged_off_a_hand_sketch_is_named(n, offset, factor):
+    for seed in range(3):
+        pts, i = _dragged(n, seed, factor, offset)
+        for model in ("discrete", "smooth"):
+            for order in ("given", "curve"):
+                _, said = _outliers(pts, model=model, order=order)
+                assert len(said) == 1 and said[0].indices == (i,), \
+                    (seed, model, order, i, [str(m) for m in said])
+
+
+@pytest.mark.parametrize("n", [8, 12, 15, 18])
+def test_clean_hand_sketches_draw_no_outlier_warning(n):
+    for seed in range(10):
+        pts, _ = sketched_s(seed, n)
+        for model in ("discrete", "smooth"):
+            r, said = _outliers(pts, model=model)
+            assert said == [] and len(el.fit_outliers(r)) == 0, (seed, model, [str(m) for m in said])
