@@ -334,6 +334,28 @@ def _far_points(data, dist, plane, free=None):
             "outliers? Each pulls the fit towards itself: remove them to fit the rest"]
 
 
+def _stray(result, numbers, plane):
+    """The warning for one stray point among a hand sketch's few (el.stray_point: far from
+    the curve through the others, which it pulls; QA25gui F1: one of 18 sketched points
+    mis-dragged 150 mm off, fitted with no word), naming it by its number as given (from 1,
+    PointNumbers') and its place, else none. result: the library's fit of the points as
+    fitted (in the plane), numbers: each fitted point's number as given."""
+    stray = binding_module("stray").stray_point(result)
+    if stray is None:
+        return []
+    i, number = stray[0], int(numbers[stray[0]])
+    x, y = (float(v) for v in result.points[i])
+    at = plane.multVec(App.Vector(x, y, 0.0))
+    said = binding_module("misfit").stray_summary(len(result.points), stray, number,
+                                                    length=figure_mark)
+    # the number as the user sees it (from 1), not the binding's "counted from 0"
+    said = said.replace(f"(point {number}, counted from 0)",
+                        f"(point {number} as given, at "
+                        f"({', '.join(coordinate_mark(v) for v in (at.x, at.y, at.z))}) "
+                        f"{length_unit_mark(written=True)})")
+    return [said]
+
+
 def _misfit(xy, dist, plane, split):
     """The warning for points far farther from the fit than their own noise (el.misfit: they
     are not one elastica, or keyline), naming the likely corner's place, else none. xy (n, 2)
@@ -498,8 +520,9 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
                                                       constraints, step)
         warnings = warnings + (_left_out(beyond, dist, step, used) if split else []) + \
             _off_plane(user[:, 2], plane_rms, size) + \
-            _far_points(data[~beyond], dist[~beyond], plane,
-                        None if resampled or free_dist is None else free_dist[~beyond]) + \
+            (_far_points(data[~beyond], dist[~beyond], plane,
+                         None if resampled or free_dist is None else free_dist[~beyond])
+             or ([] if split or resampled or constraints else _stray(results[0], numbers, plane))) + \
             ([] if split else _wanders(results[0], plane)) + misfit
     except InputProblem:
         raise
