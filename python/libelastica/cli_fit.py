@@ -18,7 +18,7 @@ from .cli_common import (ANGLE_UNITS, EXIT_BADINPUT, EXIT_INTERNAL, EXIT_NOCONV,
                          tol_option)
 from .cli_outputs import out_path
 from .fit import quiet_fit
-from .misfit import fit_outliers
+from .misfit import _fit_outliers
 from .fit_cost import cost_summary, costly, end_costs, held_ends, local_cost_summary
 from .order import order_summary
 from .io import InputError, curve_to_dict, read_points, write_dxf_spline, write_json
@@ -87,9 +87,11 @@ def _side_record(res, data: np.ndarray, model: str, free=None) -> Dict[str, Any]
         rec["constraints"] = constraints_record(res.constraints)
     if getattr(res, "distances", None) is not None:
         # point-to-curve distances (+ = left of the curve) and each foot's arc length
+        far, stray = _fit_outliers(res, free)
         rec.update(distance=res.distance, distances=[float(v) for v in res.distances],
-                   foot_s=[float(v) for v in res.foot_s],
-                   outliers=[int(i) for i in fit_outliers(res, free)])
+                   foot_s=[float(v) for v in res.foot_s], outliers=[int(i) for i in far])
+        if stray is not None:   # one stray point among few (stray.py): its own figures
+            rec["stray"] = dict(distance=stray[1], noise=stray[2], gain=stray[3])
         if free is not None:
             rec["free_distances"] = [float(v) for v in free]
     return rec
@@ -215,14 +217,17 @@ def _warn_end_conditions(path, rec: Dict[str, Any]) -> None:
 def _warn_far_points(path, rec: Dict[str, Any]) -> None:
     """A warning on stderr naming the points far from the fitted curve (the record's
     "outliers": indices into the fitted points, the file's rows unless resampled)."""
-    from .misfit import outliers_summary
+    from .misfit import outliers_summary, stray_summary
     far = rec.get("outliers")
     if not far:
         return
     side = f" (side {rec['side'] + 1})" if "side" in rec else ""
     # el.fit's OutlierWarning in the command's words (the same rule and text: el.fit_outliers,
     # el.outliers_summary), the path before it
-    said = outliers_summary(rec["distances"], far, free_distances=rec.get("free_distances"))
+    st = rec.get("stray")
+    said = outliers_summary(rec["distances"], far, free_distances=rec.get("free_distances")) \
+        if st is None else stray_summary(len(rec["distances"]), (far[0], st["distance"], st["noise"],
+                                                                 st["gain"]), far[0])
     print(f"{PROG} fit: warning: {path}{side}: {said}", file=sys.stderr)
 
 

@@ -27,23 +27,29 @@ __all__ = ["STRAY_FACTOR", "STRAY_MIN_POINTS", "stray_point"]
 # distances measured across the curve, so position along it and length take none):
 # sqrt(sum d^2 / (m - STRAY_DOF)) over the m others. It is the others' noise, not
 # inflated by the stray point (noise_level of all the points read 4.93 for 0.4 mm of noise
-# where one lay 150 mm off: it is what hid it). Below STRAY_MIN_POINTS the rest are too few
-# for that estimate (7 others against 5 degrees of freedom) and nothing is said.
+# where one lay 150 mm off: it is what hid it). With fewer than STRAY_STEADY_DOF degrees of
+# freedom left (under 12 points) that figure is unsteady (clean 8-point sketches: a point
+# 34 x it off the others' curve), and noise_level of the others (their third differences,
+# from the points alone) is taken where larger: it reads a few uneven points' bends as
+# noise too (0.48 to 0.96 for 0.1 at 8 points), so fewer strays are named there. Below
+# STRAY_MIN_POINTS nothing is said.
 STRAY_DOF = 5
+STRAY_STEADY_DOF = 6
 STRAY_MIN_POINTS = 8
 # How far, in the rest's noise, a left-out point must lie from the rest's curve. Measured on
 # 202 clean sets of 8 to 19 points (fit_data.sketched_s x 40 seeds at 8, 12, 18 points;
 # 60 of QA25gui's 330 mm curve; /tmp/wander's clicked sets under 20 points), both models,
-# both orders (808 fits): the largest 13.4 x (a loop's tip, STRAY_GAIN's case), 5.6 x where
-# the others came more than 1.5 x nearer. Points dragged 60 x the noise off 12 to 18
-# points lie 12 x and more; 20 x the noise is NOT reliably named: noise_level of 7 to 17
-# uneven points reads their bends as noise (0.27 to 0.96 for 0.1).
+# both orders (808 fits): from 12 points on, at most 7.2 x where the others came more than
+# 1.3 x nearer (13.4 x a loop's tip among 16 clicks, 8.0 x an end click among 14: the
+# others no nearer, STRAY_GAIN's cases); at 8 points 7.4 x (noise_level's figure). Points
+# dragged 20 x the noise off 12 and 18 points lie 12.5 to 26 x; off 8 points, 60 x the
+# noise lie 5.8 to 13 x, 300 x 16 to 42 x.
 STRAY_FACTOR = 9.0
 # and its removal must bring the others STRAY_GAIN times nearer their curve (rms) than the
 # smooth curve through all the points lies from them: a loop's tip among 16 clicks lay
 # 13 x the others' noise off their curve (the loop gone without it), but the curve through
 # all of them passed every one within 0.2 px: no point pulled it.
-STRAY_GAIN = 2.0
+STRAY_GAIN = 1.5
 # and beyond STRAY_FLOOR of the points' extent: points on a curve to rounding (the model's
 # own small misfit) have no noise to measure by
 STRAY_FLOOR = 1e-4
@@ -85,11 +91,18 @@ def _candidates(pts: np.ndarray, d: np.ndarray) -> list:
     return order + ([j] if j not in order else [])
 
 
+def _as_given(order) -> bool:
+    """Whether the order is the points' own, run either way."""
+    k = np.arange(len(order))
+    return bool(np.array_equal(order, k) or np.array_equal(order, k[::-1]))
+
+
 def stray_point(r, model: Optional[str] = None):
     """The one stray point of fit result ``r`` (its index into ``r.points``) with its distance
     to the curve of the others and their noise, as (index, distance, noise); None where there
     is none, or the points are fewer than STRAY_MIN_POINTS or OUTLIER_MIN_POINTS or more
-    (far_points judges those), or the fit holds end conditions, fixed parameters or bounds.
+    (far_points judges those), or the fit holds end conditions, or was made in a curve order
+    that is not the points' own (``r.order``; FreeCAD asks only of points in their order).
     model: the fit's ("discrete" / "smooth"), default r.curve's."""
     from .fit import OUTLIER_MIN_POINTS, judging_fit
     from .core import SmoothElastica
@@ -98,7 +111,9 @@ def stray_point(r, model: Optional[str] = None):
     n = len(pts)
     if r.distances is None or not STRAY_MIN_POINTS <= n < OUTLIER_MIN_POINTS or r.constraints:
         return None
-    if getattr(r, "fixed", None) or getattr(r, "bounds", None):
+    if r.order is not None and not _as_given(r.order):
+        # a cloud's curve order is a guess, and a point off it may be the order's fault: a
+        # loop of 12 clicks in curve order (cut across) left one 12 x the others' noise off
         return None
     if model is None:
         model = "smooth" if isinstance(r.curve, SmoothElastica) else "discrete"
@@ -118,7 +133,9 @@ def stray_point(r, model: Optional[str] = None):
         except (ValueError, ArithmeticError, RuntimeError):
             continue
         dr = _polygon_distances(rest, _curve_polygon(fr.curve))
-        noise = max(float(np.sqrt(np.sum(dr * dr) / (len(rest) - STRAY_DOF))), noise_level(rest))
+        noise = float(np.sqrt(np.sum(dr * dr) / (len(rest) - STRAY_DOF)))
+        if len(rest) - STRAY_DOF < STRAY_STEADY_DOF:
+            noise = max(noise, noise_level(rest))
         gap = float(np.min(np.hypot(*(rest[[0, -1]] - pts[i]).T)))
         di = float(_polygon_distances(pts[i:i + 1], _curve_polygon(fr.curve, gap))[0])
         gain = float(np.sqrt(np.mean(np.delete(full, i) ** 2) / np.mean(dr * dr)))

@@ -334,6 +334,13 @@ def _far_points(data, dist, plane, free=None):
             "outliers? Each pulls the fit towards itself: remove them to fit the rest"]
 
 
+def _as_given(numbers):
+    """Whether the points were fitted in the order given (either way): a stray point is
+    named only there (el.stray_point: a cloud's curve order is a guess)."""
+    k = list(range(1, len(numbers) + 1))
+    return list(numbers) in (k, k[::-1])
+
+
 def _stray(result, numbers, plane):
     """The warning for one stray point among a hand sketch's few (el.stray_point: far from
     the curve through the others, which it pulls; QA25gui F1: one of 18 sketched points
@@ -522,7 +529,8 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
             _off_plane(user[:, 2], plane_rms, size) + \
             (_far_points(data[~beyond], dist[~beyond], plane,
                          None if resampled or free_dist is None else free_dist[~beyond])
-             or ([] if split or resampled or constraints else _stray(results[0], numbers, plane))) + \
+             or ([] if split or resampled or constraints or not _as_given(numbers)
+                 else _stray(results[0], numbers, plane))) + \
             ([] if split else _wanders(results[0], plane)) + misfit
     except InputProblem:
         raise
