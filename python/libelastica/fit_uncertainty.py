@@ -15,6 +15,8 @@ Residuals (what :func:`libelastica.fit` minimised):
   conditions, (p_0 - gamma(0)) . T(0) = 0 and (p_n-1 - gamma(L)) . T(L) = 0, held as
   constraints below (they fix where the curve starts along itself, x0, y0 with q, and its
   length, which no distance sees).
+  The discrete polygon's first and last vertices are tied to the first and last points by the
+  full vectors V_0 - p_0, V_n-1 - p_n-1 (fit_objective.c): 2 residuals each, n + 2 in all.
 - paired fits: the vector p_i - gamma(s_i) (smooth: s_i = t_i length, t_i held) or
   p_i - vertex_i (discrete, seed 000 (4.6)): 2 residuals per point.
 
@@ -23,8 +25,9 @@ curve (variance s^2, as across it) moves the ends, added to the covariance by th
 least-squares step it makes (the length's standard error is mostly that).
 
 s^2 = RSS / (N - p): N the residuals of the points the fit fitted (``r.points``, unweighted,
-as :func:`fit` weighs none: n, or 2n paired; a keyline side's resampled polygon: its vertices,
-medians of runs of the scan, whose scatter their own s^2 measures); p the parameters the fit
+as :func:`fit` weighs none: n, n + 2 for the discrete polygon by distance, or 2n paired; a
+keyline side's resampled polygon: its vertices, medians of runs of the scan, whose scatter
+their own s^2 measures); p the parameters the fit
 really had: 7 less the fixed ones, the active constraints (held end points, tangents,
 curvatures, an exact length, a range's bound reached) and the trimming above. The covariance is
 s^2 Z (Z' J' J Z)^-1 Z' (plus the trimming's term) with Z a basis of the null space of the
@@ -259,7 +262,15 @@ def _residual_jacobian(r) -> Tuple[np.ndarray, float]:
     clamp = at_end & (dist > 0)
     e = nrm.copy()
     e[clamp] = off[clamp] / dist[clamp, None]
-    return -np.einsum("ic,icj->ij", e, J), float(np.sum(np.asarray(r.distances) ** 2))
+    rows = -np.einsum("ic,icj->ij", e, J)
+    if smooth or len(P) < 3:
+        return rows, float(np.sum(np.asarray(r.distances) ** 2))
+    # the discrete fit ties its end vertices to the first and last points by the full vectors
+    # V_0 - P_0, V_n-1 - P_n-1 (fit_objective.c discrete_orthogonal; 2 residuals each, their
+    # part along the polygon the only one that sees its length and start), the others by distance
+    ends = np.r_[V[0] - P[0], V[-1] - P[-1]]
+    return (np.vstack([-Jv[0], rows[1:-1], -Jv[-1]]),
+            float(np.sum(dist[1:-1] ** 2) + np.sum(ends ** 2)))
 
 
 def _constraint_rows(r, fixed: Optional[Mapping[str, float]]) -> Tuple[np.ndarray, list]:
