@@ -11,8 +11,9 @@ Residuals (what :func:`libelastica.fit` minimised):
   or on a corner of the discrete polygon, is not orthogonal: there e_i is the direction
   from the foot to the point and the foot stays at the end (s = length moves with the
   length: the Jacobian's length column at t = s/length = 1 is the end tangent).
-  A smooth orthogonal fit's curve is trimmed to the first and last points' feet: two
-  conditions, (p_0 - gamma(0)) . T(0) = 0 and (p_n-1 - gamma(L)) . T(L) = 0, held as
+  A smooth orthogonal fit's curve is trimmed to the least and greatest feet (fit_ends.c, the
+  points p_a, p_b they belong to; often the first and last): two
+  conditions, (p_a - gamma(0)) . T(0) = 0 and (p_b - gamma(L)) . T(L) = 0, held as
   constraints below (they fix where the curve starts along itself, x0, y0 with q, and its
   length, which no distance sees).
   The discrete polygon's first and last vertices are tied to the first and last points by the
@@ -232,6 +233,15 @@ def derived_quantities(curve) -> Dict[str, Tuple[float, np.ndarray]]:
     return out
 
 
+def _beyond_end(c: SmoothElastica, P: np.ndarray, end: int) -> bool:
+    """Whether point P lies off curve c's start (end 0) / end (1) along its tangent there: the
+    curve is not trimmed to its foot (a point beyond the end: its residual holds the end)."""
+    s = np.array([0.0 if end == 0 else c.length])
+    th = float(c.angle(s)[0])
+    off = P - c.points(s)[0]
+    return abs(off[0] * math.cos(th) + off[1] * math.sin(th)) > 1e-6 * max(c.length, 1e-300)
+
+
 def _residual_jacobian(r) -> Tuple[np.ndarray, float]:
     """(J, RSS): d residual / d params (N, 7) at the solution, and the residuals' sum of squares."""
     c, P = r.curve, r.points
@@ -318,15 +328,16 @@ def _constraint_rows(r, fixed: Optional[Mapping[str, float]]) -> Tuple[np.ndarra
             if held:
                 continue
             s = 0.0 if end == 0 else c.length
-            P = r.points[0 if end == 0 else -1]
+            # fit_ends.c el__fit_trim_to_feet cuts the curve to the least and greatest feet,
+            # whichever points they are (an uneven scan's second point may lie before its first)
+            P = r.points[int(np.argmin(r.foot_s) if end == 0 else np.argmax(r.foot_s))]
             G, th = c.points(np.array([s]))[0], float(c.angle(np.array([s]))[0])
             T, N = np.array([math.cos(th), math.sin(th)]), np.array([-math.sin(th), math.cos(th)])
-            if abs(np.dot(P - G, T)) > 1e-6 * max(c.length, 1e-300):
+            if _beyond_end(c, P, end):
                 continue          # the point lies beyond the end: its residual holds the end
             Je = c.jacobian(np.array([s]))[0]
             rows.append(-T @ Je + np.dot(P - G, N) * end_gradients(c, end)[0])
-            why.append("trimmed to the first point's foot" if end == 0 else
-                       "trimmed to the last point's foot")
+            why.append("trimmed to the first foot" if end == 0 else "trimmed to the last foot")
     return (np.array(rows) if rows else np.zeros((0, 7))), why
 
 
