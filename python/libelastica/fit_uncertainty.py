@@ -363,8 +363,10 @@ def _straight(r, rss: float, s2: float) -> Optional[str]:
     if r.distance != "orthogonal" or not np.isfinite(s2) or s2 <= 0:
         return None
     P = r.points - r.points.mean(axis=0)
-    rss_line = float(np.linalg.eigh(P.T @ P)[0][0])
-    excess = (rss_line - rss) / s2
+    # (eigh's least eigenvalue of exactly collinear points may round below 0, and the line
+    # can be no worse than the fit there: said as 0, not as -9.71e+06 s^2, revC 2)
+    rss_line = max(0.0, float(np.linalg.eigh(P.T @ P)[0][0]))
+    excess = max(0.0, (rss_line - rss) / s2)
     if excess >= STRAIGHT_CHI2:
         return None
     return (f"the points show no bend beyond their noise (a straight line's RSS only {excess:.3g} s^2 "

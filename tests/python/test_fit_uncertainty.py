@@ -91,6 +91,14 @@ def test_straight_points_leave_the_bend_undetermined_inf_with_a_reason():
     assert np.isfinite(se) and se < 1e-2 and abs(L - np.hypot(*(P[-1] - P[0]))) < 1e-2
 
 
+def test_exactly_collinear_points_say_no_negative_figure():
+    # revC 2: "a straight line's RSS only -9.71e+06 s^2 above the fit's": the least
+    # eigenvalue of exactly collinear points rounds below 0
+    t = np.linspace(0.0, 10.0, 30)
+    u = _fit(np.column_stack([t, 0.5 * t + 3.0])).uncertainty()
+    assert "no bend beyond their noise" in u.note and "RSS only 0 s^2" in u.note, u.note
+
+
 def test_cli_report_and_json_carry_the_standard_errors(tmp_path, capsys):
     from libelastica.cli import main
     c = el.SmoothElastica(**S_SHAPE)
