@@ -137,9 +137,11 @@ static int piles_up(int model, const double *p, const double *xy, const double *
      * pen went back over it, and the tie's residual held the polygon between that point and
      * the ink's end, the points beyond it fewer and nearer than the test below asks (QA24's
      * strokes, 9 px retraces: < 2 px beyond, 2.0-2.3 px short; test_fit_end_retrace.py).
-     * Not for the smooth curve: it reaches such ends on my strokes without it (0 of 190
-     * changed), and on bench_fit.py's noisy scans dense at one end it fired on 23 of 504,
-     * 5.5 x the CPU for an rms 0.04-18 % lower (/tmp/discends) */
+     * It is no mark of a retrace alone: on the discrete model it also fires on 9 of
+     * bench_fit.py's 504 curves, noisy scans dense at one end (the tied point inside the dense
+     * cloud), rms 0.04-1.6 % lower for ~3 x their CPU (revC). Not for the smooth curve: it
+     * reaches such ends without it (0 of 190 test strokes changed), and on those noisy scans
+     * it fired on 23 of 504, 5.5 x the CPU for an rms 0.04-18 % lower (discends' sweep) */
     const double in[2] = {fs[0], L - fs[n - 1]};
     for (int e = 0; e < 2 && model != FIT_SMOOTH; e++)
         if (c[e] >= PILE_LEAST && in[e] > FIT_RETRACE_PAST * noise) return 1;
