@@ -76,6 +76,8 @@ def cmd_g2quad(args) -> int:
            "ends": g.ends, "covers_source": g.covers_source, "ends_covered": g.ends_covered,
            "deviation": g.deviation,
            "curvature_jump": g.curvature_jump, "end_tangent_error_rad": g.end_tangent_error,
+           "source_end_tangent_error_rad": g.source_end_tangent_error,
+           "inflection_tangent_error_rad": g.inflection_tangent_error,
            "end_curvature_error": g.end_curvature_error,
            "join_angle_rad": g.join_angle, "join_curvature_jump": g.join_curvature_jump,
            "dropped": g.dropped,
@@ -102,8 +104,15 @@ def cmd_g2quad(args) -> int:
     print(f"  starts at ({start}), ends at ({end}), exactly on the source")
     print(f"  {g.g2_summary()}")
     print(f"  largest distance from the source: {g.deviation:.3g}")
-    if g.end_tangent_error is not None:
-        print(f"  end tangents off the source's by at most {np.degrees(g.end_tangent_error):.3g} deg")
+    # the source's own ends (what the words and the EndTangentWarning say), and apart the
+    # pieces' ends at the inflections, O(edge) there (QA25 F9: 'end tangents off ... 0.313
+    # deg' was the inflection's, the warning said 0.147 / 0.178 deg at the ends)
+    if g.source_end_tangent_error is not None:
+        print(f"  end tangents off the source's by at most "
+              f"{np.degrees(g.source_end_tangent_error):.3g} deg")
+    if g.inflection_tangent_error is not None:
+        print(f"  tangents at the inflections (where the pieces meet) off the source's by at "
+              f"most {np.degrees(g.inflection_tangent_error):.3g} deg")
     if g.end_curvature_error is not None:
         print(f"  end curvature off the source's by at most {g.end_curvature_error:.3g} "
               "(relative to the source's curvature scale: |k - k_src| / max(|k_src|, "

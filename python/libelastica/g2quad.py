@@ -39,6 +39,8 @@ class G2Quadratic(ValueEquality):
     source_end_tangent_error: the same (radians) at the source's own ends that the splines reach
     (~1e-13: x_1, x_2 placed for the tangent and the curvature, see g2_quadratic; O(edge)
     where that is not done: an end piece of fewer than 7 edges, or a farther spline);
+    inflection_tangent_error: the same (radians) at the pieces' ends at inflections (None: no
+    such end, or tangents unknown): O(edge), the end parabola there has no freedom left;
     covers_source: False
     when an end piece next to an inflection was too short to keep, so the splines
     start / stop at that inflection (§4.4), or (fit_ends=False) when the polyline's last
@@ -80,6 +82,7 @@ class G2Quadratic(ValueEquality):
     source_end_tangent_error: Optional[float] = None
     seam_angle: Optional[float] = None
     seam_curvature_jump: Optional[float] = None
+    inflection_tangent_error: Optional[float] = None
 
     def g2_summary(self) -> str:
         """Which joints are G2, in words (the CLI's and FreeCAD's line): the joints inside
@@ -625,7 +628,7 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
         seg = np.linalg.norm(np.diff(samples, axis=0), axis=1)
         dropped = float(seg[:idx[0]].sum()), float(seg[idx[-1]:].sum())
         length = float(seg.sum())
-    splines, jump, dev, terr, serr, missed = [], 0.0, 0.0, 0.0, [], []
+    splines, jump, dev, terr, serr, ierr, missed = [], 0.0, 0.0, 0.0, [], [], []
     poly = ap.points.copy()
     for p in range(npieces):
         a, b = ap.piece_start[p], ap.piece_start[p + 1]
@@ -699,6 +702,8 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                 err = abs(math.atan2(vec[0] * ref[1] - vec[1] * ref[0],
                                      vec[0] * ref[0] + vec[1] * ref[1]))
                 terr = max(terr, err)
+                if not own:     # a piece's end at an inflection
+                    ierr.append(err)
                 if own:
                     serr.append(err)
                     why = {True: gave_up[j], False: NO_G2_END}.get(holds[j])
@@ -727,7 +732,8 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                     join_curvature_jump=kjump,
                     end_curvature_error=max(kerr) if kerr else None, dropped=dropped,
                     source_end_tangent_error=max(serr) if serr else None,
-                    seam_angle=seam and seam[0], seam_curvature_jump=seam and seam[1])
+                    seam_angle=seam and seam[0], seam_curvature_jump=seam and seam[1],
+                    inflection_tangent_error=max(ierr) if ierr else None)
     if seam is not None and closed and (seam[0] > SEAM_G2 or seam[1] > SEAM_G2):
         missed.append(("seam", seam[0], (
             f"the closed outline has a corner where it closes (point 0), relative "

@@ -1,0 +1,64 @@
+"""`elastica g2quad`'s tangent lines say what their words say (QA25 F9): 'end tangents off the
+source's by at most 0.313 deg' of an S through 8 ducks at 24 edges was the error at the
+INFLECTION (the pieces' ends there, O(edge)); its own warning said 0.147 / 0.178 deg at the
+source's ends. The ends' figure is printed under its name, the inflection's under its own,
+and the JSON has both (radians)."""
+from __future__ import annotations
+
+import json
+import re
+
+import numpy as np
+
+import libelastica as el
+from cli_run import cli
+
+# QA25 glyph.py's open stroke 'S' spine: hand-placed ducks of a type designer
+DUCKS_S = [(520, 700), (380, 640), (330, 520), (450, 420), (580, 320), (560, 180), (420, 120),
+           (300, 170)]
+
+
+def _figure(text: str, words: str) -> float:
+    m = re.search(re.escape(words) + r" by at most ([0-9.eE+-]+) deg", text)
+    assert m, (words, text)
+    return float(m.group(1))
+
+
+def test_end_tangent_line_gives_the_source_ends_and_the_inflection_its_own(capsys, tmp_path):
+    csv = tmp_path / "s.csv"
+    csv.write_text("".join(f"{x},{y}\n" for x, y in DUCKS_S))
+    code, out, err = cli(capsys, "spline", csv, "--json", tmp_path / "sp.json")
+    assert code == 0, err
+    code, out, err = cli(capsys, "g2quad", tmp_path / "sp.json", "--edges", "24",
+                         "--json", tmp_path / "g.json")
+    assert code == 0, err
+    doc = json.loads((tmp_path / "g.json").read_text())
+    ends_deg = np.degrees(doc["source_end_tangent_error_rad"])
+    infl_deg = np.degrees(doc["inflection_tangent_error_rad"])
+    assert doc["pieces"] == 2
+    # the case QA25 met: the inflection's error is the larger, the all-ends figure is it
+    assert infl_deg > 1.5 * ends_deg
+    assert np.isclose(np.degrees(doc["end_tangent_error_rad"]), max(ends_deg, infl_deg))
+    said_ends = _figure(out, "end tangents off the source's")
+    said_infl = _figure(out, "tangents at the inflections (where the pieces meet) off the source's")
+    assert said_ends == float(f"{ends_deg:.3g}")
+    assert said_infl == float(f"{infl_deg:.3g}")
+    # the warning's figures (start, end) are the source ends': the printed line is their max
+    warned = [float(v) for v in re.findall(r"(?:start|end) tangent is ([0-9.eE+-]+) deg off", err)]
+    if warned:
+        assert said_ends == float(f"{max(warned):.3g}")
+
+
+def test_one_piece_prints_no_inflection_line(capsys, tmp_path):
+    """An arc (no inflection): the ends' line only, the JSON's inflection figure null."""
+    c = el.SmoothElastica(x0=0, y0=0, phi=0, mu=1.0, k=1.2, q=0.0, length=2.0)
+    (tmp_path / "c.json").write_text(json.dumps(el.io.curve_to_dict(c)))
+    code, out, err = cli(capsys, "g2quad", tmp_path / "c.json", "--edges", "24",
+                         "--json", tmp_path / "g.json")
+    assert code == 0, err
+    doc = json.loads((tmp_path / "g.json").read_text())
+    assert doc["inflection_tangent_error_rad"] is None
+    assert "inflections" not in out.split("end tangents off")[1].split("\n")[0]
+    assert "tangents at the inflections" not in out
+    assert _figure(out, "end tangents off the source's") == \
+        float(f"{np.degrees(doc['source_end_tangent_error_rad']):.3g}")
