@@ -49,9 +49,11 @@ def main():
     pts = el.affine_polyline(loop, 60).points
     timing("quadratic_bspline_n60", lambda: el.quadratic_bspline(pts), repeat=100)
     # g2_quadratic at many edges: its deviation's nearest-point search (report.closest_points,
-    # branch and bound; 34 s at n = 1000 when every segment was tried for every point)
+    # branch and bound; 34 s at n = 1000 when every segment was tried for every point);
+    # n = 24, a glyph's S (QA25 F6: 84 ms CPU a call when ~230 splines were built in
+    # g2ends' end searches, one per trial)
     s_curve = el.SmoothElastica(x0=0, y0=0, phi=0, mu=1.0, k=0.8, q=-0.6, length=4.0)
-    for n, repeat in ((1000, 3), (5000, 1)):
+    for n, repeat in ((24, 20), (1000, 3), (5000, 1)):
         ts = []
         for _ in range(repeat):
             t0 = time.perf_counter()

@@ -25,6 +25,74 @@ def _start_curvature(bs) -> float:
     return float((d0[0] * d1[1] - d0[1] * d1[0]) / (2.0 * np.linalg.norm(d0) ** 3))
 
 
+def _start_parabola(P, x1, x2, x3):
+    """The start of g2_bspline(x, P, ...) from the four points it depends on (P = start,
+    x_1, x_2, x_3: floats (x, y)), without building the spline: (curvature, c - P) of its
+    first Bezier segment (P, c, m_2) as _start_curvature and poles[1] - poles[0] read them;
+    NaN where el_affine_g2_bspline refuses the start (EL_EDOM: P not ahead of the joint's
+    tangent); None where the C function must decide (non-finite input, A_2 = 0, knots or
+    poles near overflow). The C code's operations in its order (affine.c g2_end; the joint
+    m_2 = (c + lambda x_2)/(1 + lambda) as _start_curvature takes it from the knots): the
+    same bits. Its defining identity: the end parabola (P, c, m_2), c = m_2 - (lambda/2) v_1,
+    lambda^2 = 2 det(m_2 - P, v_1) / A_2, starts with curvature det(c - P, m_2 - c) /
+    (2 |c - P|^3) (affine.c's derivation; tests/python/test_g2ends_closed_form.py)."""
+    v1x, v1y = x2[0] - x1[0], x2[1] - x1[1]
+    A = v1x * (x3[1] - x2[1]) - v1y * (x3[0] - x2[0])
+    if not (A != 0.0 and math.isfinite(A + x1[0] + x1[1] + x2[0] + x2[1])):
+        return None
+    m2x, m2y = 0.5 * (x1[0] + x2[0]), 0.5 * (x1[1] + x2[1])
+    l2 = 2.0 * ((m2x - P[0]) * v1y - (m2y - P[1]) * v1x) / A
+    if not (l2 > 0.0) or not math.isfinite(l2):
+        return math.nan
+    lam = math.sqrt(l2)
+    if not lam < 1e15:          # knots lam + j no longer increasing: C's check decides
+        return None
+    h = 0.5 * lam
+    cx, cy = m2x - h * v1x, m2y - h * v1y
+    k2 = lam + 1.0
+    a = k2 - lam
+    jx, jy = (a * cx + lam * x2[0]) / k2, (a * cy + lam * x2[1]) / k2
+    d0x, d0y = cx - P[0], cy - P[1]
+    if d0x == 0.0 and d0y == 0.0:  # (rounding: c on P; the built spline says)
+        return None
+    d1x, d1y = jx - cx, jy - cy
+    kappa = (d0x * d1y - d0y * d1x) / (2.0 * math.sqrt(d0x * d0x + d0y * d0y) ** 3)
+    return (kappa, d0x, d0y) if math.isfinite(cx + cy) else None
+
+
+def _end_refused(x: np.ndarray, start, end) -> Optional[bool]:
+    """Whether g2_bspline(x, start, end) is refused (DomainError) for a reason that no move
+    of x_1, x_2 changes: its end parabola's (x_{m-3}.. x_{m-1} and ``end``; m >= 7, or m >= 5
+    with x_1 alone moved); None where the C function must decide (A_{m-2} = 0: a
+    SingularError; near overflow)."""
+    m = len(x) - 1
+    P = (float(end[0]), float(end[1]))
+    e1, e2, e3 = (tuple(map(float, x[i])) for i in (m - 1, m - 2, m - 3))
+    # affine.c g2_end(end, m_{m-1}, v_{m-2}, A_{m-2}, -1): mu^2 = 2 det(m - P, v) / A
+    mx, my = 0.5 * (e1[0] + e2[0]), 0.5 * (e1[1] + e2[1])
+    vx, vy = e1[0] - e2[0], e1[1] - e2[1]     # v_{m-2}, as the C code takes it
+    wx, wy = e2[0] - e3[0], e2[1] - e3[1]     # v_{m-3}
+    A = wx * vy - wy * vx
+    if A == 0.0 or not math.isfinite(A):
+        return None             # (SingularError, not a DomainError: the C call says)
+    l2 = 2.0 * ((mx - P[0]) * vy - (my - P[1]) * vx) / A
+    if not (l2 > 0.0) or not math.isfinite(l2):
+        return True
+    return None if not l2 < 1e30 else False     # (near overflow: the C call decides)
+
+
+def _start_of(bs):
+    """(curvature, c - P) of a built spline's start as _start_parabola gives them: the
+    path where the C function decides."""
+    d = bs.poles[1] - bs.poles[0]
+    return _start_curvature(bs), float(d[0]), float(d[1])
+
+
+def _angle(dx: float, dy: float, T) -> float:
+    """Signed angle from the unit tangent T (floats) to the start leg (dx, dy) = c - P."""
+    return math.atan2(dx * T[1] - dy * T[0], dx * T[0] + dy * T[1])
+
+
 def _match_start(x: np.ndarray, start, end, kappa: float) -> Optional[np.ndarray]:
     """The polyline x (>= 6 vertices) with x_1 moved so that g2_bspline(x, start, end) starts
     with curvature kappa, or None (no such place within 0.5..1.5 x its edge).
@@ -32,7 +100,7 @@ def _match_start(x: np.ndarray, start, end, kappa: float) -> Optional[np.ndarray
     and the end parabola (start, c, m_2) bridging to it over ~1.5 h ends with ~0.71 kappa on
     a circle (legs 0.793 h and h/sqrt 2: (0.707/0.793)^3). x_1 slides on the line
     det(x_2 - x_1, v_2) = A (_slide_x1), which keeps A_2 = A and so every joint G2."""
-    return _slide_x1(x, start, end, lambda bs: _start_curvature(bs) - kappa)
+    return _slide_x1(x, start, end, lambda k, dx, dy: k - kappa)
 
 
 def _match_tangent(x: np.ndarray, start, end, tangent) -> Optional[np.ndarray]:
@@ -42,48 +110,61 @@ def _match_tangent(x: np.ndarray, start, end, tangent) -> Optional[np.ndarray]:
     end parabola would be straight, and so, joint by joint, every one), so _hold_start's
     curvature target cannot be met and the tangent is held alone (QA25 F4: a free spline's
     ends 0.147 deg off at 24 edges, warned at every count)."""
-    def angle(bs):
-        d = bs.poles[1] - bs.poles[0]
-        return math.atan2(d[0] * tangent[1] - d[1] * tangent[0], d @ tangent)
-    return _slide_x1(x, start, end, angle)
+    T = (float(tangent[0]), float(tangent[1]))
+    return _slide_x1(x, start, end, lambda k, dx, dy: _angle(dx, dy, T))
 
 
 def _slide_x1(x: np.ndarray, start, end, residual) -> Optional[np.ndarray]:
     """The polyline x (>= 6 vertices) with x_1 slid on the line det(x_2 - x_1, v_2) = A
     (v_1 = t u + (A/|v_2|) w, u = v_2/|v_2|, det(w, u) = 1), which keeps A_2 = A and so every
-    joint G2, to the root of ``residual(g2_bspline(x, start, end))`` nearest the polyline's
-    own t (a sign change on 41 points over 0.5..1.5 x it, then bisection); None if none."""
+    joint G2, to the root of ``residual(kappa, dx, dy)`` of g2_bspline(x, start, end)'s start
+    (its curvature and first leg c - P) nearest the polyline's own t (a sign change on 41
+    points over 0.5..1.5 x it, then bisection); None if none. Each trial's start is
+    _start_parabola's closed form, the same bits as the spline's (QA25 F6: ~100 splines
+    built a call for it before); the spline is built only where the C function decides."""
     v2 = x[3] - x[2]
     A = float(v2[1] * (x[2] - x[1])[0] - v2[0] * (x[2] - x[1])[1])
     n2 = float(np.hypot(*v2))
     u = v2 / n2
     w = np.array([u[1], -u[0]])
     t0 = float((x[2] - x[1]) @ u)
+    refused = _end_refused(x, start, end)
+    P = (float(start[0]), float(start[1]))
+    ux, uy, aw0, aw1 = float(u[0]), float(u[1]), float((A / n2) * w[0]), float((A / n2) * w[1])
+    x2, x3 = (float(x[2][0]), float(x[2][1])), (float(x[3][0]), float(x[3][1]))
+
+    def vertex(t):
+        return x2[0] - (t * ux + aw0), x2[1] - (t * uy + aw1)
 
     def f(t):
-        y = x.copy()
-        y[1] = x[2] - (t * u + (A / n2) * w)
-        try:
-            return residual(g2_bspline(y, start, end)), y
-        except DomainError:
-            return math.nan, y
+        k = _start_parabola(P, vertex(t), x2, x3)
+        if k is None or refused is None:    # (the C function decides: the spline built)
+            y = x.copy()
+            y[1] = vertex(t)
+            try:
+                return residual(*_start_of(g2_bspline(y, start, end)))
+            except DomainError:
+                return math.nan
+        return math.nan if refused or not isinstance(k, tuple) else residual(*k)
     ts = t0 * np.linspace(0.5, 1.5, 41)
-    fs = np.array([f(t)[0] for t in ts])
+    fs = np.array([f(float(t)) for t in ts])
     ok = np.isfinite(fs[:-1]) & np.isfinite(fs[1:]) & (np.sign(fs[:-1]) != np.sign(fs[1:]))
     if not ok.any():
         return None
     i = int(np.nonzero(ok)[0][np.argmin(np.abs(np.nonzero(ok)[0] - 20))])
-    lo, hi, flo = ts[i], ts[i + 1], fs[i]
+    lo, hi, flo = float(ts[i]), float(ts[i + 1]), float(fs[i])
     for _ in range(60):
         mid = 0.5 * (lo + hi)
-        fm = f(mid)[0]
+        fm = f(mid)
         if not math.isfinite(fm):
             return None
         if np.sign(fm) == np.sign(flo):
             lo, flo = mid, fm
         else:
             hi = mid
-    return f(lo if abs(flo) <= abs(f(hi)[0]) else hi)[1]
+    y = x.copy()
+    y[1] = vertex(lo if abs(flo) <= abs(f(hi)) else hi)
+    return y
 
 
 def _slid(x: np.ndarray, s: float, t: float) -> np.ndarray:
@@ -124,31 +205,49 @@ def _hold_start(x: np.ndarray, start, end, kappa: float, tangent) -> Optional[np
     t0 = float((x[2] - x[1]) @ u)
     scale = np.array([1.0, abs(t0)])
 
+    v3 = x[4] - x[3]
+    A3 = float(v3[1] * (x[3] - x[2])[0] - v3[0] * (x[3] - x[2])[1])
+    v3x, v3y = float(v3[0]), float(v3[1])
+    x2, x3 = (float(x[2][0]), float(x[2][1])), (float(x[3][0]), float(x[3][1]))
+    P, T = (float(start[0]), float(start[1])), (float(tangent[0]), float(tangent[1]))
+    refused = _end_refused(x, start, end)
+
     def f(z, box=HOLD_BOX):
+        """The residuals at z = (s, t), or None (outside the box, or no spline); the
+        spline's start by _start_parabola (_slid's operations on floats: the same bits)."""
         smax, tlo, thi = box
         if not (abs(z[0]) <= smax and tlo * abs(t0) <= abs(z[1]) <= thi * abs(t0)):
-            return None, None
-        y = _slid(x, *z)
-        try:
-            bs = g2_bspline(y, start, end)
-        except DomainError:
-            return None, None
-        d = bs.poles[1] - bs.poles[0]
-        angle = math.atan2(d[0] * tangent[1] - d[1] * tangent[0], d @ tangent)
-        return np.array([(_start_curvature(bs) - kappa) / abs(kappa), angle]), y
+            return None
+        sv, tv = float(z[0]), float(z[1])
+        y2 = (x2[0] + sv * v3x, x2[1] + sv * v3y)
+        v2x, v2y = x3[0] - y2[0], x3[1] - y2[1]
+        n2 = float(np.hypot(v2x, v2y))
+        ux, uy = v2x / n2, v2y / n2
+        an = A3 / n2
+        y1 = (y2[0] - (tv * ux + an * uy), y2[1] - (tv * uy + an * -ux))
+        k = _start_parabola(P, y1, y2, x3)
+        if k is None or refused is None:     # (the C function decides: the spline built)
+            try:
+                bs = g2_bspline(_slid(x, *z), start, end)
+            except DomainError:
+                return None
+            k = _start_of(bs)
+        elif refused or not isinstance(k, tuple):
+            return None
+        return np.array([(k[0] - kappa) / abs(kappa), _angle(k[1], k[2], T)])
 
     def newton(z, box):
-        r, y = f(z, box)
+        r = f(z, box)
         for _ in range(60):
             if r is None:
                 return None
             if np.max(np.abs(r)) < 1e-12:
-                return y + origin
+                return _slid(x, *z) + origin
             J = np.empty((2, 2))
             for j in range(2):
                 dz = np.zeros(2)
                 dz[j] = 1e-7 * scale[j]
-                rj = f(z + dz, box)[0]
+                rj = f(z + dz, box)
                 if rj is None:
                     return None
                 J[:, j] = (rj - r) / dz[j]
@@ -158,14 +257,14 @@ def _hold_start(x: np.ndarray, start, end, kappa: float, tangent) -> Optional[np
                 return None
             lam = 1.0
             while lam > 1e-4:
-                r2, y2 = f(z + lam * step, box)
+                r2 = f(z + lam * step, box)
                 if r2 is not None and np.linalg.norm(r2) < np.linalg.norm(r):
                     break
                 lam /= 2.0
             else:
                 break                       # no step improves: rounding's floor, or none
-            z, r, y = z + lam * step, r2, y2
-        return y + origin if np.max(np.abs(r)) < 1e-9 else None   # rounding: ~1e-10 at 1000 edges
+            z, r = z + lam * step, r2
+        return _slid(x, *z) + origin if np.max(np.abs(r)) < 1e-9 else None   # rounding: ~1e-10 at 1000 edges
 
     held = newton(np.array([0.0, t0]), HOLD_BOX)
     if held is not None:
@@ -177,7 +276,7 @@ def _hold_start(x: np.ndarray, start, end, kappa: float, tangent) -> Optional[np
     seeds = []
     for sv in np.linspace(-smax, smax, 13):
         for tf in np.linspace(tlo, thi, 13):
-            r = f(np.array([sv, tf * t0]), HOLD_WIDE)[0]
+            r = f(np.array([sv, tf * t0]), HOLD_WIDE)
             if r is not None:
                 seeds.append((float(np.linalg.norm(r)), sv, tf * t0))
     for _, sv, tv in sorted(seeds)[:HOLD_SEEDS]:

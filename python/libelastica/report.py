@@ -71,15 +71,19 @@ class Picture:
 
 def _closest_brute(p: np.ndarray, a: np.ndarray, d: np.ndarray) -> Tuple[np.ndarray, np.ndarray]:
     """Each point's closest foot on the segments a + t d, every segment tried: (foot (n, 2),
-    squared distance (n,)); ties go to the first segment."""
-    p3 = p[:, None, :]
-    dd = np.maximum(np.sum(d * d, axis=1), 1e-300)[None, :]
-    t = np.clip(np.sum((p3 - a[None]) * d[None], axis=2) / dd, 0.0, 1.0)
-    foot = a[None] + t[:, :, None] * d[None]
-    d2 = np.sum((foot - p3) ** 2, axis=2)
+    squared distance (n,)); ties go to the first segment. x and y apart ((n, m) arrays, no
+    (n, m, 2) ones summed over their last axis): the same operations in the same order, the
+    same bits, 2.4 x less time (QA25 F6: g2_quadratic's deviation spent most of its in here)."""
+    px, py = p[:, 0:1], p[:, 1:2]
+    ax, ay, dx, dy = a[:, 0], a[:, 1], d[:, 0], d[:, 1]
+    dd = np.maximum(dx * dx + dy * dy, 1e-300)
+    t = np.clip(((px - ax) * dx + (py - ay) * dy) / dd, 0.0, 1.0)
+    fx, fy = ax + t * dx, ay + t * dy
+    ex, ey = fx - px, fy - py
+    d2 = ex * ex + ey * ey
     i = np.argmin(d2, axis=1)
     r = np.arange(len(i))
-    return foot[r, i], d2[r, i]
+    return np.stack([fx[r, i], fy[r, i]], axis=1), d2[r, i]
 
 
 _BLOCK = 64     # points per chunk and segments per block of closest_points' search
