@@ -67,16 +67,22 @@ def test_defining_identity_start_curvature_of_the_parabola():
         assert menger == pytest.approx(k, rel=1e-3)
 
 
-def test_g2_quadratic_builds_a_few_splines_a_piece(monkeypatch):
-    """An S (2 pieces) at 24 edges, both ends' tangents held: each trial of _match_start /
-    _hold_start is the closed form; the splines built are the pieces' and their candidates."""
-    built = []
+@pytest.fixture
+def built(monkeypatch):
+    """The splines g2ends builds (g2_bspline's calls), counted in the list returned."""
+    calls = []
     real = g2ends.g2_bspline
 
     def counting(*a, **k):
-        built.append(1)
+        calls.append(1)
         return real(*a, **k)
     monkeypatch.setattr(g2ends, "g2_bspline", counting)
+    return calls
+
+
+def test_g2_quadratic_builds_a_few_splines_a_piece(built):
+    """An S (2 pieces) at 24 edges, both ends' tangents held: each trial of _match_start /
+    _hold_start is the closed form; the splines built are the pieces' and their candidates."""
     c = el.SmoothElastica(x0=0, y0=0, phi=0, mu=1.0, k=0.8, q=-0.6, length=4.0)
     g = el.g2_quadratic(c, 24)
     assert len(g.bsplines) == 2
@@ -139,16 +145,9 @@ def test_closed_form_trials_give_the_built_splines_ends(monkeypatch):
 
 
 @pytest.mark.parametrize("closed", [False, True])
-def test_g2_quadratic_of_a_free_or_closed_spline_builds_a_few_splines(monkeypatch, closed):
+def test_g2_quadratic_of_a_free_or_closed_spline_builds_a_few_splines(built, closed):
     """A free (natural-end) spline holds each end's tangent alone (_match_tangent) and a
     closed one holds both ends at its seam: each trial in closed form too."""
-    built = []
-    real = g2ends.g2_bspline
-
-    def counting(*a, **k):
-        built.append(1)
-        return real(*a, **k)
-    monkeypatch.setattr(g2ends, "g2_bspline", counting)
     ducks = np.array([(500, 720), (680, 620), (730, 360), (640, 110), (500, 40), (330, 110),
                       (250, 360), (320, 620)], float) if closed else np.array(
         [(520, 700), (380, 640), (330, 520), (450, 420), (580, 320), (560, 180), (420, 120),

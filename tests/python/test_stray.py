@@ -1,13 +1,13 @@
 """One stray point among a hand sketch's few points (QA25gui F1): named by el.fit's
 OutlierWarning in both models and both orders, the drawn order kept by curve_order; clean
 sketches draw no such warning."""
-import warnings
 
 import numpy as np
 import pytest
 
 import libelastica as el
 from fit_data import sketched_s
+from test_fit_warns_qa21 import _outliers_said as _outliers
 
 
 def _qa25gui_sketch():
@@ -23,13 +23,6 @@ def _qa25gui_sketch():
     pts[5, 1] += 6.0
     pts[10, 1] += 150.0
     return pts
-
-
-def _outliers(points, **kw):
-    with warnings.catch_warnings(record=True) as w:
-        warnings.simplefilter("always")
-        r = el.fit(points, **kw)
-    return r, [x.message for x in w if isinstance(x.message, el.OutlierWarning)]
 
 
 @pytest.mark.parametrize("model", ["discrete", "smooth"])
