@@ -494,8 +494,48 @@ def _follow_ends(sketch, geometry, ids):
             if g in ids and pos in (1, 2) and h not in ids and hpos in (1, 2) \
                     and 0 <= h < len(geometry) and isinstance(geometry[h], Part.LineSegment):
                 # in place: its Tag and construction mode kept (not a new segment)
-                _line_onto(geometry[h], hpos, _end_frame(old[g], pos),
-                           _end_frame(geometry[g], pos), c.Type == "Tangent")
+                if not _blocked(sketch, h):
+                    _line_onto(geometry[h], hpos, _end_frame(old[g], pos),
+                               _end_frame(geometry[g], pos),
+                               c.Type == "Tangent" and _far_end_free(sketch, h, hpos))
+
+
+# the constraints naming a line as a whole that turning it about an end keeps: its length
+_TURN_KEEPS = ("Distance", "Equal")
+_GEO_UNDEF = -2000      # Sketcher's GeoUndef: no second element (a line's own Distance)
+
+
+def _far_end_free(sketch, line, lpos):
+    """Whether the segment ``line``, joined at its end ``lpos`` (1 start, 2 end) to a copy's
+    end, may be turned about that end (_line_onto): its far end free. Free means that no
+    driving, active constraint of ``sketch`` names the far end (a Coincident to other
+    geometry or to the copy's other end, a DistanceX / DistanceY / PointOnObject / Symmetric
+    pinning it, a Block) or holds the line's direction or place (Horizontal, Vertical,
+    Angle, Parallel, Perpendicular, a Tangent along it, a point on it, a DistanceX / Y of
+    it): only its length (Distance, Equal) and constraints at the joined end itself. Else
+    the line's far end is held elsewhere: turned, the solver pulled the turn back by
+    bending the copy (a pinned far end: 2.74 mm off) or dragged what holds it (a chain to a
+    Vertical line: 12.4 mm), and a line closing the profile came out by constraint order;
+    such a line's near end is moved only and the Sketcher's solver decides, as before."""
+    far = 3 - lpos
+    for c in sketch.Constraints:
+        if not getattr(c, "Driving", True) or not getattr(c, "IsActive", True):
+            continue        # a reference dimension or a deactivated one holds nothing
+        refs = [(c.First, c.FirstPos), (c.Second, c.SecondPos), (c.Third, c.ThirdPos)]
+        mine = [pos for g, pos in refs if g == line]
+        if not mine or all(pos == lpos for pos in mine):
+            continue
+        if far in mine or c.Type not in _TURN_KEEPS or \
+                (c.Type == "Distance" and c.Second != _GEO_UNDEF):
+            return False
+    return True
+
+
+def _blocked(sketch, line):
+    """Whether ``line`` is held by a Block constraint: left where it is (set into the
+    geometry, moved onto the copy's new end, the Block held it there, 6.9 mm off)."""
+    return any(c.Type == "Block" and c.First == line and getattr(c, "IsActive", True)
+               for c in sketch.Constraints)
 
 
 def _end_frame(curve, pos):
@@ -510,7 +550,8 @@ def _line_onto(line, lpos, old, new, tangent):
     an end-to-end Tangent (``tangent``), the segment also turned about that end onto the new
     tangent, its length and its side (along the curve or back over it) kept. Moved only,
     its Tangent no longer held, the solver turned it by bending the copy (a copy again
-    with the line's far end free: the copy off the feature, the drift said so). A Tangent
+    with the line's far end free: the copy off the feature, the drift said so). ``tangent``
+    is False, the line moved only, where its far end is held (_far_end_free). A Tangent
     to an arc or another curve is left to the solver."""
     t0, (p1, t1) = old[1], new
     near, far = (line.StartPoint, line.EndPoint) if lpos == 1 else (line.EndPoint, line.StartPoint)
@@ -521,7 +562,9 @@ def _line_onto(line, lpos, old, new, tangent):
     start, end = (p1, far) if lpos == 1 else (far, p1)
     try:
         line.StartPoint, line.EndPoint = start, end
-    except Part.OCCError:   # the new start on the old end (a segment of no length between)
+    except RuntimeError:
+        # the new start on the old end (a segment of no length between): Part raises
+        # RuntimeError 'Both points are equal' there, not its OCCError (a subclass)
         line.EndPoint, line.StartPoint = end, start
 
 
@@ -570,11 +613,12 @@ def _replace_copy(sketch, earlier, curves):
             continue
         for r in refs:
             if r[0] >= 0 and r[0] not in olds and r[1] in (1, 2) and \
-                    isinstance(geometry[r[0]], Part.LineSegment):
+                    isinstance(geometry[r[0]], Part.LineSegment) and not _blocked(sketch, r[0]):
                 was, now = ((_end_frame(geometry[first], 1), _end_frame(curves[0], 1))
                             if "start" in at.values() else
                             (_end_frame(geometry[last], 2), _end_frame(curves[-1], 2)))
-                _line_onto(geometry[r[0]], r[1], was, now, c.Type == "Tangent")
+                _line_onto(geometry[r[0]], r[1], was, now,
+                           c.Type == "Tangent" and _far_end_free(sketch, r[0], r[1]))
     sketch.Geometry = geometry
     tags = [g.Tag for g in sketch.Geometry]
     # the constraints naming the old pieces deleted first: delGeometries moves those at a
