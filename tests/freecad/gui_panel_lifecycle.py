@@ -285,6 +285,59 @@ def ok_that_fails():
     App.closeDocument(doc.Name)
 
 
+def ok_fails_then_ok():
+    """OK into a sketch a macro line removed fails, then OK in the SAME panel into a sketch
+    that takes the copy (review revB 6: the test above cancels in between): the panel
+    closes, one Undo step 'Fit elastica'; Undo takes all of it back: the fit removed, the
+    target sketch as before, and the removed sketch (the macro's line ran in the panel's
+    transaction) back; Redo does it again."""
+    from freecad.elastica import taskpanels as T
+    doc, sk = fit_doc("ElasticaOkThenOk")
+    for name in ("Gone", "Prof"):
+        o = doc.addObject("Sketcher::SketchObject", name)
+        o.Placement = sk.Placement
+    doc.recompute()
+    prof = doc.getObject("Prof")
+    prof.addGeometry(Part.LineSegment(App.Vector(0, 0, 0), App.Vector(50, 0, 0)), False)
+    doc.recompute()
+    undo0, geo0 = list(doc.UndoNames), len(prof.Geometry)
+    panel = run_fit(doc, sk)
+    G.type_into(panel.step, "3")
+    G.wait()
+    panel.sketch.setCurrentIndex(panel.sketch.findData("Gone"))
+    Gui.doCommand(f"App.getDocument({doc.Name!r}).removeObject('Gone')")
+    G.pump()
+    click_ok()
+    G.pump()
+    said = G.error_line(panel) if T.CURRENT and T.CURRENT[0] is panel else ""
+    G.check("Copy into Gone failed, nothing was written: that sketch is no longer" in said
+            and said.endswith("Choose another sketch, or Cancel"),
+            f"the first OK fails, the panel open, why said ({said!r})")
+    panel.sketch.setCurrentIndex(panel.sketch.findData("Prof"))
+    click_ok()
+    G.pump()
+    G.screenshot("gui_ok_fails_then_ok.png")
+    fit = doc.getObject("ElasticaFit")
+    G.check(not T.CURRENT and list(doc.UndoNames) == ["Fit elastica"] + undo0
+            and len(prof.Geometry) == geo0 + 1 and fit is not None
+            and [e.split()[0] for e in fit.SketchCopies] == ["Prof"],
+            f"then OK into Prof in the same panel: closed, one Undo step ({doc.UndoNames}), "
+            f"{len(prof.Geometry)} geometries")
+    doc.undo()
+    G.pump()
+    G.check(doc.getObject("ElasticaFit") is None and len(prof.Geometry) == geo0
+            and doc.getObject("Gone") is not None and list(doc.UndoNames) == undo0,
+            f"Undo: the fit removed, Prof as before ({len(prof.Geometry)}), 'Gone' back "
+            f"({doc.getObject('Gone')}), undo {doc.UndoNames}")
+    doc.redo()
+    G.pump()
+    fit = doc.getObject("ElasticaFit")
+    G.check(fit is not None and len(prof.Geometry) == geo0 + 1
+            and doc.getObject("Gone") is None,
+            f"Redo: the fit and its copy again ({len(prof.Geometry)} geometries)")
+    App.closeDocument(doc.Name)
+
+
 def ok_on_a_source_broken_since():
     """OK with Copy into after a macro line left the points' sketch with 2 points (no
     recompute: the preview still shows the fit): OK's recompute fails, so the panel stays
@@ -324,6 +377,7 @@ def run_all(smoke):
     global G
     G = smoke
     ok_that_fails()
+    ok_fails_then_ok()
     ok_on_a_source_broken_since()
     cancel_on_failed_feature()
     delete_during_new_panel()

@@ -61,8 +61,9 @@ class Attempt:
         for o in reversed(doc.Objects):        # the new sketch (inside out: a Body's last)
             if o.Name not in self.names:
                 doc.removeObject(o.Name)
-        sk = self.sketch
-        if sk is not None and sk.Name in [o.Name for o in doc.Objects]:
+        # by its name: a sketch removed since is a deleted object (ReferenceError on .Name)
+        sk = doc.getObject(self.target) if self.sketch is not None else None
+        if sk is not None:
             geometry, constraints = self.state
             sk.Geometry = geometry              # first: the constraints name its indices
             sk.Constraints = constraints
@@ -75,17 +76,31 @@ class Attempt:
         doc.recompute()
 
     def said(self, exc):
-        """Why OK failed, for the panel's error line and the report view ('Copy into Prof
-        failed, nothing was written: ...'); a sketch gone: said so, not Python's words
-        ("'NoneType' object has no attribute 'InList'")."""
+        """Why OK failed, for the panel's error line and the report view, worded by what OK
+        was to do (review revB 3: every case ended 'Choose another sketch, or Cancel'):
+        - Copy into a sketch: 'Copy into Prof failed, nothing was written: ... Choose
+          another sketch, or Cancel'; a sketch gone said so, not Python's words
+          ("'NoneType' object has no attribute 'InList'");
+        - Copy into a new sketch: 'no sketch was made', and the other choices named (there
+          is no other new sketch to choose);
+        - no copy: 'OK failed: ...', and that the panel's edits stay set (they were set
+          before OK's lines ran: undo leaves them, Cancel takes them back), not 'nothing
+          was written'."""
         target = self.target
-        sk = self.sketch if self.sketch is not None and \
-            self.doc.getObject(self.sketch.Name) is not None else None
-        what = "OK" if not target else "Copy into a new sketch" if target == "*new*" else \
-            f"Copy into {sk.Label if sk is not None else target}"
+        sk = self.doc.getObject(target) if self.sketch is not None else None
         if isinstance(exc, Unsolved):
-            return f"{what} failed, nothing was written: the curve's recompute failed: {exc}. " \
-                "Fix its input, or Cancel"
-        why = "that sketch is no longer in the document" if sk is None and target and \
-            target != "*new*" else str(exc) or type(exc).__name__
-        return f"{what} failed, nothing was written: {why}. Choose another sketch, or Cancel"
+            why = f"the curve's recompute failed: {exc}"
+            advice = "Fix its input, or Cancel"
+        else:
+            why = "that sketch is no longer in the document" if sk is None and target and \
+                target != "*new*" else str(exc) or type(exc).__name__
+            advice = None
+        if not target:
+            return f"OK failed: {why}. The panel's edits stay set: " + \
+                ("fix the curve's input" if advice else "change them") + ", or Cancel to drop them"
+        if target == "*new*":
+            return f"Copy into a new sketch failed, no sketch was made: {why}. " + \
+                (advice or "Choose a sketch or '(no copy)', or Cancel")
+        name = sk.Label if sk is not None else target
+        return f"Copy into {name} failed, nothing was written: {why}. " + \
+            (advice or "Choose another sketch, or Cancel")
