@@ -307,8 +307,16 @@ def ok_fails_then_ok():
     panel.sketch.setCurrentIndex(panel.sketch.findData("Gone"))
     Gui.doCommand(f"App.getDocument({doc.Name!r}).removeObject('Gone')")
     G.pump()
-    click_ok()
-    G.pump()
+    recorded, do = [], Gui.doCommand
+    Gui.doCommand = lambda code: recorded.append(code) or do(code)
+    try:
+        click_ok()
+        G.pump()
+    finally:
+        Gui.doCommand = do
+    # revB 2: the failed OK's lines stayed in the console and a recorded macro, whose
+    # replay stopped at getObject('Gone')
+    G.check(not recorded, f"the OK into a sketch gone records no line: {recorded}")
     said = G.error_line(panel) if T.CURRENT and T.CURRENT[0] is panel else ""
     G.check("Copy into Gone failed, nothing was written: that sketch is no longer" in said
             and said.endswith("Choose another sketch, or Cancel"),

@@ -680,6 +680,10 @@ class Panel(ExpressionFields):
         if code or not self._keep or edits:
             self.hold()
         attempt, failed = Attempt(self.doc, self.obj, self.copy_target()), None
+        if attempt.target not in ("", "*new*") and attempt.sketch is None:
+            # the sketch gone: no line recorded (revB 2: a macro's replay stopped at it)
+            self.ok_failed(attempt, LookupError(attempt.target))
+            return False
         try:
             for line in edits:
                 Gui.doCommand(line)
