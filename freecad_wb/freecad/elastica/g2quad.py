@@ -3,7 +3,9 @@ arc-length polyline -> one curvature-continuous uniform quadratic B-spline per
 inflection-free piece, ending exactly on the source's ends and inflections (at the
 source's ends with its tangent and curvature too, from 7 edges per end piece); its
 distance from the source, the largest curvature jump at a joint, the end
-tangent and curvature errors are shown."""
+tangent and curvature errors are shown. A closed source gives a closed B-spline (clamped,
+its ends meeting), opened at a corner or inside its longest edge; Status says the angle and
+curvature jump where it closes."""
 from __future__ import annotations
 
 import math
@@ -21,6 +23,9 @@ from .sources import gather_edges, sample_chain
 from .units import length_mark
 
 SAMPLES_PER_VERTEX = 20     # seed 002 §4.2: |p| ~ 20 |x|
+# a closed wire's seam (and where its edges meet) is smooth below this angle between its
+# tangents (radians): a sketch's periodic B-spline or circle meets itself ~1e-12 apart
+SEAM_SMOOTH = 1e-7
 LEFT_OUT_MARGIN = 3         # g2quad_core's search: counts judged without their own samples
 
 
@@ -37,9 +42,9 @@ def g2quad_core(edges, plane=None, nedges=24):
     except Part.OCCError as exc:     # edges below OCC's tolerance, say, that cannot be joined
         raise InputProblem(f"the edges do not join into one wire ({exc}): pick one connected "
                            "chain") from None
-    if closed:
-        raise InputProblem("the source is a closed curve: pick an open one (split it first)")
-    g, plane, own = _g2quad(edges, plane, n)
+    if closed:      # opened at its seam, both ends held to one tangent (_close_samples)
+        edges = _from_corner(edges)
+    g, plane, own = _g2quad(edges, plane, n, closed=closed)
     if not g.covers_source:     # QA17 M2: half an S drawn as a valid result
         gone = " + ".join(length_mark(d, 4) for d in g.dropped if d > 0)
         # the binding's search (el.g2_quadratic's CoverageError's), the chain sampled per
@@ -55,7 +60,7 @@ def g2quad_core(edges, plane=None, nedges=24):
         # in n .. 4n, the fewest count keeping the end pieces differs by 1.6 x at most.
         refs = []
         try:
-            sampled[top] = _chain_samples(edges, plane, top)
+            sampled[top] = _chain_samples(edges, plane, top, closed)
             for xy, tan in (own, sampled[top]):
                 refs.append((el().affine_end_pieces(xy, tan), len(xy)))
             needed[0] = refs[-1][0].n_both
@@ -68,7 +73,7 @@ def g2quad_core(edges, plane=None, nedges=24):
                 return True
             try:
                 if m not in sampled:
-                    sampled[m] = _chain_samples(edges, plane, m)
+                    sampled[m] = _chain_samples(edges, plane, m, closed)
                 xy, tan = sampled[m]
                 ends = el().affine_end_pieces(xy, tan)
             except Exception:       # (noqa: BLE001) not known: built, and refused, as before
@@ -77,7 +82,8 @@ def g2quad_core(edges, plane=None, nedges=24):
                 needed[0] = ends.n_both
             return el().g2quad.end_piece_left_out(ends, m, len(xy))
 
-        more = el().covering_edges(lambda m: _g2quad(edges, plane, m, sampled.pop(m, None))[0],
+        more = el().covering_edges(lambda m: _g2quad(edges, plane, m, sampled.pop(m, None),
+                                                     closed)[0],
                                    n, errors=(InputProblem,), leaves_out=leaves_out)
         ends = " and ".join(f"{length_mark(d, 4)} from its {w}"
                             for d, w in zip(g.dropped, ("start", "end")) if d > 0)
@@ -89,14 +95,79 @@ def g2quad_core(edges, plane=None, nedges=24):
                                f"none up to Edges = {top} tried covers it{need}: the source "
                                f"has an inflection {ends}; trim that end of it, or pick a "
                                "curve without it"))
-    return {"result": g, "placement": plane}
+    return {"result": g, "placement": plane, "closed": closed}
 
 
-def _chain_samples(edges, plane, n):
+def _chain_samples(edges, plane, n, closed=False):
     """The chain's SAMPLES_PER_VERTEX x n samples and unit tangents in ``plane``'s
     coordinates (the points _g2quad builds from at n edges); raises InputProblem."""
     pts, tangents = sample_chain(edges, SAMPLES_PER_VERTEX * n)
-    return _in_plane(pts, tangents, plane)[:2]
+    xy, tan = _in_plane(pts, tangents, plane)[:2]
+    return _close_samples(xy, tan) if closed else (xy, tan)
+
+
+def _close_samples(xy, tan):
+    """The samples of a closed wire as el.g2_quadratic takes a closed outline: the last
+    point the first, to the bit (OCC's seam vertex is ~1e-15 apart in the plane), and where
+    the wire is smooth there (tangents within SEAM_SMOOTH) both ends' tangents one, the
+    first's, so the splines close tangent-continuous (seam_angle ~1e-13; the library holds
+    each end to the curvature it estimates from that side's samples: on a C2 periodic
+    B-spline they differ by ~5e-5 relative, a circle's or an ellipse's ~1e-14); at a corner
+    both kept, and the splines close at that corner (seam_angle said)."""
+    xy, tan = xy.copy(), tan.copy()
+    xy[-1] = xy[0]
+    if _angle(tan[0], tan[-1]) <= SEAM_SMOOTH:
+        tan[-1] = tan[0]
+    return xy, tan
+
+
+def _angle(a, b):
+    """The angle between two plane vectors (radians)."""
+    return abs(math.atan2(a[0] * b[1] - a[1] * b[0], a[0] * b[0] + a[1] * b[1]))
+
+
+def _from_corner(edges):
+    """A closed chain (head to tail) opened where the outline should close: where two edges
+    meet at a corner (tangents more than SEAM_SMOOTH apart), if they do anywhere, that corner
+    kept (both its tangents held), not a turn the affine polyline cannot follow inside the
+    outline; else, of several edges, inside the longest one, split at its middle: its
+    joins may be G1 only (a wire of arcs: the curvature jumps where they meet), and the
+    G2 quadratic, G2 through them inside, then closes G2 where the source is smooth too
+    (opened at such a join it held each side's own curvature: 0.7 relative jump on an oval
+    of arcs R 50 / r 15). One edge (a circle, a periodic B-spline) as it is."""
+    if len(edges) < 2:
+        return edges
+    ordered = Part.Wire(edges).OrderedEdges
+    worst, at = SEAM_SMOOTH, None
+    for i, (a, b) in enumerate(zip(ordered, ordered[1:] + ordered[:1])):
+        ang = _edge_tangent(a, True).getAngle(_edge_tangent(b, False))
+        if ang > worst:
+            worst, at = ang, i + 1
+    if at is not None:
+        return ordered[at:] + ordered[:at]
+    i = max(range(len(ordered)), key=lambda j: ordered[j].Length)
+    e = ordered[i]
+    try:
+        halves = e.split(e.getParameterByLength(0.5 * e.Length)).Edges
+    except (Part.OCCError, ValueError):     # (noqa) not split: opened at the edge's start
+        return ordered[i:] + ordered[:i]
+    if len(halves) != 2:
+        return ordered[i:] + ordered[:i]
+    # the half the wire goes on with first: the one touching the next edge
+    nxt = ordered[(i + 1) % len(ordered)]
+    ends = [v.Point for v in nxt.Vertexes]
+    touches = lambda h: min((v.Point - p).Length for v in h.Vertexes for p in ends)  # noqa: E731
+    head, tail = sorted(halves, key=touches)
+    return [head] + ordered[i + 1:] + ordered[:i] + [tail]
+
+
+def _edge_tangent(e, at_end):
+    """An oriented edge's unit tangent along the wire at its end (or start)."""
+    u = e.LastParameter if at_end else e.FirstParameter
+    if e.Orientation == "Reversed":
+        u = e.FirstParameter if at_end else e.LastParameter
+    t = App.Vector(e.tangentAt(u)).normalize()
+    return -t if e.Orientation == "Reversed" else t
 
 
 def _in_plane(pts, tangents, plane):
@@ -107,14 +178,16 @@ def _in_plane(pts, tangents, plane):
     return xy, tan, plane
 
 
-def _g2quad(edges, plane, n, samples=None):
+def _g2quad(edges, plane, n, samples=None, closed=False):
     """(libelastica G2Quadratic of the chain with n edges, the plane, its samples (xy,
-    tangents)); raises InputProblem. ``samples``: _chain_samples(edges, plane, n) when the
-    caller has them (plane given)."""
+    tangents)); raises InputProblem. ``samples``: _chain_samples(edges, plane, n, closed)
+    when the caller has them (plane given); ``closed``: a closed wire (_close_samples)."""
     pts, tangents = sample_chain(edges, SAMPLES_PER_VERTEX * n) if samples is None else (None, None)
     try:
         if samples is None:
             xy, tan, plane = _in_plane(pts, tangents, plane)
+            if closed:
+                xy, tan = _close_samples(xy, tan)
         else:
             xy, tan = samples
         with warnings.catch_warnings():   # g2quad_core says what is left out
@@ -161,7 +234,8 @@ class G2QuadProxy(FeatureProxy):
 
     def setup(self, obj):
         add_link(obj, "App::PropertyLinkSubList", "Source", "Input",
-                 "The curve: edges of a sketch or any object (one open chain, in a plane)")
+                 "The curve: edges of a sketch or any object (one chain, in a plane; a closed "
+                 "one gives a closed B-spline, G2 where it closes if the source is smooth there)")
         add_geometry_index(obj, "SourceGeometry", "Source")
         add_property(obj, "App::PropertyInteger", "Edges", "G2 quadratic",
                      "Edges of the affine arc-length polyline (3 to 5000): the B-splines have "
@@ -220,7 +294,25 @@ class G2QuadProxy(FeatureProxy):
         obj.Poles = g.npoles
         obj.Polyline = to_3d(plc, g.polyline.points)
         obj.Plane = plc
-        set_said(obj, "Status", "ok")       # g2quad_core refuses what leaves the source out
+        # g2quad_core refuses what leaves the source out; a closed source: its seam said
+        set_said(obj, "Status", seam_status(g) if r.get("closed") else "ok")
+
+
+def seam_status(g):
+    """Status of a closed source's G2 quadratic: where the outline closes (its seam), the
+    angle between the last spline's end tangent and the first's start tangent and the
+    relative jump of their curvature (G2Quadratic.seam_angle / seam_curvature_jump), G2
+    below the library's SEAM_G2 (a smooth source: ~1e-13), else a corner there."""
+    if g.seam_angle is None:
+        return "ok"
+    angle, jump = math.degrees(g.seam_angle), g.seam_curvature_jump
+    g2 = g.seam_angle <= el().g2quad.SEAM_G2 and jump <= el().g2quad.SEAM_G2
+    return (f"ok: closed, G2 where it closes (tangents {angle:.2g} deg apart, relative "
+            f"curvature jump {jump:.2g})" if g2 else
+            f"ok: closed, not G2 where it closes: tangents {angle:.3g} deg apart, relative "
+            f"curvature jump {jump:.3g} (" + ("the source has a corner there)" if angle > 1e-6 else
+                                              "each end held to the source's curvature "
+                                              "estimated from its own side's samples)"))
 
 
 def make(doc, sources=(), **props):
@@ -229,4 +321,4 @@ def make(doc, sources=(), **props):
                        Source=source_list(sources), **props)
 
 
-__all__ = ["G2QuadProxy", "g2quad_core", "make"]
+__all__ = ["G2QuadProxy", "g2quad_core", "make", "seam_status"]
