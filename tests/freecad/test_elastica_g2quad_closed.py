@@ -51,10 +51,12 @@ class G2QuadClosedTest(S.DocTest):
         said = float(q.Status.split("curvature jump ")[1].split(")")[0].split(" ")[0])
         self.assertLess(said, kjump)     # (relative to the source's curvature scale)
         self.assertTrue(Part.Wire(q.Shape.Edges).isClosed())
-        # it follows the source: 200 points of it within the stated deviation of it
+        # it follows the source: 200 points of it within the stated deviation of it (measured
+        # by the library from the source's sample polyline: its chords' sagitta added, h^2 k / 8
+        # ~0.004 mm in the kidney's dent at 48 edges)
         for e in q.Shape.Edges:
             for p in e.discretize(200):
-                self.assertLess(source_shape.distToShape(Part.Vertex(p))[0], 1.01 * q.Deviation)
+                self.assertLess(source_shape.distToShape(Part.Vertex(p))[0], q.Deviation + 0.01)
         self.assertLess(q.Deviation, dev)
 
     def sketch(self, name, geos):
@@ -74,6 +76,21 @@ class G2QuadClosedTest(S.DocTest):
         sk = self.sketch("Egg", [c])
         q = self.feature(sk, ["Edge1"])
         self.assert_closed_g2(q, sk.Shape, 1.0, 1e-3)    # 170 mm egg
+
+    def test_a_closed_source_with_inflections(self):
+        """A kidney-shaped periodic B-spline (4 inflections): opened in the middle of its
+        longest inflection-free stretch, not at its first pole's point beside an inflection
+        (there its end pieces were left out at 24 and 48 edges, and at 96 it closed 2.2 deg
+        apart): 5 pieces, tangent-continuous where it closes at 48 edges."""
+        poles = [OFFSET + V(50 * math.cos(t), 30 * math.sin(t) - 22 * math.cos(t) ** 2 *
+                            (1 if math.sin(t) > 0 else 0), 0)
+                 for t in (2 * math.pi * i / 12 for i in range(12))]
+        c = Part.BSplineCurve()
+        c.buildFromPoles(poles, True, 3)
+        sk = self.sketch("Kidney", [c])
+        q = self.feature(sk, ["Edge1"], edges=48)
+        self.assertEqual(q.Pieces, 5)
+        self.assert_closed_g2(q, sk.Shape, 0.5, 1e-3)
 
     def test_a_circle(self):
         sk = S.circle_sketch(self.doc)

@@ -95,7 +95,8 @@ def g2quad_core(edges, plane=None, nedges=24):
                                f"none up to Edges = {top} tried covers it{need}: the source "
                                f"has an inflection {ends}; trim that end of it, or pick a "
                                "curve without it"))
-    return {"result": g, "placement": plane, "closed": closed}
+    corner = closed and _angle(own[1][0], own[1][-1]) > SEAM_SMOOTH
+    return {"result": g, "placement": plane, "closed": closed, "corner": corner}
 
 
 def _chain_samples(edges, plane, n, closed=False):
@@ -116,9 +117,25 @@ def _close_samples(xy, tan):
     both kept, and the splines close at that corner (seam_angle said)."""
     xy, tan = xy.copy(), tan.copy()
     xy[-1] = xy[0]
-    if _angle(tan[0], tan[-1]) <= SEAM_SMOOTH:
-        tan[-1] = tan[0]
-    return xy, tan
+    if _angle(tan[0], tan[-1]) > SEAM_SMOOTH:
+        return xy, tan
+    tan[-1] = tan[0]
+    # a source with inflections: the seam moved to the middle of its longest inflection-free
+    # stretch (the samples rolled), where the end pieces have room to hold the tangent and
+    # curvature; beside an inflection they were too short (a kidney-shaped periodic B-spline
+    # at 96 edges closed 2.2 deg apart, at 24 and 48 its end pieces were left out)
+    turn = tan[:-2, 0] * tan[1:-1, 1] - tan[:-2, 1] * tan[1:-1, 0]  # sign of the turning
+    sign = np().sign(turn)
+    sign = sign[sign != 0]
+    keep = np().flatnonzero(np().sign(turn) != 0)
+    if len(sign) < 3 or np().all(sign == sign[0]):
+        return xy, tan
+    change = np().flatnonzero(sign != np().roll(sign, -1))   # run ends (circular)
+    runs = np().diff(np().r_[change, change[0] + len(sign)])
+    j = int(np().argmax(runs))
+    mid = keep[(change[j] + 1 + runs[j] // 2) % len(sign)]
+    ring, tr = np().roll(xy[:-1], -mid, axis=0), np().roll(tan[:-1], -mid, axis=0)
+    return np().vstack([ring, ring[:1]]), np().vstack([tr, tr[:1]])
 
 
 def _angle(a, b):
@@ -295,14 +312,15 @@ class G2QuadProxy(FeatureProxy):
         obj.Polyline = to_3d(plc, g.polyline.points)
         obj.Plane = plc
         # g2quad_core refuses what leaves the source out; a closed source: its seam said
-        set_said(obj, "Status", seam_status(g) if r.get("closed") else "ok")
+        set_said(obj, "Status", seam_status(g, r.get("corner")) if r.get("closed") else "ok")
 
 
-def seam_status(g):
+def seam_status(g, corner=False):
     """Status of a closed source's G2 quadratic: where the outline closes (its seam), the
     angle between the last spline's end tangent and the first's start tangent and the
     relative jump of their curvature (G2Quadratic.seam_angle / seam_curvature_jump), G2
-    below the library's SEAM_G2 (a smooth source: ~1e-13), else a corner there."""
+    below the library's SEAM_G2 (a smooth source: ~1e-13), else why not: ``corner``, the
+    source's own corner there, else the library's end estimates."""
     if g.seam_angle is None:
         return "ok"
     angle, jump = math.degrees(g.seam_angle), g.seam_curvature_jump
@@ -310,9 +328,11 @@ def seam_status(g):
     return (f"ok: closed, G2 where it closes (tangents {angle:.2g} deg apart, relative "
             f"curvature jump {jump:.2g})" if g2 else
             f"ok: closed, not G2 where it closes: tangents {angle:.3g} deg apart, relative "
-            f"curvature jump {jump:.3g} (" + ("the source has a corner there)" if angle > 1e-6 else
-                                              "each end held to the source's curvature "
-                                              "estimated from its own side's samples)"))
+            f"curvature jump {jump:.3g} (" + (
+                "the source has a corner there)" if corner else
+                "each end held to the source's curvature estimated from its own side's "
+                "samples)" if angle <= 1e-6 else
+                "the source is smooth there: more Edges)"))
 
 
 def make(doc, sources=(), **props):
