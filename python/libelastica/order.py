@@ -92,7 +92,17 @@ def _moved_stray(xy, order) -> bool:
                                      or np.array_equal(rest, others[::-1])):
             continue
         step = float(np.max(np.hypot(*np.diff(xy[others], axis=0).T)))
-        return bool(np.min(np.hypot(*(xy[others] - xy[i]).T)) > step)
+        gaps = np.hypot(*(xy[others] - xy[i]).T)
+        # a point nearest an end of the others and ahead of it, within 45 degrees of the
+        # others' last step, belongs beyond that end (sparse offsets whose last step is their
+        # longest, the end row listed among the others), and is moved there
+        j = int(np.argmin(gaps))
+        if j in (0, n - 2):
+            last = xy[others[j]] - xy[others[1 if j == 0 else n - 3]]
+            ahead = xy[i] - xy[others[j]]
+            if float(np.dot(last, ahead)) > np.sqrt(0.5) * np.hypot(*last) * np.hypot(*ahead):
+                return False
+        return bool(gaps[j] > step)
     return False
 
 

@@ -47,6 +47,18 @@ def test_curve_order_keeps_the_drawn_order_but_for_a_stray_point():
                                            (list(range(17, 9, -1)) + list(range(9)) + [9]))
 
 
+
+def test_curve_order_moves_an_end_row_listed_inside_though_its_step_is_the_longest():
+    """Sparse offsets whose spacing grows to the end (the last step, 30, the longest), the end
+    row listed among the others: it lies farther from every other than their longest step, as
+    a stray point does, but nearest the others' end, where it belongs (revD: _moved_stray kept
+    the given zigzag 0..3, 100, 26..70)."""
+    x = np.array([0, 5, 11, 18, 26, 35, 45, 56, 70, 100.0]) + 1500.0
+    pts = np.column_stack([x, 0.002 * (x - 1500.0) ** 2 - 800.0])
+    given = [0, 1, 2, 3, 9, 4, 5, 6, 7, 8]
+    assert list(el.curve_order(pts[given])) in ([0, 1, 2, 3, 5, 6, 7, 8, 9, 4],
+                                                [4, 9, 8, 7, 6, 5, 3, 2, 1, 0])
+
 def _dragged(n, seed, factor, offset):
     pts, truth = sketched_s(seed, n, wobble=0.0)
     rng = np.random.default_rng(100 + seed)
