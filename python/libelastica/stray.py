@@ -57,6 +57,12 @@ STRAY_FLOOR = 1e-4
 # its sag between samples, L^2 kappa / (8 STRAY_SAMPLES^2), is below 1e-6 of L for kappa L
 # up to 8 (a curl of a turn and a quarter), far under STRAY_FACTOR x any noise it judges.
 STRAY_SAMPLES = 1024
+# A point alone in a stretch STRAY_GAP times longer than the others' median step (its
+# neighbours' chord) is not judged: left out, the others' curve wanders through the gap, and
+# its distance to it measures the gap, not a drag (revD: 8 uneven clicks of a sine, 1 px
+# noise, the one click between t 0.37 and 1.0 lay 34 px = 26 x 'their noise' off it; a dragged
+# point's neighbours lie about two steps apart).
+STRAY_GAP = 3.0
 
 
 def _polygon_distances(q: np.ndarray, V: np.ndarray) -> np.ndarray:
@@ -98,11 +104,12 @@ def _as_given(order) -> bool:
 
 
 def stray_point(r, model: Optional[str] = None):
-    """The one stray point of fit result ``r`` (its index into ``r.points``) with its distance
-    to the curve of the others and their noise, as (index, distance, noise); None where there
-    is none, or the points are fewer than STRAY_MIN_POINTS or OUTLIER_MIN_POINTS or more
-    (far_points judges those), or the fit holds end conditions, or was made in a curve order
-    that is not the points' own (``r.order``; FreeCAD asks only of points in their order).
+    """The one stray point of fit result ``r`` as (index into ``r.points``, its distance to
+    the curve of the others, their noise, gain: how many times nearer their curve they lie
+    than the smooth curve through all lies from them); None where there is none, or the
+    points are fewer than STRAY_MIN_POINTS or OUTLIER_MIN_POINTS or more (far_points judges
+    those), or the fit holds end conditions, or was made in a curve order that is not the
+    points' own (``r.order``; FreeCAD asks only of points in their order).
     model: the fit's ("discrete" / "smooth"), default r.curve's."""
     from .fit import OUTLIER_MIN_POINTS, judging_fit
     from .core import SmoothElastica
@@ -128,6 +135,9 @@ def stray_point(r, model: Optional[str] = None):
     best = None
     for i in _candidates(pts, d):
         rest = np.delete(pts, i, axis=0)
+        if 0 < i < n - 1 and np.hypot(*(pts[i + 1] - pts[i - 1])) > \
+                STRAY_GAP * np.median(np.hypot(*np.diff(rest, axis=0).T)):
+            continue
         try:
             fr = judging_fit(rest, model="smooth")
         except (ValueError, ArithmeticError, RuntimeError):
@@ -136,9 +146,13 @@ def stray_point(r, model: Optional[str] = None):
         noise = float(np.sqrt(np.sum(dr * dr) / (len(rest) - STRAY_DOF)))
         if len(rest) - STRAY_DOF < STRAY_STEADY_DOF:
             noise = max(noise, noise_level(rest))
+        # points on one curve to rounding (exact CAD points, one moved) have no noise: their
+        # floor, not 1e-14 ('2.8e+15 x their noise', and a division by zero at 0)
+        noise = max(noise, STRAY_FLOOR * extent)
         gap = float(np.min(np.hypot(*(rest[[0, -1]] - pts[i]).T)))
         di = float(_polygon_distances(pts[i:i + 1], _curve_polygon(fr.curve, gap))[0])
-        gain = float(np.sqrt(np.mean(np.delete(full, i) ** 2) / np.mean(dr * dr)))
+        gain = float(np.sqrt(np.mean(np.delete(full, i) ** 2) /
+                             max(float(np.mean(dr * dr)), (STRAY_FLOOR * extent) ** 2)))
         if di > STRAY_FACTOR * noise and di > STRAY_FLOOR * extent and gain > STRAY_GAIN and \
                 (best is None or di / noise > best[1] / best[2]):
             best = (i, di, noise, gain)

@@ -8,6 +8,7 @@ import pytest
 import libelastica as el
 from fit_data import sketched_s
 from test_fit_warns_qa21 import _outliers_said as _outliers
+from libelastica.stray import stray_point
 
 
 def _qa25gui_sketch():
@@ -58,6 +59,7 @@ def test_curve_order_moves_an_end_row_listed_inside_though_its_step_is_the_longe
     given = [0, 1, 2, 3, 9, 4, 5, 6, 7, 8]
     assert list(el.curve_order(pts[given])) in ([0, 1, 2, 3, 5, 6, 7, 8, 9, 4],
                                                 [4, 9, 8, 7, 6, 5, 3, 2, 1, 0])
+
 
 def _dragged(n, seed, factor, offset):
     pts, truth = sketched_s(seed, n, wobble=0.0)
@@ -110,3 +112,36 @@ def test_the_cli_names_the_stray_point_with_its_own_figures(tmp_path, capsys):
     assert "(point 10, counted from 0)" in err
     doc = json.loads(out.read_text())
     assert doc["outliers"] == [10] and doc["stray"]["distance"] > 100, doc.get("stray")
+
+
+# 8 clicks (1 px noise, uneven) of a sine's period and of a parabola's tip, every one within
+# 1.5 px of the drawn curve: one click alone in a long stretch (S: t 0.37 -> 0.64 -> 1.0)
+# was named 'dragged off' at 26 x / 11 x the others' noise (revD)
+_SPARSE_CLICKS = [
+    [[-0.6, -0.9], [15.3, 19.1], [16.5, 20.6], [41.2, 45.2], [64.4, 59.4], [109.8, 45.3],
+     [190.7, -45.6], [300.0, 0.5]],
+    [[199.0, -42.3], [57.8, -22.6], [28.6, -16.4], [77.6, 25.6], [124.3, 32.5], [133.3, 32.5],
+     [178.0, 37.5], [200.6, 40.3]]]
+
+
+@pytest.mark.parametrize("clicks", range(len(_SPARSE_CLICKS)))
+@pytest.mark.parametrize("offset", [(0.0, 0.0), (1500.0, -800.0)])
+def test_a_click_alone_in_a_long_stretch_is_not_named(clicks, offset):
+    pts = np.asarray(_SPARSE_CLICKS[clicks]) + np.asarray(offset)
+    for model in ("discrete", "smooth"):
+        r, said = _outliers(pts, model=model)
+        assert said == [] and stray_point(r) is None, (model, [str(m) for m in said])
+
+
+@pytest.mark.parametrize("n", [8, 12, 16])
+def test_a_point_moved_off_exact_points_is_named_with_a_floor_for_their_noise(n):
+    """Points exactly on a line (a CAD user's), one moved 30 off: named, their noise said as
+    the floor (1e-4 of the extent), not 1e-14 ('2.8e+15 x their noise (1.1e-14), which lie
+    9.4e+14 x nearer', revD)."""
+    pts = np.column_stack([np.linspace(0.0, 100.0, n), np.zeros(n)]) + np.array([1500.0, -800.0])
+    pts[n // 2, 1] += 30.0
+    for model in ("discrete", "smooth"):
+        r, said = _outliers(pts, model=model)
+        s = stray_point(r)
+        assert s is not None and s[0] == n // 2 and s[2] >= 1e-4 * 100.0, (model, s)
+        assert len(said) == 1 and "3e+03 x their noise (0.01)" in str(said[0]), [str(m) for m in said]
