@@ -125,11 +125,15 @@ def stray_point(r, model: Optional[str] = None):
     if model is None:
         model = "smooth" if isinstance(r.curve, SmoothElastica) else "discrete"
     extent = float(np.max(np.ptp(pts, axis=0)))
-    d = _polygon_distances(pts, _curve_polygon(r.curve))
+    # a smooth fit by distance measured its points' distances itself (exact feet): the
+    # polygon's 1024 samples only where it did not (a paired fit's, a discrete polygon's)
+    # (the polygon distances were 42 % of this function's time on 12-point fits, revD 4)
+    smooth_by_distance = model == "smooth" and r.distance == "orthogonal"
+    d = np.abs(r.distances) if smooth_by_distance else _polygon_distances(pts, _curve_polygon(r.curve))
     full = d
-    if model != "smooth":
+    if not smooth_by_distance:
         try:
-            full = _polygon_distances(pts, _curve_polygon(judging_fit(pts, model="smooth").curve))
+            full = np.abs(judging_fit(pts, model="smooth").distances)
         except (ValueError, ArithmeticError, RuntimeError):
             return None
     best = None
@@ -142,7 +146,7 @@ def stray_point(r, model: Optional[str] = None):
             fr = judging_fit(rest, model="smooth")
         except (ValueError, ArithmeticError, RuntimeError):
             continue
-        dr = _polygon_distances(rest, _curve_polygon(fr.curve))
+        dr = np.abs(fr.distances)
         noise = float(np.sqrt(np.sum(dr * dr) / (len(rest) - STRAY_DOF)))
         if len(rest) - STRAY_DOF < STRAY_STEADY_DOF:
             noise = max(noise, noise_level(rest))
