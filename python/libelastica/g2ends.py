@@ -390,3 +390,54 @@ def _menger_max(x: np.ndarray) -> float:
     den = np.linalg.norm(a, axis=1) * np.linalg.norm(b, axis=1) * np.linalg.norm(x[2:] - x[:-2], axis=1)
     ok = den > 0
     return float(np.max(2.0 * cross[ok] / den[ok])) if ok.any() else 0.0
+
+
+def _tangent_alone(x: np.ndarray, held: np.ndarray, start, end, t_start, t_end,
+                   which) -> Optional[np.ndarray]:
+    """``held`` with each end in ``which`` (0: start, 1: end) holding its unit tangent alone
+    (_match_tangent: x_1 / x_{m-1} slid on the uniform polyline x, x_2 / x_{m-2} as in x),
+    or None where one has no such place. Where both were to be held and that fails, or
+    holding both takes the spline farther from the source, the tangent alone: a near-free
+    end (curvature 6e-5 .. 6e-8 of the largest: its G2 hold strays, its tangent does not)
+    and a closed outline's seam (the same tangent at both ends: G1 at least)."""
+    y = held.copy()
+    for e in which:
+        if e == 0:
+            z = _match_tangent(x, start, end, t_start)
+            if z is None:
+                return None
+            y[1], y[2] = z[1], x[2]
+        else:
+            z = _match_tangent(x[::-1].copy(), end, start, -np.asarray(t_end))
+            if z is None:
+                return None
+            y[-2], y[-3] = z[1], x[-3]
+    return y
+
+
+def _seam_rounding(first, last, kscale: float) -> Tuple[float, float]:
+    """What the poles' coordinates resolve at a closed outline's seam (the first spline's
+    start, the last's end): (angle in radians, curvature jump relative to kscale). A pole
+    at |P| carries eps |P| of rounding; the end tangent, a leg d = P_1 - P_0 of length h,
+    turns by ~eps |P| / h, and the end curvature det(d_0, d_1) / (2 h^3) moves by
+    ~eps |P| h / h^3, i.e. eps |P| / (h^2 kscale) relative; x 16 for the few operations on
+    each (an 8-duck oval at (512345.678, 5012345.432), 64 edges: 1.2e-10 rad and 1.5e-9
+    apart, bounds 1.7e-8 and 1.3e-7; at the origin 1e-14, bounds 1e-15: SEAM_G2 governs)."""
+    P = max(float(np.max(np.abs(first.poles))), float(np.max(np.abs(last.poles))))
+    h = min(float(np.hypot(*(first.poles[1] - first.poles[0]))),
+            float(np.hypot(*(last.poles[-1] - last.poles[-2]))))
+    if not h > 0.0:
+        return 0.0, 0.0
+    res = float(16.0 * np.finfo(float).eps * P / h)
+    return res, res / (h * kscale) if kscale > 0.0 else res
+
+
+def _joins(splines) -> Tuple[float, float]:
+    """Largest tangent angle (radians) and signed-curvature jump where consecutive
+    pieces meet."""
+    angle = jump = 0.0
+    for a, b in zip(splines, splines[1:]):
+        ta, tb = a.derivative(a.knots[-1:])[0], b.derivative(b.knots[:1])[0]
+        angle = max(angle, abs(math.atan2(ta[0] * tb[1] - ta[1] * tb[0], ta @ tb)))
+        jump = max(jump, abs(float(a.curvature(a.knots[-1:])[0] - b.curvature(b.knots[:1])[0])))
+    return angle, jump

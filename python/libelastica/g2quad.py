@@ -17,7 +17,8 @@ from ._ffi import DomainError, as_points, as_size, lib
 from ._values import ValueEquality
 from .affine import (AffinePolyline, EdgeCountError, EndPieces, _curve_samples, _is_curve,
                      affine_end_pieces, affine_polyline, elastica_inflections, g2_bspline, quadratic_joint_curvatures)
-from .g2ends import _end_curvature, _matched_ends, _menger_max, _rel_err, _seam_estimate
+from .g2ends import (_end_curvature, _matched_ends, _menger_max, _rel_err, _seam_estimate,
+                     _joins, _seam_rounding, _tangent_alone)
 
 __all__ = ["G2Quadratic", "CoverageError", "CoverageWarning", "EndTangentWarning", "covering_edges",
            "g2_quadratic"]
@@ -63,9 +64,10 @@ class G2Quadratic(ValueEquality):
     dropped: the source's arc length left out at (start, end) (0, 0 when covers_source).
     seam_angle (radians) / seam_curvature_jump (relative to the source's curvature scale, as
     end_curvature_error): of a closed source (a closed ElasticSpline, opened at its point 0;
-    or samples whose last is their first, each end then as its own tangents= give), the angle between the last spline's end tangent and the first's start tangent and the
-    jump of their curvature where the outline closes (~1e-13: G2 there); None for an open
-    source or one not covered."""
+    or samples whose last is their first, each end then as its own tangents= give), the
+    angle between the last spline's end tangent and the first's start tangent and the jump
+    of their curvature where the outline closes (~1e-13: G2 there); None for an open source
+    or one not covered."""
     bsplines: list
     polyline: AffinePolyline
     ends: np.ndarray
@@ -83,6 +85,13 @@ class G2Quadratic(ValueEquality):
     seam_angle: Optional[float] = None
     seam_curvature_jump: Optional[float] = None
     inflection_tangent_error: Optional[float] = None
+    seam_bound: Optional[Tuple[float, float]] = None
+
+    @property
+    def seam_is_g2(self) -> bool:
+        """The seam G2 within seam_bound: SEAM_G2 or what the poles resolve (_seam_rounding)."""
+        a, k = self.seam_bound or (SEAM_G2, SEAM_G2)
+        return self.seam_angle is not None and self.seam_angle <= a and self.seam_curvature_jump <= k
 
     def g2_summary(self) -> str:
         """Which joints are G2, in words (the CLI's and FreeCAD's line): the joints inside
@@ -93,8 +102,7 @@ class G2Quadratic(ValueEquality):
             inside += (f"; where the outline closes (point 0): tangents "
                        f"{math.degrees(self.seam_angle):.2g} deg apart, relative curvature jump "
                        f"{self.seam_curvature_jump:.2g}"
-                       + (" (G2)" if self.seam_angle <= SEAM_G2 and
-                          self.seam_curvature_jump <= SEAM_G2 else " (not G2)"))
+                       + (" (G2)" if self.seam_is_g2 else " (not G2)"))
         if len(self.bsplines) < 2:
             return inside
         return (f"{inside}; where the {len(self.bsplines)} pieces meet (inflections): tangents "
@@ -370,6 +378,11 @@ ZERO_END_K = 1e-9
 # relative) below this: held ends meet to ~1e-13 (rounding of the Newton's 1e-12 residual)
 SEAM_G2 = 1e-9
 
+# samples close where their last point is their first to RING_TOL x their extent (rounding);
+# a seam's end, or one of curvature < NEAR_FREE_K x the largest, whose G2 hold failed or was
+# given up holds its tangent alone (an open one if the deviation stays < TANGENT_ALONE_DEV x)
+RING_TOL, TANGENT_ALONE_DEV, NEAR_FREE_K = 1e-9, 1.0 + 1e-6, 1e-3
+
 # EndTangentWarning's reason where _hold_start found no end holding the source's tangent
 NO_G2_END = "no G2 end found that holds it with the source's curvature"
 
@@ -435,17 +448,6 @@ def end_piece_left_out(ends: EndPieces, n: int, nsamples: int) -> bool:
     if ends.n_start is None or n < ends.n_start:
         return True
     return (ends.n_both is None or n < ends.n_both) and nsamples - 1 - ends.ends[1] >= 2
-
-
-def _joins(splines) -> Tuple[float, float]:
-    """Largest tangent angle (radians) and signed-curvature jump where consecutive
-    pieces meet."""
-    angle = jump = 0.0
-    for a, b in zip(splines, splines[1:]):
-        ta, tb = a.derivative(a.knots[-1:])[0], b.derivative(b.knots[:1])[0]
-        angle = max(angle, abs(math.atan2(ta[0] * tb[1] - ta[1] * tb[0], ta @ tb)))
-        jump = max(jump, abs(float(a.curvature(a.knots[-1:])[0] - b.curvature(b.knots[:1])[0])))
-    return angle, jump
 
 
 def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents=None,
@@ -605,9 +607,12 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
         t_ends = np.concatenate([[ap.t[0]], ap.infl_param, [round(float(ap.t[-1]))]])
         idx = t_ends.astype(int)
         ends = samples[idx]
-        # samples of a closed outline (the last the first): the splines close there, at a
-        # corner unless both ends hold one tangent (QA25 F3: 4.8 deg at 24 edges, unsaid)
-        ring = len(samples) > 2 and bool(np.array_equal(samples[0], samples[-1]))
+        # samples of a closed outline (the last the first to RING_TOL of their extent, revA 7):
+        # the splines close there, at a corner unless both ends hold one tangent (QA25 F3)
+        ring = len(samples) > 2 and bool(np.linalg.norm(samples[-1] - samples[0]) <= RING_TOL
+                                         * np.max(np.ptp(samples, axis=0)))
+        if ring and idx[-1] == len(samples) - 1:
+            ends[-1] = ends[0]
         ends_dir = None
         if tangents is not None:
             tan = as_points(tangents, "tangents")
@@ -625,7 +630,7 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
             # the samples' own across the seam, so the splines close G2 there (QA25 F3)
             seam_dir, kappa = _seam_estimate(samples)
             k_src = [kappa, kappa]
-        seg = np.linalg.norm(np.diff(samples, axis=0), axis=1)
+        seg, kmax = np.linalg.norm(np.diff(samples, axis=0), axis=1), _menger_max(samples)
         dropped = float(seg[:idx[0]].sum()), float(seg[idx[-1]:].sum())
         length = float(seg.sum())
     splines, jump, dev, terr, serr, ierr, missed = [], 0.0, 0.0, 0.0, [], [], []
@@ -639,6 +644,7 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                               k_src[0] if first else None, k_src[1] if last else None,
                               dirs[0] if first else None, dirs[1] if last else None)
         held = held or (seam_dir is not None and (first or last))
+        at_seam = held and ((closed and all(covers)) or seam_dir is not None)   # never given up
         gave_up = [None, None]  # why each held end was given up, if it was
         try:
             bs = g2_bspline(x, ends[p], ends[p + 1])
@@ -655,11 +661,15 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
             mid = (3, nspan - 3) if nspan >= 6 else (0, 0)
             parts = [(0, nspan)] if mid == (0, 0) else [(0, 3), (nspan - 3, nspan)]
             pmid = _spline_deviation(bs, samples, t_ends[p], t_ends[p + 1], mid)
-            pdev = max([pmid] + [_spline_deviation(bs, samples, t_ends[p], t_ends[p + 1], q)
-                                 for q in parts])
+            devof = lambda b: max([pmid] + [_spline_deviation(  # noqa: E731
+                b, samples, t_ends[p], t_ends[p + 1], q) for q in parts])
+            pdev = devof(bs)
             # the source's end tangents held too, unless that takes the piece farther from
             # the source (a loop at 12 edges: 0.0277 against 0.0214, its ends 8.8 deg off)
-            if not np.array_equal(xt, x):
+            if at_seam and not np.array_equal(xt, x):
+                x, bs = xt, g2_bspline(xt, ends[p], ends[p + 1])   # (revA 1: 4.94 deg at 64)
+                pdev = devof(bs)
+            elif not np.array_equal(xt, x):
                 # both held ends, else (farther) each alone: one end's held parabola can
                 # take the spline farther where the other's does not (the spans they move
                 # are apart), and was given up with it
@@ -673,8 +683,7 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                 best, tried = None, []
                 for ci, xc in enumerate(cands):
                     bt = g2_bspline(xc, ends[p], ends[p + 1])
-                    tdev = max([pmid] + [_spline_deviation(bt, samples, t_ends[p],
-                                                           t_ends[p + 1], q) for q in parts])
+                    tdev = devof(bt)
                     tried.append(tdev)
                     if tdev <= pdev * (1.0 + 1e-6):      # (1e-12 apart by rounding alone)
                         best = (ci, xc, bt, tdev)
@@ -690,6 +699,16 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                             own = tried[1 + e] if best is None and len(tried) == 3 else tried[0]
                             gave_up[e] = (f"holding it takes the spline farther from the "
                                           f"source ({own:.3g} against {pdev:.3g})")
+            lost = [e for e in (0, 1) if (holds[e] is False or gave_up[e]) and (
+                at_seam or abs(k_src[e] or 0.0) <= NEAR_FREE_K * kmax)]
+            xa = _tangent_alone(ap.points[a:b + 1], x, ends[p], ends[p + 1], *dirs, lost)
+            if lost and xa is not None:     # their tangents alone, before any warning
+                ba = g2_bspline(xa, ends[p], ends[p + 1])
+                adev = devof(ba)
+                if at_seam or adev <= pdev * TANGENT_ALONE_DEV:
+                    x, bs, pdev = xa, ba, adev
+                    for e in lost:
+                        holds[e], gave_up[e] = True, None
         poly[a:b + 1] = x
         kl, kr = quadratic_joint_curvatures(bs)
         if len(kl):
@@ -721,10 +740,12 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
              (splines[-1], -1, k_src[1], kscale[1], covers[1]))
             if kept and k is not None]
     angle, kjump = _joins(splines)
-    seam = None
+    seam, seam_bound = None, (SEAM_G2, SEAM_G2)
     if (closed or (not is_curve and ring)) and all(covers):   # last spline's end vs first's start
         seam_a, seam_k = _joins([splines[-1], splines[0]])
-        seam = (seam_a, seam_k / max(abs(k_src[0] or 0.0), max(kscale), 1e-300))
+        kref = max(abs(k_src[0] or 0.0), max(kscale), 1e-300)
+        seam = (seam_a, seam_k / kref)
+        seam_bound = tuple(max(SEAM_G2, r) for r in _seam_rounding(splines[0], splines[-1], kref))
     ap = dataclasses.replace(ap, points=poly)
     g = G2Quadratic(splines, ap, np.asarray(ends), dev, jump,
                     terr if ends_dir is not None else None, bool(all(covers)),
@@ -733,13 +754,14 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                     end_curvature_error=max(kerr) if kerr else None, dropped=dropped,
                     source_end_tangent_error=max(serr) if serr else None,
                     seam_angle=seam and seam[0], seam_curvature_jump=seam and seam[1],
-                    inflection_tangent_error=max(ierr) if ierr else None)
-    if seam is not None and closed and (seam[0] > SEAM_G2 or seam[1] > SEAM_G2):
+                    inflection_tangent_error=max(ierr) if ierr else None,
+                    seam_bound=seam_bound)
+    if seam is not None and closed and not g.seam_is_g2:
         missed.append(("seam", seam[0], (
             f"the closed outline has a corner where it closes (point 0), relative "
             f"curvature jump {seam[1]:.3g}: more edges, or the ducks started at another "
             "one (np.roll), away from an inflection and with room for 7 edges to the next")))
-    elif seam is not None and seam[0] > SEAM_G2:    # closed samples: their two ends' own
+    elif seam is not None and seam[0] > seam_bound[0]:    # closed samples: their two ends' own
         missed.append(("seam", seam[0], (              # tangents, estimated apart
             f"the points close on themselves (the last is the first) and the splines close "
             f"there at a corner (relative curvature jump {seam[1]:.3g}): " + (
