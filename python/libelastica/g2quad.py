@@ -66,8 +66,8 @@ class G2Quadratic(ValueEquality):
     end_curvature_error): of a closed source (a closed ElasticSpline, opened at its point 0;
     or samples whose last is their first, each end then as its own tangents= give), the
     angle between the last spline's end tangent and the first's start tangent and the jump
-    of their curvature where the outline closes (~1e-13: G2 there); None for an open source
-    or one not covered."""
+    of their curvature where the outline closes (~1e-13: G2 there); None for an open source or
+    one not covered. seam_bound: the (angle, jump) G2 bound, SEAM_G2 or the poles' rounding."""
     bsplines: list
     polyline: AffinePolyline
     ends: np.ndarray
