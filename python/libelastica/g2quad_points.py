@@ -1,0 +1,98 @@
+"""What g2_quadratic's source points say of themselves where its polyline cannot be built
+(g2quad.py): noise (the sign changes of their discrete curvature), a flat stretch without
+affine arc length, repeated points."""
+from __future__ import annotations
+
+from typing import Optional
+
+import numpy as np
+
+from ._ffi import DomainError
+
+
+def _sign_changes(points: np.ndarray) -> int:
+    """How often the discrete curvature det(x_i - x_{i-1}, x_{i+1} - x_i) of the points
+    changes sign (zeros skipped): a curve's inflections, and as many again as noise or
+    rounding adds (801 samples of an S: 1 exact, 19 rounded to 1e-4, 245 to 1e-3)."""
+    d = np.diff(points, axis=0)
+    a = np.sign(d[:-1, 0] * d[1:, 1] - d[:-1, 1] * d[1:, 0])
+    a = a[a != 0]
+    return int(np.count_nonzero(a[1:] != a[:-1]))
+
+
+# More sign changes of the points' discrete curvature than a piecewise-convex profile's few
+# inflections: noise (_sign_changes), named as such in g2_quadratic's DomainError.
+NOISY_SIGN_CHANGES = 3
+
+
+def _noisy_points_error(exc: DomainError, points: np.ndarray) -> DomainError:
+    """g2_quadratic's DomainError for point data: the cause, how noisy the points are, and
+    the way out (fit=True)."""
+    flips = _sign_changes(points)
+    why = str(exc)
+    flat = _flat_stretch(points)
+    if flips > NOISY_SIGN_CHANGES and flat is not None:
+        # exact samples of a straight stretch: their sign changes are rounding, not noise
+        # (QA23: a batten's straight middle span, "too noisy ... 1912 sign changes")
+        a, b, nflat = flat
+        return DomainError(exc.status, (
+            f"{why.split(':')[0]}: the points run (nearly) straight from point {a} to {b} "
+            f"(counted from 0), turning less than {FLAT_TURN:g} x their median turn a step, "
+            f"so the smallest error of the points flips the sign of their discrete curvature "
+            f"there: {nflat} of its {flips} sign changes are there; a straight stretch has "
+            "(almost) no affine arc length (seed 002 (1)): build the curved parts either side "
+            "of it apart, or pass the curve itself (an ElasticSpline, a SmoothElastica)"))
+    if flips > NOISY_SIGN_CHANGES:   # the C status's list of causes is beside the point
+        why = (f"{why.split(':')[0]}: the points are too noisy for the construction: their "
+               f"discrete curvature changes sign {flips} times over {len(points)} points; its "
+               "affine arc length takes their second and third differences (seed 002 (1), "
+               "(15)), so it needs a piecewise-convex curve to high accuracy")
+    return DomainError(exc.status, f"{why}; fit=True (`elastica g2quad FILE --fit`) fits one "
+                       "smooth elastica to the points first and builds from it, or pass a fitted "
+                       "SmoothElastica (`elastica fit --model smooth --json`, then `elastica "
+                       "g2quad fit.json`)")
+
+
+# a vertex turning less than FLAT_TURN x the median turn of the points is on a (nearly)
+# straight stretch: QA23's batten sampled 1000 a piece (39001 points, median turn 2.2e-5 rad)
+# turns 8.5e-9 rad a step on its straight span (kappa 2.7e-9 / mm), and its points there
+# carry the evaluation's rounding (eps |q| / sqrt(mu) ~ 4e-7 mm, bspline.resolvable_tol),
+# far above kappa h^2 / 2: all its 848 sign changes lie there, turning 1.1e-8..2.4e-7
+FLAT_TURN = 1e-2
+
+
+def _flat_stretch(points: np.ndarray):
+    """(first, last, sign changes there) of the longest run of points turning less than
+    FLAT_TURN x their median turn, where most (3/4) of the discrete curvature's sign changes
+    are; else None."""
+    d = np.diff(points, axis=0)
+    h = np.hypot(d[:, 0], d[:, 1])
+    if len(d) < 3 or not np.all(h > 0):
+        return None
+    cross = d[:-1, 0] * d[1:, 1] - d[:-1, 1] * d[1:, 0]
+    turn = cross / (h[:-1] * h[1:])
+    tiny = np.abs(turn) < FLAT_TURN * float(np.median(np.abs(turn)))
+    sgn = np.sign(cross)
+    flip = np.zeros(len(cross), bool)
+    nz = np.flatnonzero(sgn)
+    flip[nz[1:][sgn[nz[1:]] != sgn[nz[:-1]]]] = True
+    if not flip.any() or np.count_nonzero(flip & tiny) < 0.75 * np.count_nonzero(flip):
+        return None
+    edges = np.diff(np.concatenate([[0], tiny.astype(np.int8), [0]]))
+    starts, stops = np.flatnonzero(edges == 1), np.flatnonzero(edges == -1)
+    j = int(np.argmax(stops - starts))
+    return int(starts[j]) + 1, int(stops[j]), int(np.count_nonzero(flip & tiny))
+
+
+def _repeated_points(points: np.ndarray) -> Optional[str]:
+    """The words for consecutive points that coincide (doubled rows: a chain's pieces each
+    sampled with both ends), else None: the construction takes differences along the
+    points (seed 002 (15)) and a zero step breaks them."""
+    same = np.flatnonzero(np.all(np.diff(points, axis=0) == 0.0, axis=1))
+    if not len(same):
+        return None
+    named = ", ".join(str(int(i) + 1) for i in same[:5]) + (", ..." if len(same) > 5 else "")
+    return (f"g2_quadratic: {len(same)} point(s) repeat the one before (points {named}, counted "
+            "from 0): the construction takes differences along the points (seed 002 (15)), "
+            "which a zero step breaks; drop the repeats, e.g. points[np.r_[True, np.any("
+            "np.diff(points, axis=0) != 0, axis=1)]]")
