@@ -64,7 +64,7 @@ def _end_refused(x: np.ndarray, start, end) -> Optional[bool]:
     """Whether g2_bspline(x, start, end) is refused (DomainError) for a reason that no move
     of x_1, x_2 changes: its end parabola's (x_{m-3}.. x_{m-1} and ``end``; m >= 7, or m >= 5
     with x_1 alone moved); None where the C function must decide (A_{m-2} = 0: a
-    SingularError; near overflow)."""
+    SingularError; near overflow; mu <= 0.1, its knots possibly tied by rounding)."""
     m = len(x) - 1
     P = (float(end[0]), float(end[1]))
     e1, e2, e3 = (tuple(map(float, x[i])) for i in (m - 1, m - 2, m - 3))
@@ -78,7 +78,10 @@ def _end_refused(x: np.ndarray, start, end) -> Optional[bool]:
     l2 = 2.0 * ((mx - P[0]) * vy - (my - P[1]) * vx) / A
     if not (l2 > 0.0) or not math.isfinite(l2):
         return True
-    return None if not l2 < 1e30 else False     # (near overflow: the C call decides)
+    # the C call decides near overflow, and where mu = sqrt(l2) <= 0.1: its last knot
+    # lam + (m - 3) + mu may round onto lam + (m - 3) (ulp 1/8 at _start_parabola's
+    # lam < 1e15), which el_bspline_check refuses (EL_EDOM) though l2 > 0
+    return None if not 0.01 < l2 < 1e30 else False
 
 
 def _start_of(bs):

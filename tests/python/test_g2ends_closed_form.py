@@ -155,3 +155,46 @@ def test_g2_quadratic_of_a_free_or_closed_spline_builds_a_few_splines(built, clo
     g = el.g2_quadratic(el.elastic_spline(ducks, closed=closed), 24)
     assert len(built) <= 4, len(built)
     assert g.source_end_tangent_error < 1e-12     # the ends held (exactly, to rounding)
+
+
+def test_an_end_the_c_function_refuses_is_refused_in_closed_form_too(monkeypatch):
+    """The end side (_end_refused, checked once) says what el_affine_g2_bspline says for the
+    end point on either side of the last joint's tangent line, far and a hair off it: at
+    1e-32 off (mu ~ 1e-16) its knots lam + (m - 3) + mu and lam + (m - 3) round equal and
+    the C call refuses (EL_EDOM) although mu^2 > 0; the slides then find no end, as with
+    every trial's spline built (revE: _end_refused said False, _match_start found one)."""
+    t = np.linspace(0.0, 1.2, 8)
+    x = 5.0 * np.c_[np.cos(t), np.sin(t)]
+    v = x[6] - x[5]
+    ang = math.atan2(v[1], v[0])
+    R = np.array([[math.cos(ang), math.sin(ang)], [-math.sin(ang), math.cos(ang)]])
+    x = (x - x[5]) @ R.T                    # the last edge on the x axis, exactly
+    x[5] = 0.0
+    x[6, 1] = 0.0
+    T = (x[1] - x[0]) / np.linalg.norm(x[1] - x[0])   # the start's own leg
+    cases = []
+    for off in (0.5, 1e-3, 1e-20, 1e-30, 1e-32, 1e-34, 1e-40, 0.0):
+        for sgn in (1.0, -1.0):
+            cases.append(np.array([1.3 * x[6, 0], sgn * off]))
+    refused = 0
+    fast = []
+    for end in cases:
+        try:
+            g2_bspline(x, x[0], end)
+            c_refuses = False
+        except DomainError:
+            c_refuses = True
+        r = g2ends._end_refused(x, x[0], end)
+        assert r is None or r == c_refuses, (end, r, c_refuses)
+        refused += c_refuses
+        fast.append((g2ends._match_start(x, x[0], end, 0.3),
+                     g2ends._match_tangent(x, x[0], end, T)))
+    assert refused >= 6
+    monkeypatch.setattr(g2ends, "_start_parabola", lambda *a: None)
+    for end, (fs, ft) in zip(cases, fast):
+        bs = g2ends._match_start(x, x[0], end, 0.3)
+        bt = g2ends._match_tangent(x, x[0], end, T)
+        for a, b in ((fs, bs), (ft, bt)):
+            assert (a is None) == (b is None), end
+            if a is not None:
+                assert np.array_equal(a, b)
