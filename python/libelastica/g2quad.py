@@ -634,13 +634,13 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                 err = abs(math.atan2(vec[0] * ref[1] - vec[1] * ref[0],
                                      vec[0] * ref[0] + vec[1] * ref[1]))
                 terr = max(terr, err)
-                if not own:     # a piece's end at an inflection
-                    ierr.append(err)
                 if own:
                     serr.append(err)
                     why = {True: gave_up[j], False: NO_G2_END}.get(holds[j])
                     if why:
                         missed.append((("start", "end")[j], err, why))
+                else:           # a piece's end at an inflection
+                    ierr.append(err)
         splines.append(bs)
     # the source's curvature scale over each end piece's span: max |kappa| there
     if is_curve:
