@@ -607,14 +607,17 @@ def _warn_outliers(r) -> None:
 
 
 def stray_summary(n: int, stray, row: int, unit: str = "",
-                  length: Optional[LengthFormat] = None) -> str:
+                  length: Optional[LengthFormat] = None, named: Optional[str] = None) -> str:
     """What a warning of one stray point among few says (:func:`fit`'s OutlierWarning, the
     CLI's and FreeCAD's): stray: :func:`libelastica.stray.stray_point`'s figures; row: its
-    number for the user (counted from 0, or FreeCAD's vertex number: ``unit``, ``length``
-    as in :func:`outliers_summary`): "1 of 18 points lies 150 from the curve through the
-    others, 210 x their noise (0.71): dragged off? (point 10, counted from 0) ..."."""
+    number for the user, counted from 0 (``unit``, ``length`` as in
+    :func:`outliers_summary`); named: how the point is named instead of "point 10, counted
+    from 0" (FreeCAD's "point 11 as given, at (x, y, z) mm"): "1 of 18 points lies 150 from
+    the curve through the others, 210 x their noise (0.71): dragged off? (point 10, counted
+    from 0) ..."."""
     fmt = lengths(unit, length)
+    named = named or f"point {row}, counted from 0"
     return (f"1 of {n} points lies {fmt(stray[1], 3)} from the curve through the others, "
             f"{stray[1] / stray[2]:.2g} x their noise ({fmt(stray[2], 2)}), which lie "
-            f"{stray[3]:.2g} x nearer their curve without it: a point dragged off? (point {row}, "
-            "counted from 0) It pulls the fit towards itself: remove or move it to fit the rest")
+            f"{stray[3]:.2g} x nearer their curve without it: a point dragged off? ({named}) "
+            "It pulls the fit towards itself: remove or move it to fit the rest")

@@ -353,14 +353,12 @@ def _stray(result, numbers, plane):
     i, number = stray[0], int(numbers[stray[0]])
     x, y = (float(v) for v in result.points[i])
     at = plane.multVec(App.Vector(x, y, 0.0))
-    said = binding_module("misfit").stray_summary(len(result.points), stray, number,
-                                                    length=figure_mark)
     # the number as the user sees it (from 1), not the binding's "counted from 0"
-    said = said.replace(f"(point {number}, counted from 0)",
-                        f"(point {number} as given, at "
-                        f"({', '.join(coordinate_mark(v) for v in (at.x, at.y, at.z))}) "
-                        f"{length_unit_mark(written=True)})")
-    return [said]
+    named = (f"point {number} as given, at "
+             f"({', '.join(coordinate_mark(v) for v in (at.x, at.y, at.z))}) "
+             f"{length_unit_mark(written=True)}")
+    return [binding_module("misfit").stray_summary(len(result.points), stray, number,
+                                                   length=figure_mark, named=named)]
 
 
 def _misfit(xy, dist, plane, split):
