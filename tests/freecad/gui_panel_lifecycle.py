@@ -215,16 +215,11 @@ def click_ok():
     return False
 
 
-def ok_that_fails():
-    """OK whose Copy into cannot finish: the target sketch removed by a macro line (no
-    recompute: still offered), then a write that fails half way (a line added, then the
-    Sketcher's ValueError). The panel stays open on its edit with why on its error line
-    and in the report view, the sketch as before, no Undo step; Cancel leaves the Undo stack
-    as before the panel; OK into a sketch that takes it is one Undo step (revC 3: the
-    exception closed the panel through TaskDialogPython, its transaction neither committed
-    nor aborted, the sketch as the exception left it)."""
-    from freecad.elastica import geometry as Ge, taskpanels as T
-    doc, sk = fit_doc("ElasticaOkFails")
+def _panel_into_gone(name):
+    """A Fit panel (Resample 3) on a new document ``name`` with sketches Gone and Prof (one
+    line), Copy into Gone chosen, then Gone removed by a macro's line: (doc, the points'
+    sketch, Prof, the Undo names and Prof's geometry count before the panel, the panel)."""
+    doc, sk = fit_doc(name)
     for name in ("Gone", "Prof"):
         o = doc.addObject("Sketcher::SketchObject", name)
         o.Placement = sk.Placement
@@ -239,6 +234,19 @@ def ok_that_fails():
     panel.sketch.setCurrentIndex(panel.sketch.findData("Gone"))
     Gui.doCommand(f"App.getDocument({doc.Name!r}).removeObject('Gone')")   # a macro's line
     G.pump()
+    return doc, sk, prof, undo0, geo0, panel
+
+
+def ok_that_fails():
+    """OK whose Copy into cannot finish: the target sketch removed by a macro line (no
+    recompute: still offered), then a write that fails half way (a line added, then the
+    Sketcher's ValueError). The panel stays open on its edit with why on its error line
+    and in the report view, the sketch as before, no Undo step; Cancel leaves the Undo stack
+    as before the panel; OK into a sketch that takes it is one Undo step (revC 3: the
+    exception closed the panel through TaskDialogPython, its transaction neither committed
+    nor aborted, the sketch as the exception left it)."""
+    from freecad.elastica import geometry as Ge, taskpanels as T
+    doc, sk, prof, undo0, geo0, panel = _panel_into_gone("ElasticaOkFails")
     clicked = click_ok()
     G.pump()
     G.screenshot("gui_ok_fails_gone.png")
@@ -292,21 +300,7 @@ def ok_fails_then_ok():
     target sketch as before, and the removed sketch (the macro's line ran in the panel's
     transaction) back; Redo does it again."""
     from freecad.elastica import taskpanels as T
-    doc, sk = fit_doc("ElasticaOkThenOk")
-    for name in ("Gone", "Prof"):
-        o = doc.addObject("Sketcher::SketchObject", name)
-        o.Placement = sk.Placement
-    doc.recompute()
-    prof = doc.getObject("Prof")
-    prof.addGeometry(Part.LineSegment(App.Vector(0, 0, 0), App.Vector(50, 0, 0)), False)
-    doc.recompute()
-    undo0, geo0 = list(doc.UndoNames), len(prof.Geometry)
-    panel = run_fit(doc, sk)
-    G.type_into(panel.step, "3")
-    G.wait()
-    panel.sketch.setCurrentIndex(panel.sketch.findData("Gone"))
-    Gui.doCommand(f"App.getDocument({doc.Name!r}).removeObject('Gone')")
-    G.pump()
+    doc, sk, prof, undo0, geo0, panel = _panel_into_gone("ElasticaOkThenOk")
     recorded, do = [], Gui.doCommand
     Gui.doCommand = lambda code: recorded.append(code) or do(code)
     try:
