@@ -27,6 +27,22 @@
  * the whole-period curves leave the straight one (kappa = 0) at sigma |P|^2 = -8 pi^2, a
  * pitchfork, and a trace toward it ends before L = Lt when Lt is near 1 (1 + 5e-8: none
  * found); hermite.c adds them in closed form (whole_period_solutions).
+ *
+ * Where the work goes (issue 16 target 1, callgrind on bench_hermite's 1000 length problems,
+ * 962 M instructions against 75 M by tension): traces 535 M, seed lines 275 M, the solutions'
+ * polish 104 M. Neither half alone is within 4 x: without the lines 8.5 x, without the traces
+ * 5 x (at L ~ 2 |p1 - p0|, the median: traces 7.9 x, lines 3.5 x). The traces: 7.7 per problem,
+ * 54 accepted steps, 234 evaluations (2.3 k instructions each); 25 % of their steps' evaluations
+ * in traces that find no solution and 26 % after a trace's last solution (the stretches that
+ * only mark seeds visited). Their steps are bounded by C's bend (tangent and corrector tests),
+ * not by the tests of L: at most 434 of 11 400 refused steps were refused by L (LRATIO, LDEF),
+ * so a bound proving no L = Lt on a stretch would save < 1 %; hmax 3 or a growth of 2 do not
+ * help. Along C, L has an extremum away from a fold of sigma in 54 of 45 926 consecutive step
+ * pairs (sigma folds 1123). A 1-D reduction, {L = Lt} a graph sigma(x) in the x chart, fails:
+ * dL/dsigma at fixed x takes both signs on C (34 k > 0, 23 k < 0 of its evaluations with
+ * |f| < 1e-6). Fewer lines lose solutions: two (bottom and top) 11 of the bench's 3494 (-28 %
+ * instructions); five without line 3 none of the bench's (-15 %) but make length-recovers misses
+ * 10, 12, 7 (six lines: 0, 2, 0) and make hermite-sets' length sets lose 1; grid 4 misses 1, 4, 1.
  */
 #include "hermite_length_internal.h"
 #include <stdlib.h>
