@@ -1795,6 +1795,11 @@ typedef struct el_affine_result {
  * An end piece worth less than 1.5 edges of affine length (an inflection next
  * to an end) is left out: the polyline then starts / ends at that inflection
  * (t[0] > 0 / t[n] near it), and infl_param lists only the inner inflections.
+ * Far from the origin (survey coordinates: a 3 m curve at (512345.678, 5012345.432)) the
+ * samples are taken relative to a local origin, a multiple of the power of two >= their
+ * extent (exact: a curve 16 extents or more from (0, 0) in x or y; nearer, none), and the
+ * vertices returned with it added back: t, A, psi as of the curve near (0, 0), the vertices
+ * rounded once to the offset's ulps (el_affine_end_pieces alike).
  * opt may be NULL (defaults). res is filled only on success; free it with
  * el_affine_result_free.
  */

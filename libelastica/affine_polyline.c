@@ -336,6 +336,61 @@ int el__piece_solve(piece *P, const el_affine_options *o, double *psi)
     return piece_optimise(P, el__piece_t1_start(P), o, psi);
 }
 
+/* ----------------------------------------------- a local origin (far from (0, 0)) */
+
+/* The reference point R subtracted from the samples before any arithmetic and added back
+ * to the vertices. Survey coordinates lost digits: at (512345.678, 5012345.432) the arcs'
+ * control points, the vertices on them and the line intersections were rounded in the
+ * offset's ulps (9.3e-10), and the minimiser t1 of a flat psi amplified that: a 4-unit
+ * curve's vertices 2e-8 .. 5e-7 off its translate's, A 3e-9 .. 4e-8 relative (test_affine_
+ * offset.c; 5e-12 and 4e-13 now). Per coordinate c, R[c] is the multiple of G (the power of
+ * two >= the samples' extent) nearest their first, and 0 unless every sample is 16 G or
+ * more from 0 in c (losing 4 bits or more): a curve nearer the origin is computed as before,
+ * the same bits. x - R is exact (both multiples of the smaller ulp, |x - R| <= 1.5 G <= |x|),
+ * checked all the same; so a translation by a multiple of G gives the same t, A, psi. */
+static void local_origin(size_t nsamples, const double *p, double R[2])
+{
+    double lo[2] = {p[0], p[1]}, hi[2] = {p[0], p[1]}, amin[2] = {fabs(p[0]), fabs(p[1])};
+    for (size_t j = 1; j < nsamples; j++)
+        for (int c = 0; c < 2; c++) {
+            double x = p[2 * j + c];
+            lo[c] = fmin(lo[c], x);
+            hi[c] = fmax(hi[c], x);
+            amin[c] = fmin(amin[c], fabs(x));
+        }
+    double ext = fmax(hi[0] - lo[0], hi[1] - lo[1]);
+    int e = 0;
+    R[0] = R[1] = 0.0;
+    if (!(ext > 0.0) || !isfinite(ext)) return;
+    frexp(ext, &e);
+    double G = ldexp(1.0, e);                       /* G >= ext > G / 2 */
+    for (int c = 0; c < 2; c++) {
+        if (!(amin[c] >= 16.0 * G)) continue;
+        double r = G * nearbyint(p[c] / G);
+        int exact = 1;
+        for (size_t j = 0; j < nsamples && exact; j++)
+            exact = (p[2 * j + c] - r) + r == p[2 * j + c];
+        if (exact) R[c] = r;
+    }
+}
+
+/* The samples less R (local_origin) into a new array *out, or *out = the samples themselves
+ * where R = 0 (nothing to free: *own 0). EL_ENOMEM. */
+static int samples_local(size_t nsamples, const double *samples, double R[2],
+                         const double **out, double **own)
+{
+    local_origin(nsamples, samples, R);
+    *own = NULL;
+    *out = samples;
+    if (R[0] == 0.0 && R[1] == 0.0) return EL_OK;
+    double *q = el__alloc(nsamples, 2, sizeof *q);
+    if (!q) return EL_ENOMEM;
+    for (size_t j = 0; j < nsamples; j++)
+        for (int c = 0; c < 2; c++) q[2 * j + c] = samples[2 * j + c] - R[c];
+    *out = *own = q;
+    return EL_OK;
+}
+
 /* ------------------------------------- §4.4: the pieces of f~ and the end pieces kept */
 
 /* §4.4 step 1 and the pieces' affine lengths: f~'s arcs (from the caller's tangents, else
@@ -469,14 +524,17 @@ int el_affine_end_pieces(size_t nsamples, const double *samples, const double *t
     const int bad = samples_checked(nsamples, samples, tangents, ninfl, infl, o.split_inflections);
     if (bad) return bad;
     size_t N = nsamples - 1;
+    double R[2], *own = NULL;
+    const double *loc = samples;
+    int st = samples_local(nsamples, samples, R, &loc, &own);
     arc *arcs = el__alloc(N, 1, sizeof *arcs);
     size_t *bnd = el__alloc(N + 2, 1, sizeof *bnd);
     double *Sp = el__alloc(N + 1, 1, sizeof *Sp);
     int *sig = el__alloc(N + 1, 1, sizeof *sig);
-    int st = (!arcs || !bnd || !Sp || !sig) ? EL_ENOMEM : EL_OK;
+    if (!arcs || !bnd || !Sp || !sig) st = EL_ENOMEM;
     size_t np = 0;
     double Stot = 0.0;
-    if (!st) st = pieces_split(N, samples, tangents, ninfl, infl, o.split_inflections, arcs,
+    if (!st) st = pieces_split(N, loc, tangents, ninfl, infl, o.split_inflections, arcs,
                                bnd, &np, Sp, sig, &Stot);
     if (!st) {
         *npieces = np;
@@ -485,6 +543,7 @@ int el_affine_end_pieces(size_t nsamples, const double *samples, const double *t
         n_min[0] = fewest_keeping(Sp, np, Stot, 0);
         n_min[1] = fewest_keeping(Sp, np, Stot, 1);
     }
+    free(own);
     free(arcs);
     free(bnd);
     free(Sp);
@@ -532,21 +591,23 @@ int el_affine_polyline(size_t nsamples, const double *samples, const double *tan
     if (n > EL_AFFINE_MAX_EDGES) return EL_EDOM;   /* bounded work: the vertex count */
     size_t N = nsamples - 1;
 
-    int st = EL_OK;
+    double R[2], *own = NULL;       /* the local origin: vertices - R computed, R added */
+    const double *loc = samples;
+    int st = samples_local(nsamples, samples, R, &loc, &own);
     arc *arcs = el__alloc(N, 1, sizeof *arcs);
     size_t *bnd = el__alloc(N + 2, 1, sizeof *bnd);     /* piece boundaries in f~ */
     size_t *cnt = NULL;
     double *work_xy = NULL, *work_t = NULL;
     el_affine_result r;
     memset(&r, 0, sizeof r);
-    if (!arcs || !bnd) { st = EL_ENOMEM; goto done; }
+    if (st || !arcs || !bnd) { st = EL_ENOMEM; goto done; }
     double *Sp = el__alloc(N + 1, 1, sizeof *Sp);
     int *sig = el__alloc(N + 1, 1, sizeof *sig);
     cnt = el__alloc(N + 1, 1, sizeof *cnt);
     if (!Sp || !sig || !cnt) { free(Sp); free(sig); st = EL_ENOMEM; goto done; }
     size_t np = 0, p0 = 0;
     double Stot = 0.0;
-    st = pieces_split(N, samples, tangents, ninfl, infl, o.split_inflections, arcs, bnd, &np,
+    st = pieces_split(N, loc, tangents, ninfl, infl, o.split_inflections, arcs, bnd, &np,
                       Sp, sig, &Stot);
     if (!st) np = pieces_kept(n, Sp, np, &p0, &Stot);
     if (p0 > 0) {
@@ -598,8 +659,8 @@ int el_affine_polyline(size_t nsamples, const double *samples, const double *tan
 
     /* §4.4 step 2: the pieces one after another */
     size_t g = 0;
-    r.xy[0] = samples[2 * bnd[0]];
-    r.xy[1] = samples[2 * bnd[0] + 1];
+    r.xy[0] = loc[2 * bnd[0]];
+    r.xy[1] = loc[2 * bnd[0] + 1];
     r.t[0] = (double)bnd[0];
     r.piece_start[0] = 0;
     for (size_t p = 0; p < np && !st; p++) {
@@ -639,11 +700,15 @@ int el_affine_polyline(size_t nsamples, const double *samples, const double *tan
     }
     free(Sp);
     free(sig);
+    if (!st && (R[0] != 0.0 || R[1] != 0.0))
+        for (size_t j = 0; j <= n; j++)
+            for (int c = 0; c < 2; c++) r.xy[2 * j + c] += R[c];
     if (!st && (el__all_finite(r.xy, 2 * (n + 1)) || el__all_finite(r.t, n + 1) ||
                 el__all_finite(r.A, np) || el__all_finite(r.psi, np) || !isfinite(r.S_total)))
         st = EL_EDOM;
 
 done:
+    free(own);
     free(arcs);
     free(bnd);
     free(cnt);
