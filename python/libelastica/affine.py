@@ -23,6 +23,7 @@ from ._ffi import (DomainError, as_int, as_points, as_real, as_real_array, as_si
                    bspline_from_c, check, dptr, ffi, invalid, lib, require)
 from ._values import ValueEquality, field_summary
 from .core import DiscreteElastica
+from .g2quad_points import _local_source
 
 __all__ = ["affine_coords", "affine_length", "affine_curvature", "osculating_conics",
            "OsculatingConics", "chaikin", "lane_riesenfeld", "affine_elements",
@@ -492,6 +493,12 @@ def affine_polyline(curve_or_points, n: int, samples_per_vertex: int = 20,
         c = curve_or_points
         if not c.length > 0:
             raise ValueError("the elastica has zero length")
+        # far from (0, 0): sampled in a local frame (its start(s) moved exactly), the
+        # vertices moved back (the C polyline computes relative to its own local origin,
+        # but samples taken at (512345.678, 5012345.432) carry the offset's rounding)
+        local = _local_source(c, True)
+        if local is not None:
+            c = local[0]
         infl_s = elastica_inflections(c)
         infl = len(infl_s)     # the C status's causes named (seed 002 (1), §4.4)
         if infl and not split_inflections:
@@ -526,6 +533,8 @@ def affine_polyline(curve_or_points, n: int, samples_per_vertex: int = 20,
         # the end (fit_ends, 60 edges: 2.4e-11 past it, so that curve.points(s) raised)
         on = t <= len(s_samp) - 1 + 1e-7
         s = np.where(on, np.clip(s, 0.0, c.length), np.maximum(s, 0.0))
+        if local is not None:
+            pts = pts + local[1]
         return AffinePolyline(pts, t, s, ps, A, psi, ip, S)
     samples, tan, infl = _samples_checked(curve_or_points, tangents, inflections)
     pts, t, ps, A, psi, ip, S = _run(samples, tan, infl, n, split_inflections,

@@ -17,7 +17,8 @@ from ._ffi import DomainError, as_points, as_size, lib
 from ._values import ValueEquality
 from .affine import (AffinePolyline, EdgeCountError, EndPieces, _curve_samples, _is_curve,
                      affine_end_pieces, affine_polyline, elastica_inflections, g2_bspline, quadratic_joint_curvatures)
-from .g2quad_points import _noisy_points_error, _repeated_points
+from .g2quad_points import (_built_locally, _local_source, _noisy_points_error,
+                            _repeated_points)
 from .g2ends import (_end_curvature, _matched_ends, _menger_max, _rel_err, _seam_estimate,
                      _joins, _seam_rounding, _tangent_alone)
 
@@ -68,7 +69,10 @@ class G2Quadratic(ValueEquality):
     or samples whose last is their first, each end then as its own tangents= give), the
     angle between the last spline's end tangent and the first's start tangent and the jump
     of their curvature where the outline closes (~1e-13: G2 there); None for an open source or
-    one not covered. seam_bound: the (angle, jump) G2 bound, SEAM_G2 or the poles' rounding."""
+    one not covered. seam_bound: the (angle, jump) G2 bound, SEAM_G2 or the poles' rounding.
+    A source far from (0, 0) (16 extents or more in x or y: survey coordinates) is built in a
+    local frame and moved back (g2quad_points._local_origin): the figures are the local
+    build's, the poles, polyline and ends its own rounded once to the offset's ulps."""
     bsplines: list
     polyline: AffinePolyline
     ends: np.ndarray
@@ -404,7 +408,11 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
     well: exact there too (it was O(edge): 0.66 deg at 24 edges of an S), still G2 at every
     joint, unless that spline strays farther from the source (then the curvature alone, a
     k = 1.5 loop at 12 edges); the curvature then departs up to ~10 % from an arc's just
-    inside the ends (7.4 % with the curvature alone)."""
+    inside the ends (7.4 % with the curvature alone).
+    Far from (0, 0) (survey coordinates) it builds the source moved by a local origin
+    (exactly: points less it, an elastica's start(s) moved) and moves the result back, so the
+    result is the origin's translated to rounding of the source's size (main: 1e-7 of it,
+    curvature jumps 1e-7), the warnings and errors the same."""
     is_curve = _is_curve(curve_or_points, "g2_quadratic")
     # a closed ElasticSpline: opened at its point 0 (its arc lengths start there), both ends
     # held to the spline's own tangent and curvature there, so the outline closes G2 (QA25
@@ -424,6 +432,11 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
             raise
         g.fit = fitted
         return g
+    local = _local_source(curve_or_points, is_curve)
+    if local is not None:   # far from (0, 0): built in a local frame, moved back (exactly)
+        return _built_locally(lambda src: g2_quadratic(
+            src, n, samples_per_vertex, tangents, partial=partial, _plain=_plain, **options),
+            *local, CoverageError)
     options.setdefault("fit_ends", True)
     if not is_curve:    # doubled rows: the real cause, not the C status's list (QA23)
         said = _repeated_points(as_points(curve_or_points, "points"))

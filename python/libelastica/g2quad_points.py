@@ -3,11 +3,17 @@
 affine arc length, repeated points."""
 from __future__ import annotations
 
+import copy
+import dataclasses
+import math
+import warnings
 from typing import Optional
 
 import numpy as np
 
 from ._ffi import DomainError
+from .bspline import BSpline
+from .core import SmoothElastica
 
 
 def _sign_changes(points: np.ndarray) -> int:
@@ -96,3 +102,84 @@ def _repeated_points(points: np.ndarray) -> Optional[str]:
             "from 0): the construction takes differences along the points (seed 002 (15)), "
             "which a zero step breaks; drop the repeats, e.g. points[np.r_[True, np.any("
             "np.diff(points, axis=0) != 0, axis=1)]]")
+
+
+# a source every point of which lies LOCAL_FAR x (the power of two >= its extent) or more
+# from 0 in x or y is built relative to a local origin there (C's affine_polyline.c
+# local_origin, the same rule): 4 bits of its coordinates or more would be lost
+LOCAL_FAR = 16.0
+
+
+def _local_origin(xy: np.ndarray) -> np.ndarray:
+    """The reference point R that g2_quadratic subtracts from a source far from (0, 0) and
+    adds back to its result (survey coordinates: a 3 m curve at (512345.678, 5012345.432)
+    came back with its poles 7.6e-7 off the origin's translate, curvature jumps 1e-7 against
+    5e-14): per coordinate the multiple of G (the power of two >= the points' extent) nearest
+    the first point, 0 unless every point is LOCAL_FAR G or more from 0 there, and only where
+    x - R is exact for every point (it is: both multiples of the smaller ulp, checked)."""
+    xy = np.asarray(xy, dtype=np.float64)
+    R = np.zeros(2)
+    ext = float(np.max(np.ptp(xy, axis=0)))
+    if not (ext > 0.0 and math.isfinite(ext)):
+        return R
+    G = math.ldexp(1.0, math.frexp(ext)[1])     # G >= ext > G / 2
+    for c in (0, 1):
+        col = xy[:, c]
+        if not float(np.min(np.abs(col))) >= LOCAL_FAR * G:
+            continue
+        r = G * round(float(col[0]) / G)
+        if np.all((col - r) + r == col):
+            R[c] = r
+    return R
+
+
+def _local_source(source, is_curve: bool):
+    """(the source moved by -R, R) for a source far from (0, 0) (_local_origin), else None:
+    point data less R (exact); a SmoothElastica, or a chain of them (ElasticSpline,
+    HermiteChain: a copy with its pieces moved), with its start(s) less R, so that it is
+    evaluated in the local frame (its samples' rounding that of its size, not of R)."""
+    if not is_curve:
+        xy = np.asarray(source, dtype=np.float64)
+        if xy.ndim != 2 or xy.shape[1] != 2 or len(xy) < 2 or not np.all(np.isfinite(xy)):
+            return None         # (g2_quadratic's own checks say what is wrong)
+        R = _local_origin(xy)
+        return (xy - R, R) if np.any(R) else None
+    pieces = [source] if isinstance(source, SmoothElastica) else getattr(source, "pieces", None)
+    if not isinstance(pieces, list) or not all(isinstance(p, SmoothElastica) for p in pieces):
+        return None
+    R = _local_origin(source.points(np.linspace(0.0, source.length, 257)))
+    starts = np.array([[p.x0, p.y0] for p in pieces])
+    if not np.any(R) or not np.all((starts - R) + R == starts):
+        return None
+    moved = [dataclasses.replace(p, x0=float(p.x0 - R[0]), y0=float(p.y0 - R[1]))
+             for p in pieces]
+    if isinstance(source, SmoothElastica):
+        return moved[0], R
+    chain = copy.copy(source)
+    chain.pieces = moved
+    return chain, R
+
+
+def _moved(g, R: np.ndarray):
+    """A G2Quadratic built in a local frame moved back by R: its poles, polyline and ends."""
+    bs = [BSpline(b.degree, b.poles + R, b.knots, b.mults, b.max_deviation) for b in g.bsplines]
+    poly = dataclasses.replace(g.polyline, points=g.polyline.points + R)
+    return dataclasses.replace(g, bsplines=bs, polyline=poly, ends=np.asarray(g.ends) + R)
+
+
+def _built_locally(build, source, R: np.ndarray, coverage_error):
+    """build(source) (a G2Quadratic of the source moved by -R) moved back by R; its
+    warnings said again at the caller of g2_quadratic, a ``coverage_error``'s result moved
+    back too."""
+    said = []
+    try:
+        with warnings.catch_warnings(record=True) as said:
+            warnings.simplefilter("always")
+            return _moved(build(source), R)
+    except coverage_error as exc:
+        exc.result = _moved(exc.result, R)
+        raise
+    finally:
+        for w in said:
+            warnings.warn(w.message, stacklevel=4)
+
